@@ -1,0 +1,1 @@
+//! Chip number formats (placeholder: being written).

@@ -1,0 +1,13 @@
+//! collision-chip: golden model, number formats and (later) RTL of the hierarchical
+//! k-DOP collision-detection accelerator of Zachmann & Knittel (WSCG'03) and
+//! Raabe, Bartyzel, Anlauf & Zachmann (DATE'05).
+//!
+//! Layout: `format` (chip number formats), `mesh` (loaders and procedural meshes),
+//! `oracle` (exact triangle intersection), `dop` (k-DOP normals, trees, host setup),
+//! `golden` (bit-exact datapath in pipeline order), `traversal` (recursive, list, D_CNTR),
+//! `scene` (scene files), `report` (summaries).
+
+pub mod format;
+pub mod mesh;
+pub mod oracle;
+pub mod pose;

@@ -1,0 +1,1 @@
+//! Exact oracle (placeholder: being written).
