@@ -1,0 +1,110 @@
+//! Host setup per query pose (DATE'05 Eq. 6, WSCG'03 Eq. 3): for each lane i the
+//! correspondence j_i (three normals of B's DOP, the D.KLMSEL MUX control), the
+//! coefficients C_i (lambda >= 0) and the offset c_i, plus the two 3x4 frame maps that
+//! T.CHECK uses.
+//!
+//! Why the bound holds for every DOP: with b_i = R^T B_i = sum_l lambda_l B_{j_l} + r_i
+//! and lambda >= 0, every x of B's DOP (B_j . x <= d_j) satisfies
+//! B_i . (R x + t) = b_i . x + B_i . t <= sum_l lambda_l d_{j_l} + |r_i|_1 |x|_inf + B_i . t.
+//! The host rounds lambda to the format (C), measures the residual r_i of that rounding
+//! and pads c_i with |r_i|_1 X (X bounds |x|_inf over B's root DOP) and with the f64
+//! rounding of B's vertices into A's frame, so that d'_i bounds the f64 geometry the
+//! oracle judges. c_i is then rounded up. In `nearest-even` mode nothing is padded.
+
+use super::normals::DopNormals;
+use crate::config::{ChipConfig, DopRounding};
+use crate::format::{Format, Rounding};
+use crate::pose::Pose;
+use nalgebra::{Matrix3, Vector3};
+
+/// A 3x4 affine map [L | t] in the chip format (row-major, column 3 = translation).
+pub type Affine = [[f64; 4]; 3];
+
+#[derive(Clone, Debug)]
+pub struct HostSetup {
+    /// j_i: the three normal indices of B's DOP feeding lane i (D.KLMSEL control).
+    pub j: Vec<[u8; 3]>,
+    /// C_i: the three non-negative coefficients of lane i.
+    pub cmat: Vec<[f64; 3]>,
+    /// c_i: the offset of lane i (B_i . t plus padding).
+    pub cvec: Vec<f64>,
+    /// A's frame to B's frame: x_B = R^T (x_A - t)  (M_AB of DATE'05 §4.2).
+    pub m_ab: Affine,
+    /// B's frame to A's frame: x_A = R x_B + t.
+    pub m_ba: Affine,
+}
+
+impl HostSetup {
+    /// `b_coord_bound` is X = max |x|_inf over B's root DOP ([`super::DopTree::coord_bound`]).
+    pub fn new(cfg: &ChipConfig, pose: &Pose, b_coord_bound: f64) -> HostSetup {
+        let normals = DopNormals::get(cfg.k).expect("k validated by the caller");
+        let rot = pose.rotation();
+        let t = pose.translation();
+        let fmt = cfg.format;
+        let outward = cfg.dop_rounding == DopRounding::Outward;
+        let eps = f64::EPSILON; // 2^-52
+        let t_inf = t.amax();
+        let (mut j, mut cmat, mut cvec) = (vec![], vec![], vec![]);
+        for bi in &normals.b {
+            let b = rot.transpose() * bi;
+            let (tri, lambda) = best_cone(normals, &b);
+            let c3 = lambda.map(|l| fmt.round(l, Rounding::NearestEven));
+            j.push(tri.map(|x| x as u8));
+            cmat.push(c3);
+            let bt = bi.dot(&t);
+            let c = if outward {
+                let approx: Vector3<f64> = (0..3).map(|l| normals.b[tri[l]] * c3[l]).sum();
+                let r = b - approx;
+                // f64 error of b (3 products, 2 sums per entry) and of approx, generously.
+                let scale: f64 = b.abs().sum() + (0..3).map(|l| c3[l] * normals.b[tri[l]].abs().sum()).sum::<f64>();
+                let resid = r.abs().sum() + 8.0 * eps * scale;
+                let bi1 = bi.abs().sum();
+                let transform_err = bi1 * 2.0 * eps * (3.0 * b_coord_bound + t_inf);
+                let pad = resid * b_coord_bound + transform_err + bi1 * t_inf * eps;
+                let pad = if pad.is_nan() { f64::INFINITY } else { pad };
+                // next_up covers the rounding of this last f64 addition.
+                fmt.round((bt + pad).next_up(), Rounding::TowardPositive)
+            } else {
+                fmt.round(bt, Rounding::NearestEven)
+            };
+            cvec.push(c);
+        }
+        let m_ba = affine(fmt, &rot, &t);
+        let rt = rot.transpose();
+        let m_ab = affine(fmt, &rt, &(-(rt * t)));
+        HostSetup { j, cmat, cvec, m_ab, m_ba }
+    }
+}
+
+fn affine(fmt: Format, l: &Matrix3<f64>, t: &Vector3<f64>) -> Affine {
+    let mut m = [[0.0; 4]; 3];
+    for (r, row) in m.iter_mut().enumerate() {
+        for (c, x) in row.iter_mut().enumerate() {
+            let v = if c < 3 { l[(r, c)] } else { t[r] };
+            *x = fmt.round(v, Rounding::NearestEven);
+        }
+    }
+    m
+}
+
+/// The hull triangle whose cone contains `b` with the smallest bound on a sphere
+/// (sum lambda_l |B_l|), and its lambdas clamped to >= 0 (the clamping residual is padded).
+fn best_cone(n: &DopNormals, b: &Vector3<f64>) -> ([usize; 3], [f64; 3]) {
+    let mut best: Option<(f64, [usize; 3], [f64; 3])> = None;
+    let tol = 1e-12 * b.norm();
+    for t in &n.hull {
+        let m = Matrix3::from_columns(&[n.b[t[0]], n.b[t[1]], n.b[t[2]]]);
+        let Some(inv) = m.try_inverse() else { continue };
+        let l = inv * b;
+        if l.iter().any(|&x| x < -tol) {
+            continue;
+        }
+        let l = [l.x.max(0.0), l.y.max(0.0), l.z.max(0.0)];
+        let cost: f64 = (0..3).map(|q| l[q] * n.b[t[q]].norm()).sum();
+        if best.as_ref().is_none_or(|(bc, _, _)| cost < *bc) {
+            best = Some((cost, *t, l));
+        }
+    }
+    let (_, t, l) = best.expect("the hull cones cover the sphere");
+    (t, l)
+}

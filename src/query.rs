@@ -1,0 +1,97 @@
+//! One collision query end to end on the golden model: the host builds both memory
+//! images once, sets up C, c, j and the frame maps per pose, and a traversal runs.
+//! With `oracle`, the exact answer for the same f64 geometry is computed too.
+
+use crate::config::ChipConfig;
+use crate::dop::{DopNormals, HostSetup};
+use crate::dop::tree::Tri;
+use crate::memory::{Layout, ObjectImage};
+use crate::pose::Pose;
+use crate::traversal::{self, Mode, QueryResult, Traversal};
+use serde::Serialize;
+
+/// Both objects' memory images for one chip configuration.
+pub struct Chip {
+    pub cfg: ChipConfig,
+    pub a: ObjectImage,
+    pub b: ObjectImage,
+    pub layout: Layout,
+}
+
+impl Chip {
+    /// Errors name what is wrong (unsupported k, empty object).
+    pub fn new(a: &[Tri], b: &[Tri], cfg: ChipConfig) -> Result<Chip, String> {
+        DopNormals::get(cfg.k)?;
+        if a.is_empty() || b.is_empty() {
+            return Err("both objects need at least one triangle".into());
+        }
+        Ok(Chip { cfg, a: ObjectImage::build(a, &cfg), b: ObjectImage::build(b, &cfg), layout: Layout::new(&cfg) })
+    }
+
+    pub fn setup(&self, pose: &Pose) -> HostSetup {
+        HostSetup::new(&self.cfg, pose, self.b.tree.coord_bound())
+    }
+
+    pub fn query(&self, pose: &Pose, mode: Mode, traversal: Traversal) -> QueryResult {
+        let setup = self.setup(pose);
+        traversal::run(&self.cfg, &self.a, &self.b, &setup, mode, traversal)
+    }
+}
+
+/// B's triangles in A's frame, in f64: the geometry the exact oracle judges.
+pub fn place(b: &[Tri], pose: &Pose) -> Vec<Tri> {
+    let (r, t) = (pose.rotation(), pose.translation());
+    b.iter().map(|tri| tri.map(|p| r * p + t)).collect()
+}
+
+/// Chip pairs against the exact pairs.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize)]
+pub struct Accuracy {
+    /// Exact pairs the chip did not report (false negatives).
+    pub misses: u64,
+    /// Pairs the chip reported that do not intersect (false positives).
+    pub extras: u64,
+}
+
+impl Accuracy {
+    /// Both lists sorted. In first-hit mode the chip's one pair must be exact, and a miss
+    /// is reporting none when there is one.
+    pub fn of(mode: Mode, chip: &[(u32, u32)], exact: &[(u32, u32)]) -> Accuracy {
+        match mode {
+            Mode::All => Accuracy::compare(chip, exact),
+            Mode::First => Accuracy {
+                misses: (chip.is_empty() && !exact.is_empty()) as u64,
+                extras: chip.iter().filter(|p| exact.binary_search(p).is_err()).count() as u64,
+            },
+        }
+    }
+
+    fn compare(chip: &[(u32, u32)], exact: &[(u32, u32)]) -> Accuracy {
+        let (mut i, mut j, mut acc) = (0, 0, Accuracy::default());
+        while i < chip.len() || j < exact.len() {
+            match (chip.get(i), exact.get(j)) {
+                (Some(c), Some(x)) if c == x => (i, j) = (i + 1, j + 1),
+                (Some(c), Some(x)) if c < x => (i, acc.extras) = (i + 1, acc.extras + 1),
+                (Some(_), None) => (i, acc.extras) = (i + 1, acc.extras + 1),
+                _ => (j, acc.misses) = (j + 1, acc.misses + 1),
+            }
+        }
+        acc
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn accuracy_counts_misses_and_extras() {
+        let exact = [(0, 1), (2, 2), (5, 0)];
+        let chip = [(0, 1), (3, 3), (5, 0), (9, 9)];
+        assert_eq!(Accuracy::of(Mode::All, &chip, &exact), Accuracy { misses: 1, extras: 2 });
+        assert_eq!(Accuracy::of(Mode::All, &[], &exact), Accuracy { misses: 3, extras: 0 });
+        assert_eq!(Accuracy::of(Mode::First, &[(2, 2)], &exact), Accuracy::default());
+        assert_eq!(Accuracy::of(Mode::First, &[], &exact), Accuracy { misses: 1, extras: 0 });
+        assert_eq!(Accuracy::of(Mode::First, &[(1, 1)], &[]), Accuracy { misses: 0, extras: 1 });
+    }
+}

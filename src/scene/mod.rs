@@ -1,0 +1,230 @@
+//! Scenes: two objects, one pose or a pose sweep, the query, the chip configuration and
+//! the outputs wanted (TOML). Only what the outputs ask for is computed: the exact oracle
+//! runs only when `accuracy` is requested.
+//!
+//! ```toml
+//! [objects]
+//! a = "bunny"                 # mesh file or built-in name (see `cchip query --help`)
+//! b = "bunny"
+//! unit_cube = true            # scale each copy into [-1,1]^3 first (WSCG'03 protocol)
+//!
+//! [chip]                      # all optional
+//! k = 24
+//! format = "binary32"         # or "reduced" (e8m15) or "eEmF"
+//! dop_rounding = "outward"    # or "nearest-even"
+//!
+//! [query]                     # all optional
+//! mode = "all"                # or "first"
+//! traversal = "lifo"          # recursive | list | fifo | lifo
+//!
+//! # Either explicit poses ...
+//! [[pose]]
+//! rot_deg = [10, 20, 30]
+//! t = [0.02, 0, 0]
+//!
+//! # ... or a sweep: B tumbles through `orientations` random rotations (seeded) at each
+//! # centre distance along x.
+//! [sweep]
+//! distances = [2.5, 2.0, 1.5, 1.0, 0.5]
+//! orientations = 8
+//! seed = 1
+//!
+//! [outputs]
+//! pairs = false               # list the pairs of every pose
+//! accuracy = true             # run the exact oracle and count misses and extra pairs
+//! ```
+
+use crate::config::{ChipConfig, DopRounding};
+use crate::format::Format;
+use crate::pose::Pose;
+use crate::traversal::{Mode, Traversal};
+use rand::{Rng, SeedableRng};
+use serde::Deserialize;
+use std::path::Path;
+
+/// The built-in default scene (`cchip run` without a file).
+pub const DEFAULT_SCENE: &str = include_str!("../../vectors/scenes/default.toml");
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct File {
+    objects: Objects,
+    #[serde(default)]
+    chip: ChipSection,
+    #[serde(default)]
+    query: QuerySection,
+    #[serde(default)]
+    pose: Vec<Pose>,
+    sweep: Option<Sweep>,
+    #[serde(default)]
+    outputs: Outputs,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Objects {
+    pub a: String,
+    pub b: String,
+    #[serde(default)]
+    pub unit_cube: bool,
+}
+
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct ChipSection {
+    k: Option<usize>,
+    format: Option<String>,
+    dop_rounding: Option<DopRounding>,
+}
+
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct QuerySection {
+    mode: Option<Mode>,
+    traversal: Option<Traversal>,
+}
+
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Sweep {
+    pub distances: Vec<f64>,
+    pub orientations: usize,
+    #[serde(default = "one")]
+    pub seed: u64,
+}
+
+fn one() -> u64 {
+    1
+}
+
+#[derive(Debug, Clone, Copy, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Outputs {
+    #[serde(default)]
+    pub pairs: bool,
+    #[serde(default)]
+    pub accuracy: bool,
+}
+
+/// One pose of a scene, with the sweep distance it belongs to (if any).
+#[derive(Debug, Clone, Copy)]
+pub struct ScenePose {
+    pub pose: Pose,
+    pub distance: Option<f64>,
+}
+
+/// A validated scene.
+#[derive(Debug)]
+pub struct Scene {
+    pub name: String,
+    pub objects: Objects,
+    pub cfg: ChipConfig,
+    pub mode: Mode,
+    pub traversal: Traversal,
+    pub poses: Vec<ScenePose>,
+    pub outputs: Outputs,
+}
+
+impl Scene {
+    pub fn load(path: &Path) -> Result<Scene, String> {
+        let text = std::fs::read_to_string(path)
+            .map_err(|e| format!("{}: cannot read scene: {e}", path.display()))?;
+        Scene::parse(&text, &path.display().to_string())
+    }
+
+    /// `name` is used in error messages (the file name).
+    pub fn parse(text: &str, name: &str) -> Result<Scene, String> {
+        let f: File = toml::from_str(text).map_err(|e| {
+            let line = e.span().map(|s| text[..s.start].matches('\n').count() + 1);
+            match line {
+                Some(l) => format!("{name}:{l}: {}", e.message()),
+                None => format!("{name}: {}", e.message()),
+            }
+        })?;
+        let err = |m: String| format!("{name}: {m}");
+        let mut cfg = ChipConfig::default();
+        if let Some(k) = f.chip.k {
+            crate::dop::DopNormals::get(k).map_err(err)?;
+            cfg.k = k;
+        }
+        if let Some(fmt) = &f.chip.format {
+            cfg.format = fmt.parse::<Format>().map_err(err)?;
+        }
+        if let Some(r) = f.chip.dop_rounding {
+            cfg.dop_rounding = r;
+        }
+        let poses = match (&f.sweep, f.pose.is_empty()) {
+            (Some(_), false) => return Err(err("give either [[pose]] entries or a [sweep], not both".into())),
+            (None, true) => return Err(err("no pose: add a [[pose]] (rot_deg, t) or a [sweep]".into())),
+            (None, false) => f.pose.iter().map(|&pose| ScenePose { pose, distance: None }).collect(),
+            (Some(s), true) => sweep_poses(s).map_err(err)?,
+        };
+        if let Some(p) = poses.iter().find(|p| !p.pose.rot_deg.iter().chain(&p.pose.t).all(|x| x.is_finite())) {
+            return Err(err(format!("pose {:?} has a non-finite number", p.pose)));
+        }
+        Ok(Scene {
+            name: name.to_string(),
+            objects: f.objects,
+            cfg,
+            mode: f.query.mode.unwrap_or(Mode::All),
+            traversal: f.query.traversal.unwrap_or(Traversal::Lifo),
+            poses,
+            outputs: f.outputs,
+        })
+    }
+}
+
+/// The WSCG'03 benchmark protocol: at each distance (centres apart along x), B takes
+/// `orientations` rotations with angles drawn uniformly from [0, 360) degrees (seeded).
+pub fn sweep_poses(s: &Sweep) -> Result<Vec<ScenePose>, String> {
+    if s.distances.is_empty() || s.orientations == 0 {
+        return Err("a sweep needs at least one distance and one orientation".into());
+    }
+    if let Some(d) = s.distances.iter().find(|d| !d.is_finite()) {
+        return Err(format!("sweep distance {d} is not finite"));
+    }
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(s.seed);
+    let rots: Vec<[f64; 3]> = (0..s.orientations)
+        .map(|_| [rng.random_range(0.0..360.0), rng.random_range(0.0..360.0), rng.random_range(0.0..360.0)])
+        .collect();
+    Ok(s.distances
+        .iter()
+        .flat_map(|&d| rots.iter().map(move |&r| ScenePose { pose: Pose { rot_deg: r, t: [d, 0.0, 0.0] }, distance: Some(d) }))
+        .collect())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn default_scene_parses() {
+        let s = Scene::parse(DEFAULT_SCENE, "default").unwrap();
+        assert!(s.outputs.accuracy);
+        assert!(!s.poses.is_empty());
+    }
+
+    #[test]
+    fn errors_name_the_line() {
+        let text = "[objects]\na = \"bunny\"\nb = \"bunny\"\n[chip]\nk = \"x\"\n";
+        let e = Scene::parse(text, "s.toml").unwrap_err();
+        assert!(e.starts_with("s.toml:5:"), "{e}");
+        let e = Scene::parse("[objects]\na = \"x\"\nb = \"y\"\n[chip]\nk = 8\n[[pose]]\nrot_deg=[0,0,0]\nt=[0,0,0]\n", "s.toml").unwrap_err();
+        assert!(e.contains("6, 14, 18, 24, 26"), "{e}");
+        let e = Scene::parse("[objects]\na = \"x\"\nb = \"y\"\n", "s.toml").unwrap_err();
+        assert!(e.contains("no pose"), "{e}");
+        let e = Scene::parse("[objects]\na = \"x\"\nb = \"y\"\nbogus = 1\n", "s.toml").unwrap_err();
+        assert!(e.starts_with("s.toml:4:"), "{e}");
+    }
+
+    #[test]
+    fn sweep_is_distances_times_orientations_and_seeded() {
+        let s = Sweep { distances: vec![2.0, 1.0], orientations: 3, seed: 7 };
+        let p = sweep_poses(&s).unwrap();
+        assert_eq!(p.len(), 6);
+        assert_eq!(p[0].pose.rot_deg, p[3].pose.rot_deg);
+        assert_eq!(p[4].pose.t, [1.0, 0.0, 0.0]);
+        let q = sweep_poses(&Sweep { seed: 8, ..s }).unwrap();
+        assert_ne!(p[0].pose.rot_deg, q[0].pose.rot_deg);
+    }
+}

@@ -1,0 +1,120 @@
+//! DATE'05 D_CNTR (§4.3): node pairs wait in a FIFO (breadth first) or a LIFO (depth
+//! first), pushed and popped pairwise. The children of an overlapping pair (X, N) are
+//! generated in the order that shares one DOP between consecutive tests, the
+//! serpentine `Xa Na, Xa Nb, Xb Nb, Xb Na`: each pair carries a flip bit, and a pair with the
+//! flip bit set starts with its second child. This reproduces the paper's FIFO sequence
+//! `A1 - B2 B3 C3 C2 - D4 D5 E5 E4 - E6 E7 D7 D6 - F6 F7 G7 G6 - G4 G5 F5 F4`.
+
+use super::Engine;
+use crate::dop::{DopTree, Node};
+use std::collections::VecDeque;
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Order {
+    Fifo,
+    Lifo,
+}
+
+/// A node pair: A's node, B's node, the flip bit.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Pair {
+    pub a: u32,
+    pub b: u32,
+    pub flip: bool,
+}
+
+/// One queue entry: two pairs (one for the root pair), pushed and popped together.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Entry {
+    pub pairs: [Pair; 2],
+    pub len: u8,
+}
+
+/// The child pairs of an overlapping pair, in the DOP-sharing order (none for leaf/leaf).
+pub fn children(p: Pair, na: Node, nb: Node) -> Vec<Pair> {
+    let ord = |c: [u32; 2]| if p.flip { [c[1], c[0]] } else { c };
+    let pair = |a, b, flip| Pair { a, b, flip };
+    match (na, nb) {
+        (Node::Inner(ca), Node::Inner(cb)) => {
+            let [xa, xb] = ord(ca);
+            let [n1, n2] = cb;
+            vec![pair(xa, n1, false), pair(xa, n2, true), pair(xb, n2, false), pair(xb, n1, true)]
+        }
+        (Node::Inner(ca), Node::Leaf(_)) => {
+            let [xa, xb] = ord(ca);
+            vec![pair(xa, p.b, false), pair(xb, p.b, true)]
+        }
+        (Node::Leaf(_), Node::Inner(cb)) => {
+            let [na_, nb_] = ord(cb);
+            vec![pair(p.a, na_, false), pair(p.a, nb_, true)]
+        }
+        (Node::Leaf(_), Node::Leaf(_)) => vec![],
+    }
+}
+
+/// Groups child pairs into entries of two, in order.
+pub fn entries(ch: &[Pair]) -> impl DoubleEndedIterator<Item = Entry> + '_ {
+    ch.chunks(2).map(|c| Entry { pairs: [c[0], *c.get(1).unwrap_or(&c[0])], len: c.len() as u8 })
+}
+
+pub(crate) fn run(e: &mut Engine, order: Order) {
+    let root = Pair { a: DopTree::ROOT, b: DopTree::ROOT, flip: false };
+    let mut q: VecDeque<Entry> = VecDeque::from([Entry { pairs: [root, root], len: 1 }]);
+    e.queue_add(1);
+    while let Some(ent) = match order {
+        Order::Fifo => q.pop_front(),
+        Order::Lifo => q.pop_back(),
+    } {
+        e.queue_remove(ent.len as u64);
+        for &p in &ent.pairs[..ent.len as usize] {
+            if e.stop {
+                return;
+            }
+            e.counters.dop_transforms += 1; // DOPTRF transforms within every test
+            if !e.dop_test(p.a, p.b) {
+                continue;
+            }
+            let (na, nb) = (e.node_a(p.a), e.node_b(p.b));
+            if let (Node::Leaf(ta), Node::Leaf(tb)) = (na, nb) {
+                e.leaf_pair(ta, tb);
+                continue;
+            }
+            let ch = children(p, na, nb);
+            e.queue_add(ch.len() as u64);
+            match order {
+                Order::Fifo => q.extend(entries(&ch)),
+                // Reversed so that the first entry is popped next.
+                Order::Lifo => q.extend(entries(&ch).rev()),
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The paper's example: A(B(D,E),C(F,G)) against 1(2(4,5),3(6,7)), every pair
+    /// overlapping, FIFO order.
+    #[test]
+    fn fifo_order_is_the_papers_sequence() {
+        // Node ids: letters A..G = 0..6 and digits 1..7 = 0..6, both trees alike.
+        let node = |n: u32| if n < 3 { Node::Inner([2 * n + 1, 2 * n + 2]) } else { Node::Leaf(n) };
+        let name = |p: &Pair| format!("{}{}", (b'A' + p.a as u8) as char, p.b + 1);
+        let mut q: VecDeque<Entry> = VecDeque::new();
+        let root = Pair { a: 0, b: 0, flip: false };
+        q.push_back(Entry { pairs: [root, root], len: 1 });
+        let mut seq = vec![];
+        while let Some(ent) = q.pop_front() {
+            for p in &ent.pairs[..ent.len as usize] {
+                seq.push(name(p));
+                let ch = children(*p, node(p.a), node(p.b));
+                q.extend(entries(&ch));
+            }
+        }
+        assert_eq!(
+            seq.join(" "),
+            "A1 B2 B3 C3 C2 D4 D5 E5 E4 E6 E7 D7 D6 F6 F7 G7 G6 G4 G5 F5 F4"
+        );
+    }
+}

@@ -1,0 +1,183 @@
+//! Traversals of the two DOP trees. All of them test exactly the same set of node pairs
+//! in all-pairs mode (an overlapping inner/inner pair leads to its four child pairs, an
+//! inner/leaf pair to two), only in different orders, so they return the same pairs:
+//! - [`recursive`]: the classic simultaneous recursion (WSCG'03 Algorithm 1), software baseline;
+//! - [`list`]: the list-based scheme that transforms each tumbled node once (WSCG'03 Algorithm 2);
+//! - [`d_cntr`]: the DATE'05 D_CNTR, a FIFO or LIFO of node pairs pushed and popped pairwise
+//!   in the order that shares one DOP between consecutive tests.
+//!
+//! Object A is aligned (its DOPs are the e of Eq. 10), object B tumbled (its DOPs are the d).
+//! Leaf/leaf pairs are DOP-tested before the triangle test (the leaf DOP is in the node word
+//! anyway and filters most triangle tests at one DOP test per cycle).
+
+pub mod d_cntr;
+pub mod list;
+pub mod recursive;
+
+use crate::config::ChipConfig;
+use crate::dop::{HostSetup, Node};
+use crate::golden::{doptrf, tcheck};
+use crate::memory::{Layout, ObjectImage};
+use serde::{Deserialize, Serialize};
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, clap::ValueEnum)]
+#[serde(rename_all = "kebab-case")]
+pub enum Mode {
+    /// Every intersecting triangle pair.
+    All,
+    /// Stop at the first intersecting pair ("do they touch?").
+    First,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, clap::ValueEnum)]
+#[serde(rename_all = "kebab-case")]
+pub enum Traversal {
+    /// WSCG'03 Algorithm 1: simultaneous recursion, every test transforms the tumbled DOP.
+    Recursive,
+    /// WSCG'03 Algorithm 2: one tumbled node against a list of aligned nodes.
+    List,
+    /// DATE'05 D_CNTR with a FIFO (breadth first).
+    Fifo,
+    /// DATE'05 D_CNTR with a LIFO (depth first).
+    Lifo,
+}
+
+impl Traversal {
+    pub const ALL: [Traversal; 4] = [Traversal::Recursive, Traversal::List, Traversal::Fifo, Traversal::Lifo];
+}
+
+/// What one query did, in the units the hardware pays for.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+pub struct Counters {
+    pub dop_tests: u64,
+    pub dop_overlaps: u64,
+    /// DOP transforms of the tumbled object (DATE'05 fuses one into every DOP test).
+    pub dop_transforms: u64,
+    /// Node words fetched (a node already held by the DOP unit is not fetched again).
+    pub node_fetches: u64,
+    pub tri_tests: u64,
+    /// Triangle words fetched (same holding rule as nodes).
+    pub tri_fetches: u64,
+    pub tri_hits: u64,
+    /// Largest number of node pairs (or list entries) waiting in the queue, stack or lists.
+    pub max_queue_depth: u64,
+    pub memory_bytes: u64,
+}
+
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct QueryResult {
+    /// (triangle of A, triangle of B), sorted.
+    pub pairs: Vec<(u32, u32)>,
+    pub counters: Counters,
+}
+
+/// The state a traversal drives: the two images, the per-pose setup, the DOP unit and
+/// TRI_UNIT as golden functions, the held words and the counters.
+pub(crate) struct Engine<'a> {
+    cfg: &'a ChipConfig,
+    a: &'a ObjectImage,
+    b: &'a ObjectImage,
+    setup: &'a HostSetup,
+    layout: Layout,
+    mode: Mode,
+    held_node: [Option<u32>; 2],
+    held_tri: [Option<u32>; 2],
+    pairs: Vec<(u32, u32)>,
+    live: u64,
+    pub(crate) counters: Counters,
+    pub(crate) stop: bool,
+}
+
+impl<'a> Engine<'a> {
+    fn node_a(&self, n: u32) -> Node {
+        self.a.tree.nodes[n as usize]
+    }
+
+    fn node_b(&self, n: u32) -> Node {
+        self.b.tree.nodes[n as usize]
+    }
+
+    fn fetch(held: &mut Option<u32>, n: u32) -> u64 {
+        if *held == Some(n) {
+            0
+        } else {
+            *held = Some(n);
+            1
+        }
+    }
+
+    /// One DOP test of A's node `na` against B's node `nb`.
+    fn dop_test(&mut self, na: u32, nb: u32) -> bool {
+        let c = &mut self.counters;
+        c.dop_tests += 1;
+        c.node_fetches += Self::fetch(&mut self.held_node[0], na) + Self::fetch(&mut self.held_node[1], nb);
+        let hit = doptrf::dop_overlap(
+            self.cfg.format,
+            self.cfg.dop_rounding.op(),
+            self.setup,
+            self.b.tree.dop(nb),
+            self.a.tree.dop(na),
+        );
+        c.dop_overlaps += hit as u64;
+        hit
+    }
+
+    /// TRI_UNIT on a leaf pair; records the pair and stops a first-hit query.
+    fn leaf_pair(&mut self, ta: u32, tb: u32) {
+        let c = &mut self.counters;
+        c.tri_tests += 1;
+        c.tri_fetches += Self::fetch(&mut self.held_tri[0], ta) + Self::fetch(&mut self.held_tri[1], tb);
+        let (wa, wb) = (&self.a.tris[ta as usize], &self.b.tris[tb as usize]);
+        if tcheck::tri_unit(self.cfg.format, self.cfg.tri_rounding, wa, wb, self.setup) {
+            self.counters.tri_hits += 1;
+            self.pairs.push((ta, tb));
+            self.stop = self.mode == Mode::First;
+        }
+    }
+
+    /// Bookkeeping of waiting pairs (queue, stack or lists).
+    fn queue_add(&mut self, n: u64) {
+        self.live += n;
+        self.counters.max_queue_depth = self.counters.max_queue_depth.max(self.live);
+    }
+
+    fn queue_remove(&mut self, n: u64) {
+        self.live -= n;
+    }
+}
+
+/// Runs one query on the golden model.
+pub fn run(
+    cfg: &ChipConfig,
+    a: &ObjectImage,
+    b: &ObjectImage,
+    setup: &HostSetup,
+    mode: Mode,
+    traversal: Traversal,
+) -> QueryResult {
+    let mut e = Engine {
+        cfg,
+        a,
+        b,
+        setup,
+        layout: Layout::new(cfg),
+        mode,
+        held_node: [None; 2],
+        held_tri: [None; 2],
+        pairs: vec![],
+        live: 0,
+        counters: Counters::default(),
+        stop: false,
+    };
+    match traversal {
+        Traversal::Recursive => recursive::run(&mut e),
+        Traversal::List => list::run(&mut e),
+        Traversal::Fifo => d_cntr::run(&mut e, d_cntr::Order::Fifo),
+        Traversal::Lifo => d_cntr::run(&mut e, d_cntr::Order::Lifo),
+    }
+    let mut c = e.counters;
+    c.memory_bytes = c.node_fetches * e.layout.node_bytes() + c.tri_fetches * e.layout.tri_bytes();
+    let mut pairs = e.pairs;
+    pairs.sort_unstable();
+    QueryResult { pairs, counters: c }
+}
