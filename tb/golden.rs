@@ -247,3 +247,65 @@ fn degenerate_triangle_is_tested_through_the_other_direction() {
     assert!(tcheck::tri_unit(f, Rounding::NearestEven, &ws, &wt, &setup));
     assert!(oracle::tri_tri(&tri, &seg));
 }
+
+fn format_value(f: Format) -> impl Strategy<Value = f64> {
+    // Random bit patterns of the format (all exponents, subnormals, inf, NaN) and small
+    // integers (many exact cancellations).
+    let w = f.width();
+    prop_oneof![
+        (0u64..(1u64 << w)).prop_map(move |b| f.from_bits(b)),
+        (-8i32..8).prop_map(|i| i as f64),
+    ]
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 20000, .. ProptestConfig::default() })]
+
+    /// The traversal's DOP decision (transform once, exact f64 sign) equals the lane as the
+    /// pipeline computes it, in both roundings and both formats.
+    #[test]
+    fn separated_equals_the_lane_sign(
+        reduced in any::<bool>(), nearest in any::<bool>(),
+        vals in prop::collection::vec(prop_oneof![format_value(Format::BINARY32)], 8),
+        rvals in prop::collection::vec(format_value(Format::REDUCED), 8),
+    ) {
+        let (f, v) = if reduced { (Format::REDUCED, rvals) } else { (Format::BINARY32, vals) };
+        let r = if nearest { Rounding::NearestEven } else { Rounding::TowardPositive };
+        let (d, cm, c, e) = ([v[0], v[1], v[2]], [v[3].abs(), v[4].abs(), v[5].abs()], v[6], v[7]);
+        let u = doptrf::transformed(f, r, d, cm, c);
+        let s = doptrf::lane(f, r, d, cm, c, e);
+        prop_assert_eq!(doptrf::separated(f.min_positive_subnormal(), u, e), s < 0.0, "u={} e={} s={}", u, e, s);
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 64, .. ProptestConfig::default() })]
+
+    /// The DOP unit on transformed distances equals the lane-by-lane reference for every
+    /// node pair of two small trees (lane i meets e_opp(i)).
+    #[test]
+    fn dop_unit_fast_path_equals_reference(
+        seed in 0u64..1000, pose in pose_strategy(0.8),
+        k in prop::sample::select(SUPPORTED_K.to_vec()), reduced in any::<bool>(), nearest in any::<bool>(),
+    ) {
+        let cfg = ChipConfig {
+            k,
+            format: if reduced { Format::REDUCED } else { Format::BINARY32 },
+            dop_rounding: if nearest { DopRounding::NearestEven } else { DopRounding::Outward },
+            ..Default::default()
+        };
+        let (ta, tb) = (DopTree::build(&soup(12, seed), &cfg), DopTree::build(&soup(12, seed + 1), &cfg));
+        let setup = HostSetup::new(&cfg, &pose, tb.coord_bound());
+        let (mut overlaps, mut total) = (0, 0);
+        let mut cache = doptrf::TransformCache::new(cfg.format, cfg.dop_rounding.op(), &setup, tb.len());
+        for nb in 0..tb.len() as u32 {
+            for na in 0..ta.len() as u32 {
+                let fast = cache.overlap(nb, tb.dop(nb), ta.dop(na));
+                prop_assert_eq!(fast, doptrf::dop_overlap(cfg.format, cfg.dop_rounding.op(), &setup, tb.dop(nb), ta.dop(na)));
+                overlaps += fast as u32;
+                total += 1;
+            }
+        }
+        prop_assert!(total > 0 && overlaps < total || overlaps == total);
+    }
+}

@@ -8,11 +8,8 @@
 //!   containing the truth, and filtering it with `tri_tri` on the same f64 geometry must give
 //!   the same set;
 //! * for one scene, `brute_force_pairs` agrees too.
-//! Also reports the time of `intersecting_pairs` on ~4k x 4k overlapping meshes.
 
-use std::f64::consts::PI;
-use std::time::Instant;
-
+use collision_chip::mesh::{self, Mesh};
 use collision_chip::oracle::{brute_force_pairs, intersecting_pairs, tri_tri, Tri};
 use collision_chip::pose::Pose;
 use nalgebra::Point3;
@@ -21,63 +18,9 @@ use parry3d_f64::glamx::{DMat3, DQuat};
 use parry3d_f64::math::{Pose as PPose, Vector};
 use parry3d_f64::shape::TriMesh;
 
-struct IMesh {
-    v: Vec<Point3<f64>>,
-    f: Vec<[u32; 3]>,
-}
-
-impl IMesh {
-    fn tris(&self, v: &[Point3<f64>]) -> Vec<Tri> {
-        self.f.iter().map(|t| [v[t[0] as usize], v[t[1] as usize], v[t[2] as usize]]).collect()
-    }
-}
-
-/// UV sphere with `2 * lon * (lat - 1)` triangles.
-fn uv_sphere(c: [f64; 3], r: f64, lat: u32, lon: u32) -> IMesh {
-    let mut v = vec![Point3::new(c[0], c[1], c[2] + r)];
-    for i in 1..lat {
-        let th = PI * i as f64 / lat as f64;
-        for j in 0..lon {
-            let ph = 2.0 * PI * j as f64 / lon as f64;
-            v.push(Point3::new(c[0] + r * th.sin() * ph.cos(), c[1] + r * th.sin() * ph.sin(), c[2] + r * th.cos()));
-        }
-    }
-    v.push(Point3::new(c[0], c[1], c[2] - r));
-    let south = v.len() as u32 - 1;
-    let ring = |i: u32, j: u32| 1 + (i - 1) * lon + j % lon;
-    let mut f = Vec::new();
-    for j in 0..lon {
-        f.push([0, ring(1, j), ring(1, j + 1)]);
-        f.push([south, ring(lat - 1, j + 1), ring(lat - 1, j)]);
-    }
-    for i in 1..lat - 1 {
-        for j in 0..lon {
-            f.push([ring(i, j), ring(i + 1, j), ring(i + 1, j + 1)]);
-            f.push([ring(i, j), ring(i + 1, j + 1), ring(i, j + 1)]);
-        }
-    }
-    IMesh { v, f }
-}
-
-/// Torus around the z axis with `2 * nu * nv` triangles.
-fn torus(rr: f64, r: f64, nu: u32, nv: u32) -> IMesh {
-    let mut v = Vec::new();
-    for i in 0..nu {
-        let u = 2.0 * PI * i as f64 / nu as f64;
-        for j in 0..nv {
-            let w = 2.0 * PI * j as f64 / nv as f64;
-            v.push(Point3::new((rr + r * w.cos()) * u.cos(), (rr + r * w.cos()) * u.sin(), r * w.sin()));
-        }
-    }
-    let id = |i: u32, j: u32| (i % nu) * nv + j % nv;
-    let mut f = Vec::new();
-    for i in 0..nu {
-        for j in 0..nv {
-            f.push([id(i, j), id(i + 1, j), id(i + 1, j + 1)]);
-            f.push([id(i, j), id(i + 1, j + 1), id(i, j + 1)]);
-        }
-    }
-    IMesh { v, f }
+/// Triangles of a mesh whose vertices were replaced (e.g. placed by a pose).
+fn tris_with(m: &Mesh, v: &[Point3<f64>]) -> Vec<Tri> {
+    m.triangles.iter().map(|t| t.map(|i| v[i as usize])).collect()
 }
 
 fn parry_mesh(v: &[Point3<f64>], f: &[[u32; 3]]) -> TriMesh {
@@ -96,14 +39,14 @@ fn scene_size(a: &[Point3<f64>], b: &[Point3<f64>]) -> f64 {
 }
 
 /// Runs all checks for one scene and pose; returns the number of intersecting pairs.
-fn check_scene(name: &str, a: &IMesh, b: &IMesh, pose: &Pose, brute: bool) -> usize {
-    let vb = pose.apply_all(&b.v);
-    let (ta, tb) = (a.tris(&a.v), b.tris(&vb));
+fn check_scene(name: &str, a: &Mesh, b: &Mesh, pose: &Pose, brute: bool) -> usize {
+    let vb = pose.apply_all(&b.vertices);
+    let (ta, tb) = (a.triangles_f64(), tris_with(b, &vb));
     let truth = intersecting_pairs(&ta, &tb);
-    let margin = 1e-9 * scene_size(&a.v, &vb);
+    let margin = 1e-9 * scene_size(&a.vertices, &vb);
 
     // Parry, identity pose on the same f64 geometry.
-    let (ma, mb) = (parry_mesh(&a.v, &a.f), parry_mesh(&vb, &b.f));
+    let (ma, mb) = (parry_mesh(&a.vertices, &a.triangles), parry_mesh(&vb, &b.triangles));
     let cand: Vec<(u32, u32)> =
         ma.bvh().leaf_pairs(mb.bvh(), |n1, n2| n1.aabb().loosened(margin).intersects(&n2.aabb())).collect();
     let mut got: Vec<(u32, u32)> =
@@ -113,7 +56,7 @@ fn check_scene(name: &str, a: &IMesh, b: &IMesh, pose: &Pose, brute: bool) -> us
     assert_eq!(got, truth, "{name} {pose:?}: parry (identity pose) + tri_tri != intersecting_pairs");
 
     // Parry with the real relative pose on B's own vertices.
-    let mb0 = parry_mesh(&b.v, &b.f);
+    let mb0 = parry_mesh(&b.vertices, &b.triangles);
     let pos12 = parry_pose(pose);
     let cand: Vec<(u32, u32)> = ma
         .bvh()
@@ -147,8 +90,8 @@ fn check_scene(name: &str, a: &IMesh, b: &IMesh, pose: &Pose, brute: bool) -> us
 
 #[test]
 fn oracle_vs_parry_sphere_torus() {
-    let a = uv_sphere([0.0, 0.0, 0.0], 1.0, 32, 32); // 1984 triangles
-    let b = torus(1.0, 0.3, 32, 32); // 2048 triangles
+    let a = mesh::sphere(2000);
+    let b = mesh::torus(2000);
     let poses = [
         Pose::default(),
         Pose::new(0.0, 0.0, 90.0, 0.0, 0.0, 0.0), // exact quarter turn: shared geometry stays exact
@@ -165,16 +108,14 @@ fn oracle_vs_parry_sphere_torus() {
     assert!(total > 0);
     // Sphere vs itself at the identity: every pair of neighbours touches exactly.
     let n = check_scene("sphere/sphere", &a, &a, &Pose::default(), true);
-    assert!(n >= a.f.len() * 10, "{n} pairs: neighbours must touch");
+    assert!(n >= a.len() * 10, "{n} pairs: neighbours must touch");
     // Sphere vs a quarter-turned copy of itself (exact quarter turn, nearly coincident surfaces).
     check_scene("sphere/sphere90", &a, &a, &Pose::new(0.0, 0.0, 90.0, 0.0, 0.0, 0.0), false);
 }
 
 #[test]
 fn oracle_vs_parry_bunny() {
-    let m = collision_chip::mesh::resolve("bunny").expect("bunny").scaled_into_unit_cube();
-    let a = IMesh { v: m.vertices.clone(), f: m.triangles.clone() };
-    assert_eq!(a.tris(&a.v), m.triangles_f64());
+    let a = mesh::resolve("bunny").expect("bunny").scaled_into_unit_cube();
     let poses = [
         Pose::default(), // identical meshes: all neighbour contacts
         Pose::new(0.0, 90.0, 0.0, 0.0, 0.0, 0.0),
@@ -184,39 +125,5 @@ fn oracle_vs_parry_bunny() {
     ];
     for p in &poses {
         check_scene("bunny/bunny", &a, &a, p, false);
-    }
-}
-
-fn median_ms(mut f: impl FnMut() -> usize, runs: usize) -> (f64, usize) {
-    let mut ts = Vec::new();
-    let mut n = 0;
-    for _ in 0..runs {
-        let t0 = Instant::now();
-        n = f();
-        ts.push(t0.elapsed().as_secs_f64() * 1e3);
-    }
-    ts.sort_by(f64::total_cmp);
-    (ts[runs / 2], n)
-}
-
-#[test]
-fn oracle_timing_4k_x_4k() {
-    let a = uv_sphere([0.0, 0.0, 0.0], 1.0, 46, 44); // 3960 triangles
-    let b = torus(1.0, 0.3, 64, 32); // 4096 triangles
-    let pose = Pose::new(17.0, -33.0, 71.0, 0.3, -0.2, 0.1);
-    let vb = pose.apply_all(&b.v);
-    let (ta, tb) = (a.tris(&a.v), b.tris(&vb));
-    let (ms, n) = median_ms(|| intersecting_pairs(&ta, &tb).len(), 15);
-    eprintln!("intersecting_pairs sphere {} x torus {}: {} pairs, median {:.2} ms", ta.len(), tb.len(), n, ms);
-    let (ms2, n2) = median_ms(|| intersecting_pairs(&ta, &ta).len(), 15);
-    eprintln!("intersecting_pairs sphere {} x itself (all contacts): {} pairs, median {:.2} ms", ta.len(), n2, ms2);
-    assert!(n > 0 && n2 > 0);
-    if let Ok(m) = collision_chip::mesh::resolve("bunny") {
-        let m = m.scaled_into_unit_cube();
-        let t = m.triangles_f64();
-        let p = Pose::new(-11.0, 7.0, 123.0, 0.2, -0.1, 0.15);
-        let tb: Vec<Tri> = t.iter().map(|x| x.map(|q| p.apply(&q))).collect();
-        let (ms3, n3) = median_ms(|| intersecting_pairs(&t, &tb).len(), 15);
-        eprintln!("intersecting_pairs bunny {} x rotated bunny: {} pairs, median {:.2} ms", t.len(), n3, ms3);
     }
 }

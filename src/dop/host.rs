@@ -11,7 +11,7 @@
 //! rounding of B's vertices into A's frame, so that d'_i bounds the f64 geometry the
 //! oracle judges. c_i is then rounded up. In `nearest-even` mode nothing is padded.
 
-use super::normals::DopNormals;
+use super::normals::{DopNormals, HullTriangle};
 use crate::config::{ChipConfig, DopRounding};
 use crate::format::{Format, Rounding};
 use crate::pose::Pose;
@@ -87,24 +87,20 @@ fn affine(fmt: Format, l: &Matrix3<f64>, t: &Vector3<f64>) -> Affine {
     m
 }
 
-/// The hull triangle whose cone contains `b` with the smallest bound on a sphere
-/// (sum lambda_l |B_l|), and its lambdas clamped to >= 0 (the clamping residual is padded).
+/// The hull triangle whose cone contains `b`: the one the ray through b leaves the hull
+/// of the unit normals by (largest `plane . b`; among coplanar triangles of one face, one
+/// whose lambdas are >= 0), and its lambdas clamped to >= 0 (the clamping residual is padded).
 fn best_cone(n: &DopNormals, b: &Vector3<f64>) -> ([usize; 3], [f64; 3]) {
-    let mut best: Option<(f64, [usize; 3], [f64; 3])> = None;
+    let score = |t: &HullTriangle| t.plane.dot(b);
+    let top = n.hull.iter().map(score).fold(f64::NEG_INFINITY, f64::max);
     let tol = 1e-12 * b.norm();
-    for t in &n.hull {
-        let m = Matrix3::from_columns(&[n.b[t[0]], n.b[t[1]], n.b[t[2]]]);
-        let Some(inv) = m.try_inverse() else { continue };
-        let l = inv * b;
-        if l.iter().any(|&x| x < -tol) {
-            continue;
-        }
-        let l = [l.x.max(0.0), l.y.max(0.0), l.z.max(0.0)];
-        let cost: f64 = (0..3).map(|q| l[q] * n.b[t[q]].norm()).sum();
-        if best.as_ref().is_none_or(|(bc, _, _)| cost < *bc) {
-            best = Some((cost, *t, l));
-        }
-    }
-    let (_, t, l) = best.expect("the hull cones cover the sphere");
-    (t, l)
+    let (t, l) = n
+        .hull
+        .iter()
+        .filter(|t| score(t) >= top - 1e-12 * top.abs())
+        .map(|t| (t, t.inv * b))
+        .max_by(|x, y| x.1.min().total_cmp(&y.1.min()))
+        .expect("the hull is not empty");
+    debug_assert!(l.min() >= -tol, "direction {b:?} outside its cone: {l:?}");
+    (t.j, [l.x.max(0.0), l.y.max(0.0), l.z.max(0.0)])
 }

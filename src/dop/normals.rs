@@ -5,7 +5,7 @@
 //! three signed coordinates. They come in antiparallel pairs: B_{i+k/2} = -B_i, so the DOP
 //! spans [-d_{i+k/2}, d_i] along B_i. Index `opp(i) = (i + k/2) mod k`.
 
-use nalgebra::Vector3;
+use nalgebra::{Matrix3, Vector3};
 use std::sync::OnceLock;
 
 /// The k values the chip supports.
@@ -25,7 +25,18 @@ pub struct DopNormals {
     pub b: Vec<Vector3<f64>>,
     /// Triangles (index triples into `b`) of the convex hull of the unit normals. Every
     /// direction lies in the cone of at least one of them.
-    pub hull: Vec<[usize; 3]>,
+    pub hull: Vec<HullTriangle>,
+}
+
+/// One triangle of the hull of the unit normals.
+#[derive(Debug)]
+pub struct HullTriangle {
+    pub j: [usize; 3],
+    /// Inverse of the matrix with columns B_j0, B_j1, B_j2: lambda = inv * b.
+    pub inv: Matrix3<f64>,
+    /// Its plane {x : plane . x = 1}: the ray through a direction b leaves the hull
+    /// through the triangle(s) with the largest plane . b.
+    pub plane: Vector3<f64>,
 }
 
 impl DopNormals {
@@ -51,7 +62,16 @@ impl DopNormals {
         let to_v = |n: &[i8; 3], s: f64| Vector3::new(n[0] as f64 * s, n[1] as f64 * s, n[2] as f64 * s);
         let b: Vec<Vector3<f64>> =
             half.iter().map(|n| to_v(n, 1.0)).chain(half.iter().map(|n| to_v(n, -1.0))).collect();
-        let hull = convex_hull_triangles(&b);
+        let hull = convex_hull_triangles(&b)
+            .into_iter()
+            .map(|j| {
+                let m = Matrix3::from_columns(&[b[j[0]], b[j[1]], b[j[2]]]);
+                let u = j.map(|i| b[i].normalize());
+                let n = (u[1] - u[0]).cross(&(u[2] - u[0]));
+                let n = if n.dot(&u[0]) < 0.0 { -n } else { n };
+                HullTriangle { j, inv: m.try_inverse().expect("hull triangles are not flat"), plane: n / n.dot(&u[0]) }
+            })
+            .collect();
         DopNormals { k, b, hull }
     }
 
@@ -126,10 +146,7 @@ mod tests {
                 let phi = q as f64 * 2.399963229728653;
                 let r = (1.0 - z * z).sqrt();
                 let d = Vector3::new(r * phi.cos(), r * phi.sin(), z);
-                let covered = s.hull.iter().any(|t| {
-                    let m = nalgebra::Matrix3::from_columns(&[s.b[t[0]], s.b[t[1]], s.b[t[2]]]);
-                    m.try_inverse().map(|mi| (mi * d).iter().all(|&x| x >= -1e-12)).unwrap_or(false)
-                });
+                let covered = s.hull.iter().any(|t| (t.inv * d).iter().all(|&x| x >= -1e-12));
                 assert!(covered, "k={k} direction {d:?} in no cone");
             }
         }

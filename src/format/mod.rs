@@ -333,6 +333,31 @@ impl Format {
         (units2 as f64 * pow2(e - frac - 1)).copysign(hi)
     }
 
+    /// binary32, directed rounding of the exact `hi + lo` (`hi` finite and nonzero, `lo`
+    /// as in [`Self::round2`]): native f32 conversion (nearest) is within one step of the
+    /// answer and the f32 grid points are f64s, so one exact comparison picks the
+    /// neighbour. Covers subnormals (conversion rounds them), overflow (`next_up(-inf)`
+    /// is `-max`) and tiny negatives rounding up to `-0`.
+    #[inline(always)]
+    fn round32_directed(hi: f64, lo: f64, up: bool) -> f64 {
+        let f = hi as f32;
+        let fd = f as f64;
+        // Step one f32 toward +inf (up) or -inf (down)? Flag arithmetic, no branches:
+        // the signs in a sweep are random.
+        let step = if up { (fd < hi) | ((fd == hi) & (lo > 0.0)) } else { (fd > hi) | ((fd == hi) & (lo < 0.0)) };
+        // Moving away from zero adds one to the magnitude bits, toward zero subtracts one;
+        // a zero is first given the sign of the direction of travel.
+        let b = f.to_bits();
+        let zero = (b << 1) == 0;
+        let b = if zero { if up { 0 } else { 0x8000_0000 } } else { b };
+        let away = (b >> 31 == 0) == up;
+        let delta = step as u32;
+        let nb = if away { b.wrapping_add(delta) } else { b.wrapping_sub(delta) };
+        // A zero that does not move keeps the sign the conversion gave it.
+        let nb = if zero & !step { f.to_bits() } else { nb };
+        f32::from_bits(nb) as f64
+    }
+
     /// Overflow result for a result of sign `neg` (see the table in the module doc).
     #[cold]
     fn overflow(&self, neg: bool, r: Rounding) -> f64 {
@@ -354,6 +379,9 @@ impl Format {
         if self.is_binary32() && r == Rounding::NearestEven {
             let y = x as f32 as f64;
             return if y.is_nan() { f64::NAN } else { y };
+        }
+        if self.is_binary32() && x != 0.0 && x.is_finite() {
+            return Self::round32_directed(x, 0.0, r == Rounding::TowardPositive);
         }
         self.round_general(x, r)
     }
@@ -403,6 +431,9 @@ impl Format {
         // TwoSum (Knuth): s + lo == a + b exactly.
         let bb = s - a;
         let lo = (a - (s - bb)) + (b - bb);
+        if self.is_binary32() && r != Rounding::NearestEven {
+            return Self::round32_directed(s, lo, r == Rounding::TowardPositive);
+        }
         self.round2(s, lo, r)
     }
 
@@ -425,6 +456,9 @@ impl Format {
         let p = a * b;
         if p == 0.0 || !p.is_finite() {
             return if p.is_nan() { f64::NAN } else { p };
+        }
+        if self.is_binary32() && r != Rounding::NearestEven {
+            return Self::round32_directed(p, 0.0, r == Rounding::TowardPositive);
         }
         self.round2(p, 0.0, r)
     }

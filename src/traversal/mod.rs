@@ -84,6 +84,7 @@ pub(crate) struct Engine<'a> {
     held_tri: [Option<u32>; 2],
     pairs: Vec<(u32, u32)>,
     live: u64,
+    dop_unit: doptrf::TransformCache<'a>,
     pub(crate) counters: Counters,
     pub(crate) stop: bool,
 }
@@ -106,18 +107,14 @@ impl<'a> Engine<'a> {
         }
     }
 
-    /// One DOP test of A's node `na` against B's node `nb`.
+    /// One DOP test of A's node `na` against B's node `nb`. B's transformed distances are
+    /// computed on first use and kept for the query: the same values the lane computes
+    /// (the `dop_transforms` counter still counts what the hardware does).
     fn dop_test(&mut self, na: u32, nb: u32) -> bool {
         let c = &mut self.counters;
         c.dop_tests += 1;
         c.node_fetches += Self::fetch(&mut self.held_node[0], na) + Self::fetch(&mut self.held_node[1], nb);
-        let hit = doptrf::dop_overlap(
-            self.cfg.format,
-            self.cfg.dop_rounding.op(),
-            self.setup,
-            self.b.tree.dop(nb),
-            self.a.tree.dop(na),
-        );
+        let hit = self.dop_unit.overlap(nb, self.b.tree.dop(nb), self.a.tree.dop(na));
         c.dop_overlaps += hit as u64;
         hit
     }
@@ -166,6 +163,7 @@ pub fn run(
         held_tri: [None; 2],
         pairs: vec![],
         live: 0,
+        dop_unit: doptrf::TransformCache::new(cfg.format, cfg.dop_rounding.op(), setup, b.tree.len()),
         counters: Counters::default(),
         stop: false,
     };
