@@ -207,8 +207,13 @@ proptest! {
         prop_assume!(margin(&a, &bp) > 1e-3);
         let cfg = ChipConfig::default();
         let setup = HostSetup::new(&cfg, &pose, 2.0);
-        let got = tcheck::tri_unit(cfg.format, cfg.tri_rounding, &TriWord::new(&a, cfg.format), &TriWord::new(&b, cfg.format), &setup);
+        let (wa, wb) = (TriWord::new(&a, cfg.format), TriWord::new(&b, cfg.format));
+        let got = tcheck::tri_unit(cfg.format, cfg.tri_rounding, &wa, &wb, &setup);
         prop_assert_eq!(got, oracle::tri_tri(&a, &bp));
+        // The traversal's TRI_UNIT (stage 1 kept per leaf) says the same, twice.
+        let mut unit = tcheck::TriUnit::new(cfg.format, cfg.tri_rounding, &setup, 1, 1);
+        prop_assert_eq!(unit.test(0, &wa, 0, &wb), got);
+        prop_assert_eq!(unit.test(0, &wa, 0, &wb), got);
     }
 }
 

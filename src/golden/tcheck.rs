@@ -44,13 +44,9 @@ impl Trace {
     }
 }
 
-/// One T.CHECK: the edges of triangle `v` (in its own object's frame) against the unit
-/// triangle of the other object's leaf, whose map is `m_leaf`; `m_frame` maps `v`'s frame
-/// into the leaf's frame.
-pub fn tcheck(f: Format, r: Rounding, m_leaf: &Affine, m_frame: &Affine, v: &[[f64; 3]; 3]) -> Trace {
-    let (m, b) = (m_leaf, m_frame);
+/// Stage 1: M_b = M_B . M_AB (Eqs. 11, 12), `m` the leaf's M_B, `b` the frame map.
+pub fn stage1(f: Format, r: Rounding, m: &Affine, b: &Affine) -> Affine {
     let add = |x, y| f.add(x, y, r);
-    let sub = |x, y| f.sub(x, y, r);
     let mul = |x, y| f.mul(x, y, r);
     let mut mb = [[0.0; 4]; 3];
     for i in 0..3 {
@@ -62,6 +58,14 @@ pub fn tcheck(f: Format, r: Rounding, m_leaf: &Affine, m_frame: &Affine, v: &[[f
             add(mul(m[i][2], b[2][3]), m[i][3]),
         );
     }
+    mb
+}
+
+/// Stages 2-5 on the output `mb` of stage 1 and the triangle `v`.
+pub fn edges(f: Format, r: Rounding, mb: &Affine, v: &[[f64; 3]; 3]) -> Trace {
+    let add = |x, y| f.add(x, y, r);
+    let sub = |x, y| f.sub(x, y, r);
+    let mul = |x, y| f.mul(x, y, r);
     let mut vt = [[0.0; 3]; 3];
     for (p, out) in v.iter().zip(vt.iter_mut()) {
         for i in 0..3 {
@@ -79,11 +83,65 @@ pub fn tcheck(f: Format, r: Rounding, m_leaf: &Affine, m_frame: &Affine, v: &[[f
         let down = q[2] <= 0.0 && p[2] >= 0.0 && rz[e] < 0.0 && a[e] <= 0.0 && bb[e] <= 0.0 && s[e] >= 0.0;
         crossing[e] = up || down;
     }
-    Trace { mb, v: vt, a, b: bb, rz, s, crossing }
+    Trace { mb: *mb, v: vt, a, b: bb, rz, s, crossing }
+}
+
+/// One T.CHECK: the edges of triangle `v` (in its own object's frame) against the unit
+/// triangle of the other object's leaf, whose map is `m_leaf`; `m_frame` maps `v`'s frame
+/// into the leaf's frame.
+pub fn tcheck(f: Format, r: Rounding, m_leaf: &Affine, m_frame: &Affine, v: &[[f64; 3]; 3]) -> Trace {
+    edges(f, r, &stage1(f, r, m_leaf, m_frame), v)
 }
 
 /// TRI_UNIT: A's edges against U(B), then B's edges against U(A).
 pub fn tri_unit(f: Format, r: Rounding, a: &TriWord, b: &TriWord, setup: &HostSetup) -> bool {
     (!b.degenerate && tcheck(f, r, &b.m, &setup.m_ab, &a.v).hit())
         || (!a.degenerate && tcheck(f, r, &a.m, &setup.m_ba, &b.v).hit())
+}
+
+/// TRI_UNIT during one query: stage 1 depends on one leaf and the pose only, so its
+/// output is kept per leaf (the same values; [`tri_unit`] bit for bit, tested).
+pub struct TriUnit<'a> {
+    f: Format,
+    r: Rounding,
+    setup: &'a HostSetup,
+    /// Per triangle of B: M_B(b) . M_AB; per triangle of A: M_A(a) . M_BA.
+    mb_b: StageOneCache,
+    mb_a: StageOneCache,
+}
+
+struct StageOneCache {
+    slot: Vec<u32>,
+    values: Vec<Affine>,
+}
+
+impl StageOneCache {
+    fn get(&mut self, t: u32, compute: impl FnOnce() -> Affine) -> &Affine {
+        let mut s = self.slot[t as usize];
+        if s == u32::MAX {
+            s = self.values.len() as u32;
+            self.slot[t as usize] = s;
+            self.values.push(compute());
+        }
+        &self.values[s as usize]
+    }
+}
+
+impl<'a> TriUnit<'a> {
+    pub fn new(f: Format, r: Rounding, setup: &'a HostSetup, tris_a: usize, tris_b: usize) -> Self {
+        let cache = |n| StageOneCache { slot: vec![u32::MAX; n], values: vec![] };
+        TriUnit { f, r, setup, mb_b: cache(tris_b), mb_a: cache(tris_a) }
+    }
+
+    /// Do triangle `ta` of A (word `a`) and `tb` of B (word `b`) intersect?
+    pub fn test(&mut self, ta: u32, a: &TriWord, tb: u32, b: &TriWord) -> bool {
+        let (f, r, setup) = (self.f, self.r, self.setup);
+        if !b.degenerate {
+            let mb = self.mb_b.get(tb, || stage1(f, r, &b.m, &setup.m_ab));
+            if edges(f, r, mb, &a.v).hit() {
+                return true;
+            }
+        }
+        !a.degenerate && edges(f, r, self.mb_a.get(ta, || stage1(f, r, &a.m, &setup.m_ba)), &b.v).hit()
+    }
 }

@@ -74,10 +74,8 @@ pub struct QueryResult {
 /// The state a traversal drives: the two images, the per-pose setup, the DOP unit and
 /// TRI_UNIT as golden functions, the held words and the counters.
 pub(crate) struct Engine<'a> {
-    cfg: &'a ChipConfig,
     a: &'a ObjectImage,
     b: &'a ObjectImage,
-    setup: &'a HostSetup,
     layout: Layout,
     mode: Mode,
     held_node: [Option<u32>; 2],
@@ -85,6 +83,7 @@ pub(crate) struct Engine<'a> {
     pairs: Vec<(u32, u32)>,
     live: u64,
     dop_unit: doptrf::TransformCache<'a>,
+    tri_unit: tcheck::TriUnit<'a>,
     pub(crate) counters: Counters,
     pub(crate) stop: bool,
 }
@@ -125,7 +124,7 @@ impl<'a> Engine<'a> {
         c.tri_tests += 1;
         c.tri_fetches += Self::fetch(&mut self.held_tri[0], ta) + Self::fetch(&mut self.held_tri[1], tb);
         let (wa, wb) = (&self.a.tris[ta as usize], &self.b.tris[tb as usize]);
-        if tcheck::tri_unit(self.cfg.format, self.cfg.tri_rounding, wa, wb, self.setup) {
+        if self.tri_unit.test(ta, wa, tb, wb) {
             self.counters.tri_hits += 1;
             self.pairs.push((ta, tb));
             self.stop = self.mode == Mode::First;
@@ -153,10 +152,8 @@ pub fn run(
     traversal: Traversal,
 ) -> QueryResult {
     let mut e = Engine {
-        cfg,
         a,
         b,
-        setup,
         layout: Layout::new(cfg),
         mode,
         held_node: [None; 2],
@@ -164,6 +161,7 @@ pub fn run(
         pairs: vec![],
         live: 0,
         dop_unit: doptrf::TransformCache::new(cfg.format, cfg.dop_rounding.op(), setup, b.tree.len()),
+        tri_unit: tcheck::TriUnit::new(cfg.format, cfg.tri_rounding, setup, a.tris.len(), b.tris.len()),
         counters: Counters::default(),
         stop: false,
     };
