@@ -11,7 +11,7 @@
 //! rounding of B's vertices into A's frame, so that d'_i bounds the f64 geometry the
 //! oracle judges. c_i is then rounded up. In `nearest-even` mode nothing is padded.
 
-use super::normals::{DopNormals, HullTriangle};
+use super::normals::DopNormals;
 use crate::config::{ChipConfig, DopRounding};
 use crate::format::{Format, Rounding};
 use crate::pose::Pose;
@@ -44,10 +44,15 @@ impl HostSetup {
         let outward = cfg.dop_rounding == DopRounding::Outward;
         let eps = f64::EPSILON; // 2^-52
         let t_inf = t.amax();
+        let h = cfg.k / 2;
+        // The hull is centrally symmetric: -b_i lies in the antipodal cone with the same
+        // lambdas, so the second half of the lanes mirrors the first.
+        let cones: Vec<([usize; 3], [f64; 3])> =
+            normals.b[..h].iter().map(|bi| best_cone(normals, &(rot.transpose() * bi))).collect();
         let (mut j, mut cmat, mut cvec) = (vec![], vec![], vec![]);
-        for bi in &normals.b {
+        for (i, bi) in normals.b.iter().enumerate() {
             let b = rot.transpose() * bi;
-            let (tri, lambda) = best_cone(normals, &b);
+            let (tri, lambda) = if i < h { cones[i] } else { (cones[i - h].0.map(|x| normals.opp(x)), cones[i - h].1) };
             let c3 = lambda.map(|l| fmt.round(l, Rounding::NearestEven));
             j.push(tri.map(|x| x as u8));
             cmat.push(c3);
@@ -91,16 +96,16 @@ fn affine(fmt: Format, l: &Matrix3<f64>, t: &Vector3<f64>) -> Affine {
 /// of the unit normals by (largest `plane . b`; among coplanar triangles of one face, one
 /// whose lambdas are >= 0), and its lambdas clamped to >= 0 (the clamping residual is padded).
 fn best_cone(n: &DopNormals, b: &Vector3<f64>) -> ([usize; 3], [f64; 3]) {
-    let score = |t: &HullTriangle| t.plane.dot(b);
-    let top = n.hull.iter().map(score).fold(f64::NEG_INFINITY, f64::max);
-    let tol = 1e-12 * b.norm();
+    let score: Vec<f64> = n.hull.iter().map(|t| t.plane.dot(b)).collect();
+    let top = score.iter().copied().fold(f64::NEG_INFINITY, f64::max);
     let (t, l) = n
         .hull
         .iter()
-        .filter(|t| score(t) >= top - 1e-12 * top.abs())
-        .map(|t| (t, t.inv * b))
+        .zip(&score)
+        .filter(|(_, &s)| s >= top - 1e-12 * top.abs())
+        .map(|(t, _)| (t, t.inv * b))
         .max_by(|x, y| x.1.min().total_cmp(&y.1.min()))
         .expect("the hull is not empty");
-    debug_assert!(l.min() >= -tol, "direction {b:?} outside its cone: {l:?}");
+    debug_assert!(l.min() >= -1e-12 * b.norm(), "direction {b:?} outside its cone: {l:?}");
     (t.j, [l.x.max(0.0), l.y.max(0.0), l.z.max(0.0)])
 }
