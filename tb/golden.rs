@@ -1,6 +1,8 @@
 //! Properties of the golden model: traversals agree, the transformed DOP bounds the real
 //! one, T.CHECK agrees with the exact oracle away from its weak cases.
 
+#![allow(clippy::needless_range_loop)] // lanes are indexed by i in several arrays at once
+
 use collision_chip::config::{ChipConfig, DopRounding};
 use collision_chip::dop::{DopNormals, DopTree, HostSetup, SUPPORTED_K};
 use collision_chip::format::{Format, Rounding};
