@@ -6,10 +6,10 @@
 //! - node word, `1 + k*W + 64` bits: `is_leaf`, d_0..d_{k-1}, then two 32-bit fields:
 //!   children (inner node) or triangle index and 0 (leaf). Node i lives at
 //!   `base + i * node_bytes`, pre-order, root at node 0.
-//! - triangle word, `21*W + 1` bits: vertices v0, v1, v2 (x, y, z each), M_B row-major
-//!   (3x4: the affine map sending the triangle to the unit triangle), and the
-//!   `degenerate` bit (zero area: M_B does not exist and is stored as zeros).
-//!   Triangle t lives at `base + t * tri_bytes`.
+//! - triangle word, `24*W + 1` bits: vertices v0, v1, v2 (x, y, z each), M_B row-major
+//!   (3x4: the affine map sending the triangle to the unit triangle), its error bounds
+//!   `e_lin`, `e_tr` and norm `l_norm` (see [`TriWord`]), and the `degenerate` bit (no
+//!   usable M_B: stored as zeros). Triangle t lives at `base + t * tri_bytes`.
 
 use crate::config::ChipConfig;
 use crate::dop::host::Affine;
@@ -27,7 +27,7 @@ pub struct Layout {
 impl Layout {
     pub fn new(cfg: &ChipConfig) -> Layout {
         let w = cfg.format.width();
-        Layout { node_bits: 1 + cfg.k as u32 * w + 64, tri_bits: 21 * w + 1 }
+        Layout { node_bits: 1 + cfg.k as u32 * w + 64, tri_bits: 24 * w + 1 }
     }
     pub fn node_bytes(&self) -> u64 {
         self.node_bits.div_ceil(8) as u64
@@ -37,42 +37,79 @@ impl Layout {
     }
 }
 
-/// The triangle word of one leaf (DATE'05 §4.2: the triangle and its M_B).
+/// The triangle word of one leaf (DATE'05 §4.2: the triangle and its M_B), with the
+/// bounds T.CHECK needs to flag uncertain decisions (docs/ACCURACY.md).
+///
+/// The ideal map is M_B* = [L* | -L* v0] with L* = [v1 - v0, v2 - v0, n]^-1 in exact
+/// arithmetic on the f64 vertices, n being the host's f64 unit normal (any fixed vector off
+/// the plane defines a valid unit-triangle map). The stored entries are within `e_lin`
+/// (linear part) and `e_tr` (translation column) of M_B*.
 #[derive(Clone, Debug, PartialEq)]
 pub struct TriWord {
     /// Vertices in the object's frame, rounded to nearest in the chip format.
     pub v: [[f64; 3]; 3],
-    /// M_B: sends v0 to (0,0,0), v1 to (1,0,0), v2 to (0,1,0) and the unit normal to z.
+    /// M_B: sends v0 to (0,0,0), v1 to (1,0,0), v2 to (0,1,0) and n to (0,0,1).
     pub m: Affine,
+    /// Bound on |M_B - M_B*| over the linear entries (rounded up).
+    pub e_lin: f64,
+    /// Bound on |M_B - M_B*| over the translation entries (rounded up).
+    pub e_tr: f64,
+    /// |L|_inf of the stored linear part (rounded up).
+    pub l_norm: f64,
     pub degenerate: bool,
 }
 
 impl TriWord {
     /// Built by the host in f64 from the input geometry, then rounded to the format.
+    ///
+    /// The bounds are a posteriori: with Res = L E* - I and rho >= |Res|_inf (computed in
+    /// f64 plus its rounding error), L* = (I + Res)^-1 L, so |L - L*|_inf <= rho |L| / (1 - rho).
+    /// A triangle with rho >= 1/2 (zero area, or too ill-conditioned for the format) is
+    /// `degenerate`.
     pub fn new(t: &Tri, fmt: Format) -> TriWord {
         let rn = |x: f64| fmt.round(x, Rounding::NearestEven);
+        let up = |x: f64| fmt.round(x * (1.0 + 2f64.powi(-50)), Rounding::TowardPositive);
         let v = t.map(|p| [rn(p.x), rn(p.y), rn(p.z)]);
+        let bad = TriWord { v, m: [[0.0; 4]; 3], e_lin: f64::INFINITY, e_tr: f64::INFINITY, l_norm: f64::INFINITY, degenerate: true };
         let e1 = t[1] - t[0];
         let e2 = t[2] - t[0];
         let n = e1.cross(&e2);
-        let inv = if n.norm() > 0.0 && n.norm().is_finite() {
-            Matrix3::from_columns(&[e1, e2, n / n.norm()]).try_inverse()
-        } else {
-            None
-        };
-        match inv.filter(|i| i.iter().all(|x| x.is_finite())) {
-            Some(li) => {
-                let tr: Vector3<f64> = -(li * t[0].coords);
-                let mut m = [[0.0; 4]; 3];
-                for (r, row) in m.iter_mut().enumerate() {
-                    for (c, x) in row.iter_mut().enumerate() {
-                        *x = rn(if c < 3 { li[(r, c)] } else { tr[r] });
-                    }
-                }
-                TriWord { v, m, degenerate: false }
-            }
-            None => TriWord { v, m: [[0.0; 4]; 3], degenerate: true },
+        let nn = n.norm();
+        if !(nn > 0.0 && nn.is_finite()) {
+            return bad;
         }
+        let e = Matrix3::from_columns(&[e1, e2, n / nn]);
+        let Some(inv) = e.try_inverse().filter(|i| i.iter().all(|x| x.is_finite())) else { return bad };
+        let l = inv.map(rn);
+        if !l.iter().all(|x| x.is_finite()) {
+            return bad;
+        }
+        let u = 2f64.powi(-53);
+        // rho: |fl(L E) - I| plus the rounding of the product and of the differences in E.
+        let res = l * e - Matrix3::identity();
+        let mag = l.abs() * e.abs();
+        let rho = (res.abs() + mag * (8.0 * u)).column_sum().max();
+        if !(rho < 0.5) {
+            return bad;
+        }
+        let l_inf = l.abs().column_sum().max();
+        let e_lin = l_inf * rho / (1.0 - rho);
+        let tr: Vector3<f64> = (-(l * t[0].coords)).map(rn);
+        // |tr - t*| <= |tr + L v0| + |L - L*| |v0|_1, the first term computed in f64 with its error.
+        let v0 = t[0].coords;
+        let d = tr + l * v0;
+        let derr = (tr.abs() + l.abs() * v0.abs()) * (4.0 * u);
+        let e_tr = (d.abs() + derr).max() + e_lin * v0.abs().sum();
+        let mut m = [[0.0; 4]; 3];
+        for (r, row) in m.iter_mut().enumerate() {
+            for (c, x) in row.iter_mut().enumerate() {
+                *x = if c < 3 { l[(r, c)] } else { tr[r] };
+            }
+        }
+        if !(e_tr.is_finite() && tr.iter().all(|x| x.is_finite())) {
+            return bad;
+        }
+        TriWord { v, m, e_lin: up(e_lin), e_tr: up(e_tr), l_norm: up(l_inf), degenerate: false }
     }
 }
 

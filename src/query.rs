@@ -7,15 +7,17 @@ use crate::dop::{DopNormals, HostSetup};
 use crate::dop::tree::Tri;
 use crate::memory::{Layout, ObjectImage};
 use crate::pose::Pose;
-use crate::traversal::{self, Mode, QueryResult, Traversal};
+use crate::traversal::{self, Host, Mode, QueryResult, Traversal};
 use serde::Serialize;
 
-/// Both objects' memory images for one chip configuration.
+/// Both objects' memory images for one chip configuration, and the host's f64 geometry
+/// (to settle uncertain pairs).
 pub struct Chip {
     pub cfg: ChipConfig,
     pub a: ObjectImage,
     pub b: ObjectImage,
     pub layout: Layout,
+    geometry: [Vec<Tri>; 2],
 }
 
 impl Chip {
@@ -25,7 +27,13 @@ impl Chip {
         if a.is_empty() || b.is_empty() {
             return Err("both objects need at least one triangle".into());
         }
-        Ok(Chip { cfg, a: ObjectImage::build(a, &cfg), b: ObjectImage::build(b, &cfg), layout: Layout::new(&cfg) })
+        Ok(Chip {
+            cfg,
+            a: ObjectImage::build(a, &cfg),
+            b: ObjectImage::build(b, &cfg),
+            layout: Layout::new(&cfg),
+            geometry: [a.to_vec(), b.to_vec()],
+        })
     }
 
     pub fn setup(&self, pose: &Pose) -> HostSetup {
@@ -34,7 +42,8 @@ impl Chip {
 
     pub fn query(&self, pose: &Pose, mode: Mode, traversal: Traversal) -> QueryResult {
         let setup = self.setup(pose);
-        traversal::run(&self.cfg, &self.a, &self.b, &setup, mode, traversal)
+        let host = Host { a: &self.geometry[0], b: &self.geometry[1], rot: pose.rotation(), t: pose.translation() };
+        traversal::run(&self.cfg, &self.a, &self.b, &setup, &host, mode, traversal)
     }
 }
 

@@ -32,6 +32,14 @@ pub struct HostSetup {
     pub m_ab: Affine,
     /// B's frame to A's frame: x_A = R x_B + t.
     pub m_ba: Affine,
+    /// Bounds on |M_AB - M_AB*| for [linear entries, translation entries], M_AB* being the
+    /// exact [R^T | -R^T t] of the f64 pose (rounded up; docs/ACCURACY.md).
+    pub e_ab: [f64; 2],
+    /// The same for M_BA; its translation bound also covers the f64 placement of B's
+    /// vertices into A's frame (the geometry the oracle judges).
+    pub e_ba: [f64; 2],
+    /// eta: bound on how far the f64 placement moves a vertex of B, seen in B's frame.
+    pub eta: f64,
 }
 
 impl HostSetup {
@@ -74,22 +82,42 @@ impl HostSetup {
             };
             cvec.push(c);
         }
-        let m_ba = affine(fmt, &rot, &t);
         let rt = rot.transpose();
-        let m_ab = affine(fmt, &rt, &(-(rt * t)));
-        HostSetup { j, cmat, cvec, m_ab, m_ba }
+        let tab = -(rt * t);
+        let (m_ba, e_ba) = affine(fmt, &rot, &t);
+        let (m_ab, e_ab) = affine(fmt, &rt, &tab);
+        // The f64 products and sums: |fl(R^T t) - R^T t| <= 4u |R^T| |t| per entry.
+        let u = 2f64.powi(-53);
+        let e_ab_tr = e_ab[1] + 4.0 * u * (rt.abs() * t.abs()).max();
+        // |fl(R x + t) - (R x + t)| <= 4u (|R| |x| + |t|), |R|_inf <= sqrt 3, |x|_inf <= X.
+        let place = 4.0 * u * (3f64.sqrt() * b_coord_bound + t_inf);
+        let up = |x: f64| fmt.round(x * (1.0 + 2f64.powi(-50)), Rounding::TowardPositive);
+        HostSetup {
+            j,
+            cmat,
+            cvec,
+            m_ab,
+            m_ba,
+            e_ab: [up(e_ab[0]), up(e_ab_tr)],
+            e_ba: [up(e_ba[0]), up(e_ba[1] + place)],
+            eta: up(3f64.sqrt() * place),
+        }
     }
 }
 
-fn affine(fmt: Format, l: &Matrix3<f64>, t: &Vector3<f64>) -> Affine {
+/// [l | t] rounded to nearest, and the largest rounding error of [linear, translation] entries.
+fn affine(fmt: Format, l: &Matrix3<f64>, t: &Vector3<f64>) -> (Affine, [f64; 2]) {
     let mut m = [[0.0; 4]; 3];
+    let mut err = [0.0f64; 2];
     for (r, row) in m.iter_mut().enumerate() {
         for (c, x) in row.iter_mut().enumerate() {
             let v = if c < 3 { l[(r, c)] } else { t[r] };
             *x = fmt.round(v, Rounding::NearestEven);
+            let e = &mut err[(c == 3) as usize];
+            *e = e.max((*x - v).abs());
         }
     }
-    m
+    (m, err)
 }
 
 /// The hull triangle whose cone contains `b`: the one the ray through b leaves the hull

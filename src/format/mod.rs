@@ -133,6 +133,9 @@ enum Mag {
     TowardZero,
 }
 
+/// Smallest normal binary32 magnitude, 2^-126.
+const F32_MIN_NORMAL: f64 = f32::MIN_POSITIVE as f64;
+
 /// `2^e` for `-1022 <= e <= 1023`.
 #[inline(always)]
 fn pow2(e: i32) -> f64 {
@@ -333,7 +336,9 @@ impl Format {
         (units2 as f64 * pow2(e - frac - 1)).copysign(hi)
     }
 
-    /// binary32, directed rounding of the exact `hi + lo` (`hi` finite and nonzero, `lo`
+    /// binary32, directed rounding of the exact `hi + lo` (callers keep |hi| >= 2^-126:
+    /// converting f32 subnormals costs a microcode assist on x86, so tiny results take
+    /// `round2`) (`hi` finite and nonzero, `lo`
     /// as in [`Self::round2`]): native f32 conversion (nearest) is within one step of the
     /// answer and the f32 grid points are f64s, so one exact comparison picks the
     /// neighbour. Covers subnormals (conversion rounds them), overflow (`next_up(-inf)`
@@ -380,7 +385,7 @@ impl Format {
             let y = x as f32 as f64;
             return if y.is_nan() { f64::NAN } else { y };
         }
-        if self.is_binary32() && x != 0.0 && x.is_finite() {
+        if self.is_binary32() && x.is_finite() && x.abs() >= F32_MIN_NORMAL {
             return Self::round32_directed(x, 0.0, r == Rounding::TowardPositive);
         }
         self.round_general(x, r)
@@ -431,7 +436,7 @@ impl Format {
         // TwoSum (Knuth): s + lo == a + b exactly.
         let bb = s - a;
         let lo = (a - (s - bb)) + (b - bb);
-        if self.is_binary32() && r != Rounding::NearestEven {
+        if self.is_binary32() && r != Rounding::NearestEven && s.abs() >= F32_MIN_NORMAL {
             return Self::round32_directed(s, lo, r == Rounding::TowardPositive);
         }
         self.round2(s, lo, r)
@@ -457,7 +462,7 @@ impl Format {
         if p == 0.0 || !p.is_finite() {
             return if p.is_nan() { f64::NAN } else { p };
         }
-        if self.is_binary32() && r != Rounding::NearestEven {
+        if self.is_binary32() && r != Rounding::NearestEven && p.abs() >= F32_MIN_NORMAL {
             return Self::round32_directed(p, 0.0, r == Rounding::TowardPositive);
         }
         self.round2(p, 0.0, r)

@@ -1,4 +1,9 @@
-//! T.CHECK (DATE'05 §4.2, Eqs. 8, 9, 11-13) and TRI_UNIT (two T.CHECKs).
+//! T.CHECK (DATE'05 §4.2, Eqs. 8, 9, 11-13) and TRI_UNIT (two T.CHECKs), with the
+//! uncertainty flag: every value carries a bound on its distance from the ideal value
+//! (exact arithmetic on the exact inputs), and a sign decision within that bound is
+//! "unknown". T.CHECK never guesses: a pair is reported intersecting only if some edge
+//! surely crosses, separate only if every edge surely misses, and uncertain otherwise
+//! (docs/ACCURACY.md has the derivation).
 //!
 //! T.CHECK maps triangle A's vertices into the space where triangle B is the unit
 //! triangle U = {(u, v, 0) : u, v >= 0, u + v <= 1} and tests A's three edges against U.
@@ -10,93 +15,228 @@
 //! stage 3  per edge P->Q (V0V1, V1V2, V2V0):
 //!          a = Px Qz - Qx Pz,  b = Py Qz - Qy Pz,  r_z = Qz - Pz              (Eq. 9)
 //! stage 4  s = (a + b) - r_z
-//! stage 5  crossing = (Pz <= 0 <= Qz and r_z > 0 and a >= 0 and b >= 0 and s <= 0)
-//!                  or (Qz <= 0 <= Pz and r_z < 0 and a <= 0 and b <= 0 and s >= 0)
+//! stage 5  crossing = (Pz < 0, Qz > 0, r_z > 0, a > 0, b > 0, s < 0)   P below, Q above
+//!                  or (Qz < 0, Pz > 0, r_z < 0, a < 0, b < 0, s > 0)   the mirror
 //! ```
-//! where m = M_B (leaf of B) and b = M_AB (A's frame to B's frame). Derivation of stage 5:
-//! the edge meets z = 0 at X = P + (-Pz / r_z)(Q - P), whose coordinates are
-//! X = (a / r_z, b / r_z, 0); X is in U iff a/r_z >= 0, b/r_z >= 0, (a+b)/r_z <= 1, i.e.
-//! Eq. 8 negated when r_z > 0 (P below, Q above) and the mirrored signs when r_z < 0 (the
-//! "other criterion" of DATE'05 §3.3, which is the same test with P and Q swapped).
-//! Two triangles in general position intersect iff an edge of one crosses the other, so
-//! TRI_UNIT runs A's edges against U(B) and B's edges against U(A). A degenerate triangle
-//! has no M_B: that direction is skipped (its edges are still tested against the other).
+//! where m = M_B (leaf of B) and b = M_AB (A's frame to B's frame). Each comparison is
+//! three-valued (sure, surely not, unknown) and combined in Kleene logic. Derivation of
+//! stage 5: the edge meets z = 0 at X = P + (-Pz / r_z)(Q - P) = (a / r_z, b / r_z, 0); X is
+//! in U iff a/r_z >= 0, b/r_z >= 0, (a+b)/r_z <= 1: Eq. 8 negated when r_z > 0, and the
+//! mirrored signs when r_z < 0 (DATE'05's "other criterion": P and Q swapped). Two
+//! triangles in general position intersect iff an edge of one meets the other, so TRI_UNIT
+//! runs A's edges against U(B) and B's edges against U(A). A degenerate triangle has no
+//! M_B: that direction is unknown.
 
 use crate::dop::host::{Affine, HostSetup};
 use crate::format::{Format, Rounding};
 use crate::memory::TriWord;
 
-/// Every intermediate of one T.CHECK, for bit-exact comparison with the RTL.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Trace {
-    pub mb: Affine,
-    pub v: [[f64; 3]; 3],
-    pub a: [f64; 3],
-    pub b: [f64; 3],
-    pub rz: [f64; 3],
-    pub s: [f64; 3],
-    pub crossing: [bool; 3],
+/// A datapath value and a bound on its distance from the ideal value: |x - x*| <= e.
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+pub struct Bounded {
+    pub x: f64,
+    pub e: f64,
 }
 
-impl Trace {
-    pub fn hit(&self) -> bool {
-        self.crossing.iter().any(|&c| c)
+impl Bounded {
+    /// Surely positive, surely negative, or unknown (`None`): NaN is unknown.
+    pub fn sign(self) -> Option<bool> {
+        if self.x > self.e {
+            Some(true)
+        } else if self.x < -self.e {
+            Some(false)
+        } else {
+            None
+        }
+    }
+
+    fn neg(self) -> Bounded {
+        Bounded { x: -self.x, e: self.e }
     }
 }
 
-/// Stage 1: M_b = M_B . M_AB (Eqs. 11, 12), `m` the leaf's M_B, `b` the frame map.
-pub fn stage1(f: Format, r: Rounding, m: &Affine, b: &Affine) -> Affine {
-    let add = |x, y| f.add(x, y, r);
-    let mul = |x, y| f.mul(x, y, r);
-    let mut mb = [[0.0; 4]; 3];
+/// The datapath's arithmetic on bounded values. Values are rounded in the T.CHECK rounding;
+/// bounds are computed in the same format rounded up, in this order:
+/// add: `(ea + eb) + ulp(x)`; mul: `(ea |b| + eb |a|) + (ea eb + ulp(x))`.
+/// The rounding error of x is at most ulp(x) in every rounding mode.
+#[derive(Clone, Copy)]
+struct Arith {
+    f: Format,
+    r: Rounding,
+}
+
+impl Arith {
+    #[inline(always)]
+    fn up(&self, a: f64, b: f64) -> f64 {
+        self.f.add(a, b, Rounding::TowardPositive)
+    }
+
+    #[inline(always)]
+    fn upm(&self, a: f64, b: f64) -> f64 {
+        self.f.mul(a, b, Rounding::TowardPositive)
+    }
+
+    #[inline(always)]
+    fn add(&self, a: Bounded, b: Bounded) -> Bounded {
+        let x = self.f.add(a.x, b.x, self.r);
+        Bounded { x, e: self.up(self.up(a.e, b.e), self.f.ulp(x)) }
+    }
+
+    fn sub(&self, a: Bounded, b: Bounded) -> Bounded {
+        self.add(a, b.neg())
+    }
+
+    #[inline(always)]
+    fn mul(&self, a: Bounded, b: Bounded) -> Bounded {
+        let x = self.f.mul(a.x, b.x, self.r);
+        let e = self.up(
+            self.up(self.upm(a.e, b.x.abs()), self.upm(b.e, a.x.abs())),
+            self.up(self.upm(a.e, b.e), self.f.ulp(x)),
+        );
+        Bounded { x, e }
+    }
+}
+
+/// Stage 1 output: M_b with bounds.
+pub type BoundedAffine = [[Bounded; 4]; 3];
+
+/// Every intermediate of one T.CHECK, for bit-exact comparison with the RTL.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Trace {
+    pub mb: BoundedAffine,
+    pub v: [[Bounded; 3]; 3],
+    pub a: [Bounded; 3],
+    pub b: [Bounded; 3],
+    pub rz: [Bounded; 3],
+    pub s: [Bounded; 3],
+    /// Per edge: crosses, misses, or unknown (`None`).
+    pub crossing: [Option<bool>; 3],
+}
+
+impl Trace {
+    /// Kleene OR over the edges.
+    pub fn result(&self) -> Option<bool> {
+        or3(self.crossing.iter().copied())
+    }
+}
+
+fn or3(it: impl Iterator<Item = Option<bool>>) -> Option<bool> {
+    let mut acc = Some(false);
+    for x in it {
+        acc = match (acc, x) {
+            (Some(true), _) | (_, Some(true)) => Some(true),
+            (Some(false), Some(false)) => Some(false),
+            _ => None,
+        };
+    }
+    acc
+}
+
+fn and3(it: impl Iterator<Item = Option<bool>>) -> Option<bool> {
+    or3(it.map(|x| x.map(|b| !b))).map(|b| !b)
+}
+
+/// The map of a leaf or a frame with its bounds [linear entries, translation entries].
+fn bounded_affine(m: &Affine, err: [f64; 2]) -> BoundedAffine {
+    let mut out = [[Bounded::default(); 4]; 3];
+    for (row, mrow) in out.iter_mut().zip(m) {
+        for (c, (o, &x)) in row.iter_mut().zip(mrow).enumerate() {
+            *o = Bounded { x, e: err[(c == 3) as usize] };
+        }
+    }
+    out
+}
+
+/// Stage 1: M_b = M_B . M_AB (Eqs. 11, 12) for the leaf word `leaf` and a frame map `b`
+/// with bounds `b_err`.
+pub fn stage1(f: Format, r: Rounding, leaf: &TriWord, b: &Affine, b_err: [f64; 2]) -> BoundedAffine {
+    let ar = Arith { f, r };
+    let m = bounded_affine(&leaf.m, [leaf.e_lin, leaf.e_tr]);
+    let b = bounded_affine(b, b_err);
+    let mut mb = [[Bounded::default(); 4]; 3];
     for i in 0..3 {
         for j in 0..3 {
-            mb[i][j] = add(add(mul(m[i][0], b[0][j]), mul(m[i][1], b[1][j])), mul(m[i][2], b[2][j]));
+            mb[i][j] = ar.add(ar.add(ar.mul(m[i][0], b[0][j]), ar.mul(m[i][1], b[1][j])), ar.mul(m[i][2], b[2][j]));
         }
-        mb[i][3] = add(
-            add(mul(m[i][0], b[0][3]), mul(m[i][1], b[1][3])),
-            add(mul(m[i][2], b[2][3]), m[i][3]),
+        mb[i][3] = ar.add(
+            ar.add(ar.mul(m[i][0], b[0][3]), ar.mul(m[i][1], b[1][3])),
+            ar.add(ar.mul(m[i][2], b[2][3]), m[i][3]),
         );
     }
     mb
 }
 
-/// Stages 2-5 on the output `mb` of stage 1 and the triangle `v`.
-pub fn edges(f: Format, r: Rounding, mb: &Affine, v: &[[f64; 3]; 3]) -> Trace {
-    let add = |x, y| f.add(x, y, r);
-    let sub = |x, y| f.sub(x, y, r);
-    let mul = |x, y| f.mul(x, y, r);
-    let mut vt = [[0.0; 3]; 3];
+/// Stages 2-5 on the output `mb` of stage 1 and the triangle `v`. `gap` widens the bounds
+/// of the mapped vertices for a unit triangle that is itself only known within `eta`
+/// (direction A vs U(B): `Some((leaf of B, eta))`; see docs/ACCURACY.md).
+pub fn edges(f: Format, r: Rounding, mb: &BoundedAffine, v: &[[f64; 3]; 3], gap: Option<(&TriWord, f64)>) -> Trace {
+    let ar = Arith { f, r };
+    let mut vt = [[Bounded::default(); 3]; 3];
     for (p, out) in v.iter().zip(vt.iter_mut()) {
+        let p = p.map(|x| Bounded { x, e: f.ulp(x) });
         for i in 0..3 {
-            out[i] = add(add(mul(mb[i][0], p[0]), mul(mb[i][1], p[1])), add(mul(mb[i][2], p[2]), mb[i][3]));
+            out[i] = ar.add(ar.add(ar.mul(mb[i][0], p[0]), ar.mul(mb[i][1], p[1])), ar.add(ar.mul(mb[i][2], p[2]), mb[i][3]));
+        }
+        if let Some((leaf, eta)) = gap {
+            let g = vertex_gap(&ar, leaf, eta, out[0], out[1]);
+            for o in out.iter_mut() {
+                o.e = ar.up(o.e, g);
+            }
         }
     }
-    let (mut a, mut bb, mut rz, mut s, mut crossing) = ([0.0; 3], [0.0; 3], [0.0; 3], [0.0; 3], [false; 3]);
+    let (mut a, mut bb, mut rz, mut s) = ([Bounded::default(); 3], [Bounded::default(); 3], [Bounded::default(); 3], [Bounded::default(); 3]);
+    let mut crossing = [None; 3];
     for e in 0..3 {
         let (p, q) = (vt[e], vt[(e + 1) % 3]);
-        a[e] = sub(mul(p[0], q[2]), mul(q[0], p[2]));
-        bb[e] = sub(mul(p[1], q[2]), mul(q[1], p[2]));
-        rz[e] = sub(q[2], p[2]);
-        s[e] = sub(add(a[e], bb[e]), rz[e]);
-        let up = p[2] <= 0.0 && q[2] >= 0.0 && rz[e] > 0.0 && a[e] >= 0.0 && bb[e] >= 0.0 && s[e] <= 0.0;
-        let down = q[2] <= 0.0 && p[2] >= 0.0 && rz[e] < 0.0 && a[e] <= 0.0 && bb[e] <= 0.0 && s[e] >= 0.0;
-        crossing[e] = up || down;
+        a[e] = ar.sub(ar.mul(p[0], q[2]), ar.mul(q[0], p[2]));
+        bb[e] = ar.sub(ar.mul(p[1], q[2]), ar.mul(q[1], p[2]));
+        rz[e] = ar.sub(q[2], p[2]);
+        s[e] = ar.sub(ar.add(a[e], bb[e]), rz[e]);
+        let signs = [p[2].sign(), q[2].sign(), rz[e].sign(), a[e].sign(), bb[e].sign(), s[e].sign()];
+        // Wanted signs (true = positive) of Pz, Qz, r_z, a, b, s for P below / Q below.
+        let up = [false, true, true, true, true, false];
+        let down = [true, false, false, false, false, true];
+        let holds = |want: [bool; 6]| and3(signs.iter().zip(want).map(|(s, w)| s.map(|s| s == w)));
+        crossing[e] = or3([holds(up), holds(down)].into_iter());
     }
     Trace { mb: *mb, v: vt, a, b: bb, rz, s, crossing }
 }
 
-/// One T.CHECK: the edges of triangle `v` (in its own object's frame) against the unit
-/// triangle of the other object's leaf, whose map is `m_leaf`; `m_frame` maps `v`'s frame
-/// into the leaf's frame.
-pub fn tcheck(f: Format, r: Rounding, m_leaf: &Affine, m_frame: &Affine, v: &[[f64; 3]; 3]) -> Trace {
-    edges(f, r, &stage1(f, r, m_leaf, m_frame), v)
+/// How far the mapped vertex (u, v, z) can move when B's vertices move by eta:
+/// 2 lambda eta (1 + 2 (|u| + e_u) + 2 (|v| + e_v)) with lambda = l_norm + e_lin >= |L*|,
+/// valid while 4 lambda eta <= 1/2 (else unbounded).
+fn vertex_gap(ar: &Arith, leaf: &TriWord, eta: f64, u: Bounded, v: Bounded) -> f64 {
+    let lambda = ar.up(leaf.l_norm, leaf.e_lin);
+    if !(ar.upm(ar.upm(4.0, lambda), eta) <= 0.5) {
+        return f64::INFINITY;
+    }
+    let uv = ar.up(ar.up(u.x.abs(), u.e), ar.up(v.x.abs(), v.e));
+    let w = ar.up(1.0, ar.upm(2.0, uv));
+    ar.upm(ar.upm(2.0, lambda), ar.upm(eta, w))
 }
 
-/// TRI_UNIT: A's edges against U(B), then B's edges against U(A).
-pub fn tri_unit(f: Format, r: Rounding, a: &TriWord, b: &TriWord, setup: &HostSetup) -> bool {
-    (!b.degenerate && tcheck(f, r, &b.m, &setup.m_ab, &a.v).hit())
-        || (!a.degenerate && tcheck(f, r, &a.m, &setup.m_ba, &b.v).hit())
+/// Intersecting (surely), separate (surely), or uncertain.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub struct TriResult {
+    pub hit: bool,
+    pub uncertain: bool,
+}
+
+impl TriResult {
+    fn of(dir1: Option<bool>, dir2: Option<bool>) -> TriResult {
+        match or3([dir1, dir2].into_iter()) {
+            Some(hit) => TriResult { hit, uncertain: false },
+            None => TriResult { hit: false, uncertain: true },
+        }
+    }
+}
+
+/// TRI_UNIT: A's edges against U(B), then B's edges against U(A); a degenerate leaf
+/// leaves its direction unknown.
+pub fn tri_unit(f: Format, r: Rounding, a: &TriWord, b: &TriWord, setup: &HostSetup) -> TriResult {
+    let d1 = (!b.degenerate).then(|| edges(f, r, &stage1(f, r, b, &setup.m_ab, setup.e_ab), &a.v, Some((b, setup.eta))).result());
+    let d2 = (!a.degenerate).then(|| edges(f, r, &stage1(f, r, a, &setup.m_ba, setup.e_ba), &b.v, None).result());
+    TriResult::of(d1.flatten(), d2.flatten())
 }
 
 /// TRI_UNIT during one query: stage 1 depends on one leaf and the pose only, so its
@@ -112,11 +252,11 @@ pub struct TriUnit<'a> {
 
 struct StageOneCache {
     slot: Vec<u32>,
-    values: Vec<Affine>,
+    values: Vec<BoundedAffine>,
 }
 
 impl StageOneCache {
-    fn get(&mut self, t: u32, compute: impl FnOnce() -> Affine) -> &Affine {
+    fn get(&mut self, t: u32, compute: impl FnOnce() -> BoundedAffine) -> &BoundedAffine {
         let mut s = self.slot[t as usize];
         if s == u32::MAX {
             s = self.values.len() as u32;
@@ -133,15 +273,25 @@ impl<'a> TriUnit<'a> {
         TriUnit { f, r, setup, mb_b: cache(tris_b), mb_a: cache(tris_a) }
     }
 
-    /// Do triangle `ta` of A (word `a`) and `tb` of B (word `b`) intersect?
-    pub fn test(&mut self, ta: u32, a: &TriWord, tb: u32, b: &TriWord) -> bool {
+    /// Triangle `ta` of A (word `a`) against `tb` of B (word `b`). A sure hit in the first
+    /// direction decides without the second (the result is the same).
+    pub fn test(&mut self, ta: u32, a: &TriWord, tb: u32, b: &TriWord) -> TriResult {
         let (f, r, setup) = (self.f, self.r, self.setup);
-        if !b.degenerate {
-            let mb = self.mb_b.get(tb, || stage1(f, r, &b.m, &setup.m_ab));
-            if edges(f, r, mb, &a.v).hit() {
-                return true;
-            }
+        let d1 = if b.degenerate {
+            None
+        } else {
+            let mb = self.mb_b.get(tb, || stage1(f, r, b, &setup.m_ab, setup.e_ab));
+            edges(f, r, mb, &a.v, Some((b, setup.eta))).result()
+        };
+        if d1 == Some(true) {
+            return TriResult { hit: true, uncertain: false };
         }
-        !a.degenerate && edges(f, r, self.mb_a.get(ta, || stage1(f, r, &a.m, &setup.m_ba)), &b.v).hit()
+        let d2 = if a.degenerate {
+            None
+        } else {
+            let mb = self.mb_a.get(ta, || stage1(f, r, a, &setup.m_ba, setup.e_ba));
+            edges(f, r, mb, &b.v, None).result()
+        };
+        TriResult::of(d1, d2)
     }
 }

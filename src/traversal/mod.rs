@@ -15,6 +15,9 @@ pub mod list;
 pub mod recursive;
 
 use crate::config::ChipConfig;
+use crate::dop::tree::Tri;
+use crate::oracle;
+use nalgebra::{Matrix3, Vector3};
 use crate::dop::{HostSetup, Node};
 use crate::golden::{doptrf, tcheck};
 use crate::memory::{Layout, ObjectImage};
@@ -59,6 +62,9 @@ pub struct Counters {
     /// Triangle words fetched (same holding rule as nodes).
     pub tri_fetches: u64,
     pub tri_hits: u64,
+    /// Triangle pairs T.CHECK could not decide within its error bounds (or with a
+    /// degenerate triangle), settled by the host with the exact oracle.
+    pub uncertain: u64,
     /// Largest number of node pairs (or list entries) waiting in the queue, stack or lists.
     pub max_queue_depth: u64,
     pub memory_bytes: u64,
@@ -66,9 +72,28 @@ pub struct Counters {
 
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct QueryResult {
-    /// (triangle of A, triangle of B), sorted.
+    /// (triangle of A, triangle of B), sorted: the chip's sure hits and the uncertain
+    /// pairs the host found intersecting.
     pub pairs: Vec<(u32, u32)>,
+    /// The pairs the chip flagged uncertain (whatever the host then found), sorted.
+    pub uncertain: Vec<(u32, u32)>,
     pub counters: Counters,
+}
+
+/// What the host needs to settle uncertain pairs: both objects' f64 triangles and the
+/// pose that places B in A's frame (the oracle's geometry).
+pub struct Host<'a> {
+    pub a: &'a [Tri],
+    pub b: &'a [Tri],
+    pub rot: Matrix3<f64>,
+    pub t: Vector3<f64>,
+}
+
+impl Host<'_> {
+    fn settle(&self, ta: u32, tb: u32) -> bool {
+        let (r, t) = (&self.rot, &self.t);
+        oracle::tri_tri(&self.a[ta as usize], &self.b[tb as usize].map(|p| r * p + t))
+    }
 }
 
 /// The state a traversal drives: the two images, the per-pose setup, the DOP unit and
@@ -80,7 +105,9 @@ pub(crate) struct Engine<'a> {
     mode: Mode,
     held_node: [Option<u32>; 2],
     held_tri: [Option<u32>; 2],
+    host: &'a Host<'a>,
     pairs: Vec<(u32, u32)>,
+    uncertain: Vec<(u32, u32)>,
     live: u64,
     dop_unit: doptrf::TransformCache<'a>,
     tri_unit: tcheck::TriUnit<'a>,
@@ -118,13 +145,22 @@ impl<'a> Engine<'a> {
         hit
     }
 
-    /// TRI_UNIT on a leaf pair; records the pair and stops a first-hit query.
+    /// TRI_UNIT on a leaf pair; the host settles an uncertain one; records the pair and
+    /// stops a first-hit query.
     fn leaf_pair(&mut self, ta: u32, tb: u32) {
         let c = &mut self.counters;
         c.tri_tests += 1;
         c.tri_fetches += Self::fetch(&mut self.held_tri[0], ta) + Self::fetch(&mut self.held_tri[1], tb);
         let (wa, wb) = (&self.a.tris[ta as usize], &self.b.tris[tb as usize]);
-        if self.tri_unit.test(ta, wa, tb, wb) {
+        let res = self.tri_unit.test(ta, wa, tb, wb);
+        let hit = if res.uncertain {
+            self.counters.uncertain += 1;
+            self.uncertain.push((ta, tb));
+            self.host.settle(ta, tb)
+        } else {
+            res.hit
+        };
+        if hit {
             self.counters.tri_hits += 1;
             self.pairs.push((ta, tb));
             self.stop = self.mode == Mode::First;
@@ -148,6 +184,7 @@ pub fn run(
     a: &ObjectImage,
     b: &ObjectImage,
     setup: &HostSetup,
+    host: &Host,
     mode: Mode,
     traversal: Traversal,
 ) -> QueryResult {
@@ -158,7 +195,9 @@ pub fn run(
         mode,
         held_node: [None; 2],
         held_tri: [None; 2],
+        host,
         pairs: vec![],
+        uncertain: vec![],
         live: 0,
         dop_unit: doptrf::TransformCache::new(cfg.format, cfg.dop_rounding.op(), setup, b.tree.len()),
         tri_unit: tcheck::TriUnit::new(cfg.format, cfg.tri_rounding, setup, a.tris.len(), b.tris.len()),
@@ -173,7 +212,8 @@ pub fn run(
     }
     let mut c = e.counters;
     c.memory_bytes = c.node_fetches * e.layout.node_bytes() + c.tri_fetches * e.layout.tri_bytes();
-    let mut pairs = e.pairs;
+    let (mut pairs, mut uncertain) = (e.pairs, e.uncertain);
     pairs.sort_unstable();
-    QueryResult { pairs, counters: c }
+    uncertain.sort_unstable();
+    QueryResult { pairs, uncertain, counters: c }
 }
