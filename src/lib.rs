@@ -14,6 +14,7 @@ pub mod pose;
 pub mod config;
 pub mod dop;
 pub mod golden;
+pub mod hard_cases;
 pub mod memory;
 pub mod query;
 pub mod report;

@@ -1,0 +1,553 @@
+//! Hard cases for the triangle test (issue 3): the catalogue `vectors/hard-cases/*.toml`
+//! and generated families (src/hard_cases.rs), judged three ways:
+//! - the exact oracle must give the pairs reasoned out by hand (catalogue) or known by
+//!   construction (generators), and must be invariant under exact changes of the input
+//!   (swapping A and B, vertex orders, axis permutations, sign flips, power-of-two scales);
+//! - the chip (both formats, k = 6 and 24, outward DOP rounding, every traversal) must
+//!   return exactly the oracle's pairs in all-pairs mode, and in first-hit mode one of them
+//!   (none iff there are none);
+//! - the same invariances for the chip.
+//!
+//! Test names: `oracle_*` judge the oracle, `chip_*` the chip.
+
+use collision_chip::config::ChipConfig;
+use collision_chip::format::Format;
+use collision_chip::hard_cases::{self as hc, Case, ExactMap, Placement, FAMILIES};
+use collision_chip::query::Chip;
+use collision_chip::traversal::{Mode, Traversal};
+use proptest::prelude::*;
+use proptest::test_runner::Config as PtConfig;
+
+const FORMATS: [(Format, &str); 2] = [(Format::BINARY32, "binary32"), (Format::REDUCED, "reduced")];
+const KS: [usize; 2] = [6, 24];
+
+fn catalogue() -> Vec<Case> {
+    hc::load_catalogue().unwrap_or_else(|e| panic!("{e}"))
+}
+
+/// Every way the chip disagrees with `expected` on `case` (empty: none).
+fn chip_failures(case: &Case, expected: &[(u32, u32)]) -> Vec<String> {
+    let mut out = Vec::new();
+    for (format, fname) in FORMATS {
+        for k in KS {
+            let cfg = ChipConfig { k, format, ..Default::default() };
+            let chip = Chip::new(&case.a, &case.b, cfg).unwrap();
+            let mut bad = Vec::new();
+            for t in Traversal::ALL {
+                let all = chip.query(&case.pose, Mode::All, t).pairs;
+                if all != expected {
+                    bad.push(format!("{t:?}/all {all:?}"));
+                }
+                let first = chip.query(&case.pose, Mode::First, t).pairs;
+                let ok = first.len() <= 1
+                    && first.is_empty() == expected.is_empty()
+                    && first.iter().all(|p| expected.contains(p));
+                if !ok {
+                    bad.push(format!("{t:?}/first {first:?}"));
+                }
+            }
+            if !bad.is_empty() {
+                out.push(format!("{} [{fname} k={k}] expected {expected:?}: {}", case.name, bad.join(", ")));
+            }
+        }
+    }
+    out
+}
+
+/// All traversals return the same pairs and count the same tests (all-pairs mode).
+fn traversal_disagreements(case: &Case) -> Vec<String> {
+    let mut out = Vec::new();
+    for (format, fname) in FORMATS {
+        for k in KS {
+            let chip = Chip::new(&case.a, &case.b, ChipConfig { k, format, ..Default::default() }).unwrap();
+            let base = chip.query(&case.pose, Mode::All, Traversal::Recursive);
+            for t in Traversal::ALL {
+                let r = chip.query(&case.pose, Mode::All, t);
+                if r.pairs != base.pairs
+                    || r.counters.dop_tests != base.counters.dop_tests
+                    || r.counters.tri_tests != base.counters.tri_tests
+                {
+                    out.push(format!("{} [{fname} k={k}] {t:?}: {:?} vs Recursive {:?}", case.name, r.pairs, base.pairs));
+                }
+            }
+        }
+    }
+    out
+}
+
+/// The exact variants of a case whose answer is known from the case's: swapped (identity
+/// pose, and inverse pose when exact), all 36 vertex-order combinations, and a few exact maps.
+fn exact_variants(case: &Case) -> Vec<Case> {
+    let mut v = vec![case.swapped()];
+    v.extend(case.swapped_inverse_pose());
+    for oa in 0..6 {
+        for ob in 0..6 {
+            if oa + ob > 0 {
+                v.push(case.with_vertex_orders(oa, ob));
+            }
+        }
+    }
+    for m in [
+        ExactMap { perm: [1, 2, 0], sign: [1.0, 1.0, 1.0], scale_log2: 0 },
+        ExactMap { perm: [0, 1, 2], sign: [-1.0, 1.0, -1.0], scale_log2: 0 },
+        ExactMap { perm: [2, 1, 0], sign: [1.0, -1.0, 1.0], scale_log2: 5 },
+        ExactMap { perm: [0, 2, 1], sign: [1.0, 1.0, 1.0], scale_log2: -7 },
+    ] {
+        v.push(case.mapped(&m));
+    }
+    v
+}
+
+fn report(what: &str, failures: &[String]) {
+    assert!(failures.is_empty(), "{} {what}:\n{}", failures.len(), failures.join("\n"));
+}
+
+// ---------------------------------------------------------------------------------------
+// Catalogue
+// ---------------------------------------------------------------------------------------
+
+#[test]
+fn catalogue_loads_and_covers_every_family() {
+    let cases = catalogue();
+    assert!(cases.len() >= 25, "only {} cases", cases.len());
+    for f in FAMILIES {
+        assert!(cases.iter().any(|c| c.family == f), "no case of family {f}");
+    }
+    for c in &cases {
+        assert!(c.a.len() <= 6 && c.b.len() <= 6, "{}: meshes of at most 6 triangles", c.name);
+    }
+    let mut names: Vec<&str> = cases.iter().map(|c| c.name.as_str()).collect();
+    names.sort_unstable();
+    let n = names.len();
+    names.dedup();
+    assert_eq!(names.len(), n, "duplicate case names");
+}
+
+#[test]
+fn oracle_matches_catalogue() {
+    let fails: Vec<String> = catalogue()
+        .iter()
+        .filter_map(|c| {
+            let got = c.oracle_pairs();
+            (got != c.expected).then(|| format!("{}: oracle {got:?}, expected {:?}", c.name, c.expected))
+        })
+        .collect();
+    report("oracle disagreements with the catalogue", &fails);
+}
+
+#[test]
+fn oracle_invariances_on_catalogue() {
+    let mut fails = Vec::new();
+    for c in catalogue() {
+        for v in exact_variants(&c) {
+            let got = v.oracle_pairs();
+            if got != v.expected {
+                fails.push(format!("{}: oracle {got:?}, expected {:?}", v.name, v.expected));
+            }
+        }
+    }
+    report("oracle invariance failures", &fails);
+}
+
+#[test]
+fn chip_matches_catalogue_binary32_and_reduced() {
+    let fails: Vec<String> = catalogue().iter().flat_map(|c| chip_failures(c, &c.expected)).collect();
+    report("chip disagreements with the catalogue (case [format k] expected: traversal/mode got)", &fails);
+}
+
+#[test]
+fn chip_traversals_agree_on_catalogue() {
+    let fails: Vec<String> = catalogue().iter().flat_map(traversal_disagreements).collect();
+    report("traversal disagreements", &fails);
+}
+
+#[test]
+fn chip_invariances_on_catalogue() {
+    let mut fails = Vec::new();
+    for c in catalogue() {
+        for v in exact_variants(&c) {
+            fails.extend(chip_failures(&v, &v.expected));
+        }
+    }
+    report("chip failures on exact variants of the catalogue", &fails);
+}
+
+// ---------------------------------------------------------------------------------------
+// Generated families
+// ---------------------------------------------------------------------------------------
+
+/// Placements: offsets 0 or of magnitude 1e3, 1e5, 1e7 (integers), power-of-two scale
+/// 2^-8..2^8, any quarter turns.
+fn placement() -> impl Strategy<Value = Placement> {
+    (
+        prop::sample::select(vec![0.0, 1e3, 1e5, 1e7]),
+        prop::array::uniform3(-1.0..1.0f64),
+        -8i32..=8,
+        prop::array::uniform3(0u8..4),
+    )
+        .prop_map(|(mag, f, sl, turns)| Placement { offset: f.map(|x| (x * mag).round()), scale: 2f64.powi(sl), turns })
+}
+
+/// The finest local grid 2^e such that `scale * l + offset` stays exact for local
+/// coordinates |l| <= extent that are multiples of 2^e.
+fn floor_log2(p: &Placement, extent: f64) -> i32 {
+    let m = p.offset.iter().fold(0.0f64, |a, &b| a.max(b.abs())) + extent * p.scale;
+    (m.log2().floor() as i32 + 1 - 52) - p.scale.log2() as i32
+}
+
+/// A small positive dyadic 1..3 * 2^e with floor <= e <= -9 (1e-9 is about 2^-30).
+fn tiny(floor: i32) -> BoxedStrategy<f64> {
+    let lo = floor.max(-50);
+    (1u32..4, lo..=(-9).max(lo)).prop_map(|(m, e)| m as f64 * 2f64.powi(e)).boxed()
+}
+
+/// 0 or +-tiny.
+fn near_zero(floor: i32) -> BoxedStrategy<f64> {
+    prop_oneof![2 => Just(0.0), 1 => tiny(floor), 1 => tiny(floor).prop_map(|x| -x)].boxed()
+}
+
+fn grid(n: i32, lo: i32, hi: i32) -> BoxedStrategy<f64> {
+    (lo..=hi).prop_map(move |k| k as f64 / 2f64.powi(n)).boxed()
+}
+
+fn pv_vertex_vertex() -> BoxedStrategy<Case> {
+    placement()
+        .prop_flat_map(|p| (Just(p), prop_oneof![Just(0.0), tiny(floor_log2(&p, 4.0))]))
+        .prop_map(|(p, g)| hc::vertex_vertex(&p, g))
+        .boxed()
+}
+
+fn pv_vertex_edge() -> BoxedStrategy<Case> {
+    placement()
+        .prop_flat_map(|p| {
+            let f = floor_log2(&p, 4.0);
+            let s = prop_oneof![grid(8, 0, 256), Just(0.0), Just(1.0), near_zero(f), near_zero(f).prop_map(|d| 1.0 + d)];
+            (Just(p), 0u8..3, s, prop_oneof![Just(0.0), tiny(f)])
+        })
+        .prop_map(|(p, e, s, g)| hc::vertex_edge(&p, e, s, g))
+        .boxed()
+}
+
+fn pv_vertex_face() -> BoxedStrategy<Case> {
+    placement()
+        .prop_flat_map(|p| {
+            let f = floor_log2(&p, 4.0);
+            // touching or hovering anywhere near A, or piercing inside with a margin
+            let touch = (grid(6, -8, 72), grid(6, -8, 72), prop_oneof![Just(0.0), tiny(f)]).prop_map(|(u, v, h)| ([u, v], h));
+            let pierce = (1i32..=30, 1i32..=30, tiny(f.max(-40)).prop_map(|x| -(x.min(1.0 / 256.0))))
+                .prop_filter("inside with margin", |(i, j, _)| i + j <= 63)
+                .prop_map(|(i, j, h)| ([i as f64 / 64.0, j as f64 / 64.0], h));
+            (Just(p), prop_oneof![touch, pierce])
+        })
+        .prop_map(|(p, (uv, h))| hc::vertex_face(&p, uv, h))
+        .boxed()
+}
+
+fn pv_edge_edge() -> BoxedStrategy<Case> {
+    placement()
+        .prop_flat_map(|p| {
+            let f = floor_log2(&p, 4.0);
+            let s = prop_oneof![grid(8, 0, 256), near_zero(f), near_zero(f).prop_map(|d| 1.0 + d)];
+            (Just(p), s, prop_oneof![Just(0.0), tiny(f)])
+        })
+        .prop_map(|(p, s, g)| hc::edge_edge(&p, s, g))
+        .boxed()
+}
+
+fn pv_coplanar() -> BoxedStrategy<Case> {
+    placement()
+        .prop_flat_map(|p| {
+            let f = floor_log2(&p, 4.0);
+            (Just(p), -20i32..=20, 0u8..5, near_zero(f), grid(4, -20, 20), any::<bool>())
+        })
+        .prop_map(|(p, k, which, d, free, tilted)| {
+            let dx = k as f64 / 16.0;
+            // dy on (or just off) a face of the hexagon A - A, or free
+            let dy = match which {
+                0 => (1.0 - dx) + d,
+                1 => (-1.0 - dx) + d,
+                2 => 1.0 + d,
+                3 => -1.0 + d,
+                _ => free,
+            };
+            hc::coplanar(&p, [dx, dy], tilted)
+        })
+        .boxed()
+}
+
+fn pv_shared_edge() -> BoxedStrategy<Case> {
+    (placement(), prop::array::uniform3(-8i32..=8))
+        .prop_filter("apex off the shared line", |(_, a)| a[2] != 0 || a[0] + a[1] != 4)
+        .prop_map(|(p, a)| hc::shared_edge(&p, a.map(|x| x as f64 / 4.0)))
+        .boxed()
+}
+
+fn pv_needle() -> BoxedStrategy<Case> {
+    placement()
+        .prop_flat_map(|p| {
+            let f = floor_log2(&p, 4.0);
+            let wmax = 20.min(-f - 2).max(4);
+            (Just(p), grid(6, -4, 68), near_zero(f), any::<bool>(), 4..=wmax, grid(6, -4, 68))
+        })
+        .prop_map(|(p, v, d, at_edge, w, u)| {
+            let u = if at_edge { (1.0 - v) + d } else { u };
+            hc::needle(&p, [u, v], w)
+        })
+        .boxed()
+}
+
+fn pv_sliver_pair() -> BoxedStrategy<Case> {
+    placement()
+        .prop_flat_map(|p| {
+            let f = floor_log2(&p, 4.0);
+            let wmax = ((1 - f) / 2).clamp(3, 20);
+            (Just(p), 3..=wmax, 0u8..3, near_zero(f))
+        })
+        .prop_map(|(p, wl, which, d)| {
+            let w = 2f64.powi(-wl);
+            let top = w / 2.0 + 2.0 * w * w;
+            let y0 = match which {
+                0 => d,
+                1 => top + d,
+                _ => top / 2.0,
+            };
+            hc::sliver_pair(&p, wl, y0)
+        })
+        .boxed()
+}
+
+fn pv_zero_area() -> BoxedStrategy<Case> {
+    placement()
+        .prop_flat_map(|p| {
+            let f = floor_log2(&p, 4.0);
+            let xy = (grid(4, -4, 20), grid(4, -4, 20));
+            let pt = (xy.clone(), near_zero(f)).prop_map(|((x, y), z)| (0u8, [x, y, z, 0.0]));
+            let seg = (xy, near_zero(f), 1i32..4).prop_map(|((x, y), z0, l)| (1u8, [x, y, z0, z0 + l as f64 / 4.0]));
+            let segseg = (grid(4, -4, 20), near_zero(f), near_zero(f), 1i32..4)
+                .prop_map(|(s, y0, z, l)| (2u8, [s, y0, y0 + l as f64 / 4.0, z]));
+            (Just(p), prop_oneof![pt, seg, segseg])
+        })
+        .prop_map(|(p, (kind, v))| match kind {
+            0 => hc::point(&p, [v[0], v[1], v[2]]),
+            1 => hc::vertical_segment(&p, [v[0], v[1]], v[2], v[3]),
+            _ => hc::segment_pair(&p, v[0], v[1], v[2], v[3]),
+        })
+        .boxed()
+}
+
+fn pv_near_parallel() -> BoxedStrategy<Case> {
+    placement()
+        .prop_flat_map(|p| {
+            let f = floor_log2(&p, 4.0);
+            (Just(p), near_zero(f), near_zero(f), any::<bool>())
+        })
+        .prop_map(|(p, gap, t, cross)| {
+            // tilt either independent or exactly reaching through the plane (-2 gap)
+            let tilt = if cross { -2.0 * gap } else { t };
+            hc::near_parallel(&p, gap, tilt)
+        })
+        .boxed()
+}
+
+fn pv_scale_ratio() -> BoxedStrategy<Case> {
+    (placement(), 0i32..=13, 0i32..=13)
+        .prop_flat_map(|(p, big, small)| {
+            let f = floor_log2(&p, 4.0 * 2f64.powi(big)).max(-small - 20);
+            let s = 2f64.powi(-small);
+            let h = prop_oneof![Just(0.0), tiny(f), tiny(f).prop_map(|x| -x), Just(-s), tiny(f).prop_map(move |x| -s - x)];
+            (Just(p), Just(big), Just(small), h, any::<bool>())
+        })
+        .prop_map(|(p, big, small, h, swap)| hc::scale_ratio(&p, big, small, h, swap))
+        .boxed()
+}
+
+fn pv_tetra() -> BoxedStrategy<Case> {
+    placement()
+        .prop_flat_map(|p| {
+            let f = floor_log2(&p, 4.0);
+            (Just(p), grid(4, -2, 18), near_zero(f), prop_oneof![Just(0.0), tiny(f)])
+        })
+        .prop_map(|(p, x, d, h)| hc::tetra_on_square(&p, [x, x + d], h))
+        .boxed()
+}
+
+fn any_case() -> BoxedStrategy<Case> {
+    prop_oneof![
+        pv_vertex_vertex(),
+        pv_vertex_edge(),
+        pv_vertex_face(),
+        pv_edge_edge(),
+        pv_coplanar(),
+        pv_shared_edge(),
+        pv_needle(),
+        pv_sliver_pair(),
+        pv_zero_area(),
+        pv_near_parallel(),
+        pv_scale_ratio(),
+        pv_tetra(),
+    ]
+    .boxed()
+}
+
+fn cfg(cases: u32) -> PtConfig {
+    PtConfig { cases, failure_persistence: None, max_shrink_iters: 256, ..PtConfig::default() }
+}
+
+/// One oracle test (construction == oracle, 256 cases) and one chip test (chip == oracle,
+/// 128 cases) per family.
+macro_rules! family_tests {
+    ($($oracle:ident, $chip:ident, $strat:ident;)*) => {$(
+        proptest! {
+            #![proptest_config(cfg(256))]
+            #[test]
+            fn $oracle(c in $strat()) {
+                let got = c.oracle_pairs();
+                prop_assert_eq!(&got, &c.expected, "{}", c.name);
+            }
+        }
+        proptest! {
+            #![proptest_config(cfg(128))]
+            #[test]
+            fn $chip(c in $strat()) {
+                let exact = c.oracle_pairs();
+                let fails = chip_failures(&c, &exact);
+                prop_assert!(fails.is_empty(), "{}", fails.join("\n"));
+            }
+        }
+    )*};
+}
+
+family_tests! {
+    oracle_vertex_vertex, chip_vertex_vertex, pv_vertex_vertex;
+    oracle_vertex_edge, chip_vertex_edge, pv_vertex_edge;
+    oracle_vertex_face, chip_vertex_face, pv_vertex_face;
+    oracle_edge_edge, chip_edge_edge, pv_edge_edge;
+    oracle_coplanar, chip_coplanar, pv_coplanar;
+    oracle_shared_edge, chip_shared_edge, pv_shared_edge;
+    oracle_needle, chip_needle, pv_needle;
+    oracle_sliver_pair, chip_sliver_pair, pv_sliver_pair;
+    oracle_zero_area, chip_zero_area, pv_zero_area;
+    oracle_near_parallel, chip_near_parallel, pv_near_parallel;
+    oracle_scale_ratio, chip_scale_ratio, pv_scale_ratio;
+    oracle_tetra_on_square, chip_tetra_on_square, pv_tetra;
+}
+
+fn exact_map() -> impl Strategy<Value = ExactMap> {
+    (
+        prop::sample::select(vec![[0, 1, 2], [0, 2, 1], [1, 0, 2], [1, 2, 0], [2, 0, 1], [2, 1, 0]]),
+        prop::array::uniform3(prop::sample::select(vec![-1.0, 1.0])),
+        -6i32..=6,
+    )
+        .prop_map(|(perm, sign, scale_log2)| ExactMap { perm, sign, scale_log2 })
+}
+
+/// Generic rotations (not placement-exact): the answer is the oracle's.
+fn general_pose() -> impl Strategy<Value = collision_chip::pose::Pose> {
+    (prop::array::uniform3(-180.0..180.0f64), prop::array::uniform3(-2.0..2.0f64))
+        .prop_map(|(r, t)| collision_chip::pose::Pose { rot_deg: r, t })
+}
+
+proptest! {
+    #![proptest_config(cfg(128))]
+
+    #[test]
+    fn oracle_invariant_under_swap(c in any_case()) {
+        let s = c.swapped();
+        prop_assert_eq!(s.oracle_pairs(), s.expected.clone(), "{}", s.name);
+        if let Some(s) = c.swapped_inverse_pose() {
+            prop_assert_eq!(s.oracle_pairs(), s.expected.clone(), "{}", s.name);
+        }
+    }
+
+    #[test]
+    fn oracle_invariant_under_vertex_orders(c in any_case(), oa in 0usize..6, ob in 0usize..6) {
+        let v = c.with_vertex_orders(oa, ob);
+        prop_assert_eq!(v.oracle_pairs(), c.expected.clone(), "{}", v.name);
+    }
+
+    #[test]
+    fn oracle_invariant_under_exact_maps(c in any_case(), m in exact_map()) {
+        let v = c.mapped(&m);
+        prop_assert_eq!(v.oracle_pairs(), c.expected.clone(), "{}", v.name);
+    }
+
+    #[test]
+    fn oracle_invariant_under_swap_of_moved_cases(c in any_case(), m in general_pose()) {
+        let moved = c.moved_by(&m);
+        let s = moved.swapped();
+        prop_assert_eq!(s.oracle_pairs(), s.expected.clone(), "{}", s.name);
+    }
+
+    #[test]
+    fn chip_invariant_under_swap(c in any_case()) {
+        let mut fails = chip_failures(&c.swapped(), &c.swapped().expected);
+        if let Some(s) = c.swapped_inverse_pose() {
+            fails.extend(chip_failures(&s, &s.expected));
+        }
+        prop_assert!(fails.is_empty(), "{}", fails.join("\n"));
+    }
+
+    #[test]
+    fn chip_invariant_under_vertex_orders(c in any_case(), oa in 0usize..6, ob in 0usize..6) {
+        let v = c.with_vertex_orders(oa, ob);
+        let fails = chip_failures(&v, &c.expected);
+        prop_assert!(fails.is_empty(), "{}", fails.join("\n"));
+    }
+
+    #[test]
+    fn chip_invariant_under_exact_maps(c in any_case(), m in exact_map()) {
+        let v = c.mapped(&m);
+        let fails = chip_failures(&v, &c.expected);
+        prop_assert!(fails.is_empty(), "{}", fails.join("\n"));
+    }
+
+    #[test]
+    fn chip_traversals_agree_on_generated_cases(c in any_case()) {
+        let fails = traversal_disagreements(&c);
+        prop_assert!(fails.is_empty(), "{}", fails.join("\n"));
+    }
+
+    /// Hard configurations under general rotations: the chip against the oracle.
+    #[test]
+    fn chip_matches_oracle_on_moved_cases(c in any_case(), m in general_pose()) {
+        let moved = c.moved_by(&m);
+        let fails = chip_failures(&moved, &moved.expected);
+        prop_assert!(fails.is_empty(), "{}", fails.join("\n"));
+    }
+}
+
+/// The generators are not one-sided: every family yields both intersecting and disjoint
+/// cases (except shared edges, always intersecting), and the placements reach offsets of
+/// 1e7, scales other than 1 and quarter turns.
+#[test]
+fn generators_cover_both_answers_and_all_placements() {
+    use proptest::strategy::ValueTree;
+    use proptest::test_runner::TestRunner;
+    let families: [(&str, BoxedStrategy<Case>); 12] = [
+        ("vertex-vertex", pv_vertex_vertex()),
+        ("vertex-edge", pv_vertex_edge()),
+        ("vertex-face", pv_vertex_face()),
+        ("edge-edge", pv_edge_edge()),
+        ("coplanar", pv_coplanar()),
+        ("shared-edge", pv_shared_edge()),
+        ("needle", pv_needle()),
+        ("sliver-pair", pv_sliver_pair()),
+        ("zero-area", pv_zero_area()),
+        ("near-parallel", pv_near_parallel()),
+        ("scale-ratio", pv_scale_ratio()),
+        ("tetra", pv_tetra()),
+    ];
+    let mut runner = TestRunner::deterministic();
+    for (name, strat) in families {
+        let (mut hit, mut miss, mut far, mut turned, mut scaled) = (0, 0, 0, 0, 0);
+        for _ in 0..400 {
+            let c = strat.new_tree(&mut runner).unwrap().current();
+            if c.expected.is_empty() { miss += 1 } else { hit += 1 }
+            far += c.pose.t.iter().any(|x| x.abs() >= 1e6) as u32;
+            turned += c.pose.rot_deg.iter().any(|&r| r != 0.0) as u32;
+            scaled += !c.name.contains("scale: 1.0,") as u32;
+        }
+        assert!(hit > 0 && (miss > 0 || name == "shared-edge"), "{name}: {hit} intersecting, {miss} disjoint");
+        assert!(far > 0 && turned > 0 && scaled > 0, "{name}: {far} far, {turned} turned, {scaled} scaled");
+    }
+}
