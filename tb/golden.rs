@@ -341,3 +341,35 @@ proptest! {
         prop_assert!(total > 0 && overlaps < total || overlaps == total);
     }
 }
+
+/// The traversal's TRI_UNIT (f64-estimated bounds, redone with the chip's arithmetic when
+/// the estimate cannot settle a sign) equals the reference on every pair of the hard-case
+/// catalogue, moved by a general rotation, in binary32, the reduced format and e5m4 (whose
+/// wide estimate band sends most T.CHECKs down the redo path).
+#[test]
+fn tri_unit_fast_path_equals_reference_on_hard_cases() {
+    let cases = collision_chip::hard_cases::load_catalogue().unwrap();
+    let (mut redos, mut pairs) = (0, 0);
+    for case in &cases {
+        let moved = [Pose::new(0.0, 0.0, 0.0, 0.0, 0.0, 0.0), Pose::new(13.0, -71.0, 33.0, 0.0, 0.0, 0.0)]
+            .map(|m| if m.rot_deg == [0.0; 3] { case.pose } else { case.moved_by(&m).pose });
+        let tiny = Format::new(5, 4).unwrap();
+        for (pose, format) in moved.iter().flat_map(|p| [(p, Format::BINARY32), (p, Format::REDUCED), (p, tiny)]) {
+            let cfg = ChipConfig { format, ..Default::default() };
+            let bound = case.b.iter().flatten().map(|p| p.coords.amax()).fold(0.0, f64::max);
+            let setup = HostSetup::new(&cfg, pose, bound);
+            let wa: Vec<TriWord> = case.a.iter().map(|t| TriWord::new(t, format)).collect();
+            let wb: Vec<TriWord> = case.b.iter().map(|t| TriWord::new(t, format)).collect();
+            let mut unit = tcheck::TriUnit::new(format, cfg.tri_rounding, &setup, wa.len(), wb.len());
+            for (i, a) in wa.iter().enumerate() {
+                for (j, b) in wb.iter().enumerate() {
+                    let want = tcheck::tri_unit(format, cfg.tri_rounding, a, b, &setup);
+                    assert_eq!(unit.test(i as u32, a, j as u32, b), want, "{} ({i}, {j}) {format}", case.name);
+                    pairs += 1;
+                }
+            }
+            redos += unit.exact_redos;
+        }
+    }
+    assert!(pairs > 100 && redos > 0, "{pairs} pairs, {redos} redos");
+}

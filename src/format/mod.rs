@@ -377,6 +377,33 @@ impl Format {
         }
     }
 
+    /// The next value of the format above `x` (IEEE nextUp): +inf stays, -inf gives
+    /// -max_finite, NaN stays NaN, the largest finite gives +inf, -min_subnormal gives -0.
+    #[inline(always)]
+    pub fn next_up(&self, x: f64) -> f64 {
+        if self.is_binary32() {
+            return if x.is_nan() { f64::NAN } else { (x as f32).next_up() as f64 };
+        }
+        self.next_up_general(x)
+    }
+
+    fn next_up_general(&self, x: f64) -> f64 {
+        if x.is_nan() || x == f64::INFINITY {
+            return x;
+        }
+        if x == f64::NEG_INFINITY {
+            return -self.max_finite();
+        }
+        if x >= 0.0 {
+            let y = x + self.ulp(x);
+            return if y > self.max_finite() { f64::INFINITY } else { y };
+        }
+        // Below a power of two above the normal minimum the spacing halves.
+        let m = -x;
+        let below = if m.to_bits() << 12 == 0 && m > self.min_positive_normal() { self.ulp(m) / 2.0 } else { self.ulp(m) };
+        -(m - below)
+    }
+
     /// Rounds an arbitrary `f64` (taken as exact) into the format. NaN gives the
     /// canonical NaN, `±inf` and `±0` are returned unchanged.
     #[inline]

@@ -723,3 +723,27 @@ fn bench_ns_per_op() {
         bench_loop(&format!("{fmt} {r:?} round"), &xs, |a, _| f.round(a, r));
     }
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 20000, .. ProptestConfig::default() })]
+
+    /// next_up against apfloat's next_up, on random bit patterns of binary32, e8m15, e4m3.
+    #[test]
+    fn next_up_matches_apfloat(bits in any::<u64>()) {
+        fn check<S: Semantics>(fmt: Format, bits: u64) -> Result<(), TestCaseError> {
+            let b = bits & ((1u64 << fmt.width()) - 1);
+            let x = fmt.from_bits(b);
+            let want = IeeeFloat::<S>::from_bits(b as u128).next_up().value;
+            let got = fmt.next_up(x);
+            if want.is_nan() {
+                prop_assert!(got.is_nan());
+            } else {
+                prop_assert_eq!(fmt.to_bits(got), want.to_bits() as u64, "next_up({:e})", x);
+            }
+            Ok(())
+        }
+        check::<rustc_apfloat::ieee::SingleS>(Format::BINARY32, bits)?;
+        check::<E8M15S>(Format::REDUCED, bits)?;
+        check::<E4M3S>(Format::new(4, 3).unwrap(), bits)?;
+    }
+}

@@ -30,6 +30,7 @@
 use crate::dop::host::{Affine, HostSetup};
 use crate::format::{Format, Rounding};
 use crate::memory::TriWord;
+use std::cell::Cell;
 
 /// A datapath value and a bound on its distance from the ideal value: |x - x*| <= e.
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
@@ -55,25 +56,104 @@ impl Bounded {
     }
 }
 
-/// The datapath's arithmetic on bounded values. Values are rounded in the T.CHECK rounding;
-/// bounds are computed in the same format rounded up, in this order:
-/// add: `(ea + eb) + ulp(x)`; mul: `(ea |b| + eb |a|) + (ea eb + ulp(x))`.
+/// The datapath's arithmetic on bounded values. Values are rounded in the T.CHECK rounding.
+/// The chip computes bounds in the same format: each operation rounded to nearest, stepped
+/// up to the next value of the format and floored at the smallest normal m (an upper
+/// bound of the exact result, cheaper than a directed-rounding unit, and never subnormal),
+/// in this order: add: `(ea + eb) + ulp(x)`; mul: `(ea |b| + eb |a|) + (ea eb + ulp(x))`.
 /// The rounding error of x is at most ulp(x) in every rounding mode.
 #[derive(Clone, Copy)]
-struct Arith {
+struct Arith<'c> {
     f: Format,
     r: Rounding,
+    /// The smallest normal value of the format.
+    m: f64,
+    mode: BoundMode<'c>,
 }
 
-impl Arith {
+#[derive(Clone, Copy)]
+enum BoundMode<'c> {
+    /// The chip's bound arithmetic.
+    Chip,
+    /// An f64 estimate that decides most signs as the chip would, and says when it cannot.
+    Estimate(&'c Estimate),
+}
+
+/// The f64 estimate e64 of a bound computes the same expression in f64 with the same floor.
+/// Every chip bound operation is within a factor (1 + 2^(1-F)) of the exact one on normal
+/// values, and no chain is deeper than 64 operations, so the chip's bound lies in
+/// [e64 (1 - 2^-40), e64 hi] with hi = (1 + 2^(1-F))^64 (1 + 2^-40): a sign is the chip's
+/// when |x| > e64 hi (sure) or |x| <= e64 (1 - 2^-40) (unknown); in between, or near
+/// overflow, the T.CHECK is redone with the chip's arithmetic.
+pub(crate) struct Estimate {
+    hi: f64,
+    lo: f64,
+    max: f64,
+    ambiguous: Cell<bool>,
+}
+
+impl Estimate {
+    fn new(f: Format) -> Estimate {
+        let hi = (1.0 + 2f64.powi(1 - f.frac_bits() as i32)).powi(64) * (1.0 + 2f64.powi(-40));
+        Estimate { hi, lo: 1.0 - 2f64.powi(-40), max: f.max_finite() / (4.0 * hi), ambiguous: Cell::new(false) }
+    }
+}
+
+impl<'c> Arith<'c> {
+    fn new(f: Format, r: Rounding, mode: BoundMode<'c>) -> Self {
+        Arith { f, r, m: f.min_positive_normal(), mode }
+    }
+
     #[inline(always)]
     fn up(&self, a: f64, b: f64) -> f64 {
-        self.f.add(a, b, Rounding::TowardPositive)
+        match self.mode {
+            BoundMode::Chip => self.f.next_up(self.f.add(a, b, Rounding::NearestEven)).max(self.m),
+            BoundMode::Estimate(_) => (a + b).max(self.m),
+        }
     }
 
     #[inline(always)]
     fn upm(&self, a: f64, b: f64) -> f64 {
-        self.f.mul(a, b, Rounding::TowardPositive)
+        match self.mode {
+            BoundMode::Chip => self.f.next_up(self.f.mul(a, b, Rounding::NearestEven)).max(self.m),
+            BoundMode::Estimate(_) => (a * b).max(self.m),
+        }
+    }
+
+    /// The sign decision of stage 5: surely positive, surely negative, unknown (`None`).
+    #[inline(always)]
+    fn sign(&self, v: Bounded) -> Option<bool> {
+        match self.mode {
+            BoundMode::Chip => v.sign(),
+            BoundMode::Estimate(est) => {
+                let ax = v.x.abs();
+                if v.e <= est.max && ax > v.e * est.hi {
+                    Some(v.x > 0.0)
+                } else if v.e <= est.max && ax <= v.e * est.lo {
+                    None
+                } else {
+                    est.ambiguous.set(true);
+                    None
+                }
+            }
+        }
+    }
+
+    /// `v <= limit` for a bound v, with the estimate's band.
+    fn at_most(&self, v: f64, limit: f64) -> bool {
+        match self.mode {
+            BoundMode::Chip => v <= limit,
+            BoundMode::Estimate(est) => {
+                if v * est.hi <= limit {
+                    true
+                } else {
+                    if v * est.lo <= limit {
+                        est.ambiguous.set(true);
+                    }
+                    false
+                }
+            }
+        }
     }
 
     #[inline(always)]
@@ -150,7 +230,10 @@ fn bounded_affine(m: &Affine, err: [f64; 2]) -> BoundedAffine {
 /// Stage 1: M_b = M_B . M_AB (Eqs. 11, 12) for the leaf word `leaf` and a frame map `b`
 /// with bounds `b_err`.
 pub fn stage1(f: Format, r: Rounding, leaf: &TriWord, b: &Affine, b_err: [f64; 2]) -> BoundedAffine {
-    let ar = Arith { f, r };
+    stage1_in(&Arith::new(f, r, BoundMode::Chip), leaf, b, b_err)
+}
+
+fn stage1_in(ar: &Arith, leaf: &TriWord, b: &Affine, b_err: [f64; 2]) -> BoundedAffine {
     let m = bounded_affine(&leaf.m, [leaf.e_lin, leaf.e_tr]);
     let b = bounded_affine(b, b_err);
     let mut mb = [[Bounded::default(); 4]; 3];
@@ -170,7 +253,11 @@ pub fn stage1(f: Format, r: Rounding, leaf: &TriWord, b: &Affine, b_err: [f64; 2
 /// of the mapped vertices for a unit triangle that is itself only known within `eta`
 /// (direction A vs U(B): `Some((leaf of B, eta))`; see docs/ACCURACY.md).
 pub fn edges(f: Format, r: Rounding, mb: &BoundedAffine, v: &[[f64; 3]; 3], gap: Option<(&TriWord, f64)>) -> Trace {
-    let ar = Arith { f, r };
+    edges_in(&Arith::new(f, r, BoundMode::Chip), mb, v, gap)
+}
+
+fn edges_in(ar: &Arith, mb: &BoundedAffine, v: &[[f64; 3]; 3], gap: Option<(&TriWord, f64)>) -> Trace {
+    let f = ar.f;
     let mut vt = [[Bounded::default(); 3]; 3];
     for (p, out) in v.iter().zip(vt.iter_mut()) {
         let p = p.map(|x| Bounded { x, e: f.ulp(x) });
@@ -178,7 +265,7 @@ pub fn edges(f: Format, r: Rounding, mb: &BoundedAffine, v: &[[f64; 3]; 3], gap:
             out[i] = ar.add(ar.add(ar.mul(mb[i][0], p[0]), ar.mul(mb[i][1], p[1])), ar.add(ar.mul(mb[i][2], p[2]), mb[i][3]));
         }
         if let Some((leaf, eta)) = gap {
-            let g = vertex_gap(&ar, leaf, eta, out[0], out[1]);
+            let g = vertex_gap(ar, leaf, eta, out[0], out[1]);
             for o in out.iter_mut() {
                 o.e = ar.up(o.e, g);
             }
@@ -192,7 +279,7 @@ pub fn edges(f: Format, r: Rounding, mb: &BoundedAffine, v: &[[f64; 3]; 3], gap:
         bb[e] = ar.sub(ar.mul(p[1], q[2]), ar.mul(q[1], p[2]));
         rz[e] = ar.sub(q[2], p[2]);
         s[e] = ar.sub(ar.add(a[e], bb[e]), rz[e]);
-        let signs = [p[2].sign(), q[2].sign(), rz[e].sign(), a[e].sign(), bb[e].sign(), s[e].sign()];
+        let signs = [p[2], q[2], rz[e], a[e], bb[e], s[e]].map(|v| ar.sign(v));
         // Wanted signs (true = positive) of Pz, Qz, r_z, a, b, s for P below / Q below.
         let up = [false, true, true, true, true, false];
         let down = [true, false, false, false, false, true];
@@ -207,7 +294,7 @@ pub fn edges(f: Format, r: Rounding, mb: &BoundedAffine, v: &[[f64; 3]; 3], gap:
 /// valid while 4 lambda eta <= 1/2 (else unbounded).
 fn vertex_gap(ar: &Arith, leaf: &TriWord, eta: f64, u: Bounded, v: Bounded) -> f64 {
     let lambda = ar.up(leaf.l_norm, leaf.e_lin);
-    if !(ar.upm(ar.upm(4.0, lambda), eta) <= 0.5) {
+    if !ar.at_most(ar.upm(ar.upm(4.0, lambda), eta), 0.5) {
         return f64::INFINITY;
     }
     let uv = ar.up(ar.up(u.x.abs(), u.e), ar.up(v.x.abs(), v.e));
@@ -239,15 +326,20 @@ pub fn tri_unit(f: Format, r: Rounding, a: &TriWord, b: &TriWord, setup: &HostSe
     TriResult::of(d1.flatten(), d2.flatten())
 }
 
-/// TRI_UNIT during one query: stage 1 depends on one leaf and the pose only, so its
-/// output is kept per leaf (the same values; [`tri_unit`] bit for bit, tested).
+/// TRI_UNIT during one query: the same results as [`tri_unit`] bit for bit (tested),
+/// faster: stage 1 depends on one leaf and the pose only and is kept per leaf, and the
+/// bounds are first estimated in f64 ([`Estimate`]); only a T.CHECK whose signs the
+/// estimate cannot settle is redone with the chip's bound arithmetic.
 pub struct TriUnit<'a> {
     f: Format,
     r: Rounding,
     setup: &'a HostSetup,
-    /// Per triangle of B: M_B(b) . M_AB; per triangle of A: M_A(a) . M_BA.
+    est: Estimate,
+    /// Per triangle of B: M_B(b) . M_AB; per triangle of A: M_A(a) . M_BA (estimated bounds).
     mb_b: StageOneCache,
     mb_a: StageOneCache,
+    /// T.CHECKs redone with the chip's bound arithmetic.
+    pub exact_redos: u64,
 }
 
 struct StageOneCache {
@@ -270,28 +362,35 @@ impl StageOneCache {
 impl<'a> TriUnit<'a> {
     pub fn new(f: Format, r: Rounding, setup: &'a HostSetup, tris_a: usize, tris_b: usize) -> Self {
         let cache = |n| StageOneCache { slot: vec![u32::MAX; n], values: vec![] };
-        TriUnit { f, r, setup, mb_b: cache(tris_b), mb_a: cache(tris_a) }
+        TriUnit { f, r, setup, est: Estimate::new(f), mb_b: cache(tris_b), mb_a: cache(tris_a), exact_redos: 0 }
     }
 
     /// Triangle `ta` of A (word `a`) against `tb` of B (word `b`). A sure hit in the first
     /// direction decides without the second (the result is the same).
     pub fn test(&mut self, ta: u32, a: &TriWord, tb: u32, b: &TriWord) -> TriResult {
-        let (f, r, setup) = (self.f, self.r, self.setup);
-        let d1 = if b.degenerate {
-            None
-        } else {
-            let mb = self.mb_b.get(tb, || stage1(f, r, b, &setup.m_ab, setup.e_ab));
-            edges(f, r, mb, &a.v, Some((b, setup.eta))).result()
-        };
+        let d1 = if b.degenerate { None } else { self.direction(tb, b, &a.v, true) };
         if d1 == Some(true) {
             return TriResult { hit: true, uncertain: false };
         }
-        let d2 = if a.degenerate {
-            None
-        } else {
-            let mb = self.mb_a.get(ta, || stage1(f, r, a, &setup.m_ba, setup.e_ba));
-            edges(f, r, mb, &b.v, None).result()
-        };
+        let d2 = if a.degenerate { None } else { self.direction(ta, a, &b.v, false) };
         TriResult::of(d1, d2)
+    }
+
+    /// One T.CHECK: the edges of `v` against the unit triangle of `leaf` (triangle `t` of B
+    /// when `ab`, else of A).
+    fn direction(&mut self, t: u32, leaf: &TriWord, v: &[[f64; 3]; 3], ab: bool) -> Option<bool> {
+        let (f, r, setup) = (self.f, self.r, self.setup);
+        let (frame, err, gap) = if ab { (&setup.m_ab, setup.e_ab, Some((leaf, setup.eta))) } else { (&setup.m_ba, setup.e_ba, None) };
+        self.est.ambiguous.set(false);
+        let ar = Arith::new(f, r, BoundMode::Estimate(&self.est));
+        let cache = if ab { &mut self.mb_b } else { &mut self.mb_a };
+        let mb = cache.get(t, || stage1_in(&ar, leaf, frame, err));
+        let res = edges_in(&ar, mb, v, gap).result();
+        if !self.est.ambiguous.get() {
+            return res;
+        }
+        self.exact_redos += 1;
+        let chip = Arith::new(f, r, BoundMode::Chip);
+        edges_in(&chip, &stage1_in(&chip, leaf, frame, err), v, gap).result()
     }
 }
