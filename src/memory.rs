@@ -6,10 +6,11 @@
 //! - node word, `1 + k*W + 64` bits: `is_leaf`, d_0..d_{k-1}, then two 32-bit fields:
 //!   children (inner node) or triangle index and 0 (leaf). Node i lives at
 //!   `base + i * node_bytes`, pre-order, root at node 0.
-//! - triangle word, `24*W + 1` bits: vertices v0, v1, v2 (x, y, z each), M_B row-major
+//! - triangle word, `24*W + 2` bits: vertices v0, v1, v2 (x, y, z each), M_B row-major
 //!   (3x4: the affine map sending the triangle to the unit triangle), its error bounds
-//!   `e_lin`, `e_tr` and norm `l_norm` (see [`TriWord`]), and the `degenerate` bit (no
-//!   usable M_B: stored as zeros). Triangle t lives at `base + t * tri_bytes`.
+//!   `e_lin`, `e_tr` and norm `l_norm` (see [`TriWord`]), the `v_exact` bit (the vertices
+//!   needed no rounding) and the `degenerate` bit (no usable M_B: stored as zeros).
+//!   Triangle t lives at `base + t * tri_bytes`.
 
 use crate::config::ChipConfig;
 use crate::dop::host::Affine;
@@ -27,7 +28,7 @@ pub struct Layout {
 impl Layout {
     pub fn new(cfg: &ChipConfig) -> Layout {
         let w = cfg.format.width();
-        Layout { node_bits: 1 + cfg.k as u32 * w + 64, tri_bits: 24 * w + 1 }
+        Layout { node_bits: 1 + cfg.k as u32 * w + 64, tri_bits: 24 * w + 2 }
     }
     pub fn node_bytes(&self) -> u64 {
         self.node_bits.div_ceil(8) as u64
@@ -56,6 +57,8 @@ pub struct TriWord {
     pub e_tr: f64,
     /// |L|_inf of the stored linear part (rounded up).
     pub l_norm: f64,
+    /// The vertices are the input's exactly (no rounding error to account for).
+    pub v_exact: bool,
     pub degenerate: bool,
 }
 
@@ -70,7 +73,16 @@ impl TriWord {
         let rn = |x: f64| fmt.round(x, Rounding::NearestEven);
         let up = |x: f64| fmt.round(x * (1.0 + 2f64.powi(-50)), Rounding::TowardPositive);
         let v = t.map(|p| [rn(p.x), rn(p.y), rn(p.z)]);
-        let bad = TriWord { v, m: [[0.0; 4]; 3], e_lin: f64::INFINITY, e_tr: f64::INFINITY, l_norm: f64::INFINITY, degenerate: true };
+        let v_exact = t.iter().zip(&v).all(|(p, q)| p.x == q[0] && p.y == q[1] && p.z == q[2]);
+        let bad = TriWord {
+            v,
+            m: [[0.0; 4]; 3],
+            e_lin: f64::INFINITY,
+            e_tr: f64::INFINITY,
+            l_norm: f64::INFINITY,
+            v_exact,
+            degenerate: true,
+        };
         let e1 = t[1] - t[0];
         let e2 = t[2] - t[0];
         let n = e1.cross(&e2);
@@ -109,7 +121,7 @@ impl TriWord {
         if !(e_tr.is_finite() && tr.iter().all(|x| x.is_finite())) {
             return bad;
         }
-        TriWord { v, m, e_lin: up(e_lin), e_tr: up(e_tr), l_norm: up(l_inf), degenerate: false }
+        TriWord { v, m, e_lin: up(e_lin), e_tr: up(e_tr), l_norm: up(l_inf), v_exact, degenerate: false }
     }
 }
 

@@ -7,8 +7,8 @@ use collision_chip::mesh::{self, Mesh};
 use collision_chip::oracle;
 use collision_chip::pose::Pose;
 use collision_chip::query::{place, Accuracy, Chip};
-use collision_chip::report::{summary_table, PoseRecord};
-use collision_chip::scene::{Scene, DEFAULT_SCENE};
+use collision_chip::report::{accuracy, summary_table, PoseRecord};
+use collision_chip::scene::{Scene, Sweep, DEFAULT_SCENE};
 use collision_chip::traversal::{Mode, Traversal};
 use indicatif::{ProgressBar, ProgressStyle};
 use serde_json::json;
@@ -48,6 +48,31 @@ enum Cmd {
         #[arg(long)]
         json: bool,
     },
+    /// What accuracy costs: each mesh tumbling against a copy of itself (both scaled into
+    /// [-1,1]^3) at several distances, with each number format and DOP rounding, compared
+    /// with the exact oracle. Prints the table of docs/ACCURACY.md.
+    Accuracy(AccuracyArgs),
+}
+
+#[derive(Args)]
+struct AccuracyArgs {
+    /// Meshes (files or built-in names), comma separated.
+    #[arg(long, value_delimiter = ',', default_value = "bunny,teapot,dragon-11k")]
+    meshes: Vec<String>,
+    /// Number formats, comma separated (binary32, reduced, eEmF).
+    #[arg(long, value_delimiter = ',', default_value = "binary32,reduced,e8m10")]
+    formats: Vec<Format>,
+    /// Centre distances along x, from apart to deeply penetrating.
+    #[arg(long, value_delimiter = ',', allow_hyphen_values = true, default_value = "2.2,1.6,1.2,0.8,0.4")]
+    distances: Vec<f64>,
+    /// Seeded random orientations per distance.
+    #[arg(long, default_value_t = 8)]
+    orientations: usize,
+    #[arg(long, default_value_t = 1)]
+    seed: u64,
+    /// Print the rows as JSON instead of the table.
+    #[arg(long)]
+    json: bool,
 }
 
 #[derive(Args)]
@@ -73,7 +98,8 @@ struct QueryArgs {
     /// misses and extra pairs of the chip.
     #[arg(long)]
     oracle: bool,
-    /// Print JSON: pairs, counters, and with --oracle exact_pairs and accuracy.
+    /// Print JSON: pairs, counters, uncertain (how many pairs the host settled) and
+    /// uncertain_pairs, and with --oracle exact_pairs and accuracy.
     #[arg(long)]
     json: bool,
 }
@@ -96,6 +122,7 @@ fn main() -> ExitCode {
     let res = match cli.cmd {
         Some(Cmd::Query(q)) => query(q),
         Some(Cmd::Run { scene, json }) => run(scene, json),
+        Some(Cmd::Accuracy(a)) => accuracy(a),
         None => run(None, false),
     };
     match res {
@@ -126,6 +153,7 @@ fn query(q: QueryArgs) -> Result<(), String> {
             "b": { "mesh": q.b, "triangles": tb.len() },
             "pose": q.pose, "mode": q.mode, "traversal": q.traversal, "chip": cfg,
             "pairs": res.pairs, "counters": res.counters,
+            "uncertain": res.uncertain.len(), "uncertain_pairs": res.uncertain,
         });
         if let (Some(x), Some(a)) = (&exact, acc) {
             v["exact_pairs"] = json!(x);
@@ -141,7 +169,11 @@ fn query(q: QueryArgs) -> Result<(), String> {
         cfg.k, cfg.format, cfg.dop_rounding, q.traversal, q.mode
     );
     let c = res.counters;
-    println!("intersecting pairs (chip): {}", res.pairs.len());
+    println!(
+        "intersecting pairs: {} ({} flagged uncertain by T.CHECK and settled by the host with the exact oracle)",
+        res.pairs.len(),
+        res.uncertain.len()
+    );
     for p in res.pairs.iter().take(20) {
         println!("  A#{} x B#{}", p.0, p.1);
     }
@@ -162,6 +194,30 @@ fn exact_pairs(ta: &[oracle::Tri], tb: &[oracle::Tri], pose: &Pose) -> Vec<(u32,
     oracle::intersecting_pairs(ta, &place(tb, pose))
 }
 
+fn progress_bar(len: u64, hidden: bool) -> ProgressBar {
+    let bar = if hidden || !std::io::stderr().is_terminal() { ProgressBar::hidden() } else { ProgressBar::new(len) };
+    bar.set_style(ProgressStyle::with_template("{bar:40} {pos}/{len} poses {elapsed} (eta {eta})").expect("valid template"));
+    bar
+}
+
+fn accuracy(a: AccuracyArgs) -> Result<(), String> {
+    let sweep = Sweep { distances: a.distances.clone(), orientations: a.orientations, seed: a.seed };
+    let roundings = [DopRounding::Outward, DopRounding::NearestEven];
+    let bar = progress_bar((a.meshes.len() * a.distances.len() * a.orientations) as u64, a.json);
+    let mut rows = vec![];
+    for m in &a.meshes {
+        let tris = load(m, true)?.triangles_f64();
+        rows.extend(accuracy::study(m, &tris, &a.formats, &roundings, &sweep, || bar.inc(1))?);
+    }
+    bar.finish_and_clear();
+    if a.json {
+        println!("{}", serde_json::to_string_pretty(&rows).expect("serialisable"));
+    } else {
+        print!("{}", accuracy::table(&rows));
+    }
+    Ok(())
+}
+
 fn run(path: Option<PathBuf>, json: bool) -> Result<(), String> {
     let scene = match &path {
         Some(p) => Scene::load(p)?,
@@ -178,8 +234,7 @@ fn run(path: Option<PathBuf>, json: bool) -> Result<(), String> {
             scene.cfg.k, scene.cfg.format, scene.cfg.dop_rounding, scene.traversal, scene.mode, scene.poses.len()
         );
     }
-    let bar = if json || !std::io::stderr().is_terminal() { ProgressBar::hidden() } else { ProgressBar::new(scene.poses.len() as u64) };
-    bar.set_style(ProgressStyle::with_template("{bar:40} {pos}/{len} poses {elapsed} (eta {eta})").expect("valid template"));
+    let bar = progress_bar(scene.poses.len() as u64, json);
     let mut records = vec![];
     for sp in &scene.poses {
         let res = chip.query(&sp.pose, scene.mode, scene.traversal);

@@ -60,8 +60,8 @@ impl Bounded {
 /// The chip computes bounds in the same format: each operation rounded to nearest, stepped
 /// up to the next value of the format and floored at the smallest normal m (an upper
 /// bound of the exact result, cheaper than a directed-rounding unit, and never subnormal),
-/// in this order: add: `(ea + eb) + ulp(x)`; mul: `(ea |b| + eb |a|) + (ea eb + ulp(x))`.
-/// The rounding error of x is at most ulp(x) in every rounding mode.
+/// in this order: add: `(ea + eb) + err(x)`; mul: `(ea |b| + eb |a|) + (ea eb + err(x))`,
+/// err(x) being the rounding error bound of x: ulp(x)/2 to nearest, ulp(x) directed.
 #[derive(Clone, Copy)]
 struct Arith<'c> {
     f: Format,
@@ -156,10 +156,22 @@ impl<'c> Arith<'c> {
         }
     }
 
+    fn rounding_error_nearest(&self, x: f64) -> f64 {
+        (0.5 * self.f.ulp(x)).max(self.m)
+    }
+
+    /// Bound on the rounding error of a result x: half an ulp to nearest, an ulp when
+    /// directed, floored at m (so it is a value of the format).
+    #[inline(always)]
+    fn rounding_error(&self, x: f64) -> f64 {
+        let ulp = self.f.ulp(x);
+        if self.r == Rounding::NearestEven { (0.5 * ulp).max(self.m) } else { ulp.max(self.m) }
+    }
+
     #[inline(always)]
     fn add(&self, a: Bounded, b: Bounded) -> Bounded {
         let x = self.f.add(a.x, b.x, self.r);
-        Bounded { x, e: self.up(self.up(a.e, b.e), self.f.ulp(x)) }
+        Bounded { x, e: self.up(self.up(a.e, b.e), self.rounding_error(x)) }
     }
 
     fn sub(&self, a: Bounded, b: Bounded) -> Bounded {
@@ -171,7 +183,7 @@ impl<'c> Arith<'c> {
         let x = self.f.mul(a.x, b.x, self.r);
         let e = self.up(
             self.up(self.upm(a.e, b.x.abs()), self.upm(b.e, a.x.abs())),
-            self.up(self.upm(a.e, b.e), self.f.ulp(x)),
+            self.up(self.upm(a.e, b.e), self.rounding_error(x)),
         );
         Bounded { x, e }
     }
@@ -249,18 +261,20 @@ fn stage1_in(ar: &Arith, leaf: &TriWord, b: &Affine, b_err: [f64; 2]) -> Bounded
     mb
 }
 
-/// Stages 2-5 on the output `mb` of stage 1 and the triangle `v`. `gap` widens the bounds
+/// Stages 2-5 on the output `mb` of stage 1 and the triangle word `tri` (its vertices and
+/// whether they are exact). `gap` widens the bounds
 /// of the mapped vertices for a unit triangle that is itself only known within `eta`
 /// (direction A vs U(B): `Some((leaf of B, eta))`; see docs/ACCURACY.md).
-pub fn edges(f: Format, r: Rounding, mb: &BoundedAffine, v: &[[f64; 3]; 3], gap: Option<(&TriWord, f64)>) -> Trace {
-    edges_in(&Arith::new(f, r, BoundMode::Chip), mb, v, gap)
+pub fn edges(f: Format, r: Rounding, mb: &BoundedAffine, tri: &TriWord, gap: Option<(&TriWord, f64)>) -> Trace {
+    edges_in(&Arith::new(f, r, BoundMode::Chip), mb, tri, gap)
 }
 
-fn edges_in(ar: &Arith, mb: &BoundedAffine, v: &[[f64; 3]; 3], gap: Option<(&TriWord, f64)>) -> Trace {
-    let f = ar.f;
+fn edges_in(ar: &Arith, mb: &BoundedAffine, tri: &TriWord, gap: Option<(&TriWord, f64)>) -> Trace {
+    let v = &tri.v;
     let mut vt = [[Bounded::default(); 3]; 3];
     for (p, out) in v.iter().zip(vt.iter_mut()) {
-        let p = p.map(|x| Bounded { x, e: f.ulp(x) });
+        // The host rounded the vertices to nearest (no error if it says they were exact).
+        let p = p.map(|x| Bounded { x, e: if tri.v_exact { 0.0 } else { ar.rounding_error_nearest(x) } });
         for i in 0..3 {
             out[i] = ar.add(ar.add(ar.mul(mb[i][0], p[0]), ar.mul(mb[i][1], p[1])), ar.add(ar.mul(mb[i][2], p[2]), mb[i][3]));
         }
@@ -321,8 +335,8 @@ impl TriResult {
 /// TRI_UNIT: A's edges against U(B), then B's edges against U(A); a degenerate leaf
 /// leaves its direction unknown.
 pub fn tri_unit(f: Format, r: Rounding, a: &TriWord, b: &TriWord, setup: &HostSetup) -> TriResult {
-    let d1 = (!b.degenerate).then(|| edges(f, r, &stage1(f, r, b, &setup.m_ab, setup.e_ab), &a.v, Some((b, setup.eta))).result());
-    let d2 = (!a.degenerate).then(|| edges(f, r, &stage1(f, r, a, &setup.m_ba, setup.e_ba), &b.v, None).result());
+    let d1 = (!b.degenerate).then(|| edges(f, r, &stage1(f, r, b, &setup.m_ab, setup.e_ab), a, Some((b, setup.eta))).result());
+    let d2 = (!a.degenerate).then(|| edges(f, r, &stage1(f, r, a, &setup.m_ba, setup.e_ba), b, None).result());
     TriResult::of(d1.flatten(), d2.flatten())
 }
 
@@ -368,17 +382,17 @@ impl<'a> TriUnit<'a> {
     /// Triangle `ta` of A (word `a`) against `tb` of B (word `b`). A sure hit in the first
     /// direction decides without the second (the result is the same).
     pub fn test(&mut self, ta: u32, a: &TriWord, tb: u32, b: &TriWord) -> TriResult {
-        let d1 = if b.degenerate { None } else { self.direction(tb, b, &a.v, true) };
+        let d1 = if b.degenerate { None } else { self.direction(tb, b, a, true) };
         if d1 == Some(true) {
             return TriResult { hit: true, uncertain: false };
         }
-        let d2 = if a.degenerate { None } else { self.direction(ta, a, &b.v, false) };
+        let d2 = if a.degenerate { None } else { self.direction(ta, a, b, false) };
         TriResult::of(d1, d2)
     }
 
     /// One T.CHECK: the edges of `v` against the unit triangle of `leaf` (triangle `t` of B
     /// when `ab`, else of A).
-    fn direction(&mut self, t: u32, leaf: &TriWord, v: &[[f64; 3]; 3], ab: bool) -> Option<bool> {
+    fn direction(&mut self, t: u32, leaf: &TriWord, v: &TriWord, ab: bool) -> Option<bool> {
         let (f, r, setup) = (self.f, self.r, self.setup);
         let (frame, err, gap) = if ab { (&setup.m_ab, setup.e_ab, Some((leaf, setup.eta))) } else { (&setup.m_ba, setup.e_ba, None) };
         self.est.ambiguous.set(false);

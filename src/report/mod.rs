@@ -1,4 +1,7 @@
-//! Reports: per-pose records of a scene run and the readable summary table.
+//! Reports: per-pose records of a scene run and the readable summary table; the
+//! accuracy study.
+
+pub mod accuracy;
 
 use crate::pose::Pose;
 use crate::query::Accuracy;
@@ -40,8 +43,8 @@ pub fn summary_table(records: &[PoseRecord]) -> String {
     let mut out = String::new();
     let _ = write!(
         out,
-        "{:<28} {:>5} {:>9} {:>10} {:>10} {:>9} {:>9} {:>10} {:>7}",
-        "pose", "n", "pairs", "dop_tests", "overlaps", "tri_tests", "fetches", "mem_KiB", "queue"
+        "{:<28} {:>5} {:>9} {:>10} {:>10} {:>9} {:>9} {:>9} {:>10} {:>7}",
+        "pose", "n", "pairs", "dop_tests", "overlaps", "tri_tests", "uncertain", "fetches", "mem_KiB", "queue"
     );
     if with_acc {
         let _ = write!(out, " {:>9} {:>7} {:>7}", "exact", "misses", "extras");
@@ -52,13 +55,14 @@ pub fn summary_table(records: &[PoseRecord]) -> String {
         let mean = |f: &dyn Fn(&PoseRecord) -> f64| g.iter().map(|r| f(r)).sum::<f64>() / n;
         let _ = write!(
             out,
-            "{:<28} {:>5} {:>9.1} {:>10.0} {:>10.0} {:>9.1} {:>9.0} {:>10.1} {:>7.0}",
+            "{:<28} {:>5} {:>9.1} {:>10.0} {:>10.0} {:>9.1} {:>9.1} {:>9.0} {:>10.1} {:>7.0}",
             key,
             g.len(),
             mean(&|r| r.pair_count as f64),
             mean(&|r| r.counters.dop_tests as f64),
             mean(&|r| r.counters.dop_overlaps as f64),
             mean(&|r| r.counters.tri_tests as f64),
+            mean(&|r| r.counters.uncertain as f64),
             mean(&|r| (r.counters.node_fetches + r.counters.tri_fetches) as f64),
             mean(&|r| r.counters.memory_bytes as f64 / 1024.0),
             g.iter().map(|r| r.counters.max_queue_depth).max().unwrap_or(0) as f64,
