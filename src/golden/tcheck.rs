@@ -174,6 +174,7 @@ impl<'c> Arith<'c> {
         Bounded { x, e: self.up(self.up(a.e, b.e), self.rounding_error(x)) }
     }
 
+    #[inline(always)]
     fn sub(&self, a: Bounded, b: Bounded) -> Bounded {
         self.add(a, b.neg())
     }
@@ -289,6 +290,15 @@ fn edges_in(ar: &Arith, mb: &BoundedAffine, tri: &TriWord, gap: Option<(&TriWord
     let mut crossing = [None; 3];
     for e in 0..3 {
         let (p, q) = (vt[e], vt[(e + 1) % 3]);
+        if let BoundMode::Estimate(_) = ar.mode {
+            // Both ends surely on one side: both conjunctions are surely false, whatever
+            // the other signs; the chip's verdict is the same (its trace is complete).
+            let (sp, sq) = (ar.sign(p[2]), ar.sign(q[2]));
+            if sp.is_some() && sp == sq {
+                crossing[e] = Some(false);
+                continue;
+            }
+        }
         a[e] = ar.sub(ar.mul(p[0], q[2]), ar.mul(q[0], p[2]));
         bb[e] = ar.sub(ar.mul(p[1], q[2]), ar.mul(q[1], p[2]));
         rz[e] = ar.sub(q[2], p[2]);
