@@ -101,7 +101,7 @@ impl TriWord {
         let res = l * e - Matrix3::identity();
         let mag = l.abs() * e.abs();
         let rho = (res.abs() + mag * (8.0 * u)).column_sum().max();
-        if !(rho < 0.5) {
+        if rho.is_nan() || rho >= 0.5 {
             return bad;
         }
         let l_inf = l.abs().column_sum().max();

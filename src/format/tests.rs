@@ -10,38 +10,28 @@ use rustc_apfloat::{Float, FloatConvert, Round};
 // apfloat semantics of the non-standard formats
 // ---------------------------------------------------------------------------
 
-/// e8m15 (the chip's reduced format).
-struct E8M15S;
-impl Semantics for E8M15S {
-    const BITS: usize = 24;
-    const EXP_BITS: usize = 8;
+/// apfloat semantics for a format with `$bits` bits of which `$exp` are exponent.
+macro_rules! semantics {
+    ($($(#[$doc:meta])* $name:ident = ($bits:expr, $exp:expr);)*) => {$(
+        $(#[$doc])*
+        struct $name;
+        impl Semantics for $name {
+            const BITS: usize = $bits;
+            const EXP_BITS: usize = $exp;
+        }
+    )*};
 }
-/// e9m24, the largest allowed format.
-struct E9M24S;
-impl Semantics for E9M24S {
-    const BITS: usize = 34;
-    const EXP_BITS: usize = 9;
-}
-/// e4m3 with IEEE inf/NaN (unlike apfloat's Float8E4M3FN).
-struct E4M3S;
-impl Semantics for E4M3S {
-    const BITS: usize = 8;
-    const EXP_BITS: usize = 4;
-}
-struct E3M2S;
-impl Semantics for E3M2S {
-    const BITS: usize = 6;
-    const EXP_BITS: usize = 3;
-}
-struct E2M1S;
-impl Semantics for E2M1S {
-    const BITS: usize = 4;
-    const EXP_BITS: usize = 2;
-}
-struct E2M3S;
-impl Semantics for E2M3S {
-    const BITS: usize = 6;
-    const EXP_BITS: usize = 2;
+
+semantics! {
+    /// e8m15 (the chip's reduced format).
+    E8M15S = (24, 8);
+    /// e9m24, the largest allowed format.
+    E9M24S = (34, 9);
+    /// e4m3 with IEEE inf/NaN (unlike apfloat's Float8E4M3FN).
+    E4M3S = (8, 4);
+    E3M2S = (6, 3);
+    E2M1S = (4, 2);
+    E2M3S = (6, 2);
 }
 
 const MODES: [Rounding; 3] = [Rounding::NearestEven, Rounding::TowardPositive, Rounding::TowardNegative];
