@@ -1,0 +1,51 @@
+#!/usr/bin/env bash
+# Synthesize exported units with Yosys and report the cells per unit.
+#
+# Usage: scripts/synth.sh [--target generic|ice40|ecp5|xilinx] [--top MODULE] <unit_file.v>...
+#   --target T   generic (default): `synth -flatten` to Yosys' internal gate library;
+#                ice40/ecp5/xilinx: the FPGA flow synth_<T> -flatten
+#   --top MODULE top module in each file (default: `top` if present, else the file's basename)
+# For each unit (module `top` renamed to the file's basename, like the simulation flows):
+# prints the `stat` table and then one summary line `<unit> cells: N`.
+# Logs in target/synth/<unit>.log. Exits non-zero if Yosys fails on any unit.
+
+set -euo pipefail
+SCRIPTS=$(cd "$(dirname "$0")" && pwd)
+ROOT=$(cd "$SCRIPTS/.." && pwd)
+PY=${PYTHON:-python3}
+command -v yosys >/dev/null || { echo "synth.sh: yosys not found (apt-get install -y yosys)" >&2; exit 127; }
+
+TARGET=generic TOP=() FILES=()
+while [ $# -gt 0 ]; do
+  case $1 in
+    --target) TARGET=$2; shift 2 ;;
+    --top) TOP=(--top "$2"); shift 2 ;;
+    -h|--help) sed -n '2,/^$/p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 2 ;;
+    *) FILES+=("$1"); shift ;;
+  esac
+done
+[ ${#FILES[@]} -gt 0 ] || { sed -n '2,/^$/p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 2; }
+case $TARGET in
+  generic) SYNTH="synth -flatten" ;;
+  ice40|ecp5|xilinx) SYNTH="synth_$TARGET -flatten" ;;
+  *) echo "synth.sh: unknown target $TARGET" >&2; exit 2 ;;
+esac
+
+mkdir -p "$ROOT/target/synth"
+status=0 SUMMARY=()
+for f in "${FILES[@]}"; do
+  unit=$(basename "$f" .v)
+  out="$ROOT/target/synth/$unit"
+  mkdir -p "$out"
+  "$PY" "$SCRIPTS/verilog/prepare.py" --rename-only "$f" --out "$out" --name "$unit" "${TOP[@]}"
+  log="$ROOT/target/synth/$unit.log"
+  if ! yosys -l "$log" -q -p "read_verilog $out/$unit.v; hierarchy -check -top $unit; $SYNTH -top $unit; check -assert; tee -o $out/stat.txt stat" >/dev/null; then
+    echo "synth.sh: $unit: yosys failed (log $log)" >&2; status=1; continue
+  fi
+  cat "$out/stat.txt"
+  cells=$(grep -E '^\s+Number of cells:' "$out/stat.txt" | tail -n 1 | awk '{print $4}')
+  echo "$unit cells: $cells"
+  SUMMARY+=("$unit cells: $cells")
+done
+if [ ${#FILES[@]} -gt 1 ]; then printf '%s\n' "--- summary ($TARGET)" "${SUMMARY[@]}"; fi
+exit $status
