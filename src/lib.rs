@@ -18,5 +18,6 @@ pub mod hard_cases;
 pub mod memory;
 pub mod query;
 pub mod report;
+pub mod rtl;
 pub mod scene;
 pub mod traversal;

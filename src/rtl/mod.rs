@@ -1,0 +1,92 @@
+//! RTL of the chip's datapath in rust-hdl 0.46 (integer logic only; Verilog by
+//! `generate_verilog`).
+//!
+//! Pipelined floating-point units, one concrete set of types per number format (stable Rust
+//! has no const-generic arithmetic, so the blocks are stamped out by macros with literal
+//! widths):
+//!
+//! | module | format | units |
+//! |---|---|---|
+//! | [`b32`] | `binary32` (e8m23, [`Format::BINARY32`](crate::format::Format::BINARY32)) | [`b32::FpMul`] (latency 4), [`b32::FpAdd`] (latency 3) |
+//! | [`e8m15`] | e8m15 ([`Format::REDUCED`](crate::format::Format::REDUCED)) | [`e8m15::FpMul`], [`e8m15::FpAdd`] |
+//!
+//! Each unit takes one operation per clock with a `valid` bit travelling alongside and
+//! is bit-exact with the golden [`Format`](crate::format::Format) operations in the
+//! rounding mode fixed at construction (NearestEven or TowardPositive), including
+//! subnormals, infinities, canonical NaN, IEEE overflow and zero signs.
+//!
+//! Ports (`W` = 32 for `b32`, 24 for `e8m15`):
+//!
+//! * `FpMul`: in `clock`, `a[W]`, `b[W]`, `valid_in`; out `y[W]`, `valid_out`.
+//! * `FpAdd`: in `clock`, `a[W]`, `b[W]`, `sub` (1: `a - b`), `valid_in`;
+//!   out `y[W]`, `valid_out`.
+//!
+//! Signal naming inside a unit: `sK_*` are the registers closing pipeline stage K (as
+//! `DFF`s, `sK_x$q` in Verilog / VCD), `cK_*` the combinational signals of stage K, and
+//! sub-blocks by role (`unpack_a`, `norm_a`, `sig_mul`, `round`).
+
+mod common;
+mod fp_add;
+mod fp_mul;
+
+/// Stamps out one format's units plus constructors and Verilog export.
+macro_rules! fp_format {
+    ($fmt:expr, $W:tt, $WM1:tt, $E:tt, $F:tt, $P:tt, $P2:tt, $P3:tt, $P4:tt, $PP:tt,
+     norm_p($($np:tt),*), norm_p3($($nq:tt),*)) => {
+        use crate::format::{Format, Rounding};
+
+        $crate::rtl::common::fp_common!($W, $WM1, $E, $F, $P, $P2, $P3, $P4, $PP, norm_p($($np),*), norm_p3($($nq),*));
+        $crate::rtl::fp_mul::fp_mul!($W, $E, $F, $P, $P2);
+        $crate::rtl::fp_add::fp_add!($W, $WM1, $E, $F, $P, $P2, $P3, $P4);
+
+        /// The golden format these units implement.
+        pub const FORMAT: Format = $fmt;
+        /// Word width in bits.
+        pub const WIDTH: usize = $W;
+
+        /// A multiplier ready to simulate as a top-level block (inputs claimed, connected).
+        pub fn fp_mul_top(rounding: Rounding) -> FpMul {
+            let mut uut = FpMul::new(rounding);
+            uut.clock.connect();
+            uut.a.connect();
+            uut.b.connect();
+            uut.valid_in.connect();
+            uut.connect_all();
+            uut
+        }
+
+        /// An adder ready to simulate as a top-level block (inputs claimed, connected).
+        pub fn fp_add_top(rounding: Rounding) -> FpAdd {
+            let mut uut = FpAdd::new(rounding);
+            uut.clock.connect();
+            uut.a.connect();
+            uut.b.connect();
+            uut.sub.connect();
+            uut.valid_in.connect();
+            uut.connect_all();
+            uut
+        }
+
+        /// Verilog of the multiplier (top module `top`).
+        pub fn verilog_fp_mul(rounding: Rounding) -> String {
+            generate_verilog(&fp_mul_top(rounding))
+        }
+
+        /// Verilog of the adder (top module `top`).
+        pub fn verilog_fp_add(rounding: Rounding) -> String {
+            generate_verilog(&fp_add_top(rounding))
+        }
+    };
+}
+
+/// Units for `binary32` (e8m23).
+pub mod b32 {
+    fp_format!(Format::BINARY32, 32, 31, 8, 23, 24, 26, 27, 28, 48,
+        norm_p(8, 16, 20, 22, 23), norm_p3(11, 19, 23, 25, 26));
+}
+
+/// Units for e8m15 (`Format::REDUCED`).
+pub mod e8m15 {
+    fp_format!(Format::REDUCED, 24, 23, 8, 15, 16, 18, 19, 20, 32,
+        norm_p(0, 8, 12, 14, 15), norm_p3(3, 11, 15, 17, 18));
+}
