@@ -412,6 +412,9 @@ fn verilog_export() {
             (format!("fp_add_e8m15_{tag}"), e8m15::verilog_fp_add(r)),
         ] {
             assert!(v.contains("module top("), "{name}: no top module");
+            let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("target").join("rtl-verilog");
+            std::fs::create_dir_all(&dir).unwrap();
+            std::fs::write(dir.join(format!("{name}.v")), &v).unwrap();
             assert!(v.contains("assign prod = a * b;") || name.contains("add"), "{name}: multiplier missing");
             assert!(!v.contains("real") && !v.contains("$bitstoreal"), "{name}: float construct");
             if yosys {
