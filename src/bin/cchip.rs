@@ -8,6 +8,7 @@ use collision_chip::oracle;
 use collision_chip::pose::Pose;
 use collision_chip::query::{place, Accuracy, Chip};
 use collision_chip::report::{accuracy, summary_table, PoseRecord};
+use collision_chip::rtl::units;
 use collision_chip::scene::{Scene, Sweep, DEFAULT_SCENE};
 use collision_chip::traversal::{Mode, Traversal};
 use indicatif::{ProgressBar, ProgressStyle};
@@ -47,6 +48,18 @@ enum Cmd {
         /// Print one JSON record per pose instead of the table.
         #[arg(long)]
         json: bool,
+    },
+    /// Write the Verilog of every exported RTL unit (rust-hdl's generate_verilog), one file
+    /// per unit, format and rounding: rtl/<unit>.v. Run the files with scripts/check-rtl.sh.
+    ExportVerilog {
+        #[arg(long, default_value = "rtl")]
+        out: PathBuf,
+    },
+    /// Write the golden test vectors of every exported RTL unit: vectors/<unit>.hex
+    /// (TestFloat style: inputs, then expected outputs, in hex; see scripts/README.md).
+    Vectors {
+        #[arg(long, default_value = "vectors")]
+        out: PathBuf,
     },
     /// What accuracy costs: each mesh tumbling against a copy of itself (both scaled into
     /// [-1,1]^3) at several distances, with each number format and DOP rounding, compared
@@ -123,6 +136,8 @@ fn main() -> ExitCode {
         Some(Cmd::Query(q)) => query(q),
         Some(Cmd::Run { scene, json }) => run(scene, json),
         Some(Cmd::Accuracy(a)) => accuracy(a),
+        Some(Cmd::ExportVerilog { out }) => report_written(units::write_verilog(&out)),
+        Some(Cmd::Vectors { out }) => report_written(units::write_vectors(&out)),
         None => run(None, false),
     };
     match res {
@@ -192,6 +207,14 @@ fn query(q: QueryArgs) -> Result<(), String> {
 
 fn exact_pairs(ta: &[oracle::Tri], tb: &[oracle::Tri], pose: &Pose) -> Vec<(u32, u32)> {
     oracle::intersecting_pairs(ta, &place(tb, pose))
+}
+
+fn report_written(r: std::io::Result<Vec<String>>) -> Result<(), String> {
+    let paths = r.map_err(|e| format!("cannot write: {e}"))?;
+    for p in &paths {
+        println!("wrote {p}");
+    }
+    Ok(())
 }
 
 fn progress_bar(len: u64, hidden: bool) -> ProgressBar {

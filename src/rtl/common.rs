@@ -115,7 +115,7 @@ macro_rules! fp_common {
             guard: Signal<Local, Bit>,
             sticky: Signal<Local, Bit>,
             inc: Signal<Local, Bit>,
-            packed: Signal<Local, Bits<$WM1>>,
+            pack_word: Signal<Local, Bits<$WM1>>,
             rounded: Signal<Local, Bits<$WM1>>,
             rexp_ones: Signal<Local, Bit>,
             mag: Signal<Local, Bits<$WM1>>,
@@ -142,7 +142,7 @@ macro_rules! fp_common {
                     guard: Default::default(),
                     sticky: Default::default(),
                     inc: Default::default(),
-                    packed: Default::default(),
+                    pack_word: Default::default(),
                     rounded: Default::default(),
                     rexp_ones: Default::default(),
                     mag: Default::default(),
@@ -160,9 +160,9 @@ macro_rules! fp_common {
                 if self.round_up.val() {
                     self.inc.next = !self.sign.val() & (self.guard.val() | self.sticky.val());
                 }
-                self.packed.next = (bit_cast::<$WM1, $E>(self.efield.val()) << $F)
+                self.pack_word.next = (bit_cast::<$WM1, $E>(self.efield.val()) << $F)
                     | bit_cast::<$WM1, $F>(self.nm.val().get_bits::<$F>(2));
-                self.rounded.next = self.packed.val() + self.inc.val();
+                self.rounded.next = self.pack_word.val() + self.inc.val();
                 self.rexp_ones.next = self.rounded.val().get_bits::<$E>($F).all();
                 self.mag.next = self.rounded.val();
                 if self.ovf.val() | self.rexp_ones.val() {
