@@ -1,14 +1,14 @@
 //! RTL of the chip's datapath in rust-hdl 0.46 (integer logic only; Verilog by
 //! `generate_verilog`).
 //!
-//! Pipelined floating-point units, one concrete set of types per number format (stable Rust
-//! has no const-generic arithmetic, so the blocks are stamped out by macros with literal
-//! widths):
+//! Pipelined floating-point units and the DOP datapath built from them, one concrete set of
+//! types per number format (stable Rust has no const-generic arithmetic, so the blocks are
+//! stamped out by macros with literal widths):
 //!
 //! | module | format | units |
 //! |---|---|---|
-//! | [`b32`] | `binary32` (e8m23, [`Format::BINARY32`](crate::format::Format::BINARY32)) | [`b32::FpMul`] (latency 4), [`b32::FpAdd`] (latency 3) |
-//! | [`e8m15`] | e8m15 ([`Format::REDUCED`](crate::format::Format::REDUCED)) | [`e8m15::FpMul`], [`e8m15::FpAdd`] |
+//! | [`b32`] | `binary32` (e8m23, [`Format::BINARY32`](crate::format::Format::BINARY32)) | [`b32::FpMul`] (latency 4), [`b32::FpAdd`] (latency 3), [`b32::Doptrf`] (latency 15), [`b32::KlmSel`], [`b32::DopUnit6`], [`b32::DopUnit24`] (k = 6, 24; latency 15) |
+//! | [`e8m15`] | e8m15 ([`Format::REDUCED`](crate::format::Format::REDUCED)) | the same |
 //!
 //! Each unit takes one operation per clock with a `valid` bit travelling alongside and
 //! is bit-exact with the golden [`Format`](crate::format::Format) operations in the
@@ -26,8 +26,11 @@
 //! sub-blocks by role (`unpack_a`, `norm_a`, `sig_mul`, `round`).
 
 mod common;
+mod dop_unit;
+mod doptrf;
 mod fp_add;
 mod fp_mul;
+mod klmsel;
 pub mod units;
 
 /// Stamps out one format's units plus constructors and Verilog export.
@@ -39,6 +42,9 @@ macro_rules! fp_format {
         $crate::rtl::common::fp_common!($W, $WM1, $E, $F, $P, $P2, $P3, $P4, $PP, norm_p($($np),*), norm_p3($($nq),*));
         $crate::rtl::fp_mul::fp_mul!($W, $E, $F, $P, $P2);
         $crate::rtl::fp_add::fp_add!($W, $WM1, $E, $F, $P, $P2, $P3, $P4);
+        $crate::rtl::doptrf::doptrf!($W, $WM1, $E, $F);
+        $crate::rtl::klmsel::klmsel!($W);
+        $crate::rtl::dop_unit::dop_unit!($W);
 
         /// The golden format these units implement.
         pub const FORMAT: Format = $fmt;

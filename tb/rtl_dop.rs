@@ -1,0 +1,670 @@
+//! RTL DOP datapath (`collision_chip::rtl::{b32, e8m15}::{Doptrf, DopUnit6, DopUnit24}`)
+//! against the golden model, bit for bit:
+//!
+//! * the DOPTRF lane against `golden::doptrf::lane` (s and flag) on proptest operands
+//!   (zeros, infinities, NaN, subnormals, ties, near-cancellation of u + e), both formats,
+//!   both roundings, one lane evaluation per clock, latency 15 checked on `valid_out`;
+//! * the DOP unit against `golden::doptrf::dop_overlap` on all node pairs of two real DOP
+//!   trees (host setup loaded through the write port), and on random format values and
+//!   random MUX controls; overlap and tag, one pair per clock.
+//!
+//! Also: a short VCD per block under `target/rtl-vcd/`, Verilog export with
+//! `yosys_validate` when yosys is installed.
+
+use collision_chip::config::{ChipConfig, DopRounding};
+use collision_chip::dop::{DopTree, HostSetup};
+use collision_chip::format::{Format, Rounding};
+use collision_chip::golden::doptrf;
+use collision_chip::mesh::soup;
+use collision_chip::pose::Pose;
+use collision_chip::rtl::{b32, e8m15};
+use proptest::prelude::*;
+use proptest::test_runner::{Config, TestRunner};
+use rust_hdl::prelude::*;
+use std::time::Instant;
+
+const MODES: [Rounding; 2] = [Rounding::NearestEven, Rounding::TowardPositive];
+const LATENCY: usize = 15;
+
+/// The DOP units are large values (k = 24: about 2 MB, built on the stack): run their
+/// tests in a thread with a big stack.
+fn big_stack(f: impl FnOnce() + Send + 'static) {
+    std::thread::Builder::new().stack_size(512 << 20).spawn(f).unwrap().join().unwrap_or_else(|e| std::panic::resume_unwind(e));
+}
+
+fn settle<B: Block>(uut: &mut B) {
+    assert!(simulate(uut, 1000), "logic did not settle");
+}
+
+// ---------------------------------------------------------------------------------------
+// The lane.
+
+/// One lane evaluation: d0 d1 d2, c0 c1 c2, c, e as bit patterns.
+type LaneIn = [u64; 8];
+
+trait Lane: Block {
+    fn set(&mut self, x: &LaneIn, valid: bool);
+    fn out(&self) -> (bool, u64, bool);
+    fn clock(&mut self, high: bool);
+}
+
+macro_rules! impl_lane {
+    ($t:ty) => {
+        impl Lane for $t {
+            fn set(&mut self, x: &LaneIn, valid: bool) {
+                self.d0.next = x[0].into();
+                self.d1.next = x[1].into();
+                self.d2.next = x[2].into();
+                self.c0.next = x[3].into();
+                self.c1.next = x[4].into();
+                self.c2.next = x[5].into();
+                self.c.next = x[6].into();
+                self.e.next = x[7].into();
+                self.valid_in.next = valid;
+            }
+            fn out(&self) -> (bool, u64, bool) {
+                (self.valid_out.val(), self.s.val().to_u64(), self.flag.val())
+            }
+            fn clock(&mut self, high: bool) {
+                self.clock.next = Clock { clk: high };
+            }
+        }
+    };
+}
+impl_lane!(b32::Doptrf);
+impl_lane!(e8m15::Doptrf);
+
+/// Drives `cases` one per cycle, then flushes; returns (s, flag) in order, each checked to
+/// appear exactly `LATENCY` rising edges after its inputs.
+fn run_lane<L: Lane>(uut: &mut L, cases: &[LaneIn]) -> Vec<(u64, bool)> {
+    let n = cases.len();
+    let mut outs = Vec::with_capacity(n);
+    for cyc in 0..n + LATENCY + 1 {
+        let (valid, x) = if cyc < n { (true, cases[cyc]) } else { (false, [0; 8]) };
+        uut.set(&x, valid);
+        uut.clock(false);
+        settle(uut);
+        uut.clock(true);
+        settle(uut);
+        let (v, s, flag) = uut.out();
+        if v {
+            assert_eq!(cyc + 1, outs.len() + LATENCY, "lane output {} at the wrong edge", outs.len());
+            outs.push((s, flag));
+        }
+    }
+    assert_eq!(outs.len(), n, "valid outputs lost");
+    outs
+}
+
+fn golden_lane(fmt: Format, r: Rounding, x: &LaneIn) -> (u64, bool) {
+    let v: Vec<f64> = x.iter().map(|&b| fmt.from_bits(b)).collect();
+    let s = doptrf::lane(fmt, r, [v[0], v[1], v[2]], [v[3], v[4], v[5]], v[6], v[7]);
+    (fmt.to_bits(s), s < 0.0)
+}
+
+fn check_lane<L: Lane>(uut: &mut L, fmt: Format, r: Rounding, cases: &[LaneIn]) -> Result<(), TestCaseError> {
+    let outs = run_lane(uut, cases);
+    let w = fmt.width() as usize / 4;
+    for (x, &(s, flag)) in cases.iter().zip(&outs) {
+        let (gs, gf) = golden_lane(fmt, r, x);
+        prop_assert!(
+            s == gs && flag == gf,
+            "{} {:?}: in {:0w$x?}: rtl s={:0w$x} flag={}, golden s={:0w$x} flag={}",
+            fmt,
+            r,
+            x,
+            s,
+            flag,
+            gs,
+            gf,
+            w = w
+        );
+    }
+    Ok(())
+}
+
+// ---------------------------------------------------------------------------------------
+// Operand generators (bit patterns of a format with `e` exponent and `f` fraction bits).
+
+#[derive(Clone, Copy, Debug)]
+struct Fmt {
+    e: u32,
+    f: u32,
+}
+
+impl Fmt {
+    fn of(fmt: Format) -> Fmt {
+        Fmt { e: fmt.exp_bits(), f: fmt.frac_bits() }
+    }
+    fn ones(self) -> u64 {
+        (1 << self.e) - 1
+    }
+    fn bias(self) -> u64 {
+        (1 << (self.e - 1)) - 1
+    }
+    fn pack(self, s: bool, exp: u64, frac: u64) -> u64 {
+        ((s as u64) << (self.e + self.f)) | ((exp & self.ones()) << self.f) | (frac & ((1 << self.f) - 1))
+    }
+    fn specials(self) -> Vec<u64> {
+        let fm = (1u64 << self.f) - 1;
+        let mut v = vec![];
+        for s in [false, true] {
+            for (e, fr) in [
+                (0, 0),
+                (0, 1),
+                (0, fm),
+                (0, 1 << (self.f - 1)),
+                (1, 0),
+                (1, fm),
+                (self.bias(), 0),
+                (self.bias(), 1),
+                (self.bias() - 1, fm),
+                (self.ones() - 1, fm),
+                (self.ones(), 0),
+                (self.ones(), 1 << (self.f - 1)),
+                (self.ones(), 1),
+            ] {
+                v.push(self.pack(s, e, fr));
+            }
+        }
+        v
+    }
+}
+
+/// One operand: random bits, specials, subnormals, extreme exponents, sparse fractions,
+/// and moderate values (where the lane's sums actually cancel and round).
+fn operand(t: Fmt) -> BoxedStrategy<u64> {
+    let width = t.e + t.f + 1;
+    let mask = (1u64 << width) - 1;
+    let specials = t.specials();
+    let frac = move || {
+        prop_oneof![
+            0u64..(1 << t.f),
+            prop::collection::vec(0..t.f, 1..4).prop_map(|v| v.iter().fold(0u64, |a, &i| a | (1 << i))),
+            (0..t.f).prop_map(move |i| ((1u64 << t.f) - 1) ^ (1 << i)),
+        ]
+    };
+    prop_oneof![
+        2 => any::<u64>().prop_map(move |x| x & mask),
+        1 => prop::sample::select(specials),
+        1 => (any::<bool>(), frac()).prop_map(move |(s, f)| t.pack(s, 0, f)),
+        1 => (any::<bool>(), prop_oneof![0..4u64, (t.ones() - 4)..=t.ones()], frac())
+            .prop_map(move |(s, e, f)| t.pack(s, e, f)),
+        5 => (any::<bool>(), (t.bias() - 6)..(t.bias() + 6), frac()).prop_map(move |(s, e, f)| t.pack(s, e, f)),
+    ]
+    .boxed()
+}
+
+/// A lane case: independent operands, or C >= 0 (as the host sets it) with e chosen near
+/// -u (the flag's boundary: s is zero, a few ulps either side, or a tie).
+fn lane_case(fmt: Format, r: Rounding) -> BoxedStrategy<LaneIn> {
+    let t = Fmt::of(fmt);
+    let pos = move |x: u64| x & ((1u64 << (t.e + t.f)) - 1);
+    prop_oneof![
+        1 => prop::array::uniform8(operand(t)),
+        2 => (prop::array::uniform8(operand(t)), any::<bool>(), -3i64..4)
+            .prop_map(move |(mut x, cpos, delta)| {
+                if cpos {
+                    x[3] = pos(x[3]);
+                    x[4] = pos(x[4]);
+                    x[5] = pos(x[5]);
+                }
+                let v: Vec<f64> = x.iter().map(|&b| fmt.from_bits(b)).collect();
+                let u = doptrf::transformed(fmt, r, [v[0], v[1], v[2]], [v[3], v[4], v[5]], v[6]);
+                if u.is_finite() {
+                    // e = -u, moved by delta ulps (sign-magnitude bit patterns)
+                    let nb = fmt.to_bits(-u) as i64;
+                    let mag = (nb & ((1i64 << (t.e + t.f)) - 1)) + delta;
+                    if mag >= 0 && mag < ((t.ones() as i64) << t.f) {
+                        x[7] = (nb as u64 & (1u64 << (t.e + t.f))) | mag as u64;
+                    }
+                }
+                x
+            }),
+    ]
+    .boxed()
+}
+
+const LANE_CASES: u32 = 4;
+const LANE_BATCH: usize = 500;
+
+fn prop_lane<L: Lane>(make: impl Fn(Rounding) -> L, fmt: Format, name: &str) {
+    for r in MODES {
+        let strat = prop::collection::vec(lane_case(fmt, r), LANE_BATCH);
+        let mut runner = TestRunner::new(Config { cases: LANE_CASES, failure_persistence: None, ..Config::default() });
+        let n = std::cell::Cell::new(0usize);
+        let start = Instant::now();
+        let res = runner.run(&strat, |cases| {
+            let mut uut = make(r);
+            check_lane(&mut uut, fmt, r, &cases)?;
+            n.set(n.get() + cases.len());
+            Ok(())
+        });
+        if let Err(e) = res {
+            panic!("{}", e);
+        }
+        let dt = start.elapsed().as_secs_f64();
+        println!("{name} {fmt} {r:?}: {} lane evaluations ok, {:.0} cycles/s", n.get(), n.get() as f64 / dt);
+    }
+}
+
+/// Every special operand in every position, the other operands moderate.
+fn specials_lane<L: Lane>(make: impl Fn(Rounding) -> L, fmt: Format) {
+    let t = Fmt::of(fmt);
+    let one = t.pack(false, t.bias(), 0);
+    let base: LaneIn = [one, t.pack(false, t.bias() + 1, 1), t.pack(true, t.bias(), 3), one, one, one, t.pack(true, t.bias() + 2, 0), one];
+    let mut cases = vec![];
+    for pos in 0..8 {
+        for &s in &t.specials() {
+            let mut x = base;
+            x[pos] = s;
+            cases.push(x);
+        }
+    }
+    for r in MODES {
+        let mut uut = make(r);
+        check_lane(&mut uut, fmt, r, &cases).unwrap_or_else(|e| panic!("{}", e));
+        println!("Doptrf {fmt} {r:?}: {} special cases ok", cases.len());
+    }
+}
+
+#[test]
+fn lane_b32_random() {
+    prop_lane(b32::doptrf_top, Format::BINARY32, "Doptrf");
+}
+
+#[test]
+fn lane_e8m15_random() {
+    prop_lane(e8m15::doptrf_top, Format::REDUCED, "Doptrf");
+}
+
+#[test]
+fn lane_specials() {
+    specials_lane(b32::doptrf_top, Format::BINARY32);
+    specials_lane(e8m15::doptrf_top, Format::REDUCED);
+}
+
+/// The testbench sees a wrong lane: NearestEven checked against TowardPositive fails.
+#[test]
+fn lane_testbench_detects_mismatch() {
+    use proptest::strategy::ValueTree;
+    let mut runner = TestRunner::deterministic();
+    let r = Rounding::TowardPositive;
+    let cases = prop::collection::vec(lane_case(Format::BINARY32, r), 200).new_tree(&mut runner).unwrap().current();
+    let mut uut = b32::doptrf_top(Rounding::NearestEven);
+    assert!(check_lane(&mut uut, Format::BINARY32, r, &cases).is_err());
+}
+
+// ---------------------------------------------------------------------------------------
+// The DOP unit.
+
+/// One node pair: B's DOP d, A's DOP e (bit patterns), a tag.
+struct Pair {
+    d: Vec<u64>,
+    e: Vec<u64>,
+    tag: u16,
+}
+
+trait Unit: Block {
+    const K: usize;
+    fn set_load(&mut self, en: bool, addr: u64, data: u64);
+    fn set_pair(&mut self, d: &[u64], e: &[u64], tag: u16, valid: bool);
+    fn out(&self) -> (bool, bool, u16);
+    fn clock(&mut self, high: bool);
+}
+
+macro_rules! impl_unit {
+    ($t:ty, $k:expr) => {
+        impl Unit for $t {
+            const K: usize = $k;
+            fn set_load(&mut self, en: bool, addr: u64, data: u64) {
+                self.load_en.next = en;
+                self.load_addr.next = addr.into();
+                self.load_data.next = data.into();
+            }
+            fn set_pair(&mut self, d: &[u64], e: &[u64], tag: u16, valid: bool) {
+                for i in 0..$k {
+                    self.d[i].next = d[i].into();
+                    self.e[i].next = e[i].into();
+                }
+                self.tag.next = (tag as u64).into();
+                self.valid_in.next = valid;
+            }
+            fn out(&self) -> (bool, bool, u16) {
+                (self.valid_out.val(), self.overlap.val(), self.tag_out.val().to_u64() as u16)
+            }
+            fn clock(&mut self, high: bool) {
+                self.clock.next = Clock { clk: high };
+            }
+        }
+    };
+}
+impl_unit!(b32::DopUnit6, 6);
+impl_unit!(b32::DopUnit24, 24);
+impl_unit!(e8m15::DopUnit6, 6);
+impl_unit!(e8m15::DopUnit24, 24);
+
+/// A probe called after every half cycle (for VCD dumps).
+type Probe<'a, U> = &'a mut dyn FnMut(&U);
+
+fn cycle<U: Unit>(uut: &mut U, probe: &mut Option<Probe<U>>) {
+    for high in [false, true] {
+        uut.clock(high);
+        settle(uut);
+        if let Some(p) = probe {
+            p(uut);
+        }
+    }
+}
+
+/// The host setup's words for the write port: (address, data) per lane and field.
+fn setup_words(fmt: Format, j: &[[u8; 3]], cmat: &[[f64; 3]], cvec: &[f64]) -> Vec<(u64, u64)> {
+    let mut w = vec![];
+    for i in 0..j.len() {
+        let a = 8 * i as u64;
+        for l in 0..3 {
+            w.push((a + l as u64, fmt.to_bits(cmat[i][l])));
+        }
+        w.push((a + 3, fmt.to_bits(cvec[i])));
+        w.push((a + 4, j[i][0] as u64 | (j[i][1] as u64) << 5 | (j[i][2] as u64) << 10));
+    }
+    w
+}
+
+/// Loads the setup, streams `pairs` one per cycle, flushes; returns (overlap, tag) in order
+/// (latency checked) and the number of cycles of the pair stream.
+fn run_unit<U: Unit>(uut: &mut U, words: &[(u64, u64)], pairs: &[Pair], mut probe: Option<Probe<U>>) -> (Vec<(bool, u16)>, usize) {
+    let k = U::K;
+    let zero = vec![0u64; k];
+    for &(a, d) in words {
+        uut.set_load(true, a, d);
+        uut.set_pair(&zero, &zero, 0, false);
+        cycle(uut, &mut probe);
+    }
+    uut.set_load(false, 0, 0);
+    let n = pairs.len();
+    let mut outs = Vec::with_capacity(n);
+    for cyc in 0..n + LATENCY + 1 {
+        match pairs.get(cyc) {
+            Some(p) => uut.set_pair(&p.d, &p.e, p.tag, true),
+            None => uut.set_pair(&zero, &zero, 0, false),
+        }
+        cycle(uut, &mut probe);
+        let (v, ov, tag) = uut.out();
+        if v {
+            assert_eq!(cyc + 1, outs.len() + LATENCY, "unit output {} at the wrong edge", outs.len());
+            outs.push((ov, tag));
+        }
+    }
+    assert_eq!(outs.len(), n, "valid outputs lost");
+    (outs, n + LATENCY + 1)
+}
+
+/// All node pairs of two soup trees under a pose, against `dop_overlap`. Returns
+/// (pairs, overlaps, cycles/s).
+fn unit_trees<U: Unit>(make: impl Fn(Rounding) -> U, fmt: Format, r: Rounding, n_tris: usize, pose: Pose) -> (usize, usize, f64) {
+    let k = U::K;
+    let cfg = ChipConfig {
+        k,
+        format: fmt,
+        dop_rounding: if r == Rounding::TowardPositive { DopRounding::Outward } else { DopRounding::NearestEven },
+        ..ChipConfig::default()
+    };
+    let ta = DopTree::build(&soup(n_tris, 1).triangles_f64(), &cfg);
+    let tb = DopTree::build(&soup(n_tris, 2).triangles_f64(), &cfg);
+    let setup = HostSetup::new(&cfg, &pose, tb.coord_bound());
+    let words = setup_words(fmt, &setup.j, &setup.cmat, &setup.cvec);
+    let mut pairs = vec![];
+    let mut want = vec![];
+    for na in 0..ta.len() as u32 {
+        for nb in 0..tb.len() as u32 {
+            let (d, e) = (tb.dop(nb), ta.dop(na));
+            pairs.push(Pair {
+                d: d.iter().map(|&x| fmt.to_bits(x)).collect(),
+                e: e.iter().map(|&x| fmt.to_bits(x)).collect(),
+                tag: (pairs.len() as u16).wrapping_mul(40503) ^ 0x5a5a,
+            });
+            want.push(doptrf::dop_overlap(fmt, r, &setup, d, e));
+        }
+    }
+    let mut uut = make(r);
+    let start = Instant::now();
+    let (outs, cycles) = run_unit(&mut uut, &words, &pairs, None);
+    let rate = (cycles + words.len()) as f64 / start.elapsed().as_secs_f64();
+    for (i, ((ov, tag), p)) in outs.iter().zip(&pairs).enumerate() {
+        assert_eq!(*tag, p.tag, "k={k} {fmt} {r:?}: pair {i}: tag");
+        assert_eq!(*ov, want[i], "k={k} {fmt} {r:?}: pair {i}: overlap (rtl {ov}, golden {})", want[i]);
+    }
+    let overlaps = want.iter().filter(|&&o| o).count();
+    (pairs.len(), overlaps, rate)
+}
+
+fn unit_trees_all<U: Unit>(make: impl Fn(Rounding) -> U + Copy, fmt: Format, n_tris: usize) {
+    for r in MODES {
+        for pose in [Pose::new(10.0, 20.0, 30.0, 0.3, 0.1, 0.0), Pose::new(-35.0, 80.0, 5.0, 1.2, -0.4, 0.2)] {
+            let (n, ov, rate) = unit_trees(make, fmt, r, n_tris, pose);
+            println!("DopUnit k={} {fmt} {r:?} pose {pose:?}: {n} node pairs ok ({ov} overlap), {rate:.0} cycles/s", U::K);
+            assert!(ov > 0 && ov < n, "the pose should give both verdicts");
+        }
+    }
+}
+
+#[test]
+fn unit_k24_b32_trees() {
+    big_stack(|| {
+        unit_trees_all(b32::dop_unit24_top, Format::BINARY32, 8);
+    });
+}
+
+#[test]
+fn unit_k24_e8m15_trees() {
+    big_stack(|| {
+        unit_trees_all(e8m15::dop_unit24_top, Format::REDUCED, 8);
+    });
+}
+
+#[test]
+fn unit_k6_trees() {
+    big_stack(|| {
+        unit_trees_all(b32::dop_unit6_top, Format::BINARY32, 16);
+        unit_trees_all(e8m15::dop_unit6_top, Format::REDUCED, 16);
+    });
+}
+
+/// Random format values everywhere (C of either sign, specials) and random MUX controls.
+fn unit_random<U: Unit>(make: impl Fn(Rounding) -> U, fmt: Format, n_pairs: usize, seed: u64) {
+    use proptest::strategy::ValueTree;
+    let k = U::K;
+    let t = Fmt::of(fmt);
+    let mut runner = TestRunner::new_with_rng(Config::default(), proptest::test_runner::TestRng::from_seed(proptest::test_runner::RngAlgorithm::ChaCha, &[seed as u8; 32]));
+    let mut draw = |n: usize| prop::collection::vec(operand(t), n).new_tree(&mut runner).unwrap().current();
+    let sign = 1u64 << (t.e + t.f);
+    for (r, nonneg) in [(MODES[0], false), (MODES[0], true), (MODES[1], false), (MODES[1], true)] {
+        // C and c of random sign, or non-negative (as the host sets C)
+        let clear = |v: Vec<u64>| if nonneg { v.into_iter().map(|x| x & !sign).collect() } else { v };
+        let cm: Vec<u64> = clear(draw(3 * k));
+        let cv: Vec<u64> = clear(draw(k));
+        let cmat: Vec<[f64; 3]> = (0..k).map(|i| [0, 1, 2].map(|l| fmt.from_bits(cm[3 * i + l]))).collect();
+        let cvec: Vec<f64> = cv.iter().map(|&b| fmt.from_bits(b)).collect();
+        let j: Vec<[u8; 3]> = (0..k).map(|i| [0, 1, 2].map(|l| ((cm[3 * i + l] ^ cv[i] >> l) % k as u64) as u8)).collect();
+        let setup = HostSetup { j: j.clone(), cmat: cmat.clone(), cvec: cvec.clone(), ..HostSetup::new(&ChipConfig { k, format: fmt, ..ChipConfig::default() }, &Pose::default(), 1.0) };
+        let words = setup_words(fmt, &j, &cmat, &cvec);
+        let mut pairs = vec![];
+        let mut want = vec![];
+        for p in 0..n_pairs {
+            let mut d = draw(k);
+            let e = draw(k);
+            let mut e = e;
+            // non-negative d (and e): pairs that overlap
+            if p % 3 != 2 {
+                d.iter_mut().for_each(|x| *x &= !sign);
+            }
+            if p % 3 == 0 {
+                e.iter_mut().for_each(|x| *x &= !sign);
+            }
+            let df: Vec<f64> = d.iter().map(|&b| fmt.from_bits(b)).collect();
+            let ef: Vec<f64> = e.iter().map(|&b| fmt.from_bits(b)).collect();
+            want.push(doptrf::dop_overlap(fmt, r, &setup, &df, &ef));
+            pairs.push(Pair { d, e, tag: p as u16 });
+        }
+        let mut uut = make(r);
+        let (outs, _) = run_unit(&mut uut, &words, &pairs, None);
+        for (i, (ov, tag)) in outs.iter().enumerate() {
+            assert_eq!(*tag, i as u16);
+            assert_eq!(*ov, want[i], "k={k} {fmt} {r:?} random pair {i}: overlap");
+        }
+        let ov = want.iter().filter(|&&o| o).count();
+        println!("DopUnit k={k} {fmt} {r:?} C, c {}: {n_pairs} random pairs ok ({ov} overlap)", if nonneg { ">= 0" } else { "any sign" });
+    }
+}
+
+#[test]
+fn unit_random_values() {
+    big_stack(|| {
+        unit_random(b32::dop_unit6_top, Format::BINARY32, 300, 1);
+        unit_random(e8m15::dop_unit6_top, Format::REDUCED, 300, 2);
+        unit_random(b32::dop_unit24_top, Format::BINARY32, 100, 3);
+        unit_random(e8m15::dop_unit24_top, Format::REDUCED, 100, 4);
+    });
+}
+
+// ---------------------------------------------------------------------------------------
+// VCD and Verilog.
+
+fn vcd_dir() -> std::path::PathBuf {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("target").join("rtl-vcd");
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+/// rust-hdl names the VCD root `uut`; name it after the block.
+fn write_vcd(name: &str, root: &str, buf: Vec<u8>) {
+    let text = String::from_utf8(buf).unwrap().replacen("$scope module uut $end", &format!("$scope module {root} $end"), 1);
+    let path = vcd_dir().join(format!("{name}.vcd"));
+    std::fs::write(&path, text).unwrap();
+    println!("wrote {}", path.display());
+}
+
+#[test]
+fn vcd_traces() {
+    big_stack(|| {
+        // the lane: a few binary32 cases, outward rounding
+        let f = Format::BINARY32;
+        let b = |x: f64| f.to_bits(x);
+        let cases: Vec<LaneIn> = vec![
+            [b(1.0), b(2.0), b(3.0), b(0.5), b(0.25), b(0.125), b(-1.0), b(-0.5)],
+            [b(1.5), b(-2.0), b(0.1), b(0.7), b(0.2), b(0.1), b(0.3), b(-3.0)],
+            [b(f64::INFINITY), b(1.0), b(1.0), b(0.0), b(1.0), b(1.0), b(0.0), b(0.0)],
+            [b(1e-40), b(1e-40), b(1.0), b(1.0), b(1.0), b(0.0), b(0.0), b(-2e-40)],
+        ];
+        let mut uut = b32::doptrf_top(Rounding::TowardPositive);
+        let mut buf = vec![];
+        {
+            let mut vcd = write_vcd_header(&mut buf, &uut);
+            vcd = write_vcd_dump(vcd, &uut);
+            let mut time = 0u64;
+            for cyc in 0..cases.len() + LATENCY + 1 {
+                let (valid, x) = if cyc < cases.len() { (true, cases[cyc]) } else { (false, [0; 8]) };
+                uut.set(&x, valid);
+                for high in [false, true] {
+                    uut.clock(high);
+                    settle(&mut uut);
+                    vcd.timestamp(time).unwrap();
+                    vcd = write_vcd_change(vcd, &uut);
+                    time += 5;
+                }
+            }
+        }
+        write_vcd("doptrf_b32", "doptrf", buf);
+
+        // the DOP unit (k = 24): a pose, a few node pairs of two small trees
+        let cfg = ChipConfig::default();
+        let ta = DopTree::build(&soup(4, 1).triangles_f64(), &cfg);
+        let tb = DopTree::build(&soup(4, 2).triangles_f64(), &cfg);
+        let setup = HostSetup::new(&cfg, &Pose::new(10.0, 20.0, 30.0, 0.3, 0.1, 0.0), tb.coord_bound());
+        let words = setup_words(f, &setup.j, &setup.cmat, &setup.cvec);
+        let pairs: Vec<Pair> = (0..ta.len() as u32)
+            .flat_map(|na| (0..tb.len() as u32).map(move |nb| (na, nb)))
+            .take(12)
+            .enumerate()
+            .map(|(i, (na, nb))| Pair {
+                d: tb.dop(nb).iter().map(|&x| f.to_bits(x)).collect(),
+                e: ta.dop(na).iter().map(|&x| f.to_bits(x)).collect(),
+                tag: i as u16,
+            })
+            .collect();
+        let mut uut = b32::dop_unit24_top(Rounding::TowardPositive);
+        let mut buf = vec![];
+        {
+            let vcd = std::cell::RefCell::new(Some(write_vcd_dump(write_vcd_header(&mut buf, &uut), &uut)));
+            let mut time = 0u64;
+            let mut probe = |u: &b32::DopUnit24| {
+                let mut v = vcd.borrow_mut();
+                let w = v.take().unwrap();
+                let mut w = w;
+                w.timestamp(time).unwrap();
+                *v = Some(write_vcd_change(w, u));
+                time += 5;
+            };
+            run_unit(&mut uut, &words, &pairs, Some(&mut probe));
+        }
+        write_vcd("dop_unit_b32", "dop_unit", buf);
+    });
+}
+
+/// `n` lane cases with the golden s and flag, in the vector format of scripts/README.md.
+fn lane_vectors(fmt: Format, r: Rounding, n: usize) -> String {
+    use proptest::strategy::ValueTree;
+    let mut runner = TestRunner::deterministic();
+    let cases = prop::collection::vec(lane_case(fmt, r), n).new_tree(&mut runner).unwrap().current();
+    let w = fmt.width() as usize / 4;
+    let mut out = format!("// d0 d1 d2 c0 c1 c2 c e s flag\n// latency: {LATENCY}\n// DOPTRF lane, {fmt}, {r:?}: s = ((d0 c0 + d1 c1) + (d2 c2 + c)) + e, flag = s < 0\n");
+    for x in &cases {
+        let (s, flag) = golden_lane(fmt, r, x);
+        for v in x.iter().chain([&s]) {
+            out += &format!("{v:0w$x} ");
+        }
+        out += &format!("{}\n", flag as u8);
+    }
+    out
+}
+
+fn yosys_on_path() -> bool {
+    std::process::Command::new("yosys").arg("-V").output().is_ok()
+}
+
+#[test]
+fn verilog_export() {
+    big_stack(|| {
+        let yosys = yosys_on_path();
+        let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("target").join("rtl-verilog");
+        std::fs::create_dir_all(&dir).unwrap();
+        let r = Rounding::TowardPositive;
+        let mut units = vec![
+            ("doptrf_b32_up".to_string(), b32::verilog_doptrf(r)),
+            ("doptrf_e8m15_up".to_string(), e8m15::verilog_doptrf(r)),
+            ("doptrf_b32_ne".to_string(), b32::verilog_doptrf(Rounding::NearestEven)),
+            ("dop_unit_k6_e8m15_up".to_string(), e8m15::verilog_dop_unit_k6(r)),
+        ];
+        let start = Instant::now();
+        units.push(("dop_unit_b32_up".to_string(), b32::verilog_dop_unit(r)));
+        println!("dop_unit_b32_up: generated in {:.1} s", start.elapsed().as_secs_f64());
+        // TestFloat-style vectors for scripts/run-icarus.sh (scripts/README.md)
+        for (name, fmt) in [("doptrf_b32_up", Format::BINARY32), ("doptrf_e8m15_up", Format::REDUCED)] {
+            std::fs::write(dir.join(format!("{name}.hex")), lane_vectors(fmt, r, 300)).unwrap();
+        }
+        for (name, v) in &units {
+            assert!(v.contains("module top("), "{name}: no top module");
+            std::fs::write(dir.join(format!("{name}.v")), v).unwrap();
+            println!("{name}: {} lines of Verilog", v.lines().count());
+            if yosys {
+                let t = Instant::now();
+                yosys_validate(&format!("cchip_{name}"), v).unwrap_or_else(|e| panic!("{name}: yosys: {e:?}"));
+                println!("{name}: yosys_validate passed ({:.1} s)", t.elapsed().as_secs_f64());
+            } else {
+                println!("{name}: yosys not on PATH, yosys_validate SKIPPED");
+            }
+        }
+    });
+}
+
