@@ -6,6 +6,7 @@
 #   --name UNIT      unit name (default: basename of unit_file); module `top` is renamed to it
 #   --top MODULE     top module in unit_file (default: `top`, else UNIT)
 #   --fields "a b y" field names (default: the vector file's header line)
+#   --preload "en addr data"  preload field names (default: the `// preload:` line)
 #   --clock/--in-valid/--out-valid NAME   port names (default clock, in_valid, out_valid)
 #   --extra FILE.v   another Verilog source to compile with the unit (repeatable)
 #   --trace          dump a VCD to target/verilog/icarus/<unit>/<unit>.vcd

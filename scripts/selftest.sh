@@ -1,11 +1,15 @@
 #!/usr/bin/env bash
-# Self-test of the Verilog flows on a hand-written demo unit in rust-hdl's style
-# (scripts/verilog/selftest/selftest_add8.v: 8-bit adder with carry, latency 2, valid in/out).
+# Self-test of the Verilog flows on hand-written demo units in rust-hdl's style
+# (scripts/verilog/selftest/selftest_add8.v: 8-bit adder with carry, latency 2, valid in/out;
+# selftest_kadd8.v: a register file k[0..3] preloaded through load_en/load_addr/load_data, then
+# y$0 = a$0 + k[sel], y$1 = a$1 + k[sel ^ 1], latency 2, valid in/out).
 #
 # Usage: scripts/selftest.sh
 # Runs Icarus and Verilator on the demo vectors (back to back, then with bubbles), checks that
-# a corrupted vector file makes both fail with a non-zero exit, and synthesizes the unit with
-# Yosys. Exits 0 only if every step behaved as expected. Takes a few seconds.
+# a corrupted vector file (a wrong case, a wrong preload value) makes both fail with a non-zero
+# exit, that a unit raising out_valid during the preload phase fails, that malformed preload
+# sections are rejected by prepare.py naming file and line, and synthesizes the units with
+# Yosys. Exits 0 only if every step behaved as expected. Takes well under a minute (Verilator builds).
 
 set -euo pipefail
 SCRIPTS=$(cd "$(dirname "$0")" && pwd)
@@ -13,6 +17,8 @@ ROOT=$(cd "$SCRIPTS/.." && pwd)
 D=$SCRIPTS/verilog/selftest
 UNIT_FILE=$D/selftest_add8.v
 VEC=$D/selftest_add8.hex
+KUNIT=$D/selftest_kadd8.v
+KVEC=$D/selftest_kadd8.hex
 TMP=$ROOT/target/verilog/selftest
 mkdir -p "$TMP"
 
@@ -29,8 +35,20 @@ expect_fail() {
     cat "$TMP/neg.log"; echo "selftest: corrupted vectors were NOT caught: $*" >&2; fails=$((fails + 1))
   else
     local rc=$?
-    grep -E 'MISMATCH|passed,' "$TMP/neg.log"
+    grep -E 'MISMATCH|SPURIOUS|passed,' "$TMP/neg.log"
     echo "(exit $rc, as expected)"
+  fi
+}
+
+# prepare.py must reject a malformed vector file (exit 2) with a message containing $1.
+expect_error() {
+  local want=$1; shift
+  if "${PYTHON:-python3}" "$SCRIPTS/verilog/prepare.py" "$@" --out "$TMP/err" > "$TMP/err.log" 2>&1; then
+    echo "selftest: malformed vectors were NOT rejected: $*" >&2; fails=$((fails + 1))
+  elif ! grep -qF -- "$want" "$TMP/err.log"; then
+    cat "$TMP/err.log"; echo "selftest: expected an error containing '$want'" >&2; fails=$((fails + 1))
+  else
+    grep error "$TMP/err.log"
   fi
 }
 
@@ -43,6 +61,34 @@ f = lines[5].split(); f[3] = "0" if f[3] == "1" else "1"; lines[5] = " ".join(f)
 open(sys.argv[2], "w").write("\n".join(lines))
 PY
 cmp -s "$VEC" "$TMP/selftest_add8.hex" && { echo "selftest: corruption did not change the file" >&2; exit 1; }
+
+# Preload variants of selftest_kadd8.hex (E = error cases, each a full copy with one change):
+#   badpre:  k[1] preloaded with 23 instead of 22 (must fail in simulation);
+#   E-late:  a preload line moved after the first case;  E-digits: a preload field with 3 digits;
+#   E-nohdr: the `// preload:` header dropped;  E-both: `sel` both preloaded and a case field;
+#   E-out:   an output preloaded.
+# and a mutant unit whose out_valid is also high while load_en is (caught as SPURIOUS).
+"${PYTHON:-python3}" - "$KVEC" "$KUNIT" "$TMP" <<'PY'
+import sys, os
+src, unit, tmp = sys.argv[1:]
+lines = open(src).read().split("\n")
+def write(name, ls):
+    open(os.path.join(tmp, name), "w").write("\n".join(ls))
+pre = [i for i, l in enumerate(lines) if l.startswith("@")]
+first_case = pre[-1] + 1
+i1 = [i for i in pre if lines[i].split()[2] == "01"][0]
+bad = list(lines); bad[i1] = bad[i1].replace("@ 1 01 22", "@ 1 01 23"); assert bad != lines
+write("badpre.hex", bad)
+late = list(lines); late.insert(first_case + 3, late.pop(pre[0])); write("E-late.hex", late)
+dig = list(lines); dig[pre[1]] = dig[pre[1]].replace("@ 1 01 22", "@ 1 001 22"); write("E-digits.hex", dig)
+write("E-nohdr.hex", [l for l in lines if not l.startswith("// preload:")])
+write("E-both.hex", [l.replace("// preload: load_en load_addr load_data", "// preload: load_en load_addr load_data sel") for l in lines])
+write("E-out.hex", [l.replace("// preload: load_en load_addr load_data", "// preload: load_en load_addr load_data y$1") for l in lines])
+v = open(unit).read()
+assert "        out_valid = s2_v$q;" in v
+open(os.path.join(tmp, "selftest_kadd8_ov.v"), "w").write(
+    v.replace("        out_valid = s2_v$q;", "        out_valid = s2_v$q | load_en;"))
+PY
 
 step "Icarus: $VEC"
 expect_ok "$SCRIPTS/run-icarus.sh" "$UNIT_FILE" "$VEC" --trace
@@ -60,12 +106,32 @@ expect_ok "$SCRIPTS/run-verilator.sh" "$UNIT_FILE" "$VEC" --trace +bubble=3
 step "Verilator, corrupted vectors (must fail)"
 expect_fail "$SCRIPTS/run-verilator.sh" "$UNIT_FILE" "$TMP/selftest_add8.hex" --name selftest_add8 --trace
 
+step "Icarus, preload: $KVEC"
+expect_ok "$SCRIPTS/run-icarus.sh" "$KUNIT" "$KVEC" --trace
+step "Icarus, preload, with an idle cycle after every 2 cases"
+expect_ok "$SCRIPTS/run-icarus.sh" "$KUNIT" "$KVEC" +bubble=2
+step "Icarus, wrong preload value (must fail)"
+expect_fail "$SCRIPTS/run-icarus.sh" "$KUNIT" "$TMP/badpre.hex" --name selftest_kadd8
+step "Icarus, out_valid high during the preload phase (must fail)"
+expect_fail "$SCRIPTS/run-icarus.sh" "$TMP/selftest_kadd8_ov.v" "$KVEC" --name selftest_kadd8
+step "Verilator, preload: $KVEC"
+expect_ok "$SCRIPTS/run-verilator.sh" "$KUNIT" "$KVEC" --trace +bubble=2
+step "Verilator, wrong preload value (must fail)"
+expect_fail "$SCRIPTS/run-verilator.sh" "$KUNIT" "$TMP/badpre.hex" --name selftest_kadd8 --trace
+
+step "prepare.py rejects malformed preload sections"
+expect_error "E-late.hex:17: preload line after the first case (line 13)" "$KUNIT" "$TMP/E-late.hex"
+expect_error "E-digits.hex:7: preload field load_addr = '001' has 3 hex digits" "$KUNIT" "$TMP/E-digits.hex"
+expect_error "E-nohdr.hex:5: preload line" "$KUNIT" "$TMP/E-nohdr.hex"
+expect_error "preload field 'sel' is also a case field" "$KUNIT" "$TMP/E-both.hex"
+expect_error "preload field 'y\$1' is an output" "$KUNIT" "$TMP/E-out.hex"
+
 step "Yosys synth"
-expect_ok "$SCRIPTS/synth.sh" "$UNIT_FILE"
+expect_ok "$SCRIPTS/synth.sh" "$UNIT_FILE" "$KUNIT"
 
 echo
 if [ "$fails" = 0 ]; then
-  echo "selftest: OK (Icarus, Verilator, Yosys; corrupted vectors caught)"
+  echo "selftest: OK (Icarus, Verilator, Yosys; preload; corrupted vectors caught)"
 else
   echo "selftest: $fails step(s) FAILED" >&2
   exit 1

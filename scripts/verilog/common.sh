@@ -1,6 +1,6 @@
 # Shared by scripts/run-icarus.sh and scripts/run-verilator.sh (sourced, not run).
 # Parses:  <unit_file.v> <vectors.hex> [--latency N] [--name UNIT] [--top MODULE]
-#          [--fields "a b y"] [--trace] [--out DIR] [--extra FILE.v]... [+plusarg]...
+#          [--fields "a b y"] [--preload "en addr data"] [--trace] [--out DIR] [--extra FILE.v]... [+plusarg]...
 # and runs scripts/verilog/prepare.py into $OUT. Sets UNIT, OUT, TRACE, EXTRA[], PLUSARGS[].
 
 ROOT=$(cd "$SCRIPTS/.." && pwd)
@@ -23,7 +23,7 @@ parse_args() {
   UNIT=$(basename "$UNIT_FILE" .v) OUT="" TRACE=0 EXTRA=() PLUSARGS=() PREP=()
   while [ $# -gt 0 ]; do
     case $1 in
-      --latency|--top|--fields|--clock|--in-valid|--out-valid) PREP+=("$1" "$2"); shift 2 ;;
+      --latency|--top|--fields|--preload|--clock|--in-valid|--out-valid) PREP+=("$1" "$2"); shift 2 ;;
       --name) UNIT=$2; shift 2 ;;
       --out) OUT=$2; shift 2 ;;
       --extra) EXTRA+=("$2"); shift 2 ;;

@@ -10,9 +10,10 @@ vector file (`vectors/<unit>_<format>.hex`) and writes, into an output directory
   <unit>.mem     the vectors packed one case per line (one wide hex word: the 32-bit line
                  number of the case in the .hex file, then the fields in header order),
                  which `$readmemh` reads in both Icarus and Verilator;
+  <unit>.pre.mem the preload cycles (`@` lines) packed the same way, {line, preload fields}
+                 (only if the vector file has a `// preload:` section);
   tb_<unit>.v    the testbench for this unit (see scripts/README.md);
   <unit>.gtkw    a default GTKWave save file (inputs, outputs, valid) for the VCD;
-  info.txt       unit, latency, cases, field layout (for humans and scripts).
 
 Only the Python 3 standard library is used (python3 is a dependency of verilator and
 yosys, so every machine with the tools has it). Errors in the vector file are reported
@@ -73,11 +74,22 @@ def rename_modules(src, top, unit):
     return tok.sub(lambda m: m.group(0) if m.group(1) else ren.get(m.group(2), m.group(2)), src), ren
 
 
-def parse_vectors(path, fields_expected=None):
+def parse_vectors(path):
+    """(comments, latency, cases, preload_header, preloads) of a vector file.
+
+    comments: the bodies of the `//`/`#` lines before the first case (header candidates);
+    cases, preloads: [(line number, tokens)]; preload_header: (line number, names) of the
+    `// preload: ...` line or None. Preload (`@`) lines after the first case are an error."""
     comments = []
     latency = None
     cases = []
-    with open(path) as f:
+    pre_header = None
+    preloads = []
+    try:
+        f = open(path)
+    except OSError as e:
+        die(str(e))
+    with f:
         for no, line in enumerate(f, 1):
             s = line.strip()
             if not s:
@@ -85,14 +97,31 @@ def parse_vectors(path, fields_expected=None):
             if s.startswith("//") or s.startswith("#"):
                 body = s.lstrip("/#").strip()
                 m = re.match(r"latency\s*[:=]\s*(\d+)\s*$", body)
+                mp = re.match(r"preload\s*:(.*)$", body)
                 if m:
                     latency = int(m.group(1))
+                elif mp:
+                    if cases:
+                        die(f"{path}:{no}: `// preload:` header after the first case (line {cases[0][0]})")
+                    if pre_header is not None:
+                        die(f"{path}:{no}: second `// preload:` header (the first is line {pre_header[0]})")
+                    names = [t for t in re.split(r"[\s,]+", mp.group(1)) if t]
+                    if not names:
+                        die(f"{path}:{no}: `// preload:` header names no ports")
+                    pre_header = (no, names)
                 elif body and not cases:
                     comments.append(body)
                 continue
             toks = s.split("//")[0].split()
-            cases.append((no, toks))
-    return comments, latency, cases
+            if s.startswith("@"):
+                if cases:
+                    die(f"{path}:{no}: preload line after the first case (line {cases[0][0]}); "
+                        f"preload lines must come before every case")
+                toks = s[1:].split("//")[0].split()
+                preloads.append((no, toks))
+            else:
+                cases.append((no, toks))
+    return comments, latency, cases, pre_header, preloads
 
 
 def main():
@@ -108,6 +137,8 @@ def main():
     ap.add_argument("--in-valid", default="in_valid")
     ap.add_argument("--out-valid", default="out_valid")
     ap.add_argument("--fields", help="field names, space separated (default: the vector file's header)")
+    ap.add_argument("--preload", help="preload field names, space separated (default: the vector file's "
+                    "`// preload:` line)")
     ap.add_argument("--sim", choices=["icarus", "verilator"], default="icarus",
                     help="VCD scope root for the .gtkw: icarus `tb.`, verilator `TOP.tb.`")
     ap.add_argument("--gtkw", help="curated save file (default: scripts/gtkw/<unit>.gtkw if it exists)")
@@ -143,7 +174,7 @@ def main():
 
     if not a.vectors:
         die("no vector file given")
-    comments, hlat, cases = parse_vectors(a.vectors)
+    comments, hlat, cases, pre_header, preloads = parse_vectors(a.vectors)
     latency = a.latency if a.latency is not None else hlat
     if latency is None:
         die(f"{a.vectors}: no latency: pass --latency N or put a line `// latency: N` in the vector file")
@@ -171,12 +202,42 @@ def main():
         if pmap[fld][0] == "inout":
             die(f"port {fld!r} is inout: not supported")
     ins = [f for f in fields if pmap[f][0] == "input"]
+    # Preload fields: inputs driven for one cycle per `@` line before the first case.
+    if a.preload is not None:
+        pfields = a.preload.split()
+        pwhere = "--preload"
+    elif pre_header is not None:
+        pfields = pre_header[1]
+        pwhere = f"{a.vectors}:{pre_header[0]}"
+    else:
+        pfields = []
+        pwhere = None
+    if preloads and not pfields:
+        die(f"{a.vectors}:{preloads[0][0]}: preload line (`@ ...`) but no `// preload: <ports>` header "
+            f"(or --preload)")
+    for fld in pfields:
+        if fld not in pmap:
+            die(f"{pwhere}: preload field {fld!r} is not a port of {top} "
+                f"(ports: {' '.join(n for _, n, _, _ in plist)})")
+        if fld in (a.clock, a.in_valid, a.out_valid):
+            die(f"{pwhere}: preload field {fld!r} is driven/checked by the testbench itself")
+        if pmap[fld][0] != "input":
+            die(f"{pwhere}: preload field {fld!r} is an {pmap[fld][0]}, not an input")
+        if fld in fields:
+            die(f"{pwhere}: preload field {fld!r} is also a case field; a port is either preloaded or "
+                f"driven by the cases")
+        if pfields.count(fld) > 1:
+            die(f"{pwhere}: preload field {fld!r} named twice")
+    if pfields and not preloads:
+        print(f"prepare.py: warning: {a.vectors}: no preload lines (`@ ...`): "
+              f"{' '.join(pfields)} stay 0", file=sys.stderr)
     outs = [f for f in fields if pmap[f][0] == "output"]
     if not outs:
         die(f"{a.vectors}: no output field in the header")
     has_iv = a.in_valid in pmap and pmap[a.in_valid][0] == "input"
     has_ov = a.out_valid in pmap and pmap[a.out_valid][0] == "output"
-    tied = [n for d, n, w, s in plist if d == "input" and n not in ins and n not in (a.clock, a.in_valid)]
+    tied = [n for d, n, w, s in plist
+            if d == "input" and n not in ins and n not in pfields and n not in (a.clock, a.in_valid)]
     unchecked = [n for d, n, w, s in plist if d == "output" and n not in outs and n != a.out_valid]
     for n in tied:
         print(f"prepare.py: warning: input {n} is not in the vectors: tied to 0", file=sys.stderr)
@@ -187,21 +248,28 @@ def main():
     if not has_ov:
         print(f"prepare.py: warning: no output {a.out_valid}: valid not checked", file=sys.stderr)
 
-    # Pack the vectors: {line[31:0], field0, field1, ...}, each field padded to whole hex digits.
-    digits = {f: (pmap[f][1] + 3) // 4 for f in fields}
-    words = []
-    for no, toks in cases:
-        if len(toks) != len(fields):
-            die(f"{a.vectors}:{no}: {len(toks)} fields, expected {len(fields)} ({' '.join(fields)})")
-        for fld, t in zip(fields, toks):
-            if not re.fullmatch(r"[0-9a-fA-F]+", t):
-                die(f"{a.vectors}:{no}: field {fld} = {t!r} is not hex")
-            if len(t) != digits[fld]:
-                die(f"{a.vectors}:{no}: field {fld} = {t!r} has {len(t)} hex digits, "
-                    f"expected {digits[fld]} (port width {pmap[fld][1]})")
-            if int(t, 16) >> pmap[fld][1]:
-                die(f"{a.vectors}:{no}: field {fld} = {t!r} does not fit {pmap[fld][1]} bits")
-        words.append(f"{no:08x}" + "".join(t.lower() for t in toks))
+    # Pack the vectors: {line[31:0], field0, field1, ...}, each field padded to whole hex digits;
+    # the preload lines the same way into a second file, {line[31:0], pfield0, pfield1, ...}.
+    digits = {f: (pmap[f][1] + 3) // 4 for f in fields + pfields}
+
+    def pack(lines, flds, what):
+        out = []
+        for no, toks in lines:
+            if len(toks) != len(flds):
+                die(f"{a.vectors}:{no}: {len(toks)} {what}fields, expected {len(flds)} ({' '.join(flds)})")
+            for fld, t in zip(flds, toks):
+                if not re.fullmatch(r"[0-9a-fA-F]+", t):
+                    die(f"{a.vectors}:{no}: {what}field {fld} = {t!r} is not hex")
+                if len(t) != digits[fld]:
+                    die(f"{a.vectors}:{no}: {what}field {fld} = {t!r} has {len(t)} hex digits, "
+                        f"expected {digits[fld]} (port width {pmap[fld][1]})")
+                if int(t, 16) >> pmap[fld][1]:
+                    die(f"{a.vectors}:{no}: {what}field {fld} = {t!r} does not fit {pmap[fld][1]} bits")
+            out.append(f"{no:08x}" + "".join(t.lower() for t in toks))
+        return out
+
+    words = pack(cases, fields, "")
+    pwords = pack(preloads, pfields, "preload ")
     if not words:
         die(f"{a.vectors}: no cases")
 
@@ -214,6 +282,13 @@ def main():
     with open(mem_path, "w") as f:
         f.write(f"// {a.vectors}: line {' '.join(fields)} (packed)\n")
         f.write("\n".join(words) + "\n")
+    pmem_path = os.path.join(a.out, unit + ".pre.mem")
+    if pwords:
+        with open(pmem_path, "w") as f:
+            f.write(f"// {a.vectors}: line {' '.join(pfields)} (packed preload cycles)\n")
+            f.write("\n".join(pwords) + "\n")
+    elif os.path.exists(pmem_path):
+        os.remove(pmem_path)
 
     # Field layout in the packed word (MSB first).
     layout = []  # (name, hi, lo) within the word; word width = 32 + sum(4 * digits)
@@ -222,6 +297,12 @@ def main():
     for fld in fields:
         pos -= 4 * digits[fld]
         layout.append((fld, pos + pmap[fld][1] - 1, pos))
+    ptotal = 32 + sum(4 * digits[f] for f in pfields)
+    playout = []
+    pos = ptotal - 32
+    for fld in pfields:
+        pos -= 4 * digits[fld]
+        playout.append((fld, pos + pmap[fld][1] - 1, pos))
 
     def decl(n):
         w = pmap[n][1]
@@ -231,6 +312,9 @@ def main():
     w = L.append
     w(f"// Generated by scripts/verilog/prepare.py: testbench for {unit} ({a.unit_file})")
     w(f"// vectors {a.vectors}: {len(words)} cases, fields {' '.join(fields)}; latency {latency}")
+    if pfields:
+        w(f"// preload: {len(pwords)} cycles before the first case ({a.in_valid} low), fields {' '.join(pfields)}; "
+          f"0 afterwards")
     w("// Plusargs: +bubble=K (an idle cycle after every K cases; 0 = none), +max_print=N (mismatches printed, default 10)")
     w("`timescale 1ns/1ps")
     w("module tb;")
@@ -238,8 +322,13 @@ def main():
     w(f"  localparam integer LATENCY = {latency};")
     w(f"  localparam integer WORD = {total};")
     w("  reg [WORD-1:0] vec [0:NCASES-1];")
+    w(f"  localparam integer NPRE = {len(pwords)};")
+    if pwords:
+        w(f"  localparam integer PWORD = {ptotal};")
+        w("  reg [PWORD-1:0] pvec [0:NPRE-1];")
+        w("  reg [PWORD-1:0] pcur;")
     w(f"  reg {a.clock} = 1'b0;")
-    for n in ins + tied:
+    for n in ins + pfields + tied:
         w(f"  reg {decl(n)}{n} = 0;")
     if has_iv:
         w(f"  reg {decl(a.in_valid)}{a.in_valid} = 0;")
@@ -247,7 +336,7 @@ def main():
         w(f"  wire {decl(n)}{n};")
     if has_ov:
         w(f"  wire {decl(a.out_valid)}{a.out_valid};")
-    conns = [a.clock] + ins + tied + ([a.in_valid] if has_iv else []) + outs + unchecked + ([a.out_valid] if has_ov else [])
+    conns = [a.clock] + ins + pfields + tied + ([a.in_valid] if has_iv else []) + outs + unchecked + ([a.out_valid] if has_ov else [])
     order = [n for _, n, _, _ in plist if n in conns]
     w(f"  {unit} {unit} (")
     w(",\n".join(f"    .{n}({n})" for n in order))
@@ -256,11 +345,13 @@ def main():
     w("")
     w("  // sched[t % (LATENCY+1)]: case driven at cycle t, or -1 for an idle cycle")
     w("  integer sched [0:LATENCY];")
-    w("  integer t, k, next, due, passed, failed, bubble, since, max_print, printed, tail;")
+    w("  integer t, k, next, pnext, due, passed, failed, bubble, since, max_print, printed, tail;")
     w("  reg ok;")
     w("  reg [WORD-1:0] cur;")
     w("  initial begin")
     w(f"    $readmemh(\"{os.path.abspath(mem_path)}\", vec);")
+    if pwords:
+        w(f"    $readmemh(\"{os.path.abspath(pmem_path)}\", pvec);")
     w("`ifdef TRACE")
     vcd = a.vcd or os.path.join(os.path.abspath(a.out), unit + ".vcd")
     w(f"    $dumpfile(\"{vcd}\");")
@@ -268,13 +359,27 @@ def main():
     w("`endif")
     w("    if (!$value$plusargs(\"bubble=%d\", bubble)) bubble = 0;")
     w("    if (!$value$plusargs(\"max_print=%d\", max_print)) max_print = 10;")
-    w("    passed = 0; failed = 0; printed = 0; next = 0; since = 0;")
+    w("    passed = 0; failed = 0; printed = 0; next = 0; pnext = 0; since = 0;")
     w("    for (k = 0; k <= LATENCY; k = k + 1) sched[k] = -1;")
     w("    t = 0;")
     w("    // one cycle per iteration: drive at the falling edge, check just after (before the next rising edge)")
     w("    tail = 0;")
-    w("    while (next < NCASES || tail <= LATENCY) begin")
+    w("    while (pnext < NPRE || next < NCASES || tail <= LATENCY) begin")
     w(f"      @(negedge {a.clock});")
+    if pwords:
+        w("      if (pnext < NPRE) begin")
+        w(f"        // preload cycle: one `@` line of the vector file, {a.in_valid} low, nothing due")
+        w("        pcur = pvec[pnext];")
+        for fld, hi, lo in playout:
+            w(f"        {fld} = pcur[{hi}:{lo}];")
+        if has_iv:
+            w(f"        {a.in_valid} = 1'b0;")
+        w("        sched[t % (LATENCY+1)] = -1;")
+        w("        pnext = pnext + 1;")
+        w("      end else begin")
+    body_start = len(L)
+    for fld in pfields:
+        w(f"      {fld} = 0;")
     w("      if (next < NCASES && !(bubble > 0 && since == bubble)) begin")
     w("        cur = vec[next];")
     for fld, hi, lo in layout:
@@ -291,6 +396,9 @@ def main():
     w("        since = 0;")
     w("        if (next >= NCASES) tail = tail + 1;")
     w("      end")
+    if pwords:
+        L[body_start:] = ["  " + x for x in L[body_start:]]
+        w("      end")
     w("      #1;")
     w("      begin")
     w("        due = (t >= LATENCY) ? sched[(t - LATENCY) % (LATENCY+1)] : -1;")
@@ -367,7 +475,7 @@ def main():
         g = [f"[*] default save file for {unit}, written by scripts/verilog/prepare.py",
              f'[dumpfile] "{vcd}"', "[timestart] 0", "[size] 1400 700", "[signals_width] 260",
              f"[treeopen] {root}", f"[treeopen] {root}{unit}.", "@800200", "-Inputs"]
-        for n in [a.clock] + ([a.in_valid] if has_iv else []) + ins:
+        for n in [a.clock] + ([a.in_valid] if has_iv else []) + pfields + ins:
             g += sig(n)
         g += ["@1000200", "-Inputs", "@800200", "-Outputs"]
         for n in ([a.out_valid] if has_ov else []) + outs:
