@@ -43,6 +43,24 @@ fn rounding_tag(r: Rounding) -> &'static str {
 /// Every exported unit, in a fixed order.
 pub fn all() -> Vec<Unit> {
     let mut units = vec![];
+    for (tag, fmt, r, v) in [
+        ("b32", Format::BINARY32, Rounding::TowardPositive, super::b32::verilog_doptrf as fn(Rounding) -> String),
+        ("b32", Format::BINARY32, Rounding::NearestEven, super::b32::verilog_doptrf),
+        ("e8m15", Format::REDUCED, Rounding::TowardPositive, super::e8m15::verilog_doptrf),
+    ] {
+        let name = format!("doptrf_{tag}_{}", rounding_tag(r));
+        let n2 = name.clone();
+        units.push(Unit { name, latency: 15, verilog: Box::new(move || v(r)), vectors: Box::new(move || lane_vectors(&n2, fmt, r)) });
+    }
+    for (k, tag, fmt, v) in [
+        (6, "e8m15", Format::REDUCED, super::e8m15::verilog_dop_unit_k6 as fn(Rounding) -> String),
+        (24, "b32", Format::BINARY32, super::b32::verilog_dop_unit),
+    ] {
+        let r = Rounding::TowardPositive;
+        let name = format!("dop_unit_k{k}_{tag}_{}", rounding_tag(r));
+        let n2 = name.clone();
+        units.push(Unit { name, latency: 15, verilog: Box::new(move || v(r)), vectors: Box::new(move || dop_unit_vectors(&n2, k, fmt)) });
+    }
     for r in [Rounding::NearestEven, Rounding::TowardPositive] {
         for (tag, fmt) in [("b32", Format::BINARY32), ("e8m15", Format::REDUCED)] {
             let (vm, va): (fn(Rounding) -> String, fn(Rounding) -> String) = match tag {
@@ -136,6 +154,93 @@ fn fp_vectors(name: &str, fmt: Format, r: Rounding, add: bool, latency: u32) -> 
             let _ = writeln!(out, "{a:0digits$x} {b:0digits$x} {} {z:0digits$x}", sub as u8);
         } else {
             let _ = writeln!(out, "{a:0digits$x} {b:0digits$x} {z:0digits$x}");
+        }
+    }
+    out
+}
+
+fn hex(fmt: Format, x: f64) -> String {
+    format!("{:0w$x}", fmt.to_bits(x), w = (fmt.width() as usize).div_ceil(4))
+}
+
+/// A random format value: an operand bit pattern, or a small integer (exact cancellations).
+fn value(rng: &mut impl Rng, fmt: Format) -> f64 {
+    if rng.random_range(0..4) == 0 {
+        rng.random_range(-8i32..8) as f64
+    } else {
+        fmt.from_bits(operand(rng, fmt))
+    }
+}
+
+/// Vectors of one DOPTRF lane: `d0 d1 d2 c0 c1 c2 c e s flag` (golden::doptrf::lane), with
+/// C >= 0 as the host sets it, and half of the cases with e = -u +- a few ulps so that s lands
+/// on zero, a tie or the sign boundary.
+fn lane_vectors(name: &str, fmt: Format, r: Rounding) -> String {
+    use crate::golden::doptrf;
+    let mut out = String::new();
+    let _ = writeln!(out, "// d0 d1 d2 c0 c1 c2 c e s flag");
+    let _ = writeln!(out, "// latency: 15");
+    let _ = writeln!(out, "// {name}: s = ((d0 c0 + d1 c1) + (d2 c2 + c)) + e in {fmt}, rounding {r:?}, flag = s < 0; golden: golden::doptrf::lane");
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(0xd0b ^ name.len() as u64);
+    for i in 0..RANDOM_CASES {
+        let d = [value(&mut rng, fmt), value(&mut rng, fmt), value(&mut rng, fmt)];
+        let cm = [0; 3].map(|_| value(&mut rng, fmt).abs());
+        let c = value(&mut rng, fmt);
+        let e = if i % 2 == 0 {
+            value(&mut rng, fmt)
+        } else {
+            let u = doptrf::transformed(fmt, r, d, cm, c);
+            let mut e = -u;
+            for _ in 0..rng.random_range(0..4) {
+                e = if rng.random_range(0..2) == 0 { fmt.next_up(e) } else { -fmt.next_up(-e) };
+            }
+            e
+        };
+        let s = doptrf::lane(fmt, r, d, cm, c, e);
+        let h = |x| hex(fmt, x);
+        let _ = writeln!(out, "{} {} {} {} {} {} {} {} {} {}", h(d[0]), h(d[1]), h(d[2]), h(cm[0]), h(cm[1]), h(cm[2]), h(c), h(e), h(s), (s < 0.0) as u8);
+    }
+    out
+}
+
+/// Vectors of the DOP unit: a preload of the host setup (lane i's field f at address 8i + f:
+/// C_i0..2, c_i, j packed as j0 | j1 << 5 | j2 << 10), then every node pair of two small DOP
+/// trees, `d$0.. e$0.. tag -> overlap tag_out` (golden::doptrf::dop_overlap).
+fn dop_unit_vectors(name: &str, k: usize, fmt: Format) -> String {
+    use crate::config::ChipConfig;
+    use crate::dop::{DopTree, HostSetup};
+    use crate::golden::doptrf;
+    use crate::pose::Pose;
+    let cfg = ChipConfig { k, format: fmt, ..Default::default() };
+    let r = cfg.dop_rounding.op();
+    let n = if k == 6 { 16 } else { 8 };
+    let ta = DopTree::build(&crate::mesh::soup(n, 11).triangles_f64(), &cfg);
+    let tb = DopTree::build(&crate::mesh::soup(n, 12).triangles_f64(), &cfg);
+    let pose = Pose::new(17.0, -41.0, 73.0, 0.05, -0.1, 0.02);
+    let setup = HostSetup::new(&cfg, &pose, tb.coord_bound());
+    let w = (fmt.width() as usize).div_ceil(4);
+    let mut out = String::new();
+    let _ = writeln!(out, "// preload: load_en load_addr load_data");
+    let names: Vec<String> = (0..k).map(|i| format!("d${i}")).chain((0..k).map(|i| format!("e${i}"))).collect();
+    let _ = writeln!(out, "// {} tag overlap tag_out", names.join(" "));
+    let _ = writeln!(out, "// latency: 15");
+    let _ = writeln!(out, "// {name}: k = {k}, {fmt}, outward; all node pairs of two DOP trees of 'soup' meshes under one pose; golden: golden::doptrf::dop_overlap");
+    for i in 0..k {
+        let j = setup.j[i];
+        let jw = j[0] as u64 | (j[1] as u64) << 5 | (j[2] as u64) << 10;
+        let fields = [fmt.to_bits(setup.cmat[i][0]), fmt.to_bits(setup.cmat[i][1]), fmt.to_bits(setup.cmat[i][2]), fmt.to_bits(setup.cvec[i]), jw];
+        for (f, v) in fields.iter().enumerate() {
+            let _ = writeln!(out, "@ 1 {:02x} {v:0w$x}", 8 * i + f);
+        }
+    }
+    let mut tag = 0u16;
+    for nb in 0..tb.len() as u32 {
+        for na in 0..ta.len() as u32 {
+            let (d, e) = (tb.dop(nb), ta.dop(na));
+            let overlap = doptrf::dop_overlap(fmt, r, &setup, d, e);
+            let vals: Vec<String> = d.iter().chain(e).map(|&x| hex(fmt, x)).collect();
+            let _ = writeln!(out, "{} {tag:04x} {} {tag:04x}", vals.join(" "), overlap as u8);
+            tag = tag.wrapping_add(1);
         }
     }
     out
