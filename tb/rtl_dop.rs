@@ -305,51 +305,15 @@ struct Pair {
     tag: u16,
 }
 
-trait Unit: Block {
-    const K: usize;
-    fn set_load(&mut self, en: bool, addr: u64, data: u64);
-    fn set_pair(&mut self, d: &[u64], e: &[u64], tag: u16, valid: bool);
-    fn out(&self) -> (bool, bool, u16);
-    fn clock(&mut self, high: bool);
-}
-
-macro_rules! impl_unit {
-    ($t:ty, $k:expr) => {
-        impl Unit for $t {
-            const K: usize = $k;
-            fn set_load(&mut self, en: bool, addr: u64, data: u64) {
-                self.load_en.next = en;
-                self.load_addr.next = addr.into();
-                self.load_data.next = data.into();
-            }
-            fn set_pair(&mut self, d: &[u64], e: &[u64], tag: u16, valid: bool) {
-                for i in 0..$k {
-                    self.d[i].next = d[i].into();
-                    self.e[i].next = e[i].into();
-                }
-                self.tag.next = (tag as u64).into();
-                self.valid_in.next = valid;
-            }
-            fn out(&self) -> (bool, bool, u16) {
-                (self.valid_out.val(), self.overlap.val(), self.tag_out.val().to_u64() as u16)
-            }
-            fn clock(&mut self, high: bool) {
-                self.clock.next = Clock { clk: high };
-            }
-        }
-    };
-}
-impl_unit!(b32::DopUnit6, 6);
-impl_unit!(b32::DopUnit24, 24);
-impl_unit!(e8m15::DopUnit6, 6);
-impl_unit!(e8m15::DopUnit24, 24);
+// The ports of the stamped DOP units as integers: the trait of rtl::sim (also used by benches/rtl_sim.rs).
+use collision_chip::rtl::sim::DopUnitSim as Unit;
 
 /// A probe called after every half cycle (for VCD dumps).
 type Probe<'a, U> = &'a mut dyn FnMut(&U);
 
 fn cycle<U: Unit>(uut: &mut U, probe: &mut Option<Probe<U>>) {
     for high in [false, true] {
-        uut.clock(high);
+        uut.set_clock(high);
         settle(uut);
         if let Some(p) = probe {
             p(uut);

@@ -31,6 +31,7 @@ mod doptrf;
 mod fp_add;
 mod fp_mul;
 mod klmsel;
+pub mod sim;
 pub mod units;
 
 /// Stamps out one format's units plus constructors and Verilog export.
