@@ -23,6 +23,9 @@ use proptest::test_runner::{Config, TestRunner};
 use rust_hdl::prelude::*;
 use std::time::Instant;
 
+mod common;
+use common::{operand, Fmt};
+
 const MODES: [Rounding; 2] = [Rounding::NearestEven, Rounding::TowardPositive];
 const LATENCY: usize = 15;
 
@@ -126,74 +129,6 @@ fn check_lane<L: Lane>(uut: &mut L, fmt: Format, r: Rounding, cases: &[LaneIn]) 
 // ---------------------------------------------------------------------------------------
 // Operand generators (bit patterns of a format with `e` exponent and `f` fraction bits).
 
-#[derive(Clone, Copy, Debug)]
-struct Fmt {
-    e: u32,
-    f: u32,
-}
-
-impl Fmt {
-    fn of(fmt: Format) -> Fmt {
-        Fmt { e: fmt.exp_bits(), f: fmt.frac_bits() }
-    }
-    fn ones(self) -> u64 {
-        (1 << self.e) - 1
-    }
-    fn bias(self) -> u64 {
-        (1 << (self.e - 1)) - 1
-    }
-    fn pack(self, s: bool, exp: u64, frac: u64) -> u64 {
-        ((s as u64) << (self.e + self.f)) | ((exp & self.ones()) << self.f) | (frac & ((1 << self.f) - 1))
-    }
-    fn specials(self) -> Vec<u64> {
-        let fm = (1u64 << self.f) - 1;
-        let mut v = vec![];
-        for s in [false, true] {
-            for (e, fr) in [
-                (0, 0),
-                (0, 1),
-                (0, fm),
-                (0, 1 << (self.f - 1)),
-                (1, 0),
-                (1, fm),
-                (self.bias(), 0),
-                (self.bias(), 1),
-                (self.bias() - 1, fm),
-                (self.ones() - 1, fm),
-                (self.ones(), 0),
-                (self.ones(), 1 << (self.f - 1)),
-                (self.ones(), 1),
-            ] {
-                v.push(self.pack(s, e, fr));
-            }
-        }
-        v
-    }
-}
-
-/// One operand: random bits, specials, subnormals, extreme exponents, sparse fractions,
-/// and moderate values (where the lane's sums actually cancel and round).
-fn operand(t: Fmt) -> BoxedStrategy<u64> {
-    let width = t.e + t.f + 1;
-    let mask = (1u64 << width) - 1;
-    let specials = t.specials();
-    let frac = move || {
-        prop_oneof![
-            0u64..(1 << t.f),
-            prop::collection::vec(0..t.f, 1..4).prop_map(|v| v.iter().fold(0u64, |a, &i| a | (1 << i))),
-            (0..t.f).prop_map(move |i| ((1u64 << t.f) - 1) ^ (1 << i)),
-        ]
-    };
-    prop_oneof![
-        2 => any::<u64>().prop_map(move |x| x & mask),
-        1 => prop::sample::select(specials),
-        1 => (any::<bool>(), frac()).prop_map(move |(s, f)| t.pack(s, 0, f)),
-        1 => (any::<bool>(), prop_oneof![0..4u64, (t.ones() - 4)..=t.ones()], frac())
-            .prop_map(move |(s, e, f)| t.pack(s, e, f)),
-        5 => (any::<bool>(), (t.bias() - 6)..(t.bias() + 6), frac()).prop_map(move |(s, e, f)| t.pack(s, e, f)),
-    ]
-    .boxed()
-}
 
 /// A lane case: independent operands, or C >= 0 (as the host sets it) with e chosen near
 /// -u (the flag's boundary: s is zero, a few ulps either side, or a tie).

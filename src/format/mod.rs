@@ -495,6 +495,28 @@ impl Format {
         self.round2(p, 0.0, r)
     }
 
+    /// The bit pattern `sign | exp | frac` (fields masked to their widths).
+    pub fn pack(&self, sign: bool, exp: u64, frac: u64) -> u64 {
+        let (e, f) = (self.exp_bits, self.frac_bits);
+        ((sign as u64) << (e + f)) | ((exp & ((1 << e) - 1)) << f) | (frac & ((1 << f) - 1))
+    }
+
+    /// Special and boundary bit patterns, both signs: zeros, subnormals (smallest, largest,
+    /// half), the normal boundary, values around 1, the largest finite values, infinities and
+    /// NaNs. The corner cases every datapath test starts from.
+    pub fn special_patterns(&self) -> Vec<u64> {
+        let (ones, bias, fm, half) =
+            ((1u64 << self.exp_bits) - 1, self.bias() as u64, (1u64 << self.frac_bits) - 1, 1u64 << (self.frac_bits - 1));
+        let fields = [
+            (0, 0), (0, 1), (0, 2), (0, fm), (0, half),
+            (1, 0), (1, 1), (1, fm), (2, 0),
+            (bias, 0), (bias, 1), (bias, fm), (bias - 1, fm),
+            (ones - 1, fm), (ones - 1, 0), (ones - 2, fm),
+            (ones, 0), (ones, half), (ones, 1), (ones, fm),
+        ];
+        [false, true].iter().flat_map(|&s| fields.iter().map(move |&(e, f)| self.pack(s, e, f))).collect()
+    }
+
     /// Encodes a representable value as `sign | biased exponent | fraction`
     /// (`width()` bits, right-aligned). Any NaN gives the canonical NaN pattern.
     /// Non-representable finite inputs are a logic error (debug assertion; the

@@ -9,7 +9,7 @@ use rand::{Rng, SeedableRng};
 use std::fmt::Write;
 use std::path::Path;
 
-/// Vector cases per floating-point unit: every pair of the format's special values, then
+/// Vector cases per floating-point unit: every pair of the format's special patterns, then
 /// random operands.
 const RANDOM_CASES: usize = 3000;
 
@@ -88,40 +88,16 @@ pub fn all() -> Vec<Unit> {
     units
 }
 
-/// Special and boundary values of a format (bit patterns).
-fn specials(fmt: Format) -> Vec<u64> {
-    let (e, f) = (fmt.exp_bits(), fmt.frac_bits());
-    let pack = |s: u64, ex: u64, fr: u64| (s << (e + f)) | (ex << f) | fr;
-    let top = (1u64 << e) - 1;
-    let fmax = (1u64 << f) - 1;
-    let mut v = vec![];
-    for s in 0..2 {
-        v.extend([
-            pack(s, 0, 0),            // zero
-            pack(s, 0, 1),            // smallest subnormal
-            pack(s, 0, fmax),         // largest subnormal
-            pack(s, 1, 0),            // smallest normal
-            pack(s, top - 1, fmax),   // largest finite
-            pack(s, fmt.bias() as u64, 0),     // 1
-            pack(s, fmt.bias() as u64, 1),     // 1 + ulp
-            pack(s, fmt.bias() as u64 - 1, fmax), // 1 - ulp/2
-            pack(s, top, 0),          // infinity
-        ]);
-    }
-    v.push(pack(0, top, 1 << (f - 1))); // NaN
-    v
-}
-
 /// A random operand: any bit pattern, or a value near 1 (many ties and cancellations).
 fn operand(rng: &mut impl Rng, fmt: Format) -> u64 {
     let w = fmt.width();
     match rng.random_range(0..4) {
         0 | 1 => rng.random_range(0..(1u64 << w)),
         _ => {
-            let (e, f) = (fmt.exp_bits(), fmt.frac_bits());
+            let f = fmt.frac_bits();
             let ex = fmt.bias() as u64 + rng.random_range(0..4) - 2;
             let fr = rng.random_range(0..(1u64 << f)) & !((1u64 << rng.random_range(0..f)) - 1);
-            ((rng.random_range(0..2u64)) << (e + f)) | (ex << f) | fr
+            fmt.pack(rng.random_range(0..2) == 1, ex, fr)
         }
     }
 }
@@ -138,7 +114,7 @@ fn fp_vectors(name: &str, fmt: Format, r: Rounding, add: bool, latency: u32) -> 
         if add { "+ (or - when sub)" } else { "*" },
         if add { "add / sub" } else { "mul" }
     );
-    let sp = specials(fmt);
+    let sp = fmt.special_patterns();
     let mut cases: Vec<(u64, u64, bool)> = sp.iter().flat_map(|&a| sp.iter().map(move |&b| (a, b, false))).collect();
     let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(0x5eed ^ name.len() as u64);
     cases.extend((0..RANDOM_CASES).map(|i| (operand(&mut rng, fmt), operand(&mut rng, fmt), add && i % 2 == 1)));
