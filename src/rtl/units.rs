@@ -32,6 +32,9 @@ impl Unit {
     }
 }
 
+/// A unit's Verilog for one rounding.
+type VerilogFn = fn(Rounding) -> String;
+
 fn rounding_tag(r: Rounding) -> &'static str {
     match r {
         Rounding::NearestEven => "rne",
@@ -44,7 +47,7 @@ fn rounding_tag(r: Rounding) -> &'static str {
 pub fn all() -> Vec<Unit> {
     let mut units = vec![];
     for (tag, fmt, r, v) in [
-        ("b32", Format::BINARY32, Rounding::TowardPositive, super::b32::verilog_doptrf as fn(Rounding) -> String),
+        ("b32", Format::BINARY32, Rounding::TowardPositive, super::b32::verilog_doptrf as VerilogFn),
         ("b32", Format::BINARY32, Rounding::NearestEven, super::b32::verilog_doptrf),
         ("e8m15", Format::REDUCED, Rounding::TowardPositive, super::e8m15::verilog_doptrf),
     ] {
@@ -53,7 +56,7 @@ pub fn all() -> Vec<Unit> {
         units.push(Unit { name, latency: 15, verilog: Box::new(move || v(r)), vectors: Box::new(move || lane_vectors(&n2, fmt, r)) });
     }
     for (k, tag, fmt, v) in [
-        (6, "e8m15", Format::REDUCED, super::e8m15::verilog_dop_unit_k6 as fn(Rounding) -> String),
+        (6, "e8m15", Format::REDUCED, super::e8m15::verilog_dop_unit_k6 as VerilogFn),
         (24, "b32", Format::BINARY32, super::b32::verilog_dop_unit),
     ] {
         let r = Rounding::TowardPositive;
@@ -63,7 +66,7 @@ pub fn all() -> Vec<Unit> {
     }
     for r in [Rounding::NearestEven, Rounding::TowardPositive] {
         for (tag, fmt) in [("b32", Format::BINARY32), ("e8m15", Format::REDUCED)] {
-            let (vm, va): (fn(Rounding) -> String, fn(Rounding) -> String) = match tag {
+            let (vm, va): (VerilogFn, VerilogFn) = match tag {
                 "b32" => (super::b32::verilog_fp_mul, super::b32::verilog_fp_add),
                 _ => (super::e8m15::verilog_fp_mul, super::e8m15::verilog_fp_add),
             };
