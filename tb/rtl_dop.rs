@@ -9,7 +9,7 @@
 //!   random MUX controls; overlap and tag, one pair per clock.
 //!
 //! Also: a short VCD per block under `target/rtl-vcd/`, Verilog export with
-//! `yosys_validate` when yosys is installed.
+//! (Verilog export and its checks: `rtl::units`, scripts/check-rtl.sh.)
 
 use collision_chip::config::{ChipConfig, DopRounding};
 use collision_chip::dop::{DopTree, HostSetup};
@@ -508,62 +508,6 @@ fn vcd_traces() {
             run_unit(&mut uut, &words, &pairs, Some(&mut probe));
         }
         write_vcd("dop_unit_b32", "dop_unit", buf);
-    });
-}
-
-/// `n` lane cases with the golden s and flag, in the vector format of scripts/README.md.
-fn lane_vectors(fmt: Format, r: Rounding, n: usize) -> String {
-    use proptest::strategy::ValueTree;
-    let mut runner = TestRunner::deterministic();
-    let cases = prop::collection::vec(lane_case(fmt, r), n).new_tree(&mut runner).unwrap().current();
-    let w = fmt.width() as usize / 4;
-    let mut out = format!("// d0 d1 d2 c0 c1 c2 c e s flag\n// latency: {LATENCY}\n// DOPTRF lane, {fmt}, {r:?}: s = ((d0 c0 + d1 c1) + (d2 c2 + c)) + e, flag = s < 0\n");
-    for x in &cases {
-        let (s, flag) = golden_lane(fmt, r, x);
-        for v in x.iter().chain([&s]) {
-            out += &format!("{v:0w$x} ");
-        }
-        out += &format!("{}\n", flag as u8);
-    }
-    out
-}
-
-fn yosys_on_path() -> bool {
-    std::process::Command::new("yosys").arg("-V").output().is_ok()
-}
-
-#[test]
-fn verilog_export() {
-    big_stack(|| {
-        let yosys = yosys_on_path();
-        let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("target").join("rtl-verilog");
-        std::fs::create_dir_all(&dir).unwrap();
-        let r = Rounding::TowardPositive;
-        let mut units = vec![
-            ("doptrf_b32_up".to_string(), b32::verilog_doptrf(r)),
-            ("doptrf_e8m15_up".to_string(), e8m15::verilog_doptrf(r)),
-            ("doptrf_b32_ne".to_string(), b32::verilog_doptrf(Rounding::NearestEven)),
-            ("dop_unit_k6_e8m15_up".to_string(), e8m15::verilog_dop_unit_k6(r)),
-        ];
-        let start = Instant::now();
-        units.push(("dop_unit_b32_up".to_string(), b32::verilog_dop_unit(r)));
-        println!("dop_unit_b32_up: generated in {:.1} s", start.elapsed().as_secs_f64());
-        // TestFloat-style vectors for scripts/run-icarus.sh (scripts/README.md)
-        for (name, fmt) in [("doptrf_b32_up", Format::BINARY32), ("doptrf_e8m15_up", Format::REDUCED)] {
-            std::fs::write(dir.join(format!("{name}.hex")), lane_vectors(fmt, r, 300)).unwrap();
-        }
-        for (name, v) in &units {
-            assert!(v.contains("module top("), "{name}: no top module");
-            std::fs::write(dir.join(format!("{name}.v")), v).unwrap();
-            println!("{name}: {} lines of Verilog", v.lines().count());
-            if yosys {
-                let t = Instant::now();
-                yosys_validate(&format!("cchip_{name}"), v).unwrap_or_else(|e| panic!("{name}: yosys: {e:?}"));
-                println!("{name}: yosys_validate passed ({:.1} s)", t.elapsed().as_secs_f64());
-            } else {
-                println!("{name}: yosys not on PATH, yosys_validate SKIPPED");
-            }
-        }
     });
 }
 

@@ -2,7 +2,7 @@
 //! bit for bit: every unit, both formats (binary32, e8m15), both rounding modes
 //! (NearestEven, TowardPositive), one operation per clock through the pipeline, fixed
 //! latency checked on the `valid` bit. Also: a VCD per unit under `target/rtl-vcd/`,
-//! Verilog export, and `yosys_validate` when yosys is installed.
+//! (Verilog export and its checks: `rtl::units`, scripts/check-rtl.sh.)
 
 use collision_chip::format::{Format, Rounding};
 use collision_chip::rtl::{b32, e8m15};
@@ -323,33 +323,3 @@ fn vcd_traces() {
     vcd_unit(e8m15::fp_add_top(Rounding::TowardPositive), "fp_add_e8m15", &ops15);
 }
 
-fn yosys_on_path() -> bool {
-    std::process::Command::new("yosys").arg("-V").output().is_ok()
-}
-
-#[test]
-fn verilog_export() {
-    let yosys = yosys_on_path();
-    for r in MODES {
-        let tag = if r == Rounding::NearestEven { "ne" } else { "up" };
-        for (name, v) in [
-            (format!("fp_mul_b32_{tag}"), b32::verilog_fp_mul(r)),
-            (format!("fp_add_b32_{tag}"), b32::verilog_fp_add(r)),
-            (format!("fp_mul_e8m15_{tag}"), e8m15::verilog_fp_mul(r)),
-            (format!("fp_add_e8m15_{tag}"), e8m15::verilog_fp_add(r)),
-        ] {
-            assert!(v.contains("module top("), "{name}: no top module");
-            let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("target").join("rtl-verilog");
-            std::fs::create_dir_all(&dir).unwrap();
-            std::fs::write(dir.join(format!("{name}.v")), &v).unwrap();
-            assert!(v.contains("assign prod = a * b;") || name.contains("add"), "{name}: multiplier missing");
-            assert!(!v.contains("real") && !v.contains("$bitstoreal"), "{name}: float construct");
-            if yosys {
-                yosys_validate(&format!("cchip_{name}"), &v).unwrap_or_else(|e| panic!("{name}: yosys: {e:?}"));
-                println!("{name}: yosys_validate passed");
-            } else {
-                println!("{name}: {} lines of Verilog; yosys not on PATH, yosys_validate SKIPPED", v.lines().count());
-            }
-        }
-    }
-}

@@ -246,3 +246,30 @@ fn write_all(dir: &Path, ext: &str, text: fn(&Unit) -> String) -> std::io::Resul
         })
         .collect()
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every exported unit is one top module of integer logic: no `real`, no float system
+    /// functions (Icarus, Verilator and Yosys then prove the rest in scripts/check-rtl.sh),
+    /// and its vectors name a latency equal to the unit's.
+    #[test]
+    fn exported_units_are_integer_logic() {
+        let float = ["real", "shortreal", "$bitstoreal", "$realtobits", "$itor", "$rtoi"];
+        let units = std::thread::Builder::new()
+            .stack_size(512 << 20) // the k = 24 DOP unit is built on the stack
+            .spawn(|| all().iter().map(|u| (u.name.clone(), u.latency, u.verilog(), u.vectors())).collect::<Vec<_>>())
+            .unwrap()
+            .join()
+            .unwrap();
+        assert!(units.len() >= 13);
+        for (name, latency, v, vec) in units {
+            assert_eq!(v.matches("module top(").count(), 1, "{name}");
+            for tok in v.split(|c: char| !(c.is_alphanumeric() || c == '_' || c == '$')) {
+                assert!(!float.contains(&tok), "{name}: float construct {tok}");
+            }
+            assert!(vec.contains(&format!("// latency: {latency}\n")), "{name}");
+        }
+    }
+}
