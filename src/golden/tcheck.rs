@@ -56,6 +56,33 @@ impl Bounded {
     }
 }
 
+/// The chip's bound addition (`rtl::*::BoundAdd`): `max(next_up(RNE(a + b)), m)`, m = the
+/// format's smallest normal value; for bounds a, b >= 0 an upper bound of a + b that is a
+/// normal value of the format or +inf. `f64::max` drops a NaN (IEEE maxNum): a NaN sum
+/// (a NaN operand) gives m, and so does a negative one.
+#[inline(always)]
+pub fn bound_add(f: Format, a: f64, b: f64) -> f64 {
+    f.next_up(f.add(a, b, Rounding::NearestEven)).max(f.min_positive_normal())
+}
+
+/// The chip's bound multiplication (`rtl::*::BoundMul`): `max(next_up(RNE(a * b)), m)`, as
+/// [`bound_add`] (`inf * 0`, a NaN, gives m).
+#[inline(always)]
+pub fn bound_mul(f: Format, a: f64, b: f64) -> f64 {
+    f.next_up(f.mul(a, b, Rounding::NearestEven)).max(f.min_positive_normal())
+}
+
+/// The chip's bound on the rounding error of a result x rounded with `r`
+/// (`rtl::*::RoundErr`): `max(ulp(x)/2, m)` to nearest, `max(ulp(x), m)` directed, m the
+/// smallest normal, so a power of two of the format: ±inf gives +inf, NaN gives m
+/// (`f64::max`), zeros and subnormals give m.
+#[inline(always)]
+pub fn rounding_error(f: Format, r: Rounding, x: f64) -> f64 {
+    let ulp = f.ulp(x);
+    let m = f.min_positive_normal();
+    if r == Rounding::NearestEven { (0.5 * ulp).max(m) } else { ulp.max(m) }
+}
+
 /// The datapath's arithmetic on bounded values. Values are rounded in the T.CHECK rounding.
 /// The chip computes bounds in the same format: each operation rounded to nearest, stepped
 /// up to the next value of the format and floored at the smallest normal m (an upper
@@ -107,7 +134,7 @@ impl<'c> Arith<'c> {
     #[inline(always)]
     fn up(&self, a: f64, b: f64) -> f64 {
         match self.mode {
-            BoundMode::Chip => self.f.next_up(self.f.add(a, b, Rounding::NearestEven)).max(self.m),
+            BoundMode::Chip => bound_add(self.f, a, b),
             BoundMode::Estimate(_) => (a + b).max(self.m),
         }
     }
@@ -115,7 +142,7 @@ impl<'c> Arith<'c> {
     #[inline(always)]
     fn upm(&self, a: f64, b: f64) -> f64 {
         match self.mode {
-            BoundMode::Chip => self.f.next_up(self.f.mul(a, b, Rounding::NearestEven)).max(self.m),
+            BoundMode::Chip => bound_mul(self.f, a, b),
             BoundMode::Estimate(_) => (a * b).max(self.m),
         }
     }
@@ -157,15 +184,13 @@ impl<'c> Arith<'c> {
     }
 
     fn rounding_error_nearest(&self, x: f64) -> f64 {
-        (0.5 * self.f.ulp(x)).max(self.m)
+        rounding_error(self.f, Rounding::NearestEven, x)
     }
 
-    /// Bound on the rounding error of a result x: half an ulp to nearest, an ulp when
-    /// directed, floored at m (so it is a value of the format).
+    /// Bound on the rounding error of a result x ([`rounding_error`]).
     #[inline(always)]
     fn rounding_error(&self, x: f64) -> f64 {
-        let ulp = self.f.ulp(x);
-        if self.r == Rounding::NearestEven { (0.5 * ulp).max(self.m) } else { ulp.max(self.m) }
+        rounding_error(self.f, self.r, x)
     }
 
     #[inline(always)]

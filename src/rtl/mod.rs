@@ -10,6 +10,11 @@
 //! | [`b32`] | `binary32` (e8m23, [`Format::BINARY32`](crate::format::Format::BINARY32)) | [`b32::FpMul`] (latency 4), [`b32::FpAdd`] (latency 3), [`b32::Doptrf`] (latency 15), [`b32::KlmSel`], [`b32::DopUnit6`], [`b32::DopUnit24`] (k = 6, 24; latency 15) |
 //! | [`e8m15`] | e8m15 ([`Format::REDUCED`](crate::format::Format::REDUCED)) | the same |
 //!
+//! and, for T.CHECK's bound arithmetic (docs/ACCURACY.md), [`b32::BoundAdd`] (latency 4),
+//! [`b32::BoundMul`] (latency 5): `max(next_up(RNE(a op b)), m)`, the nearest-even unit
+//! followed by one register stage of [`b32::StepUp`]; [`b32::RoundErr`] (latency 1):
+//! `max(ulp(x)/2, m)` (the same in `e8m15`).
+//!
 //! Each unit takes one operation per clock with a `valid` bit travelling alongside and
 //! is bit-exact with the golden [`Format`](crate::format::Format) operations in the
 //! rounding mode fixed at construction (NearestEven or TowardPositive), including
@@ -20,11 +25,14 @@
 //! * `FpMul`: in `clock`, `a[W]`, `b[W]`, `valid_in`; out `y[W]`, `valid_out`.
 //! * `FpAdd`: in `clock`, `a[W]`, `b[W]`, `sub` (1: `a - b`), `valid_in`;
 //!   out `y[W]`, `valid_out`.
+//! * `BoundAdd`, `BoundMul`: as `FpMul`. `RoundErr`: in `clock`, `x[W]`, `valid_in`; out
+//!   `y[W]`, `valid_out`.
 //!
 //! Signal naming inside a unit: `sK_*` are the registers closing pipeline stage K (as
 //! `DFF`s, `sK_x$q` in Verilog / VCD), `cK_*` the combinational signals of stage K, and
 //! sub-blocks by role (`unpack_a`, `norm_a`, `sig_mul`, `round`).
 
+mod bound;
 mod common;
 mod dop_unit;
 mod doptrf;
@@ -46,6 +54,7 @@ macro_rules! fp_format {
         $crate::rtl::doptrf::doptrf!($W, $WM1, $E, $F);
         $crate::rtl::klmsel::klmsel!($W);
         $crate::rtl::dop_unit::dop_unit!($W);
+        $crate::rtl::bound::bound!($W, $WM1, $E, $F);
 
         /// The golden format these units implement.
         pub const FORMAT: Format = $fmt;
