@@ -170,34 +170,17 @@ macro_rules! bound {
 
         /// A bound adder ready to simulate as a top-level block (inputs claimed, connected).
         pub fn bound_add_top() -> BoundAdd {
-            let mut uut = BoundAdd::new();
-            uut.clock.connect();
-            uut.a.connect();
-            uut.b.connect();
-            uut.valid_in.connect();
-            uut.connect_all();
-            uut
+            top_level!(BoundAdd::new(); clock, a, b, valid_in)
         }
 
         /// A bound multiplier ready to simulate as a top-level block.
         pub fn bound_mul_top() -> BoundMul {
-            let mut uut = BoundMul::new();
-            uut.clock.connect();
-            uut.a.connect();
-            uut.b.connect();
-            uut.valid_in.connect();
-            uut.connect_all();
-            uut
+            top_level!(BoundMul::new(); clock, a, b, valid_in)
         }
 
         /// A rounding-error bound ready to simulate as a top-level block.
         pub fn round_err_top(rounding: Rounding) -> RoundErr {
-            let mut uut = RoundErr::new(rounding);
-            uut.clock.connect();
-            uut.x.connect();
-            uut.valid_in.connect();
-            uut.connect_all();
-            uut
+            top_level!(RoundErr::new(rounding); clock, x, valid_in)
         }
 
         /// Verilog of the bound adder (top module `top`).

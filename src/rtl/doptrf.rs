@@ -228,19 +228,7 @@ macro_rules! doptrf {
 
         /// A lane ready to simulate as a top-level block (inputs claimed, connected).
         pub fn doptrf_top(rounding: Rounding) -> Doptrf {
-            let mut uut = Doptrf::new(rounding);
-            uut.clock.connect();
-            uut.d0.connect();
-            uut.d1.connect();
-            uut.d2.connect();
-            uut.c0.connect();
-            uut.c1.connect();
-            uut.c2.connect();
-            uut.c.connect();
-            uut.e.connect();
-            uut.valid_in.connect();
-            uut.connect_all();
-            uut
+            top_level!(Doptrf::new(rounding); clock, d0, d1, d2, c0, c1, c2, c, e, valid_in)
         }
 
         /// Verilog of one DOPTRF lane (top module `top`).

@@ -32,6 +32,18 @@
 //! `DFF`s, `sK_x$q` in Verilog / VCD), `cK_*` the combinational signals of stage K, and
 //! sub-blocks by role (`unpack_a`, `norm_a`, `sig_mul`, `round`).
 
+
+/// A block ready to simulate as a top level: its inputs claimed (`connect`), then
+/// `connect_all`.
+macro_rules! top_level {
+    ($uut:expr; $($port:ident),+) => {{
+        let mut uut = $uut;
+        $(uut.$port.connect();)+
+        uut.connect_all();
+        uut
+    }};
+}
+
 mod bound;
 mod common;
 mod dop_unit;
@@ -63,25 +75,12 @@ macro_rules! fp_format {
 
         /// A multiplier ready to simulate as a top-level block (inputs claimed, connected).
         pub fn fp_mul_top(rounding: Rounding) -> FpMul {
-            let mut uut = FpMul::new(rounding);
-            uut.clock.connect();
-            uut.a.connect();
-            uut.b.connect();
-            uut.valid_in.connect();
-            uut.connect_all();
-            uut
+            top_level!(FpMul::new(rounding); clock, a, b, valid_in)
         }
 
         /// An adder ready to simulate as a top-level block (inputs claimed, connected).
         pub fn fp_add_top(rounding: Rounding) -> FpAdd {
-            let mut uut = FpAdd::new(rounding);
-            uut.clock.connect();
-            uut.a.connect();
-            uut.b.connect();
-            uut.sub.connect();
-            uut.valid_in.connect();
-            uut.connect_all();
-            uut
+            top_level!(FpAdd::new(rounding); clock, a, b, sub, valid_in)
         }
 
         /// Verilog of the multiplier (top module `top`).
