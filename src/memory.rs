@@ -147,3 +147,16 @@ impl ObjectImage {
         self.tree.len() as u64 * layout.node_bytes() + self.tris.len() as u64 * layout.tri_bytes()
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn word_sizes_of_the_default_chip() {
+        // binary32, k = 24: 1 + 24 * 32 + 64 = 833 bits; 24 * 32 + 2 = 770 bits.
+        let l = Layout::new(&ChipConfig::default());
+        assert_eq!((l.node_bits, l.node_bytes()), (833, 105));
+        assert_eq!((l.tri_bits, l.tri_bytes()), (770, 97));
+    }
+}
