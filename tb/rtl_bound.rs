@@ -14,16 +14,13 @@ use proptest::test_runner::{Config, TestRunner};
 use rust_hdl::prelude::*;
 
 mod common;
-use common::{operand, Fmt};
+use common::{operand, run, Fmt, Pipelined};
+
+/// The bound units: inputs (a, b) (RoundErr reads a as x), output y.
+trait Unit: Pipelined<In = (u64, u64), Out = u64> {}
+impl<T: Pipelined<In = (u64, u64), Out = u64>> Unit for T {}
 
 /// One pipelined unit as the testbench drives it (`b` is ignored by `RoundErr`).
-trait Unit: Block {
-    const LATENCY: usize;
-    fn set(&mut self, a: u64, b: u64, valid: bool);
-    fn out(&self) -> (bool, u64);
-    fn clock(&mut self, high: bool);
-}
-
 macro_rules! impl_unit {
     ($t:ty, $lat:expr, two) => {
         impl_unit!(@impl $t, $lat, |s: &mut $t, a: u64, b: u64| { s.a.next = a.into(); s.b.next = b.into(); });
@@ -32,9 +29,11 @@ macro_rules! impl_unit {
         impl_unit!(@impl $t, $lat, |s: &mut $t, a: u64, _b: u64| { s.x.next = a.into(); });
     };
     (@impl $t:ty, $lat:expr, $drive:expr) => {
-        impl Unit for $t {
+        impl Pipelined for $t {
+            type In = (u64, u64);
+            type Out = u64;
             const LATENCY: usize = $lat;
-            fn set(&mut self, a: u64, b: u64, valid: bool) {
+            fn set(&mut self, (a, b): (u64, u64), valid: bool) {
                 ($drive)(self, a, b);
                 self.valid_in.next = valid;
             }
@@ -57,27 +56,6 @@ impl_unit!(e8m15::RoundErr, 1, one);
 // The plain adder, as a wrong bound adder.
 impl_unit!(b32::FpAdd, 3, two);
 
-/// Drives `ops` one per cycle (valid high), then flushes; each output must appear exactly
-/// `LATENCY` rising edges after its inputs were presented.
-fn run<U: Unit>(uut: &mut U, ops: &[(u64, u64)]) -> Vec<u64> {
-    let n = ops.len();
-    let mut outs = Vec::with_capacity(n);
-    for cyc in 0..n + U::LATENCY + 1 {
-        let (valid, (a, b)) = if cyc < n { (true, ops[cyc]) } else { (false, (0, 0)) };
-        uut.set(a, b, valid);
-        for high in [false, true] {
-            uut.clock(high);
-            assert!(simulate(uut, 1000), "logic did not settle");
-        }
-        let (v, y) = uut.out();
-        if v {
-            assert_eq!(cyc + 1, outs.len() + U::LATENCY, "output {} at the wrong edge", outs.len());
-            outs.push(y);
-        }
-    }
-    assert_eq!(outs.len(), n, "valid outputs lost");
-    outs
-}
 
 /// A golden operation on words.
 type Golden = Box<dyn Fn(u64, u64) -> u64>;

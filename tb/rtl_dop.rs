@@ -24,7 +24,7 @@ use rust_hdl::prelude::*;
 use std::time::Instant;
 
 mod common;
-use common::{operand, Fmt};
+use common::{operand, run, run_traced, settle, Fmt, Pipelined};
 
 const MODES: [Rounding; 2] = [Rounding::NearestEven, Rounding::TowardPositive];
 const LATENCY: usize = 15;
@@ -35,9 +35,6 @@ fn big_stack(f: impl FnOnce() + Send + 'static) {
     std::thread::Builder::new().stack_size(512 << 20).spawn(f).unwrap().join().unwrap_or_else(|e| std::panic::resume_unwind(e));
 }
 
-fn settle<B: Block>(uut: &mut B) {
-    assert!(simulate(uut, 1000), "logic did not settle");
-}
 
 // ---------------------------------------------------------------------------------------
 // The lane.
@@ -45,16 +42,17 @@ fn settle<B: Block>(uut: &mut B) {
 /// One lane evaluation: d0 d1 d2, c0 c1 c2, c, e as bit patterns.
 type LaneIn = [u64; 8];
 
-trait Lane: Block {
-    fn set(&mut self, x: &LaneIn, valid: bool);
-    fn out(&self) -> (bool, u64, bool);
-    fn clock(&mut self, high: bool);
-}
+/// A lane: inputs `LaneIn`, outputs (s, flag).
+trait Lane: Pipelined<In = LaneIn, Out = (u64, bool)> {}
+impl<T: Pipelined<In = LaneIn, Out = (u64, bool)>> Lane for T {}
 
 macro_rules! impl_lane {
     ($t:ty) => {
-        impl Lane for $t {
-            fn set(&mut self, x: &LaneIn, valid: bool) {
+        impl Pipelined for $t {
+            type In = LaneIn;
+            type Out = (u64, bool);
+            const LATENCY: usize = LATENCY;
+            fn set(&mut self, x: LaneIn, valid: bool) {
                 self.d0.next = x[0].into();
                 self.d1.next = x[1].into();
                 self.d2.next = x[2].into();
@@ -65,8 +63,8 @@ macro_rules! impl_lane {
                 self.e.next = x[7].into();
                 self.valid_in.next = valid;
             }
-            fn out(&self) -> (bool, u64, bool) {
-                (self.valid_out.val(), self.s.val().to_u64(), self.flag.val())
+            fn out(&self) -> (bool, (u64, bool)) {
+                (self.valid_out.val(), (self.s.val().to_u64(), self.flag.val()))
             }
             fn clock(&mut self, high: bool) {
                 self.clock.next = Clock { clk: high };
@@ -77,27 +75,6 @@ macro_rules! impl_lane {
 impl_lane!(b32::Doptrf);
 impl_lane!(e8m15::Doptrf);
 
-/// Drives `cases` one per cycle, then flushes; returns (s, flag) in order, each checked to
-/// appear exactly `LATENCY` rising edges after its inputs.
-fn run_lane<L: Lane>(uut: &mut L, cases: &[LaneIn]) -> Vec<(u64, bool)> {
-    let n = cases.len();
-    let mut outs = Vec::with_capacity(n);
-    for cyc in 0..n + LATENCY + 1 {
-        let (valid, x) = if cyc < n { (true, cases[cyc]) } else { (false, [0; 8]) };
-        uut.set(&x, valid);
-        uut.clock(false);
-        settle(uut);
-        uut.clock(true);
-        settle(uut);
-        let (v, s, flag) = uut.out();
-        if v {
-            assert_eq!(cyc + 1, outs.len() + LATENCY, "lane output {} at the wrong edge", outs.len());
-            outs.push((s, flag));
-        }
-    }
-    assert_eq!(outs.len(), n, "valid outputs lost");
-    outs
-}
 
 fn golden_lane(fmt: Format, r: Rounding, x: &LaneIn) -> (u64, bool) {
     let v: Vec<f64> = x.iter().map(|&b| fmt.from_bits(b)).collect();
@@ -106,7 +83,7 @@ fn golden_lane(fmt: Format, r: Rounding, x: &LaneIn) -> (u64, bool) {
 }
 
 fn check_lane<L: Lane>(uut: &mut L, fmt: Format, r: Rounding, cases: &[LaneIn]) -> Result<(), TestCaseError> {
-    let outs = run_lane(uut, cases);
+    let outs = run(uut, cases);
     let w = fmt.width() as usize / 4;
     for (x, &(s, flag)) in cases.iter().zip(&outs) {
         let (gs, gf) = golden_lane(fmt, r, x);
@@ -459,20 +436,13 @@ fn vcd_traces() {
         let mut uut = b32::doptrf_top(Rounding::TowardPositive);
         let mut buf = vec![];
         {
-            let mut vcd = write_vcd_header(&mut buf, &uut);
-            vcd = write_vcd_dump(vcd, &uut);
-            let mut time = 0u64;
-            for cyc in 0..cases.len() + LATENCY + 1 {
-                let (valid, x) = if cyc < cases.len() { (true, cases[cyc]) } else { (false, [0; 8]) };
-                uut.set(&x, valid);
-                for high in [false, true] {
-                    uut.clock(high);
-                    settle(&mut uut);
-                    vcd.timestamp(time).unwrap();
-                    vcd = write_vcd_change(vcd, &uut);
-                    time += 5;
-                }
-            }
+            let vcd = write_vcd_dump(write_vcd_header(&mut buf, &uut), &uut);
+            let mut vcd = Some(vcd);
+            run_traced(&mut uut, &cases, |u, time| {
+                let mut v = vcd.take().unwrap();
+                v.timestamp(time).unwrap();
+                vcd = Some(write_vcd_change(v, u));
+            });
         }
         write_vcd("doptrf_b32", "doptrf", buf);
 

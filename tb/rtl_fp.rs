@@ -13,7 +13,11 @@ use rust_hdl::prelude::*;
 use std::time::Instant;
 
 mod common;
-use common::{operand, Fmt};
+use common::{operand, run, run_traced, Fmt, Pipelined};
+
+/// The FP units: inputs (a, b, sub), output y.
+trait Unit: Pipelined<In = (u64, u64, bool), Out = u64> {}
+impl<T: Pipelined<In = (u64, u64, bool), Out = u64>> Unit for T {}
 
 const MODES: [Rounding; 2] = [Rounding::NearestEven, Rounding::TowardPositive];
 
@@ -24,19 +28,13 @@ enum Op {
     Sub,
 }
 
-/// One pipelined unit as the testbench drives it.
-trait Unit: Block {
-    const LATENCY: usize;
-    fn set(&mut self, a: u64, b: u64, sub: bool, valid: bool);
-    fn out(&self) -> (bool, u64);
-    fn clock(&mut self, high: bool);
-}
-
 macro_rules! impl_unit {
     ($t:ty, $lat:expr, $sub:ident) => {
-        impl Unit for $t {
+        impl Pipelined for $t {
+            type In = (u64, u64, bool);
+            type Out = u64;
             const LATENCY: usize = $lat;
-            fn set(&mut self, a: u64, b: u64, sub: bool, valid: bool) {
+            fn set(&mut self, (a, b, sub): (u64, u64, bool), valid: bool) {
                 self.a.next = a.into();
                 self.b.next = b.into();
                 impl_unit!(@sub $sub, self, sub);
@@ -59,34 +57,6 @@ impl_unit!(e8m15::FpMul, 4, no);
 impl_unit!(b32::FpAdd, 3, yes);
 impl_unit!(e8m15::FpAdd, 3, yes);
 
-/// Half a clock period: settle the combinational logic.
-fn settle<U: Unit>(uut: &mut U) {
-    assert!(simulate(uut, 1000), "logic did not settle");
-}
-
-/// Drives `ops` one per cycle (valid high), then flushes. Returns the outputs in order and
-/// checks that each appears exactly `LATENCY` rising edges after its inputs were presented
-/// (inputs before edge 1, output right after edge `LATENCY`).
-fn run<U: Unit>(uut: &mut U, ops: &[(u64, u64, bool)]) -> Vec<u64> {
-    let n = ops.len();
-    let mut outs = Vec::with_capacity(n);
-    for cyc in 0..n + U::LATENCY + 1 {
-        let (valid, (a, b, s)) = if cyc < n { (true, ops[cyc]) } else { (false, (0, 0, false)) };
-        uut.set(a, b, s, valid);
-        uut.clock(false);
-        settle(uut);
-        uut.clock(true);
-        settle(uut);
-        // rising edge number cyc + 1 has happened
-        let (v, y) = uut.out();
-        if v {
-            assert_eq!(cyc + 1, outs.len() + U::LATENCY, "output {} at the wrong edge", outs.len());
-            outs.push(y);
-        }
-    }
-    assert_eq!(outs.len(), n, "valid outputs lost");
-    outs
-}
 
 fn golden(fmt: Format, op: Op, r: Rounding, a: u64, b: u64) -> u64 {
     let (x, y) = (fmt.from_bits(a), fmt.from_bits(b));
@@ -285,18 +255,12 @@ fn vcd_unit<U: Unit>(mut uut: U, name: &str, ops: &[(u64, u64, bool)]) {
     let mut buf = vec![];
     let mut vcd = write_vcd_header(&mut buf, &uut);
     vcd = write_vcd_dump(vcd, &uut);
-    let mut time = 0u64;
-    for cyc in 0..ops.len() + U::LATENCY + 1 {
-        let (valid, (a, b, s)) = if cyc < ops.len() { (true, ops[cyc]) } else { (false, (0, 0, false)) };
-        uut.set(a, b, s, valid);
-        for high in [false, true] {
-            uut.clock(high);
-            settle(&mut uut);
-            vcd.timestamp(time).unwrap();
-            vcd = write_vcd_change(vcd, &uut);
-            time += 5;
-        }
-    }
+    let mut vcd = Some(vcd);
+    run_traced(&mut uut, ops, |u, time| {
+        let mut v = vcd.take().unwrap();
+        v.timestamp(time).unwrap();
+        vcd = Some(write_vcd_change(v, u));
+    });
     drop(vcd);
     std::fs::write(&path, buf).unwrap();
     println!("wrote {}", path.display());

@@ -53,3 +53,52 @@ pub fn operand(t: Fmt) -> BoxedStrategy<u64> {
     ]
     .boxed()
 }
+
+/// A pipelined unit as the testbenches drive it: one input per cycle with a valid bit, a
+/// fixed latency.
+pub trait Pipelined: rust_hdl::prelude::Block {
+    type In: Copy + Default;
+    type Out;
+    const LATENCY: usize;
+    fn set(&mut self, x: Self::In, valid: bool);
+    fn out(&self) -> (bool, Self::Out);
+    fn clock(&mut self, high: bool);
+}
+
+/// Half a clock period: settle the combinational logic.
+pub fn settle<B: rust_hdl::prelude::Block>(uut: &mut B) {
+    assert!(rust_hdl::prelude::simulate(uut, 1000), "logic did not settle");
+}
+
+/// Drives `ops` one per cycle (valid high), then flushes. Returns the outputs in order and
+/// checks that each appears exactly `LATENCY` rising edges after its inputs were presented
+/// (inputs before edge 1, output right after edge `LATENCY`).
+#[allow(dead_code)]
+pub fn run<U: Pipelined>(uut: &mut U, ops: &[U::In]) -> Vec<U::Out> {
+    run_traced(uut, ops, |_, _| {})
+}
+
+/// [`run`], calling `after_edge(uut, time)` after every clock edge (time in half periods of
+/// 5 units), e.g. to write a VCD.
+pub fn run_traced<U: Pipelined>(uut: &mut U, ops: &[U::In], mut after_edge: impl FnMut(&U, u64)) -> Vec<U::Out> {
+    let n = ops.len();
+    let mut outs = Vec::with_capacity(n);
+    let mut time = 0;
+    for cyc in 0..n + U::LATENCY + 1 {
+        let (valid, x) = if cyc < n { (true, ops[cyc]) } else { (false, U::In::default()) };
+        uut.set(x, valid);
+        for high in [false, true] {
+            uut.clock(high);
+            settle(uut);
+            after_edge(uut, time);
+            time += 5;
+        }
+        let (v, y) = uut.out();
+        if v {
+            assert_eq!(cyc + 1, outs.len() + U::LATENCY, "output {} at the wrong edge", outs.len());
+            outs.push(y);
+        }
+    }
+    assert_eq!(outs.len(), n, "valid outputs lost");
+    outs
+}
