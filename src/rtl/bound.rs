@@ -56,41 +56,8 @@ macro_rules! bound {
             }
         }
 
-        $crate::rtl::bound::bound!(@unit $W, BoundAdd, FpAdd, 4, "FpAdd", "3", "bound_add", "+");
-        $crate::rtl::bound::bound!(@unit $W, BoundMul, FpMul, 5, "FpMul", "4", "bound_mul", "*");
-
-        impl Logic for BoundAdd {
-            #[hdl_gen]
-            fn update(&mut self) {
-                dff_setup!(self, clock, s_step_valid, s_step_y);
-                self.op.clock.next = self.clock.val();
-                self.op.a.next = self.a.val();
-                self.op.b.next = self.b.val();
-                self.op.sub.next = false;
-                self.op.valid_in.next = self.valid_in.val();
-                self.step.x.next = self.op.y.val();
-                self.s_step_valid.d.next = self.op.valid_out.val();
-                self.s_step_y.d.next = self.step.y.val();
-                self.y.next = self.s_step_y.q.val();
-                self.valid_out.next = self.s_step_valid.q.val();
-            }
-        }
-
-        impl Logic for BoundMul {
-            #[hdl_gen]
-            fn update(&mut self) {
-                dff_setup!(self, clock, s_step_valid, s_step_y);
-                self.op.clock.next = self.clock.val();
-                self.op.a.next = self.a.val();
-                self.op.b.next = self.b.val();
-                self.op.valid_in.next = self.valid_in.val();
-                self.step.x.next = self.op.y.val();
-                self.s_step_valid.d.next = self.op.valid_out.val();
-                self.s_step_y.d.next = self.step.y.val();
-                self.y.next = self.s_step_y.q.val();
-                self.valid_out.next = self.s_step_valid.q.val();
-            }
-        }
+        $crate::rtl::bound::bound!(@unit $W, BoundAdd, FpAdd, 4, "FpAdd", "3", "bound_add", "+", tie(sub));
+        $crate::rtl::bound::bound!(@unit $W, BoundMul, FpMul, 5, "FpMul", "4", "bound_mul", "*", tie());
 
         /// The rounding-error bound of a result (golden
         /// [`tcheck::rounding_error`](crate::golden::tcheck::rounding_error)):
@@ -199,7 +166,24 @@ macro_rules! bound {
         }
     };
 
-    (@unit $W:tt, $name:ident, $op:ident, $lat:tt, $ops:expr, $oplat:expr, $golden:expr, $sym:expr) => {
+    (@unit $W:tt, $name:ident, $op:ident, $lat:tt, $ops:expr, $oplat:expr, $golden:expr, $sym:expr, tie($($tie:ident),*)) => {
+        impl Logic for $name {
+            #[hdl_gen]
+            fn update(&mut self) {
+                dff_setup!(self, clock, s_step_valid, s_step_y);
+                self.op.clock.next = self.clock.val();
+                self.op.a.next = self.a.val();
+                self.op.b.next = self.b.val();
+                $(self.op.$tie.next = false;)*
+                self.op.valid_in.next = self.valid_in.val();
+                self.step.x.next = self.op.y.val();
+                self.s_step_valid.d.next = self.op.valid_out.val();
+                self.s_step_y.d.next = self.step.y.val();
+                self.y.next = self.s_step_y.q.val();
+                self.valid_out.next = self.s_step_valid.q.val();
+            }
+        }
+
         #[doc = concat!("Bound ", $golden, " (golden [`tcheck::", $golden, "`](crate::golden::tcheck::", $golden, ")): ")]
         #[doc = concat!("`y = max(next_up(RNE(a ", $sym, " b)), m)` for bounds a, b >= 0, bit for bit for every pair of words.")]
         #[doc = ""]
