@@ -1,7 +1,10 @@
 //! Operand generators shared by the RTL testbenches: bit patterns of a format.
+#![allow(dead_code)] // each testbench uses its own subset
 
 use collision_chip::format::Format;
 use proptest::prelude::*;
+
+pub mod families;
 
 /// A format's bit-pattern fields: `e` exponent bits, `f` fraction bits.
 #[derive(Clone, Copy, Debug)]
@@ -11,7 +14,6 @@ pub struct Fmt {
     pub f: u32,
 }
 
-#[allow(dead_code)] // each testbench uses its own subset
 impl Fmt {
     pub fn of(fmt: Format) -> Fmt {
         Fmt { fmt, e: fmt.exp_bits(), f: fmt.frac_bits() }
@@ -73,7 +75,6 @@ pub fn settle<B: rust_hdl::prelude::Block>(uut: &mut B) {
 /// Drives `ops` one per cycle (valid high), then flushes. Returns the outputs in order and
 /// checks that each appears exactly `LATENCY` rising edges after its inputs were presented
 /// (inputs before edge 1, output right after edge `LATENCY`).
-#[allow(dead_code)]
 pub fn run<U: Pipelined>(uut: &mut U, ops: &[U::In]) -> Vec<U::Out> {
     run_traced(uut, ops, |_, _| {})
 }
