@@ -93,3 +93,44 @@ pub fn tri_unit_directions(f: Format, r: Rounding, a: &TriWord, b: &TriWord, set
         direction(f, r, a, &setup.m_ba, setup.e_ba, b, None),
     ]
 }
+
+/// TRI_UNIT's per-query write port: `(load_addr, load_data)` for M_AB (address 4 i + c),
+/// its bounds (12, 13), M_BA (16 + 4 i + c), its bounds (28, 29) and eta (30).
+pub fn tri_unit_setup_words(f: Format, setup: &HostSetup) -> Vec<(u64, u64)> {
+    let mut out = vec![];
+    for (base, m, e) in [(0u64, &setup.m_ab, setup.e_ab), (16, &setup.m_ba, setup.e_ba)] {
+        for (i, w) in words(f, m).into_iter().enumerate() {
+            out.push((base + i as u64, w));
+        }
+        out.push((base + 12, f.to_bits(e[0])));
+        out.push((base + 13, f.to_bits(e[1])));
+    }
+    out.push((30, f.to_bits(setup.eta)));
+    out
+}
+
+/// One leaf's triangle word on TRI_UNIT's `a_*` / `b_*` ports.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct LeafIn {
+    pub m: [u64; 12],
+    pub e_lin: u64,
+    pub e_tr: u64,
+    pub l_norm: u64,
+    pub v: [[u64; 3]; 3],
+    pub v_exact: bool,
+    pub degenerate: bool,
+}
+
+impl LeafIn {
+    pub fn of(f: Format, w: &TriWord) -> LeafIn {
+        LeafIn {
+            m: words(f, &w.m),
+            e_lin: f.to_bits(w.e_lin),
+            e_tr: f.to_bits(w.e_tr),
+            l_norm: f.to_bits(w.l_norm),
+            v: w.v.map(|p| p.map(|x| f.to_bits(x))),
+            v_exact: w.v_exact,
+            degenerate: w.degenerate,
+        }
+    }
+}

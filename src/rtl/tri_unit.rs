@@ -1,0 +1,361 @@
+//! TRI_UNIT (DATE'05 §4.2): two T.CHECKs and the result FIFO, stamped out per format by
+//! `tri_unit!`.
+
+/// Stamps out `TriUnit` in the calling module (which must also hold `TCheck`).
+/// Arguments: `W` word width.
+macro_rules! tri_unit {
+    ($W:tt) => {
+        /// log2 of the result FIFO's entries.
+        const TRI_FIFO_BITS: usize = 8;
+        declare_sync_fifo!(TriFifo, Bits<34>, 256, 1);
+
+        /// TRI_UNIT: is triangle a of A intersecting triangle b of B? Golden
+        /// [`tri_unit`](crate::golden::tcheck::tri_unit), bit for bit: `tc_ab` tests A's
+        /// edges against U(B) (B's leaf, the frame map M_AB, with the vertex gap), `tc_ba`
+        /// B's edges against U(A) (A's leaf, M_BA); a degenerate leaf leaves its direction
+        /// unknown; the verdict is the Kleene OR of the two: intersecting (`hit`), separate,
+        /// or `uncertain` (the host settles it with the exact oracle).
+        ///
+        /// Ports (words in the format):
+        ///
+        /// * per query, a write port for the frame maps: in `load_en`, `load_addr[5]`,
+        ///   `load_data[W]`; address `4 i + c` (i < 3, c < 4) writes M_AB[i][c], 12 and 13
+        ///   its bounds (linear, translation), `16 + 4 i + c` M_BA[i][c], 28 and 29 its
+        ///   bounds, 30 eta. Written on the rising edge while `load_en` is high.
+        /// * per pair (valid/ready): in `a_*`, `b_*` = the two leaves' triangle words
+        ///   (`m_0[4]`, `m_1[4]`, `m_2[4]` = M rows, `e_lin`, `e_tr`, `l_norm`,
+        ///   `v_x[3]`, `v_y[3]`, `v_z[3]` = vertices, `v_exact`, `degenerate`),
+        ///   `tag[32]` (the pair id), `in_valid`; out `in_ready`. A pair is taken on a
+        ///   rising edge with `in_valid` and `in_ready` high.
+        /// * results (valid/ready): out `out_tag[32]`, `out_hit`, `out_uncertain`,
+        ///   `out_valid`; in `out_ready`. A result leaves on a rising edge with
+        ///   `out_valid` and `out_ready` high, in the order the pairs came in.
+        ///
+        /// Timing: a pair taken at edge t reaches the FIFO's write port after edge
+        /// t + 128 (the T.CHECKs, [`TCheck::LATENCY`]) and is visible at the output
+        /// (`out_valid`) after edge t + 130 (the FIFO's write and read registers).
+        /// Back-pressure: `in_ready` is low while 256 pairs (the FIFO's depth) are taken
+        /// and not yet read out (`count`), so the FIFO never overflows and no result is
+        /// lost; a reader that is always ready sees one result per clock.
+        #[derive(LogicBlock)]
+        pub struct TriUnit {
+            pub clock: Signal<In, Clock>,
+            pub load_en: Signal<In, Bit>,
+            pub load_addr: Signal<In, Bits<5>>,
+            pub load_data: Signal<In, Bits<$W>>,
+            pub a_m_0: [Signal<In, Bits<$W>>; 4],
+            pub a_m_1: [Signal<In, Bits<$W>>; 4],
+            pub a_m_2: [Signal<In, Bits<$W>>; 4],
+            pub a_e_lin: Signal<In, Bits<$W>>,
+            pub a_e_tr: Signal<In, Bits<$W>>,
+            pub a_l_norm: Signal<In, Bits<$W>>,
+            pub a_v_x: [Signal<In, Bits<$W>>; 3],
+            pub a_v_y: [Signal<In, Bits<$W>>; 3],
+            pub a_v_z: [Signal<In, Bits<$W>>; 3],
+            pub a_v_exact: Signal<In, Bit>,
+            pub a_degenerate: Signal<In, Bit>,
+            pub b_m_0: [Signal<In, Bits<$W>>; 4],
+            pub b_m_1: [Signal<In, Bits<$W>>; 4],
+            pub b_m_2: [Signal<In, Bits<$W>>; 4],
+            pub b_e_lin: Signal<In, Bits<$W>>,
+            pub b_e_tr: Signal<In, Bits<$W>>,
+            pub b_l_norm: Signal<In, Bits<$W>>,
+            pub b_v_x: [Signal<In, Bits<$W>>; 3],
+            pub b_v_y: [Signal<In, Bits<$W>>; 3],
+            pub b_v_z: [Signal<In, Bits<$W>>; 3],
+            pub b_v_exact: Signal<In, Bit>,
+            pub b_degenerate: Signal<In, Bit>,
+            pub tag: Signal<In, Bits<32>>,
+            pub in_valid: Signal<In, Bit>,
+            pub in_ready: Signal<Out, Bit>,
+            pub out_tag: Signal<Out, Bits<32>>,
+            pub out_hit: Signal<Out, Bit>,
+            pub out_uncertain: Signal<Out, Bit>,
+            pub out_valid: Signal<Out, Bit>,
+            pub out_ready: Signal<In, Bit>,
+            // per-query registers: rows of M_AB, M_BA; bounds; eta
+            addr_0: [Constant<Bits<5>>; 4],
+            addr_1: [Constant<Bits<5>>; 4],
+            addr_2: [Constant<Bits<5>>; 4],
+            ab_0: [DFF<Bits<$W>>; 4],
+            ab_1: [DFF<Bits<$W>>; 4],
+            ab_2: [DFF<Bits<$W>>; 4],
+            ab_lin: DFF<Bits<$W>>,
+            ab_tr: DFF<Bits<$W>>,
+            ba_0: [DFF<Bits<$W>>; 4],
+            ba_1: [DFF<Bits<$W>>; 4],
+            ba_2: [DFF<Bits<$W>>; 4],
+            ba_lin: DFF<Bits<$W>>,
+            ba_tr: DFF<Bits<$W>>,
+            eta: DFF<Bits<$W>>,
+            // the two directions
+            tc_ab: TCheck,
+            tc_ba: TCheck,
+            degenerate_wait: Delay<Bits<2>, 128>,
+            d1_t: Signal<Local, Bit>,
+            d1_f: Signal<Local, Bit>,
+            d2_t: Signal<Local, Bit>,
+            d2_f: Signal<Local, Bit>,
+            c_hit: Constant<Bits<34>>,
+            c_uncertain: Constant<Bits<34>>,
+            c_full: Constant<Bits<9>>,
+            result: Signal<Local, Bits<34>>,
+            fifo: TriFifo,
+            // pairs taken and not yet read out
+            count: DFF<Bits<9>>,
+            take: Signal<Local, Bit>,
+            give: Signal<Local, Bit>,
+        }
+
+        impl TriUnit {
+            /// Pair in to result visible at the output, with a reader always ready.
+            pub const LATENCY: usize = TCheck::LATENCY + 2;
+            /// Result FIFO entries: pairs taken and not yet read out.
+            pub const FIFO_DEPTH: usize = 1 << TRI_FIFO_BITS;
+
+            /// Both T.CHECKs' value datapaths round with `rounding`.
+            pub fn new(rounding: Rounding) -> Self {
+                Self {
+                    clock: Default::default(),
+                    load_en: Default::default(),
+                    load_addr: Default::default(),
+                    load_data: Default::default(),
+                    a_m_0: Default::default(),
+                    a_m_1: Default::default(),
+                    a_m_2: Default::default(),
+                    a_e_lin: Default::default(),
+                    a_e_tr: Default::default(),
+                    a_l_norm: Default::default(),
+                    a_v_x: Default::default(),
+                    a_v_y: Default::default(),
+                    a_v_z: Default::default(),
+                    a_v_exact: Default::default(),
+                    a_degenerate: Default::default(),
+                    b_m_0: Default::default(),
+                    b_m_1: Default::default(),
+                    b_m_2: Default::default(),
+                    b_e_lin: Default::default(),
+                    b_e_tr: Default::default(),
+                    b_l_norm: Default::default(),
+                    b_v_x: Default::default(),
+                    b_v_y: Default::default(),
+                    b_v_z: Default::default(),
+                    b_v_exact: Default::default(),
+                    b_degenerate: Default::default(),
+                    tag: Default::default(),
+                    in_valid: Default::default(),
+                    in_ready: Default::default(),
+                    out_tag: Default::default(),
+                    out_hit: Default::default(),
+                    out_uncertain: Default::default(),
+                    out_valid: Default::default(),
+                    out_ready: Default::default(),
+                    addr_0: std::array::from_fn(|c| Constant::new((c as u64).into())),
+                    addr_1: std::array::from_fn(|c| Constant::new((4 + c as u64).into())),
+                    addr_2: std::array::from_fn(|c| Constant::new((8 + c as u64).into())),
+                    ab_0: Default::default(),
+                    ab_1: Default::default(),
+                    ab_2: Default::default(),
+                    ab_lin: Default::default(),
+                    ab_tr: Default::default(),
+                    ba_0: Default::default(),
+                    ba_1: Default::default(),
+                    ba_2: Default::default(),
+                    ba_lin: Default::default(),
+                    ba_tr: Default::default(),
+                    eta: Default::default(),
+                    tc_ab: TCheck::new(rounding),
+                    tc_ba: TCheck::new(rounding),
+                    degenerate_wait: Default::default(),
+                    d1_t: Default::default(),
+                    d1_f: Default::default(),
+                    d2_t: Default::default(),
+                    d2_f: Default::default(),
+                    c_hit: Constant::new(2u64.into()),
+                    c_uncertain: Constant::new(1u64.into()),
+                    c_full: Constant::new((1u64 << TRI_FIFO_BITS).into()),
+                    result: Default::default(),
+                    fifo: Default::default(),
+                    count: Default::default(),
+                    take: Default::default(),
+                    give: Default::default(),
+                }
+            }
+        }
+
+        impl Logic for TriUnit {
+            #[hdl_gen]
+            fn update(&mut self) {
+                dff_setup!(self, clock, ab_lin, ab_tr, ba_lin, ba_tr, eta, count);
+                clock!(self, clock, tc_ab, tc_ba, degenerate_wait, fifo);
+                // ---- per-query registers: hold, or load through the write port
+                self.ab_lin.d.next = self.ab_lin.q.val();
+                self.ab_tr.d.next = self.ab_tr.q.val();
+                self.ba_lin.d.next = self.ba_lin.q.val();
+                self.ba_tr.d.next = self.ba_tr.q.val();
+                self.eta.d.next = self.eta.q.val();
+                if self.load_en.val() {
+                    if self.load_addr.val() == 12 {
+                        self.ab_lin.d.next = self.load_data.val();
+                    }
+                    if self.load_addr.val() == 13 {
+                        self.ab_tr.d.next = self.load_data.val();
+                    }
+                    if self.load_addr.val() == 28 {
+                        self.ba_lin.d.next = self.load_data.val();
+                    }
+                    if self.load_addr.val() == 29 {
+                        self.ba_tr.d.next = self.load_data.val();
+                    }
+                    if self.load_addr.val() == 30 {
+                        self.eta.d.next = self.load_data.val();
+                    }
+                }
+                for c in 0..4 {
+                    self.ab_0[c].clock.next = self.clock.val();
+                    self.ab_1[c].clock.next = self.clock.val();
+                    self.ab_2[c].clock.next = self.clock.val();
+                    self.ba_0[c].clock.next = self.clock.val();
+                    self.ba_1[c].clock.next = self.clock.val();
+                    self.ba_2[c].clock.next = self.clock.val();
+                    self.ab_0[c].d.next = self.ab_0[c].q.val();
+                    self.ab_1[c].d.next = self.ab_1[c].q.val();
+                    self.ab_2[c].d.next = self.ab_2[c].q.val();
+                    self.ba_0[c].d.next = self.ba_0[c].q.val();
+                    self.ba_1[c].d.next = self.ba_1[c].q.val();
+                    self.ba_2[c].d.next = self.ba_2[c].q.val();
+                    if self.load_en.val() & (self.load_addr.val() == self.addr_0[c].val()) {
+                        self.ab_0[c].d.next = self.load_data.val();
+                    }
+                    if self.load_en.val() & (self.load_addr.val() == self.addr_1[c].val()) {
+                        self.ab_1[c].d.next = self.load_data.val();
+                    }
+                    if self.load_en.val() & (self.load_addr.val() == self.addr_2[c].val()) {
+                        self.ab_2[c].d.next = self.load_data.val();
+                    }
+                    if self.load_en.val() & (self.load_addr.val() == (self.addr_0[c].val() | 16)) {
+                        self.ba_0[c].d.next = self.load_data.val();
+                    }
+                    if self.load_en.val() & (self.load_addr.val() == (self.addr_1[c].val() | 16)) {
+                        self.ba_1[c].d.next = self.load_data.val();
+                    }
+                    if self.load_en.val() & (self.load_addr.val() == (self.addr_2[c].val() | 16)) {
+                        self.ba_2[c].d.next = self.load_data.val();
+                    }
+                    // ---- A's edges against U(B): B's leaf, M_AB
+                    self.tc_ab.m_0[c].next = self.b_m_0[c].val();
+                    self.tc_ab.m_1[c].next = self.b_m_1[c].val();
+                    self.tc_ab.m_2[c].next = self.b_m_2[c].val();
+                    self.tc_ab.f_0[c].next = self.ab_0[c].q.val();
+                    self.tc_ab.f_1[c].next = self.ab_1[c].q.val();
+                    self.tc_ab.f_2[c].next = self.ab_2[c].q.val();
+                    // ---- B's edges against U(A): A's leaf, M_BA
+                    self.tc_ba.m_0[c].next = self.a_m_0[c].val();
+                    self.tc_ba.m_1[c].next = self.a_m_1[c].val();
+                    self.tc_ba.m_2[c].next = self.a_m_2[c].val();
+                    self.tc_ba.f_0[c].next = self.ba_0[c].q.val();
+                    self.tc_ba.f_1[c].next = self.ba_1[c].q.val();
+                    self.tc_ba.f_2[c].next = self.ba_2[c].q.val();
+                }
+                for k in 0..3 {
+                    self.tc_ab.v_x[k].next = self.a_v_x[k].val();
+                    self.tc_ab.v_y[k].next = self.a_v_y[k].val();
+                    self.tc_ab.v_z[k].next = self.a_v_z[k].val();
+                    self.tc_ba.v_x[k].next = self.b_v_x[k].val();
+                    self.tc_ba.v_y[k].next = self.b_v_y[k].val();
+                    self.tc_ba.v_z[k].next = self.b_v_z[k].val();
+                }
+                self.tc_ab.e_lin.next = self.b_e_lin.val();
+                self.tc_ab.e_tr.next = self.b_e_tr.val();
+                self.tc_ab.l_norm.next = self.b_l_norm.val();
+                self.tc_ab.f_lin.next = self.ab_lin.q.val();
+                self.tc_ab.f_tr.next = self.ab_tr.q.val();
+                self.tc_ab.eta.next = self.eta.q.val();
+                self.tc_ab.gap_en.next = true;
+                self.tc_ab.v_exact.next = self.a_v_exact.val();
+                self.tc_ab.tag.next = self.tag.val();
+                self.tc_ba.e_lin.next = self.a_e_lin.val();
+                self.tc_ba.e_tr.next = self.a_e_tr.val();
+                self.tc_ba.l_norm.next = self.a_l_norm.val();
+                self.tc_ba.f_lin.next = self.ba_lin.q.val();
+                self.tc_ba.f_tr.next = self.ba_tr.q.val();
+                self.tc_ba.eta.next = self.eta.q.val();
+                self.tc_ba.gap_en.next = false;
+                self.tc_ba.v_exact.next = self.b_v_exact.val();
+                self.tc_ba.tag.next = self.tag.val();
+                // ---- back-pressure: take a pair only while the FIFO has room for it
+                self.in_ready.next = self.count.q.val() != self.c_full.val();
+                self.take.next = self.in_valid.val() & (self.count.q.val() != self.c_full.val());
+                self.give.next = self.out_ready.val() & !self.fifo.empty.val();
+                self.count.d.next = self.count.q.val();
+                if self.take.val() & !self.give.val() {
+                    self.count.d.next = self.count.q.val() + 1;
+                }
+                if self.give.val() & !self.take.val() {
+                    self.count.d.next = self.count.q.val() - 1;
+                }
+                self.tc_ab.valid_in.next = self.take.val();
+                self.tc_ba.valid_in.next = self.take.val();
+                self.degenerate_wait.d.next = 0.into();
+                if self.a_degenerate.val() {
+                    self.degenerate_wait.d.next = 1.into();
+                }
+                if self.b_degenerate.val() {
+                    self.degenerate_wait.d.next = 2.into();
+                    if self.a_degenerate.val() {
+                        self.degenerate_wait.d.next = 3.into();
+                    }
+                }
+                // ---- verdict: Kleene OR of the directions (a degenerate leaf: unknown)
+                self.d1_t.next = self.tc_ab.hit.val() & !self.degenerate_wait.q.val().get_bit(1);
+                self.d1_f.next = self.tc_ab.miss.val() & !self.degenerate_wait.q.val().get_bit(1);
+                self.d2_t.next = self.tc_ba.hit.val() & !self.degenerate_wait.q.val().get_bit(0);
+                self.d2_f.next = self.tc_ba.miss.val() & !self.degenerate_wait.q.val().get_bit(0);
+                self.result.next = bit_cast::<34, 32>(self.tc_ab.tag_out.val()) << 2;
+                if self.d1_t.val() | self.d2_t.val() {
+                    self.result.next = (bit_cast::<34, 32>(self.tc_ab.tag_out.val()) << 2) | self.c_hit.val();
+                }
+                if !(self.d1_t.val() | self.d2_t.val()) & !(self.d1_f.val() & self.d2_f.val()) {
+                    self.result.next = (bit_cast::<34, 32>(self.tc_ab.tag_out.val()) << 2) | self.c_uncertain.val();
+                }
+                self.fifo.write.next = self.tc_ab.valid_out.val();
+                self.fifo.data_in.next = self.result.val();
+                self.fifo.read.next = self.give.val();
+                self.out_valid.next = !self.fifo.empty.val();
+                self.out_tag.next = self.fifo.data_out.val().get_bits::<32>(2);
+                self.out_hit.next = self.fifo.data_out.val().get_bit(1);
+                self.out_uncertain.next = self.fifo.data_out.val().get_bit(0);
+            }
+        }
+
+        /// A TRI_UNIT ready to simulate as a top-level block (inputs claimed, connected).
+        /// Large (two T.CHECKs): build it on a thread with a big stack.
+        pub fn tri_unit_top(rounding: Rounding) -> TriUnit {
+            let mut uut = TriUnit::new(rounding);
+            for c in 0..4 {
+                uut.a_m_0[c].connect();
+                uut.a_m_1[c].connect();
+                uut.a_m_2[c].connect();
+                uut.b_m_0[c].connect();
+                uut.b_m_1[c].connect();
+                uut.b_m_2[c].connect();
+            }
+            for k in 0..3 {
+                uut.a_v_x[k].connect();
+                uut.a_v_y[k].connect();
+                uut.a_v_z[k].connect();
+                uut.b_v_x[k].connect();
+                uut.b_v_y[k].connect();
+                uut.b_v_z[k].connect();
+            }
+            top_level!(uut; clock, load_en, load_addr, load_data, a_e_lin, a_e_tr, a_l_norm, a_v_exact, a_degenerate,
+                b_e_lin, b_e_tr, b_l_norm, b_v_exact, b_degenerate, tag, in_valid, out_ready)
+        }
+
+        /// Verilog of TRI_UNIT (top module `top`).
+        pub fn verilog_tri_unit(rounding: Rounding) -> String {
+            generate_verilog(&tri_unit_top(rounding))
+        }
+    };
+}
+pub(crate) use tri_unit;
