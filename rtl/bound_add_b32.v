@@ -41,12 +41,12 @@ module top(clock,a,b,valid_in,y,valid_out);
         .x(step$x),
         .y(step$y)
     );
-    top$s_step_valid s_step_valid(
+    top$op$s1_eff_sub s_step_valid(
         .d(s_step_valid$d),
         .q(s_step_valid$q),
         .clock(s_step_valid$clock)
     );
-    top$s_step_y s_step_y(
+    top$op$s3_y s_step_y(
         .d(s_step_y$d),
         .q(s_step_y$q),
         .clock(s_step_y$clock)
@@ -214,7 +214,7 @@ module top$op(clock,a,b,sub,valid_in,y,valid_out);
         .is_inf(unpack_a$is_inf),
         .is_nan(unpack_a$is_nan)
     );
-    top$op$unpack_b unpack_b(
+    top$op$unpack_a unpack_b(
         .x(unpack_b$x),
         .sign(unpack_b$sign),
         .exp(unpack_b$exp),
@@ -223,32 +223,32 @@ module top$op(clock,a,b,sub,valid_in,y,valid_out);
         .is_inf(unpack_b$is_inf),
         .is_nan(unpack_b$is_nan)
     );
-    top$op$s1_valid s1_valid(
+    top$op$s1_eff_sub s1_valid(
         .d(s1_valid$d),
         .q(s1_valid$q),
         .clock(s1_valid$clock)
     );
-    top$op$s1_nan s1_nan(
+    top$op$s1_eff_sub s1_nan(
         .d(s1_nan$d),
         .q(s1_nan$q),
         .clock(s1_nan$clock)
     );
-    top$op$s1_inf s1_inf(
+    top$op$s1_eff_sub s1_inf(
         .d(s1_inf$d),
         .q(s1_inf$q),
         .clock(s1_inf$clock)
     );
-    top$op$s1_inf_sign s1_inf_sign(
+    top$op$s1_eff_sub s1_inf_sign(
         .d(s1_inf_sign$d),
         .q(s1_inf_sign$q),
         .clock(s1_inf_sign$clock)
     );
-    top$op$s1_zero_sign s1_zero_sign(
+    top$op$s1_eff_sub s1_zero_sign(
         .d(s1_zero_sign$d),
         .q(s1_zero_sign$q),
         .clock(s1_zero_sign$clock)
     );
-    top$op$s1_sign s1_sign(
+    top$op$s1_eff_sub s1_sign(
         .d(s1_sign$d),
         .q(s1_sign$q),
         .clock(s1_sign$clock)
@@ -268,7 +268,7 @@ module top$op(clock,a,b,sub,valid_in,y,valid_out);
         .q(s1_big$q),
         .clock(s1_big$clock)
     );
-    top$op$s1_small s1_small(
+    top$op$s1_big s1_small(
         .d(s1_small$d),
         .q(s1_small$q),
         .clock(s1_small$clock)
@@ -278,37 +278,37 @@ module top$op(clock,a,b,sub,valid_in,y,valid_out);
         .y(norm$y),
         .lz(norm$lz)
     );
-    top$op$s2_valid s2_valid(
+    top$op$s1_eff_sub s2_valid(
         .d(s2_valid$d),
         .q(s2_valid$q),
         .clock(s2_valid$clock)
     );
-    top$op$s2_sign s2_sign(
+    top$op$s1_eff_sub s2_sign(
         .d(s2_sign$d),
         .q(s2_sign$q),
         .clock(s2_sign$clock)
     );
-    top$op$s2_nan s2_nan(
+    top$op$s1_eff_sub s2_nan(
         .d(s2_nan$d),
         .q(s2_nan$q),
         .clock(s2_nan$clock)
     );
-    top$op$s2_inf s2_inf(
+    top$op$s1_eff_sub s2_inf(
         .d(s2_inf$d),
         .q(s2_inf$q),
         .clock(s2_inf$clock)
     );
-    top$op$s2_zero s2_zero(
+    top$op$s1_eff_sub s2_zero(
         .d(s2_zero$d),
         .q(s2_zero$q),
         .clock(s2_zero$clock)
     );
-    top$op$s2_ovf s2_ovf(
+    top$op$s1_eff_sub s2_ovf(
         .d(s2_ovf$d),
         .q(s2_ovf$q),
         .clock(s2_ovf$clock)
     );
-    top$op$s2_efield s2_efield(
+    top$op$s1_exp s2_efield(
         .d(s2_efield$d),
         .q(s2_efield$q),
         .clock(s2_efield$clock)
@@ -329,7 +329,7 @@ module top$op(clock,a,b,sub,valid_in,y,valid_out);
         .nm(round$nm),
         .y(round$y)
     );
-    top$op$s3_valid s3_valid(
+    top$op$s1_eff_sub s3_valid(
         .d(s3_valid$d),
         .q(s3_valid$q),
         .clock(s3_valid$clock)
@@ -652,196 +652,6 @@ module top$op$s1_exp(d,q,clock);
 endmodule // top$op$s1_exp
 
 
-module top$op$s1_inf(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$op$s1_inf
-
-
-module top$op$s1_inf_sign(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$op$s1_inf_sign
-
-
-module top$op$s1_nan(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$op$s1_nan
-
-
-module top$op$s1_sign(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$op$s1_sign
-
-
-module top$op$s1_small(d,q,clock);
-    
-    // Module arguments
-    input wire  [26:0] d;
-    output reg  [26:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 27'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$op$s1_small
-
-
-module top$op$s1_valid(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$op$s1_valid
-
-
-module top$op$s1_zero_sign(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$op$s1_zero_sign
-
-
-module top$op$s2_efield(d,q,clock);
-    
-    // Module arguments
-    input wire  [7:0] d;
-    output reg  [7:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 8'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$op$s2_efield
-
-
-module top$op$s2_inf(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$op$s2_inf
-
-
-module top$op$s2_nan(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$op$s2_nan
-
-
 module top$op$s2_nm(d,q,clock);
     
     // Module arguments
@@ -859,101 +669,6 @@ module top$op$s2_nm(d,q,clock);
     end
           
 endmodule // top$op$s2_nm
-
-
-module top$op$s2_ovf(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$op$s2_ovf
-
-
-module top$op$s2_sign(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$op$s2_sign
-
-
-module top$op$s2_valid(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$op$s2_valid
-
-
-module top$op$s2_zero(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$op$s2_zero
-
-
-module top$op$s3_valid(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$op$s3_valid
 
 
 module top$op$s3_y(d,q,clock);
@@ -1013,84 +728,6 @@ module top$op$unpack_a(x,sign,exp,sig,is_zero,is_inf,is_nan);
     end
     
 endmodule // top$op$unpack_a
-
-
-module top$op$unpack_b(x,sign,exp,sig,is_zero,is_inf,is_nan);
-    
-    // Module arguments
-    input wire  [31:0] x;
-    output reg  sign;
-    output reg  [7:0] exp;
-    output reg  [23:0] sig;
-    output reg  is_zero;
-    output reg  is_inf;
-    output reg  is_nan;
-    
-    // Local signals
-    reg  [7:0] field;
-    reg  [22:0] frac;
-    reg  exp_zero;
-    reg  exp_ones;
-    reg  frac_zero;
-    
-    // Update code
-    always @(*) begin
-        field = x[(32'h17)+:(8)];
-        frac = x[(32'h0)+:(23)];
-        sign = x[32'h1f];
-        exp_zero = field == 32'h0;
-        exp_ones = &field;
-        frac_zero = frac == 32'h0;
-        is_zero = exp_zero & frac_zero;
-        is_inf = exp_ones & frac_zero;
-        is_nan = exp_ones & ~frac_zero;
-        exp = field;
-        sig = (((frac) & 24'hffffff) & ~(1 << (32'h17)) | ((1'b1) << (32'h17)));
-        if (exp_zero) begin
-            exp = 32'h1;
-            sig = ((frac) & 24'hffffff);
-        end
-    end
-    
-endmodule // top$op$unpack_b
-
-
-module top$s_step_valid(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$s_step_valid
-
-
-module top$s_step_y(d,q,clock);
-    
-    // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 32'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$s_step_y
 
 
 module top$step(x,y);

@@ -153,7 +153,7 @@ module top(clock,a,b,valid_in,y,valid_out);
         .is_inf(unpack_a$is_inf),
         .is_nan(unpack_a$is_nan)
     );
-    top$unpack_b unpack_b(
+    top$unpack_a unpack_b(
         .x(unpack_b$x),
         .sign(unpack_b$sign),
         .exp(unpack_b$exp),
@@ -167,22 +167,22 @@ module top(clock,a,b,valid_in,y,valid_out);
         .y(norm_a$y),
         .lz(norm_a$lz)
     );
-    top$norm_b norm_b(
+    top$norm_a norm_b(
         .x(norm_b$x),
         .y(norm_b$y),
         .lz(norm_b$lz)
     );
-    top$s1_valid s1_valid(
+    top$s1_inf s1_valid(
         .d(s1_valid$d),
         .q(s1_valid$q),
         .clock(s1_valid$clock)
     );
-    top$s1_sign s1_sign(
+    top$s1_inf s1_sign(
         .d(s1_sign$d),
         .q(s1_sign$q),
         .clock(s1_sign$clock)
     );
-    top$s1_nan s1_nan(
+    top$s1_inf s1_nan(
         .d(s1_nan$d),
         .q(s1_nan$q),
         .clock(s1_nan$clock)
@@ -192,7 +192,7 @@ module top(clock,a,b,valid_in,y,valid_out);
         .q(s1_inf$q),
         .clock(s1_inf$clock)
     );
-    top$s1_zero s1_zero(
+    top$s1_inf s1_zero(
         .d(s1_zero$d),
         .q(s1_zero$q),
         .clock(s1_zero$clock)
@@ -207,7 +207,7 @@ module top(clock,a,b,valid_in,y,valid_out);
         .q(s1_sig_a$q),
         .clock(s1_sig_a$clock)
     );
-    top$s1_sig_b s1_sig_b(
+    top$s1_sig_a s1_sig_b(
         .d(s1_sig_b$d),
         .q(s1_sig_b$q),
         .clock(s1_sig_b$clock)
@@ -218,32 +218,32 @@ module top(clock,a,b,valid_in,y,valid_out);
         .hi(sig_mul$hi),
         .sticky(sig_mul$sticky)
     );
-    top$s2_valid s2_valid(
+    top$s1_inf s2_valid(
         .d(s2_valid$d),
         .q(s2_valid$q),
         .clock(s2_valid$clock)
     );
-    top$s2_sign s2_sign(
+    top$s1_inf s2_sign(
         .d(s2_sign$d),
         .q(s2_sign$q),
         .clock(s2_sign$clock)
     );
-    top$s2_nan s2_nan(
+    top$s1_inf s2_nan(
         .d(s2_nan$d),
         .q(s2_nan$q),
         .clock(s2_nan$clock)
     );
-    top$s2_inf s2_inf(
+    top$s1_inf s2_inf(
         .d(s2_inf$d),
         .q(s2_inf$q),
         .clock(s2_inf$clock)
     );
-    top$s2_zero s2_zero(
+    top$s1_inf s2_zero(
         .d(s2_zero$d),
         .q(s2_zero$q),
         .clock(s2_zero$clock)
     );
-    top$s2_exp s2_exp(
+    top$s1_exp s2_exp(
         .d(s2_exp$d),
         .q(s2_exp$q),
         .clock(s2_exp$clock)
@@ -253,37 +253,37 @@ module top(clock,a,b,valid_in,y,valid_out);
         .q(s2_hi$q),
         .clock(s2_hi$clock)
     );
-    top$s2_sticky s2_sticky(
+    top$s1_inf s2_sticky(
         .d(s2_sticky$d),
         .q(s2_sticky$q),
         .clock(s2_sticky$clock)
     );
-    top$s3_valid s3_valid(
+    top$s1_inf s3_valid(
         .d(s3_valid$d),
         .q(s3_valid$q),
         .clock(s3_valid$clock)
     );
-    top$s3_sign s3_sign(
+    top$s1_inf s3_sign(
         .d(s3_sign$d),
         .q(s3_sign$q),
         .clock(s3_sign$clock)
     );
-    top$s3_nan s3_nan(
+    top$s1_inf s3_nan(
         .d(s3_nan$d),
         .q(s3_nan$q),
         .clock(s3_nan$clock)
     );
-    top$s3_inf s3_inf(
+    top$s1_inf s3_inf(
         .d(s3_inf$d),
         .q(s3_inf$q),
         .clock(s3_inf$clock)
     );
-    top$s3_zero s3_zero(
+    top$s1_inf s3_zero(
         .d(s3_zero$d),
         .q(s3_zero$q),
         .clock(s3_zero$clock)
     );
-    top$s3_ovf s3_ovf(
+    top$s1_inf s3_ovf(
         .d(s3_ovf$d),
         .q(s3_ovf$q),
         .clock(s3_ovf$clock)
@@ -293,7 +293,7 @@ module top(clock,a,b,valid_in,y,valid_out);
         .q(s3_efield$q),
         .clock(s3_efield$clock)
     );
-    top$s3_nm s3_nm(
+    top$s2_hi s3_nm(
         .d(s3_nm$d),
         .q(s3_nm$q),
         .clock(s3_nm$clock)
@@ -309,7 +309,7 @@ module top(clock,a,b,valid_in,y,valid_out);
         .nm(round$nm),
         .y(round$y)
     );
-    top$s4_valid s4_valid(
+    top$s1_inf s4_valid(
         .d(s4_valid$d),
         .q(s4_valid$q),
         .clock(s4_valid$clock)
@@ -494,57 +494,6 @@ module top$norm_a(x,y,lz);
 endmodule // top$norm_a
 
 
-module top$norm_b(x,y,lz);
-    
-    // Module arguments
-    input wire  [23:0] x;
-    output reg  [23:0] y;
-    output reg  [4:0] lz;
-    
-    // Local signals
-    reg  z16;
-    reg  z8;
-    reg  z4;
-    reg  z2;
-    reg  z1;
-    reg  [23:0] x16;
-    reg  [23:0] x8;
-    reg  [23:0] x4;
-    reg  [23:0] x2;
-    
-    // Update code
-    always @(*) begin
-        z16 = x[(32'h8)+:(16)] == 32'h0;
-        x16 = x;
-        if (z16) begin
-            x16 = x << 32'h10;
-        end
-        z8 = x16[(32'h10)+:(8)] == 32'h0;
-        x8 = x16;
-        if (z8) begin
-            x8 = x16 << 32'h8;
-        end
-        z4 = x8[(32'h14)+:(4)] == 32'h0;
-        x4 = x8;
-        if (z4) begin
-            x4 = x8 << 32'h4;
-        end
-        z2 = x4[(32'h16)+:(2)] == 32'h0;
-        x2 = x4;
-        if (z2) begin
-            x2 = x4 << 32'h2;
-        end
-        z1 = ~x2[32'h17];
-        y = x2;
-        if (z1) begin
-            y = x2 << 32'h1;
-        end
-        lz = (((((((32'h0) & 5'h1f) & ~(1 << (32'h4)) | ((z16) << (32'h4))) & ~(1 << (32'h3)) | ((z8) << (32'h3))) & ~(1 << (32'h2)) | ((z4) << (32'h2))) & ~(1 << (32'h1)) | ((z2) << (32'h1))) & ~(1 << (32'h0)) | ((z1) << (32'h0)));
-    end
-    
-endmodule // top$norm_b
-
-
 module top$round(round_up,sign,nan,inf,zero,ovf,efield,nm,y);
     
     // Module arguments
@@ -649,25 +598,6 @@ module top$s1_inf(d,q,clock);
 endmodule // top$s1_inf
 
 
-module top$s1_nan(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$s1_nan
-
-
 module top$s1_sig_a(d,q,clock);
     
     // Module arguments
@@ -685,101 +615,6 @@ module top$s1_sig_a(d,q,clock);
     end
           
 endmodule // top$s1_sig_a
-
-
-module top$s1_sig_b(d,q,clock);
-    
-    // Module arguments
-    input wire  [23:0] d;
-    output reg  [23:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 24'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$s1_sig_b
-
-
-module top$s1_sign(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$s1_sign
-
-
-module top$s1_valid(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$s1_valid
-
-
-module top$s1_zero(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$s1_zero
-
-
-module top$s2_exp(d,q,clock);
-    
-    // Module arguments
-    input wire  [9:0] d;
-    output reg  [9:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 10'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$s2_exp
 
 
 module top$s2_hi(d,q,clock);
@@ -801,120 +636,6 @@ module top$s2_hi(d,q,clock);
 endmodule // top$s2_hi
 
 
-module top$s2_inf(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$s2_inf
-
-
-module top$s2_nan(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$s2_nan
-
-
-module top$s2_sign(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$s2_sign
-
-
-module top$s2_sticky(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$s2_sticky
-
-
-module top$s2_valid(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$s2_valid
-
-
-module top$s2_zero(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$s2_zero
-
-
 module top$s3_efield(d,q,clock);
     
     // Module arguments
@@ -932,158 +653,6 @@ module top$s3_efield(d,q,clock);
     end
           
 endmodule // top$s3_efield
-
-
-module top$s3_inf(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$s3_inf
-
-
-module top$s3_nan(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$s3_nan
-
-
-module top$s3_nm(d,q,clock);
-    
-    // Module arguments
-    input wire  [25:0] d;
-    output reg  [25:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 26'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$s3_nm
-
-
-module top$s3_ovf(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$s3_ovf
-
-
-module top$s3_sign(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$s3_sign
-
-
-module top$s3_valid(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$s3_valid
-
-
-module top$s3_zero(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$s3_zero
-
-
-module top$s4_valid(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$s4_valid
 
 
 module top$s4_y(d,q,clock);
@@ -1161,43 +730,3 @@ module top$unpack_a(x,sign,exp,sig,is_zero,is_inf,is_nan);
     end
     
 endmodule // top$unpack_a
-
-
-module top$unpack_b(x,sign,exp,sig,is_zero,is_inf,is_nan);
-    
-    // Module arguments
-    input wire  [31:0] x;
-    output reg  sign;
-    output reg  [7:0] exp;
-    output reg  [23:0] sig;
-    output reg  is_zero;
-    output reg  is_inf;
-    output reg  is_nan;
-    
-    // Local signals
-    reg  [7:0] field;
-    reg  [22:0] frac;
-    reg  exp_zero;
-    reg  exp_ones;
-    reg  frac_zero;
-    
-    // Update code
-    always @(*) begin
-        field = x[(32'h17)+:(8)];
-        frac = x[(32'h0)+:(23)];
-        sign = x[32'h1f];
-        exp_zero = field == 32'h0;
-        exp_ones = &field;
-        frac_zero = frac == 32'h0;
-        is_zero = exp_zero & frac_zero;
-        is_inf = exp_ones & frac_zero;
-        is_nan = exp_ones & ~frac_zero;
-        exp = field;
-        sig = (((frac) & 24'hffffff) & ~(1 << (32'h17)) | ((1'b1) << (32'h17)));
-        if (exp_zero) begin
-            exp = 32'h1;
-            sig = ((frac) & 24'hffffff);
-        end
-    end
-    
-endmodule // top$unpack_b

@@ -49,8 +49,9 @@ enum Cmd {
         #[arg(long)]
         json: bool,
     },
-    /// Write the Verilog of every exported RTL unit (rust-hdl's generate_verilog), one file
-    /// per unit, format and rounding: rtl/<unit>.v. Run the files with scripts/check-rtl.sh.
+    /// Write the Verilog of every exported RTL unit (rust-hdl's generate_verilog, identical
+    /// modules merged), one file per unit, format and rounding: rtl/<unit>.v. Run the files
+    /// with scripts/check-rtl.sh.
     ExportVerilog {
         #[arg(long, default_value = "rtl")]
         out: PathBuf,

@@ -53,6 +53,7 @@ mod fp_mul;
 mod klmsel;
 pub mod sim;
 pub mod units;
+pub mod verilog;
 
 /// Stamps out one format's units plus constructors and Verilog export.
 macro_rules! fp_format {

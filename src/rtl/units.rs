@@ -24,8 +24,10 @@ pub struct Unit {
 }
 
 impl Unit {
+    /// The unit's Verilog: rust-hdl's, with modules identical up to their names merged
+    /// ([`dedup_modules`](super::verilog::dedup_modules)).
     pub fn verilog(&self) -> String {
-        (self.verilog)()
+        super::verilog::dedup_modules(&(self.verilog)())
     }
 
     pub fn vectors(&self) -> String {
