@@ -4,6 +4,8 @@
 # Exits non-zero on any mismatch, missing vector file, or synthesis failure.
 # Usage: scripts/check-rtl.sh [--no-synth] [unit ...]    (default: every rtl/*.v)
 # SYNTH_SKIP="unit ..." leaves units out of the Yosys step (their simulations still run).
+# JOBS=N simulations at a time (default: the number of cores); each writes its own build
+# directory under target/verilog/<simulator>/<unit>/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -11,21 +13,40 @@ synth=1
 if [ "${1:-}" = "--no-synth" ]; then synth=0; shift; fi
 if [ $# -gt 0 ]; then units=("$@"); else units=(); for f in rtl/*.v; do units+=("$(basename "$f" .v)"); done; fi
 
-# The exported units name their valid ports valid_in / valid_out. rust-hdl's output needs
-# -Wno-WIDTH (32-bit literals); the adders' normaliser is a chain of bit fields of one
+# The pipelined units name their valid ports valid_in / valid_out; units with a ready/valid
+# handshake (TRI_UNIT) in_valid / out_valid, the run scripts' defaults. rust-hdl's output
+# needs -Wno-WIDTH (32-bit literals); the adders' normaliser is a chain of bit fields of one
 # signal, which Verilator reports as UNOPTFLAT (a scheduling note, not a loop: Icarus and
 # the vectors agree).
-ports=(--in-valid valid_in --out-valid valid_out)
 export VERILATOR_WNO="${VERILATOR_WNO:--Wno-WIDTH -Wno-UNOPTFLAT}"
+jobs_max=${JOBS:-$(nproc 2>/dev/null || echo 2)}
+out_dir=$(mktemp -d)
+trap 'rm -rf "$out_dir"' EXIT
+
+run_one() { # unit simulator
+  local u=$1 sim=$2 ports=()
+  if grep -q "input wire  valid_in;" "rtl/$u.v"; then ports=(--in-valid valid_in --out-valid valid_out); fi
+  local status=0
+  "scripts/run-$sim.sh" "rtl/$u.v" "vectors/$u.hex" "${ports[@]}" >"$out_dir/$u.$sim.out" 2>&1 || status=$?
+  echo "$status" >"$out_dir/$u.$sim.rc"
+}
+
 fail=0
 summary=()
 for u in "${units[@]}"; do
-  v="vectors/$u.hex"
-  if [ ! -f "$v" ]; then echo "missing $v for rtl/$u.v (run: cargo run --release -- vectors)"; fail=1; continue; fi
+  if [ ! -f "vectors/$u.hex" ]; then echo "missing vectors/$u.hex for rtl/$u.v (run: cargo run --release -- vectors)"; fail=1; continue; fi
   for sim in icarus verilator; do
-    if out=$("scripts/run-$sim.sh" "rtl/$u.v" "$v" "${ports[@]}" 2>&1); then status=0; else status=$?; fi
+    while [ "$(jobs -rp | wc -l)" -ge "$jobs_max" ]; do wait -n || true; done
+    run_one "$u" "$sim" &
+  done
+done
+wait
+for u in "${units[@]}"; do
+  [ -f "vectors/$u.hex" ] || continue
+  for sim in icarus verilator; do
+    out=$(cat "$out_dir/$u.$sim.out"); status=$(cat "$out_dir/$u.$sim.rc")
     line=$(grep -E '^[0-9]+ passed, [0-9]+ failed$' <<<"$out" | tail -n 1 || true)
-    if [ $status = 0 ] && [[ "$line" =~ ^[0-9]+\ passed,\ 0\ failed$ ]]; then
+    if [ "$status" = 0 ] && [[ "$line" =~ ^[0-9]+\ passed,\ 0\ failed$ ]]; then
       summary+=("$u $sim: $line")
     else
       summary+=("$u $sim: FAILED (${line:-$(tail -n 1 <<<"$out")})"); fail=1

@@ -472,3 +472,4 @@ fn tri_unit_generated_binary32() {
 fn tri_unit_generated_e8m15() {
     assert_none_pairs("TRI_UNIT generated e8m15", tri_unit_mismatches(Format::REDUCED, generated_job(Format::REDUCED)));
 }
+

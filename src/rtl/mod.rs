@@ -46,12 +46,16 @@ macro_rules! top_level {
 
 mod bound;
 mod common;
+pub mod delay;
 mod dop_unit;
 mod doptrf;
 mod fp_add;
 mod fp_mul;
 mod klmsel;
+mod tcheck;
+mod tri_unit;
 pub mod sim;
+pub mod tri_io;
 pub mod units;
 pub mod verilog;
 
@@ -68,6 +72,8 @@ macro_rules! fp_format {
         $crate::rtl::klmsel::klmsel!($W);
         $crate::rtl::dop_unit::dop_unit!($W);
         $crate::rtl::bound::bound!($W, $WM1, $E, $F);
+        $crate::rtl::tcheck::tcheck!($W, $WM1, $E, $F);
+        $crate::rtl::tri_unit::tri_unit!($W);
 
         /// The golden format these units implement.
         pub const FORMAT: Format = $fmt;

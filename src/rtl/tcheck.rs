@@ -223,14 +223,24 @@ macro_rules! tcheck {
         /// Schedule: products `p[k]` after edge 13; `s01` and `s2c` (`p2 + c`, c waiting 13
         /// clocks) after 21, `p2` waiting 8 clocks for the linear shape; `s` = y after edge
         /// 29. Latency [`AffRow::LATENCY`] = 29 = BMul + 2 BAdd. Ports: in `clock`,
-        /// `a_x[3]`, `a_e[3]`, `b_x[3]`, `b_e[3]`, `c_x`, `c_e`; out `y_x`, `y_e`.
+        /// `a0_x`, `a0_e` .. `a2_x`, `a2_e`, `b0_x` .. `b2_e`, `c_x`, `c_e`; out `y_x`, `y_e`
+        /// (scalar ports: rust-hdl's Verilog cannot address an array port of a block that
+        /// is itself an array element).
         #[derive(LogicBlock)]
         pub struct AffRow {
             pub clock: Signal<In, Clock>,
-            pub a_x: [Signal<In, Bits<$W>>; 3],
-            pub a_e: [Signal<In, Bits<$W>>; 3],
-            pub b_x: [Signal<In, Bits<$W>>; 3],
-            pub b_e: [Signal<In, Bits<$W>>; 3],
+            pub a0_x: Signal<In, Bits<$W>>,
+            pub a0_e: Signal<In, Bits<$W>>,
+            pub a1_x: Signal<In, Bits<$W>>,
+            pub a1_e: Signal<In, Bits<$W>>,
+            pub a2_x: Signal<In, Bits<$W>>,
+            pub a2_e: Signal<In, Bits<$W>>,
+            pub b0_x: Signal<In, Bits<$W>>,
+            pub b0_e: Signal<In, Bits<$W>>,
+            pub b1_x: Signal<In, Bits<$W>>,
+            pub b1_e: Signal<In, Bits<$W>>,
+            pub b2_x: Signal<In, Bits<$W>>,
+            pub b2_e: Signal<In, Bits<$W>>,
             pub c_x: Signal<In, Bits<$W>>,
             pub c_e: Signal<In, Bits<$W>>,
             pub y_x: Signal<Out, Bits<$W>>,
@@ -252,10 +262,18 @@ macro_rules! tcheck {
             pub fn new(rounding: Rounding, affine: bool) -> Self {
                 Self {
                     clock: Default::default(),
-                    a_x: Default::default(),
-                    a_e: Default::default(),
-                    b_x: Default::default(),
-                    b_e: Default::default(),
+                    a0_x: Default::default(),
+                    a0_e: Default::default(),
+                    a1_x: Default::default(),
+                    a1_e: Default::default(),
+                    a2_x: Default::default(),
+                    a2_e: Default::default(),
+                    b0_x: Default::default(),
+                    b0_e: Default::default(),
+                    b1_x: Default::default(),
+                    b1_e: Default::default(),
+                    b2_x: Default::default(),
+                    b2_e: Default::default(),
                     c_x: Default::default(),
                     c_e: Default::default(),
                     y_x: Default::default(),
@@ -277,13 +295,21 @@ macro_rules! tcheck {
             #[hdl_gen]
             fn update(&mut self) {
                 clock!(self, clock, s01, s2c, s, c_x_wait, c_e_wait, p2_x_wait, p2_e_wait);
-                for k in 0..3 {
-                    self.p[k].clock.next = self.clock.val();
-                    self.p[k].ax.next = self.a_x[k].val();
-                    self.p[k].ae.next = self.a_e[k].val();
-                    self.p[k].bx.next = self.b_x[k].val();
-                    self.p[k].be.next = self.b_e[k].val();
-                }
+                self.p[0].clock.next = self.clock.val();
+                self.p[0].ax.next = self.a0_x.val();
+                self.p[0].ae.next = self.a0_e.val();
+                self.p[0].bx.next = self.b0_x.val();
+                self.p[0].be.next = self.b0_e.val();
+                self.p[1].clock.next = self.clock.val();
+                self.p[1].ax.next = self.a1_x.val();
+                self.p[1].ae.next = self.a1_e.val();
+                self.p[1].bx.next = self.b1_x.val();
+                self.p[1].be.next = self.b1_e.val();
+                self.p[2].clock.next = self.clock.val();
+                self.p[2].ax.next = self.a2_x.val();
+                self.p[2].ae.next = self.a2_e.val();
+                self.p[2].bx.next = self.b2_x.val();
+                self.p[2].be.next = self.b2_e.val();
                 self.s01.ax.next = self.p[0].x.val();
                 self.s01.ae.next = self.p[0].e.val();
                 self.s01.bx.next = self.p[1].x.val();
@@ -320,19 +346,27 @@ macro_rules! tcheck {
         ///
         /// Schedule (bound units): `bu`, `bv` after edge 4, `uv` 8, `t` = 2 uv 13, `w` =
         /// 1 + t 17, `q` = eta w 22, `g` = 2 lambda q 27, `eg[k]` = e_k + g 31. Latency
-        /// [`Gap::LATENCY`] = 31. Ports: in `clock`, `x[3]`, `e[3]` (the vertex),
-        /// `two_lambda`, `eta`, `ok`, `en`; out `y_x[3]`, `y_e[3]`.
+        /// [`Gap::LATENCY`] = 31. Ports: in `clock`, `x0`, `e0` .. `x2`, `e2` (the vertex),
+        /// `two_lambda`, `eta`, `ok`, `en`; out `y0_x`, `y0_e` .. `y2_x`, `y2_e`.
         #[derive(LogicBlock)]
         pub struct Gap {
             pub clock: Signal<In, Clock>,
-            pub x: [Signal<In, Bits<$W>>; 3],
-            pub e: [Signal<In, Bits<$W>>; 3],
+            pub x0: Signal<In, Bits<$W>>,
+            pub e0: Signal<In, Bits<$W>>,
+            pub x1: Signal<In, Bits<$W>>,
+            pub e1: Signal<In, Bits<$W>>,
+            pub x2: Signal<In, Bits<$W>>,
+            pub e2: Signal<In, Bits<$W>>,
             pub two_lambda: Signal<In, Bits<$W>>,
             pub eta: Signal<In, Bits<$W>>,
             pub ok: Signal<In, Bit>,
             pub en: Signal<In, Bit>,
-            pub y_x: [Signal<Out, Bits<$W>>; 3],
-            pub y_e: [Signal<Out, Bits<$W>>; 3],
+            pub y0_x: Signal<Out, Bits<$W>>,
+            pub y0_e: Signal<Out, Bits<$W>>,
+            pub y1_x: Signal<Out, Bits<$W>>,
+            pub y1_e: Signal<Out, Bits<$W>>,
+            pub y2_x: Signal<Out, Bits<$W>>,
+            pub y2_e: Signal<Out, Bits<$W>>,
             c_one: Constant<Bits<$W>>,
             c_two: Constant<Bits<$W>>,
             c_inf: Constant<Bits<$W>>,
@@ -361,14 +395,22 @@ macro_rules! tcheck {
                 let ones: u64 = (1u64 << $E) - 1;
                 Self {
                     clock: Default::default(),
-                    x: Default::default(),
-                    e: Default::default(),
+                    x0: Default::default(),
+                    e0: Default::default(),
+                    x1: Default::default(),
+                    e1: Default::default(),
+                    x2: Default::default(),
+                    e2: Default::default(),
                     two_lambda: Default::default(),
                     eta: Default::default(),
                     ok: Default::default(),
                     en: Default::default(),
-                    y_x: Default::default(),
-                    y_e: Default::default(),
+                    y0_x: Default::default(),
+                    y0_e: Default::default(),
+                    y1_x: Default::default(),
+                    y1_e: Default::default(),
+                    y2_x: Default::default(),
+                    y2_e: Default::default(),
                     c_one: Constant::new(pattern(bias, 0)),
                     c_two: Constant::new(pattern(bias + 1, 0)),
                     c_inf: Constant::new(pattern(ones, 0)),
@@ -395,11 +437,11 @@ macro_rules! tcheck {
             #[hdl_gen]
             fn update(&mut self) {
                 clock!(self, clock, bu, bv, uv, t, w, q, g, eta_wait, two_lambda_wait, ok_wait, en_wait);
-                self.bu.a.next = bit_cast::<$W, $WM1>(self.x[0].val().get_bits::<$WM1>(0));
-                self.bu.b.next = self.e[0].val();
+                self.bu.a.next = bit_cast::<$W, $WM1>(self.x0.val().get_bits::<$WM1>(0));
+                self.bu.b.next = self.e0.val();
                 self.bu.valid_in.next = false;
-                self.bv.a.next = bit_cast::<$W, $WM1>(self.x[1].val().get_bits::<$WM1>(0));
-                self.bv.b.next = self.e[1].val();
+                self.bv.a.next = bit_cast::<$W, $WM1>(self.x1.val().get_bits::<$WM1>(0));
+                self.bv.b.next = self.e1.val();
                 self.bv.valid_in.next = false;
                 self.uv.a.next = self.bu.y.val();
                 self.uv.b.next = self.bv.y.val();
@@ -420,13 +462,17 @@ macro_rules! tcheck {
                 self.g.valid_in.next = false;
                 self.ok_wait.d.next = self.ok.val();
                 self.en_wait.d.next = self.en.val();
+                self.x_wait[0].d.next = self.x0.val();
+                self.e_wait[0].d.next = self.e0.val();
+                self.x_wait[1].d.next = self.x1.val();
+                self.e_wait[1].d.next = self.e1.val();
+                self.x_wait[2].d.next = self.x2.val();
+                self.e_wait[2].d.next = self.e2.val();
                 for k in 0..3 {
                     self.eg[k].clock.next = self.clock.val();
                     self.x_wait[k].clock.next = self.clock.val();
                     self.e_wait[k].clock.next = self.clock.val();
                     self.e_pass[k].clock.next = self.clock.val();
-                    self.x_wait[k].d.next = self.x[k].val();
-                    self.e_wait[k].d.next = self.e[k].val();
                     self.e_pass[k].d.next = self.e_wait[k].q.val();
                     self.eg[k].a.next = self.e_wait[k].q.val();
                     self.eg[k].b.next = self.g.y.val();
@@ -434,11 +480,21 @@ macro_rules! tcheck {
                         self.eg[k].b.next = self.c_inf.val();
                     }
                     self.eg[k].valid_in.next = false;
-                    self.y_x[k].next = self.x_wait[k].q.val();
-                    self.y_e[k].next = self.e_pass[k].q.val();
-                    if self.en_wait.q.val() {
-                        self.y_e[k].next = self.eg[k].y.val();
-                    }
+                }
+                self.y0_x.next = self.x_wait[0].q.val();
+                self.y0_e.next = self.e_pass[0].q.val();
+                if self.en_wait.q.val() {
+                    self.y0_e.next = self.eg[0].y.val();
+                }
+                self.y1_x.next = self.x_wait[1].q.val();
+                self.y1_e.next = self.e_pass[1].q.val();
+                if self.en_wait.q.val() {
+                    self.y1_e.next = self.eg[1].y.val();
+                }
+                self.y2_x.next = self.x_wait[2].q.val();
+                self.y2_e.next = self.e_pass[2].q.val();
+                if self.en_wait.q.val() {
+                    self.y2_e.next = self.eg[2].y.val();
                 }
             }
         }
@@ -452,15 +508,24 @@ macro_rules! tcheck {
         /// Schedule: products after edge 13 (`Pz`, `Qz` wait 13 for `rz`); `a`, `b`, `rz`
         /// 21; `ab` = a + b 29 (`rz` waits 8); `s` 37. Each sign is taken when its value
         /// is ready and its two bits wait for `s`. Latency [`Edge::LATENCY`] = 37 (outputs
-        /// combinational after the last adder). Ports: in `clock`, `p_x[3]`, `p_e[3]`,
-        /// `q_x[3]`, `q_e[3]`; out `s_x`, `s_e`, `cross_t`, `cross_f`.
+        /// combinational after the last adder). Ports: in `clock`, `p0_x`, `p0_e` .. `p2_e`
+        /// (P's coordinates and bounds), `q0_x` .. `q2_e`; out `s_x`, `s_e`, `cross_t`,
+        /// `cross_f`.
         #[derive(LogicBlock)]
         pub struct Edge {
             pub clock: Signal<In, Clock>,
-            pub p_x: [Signal<In, Bits<$W>>; 3],
-            pub p_e: [Signal<In, Bits<$W>>; 3],
-            pub q_x: [Signal<In, Bits<$W>>; 3],
-            pub q_e: [Signal<In, Bits<$W>>; 3],
+            pub p0_x: Signal<In, Bits<$W>>,
+            pub p0_e: Signal<In, Bits<$W>>,
+            pub p1_x: Signal<In, Bits<$W>>,
+            pub p1_e: Signal<In, Bits<$W>>,
+            pub p2_x: Signal<In, Bits<$W>>,
+            pub p2_e: Signal<In, Bits<$W>>,
+            pub q0_x: Signal<In, Bits<$W>>,
+            pub q0_e: Signal<In, Bits<$W>>,
+            pub q1_x: Signal<In, Bits<$W>>,
+            pub q1_e: Signal<In, Bits<$W>>,
+            pub q2_x: Signal<In, Bits<$W>>,
+            pub q2_e: Signal<In, Bits<$W>>,
             pub s_x: Signal<Out, Bits<$W>>,
             pub s_e: Signal<Out, Bits<$W>>,
             pub cross_t: Signal<Out, Bit>,
@@ -511,10 +576,18 @@ macro_rules! tcheck {
             pub fn new(rounding: Rounding) -> Self {
                 Self {
                     clock: Default::default(),
-                    p_x: Default::default(),
-                    p_e: Default::default(),
-                    q_x: Default::default(),
-                    q_e: Default::default(),
+                    p0_x: Default::default(),
+                    p0_e: Default::default(),
+                    p1_x: Default::default(),
+                    p1_e: Default::default(),
+                    p2_x: Default::default(),
+                    p2_e: Default::default(),
+                    q0_x: Default::default(),
+                    q0_e: Default::default(),
+                    q1_x: Default::default(),
+                    q1_e: Default::default(),
+                    q2_x: Default::default(),
+                    q2_e: Default::default(),
                     s_x: Default::default(),
                     s_e: Default::default(),
                     cross_t: Default::default(),
@@ -568,22 +641,22 @@ macro_rules! tcheck {
                 clock!(self, clock, a, b, rz, ab, rz_x_wait, rz_e_wait, s);
                 clock!(self, clock, pz_sgn_wait, qz_sgn_wait, rz_sgn_wait, a_sgn_wait, b_sgn_wait);
                 // ---- stage 3: products, then a, b, r_z
-                self.px_qz.ax.next = self.p_x[0].val();
-                self.px_qz.ae.next = self.p_e[0].val();
-                self.px_qz.bx.next = self.q_x[2].val();
-                self.px_qz.be.next = self.q_e[2].val();
-                self.qx_pz.ax.next = self.q_x[0].val();
-                self.qx_pz.ae.next = self.q_e[0].val();
-                self.qx_pz.bx.next = self.p_x[2].val();
-                self.qx_pz.be.next = self.p_e[2].val();
-                self.py_qz.ax.next = self.p_x[1].val();
-                self.py_qz.ae.next = self.p_e[1].val();
-                self.py_qz.bx.next = self.q_x[2].val();
-                self.py_qz.be.next = self.q_e[2].val();
-                self.qy_pz.ax.next = self.q_x[1].val();
-                self.qy_pz.ae.next = self.q_e[1].val();
-                self.qy_pz.bx.next = self.p_x[2].val();
-                self.qy_pz.be.next = self.p_e[2].val();
+                self.px_qz.ax.next = self.p0_x.val();
+                self.px_qz.ae.next = self.p0_e.val();
+                self.px_qz.bx.next = self.q2_x.val();
+                self.px_qz.be.next = self.q2_e.val();
+                self.qx_pz.ax.next = self.q0_x.val();
+                self.qx_pz.ae.next = self.q0_e.val();
+                self.qx_pz.bx.next = self.p2_x.val();
+                self.qx_pz.be.next = self.p2_e.val();
+                self.py_qz.ax.next = self.p1_x.val();
+                self.py_qz.ae.next = self.p1_e.val();
+                self.py_qz.bx.next = self.q2_x.val();
+                self.py_qz.be.next = self.q2_e.val();
+                self.qy_pz.ax.next = self.q1_x.val();
+                self.qy_pz.ae.next = self.q1_e.val();
+                self.qy_pz.bx.next = self.p2_x.val();
+                self.qy_pz.be.next = self.p2_e.val();
                 self.a.ax.next = self.px_qz.x.val();
                 self.a.ae.next = self.px_qz.e.val();
                 self.a.bx.next = self.qx_pz.x.val();
@@ -594,10 +667,10 @@ macro_rules! tcheck {
                 self.b.bx.next = self.qy_pz.x.val();
                 self.b.be.next = self.qy_pz.e.val();
                 self.b.sub.next = true;
-                self.pz_x_wait.d.next = self.p_x[2].val();
-                self.pz_e_wait.d.next = self.p_e[2].val();
-                self.qz_x_wait.d.next = self.q_x[2].val();
-                self.qz_e_wait.d.next = self.q_e[2].val();
+                self.pz_x_wait.d.next = self.p2_x.val();
+                self.pz_e_wait.d.next = self.p2_e.val();
+                self.qz_x_wait.d.next = self.q2_x.val();
+                self.qz_e_wait.d.next = self.q2_e.val();
                 self.rz.ax.next = self.qz_x_wait.q.val();
                 self.rz.ae.next = self.qz_e_wait.q.val();
                 self.rz.bx.next = self.pz_x_wait.q.val();
@@ -617,10 +690,10 @@ macro_rules! tcheck {
                 self.s.be.next = self.rz_e_wait.q.val();
                 self.s.sub.next = true;
                 // ---- stage 5: signs as they are ready, waiting for s's
-                self.sign_pz.x.next = self.p_x[2].val();
-                self.sign_pz.e.next = self.p_e[2].val();
-                self.sign_qz.x.next = self.q_x[2].val();
-                self.sign_qz.e.next = self.q_e[2].val();
+                self.sign_pz.x.next = self.p2_x.val();
+                self.sign_pz.e.next = self.p2_e.val();
+                self.sign_qz.x.next = self.q2_x.val();
+                self.sign_qz.e.next = self.q2_e.val();
                 self.pz_sgn_wait.d.next = self.sign_pz.sgn.val();
                 self.qz_sgn_wait.d.next = self.sign_qz.sgn.val();
                 self.sign_rz.x.next = self.rz.x.val();
@@ -928,39 +1001,59 @@ macro_rules! tcheck {
                     self.mb_0[j].clock.next = self.clock.val();
                     self.mb_1[j].clock.next = self.clock.val();
                     self.mb_2[j].clock.next = self.clock.val();
-                    self.mb_0[j].b_x[0].next = self.in_f_0[j].q.val();
-                    self.mb_0[j].b_x[1].next = self.in_f_1[j].q.val();
-                    self.mb_0[j].b_x[2].next = self.in_f_2[j].q.val();
-                    self.mb_1[j].b_x[0].next = self.in_f_0[j].q.val();
-                    self.mb_1[j].b_x[1].next = self.in_f_1[j].q.val();
-                    self.mb_1[j].b_x[2].next = self.in_f_2[j].q.val();
-                    self.mb_2[j].b_x[0].next = self.in_f_0[j].q.val();
-                    self.mb_2[j].b_x[1].next = self.in_f_1[j].q.val();
-                    self.mb_2[j].b_x[2].next = self.in_f_2[j].q.val();
-                    for k in 0..3 {
-                        self.mb_0[j].a_e[k].next = self.in_e_lin.q.val();
-                        self.mb_1[j].a_e[k].next = self.in_e_lin.q.val();
-                        self.mb_2[j].a_e[k].next = self.in_e_lin.q.val();
-                        self.mb_0[j].b_e[k].next = self.in_f_lin.q.val();
-                        self.mb_1[j].b_e[k].next = self.in_f_lin.q.val();
-                        self.mb_2[j].b_e[k].next = self.in_f_lin.q.val();
-                        self.mb_0[j].a_x[k].next = self.in_m_0[k].q.val();
-                        self.mb_1[j].a_x[k].next = self.in_m_1[k].q.val();
-                        self.mb_2[j].a_x[k].next = self.in_m_2[k].q.val();
-                    }
+                    self.mb_0[j].a0_x.next = self.in_m_0[0].q.val();
+                    self.mb_0[j].a0_e.next = self.in_e_lin.q.val();
+                    self.mb_0[j].b0_x.next = self.in_f_0[j].q.val();
+                    self.mb_0[j].b0_e.next = self.in_f_lin.q.val();
+                    self.mb_0[j].a1_x.next = self.in_m_0[1].q.val();
+                    self.mb_0[j].a1_e.next = self.in_e_lin.q.val();
+                    self.mb_0[j].b1_x.next = self.in_f_1[j].q.val();
+                    self.mb_0[j].b1_e.next = self.in_f_lin.q.val();
+                    self.mb_0[j].a2_x.next = self.in_m_0[2].q.val();
+                    self.mb_0[j].a2_e.next = self.in_e_lin.q.val();
+                    self.mb_0[j].b2_x.next = self.in_f_2[j].q.val();
+                    self.mb_0[j].b2_e.next = self.in_f_lin.q.val();
                     self.mb_0[j].c_x.next = self.in_m_0[3].q.val();
-                    self.mb_1[j].c_x.next = self.in_m_1[3].q.val();
-                    self.mb_2[j].c_x.next = self.in_m_2[3].q.val();
                     self.mb_0[j].c_e.next = self.in_e_tr.q.val();
+                    self.mb_1[j].a0_x.next = self.in_m_1[0].q.val();
+                    self.mb_1[j].a0_e.next = self.in_e_lin.q.val();
+                    self.mb_1[j].b0_x.next = self.in_f_0[j].q.val();
+                    self.mb_1[j].b0_e.next = self.in_f_lin.q.val();
+                    self.mb_1[j].a1_x.next = self.in_m_1[1].q.val();
+                    self.mb_1[j].a1_e.next = self.in_e_lin.q.val();
+                    self.mb_1[j].b1_x.next = self.in_f_1[j].q.val();
+                    self.mb_1[j].b1_e.next = self.in_f_lin.q.val();
+                    self.mb_1[j].a2_x.next = self.in_m_1[2].q.val();
+                    self.mb_1[j].a2_e.next = self.in_e_lin.q.val();
+                    self.mb_1[j].b2_x.next = self.in_f_2[j].q.val();
+                    self.mb_1[j].b2_e.next = self.in_f_lin.q.val();
+                    self.mb_1[j].c_x.next = self.in_m_1[3].q.val();
                     self.mb_1[j].c_e.next = self.in_e_tr.q.val();
+                    self.mb_2[j].a0_x.next = self.in_m_2[0].q.val();
+                    self.mb_2[j].a0_e.next = self.in_e_lin.q.val();
+                    self.mb_2[j].b0_x.next = self.in_f_0[j].q.val();
+                    self.mb_2[j].b0_e.next = self.in_f_lin.q.val();
+                    self.mb_2[j].a1_x.next = self.in_m_2[1].q.val();
+                    self.mb_2[j].a1_e.next = self.in_e_lin.q.val();
+                    self.mb_2[j].b1_x.next = self.in_f_1[j].q.val();
+                    self.mb_2[j].b1_e.next = self.in_f_lin.q.val();
+                    self.mb_2[j].a2_x.next = self.in_m_2[2].q.val();
+                    self.mb_2[j].a2_e.next = self.in_e_lin.q.val();
+                    self.mb_2[j].b2_x.next = self.in_f_2[j].q.val();
+                    self.mb_2[j].b2_e.next = self.in_f_lin.q.val();
+                    self.mb_2[j].c_x.next = self.in_m_2[3].q.val();
                     self.mb_2[j].c_e.next = self.in_e_tr.q.val();
                 }
                 // the translation column's operands from the frame carry f_tr
-                for k in 0..3 {
-                    self.mb_0[3].b_e[k].next = self.in_f_tr.q.val();
-                    self.mb_1[3].b_e[k].next = self.in_f_tr.q.val();
-                    self.mb_2[3].b_e[k].next = self.in_f_tr.q.val();
-                }
+                self.mb_0[3].b0_e.next = self.in_f_tr.q.val();
+                self.mb_0[3].b1_e.next = self.in_f_tr.q.val();
+                self.mb_0[3].b2_e.next = self.in_f_tr.q.val();
+                self.mb_1[3].b0_e.next = self.in_f_tr.q.val();
+                self.mb_1[3].b1_e.next = self.in_f_tr.q.val();
+                self.mb_1[3].b2_e.next = self.in_f_tr.q.val();
+                self.mb_2[3].b0_e.next = self.in_f_tr.q.val();
+                self.mb_2[3].b1_e.next = self.in_f_tr.q.val();
+                self.mb_2[3].b2_e.next = self.in_f_tr.q.val();
                 // ---- the vertices wait for M_b; their bound: 0 if exact, else err(v) to nearest
                 self.v_exact_wait.d.next = self.in_v_exact.q.val();
                 for k in 0..3 {
@@ -1003,40 +1096,50 @@ macro_rules! tcheck {
                 // ---- stage 2: V'_ik = (Mb_i0 x_k + Mb_i1 y_k) + (Mb_i2 z_k + Mb_i3)
                 for k in 0..3 {
                     self.vt_0[k].clock.next = self.clock.val();
-                    self.vt_1[k].clock.next = self.clock.val();
-                    self.vt_2[k].clock.next = self.clock.val();
-                    for l in 0..3 {
-                        self.vt_0[k].a_x[l].next = self.mb_0[l].y_x.val();
-                        self.vt_0[k].a_e[l].next = self.mb_0[l].y_e.val();
-                        self.vt_1[k].a_x[l].next = self.mb_1[l].y_x.val();
-                        self.vt_1[k].a_e[l].next = self.mb_1[l].y_e.val();
-                        self.vt_2[k].a_x[l].next = self.mb_2[l].y_x.val();
-                        self.vt_2[k].a_e[l].next = self.mb_2[l].y_e.val();
-                    }
+                    self.vt_0[k].a0_x.next = self.mb_0[0].y_x.val();
+                    self.vt_0[k].a0_e.next = self.mb_0[0].y_e.val();
+                    self.vt_0[k].a1_x.next = self.mb_0[1].y_x.val();
+                    self.vt_0[k].a1_e.next = self.mb_0[1].y_e.val();
+                    self.vt_0[k].a2_x.next = self.mb_0[2].y_x.val();
+                    self.vt_0[k].a2_e.next = self.mb_0[2].y_e.val();
                     self.vt_0[k].c_x.next = self.mb_0[3].y_x.val();
                     self.vt_0[k].c_e.next = self.mb_0[3].y_e.val();
+                    self.vt_0[k].b0_x.next = self.v_x_wait[k].q.val();
+                    self.vt_0[k].b0_e.next = self.c_ve_x[k].val();
+                    self.vt_0[k].b1_x.next = self.v_y_wait[k].q.val();
+                    self.vt_0[k].b1_e.next = self.c_ve_y[k].val();
+                    self.vt_0[k].b2_x.next = self.v_z_wait[k].q.val();
+                    self.vt_0[k].b2_e.next = self.c_ve_z[k].val();
+                    self.vt_1[k].clock.next = self.clock.val();
+                    self.vt_1[k].a0_x.next = self.mb_1[0].y_x.val();
+                    self.vt_1[k].a0_e.next = self.mb_1[0].y_e.val();
+                    self.vt_1[k].a1_x.next = self.mb_1[1].y_x.val();
+                    self.vt_1[k].a1_e.next = self.mb_1[1].y_e.val();
+                    self.vt_1[k].a2_x.next = self.mb_1[2].y_x.val();
+                    self.vt_1[k].a2_e.next = self.mb_1[2].y_e.val();
                     self.vt_1[k].c_x.next = self.mb_1[3].y_x.val();
                     self.vt_1[k].c_e.next = self.mb_1[3].y_e.val();
+                    self.vt_1[k].b0_x.next = self.v_x_wait[k].q.val();
+                    self.vt_1[k].b0_e.next = self.c_ve_x[k].val();
+                    self.vt_1[k].b1_x.next = self.v_y_wait[k].q.val();
+                    self.vt_1[k].b1_e.next = self.c_ve_y[k].val();
+                    self.vt_1[k].b2_x.next = self.v_z_wait[k].q.val();
+                    self.vt_1[k].b2_e.next = self.c_ve_z[k].val();
+                    self.vt_2[k].clock.next = self.clock.val();
+                    self.vt_2[k].a0_x.next = self.mb_2[0].y_x.val();
+                    self.vt_2[k].a0_e.next = self.mb_2[0].y_e.val();
+                    self.vt_2[k].a1_x.next = self.mb_2[1].y_x.val();
+                    self.vt_2[k].a1_e.next = self.mb_2[1].y_e.val();
+                    self.vt_2[k].a2_x.next = self.mb_2[2].y_x.val();
+                    self.vt_2[k].a2_e.next = self.mb_2[2].y_e.val();
                     self.vt_2[k].c_x.next = self.mb_2[3].y_x.val();
                     self.vt_2[k].c_e.next = self.mb_2[3].y_e.val();
-                    self.vt_0[k].b_x[0].next = self.v_x_wait[k].q.val();
-                    self.vt_0[k].b_x[1].next = self.v_y_wait[k].q.val();
-                    self.vt_0[k].b_x[2].next = self.v_z_wait[k].q.val();
-                    self.vt_0[k].b_e[0].next = self.c_ve_x[k].val();
-                    self.vt_0[k].b_e[1].next = self.c_ve_y[k].val();
-                    self.vt_0[k].b_e[2].next = self.c_ve_z[k].val();
-                    self.vt_1[k].b_x[0].next = self.v_x_wait[k].q.val();
-                    self.vt_1[k].b_x[1].next = self.v_y_wait[k].q.val();
-                    self.vt_1[k].b_x[2].next = self.v_z_wait[k].q.val();
-                    self.vt_1[k].b_e[0].next = self.c_ve_x[k].val();
-                    self.vt_1[k].b_e[1].next = self.c_ve_y[k].val();
-                    self.vt_1[k].b_e[2].next = self.c_ve_z[k].val();
-                    self.vt_2[k].b_x[0].next = self.v_x_wait[k].q.val();
-                    self.vt_2[k].b_x[1].next = self.v_y_wait[k].q.val();
-                    self.vt_2[k].b_x[2].next = self.v_z_wait[k].q.val();
-                    self.vt_2[k].b_e[0].next = self.c_ve_x[k].val();
-                    self.vt_2[k].b_e[1].next = self.c_ve_y[k].val();
-                    self.vt_2[k].b_e[2].next = self.c_ve_z[k].val();
+                    self.vt_2[k].b0_x.next = self.v_x_wait[k].q.val();
+                    self.vt_2[k].b0_e.next = self.c_ve_x[k].val();
+                    self.vt_2[k].b1_x.next = self.v_y_wait[k].q.val();
+                    self.vt_2[k].b1_e.next = self.c_ve_y[k].val();
+                    self.vt_2[k].b2_x.next = self.v_z_wait[k].q.val();
+                    self.vt_2[k].b2_e.next = self.c_ve_z[k].val();
                 }
                 // ---- the gap's leaf terms: lambda = l_norm + e_lin, 2 lambda, (4 lambda) eta <= 1/2
                 self.lambda.a.next = self.in_l_norm.q.val();
@@ -1058,32 +1161,54 @@ macro_rules! tcheck {
                 self.gap_en_wait.d.next = self.in_gap_en.q.val();
                 for k in 0..3 {
                     self.gap[k].clock.next = self.clock.val();
-                    self.gap[k].x[0].next = self.vt_0[k].y_x.val();
-                    self.gap[k].e[0].next = self.vt_0[k].y_e.val();
-                    self.gap[k].x[1].next = self.vt_1[k].y_x.val();
-                    self.gap[k].e[1].next = self.vt_1[k].y_e.val();
-                    self.gap[k].x[2].next = self.vt_2[k].y_x.val();
-                    self.gap[k].e[2].next = self.vt_2[k].y_e.val();
+                    self.gap[k].x0.next = self.vt_0[k].y_x.val();
+                    self.gap[k].e0.next = self.vt_0[k].y_e.val();
+                    self.gap[k].x1.next = self.vt_1[k].y_x.val();
+                    self.gap[k].e1.next = self.vt_1[k].y_e.val();
+                    self.gap[k].x2.next = self.vt_2[k].y_x.val();
+                    self.gap[k].e2.next = self.vt_2[k].y_e.val();
                     self.gap[k].two_lambda.next = self.two_lambda_wait.q.val();
                     self.gap[k].eta.next = self.eta_wait.q.val();
                     self.gap[k].ok.next = self.ok_wait.q.val();
                     self.gap[k].en.next = self.gap_en_wait.q.val();
                 }
                 // ---- stages 3-5: edges V0V1, V1V2, V2V0
-                for c in 0..3 {
-                    self.edges[0].p_x[c].next = self.gap[0].y_x[c].val();
-                    self.edges[0].p_e[c].next = self.gap[0].y_e[c].val();
-                    self.edges[0].q_x[c].next = self.gap[1].y_x[c].val();
-                    self.edges[0].q_e[c].next = self.gap[1].y_e[c].val();
-                    self.edges[1].p_x[c].next = self.gap[1].y_x[c].val();
-                    self.edges[1].p_e[c].next = self.gap[1].y_e[c].val();
-                    self.edges[1].q_x[c].next = self.gap[2].y_x[c].val();
-                    self.edges[1].q_e[c].next = self.gap[2].y_e[c].val();
-                    self.edges[2].p_x[c].next = self.gap[2].y_x[c].val();
-                    self.edges[2].p_e[c].next = self.gap[2].y_e[c].val();
-                    self.edges[2].q_x[c].next = self.gap[0].y_x[c].val();
-                    self.edges[2].q_e[c].next = self.gap[0].y_e[c].val();
-                }
+                self.edges[0].p0_x.next = self.gap[0].y0_x.val();
+                self.edges[0].q0_x.next = self.gap[1].y0_x.val();
+                self.edges[0].p0_e.next = self.gap[0].y0_e.val();
+                self.edges[0].q0_e.next = self.gap[1].y0_e.val();
+                self.edges[0].p1_x.next = self.gap[0].y1_x.val();
+                self.edges[0].q1_x.next = self.gap[1].y1_x.val();
+                self.edges[0].p1_e.next = self.gap[0].y1_e.val();
+                self.edges[0].q1_e.next = self.gap[1].y1_e.val();
+                self.edges[0].p2_x.next = self.gap[0].y2_x.val();
+                self.edges[0].q2_x.next = self.gap[1].y2_x.val();
+                self.edges[0].p2_e.next = self.gap[0].y2_e.val();
+                self.edges[0].q2_e.next = self.gap[1].y2_e.val();
+                self.edges[1].p0_x.next = self.gap[1].y0_x.val();
+                self.edges[1].q0_x.next = self.gap[2].y0_x.val();
+                self.edges[1].p0_e.next = self.gap[1].y0_e.val();
+                self.edges[1].q0_e.next = self.gap[2].y0_e.val();
+                self.edges[1].p1_x.next = self.gap[1].y1_x.val();
+                self.edges[1].q1_x.next = self.gap[2].y1_x.val();
+                self.edges[1].p1_e.next = self.gap[1].y1_e.val();
+                self.edges[1].q1_e.next = self.gap[2].y1_e.val();
+                self.edges[1].p2_x.next = self.gap[1].y2_x.val();
+                self.edges[1].q2_x.next = self.gap[2].y2_x.val();
+                self.edges[1].p2_e.next = self.gap[1].y2_e.val();
+                self.edges[1].q2_e.next = self.gap[2].y2_e.val();
+                self.edges[2].p0_x.next = self.gap[2].y0_x.val();
+                self.edges[2].q0_x.next = self.gap[0].y0_x.val();
+                self.edges[2].p0_e.next = self.gap[2].y0_e.val();
+                self.edges[2].q0_e.next = self.gap[0].y0_e.val();
+                self.edges[2].p1_x.next = self.gap[2].y1_x.val();
+                self.edges[2].q1_x.next = self.gap[0].y1_x.val();
+                self.edges[2].p1_e.next = self.gap[2].y1_e.val();
+                self.edges[2].q1_e.next = self.gap[0].y1_e.val();
+                self.edges[2].p2_x.next = self.gap[2].y2_x.val();
+                self.edges[2].q2_x.next = self.gap[0].y2_x.val();
+                self.edges[2].p2_e.next = self.gap[2].y2_e.val();
+                self.edges[2].q2_e.next = self.gap[0].y2_e.val();
                 self.tag_wait.d.next = self.in_tag.q.val();
                 self.valid_wait.d.next = self.in_valid.q.val();
                 // ---- stage 5: Kleene OR over the edges; output register

@@ -107,6 +107,19 @@ pub fn all() -> Vec<Unit> {
         let n2 = name.clone();
         units.push(Unit { name, latency: 1, verilog: Box::new(move || ve(r)), vectors: Box::new(move || round_err_vectors(&n2, fmt, r)) });
     }
+    for (tag, fmt) in [("b32", Format::BINARY32), ("e8m15", Format::REDUCED)] {
+        let (vt, vu): (VerilogFn, VerilogFn) = match tag {
+            "b32" => (super::b32::verilog_tcheck, super::b32::verilog_tri_unit),
+            _ => (super::e8m15::verilog_tcheck, super::e8m15::verilog_tri_unit),
+        };
+        let r = Rounding::NearestEven;
+        let name = format!("tcheck_{tag}_{}", rounding_tag(r));
+        let n2 = name.clone();
+        units.push(Unit { name, latency: 128, verilog: Box::new(move || vt(r)), vectors: Box::new(move || super::tri_io::tcheck_vectors(&n2, fmt, r)) });
+        let name = format!("tri_unit_{tag}_{}", rounding_tag(r));
+        let n2 = name.clone();
+        units.push(Unit { name, latency: 130, verilog: Box::new(move || vu(r)), vectors: Box::new(move || super::tri_io::tri_unit_vectors(&n2, fmt, r)) });
+    }
     units
 }
 
@@ -332,16 +345,29 @@ pub fn write_vectors(dir: &Path) -> std::io::Result<Vec<String>> {
     write_all(dir, "hex", Unit::vectors)
 }
 
+/// Writes one file per unit, in parallel threads with stacks big enough for the units
+/// (T.CHECK and TRI_UNIT are built on the stack, several MB).
 fn write_all(dir: &Path, ext: &str, text: fn(&Unit) -> String) -> std::io::Result<Vec<String>> {
     std::fs::create_dir_all(dir)?;
-    all()
-        .iter()
-        .map(|u| {
-            let p = dir.join(format!("{}.{ext}", u.name));
-            std::fs::write(&p, text(u))?;
-            Ok(p.display().to_string())
-        })
-        .collect()
+    let names: Vec<String> = all().into_iter().map(|u| u.name).collect();
+    let threads = std::thread::available_parallelism().map_or(2, |n| n.get());
+    let next = std::sync::atomic::AtomicUsize::new(0);
+    let written = std::sync::Mutex::new((0..names.len()).map(|_| None).collect::<Vec<_>>());
+    std::thread::scope(|s| {
+        for _ in 0..threads {
+            std::thread::Builder::new()
+                .stack_size(1 << 30)
+                .spawn_scoped(s, || loop {
+                    let i = next.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+                    let Some(u) = all().into_iter().nth(i) else { break };
+                    let p = dir.join(format!("{}.{ext}", u.name));
+                    let res = std::fs::write(&p, text(&u)).map(|_| p.display().to_string());
+                    written.lock().unwrap()[i] = Some(res);
+                })
+                .expect("spawn a writer thread");
+        }
+    });
+    written.into_inner().unwrap().into_iter().map(|r| r.expect("every unit written")).collect()
 }
 
 #[cfg(test)]
