@@ -46,6 +46,7 @@ macro_rules! top_level {
 
 mod bound;
 mod common;
+pub mod d_cntr;
 pub mod delay;
 mod dop_unit;
 mod doptrf;

@@ -120,6 +120,10 @@ pub fn all() -> Vec<Unit> {
         let n2 = name.clone();
         units.push(Unit { name, latency: 130, verilog: Box::new(move || vu(r)), vectors: Box::new(move || super::tri_io::tri_unit_vectors(&n2, fmt, r)) });
     }
+    // D_CNTR's pair queue, 16 entries (format independent): one line per clock
+    let name = "pair_queue_n4".to_string();
+    let n2 = name.clone();
+    units.push(Unit { name, latency: 1, verilog: Box::new(super::d_cntr::verilog_pair_queue::<4, 5>), vectors: Box::new(move || super::d_cntr::pair_queue_vectors(&n2, 4, RANDOM_CASES)) });
     units
 }
 

@@ -1,0 +1,203 @@
+//! D_CNTR's pair queue (DATE'05 §4.3) as a cycle-level model: the reference the RTL
+//! [`PairQueue`](crate::rtl::d_cntr::PairQueue) must equal on every output after every
+//! clock, and the packing of a queue entry into the 67-bit word the RTL stores.
+//!
+//! An *entry* ([`Entry`]) is two node pairs, pushed and popped together; a pair is A's node,
+//! B's node (16 bits each) and the flip bit that orders its children
+//! ([`traversal::d_cntr`](crate::traversal::d_cntr)). Entry word, bit 0 first:
+//!
+//! | bits | field |
+//! |---|---|
+//! | 15:0 | `pairs[0].a` |
+//! | 31:16 | `pairs[0].b` |
+//! | 32 | `pairs[0].flip` |
+//! | 48:33 | `pairs[1].a` |
+//! | 64:49 | `pairs[1].b` |
+//! | 65 | `pairs[1].flip` |
+//! | 66 | `len - 1` (0: one pair, the root entry; 1: two pairs) |
+//!
+//! i.e. in Verilog `{len-1, p1.flip, p1.b, p1.a, p0.flip, p0.b, p0.a}`. `pairs[1]` is
+//! stored as it is also when `len` is 1, so `unpack(pack(e)) == e` for every entry.
+//! Node ids are 16 bits: trees of up to 65,536 nodes.
+
+use crate::traversal::d_cntr::{Entry, Pair};
+use std::collections::VecDeque;
+
+/// Bits of an entry word.
+pub const ENTRY_BITS: u32 = 67;
+/// Bits of a node id in an entry word.
+pub const NODE_BITS: u32 = 16;
+const PAIR_BITS: u32 = 2 * NODE_BITS + 1;
+const ENTRY_MASK: u128 = (1 << ENTRY_BITS) - 1;
+
+fn pack_pair(p: &Pair) -> u128 {
+    assert!(p.a < 1 << NODE_BITS && p.b < 1 << NODE_BITS, "node ids of {p:?} do not fit {NODE_BITS} bits");
+    p.a as u128 | (p.b as u128) << NODE_BITS | (p.flip as u128) << (2 * NODE_BITS)
+}
+
+fn unpack_pair(w: u128) -> Pair {
+    let m = (1u128 << NODE_BITS) - 1;
+    Pair { a: (w & m) as u32, b: (w >> NODE_BITS & m) as u32, flip: w >> (2 * NODE_BITS) & 1 == 1 }
+}
+
+/// The entry word of `e` (layout in the module doc). Panics if a node id needs more than
+/// 16 bits or `len` is not 1 or 2.
+pub fn pack(e: &Entry) -> u128 {
+    assert!(e.len == 1 || e.len == 2, "entry length {}", e.len);
+    pack_pair(&e.pairs[0]) | pack_pair(&e.pairs[1]) << PAIR_BITS | ((e.len - 1) as u128) << (2 * PAIR_BITS)
+}
+
+/// The entry of a word (bits above 66 ignored); the inverse of [`pack`].
+pub fn unpack(w: u128) -> Entry {
+    let m = (1u128 << PAIR_BITS) - 1;
+    Entry { pairs: [unpack_pair(w & m), unpack_pair(w >> PAIR_BITS & m)], len: 1 + (w >> (2 * PAIR_BITS) & 1) as u8 }
+}
+
+/// The queue's inputs in one clock cycle (the RTL's ports as plain integers).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct QueueIn {
+    /// Empty the queue, reset `max_count` and `overflow`, latch `lifo`; push and pop of
+    /// the same cycle are ignored.
+    pub clear: bool,
+    /// The order for the query, latched by `clear`: LIFO (depth first) or FIFO.
+    pub lifo: bool,
+    pub push: bool,
+    /// The entry word pushed (67 bits; higher bits ignored).
+    pub push_data: u128,
+    /// Remove the entry shown on `top_data`; ignored while empty.
+    pub pop: bool,
+}
+
+/// The queue's outputs after a rising edge.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct QueueOut {
+    pub empty: bool,
+    pub full: bool,
+    /// Entries held, 0..=2^N.
+    pub count: u32,
+    /// The largest `count` since the last clear.
+    pub max_count: u32,
+    /// Sticky until clear: a push while full without a pop in the same cycle (the entry
+    /// was not stored).
+    pub overflow: bool,
+    /// The entry a pop in the next cycle removes (FIFO: the oldest, LIFO: the newest); 0
+    /// while empty.
+    pub top_data: u128,
+}
+
+/// The pair queue, one rising clock edge per [`step`](Self::step). Initial state: empty,
+/// FIFO, `max_count` 0, no overflow (as after a clear with `lifo` low; the RTL's
+/// registers start there too).
+#[derive(Clone, Debug)]
+pub struct QueueModel {
+    cap: usize,
+    lifo: bool,
+    q: VecDeque<u128>,
+    max_count: u32,
+    overflow: bool,
+}
+
+impl QueueModel {
+    /// A queue of `2^n` entries.
+    pub fn new(n: u32) -> Self {
+        assert!(n <= 16, "capacity 2^{n}");
+        QueueModel { cap: 1 << n, lifo: false, q: VecDeque::new(), max_count: 0, overflow: false }
+    }
+
+    /// Entries it holds when full.
+    pub fn capacity(&self) -> usize {
+        self.cap
+    }
+
+    /// The order latched by the last clear.
+    pub fn lifo(&self) -> bool {
+        self.lifo
+    }
+
+    /// The outputs in the current state.
+    pub fn outputs(&self) -> QueueOut {
+        let top = if self.lifo { self.q.back() } else { self.q.front() };
+        QueueOut {
+            empty: self.q.is_empty(),
+            full: self.q.len() == self.cap,
+            count: self.q.len() as u32,
+            max_count: self.max_count,
+            overflow: self.overflow,
+            top_data: top.copied().unwrap_or(0),
+        }
+    }
+
+    /// One rising edge with inputs `i`; returns the outputs after it. A pop (if not
+    /// empty) happens before the push, in both orders: FIFO pop removes the head and the
+    /// push appends; LIFO pop removes the top and the pushed entry becomes the new top.
+    /// So a push while full succeeds if the same cycle pops.
+    pub fn step(&mut self, i: &QueueIn) -> QueueOut {
+        if i.clear {
+            self.q.clear();
+            self.lifo = i.lifo;
+            self.max_count = 0;
+            self.overflow = false;
+        } else {
+            if i.pop {
+                if self.lifo {
+                    self.q.pop_back();
+                } else {
+                    self.q.pop_front();
+                }
+            }
+            if i.push {
+                if self.q.len() < self.cap {
+                    self.q.push_back(i.push_data & ENTRY_MASK);
+                } else {
+                    self.overflow = true;
+                }
+            }
+            self.max_count = self.max_count.max(self.q.len() as u32);
+        }
+        self.outputs()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn pack_round_trips_and_places_the_fields() {
+        let p = |a, b, flip| Pair { a, b, flip };
+        let e = Entry { pairs: [p(0x1234, 0xffff, true), p(0, 0xabcd, false)], len: 2 };
+        let w = pack(&e);
+        assert_eq!(w & 0xffff, 0x1234);
+        assert_eq!(w >> 16 & 0xffff, 0xffff);
+        assert_eq!(w >> 32 & 1, 1);
+        assert_eq!(w >> 49 & 0xffff, 0xabcd);
+        assert_eq!(w >> 66, 1);
+        assert_eq!(unpack(w), e);
+        let root = Entry { pairs: [p(0, 0, false); 2], len: 1 };
+        assert_eq!(pack(&root), 0);
+        assert_eq!(unpack(pack(&root)), root);
+        assert_eq!(unpack(ENTRY_MASK), Entry { pairs: [p(0xffff, 0xffff, true); 2], len: 2 });
+    }
+
+    #[test]
+    fn model_orders_and_overflow() {
+        let (push, pop) = (|d| QueueIn { push: true, push_data: d, ..Default::default() }, QueueIn { pop: true, ..Default::default() });
+        for lifo in [false, true] {
+            let mut m = QueueModel::new(1);
+            m.step(&QueueIn { clear: true, lifo, ..Default::default() });
+            m.step(&push(1));
+            m.step(&push(2));
+            let o = m.step(&push(3));
+            assert!(o.full && o.overflow && o.count == 2 && o.max_count == 2);
+            assert_eq!(o.top_data, if lifo { 2 } else { 1 });
+            // push and pop while full: no overflow needed, both happen
+            let o = m.step(&QueueIn { push: true, push_data: 4, pop: true, ..Default::default() });
+            assert_eq!((o.count, o.top_data), (2, if lifo { 4 } else { 2 }));
+            m.step(&pop);
+            let o = m.step(&pop);
+            assert!(o.empty && o.top_data == 0 && o.overflow && o.max_count == 2);
+            let o = m.step(&QueueIn { clear: true, lifo, ..Default::default() });
+            assert!(!o.overflow && o.max_count == 0);
+        }
+    }
+}
