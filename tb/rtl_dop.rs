@@ -24,7 +24,7 @@ use rust_hdl::prelude::*;
 use std::time::Instant;
 
 mod common;
-use common::{operand, run, run_traced, settle, Fmt, Pipelined};
+use common::{operand, run, run_vcd, settle, Fmt, Pipelined};
 
 const MODES: [Rounding; 2] = [Rounding::NearestEven, Rounding::TowardPositive];
 const LATENCY: usize = 15;
@@ -433,18 +433,7 @@ fn vcd_traces() {
             [b(f64::INFINITY), b(1.0), b(1.0), b(0.0), b(1.0), b(1.0), b(0.0), b(0.0)],
             [b(1e-40), b(1e-40), b(1.0), b(1.0), b(1.0), b(0.0), b(0.0), b(-2e-40)],
         ];
-        let mut uut = b32::doptrf_top(Rounding::TowardPositive);
-        let mut buf = vec![];
-        {
-            let vcd = write_vcd_dump(write_vcd_header(&mut buf, &uut), &uut);
-            let mut vcd = Some(vcd);
-            run_traced(&mut uut, &cases, |u, time| {
-                let mut v = vcd.take().unwrap();
-                v.timestamp(time).unwrap();
-                vcd = Some(write_vcd_change(v, u));
-            });
-        }
-        write_vcd("doptrf_b32", "doptrf", buf);
+        run_vcd(&mut b32::doptrf_top(Rounding::TowardPositive), &cases, "doptrf_b32", "doptrf");
 
         // the DOP unit (k = 24): a pose, a few node pairs of two small trees
         let cfg = ChipConfig::default();

@@ -13,7 +13,7 @@ use rust_hdl::prelude::*;
 use std::time::Instant;
 
 mod common;
-use common::{operand, run, run_traced, Fmt, Pipelined};
+use common::{operand, run, run_vcd, Fmt, Pipelined};
 
 /// The FP units: inputs (a, b, sub), output y.
 trait Unit: Pipelined<In = (u64, u64, bool), Out = u64> {}
@@ -249,21 +249,7 @@ fn specials_all_units() {
 
 /// A short traced run per unit (binary32, TowardPositive), for GTKWave.
 fn vcd_unit<U: Unit>(mut uut: U, name: &str, ops: &[(u64, u64, bool)]) {
-    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("target").join("rtl-vcd");
-    std::fs::create_dir_all(&dir).unwrap();
-    let path = dir.join(format!("{name}.vcd"));
-    let mut buf = vec![];
-    let mut vcd = write_vcd_header(&mut buf, &uut);
-    vcd = write_vcd_dump(vcd, &uut);
-    let mut vcd = Some(vcd);
-    run_traced(&mut uut, ops, |u, time| {
-        let mut v = vcd.take().unwrap();
-        v.timestamp(time).unwrap();
-        vcd = Some(write_vcd_change(v, u));
-    });
-    drop(vcd);
-    std::fs::write(&path, buf).unwrap();
-    println!("wrote {}", path.display());
+    run_vcd(&mut uut, ops, name, name);
 }
 
 #[test]

@@ -31,7 +31,7 @@ use rust_hdl::prelude::*;
 
 mod common;
 use common::families::{any_case, general_pose};
-use common::{run, settle, Pipelined};
+use common::{run, run_vcd, settle, Pipelined};
 
 macro_rules! impl_tcheck {
     ($t:ty) => {
@@ -473,3 +473,18 @@ fn tri_unit_generated_e8m15() {
     assert_none_pairs("TRI_UNIT generated e8m15", tri_unit_mismatches(Format::REDUCED, generated_job(Format::REDUCED)));
 }
 
+
+/// A traced T.CHECK run (binary32, the catalogue's first 16 directions) for GTKWave:
+/// target/rtl-vcd/tcheck_b32.vcd, scopes named after the blocks (`tcheck.mb_0$3.p$2.mul`).
+#[test]
+fn tcheck_vcd_trace() {
+    let cases: Vec<(TCheckIn, TCheckOut)> = catalogue_cases(Format::BINARY32).into_iter().take(16).collect();
+    let outs = big_stack(move || {
+        let ins: Vec<TCheckIn> = cases.iter().map(|c| c.0).collect();
+        let outs = run_vcd(&mut b32::tcheck_top(Rounding::NearestEven), &ins, "tcheck_b32", "tcheck");
+        (outs, cases)
+    });
+    for (got, (_, want)) in outs.0.iter().zip(&outs.1) {
+        assert_eq!(got, want);
+    }
+}

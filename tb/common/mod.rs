@@ -103,3 +103,25 @@ pub fn run_traced<U: Pipelined>(uut: &mut U, ops: &[U::In], mut after_edge: impl
     assert_eq!(outs.len(), n, "valid outputs lost");
     outs
 }
+
+/// [`run`] with a VCD of every signal, written to `target/rtl-vcd/<name>.vcd` with the root
+/// scope named `root` (rust-hdl calls it `uut`), for GTKWave.
+pub fn run_vcd<U: Pipelined>(uut: &mut U, ops: &[U::In], name: &str, root: &str) -> Vec<U::Out> {
+    use rust_hdl::prelude::{write_vcd_change, write_vcd_dump, write_vcd_header};
+    let mut buf = vec![];
+    let outs = {
+        let mut vcd = Some(write_vcd_dump(write_vcd_header(&mut buf, &*uut), &*uut));
+        run_traced(uut, ops, |u, time| {
+            let mut v = vcd.take().unwrap();
+            v.timestamp(time).unwrap();
+            vcd = Some(write_vcd_change(v, u));
+        })
+    };
+    let text = String::from_utf8(buf).unwrap().replacen("$scope module uut $end", &format!("$scope module {root} $end"), 1);
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("target").join("rtl-vcd");
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join(format!("{name}.vcd"));
+    std::fs::write(&path, text).unwrap();
+    println!("wrote {}", path.display());
+    outs
+}
