@@ -8,6 +8,13 @@
 /// Arguments: `W`, `WM1` = W-1, `E`, `F`.
 macro_rules! tcheck {
     ($W:tt, $WM1:tt, $E:tt, $F:tt) => {
+        // Row i of M_b (`mb_i`), of M_B's input register (`in_m_i`) and of the mapped
+        // vertices (`vt_i`), and the gap's ports for coordinate i: the kernel's wiring is
+        // written once per row by repetition (rust-hdl kernels allow one loop level only).
+        $crate::rtl::tcheck::tcheck!(@units $W, $WM1, $E, $F;
+            (mb_0 in_m_0 vt_0 x0 e0) (mb_1 in_m_1 vt_1 x1 e1) (mb_2 in_m_2 vt_2 x2 e2));
+    };
+    (@units $W:tt, $WM1:tt, $E:tt, $F:tt; $(($mb:ident $in_m:ident $vt:ident $gx:ident $ge:ident))*) => {
         use $crate::rtl::delay::Delay;
 
         /// A bit pattern of the format (`sign`, biased exponent field, fraction field).
@@ -997,63 +1004,29 @@ macro_rules! tcheck {
                 self.in_valid.d.next = self.valid_in.val();
                 // ---- stage 1: Mb_ij = (m_i0 f_0j + m_i1 f_1j) + m_i2 f_2j  (j < 3)
                 //               Mb_i3 = (m_i0 f_03 + m_i1 f_13) + (m_i2 f_23 + m_i3)
+                $(
                 for j in 0..4 {
-                    self.mb_0[j].clock.next = self.clock.val();
-                    self.mb_1[j].clock.next = self.clock.val();
-                    self.mb_2[j].clock.next = self.clock.val();
-                    self.mb_0[j].a0_x.next = self.in_m_0[0].q.val();
-                    self.mb_0[j].a0_e.next = self.in_e_lin.q.val();
-                    self.mb_0[j].b0_x.next = self.in_f_0[j].q.val();
-                    self.mb_0[j].b0_e.next = self.in_f_lin.q.val();
-                    self.mb_0[j].a1_x.next = self.in_m_0[1].q.val();
-                    self.mb_0[j].a1_e.next = self.in_e_lin.q.val();
-                    self.mb_0[j].b1_x.next = self.in_f_1[j].q.val();
-                    self.mb_0[j].b1_e.next = self.in_f_lin.q.val();
-                    self.mb_0[j].a2_x.next = self.in_m_0[2].q.val();
-                    self.mb_0[j].a2_e.next = self.in_e_lin.q.val();
-                    self.mb_0[j].b2_x.next = self.in_f_2[j].q.val();
-                    self.mb_0[j].b2_e.next = self.in_f_lin.q.val();
-                    self.mb_0[j].c_x.next = self.in_m_0[3].q.val();
-                    self.mb_0[j].c_e.next = self.in_e_tr.q.val();
-                    self.mb_1[j].a0_x.next = self.in_m_1[0].q.val();
-                    self.mb_1[j].a0_e.next = self.in_e_lin.q.val();
-                    self.mb_1[j].b0_x.next = self.in_f_0[j].q.val();
-                    self.mb_1[j].b0_e.next = self.in_f_lin.q.val();
-                    self.mb_1[j].a1_x.next = self.in_m_1[1].q.val();
-                    self.mb_1[j].a1_e.next = self.in_e_lin.q.val();
-                    self.mb_1[j].b1_x.next = self.in_f_1[j].q.val();
-                    self.mb_1[j].b1_e.next = self.in_f_lin.q.val();
-                    self.mb_1[j].a2_x.next = self.in_m_1[2].q.val();
-                    self.mb_1[j].a2_e.next = self.in_e_lin.q.val();
-                    self.mb_1[j].b2_x.next = self.in_f_2[j].q.val();
-                    self.mb_1[j].b2_e.next = self.in_f_lin.q.val();
-                    self.mb_1[j].c_x.next = self.in_m_1[3].q.val();
-                    self.mb_1[j].c_e.next = self.in_e_tr.q.val();
-                    self.mb_2[j].a0_x.next = self.in_m_2[0].q.val();
-                    self.mb_2[j].a0_e.next = self.in_e_lin.q.val();
-                    self.mb_2[j].b0_x.next = self.in_f_0[j].q.val();
-                    self.mb_2[j].b0_e.next = self.in_f_lin.q.val();
-                    self.mb_2[j].a1_x.next = self.in_m_2[1].q.val();
-                    self.mb_2[j].a1_e.next = self.in_e_lin.q.val();
-                    self.mb_2[j].b1_x.next = self.in_f_1[j].q.val();
-                    self.mb_2[j].b1_e.next = self.in_f_lin.q.val();
-                    self.mb_2[j].a2_x.next = self.in_m_2[2].q.val();
-                    self.mb_2[j].a2_e.next = self.in_e_lin.q.val();
-                    self.mb_2[j].b2_x.next = self.in_f_2[j].q.val();
-                    self.mb_2[j].b2_e.next = self.in_f_lin.q.val();
-                    self.mb_2[j].c_x.next = self.in_m_2[3].q.val();
-                    self.mb_2[j].c_e.next = self.in_e_tr.q.val();
+                    self.$mb[j].clock.next = self.clock.val();
+                    self.$mb[j].a0_x.next = self.$in_m[0].q.val();
+                    self.$mb[j].a1_x.next = self.$in_m[1].q.val();
+                    self.$mb[j].a2_x.next = self.$in_m[2].q.val();
+                    self.$mb[j].a0_e.next = self.in_e_lin.q.val();
+                    self.$mb[j].a1_e.next = self.in_e_lin.q.val();
+                    self.$mb[j].a2_e.next = self.in_e_lin.q.val();
+                    self.$mb[j].b0_x.next = self.in_f_0[j].q.val();
+                    self.$mb[j].b1_x.next = self.in_f_1[j].q.val();
+                    self.$mb[j].b2_x.next = self.in_f_2[j].q.val();
+                    self.$mb[j].b0_e.next = self.in_f_lin.q.val();
+                    self.$mb[j].b1_e.next = self.in_f_lin.q.val();
+                    self.$mb[j].b2_e.next = self.in_f_lin.q.val();
+                    self.$mb[j].c_x.next = self.$in_m[3].q.val();
+                    self.$mb[j].c_e.next = self.in_e_tr.q.val();
                 }
                 // the translation column's operands from the frame carry f_tr
-                self.mb_0[3].b0_e.next = self.in_f_tr.q.val();
-                self.mb_0[3].b1_e.next = self.in_f_tr.q.val();
-                self.mb_0[3].b2_e.next = self.in_f_tr.q.val();
-                self.mb_1[3].b0_e.next = self.in_f_tr.q.val();
-                self.mb_1[3].b1_e.next = self.in_f_tr.q.val();
-                self.mb_1[3].b2_e.next = self.in_f_tr.q.val();
-                self.mb_2[3].b0_e.next = self.in_f_tr.q.val();
-                self.mb_2[3].b1_e.next = self.in_f_tr.q.val();
-                self.mb_2[3].b2_e.next = self.in_f_tr.q.val();
+                self.$mb[3].b0_e.next = self.in_f_tr.q.val();
+                self.$mb[3].b1_e.next = self.in_f_tr.q.val();
+                self.$mb[3].b2_e.next = self.in_f_tr.q.val();
+                )*
                 // ---- the vertices wait for M_b; their bound: 0 if exact, else err(v) to nearest
                 self.v_exact_wait.d.next = self.in_v_exact.q.val();
                 for k in 0..3 {
@@ -1094,53 +1067,27 @@ macro_rules! tcheck {
                     }
                 }
                 // ---- stage 2: V'_ik = (Mb_i0 x_k + Mb_i1 y_k) + (Mb_i2 z_k + Mb_i3)
+                $(
                 for k in 0..3 {
-                    self.vt_0[k].clock.next = self.clock.val();
-                    self.vt_0[k].a0_x.next = self.mb_0[0].y_x.val();
-                    self.vt_0[k].a0_e.next = self.mb_0[0].y_e.val();
-                    self.vt_0[k].a1_x.next = self.mb_0[1].y_x.val();
-                    self.vt_0[k].a1_e.next = self.mb_0[1].y_e.val();
-                    self.vt_0[k].a2_x.next = self.mb_0[2].y_x.val();
-                    self.vt_0[k].a2_e.next = self.mb_0[2].y_e.val();
-                    self.vt_0[k].c_x.next = self.mb_0[3].y_x.val();
-                    self.vt_0[k].c_e.next = self.mb_0[3].y_e.val();
-                    self.vt_0[k].b0_x.next = self.v_x_wait[k].q.val();
-                    self.vt_0[k].b0_e.next = self.c_ve_x[k].val();
-                    self.vt_0[k].b1_x.next = self.v_y_wait[k].q.val();
-                    self.vt_0[k].b1_e.next = self.c_ve_y[k].val();
-                    self.vt_0[k].b2_x.next = self.v_z_wait[k].q.val();
-                    self.vt_0[k].b2_e.next = self.c_ve_z[k].val();
-                    self.vt_1[k].clock.next = self.clock.val();
-                    self.vt_1[k].a0_x.next = self.mb_1[0].y_x.val();
-                    self.vt_1[k].a0_e.next = self.mb_1[0].y_e.val();
-                    self.vt_1[k].a1_x.next = self.mb_1[1].y_x.val();
-                    self.vt_1[k].a1_e.next = self.mb_1[1].y_e.val();
-                    self.vt_1[k].a2_x.next = self.mb_1[2].y_x.val();
-                    self.vt_1[k].a2_e.next = self.mb_1[2].y_e.val();
-                    self.vt_1[k].c_x.next = self.mb_1[3].y_x.val();
-                    self.vt_1[k].c_e.next = self.mb_1[3].y_e.val();
-                    self.vt_1[k].b0_x.next = self.v_x_wait[k].q.val();
-                    self.vt_1[k].b0_e.next = self.c_ve_x[k].val();
-                    self.vt_1[k].b1_x.next = self.v_y_wait[k].q.val();
-                    self.vt_1[k].b1_e.next = self.c_ve_y[k].val();
-                    self.vt_1[k].b2_x.next = self.v_z_wait[k].q.val();
-                    self.vt_1[k].b2_e.next = self.c_ve_z[k].val();
-                    self.vt_2[k].clock.next = self.clock.val();
-                    self.vt_2[k].a0_x.next = self.mb_2[0].y_x.val();
-                    self.vt_2[k].a0_e.next = self.mb_2[0].y_e.val();
-                    self.vt_2[k].a1_x.next = self.mb_2[1].y_x.val();
-                    self.vt_2[k].a1_e.next = self.mb_2[1].y_e.val();
-                    self.vt_2[k].a2_x.next = self.mb_2[2].y_x.val();
-                    self.vt_2[k].a2_e.next = self.mb_2[2].y_e.val();
-                    self.vt_2[k].c_x.next = self.mb_2[3].y_x.val();
-                    self.vt_2[k].c_e.next = self.mb_2[3].y_e.val();
-                    self.vt_2[k].b0_x.next = self.v_x_wait[k].q.val();
-                    self.vt_2[k].b0_e.next = self.c_ve_x[k].val();
-                    self.vt_2[k].b1_x.next = self.v_y_wait[k].q.val();
-                    self.vt_2[k].b1_e.next = self.c_ve_y[k].val();
-                    self.vt_2[k].b2_x.next = self.v_z_wait[k].q.val();
-                    self.vt_2[k].b2_e.next = self.c_ve_z[k].val();
+                    self.$vt[k].clock.next = self.clock.val();
+                    self.$vt[k].a0_x.next = self.$mb[0].y_x.val();
+                    self.$vt[k].a0_e.next = self.$mb[0].y_e.val();
+                    self.$vt[k].a1_x.next = self.$mb[1].y_x.val();
+                    self.$vt[k].a1_e.next = self.$mb[1].y_e.val();
+                    self.$vt[k].a2_x.next = self.$mb[2].y_x.val();
+                    self.$vt[k].a2_e.next = self.$mb[2].y_e.val();
+                    self.$vt[k].c_x.next = self.$mb[3].y_x.val();
+                    self.$vt[k].c_e.next = self.$mb[3].y_e.val();
+                    self.$vt[k].b0_x.next = self.v_x_wait[k].q.val();
+                    self.$vt[k].b0_e.next = self.c_ve_x[k].val();
+                    self.$vt[k].b1_x.next = self.v_y_wait[k].q.val();
+                    self.$vt[k].b1_e.next = self.c_ve_y[k].val();
+                    self.$vt[k].b2_x.next = self.v_z_wait[k].q.val();
+                    self.$vt[k].b2_e.next = self.c_ve_z[k].val();
+                    self.gap[k].$gx.next = self.$vt[k].y_x.val();
+                    self.gap[k].$ge.next = self.$vt[k].y_e.val();
                 }
+                )*
                 // ---- the gap's leaf terms: lambda = l_norm + e_lin, 2 lambda, (4 lambda) eta <= 1/2
                 self.lambda.a.next = self.in_l_norm.q.val();
                 self.lambda.b.next = self.in_e_lin.q.val();
@@ -1161,12 +1108,6 @@ macro_rules! tcheck {
                 self.gap_en_wait.d.next = self.in_gap_en.q.val();
                 for k in 0..3 {
                     self.gap[k].clock.next = self.clock.val();
-                    self.gap[k].x0.next = self.vt_0[k].y_x.val();
-                    self.gap[k].e0.next = self.vt_0[k].y_e.val();
-                    self.gap[k].x1.next = self.vt_1[k].y_x.val();
-                    self.gap[k].e1.next = self.vt_1[k].y_e.val();
-                    self.gap[k].x2.next = self.vt_2[k].y_x.val();
-                    self.gap[k].e2.next = self.vt_2[k].y_e.val();
                     self.gap[k].two_lambda.next = self.two_lambda_wait.q.val();
                     self.gap[k].eta.next = self.eta_wait.q.val();
                     self.gap[k].ok.next = self.ok_wait.q.val();
