@@ -25,7 +25,8 @@ trap 'rm -rf "$out_dir"' EXIT
 
 run_one() { # unit simulator
   local u=$1 sim=$2 ports=()
-  if grep -q "input wire  valid_in;" "rtl/$u.v"; then ports=(--in-valid valid_in --out-valid valid_out); fi
+  # the top module's own port list (sub-modules such as TRI_UNIT's T.CHECKs have valid_in too)
+  if grep -m1 '^module top(' "rtl/$u.v" | grep -Eq '[(,]valid_in[,)]'; then ports=(--in-valid valid_in --out-valid valid_out); fi
   local status=0
   "scripts/run-$sim.sh" "rtl/$u.v" "vectors/$u.hex" "${ports[@]}" >"$out_dir/$u.$sim.out" 2>&1 || status=$?
   echo "$status" >"$out_dir/$u.$sim.rc"
