@@ -131,16 +131,11 @@ fn mismatches(f: Format, rounding: Rounding, cases: Vec<(TCheckIn, TCheckOut)>) 
     })
 }
 
-fn assert_none(what: &str, (bad, n): (Vec<String>, usize)) {
+/// Fails with the first mismatches if there are any; `unit` names what was counted.
+fn assert_none(what: &str, unit: &str, (bad, n): (Vec<String>, usize)) {
     assert!(n > 0);
-    assert!(bad.is_empty(), "{what}: {} of {n} T.CHECKs differ from the golden model; first:\n{}", bad.len(), bad[..bad.len().min(3)].join("\n"));
-    eprintln!("{what}: {n} T.CHECKs equal to the golden model");
-}
-
-fn assert_none_pairs(what: &str, (bad, n): (Vec<String>, usize)) {
-    assert!(n > 0);
-    assert!(bad.is_empty(), "{what}: {} problems in {n} pairs; first:\n{}", bad.len(), bad[..bad.len().min(5)].join("\n"));
-    eprintln!("{what}: {n} pairs equal to the golden model");
+    assert!(bad.is_empty(), "{what}: {} problems in {n} {unit}; first:\n{}", bad.len(), bad[..bad.len().min(5)].join("\n"));
+    eprintln!("{what}: {n} {unit} equal to the golden model");
 }
 
 fn catalogue_cases(f: Format) -> Vec<(TCheckIn, TCheckOut)> {
@@ -153,12 +148,12 @@ fn catalogue_cases(f: Format) -> Vec<(TCheckIn, TCheckOut)> {
 
 #[test]
 fn tcheck_catalogue_binary32() {
-    assert_none("catalogue binary32", mismatches(Format::BINARY32, Rounding::NearestEven, catalogue_cases(Format::BINARY32)));
+    assert_none("catalogue binary32", "T.CHECKs", mismatches(Format::BINARY32, Rounding::NearestEven, catalogue_cases(Format::BINARY32)));
 }
 
 #[test]
 fn tcheck_catalogue_e8m15() {
-    assert_none("catalogue e8m15", mismatches(Format::REDUCED, Rounding::NearestEven, catalogue_cases(Format::REDUCED)));
+    assert_none("catalogue e8m15", "T.CHECKs", mismatches(Format::REDUCED, Rounding::NearestEven, catalogue_cases(Format::REDUCED)));
 }
 
 /// Samples `n` values of `strat` (deterministic seed).
@@ -204,7 +199,7 @@ fn tcheck_generated_binary32() {
     let v = verdicts(&cases);
     eprintln!("binary32 verdicts hit/miss/unknown: {v:?}");
     assert!(v.iter().all(|&n| n > 0), "{v:?}");
-    assert_none("generated binary32", mismatches(Format::BINARY32, Rounding::NearestEven, cases));
+    assert_none("generated binary32", "T.CHECKs", mismatches(Format::BINARY32, Rounding::NearestEven, cases));
 }
 
 #[test]
@@ -213,7 +208,7 @@ fn tcheck_generated_e8m15() {
     let v = verdicts(&cases);
     eprintln!("e8m15 verdicts hit/miss/unknown: {v:?}");
     assert!(v.iter().all(|&n| n > 0), "{v:?}");
-    assert_none("generated e8m15", mismatches(Format::REDUCED, Rounding::NearestEven, cases));
+    assert_none("generated e8m15", "T.CHECKs", mismatches(Format::REDUCED, Rounding::NearestEven, cases));
 }
 
 /// The comparison can fail: a T.CHECK rounding toward +inf differs from the nearest-even
@@ -417,12 +412,12 @@ fn catalogue_triples(f: Format) -> Vec<(TriWord, TriWord, collision_chip::dop::H
 
 #[test]
 fn tri_unit_catalogue_binary32() {
-    assert_none_pairs("TRI_UNIT catalogue binary32", tri_unit_mismatches(Format::BINARY32, tri_job(Format::BINARY32, &catalogue_triples(Format::BINARY32))));
+    assert_none("TRI_UNIT catalogue binary32", "pairs", tri_unit_mismatches(Format::BINARY32, tri_job(Format::BINARY32, &catalogue_triples(Format::BINARY32))));
 }
 
 #[test]
 fn tri_unit_catalogue_e8m15() {
-    assert_none_pairs("TRI_UNIT catalogue e8m15", tri_unit_mismatches(Format::REDUCED, tri_job(Format::REDUCED, &catalogue_triples(Format::REDUCED))));
+    assert_none("TRI_UNIT catalogue e8m15", "pairs", tri_unit_mismatches(Format::REDUCED, tri_job(Format::REDUCED, &catalogue_triples(Format::REDUCED))));
 }
 
 /// 300 generated pairs under one pose; the reader is away for the first 400 clocks, then
@@ -465,12 +460,12 @@ fn generated_job(f: Format) -> TriJob {
 
 #[test]
 fn tri_unit_generated_binary32() {
-    assert_none_pairs("TRI_UNIT generated binary32", tri_unit_mismatches(Format::BINARY32, generated_job(Format::BINARY32)));
+    assert_none("TRI_UNIT generated binary32", "pairs", tri_unit_mismatches(Format::BINARY32, generated_job(Format::BINARY32)));
 }
 
 #[test]
 fn tri_unit_generated_e8m15() {
-    assert_none_pairs("TRI_UNIT generated e8m15", tri_unit_mismatches(Format::REDUCED, generated_job(Format::REDUCED)));
+    assert_none("TRI_UNIT generated e8m15", "pairs", tri_unit_mismatches(Format::REDUCED, generated_job(Format::REDUCED)));
 }
 
 
