@@ -45,6 +45,8 @@ macro_rules! top_level {
 }
 
 mod bound;
+mod chip;
+pub mod chip_io;
 mod common;
 pub mod d_cntr;
 pub mod delay;
@@ -113,4 +115,6 @@ pub mod b32 {
 pub mod e8m15 {
     fp_format!(Format::REDUCED, 24, 23, 8, 15, 16, 18, 19, 20, 32,
         norm_p(0, 8, 12, 14, 15), norm_p3(3, 11, 15, 17, 18));
+    // node word 1 + 6 * 24 + 64 bits, triangle word 24 * 24 + 2
+    crate::rtl::chip::chip!(24, 209, 578);
 }

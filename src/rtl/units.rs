@@ -318,13 +318,8 @@ fn dop_unit_vectors(name: &str, k: usize, fmt: Format) -> String {
     let _ = writeln!(out, "// {} tag overlap tag_out", names.join(" "));
     let _ = writeln!(out, "// latency: 15");
     let _ = writeln!(out, "// {name}: k = {k}, {fmt}, outward; all node pairs of two DOP trees of 'soup' meshes under one pose; golden: golden::doptrf::dop_overlap");
-    for i in 0..k {
-        let j = setup.j[i];
-        let jw = j[0] as u64 | (j[1] as u64) << 5 | (j[2] as u64) << 10;
-        let fields = [fmt.to_bits(setup.cmat[i][0]), fmt.to_bits(setup.cmat[i][1]), fmt.to_bits(setup.cmat[i][2]), fmt.to_bits(setup.cvec[i]), jw];
-        for (f, v) in fields.iter().enumerate() {
-            let _ = writeln!(out, "@ 1 {:02x} {v:0w$x}", 8 * i + f);
-        }
+    for (a, v) in super::chip_io::dop_unit_setup_words(fmt, &setup) {
+        let _ = writeln!(out, "@ 1 {a:02x} {v:0w$x}");
     }
     let mut tag = 0u16;
     for nb in 0..tb.len() as u32 {
@@ -339,14 +334,22 @@ fn dop_unit_vectors(name: &str, k: usize, fmt: Format) -> String {
     out
 }
 
-/// Writes `<dir>/<unit>.v` for every unit; returns the paths written.
+/// Writes `<dir>/<unit>.v` for every unit and the chip's `<dir>/chip_e8m15_k6.v`; returns
+/// the paths written.
 pub fn write_verilog(dir: &Path) -> std::io::Result<Vec<String>> {
-    write_all(dir, "v", Unit::verilog)
+    let mut written = write_all(dir, "v", Unit::verilog)?;
+    let p = dir.join(format!("{}.v", super::chip_io::EXPORT_NAME));
+    std::fs::write(&p, super::chip_io::chip_verilog())?;
+    written.push(p.display().to_string());
+    Ok(written)
 }
 
-/// Writes `<dir>/<unit>.hex` for every unit; returns the paths written.
+/// Writes `<dir>/<unit>.hex` for every unit and the chip's query files under `<dir>/chip/`
+/// ([`chip_io::write_vectors`](super::chip_io::write_vectors)); returns the paths written.
 pub fn write_vectors(dir: &Path) -> std::io::Result<Vec<String>> {
-    write_all(dir, "hex", Unit::vectors)
+    let mut written = write_all(dir, "hex", Unit::vectors)?;
+    written.extend(super::chip_io::write_vectors(&dir.join("chip")).map_err(std::io::Error::other)?);
+    Ok(written)
 }
 
 /// Writes one file per unit, in parallel threads with stacks big enough for the units
