@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Runs every exported unit rtl/<unit>.v against vectors/<unit>.hex under Icarus Verilog and
-# Verilator, then synthesizes all of them with Yosys and prints the cells per unit.
+# Verilator (the chip, rtl/chip_*.v: whole queries by scripts/run-chip.sh, under Icarus only
+# the short ones of ICARUS_CHIP_QUERIES), then synthesizes all of them with Yosys and prints
+# the cells per unit.
 # Exits non-zero on any mismatch, missing vector file, or synthesis failure.
 # Usage: scripts/check-rtl.sh [--no-synth] [unit ...]    (default: every rtl/*.v)
 # SYNTH_SKIP="unit ..." leaves units out of the Yosys step (their simulations still run).
@@ -25,6 +27,13 @@ trap 'rm -rf "$out_dir"' EXIT
 
 run_one() { # unit simulator
   local u=$1 sim=$2 ports=()
+  if [[ $u == chip_* ]]; then # whole queries (scripts/run-chip.sh); Icarus only the short ones
+    local status=0 qs=()
+    [ "$sim" = icarus ] && read -r -a qs <<<"${ICARUS_CHIP_QUERIES-apart_lifo_first sphere_lifo_first}"
+    scripts/run-chip.sh --sim "$sim" --chip "rtl/$u.v" "${qs[@]}" >"$out_dir/$u.$sim.out" 2>&1 || status=$?
+    echo "$status" >"$out_dir/$u.$sim.rc"
+    return
+  fi
   # the top module's own port list (sub-modules such as TRI_UNIT's T.CHECKs have valid_in too)
   if grep -m1 '^module top(' "rtl/$u.v" | grep -Eq '[(,]valid_in[,)]'; then ports=(--in-valid valid_in --out-valid valid_out); fi
   local status=0
@@ -35,7 +44,8 @@ run_one() { # unit simulator
 fail=0
 summary=()
 for u in "${units[@]}"; do
-  if [ ! -f "vectors/$u.hex" ]; then echo "missing vectors/$u.hex for rtl/$u.v (run: cargo run --release -- vectors)"; fail=1; continue; fi
+  [[ $u == chip_* ]] && vec=vectors/chip/queries.txt || vec=vectors/$u.hex
+  if [ ! -f "$vec" ]; then echo "missing $vec for rtl/$u.v (run: cargo run --release -- vectors)"; fail=1; continue; fi
   for sim in icarus verilator; do
     while [ "$(jobs -rp | wc -l)" -ge "$jobs_max" ]; do wait -n || true; done
     run_one "$u" "$sim" &
@@ -43,7 +53,7 @@ for u in "${units[@]}"; do
 done
 wait
 for u in "${units[@]}"; do
-  [ -f "vectors/$u.hex" ] || continue
+  [ -f "vectors/$u.hex" ] || [[ $u == chip_* ]] || continue
   for sim in icarus verilator; do
     out=$(cat "$out_dir/$u.$sim.out"); status=$(cat "$out_dir/$u.$sim.rc")
     line=$(grep -E '^[0-9]+ passed, [0-9]+ failed$' <<<"$out" | tail -n 1 || true)

@@ -5,7 +5,7 @@
 //! `CCHIP_BLESS=1 cargo test --release --test rtl_chip` rewrites vectors/chip/*.expect
 //! from the rust-hdl runs (after a deliberate change of the cycle semantics).
 
-use collision_chip::rtl::chip_io::{queries, run_query, ChipQuery, ChipTrace, QueryImage, CHIP_CONFIG};
+use collision_chip::rtl::chip_io::{queries, run_query, run_query_vcd, ChipQuery, ChipTrace, PreparedQuery, QueryImage, CHIP_CONFIG};
 use collision_chip::rtl::e8m15::{chip_top, CollisionChip};
 use collision_chip::traversal::{Mode, Traversal};
 use std::path::PathBuf;
@@ -57,6 +57,11 @@ fn run_and_check(name: &str) {
     let img = p.image.clone();
     let timing = q.timing;
     let tr = big_stack(move || run_query(&mut chip::<8, 9>(), &img, timing, MAX_CYCLES, |_, _| {})).unwrap();
+    check(&q, &p, &tr);
+}
+
+fn check(q: &ChipQuery, p: &PreparedQuery, tr: &ChipTrace) {
+    let name = q.name;
     println!("{name}: {}", tr.text().lines().last().unwrap());
     tr.check(q.mode, &p.golden_all).unwrap_or_else(|e| panic!("{name}: {e}"));
     if q.mode == Mode::All {
@@ -67,7 +72,7 @@ fn run_and_check(name: &str) {
             assert_eq!((tr.node_fetches, tr.tri_fetches), (g.node_fetches, g.tri_fetches), "{name}: fetches");
         }
     }
-    compare_with_expect(name, &tr);
+    compare_with_expect(name, tr);
 }
 
 macro_rules! query_tests {
@@ -79,7 +84,63 @@ macro_rules! query_tests {
     )*};
 }
 
-query_tests!(sphere_fifo_all sphere_lifo_all sphere_fifo_first sphere_lifo_first bunny_lifo_all bunny_fifo_first);
+query_tests!(sphere_fifo_all sphere_lifo_all sphere_fifo_first bunny_lifo_all bunny_fifo_first);
+
+/// The LIFO first-hit query, traced: target/rtl-vcd/chip_sphere_lifo_first.vcd (open it with
+/// scripts/gtkw/chip_e8m15_k6.gtkw) holds the signals the save file shows.
+#[test]
+fn sphere_lifo_first() {
+    let q = query("sphere_lifo_first");
+    let p = q.prepare().unwrap();
+    let img = p.image.clone();
+    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("target/rtl-vcd/chip_sphere_lifo_first.vcd");
+    let vcd = path.clone();
+    let tr = big_stack(move || run_query_vcd(&mut chip::<8, 9>(), &img, q.timing, MAX_CYCLES, &vcd)).unwrap();
+    println!("wrote {}", path.display());
+    check(&query("sphere_lifo_first"), &p, &tr);
+    assert_eq!(vcd_results(&path), tr.results, "the VCD's results differ from the trace");
+}
+
+/// The results a traversal VCD shows: `(cycle, a, b, uncertain)` for every time step with
+/// `chip.results.res_valid` high (time t = after the (t+1)-th edge of the query, so the
+/// result is read in cycle t + 1).
+fn vcd_results(path: &std::path::Path) -> Vec<(u64, u32, u32, bool)> {
+    use vcd::{Command, Value};
+    let mut p = vcd::Parser::new(std::io::BufReader::new(std::fs::File::open(path).unwrap()));
+    let h = p.parse_header().unwrap();
+    let id = |n: &str| h.find_var(&["chip", "results", n]).unwrap_or_else(|| panic!("no chip.results.{n}")).code;
+    let ids = [id("res_valid"), id("res_a"), id("res_b"), id("res_uncertain")];
+    let num = |v: &[Value]| v.iter().fold(0u64, |a, x| a << 1 | (*x == Value::V1) as u64);
+    let (mut cur, mut time, mut out) = ([0u64; 4], None, vec![]);
+    let mut flush = |t: Option<u64>, cur: &[u64; 4]| {
+        if let Some(t) = t {
+            if cur[0] == 1 {
+                out.push((t + 1, cur[1] as u32, cur[2] as u32, cur[3] == 1));
+            }
+        }
+    };
+    for c in p {
+        match c.unwrap() {
+            Command::Timestamp(t) => {
+                // values hold until they change: every step from the last time to t
+                if let Some(t0) = time {
+                    for s in t0..t {
+                        flush(Some(s), &cur);
+                    }
+                }
+                time = Some(t);
+            }
+            Command::ChangeVector(i, v) => {
+                if let Some(k) = ids.iter().position(|&x| x == i) {
+                    cur[k] = num(&v);
+                }
+            }
+            _ => {}
+        }
+    }
+    flush(time, &cur);
+    out
+}
 
 /// Every query of the set has its test above (the Verilog runs the whole set).
 #[test]

@@ -470,3 +470,72 @@ pub fn write_vectors(dir: &std::path::Path) -> Result<Vec<String>, String> {
     written.push(path.display().to_string());
     Ok(written)
 }
+
+/// [`run_query`] writing a VCD of the traversal to `path`: the signals of
+/// [`CollisionChip::probe`] (host, D_CNTR, memory port, DOP unit, leaf pairs, TRI_UNIT,
+/// results, counters; one scope each under `chip`), sampled after every rising edge, one
+/// time unit per clock (time 0: the edge that took `start`). For GTKWave with
+/// scripts/gtkw/chip_e8m15_k6.gtkw. (A VCD of every rust-hdl signal would be about 600 kB
+/// per clock, mostly T.CHECK's.)
+pub fn run_query_vcd<const N: usize, const NP1: usize>(
+    chip: &mut CollisionChip<N, NP1>,
+    image: &QueryImage,
+    timing: MemTiming,
+    max_cycles: u64,
+    path: &std::path::Path,
+) -> Result<ChipTrace, ChipError> {
+    use vcd::{TimescaleUnit, Value};
+    let io = |e: std::io::Error| ChipError(format!("{}: {e}", path.display()));
+    if let Some(dir) = path.parent() {
+        std::fs::create_dir_all(dir).map_err(io)?;
+    }
+    let file = std::io::BufWriter::new(std::fs::File::create(path).map_err(io)?);
+    let mut w = vcd::Writer::new(file);
+    w.timescale(1, TimescaleUnit::NS).map_err(io)?;
+    w.add_module("chip").map_err(io)?;
+    let names = chip.probe();
+    let mut ids = vec![];
+    let mut scope = "";
+    for &(s, name, width, _) in &names {
+        if s != scope {
+            if !scope.is_empty() {
+                w.upscope().map_err(io)?;
+            }
+            w.add_module(s).map_err(io)?;
+            scope = s;
+        }
+        ids.push(w.add_wire(width, name).map_err(io)?);
+    }
+    w.upscope().map_err(io)?;
+    w.upscope().map_err(io)?;
+    w.enddefinitions().map_err(io)?;
+    let mut last: Vec<Option<u64>> = vec![None; names.len()];
+    let writes = image.writes.len() as u64 + 1;
+    let mut err = None;
+    let trace = run_query(chip, image, timing, max_cycles, |c, time| {
+        // after each rising edge (odd half periods); the register writes are left out
+        let edge = time / 10;
+        if time % 10 != 5 || edge + 1 < writes || err.is_some() {
+            return;
+        }
+        let t = edge + 1 - writes;
+        let mut stamped = false;
+        for (i, (_, _, width, v)) in c.probe().into_iter().enumerate() {
+            if last[i] == Some(v) {
+                continue;
+            }
+            last[i] = Some(v);
+            let bits: Vec<Value> = (0..width).rev().map(|b| if v >> b & 1 == 1 { Value::V1 } else { Value::V0 }).collect();
+            let r = (if stamped { Ok(()) } else { w.timestamp(t) }).and_then(|_| w.change_vector(ids[i], &bits));
+            stamped = true;
+            if let Err(e) = r {
+                err = Some(e);
+                return;
+            }
+        }
+    })?;
+    if let Some(e) = err {
+        return Err(io(e));
+    }
+    Ok(trace)
+}

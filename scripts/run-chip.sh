@@ -1,0 +1,57 @@
+#!/usr/bin/env bash
+# Runs the exported collision chip on the query set of vectors/chip/ in Verilator (or
+# Icarus) and compares each trace — results with their cycles, the cycle count, overflow,
+# maximum queue depth and counters — with the rust-hdl chip's (vectors/chip/<query>.expect).
+#
+# Usage: scripts/run-chip.sh [--sim verilator|icarus] [--chip rtl/chip_e8m15_k6.v] [query ...]
+#   (default: Verilator, every query of vectors/chip/queries.txt)
+# The testbench is scripts/verilog/chip_tb.v; builds and logs in target/verilog/<sim>/chip/.
+# Prints `<query>: pass (<cycles> cycles)` or the diff, then `N passed, M failed`; exits
+# non-zero on any failure. Icarus runs the chip at a few clocks per second (a query takes
+# minutes); Verilator builds it once in about 5 minutes and then runs each query at once.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+sim=verilator chip=rtl/chip_e8m15_k6.v queries=()
+while [ $# -gt 0 ]; do
+  case $1 in
+    --sim) sim=$2; shift 2 ;;
+    --chip) chip=$2; shift 2 ;;
+    -h|--help) sed -n '2,/^$/p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 2 ;;
+    *) queries+=("$1"); shift ;;
+  esac
+done
+[ -f "$chip" ] || { echo "run-chip.sh: no such file: $chip (run: cargo run --release -- export-verilog)" >&2; exit 2; }
+[ ${#queries[@]} -gt 0 ] || mapfile -t queries < <(cut -d' ' -f1 vectors/chip/queries.txt)
+out=target/verilog/$sim/chip
+mkdir -p "$out"
+case $sim in
+  verilator)
+    command -v verilator >/dev/null || { echo "run-chip.sh: verilator not found (apt-get install -y verilator)" >&2; exit 127; }
+    # rust-hdl output needs -Wno-WIDTH (32-bit literals); the FP normalisers trip UNOPTFLAT
+    verilator --lint-only -Wno-WIDTH -Wno-UNOPTFLAT --top-module top "$chip"
+    verilator --binary -O3 -Wno-WIDTH -Wno-UNOPTFLAT -Wno-STMTDLY --top-module tb -Mdir "$out/obj" \
+      -j "$(nproc 2>/dev/null || echo 2)" -o Vchip scripts/verilog/chip_tb.v "$chip" >"$out/build.log" 2>&1 \
+      || { cat "$out/build.log" >&2; echo "run-chip.sh: Verilator build failed" >&2; exit 1; }
+    run() { "$out/obj/Vchip" "$@"; } ;;
+  icarus)
+    command -v iverilog >/dev/null || { echo "run-chip.sh: iverilog not found (apt-get install -y iverilog)" >&2; exit 127; }
+    iverilog -g2012 -s tb -o "$out/chip.vvp" scripts/verilog/chip_tb.v "$chip"
+    run() { vvp -n "$out/chip.vvp" "$@"; } ;;
+  *) echo "run-chip.sh: unknown simulator $sim" >&2; exit 2 ;;
+esac
+pass=0 fail=0
+for q in "${queries[@]}"; do
+  read -r _ latency interval < <(grep "^$q " vectors/chip/queries.txt) \
+    || { echo "$q: not in vectors/chip/queries.txt"; fail=$((fail + 1)); continue; }
+  run +mem="vectors/chip/$q.mem" +host="vectors/chip/$q.host" +latency="$latency" +interval="$interval" \
+    | grep -E '^(result|done|timeout)' >"$out/$q.trace" || true
+  if diff -u "vectors/chip/$q.expect" "$out/$q.trace" >"$out/$q.diff"; then
+    echo "$q: pass ($(sed -n 's/^done \([0-9]*\) .*/\1/p' "$out/$q.trace") cycles)"
+    pass=$((pass + 1))
+  else
+    echo "$q: FAIL (expected vectors/chip/$q.expect, got $out/$q.trace)"; head -n 20 "$out/$q.diff"
+    fail=$((fail + 1))
+  fi
+done
+echo "$pass passed, $fail failed"
+[ $fail = 0 ] && [ $pass -gt 0 ]

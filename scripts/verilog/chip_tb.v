@@ -1,0 +1,104 @@
+// Testbench of the exported collision chip (rtl/chip_e8m15_k6.v, module `top`): the host
+// and the memory of src/rtl/chip_io.rs, clock for clock. It writes the registers from
+// +host=<file> (one `{addr[10], data[32]}` per line), pulses `start`, serves memory
+// requests from +mem=<file> ($readmemh, one 578-bit word per line) with the memory model
+// (+latency=L: a request accepted at edge t is answered in the cycle ending with edge t+L;
+// +interval=I: the next request is accepted I edges later at the earliest), reads every
+// result at once, and prints the trace of chip_io::ChipTrace::text:
+//   result <cycle> <A's triangle> <B's triangle> <uncertain>
+//   done <cycles> overflow <0|1> max_depth <n> dop_tests <n> tri_tests <n> node_fetches <n> tri_fetches <n>
+// Cycle 1 is the one after the edge that took `start`. +max_cycles=N (default 100000)
+// bounds the query (`timeout` is printed instead of `done`). Runs in Verilator and Icarus.
+`timescale 1ns / 1ps
+module tb;
+  localparam MW = 578;
+  localparam DEPTH = 1 << 16;
+  reg clock = 0;
+  reg host_we = 0;
+  reg [9:0] host_addr = 0;
+  reg [31:0] host_data = 0;
+  reg start = 0;
+  wire busy, done, overflow;
+  wire [8:0] max_depth;
+  wire [31:0] dop_tests, tri_tests, node_fetches, tri_fetches;
+  wire mem_req_valid;
+  wire [23:0] mem_req_addr;
+  reg mem_req_ready = 0;
+  reg mem_resp_valid = 0;
+  reg [MW-1:0] mem_resp_data = 0;
+  wire res_valid, res_uncertain;
+  wire [31:0] res_tag;
+  reg res_ready = 1;
+
+  top dut(.clock(clock), .host_we(host_we), .host_addr(host_addr), .host_data(host_data), .start(start),
+          .busy(busy), .done(done), .overflow(overflow), .max_depth(max_depth), .dop_tests(dop_tests),
+          .tri_tests(tri_tests), .node_fetches(node_fetches), .tri_fetches(tri_fetches),
+          .mem_req_valid(mem_req_valid), .mem_req_addr(mem_req_addr), .mem_req_ready(mem_req_ready),
+          .mem_resp_valid(mem_resp_valid), .mem_resp_data(mem_resp_data),
+          .res_valid(res_valid), .res_tag(res_tag), .res_uncertain(res_uncertain), .res_ready(res_ready));
+
+  reg [MW-1:0] mem [0:DEPTH-1];
+  reg [41:0] host [0:1023];
+  // requests accepted and not yet answered: due cycle and address, in order
+  integer due [0:15];
+  integer qaddr [0:15];
+  integer qh, qt, next_accept, cyc, i, latency, interval, max_cycles;
+  reg [1023:0] mem_file, host_file;
+
+  task edge_;  // one rising edge, inputs set before it, outputs settled after it
+    begin
+      #5 clock = 1;
+      #5 clock = 0;
+    end
+  endtask
+
+  initial begin
+    if (!$value$plusargs("mem=%s", mem_file) || !$value$plusargs("host=%s", host_file)) begin
+      $display("chip_tb: need +mem=<file> +host=<file>");
+      $finish;
+    end
+    if (!$value$plusargs("latency=%d", latency)) latency = 1;
+    if (!$value$plusargs("interval=%d", interval)) interval = 1;
+    if (!$value$plusargs("max_cycles=%d", max_cycles)) max_cycles = 100000;
+    for (i = 0; i < 1024; i = i + 1) host[i] = {42{1'b1}};
+    $readmemh(mem_file, mem);
+    $readmemh(host_file, host);
+    for (i = 0; host[i][41:32] != 10'h3ff; i = i + 1) begin
+      host_we = 1;
+      host_addr = host[i][41:32];
+      host_data = host[i][31:0];
+      edge_;
+    end
+    host_we = 0;
+    start = 1;
+    edge_;
+    start = 0;
+    qh = 0;
+    qt = 0;
+    next_accept = 0;
+    for (cyc = 1; cyc <= max_cycles && !done; cyc = cyc + 1) begin
+      mem_req_ready = cyc >= next_accept;
+      mem_resp_valid = 0;
+      if (qh != qt && due[qh % 16] <= cyc) begin
+        mem_resp_valid = 1;
+        mem_resp_data = mem[qaddr[qh % 16]];
+        qh = qh + 1;
+      end
+      // the chip's request and result outputs depend on its registers only
+      if (mem_req_valid && mem_req_ready) begin
+        due[qt % 16] = cyc + latency;
+        qaddr[qt % 16] = mem_req_addr;
+        qt = qt + 1;
+        next_accept = cyc + interval;
+      end
+      if (res_valid) $display("result %0d %0d %0d %0d", cyc, res_tag[15:0], res_tag[31:16], res_uncertain);
+      edge_;
+    end
+    if (done)
+      $display("done %0d overflow %0d max_depth %0d dop_tests %0d tri_tests %0d node_fetches %0d tri_fetches %0d",
+               cyc - 1, overflow, max_depth, dop_tests, tri_tests, node_fetches, tri_fetches);
+    else
+      $display("timeout after %0d cycles", max_cycles);
+    $finish;
+  end
+endmodule
