@@ -8,7 +8,7 @@ use collision_chip::oracle;
 use collision_chip::pose::Pose;
 use collision_chip::query::{place, Accuracy, Chip};
 use collision_chip::report::{accuracy, summary_table, PoseRecord};
-use collision_chip::rtl::units;
+use collision_chip::rtl::{chip_io, units};
 use collision_chip::scene::{Scene, Sweep, DEFAULT_SCENE};
 use collision_chip::traversal::{Mode, Traversal};
 use indicatif::{ProgressBar, ProgressStyle};
@@ -43,11 +43,23 @@ enum Cmd {
     Query(QueryArgs),
     /// Run a scene file (TOML: objects, pose or sweep, chip, query, outputs); without a
     /// file, the built-in default scene (vectors/scenes/default.toml).
+    ///
+    /// With --rtl (or `cycles = true` in [outputs]) every pose also runs on the RTL chip
+    /// in rust-hdl's simulator (k = 6, format reduced, fifo or lifo; about 25 clocks per
+    /// second, so small meshes: e.g. vectors/scenes/rtl_spheres.toml), which reports its
+    /// cycles and is checked against the golden pairs.
     Run {
         scene: Option<PathBuf>,
         /// Print one JSON record per pose instead of the table.
         #[arg(long)]
         json: bool,
+        /// Also run every pose on the RTL chip and report its cycles.
+        #[arg(long)]
+        rtl: bool,
+        /// Write a traversal VCD per pose into this directory (implies --rtl); open one with
+        /// `gtkwave DIR/pose0.vcd scripts/gtkw/chip_e8m15_k6.gtkw`.
+        #[arg(long, value_name = "DIR")]
+        vcd: Option<PathBuf>,
     },
     /// Write the Verilog of every exported RTL unit (rust-hdl's generate_verilog, identical
     /// modules merged), one file per unit, format and rounding: rtl/<unit>.v. Run the files
@@ -135,11 +147,11 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     let res = match cli.cmd {
         Some(Cmd::Query(q)) => query(q),
-        Some(Cmd::Run { scene, json }) => run(scene, json),
+        Some(Cmd::Run { scene, json, rtl, vcd }) => run(scene, json, rtl, vcd),
         Some(Cmd::Accuracy(a)) => accuracy(a),
         Some(Cmd::ExportVerilog { out }) => report_written(units::write_verilog(&out)),
         Some(Cmd::Vectors { out }) => report_written(units::write_vectors(&out)),
-        None => run(None, false),
+        None => run(None, false, false, None),
     };
     match res {
         Ok(()) => ExitCode::SUCCESS,
@@ -220,7 +232,7 @@ fn report_written(r: std::io::Result<Vec<String>>) -> Result<(), String> {
 
 fn progress_bar(len: u64, hidden: bool) -> ProgressBar {
     let bar = if hidden || !std::io::stderr().is_terminal() { ProgressBar::hidden() } else { ProgressBar::new(len) };
-    bar.set_style(ProgressStyle::with_template("{bar:40} {pos}/{len} poses {elapsed} (eta {eta})").expect("valid template"));
+    bar.set_style(ProgressStyle::with_template("{bar:40} {pos}/{len} poses {elapsed} (eta {eta}) {msg}").expect("valid template"));
     bar
 }
 
@@ -242,11 +254,18 @@ fn accuracy(a: AccuracyArgs) -> Result<(), String> {
     Ok(())
 }
 
-fn run(path: Option<PathBuf>, json: bool) -> Result<(), String> {
-    let scene = match &path {
+fn run(path: Option<PathBuf>, json: bool, rtl: bool, vcd: Option<PathBuf>) -> Result<(), String> {
+    let mut scene = match &path {
         Some(p) => Scene::load(p)?,
         None => Scene::parse(DEFAULT_SCENE, "built-in default scene")?,
     };
+    if vcd.is_some() {
+        scene.outputs.waveforms = vcd;
+    }
+    scene.outputs.cycles |= rtl || scene.outputs.waveforms.is_some();
+    if scene.outputs.cycles {
+        chip_io::rtl_order(&scene.cfg, scene.traversal).map_err(|e| format!("{}: {e}", scene.name))?;
+    }
     let (ma, mb) = (load(&scene.objects.a, scene.objects.unit_cube)?, load(&scene.objects.b, scene.objects.unit_cube)?);
     let (ta, tb) = (ma.triangles_f64(), mb.triangles_f64());
     let chip = Chip::new(&ta, &tb, scene.cfg)?;
@@ -271,10 +290,30 @@ fn run(path: Option<PathBuf>, json: bool) -> Result<(), String> {
             exact_pair_count: exact.as_ref().map(Vec::len),
             pairs: scene.outputs.pairs.then_some(res.pairs),
             counters: res.counters,
+            rtl: None,
         });
         bar.inc(1);
     }
     bar.finish_and_clear();
+    if scene.outputs.cycles {
+        let poses: Vec<Pose> = scene.poses.iter().map(|p| p.pose).collect();
+        let bar = progress_bar(poses.len() as u64, json);
+        bar.set_message("on the RTL chip (rust-hdl)");
+        let rtl = chip_io::run_poses(
+            &chip,
+            &poses,
+            scene.mode,
+            scene.traversal,
+            scene.memory,
+            scene.outputs.waveforms.as_deref(),
+            RTL_MAX_CYCLES,
+            || bar.inc(1),
+        )?;
+        bar.finish_and_clear();
+        for (r, x) in records.iter_mut().zip(rtl) {
+            r.rtl = Some(x);
+        }
+    }
     if json {
         println!("{}", serde_json::to_string_pretty(&records).expect("serialisable"));
     } else {
@@ -282,6 +321,32 @@ fn run(path: Option<PathBuf>, json: bool) -> Result<(), String> {
         if scene.outputs.accuracy {
             println!("misses = exact pairs the chip did not report; extras = reported pairs that do not intersect.");
         }
+        if scene.outputs.cycles {
+            println!(
+                "rtl_cycles = clocks from start to done on the RTL chip (memory latency {}, interval {}); rtl_queue = most queue entries (2 node pairs each).",
+                scene.memory.latency, scene.memory.interval
+            );
+            for (i, r) in records.iter().enumerate() {
+                if let Some(v) = r.rtl.as_ref().and_then(|x| x.vcd.as_ref()) {
+                    println!("pose {i}: VCD {v}  (gtkwave {v} scripts/gtkw/chip_e8m15_k6.gtkw)");
+                }
+            }
+        }
+    }
+    let bad: Vec<String> = records
+        .iter()
+        .enumerate()
+        .filter_map(|(i, r)| {
+            let x = r.rtl.as_ref()?;
+            let why = if x.overflow { Some("the pair queue overflowed".to_string()) } else { x.golden_mismatch.clone() };
+            why.map(|w| format!("pose {i}: {w}"))
+        })
+        .collect();
+    if !bad.is_empty() {
+        return Err(format!("the RTL chip disagrees with the golden model:\n  {}", bad.join("\n  ")));
     }
     Ok(())
 }
+
+/// A bound on one RTL query (the query set's longest takes about 2,000 clocks).
+const RTL_MAX_CYCLES: u64 = 1_000_000;

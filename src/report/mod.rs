@@ -23,6 +23,9 @@ pub struct PoseRecord {
     pub exact_pair_count: Option<usize>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub accuracy: Option<Accuracy>,
+    /// The pose on the RTL chip (scenes asking for `cycles`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub rtl: Option<crate::rtl::chip_io::RtlRecord>,
 }
 
 /// One table row per sweep distance (or one per pose without a sweep): means of the
@@ -40,6 +43,7 @@ pub fn summary_table(records: &[PoseRecord]) -> String {
         }
     }
     let with_acc = records.iter().any(|r| r.accuracy.is_some());
+    let with_rtl = records.iter().any(|r| r.rtl.is_some());
     let mut out = String::new();
     let _ = write!(
         out,
@@ -48,6 +52,9 @@ pub fn summary_table(records: &[PoseRecord]) -> String {
     );
     if with_acc {
         let _ = write!(out, " {:>9} {:>7} {:>7}", "exact", "misses", "extras");
+    }
+    if with_rtl {
+        let _ = write!(out, " {:>10} {:>9}", "rtl_cycles", "rtl_queue");
     }
     out.push('\n');
     for (key, g) in &groups {
@@ -75,6 +82,15 @@ pub fn summary_table(records: &[PoseRecord]) -> String {
                 mean(&|r| r.exact_pair_count.unwrap_or(0) as f64),
                 sum(&|a| a.misses),
                 sum(&|a| a.extras)
+            );
+        }
+        if with_rtl {
+            let rtl: Vec<_> = g.iter().filter_map(|r| r.rtl.as_ref()).collect();
+            let _ = write!(
+                out,
+                " {:>10.0} {:>9}",
+                rtl.iter().map(|r| r.cycles as f64).sum::<f64>() / rtl.len().max(1) as f64,
+                rtl.iter().map(|r| r.max_depth).max().unwrap_or(0)
             );
         }
         out.push('\n');

@@ -32,6 +32,7 @@ const W: usize = 24;
 /// (the memory's throughput is `1 / interval` words per clock). Responses come in request
 /// order.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct MemTiming {
     pub latency: u32,
     pub interval: u32,
@@ -538,4 +539,98 @@ pub fn run_query_vcd<const N: usize, const NP1: usize>(
         return Err(io(e));
     }
     Ok(trace)
+}
+
+/// One pose of a scene on the RTL chip.
+#[derive(Clone, Debug, PartialEq, Eq, serde::Serialize)]
+pub struct RtlRecord {
+    pub cycles: u64,
+    /// Pairs the chip reported intersecting, and uncertain (for the host to settle).
+    pub hits: usize,
+    pub uncertain: usize,
+    pub dop_tests: u64,
+    pub tri_tests: u64,
+    pub node_fetches: u64,
+    pub tri_fetches: u64,
+    /// Most queue entries (two node pairs each) waiting at once.
+    pub max_depth: u64,
+    pub overflow: bool,
+    /// The chip's pairs agree with the golden model's ([`ChipTrace::check`]); otherwise why not.
+    pub golden_mismatch: Option<String>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub vcd: Option<String>,
+}
+
+/// Whether the RTL chip runs a query of this configuration and traversal, and in which
+/// order (true: LIFO); otherwise what to change.
+pub fn rtl_order(cfg: &ChipConfig, traversal: crate::traversal::Traversal) -> Result<bool, String> {
+    use crate::traversal::Traversal;
+    if *cfg != CHIP_CONFIG {
+        return Err(format!(
+            "the RTL chip is built for k = 6, format reduced (e8m15), outward DOP rounding; this scene has k = {}, format {}, {:?}: set [chip] k = 6, format = \"reduced\", dop_rounding = \"outward\"",
+            cfg.k, cfg.format, cfg.dop_rounding
+        ));
+    }
+    match traversal {
+        Traversal::Lifo => Ok(true),
+        Traversal::Fifo => Ok(false),
+        t => Err(format!("the RTL chip's D_CNTR runs the fifo or lifo traversal, not {t:?}: set [query] traversal")),
+    }
+}
+
+/// Runs `poses` on the rust-hdl chip (one chip, queries back to back; on a thread with the
+/// big stack it needs), each checked against the golden model; with `vcd_dir`, writes
+/// `<vcd_dir>/pose<i>.vcd`. `tick` is called after each pose. Errors name what the RTL
+/// chip cannot run (another configuration, a recursive or list traversal, too large a tree).
+pub fn run_poses(
+    chip: &crate::query::Chip,
+    poses: &[crate::pose::Pose],
+    mode: Mode,
+    traversal: crate::traversal::Traversal,
+    timing: MemTiming,
+    vcd_dir: Option<&std::path::Path>,
+    max_cycles: u64,
+    mut tick: impl FnMut() + Send,
+) -> Result<Vec<RtlRecord>, String> {
+    let lifo = rtl_order(&chip.cfg, traversal)?;
+    let images = poses
+        .iter()
+        .map(|p| QueryImage::new(&chip.a, &chip.b, &chip.setup(p), lifo, mode))
+        .collect::<Result<Vec<_>, _>>()?;
+    let golden: Vec<QueryResult> = poses.iter().map(|p| chip.query(p, Mode::All, traversal)).collect();
+    std::thread::scope(|s| {
+        std::thread::Builder::new()
+            .stack_size(1 << 30)
+            .spawn_scoped(s, || {
+                let mut c = super::e8m15::chip_top::<8, 9>(CHIP_CONFIG.dop_rounding.op(), CHIP_CONFIG.tri_rounding);
+                let mut out = vec![];
+                for (i, (img, g)) in images.iter().zip(&golden).enumerate() {
+                    let path = vcd_dir.map(|d| d.join(format!("pose{i}.vcd")));
+                    let tr = match &path {
+                        Some(p) => run_query_vcd(&mut c, img, timing, max_cycles, p),
+                        None => run_query(&mut c, img, timing, max_cycles, |_, _| {}),
+                    }
+                    .map_err(|e| format!("pose {i}: {e}"))?;
+                    let (hits, unc) = tr.pairs();
+                    out.push(RtlRecord {
+                        cycles: tr.cycles,
+                        hits: hits.len(),
+                        uncertain: unc.len(),
+                        dop_tests: tr.dop_tests,
+                        tri_tests: tr.tri_tests,
+                        node_fetches: tr.node_fetches,
+                        tri_fetches: tr.tri_fetches,
+                        max_depth: tr.max_depth,
+                        overflow: tr.overflow,
+                        golden_mismatch: tr.check(mode, g).err(),
+                        vcd: path.map(|p| p.display().to_string()),
+                    });
+                    tick();
+                }
+                Ok(out)
+            })
+            .map_err(|e| format!("cannot start the RTL simulation thread: {e}"))?
+            .join()
+            .map_err(|_| "the RTL simulation thread panicked".to_string())?
+    })
 }

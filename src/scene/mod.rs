@@ -32,6 +32,13 @@
 //! [outputs]
 //! pairs = false               # list the pairs of every pose
 //! accuracy = true             # run the exact oracle and count misses and extra pairs
+//! cycles = false              # run every pose on the RTL chip (rust-hdl, about 25 clocks/s:
+//!                             # small meshes only; k = 6, format "reduced", fifo or lifo)
+//! waveforms = "target/rtl-vcd/my-scene"   # also a traversal VCD per pose (implies cycles)
+//!
+//! [memory]                    # the RTL run's memory model (optional)
+//! latency = 1                 # clocks from an accepted request to its response
+//! interval = 1                # clocks between accepted requests (1 / words per clock)
 //! ```
 
 use crate::config::{ChipConfig, DopRounding};
@@ -58,6 +65,8 @@ struct File {
     sweep: Option<Sweep>,
     #[serde(default)]
     outputs: Outputs,
+    #[serde(default)]
+    memory: Option<crate::rtl::chip_io::MemTiming>,
 }
 
 #[derive(Debug, Deserialize)]
@@ -97,13 +106,19 @@ fn one() -> u64 {
     1
 }
 
-#[derive(Debug, Clone, Copy, Default, Deserialize)]
+#[derive(Debug, Clone, Default, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Outputs {
     #[serde(default)]
     pub pairs: bool,
     #[serde(default)]
     pub accuracy: bool,
+    /// Run every pose on the RTL chip and report its cycles.
+    #[serde(default)]
+    pub cycles: bool,
+    /// Directory for one traversal VCD per pose (implies `cycles`).
+    #[serde(default)]
+    pub waveforms: Option<std::path::PathBuf>,
 }
 
 /// One pose of a scene, with the sweep distance it belongs to (if any).
@@ -123,6 +138,8 @@ pub struct Scene {
     pub traversal: Traversal,
     pub poses: Vec<ScenePose>,
     pub outputs: Outputs,
+    /// The memory model of the RTL run.
+    pub memory: crate::rtl::chip_io::MemTiming,
 }
 
 impl Scene {
@@ -169,7 +186,13 @@ impl Scene {
             mode: f.query.mode.unwrap_or(Mode::All),
             traversal: f.query.traversal.unwrap_or(Traversal::Lifo),
             poses,
-            outputs: f.outputs,
+            outputs: Outputs { cycles: f.outputs.cycles || f.outputs.waveforms.is_some(), ..f.outputs },
+            memory: match f.memory {
+                Some(m) if m.latency == 0 || m.interval == 0 => {
+                    return Err(err("[memory] latency and interval must be at least 1".into()))
+                }
+                m => m.unwrap_or_default(),
+            },
         })
     }
 }
@@ -215,6 +238,27 @@ mod tests {
         assert!(e.contains("no pose"), "{e}");
         let e = Scene::parse("[objects]\na = \"x\"\nb = \"y\"\nbogus = 1\n", "s.toml").unwrap_err();
         assert!(e.starts_with("s.toml:4:"), "{e}");
+    }
+
+    #[test]
+    fn rtl_outputs_and_memory() {
+        let base = "[objects]\na = \"sphere:12\"\nb = \"sphere:12\"\n[[pose]]\nrot_deg=[0,0,0]\nt=[0,0,0]\n";
+        let s = Scene::parse(&format!("{base}[outputs]\nwaveforms = \"w\"\n[memory]\nlatency = 3\ninterval = 2\n"), "s").unwrap();
+        assert!(s.outputs.cycles, "waveforms imply cycles");
+        assert_eq!(s.memory, crate::rtl::chip_io::MemTiming { latency: 3, interval: 2 });
+        let s = Scene::parse(base, "s").unwrap();
+        assert!(!s.outputs.cycles);
+        assert_eq!(s.memory, crate::rtl::chip_io::MemTiming { latency: 1, interval: 1 });
+        let e = Scene::parse(&format!("{base}[memory]\nlatency = 0\ninterval = 1\n"), "s").unwrap_err();
+        assert!(e.contains("at least 1"), "{e}");
+        let e = Scene::parse(&format!("{base}[memory]\nlatncy = 2\n"), "s").unwrap_err();
+        assert!(e.starts_with("s:8:"), "{e}");
+        let rtl = Scene::parse(include_str!("../../vectors/scenes/rtl_spheres.toml"), "rtl_spheres").unwrap();
+        assert_eq!(crate::rtl::chip_io::rtl_order(&rtl.cfg, rtl.traversal), Ok(true));
+        let e = crate::rtl::chip_io::rtl_order(&ChipConfig::default(), Traversal::Lifo).unwrap_err();
+        assert!(e.contains("k = 6"), "{e}");
+        let e = crate::rtl::chip_io::rtl_order(&rtl.cfg, Traversal::List).unwrap_err();
+        assert!(e.contains("fifo or lifo"), "{e}");
     }
 
     #[test]
