@@ -272,6 +272,7 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
     reg  cur_flip;
     reg  ent_last;
     reg  pop;
+    reg  child_push;
     reg  need_na;
     reg  need_nb;
     reg  req;
@@ -847,13 +848,6 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
                 ent_valid$d = 1'b0;
             end
         end
-        pop = run$q & ~halt & ~queue$empty & (~ent_valid$q | (issue & ent_last));
-        queue$pop = pop;
-        if (pop) begin
-            ent$d = queue$top_data;
-            ent_valid$d = 1'b1;
-            ent_second$d = 1'b0;
-        end
         r_a = side$q[(32'h0)+:(16)];
         r_b = side$q[(32'h10)+:(16)];
         r_flip = side$q[32'h20];
@@ -864,6 +858,14 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         r_b0 = side$q[(32'h43)+:(16)];
         r_b1 = side$q[(32'h53)+:(16)];
         r_hit = dop$valid_out & dop$overlap;
+        child_push = pend$q | (r_hit & ~(r_a_leaf & r_b_leaf));
+        pop = run$q & ~halt & ~queue$empty & (~ent_valid$q | (issue & ent_last)) & ~(mode_lifo$q & child_push);
+        queue$pop = pop;
+        if (pop) begin
+            ent$d = queue$top_data;
+            ent_valid$d = 1'b1;
+            ent_second$d = 1'b0;
+        end
         xa = r_a0;
         xb = r_a1;
         ya = r_b0;

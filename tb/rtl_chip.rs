@@ -101,9 +101,8 @@ fn sphere_lifo_first() {
     assert_eq!(vcd_results(&path), tr.results, "the VCD's results differ from the trace");
 }
 
-/// The results a traversal VCD shows: `(cycle, a, b, uncertain)` for every time step with
-/// `chip.results.res_valid` high (time t = after the (t+1)-th edge of the query, so the
-/// result is read in cycle t + 1).
+/// The results a traversal VCD shows: `(cycle, a, b, uncertain)` for every time step
+/// (= cycle) with `chip.results.res_valid` high.
 fn vcd_results(path: &std::path::Path) -> Vec<(u64, u32, u32, bool)> {
     use vcd::{Command, Value};
     let mut p = vcd::Parser::new(std::io::BufReader::new(std::fs::File::open(path).unwrap()));
@@ -115,7 +114,7 @@ fn vcd_results(path: &std::path::Path) -> Vec<(u64, u32, u32, bool)> {
     let mut flush = |t: Option<u64>, cur: &[u64; 4]| {
         if let Some(t) = t {
             if cur[0] == 1 {
-                out.push((t + 1, cur[1] as u32, cur[2] as u32, cur[3] == 1));
+                out.push((t, cur[1] as u32, cur[2] as u32, cur[3] == 1));
             }
         }
     };

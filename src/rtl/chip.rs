@@ -88,6 +88,7 @@ macro_rules! chip {
             cur_flip: Signal<Local, Bits<1>>,
             ent_last: Signal<Local, Bit>,
             pop: Signal<Local, Bit>,
+            child_push: Signal<Local, Bit>,
             // ---- node words held for the DOP unit (A's: e, B's: d)
             na_ok: DFF<Bit>,
             na_id: DFF<Bits<16>>,
@@ -213,6 +214,7 @@ macro_rules! chip {
                     cur_flip: Default::default(),
                     ent_last: Default::default(),
                     pop: Default::default(),
+                    child_push: Default::default(),
                     na_ok: Default::default(),
                     na_id: Default::default(),
                     na_word: Default::default(),
@@ -493,15 +495,6 @@ macro_rules! chip {
                         self.ent_valid.d.next = false;
                     }
                 }
-                // ---- pop the next entry when the current one is done (or issues its last pair)
-                self.pop.next = self.run.q.val() & !self.halt.val() & !self.queue.empty.val()
-                    & (!self.ent_valid.q.val() | (self.issue.val() & self.ent_last.val()));
-                self.queue.pop.next = self.pop.val();
-                if self.pop.val() {
-                    self.ent.d.next = self.queue.top_data.val();
-                    self.ent_valid.d.next = true;
-                    self.ent_second.d.next = false;
-                }
                 // ---- a DOP result: child entries (DOP-sharing order), or a leaf pair
                 self.r_a.next = self.side.q.val().get_bits::<16>(0);
                 self.r_b.next = self.side.q.val().get_bits::<16>(16);
@@ -513,6 +506,20 @@ macro_rules! chip {
                 self.r_b0.next = self.side.q.val().get_bits::<16>(67);
                 self.r_b1.next = self.side.q.val().get_bits::<16>(83);
                 self.r_hit.next = self.dop.valid_out.val() & self.dop.overlap.val();
+                // ---- pop the next entry when the current one is done (or issues its last pair);
+                // in LIFO order not while a child entry is pushed, so that the children are
+                // on top when popped, the first child first (depth first as far as the DOP
+                // pipeline allows)
+                self.child_push.next = self.pend.q.val() | (self.r_hit.val() & !(self.r_a_leaf.val() & self.r_b_leaf.val()));
+                self.pop.next = self.run.q.val() & !self.halt.val() & !self.queue.empty.val()
+                    & (!self.ent_valid.q.val() | (self.issue.val() & self.ent_last.val()))
+                    & !(self.mode_lifo.q.val() & self.child_push.val());
+                self.queue.pop.next = self.pop.val();
+                if self.pop.val() {
+                    self.ent.d.next = self.queue.top_data.val();
+                    self.ent_valid.d.next = true;
+                    self.ent_second.d.next = false;
+                }
                 // (xa, xb): A's children, (ya, yb): B's, in the pair's flip order
                 self.xa.next = self.r_a0.val();
                 self.xb.next = self.r_a1.val();

@@ -474,8 +474,9 @@ pub fn write_vectors(dir: &std::path::Path) -> Result<Vec<String>, String> {
 
 /// [`run_query`] writing a VCD of the traversal to `path`: the signals of
 /// [`CollisionChip::probe`] (host, D_CNTR, memory port, DOP unit, leaf pairs, TRI_UNIT,
-/// results, counters; one scope each under `chip`), sampled after every rising edge, one
-/// time unit per clock (time 0: the edge that took `start`). For GTKWave with
+/// results, counters; one scope each under `chip`), one time unit per clock: time t shows
+/// every signal in cycle t (inputs, registers and logic before the edge that ends it;
+/// cycle 0 is the one whose edge takes `start`, the numbering of [`ChipTrace`]). For GTKWave with
 /// scripts/gtkw/chip_e8m15_k6.gtkw. (A VCD of every rust-hdl signal would be about 600 kB
 /// per clock, mostly T.CHECK's.)
 pub fn run_query_vcd<const N: usize, const NP1: usize>(
@@ -511,15 +512,16 @@ pub fn run_query_vcd<const N: usize, const NP1: usize>(
     w.upscope().map_err(io)?;
     w.enddefinitions().map_err(io)?;
     let mut last: Vec<Option<u64>> = vec![None; names.len()];
-    let writes = image.writes.len() as u64 + 1;
+    let writes = image.writes.len() as u64;
     let mut err = None;
     let trace = run_query(chip, image, timing, max_cycles, |c, time| {
-        // after each rising edge (odd half periods); the register writes are left out
-        let edge = time / 10;
-        if time % 10 != 5 || edge + 1 < writes || err.is_some() {
+        // in the low half of each clock, the cycle's inputs applied and settled: every
+        // signal shows its value in that cycle; the register writes are left out
+        let step = time / 10;
+        if time % 10 != 0 || step < writes || err.is_some() {
             return;
         }
-        let t = edge + 1 - writes;
+        let t = step - writes;
         let mut stamped = false;
         for (i, (_, _, width, v)) in c.probe().into_iter().enumerate() {
             if last[i] == Some(v) {

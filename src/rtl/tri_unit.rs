@@ -31,9 +31,9 @@ macro_rules! tri_unit {
         ///   `out_valid`; in `out_ready`. A result leaves on a rising edge with
         ///   `out_valid` and `out_ready` high, in the order the pairs came in.
         ///
-        /// Timing: a pair taken at edge t reaches the FIFO's write port after edge
-        /// t + 128 (the T.CHECKs, [`TCheck::LATENCY`]) and is visible at the output
-        /// (`out_valid`) after edge t + 130 (the FIFO's write and read registers).
+        /// Timing: a pair taken at edge t (presented in cycle t) is at the FIFO's write
+        /// port in cycle t + 128 (the T.CHECKs, [`TCheck::LATENCY`]) and at the output
+        /// (`out_valid`) in cycle t + 130 (the FIFO's write and read registers).
         /// Back-pressure: `in_ready` is low while 256 pairs (the FIFO's depth) are taken
         /// and not yet read out (`count`), so the FIFO never overflows and no result is
         /// lost; a reader that is always ready sees one result per clock.
