@@ -198,3 +198,39 @@ fn a_small_queue_overflows_with_an_error_status() {
     assert!(hits.iter().chain(&unc).all(|x| p.golden_all.pairs.contains(x) || p.golden_all.uncertain.contains(x)));
     assert!(tr.dop_tests < p.golden_all.counters.dop_tests, "the traversal went on after the overflow");
 }
+
+mod random_queries {
+    use super::*;
+    use collision_chip::mesh::soup;
+    use collision_chip::pose::Pose;
+    use collision_chip::query::Chip;
+    use collision_chip::rtl::chip_io::MemTiming;
+    use proptest::prelude::*;
+
+    proptest! {
+        // Each case is a whole query in rust-hdl (10-40 s): few cases, every run new ones.
+        #![proptest_config(ProptestConfig { cases: 3, failure_persistence: None, .. ProptestConfig::default() })]
+
+        /// Random soups, pose, order, mode and memory timing: the chip answers as the
+        /// golden model does, with no overflow, and in all-pairs mode with its test counts.
+        #[test]
+        fn random_soups_equal_golden(
+            na in 3usize..=7, nb in 3usize..=7, sa: u64, sb: u64,
+            rot in prop::array::uniform3(0.0f64..360.0), t in prop::array::uniform3(-0.4f64..0.4),
+            lifo: bool, first: bool, latency in 1u32..=4, interval in 1u32..=3,
+        ) {
+            let chip = Chip::new(&soup(na, sa).triangles_f64(), &soup(nb, sb).triangles_f64(), CHIP_CONFIG).unwrap();
+            let pose = Pose::new(rot[0], rot[1], rot[2], t[0], t[1], t[2]);
+            let mode = if first { Mode::First } else { Mode::All };
+            let order = if lifo { Traversal::Lifo } else { Traversal::Fifo };
+            let golden = chip.query(&pose, Mode::All, order);
+            let img = QueryImage::new(&chip.a, &chip.b, &chip.setup(&pose), lifo, mode).unwrap();
+            let timing = MemTiming { latency, interval };
+            let tr = big_stack(move || run_query(&mut super::chip::<8, 9>(), &img, timing, MAX_CYCLES, |_, _| {})).unwrap();
+            prop_assert!(tr.check(mode, &golden).is_ok(), "{:?}\n{}", tr.check(mode, &golden), tr.text());
+            if !first {
+                prop_assert_eq!((tr.dop_tests, tr.tri_tests), (golden.counters.dop_tests, golden.counters.tri_tests));
+            }
+        }
+    }
+}
