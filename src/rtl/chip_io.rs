@@ -636,3 +636,46 @@ pub fn run_poses(
             .map_err(|_| "the RTL simulation thread panicked".to_string())?
     })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Words are laid out as `crate::memory` says: a node's leaf bit, distances and fields,
+    /// a triangle's 24 values and two flags, most significant hex digit first.
+    #[test]
+    fn memory_words_and_writes() {
+        let q = queries().into_iter().find(|q| q.name == "sphere_fifo_all").unwrap();
+        let p = q.prepare().unwrap();
+        let (a, b) = (&p.chip.a, &p.chip.b);
+        assert_eq!(p.image.memory.len(), 2 * a.tree.len() + 2 * a.tris.len());
+        let f = CHIP_CONFIG.format;
+        let w = &p.image.memory[0];
+        let field = |w: &Word, at: usize, bits: usize| (0..bits).fold(0u64, |v, k| v | (w[(at + k) / 64] >> ((at + k) % 64) & 1) << k);
+        assert_eq!(field(w, 0, 1), 0, "the root is inner");
+        assert_eq!(field(w, 1 + 2 * W, W), f.to_bits(a.tree.dop(0)[2]));
+        let Node::Inner([c0, c1]) = a.tree.nodes[0] else { panic!() };
+        assert_eq!((field(w, 145, 32), field(w, 177, 32)), (c0 as u64, c1 as u64));
+        let t = &p.image.memory[a.tree.len() + 3];
+        let l = LeafIn::of(f, &a.tris[3]);
+        assert_eq!(field(t, 4 * W, W), l.v[1][1]);
+        assert_eq!(field(t, 9 * W + 5 * W, W), l.m[5]);
+        assert_eq!(field(t, 23 * W, W), l.l_norm);
+        assert_eq!(field(t, 24 * W, 2), l.v_exact as u64 | (l.degenerate as u64) << 1);
+        let hex = p.image.memory_hex();
+        let line = hex.lines().nth(a.tree.len() + 3).unwrap();
+        assert_eq!(line.len(), 145);
+        assert_eq!(u64::from_str_radix(&line[line.len() - 6..], 16).unwrap(), l.v[0][0]);
+        assert!(p.image.writes.contains(&(reg::MODE, 0)));
+        assert!(p.image.writes_hex().lines().all(|l| l.len() == 11));
+    }
+
+    #[test]
+    fn too_large_a_tree_is_an_error() {
+        let big = crate::mesh::builtin("sphere:40000").unwrap().triangles_f64();
+        let chip = crate::query::Chip::new(&big, &big[..1], CHIP_CONFIG).unwrap();
+        let setup = chip.setup(&crate::pose::Pose::new(0.0, 0.0, 0.0, 0.0, 0.0, 0.0));
+        let e = QueryImage::new(&chip.a, &chip.b, &setup, true, Mode::All).unwrap_err();
+        assert!(e.contains("16 bits"), "{e}");
+    }
+}
