@@ -652,6 +652,10 @@ mod tests {
         let f = CHIP_CONFIG.format;
         let w = &p.image.memory[0];
         let field = |w: &Word, at: usize, bits: usize| (0..bits).fold(0u64, |v, k| v | (w[(at + k) / 64] >> ((at + k) % 64) & 1) << k);
+        assert_eq!(W, f.width() as usize);
+        assert_eq!(NODE_BITS as u32, crate::memory::Layout::new(&CHIP_CONFIG).node_bits);
+        assert_eq!(MEM_BITS as u32, crate::memory::Layout::new(&CHIP_CONFIG).tri_bits);
+        assert!(p.image.memory[..a.tree.len()].iter().all(|w| field(w, NODE_BITS, 64) == 0 && field(w, NODE_BITS + 64, MEM_BITS - NODE_BITS - 64) == 0));
         assert_eq!(field(w, 0, 1), 0, "the root is inner");
         assert_eq!(field(w, 1 + 2 * W, W), f.to_bits(a.tree.dop(0)[2]));
         let Node::Inner([c0, c1]) = a.tree.nodes[0] else { panic!() };
