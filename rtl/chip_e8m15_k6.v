@@ -296,6 +296,10 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
     reg  [15:0] xb;
     reg  [15:0] ya;
     reg  [15:0] yb;
+    reg  [15:0] p0a;
+    reg  [15:0] p0b;
+    reg  [15:0] p1a;
+    reg  [15:0] p1b;
     reg  [66:0] e0;
     reg  [66:0] e1;
     reg  leaf_in;
@@ -876,14 +880,23 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
             ya = r_b1;
             yb = r_b0;
         end
-        e0 = c_two | ((xa) & 67'h7ffffffffffffffff) | (((r_b0) & 67'h7ffffffffffffffff) << 32'h10) | (((xa) & 67'h7ffffffffffffffff) << 32'h21) | (((r_b1) & 67'h7ffffffffffffffff) << 32'h31);
-        e1 = c_two | ((xb) & 67'h7ffffffffffffffff) | (((r_b1) & 67'h7ffffffffffffffff) << 32'h10) | (((xb) & 67'h7ffffffffffffffff) << 32'h21) | (((r_b0) & 67'h7ffffffffffffffff) << 32'h31);
+        p0a = xa;
+        p0b = r_b0;
+        p1a = xa;
+        p1b = r_b1;
         if (r_b_leaf) begin
-            e0 = c_two | ((xa) & 67'h7ffffffffffffffff) | (((r_b) & 67'h7ffffffffffffffff) << 32'h10) | (((xb) & 67'h7ffffffffffffffff) << 32'h21) | (((r_b) & 67'h7ffffffffffffffff) << 32'h31);
+            p0b = r_b;
+            p1a = xb;
+            p1b = r_b;
         end
         if (r_a_leaf) begin
-            e0 = c_two | ((r_a) & 67'h7ffffffffffffffff) | (((ya) & 67'h7ffffffffffffffff) << 32'h10) | (((r_a) & 67'h7ffffffffffffffff) << 32'h21) | (((yb) & 67'h7ffffffffffffffff) << 32'h31);
+            p0a = r_a;
+            p0b = ya;
+            p1a = r_a;
+            p1b = yb;
         end
+        e0 = c_two | ((p0a) & 67'h7ffffffffffffffff) | (((p0b) & 67'h7ffffffffffffffff) << 32'h10) | (((p1a) & 67'h7ffffffffffffffff) << 32'h21) | (((p1b) & 67'h7ffffffffffffffff) << 32'h31);
+        e1 = c_two | ((xb) & 67'h7ffffffffffffffff) | (((r_b1) & 67'h7ffffffffffffffff) << 32'h10) | (((xb) & 67'h7ffffffffffffffff) << 32'h21) | (((r_b0) & 67'h7ffffffffffffffff) << 32'h31);
         queue$clear = start & ~run$q;
         queue$lifo = mode_lifo$q;
         queue$push = 1'b0;

@@ -129,6 +129,10 @@ macro_rules! chip {
             xb: Signal<Local, Bits<16>>,
             ya: Signal<Local, Bits<16>>,
             yb: Signal<Local, Bits<16>>,
+            p0a: Signal<Local, Bits<16>>,
+            p0b: Signal<Local, Bits<16>>,
+            p1a: Signal<Local, Bits<16>>,
+            p1b: Signal<Local, Bits<16>>,
             e0: Signal<Local, Bits<67>>,
             e1: Signal<Local, Bits<67>>,
             c_two: Constant<Bits<67>>,
@@ -251,6 +255,10 @@ macro_rules! chip {
                     xb: Default::default(),
                     ya: Default::default(),
                     yb: Default::default(),
+                    p0a: Default::default(),
+                    p0b: Default::default(),
+                    p1a: Default::default(),
+                    p1b: Default::default(),
                     e0: Default::default(),
                     e1: Default::default(),
                     c_two: Constant::new(Bits::<67>::default().replace_bit(65, true).replace_bit(66, true)),
@@ -531,29 +539,33 @@ macro_rules! chip {
                     self.ya.next = self.r_b1.val();
                     self.yb.next = self.r_b0.val();
                 }
+                // entry 0's pairs (p0a, p0b), (p1a, p1b); entry 1 only for inner/inner
                 // inner/inner: [(xa, b0), (xa, b1)], [(xb, b1), (xb, b0)]
-                self.e0.next = self.c_two.val() | bit_cast::<67, 16>(self.xa.val())
-                    | (bit_cast::<67, 16>(self.r_b0.val()) << 16)
-                    | (bit_cast::<67, 16>(self.xa.val()) << 33)
-                    | (bit_cast::<67, 16>(self.r_b1.val()) << 49);
+                self.p0a.next = self.xa.val();
+                self.p0b.next = self.r_b0.val();
+                self.p1a.next = self.xa.val();
+                self.p1b.next = self.r_b1.val();
+                if self.r_b_leaf.val() {
+                    // inner/leaf: [(xa, b), (xb, b)]
+                    self.p0b.next = self.r_b.val();
+                    self.p1a.next = self.xb.val();
+                    self.p1b.next = self.r_b.val();
+                }
+                if self.r_a_leaf.val() {
+                    // leaf/inner: [(a, ya), (a, yb)]
+                    self.p0a.next = self.r_a.val();
+                    self.p0b.next = self.ya.val();
+                    self.p1a.next = self.r_a.val();
+                    self.p1b.next = self.yb.val();
+                }
+                self.e0.next = self.c_two.val() | bit_cast::<67, 16>(self.p0a.val())
+                    | (bit_cast::<67, 16>(self.p0b.val()) << 16)
+                    | (bit_cast::<67, 16>(self.p1a.val()) << 33)
+                    | (bit_cast::<67, 16>(self.p1b.val()) << 49);
                 self.e1.next = self.c_two.val() | bit_cast::<67, 16>(self.xb.val())
                     | (bit_cast::<67, 16>(self.r_b1.val()) << 16)
                     | (bit_cast::<67, 16>(self.xb.val()) << 33)
                     | (bit_cast::<67, 16>(self.r_b0.val()) << 49);
-                if self.r_b_leaf.val() {
-                    // inner/leaf: [(xa, b), (xb, b)]
-                    self.e0.next = self.c_two.val() | bit_cast::<67, 16>(self.xa.val())
-                        | (bit_cast::<67, 16>(self.r_b.val()) << 16)
-                        | (bit_cast::<67, 16>(self.xb.val()) << 33)
-                        | (bit_cast::<67, 16>(self.r_b.val()) << 49);
-                }
-                if self.r_a_leaf.val() {
-                    // leaf/inner: [(a, ya), (a, yb)]
-                    self.e0.next = self.c_two.val() | bit_cast::<67, 16>(self.r_a.val())
-                        | (bit_cast::<67, 16>(self.ya.val()) << 16)
-                        | (bit_cast::<67, 16>(self.r_a.val()) << 33)
-                        | (bit_cast::<67, 16>(self.yb.val()) << 49);
-                }
                 self.queue.clear.next = self.start.val() & !self.run.q.val();
                 self.queue.lifo.next = self.mode_lifo.q.val();
                 self.queue.push.next = false;

@@ -311,26 +311,19 @@ pub fn run_query<const N: usize, const NP1: usize>(
     // memory: (due cycle, address) in request order; the earliest cycle of the next accept
     let mut pending: std::collections::VecDeque<(u64, usize)> = Default::default();
     let mut next_accept = 0u64;
-    let mut trace = ChipTrace {
-        results: vec![],
-        cycles: 0,
-        overflow: false,
-        max_depth: 0,
-        dop_tests: 0,
-        tri_tests: 0,
-        node_fetches: 0,
-        tri_fetches: 0,
-    };
+    let mut results = vec![];
     for cyc in 1..=max_cycles {
         if chip.done.val() {
-            trace.cycles = cyc - 1;
-            trace.overflow = chip.overflow.val();
-            trace.max_depth = chip.max_depth.val().to_u64();
-            trace.dop_tests = chip.dop_tests.val().to_u64();
-            trace.tri_tests = chip.tri_tests.val().to_u64();
-            trace.node_fetches = chip.node_fetches.val().to_u64();
-            trace.tri_fetches = chip.tri_fetches.val().to_u64();
-            return Ok(trace);
+            return Ok(ChipTrace {
+                results,
+                cycles: cyc - 1,
+                overflow: chip.overflow.val(),
+                max_depth: chip.max_depth.val().to_u64(),
+                dop_tests: chip.dop_tests.val().to_u64(),
+                tri_tests: chip.tri_tests.val().to_u64(),
+                node_fetches: chip.node_fetches.val().to_u64(),
+                tri_fetches: chip.tri_fetches.val().to_u64(),
+            });
         }
         let ready = cyc >= next_accept;
         chip.mem_req_ready.next = ready;
@@ -351,7 +344,7 @@ pub fn run_query<const N: usize, const NP1: usize>(
         }
         if chip.res_valid.val() {
             let t = chip.res_tag.val().to_u64();
-            trace.results.push((cyc, (t & 0xffff) as u32, (t >> 16) as u32, chip.res_uncertain.val()));
+            results.push((cyc, (t & 0xffff) as u32, (t >> 16) as u32, chip.res_uncertain.val()));
         }
         step(chip)?;
     }
