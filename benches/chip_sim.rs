@@ -1,88 +1,150 @@
-//! Simulated clocks per second of the whole collision chip (`rtl/chip_e8m15_k6.v`) on one
-//! query of `vectors/chip/` in rust-hdl's simulator and in Verilator, as a ratio: the
-//! baseline the fast cycle model is to beat (DESIGN.md: at least 10x Verilator).
+//! Simulated clocks per second of the whole collision chip in the three simulators of
+//! this project, on the same queries, every trace checked against the checked-in one
+//! (`vectors/chip/<query>.expect`), the ratios measured in one run:
 //!
 //! ```sh
 //! cargo bench --bench chip_sim
 //! ```
 //!
-//! 1. rust-hdl: the query through `e8m15::CollisionChip` with `chip_io::run_query`, timed
-//!    (the chip is built first, untimed); its trace must equal `vectors/chip/<query>.expect`.
-//! 2. Verilator (skipped, with a note, if `verilator` is not on PATH): `scripts/run-chip.sh`
-//!    builds the exported chip (about 5 minutes the first time) and checks the same trace;
-//!    then the built binary runs the query again, best of 5, timed as a whole process (so it
-//!    includes reading the memory image: a lower bound of the model's speed).
-//!
-//! Both simulate the register writes, the start clock and the query; the table counts them
-//! all.
+//! * the cycle model (`src/cycle`), clock by clock (no idle stretch skipped) and as
+//!   `cycle::run_query` runs it (waits skipped), best of several runs;
+//! * Verilator (skipped, with a note, if `verilator` is not on PATH): `scripts/run-chip.sh`
+//!   builds the exported chip (about 5 minutes, stated) and checks the traces; the binary
+//!   is then timed as a whole process, best of 3. Its start-up (reading the memory image,
+//!   building the model) is the time of the shortest query and is stated apart; the
+//!   steady state is the long query's time less the start-up;
+//! * rust-hdl's simulator on the short query (it runs the chip at about 25 clocks per
+//!   second: the long one would take an hour).
 
-use collision_chip::rtl::chip_io::{queries, run_query, CHIP_CONFIG};
-use collision_chip::rtl::e8m15::chip_top;
+use collision_chip::cycle::chip::{control_writes, layout, Chip};
+use collision_chip::cycle::drive::{run_query as drive_query, Drive};
+use collision_chip::cycle::memory::Dst;
+use collision_chip::cycle::{self, Params};
+use collision_chip::rtl::chip_io::{drive, exported_chip, queries, run_query, ChipQuery, PreparedQuery};
 use std::path::Path;
 use std::process::Command;
 use std::time::Instant;
 
-const QUERY: &str = "sphere_fifo_first";
+/// Short (every simulator), empty (Verilator's start-up), long (at least 10^5 cycles).
+const SHORT: &str = "sphere_fifo_first";
+const EMPTY: &str = "apart_lifo_first";
+const LONG: &str = "big_patch_lifo_all_slow_host";
 
-fn main() {
-    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
-    let q = queries().into_iter().find(|q| q.name == QUERY).expect("the query is in the set");
-    let p = q.prepare().unwrap_or_else(|e| panic!("{QUERY}: {e}"));
-    let expect = std::fs::read_to_string(root.join(format!("vectors/chip/{QUERY}.expect"))).expect("the expected trace");
+fn expect(root: &Path, q: &str) -> String {
+    std::fs::read_to_string(root.join(format!("vectors/chip/{q}.expect"))).expect("the expected trace")
+}
+
+fn query(name: &str) -> (ChipQuery, PreparedQuery) {
+    let q = queries().into_iter().find(|q| q.name == name).expect("the query is in the set");
+    let p = q.prepare().unwrap_or_else(|e| panic!("{name}: {e}"));
+    (q, p)
+}
+
+/// The cycle model on a query, best of `reps`: (seconds clock by clock, seconds skipping).
+fn cycle_model(root: &Path, name: &str, reps: usize) -> (u64, f64, f64) {
+    let (q, p) = query(name);
+    let want = expect(root, name);
+    let params = Params { memory: q.timing, ..Params::RTL };
+    let setup = p.chip.setup(&q.pose);
+    let (mut by_clock, mut skipping, mut cycles) = (f64::INFINITY, f64::INFINITY, 0);
+    for _ in 0..reps {
+        let t = Instant::now();
+        let mut c = Chip::new(&p.chip.cfg, params, &p.chip.a, &p.chip.b, &setup).unwrap();
+        let words = layout(&p.chip.a, &p.chip.b)[Dst::TriB as usize] + p.chip.b.tris.len() as u32;
+        let d = Drive { timing: q.timing, reader: q.reader, words, max_cycles: 10_000_000 };
+        let writes = control_writes(&p.chip.a, &p.chip.b, q.lifo, q.mode);
+        let tr = drive_query(&mut c, &writes, &d, false, |_, _| Ok(()), None).unwrap();
+        by_clock = by_clock.min(t.elapsed().as_secs_f64());
+        assert_eq!(tr.text(), want, "{name}: the cycle model's trace (clock by clock)");
+        cycles = tr.cycles;
+        let t = Instant::now();
+        let (tr, _) = cycle::run_query(&p.chip, &setup, q.lifo, q.mode, params, q.reader, 10_000_000).unwrap();
+        skipping = skipping.min(t.elapsed().as_secs_f64());
+        assert_eq!(tr.text(), want, "{name}: the cycle model's trace (waits skipped)");
+    }
+    (cycles, by_clock, skipping)
+}
+
+fn rust_hdl(root: &Path, name: &str) -> (u64, f64) {
+    let (q, p) = query(name);
     let img = p.image.clone();
-    let (trace, secs) = std::thread::Builder::new()
+    let (tr, secs) = std::thread::Builder::new()
         .stack_size(1 << 30)
         .spawn(move || {
-            let mut chip = chip_top::<8, 9>(CHIP_CONFIG.dop_rounding.op(), CHIP_CONFIG.tri_rounding);
+            let mut chip = exported_chip();
             let t = Instant::now();
-            let tr = run_query(&mut chip, &img, q.timing, 100_000, |_, _| {}).expect("the query finishes");
+            let tr = run_query(&mut chip, &img, &drive(&img, q.timing, q.reader, 1_000_000)).expect("the query finishes");
             (tr, t.elapsed().as_secs_f64())
         })
         .unwrap()
         .join()
         .unwrap();
-    assert_eq!(trace.text(), expect, "rust-hdl's trace differs from vectors/chip/{QUERY}.expect");
-    let clocks = (p.image.writes.len() + 1) as u64 + trace.cycles;
-    println!("{QUERY}: {} query cycles, {clocks} clocks with the register writes", trace.cycles);
-    let mut rows = vec![("rust-hdl 0.46 (`simulate`)", secs)];
-    match verilator(root, q.timing.latency, q.timing.interval) {
-        Ok(s) => rows.push(("Verilator (`--binary -O3`)", s)),
-        Err(note) => println!("\nVerilator: {note}; only the rust-hdl row is measured."),
-    }
-    println!("\n| simulator | clocks | seconds | clocks/s |\n|---|---:|---:|---:|");
-    for (sim, s) in &rows {
-        println!("| {sim} | {clocks} | {s:.3} | {:.0} |", clocks as f64 / s);
-    }
-    if let [(_, hdl), (_, vl)] = rows[..] {
-        println!("\nVerilator / rust-hdl: {:.0}x clocks/s (the collision chip, {QUERY})", hdl / vl);
-    }
+    assert_eq!(tr.text(), expect(root, name), "rust-hdl's trace of {name}");
+    (tr.cycles, secs)
 }
 
-/// Builds and checks the exported chip with scripts/run-chip.sh, then times its binary.
-/// `Err` (a note, not a failure) only if verilator is not installed.
-fn verilator(root: &Path, latency: u32, interval: u32) -> Result<f64, String> {
-    let ok = Command::new("verilator").arg("--version").output().is_ok_and(|o| o.status.success());
-    if !ok {
+/// Builds and checks the exported chip on the three queries with scripts/run-chip.sh, then
+/// times its binary per query (best of 3). `Err` (a note) only if verilator is missing.
+fn verilator(root: &Path) -> Result<Vec<f64>, String> {
+    if !Command::new("verilator").arg("--version").output().is_ok_and(|o| o.status.success()) {
         return Err("verilator not installed (apt-get install verilator)".into());
     }
     let t = Instant::now();
-    let out = Command::new(root.join("scripts/run-chip.sh")).arg(QUERY).current_dir(root).output().expect("scripts/run-chip.sh");
+    let out = Command::new(root.join("scripts/run-chip.sh")).args([SHORT, EMPTY, LONG]).current_dir(root).output().expect("scripts/run-chip.sh");
     let stdout = String::from_utf8_lossy(&out.stdout);
-    assert!(out.status.success() && stdout.contains("1 passed, 0 failed"), "scripts/run-chip.sh {QUERY}:\n{stdout}{}", String::from_utf8_lossy(&out.stderr));
-    println!("run-chip.sh: built and checked in {:.1} s", t.elapsed().as_secs_f64());
+    assert!(out.status.success() && stdout.contains("3 passed, 0 failed"), "scripts/run-chip.sh:\n{stdout}{}", String::from_utf8_lossy(&out.stderr));
+    println!("Verilator: built (if not yet built) and checked the traces in {:.0} s", t.elapsed().as_secs_f64());
     let bin = root.join("target/verilog/verilator/chip/obj/Vchip");
-    let args = [
-        format!("+mem=vectors/chip/{QUERY}.mem"),
-        format!("+host=vectors/chip/{QUERY}.host"),
-        format!("+latency={latency}"),
-        format!("+interval={interval}"),
-    ];
-    let mut best = f64::INFINITY;
-    for _ in 0..5 {
-        let t = Instant::now();
-        let out = Command::new(&bin).args(&args).current_dir(root).output().unwrap_or_else(|e| panic!("{}: {e}", bin.display()));
-        best = best.min(t.elapsed().as_secs_f64());
-        assert!(out.status.success() && String::from_utf8_lossy(&out.stdout).contains("done "), "{} failed", bin.display());
+    let mut times = vec![];
+    for name in [SHORT, EMPTY, LONG] {
+        let (q, _) = query(name);
+        let args = [
+            format!("+mem=vectors/chip/{name}.mem"),
+            format!("+host=vectors/chip/{name}.host"),
+            format!("+latency={}", q.timing.latency),
+            format!("+interval={}", q.timing.interval),
+            format!("+reader={}", q.reader.period),
+            "+max_cycles=2000000".into(),
+        ];
+        let mut best = f64::INFINITY;
+        for _ in 0..3 {
+            let t = Instant::now();
+            let out = Command::new(&bin).args(&args).current_dir(root).output().unwrap_or_else(|e| panic!("{}: {e}", bin.display()));
+            best = best.min(t.elapsed().as_secs_f64());
+            assert!(out.status.success() && String::from_utf8_lossy(&out.stdout).contains("done "), "{} failed", bin.display());
+        }
+        times.push(best);
     }
-    Ok(best)
+    Ok(times)
+}
+
+fn main() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let (short_cycles, c_short, c_short_skip) = cycle_model(root, SHORT, 20);
+    let (long_cycles, c_long, c_long_skip) = cycle_model(root, LONG, 5);
+    let (_, hdl) = rust_hdl(root, SHORT);
+    let rate = |cycles: u64, s: f64| cycles as f64 / s;
+    println!("| simulator | query | cycles | seconds | clocks/s |\n|---|---|---:|---:|---:|");
+    let row = |sim: &str, q: &str, cycles: u64, s: f64| println!("| {sim} | {q} | {cycles} | {s:.4} | {:.0} |", rate(cycles, s));
+    row("cycle model, clock by clock", SHORT, short_cycles, c_short);
+    row("cycle model, waits skipped", SHORT, short_cycles, c_short_skip);
+    row("rust-hdl 0.46", SHORT, short_cycles, hdl);
+    row("cycle model, clock by clock", LONG, long_cycles, c_long);
+    row("cycle model, waits skipped", LONG, long_cycles, c_long_skip);
+    let vl = verilator(root);
+    match &vl {
+        Ok(t) => {
+            let (short, empty, long) = (t[0], t[1], t[2]);
+            row("Verilator -O3, whole process", SHORT, short_cycles, short);
+            row("Verilator -O3, whole process", LONG, long_cycles, long);
+            let steady = long - empty;
+            println!("| Verilator -O3, steady state (less start-up {empty:.3} s) | {LONG} | {long_cycles} | {steady:.4} | {:.0} |", rate(long_cycles, steady));
+            println!(
+                "\ncycle model (clock by clock) / Verilator steady state: {:.0}x clocks/s on {LONG}",
+                rate(long_cycles, c_long) / rate(long_cycles, steady)
+            );
+        }
+        Err(note) => println!("\nVerilator: {note}; its rows are not measured."),
+    }
+    println!("cycle model (clock by clock) / rust-hdl: {:.0}x clocks/s on {SHORT}", rate(short_cycles, c_short) / rate(short_cycles, hdl));
 }

@@ -11,7 +11,7 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
     output reg  busy;
     output reg  done;
     output reg  overflow;
-    output reg  [8:0] max_depth;
+    output reg  [10:0] max_depth;
     output reg  [31:0] dop_tests;
     output reg  [31:0] tri_tests;
     output reg  [31:0] node_fetches;
@@ -71,8 +71,8 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
     reg  queue$pop;
     wire  queue$empty;
     wire  queue$full;
-    wire  [8:0] queue$count;
-    wire  [8:0] queue$max_count;
+    wire  [10:0] queue$count;
+    wire  [10:0] queue$max_count;
     wire  queue$overflow;
     wire  [66:0] queue$top_data;
     reg  [66:0] ent$d;
@@ -615,7 +615,7 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         .out_valid(tri_unit$out_valid),
         .out_ready(tri_unit$out_ready)
     );
-    top$queue$cnt tri_open(
+    top$tri_open tri_open(
         .d(tri_open$d),
         .q(tri_open$q),
         .clock(tri_open$clock)
@@ -1025,7 +1025,7 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         if (run$q & mode_first$q & tri_unit$out_valid & tri_unit$out_hit & ~tri_unit$out_uncertain) begin
             stop$d = 1'b1;
         end
-        halt_idle = (inflight$q == 32'h0) & ~pend$q & ~outstanding$q & (tri_open$q == 32'h0) & ~push_root$q & leaf_fifo$empty;
+        halt_idle = (inflight$q == 32'h0) & ~pend$q & ~outstanding$q & (tri_open$q == 32'h0) & ~push_root$q & (leaf_count$q == 32'h0);
         all_idle = halt_idle & queue$empty & ~ent_valid$q & ~leaf_valid$q;
         if (run$q & (all_idle | (halt & halt_idle))) begin
             run$d = 1'b0;
@@ -4665,26 +4665,26 @@ module top$queue(clock,clear,lifo,push,push_data,pop,empty,full,count,max_count,
     input wire  pop;
     output reg  empty;
     output reg  full;
-    output reg  [8:0] count;
-    output reg  [8:0] max_count;
+    output reg  [10:0] count;
+    output reg  [10:0] max_count;
     output reg  overflow;
     output reg  [66:0] top_data;
     
     // Constant declarations
-    localparam  c_cap = 9'b100000000;
+    localparam  c_cap = 11'b10000000000;
     
     // Stub signals
-    reg  [8:0] cnt$d;
-    wire  [8:0] cnt$q;
+    reg  [10:0] cnt$d;
+    wire  [10:0] cnt$q;
     reg  cnt$clock;
     reg  [66:0] top_r$d;
     wire  [66:0] top_r$q;
     reg  top_r$clock;
-    reg  [7:0] rd_ptr$d;
-    wire  [7:0] rd_ptr$q;
+    reg  [9:0] rd_ptr$d;
+    wire  [9:0] rd_ptr$q;
     reg  rd_ptr$clock;
-    reg  [7:0] wr_ptr$d;
-    wire  [7:0] wr_ptr$q;
+    reg  [9:0] wr_ptr$d;
+    wire  [9:0] wr_ptr$q;
     reg  wr_ptr$clock;
     reg  byp$d;
     wire  byp$q;
@@ -4695,16 +4695,16 @@ module top$queue(clock,clear,lifo,push,push_data,pop,empty,full,count,max_count,
     reg  order_lifo$d;
     wire  order_lifo$q;
     reg  order_lifo$clock;
-    reg  [8:0] max_r$d;
-    wire  [8:0] max_r$q;
+    reg  [10:0] max_r$d;
+    wire  [10:0] max_r$q;
     reg  max_r$clock;
     reg  ovf_r$d;
     wire  ovf_r$q;
     reg  ovf_r$clock;
-    reg  [7:0] ram$read_address;
+    reg  [9:0] ram$read_address;
     reg  ram$read_clock;
     wire  [66:0] ram$read_data;
-    reg  [7:0] ram$write_address;
+    reg  [9:0] ram$write_address;
     reg  ram$write_clock;
     reg  [66:0] ram$write_data;
     reg  ram$write_enable;
@@ -4716,10 +4716,10 @@ module top$queue(clock,clear,lifo,push,push_data,pop,empty,full,count,max_count,
     reg  do_pop;
     reg  do_push;
     reg  [66:0] next_entry;
-    reg  [8:0] cnt_n;
-    reg  [7:0] rd_n;
-    reg  [7:0] wr_n;
-    reg  [7:0] raddr;
+    reg  [10:0] cnt_n;
+    reg  [9:0] rd_n;
+    reg  [9:0] wr_n;
+    reg  [9:0] raddr;
     reg  we;
     reg  [66:0] wdata;
     
@@ -4734,12 +4734,12 @@ module top$queue(clock,clear,lifo,push,push_data,pop,empty,full,count,max_count,
         .q(top_r$q),
         .clock(top_r$clock)
     );
-    top$dop$doptrf$0$add_0$s1_exp rd_ptr(
+    top$dop$doptrf$0$mul_0$s1_exp rd_ptr(
         .d(rd_ptr$d),
         .q(rd_ptr$q),
         .clock(rd_ptr$clock)
     );
-    top$dop$doptrf$0$add_0$s1_exp wr_ptr(
+    top$dop$doptrf$0$mul_0$s1_exp wr_ptr(
         .d(wr_ptr$d),
         .q(wr_ptr$q),
         .clock(wr_ptr$clock)
@@ -4899,13 +4899,13 @@ endmodule // top$queue
 module top$queue$cnt(d,q,clock);
     
     // Module arguments
-    input wire  [8:0] d;
-    output reg  [8:0] q;
+    input wire  [10:0] d;
+    output reg  [10:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 9'h0;
+       q = 11'h0;
     end
     
     always @(posedge clock) begin
@@ -4918,16 +4918,16 @@ endmodule // top$queue$cnt
 module top$queue$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
-    input wire  [7:0] read_address;
+    input wire  [9:0] read_address;
     input wire  read_clock;
     output reg  [66:0] read_data;
-    input wire  [7:0] write_address;
+    input wire  [9:0] write_address;
     input wire  write_clock;
     input wire  [66:0] write_data;
     input wire  write_enable;
     
     // Update code (custom)
-    reg[66:0] mem[255:0];
+    reg[66:0] mem[1023:0];
     
     
     
@@ -5163,6 +5163,25 @@ module top$ta_word(d,q,clock);
     end
           
 endmodule // top$ta_word
+
+
+module top$tri_open(d,q,clock);
+    
+    // Module arguments
+    input wire  [8:0] d;
+    output reg  [8:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 9'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$tri_open
 
 
 module top$tri_unit(clock,load_en,load_addr,load_data,a_m_0$0,a_m_0$1,a_m_0$2,a_m_0$3,a_m_1$0,a_m_1$1,a_m_1$2,a_m_1$3,a_m_2$0,a_m_2$1,a_m_2$2,a_m_2$3,a_e_lin,a_e_tr,a_l_norm,a_v_x$0,a_v_x$1,a_v_x$2,a_v_y$0,a_v_y$1,a_v_y$2,a_v_z$0,a_v_z$1,a_v_z$2,a_v_exact,a_degenerate,b_m_0$0,b_m_0$1,b_m_0$2,b_m_0$3,b_m_1$0,b_m_1$1,b_m_1$2,b_m_1$3,b_m_2$0,b_m_2$1,b_m_2$2,b_m_2$3,b_e_lin,b_e_tr,b_l_norm,b_v_x$0,b_v_x$1,b_v_x$2,b_v_y$0,b_v_y$1,b_v_y$2,b_v_z$0,b_v_z$1,b_v_z$2,b_v_exact,b_degenerate,tag,in_valid,in_ready,out_tag,out_hit,out_uncertain,out_valid,out_ready);
@@ -5773,7 +5792,7 @@ module top$tri_unit(clock,load_en,load_addr,load_data,a_m_0$0,a_m_0$1,a_m_0$2,a_
         .almost_full(fifo$almost_full),
         .overflow(fifo$overflow)
     );
-    top$queue$cnt count(
+    top$tri_open count(
         .d(count$d),
         .q(count$q),
         .clock(count$clock)
@@ -7674,7 +7693,7 @@ module top$tri_unit$fifo$read_logic(clock,read,data_out,empty,almost_empty,under
     reg  is_full;
     
     // Sub module instances
-    top$queue$cnt read_address(
+    top$tri_open read_address(
         .d(read_address$d),
         .q(read_address$q),
         .clock(read_address$clock)
@@ -7755,12 +7774,12 @@ module top$tri_unit$fifo$write_logic(write,data_in,full,almost_full,overflow,clo
     reg  is_full;
     
     // Sub module instances
-    top$queue$cnt write_address(
+    top$tri_open write_address(
         .d(write_address$d),
         .q(write_address$q),
         .clock(write_address$clock)
     );
-    top$queue$cnt dff_write_address_delay(
+    top$tri_open dff_write_address_delay(
         .d(dff_write_address_delay$d),
         .q(dff_write_address_delay$q),
         .clock(dff_write_address_delay$clock)

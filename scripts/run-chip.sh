@@ -3,19 +3,24 @@
 # Icarus) and compares each trace — results with their cycles, the cycle count, overflow,
 # maximum queue depth and counters — with the rust-hdl chip's (vectors/chip/<query>.expect).
 #
-# Usage: scripts/run-chip.sh [--sim verilator|icarus] [--chip rtl/chip_e8m15_k6.v] [query ...]
+# Usage: scripts/run-chip.sh [--sim verilator|icarus] [--chip rtl/chip_e8m15_k6.v] [--bless] [query ...]
 #   (default: Verilator, every query of vectors/chip/queries.txt)
+# --bless: compare each trace with the cycle model's instead (target/chip-expect/<query>.expect,
+#   written by `CCHIP_BLESS=1 cargo test --release --test cycle_chip`) and, where the two agree,
+#   copy it to vectors/chip/<query>.expect: an expected trace is written only when the
+#   exported Verilog and the cycle model agree on it.
 # The testbench is scripts/verilog/chip_tb.v; builds and logs in target/verilog/<sim>/chip/.
 # Prints `<query>: pass (<cycles> cycles)` or the diff, then `N passed, M failed`; exits
 # non-zero on any failure. Icarus runs the chip at a few clocks per second (a query takes
 # minutes); Verilator builds it once in about 5 minutes and then runs each query at once.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-sim=verilator chip=rtl/chip_e8m15_k6.v queries=()
+sim=verilator chip=rtl/chip_e8m15_k6.v queries=() bless=0
 while [ $# -gt 0 ]; do
   case $1 in
     --sim) sim=$2; shift 2 ;;
     --chip) chip=$2; shift 2 ;;
+    --bless) bless=1; shift ;;
     -h|--help) sed -n '2,/^$/p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 2 ;;
     *) queries+=("$1"); shift ;;
   esac
@@ -41,15 +46,19 @@ case $sim in
 esac
 pass=0 fail=0
 for q in "${queries[@]}"; do
-  read -r _ latency interval < <(grep "^$q " vectors/chip/queries.txt) \
+  read -r _ latency interval reader < <(grep "^$q " vectors/chip/queries.txt) \
     || { echo "$q: not in vectors/chip/queries.txt"; fail=$((fail + 1)); continue; }
   run +mem="vectors/chip/$q.mem" +host="vectors/chip/$q.host" +latency="$latency" +interval="$interval" \
+    +reader="${reader:-1}" +max_cycles=2000000 \
     | grep -E '^(result|done|timeout)' >"$out/$q.trace" || true
-  if diff -u "vectors/chip/$q.expect" "$out/$q.trace" >"$out/$q.diff"; then
+  want=vectors/chip/$q.expect
+  [ $bless = 1 ] && want=target/chip-expect/$q.expect
+  if diff -u "$want" "$out/$q.trace" >"$out/$q.diff"; then
     echo "$q: pass ($(sed -n 's/^done \([0-9]*\) .*/\1/p' "$out/$q.trace") cycles)"
+    [ $bless = 1 ] && cp "$want" "vectors/chip/$q.expect"
     pass=$((pass + 1))
   else
-    echo "$q: FAIL (expected vectors/chip/$q.expect, got $out/$q.trace)"; head -n 20 "$out/$q.diff"
+    echo "$q: FAIL (expected $want, got $out/$q.trace)"; head -n 20 "$out/$q.diff"
     fail=$((fail + 1))
   fi
 done

@@ -12,6 +12,7 @@ pub mod mesh;
 pub mod oracle;
 pub mod pose;
 pub mod config;
+pub mod cycle;
 pub mod dop;
 pub mod golden;
 pub mod hard_cases;

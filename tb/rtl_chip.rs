@@ -1,24 +1,108 @@
-//! The RTL collision chip end to end: whole queries of `chip_io::queries` in rust-hdl
-//! against the golden model, in both orders and modes, and against the checked-in traces
-//! that the exported Verilog must reproduce under Verilator (scripts/run-chip.sh).
+//! The RTL collision chip in rust-hdl, clocked in lockstep with the cycle model
+//! (`cycle::drive::Lockstep`): every output and every traversal signal of
+//! `cycle::PROBES` equal after every clock, on the checked-in query set (whose traces the
+//! exported Verilog must reproduce under Verilator, scripts/run-chip.sh), on queries with
+//! fixed random seeds, on a leaf pair that is the query's last event and on an
+//! overflowing queue. The answers are checked against the golden model too.
 //!
-//! `CCHIP_BLESS=1 cargo test --release --test rtl_chip` rewrites vectors/chip/*.expect
-//! from the rust-hdl runs (after a deliberate change of the cycle semantics).
+//! `CCHIP_BLESS=1 cargo test --release --test rtl_chip` rewrites vectors/chip/*.expect of
+//! the small queries, but only from a run in which rust-hdl and the cycle model agreed.
 
-use collision_chip::rtl::chip_io::{queries, run_query, run_query_vcd, ChipQuery, ChipTrace, PreparedQuery, QueryImage, CHIP_CONFIG};
+use collision_chip::cycle::chip::Chip as CycleChip;
+use collision_chip::cycle::drive::{run_query, ChipTrace, Drive, Lockstep, Reader};
+use collision_chip::cycle::{MemTiming, Params};
+use collision_chip::dop::HostSetup;
+use collision_chip::pose::Pose;
+use collision_chip::query::Chip;
+use collision_chip::cycle::drive::open_vcd;
+use collision_chip::rtl::chip_io::{queries, ChipQuery, QueryImage, RtlChip, CHIP_CONFIG};
 use collision_chip::rtl::e8m15::{chip_top, CollisionChip};
-use collision_chip::traversal::{Mode, Traversal};
+use collision_chip::traversal::{Mode, QueryResult, Traversal};
 use std::path::PathBuf;
 
-/// Generous: the longest query takes about 1,000 cycles.
+/// Generous: the longest query takes about 2,000 cycles.
 const MAX_CYCLES: u64 = 20_000;
 
-fn big_stack<T: Send + 'static>(f: impl FnOnce() -> T + Send + 'static) -> T {
-    std::thread::Builder::new().stack_size(1 << 30).spawn(f).unwrap().join().unwrap()
+fn rtl_chip<const N: usize, const NP1: usize>() -> CollisionChip<N, NP1> {
+    chip_top::<N, NP1>(CHIP_CONFIG.dop_rounding.op(), CHIP_CONFIG.tri_rounding)
 }
 
-fn chip<const N: usize, const NP1: usize>() -> CollisionChip<N, NP1> {
-    chip_top::<N, NP1>(CHIP_CONFIG.dop_rounding.op(), CHIP_CONFIG.tri_rounding)
+/// One query to run in lockstep: the golden images, the pose's setup, the RTL's memory
+/// image and writes, and how it is driven.
+struct Case {
+    name: String,
+    chip: Chip,
+    setup: HostSetup,
+    image: QueryImage,
+    golden: QueryResult,
+    lifo: bool,
+    mode: Mode,
+    timing: MemTiming,
+    reader: Reader,
+}
+
+impl Case {
+    fn new(name: &str, chip: Chip, pose: Pose, lifo: bool, mode: Mode, timing: MemTiming, reader: Reader) -> Case {
+        let setup = chip.setup(&pose);
+        let image = QueryImage::new(&chip.a, &chip.b, &setup, lifo, mode).unwrap();
+        let golden = chip.query(&pose, Mode::All, if lifo { Traversal::Lifo } else { Traversal::Fifo });
+        Case { name: name.into(), chip, setup, image, golden, lifo, mode, timing, reader }
+    }
+
+    fn of(q: &ChipQuery) -> Case {
+        let p = q.prepare().unwrap();
+        Case::new(q.name, p.chip, q.pose, q.lifo, q.mode, q.timing, q.reader)
+    }
+
+    fn drive(&self) -> Drive {
+        Drive { timing: self.timing, reader: self.reader, words: self.image.memory.len() as u32, max_cycles: MAX_CYCLES }
+    }
+
+    /// Runs the query `runs` times back to back on one rust-hdl chip of `2^N` queue
+    /// entries and one cycle model, in lockstep; with `vcd`, the first run's traversal VCD.
+    fn lockstep<const N: usize, const NP1: usize>(&self, runs: usize, vcd: Option<PathBuf>) -> Vec<ChipTrace> {
+        let p = Params { queue_entries: 1 << N, memory: self.timing, ..Params::RTL };
+        std::thread::scope(|s| {
+            std::thread::Builder::new()
+                .stack_size(1 << 30)
+                .spawn_scoped(s, || {
+                    let mut rtl = rtl_chip::<N, NP1>();
+                    let mut cyc = CycleChip::new(&CHIP_CONFIG, p, &self.chip.a, &self.chip.b, &self.setup).unwrap();
+                    let mut out = vec![];
+                    for run in 0..runs {
+                        let mut ls = Lockstep::new(RtlChip::new(&mut rtl, &self.image), &mut cyc, ("rust-hdl", "cycle model"));
+                        let mut w = vcd.as_ref().filter(|_| run == 0).map(|p| open_vcd(p).unwrap());
+                        let tr = run_query(&mut ls, &self.image.writes, &self.drive(), true, |t, p| {
+                            if let Some(w) = w.as_mut() {
+                                w.cycle(t, &p.unwrap()).map_err(|e| e.to_string())?;
+                            }
+                            Ok(())
+                        }, None)
+                        .unwrap_or_else(|e| panic!("{}: {e}", self.name));
+                        out.push(tr);
+                    }
+                    out
+                })
+                .unwrap()
+                .join()
+                .unwrap()
+        })
+    }
+
+    /// The answer is the golden model's, and in all-pairs mode so are the test counts.
+    fn check(&self, tr: &ChipTrace) {
+        let name = &self.name;
+        println!("{name}: {}", tr.text().lines().last().unwrap());
+        tr.check(self.mode, &self.golden).unwrap_or_else(|e| panic!("{name}: {e}"));
+        if self.mode == Mode::All {
+            let g = self.golden.counters;
+            assert_eq!((tr.dop_tests, tr.tri_tests), (g.dop_tests, g.tri_tests), "{name}: tests");
+            if !self.lifo {
+                // FIFO order tests pairs in exactly the golden D_CNTR's order
+                assert_eq!((tr.node_fetches, tr.tri_fetches), (g.node_fetches, g.tri_fetches), "{name}: fetches");
+            }
+        }
+    }
 }
 
 fn query(name: &str) -> ChipQuery {
@@ -29,7 +113,8 @@ fn expect_path(name: &str) -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("vectors/chip").join(format!("{name}.expect"))
 }
 
-/// The trace equals the checked-in one (the Verilog's reference), or is blessed into it.
+/// The lockstep trace equals the checked-in one (the Verilog's reference), or is blessed
+/// into it: rust-hdl and the cycle model agreed on every clock of it.
 fn compare_with_expect(name: &str, tr: &ChipTrace) {
     let path = expect_path(name);
     if std::env::var("CCHIP_BLESS").is_ok_and(|v| v == "1") {
@@ -38,41 +123,7 @@ fn compare_with_expect(name: &str, tr: &ChipTrace) {
     }
     let want = std::fs::read_to_string(&path)
         .unwrap_or_else(|e| panic!("{}: {e} (write it with CCHIP_BLESS=1 cargo test --release --test rtl_chip)", path.display()));
-    assert_eq!(
-        tr.text(),
-        want,
-        "{name}: the rust-hdl trace differs from {} (if the cycle semantics changed on purpose, bless it and update docs/ARCHITECTURE.md)",
-        path.display()
-    );
-}
-
-/// Runs a query of the set on a fresh chip and checks it against the golden model:
-/// the pairs (all pairs: equal; first hit: see `ChipTrace::check`), and in all-pairs mode
-/// the tests the hardware pays for. FIFO order tests the pairs in exactly the golden
-/// D_CNTR's order, so even the fetch counts agree; LIFO pops entries while earlier tests
-/// are in flight, so only the test counts must.
-fn run_and_check(name: &str) {
-    let q = query(name);
-    let p = q.prepare().unwrap();
-    let img = p.image.clone();
-    let timing = q.timing;
-    let tr = big_stack(move || run_query(&mut chip::<8, 9>(), &img, timing, MAX_CYCLES, |_, _| {})).unwrap();
-    check(&q, &p, &tr);
-}
-
-fn check(q: &ChipQuery, p: &PreparedQuery, tr: &ChipTrace) {
-    let name = q.name;
-    println!("{name}: {}", tr.text().lines().last().unwrap());
-    tr.check(q.mode, &p.golden_all).unwrap_or_else(|e| panic!("{name}: {e}"));
-    if q.mode == Mode::All {
-        let order = if q.lifo { Traversal::Lifo } else { Traversal::Fifo };
-        let g = p.chip.query(&q.pose, Mode::All, order).counters;
-        assert_eq!((tr.dop_tests, tr.tri_tests), (g.dop_tests, g.tri_tests), "{name}: tests");
-        if !q.lifo {
-            assert_eq!((tr.node_fetches, tr.tri_fetches), (g.node_fetches, g.tri_fetches), "{name}: fetches");
-        }
-    }
-    compare_with_expect(name, tr);
+    assert_eq!(tr.text(), want, "{name}: the trace differs from {}", path.display());
 }
 
 macro_rules! query_tests {
@@ -80,14 +131,19 @@ macro_rules! query_tests {
         $(
             #[test]
             fn $name() {
-                run_and_check(stringify!($name));
+                let q = query(stringify!($name));
+                let case = Case::of(&q);
+                let tr = &case.lockstep::<10, 11>(1, None)[0];
+                case.check(tr);
+                compare_with_expect(q.name, tr);
             }
         )*
-        /// Every query of the set has its test here (the Verilog runs the whole set).
+        /// Every small query of the set runs in rust-hdl here (the large ones run under
+        /// Verilator in CI, against the cycle model's traces).
         #[test]
-        fn every_query_is_tested() {
+        fn every_small_query_is_tested() {
             let mut tested = vec![$(stringify!($name),)* "sphere_lifo_first", "apart_lifo_first"];
-            let mut names: Vec<&str> = queries().iter().map(|q| q.name).collect();
+            let mut names: Vec<&str> = queries().iter().filter(|q| !q.large).map(|q| q.name).collect();
             names.sort_unstable();
             tested.sort_unstable();
             assert_eq!(names, tested);
@@ -102,13 +158,12 @@ query_tests!(sphere_fifo_all sphere_lifo_all sphere_fifo_first bunny_lifo_all bu
 #[test]
 fn sphere_lifo_first() {
     let q = query("sphere_lifo_first");
-    let p = q.prepare().unwrap();
-    let img = p.image.clone();
+    let case = Case::of(&q);
     let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("target/rtl-vcd/chip_sphere_lifo_first.vcd");
-    let vcd = path.clone();
-    let tr = big_stack(move || run_query_vcd(&mut chip::<8, 9>(), &img, q.timing, MAX_CYCLES, &vcd)).unwrap();
+    let tr = &case.lockstep::<10, 11>(1, Some(path.clone()))[0];
     println!("wrote {}", path.display());
-    check(&query("sphere_lifo_first"), &p, &tr);
+    case.check(tr);
+    compare_with_expect(q.name, tr);
     assert_eq!(vcd_results(&path), tr.results, "the VCD's results differ from the trace");
 }
 
@@ -156,73 +211,70 @@ fn vcd_results(path: &std::path::Path) -> Vec<(u64, u32, u32, bool)> {
 /// chip then runs the query again: a finished query leaves no state behind.
 #[test]
 fn apart_lifo_first() {
-    let q = query("apart_lifo_first");
-    let p = q.prepare().unwrap();
-    assert!(p.golden_all.pairs.is_empty());
-    let img = p.image.clone();
-    let (a, b) = big_stack(move || {
-        let mut c = chip::<8, 9>();
-        let a = run_query(&mut c, &img, q.timing, MAX_CYCLES, |_, _| {}).unwrap();
-        let b = run_query(&mut c, &img, q.timing, MAX_CYCLES, |_, _| {}).unwrap();
-        (a, b)
-    });
-    assert_eq!(a, b);
-    assert!(a.results.is_empty());
-    assert_eq!((a.dop_tests, a.node_fetches, a.tri_tests), (1, 2, 0));
-    a.check(Mode::First, &p.golden_all).unwrap();
-    compare_with_expect("apart_lifo_first", &a);
+    let case = Case::of(&query("apart_lifo_first"));
+    assert!(case.golden.pairs.is_empty());
+    let tr = case.lockstep::<10, 11>(2, None);
+    assert_eq!(tr[0], tr[1]);
+    assert!(tr[0].results.is_empty());
+    assert_eq!((tr[0].dop_tests, tr[0].node_fetches, tr[0].tri_tests), (1, 2, 0));
+    case.check(&tr[0]);
+    compare_with_expect("apart_lifo_first", &tr[0]);
+}
+
+/// One triangle each, crossing: the root pair is a leaf pair, the query's last DOP result,
+/// and TRI_UNIT is empty when it enters the leaf FIFO. The chip must not end the query in
+/// the clock in which the FIFO does not show the pair yet (hand-derived: one sure hit).
+#[test]
+fn a_last_leaf_pair_is_tested() {
+    let p = |x: f64, y: f64, z: f64| nalgebra::Point3::new(x, y, z);
+    let a = vec![[p(0.0, 0.0, 0.0), p(1.0, 0.0, 0.0), p(0.0, 1.0, 0.0)]];
+    let b = vec![[p(0.2, 0.2, -1.0), p(0.3, 0.2, 1.0), p(0.2, 0.3, 1.0)]];
+    let pose = Pose::new(0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
+    for lifo in [false, true] {
+        let case = Case::new("one_leaf_pair", Chip::new(&a, &b, CHIP_CONFIG).unwrap(), pose, lifo, Mode::All, MemTiming::default(), Reader::default());
+        let tr = &case.lockstep::<10, 11>(1, None)[0];
+        assert_eq!(tr.results.iter().map(|r| (r.1, r.2, r.3)).collect::<Vec<_>>(), [(0, 0, false)], "{}", tr.text());
+        case.check(tr);
+    }
 }
 
 /// A queue of 2 entries cannot hold the spheres' traversal: the chip ends the query with
-/// `overflow` and whatever it reported is still right (a subset of the golden pairs) —
-/// never a silently dropped pair taken for a complete answer.
+/// `overflow` and what it must: the traversal stops (fewer DOP tests than the golden
+/// query), every pair it reported is a golden one, and the trace does not pass for a
+/// complete answer.
 #[test]
 fn a_small_queue_overflows_with_an_error_status() {
-    let q = query("sphere_fifo_all");
-    let p = q.prepare().unwrap();
-    let img: QueryImage = p.image.clone();
-    let tr = big_stack(move || run_query(&mut chip::<1, 2>(), &img, q.timing, MAX_CYCLES, |_, _| {})).unwrap();
+    let case = Case::of(&query("sphere_fifo_all"));
+    let tr = &case.lockstep::<1, 2>(1, None)[0];
     println!("{}", tr.text());
     assert!(tr.overflow, "no overflow reported");
     assert_eq!(tr.max_depth, 2);
-    assert!(tr.check(Mode::All, &p.golden_all).is_err());
+    assert_eq!(tr.check(Mode::All, &case.golden), Err("the queue overflowed: the answer is incomplete".into()));
     let (hits, unc) = tr.pairs();
-    assert!(hits.iter().chain(&unc).all(|x| p.golden_all.pairs.contains(x) || p.golden_all.uncertain.contains(x)));
-    assert!(tr.dop_tests < p.golden_all.counters.dop_tests, "the traversal went on after the overflow");
+    assert!(hits.iter().chain(&unc).all(|x| case.golden.pairs.contains(x) || case.golden.uncertain.contains(x)));
+    assert!(tr.dop_tests < case.golden.counters.dop_tests / 4, "the traversal went on after the overflow");
 }
 
-mod random_queries {
-    use super::*;
+/// Random soups, poses, orders, modes, memory timings and result readers from fixed seeds:
+/// rust-hdl and the cycle model in lockstep, and the answer the golden model's.
+#[test]
+fn seeded_random_queries() {
     use collision_chip::mesh::soup;
-    use collision_chip::pose::Pose;
-    use collision_chip::query::Chip;
-    use collision_chip::rtl::chip_io::MemTiming;
-    use proptest::prelude::*;
-
-    proptest! {
-        // Each case is a whole query in rust-hdl (10-40 s): few cases, every run new ones.
-        #![proptest_config(ProptestConfig { cases: 3, failure_persistence: None, .. ProptestConfig::default() })]
-
-        /// Random soups, pose, order, mode and memory timing: the chip answers as the
-        /// golden model does, with no overflow, and in all-pairs mode with its test counts.
-        #[test]
-        fn random_soups_equal_golden(
-            na in 3usize..=7, nb in 3usize..=7, sa: u64, sb: u64,
-            rot in prop::array::uniform3(0.0f64..360.0), t in prop::array::uniform3(-0.4f64..0.4),
-            lifo: bool, first: bool, latency in 1u32..=4, interval in 1u32..=3,
-        ) {
-            let chip = Chip::new(&soup(na, sa).triangles_f64(), &soup(nb, sb).triangles_f64(), CHIP_CONFIG).unwrap();
-            let pose = Pose::new(rot[0], rot[1], rot[2], t[0], t[1], t[2]);
-            let mode = if first { Mode::First } else { Mode::All };
-            let order = if lifo { Traversal::Lifo } else { Traversal::Fifo };
-            let golden = chip.query(&pose, Mode::All, order);
-            let img = QueryImage::new(&chip.a, &chip.b, &chip.setup(&pose), lifo, mode).unwrap();
-            let timing = MemTiming { latency, interval };
-            let tr = big_stack(move || run_query(&mut super::chip::<8, 9>(), &img, timing, MAX_CYCLES, |_, _| {})).unwrap();
-            prop_assert!(tr.check(mode, &golden).is_ok(), "{:?}\n{}", tr.check(mode, &golden), tr.text());
-            if !first {
-                prop_assert_eq!((tr.dop_tests, tr.tri_tests), (golden.counters.dop_tests, golden.counters.tri_tests));
-            }
-        }
+    use rand::{Rng, SeedableRng};
+    for seed in 1..=4u64 {
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
+        // small: rust-hdl runs the chip at about 25 clocks per second
+        let (na, nb) = (rng.random_range(3..=6), rng.random_range(3..=6));
+        let chip = Chip::new(&soup(na, rng.random()).triangles_f64(), &soup(nb, rng.random()).triangles_f64(), CHIP_CONFIG).unwrap();
+        let r = |rng: &mut rand_chacha::ChaCha8Rng| rng.random_range(0.0..360.0);
+        let t = |rng: &mut rand_chacha::ChaCha8Rng| rng.random_range(-0.3..0.3);
+        let pose = Pose::new(r(&mut rng), r(&mut rng), r(&mut rng), t(&mut rng), t(&mut rng), t(&mut rng));
+        let (lifo, first) = (rng.random::<bool>(), rng.random_range(0..3) == 0);
+        let timing = MemTiming { latency: rng.random_range(1..=3), interval: rng.random_range(1..=2) };
+        let reader = Reader { period: [1, 1, 2, 5][rng.random_range(0..4)] };
+        let mode = if first { Mode::First } else { Mode::All };
+        let case = Case::new(&format!("seed {seed}"), chip, pose, lifo, mode, timing, reader);
+        let tr = &case.lockstep::<10, 11>(1, None)[0];
+        case.check(tr);
     }
 }

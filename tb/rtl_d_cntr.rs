@@ -1,5 +1,5 @@
 //! D_CNTR's pair queue in RTL (`collision_chip::rtl::d_cntr::PairQueue`) against the golden
-//! cycle model `golden::d_cntr::QueueModel`: every output after every clock, bit for bit.
+//! cycle model `cycle::d_cntr::QueueModel`: every output after every clock, bit for bit.
 //!
 //! * proptest-generated operation sequences (phases of push-heavy, pop-heavy, balanced and
 //!   push+pop mixes, fills past full and drains, clears while not empty, both orders) with
@@ -16,7 +16,7 @@
 //! inputs are applied, before the rising edge, they still show the state after the last edge.
 
 use collision_chip::dop::Node;
-use collision_chip::golden::d_cntr::{pack, unpack, QueueIn, QueueModel, QueueOut, ENTRY_BITS};
+use collision_chip::cycle::d_cntr::{pack, unpack, QueueIn, QueueModel, QueueOut, ENTRY_BITS};
 use collision_chip::rtl::d_cntr::{pair_queue_top, random_ops, PairQueue};
 use collision_chip::traversal::d_cntr::{children, Entry, Pair};
 use proptest::prelude::*;

@@ -3,12 +3,14 @@
 // +host=<file> (one `{addr[10], data[32]}` per line), pulses `start`, serves memory
 // requests from +mem=<file> ($readmemh, one 578-bit word per line) with the memory model
 // (+latency=L: a request accepted at edge t is answered in the cycle ending with edge t+L;
-// +interval=I: the next request is accepted I edges later at the earliest), reads every
-// result at once, and prints the trace of chip_io::ChipTrace::text:
+// +interval=I: the next request is accepted I edges later at the earliest), reads results
+// with res_ready high in the cycles that are multiples of +reader=P (default 1: every
+// cycle; cycle::drive::Reader), and prints the trace of cycle::drive::ChipTrace::text:
 //   result <cycle> <A's triangle> <B's triangle> <uncertain>
 //   done <cycles> overflow <0|1> max_depth <n> dop_tests <n> tri_tests <n> node_fetches <n> tri_fetches <n>
 // Cycle 1 is the one after the edge that took `start`. +max_cycles=N (default 100000)
 // bounds the query (`timeout` is printed instead of `done`). Runs in Verilator and Icarus.
+// The same driver in Rust: src/cycle/drive.rs (run_query).
 `timescale 1ns / 1ps
 module tb;
   localparam MW = 578;
@@ -19,7 +21,7 @@ module tb;
   reg [31:0] host_data = 0;
   reg start = 0;
   wire busy, done, overflow;
-  wire [8:0] max_depth;
+  wire [10:0] max_depth;
   wire [31:0] dop_tests, tri_tests, node_fetches, tri_fetches;
   wire mem_req_valid;
   wire [23:0] mem_req_addr;
@@ -42,7 +44,7 @@ module tb;
   // requests accepted and not yet answered: due cycle and address, in order
   integer due [0:15];
   integer qaddr [0:15];
-  integer qh, qt, next_accept, cyc, i, latency, interval, max_cycles;
+  integer qh, qt, next_accept, cyc, i, latency, interval, reader, max_cycles;
   reg [1023:0] mem_file, host_file;
 
   task edge_;  // one rising edge, inputs set before it, outputs settled after it
@@ -59,6 +61,7 @@ module tb;
     end
     if (!$value$plusargs("latency=%d", latency)) latency = 1;
     if (!$value$plusargs("interval=%d", interval)) interval = 1;
+    if (!$value$plusargs("reader=%d", reader)) reader = 1;
     if (!$value$plusargs("max_cycles=%d", max_cycles)) max_cycles = 100000;
     for (i = 0; i < 1024; i = i + 1) host[i] = {42{1'b1}};
     $readmemh(mem_file, mem);
@@ -91,7 +94,8 @@ module tb;
         qt = qt + 1;
         next_accept = cyc + interval;
       end
-      if (res_valid) $display("result %0d %0d %0d %0d", cyc, res_tag[15:0], res_tag[31:16], res_uncertain);
+      res_ready = cyc % reader == 0;
+      if (res_valid && res_ready) $display("result %0d %0d %0d %0d", cyc, res_tag[15:0], res_tag[31:16], res_uncertain);
       edge_;
     end
     if (done)

@@ -7,10 +7,11 @@ use collision_chip::mesh::{self, Mesh};
 use collision_chip::oracle;
 use collision_chip::pose::Pose;
 use collision_chip::query::{place, Accuracy, Chip};
-use collision_chip::report::{accuracy, summary_table, PoseRecord};
+use collision_chip::cycle::{self, drive::Reader};
+use collision_chip::report::{accuracy, stall_table, summary_table, CycleRecord, PoseRecord};
 use collision_chip::rtl::{chip_io, units};
-use collision_chip::scene::{Scene, Sweep, DEFAULT_SCENE};
-use collision_chip::traversal::{Mode, Traversal};
+use collision_chip::scene::{CrossCheck, Scene, ScenePose, Sweep, DEFAULT_SCENE};
+use collision_chip::traversal::{Mode, QueryResult, Traversal};
 use indicatif::{ProgressBar, ProgressStyle};
 use serde_json::json;
 use std::io::IsTerminal;
@@ -262,9 +263,22 @@ fn run(path: Option<PathBuf>, json: bool, rtl: bool, vcd: Option<PathBuf>) -> Re
     if vcd.is_some() {
         scene.outputs.waveforms = vcd;
     }
-    scene.outputs.cycles |= rtl || scene.outputs.waveforms.is_some();
-    if scene.outputs.cycles {
-        chip_io::rtl_order(&scene.cfg, scene.traversal).map_err(|e| format!("{}: {e}", scene.name))?;
+    if rtl {
+        scene.outputs.cross_check = Some(CrossCheck::Rtl);
+    }
+    scene.outputs.cycles |= scene.outputs.waveforms.is_some() || scene.outputs.cross_check.is_some();
+    let named = |e: String| format!("{}: {e}", scene.name);
+    if scene.outputs.cycles && !matches!(scene.traversal, Traversal::Fifo | Traversal::Lifo) {
+        return Err(named(format!(
+            "cycles come from the chip's D_CNTR, which runs the fifo or lifo traversal, not {:?}: set [query] traversal",
+            scene.traversal
+        )));
+    }
+    if scene.outputs.cross_check.is_some() {
+        chip_io::rtl_order(&scene.cfg, scene.traversal, &scene.params).map_err(named)?;
+    }
+    if let Some(dir) = scene.outputs.waveforms.as_deref().filter(|d| d.is_file()) {
+        return Err(named(format!("waveforms: {} is a file; give a directory for the VCD files", dir.display())));
     }
     let (ma, mb) = (load(&scene.objects.a, scene.objects.unit_cube)?, load(&scene.objects.b, scene.objects.unit_cube)?);
     let (ta, tb) = (ma.triangles_f64(), mb.triangles_f64());
@@ -278,75 +292,151 @@ fn run(path: Option<PathBuf>, json: bool, rtl: bool, vcd: Option<PathBuf>) -> Re
         );
     }
     let bar = progress_bar(scene.poses.len() as u64, json);
-    let mut records = vec![];
-    for sp in &scene.poses {
-        let res = chip.query(&sp.pose, scene.mode, scene.traversal);
-        let exact = scene.outputs.accuracy.then(|| exact_pairs(&ta, &tb, &sp.pose));
-        records.push(PoseRecord {
-            pose: sp.pose,
-            distance: sp.distance,
-            pair_count: res.pairs.len(),
-            accuracy: exact.as_ref().map(|x| Accuracy::of(scene.mode, &res.pairs, x)),
-            exact_pair_count: exact.as_ref().map(Vec::len),
-            pairs: scene.outputs.pairs.then_some(res.pairs),
-            counters: res.counters,
-            rtl: None,
-        });
+    let records = parallel_map(&scene.poses, |i, sp| {
+        let r = run_pose(&scene, &chip, &ta, &tb, i, sp);
         bar.inc(1);
-    }
+        r
+    })
+    .into_iter()
+    .collect::<Result<Vec<_>, String>>()
+    .map_err(named)?;
     bar.finish_and_clear();
-    if scene.outputs.cycles {
-        let poses: Vec<Pose> = scene.poses.iter().map(|p| p.pose).collect();
-        let bar = progress_bar(poses.len() as u64, json);
-        bar.set_message("on the RTL chip (rust-hdl)");
-        let rtl = chip_io::run_poses(
-            &chip,
-            &poses,
-            scene.mode,
-            scene.traversal,
-            scene.memory,
-            scene.outputs.waveforms.as_deref(),
-            RTL_MAX_CYCLES,
-            || bar.inc(1),
-        )?;
-        bar.finish_and_clear();
-        for (r, x) in records.iter_mut().zip(rtl) {
-            r.rtl = Some(x);
-        }
-    }
     if json {
         println!("{}", serde_json::to_string_pretty(&records).expect("serialisable"));
-    } else {
-        print!("{}", summary_table(&records));
-        if scene.outputs.accuracy {
-            println!("misses = exact pairs the chip did not report; extras = reported pairs that do not intersect.");
-        }
-        if scene.outputs.cycles {
-            println!(
-                "rtl_cycles = clocks from start to done on the RTL chip (memory latency {}, interval {}); rtl_queue = most queue entries (2 node pairs each).",
-                scene.memory.latency, scene.memory.interval
-            );
-            for (i, r) in records.iter().enumerate() {
-                if let Some(v) = r.rtl.as_ref().and_then(|x| x.vcd.as_ref()) {
-                    println!("pose {i}: VCD {v}  (gtkwave {v} scripts/gtkw/chip_e8m15_k6.gtkw)");
-                }
+        return Ok(());
+    }
+    print!("{}", summary_table(&records));
+    if scene.outputs.accuracy {
+        println!("misses = exact pairs the chip did not report; extras = reported pairs that do not intersect.");
+    }
+    if scene.outputs.cycles {
+        let p = &scene.params;
+        println!(
+            "cycles = the chip's clocks from start to done (cycle model: {} queue entries, memory latency {}, interval {}); chip_us at {} MHz; sw_us = the golden model's query on this machine; speedup = sw_us / chip_us.",
+            p.queue_entries, p.memory.latency, p.memory.interval, scene.clock_mhz
+        );
+        println!("\nwhere the clocks went (share of clocks by what the DOP unit's input did; occupancy = mean units in flight):");
+        print!("{}", stall_table(&records));
+        for (i, r) in records.iter().enumerate() {
+            let Some(c) = &r.cycles else { continue };
+            if let Some(v) = &c.vcd {
+                println!("pose {i}: VCD {v}  (gtkwave {v} scripts/gtkw/chip_e8m15_k6.gtkw)");
             }
         }
-    }
-    let bad: Vec<String> = records
-        .iter()
-        .enumerate()
-        .filter_map(|(i, r)| {
-            let x = r.rtl.as_ref()?;
-            let why = if x.overflow { Some("the pair queue overflowed".to_string()) } else { x.golden_mismatch.clone() };
-            why.map(|w| format!("pose {i}: {w}"))
-        })
-        .collect();
-    if !bad.is_empty() {
-        return Err(format!("the RTL chip disagrees with the golden model:\n  {}", bad.join("\n  ")));
+        for (i, r) in records.iter().enumerate().filter(|(_, r)| r.cycles.as_ref().is_some_and(|c| c.overflow)) {
+            println!(
+                "pose {i} ({:?}): the chip's pair queue overflowed ({} entries): its answer is incomplete; raise [timing] queue_entries",
+                r.pose, scene.params.queue_entries
+            );
+        }
+        if let Some(level) = records.iter().find_map(|r| r.cycles.as_ref()?.cross_checked) {
+            println!("every pose ran on the {level} chip in lockstep with the cycle model: equal on every signal, every clock.");
+        }
     }
     Ok(())
 }
 
-/// A bound on one RTL query (the query set's longest takes about 2,000 clocks).
-const RTL_MAX_CYCLES: u64 = 1_000_000;
+/// `f` over `items` on every core, results in the items' order (the output of a parallel
+/// run is the serial run's).
+fn parallel_map<T: Sync, R: Send>(items: &[T], f: impl Fn(usize, &T) -> R + Sync) -> Vec<R> {
+    let threads = std::thread::available_parallelism().map_or(1, |n| n.get()).min(items.len().max(1));
+    let next = std::sync::atomic::AtomicUsize::new(0);
+    let mut out: Vec<(usize, R)> = std::thread::scope(|s| {
+        let workers: Vec<_> = (0..threads)
+            .map(|_| {
+                s.spawn(|| {
+                    let mut mine = vec![];
+                    loop {
+                        let i = next.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+                        let Some(item) = items.get(i) else { break };
+                        mine.push((i, f(i, item)));
+                    }
+                    mine
+                })
+            })
+            .collect();
+        workers.into_iter().flat_map(|w| w.join().expect("a pose's thread panicked")).collect()
+    });
+    out.sort_by_key(|(i, _)| *i);
+    out.into_iter().map(|(_, r)| r).collect()
+}
+
+/// One pose of a scene: the golden query (timed: the software), the exact oracle if asked
+/// for, and the cycle model (with its VCD, and the cross-check) if asked for. The cycle
+/// model's answer must be the golden model's.
+fn run_pose(scene: &Scene, chip: &Chip, ta: &[oracle::Tri], tb: &[oracle::Tri], i: usize, sp: &ScenePose) -> Result<PoseRecord, String> {
+    let t0 = std::time::Instant::now();
+    let res = chip.query(&sp.pose, scene.mode, scene.traversal);
+    let software_us = t0.elapsed().as_secs_f64() * 1e6;
+    let exact = scene.outputs.accuracy.then(|| exact_pairs(ta, tb, &sp.pose));
+    let cycles = match scene.outputs.cycles {
+        false => None,
+        true => Some(run_cycles(scene, chip, i, &sp.pose, &res, software_us)?),
+    };
+    Ok(PoseRecord {
+        pose: sp.pose,
+        distance: sp.distance,
+        pair_count: res.pairs.len(),
+        accuracy: exact.as_ref().map(|x| Accuracy::of(scene.mode, &res.pairs, x)),
+        exact_pair_count: exact.as_ref().map(Vec::len),
+        pairs: scene.outputs.pairs.then_some(res.pairs),
+        counters: res.counters,
+        cycles,
+    })
+}
+
+fn run_cycles(scene: &Scene, chip: &Chip, i: usize, pose: &Pose, res: &QueryResult, software_us: f64) -> Result<CycleRecord, String> {
+    let lifo = scene.traversal == Traversal::Lifo;
+    let setup = chip.setup(pose);
+    let vcd = scene.outputs.waveforms.as_ref().map(|d| d.join(format!("pose{i}.vcd")));
+    let (trace, stats) = match &vcd {
+        None => cycle::run_query(chip, &setup, lifo, scene.mode, scene.params, Reader::default(), CYCLE_MAX),
+        Some(path) => cycle::run_query_vcd(chip, &setup, lifo, scene.mode, scene.params, Reader::default(), CYCLE_MAX, path),
+    }
+    .map_err(|e| format!("pose {i}: {e}"))?;
+    let golden_all = match scene.mode {
+        Mode::All => res.clone(),
+        Mode::First => chip.query(pose, Mode::All, scene.traversal),
+    };
+    // an overflow is the chip's answer (incomplete, flagged), not a disagreement
+    if let Err(e) = trace.check(scene.mode, &golden_all).or_else(|e| if trace.overflow { Ok(()) } else { Err(e) }) {
+        return Err(format!("pose {i}: the cycle model disagrees with the golden model: {e}"));
+    }
+    let cross_checked = match scene.outputs.cross_check {
+        None => None,
+        Some(CrossCheck::Rtl) => {
+            let hours = trace.cycles as f64 / chip_io::RTL_CLOCKS_PER_SECOND / 3600.0;
+            if hours > 0.5 {
+                return Err(format!(
+                    "pose {i}: the rust-hdl cross-check would take about {hours:.1} hours ({} clocks at ~{} clocks/s); use smaller meshes (e.g. vectors/scenes/rtl_spheres.toml) or drop cross_check",
+                    trace.cycles,
+                    chip_io::RTL_CLOCKS_PER_SECOND
+                ));
+            }
+            let rtl = chip_io::cross_check(chip, pose, scene.mode, scene.traversal, scene.params, 2 * trace.cycles + 1000)
+                .map_err(|e| format!("pose {i}: rust-hdl and the cycle model differ: {e}"))?;
+            if rtl != trace {
+                return Err(format!("pose {i}: rust-hdl's trace differs from the cycle model's:\n{}\n{}", rtl.text(), trace.text()));
+            }
+            Some("rust-hdl")
+        }
+    };
+    let (hits, unc) = trace.pairs();
+    Ok(CycleRecord {
+        cycles: trace.cycles,
+        chip_us: trace.cycles as f64 / scene.clock_mhz,
+        software_us,
+        hits: hits.len(),
+        uncertain: unc.len(),
+        max_entries: trace.max_depth,
+        overflow: trace.overflow,
+        words: trace.node_fetches + trace.tri_fetches,
+        stats,
+        vcd: vcd.map(|p| p.display().to_string()),
+        cross_checked,
+    })
+}
+
+/// A bound on one query's clocks on the cycle model (waits are skipped, so a long memory
+/// latency costs no time; the bound only catches a hung model).
+const CYCLE_MAX: u64 = 1 << 50;

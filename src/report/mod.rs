@@ -23,14 +23,41 @@ pub struct PoseRecord {
     pub exact_pair_count: Option<usize>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub accuracy: Option<Accuracy>,
-    /// The pose on the RTL chip (scenes asking for `cycles`).
+    /// The pose on the cycle model (scenes asking for `cycles`).
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub rtl: Option<crate::rtl::chip_io::RtlRecord>,
+    pub cycles: Option<CycleRecord>,
 }
 
-/// One table row per sweep distance (or one per pose without a sweep): means of the
-/// counters, sums of misses and extra pairs.
-pub fn summary_table(records: &[PoseRecord]) -> String {
+/// One pose on the cycle model.
+#[derive(Clone, Debug, Serialize)]
+pub struct CycleRecord {
+    /// Clocks from start to done.
+    pub cycles: u64,
+    /// The chip's time for the query at the scene's clock, in microseconds.
+    pub chip_us: f64,
+    /// The golden model's time for the same query on this machine (software), in
+    /// microseconds.
+    pub software_us: f64,
+    /// Pairs the chip reported intersecting, and uncertain (for the host to settle).
+    pub hits: usize,
+    pub uncertain: usize,
+    /// Most queue entries (two node pairs each) waiting at once.
+    pub max_entries: u64,
+    pub overflow: bool,
+    /// Memory words moved (node and triangle words).
+    pub words: u64,
+    /// Where the clocks went.
+    pub stats: crate::cycle::chip::Stats,
+    /// The traversal VCD written, if any.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub vcd: Option<String>,
+    /// The level that ran the pose in lockstep with the cycle model and agreed.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub cross_checked: Option<&'static str>,
+}
+
+/// Records grouped by sweep distance (or one group per pose without a sweep).
+fn groups(records: &[PoseRecord]) -> Vec<(String, Vec<&PoseRecord>)> {
     let mut groups: Vec<(String, Vec<&PoseRecord>)> = vec![];
     for r in records {
         let key = match r.distance {
@@ -42,8 +69,16 @@ pub fn summary_table(records: &[PoseRecord]) -> String {
             None => groups.push((key, vec![r])),
         }
     }
+    groups
+}
+
+/// One table row per sweep distance (or one per pose without a sweep): means of the
+/// counters, sums of misses and extra pairs; with cycles, the cycle model's mean clocks, the
+/// chip's time at its clock, the software's, and their ratio.
+pub fn summary_table(records: &[PoseRecord]) -> String {
+    let groups = groups(records);
     let with_acc = records.iter().any(|r| r.accuracy.is_some());
-    let with_rtl = records.iter().any(|r| r.rtl.is_some());
+    let with_cycles = records.iter().any(|r| r.cycles.is_some());
     let mut out = String::new();
     let _ = write!(
         out,
@@ -53,8 +88,8 @@ pub fn summary_table(records: &[PoseRecord]) -> String {
     if with_acc {
         let _ = write!(out, " {:>9} {:>7} {:>7}", "exact", "misses", "extras");
     }
-    if with_rtl {
-        let _ = write!(out, " {:>10} {:>9}", "rtl_cycles", "rtl_queue");
+    if with_cycles {
+        let _ = write!(out, " {:>10} {:>9} {:>9} {:>8}", "cycles", "chip_us", "sw_us", "speedup");
     }
     out.push('\n');
     for (key, g) in &groups {
@@ -84,16 +119,53 @@ pub fn summary_table(records: &[PoseRecord]) -> String {
                 sum(&|a| a.extras)
             );
         }
-        if with_rtl {
-            let rtl: Vec<_> = g.iter().filter_map(|r| r.rtl.as_ref()).collect();
-            let _ = write!(
-                out,
-                " {:>10.0} {:>9}",
-                rtl.iter().map(|r| r.cycles as f64).sum::<f64>() / rtl.len().max(1) as f64,
-                rtl.iter().map(|r| r.max_depth).max().unwrap_or(0)
-            );
+        if with_cycles {
+            let c: Vec<_> = g.iter().filter_map(|r| r.cycles.as_ref()).collect();
+            let m = |f: &dyn Fn(&CycleRecord) -> f64| c.iter().map(|r| f(r)).sum::<f64>() / c.len().max(1) as f64;
+            let (chip, sw) = (m(&|r| r.chip_us), m(&|r| r.software_us));
+            let _ = write!(out, " {:>10.0} {:>9.2} {:>9.1} {:>8.1}", m(&|r| r.cycles as f64), chip, sw, sw / chip);
         }
         out.push('\n');
+    }
+    out
+}
+
+/// Where the chip's clocks went, one row per sweep distance (or pose): the share of
+/// running clocks by what the DOP unit's input did (issue, or the stall's cause), TRI_UNIT
+/// back-pressure, the DOP unit's and TRI_UNIT's mean occupancy, and memory words per
+/// clock. Empty without cycle records.
+pub fn stall_table(records: &[PoseRecord]) -> String {
+    let mut out = String::new();
+    if !records.iter().any(|r| r.cycles.is_some()) {
+        return out;
+    }
+    let _ = writeln!(
+        out,
+        "{:<28} {:>6} {:>7} {:>8} {:>7} {:>7} {:>7} {:>7} {:>7} {:>7} {:>7} {:>7} {:>7}",
+        "pose", "issue%", "memory%", "spacing%", "credit%", "refill%", "empty%", "drain%", "halted%", "bkpres%", "dop_occ", "tri_occ", "words/c"
+    );
+    for (key, g) in groups(records) {
+        let c: Vec<_> = g.iter().filter_map(|r| r.cycles.as_ref()).collect();
+        let sum = |f: &dyn Fn(&CycleRecord) -> u64| c.iter().map(|r| f(r)).sum::<u64>() as f64;
+        let cycles = sum(&|r| r.stats.cycles).max(1.0);
+        let pc = |f: &dyn Fn(&CycleRecord) -> u64| 100.0 * sum(f) / cycles;
+        let _ = writeln!(
+            out,
+            "{:<28} {:>6.1} {:>7.1} {:>8.1} {:>7.1} {:>7.1} {:>7.1} {:>7.1} {:>7.1} {:>7.1} {:>7.2} {:>7.1} {:>7.3}",
+            key,
+            pc(&|r| r.stats.issue),
+            pc(&|r| r.stats.stall_memory),
+            pc(&|r| r.stats.stall_spacing),
+            pc(&|r| r.stats.stall_credit),
+            pc(&|r| r.stats.stall_refill),
+            pc(&|r| r.stats.stall_empty_queue),
+            pc(&|r| r.stats.drain),
+            pc(&|r| r.stats.halted),
+            pc(&|r| r.stats.back_pressure),
+            sum(&|r| r.stats.dop_occupancy) / cycles,
+            sum(&|r| r.stats.tri_occupancy) / cycles,
+            sum(&|r| r.words) / cycles,
+        );
     }
     out
 }

@@ -8,7 +8,7 @@
 /// (`1 + 6 W + 64`), `MW` memory-word bits (the triangle word, `24 W + 2`).
 macro_rules! chip {
     ($W:tt, $NW:tt, $MW:tt) => {
-        declare_sync_fifo!(LeafFifo, Bits<32>, 16, 1);
+        declare_sync_fifo!(LeafFifo, Bits<32>, $crate::rtl::LEAF_FIFO, 1);
 
         /// The collision chip with k = 6: D_CNTR (DATE'05 §4.3) drives the DOP unit (Eq. 10)
         /// over pairs of node words from memory, overlapping leaf pairs go to TRI_UNIT
@@ -109,7 +109,7 @@ macro_rules! chip {
             accept: Signal<Local, Bit>,
             // ---- the DOP unit and what travels beside it
             dop: DopUnit6,
-            side: $crate::rtl::delay::Delay<Bits<99>, 15>,
+            side: $crate::rtl::delay::Delay<Bits<99>, { $crate::rtl::DOP_LATENCY }>,
             issue: Signal<Local, Bit>,
             last_issue: DFF<Bit>,
             inflight: DFF<Bits<5>>,
@@ -295,64 +295,64 @@ macro_rules! chip {
         }
 
         impl<const N: usize, const NP1: usize> CollisionChip<N, NP1> {
-            /// The traversal as `(scope, name, width, value)` after the last edge: what
-            /// [`run_query_vcd`](crate::rtl::chip_io::run_query_vcd) writes and
-            /// scripts/gtkw/chip_e8m15_k6.gtkw shows.
-            pub fn probe(&self) -> Vec<(&'static str, &'static str, u32, u64)> {
+            /// The values of the traversal signals [`crate::cycle::PROBES`] (in that
+            /// order) as the logic shows them now: what the lockstep check compares and
+            /// the traversal VCD shows (scripts/gtkw/chip_e8m15_k6.gtkw).
+            pub fn probe(&self) -> Vec<u64> {
                 let b = |x: bool| x as u64;
                 let r_tag = self.tri_unit.out_tag.val().to_u64();
                 let l_tag = self.leaf_tag.q.val().to_u64();
                 vec![
-                    ("host", "start", 1, b(self.start.val())),
-                    ("host", "busy", 1, b(self.busy.val())),
-                    ("host", "done", 1, b(self.done.val())),
-                    ("host", "overflow", 1, b(self.overflow.val())),
-                    ("host", "halt", 1, b(self.halt.val())),
-                    ("d_cntr", "depth", 16, self.queue.count.val().to_u64()),
-                    ("d_cntr", "max_depth", 16, self.queue.max_count.val().to_u64()),
-                    ("d_cntr", "push", 1, b(self.queue.push.val())),
-                    ("d_cntr", "pop", 1, b(self.pop.val())),
-                    ("d_cntr", "entry_valid", 1, b(self.ent_valid.q.val())),
-                    ("d_cntr", "pair_a", 16, self.cur_a.val().to_u64()),
-                    ("d_cntr", "pair_b", 16, self.cur_b.val().to_u64()),
-                    ("d_cntr", "need_a", 1, b(self.need_na.val())),
-                    ("d_cntr", "need_b", 1, b(self.need_nb.val())),
-                    ("d_cntr", "issue", 1, b(self.issue.val())),
-                    ("d_cntr", "in_flight", 8, self.inflight.q.val().to_u64()),
-                    ("memory", "req_valid", 1, b(self.mem_req_valid.val())),
-                    ("memory", "req_ready", 1, b(self.mem_req_ready.val())),
-                    ("memory", "req_addr", 24, self.mem_req_addr.val().to_u64()),
-                    ("memory", "req_dst", 2, self.req_dst.val().to_u64()),
-                    ("memory", "outstanding", 1, b(self.outstanding.q.val())),
-                    ("memory", "resp_valid", 1, b(self.mem_resp_valid.val())),
-                    ("dop", "valid_out", 1, b(self.dop.valid_out.val())),
-                    ("dop", "overlap", 1, b(self.dop.overlap.val())),
-                    ("dop", "result_a", 16, self.r_a.val().to_u64()),
-                    ("dop", "result_b", 16, self.r_b.val().to_u64()),
-                    ("dop", "a_leaf", 1, b(self.r_a_leaf.val())),
-                    ("dop", "b_leaf", 1, b(self.r_b_leaf.val())),
-                    ("leaves", "leaf_in", 1, b(self.leaf_in.val())),
-                    ("leaves", "waiting", 8, self.leaf_count.q.val().to_u64()),
-                    ("leaves", "leaf_valid", 1, b(self.leaf_valid.q.val())),
-                    ("leaves", "tri_a", 16, l_tag & 0xffff),
-                    ("leaves", "tri_b", 16, l_tag >> 16),
-                    ("tri_unit", "in_valid", 1, b(self.tri_in.val())),
-                    ("tri_unit", "in_ready", 1, b(self.tri_unit.in_ready.val())),
-                    ("tri_unit", "take", 1, b(self.tri_take.val())),
-                    ("tri_unit", "in_flight", 16, self.tri_open.q.val().to_u64()),
-                    ("tri_unit", "out_valid", 1, b(self.tri_unit.out_valid.val())),
-                    ("tri_unit", "out_hit", 1, b(self.tri_unit.out_hit.val())),
-                    ("tri_unit", "out_uncertain", 1, b(self.tri_unit.out_uncertain.val())),
-                    ("tri_unit", "out_a", 16, r_tag & 0xffff),
-                    ("tri_unit", "out_b", 16, r_tag >> 16),
-                    ("results", "res_valid", 1, b(self.res_valid.val())),
-                    ("results", "res_uncertain", 1, b(self.res_uncertain.val())),
-                    ("results", "res_a", 16, self.res_tag.val().to_u64() & 0xffff),
-                    ("results", "res_b", 16, self.res_tag.val().to_u64() >> 16),
-                    ("counters", "dop_tests", 32, self.cnt_dop.q.val().to_u64()),
-                    ("counters", "tri_tests", 32, self.cnt_tri.q.val().to_u64()),
-                    ("counters", "node_fetches", 32, self.cnt_nf.q.val().to_u64()),
-                    ("counters", "tri_fetches", 32, self.cnt_tf.q.val().to_u64()),
+                    b(self.start.val()),
+                    b(self.busy.val()),
+                    b(self.done.val()),
+                    b(self.overflow.val()),
+                    b(self.halt.val()),
+                    self.queue.count.val().to_u64(),
+                    self.queue.max_count.val().to_u64(),
+                    b(self.queue.push.val()),
+                    b(self.pop.val()),
+                    b(self.ent_valid.q.val()),
+                    self.cur_a.val().to_u64(),
+                    self.cur_b.val().to_u64(),
+                    b(self.need_na.val()),
+                    b(self.need_nb.val()),
+                    b(self.issue.val()),
+                    self.inflight.q.val().to_u64(),
+                    b(self.mem_req_valid.val()),
+                    b(self.mem_req_ready.val()),
+                    self.mem_req_addr.val().to_u64(),
+                    self.req_dst.val().to_u64(),
+                    b(self.outstanding.q.val()),
+                    b(self.mem_resp_valid.val()),
+                    b(self.dop.valid_out.val()),
+                    b(self.dop.overlap.val()),
+                    self.r_a.val().to_u64(),
+                    self.r_b.val().to_u64(),
+                    b(self.r_a_leaf.val()),
+                    b(self.r_b_leaf.val()),
+                    b(self.leaf_in.val()),
+                    self.leaf_count.q.val().to_u64(),
+                    b(self.leaf_valid.q.val()),
+                    l_tag & 0xffff,
+                    l_tag >> 16,
+                    b(self.tri_in.val()),
+                    b(self.tri_unit.in_ready.val()),
+                    b(self.tri_take.val()),
+                    self.tri_open.q.val().to_u64(),
+                    b(self.tri_unit.out_valid.val()),
+                    b(self.tri_unit.out_hit.val()),
+                    b(self.tri_unit.out_uncertain.val()),
+                    r_tag & 0xffff,
+                    r_tag >> 16,
+                    b(self.res_valid.val()),
+                    b(self.res_uncertain.val()),
+                    self.res_tag.val().to_u64() & 0xffff,
+                    self.res_tag.val().to_u64() >> 16,
+                    self.cnt_dop.q.val().to_u64(),
+                    self.cnt_tri.q.val().to_u64(),
+                    self.cnt_nf.q.val().to_u64(),
+                    self.cnt_tf.q.val().to_u64(),
                 ]
             }
         }
@@ -397,7 +397,7 @@ macro_rules! chip {
                 }
                 // A first hit or an overflow stops the traversal; what is in flight drains.
                 self.halt.next = self.stop.q.val() | self.queue.overflow.val();
-                // ---- D_CNTR: the entry's current pair (entry word: golden::d_cntr)
+                // ---- D_CNTR: the entry's current pair (entry word: cycle::d_cntr)
                 self.cur_a.next = self.ent.q.val().get_bits::<16>(0);
                 self.cur_b.next = self.ent.q.val().get_bits::<16>(16);
                 self.cur_flip.next = self.ent.q.val().get_bits::<1>(32);
@@ -676,9 +676,11 @@ macro_rules! chip {
                 {
                     self.stop.d.next = true;
                 }
-                // ---- end of query: nothing left to do (after a halt: nothing left in flight)
+                // ---- end of query: nothing left to do (after a halt: nothing left in flight).
+                // Leaf pairs by their count, not the FIFO's `empty`: a pair written at edge w
+                // shows at the head only from cycle w + 2.
                 self.halt_idle.next = (self.inflight.q.val() == 0) & !self.pend.q.val() & !self.outstanding.q.val()
-                    & (self.tri_open.q.val() == 0) & !self.push_root.q.val() & self.leaf_fifo.empty.val();
+                    & (self.tri_open.q.val() == 0) & !self.push_root.q.val() & (self.leaf_count.q.val() == 0);
                 self.all_idle.next = self.halt_idle.val() & self.queue.empty.val() & !self.ent_valid.q.val()
                     & !self.leaf_valid.q.val();
                 if self.run.q.val() & (self.all_idle.val() | (self.halt.val() & self.halt_idle.val())) {

@@ -9,6 +9,10 @@
 
 use super::e8m15::CollisionChip;
 use super::tri_io::{tri_unit_setup_words, LeafIn};
+pub use crate::cycle::drive::{ChipError, ChipTrace, Drive, Reader};
+use crate::cycle::drive::open_vcd;
+use crate::cycle::{ChipIn, ChipOut, Clocked};
+pub use crate::cycle::MemTiming;
 use crate::config::{ChipConfig, DopRounding};
 use crate::dop::{HostSetup, Node};
 use crate::format::{Format, Rounding};
@@ -26,33 +30,11 @@ pub const MEM_BITS: usize = 578;
 pub const NODE_BITS: usize = 209;
 const W: usize = 24;
 
-/// The memory model: a request accepted at rising edge `t` is answered in the cycle that
-/// ends with edge `t + latency` (`mem_resp_valid` high, the chip takes it at that edge);
-/// after an accepted request the next is accepted `interval` edges later at the earliest
-/// (the memory's throughput is `1 / interval` words per clock). Responses come in request
-/// order.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct MemTiming {
-    pub latency: u32,
-    pub interval: u32,
-}
-
-impl Default for MemTiming {
-    fn default() -> Self {
-        MemTiming { latency: 1, interval: 1 }
-    }
-}
-
 /// The host registers' addresses (see [`CollisionChip`]).
 pub mod reg {
+    pub use crate::cycle::chip::reg::*;
+    /// TRI_UNIT's setup words (the DOP unit's are at 0).
     pub const TRI_SETUP: u32 = 0x100;
-    pub const MODE: u32 = 0x120;
-    pub const ROOT: u32 = 0x121;
-    pub const BASE_NA: u32 = 0x122;
-    pub const BASE_NB: u32 = 0x123;
-    pub const BASE_TA: u32 = 0x124;
-    pub const BASE_TB: u32 = 0x125;
 }
 
 /// The DOP unit's setup words `(load_addr, load_data)`: lane i's C_i0..2, c_i, and the
@@ -127,11 +109,8 @@ impl QueryImage {
             }
         }
         let mut memory = vec![];
-        let mut base = [0u32; 4];
-        for (i, o) in [a, b].into_iter().enumerate() {
-            base[2 * i] = memory.len() as u32;
+        for o in [a, b] {
             memory.extend((0..o.tree.len() as u32).map(|n| node_word(o, n)));
-            base[2 * i + 1] = memory.len() as u32;
             memory.extend(o.tris.iter().map(|t| tri_word(&LeafIn::of(f, t))));
         }
         if memory.len() > 1 << 24 {
@@ -139,14 +118,7 @@ impl QueryImage {
         }
         let mut writes: Vec<(u32, u32)> = dop_unit_setup_words(f, setup).into_iter().map(|(a, d)| (a as u32, d as u32)).collect();
         writes.extend(tri_unit_setup_words(f, setup).into_iter().map(|(a, d)| (reg::TRI_SETUP + a as u32, d as u32)));
-        writes.extend([
-            (reg::BASE_NA, base[0]),
-            (reg::BASE_TA, base[1]),
-            (reg::BASE_NB, base[2]),
-            (reg::BASE_TB, base[3]),
-            (reg::ROOT, 0),
-            (reg::MODE, lifo as u32 | ((mode == Mode::First) as u32) << 1),
-        ]);
+        writes.extend(crate::cycle::chip::control_writes(a, b, lifo, mode));
         Ok(QueryImage { memory, writes })
     }
 
@@ -167,92 +139,6 @@ impl QueryImage {
     }
 }
 
-/// What a query did on the RTL chip: the chip's outputs, in the trace format the Verilog
-/// testbench prints.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct ChipTrace {
-    /// `(cycle, A's triangle, B's triangle, uncertain)` in the order the host read them;
-    /// cycle 1 is the one after the edge that took `start`.
-    pub results: Vec<(u64, u32, u32, bool)>,
-    /// Rising edges from the one that took `start` to the one after which `done` is high.
-    pub cycles: u64,
-    pub overflow: bool,
-    pub max_depth: u64,
-    pub dop_tests: u64,
-    pub tri_tests: u64,
-    pub node_fetches: u64,
-    pub tri_fetches: u64,
-}
-
-impl ChipTrace {
-    /// One line per result, then a summary line (the Verilog testbench prints the same).
-    pub fn text(&self) -> String {
-        let mut s = String::new();
-        for &(c, a, b, u) in &self.results {
-            let _ = writeln!(s, "result {c} {a} {b} {}", u as u8);
-        }
-        let _ = writeln!(
-            s,
-            "done {} overflow {} max_depth {} dop_tests {} tri_tests {} node_fetches {} tri_fetches {}",
-            self.cycles, self.overflow as u8, self.max_depth, self.dop_tests, self.tri_tests, self.node_fetches, self.tri_fetches
-        );
-        s
-    }
-
-    /// The sure hits and the uncertain pairs, each sorted.
-    pub fn pairs(&self) -> (Vec<(u32, u32)>, Vec<(u32, u32)>) {
-        let mut hits: Vec<_> = self.results.iter().filter(|r| !r.3).map(|r| (r.1, r.2)).collect();
-        let mut unc: Vec<_> = self.results.iter().filter(|r| r.3).map(|r| (r.1, r.2)).collect();
-        hits.sort_unstable();
-        unc.sort_unstable();
-        (hits, unc)
-    }
-
-    /// Does this trace answer the query as the golden model does? `all` is the golden
-    /// all-pairs result of the same query. All pairs: the chip's sure hits are the golden
-    /// pairs that were not uncertain, and its uncertain pairs are the golden uncertain ones.
-    /// First hit: every pair it reports is one of those, and it reports a sure hit, or only
-    /// uncertain pairs, exactly when the golden query has pairs (the host settles the
-    /// uncertain ones). Returns what differs.
-    pub fn check(&self, mode: Mode, all: &QueryResult) -> Result<(), String> {
-        let (hits, unc) = self.pairs();
-        let sure: Vec<(u32, u32)> = all.pairs.iter().copied().filter(|p| all.uncertain.binary_search(p).is_err()).collect();
-        if self.overflow {
-            return Err("the queue overflowed".into());
-        }
-        match mode {
-            Mode::All if hits != sure || unc != all.uncertain => Err(format!(
-                "all pairs: chip hits {hits:?} uncertain {unc:?}; golden hits {sure:?} uncertain {:?}",
-                all.uncertain
-            )),
-            Mode::First => {
-                if let Some(p) = hits.iter().find(|p| sure.binary_search(p).is_err()) {
-                    return Err(format!("first hit: chip hit {p:?} is not a golden sure hit"));
-                }
-                if let Some(p) = unc.iter().find(|p| all.uncertain.binary_search(p).is_err()) {
-                    return Err(format!("first hit: chip uncertain {p:?} is not golden uncertain"));
-                }
-                let settled = unc.iter().any(|p| all.pairs.binary_search(p).is_ok());
-                if (hits.is_empty() && !settled) != all.pairs.is_empty() {
-                    return Err(format!("first hit: chip hits {hits:?} uncertain {unc:?}; golden pairs {:?}", all.pairs));
-                }
-                Ok(())
-            }
-            _ => Ok(()),
-        }
-    }
-}
-
-/// Why a simulated query did not finish.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct ChipError(pub String);
-
-impl std::fmt::Display for ChipError {
-    fn fmt(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
-        f.write_str(&self.0)
-    }
-}
-
 fn bits<const B: usize>(w: &Word) -> Bits<B> {
     let mut x = Bits::<B>::default();
     for (i, &l) in w.iter().enumerate() {
@@ -267,88 +153,86 @@ fn bits<const B: usize>(w: &Word) -> Bits<B> {
     x
 }
 
-/// Runs one query on the rust-hdl chip (a chip fresh from `chip_top`, or after a finished
-/// query): the register writes one per clock, `start`, then clocks until `done`, with
-/// the memory model serving `image.memory` and the host reading every result at once.
-/// `max_cycles` bounds the query; `after_edge(chip, time)` is called after every half
-/// clock (time in units of 5 per half period), e.g. to write a VCD.
+/// The rust-hdl chip as a [`Clocked`] level: the memory image's words answer its memory
+/// requests; half a clock low (inputs applied, logic settled: what `probe` shows), then the
+/// rising edge.
+pub struct RtlChip<'c, const N: usize, const NP1: usize> {
+    pub chip: &'c mut CollisionChip<N, NP1>,
+    words: Vec<Bits<MEM_BITS>>,
+    err: Option<String>,
+}
+
+impl<'c, const N: usize, const NP1: usize> RtlChip<'c, N, NP1> {
+    pub fn new(chip: &'c mut CollisionChip<N, NP1>, image: &QueryImage) -> Self {
+        RtlChip { chip, words: image.memory.iter().map(bits::<MEM_BITS>).collect(), err: None }
+    }
+}
+
+impl<const N: usize, const NP1: usize> Clocked for RtlChip<'_, N, NP1> {
+    fn outputs(&self) -> ChipOut {
+        let c = &self.chip;
+        let tag = c.res_tag.val().to_u64();
+        ChipOut {
+            busy: c.busy.val(),
+            done: c.done.val(),
+            overflow: c.overflow.val(),
+            max_depth: c.max_depth.val().to_u64(),
+            dop_tests: c.dop_tests.val().to_u64(),
+            tri_tests: c.tri_tests.val().to_u64(),
+            node_fetches: c.node_fetches.val().to_u64(),
+            tri_fetches: c.tri_fetches.val().to_u64(),
+            mem_req_valid: c.mem_req_valid.val(),
+            mem_req_addr: c.mem_req_addr.val().to_u64() as u32,
+            res_valid: c.res_valid.val(),
+            res_tag: ((tag & 0xffff) as u32, (tag >> 16) as u32),
+            res_uncertain: c.res_uncertain.val(),
+        }
+    }
+
+    fn step(&mut self, i: &ChipIn, probe: bool) -> Option<Vec<u64>> {
+        let c = &mut *self.chip;
+        c.host_we.next = i.host_we;
+        c.host_addr.next = (i.host_addr as u64).into();
+        c.host_data.next = (i.host_data as u64).into();
+        c.start.next = i.start;
+        c.mem_req_ready.next = i.mem_req_ready;
+        c.mem_resp_valid.next = i.mem_resp.is_some();
+        if let Some(w) = i.mem_resp.and_then(|a| self.words.get(a as usize)) {
+            c.mem_resp_data.next = *w;
+        }
+        c.res_ready.next = i.res_ready;
+        let mut probed = None;
+        for high in [false, true] {
+            c.clock.next = Clock { clk: high };
+            if !simulate(c, 1000) && self.err.is_none() {
+                self.err = Some("the rust-hdl logic did not settle".into());
+            }
+            if !high && probe {
+                probed = Some(c.probe());
+            }
+        }
+        probed
+    }
+
+    fn fault(&self) -> Option<String> {
+        self.err.clone()
+    }
+}
+
+/// How a query of `image` is driven: every result read at once unless `reader` says
+/// otherwise.
+pub fn drive(image: &QueryImage, timing: MemTiming, reader: Reader, max_cycles: u64) -> Drive {
+    Drive { timing, reader, words: image.memory.len() as u32, max_cycles }
+}
+
+/// Runs one query on the rust-hdl chip (fresh from `chip_top`, or after a finished
+/// query) with the shared driver ([`crate::cycle::drive::run_query`]).
 pub fn run_query<const N: usize, const NP1: usize>(
     chip: &mut CollisionChip<N, NP1>,
     image: &QueryImage,
-    timing: MemTiming,
-    max_cycles: u64,
-    mut after_edge: impl FnMut(&CollisionChip<N, NP1>, u64),
+    d: &Drive,
 ) -> Result<ChipTrace, ChipError> {
-    if timing.latency == 0 || timing.interval == 0 {
-        return Err(ChipError(format!("memory latency and interval must be at least 1 (got {timing:?})")));
-    }
-    let words: Vec<Bits<MEM_BITS>> = image.memory.iter().map(bits::<MEM_BITS>).collect();
-    let mut time = 0u64;
-    let mut step = |chip: &mut CollisionChip<N, NP1>| -> Result<(), ChipError> {
-        for high in [false, true] {
-            chip.clock.next = Clock { clk: high };
-            if !simulate(chip, 1000) {
-                return Err(ChipError("the logic did not settle".into()));
-            }
-            after_edge(chip, time);
-            time += 5;
-        }
-        Ok(())
-    };
-    chip.res_ready.next = true;
-    chip.mem_req_ready.next = false;
-    chip.mem_resp_valid.next = false;
-    for &(a, d) in &image.writes {
-        chip.host_we.next = true;
-        chip.host_addr.next = (a as u64).into();
-        chip.host_data.next = (d as u64).into();
-        step(chip)?;
-    }
-    chip.host_we.next = false;
-    chip.start.next = true;
-    step(chip)?;
-    chip.start.next = false;
-    // memory: (due cycle, address) in request order; the earliest cycle of the next accept
-    let mut pending: std::collections::VecDeque<(u64, usize)> = Default::default();
-    let mut next_accept = 0u64;
-    let mut results = vec![];
-    for cyc in 1..=max_cycles {
-        if chip.done.val() {
-            return Ok(ChipTrace {
-                results,
-                cycles: cyc - 1,
-                overflow: chip.overflow.val(),
-                max_depth: chip.max_depth.val().to_u64(),
-                dop_tests: chip.dop_tests.val().to_u64(),
-                tri_tests: chip.tri_tests.val().to_u64(),
-                node_fetches: chip.node_fetches.val().to_u64(),
-                tri_fetches: chip.tri_fetches.val().to_u64(),
-            });
-        }
-        let ready = cyc >= next_accept;
-        chip.mem_req_ready.next = ready;
-        let resp = pending.front().filter(|p| p.0 <= cyc).map(|p| p.1);
-        chip.mem_resp_valid.next = resp.is_some();
-        if let Some(a) = resp {
-            chip.mem_resp_data.next = words[a];
-            pending.pop_front();
-        }
-        // the chip's request and result outputs depend on its registers only
-        if chip.mem_req_valid.val() && ready {
-            let a = chip.mem_req_addr.val().to_u64() as usize;
-            if a >= words.len() {
-                return Err(ChipError(format!("cycle {cyc}: memory request at word {a}, past the image ({} words)", words.len())));
-            }
-            pending.push_back((cyc + timing.latency as u64, a));
-            next_accept = cyc + timing.interval as u64;
-        }
-        if chip.res_valid.val() {
-            let t = chip.res_tag.val().to_u64();
-            results.push((cyc, (t & 0xffff) as u32, (t >> 16) as u32, chip.res_uncertain.val()));
-        }
-        step(chip)?;
-    }
-    Err(ChipError(format!("the query did not finish within {max_cycles} cycles")))
+    crate::cycle::drive::run_query(&mut RtlChip::new(chip, image), &image.writes, d, false, |_, _| Ok(()), None)
 }
 
 /// A query of the RTL test set: two meshes, a pose, order, mode and memory timing. The
@@ -364,6 +248,11 @@ pub struct ChipQuery {
     pub lifo: bool,
     pub mode: Mode,
     pub timing: MemTiming,
+    /// How the host reads results.
+    pub reader: Reader,
+    /// Too long for rust-hdl (10^4 cycles and more): its trace comes from the cycle
+    /// model, and Verilator must reproduce it.
+    pub large: bool,
 }
 
 /// The triangles of a [`ChipQuery`] mesh spec.
@@ -397,15 +286,26 @@ impl ChipQuery {
     }
 }
 
-/// The exported chip: `2^8` queue entries.
+/// The exported chip's queue: `2^QUEUE_BITS` entries (1,024: a breadth-first (FIFO)
+/// traversal of a few hundred triangles needs about that many; LIFO a few dozen).
+pub const QUEUE_BITS: usize = 10;
+/// The exported chip, and the one every RTL run uses.
+pub type ExportedChip = CollisionChip<QUEUE_BITS, { QUEUE_BITS + 1 }>;
+/// The exported chip's file name.
 pub const EXPORT_NAME: &str = "chip_e8m15_k6";
+
+/// The exported chip, ready to simulate (inputs claimed; build it on a thread with a big
+/// stack: TRI_UNIT is large).
+pub fn exported_chip() -> ExportedChip {
+    super::e8m15::chip_top(CHIP_CONFIG.dop_rounding.op(), CHIP_CONFIG.tri_rounding)
+}
 
 /// The chip's Verilog (top module `top`), identical modules merged.
 pub fn chip_verilog() -> String {
     std::thread::Builder::new()
         .stack_size(1 << 30)
         .spawn(|| {
-            super::verilog::dedup_modules(&super::e8m15::verilog_chip::<8, 9>(
+            super::verilog::dedup_modules(&super::e8m15::verilog_chip::<QUEUE_BITS, { QUEUE_BITS + 1 }>(
                 CHIP_CONFIG.dop_rounding.op(),
                 CHIP_CONFIG.tri_rounding,
             ))
@@ -415,9 +315,13 @@ pub fn chip_verilog() -> String {
         .expect("chip Verilog")
 }
 
-/// The RTL query set: both orders and modes, three memory timings, procedural spheres and a
-/// bunny patch against a slightly shifted copy of itself (sure hits and many uncertain
-/// pairs), and two spheres apart (the root test only).
+/// The RTL query set. Small (rust-hdl in lockstep with the cycle model, in `cargo test`):
+/// both orders and modes, three memory timings, procedural spheres and a bunny patch
+/// against a slightly shifted copy of itself (sure hits and many uncertain pairs), and two
+/// spheres apart (the root test only). Large (10^4 to 10^5 cycles; the exported Verilog
+/// under Verilator in CI against the cycle model's traces): a few hundred triangles, both
+/// orders and modes, several memory timings, a host that reads results slowly enough to
+/// stall the traversal, sure hits mixed with uncertain pairs.
 pub fn queries() -> Vec<ChipQuery> {
     use crate::pose::Pose;
     let spheres = Pose::new(10.0, 20.0, 30.0, 0.8, 0.1, 0.0);
@@ -430,7 +334,15 @@ pub fn queries() -> Vec<ChipQuery> {
         lifo,
         mode,
         timing: MemTiming { latency, interval },
+        reader: Reader::default(),
+        large: false,
     };
+    let big = |name, a, pose, lifo, mode, latency, interval, period| ChipQuery {
+        reader: Reader { period },
+        large: true,
+        ..q(name, a, pose, lifo, mode, latency, interval)
+    };
+    let big_spheres = Pose::new(10.0, 20.0, 30.0, 0.9, 0.1, 0.05);
     vec![
         q("sphere_fifo_all", "sphere:12", spheres, false, Mode::All, 1, 1),
         q("sphere_lifo_all", "sphere:12", spheres, true, Mode::All, 3, 2),
@@ -439,11 +351,20 @@ pub fn queries() -> Vec<ChipQuery> {
         q("bunny_lifo_all", "bunny-patch:12", patch, true, Mode::All, 1, 1),
         q("bunny_fifo_first", "bunny-patch:12", patch, false, Mode::First, 1, 1),
         q("apart_lifo_first", "sphere:12", Pose::new(10.0, 20.0, 30.0, 3.0, 0.1, 0.0), true, Mode::First, 1, 1),
+        // sure hits and uncertain pairs; the FIFO holds about 1,000 entries at its widest
+        big("big_sphere_fifo_all", "sphere:200", big_spheres, false, Mode::All, 1, 1, 1),
+        big("big_sphere_lifo_all", "sphere:320", big_spheres, true, Mode::All, 4, 2, 1),
+        // the host reads one result in 40 clocks: TRI_UNIT's FIFO fills and the credit
+        // stalls the DOP unit
+        big("big_patch_lifo_all_slow_host", "bunny-patch:300", patch, true, Mode::All, 2, 1, 40),
+        // no sure hit in e8m15 (every crossing pair is uncertain): the whole traversal
+        big("big_patch_fifo_first", "bunny-patch:120", patch, false, Mode::First, 3, 1, 1),
+        big("big_patch_lifo_first", "bunny-patch:300", patch, true, Mode::First, 1, 1, 1),
     ]
 }
 
 /// Writes `<dir>/<query>.mem` and `<dir>/<query>.host` for every query of [`queries`] and
-/// `<dir>/queries.txt` (`name latency interval` per line), the inputs of
+/// `<dir>/queries.txt` (`name latency interval reader-period` per line), the inputs of
 /// scripts/run-chip.sh. The expected traces (`<query>.expect`) are the rust-hdl chip's,
 /// written by `CCHIP_BLESS=1 cargo test --release --test rtl_chip`.
 pub fn write_vectors(dir: &std::path::Path) -> Result<Vec<String>, String> {
@@ -457,7 +378,7 @@ pub fn write_vectors(dir: &std::path::Path) -> Result<Vec<String>, String> {
             std::fs::write(&path, text).map_err(|e| format!("{}: {e}", path.display()))?;
             written.push(path.display().to_string());
         }
-        let _ = writeln!(list, "{} {} {}", q.name, q.timing.latency, q.timing.interval);
+        let _ = writeln!(list, "{} {} {} {}", q.name, q.timing.latency, q.timing.interval, q.reader.period);
     }
     let path = dir.join("queries.txt");
     std::fs::write(&path, list).map_err(|e| format!("{}: {e}", path.display()))?;
@@ -465,106 +386,41 @@ pub fn write_vectors(dir: &std::path::Path) -> Result<Vec<String>, String> {
     Ok(written)
 }
 
-/// [`run_query`] writing a VCD of the traversal to `path`: the signals of
-/// [`CollisionChip::probe`] (host, D_CNTR, memory port, DOP unit, leaf pairs, TRI_UNIT,
-/// results, counters; one scope each under `chip`), one time unit per clock: time t shows
-/// every signal in cycle t (inputs, registers and logic before the edge that ends it;
-/// cycle 0 is the one whose edge takes `start`, the numbering of [`ChipTrace`]). For GTKWave with
-/// scripts/gtkw/chip_e8m15_k6.gtkw. (A VCD of every rust-hdl signal would be about 600 kB
-/// per clock, mostly T.CHECK's.)
+/// [`run_query`] writing a VCD of the traversal to `path` ([`ProbeVcd`]: the signals of
+/// [`crate::cycle::PROBES`], one scope per unit under `chip`, one time unit per clock). For
+/// GTKWave with scripts/gtkw/chip_e8m15_k6.gtkw. (A VCD of every rust-hdl signal would be
+/// about 600 kB per clock, mostly T.CHECK's.)
 pub fn run_query_vcd<const N: usize, const NP1: usize>(
     chip: &mut CollisionChip<N, NP1>,
     image: &QueryImage,
-    timing: MemTiming,
-    max_cycles: u64,
+    d: &Drive,
     path: &std::path::Path,
 ) -> Result<ChipTrace, ChipError> {
-    use vcd::{TimescaleUnit, Value};
-    let io = |e: std::io::Error| ChipError(format!("{}: {e}", path.display()));
-    if let Some(dir) = path.parent() {
-        std::fs::create_dir_all(dir).map_err(io)?;
-    }
-    let file = std::io::BufWriter::new(std::fs::File::create(path).map_err(io)?);
-    let mut w = vcd::Writer::new(file);
-    w.timescale(1, TimescaleUnit::NS).map_err(io)?;
-    w.add_module("chip").map_err(io)?;
-    let names = chip.probe();
-    let mut ids = vec![];
-    let mut scope = "";
-    for &(s, name, width, _) in &names {
-        if s != scope {
-            if !scope.is_empty() {
-                w.upscope().map_err(io)?;
-            }
-            w.add_module(s).map_err(io)?;
-            scope = s;
-        }
-        ids.push(w.add_wire(width, name).map_err(io)?);
-    }
-    w.upscope().map_err(io)?;
-    w.upscope().map_err(io)?;
-    w.enddefinitions().map_err(io)?;
-    let mut last: Vec<Option<u64>> = vec![None; names.len()];
-    let writes = image.writes.len() as u64;
-    let mut err = None;
-    let trace = run_query(chip, image, timing, max_cycles, |c, time| {
-        // in the low half of each clock, the cycle's inputs applied and settled: every
-        // signal shows its value in that cycle; the register writes are left out
-        let step = time / 10;
-        if time % 10 != 0 || step < writes || err.is_some() {
-            return;
-        }
-        let t = step - writes;
-        let mut stamped = false;
-        for (i, (_, _, width, v)) in c.probe().into_iter().enumerate() {
-            if last[i] == Some(v) {
-                continue;
-            }
-            last[i] = Some(v);
-            let bits: Vec<Value> = (0..width).rev().map(|b| if v >> b & 1 == 1 { Value::V1 } else { Value::V0 }).collect();
-            let r = (if stamped { Ok(()) } else { w.timestamp(t) }).and_then(|_| w.change_vector(ids[i], &bits));
-            stamped = true;
-            if let Err(e) = r {
-                err = Some(e);
-                return;
-            }
-        }
-    })?;
-    if let Some(e) = err {
-        return Err(io(e));
-    }
+    let mut vcd = open_vcd(path)?;
+    let trace = crate::cycle::drive::run_query(
+        &mut RtlChip::new(chip, image),
+        &image.writes,
+        d,
+        true,
+        |t, p| vcd.cycle(t, &p.unwrap_or_default()).map_err(|e| format!("{}: {e}", path.display())),
+        None,
+    )?;
     Ok(trace)
 }
 
-/// One pose of a scene on the RTL chip.
-#[derive(Clone, Debug, PartialEq, Eq, serde::Serialize)]
-pub struct RtlRecord {
-    pub cycles: u64,
-    /// Pairs the chip reported intersecting, and uncertain (for the host to settle).
-    pub hits: usize,
-    pub uncertain: usize,
-    pub dop_tests: u64,
-    pub tri_tests: u64,
-    pub node_fetches: u64,
-    pub tri_fetches: u64,
-    /// Most queue entries (two node pairs each) waiting at once.
-    pub max_depth: u64,
-    pub overflow: bool,
-    /// The chip's pairs agree with the golden model's ([`ChipTrace::check`]); otherwise why not.
-    pub golden_mismatch: Option<String>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub vcd: Option<String>,
-}
-
-/// Whether the RTL chip runs a query of this configuration and traversal, and in which
-/// order (true: LIFO); otherwise what to change.
-pub fn rtl_order(cfg: &ChipConfig, traversal: crate::traversal::Traversal) -> Result<bool, String> {
+/// Whether the RTL chip runs a query of this configuration, traversal and cycle-model
+/// parameters, and in which order (true: LIFO); otherwise what to change.
+pub fn rtl_order(cfg: &ChipConfig, traversal: crate::traversal::Traversal, p: &crate::cycle::Params) -> Result<bool, String> {
     use crate::traversal::Traversal;
     if *cfg != CHIP_CONFIG {
         return Err(format!(
             "the RTL chip is built for k = 6, format reduced (e8m15), outward DOP rounding; this scene has k = {}, format {}, {:?}: set [chip] k = 6, format = \"reduced\", dop_rounding = \"outward\"",
             cfg.k, cfg.format, cfg.dop_rounding
         ));
+    }
+    let rtl = crate::cycle::Params { memory: p.memory, ..crate::cycle::Params::RTL };
+    if *p != rtl {
+        return Err("the RTL chip has the [timing] of the default (queue_entries 256, latencies 15 and 130, ...): remove [timing] from the scene".into());
     }
     match traversal {
         Traversal::Lifo => Ok(true),
@@ -573,56 +429,34 @@ pub fn rtl_order(cfg: &ChipConfig, traversal: crate::traversal::Traversal) -> Re
     }
 }
 
-/// Runs `poses` on the rust-hdl chip (one chip, queries back to back; on a thread with the
-/// big stack it needs), each checked against the golden model; with `vcd_dir`, writes
-/// `<vcd_dir>/pose<i>.vcd`. `tick` is called after each pose. Errors name what the RTL
-/// chip cannot run (another configuration, a recursive or list traversal, too large a tree).
-pub fn run_poses(
+/// rust-hdl simulates the chip at about this many clocks per second on this project's
+/// machine (README, `cargo bench --bench chip_sim`): for estimates before a run.
+pub const RTL_CLOCKS_PER_SECOND: f64 = 25.0;
+
+/// Runs one pose on the rust-hdl chip in lockstep with the cycle model (on a thread with
+/// the big stack the RTL needs): every output and traversal signal equal after every clock.
+/// Errors name the cycle and the signal of the first difference, or what the RTL chip
+/// cannot run.
+pub fn cross_check(
     chip: &crate::query::Chip,
-    poses: &[crate::pose::Pose],
+    pose: &crate::pose::Pose,
     mode: Mode,
     traversal: crate::traversal::Traversal,
-    timing: MemTiming,
-    vcd_dir: Option<&std::path::Path>,
+    p: crate::cycle::Params,
     max_cycles: u64,
-    mut tick: impl FnMut() + Send,
-) -> Result<Vec<RtlRecord>, String> {
-    let lifo = rtl_order(&chip.cfg, traversal)?;
-    let images = poses
-        .iter()
-        .map(|p| QueryImage::new(&chip.a, &chip.b, &chip.setup(p), lifo, mode))
-        .collect::<Result<Vec<_>, _>>()?;
-    let golden: Vec<QueryResult> = poses.iter().map(|p| chip.query(p, Mode::All, traversal)).collect();
+) -> Result<ChipTrace, String> {
+    let lifo = rtl_order(&chip.cfg, traversal, &p)?;
+    let setup = chip.setup(pose);
+    let image = QueryImage::new(&chip.a, &chip.b, &setup, lifo, mode)?;
+    let d = drive(&image, p.memory, Reader::default(), max_cycles);
     std::thread::scope(|s| {
         std::thread::Builder::new()
             .stack_size(1 << 30)
             .spawn_scoped(s, || {
-                let mut c = super::e8m15::chip_top::<8, 9>(CHIP_CONFIG.dop_rounding.op(), CHIP_CONFIG.tri_rounding);
-                let mut out = vec![];
-                for (i, (img, g)) in images.iter().zip(&golden).enumerate() {
-                    let path = vcd_dir.map(|d| d.join(format!("pose{i}.vcd")));
-                    let tr = match &path {
-                        Some(p) => run_query_vcd(&mut c, img, timing, max_cycles, p),
-                        None => run_query(&mut c, img, timing, max_cycles, |_, _| {}),
-                    }
-                    .map_err(|e| format!("pose {i}: {e}"))?;
-                    let (hits, unc) = tr.pairs();
-                    out.push(RtlRecord {
-                        cycles: tr.cycles,
-                        hits: hits.len(),
-                        uncertain: unc.len(),
-                        dop_tests: tr.dop_tests,
-                        tri_tests: tr.tri_tests,
-                        node_fetches: tr.node_fetches,
-                        tri_fetches: tr.tri_fetches,
-                        max_depth: tr.max_depth,
-                        overflow: tr.overflow,
-                        golden_mismatch: tr.check(mode, g).err(),
-                        vcd: path.map(|p| p.display().to_string()),
-                    });
-                    tick();
-                }
-                Ok(out)
+                let mut rtl = exported_chip();
+                let model = crate::cycle::chip::Chip::new(&chip.cfg, p, &chip.a, &chip.b, &setup)?;
+                let mut ls = crate::cycle::drive::Lockstep::new(RtlChip::new(&mut rtl, &image), model, ("rust-hdl", "cycle model"));
+                crate::cycle::drive::run_query(&mut ls, &image.writes, &d, true, |_, _| Ok(()), None).map_err(|e| e.0)
             })
             .map_err(|e| format!("cannot start the RTL simulation thread: {e}"))?
             .join()
@@ -640,8 +474,8 @@ mod tests {
     fn memory_words_and_writes() {
         let q = queries().into_iter().find(|q| q.name == "sphere_fifo_all").unwrap();
         let p = q.prepare().unwrap();
-        let (a, b) = (&p.chip.a, &p.chip.b);
-        assert_eq!(p.image.memory.len(), 2 * a.tree.len() + 2 * a.tris.len());
+        let a = &p.chip.a;
+        assert_eq!(p.image.memory.len(), 2 * a.tree.len() + 2 * a.tris.len(), "A and B are the same sphere");
         let f = CHIP_CONFIG.format;
         let w = &p.image.memory[0];
         let field = |w: &Word, at: usize, bits: usize| (0..bits).fold(0u64, |v, k| v | (w[(at + k) / 64] >> ((at + k) % 64) & 1) << k);

@@ -1,19 +1,19 @@
 //! D_CNTR (DATE'05 §4.3): the pair queue, first block of the traversal controller.
-//! Golden: [`golden::d_cntr::QueueModel`](crate::golden::d_cntr::QueueModel); entry word
-//! layout: [`golden::d_cntr`](crate::golden::d_cntr) (`pack` / `unpack`).
+//! Golden: [`cycle::d_cntr::QueueModel`](crate::cycle::d_cntr::QueueModel); entry word
+//! layout: [`cycle::d_cntr`](crate::cycle::d_cntr) (`pack` / `unpack`).
 
-use crate::golden::d_cntr::{QueueIn, QueueModel, QueueOut, ENTRY_BITS};
+use crate::cycle::d_cntr::{QueueIn, QueueModel, QueueOut, ENTRY_BITS};
 use rand::{Rng, SeedableRng};
 use rust_hdl::prelude::*;
 use std::fmt::Write;
 
-/// Bits of an entry word ([`golden::d_cntr`](crate::golden::d_cntr) has the layout).
+/// Bits of an entry word ([`cycle::d_cntr`](crate::cycle::d_cntr) has the layout).
 pub const W: usize = ENTRY_BITS as usize;
 
 /// D_CNTR's queue of waiting node-pair entries: `2^N` entries of [`W`] = 67 bits, FIFO
 /// (breadth first) or LIFO (depth first) as latched by `clear`; `NP1` must be `N + 1`
 /// (the width of `count`). Golden: [`QueueModel`], equal on every output after every
-/// clock. The entry word is opaque here (layout: [`golden::d_cntr`](crate::golden::d_cntr)).
+/// clock. The entry word is opaque here (layout: [`cycle::d_cntr`](crate::cycle::d_cntr)).
 ///
 /// Ports: in `clock`, `clear`, `lifo`, `push`, `push_data[67]`, `pop`; out `empty`,
 /// `full`, `count[NP1]`, `max_count[NP1]`, `overflow`, `top_data[67]`.
@@ -329,7 +329,7 @@ pub fn pair_queue_vectors(name: &str, n: u32, len: usize) -> String {
     let _ = writeln!(out, "// latency: 1");
     let _ = writeln!(
         out,
-        "// {name}: D_CNTR pair queue, 2^{n} entries of {W} bits; one line per clock: inputs, then the outputs after that clock's rising edge; golden: collision_chip::golden::d_cntr::QueueModel"
+        "// {name}: D_CNTR pair queue, 2^{n} entries of {W} bits; one line per clock: inputs, then the outputs after that clock's rising edge; golden: collision_chip::cycle::d_cntr::QueueModel"
     );
     let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(0xd_c47 ^ name.len() as u64);
     let mut model = QueueModel::new(n);

@@ -44,6 +44,13 @@ macro_rules! top_level {
     }};
 }
 
+/// Clocks from a DOP test's issue to its result: the DOPTRF lane's pipeline
+/// ([`b32::Doptrf`]; D.KLMSEL and the NOR add no register).
+pub const DOP_LATENCY: usize = 15;
+/// The chip's leaf FIFO: overlapping leaf pairs waiting for TRI_UNIT, and the credit of
+/// DOP tests in flight plus waiting leaf pairs that keeps it from overflowing.
+pub const LEAF_FIFO: usize = 16;
+
 mod bound;
 mod chip;
 pub mod chip_io;

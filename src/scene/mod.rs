@@ -32,13 +32,27 @@
 //! [outputs]
 //! pairs = false               # list the pairs of every pose
 //! accuracy = true             # run the exact oracle and count misses and extra pairs
-//! cycles = false              # run every pose on the RTL chip (rust-hdl, about 25 clocks/s:
-//!                             # small meshes only; k = 6, format "reduced", fifo or lifo)
-//! waveforms = "target/rtl-vcd/my-scene"   # also a traversal VCD per pose (implies cycles)
+//! cycles = true               # run every pose on the cycle model (any k and format, fifo or
+//!                             # lifo): clocks, stall causes, the chip's time at its clock
+//! waveforms = "target/vcd/my-scene"   # a traversal VCD per pose from the cycle model
+//!                             # (implies cycles); GTKWave: scripts/gtkw/chip_e8m15_k6.gtkw
+//! cross_check = "rtl"         # also every pose on the rust-hdl chip in lockstep with the
+//!                             # cycle model (about 25 clocks/s: small meshes; k = 6, format
+//!                             # "reduced", outward, no [timing]); implies cycles
 //!
-//! [memory]                    # the RTL run's memory model (optional)
+//! [memory]                    # the memory model (optional)
 //! latency = 1                 # clocks from an accepted request to its response
 //! interval = 1                # clocks between accepted requests (1 / words per clock)
+//!
+//! [timing]                    # the cycle model's microarchitecture (optional; default:
+//! queue_entries = 1024        # the RTL chip's, these values)
+//! dop_latency = 15
+//! tri_latency = 130
+//! tri_fifo = 256
+//! issue_spacing = 2           # 1 or 2 clocks between DOP issues
+//! credit = 16                 # DOP tests in flight + leaf pairs waiting
+//! outstanding = 1             # memory requests in flight (1 to 4)
+//! clock_mhz = 800             # the chip's clock for its time per query (DATE'05: 800)
 //! ```
 
 use crate::config::{ChipConfig, DopRounding};
@@ -66,7 +80,30 @@ struct File {
     #[serde(default)]
     outputs: Outputs,
     #[serde(default)]
-    memory: Option<crate::rtl::chip_io::MemTiming>,
+    memory: Option<crate::cycle::MemTiming>,
+    #[serde(default)]
+    timing: TimingSection,
+}
+
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct TimingSection {
+    queue_entries: Option<u32>,
+    dop_latency: Option<u32>,
+    tri_latency: Option<u32>,
+    tri_fifo: Option<u32>,
+    issue_spacing: Option<u32>,
+    credit: Option<u32>,
+    outstanding: Option<u32>,
+    clock_mhz: Option<f64>,
+}
+
+/// The level a scene cross-checks the cycle model against.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum CrossCheck {
+    /// The rust-hdl chip, in lockstep.
+    Rtl,
 }
 
 #[derive(Debug, Deserialize)]
@@ -113,12 +150,16 @@ pub struct Outputs {
     pub pairs: bool,
     #[serde(default)]
     pub accuracy: bool,
-    /// Run every pose on the RTL chip and report its cycles.
+    /// Run every pose on the cycle model: clocks, stalls, time at the clock.
     #[serde(default)]
     pub cycles: bool,
-    /// Directory for one traversal VCD per pose (implies `cycles`).
+    /// Directory for one traversal VCD per pose from the cycle model (implies `cycles`).
     #[serde(default)]
     pub waveforms: Option<std::path::PathBuf>,
+    /// Also run every pose at this level, in lockstep with the cycle model (implies
+    /// `cycles`).
+    #[serde(default)]
+    pub cross_check: Option<CrossCheck>,
 }
 
 /// One pose of a scene, with the sweep distance it belongs to (if any).
@@ -138,8 +179,10 @@ pub struct Scene {
     pub traversal: Traversal,
     pub poses: Vec<ScenePose>,
     pub outputs: Outputs,
-    /// The memory model of the RTL run.
-    pub memory: crate::rtl::chip_io::MemTiming,
+    /// The cycle model's microarchitecture and memory model.
+    pub params: crate::cycle::Params,
+    /// The chip's clock, for its time per query.
+    pub clock_mhz: f64,
 }
 
 impl Scene {
@@ -179,6 +222,23 @@ impl Scene {
         if let Some(p) = poses.iter().find(|p| !p.pose.rot_deg.iter().chain(&p.pose.t).all(|x| x.is_finite())) {
             return Err(err(format!("pose {:?} has a non-finite number", p.pose)));
         }
+        let t = &f.timing;
+        let rtl = crate::cycle::Params::RTL;
+        let params = crate::cycle::Params {
+            queue_entries: t.queue_entries.unwrap_or(rtl.queue_entries),
+            dop_latency: t.dop_latency.unwrap_or(rtl.dop_latency),
+            tri_latency: t.tri_latency.unwrap_or(rtl.tri_latency),
+            tri_fifo: t.tri_fifo.unwrap_or(rtl.tri_fifo),
+            issue_spacing: t.issue_spacing.unwrap_or(rtl.issue_spacing),
+            credit: t.credit.unwrap_or(rtl.credit),
+            outstanding: t.outstanding.unwrap_or(rtl.outstanding),
+            memory: f.memory.unwrap_or_default(),
+        };
+        params.check().map_err(|e| err(format!("[timing] / [memory]: {e}")))?;
+        let clock_mhz = t.clock_mhz.unwrap_or(800.0);
+        if !(clock_mhz.is_finite() && clock_mhz > 0.0) {
+            return Err(err(format!("[timing] clock_mhz must be a positive number of MHz, not {clock_mhz}")));
+        }
         Ok(Scene {
             name: name.to_string(),
             objects: f.objects,
@@ -186,13 +246,12 @@ impl Scene {
             mode: f.query.mode.unwrap_or(Mode::All),
             traversal: f.query.traversal.unwrap_or(Traversal::Lifo),
             poses,
-            outputs: Outputs { cycles: f.outputs.cycles || f.outputs.waveforms.is_some(), ..f.outputs },
-            memory: match f.memory {
-                Some(m) if m.latency == 0 || m.interval == 0 => {
-                    return Err(err("[memory] latency and interval must be at least 1".into()))
-                }
-                m => m.unwrap_or_default(),
+            outputs: Outputs {
+                cycles: f.outputs.cycles || f.outputs.waveforms.is_some() || f.outputs.cross_check.is_some(),
+                ..f.outputs
             },
+            params,
+            clock_mhz,
         })
     }
 }
@@ -241,24 +300,32 @@ mod tests {
     }
 
     #[test]
-    fn rtl_outputs_and_memory() {
+    fn cycle_outputs_timing_and_memory() {
+        use crate::cycle::{MemTiming, Params};
         let base = "[objects]\na = \"sphere:12\"\nb = \"sphere:12\"\n[[pose]]\nrot_deg=[0,0,0]\nt=[0,0,0]\n";
         let s = Scene::parse(&format!("{base}[outputs]\nwaveforms = \"w\"\n[memory]\nlatency = 3\ninterval = 2\n"), "s").unwrap();
         assert!(s.outputs.cycles, "waveforms imply cycles");
-        assert_eq!(s.memory, crate::rtl::chip_io::MemTiming { latency: 3, interval: 2 });
+        assert_eq!(s.params, Params { memory: MemTiming { latency: 3, interval: 2 }, ..Params::RTL });
         let s = Scene::parse(base, "s").unwrap();
         assert!(!s.outputs.cycles);
-        assert_eq!(s.memory, crate::rtl::chip_io::MemTiming { latency: 1, interval: 1 });
+        assert_eq!((s.params, s.clock_mhz), (Params::RTL, 800.0));
+        let s = Scene::parse(&format!("{base}[outputs]\ncross_check = \"rtl\"\n[timing]\ncredit = 4\nclock_mhz = 266\n"), "s").unwrap();
+        assert!(s.outputs.cycles && s.outputs.cross_check == Some(CrossCheck::Rtl));
+        assert_eq!((s.params.credit, s.clock_mhz), (4, 266.0));
         let e = Scene::parse(&format!("{base}[memory]\nlatency = 0\ninterval = 1\n"), "s").unwrap_err();
         assert!(e.contains("at least 1"), "{e}");
+        let e = Scene::parse(&format!("{base}[timing]\nissue_spacing = 5\n"), "s").unwrap_err();
+        assert!(e.contains("issue_spacing"), "{e}");
         let e = Scene::parse(&format!("{base}[memory]\nlatncy = 2\n"), "s").unwrap_err();
         assert!(e.starts_with("s:8:"), "{e}");
         let rtl = Scene::parse(include_str!("../../vectors/scenes/rtl_spheres.toml"), "rtl_spheres").unwrap();
-        assert_eq!(crate::rtl::chip_io::rtl_order(&rtl.cfg, rtl.traversal), Ok(true));
-        let e = crate::rtl::chip_io::rtl_order(&ChipConfig::default(), Traversal::Lifo).unwrap_err();
+        assert_eq!(crate::rtl::chip_io::rtl_order(&rtl.cfg, rtl.traversal, &rtl.params), Ok(true));
+        let e = crate::rtl::chip_io::rtl_order(&ChipConfig::default(), Traversal::Lifo, &rtl.params).unwrap_err();
         assert!(e.contains("k = 6"), "{e}");
-        let e = crate::rtl::chip_io::rtl_order(&rtl.cfg, Traversal::List).unwrap_err();
+        let e = crate::rtl::chip_io::rtl_order(&rtl.cfg, Traversal::List, &rtl.params).unwrap_err();
         assert!(e.contains("fifo or lifo"), "{e}");
+        let e = crate::rtl::chip_io::rtl_order(&rtl.cfg, Traversal::Lifo, &Params { credit: 4, ..rtl.params }).unwrap_err();
+        assert!(e.contains("[timing]"), "{e}");
     }
 
     #[test]

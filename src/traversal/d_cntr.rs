@@ -16,7 +16,7 @@ pub enum Order {
 }
 
 /// A node pair: A's node, B's node, the flip bit.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Pair {
     pub a: u32,
     pub b: u32,
@@ -28,6 +28,13 @@ pub struct Pair {
 pub struct Entry {
     pub pairs: [Pair; 2],
     pub len: u8,
+}
+
+/// The entry of the all-zero word: one pair, (0, 0) (what an empty queue shows).
+impl Default for Entry {
+    fn default() -> Self {
+        Entry { pairs: [Pair::default(); 2], len: 1 }
+    }
 }
 
 /// The child pairs of an overlapping pair in the DOP-sharing order, as queue entries of

@@ -1,6 +1,8 @@
-//! D_CNTR's pair queue (DATE'05 §4.3) as a cycle-level model: the reference the RTL
+//! D_CNTR's pair queue (DATE'05 §4.3) in the cycle model: the reference the RTL
 //! [`PairQueue`](crate::rtl::d_cntr::PairQueue) must equal on every output after every
-//! clock, and the packing of a queue entry into the 67-bit word the RTL stores.
+//! clock (on entry words), the queue of the cycle-model chip (on [`Entry`] values, so
+//! that trees of any size fit), and the packing of a queue entry into the 67-bit word the
+//! RTL stores.
 //!
 //! An *entry* ([`Entry`]) is two node pairs, pushed and popped together; a pair is A's node,
 //! B's node (16 bits each) and the flip bit that orders its children
@@ -53,24 +55,25 @@ pub fn unpack(w: u128) -> Entry {
     Entry { pairs: [unpack_pair(w & m), unpack_pair(w >> PAIR_BITS & m)], len: 1 + (w >> (2 * PAIR_BITS) & 1) as u8 }
 }
 
-/// The queue's inputs in one clock cycle (the RTL's ports as plain integers).
+/// The queue's inputs in one clock cycle (the RTL's ports; `T` the entry: the RTL's
+/// 67-bit word, or an [`Entry`]).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct QueueIn {
+pub struct QueueIn<T = u128> {
     /// Empty the queue, reset `max_count` and `overflow`, latch `lifo`; push and pop of
     /// the same cycle are ignored.
     pub clear: bool,
     /// The order for the query, latched by `clear`: LIFO (depth first) or FIFO.
     pub lifo: bool,
     pub push: bool,
-    /// The entry word pushed (67 bits; higher bits ignored).
-    pub push_data: u128,
+    /// The entry pushed (a word: bits above 66 ignored).
+    pub push_data: T,
     /// Remove the entry shown on `top_data`; ignored while empty.
     pub pop: bool,
 }
 
 /// The queue's outputs after a rising edge.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct QueueOut {
+pub struct QueueOut<T = u128> {
     pub empty: bool,
     pub full: bool,
     /// Entries held, 0..=2^N.
@@ -81,27 +84,50 @@ pub struct QueueOut {
     /// was not stored).
     pub overflow: bool,
     /// The entry a pop in the next cycle removes (FIFO: the oldest, LIFO: the newest); 0
-    /// while empty.
-    pub top_data: u128,
+    /// while empty (`T::default()`).
+    pub top_data: T,
+}
+
+/// What the queue stores: bits above the entry word's are dropped from a word.
+pub trait QueueEntry: Copy + Default {
+    fn masked(self) -> Self;
+}
+
+impl QueueEntry for u128 {
+    fn masked(self) -> Self {
+        self & ENTRY_MASK
+    }
+}
+
+impl QueueEntry for Entry {
+    fn masked(self) -> Self {
+        self
+    }
 }
 
 /// The pair queue, one rising clock edge per [`step`](Self::step). Initial state: empty,
 /// FIFO, `max_count` 0, no overflow (as after a clear with `lifo` low; the RTL's
 /// registers start there too).
 #[derive(Clone, Debug)]
-pub struct QueueModel {
+pub struct QueueModel<T = u128> {
     cap: usize,
     lifo: bool,
-    q: VecDeque<u128>,
+    q: VecDeque<T>,
     max_count: u32,
     overflow: bool,
 }
 
-impl QueueModel {
-    /// A queue of `2^n` entries.
+impl<T: QueueEntry> QueueModel<T> {
+    /// A queue of `2^n` entries (the RTL's `PairQueue<N>`).
     pub fn new(n: u32) -> Self {
         assert!(n <= 16, "capacity 2^{n}");
-        QueueModel { cap: 1 << n, lifo: false, q: VecDeque::new(), max_count: 0, overflow: false }
+        Self::with_capacity(1 << n)
+    }
+
+    /// A queue of `cap` entries (at least 1).
+    pub fn with_capacity(cap: usize) -> Self {
+        assert!(cap >= 1, "a queue of no entries");
+        QueueModel { cap, lifo: false, q: VecDeque::new(), max_count: 0, overflow: false }
     }
 
     /// Entries it holds when full.
@@ -115,7 +141,7 @@ impl QueueModel {
     }
 
     /// The outputs in the current state.
-    pub fn outputs(&self) -> QueueOut {
+    pub fn outputs(&self) -> QueueOut<T> {
         let top = if self.lifo { self.q.back() } else { self.q.front() };
         QueueOut {
             empty: self.q.is_empty(),
@@ -123,7 +149,7 @@ impl QueueModel {
             count: self.q.len() as u32,
             max_count: self.max_count,
             overflow: self.overflow,
-            top_data: top.copied().unwrap_or(0),
+            top_data: top.copied().unwrap_or_default(),
         }
     }
 
@@ -131,7 +157,7 @@ impl QueueModel {
     /// empty) happens before the push, in both orders: FIFO pop removes the head and the
     /// push appends; LIFO pop removes the top and the pushed entry becomes the new top.
     /// So a push while full succeeds if the same cycle pops.
-    pub fn step(&mut self, i: &QueueIn) -> QueueOut {
+    pub fn step(&mut self, i: &QueueIn<T>) -> QueueOut<T> {
         if i.clear {
             self.q.clear();
             self.lifo = i.lifo;
@@ -147,7 +173,7 @@ impl QueueModel {
             }
             if i.push {
                 if self.q.len() < self.cap {
-                    self.q.push_back(i.push_data & ENTRY_MASK);
+                    self.q.push_back(i.push_data.masked());
                 } else {
                     self.overflow = true;
                 }
@@ -183,7 +209,7 @@ mod tests {
     fn model_orders_and_overflow() {
         let (push, pop) = (|d| QueueIn { push: true, push_data: d, ..Default::default() }, QueueIn { pop: true, ..Default::default() });
         for lifo in [false, true] {
-            let mut m = QueueModel::new(1);
+            let mut m = QueueModel::<u128>::new(1);
             m.step(&QueueIn { clear: true, lifo, ..Default::default() });
             m.step(&push(1));
             m.step(&push(2));

@@ -1,0 +1,544 @@
+//! The chip in the cycle model: D_CNTR's pair queue and entry register, the node and
+//! triangle words held for the DOP unit and TRI_UNIT, the memory port, the leaf FIFO and
+//! leaf register, the result port, and the end of a query, register for register as
+//! [`rtl::chip`](crate::rtl) builds them (docs/ARCHITECTURE.md, "Cycle semantics"). Each
+//! [`step`](Clocked::step) computes the cycle's logic from the registers and inputs, then
+//! clocks every register once.
+
+use super::d_cntr::{QueueIn, QueueModel, QueueOut};
+use super::dop_unit::{DopResult, DopUnit};
+use super::fifo::SyncFifo;
+use super::memory::{Dst, MemPort};
+use super::tri_unit::{TriOut, TriUnit};
+use super::{ChipIn, ChipOut, Clocked, Params};
+use crate::config::ChipConfig;
+use crate::dop::{HostSetup, Node};
+use crate::golden::{doptrf, tcheck};
+use crate::memory::ObjectImage;
+use crate::traversal::d_cntr::{children, Entry, Pair};
+use serde::Serialize;
+use std::collections::VecDeque;
+
+/// The host registers the traversal reads (the DOP unit's and TRI_UNIT's setup words are
+/// the golden [`HostSetup`] given at construction).
+pub mod reg {
+    pub const MODE: u32 = 0x120;
+    pub const ROOT: u32 = 0x121;
+    pub const BASE_NA: u32 = 0x122;
+    pub const BASE_NB: u32 = 0x123;
+    pub const BASE_TA: u32 = 0x124;
+    pub const BASE_TB: u32 = 0x125;
+}
+
+/// Where the clocks of a running query went, one cause per cycle for the DOP unit's
+/// input, plus the other units' occupancy.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize)]
+pub struct Stats {
+    /// Cycles from start to done.
+    pub cycles: u64,
+    /// A DOP test issued.
+    pub issue: u64,
+    /// The entry's pair waits for a node word (the memory port).
+    pub stall_memory: u64,
+    /// Both words held, but the last issue was too recent (issue spacing).
+    pub stall_spacing: u64,
+    /// Both words held, but DOP tests in flight + leaf pairs waiting fill the credit.
+    pub stall_credit: u64,
+    /// No entry: one is popped in this cycle (or, LIFO, waits for a child entry's push).
+    pub stall_refill: u64,
+    /// No entry and the queue empty while DOP results that may refill it are in flight.
+    pub stall_empty_queue: u64,
+    /// The traversal is over: leaf pairs and TRI_UNIT finish.
+    pub drain: u64,
+    /// Halted (first hit or overflow): what is in flight finishes.
+    pub halted: u64,
+    /// A leaf pair with both triangle words waits for TRI_UNIT's `in_ready`.
+    pub back_pressure: u64,
+    /// A result is shown and the host does not take it.
+    pub result_wait: u64,
+    /// Cycles with a memory request outstanding.
+    pub memory_busy: u64,
+    /// Sum over cycles of the DOP tests in flight (mean occupancy = this / cycles).
+    pub dop_occupancy: u64,
+    /// Sum over cycles of TRI_UNIT's open pairs.
+    pub tri_occupancy: u64,
+}
+
+/// The chip. Values come from the golden model of `cfg` on the images `a`, `b` with
+/// `setup`; timing from `p`.
+pub struct Chip<'a> {
+    p: Params,
+    // ---- host registers
+    lifo: bool,
+    first: bool,
+    root: u32,
+    base: [u32; 4],
+    // ---- query state
+    run: bool,
+    done: bool,
+    push_root: bool,
+    stop: bool,
+    // ---- D_CNTR
+    queue: QueueModel<Entry>,
+    q: QueueOut<Entry>,
+    ent: Entry,
+    ent_valid: bool,
+    ent_second: bool,
+    last_issue: Option<u64>,
+    /// Child entries not yet pushed (the RTL's `pend`: one at most).
+    pend: VecDeque<Entry>,
+    // ---- words held (by [`Dst`]) and the memory port
+    held: [Option<u32>; 4],
+    port: MemPort,
+    // ---- units
+    dop: DopUnit<'a>,
+    leaf_fifo: SyncFifo<(u32, u32)>,
+    leaf_valid: bool,
+    leaf_tag: (u32, u32),
+    tri: TriUnit<'a>,
+    // ---- counters: DOP tests, triangle tests, node fetches, triangle fetches
+    cnt: [u64; 4],
+    now: u64,
+    pub stats: Stats,
+}
+
+/// The cycle's logic: functions of the registers and the inputs.
+struct Comb {
+    halt: bool,
+    cur: Pair,
+    ent_last: bool,
+    need: [bool; 4],
+    req: Option<(Dst, u32)>,
+    accept: bool,
+    issue: bool,
+    dop_out: Option<DopResult>,
+    leaf_in: Option<(u32, u32)>,
+    new_children: ([Entry; 2], usize),
+    child_push: bool,
+    pop: bool,
+    tri_in: bool,
+    tri_take: bool,
+    leaf_out: bool,
+    out: Option<TriOut>,
+    give: bool,
+    finish: bool,
+}
+
+impl<'a> Chip<'a> {
+    /// A chip after reset (its host registers zero: write [`control_writes`] before
+    /// `start`).
+    pub fn new(
+        cfg: &ChipConfig,
+        p: Params,
+        a: &'a ObjectImage,
+        b: &'a ObjectImage,
+        setup: &'a HostSetup,
+    ) -> Result<Self, String> {
+        p.check()?;
+        let dop_values = doptrf::TransformCache::new(cfg.format, cfg.dop_rounding.op(), setup, b.tree.len());
+        let tri_values = tcheck::TriUnit::new(cfg.format, cfg.tri_rounding, setup, a.tris.len(), b.tris.len());
+        let queue = QueueModel::with_capacity(p.queue_entries as usize);
+        Ok(Chip {
+            p,
+            lifo: false,
+            first: false,
+            root: 0,
+            base: [0; 4],
+            run: false,
+            done: false,
+            push_root: false,
+            stop: false,
+            q: queue.outputs(),
+            queue,
+            ent: Entry::default(),
+            ent_valid: false,
+            ent_second: false,
+            last_issue: None,
+            pend: VecDeque::new(),
+            held: [None; 4],
+            port: MemPort::new(p.outstanding),
+            dop: DopUnit::new(a, b, dop_values, p.dop_latency),
+            leaf_fifo: SyncFifo::new(p.credit as usize),
+            leaf_valid: false,
+            leaf_tag: (0, 0),
+            tri: TriUnit::new(a, b, tri_values, p.tri_latency, p.tri_fifo),
+            cnt: [0; 4],
+            now: 0,
+            stats: Stats::default(),
+        })
+    }
+
+    pub fn params(&self) -> &Params {
+        &self.p
+    }
+
+    fn comb(&self, i: &ChipIn) -> Comb {
+        let run = self.run;
+        let halt = self.stop || self.q.overflow;
+        let cur = self.ent.pairs[self.ent_second as usize];
+        let ent_last = self.ent_second || self.ent.len == 1;
+        let go = run && !halt;
+        let needs = |d: Dst, id: u32, valid: bool| go && valid && self.held[d as usize] != Some(id);
+        let need = [
+            needs(Dst::NodeA, cur.a, self.ent_valid),
+            needs(Dst::NodeB, cur.b, self.ent_valid),
+            needs(Dst::TriA, self.leaf_tag.0, self.leaf_valid),
+            needs(Dst::TriB, self.leaf_tag.1, self.leaf_valid),
+        ];
+        let req = Dst::PRIORITY.into_iter().find(|&d| need[d as usize] && self.port.free(d)).map(|d| {
+            let id = match d {
+                Dst::NodeA => cur.a,
+                Dst::NodeB => cur.b,
+                Dst::TriA => self.leaf_tag.0,
+                Dst::TriB => self.leaf_tag.1,
+            };
+            (d, id)
+        });
+        let accept = req.is_some() && i.mem_req_ready;
+        let spaced = self.last_issue.is_none_or(|t| self.now - t >= self.p.issue_spacing as u64);
+        let credit = self.dop.in_flight() + self.leaf_fifo.len();
+        let issue = go && self.ent_valid && !need[0] && !need[1] && spaced && credit < self.p.credit as usize;
+        // a DOP result: child entries, or a leaf pair
+        let dop_out = self.dop.out(self.now).copied();
+        let (mut leaf_in, mut new_children) = (None, ([Entry::default(); 2], 0));
+        if let Some(r) = dop_out.filter(|r| r.overlap) {
+            match (r.na, r.nb) {
+                (Node::Leaf(ta), Node::Leaf(tb)) => leaf_in = Some((ta, tb)),
+                (na, nb) => new_children = children(r.pair, na, nb),
+            }
+        }
+        let child_push = !self.pend.is_empty() || new_children.1 > 0;
+        let pop = go && !self.q.empty && (!self.ent_valid || (issue && ent_last)) && !(self.lifo && child_push);
+        // leaf pairs and TRI_UNIT
+        let tri_in = go && self.leaf_valid && !need[2] && !need[3];
+        let tri_take = tri_in && self.tri.in_ready();
+        let leaf_out =
+            self.leaf_fifo.head(self.now).is_some() && (halt || (run && (!self.leaf_valid || tri_take)));
+        let out = self.tri.out(self.now).copied();
+        let give = out.is_some_and(|o| i.res_ready || !o.kept());
+        let halt_idle = self.dop.in_flight() == 0
+            && self.pend.is_empty()
+            && self.port.is_empty()
+            && self.tri.open() == 0
+            && !self.push_root
+            && self.leaf_fifo.is_empty();
+        let all_idle = halt_idle && self.q.empty && !self.ent_valid && !self.leaf_valid;
+        let finish = run && (all_idle || (halt && halt_idle));
+        Comb {
+            halt,
+            cur,
+            ent_last,
+            need,
+            req,
+            accept,
+            issue,
+            dop_out,
+            leaf_in,
+            new_children,
+            child_push,
+            pop,
+            tri_in,
+            tri_take,
+            leaf_out,
+            out,
+            give,
+            finish,
+        }
+    }
+
+    fn addr(&self, d: Dst, id: u32) -> u32 {
+        self.base[d as usize] + id
+    }
+
+    /// Books `n` cycles with the logic `c` (the same in each) to [`Stats`].
+    fn tally(&mut self, c: &Comb, i: &ChipIn, n: u64) {
+        let spacing = self.last_issue.is_some_and(|t| self.now - t < self.p.issue_spacing as u64);
+        let s = &mut self.stats;
+        s.cycles += n;
+        s.memory_busy += n * !self.port.is_empty() as u64;
+        s.dop_occupancy += n * self.dop.in_flight() as u64;
+        s.tri_occupancy += n * self.tri.open() as u64;
+        s.back_pressure += n * (c.tri_in && !c.tri_take) as u64;
+        s.result_wait += n * c.out.is_some_and(|o| o.kept() && !i.res_ready) as u64;
+        let cause = if c.halt {
+            &mut s.halted
+        } else if c.issue {
+            &mut s.issue
+        } else if self.ent_valid {
+            if c.need[0] || c.need[1] {
+                &mut s.stall_memory
+            } else if spacing {
+                &mut s.stall_spacing
+            } else {
+                &mut s.stall_credit
+            }
+        } else if !self.q.empty {
+            &mut s.stall_refill
+        } else if self.dop.in_flight() > 0 || !self.pend.is_empty() || self.push_root {
+            &mut s.stall_empty_queue
+        } else {
+            &mut s.drain
+        };
+        *cause += n;
+    }
+
+    fn probe(&self, c: &Comb, i: &ChipIn, push: bool) -> Vec<u64> {
+        let b = |x: bool| x as u64;
+        let dop = c.dop_out;
+        let res = c.out.filter(|o| o.kept());
+        let leaf = |n: Option<Node>| b(matches!(n, Some(Node::Leaf(_))));
+        let (req_addr, req_dst) = c.req.map_or((0, 0), |(d, id)| (self.addr(d, id) as u64, d as u64));
+        vec![
+            b(i.start),
+            b(self.run),
+            b(self.done),
+            b(self.q.overflow),
+            b(c.halt),
+            self.q.count as u64,
+            self.q.max_count as u64,
+            b(push),
+            b(c.pop),
+            b(self.ent_valid),
+            c.cur.a as u64,
+            c.cur.b as u64,
+            b(c.need[0]),
+            b(c.need[1]),
+            b(c.issue),
+            self.dop.in_flight() as u64,
+            b(c.req.is_some()),
+            b(i.mem_req_ready),
+            req_addr,
+            req_dst,
+            b(!self.port.is_empty()),
+            b(i.mem_resp.is_some()),
+            b(dop.is_some()),
+            b(dop.is_some_and(|r| r.overlap)),
+            dop.map_or(0, |r| r.pair.a as u64),
+            dop.map_or(0, |r| r.pair.b as u64),
+            leaf(dop.map(|r| r.na)),
+            leaf(dop.map(|r| r.nb)),
+            b(c.leaf_in.is_some()),
+            self.leaf_fifo.len() as u64,
+            b(self.leaf_valid),
+            self.leaf_tag.0 as u64,
+            self.leaf_tag.1 as u64,
+            b(c.tri_in),
+            b(self.tri.in_ready()),
+            b(c.tri_take),
+            self.tri.open() as u64,
+            b(c.out.is_some()),
+            b(c.out.is_some_and(|o| o.res.hit)),
+            b(c.out.is_some_and(|o| o.res.uncertain)),
+            c.out.map_or(0, |o| o.a as u64),
+            c.out.map_or(0, |o| o.b as u64),
+            b(res.is_some()),
+            b(res.is_some_and(|o| o.res.uncertain)),
+            res.map_or(0, |o| o.a as u64),
+            res.map_or(0, |o| o.b as u64),
+            self.cnt[0],
+            self.cnt[1],
+            self.cnt[2],
+            self.cnt[3],
+        ]
+    }
+
+    /// The current clock (edges since construction).
+    pub fn now(&self) -> u64 {
+        self.now
+    }
+
+    /// With the inputs `i` held, the chip does nothing but wait until this cycle: no
+    /// register but the clock changes before it (the next DOP result, leaf pair at the
+    /// FIFO's head, TRI_UNIT verdict, or the end of the issue spacing). `None`: it may act
+    /// in the current cycle. Memory responses, `mem_req_ready` and `res_ready` are the
+    /// driver's to add. Lets the driver skip a wait in one step, the trace exact.
+    pub fn quiet_until(&self, i: &ChipIn) -> Option<u64> {
+        let c = self.comb(i);
+        let acts = !self.run
+            || self.push_root
+            || i.start
+            || i.host_we
+            || i.mem_resp.is_some()
+            || c.accept
+            || c.issue
+            || c.pop
+            || c.child_push
+            || c.dop_out.is_some()
+            || c.tri_take
+            || c.leaf_out
+            || c.give
+            || c.finish;
+        if acts {
+            return None;
+        }
+        let spaced = self.last_issue.map(|t| t + self.p.issue_spacing as u64);
+        [self.dop.next_out(), self.leaf_fifo.next_head(), self.tri.next_out(), spaced]
+            .into_iter()
+            .flatten()
+            .filter(|&t| t > self.now)
+            .min()
+    }
+
+    /// Skips `n` clocks before [`quiet_until`](Self::quiet_until)'s cycle with the inputs
+    /// `i`: the same state as `n` steps.
+    pub fn skip(&mut self, n: u64, i: &ChipIn) {
+        let c = self.comb(i);
+        self.tally(&c, i, n);
+        self.now += n;
+    }
+}
+
+/// The host's writes of the traversal's registers for a query in order `lifo` and
+/// `mode`, root pair (0, 0), mode last (the RTL host writes the DOP unit's and TRI_UNIT's
+/// setup before these).
+pub fn control_writes(a: &ObjectImage, b: &ObjectImage, lifo: bool, mode: crate::traversal::Mode) -> [(u32, u32); 6] {
+    let base = layout(a, b);
+    [
+        (reg::BASE_NA, base[Dst::NodeA as usize]),
+        (reg::BASE_TA, base[Dst::TriA as usize]),
+        (reg::BASE_NB, base[Dst::NodeB as usize]),
+        (reg::BASE_TB, base[Dst::TriB as usize]),
+        (reg::ROOT, 0),
+        (reg::MODE, lifo as u32 | ((mode == crate::traversal::Mode::First) as u32) << 1),
+    ]
+}
+
+/// Word addresses of A's node 0, B's node 0, A's triangle 0, B's triangle 0 (by [`Dst`]):
+/// A's nodes, A's triangles, B's nodes, B's triangles, one word each.
+pub fn layout(a: &ObjectImage, b: &ObjectImage) -> [u32; 4] {
+    let (na, ta, nb) = (a.tree.len() as u32, a.tris.len() as u32, b.tree.len() as u32);
+    [0, na + ta, na, na + ta + nb]
+}
+
+impl Clocked for Chip<'_> {
+    fn outputs(&self) -> ChipOut {
+        let i = ChipIn::default();
+        let c = self.comb(&i);
+        let res = c.out.filter(|o| o.kept());
+        ChipOut {
+            busy: self.run,
+            done: self.done,
+            overflow: self.q.overflow,
+            max_depth: self.q.max_count as u64,
+            dop_tests: self.cnt[0],
+            tri_tests: self.cnt[1],
+            node_fetches: self.cnt[2],
+            tri_fetches: self.cnt[3],
+            mem_req_valid: c.req.is_some(),
+            mem_req_addr: c.req.map_or(0, |(d, id)| self.addr(d, id)),
+            res_valid: res.is_some(),
+            res_tag: res.map_or((0, 0), |o| (o.a, o.b)),
+            res_uncertain: res.is_some_and(|o| o.res.uncertain),
+        }
+    }
+
+    fn step(&mut self, i: &ChipIn, probe: bool) -> Option<Vec<u64>> {
+        let c = self.comb(i);
+        let now = self.now;
+        if self.run {
+            self.tally(&c, i, 1);
+        }
+        // the queue's push: the root entry, else a pending child entry, else a new one
+        // (FIFO pushes a result's first entry first, LIFO its second, so that the first
+        // is popped first)
+        let (ch, n) = c.new_children;
+        let mut order = ch[..n].to_vec();
+        if self.lifo {
+            order.reverse();
+        }
+        self.pend.extend(order);
+        let push = if self.push_root {
+            Some(Entry { pairs: [Pair { a: self.root & 0xffff, b: self.root >> 16, flip: false }, Pair::default()], len: 1 })
+        } else {
+            self.pend.pop_front()
+        };
+        let probed = probe.then(|| self.probe(&c, i, push.is_some()));
+        // ---- host registers
+        if i.host_we {
+            match i.host_addr {
+                reg::MODE => (self.lifo, self.first) = (i.host_data & 1 == 1, i.host_data & 2 == 2),
+                reg::ROOT => self.root = i.host_data,
+                reg::BASE_NA..=reg::BASE_TB => {
+                    // registers in the order NA, NB, TA, TB = Dst order
+                    self.base[(i.host_addr - reg::BASE_NA) as usize] = i.host_data & 0xff_ffff;
+                }
+                _ => {} // the DOP unit's and TRI_UNIT's setup: the golden HostSetup
+            }
+        }
+        // ---- memory port
+        if let Some((d, id)) = c.req.filter(|_| c.accept) {
+            self.port.accept(d, id);
+            self.cnt[if d.is_tri() { 3 } else { 2 }] += 1;
+        }
+        if i.mem_resp.is_some() {
+            if let Some((d, id)) = self.port.respond() {
+                self.held[d as usize] = Some(id);
+            }
+        }
+        // ---- issue, DOP results
+        if c.issue {
+            self.dop.issue(now, c.cur);
+            self.cnt[0] += 1;
+            self.last_issue = Some(now);
+            self.ent_second = true;
+            if c.ent_last {
+                self.ent_valid = false;
+            }
+        }
+        self.dop.retire(now);
+        if c.pop {
+            self.ent = self.q.top_data;
+            self.ent_valid = true;
+            self.ent_second = false;
+        }
+        self.q = self.queue.step(&QueueIn {
+            clear: i.start && !self.run,
+            lifo: self.lifo,
+            push: push.is_some(),
+            push_data: push.unwrap_or_default(),
+            pop: c.pop,
+        });
+        self.push_root = false;
+        // ---- leaf pairs and TRI_UNIT
+        if c.tri_take {
+            self.tri.take(now, self.leaf_tag.0, self.leaf_tag.1);
+            self.leaf_valid = false;
+            self.cnt[1] += 1;
+        }
+        if c.leaf_out {
+            let tag = self.leaf_fifo.read(now).expect("leaf_out reads a visible head");
+            if !c.halt {
+                self.leaf_valid = true;
+                self.leaf_tag = tag;
+            }
+        }
+        if let Some(tag) = c.leaf_in {
+            self.leaf_fifo.write(now, tag);
+        }
+        if c.give {
+            self.tri.give(now);
+        }
+        // ---- first hit, end of query, start
+        if self.run && self.first && c.out.is_some_and(|o| o.sure_hit()) {
+            self.stop = true;
+        }
+        if c.finish {
+            self.run = false;
+            self.done = true;
+        }
+        if i.start && !self.run {
+            self.run = true;
+            self.done = false;
+            self.push_root = true;
+            self.stop = false;
+            self.ent_valid = false;
+            self.leaf_valid = false;
+            self.held = [None; 4];
+            self.cnt = [0; 4];
+            self.stats = Stats::default();
+            self.last_issue = None;
+        }
+        self.now += 1;
+        probed
+    }
+}

@@ -1,0 +1,326 @@
+//! One driver for the chip at every level ([`Clocked`]: the cycle model, the rust-hdl
+//! chip): the host's register writes and `start`, the memory model, the host reading
+//! results, the query trace the Verilog testbench prints in the same format, two levels
+//! in lockstep, and the traversal VCD.
+
+use super::memory::{MemModel, MemTiming};
+use super::{probe_valid, ChipIn, Clocked, PROBES};
+use crate::traversal::{Mode, QueryResult};
+use std::fmt::Write as _;
+
+/// How the host reads results: `res_ready` is high in the cycles `c` with
+/// `c % period == 0` (1: every cycle; more: a slow host whose results back-pressure the
+/// chip). The Verilog testbench reads with the same rule.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Reader {
+    pub period: u32,
+}
+
+impl Default for Reader {
+    fn default() -> Self {
+        Reader { period: 1 }
+    }
+}
+
+impl Reader {
+    pub fn ready(&self, cyc: u64) -> bool {
+        cyc % self.period.max(1) as u64 == 0
+    }
+}
+
+/// What a query did: the chip's outputs, in the trace format the Verilog testbench
+/// prints (`vectors/chip/*.expect`).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct ChipTrace {
+    /// `(cycle, A's triangle, B's triangle, uncertain)` in the order the host read them;
+    /// cycle 1 is the one after the edge that took `start`.
+    pub results: Vec<(u64, u32, u32, bool)>,
+    /// Rising edges from the one that took `start` to the one after which `done` is high.
+    pub cycles: u64,
+    pub overflow: bool,
+    pub max_depth: u64,
+    pub dop_tests: u64,
+    pub tri_tests: u64,
+    pub node_fetches: u64,
+    pub tri_fetches: u64,
+}
+
+impl ChipTrace {
+    /// One line per result, then a summary line (the Verilog testbench prints the same).
+    pub fn text(&self) -> String {
+        let mut s = String::new();
+        for &(c, a, b, u) in &self.results {
+            let _ = writeln!(s, "result {c} {a} {b} {}", u as u8);
+        }
+        let _ = writeln!(
+            s,
+            "done {} overflow {} max_depth {} dop_tests {} tri_tests {} node_fetches {} tri_fetches {}",
+            self.cycles, self.overflow as u8, self.max_depth, self.dop_tests, self.tri_tests, self.node_fetches, self.tri_fetches
+        );
+        s
+    }
+
+    /// The sure hits and the uncertain pairs, each sorted.
+    pub fn pairs(&self) -> (Vec<(u32, u32)>, Vec<(u32, u32)>) {
+        let mut hits: Vec<_> = self.results.iter().filter(|r| !r.3).map(|r| (r.1, r.2)).collect();
+        let mut unc: Vec<_> = self.results.iter().filter(|r| r.3).map(|r| (r.1, r.2)).collect();
+        hits.sort_unstable();
+        unc.sort_unstable();
+        (hits, unc)
+    }
+
+    /// Does this trace answer the query as the golden model does? `all` is the golden
+    /// all-pairs result of the same query. All pairs: the chip's sure hits are the golden
+    /// pairs that were not uncertain, and its uncertain pairs are the golden uncertain
+    /// ones. First hit (docs/ARCHITECTURE.md, "Cycle semantics", Halt): every pair it
+    /// reports is one of those (the sure hit that halted it, and what was in flight), and
+    /// it reports a sure hit, or only uncertain pairs, exactly when the golden query has
+    /// pairs (the host settles the uncertain ones). An overflow is an error: the answer is
+    /// incomplete. Returns what differs.
+    pub fn check(&self, mode: Mode, all: &QueryResult) -> Result<(), String> {
+        let (hits, unc) = self.pairs();
+        let sure: Vec<(u32, u32)> = all.pairs.iter().copied().filter(|p| all.uncertain.binary_search(p).is_err()).collect();
+        if self.overflow {
+            return Err("the queue overflowed: the answer is incomplete".into());
+        }
+        match mode {
+            Mode::All if hits != sure || unc != all.uncertain => Err(format!(
+                "all pairs: chip hits {hits:?} uncertain {unc:?}; golden hits {sure:?} uncertain {:?}",
+                all.uncertain
+            )),
+            Mode::First => {
+                if let Some(p) = hits.iter().find(|p| sure.binary_search(p).is_err()) {
+                    return Err(format!("first hit: chip hit {p:?} is not a golden sure hit"));
+                }
+                if let Some(p) = unc.iter().find(|p| all.uncertain.binary_search(p).is_err()) {
+                    return Err(format!("first hit: chip uncertain {p:?} is not golden uncertain"));
+                }
+                let settled = unc.iter().any(|p| all.pairs.binary_search(p).is_ok());
+                if (hits.is_empty() && !settled) != all.pairs.is_empty() {
+                    return Err(format!("first hit: chip hits {hits:?} uncertain {unc:?}; golden pairs {:?}", all.pairs));
+                }
+                Ok(())
+            }
+            _ => Ok(()),
+        }
+    }
+}
+
+/// Why a simulated query did not finish.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct ChipError(pub String);
+
+impl std::fmt::Display for ChipError {
+    fn fmt(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+        f.write_str(&self.0)
+    }
+}
+
+/// How one query is driven.
+#[derive(Clone, Copy, Debug)]
+pub struct Drive {
+    pub timing: MemTiming,
+    pub reader: Reader,
+    /// Words in the memory image: a request past them is an error.
+    pub words: u32,
+    /// Cycles after `start` before the query counts as hung.
+    pub max_cycles: u64,
+}
+
+/// Runs one query: the register `writes` one per clock, `start` (cycle 0), then clocks
+/// until `done`, the memory model serving requests and the host reading results by
+/// `d.reader`. `observe(cycle, probes)` sees every cycle from 0 on with the [`PROBES`]
+/// values if `probe` is set (a VCD, a lockstep check). Without `probe`, stretches in which
+/// the cycle model only waits may be skipped in one step (`skip`: the model's
+/// [`quiet_until`](super::chip::Chip::quiet_until) and [`skip`](super::chip::Chip::skip)).
+pub fn run_query<C: Clocked>(
+    chip: &mut C,
+    writes: &[(u32, u32)],
+    d: &Drive,
+    probe: bool,
+    mut observe: impl FnMut(u64, Option<Vec<u64>>) -> Result<(), String>,
+    mut skip: Option<&mut dyn FnMut(&mut C, &ChipIn, u64) -> u64>,
+) -> Result<ChipTrace, ChipError> {
+    d.timing.check().map_err(ChipError)?;
+    let idle = ChipIn { res_ready: true, ..Default::default() };
+    for &(a, v) in writes {
+        chip.step(&ChipIn { host_we: true, host_addr: a, host_data: v, ..idle }, false);
+    }
+    let p = chip.step(&ChipIn { start: true, ..idle }, probe);
+    observe(0, p).map_err(|e| ChipError(format!("cycle 0: {e}")))?;
+    fault(chip, 0)?;
+    let mut mem = MemModel::new(d.timing);
+    let mut results = vec![];
+    let mut cyc = 1u64;
+    while cyc <= d.max_cycles {
+        let out = chip.outputs();
+        if out.done {
+            return Ok(ChipTrace {
+                results,
+                cycles: cyc - 1,
+                overflow: out.overflow,
+                max_depth: out.max_depth,
+                dop_tests: out.dop_tests,
+                tri_tests: out.tri_tests,
+                node_fetches: out.node_fetches,
+                tri_fetches: out.tri_fetches,
+            });
+        }
+        let ready = mem.ready(cyc);
+        let i = ChipIn { mem_req_ready: ready, mem_resp: mem.respond(cyc), res_ready: d.reader.ready(cyc), ..idle };
+        if out.mem_req_valid && ready {
+            if out.mem_req_addr >= d.words {
+                return Err(ChipError(format!(
+                    "cycle {cyc}: memory request at word {}, past the image ({} words)",
+                    out.mem_req_addr, d.words
+                )));
+            }
+            mem.request(cyc, out.mem_req_addr);
+        }
+        if out.res_valid && i.res_ready {
+            results.push((cyc, out.res_tag.0, out.res_tag.1, out.res_uncertain));
+        }
+        // a wait the model may skip: nothing to answer, request or read before `until`
+        if let Some(skip) = skip.as_deref_mut().filter(|_| !probe && i.mem_resp.is_none() && !out.res_valid) {
+            let mut until = mem.next_response().unwrap_or(u64::MAX);
+            if out.mem_req_valid && !ready {
+                until = until.min(mem.next_ready());
+            }
+            let n = skip(chip, &i, until.saturating_sub(cyc).min(d.max_cycles + 1 - cyc));
+            if n > 0 {
+                cyc += n;
+                continue;
+            }
+        }
+        let p = chip.step(&i, probe);
+        observe(cyc, p).map_err(|e| ChipError(format!("cycle {cyc}: {e}")))?;
+        fault(chip, cyc)?;
+        cyc += 1;
+    }
+    Err(ChipError(format!("the query did not finish within {} cycles", d.max_cycles)))
+}
+
+fn fault<C: Clocked>(chip: &C, cyc: u64) -> Result<(), ChipError> {
+    match chip.fault() {
+        Some(f) => Err(ChipError(format!("cycle {cyc}: {f}"))),
+        None => Ok(()),
+    }
+}
+
+/// Two levels clocked with the same inputs, compared after every clock: every output,
+/// and every [`PROBES`] signal whose value is specified ([`probe_valid`]). The first
+/// difference is the [`fault`](Clocked::fault), naming the signal and both values.
+pub struct Lockstep<A, B> {
+    pub a: A,
+    pub b: B,
+    pub names: (&'static str, &'static str),
+    diff: Option<String>,
+}
+
+impl<A: Clocked, B: Clocked> Lockstep<A, B> {
+    pub fn new(a: A, b: B, names: (&'static str, &'static str)) -> Self {
+        Lockstep { a, b, names, diff: None }
+    }
+}
+
+impl<A: Clocked, B: Clocked> Clocked for Lockstep<A, B> {
+    fn outputs(&self) -> super::ChipOut {
+        self.a.outputs()
+    }
+
+    fn step(&mut self, i: &ChipIn, _probe: bool) -> Option<Vec<u64>> {
+        let (oa, ob) = (self.a.outputs().specified(), self.b.outputs().specified());
+        if self.diff.is_none() && oa != ob {
+            self.diff = Some(format!("outputs differ: {} {oa:?}, {} {ob:?}", self.names.0, self.names.1));
+        }
+        let pa = self.a.step(i, true).expect("probed");
+        let pb = self.b.step(i, true).expect("probed");
+        if self.diff.is_none() {
+            let specified = |k: usize| probe_valid(k).is_none_or(|v| pa[v] == 1);
+            if let Some(k) = (0..PROBES.len()).find(|&k| specified(k) && pa[k] != pb[k]) {
+                let (scope, name, _) = PROBES[k];
+                self.diff = Some(format!(
+                    "signal chip.{scope}.{name}: {} {}, {} {}",
+                    self.names.0, pa[k], self.names.1, pb[k]
+                ));
+            }
+        }
+        Some(pa)
+    }
+
+    fn fault(&self) -> Option<String> {
+        self.diff.clone()
+    }
+}
+
+/// A VCD of the [`PROBES`] signals, one time unit per clock (time t shows every signal in
+/// cycle t, cycle 0 the one whose edge takes `start`), one scope per unit under `chip`:
+/// for GTKWave with scripts/gtkw/chip_e8m15_k6.gtkw. `window` limits it to cycles
+/// `from..to`.
+pub struct ProbeVcd<W: std::io::Write> {
+    w: vcd::Writer<W>,
+    ids: Vec<vcd::IdCode>,
+    last: Vec<Option<u64>>,
+    window: std::ops::Range<u64>,
+}
+
+impl<W: std::io::Write> ProbeVcd<W> {
+    pub fn new(out: W, window: std::ops::Range<u64>) -> std::io::Result<Self> {
+        let mut w = vcd::Writer::new(out);
+        w.timescale(1, vcd::TimescaleUnit::NS)?;
+        w.add_module("chip")?;
+        let mut ids = vec![];
+        let mut scope = "";
+        for &(s, name, width) in &PROBES {
+            if s != scope {
+                if !scope.is_empty() {
+                    w.upscope()?;
+                }
+                w.add_module(s)?;
+                scope = s;
+            }
+            ids.push(w.add_wire(width, name)?);
+        }
+        w.upscope()?;
+        w.upscope()?;
+        w.enddefinitions()?;
+        Ok(ProbeVcd { w, ids, last: vec![None; PROBES.len()], window })
+    }
+
+    /// The values of cycle `t`.
+    pub fn cycle(&mut self, t: u64, values: &[u64]) -> std::io::Result<()> {
+        if !self.window.contains(&t) {
+            return Ok(());
+        }
+        let mut stamped = false;
+        for (k, &v) in values.iter().enumerate() {
+            if self.last[k] == Some(v) {
+                continue;
+            }
+            self.last[k] = Some(v);
+            if !stamped {
+                self.w.timestamp(t)?;
+                stamped = true;
+            }
+            let width = PROBES[k].2;
+            let bits: Vec<vcd::Value> =
+                (0..width).rev().map(|b| if v >> b & 1 == 1 { vcd::Value::V1 } else { vcd::Value::V0 }).collect();
+            self.w.change_vector(self.ids[k], &bits)?;
+        }
+        Ok(())
+    }
+}
+
+/// A traversal VCD at `path` (its directory made if missing). Errors name the path.
+pub fn open_vcd(path: &std::path::Path) -> Result<ProbeVcd<std::io::BufWriter<std::fs::File>>, ChipError> {
+    let io = |e: std::io::Error| ChipError(format!("{}: {e}", path.display()));
+    if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
+        if dir.is_file() {
+            return Err(ChipError(format!("{}: is a file, not a directory for the VCD files", dir.display())));
+        }
+        std::fs::create_dir_all(dir).map_err(io)?;
+    }
+    let file = std::io::BufWriter::new(std::fs::File::create(path).map_err(io)?);
+    ProbeVcd::new(file, 0..u64::MAX).map_err(io)
+}
+

@@ -1,0 +1,196 @@
+//! The fast cycle model of the chip (`src/cycle`): it reproduces every checked-in chip
+//! trace (vectors/chip/*.expect: the small ones agreed by rust-hdl in lockstep, the large
+//! ones by the exported Verilog under Verilator), answers as the golden model does in
+//! configurations beyond the RTL (k, format, latencies, spacing, credit, requests
+//! outstanding, memory timing, a slow host), skips idle stretches without changing a
+//! trace, and reports an overflowing queue.
+//!
+//! `CCHIP_BLESS=1 cargo test --release --test cycle_chip` writes the cycle model's traces
+//! of every query to target/chip-expect/ for `scripts/run-chip.sh --bless`, which copies
+//! each into vectors/chip/ only if Verilator's trace equals it.
+
+use collision_chip::config::{ChipConfig, DopRounding};
+use collision_chip::cycle::chip::{control_writes, layout, Chip as CycleChip};
+use collision_chip::cycle::drive::{run_query, ChipTrace, Drive, Reader};
+use collision_chip::cycle::memory::Dst;
+use collision_chip::cycle::{self, MemTiming, Params};
+use collision_chip::format::{Format, Rounding};
+use collision_chip::mesh::soup;
+use collision_chip::pose::Pose;
+use collision_chip::query::Chip;
+use collision_chip::rtl::chip_io::{queries, CHIP_CONFIG};
+use collision_chip::traversal::{Mode, Traversal};
+use proptest::prelude::*;
+use std::path::PathBuf;
+
+const MAX_CYCLES: u64 = 5_000_000;
+
+fn vectors() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("vectors/chip")
+}
+
+/// Every query of the set, small and large: the cycle model's trace is the checked-in one.
+#[test]
+fn every_checked_in_trace() {
+    let bless = std::env::var("CCHIP_BLESS").is_ok_and(|v| v == "1");
+    let out = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("target/chip-expect");
+    for q in queries() {
+        let p = q.prepare().unwrap();
+        let params = Params { memory: q.timing, ..Params::RTL };
+        let (tr, stats) = cycle::run_query(&p.chip, &p.chip.setup(&q.pose), q.lifo, q.mode, params, q.reader, MAX_CYCLES).unwrap();
+        println!("{}: {} ({stats:?})", q.name, tr.text().lines().last().unwrap());
+        tr.check(q.mode, &p.golden_all).unwrap_or_else(|e| panic!("{}: {e}", q.name));
+        if bless {
+            std::fs::create_dir_all(&out).unwrap();
+            std::fs::write(out.join(format!("{}.expect", q.name)), tr.text()).unwrap();
+            continue;
+        }
+        let path = vectors().join(format!("{}.expect", q.name));
+        let want = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+        assert_eq!(tr.text(), want, "{}: the cycle model's trace differs from {}", q.name, path.display());
+    }
+}
+
+/// The large queries do what they are in the set for: 10^4 cycles and more, results
+/// that back-pressure the traversal, and sure hits mixed with uncertain pairs.
+#[test]
+fn large_queries_cover_what_they_claim() {
+    let large: Vec<_> = queries().into_iter().filter(|q| q.large).collect();
+    assert!(large.len() >= 4);
+    let (mut back_pressure, mut mixed, mut orders_modes) = (false, false, std::collections::BTreeSet::new());
+    for q in &large {
+        let p = q.prepare().unwrap();
+        let params = Params { memory: q.timing, ..Params::RTL };
+        let (tr, st) = cycle::run_query(&p.chip, &p.chip.setup(&q.pose), q.lifo, q.mode, params, q.reader, MAX_CYCLES).unwrap();
+        assert!((10_000..=200_000).contains(&tr.cycles), "{}: {} cycles", q.name, tr.cycles);
+        back_pressure |= st.back_pressure > 0 && st.result_wait > 0;
+        let (hits, unc) = tr.pairs();
+        mixed |= !hits.is_empty() && !unc.is_empty();
+        orders_modes.insert((q.lifo, q.mode == Mode::First));
+    }
+    assert!(back_pressure, "no large query stalls TRI_UNIT on a slow host");
+    assert!(mixed, "no large query mixes sure hits with uncertain pairs");
+    assert_eq!(orders_modes.len(), 4, "both orders in both modes");
+}
+
+/// A configuration to run: k, format, DOP rounding and the microarchitecture's parameters.
+fn config(k: usize, binary32: bool, outward: bool) -> ChipConfig {
+    ChipConfig {
+        k,
+        format: if binary32 { Format::BINARY32 } else { Format::REDUCED },
+        dop_rounding: if outward { DopRounding::Outward } else { DopRounding::NearestEven },
+        tri_rounding: Rounding::NearestEven,
+    }
+}
+
+fn params() -> impl Strategy<Value = Params> {
+    (
+        (10u32..=14, 1u32..=20, 3u32..=140, 1u32..=64),
+        (1u32..=2, 1u32..=32, 1u32..=4, 1u32..=6, 1u32..=3),
+    )
+        .prop_map(|((q, dl, tl, tf), (sp, cr, os, lat, int))| Params {
+            queue_entries: 1 << q,
+            dop_latency: dl,
+            tri_latency: tl,
+            tri_fifo: tf,
+            issue_spacing: sp,
+            credit: cr,
+            outstanding: os,
+            memory: MemTiming { latency: lat, interval: int },
+        })
+}
+
+/// Runs a query on the cycle model, with idle stretches skipped or (`probe`) clock by clock.
+fn run(chip: &Chip, pose: &Pose, lifo: bool, mode: Mode, p: Params, reader: Reader, probe: bool) -> Result<ChipTrace, String> {
+    if !probe {
+        return cycle::run_query(chip, &chip.setup(pose), lifo, mode, p, reader, MAX_CYCLES).map(|r| r.0);
+    }
+    let setup = chip.setup(pose);
+    let mut c = CycleChip::new(&chip.cfg, p, &chip.a, &chip.b, &setup)?;
+    let words = layout(&chip.a, &chip.b)[Dst::TriB as usize] + chip.b.tris.len() as u32;
+    let d = Drive { timing: p.memory, reader, words, max_cycles: MAX_CYCLES };
+    run_query(&mut c, &control_writes(&chip.a, &chip.b, lifo, mode), &d, true, |_, p| {
+        assert_eq!(p.map(|v| v.len()), Some(cycle::PROBES.len()));
+        Ok(())
+    }, None)
+    .map_err(|e| e.0)
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 256, failure_persistence: None, .. ProptestConfig::default() })]
+
+    /// Any k, format, rounding and microarchitecture: the cycle model's answer is the
+    /// golden model's (all pairs: the same sure hits, uncertain pairs and test counts; FIFO
+    /// order even the fetch counts), the same with idle stretches skipped as clock by
+    /// clock, and every running clock is booked to exactly one cause.
+    #[test]
+    fn any_configuration_answers_as_golden(
+        k in prop::sample::select(vec![6usize, 14, 18, 24, 26]), binary32: bool, outward: bool,
+        na in 4usize..=120, nb in 4usize..=120, sa: u64, sb: u64,
+        rot in prop::array::uniform3(0.0f64..360.0), t in prop::array::uniform3(-0.4f64..0.4),
+        lifo: bool, first: bool, p in params(), period in 1u32..=12,
+    ) {
+        let chip = Chip::new(&soup(na, sa).triangles_f64(), &soup(nb, sb).triangles_f64(), config(k, binary32, outward)).unwrap();
+        let pose = Pose::new(rot[0], rot[1], rot[2], t[0], t[1], t[2]);
+        let mode = if first { Mode::First } else { Mode::All };
+        let golden = chip.query(&pose, Mode::All, if lifo { Traversal::Lifo } else { Traversal::Fifo });
+        let reader = Reader { period };
+        let (tr, st) = cycle::run_query(&chip, &chip.setup(&pose), lifo, mode, p, reader, MAX_CYCLES).unwrap();
+        prop_assert!(!tr.overflow, "a queue of {} entries overflowed", p.queue_entries);
+        prop_assert!(tr.check(mode, &golden).is_ok(), "{:?}\n{}", tr.check(mode, &golden), tr.text());
+        if !first {
+            let g = golden.counters;
+            prop_assert_eq!((tr.dop_tests, tr.tri_tests), (g.dop_tests, g.tri_tests));
+            if !lifo {
+                prop_assert_eq!((tr.node_fetches, tr.tri_fetches), (g.node_fetches, g.tri_fetches));
+            }
+        }
+        let booked = st.issue + st.stall_memory + st.stall_spacing + st.stall_credit + st.stall_refill
+            + st.stall_empty_queue + st.drain + st.halted;
+        prop_assert_eq!((st.cycles, booked, st.issue), (tr.cycles, tr.cycles, tr.dop_tests));
+        let clocked = run(&chip, &pose, lifo, mode, p, reader, true).unwrap();
+        prop_assert_eq!(clocked, tr);
+    }
+}
+
+/// The RTL configuration's parameters are the RTL's own constants.
+#[test]
+fn rtl_point_is_the_rtl() {
+    use collision_chip::rtl::{e8m15::TriUnit, DOP_LATENCY, LEAF_FIFO};
+    let p = Params::RTL;
+    assert_eq!((p.dop_latency, p.tri_latency, p.tri_fifo, p.credit), (DOP_LATENCY as u32, TriUnit::LATENCY as u32, TriUnit::FIFO_DEPTH as u32, LEAF_FIFO as u32));
+    assert_eq!((p.dop_latency, p.tri_latency), (15, 130), "the documented latencies");
+}
+
+/// A queue too small for the traversal: the query ends with `overflow`, having reported
+/// only golden pairs, and its trace does not pass for an answer.
+#[test]
+fn a_small_queue_overflows() {
+    let q = queries().into_iter().find(|q| q.name == "sphere_fifo_all").unwrap();
+    let p = q.prepare().unwrap();
+    for lifo in [false, true] {
+        let params = Params { queue_entries: 3, ..Params::RTL };
+        let (tr, st) = cycle::run_query(&p.chip, &p.chip.setup(&q.pose), lifo, Mode::All, params, Reader::default(), MAX_CYCLES).unwrap();
+        assert!(tr.overflow && tr.max_depth == 3, "{}", tr.text());
+        assert!(tr.check(Mode::All, &p.golden_all).is_err());
+        let (hits, unc) = tr.pairs();
+        assert!(hits.iter().chain(&unc).all(|x| p.golden_all.pairs.contains(x) || p.golden_all.uncertain.contains(x)));
+        assert!(st.halted > 0 && tr.dop_tests < p.golden_all.counters.dop_tests);
+    }
+}
+
+/// Bad parameters are refused before anything runs, naming the parameter.
+#[test]
+fn bad_parameters_are_refused() {
+    let chip = Chip::new(&soup(4, 1).triangles_f64(), &soup(4, 2).triangles_f64(), CHIP_CONFIG).unwrap();
+    let setup = chip.setup(&Pose::new(0.0, 0.0, 0.0, 0.0, 0.0, 0.0));
+    for (p, what) in [
+        (Params { queue_entries: 0, ..Params::RTL }, "queue_entries"),
+        (Params { issue_spacing: 3, ..Params::RTL }, "issue_spacing"),
+        (Params { outstanding: 5, ..Params::RTL }, "outstanding"),
+        (Params { memory: MemTiming { latency: 0, interval: 1 }, ..Params::RTL }, "latency"),
+    ] {
+        let e = CycleChip::new(&CHIP_CONFIG, p, &chip.a, &chip.b, &setup).err().expect("refused");
+        assert!(e.contains(what), "{e}");
+    }
+}
