@@ -205,6 +205,9 @@ impl std::error::Error for MeshError {}
 /// Loads a mesh file, choosing the parser by extension (`.obj`, `.stl`, `.ply`, any case).
 pub fn load(path: &Path) -> Result<Mesh, MeshError> {
     let file = path.display().to_string();
+    // Read first: a missing file is reported as missing, whatever its name.
+    let bytes = std::fs::read(path)
+        .map_err(|e| MeshError::new(&file, None, format!("cannot read file: {e}")))?;
     let ext = path
         .extension()
         .map(|e| e.to_string_lossy().to_ascii_lowercase());
@@ -227,8 +230,6 @@ pub fn load(path: &Path) -> Result<Mesh, MeshError> {
             ))
         }
     };
-    let bytes = std::fs::read(path)
-        .map_err(|e| MeshError::new(&file, None, format!("cannot read file: {e}")))?;
     let (vertices, triangles) = parse(&file, &bytes)?;
     let name = path
         .file_stem()
@@ -237,8 +238,23 @@ pub fn load(path: &Path) -> Result<Mesh, MeshError> {
     finish(&file, name, vertices, triangles)
 }
 
+/// The per-coordinate check of every parser: finite, and in the range the exact oracle is
+/// exact for (`token` is the coordinate as the file writes it).
+pub(crate) fn check_coordinate(c: f64, token: &str) -> Result<(), String> {
+    if !c.is_finite() {
+        Err(format!("NaN or infinite coordinate '{token}'"))
+    } else if !crate::oracle::in_range(c) {
+        Err(format!(
+            "coordinate '{token}' is out of range ({}); rescale the model",
+            crate::oracle::RANGE_TEXT
+        ))
+    } else {
+        Ok(())
+    }
+}
+
 /// Common final checks of every loader: at least one triangle, all indices in range, all
-/// coordinates finite (the format parsers already report these with line numbers; this is the
+/// coordinates finite and in the oracle's range (the format parsers already report these with line numbers; this is the
 /// safety net so that no loaded [`Mesh`] ever violates them).
 fn finish(
     file: &str,
@@ -249,15 +265,11 @@ fn finish(
     if triangles.is_empty() {
         return Err(MeshError::new(file, None, "empty mesh: no triangles"));
     }
-    if let Some(i) = vertices
-        .iter()
-        .position(|p| !p.iter().all(|c| c.is_finite()))
-    {
-        return Err(MeshError::new(
-            file,
-            None,
-            format!("vertex {i} has a non-finite coordinate"),
-        ));
+    for (i, p) in vertices.iter().enumerate() {
+        for c in p.iter() {
+            check_coordinate(*c, &format!("{c:e}"))
+                .map_err(|r| MeshError::new(file, None, format!("vertex {i}: {r}")))?;
+        }
     }
     if let Some(i) = triangles
         .iter()
