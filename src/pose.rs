@@ -42,6 +42,12 @@ impl Pose {
         }
     }
 
+    /// The pose as `rx,ry,rz,tx,ty,tz`, the form [`Pose::parse`] reads (shortest round trip).
+    pub fn text(&self) -> String {
+        let v: Vec<String> = self.rot_deg.iter().chain(&self.t).map(|x| format!("{x:?}")).collect();
+        v.join(",")
+    }
+
     /// The rotation matrix R = Rz * Ry * Rx. Angles that are multiples of 90 degrees give
     /// exact 0 and +-1 entries, so axis-aligned poses stay exact.
     pub fn rotation(&self) -> Matrix3<f64> {

@@ -85,8 +85,8 @@ proptest! {
 
 #[test]
 fn traversals_agree_on_bunny_and_teapot() {
-    let bunny = mesh::resolve("bunny").unwrap().scaled_into_unit_cube().triangles_f64();
-    let teapot = mesh::resolve("teapot").unwrap().scaled_into_unit_cube().triangles_f64();
+    let bunny = mesh::resolve("bunny").unwrap().scaled_into_unit_cube().unwrap().triangles_f64();
+    let teapot = mesh::resolve("teapot").unwrap().scaled_into_unit_cube().unwrap().triangles_f64();
     for pose in [Pose::new(10.0, 20.0, 30.0, 0.3, 0.0, 0.0), Pose::new(-70.0, 5.0, 160.0, 0.9, 0.4, -0.2)] {
         assert_traversals_agree(&bunny, &teapot, ChipConfig::default(), &pose);
     }
@@ -471,7 +471,7 @@ fn default_query_is_exact_on_vendored_meshes() {
     let sweep = collision_chip::scene::Sweep { distances: vec![2.2, 1.4, 0.8, 0.2], orientations: 2, seed: 5 };
     let poses = collision_chip::scene::sweep_poses(&sweep).unwrap();
     for name in ["bunny", "teapot", "dragon-11k"] {
-        let tris = mesh::resolve(name).unwrap().scaled_into_unit_cube().triangles_f64();
+        let tris = mesh::resolve(name).unwrap().scaled_into_unit_cube().unwrap().triangles_f64();
         for format in [Format::BINARY32, Format::REDUCED] {
             let chip = Chip::new(&tris, &tris, ChipConfig { format, ..Default::default() }).unwrap();
             for sp in &poses {

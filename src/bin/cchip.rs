@@ -164,7 +164,7 @@ fn main() -> ExitCode {
 
 fn load(spec: &str, unit_cube: bool) -> Result<Mesh, String> {
     let m = mesh::resolve(spec).map_err(|e| e.to_string())?;
-    Ok(if unit_cube { m.scaled_into_unit_cube() } else { m })
+    if unit_cube { m.scaled_into_unit_cube().map_err(|e| e.to_string()) } else { Ok(m) }
 }
 
 fn query(q: QueryArgs) -> Result<(), String> {
@@ -172,6 +172,7 @@ fn query(q: QueryArgs) -> Result<(), String> {
     let (ma, mb) = (load(&q.a, q.unit_cube)?, load(&q.b, q.unit_cube)?);
     let (ta, tb) = (ma.triangles_f64(), mb.triangles_f64());
     let chip = Chip::new(&ta, &tb, cfg)?;
+    chip.check_pose(&q.pose)?;
     let res = chip.query(&q.pose, q.mode, q.traversal);
     let exact = q.oracle.then(|| exact_pairs(&ta, &tb, &q.pose));
     let acc = exact.as_ref().map(|x| Accuracy::of(q.mode, &res.pairs, x));
@@ -269,6 +270,7 @@ fn run(path: Option<PathBuf>, json: bool, rtl: bool, vcd: Option<PathBuf>) -> Re
     let (ma, mb) = (load(&scene.objects.a, scene.objects.unit_cube)?, load(&scene.objects.b, scene.objects.unit_cube)?);
     let (ta, tb) = (ma.triangles_f64(), mb.triangles_f64());
     let chip = Chip::new(&ta, &tb, scene.cfg)?;
+    scene.poses.iter().try_for_each(|sp| chip.check_pose(&sp.pose)).map_err(|e| format!("{}: {e}", scene.name))?;
     if !json {
         println!(
             "scene: {}\n  A = {} ({} triangles), B = {} ({} triangles){}\n  chip: k={} format={} dop-rounding={:?}; {:?} traversal, {:?} mode; {} poses",

@@ -128,7 +128,7 @@ fn vendored_meshes_keep_face_order_and_values() {
 #[test]
 fn scaled_into_unit_cube_fits_and_is_centred() {
     for name in ["bunny", "teapot", "dragon-11k", "soup:50:3"] {
-        let m = builtin(name).unwrap().scaled_into_unit_cube();
+        let m = builtin(name).unwrap().scaled_into_unit_cube().unwrap();
         let (lo, hi) = m.aabb();
         let side = hi - lo;
         assert!((side.max() - 2.0).abs() < 1e-12, "{name}: {side:?}");
@@ -144,7 +144,18 @@ fn scaled_into_unit_cube_fits_and_is_centred() {
         vertices: vec![Point3::new(3.0, 3.0, 3.0)],
         triangles: vec![[0, 0, 0]],
     };
-    assert_eq!(point.scaled_into_unit_cube().vertices[0], Point3::origin());
+    assert_eq!(point.scaled_into_unit_cube().unwrap().vertices[0], Point3::origin());
+    // Issue 16: extents at both ends of the range stay finite and in range, and a detail
+    // scaled out of the range is refused (it was judged, or clamped, before).
+    let tri = |v: [[f64; 3]; 3]| Mesh { name: "t".into(), vertices: v.map(Point3::from).to_vec(), triangles: vec![[0, 1, 2]] };
+    for s in [1e60, 1e-60] {
+        let m = tri([[-s, 0.0, 0.0], [s, 0.0, 0.0], [0.0, s, 0.0]]).scaled_into_unit_cube().unwrap();
+        for (v, w) in m.vertices.iter().zip([p(-1.0, -0.5, 0.0), p(1.0, -0.5, 0.0), p(0.0, 0.5, 0.0)]) {
+            assert!((v - w).amax() < 1e-15, "{s}: {v} vs {w}");
+        }
+    }
+    let e = tri([[0.0, 0.0, 0.0], [1e60, 0.0, 0.0], [0.0, 1.0, 1e-60]]).scaled_into_unit_cube().unwrap_err();
+    assert!(e.reason.starts_with("scaled into [-1,1]^3, vertex 0: coordinate '") && e.reason.contains("out of range"), "{e}");
 }
 
 #[test]

@@ -177,7 +177,7 @@ impl Scene {
             (Some(s), true) => sweep_poses(s).map_err(err)?,
         };
         if let Some(p) = poses.iter().find(|p| !p.pose.rot_deg.iter().chain(&p.pose.t).all(|x| x.is_finite())) {
-            return Err(err(format!("pose {:?} has a non-finite number", p.pose)));
+            return Err(err(format!("pose {} has a non-finite number", p.pose.text())));
         }
         Ok(Scene {
             name: name.to_string(),
