@@ -81,7 +81,10 @@ pub use procedural::{soup, sphere, torus};
 type Parsed = (Vec<Point3<f64>>, Vec<[u32; 3]>);
 
 /// Upper limit for `N` in the procedural built-in specs (`sphere:N`, `torus:N`, `soup:N`).
-pub const MAX_PROCEDURAL_TRIANGLES: usize = 1 << 24;
+/// A query holds about 1 KB per triangle of each object (f64 geometry, DOP tree, memory
+/// image: 365 MB for two 200k-triangle spheres), so two objects at the limit need about
+/// 4 GB (2^24 needed tens of GB).
+pub const MAX_PROCEDURAL_TRIANGLES: usize = 1 << 21;
 
 /// Names accepted by [`builtin`] (for error messages and `--help` texts).
 pub const BUILTIN_NAMES: &[&str] = &[
@@ -356,6 +359,12 @@ pub fn builtin(name: &str) -> Result<Mesh, MeshError> {
     };
     mesh.name = name.to_string();
     Ok(mesh)
+}
+
+/// True if `spec` is of a built-in family (`bunny`, `sphere:…`, …), valid or not.
+pub fn is_builtin_name(spec: &str) -> bool {
+    let family = spec.split(':').next();
+    BUILTIN_NAMES.iter().any(|b| b.split(':').next() == family)
 }
 
 /// A mesh spec from the CLI: an existing file path, or a built-in name.

@@ -323,6 +323,7 @@ fn builtin_names() {
         assert!(e.reason.contains(needle), "{e}");
     }
     assert_eq!(e.file, "rabbit");
+    assert!(builtin("torus:16777216").unwrap_err().reason.contains("not an integer in 1..=2097152"));
     for bad in [
         "sphere:0",
         "sphere:x",
@@ -331,6 +332,7 @@ fn builtin_names() {
         "soup:10:x",
         "soup:1:2:3",
         "sphere:99999999999",
+        "sphere:2097153",
     ] {
         let e = builtin(bad).unwrap_err();
         assert!(e.to_string().starts_with(&format!("{bad}: ")), "{e}");
