@@ -66,7 +66,7 @@ fn main() {
     println!("| mesh | distance | pairs | golden (us) | parry peer (us) | oracle (us) | parry / golden |");
     println!("|---|---|---|---|---|---|---|");
     for name in ["bunny", "dragon-11k"] {
-        let m = mesh::resolve(name).expect("built-in mesh").scaled_into_unit_cube();
+        let m = mesh::resolve(name).expect("built-in mesh").scaled_into_unit_cube().expect("in range");
         let tris = m.triangles_f64();
         let chip = Chip::new(&tris, &tris, ChipConfig::default()).expect("chip");
         let pm = parry_mesh(&m);

@@ -109,7 +109,7 @@ pub fn parse(text: &str, name: &str) -> Result<Case, String> {
         }
     }
     if !f.pose.rot_deg.iter().chain(&f.pose.t).all(|x| x.is_finite()) {
-        return Err(err(format!("pose {:?} has a non-finite number", f.pose)));
+        return Err(err(format!("pose {} has a non-finite number", f.pose.text())));
     }
     let expected: Vec<(u32, u32)> = f.expected.iter().map(|p| (p[0], p[1])).collect();
     if let Some(p) = expected.iter().find(|p| p.0 as usize >= f.a.len() || p.1 as usize >= f.b.len()) {

@@ -42,6 +42,12 @@ impl Pose {
         }
     }
 
+    /// The pose as `rx,ry,rz,tx,ty,tz`, the form [`Pose::parse`] reads (shortest round trip).
+    pub fn text(&self) -> String {
+        let v: Vec<String> = self.rot_deg.iter().chain(&self.t).map(|x| format!("{x:?}")).collect();
+        v.join(",")
+    }
+
     /// The rotation matrix R = Rz * Ry * Rx. Angles that are multiples of 90 degrees give
     /// exact 0 and +-1 entries, so axis-aligned poses stay exact.
     pub fn rotation(&self) -> Matrix3<f64> {
@@ -71,17 +77,21 @@ impl Pose {
 }
 
 /// cos and sin of an angle in degrees, exact at multiples of 90 degrees.
+///
+/// The angle is reduced with `%`, which is exact (so 1e20 degrees is exactly 280), into
+/// (-360, 360); `rem_euclid` would round a tiny negative angle up to 360.0 and treat it as a
+/// multiple of 90.
 fn cos_sin_deg(deg: f64) -> [f64; 2] {
-    let r = deg.rem_euclid(360.0);
+    let r = deg % 360.0;
     if r % 90.0 == 0.0 {
-        match (r / 90.0) as u32 {
+        match (r / 90.0) as i32 {
             0 => [1.0, 0.0],
-            1 => [0.0, 1.0],
-            2 => [-1.0, 0.0],
+            1 | -3 => [0.0, 1.0],
+            2 | -2 => [-1.0, 0.0],
             _ => [0.0, -1.0],
         }
     } else {
-        let rad = deg.to_radians();
+        let rad = r.to_radians();
         [rad.cos(), rad.sin()]
     }
 }
@@ -101,6 +111,20 @@ mod tests {
         // Rx(90) sends y to z; then Ry(90) sends z to x.
         let p = Pose::new(90.0, 90.0, 0.0, 0.0, 0.0, 0.0);
         assert_eq!(p.apply(&Point3::new(0.0, 1.0, 0.0)), Point3::new(1.0, 0.0, 0.0));
+    }
+
+    /// Issue 16: -1e-15 degrees was reduced to 360.0 and taken for a quarter-turn multiple,
+    /// giving the rotation of 270 degrees.
+    #[test]
+    fn tiny_and_huge_angles_are_reduced_exactly() {
+        let tiny = Pose::new(-1e-15, 0.0, 0.0, 0.0, 0.0, 0.0).rotation();
+        assert!((tiny - Matrix3::identity()).amax() < 1e-16, "{tiny}");
+        assert_eq!(tiny[(2, 1)], -(1e-15f64.to_radians()).sin());
+        // 1e20 = 2^20 * 5^20 is an f64, and 1e20 mod 360 = 280 (1e20 = 0 mod 40, 1 mod 9).
+        assert_eq!(Pose::new(0.0, 0.0, 1e20, 0.0, 0.0, 0.0).rotation(), Pose::new(0.0, 0.0, 280.0, 0.0, 0.0, 0.0).rotation());
+        for (neg, pos) in [(-90.0, 270.0), (-180.0, 180.0), (-270.0, 90.0), (-360.0, 0.0), (-450.0, 270.0)] {
+            assert_eq!(Pose::new(neg, 0.0, 0.0, 0.0, 0.0, 0.0).rotation(), Pose::new(pos, 0.0, 0.0, 0.0, 0.0, 0.0).rotation(), "{neg}");
+        }
     }
 
     #[test]

@@ -6,6 +6,7 @@ use crate::config::ChipConfig;
 use crate::dop::{DopNormals, HostSetup};
 use crate::dop::tree::Tri;
 use crate::memory::{Layout, ObjectImage};
+use crate::oracle;
 use crate::pose::Pose;
 use crate::traversal::{self, Host, Mode, QueryResult, Traversal};
 use serde::Serialize;
@@ -21,12 +22,15 @@ pub struct Chip {
 }
 
 impl Chip {
-    /// Errors name what is wrong (unsupported k, empty object).
+    /// Errors name what is wrong (unsupported k, empty object, a coordinate outside the
+    /// range the exact oracle is exact for).
     pub fn new(a: &[Tri], b: &[Tri], cfg: ChipConfig) -> Result<Chip, String> {
         DopNormals::get(cfg.k)?;
         if a.is_empty() || b.is_empty() {
             return Err("both objects need at least one triangle".into());
         }
+        oracle::check_range(a, "object A")?;
+        oracle::check_range(b, "object B")?;
         Ok(Chip {
             cfg,
             a: ObjectImage::build(a, &cfg),
@@ -34,6 +38,12 @@ impl Chip {
             layout: Layout::new(&cfg),
             geometry: [a.to_vec(), b.to_vec()],
         })
+    }
+
+    /// Ok iff B placed by `pose` stays in the range the exact oracle is exact for (a huge
+    /// translation or a tiny rotation angle can leave it); check before [`Chip::query`].
+    pub fn check_pose(&self, pose: &Pose) -> Result<(), String> {
+        oracle::check_range(&place(&self.geometry[1], pose), &format!("object B at pose {}", pose.text()))
     }
 
     pub fn setup(&self, pose: &Pose) -> HostSetup {
@@ -92,6 +102,23 @@ impl Accuracy {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Issue 16: geometry outside the oracle's exact range is refused, not judged.
+    #[test]
+    fn out_of_range_geometry_is_refused() {
+        use nalgebra::Point3;
+        let tri = |s: f64, z: f64| [Point3::new(0.0, 0.0, z), Point3::new(s, 0.0, z), Point3::new(0.0, s, z)];
+        let cfg = ChipConfig::default();
+        let e = Chip::new(&[tri(1.0, 0.0)], &[tri(1e-70, 0.0)], cfg).err().unwrap();
+        assert!(e.starts_with("object B, triangle 0: coordinate 1e-70 is out of range"), "{e}");
+        let chip = Chip::new(&[tri(1.0, 0.0)], &[tri(1.0, 0.0)], cfg).unwrap();
+        chip.check_pose(&Pose::new(30.0, 1e-10, 0.0, 1e60, 0.0, 0.0)).unwrap();
+        // A translation beyond 1e60, and a rotation so small that its sine is 1.7e-302.
+        for pose in [Pose::new(0.0, 0.0, 0.0, 2e60, 0.0, 0.0), Pose::new(1e-300, 0.0, 0.0, 0.0, 0.0, 0.0)] {
+            let e = chip.check_pose(&pose).unwrap_err();
+            assert!(e.starts_with("object B at pose ") && e.contains("1e-60 to 1e60"), "{e}");
+        }
+    }
 
     #[test]
     fn accuracy_counts_misses_and_extras() {

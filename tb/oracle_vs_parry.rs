@@ -115,7 +115,7 @@ fn oracle_vs_parry_sphere_torus() {
 
 #[test]
 fn oracle_vs_parry_bunny() {
-    let a = mesh::resolve("bunny").expect("bunny").scaled_into_unit_cube();
+    let a = mesh::resolve("bunny").expect("bunny").scaled_into_unit_cube().expect("in range");
     let poses = [
         Pose::default(), // identical meshes: all neighbour contacts
         Pose::new(0.0, 90.0, 0.0, 0.0, 0.0, 0.0),

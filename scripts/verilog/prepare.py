@@ -241,8 +241,10 @@ def main():
     unchecked = [n for d, n, w, s in plist if d == "output" and n not in outs and n != a.out_valid]
     for n in tied:
         print(f"prepare.py: warning: input {n} is not in the vectors: tied to 0", file=sys.stderr)
-    for n in unchecked:
-        print(f"prepare.py: warning: output {n} is not in the vectors: not checked", file=sys.stderr)
+    if unchecked:
+        # An unchecked output would let a wrong unit pass: name every output in the header.
+        die(f"{a.vectors}: output(s) {' '.join(unchecked)} of {top} not in the header, so never checked; "
+            f"add them to the vector file's header")
     if not has_iv:
         print(f"prepare.py: warning: no input {a.in_valid}: not driven", file=sys.stderr)
     if not has_ov:

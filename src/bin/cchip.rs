@@ -11,9 +11,10 @@ use collision_chip::cycle::{self, drive::Reader};
 use collision_chip::report::{accuracy, stall_table, summary_table, CycleRecord, PoseRecord};
 use collision_chip::rtl::{chip_io, units};
 use collision_chip::scene::{CrossCheck, Scene, ScenePose, Sweep, DEFAULT_SCENE};
-use collision_chip::traversal::{Mode, QueryResult, Traversal};
+use collision_chip::traversal::{Counters, Mode, QueryResult, Traversal};
+use serde::Serialize;
+use std::io::Write;
 use indicatif::{ProgressBar, ProgressStyle};
-use serde_json::json;
 use std::io::IsTerminal;
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -165,7 +166,7 @@ fn main() -> ExitCode {
 
 fn load(spec: &str, unit_cube: bool) -> Result<Mesh, String> {
     let m = mesh::resolve(spec).map_err(|e| e.to_string())?;
-    Ok(if unit_cube { m.scaled_into_unit_cube() } else { m })
+    if unit_cube { m.scaled_into_unit_cube().map_err(|e| e.to_string()) } else { Ok(m) }
 }
 
 fn query(q: QueryArgs) -> Result<(), String> {
@@ -173,23 +174,24 @@ fn query(q: QueryArgs) -> Result<(), String> {
     let (ma, mb) = (load(&q.a, q.unit_cube)?, load(&q.b, q.unit_cube)?);
     let (ta, tb) = (ma.triangles_f64(), mb.triangles_f64());
     let chip = Chip::new(&ta, &tb, cfg)?;
+    chip.check_pose(&q.pose)?;
     let res = chip.query(&q.pose, q.mode, q.traversal);
     let exact = q.oracle.then(|| exact_pairs(&ta, &tb, &q.pose));
     let acc = exact.as_ref().map(|x| Accuracy::of(q.mode, &res.pairs, x));
     if q.json {
-        let mut v = json!({
-            "a": { "mesh": q.a, "triangles": ta.len() },
-            "b": { "mesh": q.b, "triangles": tb.len() },
-            "pose": q.pose, "mode": q.mode, "traversal": q.traversal, "chip": cfg,
-            "pairs": res.pairs, "counters": res.counters,
-            "uncertain": res.uncertain.len(), "uncertain_pairs": res.uncertain,
-        });
-        if let (Some(x), Some(a)) = (&exact, acc) {
-            v["exact_pairs"] = json!(x);
-            v["accuracy"] = json!(a);
-        }
-        println!("{}", serde_json::to_string_pretty(&v).expect("serialisable"));
-        return Ok(());
+        // Written straight to stdout: a tree of JSON values for millions of (uncertain) pairs
+        // took tens of GB.
+        let v = QueryJson {
+            a: MeshJson { mesh: &q.a, triangles: ta.len() },
+            b: MeshJson { mesh: &q.b, triangles: tb.len() },
+            pose: q.pose, mode: q.mode, traversal: q.traversal, chip: cfg,
+            pairs: &res.pairs, counters: res.counters,
+            uncertain: res.uncertain.len(), uncertain_pairs: &res.uncertain,
+            exact_pairs: exact.as_deref(), accuracy: acc,
+        };
+        let mut out = std::io::BufWriter::new(std::io::stdout().lock());
+        serde_json::to_writer_pretty(&mut out, &v).map_err(|e| format!("cannot write JSON: {e}"))?;
+        return writeln!(out).and_then(|()| out.flush()).map_err(|e| format!("cannot write JSON: {e}"));
     }
     println!("A: {} ({} triangles, {} DOP nodes)", q.a, ta.len(), chip.a.tree.len());
     println!("B: {} ({} triangles, {} DOP nodes)", q.b, tb.len(), chip.b.tree.len());
@@ -219,6 +221,31 @@ fn query(q: QueryArgs) -> Result<(), String> {
     Ok(())
 }
 
+#[derive(Serialize)]
+struct MeshJson<'a> {
+    mesh: &'a str,
+    triangles: usize,
+}
+
+/// `query --json`; `exact_pairs` and `accuracy` only with `--oracle`.
+#[derive(Serialize)]
+struct QueryJson<'a> {
+    a: MeshJson<'a>,
+    b: MeshJson<'a>,
+    pose: Pose,
+    mode: Mode,
+    traversal: Traversal,
+    chip: ChipConfig,
+    pairs: &'a [(u32, u32)],
+    counters: Counters,
+    uncertain: usize,
+    uncertain_pairs: &'a [(u32, u32)],
+    #[serde(skip_serializing_if = "Option::is_none")]
+    exact_pairs: Option<&'a [(u32, u32)]>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    accuracy: Option<Accuracy>,
+}
+
 fn exact_pairs(ta: &[oracle::Tri], tb: &[oracle::Tri], pose: &Pose) -> Vec<(u32, u32)> {
     oracle::intersecting_pairs(ta, &place(tb, pose))
 }
@@ -240,7 +267,7 @@ fn progress_bar(len: u64, hidden: bool) -> ProgressBar {
 fn accuracy(a: AccuracyArgs) -> Result<(), String> {
     let sweep = Sweep { distances: a.distances.clone(), orientations: a.orientations, seed: a.seed };
     let roundings = [DopRounding::Outward, DopRounding::NearestEven];
-    let bar = progress_bar((a.meshes.len() * a.distances.len() * a.orientations) as u64, a.json);
+    let bar = progress_bar(a.meshes.len().saturating_mul(a.distances.len()).saturating_mul(a.orientations) as u64, a.json);
     let mut rows = vec![];
     for m in &a.meshes {
         let tris = load(m, true)?.triangles_f64();
@@ -280,9 +307,11 @@ fn run(path: Option<PathBuf>, json: bool, rtl: bool, vcd: Option<PathBuf>) -> Re
     if let Some(dir) = scene.outputs.waveforms.as_deref().filter(|d| d.is_file()) {
         return Err(named(format!("waveforms: {} is a file; give a directory for the VCD files", dir.display())));
     }
-    let (ma, mb) = (load(&scene.objects.a, scene.objects.unit_cube)?, load(&scene.objects.b, scene.objects.unit_cube)?);
+    let in_scene = |spec: &str| load(spec, scene.objects.unit_cube).map_err(named);
+    let (ma, mb) = (in_scene(&scene.objects.a)?, in_scene(&scene.objects.b)?);
     let (ta, tb) = (ma.triangles_f64(), mb.triangles_f64());
     let chip = Chip::new(&ta, &tb, scene.cfg)?;
+    scene.poses.iter().try_for_each(|sp| chip.check_pose(&sp.pose)).map_err(named)?;
     if !json {
         println!(
             "scene: {}\n  A = {} ({} triangles), B = {} ({} triangles){}\n  chip: k={} format={} dop-rounding={:?}; {:?} traversal, {:?} mode; {} poses",

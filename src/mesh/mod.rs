@@ -15,13 +15,17 @@
 //! * **Vertex order** — PLY: as in the file (indices identical to the file's).  STL: vertices are
 //!   de-duplicated by exact bit pattern in order of first use (stl_io's `read_stl`).  OBJ: per
 //!   object/group in order of first use by a face (tobj); unreferenced `v` lines are dropped.
-//! * **Coordinates** are read as `f32` by all three parsing crates (tobj, stl_io; PLY `float`
-//!   properties, while PLY `double` properties keep full precision) and widened exactly to `f64`.
+//! * **Coordinates** written as decimals (OBJ, ASCII STL, ASCII PLY, whatever type the PLY
+//!   header declares) are read as the nearest `f64`: the file's numbers, not an `f32` rounding
+//!   of them.  Binary STL and binary PLY `float` values are `f32` by definition and are widened
+//!   exactly; binary PLY `double` values are kept.
 //! * **Accepted**: degenerate (zero-area) triangles, repeated indices in a triangle, repeated
 //!   vertices, non-manifold meshes, holes and inconsistent winding — real scanned data (e.g. the
 //!   Stanford dragon) has all of these.
 //! * **Rejected** (a [`MeshError`] naming the file and, for textual formats, the 1-based line):
-//!   a NaN or infinite coordinate (even in an unused vertex), an index out of range, a face with
+//!   a NaN or infinite coordinate (even in an unused vertex), a coordinate outside the range the
+//!   exact oracle is exact for (0 or magnitude 1e-60 to 1e60, see [`crate::oracle`]), data
+//!   beyond the element counts of a PLY header, an index out of range, a face with
 //!   fewer than 3 vertices, a truncated file (binary STL/PLY shorter than its header says, or an
 //!   ASCII PLY/STL ending early), a mesh without triangles, an unsupported extension, an
 //!   unreadable file, and any syntax error the parsing crates report.  No input makes the loaders
@@ -32,11 +36,14 @@
 //! * `.obj` (tobj): `v x y z [w]` (a `w` divides x, y, z; vertex colours are ignored), `f` with
 //!   `v`, `v/vt`, `v//vn`, `v/vt/vn` references, negative (relative) references allowed.  `vt`,
 //!   `vn`, `o`, `g`, `s`, `p` lines are parsed or skipped; `l` (polyline), `mtllib` and `usemtl`
-//!   lines are ignored (materials are never loaded).  Before tobj runs, a validation pass over the
+//!   lines are ignored (materials are never loaded); a leading byte-order mark is skipped.
+//!   Before tobj runs, a validation pass over the
 //!   text checks every `v` and `f` line so that errors carry a line number.
-//! * `.stl` (stl_io): ASCII or binary.  A file is read as binary when its size is exactly
-//!   `84 + 50·n` for the triangle count `n` in its header — even when it starts with `solid`,
-//!   as many binary exporters write — and as ASCII otherwise if it starts with `solid`.
+//! * `.stl`: binary (stl_io) or ASCII (parsed here, keywords in any case).  A file is read as
+//!   binary when its size is exactly `84 + 50·n` for the triangle count `n` in its header —
+//!   even when it starts with `solid`, as many binary exporters write — and as ASCII otherwise
+//!   if it starts with `solid` (any case, after an optional byte-order mark) and its first 512
+//!   bytes are text.
 //! * `.ply` (ply-rs): `ascii`, `binary_little_endian`, `binary_big_endian`.  Element `vertex`
 //!   with scalar properties `x y z` (any numeric type), element `face` with a list property
 //!   `vertex_indices` (or `vertex_index`) of any integer type; other elements and properties are
@@ -74,7 +81,10 @@ pub use procedural::{soup, sphere, torus};
 type Parsed = (Vec<Point3<f64>>, Vec<[u32; 3]>);
 
 /// Upper limit for `N` in the procedural built-in specs (`sphere:N`, `torus:N`, `soup:N`).
-pub const MAX_PROCEDURAL_TRIANGLES: usize = 1 << 24;
+/// A query holds about 1 KB per triangle of each object (f64 geometry, DOP tree, memory
+/// image: 365 MB for two 200k-triangle spheres), so two objects at the limit need about
+/// 4 GB (2^24 needed tens of GB).
+pub const MAX_PROCEDURAL_TRIANGLES: usize = 1 << 21;
 
 /// Names accepted by [`builtin`] (for error messages and `--help` texts).
 pub const BUILTIN_NAMES: &[&str] = &[
@@ -150,26 +160,32 @@ impl Mesh {
     ///
     /// The centre of [`Mesh::aabb`] moves to the origin and all coordinates are multiplied by
     /// `2 / longest side` (clamped to [-1,1] against rounding).  A mesh whose box has zero size
-    /// is only translated.  Topology, vertex and triangle order are unchanged.
-    pub fn scaled_into_unit_cube(&self) -> Mesh {
+    /// is only translated.  Topology, vertex and triangle order are unchanged.  An error if a
+    /// scaled coordinate leaves the oracle's range (a mesh spanning 1e60 with details of
+    /// 1e-60 scales them to 1e-120).  Loaded meshes are in range, so the box and the scale are
+    /// finite and non-zero.
+    pub fn scaled_into_unit_cube(&self) -> Result<Mesh, MeshError> {
         let (lo, hi) = self.aabb();
         let centre = Point3::from((lo.coords + hi.coords) * 0.5);
         let side = (hi - lo).max();
-        let scale = if side > 0.0 && side.is_finite() {
-            2.0 / side
-        } else {
-            1.0
-        };
-        let vertices = self
+        let scale = if side > 0.0 { 2.0 / side } else { 1.0 };
+        let vertices: Vec<_> = self
             .vertices
             .iter()
             .map(|p| Point3::from(((p - centre) * scale).map(|c| c.clamp(-1.0, 1.0))))
             .collect();
-        Mesh {
+        for (i, p) in vertices.iter().enumerate() {
+            for c in p.iter() {
+                check_coordinate(*c, &format!("{c:e}")).map_err(|r| {
+                    MeshError::new(&self.name, None, format!("scaled into [-1,1]^3, vertex {i}: {r}"))
+                })?;
+            }
+        }
+        Ok(Mesh {
             name: self.name.clone(),
             vertices,
             triangles: self.triangles.clone(),
-        }
+        })
     }
 }
 
@@ -205,6 +221,9 @@ impl std::error::Error for MeshError {}
 /// Loads a mesh file, choosing the parser by extension (`.obj`, `.stl`, `.ply`, any case).
 pub fn load(path: &Path) -> Result<Mesh, MeshError> {
     let file = path.display().to_string();
+    // Read first: a missing file is reported as missing, whatever its name.
+    let bytes = std::fs::read(path)
+        .map_err(|e| MeshError::new(&file, None, format!("cannot read file: {e}")))?;
     let ext = path
         .extension()
         .map(|e| e.to_string_lossy().to_ascii_lowercase());
@@ -227,8 +246,6 @@ pub fn load(path: &Path) -> Result<Mesh, MeshError> {
             ))
         }
     };
-    let bytes = std::fs::read(path)
-        .map_err(|e| MeshError::new(&file, None, format!("cannot read file: {e}")))?;
     let (vertices, triangles) = parse(&file, &bytes)?;
     let name = path
         .file_stem()
@@ -237,8 +254,23 @@ pub fn load(path: &Path) -> Result<Mesh, MeshError> {
     finish(&file, name, vertices, triangles)
 }
 
+/// The per-coordinate check of every parser: finite, and in the range the exact oracle is
+/// exact for (`token` is the coordinate as the file writes it).
+pub(crate) fn check_coordinate(c: f64, token: &str) -> Result<(), String> {
+    if !c.is_finite() {
+        Err(format!("NaN or infinite coordinate '{token}'"))
+    } else if !crate::oracle::in_range(c) {
+        Err(format!(
+            "coordinate '{token}' is out of range ({}); rescale the model",
+            crate::oracle::RANGE_TEXT
+        ))
+    } else {
+        Ok(())
+    }
+}
+
 /// Common final checks of every loader: at least one triangle, all indices in range, all
-/// coordinates finite (the format parsers already report these with line numbers; this is the
+/// coordinates finite and in the oracle's range (the format parsers already report these with line numbers; this is the
 /// safety net so that no loaded [`Mesh`] ever violates them).
 fn finish(
     file: &str,
@@ -249,15 +281,11 @@ fn finish(
     if triangles.is_empty() {
         return Err(MeshError::new(file, None, "empty mesh: no triangles"));
     }
-    if let Some(i) = vertices
-        .iter()
-        .position(|p| !p.iter().all(|c| c.is_finite()))
-    {
-        return Err(MeshError::new(
-            file,
-            None,
-            format!("vertex {i} has a non-finite coordinate"),
-        ));
+    for (i, p) in vertices.iter().enumerate() {
+        for c in p.iter() {
+            check_coordinate(*c, &format!("{c:e}"))
+                .map_err(|r| MeshError::new(file, None, format!("vertex {i}: {r}")))?;
+        }
     }
     if let Some(i) = triangles
         .iter()
@@ -331,6 +359,12 @@ pub fn builtin(name: &str) -> Result<Mesh, MeshError> {
     };
     mesh.name = name.to_string();
     Ok(mesh)
+}
+
+/// True if `spec` is of a built-in family (`bunny`, `sphere:…`, …), valid or not.
+pub fn is_builtin_name(spec: &str) -> bool {
+    let family = spec.split(':').next();
+    BUILTIN_NAMES.iter().any(|b| b.split(':').next() == family)
 }
 
 /// A mesh spec from the CLI: an existing file path, or a built-in name.

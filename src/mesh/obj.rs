@@ -5,9 +5,10 @@
 //! mesh needs: `v x y z [w]` (colours dropped), `f` with position references only, `o`/`g`.
 //! Everything else (`vt`, `vn`, `l`, `p`, `mtllib`, `usemtl`, `s`, comments, unknown keywords)
 //! becomes an empty line.  tobj then does the parsing, the relative-index resolution and the
-//! fan triangulation (`triangulate: true`).
+//! fan triangulation (`triangulate: true`).  Coordinates are parsed as `f64` (tobj's `use_f64`
+//! feature), so the decimal the file states is rounded once, to the nearest `f64`.
 
-use super::{MeshError, Parsed};
+use super::{check_coordinate, MeshError, Parsed};
 use nalgebra::Point3;
 
 pub(super) fn parse(file: &str, bytes: &[u8]) -> Result<Parsed, MeshError> {
@@ -20,6 +21,8 @@ pub(super) fn parse(file: &str, bytes: &[u8]) -> Result<Parsed, MeshError> {
             + 1;
         err(line, "invalid UTF-8".to_string())
     })?;
+    // A byte-order mark would glue itself to the first keyword and hide that line from tobj.
+    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
 
     let mut clean = String::with_capacity(text.len());
     let mut n_vertices: usize = 0;
@@ -35,33 +38,25 @@ pub(super) fn parse(file: &str, bytes: &[u8]) -> Result<Parsed, MeshError> {
                         format!("vertex needs 3 coordinates, found {}", t.len()),
                     ));
                 }
-                let mut xyz = [0f32; 3];
+                let mut xyz = [0f64; 3];
                 for k in 0..3 {
-                    xyz[k] = t[k].parse::<f32>().map_err(|_| {
+                    xyz[k] = t[k].parse::<f64>().map_err(|_| {
                         err(lineno, format!("invalid vertex coordinate '{}'", t[k]))
                     })?;
-                    if !xyz[k].is_finite() {
-                        return Err(err(
-                            lineno,
-                            format!("NaN or infinite vertex coordinate '{}'", t[k]),
-                        ));
-                    }
+                    check_coordinate(xyz[k], t[k]).map_err(|r| err(lineno, r))?;
                 }
                 clean.push_str("v ");
                 clean.push_str(&t[..3].join(" "));
                 if t.len() == 4 {
                     // `v x y z w`: tobj divides by w.
                     let w = t[3]
-                        .parse::<f32>()
+                        .parse::<f64>()
                         .map_err(|_| err(lineno, format!("invalid vertex weight '{}'", t[3])))?;
-                    if w == 0.0 || xyz.iter().any(|c| !(c / w).is_finite()) {
-                        return Err(err(
-                            lineno,
-                            format!(
-                                "vertex weight w = {} gives a NaN or infinite coordinate",
-                                t[3]
-                            ),
-                        ));
+                    if w == 0.0 || !w.is_finite() {
+                        return Err(err(lineno, format!("vertex weight w = {} is 0 or not finite", t[3])));
+                    }
+                    for c in xyz {
+                        check_coordinate(c / w, &format!("{c} / {w}")).map_err(|r| err(lineno, r))?;
                     }
                     clean.push(' ');
                     clean.push_str(t[3]);
@@ -134,7 +129,7 @@ pub(super) fn parse(file: &str, bytes: &[u8]) -> Result<Parsed, MeshError> {
         vertices.extend(
             m.positions
                 .chunks_exact(3)
-                .map(|p| Point3::new(p[0] as f64, p[1] as f64, p[2] as f64)),
+                .map(|p| Point3::new(p[0], p[1], p[2])),
         );
         for t in m.indices.chunks_exact(3) {
             let mut tri = [0u32; 3];

@@ -5,9 +5,11 @@
 //! (`read_ascii_element` per line, `read_*_endian_element` per binary record) so that every error
 //! can name its line (ASCII: header lines + element position) or its element (binary), and so
 //! that a binary payload shorter than the header demands is reported as truncated before
-//! reading.
+//! reading.  Data after the declared elements is an error (the header's counts would silently
+//! drop it).  ASCII `float` properties are read as `f64`: the file writes decimals, and the
+//! nearest `f64` is what it states; binary `float` values are `f32` by definition.
 
-use super::{MeshError, Parsed};
+use super::{check_coordinate, MeshError, Parsed};
 use nalgebra::Point3;
 use ply_rs::parser::Parser;
 use ply_rs::ply::{DefaultElement, ElementDef, Encoding, Property, PropertyType, ScalarType};
@@ -46,6 +48,17 @@ fn int_list(p: &Property) -> Option<Vec<i64>> {
         Property::ListUInt(v) => v.iter().map(|&x| x as i64).collect(),
         _ => return None,
     })
+}
+
+/// `def` with its `float` scalars read as `double` (for ASCII data, see the module doc).
+fn decimals_as_f64(def: &ElementDef) -> ElementDef {
+    let mut d = def.clone();
+    for (_, p) in d.properties.iter_mut() {
+        if p.data_type == PropertyType::Scalar(ScalarType::Float) {
+            p.data_type = PropertyType::Scalar(ScalarType::Double);
+        }
+    }
+    d
 }
 
 /// One-line version of a ply-rs message, with its "Line N: " prefix split off.
@@ -88,12 +101,8 @@ impl Builder<'_> {
                         .ok_or_else(|| err(format!("{what}: vertex has no property '{axis}'")))?;
                     xyz[k] = scalar_f64(p)
                         .ok_or_else(|| err(format!("{what}: property '{axis}' is a list")))?;
-                    if !xyz[k].is_finite() {
-                        return Err(err(format!(
-                            "{what}: NaN or infinite coordinate {axis} = {}",
-                            xyz[k]
-                        )));
-                    }
+                    check_coordinate(xyz[k], &format!("{axis} = {:e}", xyz[k]))
+                        .map_err(|r| err(format!("{what}: {r}")))?;
                 }
                 self.vertices.push(Point3::from(xyz));
             }
@@ -135,6 +144,12 @@ impl Builder<'_> {
         }
         Ok(())
     }
+}
+
+/// "header declares 3 'vertex' and 1 'face' elements".
+fn declared(elements: &[(&String, &ElementDef)]) -> String {
+    let counts: Vec<String> = elements.iter().map(|(n, d)| format!("{} '{n}'", d.count)).collect();
+    format!("header declares {} elements", counts.join(" and "))
 }
 
 pub(super) fn parse(file: &str, bytes: &[u8]) -> Result<Parsed, MeshError> {
@@ -197,7 +212,8 @@ pub(super) fn parse(file: &str, bytes: &[u8]) -> Result<Parsed, MeshError> {
         Encoding::Ascii => {
             let mut lines = payload.split(|&b| b == b'\n');
             let mut lineno = header_lines;
-            for (name, def) in elements {
+            for &(name, def) in &elements {
+                let def = &decimals_as_f64(def);
                 for j in 0..def.count {
                     lineno += 1;
                     let raw = match lines.next() {
@@ -228,6 +244,12 @@ pub(super) fn parse(file: &str, bytes: &[u8]) -> Result<Parsed, MeshError> {
                     b.take(name, &e, Some(lineno), &format!("{name} {j}"))?;
                 }
             }
+            if let Some(k) = lines.position(|l| !l.trim_ascii().is_empty()) {
+                return Err(err(
+                    Some(lineno + k + 1),
+                    format!("data after the {}; correct the counts in the header", declared(&elements)),
+                ));
+            }
         }
         Encoding::BinaryLittleEndian | Encoding::BinaryBigEndian => {
             let mut need: u128 = 0;
@@ -243,23 +265,19 @@ pub(super) fn parse(file: &str, bytes: &[u8]) -> Result<Parsed, MeshError> {
                 need = need.saturating_add(size.saturating_mul(def.count as u128));
             }
             if need > payload.len() as u128 {
-                let counts: Vec<String> = elements
-                    .iter()
-                    .map(|(n, d)| format!("{} '{n}'", d.count))
-                    .collect();
                 return Err(err(
                     None,
                     format!(
-                        "truncated binary PLY: header declares {} elements (at least {need} \
-                         bytes) but only {} bytes follow the header",
-                        counts.join(" and "),
+                        "truncated binary PLY: {} (at least {need} bytes) but only {} bytes \
+                         follow the header",
+                        declared(&elements),
                         payload.len()
                     ),
                 ));
             }
             let little = matches!(header.encoding, Encoding::BinaryLittleEndian);
             let mut cursor = Cursor::new(payload);
-            for (name, def) in elements {
+            for &(name, def) in &elements {
                 if def.properties.is_empty() {
                     continue; // occupies no bytes
                 }
@@ -286,6 +304,16 @@ pub(super) fn parse(file: &str, bytes: &[u8]) -> Result<Parsed, MeshError> {
                     })?;
                     b.take(name, &e, None, &what)?;
                 }
+            }
+            let left = payload.len() as u64 - cursor.position();
+            if left > 0 {
+                return Err(err(
+                    None,
+                    format!(
+                        "{left} bytes after the {}; correct the counts in the header",
+                        declared(&elements)
+                    ),
+                ));
             }
         }
     }

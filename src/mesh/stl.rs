@@ -1,15 +1,27 @@
-//! STL (ASCII and binary) via stl_io.
+//! STL: binary via stl_io; ASCII parsed here, because stl_io reads ASCII numbers as `f32`
+//! while the decimals an ASCII file writes are read as the nearest `f64`.
 //!
 //! Binary vs ASCII: a file whose size is exactly `84 + 50·n` (n = the little-endian triangle
-//! count at byte 80) is binary, even if it starts with `solid`; otherwise a file starting with
-//! `solid` is ASCII, anything else binary.  Bytes after the declared binary triangles are
-//! ignored.  For ASCII files the failing line is located after the fact: stl_io reports how many
-//! facets it read, and the 7-line facet it stopped in is checked line by line.
+//! count at byte 80) is binary, even if it starts with `solid`.  Otherwise it is ASCII if it
+//! starts (after an optional UTF-8 byte-order mark) with `solid` in any case and its first
+//! bytes are text; anything else is binary.  Bytes after the declared binary triangles are
+//! ignored.  Binary coordinates are `f32` by definition and are widened exactly.
 
-use super::{MeshError, Parsed};
+use super::{check_coordinate, MeshError, Parsed};
 use nalgebra::Point3;
 use std::borrow::Cow;
+use std::collections::HashMap;
 use std::io::Cursor;
+
+/// Bytes that never occur in an ASCII STL but in almost every binary one (zero bytes of small
+/// counts and floats), looked for in the first 512 bytes.
+fn looks_textual(bytes: &[u8]) -> bool {
+    let head = &bytes[..bytes.len().min(512)];
+    let body = head.strip_prefix("\u{feff}".as_bytes()).unwrap_or(head);
+    body.len() >= 5
+        && body[..5].eq_ignore_ascii_case(b"solid")
+        && head.iter().all(|&b| b >= 0x20 || b"\t\n\r\x0c".contains(&b))
+}
 
 pub(super) fn parse(file: &str, bytes: &[u8]) -> Result<Parsed, MeshError> {
     let len = bytes.len() as u64;
@@ -17,14 +29,20 @@ pub(super) fn parse(file: &str, bytes: &[u8]) -> Result<Parsed, MeshError> {
         .get(80..84)
         .map(|b| u32::from_le_bytes([b[0], b[1], b[2], b[3]]) as u64);
     let exact_binary = declared.is_some_and(|n| 84 + 50 * n == len);
-    if !exact_binary && bytes.starts_with(b"solid") {
+    if !exact_binary && looks_textual(bytes) {
         return ascii(file, bytes);
     }
+    // Named in the binary errors, because such a file may have been meant as ASCII.
+    let note = if bytes.get(..5).is_some_and(|b| b.eq_ignore_ascii_case(b"solid")) {
+        " (read as binary: it starts with 'solid' but contains non-text bytes)"
+    } else {
+        ""
+    };
     let Some(n) = declared else {
         return Err(MeshError::new(
             file,
             None,
-            format!("truncated binary STL: {len} bytes, shorter than the 84-byte header"),
+            format!("truncated binary STL: {len} bytes, shorter than the 84-byte header{note}"),
         ));
     };
     let need = 84 + 50 * n;
@@ -34,7 +52,7 @@ pub(super) fn parse(file: &str, bytes: &[u8]) -> Result<Parsed, MeshError> {
             None,
             format!(
                 "truncated binary STL: header declares {n} triangles ({need} bytes) \
-                 but the file has only {len} bytes"
+                 but the file has only {len} bytes{note}"
             ),
         ));
     }
@@ -82,85 +100,90 @@ fn convert(file: &str, mesh: stl_io::IndexedMesh) -> Result<Parsed, MeshError> {
     Ok((vertices, triangles))
 }
 
+/// ASCII STL: `solid`, then facets of 7 non-blank lines (`facet normal nx ny nz`,
+/// `outer loop`, three `vertex x y z`, `endloop`, `endfacet`), then `endsolid`; keywords in
+/// any case; further `solid … endsolid` blocks may follow.  Vertices are de-duplicated by
+/// exact value in order of first use, as stl_io does for binary files.
 fn ascii(file: &str, bytes: &[u8]) -> Result<Parsed, MeshError> {
-    // stl_io wants the first line to start with "solid " (with a space); accept a bare "solid".
-    let data: Cow<[u8]> = if bytes.starts_with(b"solid ") {
-        Cow::Borrowed(bytes)
-    } else {
-        let mut v = b"solid ".to_vec();
-        v.extend_from_slice(&bytes[5..]);
-        Cow::Owned(v)
-    };
-    match stl_io::read_stl(&mut Cursor::new(&data[..])) {
-        Ok(mesh) => convert(file, mesh),
-        Err(e) => {
-            let mut cursor = Cursor::new(&data[..]);
-            let facets_ok = match stl_io::create_stl_reader(&mut cursor) {
-                Ok(reader) => reader.take_while(|t| t.is_ok()).count(),
-                Err(_) => 0,
-            };
-            let (line, why) = locate(bytes, facets_ok);
-            let reason = match why {
-                Some(why) => format!("ASCII STL, facet {}: {why}", facets_ok + 1),
-                None => format!("ASCII STL, facet {}: {e}", facets_ok + 1),
-            };
-            Err(MeshError::new(file, Some(line), reason))
-        }
-    }
-}
-
-/// Finds the line of the first error in facet `k` (0-based) of an ASCII STL file, mirroring
-/// stl_io's reader: the first line is the `solid` line, blank lines are skipped, and a facet is
-/// 7 non-blank lines.  Returns the 1-based line and, when clearer than stl_io's message, a reason.
-fn locate(bytes: &[u8], k: usize) -> (usize, Option<String>) {
-    let lines = bytes.split(|&b| b == b'\n').enumerate().skip(1);
+    let mut vertices = Vec::new();
+    let mut triangles = Vec::new();
+    let mut index: HashMap<[u64; 3], u32> = HashMap::new();
+    let mut facet = 0usize;
+    let mut pos = None::<usize>; // line within the current facet; None = between facets
+    let mut in_solid = false;
+    let mut corners = [0u32; 3];
+    let bytes = bytes.strip_prefix("\u{feff}".as_bytes()).unwrap_or(bytes);
     let mut last = 1;
-    let mut seen = 0usize;
-    let start = 7 * k;
-    let is_float = |s: &str| s.parse::<f32>().is_ok_and(|f| f.is_finite());
-    let non_finite = |s: &str| s.parse::<f32>().is_ok_and(|f| !f.is_finite());
-    for (i, raw) in lines {
-        last = i + 1;
-        let Ok(text) = std::str::from_utf8(raw) else {
-            return (i + 1, Some("invalid UTF-8".to_string()));
-        };
+    for (i, raw) in bytes.split(|&b| b == b'\n').enumerate() {
+        let lineno = i + 1;
+        last = lineno;
+        let err = |why: String| MeshError::new(file, Some(lineno), format!("ASCII STL, facet {}: {why}", facet + 1));
+        let text = std::str::from_utf8(raw).map_err(|_| MeshError::new(file, Some(lineno), "invalid UTF-8"))?;
         let t: Vec<&str> = text.split_whitespace().collect();
-        if t.is_empty() {
+        let Some(key) = t.first().map(|k| k.to_ascii_lowercase()) else {
             continue;
-        }
-        seen += 1;
-        if seen <= start {
-            continue;
-        }
-        let pos = seen - start - 1; // position within the facet, 0..7
-        if t[0] == "endsolid" && pos == 0 {
-            return (i + 1, None);
-        }
-        let ok = match pos {
-            0 => {
-                t.len() == 5
-                    && t[0] == "facet"
-                    && t[1] == "normal"
-                    && t[2..].iter().all(|s| is_float(s))
+        };
+        let expected = match pos {
+            None if !in_solid => "solid",
+            None if key == "endsolid" => {
+                in_solid = false;
+                continue;
             }
-            1 => t == ["outer", "loop"],
-            2..=4 => t.len() == 4 && t[0] == "vertex" && t[1..].iter().all(|s| is_float(s)),
-            5 => t == ["endloop"],
-            _ => t == ["endfacet"],
+            None => "facet normal nx ny nz",
+            Some(0) => "outer loop",
+            Some(1..=3) => "vertex x y z",
+            Some(4) => "endloop",
+            Some(_) => "endfacet",
+        };
+        let words = |n: usize, second: Option<&str>| {
+            t.len() == n && second.is_none_or(|w| t[1].eq_ignore_ascii_case(w))
+        };
+        let ok = match expected {
+            "solid" => key == "solid",
+            "facet normal nx ny nz" => {
+                key == "facet" && words(5, Some("normal")) && t[2..].iter().all(|s| s.parse::<f64>().is_ok())
+            }
+            "outer loop" => key == "outer" && words(2, Some("loop")),
+            "vertex x y z" => key == "vertex" && words(4, None),
+            "endloop" => key == "endloop" && t.len() == 1,
+            _ => key == "endfacet" && t.len() == 1,
         };
         if !ok {
-            let why = t
-                .iter()
-                .find(|s| non_finite(s))
-                .map(|s| format!("NaN or infinite coordinate '{s}'"));
-            return (i + 1, why);
+            return Err(err(format!("expected '{expected}', found '{}'", t.join(" "))));
         }
-        if pos == 6 {
-            return (i + 1, None);
+        match pos {
+            None if expected == "solid" => in_solid = true,
+            None => pos = Some(0),
+            Some(p @ 1..=3) => {
+                let mut xyz = [0.0; 3];
+                for k in 0..3 {
+                    xyz[k] = t[k + 1]
+                        .parse::<f64>()
+                        .map_err(|_| err(format!("invalid vertex coordinate '{}'", t[k + 1])))?;
+                    check_coordinate(xyz[k], t[k + 1]).map_err(err)?;
+                }
+                let next = u32::try_from(vertices.len())
+                    .map_err(|_| MeshError::new(file, None, "more than 2^32 vertices"))?;
+                corners[p - 1] = *index.entry(xyz.map(f64::to_bits)).or_insert_with(|| {
+                    vertices.push(Point3::from(xyz));
+                    next
+                });
+                pos = Some(p + 1);
+            }
+            Some(5) => {
+                triangles.push(corners);
+                facet += 1;
+                pos = None;
+            }
+            Some(p) => pos = Some(p + 1),
         }
     }
-    (
-        last,
-        Some("unexpected end of file (truncated?)".to_string()),
-    )
+    if pos.is_some() || in_solid {
+        return Err(MeshError::new(
+            file,
+            Some(last),
+            format!("ASCII STL, facet {}: unexpected end of file (truncated? no 'endsolid')", facet + 1),
+        ));
+    }
+    Ok((vertices, triangles))
 }

@@ -51,8 +51,8 @@ fn assert_finite(m: &Mesh) {
     }
 }
 
-fn p(x: f32, y: f32, z: f32) -> Point3<f64> {
-    Point3::new(x as f64, y as f64, z as f64)
+fn p(x: f64, y: f64, z: f64) -> Point3<f64> {
+    Point3::new(x, y, z)
 }
 
 // ---------------------------------------------------------------- vendored meshes
@@ -76,7 +76,8 @@ fn vendored_meshes_have_the_source_triangle_counts() {
     }
 }
 
-/// First/last triangles as given in the sources (positions looked up by node/python).
+/// First/last triangles as given in the sources (positions looked up by node/python), read
+/// as the nearest f64 of the file's decimals.
 #[test]
 fn vendored_meshes_keep_face_order_and_values() {
     let bunny = builtin("bunny").unwrap();
@@ -127,7 +128,7 @@ fn vendored_meshes_keep_face_order_and_values() {
 #[test]
 fn scaled_into_unit_cube_fits_and_is_centred() {
     for name in ["bunny", "teapot", "dragon-11k", "soup:50:3"] {
-        let m = builtin(name).unwrap().scaled_into_unit_cube();
+        let m = builtin(name).unwrap().scaled_into_unit_cube().unwrap();
         let (lo, hi) = m.aabb();
         let side = hi - lo;
         assert!((side.max() - 2.0).abs() < 1e-12, "{name}: {side:?}");
@@ -143,7 +144,18 @@ fn scaled_into_unit_cube_fits_and_is_centred() {
         vertices: vec![Point3::new(3.0, 3.0, 3.0)],
         triangles: vec![[0, 0, 0]],
     };
-    assert_eq!(point.scaled_into_unit_cube().vertices[0], Point3::origin());
+    assert_eq!(point.scaled_into_unit_cube().unwrap().vertices[0], Point3::origin());
+    // Issue 16: extents at both ends of the range stay finite and in range, and a detail
+    // scaled out of the range is refused (it was judged, or clamped, before).
+    let tri = |v: [[f64; 3]; 3]| Mesh { name: "t".into(), vertices: v.map(Point3::from).to_vec(), triangles: vec![[0, 1, 2]] };
+    for s in [1e60, 1e-60] {
+        let m = tri([[-s, 0.0, 0.0], [s, 0.0, 0.0], [0.0, s, 0.0]]).scaled_into_unit_cube().unwrap();
+        for (v, w) in m.vertices.iter().zip([p(-1.0, -0.5, 0.0), p(1.0, -0.5, 0.0), p(0.0, 0.5, 0.0)]) {
+            assert!((v - w).amax() < 1e-15, "{s}: {v} vs {w}");
+        }
+    }
+    let e = tri([[0.0, 0.0, 0.0], [1e60, 0.0, 0.0], [0.0, 1.0, 1e-60]]).scaled_into_unit_cube().unwrap_err();
+    assert!(e.reason.starts_with("scaled into [-1,1]^3, vertex 0: coordinate '") && e.reason.contains("out of range"), "{e}");
 }
 
 #[test]
@@ -311,6 +323,7 @@ fn builtin_names() {
         assert!(e.reason.contains(needle), "{e}");
     }
     assert_eq!(e.file, "rabbit");
+    assert!(builtin("torus:16777216").unwrap_err().reason.contains("not an integer in 1..=2097152"));
     for bad in [
         "sphere:0",
         "sphere:x",
@@ -319,6 +332,7 @@ fn builtin_names() {
         "soup:10:x",
         "soup:1:2:3",
         "sphere:99999999999",
+        "sphere:2097153",
     ] {
         let e = builtin(bad).unwrap_err();
         assert!(e.to_string().starts_with(&format!("{bad}: ")), "{e}");
@@ -511,6 +525,106 @@ fn all_formats_give_the_same_triangles_in_face_order() {
     assert!(obj.name.starts_with("cchip-mesh-test-"));
 }
 
+/// Issue 16: decimals are read as the nearest f64 (they were read as f32).  A gap of 2^-40
+/// above z = 1 stays a gap, and 1e6 + 0.1 keeps its 0.1 (as f32 it moved by 0.025).
+#[test]
+fn text_coordinates_are_read_as_f64() {
+    let gap = 1.0 + 2f64.powi(-40); // prints as 1.0000000000009095
+    let (lo, hi) = ([0.0, 0.0, 1.0], [0.0, 0.0, gap]);
+    let far = 1e6 + 0.1;
+    let tri = |o: [f64; 3]| [[o[0], o[1], o[2]], [far, o[1], o[2]], [o[0], 1.0, o[2]]];
+    let (a, b) = (tri(lo), tri(hi));
+    let obj = {
+        let v: Vec<String> = a.iter().chain(&b).map(|q| format!("v {} {} {}\n", q[0], q[1], q[2])).collect();
+        v.concat() + "f 1 2 3\nf 4 5 6\n"
+    };
+    let stl = {
+        let facet = |t: &[[f64; 3]; 3]| {
+            let v: Vec<String> = t.iter().map(|q| format!("vertex {} {} {}\n", q[0], q[1], q[2])).collect();
+            format!("facet normal 0 0 1\nouter loop\n{}endloop\nendfacet\n", v.concat())
+        };
+        format!("solid gap\n{}{}endsolid gap\n", facet(&a), facet(&b))
+    };
+    let ply = {
+        let v: Vec<String> = a.iter().chain(&b).map(|q| format!("{} {} {}\n", q[0], q[1], q[2])).collect();
+        format!(
+            "ply\nformat ascii 1.0\nelement vertex 6\nproperty float x\nproperty float y\n\
+             property float z\nelement face 2\nproperty list uchar int vertex_indices\nend_header\n\
+             {}3 0 1 2\n3 3 4 5\n",
+            v.concat()
+        )
+    };
+    for (text, ext) in [(obj, "obj"), (stl, "stl"), (ply, "ply")] {
+        let m = load_bytes(text.as_bytes(), ext).unwrap_or_else(|e| panic!("{ext}: {e}"));
+        let [ta, tb] = [m.triangle(0), m.triangle(1)];
+        assert_eq!(ta, a.map(Point3::from), "{ext}");
+        assert_eq!(tb, b.map(Point3::from), "{ext}");
+        // The two parallel triangles are 2^-40 apart: not a contact.
+        assert!(!crate::oracle::tri_tri(&ta, &tb), "{ext}");
+    }
+}
+
+/// Issue 16: a UTF-8 byte-order mark hid the first OBJ vertex and shifted every index.
+#[test]
+fn byte_order_mark_is_skipped() {
+    let m = load_bytes("\u{feff}v 5 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n".as_bytes(), "obj").unwrap();
+    assert_eq!(m.triangle(0), [p(5., 0., 0.), p(1., 0., 0.), p(0., 1., 0.)]);
+    let want = tetra_expected();
+    for first in ["\u{feff}solid t", "SOLID T", "\u{feff}Solid"] {
+        let text = ascii_stl(first).replace("facet normal", "FACET NORMAL");
+        let m = load_bytes(text.as_bytes(), "stl").unwrap_or_else(|e| panic!("{first}: {e}"));
+        assert_eq!(m.triangles_f64(), want, "{first}");
+    }
+}
+
+#[test]
+fn stl_kind_is_reported_as_read() {
+    // A binary file whose header says "solid" but whose size does not match its count: a
+    // truncated binary file, not a broken ASCII one.
+    let mut b = binary_stl(b"solid but actually binary");
+    b.truncate(b.len() - 10);
+    let e = load_bytes(&b, "stl").unwrap_err();
+    assert!(e.reason.contains("truncated binary STL") && e.reason.contains("non-text bytes"), "{e}");
+    // An ASCII file cut inside a facet is a truncated ASCII file.
+    let e = load_bytes(b"SOLID x\nfacet normal 0 0 1\nouter loop\n", "stl").unwrap_err();
+    assert!(e.reason.contains("ASCII STL, facet 1: unexpected end of file"), "{e}");
+}
+
+/// Issue 16: PLY elements beyond the header's counts were silently dropped.
+#[test]
+fn ply_data_beyond_the_header_counts_is_an_error() {
+    let mut b = ply_bytes("ascii");
+    b.extend(b"3 0 1 2\n");
+    let e = load_bytes(&b, "ply").unwrap_err();
+    let lines = ply_bytes("ascii").iter().filter(|&&c| c == b'\n').count();
+    assert_eq!(e.line, Some(lines + 1), "{e}");
+    assert!(e.reason.contains("data after the header declares 5 'vertex' and 4 'face' and 2 'extra' elements"), "{e}");
+    // Trailing blank lines are fine.
+    let mut b = ply_bytes("ascii");
+    b.extend(b"\n\n");
+    load_bytes(&b, "ply").unwrap();
+    let mut b = ply_bytes("binary_little_endian");
+    b.extend([0, 0]);
+    let e = load_bytes(&b, "ply").unwrap_err();
+    assert!(e.reason.starts_with("2 bytes after the header declares"), "{e}");
+}
+
+/// Issue 16: the exact oracle is exact only for magnitudes in [1e-60, 1e60] (module doc of
+/// `oracle`); PLY doubles near 1e120 gave false intersections.
+#[test]
+fn coordinates_outside_the_oracle_range_are_refused() {
+    expect_bad("out-of-range.ply", Some(11), "'z = 1e120' is out of range");
+    for tiny in ["1e-61", "-1e-300", "5e-324"] {
+        let e = load_bytes(format!("v 0 0 0\nv 1 0 {tiny}\nv 0 1 0\nf 1 2 3\n").as_bytes(), "obj").unwrap_err();
+        assert_eq!(e.line, Some(2), "{e}");
+        assert!(e.reason.contains("out of range"), "{e}");
+    }
+    // Both ends of the range and 0 load.
+    load_bytes(b"v 0 0 -0\nv 1e60 0 0\nv 0 1e-60 0\nf 1 2 3\n", "obj").unwrap();
+    let e = load_bytes(b"v 1 0 0 1e-70\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "obj").unwrap_err();
+    assert!(e.reason.contains("out of range"), "w divides: {e}");
+}
+
 #[test]
 fn degenerate_and_repeated_are_accepted() {
     let text = "v 0 0 0\nv 0 0 0\nv 1 1 1\nf 1 2 3\nf 1 1 1\nf 3 3 1\nf 1 2 3\n";
@@ -530,6 +644,10 @@ fn error_non_finite_coordinates() {
     expect_bad("inf.ply", Some(13), "NaN or infinite");
     expect_bad("nan-token.ply", Some(14), "NaN or infinite value 'nan'");
     expect_bad("nan-binary.ply", None, "vertex 2: NaN or infinite");
+    // 1e300 is finite: it is refused for its range, not called infinite.
+    let e = load_bytes(b"v 0 0 0\nv 1 0 0\nv 0 1e300 0\nf 1 2 3\n", "obj").unwrap_err();
+    assert_eq!(e.line, Some(3), "{e}");
+    assert!(e.reason.contains("'1e300' is out of range") && e.reason.contains("1e-60 to 1e60"), "{e}");
     let e = load_bytes(b"v 0 0 0\nv 1 0 0 0\nv 0 1 0\nf 1 2 3\n", "obj").unwrap_err();
     assert_eq!(e.line, Some(2), "{e}");
 }
@@ -591,6 +709,9 @@ fn error_empty_mesh() {
 fn error_unsupported_extension() {
     expect_bad("unsupported.3ds", None, "unsupported extension '.3ds'");
     expect_bad("no-extension", None, "no file extension");
+    // A missing file is missing, whatever its name.
+    expect_bad("does-not-exist", None, "cannot read file");
+    expect_bad("does-not-exist.3ds", None, "cannot read file");
 }
 
 #[test]

@@ -3,9 +3,18 @@
 //!
 //! Two triangles intersect iff they share at least one point (boundaries included). All
 //! decisions are exact signs of Shewchuk's adaptive predicates (`robust::orient3d`,
-//! `robust::orient2d`) or exact `f64` comparisons — no epsilons. Precondition: finite
-//! coordinates of moderate magnitude: like Shewchuk's predicates, exactness assumes no
-//! intermediate overflow or underflow (far from the ends of the f64 exponent range).
+//! `robust::orient2d`) or exact `f64` comparisons — no epsilons. Precondition: every
+//! coordinate is 0 or has magnitude in [[`MIN_COORD`], [`MAX_COORD`]] ([`check_range`]);
+//! like Shewchuk's predicates, exactness needs no intermediate overflow or underflow.
+//!
+//! # Supported range
+//! Coordinates of magnitude in [1e-60, 1e60] (or 0) are multiples of 2^-252 and below 2^200.
+//! The predicates' expansion terms are products of at most three coordinate differences, so
+//! they are multiples of 2^-756 (far above the 2^-1022 where underflow starts, error bounds
+//! included) and below 2^603 (times Dekker's 2^27 splitter, far below 2^1024). Outside that
+//! range the expansions can overflow or underflow and a sign can be wrong, so the geometry is
+//! refused instead: loaders reject such coordinates, and `--unit-cube` results and posed
+//! objects are checked with [`check_range`] before a query.
 //!
 //! # Case analysis
 //! 1. **Classify** each triangle by the exact cross product `(b-a)×(c-a)`, whose components
@@ -50,6 +59,30 @@ mod tests;
 
 /// A triangle as a closed set (degenerate triangles are the segment or point they are).
 pub type Tri = [nalgebra::Point3<f64>; 3];
+
+/// Largest coordinate magnitude the oracle is exact for (see "Supported range").
+pub const MAX_COORD: f64 = 1e60;
+/// Smallest non-zero coordinate magnitude the oracle is exact for.
+pub const MIN_COORD: f64 = 1e-60;
+
+/// True iff `c` is 0 or finite with magnitude in [`MIN_COORD`, `MAX_COORD`].
+pub fn in_range(c: f64) -> bool {
+    c == 0.0 || (MIN_COORD..=MAX_COORD).contains(&c.abs())
+}
+
+/// The supported range as a phrase for error messages.
+pub const RANGE_TEXT: &str = "the exact oracle supports coordinates that are 0 or of magnitude 1e-60 to 1e60";
+
+/// Ok iff every coordinate of `tris` is [`in_range`]; else names `what`, the triangle and
+/// the coordinate.
+pub fn check_range(tris: &[Tri], what: &str) -> Result<(), String> {
+    for (i, t) in tris.iter().enumerate() {
+        if let Some(c) = t.iter().flat_map(|p| p.iter()).find(|c| !in_range(**c)) {
+            return Err(format!("{what}, triangle {i}: coordinate {c:e} is out of range ({RANGE_TEXT})"));
+        }
+    }
+    Ok(())
+}
 
 /// Exact: true iff the closed triangles `a` and `b` share at least one point.
 pub fn tri_tri(a: &Tri, b: &Tri) -> bool {

@@ -63,6 +63,9 @@ pub fn study(
         .flat_map(|&format| roundings.iter().map(move |&dop_rounding| ChipConfig { format, dop_rounding, ..Default::default() }))
         .map(|cfg| Chip::new(tris, tris, cfg))
         .collect::<Result<_, _>>()?;
+    if let Some(chip) = chips.first() {
+        poses.iter().try_for_each(|sp| chip.check_pose(&sp.pose))?;
+    }
     let mut rows: Vec<Row> = chips
         .iter()
         .map(|c| Row {

@@ -4,7 +4,8 @@
 //!
 //! ```toml
 //! [objects]
-//! a = "bunny"                 # mesh file or built-in name (see `cchip query --help`)
+//! a = "bunny"                 # built-in name (see `cchip query --help`) or mesh file,
+//!                             # relative to the scene file's directory
 //! b = "bunny"
 //! unit_cube = true            # scale each copy into [-1,1]^3 first (WSCG'03 protocol)
 //!
@@ -186,10 +187,20 @@ pub struct Scene {
 }
 
 impl Scene {
+    /// Reads a scene file; its mesh paths are taken relative to its directory (a spec stays a
+    /// built-in name only if it is one and no such file is there).
     pub fn load(path: &Path) -> Result<Scene, String> {
         let text = std::fs::read_to_string(path)
             .map_err(|e| format!("{}: cannot read scene: {e}", path.display()))?;
-        Scene::parse(&text, &path.display().to_string())
+        let mut scene = Scene::parse(&text, &path.display().to_string())?;
+        let dir = path.parent().unwrap_or(Path::new(""));
+        for spec in [&mut scene.objects.a, &mut scene.objects.b] {
+            let local = dir.join(&*spec);
+            if local.exists() || !crate::mesh::is_builtin_name(spec) {
+                *spec = local.display().to_string();
+            }
+        }
+        Ok(scene)
     }
 
     /// `name` is used in error messages (the file name).
@@ -220,7 +231,7 @@ impl Scene {
             (Some(s), true) => sweep_poses(s).map_err(err)?,
         };
         if let Some(p) = poses.iter().find(|p| !p.pose.rot_deg.iter().chain(&p.pose.t).all(|x| x.is_finite())) {
-            return Err(err(format!("pose {:?} has a non-finite number", p.pose)));
+            return Err(err(format!("pose {} has a non-finite number", p.pose.text())));
         }
         let t = &f.timing;
         let rtl = crate::cycle::Params::RTL;
@@ -256,6 +267,9 @@ impl Scene {
     }
 }
 
+/// The most poses a sweep may have: each is a full query, and the poses are held in memory.
+pub const MAX_POSES: usize = 1_000_000;
+
 /// The WSCG'03 benchmark protocol: at each distance (centres apart along x), B takes
 /// `orientations` rotations with angles drawn uniformly from [0, 360) degrees (seeded).
 pub fn sweep_poses(s: &Sweep) -> Result<Vec<ScenePose>, String> {
@@ -264,6 +278,15 @@ pub fn sweep_poses(s: &Sweep) -> Result<Vec<ScenePose>, String> {
     }
     if let Some(d) = s.distances.iter().find(|d| !d.is_finite()) {
         return Err(format!("sweep distance {d} is not finite"));
+    }
+    let n = s.distances.len().saturating_mul(s.orientations);
+    if n > MAX_POSES {
+        return Err(format!(
+            "a sweep of {} distances x {} orientations is {n} poses; at most {MAX_POSES} poses \
+             (each is a full query): use fewer orientations",
+            s.distances.len(),
+            s.orientations
+        ));
     }
     let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(s.seed);
     let rots: Vec<[f64; 3]> = (0..s.orientations)
@@ -326,6 +349,28 @@ mod tests {
         assert!(e.contains("fifo or lifo"), "{e}");
         let e = crate::rtl::chip_io::rtl_order(&rtl.cfg, Traversal::Lifo, &Params { credit: 4, ..rtl.params }).unwrap_err();
         assert!(e.contains("[timing]"), "{e}");
+    }
+
+    /// Issue 16: mesh paths were resolved against the current directory.
+    #[test]
+    fn mesh_paths_are_relative_to_the_scene() {
+        let dir = std::env::temp_dir().join(format!("cchip-scene-test-{}", std::process::id()));
+        std::fs::create_dir_all(dir.join("sub")).unwrap();
+        std::fs::write(dir.join("sub/m.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n").unwrap();
+        let scene = dir.join("s.toml");
+        let text = "[objects]\na = \"sub/m.obj\"\nb = \"sphere:12\"\n[[pose]]\nrot_deg=[0,0,0]\nt=[0,0,0]\n";
+        std::fs::write(&scene, text).unwrap();
+        let s = Scene::load(&scene).unwrap();
+        let _ = std::fs::remove_dir_all(&dir);
+        assert_eq!(Path::new(&s.objects.a), dir.join("sub/m.obj"));
+        assert_eq!(s.objects.b, "sphere:12");
+    }
+
+    #[test]
+    fn sweep_size_is_checked_first() {
+        let e = sweep_poses(&Sweep { distances: vec![1.0, 2.0], orientations: usize::MAX, seed: 1 }).unwrap_err();
+        assert!(e.contains("at most 1000000 poses"), "{e}");
+        assert_eq!(sweep_poses(&Sweep { distances: vec![1.0], orientations: MAX_POSES, seed: 1 }).unwrap().len(), MAX_POSES);
     }
 
     #[test]
