@@ -16,11 +16,10 @@
 //! * rust-hdl's simulator on the short query (it runs the chip at about 25 clocks per
 //!   second: the long one would take an hour).
 
-use collision_chip::cycle::chip::{control_writes, layout, Chip};
+use collision_chip::cycle::chip::{control_writes, image_words, Chip};
 use collision_chip::cycle::drive::{run_query as drive_query, Drive};
-use collision_chip::cycle::memory::Dst;
 use collision_chip::cycle::{self, Params};
-use collision_chip::rtl::chip_io::{drive, exported_chip, queries, run_query, ChipQuery, PreparedQuery};
+use collision_chip::harness::chip_io::{drive, exported_chip, queries, run_query, ChipQuery, PreparedQuery};
 use std::path::Path;
 use std::process::Command;
 use std::time::Instant;
@@ -50,7 +49,7 @@ fn cycle_model(root: &Path, name: &str, reps: usize) -> (u64, f64, f64) {
     for _ in 0..reps {
         let t = Instant::now();
         let mut c = Chip::new(&p.chip.cfg, params, &p.chip.a, &p.chip.b, &setup).unwrap();
-        let words = layout(&p.chip.a, &p.chip.b)[Dst::TriB as usize] + p.chip.b.tris.len() as u32;
+        let words = image_words(&p.chip.a, &p.chip.b);
         let d = Drive { timing: q.timing, reader: q.reader, words, max_cycles: 10_000_000 };
         let writes = control_writes(&p.chip.a, &p.chip.b, q.lifo, q.mode);
         let tr = drive_query(&mut c, &writes, &d, false, |_, _| Ok(()), None).unwrap();
@@ -58,7 +57,7 @@ fn cycle_model(root: &Path, name: &str, reps: usize) -> (u64, f64, f64) {
         assert_eq!(tr.text(), want, "{name}: the cycle model's trace (clock by clock)");
         cycles = tr.cycles;
         let t = Instant::now();
-        let (tr, _) = cycle::run_query(&p.chip, &setup, q.lifo, q.mode, params, q.reader, 10_000_000).unwrap();
+        let (tr, _) = cycle::run_query(&p.chip, &setup, q.lifo, q.mode, params, q.reader, 10_000_000, None).unwrap();
         skipping = skipping.min(t.elapsed().as_secs_f64());
         assert_eq!(tr.text(), want, "{name}: the cycle model's trace (waits skipped)");
     }

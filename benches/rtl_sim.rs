@@ -7,7 +7,7 @@
 //!
 //! 1. rust-hdl: the unit's golden vectors (`units::all()`, `.vectors()`: the host-setup
 //!    preload, then every node pair of two small DOP trees) through `b32::DopUnit24` with
-//!    `rtl::sim::run_dop_vectors`; every output is checked against the expected fields
+//!    `harness::sim::run_dop_vectors`; every output is checked against the expected fields
 //!    (the bench panics on a mismatch), and the run is timed (a few hundred cycles: the
 //!    k = 24 model simulates some hundreds of cycles per second).
 //! 2. Verilator (skipped, with a note, if `verilator` is not on PATH): the unit's Verilog
@@ -22,8 +22,9 @@
 //! Verilator / rust-hdl.
 
 use collision_chip::format::Rounding;
-use collision_chip::rtl::sim::{parse_dop_vectors, run_dop_vectors, DopVectors};
-use collision_chip::rtl::{b32, units};
+use collision_chip::harness::sim::{parse_dop_vectors, run_dop_vectors, DopVectors};
+use collision_chip::harness::units;
+use collision_chip::rtl::b32;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::time::Instant;
@@ -56,7 +57,7 @@ fn main() {
 
 fn bench() {
     let all = units::all();
-    let unit = all.iter().find(|u| u.name == UNIT).unwrap_or_else(|| panic!("no unit {UNIT} in rtl::units::all()"));
+    let unit = all.iter().find(|u| u.name == UNIT).unwrap_or_else(|| panic!("no unit {UNIT} in harness::units::all()"));
     let text = unit.vectors();
     let v = parse_dop_vectors(&text, b32::WIDTH).unwrap_or_else(|e| panic!("{UNIT} vectors: {e}"));
     assert_eq!((v.k, v.latency), (24, unit.latency as usize));

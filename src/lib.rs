@@ -15,6 +15,7 @@ pub mod config;
 pub mod cycle;
 pub mod dop;
 pub mod golden;
+pub mod harness;
 pub mod hard_cases;
 pub mod memory;
 pub mod query;

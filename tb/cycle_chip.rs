@@ -10,15 +10,14 @@
 //! each into vectors/chip/ only if Verilator's trace equals it.
 
 use collision_chip::config::{ChipConfig, DopRounding};
-use collision_chip::cycle::chip::{control_writes, layout, Chip as CycleChip};
+use collision_chip::cycle::chip::{control_writes, image_words, Chip as CycleChip};
 use collision_chip::cycle::drive::{run_query, ChipTrace, Drive, Reader};
-use collision_chip::cycle::memory::Dst;
 use collision_chip::cycle::{self, MemTiming, Params};
 use collision_chip::format::{Format, Rounding};
 use collision_chip::mesh::soup;
 use collision_chip::pose::Pose;
 use collision_chip::query::Chip;
-use collision_chip::rtl::chip_io::{queries, CHIP_CONFIG};
+use collision_chip::harness::chip_io::{queries, CHIP_CONFIG};
 use collision_chip::traversal::{Mode, Traversal};
 use proptest::prelude::*;
 use std::path::PathBuf;
@@ -37,7 +36,7 @@ fn every_checked_in_trace() {
     for q in queries() {
         let p = q.prepare().unwrap();
         let params = Params { memory: q.timing, ..Params::RTL };
-        let (tr, stats) = cycle::run_query(&p.chip, &p.chip.setup(&q.pose), q.lifo, q.mode, params, q.reader, MAX_CYCLES).unwrap();
+        let (tr, stats) = cycle::run_query(&p.chip, &p.chip.setup(&q.pose), q.lifo, q.mode, params, q.reader, MAX_CYCLES, None).unwrap();
         println!("{}: {} ({stats:?})", q.name, tr.text().lines().last().unwrap());
         tr.check(q.mode, &p.golden_all).unwrap_or_else(|e| panic!("{}: {e}", q.name));
         if bless {
@@ -51,6 +50,16 @@ fn every_checked_in_trace() {
     }
 }
 
+/// Every expected trace in vectors/chip/ belongs to a query of the set (no stale trace).
+#[test]
+fn no_stale_expected_trace() {
+    let names: Vec<String> = queries().iter().map(|q| format!("{}.expect", q.name)).collect();
+    for e in std::fs::read_dir(vectors()).unwrap() {
+        let f = e.unwrap().file_name().into_string().unwrap();
+        assert!(!f.ends_with(".expect") || names.contains(&f), "vectors/chip/{f}: no query of chip_io::queries() has it: delete it");
+    }
+}
+
 /// The large queries do what they are in the set for: 10^4 cycles and more, results
 /// that back-pressure the traversal, and sure hits mixed with uncertain pairs.
 #[test]
@@ -61,7 +70,7 @@ fn large_queries_cover_what_they_claim() {
     for q in &large {
         let p = q.prepare().unwrap();
         let params = Params { memory: q.timing, ..Params::RTL };
-        let (tr, st) = cycle::run_query(&p.chip, &p.chip.setup(&q.pose), q.lifo, q.mode, params, q.reader, MAX_CYCLES).unwrap();
+        let (tr, st) = cycle::run_query(&p.chip, &p.chip.setup(&q.pose), q.lifo, q.mode, params, q.reader, MAX_CYCLES, None).unwrap();
         assert!((10_000..=200_000).contains(&tr.cycles), "{}: {} cycles", q.name, tr.cycles);
         back_pressure |= st.back_pressure > 0 && st.result_wait > 0;
         let (hits, unc) = tr.pairs();
@@ -103,11 +112,11 @@ fn params() -> impl Strategy<Value = Params> {
 /// Runs a query on the cycle model, with idle stretches skipped or (`probe`) clock by clock.
 fn run(chip: &Chip, pose: &Pose, lifo: bool, mode: Mode, p: Params, reader: Reader, probe: bool) -> Result<ChipTrace, String> {
     if !probe {
-        return cycle::run_query(chip, &chip.setup(pose), lifo, mode, p, reader, MAX_CYCLES).map(|r| r.0);
+        return cycle::run_query(chip, &chip.setup(pose), lifo, mode, p, reader, MAX_CYCLES, None).map(|r| r.0);
     }
     let setup = chip.setup(pose);
     let mut c = CycleChip::new(&chip.cfg, p, &chip.a, &chip.b, &setup)?;
-    let words = layout(&chip.a, &chip.b)[Dst::TriB as usize] + chip.b.tris.len() as u32;
+    let words = image_words(&chip.a, &chip.b);
     let d = Drive { timing: p.memory, reader, words, max_cycles: MAX_CYCLES };
     run_query(&mut c, &control_writes(&chip.a, &chip.b, lifo, mode), &d, true, |_, p| {
         assert_eq!(p.map(|v| v.len()), Some(cycle::PROBES.len()));
@@ -135,7 +144,7 @@ proptest! {
         let mode = if first { Mode::First } else { Mode::All };
         let golden = chip.query(&pose, Mode::All, if lifo { Traversal::Lifo } else { Traversal::Fifo });
         let reader = Reader { period };
-        let (tr, st) = cycle::run_query(&chip, &chip.setup(&pose), lifo, mode, p, reader, MAX_CYCLES).unwrap();
+        let (tr, st) = cycle::run_query(&chip, &chip.setup(&pose), lifo, mode, p, reader, MAX_CYCLES, None).unwrap();
         prop_assert!(!tr.overflow, "a queue of {} entries overflowed", p.queue_entries);
         prop_assert!(tr.check(mode, &golden).is_ok(), "{:?}\n{}", tr.check(mode, &golden), tr.text());
         if !first {
@@ -170,7 +179,7 @@ fn a_small_queue_overflows() {
     let p = q.prepare().unwrap();
     for lifo in [false, true] {
         let params = Params { queue_entries: 3, ..Params::RTL };
-        let (tr, st) = cycle::run_query(&p.chip, &p.chip.setup(&q.pose), lifo, Mode::All, params, Reader::default(), MAX_CYCLES).unwrap();
+        let (tr, st) = cycle::run_query(&p.chip, &p.chip.setup(&q.pose), lifo, Mode::All, params, Reader::default(), MAX_CYCLES, None).unwrap();
         assert!(tr.overflow && tr.max_depth == 3, "{}", tr.text());
         assert!(tr.check(Mode::All, &p.golden_all).is_err());
         let (hits, unc) = tr.pairs();

@@ -9,7 +9,7 @@
 //!   random MUX controls; overlap and tag, one pair per clock.
 //!
 //! Also: a short VCD per block under `target/rtl-vcd/`, Verilog export with
-//! (Verilog export and its checks: `rtl::units`, scripts/check-rtl.sh.)
+//! (Verilog export and its checks: `harness::units`, scripts/check-rtl.sh.)
 
 use collision_chip::config::{ChipConfig, DopRounding};
 use collision_chip::dop::{DopTree, HostSetup};
@@ -217,8 +217,8 @@ struct Pair {
     tag: u16,
 }
 
-// The ports of the stamped DOP units as integers: the trait of rtl::sim (also used by benches/rtl_sim.rs).
-use collision_chip::rtl::sim::DopUnitSim as Unit;
+// The ports of the stamped DOP units as integers: the trait of harness::sim (also used by benches/rtl_sim.rs).
+use collision_chip::harness::sim::DopUnitSim as Unit;
 
 /// A probe called after every half cycle (for VCD dumps).
 type Probe<'a, U> = &'a mut dyn FnMut(&U);
@@ -475,7 +475,7 @@ fn vcd_traces() {
 /// (`vectors/dop_unit_*.hex`, regenerated from the golden model here), with no mismatch.
 #[test]
 fn dop_units_pass_their_exported_vectors() {
-    use collision_chip::rtl::{sim, units};
+    use collision_chip::harness::{sim, units};
     big_stack(|| {
         let text = |name: &str| units::all().into_iter().find(|u| u.name == name).expect("exported unit").vectors();
         let v6 = sim::parse_dop_vectors(&text("dop_unit_k6_e8m15_ru"), e8m15::WIDTH).unwrap();

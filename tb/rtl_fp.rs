@@ -2,7 +2,7 @@
 //! bit for bit: every unit, both formats (binary32, e8m15), both rounding modes
 //! (NearestEven, TowardPositive), one operation per clock through the pipeline, fixed
 //! latency checked on the `valid` bit. Also: a VCD per unit under `target/rtl-vcd/`,
-//! (Verilog export and its checks: `rtl::units`, scripts/check-rtl.sh.)
+//! (Verilog export and its checks: `harness::units`, scripts/check-rtl.sh.)
 
 use collision_chip::format::{Format, Rounding};
 use collision_chip::rtl::{b32, e8m15};

@@ -21,7 +21,7 @@ use collision_chip::memory::TriWord;
 use collision_chip::pose::Pose;
 use collision_chip::query::Chip;
 use collision_chip::golden::tcheck::{tri_unit, TriResult};
-use collision_chip::rtl::tri_io::{tri_unit_directions, tri_unit_setup_words, LeafIn, TCheckIn, TCheckOut};
+use collision_chip::harness::tri_io::{tri_unit_directions, tri_unit_setup_words, LeafIn, TCheckIn, TCheckOut};
 use collision_chip::rtl::{b32, e8m15};
 use nalgebra::Point3;
 use proptest::prelude::*;

@@ -1,4 +1,5 @@
-//! `cchip`: run collision queries and scenes on the golden model of the collision chip.
+//! `cchip`: run collision queries and scenes on the golden model and the cycle model of the
+//! collision chip (and, for small meshes, its RTL in rust-hdl).
 
 use clap::{Args, Parser, Subcommand};
 use collision_chip::config::{ChipConfig, DopRounding};
@@ -9,7 +10,7 @@ use collision_chip::pose::Pose;
 use collision_chip::query::{place, Accuracy, Chip};
 use collision_chip::cycle::{self, drive::Reader};
 use collision_chip::report::{accuracy, stall_table, summary_table, CycleRecord, PoseRecord};
-use collision_chip::rtl::{chip_io, units};
+use collision_chip::harness::{chip_io, units};
 use collision_chip::scene::{CrossCheck, Scene, ScenePose, Sweep, DEFAULT_SCENE};
 use collision_chip::traversal::{Counters, Mode, QueryResult, Traversal};
 use serde::Serialize;
@@ -27,11 +28,13 @@ the file; polygons are split into fans (v0, vi, vi+1).";
 /// Raabe et al. (DATE'05) on two meshes: which triangles collide, and what it costs.
 ///
 /// Without a subcommand, runs the built-in default scene (two Stanford bunnies, one
-/// tumbling at five distances, checked against the exact oracle).
+/// tumbling at five distances, checked against the exact oracle, with the chip's clocks
+/// from the cycle model).
 #[derive(Parser)]
 #[command(name = "cchip", version, after_help = "Examples:\n  \
 cchip                                         # the default scene\n  \
 cchip run vectors/scenes/default.toml --json  # a scene file, machine-readable\n  \
+cchip run --vcd target/vcd/bunny               # the default scene with a traversal VCD per pose\n  \
 cchip query bunny bunny --pose 10,20,30,0.02,0,0 --oracle --json\n  \
 cchip query teapot sphere:2000 --pose 0,0,0,1,0,0 --traversal fifo --k 14")]
 struct Cli {
@@ -43,23 +46,26 @@ struct Cli {
 enum Cmd {
     /// One query: B placed in A's frame by a pose, all pairs or the first hit.
     Query(QueryArgs),
-    /// Run a scene file (TOML: objects, pose or sweep, chip, query, outputs); without a
-    /// file, the built-in default scene (vectors/scenes/default.toml).
+    /// Run a scene file (TOML: objects, pose or sweep, chip, query, outputs, memory,
+    /// timing); without a file, the built-in default scene (vectors/scenes/default.toml).
     ///
-    /// With --rtl (or `cycles = true` in [outputs]) every pose also runs on the RTL chip
-    /// in rust-hdl's simulator (k = 6, format reduced, fifo or lifo; about 25 clocks per
-    /// second, so small meshes: e.g. vectors/scenes/rtl_spheres.toml), which reports its
-    /// cycles and is checked against the golden pairs.
+    /// With `cycles = true` in [outputs] every pose also runs on the cycle model (any k and
+    /// format, fifo or lifo): the chip's clocks, its time at its clock beside the software's,
+    /// and where the clocks went (stall causes, occupancy, memory words per clock). Poses run
+    /// on every core.
     Run {
         scene: Option<PathBuf>,
-        /// Print one JSON record per pose instead of the table.
+        /// Print one JSON record per pose instead of the tables.
         #[arg(long)]
         json: bool,
-        /// Also run every pose on the RTL chip and report its cycles.
+        /// Also run every pose on the RTL chip in rust-hdl, in lockstep with the cycle model
+        /// (scene: cross_check = "rtl"; k = 6, format reduced, about 14 clocks per second, so
+        /// small meshes: e.g. vectors/scenes/rtl_spheres.toml). Any difference is an error
+        /// naming the pose, the cycle and the signal.
         #[arg(long)]
         rtl: bool,
-        /// Write a traversal VCD per pose into this directory (implies --rtl); open one with
-        /// `gtkwave DIR/pose0.vcd scripts/gtkw/chip_e8m15_k6.gtkw`.
+        /// Write a traversal VCD per pose from the cycle model into this directory (implies
+        /// cycles); open one with `gtkwave DIR/pose0.vcd scripts/gtkw/chip_e8m15_k6.gtkw`.
         #[arg(long, value_name = "DIR")]
         vcd: Option<PathBuf>,
     },
@@ -418,11 +424,8 @@ fn run_cycles(scene: &Scene, chip: &Chip, i: usize, pose: &Pose, res: &QueryResu
     let lifo = scene.traversal == Traversal::Lifo;
     let setup = chip.setup(pose);
     let vcd = scene.outputs.waveforms.as_ref().map(|d| d.join(format!("pose{i}.vcd")));
-    let (trace, stats) = match &vcd {
-        None => cycle::run_query(chip, &setup, lifo, scene.mode, scene.params, Reader::default(), CYCLE_MAX),
-        Some(path) => cycle::run_query_vcd(chip, &setup, lifo, scene.mode, scene.params, Reader::default(), CYCLE_MAX, path),
-    }
-    .map_err(|e| format!("pose {i}: {e}"))?;
+    let (trace, stats) = cycle::run_query(chip, &setup, lifo, scene.mode, scene.params, Reader::default(), CYCLE_MAX, vcd.as_deref())
+        .map_err(|e| format!("pose {i}: {e}"))?;
     let golden_all = match scene.mode {
         Mode::All => res.clone(),
         Mode::First => chip.query(pose, Mode::All, scene.traversal),

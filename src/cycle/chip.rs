@@ -7,7 +7,7 @@
 
 use super::d_cntr::{QueueIn, QueueModel, QueueOut};
 use super::dop_unit::{DopResult, DopUnit};
-use super::fifo::SyncFifo;
+use super::delay::{Delay, FIFO_WRITE_TO_HEAD};
 use super::memory::{Dst, MemPort};
 use super::tri_unit::{TriOut, TriUnit};
 use super::{ChipIn, ChipOut, Clocked, Params};
@@ -92,7 +92,7 @@ pub struct Chip<'a> {
     port: MemPort,
     // ---- units
     dop: DopUnit<'a>,
-    leaf_fifo: SyncFifo<(u32, u32)>,
+    leaf_fifo: Delay<(u32, u32)>,
     leaf_valid: bool,
     leaf_tag: (u32, u32),
     tri: TriUnit<'a>,
@@ -158,7 +158,7 @@ impl<'a> Chip<'a> {
             held: [None; 4],
             port: MemPort::new(p.outstanding),
             dop: DopUnit::new(a, b, dop_values, p.dop_latency),
-            leaf_fifo: SyncFifo::new(p.credit as usize),
+            leaf_fifo: Delay::with_capacity(FIFO_WRITE_TO_HEAD, p.credit as usize),
             leaf_valid: false,
             leaf_tag: (0, 0),
             tri: TriUnit::new(a, b, tri_values, p.tri_latency, p.tri_fifo),
@@ -213,7 +213,7 @@ impl<'a> Chip<'a> {
         let tri_in = go && self.leaf_valid && !need[2] && !need[3];
         let tri_take = tri_in && self.tri.in_ready();
         let leaf_out =
-            self.leaf_fifo.head(self.now).is_some() && (halt || (run && (!self.leaf_valid || tri_take)));
+            self.leaf_fifo.out(self.now).is_some() && (halt || (run && (!self.leaf_valid || tri_take)));
         let out = self.tri.out(self.now).copied();
         let give = out.is_some_and(|o| i.res_ready || !o.kept());
         let halt_idle = self.dop.in_flight() == 0
@@ -372,7 +372,7 @@ impl<'a> Chip<'a> {
             return None;
         }
         let spaced = self.last_issue.map(|t| t + self.p.issue_spacing as u64);
-        [self.dop.next_out(), self.leaf_fifo.next_head(), self.tri.next_out(), spaced]
+        [self.dop.next_out(), self.leaf_fifo.next_out(), self.tri.next_out(), spaced]
             .into_iter()
             .flatten()
             .filter(|&t| t > self.now)
@@ -401,6 +401,11 @@ pub fn control_writes(a: &ObjectImage, b: &ObjectImage, lifo: bool, mode: crate:
         (reg::ROOT, 0),
         (reg::MODE, lifo as u32 | ((mode == crate::traversal::Mode::First) as u32) << 1),
     ]
+}
+
+/// Words in the memory image of `a` and `b` (nodes and triangles of both).
+pub fn image_words(a: &ObjectImage, b: &ObjectImage) -> u32 {
+    layout(a, b)[Dst::TriB as usize] + b.tris.len() as u32
 }
 
 /// Word addresses of A's node 0, B's node 0, A's triangle 0, B's triangle 0 (by [`Dst`]):
@@ -506,14 +511,14 @@ impl Clocked for Chip<'_> {
             self.cnt[1] += 1;
         }
         if c.leaf_out {
-            let tag = self.leaf_fifo.read(now).expect("leaf_out reads a visible head");
+            let tag = self.leaf_fifo.pop(now).expect("leaf_out reads a visible head");
             if !c.halt {
                 self.leaf_valid = true;
                 self.leaf_tag = tag;
             }
         }
         if let Some(tag) = c.leaf_in {
-            self.leaf_fifo.write(now, tag);
+            self.leaf_fifo.push(now, tag);
         }
         if c.give {
             self.tri.give(now);

@@ -43,7 +43,7 @@ impl<'a> DopUnit<'a> {
         self.pipe.out(now)
     }
 
-    /// Removes the result shown in cycle `now`.
+    /// Removes the result shown in cycle `now` (a result is out for that cycle only).
     pub fn retire(&mut self, now: u64) -> Option<DopResult> {
         self.pipe.pop(now)
     }

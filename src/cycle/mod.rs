@@ -12,7 +12,7 @@
 //! | [`dop_unit`] | DOP unit pipeline with the side delay line |
 //! | [`tri_unit`] | TRI_UNIT pipeline and result FIFO |
 //! | [`memory`] | memory port and memory model |
-//! | [`delay`], [`fifo`] | a fixed-latency pipeline, the RTL's synchronous FIFO |
+//! | [`delay`] | a fixed-latency pipeline, and the RTL's synchronous FIFO as one |
 //! | [`drive`] | one driver for every level: host, memory model, result reader, lockstep |
 //!
 //! The model runs any configuration the golden model runs (k, format, rounding) with any
@@ -23,7 +23,6 @@ pub mod d_cntr;
 pub mod delay;
 pub mod dop_unit;
 pub mod drive;
-pub mod fifo;
 pub mod memory;
 pub mod tri_unit;
 
@@ -58,7 +57,7 @@ impl Params {
     /// TRI_UNIT's 130 clocks and 256-entry FIFO, issues two clocks apart, a 16-entry leaf
     /// FIFO, one request outstanding. `tb/rtl_chip.rs` checks these against the RTL.
     pub const RTL: Params = Params {
-        queue_entries: 1 << crate::rtl::chip_io::QUEUE_BITS,
+        queue_entries: 1 << crate::harness::chip_io::QUEUE_BITS,
         dop_latency: crate::rtl::DOP_LATENCY as u32,
         tri_latency: crate::rtl::e8m15::TriUnit::LATENCY as u32,
         tri_fifo: crate::rtl::e8m15::TriUnit::FIFO_DEPTH as u32,
@@ -80,8 +79,8 @@ impl Params {
         if let Some((n, _)) = nonzero.iter().find(|(_, v)| *v == 0) {
             return Err(format!("chip parameter {n} must be at least 1"));
         }
-        if self.tri_latency < fifo::WRITE_TO_HEAD as u32 + 1 {
-            return Err(format!("tri_latency must be at least {} (the result FIFO's registers)", fifo::WRITE_TO_HEAD + 1));
+        if self.tri_latency < delay::FIFO_WRITE_TO_HEAD + 1 {
+            return Err(format!("tri_latency must be at least {} (the result FIFO's registers)", delay::FIFO_WRITE_TO_HEAD + 1));
         }
         if !(1..=2).contains(&self.issue_spacing) {
             return Err("issue_spacing must be 1 or 2 clocks".into());
@@ -247,7 +246,10 @@ pub fn probe_valid(i: usize) -> Option<usize> {
 
 /// One query on the cycle model: `chip`'s images and configuration, B placed by `setup`,
 /// order `lifo`, `mode`, timing `p`, results read by `reader`. Returns the trace and where
-/// the clocks went. Waits are skipped in one step (the trace is the same).
+/// the clocks went. Without `vcd`, waits are skipped in one step (the trace is the same);
+/// with it, the query runs clock by clock and writes the traversal VCD
+/// ([`drive::ProbeVcd`], the RTL's signal names: scripts/gtkw/chip_e8m15_k6.gtkw opens it).
+#[allow(clippy::too_many_arguments)]
 pub fn run_query(
     chip: &crate::query::Chip,
     setup: &crate::dop::HostSetup,
@@ -256,44 +258,30 @@ pub fn run_query(
     p: Params,
     reader: drive::Reader,
     max_cycles: u64,
+    vcd: Option<&std::path::Path>,
 ) -> Result<(drive::ChipTrace, chip::Stats), String> {
     let mut c = chip::Chip::new(&chip.cfg, p, &chip.a, &chip.b, setup)?;
-    let words = chip::layout(&chip.a, &chip.b)[memory::Dst::TriB as usize] + chip.b.tris.len() as u32;
-    let d = drive::Drive { timing: p.memory, reader, words, max_cycles };
-    let mut skip = |c: &mut chip::Chip, i: &ChipIn, max: u64| match c.quiet_until(i) {
-        Some(t) => {
-            let n = (t - c.now()).min(max);
-            c.skip(n, i);
-            n
-        }
-        None => 0,
-    };
-    let trace = drive::run_query(&mut c, &chip::control_writes(&chip.a, &chip.b, lifo, mode), &d, false, |_, _| Ok(()), Some(&mut skip))
-        .map_err(|e| e.0)?;
-    Ok((trace, c.stats))
-}
-
-/// [`run_query`] clock by clock, writing the traversal VCD ([`drive::ProbeVcd`], the RTL's
-/// signal names: scripts/gtkw/chip_e8m15_k6.gtkw opens it) to `path`.
-#[allow(clippy::too_many_arguments)]
-pub fn run_query_vcd(
-    chip: &crate::query::Chip,
-    setup: &crate::dop::HostSetup,
-    lifo: bool,
-    mode: crate::traversal::Mode,
-    p: Params,
-    reader: drive::Reader,
-    max_cycles: u64,
-    path: &std::path::Path,
-) -> Result<(drive::ChipTrace, chip::Stats), String> {
-    let mut c = chip::Chip::new(&chip.cfg, p, &chip.a, &chip.b, setup)?;
-    let words = chip::layout(&chip.a, &chip.b)[memory::Dst::TriB as usize] + chip.b.tris.len() as u32;
-    let d = drive::Drive { timing: p.memory, reader, words, max_cycles };
-    let mut vcd = drive::open_vcd(path).map_err(|e| e.0)?;
+    let d = drive::Drive { timing: p.memory, reader, words: chip::image_words(&chip.a, &chip.b), max_cycles };
     let writes = chip::control_writes(&chip.a, &chip.b, lifo, mode);
-    let trace = drive::run_query(&mut c, &writes, &d, true, |t, v| {
-        vcd.cycle(t, &v.unwrap_or_default()).map_err(|e| format!("{}: {e}", path.display()))
-    }, None)
+    let trace = match vcd {
+        None => {
+            let mut skip = |c: &mut chip::Chip, i: &ChipIn, max: u64| match c.quiet_until(i) {
+                Some(t) => {
+                    let n = (t - c.now()).min(max);
+                    c.skip(n, i);
+                    n
+                }
+                None => 0,
+            };
+            drive::run_query(&mut c, &writes, &d, false, |_, _| Ok(()), Some(&mut skip))
+        }
+        Some(path) => {
+            let mut w = drive::open_vcd(path).map_err(|e| e.0)?;
+            drive::run_query(&mut c, &writes, &d, true, |t, v| {
+                w.cycle(t, &v.unwrap_or_default()).map_err(|e| format!("{}: {e}", path.display()))
+            }, None)
+        }
+    }
     .map_err(|e| e.0)?;
     Ok((trace, c.stats))
 }

@@ -5,9 +5,9 @@
 //! `fifo` pairs are taken and not yet given out, so the FIFO never overflows. Verdicts come
 //! from the golden TRI_UNIT ([`golden::tcheck::TriUnit`](crate::golden::tcheck::TriUnit)).
 
+use super::delay::Delay;
 use crate::golden::tcheck::{TriResult, TriUnit as Values};
 use crate::memory::ObjectImage;
-use std::collections::VecDeque;
 
 /// A verdict at TRI_UNIT's output: the triangle pair (A's, B's) and the result.
 #[derive(Clone, Copy, Debug)]
@@ -33,38 +33,34 @@ pub struct TriUnit<'a> {
     a: &'a ObjectImage,
     b: &'a ObjectImage,
     values: Values<'a>,
-    latency: u64,
-    depth: usize,
-    /// Pairs taken and not given out: `(first cycle at the output, verdict)`.
-    open: VecDeque<(u64, TriOut)>,
+    /// Pairs taken and not given out.
+    open: Delay<TriOut>,
 }
 
 impl<'a> TriUnit<'a> {
     pub fn new(a: &'a ObjectImage, b: &'a ObjectImage, values: Values<'a>, latency: u32, depth: u32) -> Self {
-        TriUnit { a, b, values, latency: latency as u64, depth: depth as usize, open: VecDeque::new() }
+        TriUnit { a, b, values, open: Delay::with_capacity(latency, depth as usize) }
     }
 
     /// `in_ready`: the result FIFO has room for one more pair.
     pub fn in_ready(&self) -> bool {
-        self.open.len() < self.depth
+        self.open.has_room()
     }
 
     /// Takes the pair of triangles `(ta, tb)` at edge `now`.
     pub fn take(&mut self, now: u64, ta: u32, tb: u32) {
         let res = self.values.test(ta, &self.a.tris[ta as usize], tb, &self.b.tris[tb as usize]);
-        self.open.push_back((now + self.latency, TriOut { a: ta, b: tb, res }));
+        self.open.push(now, TriOut { a: ta, b: tb, res });
     }
 
     /// The verdict at the output in cycle `now` (`out_valid`).
     pub fn out(&self, now: u64) -> Option<&TriOut> {
-        self.open.front().filter(|(at, _)| *at <= now).map(|(_, o)| o)
+        self.open.out(now)
     }
 
     /// Gives out the verdict shown in cycle `now` (at its edge).
     pub fn give(&mut self, now: u64) {
-        if self.out(now).is_some() {
-            self.open.pop_front();
-        }
+        self.open.pop(now);
     }
 
     /// Pairs taken and not given out (the RTL's `tri_open`, and TRI_UNIT's `count`).
@@ -74,6 +70,6 @@ impl<'a> TriUnit<'a> {
 
     /// The first cycle a verdict is at the output, if any pair is open.
     pub fn next_out(&self) -> Option<u64> {
-        self.open.front().map(|(at, _)| *at)
+        self.open.next_out()
     }
 }

@@ -1,6 +1,6 @@
 //! The collision chip (DATE'05 Fig. 4): D_CNTR, the memory port, the DOP unit and
 //! TRI_UNIT joined into one block that runs whole queries, stamped out per format by
-//! `chip!`. Host side, memory model and drivers: [`chip_io`](super::chip_io); cycle
+//! `chip!`. Host side, memory model and drivers: [`chip_io`](crate::harness::chip_io); cycle
 //! semantics: docs/ARCHITECTURE.md, "Cycle semantics".
 
 /// Stamps out `CollisionChip<N, NP1>` (k = 6) in the calling module (which must also hold

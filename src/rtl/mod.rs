@@ -53,7 +53,6 @@ pub const LEAF_FIFO: usize = 16;
 
 mod bound;
 mod chip;
-pub mod chip_io;
 mod common;
 pub mod d_cntr;
 pub mod delay;
@@ -64,10 +63,6 @@ mod fp_mul;
 mod klmsel;
 mod tcheck;
 mod tri_unit;
-pub mod sim;
-pub mod tri_io;
-pub mod units;
-pub mod verilog;
 
 /// Stamps out one format's units plus constructors and Verilog export.
 macro_rules! fp_format {

@@ -342,12 +342,12 @@ mod tests {
         let e = Scene::parse(&format!("{base}[memory]\nlatncy = 2\n"), "s").unwrap_err();
         assert!(e.starts_with("s:8:"), "{e}");
         let rtl = Scene::parse(include_str!("../../vectors/scenes/rtl_spheres.toml"), "rtl_spheres").unwrap();
-        assert_eq!(crate::rtl::chip_io::rtl_order(&rtl.cfg, rtl.traversal, &rtl.params), Ok(true));
-        let e = crate::rtl::chip_io::rtl_order(&ChipConfig::default(), Traversal::Lifo, &rtl.params).unwrap_err();
+        assert_eq!(crate::harness::chip_io::rtl_order(&rtl.cfg, rtl.traversal, &rtl.params), Ok(true));
+        let e = crate::harness::chip_io::rtl_order(&ChipConfig::default(), Traversal::Lifo, &rtl.params).unwrap_err();
         assert!(e.contains("k = 6"), "{e}");
-        let e = crate::rtl::chip_io::rtl_order(&rtl.cfg, Traversal::List, &rtl.params).unwrap_err();
+        let e = crate::harness::chip_io::rtl_order(&rtl.cfg, Traversal::List, &rtl.params).unwrap_err();
         assert!(e.contains("fifo or lifo"), "{e}");
-        let e = crate::rtl::chip_io::rtl_order(&rtl.cfg, Traversal::Lifo, &Params { credit: 4, ..rtl.params }).unwrap_err();
+        let e = crate::harness::chip_io::rtl_order(&rtl.cfg, Traversal::Lifo, &Params { credit: 4, ..rtl.params }).unwrap_err();
         assert!(e.contains("[timing]"), "{e}");
     }
 

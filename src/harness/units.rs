@@ -50,28 +50,28 @@ fn rounding_tag(r: Rounding) -> &'static str {
 pub fn all() -> Vec<Unit> {
     let mut units = vec![];
     for (tag, fmt, r, v) in [
-        ("b32", Format::BINARY32, Rounding::TowardPositive, super::b32::verilog_doptrf as VerilogFn),
-        ("b32", Format::BINARY32, Rounding::NearestEven, super::b32::verilog_doptrf),
-        ("e8m15", Format::REDUCED, Rounding::TowardPositive, super::e8m15::verilog_doptrf),
+        ("b32", Format::BINARY32, Rounding::TowardPositive, crate::rtl::b32::verilog_doptrf as VerilogFn),
+        ("b32", Format::BINARY32, Rounding::NearestEven, crate::rtl::b32::verilog_doptrf),
+        ("e8m15", Format::REDUCED, Rounding::TowardPositive, crate::rtl::e8m15::verilog_doptrf),
     ] {
         let name = format!("doptrf_{tag}_{}", rounding_tag(r));
         let n2 = name.clone();
-        units.push(Unit { name, latency: 15, verilog: Box::new(move || v(r)), vectors: Box::new(move || lane_vectors(&n2, fmt, r)) });
+        units.push(Unit { name, latency: crate::rtl::DOP_LATENCY as u32, verilog: Box::new(move || v(r)), vectors: Box::new(move || lane_vectors(&n2, fmt, r)) });
     }
     for (k, tag, fmt, v) in [
-        (6, "e8m15", Format::REDUCED, super::e8m15::verilog_dop_unit_k6 as VerilogFn),
-        (24, "b32", Format::BINARY32, super::b32::verilog_dop_unit),
+        (6, "e8m15", Format::REDUCED, crate::rtl::e8m15::verilog_dop_unit_k6 as VerilogFn),
+        (24, "b32", Format::BINARY32, crate::rtl::b32::verilog_dop_unit),
     ] {
         let r = Rounding::TowardPositive;
         let name = format!("dop_unit_k{k}_{tag}_{}", rounding_tag(r));
         let n2 = name.clone();
-        units.push(Unit { name, latency: 15, verilog: Box::new(move || v(r)), vectors: Box::new(move || dop_unit_vectors(&n2, k, fmt)) });
+        units.push(Unit { name, latency: crate::rtl::DOP_LATENCY as u32, verilog: Box::new(move || v(r)), vectors: Box::new(move || dop_unit_vectors(&n2, k, fmt)) });
     }
     for r in [Rounding::NearestEven, Rounding::TowardPositive] {
         for (tag, fmt) in [("b32", Format::BINARY32), ("e8m15", Format::REDUCED)] {
             let (vm, va): (VerilogFn, VerilogFn) = match tag {
-                "b32" => (super::b32::verilog_fp_mul, super::b32::verilog_fp_add),
-                _ => (super::e8m15::verilog_fp_mul, super::e8m15::verilog_fp_add),
+                "b32" => (crate::rtl::b32::verilog_fp_mul, crate::rtl::b32::verilog_fp_add),
+                _ => (crate::rtl::e8m15::verilog_fp_mul, crate::rtl::e8m15::verilog_fp_add),
             };
             let name = format!("fp_mul_{tag}_{}", rounding_tag(r));
             let n2 = name.clone();
@@ -94,8 +94,8 @@ pub fn all() -> Vec<Unit> {
     for (tag, fmt) in [("b32", Format::BINARY32), ("e8m15", Format::REDUCED)] {
         type Gen = fn() -> String;
         let (va, vm, ve): (Gen, Gen, VerilogFn) = match tag {
-            "b32" => (super::b32::verilog_bound_add, super::b32::verilog_bound_mul, super::b32::verilog_round_err),
-            _ => (super::e8m15::verilog_bound_add, super::e8m15::verilog_bound_mul, super::e8m15::verilog_round_err),
+            "b32" => (crate::rtl::b32::verilog_bound_add, crate::rtl::b32::verilog_bound_mul, crate::rtl::b32::verilog_round_err),
+            _ => (crate::rtl::e8m15::verilog_bound_add, crate::rtl::e8m15::verilog_bound_mul, crate::rtl::e8m15::verilog_round_err),
         };
         for (op, v, mul, latency) in [("add", va, false, 4), ("mul", vm, true, 5)] {
             let name = format!("bound_{op}_{tag}");
@@ -109,21 +109,21 @@ pub fn all() -> Vec<Unit> {
     }
     for (tag, fmt) in [("b32", Format::BINARY32), ("e8m15", Format::REDUCED)] {
         let (vt, vu): (VerilogFn, VerilogFn) = match tag {
-            "b32" => (super::b32::verilog_tcheck, super::b32::verilog_tri_unit),
-            _ => (super::e8m15::verilog_tcheck, super::e8m15::verilog_tri_unit),
+            "b32" => (crate::rtl::b32::verilog_tcheck, crate::rtl::b32::verilog_tri_unit),
+            _ => (crate::rtl::e8m15::verilog_tcheck, crate::rtl::e8m15::verilog_tri_unit),
         };
         let r = Rounding::NearestEven;
         let name = format!("tcheck_{tag}_{}", rounding_tag(r));
         let n2 = name.clone();
-        units.push(Unit { name, latency: 128, verilog: Box::new(move || vt(r)), vectors: Box::new(move || super::tri_io::tcheck_vectors(&n2, fmt, r)) });
+        units.push(Unit { name, latency: crate::rtl::b32::TCheck::LATENCY as u32, verilog: Box::new(move || vt(r)), vectors: Box::new(move || super::tri_io::tcheck_vectors(&n2, fmt, r)) });
         let name = format!("tri_unit_{tag}_{}", rounding_tag(r));
         let n2 = name.clone();
-        units.push(Unit { name, latency: 130, verilog: Box::new(move || vu(r)), vectors: Box::new(move || super::tri_io::tri_unit_vectors(&n2, fmt, r)) });
+        units.push(Unit { name, latency: crate::rtl::b32::TriUnit::LATENCY as u32, verilog: Box::new(move || vu(r)), vectors: Box::new(move || super::tri_io::tri_unit_vectors(&n2, fmt, r)) });
     }
     // D_CNTR's pair queue, 16 entries (format independent): one line per clock
     let name = "pair_queue_n4".to_string();
     let n2 = name.clone();
-    units.push(Unit { name, latency: 1, verilog: Box::new(super::d_cntr::verilog_pair_queue::<4, 5>), vectors: Box::new(move || super::d_cntr::pair_queue_vectors(&n2, 4, RANDOM_CASES)) });
+    units.push(Unit { name, latency: 1, verilog: Box::new(crate::rtl::d_cntr::verilog_pair_queue::<4, 5>), vectors: Box::new(move || crate::rtl::d_cntr::pair_queue_vectors(&n2, 4, RANDOM_CASES)) });
     units
 }
 

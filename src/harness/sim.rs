@@ -25,7 +25,7 @@
 //! The k = 24 units are about 2 MB values built on the stack: construct and run them in a
 //! thread with a big stack (e.g. `std::thread::Builder::new().stack_size(512 << 20)`).
 
-use super::{b32, e8m15};
+use crate::rtl::{b32, e8m15};
 use rust_hdl::prelude::*;
 
 /// A DOP unit as the vector driver sees it: its ports, as plain integers.

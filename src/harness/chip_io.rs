@@ -7,7 +7,7 @@
 //! The chip is k = 6, e8m15 ([`Format::REDUCED`]), DOP lanes rounding outward, T.CHECK to
 //! nearest-even: [`CHIP_CONFIG`].
 
-use super::e8m15::CollisionChip;
+use crate::rtl::e8m15::CollisionChip;
 use super::tri_io::{tri_unit_setup_words, LeafIn};
 pub use crate::cycle::drive::{ChipError, ChipTrace, Drive, Reader};
 use crate::cycle::drive::open_vcd;
@@ -297,7 +297,7 @@ pub const EXPORT_NAME: &str = "chip_e8m15_k6";
 /// The exported chip, ready to simulate (inputs claimed; build it on a thread with a big
 /// stack: TRI_UNIT is large).
 pub fn exported_chip() -> ExportedChip {
-    super::e8m15::chip_top(CHIP_CONFIG.dop_rounding.op(), CHIP_CONFIG.tri_rounding)
+    crate::rtl::e8m15::chip_top(CHIP_CONFIG.dop_rounding.op(), CHIP_CONFIG.tri_rounding)
 }
 
 /// The chip's Verilog (top module `top`), identical modules merged.
@@ -305,7 +305,7 @@ pub fn chip_verilog() -> String {
     std::thread::Builder::new()
         .stack_size(1 << 30)
         .spawn(|| {
-            super::verilog::dedup_modules(&super::e8m15::verilog_chip::<QUEUE_BITS, { QUEUE_BITS + 1 }>(
+            super::verilog::dedup_modules(&crate::rtl::e8m15::verilog_chip::<QUEUE_BITS, { QUEUE_BITS + 1 }>(
                 CHIP_CONFIG.dop_rounding.op(),
                 CHIP_CONFIG.tri_rounding,
             ))
