@@ -26,6 +26,16 @@ impl DopRounding {
     }
 }
 
+/// The name the CLI and scenes use (`outward`, `nearest-even`).
+impl std::fmt::Display for DopRounding {
+    fn fmt(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+        f.write_str(match self {
+            DopRounding::Outward => "outward",
+            DopRounding::NearestEven => "nearest-even",
+        })
+    }
+}
+
 impl std::str::FromStr for DopRounding {
     type Err = String;
     fn from_str(s: &str) -> Result<Self, String> {

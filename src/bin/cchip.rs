@@ -202,7 +202,7 @@ fn query(q: QueryArgs) -> Result<(), String> {
     println!("A: {} ({} triangles, {} DOP nodes)", q.a, ta.len(), chip.a.tree.len());
     println!("B: {} ({} triangles, {} DOP nodes)", q.b, tb.len(), chip.b.tree.len());
     println!(
-        "chip: k={} format={} dop-rounding={:?}; {:?} traversal, {:?} pairs mode",
+        "chip: k={} format={} dop-rounding={}; {:?} traversal, {:?} pairs mode",
         cfg.k, cfg.format, cfg.dop_rounding, q.traversal, q.mode
     );
     let c = res.counters;
@@ -320,7 +320,7 @@ fn run(path: Option<PathBuf>, json: bool, rtl: bool, vcd: Option<PathBuf>) -> Re
     scene.poses.iter().try_for_each(|sp| chip.check_pose(&sp.pose)).map_err(named)?;
     if !json {
         println!(
-            "scene: {}\n  A = {} ({} triangles), B = {} ({} triangles){}\n  chip: k={} format={} dop-rounding={:?}; {:?} traversal, {:?} mode; {} poses",
+            "scene: {}\n  A = {} ({} triangles), B = {} ({} triangles){}\n  chip: k={} format={} dop-rounding={}; {:?} traversal, {:?} mode; {} poses",
             scene.name, scene.objects.a, ta.len(), scene.objects.b, tb.len(),
             if scene.objects.unit_cube { ", both scaled into [-1,1]^3" } else { "" },
             scene.cfg.k, scene.cfg.format, scene.cfg.dop_rounding, scene.traversal, scene.mode, scene.poses.len()

@@ -414,7 +414,7 @@ pub fn rtl_order(cfg: &ChipConfig, traversal: crate::traversal::Traversal, p: &c
     use crate::traversal::Traversal;
     if *cfg != CHIP_CONFIG {
         return Err(format!(
-            "the RTL chip is built for k = 6, format reduced (e8m15), outward DOP rounding; this scene has k = {}, format {}, {:?}: set [chip] k = 6, format = \"reduced\", dop_rounding = \"outward\"",
+            "the RTL chip is built for k = 6, format reduced (e8m15), outward DOP rounding; this scene has k = {}, format {}, dop_rounding {}: set [chip] k = 6, format = \"reduced\", dop_rounding = \"outward\"",
             cfg.k, cfg.format, cfg.dop_rounding
         ));
     }
@@ -430,8 +430,8 @@ pub fn rtl_order(cfg: &ChipConfig, traversal: crate::traversal::Traversal, p: &c
 }
 
 /// rust-hdl simulates the chip at about this many clocks per second on this project's
-/// machine (README, `cargo bench --bench chip_sim`): for estimates before a run.
-pub const RTL_CLOCKS_PER_SECOND: f64 = 25.0;
+/// machine (README, `cargo bench --bench chip_sim`: 13): for estimates before a run.
+pub const RTL_CLOCKS_PER_SECOND: f64 = 14.0;
 
 /// Runs one pose on the rust-hdl chip in lockstep with the cycle model (on a thread with
 /// the big stack the RTL needs): every output and traversal signal equal after every clock.
