@@ -168,10 +168,6 @@ impl<'a> Chip<'a> {
         })
     }
 
-    pub fn params(&self) -> &Params {
-        &self.p
-    }
-
     fn comb(&self, i: &ChipIn) -> Comb {
         let run = self.run;
         let halt = self.stop || self.q.overflow;

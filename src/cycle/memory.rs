@@ -152,14 +152,6 @@ impl MemPort {
         self.outstanding.is_empty()
     }
 
-    /// The destination of the oldest request.
-    pub fn oldest(&self) -> Option<Dst> {
-        self.outstanding.front().map(|o| o.0)
-    }
-
-    pub fn clear(&mut self) {
-        self.outstanding.clear();
-    }
 }
 
 #[cfg(test)]
