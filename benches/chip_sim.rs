@@ -48,7 +48,7 @@ fn cycle_model(root: &Path, name: &str, reps: usize) -> (u64, f64, f64) {
     let (mut by_clock, mut skipping, mut cycles) = (f64::INFINITY, f64::INFINITY, 0);
     for _ in 0..reps {
         let t = Instant::now();
-        let mut c = Chip::new(&p.chip.cfg, params, &p.chip.a, &p.chip.b, &setup).unwrap();
+        let mut c = Chip::new(&p.chip.cfg, params, &p.chip.a, &p.chip.b, &setup, true).unwrap();
         let words = image_words(&p.chip.a, &p.chip.b);
         let d = Drive { timing: q.timing, reader: q.reader, words, max_cycles: 10_000_000 };
         let writes = control_writes(&p.chip.a, &p.chip.b, q.lifo, q.mode);
@@ -57,7 +57,7 @@ fn cycle_model(root: &Path, name: &str, reps: usize) -> (u64, f64, f64) {
         assert_eq!(tr.text(), want, "{name}: the cycle model's trace (clock by clock)");
         cycles = tr.cycles;
         let t = Instant::now();
-        let (tr, _) = cycle::run_query(&p.chip, &setup, q.lifo, q.mode, params, q.reader, 10_000_000, None).unwrap();
+        let (tr, _) = cycle::run_query(&p.chip, &setup, q.lifo, q.mode, params, q.reader, 10_000_000, cycle::Record { counters: true, ..Default::default() }).unwrap();
         skipping = skipping.min(t.elapsed().as_secs_f64());
         assert_eq!(tr.text(), want, "{name}: the cycle model's trace (waits skipped)");
     }

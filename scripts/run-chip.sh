@@ -4,7 +4,11 @@
 # maximum queue depth and counters — with the rust-hdl chip's (vectors/chip/<query>.expect).
 #
 # Usage: scripts/run-chip.sh [--sim verilator|icarus] [--chip rtl/chip_e8m15_k6.v] [--bless] [query ...]
+#        scripts/run-chip.sh --build-only [--chip FILE]
 #   (default: Verilator, every query of vectors/chip/queries.txt)
+# --build-only: build the Verilator binary (target/verilog/verilator/chip/obj/Vchip) and print
+#   its path. The build is kept and reused while the testbench, the chip's Verilog and the
+#   flags are unchanged (`cchip run` builds it this way for cross_check = "verilog").
 # --bless: compare each trace with the cycle model's instead (target/chip-expect/<query>.expect,
 #   written by `CCHIP_BLESS=1 cargo test --release --test cycle_chip`) and, where the two agree,
 #   copy it to vectors/chip/<query>.expect: an expected trace is written only when the
@@ -15,12 +19,13 @@
 # minutes); Verilator builds it once in about 5 minutes and then runs each query at once.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-sim=verilator chip=rtl/chip_e8m15_k6.v queries=() bless=0
+sim=verilator chip=rtl/chip_e8m15_k6.v queries=() bless=0 build_only=0
 while [ $# -gt 0 ]; do
   case $1 in
     --sim) sim=$2; shift 2 ;;
     --chip) chip=$2; shift 2 ;;
     --bless) bless=1; shift ;;
+    --build-only) build_only=1; shift ;;
     -h|--help) sed -n '2,/^$/p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 2 ;;
     *) queries+=("$1"); shift ;;
   esac
@@ -33,12 +38,22 @@ case $sim in
   verilator)
     command -v verilator >/dev/null || { echo "run-chip.sh: verilator not found (apt-get install -y verilator)" >&2; exit 127; }
     # rust-hdl output needs -Wno-WIDTH (32-bit literals); the FP normalisers trip UNOPTFLAT
-    verilator --lint-only -Wno-WIDTH -Wno-UNOPTFLAT --top-module top "$chip"
-    verilator --binary -O3 -Wno-WIDTH -Wno-UNOPTFLAT -Wno-STMTDLY --top-module tb -Mdir "$out/obj" \
-      -j "$(nproc 2>/dev/null || echo 2)" -o Vchip scripts/verilog/chip_tb.v "$chip" >"$out/build.log" 2>&1 \
-      || { cat "$out/build.log" >&2; echo "run-chip.sh: Verilator build failed" >&2; exit 1; }
+    flags=(--binary -O3 -Wno-WIDTH -Wno-UNOPTFLAT -Wno-STMTDLY --top-module tb)
+    stamp=$( (verilator --version; echo "${flags[*]}"; cat scripts/verilog/chip_tb.v "$chip") | sha256sum)
+    if [ -x "$out/obj/Vchip" ] && [ "$(cat "$out/stamp" 2>/dev/null)" = "$stamp" ]; then
+      echo "run-chip.sh: $out/obj/Vchip is up to date" >&2
+    else
+      rm -f "$out/stamp"
+      verilator --lint-only -Wno-WIDTH -Wno-UNOPTFLAT --top-module top "$chip"
+      verilator "${flags[@]}" -Mdir "$out/obj" -j "$(nproc 2>/dev/null || echo 2)" -o Vchip \
+        scripts/verilog/chip_tb.v "$chip" >"$out/build.log" 2>&1 \
+        || { cat "$out/build.log" >&2; echo "run-chip.sh: Verilator build failed" >&2; exit 1; }
+      echo "$stamp" >"$out/stamp"
+    fi
+    [ $build_only = 1 ] && { echo "$out/obj/Vchip"; exit 0; }
     run() { "$out/obj/Vchip" "$@"; } ;;
   icarus)
+    [ $build_only = 1 ] && { echo "run-chip.sh: --build-only builds the Verilator binary" >&2; exit 2; }
     command -v iverilog >/dev/null || { echo "run-chip.sh: iverilog not found (apt-get install -y iverilog)" >&2; exit 127; }
     iverilog -g2012 -s tb -o "$out/chip.vvp" scripts/verilog/chip_tb.v "$chip"
     run() { vvp -n "$out/chip.vvp" "$@"; } ;;

@@ -24,6 +24,11 @@ use std::path::PathBuf;
 
 const MAX_CYCLES: u64 = 5_000_000;
 
+/// A cycle-model run that counts where the clocks went.
+fn counted() -> cycle::Record<'static> {
+    cycle::Record { counters: true, ..Default::default() }
+}
+
 fn vectors() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("vectors/chip")
 }
@@ -36,7 +41,8 @@ fn every_checked_in_trace() {
     for q in queries() {
         let p = q.prepare().unwrap();
         let params = Params { memory: q.timing, ..Params::RTL };
-        let (tr, stats) = cycle::run_query(&p.chip, &p.chip.setup(&q.pose), q.lifo, q.mode, params, q.reader, MAX_CYCLES, None).unwrap();
+        let (tr, stats) = cycle::run_query(&p.chip, &p.chip.setup(&q.pose), q.lifo, q.mode, params, q.reader, MAX_CYCLES, counted()).unwrap();
+        let stats = stats.expect("counted");
         println!("{}: {} ({stats:?})", q.name, tr.text().lines().last().unwrap());
         tr.check(q.mode, &p.golden_all).unwrap_or_else(|e| panic!("{}: {e}", q.name));
         if bless {
@@ -70,7 +76,8 @@ fn large_queries_cover_what_they_claim() {
     for q in &large {
         let p = q.prepare().unwrap();
         let params = Params { memory: q.timing, ..Params::RTL };
-        let (tr, st) = cycle::run_query(&p.chip, &p.chip.setup(&q.pose), q.lifo, q.mode, params, q.reader, MAX_CYCLES, None).unwrap();
+        let (tr, st) = cycle::run_query(&p.chip, &p.chip.setup(&q.pose), q.lifo, q.mode, params, q.reader, MAX_CYCLES, counted()).unwrap();
+        let st = st.expect("counted");
         assert!((10_000..=200_000).contains(&tr.cycles), "{}: {} cycles", q.name, tr.cycles);
         back_pressure |= st.back_pressure > 0 && st.result_wait > 0;
         let (hits, unc) = tr.pairs();
@@ -112,10 +119,10 @@ fn params() -> impl Strategy<Value = Params> {
 /// Runs a query on the cycle model, with idle stretches skipped or (`probe`) clock by clock.
 fn run(chip: &Chip, pose: &Pose, lifo: bool, mode: Mode, p: Params, reader: Reader, probe: bool) -> Result<ChipTrace, String> {
     if !probe {
-        return cycle::run_query(chip, &chip.setup(pose), lifo, mode, p, reader, MAX_CYCLES, None).map(|r| r.0);
+        return cycle::run_query(chip, &chip.setup(pose), lifo, mode, p, reader, MAX_CYCLES, counted()).map(|r| r.0);
     }
     let setup = chip.setup(pose);
-    let mut c = CycleChip::new(&chip.cfg, p, &chip.a, &chip.b, &setup)?;
+    let mut c = CycleChip::new(&chip.cfg, p, &chip.a, &chip.b, &setup, true)?;
     let words = image_words(&chip.a, &chip.b);
     let d = Drive { timing: p.memory, reader, words, max_cycles: MAX_CYCLES };
     run_query(&mut c, &control_writes(&chip.a, &chip.b, lifo, mode), &d, true, |_, p| {
@@ -144,7 +151,8 @@ proptest! {
         let mode = if first { Mode::First } else { Mode::All };
         let golden = chip.query(&pose, Mode::All, if lifo { Traversal::Lifo } else { Traversal::Fifo });
         let reader = Reader { period };
-        let (tr, st) = cycle::run_query(&chip, &chip.setup(&pose), lifo, mode, p, reader, MAX_CYCLES, None).unwrap();
+        let (tr, st) = cycle::run_query(&chip, &chip.setup(&pose), lifo, mode, p, reader, MAX_CYCLES, counted()).unwrap();
+        let st = st.expect("counted");
         prop_assert!(!tr.overflow, "a queue of {} entries overflowed", p.queue_entries);
         prop_assert!(tr.check(mode, &golden).is_ok(), "{:?}\n{}", tr.check(mode, &golden), tr.text());
         if !first {
@@ -179,7 +187,8 @@ fn a_small_queue_overflows() {
     let p = q.prepare().unwrap();
     for lifo in [false, true] {
         let params = Params { queue_entries: 3, ..Params::RTL };
-        let (tr, st) = cycle::run_query(&p.chip, &p.chip.setup(&q.pose), lifo, Mode::All, params, Reader::default(), MAX_CYCLES, None).unwrap();
+        let (tr, st) = cycle::run_query(&p.chip, &p.chip.setup(&q.pose), lifo, Mode::All, params, Reader::default(), MAX_CYCLES, counted()).unwrap();
+        let st = st.expect("counted");
         assert!(tr.overflow && tr.max_depth == 3, "{}", tr.text());
         assert!(tr.check(Mode::All, &p.golden_all).is_err());
         let (hits, unc) = tr.pairs();
@@ -199,7 +208,7 @@ fn bad_parameters_are_refused() {
         (Params { outstanding: 5, ..Params::RTL }, "outstanding"),
         (Params { memory: MemTiming { latency: 0, interval: 1 }, ..Params::RTL }, "latency"),
     ] {
-        let e = CycleChip::new(&CHIP_CONFIG, p, &chip.a, &chip.b, &setup).err().expect("refused");
+        let e = CycleChip::new(&CHIP_CONFIG, p, &chip.a, &chip.b, &setup, true).err().expect("refused");
         assert!(e.contains(what), "{e}");
     }
 }

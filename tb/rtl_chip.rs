@@ -71,7 +71,7 @@ impl Case {
                     let mut out = vec![];
                     for run in 0..runs {
                         let mut ls = Lockstep::new(RtlChip::new(&mut rtl, &self.image), &mut cyc, ("rust-hdl", "cycle model"));
-                        let mut w = vcd.as_ref().filter(|_| run == 0).map(|p| open_vcd(p).unwrap());
+                        let mut w = vcd.as_ref().filter(|_| run == 0).map(|p| open_vcd(p, &[], 0..u64::MAX).unwrap());
                         let tr = run_query(&mut ls, &self.image.writes, &self.drive(), true, |t, p| {
                             if let Some(w) = w.as_mut() {
                                 w.cycle(t, &p.unwrap()).map_err(|e| e.to_string())?;
@@ -253,7 +253,7 @@ fn a_small_queue_overflows_with_an_error_status() {
 fn seeded_random_queries() {
     use collision_chip::mesh::soup;
     use rand::{Rng, SeedableRng};
-    for seed in 1..=4u64 {
+    for seed in 1..=2u64 {
         let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
         // small: rust-hdl runs the chip at about 25 clocks per second
         let (na, nb) = (rng.random_range(3..=6), rng.random_range(3..=6));

@@ -9,7 +9,12 @@
 //   result <cycle> <A's triangle> <B's triangle> <uncertain>
 //   done <cycles> overflow <0|1> max_depth <n> dop_tests <n> tri_tests <n> node_fetches <n> tri_fetches <n>
 // Cycle 1 is the one after the edge that took `start`. +max_cycles=N (default 100000)
-// bounds the query (`timeout` is printed instead of `done`). Runs in Verilator and Icarus.
+// bounds the query (`timeout` is printed instead of `done`). +ports also prints the output
+// ports (and the memory handshake) of every cycle whose values differ from the last line's:
+//   ports <cycle> busy done overflow max_depth req_valid req_ready req_addr resp_valid
+//         res_valid res_uncertain res_a res_b dop_tests tri_tests node_fetches tri_fetches
+// (src/harness/verilator.rs compares them with the cycle model's, clock by clock). Runs
+// under both Icarus and Verilator.
 // The same driver in Rust: src/cycle/drive.rs (run_query).
 `timescale 1ns / 1ps
 module tb;
@@ -46,6 +51,8 @@ module tb;
   integer qaddr [0:15];
   integer qh, qt, next_accept, cyc, i, latency, interval, reader, max_cycles;
   reg [1023:0] mem_file, host_file;
+  reg ports, printed;
+  reg [202:0] port_line, last_line;
 
   task edge_;  // one rising edge, inputs set before it, outputs settled after it
     begin
@@ -63,6 +70,8 @@ module tb;
     if (!$value$plusargs("interval=%d", interval)) interval = 1;
     if (!$value$plusargs("reader=%d", reader)) reader = 1;
     if (!$value$plusargs("max_cycles=%d", max_cycles)) max_cycles = 100000;
+    ports = $test$plusargs("ports");
+    printed = 0;
     for (i = 0; i < 1024; i = i + 1) host[i] = {42{1'b1}};
     $readmemh(mem_file, mem);
     $readmemh(host_file, host);
@@ -95,6 +104,14 @@ module tb;
         next_accept = cyc + interval;
       end
       res_ready = cyc % reader == 0;
+      port_line = {busy, done, overflow, max_depth, mem_req_valid, mem_req_ready, mem_req_addr, mem_resp_valid,
+                   res_valid, res_uncertain, res_tag, dop_tests, tri_tests, node_fetches, tri_fetches};
+      if (ports && (!printed || port_line != last_line))
+        $display("ports %0d %0d %0d %0d %0d %0d %0d %0d %0d %0d %0d %0d %0d %0d %0d %0d %0d", cyc, busy, done, overflow,
+                 max_depth, mem_req_valid, mem_req_ready, mem_req_addr, mem_resp_valid, res_valid, res_uncertain,
+                 res_tag[15:0], res_tag[31:16], dop_tests, tri_tests, node_fetches, tri_fetches);
+      printed = 1;
+      last_line = port_line;
       if (res_valid && res_ready) $display("result %0d %0d %0d %0d", cyc, res_tag[15:0], res_tag[31:16], res_uncertain);
       edge_;
     end

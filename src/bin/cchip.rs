@@ -8,11 +8,12 @@ use collision_chip::mesh::{self, Mesh};
 use collision_chip::oracle;
 use collision_chip::pose::Pose;
 use collision_chip::query::{place, Accuracy, Chip};
-use collision_chip::cycle::{self, drive::Reader};
-use collision_chip::report::{accuracy, stall_table, summary_table, CycleRecord, PoseRecord};
-use collision_chip::harness::{chip_io, units};
-use collision_chip::scene::{CrossCheck, Scene, ScenePose, Sweep, DEFAULT_SCENE};
-use collision_chip::traversal::{Counters, Mode, QueryResult, Traversal};
+use collision_chip::report::{accuracy, memory_table, stall_table, summary_table};
+use collision_chip::harness::units;
+use collision_chip::scene::graph::Plan;
+use collision_chip::scene::run::Prepared;
+use collision_chip::scene::{CrossCheck, Scene, Sweep, Waveforms, DEFAULT_SCENE};
+use collision_chip::traversal::{Counters, Mode, Traversal};
 use serde::Serialize;
 use std::io::Write;
 use indicatif::{ProgressBar, ProgressStyle};
@@ -55,19 +56,8 @@ enum Cmd {
     /// on every core.
     Run {
         scene: Option<PathBuf>,
-        /// Print one JSON record per pose instead of the tables.
-        #[arg(long)]
-        json: bool,
-        /// Also run every pose on the RTL chip in rust-hdl, in lockstep with the cycle model
-        /// (scene: cross_check = "rtl"; k = 6, format reduced, about 14 clocks per second, so
-        /// small meshes: e.g. vectors/scenes/rtl_spheres.toml). Any difference is an error
-        /// naming the pose, the cycle and the signal.
-        #[arg(long)]
-        rtl: bool,
-        /// Write a traversal VCD per pose from the cycle model into this directory (implies
-        /// cycles); open one with `gtkwave DIR/pose0.vcd scripts/gtkw/chip_e8m15_k6.gtkw`.
-        #[arg(long, value_name = "DIR")]
-        vcd: Option<PathBuf>,
+        #[command(flatten)]
+        opts: RunOpts,
     },
     /// Write the Verilog of every exported RTL unit (rust-hdl's generate_verilog, identical
     /// modules merged), one file per unit, format and rounding: rtl/<unit>.v. Run the files
@@ -86,6 +76,32 @@ enum Cmd {
     /// [-1,1]^3) at several distances, with each number format and DOP rounding, compared
     /// with the exact oracle. Prints the table of docs/ACCURACY.md.
     Accuracy(AccuracyArgs),
+}
+
+#[derive(Args, Default)]
+struct RunOpts {
+    /// Print one JSON record per pose instead of the tables.
+    #[arg(long)]
+    json: bool,
+    /// Also run every pose on the RTL chip in rust-hdl, in lockstep with the cycle model
+    /// (scene: cross_check = "rtl"; k = 6, format reduced, about 14 clocks per second, so
+    /// small meshes: e.g. vectors/scenes/rtl_spheres.toml). Any difference is an error
+    /// naming the pose, the cycle and the signal. For the exported Verilog under Verilator
+    /// (meshes of a few hundred triangles), set cross_check = "verilog" in the scene.
+    #[arg(long)]
+    rtl: bool,
+    /// Write a traversal VCD per pose from the cycle model into this directory; open one
+    /// with `gtkwave DIR/pose0.vcd scripts/gtkw/chip_e8m15_k6.gtkw`. (A scene's
+    /// `waveforms` table also picks scopes and a cycle window.)
+    #[arg(long, value_name = "DIR")]
+    vcd: Option<PathBuf>,
+    /// Print the scene's dataflow graph, pruned to what its outputs need, and what each
+    /// unit will do; nothing is run. Units the outputs do not need are listed as skipped.
+    #[arg(long)]
+    explain: bool,
+    /// Like --explain, as Graphviz DOT (skipped units dashed): `cchip run --dot | dot -Tsvg`.
+    #[arg(long)]
+    dot: bool,
 }
 
 #[derive(Args)]
@@ -155,11 +171,11 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     let res = match cli.cmd {
         Some(Cmd::Query(q)) => query(q),
-        Some(Cmd::Run { scene, json, rtl, vcd }) => run(scene, json, rtl, vcd),
+        Some(Cmd::Run { scene, opts }) => run(scene, opts),
         Some(Cmd::Accuracy(a)) => accuracy(a),
         Some(Cmd::ExportVerilog { out }) => report_written(units::write_verilog(&out)),
         Some(Cmd::Vectors { out }) => report_written(units::write_vectors(&out)),
-        None => run(None, false, false, None),
+        None => run(None, RunOpts::default()),
     };
     match res {
         Ok(()) => ExitCode::SUCCESS,
@@ -288,37 +304,25 @@ fn accuracy(a: AccuracyArgs) -> Result<(), String> {
     Ok(())
 }
 
-fn run(path: Option<PathBuf>, json: bool, rtl: bool, vcd: Option<PathBuf>) -> Result<(), String> {
+fn run(path: Option<PathBuf>, o: RunOpts) -> Result<(), String> {
     let mut scene = match &path {
         Some(p) => Scene::load(p)?,
         None => Scene::parse(DEFAULT_SCENE, "built-in default scene")?,
     };
-    if vcd.is_some() {
-        scene.outputs.waveforms = vcd;
+    if let Some(dir) = o.vcd {
+        scene.outputs.waveforms = Some(Waveforms::all(dir));
     }
-    if rtl {
+    if o.rtl {
         scene.outputs.cross_check = Some(CrossCheck::Rtl);
     }
-    scene.outputs.cycles |= scene.outputs.waveforms.is_some() || scene.outputs.cross_check.is_some();
-    let named = |e: String| format!("{}: {e}", scene.name);
-    if scene.outputs.cycles && !matches!(scene.traversal, Traversal::Fifo | Traversal::Lifo) {
-        return Err(named(format!(
-            "cycles come from the chip's D_CNTR, which runs the fifo or lifo traversal, not {:?}: set [query] traversal",
-            scene.traversal
-        )));
+    if o.explain || o.dot {
+        let plan = Plan::of(&scene);
+        print!("{}", if o.dot { plan.dot() } else { plan.explain(&scene) });
+        return Ok(());
     }
-    if scene.outputs.cross_check.is_some() {
-        chip_io::rtl_order(&scene.cfg, scene.traversal, &scene.params).map_err(named)?;
-    }
-    if let Some(dir) = scene.outputs.waveforms.as_deref().filter(|d| d.is_file()) {
-        return Err(named(format!("waveforms: {} is a file; give a directory for the VCD files", dir.display())));
-    }
-    let in_scene = |spec: &str| load(spec, scene.objects.unit_cube).map_err(named);
-    let (ma, mb) = (in_scene(&scene.objects.a)?, in_scene(&scene.objects.b)?);
-    let (ta, tb) = (ma.triangles_f64(), mb.triangles_f64());
-    let chip = Chip::new(&ta, &tb, scene.cfg)?;
-    scene.poses.iter().try_for_each(|sp| chip.check_pose(&sp.pose)).map_err(named)?;
-    if !json {
+    let prepared = Prepared::new(&scene, |spec| load(spec, scene.objects.unit_cube))?;
+    let (ta, tb) = (&prepared.a, &prepared.b);
+    if !o.json {
         println!(
             "scene: {}\n  A = {} ({} triangles), B = {} ({} triangles){}\n  chip: k={} format={} dop-rounding={}; {:?} traversal, {:?} mode; {} poses",
             scene.name, scene.objects.a, ta.len(), scene.objects.b, tb.len(),
@@ -326,36 +330,19 @@ fn run(path: Option<PathBuf>, json: bool, rtl: bool, vcd: Option<PathBuf>) -> Re
             scene.cfg.k, scene.cfg.format, scene.cfg.dop_rounding, scene.traversal, scene.mode, scene.poses.len()
         );
     }
-    let bar = progress_bar(scene.poses.len() as u64, json);
-    // the golden model's queries one at a time, so that their time is the software's on
-    // an otherwise idle machine; the rest on every core
-    let golden: Vec<(QueryResult, f64)> = scene
-        .poses
-        .iter()
-        .map(|sp| {
-            let t0 = std::time::Instant::now();
-            let res = chip.query(&sp.pose, scene.mode, scene.traversal);
-            (res, t0.elapsed().as_secs_f64() * 1e6)
-        })
-        .collect();
-    let records = parallel_map(&scene.poses, |i, sp| {
-        let r = run_pose(&scene, &chip, &ta, &tb, i, sp, &golden[i]);
-        bar.inc(1);
-        r
-    })
-    .into_iter()
-    .collect::<Result<Vec<_>, String>>()
-    .map_err(named)?;
+    let bar = progress_bar(scene.poses.len() as u64, o.json);
+    let records = prepared.run(|| bar.inc(1))?.records;
     bar.finish_and_clear();
-    if json {
+    if o.json {
         println!("{}", serde_json::to_string_pretty(&records).expect("serialisable"));
         return Ok(());
     }
-    print!("{}", summary_table(&records));
-    if scene.outputs.accuracy {
+    let out = &scene.outputs;
+    print!("{}", summary_table(&records, out.cycles));
+    if out.accuracy {
         println!("misses = exact pairs the chip did not report; extras = reported pairs that do not intersect.");
     }
-    if scene.outputs.cycles {
+    if out.cycles {
         let p = &scene.params;
         println!(
             "cycles = the chip's clocks from start to done (cycle model: {} queue entries, memory latency {}, interval {}); chip_us at {} MHz; sw_us = the golden model's query on this machine (one at a time); speedup = sw_us / chip_us.",
@@ -363,129 +350,28 @@ fn run(path: Option<PathBuf>, json: bool, rtl: bool, vcd: Option<PathBuf>) -> Re
         );
         println!("\nwhere the clocks went (share of clocks by what the DOP unit's input did; occupancy = mean units in flight):");
         print!("{}", stall_table(&records));
-        for (i, r) in records.iter().enumerate() {
-            let Some(c) = &r.cycles else { continue };
-            if let Some(v) = &c.vcd {
-                println!("pose {i}: VCD {v}  (gtkwave {v} scripts/gtkw/chip_e8m15_k6.gtkw)");
-            }
+    }
+    if out.memory {
+        println!(
+            "\nmemory (latency {}, one request accepted every {} clock(s); busy = a request outstanding, waiting = the DOP unit's input waits for a node word):",
+            scene.params.memory.latency, scene.params.memory.interval
+        );
+        print!("{}", memory_table(&records));
+    }
+    for (i, r) in records.iter().enumerate() {
+        let Some(c) = &r.cycles else { continue };
+        if let Some(v) = &c.vcd {
+            println!("pose {i}: VCD {v}  (gtkwave {v} scripts/gtkw/chip_e8m15_k6.gtkw)");
         }
-        for (i, r) in records.iter().enumerate().filter(|(_, r)| r.cycles.as_ref().is_some_and(|c| c.overflow)) {
+        if c.overflow {
             println!(
                 "pose {i} ({:?}): the chip's pair queue overflowed ({} entries): its answer is incomplete; raise [timing] queue_entries",
                 r.pose, scene.params.queue_entries
             );
         }
-        if let Some(level) = records.iter().find_map(|r| r.cycles.as_ref()?.cross_checked) {
-            println!("every pose ran on the {level} chip in lockstep with the cycle model: equal on every signal, every clock.");
-        }
+    }
+    if let Some(level) = records.iter().find_map(|r| r.cycles.as_ref()?.cross_checked.as_ref()) {
+        println!("every pose ran on the {level} chip beside the cycle model: equal on every compared signal, every clock.");
     }
     Ok(())
 }
-
-/// `f` over `items` on every core, results in the items' order (the output of a parallel
-/// run is the serial run's).
-fn parallel_map<T: Sync, R: Send>(items: &[T], f: impl Fn(usize, &T) -> R + Sync) -> Vec<R> {
-    let threads = std::thread::available_parallelism().map_or(1, |n| n.get()).min(items.len().max(1));
-    let next = std::sync::atomic::AtomicUsize::new(0);
-    let mut out: Vec<(usize, R)> = std::thread::scope(|s| {
-        let workers: Vec<_> = (0..threads)
-            .map(|_| {
-                s.spawn(|| {
-                    let mut mine = vec![];
-                    loop {
-                        let i = next.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
-                        let Some(item) = items.get(i) else { break };
-                        mine.push((i, f(i, item)));
-                    }
-                    mine
-                })
-            })
-            .collect();
-        workers.into_iter().flat_map(|w| w.join().expect("a pose's thread panicked")).collect()
-    });
-    out.sort_by_key(|(i, _)| *i);
-    out.into_iter().map(|(_, r)| r).collect()
-}
-
-/// One pose of a scene, after its golden query (`golden`: the result and its time, the
-/// software's): the exact oracle if asked for, and the cycle model (with its VCD, and the
-/// cross-check) if asked for. The cycle model's answer must be the golden model's.
-fn run_pose(
-    scene: &Scene,
-    chip: &Chip,
-    ta: &[oracle::Tri],
-    tb: &[oracle::Tri],
-    i: usize,
-    sp: &ScenePose,
-    golden: &(QueryResult, f64),
-) -> Result<PoseRecord, String> {
-    let (res, software_us) = (golden.0.clone(), golden.1);
-    let exact = scene.outputs.accuracy.then(|| exact_pairs(ta, tb, &sp.pose));
-    let cycles = match scene.outputs.cycles {
-        false => None,
-        true => Some(run_cycles(scene, chip, i, &sp.pose, &res, software_us)?),
-    };
-    Ok(PoseRecord {
-        pose: sp.pose,
-        distance: sp.distance,
-        pair_count: res.pairs.len(),
-        accuracy: exact.as_ref().map(|x| Accuracy::of(scene.mode, &res.pairs, x)),
-        exact_pair_count: exact.as_ref().map(Vec::len),
-        pairs: scene.outputs.pairs.then_some(res.pairs),
-        counters: res.counters,
-        cycles,
-    })
-}
-
-fn run_cycles(scene: &Scene, chip: &Chip, i: usize, pose: &Pose, res: &QueryResult, software_us: f64) -> Result<CycleRecord, String> {
-    let lifo = scene.traversal == Traversal::Lifo;
-    let setup = chip.setup(pose);
-    let vcd = scene.outputs.waveforms.as_ref().map(|d| d.join(format!("pose{i}.vcd")));
-    let (trace, stats) = cycle::run_query(chip, &setup, lifo, scene.mode, scene.params, Reader::default(), CYCLE_MAX, vcd.as_deref())
-        .map_err(|e| format!("pose {i}: {e}"))?;
-    let golden_all = match scene.mode {
-        Mode::All => res.clone(),
-        Mode::First => chip.query(pose, Mode::All, scene.traversal),
-    };
-    // an overflow is the chip's answer (incomplete, flagged), not a disagreement
-    if let Err(e) = trace.check(scene.mode, &golden_all).or_else(|e| if trace.overflow { Ok(()) } else { Err(e) }) {
-        return Err(format!("pose {i}: the cycle model disagrees with the golden model: {e}"));
-    }
-    let cross_checked = match scene.outputs.cross_check {
-        None => None,
-        Some(CrossCheck::Rtl) => {
-            let hours = trace.cycles as f64 / chip_io::RTL_CLOCKS_PER_SECOND / 3600.0;
-            if hours > 0.5 {
-                return Err(format!(
-                    "pose {i}: the rust-hdl cross-check would take about {hours:.1} hours ({} clocks at ~{} clocks/s); use smaller meshes (e.g. vectors/scenes/rtl_spheres.toml) or drop cross_check",
-                    trace.cycles,
-                    chip_io::RTL_CLOCKS_PER_SECOND
-                ));
-            }
-            let rtl = chip_io::cross_check(chip, pose, scene.mode, scene.traversal, scene.params, 2 * trace.cycles + 1000)
-                .map_err(|e| format!("pose {i}: rust-hdl and the cycle model differ: {e}"))?;
-            if rtl != trace {
-                return Err(format!("pose {i}: rust-hdl's trace differs from the cycle model's:\n{}\n{}", rtl.text(), trace.text()));
-            }
-            Some("rust-hdl")
-        }
-    };
-    let (hits, unc) = trace.pairs();
-    Ok(CycleRecord {
-        cycles: trace.cycles,
-        chip_us: trace.cycles as f64 / scene.clock_mhz,
-        software_us,
-        hits: hits.len(),
-        uncertain: unc.len(),
-        max_entries: trace.max_depth,
-        overflow: trace.overflow,
-        words: trace.node_fetches + trace.tri_fetches,
-        stats,
-        vcd: vcd.map(|p| p.display().to_string()),
-        cross_checked,
-    })
-}
-
-/// A bound on one query's clocks on the cycle model (waits are skipped, so a long memory
-/// latency costs no time; the bound only catches a hung model).
-const CYCLE_MAX: u64 = 1 << 50;

@@ -99,7 +99,8 @@ pub struct Chip<'a> {
     // ---- counters: DOP tests, triangle tests, node fetches, triangle fetches
     cnt: [u64; 4],
     now: u64,
-    pub stats: Stats,
+    /// Where the clocks went, if counted (a scene that asks for no cycles leaves them out).
+    pub stats: Option<Stats>,
 }
 
 /// The cycle's logic: functions of the registers and the inputs.
@@ -126,13 +127,14 @@ struct Comb {
 
 impl<'a> Chip<'a> {
     /// A chip after reset (its host registers zero: write [`control_writes`] before
-    /// `start`).
+    /// `start`); `counters`: count [`Stats`].
     pub fn new(
         cfg: &ChipConfig,
         p: Params,
         a: &'a ObjectImage,
         b: &'a ObjectImage,
         setup: &'a HostSetup,
+        counters: bool,
     ) -> Result<Self, String> {
         p.check()?;
         let dop_values = doptrf::TransformCache::new(cfg.format, cfg.dop_rounding.op(), setup, b.tree.len());
@@ -164,7 +166,7 @@ impl<'a> Chip<'a> {
             tri: TriUnit::new(a, b, tri_values, p.tri_latency, p.tri_fifo),
             cnt: [0; 4],
             now: 0,
-            stats: Stats::default(),
+            stats: counters.then(Stats::default),
         })
     }
 
@@ -249,7 +251,7 @@ impl<'a> Chip<'a> {
     /// Books `n` cycles with the logic `c` (the same in each) to [`Stats`].
     fn tally(&mut self, c: &Comb, i: &ChipIn, n: u64) {
         let spacing = self.last_issue.is_some_and(|t| self.now - t < self.p.issue_spacing as u64);
-        let s = &mut self.stats;
+        let Some(s) = &mut self.stats else { return };
         s.cycles += n;
         s.memory_busy += n * !self.port.is_empty() as u64;
         s.dop_occupancy += n * self.dop.in_flight() as u64;
@@ -536,7 +538,7 @@ impl Clocked for Chip<'_> {
             self.leaf_valid = false;
             self.held = [None; 4];
             self.cnt = [0; 4];
-            self.stats = Stats::default();
+            self.stats = self.stats.map(|_| Stats::default());
             self.last_issue = None;
         }
         self.now += 1;

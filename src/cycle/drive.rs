@@ -255,23 +255,28 @@ impl<A: Clocked, B: Clocked> Clocked for Lockstep<A, B> {
 
 /// A VCD of the [`PROBES`] signals, one time unit per clock (time t shows every signal in
 /// cycle t, cycle 0 the one whose edge takes `start`), one scope per unit under `chip`:
-/// for GTKWave with scripts/gtkw/chip_e8m15_k6.gtkw. `window` limits it to cycles
-/// `from..to`.
+/// for GTKWave with scripts/gtkw/chip_e8m15_k6.gtkw. `scopes` picks the units (all if
+/// empty), `window` the cycles.
 pub struct ProbeVcd<W: std::io::Write> {
     w: vcd::Writer<W>,
-    ids: Vec<vcd::IdCode>,
+    /// The VCD id of each probe, if its scope is written.
+    ids: Vec<Option<vcd::IdCode>>,
     last: Vec<Option<u64>>,
     window: std::ops::Range<u64>,
 }
 
 impl<W: std::io::Write> ProbeVcd<W> {
-    pub fn new(out: W, window: std::ops::Range<u64>) -> std::io::Result<Self> {
+    pub fn new(out: W, scopes: &[String], window: std::ops::Range<u64>) -> std::io::Result<Self> {
         let mut w = vcd::Writer::new(out);
         w.timescale(1, vcd::TimescaleUnit::NS)?;
         w.add_module("chip")?;
         let mut ids = vec![];
         let mut scope = "";
         for &(s, name, width) in &PROBES {
+            if !scopes.is_empty() && !scopes.iter().any(|x| x == s) {
+                ids.push(None);
+                continue;
+            }
             if s != scope {
                 if !scope.is_empty() {
                     w.upscope()?;
@@ -279,9 +284,11 @@ impl<W: std::io::Write> ProbeVcd<W> {
                 w.add_module(s)?;
                 scope = s;
             }
-            ids.push(w.add_wire(width, name)?);
+            ids.push(Some(w.add_wire(width, name)?));
         }
-        w.upscope()?;
+        if !scope.is_empty() {
+            w.upscope()?;
+        }
         w.upscope()?;
         w.enddefinitions()?;
         Ok(ProbeVcd { w, ids, last: vec![None; PROBES.len()], window })
@@ -294,6 +301,7 @@ impl<W: std::io::Write> ProbeVcd<W> {
         }
         let mut stamped = false;
         for (k, &v) in values.iter().enumerate() {
+            let Some(id) = self.ids[k] else { continue };
             if self.last[k] == Some(v) {
                 continue;
             }
@@ -305,14 +313,19 @@ impl<W: std::io::Write> ProbeVcd<W> {
             let width = PROBES[k].2;
             let bits: Vec<vcd::Value> =
                 (0..width).rev().map(|b| if v >> b & 1 == 1 { vcd::Value::V1 } else { vcd::Value::V0 }).collect();
-            self.w.change_vector(self.ids[k], &bits)?;
+            self.w.change_vector(id, &bits)?;
         }
         Ok(())
     }
 }
 
-/// A traversal VCD at `path` (its directory made if missing). Errors name the path.
-pub fn open_vcd(path: &std::path::Path) -> Result<ProbeVcd<std::io::BufWriter<std::fs::File>>, ChipError> {
+/// A traversal VCD at `path` (its directory made if missing) of `scopes` (all if empty)
+/// in cycles `window`. Errors name the path.
+pub fn open_vcd(
+    path: &std::path::Path,
+    scopes: &[String],
+    window: std::ops::Range<u64>,
+) -> Result<ProbeVcd<std::io::BufWriter<std::fs::File>>, ChipError> {
     let io = |e: std::io::Error| ChipError(format!("{}: {e}", path.display()));
     if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
         if dir.is_file() {
@@ -321,6 +334,5 @@ pub fn open_vcd(path: &std::path::Path) -> Result<ProbeVcd<std::io::BufWriter<st
         std::fs::create_dir_all(dir).map_err(io)?;
     }
     let file = std::io::BufWriter::new(std::fs::File::create(path).map_err(io)?);
-    ProbeVcd::new(file, 0..u64::MAX).map_err(io)
+    ProbeVcd::new(file, scopes, window).map_err(io)
 }
-

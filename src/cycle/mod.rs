@@ -230,6 +230,13 @@ pub const PROBES: [(&str, &str, u32); 50] = [
     ("counters", "tri_fetches", 32),
 ];
 
+/// The scopes of [`PROBES`], in order.
+pub fn probe_scopes() -> Vec<&'static str> {
+    let mut v: Vec<&str> = PROBES.iter().map(|p| p.0).collect();
+    v.dedup();
+    v
+}
+
 /// For each of [`PROBES`], the index of the signal that must be 1 for its value to be
 /// specified (`None`: always specified): a request's address and destination, a DOP
 /// result's fields, TRI_UNIT's output and the result port's fields.
@@ -244,11 +251,24 @@ pub fn probe_valid(i: usize) -> Option<usize> {
     }
 }
 
+/// What a cycle-model run records besides its trace.
+#[derive(Default)]
+pub struct Record<'p> {
+    /// Count where the clocks went ([`chip::Stats`]).
+    pub counters: bool,
+    /// Write a traversal VCD here: the [`PROBES`] of these scopes (all if empty) in this
+    /// window of cycles.
+    pub vcd: Option<(&'p std::path::Path, &'p [String], std::ops::Range<u64>)>,
+    /// Call with every cycle's [`PROBES`] values (a cross-check).
+    pub probes: Option<&'p mut dyn FnMut(u64, &[u64]) -> Result<(), String>>,
+}
+
 /// One query on the cycle model: `chip`'s images and configuration, B placed by `setup`,
-/// order `lifo`, `mode`, timing `p`, results read by `reader`. Returns the trace and where
-/// the clocks went. Without `vcd`, waits are skipped in one step (the trace is the same);
-/// with it, the query runs clock by clock and writes the traversal VCD
-/// ([`drive::ProbeVcd`], the RTL's signal names: scripts/gtkw/chip_e8m15_k6.gtkw opens it).
+/// order `lifo`, `mode`, timing `p`, results read by `reader`. Returns the trace and, if
+/// `rec.counters`, where the clocks went. Without a VCD or a probe observer, waits are
+/// skipped in one step (the trace is the same); with one, the query runs clock by clock
+/// ([`drive::ProbeVcd`] writes the RTL's signal names: scripts/gtkw/chip_e8m15_k6.gtkw opens
+/// it).
 #[allow(clippy::too_many_arguments)]
 pub fn run_query(
     chip: &crate::query::Chip,
@@ -258,29 +278,37 @@ pub fn run_query(
     p: Params,
     reader: drive::Reader,
     max_cycles: u64,
-    vcd: Option<&std::path::Path>,
-) -> Result<(drive::ChipTrace, chip::Stats), String> {
-    let mut c = chip::Chip::new(&chip.cfg, p, &chip.a, &chip.b, setup)?;
+    rec: Record,
+) -> Result<(drive::ChipTrace, Option<chip::Stats>), String> {
+    let mut c = chip::Chip::new(&chip.cfg, p, &chip.a, &chip.b, setup, rec.counters)?;
     let d = drive::Drive { timing: p.memory, reader, words: chip::image_words(&chip.a, &chip.b), max_cycles };
     let writes = chip::control_writes(&chip.a, &chip.b, lifo, mode);
-    let trace = match vcd {
-        None => {
-            let mut skip = |c: &mut chip::Chip, i: &ChipIn, max: u64| match c.quiet_until(i) {
-                Some(t) => {
-                    let n = (t - c.now()).min(max);
-                    c.skip(n, i);
-                    n
-                }
-                None => 0,
-            };
-            drive::run_query(&mut c, &writes, &d, false, |_, _| Ok(()), Some(&mut skip))
-        }
-        Some(path) => {
-            let mut w = drive::open_vcd(path).map_err(|e| e.0)?;
-            drive::run_query(&mut c, &writes, &d, true, |t, v| {
-                w.cycle(t, &v.unwrap_or_default()).map_err(|e| format!("{}: {e}", path.display()))
-            }, None)
-        }
+    let Record { vcd, probes: mut observer, .. } = rec;
+    let trace = if vcd.is_none() && observer.is_none() {
+        let mut skip = |c: &mut chip::Chip, i: &ChipIn, max: u64| match c.quiet_until(i) {
+            Some(t) => {
+                let n = (t - c.now()).min(max);
+                c.skip(n, i);
+                n
+            }
+            None => 0,
+        };
+        drive::run_query(&mut c, &writes, &d, false, |_, _| Ok(()), Some(&mut skip))
+    } else {
+        let mut w = match vcd {
+            Some((path, scopes, window)) => Some((drive::open_vcd(path, scopes, window).map_err(|e| e.0)?, path)),
+            None => None,
+        };
+        drive::run_query(&mut c, &writes, &d, true, |t, v| {
+            let v = v.unwrap_or_default();
+            if let Some((w, path)) = &mut w {
+                w.cycle(t, &v).map_err(|e| format!("{}: {e}", path.display()))?;
+            }
+            match observer.as_deref_mut() {
+                Some(f) => f(t, &v),
+                None => Ok(()),
+            }
+        }, None)
     }
     .map_err(|e| e.0)?;
     Ok((trace, c.stats))

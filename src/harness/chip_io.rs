@@ -396,7 +396,7 @@ pub fn run_query_vcd<const N: usize, const NP1: usize>(
     d: &Drive,
     path: &std::path::Path,
 ) -> Result<ChipTrace, ChipError> {
-    let mut vcd = open_vcd(path)?;
+    let mut vcd = open_vcd(path, &[], 0..u64::MAX)?;
     let trace = crate::cycle::drive::run_query(
         &mut RtlChip::new(chip, image),
         &image.writes,
@@ -454,7 +454,7 @@ pub fn cross_check(
             .stack_size(1 << 30)
             .spawn_scoped(s, || {
                 let mut rtl = exported_chip();
-                let model = crate::cycle::chip::Chip::new(&chip.cfg, p, &chip.a, &chip.b, &setup)?;
+                let model = crate::cycle::chip::Chip::new(&chip.cfg, p, &chip.a, &chip.b, &setup, false)?;
                 let mut ls = crate::cycle::drive::Lockstep::new(RtlChip::new(&mut rtl, &image), model, ("rust-hdl", "cycle model"));
                 crate::cycle::drive::run_query(&mut ls, &image.writes, &d, true, |_, _| Ok(()), None).map_err(|e| e.0)
             })

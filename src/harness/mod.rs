@@ -9,4 +9,5 @@ pub mod chip_io;
 pub mod sim;
 pub mod tri_io;
 pub mod units;
+pub mod verilator;
 pub mod verilog;

@@ -3,6 +3,7 @@
 
 pub mod accuracy;
 
+use crate::cycle::chip::Stats;
 use crate::pose::Pose;
 use crate::query::Accuracy;
 use crate::traversal::Counters;
@@ -44,16 +45,26 @@ pub struct CycleRecord {
     /// Most queue entries (two node pairs each) waiting at once.
     pub max_entries: u64,
     pub overflow: bool,
-    /// Memory words moved (node and triangle words).
-    pub words: u64,
-    /// Where the clocks went.
-    pub stats: crate::cycle::chip::Stats,
+    /// The memory model's traffic.
+    pub memory: MemoryRecord,
+    /// Where the clocks went (scenes asking for cycles or memory).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub stats: Option<crate::cycle::chip::Stats>,
     /// The traversal VCD written, if any.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub vcd: Option<String>,
-    /// The level that ran the pose in lockstep with the cycle model and agreed.
+    /// The level that ran the pose beside the cycle model and agreed clock by clock.
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub cross_checked: Option<&'static str>,
+    pub cross_checked: Option<String>,
+}
+
+/// What one pose moved through the memory port.
+#[derive(Clone, Copy, Debug, Default, Serialize)]
+pub struct MemoryRecord {
+    pub node_words: u64,
+    pub tri_words: u64,
+    /// Bytes of those words at the configuration's node and triangle widths.
+    pub bytes: u64,
 }
 
 /// Records grouped by sweep distance (or one group per pose without a sweep).
@@ -73,12 +84,12 @@ fn groups(records: &[PoseRecord]) -> Vec<(String, Vec<&PoseRecord>)> {
 }
 
 /// One table row per sweep distance (or one per pose without a sweep): means of the
-/// counters, sums of misses and extra pairs; with cycles, the cycle model's mean clocks, the
-/// chip's time at its clock, the software's, and their ratio.
-pub fn summary_table(records: &[PoseRecord]) -> String {
+/// counters, sums of misses and extra pairs; with `cycles`, the cycle model's mean clocks,
+/// the chip's time at its clock, the software's, and their ratio.
+pub fn summary_table(records: &[PoseRecord], cycles: bool) -> String {
     let groups = groups(records);
     let with_acc = records.iter().any(|r| r.accuracy.is_some());
-    let with_cycles = records.iter().any(|r| r.cycles.is_some());
+    let with_cycles = cycles && records.iter().any(|r| r.cycles.is_some());
     let mut out = String::new();
     let _ = write!(
         out,
@@ -146,25 +157,62 @@ pub fn stall_table(records: &[PoseRecord]) -> String {
     );
     for (key, g) in groups(records) {
         let c: Vec<_> = g.iter().filter_map(|r| r.cycles.as_ref()).collect();
-        let sum = |f: &dyn Fn(&CycleRecord) -> u64| c.iter().map(|r| f(r)).sum::<u64>() as f64;
-        let cycles = sum(&|r| r.stats.cycles).max(1.0);
-        let pc = |f: &dyn Fn(&CycleRecord) -> u64| 100.0 * sum(f) / cycles;
+        let st: Vec<Stats> = c.iter().filter_map(|r| r.stats).collect();
+        let sum = |f: &dyn Fn(&Stats) -> u64| st.iter().map(f).sum::<u64>() as f64;
+        let cycles = sum(&|r| r.cycles).max(1.0);
+        let pc = |f: &dyn Fn(&Stats) -> u64| 100.0 * sum(f) / cycles;
+        let words = c.iter().map(|r| r.memory.node_words + r.memory.tri_words).sum::<u64>() as f64;
         let _ = writeln!(
             out,
             "{:<28} {:>6.1} {:>7.1} {:>8.1} {:>7.1} {:>7.1} {:>7.1} {:>7.1} {:>7.1} {:>7.1} {:>7.2} {:>7.1} {:>7.3}",
             key,
-            pc(&|r| r.stats.issue),
-            pc(&|r| r.stats.stall_memory),
-            pc(&|r| r.stats.stall_spacing),
-            pc(&|r| r.stats.stall_credit),
-            pc(&|r| r.stats.stall_refill),
-            pc(&|r| r.stats.stall_empty_queue),
-            pc(&|r| r.stats.drain),
-            pc(&|r| r.stats.halted),
-            pc(&|r| r.stats.back_pressure),
-            sum(&|r| r.stats.dop_occupancy) / cycles,
-            sum(&|r| r.stats.tri_occupancy) / cycles,
-            sum(&|r| r.words) / cycles,
+            pc(&|r| r.issue),
+            pc(&|r| r.stall_memory),
+            pc(&|r| r.stall_spacing),
+            pc(&|r| r.stall_credit),
+            pc(&|r| r.stall_refill),
+            pc(&|r| r.stall_empty_queue),
+            pc(&|r| r.drain),
+            pc(&|r| r.halted),
+            pc(&|r| r.back_pressure),
+            sum(&|r| r.dop_occupancy) / cycles,
+            sum(&|r| r.tri_occupancy) / cycles,
+            words / cycles,
+        );
+    }
+    out
+}
+
+/// The memory model's traffic, one row per sweep distance (or pose): mean node and
+/// triangle words and KiB per query, words per clock, and the share of clocks with a
+/// request outstanding and with the DOP unit's input waiting for a word. Empty without
+/// cycle records.
+pub fn memory_table(records: &[PoseRecord]) -> String {
+    let mut out = String::new();
+    if !records.iter().any(|r| r.cycles.is_some()) {
+        return out;
+    }
+    let _ = writeln!(
+        out,
+        "{:<28} {:>10} {:>10} {:>10} {:>8} {:>7} {:>8}",
+        "pose", "node_words", "tri_words", "KiB", "words/c", "busy%", "waiting%"
+    );
+    for (key, g) in groups(records) {
+        let c: Vec<_> = g.iter().filter_map(|r| r.cycles.as_ref()).collect();
+        let n = c.len().max(1) as f64;
+        let sum = |f: &dyn Fn(&CycleRecord) -> u64| c.iter().map(|r| f(r)).sum::<u64>() as f64;
+        let cycles = sum(&|r| r.cycles).max(1.0);
+        let st = |f: &dyn Fn(&Stats) -> u64| c.iter().filter_map(|r| r.stats.as_ref()).map(f).sum::<u64>() as f64;
+        let _ = writeln!(
+            out,
+            "{:<28} {:>10.0} {:>10.0} {:>10.1} {:>8.3} {:>7.1} {:>8.1}",
+            key,
+            sum(&|r| r.memory.node_words) / n,
+            sum(&|r| r.memory.tri_words) / n,
+            sum(&|r| r.memory.bytes) / n / 1024.0,
+            sum(&|r| r.memory.node_words + r.memory.tri_words) / cycles,
+            100.0 * st(&|s| s.memory_busy) / cycles,
+            100.0 * st(&|s| s.stall_memory) / cycles,
         );
     }
     out

@@ -1,6 +1,5 @@
 //! Scenes: two objects, one pose or a pose sweep, the query, the chip configuration and
-//! the outputs wanted (TOML). Only what the outputs ask for is computed: the exact oracle
-//! runs only when `accuracy` is requested.
+//! the outputs wanted (TOML).
 //!
 //! ```toml
 //! [objects]
@@ -35,11 +34,17 @@
 //! accuracy = true             # run the exact oracle and count misses and extra pairs
 //! cycles = true               # run every pose on the cycle model (any k and format, fifo or
 //!                             # lifo): clocks, stall causes, the chip's time at its clock
-//! waveforms = "target/vcd/my-scene"   # a traversal VCD per pose from the cycle model
-//!                             # (implies cycles); GTKWave: scripts/gtkw/chip_e8m15_k6.gtkw
+//! memory = true               # the memory model's traffic: words, bytes, words per clock
+//! waveforms = "target/vcd/my-scene"   # a traversal VCD per pose from the cycle model;
+//!                             # GTKWave: scripts/gtkw/chip_e8m15_k6.gtkw. Or a table:
+//! # waveforms = { dir = "target/vcd/x", scopes = ["d_cntr", "memory"], cycles = [0, 5000] }
 //! cross_check = "rtl"         # also every pose on the rust-hdl chip in lockstep with the
-//!                             # cycle model (about 25 clocks/s: small meshes; k = 6, format
-//!                             # "reduced", outward, no [timing]); implies cycles
+//!                             # cycle model (about 14 clocks/s: small meshes; k = 6, format
+//!                             # "reduced", outward, no [timing]); or "verilog": the exported
+//!                             # chip under Verilator (built once, cached under target/),
+//!                             # every port every clock; meshes of a few hundred triangles
+//!
+//! Only what the outputs need is built and run (`graph::Plan`; `cchip run --explain`).
 //!
 //! [memory]                    # the memory model (optional)
 //! latency = 1                 # clocks from an accepted request to its response
@@ -55,6 +60,9 @@
 //! outstanding = 1             # memory requests in flight (1 to 4)
 //! clock_mhz = 800             # the chip's clock for its time per query (DATE'05: 800)
 //! ```
+
+pub mod graph;
+pub mod run;
 
 use crate::config::{ChipConfig, DopRounding};
 use crate::format::Format;
@@ -79,7 +87,7 @@ struct File {
     pose: Vec<Pose>,
     sweep: Option<Sweep>,
     #[serde(default)]
-    outputs: Outputs,
+    outputs: OutputsSection,
     #[serde(default)]
     memory: Option<crate::cycle::MemTiming>,
     #[serde(default)]
@@ -105,6 +113,92 @@ struct TimingSection {
 pub enum CrossCheck {
     /// The rust-hdl chip, in lockstep.
     Rtl,
+    /// The exported Verilog under Verilator, every port every clock.
+    Verilog,
+}
+
+impl std::fmt::Display for CrossCheck {
+    fn fmt(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+        f.write_str(match self {
+            CrossCheck::Rtl => "rust-hdl",
+            CrossCheck::Verilog => "Verilog (Verilator)",
+        })
+    }
+}
+
+/// Which traversal VCDs a scene writes: one per pose into `dir`, the [`crate::cycle::PROBES`]
+/// of `scopes` (all if empty) in cycles `window` (the scene's `cycles = [first, last]`).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Waveforms {
+    pub dir: std::path::PathBuf,
+    pub scopes: Vec<String>,
+    pub window: std::ops::Range<u64>,
+}
+
+impl Waveforms {
+    /// Every scope, every cycle.
+    pub fn all(dir: std::path::PathBuf) -> Self {
+        Waveforms { dir, scopes: vec![], window: 0..u64::MAX }
+    }
+
+    /// From the scene's `waveforms`: a directory, or a table `{ dir, scopes, cycles }`.
+    fn of(v: toml::Value) -> Result<Self, String> {
+        const FORM: &str = "give a directory (waveforms = \"DIR\") or a table (waveforms = { dir = \"DIR\", scopes = [\"d_cntr\", ...], cycles = [first, last] })";
+        let bad = |what: &str| format!("[outputs] waveforms: {what}; {FORM}");
+        let (dir, scopes, cycles) = match v {
+            toml::Value::String(d) => (d, None, None),
+            toml::Value::Table(mut t) => {
+                let dir = match t.remove("dir") {
+                    Some(toml::Value::String(d)) => d,
+                    _ => return Err(bad("no dir")),
+                };
+                let scopes = match t.remove("scopes") {
+                    None => None,
+                    Some(toml::Value::Array(a)) => Some(
+                        a.into_iter().map(|x| x.as_str().map(str::to_string)).collect::<Option<Vec<_>>>().ok_or_else(|| bad("scopes must be names"))?,
+                    ),
+                    Some(_) => return Err(bad("scopes must be a list of names")),
+                };
+                let cycles = match t.remove("cycles") {
+                    None => None,
+                    Some(toml::Value::Array(a)) => match a.iter().map(|x| x.as_integer().and_then(|i| u64::try_from(i).ok())).collect::<Option<Vec<_>>>().as_deref() {
+                        Some(&[a, b]) => Some([a, b]),
+                        _ => return Err(bad("cycles must be [first, last], two cycle numbers")),
+                    },
+                    Some(_) => return Err(bad("cycles must be [first, last]")),
+                };
+                if let Some(k) = t.keys().next() {
+                    return Err(bad(&format!("unknown key {k:?}")));
+                }
+                (dir, scopes, cycles)
+            }
+            _ => return Err(bad("neither a directory nor a table")),
+        };
+        let dir = std::path::PathBuf::from(dir);
+        let known = crate::cycle::probe_scopes();
+        let scopes = scopes.unwrap_or_default();
+        if let Some(s) = scopes.iter().find(|s| !known.contains(&s.as_str())) {
+            return Err(format!("[outputs] waveforms: no scope {s:?}; the scopes are {}", known.join(", ")));
+        }
+        let window = match cycles {
+            None => 0..u64::MAX,
+            Some([a, b]) if a <= b => a..b.saturating_add(1),
+            Some([a, b]) => return Err(format!("[outputs] waveforms: cycles = [{a}, {b}] is empty; give [first, last] with first <= last")),
+        };
+        Ok(Waveforms { dir, scopes, window })
+    }
+
+    pub fn scopes_text(&self) -> String {
+        if self.scopes.is_empty() { "every scope".into() } else { format!("scopes {}", self.scopes.join(", ")) }
+    }
+
+    pub fn window_text(&self) -> String {
+        match (self.window.start, self.window.end) {
+            (0, u64::MAX) => "every cycle".into(),
+            (a, u64::MAX) => format!("cycles {a} on"),
+            (a, b) => format!("cycles {a} to {}", b - 1),
+        }
+    }
 }
 
 #[derive(Debug, Deserialize)]
@@ -146,20 +240,36 @@ fn one() -> u64 {
 
 #[derive(Debug, Clone, Default, Deserialize)]
 #[serde(deny_unknown_fields)]
+struct OutputsSection {
+    #[serde(default)]
+    pairs: bool,
+    #[serde(default)]
+    accuracy: bool,
+    #[serde(default)]
+    cycles: bool,
+    #[serde(default)]
+    memory: bool,
+    #[serde(default)]
+    waveforms: Option<toml::Value>,
+    #[serde(default)]
+    cross_check: Option<CrossCheck>,
+}
+
+/// The outputs a scene asks for; each names a sink of [`graph::Plan`], and only what they
+/// need runs.
+#[derive(Debug, Clone, Default)]
 pub struct Outputs {
-    #[serde(default)]
+    /// List every pose's pairs (the summary table is always printed).
     pub pairs: bool,
-    #[serde(default)]
+    /// The exact oracle: misses and extra pairs.
     pub accuracy: bool,
-    /// Run every pose on the cycle model: clocks, stalls, time at the clock.
-    #[serde(default)]
+    /// Every pose on the cycle model: clocks, stalls, time at the clock.
     pub cycles: bool,
-    /// Directory for one traversal VCD per pose from the cycle model (implies `cycles`).
-    #[serde(default)]
-    pub waveforms: Option<std::path::PathBuf>,
-    /// Also run every pose at this level, in lockstep with the cycle model (implies
-    /// `cycles`).
-    #[serde(default)]
+    /// The memory model's traffic on the cycle model.
+    pub memory: bool,
+    /// Traversal VCDs from the cycle model.
+    pub waveforms: Option<Waveforms>,
+    /// Also every pose at this level, checked against the cycle model clock by clock.
     pub cross_check: Option<CrossCheck>,
 }
 
@@ -258,8 +368,12 @@ impl Scene {
             traversal: f.query.traversal.unwrap_or(Traversal::Lifo),
             poses,
             outputs: Outputs {
-                cycles: f.outputs.cycles || f.outputs.waveforms.is_some() || f.outputs.cross_check.is_some(),
-                ..f.outputs
+                pairs: f.outputs.pairs,
+                accuracy: f.outputs.accuracy,
+                cycles: f.outputs.cycles,
+                memory: f.outputs.memory,
+                waveforms: f.outputs.waveforms.map(Waveforms::of).transpose().map_err(err)?,
+                cross_check: f.outputs.cross_check,
             },
             params,
             clock_mhz,
@@ -309,6 +423,16 @@ mod tests {
         assert!(!s.poses.is_empty());
     }
 
+    /// Every scene shipped in vectors/scenes/ loads (meshes not read).
+    #[test]
+    fn shipped_scenes_parse() {
+        let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("vectors/scenes");
+        for e in std::fs::read_dir(&dir).unwrap() {
+            let p = e.unwrap().path();
+            Scene::load(&p).unwrap_or_else(|e| panic!("{e}"));
+        }
+    }
+
     #[test]
     fn errors_name_the_line() {
         let text = "[objects]\na = \"bunny\"\nb = \"bunny\"\n[chip]\nk = \"x\"\n";
@@ -327,18 +451,27 @@ mod tests {
         use crate::cycle::{MemTiming, Params};
         let base = "[objects]\na = \"sphere:12\"\nb = \"sphere:12\"\n[[pose]]\nrot_deg=[0,0,0]\nt=[0,0,0]\n";
         let s = Scene::parse(&format!("{base}[outputs]\nwaveforms = \"w\"\n[memory]\nlatency = 3\ninterval = 2\n"), "s").unwrap();
-        assert!(s.outputs.cycles, "waveforms imply cycles");
+        assert_eq!(s.outputs.waveforms, Some(Waveforms::all("w".into())));
+        assert!(!s.outputs.cycles, "waveforms alone need no counters");
         assert_eq!(s.params, Params { memory: MemTiming { latency: 3, interval: 2 }, ..Params::RTL });
         let s = Scene::parse(base, "s").unwrap();
         assert!(!s.outputs.cycles);
         assert_eq!((s.params, s.clock_mhz), (Params::RTL, 800.0));
         let s = Scene::parse(&format!("{base}[outputs]\ncross_check = \"rtl\"\n[timing]\ncredit = 4\nclock_mhz = 266\n"), "s").unwrap();
-        assert!(s.outputs.cycles && s.outputs.cross_check == Some(CrossCheck::Rtl));
+        assert!(s.outputs.cross_check == Some(CrossCheck::Rtl));
         assert_eq!((s.params.credit, s.clock_mhz), (4, 266.0));
         let e = Scene::parse(&format!("{base}[memory]\nlatency = 0\ninterval = 1\n"), "s").unwrap_err();
         assert!(e.contains("at least 1"), "{e}");
         let e = Scene::parse(&format!("{base}[timing]\nissue_spacing = 5\n"), "s").unwrap_err();
         assert!(e.contains("issue_spacing"), "{e}");
+        let e = Scene::parse(&format!("{base}[outputs]\nwaveforms = {{ dir = \"w\", scopes = [\"dcntr\"] }}\n"), "s").unwrap_err();
+        assert!(e.contains("no scope \"dcntr\"; the scopes are host, d_cntr"), "{e}");
+        let e = Scene::parse(&format!("{base}[outputs]\nwaveforms = {{ dir = \"w\", cycle = [5, 4] }}\n"), "s").unwrap_err();
+        assert!(e.contains("unknown key \"cycle\""), "{e}");
+        let e = Scene::parse(&format!("{base}[outputs]\nwaveforms = {{ dir = \"w\", cycles = [5, 4] }}\n"), "s").unwrap_err();
+        assert!(e.contains("is empty"), "{e}");
+        let s = Scene::parse(&format!("{base}[outputs]\nwaveforms = {{ dir = \"w\", cycles = [5, 5] }}\n"), "s").unwrap();
+        assert_eq!(s.outputs.waveforms.unwrap().window, 5..6);
         let e = Scene::parse(&format!("{base}[memory]\nlatncy = 2\n"), "s").unwrap_err();
         assert!(e.starts_with("s:8:"), "{e}");
         let rtl = Scene::parse(include_str!("../../vectors/scenes/rtl_spheres.toml"), "rtl_spheres").unwrap();

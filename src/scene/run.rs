@@ -1,0 +1,361 @@
+//! Runs a scene by its [`Plan`]: the units the plan keeps are built and run, the others not
+//! at all; [`Activity`] counts what ran, so that tests can prove it.
+
+use super::graph::{Plan, Unit};
+use super::{CrossCheck, Scene, ScenePose};
+use crate::cycle::{self, drive::Reader};
+use crate::harness::{chip_io, verilator};
+use crate::oracle;
+use crate::query::{place, Accuracy, Chip};
+use crate::report::{CycleRecord, MemoryRecord, PoseRecord};
+use crate::traversal::{Mode, QueryResult, Traversal};
+use serde::Serialize;
+use std::sync::atomic::{AtomicU64, Ordering::Relaxed};
+
+/// What a scene run built and ran (counted where it happens, not inferred from the
+/// outputs).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize)]
+pub struct Activity {
+    /// Golden-model queries (with the host settling their uncertain pairs).
+    pub golden_queries: u64,
+    /// Exact-oracle queries (all pairs of a pose).
+    pub oracle_queries: u64,
+    /// Cycle-model queries, and how many of them counted where the clocks went.
+    pub cycle_runs: u64,
+    pub counted_runs: u64,
+    /// Clocks the cycle model stepped or skipped.
+    pub cycle_clocks: u64,
+    /// Traversal VCD files written.
+    pub vcd_files: u64,
+    /// Poses run by rust-hdl, and by the exported Verilog.
+    pub rtl_runs: u64,
+    pub verilog_runs: u64,
+}
+
+#[derive(Default)]
+struct Counts([AtomicU64; 8]);
+
+impl Counts {
+    fn add(&self, k: usize, n: u64) {
+        self.0[k].fetch_add(n, Relaxed);
+    }
+
+    fn snapshot(&self) -> Activity {
+        let v: Vec<u64> = self.0.iter().map(|a| a.load(Relaxed)).collect();
+        Activity {
+            golden_queries: v[0],
+            oracle_queries: v[1],
+            cycle_runs: v[2],
+            counted_runs: v[3],
+            cycle_clocks: v[4],
+            vcd_files: v[5],
+            rtl_runs: v[6],
+            verilog_runs: v[7],
+        }
+    }
+}
+
+/// A scene ready to run: meshes loaded, the chip's images built, everything the plan needs
+/// checked before anything is simulated.
+pub struct Prepared<'s> {
+    pub scene: &'s Scene,
+    pub plan: Plan,
+    pub chip: Chip,
+    pub a: Vec<oracle::Tri>,
+    pub b: Vec<oracle::Tri>,
+    /// The exported chip's Verilator binary (a Verilog cross-check).
+    verilog: Option<std::path::PathBuf>,
+}
+
+/// The result of a scene run.
+pub struct SceneRun {
+    pub records: Vec<PoseRecord>,
+    pub activity: Activity,
+}
+
+/// A bound on one query's clocks on the cycle model (waits are skipped, so a long memory
+/// latency costs no time; the bound only catches a hung model).
+const CYCLE_MAX: u64 = 1 << 50;
+
+impl<'s> Prepared<'s> {
+    /// Loads and checks; errors name the scene. `load` reads a mesh spec (scaled into the
+    /// unit cube if the scene says so).
+    pub fn new(scene: &'s Scene, load: impl Fn(&str) -> Result<crate::mesh::Mesh, String>) -> Result<Self, String> {
+        let named = |e: String| format!("{}: {e}", scene.name);
+        let plan = Plan::of(scene);
+        if plan.runs(Unit::DCntr) && !matches!(scene.traversal, Traversal::Fifo | Traversal::Lifo) {
+            return Err(named(format!(
+                "cycles, memory, waveforms and cross-checks come from the chip's D_CNTR, which runs the fifo or lifo traversal, not {:?}: set [query] traversal",
+                scene.traversal
+            )));
+        }
+        if plan.cross_check.is_some() {
+            chip_io::rtl_order(&scene.cfg, scene.traversal, &scene.params).map_err(named)?;
+        }
+        if let Some(w) = scene.outputs.waveforms.as_ref().filter(|w| w.dir.is_file()) {
+            return Err(named(format!("waveforms: {} is a file; give a directory for the VCD files", w.dir.display())));
+        }
+        let (ma, mb) = (load(&scene.objects.a).map_err(named)?, load(&scene.objects.b).map_err(named)?);
+        let (a, b) = (ma.triangles_f64(), mb.triangles_f64());
+        let chip = Chip::new(&a, &b, scene.cfg).map_err(named)?;
+        scene.poses.iter().try_for_each(|sp| chip.check_pose(&sp.pose)).map_err(named)?;
+        if plan.cross_check.is_some() {
+            // the images the RTL reads: node ids and memory words within its widths
+            chip_io::QueryImage::new(&chip.a, &chip.b, &chip.setup(&scene.poses[0].pose), true, scene.mode).map_err(named)?;
+        }
+        let verilog = match plan.cross_check {
+            Some(CrossCheck::Verilog) => {
+                verilator::check_size(&chip).map_err(named)?;
+                Some(verilator::chip_binary().map_err(named)?)
+            }
+            _ => None,
+        };
+        Ok(Prepared { scene, plan, chip, a, b, verilog })
+    }
+
+    /// Runs every pose: the golden queries one at a time (their time is the software's on an
+    /// otherwise idle machine), the rest on every core; `progress` after each pose.
+    pub fn run(&self, progress: impl Fn() + Sync) -> Result<SceneRun, String> {
+        let s = self.scene;
+        let counts = Counts::default();
+        let golden: Vec<(QueryResult, f64)> = s
+            .poses
+            .iter()
+            .map(|sp| {
+                let t0 = std::time::Instant::now();
+                let res = self.chip.query(&sp.pose, s.mode, s.traversal);
+                counts.add(0, 1);
+                (res, t0.elapsed().as_secs_f64() * 1e6)
+            })
+            .collect();
+        let records = parallel_map(&s.poses, |i, sp| {
+            let r = self.pose(i, sp, &golden[i], &counts);
+            progress();
+            r
+        })
+        .into_iter()
+        .collect::<Result<Vec<_>, String>>()
+        .map_err(|e| format!("{}: {e}", s.name))?;
+        Ok(SceneRun { records, activity: counts.snapshot() })
+    }
+
+    /// One pose after its golden query: the exact oracle and the cycle model (with what
+    /// hangs on it) as the plan says.
+    fn pose(&self, i: usize, sp: &ScenePose, golden: &(QueryResult, f64), counts: &Counts) -> Result<PoseRecord, String> {
+        let (res, software_us) = (&golden.0, golden.1);
+        let exact = self.plan.runs(Unit::ExactOracle).then(|| {
+            counts.add(1, 1);
+            oracle::intersecting_pairs(&self.a, &place(&self.b, &sp.pose))
+        });
+        let cycles = match self.plan.runs(Unit::DCntr) {
+            false => None,
+            true => Some(self.cycles(i, sp, res, software_us, counts)?),
+        };
+        Ok(PoseRecord {
+            pose: sp.pose,
+            distance: sp.distance,
+            pair_count: res.pairs.len(),
+            accuracy: exact.as_ref().map(|x| Accuracy::of(self.scene.mode, &res.pairs, x)),
+            exact_pair_count: exact.as_ref().map(Vec::len),
+            pairs: self.scene.outputs.pairs.then(|| res.pairs.clone()),
+            counters: res.counters,
+            cycles,
+        })
+    }
+
+    fn cycles(&self, i: usize, sp: &ScenePose, res: &QueryResult, software_us: f64, counts: &Counts) -> Result<CycleRecord, String> {
+        let (s, plan, chip) = (self.scene, &self.plan, &self.chip);
+        let lifo = s.traversal == Traversal::Lifo;
+        let setup = chip.setup(&sp.pose);
+        let wave = s.outputs.waveforms.as_ref().filter(|_| plan.runs(Unit::WaveformWriter));
+        let vcd = wave.map(|w| w.dir.join(format!("pose{i}.vcd")));
+        // the exported Verilog's ports, recorded from the cycle model's probes
+        let mut ports = verilator::PortLog::default();
+        let mut observe = |t: u64, v: &[u64]| {
+            ports.record(t, v);
+            Ok(())
+        };
+        let rec = cycle::Record {
+            counters: plan.runs(Unit::Counters),
+            vcd: vcd.as_deref().zip(wave).map(|(p, w)| (p, &w.scopes[..], w.window.clone())),
+            probes: self.verilog.as_ref().map(|_| &mut observe as &mut dyn FnMut(u64, &[u64]) -> Result<(), String>),
+        };
+        let (trace, stats) = cycle::run_query(chip, &setup, lifo, s.mode, s.params, Reader::default(), CYCLE_MAX, rec)
+            .map_err(|e| format!("pose {i}: {e}"))?;
+        counts.add(2, 1);
+        counts.add(3, stats.is_some() as u64);
+        counts.add(4, trace.cycles);
+        counts.add(5, vcd.is_some() as u64);
+        if plan.runs(Unit::GoldenCheck) {
+            let golden_all = match s.mode {
+                Mode::All => res.clone(),
+                Mode::First => chip.query(&sp.pose, Mode::All, s.traversal),
+            };
+            // an overflow is the chip's answer (incomplete, flagged), not a disagreement
+            if let Err(e) = trace.check(s.mode, &golden_all).or_else(|e| if trace.overflow { Ok(()) } else { Err(e) }) {
+                return Err(format!("pose {i}: the cycle model disagrees with the golden model: {e}"));
+            }
+        }
+        let cross_checked = match plan.cross_check {
+            None => None,
+            Some(CrossCheck::Rtl) => {
+                let hours = trace.cycles as f64 / chip_io::RTL_CLOCKS_PER_SECOND / 3600.0;
+                if hours > 0.5 {
+                    return Err(format!(
+                        "pose {i}: the rust-hdl cross-check would take about {hours:.1} hours ({} clocks at ~{} clocks/s); use smaller meshes (e.g. vectors/scenes/rtl_spheres.toml), cross_check = \"verilog\", or drop cross_check",
+                        trace.cycles,
+                        chip_io::RTL_CLOCKS_PER_SECOND
+                    ));
+                }
+                let rtl = chip_io::cross_check(chip, &sp.pose, s.mode, s.traversal, s.params, 2 * trace.cycles + 1000)
+                    .map_err(|e| format!("pose {i}: rust-hdl and the cycle model differ: {e}"))?;
+                counts.add(6, 1);
+                if rtl != trace {
+                    return Err(format!("pose {i}: rust-hdl's trace differs from the cycle model's:\n{}\n{}", rtl.text(), trace.text()));
+                }
+                Some(CrossCheck::Rtl)
+            }
+            Some(CrossCheck::Verilog) => {
+                let bin = self.verilog.as_deref().expect("built in Prepared::new");
+                let image = chip_io::QueryImage::new(&chip.a, &chip.b, &setup, lifo, s.mode).map_err(|e| format!("pose {i}: {e}"))?;
+                let dir = verilator::work_dir().join(format!("pose{i}"));
+                verilator::cross_check(bin, &dir, &image, s.params.memory, 2 * trace.cycles + 1000, &ports, &trace)
+                    .map_err(|e| format!("pose {i}: {e}"))?;
+                counts.add(7, 1);
+                Some(CrossCheck::Verilog)
+            }
+        };
+        let (hits, unc) = trace.pairs();
+        let layout = &chip.layout;
+        Ok(CycleRecord {
+            cycles: trace.cycles,
+            chip_us: trace.cycles as f64 / s.clock_mhz,
+            software_us,
+            hits: hits.len(),
+            uncertain: unc.len(),
+            max_entries: trace.max_depth,
+            overflow: trace.overflow,
+            memory: MemoryRecord {
+                node_words: trace.node_fetches,
+                tri_words: trace.tri_fetches,
+                bytes: trace.node_fetches * layout.node_bytes() + trace.tri_fetches * layout.tri_bytes(),
+            },
+            stats,
+            vcd: vcd.map(|p| p.display().to_string()),
+            cross_checked: cross_checked.map(|c| c.to_string()),
+        })
+    }
+}
+
+/// `f` over `items` on every core, results in the items' order (the output of a parallel
+/// run is the serial run's).
+pub fn parallel_map<T: Sync, R: Send>(items: &[T], f: impl Fn(usize, &T) -> R + Sync) -> Vec<R> {
+    let threads = std::thread::available_parallelism().map_or(1, |n| n.get()).min(items.len().max(1));
+    let next = AtomicU64::new(0);
+    let mut out: Vec<(usize, R)> = std::thread::scope(|s| {
+        let workers: Vec<_> = (0..threads)
+            .map(|_| {
+                s.spawn(|| {
+                    let mut mine = vec![];
+                    loop {
+                        let i = next.fetch_add(1, Relaxed) as usize;
+                        let Some(item) = items.get(i) else { break };
+                        mine.push((i, f(i, item)));
+                    }
+                    mine
+                })
+            })
+            .collect();
+        workers.into_iter().flat_map(|w| w.join().expect("a pose's thread panicked")).collect()
+    });
+    out.sort_by_key(|(i, _)| *i);
+    out.into_iter().map(|(_, r)| r).collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const BASE: &str = "[objects]\na = \"sphere:80\"\nb = \"torus:60\"\n[chip]\nk = 14\n[sweep]\ndistances = [1.2, 0.6]\norientations = 2\n";
+
+    fn run(outputs: &str) -> (Plan, SceneRun) {
+        let s = Scene::parse(&format!("{BASE}[outputs]\n{outputs}"), "test").unwrap();
+        let p = Prepared::new(&s, |spec| crate::mesh::resolve(spec).map_err(|e| e.to_string())).unwrap();
+        let r = p.run(|| ()).unwrap();
+        (p.plan, r)
+    }
+
+    fn vcd_dir(tag: &str) -> std::path::PathBuf {
+        std::env::temp_dir().join(format!("cchip-plan-{tag}-{}", std::process::id()))
+    }
+
+    /// What was not asked for is not built: counted where each unit runs.
+    #[test]
+    fn only_what_the_outputs_need_runs() {
+        let (plan, pairs) = run("");
+        let kept: Vec<Unit> = plan.kept.iter().copied().collect();
+        assert_eq!(kept, [Unit::Meshes, Unit::HostTrees, Unit::HostSetup, Unit::Golden, Unit::HostSettle, Unit::OutPairs]);
+        assert_eq!(pairs.activity, Activity { golden_queries: 4, ..Default::default() });
+        assert!(pairs.records.iter().all(|r| r.cycles.is_none() && r.accuracy.is_none()));
+
+        let (_, acc) = run("accuracy = true");
+        assert_eq!(acc.activity, Activity { golden_queries: 4, oracle_queries: 4, ..Default::default() });
+
+        let (_, cyc) = run("cycles = true");
+        let a = cyc.activity;
+        assert_eq!((a.oracle_queries, a.cycle_runs, a.counted_runs, a.vcd_files), (0, 4, 4, 0));
+        assert!(a.cycle_clocks > 1000);
+
+        let dir = vcd_dir("only");
+        let (wplan, wave) = run(&format!("waveforms = {{ dir = {:?}, scopes = [\"memory\"], cycles = [10, 40] }}", dir.display().to_string()));
+        assert!(!wplan.runs(Unit::Counters) && !wplan.runs(Unit::GoldenCheck) && wplan.runs(Unit::WaveformWriter));
+        let a = wave.activity;
+        assert_eq!((a.oracle_queries, a.cycle_runs, a.counted_runs, a.vcd_files), (0, 4, 0, 4));
+        let vcd = std::fs::read_to_string(dir.join("pose3.vcd")).unwrap();
+        let _ = std::fs::remove_dir_all(&dir);
+        assert!(vcd.contains("$scope module memory $end") && !vcd.contains("$scope module d_cntr $end"), "{vcd}");
+        let times: Vec<u64> = vcd.lines().filter_map(|l| l.strip_prefix('#')?.parse().ok()).collect();
+        assert!(times.first() == Some(&10) && times.iter().all(|t| (10..=40).contains(t)), "{times:?}");
+
+        let (_, mem) = run("memory = true");
+        let a = mem.activity;
+        assert_eq!((a.oracle_queries, a.cycle_runs, a.counted_runs, a.vcd_files), (0, 4, 4, 0));
+    }
+
+    /// Asking for more never changes the pairs or the cycles.
+    #[test]
+    fn more_outputs_change_nothing() {
+        let (_, pairs) = run("");
+        let (_, cyc) = run("cycles = true");
+        let dir = vcd_dir("all");
+        let (_, all) = run(&format!("cycles = true\nmemory = true\naccuracy = true\npairs = true\nwaveforms = {:?}", dir.display().to_string()));
+        let _ = std::fs::remove_dir_all(&dir);
+        assert_eq!(all.activity.vcd_files, 4);
+        for ((p, c), x) in pairs.records.iter().zip(&cyc.records).zip(&all.records) {
+            assert_eq!((p.pair_count, p.counters), (x.pair_count, x.counters));
+            let (c, x) = (c.cycles.as_ref().unwrap(), x.cycles.as_ref().unwrap());
+            assert_eq!((c.cycles, c.hits, c.uncertain, c.memory.bytes, c.stats), (x.cycles, x.hits, x.uncertain, x.memory.bytes, x.stats));
+            assert_eq!(x.memory.bytes > 0, c.cycles > 100);
+        }
+    }
+
+    #[test]
+    fn explain_shows_what_each_scene_builds() {
+        let explain = |o: &str| {
+            let s = Scene::parse(&format!("{BASE}[outputs]\n{o}"), "test").unwrap();
+            Plan::of(&s).explain(&s)
+        };
+        let pairs = explain("");
+        assert!(pairs.contains("skipped (not built, not run): exact_oracle, accuracy_counter, d_cntr"), "{pairs}");
+        for o in ["cycles = true", "waveforms = \"w\"", "accuracy = true", "memory = true"] {
+            assert_ne!(explain(o), pairs, "{o}");
+        }
+        assert!(explain("cycles = true").contains("stage 6 (clocked together, every clock)\n  d_cntr"));
+        assert!(!explain("waveforms = \"w\"").contains("  counters "));
+        let rtl = Plan::of(&Scene::parse(&format!("{BASE}[outputs]\ncross_check = \"rtl\""), "t").unwrap());
+        let ver = Plan::of(&Scene::parse(&format!("{BASE}[outputs]\ncross_check = \"verilog\""), "t").unwrap());
+        assert!(rtl.runs(Unit::RtlChip) && !rtl.runs(Unit::VerilogChip) && rtl.runs(Unit::DCntr));
+        assert!(ver.runs(Unit::VerilogChip) && !ver.runs(Unit::RtlChip) && !ver.runs(Unit::ExactOracle));
+        assert!(Plan::of(&Scene::parse(BASE, "t").unwrap()).dot().contains("exact_oracle [label=\"exact_oracle\\nfunctional\", shape=box, style=\"dashed\""));
+    }
+}
