@@ -4,7 +4,8 @@
 //!
 //! Two sources, both giving [`Case`]s:
 //! - the **catalogue** `vectors/hard-cases/*.toml` (one case per file, literal tiny meshes,
-//!   the expected pairs reasoned out by hand and stated in the file), see [`load`];
+//!   the expected pairs and TRI_UNIT's verdict on every pair per format reasoned out by
+//!   hand and stated in the file), see [`load`];
 //! - **generators** (proptest-free, deterministic: every parameter explicit), one per
 //!   family, which build a configuration in a local unit frame from dyadic numbers and put
 //!   it somewhere with a [`Placement`] (power-of-two scale, dyadic offset, quarter turns).
@@ -23,14 +24,28 @@
 //! a = [ [[0,0,0],[1,0,0],[0,1,0]] ]    # triangles of A (f64)
 //! b = [ [[0.25,0.25,0],[0.25,0.25,1],[1,1,1]] ]   # triangles of B, in B's frame
 //! expected = [[0, 0]]                  # exact intersecting pairs (a, b), sorted, closed triangles
+//!
+//! [verdict]         # TRI_UNIT's verdict on every pair per format, derived by hand (docs/ACCURACY.md)
+//! binary32 = "uncertain"                # intersecting, separate, uncertain, or a documented
+//! e8m15 = "uncertain"                   # intersecting-or-uncertain / separate-or-uncertain
+//! why = "B's apex is in A's plane: its height is exactly 0"
+//! [[verdict.exception]]                 # optional: other verdicts for some pairs
+//! pairs = [[0, 0]]
+//! binary32 = "separate"
+//! e8m15 = "separate"
+//! why = "one line: the deciding value, its margin and its error"
 //! ```
 
+use crate::format::Format;
+use crate::golden::tcheck::TriResult;
 use crate::oracle::{self, Tri};
 use crate::pose::Pose;
 use crate::query::place;
 use nalgebra::{Point3, Vector3};
 use serde::Deserialize;
+use std::ops::Range;
 use std::path::{Path, PathBuf};
+use toml::Spanned;
 
 /// The families of the catalogue (each has at least one case).
 pub const FAMILIES: [&str; 13] = [
@@ -49,8 +64,82 @@ pub const FAMILIES: [&str; 13] = [
     "scale-ratio",
 ];
 
+/// The formats a catalogue file states TRI_UNIT's verdicts for (the file's keys are their
+/// names: `binary32`, `e8m15`), the formats the chip tests in tb/hard_cases.rs use.
+pub const VERDICT_FORMATS: [Format; 2] = [Format::BINARY32, Format::REDUCED];
+
+/// TRI_UNIT's verdict on one pair, as a catalogue file states it: derived by hand from the
+/// geometry (docs/ACCURACY.md, "Expected verdicts"), not taken from the chip. The two
+/// "or uncertain" verdicts are for margins too close to the error bound to call by hand.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Verdict {
+    Intersecting,
+    Separate,
+    Uncertain,
+    IntersectingOrUncertain,
+    SeparateOrUncertain,
+}
+
+impl Verdict {
+    /// TRI_UNIT's answer as a verdict (intersecting, separate or uncertain).
+    pub fn of(r: TriResult) -> Verdict {
+        match (r.uncertain, r.hit) {
+            (true, _) => Verdict::Uncertain,
+            (false, true) => Verdict::Intersecting,
+            (false, false) => Verdict::Separate,
+        }
+    }
+
+    /// Whether TRI_UNIT's verdict `got` (one of the three of [`Verdict::of`]) is this one.
+    pub fn admits(self, got: Verdict) -> bool {
+        match self {
+            Verdict::IntersectingOrUncertain => matches!(got, Verdict::Intersecting | Verdict::Uncertain),
+            Verdict::SeparateOrUncertain => matches!(got, Verdict::Separate | Verdict::Uncertain),
+            v => v == got,
+        }
+    }
+
+    /// Whether the verdict can be right for a pair that does (or does not) intersect.
+    pub fn fits(self, intersects: bool) -> bool {
+        match self {
+            Verdict::Intersecting | Verdict::IntersectingOrUncertain => intersects,
+            Verdict::Separate | Verdict::SeparateOrUncertain => !intersects,
+            Verdict::Uncertain => true,
+        }
+    }
+
+    /// The verdict with "or uncertain" added to a decided one.
+    pub fn or_uncertain(self) -> Verdict {
+        match self {
+            Verdict::Intersecting => Verdict::IntersectingOrUncertain,
+            Verdict::Separate => Verdict::SeparateOrUncertain,
+            v => v,
+        }
+    }
+
+    /// The name used in catalogue files.
+    pub fn name(self) -> &'static str {
+        match self {
+            Verdict::Intersecting => "intersecting",
+            Verdict::Separate => "separate",
+            Verdict::Uncertain => "uncertain",
+            Verdict::IntersectingOrUncertain => "intersecting-or-uncertain",
+            Verdict::SeparateOrUncertain => "separate-or-uncertain",
+        }
+    }
+}
+
+/// The stated verdicts of one pair `(a index, b index)`, per format of [`VERDICT_FORMATS`].
+#[derive(Clone, Debug, PartialEq)]
+pub struct PairVerdict {
+    pub pair: (u32, u32),
+    pub verdicts: [Verdict; 2],
+    pub why: String,
+}
+
 /// One hard case: A's triangles, B's triangles in B's frame, the pose placing B in A's frame,
-/// and the exact intersecting pairs `(a index, b index)`, sorted.
+/// the exact intersecting pairs `(a index, b index)`, sorted, and TRI_UNIT's verdicts.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Case {
     pub name: String,
@@ -60,6 +149,9 @@ pub struct Case {
     pub a: Vec<Tri>,
     pub b: Vec<Tri>,
     pub expected: Vec<(u32, u32)>,
+    /// Every pair's verdicts, sorted by pair (catalogue cases and their exact variants);
+    /// empty for generated or moved cases, whose verdicts nobody derived.
+    pub verdicts: Vec<PairVerdict>,
 }
 
 #[derive(Deserialize)]
@@ -73,6 +165,27 @@ struct File {
     a: Vec<[[f64; 3]; 3]>,
     b: Vec<[[f64; 3]; 3]>,
     expected: Vec<[u32; 2]>,
+    verdict: Option<VerdictTable>,
+}
+
+/// `[verdict]`: the verdict of every pair, but those of the exceptions.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct VerdictTable {
+    binary32: Spanned<Verdict>,
+    e8m15: Spanned<Verdict>,
+    why: Spanned<String>,
+    #[serde(default)]
+    exception: Vec<VerdictException>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct VerdictException {
+    pairs: Spanned<Vec<[u32; 2]>>,
+    binary32: Spanned<Verdict>,
+    e8m15: Spanned<Verdict>,
+    why: Spanned<String>,
 }
 
 fn tris(v: &[[[f64; 3]; 3]]) -> Vec<Tri> {
@@ -87,11 +200,10 @@ pub fn load(path: &Path) -> Result<Case, String> {
 
 /// Parses a catalogue file's text; `name` (the file name) is used in error messages.
 pub fn parse(text: &str, name: &str) -> Result<Case, String> {
-    let f: File = toml::from_str(text).map_err(|e| {
-        match e.span().map(|s| text[..s.start].matches('\n').count() + 1) {
-            Some(l) => format!("{name}:{l}: {}", e.message()),
-            None => format!("{name}: {}", e.message()),
-        }
+    let line = |s: &Range<usize>| text[..s.start].matches('\n').count() + 1;
+    let f: File = toml::from_str(text).map_err(|e| match e.span() {
+        Some(s) => format!("{name}:{}: {}", line(&s), e.message()),
+        None => format!("{name}: {}", e.message()),
     })?;
     let err = |m: String| format!("{name}: {m}");
     if f.name.trim().is_empty() || f.why.trim().is_empty() {
@@ -118,7 +230,63 @@ pub fn parse(text: &str, name: &str) -> Result<Case, String> {
     if expected.windows(2).any(|w| w[0] >= w[1]) {
         return Err(err("`expected` must be sorted ascending without duplicates".into()));
     }
-    Ok(Case { name: f.name, family: f.family, why: f.why, pose: f.pose, a: tris(&f.a), b: tris(&f.b), expected })
+    let Some(vt) = f.verdict else {
+        return Err(err("no [verdict] table: every hard case states TRI_UNIT's verdict on its pairs in binary32 and e8m15, and why (docs/ACCURACY.md)".into()));
+    };
+    let verdicts = pair_verdicts(vt, (f.a.len(), f.b.len()), &expected, &|s, m| format!("{name}:{}: {m}", line(s)))?;
+    Ok(Case { name: f.name, family: f.family, why: f.why, pose: f.pose, a: tris(&f.a), b: tris(&f.b), expected, verdicts })
+}
+
+/// Every pair's verdicts from `[verdict]` (`dims` = triangles of A and B), checked against
+/// `expected`; `at(span, message)` names the file and line.
+fn pair_verdicts(
+    vt: VerdictTable,
+    dims: (usize, usize),
+    expected: &[(u32, u32)],
+    at: &dyn Fn(&Range<usize>, String) -> String,
+) -> Result<Vec<PairVerdict>, String> {
+    type Stated = (PairVerdict, [Range<usize>; 2], bool);
+    let entry = |pair, b32: &Spanned<Verdict>, e8: &Spanned<Verdict>, why: &Spanned<String>| -> Result<Stated, String> {
+        if why.get_ref().trim().is_empty() {
+            return Err(at(&why.span(), "the verdict's `why` must not be empty".into()));
+        }
+        let pv = PairVerdict { pair, verdicts: [*b32.get_ref(), *e8.get_ref()], why: why.get_ref().clone() };
+        Ok((pv, [b32.span(), e8.span()], false))
+    };
+    let mut all = Vec::with_capacity(dims.0 * dims.1);
+    for i in 0..dims.0 as u32 {
+        for j in 0..dims.1 as u32 {
+            all.push(entry((i, j), &vt.binary32, &vt.e8m15, &vt.why)?);
+        }
+    }
+    for ex in &vt.exception {
+        if ex.pairs.get_ref().is_empty() {
+            return Err(at(&ex.pairs.span(), "an exception needs at least one pair".into()));
+        }
+        for p in ex.pairs.get_ref() {
+            let (i, j) = (p[0] as usize, p[1] as usize);
+            if i >= dims.0 || j >= dims.1 {
+                return Err(at(&ex.pairs.span(), format!("exception pair [{i}, {j}] is out of range ({} x {} triangles)", dims.0, dims.1)));
+            }
+            let slot = &mut all[i * dims.1 + j];
+            if slot.2 {
+                return Err(at(&ex.pairs.span(), format!("pair [{i}, {j}] is in two exceptions")));
+            }
+            *slot = entry((p[0], p[1]), &ex.binary32, &ex.e8m15, &ex.why)?;
+            slot.2 = true;
+        }
+    }
+    for (pv, spans, _) in &all {
+        let hit = expected.contains(&pv.pair);
+        for (k, v) in pv.verdicts.iter().enumerate() {
+            if !v.fits(hit) {
+                let (i, j) = pv.pair;
+                let truth = if hit { "intersects" } else { "does not intersect" };
+                return Err(at(&spans[k], format!("{} verdict `{}` for pair [{i}, {j}], which {truth} (`expected`): a decided verdict must be exact", VERDICT_FORMATS[k], v.name())));
+            }
+        }
+    }
+    Ok(all.into_iter().map(|e| e.0).collect())
 }
 
 /// `CARGO_MANIFEST_DIR/vectors/hard-cases`.
@@ -198,16 +366,28 @@ impl Case {
     }
 
     /// Replaces `expected` by the oracle's answer (for geometry whose answer is not known by
-    /// construction).
+    /// construction) and drops the verdicts (derived for the original geometry only).
     pub fn with_oracle_expected(mut self) -> Case {
         self.expected = self.oracle_pairs();
+        self.verdicts.clear();
         self
+    }
+
+    /// The stated verdict of `pair` in `format` and why; None if the case states none.
+    pub fn verdict(&self, pair: (u32, u32), format: Format) -> Option<(Verdict, &str)> {
+        let k = VERDICT_FORMATS.iter().position(|&f| f == format)?;
+        let i = self.verdicts.binary_search_by_key(&pair, |v| v.pair).ok()?;
+        Some((self.verdicts[i].verdicts[k], self.verdicts[i].why.as_str()))
     }
 
     /// A and B exchanged with the identity pose: A' = B placed, B' = A. Always exact.
     pub fn swapped(&self) -> Case {
         let mut expected: Vec<(u32, u32)> = self.expected.iter().map(|&(i, j)| (j, i)).collect();
         expected.sort_unstable();
+        // Swapping only relabels TRI_UNIT's two directions: the derivations carry over.
+        let mut verdicts: Vec<PairVerdict> =
+            self.verdicts.iter().map(|v| PairVerdict { pair: (v.pair.1, v.pair.0), ..v.clone() }).collect();
+        verdicts.sort_unstable_by_key(|v| v.pair);
         Case {
             name: format!("{} (swapped)", self.name),
             family: self.family.clone(),
@@ -216,6 +396,7 @@ impl Case {
             a: self.placed_b(),
             b: self.a.clone(),
             expected,
+            verdicts,
         }
     }
 
@@ -254,17 +435,26 @@ impl Case {
     }
 
     /// The vertices of every triangle of A reordered by `VERTEX_ORDERS[oa]`, of B by
-    /// `VERTEX_ORDERS[ob]`. The same closed sets: the answer must not change.
+    /// `VERTEX_ORDERS[ob]`. The same closed sets: the answer must not change. A decided
+    /// verdict may become uncertain (unless the order is unchanged): a unit-triangle map
+    /// that starts at another vertex has another translation, so its terms change size
+    /// (vv-gap-2e-30 is decided only while B's map starts at its apex, docs/ACCURACY.md).
     pub fn with_vertex_orders(&self, oa: usize, ob: usize) -> Case {
         let (pa, pb) = (VERTEX_ORDERS[oa], VERTEX_ORDERS[ob]);
         let mut c = self.clone();
         c.name = format!("{} (vertex orders {pa:?} {pb:?})", self.name);
         c.a = self.a.iter().map(|t| pa.map(|i| t[i])).collect();
         c.b = self.b.iter().map(|t| pb.map(|i| t[i])).collect();
+        if oa + ob > 0 {
+            for v in &mut c.verdicts {
+                v.verdicts = v.verdicts.map(Verdict::or_uncertain);
+            }
+        }
         c
     }
 
-    /// A and B placed, both mapped by `m`, identity pose. Exact, so the answer must not change.
+    /// A and B placed, both mapped by `m`, identity pose. Exact, so the answer must not change
+    /// (nor the verdicts: floating point is blind to power-of-two scales and axis changes).
     pub fn mapped(&self, m: &ExactMap) -> Case {
         let mut c = self.clone();
         c.name = format!("{} (mapped by {m:?})", self.name);
@@ -345,7 +535,7 @@ impl Placement {
             .map(|t| t.map(|l| Point3::from(rt * Vector3::new(self.scaled(l[0]), self.scaled(l[1]), self.scaled(l[2])))))
             .collect();
         assert_eq!(place(&b_own, &pose), b_placed, "placement of B is not exact ({self:?})");
-        Case { name: format!("{name} at {self:?}"), family: family.into(), why: why.into(), pose, a, b: b_own, expected }
+        Case { name: format!("{name} at {self:?}"), family: family.into(), why: why.into(), pose, a, b: b_own, expected, verdicts: vec![] }
     }
 }
 
@@ -540,15 +730,50 @@ pub fn tetra_on_square(p: &Placement, apex: [f64; 2], h: f64) -> Case {
 mod tests {
     use super::*;
 
+    const V: &str = "[verdict]\nbinary32 = \"uncertain\"\ne8m15 = \"uncertain\"\nwhy = \"w\"\n";
+
     #[test]
     fn parse_errors_name_file_and_line() {
         let e = parse("name = \"x\"\nfamily = \"vertex-face\"\nwhy = 3\n", "f.toml").unwrap_err();
         assert!(e.starts_with("f.toml:3:"), "{e}");
         let ok = "name = \"x\"\nfamily = \"vertex-face\"\nwhy = \"y\"\na = [[[0,0,0],[1,0,0],[0,1,0]]]\nb = [[[0,0,0],[1,0,0],[0,1,0]]]\n";
-        assert!(parse(&format!("{ok}expected = [[0, 1]]\n"), "f.toml").unwrap_err().contains("out of range"));
-        assert!(parse(&format!("{ok}expected = [[0, 0], [0, 0]]\n"), "f.toml").unwrap_err().contains("sorted"));
-        assert!(parse(&format!("{ok}expected = []\n").replace("vertex-face", "nope"), "f.toml").unwrap_err().contains("unknown"));
-        assert_eq!(parse(&format!("{ok}expected = [[0, 0]]\n"), "f.toml").unwrap().expected, vec![(0, 0)]);
+        assert!(parse(&format!("{ok}expected = [[0, 1]]\n{V}"), "f.toml").unwrap_err().contains("out of range"));
+        assert!(parse(&format!("{ok}expected = [[0, 0], [0, 0]]\n{V}"), "f.toml").unwrap_err().contains("sorted"));
+        assert!(parse(&format!("{ok}expected = []\n{V}").replace("vertex-face", "nope"), "f.toml").unwrap_err().contains("unknown"));
+        assert_eq!(parse(&format!("{ok}expected = [[0, 0]]\n{V}"), "f.toml").unwrap().expected, vec![(0, 0)]);
+    }
+
+    #[test]
+    fn verdict_errors_name_file_and_line() {
+        assert_eq!(VERDICT_FORMATS.map(|f| f.to_string()), ["binary32", "e8m15"], "the files' keys");
+        // Two triangles of A, one of B; pair (1, 0) intersects.
+        let head = "name = \"x\"\nfamily = \"vertex-face\"\nwhy = \"y\"\na = [[[0,0,0],[1,0,0],[0,1,0]], [[0,0,0],[1,0,0],[0,1,0]]]\nb = [[[0,0,0],[1,0,0],[0,1,0]]]\nexpected = [[1, 0]]\n";
+        let e = parse(head, "f.toml").unwrap_err();
+        assert!(e.starts_with("f.toml: no [verdict] table"), "{e}");
+        let e = parse(&format!("{head}{}", V.replace("e8m15 = \"uncertain\"", "e8m15 = \"maybe\"")), "f.toml").unwrap_err();
+        assert!(e.starts_with("f.toml:9:") && e.contains("maybe"), "{e}");
+        let e = parse(&format!("{head}{}", V.replace("e8m15 = \"uncertain\"\n", "")), "f.toml").unwrap_err();
+        assert!(e.starts_with("f.toml:7:") && e.contains("e8m15"), "{e}");
+        // The default says separate, which pair (1, 0) contradicts.
+        let e = parse(&format!("{head}{}", V.replace("e8m15 = \"uncertain\"", "e8m15 = \"separate-or-uncertain\"")), "f.toml").unwrap_err();
+        assert!(e.starts_with("f.toml:9: e8m15 verdict `separate-or-uncertain` for pair [1, 0], which intersects"), "{e}");
+        let ex = |pairs: &str, b32: &str| format!("{head}{V}[[verdict.exception]]\npairs = {pairs}\nbinary32 = \"{b32}\"\ne8m15 = \"uncertain\"\nwhy = \"z\"\n");
+        let e = parse(&ex("[[0, 1]]", "separate"), "f.toml").unwrap_err();
+        assert!(e.starts_with("f.toml:12: exception pair [0, 1] is out of range"), "{e}");
+        let e = parse(&ex("[[0, 0]]", "intersecting"), "f.toml").unwrap_err();
+        assert!(e.starts_with("f.toml:13: binary32 verdict `intersecting` for pair [0, 0], which does not intersect"), "{e}");
+        let e = parse(&ex("[[0, 0], [0, 0]]", "separate"), "f.toml").unwrap_err();
+        assert!(e.starts_with("f.toml:12: pair [0, 0] is in two exceptions"), "{e}");
+        let e = parse(&format!("{head}{}", V.replace("\"w\"", "\" \"")), "f.toml").unwrap_err();
+        assert!(e.starts_with("f.toml:10: the verdict's `why` must not be empty"), "{e}");
+        let c = parse(&ex("[[0, 0]]", "separate"), "f.toml").unwrap();
+        assert_eq!(c.verdict((0, 0), Format::BINARY32), Some((Verdict::Separate, "z")));
+        assert_eq!(c.verdict((1, 0), Format::BINARY32), Some((Verdict::Uncertain, "w")));
+        assert_eq!(c.verdict((0, 0), Format::REDUCED), Some((Verdict::Uncertain, "z")));
+        assert_eq!(c.verdict((0, 0), Format::new(5, 4).unwrap()), None);
+        let s = c.swapped();
+        assert_eq!(s.verdict((0, 0), Format::BINARY32), Some((Verdict::Separate, "z")));
+        assert_eq!(s.verdict((0, 1), Format::BINARY32), Some((Verdict::Uncertain, "w")));
     }
 
     #[test]

@@ -6,13 +6,17 @@
 //! - the chip (both formats, k = 6 and 24, outward DOP rounding, every traversal) must
 //!   return exactly the oracle's pairs in all-pairs mode, and in first-hit mode one of them
 //!   (none iff there are none);
-//! - the same invariances for the chip.
+//! - the same invariances for the chip;
+//! - TRI_UNIT's verdict on every catalogue pair (intersecting, separate, uncertain) must be
+//!   the one the file states, derived by hand (docs/ACCURACY.md): the chip's final pairs
+//!   alone cannot tell a TRI_UNIT that decides from one that leaves everything to the host.
 //!
-//! Test names: `oracle_*` judge the oracle, `chip_*` the chip.
+//! Test names: `oracle_*` judge the oracle, `chip_*` the chip, `tri_unit_*` its verdicts.
 
 use collision_chip::config::ChipConfig;
 use collision_chip::format::Format;
-use collision_chip::hard_cases::{self as hc, Case, ExactMap, FAMILIES};
+use collision_chip::golden::tcheck::TriUnit;
+use collision_chip::hard_cases::{self as hc, Case, ExactMap, Verdict, FAMILIES, VERDICT_FORMATS};
 use collision_chip::query::Chip;
 use collision_chip::traversal::{Mode, Traversal};
 use proptest::prelude::*;
@@ -173,6 +177,77 @@ fn chip_invariances_on_catalogue() {
         }
     }
     report("chip failures on exact variants of the catalogue", &fails);
+}
+
+/// TRI_UNIT's verdict on every pair of `case` in `format` as a query gets it: the chip's
+/// triangle words and host setup, the golden `TriUnit` the traversals call.
+fn tri_unit_verdicts(case: &Case, format: Format) -> Vec<((u32, u32), Verdict)> {
+    let cfg = ChipConfig { format, ..Default::default() };
+    let chip = Chip::new(&case.a, &case.b, cfg).unwrap();
+    let setup = chip.setup(&case.pose);
+    let mut unit = TriUnit::new(format, cfg.tri_rounding, &setup, chip.a.tris.len(), chip.b.tris.len());
+    let mut out = Vec::new();
+    for (i, wa) in chip.a.tris.iter().enumerate() {
+        for (j, wb) in chip.b.tris.iter().enumerate() {
+            let (i, j) = (i as u32, j as u32);
+            out.push(((i, j), Verdict::of(unit.test(i, wa, j, wb))));
+        }
+    }
+    out
+}
+
+/// Every pair of `case` whose TRI_UNIT verdict is not the stated one, saying how: a decided
+/// verdict against the exact answer (a wrong answer), more conservative than the derivation,
+/// or decided where the derivation says it cannot be.
+fn verdict_failures(case: &Case) -> Vec<String> {
+    let mut out = Vec::new();
+    for format in VERDICT_FORMATS {
+        for (pair, got) in tri_unit_verdicts(case, format) {
+            let hit = case.expected.contains(&pair);
+            let Some((want, why)) = case.verdict(pair, format) else {
+                out.push(format!("{} {pair:?} [{format}]: no stated verdict", case.name));
+                continue;
+            };
+            let what = if got != Verdict::Uncertain && (got == Verdict::Intersecting) != hit {
+                "WRONG: a decided verdict against the exact answer"
+            } else if want.admits(got) {
+                continue;
+            } else if got == Verdict::Uncertain {
+                "more conservative than derived"
+            } else {
+                "decided where derived not to"
+            };
+            out.push(format!("{} {pair:?} [{format}]: TRI_UNIT {}, stated {} ({what}); why: {why}", case.name, got.name(), want.name()));
+        }
+    }
+    out
+}
+
+#[test]
+fn tri_unit_verdicts_match_catalogue() {
+    let cases = catalogue();
+    // The stated verdicts must be able to fail a unit that always says "uncertain" (or
+    // never decides one way): each format states sure hits and sure misses.
+    for format in VERDICT_FORMATS {
+        let stated: Vec<Verdict> = cases
+            .iter()
+            .flat_map(|c| (0..c.a.len() as u32).flat_map(move |i| (0..c.b.len() as u32).map(move |j| (i, j))).map(move |p| c.verdict(p, format).unwrap().0))
+            .collect();
+        for v in [Verdict::Intersecting, Verdict::Separate] {
+            assert!(stated.contains(&v), "[{format}] no pair is stated {}", v.name());
+        }
+    }
+    let fails: Vec<String> = cases.iter().flat_map(verdict_failures).collect();
+    report("TRI_UNIT verdicts unlike the catalogue's", &fails);
+}
+
+/// The exact variants keep the stated verdicts: swapping exchanges the two directions, exact
+/// maps leave relative magnitudes and exactness alone; other vertex orders may only lose a
+/// decision (`Case::with_vertex_orders`), never gain one or get one wrong.
+#[test]
+fn tri_unit_verdicts_invariant_on_catalogue() {
+    let fails: Vec<String> = catalogue().iter().flat_map(exact_variants).flat_map(|v| verdict_failures(&v)).collect();
+    report("TRI_UNIT verdicts unlike the catalogue's on exact variants", &fails);
 }
 
 // ---------------------------------------------------------------------------------------
