@@ -73,7 +73,8 @@ fn groups(records: &[PoseRecord]) -> Vec<(String, Vec<&PoseRecord>)> {
     for r in records {
         let key = match r.distance {
             Some(d) => format!("d={d}"),
-            None => format!("{:?} {:?}", r.pose.rot_deg, r.pose.t),
+            // the --pose syntax, which also fits the column
+            None => r.pose.text(),
         };
         match groups.iter_mut().find(|(k, _)| *k == key) {
             Some((_, v)) => v.push(r),
