@@ -67,7 +67,7 @@ impl Case {
                 .stack_size(1 << 30)
                 .spawn_scoped(s, || {
                     let mut rtl = rtl_chip::<N, NP1>();
-                    let mut cyc = CycleChip::new(&CHIP_CONFIG, p, &self.chip.a, &self.chip.b, &self.setup).unwrap();
+                    let mut cyc = CycleChip::new(&CHIP_CONFIG, p, &self.chip.a, &self.chip.b, &self.setup, false).unwrap();
                     let mut out = vec![];
                     for run in 0..runs {
                         let mut ls = Lockstep::new(RtlChip::new(&mut rtl, &self.image), &mut cyc, ("rust-hdl", "cycle model"));
