@@ -9,8 +9,9 @@ use collision_chip::oracle;
 use collision_chip::pose::Pose;
 use collision_chip::query::{place, Accuracy, Chip};
 use collision_chip::cycle::{self, drive::Reader};
-use collision_chip::report::{accuracy, stall_table, summary_table, CycleRecord, PoseRecord};
+use collision_chip::report::{accuracy, figures, stall_table, summary_table, CycleRecord, PoseRecord};
 use collision_chip::harness::{chip_io, units};
+use collision_chip::measure::parallel_map;
 use collision_chip::scene::{CrossCheck, Scene, ScenePose, Sweep, DEFAULT_SCENE};
 use collision_chip::traversal::{Counters, Mode, QueryResult, Traversal};
 use serde::Serialize;
@@ -86,6 +87,19 @@ enum Cmd {
     /// [-1,1]^3) at several distances, with each number format and DOP rounding, compared
     /// with the exact oracle. Prints the table of docs/ACCURACY.md.
     Accuracy(AccuracyArgs),
+    /// The papers' figures regenerated (docs/FIGURES.md): DATE'05 Figs. 6-8 (cycles and
+    /// queue memory, LIFO vs FIFO; the chip's speed-up at 800 MHz) and WSCG'03 Figs. 9-13
+    /// (software time, nodes and DOP transforms of the list and recursive traversals; the
+    /// chip's speed-up at 266 MHz beside Eq. 5), each as SVG and PNG with its data as CSV
+    /// and JSON. Software is timed one query at a time, the rest runs on every core. Build
+    /// with `--features parry` to add the parry3d peer to Fig. 8.
+    Figures {
+        #[arg(long, default_value = "target/figures")]
+        out: PathBuf,
+        /// A small run for CI: teapot and bunny, 5 distances, 6 orientations.
+        #[arg(long)]
+        quick: bool,
+    },
 }
 
 #[derive(Args)]
@@ -157,6 +171,7 @@ fn main() -> ExitCode {
         Some(Cmd::Query(q)) => query(q),
         Some(Cmd::Run { scene, json, rtl, vcd }) => run(scene, json, rtl, vcd),
         Some(Cmd::Accuracy(a)) => accuracy(a),
+        Some(Cmd::Figures { out, quick }) => figures(&out, quick),
         Some(Cmd::ExportVerilog { out }) => report_written(units::write_verilog(&out)),
         Some(Cmd::Vectors { out }) => report_written(units::write_vectors(&out)),
         None => run(None, false, false, None),
@@ -288,6 +303,20 @@ fn accuracy(a: AccuracyArgs) -> Result<(), String> {
     Ok(())
 }
 
+fn figures(out: &std::path::Path, quick: bool) -> Result<(), String> {
+    let plan = if quick { figures::Plan::quick() } else { figures::Plan::full() };
+    let bar = progress_bar(0, false);
+    bar.set_style(ProgressStyle::with_template("{bar:40} {pos}/{len} {elapsed} (eta {eta}) {msg}").expect("valid template"));
+    let t0 = std::time::Instant::now();
+    let written = figures::generate(&plan, out, &bar)?;
+    bar.finish_and_clear();
+    for p in &written {
+        println!("wrote {}", p.display());
+    }
+    println!("figures in {:.1} s", t0.elapsed().as_secs_f64());
+    Ok(())
+}
+
 fn run(path: Option<PathBuf>, json: bool, rtl: bool, vcd: Option<PathBuf>) -> Result<(), String> {
     let mut scene = match &path {
         Some(p) => Scene::load(p)?,
@@ -382,31 +411,6 @@ fn run(path: Option<PathBuf>, json: bool, rtl: bool, vcd: Option<PathBuf>) -> Re
     Ok(())
 }
 
-/// `f` over `items` on every core, results in the items' order (the output of a parallel
-/// run is the serial run's).
-fn parallel_map<T: Sync, R: Send>(items: &[T], f: impl Fn(usize, &T) -> R + Sync) -> Vec<R> {
-    let threads = std::thread::available_parallelism().map_or(1, |n| n.get()).min(items.len().max(1));
-    let next = std::sync::atomic::AtomicUsize::new(0);
-    let mut out: Vec<(usize, R)> = std::thread::scope(|s| {
-        let workers: Vec<_> = (0..threads)
-            .map(|_| {
-                s.spawn(|| {
-                    let mut mine = vec![];
-                    loop {
-                        let i = next.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
-                        let Some(item) = items.get(i) else { break };
-                        mine.push((i, f(i, item)));
-                    }
-                    mine
-                })
-            })
-            .collect();
-        workers.into_iter().flat_map(|w| w.join().expect("a pose's thread panicked")).collect()
-    });
-    out.sort_by_key(|(i, _)| *i);
-    out.into_iter().map(|(_, r)| r).collect()
-}
-
 /// One pose of a scene, after its golden query (`golden`: the result and its time, the
 /// software's): the exact oracle if asked for, and the cycle model (with its VCD, and the
 /// cross-check) if asked for. The cycle model's answer must be the golden model's.
@@ -441,7 +445,7 @@ fn run_cycles(scene: &Scene, chip: &Chip, i: usize, pose: &Pose, res: &QueryResu
     let lifo = scene.traversal == Traversal::Lifo;
     let setup = chip.setup(pose);
     let vcd = scene.outputs.waveforms.as_ref().map(|d| d.join(format!("pose{i}.vcd")));
-    let (trace, stats) = cycle::run_query(chip, &setup, lifo, scene.mode, scene.params, Reader::default(), CYCLE_MAX, vcd.as_deref())
+    let (trace, stats) = cycle::run_query(chip, &setup, lifo, scene.mode, scene.params, Reader::default(), cycle::MAX_CYCLES, vcd.as_deref())
         .map_err(|e| format!("pose {i}: {e}"))?;
     let golden_all = match scene.mode {
         Mode::All => res.clone(),
@@ -485,7 +489,3 @@ fn run_cycles(scene: &Scene, chip: &Chip, i: usize, pose: &Pose, res: &QueryResu
         cross_checked,
     })
 }
-
-/// A bound on one query's clocks on the cycle model (waits are skipped, so a long memory
-/// latency costs no time; the bound only catches a hung model).
-const CYCLE_MAX: u64 = 1 << 50;

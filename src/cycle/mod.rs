@@ -244,6 +244,10 @@ pub fn probe_valid(i: usize) -> Option<usize> {
     }
 }
 
+/// A bound on one query's clocks on the cycle model (waits are skipped, so a long memory
+/// latency costs no time; the bound only catches a hung model).
+pub const MAX_CYCLES: u64 = 1 << 50;
+
 /// One query on the cycle model: `chip`'s images and configuration, B placed by `setup`,
 /// order `lifo`, `mode`, timing `p`, results read by `reader`. Returns the trace and where
 /// the clocks went. Without `vcd`, waits are skipped in one step (the trace is the same);
