@@ -677,7 +677,7 @@ fn draw_on<DB: DrawingBackend>(root: DrawingArea<DB, plotters::coord::Shift>, f:
     root.fill(&WHITE).map_err(e)?;
     let root = root.titled(&f.title, ("sans-serif", 18)).map_err(e)?;
     for (area, p) in root.split_evenly((f.panels.len(), 1)).iter().zip(&f.panels) {
-        let (xr, yr) = (range(p, |q| q.0, p.log_x), range(p, |q| q.1, p.log_y));
+        let (xr, yr) = (range(p, |q| q.0, p.log_x, false), range(p, |q| q.1, p.log_y, true));
         match (p.log_x, p.log_y) {
             (false, false) => chart(area, p, xr, yr),
             (false, true) => chart(area, p, xr, yr.log_scale()),
@@ -686,6 +686,39 @@ fn draw_on<DB: DrawingBackend>(root: DrawingArea<DB, plotters::coord::Shift>, f:
         }?;
     }
     root.present().map_err(e)
+}
+
+/// The corner of the panel with the fewest data points, for the legend.
+fn legend_corner(p: &Panel) -> SeriesLabelPosition {
+    let axis = |v: fn(&(f64, f64)) -> f64, log: bool, decades: bool| {
+        let r = range(p, v, log, decades);
+        let t = move |x: f64| if log { x.log10() } else { x };
+        let (lo, hi) = (t(r.start), t(r.end));
+        move |x: f64| (t(x) - lo) / (hi - lo)
+    };
+    let (nx, ny) = (axis(|q| q.0, p.log_x, false), axis(|q| q.1, p.log_y, true));
+    // the lines' points, and 8 more along each segment
+    let pts: Vec<(f64, f64)> = p
+        .series
+        .iter()
+        .flat_map(|s| {
+            let n: Vec<(f64, f64)> = s.points.iter().map(|q| (nx(q.0), ny(q.1))).filter(|q| q.0.is_finite() && q.1.is_finite()).collect();
+            let segs: Vec<(f64, f64)> = n.windows(2).flat_map(|w| (1..9).map(move |i| {
+                let f = i as f64 / 9.0;
+                (w[0].0 + f * (w[1].0 - w[0].0), w[0].1 + f * (w[1].1 - w[0].1))
+            })).collect();
+            n.into_iter().chain(segs)
+        })
+        .collect();
+    let corners = [
+        (SeriesLabelPosition::UpperRight, true, true),
+        (SeriesLabelPosition::UpperLeft, false, true),
+        (SeriesLabelPosition::LowerRight, true, false),
+        (SeriesLabelPosition::LowerLeft, false, false),
+    ];
+    let inside = |&(x, y): &(f64, f64), right: bool, upper: bool| (if right { x > 0.45 } else { x < 0.55 }) && (if upper { y > 0.55 } else { y < 0.45 });
+    let (pos, ..) = corners.into_iter().min_by_key(|&(_, r, u)| pts.iter().filter(|q| inside(q, r, u)).count()).expect("four corners");
+    pos
 }
 
 /// An axis label: no trailing zeros, exponent form from 10^5.
@@ -697,12 +730,15 @@ fn tick(v: &f64) -> String {
     }
 }
 
-/// The axis range of a panel's values, with a margin; positive values only on a log axis.
-fn range(p: &Panel, v: impl Fn(&(f64, f64)) -> f64, log: bool) -> std::ops::Range<f64> {
+/// The axis range of a panel's values, with a margin; positive values only on a log axis,
+/// whole decades on a log y axis (plotters labels no value below a log axis's first
+/// power of ten).
+fn range(p: &Panel, v: impl Fn(&(f64, f64)) -> f64, log: bool, decades: bool) -> std::ops::Range<f64> {
     let vals = p.series.iter().flat_map(|s| s.points.iter().map(&v)).filter(|x| x.is_finite() && (!log || *x > 0.0));
     let (lo, hi) = vals.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), x| (lo.min(x), hi.max(x)));
     match (lo.is_finite(), log) {
         (false, _) => 1.0..10.0,
+        (true, true) if decades => 10f64.powf(lo.log10().floor())..10f64.powf((hi * 1.01).log10().ceil()),
         (true, true) => lo / 1.5..hi * 1.5,
         (true, false) => {
             let m = ((hi - lo) * 0.05).max(1e-9);
@@ -733,6 +769,8 @@ where
         .x_desc(p.x_label)
         .y_desc(p.y_label)
         .label_style(("sans-serif", 13))
+        .x_labels(10)
+        .y_labels(12)
         .x_label_formatter(&tick)
         .y_label_formatter(&tick)
         .light_line_style(WHITE.mix(0.0))
@@ -757,7 +795,7 @@ where
         c.draw_series(pts.map(|q| Circle::new(q, 3, color.filled()))).map_err(e)?;
     }
     c.configure_series_labels()
-        .position(SeriesLabelPosition::UpperRight)
+        .position(legend_corner(p))
         .label_font(("sans-serif", 12))
         .background_style(WHITE.mix(0.85))
         .border_style(BLACK.mix(0.4))
