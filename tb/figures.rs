@@ -43,7 +43,7 @@ fn figures_data_hold_what_the_papers_compare() {
     assert!(std::fs::read(out.join("date05_fig6_cycles.png")).unwrap().starts_with(b"\x89PNG"));
 
     let (cols, fig6) = csv(&out.join("date05_fig6_cycles.csv"));
-    assert_eq!(cols, ["mesh", "triangles", "distance", "queries", "order", "mode", "pairs", "cycles", "cycles_max", "chip_us"]);
+    assert_eq!(cols, ["mesh", "triangles", "distance", "queries", "order", "mode", "pairs", "cycles", "cycles_max", "chip_us", "words"]);
     assert_eq!(fig6.len(), 3 * 2 * 2);
     for r in &fig6 {
         let twin = fig6
@@ -81,7 +81,7 @@ fn figures_data_hold_what_the_papers_compare() {
     let (cols, fig13) = csv(&out.join("wscg03_fig13_speedup.csv"));
     assert_eq!(
         cols[4..],
-        ["pairs", "software_us", "cycles", "chip_us", "lists", "alpha", "eq5_cycles", "eq5_us", "speedup_cycle_model", "speedup_eq5"]
+        ["pairs", "software_us", "cycles", "chip_us", "words", "lists", "alpha", "eq5_cycles", "eq5_us", "speedup_cycle_model", "speedup_eq5"]
     );
     for r in &fig13 {
         let eq5 = 100.0 * num(r, "lists") + 10.0 * (num(r, "alpha") - 2.0) * num(r, "lists");

@@ -40,7 +40,7 @@ pub struct Plan {
     pub orientations: usize,
     pub seed: u64,
     /// Each software time is the mean over the poses of one distance, repeated until this
-    /// many seconds have passed (in three runs; the fastest counts).
+    /// many seconds of CPU time have passed (in three runs; the fastest counts).
     pub min_seconds: f64,
 }
 
@@ -50,9 +50,9 @@ impl Plan {
         Plan {
             meshes: vec!["teapot".into(), "bunny".into(), "dragon-11k".into()],
             distances: vec![2.4, 2.2, 2.0, 1.8, 1.6, 1.4, 1.2, 1.0, 0.8],
-            orientations: 24,
+            orientations: 64,
             seed: 1,
-            min_seconds: 0.05,
+            min_seconds: 0.2,
         }
     }
 
@@ -120,11 +120,12 @@ fn mode_name(m: Mode) -> &'static str {
 /// One pose's counts (golden model and cycle model).
 #[derive(Clone, Debug, Default)]
 struct PoseCounts {
-    /// [order][mode]: pairs the golden D_CNTR reported, the cycle model's clocks and most
-    /// queue entries.
+    /// [order][mode]: pairs the golden D_CNTR reported, the cycle model's clocks, most
+    /// queue entries and memory words (node and triangle words).
     pairs: [[usize; 2]; 2],
     cycles: [[u64; 2]; 2],
     entries: [[u64; 2]; 2],
+    words: [[u64; 2]; 2],
     /// [software traversal][mode]: pairs, node words fetched, DOP transforms.
     sw_pairs: [[usize; 2]; 2],
     sw_fetches: [[u64; 2]; 2],
@@ -132,8 +133,9 @@ struct PoseCounts {
     /// The list traversal's lists and aligned node pairs (all pairs).
     lists: u64,
     list_node_pairs: u64,
-    /// LIFO, all pairs, at [`wscg_params`].
+    /// LIFO, all pairs, at [`wscg_params`]: clocks and memory words.
     wscg_cycles: u64,
+    wscg_words: u64,
 }
 
 /// Means over the orientations of one mesh at one distance.
@@ -332,7 +334,7 @@ fn measure(plan: &Plan, bar: &ProgressBar) -> Result<Vec<Point>, String> {
     for o in &objects {
         for (di, &distance) in plan.distances.iter().enumerate() {
             let group = &poses[di * n..(di + 1) * n];
-            // the best of three: other processes on the machine only ever add time
+            // the best of three: other processes on the machine only ever add time (caches)
             let best = |f: &dyn Fn(&Pose) -> usize| 1e6 * (0..3).map(|_| mean_seconds(group, plan.min_seconds / 3.0, f)).fold(f64::INFINITY, f64::min);
             let time = |t: Traversal, m: Mode| best(&|p| o.chip.query(p, m, t).pairs.len());
             let sw_us = SOFTWARE.map(|t| MODES.map(|m| time(t, m)));
@@ -382,6 +384,7 @@ fn count(chip: &Chip, pose: &Pose) -> Result<PoseCounts, String> {
             trace.check(mode, &all).map_err(|e| format!("{} {}: the cycle model disagrees with the golden model: {e}", name(order), mode_name(mode)))?;
             c.cycles[oi][mi] = trace.cycles;
             c.entries[oi][mi] = trace.max_depth;
+            c.words[oi][mi] = trace.node_fetches + trace.tri_fetches;
         }
     }
     for (si, &t) in SOFTWARE.iter().enumerate() {
@@ -397,7 +400,7 @@ fn count(chip: &Chip, pose: &Pose) -> Result<PoseCounts, String> {
     }
     let (trace, _) = cycle::run_query(chip, &setup, true, Mode::All, wscg_params(), Reader::default(), cycle::MAX_CYCLES, None)?;
     trace.check(Mode::All, &all).map_err(|e| format!("WSCG memory: the cycle model disagrees with the golden model: {e}"))?;
-    c.wscg_cycles = trace.cycles;
+    (c.wscg_cycles, c.wscg_words) = (trace.cycles, trace.node_fetches + trace.tri_fetches);
     Ok(c)
 }
 
@@ -446,7 +449,7 @@ fn figures(points: &[Point]) -> Vec<Figure> {
     let mut figs = vec![];
 
     // DATE'05 Fig. 6 and 7.
-    let mut t6 = Table { columns: [&KEY[..], &["order", "mode", "pairs", "cycles", "cycles_max", "chip_us"]].concat(), rows: vec![] };
+    let mut t6 = Table { columns: [&KEY[..], &["order", "mode", "pairs", "cycles", "cycles_max", "chip_us", "words"]].concat(), rows: vec![] };
     let mut t7 = Table { columns: [&KEY[..], &["order", "mode", "pairs", "max_entries", "max_entries_max", "queue_bytes"]].concat(), rows: vec![] };
     for p in points {
         for (oi, &o) in ORDERS.iter().enumerate() {
@@ -454,7 +457,12 @@ fn figures(points: &[Point]) -> Vec<Figure> {
                 let cycles = p.mean(|c| c.cycles[oi][mi] as f64);
                 let pairs = Cell::Num(p.mean(|c| c.pairs[oi][mi] as f64));
                 let base = |v: Vec<Cell>| [&key(p)[..], &[Cell::Text(name(o).into()), Cell::Text(mode_name(m).into()), pairs.clone()], &v[..]].concat();
-                t6.rows.push(base(vec![Cell::Num(cycles), Cell::Int(p.max(|c| c.cycles[oi][mi])), Cell::Num(cycles / DATE_MHZ)]));
+                t6.rows.push(base(vec![
+                    Cell::Num(cycles),
+                    Cell::Int(p.max(|c| c.cycles[oi][mi])),
+                    Cell::Num(cycles / DATE_MHZ),
+                    Cell::Num(p.mean(|c| c.words[oi][mi] as f64)),
+                ]));
                 let entries = p.mean(|c| c.entries[oi][mi] as f64);
                 // an entry is two node pairs of 16-bit ids and a flip bit each, 67 bits
                 let bytes = entries * crate::cycle::d_cntr::ENTRY_BITS as f64 / 8.0;
@@ -607,7 +615,7 @@ fn figures(points: &[Point]) -> Vec<Figure> {
     let cyc_us = |p: &Point| p.mean(|c| c.wscg_cycles as f64) / WSCG_MHZ;
     let eq5 = |p: &Point| p.mean(|c| eq5_cycles(c.lists, c.list_node_pairs));
     let mut t13 = Table {
-        columns: [&KEY[..], &["pairs", "software_us", "cycles", "chip_us", "lists", "alpha", "eq5_cycles", "eq5_us", "speedup_cycle_model", "speedup_eq5"]].concat(),
+        columns: [&KEY[..], &["pairs", "software_us", "cycles", "chip_us", "words", "lists", "alpha", "eq5_cycles", "eq5_us", "speedup_cycle_model", "speedup_eq5"]].concat(),
         rows: vec![],
     };
     for p in points {
@@ -620,6 +628,7 @@ fn figures(points: &[Point]) -> Vec<Figure> {
                     Cell::Num(p.sw_us[0][0]),
                     Cell::Num(p.mean(|c| c.wscg_cycles as f64)),
                     Cell::Num(cyc_us(p)),
+                    Cell::Num(p.mean(|c| c.wscg_words as f64)),
                     Cell::Num(lists),
                     Cell::Num(p.mean(|c| c.list_node_pairs as f64) / lists.max(1.0)),
                     Cell::Num(eq5(p)),
@@ -666,9 +675,39 @@ pub fn draw(f: &Figure, path: &Path) -> Result<(), String> {
     let size = (WIDTH, 40 + PANEL_HEIGHT * f.panels.len() as u32);
     let err = |e: String| format!("{}: {e}", path.display());
     if path.extension().is_some_and(|e| e == "svg") {
-        draw_on(SVGBackend::new(path, size).into_drawing_area(), f).map_err(err)
+        return draw_on(SVGBackend::new(path, size).into_drawing_area(), f).map_err(err);
+    }
+    let mut rgb = vec![0u8; 3 * (size.0 * size.1) as usize];
+    draw_on(BitMapBackend::with_buffer(&mut rgb, size).into_drawing_area(), f).map_err(err)?;
+    write_png(path, size, &rgb).map_err(|e| err(e.to_string()))
+}
+
+/// PNG at the best compression, with a palette where the image has at most 256 colours
+/// (the figures are committed to docs/: plotters' own encoder writes them 2-3 times larger).
+fn write_png(path: &Path, (w, h): (u32, u32), rgb: &[u8]) -> Result<(), png::EncodingError> {
+    let mut palette: Vec<[u8; 3]> = vec![];
+    let mut index = std::collections::HashMap::new();
+    let mut indexed = Vec::with_capacity(rgb.len() / 3);
+    for px in rgb.chunks_exact(3) {
+        let c = [px[0], px[1], px[2]];
+        let i = *index.entry(c).or_insert_with(|| {
+            palette.push(c);
+            palette.len() - 1
+        });
+        indexed.push(i);
+    }
+    let file = std::io::BufWriter::new(std::fs::File::create(path)?);
+    let mut enc = png::Encoder::new(file, w, h);
+    enc.set_compression(png::Compression::Best);
+    enc.set_adaptive_filter(png::AdaptiveFilterType::Adaptive);
+    if palette.len() <= 256 {
+        enc.set_color(png::ColorType::Indexed);
+        enc.set_palette(palette.concat());
+        let bytes: Vec<u8> = indexed.iter().map(|&i| i as u8).collect();
+        enc.write_header()?.write_image_data(&bytes)
     } else {
-        draw_on(BitMapBackend::new(path, size).into_drawing_area(), f).map_err(err)
+        enc.set_color(png::ColorType::Rgb);
+        enc.write_header()?.write_image_data(rgb)
     }
 }
 
@@ -769,7 +808,7 @@ where
         .x_desc(p.x_label)
         .y_desc(p.y_label)
         .label_style(("sans-serif", 13))
-        .x_labels(10)
+        .x_labels(if p.log_x { 4 } else { 10 })
         .y_labels(12)
         .x_label_formatter(&tick)
         .y_label_formatter(&tick)
