@@ -3,7 +3,11 @@
 //! the same pairs, as do the list and recursive traversals; Algorithm 1 never transforms
 //! less than Algorithm 2).
 
-use collision_chip::report::figures::{generate, Plan};
+use collision_chip::config::DopRounding;
+use collision_chip::format::Format;
+use collision_chip::report::accuracy;
+use collision_chip::report::figures::{generate, Cell, Plan};
+use collision_chip::scene::Sweep;
 use std::collections::HashMap;
 
 fn csv(path: &std::path::Path) -> (Vec<String>, Vec<HashMap<String, String>>) {
@@ -90,4 +94,34 @@ fn figures_data_hold_what_the_papers_compare() {
     let json: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(out.join("wscg03_fig13_speedup.json")).unwrap()).unwrap();
     assert_eq!(json.as_array().unwrap().len(), fig13.len());
     let _ = std::fs::remove_dir_all(&out);
+}
+
+/// The accuracy study's plot data: one row per configuration, and a configuration is on the
+/// Pareto front iff it has no misses and no other such one is at least as good in both
+/// clocks and uncertain share.
+#[test]
+fn accuracy_pareto_front() {
+    let tris = collision_chip::mesh::resolve("teapot").unwrap().scaled_into_unit_cube().unwrap().triangles_f64();
+    let sweep = Sweep { distances: vec![1.2], orientations: 2, seed: 1 };
+    let formats = [Format::BINARY32, "e8m10".parse().unwrap()];
+    let rows = accuracy::study("teapot", &tris, &[6, 24], &formats, &[DopRounding::Outward], &sweep, || {}).unwrap();
+    assert_eq!(rows.len(), 4);
+    assert!(rows.iter().all(|r| r.sums.queries == 2 && r.sums.cycles > 0 && r.sums.misses == 0));
+    let t = accuracy::figure(&rows).table;
+    let col = |c: &str| t.columns.iter().position(|x| *x == c).unwrap();
+    let num = |r: &[Cell], c: &str| match &r[col(c)] {
+        Cell::Num(x) => *x,
+        other => panic!("{c}: {other:?}"),
+    };
+    for r in &t.rows {
+        let (x, y) = (num(r, "uncertain_share"), num(r, "cycles_per_query"));
+        let beaten = t.rows.iter().any(|q| {
+            let (qx, qy) = (num(q, "uncertain_share"), num(q, "cycles_per_query"));
+            qx <= x && qy <= y && (qx, qy) != (x, y)
+        });
+        assert_eq!(r[col("pareto")], Cell::Text((!beaten).to_string()), "{r:?}");
+    }
+    // tighter DOPs, fewer clocks
+    let b32 = |k: u64| t.rows.iter().find(|r| r[col("k")] == Cell::Int(k) && r[col("format")] == Cell::Text("binary32".into())).unwrap();
+    assert!(num(b32(24), "cycles_per_query") < num(b32(6), "cycles_per_query"));
 }

@@ -84,8 +84,9 @@ enum Cmd {
         out: PathBuf,
     },
     /// What accuracy costs: each mesh tumbling against a copy of itself (both scaled into
-    /// [-1,1]^3) at several distances, with each number format and DOP rounding, compared
-    /// with the exact oracle. Prints the table of docs/ACCURACY.md.
+    /// [-1,1]^3) at several distances, with each k, number format and DOP rounding,
+    /// compared with the exact oracle and run on the cycle model for its clocks (poses on
+    /// every core). Prints the tables of docs/ACCURACY.md.
     Accuracy(AccuracyArgs),
     /// The papers' figures regenerated (docs/FIGURES.md): DATE'05 Figs. 6-8 (cycles and
     /// queue memory, LIFO vs FIFO; the chip's speed-up at 800 MHz) and WSCG'03 Figs. 9-13
@@ -110,6 +111,14 @@ struct AccuracyArgs {
     /// Number formats, comma separated (binary32, reduced, eEmF).
     #[arg(long, value_delimiter = ',', default_value = "binary32,reduced,e8m10")]
     formats: Vec<Format>,
+    /// k of the k-DOPs, comma separated (6, 14, 18, 24, 26).
+    #[arg(long, value_delimiter = ',', default_value = "24")]
+    k: Vec<usize>,
+    /// Also write the plot of clocks against the uncertain share (one point per
+    /// configuration, the Pareto front marked) into this directory, as SVG and PNG with
+    /// its data (CSV, JSON).
+    #[arg(long, value_name = "DIR")]
+    plot: Option<PathBuf>,
     /// Centre distances along x, from apart to deeply penetrating.
     #[arg(long, value_delimiter = ',', allow_hyphen_values = true, default_value = "2.2,1.6,1.2,0.8,0.4")]
     distances: Vec<f64>,
@@ -292,9 +301,15 @@ fn accuracy(a: AccuracyArgs) -> Result<(), String> {
     let mut rows = vec![];
     for m in &a.meshes {
         let tris = load(m, true)?.triangles_f64();
-        rows.extend(accuracy::study(m, &tris, &a.formats, &roundings, &sweep, || bar.inc(1))?);
+        rows.extend(accuracy::study(m, &tris, &a.k, &a.formats, &roundings, &sweep, || bar.inc(1))?);
     }
     bar.finish_and_clear();
+    if let Some(dir) = &a.plot {
+        std::fs::create_dir_all(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
+        for p in figures::write_figure(&accuracy::figure(&rows), dir)? {
+            eprintln!("wrote {}", p.display());
+        }
+    }
     if a.json {
         println!("{}", serde_json::to_string_pretty(&rows).expect("serialisable"));
     } else {

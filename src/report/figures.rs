@@ -226,8 +226,18 @@ pub struct Series {
     pub label: String,
     /// Index into the palette (one colour per mesh, or per distance).
     pub color: usize,
-    pub dashed: bool,
+    pub style: Style,
     pub points: Vec<(f64, f64)>,
+    /// A label beside each point (none if empty).
+    pub labels: Vec<String>,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Style {
+    Solid,
+    Dashed,
+    /// Markers only.
+    Points,
 }
 
 /// One chart of a figure; a figure's panels are stacked top to bottom.
@@ -257,11 +267,6 @@ pub fn generate(plan: &Plan, out: &Path, bar: &ProgressBar) -> Result<Vec<PathBu
     let figs = figures(&points);
     std::fs::create_dir_all(out).map_err(|e| format!("{}: {e}", out.display()))?;
     let mut written = vec![];
-    let write = |p: PathBuf, text: &str, written: &mut Vec<PathBuf>| -> Result<(), String> {
-        std::fs::write(&p, text).map_err(|e| format!("{}: {e}", p.display()))?;
-        written.push(p);
-        Ok(())
-    };
     let setup = PlanJson {
         plan,
         chip: ChipConfig::default(),
@@ -271,17 +276,27 @@ pub fn generate(plan: &Plan, out: &Path, bar: &ProgressBar) -> Result<Vec<PathBu
         wscg_mhz: WSCG_MHZ,
         parry: cfg!(feature = "parry"),
     };
-    write(out.join("plan.json"), &(serde_json::to_string_pretty(&setup).expect("serialisable") + "\n"), &mut written)?;
+    write_text(&out.join("plan.json"), &(serde_json::to_string_pretty(&setup).expect("serialisable") + "\n"))?;
+    written.push(out.join("plan.json"));
     for f in &figs {
-        write(out.join(format!("{}.csv", f.stem)), &f.table.csv(), &mut written)?;
-        write(out.join(format!("{}.json", f.stem)), &f.table.json(), &mut written)?;
-        for ext in ["svg", "png"] {
-            let p = out.join(format!("{}.{ext}", f.stem));
-            draw(f, &p)?;
-            written.push(p);
-        }
+        written.extend(write_figure(f, out)?);
     }
     Ok(written)
+}
+
+fn write_text(p: &Path, text: &str) -> Result<(), String> {
+    std::fs::write(p, text).map_err(|e| format!("{}: {e}", p.display()))
+}
+
+/// Writes `<stem>.csv`, `.json`, `.svg` and `.png` of `f` into `out` (which must exist);
+/// returns the paths.
+pub fn write_figure(f: &Figure, out: &Path) -> Result<Vec<PathBuf>, String> {
+    let p = |ext: &str| out.join(format!("{}.{ext}", f.stem));
+    write_text(&p("csv"), &f.table.csv())?;
+    write_text(&p("json"), &f.table.json())?;
+    draw(f, &p("svg"))?;
+    draw(f, &p("png"))?;
+    Ok(["csv", "json", "svg", "png"].map(p).to_vec())
 }
 
 /// `plan.json`: what the figures were made with.
@@ -413,7 +428,8 @@ fn by_distance(points: &[Point], variants: &[(&str, bool)], y: impl Fn(&Point, u
             let pts: Vec<(f64, f64)> = points.iter().filter(|p| &p.mesh == m).filter_map(|p| Some((p.distance, y(p, vi)?))).collect();
             if !pts.is_empty() {
                 let tris = points.iter().find(|p| &p.mesh == m).map_or(0, |p| p.triangles);
-                out.push(Series { label: format!("{m} ({tris} tris) {label}"), color: ci, dashed: *dashed, points: pts });
+                let style = if *dashed { Style::Dashed } else { Style::Solid };
+                out.push(Series { label: format!("{m} ({tris} tris) {label}"), color: ci, style, points: pts, labels: vec![] });
             }
         }
     }
@@ -533,7 +549,7 @@ fn figures(points: &[Point]) -> Vec<Figure> {
         .map(|(ci, &d)| {
             let mut pts: Vec<(f64, f64)> = points.iter().filter(|p| p.distance == d).map(|p| (p.triangles as f64, p.golden_us / chip_us(p))).collect();
             pts.sort_by(|a, b| a.0.total_cmp(&b.0));
-            Series { label: format!("d = {d}"), color: ci, dashed: false, points: pts }
+            Series { label: format!("d = {d}"), color: ci, style: Style::Solid, points: pts, labels: vec![] }
         })
         .collect();
     figs.push(Figure {
@@ -653,8 +669,15 @@ fn figures(points: &[Point]) -> Vec<Figure> {
     figs
 }
 
-const PALETTE: [RGBColor; 6] =
-    [RGBColor(31, 119, 180), RGBColor(214, 39, 40), RGBColor(44, 160, 44), RGBColor(148, 103, 189), RGBColor(255, 127, 14), RGBColor(23, 190, 207)];
+pub const PALETTE: [RGBColor; 7] = [
+    RGBColor(31, 119, 180),
+    RGBColor(214, 39, 40),
+    RGBColor(44, 160, 44),
+    RGBColor(148, 103, 189),
+    RGBColor(255, 127, 14),
+    RGBColor(23, 190, 207),
+    RGBColor(70, 70, 70),
+];
 
 /// The embedded font (Liberation Sans, SIL OFL 1.1, assets/fonts/): PNG text needs no font
 /// installed on the machine.
@@ -727,7 +750,8 @@ fn draw_on<DB: DrawingBackend>(root: DrawingArea<DB, plotters::coord::Shift>, f:
     root.present().map_err(e)
 }
 
-/// The corner of the panel with the fewest data points, for the legend.
+/// The corner (or top or bottom middle) of the panel with the fewest data points, for the
+/// legend.
 fn legend_corner(p: &Panel) -> SeriesLabelPosition {
     let axis = |v: fn(&(f64, f64)) -> f64, log: bool, decades: bool| {
         let r = range(p, v, log, decades);
@@ -749,14 +773,17 @@ fn legend_corner(p: &Panel) -> SeriesLabelPosition {
             n.into_iter().chain(segs)
         })
         .collect();
-    let corners = [
-        (SeriesLabelPosition::UpperRight, true, true),
-        (SeriesLabelPosition::UpperLeft, false, true),
-        (SeriesLabelPosition::LowerRight, true, false),
-        (SeriesLabelPosition::LowerLeft, false, false),
+    // (position, its horizontal span, upper)
+    let places = [
+        (SeriesLabelPosition::UpperRight, (0.45, 1.0), true),
+        (SeriesLabelPosition::UpperLeft, (0.0, 0.55), true),
+        (SeriesLabelPosition::LowerRight, (0.45, 1.0), false),
+        (SeriesLabelPosition::LowerLeft, (0.0, 0.55), false),
+        (SeriesLabelPosition::UpperMiddle, (0.22, 0.78), true),
+        (SeriesLabelPosition::LowerMiddle, (0.22, 0.78), false),
     ];
-    let inside = |&(x, y): &(f64, f64), right: bool, upper: bool| (if right { x > 0.45 } else { x < 0.55 }) && (if upper { y > 0.55 } else { y < 0.45 });
-    let (pos, ..) = corners.into_iter().min_by_key(|&(_, r, u)| pts.iter().filter(|q| inside(q, r, u)).count()).expect("four corners");
+    let inside = |&(x, y): &(f64, f64), (lo, hi): (f64, f64), upper: bool| x > lo && x < hi && (if upper { y > 0.55 } else { y < 0.45 });
+    let (pos, ..) = places.into_iter().min_by_key(|&(_, span, u)| pts.iter().filter(|q| inside(q, span, u)).count()).expect("six places");
     pos
 }
 
@@ -819,18 +846,20 @@ where
         let color = PALETTE[s.color % PALETTE.len()];
         let style = color.stroke_width(2);
         let pts = s.points.iter().copied().filter(|q| q.0.is_finite() && q.1.is_finite());
-        let ann = if s.dashed {
-            c.draw_series(DashedLineSeries::new(pts.clone(), 6, 4, style)).map_err(e)?
-        } else {
-            c.draw_series(LineSeries::new(pts.clone(), style)).map_err(e)?
+        let ann = match s.style {
+            Style::Solid => c.draw_series(LineSeries::new(pts.clone(), style)).map_err(e)?,
+            Style::Dashed => c.draw_series(DashedLineSeries::new(pts.clone(), 6, 4, style)).map_err(e)?,
+            Style::Points => c.draw_series(pts.clone().map(|q| Circle::new(q, 5, color.filled()))).map_err(e)?,
         };
         // a dashed legend line is two segments
-        let gap = if s.dashed { 5 } else { 0 };
+        let gap = if s.style == Style::Dashed { 5 } else { 0 };
         ann.label(&s.label).legend(move |(x, y)| {
             EmptyElement::at((x, y))
                 + PathElement::new(vec![(0, 0), (8, 0)], color.stroke_width(2))
                 + PathElement::new(vec![(8 + gap, 0), (20, 0)], color.stroke_width(2))
         });
+        let font = ("sans-serif", 11).into_font().color(&color);
+        c.draw_series(s.points.iter().zip(&s.labels).map(|(&q, l)| Text::new(l.clone(), q, font.clone()))).map_err(e)?;
         c.draw_series(pts.map(|q| Circle::new(q, 3, color.filled()))).map_err(e)?;
     }
     c.configure_series_labels()
