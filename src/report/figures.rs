@@ -81,11 +81,12 @@ pub const WSCG_MEMORY: MemTiming = MemTiming { latency: 16, interval: 10 };
 /// (the RTL's 1,024 would, and an overflowed query has no complete answer).
 pub const QUEUE_ENTRIES: u32 = 1 << 24;
 
-/// The chip of the DATE'05 figures and of Fig. 13.
+/// The chip of the DATE'05 figures: the RTL's, with [`QUEUE_ENTRIES`].
 pub fn date_params() -> Params {
     Params { queue_entries: QUEUE_ENTRIES, ..Params::RTL }
 }
 
+/// The chip of WSCG'03 Fig. 13: the same with [`WSCG_MEMORY`].
 pub fn wscg_params() -> Params {
     Params { memory: WSCG_MEMORY, ..date_params() }
 }
