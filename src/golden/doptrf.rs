@@ -47,7 +47,8 @@ pub fn separated(q: f64, u: f64, e: f64) -> bool {
     u + e <= -q
 }
 
-/// B's transformed DOPs during one query, computed on a node's first test: per lane an
+/// B's transformed DOPs during one query, computed on a node's first test (or at every
+/// test, [`without_memo`](TransformCache::without_memo)): per lane an
 /// f64 estimate `approx` of u_i with a bound `err` on |u_i - approx|, and the exact u_i
 /// (the chip's value, [`transformed`]) only for the lanes whose flag falls within the bound.
 /// The decisions equal [`dop_overlap`]'s bit for bit (tested); this only saves time.
@@ -137,7 +138,9 @@ impl<'a> TransformCache<'a> {
         if self.memo {
             self.slot[nb as usize] = self.known.len() as u32;
         } else {
-            (self.approx.clear(), self.err.clear(), self.known.clear());
+            self.approx.clear();
+            self.err.clear();
+            self.known.clear();
         }
         let block = self.known.len();
         self.known.push(0);
