@@ -10,6 +10,8 @@
 pub mod format;
 pub mod mesh;
 pub mod oracle;
+#[cfg(feature = "parry")]
+pub mod peer;
 pub mod pose;
 pub mod config;
 pub mod cycle;
@@ -17,6 +19,7 @@ pub mod dop;
 pub mod golden;
 pub mod harness;
 pub mod hard_cases;
+pub mod measure;
 pub mod memory;
 pub mod query;
 pub mod report;

@@ -8,7 +8,7 @@ use collision_chip::mesh::{self, Mesh};
 use collision_chip::oracle;
 use collision_chip::pose::Pose;
 use collision_chip::query::{place, Accuracy, Chip};
-use collision_chip::report::{accuracy, memory_table, stall_table, summary_table};
+use collision_chip::report::{accuracy, figures, memory_table, stall_table, summary_table};
 use collision_chip::harness::units;
 use collision_chip::scene::graph::Plan;
 use collision_chip::scene::run::Prepared;
@@ -73,9 +73,23 @@ enum Cmd {
         out: PathBuf,
     },
     /// What accuracy costs: each mesh tumbling against a copy of itself (both scaled into
-    /// [-1,1]^3) at several distances, with each number format and DOP rounding, compared
-    /// with the exact oracle. Prints the table of docs/ACCURACY.md.
+    /// [-1,1]^3) at several distances, with each k, number format and DOP rounding,
+    /// compared with the exact oracle and run on the cycle model for its clocks (poses on
+    /// every core). Prints the tables of docs/ACCURACY.md.
     Accuracy(AccuracyArgs),
+    /// The papers' figures regenerated (docs/FIGURES.md): DATE'05 Figs. 6-8 (cycles and
+    /// queue memory, LIFO vs FIFO; the chip's speed-up at 800 MHz) and WSCG'03 Figs. 9-13
+    /// (software time, nodes and DOP transforms of the list and recursive traversals; the
+    /// chip's speed-up at 266 MHz beside Eq. 5), each as SVG and PNG with its data as CSV
+    /// and JSON. Software is timed one query at a time, the rest runs on every core. Build
+    /// with `--features parry` to add the parry3d peer to Fig. 8.
+    Figures {
+        #[arg(long, default_value = "target/figures")]
+        out: PathBuf,
+        /// A small run for CI: teapot and bunny, 5 distances, 6 orientations.
+        #[arg(long)]
+        quick: bool,
+    },
 }
 
 #[derive(Args, Default)]
@@ -112,6 +126,14 @@ struct AccuracyArgs {
     /// Number formats, comma separated (binary32, reduced, eEmF).
     #[arg(long, value_delimiter = ',', default_value = "binary32,reduced,e8m10")]
     formats: Vec<Format>,
+    /// k of the k-DOPs, comma separated (6, 14, 18, 24, 26).
+    #[arg(long, value_delimiter = ',', default_value = "24")]
+    k: Vec<usize>,
+    /// Also write the plot of clocks against the uncertain share (one point per
+    /// configuration, the Pareto front marked) into this directory, as SVG and PNG with
+    /// its data (CSV, JSON).
+    #[arg(long, value_name = "DIR")]
+    plot: Option<PathBuf>,
     /// Centre distances along x, from apart to deeply penetrating.
     #[arg(long, value_delimiter = ',', allow_hyphen_values = true, default_value = "2.2,1.6,1.2,0.8,0.4")]
     distances: Vec<f64>,
@@ -173,6 +195,7 @@ fn main() -> ExitCode {
         Some(Cmd::Query(q)) => query(q),
         Some(Cmd::Run { scene, opts }) => run(scene, opts),
         Some(Cmd::Accuracy(a)) => accuracy(a),
+        Some(Cmd::Figures { out, quick }) => figures(&out, quick),
         Some(Cmd::ExportVerilog { out }) => report_written(units::write_verilog(&out)),
         Some(Cmd::Vectors { out }) => report_written(units::write_vectors(&out)),
         None => run(None, RunOpts::default()),
@@ -293,14 +316,34 @@ fn accuracy(a: AccuracyArgs) -> Result<(), String> {
     let mut rows = vec![];
     for m in &a.meshes {
         let tris = load(m, true)?.triangles_f64();
-        rows.extend(accuracy::study(m, &tris, &a.formats, &roundings, &sweep, || bar.inc(1))?);
+        rows.extend(accuracy::study(m, &tris, &a.k, &a.formats, &roundings, &sweep, || bar.inc(1))?);
     }
     bar.finish_and_clear();
+    if let Some(dir) = &a.plot {
+        std::fs::create_dir_all(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
+        for p in figures::write_figure(&accuracy::figure(&rows), dir)? {
+            eprintln!("wrote {}", p.display());
+        }
+    }
     if a.json {
         println!("{}", serde_json::to_string_pretty(&rows).expect("serialisable"));
     } else {
         print!("{}", accuracy::table(&rows));
     }
+    Ok(())
+}
+
+fn figures(out: &std::path::Path, quick: bool) -> Result<(), String> {
+    let plan = if quick { figures::Plan::quick() } else { figures::Plan::full() };
+    let bar = progress_bar(0, false);
+    bar.set_style(ProgressStyle::with_template("{bar:40} {pos}/{len} {elapsed} (eta {eta}) {msg}").expect("valid template"));
+    let t0 = std::time::Instant::now();
+    let written = figures::generate(&plan, out, &bar)?;
+    bar.finish_and_clear();
+    for p in &written {
+        println!("wrote {}", p.display());
+    }
+    println!("figures in {:.1} s", t0.elapsed().as_secs_f64());
     Ok(())
 }
 

@@ -251,6 +251,10 @@ pub fn probe_valid(i: usize) -> Option<usize> {
     }
 }
 
+/// A bound on one query's clocks on the cycle model (waits are skipped, so a long memory
+/// latency costs no time; the bound only catches a hung model).
+pub const MAX_CYCLES: u64 = 1 << 50;
+
 /// What a cycle-model run records besides its trace.
 #[derive(Default)]
 pub struct Record<'p> {

@@ -47,7 +47,8 @@ pub fn separated(q: f64, u: f64, e: f64) -> bool {
     u + e <= -q
 }
 
-/// B's transformed DOPs during one query, computed on a node's first test: per lane an
+/// B's transformed DOPs during one query, computed on a node's first test (or at every
+/// test, [`without_memo`](TransformCache::without_memo)): per lane an
 /// f64 estimate `approx` of u_i with a bound `err` on |u_i - approx|, and the exact u_i
 /// (the chip's value, [`transformed`]) only for the lanes whose flag falls within the bound.
 /// The decisions equal [`dop_overlap`]'s bit for bit (tested); this only saves time.
@@ -71,6 +72,8 @@ pub struct TransformCache<'a> {
     exact: Vec<f64>,
     /// Per block, the lanes whose exact value is in `exact`.
     known: Vec<u32>,
+    /// Keep a node's rows for the query (false: one block, refilled by every test).
+    memo: bool,
 }
 
 impl<'a> TransformCache<'a> {
@@ -89,7 +92,14 @@ impl<'a> TransformCache<'a> {
             err: vec![],
             exact: vec![],
             known: vec![],
+            memo: true,
         }
+    }
+
+    /// Transforms B's DOP anew at every test, as WSCG'03 Algorithm 1 does in software: the
+    /// recursive traversal's time then is that algorithm's (the decisions are the same).
+    pub fn without_memo(self) -> Self {
+        TransformCache { memo: false, ..self }
     }
 
     /// The DOP unit: does B's node `nb` (DOP `d`) overlap A's DOP `e`?
@@ -125,8 +135,14 @@ impl<'a> TransformCache<'a> {
     }
 
     fn fill(&mut self, nb: u32, d: &[f64]) -> usize {
+        if self.memo {
+            self.slot[nb as usize] = self.known.len() as u32;
+        } else {
+            self.approx.clear();
+            self.err.clear();
+            self.known.clear();
+        }
         let block = self.known.len();
-        self.slot[nb as usize] = block as u32;
         self.known.push(0);
         let max = self.f.max_finite() / 8.0;
         for ((j, cm), &c) in self.setup.j.iter().zip(&self.setup.cmat).zip(&self.setup.cvec) {

@@ -1,22 +1,34 @@
 //! "What accuracy costs": the same tumbling sweep (WSCG'03 protocol) run with several number
-//! formats and DOP roundings, each query compared with the exact oracle.
+//! formats, k and DOP roundings, each query compared with the exact oracle and run on the
+//! cycle model (the RTL's microarchitecture) for its clocks.
 
 use crate::config::{ChipConfig, DopRounding};
+use crate::cycle::{self, drive::Reader, Params};
 use crate::dop::tree::Tri;
 use crate::format::Format;
+use crate::measure::parallel_map;
 use crate::oracle;
 use crate::query::{place, Accuracy, Chip};
+use crate::report::figures::{Cell, Figure, Panel, Series, Style, Table, PALETTE};
 use crate::scene::{sweep_poses, Sweep};
 use crate::traversal::{Mode, Traversal};
 use serde::Serialize;
 use std::fmt::Write;
 
-/// One mesh, format and rounding over all poses of the sweep.
+/// One mesh, k, format and rounding over all poses of the sweep.
 #[derive(Clone, Debug, Serialize)]
 pub struct Row {
     pub mesh: String,
+    pub k: usize,
     pub format: Format,
     pub dop_rounding: DopRounding,
+    #[serde(flatten)]
+    pub sums: Sums,
+}
+
+/// Sums over the queries.
+#[derive(Clone, Copy, Debug, Default, Serialize)]
+pub struct Sums {
     pub queries: u64,
     pub exact_pairs: u64,
     pub dop_tests: u64,
@@ -25,9 +37,25 @@ pub struct Row {
     pub memory_bytes: u64,
     pub misses: u64,
     pub extras: u64,
+    /// The cycle model's clocks (LIFO, all pairs, [`Params::RTL`]).
+    pub cycles: u64,
 }
 
-impl Row {
+impl std::ops::AddAssign for Sums {
+    fn add_assign(&mut self, q: Sums) {
+        self.queries += q.queries;
+        self.exact_pairs += q.exact_pairs;
+        self.dop_tests += q.dop_tests;
+        self.tri_tests += q.tri_tests;
+        self.uncertain += q.uncertain;
+        self.memory_bytes += q.memory_bytes;
+        self.misses += q.misses;
+        self.extras += q.extras;
+        self.cycles += q.cycles;
+    }
+}
+
+impl Sums {
     /// Triangle tests whose pair does not intersect: the DOP hierarchy's false positives at
     /// the leaves (the chip's pairs equal the exact ones, so this is tri_tests - pairs).
     pub fn dop_false_positive_rate(&self) -> f64 {
@@ -47,56 +75,61 @@ fn ratio(a: u64, b: u64) -> f64 {
     }
 }
 
-/// Runs every (format, rounding) on one mesh against a copy of itself; `progress` is called
-/// once per pose.
+/// Runs every (k, format, rounding) on one mesh against a copy of itself, the poses on every
+/// core; `progress` is called once per pose.
 pub fn study(
     mesh: &str,
     tris: &[Tri],
+    ks: &[usize],
     formats: &[Format],
     roundings: &[DopRounding],
     sweep: &Sweep,
-    mut progress: impl FnMut(),
+    progress: impl Fn() + Sync,
 ) -> Result<Vec<Row>, String> {
     let poses = sweep_poses(sweep)?;
-    let chips: Vec<Chip> = formats
-        .iter()
-        .flat_map(|&format| roundings.iter().map(move |&dop_rounding| ChipConfig { format, dop_rounding, ..Default::default() }))
-        .map(|cfg| Chip::new(tris, tris, cfg))
-        .collect::<Result<_, _>>()?;
+    let mut cfgs = vec![];
+    for &k in ks {
+        for &format in formats {
+            for &dop_rounding in roundings {
+                cfgs.push(ChipConfig { k, format, dop_rounding, ..Default::default() });
+            }
+        }
+    }
+    let chips: Vec<Chip> = cfgs.iter().map(|&cfg| Chip::new(tris, tris, cfg)).collect::<Result<_, _>>()?;
     if let Some(chip) = chips.first() {
         poses.iter().try_for_each(|sp| chip.check_pose(&sp.pose))?;
     }
-    let mut rows: Vec<Row> = chips
-        .iter()
-        .map(|c| Row {
-            mesh: mesh.to_string(),
-            format: c.cfg.format,
-            dop_rounding: c.cfg.dop_rounding,
-            queries: 0,
-            exact_pairs: 0,
-            dop_tests: 0,
-            tri_tests: 0,
-            uncertain: 0,
-            memory_bytes: 0,
-            misses: 0,
-            extras: 0,
-        })
-        .collect();
-    for sp in &poses {
+    let per_pose = parallel_map(&poses, |_, sp| {
         let exact = oracle::intersecting_pairs(tris, &place(tris, &sp.pose));
-        for (chip, row) in chips.iter().zip(rows.iter_mut()) {
+        let rows = chips.iter().map(|chip| {
             let r = chip.query(&sp.pose, Mode::All, Traversal::Lifo);
             let acc = Accuracy::of(Mode::All, &r.pairs, &exact);
-            row.queries += 1;
-            row.exact_pairs += exact.len() as u64;
-            row.dop_tests += r.counters.dop_tests;
-            row.tri_tests += r.counters.tri_tests;
-            row.uncertain += r.counters.uncertain;
-            row.memory_bytes += r.counters.memory_bytes;
-            row.misses += acc.misses;
-            row.extras += acc.extras;
-        }
+            let (trace, _) = cycle::run_query(chip, &chip.setup(&sp.pose), true, Mode::All, Params::RTL, Reader::default(), cycle::MAX_CYCLES, Default::default())?;
+            trace.check(Mode::All, &r).map_err(|e| format!("{mesh} k={} {} at {}: the cycle model disagrees with the golden model: {e}", chip.cfg.k, chip.cfg.format, sp.pose.text()))?;
+            Ok(Sums {
+                queries: 1,
+                exact_pairs: exact.len() as u64,
+                dop_tests: r.counters.dop_tests,
+                tri_tests: r.counters.tri_tests,
+                uncertain: r.counters.uncertain,
+                memory_bytes: r.counters.memory_bytes,
+                misses: acc.misses,
+                extras: acc.extras,
+                cycles: trace.cycles,
+            })
+        });
+        let rows = rows.collect::<Result<Vec<Sums>, String>>();
         progress();
+        rows
+    });
+    let mut rows: Vec<Row> = chips
+        .iter()
+        .map(|c| Row { mesh: mesh.to_string(), k: c.cfg.k, format: c.cfg.format, dop_rounding: c.cfg.dop_rounding, sums: Sums::default() })
+        .collect();
+    for pose_rows in per_pose {
+        for (row, q) in rows.iter_mut().zip(pose_rows?) {
+            row.sums += q;
+        }
     }
     Ok(rows)
 }
@@ -104,19 +137,18 @@ pub fn study(
 /// The Markdown table of docs/ACCURACY.md.
 pub fn table(rows: &[Row]) -> String {
     let mut out = String::from(
-        "| mesh | format | DOP rounding | queries | exact pairs / query | DOP tests / query | triangle tests / query | DOP false positives | uncertain | misses | extra pairs | memory KiB / query |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n",
+        "| mesh | k | format | DOP rounding | queries | exact pairs / query | DOP tests / query | triangle tests / query | DOP false positives | uncertain | misses | extra pairs | memory KiB / query | cycles / query |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
     );
-    for r in rows {
+    for row in rows {
+        let r = &row.sums;
         let q = r.queries.max(1) as f64;
         let _ = writeln!(
             out,
-            "| {} | {} | {} | {} | {:.1} | {:.0} | {:.1} | {:.1}% | {:.2}% | {} | {} | {:.1} |",
-            r.mesh,
-            r.format,
-            match r.dop_rounding {
-                DopRounding::Outward => "outward",
-                DopRounding::NearestEven => "nearest-even",
-            },
+            "| {} | {} | {} | {} | {} | {:.1} | {:.0} | {:.1} | {:.1}% | {:.2}% | {} | {} | {:.1} | {:.0} |",
+            row.mesh,
+            row.k,
+            row.format,
+            row.dop_rounding,
             r.queries,
             r.exact_pairs as f64 / q,
             r.dop_tests as f64 / q,
@@ -125,8 +157,84 @@ pub fn table(rows: &[Row]) -> String {
             100.0 * r.uncertain_rate(),
             r.misses,
             r.extras,
-            r.memory_bytes as f64 / q / 1024.0
+            r.memory_bytes as f64 / q / 1024.0,
+            r.cycles as f64 / q
         );
     }
     out
+}
+
+/// The configurations over all meshes: cycles per query against the share of triangle tests
+/// left to the host, one point per (k, format, rounding), the Pareto front of those with no
+/// miss marked (no configuration both faster and with a smaller uncertain share).
+pub fn figure(rows: &[Row]) -> Figure {
+    let mut cfgs: Vec<(usize, Format, DopRounding, Sums)> = vec![];
+    for r in rows {
+        match cfgs.iter_mut().find(|c| (c.0, c.1, c.2) == (r.k, r.format, r.dop_rounding)) {
+            Some(c) => c.3 += r.sums,
+            None => cfgs.push((r.k, r.format, r.dop_rounding, r.sums)),
+        }
+    }
+    let point = |s: &Sums| (100.0 * s.uncertain_rate(), s.cycles as f64 / s.queries.max(1) as f64);
+    let dominated = |a: &Sums| {
+        let (x, y) = point(a);
+        cfgs.iter().any(|c| c.3.misses == 0 && point(&c.3).0 <= x && point(&c.3).1 <= y && point(&c.3) != (x, y))
+    };
+    let mut front: Vec<(f64, f64)> = cfgs.iter().filter(|c| c.3.misses == 0 && !dominated(&c.3)).map(|c| point(&c.3)).collect();
+    front.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let mut series = vec![];
+    let mut groups: Vec<(Format, DopRounding)> = vec![];
+    for c in &cfgs {
+        if !groups.contains(&(c.1, c.2)) {
+            groups.push((c.1, c.2));
+        }
+    }
+    for (gi, &(f, r)) in groups.iter().enumerate() {
+        let mine: Vec<_> = cfgs.iter().filter(|c| (c.1, c.2) == (f, r)).collect();
+        series.push(Series {
+            label: format!("{f}, {r} DOP rounding"),
+            color: gi,
+            style: Style::Points,
+            points: mine.iter().map(|c| point(&c.3)).collect(),
+            labels: mine.iter().map(|c| format!("  k={}", c.0)).collect(),
+        });
+    }
+    series.push(Series { label: "Pareto front (no misses)".into(), color: PALETTE.len() - 1, style: Style::Dashed, points: front.clone(), labels: vec![] });
+    let mut table = Table {
+        columns: vec!["k", "format", "dop_rounding", "queries", "uncertain_share", "cycles_per_query", "memory_kib_per_query", "misses", "pareto"],
+        rows: vec![],
+    };
+    for c in &cfgs {
+        let (x, y) = point(&c.3);
+        table.rows.push(vec![
+            Cell::Int(c.0 as u64),
+            Cell::Text(c.1.to_string()),
+            Cell::Text(c.2.to_string()),
+            Cell::Int(c.3.queries),
+            Cell::Num(x / 100.0),
+            Cell::Num(y),
+            Cell::Num(c.3.memory_bytes as f64 / c.3.queries.max(1) as f64 / 1024.0),
+            Cell::Int(c.3.misses),
+            Cell::Text(front.contains(&(x, y)).to_string()),
+        ]);
+    }
+    let meshes: Vec<&str> = rows.iter().map(|r| r.mesh.as_str()).fold(vec![], |mut v, m| {
+        if !v.contains(&m) {
+            v.push(m);
+        }
+        v
+    });
+    Figure {
+        stem: "accuracy_cycles_uncertain",
+        title: format!("What accuracy costs: the chip's clocks against the host's share ({})", meshes.join(", ")),
+        panels: vec![Panel {
+            title: "one point per configuration (cycle model, LIFO, all pairs)".into(),
+            x_label: "triangle tests left to the host (uncertain), %",
+            y_label: "clocks per query",
+            log_x: true,
+            log_y: false,
+            series,
+        }],
+        table,
+    }
 }

@@ -1,7 +1,8 @@
 //! Reports: per-pose records of a scene run and the readable summary table; the
-//! accuracy study.
+//! accuracy study; the papers' figures.
 
 pub mod accuracy;
+pub mod figures;
 
 use crate::cycle::chip::Stats;
 use crate::pose::Pose;

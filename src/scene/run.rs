@@ -5,6 +5,7 @@ use super::graph::{Plan, Unit};
 use super::{CrossCheck, Scene, ScenePose};
 use crate::cycle::{self, drive::Reader};
 use crate::harness::{chip_io, verilator};
+use crate::measure::parallel_map;
 use crate::oracle;
 use crate::query::{place, Accuracy, Chip};
 use crate::report::{CycleRecord, MemoryRecord, PoseRecord};
@@ -72,10 +73,6 @@ pub struct SceneRun {
     pub records: Vec<PoseRecord>,
     pub activity: Activity,
 }
-
-/// A bound on one query's clocks on the cycle model (waits are skipped, so a long memory
-/// latency costs no time; the bound only catches a hung model).
-const CYCLE_MAX: u64 = 1 << 50;
 
 impl<'s> Prepared<'s> {
     /// Loads and checks; errors name the scene. `load` reads a mesh spec (scaled into the
@@ -180,7 +177,7 @@ impl<'s> Prepared<'s> {
             vcd: vcd.as_deref().zip(wave).map(|(p, w)| (p, &w.scopes[..], w.window.clone())),
             probes: self.verilog.as_ref().map(|_| &mut observe as &mut dyn FnMut(u64, &[u64]) -> Result<(), String>),
         };
-        let (trace, stats) = cycle::run_query(chip, &setup, lifo, s.mode, s.params, Reader::default(), CYCLE_MAX, rec)
+        let (trace, stats) = cycle::run_query(chip, &setup, lifo, s.mode, s.params, Reader::default(), cycle::MAX_CYCLES, rec)
             .map_err(|e| format!("pose {i}: {e}"))?;
         counts.add(2, 1);
         counts.add(3, stats.is_some() as u64);
@@ -245,31 +242,6 @@ impl<'s> Prepared<'s> {
             cross_checked: cross_checked.map(|c| c.to_string()),
         })
     }
-}
-
-/// `f` over `items` on every core, results in the items' order (the output of a parallel
-/// run is the serial run's).
-pub fn parallel_map<T: Sync, R: Send>(items: &[T], f: impl Fn(usize, &T) -> R + Sync) -> Vec<R> {
-    let threads = std::thread::available_parallelism().map_or(1, |n| n.get()).min(items.len().max(1));
-    let next = AtomicU64::new(0);
-    let mut out: Vec<(usize, R)> = std::thread::scope(|s| {
-        let workers: Vec<_> = (0..threads)
-            .map(|_| {
-                s.spawn(|| {
-                    let mut mine = vec![];
-                    loop {
-                        let i = next.fetch_add(1, Relaxed) as usize;
-                        let Some(item) = items.get(i) else { break };
-                        mine.push((i, f(i, item)));
-                    }
-                    mine
-                })
-            })
-            .collect();
-        workers.into_iter().flat_map(|w| w.join().expect("a pose's thread panicked")).collect()
-    });
-    out.sort_by_key(|(i, _)| *i);
-    out.into_iter().map(|(_, r)| r).collect()
 }
 
 #[cfg(test)]

@@ -8,7 +8,15 @@ use crate::dop::{DopTree, Node};
 
 pub(crate) fn run(e: &mut Engine) {
     e.queue_add(1);
+    count_list(e, 1);
     visit(e, DopTree::ROOT, vec![DopTree::ROOT]);
+}
+
+/// WSCG'03 Eq. 5 counts lists of aligned node pairs (sibling nodes are stored as one pair);
+/// a list shared by two tumbled siblings is one list.
+fn count_list(e: &mut Engine, nodes: usize) {
+    e.counters.lists += 1;
+    e.counters.list_node_pairs += nodes.div_ceil(2) as u64;
 }
 
 /// `list` is already counted as waiting; it is released here.
@@ -40,6 +48,7 @@ fn visit(e: &mut Engine, x: u32, list: Vec<u32>) {
                 if !for_children.is_empty() {
                     // Both children's lists wait until they are processed.
                     e.queue_add(2 * for_children.len() as u64);
+                    count_list(e, for_children.len());
                     let copy = for_children.clone();
                     visit(e, x1, copy);
                     if e.stop {
@@ -54,6 +63,7 @@ fn visit(e: &mut Engine, x: u32, list: Vec<u32>) {
                     return;
                 }
                 e.queue_add(for_self.len() as u64);
+                count_list(e, for_self.len());
                 cur = for_self;
             }
         }

@@ -68,6 +68,10 @@ pub struct Counters {
     /// Largest number of node pairs (or list entries) waiting in the queue, stack or lists.
     pub max_queue_depth: u64,
     pub memory_bytes: u64,
+    /// WSCG'03 Eq. 5's tau and sum of alpha (list traversal only): lists processed, and
+    /// their aligned node pairs (two sibling nodes each, as the memory stores them).
+    pub lists: u64,
+    pub list_node_pairs: u64,
 }
 
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -134,8 +138,9 @@ impl<'a> Engine<'a> {
     }
 
     /// One DOP test of A's node `na` against B's node `nb`. B's transformed distances are
-    /// computed on first use and kept for the query: the same values the lane computes
-    /// (the `dop_transforms` counter still counts what the hardware does).
+    /// computed on first use and kept for the query (the recursive traversal recomputes them
+    /// at every test, as WSCG'03 Algorithm 1 does): the same values the lane computes (the
+    /// `dop_transforms` counter still counts what the hardware does).
     fn dop_test(&mut self, na: u32, nb: u32) -> bool {
         let c = &mut self.counters;
         c.dop_tests += 1;
@@ -199,7 +204,10 @@ pub fn run(
         pairs: vec![],
         uncertain: vec![],
         live: 0,
-        dop_unit: doptrf::TransformCache::new(cfg.format, cfg.dop_rounding.op(), setup, b.tree.len()),
+        dop_unit: match doptrf::TransformCache::new(cfg.format, cfg.dop_rounding.op(), setup, b.tree.len()) {
+            c if traversal == Traversal::Recursive => c.without_memo(),
+            c => c,
+        },
         tri_unit: tcheck::TriUnit::new(cfg.format, cfg.tri_rounding, setup, a.tris.len(), b.tris.len()),
         counters: Counters::default(),
         stop: false,

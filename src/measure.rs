@@ -1,0 +1,61 @@
+//! How the reports measure: the cycle model's and the golden model's counting work on every
+//! core, the software's time one query at a time on an otherwise idle process.
+
+use std::hint::black_box;
+
+/// `f` over `items` on every core, results in the items' order (the output of a parallel
+/// run is the serial run's).
+pub fn parallel_map<T: Sync, R: Send>(items: &[T], f: impl Fn(usize, &T) -> R + Sync) -> Vec<R> {
+    let threads = std::thread::available_parallelism().map_or(1, |n| n.get()).min(items.len().max(1));
+    let next = std::sync::atomic::AtomicUsize::new(0);
+    let mut out: Vec<(usize, R)> = std::thread::scope(|s| {
+        let workers: Vec<_> = (0..threads)
+            .map(|_| {
+                s.spawn(|| {
+                    let mut mine = vec![];
+                    loop {
+                        let i = next.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+                        let Some(item) = items.get(i) else { break };
+                        mine.push((i, f(i, item)));
+                    }
+                    mine
+                })
+            })
+            .collect();
+        workers.into_iter().flat_map(|w| w.join().expect("a worker thread panicked")).collect()
+    });
+    out.sort_by_key(|(i, _)| *i);
+    out.into_iter().map(|(_, r)| r).collect()
+}
+
+/// Mean seconds per call of `f` over `items`, one call at a time, repeating the whole set
+/// until `min_seconds` have passed (a query of a few microseconds is timed over many calls).
+/// The clock is this thread's CPU time: on a machine shared with other processes, the time
+/// the calls ran, not the time they waited for a core.
+pub fn mean_seconds<T, R>(items: &[T], min_seconds: f64, mut f: impl FnMut(&T) -> R) -> f64 {
+    let (t0, mut calls) = (thread_seconds(), 0usize);
+    while calls == 0 || thread_seconds() - t0 < min_seconds {
+        for x in items {
+            black_box(f(x));
+            calls += 1;
+        }
+    }
+    (thread_seconds() - t0) / calls as f64
+}
+
+/// This thread's CPU time in seconds.
+#[cfg(unix)]
+pub fn thread_seconds() -> f64 {
+    let mut ts = libc::timespec { tv_sec: 0, tv_nsec: 0 };
+    // SAFETY: `ts` is a valid timespec for clock_gettime to write.
+    let r = unsafe { libc::clock_gettime(libc::CLOCK_THREAD_CPUTIME_ID, &mut ts) };
+    assert_eq!(r, 0, "clock_gettime(CLOCK_THREAD_CPUTIME_ID) failed");
+    ts.tv_sec as f64 + ts.tv_nsec as f64 * 1e-9
+}
+
+/// Wall-clock seconds since the first call (no thread CPU clock here).
+#[cfg(not(unix))]
+pub fn thread_seconds() -> f64 {
+    static T0: std::sync::OnceLock<std::time::Instant> = std::sync::OnceLock::new();
+    T0.get_or_init(std::time::Instant::now).elapsed().as_secs_f64()
+}

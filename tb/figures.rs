@@ -1,0 +1,127 @@
+//! `cchip figures` on a small plan: every file is written, the CSV has the columns the
+//! docs read, and the data obey what must hold whatever the timing (LIFO and FIFO find
+//! the same pairs, as do the list and recursive traversals; Algorithm 1 never transforms
+//! less than Algorithm 2).
+
+use collision_chip::config::DopRounding;
+use collision_chip::format::Format;
+use collision_chip::report::accuracy;
+use collision_chip::report::figures::{generate, Cell, Plan};
+use collision_chip::scene::Sweep;
+use std::collections::HashMap;
+
+fn csv(path: &std::path::Path) -> (Vec<String>, Vec<HashMap<String, String>>) {
+    let text = std::fs::read_to_string(path).unwrap();
+    let mut lines = text.lines();
+    let cols: Vec<String> = lines.next().unwrap().split(',').map(String::from).collect();
+    let rows = lines.map(|l| cols.iter().cloned().zip(l.split(',').map(String::from)).collect()).collect();
+    (cols, rows)
+}
+
+fn num(r: &HashMap<String, String>, c: &str) -> f64 {
+    r[c].parse().unwrap_or_else(|_| panic!("{c} = {:?} is not a number", r[c]))
+}
+
+#[test]
+fn figures_data_hold_what_the_papers_compare() {
+    let out = std::env::temp_dir().join(format!("cchip-figures-test-{}", std::process::id()));
+    let plan = Plan { meshes: vec!["teapot".into()], distances: vec![2.2, 1.4, 1.0], orientations: 2, seed: 3, min_seconds: 0.001 };
+    let written = generate(&plan, &out, &indicatif::ProgressBar::hidden()).unwrap();
+    let stems = [
+        "date05_fig6_cycles",
+        "date05_fig7_queue",
+        "date05_fig8_speedup",
+        "wscg03_fig9_first_witness",
+        "wscg03_fig10_all_pairs",
+        "wscg03_fig11_nodes",
+        "wscg03_fig12_transforms",
+        "wscg03_fig13_speedup",
+    ];
+    for s in stems {
+        for ext in ["svg", "png", "csv", "json"] {
+            let p = out.join(format!("{s}.{ext}"));
+            assert!(written.contains(&p), "{} not written", p.display());
+            assert!(std::fs::metadata(&p).unwrap().len() > 100, "{} is empty", p.display());
+        }
+    }
+    assert!(std::fs::read(out.join("date05_fig6_cycles.png")).unwrap().starts_with(b"\x89PNG"));
+
+    let (cols, fig6) = csv(&out.join("date05_fig6_cycles.csv"));
+    assert_eq!(cols, ["mesh", "triangles", "distance", "queries", "order", "mode", "pairs", "cycles", "cycles_max", "chip_us", "words"]);
+    assert_eq!(fig6.len(), 3 * 2 * 2);
+    for r in &fig6 {
+        let twin = fig6
+            .iter()
+            .find(|q| q["distance"] == r["distance"] && q["mode"] == r["mode"] && q["order"] != r["order"])
+            .unwrap();
+        if r["mode"] == "all" {
+            assert_eq!(r["pairs"], twin["pairs"], "LIFO and FIFO pairs differ: {r:?} {twin:?}");
+        }
+        assert!(num(r, "cycles") > 0.0 && num(r, "cycles") <= num(r, "cycles_max"));
+    }
+    // apart: no pairs; at 1.0 the copies penetrate
+    let pairs = |d: &str| num(fig6.iter().find(|r| r["distance"] == d && r["mode"] == "all").unwrap(), "pairs");
+    assert_eq!(pairs("2.2"), 0.0);
+    assert!(pairs("1") > 0.0);
+
+    let (cols, fig7) = csv(&out.join("date05_fig7_queue.csv"));
+    assert_eq!(cols[4..], ["order", "mode", "pairs", "max_entries", "max_entries_max", "queue_bytes"]);
+    assert!(fig7.iter().all(|r| num(r, "max_entries") >= 1.0));
+
+    let (cols, fig8) = csv(&out.join("date05_fig8_speedup.csv"));
+    assert_eq!(cols[4..], ["pairs", "cycles", "chip_us", "golden_us", "parry_us", "speedup_golden", "speedup_parry"]);
+    assert!(fig8.iter().all(|r| num(r, "speedup_golden") > 0.0));
+
+    let (cols, fig11) = csv(&out.join("wscg03_fig11_nodes.csv"));
+    assert_eq!(cols[4..], ["traversal", "mode", "pairs", "software_us", "node_fetches", "dop_transforms"]);
+    for r in fig11.iter().filter(|r| r["traversal"] == "list") {
+        let rec = fig11.iter().find(|q| q["traversal"] == "recursive" && q["distance"] == r["distance"] && q["mode"] == r["mode"]).unwrap();
+        if r["mode"] == "all" {
+            assert_eq!(r["pairs"], rec["pairs"]);
+            assert!(num(rec, "dop_transforms") >= num(r, "dop_transforms"), "{r:?} {rec:?}");
+        }
+    }
+
+    let (cols, fig13) = csv(&out.join("wscg03_fig13_speedup.csv"));
+    assert_eq!(
+        cols[4..],
+        ["pairs", "software_us", "cycles", "chip_us", "words", "lists", "alpha", "eq5_cycles", "eq5_us", "speedup_cycle_model", "speedup_eq5"]
+    );
+    for r in &fig13 {
+        let eq5 = 100.0 * num(r, "lists") + 10.0 * (num(r, "alpha") - 2.0) * num(r, "lists");
+        assert!((eq5 - num(r, "eq5_cycles")).abs() <= 1e-6 * eq5.abs().max(1.0), "{r:?}");
+    }
+    let json: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(out.join("wscg03_fig13_speedup.json")).unwrap()).unwrap();
+    assert_eq!(json.as_array().unwrap().len(), fig13.len());
+    let _ = std::fs::remove_dir_all(&out);
+}
+
+/// The accuracy study's plot data: one row per configuration, and a configuration is on the
+/// Pareto front iff it has no misses and no other such one is at least as good in both
+/// clocks and uncertain share.
+#[test]
+fn accuracy_pareto_front() {
+    let tris = collision_chip::mesh::resolve("teapot").unwrap().scaled_into_unit_cube().unwrap().triangles_f64();
+    let sweep = Sweep { distances: vec![1.2], orientations: 2, seed: 1 };
+    let formats = [Format::BINARY32, "e8m10".parse().unwrap()];
+    let rows = accuracy::study("teapot", &tris, &[6, 24], &formats, &[DopRounding::Outward], &sweep, || {}).unwrap();
+    assert_eq!(rows.len(), 4);
+    assert!(rows.iter().all(|r| r.sums.queries == 2 && r.sums.cycles > 0 && r.sums.misses == 0));
+    let t = accuracy::figure(&rows).table;
+    let col = |c: &str| t.columns.iter().position(|x| *x == c).unwrap();
+    let num = |r: &[Cell], c: &str| match &r[col(c)] {
+        Cell::Num(x) => *x,
+        other => panic!("{c}: {other:?}"),
+    };
+    for r in &t.rows {
+        let (x, y) = (num(r, "uncertain_share"), num(r, "cycles_per_query"));
+        let beaten = t.rows.iter().any(|q| {
+            let (qx, qy) = (num(q, "uncertain_share"), num(q, "cycles_per_query"));
+            qx <= x && qy <= y && (qx, qy) != (x, y)
+        });
+        assert_eq!(r[col("pareto")], Cell::Text((!beaten).to_string()), "{r:?}");
+    }
+    // tighter DOPs, fewer clocks
+    let b32 = |k: u64| t.rows.iter().find(|r| r[col("k")] == Cell::Int(k) && r[col("format")] == Cell::Text("binary32".into())).unwrap();
+    assert!(num(b32(24), "cycles_per_query") < num(b32(6), "cycles_per_query"));
+}
