@@ -11,7 +11,6 @@ use crate::query::{place, Accuracy, Chip};
 use crate::report::{CycleRecord, MemoryRecord, PoseRecord};
 use crate::traversal::{Mode, QueryResult, Traversal};
 use serde::Serialize;
-use std::sync::atomic::{AtomicU64, Ordering::Relaxed};
 
 /// What a scene run built and ran (counted where it happens, not inferred from the
 /// outputs).
@@ -33,26 +32,13 @@ pub struct Activity {
     pub verilog_runs: u64,
 }
 
+/// [`Activity`] shared by the poses' threads.
 #[derive(Default)]
-struct Counts([AtomicU64; 8]);
+struct Counts(std::sync::Mutex<Activity>);
 
 impl Counts {
-    fn add(&self, k: usize, n: u64) {
-        self.0[k].fetch_add(n, Relaxed);
-    }
-
-    fn snapshot(&self) -> Activity {
-        let v: Vec<u64> = self.0.iter().map(|a| a.load(Relaxed)).collect();
-        Activity {
-            golden_queries: v[0],
-            oracle_queries: v[1],
-            cycle_runs: v[2],
-            counted_runs: v[3],
-            cycle_clocks: v[4],
-            vcd_files: v[5],
-            rtl_runs: v[6],
-            verilog_runs: v[7],
-        }
+    fn add(&self, f: impl FnOnce(&mut Activity)) {
+        f(&mut self.0.lock().expect("a pose's thread panicked"));
     }
 }
 
@@ -121,7 +107,7 @@ impl<'s> Prepared<'s> {
             .map(|sp| {
                 let t0 = std::time::Instant::now();
                 let res = self.chip.query(&sp.pose, s.mode, s.traversal);
-                counts.add(0, 1);
+                counts.add(|a| a.golden_queries += 1);
                 (res, t0.elapsed().as_secs_f64() * 1e6)
             })
             .collect();
@@ -133,7 +119,7 @@ impl<'s> Prepared<'s> {
         .into_iter()
         .collect::<Result<Vec<_>, String>>()
         .map_err(|e| format!("{}: {e}", s.name))?;
-        Ok(SceneRun { records, activity: counts.snapshot() })
+        Ok(SceneRun { records, activity: counts.0.into_inner().expect("a pose's thread panicked") })
     }
 
     /// One pose after its golden query: the exact oracle and the cycle model (with what
@@ -141,7 +127,7 @@ impl<'s> Prepared<'s> {
     fn pose(&self, i: usize, sp: &ScenePose, golden: &(QueryResult, f64), counts: &Counts) -> Result<PoseRecord, String> {
         let (res, software_us) = (&golden.0, golden.1);
         let exact = self.plan.runs(Unit::ExactOracle).then(|| {
-            counts.add(1, 1);
+            counts.add(|a| a.oracle_queries += 1);
             oracle::intersecting_pairs(&self.a, &place(&self.b, &sp.pose))
         });
         let cycles = match self.plan.runs(Unit::DCntr) {
@@ -179,10 +165,12 @@ impl<'s> Prepared<'s> {
         };
         let (trace, stats) = cycle::run_query(chip, &setup, lifo, s.mode, s.params, Reader::default(), cycle::MAX_CYCLES, rec)
             .map_err(|e| format!("pose {i}: {e}"))?;
-        counts.add(2, 1);
-        counts.add(3, stats.is_some() as u64);
-        counts.add(4, trace.cycles);
-        counts.add(5, vcd.is_some() as u64);
+        counts.add(|a| {
+            a.cycle_runs += 1;
+            a.counted_runs += stats.is_some() as u64;
+            a.cycle_clocks += trace.cycles;
+            a.vcd_files += vcd.is_some() as u64;
+        });
         if plan.runs(Unit::GoldenCheck) {
             let golden_all = match s.mode {
                 Mode::All => res.clone(),
@@ -206,7 +194,7 @@ impl<'s> Prepared<'s> {
                 }
                 let rtl = chip_io::cross_check(chip, &sp.pose, s.mode, s.traversal, s.params, 2 * trace.cycles + 1000)
                     .map_err(|e| format!("pose {i}: rust-hdl and the cycle model differ: {e}"))?;
-                counts.add(6, 1);
+                counts.add(|a| a.rtl_runs += 1);
                 if rtl != trace {
                     return Err(format!("pose {i}: rust-hdl's trace differs from the cycle model's:\n{}\n{}", rtl.text(), trace.text()));
                 }
@@ -218,7 +206,7 @@ impl<'s> Prepared<'s> {
                 let dir = verilator::work_dir().join(format!("pose{i}"));
                 verilator::cross_check(bin, &dir, &image, s.params.memory, 2 * trace.cycles + 1000, &ports, &trace)
                     .map_err(|e| format!("pose {i}: {e}"))?;
-                counts.add(7, 1);
+                counts.add(|a| a.verilog_runs += 1);
                 Some(CrossCheck::Verilog)
             }
         };
