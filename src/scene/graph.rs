@@ -140,7 +140,11 @@ impl Unit {
             ),
             Unit::HostTrees => format!("{}-DOP trees and memory images of A and B ({})", s.cfg.k, s.cfg.format),
             Unit::HostSetup => format!("per pose ({}): B's placement, the DOP unit's C, c and D.KLMSEL, TRI_UNIT's frame maps", s.poses.len()),
-            Unit::Golden => format!("the golden model's {:?} traversal ({:?} mode): DOPTRF, T.CHECK, in software, one pose at a time (timed)", s.traversal, s.mode),
+            Unit::Golden => format!(
+                "the golden model's {} traversal ({} mode): DOPTRF, T.CHECK, in software, one pose at a time (timed)",
+                format!("{:?}", s.traversal).to_lowercase(),
+                format!("{:?}", s.mode).to_lowercase()
+            ),
             Unit::HostSettle => "exact predicates on the pairs T.CHECK left uncertain".into(),
             Unit::ExactOracle => "every intersecting pair exactly (AABB broad phase, exact predicates on the f64 geometry)".into(),
             Unit::AccuracyCounter => "misses and extra pairs of the chip against the exact oracle".into(),
