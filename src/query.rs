@@ -63,6 +63,12 @@ pub fn place(b: &[Tri], pose: &Pose) -> Vec<Tri> {
     b.iter().map(|tri| tri.map(|p| r * p + t)).collect()
 }
 
+/// The exact answer for B placed by `pose` against A: every intersecting pair of the f64
+/// geometry (the oracle's exact predicates).
+pub fn exact_pairs(a: &[Tri], b: &[Tri], pose: &Pose) -> Vec<(u32, u32)> {
+    oracle::intersecting_pairs(a, &place(b, pose))
+}
+
 /// Chip pairs against the exact pairs.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize)]
 pub struct Accuracy {

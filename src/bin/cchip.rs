@@ -5,9 +5,8 @@ use clap::{Args, Parser, Subcommand};
 use collision_chip::config::{ChipConfig, DopRounding};
 use collision_chip::format::Format;
 use collision_chip::mesh::{self, Mesh};
-use collision_chip::oracle;
 use collision_chip::pose::Pose;
-use collision_chip::query::{place, Accuracy, Chip};
+use collision_chip::query::{exact_pairs, Accuracy, Chip};
 use collision_chip::report::{accuracy, figures, memory_table, stall_table, summary_table};
 use collision_chip::harness::units;
 use collision_chip::scene::graph::Plan;
@@ -291,9 +290,6 @@ struct QueryJson<'a> {
     accuracy: Option<Accuracy>,
 }
 
-fn exact_pairs(ta: &[oracle::Tri], tb: &[oracle::Tri], pose: &Pose) -> Vec<(u32, u32)> {
-    oracle::intersecting_pairs(ta, &place(tb, pose))
-}
 
 fn report_written(r: std::io::Result<Vec<String>>) -> Result<(), String> {
     let paths = r.map_err(|e| format!("cannot write: {e}"))?;

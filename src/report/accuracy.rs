@@ -7,8 +7,7 @@ use crate::cycle::{self, drive::Reader, Params};
 use crate::dop::tree::Tri;
 use crate::format::Format;
 use crate::measure::parallel_map;
-use crate::oracle;
-use crate::query::{place, Accuracy, Chip};
+use crate::query::{exact_pairs, Accuracy, Chip};
 use crate::report::figures::{Cell, Figure, Panel, Series, Style, Table, PALETTE};
 use crate::scene::{sweep_poses, Sweep};
 use crate::traversal::{Mode, Traversal};
@@ -100,7 +99,7 @@ pub fn study(
         poses.iter().try_for_each(|sp| chip.check_pose(&sp.pose))?;
     }
     let per_pose = parallel_map(&poses, |_, sp| {
-        let exact = oracle::intersecting_pairs(tris, &place(tris, &sp.pose));
+        let exact = exact_pairs(tris, tris, &sp.pose);
         let rows = chips.iter().map(|chip| {
             let r = chip.query(&sp.pose, Mode::All, Traversal::Lifo);
             let acc = Accuracy::of(Mode::All, &r.pairs, &exact);

@@ -7,7 +7,7 @@ use crate::cycle::{self, drive::Reader};
 use crate::harness::{chip_io, verilator};
 use crate::measure::parallel_map;
 use crate::oracle;
-use crate::query::{place, Accuracy, Chip};
+use crate::query::{exact_pairs, Accuracy, Chip};
 use crate::report::{CycleRecord, MemoryRecord, PoseRecord};
 use crate::traversal::{Mode, QueryResult, Traversal};
 use serde::Serialize;
@@ -128,7 +128,7 @@ impl<'s> Prepared<'s> {
         let (res, software_us) = (&golden.0, golden.1);
         let exact = self.plan.runs(Unit::ExactOracle).then(|| {
             counts.add(|a| a.oracle_queries += 1);
-            oracle::intersecting_pairs(&self.a, &place(&self.b, &sp.pose))
+            exact_pairs(&self.a, &self.b, &sp.pose)
         });
         let cycles = match self.plan.runs(Unit::DCntr) {
             false => None,
