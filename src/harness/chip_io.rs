@@ -357,7 +357,7 @@ pub fn queries() -> Vec<ChipQuery> {
         // the host reads one result in 40 clocks: TRI_UNIT's FIFO fills and the credit
         // stalls the DOP unit
         big("big_patch_lifo_all_slow_host", "bunny-patch:300", patch, true, Mode::All, 2, 1, 40),
-        // no sure hit in e8m15 (every crossing pair is uncertain): the whole traversal
+        // in e8m15 the first sure hit comes after 180 uncertain results (a long first-hit query)
         big("big_patch_fifo_first", "bunny-patch:120", patch, false, Mode::First, 3, 1, 1),
         big("big_patch_lifo_first", "bunny-patch:300", patch, true, Mode::First, 1, 1, 1),
     ]

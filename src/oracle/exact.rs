@@ -28,8 +28,13 @@ fn c3(p: &P) -> Coord3D<f64> {
 
 /// Exact sign of orient3d(a, b, c, d).
 #[inline(always)]
-fn o3(a: &P, b: &P, c: &P, d: &P) -> i8 {
+pub(crate) fn o3(a: &P, b: &P, c: &P, d: &P) -> i8 {
     sign(orient3d(c3(a), c3(b), c3(c), c3(d)))
+}
+
+/// Exact: the three vertices are collinear (or equal): the triangle has no plane.
+pub(crate) fn collinear(t: &Tri) -> bool {
+    !matches!(classify(t), Shape::Tri(..))
 }
 
 /// Projection along axis `k` (dropping coordinate `k`); an affine map, so on any plane whose

@@ -90,6 +90,15 @@ pub fn tri_tri(a: &Tri, b: &Tri) -> bool {
         && exact::shapes_intersect(&exact::classify(a), &exact::classify(b))
 }
 
+/// Exact: true iff some vertex of one triangle lies on the plane of the other (`orient3d`
+/// is 0): touching, coplanar or with a vertex exactly on the other's plane, where a sign
+/// T.CHECK decides from is exactly 0 and it must answer "uncertain". A triangle without a
+/// plane (collinear vertices) gives false: it is degenerate, another cause.
+pub fn vertex_on_plane(a: &Tri, b: &Tri) -> bool {
+    let on = |t: &Tri, s: &Tri| !exact::collinear(t) && s.iter().any(|p| exact::o3(&t[0], &t[1], &t[2], p) == 0);
+    on(a, b) || on(b, a)
+}
+
 /// [`tri_tri`] without the box pretest and the shared-vertex shortcut (tests only).
 #[cfg(test)]
 pub(crate) fn tri_tri_slow(a: &Tri, b: &Tri) -> bool {

@@ -521,3 +521,28 @@ proptest! {
         prop_assert_eq!(intersecting_pairs(&a, &b), brute_force_pairs(&a, &b));
     }
 }
+
+/// Hand-made: which pairs have a vertex exactly on the other's plane (the "on plane" cause of
+/// an uncertain T.CHECK), in both orders.
+#[test]
+fn vertex_on_plane_cases() {
+    let a = t([0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]);
+    let cases = [
+        // a vertex of the second triangle on z = 0, outside the first: on its plane all the same
+        (t([5.0, 5.0, 0.0], [5.0, 6.0, 1.0], [6.0, 5.0, 1.0]), true),
+        // coplanar, disjoint
+        (t([5.0, 5.0, 0.0], [6.0, 5.0, 0.0], [5.0, 6.0, 0.0]), true),
+        // crossing through the interior: no vertex on either plane
+        (t([0.25, 0.25, -1.0], [0.25, 0.25, 1.0], [3.0, 0.25, 1.0]), false),
+        // 2^-60 above the plane: not on it
+        (t([0.25, 0.25, 2f64.powi(-60)], [0.25, 0.75, 1.0], [0.75, 0.25, 1.0]), false),
+        // the first triangle's vertex (0,0,0) lies on the second's plane x = 0
+        (t([0.0, -1.0, -1.0], [0.0, 1.0, -1.0], [0.0, 0.0, 1.0]), true),
+        // a segment (collinear) off the plane: no plane of its own, and no vertex on a's
+        (t([0.5, 0.5, 1.0], [0.5, 0.5, 2.0], [0.5, 0.5, 3.0]), false),
+    ];
+    for (i, (b, want)) in cases.iter().enumerate() {
+        assert_eq!(vertex_on_plane(&a, b), *want, "case {i}");
+        assert_eq!(vertex_on_plane(b, &a), *want, "case {i} swapped");
+    }
+}

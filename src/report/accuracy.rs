@@ -7,7 +7,9 @@ use crate::cycle::{self, drive::Reader, Params};
 use crate::dop::tree::Tri;
 use crate::format::Format;
 use crate::measure::parallel_map;
-use crate::query::{exact_pairs, Accuracy, Chip};
+use crate::memory::TriWord;
+use crate::oracle;
+use crate::query::{exact_pairs, place, Accuracy, Chip};
 use crate::report::figures::{Cell, Figure, Panel, Series, Style, Table, PALETTE};
 use crate::scene::{sweep_poses, Sweep};
 use crate::traversal::{Mode, Traversal};
@@ -33,6 +35,10 @@ pub struct Sums {
     pub dop_tests: u64,
     pub tri_tests: u64,
     pub uncertain: u64,
+    /// Uncertain by cause ([`Cause`]), each pair counted once, in this order.
+    pub uncertain_degenerate: u64,
+    pub uncertain_on_plane: u64,
+    pub uncertain_bound: u64,
     pub memory_bytes: u64,
     pub misses: u64,
     pub extras: u64,
@@ -47,6 +53,9 @@ impl std::ops::AddAssign for Sums {
         self.dop_tests += q.dop_tests;
         self.tri_tests += q.tri_tests;
         self.uncertain += q.uncertain;
+        self.uncertain_degenerate += q.uncertain_degenerate;
+        self.uncertain_on_plane += q.uncertain_on_plane;
+        self.uncertain_bound += q.uncertain_bound;
         self.memory_bytes += q.memory_bytes;
         self.misses += q.misses;
         self.extras += q.extras;
@@ -63,6 +72,33 @@ impl Sums {
 
     pub fn uncertain_rate(&self) -> f64 {
         ratio(self.uncertain, self.tri_tests)
+    }
+}
+
+/// Why TRI_UNIT left a pair to the host, first cause that applies.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Cause {
+    /// A leaf has no unit-triangle map (zero area, or too ill-conditioned for the format):
+    /// its direction of TRI_UNIT cannot decide.
+    Degenerate,
+    /// A vertex of one triangle lies exactly on the other's plane in the oracle's geometry
+    /// (touching, coplanar): a deciding value is exactly 0, no bound can decide it.
+    OnPlane,
+    /// Every deciding value is non-zero, but some sign lies inside its error bound.
+    Bound,
+}
+
+impl Cause {
+    /// The cause for the uncertain pair of words `wa`, `wb` whose triangles are `ta` of A and
+    /// `tb` of B as the oracle places them.
+    pub fn of(wa: &TriWord, wb: &TriWord, ta: &Tri, tb: &Tri) -> Cause {
+        if wa.degenerate || wb.degenerate {
+            Cause::Degenerate
+        } else if oracle::vertex_on_plane(ta, tb) {
+            Cause::OnPlane
+        } else {
+            Cause::Bound
+        }
     }
 }
 
@@ -100,13 +136,22 @@ pub fn study(
     }
     let per_pose = parallel_map(&poses, |_, sp| {
         let exact = exact_pairs(tris, tris, &sp.pose);
+        let placed = place(tris, &sp.pose);
         let rows = chips.iter().map(|chip| {
             let r = chip.query(&sp.pose, Mode::All, Traversal::Lifo);
             let acc = Accuracy::of(Mode::All, &r.pairs, &exact);
             let (trace, _) = cycle::run_query(chip, &chip.setup(&sp.pose), true, Mode::All, Params::RTL, Reader::default(), cycle::MAX_CYCLES, Default::default())?;
             trace.check(Mode::All, &r).map_err(|e| format!("{mesh} k={} {} at {}: the cycle model disagrees with the golden model: {e}", chip.cfg.k, chip.cfg.format, sp.pose.text()))?;
+            let mut causes = [0u64; 3];
+            for &(a, b) in &r.uncertain {
+                let (a, b) = (a as usize, b as usize);
+                causes[Cause::of(&chip.a.tris[a], &chip.b.tris[b], &tris[a], &placed[b]) as usize] += 1;
+            }
             Ok(Sums {
                 queries: 1,
+                uncertain_degenerate: causes[Cause::Degenerate as usize],
+                uncertain_on_plane: causes[Cause::OnPlane as usize],
+                uncertain_bound: causes[Cause::Bound as usize],
                 exact_pairs: exact.len() as u64,
                 dop_tests: r.counters.dop_tests,
                 tri_tests: r.counters.tri_tests,
@@ -136,14 +181,14 @@ pub fn study(
 /// The Markdown table of docs/ACCURACY.md.
 pub fn table(rows: &[Row]) -> String {
     let mut out = String::from(
-        "| mesh | k | format | DOP rounding | queries | exact pairs / query | DOP tests / query | triangle tests / query | DOP false positives | uncertain | misses | extra pairs | memory KiB / query | cycles / query |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
+        "| mesh | k | format | DOP rounding | queries | exact pairs / query | DOP tests / query | triangle tests / query | DOP false positives | uncertain | uncertain: degenerate / on plane / bound | misses | extra pairs | memory KiB / query | cycles / query |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
     );
     for row in rows {
         let r = &row.sums;
         let q = r.queries.max(1) as f64;
         let _ = writeln!(
             out,
-            "| {} | {} | {} | {} | {} | {:.1} | {:.0} | {:.1} | {:.1}% | {:.2}% | {} | {} | {:.1} | {:.0} |",
+            "| {} | {} | {} | {} | {} | {:.1} | {:.0} | {:.1} | {:.1}% | {:.2}% | {} / {} / {} | {} | {} | {:.1} | {:.0} |",
             row.mesh,
             row.k,
             row.format,
@@ -154,6 +199,9 @@ pub fn table(rows: &[Row]) -> String {
             r.tri_tests as f64 / q,
             100.0 * r.dop_false_positive_rate(),
             100.0 * r.uncertain_rate(),
+            r.uncertain_degenerate,
+            r.uncertain_on_plane,
+            r.uncertain_bound,
             r.misses,
             r.extras,
             r.memory_bytes as f64 / q / 1024.0,
