@@ -490,23 +490,26 @@ fn outward_dop_test_never_culls_a_contact() {
 }
 
 /// The default query equals the exact oracle on the vendored meshes, from apart to deeply
-/// penetrating, in binary32 and the reduced format (where most pairs are settled by the host).
+/// penetrating, in binary32 and the reduced format (where the host settles a few percent).
 /// Equality alone would also hold for a TRI_UNIT that always answered "uncertain" (the host
 /// settles those with the same oracle) or a DOP test that never culled, so the shares of
 /// uncertain triangle tests and of overlapping DOP tests are bounded per mesh and format
-/// (bounds about 1.5 times the shares measured when they were set, issue 16; below 1).
+/// (bounds about 1.5 times the shares measured when they were set, issue 16, and for binary32
+/// at least 0.002: a handful of pairs; below 1). The uncertain bounds were tightened when T.CHECK's
+/// unit-triangle map got a normal as long as the edges (issue 13): with the unit normal the
+/// shares were 0.0033-0.0345 (binary32) and 0.47-0.93 (e8m15), and fail these bounds.
 #[test]
 fn default_query_is_exact_on_vendored_meshes() {
     let sweep = collision_chip::scene::Sweep { distances: vec![2.2, 1.4, 0.8, 0.2], orientations: 2, seed: 5 };
     let poses = collision_chip::scene::sweep_poses(&sweep).unwrap();
     // (mesh, format, most uncertain / triangle tests, most overlapping / DOP tests)
     let bounds = [
-        ("bunny", Format::BINARY32, 0.01, 0.5),    // measured 0.0033, 0.368
-        ("bunny", Format::REDUCED, 0.75, 0.5),     // 0.579, 0.369
-        ("teapot", Format::BINARY32, 0.01, 0.5),   // 0.0048, 0.390
-        ("teapot", Format::REDUCED, 0.65, 0.5),    // 0.466, 0.390
-        ("dragon-11k", Format::BINARY32, 0.05, 0.5), // 0.0345, 0.380
-        ("dragon-11k", Format::REDUCED, 0.97, 0.5),  // 0.934, 0.380
+        ("bunny", Format::BINARY32, 0.002, 0.5),    // measured 0.0007, 0.368
+        ("bunny", Format::REDUCED, 0.055, 0.5),     // 0.0352, 0.369
+        ("teapot", Format::BINARY32, 0.002, 0.5),   // 0.0006, 0.390
+        ("teapot", Format::REDUCED, 0.035, 0.5),    // 0.0217, 0.390
+        ("dragon-11k", Format::BINARY32, 0.002, 0.5), // 0.0002, 0.380
+        ("dragon-11k", Format::REDUCED, 0.09, 0.5),  // 0.0587, 0.380
     ];
     for (name, format, max_uncertain, max_overlaps) in bounds {
         let tris = mesh::resolve(name).unwrap().scaled_into_unit_cube().unwrap().triangles_f64();
