@@ -43,14 +43,14 @@ fn query(name: &str) -> (ChipQuery, PreparedQuery) {
 fn cycle_model(root: &Path, name: &str, reps: usize) -> (u64, f64, f64) {
     let (q, p) = query(name);
     let want = expect(root, name);
-    let params = Params { memory: q.timing, ..Params::RTL };
+    let params = Params { memory: q.timing.into(), ..Params::RTL };
     let setup = p.chip.setup(&q.pose);
     let (mut by_clock, mut skipping, mut cycles) = (f64::INFINITY, f64::INFINITY, 0);
     for _ in 0..reps {
         let t = Instant::now();
         let mut c = Chip::new(&p.chip.cfg, params, &p.chip.a, &p.chip.b, &setup, true).unwrap();
         let words = image_words(&p.chip.a, &p.chip.b);
-        let d = Drive { timing: q.timing, reader: q.reader, words, max_cycles: 10_000_000 };
+        let d = Drive { memory: q.timing.into(), word_bits: p.chip.layout.word_bits(), reader: q.reader, words, max_cycles: 10_000_000 };
         let writes = control_writes(&p.chip.a, &p.chip.b, q.lifo, q.mode);
         let tr = drive_query(&mut c, &writes, &d, false, |_, _| Ok(()), None).unwrap();
         by_clock = by_clock.min(t.elapsed().as_secs_f64());
@@ -72,7 +72,7 @@ fn rust_hdl(root: &Path, name: &str) -> (u64, f64) {
         .spawn(move || {
             let mut chip = exported_chip();
             let t = Instant::now();
-            let tr = run_query(&mut chip, &img, &drive(&img, q.timing, q.reader, 1_000_000)).expect("the query finishes");
+            let tr = run_query(&mut chip, &img, &drive(&img, q.timing.into(), q.reader, 1_000_000)).expect("the query finishes");
             (tr, t.elapsed().as_secs_f64())
         })
         .unwrap()

@@ -30,6 +30,10 @@ impl Layout {
         let w = cfg.format.width();
         Layout { node_bits: 1 + cfg.k as u32 * w + 64, tri_bits: 24 * w + 2 }
     }
+    /// A memory word holds either record: the wider one.
+    pub fn word_bits(&self) -> u32 {
+        self.node_bits.max(self.tri_bits)
+    }
     pub fn node_bytes(&self) -> u64 {
         self.node_bits.div_ceil(8) as u64
     }

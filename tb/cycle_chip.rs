@@ -12,7 +12,7 @@
 use collision_chip::config::{ChipConfig, DopRounding};
 use collision_chip::cycle::chip::{control_writes, image_words, Chip as CycleChip};
 use collision_chip::cycle::drive::{run_query, ChipTrace, Drive, Reader};
-use collision_chip::cycle::{self, MemTiming, Params};
+use collision_chip::cycle::{self, Ddr, MemTiming, Memory, Params};
 use collision_chip::format::{Format, Rounding};
 use collision_chip::mesh::soup;
 use collision_chip::pose::Pose;
@@ -40,7 +40,7 @@ fn every_checked_in_trace() {
     let out = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("target/chip-expect");
     for q in queries() {
         let p = q.prepare().unwrap();
-        let params = Params { memory: q.timing, ..Params::RTL };
+        let params = Params { memory: q.timing.into(), ..Params::RTL };
         let (tr, stats) = cycle::run_query(&p.chip, &p.chip.setup(&q.pose), q.lifo, q.mode, params, q.reader, MAX_CYCLES, counted()).unwrap();
         let stats = stats.expect("counted");
         println!("{}: {} ({stats:?})", q.name, tr.text().lines().last().unwrap());
@@ -75,7 +75,7 @@ fn large_queries_cover_what_they_claim() {
     let (mut back_pressure, mut mixed, mut orders_modes) = (false, false, std::collections::BTreeSet::new());
     for q in &large {
         let p = q.prepare().unwrap();
-        let params = Params { memory: q.timing, ..Params::RTL };
+        let params = Params { memory: q.timing.into(), ..Params::RTL };
         let (tr, st) = cycle::run_query(&p.chip, &p.chip.setup(&q.pose), q.lifo, q.mode, params, q.reader, MAX_CYCLES, counted()).unwrap();
         let st = st.expect("counted");
         assert!((10_000..=200_000).contains(&tr.cycles), "{}: {} cycles", q.name, tr.cycles);
@@ -99,12 +99,24 @@ fn config(k: usize, binary32: bool, outward: bool) -> ChipConfig {
     }
 }
 
+/// The ideal memory, or DDR SDRAM of random geometry and costs (small pages and buses too,
+/// so that words span bursts and banks conflict).
+fn memory() -> impl Strategy<Value = Memory> {
+    prop_oneof![
+        (1u32..=6, 1u32..=3).prop_map(|(latency, interval)| Memory::Ideal(MemTiming { latency, interval })),
+        (1u32..=4, 6u32..=12, 5u32..=8, 0u32..=3, 0u32..=4, 0u32..=12).prop_map(|(banks, page, bus, burst, hit, miss)| {
+            let burst = 1 << burst;
+            Memory::Ddr(Ddr { banks, page_bytes: 1 << page, bus_bits: 1 << bus, burst, hit: burst + hit, miss: burst + hit + miss })
+        }),
+    ]
+}
+
 fn params() -> impl Strategy<Value = Params> {
     (
         (10u32..=14, 1u32..=20, 3u32..=140, 1u32..=64),
-        (1u32..=2, 1u32..=32, 1u32..=4, 1u32..=6, 1u32..=3),
+        (1u32..=2, 1u32..=32, 1u32..=4, memory()),
     )
-        .prop_map(|((q, dl, tl, tf), (sp, cr, os, lat, int))| Params {
+        .prop_map(|((q, dl, tl, tf), (sp, cr, os, memory))| Params {
             queue_entries: 1 << q,
             dop_latency: dl,
             tri_latency: tl,
@@ -112,7 +124,7 @@ fn params() -> impl Strategy<Value = Params> {
             issue_spacing: sp,
             credit: cr,
             outstanding: os,
-            memory: MemTiming { latency: lat, interval: int },
+            memory,
         })
 }
 
@@ -124,7 +136,7 @@ fn run(chip: &Chip, pose: &Pose, lifo: bool, mode: Mode, p: Params, reader: Read
     let setup = chip.setup(pose);
     let mut c = CycleChip::new(&chip.cfg, p, &chip.a, &chip.b, &setup, true)?;
     let words = image_words(&chip.a, &chip.b);
-    let d = Drive { timing: p.memory, reader, words, max_cycles: MAX_CYCLES };
+    let d = Drive { memory: p.memory, word_bits: chip.layout.word_bits(), reader, words, max_cycles: MAX_CYCLES };
     run_query(&mut c, &control_writes(&chip.a, &chip.b, lifo, mode), &d, true, |_, p| {
         assert_eq!(p.map(|v| v.len()), Some(cycle::PROBES.len()));
         Ok(())
@@ -206,7 +218,8 @@ fn bad_parameters_are_refused() {
         (Params { queue_entries: 0, ..Params::RTL }, "queue_entries"),
         (Params { issue_spacing: 3, ..Params::RTL }, "issue_spacing"),
         (Params { outstanding: 5, ..Params::RTL }, "outstanding"),
-        (Params { memory: MemTiming { latency: 0, interval: 1 }, ..Params::RTL }, "latency"),
+        (Params { memory: MemTiming { latency: 0, interval: 1 }.into(), ..Params::RTL }, "latency"),
+        (Params { memory: Memory::Ddr(Ddr { burst: 9, ..Ddr::WSCG03 }), ..Params::RTL }, "burst <= hit <= miss"),
     ] {
         let e = CycleChip::new(&CHIP_CONFIG, p, &chip.a, &chip.b, &setup, true).err().expect("refused");
         assert!(e.contains(what), "{e}");

@@ -10,12 +10,12 @@
 
 use collision_chip::cycle::chip::Chip as CycleChip;
 use collision_chip::cycle::drive::{run_query, ChipTrace, Drive, Lockstep, Reader};
-use collision_chip::cycle::{MemTiming, Params};
+use collision_chip::cycle::{Ddr, MemTiming, Memory, Params};
 use collision_chip::dop::HostSetup;
 use collision_chip::pose::Pose;
 use collision_chip::query::Chip;
 use collision_chip::cycle::drive::open_vcd;
-use collision_chip::harness::chip_io::{queries, ChipQuery, QueryImage, RtlChip, CHIP_CONFIG};
+use collision_chip::harness::chip_io::{drive, queries, ChipQuery, QueryImage, RtlChip, CHIP_CONFIG};
 use collision_chip::rtl::e8m15::{chip_top, CollisionChip};
 use collision_chip::traversal::{Mode, QueryResult, Traversal};
 use std::path::PathBuf;
@@ -37,12 +37,12 @@ struct Case {
     golden: QueryResult,
     lifo: bool,
     mode: Mode,
-    timing: MemTiming,
+    timing: Memory,
     reader: Reader,
 }
 
 impl Case {
-    fn new(name: &str, chip: Chip, pose: Pose, lifo: bool, mode: Mode, timing: MemTiming, reader: Reader) -> Case {
+    fn new(name: &str, chip: Chip, pose: Pose, lifo: bool, mode: Mode, timing: Memory, reader: Reader) -> Case {
         let setup = chip.setup(&pose);
         let image = QueryImage::new(&chip.a, &chip.b, &setup, lifo, mode).unwrap();
         let golden = chip.query(&pose, Mode::All, if lifo { Traversal::Lifo } else { Traversal::Fifo });
@@ -51,11 +51,11 @@ impl Case {
 
     fn of(q: &ChipQuery) -> Case {
         let p = q.prepare().unwrap();
-        Case::new(q.name, p.chip, q.pose, q.lifo, q.mode, q.timing, q.reader)
+        Case::new(q.name, p.chip, q.pose, q.lifo, q.mode, q.timing.into(), q.reader)
     }
 
     fn drive(&self) -> Drive {
-        Drive { timing: self.timing, reader: self.reader, words: self.image.memory.len() as u32, max_cycles: MAX_CYCLES }
+        drive(&self.image, self.timing, self.reader, MAX_CYCLES)
     }
 
     /// Runs the query `runs` times back to back on one rust-hdl chip of `2^N` queue
@@ -223,7 +223,7 @@ fn a_last_leaf_pair_is_tested() {
     let b = vec![[p(0.2, 0.2, -1.0), p(0.3, 0.2, 1.0), p(0.2, 0.3, 1.0)]];
     let pose = Pose::new(0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     for lifo in [false, true] {
-        let case = Case::new("one_leaf_pair", Chip::new(&a, &b, CHIP_CONFIG).unwrap(), pose, lifo, Mode::All, MemTiming::default(), Reader::default());
+        let case = Case::new("one_leaf_pair", Chip::new(&a, &b, CHIP_CONFIG).unwrap(), pose, lifo, Mode::All, MemTiming::default().into(), Reader::default());
         let tr = &case.lockstep::<10, 11>(1, None)[0];
         assert_eq!(tr.results.iter().map(|r| (r.1, r.2, r.3)).collect::<Vec<_>>(), [(0, 0, false)], "{}", tr.text());
         case.check(tr);
@@ -263,6 +263,9 @@ fn seeded_random_queries() {
         let pose = Pose::new(r(&mut rng), r(&mut rng), r(&mut rng), t(&mut rng), t(&mut rng), t(&mut rng));
         let (lifo, first) = (rng.random::<bool>(), rng.random_range(0..3) == 0);
         let timing = MemTiming { latency: rng.random_range(1..=3), interval: rng.random_range(1..=2) };
+        // seed 2: a small DDR SDRAM (3 words per page, 2 banks), so that rust-hdl runs against
+        // the same DDR model as the cycle model (the driver is shared)
+        let timing = if seed == 2 { Memory::Ddr(Ddr { banks: 2, page_bytes: 256, bus_bits: 64, burst: 2, hit: 2, miss: 5 }) } else { timing.into() };
         let reader = Reader { period: [1, 1, 2, 5][rng.random_range(0..4)] };
         let mode = if first { Mode::First } else { Mode::All };
         let case = Case::new(&format!("seed {seed}"), chip, pose, lifo, mode, timing, reader);

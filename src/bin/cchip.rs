@@ -3,6 +3,7 @@
 
 use clap::{Args, Parser, Subcommand};
 use collision_chip::config::{ChipConfig, DopRounding};
+use collision_chip::cycle::Memory;
 use collision_chip::format::Format;
 use collision_chip::mesh::{self, Mesh};
 use collision_chip::pose::Pose;
@@ -381,20 +382,21 @@ fn run(path: Option<PathBuf>, o: RunOpts) -> Result<(), String> {
     if out.accuracy {
         println!("misses = exact pairs the chip did not report; extras = reported pairs that do not intersect.");
     }
+    let memory = match scene.params.memory {
+        Memory::Ideal(t) => format!("memory latency {}, interval {}", t.latency, t.interval),
+        m => format!("memory {m}"),
+    };
     if out.cycles {
         let p = &scene.params;
         println!(
-            "cycles = the chip's clocks from start to done (cycle model: {} queue entries, memory latency {}, interval {}); chip_us at {} MHz; sw_us = the golden model's query on this machine (one at a time); speedup = sw_us / chip_us.",
-            p.queue_entries, p.memory.latency, p.memory.interval, scene.clock_mhz
+            "cycles = the chip's clocks from start to done (cycle model: {} queue entries, {memory}); chip_us at {} MHz; sw_us = the golden model's query on this machine (one at a time); speedup = sw_us / chip_us.",
+            p.queue_entries, scene.clock_mhz
         );
         println!("\nwhere the clocks went (share of clocks by what the DOP unit's input did; occupancy = mean units in flight):");
         print!("{}", stall_table(&records));
     }
     if out.memory {
-        println!(
-            "\nmemory (latency {}, one request accepted every {} clock(s); busy = a request outstanding, waiting = the DOP unit's input waits for a node word):",
-            scene.params.memory.latency, scene.params.memory.interval
-        );
+        println!("\n{memory}; busy = a request outstanding, waiting = the DOP unit's input waits for a node word:");
         print!("{}", memory_table(&records));
     }
     for (i, r) in records.iter().enumerate() {

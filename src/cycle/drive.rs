@@ -3,7 +3,7 @@
 //! results, the query trace the Verilog testbench prints in the same format, two levels
 //! in lockstep, and the traversal VCD.
 
-use super::memory::{MemModel, MemTiming};
+use super::memory::{MemCounters, MemModel, Memory};
 use super::{probe_valid, ChipIn, Clocked, PROBES};
 use crate::traversal::{Mode, QueryResult};
 use std::fmt::Write as _;
@@ -43,6 +43,9 @@ pub struct ChipTrace {
     pub tri_tests: u64,
     pub node_fetches: u64,
     pub tri_fetches: u64,
+    /// What the memory model did (not in the trace text: the testbench's memory is not the
+    /// chip).
+    pub memory: MemCounters,
 }
 
 impl ChipTrace {
@@ -119,7 +122,9 @@ impl std::fmt::Display for ChipError {
 /// How one query is driven.
 #[derive(Clone, Copy, Debug)]
 pub struct Drive {
-    pub timing: MemTiming,
+    pub memory: Memory,
+    /// Bits per memory word (a DDR access moves whole bursts of the bus).
+    pub word_bits: u32,
     pub reader: Reader,
     /// Words in the memory image: a request past them is an error.
     pub words: u32,
@@ -141,7 +146,7 @@ pub fn run_query<C: Clocked>(
     mut observe: impl FnMut(u64, Option<Vec<u64>>) -> Result<(), String>,
     mut skip: Option<&mut dyn FnMut(&mut C, &ChipIn, u64) -> u64>,
 ) -> Result<ChipTrace, ChipError> {
-    d.timing.check().map_err(ChipError)?;
+    d.memory.check().map_err(ChipError)?;
     let idle = ChipIn { res_ready: true, ..Default::default() };
     for &(a, v) in writes {
         chip.step(&ChipIn { host_we: true, host_addr: a, host_data: v, ..idle }, false);
@@ -149,7 +154,7 @@ pub fn run_query<C: Clocked>(
     let p = chip.step(&ChipIn { start: true, ..idle }, probe);
     observe(0, p).map_err(|e| ChipError(format!("cycle 0: {e}")))?;
     fault(chip, 0)?;
-    let mut mem = MemModel::new(d.timing);
+    let mut mem = MemModel::new(d.memory, d.word_bits);
     let mut results = vec![];
     let mut cyc = 1u64;
     while cyc <= d.max_cycles {
@@ -164,6 +169,7 @@ pub fn run_query<C: Clocked>(
                 tri_tests: out.tri_tests,
                 node_fetches: out.node_fetches,
                 tri_fetches: out.tri_fetches,
+                memory: mem.counters,
             });
         }
         let ready = mem.ready(cyc);

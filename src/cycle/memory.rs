@@ -36,20 +36,171 @@ impl MemTiming {
     }
 }
 
+/// DDR SDRAM (WSCG'03 §4.3, §4.5): `banks` banks, each with one open row (page) of
+/// `page_bytes`; word address a starts at byte `a * word_bytes`, in page
+/// `p = a * word_bytes / page_bytes`, bank `p % banks`, row `p / banks` (page interleaving).
+/// The chip runs at the data rate: one beat of `bus_bits` per clock, bursts of `burst`
+/// beats, so a word of W bits moves in `ceil(W / (bus_bits * burst))` bursts. An access
+/// whose bank has its row open costs `hit` clocks from the request to the word complete, a
+/// closed or other row `miss` clocks, each counting one burst of data; the part before the
+/// data (the command part) overlaps with other banks' transfers, the data bus carries one
+/// transfer at a time, in request order.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+pub struct Ddr {
+    pub banks: u32,
+    pub page_bytes: u32,
+    pub bus_bits: u32,
+    pub burst: u32,
+    pub hit: u32,
+    pub miss: u32,
+}
+
+impl Ddr {
+    /// WSCG'03 §4.3, §4.5: four 64-bit modules of 133 MHz DDR SDRAM in parallel (a 256-bit
+    /// bus), 4 banks, 4 KiB pages across the modules, bursts of 8 (a node pair's 256 bytes),
+    /// the chip at the burst rate (266 MHz): a page hit 8 clocks, a page miss 20.
+    pub const WSCG03: Ddr = Ddr { banks: 4, page_bytes: 4096, bus_bits: 256, burst: 8, hit: 8, miss: 20 };
+    /// DATE'05 §4.1 gives only the bus: 756 bits of DDR2. The rest is our assumption, DDR2-800
+    /// at 5-5-5 with the chip at the data rate (800 MHz, two clocks per memory clock):
+    /// 8 banks, 8 KiB pages, bursts of 4, a hit CL + burst = 10 + 4, a miss tRP + tRCD + hit
+    /// = 10 + 10 + 14.
+    pub const DATE05: Ddr = Ddr { banks: 8, page_bytes: 8192, bus_bits: 756, burst: 4, hit: 14, miss: 34 };
+
+    /// The preset of this name (`wscg03`, `date05`).
+    pub fn preset(name: &str) -> Option<Ddr> {
+        match name {
+            "wscg03" => Some(Ddr::WSCG03),
+            "date05" => Some(Ddr::DATE05),
+            _ => None,
+        }
+    }
+
+    /// Errors name the parameter out of range.
+    pub fn check(&self) -> Result<(), String> {
+        for (n, v) in [("banks", self.banks), ("page_bytes", self.page_bytes), ("bus_bits", self.bus_bits), ("burst", self.burst)] {
+            if v == 0 {
+                return Err(format!("DDR memory: {n} must be at least 1"));
+            }
+        }
+        if self.hit < self.burst || self.miss < self.hit {
+            return Err(format!(
+                "DDR memory: need burst <= hit <= miss (a hit includes one burst of data; got burst {}, hit {}, miss {})",
+                self.burst, self.hit, self.miss
+            ));
+        }
+        Ok(())
+    }
+}
+
+/// The memory a query runs against: the ideal one of fixed latency and interval, or DDR
+/// SDRAM with banks and pages.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+pub enum Memory {
+    Ideal(MemTiming),
+    Ddr(Ddr),
+}
+
+impl Default for Memory {
+    fn default() -> Self {
+        Memory::Ideal(MemTiming::default())
+    }
+}
+
+impl From<MemTiming> for Memory {
+    fn from(t: MemTiming) -> Self {
+        Memory::Ideal(t)
+    }
+}
+
+impl Memory {
+    pub fn check(&self) -> Result<(), String> {
+        match self {
+            Memory::Ideal(t) => t.check(),
+            Memory::Ddr(d) => d.check(),
+        }
+    }
+
+    /// The ideal model's timing (the one the Verilog testbench implements).
+    pub fn ideal(&self) -> Option<MemTiming> {
+        match *self {
+            Memory::Ideal(t) => Some(t),
+            Memory::Ddr(_) => None,
+        }
+    }
+}
+
+impl std::fmt::Display for Memory {
+    fn fmt(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+        match self {
+            Memory::Ideal(t) => write!(f, "ideal: answers a request after {} clock(s), accepts one every {}", t.latency, t.interval),
+            Memory::Ddr(d) => write!(
+                f,
+                "DDR SDRAM: {} banks, {}-byte pages, {}-bit bus, bursts of {}, page hit {} and miss {} clocks",
+                d.banks, d.page_bytes, d.bus_bits, d.burst, d.hit, d.miss
+            ),
+        }
+    }
+}
+
+/// What the memory did during a query.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize)]
+pub struct MemCounters {
+    /// Words served.
+    pub words: u64,
+    /// DDR: accesses to an open row, to a closed or other row, and accesses that waited for
+    /// their bank's previous access.
+    pub page_hits: u64,
+    pub page_misses: u64,
+    pub bank_conflicts: u64,
+}
+
+/// DDR state: per bank its open row and the cycle it is free; the data bus's free cycle.
+#[derive(Clone, Debug)]
+struct DdrState {
+    d: Ddr,
+    word_bytes: u64,
+    bursts: u64,
+    open: Vec<Option<u64>>,
+    bank_free: Vec<u64>,
+    bus_free: u64,
+}
+
 /// The memory model's state during a query (cycle numbers as in the chip's trace).
+/// Ideal: a request accepted at rising edge `t` is answered in the cycle that ends with
+/// edge `t + latency` (`mem_resp_valid` high, the chip takes it at that edge); after an
+/// accepted request the next is accepted `interval` edges later at the earliest.
+/// DDR ([`Ddr`]): a request is accepted in any cycle and answered when its word is
+/// complete. Responses come in request order.
 #[derive(Clone, Debug)]
 pub struct MemModel {
     timing: MemTiming,
+    ddr: Option<DdrState>,
     /// `(cycle of the response, word address)` in request order.
     pending: VecDeque<(u64, u32)>,
     next_accept: u64,
-    /// Words served.
-    pub words: u64,
+    pub counters: MemCounters,
 }
 
 impl MemModel {
-    pub fn new(timing: MemTiming) -> Self {
-        MemModel { timing, pending: VecDeque::new(), next_accept: 0, words: 0 }
+    /// The model of `m` for memory words of `word_bits` bits.
+    pub fn new(m: Memory, word_bits: u32) -> Self {
+        let (timing, ddr) = match m {
+            Memory::Ideal(t) => (t, None),
+            Memory::Ddr(d) => {
+                let banks = d.banks as usize;
+                let beat_bits = d.bus_bits as u64 * d.burst as u64;
+                let state = DdrState {
+                    d,
+                    word_bytes: (word_bits as u64).div_ceil(8),
+                    bursts: (word_bits as u64).div_ceil(beat_bits).max(1),
+                    open: vec![None; banks],
+                    bank_free: vec![0; banks],
+                    bus_free: 0,
+                };
+                (MemTiming { latency: 1, interval: 1 }, Some(state))
+            }
+        };
+        MemModel { timing, ddr, pending: VecDeque::new(), next_accept: 0, counters: MemCounters::default() }
     }
 
     /// `mem_req_ready` in cycle `cyc`.
@@ -60,7 +211,7 @@ impl MemModel {
     /// The response in cycle `cyc` (the word address), taken out of the model.
     pub fn respond(&mut self, cyc: u64) -> Option<u32> {
         if self.pending.front().is_some_and(|p| p.0 <= cyc) {
-            self.words += 1;
+            self.counters.words += 1;
             self.pending.pop_front().map(|p| p.1)
         } else {
             None
@@ -69,10 +220,35 @@ impl MemModel {
 
     /// The chip's request in cycle `cyc` (taken if [`ready`](Self::ready)).
     pub fn request(&mut self, cyc: u64, addr: u32) {
-        if self.ready(cyc) {
-            self.pending.push_back((cyc + self.timing.latency as u64, addr));
-            self.next_accept = cyc + self.timing.interval as u64;
+        if !self.ready(cyc) {
+            return;
         }
+        let done = match &mut self.ddr {
+            None => cyc + self.timing.latency as u64,
+            Some(s) => {
+                let page = addr as u64 * s.word_bytes / s.d.page_bytes as u64;
+                let (bank, row) = ((page % s.d.banks as u64) as usize, page / s.d.banks as u64);
+                let data = s.bursts * s.d.burst as u64;
+                let hit = s.open[bank] == Some(row);
+                let cost = if hit { s.d.hit } else { s.d.miss } as u64 + data - s.d.burst as u64;
+                if s.bank_free[bank] > cyc {
+                    self.counters.bank_conflicts += 1;
+                }
+                if hit {
+                    self.counters.page_hits += 1;
+                } else {
+                    self.counters.page_misses += 1;
+                }
+                let start = cyc.max(s.bank_free[bank]);
+                let done = (start + cost).max(s.bus_free + data);
+                s.open[bank] = Some(row);
+                s.bank_free[bank] = done;
+                s.bus_free = done;
+                done
+            }
+        };
+        self.pending.push_back((done, addr));
+        self.next_accept = cyc + self.timing.interval as u64;
     }
 
     /// The cycle of the next response, if a request is pending.
@@ -160,7 +336,7 @@ mod tests {
 
     #[test]
     fn model_answers_after_latency_and_spaces_requests() {
-        let mut m = MemModel::new(MemTiming { latency: 3, interval: 2 });
+        let mut m = MemModel::new(MemTiming { latency: 3, interval: 2 }.into(), 64);
         assert!(m.ready(0));
         m.request(1, 7);
         assert!(!m.ready(2) && m.ready(3));
@@ -172,6 +348,37 @@ mod tests {
         assert_eq!(m.respond(6), Some(9));
         assert!(m.is_idle());
         assert!(MemTiming { latency: 0, interval: 1 }.check().is_err());
+    }
+
+    /// WSCG'03's numbers by hand: 256-byte words (one burst of 8 beats of 256 bits), 4 KiB
+    /// pages, so words 0..15 are page 0 (bank 0), 16..31 page 1 (bank 1), ..., 64.. page 4
+    /// (bank 0, row 1).
+    #[test]
+    fn ddr_pages_banks_and_the_bus_by_hand() {
+        let mut m = MemModel::new(Memory::Ddr(Ddr::WSCG03), 2048);
+        // a miss at 0: done at 0 + 20
+        m.request(0, 0);
+        // page 0 is now open: a hit requested at 1 waits for bank 0 (free at 20): 20 + 8
+        m.request(1, 1);
+        // bank 1, a miss at 2: its command part (12) overlaps, its data waits for the bus
+        // (free at 28): max(2 + 20, 28 + 8) = 36
+        m.request(2, 16);
+        // bank 0 again, row 1: a miss after bank 0's last access (28): max(28 + 20, 36 + 8) = 48
+        m.request(3, 64);
+        for (cyc, addr) in [(20, 0), (28, 1), (36, 16), (48, 64)] {
+            assert_eq!(m.next_response(), Some(cyc));
+            assert_eq!(m.respond(cyc - 1), None);
+            assert_eq!(m.respond(cyc), Some(addr));
+        }
+        assert_eq!(m.counters, MemCounters { words: 4, page_hits: 1, page_misses: 3, bank_conflicts: 2 });
+        // a word of 2 bursts (257 bytes) moves in 16 clocks: a miss costs 20 + 8
+        let mut m = MemModel::new(Memory::Ddr(Ddr::WSCG03), 2056);
+        m.request(5, 0);
+        assert_eq!(m.next_response(), Some(33));
+        assert!(Ddr { hit: 4, ..Ddr::WSCG03 }.check().unwrap_err().contains("burst <= hit <= miss"));
+        assert!(Ddr { banks: 0, ..Ddr::WSCG03 }.check().unwrap_err().contains("banks"));
+        assert_eq!(Ddr::preset("wscg03"), Some(Ddr::WSCG03));
+        assert_eq!(Ddr::preset("ddr9"), None);
     }
 
     #[test]

@@ -26,7 +26,7 @@ pub mod drive;
 pub mod memory;
 pub mod tri_unit;
 
-pub use memory::MemTiming;
+pub use memory::{Ddr, MemCounters, MemTiming, Memory};
 
 use serde::{Deserialize, Serialize};
 
@@ -49,7 +49,7 @@ pub struct Params {
     pub credit: u32,
     /// Memory requests outstanding (at most one per destination).
     pub outstanding: u32,
-    pub memory: MemTiming,
+    pub memory: Memory,
 }
 
 impl Params {
@@ -64,7 +64,7 @@ impl Params {
         issue_spacing: 2,
         credit: crate::rtl::LEAF_FIFO as u32,
         outstanding: 1,
-        memory: MemTiming { latency: 1, interval: 1 },
+        memory: Memory::Ideal(MemTiming { latency: 1, interval: 1 }),
     };
 
     /// Errors name a parameter out of range.
@@ -285,7 +285,7 @@ pub fn run_query(
     rec: Record,
 ) -> Result<(drive::ChipTrace, Option<chip::Stats>), String> {
     let mut c = chip::Chip::new(&chip.cfg, p, &chip.a, &chip.b, setup, rec.counters)?;
-    let d = drive::Drive { timing: p.memory, reader, words: chip::image_words(&chip.a, &chip.b), max_cycles };
+    let d = drive::Drive { memory: p.memory, word_bits: chip.layout.word_bits(), reader, words: chip::image_words(&chip.a, &chip.b), max_cycles };
     let writes = chip::control_writes(&chip.a, &chip.b, lifo, mode);
     let Record { vcd, probes: mut observer, .. } = rec;
     let trace = if vcd.is_none() && observer.is_none() {

@@ -221,8 +221,8 @@ impl<const N: usize, const NP1: usize> Clocked for RtlChip<'_, N, NP1> {
 
 /// How a query of `image` is driven: every result read at once unless `reader` says
 /// otherwise.
-pub fn drive(image: &QueryImage, timing: MemTiming, reader: Reader, max_cycles: u64) -> Drive {
-    Drive { timing, reader, words: image.memory.len() as u32, max_cycles }
+pub fn drive(image: &QueryImage, memory: crate::cycle::Memory, reader: Reader, max_cycles: u64) -> Drive {
+    Drive { memory, word_bits: MEM_BITS as u32, reader, words: image.memory.len() as u32, max_cycles }
 }
 
 /// Runs one query on the rust-hdl chip (fresh from `chip_top`, or after a finished

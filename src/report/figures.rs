@@ -88,7 +88,7 @@ pub fn date_params() -> Params {
 
 /// The chip of WSCG'03 Fig. 13: the same with [`WSCG_MEMORY`].
 pub fn wscg_params() -> Params {
-    Params { memory: WSCG_MEMORY, ..date_params() }
+    Params { memory: WSCG_MEMORY.into(), ..date_params() }
 }
 
 /// WSCG'03 Eq. 5 in clocks: sum over lists of 100 + (alpha - 2) * 10, alpha the list's

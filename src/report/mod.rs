@@ -66,6 +66,10 @@ pub struct MemoryRecord {
     pub tri_words: u64,
     /// Bytes of those words at the configuration's node and triangle widths.
     pub bytes: u64,
+    /// DDR: page hits, misses and bank conflicts (0 with the ideal memory).
+    pub page_hits: u64,
+    pub page_misses: u64,
+    pub bank_conflicts: u64,
 }
 
 /// Records grouped by sweep distance (or one group per pose without a sweep).
@@ -196,8 +200,8 @@ pub fn memory_table(records: &[PoseRecord]) -> String {
     }
     let _ = writeln!(
         out,
-        "{:<28} {:>10} {:>10} {:>10} {:>8} {:>7} {:>8}",
-        "pose", "node_words", "tri_words", "KiB", "words/c", "busy%", "waiting%"
+        "{:<28} {:>10} {:>10} {:>10} {:>8} {:>7} {:>8} {:>9} {:>9} {:>9}",
+        "pose", "node_words", "tri_words", "KiB", "words/c", "busy%", "waiting%", "page_hit", "page_miss", "conflicts"
     );
     for (key, g) in groups(records) {
         let c: Vec<_> = g.iter().filter_map(|r| r.cycles.as_ref()).collect();
@@ -207,7 +211,7 @@ pub fn memory_table(records: &[PoseRecord]) -> String {
         let st = |f: &dyn Fn(&Stats) -> u64| c.iter().filter_map(|r| r.stats.as_ref()).map(f).sum::<u64>() as f64;
         let _ = writeln!(
             out,
-            "{:<28} {:>10.0} {:>10.0} {:>10.1} {:>8.3} {:>7.1} {:>8.1}",
+            "{:<28} {:>10.0} {:>10.0} {:>10.1} {:>8.3} {:>7.1} {:>8.1} {:>9.0} {:>9.0} {:>9.0}",
             key,
             sum(&|r| r.memory.node_words) / n,
             sum(&|r| r.memory.tri_words) / n,
@@ -215,6 +219,9 @@ pub fn memory_table(records: &[PoseRecord]) -> String {
             sum(&|r| r.memory.node_words + r.memory.tri_words) / cycles,
             100.0 * st(&|s| s.memory_busy) / cycles,
             100.0 * st(&|s| s.stall_memory) / cycles,
+            sum(&|r| r.memory.page_hits) / n,
+            sum(&|r| r.memory.page_misses) / n,
+            sum(&|r| r.memory.bank_conflicts) / n,
         );
     }
     out

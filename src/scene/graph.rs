@@ -150,7 +150,7 @@ impl Unit {
             Unit::AccuracyCounter => "misses and extra pairs of the chip against the exact oracle".into(),
             Unit::DCntr => format!("the pair queue ({} entries), entry register and issue control (every {} clock(s), credit {})", p.queue_entries, p.issue_spacing, p.credit),
             Unit::MemoryPort => format!("node and triangle word requests, {} outstanding", p.outstanding),
-            Unit::MemoryModel => format!("answers a request after {} clock(s), accepts one every {}", p.memory.latency, p.memory.interval),
+            Unit::MemoryModel => p.memory.to_string(),
             Unit::DopUnit => format!("DOPTRF transform and compare, {} clocks", p.dop_latency),
             Unit::TriUnit => format!("T.CHECK both ways, {} clocks, {}-entry result FIFO", p.tri_latency, p.tri_fifo),
             Unit::ResultPort => "intersecting and uncertain pairs to the host, read every clock".into(),

@@ -46,9 +46,12 @@
 //!
 //! Only what the outputs need is built and run (`graph::Plan`; `cchip run --explain`).
 //!
-//! [memory]                    # the memory model (optional)
-//! latency = 1                 # clocks from an accepted request to its response
-//! interval = 1                # clocks between accepted requests (1 / words per clock)
+//! [memory]                    # the memory model (optional; default: the ideal one)
+//! model = "ideal"             # or "ddr" (DDR SDRAM with banks and pages, cycle::memory::Ddr)
+//! latency = 1                 # ideal: clocks from an accepted request to its response
+//! interval = 1                # ideal: clocks between accepted requests (1 / words per clock)
+//! # preset = "wscg03"         # ddr: "wscg03" or "date05", then any of these overridden:
+//! # banks = 4, page_bytes = 4096, bus_bits = 256, burst = 8, hit = 8, miss = 20
 //!
 //! [timing]                    # the cycle model's microarchitecture (optional; default:
 //! queue_entries = 1024        # the RTL chip's, these values)
@@ -89,7 +92,7 @@ struct File {
     #[serde(default)]
     outputs: OutputsSection,
     #[serde(default)]
-    memory: Option<crate::cycle::MemTiming>,
+    memory: MemorySection,
     #[serde(default)]
     timing: TimingSection,
 }
@@ -105,6 +108,58 @@ struct TimingSection {
     credit: Option<u32>,
     outstanding: Option<u32>,
     clock_mhz: Option<f64>,
+}
+
+/// `[memory]`: the ideal model (`latency`, `interval`; the default, 1 and 1) or
+/// `model = "ddr"` with a `preset` (`wscg03`, `date05`) and any of its parameters overridden.
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct MemorySection {
+    model: Option<String>,
+    preset: Option<String>,
+    latency: Option<u32>,
+    interval: Option<u32>,
+    banks: Option<u32>,
+    page_bytes: Option<u32>,
+    bus_bits: Option<u32>,
+    burst: Option<u32>,
+    hit: Option<u32>,
+    miss: Option<u32>,
+}
+
+impl MemorySection {
+    fn memory(&self) -> Result<crate::cycle::Memory, String> {
+        use crate::cycle::{Ddr, MemTiming, Memory};
+        let ddr_keys = [self.banks, self.page_bytes, self.bus_bits, self.burst, self.hit, self.miss];
+        match self.model.as_deref().unwrap_or("ideal") {
+            "ideal" => {
+                if self.preset.is_some() || ddr_keys.iter().any(Option::is_some) {
+                    return Err("[memory] preset, banks, page_bytes, bus_bits, burst, hit and miss belong to model = \"ddr\"; the ideal model takes latency and interval".into());
+                }
+                let d = MemTiming::default();
+                Ok(Memory::Ideal(MemTiming { latency: self.latency.unwrap_or(d.latency), interval: self.interval.unwrap_or(d.interval) }))
+            }
+            "ddr" => {
+                if self.latency.is_some() || self.interval.is_some() {
+                    return Err("[memory] latency and interval belong to the ideal model; a DDR model's timing is its hit and miss costs".into());
+                }
+                let base = match self.preset.as_deref() {
+                    Some(p) => Ddr::preset(p).ok_or_else(|| format!("[memory] preset \"{p}\" is not known: use \"wscg03\" or \"date05\""))?,
+                    None if ddr_keys.iter().all(Option::is_some) => Ddr { banks: 0, page_bytes: 0, bus_bits: 0, burst: 0, hit: 0, miss: 0 },
+                    None => return Err("[memory] model = \"ddr\" needs a preset (\"wscg03\", \"date05\") or all of banks, page_bytes, bus_bits, burst, hit, miss".into()),
+                };
+                Ok(Memory::Ddr(Ddr {
+                    banks: self.banks.unwrap_or(base.banks),
+                    page_bytes: self.page_bytes.unwrap_or(base.page_bytes),
+                    bus_bits: self.bus_bits.unwrap_or(base.bus_bits),
+                    burst: self.burst.unwrap_or(base.burst),
+                    hit: self.hit.unwrap_or(base.hit),
+                    miss: self.miss.unwrap_or(base.miss),
+                }))
+            }
+            m => Err(format!("[memory] model \"{m}\" is not known: use \"ideal\" or \"ddr\"")),
+        }
+    }
 }
 
 /// The level a scene cross-checks the cycle model against.
@@ -353,7 +408,7 @@ impl Scene {
             issue_spacing: t.issue_spacing.unwrap_or(rtl.issue_spacing),
             credit: t.credit.unwrap_or(rtl.credit),
             outstanding: t.outstanding.unwrap_or(rtl.outstanding),
-            memory: f.memory.unwrap_or_default(),
+            memory: f.memory.memory().map_err(err)?,
         };
         params.check().map_err(|e| err(format!("[timing] / [memory]: {e}")))?;
         let clock_mhz = t.clock_mhz.unwrap_or(800.0);
@@ -453,7 +508,7 @@ mod tests {
         let s = Scene::parse(&format!("{base}[outputs]\nwaveforms = \"w\"\n[memory]\nlatency = 3\ninterval = 2\n"), "s").unwrap();
         assert_eq!(s.outputs.waveforms, Some(Waveforms::all("w".into())));
         assert!(!s.outputs.cycles, "waveforms alone need no counters");
-        assert_eq!(s.params, Params { memory: MemTiming { latency: 3, interval: 2 }, ..Params::RTL });
+        assert_eq!(s.params, Params { memory: MemTiming { latency: 3, interval: 2 }.into(), ..Params::RTL });
         let s = Scene::parse(base, "s").unwrap();
         assert!(!s.outputs.cycles);
         assert_eq!((s.params, s.clock_mhz), (Params::RTL, 800.0));
@@ -482,6 +537,33 @@ mod tests {
         assert!(e.contains("fifo or lifo"), "{e}");
         let e = crate::harness::chip_io::rtl_order(&rtl.cfg, Traversal::Lifo, &Params { credit: 4, ..rtl.params }).unwrap_err();
         assert!(e.contains("[timing]"), "{e}");
+    }
+
+    /// `[memory]` picks the ideal model or DDR SDRAM with a preset and overrides; mixed or
+    /// unknown keys are errors that say what to write.
+    #[test]
+    fn memory_models_and_presets() {
+        use crate::cycle::{Ddr, Memory};
+        let base = "[objects]\na = \"sphere:12\"\nb = \"sphere:12\"\n[[pose]]\nrot_deg=[0,0,0]\nt=[0,0,0]\n[memory]\n";
+        let mem = |m: &str| Scene::parse(&format!("{base}{m}"), "s").map(|s| s.params.memory);
+        assert_eq!(mem("model = \"ddr\"\npreset = \"wscg03\""), Ok(Memory::Ddr(Ddr::WSCG03)));
+        assert_eq!(mem("model = \"ddr\"\npreset = \"date05\"\nbanks = 4"), Ok(Memory::Ddr(Ddr { banks: 4, ..Ddr::DATE05 })));
+        let own = "model = \"ddr\"\nbanks = 2\npage_bytes = 1024\nbus_bits = 64\nburst = 4\nhit = 6\nmiss = 12";
+        assert_eq!(mem(own), Ok(Memory::Ddr(Ddr { banks: 2, page_bytes: 1024, bus_bits: 64, burst: 4, hit: 6, miss: 12 })));
+        for (m, want) in [
+            ("model = \"ddr\"", "needs a preset"),
+            ("model = \"ddr\"\npreset = \"ddr4\"", "preset \"ddr4\" is not known"),
+            ("model = \"ddr\"\npreset = \"wscg03\"\nlatency = 3", "belong to the ideal model"),
+            ("preset = \"wscg03\"", "belong to model = \"ddr\""),
+            ("model = \"sram\"", "model \"sram\" is not known"),
+            ("model = \"ddr\"\npreset = \"wscg03\"\nhit = 2", "burst <= hit <= miss"),
+        ] {
+            let e = mem(m).unwrap_err();
+            assert!(e.starts_with("s:") && e.contains(want), "{m}: {e}");
+        }
+        let s = Scene::parse(&format!("[outputs]\ncycles = true\n{base}model = \"ddr\"\npreset = \"wscg03\""), "s").unwrap();
+        let explain = crate::scene::graph::Plan::of(&s).explain(&s);
+        assert!(explain.contains("DDR SDRAM: 4 banks, 4096-byte pages, 256-bit bus, bursts of 8, page hit 8 and miss 20 clocks"), "{explain}");
     }
 
     /// Issue 16: mesh paths were resolved against the current directory.
