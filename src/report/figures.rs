@@ -18,7 +18,7 @@
 //! (golden counters, cycle model) then runs on every core.
 
 use crate::config::ChipConfig;
-use crate::cycle::{self, drive::Reader, MemTiming, Params};
+use crate::cycle::{self, drive::Reader, Ddr, Memory, Params};
 use crate::measure::{mean_seconds, parallel_map};
 use crate::mesh;
 use crate::pose::Pose;
@@ -72,11 +72,10 @@ impl Plan {
 pub const DATE_MHZ: f64 = 800.0;
 /// The chip's clock in WSCG'03 (the burst rate of PC133 DDR SDRAM).
 pub const WSCG_MHZ: f64 = 266.0;
-/// WSCG'03's memory in the present memory model (latency and interval only; the DDR model
-/// with banks and pages is issue 14): 16 clocks for a random access to a node pair, 10
-/// clocks per further node pair with bank interleaving. The chip fetches one node per
-/// request with one request outstanding, so each node word waits the full 16 clocks.
-pub const WSCG_MEMORY: MemTiming = MemTiming { latency: 16, interval: 10 };
+/// WSCG'03's memory: its four-bank DDR SDRAM ([`Ddr::WSCG03`]: a page hit 8 clocks, a miss
+/// 20). The chip fetches one node per request with one request outstanding, so no bank's
+/// command part overlaps another's transfer.
+pub const WSCG_MEMORY: Memory = Memory::Ddr(Ddr::WSCG03);
 /// Queue entries of the figures' chip: no FIFO traversal of these meshes overflows it
 /// (the RTL's 1,024 would, and an overflowed query has no complete answer).
 pub const QUEUE_ENTRIES: u32 = 1 << 24;
@@ -88,7 +87,7 @@ pub fn date_params() -> Params {
 
 /// The chip of WSCG'03 Fig. 13: the same with [`WSCG_MEMORY`].
 pub fn wscg_params() -> Params {
-    Params { memory: WSCG_MEMORY.into(), ..date_params() }
+    Params { memory: WSCG_MEMORY, ..date_params() }
 }
 
 /// WSCG'03 Eq. 5 in clocks: sum over lists of 100 + (alpha - 2) * 10, alpha the list's
