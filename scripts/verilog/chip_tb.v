@@ -3,7 +3,9 @@
 // +host=<file> (one `{addr[10], data[32]}` per line), pulses `start`, serves memory
 // requests from +mem=<file> ($readmemh, one 578-bit word per line) with the memory model
 // (+latency=L: a request accepted at edge t is answered in the cycle ending with edge t+L;
-// +interval=I: the next request is accepted I edges later at the earliest), reads results
+// +interval=I: the next request is accepted I edges later at the earliest; or, with +ddr,
+// the DDR SDRAM model of cycle::memory::Ddr: +banks +page_bytes +bus_bits +burst +hit
+// +miss, a request accepted in any cycle; docs/ARCHITECTURE.md), reads results
 // with res_ready high in the cycles that are multiples of +reader=P (default 1: every
 // cycle; cycle::drive::Reader), and prints the trace of cycle::drive::ChipTrace::text:
 //   result <cycle> <A's triangle> <B's triangle> <uncertain>
@@ -19,6 +21,7 @@
 `timescale 1ns / 1ps
 module tb;
   localparam MW = 578;
+  localparam WB = (MW + 7) / 8;  // bytes per word: word address a starts at byte a * WB
   localparam DEPTH = 1 << 16;
   reg clock = 0;
   reg host_we = 0;
@@ -50,6 +53,10 @@ module tb;
   integer due [0:15];
   integer qaddr [0:15];
   integer qh, qt, next_accept, cyc, i, latency, interval, reader, max_cycles;
+  // DDR SDRAM: per bank the open row (-1: none) and the cycle it is free; the data bus
+  integer ddr, banks, page_bytes, bus_bits, burst, hit, miss, bursts, page, bank, row, t0, t1, bus_free;
+  integer open_row [0:63];  // cycle::memory::Ddr::MAX_BANKS
+  integer bank_free [0:63];
   reg [1023:0] mem_file, host_file;
   reg ports, printed;
   reg [202:0] port_line, last_line;
@@ -69,6 +76,21 @@ module tb;
     if (!$value$plusargs("latency=%d", latency)) latency = 1;
     if (!$value$plusargs("interval=%d", interval)) interval = 1;
     if (!$value$plusargs("reader=%d", reader)) reader = 1;
+    ddr = $test$plusargs("ddr");
+    if (ddr) begin
+      if (!$value$plusargs("banks=%d", banks) || !$value$plusargs("page_bytes=%d", page_bytes)
+          || !$value$plusargs("bus_bits=%d", bus_bits) || !$value$plusargs("burst=%d", burst)
+          || !$value$plusargs("hit=%d", hit) || !$value$plusargs("miss=%d", miss) || banks > 64) begin
+        $display("chip_tb: +ddr needs +banks (at most 64) +page_bytes +bus_bits +burst +hit +miss");
+        $finish;
+      end
+      bursts = (MW + bus_bits * burst - 1) / (bus_bits * burst);
+      for (i = 0; i < 64; i = i + 1) begin
+        open_row[i] = -1;
+        bank_free[i] = 0;
+      end
+      bus_free = 0;
+    end
     if (!$value$plusargs("max_cycles=%d", max_cycles)) max_cycles = 100000;
     ports = $test$plusargs("ports");
     printed = 0;
@@ -98,10 +120,24 @@ module tb;
       end
       // the chip's request and result outputs depend on its registers only
       if (mem_req_valid && mem_req_ready) begin
-        due[qt % 16] = cyc + latency;
+        if (ddr) begin
+          page = mem_req_addr * WB / page_bytes;
+          bank = page % banks;
+          row = page / banks;
+          t0 = cyc > bank_free[bank] ? cyc : bank_free[bank];
+          t1 = t0 + (open_row[bank] == row ? hit : miss) + (bursts - 1) * burst;
+          if (bus_free + bursts * burst > t1) t1 = bus_free + bursts * burst;
+          open_row[bank] = row;
+          bank_free[bank] = t1;
+          bus_free = t1;
+          due[qt % 16] = t1;
+          next_accept = cyc + 1;
+        end else begin
+          due[qt % 16] = cyc + latency;
+          next_accept = cyc + interval;
+        end
         qaddr[qt % 16] = mem_req_addr;
         qt = qt + 1;
-        next_accept = cyc + interval;
       end
       res_ready = cyc % reader == 0;
       port_line = {busy, done, overflow, max_depth, mem_req_valid, mem_req_ready, mem_req_addr, mem_resp_valid,

@@ -66,6 +66,9 @@ impl Ddr {
     /// = 10 + 10 + 14.
     pub const DATE05: Ddr = Ddr { banks: 8, page_bytes: 8192, bus_bits: 756, burst: 4, hit: 14, miss: 34 };
 
+    /// Banks at most (scripts/verilog/chip_tb.v keeps this many).
+    pub const MAX_BANKS: u32 = 64;
+
     /// The preset of this name (`wscg03`, `date05`).
     pub fn preset(name: &str) -> Option<Ddr> {
         match name {
@@ -81,6 +84,9 @@ impl Ddr {
             if v == 0 {
                 return Err(format!("DDR memory: {n} must be at least 1"));
             }
+        }
+        if self.banks > Ddr::MAX_BANKS {
+            return Err(format!("DDR memory: at most {} banks (got {})", Ddr::MAX_BANKS, self.banks));
         }
         if self.hit < self.burst || self.miss < self.hit {
             return Err(format!(
@@ -117,14 +123,6 @@ impl Memory {
         match self {
             Memory::Ideal(t) => t.check(),
             Memory::Ddr(d) => d.check(),
-        }
-    }
-
-    /// The ideal model's timing (the one the Verilog testbench implements).
-    pub fn ideal(&self) -> Option<MemTiming> {
-        match *self {
-            Memory::Ideal(t) => Some(t),
-            Memory::Ddr(_) => None,
         }
     }
 }
@@ -377,6 +375,7 @@ mod tests {
         assert_eq!(m.next_response(), Some(33));
         assert!(Ddr { hit: 4, ..Ddr::WSCG03 }.check().unwrap_err().contains("burst <= hit <= miss"));
         assert!(Ddr { banks: 0, ..Ddr::WSCG03 }.check().unwrap_err().contains("banks"));
+        assert!(Ddr { banks: 65, ..Ddr::WSCG03 }.check().unwrap_err().contains("at most 64 banks"));
         assert_eq!(Ddr::preset("wscg03"), Some(Ddr::WSCG03));
         assert_eq!(Ddr::preset("ddr9"), None);
     }

@@ -5,7 +5,7 @@
 //! port whenever one changes) are compared with the cycle model's, clock by clock.
 
 use super::chip_io::{self, QueryImage};
-use crate::cycle::{drive::ChipTrace, probe_valid, MemTiming, PROBES};
+use crate::cycle::{drive::ChipTrace, probe_valid, Memory, PROBES};
 use std::path::{Path, PathBuf};
 
 /// Memory words of chip_tb.v's memory (its `DEPTH`).
@@ -158,7 +158,7 @@ pub fn work_dir() -> PathBuf {
 
 /// Runs one pose on the Verilator binary `bin` (files in `dir`) and compares it with the
 /// cycle model's `ports` and `trace`: the first difference names the cycle and the port.
-pub fn cross_check(bin: &Path, dir: &Path, image: &QueryImage, timing: MemTiming, max_cycles: u64, ports: &PortLog, trace: &ChipTrace) -> Result<(), String> {
+pub fn cross_check(bin: &Path, dir: &Path, image: &QueryImage, memory: Memory, max_cycles: u64, ports: &PortLog, trace: &ChipTrace) -> Result<(), String> {
     let minutes = trace.cycles as f64 / VERILATOR_CLOCKS_PER_SECOND / 60.0;
     if minutes > 30.0 {
         return Err(format!("the Verilog cross-check would take about {minutes:.0} minutes ({} clocks at ~{VERILATOR_CLOCKS_PER_SECOND} clocks/s); use smaller meshes", trace.cycles));
@@ -168,11 +168,24 @@ pub fn cross_check(bin: &Path, dir: &Path, image: &QueryImage, timing: MemTiming
     let (mem, host) = (dir.join("q.mem"), dir.join("q.host"));
     std::fs::write(&mem, image.memory_hex()).map_err(|e| io(&mem, e))?;
     std::fs::write(&host, image.writes_hex()).map_err(|e| io(&host, e))?;
+    let memory_args = match memory {
+        Memory::Ideal(t) => vec![format!("+latency={}", t.latency), format!("+interval={}", t.interval)],
+        Memory::Ddr(d) => {
+            vec![
+                "+ddr".into(),
+                format!("+banks={}", d.banks),
+                format!("+page_bytes={}", d.page_bytes),
+                format!("+bus_bits={}", d.bus_bits),
+                format!("+burst={}", d.burst),
+                format!("+hit={}", d.hit),
+                format!("+miss={}", d.miss),
+            ]
+        }
+    };
     let out = std::process::Command::new(bin)
         .arg(format!("+mem={}", mem.display()))
         .arg(format!("+host={}", host.display()))
-        .arg(format!("+latency={}", timing.latency))
-        .arg(format!("+interval={}", timing.interval))
+        .args(memory_args)
         .arg("+reader=1")
         .arg(format!("+max_cycles={max_cycles}"))
         .arg("+ports")

@@ -88,11 +88,6 @@ impl<'s> Prepared<'s> {
         }
         let verilog = match plan.cross_check {
             Some(CrossCheck::Verilog) => {
-                if scene.params.memory.ideal().is_none() {
-                    return Err(named(
-                        "cross_check = \"verilog\" runs the ideal memory model only (the Verilog testbench has no DDR model yet): drop [memory] model = \"ddr\", or cross-check with \"rtl\" (rust-hdl uses the same memory model as the cycle model)".into(),
-                    ));
-                }
                 verilator::check_size(&chip).map_err(named)?;
                 Some(verilator::chip_binary().map_err(named)?)
             }
@@ -209,7 +204,7 @@ impl<'s> Prepared<'s> {
                 let bin = self.verilog.as_deref().expect("built in Prepared::new");
                 let image = chip_io::QueryImage::new(&chip.a, &chip.b, &setup, lifo, s.mode).map_err(|e| format!("pose {i}: {e}"))?;
                 let dir = verilator::work_dir().join(format!("pose{i}"));
-                verilator::cross_check(bin, &dir, &image, s.params.memory.ideal().expect("refused in Prepared::new"), 2 * trace.cycles + 1000, &ports, &trace)
+                verilator::cross_check(bin, &dir, &image, s.params.memory, 2 * trace.cycles + 1000, &ports, &trace)
                     .map_err(|e| format!("pose {i}: {e}"))?;
                 counts.add(|a| a.verilog_runs += 1);
                 Some(CrossCheck::Verilog)
