@@ -171,6 +171,8 @@ struct DdrState {
 /// complete. Responses come in request order.
 #[derive(Clone, Debug)]
 pub struct MemModel {
+    /// The ideal model's timing; with DDR, latency 1 and interval 1 (only the interval is
+    /// used: one request accepted per clock).
     timing: MemTiming,
     ddr: Option<DdrState>,
     /// `(cycle of the response, word address)` in request order.
