@@ -143,18 +143,22 @@ impl MemorySection {
                 if self.latency.is_some() || self.interval.is_some() {
                     return Err("[memory] latency and interval belong to the ideal model; a DDR model's timing is its hit and miss costs".into());
                 }
-                let base = match self.preset.as_deref() {
-                    Some(p) => Ddr::preset(p).ok_or_else(|| format!("[memory] preset \"{p}\" is not known: use \"wscg03\" or \"date05\""))?,
-                    None if ddr_keys.iter().all(Option::is_some) => Ddr { banks: 0, page_bytes: 0, bus_bits: 0, burst: 0, hit: 0, miss: 0 },
-                    None => return Err("[memory] model = \"ddr\" needs a preset (\"wscg03\", \"date05\") or all of banks, page_bytes, bus_bits, burst, hit, miss".into()),
+                let base = (self.preset.as_deref())
+                    .map(|p| Ddr::preset(p).ok_or_else(|| format!("[memory] preset \"{p}\" is not known: use \"wscg03\" or \"date05\"")))
+                    .transpose()?;
+                // each parameter: the scene's, else the preset's
+                let get = |key: &str, own: Option<u32>, preset: fn(&Ddr) -> u32| {
+                    own.or(base.as_ref().map(preset)).ok_or_else(|| {
+                        format!("[memory] model = \"ddr\" needs a preset (\"wscg03\", \"date05\") or all of banks, page_bytes, bus_bits, burst, hit, miss ({key} is missing)")
+                    })
                 };
                 Ok(Memory::Ddr(Ddr {
-                    banks: self.banks.unwrap_or(base.banks),
-                    page_bytes: self.page_bytes.unwrap_or(base.page_bytes),
-                    bus_bits: self.bus_bits.unwrap_or(base.bus_bits),
-                    burst: self.burst.unwrap_or(base.burst),
-                    hit: self.hit.unwrap_or(base.hit),
-                    miss: self.miss.unwrap_or(base.miss),
+                    banks: get("banks", self.banks, |d| d.banks)?,
+                    page_bytes: get("page_bytes", self.page_bytes, |d| d.page_bytes)?,
+                    bus_bits: get("bus_bits", self.bus_bits, |d| d.bus_bits)?,
+                    burst: get("burst", self.burst, |d| d.burst)?,
+                    hit: get("hit", self.hit, |d| d.hit)?,
+                    miss: get("miss", self.miss, |d| d.miss)?,
                 }))
             }
             m => Err(format!("[memory] model \"{m}\" is not known: use \"ideal\" or \"ddr\"")),
@@ -552,6 +556,7 @@ mod tests {
         assert_eq!(mem(own), Ok(Memory::Ddr(Ddr { banks: 2, page_bytes: 1024, bus_bits: 64, burst: 4, hit: 6, miss: 12 })));
         for (m, want) in [
             ("model = \"ddr\"", "needs a preset"),
+            ("model = \"ddr\"\nbanks = 2\npage_bytes = 1024\nbus_bits = 64\nburst = 4\nhit = 6", "(miss is missing)"),
             ("model = \"ddr\"\npreset = \"ddr4\"", "preset \"ddr4\" is not known"),
             ("model = \"ddr\"\npreset = \"wscg03\"\nlatency = 3", "belong to the ideal model"),
             ("preset = \"wscg03\"", "belong to model = \"ddr\""),
