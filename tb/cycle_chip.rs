@@ -1,6 +1,6 @@
 //! The fast cycle model of the chip (`src/cycle`): it reproduces every checked-in chip
-//! trace (vectors/chip/*.expect: the small ones agreed by rust-hdl in lockstep, the large
-//! ones by the exported Verilog under Verilator), answers as the golden model does in
+//! trace (vectors/chip/*.expect: each also agreed by the exported Verilog under
+//! Verilator, two by rust-hdl in lockstep), answers as the golden model does in
 //! configurations beyond the RTL (k, format, latencies, spacing, credit, requests
 //! outstanding, memory timing, a slow host), skips idle stretches without changing a
 //! trace, and reports an overflowing queue.
