@@ -43,6 +43,10 @@ pub struct CycleRecord {
     /// Pairs the chip reported intersecting, and uncertain (for the host to settle).
     pub hits: usize,
     pub uncertain: usize,
+    /// DOP tests (node pairs through the DOP unit) and triangle tests (leaf pairs through
+    /// TRI_UNIT) the chip ran: in all-pairs queries the golden model's counts.
+    pub dop_tests: u64,
+    pub tri_tests: u64,
     /// Most queue entries (two node pairs each) waiting at once.
     pub max_entries: u64,
     pub overflow: bool,
@@ -149,8 +153,9 @@ pub fn summary_table(records: &[PoseRecord], cycles: bool) -> String {
 
 /// Where the chip's clocks went, one row per sweep distance (or pose): the share of
 /// running clocks by what the DOP unit's input did (issue, or the stall's cause), TRI_UNIT
-/// back-pressure, the DOP unit's and TRI_UNIT's mean occupancy, and memory words per
-/// clock. Empty without cycle records.
+/// back-pressure, the DOP unit's and TRI_UNIT's mean occupancy, DOP and triangle tests per
+/// clock (the papers' throughput measures) and memory words per clock. Empty without cycle
+/// records.
 pub fn stall_table(records: &[PoseRecord]) -> String {
     let mut out = String::new();
     if !records.iter().any(|r| r.cycles.is_some()) {
@@ -158,8 +163,8 @@ pub fn stall_table(records: &[PoseRecord]) -> String {
     }
     let _ = writeln!(
         out,
-        "{:<28} {:>6} {:>7} {:>8} {:>7} {:>7} {:>7} {:>7} {:>7} {:>7} {:>7} {:>7} {:>7}",
-        "pose", "issue%", "memory%", "spacing%", "credit%", "refill%", "empty%", "drain%", "halted%", "bkpres%", "dop_occ", "tri_occ", "words/c"
+        "{:<28} {:>6} {:>7} {:>8} {:>7} {:>7} {:>7} {:>7} {:>7} {:>7} {:>7} {:>7} {:>7} {:>7} {:>7}",
+        "pose", "issue%", "memory%", "spacing%", "credit%", "refill%", "empty%", "drain%", "halted%", "bkpres%", "dop_occ", "tri_occ", "dop/c", "tri/c", "words/c"
     );
     for (key, g) in groups(records) {
         let c: Vec<_> = g.iter().filter_map(|r| r.cycles.as_ref()).collect();
@@ -168,9 +173,10 @@ pub fn stall_table(records: &[PoseRecord]) -> String {
         let cycles = sum(&|r| r.cycles).max(1.0);
         let pc = |f: &dyn Fn(&Stats) -> u64| 100.0 * sum(f) / cycles;
         let words = c.iter().map(|r| r.memory.node_words + r.memory.tri_words).sum::<u64>() as f64;
+        let per_clock = |f: &dyn Fn(&CycleRecord) -> u64| c.iter().map(|r| f(r)).sum::<u64>() as f64 / cycles;
         let _ = writeln!(
             out,
-            "{:<28} {:>6.1} {:>7.1} {:>8.1} {:>7.1} {:>7.1} {:>7.1} {:>7.1} {:>7.1} {:>7.1} {:>7.2} {:>7.1} {:>7.3}",
+            "{:<28} {:>6.1} {:>7.1} {:>8.1} {:>7.1} {:>7.1} {:>7.1} {:>7.1} {:>7.1} {:>7.1} {:>7.2} {:>7.1} {:>7.3} {:>7.3} {:>7.3}",
             key,
             pc(&|r| r.issue),
             pc(&|r| r.stall_memory),
@@ -183,6 +189,8 @@ pub fn stall_table(records: &[PoseRecord]) -> String {
             pc(&|r| r.back_pressure),
             sum(&|r| r.dop_occupancy) / cycles,
             sum(&|r| r.tri_occupancy) / cycles,
+            per_clock(&|r| r.dop_tests),
+            per_clock(&|r| r.tri_tests),
             words / cycles,
         );
     }

@@ -218,6 +218,8 @@ impl<'s> Prepared<'s> {
             software_us,
             hits: hits.len(),
             uncertain: unc.len(),
+            dop_tests: trace.dop_tests,
+            tri_tests: trace.tri_tests,
             max_entries: trace.max_depth,
             overflow: trace.overflow,
             memory: MemoryRecord {
@@ -299,7 +301,16 @@ mod tests {
             let (c, x) = (c.cycles.as_ref().unwrap(), x.cycles.as_ref().unwrap());
             assert_eq!((c.cycles, c.hits, c.uncertain, c.memory.bytes, c.stats), (x.cycles, x.hits, x.uncertain, x.memory.bytes, x.stats));
             assert_eq!(x.memory.bytes > 0, c.cycles > 100);
+            // all pairs: the chip's tests are the golden traversal's
+            assert_eq!((c.dop_tests, c.tri_tests), (p.counters.dop_tests, p.counters.tri_tests));
         }
+        // the stall table's tests per clock: the pose group's tests over its clocks
+        let d06: Vec<_> = cyc.records.iter().filter(|r| r.distance == Some(0.6)).map(|r| r.cycles.as_ref().unwrap()).collect();
+        let clocks = d06.iter().map(|c| c.cycles).sum::<u64>() as f64;
+        let per = |f: fn(&&CycleRecord) -> u64| format!("{:.3}", d06.iter().map(f).sum::<u64>() as f64 / clocks);
+        let row = crate::report::stall_table(&cyc.records).lines().find(|l| l.starts_with("d=0.6")).unwrap().to_string();
+        let cols: Vec<&str> = row.split_whitespace().collect();
+        assert_eq!(cols[cols.len() - 3..cols.len() - 1], [per(|c| c.dop_tests), per(|c| c.tri_tests)], "{row}");
     }
 
     #[test]

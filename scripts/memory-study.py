@@ -1,0 +1,109 @@
+#!/usr/bin/env python3
+"""The chip's throughput under each memory model (docs/ARCHITECTURE.md, "Throughput by memory
+model"): DOP tests, triangle tests and memory words per clock, where the clocks went, page
+hits and bank conflicts, on the default sweep of each mesh.
+
+For every mesh and memory model it writes a scene (the default scene's sweep and chip:
+k = 24, binary32, outward DOP rounding, LIFO, all pairs; `[memory]` set to the model), runs
+`cchip run --json` on it (the cycle model, every pose) and prints one markdown row per
+(mesh, model), summed over the poses whose root DOPs overlap (more than one DOP test).
+
+Usage: scripts/memory-study.py [--meshes bunny dragon-11k] [--orientations 8] [--cchip PATH]
+  --cchip   a built cchip binary (default: `cargo run --release -q --`)
+Only the Python 3 standard library is used.
+"""
+import argparse
+import json
+import os
+import subprocess
+import sys
+import tempfile
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+
+# name, [memory] table, what it stands for
+MODELS = [
+    ("ideal, latency 1", 'model = "ideal"\nlatency = 1\ninterval = 1', "a word every clock, one clock after the request"),
+    ("ideal, latency 8", 'model = "ideal"\nlatency = 8\ninterval = 1', "a request every clock, the word 8 clocks later"),
+    ("DDR wscg03", 'model = "ddr"\npreset = "wscg03"', "WSCG'03: 4 banks, 4 KiB pages, 256-bit bus, hit 8, miss 20"),
+    ("DDR date05", 'model = "ddr"\npreset = "date05"', "DATE'05's 756-bit DDR2 bus (banks, pages, timings assumed)"),
+]
+
+SCENE = """[objects]
+a = "{mesh}"
+b = "{mesh}"
+unit_cube = true
+
+[chip]
+k = 24
+format = "binary32"
+dop_rounding = "outward"
+
+[query]
+mode = "all"
+traversal = "lifo"
+
+[sweep]
+distances = [2.5, 1.8, 1.4, 1.0, 0.6]
+orientations = {orientations}
+seed = 1
+
+[memory]
+{memory}
+
+[outputs]
+cycles = true
+memory = true
+"""
+
+
+def run(cmd, scene):
+    out = subprocess.run(cmd + ["run", "--json", scene], cwd=ROOT, capture_output=True, text=True)
+    if out.returncode != 0:
+        sys.exit(f"memory-study.py: {' '.join(cmd)} run {scene} failed:\n{out.stderr}")
+    return json.loads(out.stdout)
+
+
+def row(mesh, name, records):
+    c = [r["cycles"] for r in records if r.get("cycles") and r["cycles"]["dop_tests"] > 1]
+    if not c:
+        return f"| {mesh} | {name} | no overlapping pose |"
+    clocks = sum(x["cycles"] for x in c)
+    st = lambda k: sum(x["stats"][k] for x in c)
+    mem = lambda k: sum(x["memory"][k] for x in c)
+    words = mem("node_words") + mem("tri_words")
+    pages = mem("page_hits") + mem("page_misses")
+    page_hit = f"{100 * mem('page_hits') / pages:.0f}%" if pages else "-"
+    return (
+        f"| {mesh} | {name} | {len(c)} | {clocks / len(c):,.0f} | {sum(x['dop_tests'] for x in c) / clocks:.3f} | "
+        f"{sum(x['tri_tests'] for x in c) / clocks:.3f} | {words / clocks:.3f} | {100 * st('issue') / clocks:.1f} | "
+        f"{100 * st('stall_memory') / clocks:.1f} | {100 * st('stall_spacing') / clocks:.1f} | "
+        f"{100 * (st('stall_credit') + st('back_pressure')) / clocks:.1f} | {mem('bytes') / len(c) / 1024:,.0f} | "
+        f"{page_hit} | {mem('bank_conflicts')} |"
+    )
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--meshes", nargs="+", default=["bunny", "dragon-11k"])
+    ap.add_argument("--orientations", type=int, default=8)
+    ap.add_argument("--cchip", help="a built cchip binary (default: cargo run --release -q --)")
+    a = ap.parse_args()
+    cmd = [a.cchip] if a.cchip else ["cargo", "run", "--release", "-q", "--"]
+    print("| mesh | memory | poses | clocks | DOP tests/clock | tri tests/clock | words/clock | issue% | memory% "
+          "| spacing% | credit+bkpres% | KiB/query | page hits | bank conflicts |")
+    print("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+    with tempfile.TemporaryDirectory() as tmp:
+        for mesh in a.meshes:
+            for name, memory, _ in MODELS:
+                scene = os.path.join(tmp, f"{mesh}-{name.replace(' ', '').replace(',', '-')}.toml")
+                with open(scene, "w") as f:
+                    f.write(SCENE.format(mesh=mesh, orientations=a.orientations, memory=memory))
+                print(row(mesh, name, run(cmd, scene)), flush=True)
+    print()
+    for name, _, what in MODELS:
+        print(f"- {name}: {what}")
+
+
+if __name__ == "__main__":
+    main()
