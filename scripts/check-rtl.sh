@@ -25,8 +25,9 @@ jobs_max=${JOBS:-$(nproc 2>/dev/null || echo 2)}
 out_dir=$(mktemp -d)
 trap 'rm -rf "$out_dir"' EXIT
 
-run_one() { # unit simulator
-  local u=$1 sim=$2 ports=()
+run_one() { # unit simulator (its wall time, build and run, into $out_dir/<unit>.<sim>.t)
+  local u=$1 sim=$2 ports=() t0=$SECONDS
+  trap 'echo $((SECONDS - t0)) >"$out_dir/$u.$sim.t"' RETURN
   if [[ $u == chip_* ]]; then # whole queries (scripts/run-chip.sh); Icarus only the short ones
     local status=0 qs=()
     [ "$sim" = icarus ] && read -r -a qs <<<"${ICARUS_CHIP_QUERIES-apart_lifo_first sphere_lifo_first}"
@@ -58,7 +59,7 @@ for u in "${units[@]}"; do
     out=$(cat "$out_dir/$u.$sim.out"); status=$(cat "$out_dir/$u.$sim.rc")
     line=$(grep -E '^[0-9]+ passed, [0-9]+ failed$' <<<"$out" | tail -n 1 || true)
     if [ "$status" = 0 ] && [[ "$line" =~ ^[0-9]+\ passed,\ 0\ failed$ ]]; then
-      summary+=("$u $sim: $line")
+      summary+=("$u $sim: $line ($(cat "$out_dir/$u.$sim.t") s)")
     else
       summary+=("$u $sim: FAILED (${line:-$(tail -n 1 <<<"$out")})"); fail=1
     fi
