@@ -8,7 +8,10 @@ k = 24, binary32, outward DOP rounding, LIFO, all pairs; `[memory]` set to the m
 `cchip run --json` on it (the cycle model, every pose) and prints one markdown row per
 (mesh, model), summed over the poses whose root DOPs overlap (more than one DOP test).
 
-Usage: scripts/memory-study.py [--meshes bunny dragon-11k] [--orientations 8] [--cchip PATH]
+Usage: scripts/memory-study.py [--meshes bunny dragon-11k] [--orientations 8] [--timing TOML]
+                               [--cchip PATH]
+  --timing  the scenes' [timing] table, e.g. 'issue_spacing = 1, outstanding = 4, credit = 32'
+            (the cycle model beyond the RTL; default: the RTL's parameters)
   --cchip   a built cchip binary (default: `cargo run --release -q --`)
 Only the Python 3 standard library is used.
 """
@@ -47,6 +50,9 @@ traversal = "lifo"
 distances = [2.5, 1.8, 1.4, 1.0, 0.6]
 orientations = {orientations}
 seed = 1
+
+[timing]
+{timing}
 
 [memory]
 {memory}
@@ -87,6 +93,7 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--meshes", nargs="+", default=["bunny", "dragon-11k"])
     ap.add_argument("--orientations", type=int, default=8)
+    ap.add_argument("--timing", default="", help="the scenes' [timing] entries, comma separated")
     ap.add_argument("--cchip", help="a built cchip binary (default: cargo run --release -q --)")
     a = ap.parse_args()
     cmd = [a.cchip] if a.cchip else ["cargo", "run", "--release", "-q", "--"]
@@ -98,7 +105,8 @@ def main():
             for name, memory, _ in MODELS:
                 scene = os.path.join(tmp, f"{mesh}-{name.replace(' ', '').replace(',', '-')}.toml")
                 with open(scene, "w") as f:
-                    f.write(SCENE.format(mesh=mesh, orientations=a.orientations, memory=memory))
+                    f.write(SCENE.format(mesh=mesh, orientations=a.orientations, memory=memory,
+                                         timing="\n".join(x.strip() for x in a.timing.split(","))))
                 print(row(mesh, name, run(cmd, scene)), flush=True)
     print()
     for name, _, what in MODELS:
