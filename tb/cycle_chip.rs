@@ -103,7 +103,7 @@ fn config(k: usize, binary32: bool, outward: bool) -> ChipConfig {
 /// so that words span bursts and banks conflict).
 fn memory() -> impl Strategy<Value = Memory> {
     prop_oneof![
-        (1u32..=6, 1u32..=3).prop_map(|(latency, interval)| Memory::Ideal(MemTiming { latency, interval })),
+        (1u32..=6, 1u32..=3, prop::option::of(16u32..=1024)).prop_map(|(latency, interval, bus_bits)| Memory::Ideal(MemTiming { latency, interval, bus_bits })),
         (1u32..=4, 6u32..=12, 5u32..=8, 0u32..=3, 0u32..=4, 0u32..=12).prop_map(|(banks, page, bus, burst, hit, miss)| {
             let burst = 1 << burst;
             Memory::Ddr(Ddr { banks, page_bytes: 1 << page, bus_bits: 1 << bus, burst, hit: burst + hit, miss: burst + hit + miss })
@@ -218,7 +218,7 @@ fn bad_parameters_are_refused() {
         (Params { queue_entries: 0, ..Params::RTL }, "queue_entries"),
         (Params { issue_spacing: 3, ..Params::RTL }, "issue_spacing"),
         (Params { outstanding: 5, ..Params::RTL }, "outstanding"),
-        (Params { memory: MemTiming { latency: 0, interval: 1 }.into(), ..Params::RTL }, "latency"),
+        (Params { memory: MemTiming { latency: 0, ..Default::default() }.into(), ..Params::RTL }, "latency"),
         (Params { memory: Memory::Ddr(Ddr { burst: 9, ..Ddr::WSCG03 }), ..Params::RTL }, "burst <= hit <= miss"),
     ] {
         let e = CycleChip::new(&CHIP_CONFIG, p, &chip.a, &chip.b, &setup, true).err().expect("refused");

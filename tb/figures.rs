@@ -104,7 +104,7 @@ fn accuracy_pareto_front() {
     let tris = collision_chip::mesh::resolve("teapot").unwrap().scaled_into_unit_cube().unwrap().triangles_f64();
     let sweep = Sweep { distances: vec![1.2], orientations: 2, seed: 1 };
     let formats = [Format::BINARY32, "e8m10".parse().unwrap()];
-    let rows = accuracy::study("teapot", &tris, &[6, 24], &formats, &[DopRounding::Outward], &sweep, || {}).unwrap();
+    let rows = accuracy::study("teapot", &tris, &[6, 24], &formats, &[DopRounding::Outward], &sweep, Default::default(), || {}).unwrap();
     assert_eq!(rows.len(), 4);
     assert!(rows.iter().all(|r| r.sums.queries == 2 && r.sums.cycles > 0 && r.sums.misses == 0));
     let t = accuracy::figure(&rows).table;
@@ -124,4 +124,11 @@ fn accuracy_pareto_front() {
     // tighter DOPs, fewer clocks
     let b32 = |k: u64| t.rows.iter().find(|r| r[col("k")] == Cell::Int(k) && r[col("format")] == Cell::Text("binary32".into())).unwrap();
     assert!(num(b32(24), "cycles_per_query") < num(b32(6), "cycles_per_query"));
+
+    // on a 64-bit bus a word costs clocks by its width: binary32's words slow down more
+    let narrow = collision_chip::cycle::MemTiming { bus_bits: Some(64), ..Default::default() };
+    let slow = accuracy::study("teapot", &tris, &[24], &formats, &[DopRounding::Outward], &sweep, narrow, || {}).unwrap();
+    let wide: Vec<_> = rows.iter().filter(|r| r.k == 24).collect();
+    let growth: Vec<f64> = slow.iter().zip(&wide).map(|(s, w)| s.sums.cycles as f64 / w.sums.cycles as f64).collect();
+    assert!(growth[1] > 1.0 && growth[0] > growth[1], "clocks on a 64-bit bus / a word per clock: binary32, e8m10 {growth:?}");
 }

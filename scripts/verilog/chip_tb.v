@@ -2,8 +2,9 @@
 // and the memory of src/rtl/chip_io.rs, clock for clock. It writes the registers from
 // +host=<file> (one `{addr[10], data[32]}` per line), pulses `start`, serves memory
 // requests from +mem=<file> ($readmemh, one 578-bit word per line) with the memory model
-// (+latency=L: a request accepted at edge t is answered in the cycle ending with edge t+L;
-// +interval=I: the next request is accepted I edges later at the earliest; or, with +ddr,
+// (+latency=L: a request accepted at edge t is answered in the cycle ending with edge
+// t+L+B-1, B = ceil(578 / +bus_bits) clocks on the bus, 1 without +bus_bits; +interval=I:
+// the next request is accepted max(I, B) edges later at the earliest; or, with +ddr,
 // the DDR SDRAM model of cycle::memory::Ddr: +banks +page_bytes +bus_bits +burst +hit
 // +miss, a request accepted in any cycle; docs/ARCHITECTURE.md), reads results
 // with res_ready high in the cycles that are multiples of +reader=P (default 1: every
@@ -54,7 +55,7 @@ module tb;
   integer qaddr [0:15];
   integer qh, qt, next_accept, cyc, i, latency, interval, reader, max_cycles;
   // DDR SDRAM: per bank the open row (-1: none) and the cycle it is free; the data bus
-  integer ddr, banks, page_bytes, bus_bits, burst, hit, miss, bursts, page, bank, row, t0, t1, bus_free;
+  integer ddr, banks, page_bytes, bus_bits, burst, hit, miss, bursts, page, bank, row, t0, t1, bus_free, beats;
   integer open_row [0:63];  // cycle::memory::Ddr::MAX_BANKS
   integer bank_free [0:63];
   reg [1023:0] mem_file, host_file;
@@ -90,6 +91,11 @@ module tb;
         bank_free[i] = 0;
       end
       bus_free = 0;
+      beats = 1;
+    end else begin
+      // ideal: a word moves in ceil(MW / bus_bits) clocks on a +bus_bits bus, else in one
+      if (!$value$plusargs("bus_bits=%d", bus_bits)) bus_bits = 0;
+      beats = bus_bits > 0 ? (MW + bus_bits - 1) / bus_bits : 1;
     end
     if (!$value$plusargs("max_cycles=%d", max_cycles)) max_cycles = 100000;
     ports = $test$plusargs("ports");
@@ -133,8 +139,8 @@ module tb;
           due[qt % 16] = t1;
           next_accept = cyc + 1;
         end else begin
-          due[qt % 16] = cyc + latency;
-          next_accept = cyc + interval;
+          due[qt % 16] = cyc + latency + beats - 1;
+          next_accept = cyc + (interval > beats ? interval : beats);
         end
         qaddr[qt % 16] = mem_req_addr;
         qt = qt + 1;

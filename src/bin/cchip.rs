@@ -142,6 +142,11 @@ struct AccuracyArgs {
     orientations: usize,
     #[arg(long, default_value_t = 1)]
     seed: u64,
+    /// The cycle model's memory bus in bits: a memory word takes ceil(its bits / N) clocks,
+    /// so a narrower format costs fewer clocks (default: the one-clock ideal memory moves a
+    /// word per clock whatever its width).
+    #[arg(long, value_name = "N")]
+    bus_bits: Option<u32>,
     /// Print the rows as JSON instead of the table.
     #[arg(long)]
     json: bool,
@@ -309,11 +314,13 @@ fn progress_bar(len: u64, hidden: bool) -> ProgressBar {
 fn accuracy(a: AccuracyArgs) -> Result<(), String> {
     let sweep = Sweep { distances: a.distances.clone(), orientations: a.orientations, seed: a.seed };
     let roundings = [DopRounding::Outward, DopRounding::NearestEven];
+    let memory = collision_chip::cycle::MemTiming { bus_bits: a.bus_bits, ..Default::default() };
+    memory.check()?;
     let bar = progress_bar(a.meshes.len().saturating_mul(a.distances.len()).saturating_mul(a.orientations) as u64, a.json);
     let mut rows = vec![];
     for m in &a.meshes {
         let tris = load(m, true)?.triangles_f64();
-        rows.extend(accuracy::study(m, &tris, &a.k, &a.formats, &roundings, &sweep, || bar.inc(1))?);
+        rows.extend(accuracy::study(m, &tris, &a.k, &a.formats, &roundings, &sweep, memory, || bar.inc(1))?);
     }
     bar.finish_and_clear();
     if let Some(dir) = &a.plot {

@@ -5,32 +5,38 @@
 
 use std::collections::VecDeque;
 
-/// The memory model: a request accepted at rising edge `t` is answered in the cycle that
-/// ends with edge `t + latency` (`mem_resp_valid` high, the chip takes it at that edge);
-/// after an accepted request the next is accepted `interval` edges later at the earliest
-/// (the memory's throughput is `1 / interval` words per clock). Responses come in request
-/// order.
+/// The ideal memory: a word moves in `beats = ceil(W / bus_bits)` clocks (W the memory
+/// word's bits; one clock without a `bus_bits`); a request accepted at rising edge `t` is
+/// answered in the cycle that ends with edge `t + latency + beats - 1` (`mem_resp_valid`
+/// high, the chip takes it at that edge); after an accepted request the next is accepted
+/// `max(interval, beats)` edges later at the earliest (the memory's throughput is
+/// `1 / interval` words per clock, the bus's `1 / beats`). Responses come in request order.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct MemTiming {
     pub latency: u32,
     pub interval: u32,
+    #[serde(default)]
+    pub bus_bits: Option<u32>,
 }
 
 impl Default for MemTiming {
     fn default() -> Self {
-        MemTiming { latency: 1, interval: 1 }
+        MemTiming { latency: 1, interval: 1, bus_bits: None }
     }
 }
 
 impl MemTiming {
-    /// Errors unless both are at least 1.
+    /// Errors unless latency and interval are at least 1 and a bus is at least 1 bit wide.
     pub fn check(&self) -> Result<(), String> {
         if self.latency == 0 || self.interval == 0 {
             return Err(format!(
                 "memory latency and interval must be at least 1 clock (got latency {}, interval {})",
                 self.latency, self.interval
             ));
+        }
+        if self.bus_bits == Some(0) {
+            return Err("memory bus_bits must be at least 1".into());
         }
         Ok(())
     }
@@ -130,7 +136,13 @@ impl Memory {
 impl std::fmt::Display for Memory {
     fn fmt(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
         match self {
-            Memory::Ideal(t) => write!(f, "ideal: answers a request after {} clock(s), accepts one every {}", t.latency, t.interval),
+            Memory::Ideal(t) => {
+                write!(f, "ideal: answers a request after {} clock(s), accepts one every {}", t.latency, t.interval)?;
+                match t.bus_bits {
+                    Some(b) => write!(f, ", a {b}-bit bus (a word in ceil(word bits / {b}) clocks)"),
+                    None => write!(f, ", a word per clock"),
+                }
+            }
             Memory::Ddr(d) => write!(
                 f,
                 "DDR SDRAM: {} banks, {}-byte pages, {}-bit bus, bursts of {}, page hit {} and miss {} clocks",
@@ -164,16 +176,15 @@ struct DdrState {
 }
 
 /// The memory model's state during a query (cycle numbers as in the chip's trace).
-/// Ideal: a request accepted at rising edge `t` is answered in the cycle that ends with
-/// edge `t + latency` (`mem_resp_valid` high, the chip takes it at that edge); after an
-/// accepted request the next is accepted `interval` edges later at the earliest.
-/// DDR ([`Ddr`]): a request is accepted in any cycle and answered when its word is
-/// complete. Responses come in request order.
+/// Ideal: [`MemTiming`]. DDR ([`Ddr`]): a request is accepted in any cycle and answered
+/// when its word is complete. Responses come in request order.
 #[derive(Clone, Debug)]
 pub struct MemModel {
     /// The ideal model's timing; with DDR, latency 1 and interval 1 (only the interval is
     /// used: one request accepted per clock).
     timing: MemTiming,
+    /// Ideal: clocks a word takes on the bus (1 with DDR, whose bursts are its own).
+    beats: u64,
     ddr: Option<DdrState>,
     /// `(cycle of the response, word address)` in request order.
     pending: VecDeque<(u64, u32)>,
@@ -184,6 +195,10 @@ pub struct MemModel {
 impl MemModel {
     /// The model of `m` for memory words of `word_bits` bits.
     pub fn new(m: Memory, word_bits: u32) -> Self {
+        let beats = match m {
+            Memory::Ideal(MemTiming { bus_bits: Some(b), .. }) => (word_bits as u64).div_ceil(b as u64).max(1),
+            _ => 1,
+        };
         let (timing, ddr) = match m {
             Memory::Ideal(t) => (t, None),
             Memory::Ddr(d) => {
@@ -197,10 +212,10 @@ impl MemModel {
                     bank_free: vec![0; banks],
                     bus_free: 0,
                 };
-                (MemTiming { latency: 1, interval: 1 }, Some(state))
+                (MemTiming::default(), Some(state))
             }
         };
-        MemModel { timing, ddr, pending: VecDeque::new(), next_accept: 0, counters: MemCounters::default() }
+        MemModel { timing, beats, ddr, pending: VecDeque::new(), next_accept: 0, counters: MemCounters::default() }
     }
 
     /// `mem_req_ready` in cycle `cyc`.
@@ -224,7 +239,7 @@ impl MemModel {
             return;
         }
         let done = match &mut self.ddr {
-            None => cyc + self.timing.latency as u64,
+            None => cyc + self.timing.latency as u64 + self.beats - 1,
             Some(s) => {
                 let page = addr as u64 * s.word_bytes / s.d.page_bytes as u64;
                 let (bank, row) = ((page % s.d.banks as u64) as usize, page / s.d.banks as u64);
@@ -248,7 +263,7 @@ impl MemModel {
             }
         };
         self.pending.push_back((done, addr));
-        self.next_accept = cyc + self.timing.interval as u64;
+        self.next_accept = cyc + (self.timing.interval as u64).max(self.beats);
     }
 
     /// The cycle of the next response, if a request is pending.
@@ -336,7 +351,7 @@ mod tests {
 
     #[test]
     fn model_answers_after_latency_and_spaces_requests() {
-        let mut m = MemModel::new(MemTiming { latency: 3, interval: 2 }.into(), 64);
+        let mut m = MemModel::new(MemTiming { latency: 3, interval: 2, bus_bits: None }.into(), 64);
         assert!(m.ready(0));
         m.request(1, 7);
         assert!(!m.ready(2) && m.ready(3));
@@ -347,7 +362,25 @@ mod tests {
         assert_eq!(m.respond(5), None);
         assert_eq!(m.respond(6), Some(9));
         assert!(m.is_idle());
-        assert!(MemTiming { latency: 0, interval: 1 }.check().is_err());
+        assert!(MemTiming { latency: 0, ..Default::default() }.check().is_err());
+        assert!(MemTiming { bus_bits: Some(0), ..Default::default() }.check().is_err());
+    }
+
+    /// A 200-bit word on a 64-bit bus moves in 4 clocks: latency 3 answers a request at 1 in
+    /// the cycle ending with edge 1 + 3 + 3 = 7, and the bus takes the next request at 5,
+    /// although the memory could take one every clock; on a 256-bit bus, as without a width.
+    #[test]
+    fn a_narrow_bus_moves_a_word_in_several_clocks() {
+        let mut m = MemModel::new(MemTiming { latency: 3, interval: 1, bus_bits: Some(64) }.into(), 200);
+        m.request(1, 7);
+        assert!(!m.ready(4) && m.ready(5));
+        m.request(5, 8);
+        assert_eq!((m.respond(6), m.respond(7)), (None, Some(7)));
+        assert_eq!((m.respond(10), m.respond(11)), (None, Some(8)));
+        let mut m = MemModel::new(MemTiming { latency: 3, interval: 1, bus_bits: Some(256) }.into(), 200);
+        m.request(1, 7);
+        assert!(m.ready(2));
+        assert_eq!((m.respond(3), m.respond(4)), (None, Some(7)));
     }
 
     /// WSCG'03's numbers by hand: 256-byte words (one burst of 8 beats of 256 bits), 4 KiB

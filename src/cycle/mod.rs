@@ -64,7 +64,7 @@ impl Params {
         issue_spacing: 2,
         credit: crate::rtl::LEAF_FIFO as u32,
         outstanding: 1,
-        memory: Memory::Ideal(MemTiming { latency: 1, interval: 1 }),
+        memory: Memory::Ideal(MemTiming { latency: 1, interval: 1, bus_bits: None }),
     };
 
     /// Errors name a parameter out of range.

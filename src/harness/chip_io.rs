@@ -333,7 +333,7 @@ pub fn queries() -> Vec<ChipQuery> {
         pose,
         lifo,
         mode,
-        timing: MemTiming { latency, interval },
+        timing: MemTiming { latency, interval, bus_bits: None },
         reader: Reader::default(),
         large: false,
     };

@@ -169,7 +169,11 @@ pub fn cross_check(bin: &Path, dir: &Path, image: &QueryImage, memory: Memory, m
     std::fs::write(&mem, image.memory_hex()).map_err(|e| io(&mem, e))?;
     std::fs::write(&host, image.writes_hex()).map_err(|e| io(&host, e))?;
     let memory_args = match memory {
-        Memory::Ideal(t) => vec![format!("+latency={}", t.latency), format!("+interval={}", t.interval)],
+        Memory::Ideal(t) => {
+            let mut a = vec![format!("+latency={}", t.latency), format!("+interval={}", t.interval)];
+            a.extend(t.bus_bits.map(|b| format!("+bus_bits={b}")));
+            a
+        }
         Memory::Ddr(d) => {
             vec![
                 "+ddr".into(),

@@ -42,7 +42,8 @@ pub struct Sums {
     pub memory_bytes: u64,
     pub misses: u64,
     pub extras: u64,
-    /// The cycle model's clocks (LIFO, all pairs, [`Params::RTL`]).
+    /// The cycle model's clocks (LIFO, all pairs, [`Params::RTL`] with the study's ideal
+    /// memory).
     pub cycles: u64,
 }
 
@@ -111,7 +112,7 @@ fn ratio(a: u64, b: u64) -> f64 {
 }
 
 /// Runs every (k, format, rounding) on one mesh against a copy of itself, the poses on every
-/// core; `progress` is called once per pose.
+/// core, the cycle model against the ideal `memory`; `progress` is called once per pose.
 pub fn study(
     mesh: &str,
     tris: &[Tri],
@@ -119,6 +120,7 @@ pub fn study(
     formats: &[Format],
     roundings: &[DopRounding],
     sweep: &Sweep,
+    memory: cycle::MemTiming,
     progress: impl Fn() + Sync,
 ) -> Result<Vec<Row>, String> {
     let poses = sweep_poses(sweep)?;
@@ -140,7 +142,7 @@ pub fn study(
         let rows = chips.iter().map(|chip| {
             let r = chip.query(&sp.pose, Mode::All, Traversal::Lifo);
             let acc = Accuracy::of(Mode::All, &r.pairs, &exact);
-            let (trace, _) = cycle::run_query(chip, &chip.setup(&sp.pose), true, Mode::All, Params::RTL, Reader::default(), cycle::MAX_CYCLES, Default::default())?;
+            let (trace, _) = cycle::run_query(chip, &chip.setup(&sp.pose), true, Mode::All, Params { memory: memory.into(), ..Params::RTL }, Reader::default(), cycle::MAX_CYCLES, Default::default())?;
             trace.check(Mode::All, &r).map_err(|e| format!("{mesh} k={} {} at {}: the cycle model disagrees with the golden model: {e}", chip.cfg.k, chip.cfg.format, sp.pose.text()))?;
             let mut causes = [0u64; 3];
             for &(a, b) in &r.uncertain {

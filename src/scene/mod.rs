@@ -50,6 +50,8 @@
 //! model = "ideal"             # or "ddr" (DDR SDRAM with banks and pages, cycle::memory::Ddr)
 //! latency = 1                 # ideal: clocks from an accepted request to its response
 //! interval = 1                # ideal: clocks between accepted requests (1 / words per clock)
+//! # bus_bits = 256            # ideal: a word moves in ceil(word bits / bus_bits) clocks
+//! #                           # (default: a word per clock)
 //! # preset = "wscg03"         # ddr: "wscg03" or "date05", then any of these overridden:
 //! # banks = 4, page_bytes = 4096, bus_bits = 256, burst = 8, hit = 8, miss = 20
 //!
@@ -110,7 +112,8 @@ struct TimingSection {
     clock_mhz: Option<f64>,
 }
 
-/// `[memory]`: the ideal model (`latency`, `interval`; the default, 1 and 1) or
+/// `[memory]`: the ideal model (`latency`, `interval`, `bus_bits`; the default, 1, 1 and a
+/// word per clock) or
 /// `model = "ddr"` with a `preset` (`wscg03`, `date05`) and any of its parameters overridden.
 #[derive(Debug, Default, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -130,14 +133,14 @@ struct MemorySection {
 impl MemorySection {
     fn memory(&self) -> Result<crate::cycle::Memory, String> {
         use crate::cycle::{Ddr, MemTiming, Memory};
-        let ddr_keys = [self.banks, self.page_bytes, self.bus_bits, self.burst, self.hit, self.miss];
+        let ddr_keys = [self.banks, self.page_bytes, self.burst, self.hit, self.miss];
         match self.model.as_deref().unwrap_or("ideal") {
             "ideal" => {
                 if self.preset.is_some() || ddr_keys.iter().any(Option::is_some) {
-                    return Err("[memory] preset, banks, page_bytes, bus_bits, burst, hit and miss belong to model = \"ddr\"; the ideal model takes latency and interval".into());
+                    return Err("[memory] preset, banks, page_bytes, burst, hit and miss belong to model = \"ddr\"; the ideal model takes latency, interval and bus_bits".into());
                 }
                 let d = MemTiming::default();
-                Ok(Memory::Ideal(MemTiming { latency: self.latency.unwrap_or(d.latency), interval: self.interval.unwrap_or(d.interval) }))
+                Ok(Memory::Ideal(MemTiming { latency: self.latency.unwrap_or(d.latency), interval: self.interval.unwrap_or(d.interval), bus_bits: self.bus_bits }))
             }
             "ddr" => {
                 if self.latency.is_some() || self.interval.is_some() {
@@ -512,7 +515,7 @@ mod tests {
         let s = Scene::parse(&format!("{base}[outputs]\nwaveforms = \"w\"\n[memory]\nlatency = 3\ninterval = 2\n"), "s").unwrap();
         assert_eq!(s.outputs.waveforms, Some(Waveforms::all("w".into())));
         assert!(!s.outputs.cycles, "waveforms alone need no counters");
-        assert_eq!(s.params, Params { memory: MemTiming { latency: 3, interval: 2 }.into(), ..Params::RTL });
+        assert_eq!(s.params, Params { memory: MemTiming { latency: 3, interval: 2, bus_bits: None }.into(), ..Params::RTL });
         let s = Scene::parse(base, "s").unwrap();
         assert!(!s.outputs.cycles);
         assert_eq!((s.params, s.clock_mhz), (Params::RTL, 800.0));
@@ -554,12 +557,15 @@ mod tests {
         assert_eq!(mem("model = \"ddr\"\npreset = \"date05\"\nbanks = 4"), Ok(Memory::Ddr(Ddr { banks: 4, ..Ddr::DATE05 })));
         let own = "model = \"ddr\"\nbanks = 2\npage_bytes = 1024\nbus_bits = 64\nburst = 4\nhit = 6\nmiss = 12";
         assert_eq!(mem(own), Ok(Memory::Ddr(Ddr { banks: 2, page_bytes: 1024, bus_bits: 64, burst: 4, hit: 6, miss: 12 })));
+        assert_eq!(mem("latency = 8\nbus_bits = 128"), Ok(Memory::Ideal(crate::cycle::MemTiming { latency: 8, interval: 1, bus_bits: Some(128) })));
         for (m, want) in [
             ("model = \"ddr\"", "needs a preset"),
             ("model = \"ddr\"\nbanks = 2\npage_bytes = 1024\nbus_bits = 64\nburst = 4\nhit = 6", "(miss is missing)"),
             ("model = \"ddr\"\npreset = \"ddr4\"", "preset \"ddr4\" is not known"),
             ("model = \"ddr\"\npreset = \"wscg03\"\nlatency = 3", "belong to the ideal model"),
             ("preset = \"wscg03\"", "belong to model = \"ddr\""),
+            ("hit = 8", "the ideal model takes latency, interval and bus_bits"),
+            ("bus_bits = 0", "bus_bits must be at least 1"),
             ("model = \"sram\"", "model \"sram\" is not known"),
             ("model = \"ddr\"\npreset = \"wscg03\"\nhit = 2", "burst <= hit <= miss"),
         ] {
