@@ -36,7 +36,7 @@ impl MemTiming {
             ));
         }
         if self.bus_bits == Some(0) {
-            return Err("memory bus_bits must be at least 1".into());
+            return Err("memory bus_bits must be at least 1 (leave it out for a word per clock)".into());
         }
         Ok(())
     }
@@ -139,7 +139,7 @@ impl std::fmt::Display for Memory {
             Memory::Ideal(t) => {
                 write!(f, "ideal: answers a request after {} clock(s), accepts one every {}", t.latency, t.interval)?;
                 match t.bus_bits {
-                    Some(b) => write!(f, ", a {b}-bit bus (a word in ceil(word bits / {b}) clocks)"),
+                    Some(b) => write!(f, ", a bus of {b} bits (a word in ceil(word bits / {b}) clocks)"),
                     None => write!(f, ", a word per clock"),
                 }
             }
