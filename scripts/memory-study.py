@@ -3,8 +3,8 @@
 model"): DOP tests, triangle tests and memory words per clock, where the clocks went, page
 hits and bank conflicts, on the default sweep of each mesh.
 
-For every mesh and memory model it writes a scene (the default scene's sweep and chip:
-k = 24, binary32, outward DOP rounding, LIFO, all pairs; `[memory]` set to the model), runs
+For every mesh and memory model it writes a scene (vectors/scenes/default.toml's sweep and
+chip: k = 24, binary32, outward DOP rounding, LIFO, all pairs; `[memory]` set to the model), runs
 `cchip run --json` on it (the cycle model, every pose) and prints one markdown row per
 (mesh, model), summed over the poses whose root DOPs overlap (more than one DOP test).
 
@@ -18,6 +18,7 @@ Only the Python 3 standard library is used.
 import argparse
 import json
 import os
+import re
 import subprocess
 import sys
 import tempfile
@@ -32,35 +33,18 @@ MODELS = [
     ("DDR date05", 'model = "ddr"\npreset = "date05"', "DATE'05's 756-bit DDR2 bus (banks, pages, timings assumed)"),
 ]
 
-SCENE = """[objects]
-a = "{mesh}"
-b = "{mesh}"
-unit_cube = true
+DEFAULT = os.path.join(ROOT, "vectors", "scenes", "default.toml")
 
-[chip]
-k = 24
-format = "binary32"
-dop_rounding = "outward"
 
-[query]
-mode = "all"
-traversal = "lifo"
-
-[sweep]
-distances = [2.5, 1.8, 1.4, 1.0, 0.6]
-orientations = {orientations}
-seed = 1
-
-[timing]
-{timing}
-
-[memory]
-{memory}
-
-[outputs]
-cycles = true
-memory = true
-"""
+def scene(mesh, orientations, timing, memory):
+    """The default scene (vectors/scenes/default.toml) on `mesh` with `orientations`, the
+    given [timing] and [memory], and only the cycle model's outputs."""
+    with open(DEFAULT) as f:
+        text = f.read()
+    text = text[: text.index("[outputs]")]
+    text = re.sub(r'(?m)^([ab]) = ".*"$', lambda m: f'{m.group(1)} = "{mesh}"', text)
+    text = re.sub(r"(?m)^orientations = \d+$", f"orientations = {orientations}", text)
+    return f"{text}[timing]\n{timing}\n\n[memory]\n{memory}\n\n[outputs]\ncycles = true\nmemory = true\n"
 
 
 def run(cmd, scene):
@@ -103,11 +87,10 @@ def main():
     with tempfile.TemporaryDirectory() as tmp:
         for mesh in a.meshes:
             for name, memory, _ in MODELS:
-                scene = os.path.join(tmp, f"{mesh}-{name.replace(' ', '').replace(',', '-')}.toml")
-                with open(scene, "w") as f:
-                    f.write(SCENE.format(mesh=mesh, orientations=a.orientations, memory=memory,
-                                         timing="\n".join(x.strip() for x in a.timing.split(","))))
-                print(row(mesh, name, run(cmd, scene)), flush=True)
+                path = os.path.join(tmp, f"{mesh}-{name.replace(' ', '').replace(',', '-')}.toml")
+                with open(path, "w") as f:
+                    f.write(scene(mesh, a.orientations, "\n".join(x.strip() for x in a.timing.split(",")), memory))
+                print(row(mesh, name, run(cmd, path)), flush=True)
     print()
     for name, _, what in MODELS:
         print(f"- {name}: {what}")

@@ -126,15 +126,6 @@ fn compare_with_expect(name: &str, tr: &ChipTrace) {
     assert_eq!(tr.text(), want, "{name}: the trace differs from {}", path.display());
 }
 
-/// A query of the set in lockstep; its trace is the checked-in one.
-fn lockstep_query(name: &str) {
-    let q = query(name);
-    let case = Case::of(&q);
-    let tr = &case.lockstep::<10, 11>(1, None)[0];
-    case.check(tr);
-    compare_with_expect(q.name, tr);
-}
-
 /// The LIFO first-hit query, traced: target/rtl-vcd/chip_sphere_lifo_first.vcd (open it with
 /// scripts/gtkw/chip_e8m15_k6.gtkw) holds the signals the save file shows.
 /// (rust-hdl runs the chip at about 14 clocks per second, so of the set's queries it runs

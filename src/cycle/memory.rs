@@ -195,12 +195,8 @@ pub struct MemModel {
 impl MemModel {
     /// The model of `m` for memory words of `word_bits` bits.
     pub fn new(m: Memory, word_bits: u32) -> Self {
-        let beats = match m {
-            Memory::Ideal(MemTiming { bus_bits: Some(b), .. }) => (word_bits as u64).div_ceil(b as u64).max(1),
-            _ => 1,
-        };
-        let (timing, ddr) = match m {
-            Memory::Ideal(t) => (t, None),
+        let (timing, beats, ddr) = match m {
+            Memory::Ideal(t) => (t, t.bus_bits.map_or(1, |b| (word_bits as u64).div_ceil(b as u64).max(1)), None),
             Memory::Ddr(d) => {
                 let banks = d.banks as usize;
                 let beat_bits = d.bus_bits as u64 * d.burst as u64;
@@ -212,7 +208,7 @@ impl MemModel {
                     bank_free: vec![0; banks],
                     bus_free: 0,
                 };
-                (MemTiming::default(), Some(state))
+                (MemTiming::default(), 1, Some(state))
             }
         };
         MemModel { timing, beats, ddr, pending: VecDeque::new(), next_accept: 0, counters: MemCounters::default() }
