@@ -390,7 +390,10 @@ fn run(path: Option<PathBuf>, o: RunOpts) -> Result<(), String> {
         println!("misses = exact pairs the chip did not report; extras = reported pairs that do not intersect.");
     }
     let memory = match scene.params.memory {
-        Memory::Ideal(t) => format!("memory latency {}, interval {}", t.latency, t.interval),
+        Memory::Ideal(t) => {
+            let bus = t.bus_bits.map(|b| format!(", a bus of {b} bits")).unwrap_or_default();
+            format!("memory latency {}, interval {}{bus}", t.latency, t.interval)
+        }
         m => format!("memory {m}"),
     };
     if out.cycles {
