@@ -2,7 +2,7 @@
 # Runs every exported unit rtl/<unit>.v against vectors/<unit>.hex under Icarus Verilog and
 # Verilator (the chip, rtl/chip_*.v: whole queries by scripts/run-chip.sh, under Icarus only
 # the short ones of ICARUS_CHIP_QUERIES), then synthesizes all of them with Yosys and prints
-# the cells per unit.
+# the cells per unit (and fails if docs/figures/area_cells.csv, the area study, disagrees).
 # Exits non-zero on any mismatch, missing vector file, or synthesis failure.
 # Usage: scripts/check-rtl.sh [--no-synth] [unit ...]    (default: every rtl/*.v)
 # SYNTH_SKIP="unit ..." leaves units out of the Yosys step (their simulations still run).
@@ -69,6 +69,15 @@ printf '%s\n' "${summary[@]}"
 if [ $synth = 1 ]; then
   files=(); for u in "${units[@]}"; do [[ " ${SYNTH_SKIP:-} " == *" $u "* ]] || files+=("rtl/$u.v"); done
   if ! synth_out=$(scripts/synth.sh "${files[@]}" 2>&1); then echo "$synth_out" | tail -n 20; fail=1; fi
-  grep -E '^[a-z0-9_]+ cells: [0-9]+$' <<<"$synth_out" | sort -u
+  cells=$(grep -E '^[a-z0-9_]+ cells: [0-9]+$' <<<"$synth_out" | sort -u)
+  echo "$cells"
+  # The area study's cells (scripts/area-study.sh) must be these for the units in both.
+  area=docs/figures/area_cells.csv
+  while read -r u _ n; do
+    want=$(sed -n "s/^$u,//p" "$area")
+    if [ -n "$want" ] && [ "$want" != "$n" ]; then
+      echo "$area is stale: $u has $n cells, the file says $want: run scripts/area-study.sh" >&2; fail=1
+    fi
+  done <<<"$cells"
 fi
 exit $fail

@@ -1,5 +1,5 @@
-//! The chip configuration a query runs with: k of the k-DOP, the number format of every
-//! datapath word, and the rounding of the DOP and triangle datapaths.
+//! The chip configuration a query runs with: k of the k-DOP, the number formats of the DOP
+//! and triangle datapaths, and the rounding of the DOP and triangle datapaths.
 
 use crate::format::{Format, Rounding};
 use serde::{Deserialize, Serialize};
@@ -47,10 +47,63 @@ impl std::str::FromStr for DopRounding {
     }
 }
 
+/// The number formats of the chip's two datapaths: the DOP words and DOPTRF (`dop`), the
+/// triangle words and T.CHECK (`tri`). Written `binary32` (both) or `e8m15/binary32` (DOP
+/// format / T.CHECK format): a narrower DOP word saves memory traffic and stays conservative
+/// under outward rounding, while the triangle test keeps its precision. Serialized as that
+/// string.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(try_from = "String", into = "String")]
+pub struct Formats {
+    pub dop: Format,
+    pub tri: Format,
+}
+
+impl From<Format> for Formats {
+    /// The same format in both datapaths.
+    fn from(f: Format) -> Formats {
+        Formats { dop: f, tri: f }
+    }
+}
+
+impl std::fmt::Display for Formats {
+    fn fmt(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+        if self.dop == self.tri {
+            write!(f, "{}", self.tri)
+        } else {
+            write!(f, "{}/{}", self.dop, self.tri)
+        }
+    }
+}
+
+impl std::str::FromStr for Formats {
+    type Err = String;
+    fn from_str(s: &str) -> Result<Self, String> {
+        let parse = |x: &str| x.trim().parse::<Format>().map_err(|e| format!("{e} (a format, or DOP format/T.CHECK format such as \"e8m15/binary32\")"));
+        match s.split_once('/') {
+            None => parse(s).map(Formats::from),
+            Some((d, t)) => Ok(Formats { dop: parse(d)?, tri: parse(t)? }),
+        }
+    }
+}
+
+impl TryFrom<String> for Formats {
+    type Error = String;
+    fn try_from(s: String) -> Result<Self, String> {
+        s.parse()
+    }
+}
+
+impl From<Formats> for String {
+    fn from(f: Formats) -> String {
+        f.to_string()
+    }
+}
+
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct ChipConfig {
     pub k: usize,
-    pub format: Format,
+    pub format: Formats,
     pub dop_rounding: DopRounding,
     /// Rounding of every T.CHECK operation.
     pub tri_rounding: Rounding,
@@ -61,9 +114,25 @@ impl Default for ChipConfig {
     fn default() -> Self {
         ChipConfig {
             k: 24,
-            format: Format::BINARY32,
+            format: Formats { dop: Format::BINARY32, tri: Format::BINARY32 },
             dop_rounding: DopRounding::Outward,
             tri_rounding: Rounding::NearestEven,
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn formats_read_and_print_as_written() {
+        let split: Formats = "e8m15/binary32".parse().unwrap();
+        assert_eq!((split.dop, split.tri), (Format::REDUCED, Format::BINARY32));
+        assert_eq!(split.to_string(), "e8m15/binary32");
+        assert_eq!("reduced".parse::<Formats>().unwrap(), Formats::from(Format::REDUCED));
+        assert_eq!(Formats::from(Format::REDUCED).to_string(), "e8m15");
+        let e = "e8m15/float".parse::<Formats>().unwrap_err();
+        assert!(e.contains("float") && e.contains("e8m15/binary32"), "{e}");
     }
 }

@@ -27,8 +27,7 @@ pub struct Layout {
 
 impl Layout {
     pub fn new(cfg: &ChipConfig) -> Layout {
-        let w = cfg.format.width();
-        Layout { node_bits: 1 + cfg.k as u32 * w + 64, tri_bits: 24 * w + 2 }
+        Layout { node_bits: 1 + cfg.k as u32 * cfg.format.dop.width() + 64, tri_bits: 24 * cfg.format.tri.width() + 2 }
     }
     /// A memory word holds either record: the wider one.
     pub fn word_bits(&self) -> u32 {
@@ -150,7 +149,7 @@ impl ObjectImage {
     pub fn build(tris: &[Tri], cfg: &ChipConfig) -> ObjectImage {
         ObjectImage {
             tree: DopTree::build(tris, cfg),
-            tris: tris.iter().map(|t| TriWord::new(t, cfg.format)).collect(),
+            tris: tris.iter().map(|t| TriWord::new(t, cfg.format.tri)).collect(),
         }
     }
 

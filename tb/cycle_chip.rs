@@ -9,7 +9,7 @@
 //! of every query to target/chip-expect/ for `scripts/run-chip.sh --bless`, which copies
 //! each into vectors/chip/ only if Verilator's trace equals it.
 
-use collision_chip::config::{ChipConfig, DopRounding};
+use collision_chip::config::{ChipConfig, DopRounding, Formats};
 use collision_chip::cycle::chip::{control_writes, image_words, Chip as CycleChip};
 use collision_chip::cycle::drive::{run_query, ChipTrace, Drive, Reader};
 use collision_chip::cycle::{self, Ddr, MemTiming, Memory, Params};
@@ -89,11 +89,13 @@ fn large_queries_cover_what_they_claim() {
     assert_eq!(orders_modes.len(), 4, "both orders in both modes");
 }
 
-/// A configuration to run: k, format, DOP rounding and the microarchitecture's parameters.
-fn config(k: usize, binary32: bool, outward: bool) -> ChipConfig {
+/// A configuration to run: k, the DOP and T.CHECK formats (binary32 or e8m15 each), DOP
+/// rounding.
+fn config(k: usize, dop_binary32: bool, tri_binary32: bool, outward: bool) -> ChipConfig {
+    let f = |b32| if b32 { Format::BINARY32 } else { Format::REDUCED };
     ChipConfig {
         k,
-        format: if binary32 { Format::BINARY32 } else { Format::REDUCED },
+        format: Formats { dop: f(dop_binary32), tri: f(tri_binary32) },
         dop_rounding: if outward { DopRounding::Outward } else { DopRounding::NearestEven },
         tri_rounding: Rounding::NearestEven,
     }
@@ -147,18 +149,18 @@ fn run(chip: &Chip, pose: &Pose, lifo: bool, mode: Mode, p: Params, reader: Read
 proptest! {
     #![proptest_config(ProptestConfig { cases: 256, failure_persistence: None, .. ProptestConfig::default() })]
 
-    /// Any k, format, rounding and microarchitecture: the cycle model's answer is the
+    /// Any k, formats (the DOP's apart from T.CHECK's), rounding and microarchitecture: the cycle model's answer is the
     /// golden model's (all pairs: the same sure hits, uncertain pairs and test counts; FIFO
     /// order even the fetch counts), the same with idle stretches skipped as clock by
     /// clock, and every running clock is booked to exactly one cause.
     #[test]
     fn any_configuration_answers_as_golden(
-        k in prop::sample::select(vec![6usize, 14, 18, 24, 26]), binary32: bool, outward: bool,
+        k in prop::sample::select(vec![6usize, 14, 18, 24, 26]), dop_b32: bool, tri_b32: bool, outward: bool,
         na in 4usize..=120, nb in 4usize..=120, sa: u64, sb: u64,
         rot in prop::array::uniform3(0.0f64..360.0), t in prop::array::uniform3(-0.4f64..0.4),
         lifo: bool, first: bool, p in params(), period in 1u32..=12,
     ) {
-        let chip = Chip::new(&soup(na, sa).triangles_f64(), &soup(nb, sb).triangles_f64(), config(k, binary32, outward)).unwrap();
+        let chip = Chip::new(&soup(na, sa).triangles_f64(), &soup(nb, sb).triangles_f64(), config(k, dop_b32, tri_b32, outward)).unwrap();
         let pose = Pose::new(rot[0], rot[1], rot[2], t[0], t[1], t[2]);
         let mode = if first { Mode::First } else { Mode::All };
         let golden = chip.query(&pose, Mode::All, if lifo { Traversal::Lifo } else { Traversal::Fifo });

@@ -103,11 +103,19 @@ fn figures_data_hold_what_the_papers_compare() {
 fn accuracy_pareto_front() {
     let tris = collision_chip::mesh::resolve("teapot").unwrap().scaled_into_unit_cube().unwrap().triangles_f64();
     let sweep = Sweep { distances: vec![1.2], orientations: 2, seed: 1 };
-    let formats = [Format::BINARY32, "e8m10".parse().unwrap()];
+    let formats = [Format::BINARY32.into(), "e8m10".parse().unwrap()];
     let rows = accuracy::study("teapot", &tris, &[6, 24], &formats, &[DopRounding::Outward], &sweep, Default::default(), || {}).unwrap();
     assert_eq!(rows.len(), 4);
     assert!(rows.iter().all(|r| r.sums.queries == 2 && r.sums.cycles > 0 && r.sums.misses == 0));
-    let t = accuracy::figure(&rows).table;
+    // cells of the units by hand: DOP units 100 (k = 6) and 400 (k = 24), TRI_UNIT 1000;
+    // e8m10 has no RTL, so no cells and no point on the area plot
+    let file = std::env::temp_dir().join(format!("cchip-area-{}.csv", std::process::id()));
+    std::fs::write(&file, "unit,cells\ndop_unit_k6_b32_ru,100\ndop_unit_k24_b32_ru,400\ntri_unit_b32_rne,1000\n").unwrap();
+    let area = accuracy::Area::load(&file).unwrap();
+    std::fs::remove_file(&file).unwrap();
+    let figs = accuracy::figures(&rows, Some(&area));
+    assert_eq!(figs.iter().map(|f| f.stem).collect::<Vec<_>>(), ["accuracy_cycles_uncertain", "accuracy_cycles_area"]);
+    let t = figs[0].table.clone();
     let col = |c: &str| t.columns.iter().position(|x| *x == c).unwrap();
     let num = |r: &[Cell], c: &str| match &r[col(c)] {
         Cell::Num(x) => *x,
@@ -124,6 +132,10 @@ fn accuracy_pareto_front() {
     // tighter DOPs, fewer clocks
     let b32 = |k: u64| t.rows.iter().find(|r| r[col("k")] == Cell::Int(k) && r[col("format")] == Cell::Text("binary32".into())).unwrap();
     assert!(num(b32(24), "cycles_per_query") < num(b32(6), "cycles_per_query"));
+    // area: the units' sum; k = 24 is faster but larger than k = 6, so both are on the front
+    assert_eq!((&b32(6)[col("cells")], &b32(24)[col("cells")]), (&Cell::Int(1100), &Cell::Int(1400)));
+    assert_eq!((&b32(6)[col("pareto_area")], &b32(24)[col("pareto_area")]), (&Cell::Text("true".into()), &Cell::Text("true".into())));
+    assert!(t.rows.iter().filter(|r| r[col("format")] == Cell::Text("e8m10".into())).all(|r| r[col("cells")] == Cell::None && r[col("pareto_area")] == Cell::None));
 
     // on a 64-bit bus a word costs clocks by its width: binary32's words slow down more
     let narrow = collision_chip::cycle::MemTiming { bus_bits: Some(64), ..Default::default() };

@@ -3,7 +3,7 @@
 
 #![allow(clippy::needless_range_loop)] // lanes are indexed by i in several arrays at once
 
-use collision_chip::config::{ChipConfig, DopRounding};
+use collision_chip::config::{ChipConfig, DopRounding, Formats};
 use collision_chip::dop::{DopNormals, DopTree, HostSetup, SUPPORTED_K};
 use collision_chip::format::{Format, Rounding};
 use collision_chip::golden::{doptrf, tcheck};
@@ -75,7 +75,7 @@ proptest! {
     ) {
         let cfg = ChipConfig {
             k,
-            format: if reduced { Format::REDUCED } else { Format::BINARY32 },
+            format: if reduced { Format::REDUCED } else { Format::BINARY32 }.into(),
             dop_rounding: if nearest { DopRounding::NearestEven } else { DopRounding::Outward },
             ..Default::default()
         };
@@ -151,7 +151,7 @@ proptest! {
         let o = Vector3::from(offset);
         let tris: Vec<Tri> = soup(n, seed).iter().map(|t| t.map(|p| Point3::from(p.coords.component_mul(&s) + o))).collect();
         let fmt = if reduced { Format::REDUCED } else { Format::BINARY32 };
-        let cfg = ChipConfig { k, format: fmt, ..Default::default() };
+        let cfg = ChipConfig { k, format: fmt.into(), ..Default::default() };
         let tree = DopTree::build(&tris, &cfg);
         let setup = HostSetup::new(&cfg, &pose, tree.coord_bound());
         let normals = DopNormals::get(k).unwrap();
@@ -225,10 +225,10 @@ proptest! {
         let a: Tri = va.map(|v| Point3::new(v[0], v[1], v[2]));
         let b: Tri = vb.map(|v| Point3::new(v[0], v[1], v[2]));
         let bp = place(&[b], &pose)[0];
-        let cfg = ChipConfig { format: if reduced { Format::REDUCED } else { Format::BINARY32 }, ..Default::default() };
+        let cfg = ChipConfig { format: if reduced { Format::REDUCED } else { Format::BINARY32 }.into(), ..Default::default() };
         let setup = HostSetup::new(&cfg, &pose, 2.0);
-        let (wa, wb) = (TriWord::new(&a, cfg.format), TriWord::new(&b, cfg.format));
-        let got = tcheck::tri_unit(cfg.format, cfg.tri_rounding, &wa, &wb, &setup);
+        let (wa, wb) = (TriWord::new(&a, cfg.format.tri), TriWord::new(&b, cfg.format.tri));
+        let got = tcheck::tri_unit(cfg.format.tri, cfg.tri_rounding, &wa, &wb, &setup);
         let exact = oracle::tri_tri(&a, &bp);
         if !got.uncertain {
             prop_assert_eq!(got.hit, exact);
@@ -237,7 +237,7 @@ proptest! {
             prop_assert!(!got.uncertain, "clear case flagged uncertain");
         }
         // The traversal's TRI_UNIT (stage 1 kept per leaf) says the same, twice.
-        let mut unit = tcheck::TriUnit::new(cfg.format, cfg.tri_rounding, &setup, 1, 1);
+        let mut unit = tcheck::TriUnit::new(cfg.format.tri, cfg.tri_rounding, &setup, 1, 1);
         prop_assert_eq!(unit.test(0, &wa, 0, &wb), got);
         prop_assert_eq!(unit.test(0, &wa, 0, &wb), got);
     }
@@ -343,17 +343,17 @@ proptest! {
     ) {
         let cfg = ChipConfig {
             k,
-            format: if reduced { Format::REDUCED } else { Format::BINARY32 },
+            format: if reduced { Format::REDUCED } else { Format::BINARY32 }.into(),
             dop_rounding: if nearest { DopRounding::NearestEven } else { DopRounding::Outward },
             ..Default::default()
         };
         let (ta, tb) = (DopTree::build(&soup(12, seed), &cfg), DopTree::build(&soup(12, seed + 1), &cfg));
         let setup = HostSetup::new(&cfg, &pose, tb.coord_bound());
-        let mut cache = doptrf::TransformCache::new(cfg.format, cfg.dop_rounding.op(), &setup, tb.len());
+        let mut cache = doptrf::TransformCache::new(cfg.format.dop, cfg.dop_rounding.op(), &setup, tb.len());
         for nb in 0..tb.len() as u32 {
             for na in 0..ta.len() as u32 {
                 let fast = cache.overlap(nb, tb.dop(nb), ta.dop(na));
-                prop_assert_eq!(fast, doptrf::dop_overlap(cfg.format, cfg.dop_rounding.op(), &setup, tb.dop(nb), ta.dop(na)));
+                prop_assert_eq!(fast, doptrf::dop_overlap(cfg.format.dop, cfg.dop_rounding.op(), &setup, tb.dop(nb), ta.dop(na)));
             }
         }
     }
@@ -368,7 +368,7 @@ fn dop_unit_keeps_and_culls() {
     for k in SUPPORTED_K {
         for format in [Format::BINARY32, Format::REDUCED] {
             for dop_rounding in [DopRounding::Outward, DopRounding::NearestEven] {
-                let cfg = ChipConfig { k, format, dop_rounding, ..Default::default() };
+                let cfg = ChipConfig { k, format: format.into(), dop_rounding, ..Default::default() };
                 let (mut overlaps, mut total) = (0u32, 0u32);
                 for seed in 0..8u64 {
                     let (ta, tb) = (DopTree::build(&soup(12, seed), &cfg), DopTree::build(&soup(12, seed + 1), &cfg));
@@ -401,7 +401,7 @@ fn tri_unit_fast_path_equals_reference_on_hard_cases() {
             .map(|m| if m.rot_deg == [0.0; 3] { case.pose } else { case.moved_by(&m).pose });
         let tiny = Format::new(5, 4).unwrap();
         for (pose, format) in moved.iter().flat_map(|p| [(p, Format::BINARY32), (p, Format::REDUCED), (p, tiny)]) {
-            let cfg = ChipConfig { format, ..Default::default() };
+            let cfg = ChipConfig { format: format.into(), ..Default::default() };
             let bound = case.b.iter().flatten().map(|p| p.coords.amax()).fold(0.0, f64::max);
             let setup = HostSetup::new(&cfg, pose, bound);
             let wa: Vec<TriWord> = case.a.iter().map(|t| TriWord::new(t, format)).collect();
@@ -466,7 +466,7 @@ fn outward_dop_test_never_culls_a_contact() {
                 .into_iter()
                 .flat_map(move |f| [(k, f, DopRounding::Outward), (k, f, DopRounding::NearestEven)])
         }) {
-            let cfg = ChipConfig { k, format, dop_rounding: rounding, ..Default::default() };
+            let cfg = ChipConfig { k, format: format.into(), dop_rounding: rounding, ..Default::default() };
             let chip = Chip::new(&case.a, &case.b, cfg).unwrap();
             let setup = chip.setup(&case.pose);
             let (pa, pb) = (parents(&chip.a.tree), parents(&chip.b.tree));
@@ -513,7 +513,7 @@ fn default_query_is_exact_on_vendored_meshes() {
     ];
     for (name, format, max_uncertain, max_overlaps) in bounds {
         let tris = mesh::resolve(name).unwrap().scaled_into_unit_cube().unwrap().triangles_f64();
-        let chip = Chip::new(&tris, &tris, ChipConfig { format, ..Default::default() }).unwrap();
+        let chip = Chip::new(&tris, &tris, ChipConfig { format: format.into(), ..Default::default() }).unwrap();
         let (mut uncertain, mut tri_tests, mut overlaps, mut dop_tests) = (0, 0, 0, 0);
         for sp in &poses {
             let exact = oracle::intersecting_pairs(&tris, &place(&tris, &sp.pose));
@@ -541,4 +541,35 @@ fn tiny_negative_angle_is_not_a_quarter_turn() {
     assert_eq!(zero.len(), 770);
     assert_eq!(tiny, zero);
     assert_ne!(pairs(270.0).len(), 770);
+}
+
+/// A DOP datapath narrower than T.CHECK's (`e8m15/binary32`) is each of its two parents in
+/// its own part: the DOP tests, overlaps and fetches of the e8m15 chip (the same trees and
+/// DOP setup), the triangle verdicts of binary32 (every uncertain pair is uncertain for
+/// binary32's TRI_UNIT on binary32 words and setup, and there are fewer than e8m15 leaves),
+/// the exact pairs, and memory bytes from node words of 1 + 24 * 24 + 64 = 641 bits (81 bytes)
+/// and triangle words of 24 * 32 + 2 = 770 bits (97 bytes).
+#[test]
+fn a_dop_format_apart_keeps_each_datapath_its_own() {
+    let tris = mesh::resolve("bunny").unwrap().scaled_into_unit_cube().unwrap().triangles_f64();
+    let chip = |f: &str| Chip::new(&tris, &tris, ChipConfig { format: f.parse::<Formats>().unwrap(), ..Default::default() }).unwrap();
+    let (split, dop, tri) = (chip("e8m15/binary32"), chip("e8m15"), chip("binary32"));
+    let sweep = collision_chip::scene::Sweep { distances: vec![1.6, 1.0, 0.6], orientations: 2, seed: 3 };
+    let (mut uncertain, mut dop_uncertain) = (0, 0);
+    for sp in collision_chip::scene::sweep_poses(&sweep).unwrap() {
+        let pose = &sp.pose;
+        let r = split.query(pose, Mode::All, Traversal::Lifo);
+        let d = dop.query(pose, Mode::All, Traversal::Lifo);
+        assert_eq!(r.pairs, oracle::intersecting_pairs(&tris, &place(&tris, pose)), "{}", pose.text());
+        let (c, g) = (r.counters, d.counters);
+        assert_eq!((c.dop_tests, c.dop_overlaps, c.node_fetches, c.tri_tests, c.tri_fetches), (g.dop_tests, g.dop_overlaps, g.node_fetches, g.tri_tests, g.tri_fetches));
+        assert_eq!(c.memory_bytes, 81 * c.node_fetches + 97 * c.tri_fetches);
+        let setup = tri.setup(pose);
+        for &(a, b) in &r.uncertain {
+            let v = tcheck::tri_unit(Format::BINARY32, Rounding::NearestEven, &tri.a.tris[a as usize], &tri.b.tris[b as usize], &setup);
+            assert!(v.uncertain, "({a}, {b}) at {}: binary32 decides it, the split chip does not", pose.text());
+        }
+        (uncertain, dop_uncertain) = (uncertain + c.uncertain, dop_uncertain + g.uncertain);
+    }
+    assert!(uncertain * 10 < dop_uncertain, "{uncertain} uncertain pairs against e8m15's {dop_uncertain}");
 }

@@ -37,7 +37,7 @@ fn chip_failures(case: &Case, expected: &[(u32, u32)]) -> Vec<String> {
     let mut out = Vec::new();
     for (format, fname) in FORMATS {
         for k in KS {
-            let cfg = ChipConfig { k, format, ..Default::default() };
+            let cfg = ChipConfig { k, format: format.into(), ..Default::default() };
             let chip = Chip::new(&case.a, &case.b, cfg).unwrap();
             let mut bad = Vec::new();
             for t in Traversal::ALL {
@@ -66,7 +66,7 @@ fn traversal_disagreements(case: &Case) -> Vec<String> {
     let mut out = Vec::new();
     for (format, fname) in FORMATS {
         for k in KS {
-            let chip = Chip::new(&case.a, &case.b, ChipConfig { k, format, ..Default::default() }).unwrap();
+            let chip = Chip::new(&case.a, &case.b, ChipConfig { k, format: format.into(), ..Default::default() }).unwrap();
             let base = chip.query(&case.pose, Mode::All, Traversal::Recursive);
             for t in Traversal::ALL {
                 let r = chip.query(&case.pose, Mode::All, t);
@@ -182,7 +182,7 @@ fn chip_invariances_on_catalogue() {
 /// TRI_UNIT's verdict on every pair of `case` in `format` as a query gets it: the chip's
 /// triangle words and host setup, the golden `TriUnit` the traversals call.
 fn tri_unit_verdicts(case: &Case, format: Format) -> Vec<((u32, u32), Verdict)> {
-    let cfg = ChipConfig { format, ..Default::default() };
+    let cfg = ChipConfig { format: format.into(), ..Default::default() };
     let chip = Chip::new(&case.a, &case.b, cfg).unwrap();
     let setup = chip.setup(&case.pose);
     let mut unit = TriUnit::new(format, cfg.tri_rounding, &setup, chip.a.tris.len(), chip.b.tris.len());

@@ -282,7 +282,7 @@ fn unit_trees<U: Unit>(make: impl Fn(Rounding) -> U, fmt: Format, r: Rounding, n
     let k = U::K;
     let cfg = ChipConfig {
         k,
-        format: fmt,
+        format: fmt.into(),
         dop_rounding: if r == Rounding::TowardPositive { DopRounding::Outward } else { DopRounding::NearestEven },
         ..ChipConfig::default()
     };
@@ -363,7 +363,7 @@ fn unit_random<U: Unit>(make: impl Fn(Rounding) -> U, fmt: Format, n_pairs: usiz
         let cmat: Vec<[f64; 3]> = (0..k).map(|i| [0, 1, 2].map(|l| fmt.from_bits(cm[3 * i + l]))).collect();
         let cvec: Vec<f64> = cv.iter().map(|&b| fmt.from_bits(b)).collect();
         let j: Vec<[u8; 3]> = (0..k).map(|i| [0, 1, 2].map(|l| ((cm[3 * i + l] ^ cv[i] >> l) % k as u64) as u8)).collect();
-        let setup = HostSetup { j: j.clone(), cmat: cmat.clone(), cvec: cvec.clone(), ..HostSetup::new(&ChipConfig { k, format: fmt, ..ChipConfig::default() }, &Pose::default(), 1.0) };
+        let setup = HostSetup { j: j.clone(), cmat: cmat.clone(), cvec: cvec.clone(), ..HostSetup::new(&ChipConfig { k, format: fmt.into(), ..ChipConfig::default() }, &Pose::default(), 1.0) };
         let words = setup_words(fmt, &j, &cmat, &cvec);
         let mut pairs = vec![];
         let mut want = vec![];
@@ -401,6 +401,10 @@ fn unit_random_values() {
         unit_random(e8m15::dop_unit6_top, Format::REDUCED, 300, 2);
         unit_random(b32::dop_unit24_top, Format::BINARY32, 100, 3);
         unit_random(e8m15::dop_unit24_top, Format::REDUCED, 100, 4);
+        // the other k of the area study, one format each
+        unit_random(e8m15::dop_unit14_top, Format::REDUCED, 40, 5);
+        unit_random(b32::dop_unit18_top, Format::BINARY32, 40, 6);
+        unit_random(e8m15::dop_unit26_top, Format::REDUCED, 40, 7);
     });
 }
 

@@ -98,7 +98,7 @@ fn cases(f: Format, r: Rounding, pairs: &[(TriWord, TriWord, collision_chip::dop
 
 /// Triangle pairs of a scene: every (a, b) of the two objects under the pose.
 fn scene_pairs(f: Format, a: &[Tri], b: &[Tri], pose: &Pose) -> Vec<(TriWord, TriWord, collision_chip::dop::HostSetup)> {
-    let chip = Chip::new(a, b, ChipConfig { format: f, ..Default::default() }).unwrap();
+    let chip = Chip::new(a, b, ChipConfig { format: f.into(), ..Default::default() }).unwrap();
     let setup = chip.setup(pose);
     let mut out = vec![];
     for ta in &chip.a.tris {

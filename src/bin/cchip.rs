@@ -2,9 +2,8 @@
 //! collision chip (and, for small meshes, its RTL in rust-hdl).
 
 use clap::{Args, Parser, Subcommand};
-use collision_chip::config::{ChipConfig, DopRounding};
+use collision_chip::config::{ChipConfig, DopRounding, Formats};
 use collision_chip::cycle::Memory;
-use collision_chip::format::Format;
 use collision_chip::mesh::{self, Mesh};
 use collision_chip::pose::Pose;
 use collision_chip::query::{exact_pairs, Accuracy, Chip};
@@ -65,6 +64,10 @@ enum Cmd {
     ExportVerilog {
         #[arg(long, default_value = "rtl")]
         out: PathBuf,
+        /// Instead, the units of the area study: the DOP unit for every k, format and DOP
+        /// rounding, and TRI_UNIT per format (scripts/area-study.sh synthesizes them).
+        #[arg(long)]
+        area: bool,
     },
     /// Write the golden test vectors of every exported RTL unit: vectors/<unit>.hex
     /// (TestFloat style: inputs, then expected outputs, in hex; see scripts/README.md).
@@ -123,9 +126,10 @@ struct AccuracyArgs {
     /// Meshes (files or built-in names), comma separated.
     #[arg(long, value_delimiter = ',', default_value = "bunny,teapot,dragon-11k")]
     meshes: Vec<String>,
-    /// Number formats, comma separated (binary32, reduced, eEmF).
-    #[arg(long, value_delimiter = ',', default_value = "binary32,reduced,e8m10")]
-    formats: Vec<Format>,
+    /// Number formats, comma separated (binary32, reduced, eEmF; DOP/T.CHECK such as
+    /// e8m15/binary32 for a DOP datapath narrower than the triangle test's).
+    #[arg(long, value_delimiter = ',', default_value = "binary32,reduced,e8m10,e8m15/binary32")]
+    formats: Vec<Formats>,
     /// k of the k-DOPs, comma separated (6, 14, 18, 24, 26).
     #[arg(long, value_delimiter = ',', default_value = "24")]
     k: Vec<usize>,
@@ -147,6 +151,11 @@ struct AccuracyArgs {
     /// word per clock whatever its width).
     #[arg(long, value_name = "N")]
     bus_bits: Option<u32>,
+    /// Yosys cells per unit (`unit,cells`, as scripts/area-study.sh writes
+    /// docs/figures/area_cells.csv): adds each configuration's cells (DOP unit + TRI_UNIT) to
+    /// the table and, with --plot, the plot of clocks against cells.
+    #[arg(long, value_name = "FILE")]
+    area: Option<PathBuf>,
     /// Print the rows as JSON instead of the table.
     #[arg(long)]
     json: bool,
@@ -186,9 +195,10 @@ struct ChipArgs {
     /// k of the k-DOP: 6, 14, 18, 24 or 26.
     #[arg(long, default_value_t = 24)]
     k: usize,
-    /// Number format of the datapath: binary32, reduced (e8m15) or eEmF.
+    /// Number format of the datapaths: binary32, reduced (e8m15) or eEmF; DOP/T.CHECK, such as
+    /// e8m15/binary32, gives the DOP words and DOPTRF a format of their own.
     #[arg(long, default_value = "binary32")]
-    format: Format,
+    format: Formats,
     /// DOP rounding: outward (conservative, never a false "separated") or nearest-even.
     #[arg(long, default_value = "outward")]
     dop_rounding: DopRounding,
@@ -201,7 +211,8 @@ fn main() -> ExitCode {
         Some(Cmd::Run { scene, opts }) => run(scene, opts),
         Some(Cmd::Accuracy(a)) => accuracy(a),
         Some(Cmd::Figures { out, quick }) => figures(&out, quick),
-        Some(Cmd::ExportVerilog { out }) => report_written(units::write_verilog(&out)),
+        Some(Cmd::ExportVerilog { out, area: false }) => report_written(units::write_verilog(&out)),
+        Some(Cmd::ExportVerilog { out, area: true }) => report_written(units::write_area_verilog(&out)),
         Some(Cmd::Vectors { out }) => report_written(units::write_vectors(&out)),
         None => run(None, RunOpts::default()),
     };
@@ -316,6 +327,7 @@ fn accuracy(a: AccuracyArgs) -> Result<(), String> {
     let roundings = [DopRounding::Outward, DopRounding::NearestEven];
     let memory = collision_chip::cycle::MemTiming { bus_bits: a.bus_bits, ..Default::default() };
     memory.check()?;
+    let area = a.area.as_deref().map(accuracy::Area::load).transpose()?;
     let bar = progress_bar(a.meshes.len().saturating_mul(a.distances.len()).saturating_mul(a.orientations) as u64, a.json);
     let mut rows = vec![];
     for m in &a.meshes {
@@ -325,14 +337,16 @@ fn accuracy(a: AccuracyArgs) -> Result<(), String> {
     bar.finish_and_clear();
     if let Some(dir) = &a.plot {
         std::fs::create_dir_all(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
-        for p in figures::write_figure(&accuracy::figure(&rows), dir)? {
-            eprintln!("wrote {}", p.display());
+        for f in accuracy::figures(&rows, area.as_ref()) {
+            for p in figures::write_figure(&f, dir)? {
+                eprintln!("wrote {}", p.display());
+            }
         }
     }
     if a.json {
         println!("{}", serde_json::to_string_pretty(&rows).expect("serialisable"));
     } else {
-        print!("{}", accuracy::table(&rows));
+        print!("{}", accuracy::table(&rows, area.as_ref()));
     }
     Ok(())
 }

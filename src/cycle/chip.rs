@@ -137,8 +137,8 @@ impl<'a> Chip<'a> {
         counters: bool,
     ) -> Result<Self, String> {
         p.check()?;
-        let dop_values = doptrf::TransformCache::new(cfg.format, cfg.dop_rounding.op(), setup, b.tree.len());
-        let tri_values = tcheck::TriUnit::new(cfg.format, cfg.tri_rounding, setup, a.tris.len(), b.tris.len());
+        let dop_values = doptrf::TransformCache::new(cfg.format.dop, cfg.dop_rounding.op(), setup, b.tree.len());
+        let tri_values = tcheck::TriUnit::new(cfg.format.tri, cfg.tri_rounding, setup, a.tris.len(), b.tris.len());
         let queue = QueueModel::with_capacity(p.queue_entries as usize);
         Ok(Chip {
             p,

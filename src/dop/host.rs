@@ -48,7 +48,7 @@ impl HostSetup {
         let normals = DopNormals::get(cfg.k).expect("k validated by the caller");
         let rot = pose.rotation();
         let t = pose.translation();
-        let fmt = cfg.format;
+        let fmt = cfg.format.dop;
         let outward = cfg.dop_rounding == DopRounding::Outward;
         let eps = f64::EPSILON; // 2^-52
         let t_inf = t.amax();
@@ -84,6 +84,8 @@ impl HostSetup {
         }
         let rt = rot.transpose();
         let tab = -(rt * t);
+        // T.CHECK's maps and their error bounds, in its format.
+        let fmt = cfg.format.tri;
         let (m_ba, e_ba) = affine(fmt, &rot, &t);
         let (m_ab, e_ab) = affine(fmt, &rt, &tab);
         // The f64 products and sums: |fl(R^T t) - R^T t| <= 4u |R^T| |t| per entry.

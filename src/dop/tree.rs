@@ -58,7 +58,7 @@ impl DopTree {
             DopRounding::Outward => Rounding::TowardPositive,
             DopRounding::NearestEven => Rounding::NearestEven,
         };
-        let dops = b.raw.iter().map(|&x| cfg.format.round(x, rnd)).collect();
+        let dops = b.raw.iter().map(|&x| cfg.format.dop.round(x, rnd)).collect();
         DopTree { k, dops, nodes: b.nodes, depth: b.depth }
     }
 

@@ -13,7 +13,7 @@ pub use crate::cycle::drive::{ChipError, ChipTrace, Drive, Reader};
 use crate::cycle::drive::open_vcd;
 use crate::cycle::{ChipIn, ChipOut, Clocked};
 pub use crate::cycle::MemTiming;
-use crate::config::{ChipConfig, DopRounding};
+use crate::config::{ChipConfig, DopRounding, Formats};
 use crate::dop::{HostSetup, Node};
 use crate::format::{Format, Rounding};
 use crate::memory::ObjectImage;
@@ -23,7 +23,7 @@ use std::fmt::Write as _;
 
 /// The configuration of the RTL chip.
 pub const CHIP_CONFIG: ChipConfig =
-    ChipConfig { k: 6, format: Format::REDUCED, dop_rounding: DopRounding::Outward, tri_rounding: Rounding::NearestEven };
+    ChipConfig { k: 6, format: Formats { dop: Format::REDUCED, tri: Format::REDUCED }, dop_rounding: DopRounding::Outward, tri_rounding: Rounding::NearestEven };
 /// Memory word bits (a triangle word; a node word is the low [`NODE_BITS`]).
 pub const MEM_BITS: usize = 578;
 /// Node word bits: leaf bit, 6 distances, two 32-bit fields.
@@ -61,7 +61,7 @@ fn put(w: &mut Word, at: usize, bits: usize, v: u64) {
 }
 
 fn node_word(obj: &ObjectImage, n: u32) -> Word {
-    let f = CHIP_CONFIG.format;
+    let f = CHIP_CONFIG.format.dop;
     let mut w = vec![0; MEM_BITS.div_ceil(64)];
     for (i, &d) in obj.tree.dop(n).iter().enumerate() {
         put(&mut w, 1 + i * W, W, f.to_bits(d));
@@ -111,13 +111,13 @@ impl QueryImage {
         let mut memory = vec![];
         for o in [a, b] {
             memory.extend((0..o.tree.len() as u32).map(|n| node_word(o, n)));
-            memory.extend(o.tris.iter().map(|t| tri_word(&LeafIn::of(f, t))));
+            memory.extend(o.tris.iter().map(|t| tri_word(&LeafIn::of(f.tri, t))));
         }
         if memory.len() > 1 << 24 {
             return Err(format!("memory image of {} words; the RTL chip addresses 2^24", memory.len()));
         }
-        let mut writes: Vec<(u32, u32)> = dop_unit_setup_words(f, setup).into_iter().map(|(a, d)| (a as u32, d as u32)).collect();
-        writes.extend(tri_unit_setup_words(f, setup).into_iter().map(|(a, d)| (reg::TRI_SETUP + a as u32, d as u32)));
+        let mut writes: Vec<(u32, u32)> = dop_unit_setup_words(f.dop, setup).into_iter().map(|(a, d)| (a as u32, d as u32)).collect();
+        writes.extend(tri_unit_setup_words(f.tri, setup).into_iter().map(|(a, d)| (reg::TRI_SETUP + a as u32, d as u32)));
         writes.extend(crate::cycle::chip::control_writes(a, b, lifo, mode));
         Ok(QueryImage { memory, writes })
     }
@@ -476,7 +476,7 @@ mod tests {
         let p = q.prepare().unwrap();
         let a = &p.chip.a;
         assert_eq!(p.image.memory.len(), 2 * a.tree.len() + 2 * a.tris.len(), "A and B are the same sphere");
-        let f = CHIP_CONFIG.format;
+        let f = CHIP_CONFIG.format.dop;
         let w = &p.image.memory[0];
         let field = |w: &Word, at: usize, bits: usize| (0..bits).fold(0u64, |v, k| v | (w[(at + k) / 64] >> ((at + k) % 64) & 1) << k);
         assert_eq!(W, f.width() as usize);

@@ -21,7 +21,8 @@
 //! the simulator in cycles per second (`benches/rtl_sim.rs`).
 //!
 //! The driver is generic over [`DopUnitSim`], implemented for the stamped DOP units
-//! [`b32::DopUnit6`], [`b32::DopUnit24`], [`e8m15::DopUnit6`] and [`e8m15::DopUnit24`].
+//! [`b32::DopUnit6`], [`b32::DopUnit24`], [`e8m15::DopUnit6`], [`e8m15::DopUnit24`],
+//! [`e8m15::DopUnit14`], [`b32::DopUnit18`] and [`e8m15::DopUnit26`].
 //! The k = 24 units are about 2 MB values built on the stack: construct and run them in a
 //! thread with a big stack (e.g. `std::thread::Builder::new().stack_size(512 << 20)`).
 
@@ -75,6 +76,10 @@ impl_dop_unit_sim!(b32::DopUnit6, 6, b32::WIDTH);
 impl_dop_unit_sim!(b32::DopUnit24, 24, b32::WIDTH);
 impl_dop_unit_sim!(e8m15::DopUnit6, 6, e8m15::WIDTH);
 impl_dop_unit_sim!(e8m15::DopUnit24, 24, e8m15::WIDTH);
+// The other k, each in one format: the same macro (the area study synthesizes every one).
+impl_dop_unit_sim!(e8m15::DopUnit14, 14, e8m15::WIDTH);
+impl_dop_unit_sim!(b32::DopUnit18, 18, b32::WIDTH);
+impl_dop_unit_sim!(e8m15::DopUnit26, 26, e8m15::WIDTH);
 
 /// One preload cycle (an `@ en addr data` line).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

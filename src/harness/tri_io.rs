@@ -149,7 +149,7 @@ fn vector_scene(f: Format, n: usize) -> (Vec<TriWord>, Vec<TriWord>, HostSetup) 
     let mut a = crate::mesh::soup(n, 21).triangles_f64();
     a.push([Point3::new(0.1, 0.2, 0.3), Point3::new(0.3, 0.4, 0.5), Point3::new(0.7, 0.8, 0.9)]);
     let b = crate::mesh::soup(n, 22).triangles_f64();
-    let chip = crate::query::Chip::new(&a, &b, ChipConfig { format: f, ..Default::default() }).expect("two non-empty soups");
+    let chip = crate::query::Chip::new(&a, &b, ChipConfig { format: f.into(), ..Default::default() }).expect("two non-empty soups");
     let setup = chip.setup(&Pose::new(23.0, -61.0, 11.0, 0.05, -0.08, 0.03));
     (chip.a.tris, chip.b.tris, setup)
 }
@@ -208,7 +208,7 @@ pub fn tcheck_vectors(name: &str, f: Format, r: Rounding) -> String {
         }
     }
     for case in crate::hard_cases::load_catalogue().expect("the hard-case catalogue loads") {
-        let chip = crate::query::Chip::new(&case.a, &case.b, crate::config::ChipConfig { format: f, ..Default::default() }).expect("catalogue objects are non-empty");
+        let chip = crate::query::Chip::new(&case.a, &case.b, crate::config::ChipConfig { format: f.into(), ..Default::default() }).expect("catalogue objects are non-empty");
         let setup = chip.setup(&case.pose);
         for ta in &chip.a.tris {
             for tb in &chip.b.tris {

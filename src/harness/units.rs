@@ -19,15 +19,18 @@ pub struct Unit {
     /// nearest and step up), the file stem in rtl/ and vectors/.
     pub name: String,
     pub latency: u32,
-    verilog: Box<dyn Fn() -> String>,
-    vectors: Box<dyn Fn() -> String>,
+    verilog: Text,
+    vectors: Text,
 }
+
+/// A file's text, made on demand (any thread).
+type Text = Box<dyn Fn() -> String + Send + Sync>;
 
 impl Unit {
     /// The unit's Verilog: rust-hdl's, with modules identical up to their names merged
     /// ([`dedup_modules`](super::verilog::dedup_modules)).
     pub fn verilog(&self) -> String {
-        super::verilog::dedup_modules(&(self.verilog)())
+        verilog_of(&self.verilog)
     }
 
     pub fn vectors(&self) -> String {
@@ -35,8 +38,40 @@ impl Unit {
     }
 }
 
+/// rust-hdl's Verilog with modules identical up to their names merged.
+fn verilog_of(v: &Text) -> String {
+    super::verilog::dedup_modules(&v())
+}
+
 /// A unit's Verilog for one rounding.
 type VerilogFn = fn(Rounding) -> String;
+
+/// The file-name tag of a format the RTL is built in (`b32`, `e8m15`).
+fn format_tag(fmt: Format) -> Option<&'static str> {
+    match fmt {
+        Format::BINARY32 => Some("b32"),
+        Format::REDUCED => Some("e8m15"),
+        _ => None,
+    }
+}
+
+/// `dop_unit_k<k>_<format>_<rounding>`: the DOP unit's file stem in rtl/ and the area study.
+pub fn dop_unit_name(k: usize, fmt: Format, r: Rounding) -> String {
+    format!("dop_unit_k{k}_{}_{}", format_tag(fmt).unwrap_or("none"), rounding_tag(r))
+}
+
+/// `tri_unit_<format>_rne`: TRI_UNIT's file stem (T.CHECK rounds to nearest).
+pub fn tri_unit_name(fmt: Format) -> String {
+    format!("tri_unit_{}_{}", format_tag(fmt).unwrap_or("none"), rounding_tag(Rounding::NearestEven))
+}
+
+/// The DOP unit's Verilog, where the RTL builds this k and format.
+fn dop_unit_verilog(k: usize, fmt: Format, r: Rounding) -> Option<String> {
+    match format_tag(fmt)? {
+        "b32" => crate::rtl::b32::verilog_dop_unit(k, r),
+        _ => crate::rtl::e8m15::verilog_dop_unit(k, r),
+    }
+}
 
 fn rounding_tag(r: Rounding) -> &'static str {
     match r {
@@ -58,14 +93,12 @@ pub fn all() -> Vec<Unit> {
         let n2 = name.clone();
         units.push(Unit { name, latency: crate::rtl::DOP_LATENCY as u32, verilog: Box::new(move || v(r)), vectors: Box::new(move || lane_vectors(&n2, fmt, r)) });
     }
-    for (k, tag, fmt, v) in [
-        (6, "e8m15", Format::REDUCED, crate::rtl::e8m15::verilog_dop_unit_k6 as VerilogFn),
-        (24, "b32", Format::BINARY32, crate::rtl::b32::verilog_dop_unit),
-    ] {
+    for (k, fmt) in [(6, Format::REDUCED), (24, Format::BINARY32)] {
         let r = Rounding::TowardPositive;
-        let name = format!("dop_unit_k{k}_{tag}_{}", rounding_tag(r));
+        let name = dop_unit_name(k, fmt, r);
         let n2 = name.clone();
-        units.push(Unit { name, latency: crate::rtl::DOP_LATENCY as u32, verilog: Box::new(move || v(r)), vectors: Box::new(move || dop_unit_vectors(&n2, k, fmt)) });
+        let verilog = move || dop_unit_verilog(k, fmt, r).expect("the RTL builds this k");
+        units.push(Unit { name, latency: crate::rtl::DOP_LATENCY as u32, verilog: Box::new(verilog), vectors: Box::new(move || dop_unit_vectors(&n2, k, fmt)) });
     }
     for r in [Rounding::NearestEven, Rounding::TowardPositive] {
         for (tag, fmt) in [("b32", Format::BINARY32), ("e8m15", Format::REDUCED)] {
@@ -116,7 +149,7 @@ pub fn all() -> Vec<Unit> {
         let name = format!("tcheck_{tag}_{}", rounding_tag(r));
         let n2 = name.clone();
         units.push(Unit { name, latency: crate::rtl::b32::TCheck::LATENCY as u32, verilog: Box::new(move || vt(r)), vectors: Box::new(move || super::tri_io::tcheck_vectors(&n2, fmt, r)) });
-        let name = format!("tri_unit_{tag}_{}", rounding_tag(r));
+        let name = tri_unit_name(fmt);
         let n2 = name.clone();
         units.push(Unit { name, latency: crate::rtl::b32::TriUnit::LATENCY as u32, verilog: Box::new(move || vu(r)), vectors: Box::new(move || super::tri_io::tri_unit_vectors(&n2, fmt, r)) });
     }
@@ -304,7 +337,7 @@ fn dop_unit_vectors(name: &str, k: usize, fmt: Format) -> String {
     use crate::dop::{DopTree, HostSetup};
     use crate::golden::doptrf;
     use crate::pose::Pose;
-    let cfg = ChipConfig { k, format: fmt, ..Default::default() };
+    let cfg = ChipConfig { k, format: fmt.into(), ..Default::default() };
     let r = cfg.dop_rounding.op();
     let n = if k == 6 { 16 } else { 8 };
     let ta = DopTree::build(&crate::mesh::soup(n, 11).triangles_f64(), &cfg);
@@ -337,7 +370,7 @@ fn dop_unit_vectors(name: &str, k: usize, fmt: Format) -> String {
 /// Writes `<dir>/<unit>.v` for every unit and the chip's `<dir>/chip_e8m15_k6.v`; returns
 /// the paths written.
 pub fn write_verilog(dir: &Path) -> std::io::Result<Vec<String>> {
-    let mut written = write_all(dir, "v", Unit::verilog)?;
+    let mut written = write_all(dir, "v", all().into_iter().map(|u| (u.name, u.verilog)).collect(), verilog_of)?;
     let p = dir.join(format!("{}.v", super::chip_io::EXPORT_NAME));
     std::fs::write(&p, super::chip_io::chip_verilog())?;
     written.push(p.display().to_string());
@@ -347,28 +380,50 @@ pub fn write_verilog(dir: &Path) -> std::io::Result<Vec<String>> {
 /// Writes `<dir>/<unit>.hex` for every unit and the chip's query files under `<dir>/chip/`
 /// ([`chip_io::write_vectors`](super::chip_io::write_vectors)); returns the paths written.
 pub fn write_vectors(dir: &Path) -> std::io::Result<Vec<String>> {
-    let mut written = write_all(dir, "hex", Unit::vectors)?;
+    let mut written = write_all(dir, "hex", all().into_iter().map(|u| (u.name, u.vectors)).collect(), |v| v())?;
     written.extend(super::chip_io::write_vectors(&dir.join("chip")).map_err(std::io::Error::other)?);
     Ok(written)
 }
 
-/// Writes one file per unit, in parallel threads with stacks big enough for the units
-/// (T.CHECK and TRI_UNIT are built on the stack, several MB).
-fn write_all(dir: &Path, ext: &str, text: fn(&Unit) -> String) -> std::io::Result<Vec<String>> {
+/// The units whose Yosys cells the area study counts (scripts/area-study.sh,
+/// docs/ACCURACY.md): the DOP unit for every k, format and DOP rounding the RTL builds (those
+/// in rtl/ are the same Verilog; the others are the same macro at another k or rounding), and
+/// TRI_UNIT per format.
+fn area_units() -> Vec<(String, Text)> {
+    let mut units: Vec<(String, Text)> = vec![];
+    for fmt in [Format::BINARY32, Format::REDUCED] {
+        for k in crate::dop::SUPPORTED_K {
+            for r in [Rounding::TowardPositive, Rounding::NearestEven] {
+                units.push((dop_unit_name(k, fmt, r), Box::new(move || dop_unit_verilog(k, fmt, r).expect("the RTL builds every supported k"))));
+            }
+        }
+    }
+    units.push((tri_unit_name(Format::BINARY32), Box::new(|| crate::rtl::b32::verilog_tri_unit(Rounding::NearestEven))));
+    units.push((tri_unit_name(Format::REDUCED), Box::new(|| crate::rtl::e8m15::verilog_tri_unit(Rounding::NearestEven))));
+    units
+}
+
+/// Writes `<dir>/<unit>.v` for every unit of the area study; returns the paths written.
+pub fn write_area_verilog(dir: &Path) -> std::io::Result<Vec<String>> {
+    write_all(dir, "v", area_units(), verilog_of)
+}
+
+/// Writes `<dir>/<name>.<ext>` for each file, in parallel threads with stacks big enough for
+/// the units (T.CHECK and TRI_UNIT are built on the stack, several MB).
+fn write_all(dir: &Path, ext: &str, files: Vec<(String, Text)>, text: fn(&Text) -> String) -> std::io::Result<Vec<String>> {
     std::fs::create_dir_all(dir)?;
-    let names: Vec<String> = all().into_iter().map(|u| u.name).collect();
     let threads = std::thread::available_parallelism().map_or(2, |n| n.get());
     let next = std::sync::atomic::AtomicUsize::new(0);
-    let written = std::sync::Mutex::new((0..names.len()).map(|_| None).collect::<Vec<_>>());
+    let written = std::sync::Mutex::new((0..files.len()).map(|_| None).collect::<Vec<_>>());
     std::thread::scope(|s| {
         for _ in 0..threads {
             std::thread::Builder::new()
                 .stack_size(1 << 30)
                 .spawn_scoped(s, || loop {
                     let i = next.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
-                    let Some(u) = all().into_iter().nth(i) else { break };
-                    let p = dir.join(format!("{}.{ext}", u.name));
-                    let res = std::fs::write(&p, text(&u)).map(|_| p.display().to_string());
+                    let Some((name, make)) = files.get(i) else { break };
+                    let p = dir.join(format!("{name}.{ext}"));
+                    let res = std::fs::write(&p, text(make)).map(|_| p.display().to_string());
                     written.lock().unwrap()[i] = Some(res);
                 })
                 .expect("spawn a writer thread");

@@ -2,10 +2,9 @@
 //! formats, k and DOP roundings, each query compared with the exact oracle and run on the
 //! cycle model (the RTL's microarchitecture) for its clocks.
 
-use crate::config::{ChipConfig, DopRounding};
+use crate::config::{ChipConfig, DopRounding, Formats};
 use crate::cycle::{self, drive::Reader, Params};
 use crate::dop::tree::Tri;
-use crate::format::Format;
 use crate::measure::parallel_map;
 use crate::memory::TriWord;
 use crate::oracle;
@@ -21,7 +20,7 @@ use std::fmt::Write;
 pub struct Row {
     pub mesh: String,
     pub k: usize,
-    pub format: Format,
+    pub format: Formats,
     pub dop_rounding: DopRounding,
     #[serde(flatten)]
     pub sums: Sums,
@@ -117,7 +116,7 @@ pub fn study(
     mesh: &str,
     tris: &[Tri],
     ks: &[usize],
-    formats: &[Format],
+    formats: &[Formats],
     roundings: &[DopRounding],
     sweep: &Sweep,
     memory: cycle::MemTiming,
@@ -180,15 +179,17 @@ pub fn study(
     Ok(rows)
 }
 
-/// The Markdown table of docs/ACCURACY.md.
-pub fn table(rows: &[Row]) -> String {
+/// The Markdown table of docs/ACCURACY.md; with `area`, the cells of each configuration's
+/// DOP unit and TRI_UNIT ("-" where the RTL is not built in its format).
+pub fn table(rows: &[Row], area: Option<&Area>) -> String {
     let mut out = String::from(
-        "| mesh | k | format | DOP rounding | queries | exact pairs / query | DOP tests / query | triangle tests / query | DOP false positives | uncertain | uncertain: degenerate / on plane / bound | misses | extra pairs | memory KiB / query | cycles / query |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
+        "| mesh | k | format | DOP rounding | queries | exact pairs / query | DOP tests / query | triangle tests / query | DOP false positives | uncertain | uncertain: degenerate / on plane / bound | misses | extra pairs | memory KiB / query | cycles / query |",
     );
+    out += if area.is_some() { " cells: DOP unit + TRI_UNIT |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n" } else { "\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n" };
     for row in rows {
         let r = &row.sums;
         let q = r.queries.max(1) as f64;
-        let _ = writeln!(
+        let _ = write!(
             out,
             "| {} | {} | {} | {} | {} | {:.1} | {:.0} | {:.1} | {:.1}% | {:.2}% | {} / {} / {} | {} | {} | {:.1} | {:.0} |",
             row.mesh,
@@ -209,62 +210,125 @@ pub fn table(rows: &[Row]) -> String {
             r.memory_bytes as f64 / q / 1024.0,
             r.cycles as f64 / q
         );
+        if let Some(a) = area {
+            let _ = write!(out, " {} |", a.of(row.k, row.format, row.dop_rounding).map_or("-".into(), |c| c.to_string()));
+        }
+        out.push('\n');
     }
     out
 }
 
-/// The configurations over all meshes: cycles per query against the share of triangle tests
-/// left to the host, one point per (k, format, rounding), the Pareto front of those with no
-/// miss marked (no configuration both faster and with a smaller uncertain share).
-pub fn figure(rows: &[Row]) -> Figure {
-    let mut cfgs: Vec<(usize, Format, DopRounding, Sums)> = vec![];
+/// Yosys cells per unit: the file scripts/area-study.sh writes (`unit,cells`, one row per
+/// unit, names as in rtl/).
+pub struct Area {
+    cells: std::collections::HashMap<String, u64>,
+}
+
+#[derive(serde::Deserialize)]
+struct AreaRow {
+    unit: String,
+    cells: u64,
+}
+
+impl Area {
+    pub fn load(path: &std::path::Path) -> Result<Area, String> {
+        let what = "write it with scripts/area-study.sh";
+        let mut r = csv::Reader::from_path(path).map_err(|e| format!("{}: {e} ({what})", path.display()))?;
+        let mut cells = std::collections::HashMap::new();
+        for (i, row) in r.deserialize::<AreaRow>().enumerate() {
+            let row = row.map_err(|e| format!("{}:{}: {e}: each row is `unit,cells` ({what})", path.display(), i + 2))?;
+            cells.insert(row.unit, row.cells);
+        }
+        Ok(Area { cells })
+    }
+
+    /// Cells of the units a configuration changes: its DOP unit (k lanes, the DOP format and
+    /// rounding) and TRI_UNIT (T.CHECK's format). D_CNTR, the queue and the memory port are
+    /// not counted. `None` where the RTL is not built in a format (e8m10).
+    pub fn of(&self, k: usize, f: Formats, r: DopRounding) -> Option<u64> {
+        let dop = self.cells.get(&crate::harness::units::dop_unit_name(k, f.dop, r.op()))?;
+        Some(dop + self.cells.get(&crate::harness::units::tri_unit_name(f.tri))?)
+    }
+}
+
+/// Which points are on the Pareto front: present (`Some`), and no other present point is at
+/// least as small in both coordinates and different.
+fn pareto(points: &[Option<(f64, f64)>]) -> Vec<bool> {
+    let beaten = |(x, y): (f64, f64)| points.iter().flatten().any(|&(qx, qy)| qx <= x && qy <= y && (qx, qy) != (x, y));
+    points.iter().map(|p| p.is_some_and(|p| !beaten(p))).collect()
+}
+
+/// One panel of clocks per query against `x`, a point per configuration that has one, grouped
+/// by format and rounding, with the Pareto front (`on`) as a dashed line.
+fn front_panel(title: &str, x_label: &'static str, log_x: bool, cfgs: &[Config], x: &[Option<f64>], on: &[bool]) -> Panel {
+    let mut groups: Vec<(Formats, DopRounding)> = vec![];
+    for c in cfgs {
+        if !groups.contains(&(c.1, c.2)) {
+            groups.push((c.1, c.2));
+        }
+    }
+    let point = |i: usize| x[i].map(|x| (x, cfgs[i].3.cycles as f64 / cfgs[i].3.queries.max(1) as f64));
+    let mut series = vec![];
+    for (gi, &(f, r)) in groups.iter().enumerate() {
+        let mine: Vec<usize> = (0..cfgs.len()).filter(|&i| (cfgs[i].1, cfgs[i].2) == (f, r) && x[i].is_some()).collect();
+        if !mine.is_empty() {
+            series.push(Series {
+                label: format!("{f}, {r} DOP rounding"),
+                color: gi,
+                style: Style::Points,
+                points: mine.iter().filter_map(|&i| point(i)).collect(),
+                labels: mine.iter().map(|&i| format!("  k={}", cfgs[i].0)).collect(),
+            });
+        }
+    }
+    let mut front: Vec<(f64, f64)> = (0..cfgs.len()).filter(|&i| on[i]).filter_map(point).collect();
+    front.sort_by(|a, b| a.0.total_cmp(&b.0));
+    series.push(Series { label: "Pareto front (no misses)".into(), color: PALETTE.len() - 1, style: Style::Dashed, points: front, labels: vec![] });
+    Panel { title: title.into(), x_label, y_label: "clocks per query", log_x, log_y: false, series }
+}
+
+/// (k, formats, DOP rounding, sums over the meshes)
+type Config = (usize, Formats, DopRounding, Sums);
+
+/// The configurations over all meshes, one point each: cycles per query against the share of
+/// triangle tests left to the host, and, with `area`, against the cells of the units the
+/// configuration changes (DOP unit + TRI_UNIT). Each plot marks its Pareto front among the
+/// configurations with no miss (no other is both faster and smaller in its x). Both figures
+/// carry the same table.
+pub fn figures(rows: &[Row], area: Option<&Area>) -> Vec<Figure> {
+    let mut cfgs: Vec<Config> = vec![];
     for r in rows {
         match cfgs.iter_mut().find(|c| (c.0, c.1, c.2) == (r.k, r.format, r.dop_rounding)) {
             Some(c) => c.3 += r.sums,
             None => cfgs.push((r.k, r.format, r.dop_rounding, r.sums)),
         }
     }
-    let point = |s: &Sums| (100.0 * s.uncertain_rate(), s.cycles as f64 / s.queries.max(1) as f64);
-    let dominated = |a: &Sums| {
-        let (x, y) = point(a);
-        cfgs.iter().any(|c| c.3.misses == 0 && point(&c.3).0 <= x && point(&c.3).1 <= y && point(&c.3) != (x, y))
+    let cycles = |s: &Sums| s.cycles as f64 / s.queries.max(1) as f64;
+    let uncertain: Vec<Option<f64>> = cfgs.iter().map(|c| Some(100.0 * c.3.uncertain_rate())).collect();
+    let cells: Vec<Option<u64>> = cfgs.iter().map(|c| area.and_then(|a| a.of(c.0, c.1, c.2))).collect();
+    let eligible = |x: &[Option<f64>]| -> Vec<Option<(f64, f64)>> {
+        cfgs.iter().zip(x).map(|(c, x)| x.filter(|_| c.3.misses == 0).map(|x| (x, cycles(&c.3)))).collect()
     };
-    let mut front: Vec<(f64, f64)> = cfgs.iter().filter(|c| c.3.misses == 0 && !dominated(&c.3)).map(|c| point(&c.3)).collect();
-    front.sort_by(|a, b| a.0.total_cmp(&b.0));
-    let mut series = vec![];
-    let mut groups: Vec<(Format, DopRounding)> = vec![];
-    for c in &cfgs {
-        if !groups.contains(&(c.1, c.2)) {
-            groups.push((c.1, c.2));
-        }
-    }
-    for (gi, &(f, r)) in groups.iter().enumerate() {
-        let mine: Vec<_> = cfgs.iter().filter(|c| (c.1, c.2) == (f, r)).collect();
-        series.push(Series {
-            label: format!("{f}, {r} DOP rounding"),
-            color: gi,
-            style: Style::Points,
-            points: mine.iter().map(|c| point(&c.3)).collect(),
-            labels: mine.iter().map(|c| format!("  k={}", c.0)).collect(),
-        });
-    }
-    series.push(Series { label: "Pareto front (no misses)".into(), color: PALETTE.len() - 1, style: Style::Dashed, points: front.clone(), labels: vec![] });
+    let on_uncertain = pareto(&eligible(&uncertain));
+    let cells_x: Vec<Option<f64>> = cells.iter().map(|c| c.map(|c| c as f64 / 1e6)).collect();
+    let on_area = pareto(&eligible(&cells_x));
     let mut table = Table {
-        columns: vec!["k", "format", "dop_rounding", "queries", "uncertain_share", "cycles_per_query", "memory_kib_per_query", "misses", "pareto"],
+        columns: vec!["k", "format", "dop_rounding", "queries", "uncertain_share", "cycles_per_query", "memory_kib_per_query", "misses", "pareto", "cells", "pareto_area"],
         rows: vec![],
     };
-    for c in &cfgs {
-        let (x, y) = point(&c.3);
+    for (i, c) in cfgs.iter().enumerate() {
         table.rows.push(vec![
             Cell::Int(c.0 as u64),
             Cell::Text(c.1.to_string()),
             Cell::Text(c.2.to_string()),
             Cell::Int(c.3.queries),
-            Cell::Num(x / 100.0),
-            Cell::Num(y),
+            Cell::Num(c.3.uncertain_rate()),
+            Cell::Num(cycles(&c.3)),
             Cell::Num(c.3.memory_bytes as f64 / c.3.queries.max(1) as f64 / 1024.0),
             Cell::Int(c.3.misses),
-            Cell::Text(front.contains(&(x, y)).to_string()),
+            Cell::Text(on_uncertain[i].to_string()),
+            cells[i].map_or(Cell::None, Cell::Int),
+            if cells[i].is_some() { Cell::Text(on_area[i].to_string()) } else { Cell::None },
         ]);
     }
     let meshes: Vec<&str> = rows.iter().map(|r| r.mesh.as_str()).fold(vec![], |mut v, m| {
@@ -273,17 +337,20 @@ pub fn figure(rows: &[Row]) -> Figure {
         }
         v
     });
-    Figure {
+    let what = "one point per configuration (cycle model, LIFO, all pairs)";
+    let mut out = vec![Figure {
         stem: "accuracy_cycles_uncertain",
         title: format!("What accuracy costs: the chip's clocks against the host's share ({})", meshes.join(", ")),
-        panels: vec![Panel {
-            title: "one point per configuration (cycle model, LIFO, all pairs)".into(),
-            x_label: "triangle tests left to the host (uncertain), %",
-            y_label: "clocks per query",
-            log_x: true,
-            log_y: false,
-            series,
-        }],
-        table,
+        panels: vec![front_panel(what, "triangle tests left to the host (uncertain), %", true, &cfgs, &uncertain, &on_uncertain)],
+        table: table.clone(),
+    }];
+    if area.is_some() {
+        out.push(Figure {
+            stem: "accuracy_cycles_area",
+            title: format!("What accuracy costs in area: the chip's clocks against the cells of its DOP unit and TRI_UNIT ({})", meshes.join(", ")),
+            panels: vec![front_panel(&format!("{what}; Yosys cells, generic gates"), "Yosys cells, DOP unit + TRI_UNIT, millions", false, &cfgs, &cells_x, &on_area)],
+            table,
+        });
     }
+    out
 }

@@ -669,13 +669,15 @@ fn figures(points: &[Point]) -> Vec<Figure> {
     figs
 }
 
-pub const PALETTE: [RGBColor; 7] = [
+pub const PALETTE: [RGBColor; 9] = [
     RGBColor(31, 119, 180),
     RGBColor(214, 39, 40),
     RGBColor(44, 160, 44),
     RGBColor(148, 103, 189),
     RGBColor(255, 127, 14),
     RGBColor(23, 190, 207),
+    RGBColor(140, 86, 75),
+    RGBColor(227, 119, 194),
     RGBColor(70, 70, 70),
 ];
 

@@ -1,7 +1,7 @@
 //! The DOP unit (k DOPTRF lanes behind D.KLMSEL, NOR of the k flags), stamped out per
-//! format by `dop_unit!` for k = 6 and k = 24.
+//! format by `dop_unit!` for the k of the k-DOPs (6, 14, 18, 24, 26).
 
-/// Stamps out `DopUnit6` and `DopUnit24` (k = 6, 24) in the calling module (which must
+/// Stamps out `DopUnit6`, `DopUnit14`, `DopUnit18`, `DopUnit24`, `DopUnit26` in the calling module (which must
 /// also hold that format's `Doptrf` and `KlmSel<K>`) with their constructors and Verilog
 /// export.
 /// Argument: `W` word width.
@@ -10,18 +10,31 @@ macro_rules! dop_unit {
         $crate::rtl::dop_unit::dop_unit!(@unit $W, DopUnit6, dop_unit6_top, 6;
             lanes(0 1 2 3 4 5);
             opp(3 4 5 0 1 2));
+        $crate::rtl::dop_unit::dop_unit!(@unit $W, DopUnit14, dop_unit14_top, 14;
+            lanes(0 1 2 3 4 5 6 7 8 9 10 11 12 13);
+            opp(7 8 9 10 11 12 13 0 1 2 3 4 5 6));
+        $crate::rtl::dop_unit::dop_unit!(@unit $W, DopUnit18, dop_unit18_top, 18;
+            lanes(0 1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16 17);
+            opp(9 10 11 12 13 14 15 16 17 0 1 2 3 4 5 6 7 8));
         $crate::rtl::dop_unit::dop_unit!(@unit $W, DopUnit24, dop_unit24_top, 24;
             lanes(0 1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16 17 18 19 20 21 22 23);
             opp(12 13 14 15 16 17 18 19 20 21 22 23 0 1 2 3 4 5 6 7 8 9 10 11));
+        $crate::rtl::dop_unit::dop_unit!(@unit $W, DopUnit26, dop_unit26_top, 26;
+            lanes(0 1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16 17 18 19 20 21 22 23 24 25);
+            opp(13 14 15 16 17 18 19 20 21 22 23 24 25 0 1 2 3 4 5 6 7 8 9 10 11 12));
 
-        /// Verilog of the k = 24 DOP unit (top module `top`).
-        pub fn verilog_dop_unit(rounding: Rounding) -> String {
-            generate_verilog(&dop_unit24_top(rounding))
-        }
-
-        /// Verilog of the k = 6 DOP unit (top module `top`).
-        pub fn verilog_dop_unit_k6(rounding: Rounding) -> String {
-            generate_verilog(&dop_unit6_top(rounding))
+        /// Verilog of the DOP unit for k = 6, 14, 18, 24 or 26 (top module `top`); `None` for
+        /// another k. k = 6 and 24 are exported to rtl/ with vectors; the others are
+        /// synthesized for the area study (scripts/area-study.sh).
+        pub fn verilog_dop_unit(k: usize, rounding: Rounding) -> Option<String> {
+            Some(match k {
+                6 => generate_verilog(&dop_unit6_top(rounding)),
+                14 => generate_verilog(&dop_unit14_top(rounding)),
+                18 => generate_verilog(&dop_unit18_top(rounding)),
+                24 => generate_verilog(&dop_unit24_top(rounding)),
+                26 => generate_verilog(&dop_unit26_top(rounding)),
+                _ => return None,
+            })
         }
     };
     // One unit for one k; `lanes` and `opp` list i and (i + k/2) mod k as literals
@@ -29,7 +42,7 @@ macro_rules! dop_unit {
     (@unit $W:tt, $name:ident, $top:ident, $K:tt; lanes($($i:tt)*); opp($($o:tt)*)) => {
         /// The DOP unit (DATE'05 Eq. 10): does B's node DOP `d` (transformed on the fly)
         /// overlap A's node DOP `e`? One node pair per clock, latency 15; bit for bit
-        /// [`dop_overlap`](crate::golden::doptrf::dop_overlap) (k = 6: `DopUnit6`, k = 24: `DopUnit24`).
+        /// [`dop_overlap`](crate::golden::doptrf::dop_overlap) (`DopUnit6` for k = 6, and so on).
         ///
         /// Ports (arrays are flat, numbered ports in Verilog: `d$0`, `d$1`, ...):
         ///

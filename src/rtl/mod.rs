@@ -7,7 +7,7 @@
 //!
 //! | module | format | units |
 //! |---|---|---|
-//! | [`b32`] | `binary32` (e8m23, [`Format::BINARY32`](crate::format::Format::BINARY32)) | [`b32::FpMul`] (latency 4), [`b32::FpAdd`] (latency 3), [`b32::Doptrf`] (latency 15), [`b32::KlmSel`], [`b32::DopUnit6`], [`b32::DopUnit24`] (k = 6, 24; latency 15) |
+//! | [`b32`] | `binary32` (e8m23, [`Format::BINARY32`](crate::format::Format::BINARY32)) | [`b32::FpMul`] (latency 4), [`b32::FpAdd`] (latency 3), [`b32::Doptrf`] (latency 15), [`b32::KlmSel`], [`b32::DopUnit6`] ... [`b32::DopUnit26`] (k = 6, 14, 18, 24, 26; latency 15) |
 //! | [`e8m15`] | e8m15 ([`Format::REDUCED`](crate::format::Format::REDUCED)) | the same |
 //!
 //! and, for T.CHECK's bound arithmetic (docs/ACCURACY.md), [`b32::BoundAdd`] (latency 4),

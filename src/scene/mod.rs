@@ -10,7 +10,8 @@
 //!
 //! [chip]                      # all optional
 //! k = 24
-//! format = "binary32"         # or "reduced" (e8m15) or "eEmF"
+//! format = "binary32"         # or "reduced" (e8m15) or "eEmF"; "e8m15/binary32": the DOP
+//!                             # datapath's format / T.CHECK's (narrower node words)
 //! dop_rounding = "outward"    # or "nearest-even"
 //!
 //! [query]                     # all optional
@@ -69,8 +70,7 @@
 pub mod graph;
 pub mod run;
 
-use crate::config::{ChipConfig, DopRounding};
-use crate::format::Format;
+use crate::config::{ChipConfig, DopRounding, Formats};
 use crate::pose::Pose;
 use crate::traversal::{Mode, Traversal};
 use rand::{Rng, SeedableRng};
@@ -391,7 +391,7 @@ impl Scene {
             cfg.k = k;
         }
         if let Some(fmt) = &f.chip.format {
-            cfg.format = fmt.parse::<Format>().map_err(err)?;
+            cfg.format = fmt.parse::<Formats>().map_err(err)?;
         }
         if let Some(r) = f.chip.dop_rounding {
             cfg.dop_rounding = r;

@@ -204,11 +204,11 @@ pub fn run(
         pairs: vec![],
         uncertain: vec![],
         live: 0,
-        dop_unit: match doptrf::TransformCache::new(cfg.format, cfg.dop_rounding.op(), setup, b.tree.len()) {
+        dop_unit: match doptrf::TransformCache::new(cfg.format.dop, cfg.dop_rounding.op(), setup, b.tree.len()) {
             c if traversal == Traversal::Recursive => c.without_memo(),
             c => c,
         },
-        tri_unit: tcheck::TriUnit::new(cfg.format, cfg.tri_rounding, setup, a.tris.len(), b.tris.len()),
+        tri_unit: tcheck::TriUnit::new(cfg.format.tri, cfg.tri_rounding, setup, a.tris.len(), b.tris.len()),
         counters: Counters::default(),
         stop: false,
     };
