@@ -76,9 +76,10 @@ enum Cmd {
         out: PathBuf,
     },
     /// What accuracy costs: each mesh tumbling against a copy of itself (both scaled into
-    /// [-1,1]^3) at several distances, with each k, number format and DOP rounding,
-    /// compared with the exact oracle and run on the cycle model for its clocks (poses on
-    /// every core). Prints the tables of docs/ACCURACY.md.
+    /// [-1,1]^3) at several distances, with each k, number format (the DOP datapath's apart
+    /// from T.CHECK's too) and DOP rounding, compared with the exact oracle and run on the
+    /// cycle model for its clocks (poses on every core); with --area, the Yosys cells of
+    /// each configuration's units. Prints the tables of docs/ACCURACY.md; --plot draws them.
     Accuracy(AccuracyArgs),
     /// The papers' figures regenerated (docs/FIGURES.md): DATE'05 Figs. 6-8 (cycles and
     /// queue memory, LIFO vs FIFO; the chip's speed-up at 800 MHz) and WSCG'03 Figs. 9-13
@@ -133,9 +134,9 @@ struct AccuracyArgs {
     /// k of the k-DOPs, comma separated (6, 14, 18, 24, 26).
     #[arg(long, value_delimiter = ',', default_value = "24")]
     k: Vec<usize>,
-    /// Also write the plot of clocks against the uncertain share (one point per
-    /// configuration, the Pareto front marked) into this directory, as SVG and PNG with
-    /// its data (CSV, JSON).
+    /// Also write the plot of clocks against the uncertain share (and, with --area, against
+    /// the cells; one point per configuration, the Pareto front marked) into this
+    /// directory, as SVG and PNG with their data (CSV, JSON).
     #[arg(long, value_name = "DIR")]
     plot: Option<PathBuf>,
     /// Centre distances along x, from apart to deeply penetrating.

@@ -1,0 +1,44 @@
+#!/usr/bin/env bash
+# FPGA numbers for exported units: Yosys `synth_ice40` (flat) and nextpnr-ice40 place and
+# route on an iCE40 HX8K (ct256 package: 206 I/O, 7,680 logic cells, no DSP blocks, so the
+# multipliers are logic). Prints one line per unit: logic cells, RAM blocks, I/O and the Fmax
+# nextpnr's timing analysis reports, or why the unit does not fit.
+#
+# Usage: scripts/fpga.sh rtl/<unit>.v ...    (needs `apt-get install -y yosys nextpnr-ice40`)
+# Logs and reports in target/fpga/<unit>/. Exits non-zero if a tool fails on a unit that fits.
+set -euo pipefail
+SCRIPTS=$(cd "$(dirname "$0")" && pwd)
+ROOT=$(cd "$SCRIPTS/.." && pwd)
+PY=${PYTHON:-python3}
+for t in yosys nextpnr-ice40; do
+  command -v $t >/dev/null || { echo "fpga.sh: $t not found (apt-get install -y yosys nextpnr-ice40)" >&2; exit 127; }
+done
+[ $# -gt 0 ] || { sed -n '2,/^$/p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 2; }
+status=0
+for f in "$@"; do
+  unit=$(basename "$f" .v)
+  out=$ROOT/target/fpga/$unit
+  mkdir -p "$out"
+  "$PY" "$SCRIPTS/verilog/prepare.py" --rename-only "$f" --out "$out" --name "$unit"
+  if ! yosys -q -l "$out/yosys.log" -p "read_verilog $out/$unit.v; synth_ice40 -top $unit -json $out/$unit.json" >/dev/null; then
+    echo "$unit: yosys failed (log $out/yosys.log)"; status=1; continue
+  fi
+  if nextpnr-ice40 --hx8k --package ct256 --json "$out/$unit.json" --report "$out/report.json" --seed 1 >"$out/nextpnr.log" 2>&1; then
+    "$PY" - "$unit" "$out/report.json" <<'PYEOF'
+import json, sys
+unit, path = sys.argv[1], sys.argv[2]
+r = json.load(open(path))
+u = r["utilization"]
+use = lambda k: f"{u[k]['used']}/{u[k]['available']}" if k in u else "0"
+fmax = min((c["achieved"] for c in r.get("fmax", {}).values()), default=None)
+f = f"{fmax:.1f} MHz" if fmax else "- (no register-to-register path)"
+print(f"{unit}: logic cells {use('ICESTORM_LC')}, RAM {use('ICESTORM_RAM')}, I/O {use('SB_IO')}, Fmax {f}")
+PYEOF
+  elif grep -qE "ERROR: Unable to (place|find a placement)" "$out/nextpnr.log"; then
+    need() { sed -n "s/^Info:[[:space:]]*$1:[[:space:]]*\([0-9]*\)\/.*/\1/p" "$out/nextpnr.log" | head -n 1; }
+    echo "$unit: does not fit the HX8K: needs $(need ICESTORM_LC) logic cells of 7680 and $(need SB_IO) I/O of the package's 206"
+  else
+    echo "$unit: nextpnr failed (log $out/nextpnr.log)"; status=1
+  fi
+done
+exit $status
