@@ -55,14 +55,15 @@ fn format_tag(fmt: Format) -> Option<&'static str> {
     }
 }
 
-/// `dop_unit_k<k>_<format>_<rounding>`: the DOP unit's file stem in rtl/ and the area study.
-pub fn dop_unit_name(k: usize, fmt: Format, r: Rounding) -> String {
-    format!("dop_unit_k{k}_{}_{}", format_tag(fmt).unwrap_or("none"), rounding_tag(r))
+/// `dop_unit_k<k>_<format>_<rounding>`: the DOP unit's file stem in rtl/ and the area study
+/// (`None` for a format the RTL is not built in).
+pub fn dop_unit_name(k: usize, fmt: Format, r: Rounding) -> Option<String> {
+    Some(format!("dop_unit_k{k}_{}_{}", format_tag(fmt)?, rounding_tag(r)))
 }
 
 /// `tri_unit_<format>_rne`: TRI_UNIT's file stem (T.CHECK rounds to nearest).
-pub fn tri_unit_name(fmt: Format) -> String {
-    format!("tri_unit_{}_{}", format_tag(fmt).unwrap_or("none"), rounding_tag(Rounding::NearestEven))
+pub fn tri_unit_name(fmt: Format) -> Option<String> {
+    Some(format!("tri_unit_{}_{}", format_tag(fmt)?, rounding_tag(Rounding::NearestEven)))
 }
 
 /// The DOP unit's Verilog, where the RTL builds this k and format.
@@ -95,7 +96,7 @@ pub fn all() -> Vec<Unit> {
     }
     for (k, fmt) in [(6, Format::REDUCED), (24, Format::BINARY32)] {
         let r = Rounding::TowardPositive;
-        let name = dop_unit_name(k, fmt, r);
+        let name = dop_unit_name(k, fmt, r).expect("an RTL format");
         let n2 = name.clone();
         let verilog = move || dop_unit_verilog(k, fmt, r).expect("the RTL builds this k");
         units.push(Unit { name, latency: crate::rtl::DOP_LATENCY as u32, verilog: Box::new(verilog), vectors: Box::new(move || dop_unit_vectors(&n2, k, fmt)) });
@@ -149,7 +150,7 @@ pub fn all() -> Vec<Unit> {
         let name = format!("tcheck_{tag}_{}", rounding_tag(r));
         let n2 = name.clone();
         units.push(Unit { name, latency: crate::rtl::b32::TCheck::LATENCY as u32, verilog: Box::new(move || vt(r)), vectors: Box::new(move || super::tri_io::tcheck_vectors(&n2, fmt, r)) });
-        let name = tri_unit_name(fmt);
+        let name = tri_unit_name(fmt).expect("an RTL format");
         let n2 = name.clone();
         units.push(Unit { name, latency: crate::rtl::b32::TriUnit::LATENCY as u32, verilog: Box::new(move || vu(r)), vectors: Box::new(move || super::tri_io::tri_unit_vectors(&n2, fmt, r)) });
     }
@@ -394,12 +395,12 @@ fn area_units() -> Vec<(String, Text)> {
     for fmt in [Format::BINARY32, Format::REDUCED] {
         for k in crate::dop::SUPPORTED_K {
             for r in [Rounding::TowardPositive, Rounding::NearestEven] {
-                units.push((dop_unit_name(k, fmt, r), Box::new(move || dop_unit_verilog(k, fmt, r).expect("the RTL builds every supported k"))));
+                units.push((dop_unit_name(k, fmt, r).expect("an RTL format"), Box::new(move || dop_unit_verilog(k, fmt, r).expect("the RTL builds every supported k"))));
             }
         }
     }
-    units.push((tri_unit_name(Format::BINARY32), Box::new(|| crate::rtl::b32::verilog_tri_unit(Rounding::NearestEven))));
-    units.push((tri_unit_name(Format::REDUCED), Box::new(|| crate::rtl::e8m15::verilog_tri_unit(Rounding::NearestEven))));
+    units.push((tri_unit_name(Format::BINARY32).expect("an RTL format"), Box::new(|| crate::rtl::b32::verilog_tri_unit(Rounding::NearestEven))));
+    units.push((tri_unit_name(Format::REDUCED).expect("an RTL format"), Box::new(|| crate::rtl::e8m15::verilog_tri_unit(Rounding::NearestEven))));
     units
 }
 

@@ -246,8 +246,8 @@ impl Area {
     /// rounding) and TRI_UNIT (T.CHECK's format). D_CNTR, the queue and the memory port are
     /// not counted. `None` where the RTL is not built in a format (e8m10).
     pub fn of(&self, k: usize, f: Formats, r: DopRounding) -> Option<u64> {
-        let dop = self.cells.get(&crate::harness::units::dop_unit_name(k, f.dop, r.op()))?;
-        Some(dop + self.cells.get(&crate::harness::units::tri_unit_name(f.tri))?)
+        use crate::harness::units::{dop_unit_name, tri_unit_name};
+        Some(self.cells.get(&dop_unit_name(k, f.dop, r.op())?)? + self.cells.get(&tri_unit_name(f.tri)?)?)
     }
 }
 
