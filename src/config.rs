@@ -114,7 +114,7 @@ impl Default for ChipConfig {
     fn default() -> Self {
         ChipConfig {
             k: 24,
-            format: Formats { dop: Format::BINARY32, tri: Format::BINARY32 },
+            format: Format::BINARY32.into(),
             dop_rounding: DopRounding::Outward,
             tri_rounding: Rounding::NearestEven,
         }

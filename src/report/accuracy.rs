@@ -182,10 +182,11 @@ pub fn study(
 /// The Markdown table of docs/ACCURACY.md; with `area`, the cells of each configuration's
 /// DOP unit and TRI_UNIT ("-" where the RTL is not built in its format).
 pub fn table(rows: &[Row], area: Option<&Area>) -> String {
-    let mut out = String::from(
-        "| mesh | k | format | DOP rounding | queries | exact pairs / query | DOP tests / query | triangle tests / query | DOP false positives | uncertain | uncertain: degenerate / on plane / bound | misses | extra pairs | memory KiB / query | cycles / query |",
-    );
-    out += if area.is_some() { " cells: DOP unit + TRI_UNIT |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n" } else { "\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n" };
+    let mut columns = vec!["mesh", "k", "format", "DOP rounding", "queries", "exact pairs / query", "DOP tests / query", "triangle tests / query", "DOP false positives", "uncertain", "uncertain: degenerate / on plane / bound", "misses", "extra pairs", "memory KiB / query", "cycles / query"];
+    if area.is_some() {
+        columns.push("cells: DOP unit + TRI_UNIT");
+    }
+    let mut out = format!("| {} |\n|{}\n", columns.join(" | "), "---|".repeat(columns.len()));
     for row in rows {
         let r = &row.sums;
         let q = r.queries.max(1) as f64;
