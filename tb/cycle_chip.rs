@@ -116,9 +116,9 @@ fn memory() -> impl Strategy<Value = Memory> {
 fn params() -> impl Strategy<Value = Params> {
     (
         (10u32..=14, 1u32..=20, 3u32..=140, 1u32..=64),
-        (1u32..=2, 1u32..=32, 1u32..=4, memory()),
+        (1u32..=2, 1u32..=32, 1u32..=16, prop_oneof![Just(0u32), 1u32..=12], memory()),
     )
-        .prop_map(|((q, dl, tl, tf), (sp, cr, os, memory))| Params {
+        .prop_map(|((q, dl, tl, tf), (sp, cr, os, pf, memory))| Params {
             queue_entries: 1 << q,
             dop_latency: dl,
             tri_latency: tl,
@@ -126,6 +126,7 @@ fn params() -> impl Strategy<Value = Params> {
             issue_spacing: sp,
             credit: cr,
             outstanding: os,
+            prefetch: pf,
             memory,
         })
 }
@@ -219,11 +220,70 @@ fn bad_parameters_are_refused() {
     for (p, what) in [
         (Params { queue_entries: 0, ..Params::RTL }, "queue_entries"),
         (Params { issue_spacing: 3, ..Params::RTL }, "issue_spacing"),
-        (Params { outstanding: 5, ..Params::RTL }, "outstanding"),
+        (Params { outstanding: 65, ..Params::RTL }, "outstanding"),
+        (Params { prefetch: 257, ..Params::RTL }, "prefetch"),
         (Params { memory: MemTiming { latency: 0, ..Default::default() }.into(), ..Params::RTL }, "latency"),
         (Params { memory: Memory::Ddr(Ddr { burst: 9, ..Ddr::WSCG03 }), ..Params::RTL }, "burst <= hit <= miss"),
     ] {
         let e = CycleChip::new(&CHIP_CONFIG, p, &chip.a, &chip.b, &setup, true).err().expect("refused");
         assert!(e.contains(what), "{e}");
     }
+}
+
+/// Prefetch by hand. A = B = two triangles (root 0, leaves 1 and 2), at the identity: every
+/// DOP overlaps. Ideal memory of latency 3 (a request accepted at edge t answered in cycle
+/// t + 3), DOP latency 2, issues one clock apart, 4 requests outstanding, 2 pairs prefetched,
+/// LIFO. Start at 0, the root pushed at edge 1, popped in cycle 2; its words A0, B0 asked in
+/// cycles 3, 4, arrive at edges 6, 7; the root issues in cycle 8, its result in cycle 10 pushes
+/// both child entries at once: E1 = (1,1), (1,2), E2 = (2,2), (2,1) (the DOP-sharing order,
+/// `traversal::d_cntr::children`), E1 on top. E1 is popped in cycle 11, E2 in 12 (the buffer
+/// holds 4 pairs) while E1's first word goes out: A1, B1, B2, A2, B1 in cycles 12..=16 (the
+/// pair (2,2) reuses B2), one a clock, answered at edges 15..=19; each pair issues the clock
+/// after its last word: cycles 17, 18, 19, 20. Without prefetch the words go one pair at a
+/// time (the RTL's rule: only the current pair's words).
+#[test]
+fn prefetch_keeps_requests_back_to_back_by_hand() {
+    use collision_chip::dop::Node;
+    let p3 = |x: f64, y: f64| nalgebra::Point3::new(x, y, 0.0);
+    let tris = vec![[p3(0.0, 0.0), p3(1.0, 0.0), p3(0.0, 1.0)], [p3(2.0, 0.0), p3(3.0, 0.0), p3(2.0, 1.0)]];
+    let chip = Chip::new(&tris, &tris, CHIP_CONFIG).unwrap();
+    assert_eq!(chip.a.tree.nodes[0], Node::Inner([1, 2]), "the tree this derivation assumes");
+    let pose = Pose::new(0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
+    let base = cycle::chip::layout(&chip.a, &chip.b);
+    let (na, nb) = (base[0], base[1]);
+    let idx = |scope: &str, name: &str| cycle::PROBES.iter().position(|p| (p.0, p.1) == (scope, name)).unwrap();
+    let (req, addr, issue) = (idx("memory", "req_valid"), idx("memory", "req_addr"), idx("d_cntr", "issue"));
+    let timeline = |prefetch: u32| {
+        let p = Params {
+            dop_latency: 2,
+            issue_spacing: 1,
+            outstanding: 4,
+            prefetch,
+            memory: MemTiming { latency: 3, interval: 1, bus_bits: None }.into(),
+            ..Params::RTL
+        };
+        let (mut reqs, mut issues) = (vec![], vec![]);
+        let mut obs = |t: u64, v: &[u64]| {
+            if v[req] == 1 && reqs.len() < 7 {
+                reqs.push((t, v[addr] as u32));
+            }
+            if v[issue] == 1 {
+                issues.push(t);
+            }
+            Ok(())
+        };
+        let rec = cycle::Record { probes: Some(&mut obs), ..Default::default() };
+        let (tr, _) = cycle::run_query(&chip, &chip.setup(&pose), true, Mode::All, p, Reader::default(), MAX_CYCLES, rec).unwrap();
+        assert_eq!(tr.dop_tests, 5);
+        (reqs, issues)
+    };
+    let (reqs, issues) = timeline(2);
+    let want = [(3, na), (4, nb), (12, na + 1), (13, nb + 1), (14, nb + 2), (15, na + 2), (16, nb + 1)];
+    assert_eq!(reqs, want);
+    assert_eq!(issues, [8, 17, 18, 19, 20]);
+    // without prefetch: (1,1)'s words A1, B1 in cycles 12, 13 (answered 15, 16), it issues
+    // in 17; (1,2) is current from 18, asks for B2 then (answered 21) and issues in 22
+    let (reqs, issues) = timeline(0);
+    assert_eq!(reqs[2..5], [(12, na + 1), (13, nb + 1), (18, nb + 2)]);
+    assert_eq!(issues[..3], [8, 17, 22]);
 }

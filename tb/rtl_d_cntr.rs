@@ -150,7 +150,7 @@ fn clear(lifo: bool) -> QueueIn {
 /// clear (push and pop then ignored).
 fn op(p_push: f64, p_pop: f64) -> impl Strategy<Value = QueueIn> {
     (prop::bool::weighted(p_push), prop::bool::weighted(p_pop), any::<u128>(), prop::bool::weighted(0.004), any::<bool>())
-        .prop_map(|(push, pop, d, clear, lifo)| QueueIn { clear, lifo, push, pop, push_data: d & MASK })
+        .prop_map(|(push, pop, d, clear, lifo)| QueueIn { clear, lifo, push, pop, push_data: d & MASK, push2: None })
 }
 
 /// A phase of one mix, long enough to fill or drain a queue of `cap` entries.

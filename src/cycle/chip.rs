@@ -81,14 +81,23 @@ pub struct Chip<'a> {
     // ---- D_CNTR
     queue: QueueModel<Entry>,
     q: QueueOut<Entry>,
-    ent: Entry,
-    ent_valid: bool,
-    ent_second: bool,
+    /// The pairs popped from the queue and not yet issued, oldest (the DOP unit's input)
+    /// first: the RTL's entry register (prefetch 0), else the pair buffer.
+    ahead: VecDeque<Ahead>,
+    /// The node ids of the last pair put into `ahead` (whose words a repeat reuses).
+    last_ids: [Option<u32>; 2],
+    /// Node words of `ahead`'s pairs not yet requested, in order: destination, id, pair.
+    to_ask: VecDeque<(Dst, u32, u64)>,
+    /// Node words arrived and not yet used, in order (the RTL's held node word at prefetch 0).
+    words: VecDeque<u32>,
+    /// Pairs put into `ahead` since start (each pair's number).
+    seq: u64,
     last_issue: Option<u64>,
-    /// Child entries not yet pushed (the RTL's `pend`: one at most).
+    /// Child entries not yet pushed (the RTL's `pend`: one at most; none at issue spacing
+    /// 1, where the queue takes two entries a clock).
     pend: VecDeque<Entry>,
-    // ---- words held (by [`Dst`]) and the memory port
-    held: [Option<u32>; 4],
+    // ---- triangle words held (A's, B's) and the memory port
+    held: [Option<u32>; 2],
     port: MemPort,
     // ---- units
     dop: DopUnit<'a>,
@@ -103,11 +112,19 @@ pub struct Chip<'a> {
     pub stats: Option<Stats>,
 }
 
+/// A pair waiting for the DOP unit: its number since start, and which of its node words
+/// come from memory (A's, B's; the others repeat the previous pair's).
+#[derive(Clone, Copy, Debug)]
+struct Ahead {
+    pair: Pair,
+    seq: u64,
+    fetch: [bool; 2],
+}
+
 /// The cycle's logic: functions of the registers and the inputs.
 struct Comb {
     halt: bool,
-    cur: Pair,
-    ent_last: bool,
+    cur: Option<Ahead>,
     need: [bool; 4],
     req: Option<(Dst, u32)>,
     accept: bool,
@@ -152,12 +169,14 @@ impl<'a> Chip<'a> {
             stop: false,
             q: queue.outputs(),
             queue,
-            ent: Entry::default(),
-            ent_valid: false,
-            ent_second: false,
+            ahead: VecDeque::new(),
+            last_ids: [None; 2],
+            to_ask: VecDeque::new(),
+            words: VecDeque::new(),
+            seq: 0,
             last_issue: None,
             pend: VecDeque::new(),
-            held: [None; 4],
+            held: [None; 2],
             port: MemPort::new(p.outstanding),
             dop: DopUnit::new(a, b, dop_values, p.dop_latency),
             leaf_fifo: Delay::with_capacity(FIFO_WRITE_TO_HEAD, p.credit as usize),
@@ -173,29 +192,33 @@ impl<'a> Chip<'a> {
     fn comb(&self, i: &ChipIn) -> Comb {
         let run = self.run;
         let halt = self.stop || self.q.overflow;
-        let cur = self.ent.pairs[self.ent_second as usize];
-        let ent_last = self.ent_second || self.ent.len == 1;
+        let cur = self.ahead.front().copied();
         let go = run && !halt;
-        let needs = |d: Dst, id: u32, valid: bool| go && valid && self.held[d as usize] != Some(id);
+        // the pair at the DOP unit's input waits for its words: they come in request order,
+        // its own first
+        let [fa, fb] = cur.map_or([false; 2], |c| c.fetch);
+        let tri_needs = |k: usize, id: u32| go && self.leaf_valid && self.held[k] != Some(id);
         let need = [
-            needs(Dst::NodeA, cur.a, self.ent_valid),
-            needs(Dst::NodeB, cur.b, self.ent_valid),
-            needs(Dst::TriA, self.leaf_tag.0, self.leaf_valid),
-            needs(Dst::TriB, self.leaf_tag.1, self.leaf_valid),
+            go && fa && self.words.is_empty(),
+            go && fb && self.words.len() < 1 + fa as usize,
+            tri_needs(0, self.leaf_tag.0),
+            tri_needs(1, self.leaf_tag.1),
         ];
-        let req = Dst::PRIORITY.into_iter().find(|&d| need[d as usize] && self.port.free(d)).map(|d| {
-            let id = match d {
-                Dst::NodeA => cur.a,
-                Dst::NodeB => cur.b,
-                Dst::TriA => self.leaf_tag.0,
-                Dst::TriB => self.leaf_tag.1,
-            };
-            (d, id)
-        });
+        // triangle words first, then the next node word in pair order: the current pair's
+        // only at prefetch 0, any pair's in the buffer else
+        let tri_req = [(Dst::TriA, self.leaf_tag.0), (Dst::TriB, self.leaf_tag.1)]
+            .into_iter()
+            .find(|&(d, _)| need[d as usize] && self.port.free(d));
+        let node_req = self
+            .to_ask
+            .front()
+            .filter(|w| go && (self.p.prefetch > 0 || cur.is_some_and(|c| c.seq == w.2)) && self.port.free(w.0))
+            .map(|w| (w.0, w.1));
+        let req = tri_req.or(node_req);
         let accept = req.is_some() && i.mem_req_ready;
         let spaced = self.last_issue.is_none_or(|t| self.now - t >= self.p.issue_spacing as u64);
         let credit = self.dop.in_flight() + self.leaf_fifo.len();
-        let issue = go && self.ent_valid && !need[0] && !need[1] && spaced && credit < self.p.credit as usize;
+        let issue = go && cur.is_some() && !need[0] && !need[1] && spaced && credit < self.p.credit as usize;
         // a DOP result: child entries, or a leaf pair
         let dop_out = self.dop.out(self.now).copied();
         let (mut leaf_in, mut new_children) = (None, ([Entry::default(); 2], 0));
@@ -206,7 +229,9 @@ impl<'a> Chip<'a> {
             }
         }
         let child_push = !self.pend.is_empty() || new_children.1 > 0;
-        let pop = go && !self.q.empty && (!self.ent_valid || (issue && ent_last)) && !(self.lifo && child_push);
+        // room for an entry's two pairs once this cycle's issue has left
+        let room = self.ahead.len() - issue as usize + 2 <= self.p.prefetch as usize + 2;
+        let pop = go && !self.q.empty && room && !(self.lifo && child_push);
         // leaf pairs and TRI_UNIT
         let tri_in = go && self.leaf_valid && !need[2] && !need[3];
         let tri_take = tri_in && self.tri.in_ready();
@@ -220,12 +245,11 @@ impl<'a> Chip<'a> {
             && self.tri.open() == 0
             && !self.push_root
             && self.leaf_fifo.is_empty();
-        let all_idle = halt_idle && self.q.empty && !self.ent_valid && !self.leaf_valid;
+        let all_idle = halt_idle && self.q.empty && self.ahead.is_empty() && !self.leaf_valid;
         let finish = run && (all_idle || (halt && halt_idle));
         Comb {
             halt,
             cur,
-            ent_last,
             need,
             req,
             accept,
@@ -262,7 +286,7 @@ impl<'a> Chip<'a> {
             &mut s.halted
         } else if c.issue {
             &mut s.issue
-        } else if self.ent_valid {
+        } else if c.cur.is_some() {
             if c.need[0] || c.need[1] {
                 &mut s.stall_memory
             } else if spacing {
@@ -296,9 +320,9 @@ impl<'a> Chip<'a> {
             self.q.max_count as u64,
             b(push),
             b(c.pop),
-            b(self.ent_valid),
-            c.cur.a as u64,
-            c.cur.b as u64,
+            b(c.cur.is_some()),
+            c.cur.map_or(0, |c| c.pair.a as u64),
+            c.cur.map_or(0, |c| c.pair.b as u64),
             b(c.need[0]),
             b(c.need[1]),
             b(c.issue),
@@ -455,6 +479,7 @@ impl Clocked for Chip<'_> {
         } else {
             self.pend.pop_front()
         };
+        let push2 = if self.p.issue_spacing == 1 { self.pend.pop_front() } else { None };
         let probed = probe.then(|| self.probe(&c, i, push.is_some()));
         // ---- host registers
         if i.host_we {
@@ -473,32 +498,48 @@ impl Clocked for Chip<'_> {
             self.port.accept(d, id);
             self.cnt[if d.is_tri() { 3 } else { 2 }] += 1;
         }
+        if let Some((d, id)) = c.req.filter(|&(d, _)| c.accept && !d.is_tri()) {
+            let w = self.to_ask.pop_front();
+            debug_assert_eq!(w.map(|w| (w.0, w.1)), Some((d, id)));
+        }
         if i.mem_resp.is_some() {
-            if let Some((d, id)) = self.port.respond() {
-                self.held[d as usize] = Some(id);
+            match self.port.respond() {
+                Some((d, id)) if d.is_tri() => self.held[d as usize - Dst::TriA as usize] = Some(id),
+                Some((_, id)) => self.words.push_back(id),
+                None => {}
             }
         }
         // ---- issue, DOP results
-        if c.issue {
-            self.dop.issue(now, c.cur);
+        if let Some(cur) = c.cur.filter(|_| c.issue) {
+            self.dop.issue(now, cur.pair);
             self.cnt[0] += 1;
             self.last_issue = Some(now);
-            self.ent_second = true;
-            if c.ent_last {
-                self.ent_valid = false;
+            self.ahead.pop_front();
+            for (k, id) in [cur.pair.a, cur.pair.b].into_iter().enumerate().filter(|&(k, _)| cur.fetch[k]) {
+                let w = self.words.pop_front();
+                debug_assert_eq!(w, Some(id), "node word {k} of {:?}", cur.pair);
             }
         }
         self.dop.retire(now);
         if c.pop {
-            self.ent = self.q.top_data;
-            self.ent_valid = true;
-            self.ent_second = false;
+            let e = self.q.top_data;
+            for &pair in &e.pairs[..e.len as usize] {
+                let ids = [pair.a, pair.b];
+                let fetch = [0, 1].map(|k| self.last_ids[k] != Some(ids[k]));
+                for (k, d) in [Dst::NodeA, Dst::NodeB].into_iter().enumerate().filter(|&(k, _)| fetch[k]) {
+                    self.to_ask.push_back((d, ids[k], self.seq));
+                }
+                self.ahead.push_back(Ahead { pair, seq: self.seq, fetch });
+                self.last_ids = ids.map(Some);
+                self.seq += 1;
+            }
         }
         self.q = self.queue.step(&QueueIn {
             clear: i.start && !self.run,
             lifo: self.lifo,
             push: push.is_some(),
             push_data: push.unwrap_or_default(),
+            push2,
             pop: c.pop,
         });
         self.push_root = false;
@@ -534,9 +575,12 @@ impl Clocked for Chip<'_> {
             self.done = false;
             self.push_root = true;
             self.stop = false;
-            self.ent_valid = false;
+            self.ahead.clear();
+            self.to_ask.clear();
+            self.words.clear();
+            self.last_ids = [None; 2];
             self.leaf_valid = false;
-            self.held = [None; 4];
+            self.held = [None; 2];
             self.cnt = [0; 4];
             self.stats = self.stats.map(|_| Stats::default());
             self.last_issue = None;

@@ -69,6 +69,10 @@ pub struct QueueIn<T = u128> {
     pub push_data: T,
     /// Remove the entry shown on `top_data`; ignored while empty.
     pub pop: bool,
+    /// An entry pushed after `push_data` by a second write port (the cycle-model chip at
+    /// issue spacing 1 pushes both child entries of a DOP result in one clock; the RTL
+    /// queue has one port).
+    pub push2: Option<T>,
 }
 
 /// The queue's outputs after a rising edge.
@@ -156,7 +160,7 @@ impl<T: QueueEntry> QueueModel<T> {
     /// One rising edge with inputs `i`; returns the outputs after it. A pop (if not
     /// empty) happens before the push, in both orders: FIFO pop removes the head and the
     /// push appends; LIFO pop removes the top and the pushed entry becomes the new top.
-    /// So a push while full succeeds if the same cycle pops.
+    /// So a push while full succeeds if the same cycle pops. `push2` follows `push`.
     pub fn step(&mut self, i: &QueueIn<T>) -> QueueOut<T> {
         if i.clear {
             self.q.clear();
@@ -171,9 +175,9 @@ impl<T: QueueEntry> QueueModel<T> {
                     self.q.pop_front();
                 }
             }
-            if i.push {
+            for d in [i.push.then_some(i.push_data), i.push2].into_iter().flatten() {
                 if self.q.len() < self.cap {
-                    self.q.push_back(i.push_data.masked());
+                    self.q.push_back(d.masked());
                 } else {
                     self.overflow = true;
                 }
@@ -224,6 +228,15 @@ mod tests {
             assert!(o.empty && o.top_data == 0 && o.overflow && o.max_count == 2);
             let o = m.step(&QueueIn { clear: true, lifo, ..Default::default() });
             assert!(!o.overflow && o.max_count == 0);
+            // two pushes in one clock, the second last in (LIFO: on top); the second
+            // overflows a queue with room for one
+            m.step(&push(5));
+            let o = m.step(&QueueIn { push2: Some(7), ..push(6) });
+            assert!(o.full && o.overflow && o.count == 2);
+            assert_eq!(o.top_data, if lifo { 6 } else { 5 });
+            m.step(&QueueIn { clear: true, lifo, ..Default::default() });
+            let o = m.step(&QueueIn { push2: Some(7), ..push(6) });
+            assert_eq!((o.count, o.top_data), (2, if lifo { 7 } else { 6 }));
         }
     }
 }

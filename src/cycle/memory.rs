@@ -278,9 +278,9 @@ impl MemModel {
     }
 }
 
-/// Where a memory word goes: the node words held for the DOP unit (A's, B's) and the
-/// triangle words held for TRI_UNIT (A's, B's). Request priority is the reverse: triangle
-/// words first, A's before B's (docs/ARCHITECTURE.md, "Cycle semantics").
+/// Where a memory word goes: the node words for the DOP unit (A's, B's) and the triangle
+/// words held for TRI_UNIT (A's, B's). Triangle words are asked for first, A's before B's;
+/// node words in the order of their pairs (docs/ARCHITECTURE.md, "Cycle semantics").
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 #[repr(u8)]
 pub enum Dst {
@@ -291,17 +291,14 @@ pub enum Dst {
 }
 
 impl Dst {
-    /// Request priority, highest first.
-    pub const PRIORITY: [Dst; 4] = [Dst::TriA, Dst::TriB, Dst::NodeA, Dst::NodeB];
-
     pub fn is_tri(self) -> bool {
         matches!(self, Dst::TriA | Dst::TriB)
     }
 }
 
-/// The chip's memory port: up to `max` requests outstanding, at most one per destination
-/// (a response replaces the held word of its destination), responses in request order.
-/// The RTL chip has `max` = 1.
+/// The chip's memory port: up to `max` requests outstanding, at most one per triangle
+/// destination (a response replaces its held word; node words queue for their pairs),
+/// responses in request order. The RTL chip has `max` = 1.
 #[derive(Clone, Debug)]
 pub struct MemPort {
     max: usize,
@@ -311,13 +308,16 @@ pub struct MemPort {
 
 impl MemPort {
     pub fn new(max: u32) -> Self {
-        assert!((1..=4).contains(&max), "1 to 4 requests outstanding (one per destination)");
+        assert!((1..=MemPort::MAX).contains(&max), "1 to {} requests outstanding", MemPort::MAX);
         MemPort { max: max as usize, outstanding: VecDeque::new() }
     }
 
+    /// Requests outstanding at most.
+    pub const MAX: u32 = 64;
+
     /// Can a request go out now, and to `d`?
     pub fn free(&self, d: Dst) -> bool {
-        self.outstanding.len() < self.max && !self.outstanding.iter().any(|o| o.0 == d)
+        self.outstanding.len() < self.max && !(d.is_tri() && self.outstanding.iter().any(|o| o.0 == d))
     }
 
     /// An accepted request for the word `id` of `d`.
@@ -412,13 +412,14 @@ mod tests {
     }
 
     #[test]
-    fn port_keeps_one_request_per_destination() {
-        let mut p = MemPort::new(2);
+    fn port_keeps_one_request_per_triangle_destination() {
+        let mut p = MemPort::new(3);
+        p.accept(Dst::TriA, 5);
+        assert!(!p.free(Dst::TriA) && p.free(Dst::TriB) && p.free(Dst::NodeA));
+        p.accept(Dst::NodeA, 6);
         assert!(p.free(Dst::NodeA));
-        p.accept(Dst::NodeA, 5);
-        assert!(!p.free(Dst::NodeA) && p.free(Dst::NodeB));
-        p.accept(Dst::NodeB, 6);
-        assert!(!p.free(Dst::TriA));
-        assert_eq!(p.respond(), Some((Dst::NodeA, 5)));
+        p.accept(Dst::NodeA, 7);
+        assert!(!p.free(Dst::NodeB));
+        assert_eq!(p.respond(), Some((Dst::TriA, 5)));
     }
 }

@@ -43,12 +43,18 @@ pub struct Params {
     /// TRI_UNIT's result FIFO: pairs taken and not yet given out.
     pub tri_fifo: u32,
     /// Clocks between two DOP issues at the least (the RTL: 2, so that the two child
-    /// entries of a result are pushed one per clock).
+    /// entries of a result are pushed one per clock; at 1 the queue has a second write
+    /// port and takes both in one clock).
     pub issue_spacing: u32,
     /// DOP tests in flight plus leaf pairs waiting: the leaf FIFO's entries.
     pub credit: u32,
-    /// Memory requests outstanding (at most one per destination).
+    /// Memory requests outstanding (at most one per triangle destination).
     pub outstanding: u32,
+    /// Node pairs popped from the queue ahead of the current entry, whose node words the
+    /// port asks for before they reach the DOP unit (a pair buffer of `prefetch + 2` pairs,
+    /// their words queued in request order). 0: the RTL's entry register, the port asks
+    /// only for the current pair's words.
+    pub prefetch: u32,
     pub memory: Memory,
 }
 
@@ -64,8 +70,12 @@ impl Params {
         issue_spacing: 2,
         credit: crate::rtl::LEAF_FIFO as u32,
         outstanding: 1,
+        prefetch: 0,
         memory: Memory::Ideal(MemTiming { latency: 1, interval: 1, bus_bits: None }),
     };
+
+    /// Pairs prefetched at most.
+    pub const MAX_PREFETCH: u32 = 256;
 
     /// Errors name a parameter out of range.
     pub fn check(&self) -> Result<(), String> {
@@ -85,8 +95,11 @@ impl Params {
         if !(1..=2).contains(&self.issue_spacing) {
             return Err("issue_spacing must be 1 or 2 clocks".into());
         }
-        if !(1..=4).contains(&self.outstanding) {
-            return Err("outstanding must be 1 to 4 requests (one per destination)".into());
+        if !(1..=memory::MemPort::MAX).contains(&self.outstanding) {
+            return Err(format!("outstanding must be 1 to {} requests", memory::MemPort::MAX));
+        }
+        if self.prefetch > Params::MAX_PREFETCH {
+            return Err(format!("prefetch must be at most {} pairs", Params::MAX_PREFETCH));
         }
         self.memory.check()
     }
@@ -238,11 +251,12 @@ pub fn probe_scopes() -> Vec<&'static str> {
 }
 
 /// For each of [`PROBES`], the index of the signal that must be 1 for its value to be
-/// specified (`None`: always specified): a request's address and destination, a DOP
+/// specified (`None`: always specified): the current pair's nodes, a request's address and destination, a DOP
 /// result's fields, TRI_UNIT's output and the result port's fields.
 pub fn probe_valid(i: usize) -> Option<usize> {
     let idx = |scope: &str, name: &str| PROBES.iter().position(|p| p.0 == scope && p.1 == name);
     match (PROBES[i].0, PROBES[i].1) {
+        ("d_cntr", "pair_a" | "pair_b") => idx("d_cntr", "entry_valid"),
         ("memory", "req_addr" | "req_dst") => idx("memory", "req_valid"),
         ("dop", "overlap" | "result_a" | "result_b" | "a_leaf" | "b_leaf") => idx("dop", "valid_out"),
         ("tri_unit", "out_hit" | "out_uncertain" | "out_a" | "out_b") => idx("tri_unit", "out_valid"),

@@ -63,7 +63,8 @@
 //! tri_fifo = 256
 //! issue_spacing = 2           # 1 or 2 clocks between DOP issues
 //! credit = 16                 # DOP tests in flight + leaf pairs waiting
-//! outstanding = 1             # memory requests in flight (1 to 4)
+//! outstanding = 1             # memory requests in flight (1 to 64)
+//! prefetch = 0                # node pairs whose words are fetched ahead (0 to 256)
 //! clock_mhz = 800             # the chip's clock for its time per query (DATE'05: 800)
 //! ```
 
@@ -109,6 +110,7 @@ struct TimingSection {
     issue_spacing: Option<u32>,
     credit: Option<u32>,
     outstanding: Option<u32>,
+    prefetch: Option<u32>,
     clock_mhz: Option<f64>,
 }
 
@@ -415,6 +417,7 @@ impl Scene {
             issue_spacing: t.issue_spacing.unwrap_or(rtl.issue_spacing),
             credit: t.credit.unwrap_or(rtl.credit),
             outstanding: t.outstanding.unwrap_or(rtl.outstanding),
+            prefetch: t.prefetch.unwrap_or(rtl.prefetch),
             memory: f.memory.memory().map_err(err)?,
         };
         params.check().map_err(|e| err(format!("[timing] / [memory]: {e}")))?;
