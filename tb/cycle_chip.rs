@@ -2,8 +2,8 @@
 //! trace (vectors/chip/*.expect: each also agreed by the exported Verilog under
 //! Verilator, two by rust-hdl in lockstep), answers as the golden model does in
 //! configurations beyond the RTL (k, format, latencies, spacing, credit, requests
-//! outstanding, memory timing, a slow host), skips idle stretches without changing a
-//! trace, and reports an overflowing queue.
+//! outstanding, prefetch, memory timing, a slow host), skips idle stretches without changing a
+//! trace, reports an overflowing queue, and prefetches as derived by hand.
 //!
 //! `CCHIP_BLESS=1 cargo test --release --test cycle_chip` writes the cycle model's traces
 //! of every query to target/chip-expect/ for `scripts/run-chip.sh --bless`, which copies
