@@ -10,8 +10,9 @@ chip: k = 24, binary32, outward DOP rounding, LIFO, all pairs; `[memory]` set to
 
 Usage: scripts/memory-study.py [--meshes bunny dragon-11k] [--orientations 8] [--timing TOML]
                                [--cchip PATH]
-  --timing  the scenes' [timing] table, e.g. 'issue_spacing = 1, outstanding = 4, credit = 32'
-            (the cycle model beyond the RTL; default: the RTL's parameters)
+  --timing  the scenes' [timing] table, e.g. 'issue_spacing = 1, outstanding = 16, credit = 48,
+            prefetch = 14' (the cycle model beyond the RTL: docs/ARCHITECTURE.md, "With
+            prefetch"; default: the RTL's parameters)
   --cchip   a built cchip binary (default: `cargo run --release -q --`)
 Only the Python 3 standard library is used.
 """
