@@ -229,8 +229,9 @@ impl<'a> Chip<'a> {
             }
         }
         let child_push = !self.pend.is_empty() || new_children.1 > 0;
-        // room for an entry's two pairs once this cycle's issue has left
-        let room = self.ahead.len() - issue as usize + 2 <= self.p.prefetch as usize + 2;
+        // room in the buffer of prefetch + 2 pairs for an entry's two, once this cycle's
+        // issue has left
+        let room = self.ahead.len() - issue as usize <= self.p.prefetch as usize;
         let pop = go && !self.q.empty && room && !(self.lifo && child_push);
         // leaf pairs and TRI_UNIT
         let tri_in = go && self.leaf_valid && !need[2] && !need[3];
@@ -498,9 +499,8 @@ impl Clocked for Chip<'_> {
             self.port.accept(d, id);
             self.cnt[if d.is_tri() { 3 } else { 2 }] += 1;
         }
-        if let Some((d, id)) = c.req.filter(|&(d, _)| c.accept && !d.is_tri()) {
-            let w = self.to_ask.pop_front();
-            debug_assert_eq!(w.map(|w| (w.0, w.1)), Some((d, id)));
+        if c.req.is_some_and(|(d, _)| c.accept && !d.is_tri()) {
+            self.to_ask.pop_front();
         }
         if i.mem_resp.is_some() {
             match self.port.respond() {
@@ -516,8 +516,9 @@ impl Clocked for Chip<'_> {
             self.last_issue = Some(now);
             self.ahead.pop_front();
             for (k, id) in [cur.pair.a, cur.pair.b].into_iter().enumerate().filter(|&(k, _)| cur.fetch[k]) {
+                // the word queue is in pair order: the head's words are its own
                 let w = self.words.pop_front();
-                debug_assert_eq!(w, Some(id), "node word {k} of {:?}", cur.pair);
+                assert_eq!(w, Some(id), "node word {k} of {:?}", cur.pair);
             }
         }
         self.dop.retire(now);

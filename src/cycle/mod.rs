@@ -251,8 +251,8 @@ pub fn probe_scopes() -> Vec<&'static str> {
 }
 
 /// For each of [`PROBES`], the index of the signal that must be 1 for its value to be
-/// specified (`None`: always specified): the current pair's nodes, a request's address and destination, a DOP
-/// result's fields, TRI_UNIT's output and the result port's fields.
+/// specified (`None`: always specified): the current pair's nodes, a request's address and
+/// destination, a DOP result's fields, TRI_UNIT's output and the result port's fields.
 pub fn probe_valid(i: usize) -> Option<usize> {
     let idx = |scope: &str, name: &str| PROBES.iter().position(|p| p.0 == scope && p.1 == name);
     match (PROBES[i].0, PROBES[i].1) {

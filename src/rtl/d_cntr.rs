@@ -255,8 +255,9 @@ pub fn verilog_pair_queue<const N: usize, const NP1: usize>() -> String {
 }
 
 impl<const N: usize, const NP1: usize> PairQueue<N, NP1> {
-    /// Drives the inputs of one cycle.
+    /// Drives the inputs of one cycle (one write port: `push2` is the cycle model's).
     pub fn set_inputs(&mut self, i: &QueueIn) {
+        assert!(i.push2.is_none(), "the RTL pair queue has one write port");
         self.clear.next = i.clear;
         self.lifo.next = i.lifo;
         self.push.next = i.push;

@@ -149,10 +149,10 @@ impl Unit {
             Unit::ExactOracle => "every intersecting pair exactly (AABB broad phase, exact predicates on the f64 geometry)".into(),
             Unit::AccuracyCounter => "misses and extra pairs of the chip against the exact oracle".into(),
             Unit::DCntr => format!("the pair queue ({} entries), entry register and issue control (every {} clock(s), credit {})", p.queue_entries, p.issue_spacing, p.credit),
-            Unit::MemoryPort => match p.prefetch {
-                0 => format!("node and triangle word requests, {} outstanding", p.outstanding),
-                n => format!("node and triangle word requests, {} outstanding, node words of {n} pairs prefetched", p.outstanding),
-            },
+            Unit::MemoryPort => {
+                let prefetch = if p.prefetch > 0 { format!(", node words of {} pairs prefetched", p.prefetch) } else { String::new() };
+                format!("node and triangle word requests, {} outstanding{prefetch}", p.outstanding)
+            }
             Unit::MemoryModel => p.memory.to_string(),
             Unit::DopUnit => format!("DOPTRF transform and compare, {} clocks", p.dop_latency),
             Unit::TriUnit => format!("T.CHECK both ways, {} clocks, {}-entry result FIFO", p.tri_latency, p.tri_fifo),
