@@ -18,7 +18,7 @@
 
 use collision_chip::cycle::chip::{control_writes, image_words, Chip};
 use collision_chip::cycle::drive::{run_query as drive_query, Drive};
-use collision_chip::cycle::{self, Params};
+use collision_chip::cycle;
 use collision_chip::harness::chip_io::{drive, exported_chip, queries, run_query, ChipQuery, PreparedQuery};
 use std::path::Path;
 use std::process::Command;
@@ -43,7 +43,7 @@ fn query(name: &str) -> (ChipQuery, PreparedQuery) {
 fn cycle_model(root: &Path, name: &str, reps: usize) -> (u64, f64, f64) {
     let (q, p) = query(name);
     let want = expect(root, name);
-    let params = Params { memory: q.timing.into(), ..Params::RTL };
+    let params = q.params();
     let setup = p.chip.setup(&q.pose);
     let (mut by_clock, mut skipping, mut cycles) = (f64::INFINITY, f64::INFINITY, 0);
     for _ in 0..reps {
@@ -51,7 +51,7 @@ fn cycle_model(root: &Path, name: &str, reps: usize) -> (u64, f64, f64) {
         let mut c = Chip::new(&p.chip.cfg, params, &p.chip.a, &p.chip.b, &setup, true).unwrap();
         let words = image_words(&p.chip.a, &p.chip.b);
         let d = Drive { memory: q.timing.into(), word_bits: p.chip.layout.word_bits(), reader: q.reader, words, max_cycles: 10_000_000 };
-        let writes = control_writes(&p.chip.a, &p.chip.b, q.lifo, q.mode);
+        let writes = control_writes(&p.chip.a, &p.chip.b, q.lifo, q.mode, &params);
         let tr = drive_query(&mut c, &writes, &d, false, |_, _| Ok(()), None).unwrap();
         by_clock = by_clock.min(t.elapsed().as_secs_f64());
         assert_eq!(tr.text(), want, "{name}: the cycle model's trace (clock by clock)");

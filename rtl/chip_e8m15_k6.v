@@ -27,6 +27,11 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
     input wire  res_ready;
     
     // Constant declarations
+    localparam  c_credit = 6'b10000;
+    localparam  c_pf_max = 5'b1110;
+    localparam  c_ask_b = 22'h10000;
+    localparam  c_one16 = 16'h1;
+    localparam  c_one32 = 32'h1;
     localparam  c_two = 67'h60000000000000000;
     
     // Stub signals
@@ -63,11 +68,25 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
     reg  stop$d;
     wire  stop$q;
     reg  stop$clock;
+    reg  [3:0] port_pf$d;
+    wire  [3:0] port_pf$q;
+    reg  port_pf$clock;
+    reg  [3:0] port_out$d;
+    wire  [3:0] port_out$q;
+    reg  port_out$clock;
+    reg  port_one$d;
+    wire  port_one$q;
+    reg  port_one$clock;
+    reg  [5:0] port_credit$d;
+    wire  [5:0] port_credit$q;
+    reg  port_credit$clock;
     reg  queue$clock;
     reg  queue$clear;
     reg  queue$lifo;
     reg  queue$push;
     reg  [66:0] queue$push_data;
+    reg  queue$push2;
+    reg  [66:0] queue$push2_data;
     reg  queue$pop;
     wire  queue$empty;
     wire  queue$full;
@@ -75,42 +94,423 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
     wire  [10:0] queue$max_count;
     wire  queue$overflow;
     wire  [66:0] queue$top_data;
-    reg  [66:0] ent$d;
-    wire  [66:0] ent$q;
-    reg  ent$clock;
-    reg  ent_valid$d;
-    wire  ent_valid$q;
-    reg  ent_valid$clock;
+    reg  [66:0] ahd_ent$0$d;
+    wire  [66:0] ahd_ent$0$q;
+    reg  ahd_ent$0$clock;
+    reg  [66:0] ahd_ent$1$d;
+    wire  [66:0] ahd_ent$1$q;
+    reg  ahd_ent$1$clock;
+    reg  [66:0] ahd_ent$2$d;
+    wire  [66:0] ahd_ent$2$q;
+    reg  ahd_ent$2$clock;
+    reg  [66:0] ahd_ent$3$d;
+    wire  [66:0] ahd_ent$3$q;
+    reg  ahd_ent$3$clock;
+    reg  [66:0] ahd_ent$4$d;
+    wire  [66:0] ahd_ent$4$q;
+    reg  ahd_ent$4$clock;
+    reg  [66:0] ahd_ent$5$d;
+    wire  [66:0] ahd_ent$5$q;
+    reg  ahd_ent$5$clock;
+    reg  [66:0] ahd_ent$6$d;
+    wire  [66:0] ahd_ent$6$q;
+    reg  ahd_ent$6$clock;
+    reg  [66:0] ahd_ent$7$d;
+    wire  [66:0] ahd_ent$7$q;
+    reg  ahd_ent$7$clock;
+    reg  [66:0] ahd_ent$8$d;
+    wire  [66:0] ahd_ent$8$q;
+    reg  ahd_ent$8$clock;
+    reg  [66:0] ahd_ent$9$d;
+    wire  [66:0] ahd_ent$9$q;
+    reg  ahd_ent$9$clock;
+    reg  [66:0] ahd_ent$10$d;
+    wire  [66:0] ahd_ent$10$q;
+    reg  ahd_ent$10$clock;
+    reg  [66:0] ahd_ent$11$d;
+    wire  [66:0] ahd_ent$11$q;
+    reg  ahd_ent$11$clock;
+    reg  [66:0] ahd_ent$12$d;
+    wire  [66:0] ahd_ent$12$q;
+    reg  ahd_ent$12$clock;
+    reg  [66:0] ahd_ent$13$d;
+    wire  [66:0] ahd_ent$13$q;
+    reg  ahd_ent$13$clock;
+    reg  [66:0] ahd_ent$14$d;
+    wire  [66:0] ahd_ent$14$q;
+    reg  ahd_ent$14$clock;
+    reg  [66:0] ahd_ent$15$d;
+    wire  [66:0] ahd_ent$15$q;
+    reg  ahd_ent$15$clock;
+    reg  [3:0] ahd_fetch$0$d;
+    wire  [3:0] ahd_fetch$0$q;
+    reg  ahd_fetch$0$clock;
+    reg  [3:0] ahd_fetch$1$d;
+    wire  [3:0] ahd_fetch$1$q;
+    reg  ahd_fetch$1$clock;
+    reg  [3:0] ahd_fetch$2$d;
+    wire  [3:0] ahd_fetch$2$q;
+    reg  ahd_fetch$2$clock;
+    reg  [3:0] ahd_fetch$3$d;
+    wire  [3:0] ahd_fetch$3$q;
+    reg  ahd_fetch$3$clock;
+    reg  [3:0] ahd_fetch$4$d;
+    wire  [3:0] ahd_fetch$4$q;
+    reg  ahd_fetch$4$clock;
+    reg  [3:0] ahd_fetch$5$d;
+    wire  [3:0] ahd_fetch$5$q;
+    reg  ahd_fetch$5$clock;
+    reg  [3:0] ahd_fetch$6$d;
+    wire  [3:0] ahd_fetch$6$q;
+    reg  ahd_fetch$6$clock;
+    reg  [3:0] ahd_fetch$7$d;
+    wire  [3:0] ahd_fetch$7$q;
+    reg  ahd_fetch$7$clock;
+    reg  [3:0] ahd_fetch$8$d;
+    wire  [3:0] ahd_fetch$8$q;
+    reg  ahd_fetch$8$clock;
+    reg  [3:0] ahd_fetch$9$d;
+    wire  [3:0] ahd_fetch$9$q;
+    reg  ahd_fetch$9$clock;
+    reg  [3:0] ahd_fetch$10$d;
+    wire  [3:0] ahd_fetch$10$q;
+    reg  ahd_fetch$10$clock;
+    reg  [3:0] ahd_fetch$11$d;
+    wire  [3:0] ahd_fetch$11$q;
+    reg  ahd_fetch$11$clock;
+    reg  [3:0] ahd_fetch$12$d;
+    wire  [3:0] ahd_fetch$12$q;
+    reg  ahd_fetch$12$clock;
+    reg  [3:0] ahd_fetch$13$d;
+    wire  [3:0] ahd_fetch$13$q;
+    reg  ahd_fetch$13$clock;
+    reg  [3:0] ahd_fetch$14$d;
+    wire  [3:0] ahd_fetch$14$q;
+    reg  ahd_fetch$14$clock;
+    reg  [3:0] ahd_fetch$15$d;
+    wire  [3:0] ahd_fetch$15$q;
+    reg  ahd_fetch$15$clock;
+    reg  [3:0] ahd_head$d;
+    wire  [3:0] ahd_head$q;
+    reg  ahd_head$clock;
+    reg  [3:0] ahd_tail$d;
+    wire  [3:0] ahd_tail$q;
+    reg  ahd_tail$clock;
+    reg  [4:0] ahd_pairs$d;
+    wire  [4:0] ahd_pairs$q;
+    reg  ahd_pairs$clock;
     reg  ent_second$d;
     wire  ent_second$q;
     reg  ent_second$clock;
-    reg  na_ok$d;
-    wire  na_ok$q;
-    reg  na_ok$clock;
-    reg  [15:0] na_id$d;
-    wire  [15:0] na_id$q;
-    reg  na_id$clock;
+    reg  last_ok$d;
+    wire  last_ok$q;
+    reg  last_ok$clock;
+    reg  [15:0] last_a$d;
+    wire  [15:0] last_a$q;
+    reg  last_a$clock;
+    reg  [15:0] last_b$d;
+    wire  [15:0] last_b$q;
+    reg  last_b$clock;
+    reg  [21:0] ask_w$0$d;
+    wire  [21:0] ask_w$0$q;
+    reg  ask_w$0$clock;
+    reg  [21:0] ask_w$1$d;
+    wire  [21:0] ask_w$1$q;
+    reg  ask_w$1$clock;
+    reg  [21:0] ask_w$2$d;
+    wire  [21:0] ask_w$2$q;
+    reg  ask_w$2$clock;
+    reg  [21:0] ask_w$3$d;
+    wire  [21:0] ask_w$3$q;
+    reg  ask_w$3$clock;
+    reg  [21:0] ask_w$4$d;
+    wire  [21:0] ask_w$4$q;
+    reg  ask_w$4$clock;
+    reg  [21:0] ask_w$5$d;
+    wire  [21:0] ask_w$5$q;
+    reg  ask_w$5$clock;
+    reg  [21:0] ask_w$6$d;
+    wire  [21:0] ask_w$6$q;
+    reg  ask_w$6$clock;
+    reg  [21:0] ask_w$7$d;
+    wire  [21:0] ask_w$7$q;
+    reg  ask_w$7$clock;
+    reg  [21:0] ask_w$8$d;
+    wire  [21:0] ask_w$8$q;
+    reg  ask_w$8$clock;
+    reg  [21:0] ask_w$9$d;
+    wire  [21:0] ask_w$9$q;
+    reg  ask_w$9$clock;
+    reg  [21:0] ask_w$10$d;
+    wire  [21:0] ask_w$10$q;
+    reg  ask_w$10$clock;
+    reg  [21:0] ask_w$11$d;
+    wire  [21:0] ask_w$11$q;
+    reg  ask_w$11$clock;
+    reg  [21:0] ask_w$12$d;
+    wire  [21:0] ask_w$12$q;
+    reg  ask_w$12$clock;
+    reg  [21:0] ask_w$13$d;
+    wire  [21:0] ask_w$13$q;
+    reg  ask_w$13$clock;
+    reg  [21:0] ask_w$14$d;
+    wire  [21:0] ask_w$14$q;
+    reg  ask_w$14$clock;
+    reg  [21:0] ask_w$15$d;
+    wire  [21:0] ask_w$15$q;
+    reg  ask_w$15$clock;
+    reg  [21:0] ask_w$16$d;
+    wire  [21:0] ask_w$16$q;
+    reg  ask_w$16$clock;
+    reg  [21:0] ask_w$17$d;
+    wire  [21:0] ask_w$17$q;
+    reg  ask_w$17$clock;
+    reg  [21:0] ask_w$18$d;
+    wire  [21:0] ask_w$18$q;
+    reg  ask_w$18$clock;
+    reg  [21:0] ask_w$19$d;
+    wire  [21:0] ask_w$19$q;
+    reg  ask_w$19$clock;
+    reg  [21:0] ask_w$20$d;
+    wire  [21:0] ask_w$20$q;
+    reg  ask_w$20$clock;
+    reg  [21:0] ask_w$21$d;
+    wire  [21:0] ask_w$21$q;
+    reg  ask_w$21$clock;
+    reg  [21:0] ask_w$22$d;
+    wire  [21:0] ask_w$22$q;
+    reg  ask_w$22$clock;
+    reg  [21:0] ask_w$23$d;
+    wire  [21:0] ask_w$23$q;
+    reg  ask_w$23$clock;
+    reg  [21:0] ask_w$24$d;
+    wire  [21:0] ask_w$24$q;
+    reg  ask_w$24$clock;
+    reg  [21:0] ask_w$25$d;
+    wire  [21:0] ask_w$25$q;
+    reg  ask_w$25$clock;
+    reg  [21:0] ask_w$26$d;
+    wire  [21:0] ask_w$26$q;
+    reg  ask_w$26$clock;
+    reg  [21:0] ask_w$27$d;
+    wire  [21:0] ask_w$27$q;
+    reg  ask_w$27$clock;
+    reg  [21:0] ask_w$28$d;
+    wire  [21:0] ask_w$28$q;
+    reg  ask_w$28$clock;
+    reg  [21:0] ask_w$29$d;
+    wire  [21:0] ask_w$29$q;
+    reg  ask_w$29$clock;
+    reg  [21:0] ask_w$30$d;
+    wire  [21:0] ask_w$30$q;
+    reg  ask_w$30$clock;
+    reg  [21:0] ask_w$31$d;
+    wire  [21:0] ask_w$31$q;
+    reg  ask_w$31$clock;
+    reg  [4:0] ask_head$d;
+    wire  [4:0] ask_head$q;
+    reg  ask_head$clock;
+    reg  [4:0] ask_tail$d;
+    wire  [4:0] ask_tail$q;
+    reg  ask_tail$clock;
+    reg  [5:0] ask_n$d;
+    wire  [5:0] ask_n$q;
+    reg  ask_n$clock;
+    reg  [4:0] seq_head$d;
+    wire  [4:0] seq_head$q;
+    reg  seq_head$clock;
+    reg  [4:0] seq_tail$d;
+    wire  [4:0] seq_tail$q;
+    reg  seq_tail$clock;
+    reg  [208:0] wa$0$d;
+    wire  [208:0] wa$0$q;
+    reg  wa$0$clock;
+    reg  [208:0] wa$1$d;
+    wire  [208:0] wa$1$q;
+    reg  wa$1$clock;
+    reg  [208:0] wa$2$d;
+    wire  [208:0] wa$2$q;
+    reg  wa$2$clock;
+    reg  [208:0] wa$3$d;
+    wire  [208:0] wa$3$q;
+    reg  wa$3$clock;
+    reg  [208:0] wa$4$d;
+    wire  [208:0] wa$4$q;
+    reg  wa$4$clock;
+    reg  [208:0] wa$5$d;
+    wire  [208:0] wa$5$q;
+    reg  wa$5$clock;
+    reg  [208:0] wa$6$d;
+    wire  [208:0] wa$6$q;
+    reg  wa$6$clock;
+    reg  [208:0] wa$7$d;
+    wire  [208:0] wa$7$q;
+    reg  wa$7$clock;
+    reg  [208:0] wa$8$d;
+    wire  [208:0] wa$8$q;
+    reg  wa$8$clock;
+    reg  [208:0] wa$9$d;
+    wire  [208:0] wa$9$q;
+    reg  wa$9$clock;
+    reg  [208:0] wa$10$d;
+    wire  [208:0] wa$10$q;
+    reg  wa$10$clock;
+    reg  [208:0] wa$11$d;
+    wire  [208:0] wa$11$q;
+    reg  wa$11$clock;
+    reg  [208:0] wa$12$d;
+    wire  [208:0] wa$12$q;
+    reg  wa$12$clock;
+    reg  [208:0] wa$13$d;
+    wire  [208:0] wa$13$q;
+    reg  wa$13$clock;
+    reg  [208:0] wa$14$d;
+    wire  [208:0] wa$14$q;
+    reg  wa$14$clock;
+    reg  [208:0] wa$15$d;
+    wire  [208:0] wa$15$q;
+    reg  wa$15$clock;
+    reg  [3:0] wa_head$d;
+    wire  [3:0] wa_head$q;
+    reg  wa_head$clock;
+    reg  [3:0] wa_tail$d;
+    wire  [3:0] wa_tail$q;
+    reg  wa_tail$clock;
+    reg  [4:0] wa_n$d;
+    wire  [4:0] wa_n$q;
+    reg  wa_n$clock;
+    reg  [208:0] wb$0$d;
+    wire  [208:0] wb$0$q;
+    reg  wb$0$clock;
+    reg  [208:0] wb$1$d;
+    wire  [208:0] wb$1$q;
+    reg  wb$1$clock;
+    reg  [208:0] wb$2$d;
+    wire  [208:0] wb$2$q;
+    reg  wb$2$clock;
+    reg  [208:0] wb$3$d;
+    wire  [208:0] wb$3$q;
+    reg  wb$3$clock;
+    reg  [208:0] wb$4$d;
+    wire  [208:0] wb$4$q;
+    reg  wb$4$clock;
+    reg  [208:0] wb$5$d;
+    wire  [208:0] wb$5$q;
+    reg  wb$5$clock;
+    reg  [208:0] wb$6$d;
+    wire  [208:0] wb$6$q;
+    reg  wb$6$clock;
+    reg  [208:0] wb$7$d;
+    wire  [208:0] wb$7$q;
+    reg  wb$7$clock;
+    reg  [208:0] wb$8$d;
+    wire  [208:0] wb$8$q;
+    reg  wb$8$clock;
+    reg  [208:0] wb$9$d;
+    wire  [208:0] wb$9$q;
+    reg  wb$9$clock;
+    reg  [208:0] wb$10$d;
+    wire  [208:0] wb$10$q;
+    reg  wb$10$clock;
+    reg  [208:0] wb$11$d;
+    wire  [208:0] wb$11$q;
+    reg  wb$11$clock;
+    reg  [208:0] wb$12$d;
+    wire  [208:0] wb$12$q;
+    reg  wb$12$clock;
+    reg  [208:0] wb$13$d;
+    wire  [208:0] wb$13$q;
+    reg  wb$13$clock;
+    reg  [208:0] wb$14$d;
+    wire  [208:0] wb$14$q;
+    reg  wb$14$clock;
+    reg  [208:0] wb$15$d;
+    wire  [208:0] wb$15$q;
+    reg  wb$15$clock;
+    reg  [3:0] wb_head$d;
+    wire  [3:0] wb_head$q;
+    reg  wb_head$clock;
+    reg  [3:0] wb_tail$d;
+    wire  [3:0] wb_tail$q;
+    reg  wb_tail$clock;
+    reg  [4:0] wb_n$d;
+    wire  [4:0] wb_n$q;
+    reg  wb_n$clock;
     reg  [208:0] na_word$d;
     wire  [208:0] na_word$q;
     reg  na_word$clock;
-    reg  nb_ok$d;
-    wire  nb_ok$q;
-    reg  nb_ok$clock;
-    reg  [15:0] nb_id$d;
-    wire  [15:0] nb_id$q;
-    reg  nb_id$clock;
     reg  [208:0] nb_word$d;
     wire  [208:0] nb_word$q;
     reg  nb_word$clock;
-    reg  outstanding$d;
-    wire  outstanding$q;
-    reg  outstanding$clock;
-    reg  [1:0] dst$d;
-    wire  [1:0] dst$q;
-    reg  dst$clock;
-    reg  [15:0] dst_id$d;
-    wire  [15:0] dst_id$q;
-    reg  dst_id$clock;
+    reg  [1:0] tags$0$d;
+    wire  [1:0] tags$0$q;
+    reg  tags$0$clock;
+    reg  [1:0] tags$1$d;
+    wire  [1:0] tags$1$q;
+    reg  tags$1$clock;
+    reg  [1:0] tags$2$d;
+    wire  [1:0] tags$2$q;
+    reg  tags$2$clock;
+    reg  [1:0] tags$3$d;
+    wire  [1:0] tags$3$q;
+    reg  tags$3$clock;
+    reg  [1:0] tags$4$d;
+    wire  [1:0] tags$4$q;
+    reg  tags$4$clock;
+    reg  [1:0] tags$5$d;
+    wire  [1:0] tags$5$q;
+    reg  tags$5$clock;
+    reg  [1:0] tags$6$d;
+    wire  [1:0] tags$6$q;
+    reg  tags$6$clock;
+    reg  [1:0] tags$7$d;
+    wire  [1:0] tags$7$q;
+    reg  tags$7$clock;
+    reg  [1:0] tags$8$d;
+    wire  [1:0] tags$8$q;
+    reg  tags$8$clock;
+    reg  [1:0] tags$9$d;
+    wire  [1:0] tags$9$q;
+    reg  tags$9$clock;
+    reg  [1:0] tags$10$d;
+    wire  [1:0] tags$10$q;
+    reg  tags$10$clock;
+    reg  [1:0] tags$11$d;
+    wire  [1:0] tags$11$q;
+    reg  tags$11$clock;
+    reg  [1:0] tags$12$d;
+    wire  [1:0] tags$12$q;
+    reg  tags$12$clock;
+    reg  [1:0] tags$13$d;
+    wire  [1:0] tags$13$q;
+    reg  tags$13$clock;
+    reg  [1:0] tags$14$d;
+    wire  [1:0] tags$14$q;
+    reg  tags$14$clock;
+    reg  [1:0] tags$15$d;
+    wire  [1:0] tags$15$q;
+    reg  tags$15$clock;
+    reg  [3:0] tag_head$d;
+    wire  [3:0] tag_head$q;
+    reg  tag_head$clock;
+    reg  [3:0] tag_tail$d;
+    wire  [3:0] tag_tail$q;
+    reg  tag_tail$clock;
+    reg  [4:0] tag_n$d;
+    wire  [4:0] tag_n$q;
+    reg  tag_n$clock;
+    reg  ta_pend$d;
+    wire  ta_pend$q;
+    reg  ta_pend$clock;
+    reg  [15:0] ta_req$d;
+    wire  [15:0] ta_req$q;
+    reg  ta_req$clock;
+    reg  tb_pend$d;
+    wire  tb_pend$q;
+    reg  tb_pend$clock;
+    reg  [15:0] tb_req$d;
+    wire  [15:0] tb_req$q;
+    reg  tb_req$clock;
     reg  dop$clock;
     reg  dop$load_en;
     reg  [7:0] dop$load_addr;
@@ -158,8 +558,8 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
     wire  leaf_fifo$full;
     wire  leaf_fifo$almost_full;
     wire  leaf_fifo$overflow;
-    reg  [4:0] leaf_count$d;
-    wire  [4:0] leaf_count$q;
+    reg  [5:0] leaf_count$d;
+    wire  [5:0] leaf_count$q;
     reg  leaf_count$clock;
     reg  leaf_valid$d;
     wire  leaf_valid$q;
@@ -267,14 +667,58 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
     
     // Local signals
     reg  halt;
+    reg  [5:0] credit_lim;
+    reg  [4:0] pf;
+    reg  go;
+    reg  [15:0] head_dec;
+    reg  [15:0] tail_dec;
+    reg  [66:0] head_ent;
+    reg  [3:0] head_fetch;
+    reg  ent_valid;
     reg  [15:0] cur_a;
     reg  [15:0] cur_b;
     reg  cur_flip;
+    reg  cur_fa;
+    reg  cur_fb;
     reg  ent_last;
+    reg  room;
     reg  pop;
     reg  child_push;
+    reg  [66:0] top;
+    reg  top_two;
+    reg  [3:0] pop_fetch;
+    reg  fetch_a0;
+    reg  fetch_b0;
+    reg  fetch_a1;
+    reg  fetch_b1;
+    reg  ask_take;
+    reg  [4:0] seq_tail1;
+    reg  [31:0] ask_dec;
+    reg  [21:0] ask_front;
+    reg  ask_ok;
+    reg  [4:0] ask_off1;
+    reg  [4:0] ask_off2;
+    reg  [4:0] ask_off3;
+    reg  [4:0] ask_new;
+    reg  [31:0] put0;
+    reg  [31:0] put1;
+    reg  [31:0] put2;
+    reg  [31:0] put3;
+    reg  [15:0] wa_hdec;
+    reg  [15:0] wa_tdec;
+    reg  [15:0] wb_hdec;
+    reg  [15:0] wb_tdec;
+    reg  [208:0] wa_front;
+    reg  [208:0] wb_front;
+    reg  [208:0] na_in;
+    reg  [208:0] nb_in;
     reg  need_na;
     reg  need_nb;
+    reg  [15:0] tag_hdec;
+    reg  [15:0] tag_tdec;
+    reg  port_free;
+    reg  resp;
+    reg  [1:0] resp_dst;
     reg  req;
     reg  [1:0] req_dst;
     reg  [15:0] req_id;
@@ -369,12 +813,34 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         .q(stop$q),
         .clock(stop$clock)
     );
+    top$ahd_fetch$0 port_pf(
+        .d(port_pf$d),
+        .q(port_pf$q),
+        .clock(port_pf$clock)
+    );
+    top$ahd_fetch$0 port_out(
+        .d(port_out$d),
+        .q(port_out$q),
+        .clock(port_out$clock)
+    );
+    top$done_r port_one(
+        .d(port_one$d),
+        .q(port_one$q),
+        .clock(port_one$clock)
+    );
+    top$ask_n port_credit(
+        .d(port_credit$d),
+        .q(port_credit$q),
+        .clock(port_credit$clock)
+    );
     top$queue queue(
         .clock(queue$clock),
         .clear(queue$clear),
         .lifo(queue$lifo),
         .push(queue$push),
         .push_data(queue$push_data),
+        .push2(queue$push2),
+        .push2_data(queue$push2_data),
         .pop(queue$pop),
         .empty(queue$empty),
         .full(queue$full),
@@ -383,65 +849,700 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         .overflow(queue$overflow),
         .top_data(queue$top_data)
     );
-    top$ent ent(
-        .d(ent$d),
-        .q(ent$q),
-        .clock(ent$clock)
+    top$ahd_ent$0 ahd_ent$0(
+        .d(ahd_ent$0$d),
+        .q(ahd_ent$0$q),
+        .clock(ahd_ent$0$clock)
     );
-    top$done_r ent_valid(
-        .d(ent_valid$d),
-        .q(ent_valid$q),
-        .clock(ent_valid$clock)
+    top$ahd_ent$0 ahd_ent$1(
+        .d(ahd_ent$1$d),
+        .q(ahd_ent$1$q),
+        .clock(ahd_ent$1$clock)
+    );
+    top$ahd_ent$0 ahd_ent$2(
+        .d(ahd_ent$2$d),
+        .q(ahd_ent$2$q),
+        .clock(ahd_ent$2$clock)
+    );
+    top$ahd_ent$0 ahd_ent$3(
+        .d(ahd_ent$3$d),
+        .q(ahd_ent$3$q),
+        .clock(ahd_ent$3$clock)
+    );
+    top$ahd_ent$0 ahd_ent$4(
+        .d(ahd_ent$4$d),
+        .q(ahd_ent$4$q),
+        .clock(ahd_ent$4$clock)
+    );
+    top$ahd_ent$0 ahd_ent$5(
+        .d(ahd_ent$5$d),
+        .q(ahd_ent$5$q),
+        .clock(ahd_ent$5$clock)
+    );
+    top$ahd_ent$0 ahd_ent$6(
+        .d(ahd_ent$6$d),
+        .q(ahd_ent$6$q),
+        .clock(ahd_ent$6$clock)
+    );
+    top$ahd_ent$0 ahd_ent$7(
+        .d(ahd_ent$7$d),
+        .q(ahd_ent$7$q),
+        .clock(ahd_ent$7$clock)
+    );
+    top$ahd_ent$0 ahd_ent$8(
+        .d(ahd_ent$8$d),
+        .q(ahd_ent$8$q),
+        .clock(ahd_ent$8$clock)
+    );
+    top$ahd_ent$0 ahd_ent$9(
+        .d(ahd_ent$9$d),
+        .q(ahd_ent$9$q),
+        .clock(ahd_ent$9$clock)
+    );
+    top$ahd_ent$0 ahd_ent$10(
+        .d(ahd_ent$10$d),
+        .q(ahd_ent$10$q),
+        .clock(ahd_ent$10$clock)
+    );
+    top$ahd_ent$0 ahd_ent$11(
+        .d(ahd_ent$11$d),
+        .q(ahd_ent$11$q),
+        .clock(ahd_ent$11$clock)
+    );
+    top$ahd_ent$0 ahd_ent$12(
+        .d(ahd_ent$12$d),
+        .q(ahd_ent$12$q),
+        .clock(ahd_ent$12$clock)
+    );
+    top$ahd_ent$0 ahd_ent$13(
+        .d(ahd_ent$13$d),
+        .q(ahd_ent$13$q),
+        .clock(ahd_ent$13$clock)
+    );
+    top$ahd_ent$0 ahd_ent$14(
+        .d(ahd_ent$14$d),
+        .q(ahd_ent$14$q),
+        .clock(ahd_ent$14$clock)
+    );
+    top$ahd_ent$0 ahd_ent$15(
+        .d(ahd_ent$15$d),
+        .q(ahd_ent$15$q),
+        .clock(ahd_ent$15$clock)
+    );
+    top$ahd_fetch$0 ahd_fetch$0(
+        .d(ahd_fetch$0$d),
+        .q(ahd_fetch$0$q),
+        .clock(ahd_fetch$0$clock)
+    );
+    top$ahd_fetch$0 ahd_fetch$1(
+        .d(ahd_fetch$1$d),
+        .q(ahd_fetch$1$q),
+        .clock(ahd_fetch$1$clock)
+    );
+    top$ahd_fetch$0 ahd_fetch$2(
+        .d(ahd_fetch$2$d),
+        .q(ahd_fetch$2$q),
+        .clock(ahd_fetch$2$clock)
+    );
+    top$ahd_fetch$0 ahd_fetch$3(
+        .d(ahd_fetch$3$d),
+        .q(ahd_fetch$3$q),
+        .clock(ahd_fetch$3$clock)
+    );
+    top$ahd_fetch$0 ahd_fetch$4(
+        .d(ahd_fetch$4$d),
+        .q(ahd_fetch$4$q),
+        .clock(ahd_fetch$4$clock)
+    );
+    top$ahd_fetch$0 ahd_fetch$5(
+        .d(ahd_fetch$5$d),
+        .q(ahd_fetch$5$q),
+        .clock(ahd_fetch$5$clock)
+    );
+    top$ahd_fetch$0 ahd_fetch$6(
+        .d(ahd_fetch$6$d),
+        .q(ahd_fetch$6$q),
+        .clock(ahd_fetch$6$clock)
+    );
+    top$ahd_fetch$0 ahd_fetch$7(
+        .d(ahd_fetch$7$d),
+        .q(ahd_fetch$7$q),
+        .clock(ahd_fetch$7$clock)
+    );
+    top$ahd_fetch$0 ahd_fetch$8(
+        .d(ahd_fetch$8$d),
+        .q(ahd_fetch$8$q),
+        .clock(ahd_fetch$8$clock)
+    );
+    top$ahd_fetch$0 ahd_fetch$9(
+        .d(ahd_fetch$9$d),
+        .q(ahd_fetch$9$q),
+        .clock(ahd_fetch$9$clock)
+    );
+    top$ahd_fetch$0 ahd_fetch$10(
+        .d(ahd_fetch$10$d),
+        .q(ahd_fetch$10$q),
+        .clock(ahd_fetch$10$clock)
+    );
+    top$ahd_fetch$0 ahd_fetch$11(
+        .d(ahd_fetch$11$d),
+        .q(ahd_fetch$11$q),
+        .clock(ahd_fetch$11$clock)
+    );
+    top$ahd_fetch$0 ahd_fetch$12(
+        .d(ahd_fetch$12$d),
+        .q(ahd_fetch$12$q),
+        .clock(ahd_fetch$12$clock)
+    );
+    top$ahd_fetch$0 ahd_fetch$13(
+        .d(ahd_fetch$13$d),
+        .q(ahd_fetch$13$q),
+        .clock(ahd_fetch$13$clock)
+    );
+    top$ahd_fetch$0 ahd_fetch$14(
+        .d(ahd_fetch$14$d),
+        .q(ahd_fetch$14$q),
+        .clock(ahd_fetch$14$clock)
+    );
+    top$ahd_fetch$0 ahd_fetch$15(
+        .d(ahd_fetch$15$d),
+        .q(ahd_fetch$15$q),
+        .clock(ahd_fetch$15$clock)
+    );
+    top$ahd_fetch$0 ahd_head(
+        .d(ahd_head$d),
+        .q(ahd_head$q),
+        .clock(ahd_head$clock)
+    );
+    top$ahd_fetch$0 ahd_tail(
+        .d(ahd_tail$d),
+        .q(ahd_tail$q),
+        .clock(ahd_tail$clock)
+    );
+    top$ahd_pairs ahd_pairs(
+        .d(ahd_pairs$d),
+        .q(ahd_pairs$q),
+        .clock(ahd_pairs$clock)
     );
     top$done_r ent_second(
         .d(ent_second$d),
         .q(ent_second$q),
         .clock(ent_second$clock)
     );
-    top$done_r na_ok(
-        .d(na_ok$d),
-        .q(na_ok$q),
-        .clock(na_ok$clock)
+    top$done_r last_ok(
+        .d(last_ok$d),
+        .q(last_ok$q),
+        .clock(last_ok$clock)
     );
-    top$dop$doptrf$0$mul_0$s1_sig_a na_id(
-        .d(na_id$d),
-        .q(na_id$q),
-        .clock(na_id$clock)
+    top$dop$doptrf$0$mul_0$s1_sig_a last_a(
+        .d(last_a$d),
+        .q(last_a$q),
+        .clock(last_a$clock)
+    );
+    top$dop$doptrf$0$mul_0$s1_sig_a last_b(
+        .d(last_b$d),
+        .q(last_b$q),
+        .clock(last_b$clock)
+    );
+    top$ask_w$0 ask_w$0(
+        .d(ask_w$0$d),
+        .q(ask_w$0$q),
+        .clock(ask_w$0$clock)
+    );
+    top$ask_w$0 ask_w$1(
+        .d(ask_w$1$d),
+        .q(ask_w$1$q),
+        .clock(ask_w$1$clock)
+    );
+    top$ask_w$0 ask_w$2(
+        .d(ask_w$2$d),
+        .q(ask_w$2$q),
+        .clock(ask_w$2$clock)
+    );
+    top$ask_w$0 ask_w$3(
+        .d(ask_w$3$d),
+        .q(ask_w$3$q),
+        .clock(ask_w$3$clock)
+    );
+    top$ask_w$0 ask_w$4(
+        .d(ask_w$4$d),
+        .q(ask_w$4$q),
+        .clock(ask_w$4$clock)
+    );
+    top$ask_w$0 ask_w$5(
+        .d(ask_w$5$d),
+        .q(ask_w$5$q),
+        .clock(ask_w$5$clock)
+    );
+    top$ask_w$0 ask_w$6(
+        .d(ask_w$6$d),
+        .q(ask_w$6$q),
+        .clock(ask_w$6$clock)
+    );
+    top$ask_w$0 ask_w$7(
+        .d(ask_w$7$d),
+        .q(ask_w$7$q),
+        .clock(ask_w$7$clock)
+    );
+    top$ask_w$0 ask_w$8(
+        .d(ask_w$8$d),
+        .q(ask_w$8$q),
+        .clock(ask_w$8$clock)
+    );
+    top$ask_w$0 ask_w$9(
+        .d(ask_w$9$d),
+        .q(ask_w$9$q),
+        .clock(ask_w$9$clock)
+    );
+    top$ask_w$0 ask_w$10(
+        .d(ask_w$10$d),
+        .q(ask_w$10$q),
+        .clock(ask_w$10$clock)
+    );
+    top$ask_w$0 ask_w$11(
+        .d(ask_w$11$d),
+        .q(ask_w$11$q),
+        .clock(ask_w$11$clock)
+    );
+    top$ask_w$0 ask_w$12(
+        .d(ask_w$12$d),
+        .q(ask_w$12$q),
+        .clock(ask_w$12$clock)
+    );
+    top$ask_w$0 ask_w$13(
+        .d(ask_w$13$d),
+        .q(ask_w$13$q),
+        .clock(ask_w$13$clock)
+    );
+    top$ask_w$0 ask_w$14(
+        .d(ask_w$14$d),
+        .q(ask_w$14$q),
+        .clock(ask_w$14$clock)
+    );
+    top$ask_w$0 ask_w$15(
+        .d(ask_w$15$d),
+        .q(ask_w$15$q),
+        .clock(ask_w$15$clock)
+    );
+    top$ask_w$0 ask_w$16(
+        .d(ask_w$16$d),
+        .q(ask_w$16$q),
+        .clock(ask_w$16$clock)
+    );
+    top$ask_w$0 ask_w$17(
+        .d(ask_w$17$d),
+        .q(ask_w$17$q),
+        .clock(ask_w$17$clock)
+    );
+    top$ask_w$0 ask_w$18(
+        .d(ask_w$18$d),
+        .q(ask_w$18$q),
+        .clock(ask_w$18$clock)
+    );
+    top$ask_w$0 ask_w$19(
+        .d(ask_w$19$d),
+        .q(ask_w$19$q),
+        .clock(ask_w$19$clock)
+    );
+    top$ask_w$0 ask_w$20(
+        .d(ask_w$20$d),
+        .q(ask_w$20$q),
+        .clock(ask_w$20$clock)
+    );
+    top$ask_w$0 ask_w$21(
+        .d(ask_w$21$d),
+        .q(ask_w$21$q),
+        .clock(ask_w$21$clock)
+    );
+    top$ask_w$0 ask_w$22(
+        .d(ask_w$22$d),
+        .q(ask_w$22$q),
+        .clock(ask_w$22$clock)
+    );
+    top$ask_w$0 ask_w$23(
+        .d(ask_w$23$d),
+        .q(ask_w$23$q),
+        .clock(ask_w$23$clock)
+    );
+    top$ask_w$0 ask_w$24(
+        .d(ask_w$24$d),
+        .q(ask_w$24$q),
+        .clock(ask_w$24$clock)
+    );
+    top$ask_w$0 ask_w$25(
+        .d(ask_w$25$d),
+        .q(ask_w$25$q),
+        .clock(ask_w$25$clock)
+    );
+    top$ask_w$0 ask_w$26(
+        .d(ask_w$26$d),
+        .q(ask_w$26$q),
+        .clock(ask_w$26$clock)
+    );
+    top$ask_w$0 ask_w$27(
+        .d(ask_w$27$d),
+        .q(ask_w$27$q),
+        .clock(ask_w$27$clock)
+    );
+    top$ask_w$0 ask_w$28(
+        .d(ask_w$28$d),
+        .q(ask_w$28$q),
+        .clock(ask_w$28$clock)
+    );
+    top$ask_w$0 ask_w$29(
+        .d(ask_w$29$d),
+        .q(ask_w$29$q),
+        .clock(ask_w$29$clock)
+    );
+    top$ask_w$0 ask_w$30(
+        .d(ask_w$30$d),
+        .q(ask_w$30$q),
+        .clock(ask_w$30$clock)
+    );
+    top$ask_w$0 ask_w$31(
+        .d(ask_w$31$d),
+        .q(ask_w$31$q),
+        .clock(ask_w$31$clock)
+    );
+    top$ahd_pairs ask_head(
+        .d(ask_head$d),
+        .q(ask_head$q),
+        .clock(ask_head$clock)
+    );
+    top$ahd_pairs ask_tail(
+        .d(ask_tail$d),
+        .q(ask_tail$q),
+        .clock(ask_tail$clock)
+    );
+    top$ask_n ask_n(
+        .d(ask_n$d),
+        .q(ask_n$q),
+        .clock(ask_n$clock)
+    );
+    top$ahd_pairs seq_head(
+        .d(seq_head$d),
+        .q(seq_head$q),
+        .clock(seq_head$clock)
+    );
+    top$ahd_pairs seq_tail(
+        .d(seq_tail$d),
+        .q(seq_tail$q),
+        .clock(seq_tail$clock)
+    );
+    top$na_word wa$0(
+        .d(wa$0$d),
+        .q(wa$0$q),
+        .clock(wa$0$clock)
+    );
+    top$na_word wa$1(
+        .d(wa$1$d),
+        .q(wa$1$q),
+        .clock(wa$1$clock)
+    );
+    top$na_word wa$2(
+        .d(wa$2$d),
+        .q(wa$2$q),
+        .clock(wa$2$clock)
+    );
+    top$na_word wa$3(
+        .d(wa$3$d),
+        .q(wa$3$q),
+        .clock(wa$3$clock)
+    );
+    top$na_word wa$4(
+        .d(wa$4$d),
+        .q(wa$4$q),
+        .clock(wa$4$clock)
+    );
+    top$na_word wa$5(
+        .d(wa$5$d),
+        .q(wa$5$q),
+        .clock(wa$5$clock)
+    );
+    top$na_word wa$6(
+        .d(wa$6$d),
+        .q(wa$6$q),
+        .clock(wa$6$clock)
+    );
+    top$na_word wa$7(
+        .d(wa$7$d),
+        .q(wa$7$q),
+        .clock(wa$7$clock)
+    );
+    top$na_word wa$8(
+        .d(wa$8$d),
+        .q(wa$8$q),
+        .clock(wa$8$clock)
+    );
+    top$na_word wa$9(
+        .d(wa$9$d),
+        .q(wa$9$q),
+        .clock(wa$9$clock)
+    );
+    top$na_word wa$10(
+        .d(wa$10$d),
+        .q(wa$10$q),
+        .clock(wa$10$clock)
+    );
+    top$na_word wa$11(
+        .d(wa$11$d),
+        .q(wa$11$q),
+        .clock(wa$11$clock)
+    );
+    top$na_word wa$12(
+        .d(wa$12$d),
+        .q(wa$12$q),
+        .clock(wa$12$clock)
+    );
+    top$na_word wa$13(
+        .d(wa$13$d),
+        .q(wa$13$q),
+        .clock(wa$13$clock)
+    );
+    top$na_word wa$14(
+        .d(wa$14$d),
+        .q(wa$14$q),
+        .clock(wa$14$clock)
+    );
+    top$na_word wa$15(
+        .d(wa$15$d),
+        .q(wa$15$q),
+        .clock(wa$15$clock)
+    );
+    top$ahd_fetch$0 wa_head(
+        .d(wa_head$d),
+        .q(wa_head$q),
+        .clock(wa_head$clock)
+    );
+    top$ahd_fetch$0 wa_tail(
+        .d(wa_tail$d),
+        .q(wa_tail$q),
+        .clock(wa_tail$clock)
+    );
+    top$ahd_pairs wa_n(
+        .d(wa_n$d),
+        .q(wa_n$q),
+        .clock(wa_n$clock)
+    );
+    top$na_word wb$0(
+        .d(wb$0$d),
+        .q(wb$0$q),
+        .clock(wb$0$clock)
+    );
+    top$na_word wb$1(
+        .d(wb$1$d),
+        .q(wb$1$q),
+        .clock(wb$1$clock)
+    );
+    top$na_word wb$2(
+        .d(wb$2$d),
+        .q(wb$2$q),
+        .clock(wb$2$clock)
+    );
+    top$na_word wb$3(
+        .d(wb$3$d),
+        .q(wb$3$q),
+        .clock(wb$3$clock)
+    );
+    top$na_word wb$4(
+        .d(wb$4$d),
+        .q(wb$4$q),
+        .clock(wb$4$clock)
+    );
+    top$na_word wb$5(
+        .d(wb$5$d),
+        .q(wb$5$q),
+        .clock(wb$5$clock)
+    );
+    top$na_word wb$6(
+        .d(wb$6$d),
+        .q(wb$6$q),
+        .clock(wb$6$clock)
+    );
+    top$na_word wb$7(
+        .d(wb$7$d),
+        .q(wb$7$q),
+        .clock(wb$7$clock)
+    );
+    top$na_word wb$8(
+        .d(wb$8$d),
+        .q(wb$8$q),
+        .clock(wb$8$clock)
+    );
+    top$na_word wb$9(
+        .d(wb$9$d),
+        .q(wb$9$q),
+        .clock(wb$9$clock)
+    );
+    top$na_word wb$10(
+        .d(wb$10$d),
+        .q(wb$10$q),
+        .clock(wb$10$clock)
+    );
+    top$na_word wb$11(
+        .d(wb$11$d),
+        .q(wb$11$q),
+        .clock(wb$11$clock)
+    );
+    top$na_word wb$12(
+        .d(wb$12$d),
+        .q(wb$12$q),
+        .clock(wb$12$clock)
+    );
+    top$na_word wb$13(
+        .d(wb$13$d),
+        .q(wb$13$q),
+        .clock(wb$13$clock)
+    );
+    top$na_word wb$14(
+        .d(wb$14$d),
+        .q(wb$14$q),
+        .clock(wb$14$clock)
+    );
+    top$na_word wb$15(
+        .d(wb$15$d),
+        .q(wb$15$q),
+        .clock(wb$15$clock)
+    );
+    top$ahd_fetch$0 wb_head(
+        .d(wb_head$d),
+        .q(wb_head$q),
+        .clock(wb_head$clock)
+    );
+    top$ahd_fetch$0 wb_tail(
+        .d(wb_tail$d),
+        .q(wb_tail$q),
+        .clock(wb_tail$clock)
+    );
+    top$ahd_pairs wb_n(
+        .d(wb_n$d),
+        .q(wb_n$q),
+        .clock(wb_n$clock)
     );
     top$na_word na_word(
         .d(na_word$d),
         .q(na_word$q),
         .clock(na_word$clock)
     );
-    top$done_r nb_ok(
-        .d(nb_ok$d),
-        .q(nb_ok$q),
-        .clock(nb_ok$clock)
-    );
-    top$dop$doptrf$0$mul_0$s1_sig_a nb_id(
-        .d(nb_id$d),
-        .q(nb_id$q),
-        .clock(nb_id$clock)
-    );
     top$na_word nb_word(
         .d(nb_word$d),
         .q(nb_word$q),
         .clock(nb_word$clock)
     );
-    top$done_r outstanding(
-        .d(outstanding$d),
-        .q(outstanding$q),
-        .clock(outstanding$clock)
+    top$tags$0 tags$0(
+        .d(tags$0$d),
+        .q(tags$0$q),
+        .clock(tags$0$clock)
     );
-    top$dst dst(
-        .d(dst$d),
-        .q(dst$q),
-        .clock(dst$clock)
+    top$tags$0 tags$1(
+        .d(tags$1$d),
+        .q(tags$1$q),
+        .clock(tags$1$clock)
     );
-    top$dop$doptrf$0$mul_0$s1_sig_a dst_id(
-        .d(dst_id$d),
-        .q(dst_id$q),
-        .clock(dst_id$clock)
+    top$tags$0 tags$2(
+        .d(tags$2$d),
+        .q(tags$2$q),
+        .clock(tags$2$clock)
+    );
+    top$tags$0 tags$3(
+        .d(tags$3$d),
+        .q(tags$3$q),
+        .clock(tags$3$clock)
+    );
+    top$tags$0 tags$4(
+        .d(tags$4$d),
+        .q(tags$4$q),
+        .clock(tags$4$clock)
+    );
+    top$tags$0 tags$5(
+        .d(tags$5$d),
+        .q(tags$5$q),
+        .clock(tags$5$clock)
+    );
+    top$tags$0 tags$6(
+        .d(tags$6$d),
+        .q(tags$6$q),
+        .clock(tags$6$clock)
+    );
+    top$tags$0 tags$7(
+        .d(tags$7$d),
+        .q(tags$7$q),
+        .clock(tags$7$clock)
+    );
+    top$tags$0 tags$8(
+        .d(tags$8$d),
+        .q(tags$8$q),
+        .clock(tags$8$clock)
+    );
+    top$tags$0 tags$9(
+        .d(tags$9$d),
+        .q(tags$9$q),
+        .clock(tags$9$clock)
+    );
+    top$tags$0 tags$10(
+        .d(tags$10$d),
+        .q(tags$10$q),
+        .clock(tags$10$clock)
+    );
+    top$tags$0 tags$11(
+        .d(tags$11$d),
+        .q(tags$11$q),
+        .clock(tags$11$clock)
+    );
+    top$tags$0 tags$12(
+        .d(tags$12$d),
+        .q(tags$12$q),
+        .clock(tags$12$clock)
+    );
+    top$tags$0 tags$13(
+        .d(tags$13$d),
+        .q(tags$13$q),
+        .clock(tags$13$clock)
+    );
+    top$tags$0 tags$14(
+        .d(tags$14$d),
+        .q(tags$14$q),
+        .clock(tags$14$clock)
+    );
+    top$tags$0 tags$15(
+        .d(tags$15$d),
+        .q(tags$15$q),
+        .clock(tags$15$clock)
+    );
+    top$ahd_fetch$0 tag_head(
+        .d(tag_head$d),
+        .q(tag_head$q),
+        .clock(tag_head$clock)
+    );
+    top$ahd_fetch$0 tag_tail(
+        .d(tag_tail$d),
+        .q(tag_tail$q),
+        .clock(tag_tail$clock)
+    );
+    top$ahd_pairs tag_n(
+        .d(tag_n$d),
+        .q(tag_n$q),
+        .clock(tag_n$clock)
+    );
+    top$done_r ta_pend(
+        .d(ta_pend$d),
+        .q(ta_pend$q),
+        .clock(ta_pend$clock)
+    );
+    top$dop$doptrf$0$mul_0$s1_sig_a ta_req(
+        .d(ta_req$d),
+        .q(ta_req$q),
+        .clock(ta_req$clock)
+    );
+    top$done_r tb_pend(
+        .d(tb_pend$d),
+        .q(tb_pend$q),
+        .clock(tb_pend$clock)
+    );
+    top$dop$doptrf$0$mul_0$s1_sig_a tb_req(
+        .d(tb_req$d),
+        .q(tb_req$q),
+        .clock(tb_req$clock)
     );
     top$dop dop(
         .clock(dop$clock),
@@ -476,7 +1577,7 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         .q(last_issue$q),
         .clock(last_issue$clock)
     );
-    top$dop$jsel_0$0 inflight(
+    top$ahd_pairs inflight(
         .d(inflight$d),
         .q(inflight$q),
         .clock(inflight$clock)
@@ -486,7 +1587,7 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         .q(pend$q),
         .clock(pend$clock)
     );
-    top$ent pend_data(
+    top$ahd_ent$0 pend_data(
         .d(pend_data$d),
         .q(pend_data$q),
         .clock(pend_data$clock)
@@ -504,7 +1605,7 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         .almost_full(leaf_fifo$almost_full),
         .overflow(leaf_fifo$overflow)
     );
-    top$dop$jsel_0$0 leaf_count(
+    top$ask_n leaf_count(
         .d(leaf_count$d),
         .q(leaf_count$q),
         .clock(leaf_count$clock)
@@ -657,38 +1758,300 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         base_nb$d = base_nb$q;
         base_ta$d = base_ta$q;
         base_tb$d = base_tb$q;
+        port_pf$clock = clock;
+        port_out$clock = clock;
+        port_one$clock = clock;
+        port_credit$clock = clock;
         run$clock = clock;
         done_r$clock = clock;
         push_root$clock = clock;
         stop$clock = clock;
-        ent$clock = clock;
-        ent_valid$clock = clock;
-        ent_second$clock = clock;
+        port_pf$d = port_pf$q;
+        port_out$d = port_out$q;
+        port_one$d = port_one$q;
+        port_credit$d = port_credit$q;
         run$d = run$q;
         done_r$d = done_r$q;
         push_root$d = push_root$q;
         stop$d = stop$q;
-        ent$d = ent$q;
-        ent_valid$d = ent_valid$q;
+        ahd_head$clock = clock;
+        ahd_tail$clock = clock;
+        ahd_pairs$clock = clock;
+        ent_second$clock = clock;
+        last_ok$clock = clock;
+        last_a$clock = clock;
+        last_b$clock = clock;
+        ahd_head$d = ahd_head$q;
+        ahd_tail$d = ahd_tail$q;
+        ahd_pairs$d = ahd_pairs$q;
         ent_second$d = ent_second$q;
-        na_ok$clock = clock;
-        na_id$clock = clock;
+        last_ok$d = last_ok$q;
+        last_a$d = last_a$q;
+        last_b$d = last_b$q;
+        ask_head$clock = clock;
+        ask_tail$clock = clock;
+        ask_n$clock = clock;
+        seq_head$clock = clock;
+        seq_tail$clock = clock;
+        ask_head$d = ask_head$q;
+        ask_tail$d = ask_tail$q;
+        ask_n$d = ask_n$q;
+        seq_head$d = seq_head$q;
+        seq_tail$d = seq_tail$q;
+        wa_head$clock = clock;
+        wa_tail$clock = clock;
+        wa_n$clock = clock;
+        wb_head$clock = clock;
+        wb_tail$clock = clock;
+        wb_n$clock = clock;
         na_word$clock = clock;
-        nb_ok$clock = clock;
-        nb_id$clock = clock;
         nb_word$clock = clock;
-        outstanding$clock = clock;
-        dst$clock = clock;
-        dst_id$clock = clock;
-        na_ok$d = na_ok$q;
-        na_id$d = na_id$q;
+        wa_head$d = wa_head$q;
+        wa_tail$d = wa_tail$q;
+        wa_n$d = wa_n$q;
+        wb_head$d = wb_head$q;
+        wb_tail$d = wb_tail$q;
+        wb_n$d = wb_n$q;
         na_word$d = na_word$q;
-        nb_ok$d = nb_ok$q;
-        nb_id$d = nb_id$q;
         nb_word$d = nb_word$q;
-        outstanding$d = outstanding$q;
-        dst$d = dst$q;
-        dst_id$d = dst_id$q;
+        tag_head$clock = clock;
+        tag_tail$clock = clock;
+        tag_n$clock = clock;
+        ta_pend$clock = clock;
+        ta_req$clock = clock;
+        tb_pend$clock = clock;
+        tb_req$clock = clock;
+        tag_head$d = tag_head$q;
+        tag_tail$d = tag_tail$q;
+        tag_n$d = tag_n$q;
+        ta_pend$d = ta_pend$q;
+        ta_req$d = ta_req$q;
+        tb_pend$d = tb_pend$q;
+        tb_req$d = tb_req$q;
+        ahd_ent$0$clock = clock;
+        ahd_ent$0$d = ahd_ent$0$q;
+        ahd_fetch$0$clock = clock;
+        ahd_fetch$0$d = ahd_fetch$0$q;
+        wa$0$clock = clock;
+        wa$0$d = wa$0$q;
+        wb$0$clock = clock;
+        wb$0$d = wb$0$q;
+        ahd_ent$1$clock = clock;
+        ahd_ent$1$d = ahd_ent$1$q;
+        ahd_fetch$1$clock = clock;
+        ahd_fetch$1$d = ahd_fetch$1$q;
+        wa$1$clock = clock;
+        wa$1$d = wa$1$q;
+        wb$1$clock = clock;
+        wb$1$d = wb$1$q;
+        ahd_ent$2$clock = clock;
+        ahd_ent$2$d = ahd_ent$2$q;
+        ahd_fetch$2$clock = clock;
+        ahd_fetch$2$d = ahd_fetch$2$q;
+        wa$2$clock = clock;
+        wa$2$d = wa$2$q;
+        wb$2$clock = clock;
+        wb$2$d = wb$2$q;
+        ahd_ent$3$clock = clock;
+        ahd_ent$3$d = ahd_ent$3$q;
+        ahd_fetch$3$clock = clock;
+        ahd_fetch$3$d = ahd_fetch$3$q;
+        wa$3$clock = clock;
+        wa$3$d = wa$3$q;
+        wb$3$clock = clock;
+        wb$3$d = wb$3$q;
+        ahd_ent$4$clock = clock;
+        ahd_ent$4$d = ahd_ent$4$q;
+        ahd_fetch$4$clock = clock;
+        ahd_fetch$4$d = ahd_fetch$4$q;
+        wa$4$clock = clock;
+        wa$4$d = wa$4$q;
+        wb$4$clock = clock;
+        wb$4$d = wb$4$q;
+        ahd_ent$5$clock = clock;
+        ahd_ent$5$d = ahd_ent$5$q;
+        ahd_fetch$5$clock = clock;
+        ahd_fetch$5$d = ahd_fetch$5$q;
+        wa$5$clock = clock;
+        wa$5$d = wa$5$q;
+        wb$5$clock = clock;
+        wb$5$d = wb$5$q;
+        ahd_ent$6$clock = clock;
+        ahd_ent$6$d = ahd_ent$6$q;
+        ahd_fetch$6$clock = clock;
+        ahd_fetch$6$d = ahd_fetch$6$q;
+        wa$6$clock = clock;
+        wa$6$d = wa$6$q;
+        wb$6$clock = clock;
+        wb$6$d = wb$6$q;
+        ahd_ent$7$clock = clock;
+        ahd_ent$7$d = ahd_ent$7$q;
+        ahd_fetch$7$clock = clock;
+        ahd_fetch$7$d = ahd_fetch$7$q;
+        wa$7$clock = clock;
+        wa$7$d = wa$7$q;
+        wb$7$clock = clock;
+        wb$7$d = wb$7$q;
+        ahd_ent$8$clock = clock;
+        ahd_ent$8$d = ahd_ent$8$q;
+        ahd_fetch$8$clock = clock;
+        ahd_fetch$8$d = ahd_fetch$8$q;
+        wa$8$clock = clock;
+        wa$8$d = wa$8$q;
+        wb$8$clock = clock;
+        wb$8$d = wb$8$q;
+        ahd_ent$9$clock = clock;
+        ahd_ent$9$d = ahd_ent$9$q;
+        ahd_fetch$9$clock = clock;
+        ahd_fetch$9$d = ahd_fetch$9$q;
+        wa$9$clock = clock;
+        wa$9$d = wa$9$q;
+        wb$9$clock = clock;
+        wb$9$d = wb$9$q;
+        ahd_ent$10$clock = clock;
+        ahd_ent$10$d = ahd_ent$10$q;
+        ahd_fetch$10$clock = clock;
+        ahd_fetch$10$d = ahd_fetch$10$q;
+        wa$10$clock = clock;
+        wa$10$d = wa$10$q;
+        wb$10$clock = clock;
+        wb$10$d = wb$10$q;
+        ahd_ent$11$clock = clock;
+        ahd_ent$11$d = ahd_ent$11$q;
+        ahd_fetch$11$clock = clock;
+        ahd_fetch$11$d = ahd_fetch$11$q;
+        wa$11$clock = clock;
+        wa$11$d = wa$11$q;
+        wb$11$clock = clock;
+        wb$11$d = wb$11$q;
+        ahd_ent$12$clock = clock;
+        ahd_ent$12$d = ahd_ent$12$q;
+        ahd_fetch$12$clock = clock;
+        ahd_fetch$12$d = ahd_fetch$12$q;
+        wa$12$clock = clock;
+        wa$12$d = wa$12$q;
+        wb$12$clock = clock;
+        wb$12$d = wb$12$q;
+        ahd_ent$13$clock = clock;
+        ahd_ent$13$d = ahd_ent$13$q;
+        ahd_fetch$13$clock = clock;
+        ahd_fetch$13$d = ahd_fetch$13$q;
+        wa$13$clock = clock;
+        wa$13$d = wa$13$q;
+        wb$13$clock = clock;
+        wb$13$d = wb$13$q;
+        ahd_ent$14$clock = clock;
+        ahd_ent$14$d = ahd_ent$14$q;
+        ahd_fetch$14$clock = clock;
+        ahd_fetch$14$d = ahd_fetch$14$q;
+        wa$14$clock = clock;
+        wa$14$d = wa$14$q;
+        wb$14$clock = clock;
+        wb$14$d = wb$14$q;
+        ahd_ent$15$clock = clock;
+        ahd_ent$15$d = ahd_ent$15$q;
+        ahd_fetch$15$clock = clock;
+        ahd_fetch$15$d = ahd_fetch$15$q;
+        wa$15$clock = clock;
+        wa$15$d = wa$15$q;
+        wb$15$clock = clock;
+        wb$15$d = wb$15$q;
+        ask_w$0$clock = clock;
+        ask_w$0$d = ask_w$0$q;
+        ask_w$1$clock = clock;
+        ask_w$1$d = ask_w$1$q;
+        ask_w$2$clock = clock;
+        ask_w$2$d = ask_w$2$q;
+        ask_w$3$clock = clock;
+        ask_w$3$d = ask_w$3$q;
+        ask_w$4$clock = clock;
+        ask_w$4$d = ask_w$4$q;
+        ask_w$5$clock = clock;
+        ask_w$5$d = ask_w$5$q;
+        ask_w$6$clock = clock;
+        ask_w$6$d = ask_w$6$q;
+        ask_w$7$clock = clock;
+        ask_w$7$d = ask_w$7$q;
+        ask_w$8$clock = clock;
+        ask_w$8$d = ask_w$8$q;
+        ask_w$9$clock = clock;
+        ask_w$9$d = ask_w$9$q;
+        ask_w$10$clock = clock;
+        ask_w$10$d = ask_w$10$q;
+        ask_w$11$clock = clock;
+        ask_w$11$d = ask_w$11$q;
+        ask_w$12$clock = clock;
+        ask_w$12$d = ask_w$12$q;
+        ask_w$13$clock = clock;
+        ask_w$13$d = ask_w$13$q;
+        ask_w$14$clock = clock;
+        ask_w$14$d = ask_w$14$q;
+        ask_w$15$clock = clock;
+        ask_w$15$d = ask_w$15$q;
+        ask_w$16$clock = clock;
+        ask_w$16$d = ask_w$16$q;
+        ask_w$17$clock = clock;
+        ask_w$17$d = ask_w$17$q;
+        ask_w$18$clock = clock;
+        ask_w$18$d = ask_w$18$q;
+        ask_w$19$clock = clock;
+        ask_w$19$d = ask_w$19$q;
+        ask_w$20$clock = clock;
+        ask_w$20$d = ask_w$20$q;
+        ask_w$21$clock = clock;
+        ask_w$21$d = ask_w$21$q;
+        ask_w$22$clock = clock;
+        ask_w$22$d = ask_w$22$q;
+        ask_w$23$clock = clock;
+        ask_w$23$d = ask_w$23$q;
+        ask_w$24$clock = clock;
+        ask_w$24$d = ask_w$24$q;
+        ask_w$25$clock = clock;
+        ask_w$25$d = ask_w$25$q;
+        ask_w$26$clock = clock;
+        ask_w$26$d = ask_w$26$q;
+        ask_w$27$clock = clock;
+        ask_w$27$d = ask_w$27$q;
+        ask_w$28$clock = clock;
+        ask_w$28$d = ask_w$28$q;
+        ask_w$29$clock = clock;
+        ask_w$29$d = ask_w$29$q;
+        ask_w$30$clock = clock;
+        ask_w$30$d = ask_w$30$q;
+        ask_w$31$clock = clock;
+        ask_w$31$d = ask_w$31$q;
+        tags$0$clock = clock;
+        tags$0$d = tags$0$q;
+        tags$1$clock = clock;
+        tags$1$d = tags$1$q;
+        tags$2$clock = clock;
+        tags$2$d = tags$2$q;
+        tags$3$clock = clock;
+        tags$3$d = tags$3$q;
+        tags$4$clock = clock;
+        tags$4$d = tags$4$q;
+        tags$5$clock = clock;
+        tags$5$d = tags$5$q;
+        tags$6$clock = clock;
+        tags$6$d = tags$6$q;
+        tags$7$clock = clock;
+        tags$7$d = tags$7$q;
+        tags$8$clock = clock;
+        tags$8$d = tags$8$q;
+        tags$9$clock = clock;
+        tags$9$d = tags$9$q;
+        tags$10$clock = clock;
+        tags$10$d = tags$10$q;
+        tags$11$clock = clock;
+        tags$11$d = tags$11$q;
+        tags$12$clock = clock;
+        tags$12$d = tags$12$q;
+        tags$13$clock = clock;
+        tags$13$d = tags$13$q;
+        tags$14$clock = clock;
+        tags$14$d = tags$14$q;
+        tags$15$clock = clock;
+        tags$15$d = tags$15$q;
         last_issue$clock = clock;
         inflight$clock = clock;
         pend$clock = clock;
@@ -756,102 +2119,619 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
             if (host_addr == 32'h125) begin
                 base_tb$d = host_data[(32'h0)+:(24)];
             end
+            if (host_addr == 32'h126) begin
+                port_pf$d = host_data[(32'h0)+:(4)];
+                port_out$d = host_data[(32'h4)+:(4)];
+                port_one$d = host_data[32'h8];
+                port_credit$d = host_data[(32'h9)+:(6)];
+            end
+        end
+        pf = ((port_pf$q) & 5'h1f);
+        if (((port_pf$q) & 5'h1f) > c_pf_max) begin
+            pf = c_pf_max;
+        end
+        credit_lim = port_credit$q;
+        if (port_credit$q == 32'h0) begin
+            credit_lim = c_credit;
         end
         halt = stop$q | queue$overflow;
-        cur_a = ent$q[(32'h0)+:(16)];
-        cur_b = ent$q[(32'h10)+:(16)];
-        cur_flip = ent$q[(32'h20)+:(1)];
+        go = run$q & ~halt;
+        head_dec = c_one16 << ahd_head$q;
+        tail_dec = c_one16 << ahd_tail$q;
+        head_ent = 32'h0;
+        head_fetch = 32'h0;
+        if (head_dec[0]) begin
+            head_ent = ahd_ent$0$q;
+            head_fetch = ahd_fetch$0$q;
+        end
+        if (head_dec[1]) begin
+            head_ent = ahd_ent$1$q;
+            head_fetch = ahd_fetch$1$q;
+        end
+        if (head_dec[2]) begin
+            head_ent = ahd_ent$2$q;
+            head_fetch = ahd_fetch$2$q;
+        end
+        if (head_dec[3]) begin
+            head_ent = ahd_ent$3$q;
+            head_fetch = ahd_fetch$3$q;
+        end
+        if (head_dec[4]) begin
+            head_ent = ahd_ent$4$q;
+            head_fetch = ahd_fetch$4$q;
+        end
+        if (head_dec[5]) begin
+            head_ent = ahd_ent$5$q;
+            head_fetch = ahd_fetch$5$q;
+        end
+        if (head_dec[6]) begin
+            head_ent = ahd_ent$6$q;
+            head_fetch = ahd_fetch$6$q;
+        end
+        if (head_dec[7]) begin
+            head_ent = ahd_ent$7$q;
+            head_fetch = ahd_fetch$7$q;
+        end
+        if (head_dec[8]) begin
+            head_ent = ahd_ent$8$q;
+            head_fetch = ahd_fetch$8$q;
+        end
+        if (head_dec[9]) begin
+            head_ent = ahd_ent$9$q;
+            head_fetch = ahd_fetch$9$q;
+        end
+        if (head_dec[10]) begin
+            head_ent = ahd_ent$10$q;
+            head_fetch = ahd_fetch$10$q;
+        end
+        if (head_dec[11]) begin
+            head_ent = ahd_ent$11$q;
+            head_fetch = ahd_fetch$11$q;
+        end
+        if (head_dec[12]) begin
+            head_ent = ahd_ent$12$q;
+            head_fetch = ahd_fetch$12$q;
+        end
+        if (head_dec[13]) begin
+            head_ent = ahd_ent$13$q;
+            head_fetch = ahd_fetch$13$q;
+        end
+        if (head_dec[14]) begin
+            head_ent = ahd_ent$14$q;
+            head_fetch = ahd_fetch$14$q;
+        end
+        if (head_dec[15]) begin
+            head_ent = ahd_ent$15$q;
+            head_fetch = ahd_fetch$15$q;
+        end
+        ent_valid = ahd_pairs$q != 32'h0;
+        cur_a = head_ent[(32'h0)+:(16)];
+        cur_b = head_ent[(32'h10)+:(16)];
+        cur_flip = head_ent[(32'h20)+:(1)];
+        cur_fa = head_fetch[32'h0];
+        cur_fb = head_fetch[32'h1];
         if (ent_second$q) begin
-            cur_a = ent$q[(32'h21)+:(16)];
-            cur_b = ent$q[(32'h31)+:(16)];
-            cur_flip = ent$q[(32'h41)+:(1)];
+            cur_a = head_ent[(32'h21)+:(16)];
+            cur_b = head_ent[(32'h31)+:(16)];
+            cur_flip = head_ent[(32'h41)+:(1)];
+            cur_fa = head_fetch[32'h2];
+            cur_fb = head_fetch[32'h3];
         end
-        ent_last = ent_second$q | ~ent$q[32'h42];
-        need_na = run$q & ~halt & ent_valid$q & ~(na_ok$q & (na_id$q == cur_a));
-        need_nb = run$q & ~halt & ent_valid$q & ~(nb_ok$q & (nb_id$q == cur_b));
-        need_ta = run$q & ~halt & leaf_valid$q & ~(ta_ok$q & (ta_id$q == leaf_tag$q[(32'h0)+:(16)]));
-        need_tb = run$q & ~halt & leaf_valid$q & ~(tb_ok$q & (tb_id$q == leaf_tag$q[(32'h10)+:(16)]));
-        req_dst = 32'h1;
-        req_id = cur_b;
-        req_addr = base_nb$q + ((cur_b) & 24'hffffff);
-        if (need_na) begin
-            req_dst = 32'h0;
-            req_id = cur_a;
-            req_addr = base_na$q + ((cur_a) & 24'hffffff);
+        ent_last = ent_second$q | ~head_ent[32'h42];
+        wa_hdec = c_one16 << wa_head$q;
+        wa_tdec = c_one16 << wa_tail$q;
+        wb_hdec = c_one16 << wb_head$q;
+        wb_tdec = c_one16 << wb_tail$q;
+        wa_front = 32'h0;
+        wb_front = 32'h0;
+        if (wa_hdec[0]) begin
+            wa_front = wa$0$q;
         end
-        if (need_tb) begin
+        if (wb_hdec[0]) begin
+            wb_front = wb$0$q;
+        end
+        if (wa_hdec[1]) begin
+            wa_front = wa$1$q;
+        end
+        if (wb_hdec[1]) begin
+            wb_front = wb$1$q;
+        end
+        if (wa_hdec[2]) begin
+            wa_front = wa$2$q;
+        end
+        if (wb_hdec[2]) begin
+            wb_front = wb$2$q;
+        end
+        if (wa_hdec[3]) begin
+            wa_front = wa$3$q;
+        end
+        if (wb_hdec[3]) begin
+            wb_front = wb$3$q;
+        end
+        if (wa_hdec[4]) begin
+            wa_front = wa$4$q;
+        end
+        if (wb_hdec[4]) begin
+            wb_front = wb$4$q;
+        end
+        if (wa_hdec[5]) begin
+            wa_front = wa$5$q;
+        end
+        if (wb_hdec[5]) begin
+            wb_front = wb$5$q;
+        end
+        if (wa_hdec[6]) begin
+            wa_front = wa$6$q;
+        end
+        if (wb_hdec[6]) begin
+            wb_front = wb$6$q;
+        end
+        if (wa_hdec[7]) begin
+            wa_front = wa$7$q;
+        end
+        if (wb_hdec[7]) begin
+            wb_front = wb$7$q;
+        end
+        if (wa_hdec[8]) begin
+            wa_front = wa$8$q;
+        end
+        if (wb_hdec[8]) begin
+            wb_front = wb$8$q;
+        end
+        if (wa_hdec[9]) begin
+            wa_front = wa$9$q;
+        end
+        if (wb_hdec[9]) begin
+            wb_front = wb$9$q;
+        end
+        if (wa_hdec[10]) begin
+            wa_front = wa$10$q;
+        end
+        if (wb_hdec[10]) begin
+            wb_front = wb$10$q;
+        end
+        if (wa_hdec[11]) begin
+            wa_front = wa$11$q;
+        end
+        if (wb_hdec[11]) begin
+            wb_front = wb$11$q;
+        end
+        if (wa_hdec[12]) begin
+            wa_front = wa$12$q;
+        end
+        if (wb_hdec[12]) begin
+            wb_front = wb$12$q;
+        end
+        if (wa_hdec[13]) begin
+            wa_front = wa$13$q;
+        end
+        if (wb_hdec[13]) begin
+            wb_front = wb$13$q;
+        end
+        if (wa_hdec[14]) begin
+            wa_front = wa$14$q;
+        end
+        if (wb_hdec[14]) begin
+            wb_front = wb$14$q;
+        end
+        if (wa_hdec[15]) begin
+            wa_front = wa$15$q;
+        end
+        if (wb_hdec[15]) begin
+            wb_front = wb$15$q;
+        end
+        na_in = na_word$q;
+        if (cur_fa) begin
+            na_in = wa_front;
+        end
+        nb_in = nb_word$q;
+        if (cur_fb) begin
+            nb_in = wb_front;
+        end
+        need_na = go & ent_valid & cur_fa & (wa_n$q == 32'h0);
+        need_nb = go & ent_valid & cur_fb & (wb_n$q == 32'h0);
+        need_ta = go & leaf_valid$q & ~(ta_ok$q & (ta_id$q == leaf_tag$q[(32'h0)+:(16)]));
+        need_tb = go & leaf_valid$q & ~(tb_ok$q & (tb_id$q == leaf_tag$q[(32'h10)+:(16)]));
+        ask_dec = c_one32 << ask_head$q;
+        ask_front = 32'h0;
+        if (ask_dec[0]) begin
+            ask_front = ask_w$0$q;
+        end
+        if (ask_dec[1]) begin
+            ask_front = ask_w$1$q;
+        end
+        if (ask_dec[2]) begin
+            ask_front = ask_w$2$q;
+        end
+        if (ask_dec[3]) begin
+            ask_front = ask_w$3$q;
+        end
+        if (ask_dec[4]) begin
+            ask_front = ask_w$4$q;
+        end
+        if (ask_dec[5]) begin
+            ask_front = ask_w$5$q;
+        end
+        if (ask_dec[6]) begin
+            ask_front = ask_w$6$q;
+        end
+        if (ask_dec[7]) begin
+            ask_front = ask_w$7$q;
+        end
+        if (ask_dec[8]) begin
+            ask_front = ask_w$8$q;
+        end
+        if (ask_dec[9]) begin
+            ask_front = ask_w$9$q;
+        end
+        if (ask_dec[10]) begin
+            ask_front = ask_w$10$q;
+        end
+        if (ask_dec[11]) begin
+            ask_front = ask_w$11$q;
+        end
+        if (ask_dec[12]) begin
+            ask_front = ask_w$12$q;
+        end
+        if (ask_dec[13]) begin
+            ask_front = ask_w$13$q;
+        end
+        if (ask_dec[14]) begin
+            ask_front = ask_w$14$q;
+        end
+        if (ask_dec[15]) begin
+            ask_front = ask_w$15$q;
+        end
+        if (ask_dec[16]) begin
+            ask_front = ask_w$16$q;
+        end
+        if (ask_dec[17]) begin
+            ask_front = ask_w$17$q;
+        end
+        if (ask_dec[18]) begin
+            ask_front = ask_w$18$q;
+        end
+        if (ask_dec[19]) begin
+            ask_front = ask_w$19$q;
+        end
+        if (ask_dec[20]) begin
+            ask_front = ask_w$20$q;
+        end
+        if (ask_dec[21]) begin
+            ask_front = ask_w$21$q;
+        end
+        if (ask_dec[22]) begin
+            ask_front = ask_w$22$q;
+        end
+        if (ask_dec[23]) begin
+            ask_front = ask_w$23$q;
+        end
+        if (ask_dec[24]) begin
+            ask_front = ask_w$24$q;
+        end
+        if (ask_dec[25]) begin
+            ask_front = ask_w$25$q;
+        end
+        if (ask_dec[26]) begin
+            ask_front = ask_w$26$q;
+        end
+        if (ask_dec[27]) begin
+            ask_front = ask_w$27$q;
+        end
+        if (ask_dec[28]) begin
+            ask_front = ask_w$28$q;
+        end
+        if (ask_dec[29]) begin
+            ask_front = ask_w$29$q;
+        end
+        if (ask_dec[30]) begin
+            ask_front = ask_w$30$q;
+        end
+        if (ask_dec[31]) begin
+            ask_front = ask_w$31$q;
+        end
+        ask_ok = go & (ask_n$q != 32'h0) & ((pf != 32'h0) | (ask_front[(32'h11)+:(5)] == seq_head$q));
+        port_free = tag_n$q <= ((port_out$q) & 5'h1f);
+        req_dst = ((ask_front[(32'h10)+:(1)]) & 2'h3);
+        req_id = ask_front[(32'h0)+:(16)];
+        req_addr = base_na$q + ((ask_front[(32'h0)+:(16)]) & 24'hffffff);
+        if (ask_front[32'h10]) begin
+            req_addr = base_nb$q + ((ask_front[(32'h0)+:(16)]) & 24'hffffff);
+        end
+        req = port_free & ask_ok;
+        if (need_tb & ~tb_pend$q) begin
             req_dst = 32'h3;
             req_id = leaf_tag$q[(32'h10)+:(16)];
             req_addr = base_tb$q + ((leaf_tag$q[(32'h10)+:(16)]) & 24'hffffff);
+            req = port_free;
         end
-        if (need_ta) begin
+        if (need_ta & ~ta_pend$q) begin
             req_dst = 32'h2;
             req_id = leaf_tag$q[(32'h0)+:(16)];
             req_addr = base_ta$q + ((leaf_tag$q[(32'h0)+:(16)]) & 24'hffffff);
+            req = port_free;
         end
-        req = ~outstanding$q & (need_na | need_nb | need_ta | need_tb);
         mem_req_valid = req;
         mem_req_addr = req_addr;
         accept = req & mem_req_ready;
+        tag_hdec = c_one16 << tag_head$q;
+        tag_tdec = c_one16 << tag_tail$q;
+        resp_dst = 32'h0;
+        if (tag_hdec[0]) begin
+            resp_dst = tags$0$q;
+        end
+        if (accept & tag_tdec[0]) begin
+            tags$0$d = req_dst;
+        end
+        if (tag_hdec[1]) begin
+            resp_dst = tags$1$q;
+        end
+        if (accept & tag_tdec[1]) begin
+            tags$1$d = req_dst;
+        end
+        if (tag_hdec[2]) begin
+            resp_dst = tags$2$q;
+        end
+        if (accept & tag_tdec[2]) begin
+            tags$2$d = req_dst;
+        end
+        if (tag_hdec[3]) begin
+            resp_dst = tags$3$q;
+        end
+        if (accept & tag_tdec[3]) begin
+            tags$3$d = req_dst;
+        end
+        if (tag_hdec[4]) begin
+            resp_dst = tags$4$q;
+        end
+        if (accept & tag_tdec[4]) begin
+            tags$4$d = req_dst;
+        end
+        if (tag_hdec[5]) begin
+            resp_dst = tags$5$q;
+        end
+        if (accept & tag_tdec[5]) begin
+            tags$5$d = req_dst;
+        end
+        if (tag_hdec[6]) begin
+            resp_dst = tags$6$q;
+        end
+        if (accept & tag_tdec[6]) begin
+            tags$6$d = req_dst;
+        end
+        if (tag_hdec[7]) begin
+            resp_dst = tags$7$q;
+        end
+        if (accept & tag_tdec[7]) begin
+            tags$7$d = req_dst;
+        end
+        if (tag_hdec[8]) begin
+            resp_dst = tags$8$q;
+        end
+        if (accept & tag_tdec[8]) begin
+            tags$8$d = req_dst;
+        end
+        if (tag_hdec[9]) begin
+            resp_dst = tags$9$q;
+        end
+        if (accept & tag_tdec[9]) begin
+            tags$9$d = req_dst;
+        end
+        if (tag_hdec[10]) begin
+            resp_dst = tags$10$q;
+        end
+        if (accept & tag_tdec[10]) begin
+            tags$10$d = req_dst;
+        end
+        if (tag_hdec[11]) begin
+            resp_dst = tags$11$q;
+        end
+        if (accept & tag_tdec[11]) begin
+            tags$11$d = req_dst;
+        end
+        if (tag_hdec[12]) begin
+            resp_dst = tags$12$q;
+        end
+        if (accept & tag_tdec[12]) begin
+            tags$12$d = req_dst;
+        end
+        if (tag_hdec[13]) begin
+            resp_dst = tags$13$q;
+        end
+        if (accept & tag_tdec[13]) begin
+            tags$13$d = req_dst;
+        end
+        if (tag_hdec[14]) begin
+            resp_dst = tags$14$q;
+        end
+        if (accept & tag_tdec[14]) begin
+            tags$14$d = req_dst;
+        end
+        if (tag_hdec[15]) begin
+            resp_dst = tags$15$q;
+        end
+        if (accept & tag_tdec[15]) begin
+            tags$15$d = req_dst;
+        end
+        resp = mem_resp_valid & (tag_n$q != 32'h0);
         if (accept) begin
-            outstanding$d = 1'b1;
-            dst$d = req_dst;
-            dst_id$d = req_id;
+            tag_tail$d = tag_tail$q + 32'h1;
             if (req_dst[32'h1]) begin
                 cnt_tf$d = cnt_tf$q + 32'h1;
             end
             else begin
                 cnt_nf$d = cnt_nf$q + 32'h1;
+                ask_head$d = ask_head$q + 32'h1;
+            end
+            if (req_dst == 32'h2) begin
+                ta_pend$d = 1'b1;
+                ta_req$d = req_id;
+            end
+            if (req_dst == 32'h3) begin
+                tb_pend$d = 1'b1;
+                tb_req$d = req_id;
             end
         end
-        if (outstanding$q & mem_resp_valid) begin
-            outstanding$d = 1'b0;
-            if (dst$q == 32'h0) begin
-                na_ok$d = 1'b1;
-                na_id$d = dst_id$q;
-                na_word$d = mem_resp_data[(32'h0)+:(209)];
+        if (accept & ~resp) begin
+            tag_n$d = tag_n$q + 32'h1;
+        end
+        if (resp & ~accept) begin
+            tag_n$d = tag_n$q - 32'h1;
+        end
+        if (resp & (resp_dst == 32'h0) & wa_tdec[0]) begin
+            wa$0$d = mem_resp_data[(32'h0)+:(209)];
+        end
+        if (resp & (resp_dst == 32'h1) & wb_tdec[0]) begin
+            wb$0$d = mem_resp_data[(32'h0)+:(209)];
+        end
+        if (resp & (resp_dst == 32'h0) & wa_tdec[1]) begin
+            wa$1$d = mem_resp_data[(32'h0)+:(209)];
+        end
+        if (resp & (resp_dst == 32'h1) & wb_tdec[1]) begin
+            wb$1$d = mem_resp_data[(32'h0)+:(209)];
+        end
+        if (resp & (resp_dst == 32'h0) & wa_tdec[2]) begin
+            wa$2$d = mem_resp_data[(32'h0)+:(209)];
+        end
+        if (resp & (resp_dst == 32'h1) & wb_tdec[2]) begin
+            wb$2$d = mem_resp_data[(32'h0)+:(209)];
+        end
+        if (resp & (resp_dst == 32'h0) & wa_tdec[3]) begin
+            wa$3$d = mem_resp_data[(32'h0)+:(209)];
+        end
+        if (resp & (resp_dst == 32'h1) & wb_tdec[3]) begin
+            wb$3$d = mem_resp_data[(32'h0)+:(209)];
+        end
+        if (resp & (resp_dst == 32'h0) & wa_tdec[4]) begin
+            wa$4$d = mem_resp_data[(32'h0)+:(209)];
+        end
+        if (resp & (resp_dst == 32'h1) & wb_tdec[4]) begin
+            wb$4$d = mem_resp_data[(32'h0)+:(209)];
+        end
+        if (resp & (resp_dst == 32'h0) & wa_tdec[5]) begin
+            wa$5$d = mem_resp_data[(32'h0)+:(209)];
+        end
+        if (resp & (resp_dst == 32'h1) & wb_tdec[5]) begin
+            wb$5$d = mem_resp_data[(32'h0)+:(209)];
+        end
+        if (resp & (resp_dst == 32'h0) & wa_tdec[6]) begin
+            wa$6$d = mem_resp_data[(32'h0)+:(209)];
+        end
+        if (resp & (resp_dst == 32'h1) & wb_tdec[6]) begin
+            wb$6$d = mem_resp_data[(32'h0)+:(209)];
+        end
+        if (resp & (resp_dst == 32'h0) & wa_tdec[7]) begin
+            wa$7$d = mem_resp_data[(32'h0)+:(209)];
+        end
+        if (resp & (resp_dst == 32'h1) & wb_tdec[7]) begin
+            wb$7$d = mem_resp_data[(32'h0)+:(209)];
+        end
+        if (resp & (resp_dst == 32'h0) & wa_tdec[8]) begin
+            wa$8$d = mem_resp_data[(32'h0)+:(209)];
+        end
+        if (resp & (resp_dst == 32'h1) & wb_tdec[8]) begin
+            wb$8$d = mem_resp_data[(32'h0)+:(209)];
+        end
+        if (resp & (resp_dst == 32'h0) & wa_tdec[9]) begin
+            wa$9$d = mem_resp_data[(32'h0)+:(209)];
+        end
+        if (resp & (resp_dst == 32'h1) & wb_tdec[9]) begin
+            wb$9$d = mem_resp_data[(32'h0)+:(209)];
+        end
+        if (resp & (resp_dst == 32'h0) & wa_tdec[10]) begin
+            wa$10$d = mem_resp_data[(32'h0)+:(209)];
+        end
+        if (resp & (resp_dst == 32'h1) & wb_tdec[10]) begin
+            wb$10$d = mem_resp_data[(32'h0)+:(209)];
+        end
+        if (resp & (resp_dst == 32'h0) & wa_tdec[11]) begin
+            wa$11$d = mem_resp_data[(32'h0)+:(209)];
+        end
+        if (resp & (resp_dst == 32'h1) & wb_tdec[11]) begin
+            wb$11$d = mem_resp_data[(32'h0)+:(209)];
+        end
+        if (resp & (resp_dst == 32'h0) & wa_tdec[12]) begin
+            wa$12$d = mem_resp_data[(32'h0)+:(209)];
+        end
+        if (resp & (resp_dst == 32'h1) & wb_tdec[12]) begin
+            wb$12$d = mem_resp_data[(32'h0)+:(209)];
+        end
+        if (resp & (resp_dst == 32'h0) & wa_tdec[13]) begin
+            wa$13$d = mem_resp_data[(32'h0)+:(209)];
+        end
+        if (resp & (resp_dst == 32'h1) & wb_tdec[13]) begin
+            wb$13$d = mem_resp_data[(32'h0)+:(209)];
+        end
+        if (resp & (resp_dst == 32'h0) & wa_tdec[14]) begin
+            wa$14$d = mem_resp_data[(32'h0)+:(209)];
+        end
+        if (resp & (resp_dst == 32'h1) & wb_tdec[14]) begin
+            wb$14$d = mem_resp_data[(32'h0)+:(209)];
+        end
+        if (resp & (resp_dst == 32'h0) & wa_tdec[15]) begin
+            wa$15$d = mem_resp_data[(32'h0)+:(209)];
+        end
+        if (resp & (resp_dst == 32'h1) & wb_tdec[15]) begin
+            wb$15$d = mem_resp_data[(32'h0)+:(209)];
+        end
+        if (resp) begin
+            tag_head$d = tag_head$q + 32'h1;
+            if (resp_dst == 32'h0) begin
+                wa_tail$d = wa_tail$q + 32'h1;
             end
-            if (dst$q == 32'h1) begin
-                nb_ok$d = 1'b1;
-                nb_id$d = dst_id$q;
-                nb_word$d = mem_resp_data[(32'h0)+:(209)];
+            if (resp_dst == 32'h1) begin
+                wb_tail$d = wb_tail$q + 32'h1;
             end
-            if (dst$q == 32'h2) begin
+            if (resp_dst == 32'h2) begin
+                ta_pend$d = 1'b0;
                 ta_ok$d = 1'b1;
-                ta_id$d = dst_id$q;
+                ta_id$d = ta_req$q;
                 ta_word$d = mem_resp_data;
             end
-            if (dst$q == 32'h3) begin
+            if (resp_dst == 32'h3) begin
+                tb_pend$d = 1'b0;
                 tb_ok$d = 1'b1;
-                tb_id$d = dst_id$q;
+                tb_id$d = tb_req$q;
                 tb_word$d = mem_resp_data;
             end
         end
-        credit = ((inflight$q) & 6'h3f) + ((leaf_count$q) & 6'h3f);
-        issue = run$q & ~halt & ent_valid$q & ~need_na & ~need_nb & ~last_issue$q & (credit < 32'h10);
+        credit = ((inflight$q) & 6'h3f) + leaf_count$q;
+        issue = go & ent_valid & ~need_na & ~need_nb & ~(last_issue$q & ~port_one$q) & (credit < credit_lim);
         last_issue$d = issue;
-        dop$d$0 = nb_word$q[(32'h1 + 0 * 32'h18)+:(24)];
-        dop$e$0 = na_word$q[(32'h1 + 0 * 32'h18)+:(24)];
-        dop$d$1 = nb_word$q[(32'h1 + 1 * 32'h18)+:(24)];
-        dop$e$1 = na_word$q[(32'h1 + 1 * 32'h18)+:(24)];
-        dop$d$2 = nb_word$q[(32'h1 + 2 * 32'h18)+:(24)];
-        dop$e$2 = na_word$q[(32'h1 + 2 * 32'h18)+:(24)];
-        dop$d$3 = nb_word$q[(32'h1 + 3 * 32'h18)+:(24)];
-        dop$e$3 = na_word$q[(32'h1 + 3 * 32'h18)+:(24)];
-        dop$d$4 = nb_word$q[(32'h1 + 4 * 32'h18)+:(24)];
-        dop$e$4 = na_word$q[(32'h1 + 4 * 32'h18)+:(24)];
-        dop$d$5 = nb_word$q[(32'h1 + 5 * 32'h18)+:(24)];
-        dop$e$5 = na_word$q[(32'h1 + 5 * 32'h18)+:(24)];
+        dop$d$0 = nb_in[(32'h1 + 0 * 32'h18)+:(24)];
+        dop$e$0 = na_in[(32'h1 + 0 * 32'h18)+:(24)];
+        dop$d$1 = nb_in[(32'h1 + 1 * 32'h18)+:(24)];
+        dop$e$1 = na_in[(32'h1 + 1 * 32'h18)+:(24)];
+        dop$d$2 = nb_in[(32'h1 + 2 * 32'h18)+:(24)];
+        dop$e$2 = na_in[(32'h1 + 2 * 32'h18)+:(24)];
+        dop$d$3 = nb_in[(32'h1 + 3 * 32'h18)+:(24)];
+        dop$e$3 = na_in[(32'h1 + 3 * 32'h18)+:(24)];
+        dop$d$4 = nb_in[(32'h1 + 4 * 32'h18)+:(24)];
+        dop$e$4 = na_in[(32'h1 + 4 * 32'h18)+:(24)];
+        dop$d$5 = nb_in[(32'h1 + 5 * 32'h18)+:(24)];
+        dop$e$5 = na_in[(32'h1 + 5 * 32'h18)+:(24)];
         dop$tag = cur_a;
         dop$valid_in = issue;
-        side$d = ((cur_a) & 99'h7ffffffffffffffffffffffff) | (((cur_b) & 99'h7ffffffffffffffffffffffff) << 32'h10) | (((cur_flip) & 99'h7ffffffffffffffffffffffff) << 32'h20) | (((na_word$q[(32'h0)+:(1)]) & 99'h7ffffffffffffffffffffffff) << 32'h21) | (((na_word$q[(32'h1 + 32'h6 * 32'h18)+:(16)]) & 99'h7ffffffffffffffffffffffff) << 32'h22) | (((na_word$q[(32'h21 + 32'h6 * 32'h18)+:(16)]) & 99'h7ffffffffffffffffffffffff) << 32'h32) | (((nb_word$q[(32'h0)+:(1)]) & 99'h7ffffffffffffffffffffffff) << 32'h42) | (((nb_word$q[(32'h1 + 32'h6 * 32'h18)+:(16)]) & 99'h7ffffffffffffffffffffffff) << 32'h43) | (((nb_word$q[(32'h21 + 32'h6 * 32'h18)+:(16)]) & 99'h7ffffffffffffffffffffffff) << 32'h53);
+        side$d = ((cur_a) & 99'h7ffffffffffffffffffffffff) | (((cur_b) & 99'h7ffffffffffffffffffffffff) << 32'h10) | (((cur_flip) & 99'h7ffffffffffffffffffffffff) << 32'h20) | (((na_in[(32'h0)+:(1)]) & 99'h7ffffffffffffffffffffffff) << 32'h21) | (((na_in[(32'h1 + 32'h6 * 32'h18)+:(16)]) & 99'h7ffffffffffffffffffffffff) << 32'h22) | (((na_in[(32'h21 + 32'h6 * 32'h18)+:(16)]) & 99'h7ffffffffffffffffffffffff) << 32'h32) | (((nb_in[(32'h0)+:(1)]) & 99'h7ffffffffffffffffffffffff) << 32'h42) | (((nb_in[(32'h1 + 32'h6 * 32'h18)+:(16)]) & 99'h7ffffffffffffffffffffffff) << 32'h43) | (((nb_in[(32'h21 + 32'h6 * 32'h18)+:(16)]) & 99'h7ffffffffffffffffffffffff) << 32'h53);
         if (issue) begin
             cnt_dop$d = cnt_dop$q + 32'h1;
+            seq_head$d = seq_head$q + 32'h1;
             ent_second$d = 1'b1;
             if (ent_last) begin
-                ent_valid$d = 1'b0;
+                ent_second$d = 1'b0;
+                ahd_head$d = ahd_head$q + 32'h1;
+            end
+            if (cur_fa) begin
+                na_word$d = wa_front;
+                wa_head$d = wa_head$q + 32'h1;
+            end
+            if (cur_fb) begin
+                nb_word$d = wb_front;
+                wb_head$d = wb_head$q + 32'h1;
             end
         end
+        wa_n$d = wa_n$q + (((resp & (resp_dst == 32'h0))) & 5'h1f) - (((issue & cur_fa)) & 5'h1f);
+        wb_n$d = wb_n$q + (((resp & (resp_dst == 32'h1))) & 5'h1f) - (((issue & cur_fb)) & 5'h1f);
         r_a = side$q[(32'h0)+:(16)];
         r_b = side$q[(32'h10)+:(16)];
         r_flip = side$q[32'h20];
@@ -863,12 +2743,491 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         r_b1 = side$q[(32'h53)+:(16)];
         r_hit = dop$valid_out & dop$overlap;
         child_push = pend$q | (r_hit & ~(r_a_leaf & r_b_leaf));
-        pop = run$q & ~halt & ~queue$empty & (~ent_valid$q | (issue & ent_last)) & ~(mode_lifo$q & child_push);
+        room = (ahd_pairs$q - ((issue) & 5'h1f)) <= pf;
+        pop = go & ~queue$empty & room & ~(mode_lifo$q & child_push);
         queue$pop = pop;
+        top = queue$top_data;
+        top_two = top[32'h42];
+        fetch_a0 = ~(last_ok$q & (last_a$q == top[(32'h0)+:(16)]));
+        fetch_b0 = ~(last_ok$q & (last_b$q == top[(32'h10)+:(16)]));
+        fetch_a1 = top_two & (top[(32'h21)+:(16)] != top[(32'h0)+:(16)]);
+        fetch_b1 = top_two & (top[(32'h31)+:(16)] != top[(32'h10)+:(16)]);
+        pop_fetch = ((fetch_a0) & 4'hf) | (((fetch_b0) & 4'hf) << 32'h1) | (((fetch_a1) & 4'hf) << 32'h2) | (((fetch_b1) & 4'hf) << 32'h3);
+        if (pop & tail_dec[0]) begin
+            ahd_ent$0$d = top;
+            ahd_fetch$0$d = pop_fetch;
+        end
+        if (pop & tail_dec[1]) begin
+            ahd_ent$1$d = top;
+            ahd_fetch$1$d = pop_fetch;
+        end
+        if (pop & tail_dec[2]) begin
+            ahd_ent$2$d = top;
+            ahd_fetch$2$d = pop_fetch;
+        end
+        if (pop & tail_dec[3]) begin
+            ahd_ent$3$d = top;
+            ahd_fetch$3$d = pop_fetch;
+        end
+        if (pop & tail_dec[4]) begin
+            ahd_ent$4$d = top;
+            ahd_fetch$4$d = pop_fetch;
+        end
+        if (pop & tail_dec[5]) begin
+            ahd_ent$5$d = top;
+            ahd_fetch$5$d = pop_fetch;
+        end
+        if (pop & tail_dec[6]) begin
+            ahd_ent$6$d = top;
+            ahd_fetch$6$d = pop_fetch;
+        end
+        if (pop & tail_dec[7]) begin
+            ahd_ent$7$d = top;
+            ahd_fetch$7$d = pop_fetch;
+        end
+        if (pop & tail_dec[8]) begin
+            ahd_ent$8$d = top;
+            ahd_fetch$8$d = pop_fetch;
+        end
+        if (pop & tail_dec[9]) begin
+            ahd_ent$9$d = top;
+            ahd_fetch$9$d = pop_fetch;
+        end
+        if (pop & tail_dec[10]) begin
+            ahd_ent$10$d = top;
+            ahd_fetch$10$d = pop_fetch;
+        end
+        if (pop & tail_dec[11]) begin
+            ahd_ent$11$d = top;
+            ahd_fetch$11$d = pop_fetch;
+        end
+        if (pop & tail_dec[12]) begin
+            ahd_ent$12$d = top;
+            ahd_fetch$12$d = pop_fetch;
+        end
+        if (pop & tail_dec[13]) begin
+            ahd_ent$13$d = top;
+            ahd_fetch$13$d = pop_fetch;
+        end
+        if (pop & tail_dec[14]) begin
+            ahd_ent$14$d = top;
+            ahd_fetch$14$d = pop_fetch;
+        end
+        if (pop & tail_dec[15]) begin
+            ahd_ent$15$d = top;
+            ahd_fetch$15$d = pop_fetch;
+        end
+        ahd_pairs$d = ahd_pairs$q - ((issue) & 5'h1f);
         if (pop) begin
-            ent$d = queue$top_data;
-            ent_valid$d = 1'b1;
-            ent_second$d = 1'b0;
+            ahd_tail$d = ahd_tail$q + 32'h1;
+            ahd_pairs$d = ahd_pairs$q - ((issue) & 5'h1f) + 32'h1 + ((top_two) & 5'h1f);
+            seq_tail$d = seq_tail$q + 32'h1 + ((top_two) & 5'h1f);
+            last_ok$d = 1'b1;
+            last_a$d = top[(32'h0)+:(16)];
+            last_b$d = top[(32'h10)+:(16)];
+            if (top_two) begin
+                last_a$d = top[(32'h21)+:(16)];
+                last_b$d = top[(32'h31)+:(16)];
+            end
+        end
+        seq_tail1 = seq_tail$q + 32'h1;
+        ask_off1 = ((pop_fetch[(32'h0)+:(1)]) & 5'h1f);
+        ask_off2 = ask_off1 + ((pop_fetch[(32'h1)+:(1)]) & 5'h1f);
+        ask_off3 = ask_off2 + ((pop_fetch[(32'h2)+:(1)]) & 5'h1f);
+        ask_new = ask_off3 + ((pop_fetch[(32'h3)+:(1)]) & 5'h1f);
+        put0 = c_one32 << ask_tail$q;
+        put1 = c_one32 << (ask_tail$q + ask_off1);
+        put2 = c_one32 << (ask_tail$q + ask_off2);
+        put3 = c_one32 << (ask_tail$q + ask_off3);
+        if (pop & pop_fetch[32'h0] & put0[0]) begin
+            ask_w$0$d = ((top[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h1] & put1[0]) begin
+            ask_w$0$d = ((top[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h2] & put2[0]) begin
+            ask_w$0$d = ((top[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h3] & put3[0]) begin
+            ask_w$0$d = ((top[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h0] & put0[1]) begin
+            ask_w$1$d = ((top[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h1] & put1[1]) begin
+            ask_w$1$d = ((top[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h2] & put2[1]) begin
+            ask_w$1$d = ((top[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h3] & put3[1]) begin
+            ask_w$1$d = ((top[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h0] & put0[2]) begin
+            ask_w$2$d = ((top[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h1] & put1[2]) begin
+            ask_w$2$d = ((top[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h2] & put2[2]) begin
+            ask_w$2$d = ((top[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h3] & put3[2]) begin
+            ask_w$2$d = ((top[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h0] & put0[3]) begin
+            ask_w$3$d = ((top[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h1] & put1[3]) begin
+            ask_w$3$d = ((top[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h2] & put2[3]) begin
+            ask_w$3$d = ((top[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h3] & put3[3]) begin
+            ask_w$3$d = ((top[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h0] & put0[4]) begin
+            ask_w$4$d = ((top[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h1] & put1[4]) begin
+            ask_w$4$d = ((top[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h2] & put2[4]) begin
+            ask_w$4$d = ((top[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h3] & put3[4]) begin
+            ask_w$4$d = ((top[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h0] & put0[5]) begin
+            ask_w$5$d = ((top[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h1] & put1[5]) begin
+            ask_w$5$d = ((top[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h2] & put2[5]) begin
+            ask_w$5$d = ((top[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h3] & put3[5]) begin
+            ask_w$5$d = ((top[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h0] & put0[6]) begin
+            ask_w$6$d = ((top[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h1] & put1[6]) begin
+            ask_w$6$d = ((top[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h2] & put2[6]) begin
+            ask_w$6$d = ((top[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h3] & put3[6]) begin
+            ask_w$6$d = ((top[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h0] & put0[7]) begin
+            ask_w$7$d = ((top[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h1] & put1[7]) begin
+            ask_w$7$d = ((top[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h2] & put2[7]) begin
+            ask_w$7$d = ((top[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h3] & put3[7]) begin
+            ask_w$7$d = ((top[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h0] & put0[8]) begin
+            ask_w$8$d = ((top[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h1] & put1[8]) begin
+            ask_w$8$d = ((top[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h2] & put2[8]) begin
+            ask_w$8$d = ((top[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h3] & put3[8]) begin
+            ask_w$8$d = ((top[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h0] & put0[9]) begin
+            ask_w$9$d = ((top[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h1] & put1[9]) begin
+            ask_w$9$d = ((top[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h2] & put2[9]) begin
+            ask_w$9$d = ((top[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h3] & put3[9]) begin
+            ask_w$9$d = ((top[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h0] & put0[10]) begin
+            ask_w$10$d = ((top[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h1] & put1[10]) begin
+            ask_w$10$d = ((top[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h2] & put2[10]) begin
+            ask_w$10$d = ((top[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h3] & put3[10]) begin
+            ask_w$10$d = ((top[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h0] & put0[11]) begin
+            ask_w$11$d = ((top[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h1] & put1[11]) begin
+            ask_w$11$d = ((top[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h2] & put2[11]) begin
+            ask_w$11$d = ((top[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h3] & put3[11]) begin
+            ask_w$11$d = ((top[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h0] & put0[12]) begin
+            ask_w$12$d = ((top[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h1] & put1[12]) begin
+            ask_w$12$d = ((top[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h2] & put2[12]) begin
+            ask_w$12$d = ((top[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h3] & put3[12]) begin
+            ask_w$12$d = ((top[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h0] & put0[13]) begin
+            ask_w$13$d = ((top[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h1] & put1[13]) begin
+            ask_w$13$d = ((top[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h2] & put2[13]) begin
+            ask_w$13$d = ((top[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h3] & put3[13]) begin
+            ask_w$13$d = ((top[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h0] & put0[14]) begin
+            ask_w$14$d = ((top[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h1] & put1[14]) begin
+            ask_w$14$d = ((top[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h2] & put2[14]) begin
+            ask_w$14$d = ((top[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h3] & put3[14]) begin
+            ask_w$14$d = ((top[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h0] & put0[15]) begin
+            ask_w$15$d = ((top[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h1] & put1[15]) begin
+            ask_w$15$d = ((top[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h2] & put2[15]) begin
+            ask_w$15$d = ((top[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h3] & put3[15]) begin
+            ask_w$15$d = ((top[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h0] & put0[16]) begin
+            ask_w$16$d = ((top[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h1] & put1[16]) begin
+            ask_w$16$d = ((top[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h2] & put2[16]) begin
+            ask_w$16$d = ((top[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h3] & put3[16]) begin
+            ask_w$16$d = ((top[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h0] & put0[17]) begin
+            ask_w$17$d = ((top[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h1] & put1[17]) begin
+            ask_w$17$d = ((top[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h2] & put2[17]) begin
+            ask_w$17$d = ((top[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h3] & put3[17]) begin
+            ask_w$17$d = ((top[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h0] & put0[18]) begin
+            ask_w$18$d = ((top[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h1] & put1[18]) begin
+            ask_w$18$d = ((top[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h2] & put2[18]) begin
+            ask_w$18$d = ((top[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h3] & put3[18]) begin
+            ask_w$18$d = ((top[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h0] & put0[19]) begin
+            ask_w$19$d = ((top[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h1] & put1[19]) begin
+            ask_w$19$d = ((top[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h2] & put2[19]) begin
+            ask_w$19$d = ((top[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h3] & put3[19]) begin
+            ask_w$19$d = ((top[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h0] & put0[20]) begin
+            ask_w$20$d = ((top[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h1] & put1[20]) begin
+            ask_w$20$d = ((top[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h2] & put2[20]) begin
+            ask_w$20$d = ((top[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h3] & put3[20]) begin
+            ask_w$20$d = ((top[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h0] & put0[21]) begin
+            ask_w$21$d = ((top[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h1] & put1[21]) begin
+            ask_w$21$d = ((top[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h2] & put2[21]) begin
+            ask_w$21$d = ((top[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h3] & put3[21]) begin
+            ask_w$21$d = ((top[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h0] & put0[22]) begin
+            ask_w$22$d = ((top[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h1] & put1[22]) begin
+            ask_w$22$d = ((top[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h2] & put2[22]) begin
+            ask_w$22$d = ((top[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h3] & put3[22]) begin
+            ask_w$22$d = ((top[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h0] & put0[23]) begin
+            ask_w$23$d = ((top[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h1] & put1[23]) begin
+            ask_w$23$d = ((top[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h2] & put2[23]) begin
+            ask_w$23$d = ((top[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h3] & put3[23]) begin
+            ask_w$23$d = ((top[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h0] & put0[24]) begin
+            ask_w$24$d = ((top[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h1] & put1[24]) begin
+            ask_w$24$d = ((top[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h2] & put2[24]) begin
+            ask_w$24$d = ((top[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h3] & put3[24]) begin
+            ask_w$24$d = ((top[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h0] & put0[25]) begin
+            ask_w$25$d = ((top[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h1] & put1[25]) begin
+            ask_w$25$d = ((top[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h2] & put2[25]) begin
+            ask_w$25$d = ((top[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h3] & put3[25]) begin
+            ask_w$25$d = ((top[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h0] & put0[26]) begin
+            ask_w$26$d = ((top[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h1] & put1[26]) begin
+            ask_w$26$d = ((top[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h2] & put2[26]) begin
+            ask_w$26$d = ((top[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h3] & put3[26]) begin
+            ask_w$26$d = ((top[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h0] & put0[27]) begin
+            ask_w$27$d = ((top[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h1] & put1[27]) begin
+            ask_w$27$d = ((top[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h2] & put2[27]) begin
+            ask_w$27$d = ((top[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h3] & put3[27]) begin
+            ask_w$27$d = ((top[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h0] & put0[28]) begin
+            ask_w$28$d = ((top[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h1] & put1[28]) begin
+            ask_w$28$d = ((top[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h2] & put2[28]) begin
+            ask_w$28$d = ((top[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h3] & put3[28]) begin
+            ask_w$28$d = ((top[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h0] & put0[29]) begin
+            ask_w$29$d = ((top[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h1] & put1[29]) begin
+            ask_w$29$d = ((top[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h2] & put2[29]) begin
+            ask_w$29$d = ((top[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h3] & put3[29]) begin
+            ask_w$29$d = ((top[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h0] & put0[30]) begin
+            ask_w$30$d = ((top[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h1] & put1[30]) begin
+            ask_w$30$d = ((top[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h2] & put2[30]) begin
+            ask_w$30$d = ((top[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h3] & put3[30]) begin
+            ask_w$30$d = ((top[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h0] & put0[31]) begin
+            ask_w$31$d = ((top[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h1] & put1[31]) begin
+            ask_w$31$d = ((top[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h2] & put2[31]) begin
+            ask_w$31$d = ((top[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h3] & put3[31]) begin
+            ask_w$31$d = ((top[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        ask_take = accept & ~req_dst[32'h1];
+        ask_n$d = ask_n$q - ((ask_take) & 6'h3f);
+        if (pop) begin
+            ask_tail$d = ask_tail$q + ask_new;
+            ask_n$d = ask_n$q - ((ask_take) & 6'h3f) + ((ask_new) & 6'h3f);
         end
         xa = r_a0;
         xb = r_a1;
@@ -901,6 +3260,8 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         queue$lifo = mode_lifo$q;
         queue$push = 1'b0;
         queue$push_data = e0;
+        queue$push2 = 1'b0;
+        queue$push2_data = e1;
         pend$d = 1'b0;
         if (pend$q) begin
             queue$push = 1'b1;
@@ -913,9 +3274,11 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
                 queue$push_data = e0;
             end
             else begin
-                pend$d = 1'b1;
+                queue$push2 = port_one$q;
+                pend$d = ~port_one$q;
                 if (mode_lifo$q) begin
                     queue$push_data = e1;
+                    queue$push2_data = e0;
                     pend_data$d = e0;
                 end
                 else begin
@@ -1025,8 +3388,8 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         if (run$q & mode_first$q & tri_unit$out_valid & tri_unit$out_hit & ~tri_unit$out_uncertain) begin
             stop$d = 1'b1;
         end
-        halt_idle = (inflight$q == 32'h0) & ~pend$q & ~outstanding$q & (tri_open$q == 32'h0) & ~push_root$q & (leaf_count$q == 32'h0);
-        all_idle = halt_idle & queue$empty & ~ent_valid$q & ~leaf_valid$q;
+        halt_idle = (inflight$q == 32'h0) & ~pend$q & (tag_n$q == 32'h0) & (tri_open$q == 32'h0) & ~push_root$q & (leaf_count$q == 32'h0);
+        all_idle = halt_idle & queue$empty & ~ent_valid & ~leaf_valid$q;
         if (run$q & (all_idle | (halt & halt_idle))) begin
             run$d = 1'b0;
             done_r$d = 1'b1;
@@ -1036,10 +3399,23 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
             done_r$d = 1'b0;
             push_root$d = 1'b1;
             stop$d = 1'b0;
-            ent_valid$d = 1'b0;
             leaf_valid$d = 1'b0;
-            na_ok$d = 1'b0;
-            nb_ok$d = 1'b0;
+            ahd_head$d = 32'h0;
+            ahd_tail$d = 32'h0;
+            ahd_pairs$d = 32'h0;
+            ent_second$d = 1'b0;
+            last_ok$d = 1'b0;
+            ask_head$d = 32'h0;
+            ask_tail$d = 32'h0;
+            ask_n$d = 32'h0;
+            seq_head$d = 32'h0;
+            seq_tail$d = 32'h0;
+            wa_head$d = 32'h0;
+            wa_tail$d = 32'h0;
+            wa_n$d = 32'h0;
+            wb_head$d = 32'h0;
+            wb_tail$d = 32'h0;
+            wb_n$d = 32'h0;
             ta_ok$d = 1'b0;
             tb_ok$d = 1'b0;
             cnt_dop$d = 32'h0;
@@ -1058,6 +3434,101 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
     end
     
 endmodule // top
+
+
+module top$ahd_ent$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [66:0] d;
+    output reg  [66:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 67'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$ahd_ent$0
+
+
+module top$ahd_fetch$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [3:0] d;
+    output reg  [3:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 4'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$ahd_fetch$0
+
+
+module top$ahd_pairs(d,q,clock);
+    
+    // Module arguments
+    input wire  [4:0] d;
+    output reg  [4:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 5'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$ahd_pairs
+
+
+module top$ask_n(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$ask_n
+
+
+module top$ask_w$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [21:0] d;
+    output reg  [21:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 22'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$ask_w$0
 
 
 module top$base_na(d,q,clock);
@@ -1569,92 +4040,92 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,e$0,e$1
         .q(cvec$5$q),
         .clock(cvec$5$clock)
     );
-    top$dop$jsel_0$0 jsel_0$0(
+    top$ahd_pairs jsel_0$0(
         .d(jsel_0$0$d),
         .q(jsel_0$0$q),
         .clock(jsel_0$0$clock)
     );
-    top$dop$jsel_0$0 jsel_0$1(
+    top$ahd_pairs jsel_0$1(
         .d(jsel_0$1$d),
         .q(jsel_0$1$q),
         .clock(jsel_0$1$clock)
     );
-    top$dop$jsel_0$0 jsel_0$2(
+    top$ahd_pairs jsel_0$2(
         .d(jsel_0$2$d),
         .q(jsel_0$2$q),
         .clock(jsel_0$2$clock)
     );
-    top$dop$jsel_0$0 jsel_0$3(
+    top$ahd_pairs jsel_0$3(
         .d(jsel_0$3$d),
         .q(jsel_0$3$q),
         .clock(jsel_0$3$clock)
     );
-    top$dop$jsel_0$0 jsel_0$4(
+    top$ahd_pairs jsel_0$4(
         .d(jsel_0$4$d),
         .q(jsel_0$4$q),
         .clock(jsel_0$4$clock)
     );
-    top$dop$jsel_0$0 jsel_0$5(
+    top$ahd_pairs jsel_0$5(
         .d(jsel_0$5$d),
         .q(jsel_0$5$q),
         .clock(jsel_0$5$clock)
     );
-    top$dop$jsel_0$0 jsel_1$0(
+    top$ahd_pairs jsel_1$0(
         .d(jsel_1$0$d),
         .q(jsel_1$0$q),
         .clock(jsel_1$0$clock)
     );
-    top$dop$jsel_0$0 jsel_1$1(
+    top$ahd_pairs jsel_1$1(
         .d(jsel_1$1$d),
         .q(jsel_1$1$q),
         .clock(jsel_1$1$clock)
     );
-    top$dop$jsel_0$0 jsel_1$2(
+    top$ahd_pairs jsel_1$2(
         .d(jsel_1$2$d),
         .q(jsel_1$2$q),
         .clock(jsel_1$2$clock)
     );
-    top$dop$jsel_0$0 jsel_1$3(
+    top$ahd_pairs jsel_1$3(
         .d(jsel_1$3$d),
         .q(jsel_1$3$q),
         .clock(jsel_1$3$clock)
     );
-    top$dop$jsel_0$0 jsel_1$4(
+    top$ahd_pairs jsel_1$4(
         .d(jsel_1$4$d),
         .q(jsel_1$4$q),
         .clock(jsel_1$4$clock)
     );
-    top$dop$jsel_0$0 jsel_1$5(
+    top$ahd_pairs jsel_1$5(
         .d(jsel_1$5$d),
         .q(jsel_1$5$q),
         .clock(jsel_1$5$clock)
     );
-    top$dop$jsel_0$0 jsel_2$0(
+    top$ahd_pairs jsel_2$0(
         .d(jsel_2$0$d),
         .q(jsel_2$0$q),
         .clock(jsel_2$0$clock)
     );
-    top$dop$jsel_0$0 jsel_2$1(
+    top$ahd_pairs jsel_2$1(
         .d(jsel_2$1$d),
         .q(jsel_2$1$q),
         .clock(jsel_2$1$clock)
     );
-    top$dop$jsel_0$0 jsel_2$2(
+    top$ahd_pairs jsel_2$2(
         .d(jsel_2$2$d),
         .q(jsel_2$2$q),
         .clock(jsel_2$2$clock)
     );
-    top$dop$jsel_0$0 jsel_2$3(
+    top$ahd_pairs jsel_2$3(
         .d(jsel_2$3$d),
         .q(jsel_2$3$q),
         .clock(jsel_2$3$clock)
     );
-    top$dop$jsel_0$0 jsel_2$4(
+    top$ahd_pairs jsel_2$4(
         .d(jsel_2$4$d),
         .q(jsel_2$4$q),
         .clock(jsel_2$4$clock)
     );
-    top$dop$jsel_0$0 jsel_2$5(
+    top$ahd_pairs jsel_2$5(
         .d(jsel_2$5$d),
         .q(jsel_2$5$q),
         .clock(jsel_2$5$clock)
@@ -3861,25 +6332,6 @@ module top$dop$doptrf$0$mul_0$sig_mul(a,b,hi,sticky);
 endmodule // top$dop$doptrf$0$mul_0$sig_mul
 
 
-module top$dop$jsel_0$0(d,q,clock);
-    
-    // Module arguments
-    input wire  [4:0] d;
-    output reg  [4:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 5'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$dop$jsel_0$0
-
-
 module top$dop$klmsel(d$0,d$1,d$2,d$3,d$4,d$5,j0$0,j0$1,j0$2,j0$3,j0$4,j0$5,j1$0,j1$1,j1$2,j1$3,j1$4,j1$5,j2$0,j2$1,j2$2,j2$3,j2$4,j2$5,y0$0,y0$1,y0$2,y0$3,y0$4,y0$5,y1$0,y1$1,y1$2,y1$3,y1$4,y1$5,y2$0,y2$1,y2$2,y2$3,y2$4,y2$5);
     
     // Module arguments
@@ -4283,44 +6735,6 @@ module top$dop$klmsel(d$0,d$1,d$2,d$3,d$4,d$5,j0$0,j0$1,j0$2,j0$3,j0$4,j0$5,j1$0
 endmodule // top$dop$klmsel
 
 
-module top$dst(d,q,clock);
-    
-    // Module arguments
-    input wire  [1:0] d;
-    output reg  [1:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 2'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$dst
-
-
-module top$ent(d,q,clock);
-    
-    // Module arguments
-    input wire  [66:0] d;
-    output reg  [66:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 67'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$ent
-
-
 module top$leaf_fifo(clock,read,data_out,empty,almost_empty,underflow,write,data_in,full,almost_full,overflow);
     
     // Module arguments
@@ -4337,10 +6751,10 @@ module top$leaf_fifo(clock,read,data_out,empty,almost_empty,underflow,write,data
     output reg  overflow;
     
     // Stub signals
-    reg  [3:0] ram$read_address;
+    reg  [5:0] ram$read_address;
     reg  ram$read_clock;
     wire  [31:0] ram$read_data;
-    reg  [3:0] ram$write_address;
+    reg  [5:0] ram$write_address;
     reg  ram$write_clock;
     reg  [31:0] ram$write_data;
     reg  ram$write_enable;
@@ -4350,25 +6764,25 @@ module top$leaf_fifo(clock,read,data_out,empty,almost_empty,underflow,write,data
     wire  read_logic$empty;
     wire  read_logic$almost_empty;
     wire  read_logic$underflow;
-    reg  [4:0] read_logic$write_address_delayed;
-    wire  [3:0] read_logic$ram_read_address;
+    reg  [6:0] read_logic$write_address_delayed;
+    wire  [5:0] read_logic$ram_read_address;
     reg  [31:0] read_logic$ram_read_data;
     wire  read_logic$ram_read_clock;
-    wire  [4:0] read_logic$read_address_out;
-    wire  [4:0] read_logic$fill_level;
+    wire  [6:0] read_logic$read_address_out;
+    wire  [6:0] read_logic$fill_level;
     reg  write_logic$write;
     reg  [31:0] write_logic$data_in;
     wire  write_logic$full;
     wire  write_logic$almost_full;
     wire  write_logic$overflow;
     reg  write_logic$clock;
-    wire  [3:0] write_logic$ram_write_address;
+    wire  [5:0] write_logic$ram_write_address;
     wire  write_logic$ram_write_clock;
     wire  [31:0] write_logic$ram_write_data;
     wire  write_logic$ram_write_enable;
-    reg  [4:0] write_logic$read_address;
-    wire  [4:0] write_logic$write_address_delayed;
-    wire  [4:0] write_logic$fill_level;
+    reg  [6:0] write_logic$read_address;
+    wire  [6:0] write_logic$write_address_delayed;
+    wire  [6:0] write_logic$fill_level;
     
     // Sub module instances
     top$leaf_fifo$ram ram(
@@ -4441,16 +6855,16 @@ endmodule // top$leaf_fifo
 module top$leaf_fifo$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
-    input wire  [3:0] read_address;
+    input wire  [5:0] read_address;
     input wire  read_clock;
     output reg  [31:0] read_data;
-    input wire  [3:0] write_address;
+    input wire  [5:0] write_address;
     input wire  write_clock;
     input wire  [31:0] write_data;
     input wire  write_enable;
     
     // Update code (custom)
-    reg[31:0] mem[15:0];
+    reg[31:0] mem[63:0];
     
     
     
@@ -4476,21 +6890,21 @@ module top$leaf_fifo$read_logic(clock,read,data_out,empty,almost_empty,underflow
     output reg  empty;
     output reg  almost_empty;
     output reg  underflow;
-    input wire  [4:0] write_address_delayed;
-    output reg  [3:0] ram_read_address;
+    input wire  [6:0] write_address_delayed;
+    output reg  [5:0] ram_read_address;
     input wire  [31:0] ram_read_data;
     output reg  ram_read_clock;
-    output reg  [4:0] read_address_out;
-    output reg  [4:0] fill_level;
+    output reg  [6:0] read_address_out;
+    output reg  [6:0] fill_level;
     
     // Constant declarations
-    localparam  fifo_address_mask = 5'b1111;
-    localparam  fifo_size = 5'b10000;
-    localparam  block_size = 5'b1;
+    localparam  fifo_address_mask = 7'b111111;
+    localparam  fifo_size = 7'b1000000;
+    localparam  block_size = 7'b1;
     
     // Stub signals
-    reg  [4:0] read_address$d;
-    wire  [4:0] read_address$q;
+    reg  [6:0] read_address$d;
+    wire  [6:0] read_address$q;
     reg  read_address$clock;
     reg  dff_underflow$d;
     wire  dff_underflow$q;
@@ -4501,7 +6915,7 @@ module top$leaf_fifo$read_logic(clock,read,data_out,empty,almost_empty,underflow
     reg  is_full;
     
     // Sub module instances
-    top$dop$jsel_0$0 read_address(
+    top$leaf_fifo$read_logic$read_address read_address(
         .d(read_address$d),
         .q(read_address$q),
         .clock(read_address$clock)
@@ -4527,11 +6941,11 @@ module top$leaf_fifo$read_logic(clock,read,data_out,empty,almost_empty,underflow
         end
         almost_empty = (fill_level < block_size);
         empty = is_empty;
-        ram_read_address = ((read_address$q & fifo_address_mask) & 4'hf);
+        ram_read_address = ((read_address$q & fifo_address_mask) & 6'h3f);
         data_out = ram_read_data;
         if (read & ~is_empty) begin
             read_address$d = read_address$q + 32'h1;
-            ram_read_address = (((read_address$q + 32'h1) & fifo_address_mask) & 4'hf);
+            ram_read_address = (((read_address$q + 32'h1) & fifo_address_mask) & 6'h3f);
         end
         else begin
             read_address$d = read_address$q;
@@ -4544,6 +6958,25 @@ module top$leaf_fifo$read_logic(clock,read,data_out,empty,almost_empty,underflow
 endmodule // top$leaf_fifo$read_logic
 
 
+module top$leaf_fifo$read_logic$read_address(d,q,clock);
+    
+    // Module arguments
+    input wire  [6:0] d;
+    output reg  [6:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 7'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$leaf_fifo$read_logic$read_address
+
+
 module top$leaf_fifo$write_logic(write,data_in,full,almost_full,overflow,clock,ram_write_address,ram_write_clock,ram_write_data,ram_write_enable,read_address,write_address_delayed,fill_level);
     
     // Module arguments
@@ -4553,25 +6986,25 @@ module top$leaf_fifo$write_logic(write,data_in,full,almost_full,overflow,clock,r
     output reg  almost_full;
     output reg  overflow;
     input wire  clock;
-    output reg  [3:0] ram_write_address;
+    output reg  [5:0] ram_write_address;
     output reg  ram_write_clock;
     output reg  [31:0] ram_write_data;
     output reg  ram_write_enable;
-    input wire  [4:0] read_address;
-    output reg  [4:0] write_address_delayed;
-    output reg  [4:0] fill_level;
+    input wire  [6:0] read_address;
+    output reg  [6:0] write_address_delayed;
+    output reg  [6:0] fill_level;
     
     // Constant declarations
-    localparam  fifo_address_mask = 5'b1111;
-    localparam  fifo_size = 5'b10000;
-    localparam  almost_full_level = 5'b1111;
+    localparam  fifo_address_mask = 7'b111111;
+    localparam  fifo_size = 7'b1000000;
+    localparam  almost_full_level = 7'b111111;
     
     // Stub signals
-    reg  [4:0] write_address$d;
-    wire  [4:0] write_address$q;
+    reg  [6:0] write_address$d;
+    wire  [6:0] write_address$q;
     reg  write_address$clock;
-    reg  [4:0] dff_write_address_delay$d;
-    wire  [4:0] dff_write_address_delay$q;
+    reg  [6:0] dff_write_address_delay$d;
+    wire  [6:0] dff_write_address_delay$q;
     reg  dff_write_address_delay$clock;
     reg  dff_overflow$d;
     wire  dff_overflow$q;
@@ -4582,12 +7015,12 @@ module top$leaf_fifo$write_logic(write,data_in,full,almost_full,overflow,clock,r
     reg  is_full;
     
     // Sub module instances
-    top$dop$jsel_0$0 write_address(
+    top$leaf_fifo$read_logic$read_address write_address(
         .d(write_address$d),
         .q(write_address$q),
         .clock(write_address$clock)
     );
-    top$dop$jsel_0$0 dff_write_address_delay(
+    top$leaf_fifo$read_logic$read_address dff_write_address_delay(
         .d(dff_write_address_delay$d),
         .q(dff_write_address_delay$q),
         .clock(dff_write_address_delay$clock)
@@ -4618,7 +7051,7 @@ module top$leaf_fifo$write_logic(write,data_in,full,almost_full,overflow,clock,r
         end
         almost_full = (fill_level >= almost_full_level);
         full = is_full;
-        ram_write_address = ((write_address$q & fifo_address_mask) & 4'hf);
+        ram_write_address = ((write_address$q & fifo_address_mask) & 6'h3f);
         ram_write_data = data_in;
         if (write & ~is_full) begin
             write_address$d = write_address$q + 32'h1;
@@ -4654,7 +7087,7 @@ module top$na_word(d,q,clock);
 endmodule // top$na_word
 
 
-module top$queue(clock,clear,lifo,push,push_data,pop,empty,full,count,max_count,overflow,top_data);
+module top$queue(clock,clear,lifo,push,push_data,push2,push2_data,pop,empty,full,count,max_count,overflow,top_data);
     
     // Module arguments
     input wire  clock;
@@ -4662,6 +7095,8 @@ module top$queue(clock,clear,lifo,push,push_data,pop,empty,full,count,max_count,
     input wire  lifo;
     input wire  push;
     input wire  [66:0] push_data;
+    input wire  push2;
+    input wire  [66:0] push2_data;
     input wire  pop;
     output reg  empty;
     output reg  full;
@@ -4692,6 +7127,9 @@ module top$queue(clock,clear,lifo,push,push_data,pop,empty,full,count,max_count,
     reg  [66:0] byp_data$d;
     wire  [66:0] byp_data$q;
     reg  byp_data$clock;
+    reg  rsel$d;
+    wire  rsel$q;
+    reg  rsel$clock;
     reg  order_lifo$d;
     wire  order_lifo$q;
     reg  order_lifo$clock;
@@ -4701,27 +7139,41 @@ module top$queue(clock,clear,lifo,push,push_data,pop,empty,full,count,max_count,
     reg  ovf_r$d;
     wire  ovf_r$q;
     reg  ovf_r$clock;
-    reg  [9:0] ram$read_address;
-    reg  ram$read_clock;
-    wire  [66:0] ram$read_data;
-    reg  [9:0] ram$write_address;
-    reg  ram$write_clock;
-    reg  [66:0] ram$write_data;
-    reg  ram$write_enable;
+    reg  [8:0] bank0$read_address;
+    reg  bank0$read_clock;
+    wire  [66:0] bank0$read_data;
+    reg  [8:0] bank0$write_address;
+    reg  bank0$write_clock;
+    reg  [66:0] bank0$write_data;
+    reg  bank0$write_enable;
+    reg  [8:0] bank1$read_address;
+    reg  bank1$read_clock;
+    wire  [66:0] bank1$read_data;
+    reg  [8:0] bank1$write_address;
+    reg  bank1$write_clock;
+    reg  [66:0] bank1$write_data;
+    reg  bank1$write_enable;
     
     // Local signals
     reg  nonempty;
     reg  many;
-    reg  is_full;
     reg  do_pop;
-    reg  do_push;
+    reg  [10:0] c0;
+    reg  [66:0] e1;
+    reg  any;
+    reg  two;
+    reg  s1;
+    reg  s2;
     reg  [66:0] next_entry;
     reg  [10:0] cnt_n;
     reg  [9:0] rd_n;
     reg  [9:0] wr_n;
+    reg  [9:0] wr1;
     reg  [9:0] raddr;
-    reg  we;
-    reg  [66:0] wdata;
+    reg  we_a;
+    reg  we_b;
+    reg  [66:0] wdata_a;
+    reg  [66:0] wdata_b;
     
     // Sub module instances
     top$queue$cnt cnt(
@@ -4729,7 +7181,7 @@ module top$queue(clock,clear,lifo,push,push_data,pop,empty,full,count,max_count,
         .q(cnt$q),
         .clock(cnt$clock)
     );
-    top$ent top_r(
+    top$ahd_ent$0 top_r(
         .d(top_r$d),
         .q(top_r$q),
         .clock(top_r$clock)
@@ -4749,10 +7201,15 @@ module top$queue(clock,clear,lifo,push,push_data,pop,empty,full,count,max_count,
         .q(byp$q),
         .clock(byp$clock)
     );
-    top$ent byp_data(
+    top$ahd_ent$0 byp_data(
         .d(byp_data$d),
         .q(byp_data$q),
         .clock(byp_data$clock)
+    );
+    top$done_r rsel(
+        .d(rsel$d),
+        .q(rsel$q),
+        .clock(rsel$clock)
     );
     top$done_r order_lifo(
         .d(order_lifo$d),
@@ -4769,14 +7226,23 @@ module top$queue(clock,clear,lifo,push,push_data,pop,empty,full,count,max_count,
         .q(ovf_r$q),
         .clock(ovf_r$clock)
     );
-    top$queue$ram ram(
-        .read_address(ram$read_address),
-        .read_clock(ram$read_clock),
-        .read_data(ram$read_data),
-        .write_address(ram$write_address),
-        .write_clock(ram$write_clock),
-        .write_data(ram$write_data),
-        .write_enable(ram$write_enable)
+    top$queue$bank0 bank0(
+        .read_address(bank0$read_address),
+        .read_clock(bank0$read_clock),
+        .read_data(bank0$read_data),
+        .write_address(bank0$write_address),
+        .write_clock(bank0$write_clock),
+        .write_data(bank0$write_data),
+        .write_enable(bank0$write_enable)
+    );
+    top$queue$bank0 bank1(
+        .read_address(bank1$read_address),
+        .read_clock(bank1$read_clock),
+        .read_data(bank1$read_data),
+        .write_address(bank1$write_address),
+        .write_clock(bank1$write_clock),
+        .write_data(bank1$write_data),
+        .write_enable(bank1$write_enable)
     );
     
     // Update code
@@ -4787,6 +7253,7 @@ module top$queue(clock,clear,lifo,push,push_data,pop,empty,full,count,max_count,
         wr_ptr$clock = clock;
         byp$clock = clock;
         byp_data$clock = clock;
+        rsel$clock = clock;
         order_lifo$clock = clock;
         max_r$clock = clock;
         ovf_r$clock = clock;
@@ -4796,11 +7263,14 @@ module top$queue(clock,clear,lifo,push,push_data,pop,empty,full,count,max_count,
         wr_ptr$d = wr_ptr$q;
         byp$d = byp$q;
         byp_data$d = byp_data$q;
+        rsel$d = rsel$q;
         order_lifo$d = order_lifo$q;
         max_r$d = max_r$q;
         ovf_r$d = ovf_r$q;
-        ram$read_clock = clock;
-        ram$write_clock = clock;
+        bank0$read_clock = clock;
+        bank0$write_clock = clock;
+        bank1$read_clock = clock;
+        bank1$write_clock = clock;
         empty = cnt$q == 32'h0;
         full = cnt$q == c_cap;
         count = cnt$q;
@@ -4809,38 +7279,67 @@ module top$queue(clock,clear,lifo,push,push_data,pop,empty,full,count,max_count,
         top_data = top_r$q;
         nonempty = cnt$q != 32'h0;
         many = cnt$q > 32'h1;
-        is_full = cnt$q == c_cap;
         do_pop = pop & nonempty;
-        do_push = push & (~is_full | do_pop);
-        next_entry = ram$read_data;
+        c0 = cnt$q - ((do_pop) & 11'h7ff);
+        e1 = push2_data;
+        if (push) begin
+            e1 = push_data;
+        end
+        any = push | push2;
+        two = push & push2;
+        s1 = any & (c0 != c_cap);
+        s2 = two & (c0 + 32'h1 < c_cap);
+        next_entry = bank0$read_data;
+        if (rsel$q) begin
+            next_entry = bank1$read_data;
+        end
         if (byp$q) begin
             next_entry = byp_data$q;
         end
-        cnt_n = cnt$q;
-        if (do_push & ~do_pop) begin
-            cnt_n = cnt$q + 32'h1;
-        end
-        if (do_pop & ~do_push) begin
-            cnt_n = cnt$q - 32'h1;
-        end
+        cnt_n = c0 + ((s1) & 11'h7ff) + ((s2) & 11'h7ff);
         rd_n = rd_ptr$q;
         wr_n = wr_ptr$q;
-        we = 1'b0;
-        wdata = push_data;
+        wr1 = wr_ptr$q + 32'h1;
+        we_a = 1'b0;
+        we_b = 1'b0;
+        wdata_a = e1;
+        wdata_b = push2_data;
         if (order_lifo$q) begin
-            if (do_pop & ~do_push) begin
-                top_r$d = 32'h0;
-                if (many) begin
-                    top_r$d = next_entry;
-                    wr_n = wr_ptr$q - 32'h1;
+            wdata_b = e1;
+            if (do_pop) begin
+                if (~s1) begin
+                    top_r$d = 32'h0;
+                    if (many) begin
+                        top_r$d = next_entry;
+                        wr_n = wr_ptr$q - 32'h1;
+                    end
+                end
+                if (s1) begin
+                    top_r$d = e1;
+                end
+                if (s2) begin
+                    we_a = 1'b1;
+                    wr_n = wr_ptr$q + 32'h1;
+                    top_r$d = push2_data;
                 end
             end
-            if (do_push) begin
-                top_r$d = push_data;
-                if (nonempty & ~do_pop) begin
-                    we = 1'b1;
-                    wdata = top_r$q;
+            else begin
+                if (s1) begin
+                    top_r$d = e1;
+                    if (nonempty) begin
+                        we_a = 1'b1;
+                        wdata_a = top_r$q;
+                        wr_n = wr_ptr$q + 32'h1;
+                    end
+                end
+                if (s2) begin
+                    top_r$d = push2_data;
+                    we_a = 1'b1;
                     wr_n = wr_ptr$q + 32'h1;
+                    if (nonempty) begin
+                        we_b = 1'b1;
+                        wr_n = wr_ptr$q + 32'h2;
+                    end
                 end
             end
         end
@@ -4852,13 +7351,24 @@ module top$queue(clock,clear,lifo,push,push_data,pop,empty,full,count,max_count,
                     rd_n = rd_ptr$q + 32'h1;
                 end
             end
-            if (do_push) begin
-                if (many | (nonempty & ~do_pop)) begin
-                    we = 1'b1;
+            if (c0 == 32'h0) begin
+                if (s1) begin
+                    top_r$d = e1;
+                end
+                if (s2) begin
+                    we_a = 1'b1;
+                    wdata_a = push2_data;
                     wr_n = wr_ptr$q + 32'h1;
                 end
-                else begin
-                    top_r$d = push_data;
+            end
+            else begin
+                if (s1) begin
+                    we_a = 1'b1;
+                    wr_n = wr_ptr$q + 32'h1;
+                end
+                if (s2) begin
+                    we_b = 1'b1;
+                    wr_n = wr_ptr$q + 32'h2;
                 end
             end
         end
@@ -4866,7 +7376,7 @@ module top$queue(clock,clear,lifo,push,push_data,pop,empty,full,count,max_count,
         if (cnt_n > max_r$q) begin
             max_r$d = cnt_n;
         end
-        if (push & is_full & ~do_pop) begin
+        if ((any & ~s1) | (two & ~s2)) begin
             ovf_r$d = 1'b1;
         end
         if (clear) begin
@@ -4874,7 +7384,8 @@ module top$queue(clock,clear,lifo,push,push_data,pop,empty,full,count,max_count,
             top_r$d = 32'h0;
             rd_n = 32'h0;
             wr_n = 32'h0;
-            we = 1'b0;
+            we_a = 1'b0;
+            we_b = 1'b0;
             order_lifo$d = lifo;
             max_r$d = 32'h0;
             ovf_r$d = 1'b0;
@@ -4885,15 +7396,60 @@ module top$queue(clock,clear,lifo,push,push_data,pop,empty,full,count,max_count,
         if (order_lifo$d) begin
             raddr = wr_n - 32'h1;
         end
-        ram$write_enable = we;
-        ram$write_address = wr_ptr$q;
-        ram$write_data = wdata;
-        ram$read_address = raddr;
-        byp$d = we & (raddr == wr_ptr$q);
-        byp_data$d = wdata;
+        bank0$write_enable = (we_a & ~wr_ptr$q[32'h0]) | (we_b & wr_ptr$q[32'h0]);
+        bank1$write_enable = (we_a & wr_ptr$q[32'h0]) | (we_b & ~wr_ptr$q[32'h0]);
+        bank0$write_address = wr_ptr$q[(32'h1)+:(9)];
+        bank0$write_data = wdata_a;
+        bank1$write_address = wr_ptr$q[(32'h1)+:(9)];
+        bank1$write_data = wdata_a;
+        if (wr_ptr$q[32'h0]) begin
+            bank0$write_address = wr1[(32'h1)+:(9)];
+            bank0$write_data = wdata_b;
+        end
+        else begin
+            bank1$write_address = wr1[(32'h1)+:(9)];
+            bank1$write_data = wdata_b;
+        end
+        bank0$read_address = raddr[(32'h1)+:(9)];
+        bank1$read_address = raddr[(32'h1)+:(9)];
+        rsel$d = raddr[32'h0];
+        byp$d = (we_a & (raddr == wr_ptr$q)) | (we_b & (raddr == wr1));
+        byp_data$d = wdata_a;
+        if (we_b & (raddr == wr1)) begin
+            byp_data$d = wdata_b;
+        end
     end
     
 endmodule // top$queue
+
+
+module top$queue$bank0(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [8:0] read_address;
+    input wire  read_clock;
+    output reg  [66:0] read_data;
+    input wire  [8:0] write_address;
+    input wire  write_clock;
+    input wire  [66:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg[66:0] mem[511:0];
+    
+    
+    
+    always @(posedge read_clock) begin
+       read_data <= mem[read_address];
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+                
+endmodule // top$queue$bank0
 
 
 module top$queue$cnt(d,q,clock);
@@ -4913,35 +7469,6 @@ module top$queue$cnt(d,q,clock);
     end
           
 endmodule // top$queue$cnt
-
-
-module top$queue$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
-    
-    // Module arguments
-    input wire  [9:0] read_address;
-    input wire  read_clock;
-    output reg  [66:0] read_data;
-    input wire  [9:0] write_address;
-    input wire  write_clock;
-    input wire  [66:0] write_data;
-    input wire  write_enable;
-    
-    // Update code (custom)
-    reg[66:0] mem[1023:0];
-    
-    
-    
-    always @(posedge read_clock) begin
-       read_data <= mem[read_address];
-    end
-    
-    always @(posedge write_clock) begin
-       if (write_enable) begin
-          mem[write_address] <= write_data;
-       end
-    end
-                
-endmodule // top$queue$ram
 
 
 module top$side(clock,d,q);
@@ -5163,6 +7690,25 @@ module top$ta_word(d,q,clock);
     end
           
 endmodule // top$ta_word
+
+
+module top$tags$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [1:0] d;
+    output reg  [1:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 2'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$tags$0
 
 
 module top$tri_open(d,q,clock);
@@ -6481,642 +9027,642 @@ module top$tri_unit$degenerate_wait(clock,d,q);
     reg  line$127$clock;
     
     // Sub module instances
-    top$dst line$0(
+    top$tags$0 line$0(
         .d(line$0$d),
         .q(line$0$q),
         .clock(line$0$clock)
     );
-    top$dst line$1(
+    top$tags$0 line$1(
         .d(line$1$d),
         .q(line$1$q),
         .clock(line$1$clock)
     );
-    top$dst line$2(
+    top$tags$0 line$2(
         .d(line$2$d),
         .q(line$2$q),
         .clock(line$2$clock)
     );
-    top$dst line$3(
+    top$tags$0 line$3(
         .d(line$3$d),
         .q(line$3$q),
         .clock(line$3$clock)
     );
-    top$dst line$4(
+    top$tags$0 line$4(
         .d(line$4$d),
         .q(line$4$q),
         .clock(line$4$clock)
     );
-    top$dst line$5(
+    top$tags$0 line$5(
         .d(line$5$d),
         .q(line$5$q),
         .clock(line$5$clock)
     );
-    top$dst line$6(
+    top$tags$0 line$6(
         .d(line$6$d),
         .q(line$6$q),
         .clock(line$6$clock)
     );
-    top$dst line$7(
+    top$tags$0 line$7(
         .d(line$7$d),
         .q(line$7$q),
         .clock(line$7$clock)
     );
-    top$dst line$8(
+    top$tags$0 line$8(
         .d(line$8$d),
         .q(line$8$q),
         .clock(line$8$clock)
     );
-    top$dst line$9(
+    top$tags$0 line$9(
         .d(line$9$d),
         .q(line$9$q),
         .clock(line$9$clock)
     );
-    top$dst line$10(
+    top$tags$0 line$10(
         .d(line$10$d),
         .q(line$10$q),
         .clock(line$10$clock)
     );
-    top$dst line$11(
+    top$tags$0 line$11(
         .d(line$11$d),
         .q(line$11$q),
         .clock(line$11$clock)
     );
-    top$dst line$12(
+    top$tags$0 line$12(
         .d(line$12$d),
         .q(line$12$q),
         .clock(line$12$clock)
     );
-    top$dst line$13(
+    top$tags$0 line$13(
         .d(line$13$d),
         .q(line$13$q),
         .clock(line$13$clock)
     );
-    top$dst line$14(
+    top$tags$0 line$14(
         .d(line$14$d),
         .q(line$14$q),
         .clock(line$14$clock)
     );
-    top$dst line$15(
+    top$tags$0 line$15(
         .d(line$15$d),
         .q(line$15$q),
         .clock(line$15$clock)
     );
-    top$dst line$16(
+    top$tags$0 line$16(
         .d(line$16$d),
         .q(line$16$q),
         .clock(line$16$clock)
     );
-    top$dst line$17(
+    top$tags$0 line$17(
         .d(line$17$d),
         .q(line$17$q),
         .clock(line$17$clock)
     );
-    top$dst line$18(
+    top$tags$0 line$18(
         .d(line$18$d),
         .q(line$18$q),
         .clock(line$18$clock)
     );
-    top$dst line$19(
+    top$tags$0 line$19(
         .d(line$19$d),
         .q(line$19$q),
         .clock(line$19$clock)
     );
-    top$dst line$20(
+    top$tags$0 line$20(
         .d(line$20$d),
         .q(line$20$q),
         .clock(line$20$clock)
     );
-    top$dst line$21(
+    top$tags$0 line$21(
         .d(line$21$d),
         .q(line$21$q),
         .clock(line$21$clock)
     );
-    top$dst line$22(
+    top$tags$0 line$22(
         .d(line$22$d),
         .q(line$22$q),
         .clock(line$22$clock)
     );
-    top$dst line$23(
+    top$tags$0 line$23(
         .d(line$23$d),
         .q(line$23$q),
         .clock(line$23$clock)
     );
-    top$dst line$24(
+    top$tags$0 line$24(
         .d(line$24$d),
         .q(line$24$q),
         .clock(line$24$clock)
     );
-    top$dst line$25(
+    top$tags$0 line$25(
         .d(line$25$d),
         .q(line$25$q),
         .clock(line$25$clock)
     );
-    top$dst line$26(
+    top$tags$0 line$26(
         .d(line$26$d),
         .q(line$26$q),
         .clock(line$26$clock)
     );
-    top$dst line$27(
+    top$tags$0 line$27(
         .d(line$27$d),
         .q(line$27$q),
         .clock(line$27$clock)
     );
-    top$dst line$28(
+    top$tags$0 line$28(
         .d(line$28$d),
         .q(line$28$q),
         .clock(line$28$clock)
     );
-    top$dst line$29(
+    top$tags$0 line$29(
         .d(line$29$d),
         .q(line$29$q),
         .clock(line$29$clock)
     );
-    top$dst line$30(
+    top$tags$0 line$30(
         .d(line$30$d),
         .q(line$30$q),
         .clock(line$30$clock)
     );
-    top$dst line$31(
+    top$tags$0 line$31(
         .d(line$31$d),
         .q(line$31$q),
         .clock(line$31$clock)
     );
-    top$dst line$32(
+    top$tags$0 line$32(
         .d(line$32$d),
         .q(line$32$q),
         .clock(line$32$clock)
     );
-    top$dst line$33(
+    top$tags$0 line$33(
         .d(line$33$d),
         .q(line$33$q),
         .clock(line$33$clock)
     );
-    top$dst line$34(
+    top$tags$0 line$34(
         .d(line$34$d),
         .q(line$34$q),
         .clock(line$34$clock)
     );
-    top$dst line$35(
+    top$tags$0 line$35(
         .d(line$35$d),
         .q(line$35$q),
         .clock(line$35$clock)
     );
-    top$dst line$36(
+    top$tags$0 line$36(
         .d(line$36$d),
         .q(line$36$q),
         .clock(line$36$clock)
     );
-    top$dst line$37(
+    top$tags$0 line$37(
         .d(line$37$d),
         .q(line$37$q),
         .clock(line$37$clock)
     );
-    top$dst line$38(
+    top$tags$0 line$38(
         .d(line$38$d),
         .q(line$38$q),
         .clock(line$38$clock)
     );
-    top$dst line$39(
+    top$tags$0 line$39(
         .d(line$39$d),
         .q(line$39$q),
         .clock(line$39$clock)
     );
-    top$dst line$40(
+    top$tags$0 line$40(
         .d(line$40$d),
         .q(line$40$q),
         .clock(line$40$clock)
     );
-    top$dst line$41(
+    top$tags$0 line$41(
         .d(line$41$d),
         .q(line$41$q),
         .clock(line$41$clock)
     );
-    top$dst line$42(
+    top$tags$0 line$42(
         .d(line$42$d),
         .q(line$42$q),
         .clock(line$42$clock)
     );
-    top$dst line$43(
+    top$tags$0 line$43(
         .d(line$43$d),
         .q(line$43$q),
         .clock(line$43$clock)
     );
-    top$dst line$44(
+    top$tags$0 line$44(
         .d(line$44$d),
         .q(line$44$q),
         .clock(line$44$clock)
     );
-    top$dst line$45(
+    top$tags$0 line$45(
         .d(line$45$d),
         .q(line$45$q),
         .clock(line$45$clock)
     );
-    top$dst line$46(
+    top$tags$0 line$46(
         .d(line$46$d),
         .q(line$46$q),
         .clock(line$46$clock)
     );
-    top$dst line$47(
+    top$tags$0 line$47(
         .d(line$47$d),
         .q(line$47$q),
         .clock(line$47$clock)
     );
-    top$dst line$48(
+    top$tags$0 line$48(
         .d(line$48$d),
         .q(line$48$q),
         .clock(line$48$clock)
     );
-    top$dst line$49(
+    top$tags$0 line$49(
         .d(line$49$d),
         .q(line$49$q),
         .clock(line$49$clock)
     );
-    top$dst line$50(
+    top$tags$0 line$50(
         .d(line$50$d),
         .q(line$50$q),
         .clock(line$50$clock)
     );
-    top$dst line$51(
+    top$tags$0 line$51(
         .d(line$51$d),
         .q(line$51$q),
         .clock(line$51$clock)
     );
-    top$dst line$52(
+    top$tags$0 line$52(
         .d(line$52$d),
         .q(line$52$q),
         .clock(line$52$clock)
     );
-    top$dst line$53(
+    top$tags$0 line$53(
         .d(line$53$d),
         .q(line$53$q),
         .clock(line$53$clock)
     );
-    top$dst line$54(
+    top$tags$0 line$54(
         .d(line$54$d),
         .q(line$54$q),
         .clock(line$54$clock)
     );
-    top$dst line$55(
+    top$tags$0 line$55(
         .d(line$55$d),
         .q(line$55$q),
         .clock(line$55$clock)
     );
-    top$dst line$56(
+    top$tags$0 line$56(
         .d(line$56$d),
         .q(line$56$q),
         .clock(line$56$clock)
     );
-    top$dst line$57(
+    top$tags$0 line$57(
         .d(line$57$d),
         .q(line$57$q),
         .clock(line$57$clock)
     );
-    top$dst line$58(
+    top$tags$0 line$58(
         .d(line$58$d),
         .q(line$58$q),
         .clock(line$58$clock)
     );
-    top$dst line$59(
+    top$tags$0 line$59(
         .d(line$59$d),
         .q(line$59$q),
         .clock(line$59$clock)
     );
-    top$dst line$60(
+    top$tags$0 line$60(
         .d(line$60$d),
         .q(line$60$q),
         .clock(line$60$clock)
     );
-    top$dst line$61(
+    top$tags$0 line$61(
         .d(line$61$d),
         .q(line$61$q),
         .clock(line$61$clock)
     );
-    top$dst line$62(
+    top$tags$0 line$62(
         .d(line$62$d),
         .q(line$62$q),
         .clock(line$62$clock)
     );
-    top$dst line$63(
+    top$tags$0 line$63(
         .d(line$63$d),
         .q(line$63$q),
         .clock(line$63$clock)
     );
-    top$dst line$64(
+    top$tags$0 line$64(
         .d(line$64$d),
         .q(line$64$q),
         .clock(line$64$clock)
     );
-    top$dst line$65(
+    top$tags$0 line$65(
         .d(line$65$d),
         .q(line$65$q),
         .clock(line$65$clock)
     );
-    top$dst line$66(
+    top$tags$0 line$66(
         .d(line$66$d),
         .q(line$66$q),
         .clock(line$66$clock)
     );
-    top$dst line$67(
+    top$tags$0 line$67(
         .d(line$67$d),
         .q(line$67$q),
         .clock(line$67$clock)
     );
-    top$dst line$68(
+    top$tags$0 line$68(
         .d(line$68$d),
         .q(line$68$q),
         .clock(line$68$clock)
     );
-    top$dst line$69(
+    top$tags$0 line$69(
         .d(line$69$d),
         .q(line$69$q),
         .clock(line$69$clock)
     );
-    top$dst line$70(
+    top$tags$0 line$70(
         .d(line$70$d),
         .q(line$70$q),
         .clock(line$70$clock)
     );
-    top$dst line$71(
+    top$tags$0 line$71(
         .d(line$71$d),
         .q(line$71$q),
         .clock(line$71$clock)
     );
-    top$dst line$72(
+    top$tags$0 line$72(
         .d(line$72$d),
         .q(line$72$q),
         .clock(line$72$clock)
     );
-    top$dst line$73(
+    top$tags$0 line$73(
         .d(line$73$d),
         .q(line$73$q),
         .clock(line$73$clock)
     );
-    top$dst line$74(
+    top$tags$0 line$74(
         .d(line$74$d),
         .q(line$74$q),
         .clock(line$74$clock)
     );
-    top$dst line$75(
+    top$tags$0 line$75(
         .d(line$75$d),
         .q(line$75$q),
         .clock(line$75$clock)
     );
-    top$dst line$76(
+    top$tags$0 line$76(
         .d(line$76$d),
         .q(line$76$q),
         .clock(line$76$clock)
     );
-    top$dst line$77(
+    top$tags$0 line$77(
         .d(line$77$d),
         .q(line$77$q),
         .clock(line$77$clock)
     );
-    top$dst line$78(
+    top$tags$0 line$78(
         .d(line$78$d),
         .q(line$78$q),
         .clock(line$78$clock)
     );
-    top$dst line$79(
+    top$tags$0 line$79(
         .d(line$79$d),
         .q(line$79$q),
         .clock(line$79$clock)
     );
-    top$dst line$80(
+    top$tags$0 line$80(
         .d(line$80$d),
         .q(line$80$q),
         .clock(line$80$clock)
     );
-    top$dst line$81(
+    top$tags$0 line$81(
         .d(line$81$d),
         .q(line$81$q),
         .clock(line$81$clock)
     );
-    top$dst line$82(
+    top$tags$0 line$82(
         .d(line$82$d),
         .q(line$82$q),
         .clock(line$82$clock)
     );
-    top$dst line$83(
+    top$tags$0 line$83(
         .d(line$83$d),
         .q(line$83$q),
         .clock(line$83$clock)
     );
-    top$dst line$84(
+    top$tags$0 line$84(
         .d(line$84$d),
         .q(line$84$q),
         .clock(line$84$clock)
     );
-    top$dst line$85(
+    top$tags$0 line$85(
         .d(line$85$d),
         .q(line$85$q),
         .clock(line$85$clock)
     );
-    top$dst line$86(
+    top$tags$0 line$86(
         .d(line$86$d),
         .q(line$86$q),
         .clock(line$86$clock)
     );
-    top$dst line$87(
+    top$tags$0 line$87(
         .d(line$87$d),
         .q(line$87$q),
         .clock(line$87$clock)
     );
-    top$dst line$88(
+    top$tags$0 line$88(
         .d(line$88$d),
         .q(line$88$q),
         .clock(line$88$clock)
     );
-    top$dst line$89(
+    top$tags$0 line$89(
         .d(line$89$d),
         .q(line$89$q),
         .clock(line$89$clock)
     );
-    top$dst line$90(
+    top$tags$0 line$90(
         .d(line$90$d),
         .q(line$90$q),
         .clock(line$90$clock)
     );
-    top$dst line$91(
+    top$tags$0 line$91(
         .d(line$91$d),
         .q(line$91$q),
         .clock(line$91$clock)
     );
-    top$dst line$92(
+    top$tags$0 line$92(
         .d(line$92$d),
         .q(line$92$q),
         .clock(line$92$clock)
     );
-    top$dst line$93(
+    top$tags$0 line$93(
         .d(line$93$d),
         .q(line$93$q),
         .clock(line$93$clock)
     );
-    top$dst line$94(
+    top$tags$0 line$94(
         .d(line$94$d),
         .q(line$94$q),
         .clock(line$94$clock)
     );
-    top$dst line$95(
+    top$tags$0 line$95(
         .d(line$95$d),
         .q(line$95$q),
         .clock(line$95$clock)
     );
-    top$dst line$96(
+    top$tags$0 line$96(
         .d(line$96$d),
         .q(line$96$q),
         .clock(line$96$clock)
     );
-    top$dst line$97(
+    top$tags$0 line$97(
         .d(line$97$d),
         .q(line$97$q),
         .clock(line$97$clock)
     );
-    top$dst line$98(
+    top$tags$0 line$98(
         .d(line$98$d),
         .q(line$98$q),
         .clock(line$98$clock)
     );
-    top$dst line$99(
+    top$tags$0 line$99(
         .d(line$99$d),
         .q(line$99$q),
         .clock(line$99$clock)
     );
-    top$dst line$100(
+    top$tags$0 line$100(
         .d(line$100$d),
         .q(line$100$q),
         .clock(line$100$clock)
     );
-    top$dst line$101(
+    top$tags$0 line$101(
         .d(line$101$d),
         .q(line$101$q),
         .clock(line$101$clock)
     );
-    top$dst line$102(
+    top$tags$0 line$102(
         .d(line$102$d),
         .q(line$102$q),
         .clock(line$102$clock)
     );
-    top$dst line$103(
+    top$tags$0 line$103(
         .d(line$103$d),
         .q(line$103$q),
         .clock(line$103$clock)
     );
-    top$dst line$104(
+    top$tags$0 line$104(
         .d(line$104$d),
         .q(line$104$q),
         .clock(line$104$clock)
     );
-    top$dst line$105(
+    top$tags$0 line$105(
         .d(line$105$d),
         .q(line$105$q),
         .clock(line$105$clock)
     );
-    top$dst line$106(
+    top$tags$0 line$106(
         .d(line$106$d),
         .q(line$106$q),
         .clock(line$106$clock)
     );
-    top$dst line$107(
+    top$tags$0 line$107(
         .d(line$107$d),
         .q(line$107$q),
         .clock(line$107$clock)
     );
-    top$dst line$108(
+    top$tags$0 line$108(
         .d(line$108$d),
         .q(line$108$q),
         .clock(line$108$clock)
     );
-    top$dst line$109(
+    top$tags$0 line$109(
         .d(line$109$d),
         .q(line$109$q),
         .clock(line$109$clock)
     );
-    top$dst line$110(
+    top$tags$0 line$110(
         .d(line$110$d),
         .q(line$110$q),
         .clock(line$110$clock)
     );
-    top$dst line$111(
+    top$tags$0 line$111(
         .d(line$111$d),
         .q(line$111$q),
         .clock(line$111$clock)
     );
-    top$dst line$112(
+    top$tags$0 line$112(
         .d(line$112$d),
         .q(line$112$q),
         .clock(line$112$clock)
     );
-    top$dst line$113(
+    top$tags$0 line$113(
         .d(line$113$d),
         .q(line$113$q),
         .clock(line$113$clock)
     );
-    top$dst line$114(
+    top$tags$0 line$114(
         .d(line$114$d),
         .q(line$114$q),
         .clock(line$114$clock)
     );
-    top$dst line$115(
+    top$tags$0 line$115(
         .d(line$115$d),
         .q(line$115$q),
         .clock(line$115$clock)
     );
-    top$dst line$116(
+    top$tags$0 line$116(
         .d(line$116$d),
         .q(line$116$q),
         .clock(line$116$clock)
     );
-    top$dst line$117(
+    top$tags$0 line$117(
         .d(line$117$d),
         .q(line$117$q),
         .clock(line$117$clock)
     );
-    top$dst line$118(
+    top$tags$0 line$118(
         .d(line$118$d),
         .q(line$118$q),
         .clock(line$118$clock)
     );
-    top$dst line$119(
+    top$tags$0 line$119(
         .d(line$119$d),
         .q(line$119$q),
         .clock(line$119$clock)
     );
-    top$dst line$120(
+    top$tags$0 line$120(
         .d(line$120$d),
         .q(line$120$q),
         .clock(line$120$clock)
     );
-    top$dst line$121(
+    top$tags$0 line$121(
         .d(line$121$d),
         .q(line$121$q),
         .clock(line$121$clock)
     );
-    top$dst line$122(
+    top$tags$0 line$122(
         .d(line$122$d),
         .q(line$122$q),
         .clock(line$122$clock)
     );
-    top$dst line$123(
+    top$tags$0 line$123(
         .d(line$123$d),
         .q(line$123$q),
         .clock(line$123$clock)
     );
-    top$dst line$124(
+    top$tags$0 line$124(
         .d(line$124$d),
         .q(line$124$q),
         .clock(line$124$clock)
     );
-    top$dst line$125(
+    top$tags$0 line$125(
         .d(line$125$d),
         .q(line$125$q),
         .clock(line$125$clock)
     );
-    top$dst line$126(
+    top$tags$0 line$126(
         .d(line$126$d),
         .q(line$126$q),
         .clock(line$126$clock)
     );
-    top$dst line$127(
+    top$tags$0 line$127(
         .d(line$127$d),
         .q(line$127$q),
         .clock(line$127$clock)
@@ -11671,82 +14217,82 @@ module top$tri_unit$tc_ab$edges$0$a_sgn_wait(clock,d,q);
     reg  line$15$clock;
     
     // Sub module instances
-    top$dst line$0(
+    top$tags$0 line$0(
         .d(line$0$d),
         .q(line$0$q),
         .clock(line$0$clock)
     );
-    top$dst line$1(
+    top$tags$0 line$1(
         .d(line$1$d),
         .q(line$1$q),
         .clock(line$1$clock)
     );
-    top$dst line$2(
+    top$tags$0 line$2(
         .d(line$2$d),
         .q(line$2$q),
         .clock(line$2$clock)
     );
-    top$dst line$3(
+    top$tags$0 line$3(
         .d(line$3$d),
         .q(line$3$q),
         .clock(line$3$clock)
     );
-    top$dst line$4(
+    top$tags$0 line$4(
         .d(line$4$d),
         .q(line$4$q),
         .clock(line$4$clock)
     );
-    top$dst line$5(
+    top$tags$0 line$5(
         .d(line$5$d),
         .q(line$5$q),
         .clock(line$5$clock)
     );
-    top$dst line$6(
+    top$tags$0 line$6(
         .d(line$6$d),
         .q(line$6$q),
         .clock(line$6$clock)
     );
-    top$dst line$7(
+    top$tags$0 line$7(
         .d(line$7$d),
         .q(line$7$q),
         .clock(line$7$clock)
     );
-    top$dst line$8(
+    top$tags$0 line$8(
         .d(line$8$d),
         .q(line$8$q),
         .clock(line$8$clock)
     );
-    top$dst line$9(
+    top$tags$0 line$9(
         .d(line$9$d),
         .q(line$9$q),
         .clock(line$9$clock)
     );
-    top$dst line$10(
+    top$tags$0 line$10(
         .d(line$10$d),
         .q(line$10$q),
         .clock(line$10$clock)
     );
-    top$dst line$11(
+    top$tags$0 line$11(
         .d(line$11$d),
         .q(line$11$q),
         .clock(line$11$clock)
     );
-    top$dst line$12(
+    top$tags$0 line$12(
         .d(line$12$d),
         .q(line$12$q),
         .clock(line$12$clock)
     );
-    top$dst line$13(
+    top$tags$0 line$13(
         .d(line$13$d),
         .q(line$13$q),
         .clock(line$13$clock)
     );
-    top$dst line$14(
+    top$tags$0 line$14(
         .d(line$14$d),
         .q(line$14$q),
         .clock(line$14$clock)
     );
-    top$dst line$15(
+    top$tags$0 line$15(
         .d(line$15$d),
         .q(line$15$q),
         .clock(line$15$clock)
@@ -12894,187 +15440,187 @@ module top$tri_unit$tc_ab$edges$0$pz_sgn_wait(clock,d,q);
     reg  line$36$clock;
     
     // Sub module instances
-    top$dst line$0(
+    top$tags$0 line$0(
         .d(line$0$d),
         .q(line$0$q),
         .clock(line$0$clock)
     );
-    top$dst line$1(
+    top$tags$0 line$1(
         .d(line$1$d),
         .q(line$1$q),
         .clock(line$1$clock)
     );
-    top$dst line$2(
+    top$tags$0 line$2(
         .d(line$2$d),
         .q(line$2$q),
         .clock(line$2$clock)
     );
-    top$dst line$3(
+    top$tags$0 line$3(
         .d(line$3$d),
         .q(line$3$q),
         .clock(line$3$clock)
     );
-    top$dst line$4(
+    top$tags$0 line$4(
         .d(line$4$d),
         .q(line$4$q),
         .clock(line$4$clock)
     );
-    top$dst line$5(
+    top$tags$0 line$5(
         .d(line$5$d),
         .q(line$5$q),
         .clock(line$5$clock)
     );
-    top$dst line$6(
+    top$tags$0 line$6(
         .d(line$6$d),
         .q(line$6$q),
         .clock(line$6$clock)
     );
-    top$dst line$7(
+    top$tags$0 line$7(
         .d(line$7$d),
         .q(line$7$q),
         .clock(line$7$clock)
     );
-    top$dst line$8(
+    top$tags$0 line$8(
         .d(line$8$d),
         .q(line$8$q),
         .clock(line$8$clock)
     );
-    top$dst line$9(
+    top$tags$0 line$9(
         .d(line$9$d),
         .q(line$9$q),
         .clock(line$9$clock)
     );
-    top$dst line$10(
+    top$tags$0 line$10(
         .d(line$10$d),
         .q(line$10$q),
         .clock(line$10$clock)
     );
-    top$dst line$11(
+    top$tags$0 line$11(
         .d(line$11$d),
         .q(line$11$q),
         .clock(line$11$clock)
     );
-    top$dst line$12(
+    top$tags$0 line$12(
         .d(line$12$d),
         .q(line$12$q),
         .clock(line$12$clock)
     );
-    top$dst line$13(
+    top$tags$0 line$13(
         .d(line$13$d),
         .q(line$13$q),
         .clock(line$13$clock)
     );
-    top$dst line$14(
+    top$tags$0 line$14(
         .d(line$14$d),
         .q(line$14$q),
         .clock(line$14$clock)
     );
-    top$dst line$15(
+    top$tags$0 line$15(
         .d(line$15$d),
         .q(line$15$q),
         .clock(line$15$clock)
     );
-    top$dst line$16(
+    top$tags$0 line$16(
         .d(line$16$d),
         .q(line$16$q),
         .clock(line$16$clock)
     );
-    top$dst line$17(
+    top$tags$0 line$17(
         .d(line$17$d),
         .q(line$17$q),
         .clock(line$17$clock)
     );
-    top$dst line$18(
+    top$tags$0 line$18(
         .d(line$18$d),
         .q(line$18$q),
         .clock(line$18$clock)
     );
-    top$dst line$19(
+    top$tags$0 line$19(
         .d(line$19$d),
         .q(line$19$q),
         .clock(line$19$clock)
     );
-    top$dst line$20(
+    top$tags$0 line$20(
         .d(line$20$d),
         .q(line$20$q),
         .clock(line$20$clock)
     );
-    top$dst line$21(
+    top$tags$0 line$21(
         .d(line$21$d),
         .q(line$21$q),
         .clock(line$21$clock)
     );
-    top$dst line$22(
+    top$tags$0 line$22(
         .d(line$22$d),
         .q(line$22$q),
         .clock(line$22$clock)
     );
-    top$dst line$23(
+    top$tags$0 line$23(
         .d(line$23$d),
         .q(line$23$q),
         .clock(line$23$clock)
     );
-    top$dst line$24(
+    top$tags$0 line$24(
         .d(line$24$d),
         .q(line$24$q),
         .clock(line$24$clock)
     );
-    top$dst line$25(
+    top$tags$0 line$25(
         .d(line$25$d),
         .q(line$25$q),
         .clock(line$25$clock)
     );
-    top$dst line$26(
+    top$tags$0 line$26(
         .d(line$26$d),
         .q(line$26$q),
         .clock(line$26$clock)
     );
-    top$dst line$27(
+    top$tags$0 line$27(
         .d(line$27$d),
         .q(line$27$q),
         .clock(line$27$clock)
     );
-    top$dst line$28(
+    top$tags$0 line$28(
         .d(line$28$d),
         .q(line$28$q),
         .clock(line$28$clock)
     );
-    top$dst line$29(
+    top$tags$0 line$29(
         .d(line$29$d),
         .q(line$29$q),
         .clock(line$29$clock)
     );
-    top$dst line$30(
+    top$tags$0 line$30(
         .d(line$30$d),
         .q(line$30$q),
         .clock(line$30$clock)
     );
-    top$dst line$31(
+    top$tags$0 line$31(
         .d(line$31$d),
         .q(line$31$q),
         .clock(line$31$clock)
     );
-    top$dst line$32(
+    top$tags$0 line$32(
         .d(line$32$d),
         .q(line$32$q),
         .clock(line$32$clock)
     );
-    top$dst line$33(
+    top$tags$0 line$33(
         .d(line$33$d),
         .q(line$33$q),
         .clock(line$33$clock)
     );
-    top$dst line$34(
+    top$tags$0 line$34(
         .d(line$34$d),
         .q(line$34$q),
         .clock(line$34$clock)
     );
-    top$dst line$35(
+    top$tags$0 line$35(
         .d(line$35$d),
         .q(line$35$q),
         .clock(line$35$clock)
     );
-    top$dst line$36(
+    top$tags$0 line$36(
         .d(line$36$d),
         .q(line$36$q),
         .clock(line$36$clock)

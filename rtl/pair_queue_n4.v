@@ -1,6 +1,6 @@
 
 
-module top(clock,clear,lifo,push,push_data,pop,empty,full,count,max_count,overflow,top_data);
+module top(clock,clear,lifo,push,push_data,push2,push2_data,pop,empty,full,count,max_count,overflow,top_data);
     
     // Module arguments
     input wire  clock;
@@ -8,6 +8,8 @@ module top(clock,clear,lifo,push,push_data,pop,empty,full,count,max_count,overfl
     input wire  lifo;
     input wire  push;
     input wire  [66:0] push_data;
+    input wire  push2;
+    input wire  [66:0] push2_data;
     input wire  pop;
     output reg  empty;
     output reg  full;
@@ -38,6 +40,9 @@ module top(clock,clear,lifo,push,push_data,pop,empty,full,count,max_count,overfl
     reg  [66:0] byp_data$d;
     wire  [66:0] byp_data$q;
     reg  byp_data$clock;
+    reg  rsel$d;
+    wire  rsel$q;
+    reg  rsel$clock;
     reg  order_lifo$d;
     wire  order_lifo$q;
     reg  order_lifo$clock;
@@ -47,27 +52,41 @@ module top(clock,clear,lifo,push,push_data,pop,empty,full,count,max_count,overfl
     reg  ovf_r$d;
     wire  ovf_r$q;
     reg  ovf_r$clock;
-    reg  [3:0] ram$read_address;
-    reg  ram$read_clock;
-    wire  [66:0] ram$read_data;
-    reg  [3:0] ram$write_address;
-    reg  ram$write_clock;
-    reg  [66:0] ram$write_data;
-    reg  ram$write_enable;
+    reg  [2:0] bank0$read_address;
+    reg  bank0$read_clock;
+    wire  [66:0] bank0$read_data;
+    reg  [2:0] bank0$write_address;
+    reg  bank0$write_clock;
+    reg  [66:0] bank0$write_data;
+    reg  bank0$write_enable;
+    reg  [2:0] bank1$read_address;
+    reg  bank1$read_clock;
+    wire  [66:0] bank1$read_data;
+    reg  [2:0] bank1$write_address;
+    reg  bank1$write_clock;
+    reg  [66:0] bank1$write_data;
+    reg  bank1$write_enable;
     
     // Local signals
     reg  nonempty;
     reg  many;
-    reg  is_full;
     reg  do_pop;
-    reg  do_push;
+    reg  [4:0] c0;
+    reg  [66:0] e1;
+    reg  any;
+    reg  two;
+    reg  s1;
+    reg  s2;
     reg  [66:0] next_entry;
     reg  [4:0] cnt_n;
     reg  [3:0] rd_n;
     reg  [3:0] wr_n;
+    reg  [3:0] wr1;
     reg  [3:0] raddr;
-    reg  we;
-    reg  [66:0] wdata;
+    reg  we_a;
+    reg  we_b;
+    reg  [66:0] wdata_a;
+    reg  [66:0] wdata_b;
     
     // Sub module instances
     top$cnt cnt(
@@ -100,6 +119,11 @@ module top(clock,clear,lifo,push,push_data,pop,empty,full,count,max_count,overfl
         .q(byp_data$q),
         .clock(byp_data$clock)
     );
+    top$byp rsel(
+        .d(rsel$d),
+        .q(rsel$q),
+        .clock(rsel$clock)
+    );
     top$byp order_lifo(
         .d(order_lifo$d),
         .q(order_lifo$q),
@@ -115,14 +139,23 @@ module top(clock,clear,lifo,push,push_data,pop,empty,full,count,max_count,overfl
         .q(ovf_r$q),
         .clock(ovf_r$clock)
     );
-    top$ram ram(
-        .read_address(ram$read_address),
-        .read_clock(ram$read_clock),
-        .read_data(ram$read_data),
-        .write_address(ram$write_address),
-        .write_clock(ram$write_clock),
-        .write_data(ram$write_data),
-        .write_enable(ram$write_enable)
+    top$bank0 bank0(
+        .read_address(bank0$read_address),
+        .read_clock(bank0$read_clock),
+        .read_data(bank0$read_data),
+        .write_address(bank0$write_address),
+        .write_clock(bank0$write_clock),
+        .write_data(bank0$write_data),
+        .write_enable(bank0$write_enable)
+    );
+    top$bank0 bank1(
+        .read_address(bank1$read_address),
+        .read_clock(bank1$read_clock),
+        .read_data(bank1$read_data),
+        .write_address(bank1$write_address),
+        .write_clock(bank1$write_clock),
+        .write_data(bank1$write_data),
+        .write_enable(bank1$write_enable)
     );
     
     // Update code
@@ -133,6 +166,7 @@ module top(clock,clear,lifo,push,push_data,pop,empty,full,count,max_count,overfl
         wr_ptr$clock = clock;
         byp$clock = clock;
         byp_data$clock = clock;
+        rsel$clock = clock;
         order_lifo$clock = clock;
         max_r$clock = clock;
         ovf_r$clock = clock;
@@ -142,11 +176,14 @@ module top(clock,clear,lifo,push,push_data,pop,empty,full,count,max_count,overfl
         wr_ptr$d = wr_ptr$q;
         byp$d = byp$q;
         byp_data$d = byp_data$q;
+        rsel$d = rsel$q;
         order_lifo$d = order_lifo$q;
         max_r$d = max_r$q;
         ovf_r$d = ovf_r$q;
-        ram$read_clock = clock;
-        ram$write_clock = clock;
+        bank0$read_clock = clock;
+        bank0$write_clock = clock;
+        bank1$read_clock = clock;
+        bank1$write_clock = clock;
         empty = cnt$q == 32'h0;
         full = cnt$q == c_cap;
         count = cnt$q;
@@ -155,38 +192,67 @@ module top(clock,clear,lifo,push,push_data,pop,empty,full,count,max_count,overfl
         top_data = top_r$q;
         nonempty = cnt$q != 32'h0;
         many = cnt$q > 32'h1;
-        is_full = cnt$q == c_cap;
         do_pop = pop & nonempty;
-        do_push = push & (~is_full | do_pop);
-        next_entry = ram$read_data;
+        c0 = cnt$q - ((do_pop) & 5'h1f);
+        e1 = push2_data;
+        if (push) begin
+            e1 = push_data;
+        end
+        any = push | push2;
+        two = push & push2;
+        s1 = any & (c0 != c_cap);
+        s2 = two & (c0 + 32'h1 < c_cap);
+        next_entry = bank0$read_data;
+        if (rsel$q) begin
+            next_entry = bank1$read_data;
+        end
         if (byp$q) begin
             next_entry = byp_data$q;
         end
-        cnt_n = cnt$q;
-        if (do_push & ~do_pop) begin
-            cnt_n = cnt$q + 32'h1;
-        end
-        if (do_pop & ~do_push) begin
-            cnt_n = cnt$q - 32'h1;
-        end
+        cnt_n = c0 + ((s1) & 5'h1f) + ((s2) & 5'h1f);
         rd_n = rd_ptr$q;
         wr_n = wr_ptr$q;
-        we = 1'b0;
-        wdata = push_data;
+        wr1 = wr_ptr$q + 32'h1;
+        we_a = 1'b0;
+        we_b = 1'b0;
+        wdata_a = e1;
+        wdata_b = push2_data;
         if (order_lifo$q) begin
-            if (do_pop & ~do_push) begin
-                top_r$d = 32'h0;
-                if (many) begin
-                    top_r$d = next_entry;
-                    wr_n = wr_ptr$q - 32'h1;
+            wdata_b = e1;
+            if (do_pop) begin
+                if (~s1) begin
+                    top_r$d = 32'h0;
+                    if (many) begin
+                        top_r$d = next_entry;
+                        wr_n = wr_ptr$q - 32'h1;
+                    end
+                end
+                if (s1) begin
+                    top_r$d = e1;
+                end
+                if (s2) begin
+                    we_a = 1'b1;
+                    wr_n = wr_ptr$q + 32'h1;
+                    top_r$d = push2_data;
                 end
             end
-            if (do_push) begin
-                top_r$d = push_data;
-                if (nonempty & ~do_pop) begin
-                    we = 1'b1;
-                    wdata = top_r$q;
+            else begin
+                if (s1) begin
+                    top_r$d = e1;
+                    if (nonempty) begin
+                        we_a = 1'b1;
+                        wdata_a = top_r$q;
+                        wr_n = wr_ptr$q + 32'h1;
+                    end
+                end
+                if (s2) begin
+                    top_r$d = push2_data;
+                    we_a = 1'b1;
                     wr_n = wr_ptr$q + 32'h1;
+                    if (nonempty) begin
+                        we_b = 1'b1;
+                        wr_n = wr_ptr$q + 32'h2;
+                    end
                 end
             end
         end
@@ -198,13 +264,24 @@ module top(clock,clear,lifo,push,push_data,pop,empty,full,count,max_count,overfl
                     rd_n = rd_ptr$q + 32'h1;
                 end
             end
-            if (do_push) begin
-                if (many | (nonempty & ~do_pop)) begin
-                    we = 1'b1;
+            if (c0 == 32'h0) begin
+                if (s1) begin
+                    top_r$d = e1;
+                end
+                if (s2) begin
+                    we_a = 1'b1;
+                    wdata_a = push2_data;
                     wr_n = wr_ptr$q + 32'h1;
                 end
-                else begin
-                    top_r$d = push_data;
+            end
+            else begin
+                if (s1) begin
+                    we_a = 1'b1;
+                    wr_n = wr_ptr$q + 32'h1;
+                end
+                if (s2) begin
+                    we_b = 1'b1;
+                    wr_n = wr_ptr$q + 32'h2;
                 end
             end
         end
@@ -212,7 +289,7 @@ module top(clock,clear,lifo,push,push_data,pop,empty,full,count,max_count,overfl
         if (cnt_n > max_r$q) begin
             max_r$d = cnt_n;
         end
-        if (push & is_full & ~do_pop) begin
+        if ((any & ~s1) | (two & ~s2)) begin
             ovf_r$d = 1'b1;
         end
         if (clear) begin
@@ -220,7 +297,8 @@ module top(clock,clear,lifo,push,push_data,pop,empty,full,count,max_count,overfl
             top_r$d = 32'h0;
             rd_n = 32'h0;
             wr_n = 32'h0;
-            we = 1'b0;
+            we_a = 1'b0;
+            we_b = 1'b0;
             order_lifo$d = lifo;
             max_r$d = 32'h0;
             ovf_r$d = 1'b0;
@@ -231,15 +309,60 @@ module top(clock,clear,lifo,push,push_data,pop,empty,full,count,max_count,overfl
         if (order_lifo$d) begin
             raddr = wr_n - 32'h1;
         end
-        ram$write_enable = we;
-        ram$write_address = wr_ptr$q;
-        ram$write_data = wdata;
-        ram$read_address = raddr;
-        byp$d = we & (raddr == wr_ptr$q);
-        byp_data$d = wdata;
+        bank0$write_enable = (we_a & ~wr_ptr$q[32'h0]) | (we_b & wr_ptr$q[32'h0]);
+        bank1$write_enable = (we_a & wr_ptr$q[32'h0]) | (we_b & ~wr_ptr$q[32'h0]);
+        bank0$write_address = wr_ptr$q[(32'h1)+:(3)];
+        bank0$write_data = wdata_a;
+        bank1$write_address = wr_ptr$q[(32'h1)+:(3)];
+        bank1$write_data = wdata_a;
+        if (wr_ptr$q[32'h0]) begin
+            bank0$write_address = wr1[(32'h1)+:(3)];
+            bank0$write_data = wdata_b;
+        end
+        else begin
+            bank1$write_address = wr1[(32'h1)+:(3)];
+            bank1$write_data = wdata_b;
+        end
+        bank0$read_address = raddr[(32'h1)+:(3)];
+        bank1$read_address = raddr[(32'h1)+:(3)];
+        rsel$d = raddr[32'h0];
+        byp$d = (we_a & (raddr == wr_ptr$q)) | (we_b & (raddr == wr1));
+        byp_data$d = wdata_a;
+        if (we_b & (raddr == wr1)) begin
+            byp_data$d = wdata_b;
+        end
     end
     
 endmodule // top
+
+
+module top$bank0(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [2:0] read_address;
+    input wire  read_clock;
+    output reg  [66:0] read_data;
+    input wire  [2:0] write_address;
+    input wire  write_clock;
+    input wire  [66:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg[66:0] mem[7:0];
+    
+    
+    
+    always @(posedge read_clock) begin
+       read_data <= mem[read_address];
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+                
+endmodule // top$bank0
 
 
 module top$byp(d,q,clock);
@@ -297,35 +420,6 @@ module top$cnt(d,q,clock);
     end
           
 endmodule // top$cnt
-
-
-module top$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
-    
-    // Module arguments
-    input wire  [3:0] read_address;
-    input wire  read_clock;
-    output reg  [66:0] read_data;
-    input wire  [3:0] write_address;
-    input wire  write_clock;
-    input wire  [66:0] write_data;
-    input wire  write_enable;
-    
-    // Update code (custom)
-    reg[66:0] mem[15:0];
-    
-    
-    
-    always @(posedge read_clock) begin
-       read_data <= mem[read_address];
-    end
-    
-    always @(posedge write_clock) begin
-       if (write_enable) begin
-          mem[write_address] <= write_data;
-       end
-    end
-                
-endmodule // top$ram
 
 
 module top$rd_ptr(d,q,clock);

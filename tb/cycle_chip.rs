@@ -40,7 +40,7 @@ fn every_checked_in_trace() {
     let out = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("target/chip-expect");
     for q in queries() {
         let p = q.prepare().unwrap();
-        let params = Params { memory: q.timing.into(), ..Params::RTL };
+        let params = q.params();
         let (tr, stats) = cycle::run_query(&p.chip, &p.chip.setup(&q.pose), q.lifo, q.mode, params, q.reader, MAX_CYCLES, counted()).unwrap();
         let stats = stats.expect("counted");
         println!("{}: {} ({stats:?})", q.name, tr.text().lines().last().unwrap());
@@ -75,7 +75,7 @@ fn large_queries_cover_what_they_claim() {
     let (mut back_pressure, mut mixed, mut orders_modes) = (false, false, std::collections::BTreeSet::new());
     for q in &large {
         let p = q.prepare().unwrap();
-        let params = Params { memory: q.timing.into(), ..Params::RTL };
+        let params = q.params();
         let (tr, st) = cycle::run_query(&p.chip, &p.chip.setup(&q.pose), q.lifo, q.mode, params, q.reader, MAX_CYCLES, counted()).unwrap();
         let st = st.expect("counted");
         assert!((10_000..=200_000).contains(&tr.cycles), "{}: {} cycles", q.name, tr.cycles);
@@ -140,7 +140,7 @@ fn run(chip: &Chip, pose: &Pose, lifo: bool, mode: Mode, p: Params, reader: Read
     let mut c = CycleChip::new(&chip.cfg, p, &chip.a, &chip.b, &setup, true)?;
     let words = image_words(&chip.a, &chip.b);
     let d = Drive { memory: p.memory, word_bits: chip.layout.word_bits(), reader, words, max_cycles: MAX_CYCLES };
-    run_query(&mut c, &control_writes(&chip.a, &chip.b, lifo, mode), &d, true, |_, p| {
+    run_query(&mut c, &control_writes(&chip.a, &chip.b, lifo, mode, &p), &d, true, |_, p| {
         assert_eq!(p.map(|v| v.len()), Some(cycle::PROBES.len()));
         Ok(())
     }, None)
@@ -188,9 +188,9 @@ proptest! {
 /// The RTL configuration's parameters are the RTL's own constants.
 #[test]
 fn rtl_point_is_the_rtl() {
-    use collision_chip::rtl::{e8m15::TriUnit, DOP_LATENCY, LEAF_FIFO};
+    use collision_chip::rtl::{e8m15::TriUnit, CREDIT, DOP_LATENCY};
     let p = Params::RTL;
-    assert_eq!((p.dop_latency, p.tri_latency, p.tri_fifo, p.credit), (DOP_LATENCY as u32, TriUnit::LATENCY as u32, TriUnit::FIFO_DEPTH as u32, LEAF_FIFO as u32));
+    assert_eq!((p.dop_latency, p.tri_latency, p.tri_fifo, p.credit), (DOP_LATENCY as u32, TriUnit::LATENCY as u32, TriUnit::FIFO_DEPTH as u32, CREDIT as u32));
     assert_eq!((p.dop_latency, p.tri_latency), (15, 130), "the documented latencies");
 }
 

@@ -10,7 +10,7 @@
 
 use collision_chip::cycle::chip::Chip as CycleChip;
 use collision_chip::cycle::drive::{run_query, ChipTrace, Drive, Lockstep, Reader};
-use collision_chip::cycle::{Ddr, MemTiming, Memory, Params};
+use collision_chip::cycle::{Ddr, Memory, Params};
 use collision_chip::dop::HostSetup;
 use collision_chip::pose::Pose;
 use collision_chip::query::Chip;
@@ -23,8 +23,8 @@ use std::path::PathBuf;
 /// Generous: the longest query takes about 2,000 cycles.
 const MAX_CYCLES: u64 = 20_000;
 
-fn rtl_chip<const N: usize, const NP1: usize>() -> CollisionChip<N, NP1> {
-    chip_top::<N, NP1>(CHIP_CONFIG.dop_rounding.op(), CHIP_CONFIG.tri_rounding)
+fn rtl_chip<const N: usize, const NP1: usize, const NM1: usize>() -> CollisionChip<N, NP1, NM1> {
+    chip_top::<N, NP1, NM1>(CHIP_CONFIG.dop_rounding.op(), CHIP_CONFIG.tri_rounding)
 }
 
 /// One query to run in lockstep: the golden images, the pose's setup, the RTL's memory
@@ -37,36 +37,37 @@ struct Case {
     golden: QueryResult,
     lifo: bool,
     mode: Mode,
-    timing: Memory,
+    /// The RTL chip's parameters: its memory and memory port (register 0x126).
+    params: Params,
     reader: Reader,
 }
 
 impl Case {
-    fn new(name: &str, chip: Chip, pose: Pose, lifo: bool, mode: Mode, timing: Memory, reader: Reader) -> Case {
+    fn new(name: &str, chip: Chip, pose: Pose, lifo: bool, mode: Mode, params: Params, reader: Reader) -> Case {
         let setup = chip.setup(&pose);
-        let image = QueryImage::new(&chip.a, &chip.b, &setup, lifo, mode).unwrap();
+        let image = QueryImage::new(&chip.a, &chip.b, &setup, lifo, mode, &params).unwrap();
         let golden = chip.query(&pose, Mode::All, if lifo { Traversal::Lifo } else { Traversal::Fifo });
-        Case { name: name.into(), chip, setup, image, golden, lifo, mode, timing, reader }
+        Case { name: name.into(), chip, setup, image, golden, lifo, mode, params, reader }
     }
 
     fn of(q: &ChipQuery) -> Case {
         let p = q.prepare().unwrap();
-        Case::new(q.name, p.chip, q.pose, q.lifo, q.mode, q.timing.into(), q.reader)
+        Case::new(q.name, p.chip, q.pose, q.lifo, q.mode, q.params(), q.reader)
     }
 
     fn drive(&self) -> Drive {
-        drive(&self.image, self.timing, self.reader, MAX_CYCLES)
+        drive(&self.image, self.params.memory, self.reader, MAX_CYCLES)
     }
 
     /// Runs the query `runs` times back to back on one rust-hdl chip of `2^N` queue
     /// entries and one cycle model, in lockstep; with `vcd`, the first run's traversal VCD.
-    fn lockstep<const N: usize, const NP1: usize>(&self, runs: usize, vcd: Option<PathBuf>) -> Vec<ChipTrace> {
-        let p = Params { queue_entries: 1 << N, memory: self.timing, ..Params::RTL };
+    fn lockstep<const N: usize, const NP1: usize, const NM1: usize>(&self, runs: usize, vcd: Option<PathBuf>) -> Vec<ChipTrace> {
+        let p = Params { queue_entries: 1 << N, ..self.params };
         std::thread::scope(|s| {
             std::thread::Builder::new()
                 .stack_size(1 << 30)
                 .spawn_scoped(s, || {
-                    let mut rtl = rtl_chip::<N, NP1>();
+                    let mut rtl = rtl_chip::<N, NP1, NM1>();
                     let mut cyc = CycleChip::new(&CHIP_CONFIG, p, &self.chip.a, &self.chip.b, &self.setup, false).unwrap();
                     let mut out = vec![];
                     for run in 0..runs {
@@ -137,7 +138,7 @@ fn sphere_lifo_first() {
     let q = query("sphere_lifo_first");
     let case = Case::of(&q);
     let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("target/rtl-vcd/chip_sphere_lifo_first.vcd");
-    let tr = &case.lockstep::<10, 11>(1, Some(path.clone()))[0];
+    let tr = &case.lockstep::<10, 11, 9>(1, Some(path.clone()))[0];
     println!("wrote {}", path.display());
     case.check(tr);
     compare_with_expect(q.name, tr);
@@ -184,13 +185,27 @@ fn vcd_results(path: &std::path::Path) -> Vec<(u64, u32, u32, bool)> {
     out
 }
 
+/// The memory port at full speed (register 0x126: 3 pairs ahead, 4 requests outstanding, an
+/// issue every clock, a credit of 24; a memory latency of 8): node words asked for pairs before they reach
+/// the DOP unit, several in flight, responses into the node-word FIFOs, a DOP result's two
+/// child entries pushed in one clock; every signal equal to the cycle model's,
+/// clock by clock, and the trace the checked-in one (which Verilator reproduces in CI).
+#[test]
+fn bunny_fifo_prefetch() {
+    let q = query("bunny_fifo_prefetch");
+    let case = Case::of(&q);
+    let tr = &case.lockstep::<10, 11, 9>(1, None)[0];
+    case.check(tr);
+    compare_with_expect(q.name, tr);
+}
+
 /// Two objects apart: the root pair fails the DOP test and nothing is reported. The same
 /// chip then runs the query again: a finished query leaves no state behind.
 #[test]
 fn apart_lifo_first() {
     let case = Case::of(&query("apart_lifo_first"));
     assert!(case.golden.pairs.is_empty());
-    let tr = case.lockstep::<10, 11>(2, None);
+    let tr = case.lockstep::<10, 11, 9>(2, None);
     assert_eq!(tr[0], tr[1]);
     assert!(tr[0].results.is_empty());
     assert_eq!((tr[0].dop_tests, tr[0].node_fetches, tr[0].tri_tests), (1, 2, 0));
@@ -208,24 +223,24 @@ fn a_last_leaf_pair_is_tested() {
     let b = vec![[p(0.2, 0.2, -1.0), p(0.3, 0.2, 1.0), p(0.2, 0.3, 1.0)]];
     let pose = Pose::new(0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     for lifo in [false, true] {
-        let case = Case::new("one_leaf_pair", Chip::new(&a, &b, CHIP_CONFIG).unwrap(), pose, lifo, Mode::All, MemTiming::default().into(), Reader::default());
-        let tr = &case.lockstep::<10, 11>(1, None)[0];
+        let case = Case::new("one_leaf_pair", Chip::new(&a, &b, CHIP_CONFIG).unwrap(), pose, lifo, Mode::All, Params::RTL, Reader::default());
+        let tr = &case.lockstep::<10, 11, 9>(1, None)[0];
         assert_eq!(tr.results.iter().map(|r| (r.1, r.2, r.3)).collect::<Vec<_>>(), [(0, 0, false)], "{}", tr.text());
         case.check(tr);
     }
 }
 
-/// A queue of 2 entries cannot hold the spheres' traversal: the chip ends the query with
+/// A queue of 4 entries cannot hold the spheres' traversal: the chip ends the query with
 /// `overflow` and what it must: the traversal stops (fewer DOP tests than the golden
 /// query), every pair it reported is a golden one, and the trace does not pass for a
 /// complete answer.
 #[test]
 fn a_small_queue_overflows_with_an_error_status() {
     let case = Case::of(&query("sphere_fifo_all"));
-    let tr = &case.lockstep::<1, 2>(1, None)[0];
+    let tr = &case.lockstep::<2, 3, 1>(1, None)[0];
     println!("{}", tr.text());
     assert!(tr.overflow, "no overflow reported");
-    assert_eq!(tr.max_depth, 2);
+    assert_eq!(tr.max_depth, 4);
     assert_eq!(tr.check(Mode::All, &case.golden), Err("the queue overflowed: the answer is incomplete".into()));
     let (hits, unc) = tr.pairs();
     assert!(hits.iter().chain(&unc).all(|x| case.golden.pairs.contains(x) || case.golden.uncertain.contains(x)));
@@ -233,7 +248,8 @@ fn a_small_queue_overflows_with_an_error_status() {
 }
 
 /// A random soup pair, pose, order, mode and result reader from a fixed seed, with a small
-/// DDR SDRAM (3 words per page, 2 banks): rust-hdl and the cycle model in lockstep, through
+/// DDR SDRAM (3 words per page, 2 banks) and the memory port at full speed: rust-hdl and the
+/// cycle model in lockstep, through
 /// the one driver and DDR model, and the answer the golden model's. (Volume: tb/cycle_chip.rs
 /// draws 256 such configurations for the cycle model, and CI's Verilog scenes.)
 #[test]
@@ -251,8 +267,11 @@ fn seeded_random_query() {
     let ddr = Memory::Ddr(Ddr { banks: 2, page_bytes: 256, bus_bits: 64, burst: 2, hit: 2, miss: 5 });
     let reader = Reader { period: [1, 1, 2, 5][rng.random_range(0..4)] };
     let mode = if first { Mode::First } else { Mode::All };
-    let case = Case::new("seed 2", chip, pose, lifo, mode, ddr, reader);
+    // and the memory port at full speed: 2 pairs prefetched, 3 requests, an issue every
+    // clock, a credit of 20
+    let params = Params { memory: ddr, prefetch: 2, outstanding: 3, issue_spacing: 1, credit: 20, ..Params::RTL };
+    let case = Case::new("seed 2", chip, pose, lifo, mode, params, reader);
     println!("seed 2: {na} x {nb} triangles, {}, {mode:?}, reader period {}", if lifo { "LIFO" } else { "FIFO" }, reader.period);
-    let tr = &case.lockstep::<10, 11>(1, None)[0];
+    let tr = &case.lockstep::<10, 11, 9>(1, None)[0];
     case.check(tr);
 }

@@ -2,10 +2,13 @@
 //! cycle model `cycle::d_cntr::QueueModel`: every output after every clock, bit for bit.
 //!
 //! * proptest-generated operation sequences (phases of push-heavy, pop-heavy, balanced and
-//!   push+pop mixes, fills past full and drains, clears while not empty, both orders) with
-//!   2^3 entries (many overflows) and 2^8 entries (long fills to overflow);
+//!   push+pop mixes, a third of the pushes with a second entry on the second write port,
+//!   fills past full and drains, clears while not empty, both orders) with 2^3 entries (many
+//!   overflows) and 2^8 entries (long fills to overflow);
 //! * the coverage of those sequences: overflow, full, push+pop on one entry and on a full
-//!   queue, clear while not empty, in both orders;
+//!   queue, clear while not empty, two pushes with and without a pop and with the second
+//!   lost to a full queue, in both orders;
+//! * directed, hand-derived: two pushes a clock in both orders;
 //! * wrong models are caught: LIFO treated as FIFO, half the capacity;
 //! * directed: push and pop on a one-entry LIFO, a pop on an empty queue is ignored;
 //! * the traversal order: the entries `traversal::d_cntr::children` makes for the paper's
@@ -32,14 +35,14 @@ use common::settle;
 const MASK: u128 = (1 << ENTRY_BITS) - 1;
 
 /// The queue under test and its driver: one `cycle` per clock.
-struct Dut<const N: usize, const NP1: usize> {
-    uut: PairQueue<N, NP1>,
+struct Dut<const N: usize, const NP1: usize, const NM1: usize> {
+    uut: PairQueue<N, NP1, NM1>,
     last: QueueOut,
 }
 
-impl<const N: usize, const NP1: usize> Dut<N, NP1> {
+impl<const N: usize, const NP1: usize, const NM1: usize> Dut<N, NP1, NM1> {
     fn new() -> Self {
-        let mut uut = pair_queue_top::<N, NP1>();
+        let mut uut = pair_queue_top::<N, NP1, NM1>();
         uut.clock.next = Clock { clk: true };
         settle(&mut uut);
         let last = uut.outputs();
@@ -73,6 +76,10 @@ struct Coverage {
     push_pop_many: [usize; 2],
     pops_to_empty: [usize; 2],
     clear_nonempty: [usize; 2],
+    /// Two pushes in a clock: without a pop, with one, the second overflowing.
+    two: [usize; 2],
+    two_pop: [usize; 2],
+    two_second_lost: [usize; 2],
 }
 
 impl Coverage {
@@ -86,12 +93,26 @@ impl Coverage {
             self.push_pop_many[k] += o.push_pop_many[k];
             self.pops_to_empty[k] += o.pops_to_empty[k];
             self.clear_nonempty[k] += o.clear_nonempty[k];
+            self.two[k] += o.two[k];
+            self.two_pop[k] += o.two_pop[k];
+            self.two_second_lost[k] += o.two_second_lost[k];
         }
     }
 
     fn all_hit(&self) -> bool {
         (0..2).all(|k| {
-            [self.overflows[k], self.full[k], self.push_pop_one[k], self.push_pop_full[k], self.push_pop_many[k], self.pops_to_empty[k], self.clear_nonempty[k]]
+            [
+                self.overflows[k],
+                self.full[k],
+                self.push_pop_one[k],
+                self.push_pop_full[k],
+                self.push_pop_many[k],
+                self.pops_to_empty[k],
+                self.clear_nonempty[k],
+                self.two[k],
+                self.two_pop[k],
+                self.two_second_lost[k],
+            ]
                 .iter()
                 .all(|&n| n > 0)
         })
@@ -101,8 +122,8 @@ impl Coverage {
 /// Runs `ops` through a fresh RTL queue of 2^N entries and through `model` (one call per
 /// clock, returning its outputs after the edge); the first clock whose outputs differ is
 /// an error. Unless `pop_on_empty`, asserts that no op pops an empty queue.
-fn compare<const N: usize, const NP1: usize>(ops: &[QueueIn], mut model: impl FnMut(&QueueIn) -> QueueOut, pop_on_empty: bool) -> Result<Coverage, String> {
-    let mut dut = Dut::<N, NP1>::new();
+fn compare<const N: usize, const NP1: usize, const NM1: usize>(ops: &[QueueIn], mut model: impl FnMut(&QueueIn) -> QueueOut, pop_on_empty: bool) -> Result<Coverage, String> {
+    let mut dut = Dut::<N, NP1, NM1>::new();
     let mut cov = Coverage::default();
     let cap = 1u32 << N;
     let mut lifo = 0;
@@ -130,14 +151,20 @@ fn compare<const N: usize, const NP1: usize>(ops: &[QueueIn], mut model: impl Fn
             cov.push_pop_many[lifo] += (before.count > 1 && before.count < cap) as usize;
         }
         cov.pops_to_empty[lifo] += (i.pop && !i.push && before.count == 1) as usize;
+        if i.push && i.push2.is_some() {
+            let after_pop = before.count - (i.pop && before.count > 0) as u32;
+            cov.two[lifo] += (!i.pop && before.count > 0 && after_pop + 2 <= cap) as usize;
+            cov.two_pop[lifo] += (i.pop && before.count > 1 && after_pop + 2 <= cap) as usize;
+            cov.two_second_lost[lifo] += (after_pop + 1 == cap) as usize;
+        }
     }
     Ok(cov)
 }
 
 /// [`compare`] against the golden model.
-fn check<const N: usize, const NP1: usize>(ops: &[QueueIn]) -> Result<Coverage, String> {
+fn check<const N: usize, const NP1: usize, const NM1: usize>(ops: &[QueueIn]) -> Result<Coverage, String> {
     let mut m = QueueModel::new(N as u32);
-    compare::<N, NP1>(ops, |i| m.step(i), false)
+    compare::<N, NP1, NM1>(ops, |i| m.step(i), false)
 }
 
 // ---- generated sequences -------------------------------------------------------------
@@ -146,11 +173,14 @@ fn clear(lifo: bool) -> QueueIn {
     QueueIn { clear: true, lifo, ..Default::default() }
 }
 
-/// One clock: push and pop with the given probabilities, a random entry word, rarely a
-/// clear (push and pop then ignored).
+/// One clock: push and pop with the given probabilities, a random entry word, a third of
+/// the pushes with a second entry (the second write port), rarely a clear (pushes and pop
+/// then ignored).
 fn op(p_push: f64, p_pop: f64) -> impl Strategy<Value = QueueIn> {
-    (prop::bool::weighted(p_push), prop::bool::weighted(p_pop), any::<u128>(), prop::bool::weighted(0.004), any::<bool>())
-        .prop_map(|(push, pop, d, clear, lifo)| QueueIn { clear, lifo, push, pop, push_data: d & MASK, push2: None })
+    let two = (prop::bool::weighted(1.0 / 3.0), any::<u128>());
+    (prop::bool::weighted(p_push), prop::bool::weighted(p_pop), any::<u128>(), two, prop::bool::weighted(0.004), any::<bool>()).prop_map(
+        |(push, pop, d, (two, d2), clear, lifo)| QueueIn { clear, lifo, push, pop, push_data: d & MASK, push2: (push && two).then_some(d2 & MASK) },
+    )
 }
 
 /// A phase of one mix, long enough to fill or drain a queue of `cap` entries.
@@ -199,7 +229,7 @@ proptest! {
     /// 8 entries: many fills to overflow, drains, clears, both orders.
     #[test]
     fn random_ops_n3(ops in ops(3, 1..16)) {
-        if let Err(e) = check::<3, 4>(&ops) {
+        if let Err(e) = check::<3, 4, 2>(&ops) {
             return Err(TestCaseError::fail(e));
         }
     }
@@ -211,7 +241,7 @@ proptest! {
     /// 256 entries: long runs, fills to overflow.
     #[test]
     fn random_ops_n8(ops in ops(8, 2..8)) {
-        if let Err(e) = check::<8, 9>(&ops) {
+        if let Err(e) = check::<8, 9, 7>(&ops) {
             return Err(TestCaseError::fail(e));
         }
     }
@@ -222,13 +252,13 @@ proptest! {
 fn generated_ops_cover_the_corners() {
     let mut cov = Coverage::default();
     for ops in sample(ops(3, 8..16), 12) {
-        cov.add(&check::<3, 4>(&ops).unwrap());
+        cov.add(&check::<3, 4, 2>(&ops).unwrap());
     }
     eprintln!("2^3 entries: {cov:?}");
     assert!(cov.all_hit(), "{cov:?}");
     let mut cov = Coverage::default();
     for ops in sample(ops(8, 6..10), 8) {
-        cov.add(&check::<8, 9>(&ops).unwrap());
+        cov.add(&check::<8, 9, 7>(&ops).unwrap());
     }
     eprintln!("2^8 entries: {cov:?}");
     assert!((0..2).all(|k| cov.overflows[k] > 0 && cov.full[k] > 0 && cov.push_pop_one[k] > 0), "{cov:?}");
@@ -239,7 +269,7 @@ fn generated_ops_cover_the_corners() {
 fn vector_ops_cover_the_corners() {
     let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(7);
     let ops = random_ops(&mut rng, 4, 3000);
-    let cov = check::<4, 5>(&ops).unwrap();
+    let cov = check::<4, 5, 3>(&ops).unwrap();
     eprintln!("2^4 entries, vector generator: {cov:?}");
     assert!(cov.all_hit(), "{cov:?}");
 }
@@ -258,10 +288,10 @@ fn wrong_models_are_caught() {
             over4 |= o.count >= 4;
         }
         let mut m = QueueModel::new(3);
-        let r = compare::<3, 4>(&ops, |i| m.step(&QueueIn { lifo: false, ..*i }), false);
+        let r = compare::<3, 4, 2>(&ops, |i| m.step(&QueueIn { lifo: false, ..*i }), false);
         assert_eq!(r.is_err(), lifo2, "FIFO-only model on {} clocks", ops.len());
         let mut m = QueueModel::new(2);
-        let r = compare::<3, 4>(&ops, |i| m.step(i), false);
+        let r = compare::<3, 4, 2>(&ops, |i| m.step(i), false);
         assert_eq!(r.is_err(), over4, "4-entry model on {} clocks", ops.len());
         lifo_seqs += lifo2 as usize;
         big_seqs += over4 as usize;
@@ -275,7 +305,7 @@ fn wrong_models_are_caught() {
 #[test]
 fn push_pop_on_one_entry() {
     for lifo in [false, true] {
-        let mut dut = Dut::<3, 4>::new();
+        let mut dut = Dut::<3, 4, 2>::new();
         let mut m = QueueModel::new(3);
         let mut go = |i: QueueIn| {
             let o = dut.cycle(&i);
@@ -304,11 +334,48 @@ fn pop_on_empty_is_ignored() {
             QueueIn { push: true, push_data: 6, ..Default::default() },
         ];
         let mut m = QueueModel::new(3);
-        compare::<3, 4>(&ops, |i| m.step(i), true).unwrap();
-        let mut dut = Dut::<3, 4>::new();
+        compare::<3, 4, 2>(&ops, |i| m.step(i), true).unwrap();
+        let mut dut = Dut::<3, 4, 2>::new();
         let outs: Vec<QueueOut> = ops.iter().map(|i| dut.cycle(i)).collect();
         assert_eq!((outs[2].count, outs[2].top_data), (1, 5));
         assert!(outs[4].empty && outs[5].count == 1 && outs[5].max_count == 1);
+    }
+}
+
+/// Two pushes in one clock (the second write port), hand-derived: the second entry is the
+/// later one (LIFO: on top); with a pop, the pop goes first; a second push that finds the
+/// queue full is lost and sets `overflow`; the RAM's two banks take consecutive words.
+#[test]
+fn two_pushes_in_one_clock() {
+    for lifo in [false, true] {
+        let mut dut = Dut::<3, 4, 2>::new();
+        let mut m = QueueModel::new(3);
+        let mut go = |i: QueueIn| {
+            let o = dut.cycle(&i);
+            assert_eq!(o, m.step(&i), "{i:x?}");
+            o
+        };
+        let two = |a: u128, b: u128, pop: bool| QueueIn { push: true, push_data: a, push2: Some(b), pop, ..Default::default() };
+        let pop = QueueIn { pop: true, ..Default::default() };
+        go(clear(lifo));
+        let o = go(two(1, 2, false));
+        assert_eq!((o.count, o.top_data), (2, if lifo { 2 } else { 1 }));
+        let o = go(two(3, 4, false));
+        assert_eq!((o.count, o.top_data), (4, if lifo { 4 } else { 1 }));
+        // pop and two pushes: LIFO 4 leaves, 5 and 6 on top; FIFO 1 leaves, 2 is the head
+        let o = go(two(5, 6, true));
+        assert_eq!((o.count, o.top_data), (5, if lifo { 6 } else { 2 }));
+        go(two(7, 8, false));
+        // 7 entries: the first push fits, the second is lost
+        let o = go(two(9, 10, false));
+        assert!(o.full && o.overflow);
+        // drained in order: LIFO 9 8 7 6 5 3 2 1 (4 and 10 gone), FIFO 2 3 4 5 6 7 8 9
+        let mut seq = vec![];
+        for _ in 0..8 {
+            seq.push(go(pop).top_data);
+        }
+        let want: Vec<u128> = if lifo { vec![8, 7, 6, 5, 3, 2, 1, 0] } else { vec![3, 4, 5, 6, 7, 8, 9, 0] };
+        assert_eq!(seq, want, "the tops after each pop");
     }
 }
 
@@ -361,7 +428,7 @@ fn software_order(lifo: bool) -> Vec<String> {
 /// `top_data` is popped while its first child entry is pushed in the same clock, the other
 /// children follow one per clock.
 fn rtl_order(lifo: bool) -> (Vec<String>, u32) {
-    let mut dut = Dut::<4, 5>::new();
+    let mut dut = Dut::<4, 5, 3>::new();
     let mut m = QueueModel::new(4);
     let mut go = |i: QueueIn| {
         let o = dut.cycle(&i);

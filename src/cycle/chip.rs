@@ -28,6 +28,11 @@ pub mod reg {
     pub const BASE_NB: u32 = 0x123;
     pub const BASE_TA: u32 = 0x124;
     pub const BASE_TB: u32 = 0x125;
+    /// The memory port: bits 3:0 the pairs prefetched, 7:4 the requests outstanding at
+    /// most, less one; bit 8 an issue every clock (issue spacing 1); bits 14:9 the credit
+    /// (0: 16). Zero after reset: the RTL's default point ([`Params::RTL`]). The cycle model
+    /// takes these from its [`Params`]; [`control_writes`] writes them for the RTL.
+    pub const PORT: u32 = 0x126;
 }
 
 /// Where the clocks of a running query went, one cause per cycle for the DOP unit's
@@ -82,13 +87,14 @@ pub struct Chip<'a> {
     queue: QueueModel<Entry>,
     q: QueueOut<Entry>,
     /// The pairs popped from the queue and not yet issued, oldest (the DOP unit's input)
-    /// first: the RTL's entry register (prefetch 0), else the pair buffer.
+    /// first: the RTL's pair buffer.
     ahead: VecDeque<Ahead>,
     /// The node ids of the last pair put into `ahead` (whose words a repeat reuses).
     last_ids: [Option<u32>; 2],
     /// Node words of `ahead`'s pairs not yet requested, in order: destination, id, pair.
     to_ask: VecDeque<(Dst, u32, u64)>,
-    /// Node words arrived and not yet used, in order (the RTL's held node word at prefetch 0).
+    /// Node words arrived and not yet used, in order (the RTL's two node-word FIFOs, A's and
+    /// B's: a pair's words are at their heads when they are at this queue's).
     words: VecDeque<u32>,
     /// Pairs put into `ahead` since start (each pair's number).
     seq: u64,
@@ -412,18 +418,26 @@ impl<'a> Chip<'a> {
 }
 
 /// The host's writes of the traversal's registers for a query in order `lifo` and
-/// `mode`, root pair (0, 0), mode last (the RTL host writes the DOP unit's and TRI_UNIT's
-/// setup before these).
-pub fn control_writes(a: &ObjectImage, b: &ObjectImage, lifo: bool, mode: crate::traversal::Mode) -> [(u32, u32); 6] {
+/// `mode`, root pair (0, 0), the memory port of `p` unless it is the reset value, mode
+/// last (the RTL host writes the DOP unit's and TRI_UNIT's setup before these).
+pub fn control_writes(a: &ObjectImage, b: &ObjectImage, lifo: bool, mode: crate::traversal::Mode, p: &Params) -> Vec<(u32, u32)> {
     let base = layout(a, b);
-    [
+    let mut w = vec![
         (reg::BASE_NA, base[Dst::NodeA as usize]),
         (reg::BASE_TA, base[Dst::TriA as usize]),
         (reg::BASE_NB, base[Dst::NodeB as usize]),
         (reg::BASE_TB, base[Dst::TriB as usize]),
         (reg::ROOT, 0),
-        (reg::MODE, lifo as u32 | ((mode == crate::traversal::Mode::First) as u32) << 1),
-    ]
+    ];
+    // (the RTL's fields; the cycle model runs larger values from `p` itself, and
+    // `chip_io::rtl_order` keeps the RTL's queries within them)
+    let credit = if p.credit == crate::rtl::CREDIT as u32 { 0 } else { p.credit.min(crate::rtl::CREDIT_MAX as u32) };
+    let port = p.prefetch.min(0xf) | (p.outstanding.clamp(1, 16) - 1) << 4 | ((p.issue_spacing == 1) as u32) << 8 | credit << 9;
+    if port != 0 {
+        w.push((reg::PORT, port));
+    }
+    w.push((reg::MODE, lifo as u32 | ((mode == crate::traversal::Mode::First) as u32) << 1));
+    w
 }
 
 /// Words in the memory image of `a` and `b` (nodes and triangles of both).

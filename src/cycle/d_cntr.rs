@@ -69,9 +69,8 @@ pub struct QueueIn<T = u128> {
     pub push_data: T,
     /// Remove the entry shown on `top_data`; ignored while empty.
     pub pop: bool,
-    /// An entry pushed after `push_data` by a second write port (the cycle-model chip at
-    /// issue spacing 1 pushes both child entries of a DOP result in one clock; the RTL
-    /// queue has one port).
+    /// An entry pushed after `push_data` by the second write port (the chip at issue
+    /// spacing 1 pushes both child entries of a DOP result in one clock).
     pub push2: Option<T>,
 }
 

@@ -52,23 +52,24 @@ pub struct Params {
     pub outstanding: u32,
     /// Node pairs popped from the queue ahead of the current entry, whose node words the
     /// port asks for before they reach the DOP unit (a pair buffer of `prefetch + 2` pairs,
-    /// their words queued in request order). 0: the RTL's entry register, the port asks
-    /// only for the current pair's words.
+    /// their words queued in request order). 0: the port asks only for the current pair's
+    /// words. The RTL chip: 0 to 14 and `outstanding` 1 to 16, in host register 0x126.
     pub prefetch: u32,
     pub memory: Memory,
 }
 
 impl Params {
-    /// The RTL chip (`rtl/chip_e8m15_k6.v`): 2^10 queue entries, the 15-clock DOP unit,
-    /// TRI_UNIT's 130 clocks and 256-entry FIFO, issues two clocks apart, a 16-entry leaf
-    /// FIFO, one request outstanding. `tb/rtl_chip.rs` checks these against the RTL.
+    /// The RTL chip (`rtl/chip_e8m15_k6.v`) after reset: 2^10 queue entries, the 15-clock
+    /// DOP unit, TRI_UNIT's 130 clocks and 256-entry FIFO, issues two clocks apart, a credit
+    /// of 16, one request outstanding, no prefetch. `tb/rtl_chip.rs` checks these against
+    /// the RTL; its host register 0x126 sets the last four (`cycle::chip::reg::PORT`).
     pub const RTL: Params = Params {
         queue_entries: 1 << crate::harness::chip_io::QUEUE_BITS,
         dop_latency: crate::rtl::DOP_LATENCY as u32,
         tri_latency: crate::rtl::e8m15::TriUnit::LATENCY as u32,
         tri_fifo: crate::rtl::e8m15::TriUnit::FIFO_DEPTH as u32,
         issue_spacing: 2,
-        credit: crate::rtl::LEAF_FIFO as u32,
+        credit: crate::rtl::CREDIT as u32,
         outstanding: 1,
         prefetch: 0,
         memory: Memory::Ideal(MemTiming { latency: 1, interval: 1, bus_bits: None }),
@@ -300,7 +301,7 @@ pub fn run_query(
 ) -> Result<(drive::ChipTrace, Option<chip::Stats>), String> {
     let mut c = chip::Chip::new(&chip.cfg, p, &chip.a, &chip.b, setup, rec.counters)?;
     let d = drive::Drive { memory: p.memory, word_bits: chip.layout.word_bits(), reader, words: chip::image_words(&chip.a, &chip.b), max_cycles };
-    let writes = chip::control_writes(&chip.a, &chip.b, lifo, mode);
+    let writes = chip::control_writes(&chip.a, &chip.b, lifo, mode, &p);
     let Record { vcd, probes: mut observer, .. } = rec;
     let trace = if vcd.is_none() && observer.is_none() {
         let mut skip = |c: &mut chip::Chip, i: &ChipIn, max: u64| match c.quiet_until(i) {

@@ -96,9 +96,10 @@ pub struct QueryImage {
 }
 
 impl QueryImage {
+    /// The memory port's register is written from `p` ([`crate::cycle::chip::control_writes`]).
     /// Errors if a tree has more nodes than the 16-bit node ids of D_CNTR address, or the
     /// image more words than the 24-bit memory address.
-    pub fn new(a: &ObjectImage, b: &ObjectImage, setup: &HostSetup, lifo: bool, mode: Mode) -> Result<Self, String> {
+    pub fn new(a: &ObjectImage, b: &ObjectImage, setup: &HostSetup, lifo: bool, mode: Mode, p: &crate::cycle::Params) -> Result<Self, String> {
         let f = CHIP_CONFIG.format;
         for (name, o) in [("A", a), ("B", b)] {
             if o.tree.len() > 1 << 16 {
@@ -118,7 +119,7 @@ impl QueryImage {
         }
         let mut writes: Vec<(u32, u32)> = dop_unit_setup_words(f.dop, setup).into_iter().map(|(a, d)| (a as u32, d as u32)).collect();
         writes.extend(tri_unit_setup_words(f.tri, setup).into_iter().map(|(a, d)| (reg::TRI_SETUP + a as u32, d as u32)));
-        writes.extend(crate::cycle::chip::control_writes(a, b, lifo, mode));
+        writes.extend(crate::cycle::chip::control_writes(a, b, lifo, mode, p));
         Ok(QueryImage { memory, writes })
     }
 
@@ -156,19 +157,19 @@ fn bits<const B: usize>(w: &Word) -> Bits<B> {
 /// The rust-hdl chip as a [`Clocked`] level: the memory image's words answer its memory
 /// requests; half a clock low (inputs applied, logic settled: what `probe` shows), then the
 /// rising edge.
-pub struct RtlChip<'c, const N: usize, const NP1: usize> {
-    pub chip: &'c mut CollisionChip<N, NP1>,
+pub struct RtlChip<'c, const N: usize, const NP1: usize, const NM1: usize> {
+    pub chip: &'c mut CollisionChip<N, NP1, NM1>,
     words: Vec<Bits<MEM_BITS>>,
     err: Option<String>,
 }
 
-impl<'c, const N: usize, const NP1: usize> RtlChip<'c, N, NP1> {
-    pub fn new(chip: &'c mut CollisionChip<N, NP1>, image: &QueryImage) -> Self {
+impl<'c, const N: usize, const NP1: usize, const NM1: usize> RtlChip<'c, N, NP1, NM1> {
+    pub fn new(chip: &'c mut CollisionChip<N, NP1, NM1>, image: &QueryImage) -> Self {
         RtlChip { chip, words: image.memory.iter().map(bits::<MEM_BITS>).collect(), err: None }
     }
 }
 
-impl<const N: usize, const NP1: usize> Clocked for RtlChip<'_, N, NP1> {
+impl<const N: usize, const NP1: usize, const NM1: usize> Clocked for RtlChip<'_, N, NP1, NM1> {
     fn outputs(&self) -> ChipOut {
         let c = &self.chip;
         let tag = c.res_tag.val().to_u64();
@@ -227,8 +228,8 @@ pub fn drive(image: &QueryImage, memory: crate::cycle::Memory, reader: Reader, m
 
 /// Runs one query on the rust-hdl chip (fresh from `chip_top`, or after a finished
 /// query) with the shared driver ([`crate::cycle::drive::run_query`]).
-pub fn run_query<const N: usize, const NP1: usize>(
-    chip: &mut CollisionChip<N, NP1>,
+pub fn run_query<const N: usize, const NP1: usize, const NM1: usize>(
+    chip: &mut CollisionChip<N, NP1, NM1>,
     image: &QueryImage,
     d: &Drive,
 ) -> Result<ChipTrace, ChipError> {
@@ -250,6 +251,12 @@ pub struct ChipQuery {
     pub timing: MemTiming,
     /// How the host reads results.
     pub reader: Reader,
+    /// The memory port (register 0x126): node pairs prefetched, requests outstanding at
+    /// most, clocks between DOP issues (1: the queue's second write port), the credit.
+    pub prefetch: u32,
+    pub outstanding: u32,
+    pub issue_spacing: u32,
+    pub credit: u32,
     /// Too long for rust-hdl (10^4 cycles and more): its trace comes from the cycle
     /// model, and Verilator must reproduce it.
     pub large: bool,
@@ -278,10 +285,22 @@ pub struct PreparedQuery {
 }
 
 impl ChipQuery {
+    /// The cycle model's parameters of this query: the RTL chip's, with its memory and port.
+    pub fn params(&self) -> crate::cycle::Params {
+        crate::cycle::Params {
+            memory: self.timing.into(),
+            prefetch: self.prefetch,
+            outstanding: self.outstanding,
+            issue_spacing: self.issue_spacing,
+            credit: self.credit,
+            ..crate::cycle::Params::RTL
+        }
+    }
+
     pub fn prepare(&self) -> Result<PreparedQuery, String> {
         let chip = crate::query::Chip::new(&query_mesh(self.a)?, &query_mesh(self.b)?, CHIP_CONFIG)?;
         let golden_all = chip.query(&self.pose, Mode::All, crate::traversal::Traversal::Fifo);
-        let image = QueryImage::new(&chip.a, &chip.b, &chip.setup(&self.pose), self.lifo, self.mode)?;
+        let image = QueryImage::new(&chip.a, &chip.b, &chip.setup(&self.pose), self.lifo, self.mode, &self.params())?;
         Ok(PreparedQuery { chip, golden_all, image })
     }
 }
@@ -290,7 +309,7 @@ impl ChipQuery {
 /// traversal of a few hundred triangles needs about that many; LIFO a few dozen).
 pub const QUEUE_BITS: usize = 10;
 /// The exported chip, and the one every RTL run uses.
-pub type ExportedChip = CollisionChip<QUEUE_BITS, { QUEUE_BITS + 1 }>;
+pub type ExportedChip = CollisionChip<QUEUE_BITS, { QUEUE_BITS + 1 }, { QUEUE_BITS - 1 }>;
 /// The exported chip's file name.
 pub const EXPORT_NAME: &str = "chip_e8m15_k6";
 
@@ -305,7 +324,7 @@ pub fn chip_verilog() -> String {
     std::thread::Builder::new()
         .stack_size(1 << 30)
         .spawn(|| {
-            super::verilog::dedup_modules(&crate::rtl::e8m15::verilog_chip::<QUEUE_BITS, { QUEUE_BITS + 1 }>(
+            super::verilog::dedup_modules(&crate::rtl::e8m15::verilog_chip::<QUEUE_BITS, { QUEUE_BITS + 1 }, { QUEUE_BITS - 1 }>(
                 CHIP_CONFIG.dop_rounding.op(),
                 CHIP_CONFIG.tri_rounding,
             ))
@@ -335,6 +354,10 @@ pub fn queries() -> Vec<ChipQuery> {
         mode,
         timing: MemTiming { latency, interval, bus_bits: None },
         reader: Reader::default(),
+        prefetch: 0,
+        outstanding: 1,
+        issue_spacing: 2,
+        credit: crate::rtl::CREDIT as u32,
         large: false,
     };
     let big = |name, a, pose, lifo, mode, latency, interval, period| ChipQuery {
@@ -360,6 +383,13 @@ pub fn queries() -> Vec<ChipQuery> {
         // in e8m15 the first sure hit comes after 180 uncertain results (a long first-hit query)
         big("big_patch_fifo_first", "bunny-patch:120", patch, false, Mode::First, 3, 1, 1),
         big("big_patch_lifo_first", "bunny-patch:300", patch, true, Mode::First, 1, 1, 1),
+        // the prefetching memory port (register 0x126): node words asked for pairs ahead,
+        // several requests outstanding, at a memory latency of 8; an issue every clock
+        // (both child entries pushed in one) with a credit of 24 to 48 but in the last
+        ChipQuery { prefetch: 6, outstanding: 8, issue_spacing: 1, credit: 32, ..q("sphere_lifo_prefetch", "sphere:12", spheres, true, Mode::All, 8, 1) },
+        ChipQuery { prefetch: 3, outstanding: 4, issue_spacing: 1, credit: 24, ..q("bunny_fifo_prefetch", "bunny-patch:12", patch, false, Mode::First, 8, 1) },
+        ChipQuery { prefetch: 14, outstanding: 16, issue_spacing: 1, credit: 48, ..big("big_sphere_lifo_prefetch", "sphere:320", big_spheres, true, Mode::All, 8, 1, 1) },
+        ChipQuery { prefetch: 14, outstanding: 16, ..big("big_sphere_fifo_prefetch", "sphere:200", big_spheres, false, Mode::All, 8, 1, 1) },
     ]
 }
 
@@ -390,8 +420,8 @@ pub fn write_vectors(dir: &std::path::Path) -> Result<Vec<String>, String> {
 /// [`crate::cycle::PROBES`], one scope per unit under `chip`, one time unit per clock). For
 /// GTKWave with scripts/gtkw/chip_e8m15_k6.gtkw. (A VCD of every rust-hdl signal would be
 /// about 600 kB per clock, mostly T.CHECK's.)
-pub fn run_query_vcd<const N: usize, const NP1: usize>(
-    chip: &mut CollisionChip<N, NP1>,
+pub fn run_query_vcd<const N: usize, const NP1: usize, const NM1: usize>(
+    chip: &mut CollisionChip<N, NP1, NM1>,
     image: &QueryImage,
     d: &Drive,
     path: &std::path::Path,
@@ -418,9 +448,23 @@ pub fn rtl_order(cfg: &ChipConfig, traversal: crate::traversal::Traversal, p: &c
             cfg.k, cfg.format, cfg.dop_rounding
         ));
     }
-    let rtl = crate::cycle::Params { memory: p.memory, ..crate::cycle::Params::RTL };
+    let rtl = crate::cycle::Params {
+        memory: p.memory,
+        prefetch: p.prefetch,
+        outstanding: p.outstanding,
+        issue_spacing: p.issue_spacing,
+        credit: p.credit,
+        ..crate::cycle::Params::RTL
+    };
     if *p != rtl {
-        return Err("the RTL chip has the [timing] of the default (queue_entries 256, latencies 15 and 130, ...): remove [timing] from the scene".into());
+        return Err("the RTL chip has the [timing] of the default (queue_entries 1024, latencies 15 and 130, tri_fifo 256) but for memory, issue_spacing, credit, prefetch and outstanding: remove the others from the scene's [timing]".into());
+    }
+    let (pf, out, credit) = (crate::rtl::PORT_PREFETCH as u32, crate::rtl::PORT_OUTSTANDING as u32, crate::rtl::CREDIT_MAX as u32);
+    if p.prefetch > pf || p.outstanding > out || p.credit > credit {
+        return Err(format!(
+            "the RTL chip prefetches at most {pf} pairs with at most {out} requests outstanding and a credit of at most {credit} (this scene: prefetch {}, outstanding {}, credit {}): lower them in [timing]",
+            p.prefetch, p.outstanding, p.credit
+        ));
     }
     match traversal {
         Traversal::Lifo => Ok(true),
@@ -447,7 +491,7 @@ pub fn cross_check(
 ) -> Result<ChipTrace, String> {
     let lifo = rtl_order(&chip.cfg, traversal, &p)?;
     let setup = chip.setup(pose);
-    let image = QueryImage::new(&chip.a, &chip.b, &setup, lifo, mode)?;
+    let image = QueryImage::new(&chip.a, &chip.b, &setup, lifo, mode, &p)?;
     let d = drive(&image, p.memory, Reader::default(), max_cycles);
     std::thread::scope(|s| {
         std::thread::Builder::new()
@@ -506,7 +550,7 @@ mod tests {
         let big = crate::mesh::builtin("sphere:40000").unwrap().triangles_f64();
         let chip = crate::query::Chip::new(&big, &big[..1], CHIP_CONFIG).unwrap();
         let setup = chip.setup(&crate::pose::Pose::new(0.0, 0.0, 0.0, 0.0, 0.0, 0.0));
-        let e = QueryImage::new(&chip.a, &chip.b, &setup, true, Mode::All).unwrap_err();
+        let e = QueryImage::new(&chip.a, &chip.b, &setup, true, Mode::All, &crate::cycle::Params::RTL).unwrap_err();
         assert!(e.contains("16 bits"), "{e}");
     }
 }

@@ -157,7 +157,7 @@ pub fn all() -> Vec<Unit> {
     // D_CNTR's pair queue, 16 entries (format independent): one line per clock
     let name = "pair_queue_n4".to_string();
     let n2 = name.clone();
-    units.push(Unit { name, latency: 1, verilog: Box::new(crate::rtl::d_cntr::verilog_pair_queue::<4, 5>), vectors: Box::new(move || crate::rtl::d_cntr::pair_queue_vectors(&n2, 4, RANDOM_CASES)) });
+    units.push(Unit { name, latency: 1, verilog: Box::new(crate::rtl::d_cntr::verilog_pair_queue::<4, 5, 3>), vectors: Box::new(move || crate::rtl::d_cntr::pair_queue_vectors(&n2, 4, RANDOM_CASES)) });
     units
 }
 

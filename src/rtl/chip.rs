@@ -3,7 +3,7 @@
 //! `chip!`. Host side, memory model and drivers: [`chip_io`](crate::harness::chip_io); cycle
 //! semantics: docs/ARCHITECTURE.md, "Cycle semantics".
 
-/// Stamps out `CollisionChip<N, NP1>` (k = 6) in the calling module (which must also hold
+/// Stamps out `CollisionChip<N, NP1, NM1>` (k = 6) in the calling module (which must also hold
 /// `DopUnit6` and `TriUnit`). Arguments: `W` word width, `NW` node-word bits
 /// (`1 + 6 W + 64`), `MW` memory-word bits (the triangle word, `24 W + 2`).
 macro_rules! chip {
@@ -22,7 +22,14 @@ macro_rules! chip {
         ///   control, [`DopUnit6`]); `0x100 + a`: TRI_UNIT's (frame maps, bounds, eta,
         ///   [`TriUnit`]); `0x120`: mode, bit 0 LIFO, bit 1 first hit; `0x121`: the root
         ///   pair, A's node in bits 15:0, B's in 31:16; `0x122 .. 0x125`: the word
-        ///   addresses of A's node 0, B's node 0, A's triangle 0, B's triangle 0.
+        ///   addresses of A's node 0, B's node 0, A's triangle 0, B's triangle 0; `0x126`:
+        ///   the memory port, bits 3:0 the node pairs prefetched (at most
+        ///   [`PORT_PREFETCH`](crate::rtl::PORT_PREFETCH)), 7:4 the requests outstanding at
+        ///   most, less one, 8 an issue every clock (the queue's second write port takes a
+        ///   result's two child entries at once), 14:9 the credit of DOP tests in flight
+        ///   plus waiting leaf pairs (0: [`CREDIT`](crate::rtl::CREDIT)); reset: 0, one
+        ///   request, no prefetch,
+        ///   issues two clocks apart, credit 16.
         /// * `start` (in): begins a query with the registers as written (ignored while
         ///   `busy`); `busy`, `done` (high from the query's end to the next start),
         ///   `overflow` (the pair queue was full when a child entry came: the query ended
@@ -30,8 +37,9 @@ macro_rules! chip {
         ///   counters `dop_tests`, `tri_tests`, `node_fetches`, `tri_fetches`.
         /// * memory: out `mem_req_valid`, `mem_req_addr[24]` (a word address), in
         ///   `mem_req_ready`; in `mem_resp_valid`, `mem_resp_data[MW]`: the words in
-        ///   request order. At most one request is outstanding and the chip takes every
-        ///   response at the rising edge it is valid (so the response has no ready).
+        ///   request order. At most `0x126[7:4] + 1` requests are outstanding and the chip
+        ///   takes every response at the rising edge it is valid (it has room for every word
+        ///   it asks for, so the response has no ready).
         ///   Node word: bit 0 leaf, `d_i` at `1 + i W`, then two 32-bit fields (children,
         ///   or the triangle index and 0); triangle word: v0, v1, v2 (x, y, z), M row-major,
         ///   e_lin, e_tr, l_norm at `i W`, v_exact, degenerate ([`crate::memory`]).
@@ -41,7 +49,7 @@ macro_rules! chip {
         ///
         /// Structure and timing, clock by clock: docs/ARCHITECTURE.md, "Cycle semantics".
         #[derive(LogicBlock)]
-        pub struct CollisionChip<const N: usize, const NP1: usize> {
+        pub struct CollisionChip<const N: usize, const NP1: usize, const NM1: usize> {
             pub clock: Signal<In, Clock>,
             pub host_we: Signal<In, Bit>,
             pub host_addr: Signal<In, Bits<10>>,
@@ -78,35 +86,115 @@ macro_rules! chip {
             push_root: DFF<Bit>,
             stop: DFF<Bit>,
             halt: Signal<Local, Bit>,
-            // ---- D_CNTR: the pair queue and the entry being issued
-            queue: $crate::rtl::d_cntr::PairQueue<N, NP1>,
-            ent: DFF<Bits<67>>,
-            ent_valid: DFF<Bit>,
+            // ---- the memory port's limits (host register 0x126)
+            port_pf: DFF<Bits<4>>,
+            port_out: DFF<Bits<4>>,
+            port_one: DFF<Bit>,
+            port_credit: DFF<Bits<6>>,
+            credit_lim: Signal<Local, Bits<6>>,
+            c_credit: Constant<Bits<6>>,
+            pf: Signal<Local, Bits<5>>,
+            c_pf_max: Constant<Bits<5>>,
+            go: Signal<Local, Bit>,
+            // ---- D_CNTR: the pair queue, and the pair buffer of entries popped ahead
+            // (a ring of PAIR_BUF entries, each with its pairs' fetch bits A0 B0 A1 B1)
+            queue: $crate::rtl::d_cntr::PairQueue<N, NP1, NM1>,
+            ahd_ent: [DFF<Bits<67>>; $crate::rtl::PAIR_BUF],
+            ahd_fetch: [DFF<Bits<4>>; $crate::rtl::PAIR_BUF],
+            ahd_head: DFF<Bits<4>>,
+            ahd_tail: DFF<Bits<4>>,
+            ahd_pairs: DFF<Bits<5>>,
             ent_second: DFF<Bit>,
+            head_dec: Signal<Local, Bits<16>>,
+            tail_dec: Signal<Local, Bits<16>>,
+            head_ent: Signal<Local, Bits<67>>,
+            head_fetch: Signal<Local, Bits<4>>,
+            ent_valid: Signal<Local, Bit>,
             cur_a: Signal<Local, Bits<16>>,
             cur_b: Signal<Local, Bits<16>>,
             cur_flip: Signal<Local, Bits<1>>,
+            cur_fa: Signal<Local, Bit>,
+            cur_fb: Signal<Local, Bit>,
             ent_last: Signal<Local, Bit>,
+            room: Signal<Local, Bit>,
             pop: Signal<Local, Bit>,
             child_push: Signal<Local, Bit>,
-            // ---- node words held for the DOP unit (A's: e, B's: d)
-            na_ok: DFF<Bit>,
-            na_id: DFF<Bits<16>>,
+            // the popped entry's node ids, fetch bits and pair count; the last pair's ids
+            top: Signal<Local, Bits<67>>,
+            top_two: Signal<Local, Bit>,
+            pop_fetch: Signal<Local, Bits<4>>,
+            fetch_a0: Signal<Local, Bit>,
+            fetch_b0: Signal<Local, Bit>,
+            fetch_a1: Signal<Local, Bit>,
+            fetch_b1: Signal<Local, Bit>,
+            ask_take: Signal<Local, Bit>,
+            last_ok: DFF<Bit>,
+            last_a: DFF<Bits<16>>,
+            last_b: DFF<Bits<16>>,
+            // ---- node words to ask for, in pair order: {pair number mod 32, B, id}
+            ask_w: [DFF<Bits<22>>; $crate::rtl::ASK_LIST],
+            ask_head: DFF<Bits<5>>,
+            ask_tail: DFF<Bits<5>>,
+            ask_n: DFF<Bits<6>>,
+            seq_head: DFF<Bits<5>>,
+            seq_tail: DFF<Bits<5>>,
+            seq_tail1: Signal<Local, Bits<5>>,
+            c_ask_b: Constant<Bits<22>>,
+            ask_dec: Signal<Local, Bits<32>>,
+            ask_front: Signal<Local, Bits<22>>,
+            ask_ok: Signal<Local, Bit>,
+            ask_off1: Signal<Local, Bits<5>>,
+            ask_off2: Signal<Local, Bits<5>>,
+            ask_off3: Signal<Local, Bits<5>>,
+            ask_new: Signal<Local, Bits<5>>,
+            put0: Signal<Local, Bits<32>>,
+            put1: Signal<Local, Bits<32>>,
+            put2: Signal<Local, Bits<32>>,
+            put3: Signal<Local, Bits<32>>,
+            // ---- node words arrived, per destination in request order (A's: e, B's: d),
+            // and the words of the last pair issued
+            wa: [DFF<Bits<$NW>>; $crate::rtl::PAIR_BUF],
+            wa_head: DFF<Bits<4>>,
+            wa_tail: DFF<Bits<4>>,
+            wa_n: DFF<Bits<5>>,
+            wb: [DFF<Bits<$NW>>; $crate::rtl::PAIR_BUF],
+            wb_head: DFF<Bits<4>>,
+            wb_tail: DFF<Bits<4>>,
+            wb_n: DFF<Bits<5>>,
+            wa_hdec: Signal<Local, Bits<16>>,
+            wa_tdec: Signal<Local, Bits<16>>,
+            wb_hdec: Signal<Local, Bits<16>>,
+            wb_tdec: Signal<Local, Bits<16>>,
+            wa_front: Signal<Local, Bits<$NW>>,
+            wb_front: Signal<Local, Bits<$NW>>,
             na_word: DFF<Bits<$NW>>,
-            nb_ok: DFF<Bit>,
-            nb_id: DFF<Bits<16>>,
             nb_word: DFF<Bits<$NW>>,
+            na_in: Signal<Local, Bits<$NW>>,
+            nb_in: Signal<Local, Bits<$NW>>,
             need_na: Signal<Local, Bit>,
             need_nb: Signal<Local, Bit>,
-            // ---- the memory port: one request outstanding, its destination and id
-            outstanding: DFF<Bit>,
-            dst: DFF<Bits<2>>,
-            dst_id: DFF<Bits<16>>,
+            // ---- the memory port: the destinations of the requests outstanding, in order,
+            // and the triangle word asked for per triangle destination (one at a time)
+            tags: [DFF<Bits<2>>; $crate::rtl::PORT_OUTSTANDING],
+            tag_head: DFF<Bits<4>>,
+            tag_tail: DFF<Bits<4>>,
+            tag_n: DFF<Bits<5>>,
+            tag_hdec: Signal<Local, Bits<16>>,
+            tag_tdec: Signal<Local, Bits<16>>,
+            ta_pend: DFF<Bit>,
+            ta_req: DFF<Bits<16>>,
+            tb_pend: DFF<Bit>,
+            tb_req: DFF<Bits<16>>,
+            port_free: Signal<Local, Bit>,
+            resp: Signal<Local, Bit>,
+            resp_dst: Signal<Local, Bits<2>>,
             req: Signal<Local, Bit>,
             req_dst: Signal<Local, Bits<2>>,
             req_id: Signal<Local, Bits<16>>,
             req_addr: Signal<Local, Bits<24>>,
             accept: Signal<Local, Bit>,
+            c_one16: Constant<Bits<16>>,
+            c_one32: Constant<Bits<32>>,
             // ---- the DOP unit and what travels beside it
             dop: DopUnit6,
             side: $crate::rtl::delay::Delay<Bits<99>, { $crate::rtl::DOP_LATENCY }>,
@@ -140,7 +228,7 @@ macro_rules! chip {
             pend_data: DFF<Bits<67>>,
             // ---- leaf pairs waiting for TRI_UNIT, and the one being fetched
             leaf_fifo: LeafFifo,
-            leaf_count: DFF<Bits<5>>,
+            leaf_count: DFF<Bits<6>>,
             leaf_in: Signal<Local, Bit>,
             leaf_out: Signal<Local, Bit>,
             leaf_valid: DFF<Bit>,
@@ -168,7 +256,7 @@ macro_rules! chip {
             cnt_tf: DFF<Bits<32>>,
         }
 
-        impl<const N: usize, const NP1: usize> CollisionChip<N, NP1> {
+        impl<const N: usize, const NP1: usize, const NM1: usize> CollisionChip<N, NP1, NM1> {
             /// Queue entries.
             pub const CAPACITY: usize = 1 << N;
 
@@ -209,32 +297,106 @@ macro_rules! chip {
                     push_root: Default::default(),
                     stop: Default::default(),
                     halt: Default::default(),
+                    port_pf: Default::default(),
+                    port_out: Default::default(),
+                    port_one: Default::default(),
+                    port_credit: Default::default(),
+                    credit_lim: Default::default(),
+                    c_credit: Constant::new(($crate::rtl::CREDIT as u64).into()),
+                    pf: Default::default(),
+                    c_pf_max: Constant::new(($crate::rtl::PORT_PREFETCH as u64).into()),
+                    go: Default::default(),
                     queue: Default::default(),
-                    ent: Default::default(),
-                    ent_valid: Default::default(),
+                    ahd_ent: std::array::from_fn(|_| Default::default()),
+                    ahd_fetch: std::array::from_fn(|_| Default::default()),
+                    ahd_head: Default::default(),
+                    ahd_tail: Default::default(),
+                    ahd_pairs: Default::default(),
                     ent_second: Default::default(),
+                    head_dec: Default::default(),
+                    tail_dec: Default::default(),
+                    head_ent: Default::default(),
+                    head_fetch: Default::default(),
+                    ent_valid: Default::default(),
                     cur_a: Default::default(),
                     cur_b: Default::default(),
                     cur_flip: Default::default(),
+                    cur_fa: Default::default(),
+                    cur_fb: Default::default(),
                     ent_last: Default::default(),
+                    room: Default::default(),
                     pop: Default::default(),
                     child_push: Default::default(),
-                    na_ok: Default::default(),
-                    na_id: Default::default(),
+                    top: Default::default(),
+                    top_two: Default::default(),
+                    pop_fetch: Default::default(),
+                    fetch_a0: Default::default(),
+                    fetch_b0: Default::default(),
+                    fetch_a1: Default::default(),
+                    fetch_b1: Default::default(),
+                    ask_take: Default::default(),
+                    last_ok: Default::default(),
+                    last_a: Default::default(),
+                    last_b: Default::default(),
+                    ask_w: std::array::from_fn(|_| Default::default()),
+                    ask_head: Default::default(),
+                    ask_tail: Default::default(),
+                    ask_n: Default::default(),
+                    seq_head: Default::default(),
+                    seq_tail: Default::default(),
+                    seq_tail1: Default::default(),
+                    c_ask_b: Constant::new((1u64 << 16).into()),
+                    ask_dec: Default::default(),
+                    ask_front: Default::default(),
+                    ask_ok: Default::default(),
+                    ask_off1: Default::default(),
+                    ask_off2: Default::default(),
+                    ask_off3: Default::default(),
+                    ask_new: Default::default(),
+                    put0: Default::default(),
+                    put1: Default::default(),
+                    put2: Default::default(),
+                    put3: Default::default(),
+                    wa: std::array::from_fn(|_| Default::default()),
+                    wa_head: Default::default(),
+                    wa_tail: Default::default(),
+                    wa_n: Default::default(),
+                    wb: std::array::from_fn(|_| Default::default()),
+                    wb_head: Default::default(),
+                    wb_tail: Default::default(),
+                    wb_n: Default::default(),
+                    wa_hdec: Default::default(),
+                    wa_tdec: Default::default(),
+                    wb_hdec: Default::default(),
+                    wb_tdec: Default::default(),
+                    wa_front: Default::default(),
+                    wb_front: Default::default(),
                     na_word: Default::default(),
-                    nb_ok: Default::default(),
-                    nb_id: Default::default(),
                     nb_word: Default::default(),
+                    na_in: Default::default(),
+                    nb_in: Default::default(),
                     need_na: Default::default(),
                     need_nb: Default::default(),
-                    outstanding: Default::default(),
-                    dst: Default::default(),
-                    dst_id: Default::default(),
+                    tags: std::array::from_fn(|_| Default::default()),
+                    tag_head: Default::default(),
+                    tag_tail: Default::default(),
+                    tag_n: Default::default(),
+                    tag_hdec: Default::default(),
+                    tag_tdec: Default::default(),
+                    ta_pend: Default::default(),
+                    ta_req: Default::default(),
+                    tb_pend: Default::default(),
+                    tb_req: Default::default(),
+                    port_free: Default::default(),
+                    resp: Default::default(),
+                    resp_dst: Default::default(),
                     req: Default::default(),
                     req_dst: Default::default(),
                     req_id: Default::default(),
                     req_addr: Default::default(),
                     accept: Default::default(),
+                    c_one16: Constant::new(1.into()),
+                    c_one32: Constant::new(1.into()),
                     dop: DopUnit6::new(dop),
                     side: Default::default(),
                     issue: Default::default(),
@@ -294,7 +456,7 @@ macro_rules! chip {
             }
         }
 
-        impl<const N: usize, const NP1: usize> CollisionChip<N, NP1> {
+        impl<const N: usize, const NP1: usize, const NM1: usize> CollisionChip<N, NP1, NM1> {
             /// The values of the traversal signals [`crate::cycle::PROBES`] (in that
             /// order) as the logic shows them now: what the lockstep check compares and
             /// the traversal VCD shows (scripts/gtkw/chip_e8m15_k6.gtkw).
@@ -312,7 +474,7 @@ macro_rules! chip {
                     self.queue.max_count.val().to_u64(),
                     b(self.queue.push.val()),
                     b(self.pop.val()),
-                    b(self.ent_valid.q.val()),
+                    b(self.ent_valid.val()),
                     self.cur_a.val().to_u64(),
                     self.cur_b.val().to_u64(),
                     b(self.need_na.val()),
@@ -323,7 +485,7 @@ macro_rules! chip {
                     b(self.mem_req_ready.val()),
                     self.mem_req_addr.val().to_u64(),
                     self.req_dst.val().to_u64(),
-                    b(self.outstanding.q.val()),
+                    b(self.tag_n.q.val() != 0),
                     b(self.mem_resp_valid.val()),
                     b(self.dop.valid_out.val()),
                     b(self.dop.overlap.val()),
@@ -357,12 +519,33 @@ macro_rules! chip {
             }
         }
 
-        impl<const N: usize, const NP1: usize> Logic for CollisionChip<N, NP1> {
+        impl<const N: usize, const NP1: usize, const NM1: usize> Logic for CollisionChip<N, NP1, NM1> {
             #[hdl_gen]
             fn update(&mut self) {
                 dff_setup!(self, clock, mode_lifo, mode_first, root, base_na, base_nb, base_ta, base_tb);
-                dff_setup!(self, clock, run, done_r, push_root, stop, ent, ent_valid, ent_second);
-                dff_setup!(self, clock, na_ok, na_id, na_word, nb_ok, nb_id, nb_word, outstanding, dst, dst_id);
+                dff_setup!(self, clock, port_pf, port_out, port_one, port_credit, run, done_r, push_root, stop);
+                dff_setup!(self, clock, ahd_head, ahd_tail, ahd_pairs, ent_second, last_ok, last_a, last_b);
+                dff_setup!(self, clock, ask_head, ask_tail, ask_n, seq_head, seq_tail);
+                dff_setup!(self, clock, wa_head, wa_tail, wa_n, wb_head, wb_tail, wb_n, na_word, nb_word);
+                dff_setup!(self, clock, tag_head, tag_tail, tag_n, ta_pend, ta_req, tb_pend, tb_req);
+                for i in 0..$crate::rtl::PAIR_BUF {
+                    self.ahd_ent[i].clock.next = self.clock.val();
+                    self.ahd_ent[i].d.next = self.ahd_ent[i].q.val();
+                    self.ahd_fetch[i].clock.next = self.clock.val();
+                    self.ahd_fetch[i].d.next = self.ahd_fetch[i].q.val();
+                    self.wa[i].clock.next = self.clock.val();
+                    self.wa[i].d.next = self.wa[i].q.val();
+                    self.wb[i].clock.next = self.clock.val();
+                    self.wb[i].d.next = self.wb[i].q.val();
+                }
+                for i in 0..$crate::rtl::ASK_LIST {
+                    self.ask_w[i].clock.next = self.clock.val();
+                    self.ask_w[i].d.next = self.ask_w[i].q.val();
+                }
+                for i in 0..$crate::rtl::PORT_OUTSTANDING {
+                    self.tags[i].clock.next = self.clock.val();
+                    self.tags[i].d.next = self.tags[i].q.val();
+                }
                 dff_setup!(self, clock, last_issue, inflight, pend, pend_data, leaf_count, leaf_valid, leaf_tag);
                 dff_setup!(self, clock, ta_ok, ta_id, ta_word, tb_ok, tb_id, tb_word, tri_open);
                 dff_setup!(self, clock, cnt_dop, cnt_tri, cnt_nf, cnt_tf);
@@ -394,95 +577,192 @@ macro_rules! chip {
                     if self.host_addr.val() == 0x125 {
                         self.base_tb.d.next = self.host_data.val().get_bits::<24>(0);
                     }
+                    if self.host_addr.val() == 0x126 {
+                        self.port_pf.d.next = self.host_data.val().get_bits::<4>(0);
+                        self.port_out.d.next = self.host_data.val().get_bits::<4>(4);
+                        self.port_one.d.next = self.host_data.val().get_bit(8);
+                        self.port_credit.d.next = self.host_data.val().get_bits::<6>(9);
+                    }
+                }
+                self.pf.next = bit_cast::<5, 4>(self.port_pf.q.val());
+                if bit_cast::<5, 4>(self.port_pf.q.val()) > self.c_pf_max.val() {
+                    self.pf.next = self.c_pf_max.val();
+                }
+                self.credit_lim.next = self.port_credit.q.val();
+                if self.port_credit.q.val() == 0 {
+                    self.credit_lim.next = self.c_credit.val();
                 }
                 // A first hit or an overflow stops the traversal; what is in flight drains.
                 self.halt.next = self.stop.q.val() | self.queue.overflow.val();
-                // ---- D_CNTR: the entry's current pair (entry word: cycle::d_cntr)
-                self.cur_a.next = self.ent.q.val().get_bits::<16>(0);
-                self.cur_b.next = self.ent.q.val().get_bits::<16>(16);
-                self.cur_flip.next = self.ent.q.val().get_bits::<1>(32);
+                self.go.next = self.run.q.val() & !self.halt.val();
+                // ---- D_CNTR: the head entry of the pair buffer and its current pair (entry
+                // word: cycle::d_cntr; fetch bits: which node words the pair takes from the
+                // word FIFOs, the others are the last pair's)
+                self.head_dec.next = self.c_one16.val() << self.ahd_head.q.val();
+                self.tail_dec.next = self.c_one16.val() << self.ahd_tail.q.val();
+                self.head_ent.next = 0.into();
+                self.head_fetch.next = 0.into();
+                for i in 0..$crate::rtl::PAIR_BUF {
+                    if self.head_dec.val().get_bit(i) {
+                        self.head_ent.next = self.ahd_ent[i].q.val();
+                        self.head_fetch.next = self.ahd_fetch[i].q.val();
+                    }
+                }
+                self.ent_valid.next = self.ahd_pairs.q.val() != 0;
+                self.cur_a.next = self.head_ent.val().get_bits::<16>(0);
+                self.cur_b.next = self.head_ent.val().get_bits::<16>(16);
+                self.cur_flip.next = self.head_ent.val().get_bits::<1>(32);
+                self.cur_fa.next = self.head_fetch.val().get_bit(0);
+                self.cur_fb.next = self.head_fetch.val().get_bit(1);
                 if self.ent_second.q.val() {
-                    self.cur_a.next = self.ent.q.val().get_bits::<16>(33);
-                    self.cur_b.next = self.ent.q.val().get_bits::<16>(49);
-                    self.cur_flip.next = self.ent.q.val().get_bits::<1>(65);
+                    self.cur_a.next = self.head_ent.val().get_bits::<16>(33);
+                    self.cur_b.next = self.head_ent.val().get_bits::<16>(49);
+                    self.cur_flip.next = self.head_ent.val().get_bits::<1>(65);
+                    self.cur_fa.next = self.head_fetch.val().get_bit(2);
+                    self.cur_fb.next = self.head_fetch.val().get_bit(3);
                 }
-                self.ent_last.next = self.ent_second.q.val() | !self.ent.q.val().get_bit(66);
-                self.need_na.next = self.run.q.val() & !self.halt.val() & self.ent_valid.q.val()
-                    & !(self.na_ok.q.val() & (self.na_id.q.val() == self.cur_a.val()));
-                self.need_nb.next = self.run.q.val() & !self.halt.val() & self.ent_valid.q.val()
-                    & !(self.nb_ok.q.val() & (self.nb_id.q.val() == self.cur_b.val()));
-                self.need_ta.next = self.run.q.val() & !self.halt.val() & self.leaf_valid.q.val()
+                self.ent_last.next = self.ent_second.q.val() | !self.head_ent.val().get_bit(66);
+                // the pair's node words: from the FIFO heads, or the last pair's
+                self.wa_hdec.next = self.c_one16.val() << self.wa_head.q.val();
+                self.wa_tdec.next = self.c_one16.val() << self.wa_tail.q.val();
+                self.wb_hdec.next = self.c_one16.val() << self.wb_head.q.val();
+                self.wb_tdec.next = self.c_one16.val() << self.wb_tail.q.val();
+                self.wa_front.next = 0.into();
+                self.wb_front.next = 0.into();
+                for i in 0..$crate::rtl::PAIR_BUF {
+                    if self.wa_hdec.val().get_bit(i) {
+                        self.wa_front.next = self.wa[i].q.val();
+                    }
+                    if self.wb_hdec.val().get_bit(i) {
+                        self.wb_front.next = self.wb[i].q.val();
+                    }
+                }
+                self.na_in.next = self.na_word.q.val();
+                if self.cur_fa.val() {
+                    self.na_in.next = self.wa_front.val();
+                }
+                self.nb_in.next = self.nb_word.q.val();
+                if self.cur_fb.val() {
+                    self.nb_in.next = self.wb_front.val();
+                }
+                self.need_na.next = self.go.val() & self.ent_valid.val() & self.cur_fa.val() & (self.wa_n.q.val() == 0);
+                self.need_nb.next = self.go.val() & self.ent_valid.val() & self.cur_fb.val() & (self.wb_n.q.val() == 0);
+                self.need_ta.next = self.go.val() & self.leaf_valid.q.val()
                     & !(self.ta_ok.q.val() & (self.ta_id.q.val() == self.leaf_tag.q.val().get_bits::<16>(0)));
-                self.need_tb.next = self.run.q.val() & !self.halt.val() & self.leaf_valid.q.val()
+                self.need_tb.next = self.go.val() & self.leaf_valid.q.val()
                     & !(self.tb_ok.q.val() & (self.tb_id.q.val() == self.leaf_tag.q.val().get_bits::<16>(16)));
-                // ---- memory requests, one at a time: triangle words first, then node words
-                self.req_dst.next = 1.into();
-                self.req_id.next = self.cur_b.val();
-                self.req_addr.next = self.base_nb.q.val() + bit_cast::<24, 16>(self.cur_b.val());
-                if self.need_na.val() {
-                    self.req_dst.next = 0.into();
-                    self.req_id.next = self.cur_a.val();
-                    self.req_addr.next = self.base_na.q.val() + bit_cast::<24, 16>(self.cur_a.val());
+                // ---- memory requests: triangle words first (one outstanding per
+                // destination), then the node word at the head of the ask list (at prefetch
+                // 0 only the current pair's), while fewer than 0x126[7:4] + 1 are outstanding
+                self.ask_dec.next = self.c_one32.val() << self.ask_head.q.val();
+                self.ask_front.next = 0.into();
+                for i in 0..$crate::rtl::ASK_LIST {
+                    if self.ask_dec.val().get_bit(i) {
+                        self.ask_front.next = self.ask_w[i].q.val();
+                    }
                 }
-                if self.need_tb.val() {
+                self.ask_ok.next = self.go.val() & (self.ask_n.q.val() != 0)
+                    & ((self.pf.val() != 0) | (self.ask_front.val().get_bits::<5>(17) == self.seq_head.q.val()));
+                self.port_free.next = self.tag_n.q.val() <= bit_cast::<5, 4>(self.port_out.q.val());
+                self.req_dst.next = bit_cast::<2, 1>(self.ask_front.val().get_bits::<1>(16));
+                self.req_id.next = self.ask_front.val().get_bits::<16>(0);
+                self.req_addr.next = self.base_na.q.val() + bit_cast::<24, 16>(self.ask_front.val().get_bits::<16>(0));
+                if self.ask_front.val().get_bit(16) {
+                    self.req_addr.next = self.base_nb.q.val() + bit_cast::<24, 16>(self.ask_front.val().get_bits::<16>(0));
+                }
+                self.req.next = self.port_free.val() & self.ask_ok.val();
+                if self.need_tb.val() & !self.tb_pend.q.val() {
                     self.req_dst.next = 3.into();
                     self.req_id.next = self.leaf_tag.q.val().get_bits::<16>(16);
                     self.req_addr.next = self.base_tb.q.val() + bit_cast::<24, 16>(self.leaf_tag.q.val().get_bits::<16>(16));
+                    self.req.next = self.port_free.val();
                 }
-                if self.need_ta.val() {
+                if self.need_ta.val() & !self.ta_pend.q.val() {
                     self.req_dst.next = 2.into();
                     self.req_id.next = self.leaf_tag.q.val().get_bits::<16>(0);
                     self.req_addr.next = self.base_ta.q.val() + bit_cast::<24, 16>(self.leaf_tag.q.val().get_bits::<16>(0));
+                    self.req.next = self.port_free.val();
                 }
-                self.req.next = !self.outstanding.q.val()
-                    & (self.need_na.val() | self.need_nb.val() | self.need_ta.val() | self.need_tb.val());
                 self.mem_req_valid.next = self.req.val();
                 self.mem_req_addr.next = self.req_addr.val();
                 self.accept.next = self.req.val() & self.mem_req_ready.val();
+                self.tag_hdec.next = self.c_one16.val() << self.tag_head.q.val();
+                self.tag_tdec.next = self.c_one16.val() << self.tag_tail.q.val();
+                self.resp_dst.next = 0.into();
+                for i in 0..$crate::rtl::PORT_OUTSTANDING {
+                    if self.tag_hdec.val().get_bit(i) {
+                        self.resp_dst.next = self.tags[i].q.val();
+                    }
+                    if self.accept.val() & self.tag_tdec.val().get_bit(i) {
+                        self.tags[i].d.next = self.req_dst.val();
+                    }
+                }
+                self.resp.next = self.mem_resp_valid.val() & (self.tag_n.q.val() != 0);
                 if self.accept.val() {
-                    self.outstanding.d.next = true;
-                    self.dst.d.next = self.req_dst.val();
-                    self.dst_id.d.next = self.req_id.val();
+                    self.tag_tail.d.next = self.tag_tail.q.val() + 1;
                     if self.req_dst.val().get_bit(1) {
                         self.cnt_tf.d.next = self.cnt_tf.q.val() + 1;
                     } else {
                         self.cnt_nf.d.next = self.cnt_nf.q.val() + 1;
+                        self.ask_head.d.next = self.ask_head.q.val() + 1;
+                    }
+                    if self.req_dst.val() == 2 {
+                        self.ta_pend.d.next = true;
+                        self.ta_req.d.next = self.req_id.val();
+                    }
+                    if self.req_dst.val() == 3 {
+                        self.tb_pend.d.next = true;
+                        self.tb_req.d.next = self.req_id.val();
                     }
                 }
-                if self.outstanding.q.val() & self.mem_resp_valid.val() {
-                    self.outstanding.d.next = false;
-                    if self.dst.q.val() == 0 {
-                        self.na_ok.d.next = true;
-                        self.na_id.d.next = self.dst_id.q.val();
-                        self.na_word.d.next = self.mem_resp_data.val().get_bits::<$NW>(0);
+                if self.accept.val() & !self.resp.val() {
+                    self.tag_n.d.next = self.tag_n.q.val() + 1;
+                }
+                if self.resp.val() & !self.accept.val() {
+                    self.tag_n.d.next = self.tag_n.q.val() - 1;
+                }
+                // a response: node words into their FIFO, a triangle word replaces the held one
+                for i in 0..$crate::rtl::PAIR_BUF {
+                    if self.resp.val() & (self.resp_dst.val() == 0) & self.wa_tdec.val().get_bit(i) {
+                        self.wa[i].d.next = self.mem_resp_data.val().get_bits::<$NW>(0);
                     }
-                    if self.dst.q.val() == 1 {
-                        self.nb_ok.d.next = true;
-                        self.nb_id.d.next = self.dst_id.q.val();
-                        self.nb_word.d.next = self.mem_resp_data.val().get_bits::<$NW>(0);
+                    if self.resp.val() & (self.resp_dst.val() == 1) & self.wb_tdec.val().get_bit(i) {
+                        self.wb[i].d.next = self.mem_resp_data.val().get_bits::<$NW>(0);
                     }
-                    if self.dst.q.val() == 2 {
+                }
+                if self.resp.val() {
+                    self.tag_head.d.next = self.tag_head.q.val() + 1;
+                    if self.resp_dst.val() == 0 {
+                        self.wa_tail.d.next = self.wa_tail.q.val() + 1;
+                    }
+                    if self.resp_dst.val() == 1 {
+                        self.wb_tail.d.next = self.wb_tail.q.val() + 1;
+                    }
+                    if self.resp_dst.val() == 2 {
+                        self.ta_pend.d.next = false;
                         self.ta_ok.d.next = true;
-                        self.ta_id.d.next = self.dst_id.q.val();
+                        self.ta_id.d.next = self.ta_req.q.val();
                         self.ta_word.d.next = self.mem_resp_data.val();
                     }
-                    if self.dst.q.val() == 3 {
+                    if self.resp_dst.val() == 3 {
+                        self.tb_pend.d.next = false;
                         self.tb_ok.d.next = true;
-                        self.tb_id.d.next = self.dst_id.q.val();
+                        self.tb_id.d.next = self.tb_req.q.val();
                         self.tb_word.d.next = self.mem_resp_data.val();
                     }
                 }
                 // ---- issue a pair to the DOP unit once both words are held. Issues are at
-                // least two clocks apart (so child entries can be pushed one per clock), and
-                // every test in flight has a place in the leaf FIFO.
-                self.credit.next = bit_cast::<6, 5>(self.inflight.q.val()) + bit_cast::<6, 5>(self.leaf_count.q.val());
-                self.issue.next = self.run.q.val() & !self.halt.val() & self.ent_valid.q.val()
-                    & !self.need_na.val() & !self.need_nb.val() & !self.last_issue.q.val()
-                    & (self.credit.val() < 16);
+                // least two clocks apart (so child entries can be pushed one per clock)
+                // unless 0x126[8] (the queue's second write port takes both in one clock),
+                // and every test in flight has a place in the leaf FIFO.
+                self.credit.next = bit_cast::<6, 5>(self.inflight.q.val()) + self.leaf_count.q.val();
+                self.issue.next = self.go.val() & self.ent_valid.val()
+                    & !self.need_na.val() & !self.need_nb.val() & !(self.last_issue.q.val() & !self.port_one.q.val())
+                    & (self.credit.val() < self.credit_lim.val());
                 self.last_issue.d.next = self.issue.val();
                 for i in 0..6 {
-                    self.dop.d[i].next = self.nb_word.q.val().get_bits::<$W>(1 + i * $W);
-                    self.dop.e[i].next = self.na_word.q.val().get_bits::<$W>(1 + i * $W);
+                    self.dop.d[i].next = self.nb_in.val().get_bits::<$W>(1 + i * $W);
+                    self.dop.e[i].next = self.na_in.val().get_bits::<$W>(1 + i * $W);
                 }
                 self.dop.tag.next = self.cur_a.val();
                 self.dop.valid_in.next = self.issue.val();
@@ -490,19 +770,35 @@ macro_rules! chip {
                 self.side.d.next = bit_cast::<99, 16>(self.cur_a.val())
                     | (bit_cast::<99, 16>(self.cur_b.val()) << 16)
                     | (bit_cast::<99, 1>(self.cur_flip.val()) << 32)
-                    | (bit_cast::<99, 1>(self.na_word.q.val().get_bits::<1>(0)) << 33)
-                    | (bit_cast::<99, 16>(self.na_word.q.val().get_bits::<16>(1 + 6 * $W)) << 34)
-                    | (bit_cast::<99, 16>(self.na_word.q.val().get_bits::<16>(33 + 6 * $W)) << 50)
-                    | (bit_cast::<99, 1>(self.nb_word.q.val().get_bits::<1>(0)) << 66)
-                    | (bit_cast::<99, 16>(self.nb_word.q.val().get_bits::<16>(1 + 6 * $W)) << 67)
-                    | (bit_cast::<99, 16>(self.nb_word.q.val().get_bits::<16>(33 + 6 * $W)) << 83);
+                    | (bit_cast::<99, 1>(self.na_in.val().get_bits::<1>(0)) << 33)
+                    | (bit_cast::<99, 16>(self.na_in.val().get_bits::<16>(1 + 6 * $W)) << 34)
+                    | (bit_cast::<99, 16>(self.na_in.val().get_bits::<16>(33 + 6 * $W)) << 50)
+                    | (bit_cast::<99, 1>(self.nb_in.val().get_bits::<1>(0)) << 66)
+                    | (bit_cast::<99, 16>(self.nb_in.val().get_bits::<16>(1 + 6 * $W)) << 67)
+                    | (bit_cast::<99, 16>(self.nb_in.val().get_bits::<16>(33 + 6 * $W)) << 83);
+                // an issue takes the pair's fetched words from their FIFOs and moves to the
+                // entry's second pair, or to the next entry
                 if self.issue.val() {
                     self.cnt_dop.d.next = self.cnt_dop.q.val() + 1;
+                    self.seq_head.d.next = self.seq_head.q.val() + 1;
                     self.ent_second.d.next = true;
                     if self.ent_last.val() {
-                        self.ent_valid.d.next = false;
+                        self.ent_second.d.next = false;
+                        self.ahd_head.d.next = self.ahd_head.q.val() + 1;
+                    }
+                    if self.cur_fa.val() {
+                        self.na_word.d.next = self.wa_front.val();
+                        self.wa_head.d.next = self.wa_head.q.val() + 1;
+                    }
+                    if self.cur_fb.val() {
+                        self.nb_word.d.next = self.wb_front.val();
+                        self.wb_head.d.next = self.wb_head.q.val() + 1;
                     }
                 }
+                self.wa_n.d.next = self.wa_n.q.val() + bit_cast::<5, 1>((self.resp.val() & (self.resp_dst.val() == 0)).into())
+                    - bit_cast::<5, 1>((self.issue.val() & self.cur_fa.val()).into());
+                self.wb_n.d.next = self.wb_n.q.val() + bit_cast::<5, 1>((self.resp.val() & (self.resp_dst.val() == 1)).into())
+                    - bit_cast::<5, 1>((self.issue.val() & self.cur_fb.val()).into());
                 // ---- a DOP result: child entries (DOP-sharing order), or a leaf pair
                 self.r_a.next = self.side.q.val().get_bits::<16>(0);
                 self.r_b.next = self.side.q.val().get_bits::<16>(16);
@@ -519,14 +815,80 @@ macro_rules! chip {
                 // on top when popped, the first child first (depth first as far as the DOP
                 // pipeline allows)
                 self.child_push.next = self.pend.q.val() | (self.r_hit.val() & !(self.r_a_leaf.val() & self.r_b_leaf.val()));
-                self.pop.next = self.run.q.val() & !self.halt.val() & !self.queue.empty.val()
-                    & (!self.ent_valid.q.val() | (self.issue.val() & self.ent_last.val()))
+                // ... while the pair buffer, once this clock's issue has left, holds at most
+                // `prefetch` pairs (0: the entry is popped as its last pair issues)
+                self.room.next = (self.ahd_pairs.q.val() - bit_cast::<5, 1>(self.issue.val().into())) <= self.pf.val();
+                self.pop.next = self.go.val() & !self.queue.empty.val() & self.room.val()
                     & !(self.mode_lifo.q.val() & self.child_push.val());
                 self.queue.pop.next = self.pop.val();
+                // the popped entry's pairs fetch the node words the pair before did not use
+                self.top.next = self.queue.top_data.val();
+                self.top_two.next = self.top.val().get_bit(66);
+                // (one bit each: a `!` inside a wider Verilog expression would invert the
+                // zero-extended bits too)
+                self.fetch_a0.next = !(self.last_ok.q.val() & (self.last_a.q.val() == self.top.val().get_bits::<16>(0)));
+                self.fetch_b0.next = !(self.last_ok.q.val() & (self.last_b.q.val() == self.top.val().get_bits::<16>(16)));
+                self.fetch_a1.next = self.top_two.val() & (self.top.val().get_bits::<16>(33) != self.top.val().get_bits::<16>(0));
+                self.fetch_b1.next = self.top_two.val() & (self.top.val().get_bits::<16>(49) != self.top.val().get_bits::<16>(16));
+                self.pop_fetch.next = bit_cast::<4, 1>(self.fetch_a0.val().into())
+                    | (bit_cast::<4, 1>(self.fetch_b0.val().into()) << 1)
+                    | (bit_cast::<4, 1>(self.fetch_a1.val().into()) << 2)
+                    | (bit_cast::<4, 1>(self.fetch_b1.val().into()) << 3);
+                for i in 0..$crate::rtl::PAIR_BUF {
+                    if self.pop.val() & self.tail_dec.val().get_bit(i) {
+                        self.ahd_ent[i].d.next = self.top.val();
+                        self.ahd_fetch[i].d.next = self.pop_fetch.val();
+                    }
+                }
+                self.ahd_pairs.d.next = self.ahd_pairs.q.val() - bit_cast::<5, 1>(self.issue.val().into());
                 if self.pop.val() {
-                    self.ent.d.next = self.queue.top_data.val();
-                    self.ent_valid.d.next = true;
-                    self.ent_second.d.next = false;
+                    self.ahd_tail.d.next = self.ahd_tail.q.val() + 1;
+                    self.ahd_pairs.d.next = self.ahd_pairs.q.val() - bit_cast::<5, 1>(self.issue.val().into())
+                        + 1 + bit_cast::<5, 1>(self.top_two.val().into());
+                    self.seq_tail.d.next = self.seq_tail.q.val() + 1 + bit_cast::<5, 1>(self.top_two.val().into());
+                    self.last_ok.d.next = true;
+                    self.last_a.d.next = self.top.val().get_bits::<16>(0);
+                    self.last_b.d.next = self.top.val().get_bits::<16>(16);
+                    if self.top_two.val() {
+                        self.last_a.d.next = self.top.val().get_bits::<16>(33);
+                        self.last_b.d.next = self.top.val().get_bits::<16>(49);
+                    }
+                }
+                // ... and its node words join the ask list in pair order (A0 B0 A1 B1, the
+                // fetched ones), each with its pair's number
+                self.seq_tail1.next = self.seq_tail.q.val() + 1;
+                self.ask_off1.next = bit_cast::<5, 1>(self.pop_fetch.val().get_bits::<1>(0));
+                self.ask_off2.next = self.ask_off1.val() + bit_cast::<5, 1>(self.pop_fetch.val().get_bits::<1>(1));
+                self.ask_off3.next = self.ask_off2.val() + bit_cast::<5, 1>(self.pop_fetch.val().get_bits::<1>(2));
+                self.ask_new.next = self.ask_off3.val() + bit_cast::<5, 1>(self.pop_fetch.val().get_bits::<1>(3));
+                self.put0.next = self.c_one32.val() << self.ask_tail.q.val();
+                self.put1.next = self.c_one32.val() << (self.ask_tail.q.val() + self.ask_off1.val());
+                self.put2.next = self.c_one32.val() << (self.ask_tail.q.val() + self.ask_off2.val());
+                self.put3.next = self.c_one32.val() << (self.ask_tail.q.val() + self.ask_off3.val());
+                for i in 0..$crate::rtl::ASK_LIST {
+                    if self.pop.val() & self.pop_fetch.val().get_bit(0) & self.put0.val().get_bit(i) {
+                        self.ask_w[i].d.next = bit_cast::<22, 16>(self.top.val().get_bits::<16>(0))
+                            | (bit_cast::<22, 5>(self.seq_tail.q.val()) << 17);
+                    }
+                    if self.pop.val() & self.pop_fetch.val().get_bit(1) & self.put1.val().get_bit(i) {
+                        self.ask_w[i].d.next = bit_cast::<22, 16>(self.top.val().get_bits::<16>(16))
+                            | (bit_cast::<22, 5>(self.seq_tail.q.val()) << 17) | self.c_ask_b.val();
+                    }
+                    if self.pop.val() & self.pop_fetch.val().get_bit(2) & self.put2.val().get_bit(i) {
+                        self.ask_w[i].d.next = bit_cast::<22, 16>(self.top.val().get_bits::<16>(33))
+                            | (bit_cast::<22, 5>(self.seq_tail1.val()) << 17);
+                    }
+                    if self.pop.val() & self.pop_fetch.val().get_bit(3) & self.put3.val().get_bit(i) {
+                        self.ask_w[i].d.next = bit_cast::<22, 16>(self.top.val().get_bits::<16>(49))
+                            | (bit_cast::<22, 5>(self.seq_tail1.val()) << 17) | self.c_ask_b.val();
+                    }
+                }
+                self.ask_take.next = self.accept.val() & !self.req_dst.val().get_bit(1);
+                self.ask_n.d.next = self.ask_n.q.val() - bit_cast::<6, 1>(self.ask_take.val().into());
+                if self.pop.val() {
+                    self.ask_tail.d.next = self.ask_tail.q.val() + self.ask_new.val();
+                    self.ask_n.d.next = self.ask_n.q.val() - bit_cast::<6, 1>(self.ask_take.val().into())
+                        + bit_cast::<6, 5>(self.ask_new.val());
                 }
                 // (xa, xb): A's children, (ya, yb): B's, in the pair's flip order
                 self.xa.next = self.r_a0.val();
@@ -570,6 +932,8 @@ macro_rules! chip {
                 self.queue.lifo.next = self.mode_lifo.q.val();
                 self.queue.push.next = false;
                 self.queue.push_data.next = self.e0.val();
+                self.queue.push2.next = false;
+                self.queue.push2_data.next = self.e1.val();
                 self.pend.d.next = false;
                 if self.pend.q.val() {
                     self.queue.push.next = true;
@@ -581,11 +945,13 @@ macro_rules! chip {
                     if self.r_a_leaf.val() | self.r_b_leaf.val() {
                         self.queue.push_data.next = self.e0.val();
                     } else {
-                        // two entries, one per clock; LIFO pushes the second first, so that
-                        // the first is popped first
-                        self.pend.d.next = true;
+                        // two entries, in one clock (second write port) or one per clock;
+                        // LIFO pushes the second first, so that the first is popped first
+                        self.queue.push2.next = self.port_one.q.val();
+                        self.pend.d.next = !self.port_one.q.val();
                         if self.mode_lifo.q.val() {
                             self.queue.push_data.next = self.e1.val();
+                            self.queue.push2_data.next = self.e0.val();
                             self.pend_data.d.next = self.e0.val();
                         } else {
                             self.queue.push_data.next = self.e0.val();
@@ -679,9 +1045,9 @@ macro_rules! chip {
                 // ---- end of query: nothing left to do (after a halt: nothing left in flight).
                 // Leaf pairs by their count, not the FIFO's `empty`: a pair written at edge w
                 // shows at the head only from cycle w + 2.
-                self.halt_idle.next = (self.inflight.q.val() == 0) & !self.pend.q.val() & !self.outstanding.q.val()
+                self.halt_idle.next = (self.inflight.q.val() == 0) & !self.pend.q.val() & (self.tag_n.q.val() == 0)
                     & (self.tri_open.q.val() == 0) & !self.push_root.q.val() & (self.leaf_count.q.val() == 0);
-                self.all_idle.next = self.halt_idle.val() & self.queue.empty.val() & !self.ent_valid.q.val()
+                self.all_idle.next = self.halt_idle.val() & self.queue.empty.val() & !self.ent_valid.val()
                     & !self.leaf_valid.q.val();
                 if self.run.q.val() & (self.all_idle.val() | (self.halt.val() & self.halt_idle.val())) {
                     self.run.d.next = false;
@@ -692,10 +1058,24 @@ macro_rules! chip {
                     self.done_r.d.next = false;
                     self.push_root.d.next = true;
                     self.stop.d.next = false;
-                    self.ent_valid.d.next = false;
                     self.leaf_valid.d.next = false;
-                    self.na_ok.d.next = false;
-                    self.nb_ok.d.next = false;
+                    // the pair buffer, the ask list and the node-word FIFOs start empty
+                    self.ahd_head.d.next = 0.into();
+                    self.ahd_tail.d.next = 0.into();
+                    self.ahd_pairs.d.next = 0.into();
+                    self.ent_second.d.next = false;
+                    self.last_ok.d.next = false;
+                    self.ask_head.d.next = 0.into();
+                    self.ask_tail.d.next = 0.into();
+                    self.ask_n.d.next = 0.into();
+                    self.seq_head.d.next = 0.into();
+                    self.seq_tail.d.next = 0.into();
+                    self.wa_head.d.next = 0.into();
+                    self.wa_tail.d.next = 0.into();
+                    self.wa_n.d.next = 0.into();
+                    self.wb_head.d.next = 0.into();
+                    self.wb_tail.d.next = 0.into();
+                    self.wb_n.d.next = 0.into();
                     self.ta_ok.d.next = false;
                     self.tb_ok.d.next = false;
                     self.cnt_dop.d.next = 0.into();
@@ -716,14 +1096,14 @@ macro_rules! chip {
 
         /// A chip ready to simulate as a top-level block (inputs claimed, connected).
         /// Large (TRI_UNIT): build it on a thread with a big stack.
-        pub fn chip_top<const N: usize, const NP1: usize>(dop: Rounding, tri: Rounding) -> CollisionChip<N, NP1> {
-            top_level!(CollisionChip::<N, NP1>::new(dop, tri); clock, host_we, host_addr, host_data, start,
+        pub fn chip_top<const N: usize, const NP1: usize, const NM1: usize>(dop: Rounding, tri: Rounding) -> CollisionChip<N, NP1, NM1> {
+            top_level!(CollisionChip::<N, NP1, NM1>::new(dop, tri); clock, host_we, host_addr, host_data, start,
                 mem_req_ready, mem_resp_valid, mem_resp_data, res_ready)
         }
 
         /// Verilog of the chip with `2^N` queue entries (top module `top`).
-        pub fn verilog_chip<const N: usize, const NP1: usize>(dop: Rounding, tri: Rounding) -> String {
-            generate_verilog(&chip_top::<N, NP1>(dop, tri))
+        pub fn verilog_chip<const N: usize, const NP1: usize, const NM1: usize>(dop: Rounding, tri: Rounding) -> String {
+            generate_verilog(&chip_top::<N, NP1, NM1>(dop, tri))
         }
     };
 }

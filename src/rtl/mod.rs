@@ -47,9 +47,29 @@ macro_rules! top_level {
 /// Clocks from a DOP test's issue to its result: the DOPTRF lane's pipeline
 /// ([`b32::Doptrf`]; D.KLMSEL and the NOR add no register).
 pub const DOP_LATENCY: usize = 15;
-/// The chip's leaf FIFO: overlapping leaf pairs waiting for TRI_UNIT, and the credit of
-/// DOP tests in flight plus waiting leaf pairs that keeps it from overflowing.
-pub const LEAF_FIFO: usize = 16;
+/// The chip's leaf FIFO: overlapping leaf pairs waiting for TRI_UNIT.
+pub const LEAF_FIFO: usize = 64;
+/// The credit (DOP tests in flight plus waiting leaf pairs, which keeps the leaf FIFO from
+/// overflowing) after reset (0x126[14:9] = 0), and the most the register's 6 bits give.
+pub const CREDIT: usize = 16;
+pub const CREDIT_MAX: usize = 63;
+const _: () = assert!(CREDIT_MAX < LEAF_FIFO);
+
+/// The memory port's limits, set per query in host register 0x126
+/// ([`crate::cycle::chip::reg::PORT`], which also holds the issue spacing and the credit):
+/// node pairs prefetched at most
+/// ([`crate::cycle::Params::prefetch`]; larger values act as this) and memory requests
+/// outstanding at most. The chip's pair buffer holds `PAIR_BUF = PORT_PREFETCH + 2` pairs
+/// (as many entries), each node-word FIFO as many words, the list of node words to ask
+/// for `ASK_LIST`, the response tag FIFO `PORT_OUTSTANDING` destinations.
+pub const PORT_PREFETCH: usize = 14;
+pub const PORT_OUTSTANDING: usize = 16;
+/// Pairs (and entries, and node words per destination) the chip holds ahead of its DOP unit.
+pub const PAIR_BUF: usize = PORT_PREFETCH + 2;
+/// Node words the chip holds to ask for (two per pair).
+pub const ASK_LIST: usize = 2 * PAIR_BUF;
+// the chip's pointers into these buffers are 4 bits (5 for the ask list)
+const _: () = assert!(PAIR_BUF == 16 && PORT_OUTSTANDING == 16);
 
 mod bound;
 mod chip;

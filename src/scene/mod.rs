@@ -41,7 +41,9 @@
 //! # waveforms = { dir = "target/vcd/x", scopes = ["d_cntr", "memory"], cycles = [0, 5000] }
 //! cross_check = "rtl"         # also every pose on the rust-hdl chip in lockstep with the
 //!                             # cycle model (about 14 clocks/s: small meshes; k = 6, format
-//!                             # "reduced", outward, no [timing]); or "verilog": the exported
+//!                             # "reduced", outward; [timing] only issue_spacing, credit (1
+//!                             # to 63), outstanding (1 to 16) and prefetch (0 to 14)); or
+//!                             # "verilog": the exported
 //!                             # chip under Verilator (built once, cached under target/),
 //!                             # every port every clock; meshes of a few hundred triangles
 //!
@@ -62,9 +64,9 @@
 //! tri_latency = 130
 //! tri_fifo = 256
 //! issue_spacing = 2           # 1 or 2 clocks between DOP issues
-//! credit = 16                 # DOP tests in flight + leaf pairs waiting
-//! outstanding = 1             # memory requests in flight (1 to 64)
-//! prefetch = 0                # node pairs whose words are fetched ahead (0 to 256)
+//! credit = 16                 # DOP tests in flight + leaf pairs waiting (RTL: 1 to 63)
+//! outstanding = 1             # memory requests in flight (1 to 64; the RTL chip 1 to 16)
+//! prefetch = 0                # node pairs whose words are fetched ahead (0 to 256; RTL 0 to 14)
 //! clock_mhz = 800             # the chip's clock for its time per query (DATE'05: 800)
 //! ```
 
@@ -545,8 +547,15 @@ mod tests {
         assert!(e.contains("k = 6"), "{e}");
         let e = crate::harness::chip_io::rtl_order(&rtl.cfg, Traversal::List, &rtl.params).unwrap_err();
         assert!(e.contains("fifo or lifo"), "{e}");
-        let e = crate::harness::chip_io::rtl_order(&rtl.cfg, Traversal::Lifo, &Params { credit: 4, ..rtl.params }).unwrap_err();
+        let e = crate::harness::chip_io::rtl_order(&rtl.cfg, Traversal::Lifo, &Params { tri_fifo: 4, ..rtl.params }).unwrap_err();
         assert!(e.contains("[timing]"), "{e}");
+        // the memory port's register: within its fields, and no further
+        let port = Params { prefetch: 14, outstanding: 16, credit: 63, issue_spacing: 1, ..rtl.params };
+        assert_eq!(crate::harness::chip_io::rtl_order(&rtl.cfg, Traversal::Lifo, &port), Ok(true));
+        for p in [Params { prefetch: 15, ..port }, Params { outstanding: 17, ..port }, Params { credit: 64, ..port }] {
+            let e = crate::harness::chip_io::rtl_order(&rtl.cfg, Traversal::Lifo, &p).unwrap_err();
+            assert!(e.contains("at most 14 pairs with at most 16 requests outstanding and a credit of at most 63"), "{e}");
+        }
     }
 
     /// `[memory]` picks the ideal model or DDR SDRAM with a preset and overrides; mixed or

@@ -84,7 +84,7 @@ impl<'s> Prepared<'s> {
         scene.poses.iter().try_for_each(|sp| chip.check_pose(&sp.pose)).map_err(named)?;
         if plan.cross_check.is_some() {
             // the images the RTL reads: node ids and memory words within its widths
-            chip_io::QueryImage::new(&chip.a, &chip.b, &chip.setup(&scene.poses[0].pose), true, scene.mode).map_err(named)?;
+            chip_io::QueryImage::new(&chip.a, &chip.b, &chip.setup(&scene.poses[0].pose), true, scene.mode, &scene.params).map_err(named)?;
         }
         let verilog = match plan.cross_check {
             Some(CrossCheck::Verilog) => {
@@ -202,7 +202,7 @@ impl<'s> Prepared<'s> {
             }
             Some(CrossCheck::Verilog) => {
                 let bin = self.verilog.as_deref().expect("built in Prepared::new");
-                let image = chip_io::QueryImage::new(&chip.a, &chip.b, &setup, lifo, s.mode).map_err(|e| format!("pose {i}: {e}"))?;
+                let image = chip_io::QueryImage::new(&chip.a, &chip.b, &setup, lifo, s.mode, &s.params).map_err(|e| format!("pose {i}: {e}"))?;
                 let dir = verilator::work_dir().join(format!("pose{i}"));
                 verilator::cross_check(bin, &dir, &image, s.params.memory, 2 * trace.cycles + 1000, &ports, &trace)
                     .map_err(|e| format!("pose {i}: {e}"))?;
