@@ -9,10 +9,12 @@ chip: k = 24, binary32, outward DOP rounding, LIFO, all pairs; `[memory]` set to
 (mesh, model), summed over the poses whose root DOPs overlap (more than one DOP test).
 
 Usage: scripts/memory-study.py [--meshes bunny dragon-11k] [--orientations 8] [--timing TOML]
-                               [--cchip PATH]
+                               [--chip TOML] [--cchip PATH]
   --timing  the scenes' [timing] table, e.g. 'issue_spacing = 1, outstanding = 16, credit = 48,
-            prefetch = 14' (the cycle model beyond the RTL: docs/ARCHITECTURE.md, "With
-            prefetch"; default: the RTL's parameters)
+            prefetch = 14' (the memory port at full speed: docs/ARCHITECTURE.md, "With
+            prefetch"; default: the RTL's parameters after reset)
+  --chip    the scenes' [chip] table instead of the default's, e.g. the RTL chip's
+            'k = 6, format = "reduced", dop_rounding = "outward"'
   --cchip   a built cchip binary (default: `cargo run --release -q --`)
 Only the Python 3 standard library is used.
 """
@@ -37,12 +39,14 @@ MODELS = [
 DEFAULT = os.path.join(ROOT, "vectors", "scenes", "default.toml")
 
 
-def scene(mesh, orientations, timing, memory):
+def scene(mesh, orientations, timing, memory, chip):
     """The default scene (vectors/scenes/default.toml) on `mesh` with `orientations`, the
-    given [timing] and [memory], and only the cycle model's outputs."""
+    given [timing] and [memory] (and [chip], if any), and only the cycle model's outputs."""
     with open(DEFAULT) as f:
         text = f.read()
     text = text[: text.index("[outputs]")]
+    if chip:
+        text = re.sub(r"(?ms)^\[chip\]\n.*?\n\n", lambda _: f"[chip]\n{chip}\n\n", text, count=1)
     text = re.sub(r'(?m)^([ab]) = ".*"$', lambda m: f'{m.group(1)} = "{mesh}"', text)
     text = re.sub(r"(?m)^orientations = \d+$", f"orientations = {orientations}", text)
     return f"{text}[timing]\n{timing}\n\n[memory]\n{memory}\n\n[outputs]\ncycles = true\nmemory = true\n"
@@ -79,6 +83,7 @@ def main():
     ap.add_argument("--meshes", nargs="+", default=["bunny", "dragon-11k"])
     ap.add_argument("--orientations", type=int, default=8)
     ap.add_argument("--timing", default="", help="the scenes' [timing] entries, comma separated")
+    ap.add_argument("--chip", default="", help="the scenes' [chip] entries, comma separated (default: the default scene's)")
     ap.add_argument("--cchip", help="a built cchip binary (default: cargo run --release -q --)")
     a = ap.parse_args()
     cmd = [a.cchip] if a.cchip else ["cargo", "run", "--release", "-q", "--"]
@@ -90,7 +95,8 @@ def main():
             for name, memory, _ in MODELS:
                 path = os.path.join(tmp, f"{mesh}-{name.replace(' ', '').replace(',', '-')}.toml")
                 with open(path, "w") as f:
-                    f.write(scene(mesh, a.orientations, "\n".join(x.strip() for x in a.timing.split(",")), memory))
+                    lines = lambda t: "\n".join(x.strip() for x in t.split(","))
+                    f.write(scene(mesh, a.orientations, lines(a.timing), memory, lines(a.chip) if a.chip else ""))
                 print(row(mesh, name, run(cmd, path)), flush=True)
     print()
     for name, _, what in MODELS:
