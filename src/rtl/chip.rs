@@ -13,7 +13,7 @@ macro_rules! chip {
         /// The collision chip with k = 6: D_CNTR (DATE'05 §4.3) drives the DOP unit (Eq. 10)
         /// over pairs of node words from memory, overlapping leaf pairs go to TRI_UNIT
         /// (§4.2), and the host reads the intersecting and the uncertain triangle pairs.
-        /// `2^N` queue entries (`NP1 = N + 1`).
+        /// `2^N` queue entries (`NP1 = N + 1`, `NM1 = N - 1`).
         ///
         /// Ports (`W` = word width, `MW` = memory word):
         ///

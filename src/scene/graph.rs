@@ -148,7 +148,7 @@ impl Unit {
             Unit::HostSettle => "exact predicates on the pairs T.CHECK left uncertain".into(),
             Unit::ExactOracle => "every intersecting pair exactly (AABB broad phase, exact predicates on the f64 geometry)".into(),
             Unit::AccuracyCounter => "misses and extra pairs of the chip against the exact oracle".into(),
-            Unit::DCntr => format!("the pair queue ({} entries), entry register and issue control (every {} clock(s), credit {})", p.queue_entries, p.issue_spacing, p.credit),
+            Unit::DCntr => format!("the pair queue ({} entries), pair buffer and issue control (every {} clock(s), credit {})", p.queue_entries, p.issue_spacing, p.credit),
             Unit::MemoryPort => {
                 let prefetch = if p.prefetch > 0 { format!(", node words of {} pairs prefetched", p.prefetch) } else { String::new() };
                 format!("node and triangle word requests, {} outstanding{prefetch}", p.outstanding)
