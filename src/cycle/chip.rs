@@ -432,7 +432,8 @@ pub fn control_writes(a: &ObjectImage, b: &ObjectImage, lifo: bool, mode: crate:
     // (the RTL's fields; the cycle model runs larger values from `p` itself, and
     // `chip_io::rtl_order` keeps the RTL's queries within them)
     let credit = if p.credit == crate::rtl::CREDIT as u32 { 0 } else { p.credit.min(crate::rtl::CREDIT_MAX as u32) };
-    let port = p.prefetch.min(0xf) | (p.outstanding.clamp(1, 16) - 1) << 4 | ((p.issue_spacing == 1) as u32) << 8 | credit << 9;
+    let outstanding = p.outstanding.clamp(1, crate::rtl::PORT_OUTSTANDING as u32);
+    let port = p.prefetch.min(0xf) | (outstanding - 1) << 4 | ((p.issue_spacing == 1) as u32) << 8 | credit << 9;
     if port != 0 {
         w.push((reg::PORT, port));
     }
