@@ -93,7 +93,7 @@ fn verilator(root: &Path) -> Result<Vec<f64>, String> {
     let stdout = String::from_utf8_lossy(&out.stdout);
     assert!(out.status.success() && stdout.contains("3 passed, 0 failed"), "scripts/run-chip.sh:\n{stdout}{}", String::from_utf8_lossy(&out.stderr));
     println!("Verilator: built (if not yet built) and checked the traces in {:.0} s", t.elapsed().as_secs_f64());
-    let bin = root.join("target/verilog/verilator/chip/obj/Vchip");
+    let bin = root.join("target/verilog/verilator/chip_e8m15_k6/obj/Vchip");
     let mut times = vec![];
     for name in [SHORT, EMPTY, LONG] {
         let (q, _) = query(name);

@@ -1,7 +1,8 @@
 //! The RTL collision chip in rust-hdl, clocked in lockstep with the cycle model
 //! (`cycle::drive::Lockstep`): every output and every traversal signal of
-//! `cycle::PROBES` equal after every clock, on two queries of the checked-in set (whose
-//! traces the exported Verilog must reproduce under Verilator, scripts/run-chip.sh), on a
+//! `cycle::PROBES` equal after every clock, on three queries of the checked-in set, one of
+//! them on the papers' chip (k = 24, binary32; the traces the exported Verilog must
+//! reproduce under Verilator, scripts/run-chip.sh), on a
 //! query drawn from a fixed seed (DDR memory), on a leaf pair that is the query's last event
 //! and on an overflowing queue. The answers are checked against the golden model too.
 //!
@@ -15,17 +16,13 @@ use collision_chip::dop::HostSetup;
 use collision_chip::pose::Pose;
 use collision_chip::query::Chip;
 use collision_chip::cycle::drive::open_vcd;
-use collision_chip::harness::chip_io::{drive, queries, ChipQuery, QueryImage, RtlChip, CHIP_CONFIG};
-use collision_chip::rtl::e8m15::{chip_top, CollisionChip};
+use collision_chip::harness::chip_io::{drive, queries, ChipKind, ChipQuery, QueryImage, RtlChip, RtlPorts, CHIP_CONFIG, PAPERS_CONFIG};
+use collision_chip::rtl::{b32, e8m15};
 use collision_chip::traversal::{Mode, QueryResult, Traversal};
 use std::path::PathBuf;
 
 /// Generous: the longest query takes about 2,000 cycles.
 const MAX_CYCLES: u64 = 20_000;
-
-fn rtl_chip<const N: usize, const NP1: usize, const NM1: usize>() -> CollisionChip<N, NP1, NM1> {
-    chip_top::<N, NP1, NM1>(CHIP_CONFIG.dop_rounding.op(), CHIP_CONFIG.tri_rounding)
-}
 
 /// One query to run in lockstep: the golden images, the pose's setup, the RTL's memory
 /// image and writes, and how it is driven.
@@ -45,7 +42,8 @@ struct Case {
 impl Case {
     fn new(name: &str, chip: Chip, pose: Pose, lifo: bool, mode: Mode, params: Params, reader: Reader) -> Case {
         let setup = chip.setup(&pose);
-        let image = QueryImage::new(&chip.a, &chip.b, &setup, lifo, mode, &params).unwrap();
+        let kind = ChipKind::of(&chip.cfg).expect("an RTL chip's configuration");
+        let image = QueryImage::new(kind, &chip.a, &chip.b, &setup, lifo, mode, &params).unwrap();
         let golden = chip.query(&pose, Mode::All, if lifo { Traversal::Lifo } else { Traversal::Fifo });
         Case { name: name.into(), chip, setup, image, golden, lifo, mode, params, reader }
     }
@@ -59,35 +57,46 @@ impl Case {
         drive(&self.image, self.params.memory, self.reader, MAX_CYCLES)
     }
 
-    /// Runs the query `runs` times back to back on one rust-hdl chip of `2^N` queue
-    /// entries and one cycle model, in lockstep; with `vcd`, the first run's traversal VCD.
+    /// Runs the query `runs` times back to back on one rust-hdl chip (of the image's kind)
+    /// of `2^N` queue entries and one cycle model, in lockstep; with `vcd`, the first run's
+    /// traversal VCD.
     fn lockstep<const N: usize, const NP1: usize, const NM1: usize>(&self, runs: usize, vcd: Option<PathBuf>) -> Vec<ChipTrace> {
-        let p = Params { queue_entries: 1 << N, ..self.params };
         std::thread::scope(|s| {
             std::thread::Builder::new()
                 .stack_size(1 << 30)
-                .spawn_scoped(s, || {
-                    let mut rtl = rtl_chip::<N, NP1, NM1>();
-                    let mut cyc = CycleChip::new(&CHIP_CONFIG, p, &self.chip.a, &self.chip.b, &self.setup, false).unwrap();
-                    let mut out = vec![];
-                    for run in 0..runs {
-                        let mut ls = Lockstep::new(RtlChip::new(&mut rtl, &self.image), &mut cyc, ("rust-hdl", "cycle model"));
-                        let mut w = vcd.as_ref().filter(|_| run == 0).map(|p| open_vcd(p, &[], 0..u64::MAX).unwrap());
-                        let tr = run_query(&mut ls, &self.image.writes, &self.drive(), true, |t, p| {
-                            if let Some(w) = w.as_mut() {
-                                w.cycle(t, &p.unwrap()).map_err(|e| e.to_string())?;
-                            }
-                            Ok(())
-                        }, None)
-                        .unwrap_or_else(|e| panic!("{}: {e}", self.name));
-                        out.push(tr);
+                .spawn_scoped(s, || match self.image.kind {
+                    ChipKind::K6E8m15 => {
+                        let c = CHIP_CONFIG;
+                        self.run_on(e8m15::chip_top::<N, NP1, NM1>(c.dop_rounding.op(), c.tri_rounding), 1 << N, runs, vcd)
                     }
-                    out
+                    ChipKind::K24B32 => {
+                        let c = PAPERS_CONFIG;
+                        self.run_on(b32::chip_top::<N, NP1, NM1>(c.dop_rounding.op(), c.tri_rounding), 1 << N, runs, vcd)
+                    }
                 })
                 .unwrap()
                 .join()
                 .unwrap()
         })
+    }
+
+    fn run_on<C: RtlPorts>(&self, mut rtl: C, queue_entries: u32, runs: usize, vcd: Option<PathBuf>) -> Vec<ChipTrace> {
+        let p = Params { queue_entries, ..self.params };
+        let mut cyc = CycleChip::new(&self.chip.cfg, p, &self.chip.a, &self.chip.b, &self.setup, false).unwrap();
+        let mut out = vec![];
+        for run in 0..runs {
+            let mut ls = Lockstep::new(RtlChip::new(&mut rtl, &self.image), &mut cyc, ("rust-hdl", "cycle model"));
+            let mut w = vcd.as_ref().filter(|_| run == 0).map(|p| open_vcd(p, &[], 0..u64::MAX).unwrap());
+            let tr = run_query(&mut ls, &self.image.writes, &self.drive(), true, |t, p| {
+                if let Some(w) = w.as_mut() {
+                    w.cycle(t, &p.unwrap()).map_err(|e| e.to_string())?;
+                }
+                Ok(())
+            }, None)
+            .unwrap_or_else(|e| panic!("{}: {e}", self.name));
+            out.push(tr);
+        }
+        out
     }
 
     /// The answer is the golden model's, and in all-pairs mode so are the test counts.
@@ -185,14 +194,18 @@ fn vcd_results(path: &std::path::Path) -> Vec<(u64, u32, u32, bool)> {
     out
 }
 
-/// The memory port at full speed (register 0x126: 3 pairs ahead, 4 requests outstanding, an
-/// issue every clock, a credit of 24; a memory latency of 8): node words asked for pairs before they reach
-/// the DOP unit, several in flight, responses into the node-word FIFOs, a DOP result's two
-/// child entries pushed in one clock; every signal equal to the cycle model's,
-/// clock by clock, and the trace the checked-in one (which Verilator reproduces in CI).
+/// The papers' chip (k = 24 DOPTRF lanes, binary32 throughout) on a first-hit query with
+/// the memory port at full speed (register 0x126: 3 pairs ahead, 4 requests outstanding, an
+/// issue every clock, a credit of 24; a memory latency of 8): node words asked for pairs
+/// before they reach the DOP unit, several in flight, responses into the node-word FIFOs, a
+/// DOP result's two child entries pushed in one clock; every signal equal to the cycle
+/// model's, clock by clock, and the trace the checked-in one (which Verilator reproduces in
+/// CI). (The small chip's port at full speed: `seeded_random_query`, and
+/// `bunny_fifo_prefetch` under Verilator.)
 #[test]
-fn bunny_fifo_prefetch() {
-    let q = query("bunny_fifo_prefetch");
+fn k24_sphere_lifo_first() {
+    let q = query("k24_sphere_lifo_first");
+    assert_eq!(q.chip, ChipKind::K24B32);
     let case = Case::of(&q);
     let tr = &case.lockstep::<10, 11, 9>(1, None)[0];
     case.check(tr);

@@ -1,9 +1,10 @@
-// Testbench of the exported collision chip (rtl/chip_e8m15_k6.v, module `top`): the host
-// and the memory of src/rtl/chip_io.rs, clock for clock. It writes the registers from
+// Testbench of an exported collision chip (rtl/chip_*.v, module `top`; parameter MW its
+// memory word bits: 578 for chip_e8m15_k6, 833 for chip_b32_k24): the host and the memory
+// of src/harness/chip_io.rs, clock for clock. It writes the registers from
 // +host=<file> (one `{addr[10], data[32]}` per line), pulses `start`, serves memory
-// requests from +mem=<file> ($readmemh, one 578-bit word per line) with the memory model
+// requests from +mem=<file> ($readmemh, one MW-bit word per line) with the memory model
 // (+latency=L: a request accepted at edge t is answered in the cycle ending with edge
-// t+L+B-1, B = ceil(578 / +bus_bits) clocks on the bus, 1 without +bus_bits; +interval=I:
+// t+L+B-1, B = ceil(MW / +bus_bits) clocks on the bus, 1 without +bus_bits; +interval=I:
 // the next request is accepted max(I, B) edges later at the earliest; or, with +ddr,
 // the DDR SDRAM model of cycle::memory::Ddr: +banks +page_bytes +bus_bits +burst +hit
 // +miss, a request accepted in any cycle; docs/ARCHITECTURE.md), reads results
@@ -21,7 +22,7 @@
 // The same driver in Rust: src/cycle/drive.rs (run_query).
 `timescale 1ns / 1ps
 module tb;
-  localparam MW = 578;
+  parameter MW = 578;
   localparam WB = (MW + 7) / 8;  // bytes per word: word address a starts at byte a * WB
   localparam DEPTH = 1 << 16;
   reg clock = 0;

@@ -1,13 +1,13 @@
-//! The host and memory side of the RTL collision chip ([`e8m15::CollisionChip`]): the
-//! memory image and register writes of one query, a memory model with configurable
-//! timing, the rust-hdl driver that runs a whole query, and the query trace that the
-//! Verilog testbench (`scripts/verilog/chip_tb.v`) prints in the same format, so that the
-//! two simulations are compared line by line.
+//! The host and memory side of the RTL collision chips (`CollisionChip` of
+//! [`crate::rtl::e8m15`] and [`crate::rtl::b32`]): the memory image and register writes of
+//! one query, a memory model with configurable timing, the rust-hdl driver that runs a
+//! whole query, and the query trace that the Verilog testbench (`scripts/verilog/chip_tb.v`)
+//! prints in the same format, so that the two simulations are compared line by line.
 //!
-//! The chip is k = 6, e8m15 ([`Format::REDUCED`]), DOP lanes rounding outward, T.CHECK to
-//! nearest-even: [`CHIP_CONFIG`].
+//! Two chips are built ([`ChipKind`]), both with DOP lanes rounding outward and T.CHECK to
+//! nearest-even: k = 6 in e8m15 ([`CHIP_CONFIG`], small and fast to simulate) and the
+//! papers' k = 24 in binary32 ([`PAPERS_CONFIG`], DATE'05 §4).
 
-use crate::rtl::e8m15::CollisionChip;
 use super::tri_io::{tri_unit_setup_words, LeafIn};
 pub use crate::cycle::drive::{ChipError, ChipTrace, Drive, Reader};
 use crate::cycle::drive::open_vcd;
@@ -21,14 +21,74 @@ use crate::traversal::{Mode, QueryResult};
 use rust_hdl::prelude::*;
 use std::fmt::Write as _;
 
-/// The configuration of the RTL chip.
+/// The configuration of the small RTL chip, `rtl/chip_e8m15_k6.v`.
 pub const CHIP_CONFIG: ChipConfig =
     ChipConfig { k: 6, format: Formats { dop: Format::REDUCED, tri: Format::REDUCED }, dop_rounding: DopRounding::Outward, tri_rounding: Rounding::NearestEven };
-/// Memory word bits (a triangle word; a node word is the low [`NODE_BITS`]).
-pub const MEM_BITS: usize = 578;
-/// Node word bits: leaf bit, 6 distances, two 32-bit fields.
-pub const NODE_BITS: usize = 209;
-const W: usize = 24;
+/// The configuration of the papers' RTL chip, `rtl/chip_b32_k24.v`.
+pub const PAPERS_CONFIG: ChipConfig =
+    ChipConfig { k: 24, format: Formats { dop: Format::BINARY32, tri: Format::BINARY32 }, dop_rounding: DopRounding::Outward, tri_rounding: Rounding::NearestEven };
+
+/// The RTL chips: one `CollisionChip` per configuration, exported to `rtl/<name>.v`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum ChipKind {
+    /// k = 6, e8m15: [`CHIP_CONFIG`].
+    K6E8m15,
+    /// k = 24, binary32: [`PAPERS_CONFIG`].
+    K24B32,
+}
+
+impl ChipKind {
+    pub const ALL: [ChipKind; 2] = [ChipKind::K6E8m15, ChipKind::K24B32];
+
+    pub fn config(self) -> ChipConfig {
+        match self {
+            ChipKind::K6E8m15 => CHIP_CONFIG,
+            ChipKind::K24B32 => PAPERS_CONFIG,
+        }
+    }
+
+    /// The chip built for `cfg`, if any.
+    pub fn of(cfg: &ChipConfig) -> Option<ChipKind> {
+        ChipKind::ALL.into_iter().find(|k| k.config() == *cfg)
+    }
+
+    /// The exported Verilog's file name in rtl/, without `.v`.
+    pub fn name(self) -> &'static str {
+        match self {
+            ChipKind::K6E8m15 => "chip_e8m15_k6",
+            ChipKind::K24B32 => "chip_b32_k24",
+        }
+    }
+
+    /// Memory word bits (the wider of a node word and a triangle word).
+    pub fn word_bits(self) -> usize {
+        crate::memory::Layout::new(&self.config()).word_bits() as usize
+    }
+
+    /// rust-hdl simulates the chip at about this many clocks per second on this project's
+    /// machine (README, `cargo bench --bench chip_sim`): for estimates before a run.
+    pub fn rtl_clocks_per_second(self) -> f64 {
+        match self {
+            ChipKind::K6E8m15 => 14.0,
+            ChipKind::K24B32 => 4.0,
+        }
+    }
+
+    /// The chip's Verilog (top module `top`), identical modules merged.
+    pub fn verilog(self) -> String {
+        std::thread::Builder::new()
+            .stack_size(1 << 30)
+            .spawn(move || {
+                super::verilog::dedup_modules(&match self {
+                    ChipKind::K6E8m15 => generate_verilog(&exported_chip()),
+                    ChipKind::K24B32 => generate_verilog(&papers_chip()),
+                })
+            })
+            .expect("spawn")
+            .join()
+            .expect("chip Verilog")
+    }
+}
 
 /// The host registers' addresses (see [`CollisionChip`]).
 pub mod reg {
@@ -60,30 +120,32 @@ fn put(w: &mut Word, at: usize, bits: usize, v: u64) {
     }
 }
 
-fn node_word(obj: &ObjectImage, n: u32) -> Word {
-    let f = CHIP_CONFIG.format.dop;
-    let mut w = vec![0; MEM_BITS.div_ceil(64)];
+fn node_word(kind: ChipKind, obj: &ObjectImage, n: u32) -> Word {
+    let (f, k) = (kind.config().format.dop, kind.config().k);
+    let w_ = f.width() as usize;
+    let mut w = vec![0; kind.word_bits().div_ceil(64)];
     for (i, &d) in obj.tree.dop(n).iter().enumerate() {
-        put(&mut w, 1 + i * W, W, f.to_bits(d));
+        put(&mut w, 1 + i * w_, w_, f.to_bits(d));
     }
     let (leaf, f0, f1) = match obj.tree.nodes[n as usize] {
         Node::Inner([c0, c1]) => (false, c0, c1),
         Node::Leaf(t) => (true, t, 0),
     };
     put(&mut w, 0, 1, leaf as u64);
-    put(&mut w, 1 + 6 * W, 32, f0 as u64);
-    put(&mut w, 33 + 6 * W, 32, f1 as u64);
+    put(&mut w, 1 + k * w_, 32, f0 as u64);
+    put(&mut w, 33 + k * w_, 32, f1 as u64);
     w
 }
 
-fn tri_word(l: &LeafIn) -> Word {
-    let mut w = vec![0; MEM_BITS.div_ceil(64)];
+fn tri_word(kind: ChipKind, l: &LeafIn) -> Word {
+    let w_ = kind.config().format.tri.width() as usize;
+    let mut w = vec![0; kind.word_bits().div_ceil(64)];
     let fields = l.v.iter().flatten().chain(&l.m).chain([&l.e_lin, &l.e_tr, &l.l_norm]);
     for (i, &x) in fields.enumerate() {
-        put(&mut w, i * W, W, x);
+        put(&mut w, i * w_, w_, x);
     }
-    put(&mut w, 24 * W, 1, l.v_exact as u64);
-    put(&mut w, 24 * W + 1, 1, l.degenerate as u64);
+    put(&mut w, 24 * w_, 1, l.v_exact as u64);
+    put(&mut w, 24 * w_ + 1, 1, l.degenerate as u64);
     w
 }
 
@@ -91,6 +153,7 @@ fn tri_word(l: &LeafIn) -> Word {
 /// triangles, B's nodes, B's triangles) and the register writes, mode last.
 #[derive(Clone, Debug)]
 pub struct QueryImage {
+    pub kind: ChipKind,
     pub memory: Vec<Word>,
     pub writes: Vec<(u32, u32)>,
 }
@@ -99,8 +162,8 @@ impl QueryImage {
     /// The memory port's register is written from `p` ([`crate::cycle::chip::control_writes`]).
     /// Errors if a tree has more nodes than the 16-bit node ids of D_CNTR address, or the
     /// image more words than the 24-bit memory address.
-    pub fn new(a: &ObjectImage, b: &ObjectImage, setup: &HostSetup, lifo: bool, mode: Mode, p: &crate::cycle::Params) -> Result<Self, String> {
-        let f = CHIP_CONFIG.format;
+    pub fn new(kind: ChipKind, a: &ObjectImage, b: &ObjectImage, setup: &HostSetup, lifo: bool, mode: Mode, p: &crate::cycle::Params) -> Result<Self, String> {
+        let f = kind.config().format;
         for (name, o) in [("A", a), ("B", b)] {
             if o.tree.len() > 1 << 16 {
                 return Err(format!(
@@ -111,8 +174,8 @@ impl QueryImage {
         }
         let mut memory = vec![];
         for o in [a, b] {
-            memory.extend((0..o.tree.len() as u32).map(|n| node_word(o, n)));
-            memory.extend(o.tris.iter().map(|t| tri_word(&LeafIn::of(f.tri, t))));
+            memory.extend((0..o.tree.len() as u32).map(|n| node_word(kind, o, n)));
+            memory.extend(o.tris.iter().map(|t| tri_word(kind, &LeafIn::of(f.tri, t))));
         }
         if memory.len() > 1 << 24 {
             return Err(format!("memory image of {} words; the RTL chip addresses 2^24", memory.len()));
@@ -120,14 +183,14 @@ impl QueryImage {
         let mut writes: Vec<(u32, u32)> = dop_unit_setup_words(f.dop, setup).into_iter().map(|(a, d)| (a as u32, d as u32)).collect();
         writes.extend(tri_unit_setup_words(f.tri, setup).into_iter().map(|(a, d)| (reg::TRI_SETUP + a as u32, d as u32)));
         writes.extend(crate::cycle::chip::control_writes(a, b, lifo, mode, p));
-        Ok(QueryImage { memory, writes })
+        Ok(QueryImage { kind, memory, writes })
     }
 
     /// `$readmemh` text: one word per line, most significant digit first.
     pub fn memory_hex(&self) -> String {
         let mut s = String::new();
         for w in &self.memory {
-            let digits = MEM_BITS.div_ceil(4);
+            let digits = self.kind.word_bits().div_ceil(4);
             let hex: String = w.iter().rev().map(|l| format!("{l:016x}")).collect();
             let _ = writeln!(s, "{}", &hex[hex.len() - digits..]);
         }
@@ -154,62 +217,107 @@ fn bits<const B: usize>(w: &Word) -> Bits<B> {
     x
 }
 
+/// What the harness drives and reads of an RTL chip (either [`ChipKind`]'s
+/// `CollisionChip`: the same ports, memory words of their own width).
+pub trait RtlPorts: Block {
+    type Word: Copy;
+    const KIND: ChipKind;
+    fn word(w: &Word) -> Self::Word;
+    fn outputs(&self) -> ChipOut;
+    /// The inputs of one clock; the memory response's data if one is valid.
+    fn set_inputs(&mut self, i: &ChipIn, resp: Option<&Self::Word>);
+    fn set_clock(&mut self, high: bool);
+    /// [`crate::cycle::PROBES`] as the logic shows them now.
+    fn probes(&self) -> Vec<u64>;
+}
+
+macro_rules! rtl_ports {
+    ($fmt:ident, $kind:expr) => {
+        impl<const N: usize, const NP1: usize, const NM1: usize> RtlPorts for crate::rtl::$fmt::CollisionChip<N, NP1, NM1> {
+            type Word = Bits<{ crate::rtl::$fmt::CHIP_WORD_BITS }>;
+            const KIND: ChipKind = $kind;
+
+            fn word(w: &Word) -> Self::Word {
+                bits(w)
+            }
+
+            fn outputs(&self) -> ChipOut {
+                let tag = self.res_tag.val().to_u64();
+                ChipOut {
+                    busy: self.busy.val(),
+                    done: self.done.val(),
+                    overflow: self.overflow.val(),
+                    max_depth: self.max_depth.val().to_u64(),
+                    dop_tests: self.dop_tests.val().to_u64(),
+                    tri_tests: self.tri_tests.val().to_u64(),
+                    node_fetches: self.node_fetches.val().to_u64(),
+                    tri_fetches: self.tri_fetches.val().to_u64(),
+                    mem_req_valid: self.mem_req_valid.val(),
+                    mem_req_addr: self.mem_req_addr.val().to_u64() as u32,
+                    res_valid: self.res_valid.val(),
+                    res_tag: ((tag & 0xffff) as u32, (tag >> 16) as u32),
+                    res_uncertain: self.res_uncertain.val(),
+                }
+            }
+
+            fn set_inputs(&mut self, i: &ChipIn, resp: Option<&Self::Word>) {
+                self.host_we.next = i.host_we;
+                self.host_addr.next = (i.host_addr as u64).into();
+                self.host_data.next = (i.host_data as u64).into();
+                self.start.next = i.start;
+                self.mem_req_ready.next = i.mem_req_ready;
+                self.mem_resp_valid.next = i.mem_resp.is_some();
+                if let Some(w) = resp {
+                    self.mem_resp_data.next = *w;
+                }
+                self.res_ready.next = i.res_ready;
+            }
+
+            fn set_clock(&mut self, high: bool) {
+                self.clock.next = Clock { clk: high };
+            }
+
+            fn probes(&self) -> Vec<u64> {
+                self.probe()
+            }
+        }
+    };
+}
+rtl_ports!(e8m15, ChipKind::K6E8m15);
+rtl_ports!(b32, ChipKind::K24B32);
+
 /// The rust-hdl chip as a [`Clocked`] level: the memory image's words answer its memory
 /// requests; half a clock low (inputs applied, logic settled: what `probe` shows), then the
 /// rising edge.
-pub struct RtlChip<'c, const N: usize, const NP1: usize, const NM1: usize> {
-    pub chip: &'c mut CollisionChip<N, NP1, NM1>,
-    words: Vec<Bits<MEM_BITS>>,
+pub struct RtlChip<'c, C: RtlPorts> {
+    pub chip: &'c mut C,
+    words: Vec<C::Word>,
     err: Option<String>,
 }
 
-impl<'c, const N: usize, const NP1: usize, const NM1: usize> RtlChip<'c, N, NP1, NM1> {
-    pub fn new(chip: &'c mut CollisionChip<N, NP1, NM1>, image: &QueryImage) -> Self {
-        RtlChip { chip, words: image.memory.iter().map(bits::<MEM_BITS>).collect(), err: None }
+impl<'c, C: RtlPorts> RtlChip<'c, C> {
+    pub fn new(chip: &'c mut C, image: &QueryImage) -> Self {
+        assert_eq!(image.kind, C::KIND, "a memory image of one chip run on another");
+        RtlChip { chip, words: image.memory.iter().map(C::word).collect(), err: None }
     }
 }
 
-impl<const N: usize, const NP1: usize, const NM1: usize> Clocked for RtlChip<'_, N, NP1, NM1> {
+impl<C: RtlPorts> Clocked for RtlChip<'_, C> {
     fn outputs(&self) -> ChipOut {
-        let c = &self.chip;
-        let tag = c.res_tag.val().to_u64();
-        ChipOut {
-            busy: c.busy.val(),
-            done: c.done.val(),
-            overflow: c.overflow.val(),
-            max_depth: c.max_depth.val().to_u64(),
-            dop_tests: c.dop_tests.val().to_u64(),
-            tri_tests: c.tri_tests.val().to_u64(),
-            node_fetches: c.node_fetches.val().to_u64(),
-            tri_fetches: c.tri_fetches.val().to_u64(),
-            mem_req_valid: c.mem_req_valid.val(),
-            mem_req_addr: c.mem_req_addr.val().to_u64() as u32,
-            res_valid: c.res_valid.val(),
-            res_tag: ((tag & 0xffff) as u32, (tag >> 16) as u32),
-            res_uncertain: c.res_uncertain.val(),
-        }
+        self.chip.outputs()
     }
 
     fn step(&mut self, i: &ChipIn, probe: bool) -> Option<Vec<u64>> {
-        let c = &mut *self.chip;
-        c.host_we.next = i.host_we;
-        c.host_addr.next = (i.host_addr as u64).into();
-        c.host_data.next = (i.host_data as u64).into();
-        c.start.next = i.start;
-        c.mem_req_ready.next = i.mem_req_ready;
-        c.mem_resp_valid.next = i.mem_resp.is_some();
-        if let Some(w) = i.mem_resp.and_then(|a| self.words.get(a as usize)) {
-            c.mem_resp_data.next = *w;
-        }
-        c.res_ready.next = i.res_ready;
+        let resp = i.mem_resp.and_then(|a| self.words.get(a as usize));
+        self.chip.set_inputs(i, resp);
         let mut probed = None;
         for high in [false, true] {
-            c.clock.next = Clock { clk: high };
-            if !simulate(c, 1000) && self.err.is_none() {
+            self.chip.set_clock(high);
+            if !simulate(self.chip, 1000) && self.err.is_none() {
                 self.err = Some("the rust-hdl logic did not settle".into());
             }
             if !high && probe {
-                probed = Some(c.probe());
+                probed = Some(self.chip.probes());
             }
         }
         probed
@@ -223,13 +331,13 @@ impl<const N: usize, const NP1: usize, const NM1: usize> Clocked for RtlChip<'_,
 /// How a query of `image` is driven: every result read at once unless `reader` says
 /// otherwise.
 pub fn drive(image: &QueryImage, memory: crate::cycle::Memory, reader: Reader, max_cycles: u64) -> Drive {
-    Drive { memory, word_bits: MEM_BITS as u32, reader, words: image.memory.len() as u32, max_cycles }
+    Drive { memory, word_bits: image.kind.word_bits() as u32, reader, words: image.memory.len() as u32, max_cycles }
 }
 
 /// Runs one query on the rust-hdl chip (fresh from `chip_top`, or after a finished
 /// query) with the shared driver ([`crate::cycle::drive::run_query`]).
-pub fn run_query<const N: usize, const NP1: usize, const NM1: usize>(
-    chip: &mut CollisionChip<N, NP1, NM1>,
+pub fn run_query<C: RtlPorts>(
+    chip: &mut C,
     image: &QueryImage,
     d: &Drive,
 ) -> Result<ChipTrace, ChipError> {
@@ -246,6 +354,8 @@ pub struct ChipQuery {
     pub a: &'static str,
     pub b: &'static str,
     pub pose: crate::pose::Pose,
+    /// The chip that runs it.
+    pub chip: ChipKind,
     pub lifo: bool,
     pub mode: Mode,
     pub timing: MemTiming,
@@ -298,9 +408,9 @@ impl ChipQuery {
     }
 
     pub fn prepare(&self) -> Result<PreparedQuery, String> {
-        let chip = crate::query::Chip::new(&query_mesh(self.a)?, &query_mesh(self.b)?, CHIP_CONFIG)?;
+        let chip = crate::query::Chip::new(&query_mesh(self.a)?, &query_mesh(self.b)?, self.chip.config())?;
         let golden_all = chip.query(&self.pose, Mode::All, crate::traversal::Traversal::Fifo);
-        let image = QueryImage::new(&chip.a, &chip.b, &chip.setup(&self.pose), self.lifo, self.mode, &self.params())?;
+        let image = QueryImage::new(self.chip, &chip.a, &chip.b, &chip.setup(&self.pose), self.lifo, self.mode, &self.params())?;
         Ok(PreparedQuery { chip, golden_all, image })
     }
 }
@@ -308,30 +418,21 @@ impl ChipQuery {
 /// The exported chip's queue: `2^QUEUE_BITS` entries (1,024: a breadth-first (FIFO)
 /// traversal of a few hundred triangles needs about that many; LIFO a few dozen).
 pub const QUEUE_BITS: usize = 10;
-/// The exported chip, and the one every RTL run uses.
-pub type ExportedChip = CollisionChip<QUEUE_BITS, { QUEUE_BITS + 1 }, { QUEUE_BITS - 1 }>;
-/// The exported chip's file name.
-pub const EXPORT_NAME: &str = "chip_e8m15_k6";
+/// The exported small chip (k = 6, e8m15), the one most RTL runs use.
+pub type ExportedChip = crate::rtl::e8m15::CollisionChip<QUEUE_BITS, { QUEUE_BITS + 1 }, { QUEUE_BITS - 1 }>;
+/// The exported papers' chip (k = 24, binary32).
+pub type PapersChip = crate::rtl::b32::CollisionChip<QUEUE_BITS, { QUEUE_BITS + 1 }, { QUEUE_BITS - 1 }>;
 
-/// The exported chip, ready to simulate (inputs claimed; build it on a thread with a big
-/// stack: TRI_UNIT is large).
+/// The exported small chip, ready to simulate (inputs claimed; build it on a thread with a
+/// big stack: TRI_UNIT is large).
 pub fn exported_chip() -> ExportedChip {
     crate::rtl::e8m15::chip_top(CHIP_CONFIG.dop_rounding.op(), CHIP_CONFIG.tri_rounding)
 }
 
-/// The chip's Verilog (top module `top`), identical modules merged.
-pub fn chip_verilog() -> String {
-    std::thread::Builder::new()
-        .stack_size(1 << 30)
-        .spawn(|| {
-            super::verilog::dedup_modules(&crate::rtl::e8m15::verilog_chip::<QUEUE_BITS, { QUEUE_BITS + 1 }, { QUEUE_BITS - 1 }>(
-                CHIP_CONFIG.dop_rounding.op(),
-                CHIP_CONFIG.tri_rounding,
-            ))
-        })
-        .expect("spawn")
-        .join()
-        .expect("chip Verilog")
+/// The exported papers' chip, ready to simulate (on a thread with a big stack: its DOP
+/// unit alone is about 2 MB).
+pub fn papers_chip() -> PapersChip {
+    crate::rtl::b32::chip_top(PAPERS_CONFIG.dop_rounding.op(), PAPERS_CONFIG.tri_rounding)
 }
 
 /// The RTL query set. Small (rust-hdl in lockstep with the cycle model, in `cargo test`):
@@ -350,6 +451,7 @@ pub fn queries() -> Vec<ChipQuery> {
         a,
         b: a,
         pose,
+        chip: ChipKind::K6E8m15,
         lifo,
         mode,
         timing: MemTiming { latency, interval, bus_bits: None },
@@ -390,11 +492,19 @@ pub fn queries() -> Vec<ChipQuery> {
         ChipQuery { prefetch: 3, outstanding: 4, issue_spacing: 1, credit: 24, ..q("bunny_fifo_prefetch", "bunny-patch:12", patch, false, Mode::First, 8, 1) },
         ChipQuery { prefetch: 14, outstanding: 16, issue_spacing: 1, credit: 48, ..big("big_sphere_lifo_prefetch", "sphere:320", big_spheres, true, Mode::All, 8, 1, 1) },
         ChipQuery { prefetch: 14, outstanding: 16, ..big("big_sphere_fifo_prefetch", "sphere:200", big_spheres, false, Mode::All, 8, 1, 1) },
+        // the papers' chip (k = 24, binary32): the root test only (Icarus), a short
+        // first-hit query at full speed (rust-hdl), whole queries at full speed and at the
+        // reset point
+        ChipQuery { chip: ChipKind::K24B32, ..q("k24_apart_lifo_first", "sphere:12", Pose::new(10.0, 20.0, 30.0, 3.0, 0.1, 0.0), true, Mode::First, 1, 1) },
+        ChipQuery { chip: ChipKind::K24B32, prefetch: 3, outstanding: 4, issue_spacing: 1, credit: 24, ..q("k24_sphere_lifo_first", "sphere:12", spheres, true, Mode::First, 8, 1) },
+        ChipQuery { chip: ChipKind::K24B32, prefetch: 14, outstanding: 16, issue_spacing: 1, credit: 48, ..big("k24_big_sphere_lifo_prefetch", "sphere:320", big_spheres, true, Mode::All, 8, 1, 1) },
+        ChipQuery { chip: ChipKind::K24B32, prefetch: 14, outstanding: 16, issue_spacing: 1, credit: 63, ..big("k24_big_sphere_fifo_prefetch", "sphere:200", big_spheres, false, Mode::All, 8, 1, 1) },
+        ChipQuery { chip: ChipKind::K24B32, ..big("k24_big_patch_lifo_first", "bunny-patch:300", patch, true, Mode::First, 2, 1, 1) },
     ]
 }
 
 /// Writes `<dir>/<query>.mem` and `<dir>/<query>.host` for every query of [`queries`] and
-/// `<dir>/queries.txt` (`name latency interval reader-period` per line), the inputs of
+/// `<dir>/queries.txt` (`name latency interval reader-period chip` per line), the inputs of
 /// scripts/run-chip.sh. The expected traces (`<query>.expect`) are the rust-hdl chip's,
 /// written by `CCHIP_BLESS=1 cargo test --release --test rtl_chip`.
 pub fn write_vectors(dir: &std::path::Path) -> Result<Vec<String>, String> {
@@ -408,7 +518,7 @@ pub fn write_vectors(dir: &std::path::Path) -> Result<Vec<String>, String> {
             std::fs::write(&path, text).map_err(|e| format!("{}: {e}", path.display()))?;
             written.push(path.display().to_string());
         }
-        let _ = writeln!(list, "{} {} {} {}", q.name, q.timing.latency, q.timing.interval, q.reader.period);
+        let _ = writeln!(list, "{} {} {} {} {}", q.name, q.timing.latency, q.timing.interval, q.reader.period, q.chip.name());
     }
     let path = dir.join("queries.txt");
     std::fs::write(&path, list).map_err(|e| format!("{}: {e}", path.display()))?;
@@ -420,8 +530,8 @@ pub fn write_vectors(dir: &std::path::Path) -> Result<Vec<String>, String> {
 /// [`crate::cycle::PROBES`], one scope per unit under `chip`, one time unit per clock). For
 /// GTKWave with scripts/gtkw/chip_e8m15_k6.gtkw. (A VCD of every rust-hdl signal would be
 /// about 600 kB per clock, mostly T.CHECK's.)
-pub fn run_query_vcd<const N: usize, const NP1: usize, const NM1: usize>(
-    chip: &mut CollisionChip<N, NP1, NM1>,
+pub fn run_query_vcd<C: RtlPorts>(
+    chip: &mut C,
     image: &QueryImage,
     d: &Drive,
     path: &std::path::Path,
@@ -438,16 +548,16 @@ pub fn run_query_vcd<const N: usize, const NP1: usize, const NM1: usize>(
     Ok(trace)
 }
 
-/// Whether the RTL chip runs a query of this configuration, traversal and cycle-model
+/// Which RTL chip runs a query of this configuration, traversal and cycle-model
 /// parameters, and in which order (true: LIFO); otherwise what to change.
-pub fn rtl_order(cfg: &ChipConfig, traversal: crate::traversal::Traversal, p: &crate::cycle::Params) -> Result<bool, String> {
+pub fn rtl_order(cfg: &ChipConfig, traversal: crate::traversal::Traversal, p: &crate::cycle::Params) -> Result<(ChipKind, bool), String> {
     use crate::traversal::Traversal;
-    if *cfg != CHIP_CONFIG {
+    let Some(kind) = ChipKind::of(cfg) else {
         return Err(format!(
-            "the RTL chip is built for k = 6, format reduced (e8m15), outward DOP rounding; this scene has k = {}, format {}, dop_rounding {}: set [chip] k = 6, format = \"reduced\", dop_rounding = \"outward\"",
-            cfg.k, cfg.format, cfg.dop_rounding
+            "the RTL chips are built for k = 6 in format reduced (e8m15) and k = 24 in binary32, both with outward DOP rounding and nearest-even T.CHECK; this scene has k = {}, format {}, dop_rounding {}, tri_rounding {:?}: set [chip] k = 6, format = \"reduced\" or k = 24, format = \"binary32\", with dop_rounding = \"outward\"",
+            cfg.k, cfg.format, cfg.dop_rounding, cfg.tri_rounding
         ));
-    }
+    };
     let rtl = crate::cycle::Params {
         memory: p.memory,
         prefetch: p.prefetch,
@@ -467,15 +577,11 @@ pub fn rtl_order(cfg: &ChipConfig, traversal: crate::traversal::Traversal, p: &c
         ));
     }
     match traversal {
-        Traversal::Lifo => Ok(true),
-        Traversal::Fifo => Ok(false),
+        Traversal::Lifo => Ok((kind, true)),
+        Traversal::Fifo => Ok((kind, false)),
         t => Err(format!("the RTL chip's D_CNTR runs the fifo or lifo traversal, not {t:?}: set [query] traversal")),
     }
 }
-
-/// rust-hdl simulates the chip at about this many clocks per second on this project's
-/// machine (README, `cargo bench --bench chip_sim`: 13): for estimates before a run.
-pub const RTL_CLOCKS_PER_SECOND: f64 = 14.0;
 
 /// Runs one pose on the rust-hdl chip in lockstep with the cycle model (on a thread with
 /// the big stack the RTL needs): every output and traversal signal equal after every clock.
@@ -489,18 +595,23 @@ pub fn cross_check(
     p: crate::cycle::Params,
     max_cycles: u64,
 ) -> Result<ChipTrace, String> {
-    let lifo = rtl_order(&chip.cfg, traversal, &p)?;
+    let (kind, lifo) = rtl_order(&chip.cfg, traversal, &p)?;
     let setup = chip.setup(pose);
-    let image = QueryImage::new(&chip.a, &chip.b, &setup, lifo, mode, &p)?;
+    let image = QueryImage::new(kind, &chip.a, &chip.b, &setup, lifo, mode, &p)?;
     let d = drive(&image, p.memory, Reader::default(), max_cycles);
+    fn lockstep<C: RtlPorts>(mut rtl: C, model: crate::cycle::chip::Chip, image: &QueryImage, d: &Drive) -> Result<ChipTrace, String> {
+        let mut ls = crate::cycle::drive::Lockstep::new(RtlChip::new(&mut rtl, image), model, ("rust-hdl", "cycle model"));
+        crate::cycle::drive::run_query(&mut ls, &image.writes, d, true, |_, _| Ok(()), None).map_err(|e| e.0)
+    }
     std::thread::scope(|s| {
         std::thread::Builder::new()
             .stack_size(1 << 30)
             .spawn_scoped(s, || {
-                let mut rtl = exported_chip();
                 let model = crate::cycle::chip::Chip::new(&chip.cfg, p, &chip.a, &chip.b, &setup, false)?;
-                let mut ls = crate::cycle::drive::Lockstep::new(RtlChip::new(&mut rtl, &image), model, ("rust-hdl", "cycle model"));
-                crate::cycle::drive::run_query(&mut ls, &image.writes, &d, true, |_, _| Ok(()), None).map_err(|e| e.0)
+                match kind {
+                    ChipKind::K6E8m15 => lockstep(exported_chip(), model, &image, &d),
+                    ChipKind::K24B32 => lockstep(papers_chip(), model, &image, &d),
+                }
             })
             .map_err(|e| format!("cannot start the RTL simulation thread: {e}"))?
             .join()
@@ -523,9 +634,14 @@ mod tests {
         let f = CHIP_CONFIG.format.dop;
         let w = &p.image.memory[0];
         let field = |w: &Word, at: usize, bits: usize| (0..bits).fold(0u64, |v, k| v | (w[(at + k) / 64] >> ((at + k) % 64) & 1) << k);
+        // hand-derived widths: 24-bit words, 1 + 6 * 24 + 64 node bits, 24 * 24 + 2 triangle bits
+        const W: usize = 24;
+        const NODE_BITS: usize = 209;
+        const MEM_BITS: usize = 578;
         assert_eq!(W, f.width() as usize);
-        assert_eq!(NODE_BITS as u32, crate::memory::Layout::new(&CHIP_CONFIG).node_bits);
-        assert_eq!(MEM_BITS as u32, crate::memory::Layout::new(&CHIP_CONFIG).tri_bits);
+        assert_eq!((ChipKind::K6E8m15.word_bits(), crate::rtl::e8m15::CHIP_WORD_BITS), (MEM_BITS, MEM_BITS));
+        // the papers' chip: 1 + 24 * 32 + 64 node bits, wider than its 24 * 32 + 2 triangle bits
+        assert_eq!((ChipKind::K24B32.word_bits(), crate::rtl::b32::CHIP_WORD_BITS), (833, 833));
         assert!(p.image.memory[..a.tree.len()].iter().all(|w| field(w, NODE_BITS, 64) == 0 && field(w, NODE_BITS + 64, MEM_BITS - NODE_BITS - 64) == 0));
         assert_eq!(field(w, 0, 1), 0, "the root is inner");
         assert_eq!(field(w, 1 + 2 * W, W), f.to_bits(a.tree.dop(0)[2]));
@@ -550,7 +666,7 @@ mod tests {
         let big = crate::mesh::builtin("sphere:40000").unwrap().triangles_f64();
         let chip = crate::query::Chip::new(&big, &big[..1], CHIP_CONFIG).unwrap();
         let setup = chip.setup(&crate::pose::Pose::new(0.0, 0.0, 0.0, 0.0, 0.0, 0.0));
-        let e = QueryImage::new(&chip.a, &chip.b, &setup, true, Mode::All, &crate::cycle::Params::RTL).unwrap_err();
+        let e = QueryImage::new(ChipKind::K6E8m15, &chip.a, &chip.b, &setup, true, Mode::All, &crate::cycle::Params::RTL).unwrap_err();
         assert!(e.contains("16 bits"), "{e}");
     }
 }

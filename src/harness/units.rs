@@ -368,13 +368,15 @@ fn dop_unit_vectors(name: &str, k: usize, fmt: Format) -> String {
     out
 }
 
-/// Writes `<dir>/<unit>.v` for every unit and the chip's `<dir>/chip_e8m15_k6.v`; returns
-/// the paths written.
+/// Writes `<dir>/<unit>.v` for every unit and each chip's `<dir>/chip_<format>_k<k>.v`
+/// ([`ChipKind`](super::chip_io::ChipKind)); returns the paths written.
 pub fn write_verilog(dir: &Path) -> std::io::Result<Vec<String>> {
     let mut written = write_all(dir, "v", all().into_iter().map(|u| (u.name, u.verilog)).collect(), verilog_of)?;
-    let p = dir.join(format!("{}.v", super::chip_io::EXPORT_NAME));
-    std::fs::write(&p, super::chip_io::chip_verilog())?;
-    written.push(p.display().to_string());
+    for kind in super::chip_io::ChipKind::ALL {
+        let p = dir.join(format!("{}.v", kind.name()));
+        std::fs::write(&p, kind.verilog())?;
+        written.push(p.display().to_string());
+    }
     Ok(written)
 }
 
@@ -456,6 +458,15 @@ mod tests {
                 assert!(!float.contains(&tok), "{name}: float construct {tok}");
             }
             assert!(vec.contains(&format!("// latency: {latency}\n")), "{name}");
+        }
+        // the chips as checked in (CI checks that rtl/ is what the code writes)
+        for kind in super::super::chip_io::ChipKind::ALL {
+            let p = Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("rtl/{}.v", kind.name()));
+            let v = std::fs::read_to_string(&p).unwrap_or_else(|e| panic!("{}: {e}", p.display()));
+            assert_eq!(v.matches("module top(").count(), 1, "{}", kind.name());
+            for tok in v.split(|c: char| !(c.is_alphanumeric() || c == '_' || c == '$')) {
+                assert!(!float.contains(&tok), "{}: float construct {tok}", kind.name());
+            }
         }
     }
 }

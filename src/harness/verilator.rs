@@ -1,6 +1,6 @@
 //! The exported chip under Verilator as a cross-check level of a scene: the binary is built
 //! on demand by scripts/run-chip.sh (from this build's chip Verilog, cached under
-//! target/verilog/verilator/chip while nothing changed), each pose's memory image and
+//! target/verilog/verilator/<chip> while nothing changed), each pose's memory image and
 //! register writes go to files, and scripts/verilog/chip_tb.v's `+ports` lines (every output
 //! port whenever one changes) are compared with the cycle model's, clock by clock.
 
@@ -118,16 +118,16 @@ pub fn check_size(chip: &crate::query::Chip) -> Result<(), String> {
     Ok(())
 }
 
-/// Builds (or finds built) the exported chip's Verilator binary from this build's chip
-/// Verilog; errors say what is missing.
-pub fn chip_binary() -> Result<PathBuf, String> {
+/// Builds (or finds built) the Verilator binary of the exported chip `kind` from this
+/// build's chip Verilog; errors say what is missing.
+pub fn chip_binary(kind: chip_io::ChipKind) -> Result<PathBuf, String> {
     let script = root().join("scripts/run-chip.sh");
     if !script.is_file() {
         return Err(format!("the Verilog cross-check needs the collision-chip repository this binary was built from ({} is missing)", script.display()));
     }
     let dir = root().join("target/cchip");
-    let v = dir.join(format!("{}.v", chip_io::EXPORT_NAME));
-    let text = chip_io::chip_verilog();
+    let v = dir.join(format!("{}.v", kind.name()));
+    let text = kind.verilog();
     // rewritten only when it changed, so that the build's inputs keep their times
     if std::fs::read_to_string(&v).ok().as_deref() != Some(&text) {
         std::fs::create_dir_all(&dir).and_then(|()| std::fs::write(&v, &text)).map_err(|e| format!("{}: {e}", v.display()))?;

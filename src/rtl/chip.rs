@@ -3,14 +3,18 @@
 //! `chip!`. Host side, memory model and drivers: [`chip_io`](crate::harness::chip_io); cycle
 //! semantics: docs/ARCHITECTURE.md, "Cycle semantics".
 
-/// Stamps out `CollisionChip<N, NP1, NM1>` (k = 6) in the calling module (which must also hold
-/// `DopUnit6` and `TriUnit`). Arguments: `W` word width, `NW` node-word bits
-/// (`1 + 6 W + 64`), `MW` memory-word bits (the triangle word, `24 W + 2`).
+/// Stamps out `CollisionChip<N, NP1, NM1>` in the calling module (which must also hold the
+/// DOP unit `Dop` and `TriUnit`). Arguments: `K` the DOP's k, `Dop` its unit (`DopUnit6`
+/// for k = 6), `W` word width, `NW` node-word bits (`1 + K W + 64`), `MW` memory-word bits
+/// (the wider of a node word and a triangle word, `24 W + 2`: [`crate::memory::Layout`]).
 macro_rules! chip {
-    ($W:tt, $NW:tt, $MW:tt) => {
+    ($K:tt, $Dop:ident, $W:tt, $NW:tt, $MW:tt) => {
         declare_sync_fifo!(LeafFifo, Bits<32>, $crate::rtl::LEAF_FIFO, 1);
 
-        /// The collision chip with k = 6: D_CNTR (DATE'05 §4.3) drives the DOP unit (Eq. 10)
+        /// The chip's memory word bits (`mem_resp_data`).
+        pub const CHIP_WORD_BITS: usize = $MW;
+
+        /// The collision chip with a k-DOP: D_CNTR (DATE'05 §4.3) drives the DOP unit (Eq. 10)
         /// over pairs of node words from memory, overlapping leaf pairs go to TRI_UNIT
         /// (§4.2), and the host reads the intersecting and the uncertain triangle pairs.
         /// `2^N` queue entries (`NP1 = N + 1`, `NM1 = N - 1`).
@@ -19,7 +23,7 @@ macro_rules! chip {
         ///
         /// * host registers: in `host_we`, `host_addr[10]`, `host_data[32]`, written on
         ///   the rising edge. `0x000 + a`: the DOP unit's setup word `a` (C, c, D.KLMSEL
-        ///   control, [`DopUnit6`]); `0x100 + a`: TRI_UNIT's (frame maps, bounds, eta,
+        ///   control, the DOP unit's); `0x100 + a`: TRI_UNIT's (frame maps, bounds, eta,
         ///   [`TriUnit`]); `0x120`: mode, bit 0 LIFO, bit 1 first hit; `0x121`: the root
         ///   pair, A's node in bits 15:0, B's in 31:16; `0x122 .. 0x125`: the word
         ///   addresses of A's node 0, B's node 0, A's triangle 0, B's triangle 0; `0x126`:
@@ -196,7 +200,7 @@ macro_rules! chip {
             c_one16: Constant<Bits<16>>,
             c_one32: Constant<Bits<32>>,
             // ---- the DOP unit and what travels beside it
-            dop: DopUnit6,
+            dop: $Dop,
             side: $crate::rtl::delay::Delay<Bits<99>, { $crate::rtl::DOP_LATENCY }>,
             issue: Signal<Local, Bit>,
             last_issue: DFF<Bit>,
@@ -397,7 +401,7 @@ macro_rules! chip {
                     accept: Default::default(),
                     c_one16: Constant::new(1.into()),
                     c_one32: Constant::new(1.into()),
-                    dop: DopUnit6::new(dop),
+                    dop: $Dop::new(dop),
                     side: Default::default(),
                     issue: Default::default(),
                     last_issue: Default::default(),
@@ -760,7 +764,7 @@ macro_rules! chip {
                     & !self.need_na.val() & !self.need_nb.val() & !(self.last_issue.q.val() & !self.port_one.q.val())
                     & (self.credit.val() < self.credit_lim.val());
                 self.last_issue.d.next = self.issue.val();
-                for i in 0..6 {
+                for i in 0..$K {
                     self.dop.d[i].next = self.nb_in.val().get_bits::<$W>(1 + i * $W);
                     self.dop.e[i].next = self.na_in.val().get_bits::<$W>(1 + i * $W);
                 }
@@ -771,11 +775,11 @@ macro_rules! chip {
                     | (bit_cast::<99, 16>(self.cur_b.val()) << 16)
                     | (bit_cast::<99, 1>(self.cur_flip.val()) << 32)
                     | (bit_cast::<99, 1>(self.na_in.val().get_bits::<1>(0)) << 33)
-                    | (bit_cast::<99, 16>(self.na_in.val().get_bits::<16>(1 + 6 * $W)) << 34)
-                    | (bit_cast::<99, 16>(self.na_in.val().get_bits::<16>(33 + 6 * $W)) << 50)
+                    | (bit_cast::<99, 16>(self.na_in.val().get_bits::<16>(1 + $K * $W)) << 34)
+                    | (bit_cast::<99, 16>(self.na_in.val().get_bits::<16>(33 + $K * $W)) << 50)
                     | (bit_cast::<99, 1>(self.nb_in.val().get_bits::<1>(0)) << 66)
-                    | (bit_cast::<99, 16>(self.nb_in.val().get_bits::<16>(1 + 6 * $W)) << 67)
-                    | (bit_cast::<99, 16>(self.nb_in.val().get_bits::<16>(33 + 6 * $W)) << 83);
+                    | (bit_cast::<99, 16>(self.nb_in.val().get_bits::<16>(1 + $K * $W)) << 67)
+                    | (bit_cast::<99, 16>(self.nb_in.val().get_bits::<16>(33 + $K * $W)) << 83);
                 // an issue takes the pair's fetched words from their FIFOs and moves to the
                 // entry's second pair, or to the next entry
                 if self.issue.val() {
@@ -1099,11 +1103,6 @@ macro_rules! chip {
         pub fn chip_top<const N: usize, const NP1: usize, const NM1: usize>(dop: Rounding, tri: Rounding) -> CollisionChip<N, NP1, NM1> {
             top_level!(CollisionChip::<N, NP1, NM1>::new(dop, tri); clock, host_we, host_addr, host_data, start,
                 mem_req_ready, mem_resp_valid, mem_resp_data, res_ready)
-        }
-
-        /// Verilog of the chip with `2^N` queue entries (top module `top`).
-        pub fn verilog_chip<const N: usize, const NP1: usize, const NM1: usize>(dop: Rounding, tri: Rounding) -> String {
-            generate_verilog(&chip_top::<N, NP1, NM1>(dop, tri))
         }
     };
 }

@@ -131,6 +131,8 @@ macro_rules! fp_format {
 pub mod b32 {
     fp_format!(Format::BINARY32, 32, 31, 8, 23, 24, 26, 27, 28, 48,
         norm_p(8, 16, 20, 22, 23), norm_p3(11, 19, 23, 25, 26));
+    // the papers' chip: node word 1 + 24 * 32 + 64 bits (wider than a triangle word, 24 * 32 + 2)
+    crate::rtl::chip::chip!(24, DopUnit24, 32, 833, 833);
 }
 
 /// Units for e8m15 (`Format::REDUCED`).
@@ -138,5 +140,5 @@ pub mod e8m15 {
     fp_format!(Format::REDUCED, 24, 23, 8, 15, 16, 18, 19, 20, 32,
         norm_p(0, 8, 12, 14, 15), norm_p3(3, 11, 15, 17, 18));
     // node word 1 + 6 * 24 + 64 bits, triangle word 24 * 24 + 2
-    crate::rtl::chip::chip!(24, 209, 578);
+    crate::rtl::chip::chip!(6, DopUnit6, 24, 209, 578);
 }

@@ -541,17 +541,20 @@ mod tests {
         assert_eq!(s.outputs.waveforms.unwrap().window, 5..6);
         let e = Scene::parse(&format!("{base}[memory]\nlatncy = 2\n"), "s").unwrap_err();
         assert!(e.starts_with("s:8:"), "{e}");
+        use crate::harness::chip_io::ChipKind;
         let rtl = Scene::parse(include_str!("../../vectors/scenes/rtl_spheres.toml"), "rtl_spheres").unwrap();
-        assert_eq!(crate::harness::chip_io::rtl_order(&rtl.cfg, rtl.traversal, &rtl.params), Ok(true));
-        let e = crate::harness::chip_io::rtl_order(&ChipConfig::default(), Traversal::Lifo, &rtl.params).unwrap_err();
-        assert!(e.contains("k = 6"), "{e}");
+        assert_eq!(crate::harness::chip_io::rtl_order(&rtl.cfg, rtl.traversal, &rtl.params), Ok((ChipKind::K6E8m15, true)));
+        // the default configuration is the papers' chip
+        assert_eq!(crate::harness::chip_io::rtl_order(&ChipConfig::default(), Traversal::Fifo, &rtl.params), Ok((ChipKind::K24B32, false)));
+        let e = crate::harness::chip_io::rtl_order(&ChipConfig { k: 14, ..ChipConfig::default() }, Traversal::Lifo, &rtl.params).unwrap_err();
+        assert!(e.contains("k = 6 in format reduced (e8m15) and k = 24 in binary32") && e.contains("k = 14"), "{e}");
         let e = crate::harness::chip_io::rtl_order(&rtl.cfg, Traversal::List, &rtl.params).unwrap_err();
         assert!(e.contains("fifo or lifo"), "{e}");
         let e = crate::harness::chip_io::rtl_order(&rtl.cfg, Traversal::Lifo, &Params { tri_fifo: 4, ..rtl.params }).unwrap_err();
         assert!(e.contains("[timing]"), "{e}");
         // the memory port's register: within its fields, and no further
         let port = Params { prefetch: 14, outstanding: 16, credit: 63, issue_spacing: 1, ..rtl.params };
-        assert_eq!(crate::harness::chip_io::rtl_order(&rtl.cfg, Traversal::Lifo, &port), Ok(true));
+        assert_eq!(crate::harness::chip_io::rtl_order(&rtl.cfg, Traversal::Lifo, &port), Ok((ChipKind::K6E8m15, true)));
         for p in [Params { prefetch: 15, ..port }, Params { outstanding: 17, ..port }, Params { credit: 64, ..port }] {
             let e = crate::harness::chip_io::rtl_order(&rtl.cfg, Traversal::Lifo, &p).unwrap_err();
             assert!(e.contains("at most 14 pairs with at most 16 requests outstanding and a credit of at most 63"), "{e}");

@@ -72,9 +72,8 @@ impl<'s> Prepared<'s> {
                 scene.traversal
             )));
         }
-        if plan.cross_check.is_some() {
-            chip_io::rtl_order(&scene.cfg, scene.traversal, &scene.params).map_err(named)?;
-        }
+        // the RTL chip a cross-check runs, and its order
+        let rtl = plan.cross_check.map(|_| chip_io::rtl_order(&scene.cfg, scene.traversal, &scene.params)).transpose().map_err(named)?;
         if let Some(w) = scene.outputs.waveforms.as_ref().filter(|w| w.dir.is_file()) {
             return Err(named(format!("waveforms: {} is a file; give a directory for the VCD files", w.dir.display())));
         }
@@ -82,14 +81,14 @@ impl<'s> Prepared<'s> {
         let (a, b) = (ma.triangles_f64(), mb.triangles_f64());
         let chip = Chip::new(&a, &b, scene.cfg).map_err(named)?;
         scene.poses.iter().try_for_each(|sp| chip.check_pose(&sp.pose)).map_err(named)?;
-        if plan.cross_check.is_some() {
+        if let Some((kind, lifo)) = rtl {
             // the images the RTL reads: node ids and memory words within its widths
-            chip_io::QueryImage::new(&chip.a, &chip.b, &chip.setup(&scene.poses[0].pose), true, scene.mode, &scene.params).map_err(named)?;
+            chip_io::QueryImage::new(kind, &chip.a, &chip.b, &chip.setup(&scene.poses[0].pose), lifo, scene.mode, &scene.params).map_err(named)?;
         }
         let verilog = match plan.cross_check {
             Some(CrossCheck::Verilog) => {
                 verilator::check_size(&chip).map_err(named)?;
-                Some(verilator::chip_binary().map_err(named)?)
+                Some(verilator::chip_binary(rtl.expect("checked above").0).map_err(named)?)
             }
             _ => None,
         };
@@ -184,12 +183,13 @@ impl<'s> Prepared<'s> {
         let cross_checked = match plan.cross_check {
             None => None,
             Some(CrossCheck::Rtl) => {
-                let hours = trace.cycles as f64 / chip_io::RTL_CLOCKS_PER_SECOND / 3600.0;
+                let speed = chip_io::ChipKind::of(&chip.cfg).map_or(1.0, |k| k.rtl_clocks_per_second());
+                let hours = trace.cycles as f64 / speed / 3600.0;
                 if hours > 0.5 {
                     return Err(format!(
                         "pose {i}: the rust-hdl cross-check would take about {hours:.1} hours ({} clocks at ~{} clocks/s); use smaller meshes (e.g. vectors/scenes/rtl_spheres.toml), cross_check = \"verilog\", or drop cross_check",
                         trace.cycles,
-                        chip_io::RTL_CLOCKS_PER_SECOND
+                        speed
                     ));
                 }
                 let rtl = chip_io::cross_check(chip, &sp.pose, s.mode, s.traversal, s.params, 2 * trace.cycles + 1000)
@@ -202,7 +202,8 @@ impl<'s> Prepared<'s> {
             }
             Some(CrossCheck::Verilog) => {
                 let bin = self.verilog.as_deref().expect("built in Prepared::new");
-                let image = chip_io::QueryImage::new(&chip.a, &chip.b, &setup, lifo, s.mode, &s.params).map_err(|e| format!("pose {i}: {e}"))?;
+                let (kind, _) = chip_io::rtl_order(&chip.cfg, s.traversal, &s.params).map_err(|e| format!("pose {i}: {e}"))?;
+                let image = chip_io::QueryImage::new(kind, &chip.a, &chip.b, &setup, lifo, s.mode, &s.params).map_err(|e| format!("pose {i}: {e}"))?;
                 let dir = verilator::work_dir().join(format!("pose{i}"));
                 verilator::cross_check(bin, &dir, &image, s.params.memory, 2 * trace.cycles + 1000, &ports, &trace)
                     .map_err(|e| format!("pose {i}: {e}"))?;
