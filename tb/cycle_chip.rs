@@ -66,8 +66,10 @@ fn no_stale_expected_trace() {
     }
 }
 
-/// The large queries do what they are in the set for: 10^4 cycles and more, results
-/// that back-pressure the traversal, and sure hits mixed with uncertain pairs.
+/// The large queries do what they are in the set for: too long for rust-hdl (more than
+/// 500 s at its speed on their chip: 10^4 cycles and more on the k = 6 chip, 2 * 10^3 on
+/// the k = 24 one), results that back-pressure the traversal, and sure hits mixed with
+/// uncertain pairs.
 #[test]
 fn large_queries_cover_what_they_claim() {
     let large: Vec<_> = queries().into_iter().filter(|q| q.large).collect();
@@ -78,7 +80,8 @@ fn large_queries_cover_what_they_claim() {
         let params = q.params();
         let (tr, st) = cycle::run_query(&p.chip, &p.chip.setup(&q.pose), q.lifo, q.mode, params, q.reader, MAX_CYCLES, counted()).unwrap();
         let st = st.expect("counted");
-        assert!((10_000..=200_000).contains(&tr.cycles), "{}: {} cycles", q.name, tr.cycles);
+        let rust_hdl_seconds = tr.cycles as f64 / q.chip.rtl_clocks_per_second();
+        assert!(rust_hdl_seconds > 500.0 && tr.cycles <= 200_000, "{}: {} cycles", q.name, tr.cycles);
         back_pressure |= st.back_pressure > 0 && st.result_wait > 0;
         let (hits, unc) = tr.pairs();
         mixed |= !hits.is_empty() && !unc.is_empty();

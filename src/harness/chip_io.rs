@@ -367,8 +367,8 @@ pub struct ChipQuery {
     pub outstanding: u32,
     pub issue_spacing: u32,
     pub credit: u32,
-    /// Too long for rust-hdl (10^4 cycles and more): its trace comes from the cycle
-    /// model, and Verilator must reproduce it.
+    /// Too long for rust-hdl (more than 500 s at [`ChipKind::rtl_clocks_per_second`]): its
+    /// trace comes from the cycle model, and Verilator must reproduce it.
     pub large: bool,
 }
 
