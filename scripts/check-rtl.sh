@@ -1,13 +1,17 @@
 #!/usr/bin/env bash
 # Runs every exported unit rtl/<unit>.v against vectors/<unit>.hex under Icarus Verilog and
 # Verilator (the chips, rtl/chip_*.v: whole queries by scripts/run-chip.sh, under Icarus only
-# the short ones of ICARUS_CHIP_QUERIES, a list of `chip:query`), then synthesizes all of them with Yosys and prints
-# the cells per unit (and fails if docs/figures/area_cells.csv, the area study, disagrees).
+# the short ones of ICARUS_CHIP_QUERIES, a list of `chip:query`) and synthesizes each with
+# Yosys (scripts/synth.sh), printing the cells per unit (and failing if
+# docs/figures/area_cells.csv, the area study, disagrees).
 # Exits non-zero on any mismatch, missing vector file, or synthesis failure.
 # Usage: scripts/check-rtl.sh [--no-synth] [unit ...]    (default: every rtl/*.v)
 # SYNTH_SKIP="unit ..." leaves units out of the Yosys step (their simulations still run).
-# JOBS=N simulations at a time (default: the number of cores); each writes its own build
-# directory under target/verilog/<simulator>/<unit>/.
+# JOBS=N jobs at a time (default: the number of cores). Simulations and syntheses share the
+# pool, the chips' long ones first (the k = 24 chip's Yosys run takes about 6 minutes, the
+# k = 6 chip's Verilator build and queries about 7), so that the short ones fill in behind
+# them; each writes its own directory under target/verilog/<simulator>/<unit>/ or
+# target/synth/<unit>/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -47,42 +51,60 @@ run_one() { # unit simulator (its wall time, build and run, into $out_dir/<unit>
   echo "$status" >"$out_dir/$u.$sim.rc"
 }
 
+run_synth() { # unit (its cells line and stat tables into $out_dir/<unit>.synth.out)
+  local u=$1 t0=$SECONDS status=0
+  scripts/synth.sh "rtl/$u.v" >"$out_dir/$u.synth.out" 2>&1 || status=$?
+  echo "$status" >"$out_dir/$u.synth.rc"
+  echo $((SECONDS - t0)) >"$out_dir/$u.synth.t"
+}
+
 fail=0
 summary=()
-for u in "${units[@]}"; do
-  [[ $u == chip_* ]] && vec=vectors/chip/queries.txt || vec=vectors/$u.hex
-  if [ ! -f "$vec" ]; then echo "missing $vec for rtl/$u.v (run: cargo run --release -- vectors)"; fail=1; continue; fi
-  for sim in icarus verilator; do
-    while [ "$(jobs -rp | wc -l)" -ge "$jobs_max" ]; do wait -n || true; done
-    run_one "$u" "$sim" &
+jobs_list=() # `unit kind`, the chips first (longest), then the units in name order
+for pass in chips units; do
+  for u in "${units[@]}"; do
+    [[ $u == chip_* ]] && [ $pass = units ] && continue
+    [[ $u != chip_* ]] && [ $pass = chips ] && continue
+    [[ $u == chip_* ]] && vec=vectors/chip/queries.txt || vec=vectors/$u.hex
+    if [ ! -f "$vec" ]; then echo "missing $vec for rtl/$u.v (run: cargo run --release -- vectors)"; fail=1; continue; fi
+    [ $synth = 1 ] && [[ " ${SYNTH_SKIP:-} " != *" $u "* ]] && jobs_list+=("$u synth")
+    jobs_list+=("$u verilator" "$u icarus")
   done
+done
+for job in "${jobs_list[@]}"; do
+  read -r u kind <<<"$job"
+  while [ "$(jobs -rp | wc -l)" -ge "$jobs_max" ]; do wait -n || true; done
+  if [ "$kind" = synth ]; then run_synth "$u" & else run_one "$u" "$kind" & fi
 done
 wait
-for u in "${units[@]}"; do
-  [ -f "vectors/$u.hex" ] || [[ $u == chip_* ]] || continue
-  for sim in icarus verilator; do
-    out=$(cat "$out_dir/$u.$sim.out"); status=$(cat "$out_dir/$u.$sim.rc")
-    line=$(grep -E '^[0-9]+ passed, [0-9]+ failed$' <<<"$out" | tail -n 1 || true)
-    if [ "$status" = 0 ] && [[ "$line" =~ ^[0-9]+\ passed,\ 0\ failed$ ]]; then
-      summary+=("$u $sim: $line ($(cat "$out_dir/$u.$sim.t") s)")
-    else
-      summary+=("$u $sim: FAILED (${line:-$(tail -n 1 <<<"$out")})"); fail=1
-    fi
-  done
+cells=()
+for job in "${jobs_list[@]}"; do
+  read -r u kind <<<"$job"
+  out=$(cat "$out_dir/$u.$kind.out"); status=$(cat "$out_dir/$u.$kind.rc"); t=$(cat "$out_dir/$u.$kind.t")
+  if [ "$kind" = synth ]; then
+    line=$(grep -E "^$u cells: [0-9]+\$" <<<"$out" || true)
+    if [ "$status" = 0 ] && [ -n "$line" ]; then cells+=("$line"); summary+=("$u yosys: ${line#* cells: } cells ($t s)")
+    else summary+=("$u yosys: FAILED ($(tail -n 1 <<<"$out"))"); fail=1; fi
+    continue
+  fi
+  line=$(grep -E '^[0-9]+ passed, [0-9]+ failed$' <<<"$out" | tail -n 1 || true)
+  if [ "$status" = 0 ] && [[ "$line" =~ ^[0-9]+\ passed,\ 0\ failed$ ]]; then
+    summary+=("$u $kind: $line ($t s)")
+  else
+    summary+=("$u $kind: FAILED (${line:-$(tail -n 1 <<<"$out")})"); fail=1
+  fi
 done
 printf '%s\n' "${summary[@]}"
-if [ $synth = 1 ]; then
-  files=(); for u in "${units[@]}"; do [[ " ${SYNTH_SKIP:-} " == *" $u "* ]] || files+=("rtl/$u.v"); done
-  if ! synth_out=$(scripts/synth.sh "${files[@]}" 2>&1); then echo "$synth_out" | tail -n 20; fail=1; fi
-  cells=$(grep -E '^[a-z0-9_]+ cells: [0-9]+$' <<<"$synth_out" | sort -u)
-  echo "$cells"
+if [ ${#cells[@]} -gt 0 ]; then
+  printf '%s\n' "${cells[@]}"
   # The area study's cells (scripts/area-study.sh) must be these for the units in both.
   area=docs/figures/area_cells.csv
-  while read -r u _ n; do
+  for c in "${cells[@]}"; do
+    read -r u _ n <<<"$c"
     want=$(sed -n "s/^$u,//p" "$area")
     if [ -n "$want" ] && [ "$want" != "$n" ]; then
       echo "$area is stale: $u has $n cells, the file says $want: run scripts/area-study.sh" >&2; fail=1
     fi
-  done <<<"$cells"
+  done
 fi
 exit $fail

@@ -12,10 +12,9 @@ use std::path::{Path, PathBuf};
 pub const TB_MEMORY_WORDS: usize = 1 << 16;
 
 /// The exported Verilog under Verilator runs the chip at about this many clocks per second
-/// on this project's machine (the hierarchical -O0 build of scripts/run-chip.sh: about 570 to
-/// 720 on the checked-in queries, both chips; the earlier inlined -Os build ran 4,428): for
-/// estimates.
-pub const VERILATOR_CLOCKS_PER_SECOND: f64 = 600.0;
+/// on this project's machine (the hierarchical -O1 build of scripts/run-chip.sh: about 4,000
+/// for the k = 6 chip, 2,400 for the k = 24 one on the checked-in queries): for estimates.
+pub const VERILATOR_CLOCKS_PER_SECOND: f64 = 2000.0;
 
 /// The ports chip_tb.v prints on a `ports` line, in order, by their [`PROBES`] names.
 pub const PORTS: [(&str, &str); 16] = [
