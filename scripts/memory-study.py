@@ -14,7 +14,8 @@ Usage: scripts/memory-study.py [--meshes bunny dragon-11k] [--orientations 8] [-
             prefetch = 14' (the memory port at full speed: docs/ARCHITECTURE.md, "With
             prefetch"; default: the RTL's parameters after reset)
   --chip    the scenes' [chip] table instead of the default's, e.g. the RTL chip's
-            'k = 6, format = "reduced", dop_rounding = "outward"'
+            'k = 6, format = "reduced", dop_rounding = "outward"', or the default's with
+            WSCG'03's triangle cache: 'k = 24, format = "binary32", tri_cache = 128'
   --cchip   a built cchip binary (default: `cargo run --release -q --`)
 Only the Python 3 standard library is used.
 """
@@ -69,12 +70,15 @@ def row(mesh, name, records):
     words = mem("node_words") + mem("tri_words")
     pages = mem("page_hits") + mem("page_misses")
     page_hit = f"{100 * mem('page_hits') / pages:.0f}%" if pages else "-"
+    tri_tests = sum(x["tri_tests"] for x in c)
+    # A's triangle words held when a leaf pair needs them: the triangle cache's hit rate
+    a_hit = f"{100 * (1 - st('tri_fetches_a') / tri_tests):.1f}%" if tri_tests else "-"
     return (
         f"| {mesh} | {name} | {len(c)} | {clocks / len(c):,.0f} | {sum(x['dop_tests'] for x in c) / clocks:.3f} | "
         f"{sum(x['tri_tests'] for x in c) / clocks:.3f} | {words / clocks:.3f} | {100 * st('issue') / clocks:.1f} | "
         f"{100 * st('stall_memory') / clocks:.1f} | {100 * st('stall_spacing') / clocks:.1f} | "
         f"{100 * (st('stall_credit') + st('back_pressure')) / clocks:.1f} | {mem('bytes') / len(c) / 1024:,.0f} | "
-        f"{page_hit} | {mem('bank_conflicts')} |"
+        f"{page_hit} | {mem('bank_conflicts')} | {a_hit} |"
     )
 
 
@@ -88,8 +92,8 @@ def main():
     a = ap.parse_args()
     cmd = [a.cchip] if a.cchip else ["cargo", "run", "--release", "-q", "--"]
     print("| mesh | memory | poses | clocks | DOP tests/clock | tri tests/clock | words/clock | issue% | memory% "
-          "| spacing% | credit+bkpres% | KiB/query | page hits | bank conflicts |")
-    print("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+          "| spacing% | credit+bkpres% | KiB/query | page hits | bank conflicts | A tri hits |")
+    print("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
     with tempfile.TemporaryDirectory() as tmp:
         for mesh in a.meshes:
             for name, memory, _ in MODELS:

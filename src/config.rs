@@ -107,6 +107,15 @@ pub struct ChipConfig {
     pub dop_rounding: DopRounding,
     /// Rounding of every T.CHECK operation.
     pub tri_rounding: Rounding,
+    /// Lines of the triangle cache for A's triangle words (WSCG'03 §4.3: direct mapped, 128
+    /// lines; [`TriCache`](crate::memory::TriCache)); 1: the single word held, as for B's
+    /// and in the RTL chips.
+    #[serde(default = "one_line")]
+    pub tri_cache: u32,
+}
+
+fn one_line() -> u32 {
+    1
 }
 
 impl Default for ChipConfig {
@@ -117,6 +126,7 @@ impl Default for ChipConfig {
             format: Format::BINARY32.into(),
             dop_rounding: DopRounding::Outward,
             tri_rounding: Rounding::NearestEven,
+            tri_cache: 1,
         }
     }
 }

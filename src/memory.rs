@@ -159,9 +159,94 @@ impl ObjectImage {
     }
 }
 
+/// WSCG'03 §4.3's triangle cache on the aligned side (object A): direct mapped, triangle
+/// word t in line `t mod lines` with its index as the tag (`lines` a power of two,
+/// [`ChipConfig::tri_cache`]). One line is the single word held that B's side and the RTL
+/// chips have: a word is fetched again only if the previous leaf pair had another triangle.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct TriCache {
+    tags: Vec<Option<u32>>,
+}
+
+impl TriCache {
+    /// Lines at most: WSCG'03 assumes 128 (11 KB at binary32).
+    pub const MAX_LINES: u32 = 1024;
+
+    /// An empty cache; `lines` must pass [`TriCache::check`].
+    pub fn new(lines: u32) -> TriCache {
+        TriCache { tags: vec![None; lines as usize] }
+    }
+
+    /// Errors say what a valid number of lines is.
+    pub fn check(lines: u32) -> Result<(), String> {
+        if lines.is_power_of_two() && lines <= Self::MAX_LINES {
+            Ok(())
+        } else {
+            Err(format!("tri_cache must be a power of two from 1 to {} lines (WSCG'03: 128), not {lines}", Self::MAX_LINES))
+        }
+    }
+
+    fn line(&self, t: u32) -> usize {
+        t as usize & (self.tags.len() - 1)
+    }
+
+    /// Whether triangle word `t` is held.
+    pub fn holds(&self, t: u32) -> bool {
+        self.tags[self.line(t)] == Some(t)
+    }
+
+    /// Word `t` arrived: it replaces its line.
+    pub fn fill(&mut self, t: u32) {
+        let l = self.line(t);
+        self.tags[l] = Some(t);
+    }
+
+    /// A use of word `t`: true if it had to be fetched (a miss, which fills the line).
+    pub fn fetch(&mut self, t: u32) -> bool {
+        let miss = !self.holds(t);
+        self.fill(t);
+        miss
+    }
+
+    /// Every line empty (a query's start).
+    pub fn clear(&mut self) {
+        self.tags.fill(None);
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+    use proptest::prelude::*;
+
+    /// Hand-derived: 0 and 4 share a line of 4 (each evicts the other; the last 0 finds its
+    /// line as the third use left it), 1 and 5 another; 8 lines hold all four.
+    #[test]
+    fn tri_cache_by_hand() {
+        let misses = |lines: u32| {
+            let mut c = TriCache::new(lines);
+            [0, 4, 0, 1, 5, 1, 0].map(|t| c.fetch(t) as u32)
+        };
+        assert_eq!(misses(1), [1, 1, 1, 1, 1, 1, 1]);
+        assert_eq!(misses(4), [1, 1, 1, 1, 1, 1, 0]);
+        assert_eq!(misses(8), [1, 1, 0, 1, 1, 0, 0]);
+        assert!(TriCache::check(128).is_ok() && TriCache::check(1).is_ok());
+        assert!(TriCache::check(0).is_err() && TriCache::check(96).is_err() && TriCache::check(2048).is_err());
+    }
+
+    proptest! {
+        /// Another formulation: a use misses iff the last earlier use of a triangle in the
+        /// same line (t mod lines) was of another triangle, or there was none.
+        #[test]
+        fn tri_cache_is_direct_mapped(uses in prop::collection::vec(0u32..64, 0..200), bits in 0u32..7) {
+            let lines = 1u32 << bits;
+            let mut c = TriCache::new(lines);
+            for (i, &t) in uses.iter().enumerate() {
+                let last = uses[..i].iter().rev().find(|&&u| u % lines == t % lines);
+                prop_assert_eq!(c.fetch(t), last != Some(&t), "use {} of {:?}, {} lines", i, uses, lines);
+            }
+        }
+    }
 
     #[test]
     fn word_sizes_of_the_default_chip() {

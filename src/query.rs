@@ -26,6 +26,7 @@ impl Chip {
     /// range the exact oracle is exact for).
     pub fn new(a: &[Tri], b: &[Tri], cfg: ChipConfig) -> Result<Chip, String> {
         DopNormals::get(cfg.k)?;
+        crate::memory::TriCache::check(cfg.tri_cache)?;
         if a.is_empty() || b.is_empty() {
             return Err("both objects need at least one triangle".into());
         }

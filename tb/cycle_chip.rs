@@ -93,14 +93,15 @@ fn large_queries_cover_what_they_claim() {
 }
 
 /// A configuration to run: k, the DOP and T.CHECK formats (binary32 or e8m15 each), DOP
-/// rounding.
-fn config(k: usize, dop_binary32: bool, tri_binary32: bool, outward: bool) -> ChipConfig {
+/// rounding, the triangle cache's lines.
+fn config(k: usize, dop_binary32: bool, tri_binary32: bool, outward: bool, tri_cache: u32) -> ChipConfig {
     let f = |b32| if b32 { Format::BINARY32 } else { Format::REDUCED };
     ChipConfig {
         k,
         format: Formats { dop: f(dop_binary32), tri: f(tri_binary32) },
         dop_rounding: if outward { DopRounding::Outward } else { DopRounding::NearestEven },
         tri_rounding: Rounding::NearestEven,
+        tri_cache,
     }
 }
 
@@ -153,18 +154,21 @@ fn run(chip: &Chip, pose: &Pose, lifo: bool, mode: Mode, p: Params, reader: Read
 proptest! {
     #![proptest_config(ProptestConfig { cases: 256, failure_persistence: None, .. ProptestConfig::default() })]
 
-    /// Any k, formats (the DOP's apart from T.CHECK's), rounding and microarchitecture: the cycle model's answer is the
-    /// golden model's (all pairs: the same sure hits, uncertain pairs and test counts; FIFO
-    /// order even the fetch counts), the same with idle stretches skipped as clock by
-    /// clock, and every running clock is booked to exactly one cause.
+    /// Any k, formats (the DOP's apart from T.CHECK's), rounding, triangle cache and
+    /// microarchitecture: the cycle model's answer is the golden model's (all pairs: the
+    /// same sure hits, uncertain pairs and test counts; FIFO order even the fetch counts,
+    /// each level's triangle cache on its own leaf-pair order), the same with idle
+    /// stretches skipped as clock by clock, and every running clock is booked to exactly
+    /// one cause. A cache with a line for each of A's triangles fetches each at most once.
     #[test]
     fn any_configuration_answers_as_golden(
         k in prop::sample::select(vec![6usize, 14, 18, 24, 26]), dop_b32: bool, tri_b32: bool, outward: bool,
+        tri_cache in prop::sample::select(vec![1u32, 1, 4, 32, 128]),
         na in 4usize..=120, nb in 4usize..=120, sa: u64, sb: u64,
         rot in prop::array::uniform3(0.0f64..360.0), t in prop::array::uniform3(-0.4f64..0.4),
         lifo: bool, first: bool, p in params(), period in 1u32..=12,
     ) {
-        let chip = Chip::new(&soup(na, sa).triangles_f64(), &soup(nb, sb).triangles_f64(), config(k, dop_b32, tri_b32, outward)).unwrap();
+        let chip = Chip::new(&soup(na, sa).triangles_f64(), &soup(nb, sb).triangles_f64(), config(k, dop_b32, tri_b32, outward, tri_cache)).unwrap();
         let pose = Pose::new(rot[0], rot[1], rot[2], t[0], t[1], t[2]);
         let mode = if first { Mode::First } else { Mode::All };
         let golden = chip.query(&pose, Mode::All, if lifo { Traversal::Lifo } else { Traversal::Fifo });
@@ -178,7 +182,11 @@ proptest! {
             prop_assert_eq!((tr.dop_tests, tr.tri_tests), (g.dop_tests, g.tri_tests));
             if !lifo {
                 prop_assert_eq!((tr.node_fetches, tr.tri_fetches), (g.node_fetches, g.tri_fetches));
+                prop_assert_eq!(st.tri_fetches_a, g.tri_fetches_a);
             }
+        }
+        if tri_cache as usize >= na {
+            prop_assert!(st.tri_fetches_a <= na as u64, "{} of A's {na} triangles fetched through {tri_cache} lines", st.tri_fetches_a);
         }
         let booked = st.issue + st.stall_memory + st.stall_spacing + st.stall_credit + st.stall_refill
             + st.stall_empty_queue + st.drain + st.halted;

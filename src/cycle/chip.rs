@@ -14,7 +14,7 @@ use super::{ChipIn, ChipOut, Clocked, Params};
 use crate::config::ChipConfig;
 use crate::dop::{HostSetup, Node};
 use crate::golden::{doptrf, tcheck};
-use crate::memory::ObjectImage;
+use crate::memory::{ObjectImage, TriCache};
 use crate::traversal::d_cntr::{children, Entry, Pair};
 use serde::Serialize;
 use std::collections::VecDeque;
@@ -67,6 +67,8 @@ pub struct Stats {
     pub dop_occupancy: u64,
     /// Sum over cycles of TRI_UNIT's open pairs.
     pub tri_occupancy: u64,
+    /// A's triangle words requested: the triangle cache's misses.
+    pub tri_fetches_a: u64,
 }
 
 /// The chip. Values come from the golden model of `cfg` on the images `a`, `b` with
@@ -102,8 +104,9 @@ pub struct Chip<'a> {
     /// Child entries not yet pushed (the RTL's `pend`: one at most; none at issue spacing
     /// 1, where the queue takes two entries a clock).
     pend: VecDeque<Entry>,
-    // ---- triangle words held (A's, B's) and the memory port
-    held: [Option<u32>; 2],
+    // ---- triangle words held (A's in the triangle cache, B's) and the memory port
+    tri_cache: TriCache,
+    held_b: Option<u32>,
     port: MemPort,
     // ---- units
     dop: DopUnit<'a>,
@@ -182,7 +185,8 @@ impl<'a> Chip<'a> {
             seq: 0,
             last_issue: None,
             pend: VecDeque::new(),
-            held: [None; 2],
+            tri_cache: TriCache::new(cfg.tri_cache),
+            held_b: None,
             port: MemPort::new(p.outstanding),
             dop: DopUnit::new(a, b, dop_values, p.dop_latency),
             leaf_fifo: Delay::with_capacity(FIFO_WRITE_TO_HEAD, p.credit as usize),
@@ -203,12 +207,12 @@ impl<'a> Chip<'a> {
         // the pair at the DOP unit's input waits for its words: they come in request order,
         // its own first
         let [fa, fb] = cur.map_or([false; 2], |c| c.fetch);
-        let tri_needs = |k: usize, id: u32| go && self.leaf_valid && self.held[k] != Some(id);
+        let tri_needs = go && self.leaf_valid;
         let need = [
             go && fa && self.words.is_empty(),
             go && fb && self.words.len() < 1 + fa as usize,
-            tri_needs(0, self.leaf_tag.0),
-            tri_needs(1, self.leaf_tag.1),
+            tri_needs && !self.tri_cache.holds(self.leaf_tag.0),
+            tri_needs && self.held_b != Some(self.leaf_tag.1),
         ];
         // triangle words first, then the next node word in pair order: the current pair's
         // only at prefetch 0, any pair's in the buffer else
@@ -513,13 +517,17 @@ impl Clocked for Chip<'_> {
         if let Some((d, id)) = c.req.filter(|_| c.accept) {
             self.port.accept(d, id);
             self.cnt[if d.is_tri() { 3 } else { 2 }] += 1;
+            if let Some(s) = self.stats.as_mut().filter(|_| d == Dst::TriA) {
+                s.tri_fetches_a += 1;
+            }
         }
         if c.req.is_some_and(|(d, _)| c.accept && !d.is_tri()) {
             self.to_ask.pop_front();
         }
         if i.mem_resp.is_some() {
             match self.port.respond() {
-                Some((d, id)) if d.is_tri() => self.held[d as usize - Dst::TriA as usize] = Some(id),
+                Some((Dst::TriA, id)) => self.tri_cache.fill(id),
+                Some((Dst::TriB, id)) => self.held_b = Some(id),
                 Some((_, id)) => self.words.push_back(id),
                 None => {}
             }
@@ -596,7 +604,8 @@ impl Clocked for Chip<'_> {
             self.words.clear();
             self.last_ids = [None; 2];
             self.leaf_valid = false;
-            self.held = [None; 2];
+            self.tri_cache.clear();
+            self.held_b = None;
             self.cnt = [0; 4];
             self.stats = self.stats.map(|_| Stats::default());
             self.last_issue = None;

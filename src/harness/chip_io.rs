@@ -23,10 +23,10 @@ use std::fmt::Write as _;
 
 /// The configuration of the small RTL chip, `rtl/chip_e8m15_k6.v`.
 pub const CHIP_CONFIG: ChipConfig =
-    ChipConfig { k: 6, format: Formats { dop: Format::REDUCED, tri: Format::REDUCED }, dop_rounding: DopRounding::Outward, tri_rounding: Rounding::NearestEven };
+    ChipConfig { k: 6, format: Formats { dop: Format::REDUCED, tri: Format::REDUCED }, dop_rounding: DopRounding::Outward, tri_rounding: Rounding::NearestEven, tri_cache: 1 };
 /// The configuration of the papers' RTL chip, `rtl/chip_b32_k24.v`.
 pub const PAPERS_CONFIG: ChipConfig =
-    ChipConfig { k: 24, format: Formats { dop: Format::BINARY32, tri: Format::BINARY32 }, dop_rounding: DopRounding::Outward, tri_rounding: Rounding::NearestEven };
+    ChipConfig { k: 24, format: Formats { dop: Format::BINARY32, tri: Format::BINARY32 }, dop_rounding: DopRounding::Outward, tri_rounding: Rounding::NearestEven, tri_cache: 1 };
 
 /// The RTL chips: one `CollisionChip` per configuration, exported to `rtl/<name>.v`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -554,8 +554,8 @@ pub fn rtl_order(cfg: &ChipConfig, traversal: crate::traversal::Traversal, p: &c
     use crate::traversal::Traversal;
     let Some(kind) = ChipKind::of(cfg) else {
         return Err(format!(
-            "the RTL chips are built for k = 6 in format reduced (e8m15) and k = 24 in binary32, both with outward DOP rounding and nearest-even T.CHECK; this scene has k = {}, format {}, dop_rounding {}, tri_rounding {:?}: set [chip] k = 6, format = \"reduced\" or k = 24, format = \"binary32\", with dop_rounding = \"outward\"",
-            cfg.k, cfg.format, cfg.dop_rounding, cfg.tri_rounding
+            "the RTL chips are built for k = 6 in format reduced (e8m15) and k = 24 in binary32, both with outward DOP rounding, nearest-even T.CHECK and one triangle word held per object (no triangle cache); this scene has k = {}, format {}, dop_rounding {}, tri_rounding {:?}, tri_cache {}: set [chip] k = 6, format = \"reduced\" or k = 24, format = \"binary32\", with dop_rounding = \"outward\" and no tri_cache",
+            cfg.k, cfg.format, cfg.dop_rounding, cfg.tri_rounding, cfg.tri_cache
         ));
     };
     let rtl = crate::cycle::Params {

@@ -198,9 +198,10 @@ pub fn stall_table(records: &[PoseRecord]) -> String {
 }
 
 /// The memory model's traffic, one row per sweep distance (or pose): mean node and
-/// triangle words and KiB per query, words per clock, and the share of clocks with a
-/// request outstanding and with the DOP unit's input waiting for a word. Empty without
-/// cycle records.
+/// triangle words and KiB per query, the share of triangle tests whose A word was held
+/// (the triangle cache's hit rate, `[chip] tri_cache`), words per clock, and the share of
+/// clocks with a request outstanding and with the DOP unit's input waiting for a word.
+/// Empty without cycle records.
 pub fn memory_table(records: &[PoseRecord]) -> String {
     let mut out = String::new();
     if !records.iter().any(|r| r.cycles.is_some()) {
@@ -208,8 +209,8 @@ pub fn memory_table(records: &[PoseRecord]) -> String {
     }
     let _ = writeln!(
         out,
-        "{:<28} {:>10} {:>10} {:>10} {:>8} {:>7} {:>8} {:>9} {:>9} {:>9}",
-        "pose", "node_words", "tri_words", "KiB", "words/c", "busy%", "waiting%", "page_hit", "page_miss", "conflicts"
+        "{:<28} {:>10} {:>10} {:>7} {:>10} {:>8} {:>7} {:>8} {:>9} {:>9} {:>9}",
+        "pose", "node_words", "tri_words", "a_hit%", "KiB", "words/c", "busy%", "waiting%", "page_hit", "page_miss", "conflicts"
     );
     for (key, g) in groups(records) {
         let c: Vec<_> = g.iter().filter_map(|r| r.cycles.as_ref()).collect();
@@ -219,10 +220,14 @@ pub fn memory_table(records: &[PoseRecord]) -> String {
         let st = |f: &dyn Fn(&Stats) -> u64| c.iter().filter_map(|r| r.stats.as_ref()).map(f).sum::<u64>() as f64;
         let _ = writeln!(
             out,
-            "{:<28} {:>10.0} {:>10.0} {:>10.1} {:>8.3} {:>7.1} {:>8.1} {:>9.0} {:>9.0} {:>9.0}",
+            "{:<28} {:>10.0} {:>10.0} {:>7} {:>10.1} {:>8.3} {:>7.1} {:>8.1} {:>9.0} {:>9.0} {:>9.0}",
             key,
             sum(&|r| r.memory.node_words) / n,
             sum(&|r| r.memory.tri_words) / n,
+            match sum(&|r| r.tri_tests) {
+                0.0 => "-".to_string(),
+                t => format!("{:.1}", 100.0 * (1.0 - st(&|s| s.tri_fetches_a) / t)),
+            },
             sum(&|r| r.memory.bytes) / n / 1024.0,
             sum(&|r| r.memory.node_words + r.memory.tri_words) / cycles,
             100.0 * st(&|s| s.memory_busy) / cycles,

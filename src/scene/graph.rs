@@ -151,7 +151,8 @@ impl Unit {
             Unit::DCntr => format!("the pair queue ({} entries), pair buffer and issue control (every {} clock(s), credit {})", p.queue_entries, p.issue_spacing, p.credit),
             Unit::MemoryPort => {
                 let prefetch = if p.prefetch > 0 { format!(", node words of {} pairs prefetched", p.prefetch) } else { String::new() };
-                format!("node and triangle word requests, {} outstanding{prefetch}", p.outstanding)
+                let cache = if s.cfg.tri_cache > 1 { format!(", A's triangle words through a {}-line direct-mapped cache", s.cfg.tri_cache) } else { String::new() };
+                format!("node and triangle word requests, {} outstanding{prefetch}{cache}", p.outstanding)
             }
             Unit::MemoryModel => p.memory.to_string(),
             Unit::DopUnit => format!("DOPTRF transform and compare, {} clocks", p.dop_latency),

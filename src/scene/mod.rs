@@ -13,6 +13,8 @@
 //! format = "binary32"         # or "reduced" (e8m15) or "eEmF"; "e8m15/binary32": the DOP
 //!                             # datapath's format / T.CHECK's (narrower node words)
 //! dop_rounding = "outward"    # or "nearest-even"
+//! tri_cache = 1               # lines of A's triangle cache (WSCG'03 §4.3: 128; a power of
+//!                             # two up to 1024; 1: one word held, the RTL chips)
 //!
 //! [query]                     # all optional
 //! mode = "all"                # or "first"
@@ -282,6 +284,7 @@ struct ChipSection {
     k: Option<usize>,
     format: Option<String>,
     dop_rounding: Option<DopRounding>,
+    tri_cache: Option<u32>,
 }
 
 #[derive(Debug, Default, Deserialize)]
@@ -399,6 +402,10 @@ impl Scene {
         }
         if let Some(r) = f.chip.dop_rounding {
             cfg.dop_rounding = r;
+        }
+        if let Some(lines) = f.chip.tri_cache {
+            crate::memory::TriCache::check(lines).map_err(|e| err(format!("[chip] {e}")))?;
+            cfg.tri_cache = lines;
         }
         let poses = match (&f.sweep, f.pose.is_empty()) {
             (Some(_), false) => return Err(err("give either [[pose]] entries or a [sweep], not both".into())),
@@ -548,6 +555,13 @@ mod tests {
         assert_eq!(crate::harness::chip_io::rtl_order(&ChipConfig::default(), Traversal::Fifo, &rtl.params), Ok((ChipKind::K24B32, false)));
         let e = crate::harness::chip_io::rtl_order(&ChipConfig { k: 14, ..ChipConfig::default() }, Traversal::Lifo, &rtl.params).unwrap_err();
         assert!(e.contains("k = 6 in format reduced (e8m15) and k = 24 in binary32") && e.contains("k = 14"), "{e}");
+        // the triangle cache: a power of two; the RTL chips hold one word
+        let s = Scene::parse(&format!("{base}[chip]\ntri_cache = 128\n"), "s").unwrap();
+        assert_eq!(s.cfg.tri_cache, 128);
+        let e = Scene::parse(&format!("{base}[chip]\ntri_cache = 100\n"), "s").unwrap_err();
+        assert!(e.contains("[chip] tri_cache must be a power of two from 1 to 1024 lines"), "{e}");
+        let e = crate::harness::chip_io::rtl_order(&ChipConfig { tri_cache: 128, ..rtl.cfg }, Traversal::Lifo, &rtl.params).unwrap_err();
+        assert!(e.contains("tri_cache 128") && e.contains("no tri_cache"), "{e}");
         let e = crate::harness::chip_io::rtl_order(&rtl.cfg, Traversal::List, &rtl.params).unwrap_err();
         assert!(e.contains("fifo or lifo"), "{e}");
         let e = crate::harness::chip_io::rtl_order(&rtl.cfg, Traversal::Lifo, &Params { tri_fifo: 4, ..rtl.params }).unwrap_err();

@@ -20,7 +20,7 @@ use crate::oracle;
 use nalgebra::{Matrix3, Vector3};
 use crate::dop::{HostSetup, Node};
 use crate::golden::{doptrf, tcheck};
-use crate::memory::{Layout, ObjectImage};
+use crate::memory::{Layout, ObjectImage, TriCache};
 use serde::{Deserialize, Serialize};
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, clap::ValueEnum)]
@@ -59,8 +59,12 @@ pub struct Counters {
     /// Node words fetched (a node already held by the DOP unit is not fetched again).
     pub node_fetches: u64,
     pub tri_tests: u64,
-    /// Triangle words fetched (same holding rule as nodes).
+    /// Triangle words fetched (same holding rule as nodes; A's through the triangle cache,
+    /// `ChipConfig::tri_cache`).
     pub tri_fetches: u64,
+    /// A's triangle words fetched: the triangle cache's misses (of `tri_tests` uses).
+    #[serde(default)]
+    pub tri_fetches_a: u64,
     pub tri_hits: u64,
     /// Triangle pairs T.CHECK could not decide within its error bounds (or with a
     /// degenerate triangle), settled by the host with the exact oracle.
@@ -108,7 +112,9 @@ pub(crate) struct Engine<'a> {
     layout: Layout,
     mode: Mode,
     held_node: [Option<u32>; 2],
-    held_tri: [Option<u32>; 2],
+    /// A's triangle words held (the triangle cache), B's.
+    tri_cache: TriCache,
+    held_tri_b: Option<u32>,
     host: &'a Host<'a>,
     pairs: Vec<(u32, u32)>,
     uncertain: Vec<(u32, u32)>,
@@ -155,7 +161,9 @@ impl<'a> Engine<'a> {
     fn leaf_pair(&mut self, ta: u32, tb: u32) {
         let c = &mut self.counters;
         c.tri_tests += 1;
-        c.tri_fetches += Self::fetch(&mut self.held_tri[0], ta) + Self::fetch(&mut self.held_tri[1], tb);
+        let fetch_a = self.tri_cache.fetch(ta) as u64;
+        c.tri_fetches_a += fetch_a;
+        c.tri_fetches += fetch_a + Self::fetch(&mut self.held_tri_b, tb);
         let (wa, wb) = (&self.a.tris[ta as usize], &self.b.tris[tb as usize]);
         let res = self.tri_unit.test(ta, wa, tb, wb);
         let hit = if res.uncertain {
@@ -199,7 +207,8 @@ pub fn run(
         layout: Layout::new(cfg),
         mode,
         held_node: [None; 2],
-        held_tri: [None; 2],
+        tri_cache: TriCache::new(cfg.tri_cache),
+        held_tri_b: None,
         host,
         pairs: vec![],
         uncertain: vec![],
