@@ -104,9 +104,8 @@ pub struct Chip<'a> {
     /// Child entries not yet pushed (the RTL's `pend`: one at most; none at issue spacing
     /// 1, where the queue takes two entries a clock).
     pend: VecDeque<Entry>,
-    // ---- triangle words held (A's in the triangle cache, B's) and the memory port
-    tri_cache: TriCache,
-    held_b: Option<u32>,
+    // ---- triangle words held (A's in the triangle cache, B's: one line) and the memory port
+    held: [TriCache; 2],
     port: MemPort,
     // ---- units
     dop: DopUnit<'a>,
@@ -185,8 +184,7 @@ impl<'a> Chip<'a> {
             seq: 0,
             last_issue: None,
             pend: VecDeque::new(),
-            tri_cache: TriCache::new(cfg.tri_cache),
-            held_b: None,
+            held: [TriCache::new(cfg.tri_cache), TriCache::new(1)],
             port: MemPort::new(p.outstanding),
             dop: DopUnit::new(a, b, dop_values, p.dop_latency),
             leaf_fifo: Delay::with_capacity(FIFO_WRITE_TO_HEAD, p.credit as usize),
@@ -211,8 +209,8 @@ impl<'a> Chip<'a> {
         let need = [
             go && fa && self.words.is_empty(),
             go && fb && self.words.len() < 1 + fa as usize,
-            tri_needs && !self.tri_cache.holds(self.leaf_tag.0),
-            tri_needs && self.held_b != Some(self.leaf_tag.1),
+            tri_needs && !self.held[0].holds(self.leaf_tag.0),
+            tri_needs && !self.held[1].holds(self.leaf_tag.1),
         ];
         // triangle words first, then the next node word in pair order: the current pair's
         // only at prefetch 0, any pair's in the buffer else
@@ -526,8 +524,7 @@ impl Clocked for Chip<'_> {
         }
         if i.mem_resp.is_some() {
             match self.port.respond() {
-                Some((Dst::TriA, id)) => self.tri_cache.fill(id),
-                Some((Dst::TriB, id)) => self.held_b = Some(id),
+                Some((d, id)) if d.is_tri() => self.held[d as usize - Dst::TriA as usize].fill(id),
                 Some((_, id)) => self.words.push_back(id),
                 None => {}
             }
@@ -604,8 +601,7 @@ impl Clocked for Chip<'_> {
             self.words.clear();
             self.last_ids = [None; 2];
             self.leaf_valid = false;
-            self.tri_cache.clear();
-            self.held_b = None;
+            self.held.iter_mut().for_each(TriCache::clear);
             self.cnt = [0; 4];
             self.stats = self.stats.map(|_| Stats::default());
             self.last_issue = None;

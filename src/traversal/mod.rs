@@ -112,9 +112,8 @@ pub(crate) struct Engine<'a> {
     layout: Layout,
     mode: Mode,
     held_node: [Option<u32>; 2],
-    /// A's triangle words held (the triangle cache), B's.
-    tri_cache: TriCache,
-    held_tri_b: Option<u32>,
+    /// A's triangle words held (the triangle cache), B's (one line).
+    held_tri: [TriCache; 2],
     host: &'a Host<'a>,
     pairs: Vec<(u32, u32)>,
     uncertain: Vec<(u32, u32)>,
@@ -161,9 +160,9 @@ impl<'a> Engine<'a> {
     fn leaf_pair(&mut self, ta: u32, tb: u32) {
         let c = &mut self.counters;
         c.tri_tests += 1;
-        let fetch_a = self.tri_cache.fetch(ta) as u64;
+        let fetch_a = self.held_tri[0].fetch(ta) as u64;
         c.tri_fetches_a += fetch_a;
-        c.tri_fetches += fetch_a + Self::fetch(&mut self.held_tri_b, tb);
+        c.tri_fetches += fetch_a + self.held_tri[1].fetch(tb) as u64;
         let (wa, wb) = (&self.a.tris[ta as usize], &self.b.tris[tb as usize]);
         let res = self.tri_unit.test(ta, wa, tb, wb);
         let hit = if res.uncertain {
@@ -207,8 +206,7 @@ pub fn run(
         layout: Layout::new(cfg),
         mode,
         held_node: [None; 2],
-        tri_cache: TriCache::new(cfg.tri_cache),
-        held_tri_b: None,
+        held_tri: [TriCache::new(cfg.tri_cache), TriCache::new(1)],
         host,
         pairs: vec![],
         uncertain: vec![],
