@@ -6,16 +6,17 @@
 //! - node word, `1 + k*W + 64` bits: `is_leaf`, d_0..d_{k-1}, then two 32-bit fields:
 //!   children (inner node) or triangle index and 0 (leaf). Node i lives at
 //!   `base + i * node_bytes`, pre-order, root at node 0.
-//! - triangle word, `24*W + 2` bits: vertices v0, v1, v2 (x, y, z each), M_B row-major
-//!   (3x4: the affine map sending the triangle to the unit triangle), its error bounds
-//!   `e_lin`, `e_tr` and norm `l_norm` (see [`TriWord`]), the `v_exact` bit (the vertices
-//!   needed no rounding) and the `degenerate` bit (no usable M_B: stored as zeros).
+//! - triangle word, `23*W + 2` bits: vertices v0, v1, v2 (x, y, z each), M_B row-major
+//!   (3x4: the affine map sending the triangle to the unit triangle), its error words
+//!   `alpha_m`, `alpha_f` (see [`TriWord`]), the `v_exact` bit (the vertices needed no
+//!   rounding) and the `degenerate` bit (no usable M_B: stored as zeros).
 //!   Triangle t lives at `base + t * tri_bytes`.
 
 use crate::config::ChipConfig;
-use crate::dop::host::Affine;
+use crate::dop::host::{Affine, TriSide};
 use crate::dop::tree::{DopTree, Tri};
 use crate::format::{Format, Rounding};
+use crate::golden::tcheck::Certificate;
 use nalgebra::{Matrix3, Vector3};
 
 /// Word sizes of one configuration.
@@ -27,7 +28,7 @@ pub struct Layout {
 
 impl Layout {
     pub fn new(cfg: &ChipConfig) -> Layout {
-        Layout { node_bits: 1 + cfg.k as u32 * cfg.format.dop.width() + 64, tri_bits: 24 * cfg.format.tri.width() + 2 }
+        Layout { node_bits: 1 + cfg.k as u32 * cfg.format.dop.width() + 64, tri_bits: 23 * cfg.format.tri.width() + 2 }
     }
     /// A memory word holds either record: the wider one.
     pub fn word_bits(&self) -> u32 {
@@ -41,36 +42,39 @@ impl Layout {
     }
 }
 
-/// The triangle word of one leaf (DATE'05 §4.2: the triangle and its M_B), with the
-/// bounds T.CHECK needs to flag uncertain decisions (docs/ACCURACY.md).
+/// The triangle word of one leaf (DATE'05 §4.2: the triangle and its M_B), with the two
+/// error words T.CHECK's certificate needs (docs/ACCURACY.md, "T.CHECK's certificate").
 ///
 /// The ideal map is M_B* = [L* | -L* v0] with L* = [v1 - v0, v2 - v0, n]^-1 in exact
 /// arithmetic on the f64 vertices, n being the host's f64 normal (v1 - v0) x (v2 - v0)
 /// divided by the square root of its length, so that it is as long as the edges are (any
 /// fixed vector off the plane defines a valid unit-triangle map, and T.CHECK's signs do not
-/// depend on the scale of z). The stored entries are within `e_lin` (linear part) and
-/// `e_tr` (translation column) of M_B*.
+/// depend on the scale of z). The stored entries are the host's f64 map rounded to nearest;
+/// the f64 map is within `a_lin` (linear part) and `a_tr` (translation column) of M_B*.
 ///
-/// Why n is scaled: `e_lin` bounds every entry of L and is set by its largest row, about
-/// 1 / (triangle size). With the unit normal, z's row of L is about 1 and z is the distance
-/// from the plane, so the bound of z was some 1 / size times too wide: on dragon-11k 3.1% of
-/// the triangle tests were uncertain at binary32, and 0.04% with n scaled like the edges
-/// (`cargo run --release -- accuracy`, docs/ACCURACY.md).
-#[derive(Clone, Debug, PartialEq)]
+/// Why n is scaled: the error of L is one bound for every entry, set by its largest row,
+/// about 1 / (triangle size). With the unit normal, z's row of L is about 1 and z is the
+/// distance from the plane, so the bound of z was some 1 / size times too wide: on
+/// dragon-11k 3.1% of the triangle tests were uncertain at binary32, and 0.04% with n
+/// scaled like the edges (`cargo run --release -- accuracy`, docs/ACCURACY.md).
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct TriWord {
     /// Vertices in the object's frame, rounded to nearest in the chip format.
     pub v: [[f64; 3]; 3],
     /// M_B: sends v0 to (0,0,0), v1 to (1,0,0), v2 to (0,1,0) and v0 + n to (0,0,1).
     pub m: Affine,
-    /// Bound on |M_B - M_B*| over the linear entries (rounded up).
-    pub e_lin: f64,
-    /// Bound on |M_B - M_B*| over the translation entries (rounded up).
-    pub e_tr: f64,
-    /// |L|_inf of the stored linear part (rounded up).
-    pub l_norm: f64,
+    /// alpha_m / g: M_B's own error (and the datapath's underflow), per unit of a frame's
+    /// beta_m; at least the certificate's floor over the object's scale.
+    pub alpha_m: f64,
+    /// alpha_f / g: how M_B magnifies the frame's error and B's placement, per unit of
+    /// beta_f.
+    pub alpha_f: f64,
     /// The vertices are the input's exactly (no rounding error to account for).
     pub v_exact: bool,
     pub degenerate: bool,
+    /// Host only, not in the memory word: lambda >= |L*|_inf (the placement bound's
+    /// condition 4 lambda eta <= 1/2 is checked per pose against the largest).
+    pub lambda: f64,
 }
 
 impl TriWord {
@@ -78,21 +82,22 @@ impl TriWord {
     ///
     /// The bounds are a posteriori: with Res = L E* - I and rho >= |Res|_inf (computed in
     /// f64 plus its rounding error), L* = (I + Res)^-1 L, so |L - L*|_inf <= rho |L| / (1 - rho).
-    /// A triangle with rho >= 1/2 (zero area, or too ill-conditioned for the format) is
-    /// `degenerate`.
-    pub fn new(t: &Tri, fmt: Format) -> TriWord {
+    /// A triangle with rho >= 1/2 (zero area, or too ill-conditioned for f64) is
+    /// `degenerate`; so is one whose stored map overflows the format.
+    /// `scale` is its object's [`object_scale`].
+    pub fn new(t: &Tri, fmt: Format, scale: f64) -> TriWord {
         let rn = |x: f64| fmt.round(x, Rounding::NearestEven);
-        let up = |x: f64| fmt.round(x * (1.0 + 2f64.powi(-50)), Rounding::TowardPositive);
+        let up = |x: f64| fmt.round(x * (1.0 + 2f64.powi(-40)), Rounding::TowardPositive);
         let v = t.map(|p| [rn(p.x), rn(p.y), rn(p.z)]);
         let v_exact = t.iter().zip(&v).all(|(p, q)| p.x == q[0] && p.y == q[1] && p.z == q[2]);
         let bad = TriWord {
             v,
             m: [[0.0; 4]; 3],
-            e_lin: f64::INFINITY,
-            e_tr: f64::INFINITY,
-            l_norm: f64::INFINITY,
+            alpha_m: f64::INFINITY,
+            alpha_f: f64::INFINITY,
             v_exact,
             degenerate: true,
+            lambda: 0.0,
         };
         let e1 = t[1] - t[0];
         let e2 = t[2] - t[0];
@@ -102,11 +107,7 @@ impl TriWord {
             return bad;
         }
         let e = Matrix3::from_columns(&[e1, e2, n / nn.sqrt()]);
-        let Some(inv) = e.try_inverse().filter(|i| i.iter().all(|x| x.is_finite())) else { return bad };
-        let l = inv.map(rn);
-        if !l.iter().all(|x| x.is_finite()) {
-            return bad;
-        }
+        let Some(l) = e.try_inverse().filter(|i| i.iter().all(|x| x.is_finite())) else { return bad };
         let u = 2f64.powi(-53);
         // rho: |fl(L E) - I| plus the rounding of the product and of the differences in E.
         let res = l * e - Matrix3::identity();
@@ -117,22 +118,50 @@ impl TriWord {
         }
         let l_inf = l.abs().column_sum().max();
         let e_lin = l_inf * rho / (1.0 - rho);
-        let tr: Vector3<f64> = (-(l * t[0].coords)).map(rn);
-        // |tr - t*| <= |tr + L v0| + |L - L*| |v0|_1, the first term computed in f64 with its error.
         let v0 = t[0].coords;
-        let d = tr + l * v0;
+        let tr: Vector3<f64> = -(l * v0);
+        // The stored words are the f64 ones rounded to nearest: relative error u1 (in the
+        // certificate's g) or, below 2^emin, half the smallest subnormal.
+        let eta_s = fmt.min_positive_subnormal() / 2.0;
+        let a_lin = e_lin + eta_s;
+        // |tr - t*| <= |fl(-L v0) + L v0| + |L - L*| |v0|_1
         let derr = (tr.abs() + l.abs() * v0.abs()) * (4.0 * u);
-        let e_tr = (d.abs() + derr).max() + e_lin * v0.abs().sum();
+        let a_tr = derr.max() + e_lin * v0.abs().sum() + eta_s;
         let mut m = [[0.0; 4]; 3];
         for (r, row) in m.iter_mut().enumerate() {
             for (c, x) in row.iter_mut().enumerate() {
-                *x = if c < 3 { l[(r, c)] } else { tr[r] };
+                *x = rn(if c < 3 { l[(r, c)] } else { tr[r] });
             }
         }
-        if !(e_tr.is_finite() && tr.iter().all(|x| x.is_finite())) {
+        if !m.iter().flatten().all(|x| x.is_finite()) {
             return bad;
         }
-        TriWord { v, m, e_lin: up(e_lin), e_tr: up(e_tr), l_norm: up(l_inf), v_exact, degenerate: false }
+        let cert = Certificate::new(fmt, Rounding::NearestEven);
+        let u1 = cert.u / (1.0 - cert.u);
+        // Lambda-hat (rows of the linear part) and T-hat (translation) bound |M_B*|.
+        let lam_hat = (0..3).map(|r| (0..3).map(|c| (1.0 + u1) * m[r][c].abs() + a_lin).sum::<f64>()).fold(0.0, f64::max);
+        let t_hat = (0..3).map(|r| (1.0 + u1) * m[r][3].abs() + a_tr).fold(0.0, f64::max);
+        let lambda = l_inf + e_lin;
+        // Per unit of the frame's beta_m: M_B's own error, and the value datapath's
+        // underflow (3 products on x, 3 more per coordinate, each at most the smallest
+        // subnormal); per unit of beta_f: how M_B magnifies the frame's error and B's
+        // placement (docs/ACCURACY.md). Each term in units of 1 / length, so that scaling
+        // both objects by 2^s scales these words by 2^-s and the bounds not at all.
+        let eta_r = fmt.min_positive_subnormal();
+        let alpha_m = a_lin + a_tr / scale + 3.0 * eta_r + 6.0 * eta_r / scale;
+        let alpha_f = lam_hat + 2.0 * lambda * (1.0 + 4.0 * t_hat) + 8.0 * lambda * lam_hat * scale;
+        // g_v of exact vertices to nearest: the smallest g_v of the format. The floor
+        // keeps every mapped vertex's magnitude at least F1 (beta_m >= scale / S_V, L1 >= S_V).
+        let g = cert.g_v[1];
+        TriWord {
+            v,
+            m,
+            alpha_m: up((alpha_m / g).max(cert.floor / scale)),
+            alpha_f: up(alpha_f / g),
+            v_exact,
+            degenerate: false,
+            lambda,
+        }
     }
 }
 
@@ -140,6 +169,8 @@ impl TriWord {
 #[derive(Clone, Debug)]
 pub struct ObjectImage {
     pub tree: DopTree,
+    /// [`object_scale`] of its triangles in T.CHECK's format.
+    pub scale: f64,
     /// Indexed by triangle index.
     pub tris: Vec<TriWord>,
 }
@@ -147,16 +178,34 @@ pub struct ObjectImage {
 impl ObjectImage {
     /// `tris` must not be empty (mesh loaders reject empty meshes).
     pub fn build(tris: &[Tri], cfg: &ChipConfig) -> ObjectImage {
+        let scale = object_scale(tris, cfg.format.tri);
         ObjectImage {
             tree: DopTree::build(tris, cfg),
-            tris: tris.iter().map(|t| TriWord::new(t, cfg.format.tri)).collect(),
+            scale,
+            tris: tris.iter().map(|t| TriWord::new(t, cfg.format.tri, scale)).collect(),
         }
+    }
+
+    /// What T.CHECK's error words need of A (`self`) and B for
+    /// [`HostSetup::new`](crate::dop::HostSetup::new).
+    pub fn tri_side(&self, b: &ObjectImage) -> TriSide {
+        TriSide { scale: [self.scale, b.scale], lambda_max_b: b.tris.iter().map(|t| t.lambda).fold(0.0, f64::max) }
     }
 
     /// Bytes of this object's image in memory.
     pub fn bytes(&self, layout: &Layout) -> u64 {
         self.tree.len() as u64 * layout.node_bytes() + self.tris.len() as u64 * layout.tri_bytes()
     }
+}
+
+/// An object's scale S for T.CHECK's certificate: the power of two at or above its largest
+/// |coordinate|, kept within the normal range of `fmt` (down to 2^emin, up to 2^-2 of its
+/// largest value). The input-error terms are measured against `|x| + |y| + |z| + S`, so
+/// that they scale with the objects (docs/ACCURACY.md).
+pub fn object_scale(tris: &[Tri], fmt: Format) -> f64 {
+    let x = tris.iter().flatten().map(|p| p.coords.amax()).fold(0.0, f64::max);
+    let s = if x > 0.0 { 2f64.powi(x.log2().ceil() as i32) } else { 1.0 };
+    s.clamp(fmt.min_positive_normal(), 2f64.powi(fmt.max_finite().log2().floor() as i32 - 2))
 }
 
 /// WSCG'03 §4.3's triangle cache on the aligned side (object A): direct mapped, triangle
@@ -250,9 +299,9 @@ mod tests {
 
     #[test]
     fn word_sizes_of_the_default_chip() {
-        // binary32, k = 24: 1 + 24 * 32 + 64 = 833 bits; 24 * 32 + 2 = 770 bits.
+        // binary32, k = 24: 1 + 24 * 32 + 64 = 833 bits; 23 * 32 + 2 = 738 bits.
         let l = Layout::new(&ChipConfig::default());
         assert_eq!((l.node_bits, l.node_bytes()), (833, 105));
-        assert_eq!((l.tri_bits, l.tri_bytes()), (770, 97));
+        assert_eq!((l.tri_bits, l.tri_bytes()), (738, 93));
     }
 }

@@ -48,7 +48,7 @@ impl Chip {
     }
 
     pub fn setup(&self, pose: &Pose) -> HostSetup {
-        HostSetup::new(&self.cfg, pose, self.b.tree.coord_bound())
+        HostSetup::new(&self.cfg, pose, self.b.tree.coord_bound(), self.a.tri_side(&self.b))
     }
 
     pub fn query(&self, pose: &Pose, mode: Mode, traversal: Traversal) -> QueryResult {

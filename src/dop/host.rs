@@ -32,19 +32,36 @@ pub struct HostSetup {
     pub m_ab: Affine,
     /// B's frame to A's frame: x_A = R x_B + t.
     pub m_ba: Affine,
-    /// Bounds on |M_AB - M_AB*| for [linear entries, translation entries], M_AB* being the
-    /// exact [R^T | -R^T t] of the f64 pose (rounded up; docs/ACCURACY.md).
-    pub e_ab: [f64; 2],
-    /// The same for M_BA; its translation bound also covers the f64 placement of B's
-    /// vertices into A's frame (the geometry the oracle judges).
-    pub e_ba: [f64; 2],
-    /// eta: bound on how far the f64 placement moves a vertex of B, seen in B's frame.
-    pub eta: f64,
+    /// The error words of M_AB for T.CHECK's certificate, `[beta_m, beta_f]` (rounded
+    /// up; docs/ACCURACY.md, "T.CHECK's certificate"): M_AB* is the exact [R^T | -R^T t]
+    /// of the f64 pose, and beta_f also covers the f64 placement of B's vertices into A's
+    /// frame (the geometry the oracle judges), seen in B's frame.
+    pub beta_ab: [f64; 2],
+    /// The same for M_BA = [R | t]; its translation error covers B's placement.
+    pub beta_ba: [f64; 2],
+    /// [S_A, S_B], the objects' scales ([`crate::memory::object_scale`]).
+    pub scale: [f64; 2],
+}
+
+/// What T.CHECK's error words need of the two objects
+/// ([`ObjectImage::tri_side`](crate::memory::ObjectImage::tri_side)).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TriSide {
+    /// [S_A, S_B].
+    pub scale: [f64; 2],
+    /// The largest lambda >= |L*|_inf of B's triangles: the placement bound needs
+    /// 4 lambda eta <= 1/2.
+    pub lambda_max_b: f64,
+}
+
+impl TriSide {
+    /// For a setup whose T.CHECK words nobody reads (the DOP unit's): unknown lambda.
+    pub const UNUSED: TriSide = TriSide { scale: [1.0, 1.0], lambda_max_b: f64::INFINITY };
 }
 
 impl HostSetup {
     /// `b_coord_bound` is X = max |x|_inf over B's root DOP ([`super::DopTree::coord_bound`]).
-    pub fn new(cfg: &ChipConfig, pose: &Pose, b_coord_bound: f64) -> HostSetup {
+    pub fn new(cfg: &ChipConfig, pose: &Pose, b_coord_bound: f64, tri: TriSide) -> HostSetup {
         let normals = DopNormals::get(cfg.k).expect("k validated by the caller");
         let rot = pose.rotation();
         let t = pose.translation();
@@ -84,42 +101,61 @@ impl HostSetup {
         }
         let rt = rot.transpose();
         let tab = -(rt * t);
-        // T.CHECK's maps and their error bounds, in its format.
+        // T.CHECK's maps and their error words, in its format.
         let fmt = cfg.format.tri;
-        let (m_ba, e_ba) = affine(fmt, &rot, &t);
-        let (m_ab, e_ab) = affine(fmt, &rt, &tab);
-        // The f64 products and sums: |fl(R^T t) - R^T t| <= 4u |R^T| |t| per entry.
         let u = 2f64.powi(-53);
-        let e_ab_tr = e_ab[1] + 4.0 * u * (rt.abs() * t.abs()).max();
-        // |fl(R x + t) - (R x + t)| <= 4u (|R| |x| + |t|), |R|_inf <= sqrt 3, |x|_inf <= X.
+        // |fl(R x + t) - (R x + t)| <= 4u (|R| |x| + |t|), |R|_inf <= sqrt 3, |x|_inf <= X;
+        // eta: the same move seen in B's frame.
         let place = 4.0 * u * (3f64.sqrt() * b_coord_bound + t_inf);
-        let up = |x: f64| fmt.round(x * (1.0 + 2f64.powi(-50)), Rounding::TowardPositive);
+        let eta = 3f64.sqrt() * place;
+        // The f64 products and sums: |fl(R^T t) - R^T t| <= 4u |R^T| |t| per entry.
+        let tab_err = 4.0 * u * (rt.abs() * t.abs()).max();
+        let m_ab = affine(fmt, &rt, &tab);
+        let m_ba = affine(fmt, &rot, &t);
+        // The placement bound needs 4 lambda eta <= 1/2 for every leaf of B.
+        let eta_ab = if 4.0 * tri.lambda_max_b * eta <= 0.5 { eta } else { f64::INFINITY };
+        let [sa, sb] = tri.scale;
         HostSetup {
             j,
             cmat,
             cvec,
             m_ab,
             m_ba,
-            e_ab: [up(e_ab[0]), up(e_ab_tr)],
-            e_ba: [up(e_ba[0]), up(e_ba[1] + place)],
-            eta: up(3f64.sqrt() * place),
+            beta_ab: betas(fmt, &m_ab, tab_err, eta_ab, sb, sa),
+            beta_ba: betas(fmt, &m_ba, place, 0.0, sa, sb),
+            scale: tri.scale,
         }
     }
 }
 
-/// [l | t] rounded to nearest, and the largest rounding error of [linear, translation] entries.
-fn affine(fmt: Format, l: &Matrix3<f64>, t: &Vector3<f64>) -> (Affine, [f64; 2]) {
+/// `[beta_m, beta_f]` of a frame map `b` (rounded to nearest from the f64 one, whose
+/// translation is within `tr_err` of the ideal) into the leaf's object (scale `s_l`) from
+/// the vertices' object (scale `s_v`), `eta` the placement move of the leaf's vertices (0
+/// for the direction B vs U(A)), rounded up (docs/ACCURACY.md, "T.CHECK's certificate").
+fn betas(fmt: Format, b: &Affine, tr_err: f64, eta: f64, s_l: f64, s_v: f64) -> [f64; 2] {
+    let half = 2f64.powi(-(fmt.frac_bits() as i32) - 1);
+    let u1 = half / (1.0 - half);
+    // the stored words' subnormal rounding; the vertices' too (a_x)
+    let eta_s = fmt.min_positive_subnormal() / 2.0;
+    let (a_lin, a_tr, a_x) = (eta_s, eta_s + tr_err, eta_s);
+    let col = |j: usize, a: f64| (0..3).map(|k| (1.0 + u1) * b[k][j].abs() + a).sum::<f64>();
+    let b_lin = (0..3).map(|j| col(j, a_lin)).fold(0.0, f64::max);
+    let b_tr = col(3, a_tr);
+    let bm = (1.0 + u1) * b_lin + (b_tr + s_l) / s_v + 1.0;
+    let bf = (1.0 + u1) * a_lin + (a_tr + 3.0 * a_x * b_lin + eta) / s_v + eta * (1.0 + u1) * b_lin / s_l + eta * b_tr / (s_l * s_v);
+    let up = |x: f64| fmt.round(x * (1.0 + 2f64.powi(-40)), Rounding::TowardPositive);
+    [up(bm), up(bf)]
+}
+
+/// [l | t] rounded to nearest.
+fn affine(fmt: Format, l: &Matrix3<f64>, t: &Vector3<f64>) -> Affine {
     let mut m = [[0.0; 4]; 3];
-    let mut err = [0.0f64; 2];
     for (r, row) in m.iter_mut().enumerate() {
         for (c, x) in row.iter_mut().enumerate() {
-            let v = if c < 3 { l[(r, c)] } else { t[r] };
-            *x = fmt.round(v, Rounding::NearestEven);
-            let e = &mut err[(c == 3) as usize];
-            *e = e.max((*x - v).abs());
+            *x = fmt.round(if c < 3 { l[(r, c)] } else { t[r] }, Rounding::NearestEven);
         }
     }
-    (m, err)
+    m
 }
 
 /// The hull triangle whose cone contains `b`: the one the ray through b leaves the hull

@@ -5,6 +5,6 @@ pub mod host;
 pub mod normals;
 pub mod tree;
 
-pub use host::HostSetup;
+pub use host::{HostSetup, TriSide};
 pub use normals::{DopNormals, SUPPORTED_K};
 pub use tree::{DopTree, Node};

@@ -1,9 +1,13 @@
-//! T.CHECK (DATE'05 §4.2, Eqs. 8, 9, 11-13) and TRI_UNIT (two T.CHECKs), with the
-//! uncertainty flag: every value carries a bound on its distance from the ideal value
-//! (exact arithmetic on the exact inputs), and a sign decision within that bound is
-//! "unknown". T.CHECK never guesses: a pair is reported intersecting only if some edge
+//! T.CHECK (DATE'05 §4.2, Eqs. 8, 9, 11-13) and TRI_UNIT (two T.CHECKs), certified: each
+//! sign the test depends on is decided only when it lies outside an error bound that the
+//! chip computes *beside* the value, not behind it. Beside every value x the chip runs the
+//! same expression on the absolute values of the operands, rounded upward: a magnitude
+//! M_x >= |x| (and >= the exact expression on absolute values). The error of x is then at
+//! most `g_x M_x` for a constant g_x of the format (a static filter, as Shewchuk's orient3d
+//! bound `(7 + 56 eps) eps` times a permanent), plus input errors that the host folds into
+//! two per-leaf and two per-pose words. A pair is reported intersecting only if some edge
 //! surely crosses, separate only if every edge surely misses, and uncertain otherwise
-//! (docs/ACCURACY.md has the derivation).
+//! (docs/ACCURACY.md, "T.CHECK's certificate", derives every constant).
 //!
 //! T.CHECK maps triangle A's vertices into the space where triangle B is the unit
 //! triangle U = {(u, v, 0) : u, v >= 0, u + v <= 1} and tests A's three edges against U.
@@ -18,215 +22,143 @@
 //! stage 5  crossing = (Pz < 0, Qz > 0, r_z > 0, a > 0, b > 0, s < 0)   P below, Q above
 //!                  or (Qz < 0, Pz > 0, r_z < 0, a < 0, b < 0, s > 0)   the mirror
 //! ```
-//! where m = M_B (leaf of B) and b = M_AB (A's frame to B's frame). Each comparison is
-//! three-valued (sure, surely not, unknown) and combined in Kleene logic. Derivation of
-//! stage 5: the edge meets z = 0 at X = P + (-Pz / r_z)(Q - P) = (a / r_z, b / r_z, 0); X is
-//! in U iff a/r_z >= 0, b/r_z >= 0, (a+b)/r_z <= 1: Eq. 8 negated when r_z > 0, and the
-//! mirrored signs when r_z < 0 (DATE'05's "other criterion": P and Q swapped). Two
-//! triangles in general position intersect iff an edge of one meets the other, so TRI_UNIT
-//! runs A's edges against U(B) and B's edges against U(A). A degenerate triangle has no
-//! M_B: that direction is unknown.
+//! where m = M_B (leaf of B) and b = M_AB (A's frame to B's frame). The magnitudes follow
+//! the same order with every operand's sign cleared and every subtraction an addition,
+//! except that the mapped vertex's translation term Mb_i3 gets `A' L1(x)` added (A' =
+//! alpha_m beta_m + alpha_f beta_f, L1(x) = |x| + |y| + |z| + S_V: the input errors). Each
+//! comparison is three-valued (sure, surely not, unknown) and combined in Kleene logic.
+//! Derivation of stage 5: the edge meets z = 0 at X = P + (-Pz / r_z)(Q - P) = (a / r_z,
+//! b / r_z, 0); X is in U iff a/r_z >= 0, b/r_z >= 0, (a+b)/r_z <= 1: Eq. 8 negated when
+//! r_z > 0, and the mirrored signs when r_z < 0 (DATE'05's "other criterion": P and Q
+//! swapped). Two triangles in general position intersect iff an edge of one meets the
+//! other, so TRI_UNIT runs A's edges against U(B) and B's edges against U(A). A degenerate
+//! triangle has no M_B: that direction is unknown.
 
 use crate::dop::host::{Affine, HostSetup};
 use crate::format::{Format, Rounding};
 use crate::memory::TriWord;
-use std::cell::Cell;
 
-/// A datapath value and a bound on its distance from the ideal value: |x - x*| <= e.
-#[derive(Clone, Copy, Debug, PartialEq, Default)]
-pub struct Bounded {
-    pub x: f64,
-    pub e: f64,
+const UP: Rounding = Rounding::TowardPositive;
+
+/// The constants of T.CHECK's certificate for a value format and rounding
+/// (docs/ACCURACY.md, "T.CHECK's certificate"). `g_v` is the mapped vertices' error
+/// factor (f64, exact to 2^-50); `c_*` are the format values the chip multiplies by
+/// (rounded up).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Certificate {
+    /// Unit roundoff of the value datapath: 2^-(F+1) to nearest, 2^-F directed.
+    pub u: f64,
+    /// Mapped vertex coordinates: |V - V*| <= g_v M_V, for vertices the host rounded ([0])
+    /// or exact ones ([1]).
+    pub g_v: [f64; 2],
+    /// C_V = g_v (1 + 2^-40) rounded up: a coordinate's bound is `C_V M_V`.
+    pub c_v: [f64; 2],
+    /// >= 2u + u^2: the rounding of a product and the difference after it, per unit of
+    /// the operands' magnitudes (a, b; and s's two additions).
+    pub c_2u: f64,
+    /// >= u (1 + u): r_z's rounding per unit of |Pz| + |Qz|.
+    pub c_1u: f64,
+    /// F1: a power of two that every mapped vertex's magnitude is at least (the host's
+    /// alpha_m is floored so): (g_v F1)^2 >= the largest underflow error of a product.
+    pub floor: f64,
 }
 
-impl Bounded {
-    /// Surely positive, surely negative, or unknown (`None`): NaN is unknown.
-    pub fn sign(self) -> Option<bool> {
-        if self.x > self.e {
-            Some(true)
-        } else if self.x < -self.e {
-            Some(false)
-        } else {
-            None
-        }
-    }
-
-    fn neg(self) -> Bounded {
-        Bounded { x: -self.x, e: self.e }
+impl Certificate {
+    pub fn new(f: Format, r: Rounding) -> Certificate {
+        let half = 2f64.powi(-(f.frac_bits() as i32) - 1);
+        let nearest = r == Rounding::NearestEven;
+        let u = if nearest { half } else { 2.0 * half };
+        // The host rounds M_B, the frame map and the vertices to nearest: relative error
+        // u1 of the stored value (normal results; subnormal ones go to the absolute terms).
+        let u1 = half / (1.0 - half);
+        // A product's absolute error below 2^emin: half the smallest subnormal to nearest.
+        let eta = f.min_positive_subnormal() * if nearest { 0.5 } else { 1.0 };
+        let g_v = [u1, 0.0].map(|gx| 6.0 * u + ((1.0 + u1) * (1.0 + u1) * (1.0 + gx) - 1.0));
+        let floor = 2f64.powi((eta.sqrt() / g_v[1]).log2().ceil() as i32);
+        let up = |g: f64| f.round(g * (1.0 + 2f64.powi(-40)), UP);
+        Certificate { u, g_v, c_v: g_v.map(up), c_2u: up(2.0 * u + u * u), c_1u: up(u + u * u), floor }
     }
 }
 
-/// The chip's bound addition (`rtl::*::BoundAdd`): `max(next_up(RNE(a + b)), m)`, m = the
-/// format's smallest normal value; for bounds a, b >= 0 an upper bound of a + b that is a
-/// normal value of the format or +inf. `f64::max` drops a NaN (IEEE maxNum): a NaN sum
-/// (a NaN operand) gives m, and so does a negative one.
+/// `(a0 b0 + a1 b1) + a2 b2`, or `(a0 b0 + a1 b1) + (a2 b2 + c)` with a translation term,
+/// every operation rounded with `r`: the one dot product of stages 1 and 2.
 #[inline(always)]
-pub fn bound_add(f: Format, a: f64, b: f64) -> f64 {
-    f.next_up(f.add(a, b, Rounding::NearestEven)).max(f.min_positive_normal())
+fn dot(f: Format, r: Rounding, a: [f64; 3], b: [f64; 3], c: Option<f64>) -> f64 {
+    let p = |k: usize| f.mul(a[k], b[k], r);
+    let s01 = f.add(p(0), p(1), r);
+    match c {
+        None => f.add(s01, p(2), r),
+        Some(c) => f.add(s01, f.add(p(2), c, r), r),
+    }
 }
 
-/// The chip's bound multiplication (`rtl::*::BoundMul`): `max(next_up(RNE(a * b)), m)`, as
-/// [`bound_add`] (`inf * 0`, a NaN, gives m).
+/// [`dot`]'s magnitude: the same expression on absolute values, rounded upward.
 #[inline(always)]
-pub fn bound_mul(f: Format, a: f64, b: f64) -> f64 {
-    f.next_up(f.mul(a, b, Rounding::NearestEven)).max(f.min_positive_normal())
+fn dot_mag(f: Format, a: [f64; 3], b: [f64; 3], c: Option<f64>) -> f64 {
+    dot(f, UP, a.map(f64::abs), b.map(f64::abs), c.map(f64::abs))
 }
 
-/// The chip's bound on the rounding error of a result x rounded with `r`
-/// (`rtl::*::RoundErr`): `max(ulp(x)/2, m)` to nearest, `max(ulp(x), m)` directed, m the
-/// smallest normal, so a power of two of the format: ±inf gives +inf, NaN gives m
-/// (`f64::max`), zeros and subnormals give m.
+/// The sign of a value with bound `bound`: surely positive (`x > bound`), surely negative
+/// (`x < -bound`), or unknown (`None`, also for a NaN x or an infinite bound).
 #[inline(always)]
-pub fn rounding_error(f: Format, r: Rounding, x: f64) -> f64 {
-    let ulp = f.ulp(x);
-    let m = f.min_positive_normal();
-    if r == Rounding::NearestEven { (0.5 * ulp).max(m) } else { ulp.max(m) }
-}
-
-/// The datapath's arithmetic on bounded values. Values are rounded in the T.CHECK rounding.
-/// The chip computes bounds in the same format: each operation rounded to nearest, stepped
-/// up to the next value of the format and floored at the smallest normal m (an upper
-/// bound of the exact result, cheaper than a directed-rounding unit, and never subnormal),
-/// in this order: add: `(ea + eb) + err(x)`; mul: `(ea |b| + eb |a|) + (ea eb + err(x))`,
-/// err(x) being the rounding error bound of x: ulp(x)/2 to nearest, ulp(x) directed.
-#[derive(Clone, Copy)]
-struct Arith<'c> {
-    f: Format,
-    r: Rounding,
-    /// The smallest normal value of the format.
-    m: f64,
-    mode: BoundMode<'c>,
-}
-
-#[derive(Clone, Copy)]
-enum BoundMode<'c> {
-    /// The chip's bound arithmetic.
-    Chip,
-    /// An f64 estimate that decides most signs as the chip would, and says when it cannot.
-    Estimate(&'c Estimate),
-}
-
-/// The f64 estimate e64 of a bound computes the same expression in f64 with the same floor.
-/// Every chip bound operation is within a factor (1 + 2^(1-F)) of the exact one on normal
-/// values, and no chain is deeper than 64 operations, so the chip's bound lies in
-/// [e64 (1 - 2^-40), e64 hi] with hi = (1 + 2^(1-F))^64 (1 + 2^-40): a sign is the chip's
-/// when |x| > e64 hi (sure) or |x| <= e64 (1 - 2^-40) (unknown); in between, or near
-/// overflow, the T.CHECK is redone with the chip's arithmetic.
-pub(crate) struct Estimate {
-    hi: f64,
-    lo: f64,
-    max: f64,
-    ambiguous: Cell<bool>,
-}
-
-impl Estimate {
-    fn new(f: Format) -> Estimate {
-        let hi = (1.0 + 2f64.powi(1 - f.frac_bits() as i32)).powi(64) * (1.0 + 2f64.powi(-40));
-        Estimate { hi, lo: 1.0 - 2f64.powi(-40), max: f.max_finite() / (4.0 * hi), ambiguous: Cell::new(false) }
+pub fn sign(x: f64, bound: f64) -> Option<bool> {
+    if x > bound {
+        Some(true)
+    } else if x < -bound {
+        Some(false)
+    } else {
+        None
     }
 }
 
-impl<'c> Arith<'c> {
-    fn new(f: Format, r: Rounding, mode: BoundMode<'c>) -> Self {
-        Arith { f, r, m: f.min_positive_normal(), mode }
-    }
+/// Stage 1's output: M_b and its magnitude.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Stage1 {
+    pub mb: Affine,
+    pub mag: Affine,
+    /// A' = alpha_m beta_m + alpha_f beta_f, rounded up: the input errors per unit of L1(x).
+    pub a_err: f64,
+    /// S_V, the scale of the vertices' object: L1(x) = |x| + |y| + |z| + S_V.
+    pub scale: f64,
+}
 
-    #[inline(always)]
-    fn up(&self, a: f64, b: f64) -> f64 {
-        match self.mode {
-            BoundMode::Chip => bound_add(self.f, a, b),
-            BoundMode::Estimate(_) => (a + b).max(self.m),
+/// Stage 1: M_b = M_B . M_f (Eqs. 11, 12) and its magnitude for the leaf word `leaf` and
+/// a frame map `frame` with its error words `beta` ([`HostSetup::beta_ab`]), `scale` the
+/// vertices' object's ([`HostSetup::scale`]).
+pub fn stage1(f: Format, r: Rounding, leaf: &TriWord, frame: &Affine, beta: [f64; 2], scale: f64) -> Stage1 {
+    let m = &leaf.m;
+    let mut mb = [[0.0; 4]; 3];
+    let mut mag = [[0.0; 4]; 3];
+    for i in 0..3 {
+        for j in 0..4 {
+            let col = [frame[0][j], frame[1][j], frame[2][j]];
+            let row = [m[i][0], m[i][1], m[i][2]];
+            let c = (j == 3).then_some(m[i][3]);
+            mb[i][j] = dot(f, r, row, col, c);
+            mag[i][j] = dot_mag(f, row, col, c);
         }
     }
-
-    #[inline(always)]
-    fn upm(&self, a: f64, b: f64) -> f64 {
-        match self.mode {
-            BoundMode::Chip => bound_mul(self.f, a, b),
-            BoundMode::Estimate(_) => (a * b).max(self.m),
-        }
-    }
-
-    /// The sign decision of stage 5: surely positive, surely negative, unknown (`None`).
-    #[inline(always)]
-    fn sign(&self, v: Bounded) -> Option<bool> {
-        match self.mode {
-            BoundMode::Chip => v.sign(),
-            BoundMode::Estimate(est) => {
-                let ax = v.x.abs();
-                if v.e <= est.max && ax > v.e * est.hi {
-                    Some(v.x > 0.0)
-                } else if v.e <= est.max && ax <= v.e * est.lo {
-                    None
-                } else {
-                    est.ambiguous.set(true);
-                    None
-                }
-            }
-        }
-    }
-
-    /// `v <= limit` for a bound v, with the estimate's band.
-    fn at_most(&self, v: f64, limit: f64) -> bool {
-        match self.mode {
-            BoundMode::Chip => v <= limit,
-            BoundMode::Estimate(est) => {
-                if v * est.hi <= limit {
-                    true
-                } else {
-                    if v * est.lo <= limit {
-                        est.ambiguous.set(true);
-                    }
-                    false
-                }
-            }
-        }
-    }
-
-    fn rounding_error_nearest(&self, x: f64) -> f64 {
-        rounding_error(self.f, Rounding::NearestEven, x)
-    }
-
-    /// Bound on the rounding error of a result x ([`rounding_error`]).
-    #[inline(always)]
-    fn rounding_error(&self, x: f64) -> f64 {
-        rounding_error(self.f, self.r, x)
-    }
-
-    #[inline(always)]
-    fn add(&self, a: Bounded, b: Bounded) -> Bounded {
-        let x = self.f.add(a.x, b.x, self.r);
-        Bounded { x, e: self.up(self.up(a.e, b.e), self.rounding_error(x)) }
-    }
-
-    #[inline(always)]
-    fn sub(&self, a: Bounded, b: Bounded) -> Bounded {
-        self.add(a, b.neg())
-    }
-
-    #[inline(always)]
-    fn mul(&self, a: Bounded, b: Bounded) -> Bounded {
-        let x = self.f.mul(a.x, b.x, self.r);
-        let e = self.up(
-            self.up(self.upm(a.e, b.x.abs()), self.upm(b.e, a.x.abs())),
-            self.up(self.upm(a.e, b.e), self.rounding_error(x)),
-        );
-        Bounded { x, e }
-    }
+    let a_err = f.add(f.mul(leaf.alpha_m, beta[0], UP), f.mul(leaf.alpha_f, beta[1], UP), UP);
+    Stage1 { mb, mag, a_err, scale }
 }
 
-/// Stage 1 output: M_b with bounds.
-pub type BoundedAffine = [[Bounded; 4]; 3];
-
-/// Every intermediate of one T.CHECK, for bit-exact comparison with the RTL.
+/// Every intermediate of one T.CHECK that the RTL shows, for bit-exact comparison.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Trace {
-    pub mb: BoundedAffine,
-    pub v: [[Bounded; 3]; 3],
-    pub a: [Bounded; 3],
-    pub b: [Bounded; 3],
-    pub rz: [Bounded; 3],
-    pub s: [Bounded; 3],
+    pub stage1: Stage1,
+    /// Mapped vertex k, coordinate i, its magnitude and its bound.
+    pub v: [[f64; 3]; 3],
+    pub v_mag: [[f64; 3]; 3],
+    pub v_bound: [[f64; 3]; 3],
+    /// Per edge: the values and their bounds.
+    pub a: [f64; 3],
+    pub b: [f64; 3],
+    pub rz: [f64; 3],
+    pub s: [f64; 3],
+    pub a_bound: [f64; 3],
+    pub b_bound: [f64; 3],
+    pub rz_bound: [f64; 3],
+    pub s_bound: [f64; 3],
     /// Per edge: crosses, misses, or unknown (`None`).
     pub crossing: [Option<bool>; 3],
 }
@@ -254,101 +186,85 @@ fn and3(it: impl Iterator<Item = Option<bool>>) -> Option<bool> {
     or3(it.map(|x| x.map(|b| !b))).map(|b| !b)
 }
 
-/// The map of a leaf or a frame with its bounds [linear entries, translation entries].
-fn bounded_affine(m: &Affine, err: [f64; 2]) -> BoundedAffine {
-    let mut out = [[Bounded::default(); 4]; 3];
-    for (row, mrow) in out.iter_mut().zip(m) {
-        for (c, (o, &x)) in row.iter_mut().zip(mrow).enumerate() {
-            *o = Bounded { x, e: err[(c == 3) as usize] };
-        }
-    }
-    out
+/// Stages 2-5 on stage 1's output and the triangle word `tri` (its vertices and whether
+/// they are exact), every intermediate computed.
+pub fn edges(f: Format, r: Rounding, cert: &Certificate, s1: &Stage1, tri: &TriWord) -> Trace {
+    edges_in(f, r, cert, s1, tri, true)
 }
 
-/// Stage 1: M_b = M_B . M_AB (Eqs. 11, 12) for the leaf word `leaf` and a frame map `b`
-/// with bounds `b_err`.
-pub fn stage1(f: Format, r: Rounding, leaf: &TriWord, b: &Affine, b_err: [f64; 2]) -> BoundedAffine {
-    stage1_in(&Arith::new(f, r, BoundMode::Chip), leaf, b, b_err)
-}
-
-fn stage1_in(ar: &Arith, leaf: &TriWord, b: &Affine, b_err: [f64; 2]) -> BoundedAffine {
-    let m = bounded_affine(&leaf.m, [leaf.e_lin, leaf.e_tr]);
-    let b = bounded_affine(b, b_err);
-    let mut mb = [[Bounded::default(); 4]; 3];
-    for i in 0..3 {
-        for j in 0..3 {
-            mb[i][j] = ar.add(ar.add(ar.mul(m[i][0], b[0][j]), ar.mul(m[i][1], b[1][j])), ar.mul(m[i][2], b[2][j]));
-        }
-        mb[i][3] = ar.add(
-            ar.add(ar.mul(m[i][0], b[0][3]), ar.mul(m[i][1], b[1][3])),
-            ar.add(ar.mul(m[i][2], b[2][3]), m[i][3]),
-        );
-    }
-    mb
-}
-
-/// Stages 2-5 on the output `mb` of stage 1 and the triangle word `tri` (its vertices and
-/// whether they are exact). `gap` widens the bounds
-/// of the mapped vertices for a unit triangle that is itself only known within `eta`
-/// (direction A vs U(B): `Some((leaf of B, eta))`; see docs/ACCURACY.md).
-pub fn edges(f: Format, r: Rounding, mb: &BoundedAffine, tri: &TriWord, gap: Option<(&TriWord, f64)>) -> Trace {
-    edges_in(&Arith::new(f, r, BoundMode::Chip), mb, tri, gap)
-}
-
-fn edges_in(ar: &Arith, mb: &BoundedAffine, tri: &TriWord, gap: Option<(&TriWord, f64)>) -> Trace {
-    let v = &tri.v;
-    let mut vt = [[Bounded::default(); 3]; 3];
-    for (p, out) in v.iter().zip(vt.iter_mut()) {
-        // The host rounded the vertices to nearest (no error if it says they were exact).
-        let p = p.map(|x| Bounded { x, e: if tri.v_exact { 0.0 } else { ar.rounding_error_nearest(x) } });
+/// `complete = false` skips an edge whose ends are surely on one side of the plane (both
+/// conjunctions are surely false, whatever the other signs: the chip's verdict is the same)
+/// and leaves its trace entries at 0.
+fn edges_in(f: Format, r: Rounding, cert: &Certificate, s1: &Stage1, tri: &TriWord, complete: bool) -> Trace {
+    let c_v = cert.c_v[tri.v_exact as usize];
+    let (mb, mag) = (&s1.mb, &s1.mag);
+    let add = |x: f64, y: f64| f.add(x, y, UP);
+    let mul = |x: f64, y: f64| f.mul(x, y, UP);
+    let mut t = Trace {
+        stage1: *s1,
+        v: [[0.0; 3]; 3],
+        v_mag: [[0.0; 3]; 3],
+        v_bound: [[0.0; 3]; 3],
+        a: [0.0; 3],
+        b: [0.0; 3],
+        rz: [0.0; 3],
+        s: [0.0; 3],
+        a_bound: [0.0; 3],
+        b_bound: [0.0; 3],
+        rz_bound: [0.0; 3],
+        s_bound: [0.0; 3],
+        crossing: [None; 3],
+    };
+    // Per vertex: E (the bound), E' = E + c |v| (x, y: with the rounding of a and b; z:
+    // with r_z's), and H = |z| + 2 E_z.
+    let (mut e1, mut hz) = ([[0.0; 3]; 3], [0.0; 3]);
+    for (k, p) in tri.v.iter().enumerate() {
+        let l1 = add(add(p[0].abs(), p[1].abs()), add(p[2].abs(), s1.scale));
+        let err = mul(s1.a_err, l1);
         for i in 0..3 {
-            out[i] = ar.add(ar.add(ar.mul(mb[i][0], p[0]), ar.mul(mb[i][1], p[1])), ar.add(ar.mul(mb[i][2], p[2]), mb[i][3]));
+            let row = [mb[i][0], mb[i][1], mb[i][2]];
+            t.v[k][i] = dot(f, r, row, *p, Some(mb[i][3]));
+            let mrow = [mag[i][0], mag[i][1], mag[i][2]];
+            t.v_mag[k][i] = dot_mag(f, mrow, *p, Some(add(mag[i][3], err)));
+            t.v_bound[k][i] = mul(c_v, t.v_mag[k][i]);
+            let c = if i < 2 { cert.c_2u } else { cert.c_1u };
+            e1[k][i] = add(t.v_bound[k][i], mul(c, t.v[k][i].abs()));
         }
-        if let Some((leaf, eta)) = gap {
-            let g = vertex_gap(ar, leaf, eta, out[0], out[1]);
-            for o in out.iter_mut() {
-                o.e = ar.up(o.e, g);
-            }
-        }
+        hz[k] = add(t.v[k][2].abs(), add(t.v_bound[k][2], t.v_bound[k][2]));
     }
-    let (mut a, mut bb, mut rz, mut s) = ([Bounded::default(); 3], [Bounded::default(); 3], [Bounded::default(); 3], [Bounded::default(); 3]);
-    let mut crossing = [None; 3];
+    let (v, vb) = (t.v, t.v_bound);
     for e in 0..3 {
-        let (p, q) = (vt[e], vt[(e + 1) % 3]);
-        if let BoundMode::Estimate(_) = ar.mode {
-            // Both ends surely on one side: both conjunctions are surely false, whatever
-            // the other signs; the chip's verdict is the same (its trace is complete).
-            let (sp, sq) = (ar.sign(p[2]), ar.sign(q[2]));
-            if sp.is_some() && sp == sq {
-                crossing[e] = Some(false);
-                continue;
-            }
+        let (p, q) = (e, (e + 1) % 3);
+        let (sp, sq) = (sign(v[p][2], vb[p][2]), sign(v[q][2], vb[q][2]));
+        if !complete && sp.is_some() && sp == sq {
+            t.crossing[e] = Some(false);
+            continue;
         }
-        a[e] = ar.sub(ar.mul(p[0], q[2]), ar.mul(q[0], p[2]));
-        bb[e] = ar.sub(ar.mul(p[1], q[2]), ar.mul(q[1], p[2]));
-        rz[e] = ar.sub(q[2], p[2]);
-        s[e] = ar.sub(ar.add(a[e], bb[e]), rz[e]);
-        let signs = [p[2], q[2], rz[e], a[e], bb[e], s[e]].map(|v| ar.sign(v));
+        // a = Px Qz - Qx Pz (coordinate 0), b the same with y (coordinate 1); the bound
+        // E'_Px H_Qz + |Px| E_Qz + E'_Qx H_Pz + |Qx| E_Pz
+        let cross = |i: usize| {
+            let x = f.sub(f.mul(v[p][i], v[q][2], r), f.mul(v[q][i], v[p][2], r), r);
+            let pq = add(mul(e1[p][i], hz[q]), mul(v[p][i].abs(), vb[q][2]));
+            let qp = add(mul(e1[q][i], hz[p]), mul(v[q][i].abs(), vb[p][2]));
+            (x, add(pq, qp))
+        };
+        let (a, a_bound) = cross(0);
+        let (b, b_bound) = cross(1);
+        let rz = f.sub(v[q][2], v[p][2], r);
+        let rz_bound = add(e1[q][2], e1[p][2]);
+        let s = f.sub(f.add(a, b, r), rz, r);
+        let s_round = mul(cert.c_2u, add(add(a.abs(), b.abs()), rz.abs()));
+        let s_bound = add(add(a_bound, b_bound), add(rz_bound, s_round));
+        (t.a[e], t.b[e], t.rz[e], t.s[e]) = (a, b, rz, s);
+        (t.a_bound[e], t.b_bound[e], t.rz_bound[e], t.s_bound[e]) = (a_bound, b_bound, rz_bound, s_bound);
+        let signs = [sp, sq, sign(rz, rz_bound), sign(a, a_bound), sign(b, b_bound), sign(s, s_bound)];
         // Wanted signs (true = positive) of Pz, Qz, r_z, a, b, s for P below / Q below.
         let up = [false, true, true, true, true, false];
         let down = [true, false, false, false, false, true];
         let holds = |want: [bool; 6]| and3(signs.iter().zip(want).map(|(s, w)| s.map(|s| s == w)));
-        crossing[e] = or3([holds(up), holds(down)].into_iter());
+        t.crossing[e] = or3([holds(up), holds(down)].into_iter());
     }
-    Trace { mb: *mb, v: vt, a, b: bb, rz, s, crossing }
-}
-
-/// How far the mapped vertex (u, v, z) can move when B's vertices move by eta:
-/// 2 lambda eta (1 + 2 (|u| + e_u) + 2 (|v| + e_v)) with lambda = l_norm + e_lin >= |L*|,
-/// valid while 4 lambda eta <= 1/2 (else unbounded).
-fn vertex_gap(ar: &Arith, leaf: &TriWord, eta: f64, u: Bounded, v: Bounded) -> f64 {
-    let lambda = ar.up(leaf.l_norm, leaf.e_lin);
-    if !ar.at_most(ar.upm(ar.upm(4.0, lambda), eta), 0.5) {
-        return f64::INFINITY;
-    }
-    let uv = ar.up(ar.up(u.x.abs(), u.e), ar.up(v.x.abs(), v.e));
-    let w = ar.up(1.0, ar.upm(2.0, uv));
-    ar.upm(ar.upm(2.0, lambda), ar.upm(eta, w))
+    t
 }
 
 /// Intersecting (surely), separate (surely), or uncertain.
@@ -370,34 +286,32 @@ impl TriResult {
 /// TRI_UNIT: A's edges against U(B), then B's edges against U(A); a degenerate leaf
 /// leaves its direction unknown.
 pub fn tri_unit(f: Format, r: Rounding, a: &TriWord, b: &TriWord, setup: &HostSetup) -> TriResult {
-    let d1 = (!b.degenerate).then(|| edges(f, r, &stage1(f, r, b, &setup.m_ab, setup.e_ab), a, Some((b, setup.eta))).result());
-    let d2 = (!a.degenerate).then(|| edges(f, r, &stage1(f, r, a, &setup.m_ba, setup.e_ba), b, None).result());
+    let cert = Certificate::new(f, r);
+    let d1 = (!b.degenerate).then(|| edges(f, r, &cert, &stage1(f, r, b, &setup.m_ab, setup.beta_ab, setup.scale[0]), a).result());
+    let d2 = (!a.degenerate).then(|| edges(f, r, &cert, &stage1(f, r, a, &setup.m_ba, setup.beta_ba, setup.scale[1]), b).result());
     TriResult::of(d1.flatten(), d2.flatten())
 }
 
 /// TRI_UNIT during one query: the same results as [`tri_unit`] bit for bit (tested),
-/// faster: stage 1 depends on one leaf and the pose only and is kept per leaf, and the
-/// bounds are first estimated in f64 ([`Estimate`]); only a T.CHECK whose signs the
-/// estimate cannot settle is redone with the chip's bound arithmetic.
+/// faster: stage 1 depends on one leaf and the pose only and is kept per leaf, and an edge
+/// whose ends are surely on one side is not computed further.
 pub struct TriUnit<'a> {
     f: Format,
     r: Rounding,
+    cert: Certificate,
     setup: &'a HostSetup,
-    est: Estimate,
-    /// Per triangle of B: M_B(b) . M_AB; per triangle of A: M_A(a) . M_BA (estimated bounds).
+    /// Per triangle of B: M_B(b) . M_AB; per triangle of A: M_A(a) . M_BA.
     mb_b: StageOneCache,
     mb_a: StageOneCache,
-    /// T.CHECKs redone with the chip's bound arithmetic.
-    pub exact_redos: u64,
 }
 
 struct StageOneCache {
     slot: Vec<u32>,
-    values: Vec<BoundedAffine>,
+    values: Vec<Stage1>,
 }
 
 impl StageOneCache {
-    fn get(&mut self, t: u32, compute: impl FnOnce() -> BoundedAffine) -> &BoundedAffine {
+    fn get(&mut self, t: u32, compute: impl FnOnce() -> Stage1) -> &Stage1 {
         let mut s = self.slot[t as usize];
         if s == u32::MAX {
             s = self.values.len() as u32;
@@ -411,7 +325,7 @@ impl StageOneCache {
 impl<'a> TriUnit<'a> {
     pub fn new(f: Format, r: Rounding, setup: &'a HostSetup, tris_a: usize, tris_b: usize) -> Self {
         let cache = |n| StageOneCache { slot: vec![u32::MAX; n], values: vec![] };
-        TriUnit { f, r, setup, est: Estimate::new(f), mb_b: cache(tris_b), mb_a: cache(tris_a), exact_redos: 0 }
+        TriUnit { f, r, cert: Certificate::new(f, r), setup, mb_b: cache(tris_b), mb_a: cache(tris_a) }
     }
 
     /// Triangle `ta` of A (word `a`) against `tb` of B (word `b`). A sure hit in the first
@@ -429,17 +343,9 @@ impl<'a> TriUnit<'a> {
     /// when `ab`, else of A).
     fn direction(&mut self, t: u32, leaf: &TriWord, v: &TriWord, ab: bool) -> Option<bool> {
         let (f, r, setup) = (self.f, self.r, self.setup);
-        let (frame, err, gap) = if ab { (&setup.m_ab, setup.e_ab, Some((leaf, setup.eta))) } else { (&setup.m_ba, setup.e_ba, None) };
-        self.est.ambiguous.set(false);
-        let ar = Arith::new(f, r, BoundMode::Estimate(&self.est));
+        let (frame, beta, scale) = if ab { (&setup.m_ab, setup.beta_ab, setup.scale[0]) } else { (&setup.m_ba, setup.beta_ba, setup.scale[1]) };
         let cache = if ab { &mut self.mb_b } else { &mut self.mb_a };
-        let mb = cache.get(t, || stage1_in(&ar, leaf, frame, err));
-        let res = edges_in(&ar, mb, v, gap).result();
-        if !self.est.ambiguous.get() {
-            return res;
-        }
-        self.exact_redos += 1;
-        let chip = Arith::new(f, r, BoundMode::Chip);
-        edges_in(&chip, &stage1_in(&chip, leaf, frame, err), v, gap).result()
+        let s1 = cache.get(t, || stage1(f, r, leaf, frame, beta, scale));
+        edges_in(f, r, &self.cert, s1, v, false).result()
     }
 }

@@ -140,12 +140,12 @@ fn node_word(kind: ChipKind, obj: &ObjectImage, n: u32) -> Word {
 fn tri_word(kind: ChipKind, l: &LeafIn) -> Word {
     let w_ = kind.config().format.tri.width() as usize;
     let mut w = vec![0; kind.word_bits().div_ceil(64)];
-    let fields = l.v.iter().flatten().chain(&l.m).chain([&l.e_lin, &l.e_tr, &l.l_norm]);
+    let fields = l.v.iter().flatten().chain(&l.m).chain([&l.alpha_m, &l.alpha_f]);
     for (i, &x) in fields.enumerate() {
         put(&mut w, i * w_, w_, x);
     }
-    put(&mut w, 24 * w_, 1, l.v_exact as u64);
-    put(&mut w, 24 * w_ + 1, 1, l.degenerate as u64);
+    put(&mut w, 23 * w_, 1, l.v_exact as u64);
+    put(&mut w, 23 * w_ + 1, 1, l.degenerate as u64);
     w
 }
 
@@ -651,8 +651,8 @@ mod tests {
         let l = LeafIn::of(f, &a.tris[3]);
         assert_eq!(field(t, 4 * W, W), l.v[1][1]);
         assert_eq!(field(t, 9 * W + 5 * W, W), l.m[5]);
-        assert_eq!(field(t, 23 * W, W), l.l_norm);
-        assert_eq!(field(t, 24 * W, 2), l.v_exact as u64 | (l.degenerate as u64) << 1);
+        assert_eq!(field(t, 22 * W, W), l.alpha_f);
+        assert_eq!(field(t, 23 * W, 2), l.v_exact as u64 | (l.degenerate as u64) << 1);
         let hex = p.image.memory_hex();
         let line = hex.lines().nth(a.tree.len() + 3).unwrap();
         assert_eq!(line.len(), 145);

@@ -4,24 +4,22 @@
 
 use crate::dop::host::{Affine, HostSetup};
 use crate::format::{Format, Rounding};
-use crate::golden::tcheck::{self, Trace};
+use crate::golden::tcheck::{self, Certificate, Trace};
 use crate::memory::TriWord;
 
 /// The inputs of one T.CHECK: the leaf whose unit triangle is the target (`m` = its M_B,
-/// row-major 3x4, with `e_lin`, `e_tr`, `l_norm`), the frame map into that leaf's object
-/// (`f`, row-major, with bounds `f_lin`, `f_tr`), the vertices `v[k][c]` of the other
-/// triangle, and the vertex gap (`gap_en`, `eta`) of the direction A vs U(B).
+/// row-major 3x4, with its error words `alpha_m`, `alpha_f`), the frame map into that
+/// leaf's object (`f`, row-major, with its error words `beta_m`, `beta_f`) and the
+/// vertices `v[k][c]` of the other triangle.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct TCheckIn {
     pub m: [u64; 12],
-    pub e_lin: u64,
-    pub e_tr: u64,
-    pub l_norm: u64,
+    pub alpha_m: u64,
+    pub alpha_f: u64,
     pub f: [u64; 12],
-    pub f_lin: u64,
-    pub f_tr: u64,
-    pub eta: u64,
-    pub gap_en: bool,
+    pub beta_m: u64,
+    pub beta_f: u64,
+    pub scale: u64,
     pub v: [[u64; 3]; 3],
     pub v_exact: bool,
 }
@@ -32,7 +30,7 @@ pub struct TCheckIn {
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct TCheckOut {
     pub s_x: [u64; 3],
-    pub s_e: [u64; 3],
+    pub s_b: [u64; 3],
     pub cross_t: [bool; 3],
     pub cross_f: [bool; 3],
     pub hit: bool,
@@ -44,40 +42,30 @@ fn words(f: Format, m: &Affine) -> [u64; 12] {
 }
 
 /// One direction of TRI_UNIT: the edges of `tri` against the unit triangle of `leaf`,
-/// `frame` (with bounds `frame_err`) mapping `tri`'s object into `leaf`'s; `eta` for the
-/// direction A vs U(B). Returns the RTL inputs and the golden outputs (golden
-/// [`tcheck::stage1`] then [`tcheck::edges`]).
-pub fn direction(
-    f: Format,
-    r: Rounding,
-    leaf: &TriWord,
-    frame: &Affine,
-    frame_err: [f64; 2],
-    tri: &TriWord,
-    eta: Option<f64>,
-) -> (TCheckIn, TCheckOut) {
+/// `frame` (with error words `beta`) mapping `tri`'s object (of scale `scale`) into
+/// `leaf`'s. Returns the RTL inputs and the golden outputs (golden [`tcheck::stage1`] then
+/// [`tcheck::edges`]).
+pub fn direction(f: Format, r: Rounding, leaf: &TriWord, frame: &Affine, beta: [f64; 2], scale: f64, tri: &TriWord) -> (TCheckIn, TCheckOut) {
     let input = TCheckIn {
         m: words(f, &leaf.m),
-        e_lin: f.to_bits(leaf.e_lin),
-        e_tr: f.to_bits(leaf.e_tr),
-        l_norm: f.to_bits(leaf.l_norm),
+        alpha_m: f.to_bits(leaf.alpha_m),
+        alpha_f: f.to_bits(leaf.alpha_f),
         f: words(f, frame),
-        f_lin: f.to_bits(frame_err[0]),
-        f_tr: f.to_bits(frame_err[1]),
-        eta: f.to_bits(eta.unwrap_or(0.0)),
-        gap_en: eta.is_some(),
+        beta_m: f.to_bits(beta[0]),
+        beta_f: f.to_bits(beta[1]),
+        scale: f.to_bits(scale),
         v: tri.v.map(|p| p.map(|x| f.to_bits(x))),
         v_exact: tri.v_exact,
     };
-    let trace = tcheck::edges(f, r, &tcheck::stage1(f, r, leaf, frame, frame_err), tri, eta.map(|e| (leaf, e)));
+    let trace = tcheck::edges(f, r, &Certificate::new(f, r), &tcheck::stage1(f, r, leaf, frame, beta, scale), tri);
     (input, output(f, &trace))
 }
 
 fn output(f: Format, t: &Trace) -> TCheckOut {
     let res = t.result();
     TCheckOut {
-        s_x: t.s.map(|v| f.to_bits(v.x)),
-        s_e: t.s.map(|v| f.to_bits(v.e)),
+        s_x: t.s.map(|v| f.to_bits(v)),
+        s_b: t.s_bound.map(|v| f.to_bits(v)),
         cross_t: t.crossing.map(|c| c == Some(true)),
         cross_f: t.crossing.map(|c| c == Some(false)),
         hit: res == Some(true),
@@ -86,26 +74,27 @@ fn output(f: Format, t: &Trace) -> TCheckOut {
 }
 
 /// Both directions of TRI_UNIT for triangle `a` of A against `b` of B under `setup`:
-/// A's edges against U(B) (with the vertex gap), then B's edges against U(A).
+/// A's edges against U(B), then B's edges against U(A).
 pub fn tri_unit_directions(f: Format, r: Rounding, a: &TriWord, b: &TriWord, setup: &HostSetup) -> [(TCheckIn, TCheckOut); 2] {
     [
-        direction(f, r, b, &setup.m_ab, setup.e_ab, a, Some(setup.eta)),
-        direction(f, r, a, &setup.m_ba, setup.e_ba, b, None),
+        direction(f, r, b, &setup.m_ab, setup.beta_ab, setup.scale[0], a),
+        direction(f, r, a, &setup.m_ba, setup.beta_ba, setup.scale[1], b),
     ]
 }
 
 /// TRI_UNIT's per-query write port: `(load_addr, load_data)` for M_AB (address 4 i + c),
-/// its bounds (12, 13), M_BA (16 + 4 i + c), its bounds (28, 29) and eta (30).
+/// its error words (12, 13), A's scale (14), M_BA (16 + 4 i + c), its error words (28, 29)
+/// and B's scale (30).
 pub fn tri_unit_setup_words(f: Format, setup: &HostSetup) -> Vec<(u64, u64)> {
     let mut out = vec![];
-    for (base, m, e) in [(0u64, &setup.m_ab, setup.e_ab), (16, &setup.m_ba, setup.e_ba)] {
+    for (base, m, e, s) in [(0u64, &setup.m_ab, setup.beta_ab, setup.scale[0]), (16, &setup.m_ba, setup.beta_ba, setup.scale[1])] {
         for (i, w) in words(f, m).into_iter().enumerate() {
             out.push((base + i as u64, w));
         }
         out.push((base + 12, f.to_bits(e[0])));
         out.push((base + 13, f.to_bits(e[1])));
+        out.push((base + 14, f.to_bits(s)));
     }
-    out.push((30, f.to_bits(setup.eta)));
     out
 }
 
@@ -113,9 +102,8 @@ pub fn tri_unit_setup_words(f: Format, setup: &HostSetup) -> Vec<(u64, u64)> {
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct LeafIn {
     pub m: [u64; 12],
-    pub e_lin: u64,
-    pub e_tr: u64,
-    pub l_norm: u64,
+    pub alpha_m: u64,
+    pub alpha_f: u64,
     pub v: [[u64; 3]; 3],
     pub v_exact: bool,
     pub degenerate: bool,
@@ -125,9 +113,8 @@ impl LeafIn {
     pub fn of(f: Format, w: &TriWord) -> LeafIn {
         LeafIn {
             m: words(f, &w.m),
-            e_lin: f.to_bits(w.e_lin),
-            e_tr: f.to_bits(w.e_tr),
-            l_norm: f.to_bits(w.l_norm),
+            alpha_m: f.to_bits(w.alpha_m),
+            alpha_f: f.to_bits(w.alpha_f),
             v: w.v.map(|p| p.map(|x| f.to_bits(x))),
             v_exact: w.v_exact,
             degenerate: w.degenerate,
@@ -162,10 +149,10 @@ fn port_names(prefix: &str, n: usize) -> Vec<String> {
     (0..n).map(|i| format!("{prefix}${i}")).collect()
 }
 
-/// The input names of a leaf's map: `m_0$0 .. m_2$3 e_lin e_tr l_norm` (prefixed).
+/// The input names of a leaf's map: `m_0$0 .. m_2$3 alpha_m alpha_f` (prefixed).
 fn leaf_names(pre: &str) -> Vec<String> {
     let mut v: Vec<String> = (0..3).flat_map(|r| port_names(&format!("{pre}m_{r}"), 4)).collect();
-    v.extend(["e_lin", "e_tr", "l_norm"].map(|n| format!("{pre}{n}")));
+    v.extend(["alpha_m", "alpha_f"].map(|n| format!("{pre}{n}")));
     v
 }
 
@@ -180,7 +167,7 @@ fn vertex_words(f: Format, v: &[[u64; 3]; 3]) -> Vec<String> {
     (0..3).flat_map(|c| (0..3).map(move |k| v[k][c])).map(|w| hexw(f, w)).collect()
 }
 
-/// T.CHECK's vectors (latency 128): both directions of every pair of the vector scene (12
+/// T.CHECK's vectors: both directions of every pair of the vector scene (12
 /// soup triangles each) and
 /// of every catalogue case, `inputs -> s_x$e s_e$e cross_t$e cross_f$e hit miss tag_out`.
 pub fn tcheck_vectors(name: &str, f: Format, r: Rounding) -> String {
@@ -189,16 +176,16 @@ pub fn tcheck_vectors(name: &str, f: Format, r: Rounding) -> String {
     for row in 0..3 {
         names.extend(port_names(&format!("f_{row}"), 4));
     }
-    names.extend(["f_lin", "f_tr", "eta", "gap_en"].map(String::from));
+    names.extend(["beta_m", "beta_f", "scale"].map(String::from));
     names.extend(vertex_names(""));
     names.push("tag".into());
-    for o in ["s_x", "s_e", "cross_t", "cross_f"] {
+    for o in ["s_x", "s_b", "cross_t", "cross_f"] {
         names.extend(port_names(o, 3));
     }
     names.extend(["hit", "miss", "tag_out"].map(String::from));
     let mut out = String::new();
     let _ = writeln!(out, "// {}", names.join(" "));
-    let _ = writeln!(out, "// latency: 128");
+    let _ = writeln!(out, "// latency: {}", crate::rtl::b32::TCheck::LATENCY);
     let _ = writeln!(out, "// {name}: T.CHECK in {f}, rounding {r:?}: both directions of every pair of two 12-triangle soups under one pose, then of every hard case; golden: golden::tcheck::{{stage1, edges}}");
     let mut triples = vec![];
     let (a, b, setup) = vector_scene(f, 12);
@@ -220,14 +207,13 @@ pub fn tcheck_vectors(name: &str, f: Format, r: Rounding) -> String {
     for (ta, tb, s) in &triples {
         for (x, y) in tri_unit_directions(f, r, ta, tb, s) {
             let mut w: Vec<String> = x.m.iter().map(|&v| hexw(f, v)).collect();
-            w.extend([x.e_lin, x.e_tr, x.l_norm].map(|v| hexw(f, v)));
+            w.extend([x.alpha_m, x.alpha_f].map(|v| hexw(f, v)));
             w.extend(x.f.iter().map(|&v| hexw(f, v)));
-            w.extend([x.f_lin, x.f_tr, x.eta].map(|v| hexw(f, v)));
-            w.push((x.gap_en as u8).to_string());
+            w.extend([x.beta_m, x.beta_f, x.scale].map(|v| hexw(f, v)));
             w.extend(vertex_words(f, &x.v));
             w.push((x.v_exact as u8).to_string());
             w.push(format!("{tag:08x}"));
-            w.extend(y.s_x.iter().chain(&y.s_e).map(|&v| hexw(f, v)));
+            w.extend(y.s_x.iter().chain(&y.s_b).map(|&v| hexw(f, v)));
             w.extend(y.cross_t.iter().chain(&y.cross_f).map(|&b| (b as u8).to_string()));
             w.extend([y.hit, y.miss].map(|b| (b as u8).to_string()));
             w.push(format!("{tag:08x}"));
@@ -238,7 +224,7 @@ pub fn tcheck_vectors(name: &str, f: Format, r: Rounding) -> String {
     out
 }
 
-/// TRI_UNIT's vectors (latency 130, reader always ready): a preload of the frame setup,
+/// TRI_UNIT's vectors (reader always ready): a preload of the frame setup,
 /// then every pair of the vector scene (6 soup triangles each; Icarus runs TRI_UNIT at a few
 /// clocks per second), `a_* b_* tag out_ready -> out_tag out_hit
 /// out_uncertain in_ready` (golden::tcheck::tri_unit).
@@ -255,7 +241,7 @@ pub fn tri_unit_vectors(name: &str, f: Format, r: Rounding) -> String {
     let mut out = String::new();
     let _ = writeln!(out, "// preload: load_en load_addr load_data");
     let _ = writeln!(out, "// {}", names.join(" "));
-    let _ = writeln!(out, "// latency: 130");
+    let _ = writeln!(out, "// latency: {}", crate::rtl::b32::TriUnit::LATENCY);
     let _ = writeln!(out, "// {name}: TRI_UNIT in {f}, rounding {r:?}: every pair of two 6-triangle soups (A with a zero-area triangle) under one pose; golden: golden::tcheck::tri_unit");
     for (addr, data) in tri_unit_setup_words(f, &setup) {
         let _ = writeln!(out, "@ 1 {addr:02x} {}", hexw(f, data));
@@ -267,7 +253,7 @@ pub fn tri_unit_vectors(name: &str, f: Format, r: Rounding) -> String {
             for t in [ta, tb] {
                 let l = LeafIn::of(f, t);
                 w.extend(l.m.iter().map(|&v| hexw(f, v)));
-                w.extend([l.e_lin, l.e_tr, l.l_norm].map(|v| hexw(f, v)));
+                w.extend([l.alpha_m, l.alpha_f].map(|v| hexw(f, v)));
                 w.extend(vertex_words(f, &l.v));
                 w.push((l.v_exact as u8).to_string());
                 w.push((l.degenerate as u8).to_string());

@@ -126,22 +126,6 @@ pub fn all() -> Vec<Unit> {
         }
     }
     for (tag, fmt) in [("b32", Format::BINARY32), ("e8m15", Format::REDUCED)] {
-        type Gen = fn() -> String;
-        let (va, vm, ve): (Gen, Gen, VerilogFn) = match tag {
-            "b32" => (crate::rtl::b32::verilog_bound_add, crate::rtl::b32::verilog_bound_mul, crate::rtl::b32::verilog_round_err),
-            _ => (crate::rtl::e8m15::verilog_bound_add, crate::rtl::e8m15::verilog_bound_mul, crate::rtl::e8m15::verilog_round_err),
-        };
-        for (op, v, mul, latency) in [("add", va, false, 4), ("mul", vm, true, 5)] {
-            let name = format!("bound_{op}_{tag}");
-            let n2 = name.clone();
-            units.push(Unit { name, latency, verilog: Box::new(v), vectors: Box::new(move || bound_vectors(&n2, fmt, mul, latency)) });
-        }
-        let r = Rounding::NearestEven;
-        let name = format!("round_err_{tag}_{}", rounding_tag(r));
-        let n2 = name.clone();
-        units.push(Unit { name, latency: 1, verilog: Box::new(move || ve(r)), vectors: Box::new(move || round_err_vectors(&n2, fmt, r)) });
-    }
-    for (tag, fmt) in [("b32", Format::BINARY32), ("e8m15", Format::REDUCED)] {
         let (vt, vu): (VerilogFn, VerilogFn) = match tag {
             "b32" => (crate::rtl::b32::verilog_tcheck, crate::rtl::b32::verilog_tri_unit),
             _ => (crate::rtl::e8m15::verilog_tcheck, crate::rtl::e8m15::verilog_tri_unit),
@@ -161,83 +145,6 @@ pub fn all() -> Vec<Unit> {
     units
 }
 
-/// A random bound operand (non-negative): an operand with the sign cleared, or a value in
-/// the top or bottom exponents (overflow to +inf, the floor at the smallest normal).
-fn bound_operand(rng: &mut impl Rng, fmt: Format) -> u64 {
-    let (e, f) = (fmt.exp_bits(), fmt.frac_bits());
-    let ones = (1u64 << e) - 1;
-    let x = match rng.random_range(0..3) {
-        0 => fmt.pack(false, rng.random_range((ones - 3)..ones), rng.random_range(0..(1u64 << f))),
-        1 => fmt.pack(false, rng.random_range(0..3), rng.random_range(0..(1u64 << f))),
-        _ => operand(rng, fmt),
-    };
-    x & !(1u64 << (e + f))
-}
-
-/// Vectors `a b y` of a bound unit (golden::tcheck::bound_add / bound_mul): every pair of
-/// the format's special patterns (negative words included: y = m), then random bound
-/// operands, a quarter of them pairs whose product lands near the smallest normal.
-fn bound_vectors(name: &str, fmt: Format, mul: bool, latency: u32) -> String {
-    use crate::golden::tcheck::{bound_add, bound_mul};
-    let digits = (fmt.width() as usize).div_ceil(4);
-    let mut out = String::new();
-    let _ = writeln!(out, "// a b y");
-    let _ = writeln!(out, "// latency: {latency}");
-    let _ = writeln!(
-        out,
-        "// {name}: y = max(next_up(RNE(a {} b)), m) in {fmt}, m the smallest normal; golden: collision_chip::golden::tcheck::{}",
-        if mul { "*" } else { "+" },
-        if mul { "bound_mul" } else { "bound_add" }
-    );
-    let sp = fmt.special_patterns();
-    let mut cases: Vec<(u64, u64)> = sp.iter().flat_map(|&a| sp.iter().map(move |&b| (a, b))).collect();
-    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(0xb0 ^ name.len() as u64);
-    let bias = fmt.bias() as u64;
-    for i in 0..RANDOM_CASES {
-        if mul && i % 4 == 3 {
-            // biased product exponent ea + eb - bias near 0
-            let ea = rng.random_range(1..bias);
-            let eb = (bias + rng.random_range(0..4)).saturating_sub(ea);
-            let fr = 1u64 << fmt.frac_bits();
-            cases.push((fmt.pack(false, ea, rng.random_range(0..fr)), fmt.pack(false, eb, rng.random_range(0..fr))));
-        } else {
-            cases.push((bound_operand(&mut rng, fmt), bound_operand(&mut rng, fmt)));
-        }
-    }
-    for (a, b) in cases {
-        let (x, y) = (fmt.from_bits(a), fmt.from_bits(b));
-        let z = fmt.to_bits(if mul { bound_mul(fmt, x, y) } else { bound_add(fmt, x, y) });
-        let _ = writeln!(out, "{a:0digits$x} {b:0digits$x} {z:0digits$x}");
-    }
-    out
-}
-
-/// Vectors `x y` of RoundErr (golden::tcheck::rounding_error): every exponent field with
-/// both signs and fractions 0, 1, the largest, then random words.
-fn round_err_vectors(name: &str, fmt: Format, r: Rounding) -> String {
-    use crate::golden::tcheck::rounding_error;
-    let digits = (fmt.width() as usize).div_ceil(4);
-    let (e, f) = (fmt.exp_bits(), fmt.frac_bits());
-    let mut out = String::new();
-    let _ = writeln!(out, "// x y");
-    let _ = writeln!(out, "// latency: 1");
-    let _ = writeln!(out, "// {name}: y = max(ulp(x){}, m) in {fmt}, m the smallest normal; golden: collision_chip::golden::tcheck::rounding_error", if r == Rounding::NearestEven { "/2" } else { "" });
-    let mut words = vec![];
-    for s in [false, true] {
-        for ex in 0..(1u64 << e) {
-            for fr in [0, 1, (1u64 << f) - 1] {
-                words.push(fmt.pack(s, ex, fr));
-            }
-        }
-    }
-    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(0xe7 ^ name.len() as u64);
-    words.extend((0..RANDOM_CASES).map(|_| operand(&mut rng, fmt)));
-    for x in words {
-        let z = fmt.to_bits(rounding_error(fmt, r, fmt.from_bits(x)));
-        let _ = writeln!(out, "{x:0digits$x} {z:0digits$x}");
-    }
-    out
-}
 
 /// A random operand: any bit pattern, or a value near 1 (many ties and cancellations).
 fn operand(rng: &mut impl Rng, fmt: Format) -> u64 {
@@ -344,7 +251,7 @@ fn dop_unit_vectors(name: &str, k: usize, fmt: Format) -> String {
     let ta = DopTree::build(&crate::mesh::soup(n, 11).triangles_f64(), &cfg);
     let tb = DopTree::build(&crate::mesh::soup(n, 12).triangles_f64(), &cfg);
     let pose = Pose::new(17.0, -41.0, 73.0, 0.05, -0.1, 0.02);
-    let setup = HostSetup::new(&cfg, &pose, tb.coord_bound());
+    let setup = HostSetup::new(&cfg, &pose, tb.coord_bound(), crate::dop::TriSide::UNUSED);
     let w = (fmt.width() as usize).div_ceil(4);
     let mut out = String::new();
     let _ = writeln!(out, "// preload: load_en load_addr load_data");
