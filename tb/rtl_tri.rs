@@ -3,10 +3,10 @@
 //! T.CHECK (`collision_chip::rtl::{b32, e8m15}::TCheck`) against the golden
 //! `golden::tcheck::{stage1, edges}`, bit for bit: s = (a + b) - r_z and its bound per edge,
 //! the three-valued crossing per edge and the direction's verdict, in both directions of
-//! TRI_UNIT (A vs U(B) with the vertex gap, B vs U(A) without), on every triangle pair of
-//! the hard-case catalogue and on generated pairs (the hard-case families and general
-//! pairs under general poses), binary32 and e8m15, one pair per clock through the 128-stage
-//! pipeline. A T.CHECK with the wrong rounding is caught.
+//! TRI_UNIT (A vs U(B), B vs U(A)), on every triangle pair of the hard-case catalogue and on
+//! generated pairs (the hard-case families and general pairs under general poses), binary32
+//! and e8m15, one pair per clock through the 52-stage pipeline. A T.CHECK with the wrong
+//! rounding is caught.
 //!
 //! TRI_UNIT (`TriUnit`) against the golden `golden::tcheck::tri_unit`: the verdict
 //! (intersecting, separate, uncertain) and the pair id of every pair, in order, on hard
@@ -49,13 +49,11 @@ macro_rules! impl_tcheck {
                     self.f_1[c].next = x.f[4 + c].into();
                     self.f_2[c].next = x.f[8 + c].into();
                 }
-                self.e_lin.next = x.e_lin.into();
-                self.e_tr.next = x.e_tr.into();
-                self.l_norm.next = x.l_norm.into();
-                self.f_lin.next = x.f_lin.into();
-                self.f_tr.next = x.f_tr.into();
-                self.eta.next = x.eta.into();
-                self.gap_en.next = x.gap_en;
+                self.alpha_m.next = x.alpha_m.into();
+                self.alpha_f.next = x.alpha_f.into();
+                self.beta_m.next = x.beta_m.into();
+                self.beta_f.next = x.beta_f.into();
+                self.scale.next = x.scale.into();
                 for k in 0..3 {
                     self.v_x[k].next = x.v[k][0].into();
                     self.v_y[k].next = x.v[k][1].into();
@@ -68,7 +66,7 @@ macro_rules! impl_tcheck {
             fn out(&self) -> (bool, TCheckOut) {
                 let o = TCheckOut {
                     s_x: std::array::from_fn(|e| self.s_x[e].val().to_u64()),
-                    s_e: std::array::from_fn(|e| self.s_e[e].val().to_u64()),
+                    s_b: std::array::from_fn(|e| self.s_b[e].val().to_u64()),
                     cross_t: std::array::from_fn(|e| self.cross_t[e].val()),
                     cross_f: std::array::from_fn(|e| self.cross_f[e].val()),
                     hit: self.hit.val(),
@@ -264,14 +262,12 @@ macro_rules! impl_tri_unit {
                     self.b_v_y[k].next = b.v[k][1].into();
                     self.b_v_z[k].next = b.v[k][2].into();
                 }
-                self.a_e_lin.next = a.e_lin.into();
-                self.a_e_tr.next = a.e_tr.into();
-                self.a_l_norm.next = a.l_norm.into();
+                self.a_alpha_m.next = a.alpha_m.into();
+                self.a_alpha_f.next = a.alpha_f.into();
                 self.a_v_exact.next = a.v_exact;
                 self.a_degenerate.next = a.degenerate;
-                self.b_e_lin.next = b.e_lin.into();
-                self.b_e_tr.next = b.e_tr.into();
-                self.b_l_norm.next = b.l_norm.into();
+                self.b_alpha_m.next = b.alpha_m.into();
+                self.b_alpha_f.next = b.alpha_f.into();
                 self.b_v_exact.next = b.v_exact;
                 self.b_degenerate.next = b.degenerate;
                 self.tag.next = (tag as u64).into();

@@ -634,13 +634,13 @@ mod tests {
         let f = CHIP_CONFIG.format.dop;
         let w = &p.image.memory[0];
         let field = |w: &Word, at: usize, bits: usize| (0..bits).fold(0u64, |v, k| v | (w[(at + k) / 64] >> ((at + k) % 64) & 1) << k);
-        // hand-derived widths: 24-bit words, 1 + 6 * 24 + 64 node bits, 24 * 24 + 2 triangle bits
+        // hand-derived widths: 24-bit words, 1 + 6 * 24 + 64 node bits, 23 * 24 + 2 triangle bits
         const W: usize = 24;
         const NODE_BITS: usize = 209;
-        const MEM_BITS: usize = 578;
+        const MEM_BITS: usize = 554;
         assert_eq!(W, f.width() as usize);
         assert_eq!((ChipKind::K6E8m15.word_bits(), crate::rtl::e8m15::CHIP_WORD_BITS), (MEM_BITS, MEM_BITS));
-        // the papers' chip: 1 + 24 * 32 + 64 node bits, wider than its 24 * 32 + 2 triangle bits
+        // the papers' chip: 1 + 24 * 32 + 64 node bits, wider than its 23 * 32 + 2 triangle bits
         assert_eq!((ChipKind::K24B32.word_bits(), crate::rtl::b32::CHIP_WORD_BITS), (833, 833));
         assert!(p.image.memory[..a.tree.len()].iter().all(|w| field(w, NODE_BITS, 64) == 0 && field(w, NODE_BITS + 64, MEM_BITS - NODE_BITS - 64) == 0));
         assert_eq!(field(w, 0, 1), 0, "the root is inner");
@@ -655,7 +655,7 @@ mod tests {
         assert_eq!(field(t, 23 * W, 2), l.v_exact as u64 | (l.degenerate as u64) << 1);
         let hex = p.image.memory_hex();
         let line = hex.lines().nth(a.tree.len() + 3).unwrap();
-        assert_eq!(line.len(), 145);
+        assert_eq!(line.len(), 139);
         assert_eq!(u64::from_str_radix(&line[line.len() - 6..], 16).unwrap(), l.v[0][0]);
         assert!(p.image.writes.contains(&(reg::MODE, 0)));
         assert!(p.image.writes_hex().lines().all(|l| l.len() == 11));

@@ -46,7 +46,7 @@ macro_rules! chip {
         ///   it asks for, so the response has no ready).
         ///   Node word: bit 0 leaf, `d_i` at `1 + i W`, then two 32-bit fields (children,
         ///   or the triangle index and 0); triangle word: v0, v1, v2 (x, y, z), M row-major,
-        ///   e_lin, e_tr, l_norm at `i W`, v_exact, degenerate ([`crate::memory`]).
+        ///   alpha_m, alpha_f at `i W`, v_exact, degenerate ([`crate::memory`]).
         /// * results (valid/ready): out `res_valid`, `res_tag[32]` (A's triangle in bits
         ///   15:0, B's in 31:16), `res_uncertain` (0: intersecting; 1: the host decides);
         ///   in `res_ready`. Separate pairs are not shown.
@@ -1016,16 +1016,14 @@ macro_rules! chip {
                     self.tri_unit.b_m_1[c].next = self.tb_word.q.val().get_bits::<$W>((13 + c) * $W);
                     self.tri_unit.b_m_2[c].next = self.tb_word.q.val().get_bits::<$W>((17 + c) * $W);
                 }
-                self.tri_unit.a_e_lin.next = self.ta_word.q.val().get_bits::<$W>(21 * $W);
-                self.tri_unit.a_e_tr.next = self.ta_word.q.val().get_bits::<$W>(22 * $W);
-                self.tri_unit.a_l_norm.next = self.ta_word.q.val().get_bits::<$W>(23 * $W);
-                self.tri_unit.a_v_exact.next = self.ta_word.q.val().get_bit(24 * $W);
-                self.tri_unit.a_degenerate.next = self.ta_word.q.val().get_bit(24 * $W + 1);
-                self.tri_unit.b_e_lin.next = self.tb_word.q.val().get_bits::<$W>(21 * $W);
-                self.tri_unit.b_e_tr.next = self.tb_word.q.val().get_bits::<$W>(22 * $W);
-                self.tri_unit.b_l_norm.next = self.tb_word.q.val().get_bits::<$W>(23 * $W);
-                self.tri_unit.b_v_exact.next = self.tb_word.q.val().get_bit(24 * $W);
-                self.tri_unit.b_degenerate.next = self.tb_word.q.val().get_bit(24 * $W + 1);
+                self.tri_unit.a_alpha_m.next = self.ta_word.q.val().get_bits::<$W>(21 * $W);
+                self.tri_unit.a_alpha_f.next = self.ta_word.q.val().get_bits::<$W>(22 * $W);
+                self.tri_unit.a_v_exact.next = self.ta_word.q.val().get_bit(23 * $W);
+                self.tri_unit.a_degenerate.next = self.ta_word.q.val().get_bit(23 * $W + 1);
+                self.tri_unit.b_alpha_m.next = self.tb_word.q.val().get_bits::<$W>(21 * $W);
+                self.tri_unit.b_alpha_f.next = self.tb_word.q.val().get_bits::<$W>(22 * $W);
+                self.tri_unit.b_v_exact.next = self.tb_word.q.val().get_bit(23 * $W);
+                self.tri_unit.b_degenerate.next = self.tb_word.q.val().get_bit(23 * $W + 1);
                 self.tri_unit.tag.next = self.leaf_tag.q.val();
                 self.tri_unit.in_valid.next = self.tri_in.val();
                 // ---- results: separate pairs leave TRI_UNIT unseen, the others wait for the host

@@ -10,11 +10,6 @@
 //! | [`b32`] | `binary32` (e8m23, [`Format::BINARY32`](crate::format::Format::BINARY32)) | [`b32::FpMul`] (latency 4), [`b32::FpAdd`] (latency 3), [`b32::Doptrf`] (latency 15), [`b32::KlmSel`], [`b32::DopUnit6`] ... [`b32::DopUnit26`] (k = 6, 14, 18, 24, 26; latency 15) |
 //! | [`e8m15`] | e8m15 ([`Format::REDUCED`](crate::format::Format::REDUCED)) | the same |
 //!
-//! and, for T.CHECK's bound arithmetic (docs/ACCURACY.md), [`b32::BoundAdd`] (latency 4),
-//! [`b32::BoundMul`] (latency 5): `max(next_up(RNE(a op b)), m)`, the nearest-even unit
-//! followed by one register stage of [`b32::StepUp`]; [`b32::RoundErr`] (latency 1):
-//! `max(ulp(x)/2, m)` (the same in `e8m15`).
-//!
 //! Each unit takes one operation per clock with a `valid` bit travelling alongside and
 //! is bit-exact with the golden [`Format`](crate::format::Format) operations in the
 //! rounding mode fixed at construction (NearestEven or TowardPositive), including
@@ -25,8 +20,6 @@
 //! * `FpMul`: in `clock`, `a[W]`, `b[W]`, `valid_in`; out `y[W]`, `valid_out`.
 //! * `FpAdd`: in `clock`, `a[W]`, `b[W]`, `sub` (1: `a - b`), `valid_in`;
 //!   out `y[W]`, `valid_out`.
-//! * `BoundAdd`, `BoundMul`: as `FpMul`. `RoundErr`: in `clock`, `x[W]`, `valid_in`; out
-//!   `y[W]`, `valid_out`.
 //!
 //! Signal naming inside a unit: `sK_*` are the registers closing pipeline stage K (as
 //! `DFF`s, `sK_x$q` in Verilog / VCD), `cK_*` the combinational signals of stage K, and
@@ -71,7 +64,6 @@ pub const ASK_LIST: usize = 2 * PAIR_BUF;
 // the chip's pointers into these buffers are 4 bits (5 for the ask list)
 const _: () = assert!(PAIR_BUF == 16 && PORT_OUTSTANDING == 16);
 
-mod bound;
 mod chip;
 mod common;
 pub mod d_cntr;
@@ -96,7 +88,6 @@ macro_rules! fp_format {
         $crate::rtl::doptrf::doptrf!($W, $WM1, $E, $F);
         $crate::rtl::klmsel::klmsel!($W);
         $crate::rtl::dop_unit::dop_unit!($W);
-        $crate::rtl::bound::bound!($W, $WM1, $E, $F);
         $crate::rtl::tcheck::tcheck!($W, $WM1, $E, $F);
         $crate::rtl::tri_unit::tri_unit!($W);
 
@@ -139,6 +130,6 @@ pub mod b32 {
 pub mod e8m15 {
     fp_format!(Format::REDUCED, 24, 23, 8, 15, 16, 18, 19, 20, 32,
         norm_p(0, 8, 12, 14, 15), norm_p3(3, 11, 15, 17, 18));
-    // node word 1 + 6 * 24 + 64 bits, triangle word 24 * 24 + 2
-    crate::rtl::chip::chip!(6, DopUnit6, 24, 209, 578);
+    // node word 1 + 6 * 24 + 64 bits, triangle word 23 * 24 + 2
+    crate::rtl::chip::chip!(6, DopUnit6, 24, 209, 554);
 }

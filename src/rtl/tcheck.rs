@@ -1,32 +1,39 @@
-//! T.CHECK (DATE'05 §4.2, Eqs. 8, 9, 11-13) with the uncertainty flag, stamped out per
-//! format by `tcheck!`: the value datapath of the paper's five macro stages, each value
-//! carrying its error bound through a shadow datapath of bound units (golden
-//! [`golden::tcheck`](crate::golden::tcheck), docs/ARCHITECTURE.md "T.CHECK in RTL").
+//! T.CHECK (DATE'05 §4.2, Eqs. 8, 9, 11-13) with its certificate, stamped out per format
+//! by `tcheck!`: the value datapath of the paper's five macro stages and, beside it, the
+//! magnitudes and error bounds that decide which signs are sure (golden
+//! [`golden::tcheck`](crate::golden::tcheck), docs/ARCHITECTURE.md "T.CHECK in RTL",
+//! docs/ACCURACY.md "T.CHECK's certificate").
 
-/// Stamps out `Sign`, `BMul`, `BAdd`, `AffRow`, `Gap`, `Edge` and `TCheck` in the calling
-/// module (which must also hold `FpMul`, `FpAdd`, `BoundMul`, `BoundAdd` and `RoundErr`).
-/// Arguments: `W`, `WM1` = W-1, `E`, `F`.
+/// Stamps out `Sign`, `Dot`, `Vertex`, `Edge` and `TCheck` in the calling module (which
+/// must also hold `FpMul`, `FpAdd` and `FORMAT`). Arguments: `W`, `WM1` = W-1, `E`, `F`.
 macro_rules! tcheck {
     ($W:tt, $WM1:tt, $E:tt, $F:tt) => {
-        // Row i of M_b (`mb_i`), of M_B's input register (`in_m_i`) and of the mapped
-        // vertices (`vt_i`), and the gap's ports for coordinate i: the kernel's wiring is
-        // written once per row by repetition (rust-hdl kernels allow one loop level only).
+        // Row i of M_b (`mb_i`, `mg_i` its magnitude, `in_m_i` M_B's input register, the
+        // R1 registers `mbr_i`, `mgr_i`) and coordinate i of the mapped vertices (`vt_i`,
+        // `vm_i`, `m3_i`, the R2 registers `vtr_i`, `vmr_i`): the kernel's wiring is written
+        // once per row by repetition (rust-hdl kernels allow one loop level only).
         $crate::rtl::tcheck::tcheck!(@units $W, $WM1, $E, $F;
-            (mb_0 in_m_0 vt_0 x0 e0) (mb_1 in_m_1 vt_1 x1 e1) (mb_2 in_m_2 vt_2 x2 e2));
+            (mb_0 mg_0 in_m_0 c3_0 mbr_0 mgr_0 mg3_0 vc_0 vt_0 vm_0 m3_0 vtr_0 vmr_0)
+            (mb_1 mg_1 in_m_1 c3_1 mbr_1 mgr_1 mg3_1 vc_1 vt_1 vm_1 m3_1 vtr_1 vmr_1)
+            (mb_2 mg_2 in_m_2 c3_2 mbr_2 mgr_2 mg3_2 vc_2 vt_2 vm_2 m3_2 vtr_2 vmr_2));
     };
-    (@units $W:tt, $WM1:tt, $E:tt, $F:tt; $(($mb:ident $in_m:ident $vt:ident $gx:ident $ge:ident))*) => {
+    (@units $W:tt, $WM1:tt, $E:tt, $F:tt; $(($mb:ident $mg:ident $in_m:ident $c3:ident $mbr:ident $mgr:ident $mg3:ident $vc:ident $vt:ident $vm:ident $m3:ident $vtr:ident $vmr:ident))*) => {
         use $crate::rtl::delay::Delay;
 
-        /// A bit pattern of the format (`sign`, biased exponent field, fraction field).
-        fn pattern(exp_field: u64, frac: u64) -> Bits<$W> {
-            ((exp_field << $F) | frac).into()
+        /// All ones but the sign bit: a word ANDed with it is its absolute value.
+        const ABS_MASK: u64 = (1u64 << $WM1) - 1;
+
+        /// A constant of the format as a word.
+        fn word(x: f64) -> Bits<$W> {
+            FORMAT.to_bits(x).into()
         }
 
-        /// The three-valued sign of a bounded value (golden [`Bounded::sign`](crate::golden::tcheck::Bounded::sign)),
-        /// combinational: `sgn = 1` surely positive (`x > e`), `2` surely negative
-        /// (`x < -e`), `0` unknown (also for a NaN x). The bound e is never negative (bound
-        /// units floor at the smallest normal; an exact vertex has e = +0), so `|x| > e` is an
-        /// unsigned compare of the patterns.
+        /// The three-valued sign of a value against its bound (golden
+        /// [`sign`](crate::golden::tcheck::sign)), combinational: `sgn = 1` surely positive
+        /// (`x > e`), `2` surely negative (`x < -e`), `0` unknown (also for a NaN x or a
+        /// NaN bound). Bounds are never negative (every bound operation rounds upward on
+        /// non-negative operands), so `|x| > e` is an unsigned compare of the patterns
+        /// (a NaN bound's pattern is above every |x| but a NaN's).
         #[derive(LogicBlock)]
         pub struct Sign {
             pub x: Signal<In, Bits<$W>>,
@@ -67,502 +74,318 @@ macro_rules! tcheck {
             }
         }
 
-        /// Multiplication of bounded values (golden `Arith::mul`): `x = a.x * b.x` in the
-        /// datapath's rounding and
-        /// `e = (a.e |b.x| + b.e |a.x|) + (a.e b.e + err(x))`, each `+` a [`BoundAdd`],
-        /// each product a [`BoundMul`], err a [`RoundErr`].
-        ///
-        /// Schedule (inputs before rising edge 1): `mul` x after edge 4, `err` 5; the three
-        /// bound products 5; `s_cross`, `s_err` 9; `s_all` = e after edge 13; x waits 9
-        /// clocks in `x_wait`. Latency [`BMul::LATENCY`] = 13, one operation per clock.
-        /// Ports: in `clock`, `ax`, `ae`, `bx`, `be`; out `x`, `e`.
-        #[derive(LogicBlock)]
-        pub struct BMul {
-            pub clock: Signal<In, Clock>,
-            pub ax: Signal<In, Bits<$W>>,
-            pub ae: Signal<In, Bits<$W>>,
-            pub bx: Signal<In, Bits<$W>>,
-            pub be: Signal<In, Bits<$W>>,
-            pub x: Signal<Out, Bits<$W>>,
-            pub e: Signal<Out, Bits<$W>>,
-            mul: FpMul,
-            err: RoundErr,
-            ae_bx: BoundMul,
-            be_ax: BoundMul,
-            ae_be: BoundMul,
-            s_cross: BoundAdd,
-            s_err: BoundAdd,
-            s_all: BoundAdd,
-            x_wait: Delay<Bits<$W>, 9>,
-        }
-
-        impl BMul {
-            pub const LATENCY: usize = 13;
-
-            pub fn new(rounding: Rounding) -> Self {
-                Self {
-                    clock: Default::default(),
-                    ax: Default::default(),
-                    ae: Default::default(),
-                    bx: Default::default(),
-                    be: Default::default(),
-                    x: Default::default(),
-                    e: Default::default(),
-                    mul: FpMul::new(rounding),
-                    err: RoundErr::new(rounding),
-                    ae_bx: BoundMul::new(),
-                    be_ax: BoundMul::new(),
-                    ae_be: BoundMul::new(),
-                    s_cross: BoundAdd::new(),
-                    s_err: BoundAdd::new(),
-                    s_all: BoundAdd::new(),
-                    x_wait: Default::default(),
-                }
-            }
-        }
-
-        impl Logic for BMul {
-            #[hdl_gen]
-            fn update(&mut self) {
-                clock!(self, clock, mul, err, ae_bx, be_ax, ae_be, s_cross, s_err, s_all, x_wait);
-                self.mul.a.next = self.ax.val();
-                self.mul.b.next = self.bx.val();
-                self.mul.valid_in.next = false;
-                self.err.x.next = self.mul.y.val();
-                self.err.valid_in.next = false;
-                self.ae_bx.a.next = self.ae.val();
-                self.ae_bx.b.next = bit_cast::<$W, $WM1>(self.bx.val().get_bits::<$WM1>(0));
-                self.ae_bx.valid_in.next = false;
-                self.be_ax.a.next = self.be.val();
-                self.be_ax.b.next = bit_cast::<$W, $WM1>(self.ax.val().get_bits::<$WM1>(0));
-                self.be_ax.valid_in.next = false;
-                self.ae_be.a.next = self.ae.val();
-                self.ae_be.b.next = self.be.val();
-                self.ae_be.valid_in.next = false;
-                self.s_cross.a.next = self.ae_bx.y.val();
-                self.s_cross.b.next = self.be_ax.y.val();
-                self.s_cross.valid_in.next = false;
-                self.s_err.a.next = self.ae_be.y.val();
-                self.s_err.b.next = self.err.y.val();
-                self.s_err.valid_in.next = false;
-                self.s_all.a.next = self.s_cross.y.val();
-                self.s_all.b.next = self.s_err.y.val();
-                self.s_all.valid_in.next = false;
-                self.x_wait.d.next = self.mul.y.val();
-                self.x.next = self.x_wait.q.val();
-                self.e.next = self.s_all.y.val();
-            }
-        }
-
-        /// Addition (`sub` = 0) or subtraction (`sub` = 1) of bounded values (golden
-        /// `Arith::add` / `Arith::sub`): `x = a.x ± b.x` in the datapath's rounding,
-        /// `e = (a.e + b.e) + err(x)`.
-        ///
-        /// Schedule: `add` x after edge 3, `err` 4, `s_ab` 4, `s_err` = e after edge 8;
-        /// x waits 5 clocks. Latency [`BAdd::LATENCY`] = 8. Ports: in `clock`, `ax`, `ae`,
-        /// `bx`, `be`, `sub`; out `x`, `e`.
-        #[derive(LogicBlock)]
-        pub struct BAdd {
-            pub clock: Signal<In, Clock>,
-            pub ax: Signal<In, Bits<$W>>,
-            pub ae: Signal<In, Bits<$W>>,
-            pub bx: Signal<In, Bits<$W>>,
-            pub be: Signal<In, Bits<$W>>,
-            pub sub: Signal<In, Bit>,
-            pub x: Signal<Out, Bits<$W>>,
-            pub e: Signal<Out, Bits<$W>>,
-            add: FpAdd,
-            err: RoundErr,
-            s_ab: BoundAdd,
-            s_err: BoundAdd,
-            x_wait: Delay<Bits<$W>, 5>,
-        }
-
-        impl BAdd {
-            pub const LATENCY: usize = 8;
-
-            pub fn new(rounding: Rounding) -> Self {
-                Self {
-                    clock: Default::default(),
-                    ax: Default::default(),
-                    ae: Default::default(),
-                    bx: Default::default(),
-                    be: Default::default(),
-                    sub: Default::default(),
-                    x: Default::default(),
-                    e: Default::default(),
-                    add: FpAdd::new(rounding),
-                    err: RoundErr::new(rounding),
-                    s_ab: BoundAdd::new(),
-                    s_err: BoundAdd::new(),
-                    x_wait: Default::default(),
-                }
-            }
-        }
-
-        impl Logic for BAdd {
-            #[hdl_gen]
-            fn update(&mut self) {
-                clock!(self, clock, add, err, s_ab, s_err, x_wait);
-                self.add.a.next = self.ax.val();
-                self.add.b.next = self.bx.val();
-                self.add.sub.next = self.sub.val();
-                self.add.valid_in.next = false;
-                self.err.x.next = self.add.y.val();
-                self.err.valid_in.next = false;
-                self.s_ab.a.next = self.ae.val();
-                self.s_ab.b.next = self.be.val();
-                self.s_ab.valid_in.next = false;
-                self.s_err.a.next = self.s_ab.y.val();
-                self.s_err.b.next = self.err.y.val();
-                self.s_err.valid_in.next = false;
-                self.x_wait.d.next = self.add.y.val();
-                self.x.next = self.x_wait.q.val();
-                self.e.next = self.s_err.y.val();
-            }
-        }
-
-        /// One entry of an affine product on bounded values, the shape shared by Eqs. 11-13:
+        /// One dot product of stages 1 and 2 in the golden order (golden `dot`):
         /// `y = (a0 b0 + a1 b1) + a2 b2` (`affine` false: M_b's linear entries, Eq. 11) or
         /// `y = (a0 b0 + a1 b1) + (a2 b2 + c)` (`affine` true: M_b's translation column,
-        /// Eq. 12, and a mapped vertex coordinate, Eq. 13), in the golden order.
+        /// Eq. 12, and a mapped vertex coordinate, Eq. 13). With `magnitude` every operand's
+        /// sign is cleared first and the units round upward (golden `dot_mag`: the
+        /// certificate's magnitude of the same expression).
         ///
-        /// Schedule: products `p[k]` after edge 13; `s01` and `s2c` (`p2 + c`, c waiting 13
-        /// clocks) after 21, `p2` waiting 8 clocks for the linear shape; `s` = y after edge
-        /// 29. Latency [`AffRow::LATENCY`] = 29 = BMul + 2 BAdd. Ports: in `clock`,
-        /// `a0_x`, `a0_e` .. `a2_x`, `a2_e`, `b0_x` .. `b2_e`, `c_x`, `c_e`; out `y_x`, `y_e`
-        /// (scalar ports: rust-hdl's Verilog cannot address an array port of a block that
-        /// is itself an array element).
+        /// Schedule: products after edge 4, `s01` and `s2c` 7 (`c` is taken [`Dot::C_AT`]
+        /// = 4 clocks after the a and b it belongs to, when the products are ready; `p2`
+        /// waits 3 clocks in the linear shape), y after edge 10. Latency [`Dot::LATENCY`] =
+        /// 10. Ports: in `clock`, `a0` .. `a2`, `b0` .. `b2`, `c`; out `y` (scalar ports:
+        /// rust-hdl's Verilog cannot address an array port of a block that is itself an
+        /// array element).
         #[derive(LogicBlock)]
-        pub struct AffRow {
+        pub struct Dot {
             pub clock: Signal<In, Clock>,
-            pub a0_x: Signal<In, Bits<$W>>,
-            pub a0_e: Signal<In, Bits<$W>>,
-            pub a1_x: Signal<In, Bits<$W>>,
-            pub a1_e: Signal<In, Bits<$W>>,
-            pub a2_x: Signal<In, Bits<$W>>,
-            pub a2_e: Signal<In, Bits<$W>>,
-            pub b0_x: Signal<In, Bits<$W>>,
-            pub b0_e: Signal<In, Bits<$W>>,
-            pub b1_x: Signal<In, Bits<$W>>,
-            pub b1_e: Signal<In, Bits<$W>>,
-            pub b2_x: Signal<In, Bits<$W>>,
-            pub b2_e: Signal<In, Bits<$W>>,
-            pub c_x: Signal<In, Bits<$W>>,
-            pub c_e: Signal<In, Bits<$W>>,
-            pub y_x: Signal<Out, Bits<$W>>,
-            pub y_e: Signal<Out, Bits<$W>>,
+            pub a0: Signal<In, Bits<$W>>,
+            pub a1: Signal<In, Bits<$W>>,
+            pub a2: Signal<In, Bits<$W>>,
+            pub b0: Signal<In, Bits<$W>>,
+            pub b1: Signal<In, Bits<$W>>,
+            pub b2: Signal<In, Bits<$W>>,
+            pub c: Signal<In, Bits<$W>>,
+            pub y: Signal<Out, Bits<$W>>,
             affine: Constant<Bit>,
-            p: [BMul; 3],
-            s01: BAdd,
-            s2c: BAdd,
-            s: BAdd,
-            c_x_wait: Delay<Bits<$W>, 13>,
-            c_e_wait: Delay<Bits<$W>, 13>,
-            p2_x_wait: Delay<Bits<$W>, 8>,
-            p2_e_wait: Delay<Bits<$W>, 8>,
+            mask: Constant<Bits<$W>>,
+            p: [FpMul; 3],
+            s01: FpAdd,
+            s2c: FpAdd,
+            s: FpAdd,
+            p2_wait: Delay<Bits<$W>, 3>,
         }
 
-        impl AffRow {
-            pub const LATENCY: usize = BMul::LATENCY + 2 * BAdd::LATENCY;
+        impl Dot {
+            pub const LATENCY: usize = 10;
+            pub const C_AT: usize = 4;
 
-            pub fn new(rounding: Rounding, affine: bool) -> Self {
+            pub fn new(rounding: Rounding, affine: bool, magnitude: bool) -> Self {
+                let r = if magnitude { Rounding::TowardPositive } else { rounding };
                 Self {
                     clock: Default::default(),
-                    a0_x: Default::default(),
-                    a0_e: Default::default(),
-                    a1_x: Default::default(),
-                    a1_e: Default::default(),
-                    a2_x: Default::default(),
-                    a2_e: Default::default(),
-                    b0_x: Default::default(),
-                    b0_e: Default::default(),
-                    b1_x: Default::default(),
-                    b1_e: Default::default(),
-                    b2_x: Default::default(),
-                    b2_e: Default::default(),
-                    c_x: Default::default(),
-                    c_e: Default::default(),
-                    y_x: Default::default(),
-                    y_e: Default::default(),
+                    a0: Default::default(),
+                    a1: Default::default(),
+                    a2: Default::default(),
+                    b0: Default::default(),
+                    b1: Default::default(),
+                    b2: Default::default(),
+                    c: Default::default(),
+                    y: Default::default(),
                     affine: Constant::new(affine),
-                    p: std::array::from_fn(|_| BMul::new(rounding)),
-                    s01: BAdd::new(rounding),
-                    s2c: BAdd::new(rounding),
-                    s: BAdd::new(rounding),
-                    c_x_wait: Default::default(),
-                    c_e_wait: Default::default(),
-                    p2_x_wait: Default::default(),
-                    p2_e_wait: Default::default(),
+                    mask: Constant::new(if magnitude { ABS_MASK } else { ABS_MASK | (1u64 << $WM1) }.into()),
+                    p: std::array::from_fn(|_| FpMul::new(r)),
+                    s01: FpAdd::new(r),
+                    s2c: FpAdd::new(r),
+                    s: FpAdd::new(r),
+                    p2_wait: Default::default(),
                 }
             }
         }
 
-        impl Logic for AffRow {
+        impl Logic for Dot {
             #[hdl_gen]
             fn update(&mut self) {
-                clock!(self, clock, s01, s2c, s, c_x_wait, c_e_wait, p2_x_wait, p2_e_wait);
-                self.p[0].clock.next = self.clock.val();
-                self.p[0].ax.next = self.a0_x.val();
-                self.p[0].ae.next = self.a0_e.val();
-                self.p[0].bx.next = self.b0_x.val();
-                self.p[0].be.next = self.b0_e.val();
-                self.p[1].clock.next = self.clock.val();
-                self.p[1].ax.next = self.a1_x.val();
-                self.p[1].ae.next = self.a1_e.val();
-                self.p[1].bx.next = self.b1_x.val();
-                self.p[1].be.next = self.b1_e.val();
-                self.p[2].clock.next = self.clock.val();
-                self.p[2].ax.next = self.a2_x.val();
-                self.p[2].ae.next = self.a2_e.val();
-                self.p[2].bx.next = self.b2_x.val();
-                self.p[2].be.next = self.b2_e.val();
-                self.s01.ax.next = self.p[0].x.val();
-                self.s01.ae.next = self.p[0].e.val();
-                self.s01.bx.next = self.p[1].x.val();
-                self.s01.be.next = self.p[1].e.val();
+                clock!(self, clock, s01, s2c, s, p2_wait);
+                for k in 0..3 {
+                    self.p[k].clock.next = self.clock.val();
+                    self.p[k].valid_in.next = false;
+                }
+                self.p[0].a.next = self.a0.val() & self.mask.val();
+                self.p[0].b.next = self.b0.val() & self.mask.val();
+                self.p[1].a.next = self.a1.val() & self.mask.val();
+                self.p[1].b.next = self.b1.val() & self.mask.val();
+                self.p[2].a.next = self.a2.val() & self.mask.val();
+                self.p[2].b.next = self.b2.val() & self.mask.val();
+                self.s01.a.next = self.p[0].y.val();
+                self.s01.b.next = self.p[1].y.val();
                 self.s01.sub.next = false;
-                self.c_x_wait.d.next = self.c_x.val();
-                self.c_e_wait.d.next = self.c_e.val();
-                self.s2c.ax.next = self.p[2].x.val();
-                self.s2c.ae.next = self.p[2].e.val();
-                self.s2c.bx.next = self.c_x_wait.q.val();
-                self.s2c.be.next = self.c_e_wait.q.val();
+                self.s01.valid_in.next = false;
+                self.s2c.a.next = self.p[2].y.val();
+                self.s2c.b.next = self.c.val() & self.mask.val();
                 self.s2c.sub.next = false;
-                self.p2_x_wait.d.next = self.p[2].x.val();
-                self.p2_e_wait.d.next = self.p[2].e.val();
-                self.s.ax.next = self.s01.x.val();
-                self.s.ae.next = self.s01.e.val();
-                self.s.bx.next = self.p2_x_wait.q.val();
-                self.s.be.next = self.p2_e_wait.q.val();
+                self.s2c.valid_in.next = false;
+                self.p2_wait.d.next = self.p[2].y.val();
+                self.s.a.next = self.s01.y.val();
+                self.s.b.next = self.p2_wait.q.val();
                 if self.affine.val() {
-                    self.s.bx.next = self.s2c.x.val();
-                    self.s.be.next = self.s2c.e.val();
+                    self.s.b.next = self.s2c.y.val();
                 }
                 self.s.sub.next = false;
-                self.y_x.next = self.s.x.val();
-                self.y_e.next = self.s.e.val();
+                self.s.valid_in.next = false;
+                self.y.next = self.s.y.val();
             }
         }
 
-        /// The vertex gap of the direction A vs U(B) (golden `vertex_gap`): B's vertices are
-        /// known only within eta, so a mapped vertex (u, v, z) may move by
-        /// `g = 2 lambda (eta (1 + 2 ((|u| + e_u) + (|v| + e_v))))`, and each coordinate's
-        /// bound becomes `e + g` (`g = +inf` unless the T.CHECK's `ok`). With `en` low the
-        /// bounds pass unchanged (direction B vs U(A)).
+        /// The certificate's terms of one mapped vertex (golden `edges_in`, per vertex):
+        /// from its coordinates `x0..x2` and their magnitudes `m0..m2`, the bounds
+        /// `E_i = C_V m_i`, `E'_i = E_i + c |x_i|` (c = 2u + u^2 for x and y, which covers
+        /// the rounding of a and b; u + u^2 for z, r_z's) and `H = |z| + (E_z + E_z)`, all
+        /// rounded upward. `c_v` is C_V for the triangle's vertices (rounded or exact).
         ///
-        /// Schedule (bound units): `bu`, `bv` after edge 4, `uv` 8, `t` = 2 uv 13, `w` =
-        /// 1 + t 17, `q` = eta w 22, `g` = 2 lambda q 27, `eg[k]` = e_k + g 31. Latency
-        /// [`Gap::LATENCY`] = 31. Ports: in `clock`, `x0`, `e0` .. `x2`, `e2` (the vertex),
-        /// `two_lambda`, `eta`, `ok`, `en`; out `y0_x`, `y0_e` .. `y2_x`, `y2_e`.
+        /// Schedule: `e` = E_z after edge 4 ([`Vertex::E_AT`]), `f*` = E' 7
+        /// ([`Vertex::F_AT`]), `h` 10 ([`Vertex::H_AT`]). Ports: in `clock`, `x0` .. `x2`,
+        /// `m0` .. `m2`, `c_v`; out `e`, `f0` .. `f2`, `h`.
         #[derive(LogicBlock)]
-        pub struct Gap {
+        pub struct Vertex {
             pub clock: Signal<In, Clock>,
             pub x0: Signal<In, Bits<$W>>,
-            pub e0: Signal<In, Bits<$W>>,
             pub x1: Signal<In, Bits<$W>>,
-            pub e1: Signal<In, Bits<$W>>,
             pub x2: Signal<In, Bits<$W>>,
-            pub e2: Signal<In, Bits<$W>>,
-            pub two_lambda: Signal<In, Bits<$W>>,
-            pub eta: Signal<In, Bits<$W>>,
-            pub ok: Signal<In, Bit>,
-            pub en: Signal<In, Bit>,
-            pub y0_x: Signal<Out, Bits<$W>>,
-            pub y0_e: Signal<Out, Bits<$W>>,
-            pub y1_x: Signal<Out, Bits<$W>>,
-            pub y1_e: Signal<Out, Bits<$W>>,
-            pub y2_x: Signal<Out, Bits<$W>>,
-            pub y2_e: Signal<Out, Bits<$W>>,
-            c_one: Constant<Bits<$W>>,
-            c_two: Constant<Bits<$W>>,
-            c_inf: Constant<Bits<$W>>,
-            bu: BoundAdd,
-            bv: BoundAdd,
-            uv: BoundAdd,
-            t: BoundMul,
-            w: BoundAdd,
-            q: BoundMul,
-            g: BoundMul,
-            eg: [BoundAdd; 3],
-            eta_wait: Delay<Bits<$W>, 17>,
-            two_lambda_wait: Delay<Bits<$W>, 22>,
-            ok_wait: Delay<Bit, 27>,
-            en_wait: Delay<Bit, 31>,
-            x_wait: [Delay<Bits<$W>, 31>; 3],
-            e_wait: [Delay<Bits<$W>, 27>; 3],
-            e_pass: [Delay<Bits<$W>, 4>; 3],
+            pub m0: Signal<In, Bits<$W>>,
+            pub m1: Signal<In, Bits<$W>>,
+            pub m2: Signal<In, Bits<$W>>,
+            pub c_v: Signal<In, Bits<$W>>,
+            pub e: Signal<Out, Bits<$W>>,
+            pub f0: Signal<Out, Bits<$W>>,
+            pub f1: Signal<Out, Bits<$W>>,
+            pub f2: Signal<Out, Bits<$W>>,
+            pub h: Signal<Out, Bits<$W>>,
+            mask: Constant<Bits<$W>>,
+            c_2u: Constant<Bits<$W>>,
+            c_1u: Constant<Bits<$W>>,
+            ev: [FpMul; 3],
+            cv: [FpMul; 3],
+            fv: [FpAdd; 3],
+            ez2: FpAdd,
+            hz: FpAdd,
+            z_wait: Delay<Bits<$W>, 7>,
         }
 
-        impl Gap {
-            pub const LATENCY: usize = 31;
+        impl Vertex {
+            pub const E_AT: usize = 4;
+            pub const F_AT: usize = 7;
+            pub const H_AT: usize = 10;
 
-            pub fn new() -> Self {
-                let bias: u64 = (1u64 << ($E - 1)) - 1;
-                let ones: u64 = (1u64 << $E) - 1;
+            pub fn new(cert: &$crate::golden::tcheck::Certificate) -> Self {
+                let up = Rounding::TowardPositive;
                 Self {
                     clock: Default::default(),
                     x0: Default::default(),
-                    e0: Default::default(),
                     x1: Default::default(),
-                    e1: Default::default(),
                     x2: Default::default(),
-                    e2: Default::default(),
-                    two_lambda: Default::default(),
-                    eta: Default::default(),
-                    ok: Default::default(),
-                    en: Default::default(),
-                    y0_x: Default::default(),
-                    y0_e: Default::default(),
-                    y1_x: Default::default(),
-                    y1_e: Default::default(),
-                    y2_x: Default::default(),
-                    y2_e: Default::default(),
-                    c_one: Constant::new(pattern(bias, 0)),
-                    c_two: Constant::new(pattern(bias + 1, 0)),
-                    c_inf: Constant::new(pattern(ones, 0)),
-                    bu: BoundAdd::new(),
-                    bv: BoundAdd::new(),
-                    uv: BoundAdd::new(),
-                    t: BoundMul::new(),
-                    w: BoundAdd::new(),
-                    q: BoundMul::new(),
-                    g: BoundMul::new(),
-                    eg: std::array::from_fn(|_| BoundAdd::new()),
-                    eta_wait: Default::default(),
-                    two_lambda_wait: Default::default(),
-                    ok_wait: Default::default(),
-                    en_wait: Default::default(),
-                    x_wait: Default::default(),
-                    e_wait: Default::default(),
-                    e_pass: Default::default(),
+                    m0: Default::default(),
+                    m1: Default::default(),
+                    m2: Default::default(),
+                    c_v: Default::default(),
+                    e: Default::default(),
+                    f0: Default::default(),
+                    f1: Default::default(),
+                    f2: Default::default(),
+                    h: Default::default(),
+                    mask: Constant::new(ABS_MASK.into()),
+                    c_2u: Constant::new(word(cert.c_2u)),
+                    c_1u: Constant::new(word(cert.c_1u)),
+                    ev: std::array::from_fn(|_| FpMul::new(up)),
+                    cv: std::array::from_fn(|_| FpMul::new(up)),
+                    fv: std::array::from_fn(|_| FpAdd::new(up)),
+                    ez2: FpAdd::new(up),
+                    hz: FpAdd::new(up),
+                    z_wait: Default::default(),
                 }
             }
         }
 
-        impl Logic for Gap {
+        impl Logic for Vertex {
             #[hdl_gen]
             fn update(&mut self) {
-                clock!(self, clock, bu, bv, uv, t, w, q, g, eta_wait, two_lambda_wait, ok_wait, en_wait);
-                self.bu.a.next = bit_cast::<$W, $WM1>(self.x0.val().get_bits::<$WM1>(0));
-                self.bu.b.next = self.e0.val();
-                self.bu.valid_in.next = false;
-                self.bv.a.next = bit_cast::<$W, $WM1>(self.x1.val().get_bits::<$WM1>(0));
-                self.bv.b.next = self.e1.val();
-                self.bv.valid_in.next = false;
-                self.uv.a.next = self.bu.y.val();
-                self.uv.b.next = self.bv.y.val();
-                self.uv.valid_in.next = false;
-                self.t.a.next = self.c_two.val();
-                self.t.b.next = self.uv.y.val();
-                self.t.valid_in.next = false;
-                self.w.a.next = self.c_one.val();
-                self.w.b.next = self.t.y.val();
-                self.w.valid_in.next = false;
-                self.eta_wait.d.next = self.eta.val();
-                self.q.a.next = self.eta_wait.q.val();
-                self.q.b.next = self.w.y.val();
-                self.q.valid_in.next = false;
-                self.two_lambda_wait.d.next = self.two_lambda.val();
-                self.g.a.next = self.two_lambda_wait.q.val();
-                self.g.b.next = self.q.y.val();
-                self.g.valid_in.next = false;
-                self.ok_wait.d.next = self.ok.val();
-                self.en_wait.d.next = self.en.val();
-                self.x_wait[0].d.next = self.x0.val();
-                self.e_wait[0].d.next = self.e0.val();
-                self.x_wait[1].d.next = self.x1.val();
-                self.e_wait[1].d.next = self.e1.val();
-                self.x_wait[2].d.next = self.x2.val();
-                self.e_wait[2].d.next = self.e2.val();
-                for k in 0..3 {
-                    self.eg[k].clock.next = self.clock.val();
-                    self.x_wait[k].clock.next = self.clock.val();
-                    self.e_wait[k].clock.next = self.clock.val();
-                    self.e_pass[k].clock.next = self.clock.val();
-                    self.e_pass[k].d.next = self.e_wait[k].q.val();
-                    self.eg[k].a.next = self.e_wait[k].q.val();
-                    self.eg[k].b.next = self.g.y.val();
-                    if !self.ok_wait.q.val() {
-                        self.eg[k].b.next = self.c_inf.val();
-                    }
-                    self.eg[k].valid_in.next = false;
+                clock!(self, clock, ez2, hz, z_wait);
+                for i in 0..3 {
+                    self.ev[i].clock.next = self.clock.val();
+                    self.cv[i].clock.next = self.clock.val();
+                    self.fv[i].clock.next = self.clock.val();
+                    self.ev[i].valid_in.next = false;
+                    self.cv[i].valid_in.next = false;
+                    self.fv[i].valid_in.next = false;
+                    self.fv[i].sub.next = false;
+                    self.ev[i].a.next = self.c_v.val();
+                    self.cv[i].a.next = self.c_2u.val();
+                    self.fv[i].a.next = self.ev[i].y.val();
+                    self.fv[i].b.next = self.cv[i].y.val();
                 }
-                self.y0_x.next = self.x_wait[0].q.val();
-                self.y0_e.next = self.e_pass[0].q.val();
-                if self.en_wait.q.val() {
-                    self.y0_e.next = self.eg[0].y.val();
-                }
-                self.y1_x.next = self.x_wait[1].q.val();
-                self.y1_e.next = self.e_pass[1].q.val();
-                if self.en_wait.q.val() {
-                    self.y1_e.next = self.eg[1].y.val();
-                }
-                self.y2_x.next = self.x_wait[2].q.val();
-                self.y2_e.next = self.e_pass[2].q.val();
-                if self.en_wait.q.val() {
-                    self.y2_e.next = self.eg[2].y.val();
-                }
+                self.cv[2].a.next = self.c_1u.val();
+                self.ev[0].b.next = self.m0.val();
+                self.ev[1].b.next = self.m1.val();
+                self.ev[2].b.next = self.m2.val();
+                self.cv[0].b.next = self.x0.val() & self.mask.val();
+                self.cv[1].b.next = self.x1.val() & self.mask.val();
+                self.cv[2].b.next = self.x2.val() & self.mask.val();
+                self.ez2.a.next = self.ev[2].y.val();
+                self.ez2.b.next = self.ev[2].y.val();
+                self.ez2.sub.next = false;
+                self.ez2.valid_in.next = false;
+                self.z_wait.d.next = self.x2.val() & self.mask.val();
+                self.hz.a.next = self.z_wait.q.val();
+                self.hz.b.next = self.ez2.y.val();
+                self.hz.sub.next = false;
+                self.hz.valid_in.next = false;
+                self.e.next = self.ev[2].y.val();
+                self.f0.next = self.fv[0].y.val();
+                self.f1.next = self.fv[1].y.val();
+                self.f2.next = self.fv[2].y.val();
+                self.h.next = self.hz.y.val();
             }
         }
 
         /// Stages 3-5 for one edge P -> Q of the mapped triangle (Eq. 9 and the derived
-        /// crossing test, golden `edges`): `a = Px Qz - Qx Pz`, `b = Py Qz - Qy Pz`,
-        /// `r_z = Qz - Pz`, `s = (a + b) - r_z`, then three-valued signs and
+        /// crossing test, golden `edges_in`): `a = Px Qz - Qx Pz`, `b = Py Qz - Qy Pz`,
+        /// `r_z = Qz - Pz`, `s = (a + b) - r_z`; beside them, from the vertices' terms
+        /// ([`Vertex`]), rounded upward: `B_a = (E'_Px H_Qz + |Px| E_Qz) + (E'_Qx H_Pz +
+        /// |Qx| E_Pz)`, B_b the same with y, `B_rz = E'_Qz + E'_Pz`, `B_s = (B_a + B_b) +
+        /// (B_rz + c (|a| + |b| + |r_z|))` (c = 2u + u^2); then three-valued signs and
         /// `crossing = (Pz<0, Qz>0, r_z>0, a>0, b>0, s<0) or (Pz>0, Qz<0, r_z<0, a<0, b<0, s>0)`
         /// in Kleene logic: `cross_t` (surely crosses), `cross_f` (surely misses).
         ///
-        /// Schedule: products after edge 13 (`Pz`, `Qz` wait 13 for `rz`); `a`, `b`, `rz`
-        /// 21; `ab` = a + b 29 (`rz` waits 8); `s` 37. Each sign is taken when its value
-        /// is ready and its two bits wait for `s`. Latency [`Edge::LATENCY`] = 37 (outputs
-        /// combinational after the last adder). Ports: in `clock`, `p0_x`, `p0_e` .. `p2_e`
-        /// (P's coordinates and bounds), `q0_x` .. `q2_e`; out `s_x`, `s_e`, `cross_t`,
-        /// `cross_f`.
+        /// Inputs arrive as the vertex terms are ready: `p*`, `q*` (coordinates) at 0, `pe`,
+        /// `qe` (E_z) at [`Vertex::E_AT`], `pf*`, `qf*` (E') at [`Vertex::F_AT`], `ph`, `qh`
+        /// (H) at [`Vertex::H_AT`]. Schedule: products after edge 4, `a`, `b` 7, `rz` 3
+        /// (waits 7), `ab` 10, `s` 13; bound products 14 (`|P| E` 8, waiting 6), their sums
+        /// 17, `ba`, `bb` 20; `brz` 10 (waits 7); `rab` 10, `rabz` 13, `rs` 17, `brs` 20
+        /// (waits 3), `bab` 23, `bs` 26. Each sign is taken when its value and bound are
+        /// ready (z at 4, r_z 10, a and b 20, s 26), its two bits wait for s's, and the six
+        /// are registered with s and its bound after edge 27: latency [`Edge::LATENCY`] =
+        /// 27 (`cross_t`, `cross_f` combinational from the sign register). Ports: in
+        /// `clock`, `p0` .. `p2`, `q0` .. `q2`, `pe`, `qe`, `pf0` .. `pf2`, `qf0` .. `qf2`,
+        /// `ph`, `qh`; out `s_x`, `s_b`, `cross_t`, `cross_f`.
         #[derive(LogicBlock)]
         pub struct Edge {
             pub clock: Signal<In, Clock>,
-            pub p0_x: Signal<In, Bits<$W>>,
-            pub p0_e: Signal<In, Bits<$W>>,
-            pub p1_x: Signal<In, Bits<$W>>,
-            pub p1_e: Signal<In, Bits<$W>>,
-            pub p2_x: Signal<In, Bits<$W>>,
-            pub p2_e: Signal<In, Bits<$W>>,
-            pub q0_x: Signal<In, Bits<$W>>,
-            pub q0_e: Signal<In, Bits<$W>>,
-            pub q1_x: Signal<In, Bits<$W>>,
-            pub q1_e: Signal<In, Bits<$W>>,
-            pub q2_x: Signal<In, Bits<$W>>,
-            pub q2_e: Signal<In, Bits<$W>>,
+            pub p0: Signal<In, Bits<$W>>,
+            pub p1: Signal<In, Bits<$W>>,
+            pub p2: Signal<In, Bits<$W>>,
+            pub q0: Signal<In, Bits<$W>>,
+            pub q1: Signal<In, Bits<$W>>,
+            pub q2: Signal<In, Bits<$W>>,
+            pub pe: Signal<In, Bits<$W>>,
+            pub qe: Signal<In, Bits<$W>>,
+            pub pf0: Signal<In, Bits<$W>>,
+            pub pf1: Signal<In, Bits<$W>>,
+            pub pf2: Signal<In, Bits<$W>>,
+            pub qf0: Signal<In, Bits<$W>>,
+            pub qf1: Signal<In, Bits<$W>>,
+            pub qf2: Signal<In, Bits<$W>>,
+            pub ph: Signal<In, Bits<$W>>,
+            pub qh: Signal<In, Bits<$W>>,
             pub s_x: Signal<Out, Bits<$W>>,
-            pub s_e: Signal<Out, Bits<$W>>,
+            pub s_b: Signal<Out, Bits<$W>>,
             pub cross_t: Signal<Out, Bit>,
             pub cross_f: Signal<Out, Bit>,
-            px_qz: BMul,
-            qx_pz: BMul,
-            py_qz: BMul,
-            qy_pz: BMul,
-            pz_x_wait: Delay<Bits<$W>, 13>,
-            pz_e_wait: Delay<Bits<$W>, 13>,
-            qz_x_wait: Delay<Bits<$W>, 13>,
-            qz_e_wait: Delay<Bits<$W>, 13>,
-            a: BAdd,
-            b: BAdd,
-            rz: BAdd,
-            ab: BAdd,
-            rz_x_wait: Delay<Bits<$W>, 8>,
-            rz_e_wait: Delay<Bits<$W>, 8>,
-            s: BAdd,
+            mask: Constant<Bits<$W>>,
+            c_2u: Constant<Bits<$W>>,
+            // values
+            px_qz: FpMul,
+            qx_pz: FpMul,
+            py_qz: FpMul,
+            qy_pz: FpMul,
+            a: FpAdd,
+            b: FpAdd,
+            rz: FpAdd,
+            rz_wait: Delay<Bits<$W>, 7>,
+            ab: FpAdd,
+            s: FpAdd,
+            // bounds
+            pf0_wait: Delay<Bits<$W>, 3>,
+            qf0_wait: Delay<Bits<$W>, 3>,
+            pf1_wait: Delay<Bits<$W>, 3>,
+            qf1_wait: Delay<Bits<$W>, 3>,
+            p0_wait: Delay<Bits<$W>, 4>,
+            q0_wait: Delay<Bits<$W>, 4>,
+            p1_wait: Delay<Bits<$W>, 4>,
+            q1_wait: Delay<Bits<$W>, 4>,
+            ta: [FpMul; 4],
+            tb: [FpMul; 4],
+            ta_wait: [Delay<Bits<$W>, 6>; 2],
+            tb_wait: [Delay<Bits<$W>, 6>; 2],
+            sa: [FpAdd; 2],
+            sb: [FpAdd; 2],
+            ba: FpAdd,
+            bb: FpAdd,
+            brz: FpAdd,
+            brz_wait: Delay<Bits<$W>, 7>,
+            rab: FpAdd,
+            rabz: FpAdd,
+            rs: FpMul,
+            brs: FpAdd,
+            brs_wait: Delay<Bits<$W>, 3>,
+            bab: FpAdd,
+            bs: FpAdd,
+            // signs
+            pz_wait: Delay<Bits<$W>, 4>,
+            qz_wait: Delay<Bits<$W>, 4>,
+            a_wait: Delay<Bits<$W>, 13>,
+            b_wait: Delay<Bits<$W>, 13>,
+            s_wait: Delay<Bits<$W>, 13>,
             sign_pz: Sign,
             sign_qz: Sign,
             sign_rz: Sign,
             sign_a: Sign,
             sign_b: Sign,
             sign_s: Sign,
-            pz_sgn_wait: Delay<Bits<2>, 37>,
-            qz_sgn_wait: Delay<Bits<2>, 37>,
+            pz_sgn_wait: Delay<Bits<2>, 22>,
+            qz_sgn_wait: Delay<Bits<2>, 22>,
             rz_sgn_wait: Delay<Bits<2>, 16>,
-            a_sgn_wait: Delay<Bits<2>, 16>,
-            b_sgn_wait: Delay<Bits<2>, 16>,
+            a_sgn_wait: Delay<Bits<2>, 6>,
+            b_sgn_wait: Delay<Bits<2>, 6>,
+            // the sign register, with s and its bound
+            r_pz: DFF<Bits<2>>,
+            r_qz: DFF<Bits<2>>,
+            r_rz: DFF<Bits<2>>,
+            r_a: DFF<Bits<2>>,
+            r_b: DFF<Bits<2>>,
+            r_s: DFF<Bits<2>>,
+            r_s_x: DFF<Bits<$W>>,
+            r_s_b: DFF<Bits<$W>>,
             pz_p: Signal<Local, Bit>,
             pz_n: Signal<Local, Bit>,
             qz_p: Signal<Local, Bit>,
@@ -578,42 +401,74 @@ macro_rules! tcheck {
         }
 
         impl Edge {
-            pub const LATENCY: usize = BMul::LATENCY + 3 * BAdd::LATENCY;
+            pub const LATENCY: usize = 27;
 
-            pub fn new(rounding: Rounding) -> Self {
+            pub fn new(rounding: Rounding, cert: &$crate::golden::tcheck::Certificate) -> Self {
+                let up = Rounding::TowardPositive;
                 Self {
                     clock: Default::default(),
-                    p0_x: Default::default(),
-                    p0_e: Default::default(),
-                    p1_x: Default::default(),
-                    p1_e: Default::default(),
-                    p2_x: Default::default(),
-                    p2_e: Default::default(),
-                    q0_x: Default::default(),
-                    q0_e: Default::default(),
-                    q1_x: Default::default(),
-                    q1_e: Default::default(),
-                    q2_x: Default::default(),
-                    q2_e: Default::default(),
+                    p0: Default::default(),
+                    p1: Default::default(),
+                    p2: Default::default(),
+                    q0: Default::default(),
+                    q1: Default::default(),
+                    q2: Default::default(),
+                    pe: Default::default(),
+                    qe: Default::default(),
+                    pf0: Default::default(),
+                    pf1: Default::default(),
+                    pf2: Default::default(),
+                    qf0: Default::default(),
+                    qf1: Default::default(),
+                    qf2: Default::default(),
+                    ph: Default::default(),
+                    qh: Default::default(),
                     s_x: Default::default(),
-                    s_e: Default::default(),
+                    s_b: Default::default(),
                     cross_t: Default::default(),
                     cross_f: Default::default(),
-                    px_qz: BMul::new(rounding),
-                    qx_pz: BMul::new(rounding),
-                    py_qz: BMul::new(rounding),
-                    qy_pz: BMul::new(rounding),
-                    pz_x_wait: Default::default(),
-                    pz_e_wait: Default::default(),
-                    qz_x_wait: Default::default(),
-                    qz_e_wait: Default::default(),
-                    a: BAdd::new(rounding),
-                    b: BAdd::new(rounding),
-                    rz: BAdd::new(rounding),
-                    ab: BAdd::new(rounding),
-                    rz_x_wait: Default::default(),
-                    rz_e_wait: Default::default(),
-                    s: BAdd::new(rounding),
+                    mask: Constant::new(ABS_MASK.into()),
+                    c_2u: Constant::new(word(cert.c_2u)),
+                    px_qz: FpMul::new(rounding),
+                    qx_pz: FpMul::new(rounding),
+                    py_qz: FpMul::new(rounding),
+                    qy_pz: FpMul::new(rounding),
+                    a: FpAdd::new(rounding),
+                    b: FpAdd::new(rounding),
+                    rz: FpAdd::new(rounding),
+                    rz_wait: Default::default(),
+                    ab: FpAdd::new(rounding),
+                    s: FpAdd::new(rounding),
+                    pf0_wait: Default::default(),
+                    qf0_wait: Default::default(),
+                    pf1_wait: Default::default(),
+                    qf1_wait: Default::default(),
+                    p0_wait: Default::default(),
+                    q0_wait: Default::default(),
+                    p1_wait: Default::default(),
+                    q1_wait: Default::default(),
+                    ta: std::array::from_fn(|_| FpMul::new(up)),
+                    tb: std::array::from_fn(|_| FpMul::new(up)),
+                    ta_wait: Default::default(),
+                    tb_wait: Default::default(),
+                    sa: std::array::from_fn(|_| FpAdd::new(up)),
+                    sb: std::array::from_fn(|_| FpAdd::new(up)),
+                    ba: FpAdd::new(up),
+                    bb: FpAdd::new(up),
+                    brz: FpAdd::new(up),
+                    brz_wait: Default::default(),
+                    rab: FpAdd::new(up),
+                    rabz: FpAdd::new(up),
+                    rs: FpMul::new(up),
+                    brs: FpAdd::new(up),
+                    brs_wait: Default::default(),
+                    bab: FpAdd::new(up),
+                    bs: FpAdd::new(up),
+                    pz_wait: Default::default(),
+                    qz_wait: Default::default(),
+                    a_wait: Default::default(),
+                    b_wait: Default::default(),
+                    s_wait: Default::default(),
                     sign_pz: Sign::new(),
                     sign_qz: Sign::new(),
                     sign_rz: Sign::new(),
@@ -625,6 +480,14 @@ macro_rules! tcheck {
                     rz_sgn_wait: Default::default(),
                     a_sgn_wait: Default::default(),
                     b_sgn_wait: Default::default(),
+                    r_pz: Default::default(),
+                    r_qz: Default::default(),
+                    r_rz: Default::default(),
+                    r_a: Default::default(),
+                    r_b: Default::default(),
+                    r_s: Default::default(),
+                    r_s_x: Default::default(),
+                    r_s_b: Default::default(),
                     pz_p: Default::default(),
                     pz_n: Default::default(),
                     qz_p: Default::default(),
@@ -644,140 +507,237 @@ macro_rules! tcheck {
         impl Logic for Edge {
             #[hdl_gen]
             fn update(&mut self) {
-                clock!(self, clock, px_qz, qx_pz, py_qz, qy_pz, pz_x_wait, pz_e_wait, qz_x_wait, qz_e_wait);
-                clock!(self, clock, a, b, rz, ab, rz_x_wait, rz_e_wait, s);
+                clock!(self, clock, px_qz, qx_pz, py_qz, qy_pz, a, b, rz, rz_wait, ab, s);
+                clock!(self, clock, pf0_wait, qf0_wait, pf1_wait, qf1_wait, p0_wait, q0_wait, p1_wait, q1_wait);
+                clock!(self, clock, ba, bb, brz, brz_wait, rab, rabz, rs, brs, brs_wait, bab, bs);
+                clock!(self, clock, pz_wait, qz_wait, a_wait, b_wait, s_wait);
                 clock!(self, clock, pz_sgn_wait, qz_sgn_wait, rz_sgn_wait, a_sgn_wait, b_sgn_wait);
-                // ---- stage 3: products, then a, b, r_z
-                self.px_qz.ax.next = self.p0_x.val();
-                self.px_qz.ae.next = self.p0_e.val();
-                self.px_qz.bx.next = self.q2_x.val();
-                self.px_qz.be.next = self.q2_e.val();
-                self.qx_pz.ax.next = self.q0_x.val();
-                self.qx_pz.ae.next = self.q0_e.val();
-                self.qx_pz.bx.next = self.p2_x.val();
-                self.qx_pz.be.next = self.p2_e.val();
-                self.py_qz.ax.next = self.p1_x.val();
-                self.py_qz.ae.next = self.p1_e.val();
-                self.py_qz.bx.next = self.q2_x.val();
-                self.py_qz.be.next = self.q2_e.val();
-                self.qy_pz.ax.next = self.q1_x.val();
-                self.qy_pz.ae.next = self.q1_e.val();
-                self.qy_pz.bx.next = self.p2_x.val();
-                self.qy_pz.be.next = self.p2_e.val();
-                self.a.ax.next = self.px_qz.x.val();
-                self.a.ae.next = self.px_qz.e.val();
-                self.a.bx.next = self.qx_pz.x.val();
-                self.a.be.next = self.qx_pz.e.val();
+                dff_setup!(self, clock, r_pz, r_qz, r_rz, r_a, r_b, r_s, r_s_x, r_s_b);
+                // ---- values: products, a, b, r_z, then s = (a + b) - r_z
+                self.px_qz.a.next = self.p0.val();
+                self.px_qz.b.next = self.q2.val();
+                self.qx_pz.a.next = self.q0.val();
+                self.qx_pz.b.next = self.p2.val();
+                self.py_qz.a.next = self.p1.val();
+                self.py_qz.b.next = self.q2.val();
+                self.qy_pz.a.next = self.q1.val();
+                self.qy_pz.b.next = self.p2.val();
+                self.px_qz.valid_in.next = false;
+                self.qx_pz.valid_in.next = false;
+                self.py_qz.valid_in.next = false;
+                self.qy_pz.valid_in.next = false;
+                self.a.a.next = self.px_qz.y.val();
+                self.a.b.next = self.qx_pz.y.val();
                 self.a.sub.next = true;
-                self.b.ax.next = self.py_qz.x.val();
-                self.b.ae.next = self.py_qz.e.val();
-                self.b.bx.next = self.qy_pz.x.val();
-                self.b.be.next = self.qy_pz.e.val();
+                self.a.valid_in.next = false;
+                self.b.a.next = self.py_qz.y.val();
+                self.b.b.next = self.qy_pz.y.val();
                 self.b.sub.next = true;
-                self.pz_x_wait.d.next = self.p2_x.val();
-                self.pz_e_wait.d.next = self.p2_e.val();
-                self.qz_x_wait.d.next = self.q2_x.val();
-                self.qz_e_wait.d.next = self.q2_e.val();
-                self.rz.ax.next = self.qz_x_wait.q.val();
-                self.rz.ae.next = self.qz_e_wait.q.val();
-                self.rz.bx.next = self.pz_x_wait.q.val();
-                self.rz.be.next = self.pz_e_wait.q.val();
+                self.b.valid_in.next = false;
+                self.rz.a.next = self.q2.val();
+                self.rz.b.next = self.p2.val();
                 self.rz.sub.next = true;
-                // ---- stage 4: s = (a + b) - r_z
-                self.ab.ax.next = self.a.x.val();
-                self.ab.ae.next = self.a.e.val();
-                self.ab.bx.next = self.b.x.val();
-                self.ab.be.next = self.b.e.val();
+                self.rz.valid_in.next = false;
+                self.rz_wait.d.next = self.rz.y.val();
+                self.ab.a.next = self.a.y.val();
+                self.ab.b.next = self.b.y.val();
                 self.ab.sub.next = false;
-                self.rz_x_wait.d.next = self.rz.x.val();
-                self.rz_e_wait.d.next = self.rz.e.val();
-                self.s.ax.next = self.ab.x.val();
-                self.s.ae.next = self.ab.e.val();
-                self.s.bx.next = self.rz_x_wait.q.val();
-                self.s.be.next = self.rz_e_wait.q.val();
+                self.ab.valid_in.next = false;
+                self.s.a.next = self.ab.y.val();
+                self.s.b.next = self.rz_wait.q.val();
                 self.s.sub.next = true;
-                // ---- stage 5: signs as they are ready, waiting for s's
-                self.sign_pz.x.next = self.p2_x.val();
-                self.sign_pz.e.next = self.p2_e.val();
-                self.sign_qz.x.next = self.q2_x.val();
-                self.sign_qz.e.next = self.q2_e.val();
+                self.s.valid_in.next = false;
+                // ---- bounds of a and b: (E'_P H_Qz + |P| E_Qz) + (E'_Q H_Pz + |Q| E_Pz)
+                self.pf0_wait.d.next = self.pf0.val();
+                self.qf0_wait.d.next = self.qf0.val();
+                self.pf1_wait.d.next = self.pf1.val();
+                self.qf1_wait.d.next = self.qf1.val();
+                self.p0_wait.d.next = self.p0.val() & self.mask.val();
+                self.q0_wait.d.next = self.q0.val() & self.mask.val();
+                self.p1_wait.d.next = self.p1.val() & self.mask.val();
+                self.q1_wait.d.next = self.q1.val() & self.mask.val();
+                for k in 0..4 {
+                    self.ta[k].clock.next = self.clock.val();
+                    self.tb[k].clock.next = self.clock.val();
+                    self.ta[k].valid_in.next = false;
+                    self.tb[k].valid_in.next = false;
+                }
+                self.ta[0].a.next = self.pf0_wait.q.val();
+                self.ta[0].b.next = self.qh.val();
+                self.ta[1].a.next = self.p0_wait.q.val();
+                self.ta[1].b.next = self.qe.val();
+                self.ta[2].a.next = self.qf0_wait.q.val();
+                self.ta[2].b.next = self.ph.val();
+                self.ta[3].a.next = self.q0_wait.q.val();
+                self.ta[3].b.next = self.pe.val();
+                self.tb[0].a.next = self.pf1_wait.q.val();
+                self.tb[0].b.next = self.qh.val();
+                self.tb[1].a.next = self.p1_wait.q.val();
+                self.tb[1].b.next = self.qe.val();
+                self.tb[2].a.next = self.qf1_wait.q.val();
+                self.tb[2].b.next = self.ph.val();
+                self.tb[3].a.next = self.q1_wait.q.val();
+                self.tb[3].b.next = self.pe.val();
+                for k in 0..2 {
+                    self.ta_wait[k].clock.next = self.clock.val();
+                    self.tb_wait[k].clock.next = self.clock.val();
+                    self.sa[k].clock.next = self.clock.val();
+                    self.sb[k].clock.next = self.clock.val();
+                    self.sa[k].sub.next = false;
+                    self.sb[k].sub.next = false;
+                    self.sa[k].valid_in.next = false;
+                    self.sb[k].valid_in.next = false;
+                }
+                self.ta_wait[0].d.next = self.ta[1].y.val();
+                self.ta_wait[1].d.next = self.ta[3].y.val();
+                self.tb_wait[0].d.next = self.tb[1].y.val();
+                self.tb_wait[1].d.next = self.tb[3].y.val();
+                self.sa[0].a.next = self.ta[0].y.val();
+                self.sa[0].b.next = self.ta_wait[0].q.val();
+                self.sa[1].a.next = self.ta[2].y.val();
+                self.sa[1].b.next = self.ta_wait[1].q.val();
+                self.sb[0].a.next = self.tb[0].y.val();
+                self.sb[0].b.next = self.tb_wait[0].q.val();
+                self.sb[1].a.next = self.tb[2].y.val();
+                self.sb[1].b.next = self.tb_wait[1].q.val();
+                self.ba.a.next = self.sa[0].y.val();
+                self.ba.b.next = self.sa[1].y.val();
+                self.ba.sub.next = false;
+                self.ba.valid_in.next = false;
+                self.bb.a.next = self.sb[0].y.val();
+                self.bb.b.next = self.sb[1].y.val();
+                self.bb.sub.next = false;
+                self.bb.valid_in.next = false;
+                // ---- bound of r_z: E'_Qz + E'_Pz; of s: (B_a + B_b) + (B_rz + c (|a| + |b| + |r_z|))
+                self.brz.a.next = self.qf2.val();
+                self.brz.b.next = self.pf2.val();
+                self.brz.sub.next = false;
+                self.brz.valid_in.next = false;
+                self.brz_wait.d.next = self.brz.y.val();
+                self.rab.a.next = self.a.y.val() & self.mask.val();
+                self.rab.b.next = self.b.y.val() & self.mask.val();
+                self.rab.sub.next = false;
+                self.rab.valid_in.next = false;
+                self.rabz.a.next = self.rab.y.val();
+                self.rabz.b.next = self.rz_wait.q.val() & self.mask.val();
+                self.rabz.sub.next = false;
+                self.rabz.valid_in.next = false;
+                self.rs.a.next = self.c_2u.val();
+                self.rs.b.next = self.rabz.y.val();
+                self.rs.valid_in.next = false;
+                self.brs.a.next = self.brz_wait.q.val();
+                self.brs.b.next = self.rs.y.val();
+                self.brs.sub.next = false;
+                self.brs.valid_in.next = false;
+                self.brs_wait.d.next = self.brs.y.val();
+                self.bab.a.next = self.ba.y.val();
+                self.bab.b.next = self.bb.y.val();
+                self.bab.sub.next = false;
+                self.bab.valid_in.next = false;
+                self.bs.a.next = self.bab.y.val();
+                self.bs.b.next = self.brs_wait.q.val();
+                self.bs.sub.next = false;
+                self.bs.valid_in.next = false;
+                // ---- signs as value and bound are ready, waiting for s's
+                self.pz_wait.d.next = self.p2.val();
+                self.qz_wait.d.next = self.q2.val();
+                self.sign_pz.x.next = self.pz_wait.q.val();
+                self.sign_pz.e.next = self.pe.val();
+                self.sign_qz.x.next = self.qz_wait.q.val();
+                self.sign_qz.e.next = self.qe.val();
+                self.sign_rz.x.next = self.rz_wait.q.val();
+                self.sign_rz.e.next = self.brz.y.val();
+                self.a_wait.d.next = self.a.y.val();
+                self.b_wait.d.next = self.b.y.val();
+                self.s_wait.d.next = self.s.y.val();
+                self.sign_a.x.next = self.a_wait.q.val();
+                self.sign_a.e.next = self.ba.y.val();
+                self.sign_b.x.next = self.b_wait.q.val();
+                self.sign_b.e.next = self.bb.y.val();
+                self.sign_s.x.next = self.s_wait.q.val();
+                self.sign_s.e.next = self.bs.y.val();
                 self.pz_sgn_wait.d.next = self.sign_pz.sgn.val();
                 self.qz_sgn_wait.d.next = self.sign_qz.sgn.val();
-                self.sign_rz.x.next = self.rz.x.val();
-                self.sign_rz.e.next = self.rz.e.val();
-                self.sign_a.x.next = self.a.x.val();
-                self.sign_a.e.next = self.a.e.val();
-                self.sign_b.x.next = self.b.x.val();
-                self.sign_b.e.next = self.b.e.val();
                 self.rz_sgn_wait.d.next = self.sign_rz.sgn.val();
                 self.a_sgn_wait.d.next = self.sign_a.sgn.val();
                 self.b_sgn_wait.d.next = self.sign_b.sgn.val();
-                self.sign_s.x.next = self.s.x.val();
-                self.sign_s.e.next = self.s.e.val();
-                self.pz_p.next = self.pz_sgn_wait.q.val().get_bit(0);
-                self.pz_n.next = self.pz_sgn_wait.q.val().get_bit(1);
-                self.qz_p.next = self.qz_sgn_wait.q.val().get_bit(0);
-                self.qz_n.next = self.qz_sgn_wait.q.val().get_bit(1);
-                self.rz_p.next = self.rz_sgn_wait.q.val().get_bit(0);
-                self.rz_n.next = self.rz_sgn_wait.q.val().get_bit(1);
-                self.a_p.next = self.a_sgn_wait.q.val().get_bit(0);
-                self.a_n.next = self.a_sgn_wait.q.val().get_bit(1);
-                self.b_p.next = self.b_sgn_wait.q.val().get_bit(0);
-                self.b_n.next = self.b_sgn_wait.q.val().get_bit(1);
-                self.s_p.next = self.sign_s.sgn.val().get_bit(0);
-                self.s_n.next = self.sign_s.sgn.val().get_bit(1);
+                // ---- the sign register
+                self.r_pz.d.next = self.pz_sgn_wait.q.val();
+                self.r_qz.d.next = self.qz_sgn_wait.q.val();
+                self.r_rz.d.next = self.rz_sgn_wait.q.val();
+                self.r_a.d.next = self.a_sgn_wait.q.val();
+                self.r_b.d.next = self.b_sgn_wait.q.val();
+                self.r_s.d.next = self.sign_s.sgn.val();
+                self.r_s_x.d.next = self.s_wait.q.val();
+                self.r_s_b.d.next = self.bs.y.val();
+                self.pz_p.next = self.r_pz.q.val().get_bit(0);
+                self.pz_n.next = self.r_pz.q.val().get_bit(1);
+                self.qz_p.next = self.r_qz.q.val().get_bit(0);
+                self.qz_n.next = self.r_qz.q.val().get_bit(1);
+                self.rz_p.next = self.r_rz.q.val().get_bit(0);
+                self.rz_n.next = self.r_rz.q.val().get_bit(1);
+                self.a_p.next = self.r_a.q.val().get_bit(0);
+                self.a_n.next = self.r_a.q.val().get_bit(1);
+                self.b_p.next = self.r_b.q.val().get_bit(0);
+                self.b_n.next = self.r_b.q.val().get_bit(1);
+                self.s_p.next = self.r_s.q.val().get_bit(0);
+                self.s_n.next = self.r_s.q.val().get_bit(1);
                 // P below, Q above | P above, Q below; a conjunction is surely false as
                 // soon as one sign is surely wrong.
                 self.cross_t.next = (self.pz_n.val() & self.qz_p.val() & self.rz_p.val() & self.a_p.val() & self.b_p.val() & self.s_n.val())
                     | (self.pz_p.val() & self.qz_n.val() & self.rz_n.val() & self.a_n.val() & self.b_n.val() & self.s_p.val());
                 self.cross_f.next = (self.pz_p.val() | self.qz_n.val() | self.rz_n.val() | self.a_n.val() | self.b_n.val() | self.s_p.val())
                     & (self.pz_n.val() | self.qz_p.val() | self.rz_p.val() | self.a_p.val() | self.b_p.val() | self.s_n.val());
-                self.s_x.next = self.s.x.val();
-                self.s_e.next = self.s.e.val();
+                self.s_x.next = self.r_s_x.q.val();
+                self.s_b.next = self.r_s_b.q.val();
             }
         }
 
         /// T.CHECK: do the edges of triangle A cross the unit triangle of B's leaf? (DATE'05
         /// §4.2; golden [`stage1`](crate::golden::tcheck::stage1) then
         /// [`edges`](crate::golden::tcheck::edges), bit for bit.) One triangle pair per
-        /// clock, latency [`TCheck::LATENCY`] = 128:
+        /// clock, latency [`TCheck::LATENCY`] = 52, DATE'05's budget:
         ///
-        /// | clocks | stage | blocks |
-        /// |---|---|---|
-        /// | 1 | input register | `in_*` |
-        /// | 2-30 | 1: M_b = M_B M_AB (Eqs. 11, 12) | `mb_0..2[j]` ([`AffRow`], j = 3 affine) |
-        /// | 31-59 | 2: mapped vertices V'_k (Eq. 13) | `vt_0..2[k]` (row i, vertex k) |
-        /// | 60-90 | vertex gap (`gap_en`) | `gap[k]` ([`Gap`]) |
-        /// | 91-127 | 3, 4: a, b, r_z, s per edge (Eq. 9) | `edges[0..2]` ([`Edge`]) |
-        /// | 128 | 5: crossing per edge, OR over the edges; output register | `out_*` |
+        /// | clocks | stage | values | certificate, beside them |
+        /// |---|---|---|---|
+        /// | 1 | input register | `in_*` | |
+        /// | 2-11 | 1: M_b = M_B M_AB (Eqs. 11, 12) | `mb_0..2[j]` ([`Dot`]) | magnitudes `mg_0..2[j]`; A' = alpha_m beta_m + alpha_f beta_f, L1(x) = \|x\| + \|y\| + \|z\| + S per vertex |
+        /// | 12 | fan-out register R1 | `mbr_*` | `mgr_*` |
+        /// | 13-22 | 2: mapped vertices V'_k (Eq. 13) | `vt_0..2[k]` (coordinate i, vertex k) | `vm_0..2[k]`, with `m3_i[k]` = magnitude of Mb_i3 + A' L1 (clocks 13-16) |
+        /// | 23 | fan-out register R2 | `vtr_*` | `vmr_*` |
+        /// | 24-49 | 3, 4: a, b, r_z, s per edge (Eq. 9) | `edges[0..2]` ([`Edge`]) | `verts[k]` ([`Vertex`]): E, E', H; the edges' bounds |
+        /// | 50 | sign register (in each [`Edge`]) | | |
+        /// | 51 | 5: crossing per edge | `v_cross_t`, `v_cross_f` | |
+        /// | 52 | OR over the edges; output register | `out_*` | |
         ///
-        /// Beside the values, lambda = l_norm + e_lin, `two_lambda` = 2 lambda and
-        /// `ok` = (4 lambda) eta <= 1/2 (clocks 2-15), the vertices' bounds (0 if
-        /// `v_exact`, else err(v) to nearest) and the tag wait in delay lines.
+        /// The value datapath takes 1 + 10 + 10 + 7 + 6 + 1 of the paper's 52 clocks; the
+        /// fan-out registers (an M_b entry feeds three vertices' products, a coordinate
+        /// two edges' and the certificate's units) and the sign and verdict registers are
+        /// where the spare clocks buy clock rate, and the certificate's tail (the bounds
+        /// of a, b and s, 13 clocks after s) fits in them.
         ///
-        /// Ports, all words in the format (bounds are bound-unit words):
-        /// in `m_0[4]`, `m_1[4]`, `m_2[4]` (rows of B's M_B), `e_lin`, `e_tr`, `l_norm`
-        /// (its bounds and norm), `f_0[4]`, `f_1[4]`, `f_2[4]` (rows of the frame map
-        /// M_AB), `f_lin`, `f_tr` (its bounds), `eta`, `gap_en`, `v_x[3]`, `v_y[3]`, `v_z[3]`
-        /// (A's vertices), `v_exact`, `tag[32]`, `valid_in`;
-        /// out `s_x[3]`, `s_e[3]` (stage 4's s per edge), `cross_t[3]`, `cross_f[3]`,
-        /// `hit` (surely crosses), `miss` (surely does not), `tag_out`, `valid_out`.
+        /// Ports, all words in the format:
+        /// in `m_0[4]`, `m_1[4]`, `m_2[4]` (rows of B's M_B), `alpha_m`, `alpha_f` (its
+        /// error words), `f_0[4]`, `f_1[4]`, `f_2[4]` (rows of the frame map M_AB),
+        /// `beta_m`, `beta_f` (its error words), `scale` (S of A's object), `v_x[3]`,
+        /// `v_y[3]`, `v_z[3]` (A's vertices), `v_exact`, `tag[32]`, `valid_in`;
+        /// out `s_x[3]`, `s_b[3]` (stage 4's s per edge and its bound), `cross_t[3]`,
+        /// `cross_f[3]`, `hit` (surely crosses), `miss` (surely does not), `tag_out`,
+        /// `valid_out`.
         #[derive(LogicBlock)]
         pub struct TCheck {
             pub clock: Signal<In, Clock>,
             pub m_0: [Signal<In, Bits<$W>>; 4],
             pub m_1: [Signal<In, Bits<$W>>; 4],
             pub m_2: [Signal<In, Bits<$W>>; 4],
-            pub e_lin: Signal<In, Bits<$W>>,
-            pub e_tr: Signal<In, Bits<$W>>,
-            pub l_norm: Signal<In, Bits<$W>>,
+            pub alpha_m: Signal<In, Bits<$W>>,
+            pub alpha_f: Signal<In, Bits<$W>>,
             pub f_0: [Signal<In, Bits<$W>>; 4],
             pub f_1: [Signal<In, Bits<$W>>; 4],
             pub f_2: [Signal<In, Bits<$W>>; 4],
-            pub f_lin: Signal<In, Bits<$W>>,
-            pub f_tr: Signal<In, Bits<$W>>,
-            pub eta: Signal<In, Bits<$W>>,
-            pub gap_en: Signal<In, Bit>,
+            pub beta_m: Signal<In, Bits<$W>>,
+            pub beta_f: Signal<In, Bits<$W>>,
+            pub scale: Signal<In, Bits<$W>>,
             pub v_x: [Signal<In, Bits<$W>>; 3],
             pub v_y: [Signal<In, Bits<$W>>; 3],
             pub v_z: [Signal<In, Bits<$W>>; 3],
@@ -785,78 +745,105 @@ macro_rules! tcheck {
             pub tag: Signal<In, Bits<32>>,
             pub valid_in: Signal<In, Bit>,
             pub s_x: [Signal<Out, Bits<$W>>; 3],
-            pub s_e: [Signal<Out, Bits<$W>>; 3],
+            pub s_b: [Signal<Out, Bits<$W>>; 3],
             pub cross_t: [Signal<Out, Bit>; 3],
             pub cross_f: [Signal<Out, Bit>; 3],
             pub hit: Signal<Out, Bit>,
             pub miss: Signal<Out, Bit>,
             pub tag_out: Signal<Out, Bits<32>>,
             pub valid_out: Signal<Out, Bit>,
-            c_two: Constant<Bits<$W>>,
-            c_four: Constant<Bits<$W>>,
-            c_half: Constant<Bits<$W>>,
-            c_zero: Constant<Bits<$W>>,
+            mask: Constant<Bits<$W>>,
+            c_v_rounded: Constant<Bits<$W>>,
+            c_v_exact: Constant<Bits<$W>>,
             // clock 1: input register
             in_m_0: [DFF<Bits<$W>>; 4],
             in_m_1: [DFF<Bits<$W>>; 4],
             in_m_2: [DFF<Bits<$W>>; 4],
-            in_e_lin: DFF<Bits<$W>>,
-            in_e_tr: DFF<Bits<$W>>,
-            in_l_norm: DFF<Bits<$W>>,
+            in_alpha_m: DFF<Bits<$W>>,
+            in_alpha_f: DFF<Bits<$W>>,
             in_f_0: [DFF<Bits<$W>>; 4],
             in_f_1: [DFF<Bits<$W>>; 4],
             in_f_2: [DFF<Bits<$W>>; 4],
-            in_f_lin: DFF<Bits<$W>>,
-            in_f_tr: DFF<Bits<$W>>,
-            in_eta: DFF<Bits<$W>>,
-            in_gap_en: DFF<Bit>,
+            in_beta_m: DFF<Bits<$W>>,
+            in_beta_f: DFF<Bits<$W>>,
+            in_scale: DFF<Bits<$W>>,
             in_v_x: [DFF<Bits<$W>>; 3],
             in_v_y: [DFF<Bits<$W>>; 3],
             in_v_z: [DFF<Bits<$W>>; 3],
             in_v_exact: DFF<Bit>,
             in_tag: DFF<Bits<32>>,
             in_valid: DFF<Bit>,
-            // stage 1: row i of M_b, column j
-            mb_0: [AffRow; 4],
-            mb_1: [AffRow; 4],
-            mb_2: [AffRow; 4],
-            // the vertices and their bounds wait for M_b
-            v_err_x: [RoundErr; 3],
-            v_err_y: [RoundErr; 3],
-            v_err_z: [RoundErr; 3],
-            v_x_wait: [Delay<Bits<$W>, 29>; 3],
-            v_y_wait: [Delay<Bits<$W>, 29>; 3],
-            v_z_wait: [Delay<Bits<$W>, 29>; 3],
-            v_ex_wait: [Delay<Bits<$W>, 28>; 3],
-            v_ey_wait: [Delay<Bits<$W>, 28>; 3],
-            v_ez_wait: [Delay<Bits<$W>, 28>; 3],
-            v_exact_wait: Delay<Bit, 29>,
-            c_ve_x: [Signal<Local, Bits<$W>>; 3],
-            c_ve_y: [Signal<Local, Bits<$W>>; 3],
-            c_ve_z: [Signal<Local, Bits<$W>>; 3],
-            // stage 2: coordinate i of vertex k
-            vt_0: [AffRow; 3],
-            vt_1: [AffRow; 3],
-            vt_2: [AffRow; 3],
-            // the gap's leaf terms (clocks 2-15) wait for the mapped vertices
-            lambda: BoundAdd,
-            two_lambda: BoundMul,
-            four_lambda: BoundMul,
-            reach: BoundMul,
-            eta_early: Delay<Bits<$W>, 9>,
-            eta_wait: Delay<Bits<$W>, 58>,
-            two_lambda_wait: Delay<Bits<$W>, 49>,
-            ok_wait: Delay<Bit, 44>,
-            gap_en_wait: Delay<Bit, 58>,
-            gap: [Gap; 3],
+            // stage 1: row i of M_b and its magnitude, column j; M_B's translation waits
+            // for the products (Dot::C_AT)
+            mb_0: [Dot; 4],
+            mb_1: [Dot; 4],
+            mb_2: [Dot; 4],
+            mg_0: [Dot; 4],
+            mg_1: [Dot; 4],
+            mg_2: [Dot; 4],
+            c3_0: Delay<Bits<$W>, 4>,
+            c3_1: Delay<Bits<$W>, 4>,
+            c3_2: Delay<Bits<$W>, 4>,
+            // the input errors: A' (clocks 2-8, waiting 1) and L1 per vertex (2-7, waiting 2),
+            // err = A' L1 (10-13)
+            am: FpMul,
+            af: FpMul,
+            aerr: FpAdd,
+            aerr_wait: Delay<Bits<$W>, 1>,
+            la: [FpAdd; 3],
+            lb: [FpAdd; 3],
+            l1: [FpAdd; 3],
+            l1_wait: [Delay<Bits<$W>, 2>; 3],
+            err: [FpMul; 3],
+            // R1
+            mbr_0: [DFF<Bits<$W>>; 4],
+            mbr_1: [DFF<Bits<$W>>; 4],
+            mbr_2: [DFF<Bits<$W>>; 4],
+            mgr_0: [DFF<Bits<$W>>; 4],
+            mgr_1: [DFF<Bits<$W>>; 4],
+            mgr_2: [DFF<Bits<$W>>; 4],
+            // stage 2: coordinate i of vertex k, its magnitude (translation term + A' L1),
+            // the vertices waiting for M_b, Mb_i3 waiting for the products
+            mg3_0: Delay<Bits<$W>, 1>,
+            mg3_1: Delay<Bits<$W>, 1>,
+            mg3_2: Delay<Bits<$W>, 1>,
+            m3_0: [FpAdd; 3],
+            m3_1: [FpAdd; 3],
+            m3_2: [FpAdd; 3],
+            vc_0: Delay<Bits<$W>, 4>,
+            vc_1: Delay<Bits<$W>, 4>,
+            vc_2: Delay<Bits<$W>, 4>,
+            v_x_wait: [Delay<Bits<$W>, 11>; 3],
+            v_y_wait: [Delay<Bits<$W>, 11>; 3],
+            v_z_wait: [Delay<Bits<$W>, 11>; 3],
+            vt_0: [Dot; 3],
+            vt_1: [Dot; 3],
+            vt_2: [Dot; 3],
+            vm_0: [Dot; 3],
+            vm_1: [Dot; 3],
+            vm_2: [Dot; 3],
+            // R2
+            vtr_0: [DFF<Bits<$W>>; 3],
+            vtr_1: [DFF<Bits<$W>>; 3],
+            vtr_2: [DFF<Bits<$W>>; 3],
+            vmr_0: [DFF<Bits<$W>>; 3],
+            vmr_1: [DFF<Bits<$W>>; 3],
+            vmr_2: [DFF<Bits<$W>>; 3],
+            exact_wait: Delay<Bit, 22>,
+            c_v: Signal<Local, Bits<$W>>,
             // stages 3-5
+            verts: [Vertex; 3],
             edges: [Edge; 3],
-            tag_wait: Delay<Bits<32>, 126>,
-            valid_wait: Delay<Bit, 126>,
+            tag_wait: Delay<Bits<32>, 50>,
+            valid_wait: Delay<Bit, 50>,
+            v_cross_t: [DFF<Bit>; 3],
+            v_cross_f: [DFF<Bit>; 3],
+            v_s_x: [DFF<Bits<$W>>; 3],
+            v_s_b: [DFF<Bits<$W>>; 3],
             hit_any: Signal<Local, Bit>,
             miss_all: Signal<Local, Bit>,
             out_s_x: [DFF<Bits<$W>>; 3],
-            out_s_e: [DFF<Bits<$W>>; 3],
+            out_s_b: [DFF<Bits<$W>>; 3],
             out_cross_t: [DFF<Bit>; 3],
             out_cross_f: [DFF<Bit>; 3],
             out_hit: DFF<Bit>,
@@ -866,27 +853,26 @@ macro_rules! tcheck {
         }
 
         impl TCheck {
-            pub const LATENCY: usize = 1 + 2 * AffRow::LATENCY + Gap::LATENCY + Edge::LATENCY + 1;
+            pub const LATENCY: usize = 1 + Dot::LATENCY + 1 + Dot::LATENCY + 1 + Edge::LATENCY + 2;
 
             /// A T.CHECK whose value datapath rounds with `rounding` (NearestEven or
-            /// TowardPositive; the bound units always round to nearest and step up).
+            /// TowardPositive; the certificate's units always round upward).
             pub fn new(rounding: Rounding) -> Self {
-                let bias: u64 = (1u64 << ($E - 1)) - 1;
+                let cert = $crate::golden::tcheck::Certificate::new(FORMAT, rounding);
+                let up = Rounding::TowardPositive;
                 Self {
                     clock: Default::default(),
                     m_0: Default::default(),
                     m_1: Default::default(),
                     m_2: Default::default(),
-                    e_lin: Default::default(),
-                    e_tr: Default::default(),
-                    l_norm: Default::default(),
+                    alpha_m: Default::default(),
+                    alpha_f: Default::default(),
                     f_0: Default::default(),
                     f_1: Default::default(),
                     f_2: Default::default(),
-                    f_lin: Default::default(),
-                    f_tr: Default::default(),
-                    eta: Default::default(),
-                    gap_en: Default::default(),
+                    beta_m: Default::default(),
+                    beta_f: Default::default(),
+                    scale: Default::default(),
                     v_x: Default::default(),
                     v_y: Default::default(),
                     v_z: Default::default(),
@@ -894,72 +880,95 @@ macro_rules! tcheck {
                     tag: Default::default(),
                     valid_in: Default::default(),
                     s_x: Default::default(),
-                    s_e: Default::default(),
+                    s_b: Default::default(),
                     cross_t: Default::default(),
                     cross_f: Default::default(),
                     hit: Default::default(),
                     miss: Default::default(),
                     tag_out: Default::default(),
                     valid_out: Default::default(),
-                    c_two: Constant::new(pattern(bias + 1, 0)),
-                    c_four: Constant::new(pattern(bias + 2, 0)),
-                    c_half: Constant::new(pattern(bias - 1, 0)),
-                    c_zero: Constant::new(0u64.into()),
+                    mask: Constant::new(ABS_MASK.into()),
+                    c_v_rounded: Constant::new(word(cert.c_v[0])),
+                    c_v_exact: Constant::new(word(cert.c_v[1])),
                     in_m_0: Default::default(),
                     in_m_1: Default::default(),
                     in_m_2: Default::default(),
-                    in_e_lin: Default::default(),
-                    in_e_tr: Default::default(),
-                    in_l_norm: Default::default(),
+                    in_alpha_m: Default::default(),
+                    in_alpha_f: Default::default(),
                     in_f_0: Default::default(),
                     in_f_1: Default::default(),
                     in_f_2: Default::default(),
-                    in_f_lin: Default::default(),
-                    in_f_tr: Default::default(),
-                    in_eta: Default::default(),
-                    in_gap_en: Default::default(),
+                    in_beta_m: Default::default(),
+                    in_beta_f: Default::default(),
+                    in_scale: Default::default(),
                     in_v_x: Default::default(),
                     in_v_y: Default::default(),
                     in_v_z: Default::default(),
                     in_v_exact: Default::default(),
                     in_tag: Default::default(),
                     in_valid: Default::default(),
-                    mb_0: std::array::from_fn(|j| AffRow::new(rounding, j == 3)),
-                    mb_1: std::array::from_fn(|j| AffRow::new(rounding, j == 3)),
-                    mb_2: std::array::from_fn(|j| AffRow::new(rounding, j == 3)),
-                    v_err_x: std::array::from_fn(|_| RoundErr::new(Rounding::NearestEven)),
-                    v_err_y: std::array::from_fn(|_| RoundErr::new(Rounding::NearestEven)),
-                    v_err_z: std::array::from_fn(|_| RoundErr::new(Rounding::NearestEven)),
+                    mb_0: std::array::from_fn(|j| Dot::new(rounding, j == 3, false)),
+                    mb_1: std::array::from_fn(|j| Dot::new(rounding, j == 3, false)),
+                    mb_2: std::array::from_fn(|j| Dot::new(rounding, j == 3, false)),
+                    mg_0: std::array::from_fn(|j| Dot::new(rounding, j == 3, true)),
+                    mg_1: std::array::from_fn(|j| Dot::new(rounding, j == 3, true)),
+                    mg_2: std::array::from_fn(|j| Dot::new(rounding, j == 3, true)),
+                    c3_0: Default::default(),
+                    c3_1: Default::default(),
+                    c3_2: Default::default(),
+                    am: FpMul::new(up),
+                    af: FpMul::new(up),
+                    aerr: FpAdd::new(up),
+                    aerr_wait: Default::default(),
+                    la: std::array::from_fn(|_| FpAdd::new(up)),
+                    lb: std::array::from_fn(|_| FpAdd::new(up)),
+                    l1: std::array::from_fn(|_| FpAdd::new(up)),
+                    l1_wait: Default::default(),
+                    err: std::array::from_fn(|_| FpMul::new(up)),
+                    mbr_0: Default::default(),
+                    mbr_1: Default::default(),
+                    mbr_2: Default::default(),
+                    mgr_0: Default::default(),
+                    mgr_1: Default::default(),
+                    mgr_2: Default::default(),
+                    mg3_0: Default::default(),
+                    mg3_1: Default::default(),
+                    mg3_2: Default::default(),
+                    m3_0: std::array::from_fn(|_| FpAdd::new(up)),
+                    m3_1: std::array::from_fn(|_| FpAdd::new(up)),
+                    m3_2: std::array::from_fn(|_| FpAdd::new(up)),
+                    vc_0: Default::default(),
+                    vc_1: Default::default(),
+                    vc_2: Default::default(),
                     v_x_wait: Default::default(),
                     v_y_wait: Default::default(),
                     v_z_wait: Default::default(),
-                    v_ex_wait: Default::default(),
-                    v_ey_wait: Default::default(),
-                    v_ez_wait: Default::default(),
-                    v_exact_wait: Default::default(),
-                    c_ve_x: Default::default(),
-                    c_ve_y: Default::default(),
-                    c_ve_z: Default::default(),
-                    vt_0: std::array::from_fn(|_| AffRow::new(rounding, true)),
-                    vt_1: std::array::from_fn(|_| AffRow::new(rounding, true)),
-                    vt_2: std::array::from_fn(|_| AffRow::new(rounding, true)),
-                    lambda: BoundAdd::new(),
-                    two_lambda: BoundMul::new(),
-                    four_lambda: BoundMul::new(),
-                    reach: BoundMul::new(),
-                    eta_early: Default::default(),
-                    eta_wait: Default::default(),
-                    two_lambda_wait: Default::default(),
-                    ok_wait: Default::default(),
-                    gap_en_wait: Default::default(),
-                    gap: std::array::from_fn(|_| Gap::new()),
-                    edges: std::array::from_fn(|_| Edge::new(rounding)),
+                    vt_0: std::array::from_fn(|_| Dot::new(rounding, true, false)),
+                    vt_1: std::array::from_fn(|_| Dot::new(rounding, true, false)),
+                    vt_2: std::array::from_fn(|_| Dot::new(rounding, true, false)),
+                    vm_0: std::array::from_fn(|_| Dot::new(rounding, true, true)),
+                    vm_1: std::array::from_fn(|_| Dot::new(rounding, true, true)),
+                    vm_2: std::array::from_fn(|_| Dot::new(rounding, true, true)),
+                    vtr_0: Default::default(),
+                    vtr_1: Default::default(),
+                    vtr_2: Default::default(),
+                    vmr_0: Default::default(),
+                    vmr_1: Default::default(),
+                    vmr_2: Default::default(),
+                    exact_wait: Default::default(),
+                    c_v: Default::default(),
+                    verts: std::array::from_fn(|_| Vertex::new(&cert)),
+                    edges: std::array::from_fn(|_| Edge::new(rounding, &cert)),
                     tag_wait: Default::default(),
                     valid_wait: Default::default(),
+                    v_cross_t: Default::default(),
+                    v_cross_f: Default::default(),
+                    v_s_x: Default::default(),
+                    v_s_b: Default::default(),
                     hit_any: Default::default(),
                     miss_all: Default::default(),
                     out_s_x: Default::default(),
-                    out_s_e: Default::default(),
+                    out_s_b: Default::default(),
                     out_cross_t: Default::default(),
                     out_cross_f: Default::default(),
                     out_hit: Default::default(),
@@ -973,10 +982,10 @@ macro_rules! tcheck {
         impl Logic for TCheck {
             #[hdl_gen]
             fn update(&mut self) {
-                dff_setup!(self, clock, in_e_lin, in_e_tr, in_l_norm, in_f_lin, in_f_tr, in_eta, in_gap_en, in_v_exact, in_tag, in_valid);
+                dff_setup!(self, clock, in_alpha_m, in_alpha_f, in_beta_m, in_beta_f, in_scale, in_v_exact, in_tag, in_valid);
                 dff_setup!(self, clock, out_hit, out_miss, out_tag, out_valid);
-                clock!(self, clock, v_exact_wait, lambda, two_lambda, four_lambda, reach, eta_early, eta_wait);
-                clock!(self, clock, two_lambda_wait, ok_wait, gap_en_wait, tag_wait, valid_wait);
+                clock!(self, clock, c3_0, c3_1, c3_2, am, af, aerr, aerr_wait, mg3_0, mg3_1, mg3_2, vc_0, vc_1, vc_2);
+                clock!(self, clock, exact_wait, tag_wait, valid_wait);
                 // ---- clock 1: input register
                 for c in 0..4 {
                     self.in_m_0[c].clock.next = self.clock.val();
@@ -992,43 +1001,14 @@ macro_rules! tcheck {
                     self.in_f_1[c].d.next = self.f_1[c].val();
                     self.in_f_2[c].d.next = self.f_2[c].val();
                 }
-                self.in_e_lin.d.next = self.e_lin.val();
-                self.in_e_tr.d.next = self.e_tr.val();
-                self.in_l_norm.d.next = self.l_norm.val();
-                self.in_f_lin.d.next = self.f_lin.val();
-                self.in_f_tr.d.next = self.f_tr.val();
-                self.in_eta.d.next = self.eta.val();
-                self.in_gap_en.d.next = self.gap_en.val();
+                self.in_alpha_m.d.next = self.alpha_m.val();
+                self.in_alpha_f.d.next = self.alpha_f.val();
+                self.in_beta_m.d.next = self.beta_m.val();
+                self.in_beta_f.d.next = self.beta_f.val();
+                self.in_scale.d.next = self.scale.val();
                 self.in_v_exact.d.next = self.v_exact.val();
                 self.in_tag.d.next = self.tag.val();
                 self.in_valid.d.next = self.valid_in.val();
-                // ---- stage 1: Mb_ij = (m_i0 f_0j + m_i1 f_1j) + m_i2 f_2j  (j < 3)
-                //               Mb_i3 = (m_i0 f_03 + m_i1 f_13) + (m_i2 f_23 + m_i3)
-                $(
-                for j in 0..4 {
-                    self.$mb[j].clock.next = self.clock.val();
-                    self.$mb[j].a0_x.next = self.$in_m[0].q.val();
-                    self.$mb[j].a1_x.next = self.$in_m[1].q.val();
-                    self.$mb[j].a2_x.next = self.$in_m[2].q.val();
-                    self.$mb[j].a0_e.next = self.in_e_lin.q.val();
-                    self.$mb[j].a1_e.next = self.in_e_lin.q.val();
-                    self.$mb[j].a2_e.next = self.in_e_lin.q.val();
-                    self.$mb[j].b0_x.next = self.in_f_0[j].q.val();
-                    self.$mb[j].b1_x.next = self.in_f_1[j].q.val();
-                    self.$mb[j].b2_x.next = self.in_f_2[j].q.val();
-                    self.$mb[j].b0_e.next = self.in_f_lin.q.val();
-                    self.$mb[j].b1_e.next = self.in_f_lin.q.val();
-                    self.$mb[j].b2_e.next = self.in_f_lin.q.val();
-                    self.$mb[j].c_x.next = self.$in_m[3].q.val();
-                    self.$mb[j].c_e.next = self.in_e_tr.q.val();
-                }
-                // the translation column's operands from the frame carry f_tr
-                self.$mb[3].b0_e.next = self.in_f_tr.q.val();
-                self.$mb[3].b1_e.next = self.in_f_tr.q.val();
-                self.$mb[3].b2_e.next = self.in_f_tr.q.val();
-                )*
-                // ---- the vertices wait for M_b; their bound: 0 if exact, else err(v) to nearest
-                self.v_exact_wait.d.next = self.in_v_exact.q.val();
                 for k in 0..3 {
                     self.in_v_x[k].clock.next = self.clock.val();
                     self.in_v_y[k].clock.next = self.clock.val();
@@ -1036,143 +1016,207 @@ macro_rules! tcheck {
                     self.in_v_x[k].d.next = self.v_x[k].val();
                     self.in_v_y[k].d.next = self.v_y[k].val();
                     self.in_v_z[k].d.next = self.v_z[k].val();
-                    self.v_err_x[k].clock.next = self.clock.val();
-                    self.v_err_y[k].clock.next = self.clock.val();
-                    self.v_err_z[k].clock.next = self.clock.val();
+                }
+                // ---- stage 1: Mb_ij = (m_i0 f_0j + m_i1 f_1j) + m_i2 f_2j  (j < 3)
+                //               Mb_i3 = (m_i0 f_03 + m_i1 f_13) + (m_i2 f_23 + m_i3)
+                // and the same on absolute values, rounded upward; R1
+                $(
+                self.$c3.d.next = self.$in_m[3].q.val();
+                for j in 0..4 {
+                    self.$mb[j].clock.next = self.clock.val();
+                    self.$mg[j].clock.next = self.clock.val();
+                    self.$mb[j].a0.next = self.$in_m[0].q.val();
+                    self.$mb[j].a1.next = self.$in_m[1].q.val();
+                    self.$mb[j].a2.next = self.$in_m[2].q.val();
+                    self.$mb[j].b0.next = self.in_f_0[j].q.val();
+                    self.$mb[j].b1.next = self.in_f_1[j].q.val();
+                    self.$mb[j].b2.next = self.in_f_2[j].q.val();
+                    self.$mb[j].c.next = self.$c3.q.val();
+                    self.$mg[j].a0.next = self.$in_m[0].q.val();
+                    self.$mg[j].a1.next = self.$in_m[1].q.val();
+                    self.$mg[j].a2.next = self.$in_m[2].q.val();
+                    self.$mg[j].b0.next = self.in_f_0[j].q.val();
+                    self.$mg[j].b1.next = self.in_f_1[j].q.val();
+                    self.$mg[j].b2.next = self.in_f_2[j].q.val();
+                    self.$mg[j].c.next = self.$c3.q.val();
+                    self.$mbr[j].clock.next = self.clock.val();
+                    self.$mgr[j].clock.next = self.clock.val();
+                    self.$mbr[j].d.next = self.$mb[j].y.val();
+                    self.$mgr[j].d.next = self.$mg[j].y.val();
+                }
+                )*
+                // ---- the input errors: A' = alpha_m beta_m + alpha_f beta_f, and per vertex
+                // L1 = (|x| + |y|) + (|z| + S), err = A' L1, all rounded upward
+                self.am.a.next = self.in_alpha_m.q.val();
+                self.am.b.next = self.in_beta_m.q.val();
+                self.am.valid_in.next = false;
+                self.af.a.next = self.in_alpha_f.q.val();
+                self.af.b.next = self.in_beta_f.q.val();
+                self.af.valid_in.next = false;
+                self.aerr.a.next = self.am.y.val();
+                self.aerr.b.next = self.af.y.val();
+                self.aerr.sub.next = false;
+                self.aerr.valid_in.next = false;
+                self.aerr_wait.d.next = self.aerr.y.val();
+                for k in 0..3 {
+                    self.la[k].clock.next = self.clock.val();
+                    self.lb[k].clock.next = self.clock.val();
+                    self.l1[k].clock.next = self.clock.val();
+                    self.l1_wait[k].clock.next = self.clock.val();
+                    self.err[k].clock.next = self.clock.val();
+                    self.la[k].a.next = self.in_v_x[k].q.val() & self.mask.val();
+                    self.la[k].b.next = self.in_v_y[k].q.val() & self.mask.val();
+                    self.lb[k].a.next = self.in_v_z[k].q.val() & self.mask.val();
+                    self.lb[k].b.next = self.in_scale.q.val();
+                    self.l1[k].a.next = self.la[k].y.val();
+                    self.l1[k].b.next = self.lb[k].y.val();
+                    self.la[k].sub.next = false;
+                    self.lb[k].sub.next = false;
+                    self.l1[k].sub.next = false;
+                    self.la[k].valid_in.next = false;
+                    self.lb[k].valid_in.next = false;
+                    self.l1[k].valid_in.next = false;
+                    self.l1_wait[k].d.next = self.l1[k].y.val();
+                    self.err[k].a.next = self.aerr_wait.q.val();
+                    self.err[k].b.next = self.l1_wait[k].q.val();
+                    self.err[k].valid_in.next = false;
+                    // the vertices wait for M_b
                     self.v_x_wait[k].clock.next = self.clock.val();
                     self.v_y_wait[k].clock.next = self.clock.val();
                     self.v_z_wait[k].clock.next = self.clock.val();
-                    self.v_ex_wait[k].clock.next = self.clock.val();
-                    self.v_ey_wait[k].clock.next = self.clock.val();
-                    self.v_ez_wait[k].clock.next = self.clock.val();
-                    self.v_err_x[k].x.next = self.in_v_x[k].q.val();
-                    self.v_err_y[k].x.next = self.in_v_y[k].q.val();
-                    self.v_err_z[k].x.next = self.in_v_z[k].q.val();
-                    self.v_err_x[k].valid_in.next = false;
-                    self.v_err_y[k].valid_in.next = false;
-                    self.v_err_z[k].valid_in.next = false;
                     self.v_x_wait[k].d.next = self.in_v_x[k].q.val();
                     self.v_y_wait[k].d.next = self.in_v_y[k].q.val();
                     self.v_z_wait[k].d.next = self.in_v_z[k].q.val();
-                    self.v_ex_wait[k].d.next = self.v_err_x[k].y.val();
-                    self.v_ey_wait[k].d.next = self.v_err_y[k].y.val();
-                    self.v_ez_wait[k].d.next = self.v_err_z[k].y.val();
-                    self.c_ve_x[k].next = self.v_ex_wait[k].q.val();
-                    self.c_ve_y[k].next = self.v_ey_wait[k].q.val();
-                    self.c_ve_z[k].next = self.v_ez_wait[k].q.val();
-                    if self.v_exact_wait.q.val() {
-                        self.c_ve_x[k].next = self.c_zero.val();
-                        self.c_ve_y[k].next = self.c_zero.val();
-                        self.c_ve_z[k].next = self.c_zero.val();
-                    }
                 }
-                // ---- stage 2: V'_ik = (Mb_i0 x_k + Mb_i1 y_k) + (Mb_i2 z_k + Mb_i3)
+                // ---- stage 2: V'_ik = (Mb_i0 x_k + Mb_i1 y_k) + (Mb_i2 z_k + Mb_i3), its
+                // magnitude with |Mb_i3| + A' L1_k as the translation term; R2
                 $(
+                self.$mg3.d.next = self.$mgr[3].q.val();
+                self.$vc.d.next = self.$mbr[3].q.val();
                 for k in 0..3 {
+                    self.$m3[k].clock.next = self.clock.val();
+                    self.$m3[k].a.next = self.$mg3.q.val();
+                    self.$m3[k].b.next = self.err[k].y.val();
+                    self.$m3[k].sub.next = false;
+                    self.$m3[k].valid_in.next = false;
                     self.$vt[k].clock.next = self.clock.val();
-                    self.$vt[k].a0_x.next = self.$mb[0].y_x.val();
-                    self.$vt[k].a0_e.next = self.$mb[0].y_e.val();
-                    self.$vt[k].a1_x.next = self.$mb[1].y_x.val();
-                    self.$vt[k].a1_e.next = self.$mb[1].y_e.val();
-                    self.$vt[k].a2_x.next = self.$mb[2].y_x.val();
-                    self.$vt[k].a2_e.next = self.$mb[2].y_e.val();
-                    self.$vt[k].c_x.next = self.$mb[3].y_x.val();
-                    self.$vt[k].c_e.next = self.$mb[3].y_e.val();
-                    self.$vt[k].b0_x.next = self.v_x_wait[k].q.val();
-                    self.$vt[k].b0_e.next = self.c_ve_x[k].val();
-                    self.$vt[k].b1_x.next = self.v_y_wait[k].q.val();
-                    self.$vt[k].b1_e.next = self.c_ve_y[k].val();
-                    self.$vt[k].b2_x.next = self.v_z_wait[k].q.val();
-                    self.$vt[k].b2_e.next = self.c_ve_z[k].val();
-                    self.gap[k].$gx.next = self.$vt[k].y_x.val();
-                    self.gap[k].$ge.next = self.$vt[k].y_e.val();
+                    self.$vm[k].clock.next = self.clock.val();
+                    self.$vt[k].a0.next = self.$mbr[0].q.val();
+                    self.$vt[k].a1.next = self.$mbr[1].q.val();
+                    self.$vt[k].a2.next = self.$mbr[2].q.val();
+                    self.$vt[k].b0.next = self.v_x_wait[k].q.val();
+                    self.$vt[k].b1.next = self.v_y_wait[k].q.val();
+                    self.$vt[k].b2.next = self.v_z_wait[k].q.val();
+                    self.$vt[k].c.next = self.$vc.q.val();
+                    self.$vm[k].a0.next = self.$mgr[0].q.val();
+                    self.$vm[k].a1.next = self.$mgr[1].q.val();
+                    self.$vm[k].a2.next = self.$mgr[2].q.val();
+                    self.$vm[k].b0.next = self.v_x_wait[k].q.val();
+                    self.$vm[k].b1.next = self.v_y_wait[k].q.val();
+                    self.$vm[k].b2.next = self.v_z_wait[k].q.val();
+                    self.$vm[k].c.next = self.$m3[k].y.val();
+                    self.$vtr[k].clock.next = self.clock.val();
+                    self.$vmr[k].clock.next = self.clock.val();
+                    self.$vtr[k].d.next = self.$vt[k].y.val();
+                    self.$vmr[k].d.next = self.$vm[k].y.val();
                 }
                 )*
-                // ---- the gap's leaf terms: lambda = l_norm + e_lin, 2 lambda, (4 lambda) eta <= 1/2
-                self.lambda.a.next = self.in_l_norm.q.val();
-                self.lambda.b.next = self.in_e_lin.q.val();
-                self.lambda.valid_in.next = false;
-                self.two_lambda.a.next = self.c_two.val();
-                self.two_lambda.b.next = self.lambda.y.val();
-                self.two_lambda.valid_in.next = false;
-                self.four_lambda.a.next = self.c_four.val();
-                self.four_lambda.b.next = self.lambda.y.val();
-                self.four_lambda.valid_in.next = false;
-                self.eta_early.d.next = self.in_eta.q.val();
-                self.reach.a.next = self.four_lambda.y.val();
-                self.reach.b.next = self.eta_early.q.val();
-                self.reach.valid_in.next = false;
-                self.ok_wait.d.next = self.reach.y.val() <= self.c_half.val();
-                self.two_lambda_wait.d.next = self.two_lambda.y.val();
-                self.eta_wait.d.next = self.in_eta.q.val();
-                self.gap_en_wait.d.next = self.in_gap_en.q.val();
+                // ---- the vertices' certificate terms, C_V for rounded or exact vertices
+                self.exact_wait.d.next = self.in_v_exact.q.val();
+                self.c_v.next = self.c_v_rounded.val();
+                if self.exact_wait.q.val() {
+                    self.c_v.next = self.c_v_exact.val();
+                }
                 for k in 0..3 {
-                    self.gap[k].clock.next = self.clock.val();
-                    self.gap[k].two_lambda.next = self.two_lambda_wait.q.val();
-                    self.gap[k].eta.next = self.eta_wait.q.val();
-                    self.gap[k].ok.next = self.ok_wait.q.val();
-                    self.gap[k].en.next = self.gap_en_wait.q.val();
+                    self.verts[k].clock.next = self.clock.val();
+                    self.verts[k].c_v.next = self.c_v.val();
+                    self.verts[k].x0.next = self.vtr_0[k].q.val();
+                    self.verts[k].x1.next = self.vtr_1[k].q.val();
+                    self.verts[k].x2.next = self.vtr_2[k].q.val();
+                    self.verts[k].m0.next = self.vmr_0[k].q.val();
+                    self.verts[k].m1.next = self.vmr_1[k].q.val();
+                    self.verts[k].m2.next = self.vmr_2[k].q.val();
                 }
                 // ---- stages 3-5: edges V0V1, V1V2, V2V0
-                self.edges[0].p0_x.next = self.gap[0].y0_x.val();
-                self.edges[0].q0_x.next = self.gap[1].y0_x.val();
-                self.edges[0].p0_e.next = self.gap[0].y0_e.val();
-                self.edges[0].q0_e.next = self.gap[1].y0_e.val();
-                self.edges[0].p1_x.next = self.gap[0].y1_x.val();
-                self.edges[0].q1_x.next = self.gap[1].y1_x.val();
-                self.edges[0].p1_e.next = self.gap[0].y1_e.val();
-                self.edges[0].q1_e.next = self.gap[1].y1_e.val();
-                self.edges[0].p2_x.next = self.gap[0].y2_x.val();
-                self.edges[0].q2_x.next = self.gap[1].y2_x.val();
-                self.edges[0].p2_e.next = self.gap[0].y2_e.val();
-                self.edges[0].q2_e.next = self.gap[1].y2_e.val();
-                self.edges[1].p0_x.next = self.gap[1].y0_x.val();
-                self.edges[1].q0_x.next = self.gap[2].y0_x.val();
-                self.edges[1].p0_e.next = self.gap[1].y0_e.val();
-                self.edges[1].q0_e.next = self.gap[2].y0_e.val();
-                self.edges[1].p1_x.next = self.gap[1].y1_x.val();
-                self.edges[1].q1_x.next = self.gap[2].y1_x.val();
-                self.edges[1].p1_e.next = self.gap[1].y1_e.val();
-                self.edges[1].q1_e.next = self.gap[2].y1_e.val();
-                self.edges[1].p2_x.next = self.gap[1].y2_x.val();
-                self.edges[1].q2_x.next = self.gap[2].y2_x.val();
-                self.edges[1].p2_e.next = self.gap[1].y2_e.val();
-                self.edges[1].q2_e.next = self.gap[2].y2_e.val();
-                self.edges[2].p0_x.next = self.gap[2].y0_x.val();
-                self.edges[2].q0_x.next = self.gap[0].y0_x.val();
-                self.edges[2].p0_e.next = self.gap[2].y0_e.val();
-                self.edges[2].q0_e.next = self.gap[0].y0_e.val();
-                self.edges[2].p1_x.next = self.gap[2].y1_x.val();
-                self.edges[2].q1_x.next = self.gap[0].y1_x.val();
-                self.edges[2].p1_e.next = self.gap[2].y1_e.val();
-                self.edges[2].q1_e.next = self.gap[0].y1_e.val();
-                self.edges[2].p2_x.next = self.gap[2].y2_x.val();
-                self.edges[2].q2_x.next = self.gap[0].y2_x.val();
-                self.edges[2].p2_e.next = self.gap[2].y2_e.val();
-                self.edges[2].q2_e.next = self.gap[0].y2_e.val();
+                self.edges[0].p0.next = self.vtr_0[0].q.val();
+                self.edges[0].p1.next = self.vtr_1[0].q.val();
+                self.edges[0].p2.next = self.vtr_2[0].q.val();
+                self.edges[0].q0.next = self.vtr_0[1].q.val();
+                self.edges[0].q1.next = self.vtr_1[1].q.val();
+                self.edges[0].q2.next = self.vtr_2[1].q.val();
+                self.edges[0].pe.next = self.verts[0].e.val();
+                self.edges[0].qe.next = self.verts[1].e.val();
+                self.edges[0].pf0.next = self.verts[0].f0.val();
+                self.edges[0].pf1.next = self.verts[0].f1.val();
+                self.edges[0].pf2.next = self.verts[0].f2.val();
+                self.edges[0].qf0.next = self.verts[1].f0.val();
+                self.edges[0].qf1.next = self.verts[1].f1.val();
+                self.edges[0].qf2.next = self.verts[1].f2.val();
+                self.edges[0].ph.next = self.verts[0].h.val();
+                self.edges[0].qh.next = self.verts[1].h.val();
+                self.edges[1].p0.next = self.vtr_0[1].q.val();
+                self.edges[1].p1.next = self.vtr_1[1].q.val();
+                self.edges[1].p2.next = self.vtr_2[1].q.val();
+                self.edges[1].q0.next = self.vtr_0[2].q.val();
+                self.edges[1].q1.next = self.vtr_1[2].q.val();
+                self.edges[1].q2.next = self.vtr_2[2].q.val();
+                self.edges[1].pe.next = self.verts[1].e.val();
+                self.edges[1].qe.next = self.verts[2].e.val();
+                self.edges[1].pf0.next = self.verts[1].f0.val();
+                self.edges[1].pf1.next = self.verts[1].f1.val();
+                self.edges[1].pf2.next = self.verts[1].f2.val();
+                self.edges[1].qf0.next = self.verts[2].f0.val();
+                self.edges[1].qf1.next = self.verts[2].f1.val();
+                self.edges[1].qf2.next = self.verts[2].f2.val();
+                self.edges[1].ph.next = self.verts[1].h.val();
+                self.edges[1].qh.next = self.verts[2].h.val();
+                self.edges[2].p0.next = self.vtr_0[2].q.val();
+                self.edges[2].p1.next = self.vtr_1[2].q.val();
+                self.edges[2].p2.next = self.vtr_2[2].q.val();
+                self.edges[2].q0.next = self.vtr_0[0].q.val();
+                self.edges[2].q1.next = self.vtr_1[0].q.val();
+                self.edges[2].q2.next = self.vtr_2[0].q.val();
+                self.edges[2].pe.next = self.verts[2].e.val();
+                self.edges[2].qe.next = self.verts[0].e.val();
+                self.edges[2].pf0.next = self.verts[2].f0.val();
+                self.edges[2].pf1.next = self.verts[2].f1.val();
+                self.edges[2].pf2.next = self.verts[2].f2.val();
+                self.edges[2].qf0.next = self.verts[0].f0.val();
+                self.edges[2].qf1.next = self.verts[0].f1.val();
+                self.edges[2].qf2.next = self.verts[0].f2.val();
+                self.edges[2].ph.next = self.verts[2].h.val();
+                self.edges[2].qh.next = self.verts[0].h.val();
                 self.tag_wait.d.next = self.in_tag.q.val();
                 self.valid_wait.d.next = self.in_valid.q.val();
-                // ---- stage 5: Kleene OR over the edges; output register
+                // ---- clock 51: the verdict per edge; 52: OR over the edges, output register
                 self.hit_any.next = false;
                 self.miss_all.next = true;
                 for e in 0..3 {
                     self.edges[e].clock.next = self.clock.val();
+                    self.v_cross_t[e].clock.next = self.clock.val();
+                    self.v_cross_f[e].clock.next = self.clock.val();
+                    self.v_s_x[e].clock.next = self.clock.val();
+                    self.v_s_b[e].clock.next = self.clock.val();
                     self.out_s_x[e].clock.next = self.clock.val();
-                    self.out_s_e[e].clock.next = self.clock.val();
+                    self.out_s_b[e].clock.next = self.clock.val();
                     self.out_cross_t[e].clock.next = self.clock.val();
                     self.out_cross_f[e].clock.next = self.clock.val();
-                    self.out_s_x[e].d.next = self.edges[e].s_x.val();
-                    self.out_s_e[e].d.next = self.edges[e].s_e.val();
-                    self.out_cross_t[e].d.next = self.edges[e].cross_t.val();
-                    self.out_cross_f[e].d.next = self.edges[e].cross_f.val();
-                    if self.edges[e].cross_t.val() {
+                    self.v_cross_t[e].d.next = self.edges[e].cross_t.val();
+                    self.v_cross_f[e].d.next = self.edges[e].cross_f.val();
+                    self.v_s_x[e].d.next = self.edges[e].s_x.val();
+                    self.v_s_b[e].d.next = self.edges[e].s_b.val();
+                    self.out_s_x[e].d.next = self.v_s_x[e].q.val();
+                    self.out_s_b[e].d.next = self.v_s_b[e].q.val();
+                    self.out_cross_t[e].d.next = self.v_cross_t[e].q.val();
+                    self.out_cross_f[e].d.next = self.v_cross_f[e].q.val();
+                    if self.v_cross_t[e].q.val() {
                         self.hit_any.next = true;
                     }
-                    if !self.edges[e].cross_f.val() {
+                    if !self.v_cross_f[e].q.val() {
                         self.miss_all.next = false;
                     }
                     self.s_x[e].next = self.out_s_x[e].q.val();
-                    self.s_e[e].next = self.out_s_e[e].q.val();
+                    self.s_b[e].next = self.out_s_b[e].q.val();
                     self.cross_t[e].next = self.out_cross_t[e].q.val();
                     self.cross_f[e].next = self.out_cross_f[e].q.val();
                 }
@@ -1188,7 +1232,7 @@ macro_rules! tcheck {
         }
 
         /// A T.CHECK ready to simulate as a top-level block (inputs claimed, connected).
-        /// Large (about 10 MB in binary32): build it on a thread with a big stack.
+        /// Large: build it on a thread with a big stack.
         pub fn tcheck_top(rounding: Rounding) -> TCheck {
             let mut uut = TCheck::new(rounding);
             for c in 0..4 {
@@ -1204,7 +1248,7 @@ macro_rules! tcheck {
                 uut.v_y[k].connect();
                 uut.v_z[k].connect();
             }
-            top_level!(uut; clock, e_lin, e_tr, l_norm, f_lin, f_tr, eta, gap_en, v_exact, tag, valid_in)
+            top_level!(uut; clock, alpha_m, alpha_f, beta_m, beta_f, scale, v_exact, tag, valid_in)
         }
 
         /// Verilog of T.CHECK (top module `top`).

@@ -11,7 +11,7 @@ macro_rules! tri_unit {
 
         /// TRI_UNIT: is triangle a of A intersecting triangle b of B? Golden
         /// [`tri_unit`](crate::golden::tcheck::tri_unit), bit for bit: `tc_ab` tests A's
-        /// edges against U(B) (B's leaf, the frame map M_AB, with the vertex gap), `tc_ba`
+        /// edges against U(B) (B's leaf, the frame map M_AB), `tc_ba`
         /// B's edges against U(A) (A's leaf, M_BA); a degenerate leaf leaves its direction
         /// unknown; the verdict is the Kleene OR of the two: intersecting (`hit`), separate,
         /// or `uncertain` (the host settles it with the exact oracle).
@@ -20,10 +20,11 @@ macro_rules! tri_unit {
         ///
         /// * per query, a write port for the frame maps: in `load_en`, `load_addr[5]`,
         ///   `load_data[W]`; address `4 i + c` (i < 3, c < 4) writes M_AB[i][c], 12 and 13
-        ///   its bounds (linear, translation), `16 + 4 i + c` M_BA[i][c], 28 and 29 its
-        ///   bounds, 30 eta. Written on the rising edge while `load_en` is high.
+        ///   its error words (beta_m, beta_f), 14 A's scale, `16 + 4 i + c` M_BA[i][c], 28
+        ///   and 29 its error words, 30 B's scale. Written on the rising edge while
+        ///   `load_en` is high.
         /// * per pair (valid/ready): in `a_*`, `b_*` = the two leaves' triangle words
-        ///   (`m_0[4]`, `m_1[4]`, `m_2[4]` = M rows, `e_lin`, `e_tr`, `l_norm`,
+        ///   (`m_0[4]`, `m_1[4]`, `m_2[4]` = M rows, `alpha_m`, `alpha_f`,
         ///   `v_x[3]`, `v_y[3]`, `v_z[3]` = vertices, `v_exact`, `degenerate`),
         ///   `tag[32]` (the pair id), `in_valid`; out `in_ready`. A pair is taken on a
         ///   rising edge with `in_valid` and `in_ready` high.
@@ -32,8 +33,8 @@ macro_rules! tri_unit {
         ///   `out_valid` and `out_ready` high, in the order the pairs came in.
         ///
         /// Timing: a pair taken at edge t (presented in cycle t) is at the FIFO's write
-        /// port in cycle t + 128 (the T.CHECKs, [`TCheck::LATENCY`]) and at the output
-        /// (`out_valid`) in cycle t + 130 (the FIFO's write and read registers).
+        /// port in cycle t + 52 (the T.CHECKs, [`TCheck::LATENCY`]) and at the output
+        /// (`out_valid`) in cycle t + 54 (the FIFO's write and read registers).
         /// Back-pressure: `in_ready` is low while 256 pairs (the FIFO's depth) are taken
         /// and not yet read out (`count`), so the FIFO never overflows and no result is
         /// lost; a reader that is always ready sees one result per clock.
@@ -46,9 +47,8 @@ macro_rules! tri_unit {
             pub a_m_0: [Signal<In, Bits<$W>>; 4],
             pub a_m_1: [Signal<In, Bits<$W>>; 4],
             pub a_m_2: [Signal<In, Bits<$W>>; 4],
-            pub a_e_lin: Signal<In, Bits<$W>>,
-            pub a_e_tr: Signal<In, Bits<$W>>,
-            pub a_l_norm: Signal<In, Bits<$W>>,
+            pub a_alpha_m: Signal<In, Bits<$W>>,
+            pub a_alpha_f: Signal<In, Bits<$W>>,
             pub a_v_x: [Signal<In, Bits<$W>>; 3],
             pub a_v_y: [Signal<In, Bits<$W>>; 3],
             pub a_v_z: [Signal<In, Bits<$W>>; 3],
@@ -57,9 +57,8 @@ macro_rules! tri_unit {
             pub b_m_0: [Signal<In, Bits<$W>>; 4],
             pub b_m_1: [Signal<In, Bits<$W>>; 4],
             pub b_m_2: [Signal<In, Bits<$W>>; 4],
-            pub b_e_lin: Signal<In, Bits<$W>>,
-            pub b_e_tr: Signal<In, Bits<$W>>,
-            pub b_l_norm: Signal<In, Bits<$W>>,
+            pub b_alpha_m: Signal<In, Bits<$W>>,
+            pub b_alpha_f: Signal<In, Bits<$W>>,
             pub b_v_x: [Signal<In, Bits<$W>>; 3],
             pub b_v_y: [Signal<In, Bits<$W>>; 3],
             pub b_v_z: [Signal<In, Bits<$W>>; 3],
@@ -73,25 +72,26 @@ macro_rules! tri_unit {
             pub out_uncertain: Signal<Out, Bit>,
             pub out_valid: Signal<Out, Bit>,
             pub out_ready: Signal<In, Bit>,
-            // per-query registers: rows of M_AB, M_BA; bounds; eta
+            // per-query registers: rows of M_AB, M_BA; their error words; the scales
             addr_0: [Constant<Bits<5>>; 4],
             addr_1: [Constant<Bits<5>>; 4],
             addr_2: [Constant<Bits<5>>; 4],
             ab_0: [DFF<Bits<$W>>; 4],
             ab_1: [DFF<Bits<$W>>; 4],
             ab_2: [DFF<Bits<$W>>; 4],
-            ab_lin: DFF<Bits<$W>>,
-            ab_tr: DFF<Bits<$W>>,
+            ab_bm: DFF<Bits<$W>>,
+            ab_bf: DFF<Bits<$W>>,
+            ab_s: DFF<Bits<$W>>,
             ba_0: [DFF<Bits<$W>>; 4],
             ba_1: [DFF<Bits<$W>>; 4],
             ba_2: [DFF<Bits<$W>>; 4],
-            ba_lin: DFF<Bits<$W>>,
-            ba_tr: DFF<Bits<$W>>,
-            eta: DFF<Bits<$W>>,
+            ba_bm: DFF<Bits<$W>>,
+            ba_bf: DFF<Bits<$W>>,
+            ba_s: DFF<Bits<$W>>,
             // the two directions
             tc_ab: TCheck,
             tc_ba: TCheck,
-            degenerate_wait: Delay<Bits<2>, 128>,
+            degenerate_wait: Delay<Bits<2>, { TCheck::LATENCY }>,
             d1_t: Signal<Local, Bit>,
             d1_f: Signal<Local, Bit>,
             d2_t: Signal<Local, Bit>,
@@ -123,9 +123,8 @@ macro_rules! tri_unit {
                     a_m_0: Default::default(),
                     a_m_1: Default::default(),
                     a_m_2: Default::default(),
-                    a_e_lin: Default::default(),
-                    a_e_tr: Default::default(),
-                    a_l_norm: Default::default(),
+                    a_alpha_m: Default::default(),
+                    a_alpha_f: Default::default(),
                     a_v_x: Default::default(),
                     a_v_y: Default::default(),
                     a_v_z: Default::default(),
@@ -134,9 +133,8 @@ macro_rules! tri_unit {
                     b_m_0: Default::default(),
                     b_m_1: Default::default(),
                     b_m_2: Default::default(),
-                    b_e_lin: Default::default(),
-                    b_e_tr: Default::default(),
-                    b_l_norm: Default::default(),
+                    b_alpha_m: Default::default(),
+                    b_alpha_f: Default::default(),
                     b_v_x: Default::default(),
                     b_v_y: Default::default(),
                     b_v_z: Default::default(),
@@ -156,14 +154,15 @@ macro_rules! tri_unit {
                     ab_0: Default::default(),
                     ab_1: Default::default(),
                     ab_2: Default::default(),
-                    ab_lin: Default::default(),
-                    ab_tr: Default::default(),
+                    ab_bm: Default::default(),
+                    ab_bf: Default::default(),
+                    ab_s: Default::default(),
                     ba_0: Default::default(),
                     ba_1: Default::default(),
                     ba_2: Default::default(),
-                    ba_lin: Default::default(),
-                    ba_tr: Default::default(),
-                    eta: Default::default(),
+                    ba_bm: Default::default(),
+                    ba_bf: Default::default(),
+                    ba_s: Default::default(),
                     tc_ab: TCheck::new(rounding),
                     tc_ba: TCheck::new(rounding),
                     degenerate_wait: Default::default(),
@@ -186,29 +185,33 @@ macro_rules! tri_unit {
         impl Logic for TriUnit {
             #[hdl_gen]
             fn update(&mut self) {
-                dff_setup!(self, clock, ab_lin, ab_tr, ba_lin, ba_tr, eta, count);
+                dff_setup!(self, clock, ab_bm, ab_bf, ab_s, ba_bm, ba_bf, ba_s, count);
                 clock!(self, clock, tc_ab, tc_ba, degenerate_wait, fifo);
                 // ---- per-query registers: hold, or load through the write port
-                self.ab_lin.d.next = self.ab_lin.q.val();
-                self.ab_tr.d.next = self.ab_tr.q.val();
-                self.ba_lin.d.next = self.ba_lin.q.val();
-                self.ba_tr.d.next = self.ba_tr.q.val();
-                self.eta.d.next = self.eta.q.val();
+                self.ab_bm.d.next = self.ab_bm.q.val();
+                self.ab_bf.d.next = self.ab_bf.q.val();
+                self.ab_s.d.next = self.ab_s.q.val();
+                self.ba_bm.d.next = self.ba_bm.q.val();
+                self.ba_bf.d.next = self.ba_bf.q.val();
+                self.ba_s.d.next = self.ba_s.q.val();
                 if self.load_en.val() {
                     if self.load_addr.val() == 12 {
-                        self.ab_lin.d.next = self.load_data.val();
+                        self.ab_bm.d.next = self.load_data.val();
                     }
                     if self.load_addr.val() == 13 {
-                        self.ab_tr.d.next = self.load_data.val();
+                        self.ab_bf.d.next = self.load_data.val();
+                    }
+                    if self.load_addr.val() == 14 {
+                        self.ab_s.d.next = self.load_data.val();
                     }
                     if self.load_addr.val() == 28 {
-                        self.ba_lin.d.next = self.load_data.val();
+                        self.ba_bm.d.next = self.load_data.val();
                     }
                     if self.load_addr.val() == 29 {
-                        self.ba_tr.d.next = self.load_data.val();
+                        self.ba_bf.d.next = self.load_data.val();
                     }
                     if self.load_addr.val() == 30 {
-                        self.eta.d.next = self.load_data.val();
+                        self.ba_s.d.next = self.load_data.val();
                     }
                 }
                 for c in 0..4 {
@@ -265,22 +268,18 @@ macro_rules! tri_unit {
                     self.tc_ba.v_y[k].next = self.b_v_y[k].val();
                     self.tc_ba.v_z[k].next = self.b_v_z[k].val();
                 }
-                self.tc_ab.e_lin.next = self.b_e_lin.val();
-                self.tc_ab.e_tr.next = self.b_e_tr.val();
-                self.tc_ab.l_norm.next = self.b_l_norm.val();
-                self.tc_ab.f_lin.next = self.ab_lin.q.val();
-                self.tc_ab.f_tr.next = self.ab_tr.q.val();
-                self.tc_ab.eta.next = self.eta.q.val();
-                self.tc_ab.gap_en.next = true;
+                self.tc_ab.alpha_m.next = self.b_alpha_m.val();
+                self.tc_ab.alpha_f.next = self.b_alpha_f.val();
+                self.tc_ab.beta_m.next = self.ab_bm.q.val();
+                self.tc_ab.beta_f.next = self.ab_bf.q.val();
+                self.tc_ab.scale.next = self.ab_s.q.val();
                 self.tc_ab.v_exact.next = self.a_v_exact.val();
                 self.tc_ab.tag.next = self.tag.val();
-                self.tc_ba.e_lin.next = self.a_e_lin.val();
-                self.tc_ba.e_tr.next = self.a_e_tr.val();
-                self.tc_ba.l_norm.next = self.a_l_norm.val();
-                self.tc_ba.f_lin.next = self.ba_lin.q.val();
-                self.tc_ba.f_tr.next = self.ba_tr.q.val();
-                self.tc_ba.eta.next = self.eta.q.val();
-                self.tc_ba.gap_en.next = false;
+                self.tc_ba.alpha_m.next = self.a_alpha_m.val();
+                self.tc_ba.alpha_f.next = self.a_alpha_f.val();
+                self.tc_ba.beta_m.next = self.ba_bm.q.val();
+                self.tc_ba.beta_f.next = self.ba_bf.q.val();
+                self.tc_ba.scale.next = self.ba_s.q.val();
                 self.tc_ba.v_exact.next = self.b_v_exact.val();
                 self.tc_ba.tag.next = self.tag.val();
                 // ---- back-pressure: take a pair only while the FIFO has room for it
@@ -348,8 +347,8 @@ macro_rules! tri_unit {
                 uut.b_v_y[k].connect();
                 uut.b_v_z[k].connect();
             }
-            top_level!(uut; clock, load_en, load_addr, load_data, a_e_lin, a_e_tr, a_l_norm, a_v_exact, a_degenerate,
-                b_e_lin, b_e_tr, b_l_norm, b_v_exact, b_degenerate, tag, in_valid, out_ready)
+            top_level!(uut; clock, load_en, load_addr, load_data, a_alpha_m, a_alpha_f, a_v_exact, a_degenerate,
+                b_alpha_m, b_alpha_f, b_v_exact, b_degenerate, tag, in_valid, out_ready)
         }
 
         /// Verilog of TRI_UNIT (top module `top`).
