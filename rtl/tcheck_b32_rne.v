@@ -1,6 +1,6 @@
 
 
-module top(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,m_2$2,m_2$3,e_lin,e_tr,l_norm,f_0$0,f_0$1,f_0$2,f_0$3,f_1$0,f_1$1,f_1$2,f_1$3,f_2$0,f_2$1,f_2$2,f_2$3,f_lin,f_tr,eta,gap_en,v_x$0,v_x$1,v_x$2,v_y$0,v_y$1,v_y$2,v_z$0,v_z$1,v_z$2,v_exact,tag,valid_in,s_x$0,s_x$1,s_x$2,s_e$0,s_e$1,s_e$2,cross_t$0,cross_t$1,cross_t$2,cross_f$0,cross_f$1,cross_f$2,hit,miss,tag_out,valid_out);
+module top(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,m_2$2,m_2$3,alpha_m,alpha_f,f_0$0,f_0$1,f_0$2,f_0$3,f_1$0,f_1$1,f_1$2,f_1$3,f_2$0,f_2$1,f_2$2,f_2$3,beta_m,beta_f,scale,v_x$0,v_x$1,v_x$2,v_y$0,v_y$1,v_y$2,v_z$0,v_z$1,v_z$2,v_exact,tag,valid_in,s_x$0,s_x$1,s_x$2,s_b$0,s_b$1,s_b$2,cross_t$0,cross_t$1,cross_t$2,cross_f$0,cross_f$1,cross_f$2,hit,miss,tag_out,valid_out);
     
     // Module arguments
     input wire  clock;
@@ -16,9 +16,8 @@ module top(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,m_2
     input wire  [31:0] m_2$1;
     input wire  [31:0] m_2$2;
     input wire  [31:0] m_2$3;
-    input wire  [31:0] e_lin;
-    input wire  [31:0] e_tr;
-    input wire  [31:0] l_norm;
+    input wire  [31:0] alpha_m;
+    input wire  [31:0] alpha_f;
     input wire  [31:0] f_0$0;
     input wire  [31:0] f_0$1;
     input wire  [31:0] f_0$2;
@@ -31,10 +30,9 @@ module top(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,m_2
     input wire  [31:0] f_2$1;
     input wire  [31:0] f_2$2;
     input wire  [31:0] f_2$3;
-    input wire  [31:0] f_lin;
-    input wire  [31:0] f_tr;
-    input wire  [31:0] eta;
-    input wire  gap_en;
+    input wire  [31:0] beta_m;
+    input wire  [31:0] beta_f;
+    input wire  [31:0] scale;
     input wire  [31:0] v_x$0;
     input wire  [31:0] v_x$1;
     input wire  [31:0] v_x$2;
@@ -50,9 +48,9 @@ module top(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,m_2
     output reg  [31:0] s_x$0;
     output reg  [31:0] s_x$1;
     output reg  [31:0] s_x$2;
-    output reg  [31:0] s_e$0;
-    output reg  [31:0] s_e$1;
-    output reg  [31:0] s_e$2;
+    output reg  [31:0] s_b$0;
+    output reg  [31:0] s_b$1;
+    output reg  [31:0] s_b$2;
     output reg  cross_t$0;
     output reg  cross_t$1;
     output reg  cross_t$2;
@@ -65,10 +63,9 @@ module top(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,m_2
     output reg  valid_out;
     
     // Constant declarations
-    localparam  c_two = 32'h40000000;
-    localparam  c_four = 32'h40800000;
-    localparam  c_half = 32'h3f000000;
-    localparam  c_zero = 32'h0;
+    localparam  mask = 32'h7fffffff;
+    localparam  c_v_rounded = 32'h35100001;
+    localparam  c_v_exact = 32'h35000001;
     
     // Stub signals
     reg  [31:0] in_m_0$0$d;
@@ -107,15 +104,12 @@ module top(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,m_2
     reg  [31:0] in_m_2$3$d;
     wire  [31:0] in_m_2$3$q;
     reg  in_m_2$3$clock;
-    reg  [31:0] in_e_lin$d;
-    wire  [31:0] in_e_lin$q;
-    reg  in_e_lin$clock;
-    reg  [31:0] in_e_tr$d;
-    wire  [31:0] in_e_tr$q;
-    reg  in_e_tr$clock;
-    reg  [31:0] in_l_norm$d;
-    wire  [31:0] in_l_norm$q;
-    reg  in_l_norm$clock;
+    reg  [31:0] in_alpha_m$d;
+    wire  [31:0] in_alpha_m$q;
+    reg  in_alpha_m$clock;
+    reg  [31:0] in_alpha_f$d;
+    wire  [31:0] in_alpha_f$q;
+    reg  in_alpha_f$clock;
     reg  [31:0] in_f_0$0$d;
     wire  [31:0] in_f_0$0$q;
     reg  in_f_0$0$clock;
@@ -152,18 +146,15 @@ module top(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,m_2
     reg  [31:0] in_f_2$3$d;
     wire  [31:0] in_f_2$3$q;
     reg  in_f_2$3$clock;
-    reg  [31:0] in_f_lin$d;
-    wire  [31:0] in_f_lin$q;
-    reg  in_f_lin$clock;
-    reg  [31:0] in_f_tr$d;
-    wire  [31:0] in_f_tr$q;
-    reg  in_f_tr$clock;
-    reg  [31:0] in_eta$d;
-    wire  [31:0] in_eta$q;
-    reg  in_eta$clock;
-    reg  in_gap_en$d;
-    wire  in_gap_en$q;
-    reg  in_gap_en$clock;
+    reg  [31:0] in_beta_m$d;
+    wire  [31:0] in_beta_m$q;
+    reg  in_beta_m$clock;
+    reg  [31:0] in_beta_f$d;
+    wire  [31:0] in_beta_f$q;
+    reg  in_beta_f$clock;
+    reg  [31:0] in_scale$d;
+    wire  [31:0] in_scale$q;
+    reg  in_scale$clock;
     reg  [31:0] in_v_x$0$d;
     wire  [31:0] in_v_x$0$q;
     reg  in_v_x$0$clock;
@@ -201,254 +192,495 @@ module top(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,m_2
     wire  in_valid$q;
     reg  in_valid$clock;
     reg  mb_0$0$clock;
-    reg  [31:0] mb_0$0$a0_x;
-    reg  [31:0] mb_0$0$a0_e;
-    reg  [31:0] mb_0$0$a1_x;
-    reg  [31:0] mb_0$0$a1_e;
-    reg  [31:0] mb_0$0$a2_x;
-    reg  [31:0] mb_0$0$a2_e;
-    reg  [31:0] mb_0$0$b0_x;
-    reg  [31:0] mb_0$0$b0_e;
-    reg  [31:0] mb_0$0$b1_x;
-    reg  [31:0] mb_0$0$b1_e;
-    reg  [31:0] mb_0$0$b2_x;
-    reg  [31:0] mb_0$0$b2_e;
-    reg  [31:0] mb_0$0$c_x;
-    reg  [31:0] mb_0$0$c_e;
-    wire  [31:0] mb_0$0$y_x;
-    wire  [31:0] mb_0$0$y_e;
+    reg  [31:0] mb_0$0$a0;
+    reg  [31:0] mb_0$0$a1;
+    reg  [31:0] mb_0$0$a2;
+    reg  [31:0] mb_0$0$b0;
+    reg  [31:0] mb_0$0$b1;
+    reg  [31:0] mb_0$0$b2;
+    reg  [31:0] mb_0$0$c;
+    wire  [31:0] mb_0$0$y;
     reg  mb_0$1$clock;
-    reg  [31:0] mb_0$1$a0_x;
-    reg  [31:0] mb_0$1$a0_e;
-    reg  [31:0] mb_0$1$a1_x;
-    reg  [31:0] mb_0$1$a1_e;
-    reg  [31:0] mb_0$1$a2_x;
-    reg  [31:0] mb_0$1$a2_e;
-    reg  [31:0] mb_0$1$b0_x;
-    reg  [31:0] mb_0$1$b0_e;
-    reg  [31:0] mb_0$1$b1_x;
-    reg  [31:0] mb_0$1$b1_e;
-    reg  [31:0] mb_0$1$b2_x;
-    reg  [31:0] mb_0$1$b2_e;
-    reg  [31:0] mb_0$1$c_x;
-    reg  [31:0] mb_0$1$c_e;
-    wire  [31:0] mb_0$1$y_x;
-    wire  [31:0] mb_0$1$y_e;
+    reg  [31:0] mb_0$1$a0;
+    reg  [31:0] mb_0$1$a1;
+    reg  [31:0] mb_0$1$a2;
+    reg  [31:0] mb_0$1$b0;
+    reg  [31:0] mb_0$1$b1;
+    reg  [31:0] mb_0$1$b2;
+    reg  [31:0] mb_0$1$c;
+    wire  [31:0] mb_0$1$y;
     reg  mb_0$2$clock;
-    reg  [31:0] mb_0$2$a0_x;
-    reg  [31:0] mb_0$2$a0_e;
-    reg  [31:0] mb_0$2$a1_x;
-    reg  [31:0] mb_0$2$a1_e;
-    reg  [31:0] mb_0$2$a2_x;
-    reg  [31:0] mb_0$2$a2_e;
-    reg  [31:0] mb_0$2$b0_x;
-    reg  [31:0] mb_0$2$b0_e;
-    reg  [31:0] mb_0$2$b1_x;
-    reg  [31:0] mb_0$2$b1_e;
-    reg  [31:0] mb_0$2$b2_x;
-    reg  [31:0] mb_0$2$b2_e;
-    reg  [31:0] mb_0$2$c_x;
-    reg  [31:0] mb_0$2$c_e;
-    wire  [31:0] mb_0$2$y_x;
-    wire  [31:0] mb_0$2$y_e;
+    reg  [31:0] mb_0$2$a0;
+    reg  [31:0] mb_0$2$a1;
+    reg  [31:0] mb_0$2$a2;
+    reg  [31:0] mb_0$2$b0;
+    reg  [31:0] mb_0$2$b1;
+    reg  [31:0] mb_0$2$b2;
+    reg  [31:0] mb_0$2$c;
+    wire  [31:0] mb_0$2$y;
     reg  mb_0$3$clock;
-    reg  [31:0] mb_0$3$a0_x;
-    reg  [31:0] mb_0$3$a0_e;
-    reg  [31:0] mb_0$3$a1_x;
-    reg  [31:0] mb_0$3$a1_e;
-    reg  [31:0] mb_0$3$a2_x;
-    reg  [31:0] mb_0$3$a2_e;
-    reg  [31:0] mb_0$3$b0_x;
-    reg  [31:0] mb_0$3$b0_e;
-    reg  [31:0] mb_0$3$b1_x;
-    reg  [31:0] mb_0$3$b1_e;
-    reg  [31:0] mb_0$3$b2_x;
-    reg  [31:0] mb_0$3$b2_e;
-    reg  [31:0] mb_0$3$c_x;
-    reg  [31:0] mb_0$3$c_e;
-    wire  [31:0] mb_0$3$y_x;
-    wire  [31:0] mb_0$3$y_e;
+    reg  [31:0] mb_0$3$a0;
+    reg  [31:0] mb_0$3$a1;
+    reg  [31:0] mb_0$3$a2;
+    reg  [31:0] mb_0$3$b0;
+    reg  [31:0] mb_0$3$b1;
+    reg  [31:0] mb_0$3$b2;
+    reg  [31:0] mb_0$3$c;
+    wire  [31:0] mb_0$3$y;
     reg  mb_1$0$clock;
-    reg  [31:0] mb_1$0$a0_x;
-    reg  [31:0] mb_1$0$a0_e;
-    reg  [31:0] mb_1$0$a1_x;
-    reg  [31:0] mb_1$0$a1_e;
-    reg  [31:0] mb_1$0$a2_x;
-    reg  [31:0] mb_1$0$a2_e;
-    reg  [31:0] mb_1$0$b0_x;
-    reg  [31:0] mb_1$0$b0_e;
-    reg  [31:0] mb_1$0$b1_x;
-    reg  [31:0] mb_1$0$b1_e;
-    reg  [31:0] mb_1$0$b2_x;
-    reg  [31:0] mb_1$0$b2_e;
-    reg  [31:0] mb_1$0$c_x;
-    reg  [31:0] mb_1$0$c_e;
-    wire  [31:0] mb_1$0$y_x;
-    wire  [31:0] mb_1$0$y_e;
+    reg  [31:0] mb_1$0$a0;
+    reg  [31:0] mb_1$0$a1;
+    reg  [31:0] mb_1$0$a2;
+    reg  [31:0] mb_1$0$b0;
+    reg  [31:0] mb_1$0$b1;
+    reg  [31:0] mb_1$0$b2;
+    reg  [31:0] mb_1$0$c;
+    wire  [31:0] mb_1$0$y;
     reg  mb_1$1$clock;
-    reg  [31:0] mb_1$1$a0_x;
-    reg  [31:0] mb_1$1$a0_e;
-    reg  [31:0] mb_1$1$a1_x;
-    reg  [31:0] mb_1$1$a1_e;
-    reg  [31:0] mb_1$1$a2_x;
-    reg  [31:0] mb_1$1$a2_e;
-    reg  [31:0] mb_1$1$b0_x;
-    reg  [31:0] mb_1$1$b0_e;
-    reg  [31:0] mb_1$1$b1_x;
-    reg  [31:0] mb_1$1$b1_e;
-    reg  [31:0] mb_1$1$b2_x;
-    reg  [31:0] mb_1$1$b2_e;
-    reg  [31:0] mb_1$1$c_x;
-    reg  [31:0] mb_1$1$c_e;
-    wire  [31:0] mb_1$1$y_x;
-    wire  [31:0] mb_1$1$y_e;
+    reg  [31:0] mb_1$1$a0;
+    reg  [31:0] mb_1$1$a1;
+    reg  [31:0] mb_1$1$a2;
+    reg  [31:0] mb_1$1$b0;
+    reg  [31:0] mb_1$1$b1;
+    reg  [31:0] mb_1$1$b2;
+    reg  [31:0] mb_1$1$c;
+    wire  [31:0] mb_1$1$y;
     reg  mb_1$2$clock;
-    reg  [31:0] mb_1$2$a0_x;
-    reg  [31:0] mb_1$2$a0_e;
-    reg  [31:0] mb_1$2$a1_x;
-    reg  [31:0] mb_1$2$a1_e;
-    reg  [31:0] mb_1$2$a2_x;
-    reg  [31:0] mb_1$2$a2_e;
-    reg  [31:0] mb_1$2$b0_x;
-    reg  [31:0] mb_1$2$b0_e;
-    reg  [31:0] mb_1$2$b1_x;
-    reg  [31:0] mb_1$2$b1_e;
-    reg  [31:0] mb_1$2$b2_x;
-    reg  [31:0] mb_1$2$b2_e;
-    reg  [31:0] mb_1$2$c_x;
-    reg  [31:0] mb_1$2$c_e;
-    wire  [31:0] mb_1$2$y_x;
-    wire  [31:0] mb_1$2$y_e;
+    reg  [31:0] mb_1$2$a0;
+    reg  [31:0] mb_1$2$a1;
+    reg  [31:0] mb_1$2$a2;
+    reg  [31:0] mb_1$2$b0;
+    reg  [31:0] mb_1$2$b1;
+    reg  [31:0] mb_1$2$b2;
+    reg  [31:0] mb_1$2$c;
+    wire  [31:0] mb_1$2$y;
     reg  mb_1$3$clock;
-    reg  [31:0] mb_1$3$a0_x;
-    reg  [31:0] mb_1$3$a0_e;
-    reg  [31:0] mb_1$3$a1_x;
-    reg  [31:0] mb_1$3$a1_e;
-    reg  [31:0] mb_1$3$a2_x;
-    reg  [31:0] mb_1$3$a2_e;
-    reg  [31:0] mb_1$3$b0_x;
-    reg  [31:0] mb_1$3$b0_e;
-    reg  [31:0] mb_1$3$b1_x;
-    reg  [31:0] mb_1$3$b1_e;
-    reg  [31:0] mb_1$3$b2_x;
-    reg  [31:0] mb_1$3$b2_e;
-    reg  [31:0] mb_1$3$c_x;
-    reg  [31:0] mb_1$3$c_e;
-    wire  [31:0] mb_1$3$y_x;
-    wire  [31:0] mb_1$3$y_e;
+    reg  [31:0] mb_1$3$a0;
+    reg  [31:0] mb_1$3$a1;
+    reg  [31:0] mb_1$3$a2;
+    reg  [31:0] mb_1$3$b0;
+    reg  [31:0] mb_1$3$b1;
+    reg  [31:0] mb_1$3$b2;
+    reg  [31:0] mb_1$3$c;
+    wire  [31:0] mb_1$3$y;
     reg  mb_2$0$clock;
-    reg  [31:0] mb_2$0$a0_x;
-    reg  [31:0] mb_2$0$a0_e;
-    reg  [31:0] mb_2$0$a1_x;
-    reg  [31:0] mb_2$0$a1_e;
-    reg  [31:0] mb_2$0$a2_x;
-    reg  [31:0] mb_2$0$a2_e;
-    reg  [31:0] mb_2$0$b0_x;
-    reg  [31:0] mb_2$0$b0_e;
-    reg  [31:0] mb_2$0$b1_x;
-    reg  [31:0] mb_2$0$b1_e;
-    reg  [31:0] mb_2$0$b2_x;
-    reg  [31:0] mb_2$0$b2_e;
-    reg  [31:0] mb_2$0$c_x;
-    reg  [31:0] mb_2$0$c_e;
-    wire  [31:0] mb_2$0$y_x;
-    wire  [31:0] mb_2$0$y_e;
+    reg  [31:0] mb_2$0$a0;
+    reg  [31:0] mb_2$0$a1;
+    reg  [31:0] mb_2$0$a2;
+    reg  [31:0] mb_2$0$b0;
+    reg  [31:0] mb_2$0$b1;
+    reg  [31:0] mb_2$0$b2;
+    reg  [31:0] mb_2$0$c;
+    wire  [31:0] mb_2$0$y;
     reg  mb_2$1$clock;
-    reg  [31:0] mb_2$1$a0_x;
-    reg  [31:0] mb_2$1$a0_e;
-    reg  [31:0] mb_2$1$a1_x;
-    reg  [31:0] mb_2$1$a1_e;
-    reg  [31:0] mb_2$1$a2_x;
-    reg  [31:0] mb_2$1$a2_e;
-    reg  [31:0] mb_2$1$b0_x;
-    reg  [31:0] mb_2$1$b0_e;
-    reg  [31:0] mb_2$1$b1_x;
-    reg  [31:0] mb_2$1$b1_e;
-    reg  [31:0] mb_2$1$b2_x;
-    reg  [31:0] mb_2$1$b2_e;
-    reg  [31:0] mb_2$1$c_x;
-    reg  [31:0] mb_2$1$c_e;
-    wire  [31:0] mb_2$1$y_x;
-    wire  [31:0] mb_2$1$y_e;
+    reg  [31:0] mb_2$1$a0;
+    reg  [31:0] mb_2$1$a1;
+    reg  [31:0] mb_2$1$a2;
+    reg  [31:0] mb_2$1$b0;
+    reg  [31:0] mb_2$1$b1;
+    reg  [31:0] mb_2$1$b2;
+    reg  [31:0] mb_2$1$c;
+    wire  [31:0] mb_2$1$y;
     reg  mb_2$2$clock;
-    reg  [31:0] mb_2$2$a0_x;
-    reg  [31:0] mb_2$2$a0_e;
-    reg  [31:0] mb_2$2$a1_x;
-    reg  [31:0] mb_2$2$a1_e;
-    reg  [31:0] mb_2$2$a2_x;
-    reg  [31:0] mb_2$2$a2_e;
-    reg  [31:0] mb_2$2$b0_x;
-    reg  [31:0] mb_2$2$b0_e;
-    reg  [31:0] mb_2$2$b1_x;
-    reg  [31:0] mb_2$2$b1_e;
-    reg  [31:0] mb_2$2$b2_x;
-    reg  [31:0] mb_2$2$b2_e;
-    reg  [31:0] mb_2$2$c_x;
-    reg  [31:0] mb_2$2$c_e;
-    wire  [31:0] mb_2$2$y_x;
-    wire  [31:0] mb_2$2$y_e;
+    reg  [31:0] mb_2$2$a0;
+    reg  [31:0] mb_2$2$a1;
+    reg  [31:0] mb_2$2$a2;
+    reg  [31:0] mb_2$2$b0;
+    reg  [31:0] mb_2$2$b1;
+    reg  [31:0] mb_2$2$b2;
+    reg  [31:0] mb_2$2$c;
+    wire  [31:0] mb_2$2$y;
     reg  mb_2$3$clock;
-    reg  [31:0] mb_2$3$a0_x;
-    reg  [31:0] mb_2$3$a0_e;
-    reg  [31:0] mb_2$3$a1_x;
-    reg  [31:0] mb_2$3$a1_e;
-    reg  [31:0] mb_2$3$a2_x;
-    reg  [31:0] mb_2$3$a2_e;
-    reg  [31:0] mb_2$3$b0_x;
-    reg  [31:0] mb_2$3$b0_e;
-    reg  [31:0] mb_2$3$b1_x;
-    reg  [31:0] mb_2$3$b1_e;
-    reg  [31:0] mb_2$3$b2_x;
-    reg  [31:0] mb_2$3$b2_e;
-    reg  [31:0] mb_2$3$c_x;
-    reg  [31:0] mb_2$3$c_e;
-    wire  [31:0] mb_2$3$y_x;
-    wire  [31:0] mb_2$3$y_e;
-    reg  v_err_x$0$clock;
-    reg  [31:0] v_err_x$0$x;
-    reg  v_err_x$0$valid_in;
-    wire  [31:0] v_err_x$0$y;
-    wire  v_err_x$0$valid_out;
-    reg  v_err_x$1$clock;
-    reg  [31:0] v_err_x$1$x;
-    reg  v_err_x$1$valid_in;
-    wire  [31:0] v_err_x$1$y;
-    wire  v_err_x$1$valid_out;
-    reg  v_err_x$2$clock;
-    reg  [31:0] v_err_x$2$x;
-    reg  v_err_x$2$valid_in;
-    wire  [31:0] v_err_x$2$y;
-    wire  v_err_x$2$valid_out;
-    reg  v_err_y$0$clock;
-    reg  [31:0] v_err_y$0$x;
-    reg  v_err_y$0$valid_in;
-    wire  [31:0] v_err_y$0$y;
-    wire  v_err_y$0$valid_out;
-    reg  v_err_y$1$clock;
-    reg  [31:0] v_err_y$1$x;
-    reg  v_err_y$1$valid_in;
-    wire  [31:0] v_err_y$1$y;
-    wire  v_err_y$1$valid_out;
-    reg  v_err_y$2$clock;
-    reg  [31:0] v_err_y$2$x;
-    reg  v_err_y$2$valid_in;
-    wire  [31:0] v_err_y$2$y;
-    wire  v_err_y$2$valid_out;
-    reg  v_err_z$0$clock;
-    reg  [31:0] v_err_z$0$x;
-    reg  v_err_z$0$valid_in;
-    wire  [31:0] v_err_z$0$y;
-    wire  v_err_z$0$valid_out;
-    reg  v_err_z$1$clock;
-    reg  [31:0] v_err_z$1$x;
-    reg  v_err_z$1$valid_in;
-    wire  [31:0] v_err_z$1$y;
-    wire  v_err_z$1$valid_out;
-    reg  v_err_z$2$clock;
-    reg  [31:0] v_err_z$2$x;
-    reg  v_err_z$2$valid_in;
-    wire  [31:0] v_err_z$2$y;
-    wire  v_err_z$2$valid_out;
+    reg  [31:0] mb_2$3$a0;
+    reg  [31:0] mb_2$3$a1;
+    reg  [31:0] mb_2$3$a2;
+    reg  [31:0] mb_2$3$b0;
+    reg  [31:0] mb_2$3$b1;
+    reg  [31:0] mb_2$3$b2;
+    reg  [31:0] mb_2$3$c;
+    wire  [31:0] mb_2$3$y;
+    reg  mg_0$0$clock;
+    reg  [31:0] mg_0$0$a0;
+    reg  [31:0] mg_0$0$a1;
+    reg  [31:0] mg_0$0$a2;
+    reg  [31:0] mg_0$0$b0;
+    reg  [31:0] mg_0$0$b1;
+    reg  [31:0] mg_0$0$b2;
+    reg  [31:0] mg_0$0$c;
+    wire  [31:0] mg_0$0$y;
+    reg  mg_0$1$clock;
+    reg  [31:0] mg_0$1$a0;
+    reg  [31:0] mg_0$1$a1;
+    reg  [31:0] mg_0$1$a2;
+    reg  [31:0] mg_0$1$b0;
+    reg  [31:0] mg_0$1$b1;
+    reg  [31:0] mg_0$1$b2;
+    reg  [31:0] mg_0$1$c;
+    wire  [31:0] mg_0$1$y;
+    reg  mg_0$2$clock;
+    reg  [31:0] mg_0$2$a0;
+    reg  [31:0] mg_0$2$a1;
+    reg  [31:0] mg_0$2$a2;
+    reg  [31:0] mg_0$2$b0;
+    reg  [31:0] mg_0$2$b1;
+    reg  [31:0] mg_0$2$b2;
+    reg  [31:0] mg_0$2$c;
+    wire  [31:0] mg_0$2$y;
+    reg  mg_0$3$clock;
+    reg  [31:0] mg_0$3$a0;
+    reg  [31:0] mg_0$3$a1;
+    reg  [31:0] mg_0$3$a2;
+    reg  [31:0] mg_0$3$b0;
+    reg  [31:0] mg_0$3$b1;
+    reg  [31:0] mg_0$3$b2;
+    reg  [31:0] mg_0$3$c;
+    wire  [31:0] mg_0$3$y;
+    reg  mg_1$0$clock;
+    reg  [31:0] mg_1$0$a0;
+    reg  [31:0] mg_1$0$a1;
+    reg  [31:0] mg_1$0$a2;
+    reg  [31:0] mg_1$0$b0;
+    reg  [31:0] mg_1$0$b1;
+    reg  [31:0] mg_1$0$b2;
+    reg  [31:0] mg_1$0$c;
+    wire  [31:0] mg_1$0$y;
+    reg  mg_1$1$clock;
+    reg  [31:0] mg_1$1$a0;
+    reg  [31:0] mg_1$1$a1;
+    reg  [31:0] mg_1$1$a2;
+    reg  [31:0] mg_1$1$b0;
+    reg  [31:0] mg_1$1$b1;
+    reg  [31:0] mg_1$1$b2;
+    reg  [31:0] mg_1$1$c;
+    wire  [31:0] mg_1$1$y;
+    reg  mg_1$2$clock;
+    reg  [31:0] mg_1$2$a0;
+    reg  [31:0] mg_1$2$a1;
+    reg  [31:0] mg_1$2$a2;
+    reg  [31:0] mg_1$2$b0;
+    reg  [31:0] mg_1$2$b1;
+    reg  [31:0] mg_1$2$b2;
+    reg  [31:0] mg_1$2$c;
+    wire  [31:0] mg_1$2$y;
+    reg  mg_1$3$clock;
+    reg  [31:0] mg_1$3$a0;
+    reg  [31:0] mg_1$3$a1;
+    reg  [31:0] mg_1$3$a2;
+    reg  [31:0] mg_1$3$b0;
+    reg  [31:0] mg_1$3$b1;
+    reg  [31:0] mg_1$3$b2;
+    reg  [31:0] mg_1$3$c;
+    wire  [31:0] mg_1$3$y;
+    reg  mg_2$0$clock;
+    reg  [31:0] mg_2$0$a0;
+    reg  [31:0] mg_2$0$a1;
+    reg  [31:0] mg_2$0$a2;
+    reg  [31:0] mg_2$0$b0;
+    reg  [31:0] mg_2$0$b1;
+    reg  [31:0] mg_2$0$b2;
+    reg  [31:0] mg_2$0$c;
+    wire  [31:0] mg_2$0$y;
+    reg  mg_2$1$clock;
+    reg  [31:0] mg_2$1$a0;
+    reg  [31:0] mg_2$1$a1;
+    reg  [31:0] mg_2$1$a2;
+    reg  [31:0] mg_2$1$b0;
+    reg  [31:0] mg_2$1$b1;
+    reg  [31:0] mg_2$1$b2;
+    reg  [31:0] mg_2$1$c;
+    wire  [31:0] mg_2$1$y;
+    reg  mg_2$2$clock;
+    reg  [31:0] mg_2$2$a0;
+    reg  [31:0] mg_2$2$a1;
+    reg  [31:0] mg_2$2$a2;
+    reg  [31:0] mg_2$2$b0;
+    reg  [31:0] mg_2$2$b1;
+    reg  [31:0] mg_2$2$b2;
+    reg  [31:0] mg_2$2$c;
+    wire  [31:0] mg_2$2$y;
+    reg  mg_2$3$clock;
+    reg  [31:0] mg_2$3$a0;
+    reg  [31:0] mg_2$3$a1;
+    reg  [31:0] mg_2$3$a2;
+    reg  [31:0] mg_2$3$b0;
+    reg  [31:0] mg_2$3$b1;
+    reg  [31:0] mg_2$3$b2;
+    reg  [31:0] mg_2$3$c;
+    wire  [31:0] mg_2$3$y;
+    reg  c3_0$clock;
+    reg  [31:0] c3_0$d;
+    wire  [31:0] c3_0$q;
+    reg  c3_1$clock;
+    reg  [31:0] c3_1$d;
+    wire  [31:0] c3_1$q;
+    reg  c3_2$clock;
+    reg  [31:0] c3_2$d;
+    wire  [31:0] c3_2$q;
+    reg  am$clock;
+    reg  [31:0] am$a;
+    reg  [31:0] am$b;
+    reg  am$valid_in;
+    wire  [31:0] am$y;
+    wire  am$valid_out;
+    reg  af$clock;
+    reg  [31:0] af$a;
+    reg  [31:0] af$b;
+    reg  af$valid_in;
+    wire  [31:0] af$y;
+    wire  af$valid_out;
+    reg  aerr$clock;
+    reg  [31:0] aerr$a;
+    reg  [31:0] aerr$b;
+    reg  aerr$sub;
+    reg  aerr$valid_in;
+    wire  [31:0] aerr$y;
+    wire  aerr$valid_out;
+    reg  aerr_wait$clock;
+    reg  [31:0] aerr_wait$d;
+    wire  [31:0] aerr_wait$q;
+    reg  la$0$clock;
+    reg  [31:0] la$0$a;
+    reg  [31:0] la$0$b;
+    reg  la$0$sub;
+    reg  la$0$valid_in;
+    wire  [31:0] la$0$y;
+    wire  la$0$valid_out;
+    reg  la$1$clock;
+    reg  [31:0] la$1$a;
+    reg  [31:0] la$1$b;
+    reg  la$1$sub;
+    reg  la$1$valid_in;
+    wire  [31:0] la$1$y;
+    wire  la$1$valid_out;
+    reg  la$2$clock;
+    reg  [31:0] la$2$a;
+    reg  [31:0] la$2$b;
+    reg  la$2$sub;
+    reg  la$2$valid_in;
+    wire  [31:0] la$2$y;
+    wire  la$2$valid_out;
+    reg  lb$0$clock;
+    reg  [31:0] lb$0$a;
+    reg  [31:0] lb$0$b;
+    reg  lb$0$sub;
+    reg  lb$0$valid_in;
+    wire  [31:0] lb$0$y;
+    wire  lb$0$valid_out;
+    reg  lb$1$clock;
+    reg  [31:0] lb$1$a;
+    reg  [31:0] lb$1$b;
+    reg  lb$1$sub;
+    reg  lb$1$valid_in;
+    wire  [31:0] lb$1$y;
+    wire  lb$1$valid_out;
+    reg  lb$2$clock;
+    reg  [31:0] lb$2$a;
+    reg  [31:0] lb$2$b;
+    reg  lb$2$sub;
+    reg  lb$2$valid_in;
+    wire  [31:0] lb$2$y;
+    wire  lb$2$valid_out;
+    reg  l1$0$clock;
+    reg  [31:0] l1$0$a;
+    reg  [31:0] l1$0$b;
+    reg  l1$0$sub;
+    reg  l1$0$valid_in;
+    wire  [31:0] l1$0$y;
+    wire  l1$0$valid_out;
+    reg  l1$1$clock;
+    reg  [31:0] l1$1$a;
+    reg  [31:0] l1$1$b;
+    reg  l1$1$sub;
+    reg  l1$1$valid_in;
+    wire  [31:0] l1$1$y;
+    wire  l1$1$valid_out;
+    reg  l1$2$clock;
+    reg  [31:0] l1$2$a;
+    reg  [31:0] l1$2$b;
+    reg  l1$2$sub;
+    reg  l1$2$valid_in;
+    wire  [31:0] l1$2$y;
+    wire  l1$2$valid_out;
+    reg  l1_wait$0$clock;
+    reg  [31:0] l1_wait$0$d;
+    wire  [31:0] l1_wait$0$q;
+    reg  l1_wait$1$clock;
+    reg  [31:0] l1_wait$1$d;
+    wire  [31:0] l1_wait$1$q;
+    reg  l1_wait$2$clock;
+    reg  [31:0] l1_wait$2$d;
+    wire  [31:0] l1_wait$2$q;
+    reg  err$0$clock;
+    reg  [31:0] err$0$a;
+    reg  [31:0] err$0$b;
+    reg  err$0$valid_in;
+    wire  [31:0] err$0$y;
+    wire  err$0$valid_out;
+    reg  err$1$clock;
+    reg  [31:0] err$1$a;
+    reg  [31:0] err$1$b;
+    reg  err$1$valid_in;
+    wire  [31:0] err$1$y;
+    wire  err$1$valid_out;
+    reg  err$2$clock;
+    reg  [31:0] err$2$a;
+    reg  [31:0] err$2$b;
+    reg  err$2$valid_in;
+    wire  [31:0] err$2$y;
+    wire  err$2$valid_out;
+    reg  [31:0] mbr_0$0$d;
+    wire  [31:0] mbr_0$0$q;
+    reg  mbr_0$0$clock;
+    reg  [31:0] mbr_0$1$d;
+    wire  [31:0] mbr_0$1$q;
+    reg  mbr_0$1$clock;
+    reg  [31:0] mbr_0$2$d;
+    wire  [31:0] mbr_0$2$q;
+    reg  mbr_0$2$clock;
+    reg  [31:0] mbr_0$3$d;
+    wire  [31:0] mbr_0$3$q;
+    reg  mbr_0$3$clock;
+    reg  [31:0] mbr_1$0$d;
+    wire  [31:0] mbr_1$0$q;
+    reg  mbr_1$0$clock;
+    reg  [31:0] mbr_1$1$d;
+    wire  [31:0] mbr_1$1$q;
+    reg  mbr_1$1$clock;
+    reg  [31:0] mbr_1$2$d;
+    wire  [31:0] mbr_1$2$q;
+    reg  mbr_1$2$clock;
+    reg  [31:0] mbr_1$3$d;
+    wire  [31:0] mbr_1$3$q;
+    reg  mbr_1$3$clock;
+    reg  [31:0] mbr_2$0$d;
+    wire  [31:0] mbr_2$0$q;
+    reg  mbr_2$0$clock;
+    reg  [31:0] mbr_2$1$d;
+    wire  [31:0] mbr_2$1$q;
+    reg  mbr_2$1$clock;
+    reg  [31:0] mbr_2$2$d;
+    wire  [31:0] mbr_2$2$q;
+    reg  mbr_2$2$clock;
+    reg  [31:0] mbr_2$3$d;
+    wire  [31:0] mbr_2$3$q;
+    reg  mbr_2$3$clock;
+    reg  [31:0] mgr_0$0$d;
+    wire  [31:0] mgr_0$0$q;
+    reg  mgr_0$0$clock;
+    reg  [31:0] mgr_0$1$d;
+    wire  [31:0] mgr_0$1$q;
+    reg  mgr_0$1$clock;
+    reg  [31:0] mgr_0$2$d;
+    wire  [31:0] mgr_0$2$q;
+    reg  mgr_0$2$clock;
+    reg  [31:0] mgr_0$3$d;
+    wire  [31:0] mgr_0$3$q;
+    reg  mgr_0$3$clock;
+    reg  [31:0] mgr_1$0$d;
+    wire  [31:0] mgr_1$0$q;
+    reg  mgr_1$0$clock;
+    reg  [31:0] mgr_1$1$d;
+    wire  [31:0] mgr_1$1$q;
+    reg  mgr_1$1$clock;
+    reg  [31:0] mgr_1$2$d;
+    wire  [31:0] mgr_1$2$q;
+    reg  mgr_1$2$clock;
+    reg  [31:0] mgr_1$3$d;
+    wire  [31:0] mgr_1$3$q;
+    reg  mgr_1$3$clock;
+    reg  [31:0] mgr_2$0$d;
+    wire  [31:0] mgr_2$0$q;
+    reg  mgr_2$0$clock;
+    reg  [31:0] mgr_2$1$d;
+    wire  [31:0] mgr_2$1$q;
+    reg  mgr_2$1$clock;
+    reg  [31:0] mgr_2$2$d;
+    wire  [31:0] mgr_2$2$q;
+    reg  mgr_2$2$clock;
+    reg  [31:0] mgr_2$3$d;
+    wire  [31:0] mgr_2$3$q;
+    reg  mgr_2$3$clock;
+    reg  mg3_0$clock;
+    reg  [31:0] mg3_0$d;
+    wire  [31:0] mg3_0$q;
+    reg  mg3_1$clock;
+    reg  [31:0] mg3_1$d;
+    wire  [31:0] mg3_1$q;
+    reg  mg3_2$clock;
+    reg  [31:0] mg3_2$d;
+    wire  [31:0] mg3_2$q;
+    reg  m3_0$0$clock;
+    reg  [31:0] m3_0$0$a;
+    reg  [31:0] m3_0$0$b;
+    reg  m3_0$0$sub;
+    reg  m3_0$0$valid_in;
+    wire  [31:0] m3_0$0$y;
+    wire  m3_0$0$valid_out;
+    reg  m3_0$1$clock;
+    reg  [31:0] m3_0$1$a;
+    reg  [31:0] m3_0$1$b;
+    reg  m3_0$1$sub;
+    reg  m3_0$1$valid_in;
+    wire  [31:0] m3_0$1$y;
+    wire  m3_0$1$valid_out;
+    reg  m3_0$2$clock;
+    reg  [31:0] m3_0$2$a;
+    reg  [31:0] m3_0$2$b;
+    reg  m3_0$2$sub;
+    reg  m3_0$2$valid_in;
+    wire  [31:0] m3_0$2$y;
+    wire  m3_0$2$valid_out;
+    reg  m3_1$0$clock;
+    reg  [31:0] m3_1$0$a;
+    reg  [31:0] m3_1$0$b;
+    reg  m3_1$0$sub;
+    reg  m3_1$0$valid_in;
+    wire  [31:0] m3_1$0$y;
+    wire  m3_1$0$valid_out;
+    reg  m3_1$1$clock;
+    reg  [31:0] m3_1$1$a;
+    reg  [31:0] m3_1$1$b;
+    reg  m3_1$1$sub;
+    reg  m3_1$1$valid_in;
+    wire  [31:0] m3_1$1$y;
+    wire  m3_1$1$valid_out;
+    reg  m3_1$2$clock;
+    reg  [31:0] m3_1$2$a;
+    reg  [31:0] m3_1$2$b;
+    reg  m3_1$2$sub;
+    reg  m3_1$2$valid_in;
+    wire  [31:0] m3_1$2$y;
+    wire  m3_1$2$valid_out;
+    reg  m3_2$0$clock;
+    reg  [31:0] m3_2$0$a;
+    reg  [31:0] m3_2$0$b;
+    reg  m3_2$0$sub;
+    reg  m3_2$0$valid_in;
+    wire  [31:0] m3_2$0$y;
+    wire  m3_2$0$valid_out;
+    reg  m3_2$1$clock;
+    reg  [31:0] m3_2$1$a;
+    reg  [31:0] m3_2$1$b;
+    reg  m3_2$1$sub;
+    reg  m3_2$1$valid_in;
+    wire  [31:0] m3_2$1$y;
+    wire  m3_2$1$valid_out;
+    reg  m3_2$2$clock;
+    reg  [31:0] m3_2$2$a;
+    reg  [31:0] m3_2$2$b;
+    reg  m3_2$2$sub;
+    reg  m3_2$2$valid_in;
+    wire  [31:0] m3_2$2$y;
+    wire  m3_2$2$valid_out;
+    reg  vc_0$clock;
+    reg  [31:0] vc_0$d;
+    wire  [31:0] vc_0$q;
+    reg  vc_1$clock;
+    reg  [31:0] vc_1$d;
+    wire  [31:0] vc_1$q;
+    reg  vc_2$clock;
+    reg  [31:0] vc_2$d;
+    wire  [31:0] vc_2$q;
     reg  v_x_wait$0$clock;
     reg  [31:0] v_x_wait$0$d;
     wire  [31:0] v_x_wait$0$q;
@@ -476,328 +708,325 @@ module top(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,m_2
     reg  v_z_wait$2$clock;
     reg  [31:0] v_z_wait$2$d;
     wire  [31:0] v_z_wait$2$q;
-    reg  v_ex_wait$0$clock;
-    reg  [31:0] v_ex_wait$0$d;
-    wire  [31:0] v_ex_wait$0$q;
-    reg  v_ex_wait$1$clock;
-    reg  [31:0] v_ex_wait$1$d;
-    wire  [31:0] v_ex_wait$1$q;
-    reg  v_ex_wait$2$clock;
-    reg  [31:0] v_ex_wait$2$d;
-    wire  [31:0] v_ex_wait$2$q;
-    reg  v_ey_wait$0$clock;
-    reg  [31:0] v_ey_wait$0$d;
-    wire  [31:0] v_ey_wait$0$q;
-    reg  v_ey_wait$1$clock;
-    reg  [31:0] v_ey_wait$1$d;
-    wire  [31:0] v_ey_wait$1$q;
-    reg  v_ey_wait$2$clock;
-    reg  [31:0] v_ey_wait$2$d;
-    wire  [31:0] v_ey_wait$2$q;
-    reg  v_ez_wait$0$clock;
-    reg  [31:0] v_ez_wait$0$d;
-    wire  [31:0] v_ez_wait$0$q;
-    reg  v_ez_wait$1$clock;
-    reg  [31:0] v_ez_wait$1$d;
-    wire  [31:0] v_ez_wait$1$q;
-    reg  v_ez_wait$2$clock;
-    reg  [31:0] v_ez_wait$2$d;
-    wire  [31:0] v_ez_wait$2$q;
-    reg  v_exact_wait$clock;
-    reg  v_exact_wait$d;
-    wire  v_exact_wait$q;
     reg  vt_0$0$clock;
-    reg  [31:0] vt_0$0$a0_x;
-    reg  [31:0] vt_0$0$a0_e;
-    reg  [31:0] vt_0$0$a1_x;
-    reg  [31:0] vt_0$0$a1_e;
-    reg  [31:0] vt_0$0$a2_x;
-    reg  [31:0] vt_0$0$a2_e;
-    reg  [31:0] vt_0$0$b0_x;
-    reg  [31:0] vt_0$0$b0_e;
-    reg  [31:0] vt_0$0$b1_x;
-    reg  [31:0] vt_0$0$b1_e;
-    reg  [31:0] vt_0$0$b2_x;
-    reg  [31:0] vt_0$0$b2_e;
-    reg  [31:0] vt_0$0$c_x;
-    reg  [31:0] vt_0$0$c_e;
-    wire  [31:0] vt_0$0$y_x;
-    wire  [31:0] vt_0$0$y_e;
+    reg  [31:0] vt_0$0$a0;
+    reg  [31:0] vt_0$0$a1;
+    reg  [31:0] vt_0$0$a2;
+    reg  [31:0] vt_0$0$b0;
+    reg  [31:0] vt_0$0$b1;
+    reg  [31:0] vt_0$0$b2;
+    reg  [31:0] vt_0$0$c;
+    wire  [31:0] vt_0$0$y;
     reg  vt_0$1$clock;
-    reg  [31:0] vt_0$1$a0_x;
-    reg  [31:0] vt_0$1$a0_e;
-    reg  [31:0] vt_0$1$a1_x;
-    reg  [31:0] vt_0$1$a1_e;
-    reg  [31:0] vt_0$1$a2_x;
-    reg  [31:0] vt_0$1$a2_e;
-    reg  [31:0] vt_0$1$b0_x;
-    reg  [31:0] vt_0$1$b0_e;
-    reg  [31:0] vt_0$1$b1_x;
-    reg  [31:0] vt_0$1$b1_e;
-    reg  [31:0] vt_0$1$b2_x;
-    reg  [31:0] vt_0$1$b2_e;
-    reg  [31:0] vt_0$1$c_x;
-    reg  [31:0] vt_0$1$c_e;
-    wire  [31:0] vt_0$1$y_x;
-    wire  [31:0] vt_0$1$y_e;
+    reg  [31:0] vt_0$1$a0;
+    reg  [31:0] vt_0$1$a1;
+    reg  [31:0] vt_0$1$a2;
+    reg  [31:0] vt_0$1$b0;
+    reg  [31:0] vt_0$1$b1;
+    reg  [31:0] vt_0$1$b2;
+    reg  [31:0] vt_0$1$c;
+    wire  [31:0] vt_0$1$y;
     reg  vt_0$2$clock;
-    reg  [31:0] vt_0$2$a0_x;
-    reg  [31:0] vt_0$2$a0_e;
-    reg  [31:0] vt_0$2$a1_x;
-    reg  [31:0] vt_0$2$a1_e;
-    reg  [31:0] vt_0$2$a2_x;
-    reg  [31:0] vt_0$2$a2_e;
-    reg  [31:0] vt_0$2$b0_x;
-    reg  [31:0] vt_0$2$b0_e;
-    reg  [31:0] vt_0$2$b1_x;
-    reg  [31:0] vt_0$2$b1_e;
-    reg  [31:0] vt_0$2$b2_x;
-    reg  [31:0] vt_0$2$b2_e;
-    reg  [31:0] vt_0$2$c_x;
-    reg  [31:0] vt_0$2$c_e;
-    wire  [31:0] vt_0$2$y_x;
-    wire  [31:0] vt_0$2$y_e;
+    reg  [31:0] vt_0$2$a0;
+    reg  [31:0] vt_0$2$a1;
+    reg  [31:0] vt_0$2$a2;
+    reg  [31:0] vt_0$2$b0;
+    reg  [31:0] vt_0$2$b1;
+    reg  [31:0] vt_0$2$b2;
+    reg  [31:0] vt_0$2$c;
+    wire  [31:0] vt_0$2$y;
     reg  vt_1$0$clock;
-    reg  [31:0] vt_1$0$a0_x;
-    reg  [31:0] vt_1$0$a0_e;
-    reg  [31:0] vt_1$0$a1_x;
-    reg  [31:0] vt_1$0$a1_e;
-    reg  [31:0] vt_1$0$a2_x;
-    reg  [31:0] vt_1$0$a2_e;
-    reg  [31:0] vt_1$0$b0_x;
-    reg  [31:0] vt_1$0$b0_e;
-    reg  [31:0] vt_1$0$b1_x;
-    reg  [31:0] vt_1$0$b1_e;
-    reg  [31:0] vt_1$0$b2_x;
-    reg  [31:0] vt_1$0$b2_e;
-    reg  [31:0] vt_1$0$c_x;
-    reg  [31:0] vt_1$0$c_e;
-    wire  [31:0] vt_1$0$y_x;
-    wire  [31:0] vt_1$0$y_e;
+    reg  [31:0] vt_1$0$a0;
+    reg  [31:0] vt_1$0$a1;
+    reg  [31:0] vt_1$0$a2;
+    reg  [31:0] vt_1$0$b0;
+    reg  [31:0] vt_1$0$b1;
+    reg  [31:0] vt_1$0$b2;
+    reg  [31:0] vt_1$0$c;
+    wire  [31:0] vt_1$0$y;
     reg  vt_1$1$clock;
-    reg  [31:0] vt_1$1$a0_x;
-    reg  [31:0] vt_1$1$a0_e;
-    reg  [31:0] vt_1$1$a1_x;
-    reg  [31:0] vt_1$1$a1_e;
-    reg  [31:0] vt_1$1$a2_x;
-    reg  [31:0] vt_1$1$a2_e;
-    reg  [31:0] vt_1$1$b0_x;
-    reg  [31:0] vt_1$1$b0_e;
-    reg  [31:0] vt_1$1$b1_x;
-    reg  [31:0] vt_1$1$b1_e;
-    reg  [31:0] vt_1$1$b2_x;
-    reg  [31:0] vt_1$1$b2_e;
-    reg  [31:0] vt_1$1$c_x;
-    reg  [31:0] vt_1$1$c_e;
-    wire  [31:0] vt_1$1$y_x;
-    wire  [31:0] vt_1$1$y_e;
+    reg  [31:0] vt_1$1$a0;
+    reg  [31:0] vt_1$1$a1;
+    reg  [31:0] vt_1$1$a2;
+    reg  [31:0] vt_1$1$b0;
+    reg  [31:0] vt_1$1$b1;
+    reg  [31:0] vt_1$1$b2;
+    reg  [31:0] vt_1$1$c;
+    wire  [31:0] vt_1$1$y;
     reg  vt_1$2$clock;
-    reg  [31:0] vt_1$2$a0_x;
-    reg  [31:0] vt_1$2$a0_e;
-    reg  [31:0] vt_1$2$a1_x;
-    reg  [31:0] vt_1$2$a1_e;
-    reg  [31:0] vt_1$2$a2_x;
-    reg  [31:0] vt_1$2$a2_e;
-    reg  [31:0] vt_1$2$b0_x;
-    reg  [31:0] vt_1$2$b0_e;
-    reg  [31:0] vt_1$2$b1_x;
-    reg  [31:0] vt_1$2$b1_e;
-    reg  [31:0] vt_1$2$b2_x;
-    reg  [31:0] vt_1$2$b2_e;
-    reg  [31:0] vt_1$2$c_x;
-    reg  [31:0] vt_1$2$c_e;
-    wire  [31:0] vt_1$2$y_x;
-    wire  [31:0] vt_1$2$y_e;
+    reg  [31:0] vt_1$2$a0;
+    reg  [31:0] vt_1$2$a1;
+    reg  [31:0] vt_1$2$a2;
+    reg  [31:0] vt_1$2$b0;
+    reg  [31:0] vt_1$2$b1;
+    reg  [31:0] vt_1$2$b2;
+    reg  [31:0] vt_1$2$c;
+    wire  [31:0] vt_1$2$y;
     reg  vt_2$0$clock;
-    reg  [31:0] vt_2$0$a0_x;
-    reg  [31:0] vt_2$0$a0_e;
-    reg  [31:0] vt_2$0$a1_x;
-    reg  [31:0] vt_2$0$a1_e;
-    reg  [31:0] vt_2$0$a2_x;
-    reg  [31:0] vt_2$0$a2_e;
-    reg  [31:0] vt_2$0$b0_x;
-    reg  [31:0] vt_2$0$b0_e;
-    reg  [31:0] vt_2$0$b1_x;
-    reg  [31:0] vt_2$0$b1_e;
-    reg  [31:0] vt_2$0$b2_x;
-    reg  [31:0] vt_2$0$b2_e;
-    reg  [31:0] vt_2$0$c_x;
-    reg  [31:0] vt_2$0$c_e;
-    wire  [31:0] vt_2$0$y_x;
-    wire  [31:0] vt_2$0$y_e;
+    reg  [31:0] vt_2$0$a0;
+    reg  [31:0] vt_2$0$a1;
+    reg  [31:0] vt_2$0$a2;
+    reg  [31:0] vt_2$0$b0;
+    reg  [31:0] vt_2$0$b1;
+    reg  [31:0] vt_2$0$b2;
+    reg  [31:0] vt_2$0$c;
+    wire  [31:0] vt_2$0$y;
     reg  vt_2$1$clock;
-    reg  [31:0] vt_2$1$a0_x;
-    reg  [31:0] vt_2$1$a0_e;
-    reg  [31:0] vt_2$1$a1_x;
-    reg  [31:0] vt_2$1$a1_e;
-    reg  [31:0] vt_2$1$a2_x;
-    reg  [31:0] vt_2$1$a2_e;
-    reg  [31:0] vt_2$1$b0_x;
-    reg  [31:0] vt_2$1$b0_e;
-    reg  [31:0] vt_2$1$b1_x;
-    reg  [31:0] vt_2$1$b1_e;
-    reg  [31:0] vt_2$1$b2_x;
-    reg  [31:0] vt_2$1$b2_e;
-    reg  [31:0] vt_2$1$c_x;
-    reg  [31:0] vt_2$1$c_e;
-    wire  [31:0] vt_2$1$y_x;
-    wire  [31:0] vt_2$1$y_e;
+    reg  [31:0] vt_2$1$a0;
+    reg  [31:0] vt_2$1$a1;
+    reg  [31:0] vt_2$1$a2;
+    reg  [31:0] vt_2$1$b0;
+    reg  [31:0] vt_2$1$b1;
+    reg  [31:0] vt_2$1$b2;
+    reg  [31:0] vt_2$1$c;
+    wire  [31:0] vt_2$1$y;
     reg  vt_2$2$clock;
-    reg  [31:0] vt_2$2$a0_x;
-    reg  [31:0] vt_2$2$a0_e;
-    reg  [31:0] vt_2$2$a1_x;
-    reg  [31:0] vt_2$2$a1_e;
-    reg  [31:0] vt_2$2$a2_x;
-    reg  [31:0] vt_2$2$a2_e;
-    reg  [31:0] vt_2$2$b0_x;
-    reg  [31:0] vt_2$2$b0_e;
-    reg  [31:0] vt_2$2$b1_x;
-    reg  [31:0] vt_2$2$b1_e;
-    reg  [31:0] vt_2$2$b2_x;
-    reg  [31:0] vt_2$2$b2_e;
-    reg  [31:0] vt_2$2$c_x;
-    reg  [31:0] vt_2$2$c_e;
-    wire  [31:0] vt_2$2$y_x;
-    wire  [31:0] vt_2$2$y_e;
-    reg  lambda$clock;
-    reg  [31:0] lambda$a;
-    reg  [31:0] lambda$b;
-    reg  lambda$valid_in;
-    wire  [31:0] lambda$y;
-    wire  lambda$valid_out;
-    reg  two_lambda$clock;
-    reg  [31:0] two_lambda$a;
-    reg  [31:0] two_lambda$b;
-    reg  two_lambda$valid_in;
-    wire  [31:0] two_lambda$y;
-    wire  two_lambda$valid_out;
-    reg  four_lambda$clock;
-    reg  [31:0] four_lambda$a;
-    reg  [31:0] four_lambda$b;
-    reg  four_lambda$valid_in;
-    wire  [31:0] four_lambda$y;
-    wire  four_lambda$valid_out;
-    reg  reach$clock;
-    reg  [31:0] reach$a;
-    reg  [31:0] reach$b;
-    reg  reach$valid_in;
-    wire  [31:0] reach$y;
-    wire  reach$valid_out;
-    reg  eta_early$clock;
-    reg  [31:0] eta_early$d;
-    wire  [31:0] eta_early$q;
-    reg  eta_wait$clock;
-    reg  [31:0] eta_wait$d;
-    wire  [31:0] eta_wait$q;
-    reg  two_lambda_wait$clock;
-    reg  [31:0] two_lambda_wait$d;
-    wire  [31:0] two_lambda_wait$q;
-    reg  ok_wait$clock;
-    reg  ok_wait$d;
-    wire  ok_wait$q;
-    reg  gap_en_wait$clock;
-    reg  gap_en_wait$d;
-    wire  gap_en_wait$q;
-    reg  gap$0$clock;
-    reg  [31:0] gap$0$x0;
-    reg  [31:0] gap$0$e0;
-    reg  [31:0] gap$0$x1;
-    reg  [31:0] gap$0$e1;
-    reg  [31:0] gap$0$x2;
-    reg  [31:0] gap$0$e2;
-    reg  [31:0] gap$0$two_lambda;
-    reg  [31:0] gap$0$eta;
-    reg  gap$0$ok;
-    reg  gap$0$en;
-    wire  [31:0] gap$0$y0_x;
-    wire  [31:0] gap$0$y0_e;
-    wire  [31:0] gap$0$y1_x;
-    wire  [31:0] gap$0$y1_e;
-    wire  [31:0] gap$0$y2_x;
-    wire  [31:0] gap$0$y2_e;
-    reg  gap$1$clock;
-    reg  [31:0] gap$1$x0;
-    reg  [31:0] gap$1$e0;
-    reg  [31:0] gap$1$x1;
-    reg  [31:0] gap$1$e1;
-    reg  [31:0] gap$1$x2;
-    reg  [31:0] gap$1$e2;
-    reg  [31:0] gap$1$two_lambda;
-    reg  [31:0] gap$1$eta;
-    reg  gap$1$ok;
-    reg  gap$1$en;
-    wire  [31:0] gap$1$y0_x;
-    wire  [31:0] gap$1$y0_e;
-    wire  [31:0] gap$1$y1_x;
-    wire  [31:0] gap$1$y1_e;
-    wire  [31:0] gap$1$y2_x;
-    wire  [31:0] gap$1$y2_e;
-    reg  gap$2$clock;
-    reg  [31:0] gap$2$x0;
-    reg  [31:0] gap$2$e0;
-    reg  [31:0] gap$2$x1;
-    reg  [31:0] gap$2$e1;
-    reg  [31:0] gap$2$x2;
-    reg  [31:0] gap$2$e2;
-    reg  [31:0] gap$2$two_lambda;
-    reg  [31:0] gap$2$eta;
-    reg  gap$2$ok;
-    reg  gap$2$en;
-    wire  [31:0] gap$2$y0_x;
-    wire  [31:0] gap$2$y0_e;
-    wire  [31:0] gap$2$y1_x;
-    wire  [31:0] gap$2$y1_e;
-    wire  [31:0] gap$2$y2_x;
-    wire  [31:0] gap$2$y2_e;
+    reg  [31:0] vt_2$2$a0;
+    reg  [31:0] vt_2$2$a1;
+    reg  [31:0] vt_2$2$a2;
+    reg  [31:0] vt_2$2$b0;
+    reg  [31:0] vt_2$2$b1;
+    reg  [31:0] vt_2$2$b2;
+    reg  [31:0] vt_2$2$c;
+    wire  [31:0] vt_2$2$y;
+    reg  vm_0$0$clock;
+    reg  [31:0] vm_0$0$a0;
+    reg  [31:0] vm_0$0$a1;
+    reg  [31:0] vm_0$0$a2;
+    reg  [31:0] vm_0$0$b0;
+    reg  [31:0] vm_0$0$b1;
+    reg  [31:0] vm_0$0$b2;
+    reg  [31:0] vm_0$0$c;
+    wire  [31:0] vm_0$0$y;
+    reg  vm_0$1$clock;
+    reg  [31:0] vm_0$1$a0;
+    reg  [31:0] vm_0$1$a1;
+    reg  [31:0] vm_0$1$a2;
+    reg  [31:0] vm_0$1$b0;
+    reg  [31:0] vm_0$1$b1;
+    reg  [31:0] vm_0$1$b2;
+    reg  [31:0] vm_0$1$c;
+    wire  [31:0] vm_0$1$y;
+    reg  vm_0$2$clock;
+    reg  [31:0] vm_0$2$a0;
+    reg  [31:0] vm_0$2$a1;
+    reg  [31:0] vm_0$2$a2;
+    reg  [31:0] vm_0$2$b0;
+    reg  [31:0] vm_0$2$b1;
+    reg  [31:0] vm_0$2$b2;
+    reg  [31:0] vm_0$2$c;
+    wire  [31:0] vm_0$2$y;
+    reg  vm_1$0$clock;
+    reg  [31:0] vm_1$0$a0;
+    reg  [31:0] vm_1$0$a1;
+    reg  [31:0] vm_1$0$a2;
+    reg  [31:0] vm_1$0$b0;
+    reg  [31:0] vm_1$0$b1;
+    reg  [31:0] vm_1$0$b2;
+    reg  [31:0] vm_1$0$c;
+    wire  [31:0] vm_1$0$y;
+    reg  vm_1$1$clock;
+    reg  [31:0] vm_1$1$a0;
+    reg  [31:0] vm_1$1$a1;
+    reg  [31:0] vm_1$1$a2;
+    reg  [31:0] vm_1$1$b0;
+    reg  [31:0] vm_1$1$b1;
+    reg  [31:0] vm_1$1$b2;
+    reg  [31:0] vm_1$1$c;
+    wire  [31:0] vm_1$1$y;
+    reg  vm_1$2$clock;
+    reg  [31:0] vm_1$2$a0;
+    reg  [31:0] vm_1$2$a1;
+    reg  [31:0] vm_1$2$a2;
+    reg  [31:0] vm_1$2$b0;
+    reg  [31:0] vm_1$2$b1;
+    reg  [31:0] vm_1$2$b2;
+    reg  [31:0] vm_1$2$c;
+    wire  [31:0] vm_1$2$y;
+    reg  vm_2$0$clock;
+    reg  [31:0] vm_2$0$a0;
+    reg  [31:0] vm_2$0$a1;
+    reg  [31:0] vm_2$0$a2;
+    reg  [31:0] vm_2$0$b0;
+    reg  [31:0] vm_2$0$b1;
+    reg  [31:0] vm_2$0$b2;
+    reg  [31:0] vm_2$0$c;
+    wire  [31:0] vm_2$0$y;
+    reg  vm_2$1$clock;
+    reg  [31:0] vm_2$1$a0;
+    reg  [31:0] vm_2$1$a1;
+    reg  [31:0] vm_2$1$a2;
+    reg  [31:0] vm_2$1$b0;
+    reg  [31:0] vm_2$1$b1;
+    reg  [31:0] vm_2$1$b2;
+    reg  [31:0] vm_2$1$c;
+    wire  [31:0] vm_2$1$y;
+    reg  vm_2$2$clock;
+    reg  [31:0] vm_2$2$a0;
+    reg  [31:0] vm_2$2$a1;
+    reg  [31:0] vm_2$2$a2;
+    reg  [31:0] vm_2$2$b0;
+    reg  [31:0] vm_2$2$b1;
+    reg  [31:0] vm_2$2$b2;
+    reg  [31:0] vm_2$2$c;
+    wire  [31:0] vm_2$2$y;
+    reg  [31:0] vtr_0$0$d;
+    wire  [31:0] vtr_0$0$q;
+    reg  vtr_0$0$clock;
+    reg  [31:0] vtr_0$1$d;
+    wire  [31:0] vtr_0$1$q;
+    reg  vtr_0$1$clock;
+    reg  [31:0] vtr_0$2$d;
+    wire  [31:0] vtr_0$2$q;
+    reg  vtr_0$2$clock;
+    reg  [31:0] vtr_1$0$d;
+    wire  [31:0] vtr_1$0$q;
+    reg  vtr_1$0$clock;
+    reg  [31:0] vtr_1$1$d;
+    wire  [31:0] vtr_1$1$q;
+    reg  vtr_1$1$clock;
+    reg  [31:0] vtr_1$2$d;
+    wire  [31:0] vtr_1$2$q;
+    reg  vtr_1$2$clock;
+    reg  [31:0] vtr_2$0$d;
+    wire  [31:0] vtr_2$0$q;
+    reg  vtr_2$0$clock;
+    reg  [31:0] vtr_2$1$d;
+    wire  [31:0] vtr_2$1$q;
+    reg  vtr_2$1$clock;
+    reg  [31:0] vtr_2$2$d;
+    wire  [31:0] vtr_2$2$q;
+    reg  vtr_2$2$clock;
+    reg  [31:0] vmr_0$0$d;
+    wire  [31:0] vmr_0$0$q;
+    reg  vmr_0$0$clock;
+    reg  [31:0] vmr_0$1$d;
+    wire  [31:0] vmr_0$1$q;
+    reg  vmr_0$1$clock;
+    reg  [31:0] vmr_0$2$d;
+    wire  [31:0] vmr_0$2$q;
+    reg  vmr_0$2$clock;
+    reg  [31:0] vmr_1$0$d;
+    wire  [31:0] vmr_1$0$q;
+    reg  vmr_1$0$clock;
+    reg  [31:0] vmr_1$1$d;
+    wire  [31:0] vmr_1$1$q;
+    reg  vmr_1$1$clock;
+    reg  [31:0] vmr_1$2$d;
+    wire  [31:0] vmr_1$2$q;
+    reg  vmr_1$2$clock;
+    reg  [31:0] vmr_2$0$d;
+    wire  [31:0] vmr_2$0$q;
+    reg  vmr_2$0$clock;
+    reg  [31:0] vmr_2$1$d;
+    wire  [31:0] vmr_2$1$q;
+    reg  vmr_2$1$clock;
+    reg  [31:0] vmr_2$2$d;
+    wire  [31:0] vmr_2$2$q;
+    reg  vmr_2$2$clock;
+    reg  exact_wait$clock;
+    reg  exact_wait$d;
+    wire  exact_wait$q;
+    reg  verts$0$clock;
+    reg  [31:0] verts$0$x0;
+    reg  [31:0] verts$0$x1;
+    reg  [31:0] verts$0$x2;
+    reg  [31:0] verts$0$m0;
+    reg  [31:0] verts$0$m1;
+    reg  [31:0] verts$0$m2;
+    reg  [31:0] verts$0$c_v;
+    wire  [31:0] verts$0$e;
+    wire  [31:0] verts$0$f0;
+    wire  [31:0] verts$0$f1;
+    wire  [31:0] verts$0$f2;
+    wire  [31:0] verts$0$h;
+    reg  verts$1$clock;
+    reg  [31:0] verts$1$x0;
+    reg  [31:0] verts$1$x1;
+    reg  [31:0] verts$1$x2;
+    reg  [31:0] verts$1$m0;
+    reg  [31:0] verts$1$m1;
+    reg  [31:0] verts$1$m2;
+    reg  [31:0] verts$1$c_v;
+    wire  [31:0] verts$1$e;
+    wire  [31:0] verts$1$f0;
+    wire  [31:0] verts$1$f1;
+    wire  [31:0] verts$1$f2;
+    wire  [31:0] verts$1$h;
+    reg  verts$2$clock;
+    reg  [31:0] verts$2$x0;
+    reg  [31:0] verts$2$x1;
+    reg  [31:0] verts$2$x2;
+    reg  [31:0] verts$2$m0;
+    reg  [31:0] verts$2$m1;
+    reg  [31:0] verts$2$m2;
+    reg  [31:0] verts$2$c_v;
+    wire  [31:0] verts$2$e;
+    wire  [31:0] verts$2$f0;
+    wire  [31:0] verts$2$f1;
+    wire  [31:0] verts$2$f2;
+    wire  [31:0] verts$2$h;
     reg  edges$0$clock;
-    reg  [31:0] edges$0$p0_x;
-    reg  [31:0] edges$0$p0_e;
-    reg  [31:0] edges$0$p1_x;
-    reg  [31:0] edges$0$p1_e;
-    reg  [31:0] edges$0$p2_x;
-    reg  [31:0] edges$0$p2_e;
-    reg  [31:0] edges$0$q0_x;
-    reg  [31:0] edges$0$q0_e;
-    reg  [31:0] edges$0$q1_x;
-    reg  [31:0] edges$0$q1_e;
-    reg  [31:0] edges$0$q2_x;
-    reg  [31:0] edges$0$q2_e;
+    reg  [31:0] edges$0$p0;
+    reg  [31:0] edges$0$p1;
+    reg  [31:0] edges$0$p2;
+    reg  [31:0] edges$0$q0;
+    reg  [31:0] edges$0$q1;
+    reg  [31:0] edges$0$q2;
+    reg  [31:0] edges$0$pe;
+    reg  [31:0] edges$0$qe;
+    reg  [31:0] edges$0$pf0;
+    reg  [31:0] edges$0$pf1;
+    reg  [31:0] edges$0$pf2;
+    reg  [31:0] edges$0$qf0;
+    reg  [31:0] edges$0$qf1;
+    reg  [31:0] edges$0$qf2;
+    reg  [31:0] edges$0$ph;
+    reg  [31:0] edges$0$qh;
     wire  [31:0] edges$0$s_x;
-    wire  [31:0] edges$0$s_e;
+    wire  [31:0] edges$0$s_b;
     wire  edges$0$cross_t;
     wire  edges$0$cross_f;
     reg  edges$1$clock;
-    reg  [31:0] edges$1$p0_x;
-    reg  [31:0] edges$1$p0_e;
-    reg  [31:0] edges$1$p1_x;
-    reg  [31:0] edges$1$p1_e;
-    reg  [31:0] edges$1$p2_x;
-    reg  [31:0] edges$1$p2_e;
-    reg  [31:0] edges$1$q0_x;
-    reg  [31:0] edges$1$q0_e;
-    reg  [31:0] edges$1$q1_x;
-    reg  [31:0] edges$1$q1_e;
-    reg  [31:0] edges$1$q2_x;
-    reg  [31:0] edges$1$q2_e;
+    reg  [31:0] edges$1$p0;
+    reg  [31:0] edges$1$p1;
+    reg  [31:0] edges$1$p2;
+    reg  [31:0] edges$1$q0;
+    reg  [31:0] edges$1$q1;
+    reg  [31:0] edges$1$q2;
+    reg  [31:0] edges$1$pe;
+    reg  [31:0] edges$1$qe;
+    reg  [31:0] edges$1$pf0;
+    reg  [31:0] edges$1$pf1;
+    reg  [31:0] edges$1$pf2;
+    reg  [31:0] edges$1$qf0;
+    reg  [31:0] edges$1$qf1;
+    reg  [31:0] edges$1$qf2;
+    reg  [31:0] edges$1$ph;
+    reg  [31:0] edges$1$qh;
     wire  [31:0] edges$1$s_x;
-    wire  [31:0] edges$1$s_e;
+    wire  [31:0] edges$1$s_b;
     wire  edges$1$cross_t;
     wire  edges$1$cross_f;
     reg  edges$2$clock;
-    reg  [31:0] edges$2$p0_x;
-    reg  [31:0] edges$2$p0_e;
-    reg  [31:0] edges$2$p1_x;
-    reg  [31:0] edges$2$p1_e;
-    reg  [31:0] edges$2$p2_x;
-    reg  [31:0] edges$2$p2_e;
-    reg  [31:0] edges$2$q0_x;
-    reg  [31:0] edges$2$q0_e;
-    reg  [31:0] edges$2$q1_x;
-    reg  [31:0] edges$2$q1_e;
-    reg  [31:0] edges$2$q2_x;
-    reg  [31:0] edges$2$q2_e;
+    reg  [31:0] edges$2$p0;
+    reg  [31:0] edges$2$p1;
+    reg  [31:0] edges$2$p2;
+    reg  [31:0] edges$2$q0;
+    reg  [31:0] edges$2$q1;
+    reg  [31:0] edges$2$q2;
+    reg  [31:0] edges$2$pe;
+    reg  [31:0] edges$2$qe;
+    reg  [31:0] edges$2$pf0;
+    reg  [31:0] edges$2$pf1;
+    reg  [31:0] edges$2$pf2;
+    reg  [31:0] edges$2$qf0;
+    reg  [31:0] edges$2$qf1;
+    reg  [31:0] edges$2$qf2;
+    reg  [31:0] edges$2$ph;
+    reg  [31:0] edges$2$qh;
     wire  [31:0] edges$2$s_x;
-    wire  [31:0] edges$2$s_e;
+    wire  [31:0] edges$2$s_b;
     wire  edges$2$cross_t;
     wire  edges$2$cross_f;
     reg  tag_wait$clock;
@@ -806,6 +1035,42 @@ module top(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,m_2
     reg  valid_wait$clock;
     reg  valid_wait$d;
     wire  valid_wait$q;
+    reg  v_cross_t$0$d;
+    wire  v_cross_t$0$q;
+    reg  v_cross_t$0$clock;
+    reg  v_cross_t$1$d;
+    wire  v_cross_t$1$q;
+    reg  v_cross_t$1$clock;
+    reg  v_cross_t$2$d;
+    wire  v_cross_t$2$q;
+    reg  v_cross_t$2$clock;
+    reg  v_cross_f$0$d;
+    wire  v_cross_f$0$q;
+    reg  v_cross_f$0$clock;
+    reg  v_cross_f$1$d;
+    wire  v_cross_f$1$q;
+    reg  v_cross_f$1$clock;
+    reg  v_cross_f$2$d;
+    wire  v_cross_f$2$q;
+    reg  v_cross_f$2$clock;
+    reg  [31:0] v_s_x$0$d;
+    wire  [31:0] v_s_x$0$q;
+    reg  v_s_x$0$clock;
+    reg  [31:0] v_s_x$1$d;
+    wire  [31:0] v_s_x$1$q;
+    reg  v_s_x$1$clock;
+    reg  [31:0] v_s_x$2$d;
+    wire  [31:0] v_s_x$2$q;
+    reg  v_s_x$2$clock;
+    reg  [31:0] v_s_b$0$d;
+    wire  [31:0] v_s_b$0$q;
+    reg  v_s_b$0$clock;
+    reg  [31:0] v_s_b$1$d;
+    wire  [31:0] v_s_b$1$q;
+    reg  v_s_b$1$clock;
+    reg  [31:0] v_s_b$2$d;
+    wire  [31:0] v_s_b$2$q;
+    reg  v_s_b$2$clock;
     reg  [31:0] out_s_x$0$d;
     wire  [31:0] out_s_x$0$q;
     reg  out_s_x$0$clock;
@@ -815,15 +1080,15 @@ module top(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,m_2
     reg  [31:0] out_s_x$2$d;
     wire  [31:0] out_s_x$2$q;
     reg  out_s_x$2$clock;
-    reg  [31:0] out_s_e$0$d;
-    wire  [31:0] out_s_e$0$q;
-    reg  out_s_e$0$clock;
-    reg  [31:0] out_s_e$1$d;
-    wire  [31:0] out_s_e$1$q;
-    reg  out_s_e$1$clock;
-    reg  [31:0] out_s_e$2$d;
-    wire  [31:0] out_s_e$2$q;
-    reg  out_s_e$2$clock;
+    reg  [31:0] out_s_b$0$d;
+    wire  [31:0] out_s_b$0$q;
+    reg  out_s_b$0$clock;
+    reg  [31:0] out_s_b$1$d;
+    wire  [31:0] out_s_b$1$q;
+    reg  out_s_b$1$clock;
+    reg  [31:0] out_s_b$2$d;
+    wire  [31:0] out_s_b$2$q;
+    reg  out_s_b$2$clock;
     reg  out_cross_t$0$d;
     wire  out_cross_t$0$q;
     reg  out_cross_t$0$clock;
@@ -856,524 +1121,875 @@ module top(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,m_2
     reg  out_valid$clock;
     
     // Local signals
-    reg  [31:0] c_ve_x$0;
-    reg  [31:0] c_ve_x$1;
-    reg  [31:0] c_ve_x$2;
-    reg  [31:0] c_ve_y$0;
-    reg  [31:0] c_ve_y$1;
-    reg  [31:0] c_ve_y$2;
-    reg  [31:0] c_ve_z$0;
-    reg  [31:0] c_ve_z$1;
-    reg  [31:0] c_ve_z$2;
+    reg  [31:0] c_v;
     reg  hit_any;
     reg  miss_all;
     
     // Sub module instances
-    top$edges$0$a$add$s3_y in_m_0$0(
+    top$aerr$s3_y in_m_0$0(
         .d(in_m_0$0$d),
         .q(in_m_0$0$q),
         .clock(in_m_0$0$clock)
     );
-    top$edges$0$a$add$s3_y in_m_0$1(
+    top$aerr$s3_y in_m_0$1(
         .d(in_m_0$1$d),
         .q(in_m_0$1$q),
         .clock(in_m_0$1$clock)
     );
-    top$edges$0$a$add$s3_y in_m_0$2(
+    top$aerr$s3_y in_m_0$2(
         .d(in_m_0$2$d),
         .q(in_m_0$2$q),
         .clock(in_m_0$2$clock)
     );
-    top$edges$0$a$add$s3_y in_m_0$3(
+    top$aerr$s3_y in_m_0$3(
         .d(in_m_0$3$d),
         .q(in_m_0$3$q),
         .clock(in_m_0$3$clock)
     );
-    top$edges$0$a$add$s3_y in_m_1$0(
+    top$aerr$s3_y in_m_1$0(
         .d(in_m_1$0$d),
         .q(in_m_1$0$q),
         .clock(in_m_1$0$clock)
     );
-    top$edges$0$a$add$s3_y in_m_1$1(
+    top$aerr$s3_y in_m_1$1(
         .d(in_m_1$1$d),
         .q(in_m_1$1$q),
         .clock(in_m_1$1$clock)
     );
-    top$edges$0$a$add$s3_y in_m_1$2(
+    top$aerr$s3_y in_m_1$2(
         .d(in_m_1$2$d),
         .q(in_m_1$2$q),
         .clock(in_m_1$2$clock)
     );
-    top$edges$0$a$add$s3_y in_m_1$3(
+    top$aerr$s3_y in_m_1$3(
         .d(in_m_1$3$d),
         .q(in_m_1$3$q),
         .clock(in_m_1$3$clock)
     );
-    top$edges$0$a$add$s3_y in_m_2$0(
+    top$aerr$s3_y in_m_2$0(
         .d(in_m_2$0$d),
         .q(in_m_2$0$q),
         .clock(in_m_2$0$clock)
     );
-    top$edges$0$a$add$s3_y in_m_2$1(
+    top$aerr$s3_y in_m_2$1(
         .d(in_m_2$1$d),
         .q(in_m_2$1$q),
         .clock(in_m_2$1$clock)
     );
-    top$edges$0$a$add$s3_y in_m_2$2(
+    top$aerr$s3_y in_m_2$2(
         .d(in_m_2$2$d),
         .q(in_m_2$2$q),
         .clock(in_m_2$2$clock)
     );
-    top$edges$0$a$add$s3_y in_m_2$3(
+    top$aerr$s3_y in_m_2$3(
         .d(in_m_2$3$d),
         .q(in_m_2$3$q),
         .clock(in_m_2$3$clock)
     );
-    top$edges$0$a$add$s3_y in_e_lin(
-        .d(in_e_lin$d),
-        .q(in_e_lin$q),
-        .clock(in_e_lin$clock)
+    top$aerr$s3_y in_alpha_m(
+        .d(in_alpha_m$d),
+        .q(in_alpha_m$q),
+        .clock(in_alpha_m$clock)
     );
-    top$edges$0$a$add$s3_y in_e_tr(
-        .d(in_e_tr$d),
-        .q(in_e_tr$q),
-        .clock(in_e_tr$clock)
+    top$aerr$s3_y in_alpha_f(
+        .d(in_alpha_f$d),
+        .q(in_alpha_f$q),
+        .clock(in_alpha_f$clock)
     );
-    top$edges$0$a$add$s3_y in_l_norm(
-        .d(in_l_norm$d),
-        .q(in_l_norm$q),
-        .clock(in_l_norm$clock)
-    );
-    top$edges$0$a$add$s3_y in_f_0$0(
+    top$aerr$s3_y in_f_0$0(
         .d(in_f_0$0$d),
         .q(in_f_0$0$q),
         .clock(in_f_0$0$clock)
     );
-    top$edges$0$a$add$s3_y in_f_0$1(
+    top$aerr$s3_y in_f_0$1(
         .d(in_f_0$1$d),
         .q(in_f_0$1$q),
         .clock(in_f_0$1$clock)
     );
-    top$edges$0$a$add$s3_y in_f_0$2(
+    top$aerr$s3_y in_f_0$2(
         .d(in_f_0$2$d),
         .q(in_f_0$2$q),
         .clock(in_f_0$2$clock)
     );
-    top$edges$0$a$add$s3_y in_f_0$3(
+    top$aerr$s3_y in_f_0$3(
         .d(in_f_0$3$d),
         .q(in_f_0$3$q),
         .clock(in_f_0$3$clock)
     );
-    top$edges$0$a$add$s3_y in_f_1$0(
+    top$aerr$s3_y in_f_1$0(
         .d(in_f_1$0$d),
         .q(in_f_1$0$q),
         .clock(in_f_1$0$clock)
     );
-    top$edges$0$a$add$s3_y in_f_1$1(
+    top$aerr$s3_y in_f_1$1(
         .d(in_f_1$1$d),
         .q(in_f_1$1$q),
         .clock(in_f_1$1$clock)
     );
-    top$edges$0$a$add$s3_y in_f_1$2(
+    top$aerr$s3_y in_f_1$2(
         .d(in_f_1$2$d),
         .q(in_f_1$2$q),
         .clock(in_f_1$2$clock)
     );
-    top$edges$0$a$add$s3_y in_f_1$3(
+    top$aerr$s3_y in_f_1$3(
         .d(in_f_1$3$d),
         .q(in_f_1$3$q),
         .clock(in_f_1$3$clock)
     );
-    top$edges$0$a$add$s3_y in_f_2$0(
+    top$aerr$s3_y in_f_2$0(
         .d(in_f_2$0$d),
         .q(in_f_2$0$q),
         .clock(in_f_2$0$clock)
     );
-    top$edges$0$a$add$s3_y in_f_2$1(
+    top$aerr$s3_y in_f_2$1(
         .d(in_f_2$1$d),
         .q(in_f_2$1$q),
         .clock(in_f_2$1$clock)
     );
-    top$edges$0$a$add$s3_y in_f_2$2(
+    top$aerr$s3_y in_f_2$2(
         .d(in_f_2$2$d),
         .q(in_f_2$2$q),
         .clock(in_f_2$2$clock)
     );
-    top$edges$0$a$add$s3_y in_f_2$3(
+    top$aerr$s3_y in_f_2$3(
         .d(in_f_2$3$d),
         .q(in_f_2$3$q),
         .clock(in_f_2$3$clock)
     );
-    top$edges$0$a$add$s3_y in_f_lin(
-        .d(in_f_lin$d),
-        .q(in_f_lin$q),
-        .clock(in_f_lin$clock)
+    top$aerr$s3_y in_beta_m(
+        .d(in_beta_m$d),
+        .q(in_beta_m$q),
+        .clock(in_beta_m$clock)
     );
-    top$edges$0$a$add$s3_y in_f_tr(
-        .d(in_f_tr$d),
-        .q(in_f_tr$q),
-        .clock(in_f_tr$clock)
+    top$aerr$s3_y in_beta_f(
+        .d(in_beta_f$d),
+        .q(in_beta_f$q),
+        .clock(in_beta_f$clock)
     );
-    top$edges$0$a$add$s3_y in_eta(
-        .d(in_eta$d),
-        .q(in_eta$q),
-        .clock(in_eta$clock)
+    top$aerr$s3_y in_scale(
+        .d(in_scale$d),
+        .q(in_scale$q),
+        .clock(in_scale$clock)
     );
-    top$edges$0$a$add$s1_eff_sub in_gap_en(
-        .d(in_gap_en$d),
-        .q(in_gap_en$q),
-        .clock(in_gap_en$clock)
-    );
-    top$edges$0$a$add$s3_y in_v_x$0(
+    top$aerr$s3_y in_v_x$0(
         .d(in_v_x$0$d),
         .q(in_v_x$0$q),
         .clock(in_v_x$0$clock)
     );
-    top$edges$0$a$add$s3_y in_v_x$1(
+    top$aerr$s3_y in_v_x$1(
         .d(in_v_x$1$d),
         .q(in_v_x$1$q),
         .clock(in_v_x$1$clock)
     );
-    top$edges$0$a$add$s3_y in_v_x$2(
+    top$aerr$s3_y in_v_x$2(
         .d(in_v_x$2$d),
         .q(in_v_x$2$q),
         .clock(in_v_x$2$clock)
     );
-    top$edges$0$a$add$s3_y in_v_y$0(
+    top$aerr$s3_y in_v_y$0(
         .d(in_v_y$0$d),
         .q(in_v_y$0$q),
         .clock(in_v_y$0$clock)
     );
-    top$edges$0$a$add$s3_y in_v_y$1(
+    top$aerr$s3_y in_v_y$1(
         .d(in_v_y$1$d),
         .q(in_v_y$1$q),
         .clock(in_v_y$1$clock)
     );
-    top$edges$0$a$add$s3_y in_v_y$2(
+    top$aerr$s3_y in_v_y$2(
         .d(in_v_y$2$d),
         .q(in_v_y$2$q),
         .clock(in_v_y$2$clock)
     );
-    top$edges$0$a$add$s3_y in_v_z$0(
+    top$aerr$s3_y in_v_z$0(
         .d(in_v_z$0$d),
         .q(in_v_z$0$q),
         .clock(in_v_z$0$clock)
     );
-    top$edges$0$a$add$s3_y in_v_z$1(
+    top$aerr$s3_y in_v_z$1(
         .d(in_v_z$1$d),
         .q(in_v_z$1$q),
         .clock(in_v_z$1$clock)
     );
-    top$edges$0$a$add$s3_y in_v_z$2(
+    top$aerr$s3_y in_v_z$2(
         .d(in_v_z$2$d),
         .q(in_v_z$2$q),
         .clock(in_v_z$2$clock)
     );
-    top$edges$0$a$add$s1_eff_sub in_v_exact(
+    top$aerr$s1_eff_sub in_v_exact(
         .d(in_v_exact$d),
         .q(in_v_exact$q),
         .clock(in_v_exact$clock)
     );
-    top$edges$0$a$add$s3_y in_tag(
+    top$aerr$s3_y in_tag(
         .d(in_tag$d),
         .q(in_tag$q),
         .clock(in_tag$clock)
     );
-    top$edges$0$a$add$s1_eff_sub in_valid(
+    top$aerr$s1_eff_sub in_valid(
         .d(in_valid$d),
         .q(in_valid$q),
         .clock(in_valid$clock)
     );
     top$mb_0$0 mb_0$0(
         .clock(mb_0$0$clock),
-        .a0_x(mb_0$0$a0_x),
-        .a0_e(mb_0$0$a0_e),
-        .a1_x(mb_0$0$a1_x),
-        .a1_e(mb_0$0$a1_e),
-        .a2_x(mb_0$0$a2_x),
-        .a2_e(mb_0$0$a2_e),
-        .b0_x(mb_0$0$b0_x),
-        .b0_e(mb_0$0$b0_e),
-        .b1_x(mb_0$0$b1_x),
-        .b1_e(mb_0$0$b1_e),
-        .b2_x(mb_0$0$b2_x),
-        .b2_e(mb_0$0$b2_e),
-        .c_x(mb_0$0$c_x),
-        .c_e(mb_0$0$c_e),
-        .y_x(mb_0$0$y_x),
-        .y_e(mb_0$0$y_e)
+        .a0(mb_0$0$a0),
+        .a1(mb_0$0$a1),
+        .a2(mb_0$0$a2),
+        .b0(mb_0$0$b0),
+        .b1(mb_0$0$b1),
+        .b2(mb_0$0$b2),
+        .c(mb_0$0$c),
+        .y(mb_0$0$y)
     );
     top$mb_0$0 mb_0$1(
         .clock(mb_0$1$clock),
-        .a0_x(mb_0$1$a0_x),
-        .a0_e(mb_0$1$a0_e),
-        .a1_x(mb_0$1$a1_x),
-        .a1_e(mb_0$1$a1_e),
-        .a2_x(mb_0$1$a2_x),
-        .a2_e(mb_0$1$a2_e),
-        .b0_x(mb_0$1$b0_x),
-        .b0_e(mb_0$1$b0_e),
-        .b1_x(mb_0$1$b1_x),
-        .b1_e(mb_0$1$b1_e),
-        .b2_x(mb_0$1$b2_x),
-        .b2_e(mb_0$1$b2_e),
-        .c_x(mb_0$1$c_x),
-        .c_e(mb_0$1$c_e),
-        .y_x(mb_0$1$y_x),
-        .y_e(mb_0$1$y_e)
+        .a0(mb_0$1$a0),
+        .a1(mb_0$1$a1),
+        .a2(mb_0$1$a2),
+        .b0(mb_0$1$b0),
+        .b1(mb_0$1$b1),
+        .b2(mb_0$1$b2),
+        .c(mb_0$1$c),
+        .y(mb_0$1$y)
     );
     top$mb_0$0 mb_0$2(
         .clock(mb_0$2$clock),
-        .a0_x(mb_0$2$a0_x),
-        .a0_e(mb_0$2$a0_e),
-        .a1_x(mb_0$2$a1_x),
-        .a1_e(mb_0$2$a1_e),
-        .a2_x(mb_0$2$a2_x),
-        .a2_e(mb_0$2$a2_e),
-        .b0_x(mb_0$2$b0_x),
-        .b0_e(mb_0$2$b0_e),
-        .b1_x(mb_0$2$b1_x),
-        .b1_e(mb_0$2$b1_e),
-        .b2_x(mb_0$2$b2_x),
-        .b2_e(mb_0$2$b2_e),
-        .c_x(mb_0$2$c_x),
-        .c_e(mb_0$2$c_e),
-        .y_x(mb_0$2$y_x),
-        .y_e(mb_0$2$y_e)
+        .a0(mb_0$2$a0),
+        .a1(mb_0$2$a1),
+        .a2(mb_0$2$a2),
+        .b0(mb_0$2$b0),
+        .b1(mb_0$2$b1),
+        .b2(mb_0$2$b2),
+        .c(mb_0$2$c),
+        .y(mb_0$2$y)
     );
     top$mb_0$3 mb_0$3(
         .clock(mb_0$3$clock),
-        .a0_x(mb_0$3$a0_x),
-        .a0_e(mb_0$3$a0_e),
-        .a1_x(mb_0$3$a1_x),
-        .a1_e(mb_0$3$a1_e),
-        .a2_x(mb_0$3$a2_x),
-        .a2_e(mb_0$3$a2_e),
-        .b0_x(mb_0$3$b0_x),
-        .b0_e(mb_0$3$b0_e),
-        .b1_x(mb_0$3$b1_x),
-        .b1_e(mb_0$3$b1_e),
-        .b2_x(mb_0$3$b2_x),
-        .b2_e(mb_0$3$b2_e),
-        .c_x(mb_0$3$c_x),
-        .c_e(mb_0$3$c_e),
-        .y_x(mb_0$3$y_x),
-        .y_e(mb_0$3$y_e)
+        .a0(mb_0$3$a0),
+        .a1(mb_0$3$a1),
+        .a2(mb_0$3$a2),
+        .b0(mb_0$3$b0),
+        .b1(mb_0$3$b1),
+        .b2(mb_0$3$b2),
+        .c(mb_0$3$c),
+        .y(mb_0$3$y)
     );
     top$mb_0$0 mb_1$0(
         .clock(mb_1$0$clock),
-        .a0_x(mb_1$0$a0_x),
-        .a0_e(mb_1$0$a0_e),
-        .a1_x(mb_1$0$a1_x),
-        .a1_e(mb_1$0$a1_e),
-        .a2_x(mb_1$0$a2_x),
-        .a2_e(mb_1$0$a2_e),
-        .b0_x(mb_1$0$b0_x),
-        .b0_e(mb_1$0$b0_e),
-        .b1_x(mb_1$0$b1_x),
-        .b1_e(mb_1$0$b1_e),
-        .b2_x(mb_1$0$b2_x),
-        .b2_e(mb_1$0$b2_e),
-        .c_x(mb_1$0$c_x),
-        .c_e(mb_1$0$c_e),
-        .y_x(mb_1$0$y_x),
-        .y_e(mb_1$0$y_e)
+        .a0(mb_1$0$a0),
+        .a1(mb_1$0$a1),
+        .a2(mb_1$0$a2),
+        .b0(mb_1$0$b0),
+        .b1(mb_1$0$b1),
+        .b2(mb_1$0$b2),
+        .c(mb_1$0$c),
+        .y(mb_1$0$y)
     );
     top$mb_0$0 mb_1$1(
         .clock(mb_1$1$clock),
-        .a0_x(mb_1$1$a0_x),
-        .a0_e(mb_1$1$a0_e),
-        .a1_x(mb_1$1$a1_x),
-        .a1_e(mb_1$1$a1_e),
-        .a2_x(mb_1$1$a2_x),
-        .a2_e(mb_1$1$a2_e),
-        .b0_x(mb_1$1$b0_x),
-        .b0_e(mb_1$1$b0_e),
-        .b1_x(mb_1$1$b1_x),
-        .b1_e(mb_1$1$b1_e),
-        .b2_x(mb_1$1$b2_x),
-        .b2_e(mb_1$1$b2_e),
-        .c_x(mb_1$1$c_x),
-        .c_e(mb_1$1$c_e),
-        .y_x(mb_1$1$y_x),
-        .y_e(mb_1$1$y_e)
+        .a0(mb_1$1$a0),
+        .a1(mb_1$1$a1),
+        .a2(mb_1$1$a2),
+        .b0(mb_1$1$b0),
+        .b1(mb_1$1$b1),
+        .b2(mb_1$1$b2),
+        .c(mb_1$1$c),
+        .y(mb_1$1$y)
     );
     top$mb_0$0 mb_1$2(
         .clock(mb_1$2$clock),
-        .a0_x(mb_1$2$a0_x),
-        .a0_e(mb_1$2$a0_e),
-        .a1_x(mb_1$2$a1_x),
-        .a1_e(mb_1$2$a1_e),
-        .a2_x(mb_1$2$a2_x),
-        .a2_e(mb_1$2$a2_e),
-        .b0_x(mb_1$2$b0_x),
-        .b0_e(mb_1$2$b0_e),
-        .b1_x(mb_1$2$b1_x),
-        .b1_e(mb_1$2$b1_e),
-        .b2_x(mb_1$2$b2_x),
-        .b2_e(mb_1$2$b2_e),
-        .c_x(mb_1$2$c_x),
-        .c_e(mb_1$2$c_e),
-        .y_x(mb_1$2$y_x),
-        .y_e(mb_1$2$y_e)
+        .a0(mb_1$2$a0),
+        .a1(mb_1$2$a1),
+        .a2(mb_1$2$a2),
+        .b0(mb_1$2$b0),
+        .b1(mb_1$2$b1),
+        .b2(mb_1$2$b2),
+        .c(mb_1$2$c),
+        .y(mb_1$2$y)
     );
     top$mb_0$3 mb_1$3(
         .clock(mb_1$3$clock),
-        .a0_x(mb_1$3$a0_x),
-        .a0_e(mb_1$3$a0_e),
-        .a1_x(mb_1$3$a1_x),
-        .a1_e(mb_1$3$a1_e),
-        .a2_x(mb_1$3$a2_x),
-        .a2_e(mb_1$3$a2_e),
-        .b0_x(mb_1$3$b0_x),
-        .b0_e(mb_1$3$b0_e),
-        .b1_x(mb_1$3$b1_x),
-        .b1_e(mb_1$3$b1_e),
-        .b2_x(mb_1$3$b2_x),
-        .b2_e(mb_1$3$b2_e),
-        .c_x(mb_1$3$c_x),
-        .c_e(mb_1$3$c_e),
-        .y_x(mb_1$3$y_x),
-        .y_e(mb_1$3$y_e)
+        .a0(mb_1$3$a0),
+        .a1(mb_1$3$a1),
+        .a2(mb_1$3$a2),
+        .b0(mb_1$3$b0),
+        .b1(mb_1$3$b1),
+        .b2(mb_1$3$b2),
+        .c(mb_1$3$c),
+        .y(mb_1$3$y)
     );
     top$mb_0$0 mb_2$0(
         .clock(mb_2$0$clock),
-        .a0_x(mb_2$0$a0_x),
-        .a0_e(mb_2$0$a0_e),
-        .a1_x(mb_2$0$a1_x),
-        .a1_e(mb_2$0$a1_e),
-        .a2_x(mb_2$0$a2_x),
-        .a2_e(mb_2$0$a2_e),
-        .b0_x(mb_2$0$b0_x),
-        .b0_e(mb_2$0$b0_e),
-        .b1_x(mb_2$0$b1_x),
-        .b1_e(mb_2$0$b1_e),
-        .b2_x(mb_2$0$b2_x),
-        .b2_e(mb_2$0$b2_e),
-        .c_x(mb_2$0$c_x),
-        .c_e(mb_2$0$c_e),
-        .y_x(mb_2$0$y_x),
-        .y_e(mb_2$0$y_e)
+        .a0(mb_2$0$a0),
+        .a1(mb_2$0$a1),
+        .a2(mb_2$0$a2),
+        .b0(mb_2$0$b0),
+        .b1(mb_2$0$b1),
+        .b2(mb_2$0$b2),
+        .c(mb_2$0$c),
+        .y(mb_2$0$y)
     );
     top$mb_0$0 mb_2$1(
         .clock(mb_2$1$clock),
-        .a0_x(mb_2$1$a0_x),
-        .a0_e(mb_2$1$a0_e),
-        .a1_x(mb_2$1$a1_x),
-        .a1_e(mb_2$1$a1_e),
-        .a2_x(mb_2$1$a2_x),
-        .a2_e(mb_2$1$a2_e),
-        .b0_x(mb_2$1$b0_x),
-        .b0_e(mb_2$1$b0_e),
-        .b1_x(mb_2$1$b1_x),
-        .b1_e(mb_2$1$b1_e),
-        .b2_x(mb_2$1$b2_x),
-        .b2_e(mb_2$1$b2_e),
-        .c_x(mb_2$1$c_x),
-        .c_e(mb_2$1$c_e),
-        .y_x(mb_2$1$y_x),
-        .y_e(mb_2$1$y_e)
+        .a0(mb_2$1$a0),
+        .a1(mb_2$1$a1),
+        .a2(mb_2$1$a2),
+        .b0(mb_2$1$b0),
+        .b1(mb_2$1$b1),
+        .b2(mb_2$1$b2),
+        .c(mb_2$1$c),
+        .y(mb_2$1$y)
     );
     top$mb_0$0 mb_2$2(
         .clock(mb_2$2$clock),
-        .a0_x(mb_2$2$a0_x),
-        .a0_e(mb_2$2$a0_e),
-        .a1_x(mb_2$2$a1_x),
-        .a1_e(mb_2$2$a1_e),
-        .a2_x(mb_2$2$a2_x),
-        .a2_e(mb_2$2$a2_e),
-        .b0_x(mb_2$2$b0_x),
-        .b0_e(mb_2$2$b0_e),
-        .b1_x(mb_2$2$b1_x),
-        .b1_e(mb_2$2$b1_e),
-        .b2_x(mb_2$2$b2_x),
-        .b2_e(mb_2$2$b2_e),
-        .c_x(mb_2$2$c_x),
-        .c_e(mb_2$2$c_e),
-        .y_x(mb_2$2$y_x),
-        .y_e(mb_2$2$y_e)
+        .a0(mb_2$2$a0),
+        .a1(mb_2$2$a1),
+        .a2(mb_2$2$a2),
+        .b0(mb_2$2$b0),
+        .b1(mb_2$2$b1),
+        .b2(mb_2$2$b2),
+        .c(mb_2$2$c),
+        .y(mb_2$2$y)
     );
     top$mb_0$3 mb_2$3(
         .clock(mb_2$3$clock),
-        .a0_x(mb_2$3$a0_x),
-        .a0_e(mb_2$3$a0_e),
-        .a1_x(mb_2$3$a1_x),
-        .a1_e(mb_2$3$a1_e),
-        .a2_x(mb_2$3$a2_x),
-        .a2_e(mb_2$3$a2_e),
-        .b0_x(mb_2$3$b0_x),
-        .b0_e(mb_2$3$b0_e),
-        .b1_x(mb_2$3$b1_x),
-        .b1_e(mb_2$3$b1_e),
-        .b2_x(mb_2$3$b2_x),
-        .b2_e(mb_2$3$b2_e),
-        .c_x(mb_2$3$c_x),
-        .c_e(mb_2$3$c_e),
-        .y_x(mb_2$3$y_x),
-        .y_e(mb_2$3$y_e)
+        .a0(mb_2$3$a0),
+        .a1(mb_2$3$a1),
+        .a2(mb_2$3$a2),
+        .b0(mb_2$3$b0),
+        .b1(mb_2$3$b1),
+        .b2(mb_2$3$b2),
+        .c(mb_2$3$c),
+        .y(mb_2$3$y)
     );
-    top$edges$0$a$err v_err_x$0(
-        .clock(v_err_x$0$clock),
-        .x(v_err_x$0$x),
-        .valid_in(v_err_x$0$valid_in),
-        .y(v_err_x$0$y),
-        .valid_out(v_err_x$0$valid_out)
+    top$mg_0$0 mg_0$0(
+        .clock(mg_0$0$clock),
+        .a0(mg_0$0$a0),
+        .a1(mg_0$0$a1),
+        .a2(mg_0$0$a2),
+        .b0(mg_0$0$b0),
+        .b1(mg_0$0$b1),
+        .b2(mg_0$0$b2),
+        .c(mg_0$0$c),
+        .y(mg_0$0$y)
     );
-    top$edges$0$a$err v_err_x$1(
-        .clock(v_err_x$1$clock),
-        .x(v_err_x$1$x),
-        .valid_in(v_err_x$1$valid_in),
-        .y(v_err_x$1$y),
-        .valid_out(v_err_x$1$valid_out)
+    top$mg_0$0 mg_0$1(
+        .clock(mg_0$1$clock),
+        .a0(mg_0$1$a0),
+        .a1(mg_0$1$a1),
+        .a2(mg_0$1$a2),
+        .b0(mg_0$1$b0),
+        .b1(mg_0$1$b1),
+        .b2(mg_0$1$b2),
+        .c(mg_0$1$c),
+        .y(mg_0$1$y)
     );
-    top$edges$0$a$err v_err_x$2(
-        .clock(v_err_x$2$clock),
-        .x(v_err_x$2$x),
-        .valid_in(v_err_x$2$valid_in),
-        .y(v_err_x$2$y),
-        .valid_out(v_err_x$2$valid_out)
+    top$mg_0$0 mg_0$2(
+        .clock(mg_0$2$clock),
+        .a0(mg_0$2$a0),
+        .a1(mg_0$2$a1),
+        .a2(mg_0$2$a2),
+        .b0(mg_0$2$b0),
+        .b1(mg_0$2$b1),
+        .b2(mg_0$2$b2),
+        .c(mg_0$2$c),
+        .y(mg_0$2$y)
     );
-    top$edges$0$a$err v_err_y$0(
-        .clock(v_err_y$0$clock),
-        .x(v_err_y$0$x),
-        .valid_in(v_err_y$0$valid_in),
-        .y(v_err_y$0$y),
-        .valid_out(v_err_y$0$valid_out)
+    top$mg_0$3 mg_0$3(
+        .clock(mg_0$3$clock),
+        .a0(mg_0$3$a0),
+        .a1(mg_0$3$a1),
+        .a2(mg_0$3$a2),
+        .b0(mg_0$3$b0),
+        .b1(mg_0$3$b1),
+        .b2(mg_0$3$b2),
+        .c(mg_0$3$c),
+        .y(mg_0$3$y)
     );
-    top$edges$0$a$err v_err_y$1(
-        .clock(v_err_y$1$clock),
-        .x(v_err_y$1$x),
-        .valid_in(v_err_y$1$valid_in),
-        .y(v_err_y$1$y),
-        .valid_out(v_err_y$1$valid_out)
+    top$mg_0$0 mg_1$0(
+        .clock(mg_1$0$clock),
+        .a0(mg_1$0$a0),
+        .a1(mg_1$0$a1),
+        .a2(mg_1$0$a2),
+        .b0(mg_1$0$b0),
+        .b1(mg_1$0$b1),
+        .b2(mg_1$0$b2),
+        .c(mg_1$0$c),
+        .y(mg_1$0$y)
     );
-    top$edges$0$a$err v_err_y$2(
-        .clock(v_err_y$2$clock),
-        .x(v_err_y$2$x),
-        .valid_in(v_err_y$2$valid_in),
-        .y(v_err_y$2$y),
-        .valid_out(v_err_y$2$valid_out)
+    top$mg_0$0 mg_1$1(
+        .clock(mg_1$1$clock),
+        .a0(mg_1$1$a0),
+        .a1(mg_1$1$a1),
+        .a2(mg_1$1$a2),
+        .b0(mg_1$1$b0),
+        .b1(mg_1$1$b1),
+        .b2(mg_1$1$b2),
+        .c(mg_1$1$c),
+        .y(mg_1$1$y)
     );
-    top$edges$0$a$err v_err_z$0(
-        .clock(v_err_z$0$clock),
-        .x(v_err_z$0$x),
-        .valid_in(v_err_z$0$valid_in),
-        .y(v_err_z$0$y),
-        .valid_out(v_err_z$0$valid_out)
+    top$mg_0$0 mg_1$2(
+        .clock(mg_1$2$clock),
+        .a0(mg_1$2$a0),
+        .a1(mg_1$2$a1),
+        .a2(mg_1$2$a2),
+        .b0(mg_1$2$b0),
+        .b1(mg_1$2$b1),
+        .b2(mg_1$2$b2),
+        .c(mg_1$2$c),
+        .y(mg_1$2$y)
     );
-    top$edges$0$a$err v_err_z$1(
-        .clock(v_err_z$1$clock),
-        .x(v_err_z$1$x),
-        .valid_in(v_err_z$1$valid_in),
-        .y(v_err_z$1$y),
-        .valid_out(v_err_z$1$valid_out)
+    top$mg_0$3 mg_1$3(
+        .clock(mg_1$3$clock),
+        .a0(mg_1$3$a0),
+        .a1(mg_1$3$a1),
+        .a2(mg_1$3$a2),
+        .b0(mg_1$3$b0),
+        .b1(mg_1$3$b1),
+        .b2(mg_1$3$b2),
+        .c(mg_1$3$c),
+        .y(mg_1$3$y)
     );
-    top$edges$0$a$err v_err_z$2(
-        .clock(v_err_z$2$clock),
-        .x(v_err_z$2$x),
-        .valid_in(v_err_z$2$valid_in),
-        .y(v_err_z$2$y),
-        .valid_out(v_err_z$2$valid_out)
+    top$mg_0$0 mg_2$0(
+        .clock(mg_2$0$clock),
+        .a0(mg_2$0$a0),
+        .a1(mg_2$0$a1),
+        .a2(mg_2$0$a2),
+        .b0(mg_2$0$b0),
+        .b1(mg_2$0$b1),
+        .b2(mg_2$0$b2),
+        .c(mg_2$0$c),
+        .y(mg_2$0$y)
+    );
+    top$mg_0$0 mg_2$1(
+        .clock(mg_2$1$clock),
+        .a0(mg_2$1$a0),
+        .a1(mg_2$1$a1),
+        .a2(mg_2$1$a2),
+        .b0(mg_2$1$b0),
+        .b1(mg_2$1$b1),
+        .b2(mg_2$1$b2),
+        .c(mg_2$1$c),
+        .y(mg_2$1$y)
+    );
+    top$mg_0$0 mg_2$2(
+        .clock(mg_2$2$clock),
+        .a0(mg_2$2$a0),
+        .a1(mg_2$2$a1),
+        .a2(mg_2$2$a2),
+        .b0(mg_2$2$b0),
+        .b1(mg_2$2$b1),
+        .b2(mg_2$2$b2),
+        .c(mg_2$2$c),
+        .y(mg_2$2$y)
+    );
+    top$mg_0$3 mg_2$3(
+        .clock(mg_2$3$clock),
+        .a0(mg_2$3$a0),
+        .a1(mg_2$3$a1),
+        .a2(mg_2$3$a2),
+        .b0(mg_2$3$b0),
+        .b1(mg_2$3$b1),
+        .b2(mg_2$3$b2),
+        .c(mg_2$3$c),
+        .y(mg_2$3$y)
+    );
+    top$c3_0 c3_0(
+        .clock(c3_0$clock),
+        .d(c3_0$d),
+        .q(c3_0$q)
+    );
+    top$c3_0 c3_1(
+        .clock(c3_1$clock),
+        .d(c3_1$d),
+        .q(c3_1$q)
+    );
+    top$c3_0 c3_2(
+        .clock(c3_2$clock),
+        .d(c3_2$d),
+        .q(c3_2$q)
+    );
+    top$af am(
+        .clock(am$clock),
+        .a(am$a),
+        .b(am$b),
+        .valid_in(am$valid_in),
+        .y(am$y),
+        .valid_out(am$valid_out)
+    );
+    top$af af(
+        .clock(af$clock),
+        .a(af$a),
+        .b(af$b),
+        .valid_in(af$valid_in),
+        .y(af$y),
+        .valid_out(af$valid_out)
+    );
+    top$aerr aerr(
+        .clock(aerr$clock),
+        .a(aerr$a),
+        .b(aerr$b),
+        .sub(aerr$sub),
+        .valid_in(aerr$valid_in),
+        .y(aerr$y),
+        .valid_out(aerr$valid_out)
+    );
+    top$aerr_wait aerr_wait(
+        .clock(aerr_wait$clock),
+        .d(aerr_wait$d),
+        .q(aerr_wait$q)
+    );
+    top$aerr la$0(
+        .clock(la$0$clock),
+        .a(la$0$a),
+        .b(la$0$b),
+        .sub(la$0$sub),
+        .valid_in(la$0$valid_in),
+        .y(la$0$y),
+        .valid_out(la$0$valid_out)
+    );
+    top$aerr la$1(
+        .clock(la$1$clock),
+        .a(la$1$a),
+        .b(la$1$b),
+        .sub(la$1$sub),
+        .valid_in(la$1$valid_in),
+        .y(la$1$y),
+        .valid_out(la$1$valid_out)
+    );
+    top$aerr la$2(
+        .clock(la$2$clock),
+        .a(la$2$a),
+        .b(la$2$b),
+        .sub(la$2$sub),
+        .valid_in(la$2$valid_in),
+        .y(la$2$y),
+        .valid_out(la$2$valid_out)
+    );
+    top$aerr lb$0(
+        .clock(lb$0$clock),
+        .a(lb$0$a),
+        .b(lb$0$b),
+        .sub(lb$0$sub),
+        .valid_in(lb$0$valid_in),
+        .y(lb$0$y),
+        .valid_out(lb$0$valid_out)
+    );
+    top$aerr lb$1(
+        .clock(lb$1$clock),
+        .a(lb$1$a),
+        .b(lb$1$b),
+        .sub(lb$1$sub),
+        .valid_in(lb$1$valid_in),
+        .y(lb$1$y),
+        .valid_out(lb$1$valid_out)
+    );
+    top$aerr lb$2(
+        .clock(lb$2$clock),
+        .a(lb$2$a),
+        .b(lb$2$b),
+        .sub(lb$2$sub),
+        .valid_in(lb$2$valid_in),
+        .y(lb$2$y),
+        .valid_out(lb$2$valid_out)
+    );
+    top$aerr l1$0(
+        .clock(l1$0$clock),
+        .a(l1$0$a),
+        .b(l1$0$b),
+        .sub(l1$0$sub),
+        .valid_in(l1$0$valid_in),
+        .y(l1$0$y),
+        .valid_out(l1$0$valid_out)
+    );
+    top$aerr l1$1(
+        .clock(l1$1$clock),
+        .a(l1$1$a),
+        .b(l1$1$b),
+        .sub(l1$1$sub),
+        .valid_in(l1$1$valid_in),
+        .y(l1$1$y),
+        .valid_out(l1$1$valid_out)
+    );
+    top$aerr l1$2(
+        .clock(l1$2$clock),
+        .a(l1$2$a),
+        .b(l1$2$b),
+        .sub(l1$2$sub),
+        .valid_in(l1$2$valid_in),
+        .y(l1$2$y),
+        .valid_out(l1$2$valid_out)
+    );
+    top$l1_wait$0 l1_wait$0(
+        .clock(l1_wait$0$clock),
+        .d(l1_wait$0$d),
+        .q(l1_wait$0$q)
+    );
+    top$l1_wait$0 l1_wait$1(
+        .clock(l1_wait$1$clock),
+        .d(l1_wait$1$d),
+        .q(l1_wait$1$q)
+    );
+    top$l1_wait$0 l1_wait$2(
+        .clock(l1_wait$2$clock),
+        .d(l1_wait$2$d),
+        .q(l1_wait$2$q)
+    );
+    top$af err$0(
+        .clock(err$0$clock),
+        .a(err$0$a),
+        .b(err$0$b),
+        .valid_in(err$0$valid_in),
+        .y(err$0$y),
+        .valid_out(err$0$valid_out)
+    );
+    top$af err$1(
+        .clock(err$1$clock),
+        .a(err$1$a),
+        .b(err$1$b),
+        .valid_in(err$1$valid_in),
+        .y(err$1$y),
+        .valid_out(err$1$valid_out)
+    );
+    top$af err$2(
+        .clock(err$2$clock),
+        .a(err$2$a),
+        .b(err$2$b),
+        .valid_in(err$2$valid_in),
+        .y(err$2$y),
+        .valid_out(err$2$valid_out)
+    );
+    top$aerr$s3_y mbr_0$0(
+        .d(mbr_0$0$d),
+        .q(mbr_0$0$q),
+        .clock(mbr_0$0$clock)
+    );
+    top$aerr$s3_y mbr_0$1(
+        .d(mbr_0$1$d),
+        .q(mbr_0$1$q),
+        .clock(mbr_0$1$clock)
+    );
+    top$aerr$s3_y mbr_0$2(
+        .d(mbr_0$2$d),
+        .q(mbr_0$2$q),
+        .clock(mbr_0$2$clock)
+    );
+    top$aerr$s3_y mbr_0$3(
+        .d(mbr_0$3$d),
+        .q(mbr_0$3$q),
+        .clock(mbr_0$3$clock)
+    );
+    top$aerr$s3_y mbr_1$0(
+        .d(mbr_1$0$d),
+        .q(mbr_1$0$q),
+        .clock(mbr_1$0$clock)
+    );
+    top$aerr$s3_y mbr_1$1(
+        .d(mbr_1$1$d),
+        .q(mbr_1$1$q),
+        .clock(mbr_1$1$clock)
+    );
+    top$aerr$s3_y mbr_1$2(
+        .d(mbr_1$2$d),
+        .q(mbr_1$2$q),
+        .clock(mbr_1$2$clock)
+    );
+    top$aerr$s3_y mbr_1$3(
+        .d(mbr_1$3$d),
+        .q(mbr_1$3$q),
+        .clock(mbr_1$3$clock)
+    );
+    top$aerr$s3_y mbr_2$0(
+        .d(mbr_2$0$d),
+        .q(mbr_2$0$q),
+        .clock(mbr_2$0$clock)
+    );
+    top$aerr$s3_y mbr_2$1(
+        .d(mbr_2$1$d),
+        .q(mbr_2$1$q),
+        .clock(mbr_2$1$clock)
+    );
+    top$aerr$s3_y mbr_2$2(
+        .d(mbr_2$2$d),
+        .q(mbr_2$2$q),
+        .clock(mbr_2$2$clock)
+    );
+    top$aerr$s3_y mbr_2$3(
+        .d(mbr_2$3$d),
+        .q(mbr_2$3$q),
+        .clock(mbr_2$3$clock)
+    );
+    top$aerr$s3_y mgr_0$0(
+        .d(mgr_0$0$d),
+        .q(mgr_0$0$q),
+        .clock(mgr_0$0$clock)
+    );
+    top$aerr$s3_y mgr_0$1(
+        .d(mgr_0$1$d),
+        .q(mgr_0$1$q),
+        .clock(mgr_0$1$clock)
+    );
+    top$aerr$s3_y mgr_0$2(
+        .d(mgr_0$2$d),
+        .q(mgr_0$2$q),
+        .clock(mgr_0$2$clock)
+    );
+    top$aerr$s3_y mgr_0$3(
+        .d(mgr_0$3$d),
+        .q(mgr_0$3$q),
+        .clock(mgr_0$3$clock)
+    );
+    top$aerr$s3_y mgr_1$0(
+        .d(mgr_1$0$d),
+        .q(mgr_1$0$q),
+        .clock(mgr_1$0$clock)
+    );
+    top$aerr$s3_y mgr_1$1(
+        .d(mgr_1$1$d),
+        .q(mgr_1$1$q),
+        .clock(mgr_1$1$clock)
+    );
+    top$aerr$s3_y mgr_1$2(
+        .d(mgr_1$2$d),
+        .q(mgr_1$2$q),
+        .clock(mgr_1$2$clock)
+    );
+    top$aerr$s3_y mgr_1$3(
+        .d(mgr_1$3$d),
+        .q(mgr_1$3$q),
+        .clock(mgr_1$3$clock)
+    );
+    top$aerr$s3_y mgr_2$0(
+        .d(mgr_2$0$d),
+        .q(mgr_2$0$q),
+        .clock(mgr_2$0$clock)
+    );
+    top$aerr$s3_y mgr_2$1(
+        .d(mgr_2$1$d),
+        .q(mgr_2$1$q),
+        .clock(mgr_2$1$clock)
+    );
+    top$aerr$s3_y mgr_2$2(
+        .d(mgr_2$2$d),
+        .q(mgr_2$2$q),
+        .clock(mgr_2$2$clock)
+    );
+    top$aerr$s3_y mgr_2$3(
+        .d(mgr_2$3$d),
+        .q(mgr_2$3$q),
+        .clock(mgr_2$3$clock)
+    );
+    top$aerr_wait mg3_0(
+        .clock(mg3_0$clock),
+        .d(mg3_0$d),
+        .q(mg3_0$q)
+    );
+    top$aerr_wait mg3_1(
+        .clock(mg3_1$clock),
+        .d(mg3_1$d),
+        .q(mg3_1$q)
+    );
+    top$aerr_wait mg3_2(
+        .clock(mg3_2$clock),
+        .d(mg3_2$d),
+        .q(mg3_2$q)
+    );
+    top$aerr m3_0$0(
+        .clock(m3_0$0$clock),
+        .a(m3_0$0$a),
+        .b(m3_0$0$b),
+        .sub(m3_0$0$sub),
+        .valid_in(m3_0$0$valid_in),
+        .y(m3_0$0$y),
+        .valid_out(m3_0$0$valid_out)
+    );
+    top$aerr m3_0$1(
+        .clock(m3_0$1$clock),
+        .a(m3_0$1$a),
+        .b(m3_0$1$b),
+        .sub(m3_0$1$sub),
+        .valid_in(m3_0$1$valid_in),
+        .y(m3_0$1$y),
+        .valid_out(m3_0$1$valid_out)
+    );
+    top$aerr m3_0$2(
+        .clock(m3_0$2$clock),
+        .a(m3_0$2$a),
+        .b(m3_0$2$b),
+        .sub(m3_0$2$sub),
+        .valid_in(m3_0$2$valid_in),
+        .y(m3_0$2$y),
+        .valid_out(m3_0$2$valid_out)
+    );
+    top$aerr m3_1$0(
+        .clock(m3_1$0$clock),
+        .a(m3_1$0$a),
+        .b(m3_1$0$b),
+        .sub(m3_1$0$sub),
+        .valid_in(m3_1$0$valid_in),
+        .y(m3_1$0$y),
+        .valid_out(m3_1$0$valid_out)
+    );
+    top$aerr m3_1$1(
+        .clock(m3_1$1$clock),
+        .a(m3_1$1$a),
+        .b(m3_1$1$b),
+        .sub(m3_1$1$sub),
+        .valid_in(m3_1$1$valid_in),
+        .y(m3_1$1$y),
+        .valid_out(m3_1$1$valid_out)
+    );
+    top$aerr m3_1$2(
+        .clock(m3_1$2$clock),
+        .a(m3_1$2$a),
+        .b(m3_1$2$b),
+        .sub(m3_1$2$sub),
+        .valid_in(m3_1$2$valid_in),
+        .y(m3_1$2$y),
+        .valid_out(m3_1$2$valid_out)
+    );
+    top$aerr m3_2$0(
+        .clock(m3_2$0$clock),
+        .a(m3_2$0$a),
+        .b(m3_2$0$b),
+        .sub(m3_2$0$sub),
+        .valid_in(m3_2$0$valid_in),
+        .y(m3_2$0$y),
+        .valid_out(m3_2$0$valid_out)
+    );
+    top$aerr m3_2$1(
+        .clock(m3_2$1$clock),
+        .a(m3_2$1$a),
+        .b(m3_2$1$b),
+        .sub(m3_2$1$sub),
+        .valid_in(m3_2$1$valid_in),
+        .y(m3_2$1$y),
+        .valid_out(m3_2$1$valid_out)
+    );
+    top$aerr m3_2$2(
+        .clock(m3_2$2$clock),
+        .a(m3_2$2$a),
+        .b(m3_2$2$b),
+        .sub(m3_2$2$sub),
+        .valid_in(m3_2$2$valid_in),
+        .y(m3_2$2$y),
+        .valid_out(m3_2$2$valid_out)
+    );
+    top$c3_0 vc_0(
+        .clock(vc_0$clock),
+        .d(vc_0$d),
+        .q(vc_0$q)
+    );
+    top$c3_0 vc_1(
+        .clock(vc_1$clock),
+        .d(vc_1$d),
+        .q(vc_1$q)
+    );
+    top$c3_0 vc_2(
+        .clock(vc_2$clock),
+        .d(vc_2$d),
+        .q(vc_2$q)
     );
     top$v_x_wait$0 v_x_wait$0(
         .clock(v_x_wait$0$clock),
@@ -1420,395 +2036,410 @@ module top(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,m_2
         .d(v_z_wait$2$d),
         .q(v_z_wait$2$q)
     );
-    top$v_ex_wait$0 v_ex_wait$0(
-        .clock(v_ex_wait$0$clock),
-        .d(v_ex_wait$0$d),
-        .q(v_ex_wait$0$q)
-    );
-    top$v_ex_wait$0 v_ex_wait$1(
-        .clock(v_ex_wait$1$clock),
-        .d(v_ex_wait$1$d),
-        .q(v_ex_wait$1$q)
-    );
-    top$v_ex_wait$0 v_ex_wait$2(
-        .clock(v_ex_wait$2$clock),
-        .d(v_ex_wait$2$d),
-        .q(v_ex_wait$2$q)
-    );
-    top$v_ex_wait$0 v_ey_wait$0(
-        .clock(v_ey_wait$0$clock),
-        .d(v_ey_wait$0$d),
-        .q(v_ey_wait$0$q)
-    );
-    top$v_ex_wait$0 v_ey_wait$1(
-        .clock(v_ey_wait$1$clock),
-        .d(v_ey_wait$1$d),
-        .q(v_ey_wait$1$q)
-    );
-    top$v_ex_wait$0 v_ey_wait$2(
-        .clock(v_ey_wait$2$clock),
-        .d(v_ey_wait$2$d),
-        .q(v_ey_wait$2$q)
-    );
-    top$v_ex_wait$0 v_ez_wait$0(
-        .clock(v_ez_wait$0$clock),
-        .d(v_ez_wait$0$d),
-        .q(v_ez_wait$0$q)
-    );
-    top$v_ex_wait$0 v_ez_wait$1(
-        .clock(v_ez_wait$1$clock),
-        .d(v_ez_wait$1$d),
-        .q(v_ez_wait$1$q)
-    );
-    top$v_ex_wait$0 v_ez_wait$2(
-        .clock(v_ez_wait$2$clock),
-        .d(v_ez_wait$2$d),
-        .q(v_ez_wait$2$q)
-    );
-    top$v_exact_wait v_exact_wait(
-        .clock(v_exact_wait$clock),
-        .d(v_exact_wait$d),
-        .q(v_exact_wait$q)
-    );
     top$mb_0$3 vt_0$0(
         .clock(vt_0$0$clock),
-        .a0_x(vt_0$0$a0_x),
-        .a0_e(vt_0$0$a0_e),
-        .a1_x(vt_0$0$a1_x),
-        .a1_e(vt_0$0$a1_e),
-        .a2_x(vt_0$0$a2_x),
-        .a2_e(vt_0$0$a2_e),
-        .b0_x(vt_0$0$b0_x),
-        .b0_e(vt_0$0$b0_e),
-        .b1_x(vt_0$0$b1_x),
-        .b1_e(vt_0$0$b1_e),
-        .b2_x(vt_0$0$b2_x),
-        .b2_e(vt_0$0$b2_e),
-        .c_x(vt_0$0$c_x),
-        .c_e(vt_0$0$c_e),
-        .y_x(vt_0$0$y_x),
-        .y_e(vt_0$0$y_e)
+        .a0(vt_0$0$a0),
+        .a1(vt_0$0$a1),
+        .a2(vt_0$0$a2),
+        .b0(vt_0$0$b0),
+        .b1(vt_0$0$b1),
+        .b2(vt_0$0$b2),
+        .c(vt_0$0$c),
+        .y(vt_0$0$y)
     );
     top$mb_0$3 vt_0$1(
         .clock(vt_0$1$clock),
-        .a0_x(vt_0$1$a0_x),
-        .a0_e(vt_0$1$a0_e),
-        .a1_x(vt_0$1$a1_x),
-        .a1_e(vt_0$1$a1_e),
-        .a2_x(vt_0$1$a2_x),
-        .a2_e(vt_0$1$a2_e),
-        .b0_x(vt_0$1$b0_x),
-        .b0_e(vt_0$1$b0_e),
-        .b1_x(vt_0$1$b1_x),
-        .b1_e(vt_0$1$b1_e),
-        .b2_x(vt_0$1$b2_x),
-        .b2_e(vt_0$1$b2_e),
-        .c_x(vt_0$1$c_x),
-        .c_e(vt_0$1$c_e),
-        .y_x(vt_0$1$y_x),
-        .y_e(vt_0$1$y_e)
+        .a0(vt_0$1$a0),
+        .a1(vt_0$1$a1),
+        .a2(vt_0$1$a2),
+        .b0(vt_0$1$b0),
+        .b1(vt_0$1$b1),
+        .b2(vt_0$1$b2),
+        .c(vt_0$1$c),
+        .y(vt_0$1$y)
     );
     top$mb_0$3 vt_0$2(
         .clock(vt_0$2$clock),
-        .a0_x(vt_0$2$a0_x),
-        .a0_e(vt_0$2$a0_e),
-        .a1_x(vt_0$2$a1_x),
-        .a1_e(vt_0$2$a1_e),
-        .a2_x(vt_0$2$a2_x),
-        .a2_e(vt_0$2$a2_e),
-        .b0_x(vt_0$2$b0_x),
-        .b0_e(vt_0$2$b0_e),
-        .b1_x(vt_0$2$b1_x),
-        .b1_e(vt_0$2$b1_e),
-        .b2_x(vt_0$2$b2_x),
-        .b2_e(vt_0$2$b2_e),
-        .c_x(vt_0$2$c_x),
-        .c_e(vt_0$2$c_e),
-        .y_x(vt_0$2$y_x),
-        .y_e(vt_0$2$y_e)
+        .a0(vt_0$2$a0),
+        .a1(vt_0$2$a1),
+        .a2(vt_0$2$a2),
+        .b0(vt_0$2$b0),
+        .b1(vt_0$2$b1),
+        .b2(vt_0$2$b2),
+        .c(vt_0$2$c),
+        .y(vt_0$2$y)
     );
     top$mb_0$3 vt_1$0(
         .clock(vt_1$0$clock),
-        .a0_x(vt_1$0$a0_x),
-        .a0_e(vt_1$0$a0_e),
-        .a1_x(vt_1$0$a1_x),
-        .a1_e(vt_1$0$a1_e),
-        .a2_x(vt_1$0$a2_x),
-        .a2_e(vt_1$0$a2_e),
-        .b0_x(vt_1$0$b0_x),
-        .b0_e(vt_1$0$b0_e),
-        .b1_x(vt_1$0$b1_x),
-        .b1_e(vt_1$0$b1_e),
-        .b2_x(vt_1$0$b2_x),
-        .b2_e(vt_1$0$b2_e),
-        .c_x(vt_1$0$c_x),
-        .c_e(vt_1$0$c_e),
-        .y_x(vt_1$0$y_x),
-        .y_e(vt_1$0$y_e)
+        .a0(vt_1$0$a0),
+        .a1(vt_1$0$a1),
+        .a2(vt_1$0$a2),
+        .b0(vt_1$0$b0),
+        .b1(vt_1$0$b1),
+        .b2(vt_1$0$b2),
+        .c(vt_1$0$c),
+        .y(vt_1$0$y)
     );
     top$mb_0$3 vt_1$1(
         .clock(vt_1$1$clock),
-        .a0_x(vt_1$1$a0_x),
-        .a0_e(vt_1$1$a0_e),
-        .a1_x(vt_1$1$a1_x),
-        .a1_e(vt_1$1$a1_e),
-        .a2_x(vt_1$1$a2_x),
-        .a2_e(vt_1$1$a2_e),
-        .b0_x(vt_1$1$b0_x),
-        .b0_e(vt_1$1$b0_e),
-        .b1_x(vt_1$1$b1_x),
-        .b1_e(vt_1$1$b1_e),
-        .b2_x(vt_1$1$b2_x),
-        .b2_e(vt_1$1$b2_e),
-        .c_x(vt_1$1$c_x),
-        .c_e(vt_1$1$c_e),
-        .y_x(vt_1$1$y_x),
-        .y_e(vt_1$1$y_e)
+        .a0(vt_1$1$a0),
+        .a1(vt_1$1$a1),
+        .a2(vt_1$1$a2),
+        .b0(vt_1$1$b0),
+        .b1(vt_1$1$b1),
+        .b2(vt_1$1$b2),
+        .c(vt_1$1$c),
+        .y(vt_1$1$y)
     );
     top$mb_0$3 vt_1$2(
         .clock(vt_1$2$clock),
-        .a0_x(vt_1$2$a0_x),
-        .a0_e(vt_1$2$a0_e),
-        .a1_x(vt_1$2$a1_x),
-        .a1_e(vt_1$2$a1_e),
-        .a2_x(vt_1$2$a2_x),
-        .a2_e(vt_1$2$a2_e),
-        .b0_x(vt_1$2$b0_x),
-        .b0_e(vt_1$2$b0_e),
-        .b1_x(vt_1$2$b1_x),
-        .b1_e(vt_1$2$b1_e),
-        .b2_x(vt_1$2$b2_x),
-        .b2_e(vt_1$2$b2_e),
-        .c_x(vt_1$2$c_x),
-        .c_e(vt_1$2$c_e),
-        .y_x(vt_1$2$y_x),
-        .y_e(vt_1$2$y_e)
+        .a0(vt_1$2$a0),
+        .a1(vt_1$2$a1),
+        .a2(vt_1$2$a2),
+        .b0(vt_1$2$b0),
+        .b1(vt_1$2$b1),
+        .b2(vt_1$2$b2),
+        .c(vt_1$2$c),
+        .y(vt_1$2$y)
     );
     top$mb_0$3 vt_2$0(
         .clock(vt_2$0$clock),
-        .a0_x(vt_2$0$a0_x),
-        .a0_e(vt_2$0$a0_e),
-        .a1_x(vt_2$0$a1_x),
-        .a1_e(vt_2$0$a1_e),
-        .a2_x(vt_2$0$a2_x),
-        .a2_e(vt_2$0$a2_e),
-        .b0_x(vt_2$0$b0_x),
-        .b0_e(vt_2$0$b0_e),
-        .b1_x(vt_2$0$b1_x),
-        .b1_e(vt_2$0$b1_e),
-        .b2_x(vt_2$0$b2_x),
-        .b2_e(vt_2$0$b2_e),
-        .c_x(vt_2$0$c_x),
-        .c_e(vt_2$0$c_e),
-        .y_x(vt_2$0$y_x),
-        .y_e(vt_2$0$y_e)
+        .a0(vt_2$0$a0),
+        .a1(vt_2$0$a1),
+        .a2(vt_2$0$a2),
+        .b0(vt_2$0$b0),
+        .b1(vt_2$0$b1),
+        .b2(vt_2$0$b2),
+        .c(vt_2$0$c),
+        .y(vt_2$0$y)
     );
     top$mb_0$3 vt_2$1(
         .clock(vt_2$1$clock),
-        .a0_x(vt_2$1$a0_x),
-        .a0_e(vt_2$1$a0_e),
-        .a1_x(vt_2$1$a1_x),
-        .a1_e(vt_2$1$a1_e),
-        .a2_x(vt_2$1$a2_x),
-        .a2_e(vt_2$1$a2_e),
-        .b0_x(vt_2$1$b0_x),
-        .b0_e(vt_2$1$b0_e),
-        .b1_x(vt_2$1$b1_x),
-        .b1_e(vt_2$1$b1_e),
-        .b2_x(vt_2$1$b2_x),
-        .b2_e(vt_2$1$b2_e),
-        .c_x(vt_2$1$c_x),
-        .c_e(vt_2$1$c_e),
-        .y_x(vt_2$1$y_x),
-        .y_e(vt_2$1$y_e)
+        .a0(vt_2$1$a0),
+        .a1(vt_2$1$a1),
+        .a2(vt_2$1$a2),
+        .b0(vt_2$1$b0),
+        .b1(vt_2$1$b1),
+        .b2(vt_2$1$b2),
+        .c(vt_2$1$c),
+        .y(vt_2$1$y)
     );
     top$mb_0$3 vt_2$2(
         .clock(vt_2$2$clock),
-        .a0_x(vt_2$2$a0_x),
-        .a0_e(vt_2$2$a0_e),
-        .a1_x(vt_2$2$a1_x),
-        .a1_e(vt_2$2$a1_e),
-        .a2_x(vt_2$2$a2_x),
-        .a2_e(vt_2$2$a2_e),
-        .b0_x(vt_2$2$b0_x),
-        .b0_e(vt_2$2$b0_e),
-        .b1_x(vt_2$2$b1_x),
-        .b1_e(vt_2$2$b1_e),
-        .b2_x(vt_2$2$b2_x),
-        .b2_e(vt_2$2$b2_e),
-        .c_x(vt_2$2$c_x),
-        .c_e(vt_2$2$c_e),
-        .y_x(vt_2$2$y_x),
-        .y_e(vt_2$2$y_e)
+        .a0(vt_2$2$a0),
+        .a1(vt_2$2$a1),
+        .a2(vt_2$2$a2),
+        .b0(vt_2$2$b0),
+        .b1(vt_2$2$b1),
+        .b2(vt_2$2$b2),
+        .c(vt_2$2$c),
+        .y(vt_2$2$y)
     );
-    top$edges$0$a$s_ab lambda(
-        .clock(lambda$clock),
-        .a(lambda$a),
-        .b(lambda$b),
-        .valid_in(lambda$valid_in),
-        .y(lambda$y),
-        .valid_out(lambda$valid_out)
+    top$mg_0$3 vm_0$0(
+        .clock(vm_0$0$clock),
+        .a0(vm_0$0$a0),
+        .a1(vm_0$0$a1),
+        .a2(vm_0$0$a2),
+        .b0(vm_0$0$b0),
+        .b1(vm_0$0$b1),
+        .b2(vm_0$0$b2),
+        .c(vm_0$0$c),
+        .y(vm_0$0$y)
     );
-    top$edges$0$px_qz$ae_be two_lambda(
-        .clock(two_lambda$clock),
-        .a(two_lambda$a),
-        .b(two_lambda$b),
-        .valid_in(two_lambda$valid_in),
-        .y(two_lambda$y),
-        .valid_out(two_lambda$valid_out)
+    top$mg_0$3 vm_0$1(
+        .clock(vm_0$1$clock),
+        .a0(vm_0$1$a0),
+        .a1(vm_0$1$a1),
+        .a2(vm_0$1$a2),
+        .b0(vm_0$1$b0),
+        .b1(vm_0$1$b1),
+        .b2(vm_0$1$b2),
+        .c(vm_0$1$c),
+        .y(vm_0$1$y)
     );
-    top$edges$0$px_qz$ae_be four_lambda(
-        .clock(four_lambda$clock),
-        .a(four_lambda$a),
-        .b(four_lambda$b),
-        .valid_in(four_lambda$valid_in),
-        .y(four_lambda$y),
-        .valid_out(four_lambda$valid_out)
+    top$mg_0$3 vm_0$2(
+        .clock(vm_0$2$clock),
+        .a0(vm_0$2$a0),
+        .a1(vm_0$2$a1),
+        .a2(vm_0$2$a2),
+        .b0(vm_0$2$b0),
+        .b1(vm_0$2$b1),
+        .b2(vm_0$2$b2),
+        .c(vm_0$2$c),
+        .y(vm_0$2$y)
     );
-    top$edges$0$px_qz$ae_be reach(
-        .clock(reach$clock),
-        .a(reach$a),
-        .b(reach$b),
-        .valid_in(reach$valid_in),
-        .y(reach$y),
-        .valid_out(reach$valid_out)
+    top$mg_0$3 vm_1$0(
+        .clock(vm_1$0$clock),
+        .a0(vm_1$0$a0),
+        .a1(vm_1$0$a1),
+        .a2(vm_1$0$a2),
+        .b0(vm_1$0$b0),
+        .b1(vm_1$0$b1),
+        .b2(vm_1$0$b2),
+        .c(vm_1$0$c),
+        .y(vm_1$0$y)
     );
-    top$edges$0$px_qz$x_wait eta_early(
-        .clock(eta_early$clock),
-        .d(eta_early$d),
-        .q(eta_early$q)
+    top$mg_0$3 vm_1$1(
+        .clock(vm_1$1$clock),
+        .a0(vm_1$1$a0),
+        .a1(vm_1$1$a1),
+        .a2(vm_1$1$a2),
+        .b0(vm_1$1$b0),
+        .b1(vm_1$1$b1),
+        .b2(vm_1$1$b2),
+        .c(vm_1$1$c),
+        .y(vm_1$1$y)
     );
-    top$eta_wait eta_wait(
-        .clock(eta_wait$clock),
-        .d(eta_wait$d),
-        .q(eta_wait$q)
+    top$mg_0$3 vm_1$2(
+        .clock(vm_1$2$clock),
+        .a0(vm_1$2$a0),
+        .a1(vm_1$2$a1),
+        .a2(vm_1$2$a2),
+        .b0(vm_1$2$b0),
+        .b1(vm_1$2$b1),
+        .b2(vm_1$2$b2),
+        .c(vm_1$2$c),
+        .y(vm_1$2$y)
     );
-    top$two_lambda_wait two_lambda_wait(
-        .clock(two_lambda_wait$clock),
-        .d(two_lambda_wait$d),
-        .q(two_lambda_wait$q)
+    top$mg_0$3 vm_2$0(
+        .clock(vm_2$0$clock),
+        .a0(vm_2$0$a0),
+        .a1(vm_2$0$a1),
+        .a2(vm_2$0$a2),
+        .b0(vm_2$0$b0),
+        .b1(vm_2$0$b1),
+        .b2(vm_2$0$b2),
+        .c(vm_2$0$c),
+        .y(vm_2$0$y)
     );
-    top$ok_wait ok_wait(
-        .clock(ok_wait$clock),
-        .d(ok_wait$d),
-        .q(ok_wait$q)
+    top$mg_0$3 vm_2$1(
+        .clock(vm_2$1$clock),
+        .a0(vm_2$1$a0),
+        .a1(vm_2$1$a1),
+        .a2(vm_2$1$a2),
+        .b0(vm_2$1$b0),
+        .b1(vm_2$1$b1),
+        .b2(vm_2$1$b2),
+        .c(vm_2$1$c),
+        .y(vm_2$1$y)
     );
-    top$gap_en_wait gap_en_wait(
-        .clock(gap_en_wait$clock),
-        .d(gap_en_wait$d),
-        .q(gap_en_wait$q)
+    top$mg_0$3 vm_2$2(
+        .clock(vm_2$2$clock),
+        .a0(vm_2$2$a0),
+        .a1(vm_2$2$a1),
+        .a2(vm_2$2$a2),
+        .b0(vm_2$2$b0),
+        .b1(vm_2$2$b1),
+        .b2(vm_2$2$b2),
+        .c(vm_2$2$c),
+        .y(vm_2$2$y)
     );
-    top$gap$0 gap$0(
-        .clock(gap$0$clock),
-        .x0(gap$0$x0),
-        .e0(gap$0$e0),
-        .x1(gap$0$x1),
-        .e1(gap$0$e1),
-        .x2(gap$0$x2),
-        .e2(gap$0$e2),
-        .two_lambda(gap$0$two_lambda),
-        .eta(gap$0$eta),
-        .ok(gap$0$ok),
-        .en(gap$0$en),
-        .y0_x(gap$0$y0_x),
-        .y0_e(gap$0$y0_e),
-        .y1_x(gap$0$y1_x),
-        .y1_e(gap$0$y1_e),
-        .y2_x(gap$0$y2_x),
-        .y2_e(gap$0$y2_e)
+    top$aerr$s3_y vtr_0$0(
+        .d(vtr_0$0$d),
+        .q(vtr_0$0$q),
+        .clock(vtr_0$0$clock)
     );
-    top$gap$0 gap$1(
-        .clock(gap$1$clock),
-        .x0(gap$1$x0),
-        .e0(gap$1$e0),
-        .x1(gap$1$x1),
-        .e1(gap$1$e1),
-        .x2(gap$1$x2),
-        .e2(gap$1$e2),
-        .two_lambda(gap$1$two_lambda),
-        .eta(gap$1$eta),
-        .ok(gap$1$ok),
-        .en(gap$1$en),
-        .y0_x(gap$1$y0_x),
-        .y0_e(gap$1$y0_e),
-        .y1_x(gap$1$y1_x),
-        .y1_e(gap$1$y1_e),
-        .y2_x(gap$1$y2_x),
-        .y2_e(gap$1$y2_e)
+    top$aerr$s3_y vtr_0$1(
+        .d(vtr_0$1$d),
+        .q(vtr_0$1$q),
+        .clock(vtr_0$1$clock)
     );
-    top$gap$0 gap$2(
-        .clock(gap$2$clock),
-        .x0(gap$2$x0),
-        .e0(gap$2$e0),
-        .x1(gap$2$x1),
-        .e1(gap$2$e1),
-        .x2(gap$2$x2),
-        .e2(gap$2$e2),
-        .two_lambda(gap$2$two_lambda),
-        .eta(gap$2$eta),
-        .ok(gap$2$ok),
-        .en(gap$2$en),
-        .y0_x(gap$2$y0_x),
-        .y0_e(gap$2$y0_e),
-        .y1_x(gap$2$y1_x),
-        .y1_e(gap$2$y1_e),
-        .y2_x(gap$2$y2_x),
-        .y2_e(gap$2$y2_e)
+    top$aerr$s3_y vtr_0$2(
+        .d(vtr_0$2$d),
+        .q(vtr_0$2$q),
+        .clock(vtr_0$2$clock)
+    );
+    top$aerr$s3_y vtr_1$0(
+        .d(vtr_1$0$d),
+        .q(vtr_1$0$q),
+        .clock(vtr_1$0$clock)
+    );
+    top$aerr$s3_y vtr_1$1(
+        .d(vtr_1$1$d),
+        .q(vtr_1$1$q),
+        .clock(vtr_1$1$clock)
+    );
+    top$aerr$s3_y vtr_1$2(
+        .d(vtr_1$2$d),
+        .q(vtr_1$2$q),
+        .clock(vtr_1$2$clock)
+    );
+    top$aerr$s3_y vtr_2$0(
+        .d(vtr_2$0$d),
+        .q(vtr_2$0$q),
+        .clock(vtr_2$0$clock)
+    );
+    top$aerr$s3_y vtr_2$1(
+        .d(vtr_2$1$d),
+        .q(vtr_2$1$q),
+        .clock(vtr_2$1$clock)
+    );
+    top$aerr$s3_y vtr_2$2(
+        .d(vtr_2$2$d),
+        .q(vtr_2$2$q),
+        .clock(vtr_2$2$clock)
+    );
+    top$aerr$s3_y vmr_0$0(
+        .d(vmr_0$0$d),
+        .q(vmr_0$0$q),
+        .clock(vmr_0$0$clock)
+    );
+    top$aerr$s3_y vmr_0$1(
+        .d(vmr_0$1$d),
+        .q(vmr_0$1$q),
+        .clock(vmr_0$1$clock)
+    );
+    top$aerr$s3_y vmr_0$2(
+        .d(vmr_0$2$d),
+        .q(vmr_0$2$q),
+        .clock(vmr_0$2$clock)
+    );
+    top$aerr$s3_y vmr_1$0(
+        .d(vmr_1$0$d),
+        .q(vmr_1$0$q),
+        .clock(vmr_1$0$clock)
+    );
+    top$aerr$s3_y vmr_1$1(
+        .d(vmr_1$1$d),
+        .q(vmr_1$1$q),
+        .clock(vmr_1$1$clock)
+    );
+    top$aerr$s3_y vmr_1$2(
+        .d(vmr_1$2$d),
+        .q(vmr_1$2$q),
+        .clock(vmr_1$2$clock)
+    );
+    top$aerr$s3_y vmr_2$0(
+        .d(vmr_2$0$d),
+        .q(vmr_2$0$q),
+        .clock(vmr_2$0$clock)
+    );
+    top$aerr$s3_y vmr_2$1(
+        .d(vmr_2$1$d),
+        .q(vmr_2$1$q),
+        .clock(vmr_2$1$clock)
+    );
+    top$aerr$s3_y vmr_2$2(
+        .d(vmr_2$2$d),
+        .q(vmr_2$2$q),
+        .clock(vmr_2$2$clock)
+    );
+    top$exact_wait exact_wait(
+        .clock(exact_wait$clock),
+        .d(exact_wait$d),
+        .q(exact_wait$q)
+    );
+    top$verts$0 verts$0(
+        .clock(verts$0$clock),
+        .x0(verts$0$x0),
+        .x1(verts$0$x1),
+        .x2(verts$0$x2),
+        .m0(verts$0$m0),
+        .m1(verts$0$m1),
+        .m2(verts$0$m2),
+        .c_v(verts$0$c_v),
+        .e(verts$0$e),
+        .f0(verts$0$f0),
+        .f1(verts$0$f1),
+        .f2(verts$0$f2),
+        .h(verts$0$h)
+    );
+    top$verts$0 verts$1(
+        .clock(verts$1$clock),
+        .x0(verts$1$x0),
+        .x1(verts$1$x1),
+        .x2(verts$1$x2),
+        .m0(verts$1$m0),
+        .m1(verts$1$m1),
+        .m2(verts$1$m2),
+        .c_v(verts$1$c_v),
+        .e(verts$1$e),
+        .f0(verts$1$f0),
+        .f1(verts$1$f1),
+        .f2(verts$1$f2),
+        .h(verts$1$h)
+    );
+    top$verts$0 verts$2(
+        .clock(verts$2$clock),
+        .x0(verts$2$x0),
+        .x1(verts$2$x1),
+        .x2(verts$2$x2),
+        .m0(verts$2$m0),
+        .m1(verts$2$m1),
+        .m2(verts$2$m2),
+        .c_v(verts$2$c_v),
+        .e(verts$2$e),
+        .f0(verts$2$f0),
+        .f1(verts$2$f1),
+        .f2(verts$2$f2),
+        .h(verts$2$h)
     );
     top$edges$0 edges$0(
         .clock(edges$0$clock),
-        .p0_x(edges$0$p0_x),
-        .p0_e(edges$0$p0_e),
-        .p1_x(edges$0$p1_x),
-        .p1_e(edges$0$p1_e),
-        .p2_x(edges$0$p2_x),
-        .p2_e(edges$0$p2_e),
-        .q0_x(edges$0$q0_x),
-        .q0_e(edges$0$q0_e),
-        .q1_x(edges$0$q1_x),
-        .q1_e(edges$0$q1_e),
-        .q2_x(edges$0$q2_x),
-        .q2_e(edges$0$q2_e),
+        .p0(edges$0$p0),
+        .p1(edges$0$p1),
+        .p2(edges$0$p2),
+        .q0(edges$0$q0),
+        .q1(edges$0$q1),
+        .q2(edges$0$q2),
+        .pe(edges$0$pe),
+        .qe(edges$0$qe),
+        .pf0(edges$0$pf0),
+        .pf1(edges$0$pf1),
+        .pf2(edges$0$pf2),
+        .qf0(edges$0$qf0),
+        .qf1(edges$0$qf1),
+        .qf2(edges$0$qf2),
+        .ph(edges$0$ph),
+        .qh(edges$0$qh),
         .s_x(edges$0$s_x),
-        .s_e(edges$0$s_e),
+        .s_b(edges$0$s_b),
         .cross_t(edges$0$cross_t),
         .cross_f(edges$0$cross_f)
     );
     top$edges$0 edges$1(
         .clock(edges$1$clock),
-        .p0_x(edges$1$p0_x),
-        .p0_e(edges$1$p0_e),
-        .p1_x(edges$1$p1_x),
-        .p1_e(edges$1$p1_e),
-        .p2_x(edges$1$p2_x),
-        .p2_e(edges$1$p2_e),
-        .q0_x(edges$1$q0_x),
-        .q0_e(edges$1$q0_e),
-        .q1_x(edges$1$q1_x),
-        .q1_e(edges$1$q1_e),
-        .q2_x(edges$1$q2_x),
-        .q2_e(edges$1$q2_e),
+        .p0(edges$1$p0),
+        .p1(edges$1$p1),
+        .p2(edges$1$p2),
+        .q0(edges$1$q0),
+        .q1(edges$1$q1),
+        .q2(edges$1$q2),
+        .pe(edges$1$pe),
+        .qe(edges$1$qe),
+        .pf0(edges$1$pf0),
+        .pf1(edges$1$pf1),
+        .pf2(edges$1$pf2),
+        .qf0(edges$1$qf0),
+        .qf1(edges$1$qf1),
+        .qf2(edges$1$qf2),
+        .ph(edges$1$ph),
+        .qh(edges$1$qh),
         .s_x(edges$1$s_x),
-        .s_e(edges$1$s_e),
+        .s_b(edges$1$s_b),
         .cross_t(edges$1$cross_t),
         .cross_f(edges$1$cross_f)
     );
     top$edges$0 edges$2(
         .clock(edges$2$clock),
-        .p0_x(edges$2$p0_x),
-        .p0_e(edges$2$p0_e),
-        .p1_x(edges$2$p1_x),
-        .p1_e(edges$2$p1_e),
-        .p2_x(edges$2$p2_x),
-        .p2_e(edges$2$p2_e),
-        .q0_x(edges$2$q0_x),
-        .q0_e(edges$2$q0_e),
-        .q1_x(edges$2$q1_x),
-        .q1_e(edges$2$q1_e),
-        .q2_x(edges$2$q2_x),
-        .q2_e(edges$2$q2_e),
+        .p0(edges$2$p0),
+        .p1(edges$2$p1),
+        .p2(edges$2$p2),
+        .q0(edges$2$q0),
+        .q1(edges$2$q1),
+        .q2(edges$2$q2),
+        .pe(edges$2$pe),
+        .qe(edges$2$qe),
+        .pf0(edges$2$pf0),
+        .pf1(edges$2$pf1),
+        .pf2(edges$2$pf2),
+        .qf0(edges$2$qf0),
+        .qf1(edges$2$qf1),
+        .qf2(edges$2$qf2),
+        .ph(edges$2$ph),
+        .qh(edges$2$qh),
         .s_x(edges$2$s_x),
-        .s_e(edges$2$s_e),
+        .s_b(edges$2$s_b),
         .cross_t(edges$2$cross_t),
         .cross_f(edges$2$cross_f)
     );
@@ -1822,82 +2453,142 @@ module top(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,m_2
         .d(valid_wait$d),
         .q(valid_wait$q)
     );
-    top$edges$0$a$add$s3_y out_s_x$0(
+    top$aerr$s1_eff_sub v_cross_t$0(
+        .d(v_cross_t$0$d),
+        .q(v_cross_t$0$q),
+        .clock(v_cross_t$0$clock)
+    );
+    top$aerr$s1_eff_sub v_cross_t$1(
+        .d(v_cross_t$1$d),
+        .q(v_cross_t$1$q),
+        .clock(v_cross_t$1$clock)
+    );
+    top$aerr$s1_eff_sub v_cross_t$2(
+        .d(v_cross_t$2$d),
+        .q(v_cross_t$2$q),
+        .clock(v_cross_t$2$clock)
+    );
+    top$aerr$s1_eff_sub v_cross_f$0(
+        .d(v_cross_f$0$d),
+        .q(v_cross_f$0$q),
+        .clock(v_cross_f$0$clock)
+    );
+    top$aerr$s1_eff_sub v_cross_f$1(
+        .d(v_cross_f$1$d),
+        .q(v_cross_f$1$q),
+        .clock(v_cross_f$1$clock)
+    );
+    top$aerr$s1_eff_sub v_cross_f$2(
+        .d(v_cross_f$2$d),
+        .q(v_cross_f$2$q),
+        .clock(v_cross_f$2$clock)
+    );
+    top$aerr$s3_y v_s_x$0(
+        .d(v_s_x$0$d),
+        .q(v_s_x$0$q),
+        .clock(v_s_x$0$clock)
+    );
+    top$aerr$s3_y v_s_x$1(
+        .d(v_s_x$1$d),
+        .q(v_s_x$1$q),
+        .clock(v_s_x$1$clock)
+    );
+    top$aerr$s3_y v_s_x$2(
+        .d(v_s_x$2$d),
+        .q(v_s_x$2$q),
+        .clock(v_s_x$2$clock)
+    );
+    top$aerr$s3_y v_s_b$0(
+        .d(v_s_b$0$d),
+        .q(v_s_b$0$q),
+        .clock(v_s_b$0$clock)
+    );
+    top$aerr$s3_y v_s_b$1(
+        .d(v_s_b$1$d),
+        .q(v_s_b$1$q),
+        .clock(v_s_b$1$clock)
+    );
+    top$aerr$s3_y v_s_b$2(
+        .d(v_s_b$2$d),
+        .q(v_s_b$2$q),
+        .clock(v_s_b$2$clock)
+    );
+    top$aerr$s3_y out_s_x$0(
         .d(out_s_x$0$d),
         .q(out_s_x$0$q),
         .clock(out_s_x$0$clock)
     );
-    top$edges$0$a$add$s3_y out_s_x$1(
+    top$aerr$s3_y out_s_x$1(
         .d(out_s_x$1$d),
         .q(out_s_x$1$q),
         .clock(out_s_x$1$clock)
     );
-    top$edges$0$a$add$s3_y out_s_x$2(
+    top$aerr$s3_y out_s_x$2(
         .d(out_s_x$2$d),
         .q(out_s_x$2$q),
         .clock(out_s_x$2$clock)
     );
-    top$edges$0$a$add$s3_y out_s_e$0(
-        .d(out_s_e$0$d),
-        .q(out_s_e$0$q),
-        .clock(out_s_e$0$clock)
+    top$aerr$s3_y out_s_b$0(
+        .d(out_s_b$0$d),
+        .q(out_s_b$0$q),
+        .clock(out_s_b$0$clock)
     );
-    top$edges$0$a$add$s3_y out_s_e$1(
-        .d(out_s_e$1$d),
-        .q(out_s_e$1$q),
-        .clock(out_s_e$1$clock)
+    top$aerr$s3_y out_s_b$1(
+        .d(out_s_b$1$d),
+        .q(out_s_b$1$q),
+        .clock(out_s_b$1$clock)
     );
-    top$edges$0$a$add$s3_y out_s_e$2(
-        .d(out_s_e$2$d),
-        .q(out_s_e$2$q),
-        .clock(out_s_e$2$clock)
+    top$aerr$s3_y out_s_b$2(
+        .d(out_s_b$2$d),
+        .q(out_s_b$2$q),
+        .clock(out_s_b$2$clock)
     );
-    top$edges$0$a$add$s1_eff_sub out_cross_t$0(
+    top$aerr$s1_eff_sub out_cross_t$0(
         .d(out_cross_t$0$d),
         .q(out_cross_t$0$q),
         .clock(out_cross_t$0$clock)
     );
-    top$edges$0$a$add$s1_eff_sub out_cross_t$1(
+    top$aerr$s1_eff_sub out_cross_t$1(
         .d(out_cross_t$1$d),
         .q(out_cross_t$1$q),
         .clock(out_cross_t$1$clock)
     );
-    top$edges$0$a$add$s1_eff_sub out_cross_t$2(
+    top$aerr$s1_eff_sub out_cross_t$2(
         .d(out_cross_t$2$d),
         .q(out_cross_t$2$q),
         .clock(out_cross_t$2$clock)
     );
-    top$edges$0$a$add$s1_eff_sub out_cross_f$0(
+    top$aerr$s1_eff_sub out_cross_f$0(
         .d(out_cross_f$0$d),
         .q(out_cross_f$0$q),
         .clock(out_cross_f$0$clock)
     );
-    top$edges$0$a$add$s1_eff_sub out_cross_f$1(
+    top$aerr$s1_eff_sub out_cross_f$1(
         .d(out_cross_f$1$d),
         .q(out_cross_f$1$q),
         .clock(out_cross_f$1$clock)
     );
-    top$edges$0$a$add$s1_eff_sub out_cross_f$2(
+    top$aerr$s1_eff_sub out_cross_f$2(
         .d(out_cross_f$2$d),
         .q(out_cross_f$2$q),
         .clock(out_cross_f$2$clock)
     );
-    top$edges$0$a$add$s1_eff_sub out_hit(
+    top$aerr$s1_eff_sub out_hit(
         .d(out_hit$d),
         .q(out_hit$q),
         .clock(out_hit$clock)
     );
-    top$edges$0$a$add$s1_eff_sub out_miss(
+    top$aerr$s1_eff_sub out_miss(
         .d(out_miss$d),
         .q(out_miss$q),
         .clock(out_miss$clock)
     );
-    top$edges$0$a$add$s3_y out_tag(
+    top$aerr$s3_y out_tag(
         .d(out_tag$d),
         .q(out_tag$q),
         .clock(out_tag$clock)
     );
-    top$edges$0$a$add$s1_eff_sub out_valid(
+    top$aerr$s1_eff_sub out_valid(
         .d(out_valid$d),
         .q(out_valid$q),
         .clock(out_valid$clock)
@@ -1905,23 +2596,19 @@ module top(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,m_2
     
     // Update code
     always @(*) begin
-        in_e_lin$clock = clock;
-        in_e_tr$clock = clock;
-        in_l_norm$clock = clock;
-        in_f_lin$clock = clock;
-        in_f_tr$clock = clock;
-        in_eta$clock = clock;
-        in_gap_en$clock = clock;
+        in_alpha_m$clock = clock;
+        in_alpha_f$clock = clock;
+        in_beta_m$clock = clock;
+        in_beta_f$clock = clock;
+        in_scale$clock = clock;
         in_v_exact$clock = clock;
         in_tag$clock = clock;
         in_valid$clock = clock;
-        in_e_lin$d = in_e_lin$q;
-        in_e_tr$d = in_e_tr$q;
-        in_l_norm$d = in_l_norm$q;
-        in_f_lin$d = in_f_lin$q;
-        in_f_tr$d = in_f_tr$q;
-        in_eta$d = in_eta$q;
-        in_gap_en$d = in_gap_en$q;
+        in_alpha_m$d = in_alpha_m$q;
+        in_alpha_f$d = in_alpha_f$q;
+        in_beta_m$d = in_beta_m$q;
+        in_beta_f$d = in_beta_f$q;
+        in_scale$d = in_scale$q;
         in_v_exact$d = in_v_exact$q;
         in_tag$d = in_tag$q;
         in_valid$d = in_valid$q;
@@ -1933,16 +2620,20 @@ module top(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,m_2
         out_miss$d = out_miss$q;
         out_tag$d = out_tag$q;
         out_valid$d = out_valid$q;
-        v_exact_wait$clock = clock;
-        lambda$clock = clock;
-        two_lambda$clock = clock;
-        four_lambda$clock = clock;
-        reach$clock = clock;
-        eta_early$clock = clock;
-        eta_wait$clock = clock;
-        two_lambda_wait$clock = clock;
-        ok_wait$clock = clock;
-        gap_en_wait$clock = clock;
+        c3_0$clock = clock;
+        c3_1$clock = clock;
+        c3_2$clock = clock;
+        am$clock = clock;
+        af$clock = clock;
+        aerr$clock = clock;
+        aerr_wait$clock = clock;
+        mg3_0$clock = clock;
+        mg3_1$clock = clock;
+        mg3_2$clock = clock;
+        vc_0$clock = clock;
+        vc_1$clock = clock;
+        vc_2$clock = clock;
+        exact_wait$clock = clock;
         tag_wait$clock = clock;
         valid_wait$clock = clock;
         in_m_0$0$clock = clock;
@@ -1993,591 +2684,758 @@ module top(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,m_2
         in_f_0$3$d = f_0$3;
         in_f_1$3$d = f_1$3;
         in_f_2$3$d = f_2$3;
-        in_e_lin$d = e_lin;
-        in_e_tr$d = e_tr;
-        in_l_norm$d = l_norm;
-        in_f_lin$d = f_lin;
-        in_f_tr$d = f_tr;
-        in_eta$d = eta;
-        in_gap_en$d = gap_en;
+        in_alpha_m$d = alpha_m;
+        in_alpha_f$d = alpha_f;
+        in_beta_m$d = beta_m;
+        in_beta_f$d = beta_f;
+        in_scale$d = scale;
         in_v_exact$d = v_exact;
         in_tag$d = tag;
         in_valid$d = valid_in;
-        mb_0$0$clock = clock;
-        mb_0$0$a0_x = in_m_0$0$q;
-        mb_0$0$a1_x = in_m_0$1$q;
-        mb_0$0$a2_x = in_m_0$2$q;
-        mb_0$0$a0_e = in_e_lin$q;
-        mb_0$0$a1_e = in_e_lin$q;
-        mb_0$0$a2_e = in_e_lin$q;
-        mb_0$0$b0_x = in_f_0$0$q;
-        mb_0$0$b1_x = in_f_1$0$q;
-        mb_0$0$b2_x = in_f_2$0$q;
-        mb_0$0$b0_e = in_f_lin$q;
-        mb_0$0$b1_e = in_f_lin$q;
-        mb_0$0$b2_e = in_f_lin$q;
-        mb_0$0$c_x = in_m_0$3$q;
-        mb_0$0$c_e = in_e_tr$q;
-        mb_0$1$clock = clock;
-        mb_0$1$a0_x = in_m_0$0$q;
-        mb_0$1$a1_x = in_m_0$1$q;
-        mb_0$1$a2_x = in_m_0$2$q;
-        mb_0$1$a0_e = in_e_lin$q;
-        mb_0$1$a1_e = in_e_lin$q;
-        mb_0$1$a2_e = in_e_lin$q;
-        mb_0$1$b0_x = in_f_0$1$q;
-        mb_0$1$b1_x = in_f_1$1$q;
-        mb_0$1$b2_x = in_f_2$1$q;
-        mb_0$1$b0_e = in_f_lin$q;
-        mb_0$1$b1_e = in_f_lin$q;
-        mb_0$1$b2_e = in_f_lin$q;
-        mb_0$1$c_x = in_m_0$3$q;
-        mb_0$1$c_e = in_e_tr$q;
-        mb_0$2$clock = clock;
-        mb_0$2$a0_x = in_m_0$0$q;
-        mb_0$2$a1_x = in_m_0$1$q;
-        mb_0$2$a2_x = in_m_0$2$q;
-        mb_0$2$a0_e = in_e_lin$q;
-        mb_0$2$a1_e = in_e_lin$q;
-        mb_0$2$a2_e = in_e_lin$q;
-        mb_0$2$b0_x = in_f_0$2$q;
-        mb_0$2$b1_x = in_f_1$2$q;
-        mb_0$2$b2_x = in_f_2$2$q;
-        mb_0$2$b0_e = in_f_lin$q;
-        mb_0$2$b1_e = in_f_lin$q;
-        mb_0$2$b2_e = in_f_lin$q;
-        mb_0$2$c_x = in_m_0$3$q;
-        mb_0$2$c_e = in_e_tr$q;
-        mb_0$3$clock = clock;
-        mb_0$3$a0_x = in_m_0$0$q;
-        mb_0$3$a1_x = in_m_0$1$q;
-        mb_0$3$a2_x = in_m_0$2$q;
-        mb_0$3$a0_e = in_e_lin$q;
-        mb_0$3$a1_e = in_e_lin$q;
-        mb_0$3$a2_e = in_e_lin$q;
-        mb_0$3$b0_x = in_f_0$3$q;
-        mb_0$3$b1_x = in_f_1$3$q;
-        mb_0$3$b2_x = in_f_2$3$q;
-        mb_0$3$b0_e = in_f_lin$q;
-        mb_0$3$b1_e = in_f_lin$q;
-        mb_0$3$b2_e = in_f_lin$q;
-        mb_0$3$c_x = in_m_0$3$q;
-        mb_0$3$c_e = in_e_tr$q;
-        mb_0$3$b0_e = in_f_tr$q;
-        mb_0$3$b1_e = in_f_tr$q;
-        mb_0$3$b2_e = in_f_tr$q;
-        mb_1$0$clock = clock;
-        mb_1$0$a0_x = in_m_1$0$q;
-        mb_1$0$a1_x = in_m_1$1$q;
-        mb_1$0$a2_x = in_m_1$2$q;
-        mb_1$0$a0_e = in_e_lin$q;
-        mb_1$0$a1_e = in_e_lin$q;
-        mb_1$0$a2_e = in_e_lin$q;
-        mb_1$0$b0_x = in_f_0$0$q;
-        mb_1$0$b1_x = in_f_1$0$q;
-        mb_1$0$b2_x = in_f_2$0$q;
-        mb_1$0$b0_e = in_f_lin$q;
-        mb_1$0$b1_e = in_f_lin$q;
-        mb_1$0$b2_e = in_f_lin$q;
-        mb_1$0$c_x = in_m_1$3$q;
-        mb_1$0$c_e = in_e_tr$q;
-        mb_1$1$clock = clock;
-        mb_1$1$a0_x = in_m_1$0$q;
-        mb_1$1$a1_x = in_m_1$1$q;
-        mb_1$1$a2_x = in_m_1$2$q;
-        mb_1$1$a0_e = in_e_lin$q;
-        mb_1$1$a1_e = in_e_lin$q;
-        mb_1$1$a2_e = in_e_lin$q;
-        mb_1$1$b0_x = in_f_0$1$q;
-        mb_1$1$b1_x = in_f_1$1$q;
-        mb_1$1$b2_x = in_f_2$1$q;
-        mb_1$1$b0_e = in_f_lin$q;
-        mb_1$1$b1_e = in_f_lin$q;
-        mb_1$1$b2_e = in_f_lin$q;
-        mb_1$1$c_x = in_m_1$3$q;
-        mb_1$1$c_e = in_e_tr$q;
-        mb_1$2$clock = clock;
-        mb_1$2$a0_x = in_m_1$0$q;
-        mb_1$2$a1_x = in_m_1$1$q;
-        mb_1$2$a2_x = in_m_1$2$q;
-        mb_1$2$a0_e = in_e_lin$q;
-        mb_1$2$a1_e = in_e_lin$q;
-        mb_1$2$a2_e = in_e_lin$q;
-        mb_1$2$b0_x = in_f_0$2$q;
-        mb_1$2$b1_x = in_f_1$2$q;
-        mb_1$2$b2_x = in_f_2$2$q;
-        mb_1$2$b0_e = in_f_lin$q;
-        mb_1$2$b1_e = in_f_lin$q;
-        mb_1$2$b2_e = in_f_lin$q;
-        mb_1$2$c_x = in_m_1$3$q;
-        mb_1$2$c_e = in_e_tr$q;
-        mb_1$3$clock = clock;
-        mb_1$3$a0_x = in_m_1$0$q;
-        mb_1$3$a1_x = in_m_1$1$q;
-        mb_1$3$a2_x = in_m_1$2$q;
-        mb_1$3$a0_e = in_e_lin$q;
-        mb_1$3$a1_e = in_e_lin$q;
-        mb_1$3$a2_e = in_e_lin$q;
-        mb_1$3$b0_x = in_f_0$3$q;
-        mb_1$3$b1_x = in_f_1$3$q;
-        mb_1$3$b2_x = in_f_2$3$q;
-        mb_1$3$b0_e = in_f_lin$q;
-        mb_1$3$b1_e = in_f_lin$q;
-        mb_1$3$b2_e = in_f_lin$q;
-        mb_1$3$c_x = in_m_1$3$q;
-        mb_1$3$c_e = in_e_tr$q;
-        mb_1$3$b0_e = in_f_tr$q;
-        mb_1$3$b1_e = in_f_tr$q;
-        mb_1$3$b2_e = in_f_tr$q;
-        mb_2$0$clock = clock;
-        mb_2$0$a0_x = in_m_2$0$q;
-        mb_2$0$a1_x = in_m_2$1$q;
-        mb_2$0$a2_x = in_m_2$2$q;
-        mb_2$0$a0_e = in_e_lin$q;
-        mb_2$0$a1_e = in_e_lin$q;
-        mb_2$0$a2_e = in_e_lin$q;
-        mb_2$0$b0_x = in_f_0$0$q;
-        mb_2$0$b1_x = in_f_1$0$q;
-        mb_2$0$b2_x = in_f_2$0$q;
-        mb_2$0$b0_e = in_f_lin$q;
-        mb_2$0$b1_e = in_f_lin$q;
-        mb_2$0$b2_e = in_f_lin$q;
-        mb_2$0$c_x = in_m_2$3$q;
-        mb_2$0$c_e = in_e_tr$q;
-        mb_2$1$clock = clock;
-        mb_2$1$a0_x = in_m_2$0$q;
-        mb_2$1$a1_x = in_m_2$1$q;
-        mb_2$1$a2_x = in_m_2$2$q;
-        mb_2$1$a0_e = in_e_lin$q;
-        mb_2$1$a1_e = in_e_lin$q;
-        mb_2$1$a2_e = in_e_lin$q;
-        mb_2$1$b0_x = in_f_0$1$q;
-        mb_2$1$b1_x = in_f_1$1$q;
-        mb_2$1$b2_x = in_f_2$1$q;
-        mb_2$1$b0_e = in_f_lin$q;
-        mb_2$1$b1_e = in_f_lin$q;
-        mb_2$1$b2_e = in_f_lin$q;
-        mb_2$1$c_x = in_m_2$3$q;
-        mb_2$1$c_e = in_e_tr$q;
-        mb_2$2$clock = clock;
-        mb_2$2$a0_x = in_m_2$0$q;
-        mb_2$2$a1_x = in_m_2$1$q;
-        mb_2$2$a2_x = in_m_2$2$q;
-        mb_2$2$a0_e = in_e_lin$q;
-        mb_2$2$a1_e = in_e_lin$q;
-        mb_2$2$a2_e = in_e_lin$q;
-        mb_2$2$b0_x = in_f_0$2$q;
-        mb_2$2$b1_x = in_f_1$2$q;
-        mb_2$2$b2_x = in_f_2$2$q;
-        mb_2$2$b0_e = in_f_lin$q;
-        mb_2$2$b1_e = in_f_lin$q;
-        mb_2$2$b2_e = in_f_lin$q;
-        mb_2$2$c_x = in_m_2$3$q;
-        mb_2$2$c_e = in_e_tr$q;
-        mb_2$3$clock = clock;
-        mb_2$3$a0_x = in_m_2$0$q;
-        mb_2$3$a1_x = in_m_2$1$q;
-        mb_2$3$a2_x = in_m_2$2$q;
-        mb_2$3$a0_e = in_e_lin$q;
-        mb_2$3$a1_e = in_e_lin$q;
-        mb_2$3$a2_e = in_e_lin$q;
-        mb_2$3$b0_x = in_f_0$3$q;
-        mb_2$3$b1_x = in_f_1$3$q;
-        mb_2$3$b2_x = in_f_2$3$q;
-        mb_2$3$b0_e = in_f_lin$q;
-        mb_2$3$b1_e = in_f_lin$q;
-        mb_2$3$b2_e = in_f_lin$q;
-        mb_2$3$c_x = in_m_2$3$q;
-        mb_2$3$c_e = in_e_tr$q;
-        mb_2$3$b0_e = in_f_tr$q;
-        mb_2$3$b1_e = in_f_tr$q;
-        mb_2$3$b2_e = in_f_tr$q;
-        v_exact_wait$d = in_v_exact$q;
         in_v_x$0$clock = clock;
         in_v_y$0$clock = clock;
         in_v_z$0$clock = clock;
         in_v_x$0$d = v_x$0;
         in_v_y$0$d = v_y$0;
         in_v_z$0$d = v_z$0;
-        v_err_x$0$clock = clock;
-        v_err_y$0$clock = clock;
-        v_err_z$0$clock = clock;
-        v_x_wait$0$clock = clock;
-        v_y_wait$0$clock = clock;
-        v_z_wait$0$clock = clock;
-        v_ex_wait$0$clock = clock;
-        v_ey_wait$0$clock = clock;
-        v_ez_wait$0$clock = clock;
-        v_err_x$0$x = in_v_x$0$q;
-        v_err_y$0$x = in_v_y$0$q;
-        v_err_z$0$x = in_v_z$0$q;
-        v_err_x$0$valid_in = 1'b0;
-        v_err_y$0$valid_in = 1'b0;
-        v_err_z$0$valid_in = 1'b0;
-        v_x_wait$0$d = in_v_x$0$q;
-        v_y_wait$0$d = in_v_y$0$q;
-        v_z_wait$0$d = in_v_z$0$q;
-        v_ex_wait$0$d = v_err_x$0$y;
-        v_ey_wait$0$d = v_err_y$0$y;
-        v_ez_wait$0$d = v_err_z$0$y;
-        c_ve_x$0 = v_ex_wait$0$q;
-        c_ve_y$0 = v_ey_wait$0$q;
-        c_ve_z$0 = v_ez_wait$0$q;
-        if (v_exact_wait$q) begin
-            c_ve_x$0 = c_zero;
-            c_ve_y$0 = c_zero;
-            c_ve_z$0 = c_zero;
-        end
         in_v_x$1$clock = clock;
         in_v_y$1$clock = clock;
         in_v_z$1$clock = clock;
         in_v_x$1$d = v_x$1;
         in_v_y$1$d = v_y$1;
         in_v_z$1$d = v_z$1;
-        v_err_x$1$clock = clock;
-        v_err_y$1$clock = clock;
-        v_err_z$1$clock = clock;
-        v_x_wait$1$clock = clock;
-        v_y_wait$1$clock = clock;
-        v_z_wait$1$clock = clock;
-        v_ex_wait$1$clock = clock;
-        v_ey_wait$1$clock = clock;
-        v_ez_wait$1$clock = clock;
-        v_err_x$1$x = in_v_x$1$q;
-        v_err_y$1$x = in_v_y$1$q;
-        v_err_z$1$x = in_v_z$1$q;
-        v_err_x$1$valid_in = 1'b0;
-        v_err_y$1$valid_in = 1'b0;
-        v_err_z$1$valid_in = 1'b0;
-        v_x_wait$1$d = in_v_x$1$q;
-        v_y_wait$1$d = in_v_y$1$q;
-        v_z_wait$1$d = in_v_z$1$q;
-        v_ex_wait$1$d = v_err_x$1$y;
-        v_ey_wait$1$d = v_err_y$1$y;
-        v_ez_wait$1$d = v_err_z$1$y;
-        c_ve_x$1 = v_ex_wait$1$q;
-        c_ve_y$1 = v_ey_wait$1$q;
-        c_ve_z$1 = v_ez_wait$1$q;
-        if (v_exact_wait$q) begin
-            c_ve_x$1 = c_zero;
-            c_ve_y$1 = c_zero;
-            c_ve_z$1 = c_zero;
-        end
         in_v_x$2$clock = clock;
         in_v_y$2$clock = clock;
         in_v_z$2$clock = clock;
         in_v_x$2$d = v_x$2;
         in_v_y$2$d = v_y$2;
         in_v_z$2$d = v_z$2;
-        v_err_x$2$clock = clock;
-        v_err_y$2$clock = clock;
-        v_err_z$2$clock = clock;
+        c3_0$d = in_m_0$3$q;
+        mb_0$0$clock = clock;
+        mg_0$0$clock = clock;
+        mb_0$0$a0 = in_m_0$0$q;
+        mb_0$0$a1 = in_m_0$1$q;
+        mb_0$0$a2 = in_m_0$2$q;
+        mb_0$0$b0 = in_f_0$0$q;
+        mb_0$0$b1 = in_f_1$0$q;
+        mb_0$0$b2 = in_f_2$0$q;
+        mb_0$0$c = c3_0$q;
+        mg_0$0$a0 = in_m_0$0$q;
+        mg_0$0$a1 = in_m_0$1$q;
+        mg_0$0$a2 = in_m_0$2$q;
+        mg_0$0$b0 = in_f_0$0$q;
+        mg_0$0$b1 = in_f_1$0$q;
+        mg_0$0$b2 = in_f_2$0$q;
+        mg_0$0$c = c3_0$q;
+        mbr_0$0$clock = clock;
+        mgr_0$0$clock = clock;
+        mbr_0$0$d = mb_0$0$y;
+        mgr_0$0$d = mg_0$0$y;
+        mb_0$1$clock = clock;
+        mg_0$1$clock = clock;
+        mb_0$1$a0 = in_m_0$0$q;
+        mb_0$1$a1 = in_m_0$1$q;
+        mb_0$1$a2 = in_m_0$2$q;
+        mb_0$1$b0 = in_f_0$1$q;
+        mb_0$1$b1 = in_f_1$1$q;
+        mb_0$1$b2 = in_f_2$1$q;
+        mb_0$1$c = c3_0$q;
+        mg_0$1$a0 = in_m_0$0$q;
+        mg_0$1$a1 = in_m_0$1$q;
+        mg_0$1$a2 = in_m_0$2$q;
+        mg_0$1$b0 = in_f_0$1$q;
+        mg_0$1$b1 = in_f_1$1$q;
+        mg_0$1$b2 = in_f_2$1$q;
+        mg_0$1$c = c3_0$q;
+        mbr_0$1$clock = clock;
+        mgr_0$1$clock = clock;
+        mbr_0$1$d = mb_0$1$y;
+        mgr_0$1$d = mg_0$1$y;
+        mb_0$2$clock = clock;
+        mg_0$2$clock = clock;
+        mb_0$2$a0 = in_m_0$0$q;
+        mb_0$2$a1 = in_m_0$1$q;
+        mb_0$2$a2 = in_m_0$2$q;
+        mb_0$2$b0 = in_f_0$2$q;
+        mb_0$2$b1 = in_f_1$2$q;
+        mb_0$2$b2 = in_f_2$2$q;
+        mb_0$2$c = c3_0$q;
+        mg_0$2$a0 = in_m_0$0$q;
+        mg_0$2$a1 = in_m_0$1$q;
+        mg_0$2$a2 = in_m_0$2$q;
+        mg_0$2$b0 = in_f_0$2$q;
+        mg_0$2$b1 = in_f_1$2$q;
+        mg_0$2$b2 = in_f_2$2$q;
+        mg_0$2$c = c3_0$q;
+        mbr_0$2$clock = clock;
+        mgr_0$2$clock = clock;
+        mbr_0$2$d = mb_0$2$y;
+        mgr_0$2$d = mg_0$2$y;
+        mb_0$3$clock = clock;
+        mg_0$3$clock = clock;
+        mb_0$3$a0 = in_m_0$0$q;
+        mb_0$3$a1 = in_m_0$1$q;
+        mb_0$3$a2 = in_m_0$2$q;
+        mb_0$3$b0 = in_f_0$3$q;
+        mb_0$3$b1 = in_f_1$3$q;
+        mb_0$3$b2 = in_f_2$3$q;
+        mb_0$3$c = c3_0$q;
+        mg_0$3$a0 = in_m_0$0$q;
+        mg_0$3$a1 = in_m_0$1$q;
+        mg_0$3$a2 = in_m_0$2$q;
+        mg_0$3$b0 = in_f_0$3$q;
+        mg_0$3$b1 = in_f_1$3$q;
+        mg_0$3$b2 = in_f_2$3$q;
+        mg_0$3$c = c3_0$q;
+        mbr_0$3$clock = clock;
+        mgr_0$3$clock = clock;
+        mbr_0$3$d = mb_0$3$y;
+        mgr_0$3$d = mg_0$3$y;
+        c3_1$d = in_m_1$3$q;
+        mb_1$0$clock = clock;
+        mg_1$0$clock = clock;
+        mb_1$0$a0 = in_m_1$0$q;
+        mb_1$0$a1 = in_m_1$1$q;
+        mb_1$0$a2 = in_m_1$2$q;
+        mb_1$0$b0 = in_f_0$0$q;
+        mb_1$0$b1 = in_f_1$0$q;
+        mb_1$0$b2 = in_f_2$0$q;
+        mb_1$0$c = c3_1$q;
+        mg_1$0$a0 = in_m_1$0$q;
+        mg_1$0$a1 = in_m_1$1$q;
+        mg_1$0$a2 = in_m_1$2$q;
+        mg_1$0$b0 = in_f_0$0$q;
+        mg_1$0$b1 = in_f_1$0$q;
+        mg_1$0$b2 = in_f_2$0$q;
+        mg_1$0$c = c3_1$q;
+        mbr_1$0$clock = clock;
+        mgr_1$0$clock = clock;
+        mbr_1$0$d = mb_1$0$y;
+        mgr_1$0$d = mg_1$0$y;
+        mb_1$1$clock = clock;
+        mg_1$1$clock = clock;
+        mb_1$1$a0 = in_m_1$0$q;
+        mb_1$1$a1 = in_m_1$1$q;
+        mb_1$1$a2 = in_m_1$2$q;
+        mb_1$1$b0 = in_f_0$1$q;
+        mb_1$1$b1 = in_f_1$1$q;
+        mb_1$1$b2 = in_f_2$1$q;
+        mb_1$1$c = c3_1$q;
+        mg_1$1$a0 = in_m_1$0$q;
+        mg_1$1$a1 = in_m_1$1$q;
+        mg_1$1$a2 = in_m_1$2$q;
+        mg_1$1$b0 = in_f_0$1$q;
+        mg_1$1$b1 = in_f_1$1$q;
+        mg_1$1$b2 = in_f_2$1$q;
+        mg_1$1$c = c3_1$q;
+        mbr_1$1$clock = clock;
+        mgr_1$1$clock = clock;
+        mbr_1$1$d = mb_1$1$y;
+        mgr_1$1$d = mg_1$1$y;
+        mb_1$2$clock = clock;
+        mg_1$2$clock = clock;
+        mb_1$2$a0 = in_m_1$0$q;
+        mb_1$2$a1 = in_m_1$1$q;
+        mb_1$2$a2 = in_m_1$2$q;
+        mb_1$2$b0 = in_f_0$2$q;
+        mb_1$2$b1 = in_f_1$2$q;
+        mb_1$2$b2 = in_f_2$2$q;
+        mb_1$2$c = c3_1$q;
+        mg_1$2$a0 = in_m_1$0$q;
+        mg_1$2$a1 = in_m_1$1$q;
+        mg_1$2$a2 = in_m_1$2$q;
+        mg_1$2$b0 = in_f_0$2$q;
+        mg_1$2$b1 = in_f_1$2$q;
+        mg_1$2$b2 = in_f_2$2$q;
+        mg_1$2$c = c3_1$q;
+        mbr_1$2$clock = clock;
+        mgr_1$2$clock = clock;
+        mbr_1$2$d = mb_1$2$y;
+        mgr_1$2$d = mg_1$2$y;
+        mb_1$3$clock = clock;
+        mg_1$3$clock = clock;
+        mb_1$3$a0 = in_m_1$0$q;
+        mb_1$3$a1 = in_m_1$1$q;
+        mb_1$3$a2 = in_m_1$2$q;
+        mb_1$3$b0 = in_f_0$3$q;
+        mb_1$3$b1 = in_f_1$3$q;
+        mb_1$3$b2 = in_f_2$3$q;
+        mb_1$3$c = c3_1$q;
+        mg_1$3$a0 = in_m_1$0$q;
+        mg_1$3$a1 = in_m_1$1$q;
+        mg_1$3$a2 = in_m_1$2$q;
+        mg_1$3$b0 = in_f_0$3$q;
+        mg_1$3$b1 = in_f_1$3$q;
+        mg_1$3$b2 = in_f_2$3$q;
+        mg_1$3$c = c3_1$q;
+        mbr_1$3$clock = clock;
+        mgr_1$3$clock = clock;
+        mbr_1$3$d = mb_1$3$y;
+        mgr_1$3$d = mg_1$3$y;
+        c3_2$d = in_m_2$3$q;
+        mb_2$0$clock = clock;
+        mg_2$0$clock = clock;
+        mb_2$0$a0 = in_m_2$0$q;
+        mb_2$0$a1 = in_m_2$1$q;
+        mb_2$0$a2 = in_m_2$2$q;
+        mb_2$0$b0 = in_f_0$0$q;
+        mb_2$0$b1 = in_f_1$0$q;
+        mb_2$0$b2 = in_f_2$0$q;
+        mb_2$0$c = c3_2$q;
+        mg_2$0$a0 = in_m_2$0$q;
+        mg_2$0$a1 = in_m_2$1$q;
+        mg_2$0$a2 = in_m_2$2$q;
+        mg_2$0$b0 = in_f_0$0$q;
+        mg_2$0$b1 = in_f_1$0$q;
+        mg_2$0$b2 = in_f_2$0$q;
+        mg_2$0$c = c3_2$q;
+        mbr_2$0$clock = clock;
+        mgr_2$0$clock = clock;
+        mbr_2$0$d = mb_2$0$y;
+        mgr_2$0$d = mg_2$0$y;
+        mb_2$1$clock = clock;
+        mg_2$1$clock = clock;
+        mb_2$1$a0 = in_m_2$0$q;
+        mb_2$1$a1 = in_m_2$1$q;
+        mb_2$1$a2 = in_m_2$2$q;
+        mb_2$1$b0 = in_f_0$1$q;
+        mb_2$1$b1 = in_f_1$1$q;
+        mb_2$1$b2 = in_f_2$1$q;
+        mb_2$1$c = c3_2$q;
+        mg_2$1$a0 = in_m_2$0$q;
+        mg_2$1$a1 = in_m_2$1$q;
+        mg_2$1$a2 = in_m_2$2$q;
+        mg_2$1$b0 = in_f_0$1$q;
+        mg_2$1$b1 = in_f_1$1$q;
+        mg_2$1$b2 = in_f_2$1$q;
+        mg_2$1$c = c3_2$q;
+        mbr_2$1$clock = clock;
+        mgr_2$1$clock = clock;
+        mbr_2$1$d = mb_2$1$y;
+        mgr_2$1$d = mg_2$1$y;
+        mb_2$2$clock = clock;
+        mg_2$2$clock = clock;
+        mb_2$2$a0 = in_m_2$0$q;
+        mb_2$2$a1 = in_m_2$1$q;
+        mb_2$2$a2 = in_m_2$2$q;
+        mb_2$2$b0 = in_f_0$2$q;
+        mb_2$2$b1 = in_f_1$2$q;
+        mb_2$2$b2 = in_f_2$2$q;
+        mb_2$2$c = c3_2$q;
+        mg_2$2$a0 = in_m_2$0$q;
+        mg_2$2$a1 = in_m_2$1$q;
+        mg_2$2$a2 = in_m_2$2$q;
+        mg_2$2$b0 = in_f_0$2$q;
+        mg_2$2$b1 = in_f_1$2$q;
+        mg_2$2$b2 = in_f_2$2$q;
+        mg_2$2$c = c3_2$q;
+        mbr_2$2$clock = clock;
+        mgr_2$2$clock = clock;
+        mbr_2$2$d = mb_2$2$y;
+        mgr_2$2$d = mg_2$2$y;
+        mb_2$3$clock = clock;
+        mg_2$3$clock = clock;
+        mb_2$3$a0 = in_m_2$0$q;
+        mb_2$3$a1 = in_m_2$1$q;
+        mb_2$3$a2 = in_m_2$2$q;
+        mb_2$3$b0 = in_f_0$3$q;
+        mb_2$3$b1 = in_f_1$3$q;
+        mb_2$3$b2 = in_f_2$3$q;
+        mb_2$3$c = c3_2$q;
+        mg_2$3$a0 = in_m_2$0$q;
+        mg_2$3$a1 = in_m_2$1$q;
+        mg_2$3$a2 = in_m_2$2$q;
+        mg_2$3$b0 = in_f_0$3$q;
+        mg_2$3$b1 = in_f_1$3$q;
+        mg_2$3$b2 = in_f_2$3$q;
+        mg_2$3$c = c3_2$q;
+        mbr_2$3$clock = clock;
+        mgr_2$3$clock = clock;
+        mbr_2$3$d = mb_2$3$y;
+        mgr_2$3$d = mg_2$3$y;
+        am$a = in_alpha_m$q;
+        am$b = in_beta_m$q;
+        am$valid_in = 1'b0;
+        af$a = in_alpha_f$q;
+        af$b = in_beta_f$q;
+        af$valid_in = 1'b0;
+        aerr$a = am$y;
+        aerr$b = af$y;
+        aerr$sub = 1'b0;
+        aerr$valid_in = 1'b0;
+        aerr_wait$d = aerr$y;
+        la$0$clock = clock;
+        lb$0$clock = clock;
+        l1$0$clock = clock;
+        l1_wait$0$clock = clock;
+        err$0$clock = clock;
+        la$0$a = in_v_x$0$q & mask;
+        la$0$b = in_v_y$0$q & mask;
+        lb$0$a = in_v_z$0$q & mask;
+        lb$0$b = in_scale$q;
+        l1$0$a = la$0$y;
+        l1$0$b = lb$0$y;
+        la$0$sub = 1'b0;
+        lb$0$sub = 1'b0;
+        l1$0$sub = 1'b0;
+        la$0$valid_in = 1'b0;
+        lb$0$valid_in = 1'b0;
+        l1$0$valid_in = 1'b0;
+        l1_wait$0$d = l1$0$y;
+        err$0$a = aerr_wait$q;
+        err$0$b = l1_wait$0$q;
+        err$0$valid_in = 1'b0;
+        v_x_wait$0$clock = clock;
+        v_y_wait$0$clock = clock;
+        v_z_wait$0$clock = clock;
+        v_x_wait$0$d = in_v_x$0$q;
+        v_y_wait$0$d = in_v_y$0$q;
+        v_z_wait$0$d = in_v_z$0$q;
+        la$1$clock = clock;
+        lb$1$clock = clock;
+        l1$1$clock = clock;
+        l1_wait$1$clock = clock;
+        err$1$clock = clock;
+        la$1$a = in_v_x$1$q & mask;
+        la$1$b = in_v_y$1$q & mask;
+        lb$1$a = in_v_z$1$q & mask;
+        lb$1$b = in_scale$q;
+        l1$1$a = la$1$y;
+        l1$1$b = lb$1$y;
+        la$1$sub = 1'b0;
+        lb$1$sub = 1'b0;
+        l1$1$sub = 1'b0;
+        la$1$valid_in = 1'b0;
+        lb$1$valid_in = 1'b0;
+        l1$1$valid_in = 1'b0;
+        l1_wait$1$d = l1$1$y;
+        err$1$a = aerr_wait$q;
+        err$1$b = l1_wait$1$q;
+        err$1$valid_in = 1'b0;
+        v_x_wait$1$clock = clock;
+        v_y_wait$1$clock = clock;
+        v_z_wait$1$clock = clock;
+        v_x_wait$1$d = in_v_x$1$q;
+        v_y_wait$1$d = in_v_y$1$q;
+        v_z_wait$1$d = in_v_z$1$q;
+        la$2$clock = clock;
+        lb$2$clock = clock;
+        l1$2$clock = clock;
+        l1_wait$2$clock = clock;
+        err$2$clock = clock;
+        la$2$a = in_v_x$2$q & mask;
+        la$2$b = in_v_y$2$q & mask;
+        lb$2$a = in_v_z$2$q & mask;
+        lb$2$b = in_scale$q;
+        l1$2$a = la$2$y;
+        l1$2$b = lb$2$y;
+        la$2$sub = 1'b0;
+        lb$2$sub = 1'b0;
+        l1$2$sub = 1'b0;
+        la$2$valid_in = 1'b0;
+        lb$2$valid_in = 1'b0;
+        l1$2$valid_in = 1'b0;
+        l1_wait$2$d = l1$2$y;
+        err$2$a = aerr_wait$q;
+        err$2$b = l1_wait$2$q;
+        err$2$valid_in = 1'b0;
         v_x_wait$2$clock = clock;
         v_y_wait$2$clock = clock;
         v_z_wait$2$clock = clock;
-        v_ex_wait$2$clock = clock;
-        v_ey_wait$2$clock = clock;
-        v_ez_wait$2$clock = clock;
-        v_err_x$2$x = in_v_x$2$q;
-        v_err_y$2$x = in_v_y$2$q;
-        v_err_z$2$x = in_v_z$2$q;
-        v_err_x$2$valid_in = 1'b0;
-        v_err_y$2$valid_in = 1'b0;
-        v_err_z$2$valid_in = 1'b0;
         v_x_wait$2$d = in_v_x$2$q;
         v_y_wait$2$d = in_v_y$2$q;
         v_z_wait$2$d = in_v_z$2$q;
-        v_ex_wait$2$d = v_err_x$2$y;
-        v_ey_wait$2$d = v_err_y$2$y;
-        v_ez_wait$2$d = v_err_z$2$y;
-        c_ve_x$2 = v_ex_wait$2$q;
-        c_ve_y$2 = v_ey_wait$2$q;
-        c_ve_z$2 = v_ez_wait$2$q;
-        if (v_exact_wait$q) begin
-            c_ve_x$2 = c_zero;
-            c_ve_y$2 = c_zero;
-            c_ve_z$2 = c_zero;
-        end
+        mg3_0$d = mgr_0$3$q;
+        vc_0$d = mbr_0$3$q;
+        m3_0$0$clock = clock;
+        m3_0$0$a = mg3_0$q;
+        m3_0$0$b = err$0$y;
+        m3_0$0$sub = 1'b0;
+        m3_0$0$valid_in = 1'b0;
         vt_0$0$clock = clock;
-        vt_0$0$a0_x = mb_0$0$y_x;
-        vt_0$0$a0_e = mb_0$0$y_e;
-        vt_0$0$a1_x = mb_0$1$y_x;
-        vt_0$0$a1_e = mb_0$1$y_e;
-        vt_0$0$a2_x = mb_0$2$y_x;
-        vt_0$0$a2_e = mb_0$2$y_e;
-        vt_0$0$c_x = mb_0$3$y_x;
-        vt_0$0$c_e = mb_0$3$y_e;
-        vt_0$0$b0_x = v_x_wait$0$q;
-        vt_0$0$b0_e = c_ve_x$0;
-        vt_0$0$b1_x = v_y_wait$0$q;
-        vt_0$0$b1_e = c_ve_y$0;
-        vt_0$0$b2_x = v_z_wait$0$q;
-        vt_0$0$b2_e = c_ve_z$0;
-        gap$0$x0 = vt_0$0$y_x;
-        gap$0$e0 = vt_0$0$y_e;
+        vm_0$0$clock = clock;
+        vt_0$0$a0 = mbr_0$0$q;
+        vt_0$0$a1 = mbr_0$1$q;
+        vt_0$0$a2 = mbr_0$2$q;
+        vt_0$0$b0 = v_x_wait$0$q;
+        vt_0$0$b1 = v_y_wait$0$q;
+        vt_0$0$b2 = v_z_wait$0$q;
+        vt_0$0$c = vc_0$q;
+        vm_0$0$a0 = mgr_0$0$q;
+        vm_0$0$a1 = mgr_0$1$q;
+        vm_0$0$a2 = mgr_0$2$q;
+        vm_0$0$b0 = v_x_wait$0$q;
+        vm_0$0$b1 = v_y_wait$0$q;
+        vm_0$0$b2 = v_z_wait$0$q;
+        vm_0$0$c = m3_0$0$y;
+        vtr_0$0$clock = clock;
+        vmr_0$0$clock = clock;
+        vtr_0$0$d = vt_0$0$y;
+        vmr_0$0$d = vm_0$0$y;
+        m3_0$1$clock = clock;
+        m3_0$1$a = mg3_0$q;
+        m3_0$1$b = err$1$y;
+        m3_0$1$sub = 1'b0;
+        m3_0$1$valid_in = 1'b0;
         vt_0$1$clock = clock;
-        vt_0$1$a0_x = mb_0$0$y_x;
-        vt_0$1$a0_e = mb_0$0$y_e;
-        vt_0$1$a1_x = mb_0$1$y_x;
-        vt_0$1$a1_e = mb_0$1$y_e;
-        vt_0$1$a2_x = mb_0$2$y_x;
-        vt_0$1$a2_e = mb_0$2$y_e;
-        vt_0$1$c_x = mb_0$3$y_x;
-        vt_0$1$c_e = mb_0$3$y_e;
-        vt_0$1$b0_x = v_x_wait$1$q;
-        vt_0$1$b0_e = c_ve_x$1;
-        vt_0$1$b1_x = v_y_wait$1$q;
-        vt_0$1$b1_e = c_ve_y$1;
-        vt_0$1$b2_x = v_z_wait$1$q;
-        vt_0$1$b2_e = c_ve_z$1;
-        gap$1$x0 = vt_0$1$y_x;
-        gap$1$e0 = vt_0$1$y_e;
+        vm_0$1$clock = clock;
+        vt_0$1$a0 = mbr_0$0$q;
+        vt_0$1$a1 = mbr_0$1$q;
+        vt_0$1$a2 = mbr_0$2$q;
+        vt_0$1$b0 = v_x_wait$1$q;
+        vt_0$1$b1 = v_y_wait$1$q;
+        vt_0$1$b2 = v_z_wait$1$q;
+        vt_0$1$c = vc_0$q;
+        vm_0$1$a0 = mgr_0$0$q;
+        vm_0$1$a1 = mgr_0$1$q;
+        vm_0$1$a2 = mgr_0$2$q;
+        vm_0$1$b0 = v_x_wait$1$q;
+        vm_0$1$b1 = v_y_wait$1$q;
+        vm_0$1$b2 = v_z_wait$1$q;
+        vm_0$1$c = m3_0$1$y;
+        vtr_0$1$clock = clock;
+        vmr_0$1$clock = clock;
+        vtr_0$1$d = vt_0$1$y;
+        vmr_0$1$d = vm_0$1$y;
+        m3_0$2$clock = clock;
+        m3_0$2$a = mg3_0$q;
+        m3_0$2$b = err$2$y;
+        m3_0$2$sub = 1'b0;
+        m3_0$2$valid_in = 1'b0;
         vt_0$2$clock = clock;
-        vt_0$2$a0_x = mb_0$0$y_x;
-        vt_0$2$a0_e = mb_0$0$y_e;
-        vt_0$2$a1_x = mb_0$1$y_x;
-        vt_0$2$a1_e = mb_0$1$y_e;
-        vt_0$2$a2_x = mb_0$2$y_x;
-        vt_0$2$a2_e = mb_0$2$y_e;
-        vt_0$2$c_x = mb_0$3$y_x;
-        vt_0$2$c_e = mb_0$3$y_e;
-        vt_0$2$b0_x = v_x_wait$2$q;
-        vt_0$2$b0_e = c_ve_x$2;
-        vt_0$2$b1_x = v_y_wait$2$q;
-        vt_0$2$b1_e = c_ve_y$2;
-        vt_0$2$b2_x = v_z_wait$2$q;
-        vt_0$2$b2_e = c_ve_z$2;
-        gap$2$x0 = vt_0$2$y_x;
-        gap$2$e0 = vt_0$2$y_e;
+        vm_0$2$clock = clock;
+        vt_0$2$a0 = mbr_0$0$q;
+        vt_0$2$a1 = mbr_0$1$q;
+        vt_0$2$a2 = mbr_0$2$q;
+        vt_0$2$b0 = v_x_wait$2$q;
+        vt_0$2$b1 = v_y_wait$2$q;
+        vt_0$2$b2 = v_z_wait$2$q;
+        vt_0$2$c = vc_0$q;
+        vm_0$2$a0 = mgr_0$0$q;
+        vm_0$2$a1 = mgr_0$1$q;
+        vm_0$2$a2 = mgr_0$2$q;
+        vm_0$2$b0 = v_x_wait$2$q;
+        vm_0$2$b1 = v_y_wait$2$q;
+        vm_0$2$b2 = v_z_wait$2$q;
+        vm_0$2$c = m3_0$2$y;
+        vtr_0$2$clock = clock;
+        vmr_0$2$clock = clock;
+        vtr_0$2$d = vt_0$2$y;
+        vmr_0$2$d = vm_0$2$y;
+        mg3_1$d = mgr_1$3$q;
+        vc_1$d = mbr_1$3$q;
+        m3_1$0$clock = clock;
+        m3_1$0$a = mg3_1$q;
+        m3_1$0$b = err$0$y;
+        m3_1$0$sub = 1'b0;
+        m3_1$0$valid_in = 1'b0;
         vt_1$0$clock = clock;
-        vt_1$0$a0_x = mb_1$0$y_x;
-        vt_1$0$a0_e = mb_1$0$y_e;
-        vt_1$0$a1_x = mb_1$1$y_x;
-        vt_1$0$a1_e = mb_1$1$y_e;
-        vt_1$0$a2_x = mb_1$2$y_x;
-        vt_1$0$a2_e = mb_1$2$y_e;
-        vt_1$0$c_x = mb_1$3$y_x;
-        vt_1$0$c_e = mb_1$3$y_e;
-        vt_1$0$b0_x = v_x_wait$0$q;
-        vt_1$0$b0_e = c_ve_x$0;
-        vt_1$0$b1_x = v_y_wait$0$q;
-        vt_1$0$b1_e = c_ve_y$0;
-        vt_1$0$b2_x = v_z_wait$0$q;
-        vt_1$0$b2_e = c_ve_z$0;
-        gap$0$x1 = vt_1$0$y_x;
-        gap$0$e1 = vt_1$0$y_e;
+        vm_1$0$clock = clock;
+        vt_1$0$a0 = mbr_1$0$q;
+        vt_1$0$a1 = mbr_1$1$q;
+        vt_1$0$a2 = mbr_1$2$q;
+        vt_1$0$b0 = v_x_wait$0$q;
+        vt_1$0$b1 = v_y_wait$0$q;
+        vt_1$0$b2 = v_z_wait$0$q;
+        vt_1$0$c = vc_1$q;
+        vm_1$0$a0 = mgr_1$0$q;
+        vm_1$0$a1 = mgr_1$1$q;
+        vm_1$0$a2 = mgr_1$2$q;
+        vm_1$0$b0 = v_x_wait$0$q;
+        vm_1$0$b1 = v_y_wait$0$q;
+        vm_1$0$b2 = v_z_wait$0$q;
+        vm_1$0$c = m3_1$0$y;
+        vtr_1$0$clock = clock;
+        vmr_1$0$clock = clock;
+        vtr_1$0$d = vt_1$0$y;
+        vmr_1$0$d = vm_1$0$y;
+        m3_1$1$clock = clock;
+        m3_1$1$a = mg3_1$q;
+        m3_1$1$b = err$1$y;
+        m3_1$1$sub = 1'b0;
+        m3_1$1$valid_in = 1'b0;
         vt_1$1$clock = clock;
-        vt_1$1$a0_x = mb_1$0$y_x;
-        vt_1$1$a0_e = mb_1$0$y_e;
-        vt_1$1$a1_x = mb_1$1$y_x;
-        vt_1$1$a1_e = mb_1$1$y_e;
-        vt_1$1$a2_x = mb_1$2$y_x;
-        vt_1$1$a2_e = mb_1$2$y_e;
-        vt_1$1$c_x = mb_1$3$y_x;
-        vt_1$1$c_e = mb_1$3$y_e;
-        vt_1$1$b0_x = v_x_wait$1$q;
-        vt_1$1$b0_e = c_ve_x$1;
-        vt_1$1$b1_x = v_y_wait$1$q;
-        vt_1$1$b1_e = c_ve_y$1;
-        vt_1$1$b2_x = v_z_wait$1$q;
-        vt_1$1$b2_e = c_ve_z$1;
-        gap$1$x1 = vt_1$1$y_x;
-        gap$1$e1 = vt_1$1$y_e;
+        vm_1$1$clock = clock;
+        vt_1$1$a0 = mbr_1$0$q;
+        vt_1$1$a1 = mbr_1$1$q;
+        vt_1$1$a2 = mbr_1$2$q;
+        vt_1$1$b0 = v_x_wait$1$q;
+        vt_1$1$b1 = v_y_wait$1$q;
+        vt_1$1$b2 = v_z_wait$1$q;
+        vt_1$1$c = vc_1$q;
+        vm_1$1$a0 = mgr_1$0$q;
+        vm_1$1$a1 = mgr_1$1$q;
+        vm_1$1$a2 = mgr_1$2$q;
+        vm_1$1$b0 = v_x_wait$1$q;
+        vm_1$1$b1 = v_y_wait$1$q;
+        vm_1$1$b2 = v_z_wait$1$q;
+        vm_1$1$c = m3_1$1$y;
+        vtr_1$1$clock = clock;
+        vmr_1$1$clock = clock;
+        vtr_1$1$d = vt_1$1$y;
+        vmr_1$1$d = vm_1$1$y;
+        m3_1$2$clock = clock;
+        m3_1$2$a = mg3_1$q;
+        m3_1$2$b = err$2$y;
+        m3_1$2$sub = 1'b0;
+        m3_1$2$valid_in = 1'b0;
         vt_1$2$clock = clock;
-        vt_1$2$a0_x = mb_1$0$y_x;
-        vt_1$2$a0_e = mb_1$0$y_e;
-        vt_1$2$a1_x = mb_1$1$y_x;
-        vt_1$2$a1_e = mb_1$1$y_e;
-        vt_1$2$a2_x = mb_1$2$y_x;
-        vt_1$2$a2_e = mb_1$2$y_e;
-        vt_1$2$c_x = mb_1$3$y_x;
-        vt_1$2$c_e = mb_1$3$y_e;
-        vt_1$2$b0_x = v_x_wait$2$q;
-        vt_1$2$b0_e = c_ve_x$2;
-        vt_1$2$b1_x = v_y_wait$2$q;
-        vt_1$2$b1_e = c_ve_y$2;
-        vt_1$2$b2_x = v_z_wait$2$q;
-        vt_1$2$b2_e = c_ve_z$2;
-        gap$2$x1 = vt_1$2$y_x;
-        gap$2$e1 = vt_1$2$y_e;
+        vm_1$2$clock = clock;
+        vt_1$2$a0 = mbr_1$0$q;
+        vt_1$2$a1 = mbr_1$1$q;
+        vt_1$2$a2 = mbr_1$2$q;
+        vt_1$2$b0 = v_x_wait$2$q;
+        vt_1$2$b1 = v_y_wait$2$q;
+        vt_1$2$b2 = v_z_wait$2$q;
+        vt_1$2$c = vc_1$q;
+        vm_1$2$a0 = mgr_1$0$q;
+        vm_1$2$a1 = mgr_1$1$q;
+        vm_1$2$a2 = mgr_1$2$q;
+        vm_1$2$b0 = v_x_wait$2$q;
+        vm_1$2$b1 = v_y_wait$2$q;
+        vm_1$2$b2 = v_z_wait$2$q;
+        vm_1$2$c = m3_1$2$y;
+        vtr_1$2$clock = clock;
+        vmr_1$2$clock = clock;
+        vtr_1$2$d = vt_1$2$y;
+        vmr_1$2$d = vm_1$2$y;
+        mg3_2$d = mgr_2$3$q;
+        vc_2$d = mbr_2$3$q;
+        m3_2$0$clock = clock;
+        m3_2$0$a = mg3_2$q;
+        m3_2$0$b = err$0$y;
+        m3_2$0$sub = 1'b0;
+        m3_2$0$valid_in = 1'b0;
         vt_2$0$clock = clock;
-        vt_2$0$a0_x = mb_2$0$y_x;
-        vt_2$0$a0_e = mb_2$0$y_e;
-        vt_2$0$a1_x = mb_2$1$y_x;
-        vt_2$0$a1_e = mb_2$1$y_e;
-        vt_2$0$a2_x = mb_2$2$y_x;
-        vt_2$0$a2_e = mb_2$2$y_e;
-        vt_2$0$c_x = mb_2$3$y_x;
-        vt_2$0$c_e = mb_2$3$y_e;
-        vt_2$0$b0_x = v_x_wait$0$q;
-        vt_2$0$b0_e = c_ve_x$0;
-        vt_2$0$b1_x = v_y_wait$0$q;
-        vt_2$0$b1_e = c_ve_y$0;
-        vt_2$0$b2_x = v_z_wait$0$q;
-        vt_2$0$b2_e = c_ve_z$0;
-        gap$0$x2 = vt_2$0$y_x;
-        gap$0$e2 = vt_2$0$y_e;
+        vm_2$0$clock = clock;
+        vt_2$0$a0 = mbr_2$0$q;
+        vt_2$0$a1 = mbr_2$1$q;
+        vt_2$0$a2 = mbr_2$2$q;
+        vt_2$0$b0 = v_x_wait$0$q;
+        vt_2$0$b1 = v_y_wait$0$q;
+        vt_2$0$b2 = v_z_wait$0$q;
+        vt_2$0$c = vc_2$q;
+        vm_2$0$a0 = mgr_2$0$q;
+        vm_2$0$a1 = mgr_2$1$q;
+        vm_2$0$a2 = mgr_2$2$q;
+        vm_2$0$b0 = v_x_wait$0$q;
+        vm_2$0$b1 = v_y_wait$0$q;
+        vm_2$0$b2 = v_z_wait$0$q;
+        vm_2$0$c = m3_2$0$y;
+        vtr_2$0$clock = clock;
+        vmr_2$0$clock = clock;
+        vtr_2$0$d = vt_2$0$y;
+        vmr_2$0$d = vm_2$0$y;
+        m3_2$1$clock = clock;
+        m3_2$1$a = mg3_2$q;
+        m3_2$1$b = err$1$y;
+        m3_2$1$sub = 1'b0;
+        m3_2$1$valid_in = 1'b0;
         vt_2$1$clock = clock;
-        vt_2$1$a0_x = mb_2$0$y_x;
-        vt_2$1$a0_e = mb_2$0$y_e;
-        vt_2$1$a1_x = mb_2$1$y_x;
-        vt_2$1$a1_e = mb_2$1$y_e;
-        vt_2$1$a2_x = mb_2$2$y_x;
-        vt_2$1$a2_e = mb_2$2$y_e;
-        vt_2$1$c_x = mb_2$3$y_x;
-        vt_2$1$c_e = mb_2$3$y_e;
-        vt_2$1$b0_x = v_x_wait$1$q;
-        vt_2$1$b0_e = c_ve_x$1;
-        vt_2$1$b1_x = v_y_wait$1$q;
-        vt_2$1$b1_e = c_ve_y$1;
-        vt_2$1$b2_x = v_z_wait$1$q;
-        vt_2$1$b2_e = c_ve_z$1;
-        gap$1$x2 = vt_2$1$y_x;
-        gap$1$e2 = vt_2$1$y_e;
+        vm_2$1$clock = clock;
+        vt_2$1$a0 = mbr_2$0$q;
+        vt_2$1$a1 = mbr_2$1$q;
+        vt_2$1$a2 = mbr_2$2$q;
+        vt_2$1$b0 = v_x_wait$1$q;
+        vt_2$1$b1 = v_y_wait$1$q;
+        vt_2$1$b2 = v_z_wait$1$q;
+        vt_2$1$c = vc_2$q;
+        vm_2$1$a0 = mgr_2$0$q;
+        vm_2$1$a1 = mgr_2$1$q;
+        vm_2$1$a2 = mgr_2$2$q;
+        vm_2$1$b0 = v_x_wait$1$q;
+        vm_2$1$b1 = v_y_wait$1$q;
+        vm_2$1$b2 = v_z_wait$1$q;
+        vm_2$1$c = m3_2$1$y;
+        vtr_2$1$clock = clock;
+        vmr_2$1$clock = clock;
+        vtr_2$1$d = vt_2$1$y;
+        vmr_2$1$d = vm_2$1$y;
+        m3_2$2$clock = clock;
+        m3_2$2$a = mg3_2$q;
+        m3_2$2$b = err$2$y;
+        m3_2$2$sub = 1'b0;
+        m3_2$2$valid_in = 1'b0;
         vt_2$2$clock = clock;
-        vt_2$2$a0_x = mb_2$0$y_x;
-        vt_2$2$a0_e = mb_2$0$y_e;
-        vt_2$2$a1_x = mb_2$1$y_x;
-        vt_2$2$a1_e = mb_2$1$y_e;
-        vt_2$2$a2_x = mb_2$2$y_x;
-        vt_2$2$a2_e = mb_2$2$y_e;
-        vt_2$2$c_x = mb_2$3$y_x;
-        vt_2$2$c_e = mb_2$3$y_e;
-        vt_2$2$b0_x = v_x_wait$2$q;
-        vt_2$2$b0_e = c_ve_x$2;
-        vt_2$2$b1_x = v_y_wait$2$q;
-        vt_2$2$b1_e = c_ve_y$2;
-        vt_2$2$b2_x = v_z_wait$2$q;
-        vt_2$2$b2_e = c_ve_z$2;
-        gap$2$x2 = vt_2$2$y_x;
-        gap$2$e2 = vt_2$2$y_e;
-        lambda$a = in_l_norm$q;
-        lambda$b = in_e_lin$q;
-        lambda$valid_in = 1'b0;
-        two_lambda$a = c_two;
-        two_lambda$b = lambda$y;
-        two_lambda$valid_in = 1'b0;
-        four_lambda$a = c_four;
-        four_lambda$b = lambda$y;
-        four_lambda$valid_in = 1'b0;
-        eta_early$d = in_eta$q;
-        reach$a = four_lambda$y;
-        reach$b = eta_early$q;
-        reach$valid_in = 1'b0;
-        ok_wait$d = reach$y <= c_half;
-        two_lambda_wait$d = two_lambda$y;
-        eta_wait$d = in_eta$q;
-        gap_en_wait$d = in_gap_en$q;
-        gap$0$clock = clock;
-        gap$0$two_lambda = two_lambda_wait$q;
-        gap$0$eta = eta_wait$q;
-        gap$0$ok = ok_wait$q;
-        gap$0$en = gap_en_wait$q;
-        gap$1$clock = clock;
-        gap$1$two_lambda = two_lambda_wait$q;
-        gap$1$eta = eta_wait$q;
-        gap$1$ok = ok_wait$q;
-        gap$1$en = gap_en_wait$q;
-        gap$2$clock = clock;
-        gap$2$two_lambda = two_lambda_wait$q;
-        gap$2$eta = eta_wait$q;
-        gap$2$ok = ok_wait$q;
-        gap$2$en = gap_en_wait$q;
-        edges$0$p0_x = gap$0$y0_x;
-        edges$0$q0_x = gap$1$y0_x;
-        edges$0$p0_e = gap$0$y0_e;
-        edges$0$q0_e = gap$1$y0_e;
-        edges$0$p1_x = gap$0$y1_x;
-        edges$0$q1_x = gap$1$y1_x;
-        edges$0$p1_e = gap$0$y1_e;
-        edges$0$q1_e = gap$1$y1_e;
-        edges$0$p2_x = gap$0$y2_x;
-        edges$0$q2_x = gap$1$y2_x;
-        edges$0$p2_e = gap$0$y2_e;
-        edges$0$q2_e = gap$1$y2_e;
-        edges$1$p0_x = gap$1$y0_x;
-        edges$1$q0_x = gap$2$y0_x;
-        edges$1$p0_e = gap$1$y0_e;
-        edges$1$q0_e = gap$2$y0_e;
-        edges$1$p1_x = gap$1$y1_x;
-        edges$1$q1_x = gap$2$y1_x;
-        edges$1$p1_e = gap$1$y1_e;
-        edges$1$q1_e = gap$2$y1_e;
-        edges$1$p2_x = gap$1$y2_x;
-        edges$1$q2_x = gap$2$y2_x;
-        edges$1$p2_e = gap$1$y2_e;
-        edges$1$q2_e = gap$2$y2_e;
-        edges$2$p0_x = gap$2$y0_x;
-        edges$2$q0_x = gap$0$y0_x;
-        edges$2$p0_e = gap$2$y0_e;
-        edges$2$q0_e = gap$0$y0_e;
-        edges$2$p1_x = gap$2$y1_x;
-        edges$2$q1_x = gap$0$y1_x;
-        edges$2$p1_e = gap$2$y1_e;
-        edges$2$q1_e = gap$0$y1_e;
-        edges$2$p2_x = gap$2$y2_x;
-        edges$2$q2_x = gap$0$y2_x;
-        edges$2$p2_e = gap$2$y2_e;
-        edges$2$q2_e = gap$0$y2_e;
+        vm_2$2$clock = clock;
+        vt_2$2$a0 = mbr_2$0$q;
+        vt_2$2$a1 = mbr_2$1$q;
+        vt_2$2$a2 = mbr_2$2$q;
+        vt_2$2$b0 = v_x_wait$2$q;
+        vt_2$2$b1 = v_y_wait$2$q;
+        vt_2$2$b2 = v_z_wait$2$q;
+        vt_2$2$c = vc_2$q;
+        vm_2$2$a0 = mgr_2$0$q;
+        vm_2$2$a1 = mgr_2$1$q;
+        vm_2$2$a2 = mgr_2$2$q;
+        vm_2$2$b0 = v_x_wait$2$q;
+        vm_2$2$b1 = v_y_wait$2$q;
+        vm_2$2$b2 = v_z_wait$2$q;
+        vm_2$2$c = m3_2$2$y;
+        vtr_2$2$clock = clock;
+        vmr_2$2$clock = clock;
+        vtr_2$2$d = vt_2$2$y;
+        vmr_2$2$d = vm_2$2$y;
+        exact_wait$d = in_v_exact$q;
+        c_v = c_v_rounded;
+        if (exact_wait$q) begin
+            c_v = c_v_exact;
+        end
+        verts$0$clock = clock;
+        verts$0$c_v = c_v;
+        verts$0$x0 = vtr_0$0$q;
+        verts$0$x1 = vtr_1$0$q;
+        verts$0$x2 = vtr_2$0$q;
+        verts$0$m0 = vmr_0$0$q;
+        verts$0$m1 = vmr_1$0$q;
+        verts$0$m2 = vmr_2$0$q;
+        verts$1$clock = clock;
+        verts$1$c_v = c_v;
+        verts$1$x0 = vtr_0$1$q;
+        verts$1$x1 = vtr_1$1$q;
+        verts$1$x2 = vtr_2$1$q;
+        verts$1$m0 = vmr_0$1$q;
+        verts$1$m1 = vmr_1$1$q;
+        verts$1$m2 = vmr_2$1$q;
+        verts$2$clock = clock;
+        verts$2$c_v = c_v;
+        verts$2$x0 = vtr_0$2$q;
+        verts$2$x1 = vtr_1$2$q;
+        verts$2$x2 = vtr_2$2$q;
+        verts$2$m0 = vmr_0$2$q;
+        verts$2$m1 = vmr_1$2$q;
+        verts$2$m2 = vmr_2$2$q;
+        edges$0$p0 = vtr_0$0$q;
+        edges$0$p1 = vtr_1$0$q;
+        edges$0$p2 = vtr_2$0$q;
+        edges$0$q0 = vtr_0$1$q;
+        edges$0$q1 = vtr_1$1$q;
+        edges$0$q2 = vtr_2$1$q;
+        edges$0$pe = verts$0$e;
+        edges$0$qe = verts$1$e;
+        edges$0$pf0 = verts$0$f0;
+        edges$0$pf1 = verts$0$f1;
+        edges$0$pf2 = verts$0$f2;
+        edges$0$qf0 = verts$1$f0;
+        edges$0$qf1 = verts$1$f1;
+        edges$0$qf2 = verts$1$f2;
+        edges$0$ph = verts$0$h;
+        edges$0$qh = verts$1$h;
+        edges$1$p0 = vtr_0$1$q;
+        edges$1$p1 = vtr_1$1$q;
+        edges$1$p2 = vtr_2$1$q;
+        edges$1$q0 = vtr_0$2$q;
+        edges$1$q1 = vtr_1$2$q;
+        edges$1$q2 = vtr_2$2$q;
+        edges$1$pe = verts$1$e;
+        edges$1$qe = verts$2$e;
+        edges$1$pf0 = verts$1$f0;
+        edges$1$pf1 = verts$1$f1;
+        edges$1$pf2 = verts$1$f2;
+        edges$1$qf0 = verts$2$f0;
+        edges$1$qf1 = verts$2$f1;
+        edges$1$qf2 = verts$2$f2;
+        edges$1$ph = verts$1$h;
+        edges$1$qh = verts$2$h;
+        edges$2$p0 = vtr_0$2$q;
+        edges$2$p1 = vtr_1$2$q;
+        edges$2$p2 = vtr_2$2$q;
+        edges$2$q0 = vtr_0$0$q;
+        edges$2$q1 = vtr_1$0$q;
+        edges$2$q2 = vtr_2$0$q;
+        edges$2$pe = verts$2$e;
+        edges$2$qe = verts$0$e;
+        edges$2$pf0 = verts$2$f0;
+        edges$2$pf1 = verts$2$f1;
+        edges$2$pf2 = verts$2$f2;
+        edges$2$qf0 = verts$0$f0;
+        edges$2$qf1 = verts$0$f1;
+        edges$2$qf2 = verts$0$f2;
+        edges$2$ph = verts$2$h;
+        edges$2$qh = verts$0$h;
         tag_wait$d = in_tag$q;
         valid_wait$d = in_valid$q;
         hit_any = 1'b0;
         miss_all = 1'b1;
         edges$0$clock = clock;
+        v_cross_t$0$clock = clock;
+        v_cross_f$0$clock = clock;
+        v_s_x$0$clock = clock;
+        v_s_b$0$clock = clock;
         out_s_x$0$clock = clock;
-        out_s_e$0$clock = clock;
+        out_s_b$0$clock = clock;
         out_cross_t$0$clock = clock;
         out_cross_f$0$clock = clock;
-        out_s_x$0$d = edges$0$s_x;
-        out_s_e$0$d = edges$0$s_e;
-        out_cross_t$0$d = edges$0$cross_t;
-        out_cross_f$0$d = edges$0$cross_f;
-        if (edges$0$cross_t) begin
+        v_cross_t$0$d = edges$0$cross_t;
+        v_cross_f$0$d = edges$0$cross_f;
+        v_s_x$0$d = edges$0$s_x;
+        v_s_b$0$d = edges$0$s_b;
+        out_s_x$0$d = v_s_x$0$q;
+        out_s_b$0$d = v_s_b$0$q;
+        out_cross_t$0$d = v_cross_t$0$q;
+        out_cross_f$0$d = v_cross_f$0$q;
+        if (v_cross_t$0$q) begin
             hit_any = 1'b1;
         end
-        if (~edges$0$cross_f) begin
+        if (~v_cross_f$0$q) begin
             miss_all = 1'b0;
         end
         s_x$0 = out_s_x$0$q;
-        s_e$0 = out_s_e$0$q;
+        s_b$0 = out_s_b$0$q;
         cross_t$0 = out_cross_t$0$q;
         cross_f$0 = out_cross_f$0$q;
         edges$1$clock = clock;
+        v_cross_t$1$clock = clock;
+        v_cross_f$1$clock = clock;
+        v_s_x$1$clock = clock;
+        v_s_b$1$clock = clock;
         out_s_x$1$clock = clock;
-        out_s_e$1$clock = clock;
+        out_s_b$1$clock = clock;
         out_cross_t$1$clock = clock;
         out_cross_f$1$clock = clock;
-        out_s_x$1$d = edges$1$s_x;
-        out_s_e$1$d = edges$1$s_e;
-        out_cross_t$1$d = edges$1$cross_t;
-        out_cross_f$1$d = edges$1$cross_f;
-        if (edges$1$cross_t) begin
+        v_cross_t$1$d = edges$1$cross_t;
+        v_cross_f$1$d = edges$1$cross_f;
+        v_s_x$1$d = edges$1$s_x;
+        v_s_b$1$d = edges$1$s_b;
+        out_s_x$1$d = v_s_x$1$q;
+        out_s_b$1$d = v_s_b$1$q;
+        out_cross_t$1$d = v_cross_t$1$q;
+        out_cross_f$1$d = v_cross_f$1$q;
+        if (v_cross_t$1$q) begin
             hit_any = 1'b1;
         end
-        if (~edges$1$cross_f) begin
+        if (~v_cross_f$1$q) begin
             miss_all = 1'b0;
         end
         s_x$1 = out_s_x$1$q;
-        s_e$1 = out_s_e$1$q;
+        s_b$1 = out_s_b$1$q;
         cross_t$1 = out_cross_t$1$q;
         cross_f$1 = out_cross_f$1$q;
         edges$2$clock = clock;
+        v_cross_t$2$clock = clock;
+        v_cross_f$2$clock = clock;
+        v_s_x$2$clock = clock;
+        v_s_b$2$clock = clock;
         out_s_x$2$clock = clock;
-        out_s_e$2$clock = clock;
+        out_s_b$2$clock = clock;
         out_cross_t$2$clock = clock;
         out_cross_f$2$clock = clock;
-        out_s_x$2$d = edges$2$s_x;
-        out_s_e$2$d = edges$2$s_e;
-        out_cross_t$2$d = edges$2$cross_t;
-        out_cross_f$2$d = edges$2$cross_f;
-        if (edges$2$cross_t) begin
+        v_cross_t$2$d = edges$2$cross_t;
+        v_cross_f$2$d = edges$2$cross_f;
+        v_s_x$2$d = edges$2$s_x;
+        v_s_b$2$d = edges$2$s_b;
+        out_s_x$2$d = v_s_x$2$q;
+        out_s_b$2$d = v_s_b$2$q;
+        out_cross_t$2$d = v_cross_t$2$q;
+        out_cross_f$2$d = v_cross_f$2$q;
+        if (v_cross_t$2$q) begin
             hit_any = 1'b1;
         end
-        if (~edges$2$cross_f) begin
+        if (~v_cross_f$2$q) begin
             miss_all = 1'b0;
         end
         s_x$2 = out_s_x$2$q;
-        s_e$2 = out_s_e$2$q;
+        s_b$2 = out_s_b$2$q;
         cross_t$2 = out_cross_t$2$q;
         cross_f$2 = out_cross_f$2$q;
         out_hit$d = hit_any;
@@ -2593,550 +3451,7 @@ module top(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,m_2
 endmodule // top
 
 
-module top$edges$0(clock,p0_x,p0_e,p1_x,p1_e,p2_x,p2_e,q0_x,q0_e,q1_x,q1_e,q2_x,q2_e,s_x,s_e,cross_t,cross_f);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [31:0] p0_x;
-    input wire  [31:0] p0_e;
-    input wire  [31:0] p1_x;
-    input wire  [31:0] p1_e;
-    input wire  [31:0] p2_x;
-    input wire  [31:0] p2_e;
-    input wire  [31:0] q0_x;
-    input wire  [31:0] q0_e;
-    input wire  [31:0] q1_x;
-    input wire  [31:0] q1_e;
-    input wire  [31:0] q2_x;
-    input wire  [31:0] q2_e;
-    output reg  [31:0] s_x;
-    output reg  [31:0] s_e;
-    output reg  cross_t;
-    output reg  cross_f;
-    
-    // Stub signals
-    reg  px_qz$clock;
-    reg  [31:0] px_qz$ax;
-    reg  [31:0] px_qz$ae;
-    reg  [31:0] px_qz$bx;
-    reg  [31:0] px_qz$be;
-    wire  [31:0] px_qz$x;
-    wire  [31:0] px_qz$e;
-    reg  qx_pz$clock;
-    reg  [31:0] qx_pz$ax;
-    reg  [31:0] qx_pz$ae;
-    reg  [31:0] qx_pz$bx;
-    reg  [31:0] qx_pz$be;
-    wire  [31:0] qx_pz$x;
-    wire  [31:0] qx_pz$e;
-    reg  py_qz$clock;
-    reg  [31:0] py_qz$ax;
-    reg  [31:0] py_qz$ae;
-    reg  [31:0] py_qz$bx;
-    reg  [31:0] py_qz$be;
-    wire  [31:0] py_qz$x;
-    wire  [31:0] py_qz$e;
-    reg  qy_pz$clock;
-    reg  [31:0] qy_pz$ax;
-    reg  [31:0] qy_pz$ae;
-    reg  [31:0] qy_pz$bx;
-    reg  [31:0] qy_pz$be;
-    wire  [31:0] qy_pz$x;
-    wire  [31:0] qy_pz$e;
-    reg  pz_x_wait$clock;
-    reg  [31:0] pz_x_wait$d;
-    wire  [31:0] pz_x_wait$q;
-    reg  pz_e_wait$clock;
-    reg  [31:0] pz_e_wait$d;
-    wire  [31:0] pz_e_wait$q;
-    reg  qz_x_wait$clock;
-    reg  [31:0] qz_x_wait$d;
-    wire  [31:0] qz_x_wait$q;
-    reg  qz_e_wait$clock;
-    reg  [31:0] qz_e_wait$d;
-    wire  [31:0] qz_e_wait$q;
-    reg  a$clock;
-    reg  [31:0] a$ax;
-    reg  [31:0] a$ae;
-    reg  [31:0] a$bx;
-    reg  [31:0] a$be;
-    reg  a$sub;
-    wire  [31:0] a$x;
-    wire  [31:0] a$e;
-    reg  b$clock;
-    reg  [31:0] b$ax;
-    reg  [31:0] b$ae;
-    reg  [31:0] b$bx;
-    reg  [31:0] b$be;
-    reg  b$sub;
-    wire  [31:0] b$x;
-    wire  [31:0] b$e;
-    reg  rz$clock;
-    reg  [31:0] rz$ax;
-    reg  [31:0] rz$ae;
-    reg  [31:0] rz$bx;
-    reg  [31:0] rz$be;
-    reg  rz$sub;
-    wire  [31:0] rz$x;
-    wire  [31:0] rz$e;
-    reg  ab$clock;
-    reg  [31:0] ab$ax;
-    reg  [31:0] ab$ae;
-    reg  [31:0] ab$bx;
-    reg  [31:0] ab$be;
-    reg  ab$sub;
-    wire  [31:0] ab$x;
-    wire  [31:0] ab$e;
-    reg  rz_x_wait$clock;
-    reg  [31:0] rz_x_wait$d;
-    wire  [31:0] rz_x_wait$q;
-    reg  rz_e_wait$clock;
-    reg  [31:0] rz_e_wait$d;
-    wire  [31:0] rz_e_wait$q;
-    reg  s$clock;
-    reg  [31:0] s$ax;
-    reg  [31:0] s$ae;
-    reg  [31:0] s$bx;
-    reg  [31:0] s$be;
-    reg  s$sub;
-    wire  [31:0] s$x;
-    wire  [31:0] s$e;
-    reg  [31:0] sign_pz$x;
-    reg  [31:0] sign_pz$e;
-    wire  [1:0] sign_pz$sgn;
-    reg  [31:0] sign_qz$x;
-    reg  [31:0] sign_qz$e;
-    wire  [1:0] sign_qz$sgn;
-    reg  [31:0] sign_rz$x;
-    reg  [31:0] sign_rz$e;
-    wire  [1:0] sign_rz$sgn;
-    reg  [31:0] sign_a$x;
-    reg  [31:0] sign_a$e;
-    wire  [1:0] sign_a$sgn;
-    reg  [31:0] sign_b$x;
-    reg  [31:0] sign_b$e;
-    wire  [1:0] sign_b$sgn;
-    reg  [31:0] sign_s$x;
-    reg  [31:0] sign_s$e;
-    wire  [1:0] sign_s$sgn;
-    reg  pz_sgn_wait$clock;
-    reg  [1:0] pz_sgn_wait$d;
-    wire  [1:0] pz_sgn_wait$q;
-    reg  qz_sgn_wait$clock;
-    reg  [1:0] qz_sgn_wait$d;
-    wire  [1:0] qz_sgn_wait$q;
-    reg  rz_sgn_wait$clock;
-    reg  [1:0] rz_sgn_wait$d;
-    wire  [1:0] rz_sgn_wait$q;
-    reg  a_sgn_wait$clock;
-    reg  [1:0] a_sgn_wait$d;
-    wire  [1:0] a_sgn_wait$q;
-    reg  b_sgn_wait$clock;
-    reg  [1:0] b_sgn_wait$d;
-    wire  [1:0] b_sgn_wait$q;
-    
-    // Local signals
-    reg  pz_p;
-    reg  pz_n;
-    reg  qz_p;
-    reg  qz_n;
-    reg  rz_p;
-    reg  rz_n;
-    reg  a_p;
-    reg  a_n;
-    reg  b_p;
-    reg  b_n;
-    reg  s_p;
-    reg  s_n;
-    
-    // Sub module instances
-    top$edges$0$px_qz px_qz(
-        .clock(px_qz$clock),
-        .ax(px_qz$ax),
-        .ae(px_qz$ae),
-        .bx(px_qz$bx),
-        .be(px_qz$be),
-        .x(px_qz$x),
-        .e(px_qz$e)
-    );
-    top$edges$0$px_qz qx_pz(
-        .clock(qx_pz$clock),
-        .ax(qx_pz$ax),
-        .ae(qx_pz$ae),
-        .bx(qx_pz$bx),
-        .be(qx_pz$be),
-        .x(qx_pz$x),
-        .e(qx_pz$e)
-    );
-    top$edges$0$px_qz py_qz(
-        .clock(py_qz$clock),
-        .ax(py_qz$ax),
-        .ae(py_qz$ae),
-        .bx(py_qz$bx),
-        .be(py_qz$be),
-        .x(py_qz$x),
-        .e(py_qz$e)
-    );
-    top$edges$0$px_qz qy_pz(
-        .clock(qy_pz$clock),
-        .ax(qy_pz$ax),
-        .ae(qy_pz$ae),
-        .bx(qy_pz$bx),
-        .be(qy_pz$be),
-        .x(qy_pz$x),
-        .e(qy_pz$e)
-    );
-    top$edges$0$pz_e_wait pz_x_wait(
-        .clock(pz_x_wait$clock),
-        .d(pz_x_wait$d),
-        .q(pz_x_wait$q)
-    );
-    top$edges$0$pz_e_wait pz_e_wait(
-        .clock(pz_e_wait$clock),
-        .d(pz_e_wait$d),
-        .q(pz_e_wait$q)
-    );
-    top$edges$0$pz_e_wait qz_x_wait(
-        .clock(qz_x_wait$clock),
-        .d(qz_x_wait$d),
-        .q(qz_x_wait$q)
-    );
-    top$edges$0$pz_e_wait qz_e_wait(
-        .clock(qz_e_wait$clock),
-        .d(qz_e_wait$d),
-        .q(qz_e_wait$q)
-    );
-    top$edges$0$a a(
-        .clock(a$clock),
-        .ax(a$ax),
-        .ae(a$ae),
-        .bx(a$bx),
-        .be(a$be),
-        .sub(a$sub),
-        .x(a$x),
-        .e(a$e)
-    );
-    top$edges$0$a b(
-        .clock(b$clock),
-        .ax(b$ax),
-        .ae(b$ae),
-        .bx(b$bx),
-        .be(b$be),
-        .sub(b$sub),
-        .x(b$x),
-        .e(b$e)
-    );
-    top$edges$0$a rz(
-        .clock(rz$clock),
-        .ax(rz$ax),
-        .ae(rz$ae),
-        .bx(rz$bx),
-        .be(rz$be),
-        .sub(rz$sub),
-        .x(rz$x),
-        .e(rz$e)
-    );
-    top$edges$0$a ab(
-        .clock(ab$clock),
-        .ax(ab$ax),
-        .ae(ab$ae),
-        .bx(ab$bx),
-        .be(ab$be),
-        .sub(ab$sub),
-        .x(ab$x),
-        .e(ab$e)
-    );
-    top$edges$0$rz_e_wait rz_x_wait(
-        .clock(rz_x_wait$clock),
-        .d(rz_x_wait$d),
-        .q(rz_x_wait$q)
-    );
-    top$edges$0$rz_e_wait rz_e_wait(
-        .clock(rz_e_wait$clock),
-        .d(rz_e_wait$d),
-        .q(rz_e_wait$q)
-    );
-    top$edges$0$a s(
-        .clock(s$clock),
-        .ax(s$ax),
-        .ae(s$ae),
-        .bx(s$bx),
-        .be(s$be),
-        .sub(s$sub),
-        .x(s$x),
-        .e(s$e)
-    );
-    top$edges$0$sign_a sign_pz(
-        .x(sign_pz$x),
-        .e(sign_pz$e),
-        .sgn(sign_pz$sgn)
-    );
-    top$edges$0$sign_a sign_qz(
-        .x(sign_qz$x),
-        .e(sign_qz$e),
-        .sgn(sign_qz$sgn)
-    );
-    top$edges$0$sign_a sign_rz(
-        .x(sign_rz$x),
-        .e(sign_rz$e),
-        .sgn(sign_rz$sgn)
-    );
-    top$edges$0$sign_a sign_a(
-        .x(sign_a$x),
-        .e(sign_a$e),
-        .sgn(sign_a$sgn)
-    );
-    top$edges$0$sign_a sign_b(
-        .x(sign_b$x),
-        .e(sign_b$e),
-        .sgn(sign_b$sgn)
-    );
-    top$edges$0$sign_a sign_s(
-        .x(sign_s$x),
-        .e(sign_s$e),
-        .sgn(sign_s$sgn)
-    );
-    top$edges$0$pz_sgn_wait pz_sgn_wait(
-        .clock(pz_sgn_wait$clock),
-        .d(pz_sgn_wait$d),
-        .q(pz_sgn_wait$q)
-    );
-    top$edges$0$pz_sgn_wait qz_sgn_wait(
-        .clock(qz_sgn_wait$clock),
-        .d(qz_sgn_wait$d),
-        .q(qz_sgn_wait$q)
-    );
-    top$edges$0$a_sgn_wait rz_sgn_wait(
-        .clock(rz_sgn_wait$clock),
-        .d(rz_sgn_wait$d),
-        .q(rz_sgn_wait$q)
-    );
-    top$edges$0$a_sgn_wait a_sgn_wait(
-        .clock(a_sgn_wait$clock),
-        .d(a_sgn_wait$d),
-        .q(a_sgn_wait$q)
-    );
-    top$edges$0$a_sgn_wait b_sgn_wait(
-        .clock(b_sgn_wait$clock),
-        .d(b_sgn_wait$d),
-        .q(b_sgn_wait$q)
-    );
-    
-    // Update code
-    always @(*) begin
-        px_qz$clock = clock;
-        qx_pz$clock = clock;
-        py_qz$clock = clock;
-        qy_pz$clock = clock;
-        pz_x_wait$clock = clock;
-        pz_e_wait$clock = clock;
-        qz_x_wait$clock = clock;
-        qz_e_wait$clock = clock;
-        a$clock = clock;
-        b$clock = clock;
-        rz$clock = clock;
-        ab$clock = clock;
-        rz_x_wait$clock = clock;
-        rz_e_wait$clock = clock;
-        s$clock = clock;
-        pz_sgn_wait$clock = clock;
-        qz_sgn_wait$clock = clock;
-        rz_sgn_wait$clock = clock;
-        a_sgn_wait$clock = clock;
-        b_sgn_wait$clock = clock;
-        px_qz$ax = p0_x;
-        px_qz$ae = p0_e;
-        px_qz$bx = q2_x;
-        px_qz$be = q2_e;
-        qx_pz$ax = q0_x;
-        qx_pz$ae = q0_e;
-        qx_pz$bx = p2_x;
-        qx_pz$be = p2_e;
-        py_qz$ax = p1_x;
-        py_qz$ae = p1_e;
-        py_qz$bx = q2_x;
-        py_qz$be = q2_e;
-        qy_pz$ax = q1_x;
-        qy_pz$ae = q1_e;
-        qy_pz$bx = p2_x;
-        qy_pz$be = p2_e;
-        a$ax = px_qz$x;
-        a$ae = px_qz$e;
-        a$bx = qx_pz$x;
-        a$be = qx_pz$e;
-        a$sub = 1'b1;
-        b$ax = py_qz$x;
-        b$ae = py_qz$e;
-        b$bx = qy_pz$x;
-        b$be = qy_pz$e;
-        b$sub = 1'b1;
-        pz_x_wait$d = p2_x;
-        pz_e_wait$d = p2_e;
-        qz_x_wait$d = q2_x;
-        qz_e_wait$d = q2_e;
-        rz$ax = qz_x_wait$q;
-        rz$ae = qz_e_wait$q;
-        rz$bx = pz_x_wait$q;
-        rz$be = pz_e_wait$q;
-        rz$sub = 1'b1;
-        ab$ax = a$x;
-        ab$ae = a$e;
-        ab$bx = b$x;
-        ab$be = b$e;
-        ab$sub = 1'b0;
-        rz_x_wait$d = rz$x;
-        rz_e_wait$d = rz$e;
-        s$ax = ab$x;
-        s$ae = ab$e;
-        s$bx = rz_x_wait$q;
-        s$be = rz_e_wait$q;
-        s$sub = 1'b1;
-        sign_pz$x = p2_x;
-        sign_pz$e = p2_e;
-        sign_qz$x = q2_x;
-        sign_qz$e = q2_e;
-        pz_sgn_wait$d = sign_pz$sgn;
-        qz_sgn_wait$d = sign_qz$sgn;
-        sign_rz$x = rz$x;
-        sign_rz$e = rz$e;
-        sign_a$x = a$x;
-        sign_a$e = a$e;
-        sign_b$x = b$x;
-        sign_b$e = b$e;
-        rz_sgn_wait$d = sign_rz$sgn;
-        a_sgn_wait$d = sign_a$sgn;
-        b_sgn_wait$d = sign_b$sgn;
-        sign_s$x = s$x;
-        sign_s$e = s$e;
-        pz_p = pz_sgn_wait$q[32'h0];
-        pz_n = pz_sgn_wait$q[32'h1];
-        qz_p = qz_sgn_wait$q[32'h0];
-        qz_n = qz_sgn_wait$q[32'h1];
-        rz_p = rz_sgn_wait$q[32'h0];
-        rz_n = rz_sgn_wait$q[32'h1];
-        a_p = a_sgn_wait$q[32'h0];
-        a_n = a_sgn_wait$q[32'h1];
-        b_p = b_sgn_wait$q[32'h0];
-        b_n = b_sgn_wait$q[32'h1];
-        s_p = sign_s$sgn[32'h0];
-        s_n = sign_s$sgn[32'h1];
-        cross_t = (pz_n & qz_p & rz_p & a_p & b_p & s_n) | (pz_p & qz_n & rz_n & a_n & b_n & s_p);
-        cross_f = (pz_p | qz_n | rz_n | a_n | b_n | s_p) & (pz_n | qz_p | rz_p | a_p | b_p | s_n);
-        s_x = s$x;
-        s_e = s$e;
-    end
-    
-endmodule // top$edges$0
-
-
-module top$edges$0$a(clock,ax,ae,bx,be,sub,x,e);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [31:0] ax;
-    input wire  [31:0] ae;
-    input wire  [31:0] bx;
-    input wire  [31:0] be;
-    input wire  sub;
-    output reg  [31:0] x;
-    output reg  [31:0] e;
-    
-    // Stub signals
-    reg  add$clock;
-    reg  [31:0] add$a;
-    reg  [31:0] add$b;
-    reg  add$sub;
-    reg  add$valid_in;
-    wire  [31:0] add$y;
-    wire  add$valid_out;
-    reg  err$clock;
-    reg  [31:0] err$x;
-    reg  err$valid_in;
-    wire  [31:0] err$y;
-    wire  err$valid_out;
-    reg  s_ab$clock;
-    reg  [31:0] s_ab$a;
-    reg  [31:0] s_ab$b;
-    reg  s_ab$valid_in;
-    wire  [31:0] s_ab$y;
-    wire  s_ab$valid_out;
-    reg  s_err$clock;
-    reg  [31:0] s_err$a;
-    reg  [31:0] s_err$b;
-    reg  s_err$valid_in;
-    wire  [31:0] s_err$y;
-    wire  s_err$valid_out;
-    reg  x_wait$clock;
-    reg  [31:0] x_wait$d;
-    wire  [31:0] x_wait$q;
-    
-    // Sub module instances
-    top$edges$0$a$add add(
-        .clock(add$clock),
-        .a(add$a),
-        .b(add$b),
-        .sub(add$sub),
-        .valid_in(add$valid_in),
-        .y(add$y),
-        .valid_out(add$valid_out)
-    );
-    top$edges$0$a$err err(
-        .clock(err$clock),
-        .x(err$x),
-        .valid_in(err$valid_in),
-        .y(err$y),
-        .valid_out(err$valid_out)
-    );
-    top$edges$0$a$s_ab s_ab(
-        .clock(s_ab$clock),
-        .a(s_ab$a),
-        .b(s_ab$b),
-        .valid_in(s_ab$valid_in),
-        .y(s_ab$y),
-        .valid_out(s_ab$valid_out)
-    );
-    top$edges$0$a$s_ab s_err(
-        .clock(s_err$clock),
-        .a(s_err$a),
-        .b(s_err$b),
-        .valid_in(s_err$valid_in),
-        .y(s_err$y),
-        .valid_out(s_err$valid_out)
-    );
-    top$edges$0$a$x_wait x_wait(
-        .clock(x_wait$clock),
-        .d(x_wait$d),
-        .q(x_wait$q)
-    );
-    
-    // Update code
-    always @(*) begin
-        add$clock = clock;
-        err$clock = clock;
-        s_ab$clock = clock;
-        s_err$clock = clock;
-        x_wait$clock = clock;
-        add$a = ax;
-        add$b = bx;
-        add$sub = sub;
-        add$valid_in = 1'b0;
-        err$x = add$y;
-        err$valid_in = 1'b0;
-        s_ab$a = ae;
-        s_ab$b = be;
-        s_ab$valid_in = 1'b0;
-        s_err$a = s_ab$y;
-        s_err$b = err$y;
-        s_err$valid_in = 1'b0;
-        x_wait$d = add$y;
-        x = x_wait$q;
-        e = s_err$y;
-    end
-    
-endmodule // top$edges$0$a
-
-
-module top$edges$0$a$add(clock,a,b,sub,valid_in,y,valid_out);
+module top$aerr(clock,a,b,sub,valid_in,y,valid_out);
     
     // Module arguments
     input wire  clock;
@@ -3148,7 +3463,7 @@ module top$edges$0$a$add(clock,a,b,sub,valid_in,y,valid_out);
     output reg  valid_out;
     
     // Constant declarations
-    localparam  round_up = 1'b0;
+    localparam  round_up = 1'b1;
     localparam  c_align_cap = 8'h1b;
     localparam  c_exp_ones = 10'b11111111;
     
@@ -3268,7 +3583,7 @@ module top$edges$0$a$add(clock,a,b,sub,valid_in,y,valid_out);
     reg  c2_sign;
     
     // Sub module instances
-    top$edges$0$a$add$unpack_a unpack_a(
+    top$aerr$unpack_a unpack_a(
         .x(unpack_a$x),
         .sign(unpack_a$sign),
         .exp(unpack_a$exp),
@@ -3277,7 +3592,7 @@ module top$edges$0$a$add(clock,a,b,sub,valid_in,y,valid_out);
         .is_inf(unpack_a$is_inf),
         .is_nan(unpack_a$is_nan)
     );
-    top$edges$0$a$add$unpack_a unpack_b(
+    top$aerr$unpack_a unpack_b(
         .x(unpack_b$x),
         .sign(unpack_b$sign),
         .exp(unpack_b$exp),
@@ -3286,102 +3601,102 @@ module top$edges$0$a$add(clock,a,b,sub,valid_in,y,valid_out);
         .is_inf(unpack_b$is_inf),
         .is_nan(unpack_b$is_nan)
     );
-    top$edges$0$a$add$s1_eff_sub s1_valid(
+    top$aerr$s1_eff_sub s1_valid(
         .d(s1_valid$d),
         .q(s1_valid$q),
         .clock(s1_valid$clock)
     );
-    top$edges$0$a$add$s1_eff_sub s1_nan(
+    top$aerr$s1_eff_sub s1_nan(
         .d(s1_nan$d),
         .q(s1_nan$q),
         .clock(s1_nan$clock)
     );
-    top$edges$0$a$add$s1_eff_sub s1_inf(
+    top$aerr$s1_eff_sub s1_inf(
         .d(s1_inf$d),
         .q(s1_inf$q),
         .clock(s1_inf$clock)
     );
-    top$edges$0$a$add$s1_eff_sub s1_inf_sign(
+    top$aerr$s1_eff_sub s1_inf_sign(
         .d(s1_inf_sign$d),
         .q(s1_inf_sign$q),
         .clock(s1_inf_sign$clock)
     );
-    top$edges$0$a$add$s1_eff_sub s1_zero_sign(
+    top$aerr$s1_eff_sub s1_zero_sign(
         .d(s1_zero_sign$d),
         .q(s1_zero_sign$q),
         .clock(s1_zero_sign$clock)
     );
-    top$edges$0$a$add$s1_eff_sub s1_sign(
+    top$aerr$s1_eff_sub s1_sign(
         .d(s1_sign$d),
         .q(s1_sign$q),
         .clock(s1_sign$clock)
     );
-    top$edges$0$a$add$s1_eff_sub s1_eff_sub(
+    top$aerr$s1_eff_sub s1_eff_sub(
         .d(s1_eff_sub$d),
         .q(s1_eff_sub$q),
         .clock(s1_eff_sub$clock)
     );
-    top$edges$0$a$add$s1_exp s1_exp(
+    top$aerr$s1_exp s1_exp(
         .d(s1_exp$d),
         .q(s1_exp$q),
         .clock(s1_exp$clock)
     );
-    top$edges$0$a$add$s1_big s1_big(
+    top$aerr$s1_big s1_big(
         .d(s1_big$d),
         .q(s1_big$q),
         .clock(s1_big$clock)
     );
-    top$edges$0$a$add$s1_big s1_small(
+    top$aerr$s1_big s1_small(
         .d(s1_small$d),
         .q(s1_small$q),
         .clock(s1_small$clock)
     );
-    top$edges$0$a$add$norm norm(
+    top$aerr$norm norm(
         .x(norm$x),
         .y(norm$y),
         .lz(norm$lz)
     );
-    top$edges$0$a$add$s1_eff_sub s2_valid(
+    top$aerr$s1_eff_sub s2_valid(
         .d(s2_valid$d),
         .q(s2_valid$q),
         .clock(s2_valid$clock)
     );
-    top$edges$0$a$add$s1_eff_sub s2_sign(
+    top$aerr$s1_eff_sub s2_sign(
         .d(s2_sign$d),
         .q(s2_sign$q),
         .clock(s2_sign$clock)
     );
-    top$edges$0$a$add$s1_eff_sub s2_nan(
+    top$aerr$s1_eff_sub s2_nan(
         .d(s2_nan$d),
         .q(s2_nan$q),
         .clock(s2_nan$clock)
     );
-    top$edges$0$a$add$s1_eff_sub s2_inf(
+    top$aerr$s1_eff_sub s2_inf(
         .d(s2_inf$d),
         .q(s2_inf$q),
         .clock(s2_inf$clock)
     );
-    top$edges$0$a$add$s1_eff_sub s2_zero(
+    top$aerr$s1_eff_sub s2_zero(
         .d(s2_zero$d),
         .q(s2_zero$q),
         .clock(s2_zero$clock)
     );
-    top$edges$0$a$add$s1_eff_sub s2_ovf(
+    top$aerr$s1_eff_sub s2_ovf(
         .d(s2_ovf$d),
         .q(s2_ovf$q),
         .clock(s2_ovf$clock)
     );
-    top$edges$0$a$add$s1_exp s2_efield(
+    top$aerr$s1_exp s2_efield(
         .d(s2_efield$d),
         .q(s2_efield$q),
         .clock(s2_efield$clock)
     );
-    top$edges$0$a$add$s2_nm s2_nm(
+    top$aerr$s2_nm s2_nm(
         .d(s2_nm$d),
         .q(s2_nm$q),
         .clock(s2_nm$clock)
     );
-    top$edges$0$a$add$round round(
+    top$aerr$round round(
         .round_up(round$round_up),
         .sign(round$sign),
         .nan(round$nan),
@@ -3392,12 +3707,12 @@ module top$edges$0$a$add(clock,a,b,sub,valid_in,y,valid_out);
         .nm(round$nm),
         .y(round$y)
     );
-    top$edges$0$a$add$s1_eff_sub s3_valid(
+    top$aerr$s1_eff_sub s3_valid(
         .d(s3_valid$d),
         .q(s3_valid$q),
         .clock(s3_valid$clock)
     );
-    top$edges$0$a$add$s3_y s3_y(
+    top$aerr$s3_y s3_y(
         .d(s3_y$d),
         .q(s3_y$q),
         .clock(s3_y$clock)
@@ -3538,10 +3853,10 @@ module top$edges$0$a$add(clock,a,b,sub,valid_in,y,valid_out);
         valid_out = s3_valid$q;
     end
     
-endmodule // top$edges$0$a$add
+endmodule // top$aerr
 
 
-module top$edges$0$a$add$norm(x,y,lz);
+module top$aerr$norm(x,y,lz);
     
     // Module arguments
     input wire  [26:0] x;
@@ -3589,10 +3904,10 @@ module top$edges$0$a$add$norm(x,y,lz);
         lz = (((((((32'h0) & 5'h1f) & ~(1 << (32'h4)) | ((z16) << (32'h4))) & ~(1 << (32'h3)) | ((z8) << (32'h3))) & ~(1 << (32'h2)) | ((z4) << (32'h2))) & ~(1 << (32'h1)) | ((z2) << (32'h1))) & ~(1 << (32'h0)) | ((z1) << (32'h0)));
     end
     
-endmodule // top$edges$0$a$add$norm
+endmodule // top$aerr$norm
 
 
-module top$edges$0$a$add$round(round_up,sign,nan,inf,zero,ovf,efield,nm,y);
+module top$aerr$round(round_up,sign,nan,inf,zero,ovf,efield,nm,y);
     
     // Module arguments
     input wire  round_up;
@@ -3655,10 +3970,10 @@ module top$edges$0$a$add$round(round_up,sign,nan,inf,zero,ovf,efield,nm,y);
         end
     end
     
-endmodule // top$edges$0$a$add$round
+endmodule // top$aerr$round
 
 
-module top$edges$0$a$add$s1_big(d,q,clock);
+module top$aerr$s1_big(d,q,clock);
     
     // Module arguments
     input wire  [26:0] d;
@@ -3674,10 +3989,10 @@ module top$edges$0$a$add$s1_big(d,q,clock);
        q <= d;
     end
           
-endmodule // top$edges$0$a$add$s1_big
+endmodule // top$aerr$s1_big
 
 
-module top$edges$0$a$add$s1_eff_sub(d,q,clock);
+module top$aerr$s1_eff_sub(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -3693,10 +4008,10 @@ module top$edges$0$a$add$s1_eff_sub(d,q,clock);
        q <= d;
     end
           
-endmodule // top$edges$0$a$add$s1_eff_sub
+endmodule // top$aerr$s1_eff_sub
 
 
-module top$edges$0$a$add$s1_exp(d,q,clock);
+module top$aerr$s1_exp(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -3712,10 +4027,10 @@ module top$edges$0$a$add$s1_exp(d,q,clock);
        q <= d;
     end
           
-endmodule // top$edges$0$a$add$s1_exp
+endmodule // top$aerr$s1_exp
 
 
-module top$edges$0$a$add$s2_nm(d,q,clock);
+module top$aerr$s2_nm(d,q,clock);
     
     // Module arguments
     input wire  [25:0] d;
@@ -3731,10 +4046,10 @@ module top$edges$0$a$add$s2_nm(d,q,clock);
        q <= d;
     end
           
-endmodule // top$edges$0$a$add$s2_nm
+endmodule // top$aerr$s2_nm
 
 
-module top$edges$0$a$add$s3_y(d,q,clock);
+module top$aerr$s3_y(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -3750,10 +4065,10 @@ module top$edges$0$a$add$s3_y(d,q,clock);
        q <= d;
     end
           
-endmodule // top$edges$0$a$add$s3_y
+endmodule // top$aerr$s3_y
 
 
-module top$edges$0$a$add$unpack_a(x,sign,exp,sig,is_zero,is_inf,is_nan);
+module top$aerr$unpack_a(x,sign,exp,sig,is_zero,is_inf,is_nan);
     
     // Module arguments
     input wire  [31:0] x;
@@ -3790,76 +4105,39 @@ module top$edges$0$a$add$unpack_a(x,sign,exp,sig,is_zero,is_inf,is_nan);
         end
     end
     
-endmodule // top$edges$0$a$add$unpack_a
+endmodule // top$aerr$unpack_a
 
 
-module top$edges$0$a$err(clock,x,valid_in,y,valid_out);
+module top$aerr_wait(clock,d,q);
     
     // Module arguments
     input wire  clock;
-    input wire  [31:0] x;
-    input wire  valid_in;
-    output reg  [31:0] y;
-    output reg  valid_out;
-    
-    // Constant declarations
-    localparam  c_shift = 8'h18;
-    localparam  c_min_normal = 32'h800000;
-    localparam  c_inf = 32'h7f800000;
+    input wire  [31:0] d;
+    output reg  [31:0] q;
     
     // Stub signals
-    reg  s1_valid$d;
-    wire  s1_valid$q;
-    reg  s1_valid$clock;
-    reg  [31:0] s1_y$d;
-    wire  [31:0] s1_y$q;
-    reg  s1_y$clock;
-    
-    // Local signals
-    reg  [7:0] c1_ef;
-    reg  c1_frac_zero;
-    reg  [31:0] c1_y;
+    reg  [31:0] line$0$d;
+    wire  [31:0] line$0$q;
+    reg  line$0$clock;
     
     // Sub module instances
-    top$edges$0$a$add$s1_eff_sub s1_valid(
-        .d(s1_valid$d),
-        .q(s1_valid$q),
-        .clock(s1_valid$clock)
-    );
-    top$edges$0$a$add$s3_y s1_y(
-        .d(s1_y$d),
-        .q(s1_y$q),
-        .clock(s1_y$clock)
+    top$aerr$s3_y line$0(
+        .d(line$0$d),
+        .q(line$0$q),
+        .clock(line$0$clock)
     );
     
     // Update code
     always @(*) begin
-        s1_valid$clock = clock;
-        s1_y$clock = clock;
-        s1_valid$d = s1_valid$q;
-        s1_y$d = s1_y$q;
-        c1_ef = x[(32'h17)+:(8)];
-        c1_frac_zero = x[(32'h0)+:(23)] == 32'h0;
-        c1_y = c_min_normal;
-        if (c1_ef > c_shift) begin
-            c1_y = ((c1_ef - c_shift) & 32'hffffffff) << 32'h17;
-        end
-        if (&c1_ef) begin
-            c1_y = c_min_normal;
-            if (c1_frac_zero) begin
-                c1_y = c_inf;
-            end
-        end
-        s1_valid$d = valid_in;
-        s1_y$d = c1_y;
-        y = s1_y$q;
-        valid_out = s1_valid$q;
+        line$0$clock = clock;
+        line$0$d = d;
+        q = line$0$q;
     end
     
-endmodule // top$edges$0$a$err
+endmodule // top$aerr_wait
 
 
-module top$edges$0$a$s_ab(clock,a,b,valid_in,y,valid_out);
+module top$af(clock,a,b,valid_in,y,valid_out);
     
     // Module arguments
     input wire  clock;
@@ -3869,103 +4147,547 @@ module top$edges$0$a$s_ab(clock,a,b,valid_in,y,valid_out);
     output reg  [31:0] y;
     output reg  valid_out;
     
-    // Stub signals
-    reg  op$clock;
-    reg  [31:0] op$a;
-    reg  [31:0] op$b;
-    reg  op$sub;
-    reg  op$valid_in;
-    wire  [31:0] op$y;
-    wire  op$valid_out;
-    reg  [31:0] step$x;
-    wire  [31:0] step$y;
-    reg  s_step_valid$d;
-    wire  s_step_valid$q;
-    reg  s_step_valid$clock;
-    reg  [31:0] s_step_y$d;
-    wire  [31:0] s_step_y$q;
-    reg  s_step_y$clock;
-    
-    // Sub module instances
-    top$edges$0$a$add op(
-        .clock(op$clock),
-        .a(op$a),
-        .b(op$b),
-        .sub(op$sub),
-        .valid_in(op$valid_in),
-        .y(op$y),
-        .valid_out(op$valid_out)
-    );
-    top$edges$0$a$s_ab$step step(
-        .x(step$x),
-        .y(step$y)
-    );
-    top$edges$0$a$add$s1_eff_sub s_step_valid(
-        .d(s_step_valid$d),
-        .q(s_step_valid$q),
-        .clock(s_step_valid$clock)
-    );
-    top$edges$0$a$add$s3_y s_step_y(
-        .d(s_step_y$d),
-        .q(s_step_y$q),
-        .clock(s_step_y$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        s_step_valid$clock = clock;
-        s_step_y$clock = clock;
-        s_step_valid$d = s_step_valid$q;
-        s_step_y$d = s_step_y$q;
-        op$clock = clock;
-        op$a = a;
-        op$b = b;
-        op$sub = 1'b0;
-        op$valid_in = valid_in;
-        step$x = op$y;
-        s_step_valid$d = op$valid_out;
-        s_step_y$d = step$y;
-        y = s_step_y$q;
-        valid_out = s_step_valid$q;
-    end
-    
-endmodule // top$edges$0$a$s_ab
-
-
-module top$edges$0$a$s_ab$step(x,y);
-    
-    // Module arguments
-    input wire  [31:0] x;
-    output reg  [31:0] y;
-    
     // Constant declarations
-    localparam  c_min_normal = 32'h800000;
-    localparam  c_inf = 32'h7f800000;
+    localparam  round_up = 1'b1;
+    localparam  c_exp_adj = 10'b10000001;
+    localparam  c_exp_ofs = 10'b100000000;
+    localparam  c_exp_norm_min = 10'b100000001;
+    localparam  c_exp_ovf = 10'b111111111;
+    localparam  c_shift_cap = 10'b11010;
+    
+    // Stub signals
+    reg  [31:0] unpack_a$x;
+    wire  unpack_a$sign;
+    wire  [7:0] unpack_a$exp;
+    wire  [23:0] unpack_a$sig;
+    wire  unpack_a$is_zero;
+    wire  unpack_a$is_inf;
+    wire  unpack_a$is_nan;
+    reg  [31:0] unpack_b$x;
+    wire  unpack_b$sign;
+    wire  [7:0] unpack_b$exp;
+    wire  [23:0] unpack_b$sig;
+    wire  unpack_b$is_zero;
+    wire  unpack_b$is_inf;
+    wire  unpack_b$is_nan;
+    reg  [23:0] norm_a$x;
+    wire  [23:0] norm_a$y;
+    wire  [4:0] norm_a$lz;
+    reg  [23:0] norm_b$x;
+    wire  [23:0] norm_b$y;
+    wire  [4:0] norm_b$lz;
+    reg  s1_valid$d;
+    wire  s1_valid$q;
+    reg  s1_valid$clock;
+    reg  s1_sign$d;
+    wire  s1_sign$q;
+    reg  s1_sign$clock;
+    reg  s1_nan$d;
+    wire  s1_nan$q;
+    reg  s1_nan$clock;
+    reg  s1_inf$d;
+    wire  s1_inf$q;
+    reg  s1_inf$clock;
+    reg  s1_zero$d;
+    wire  s1_zero$q;
+    reg  s1_zero$clock;
+    reg  [9:0] s1_exp$d;
+    wire  [9:0] s1_exp$q;
+    reg  s1_exp$clock;
+    reg  [23:0] s1_sig_a$d;
+    wire  [23:0] s1_sig_a$q;
+    reg  s1_sig_a$clock;
+    reg  [23:0] s1_sig_b$d;
+    wire  [23:0] s1_sig_b$q;
+    reg  s1_sig_b$clock;
+    reg  [23:0] sig_mul$a;
+    reg  [23:0] sig_mul$b;
+    wire  [25:0] sig_mul$hi;
+    wire  sig_mul$sticky;
+    reg  s2_valid$d;
+    wire  s2_valid$q;
+    reg  s2_valid$clock;
+    reg  s2_sign$d;
+    wire  s2_sign$q;
+    reg  s2_sign$clock;
+    reg  s2_nan$d;
+    wire  s2_nan$q;
+    reg  s2_nan$clock;
+    reg  s2_inf$d;
+    wire  s2_inf$q;
+    reg  s2_inf$clock;
+    reg  s2_zero$d;
+    wire  s2_zero$q;
+    reg  s2_zero$clock;
+    reg  [9:0] s2_exp$d;
+    wire  [9:0] s2_exp$q;
+    reg  s2_exp$clock;
+    reg  [25:0] s2_hi$d;
+    wire  [25:0] s2_hi$q;
+    reg  s2_hi$clock;
+    reg  s2_sticky$d;
+    wire  s2_sticky$q;
+    reg  s2_sticky$clock;
+    reg  s3_valid$d;
+    wire  s3_valid$q;
+    reg  s3_valid$clock;
+    reg  s3_sign$d;
+    wire  s3_sign$q;
+    reg  s3_sign$clock;
+    reg  s3_nan$d;
+    wire  s3_nan$q;
+    reg  s3_nan$clock;
+    reg  s3_inf$d;
+    wire  s3_inf$q;
+    reg  s3_inf$clock;
+    reg  s3_zero$d;
+    wire  s3_zero$q;
+    reg  s3_zero$clock;
+    reg  s3_ovf$d;
+    wire  s3_ovf$q;
+    reg  s3_ovf$clock;
+    reg  [7:0] s3_efield$d;
+    wire  [7:0] s3_efield$q;
+    reg  s3_efield$clock;
+    reg  [25:0] s3_nm$d;
+    wire  [25:0] s3_nm$q;
+    reg  s3_nm$clock;
+    reg  round$round_up;
+    reg  round$sign;
+    reg  round$nan;
+    reg  round$inf;
+    reg  round$zero;
+    reg  round$ovf;
+    reg  [7:0] round$efield;
+    reg  [25:0] round$nm;
+    wire  [31:0] round$y;
+    reg  s4_valid$d;
+    wire  s4_valid$q;
+    reg  s4_valid$clock;
+    reg  [31:0] s4_y$d;
+    wire  [31:0] s4_y$q;
+    reg  s4_y$clock;
     
     // Local signals
-    reg  [31:0] inc;
-    reg  nan;
+    reg  [9:0] c1_exp;
+    reg  c3_top;
+    reg  [25:0] c3_nm;
+    reg  [9:0] c3_exp;
+    reg  [9:0] c3_shift;
+    reg  [9:0] c3_shift_cap;
+    reg  [25:0] c3_shifted;
+    reg  [25:0] c3_back;
+    reg  c3_lost;
+    reg  [7:0] c3_efield;
+    
+    // Sub module instances
+    top$aerr$unpack_a unpack_a(
+        .x(unpack_a$x),
+        .sign(unpack_a$sign),
+        .exp(unpack_a$exp),
+        .sig(unpack_a$sig),
+        .is_zero(unpack_a$is_zero),
+        .is_inf(unpack_a$is_inf),
+        .is_nan(unpack_a$is_nan)
+    );
+    top$aerr$unpack_a unpack_b(
+        .x(unpack_b$x),
+        .sign(unpack_b$sign),
+        .exp(unpack_b$exp),
+        .sig(unpack_b$sig),
+        .is_zero(unpack_b$is_zero),
+        .is_inf(unpack_b$is_inf),
+        .is_nan(unpack_b$is_nan)
+    );
+    top$af$norm_a norm_a(
+        .x(norm_a$x),
+        .y(norm_a$y),
+        .lz(norm_a$lz)
+    );
+    top$af$norm_a norm_b(
+        .x(norm_b$x),
+        .y(norm_b$y),
+        .lz(norm_b$lz)
+    );
+    top$aerr$s1_eff_sub s1_valid(
+        .d(s1_valid$d),
+        .q(s1_valid$q),
+        .clock(s1_valid$clock)
+    );
+    top$aerr$s1_eff_sub s1_sign(
+        .d(s1_sign$d),
+        .q(s1_sign$q),
+        .clock(s1_sign$clock)
+    );
+    top$aerr$s1_eff_sub s1_nan(
+        .d(s1_nan$d),
+        .q(s1_nan$q),
+        .clock(s1_nan$clock)
+    );
+    top$aerr$s1_eff_sub s1_inf(
+        .d(s1_inf$d),
+        .q(s1_inf$q),
+        .clock(s1_inf$clock)
+    );
+    top$aerr$s1_eff_sub s1_zero(
+        .d(s1_zero$d),
+        .q(s1_zero$q),
+        .clock(s1_zero$clock)
+    );
+    top$af$s1_exp s1_exp(
+        .d(s1_exp$d),
+        .q(s1_exp$q),
+        .clock(s1_exp$clock)
+    );
+    top$af$s1_sig_a s1_sig_a(
+        .d(s1_sig_a$d),
+        .q(s1_sig_a$q),
+        .clock(s1_sig_a$clock)
+    );
+    top$af$s1_sig_a s1_sig_b(
+        .d(s1_sig_b$d),
+        .q(s1_sig_b$q),
+        .clock(s1_sig_b$clock)
+    );
+    top$af$sig_mul sig_mul(
+        .a(sig_mul$a),
+        .b(sig_mul$b),
+        .hi(sig_mul$hi),
+        .sticky(sig_mul$sticky)
+    );
+    top$aerr$s1_eff_sub s2_valid(
+        .d(s2_valid$d),
+        .q(s2_valid$q),
+        .clock(s2_valid$clock)
+    );
+    top$aerr$s1_eff_sub s2_sign(
+        .d(s2_sign$d),
+        .q(s2_sign$q),
+        .clock(s2_sign$clock)
+    );
+    top$aerr$s1_eff_sub s2_nan(
+        .d(s2_nan$d),
+        .q(s2_nan$q),
+        .clock(s2_nan$clock)
+    );
+    top$aerr$s1_eff_sub s2_inf(
+        .d(s2_inf$d),
+        .q(s2_inf$q),
+        .clock(s2_inf$clock)
+    );
+    top$aerr$s1_eff_sub s2_zero(
+        .d(s2_zero$d),
+        .q(s2_zero$q),
+        .clock(s2_zero$clock)
+    );
+    top$af$s1_exp s2_exp(
+        .d(s2_exp$d),
+        .q(s2_exp$q),
+        .clock(s2_exp$clock)
+    );
+    top$aerr$s2_nm s2_hi(
+        .d(s2_hi$d),
+        .q(s2_hi$q),
+        .clock(s2_hi$clock)
+    );
+    top$aerr$s1_eff_sub s2_sticky(
+        .d(s2_sticky$d),
+        .q(s2_sticky$q),
+        .clock(s2_sticky$clock)
+    );
+    top$aerr$s1_eff_sub s3_valid(
+        .d(s3_valid$d),
+        .q(s3_valid$q),
+        .clock(s3_valid$clock)
+    );
+    top$aerr$s1_eff_sub s3_sign(
+        .d(s3_sign$d),
+        .q(s3_sign$q),
+        .clock(s3_sign$clock)
+    );
+    top$aerr$s1_eff_sub s3_nan(
+        .d(s3_nan$d),
+        .q(s3_nan$q),
+        .clock(s3_nan$clock)
+    );
+    top$aerr$s1_eff_sub s3_inf(
+        .d(s3_inf$d),
+        .q(s3_inf$q),
+        .clock(s3_inf$clock)
+    );
+    top$aerr$s1_eff_sub s3_zero(
+        .d(s3_zero$d),
+        .q(s3_zero$q),
+        .clock(s3_zero$clock)
+    );
+    top$aerr$s1_eff_sub s3_ovf(
+        .d(s3_ovf$d),
+        .q(s3_ovf$q),
+        .clock(s3_ovf$clock)
+    );
+    top$aerr$s1_exp s3_efield(
+        .d(s3_efield$d),
+        .q(s3_efield$q),
+        .clock(s3_efield$clock)
+    );
+    top$aerr$s2_nm s3_nm(
+        .d(s3_nm$d),
+        .q(s3_nm$q),
+        .clock(s3_nm$clock)
+    );
+    top$aerr$round round(
+        .round_up(round$round_up),
+        .sign(round$sign),
+        .nan(round$nan),
+        .inf(round$inf),
+        .zero(round$zero),
+        .ovf(round$ovf),
+        .efield(round$efield),
+        .nm(round$nm),
+        .y(round$y)
+    );
+    top$aerr$s1_eff_sub s4_valid(
+        .d(s4_valid$d),
+        .q(s4_valid$q),
+        .clock(s4_valid$clock)
+    );
+    top$aerr$s3_y s4_y(
+        .d(s4_y$d),
+        .q(s4_y$q),
+        .clock(s4_y$clock)
+    );
     
     // Update code
     always @(*) begin
-        inc = x + 32'h1;
-        nan = &x[(32'h17)+:(8)] & (x[(32'h0)+:(23)] != 32'h0);
-        y = inc;
-        if (inc[(32'h17)+:(8)] == 32'h0) begin
-            y = c_min_normal;
+        s1_valid$clock = clock;
+        s1_sign$clock = clock;
+        s1_nan$clock = clock;
+        s1_inf$clock = clock;
+        s1_zero$clock = clock;
+        s1_exp$clock = clock;
+        s1_sig_a$clock = clock;
+        s1_sig_b$clock = clock;
+        s1_valid$d = s1_valid$q;
+        s1_sign$d = s1_sign$q;
+        s1_nan$d = s1_nan$q;
+        s1_inf$d = s1_inf$q;
+        s1_zero$d = s1_zero$q;
+        s1_exp$d = s1_exp$q;
+        s1_sig_a$d = s1_sig_a$q;
+        s1_sig_b$d = s1_sig_b$q;
+        s2_valid$clock = clock;
+        s2_sign$clock = clock;
+        s2_nan$clock = clock;
+        s2_inf$clock = clock;
+        s2_zero$clock = clock;
+        s2_exp$clock = clock;
+        s2_hi$clock = clock;
+        s2_sticky$clock = clock;
+        s2_valid$d = s2_valid$q;
+        s2_sign$d = s2_sign$q;
+        s2_nan$d = s2_nan$q;
+        s2_inf$d = s2_inf$q;
+        s2_zero$d = s2_zero$q;
+        s2_exp$d = s2_exp$q;
+        s2_hi$d = s2_hi$q;
+        s2_sticky$d = s2_sticky$q;
+        s3_valid$clock = clock;
+        s3_sign$clock = clock;
+        s3_nan$clock = clock;
+        s3_inf$clock = clock;
+        s3_zero$clock = clock;
+        s3_ovf$clock = clock;
+        s3_efield$clock = clock;
+        s3_nm$clock = clock;
+        s3_valid$d = s3_valid$q;
+        s3_sign$d = s3_sign$q;
+        s3_nan$d = s3_nan$q;
+        s3_inf$d = s3_inf$q;
+        s3_zero$d = s3_zero$q;
+        s3_ovf$d = s3_ovf$q;
+        s3_efield$d = s3_efield$q;
+        s3_nm$d = s3_nm$q;
+        s4_valid$clock = clock;
+        s4_y$clock = clock;
+        s4_valid$d = s4_valid$q;
+        s4_y$d = s4_y$q;
+        unpack_a$x = a;
+        unpack_b$x = b;
+        norm_a$x = unpack_a$sig;
+        norm_b$x = unpack_b$sig;
+        c1_exp = ((unpack_a$exp) & 10'h3ff) + ((unpack_b$exp) & 10'h3ff) - ((norm_a$lz) & 10'h3ff) - ((norm_b$lz) & 10'h3ff) + c_exp_adj;
+        s1_valid$d = valid_in;
+        s1_sign$d = unpack_a$sign ^ unpack_b$sign;
+        s1_nan$d = unpack_a$is_nan | unpack_b$is_nan | (unpack_a$is_inf & unpack_b$is_zero) | (unpack_a$is_zero & unpack_b$is_inf);
+        s1_inf$d = unpack_a$is_inf | unpack_b$is_inf;
+        s1_zero$d = unpack_a$is_zero | unpack_b$is_zero;
+        s1_exp$d = c1_exp;
+        s1_sig_a$d = norm_a$y;
+        s1_sig_b$d = norm_b$y;
+        sig_mul$a = s1_sig_a$q;
+        sig_mul$b = s1_sig_b$q;
+        s2_valid$d = s1_valid$q;
+        s2_sign$d = s1_sign$q;
+        s2_nan$d = s1_nan$q;
+        s2_inf$d = s1_inf$q;
+        s2_zero$d = s1_zero$q;
+        s2_exp$d = s1_exp$q;
+        s2_hi$d = sig_mul$hi;
+        s2_sticky$d = sig_mul$sticky;
+        c3_top = s2_hi$q[32'h18 + 32'h1];
+        c3_nm = ((s2_hi$q << 32'h1) & ~(1 << (32'h0)) | ((s2_sticky$q) << (32'h0)));
+        if (c3_top) begin
+            c3_nm = (s2_hi$q & ~(1 << (32'h0)) | ((s2_hi$q[32'h0] | s2_sticky$q) << (32'h0)));
         end
-        if (x == c_inf) begin
-            y = c_inf;
+        c3_exp = s2_exp$q + c3_top;
+        c3_shift = 32'h0;
+        if (c3_exp < c_exp_norm_min) begin
+            c3_shift = c_exp_norm_min - c3_exp;
         end
-        if (x[32'h1f] | nan) begin
-            y = c_min_normal;
+        c3_shift_cap = c3_shift;
+        if (c3_shift > c_shift_cap) begin
+            c3_shift_cap = c_shift_cap;
         end
+        c3_shifted = c3_nm >> c3_shift_cap;
+        c3_back = c3_shifted << c3_shift_cap;
+        c3_lost = c3_back != c3_nm;
+        c3_efield = 32'h0;
+        if (c3_shift == 32'h0) begin
+            c3_efield = ((c3_exp - c_exp_ofs) & 8'hff);
+        end
+        s3_valid$d = s2_valid$q;
+        s3_sign$d = s2_sign$q;
+        s3_nan$d = s2_nan$q;
+        s3_inf$d = s2_inf$q;
+        s3_zero$d = s2_zero$q;
+        s3_ovf$d = c3_exp >= c_exp_ovf;
+        s3_efield$d = c3_efield;
+        s3_nm$d = (c3_shifted & ~(1 << (32'h0)) | ((c3_shifted[32'h0] | c3_lost) << (32'h0)));
+        round$round_up = round_up;
+        round$sign = s3_sign$q;
+        round$nan = s3_nan$q;
+        round$inf = s3_inf$q;
+        round$zero = s3_zero$q;
+        round$ovf = s3_ovf$q;
+        round$efield = s3_efield$q;
+        round$nm = s3_nm$q;
+        s4_valid$d = s3_valid$q;
+        s4_y$d = round$y;
+        y = s4_y$q;
+        valid_out = s4_valid$q;
     end
     
-endmodule // top$edges$0$a$s_ab$step
+endmodule // top$af
 
 
-module top$edges$0$a$x_wait(clock,d,q);
+module top$af$norm_a(x,y,lz);
+    
+    // Module arguments
+    input wire  [23:0] x;
+    output reg  [23:0] y;
+    output reg  [4:0] lz;
+    
+    // Local signals
+    reg  z16;
+    reg  z8;
+    reg  z4;
+    reg  z2;
+    reg  z1;
+    reg  [23:0] x16;
+    reg  [23:0] x8;
+    reg  [23:0] x4;
+    reg  [23:0] x2;
+    
+    // Update code
+    always @(*) begin
+        z16 = x[(32'h8)+:(16)] == 32'h0;
+        x16 = x;
+        if (z16) begin
+            x16 = x << 32'h10;
+        end
+        z8 = x16[(32'h10)+:(8)] == 32'h0;
+        x8 = x16;
+        if (z8) begin
+            x8 = x16 << 32'h8;
+        end
+        z4 = x8[(32'h14)+:(4)] == 32'h0;
+        x4 = x8;
+        if (z4) begin
+            x4 = x8 << 32'h4;
+        end
+        z2 = x4[(32'h16)+:(2)] == 32'h0;
+        x2 = x4;
+        if (z2) begin
+            x2 = x4 << 32'h2;
+        end
+        z1 = ~x2[32'h17];
+        y = x2;
+        if (z1) begin
+            y = x2 << 32'h1;
+        end
+        lz = (((((((32'h0) & 5'h1f) & ~(1 << (32'h4)) | ((z16) << (32'h4))) & ~(1 << (32'h3)) | ((z8) << (32'h3))) & ~(1 << (32'h2)) | ((z4) << (32'h2))) & ~(1 << (32'h1)) | ((z2) << (32'h1))) & ~(1 << (32'h0)) | ((z1) << (32'h0)));
+    end
+    
+endmodule // top$af$norm_a
+
+
+module top$af$s1_exp(d,q,clock);
+    
+    // Module arguments
+    input wire  [9:0] d;
+    output reg  [9:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 10'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$af$s1_exp
+
+
+module top$af$s1_sig_a(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 24'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$af$s1_sig_a
+
+
+module top$af$sig_mul(a,b,hi,sticky);
+    
+    // Module arguments
+    input wire  [23:0] a;
+    input wire  [23:0] b;
+    output reg  [25:0] hi;
+    output reg  sticky;
+    
+    // Update code (custom)
+    wire [47:0] prod;
+    assign prod = a * b;
+    always @(*) begin
+        hi = prod[47:22];
+        sticky = |prod[21:0];
+    end
+endmodule // top$af$sig_mul
+
+
+module top$c3_0(clock,d,q);
     
     // Module arguments
     input wire  clock;
@@ -3985,35 +4707,27 @@ module top$edges$0$a$x_wait(clock,d,q);
     reg  [31:0] line$3$d;
     wire  [31:0] line$3$q;
     reg  line$3$clock;
-    reg  [31:0] line$4$d;
-    wire  [31:0] line$4$q;
-    reg  line$4$clock;
     
     // Sub module instances
-    top$edges$0$a$add$s3_y line$0(
+    top$aerr$s3_y line$0(
         .d(line$0$d),
         .q(line$0$q),
         .clock(line$0$clock)
     );
-    top$edges$0$a$add$s3_y line$1(
+    top$aerr$s3_y line$1(
         .d(line$1$d),
         .q(line$1$q),
         .clock(line$1$clock)
     );
-    top$edges$0$a$add$s3_y line$2(
+    top$aerr$s3_y line$2(
         .d(line$2$d),
         .q(line$2$q),
         .clock(line$2$clock)
     );
-    top$edges$0$a$add$s3_y line$3(
+    top$aerr$s3_y line$3(
         .d(line$3$d),
         .q(line$3$q),
         .clock(line$3$clock)
-    );
-    top$edges$0$a$add$s3_y line$4(
-        .d(line$4$d),
-        .q(line$4$q),
-        .clock(line$4$clock)
     );
     
     // Update code
@@ -4026,16 +4740,1477 @@ module top$edges$0$a$x_wait(clock,d,q);
         line$2$d = d;
         line$3$clock = clock;
         line$3$d = d;
-        line$4$clock = clock;
-        line$4$d = d;
         line$0$d = line$1$q;
         line$1$d = line$2$q;
         line$2$d = line$3$q;
-        line$3$d = line$4$q;
         q = line$0$q;
     end
     
-endmodule // top$edges$0$a$x_wait
+endmodule // top$c3_0
+
+
+module top$edges$0(clock,p0,p1,p2,q0,q1,q2,pe,qe,pf0,pf1,pf2,qf0,qf1,qf2,ph,qh,s_x,s_b,cross_t,cross_f);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] p0;
+    input wire  [31:0] p1;
+    input wire  [31:0] p2;
+    input wire  [31:0] q0;
+    input wire  [31:0] q1;
+    input wire  [31:0] q2;
+    input wire  [31:0] pe;
+    input wire  [31:0] qe;
+    input wire  [31:0] pf0;
+    input wire  [31:0] pf1;
+    input wire  [31:0] pf2;
+    input wire  [31:0] qf0;
+    input wire  [31:0] qf1;
+    input wire  [31:0] qf2;
+    input wire  [31:0] ph;
+    input wire  [31:0] qh;
+    output reg  [31:0] s_x;
+    output reg  [31:0] s_b;
+    output reg  cross_t;
+    output reg  cross_f;
+    
+    // Constant declarations
+    localparam  mask = 32'h7fffffff;
+    localparam  c_2u = 32'h34000001;
+    
+    // Stub signals
+    reg  px_qz$clock;
+    reg  [31:0] px_qz$a;
+    reg  [31:0] px_qz$b;
+    reg  px_qz$valid_in;
+    wire  [31:0] px_qz$y;
+    wire  px_qz$valid_out;
+    reg  qx_pz$clock;
+    reg  [31:0] qx_pz$a;
+    reg  [31:0] qx_pz$b;
+    reg  qx_pz$valid_in;
+    wire  [31:0] qx_pz$y;
+    wire  qx_pz$valid_out;
+    reg  py_qz$clock;
+    reg  [31:0] py_qz$a;
+    reg  [31:0] py_qz$b;
+    reg  py_qz$valid_in;
+    wire  [31:0] py_qz$y;
+    wire  py_qz$valid_out;
+    reg  qy_pz$clock;
+    reg  [31:0] qy_pz$a;
+    reg  [31:0] qy_pz$b;
+    reg  qy_pz$valid_in;
+    wire  [31:0] qy_pz$y;
+    wire  qy_pz$valid_out;
+    reg  a$clock;
+    reg  [31:0] a$a;
+    reg  [31:0] a$b;
+    reg  a$sub;
+    reg  a$valid_in;
+    wire  [31:0] a$y;
+    wire  a$valid_out;
+    reg  b$clock;
+    reg  [31:0] b$a;
+    reg  [31:0] b$b;
+    reg  b$sub;
+    reg  b$valid_in;
+    wire  [31:0] b$y;
+    wire  b$valid_out;
+    reg  rz$clock;
+    reg  [31:0] rz$a;
+    reg  [31:0] rz$b;
+    reg  rz$sub;
+    reg  rz$valid_in;
+    wire  [31:0] rz$y;
+    wire  rz$valid_out;
+    reg  rz_wait$clock;
+    reg  [31:0] rz_wait$d;
+    wire  [31:0] rz_wait$q;
+    reg  ab$clock;
+    reg  [31:0] ab$a;
+    reg  [31:0] ab$b;
+    reg  ab$sub;
+    reg  ab$valid_in;
+    wire  [31:0] ab$y;
+    wire  ab$valid_out;
+    reg  s$clock;
+    reg  [31:0] s$a;
+    reg  [31:0] s$b;
+    reg  s$sub;
+    reg  s$valid_in;
+    wire  [31:0] s$y;
+    wire  s$valid_out;
+    reg  pf0_wait$clock;
+    reg  [31:0] pf0_wait$d;
+    wire  [31:0] pf0_wait$q;
+    reg  qf0_wait$clock;
+    reg  [31:0] qf0_wait$d;
+    wire  [31:0] qf0_wait$q;
+    reg  pf1_wait$clock;
+    reg  [31:0] pf1_wait$d;
+    wire  [31:0] pf1_wait$q;
+    reg  qf1_wait$clock;
+    reg  [31:0] qf1_wait$d;
+    wire  [31:0] qf1_wait$q;
+    reg  p0_wait$clock;
+    reg  [31:0] p0_wait$d;
+    wire  [31:0] p0_wait$q;
+    reg  q0_wait$clock;
+    reg  [31:0] q0_wait$d;
+    wire  [31:0] q0_wait$q;
+    reg  p1_wait$clock;
+    reg  [31:0] p1_wait$d;
+    wire  [31:0] p1_wait$q;
+    reg  q1_wait$clock;
+    reg  [31:0] q1_wait$d;
+    wire  [31:0] q1_wait$q;
+    reg  ta$0$clock;
+    reg  [31:0] ta$0$a;
+    reg  [31:0] ta$0$b;
+    reg  ta$0$valid_in;
+    wire  [31:0] ta$0$y;
+    wire  ta$0$valid_out;
+    reg  ta$1$clock;
+    reg  [31:0] ta$1$a;
+    reg  [31:0] ta$1$b;
+    reg  ta$1$valid_in;
+    wire  [31:0] ta$1$y;
+    wire  ta$1$valid_out;
+    reg  ta$2$clock;
+    reg  [31:0] ta$2$a;
+    reg  [31:0] ta$2$b;
+    reg  ta$2$valid_in;
+    wire  [31:0] ta$2$y;
+    wire  ta$2$valid_out;
+    reg  ta$3$clock;
+    reg  [31:0] ta$3$a;
+    reg  [31:0] ta$3$b;
+    reg  ta$3$valid_in;
+    wire  [31:0] ta$3$y;
+    wire  ta$3$valid_out;
+    reg  tb$0$clock;
+    reg  [31:0] tb$0$a;
+    reg  [31:0] tb$0$b;
+    reg  tb$0$valid_in;
+    wire  [31:0] tb$0$y;
+    wire  tb$0$valid_out;
+    reg  tb$1$clock;
+    reg  [31:0] tb$1$a;
+    reg  [31:0] tb$1$b;
+    reg  tb$1$valid_in;
+    wire  [31:0] tb$1$y;
+    wire  tb$1$valid_out;
+    reg  tb$2$clock;
+    reg  [31:0] tb$2$a;
+    reg  [31:0] tb$2$b;
+    reg  tb$2$valid_in;
+    wire  [31:0] tb$2$y;
+    wire  tb$2$valid_out;
+    reg  tb$3$clock;
+    reg  [31:0] tb$3$a;
+    reg  [31:0] tb$3$b;
+    reg  tb$3$valid_in;
+    wire  [31:0] tb$3$y;
+    wire  tb$3$valid_out;
+    reg  ta_wait$0$clock;
+    reg  [31:0] ta_wait$0$d;
+    wire  [31:0] ta_wait$0$q;
+    reg  ta_wait$1$clock;
+    reg  [31:0] ta_wait$1$d;
+    wire  [31:0] ta_wait$1$q;
+    reg  tb_wait$0$clock;
+    reg  [31:0] tb_wait$0$d;
+    wire  [31:0] tb_wait$0$q;
+    reg  tb_wait$1$clock;
+    reg  [31:0] tb_wait$1$d;
+    wire  [31:0] tb_wait$1$q;
+    reg  sa$0$clock;
+    reg  [31:0] sa$0$a;
+    reg  [31:0] sa$0$b;
+    reg  sa$0$sub;
+    reg  sa$0$valid_in;
+    wire  [31:0] sa$0$y;
+    wire  sa$0$valid_out;
+    reg  sa$1$clock;
+    reg  [31:0] sa$1$a;
+    reg  [31:0] sa$1$b;
+    reg  sa$1$sub;
+    reg  sa$1$valid_in;
+    wire  [31:0] sa$1$y;
+    wire  sa$1$valid_out;
+    reg  sb$0$clock;
+    reg  [31:0] sb$0$a;
+    reg  [31:0] sb$0$b;
+    reg  sb$0$sub;
+    reg  sb$0$valid_in;
+    wire  [31:0] sb$0$y;
+    wire  sb$0$valid_out;
+    reg  sb$1$clock;
+    reg  [31:0] sb$1$a;
+    reg  [31:0] sb$1$b;
+    reg  sb$1$sub;
+    reg  sb$1$valid_in;
+    wire  [31:0] sb$1$y;
+    wire  sb$1$valid_out;
+    reg  ba$clock;
+    reg  [31:0] ba$a;
+    reg  [31:0] ba$b;
+    reg  ba$sub;
+    reg  ba$valid_in;
+    wire  [31:0] ba$y;
+    wire  ba$valid_out;
+    reg  bb$clock;
+    reg  [31:0] bb$a;
+    reg  [31:0] bb$b;
+    reg  bb$sub;
+    reg  bb$valid_in;
+    wire  [31:0] bb$y;
+    wire  bb$valid_out;
+    reg  brz$clock;
+    reg  [31:0] brz$a;
+    reg  [31:0] brz$b;
+    reg  brz$sub;
+    reg  brz$valid_in;
+    wire  [31:0] brz$y;
+    wire  brz$valid_out;
+    reg  brz_wait$clock;
+    reg  [31:0] brz_wait$d;
+    wire  [31:0] brz_wait$q;
+    reg  rab$clock;
+    reg  [31:0] rab$a;
+    reg  [31:0] rab$b;
+    reg  rab$sub;
+    reg  rab$valid_in;
+    wire  [31:0] rab$y;
+    wire  rab$valid_out;
+    reg  rabz$clock;
+    reg  [31:0] rabz$a;
+    reg  [31:0] rabz$b;
+    reg  rabz$sub;
+    reg  rabz$valid_in;
+    wire  [31:0] rabz$y;
+    wire  rabz$valid_out;
+    reg  rs$clock;
+    reg  [31:0] rs$a;
+    reg  [31:0] rs$b;
+    reg  rs$valid_in;
+    wire  [31:0] rs$y;
+    wire  rs$valid_out;
+    reg  brs$clock;
+    reg  [31:0] brs$a;
+    reg  [31:0] brs$b;
+    reg  brs$sub;
+    reg  brs$valid_in;
+    wire  [31:0] brs$y;
+    wire  brs$valid_out;
+    reg  brs_wait$clock;
+    reg  [31:0] brs_wait$d;
+    wire  [31:0] brs_wait$q;
+    reg  bab$clock;
+    reg  [31:0] bab$a;
+    reg  [31:0] bab$b;
+    reg  bab$sub;
+    reg  bab$valid_in;
+    wire  [31:0] bab$y;
+    wire  bab$valid_out;
+    reg  bs$clock;
+    reg  [31:0] bs$a;
+    reg  [31:0] bs$b;
+    reg  bs$sub;
+    reg  bs$valid_in;
+    wire  [31:0] bs$y;
+    wire  bs$valid_out;
+    reg  pz_wait$clock;
+    reg  [31:0] pz_wait$d;
+    wire  [31:0] pz_wait$q;
+    reg  qz_wait$clock;
+    reg  [31:0] qz_wait$d;
+    wire  [31:0] qz_wait$q;
+    reg  a_wait$clock;
+    reg  [31:0] a_wait$d;
+    wire  [31:0] a_wait$q;
+    reg  b_wait$clock;
+    reg  [31:0] b_wait$d;
+    wire  [31:0] b_wait$q;
+    reg  s_wait$clock;
+    reg  [31:0] s_wait$d;
+    wire  [31:0] s_wait$q;
+    reg  [31:0] sign_pz$x;
+    reg  [31:0] sign_pz$e;
+    wire  [1:0] sign_pz$sgn;
+    reg  [31:0] sign_qz$x;
+    reg  [31:0] sign_qz$e;
+    wire  [1:0] sign_qz$sgn;
+    reg  [31:0] sign_rz$x;
+    reg  [31:0] sign_rz$e;
+    wire  [1:0] sign_rz$sgn;
+    reg  [31:0] sign_a$x;
+    reg  [31:0] sign_a$e;
+    wire  [1:0] sign_a$sgn;
+    reg  [31:0] sign_b$x;
+    reg  [31:0] sign_b$e;
+    wire  [1:0] sign_b$sgn;
+    reg  [31:0] sign_s$x;
+    reg  [31:0] sign_s$e;
+    wire  [1:0] sign_s$sgn;
+    reg  pz_sgn_wait$clock;
+    reg  [1:0] pz_sgn_wait$d;
+    wire  [1:0] pz_sgn_wait$q;
+    reg  qz_sgn_wait$clock;
+    reg  [1:0] qz_sgn_wait$d;
+    wire  [1:0] qz_sgn_wait$q;
+    reg  rz_sgn_wait$clock;
+    reg  [1:0] rz_sgn_wait$d;
+    wire  [1:0] rz_sgn_wait$q;
+    reg  a_sgn_wait$clock;
+    reg  [1:0] a_sgn_wait$d;
+    wire  [1:0] a_sgn_wait$q;
+    reg  b_sgn_wait$clock;
+    reg  [1:0] b_sgn_wait$d;
+    wire  [1:0] b_sgn_wait$q;
+    reg  [1:0] r_pz$d;
+    wire  [1:0] r_pz$q;
+    reg  r_pz$clock;
+    reg  [1:0] r_qz$d;
+    wire  [1:0] r_qz$q;
+    reg  r_qz$clock;
+    reg  [1:0] r_rz$d;
+    wire  [1:0] r_rz$q;
+    reg  r_rz$clock;
+    reg  [1:0] r_a$d;
+    wire  [1:0] r_a$q;
+    reg  r_a$clock;
+    reg  [1:0] r_b$d;
+    wire  [1:0] r_b$q;
+    reg  r_b$clock;
+    reg  [1:0] r_s$d;
+    wire  [1:0] r_s$q;
+    reg  r_s$clock;
+    reg  [31:0] r_s_x$d;
+    wire  [31:0] r_s_x$q;
+    reg  r_s_x$clock;
+    reg  [31:0] r_s_b$d;
+    wire  [31:0] r_s_b$q;
+    reg  r_s_b$clock;
+    
+    // Local signals
+    reg  pz_p;
+    reg  pz_n;
+    reg  qz_p;
+    reg  qz_n;
+    reg  rz_p;
+    reg  rz_n;
+    reg  a_p;
+    reg  a_n;
+    reg  b_p;
+    reg  b_n;
+    reg  s_p;
+    reg  s_n;
+    
+    // Sub module instances
+    top$edges$0$px_qz px_qz(
+        .clock(px_qz$clock),
+        .a(px_qz$a),
+        .b(px_qz$b),
+        .valid_in(px_qz$valid_in),
+        .y(px_qz$y),
+        .valid_out(px_qz$valid_out)
+    );
+    top$edges$0$px_qz qx_pz(
+        .clock(qx_pz$clock),
+        .a(qx_pz$a),
+        .b(qx_pz$b),
+        .valid_in(qx_pz$valid_in),
+        .y(qx_pz$y),
+        .valid_out(qx_pz$valid_out)
+    );
+    top$edges$0$px_qz py_qz(
+        .clock(py_qz$clock),
+        .a(py_qz$a),
+        .b(py_qz$b),
+        .valid_in(py_qz$valid_in),
+        .y(py_qz$y),
+        .valid_out(py_qz$valid_out)
+    );
+    top$edges$0$px_qz qy_pz(
+        .clock(qy_pz$clock),
+        .a(qy_pz$a),
+        .b(qy_pz$b),
+        .valid_in(qy_pz$valid_in),
+        .y(qy_pz$y),
+        .valid_out(qy_pz$valid_out)
+    );
+    top$edges$0$a a(
+        .clock(a$clock),
+        .a(a$a),
+        .b(a$b),
+        .sub(a$sub),
+        .valid_in(a$valid_in),
+        .y(a$y),
+        .valid_out(a$valid_out)
+    );
+    top$edges$0$a b(
+        .clock(b$clock),
+        .a(b$a),
+        .b(b$b),
+        .sub(b$sub),
+        .valid_in(b$valid_in),
+        .y(b$y),
+        .valid_out(b$valid_out)
+    );
+    top$edges$0$a rz(
+        .clock(rz$clock),
+        .a(rz$a),
+        .b(rz$b),
+        .sub(rz$sub),
+        .valid_in(rz$valid_in),
+        .y(rz$y),
+        .valid_out(rz$valid_out)
+    );
+    top$edges$0$brz_wait rz_wait(
+        .clock(rz_wait$clock),
+        .d(rz_wait$d),
+        .q(rz_wait$q)
+    );
+    top$edges$0$a ab(
+        .clock(ab$clock),
+        .a(ab$a),
+        .b(ab$b),
+        .sub(ab$sub),
+        .valid_in(ab$valid_in),
+        .y(ab$y),
+        .valid_out(ab$valid_out)
+    );
+    top$edges$0$a s(
+        .clock(s$clock),
+        .a(s$a),
+        .b(s$b),
+        .sub(s$sub),
+        .valid_in(s$valid_in),
+        .y(s$y),
+        .valid_out(s$valid_out)
+    );
+    top$edges$0$brs_wait pf0_wait(
+        .clock(pf0_wait$clock),
+        .d(pf0_wait$d),
+        .q(pf0_wait$q)
+    );
+    top$edges$0$brs_wait qf0_wait(
+        .clock(qf0_wait$clock),
+        .d(qf0_wait$d),
+        .q(qf0_wait$q)
+    );
+    top$edges$0$brs_wait pf1_wait(
+        .clock(pf1_wait$clock),
+        .d(pf1_wait$d),
+        .q(pf1_wait$q)
+    );
+    top$edges$0$brs_wait qf1_wait(
+        .clock(qf1_wait$clock),
+        .d(qf1_wait$d),
+        .q(qf1_wait$q)
+    );
+    top$c3_0 p0_wait(
+        .clock(p0_wait$clock),
+        .d(p0_wait$d),
+        .q(p0_wait$q)
+    );
+    top$c3_0 q0_wait(
+        .clock(q0_wait$clock),
+        .d(q0_wait$d),
+        .q(q0_wait$q)
+    );
+    top$c3_0 p1_wait(
+        .clock(p1_wait$clock),
+        .d(p1_wait$d),
+        .q(p1_wait$q)
+    );
+    top$c3_0 q1_wait(
+        .clock(q1_wait$clock),
+        .d(q1_wait$d),
+        .q(q1_wait$q)
+    );
+    top$af ta$0(
+        .clock(ta$0$clock),
+        .a(ta$0$a),
+        .b(ta$0$b),
+        .valid_in(ta$0$valid_in),
+        .y(ta$0$y),
+        .valid_out(ta$0$valid_out)
+    );
+    top$af ta$1(
+        .clock(ta$1$clock),
+        .a(ta$1$a),
+        .b(ta$1$b),
+        .valid_in(ta$1$valid_in),
+        .y(ta$1$y),
+        .valid_out(ta$1$valid_out)
+    );
+    top$af ta$2(
+        .clock(ta$2$clock),
+        .a(ta$2$a),
+        .b(ta$2$b),
+        .valid_in(ta$2$valid_in),
+        .y(ta$2$y),
+        .valid_out(ta$2$valid_out)
+    );
+    top$af ta$3(
+        .clock(ta$3$clock),
+        .a(ta$3$a),
+        .b(ta$3$b),
+        .valid_in(ta$3$valid_in),
+        .y(ta$3$y),
+        .valid_out(ta$3$valid_out)
+    );
+    top$af tb$0(
+        .clock(tb$0$clock),
+        .a(tb$0$a),
+        .b(tb$0$b),
+        .valid_in(tb$0$valid_in),
+        .y(tb$0$y),
+        .valid_out(tb$0$valid_out)
+    );
+    top$af tb$1(
+        .clock(tb$1$clock),
+        .a(tb$1$a),
+        .b(tb$1$b),
+        .valid_in(tb$1$valid_in),
+        .y(tb$1$y),
+        .valid_out(tb$1$valid_out)
+    );
+    top$af tb$2(
+        .clock(tb$2$clock),
+        .a(tb$2$a),
+        .b(tb$2$b),
+        .valid_in(tb$2$valid_in),
+        .y(tb$2$y),
+        .valid_out(tb$2$valid_out)
+    );
+    top$af tb$3(
+        .clock(tb$3$clock),
+        .a(tb$3$a),
+        .b(tb$3$b),
+        .valid_in(tb$3$valid_in),
+        .y(tb$3$y),
+        .valid_out(tb$3$valid_out)
+    );
+    top$edges$0$ta_wait$0 ta_wait$0(
+        .clock(ta_wait$0$clock),
+        .d(ta_wait$0$d),
+        .q(ta_wait$0$q)
+    );
+    top$edges$0$ta_wait$0 ta_wait$1(
+        .clock(ta_wait$1$clock),
+        .d(ta_wait$1$d),
+        .q(ta_wait$1$q)
+    );
+    top$edges$0$ta_wait$0 tb_wait$0(
+        .clock(tb_wait$0$clock),
+        .d(tb_wait$0$d),
+        .q(tb_wait$0$q)
+    );
+    top$edges$0$ta_wait$0 tb_wait$1(
+        .clock(tb_wait$1$clock),
+        .d(tb_wait$1$d),
+        .q(tb_wait$1$q)
+    );
+    top$aerr sa$0(
+        .clock(sa$0$clock),
+        .a(sa$0$a),
+        .b(sa$0$b),
+        .sub(sa$0$sub),
+        .valid_in(sa$0$valid_in),
+        .y(sa$0$y),
+        .valid_out(sa$0$valid_out)
+    );
+    top$aerr sa$1(
+        .clock(sa$1$clock),
+        .a(sa$1$a),
+        .b(sa$1$b),
+        .sub(sa$1$sub),
+        .valid_in(sa$1$valid_in),
+        .y(sa$1$y),
+        .valid_out(sa$1$valid_out)
+    );
+    top$aerr sb$0(
+        .clock(sb$0$clock),
+        .a(sb$0$a),
+        .b(sb$0$b),
+        .sub(sb$0$sub),
+        .valid_in(sb$0$valid_in),
+        .y(sb$0$y),
+        .valid_out(sb$0$valid_out)
+    );
+    top$aerr sb$1(
+        .clock(sb$1$clock),
+        .a(sb$1$a),
+        .b(sb$1$b),
+        .sub(sb$1$sub),
+        .valid_in(sb$1$valid_in),
+        .y(sb$1$y),
+        .valid_out(sb$1$valid_out)
+    );
+    top$aerr ba(
+        .clock(ba$clock),
+        .a(ba$a),
+        .b(ba$b),
+        .sub(ba$sub),
+        .valid_in(ba$valid_in),
+        .y(ba$y),
+        .valid_out(ba$valid_out)
+    );
+    top$aerr bb(
+        .clock(bb$clock),
+        .a(bb$a),
+        .b(bb$b),
+        .sub(bb$sub),
+        .valid_in(bb$valid_in),
+        .y(bb$y),
+        .valid_out(bb$valid_out)
+    );
+    top$aerr brz(
+        .clock(brz$clock),
+        .a(brz$a),
+        .b(brz$b),
+        .sub(brz$sub),
+        .valid_in(brz$valid_in),
+        .y(brz$y),
+        .valid_out(brz$valid_out)
+    );
+    top$edges$0$brz_wait brz_wait(
+        .clock(brz_wait$clock),
+        .d(brz_wait$d),
+        .q(brz_wait$q)
+    );
+    top$aerr rab(
+        .clock(rab$clock),
+        .a(rab$a),
+        .b(rab$b),
+        .sub(rab$sub),
+        .valid_in(rab$valid_in),
+        .y(rab$y),
+        .valid_out(rab$valid_out)
+    );
+    top$aerr rabz(
+        .clock(rabz$clock),
+        .a(rabz$a),
+        .b(rabz$b),
+        .sub(rabz$sub),
+        .valid_in(rabz$valid_in),
+        .y(rabz$y),
+        .valid_out(rabz$valid_out)
+    );
+    top$af rs(
+        .clock(rs$clock),
+        .a(rs$a),
+        .b(rs$b),
+        .valid_in(rs$valid_in),
+        .y(rs$y),
+        .valid_out(rs$valid_out)
+    );
+    top$aerr brs(
+        .clock(brs$clock),
+        .a(brs$a),
+        .b(brs$b),
+        .sub(brs$sub),
+        .valid_in(brs$valid_in),
+        .y(brs$y),
+        .valid_out(brs$valid_out)
+    );
+    top$edges$0$brs_wait brs_wait(
+        .clock(brs_wait$clock),
+        .d(brs_wait$d),
+        .q(brs_wait$q)
+    );
+    top$aerr bab(
+        .clock(bab$clock),
+        .a(bab$a),
+        .b(bab$b),
+        .sub(bab$sub),
+        .valid_in(bab$valid_in),
+        .y(bab$y),
+        .valid_out(bab$valid_out)
+    );
+    top$aerr bs(
+        .clock(bs$clock),
+        .a(bs$a),
+        .b(bs$b),
+        .sub(bs$sub),
+        .valid_in(bs$valid_in),
+        .y(bs$y),
+        .valid_out(bs$valid_out)
+    );
+    top$c3_0 pz_wait(
+        .clock(pz_wait$clock),
+        .d(pz_wait$d),
+        .q(pz_wait$q)
+    );
+    top$c3_0 qz_wait(
+        .clock(qz_wait$clock),
+        .d(qz_wait$d),
+        .q(qz_wait$q)
+    );
+    top$edges$0$a_wait a_wait(
+        .clock(a_wait$clock),
+        .d(a_wait$d),
+        .q(a_wait$q)
+    );
+    top$edges$0$a_wait b_wait(
+        .clock(b_wait$clock),
+        .d(b_wait$d),
+        .q(b_wait$q)
+    );
+    top$edges$0$a_wait s_wait(
+        .clock(s_wait$clock),
+        .d(s_wait$d),
+        .q(s_wait$q)
+    );
+    top$edges$0$sign_a sign_pz(
+        .x(sign_pz$x),
+        .e(sign_pz$e),
+        .sgn(sign_pz$sgn)
+    );
+    top$edges$0$sign_a sign_qz(
+        .x(sign_qz$x),
+        .e(sign_qz$e),
+        .sgn(sign_qz$sgn)
+    );
+    top$edges$0$sign_a sign_rz(
+        .x(sign_rz$x),
+        .e(sign_rz$e),
+        .sgn(sign_rz$sgn)
+    );
+    top$edges$0$sign_a sign_a(
+        .x(sign_a$x),
+        .e(sign_a$e),
+        .sgn(sign_a$sgn)
+    );
+    top$edges$0$sign_a sign_b(
+        .x(sign_b$x),
+        .e(sign_b$e),
+        .sgn(sign_b$sgn)
+    );
+    top$edges$0$sign_a sign_s(
+        .x(sign_s$x),
+        .e(sign_s$e),
+        .sgn(sign_s$sgn)
+    );
+    top$edges$0$pz_sgn_wait pz_sgn_wait(
+        .clock(pz_sgn_wait$clock),
+        .d(pz_sgn_wait$d),
+        .q(pz_sgn_wait$q)
+    );
+    top$edges$0$pz_sgn_wait qz_sgn_wait(
+        .clock(qz_sgn_wait$clock),
+        .d(qz_sgn_wait$d),
+        .q(qz_sgn_wait$q)
+    );
+    top$edges$0$rz_sgn_wait rz_sgn_wait(
+        .clock(rz_sgn_wait$clock),
+        .d(rz_sgn_wait$d),
+        .q(rz_sgn_wait$q)
+    );
+    top$edges$0$a_sgn_wait a_sgn_wait(
+        .clock(a_sgn_wait$clock),
+        .d(a_sgn_wait$d),
+        .q(a_sgn_wait$q)
+    );
+    top$edges$0$a_sgn_wait b_sgn_wait(
+        .clock(b_sgn_wait$clock),
+        .d(b_sgn_wait$d),
+        .q(b_sgn_wait$q)
+    );
+    top$edges$0$a_sgn_wait$line$0 r_pz(
+        .d(r_pz$d),
+        .q(r_pz$q),
+        .clock(r_pz$clock)
+    );
+    top$edges$0$a_sgn_wait$line$0 r_qz(
+        .d(r_qz$d),
+        .q(r_qz$q),
+        .clock(r_qz$clock)
+    );
+    top$edges$0$a_sgn_wait$line$0 r_rz(
+        .d(r_rz$d),
+        .q(r_rz$q),
+        .clock(r_rz$clock)
+    );
+    top$edges$0$a_sgn_wait$line$0 r_a(
+        .d(r_a$d),
+        .q(r_a$q),
+        .clock(r_a$clock)
+    );
+    top$edges$0$a_sgn_wait$line$0 r_b(
+        .d(r_b$d),
+        .q(r_b$q),
+        .clock(r_b$clock)
+    );
+    top$edges$0$a_sgn_wait$line$0 r_s(
+        .d(r_s$d),
+        .q(r_s$q),
+        .clock(r_s$clock)
+    );
+    top$aerr$s3_y r_s_x(
+        .d(r_s_x$d),
+        .q(r_s_x$q),
+        .clock(r_s_x$clock)
+    );
+    top$aerr$s3_y r_s_b(
+        .d(r_s_b$d),
+        .q(r_s_b$q),
+        .clock(r_s_b$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        px_qz$clock = clock;
+        qx_pz$clock = clock;
+        py_qz$clock = clock;
+        qy_pz$clock = clock;
+        a$clock = clock;
+        b$clock = clock;
+        rz$clock = clock;
+        rz_wait$clock = clock;
+        ab$clock = clock;
+        s$clock = clock;
+        pf0_wait$clock = clock;
+        qf0_wait$clock = clock;
+        pf1_wait$clock = clock;
+        qf1_wait$clock = clock;
+        p0_wait$clock = clock;
+        q0_wait$clock = clock;
+        p1_wait$clock = clock;
+        q1_wait$clock = clock;
+        ba$clock = clock;
+        bb$clock = clock;
+        brz$clock = clock;
+        brz_wait$clock = clock;
+        rab$clock = clock;
+        rabz$clock = clock;
+        rs$clock = clock;
+        brs$clock = clock;
+        brs_wait$clock = clock;
+        bab$clock = clock;
+        bs$clock = clock;
+        pz_wait$clock = clock;
+        qz_wait$clock = clock;
+        a_wait$clock = clock;
+        b_wait$clock = clock;
+        s_wait$clock = clock;
+        pz_sgn_wait$clock = clock;
+        qz_sgn_wait$clock = clock;
+        rz_sgn_wait$clock = clock;
+        a_sgn_wait$clock = clock;
+        b_sgn_wait$clock = clock;
+        r_pz$clock = clock;
+        r_qz$clock = clock;
+        r_rz$clock = clock;
+        r_a$clock = clock;
+        r_b$clock = clock;
+        r_s$clock = clock;
+        r_s_x$clock = clock;
+        r_s_b$clock = clock;
+        r_pz$d = r_pz$q;
+        r_qz$d = r_qz$q;
+        r_rz$d = r_rz$q;
+        r_a$d = r_a$q;
+        r_b$d = r_b$q;
+        r_s$d = r_s$q;
+        r_s_x$d = r_s_x$q;
+        r_s_b$d = r_s_b$q;
+        px_qz$a = p0;
+        px_qz$b = q2;
+        qx_pz$a = q0;
+        qx_pz$b = p2;
+        py_qz$a = p1;
+        py_qz$b = q2;
+        qy_pz$a = q1;
+        qy_pz$b = p2;
+        px_qz$valid_in = 1'b0;
+        qx_pz$valid_in = 1'b0;
+        py_qz$valid_in = 1'b0;
+        qy_pz$valid_in = 1'b0;
+        a$a = px_qz$y;
+        a$b = qx_pz$y;
+        a$sub = 1'b1;
+        a$valid_in = 1'b0;
+        b$a = py_qz$y;
+        b$b = qy_pz$y;
+        b$sub = 1'b1;
+        b$valid_in = 1'b0;
+        rz$a = q2;
+        rz$b = p2;
+        rz$sub = 1'b1;
+        rz$valid_in = 1'b0;
+        rz_wait$d = rz$y;
+        ab$a = a$y;
+        ab$b = b$y;
+        ab$sub = 1'b0;
+        ab$valid_in = 1'b0;
+        s$a = ab$y;
+        s$b = rz_wait$q;
+        s$sub = 1'b1;
+        s$valid_in = 1'b0;
+        pf0_wait$d = pf0;
+        qf0_wait$d = qf0;
+        pf1_wait$d = pf1;
+        qf1_wait$d = qf1;
+        p0_wait$d = p0 & mask;
+        q0_wait$d = q0 & mask;
+        p1_wait$d = p1 & mask;
+        q1_wait$d = q1 & mask;
+        ta$0$clock = clock;
+        tb$0$clock = clock;
+        ta$0$valid_in = 1'b0;
+        tb$0$valid_in = 1'b0;
+        ta$1$clock = clock;
+        tb$1$clock = clock;
+        ta$1$valid_in = 1'b0;
+        tb$1$valid_in = 1'b0;
+        ta$2$clock = clock;
+        tb$2$clock = clock;
+        ta$2$valid_in = 1'b0;
+        tb$2$valid_in = 1'b0;
+        ta$3$clock = clock;
+        tb$3$clock = clock;
+        ta$3$valid_in = 1'b0;
+        tb$3$valid_in = 1'b0;
+        ta$0$a = pf0_wait$q;
+        ta$0$b = qh;
+        ta$1$a = p0_wait$q;
+        ta$1$b = qe;
+        ta$2$a = qf0_wait$q;
+        ta$2$b = ph;
+        ta$3$a = q0_wait$q;
+        ta$3$b = pe;
+        tb$0$a = pf1_wait$q;
+        tb$0$b = qh;
+        tb$1$a = p1_wait$q;
+        tb$1$b = qe;
+        tb$2$a = qf1_wait$q;
+        tb$2$b = ph;
+        tb$3$a = q1_wait$q;
+        tb$3$b = pe;
+        ta_wait$0$clock = clock;
+        tb_wait$0$clock = clock;
+        sa$0$clock = clock;
+        sb$0$clock = clock;
+        sa$0$sub = 1'b0;
+        sb$0$sub = 1'b0;
+        sa$0$valid_in = 1'b0;
+        sb$0$valid_in = 1'b0;
+        ta_wait$1$clock = clock;
+        tb_wait$1$clock = clock;
+        sa$1$clock = clock;
+        sb$1$clock = clock;
+        sa$1$sub = 1'b0;
+        sb$1$sub = 1'b0;
+        sa$1$valid_in = 1'b0;
+        sb$1$valid_in = 1'b0;
+        ta_wait$0$d = ta$1$y;
+        ta_wait$1$d = ta$3$y;
+        tb_wait$0$d = tb$1$y;
+        tb_wait$1$d = tb$3$y;
+        sa$0$a = ta$0$y;
+        sa$0$b = ta_wait$0$q;
+        sa$1$a = ta$2$y;
+        sa$1$b = ta_wait$1$q;
+        sb$0$a = tb$0$y;
+        sb$0$b = tb_wait$0$q;
+        sb$1$a = tb$2$y;
+        sb$1$b = tb_wait$1$q;
+        ba$a = sa$0$y;
+        ba$b = sa$1$y;
+        ba$sub = 1'b0;
+        ba$valid_in = 1'b0;
+        bb$a = sb$0$y;
+        bb$b = sb$1$y;
+        bb$sub = 1'b0;
+        bb$valid_in = 1'b0;
+        brz$a = qf2;
+        brz$b = pf2;
+        brz$sub = 1'b0;
+        brz$valid_in = 1'b0;
+        brz_wait$d = brz$y;
+        rab$a = a$y & mask;
+        rab$b = b$y & mask;
+        rab$sub = 1'b0;
+        rab$valid_in = 1'b0;
+        rabz$a = rab$y;
+        rabz$b = rz_wait$q & mask;
+        rabz$sub = 1'b0;
+        rabz$valid_in = 1'b0;
+        rs$a = c_2u;
+        rs$b = rabz$y;
+        rs$valid_in = 1'b0;
+        brs$a = brz_wait$q;
+        brs$b = rs$y;
+        brs$sub = 1'b0;
+        brs$valid_in = 1'b0;
+        brs_wait$d = brs$y;
+        bab$a = ba$y;
+        bab$b = bb$y;
+        bab$sub = 1'b0;
+        bab$valid_in = 1'b0;
+        bs$a = bab$y;
+        bs$b = brs_wait$q;
+        bs$sub = 1'b0;
+        bs$valid_in = 1'b0;
+        pz_wait$d = p2;
+        qz_wait$d = q2;
+        sign_pz$x = pz_wait$q;
+        sign_pz$e = pe;
+        sign_qz$x = qz_wait$q;
+        sign_qz$e = qe;
+        sign_rz$x = rz_wait$q;
+        sign_rz$e = brz$y;
+        a_wait$d = a$y;
+        b_wait$d = b$y;
+        s_wait$d = s$y;
+        sign_a$x = a_wait$q;
+        sign_a$e = ba$y;
+        sign_b$x = b_wait$q;
+        sign_b$e = bb$y;
+        sign_s$x = s_wait$q;
+        sign_s$e = bs$y;
+        pz_sgn_wait$d = sign_pz$sgn;
+        qz_sgn_wait$d = sign_qz$sgn;
+        rz_sgn_wait$d = sign_rz$sgn;
+        a_sgn_wait$d = sign_a$sgn;
+        b_sgn_wait$d = sign_b$sgn;
+        r_pz$d = pz_sgn_wait$q;
+        r_qz$d = qz_sgn_wait$q;
+        r_rz$d = rz_sgn_wait$q;
+        r_a$d = a_sgn_wait$q;
+        r_b$d = b_sgn_wait$q;
+        r_s$d = sign_s$sgn;
+        r_s_x$d = s_wait$q;
+        r_s_b$d = bs$y;
+        pz_p = r_pz$q[32'h0];
+        pz_n = r_pz$q[32'h1];
+        qz_p = r_qz$q[32'h0];
+        qz_n = r_qz$q[32'h1];
+        rz_p = r_rz$q[32'h0];
+        rz_n = r_rz$q[32'h1];
+        a_p = r_a$q[32'h0];
+        a_n = r_a$q[32'h1];
+        b_p = r_b$q[32'h0];
+        b_n = r_b$q[32'h1];
+        s_p = r_s$q[32'h0];
+        s_n = r_s$q[32'h1];
+        cross_t = (pz_n & qz_p & rz_p & a_p & b_p & s_n) | (pz_p & qz_n & rz_n & a_n & b_n & s_p);
+        cross_f = (pz_p | qz_n | rz_n | a_n | b_n | s_p) & (pz_n | qz_p | rz_p | a_p | b_p | s_n);
+        s_x = r_s_x$q;
+        s_b = r_s_b$q;
+    end
+    
+endmodule // top$edges$0
+
+
+module top$edges$0$a(clock,a,b,sub,valid_in,y,valid_out);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] a;
+    input wire  [31:0] b;
+    input wire  sub;
+    input wire  valid_in;
+    output reg  [31:0] y;
+    output reg  valid_out;
+    
+    // Constant declarations
+    localparam  round_up = 1'b0;
+    localparam  c_align_cap = 8'h1b;
+    localparam  c_exp_ones = 10'b11111111;
+    
+    // Stub signals
+    reg  [31:0] unpack_a$x;
+    wire  unpack_a$sign;
+    wire  [7:0] unpack_a$exp;
+    wire  [23:0] unpack_a$sig;
+    wire  unpack_a$is_zero;
+    wire  unpack_a$is_inf;
+    wire  unpack_a$is_nan;
+    reg  [31:0] unpack_b$x;
+    wire  unpack_b$sign;
+    wire  [7:0] unpack_b$exp;
+    wire  [23:0] unpack_b$sig;
+    wire  unpack_b$is_zero;
+    wire  unpack_b$is_inf;
+    wire  unpack_b$is_nan;
+    reg  s1_valid$d;
+    wire  s1_valid$q;
+    reg  s1_valid$clock;
+    reg  s1_nan$d;
+    wire  s1_nan$q;
+    reg  s1_nan$clock;
+    reg  s1_inf$d;
+    wire  s1_inf$q;
+    reg  s1_inf$clock;
+    reg  s1_inf_sign$d;
+    wire  s1_inf_sign$q;
+    reg  s1_inf_sign$clock;
+    reg  s1_zero_sign$d;
+    wire  s1_zero_sign$q;
+    reg  s1_zero_sign$clock;
+    reg  s1_sign$d;
+    wire  s1_sign$q;
+    reg  s1_sign$clock;
+    reg  s1_eff_sub$d;
+    wire  s1_eff_sub$q;
+    reg  s1_eff_sub$clock;
+    reg  [7:0] s1_exp$d;
+    wire  [7:0] s1_exp$q;
+    reg  s1_exp$clock;
+    reg  [26:0] s1_big$d;
+    wire  [26:0] s1_big$q;
+    reg  s1_big$clock;
+    reg  [26:0] s1_small$d;
+    wire  [26:0] s1_small$q;
+    reg  s1_small$clock;
+    reg  [26:0] norm$x;
+    wire  [26:0] norm$y;
+    wire  [4:0] norm$lz;
+    reg  s2_valid$d;
+    wire  s2_valid$q;
+    reg  s2_valid$clock;
+    reg  s2_sign$d;
+    wire  s2_sign$q;
+    reg  s2_sign$clock;
+    reg  s2_nan$d;
+    wire  s2_nan$q;
+    reg  s2_nan$clock;
+    reg  s2_inf$d;
+    wire  s2_inf$q;
+    reg  s2_inf$clock;
+    reg  s2_zero$d;
+    wire  s2_zero$q;
+    reg  s2_zero$clock;
+    reg  s2_ovf$d;
+    wire  s2_ovf$q;
+    reg  s2_ovf$clock;
+    reg  [7:0] s2_efield$d;
+    wire  [7:0] s2_efield$q;
+    reg  s2_efield$clock;
+    reg  [25:0] s2_nm$d;
+    wire  [25:0] s2_nm$q;
+    reg  s2_nm$clock;
+    reg  round$round_up;
+    reg  round$sign;
+    reg  round$nan;
+    reg  round$inf;
+    reg  round$zero;
+    reg  round$ovf;
+    reg  [7:0] round$efield;
+    reg  [25:0] round$nm;
+    wire  [31:0] round$y;
+    reg  s3_valid$d;
+    wire  s3_valid$q;
+    reg  s3_valid$clock;
+    reg  [31:0] s3_y$d;
+    wire  [31:0] s3_y$q;
+    reg  s3_y$clock;
+    
+    // Local signals
+    reg  c1_b_sign;
+    reg  c1_swap;
+    reg  c1_big_sign;
+    reg  [7:0] c1_big_exp;
+    reg  [23:0] c1_big_sig;
+    reg  c1_small_sign;
+    reg  [7:0] c1_small_exp;
+    reg  [23:0] c1_small_sig;
+    reg  [7:0] c1_diff;
+    reg  [7:0] c1_shift;
+    reg  [26:0] c1_small_ext;
+    reg  [26:0] c1_aligned;
+    reg  [26:0] c1_back;
+    reg  c1_lost;
+    reg  c1_inf_sign;
+    reg  [27:0] c2_sum;
+    reg  c2_carry;
+    reg  c2_zero;
+    reg  [7:0] c2_limit;
+    reg  [7:0] c2_lz;
+    reg  [7:0] c2_shift;
+    reg  [26:0] c2_shifted;
+    reg  [9:0] c2_exp;
+    reg  [25:0] c2_nm;
+    reg  c2_sign;
+    
+    // Sub module instances
+    top$aerr$unpack_a unpack_a(
+        .x(unpack_a$x),
+        .sign(unpack_a$sign),
+        .exp(unpack_a$exp),
+        .sig(unpack_a$sig),
+        .is_zero(unpack_a$is_zero),
+        .is_inf(unpack_a$is_inf),
+        .is_nan(unpack_a$is_nan)
+    );
+    top$aerr$unpack_a unpack_b(
+        .x(unpack_b$x),
+        .sign(unpack_b$sign),
+        .exp(unpack_b$exp),
+        .sig(unpack_b$sig),
+        .is_zero(unpack_b$is_zero),
+        .is_inf(unpack_b$is_inf),
+        .is_nan(unpack_b$is_nan)
+    );
+    top$aerr$s1_eff_sub s1_valid(
+        .d(s1_valid$d),
+        .q(s1_valid$q),
+        .clock(s1_valid$clock)
+    );
+    top$aerr$s1_eff_sub s1_nan(
+        .d(s1_nan$d),
+        .q(s1_nan$q),
+        .clock(s1_nan$clock)
+    );
+    top$aerr$s1_eff_sub s1_inf(
+        .d(s1_inf$d),
+        .q(s1_inf$q),
+        .clock(s1_inf$clock)
+    );
+    top$aerr$s1_eff_sub s1_inf_sign(
+        .d(s1_inf_sign$d),
+        .q(s1_inf_sign$q),
+        .clock(s1_inf_sign$clock)
+    );
+    top$aerr$s1_eff_sub s1_zero_sign(
+        .d(s1_zero_sign$d),
+        .q(s1_zero_sign$q),
+        .clock(s1_zero_sign$clock)
+    );
+    top$aerr$s1_eff_sub s1_sign(
+        .d(s1_sign$d),
+        .q(s1_sign$q),
+        .clock(s1_sign$clock)
+    );
+    top$aerr$s1_eff_sub s1_eff_sub(
+        .d(s1_eff_sub$d),
+        .q(s1_eff_sub$q),
+        .clock(s1_eff_sub$clock)
+    );
+    top$aerr$s1_exp s1_exp(
+        .d(s1_exp$d),
+        .q(s1_exp$q),
+        .clock(s1_exp$clock)
+    );
+    top$aerr$s1_big s1_big(
+        .d(s1_big$d),
+        .q(s1_big$q),
+        .clock(s1_big$clock)
+    );
+    top$aerr$s1_big s1_small(
+        .d(s1_small$d),
+        .q(s1_small$q),
+        .clock(s1_small$clock)
+    );
+    top$aerr$norm norm(
+        .x(norm$x),
+        .y(norm$y),
+        .lz(norm$lz)
+    );
+    top$aerr$s1_eff_sub s2_valid(
+        .d(s2_valid$d),
+        .q(s2_valid$q),
+        .clock(s2_valid$clock)
+    );
+    top$aerr$s1_eff_sub s2_sign(
+        .d(s2_sign$d),
+        .q(s2_sign$q),
+        .clock(s2_sign$clock)
+    );
+    top$aerr$s1_eff_sub s2_nan(
+        .d(s2_nan$d),
+        .q(s2_nan$q),
+        .clock(s2_nan$clock)
+    );
+    top$aerr$s1_eff_sub s2_inf(
+        .d(s2_inf$d),
+        .q(s2_inf$q),
+        .clock(s2_inf$clock)
+    );
+    top$aerr$s1_eff_sub s2_zero(
+        .d(s2_zero$d),
+        .q(s2_zero$q),
+        .clock(s2_zero$clock)
+    );
+    top$aerr$s1_eff_sub s2_ovf(
+        .d(s2_ovf$d),
+        .q(s2_ovf$q),
+        .clock(s2_ovf$clock)
+    );
+    top$aerr$s1_exp s2_efield(
+        .d(s2_efield$d),
+        .q(s2_efield$q),
+        .clock(s2_efield$clock)
+    );
+    top$aerr$s2_nm s2_nm(
+        .d(s2_nm$d),
+        .q(s2_nm$q),
+        .clock(s2_nm$clock)
+    );
+    top$aerr$round round(
+        .round_up(round$round_up),
+        .sign(round$sign),
+        .nan(round$nan),
+        .inf(round$inf),
+        .zero(round$zero),
+        .ovf(round$ovf),
+        .efield(round$efield),
+        .nm(round$nm),
+        .y(round$y)
+    );
+    top$aerr$s1_eff_sub s3_valid(
+        .d(s3_valid$d),
+        .q(s3_valid$q),
+        .clock(s3_valid$clock)
+    );
+    top$aerr$s3_y s3_y(
+        .d(s3_y$d),
+        .q(s3_y$q),
+        .clock(s3_y$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        s1_valid$clock = clock;
+        s1_nan$clock = clock;
+        s1_inf$clock = clock;
+        s1_inf_sign$clock = clock;
+        s1_zero_sign$clock = clock;
+        s1_sign$clock = clock;
+        s1_eff_sub$clock = clock;
+        s1_exp$clock = clock;
+        s1_big$clock = clock;
+        s1_small$clock = clock;
+        s1_valid$d = s1_valid$q;
+        s1_nan$d = s1_nan$q;
+        s1_inf$d = s1_inf$q;
+        s1_inf_sign$d = s1_inf_sign$q;
+        s1_zero_sign$d = s1_zero_sign$q;
+        s1_sign$d = s1_sign$q;
+        s1_eff_sub$d = s1_eff_sub$q;
+        s1_exp$d = s1_exp$q;
+        s1_big$d = s1_big$q;
+        s1_small$d = s1_small$q;
+        s2_valid$clock = clock;
+        s2_sign$clock = clock;
+        s2_nan$clock = clock;
+        s2_inf$clock = clock;
+        s2_zero$clock = clock;
+        s2_ovf$clock = clock;
+        s2_efield$clock = clock;
+        s2_nm$clock = clock;
+        s2_valid$d = s2_valid$q;
+        s2_sign$d = s2_sign$q;
+        s2_nan$d = s2_nan$q;
+        s2_inf$d = s2_inf$q;
+        s2_zero$d = s2_zero$q;
+        s2_ovf$d = s2_ovf$q;
+        s2_efield$d = s2_efield$q;
+        s2_nm$d = s2_nm$q;
+        s3_valid$clock = clock;
+        s3_y$clock = clock;
+        s3_valid$d = s3_valid$q;
+        s3_y$d = s3_y$q;
+        unpack_a$x = a;
+        unpack_b$x = b;
+        c1_b_sign = unpack_b$sign ^ sub;
+        c1_swap = a[(32'h0)+:(31)] < b[(32'h0)+:(31)];
+        c1_big_sign = unpack_a$sign;
+        c1_big_exp = unpack_a$exp;
+        c1_big_sig = unpack_a$sig;
+        c1_small_sign = c1_b_sign;
+        c1_small_exp = unpack_b$exp;
+        c1_small_sig = unpack_b$sig;
+        if (c1_swap) begin
+            c1_big_sign = c1_b_sign;
+            c1_big_exp = unpack_b$exp;
+            c1_big_sig = unpack_b$sig;
+            c1_small_sign = unpack_a$sign;
+            c1_small_exp = unpack_a$exp;
+            c1_small_sig = unpack_a$sig;
+        end
+        c1_diff = c1_big_exp - c1_small_exp;
+        c1_shift = c1_diff;
+        if (c1_diff > c_align_cap) begin
+            c1_shift = c_align_cap;
+        end
+        c1_small_ext = ((c1_small_sig) & 27'h7ffffff) << 32'h3;
+        c1_aligned = c1_small_ext >> c1_shift;
+        c1_back = c1_aligned << c1_shift;
+        c1_lost = c1_back != c1_small_ext;
+        c1_inf_sign = c1_b_sign;
+        if (unpack_a$is_inf) begin
+            c1_inf_sign = unpack_a$sign;
+        end
+        s1_valid$d = valid_in;
+        s1_nan$d = unpack_a$is_nan | unpack_b$is_nan | (unpack_a$is_inf & unpack_b$is_inf & (unpack_a$sign ^ c1_b_sign));
+        s1_inf$d = unpack_a$is_inf | unpack_b$is_inf;
+        s1_inf_sign$d = c1_inf_sign;
+        s1_zero_sign$d = unpack_a$sign & c1_b_sign;
+        s1_sign$d = c1_big_sign;
+        s1_eff_sub$d = c1_big_sign ^ c1_small_sign;
+        s1_exp$d = c1_big_exp;
+        s1_big$d = ((c1_big_sig) & 27'h7ffffff) << 32'h3;
+        s1_small$d = (c1_aligned & ~(1 << (32'h0)) | ((c1_aligned[32'h0] | c1_lost) << (32'h0)));
+        c2_sum = ((s1_big$q) & 28'hfffffff) + ((s1_small$q) & 28'hfffffff);
+        if (s1_eff_sub$q) begin
+            c2_sum = ((s1_big$q) & 28'hfffffff) - ((s1_small$q) & 28'hfffffff);
+        end
+        c2_carry = c2_sum[32'h1b];
+        c2_zero = c2_sum == 32'h0;
+        norm$x = c2_sum[(32'h0)+:(27)];
+        c2_limit = s1_exp$q - 32'h1;
+        c2_lz = ((norm$lz) & 8'hff);
+        c2_shift = c2_lz;
+        if (c2_lz > c2_limit) begin
+            c2_shift = c2_limit;
+        end
+        c2_shifted = c2_sum[(32'h0)+:(27)] << c2_shift;
+        c2_exp = ((s1_exp$q) & 10'h3ff) - ((c2_shift) & 10'h3ff);
+        c2_nm = (((c2_shifted >> 32'h1) & 26'h3ffffff) & ~(1 << (32'h0)) | ((c2_shifted[32'h1] | c2_shifted[32'h0]) << (32'h0)));
+        if (c2_carry) begin
+            c2_exp = ((s1_exp$q) & 10'h3ff) + 32'h1;
+            c2_nm = (((c2_sum >> 32'h2) & 26'h3ffffff) & ~(1 << (32'h0)) | ((c2_sum[32'h2] | c2_sum[32'h1] | c2_sum[32'h0]) << (32'h0)));
+        end
+        c2_sign = s1_sign$q;
+        if (c2_zero) begin
+            c2_sign = s1_zero_sign$q;
+        end
+        if (s1_inf$q) begin
+            c2_sign = s1_inf_sign$q;
+        end
+        s2_valid$d = s1_valid$q;
+        s2_sign$d = c2_sign;
+        s2_nan$d = s1_nan$q;
+        s2_inf$d = s1_inf$q;
+        s2_zero$d = c2_zero;
+        s2_ovf$d = c2_exp >= c_exp_ones;
+        s2_efield$d = 32'h0;
+        if (c2_nm[32'h18 + 32'h1]) begin
+            s2_efield$d = ((c2_exp) & 8'hff);
+        end
+        s2_nm$d = c2_nm;
+        round$round_up = round_up;
+        round$sign = s2_sign$q;
+        round$nan = s2_nan$q;
+        round$inf = s2_inf$q;
+        round$zero = s2_zero$q;
+        round$ovf = s2_ovf$q;
+        round$efield = s2_efield$q;
+        round$nm = s2_nm$q;
+        s3_valid$d = s2_valid$q;
+        s3_y$d = round$y;
+        y = s3_y$q;
+        valid_out = s3_valid$q;
+    end
+    
+endmodule // top$edges$0$a
 
 
 module top$edges$0$a_sgn_wait(clock,d,q);
@@ -4064,36 +6239,6 @@ module top$edges$0$a_sgn_wait(clock,d,q);
     reg  [1:0] line$5$d;
     wire  [1:0] line$5$q;
     reg  line$5$clock;
-    reg  [1:0] line$6$d;
-    wire  [1:0] line$6$q;
-    reg  line$6$clock;
-    reg  [1:0] line$7$d;
-    wire  [1:0] line$7$q;
-    reg  line$7$clock;
-    reg  [1:0] line$8$d;
-    wire  [1:0] line$8$q;
-    reg  line$8$clock;
-    reg  [1:0] line$9$d;
-    wire  [1:0] line$9$q;
-    reg  line$9$clock;
-    reg  [1:0] line$10$d;
-    wire  [1:0] line$10$q;
-    reg  line$10$clock;
-    reg  [1:0] line$11$d;
-    wire  [1:0] line$11$q;
-    reg  line$11$clock;
-    reg  [1:0] line$12$d;
-    wire  [1:0] line$12$q;
-    reg  line$12$clock;
-    reg  [1:0] line$13$d;
-    wire  [1:0] line$13$q;
-    reg  line$13$clock;
-    reg  [1:0] line$14$d;
-    wire  [1:0] line$14$q;
-    reg  line$14$clock;
-    reg  [1:0] line$15$d;
-    wire  [1:0] line$15$q;
-    reg  line$15$clock;
     
     // Sub module instances
     top$edges$0$a_sgn_wait$line$0 line$0(
@@ -4126,55 +6271,164 @@ module top$edges$0$a_sgn_wait(clock,d,q);
         .q(line$5$q),
         .clock(line$5$clock)
     );
-    top$edges$0$a_sgn_wait$line$0 line$6(
+    
+    // Update code
+    always @(*) begin
+        line$0$clock = clock;
+        line$0$d = d;
+        line$1$clock = clock;
+        line$1$d = d;
+        line$2$clock = clock;
+        line$2$d = d;
+        line$3$clock = clock;
+        line$3$d = d;
+        line$4$clock = clock;
+        line$4$d = d;
+        line$5$clock = clock;
+        line$5$d = d;
+        line$0$d = line$1$q;
+        line$1$d = line$2$q;
+        line$2$d = line$3$q;
+        line$3$d = line$4$q;
+        line$4$d = line$5$q;
+        q = line$0$q;
+    end
+    
+endmodule // top$edges$0$a_sgn_wait
+
+
+module top$edges$0$a_sgn_wait$line$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [1:0] d;
+    output reg  [1:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 2'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$edges$0$a_sgn_wait$line$0
+
+
+module top$edges$0$a_wait(clock,d,q);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    
+    // Stub signals
+    reg  [31:0] line$0$d;
+    wire  [31:0] line$0$q;
+    reg  line$0$clock;
+    reg  [31:0] line$1$d;
+    wire  [31:0] line$1$q;
+    reg  line$1$clock;
+    reg  [31:0] line$2$d;
+    wire  [31:0] line$2$q;
+    reg  line$2$clock;
+    reg  [31:0] line$3$d;
+    wire  [31:0] line$3$q;
+    reg  line$3$clock;
+    reg  [31:0] line$4$d;
+    wire  [31:0] line$4$q;
+    reg  line$4$clock;
+    reg  [31:0] line$5$d;
+    wire  [31:0] line$5$q;
+    reg  line$5$clock;
+    reg  [31:0] line$6$d;
+    wire  [31:0] line$6$q;
+    reg  line$6$clock;
+    reg  [31:0] line$7$d;
+    wire  [31:0] line$7$q;
+    reg  line$7$clock;
+    reg  [31:0] line$8$d;
+    wire  [31:0] line$8$q;
+    reg  line$8$clock;
+    reg  [31:0] line$9$d;
+    wire  [31:0] line$9$q;
+    reg  line$9$clock;
+    reg  [31:0] line$10$d;
+    wire  [31:0] line$10$q;
+    reg  line$10$clock;
+    reg  [31:0] line$11$d;
+    wire  [31:0] line$11$q;
+    reg  line$11$clock;
+    reg  [31:0] line$12$d;
+    wire  [31:0] line$12$q;
+    reg  line$12$clock;
+    
+    // Sub module instances
+    top$aerr$s3_y line$0(
+        .d(line$0$d),
+        .q(line$0$q),
+        .clock(line$0$clock)
+    );
+    top$aerr$s3_y line$1(
+        .d(line$1$d),
+        .q(line$1$q),
+        .clock(line$1$clock)
+    );
+    top$aerr$s3_y line$2(
+        .d(line$2$d),
+        .q(line$2$q),
+        .clock(line$2$clock)
+    );
+    top$aerr$s3_y line$3(
+        .d(line$3$d),
+        .q(line$3$q),
+        .clock(line$3$clock)
+    );
+    top$aerr$s3_y line$4(
+        .d(line$4$d),
+        .q(line$4$q),
+        .clock(line$4$clock)
+    );
+    top$aerr$s3_y line$5(
+        .d(line$5$d),
+        .q(line$5$q),
+        .clock(line$5$clock)
+    );
+    top$aerr$s3_y line$6(
         .d(line$6$d),
         .q(line$6$q),
         .clock(line$6$clock)
     );
-    top$edges$0$a_sgn_wait$line$0 line$7(
+    top$aerr$s3_y line$7(
         .d(line$7$d),
         .q(line$7$q),
         .clock(line$7$clock)
     );
-    top$edges$0$a_sgn_wait$line$0 line$8(
+    top$aerr$s3_y line$8(
         .d(line$8$d),
         .q(line$8$q),
         .clock(line$8$clock)
     );
-    top$edges$0$a_sgn_wait$line$0 line$9(
+    top$aerr$s3_y line$9(
         .d(line$9$d),
         .q(line$9$q),
         .clock(line$9$clock)
     );
-    top$edges$0$a_sgn_wait$line$0 line$10(
+    top$aerr$s3_y line$10(
         .d(line$10$d),
         .q(line$10$q),
         .clock(line$10$clock)
     );
-    top$edges$0$a_sgn_wait$line$0 line$11(
+    top$aerr$s3_y line$11(
         .d(line$11$d),
         .q(line$11$q),
         .clock(line$11$clock)
     );
-    top$edges$0$a_sgn_wait$line$0 line$12(
+    top$aerr$s3_y line$12(
         .d(line$12$d),
         .q(line$12$q),
         .clock(line$12$clock)
-    );
-    top$edges$0$a_sgn_wait$line$0 line$13(
-        .d(line$13$d),
-        .q(line$13$q),
-        .clock(line$13$clock)
-    );
-    top$edges$0$a_sgn_wait$line$0 line$14(
-        .d(line$14$d),
-        .q(line$14$q),
-        .clock(line$14$clock)
-    );
-    top$edges$0$a_sgn_wait$line$0 line$15(
-        .d(line$15$d),
-        .q(line$15$q),
-        .clock(line$15$clock)
     );
     
     // Update code
@@ -4205,12 +6459,6 @@ module top$edges$0$a_sgn_wait(clock,d,q);
         line$11$d = d;
         line$12$clock = clock;
         line$12$d = d;
-        line$13$clock = clock;
-        line$13$d = d;
-        line$14$clock = clock;
-        line$14$d = d;
-        line$15$clock = clock;
-        line$15$d = d;
         line$0$d = line$1$q;
         line$1$d = line$2$q;
         line$2$d = line$3$q;
@@ -4223,280 +6471,159 @@ module top$edges$0$a_sgn_wait(clock,d,q);
         line$9$d = line$10$q;
         line$10$d = line$11$q;
         line$11$d = line$12$q;
-        line$12$d = line$13$q;
-        line$13$d = line$14$q;
-        line$14$d = line$15$q;
         q = line$0$q;
     end
     
-endmodule // top$edges$0$a_sgn_wait
+endmodule // top$edges$0$a_wait
 
 
-module top$edges$0$a_sgn_wait$line$0(d,q,clock);
-    
-    // Module arguments
-    input wire  [1:0] d;
-    output reg  [1:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 2'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$edges$0$a_sgn_wait$line$0
-
-
-module top$edges$0$px_qz(clock,ax,ae,bx,be,x,e);
+module top$edges$0$brs_wait(clock,d,q);
     
     // Module arguments
     input wire  clock;
-    input wire  [31:0] ax;
-    input wire  [31:0] ae;
-    input wire  [31:0] bx;
-    input wire  [31:0] be;
-    output reg  [31:0] x;
-    output reg  [31:0] e;
+    input wire  [31:0] d;
+    output reg  [31:0] q;
     
     // Stub signals
-    reg  mul$clock;
-    reg  [31:0] mul$a;
-    reg  [31:0] mul$b;
-    reg  mul$valid_in;
-    wire  [31:0] mul$y;
-    wire  mul$valid_out;
-    reg  err$clock;
-    reg  [31:0] err$x;
-    reg  err$valid_in;
-    wire  [31:0] err$y;
-    wire  err$valid_out;
-    reg  ae_bx$clock;
-    reg  [31:0] ae_bx$a;
-    reg  [31:0] ae_bx$b;
-    reg  ae_bx$valid_in;
-    wire  [31:0] ae_bx$y;
-    wire  ae_bx$valid_out;
-    reg  be_ax$clock;
-    reg  [31:0] be_ax$a;
-    reg  [31:0] be_ax$b;
-    reg  be_ax$valid_in;
-    wire  [31:0] be_ax$y;
-    wire  be_ax$valid_out;
-    reg  ae_be$clock;
-    reg  [31:0] ae_be$a;
-    reg  [31:0] ae_be$b;
-    reg  ae_be$valid_in;
-    wire  [31:0] ae_be$y;
-    wire  ae_be$valid_out;
-    reg  s_cross$clock;
-    reg  [31:0] s_cross$a;
-    reg  [31:0] s_cross$b;
-    reg  s_cross$valid_in;
-    wire  [31:0] s_cross$y;
-    wire  s_cross$valid_out;
-    reg  s_err$clock;
-    reg  [31:0] s_err$a;
-    reg  [31:0] s_err$b;
-    reg  s_err$valid_in;
-    wire  [31:0] s_err$y;
-    wire  s_err$valid_out;
-    reg  s_all$clock;
-    reg  [31:0] s_all$a;
-    reg  [31:0] s_all$b;
-    reg  s_all$valid_in;
-    wire  [31:0] s_all$y;
-    wire  s_all$valid_out;
-    reg  x_wait$clock;
-    reg  [31:0] x_wait$d;
-    wire  [31:0] x_wait$q;
+    reg  [31:0] line$0$d;
+    wire  [31:0] line$0$q;
+    reg  line$0$clock;
+    reg  [31:0] line$1$d;
+    wire  [31:0] line$1$q;
+    reg  line$1$clock;
+    reg  [31:0] line$2$d;
+    wire  [31:0] line$2$q;
+    reg  line$2$clock;
     
     // Sub module instances
-    top$edges$0$px_qz$ae_be$op mul(
-        .clock(mul$clock),
-        .a(mul$a),
-        .b(mul$b),
-        .valid_in(mul$valid_in),
-        .y(mul$y),
-        .valid_out(mul$valid_out)
+    top$aerr$s3_y line$0(
+        .d(line$0$d),
+        .q(line$0$q),
+        .clock(line$0$clock)
     );
-    top$edges$0$a$err err(
-        .clock(err$clock),
-        .x(err$x),
-        .valid_in(err$valid_in),
-        .y(err$y),
-        .valid_out(err$valid_out)
+    top$aerr$s3_y line$1(
+        .d(line$1$d),
+        .q(line$1$q),
+        .clock(line$1$clock)
     );
-    top$edges$0$px_qz$ae_be ae_bx(
-        .clock(ae_bx$clock),
-        .a(ae_bx$a),
-        .b(ae_bx$b),
-        .valid_in(ae_bx$valid_in),
-        .y(ae_bx$y),
-        .valid_out(ae_bx$valid_out)
-    );
-    top$edges$0$px_qz$ae_be be_ax(
-        .clock(be_ax$clock),
-        .a(be_ax$a),
-        .b(be_ax$b),
-        .valid_in(be_ax$valid_in),
-        .y(be_ax$y),
-        .valid_out(be_ax$valid_out)
-    );
-    top$edges$0$px_qz$ae_be ae_be(
-        .clock(ae_be$clock),
-        .a(ae_be$a),
-        .b(ae_be$b),
-        .valid_in(ae_be$valid_in),
-        .y(ae_be$y),
-        .valid_out(ae_be$valid_out)
-    );
-    top$edges$0$a$s_ab s_cross(
-        .clock(s_cross$clock),
-        .a(s_cross$a),
-        .b(s_cross$b),
-        .valid_in(s_cross$valid_in),
-        .y(s_cross$y),
-        .valid_out(s_cross$valid_out)
-    );
-    top$edges$0$a$s_ab s_err(
-        .clock(s_err$clock),
-        .a(s_err$a),
-        .b(s_err$b),
-        .valid_in(s_err$valid_in),
-        .y(s_err$y),
-        .valid_out(s_err$valid_out)
-    );
-    top$edges$0$a$s_ab s_all(
-        .clock(s_all$clock),
-        .a(s_all$a),
-        .b(s_all$b),
-        .valid_in(s_all$valid_in),
-        .y(s_all$y),
-        .valid_out(s_all$valid_out)
-    );
-    top$edges$0$px_qz$x_wait x_wait(
-        .clock(x_wait$clock),
-        .d(x_wait$d),
-        .q(x_wait$q)
+    top$aerr$s3_y line$2(
+        .d(line$2$d),
+        .q(line$2$q),
+        .clock(line$2$clock)
     );
     
     // Update code
     always @(*) begin
-        mul$clock = clock;
-        err$clock = clock;
-        ae_bx$clock = clock;
-        be_ax$clock = clock;
-        ae_be$clock = clock;
-        s_cross$clock = clock;
-        s_err$clock = clock;
-        s_all$clock = clock;
-        x_wait$clock = clock;
-        mul$a = ax;
-        mul$b = bx;
-        mul$valid_in = 1'b0;
-        err$x = mul$y;
-        err$valid_in = 1'b0;
-        ae_bx$a = ae;
-        ae_bx$b = ((bx[(32'h0)+:(31)]) & 32'hffffffff);
-        ae_bx$valid_in = 1'b0;
-        be_ax$a = be;
-        be_ax$b = ((ax[(32'h0)+:(31)]) & 32'hffffffff);
-        be_ax$valid_in = 1'b0;
-        ae_be$a = ae;
-        ae_be$b = be;
-        ae_be$valid_in = 1'b0;
-        s_cross$a = ae_bx$y;
-        s_cross$b = be_ax$y;
-        s_cross$valid_in = 1'b0;
-        s_err$a = ae_be$y;
-        s_err$b = err$y;
-        s_err$valid_in = 1'b0;
-        s_all$a = s_cross$y;
-        s_all$b = s_err$y;
-        s_all$valid_in = 1'b0;
-        x_wait$d = mul$y;
-        x = x_wait$q;
-        e = s_all$y;
+        line$0$clock = clock;
+        line$0$d = d;
+        line$1$clock = clock;
+        line$1$d = d;
+        line$2$clock = clock;
+        line$2$d = d;
+        line$0$d = line$1$q;
+        line$1$d = line$2$q;
+        q = line$0$q;
     end
     
-endmodule // top$edges$0$px_qz
+endmodule // top$edges$0$brs_wait
 
 
-module top$edges$0$px_qz$ae_be(clock,a,b,valid_in,y,valid_out);
+module top$edges$0$brz_wait(clock,d,q);
     
     // Module arguments
     input wire  clock;
-    input wire  [31:0] a;
-    input wire  [31:0] b;
-    input wire  valid_in;
-    output reg  [31:0] y;
-    output reg  valid_out;
+    input wire  [31:0] d;
+    output reg  [31:0] q;
     
     // Stub signals
-    reg  op$clock;
-    reg  [31:0] op$a;
-    reg  [31:0] op$b;
-    reg  op$valid_in;
-    wire  [31:0] op$y;
-    wire  op$valid_out;
-    reg  [31:0] step$x;
-    wire  [31:0] step$y;
-    reg  s_step_valid$d;
-    wire  s_step_valid$q;
-    reg  s_step_valid$clock;
-    reg  [31:0] s_step_y$d;
-    wire  [31:0] s_step_y$q;
-    reg  s_step_y$clock;
+    reg  [31:0] line$0$d;
+    wire  [31:0] line$0$q;
+    reg  line$0$clock;
+    reg  [31:0] line$1$d;
+    wire  [31:0] line$1$q;
+    reg  line$1$clock;
+    reg  [31:0] line$2$d;
+    wire  [31:0] line$2$q;
+    reg  line$2$clock;
+    reg  [31:0] line$3$d;
+    wire  [31:0] line$3$q;
+    reg  line$3$clock;
+    reg  [31:0] line$4$d;
+    wire  [31:0] line$4$q;
+    reg  line$4$clock;
+    reg  [31:0] line$5$d;
+    wire  [31:0] line$5$q;
+    reg  line$5$clock;
+    reg  [31:0] line$6$d;
+    wire  [31:0] line$6$q;
+    reg  line$6$clock;
     
     // Sub module instances
-    top$edges$0$px_qz$ae_be$op op(
-        .clock(op$clock),
-        .a(op$a),
-        .b(op$b),
-        .valid_in(op$valid_in),
-        .y(op$y),
-        .valid_out(op$valid_out)
+    top$aerr$s3_y line$0(
+        .d(line$0$d),
+        .q(line$0$q),
+        .clock(line$0$clock)
     );
-    top$edges$0$a$s_ab$step step(
-        .x(step$x),
-        .y(step$y)
+    top$aerr$s3_y line$1(
+        .d(line$1$d),
+        .q(line$1$q),
+        .clock(line$1$clock)
     );
-    top$edges$0$a$add$s1_eff_sub s_step_valid(
-        .d(s_step_valid$d),
-        .q(s_step_valid$q),
-        .clock(s_step_valid$clock)
+    top$aerr$s3_y line$2(
+        .d(line$2$d),
+        .q(line$2$q),
+        .clock(line$2$clock)
     );
-    top$edges$0$a$add$s3_y s_step_y(
-        .d(s_step_y$d),
-        .q(s_step_y$q),
-        .clock(s_step_y$clock)
+    top$aerr$s3_y line$3(
+        .d(line$3$d),
+        .q(line$3$q),
+        .clock(line$3$clock)
+    );
+    top$aerr$s3_y line$4(
+        .d(line$4$d),
+        .q(line$4$q),
+        .clock(line$4$clock)
+    );
+    top$aerr$s3_y line$5(
+        .d(line$5$d),
+        .q(line$5$q),
+        .clock(line$5$clock)
+    );
+    top$aerr$s3_y line$6(
+        .d(line$6$d),
+        .q(line$6$q),
+        .clock(line$6$clock)
     );
     
     // Update code
     always @(*) begin
-        s_step_valid$clock = clock;
-        s_step_y$clock = clock;
-        s_step_valid$d = s_step_valid$q;
-        s_step_y$d = s_step_y$q;
-        op$clock = clock;
-        op$a = a;
-        op$b = b;
-        op$valid_in = valid_in;
-        step$x = op$y;
-        s_step_valid$d = op$valid_out;
-        s_step_y$d = step$y;
-        y = s_step_y$q;
-        valid_out = s_step_valid$q;
+        line$0$clock = clock;
+        line$0$d = d;
+        line$1$clock = clock;
+        line$1$d = d;
+        line$2$clock = clock;
+        line$2$d = d;
+        line$3$clock = clock;
+        line$3$d = d;
+        line$4$clock = clock;
+        line$4$d = d;
+        line$5$clock = clock;
+        line$5$d = d;
+        line$6$clock = clock;
+        line$6$d = d;
+        line$0$d = line$1$q;
+        line$1$d = line$2$q;
+        line$2$d = line$3$q;
+        line$3$d = line$4$q;
+        line$4$d = line$5$q;
+        line$5$d = line$6$q;
+        q = line$0$q;
     end
     
-endmodule // top$edges$0$px_qz$ae_be
+endmodule // top$edges$0$brz_wait
 
 
-module top$edges$0$px_qz$ae_be$op(clock,a,b,valid_in,y,valid_out);
+module top$edges$0$px_qz(clock,a,b,valid_in,y,valid_out);
     
     // Module arguments
     input wire  clock;
@@ -4640,7 +6767,7 @@ module top$edges$0$px_qz$ae_be$op(clock,a,b,valid_in,y,valid_out);
     reg  [7:0] c3_efield;
     
     // Sub module instances
-    top$edges$0$a$add$unpack_a unpack_a(
+    top$aerr$unpack_a unpack_a(
         .x(unpack_a$x),
         .sign(unpack_a$sign),
         .exp(unpack_a$exp),
@@ -4649,7 +6776,7 @@ module top$edges$0$px_qz$ae_be$op(clock,a,b,valid_in,y,valid_out);
         .is_inf(unpack_a$is_inf),
         .is_nan(unpack_a$is_nan)
     );
-    top$edges$0$a$add$unpack_a unpack_b(
+    top$aerr$unpack_a unpack_b(
         .x(unpack_b$x),
         .sign(unpack_b$sign),
         .exp(unpack_b$exp),
@@ -4658,143 +6785,143 @@ module top$edges$0$px_qz$ae_be$op(clock,a,b,valid_in,y,valid_out);
         .is_inf(unpack_b$is_inf),
         .is_nan(unpack_b$is_nan)
     );
-    top$edges$0$px_qz$ae_be$op$norm_a norm_a(
+    top$af$norm_a norm_a(
         .x(norm_a$x),
         .y(norm_a$y),
         .lz(norm_a$lz)
     );
-    top$edges$0$px_qz$ae_be$op$norm_a norm_b(
+    top$af$norm_a norm_b(
         .x(norm_b$x),
         .y(norm_b$y),
         .lz(norm_b$lz)
     );
-    top$edges$0$a$add$s1_eff_sub s1_valid(
+    top$aerr$s1_eff_sub s1_valid(
         .d(s1_valid$d),
         .q(s1_valid$q),
         .clock(s1_valid$clock)
     );
-    top$edges$0$a$add$s1_eff_sub s1_sign(
+    top$aerr$s1_eff_sub s1_sign(
         .d(s1_sign$d),
         .q(s1_sign$q),
         .clock(s1_sign$clock)
     );
-    top$edges$0$a$add$s1_eff_sub s1_nan(
+    top$aerr$s1_eff_sub s1_nan(
         .d(s1_nan$d),
         .q(s1_nan$q),
         .clock(s1_nan$clock)
     );
-    top$edges$0$a$add$s1_eff_sub s1_inf(
+    top$aerr$s1_eff_sub s1_inf(
         .d(s1_inf$d),
         .q(s1_inf$q),
         .clock(s1_inf$clock)
     );
-    top$edges$0$a$add$s1_eff_sub s1_zero(
+    top$aerr$s1_eff_sub s1_zero(
         .d(s1_zero$d),
         .q(s1_zero$q),
         .clock(s1_zero$clock)
     );
-    top$edges$0$px_qz$ae_be$op$s1_exp s1_exp(
+    top$af$s1_exp s1_exp(
         .d(s1_exp$d),
         .q(s1_exp$q),
         .clock(s1_exp$clock)
     );
-    top$edges$0$px_qz$ae_be$op$s1_sig_a s1_sig_a(
+    top$af$s1_sig_a s1_sig_a(
         .d(s1_sig_a$d),
         .q(s1_sig_a$q),
         .clock(s1_sig_a$clock)
     );
-    top$edges$0$px_qz$ae_be$op$s1_sig_a s1_sig_b(
+    top$af$s1_sig_a s1_sig_b(
         .d(s1_sig_b$d),
         .q(s1_sig_b$q),
         .clock(s1_sig_b$clock)
     );
-    top$edges$0$px_qz$ae_be$op$sig_mul sig_mul(
+    top$af$sig_mul sig_mul(
         .a(sig_mul$a),
         .b(sig_mul$b),
         .hi(sig_mul$hi),
         .sticky(sig_mul$sticky)
     );
-    top$edges$0$a$add$s1_eff_sub s2_valid(
+    top$aerr$s1_eff_sub s2_valid(
         .d(s2_valid$d),
         .q(s2_valid$q),
         .clock(s2_valid$clock)
     );
-    top$edges$0$a$add$s1_eff_sub s2_sign(
+    top$aerr$s1_eff_sub s2_sign(
         .d(s2_sign$d),
         .q(s2_sign$q),
         .clock(s2_sign$clock)
     );
-    top$edges$0$a$add$s1_eff_sub s2_nan(
+    top$aerr$s1_eff_sub s2_nan(
         .d(s2_nan$d),
         .q(s2_nan$q),
         .clock(s2_nan$clock)
     );
-    top$edges$0$a$add$s1_eff_sub s2_inf(
+    top$aerr$s1_eff_sub s2_inf(
         .d(s2_inf$d),
         .q(s2_inf$q),
         .clock(s2_inf$clock)
     );
-    top$edges$0$a$add$s1_eff_sub s2_zero(
+    top$aerr$s1_eff_sub s2_zero(
         .d(s2_zero$d),
         .q(s2_zero$q),
         .clock(s2_zero$clock)
     );
-    top$edges$0$px_qz$ae_be$op$s1_exp s2_exp(
+    top$af$s1_exp s2_exp(
         .d(s2_exp$d),
         .q(s2_exp$q),
         .clock(s2_exp$clock)
     );
-    top$edges$0$a$add$s2_nm s2_hi(
+    top$aerr$s2_nm s2_hi(
         .d(s2_hi$d),
         .q(s2_hi$q),
         .clock(s2_hi$clock)
     );
-    top$edges$0$a$add$s1_eff_sub s2_sticky(
+    top$aerr$s1_eff_sub s2_sticky(
         .d(s2_sticky$d),
         .q(s2_sticky$q),
         .clock(s2_sticky$clock)
     );
-    top$edges$0$a$add$s1_eff_sub s3_valid(
+    top$aerr$s1_eff_sub s3_valid(
         .d(s3_valid$d),
         .q(s3_valid$q),
         .clock(s3_valid$clock)
     );
-    top$edges$0$a$add$s1_eff_sub s3_sign(
+    top$aerr$s1_eff_sub s3_sign(
         .d(s3_sign$d),
         .q(s3_sign$q),
         .clock(s3_sign$clock)
     );
-    top$edges$0$a$add$s1_eff_sub s3_nan(
+    top$aerr$s1_eff_sub s3_nan(
         .d(s3_nan$d),
         .q(s3_nan$q),
         .clock(s3_nan$clock)
     );
-    top$edges$0$a$add$s1_eff_sub s3_inf(
+    top$aerr$s1_eff_sub s3_inf(
         .d(s3_inf$d),
         .q(s3_inf$q),
         .clock(s3_inf$clock)
     );
-    top$edges$0$a$add$s1_eff_sub s3_zero(
+    top$aerr$s1_eff_sub s3_zero(
         .d(s3_zero$d),
         .q(s3_zero$q),
         .clock(s3_zero$clock)
     );
-    top$edges$0$a$add$s1_eff_sub s3_ovf(
+    top$aerr$s1_eff_sub s3_ovf(
         .d(s3_ovf$d),
         .q(s3_ovf$q),
         .clock(s3_ovf$clock)
     );
-    top$edges$0$a$add$s1_exp s3_efield(
+    top$aerr$s1_exp s3_efield(
         .d(s3_efield$d),
         .q(s3_efield$q),
         .clock(s3_efield$clock)
     );
-    top$edges$0$a$add$s2_nm s3_nm(
+    top$aerr$s2_nm s3_nm(
         .d(s3_nm$d),
         .q(s3_nm$q),
         .clock(s3_nm$clock)
     );
-    top$edges$0$a$add$round round(
+    top$aerr$round round(
         .round_up(round$round_up),
         .sign(round$sign),
         .nan(round$nan),
@@ -4805,12 +6932,12 @@ module top$edges$0$px_qz$ae_be$op(clock,a,b,valid_in,y,valid_out);
         .nm(round$nm),
         .y(round$y)
     );
-    top$edges$0$a$add$s1_eff_sub s4_valid(
+    top$aerr$s1_eff_sub s4_valid(
         .d(s4_valid$d),
         .q(s4_valid$q),
         .clock(s4_valid$clock)
     );
-    top$edges$0$a$add$s3_y s4_y(
+    top$aerr$s3_y s4_y(
         .d(s4_y$d),
         .q(s4_y$q),
         .clock(s4_y$clock)
@@ -4936,392 +7063,7 @@ module top$edges$0$px_qz$ae_be$op(clock,a,b,valid_in,y,valid_out);
         valid_out = s4_valid$q;
     end
     
-endmodule // top$edges$0$px_qz$ae_be$op
-
-
-module top$edges$0$px_qz$ae_be$op$norm_a(x,y,lz);
-    
-    // Module arguments
-    input wire  [23:0] x;
-    output reg  [23:0] y;
-    output reg  [4:0] lz;
-    
-    // Local signals
-    reg  z16;
-    reg  z8;
-    reg  z4;
-    reg  z2;
-    reg  z1;
-    reg  [23:0] x16;
-    reg  [23:0] x8;
-    reg  [23:0] x4;
-    reg  [23:0] x2;
-    
-    // Update code
-    always @(*) begin
-        z16 = x[(32'h8)+:(16)] == 32'h0;
-        x16 = x;
-        if (z16) begin
-            x16 = x << 32'h10;
-        end
-        z8 = x16[(32'h10)+:(8)] == 32'h0;
-        x8 = x16;
-        if (z8) begin
-            x8 = x16 << 32'h8;
-        end
-        z4 = x8[(32'h14)+:(4)] == 32'h0;
-        x4 = x8;
-        if (z4) begin
-            x4 = x8 << 32'h4;
-        end
-        z2 = x4[(32'h16)+:(2)] == 32'h0;
-        x2 = x4;
-        if (z2) begin
-            x2 = x4 << 32'h2;
-        end
-        z1 = ~x2[32'h17];
-        y = x2;
-        if (z1) begin
-            y = x2 << 32'h1;
-        end
-        lz = (((((((32'h0) & 5'h1f) & ~(1 << (32'h4)) | ((z16) << (32'h4))) & ~(1 << (32'h3)) | ((z8) << (32'h3))) & ~(1 << (32'h2)) | ((z4) << (32'h2))) & ~(1 << (32'h1)) | ((z2) << (32'h1))) & ~(1 << (32'h0)) | ((z1) << (32'h0)));
-    end
-    
-endmodule // top$edges$0$px_qz$ae_be$op$norm_a
-
-
-module top$edges$0$px_qz$ae_be$op$s1_exp(d,q,clock);
-    
-    // Module arguments
-    input wire  [9:0] d;
-    output reg  [9:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 10'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$edges$0$px_qz$ae_be$op$s1_exp
-
-
-module top$edges$0$px_qz$ae_be$op$s1_sig_a(d,q,clock);
-    
-    // Module arguments
-    input wire  [23:0] d;
-    output reg  [23:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 24'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$edges$0$px_qz$ae_be$op$s1_sig_a
-
-
-module top$edges$0$px_qz$ae_be$op$sig_mul(a,b,hi,sticky);
-    
-    // Module arguments
-    input wire  [23:0] a;
-    input wire  [23:0] b;
-    output reg  [25:0] hi;
-    output reg  sticky;
-    
-    // Update code (custom)
-    wire [47:0] prod;
-    assign prod = a * b;
-    always @(*) begin
-        hi = prod[47:22];
-        sticky = |prod[21:0];
-    end
-endmodule // top$edges$0$px_qz$ae_be$op$sig_mul
-
-
-module top$edges$0$px_qz$x_wait(clock,d,q);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    
-    // Stub signals
-    reg  [31:0] line$0$d;
-    wire  [31:0] line$0$q;
-    reg  line$0$clock;
-    reg  [31:0] line$1$d;
-    wire  [31:0] line$1$q;
-    reg  line$1$clock;
-    reg  [31:0] line$2$d;
-    wire  [31:0] line$2$q;
-    reg  line$2$clock;
-    reg  [31:0] line$3$d;
-    wire  [31:0] line$3$q;
-    reg  line$3$clock;
-    reg  [31:0] line$4$d;
-    wire  [31:0] line$4$q;
-    reg  line$4$clock;
-    reg  [31:0] line$5$d;
-    wire  [31:0] line$5$q;
-    reg  line$5$clock;
-    reg  [31:0] line$6$d;
-    wire  [31:0] line$6$q;
-    reg  line$6$clock;
-    reg  [31:0] line$7$d;
-    wire  [31:0] line$7$q;
-    reg  line$7$clock;
-    reg  [31:0] line$8$d;
-    wire  [31:0] line$8$q;
-    reg  line$8$clock;
-    
-    // Sub module instances
-    top$edges$0$a$add$s3_y line$0(
-        .d(line$0$d),
-        .q(line$0$q),
-        .clock(line$0$clock)
-    );
-    top$edges$0$a$add$s3_y line$1(
-        .d(line$1$d),
-        .q(line$1$q),
-        .clock(line$1$clock)
-    );
-    top$edges$0$a$add$s3_y line$2(
-        .d(line$2$d),
-        .q(line$2$q),
-        .clock(line$2$clock)
-    );
-    top$edges$0$a$add$s3_y line$3(
-        .d(line$3$d),
-        .q(line$3$q),
-        .clock(line$3$clock)
-    );
-    top$edges$0$a$add$s3_y line$4(
-        .d(line$4$d),
-        .q(line$4$q),
-        .clock(line$4$clock)
-    );
-    top$edges$0$a$add$s3_y line$5(
-        .d(line$5$d),
-        .q(line$5$q),
-        .clock(line$5$clock)
-    );
-    top$edges$0$a$add$s3_y line$6(
-        .d(line$6$d),
-        .q(line$6$q),
-        .clock(line$6$clock)
-    );
-    top$edges$0$a$add$s3_y line$7(
-        .d(line$7$d),
-        .q(line$7$q),
-        .clock(line$7$clock)
-    );
-    top$edges$0$a$add$s3_y line$8(
-        .d(line$8$d),
-        .q(line$8$q),
-        .clock(line$8$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        line$0$clock = clock;
-        line$0$d = d;
-        line$1$clock = clock;
-        line$1$d = d;
-        line$2$clock = clock;
-        line$2$d = d;
-        line$3$clock = clock;
-        line$3$d = d;
-        line$4$clock = clock;
-        line$4$d = d;
-        line$5$clock = clock;
-        line$5$d = d;
-        line$6$clock = clock;
-        line$6$d = d;
-        line$7$clock = clock;
-        line$7$d = d;
-        line$8$clock = clock;
-        line$8$d = d;
-        line$0$d = line$1$q;
-        line$1$d = line$2$q;
-        line$2$d = line$3$q;
-        line$3$d = line$4$q;
-        line$4$d = line$5$q;
-        line$5$d = line$6$q;
-        line$6$d = line$7$q;
-        line$7$d = line$8$q;
-        q = line$0$q;
-    end
-    
-endmodule // top$edges$0$px_qz$x_wait
-
-
-module top$edges$0$pz_e_wait(clock,d,q);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    
-    // Stub signals
-    reg  [31:0] line$0$d;
-    wire  [31:0] line$0$q;
-    reg  line$0$clock;
-    reg  [31:0] line$1$d;
-    wire  [31:0] line$1$q;
-    reg  line$1$clock;
-    reg  [31:0] line$2$d;
-    wire  [31:0] line$2$q;
-    reg  line$2$clock;
-    reg  [31:0] line$3$d;
-    wire  [31:0] line$3$q;
-    reg  line$3$clock;
-    reg  [31:0] line$4$d;
-    wire  [31:0] line$4$q;
-    reg  line$4$clock;
-    reg  [31:0] line$5$d;
-    wire  [31:0] line$5$q;
-    reg  line$5$clock;
-    reg  [31:0] line$6$d;
-    wire  [31:0] line$6$q;
-    reg  line$6$clock;
-    reg  [31:0] line$7$d;
-    wire  [31:0] line$7$q;
-    reg  line$7$clock;
-    reg  [31:0] line$8$d;
-    wire  [31:0] line$8$q;
-    reg  line$8$clock;
-    reg  [31:0] line$9$d;
-    wire  [31:0] line$9$q;
-    reg  line$9$clock;
-    reg  [31:0] line$10$d;
-    wire  [31:0] line$10$q;
-    reg  line$10$clock;
-    reg  [31:0] line$11$d;
-    wire  [31:0] line$11$q;
-    reg  line$11$clock;
-    reg  [31:0] line$12$d;
-    wire  [31:0] line$12$q;
-    reg  line$12$clock;
-    
-    // Sub module instances
-    top$edges$0$a$add$s3_y line$0(
-        .d(line$0$d),
-        .q(line$0$q),
-        .clock(line$0$clock)
-    );
-    top$edges$0$a$add$s3_y line$1(
-        .d(line$1$d),
-        .q(line$1$q),
-        .clock(line$1$clock)
-    );
-    top$edges$0$a$add$s3_y line$2(
-        .d(line$2$d),
-        .q(line$2$q),
-        .clock(line$2$clock)
-    );
-    top$edges$0$a$add$s3_y line$3(
-        .d(line$3$d),
-        .q(line$3$q),
-        .clock(line$3$clock)
-    );
-    top$edges$0$a$add$s3_y line$4(
-        .d(line$4$d),
-        .q(line$4$q),
-        .clock(line$4$clock)
-    );
-    top$edges$0$a$add$s3_y line$5(
-        .d(line$5$d),
-        .q(line$5$q),
-        .clock(line$5$clock)
-    );
-    top$edges$0$a$add$s3_y line$6(
-        .d(line$6$d),
-        .q(line$6$q),
-        .clock(line$6$clock)
-    );
-    top$edges$0$a$add$s3_y line$7(
-        .d(line$7$d),
-        .q(line$7$q),
-        .clock(line$7$clock)
-    );
-    top$edges$0$a$add$s3_y line$8(
-        .d(line$8$d),
-        .q(line$8$q),
-        .clock(line$8$clock)
-    );
-    top$edges$0$a$add$s3_y line$9(
-        .d(line$9$d),
-        .q(line$9$q),
-        .clock(line$9$clock)
-    );
-    top$edges$0$a$add$s3_y line$10(
-        .d(line$10$d),
-        .q(line$10$q),
-        .clock(line$10$clock)
-    );
-    top$edges$0$a$add$s3_y line$11(
-        .d(line$11$d),
-        .q(line$11$q),
-        .clock(line$11$clock)
-    );
-    top$edges$0$a$add$s3_y line$12(
-        .d(line$12$d),
-        .q(line$12$q),
-        .clock(line$12$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        line$0$clock = clock;
-        line$0$d = d;
-        line$1$clock = clock;
-        line$1$d = d;
-        line$2$clock = clock;
-        line$2$d = d;
-        line$3$clock = clock;
-        line$3$d = d;
-        line$4$clock = clock;
-        line$4$d = d;
-        line$5$clock = clock;
-        line$5$d = d;
-        line$6$clock = clock;
-        line$6$d = d;
-        line$7$clock = clock;
-        line$7$d = d;
-        line$8$clock = clock;
-        line$8$d = d;
-        line$9$clock = clock;
-        line$9$d = d;
-        line$10$clock = clock;
-        line$10$d = d;
-        line$11$clock = clock;
-        line$11$d = d;
-        line$12$clock = clock;
-        line$12$d = d;
-        line$0$d = line$1$q;
-        line$1$d = line$2$q;
-        line$2$d = line$3$q;
-        line$3$d = line$4$q;
-        line$4$d = line$5$q;
-        line$5$d = line$6$q;
-        line$6$d = line$7$q;
-        line$7$d = line$8$q;
-        line$8$d = line$9$q;
-        line$9$d = line$10$q;
-        line$10$d = line$11$q;
-        line$11$d = line$12$q;
-        q = line$0$q;
-    end
-    
-endmodule // top$edges$0$pz_e_wait
+endmodule // top$edges$0$px_qz
 
 
 module top$edges$0$pz_sgn_wait(clock,d,q);
@@ -5398,51 +7140,6 @@ module top$edges$0$pz_sgn_wait(clock,d,q);
     reg  [1:0] line$21$d;
     wire  [1:0] line$21$q;
     reg  line$21$clock;
-    reg  [1:0] line$22$d;
-    wire  [1:0] line$22$q;
-    reg  line$22$clock;
-    reg  [1:0] line$23$d;
-    wire  [1:0] line$23$q;
-    reg  line$23$clock;
-    reg  [1:0] line$24$d;
-    wire  [1:0] line$24$q;
-    reg  line$24$clock;
-    reg  [1:0] line$25$d;
-    wire  [1:0] line$25$q;
-    reg  line$25$clock;
-    reg  [1:0] line$26$d;
-    wire  [1:0] line$26$q;
-    reg  line$26$clock;
-    reg  [1:0] line$27$d;
-    wire  [1:0] line$27$q;
-    reg  line$27$clock;
-    reg  [1:0] line$28$d;
-    wire  [1:0] line$28$q;
-    reg  line$28$clock;
-    reg  [1:0] line$29$d;
-    wire  [1:0] line$29$q;
-    reg  line$29$clock;
-    reg  [1:0] line$30$d;
-    wire  [1:0] line$30$q;
-    reg  line$30$clock;
-    reg  [1:0] line$31$d;
-    wire  [1:0] line$31$q;
-    reg  line$31$clock;
-    reg  [1:0] line$32$d;
-    wire  [1:0] line$32$q;
-    reg  line$32$clock;
-    reg  [1:0] line$33$d;
-    wire  [1:0] line$33$q;
-    reg  line$33$clock;
-    reg  [1:0] line$34$d;
-    wire  [1:0] line$34$q;
-    reg  line$34$clock;
-    reg  [1:0] line$35$d;
-    wire  [1:0] line$35$q;
-    reg  line$35$clock;
-    reg  [1:0] line$36$d;
-    wire  [1:0] line$36$q;
-    reg  line$36$clock;
     
     // Sub module instances
     top$edges$0$a_sgn_wait$line$0 line$0(
@@ -5555,81 +7252,6 @@ module top$edges$0$pz_sgn_wait(clock,d,q);
         .q(line$21$q),
         .clock(line$21$clock)
     );
-    top$edges$0$a_sgn_wait$line$0 line$22(
-        .d(line$22$d),
-        .q(line$22$q),
-        .clock(line$22$clock)
-    );
-    top$edges$0$a_sgn_wait$line$0 line$23(
-        .d(line$23$d),
-        .q(line$23$q),
-        .clock(line$23$clock)
-    );
-    top$edges$0$a_sgn_wait$line$0 line$24(
-        .d(line$24$d),
-        .q(line$24$q),
-        .clock(line$24$clock)
-    );
-    top$edges$0$a_sgn_wait$line$0 line$25(
-        .d(line$25$d),
-        .q(line$25$q),
-        .clock(line$25$clock)
-    );
-    top$edges$0$a_sgn_wait$line$0 line$26(
-        .d(line$26$d),
-        .q(line$26$q),
-        .clock(line$26$clock)
-    );
-    top$edges$0$a_sgn_wait$line$0 line$27(
-        .d(line$27$d),
-        .q(line$27$q),
-        .clock(line$27$clock)
-    );
-    top$edges$0$a_sgn_wait$line$0 line$28(
-        .d(line$28$d),
-        .q(line$28$q),
-        .clock(line$28$clock)
-    );
-    top$edges$0$a_sgn_wait$line$0 line$29(
-        .d(line$29$d),
-        .q(line$29$q),
-        .clock(line$29$clock)
-    );
-    top$edges$0$a_sgn_wait$line$0 line$30(
-        .d(line$30$d),
-        .q(line$30$q),
-        .clock(line$30$clock)
-    );
-    top$edges$0$a_sgn_wait$line$0 line$31(
-        .d(line$31$d),
-        .q(line$31$q),
-        .clock(line$31$clock)
-    );
-    top$edges$0$a_sgn_wait$line$0 line$32(
-        .d(line$32$d),
-        .q(line$32$q),
-        .clock(line$32$clock)
-    );
-    top$edges$0$a_sgn_wait$line$0 line$33(
-        .d(line$33$d),
-        .q(line$33$q),
-        .clock(line$33$clock)
-    );
-    top$edges$0$a_sgn_wait$line$0 line$34(
-        .d(line$34$d),
-        .q(line$34$q),
-        .clock(line$34$clock)
-    );
-    top$edges$0$a_sgn_wait$line$0 line$35(
-        .d(line$35$d),
-        .q(line$35$q),
-        .clock(line$35$clock)
-    );
-    top$edges$0$a_sgn_wait$line$0 line$36(
-        .d(line$36$d),
-        .q(line$36$q),
-        .clock(line$36$clock)
-    );
     
     // Update code
     always @(*) begin
@@ -5677,36 +7299,6 @@ module top$edges$0$pz_sgn_wait(clock,d,q);
         line$20$d = d;
         line$21$clock = clock;
         line$21$d = d;
-        line$22$clock = clock;
-        line$22$d = d;
-        line$23$clock = clock;
-        line$23$d = d;
-        line$24$clock = clock;
-        line$24$d = d;
-        line$25$clock = clock;
-        line$25$d = d;
-        line$26$clock = clock;
-        line$26$d = d;
-        line$27$clock = clock;
-        line$27$d = d;
-        line$28$clock = clock;
-        line$28$d = d;
-        line$29$clock = clock;
-        line$29$d = d;
-        line$30$clock = clock;
-        line$30$d = d;
-        line$31$clock = clock;
-        line$31$d = d;
-        line$32$clock = clock;
-        line$32$d = d;
-        line$33$clock = clock;
-        line$33$d = d;
-        line$34$clock = clock;
-        line$34$d = d;
-        line$35$clock = clock;
-        line$35$d = d;
-        line$36$clock = clock;
-        line$36$d = d;
         line$0$d = line$1$q;
         line$1$d = line$2$q;
         line$2$d = line$3$q;
@@ -5728,100 +7320,149 @@ module top$edges$0$pz_sgn_wait(clock,d,q);
         line$18$d = line$19$q;
         line$19$d = line$20$q;
         line$20$d = line$21$q;
-        line$21$d = line$22$q;
-        line$22$d = line$23$q;
-        line$23$d = line$24$q;
-        line$24$d = line$25$q;
-        line$25$d = line$26$q;
-        line$26$d = line$27$q;
-        line$27$d = line$28$q;
-        line$28$d = line$29$q;
-        line$29$d = line$30$q;
-        line$30$d = line$31$q;
-        line$31$d = line$32$q;
-        line$32$d = line$33$q;
-        line$33$d = line$34$q;
-        line$34$d = line$35$q;
-        line$35$d = line$36$q;
         q = line$0$q;
     end
     
 endmodule // top$edges$0$pz_sgn_wait
 
 
-module top$edges$0$rz_e_wait(clock,d,q);
+module top$edges$0$rz_sgn_wait(clock,d,q);
     
     // Module arguments
     input wire  clock;
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [1:0] d;
+    output reg  [1:0] q;
     
     // Stub signals
-    reg  [31:0] line$0$d;
-    wire  [31:0] line$0$q;
+    reg  [1:0] line$0$d;
+    wire  [1:0] line$0$q;
     reg  line$0$clock;
-    reg  [31:0] line$1$d;
-    wire  [31:0] line$1$q;
+    reg  [1:0] line$1$d;
+    wire  [1:0] line$1$q;
     reg  line$1$clock;
-    reg  [31:0] line$2$d;
-    wire  [31:0] line$2$q;
+    reg  [1:0] line$2$d;
+    wire  [1:0] line$2$q;
     reg  line$2$clock;
-    reg  [31:0] line$3$d;
-    wire  [31:0] line$3$q;
+    reg  [1:0] line$3$d;
+    wire  [1:0] line$3$q;
     reg  line$3$clock;
-    reg  [31:0] line$4$d;
-    wire  [31:0] line$4$q;
+    reg  [1:0] line$4$d;
+    wire  [1:0] line$4$q;
     reg  line$4$clock;
-    reg  [31:0] line$5$d;
-    wire  [31:0] line$5$q;
+    reg  [1:0] line$5$d;
+    wire  [1:0] line$5$q;
     reg  line$5$clock;
-    reg  [31:0] line$6$d;
-    wire  [31:0] line$6$q;
+    reg  [1:0] line$6$d;
+    wire  [1:0] line$6$q;
     reg  line$6$clock;
-    reg  [31:0] line$7$d;
-    wire  [31:0] line$7$q;
+    reg  [1:0] line$7$d;
+    wire  [1:0] line$7$q;
     reg  line$7$clock;
+    reg  [1:0] line$8$d;
+    wire  [1:0] line$8$q;
+    reg  line$8$clock;
+    reg  [1:0] line$9$d;
+    wire  [1:0] line$9$q;
+    reg  line$9$clock;
+    reg  [1:0] line$10$d;
+    wire  [1:0] line$10$q;
+    reg  line$10$clock;
+    reg  [1:0] line$11$d;
+    wire  [1:0] line$11$q;
+    reg  line$11$clock;
+    reg  [1:0] line$12$d;
+    wire  [1:0] line$12$q;
+    reg  line$12$clock;
+    reg  [1:0] line$13$d;
+    wire  [1:0] line$13$q;
+    reg  line$13$clock;
+    reg  [1:0] line$14$d;
+    wire  [1:0] line$14$q;
+    reg  line$14$clock;
+    reg  [1:0] line$15$d;
+    wire  [1:0] line$15$q;
+    reg  line$15$clock;
     
     // Sub module instances
-    top$edges$0$a$add$s3_y line$0(
+    top$edges$0$a_sgn_wait$line$0 line$0(
         .d(line$0$d),
         .q(line$0$q),
         .clock(line$0$clock)
     );
-    top$edges$0$a$add$s3_y line$1(
+    top$edges$0$a_sgn_wait$line$0 line$1(
         .d(line$1$d),
         .q(line$1$q),
         .clock(line$1$clock)
     );
-    top$edges$0$a$add$s3_y line$2(
+    top$edges$0$a_sgn_wait$line$0 line$2(
         .d(line$2$d),
         .q(line$2$q),
         .clock(line$2$clock)
     );
-    top$edges$0$a$add$s3_y line$3(
+    top$edges$0$a_sgn_wait$line$0 line$3(
         .d(line$3$d),
         .q(line$3$q),
         .clock(line$3$clock)
     );
-    top$edges$0$a$add$s3_y line$4(
+    top$edges$0$a_sgn_wait$line$0 line$4(
         .d(line$4$d),
         .q(line$4$q),
         .clock(line$4$clock)
     );
-    top$edges$0$a$add$s3_y line$5(
+    top$edges$0$a_sgn_wait$line$0 line$5(
         .d(line$5$d),
         .q(line$5$q),
         .clock(line$5$clock)
     );
-    top$edges$0$a$add$s3_y line$6(
+    top$edges$0$a_sgn_wait$line$0 line$6(
         .d(line$6$d),
         .q(line$6$q),
         .clock(line$6$clock)
     );
-    top$edges$0$a$add$s3_y line$7(
+    top$edges$0$a_sgn_wait$line$0 line$7(
         .d(line$7$d),
         .q(line$7$q),
         .clock(line$7$clock)
+    );
+    top$edges$0$a_sgn_wait$line$0 line$8(
+        .d(line$8$d),
+        .q(line$8$q),
+        .clock(line$8$clock)
+    );
+    top$edges$0$a_sgn_wait$line$0 line$9(
+        .d(line$9$d),
+        .q(line$9$q),
+        .clock(line$9$clock)
+    );
+    top$edges$0$a_sgn_wait$line$0 line$10(
+        .d(line$10$d),
+        .q(line$10$q),
+        .clock(line$10$clock)
+    );
+    top$edges$0$a_sgn_wait$line$0 line$11(
+        .d(line$11$d),
+        .q(line$11$q),
+        .clock(line$11$clock)
+    );
+    top$edges$0$a_sgn_wait$line$0 line$12(
+        .d(line$12$d),
+        .q(line$12$q),
+        .clock(line$12$clock)
+    );
+    top$edges$0$a_sgn_wait$line$0 line$13(
+        .d(line$13$d),
+        .q(line$13$q),
+        .clock(line$13$clock)
+    );
+    top$edges$0$a_sgn_wait$line$0 line$14(
+        .d(line$14$d),
+        .q(line$14$q),
+        .clock(line$14$clock)
+    );
+    top$edges$0$a_sgn_wait$line$0 line$15(
+        .d(line$15$d),
+        .q(line$15$q),
+        .clock(line$15$clock)
     );
     
     // Update code
@@ -5842,6 +7483,22 @@ module top$edges$0$rz_e_wait(clock,d,q);
         line$6$d = d;
         line$7$clock = clock;
         line$7$d = d;
+        line$8$clock = clock;
+        line$8$d = d;
+        line$9$clock = clock;
+        line$9$d = d;
+        line$10$clock = clock;
+        line$10$d = d;
+        line$11$clock = clock;
+        line$11$d = d;
+        line$12$clock = clock;
+        line$12$d = d;
+        line$13$clock = clock;
+        line$13$d = d;
+        line$14$clock = clock;
+        line$14$d = d;
+        line$15$clock = clock;
+        line$15$d = d;
         line$0$d = line$1$q;
         line$1$d = line$2$q;
         line$2$d = line$3$q;
@@ -5849,10 +7506,18 @@ module top$edges$0$rz_e_wait(clock,d,q);
         line$4$d = line$5$q;
         line$5$d = line$6$q;
         line$6$d = line$7$q;
+        line$7$d = line$8$q;
+        line$8$d = line$9$q;
+        line$9$d = line$10$q;
+        line$10$d = line$11$q;
+        line$11$d = line$12$q;
+        line$12$d = line$13$q;
+        line$13$d = line$14$q;
+        line$14$d = line$15$q;
         q = line$0$q;
     end
     
-endmodule // top$edges$0$rz_e_wait
+endmodule // top$edges$0$rz_sgn_wait
 
 
 module top$edges$0$sign_a(x,e,sgn);
@@ -5886,7 +7551,7 @@ module top$edges$0$sign_a(x,e,sgn);
 endmodule // top$edges$0$sign_a
 
 
-module top$eta_wait(clock,d,q);
+module top$edges$0$ta_wait$0(clock,d,q);
     
     // Module arguments
     input wire  clock;
@@ -5912,453 +7577,37 @@ module top$eta_wait(clock,d,q);
     reg  [31:0] line$5$d;
     wire  [31:0] line$5$q;
     reg  line$5$clock;
-    reg  [31:0] line$6$d;
-    wire  [31:0] line$6$q;
-    reg  line$6$clock;
-    reg  [31:0] line$7$d;
-    wire  [31:0] line$7$q;
-    reg  line$7$clock;
-    reg  [31:0] line$8$d;
-    wire  [31:0] line$8$q;
-    reg  line$8$clock;
-    reg  [31:0] line$9$d;
-    wire  [31:0] line$9$q;
-    reg  line$9$clock;
-    reg  [31:0] line$10$d;
-    wire  [31:0] line$10$q;
-    reg  line$10$clock;
-    reg  [31:0] line$11$d;
-    wire  [31:0] line$11$q;
-    reg  line$11$clock;
-    reg  [31:0] line$12$d;
-    wire  [31:0] line$12$q;
-    reg  line$12$clock;
-    reg  [31:0] line$13$d;
-    wire  [31:0] line$13$q;
-    reg  line$13$clock;
-    reg  [31:0] line$14$d;
-    wire  [31:0] line$14$q;
-    reg  line$14$clock;
-    reg  [31:0] line$15$d;
-    wire  [31:0] line$15$q;
-    reg  line$15$clock;
-    reg  [31:0] line$16$d;
-    wire  [31:0] line$16$q;
-    reg  line$16$clock;
-    reg  [31:0] line$17$d;
-    wire  [31:0] line$17$q;
-    reg  line$17$clock;
-    reg  [31:0] line$18$d;
-    wire  [31:0] line$18$q;
-    reg  line$18$clock;
-    reg  [31:0] line$19$d;
-    wire  [31:0] line$19$q;
-    reg  line$19$clock;
-    reg  [31:0] line$20$d;
-    wire  [31:0] line$20$q;
-    reg  line$20$clock;
-    reg  [31:0] line$21$d;
-    wire  [31:0] line$21$q;
-    reg  line$21$clock;
-    reg  [31:0] line$22$d;
-    wire  [31:0] line$22$q;
-    reg  line$22$clock;
-    reg  [31:0] line$23$d;
-    wire  [31:0] line$23$q;
-    reg  line$23$clock;
-    reg  [31:0] line$24$d;
-    wire  [31:0] line$24$q;
-    reg  line$24$clock;
-    reg  [31:0] line$25$d;
-    wire  [31:0] line$25$q;
-    reg  line$25$clock;
-    reg  [31:0] line$26$d;
-    wire  [31:0] line$26$q;
-    reg  line$26$clock;
-    reg  [31:0] line$27$d;
-    wire  [31:0] line$27$q;
-    reg  line$27$clock;
-    reg  [31:0] line$28$d;
-    wire  [31:0] line$28$q;
-    reg  line$28$clock;
-    reg  [31:0] line$29$d;
-    wire  [31:0] line$29$q;
-    reg  line$29$clock;
-    reg  [31:0] line$30$d;
-    wire  [31:0] line$30$q;
-    reg  line$30$clock;
-    reg  [31:0] line$31$d;
-    wire  [31:0] line$31$q;
-    reg  line$31$clock;
-    reg  [31:0] line$32$d;
-    wire  [31:0] line$32$q;
-    reg  line$32$clock;
-    reg  [31:0] line$33$d;
-    wire  [31:0] line$33$q;
-    reg  line$33$clock;
-    reg  [31:0] line$34$d;
-    wire  [31:0] line$34$q;
-    reg  line$34$clock;
-    reg  [31:0] line$35$d;
-    wire  [31:0] line$35$q;
-    reg  line$35$clock;
-    reg  [31:0] line$36$d;
-    wire  [31:0] line$36$q;
-    reg  line$36$clock;
-    reg  [31:0] line$37$d;
-    wire  [31:0] line$37$q;
-    reg  line$37$clock;
-    reg  [31:0] line$38$d;
-    wire  [31:0] line$38$q;
-    reg  line$38$clock;
-    reg  [31:0] line$39$d;
-    wire  [31:0] line$39$q;
-    reg  line$39$clock;
-    reg  [31:0] line$40$d;
-    wire  [31:0] line$40$q;
-    reg  line$40$clock;
-    reg  [31:0] line$41$d;
-    wire  [31:0] line$41$q;
-    reg  line$41$clock;
-    reg  [31:0] line$42$d;
-    wire  [31:0] line$42$q;
-    reg  line$42$clock;
-    reg  [31:0] line$43$d;
-    wire  [31:0] line$43$q;
-    reg  line$43$clock;
-    reg  [31:0] line$44$d;
-    wire  [31:0] line$44$q;
-    reg  line$44$clock;
-    reg  [31:0] line$45$d;
-    wire  [31:0] line$45$q;
-    reg  line$45$clock;
-    reg  [31:0] line$46$d;
-    wire  [31:0] line$46$q;
-    reg  line$46$clock;
-    reg  [31:0] line$47$d;
-    wire  [31:0] line$47$q;
-    reg  line$47$clock;
-    reg  [31:0] line$48$d;
-    wire  [31:0] line$48$q;
-    reg  line$48$clock;
-    reg  [31:0] line$49$d;
-    wire  [31:0] line$49$q;
-    reg  line$49$clock;
-    reg  [31:0] line$50$d;
-    wire  [31:0] line$50$q;
-    reg  line$50$clock;
-    reg  [31:0] line$51$d;
-    wire  [31:0] line$51$q;
-    reg  line$51$clock;
-    reg  [31:0] line$52$d;
-    wire  [31:0] line$52$q;
-    reg  line$52$clock;
-    reg  [31:0] line$53$d;
-    wire  [31:0] line$53$q;
-    reg  line$53$clock;
-    reg  [31:0] line$54$d;
-    wire  [31:0] line$54$q;
-    reg  line$54$clock;
-    reg  [31:0] line$55$d;
-    wire  [31:0] line$55$q;
-    reg  line$55$clock;
-    reg  [31:0] line$56$d;
-    wire  [31:0] line$56$q;
-    reg  line$56$clock;
-    reg  [31:0] line$57$d;
-    wire  [31:0] line$57$q;
-    reg  line$57$clock;
     
     // Sub module instances
-    top$edges$0$a$add$s3_y line$0(
+    top$aerr$s3_y line$0(
         .d(line$0$d),
         .q(line$0$q),
         .clock(line$0$clock)
     );
-    top$edges$0$a$add$s3_y line$1(
+    top$aerr$s3_y line$1(
         .d(line$1$d),
         .q(line$1$q),
         .clock(line$1$clock)
     );
-    top$edges$0$a$add$s3_y line$2(
+    top$aerr$s3_y line$2(
         .d(line$2$d),
         .q(line$2$q),
         .clock(line$2$clock)
     );
-    top$edges$0$a$add$s3_y line$3(
+    top$aerr$s3_y line$3(
         .d(line$3$d),
         .q(line$3$q),
         .clock(line$3$clock)
     );
-    top$edges$0$a$add$s3_y line$4(
+    top$aerr$s3_y line$4(
         .d(line$4$d),
         .q(line$4$q),
         .clock(line$4$clock)
     );
-    top$edges$0$a$add$s3_y line$5(
+    top$aerr$s3_y line$5(
         .d(line$5$d),
         .q(line$5$q),
         .clock(line$5$clock)
-    );
-    top$edges$0$a$add$s3_y line$6(
-        .d(line$6$d),
-        .q(line$6$q),
-        .clock(line$6$clock)
-    );
-    top$edges$0$a$add$s3_y line$7(
-        .d(line$7$d),
-        .q(line$7$q),
-        .clock(line$7$clock)
-    );
-    top$edges$0$a$add$s3_y line$8(
-        .d(line$8$d),
-        .q(line$8$q),
-        .clock(line$8$clock)
-    );
-    top$edges$0$a$add$s3_y line$9(
-        .d(line$9$d),
-        .q(line$9$q),
-        .clock(line$9$clock)
-    );
-    top$edges$0$a$add$s3_y line$10(
-        .d(line$10$d),
-        .q(line$10$q),
-        .clock(line$10$clock)
-    );
-    top$edges$0$a$add$s3_y line$11(
-        .d(line$11$d),
-        .q(line$11$q),
-        .clock(line$11$clock)
-    );
-    top$edges$0$a$add$s3_y line$12(
-        .d(line$12$d),
-        .q(line$12$q),
-        .clock(line$12$clock)
-    );
-    top$edges$0$a$add$s3_y line$13(
-        .d(line$13$d),
-        .q(line$13$q),
-        .clock(line$13$clock)
-    );
-    top$edges$0$a$add$s3_y line$14(
-        .d(line$14$d),
-        .q(line$14$q),
-        .clock(line$14$clock)
-    );
-    top$edges$0$a$add$s3_y line$15(
-        .d(line$15$d),
-        .q(line$15$q),
-        .clock(line$15$clock)
-    );
-    top$edges$0$a$add$s3_y line$16(
-        .d(line$16$d),
-        .q(line$16$q),
-        .clock(line$16$clock)
-    );
-    top$edges$0$a$add$s3_y line$17(
-        .d(line$17$d),
-        .q(line$17$q),
-        .clock(line$17$clock)
-    );
-    top$edges$0$a$add$s3_y line$18(
-        .d(line$18$d),
-        .q(line$18$q),
-        .clock(line$18$clock)
-    );
-    top$edges$0$a$add$s3_y line$19(
-        .d(line$19$d),
-        .q(line$19$q),
-        .clock(line$19$clock)
-    );
-    top$edges$0$a$add$s3_y line$20(
-        .d(line$20$d),
-        .q(line$20$q),
-        .clock(line$20$clock)
-    );
-    top$edges$0$a$add$s3_y line$21(
-        .d(line$21$d),
-        .q(line$21$q),
-        .clock(line$21$clock)
-    );
-    top$edges$0$a$add$s3_y line$22(
-        .d(line$22$d),
-        .q(line$22$q),
-        .clock(line$22$clock)
-    );
-    top$edges$0$a$add$s3_y line$23(
-        .d(line$23$d),
-        .q(line$23$q),
-        .clock(line$23$clock)
-    );
-    top$edges$0$a$add$s3_y line$24(
-        .d(line$24$d),
-        .q(line$24$q),
-        .clock(line$24$clock)
-    );
-    top$edges$0$a$add$s3_y line$25(
-        .d(line$25$d),
-        .q(line$25$q),
-        .clock(line$25$clock)
-    );
-    top$edges$0$a$add$s3_y line$26(
-        .d(line$26$d),
-        .q(line$26$q),
-        .clock(line$26$clock)
-    );
-    top$edges$0$a$add$s3_y line$27(
-        .d(line$27$d),
-        .q(line$27$q),
-        .clock(line$27$clock)
-    );
-    top$edges$0$a$add$s3_y line$28(
-        .d(line$28$d),
-        .q(line$28$q),
-        .clock(line$28$clock)
-    );
-    top$edges$0$a$add$s3_y line$29(
-        .d(line$29$d),
-        .q(line$29$q),
-        .clock(line$29$clock)
-    );
-    top$edges$0$a$add$s3_y line$30(
-        .d(line$30$d),
-        .q(line$30$q),
-        .clock(line$30$clock)
-    );
-    top$edges$0$a$add$s3_y line$31(
-        .d(line$31$d),
-        .q(line$31$q),
-        .clock(line$31$clock)
-    );
-    top$edges$0$a$add$s3_y line$32(
-        .d(line$32$d),
-        .q(line$32$q),
-        .clock(line$32$clock)
-    );
-    top$edges$0$a$add$s3_y line$33(
-        .d(line$33$d),
-        .q(line$33$q),
-        .clock(line$33$clock)
-    );
-    top$edges$0$a$add$s3_y line$34(
-        .d(line$34$d),
-        .q(line$34$q),
-        .clock(line$34$clock)
-    );
-    top$edges$0$a$add$s3_y line$35(
-        .d(line$35$d),
-        .q(line$35$q),
-        .clock(line$35$clock)
-    );
-    top$edges$0$a$add$s3_y line$36(
-        .d(line$36$d),
-        .q(line$36$q),
-        .clock(line$36$clock)
-    );
-    top$edges$0$a$add$s3_y line$37(
-        .d(line$37$d),
-        .q(line$37$q),
-        .clock(line$37$clock)
-    );
-    top$edges$0$a$add$s3_y line$38(
-        .d(line$38$d),
-        .q(line$38$q),
-        .clock(line$38$clock)
-    );
-    top$edges$0$a$add$s3_y line$39(
-        .d(line$39$d),
-        .q(line$39$q),
-        .clock(line$39$clock)
-    );
-    top$edges$0$a$add$s3_y line$40(
-        .d(line$40$d),
-        .q(line$40$q),
-        .clock(line$40$clock)
-    );
-    top$edges$0$a$add$s3_y line$41(
-        .d(line$41$d),
-        .q(line$41$q),
-        .clock(line$41$clock)
-    );
-    top$edges$0$a$add$s3_y line$42(
-        .d(line$42$d),
-        .q(line$42$q),
-        .clock(line$42$clock)
-    );
-    top$edges$0$a$add$s3_y line$43(
-        .d(line$43$d),
-        .q(line$43$q),
-        .clock(line$43$clock)
-    );
-    top$edges$0$a$add$s3_y line$44(
-        .d(line$44$d),
-        .q(line$44$q),
-        .clock(line$44$clock)
-    );
-    top$edges$0$a$add$s3_y line$45(
-        .d(line$45$d),
-        .q(line$45$q),
-        .clock(line$45$clock)
-    );
-    top$edges$0$a$add$s3_y line$46(
-        .d(line$46$d),
-        .q(line$46$q),
-        .clock(line$46$clock)
-    );
-    top$edges$0$a$add$s3_y line$47(
-        .d(line$47$d),
-        .q(line$47$q),
-        .clock(line$47$clock)
-    );
-    top$edges$0$a$add$s3_y line$48(
-        .d(line$48$d),
-        .q(line$48$q),
-        .clock(line$48$clock)
-    );
-    top$edges$0$a$add$s3_y line$49(
-        .d(line$49$d),
-        .q(line$49$q),
-        .clock(line$49$clock)
-    );
-    top$edges$0$a$add$s3_y line$50(
-        .d(line$50$d),
-        .q(line$50$q),
-        .clock(line$50$clock)
-    );
-    top$edges$0$a$add$s3_y line$51(
-        .d(line$51$d),
-        .q(line$51$q),
-        .clock(line$51$clock)
-    );
-    top$edges$0$a$add$s3_y line$52(
-        .d(line$52$d),
-        .q(line$52$q),
-        .clock(line$52$clock)
-    );
-    top$edges$0$a$add$s3_y line$53(
-        .d(line$53$d),
-        .q(line$53$q),
-        .clock(line$53$clock)
-    );
-    top$edges$0$a$add$s3_y line$54(
-        .d(line$54$d),
-        .q(line$54$q),
-        .clock(line$54$clock)
-    );
-    top$edges$0$a$add$s3_y line$55(
-        .d(line$55$d),
-        .q(line$55$q),
-        .clock(line$55$clock)
-    );
-    top$edges$0$a$add$s3_y line$56(
-        .d(line$56$d),
-        .q(line$56$q),
-        .clock(line$56$clock)
-    );
-    top$edges$0$a$add$s3_y line$57(
-        .d(line$57$d),
-        .q(line$57$q),
-        .clock(line$57$clock)
     );
     
     // Update code
@@ -6375,922 +7624,18 @@ module top$eta_wait(clock,d,q);
         line$4$d = d;
         line$5$clock = clock;
         line$5$d = d;
-        line$6$clock = clock;
-        line$6$d = d;
-        line$7$clock = clock;
-        line$7$d = d;
-        line$8$clock = clock;
-        line$8$d = d;
-        line$9$clock = clock;
-        line$9$d = d;
-        line$10$clock = clock;
-        line$10$d = d;
-        line$11$clock = clock;
-        line$11$d = d;
-        line$12$clock = clock;
-        line$12$d = d;
-        line$13$clock = clock;
-        line$13$d = d;
-        line$14$clock = clock;
-        line$14$d = d;
-        line$15$clock = clock;
-        line$15$d = d;
-        line$16$clock = clock;
-        line$16$d = d;
-        line$17$clock = clock;
-        line$17$d = d;
-        line$18$clock = clock;
-        line$18$d = d;
-        line$19$clock = clock;
-        line$19$d = d;
-        line$20$clock = clock;
-        line$20$d = d;
-        line$21$clock = clock;
-        line$21$d = d;
-        line$22$clock = clock;
-        line$22$d = d;
-        line$23$clock = clock;
-        line$23$d = d;
-        line$24$clock = clock;
-        line$24$d = d;
-        line$25$clock = clock;
-        line$25$d = d;
-        line$26$clock = clock;
-        line$26$d = d;
-        line$27$clock = clock;
-        line$27$d = d;
-        line$28$clock = clock;
-        line$28$d = d;
-        line$29$clock = clock;
-        line$29$d = d;
-        line$30$clock = clock;
-        line$30$d = d;
-        line$31$clock = clock;
-        line$31$d = d;
-        line$32$clock = clock;
-        line$32$d = d;
-        line$33$clock = clock;
-        line$33$d = d;
-        line$34$clock = clock;
-        line$34$d = d;
-        line$35$clock = clock;
-        line$35$d = d;
-        line$36$clock = clock;
-        line$36$d = d;
-        line$37$clock = clock;
-        line$37$d = d;
-        line$38$clock = clock;
-        line$38$d = d;
-        line$39$clock = clock;
-        line$39$d = d;
-        line$40$clock = clock;
-        line$40$d = d;
-        line$41$clock = clock;
-        line$41$d = d;
-        line$42$clock = clock;
-        line$42$d = d;
-        line$43$clock = clock;
-        line$43$d = d;
-        line$44$clock = clock;
-        line$44$d = d;
-        line$45$clock = clock;
-        line$45$d = d;
-        line$46$clock = clock;
-        line$46$d = d;
-        line$47$clock = clock;
-        line$47$d = d;
-        line$48$clock = clock;
-        line$48$d = d;
-        line$49$clock = clock;
-        line$49$d = d;
-        line$50$clock = clock;
-        line$50$d = d;
-        line$51$clock = clock;
-        line$51$d = d;
-        line$52$clock = clock;
-        line$52$d = d;
-        line$53$clock = clock;
-        line$53$d = d;
-        line$54$clock = clock;
-        line$54$d = d;
-        line$55$clock = clock;
-        line$55$d = d;
-        line$56$clock = clock;
-        line$56$d = d;
-        line$57$clock = clock;
-        line$57$d = d;
         line$0$d = line$1$q;
         line$1$d = line$2$q;
         line$2$d = line$3$q;
         line$3$d = line$4$q;
         line$4$d = line$5$q;
-        line$5$d = line$6$q;
-        line$6$d = line$7$q;
-        line$7$d = line$8$q;
-        line$8$d = line$9$q;
-        line$9$d = line$10$q;
-        line$10$d = line$11$q;
-        line$11$d = line$12$q;
-        line$12$d = line$13$q;
-        line$13$d = line$14$q;
-        line$14$d = line$15$q;
-        line$15$d = line$16$q;
-        line$16$d = line$17$q;
-        line$17$d = line$18$q;
-        line$18$d = line$19$q;
-        line$19$d = line$20$q;
-        line$20$d = line$21$q;
-        line$21$d = line$22$q;
-        line$22$d = line$23$q;
-        line$23$d = line$24$q;
-        line$24$d = line$25$q;
-        line$25$d = line$26$q;
-        line$26$d = line$27$q;
-        line$27$d = line$28$q;
-        line$28$d = line$29$q;
-        line$29$d = line$30$q;
-        line$30$d = line$31$q;
-        line$31$d = line$32$q;
-        line$32$d = line$33$q;
-        line$33$d = line$34$q;
-        line$34$d = line$35$q;
-        line$35$d = line$36$q;
-        line$36$d = line$37$q;
-        line$37$d = line$38$q;
-        line$38$d = line$39$q;
-        line$39$d = line$40$q;
-        line$40$d = line$41$q;
-        line$41$d = line$42$q;
-        line$42$d = line$43$q;
-        line$43$d = line$44$q;
-        line$44$d = line$45$q;
-        line$45$d = line$46$q;
-        line$46$d = line$47$q;
-        line$47$d = line$48$q;
-        line$48$d = line$49$q;
-        line$49$d = line$50$q;
-        line$50$d = line$51$q;
-        line$51$d = line$52$q;
-        line$52$d = line$53$q;
-        line$53$d = line$54$q;
-        line$54$d = line$55$q;
-        line$55$d = line$56$q;
-        line$56$d = line$57$q;
         q = line$0$q;
     end
     
-endmodule // top$eta_wait
+endmodule // top$edges$0$ta_wait$0
 
 
-module top$gap$0(clock,x0,e0,x1,e1,x2,e2,two_lambda,eta,ok,en,y0_x,y0_e,y1_x,y1_e,y2_x,y2_e);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [31:0] x0;
-    input wire  [31:0] e0;
-    input wire  [31:0] x1;
-    input wire  [31:0] e1;
-    input wire  [31:0] x2;
-    input wire  [31:0] e2;
-    input wire  [31:0] two_lambda;
-    input wire  [31:0] eta;
-    input wire  ok;
-    input wire  en;
-    output reg  [31:0] y0_x;
-    output reg  [31:0] y0_e;
-    output reg  [31:0] y1_x;
-    output reg  [31:0] y1_e;
-    output reg  [31:0] y2_x;
-    output reg  [31:0] y2_e;
-    
-    // Constant declarations
-    localparam  c_one = 32'h3f800000;
-    localparam  c_two = 32'h40000000;
-    localparam  c_inf = 32'h7f800000;
-    
-    // Stub signals
-    reg  bu$clock;
-    reg  [31:0] bu$a;
-    reg  [31:0] bu$b;
-    reg  bu$valid_in;
-    wire  [31:0] bu$y;
-    wire  bu$valid_out;
-    reg  bv$clock;
-    reg  [31:0] bv$a;
-    reg  [31:0] bv$b;
-    reg  bv$valid_in;
-    wire  [31:0] bv$y;
-    wire  bv$valid_out;
-    reg  uv$clock;
-    reg  [31:0] uv$a;
-    reg  [31:0] uv$b;
-    reg  uv$valid_in;
-    wire  [31:0] uv$y;
-    wire  uv$valid_out;
-    reg  t$clock;
-    reg  [31:0] t$a;
-    reg  [31:0] t$b;
-    reg  t$valid_in;
-    wire  [31:0] t$y;
-    wire  t$valid_out;
-    reg  w$clock;
-    reg  [31:0] w$a;
-    reg  [31:0] w$b;
-    reg  w$valid_in;
-    wire  [31:0] w$y;
-    wire  w$valid_out;
-    reg  q$clock;
-    reg  [31:0] q$a;
-    reg  [31:0] q$b;
-    reg  q$valid_in;
-    wire  [31:0] q$y;
-    wire  q$valid_out;
-    reg  g$clock;
-    reg  [31:0] g$a;
-    reg  [31:0] g$b;
-    reg  g$valid_in;
-    wire  [31:0] g$y;
-    wire  g$valid_out;
-    reg  eg$0$clock;
-    reg  [31:0] eg$0$a;
-    reg  [31:0] eg$0$b;
-    reg  eg$0$valid_in;
-    wire  [31:0] eg$0$y;
-    wire  eg$0$valid_out;
-    reg  eg$1$clock;
-    reg  [31:0] eg$1$a;
-    reg  [31:0] eg$1$b;
-    reg  eg$1$valid_in;
-    wire  [31:0] eg$1$y;
-    wire  eg$1$valid_out;
-    reg  eg$2$clock;
-    reg  [31:0] eg$2$a;
-    reg  [31:0] eg$2$b;
-    reg  eg$2$valid_in;
-    wire  [31:0] eg$2$y;
-    wire  eg$2$valid_out;
-    reg  eta_wait$clock;
-    reg  [31:0] eta_wait$d;
-    wire  [31:0] eta_wait$q;
-    reg  two_lambda_wait$clock;
-    reg  [31:0] two_lambda_wait$d;
-    wire  [31:0] two_lambda_wait$q;
-    reg  ok_wait$clock;
-    reg  ok_wait$d;
-    wire  ok_wait$q;
-    reg  en_wait$clock;
-    reg  en_wait$d;
-    wire  en_wait$q;
-    reg  x_wait$0$clock;
-    reg  [31:0] x_wait$0$d;
-    wire  [31:0] x_wait$0$q;
-    reg  x_wait$1$clock;
-    reg  [31:0] x_wait$1$d;
-    wire  [31:0] x_wait$1$q;
-    reg  x_wait$2$clock;
-    reg  [31:0] x_wait$2$d;
-    wire  [31:0] x_wait$2$q;
-    reg  e_wait$0$clock;
-    reg  [31:0] e_wait$0$d;
-    wire  [31:0] e_wait$0$q;
-    reg  e_wait$1$clock;
-    reg  [31:0] e_wait$1$d;
-    wire  [31:0] e_wait$1$q;
-    reg  e_wait$2$clock;
-    reg  [31:0] e_wait$2$d;
-    wire  [31:0] e_wait$2$q;
-    reg  e_pass$0$clock;
-    reg  [31:0] e_pass$0$d;
-    wire  [31:0] e_pass$0$q;
-    reg  e_pass$1$clock;
-    reg  [31:0] e_pass$1$d;
-    wire  [31:0] e_pass$1$q;
-    reg  e_pass$2$clock;
-    reg  [31:0] e_pass$2$d;
-    wire  [31:0] e_pass$2$q;
-    
-    // Sub module instances
-    top$edges$0$a$s_ab bu(
-        .clock(bu$clock),
-        .a(bu$a),
-        .b(bu$b),
-        .valid_in(bu$valid_in),
-        .y(bu$y),
-        .valid_out(bu$valid_out)
-    );
-    top$edges$0$a$s_ab bv(
-        .clock(bv$clock),
-        .a(bv$a),
-        .b(bv$b),
-        .valid_in(bv$valid_in),
-        .y(bv$y),
-        .valid_out(bv$valid_out)
-    );
-    top$edges$0$a$s_ab uv(
-        .clock(uv$clock),
-        .a(uv$a),
-        .b(uv$b),
-        .valid_in(uv$valid_in),
-        .y(uv$y),
-        .valid_out(uv$valid_out)
-    );
-    top$edges$0$px_qz$ae_be t(
-        .clock(t$clock),
-        .a(t$a),
-        .b(t$b),
-        .valid_in(t$valid_in),
-        .y(t$y),
-        .valid_out(t$valid_out)
-    );
-    top$edges$0$a$s_ab w(
-        .clock(w$clock),
-        .a(w$a),
-        .b(w$b),
-        .valid_in(w$valid_in),
-        .y(w$y),
-        .valid_out(w$valid_out)
-    );
-    top$edges$0$px_qz$ae_be q(
-        .clock(q$clock),
-        .a(q$a),
-        .b(q$b),
-        .valid_in(q$valid_in),
-        .y(q$y),
-        .valid_out(q$valid_out)
-    );
-    top$edges$0$px_qz$ae_be g(
-        .clock(g$clock),
-        .a(g$a),
-        .b(g$b),
-        .valid_in(g$valid_in),
-        .y(g$y),
-        .valid_out(g$valid_out)
-    );
-    top$edges$0$a$s_ab eg$0(
-        .clock(eg$0$clock),
-        .a(eg$0$a),
-        .b(eg$0$b),
-        .valid_in(eg$0$valid_in),
-        .y(eg$0$y),
-        .valid_out(eg$0$valid_out)
-    );
-    top$edges$0$a$s_ab eg$1(
-        .clock(eg$1$clock),
-        .a(eg$1$a),
-        .b(eg$1$b),
-        .valid_in(eg$1$valid_in),
-        .y(eg$1$y),
-        .valid_out(eg$1$valid_out)
-    );
-    top$edges$0$a$s_ab eg$2(
-        .clock(eg$2$clock),
-        .a(eg$2$a),
-        .b(eg$2$b),
-        .valid_in(eg$2$valid_in),
-        .y(eg$2$y),
-        .valid_out(eg$2$valid_out)
-    );
-    top$gap$0$eta_wait eta_wait(
-        .clock(eta_wait$clock),
-        .d(eta_wait$d),
-        .q(eta_wait$q)
-    );
-    top$gap$0$two_lambda_wait two_lambda_wait(
-        .clock(two_lambda_wait$clock),
-        .d(two_lambda_wait$d),
-        .q(two_lambda_wait$q)
-    );
-    top$gap$0$ok_wait ok_wait(
-        .clock(ok_wait$clock),
-        .d(ok_wait$d),
-        .q(ok_wait$q)
-    );
-    top$gap$0$en_wait en_wait(
-        .clock(en_wait$clock),
-        .d(en_wait$d),
-        .q(en_wait$q)
-    );
-    top$gap$0$x_wait$0 x_wait$0(
-        .clock(x_wait$0$clock),
-        .d(x_wait$0$d),
-        .q(x_wait$0$q)
-    );
-    top$gap$0$x_wait$0 x_wait$1(
-        .clock(x_wait$1$clock),
-        .d(x_wait$1$d),
-        .q(x_wait$1$q)
-    );
-    top$gap$0$x_wait$0 x_wait$2(
-        .clock(x_wait$2$clock),
-        .d(x_wait$2$d),
-        .q(x_wait$2$q)
-    );
-    top$gap$0$e_wait$0 e_wait$0(
-        .clock(e_wait$0$clock),
-        .d(e_wait$0$d),
-        .q(e_wait$0$q)
-    );
-    top$gap$0$e_wait$0 e_wait$1(
-        .clock(e_wait$1$clock),
-        .d(e_wait$1$d),
-        .q(e_wait$1$q)
-    );
-    top$gap$0$e_wait$0 e_wait$2(
-        .clock(e_wait$2$clock),
-        .d(e_wait$2$d),
-        .q(e_wait$2$q)
-    );
-    top$gap$0$e_pass$0 e_pass$0(
-        .clock(e_pass$0$clock),
-        .d(e_pass$0$d),
-        .q(e_pass$0$q)
-    );
-    top$gap$0$e_pass$0 e_pass$1(
-        .clock(e_pass$1$clock),
-        .d(e_pass$1$d),
-        .q(e_pass$1$q)
-    );
-    top$gap$0$e_pass$0 e_pass$2(
-        .clock(e_pass$2$clock),
-        .d(e_pass$2$d),
-        .q(e_pass$2$q)
-    );
-    
-    // Update code
-    always @(*) begin
-        bu$clock = clock;
-        bv$clock = clock;
-        uv$clock = clock;
-        t$clock = clock;
-        w$clock = clock;
-        q$clock = clock;
-        g$clock = clock;
-        eta_wait$clock = clock;
-        two_lambda_wait$clock = clock;
-        ok_wait$clock = clock;
-        en_wait$clock = clock;
-        bu$a = ((x0[(32'h0)+:(31)]) & 32'hffffffff);
-        bu$b = e0;
-        bu$valid_in = 1'b0;
-        bv$a = ((x1[(32'h0)+:(31)]) & 32'hffffffff);
-        bv$b = e1;
-        bv$valid_in = 1'b0;
-        uv$a = bu$y;
-        uv$b = bv$y;
-        uv$valid_in = 1'b0;
-        t$a = c_two;
-        t$b = uv$y;
-        t$valid_in = 1'b0;
-        w$a = c_one;
-        w$b = t$y;
-        w$valid_in = 1'b0;
-        eta_wait$d = eta;
-        q$a = eta_wait$q;
-        q$b = w$y;
-        q$valid_in = 1'b0;
-        two_lambda_wait$d = two_lambda;
-        g$a = two_lambda_wait$q;
-        g$b = q$y;
-        g$valid_in = 1'b0;
-        ok_wait$d = ok;
-        en_wait$d = en;
-        x_wait$0$d = x0;
-        e_wait$0$d = e0;
-        x_wait$1$d = x1;
-        e_wait$1$d = e1;
-        x_wait$2$d = x2;
-        e_wait$2$d = e2;
-        eg$0$clock = clock;
-        x_wait$0$clock = clock;
-        e_wait$0$clock = clock;
-        e_pass$0$clock = clock;
-        e_pass$0$d = e_wait$0$q;
-        eg$0$a = e_wait$0$q;
-        eg$0$b = g$y;
-        if (~ok_wait$q) begin
-            eg$0$b = c_inf;
-        end
-        eg$0$valid_in = 1'b0;
-        eg$1$clock = clock;
-        x_wait$1$clock = clock;
-        e_wait$1$clock = clock;
-        e_pass$1$clock = clock;
-        e_pass$1$d = e_wait$1$q;
-        eg$1$a = e_wait$1$q;
-        eg$1$b = g$y;
-        if (~ok_wait$q) begin
-            eg$1$b = c_inf;
-        end
-        eg$1$valid_in = 1'b0;
-        eg$2$clock = clock;
-        x_wait$2$clock = clock;
-        e_wait$2$clock = clock;
-        e_pass$2$clock = clock;
-        e_pass$2$d = e_wait$2$q;
-        eg$2$a = e_wait$2$q;
-        eg$2$b = g$y;
-        if (~ok_wait$q) begin
-            eg$2$b = c_inf;
-        end
-        eg$2$valid_in = 1'b0;
-        y0_x = x_wait$0$q;
-        y0_e = e_pass$0$q;
-        if (en_wait$q) begin
-            y0_e = eg$0$y;
-        end
-        y1_x = x_wait$1$q;
-        y1_e = e_pass$1$q;
-        if (en_wait$q) begin
-            y1_e = eg$1$y;
-        end
-        y2_x = x_wait$2$q;
-        y2_e = e_pass$2$q;
-        if (en_wait$q) begin
-            y2_e = eg$2$y;
-        end
-    end
-    
-endmodule // top$gap$0
-
-
-module top$gap$0$e_pass$0(clock,d,q);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    
-    // Stub signals
-    reg  [31:0] line$0$d;
-    wire  [31:0] line$0$q;
-    reg  line$0$clock;
-    reg  [31:0] line$1$d;
-    wire  [31:0] line$1$q;
-    reg  line$1$clock;
-    reg  [31:0] line$2$d;
-    wire  [31:0] line$2$q;
-    reg  line$2$clock;
-    reg  [31:0] line$3$d;
-    wire  [31:0] line$3$q;
-    reg  line$3$clock;
-    
-    // Sub module instances
-    top$edges$0$a$add$s3_y line$0(
-        .d(line$0$d),
-        .q(line$0$q),
-        .clock(line$0$clock)
-    );
-    top$edges$0$a$add$s3_y line$1(
-        .d(line$1$d),
-        .q(line$1$q),
-        .clock(line$1$clock)
-    );
-    top$edges$0$a$add$s3_y line$2(
-        .d(line$2$d),
-        .q(line$2$q),
-        .clock(line$2$clock)
-    );
-    top$edges$0$a$add$s3_y line$3(
-        .d(line$3$d),
-        .q(line$3$q),
-        .clock(line$3$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        line$0$clock = clock;
-        line$0$d = d;
-        line$1$clock = clock;
-        line$1$d = d;
-        line$2$clock = clock;
-        line$2$d = d;
-        line$3$clock = clock;
-        line$3$d = d;
-        line$0$d = line$1$q;
-        line$1$d = line$2$q;
-        line$2$d = line$3$q;
-        q = line$0$q;
-    end
-    
-endmodule // top$gap$0$e_pass$0
-
-
-module top$gap$0$e_wait$0(clock,d,q);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    
-    // Stub signals
-    reg  [31:0] line$0$d;
-    wire  [31:0] line$0$q;
-    reg  line$0$clock;
-    reg  [31:0] line$1$d;
-    wire  [31:0] line$1$q;
-    reg  line$1$clock;
-    reg  [31:0] line$2$d;
-    wire  [31:0] line$2$q;
-    reg  line$2$clock;
-    reg  [31:0] line$3$d;
-    wire  [31:0] line$3$q;
-    reg  line$3$clock;
-    reg  [31:0] line$4$d;
-    wire  [31:0] line$4$q;
-    reg  line$4$clock;
-    reg  [31:0] line$5$d;
-    wire  [31:0] line$5$q;
-    reg  line$5$clock;
-    reg  [31:0] line$6$d;
-    wire  [31:0] line$6$q;
-    reg  line$6$clock;
-    reg  [31:0] line$7$d;
-    wire  [31:0] line$7$q;
-    reg  line$7$clock;
-    reg  [31:0] line$8$d;
-    wire  [31:0] line$8$q;
-    reg  line$8$clock;
-    reg  [31:0] line$9$d;
-    wire  [31:0] line$9$q;
-    reg  line$9$clock;
-    reg  [31:0] line$10$d;
-    wire  [31:0] line$10$q;
-    reg  line$10$clock;
-    reg  [31:0] line$11$d;
-    wire  [31:0] line$11$q;
-    reg  line$11$clock;
-    reg  [31:0] line$12$d;
-    wire  [31:0] line$12$q;
-    reg  line$12$clock;
-    reg  [31:0] line$13$d;
-    wire  [31:0] line$13$q;
-    reg  line$13$clock;
-    reg  [31:0] line$14$d;
-    wire  [31:0] line$14$q;
-    reg  line$14$clock;
-    reg  [31:0] line$15$d;
-    wire  [31:0] line$15$q;
-    reg  line$15$clock;
-    reg  [31:0] line$16$d;
-    wire  [31:0] line$16$q;
-    reg  line$16$clock;
-    reg  [31:0] line$17$d;
-    wire  [31:0] line$17$q;
-    reg  line$17$clock;
-    reg  [31:0] line$18$d;
-    wire  [31:0] line$18$q;
-    reg  line$18$clock;
-    reg  [31:0] line$19$d;
-    wire  [31:0] line$19$q;
-    reg  line$19$clock;
-    reg  [31:0] line$20$d;
-    wire  [31:0] line$20$q;
-    reg  line$20$clock;
-    reg  [31:0] line$21$d;
-    wire  [31:0] line$21$q;
-    reg  line$21$clock;
-    reg  [31:0] line$22$d;
-    wire  [31:0] line$22$q;
-    reg  line$22$clock;
-    reg  [31:0] line$23$d;
-    wire  [31:0] line$23$q;
-    reg  line$23$clock;
-    reg  [31:0] line$24$d;
-    wire  [31:0] line$24$q;
-    reg  line$24$clock;
-    reg  [31:0] line$25$d;
-    wire  [31:0] line$25$q;
-    reg  line$25$clock;
-    reg  [31:0] line$26$d;
-    wire  [31:0] line$26$q;
-    reg  line$26$clock;
-    
-    // Sub module instances
-    top$edges$0$a$add$s3_y line$0(
-        .d(line$0$d),
-        .q(line$0$q),
-        .clock(line$0$clock)
-    );
-    top$edges$0$a$add$s3_y line$1(
-        .d(line$1$d),
-        .q(line$1$q),
-        .clock(line$1$clock)
-    );
-    top$edges$0$a$add$s3_y line$2(
-        .d(line$2$d),
-        .q(line$2$q),
-        .clock(line$2$clock)
-    );
-    top$edges$0$a$add$s3_y line$3(
-        .d(line$3$d),
-        .q(line$3$q),
-        .clock(line$3$clock)
-    );
-    top$edges$0$a$add$s3_y line$4(
-        .d(line$4$d),
-        .q(line$4$q),
-        .clock(line$4$clock)
-    );
-    top$edges$0$a$add$s3_y line$5(
-        .d(line$5$d),
-        .q(line$5$q),
-        .clock(line$5$clock)
-    );
-    top$edges$0$a$add$s3_y line$6(
-        .d(line$6$d),
-        .q(line$6$q),
-        .clock(line$6$clock)
-    );
-    top$edges$0$a$add$s3_y line$7(
-        .d(line$7$d),
-        .q(line$7$q),
-        .clock(line$7$clock)
-    );
-    top$edges$0$a$add$s3_y line$8(
-        .d(line$8$d),
-        .q(line$8$q),
-        .clock(line$8$clock)
-    );
-    top$edges$0$a$add$s3_y line$9(
-        .d(line$9$d),
-        .q(line$9$q),
-        .clock(line$9$clock)
-    );
-    top$edges$0$a$add$s3_y line$10(
-        .d(line$10$d),
-        .q(line$10$q),
-        .clock(line$10$clock)
-    );
-    top$edges$0$a$add$s3_y line$11(
-        .d(line$11$d),
-        .q(line$11$q),
-        .clock(line$11$clock)
-    );
-    top$edges$0$a$add$s3_y line$12(
-        .d(line$12$d),
-        .q(line$12$q),
-        .clock(line$12$clock)
-    );
-    top$edges$0$a$add$s3_y line$13(
-        .d(line$13$d),
-        .q(line$13$q),
-        .clock(line$13$clock)
-    );
-    top$edges$0$a$add$s3_y line$14(
-        .d(line$14$d),
-        .q(line$14$q),
-        .clock(line$14$clock)
-    );
-    top$edges$0$a$add$s3_y line$15(
-        .d(line$15$d),
-        .q(line$15$q),
-        .clock(line$15$clock)
-    );
-    top$edges$0$a$add$s3_y line$16(
-        .d(line$16$d),
-        .q(line$16$q),
-        .clock(line$16$clock)
-    );
-    top$edges$0$a$add$s3_y line$17(
-        .d(line$17$d),
-        .q(line$17$q),
-        .clock(line$17$clock)
-    );
-    top$edges$0$a$add$s3_y line$18(
-        .d(line$18$d),
-        .q(line$18$q),
-        .clock(line$18$clock)
-    );
-    top$edges$0$a$add$s3_y line$19(
-        .d(line$19$d),
-        .q(line$19$q),
-        .clock(line$19$clock)
-    );
-    top$edges$0$a$add$s3_y line$20(
-        .d(line$20$d),
-        .q(line$20$q),
-        .clock(line$20$clock)
-    );
-    top$edges$0$a$add$s3_y line$21(
-        .d(line$21$d),
-        .q(line$21$q),
-        .clock(line$21$clock)
-    );
-    top$edges$0$a$add$s3_y line$22(
-        .d(line$22$d),
-        .q(line$22$q),
-        .clock(line$22$clock)
-    );
-    top$edges$0$a$add$s3_y line$23(
-        .d(line$23$d),
-        .q(line$23$q),
-        .clock(line$23$clock)
-    );
-    top$edges$0$a$add$s3_y line$24(
-        .d(line$24$d),
-        .q(line$24$q),
-        .clock(line$24$clock)
-    );
-    top$edges$0$a$add$s3_y line$25(
-        .d(line$25$d),
-        .q(line$25$q),
-        .clock(line$25$clock)
-    );
-    top$edges$0$a$add$s3_y line$26(
-        .d(line$26$d),
-        .q(line$26$q),
-        .clock(line$26$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        line$0$clock = clock;
-        line$0$d = d;
-        line$1$clock = clock;
-        line$1$d = d;
-        line$2$clock = clock;
-        line$2$d = d;
-        line$3$clock = clock;
-        line$3$d = d;
-        line$4$clock = clock;
-        line$4$d = d;
-        line$5$clock = clock;
-        line$5$d = d;
-        line$6$clock = clock;
-        line$6$d = d;
-        line$7$clock = clock;
-        line$7$d = d;
-        line$8$clock = clock;
-        line$8$d = d;
-        line$9$clock = clock;
-        line$9$d = d;
-        line$10$clock = clock;
-        line$10$d = d;
-        line$11$clock = clock;
-        line$11$d = d;
-        line$12$clock = clock;
-        line$12$d = d;
-        line$13$clock = clock;
-        line$13$d = d;
-        line$14$clock = clock;
-        line$14$d = d;
-        line$15$clock = clock;
-        line$15$d = d;
-        line$16$clock = clock;
-        line$16$d = d;
-        line$17$clock = clock;
-        line$17$d = d;
-        line$18$clock = clock;
-        line$18$d = d;
-        line$19$clock = clock;
-        line$19$d = d;
-        line$20$clock = clock;
-        line$20$d = d;
-        line$21$clock = clock;
-        line$21$d = d;
-        line$22$clock = clock;
-        line$22$d = d;
-        line$23$clock = clock;
-        line$23$d = d;
-        line$24$clock = clock;
-        line$24$d = d;
-        line$25$clock = clock;
-        line$25$d = d;
-        line$26$clock = clock;
-        line$26$d = d;
-        line$0$d = line$1$q;
-        line$1$d = line$2$q;
-        line$2$d = line$3$q;
-        line$3$d = line$4$q;
-        line$4$d = line$5$q;
-        line$5$d = line$6$q;
-        line$6$d = line$7$q;
-        line$7$d = line$8$q;
-        line$8$d = line$9$q;
-        line$9$d = line$10$q;
-        line$10$d = line$11$q;
-        line$11$d = line$12$q;
-        line$12$d = line$13$q;
-        line$13$d = line$14$q;
-        line$14$d = line$15$q;
-        line$15$d = line$16$q;
-        line$16$d = line$17$q;
-        line$17$d = line$18$q;
-        line$18$d = line$19$q;
-        line$19$d = line$20$q;
-        line$20$d = line$21$q;
-        line$21$d = line$22$q;
-        line$22$d = line$23$q;
-        line$23$d = line$24$q;
-        line$24$d = line$25$q;
-        line$25$d = line$26$q;
-        q = line$0$q;
-    end
-    
-endmodule // top$gap$0$e_wait$0
-
-
-module top$gap$0$en_wait(clock,d,q);
+module top$exact_wait(clock,d,q);
     
     // Module arguments
     input wire  clock;
@@ -7364,189 +7709,117 @@ module top$gap$0$en_wait(clock,d,q);
     reg  line$21$d;
     wire  line$21$q;
     reg  line$21$clock;
-    reg  line$22$d;
-    wire  line$22$q;
-    reg  line$22$clock;
-    reg  line$23$d;
-    wire  line$23$q;
-    reg  line$23$clock;
-    reg  line$24$d;
-    wire  line$24$q;
-    reg  line$24$clock;
-    reg  line$25$d;
-    wire  line$25$q;
-    reg  line$25$clock;
-    reg  line$26$d;
-    wire  line$26$q;
-    reg  line$26$clock;
-    reg  line$27$d;
-    wire  line$27$q;
-    reg  line$27$clock;
-    reg  line$28$d;
-    wire  line$28$q;
-    reg  line$28$clock;
-    reg  line$29$d;
-    wire  line$29$q;
-    reg  line$29$clock;
-    reg  line$30$d;
-    wire  line$30$q;
-    reg  line$30$clock;
     
     // Sub module instances
-    top$edges$0$a$add$s1_eff_sub line$0(
+    top$aerr$s1_eff_sub line$0(
         .d(line$0$d),
         .q(line$0$q),
         .clock(line$0$clock)
     );
-    top$edges$0$a$add$s1_eff_sub line$1(
+    top$aerr$s1_eff_sub line$1(
         .d(line$1$d),
         .q(line$1$q),
         .clock(line$1$clock)
     );
-    top$edges$0$a$add$s1_eff_sub line$2(
+    top$aerr$s1_eff_sub line$2(
         .d(line$2$d),
         .q(line$2$q),
         .clock(line$2$clock)
     );
-    top$edges$0$a$add$s1_eff_sub line$3(
+    top$aerr$s1_eff_sub line$3(
         .d(line$3$d),
         .q(line$3$q),
         .clock(line$3$clock)
     );
-    top$edges$0$a$add$s1_eff_sub line$4(
+    top$aerr$s1_eff_sub line$4(
         .d(line$4$d),
         .q(line$4$q),
         .clock(line$4$clock)
     );
-    top$edges$0$a$add$s1_eff_sub line$5(
+    top$aerr$s1_eff_sub line$5(
         .d(line$5$d),
         .q(line$5$q),
         .clock(line$5$clock)
     );
-    top$edges$0$a$add$s1_eff_sub line$6(
+    top$aerr$s1_eff_sub line$6(
         .d(line$6$d),
         .q(line$6$q),
         .clock(line$6$clock)
     );
-    top$edges$0$a$add$s1_eff_sub line$7(
+    top$aerr$s1_eff_sub line$7(
         .d(line$7$d),
         .q(line$7$q),
         .clock(line$7$clock)
     );
-    top$edges$0$a$add$s1_eff_sub line$8(
+    top$aerr$s1_eff_sub line$8(
         .d(line$8$d),
         .q(line$8$q),
         .clock(line$8$clock)
     );
-    top$edges$0$a$add$s1_eff_sub line$9(
+    top$aerr$s1_eff_sub line$9(
         .d(line$9$d),
         .q(line$9$q),
         .clock(line$9$clock)
     );
-    top$edges$0$a$add$s1_eff_sub line$10(
+    top$aerr$s1_eff_sub line$10(
         .d(line$10$d),
         .q(line$10$q),
         .clock(line$10$clock)
     );
-    top$edges$0$a$add$s1_eff_sub line$11(
+    top$aerr$s1_eff_sub line$11(
         .d(line$11$d),
         .q(line$11$q),
         .clock(line$11$clock)
     );
-    top$edges$0$a$add$s1_eff_sub line$12(
+    top$aerr$s1_eff_sub line$12(
         .d(line$12$d),
         .q(line$12$q),
         .clock(line$12$clock)
     );
-    top$edges$0$a$add$s1_eff_sub line$13(
+    top$aerr$s1_eff_sub line$13(
         .d(line$13$d),
         .q(line$13$q),
         .clock(line$13$clock)
     );
-    top$edges$0$a$add$s1_eff_sub line$14(
+    top$aerr$s1_eff_sub line$14(
         .d(line$14$d),
         .q(line$14$q),
         .clock(line$14$clock)
     );
-    top$edges$0$a$add$s1_eff_sub line$15(
+    top$aerr$s1_eff_sub line$15(
         .d(line$15$d),
         .q(line$15$q),
         .clock(line$15$clock)
     );
-    top$edges$0$a$add$s1_eff_sub line$16(
+    top$aerr$s1_eff_sub line$16(
         .d(line$16$d),
         .q(line$16$q),
         .clock(line$16$clock)
     );
-    top$edges$0$a$add$s1_eff_sub line$17(
+    top$aerr$s1_eff_sub line$17(
         .d(line$17$d),
         .q(line$17$q),
         .clock(line$17$clock)
     );
-    top$edges$0$a$add$s1_eff_sub line$18(
+    top$aerr$s1_eff_sub line$18(
         .d(line$18$d),
         .q(line$18$q),
         .clock(line$18$clock)
     );
-    top$edges$0$a$add$s1_eff_sub line$19(
+    top$aerr$s1_eff_sub line$19(
         .d(line$19$d),
         .q(line$19$q),
         .clock(line$19$clock)
     );
-    top$edges$0$a$add$s1_eff_sub line$20(
+    top$aerr$s1_eff_sub line$20(
         .d(line$20$d),
         .q(line$20$q),
         .clock(line$20$clock)
     );
-    top$edges$0$a$add$s1_eff_sub line$21(
+    top$aerr$s1_eff_sub line$21(
         .d(line$21$d),
         .q(line$21$q),
         .clock(line$21$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$22(
-        .d(line$22$d),
-        .q(line$22$q),
-        .clock(line$22$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$23(
-        .d(line$23$d),
-        .q(line$23$q),
-        .clock(line$23$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$24(
-        .d(line$24$d),
-        .q(line$24$q),
-        .clock(line$24$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$25(
-        .d(line$25$d),
-        .q(line$25$q),
-        .clock(line$25$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$26(
-        .d(line$26$d),
-        .q(line$26$q),
-        .clock(line$26$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$27(
-        .d(line$27$d),
-        .q(line$27$q),
-        .clock(line$27$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$28(
-        .d(line$28$d),
-        .q(line$28$q),
-        .clock(line$28$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$29(
-        .d(line$29$d),
-        .q(line$29$q),
-        .clock(line$29$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$30(
-        .d(line$30$d),
-        .q(line$30$q),
-        .clock(line$30$clock)
     );
     
     // Update code
@@ -7595,24 +7868,6 @@ module top$gap$0$en_wait(clock,d,q);
         line$20$d = d;
         line$21$clock = clock;
         line$21$d = d;
-        line$22$clock = clock;
-        line$22$d = d;
-        line$23$clock = clock;
-        line$23$d = d;
-        line$24$clock = clock;
-        line$24$d = d;
-        line$25$clock = clock;
-        line$25$d = d;
-        line$26$clock = clock;
-        line$26$d = d;
-        line$27$clock = clock;
-        line$27$d = d;
-        line$28$clock = clock;
-        line$28$d = d;
-        line$29$clock = clock;
-        line$29$d = d;
-        line$30$clock = clock;
-        line$30$d = d;
         line$0$d = line$1$q;
         line$1$d = line$2$q;
         line$2$d = line$3$q;
@@ -7634,22 +7889,13 @@ module top$gap$0$en_wait(clock,d,q);
         line$18$d = line$19$q;
         line$19$d = line$20$q;
         line$20$d = line$21$q;
-        line$21$d = line$22$q;
-        line$22$d = line$23$q;
-        line$23$d = line$24$q;
-        line$24$d = line$25$q;
-        line$25$d = line$26$q;
-        line$26$d = line$27$q;
-        line$27$d = line$28$q;
-        line$28$d = line$29$q;
-        line$29$d = line$30$q;
         q = line$0$q;
     end
     
-endmodule // top$gap$0$en_wait
+endmodule // top$exact_wait
 
 
-module top$gap$0$eta_wait(clock,d,q);
+module top$l1_wait$0(clock,d,q);
     
     // Module arguments
     input wire  clock;
@@ -7663,137 +7909,17 @@ module top$gap$0$eta_wait(clock,d,q);
     reg  [31:0] line$1$d;
     wire  [31:0] line$1$q;
     reg  line$1$clock;
-    reg  [31:0] line$2$d;
-    wire  [31:0] line$2$q;
-    reg  line$2$clock;
-    reg  [31:0] line$3$d;
-    wire  [31:0] line$3$q;
-    reg  line$3$clock;
-    reg  [31:0] line$4$d;
-    wire  [31:0] line$4$q;
-    reg  line$4$clock;
-    reg  [31:0] line$5$d;
-    wire  [31:0] line$5$q;
-    reg  line$5$clock;
-    reg  [31:0] line$6$d;
-    wire  [31:0] line$6$q;
-    reg  line$6$clock;
-    reg  [31:0] line$7$d;
-    wire  [31:0] line$7$q;
-    reg  line$7$clock;
-    reg  [31:0] line$8$d;
-    wire  [31:0] line$8$q;
-    reg  line$8$clock;
-    reg  [31:0] line$9$d;
-    wire  [31:0] line$9$q;
-    reg  line$9$clock;
-    reg  [31:0] line$10$d;
-    wire  [31:0] line$10$q;
-    reg  line$10$clock;
-    reg  [31:0] line$11$d;
-    wire  [31:0] line$11$q;
-    reg  line$11$clock;
-    reg  [31:0] line$12$d;
-    wire  [31:0] line$12$q;
-    reg  line$12$clock;
-    reg  [31:0] line$13$d;
-    wire  [31:0] line$13$q;
-    reg  line$13$clock;
-    reg  [31:0] line$14$d;
-    wire  [31:0] line$14$q;
-    reg  line$14$clock;
-    reg  [31:0] line$15$d;
-    wire  [31:0] line$15$q;
-    reg  line$15$clock;
-    reg  [31:0] line$16$d;
-    wire  [31:0] line$16$q;
-    reg  line$16$clock;
     
     // Sub module instances
-    top$edges$0$a$add$s3_y line$0(
+    top$aerr$s3_y line$0(
         .d(line$0$d),
         .q(line$0$q),
         .clock(line$0$clock)
     );
-    top$edges$0$a$add$s3_y line$1(
+    top$aerr$s3_y line$1(
         .d(line$1$d),
         .q(line$1$q),
         .clock(line$1$clock)
-    );
-    top$edges$0$a$add$s3_y line$2(
-        .d(line$2$d),
-        .q(line$2$q),
-        .clock(line$2$clock)
-    );
-    top$edges$0$a$add$s3_y line$3(
-        .d(line$3$d),
-        .q(line$3$q),
-        .clock(line$3$clock)
-    );
-    top$edges$0$a$add$s3_y line$4(
-        .d(line$4$d),
-        .q(line$4$q),
-        .clock(line$4$clock)
-    );
-    top$edges$0$a$add$s3_y line$5(
-        .d(line$5$d),
-        .q(line$5$q),
-        .clock(line$5$clock)
-    );
-    top$edges$0$a$add$s3_y line$6(
-        .d(line$6$d),
-        .q(line$6$q),
-        .clock(line$6$clock)
-    );
-    top$edges$0$a$add$s3_y line$7(
-        .d(line$7$d),
-        .q(line$7$q),
-        .clock(line$7$clock)
-    );
-    top$edges$0$a$add$s3_y line$8(
-        .d(line$8$d),
-        .q(line$8$q),
-        .clock(line$8$clock)
-    );
-    top$edges$0$a$add$s3_y line$9(
-        .d(line$9$d),
-        .q(line$9$q),
-        .clock(line$9$clock)
-    );
-    top$edges$0$a$add$s3_y line$10(
-        .d(line$10$d),
-        .q(line$10$q),
-        .clock(line$10$clock)
-    );
-    top$edges$0$a$add$s3_y line$11(
-        .d(line$11$d),
-        .q(line$11$q),
-        .clock(line$11$clock)
-    );
-    top$edges$0$a$add$s3_y line$12(
-        .d(line$12$d),
-        .q(line$12$q),
-        .clock(line$12$clock)
-    );
-    top$edges$0$a$add$s3_y line$13(
-        .d(line$13$d),
-        .q(line$13$q),
-        .clock(line$13$clock)
-    );
-    top$edges$0$a$add$s3_y line$14(
-        .d(line$14$d),
-        .q(line$14$q),
-        .clock(line$14$clock)
-    );
-    top$edges$0$a$add$s3_y line$15(
-        .d(line$15$d),
-        .q(line$15$q),
-        .clock(line$15$clock)
-    );
-    top$edges$0$a$add$s3_y line$16(
-        .d(line$16$d),
-        .q(line$16$q),
-        .clock(line$16$clock)
     );
     
     // Update code
@@ -7802,1808 +7928,130 @@ module top$gap$0$eta_wait(clock,d,q);
         line$0$d = d;
         line$1$clock = clock;
         line$1$d = d;
-        line$2$clock = clock;
-        line$2$d = d;
-        line$3$clock = clock;
-        line$3$d = d;
-        line$4$clock = clock;
-        line$4$d = d;
-        line$5$clock = clock;
-        line$5$d = d;
-        line$6$clock = clock;
-        line$6$d = d;
-        line$7$clock = clock;
-        line$7$d = d;
-        line$8$clock = clock;
-        line$8$d = d;
-        line$9$clock = clock;
-        line$9$d = d;
-        line$10$clock = clock;
-        line$10$d = d;
-        line$11$clock = clock;
-        line$11$d = d;
-        line$12$clock = clock;
-        line$12$d = d;
-        line$13$clock = clock;
-        line$13$d = d;
-        line$14$clock = clock;
-        line$14$d = d;
-        line$15$clock = clock;
-        line$15$d = d;
-        line$16$clock = clock;
-        line$16$d = d;
         line$0$d = line$1$q;
-        line$1$d = line$2$q;
-        line$2$d = line$3$q;
-        line$3$d = line$4$q;
-        line$4$d = line$5$q;
-        line$5$d = line$6$q;
-        line$6$d = line$7$q;
-        line$7$d = line$8$q;
-        line$8$d = line$9$q;
-        line$9$d = line$10$q;
-        line$10$d = line$11$q;
-        line$11$d = line$12$q;
-        line$12$d = line$13$q;
-        line$13$d = line$14$q;
-        line$14$d = line$15$q;
-        line$15$d = line$16$q;
         q = line$0$q;
     end
     
-endmodule // top$gap$0$eta_wait
+endmodule // top$l1_wait$0
 
 
-module top$gap$0$ok_wait(clock,d,q);
+module top$mb_0$0(clock,a0,a1,a2,b0,b1,b2,c,y);
     
     // Module arguments
     input wire  clock;
-    input wire  d;
-    output reg  q;
-    
-    // Stub signals
-    reg  line$0$d;
-    wire  line$0$q;
-    reg  line$0$clock;
-    reg  line$1$d;
-    wire  line$1$q;
-    reg  line$1$clock;
-    reg  line$2$d;
-    wire  line$2$q;
-    reg  line$2$clock;
-    reg  line$3$d;
-    wire  line$3$q;
-    reg  line$3$clock;
-    reg  line$4$d;
-    wire  line$4$q;
-    reg  line$4$clock;
-    reg  line$5$d;
-    wire  line$5$q;
-    reg  line$5$clock;
-    reg  line$6$d;
-    wire  line$6$q;
-    reg  line$6$clock;
-    reg  line$7$d;
-    wire  line$7$q;
-    reg  line$7$clock;
-    reg  line$8$d;
-    wire  line$8$q;
-    reg  line$8$clock;
-    reg  line$9$d;
-    wire  line$9$q;
-    reg  line$9$clock;
-    reg  line$10$d;
-    wire  line$10$q;
-    reg  line$10$clock;
-    reg  line$11$d;
-    wire  line$11$q;
-    reg  line$11$clock;
-    reg  line$12$d;
-    wire  line$12$q;
-    reg  line$12$clock;
-    reg  line$13$d;
-    wire  line$13$q;
-    reg  line$13$clock;
-    reg  line$14$d;
-    wire  line$14$q;
-    reg  line$14$clock;
-    reg  line$15$d;
-    wire  line$15$q;
-    reg  line$15$clock;
-    reg  line$16$d;
-    wire  line$16$q;
-    reg  line$16$clock;
-    reg  line$17$d;
-    wire  line$17$q;
-    reg  line$17$clock;
-    reg  line$18$d;
-    wire  line$18$q;
-    reg  line$18$clock;
-    reg  line$19$d;
-    wire  line$19$q;
-    reg  line$19$clock;
-    reg  line$20$d;
-    wire  line$20$q;
-    reg  line$20$clock;
-    reg  line$21$d;
-    wire  line$21$q;
-    reg  line$21$clock;
-    reg  line$22$d;
-    wire  line$22$q;
-    reg  line$22$clock;
-    reg  line$23$d;
-    wire  line$23$q;
-    reg  line$23$clock;
-    reg  line$24$d;
-    wire  line$24$q;
-    reg  line$24$clock;
-    reg  line$25$d;
-    wire  line$25$q;
-    reg  line$25$clock;
-    reg  line$26$d;
-    wire  line$26$q;
-    reg  line$26$clock;
-    
-    // Sub module instances
-    top$edges$0$a$add$s1_eff_sub line$0(
-        .d(line$0$d),
-        .q(line$0$q),
-        .clock(line$0$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$1(
-        .d(line$1$d),
-        .q(line$1$q),
-        .clock(line$1$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$2(
-        .d(line$2$d),
-        .q(line$2$q),
-        .clock(line$2$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$3(
-        .d(line$3$d),
-        .q(line$3$q),
-        .clock(line$3$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$4(
-        .d(line$4$d),
-        .q(line$4$q),
-        .clock(line$4$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$5(
-        .d(line$5$d),
-        .q(line$5$q),
-        .clock(line$5$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$6(
-        .d(line$6$d),
-        .q(line$6$q),
-        .clock(line$6$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$7(
-        .d(line$7$d),
-        .q(line$7$q),
-        .clock(line$7$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$8(
-        .d(line$8$d),
-        .q(line$8$q),
-        .clock(line$8$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$9(
-        .d(line$9$d),
-        .q(line$9$q),
-        .clock(line$9$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$10(
-        .d(line$10$d),
-        .q(line$10$q),
-        .clock(line$10$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$11(
-        .d(line$11$d),
-        .q(line$11$q),
-        .clock(line$11$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$12(
-        .d(line$12$d),
-        .q(line$12$q),
-        .clock(line$12$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$13(
-        .d(line$13$d),
-        .q(line$13$q),
-        .clock(line$13$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$14(
-        .d(line$14$d),
-        .q(line$14$q),
-        .clock(line$14$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$15(
-        .d(line$15$d),
-        .q(line$15$q),
-        .clock(line$15$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$16(
-        .d(line$16$d),
-        .q(line$16$q),
-        .clock(line$16$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$17(
-        .d(line$17$d),
-        .q(line$17$q),
-        .clock(line$17$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$18(
-        .d(line$18$d),
-        .q(line$18$q),
-        .clock(line$18$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$19(
-        .d(line$19$d),
-        .q(line$19$q),
-        .clock(line$19$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$20(
-        .d(line$20$d),
-        .q(line$20$q),
-        .clock(line$20$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$21(
-        .d(line$21$d),
-        .q(line$21$q),
-        .clock(line$21$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$22(
-        .d(line$22$d),
-        .q(line$22$q),
-        .clock(line$22$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$23(
-        .d(line$23$d),
-        .q(line$23$q),
-        .clock(line$23$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$24(
-        .d(line$24$d),
-        .q(line$24$q),
-        .clock(line$24$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$25(
-        .d(line$25$d),
-        .q(line$25$q),
-        .clock(line$25$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$26(
-        .d(line$26$d),
-        .q(line$26$q),
-        .clock(line$26$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        line$0$clock = clock;
-        line$0$d = d;
-        line$1$clock = clock;
-        line$1$d = d;
-        line$2$clock = clock;
-        line$2$d = d;
-        line$3$clock = clock;
-        line$3$d = d;
-        line$4$clock = clock;
-        line$4$d = d;
-        line$5$clock = clock;
-        line$5$d = d;
-        line$6$clock = clock;
-        line$6$d = d;
-        line$7$clock = clock;
-        line$7$d = d;
-        line$8$clock = clock;
-        line$8$d = d;
-        line$9$clock = clock;
-        line$9$d = d;
-        line$10$clock = clock;
-        line$10$d = d;
-        line$11$clock = clock;
-        line$11$d = d;
-        line$12$clock = clock;
-        line$12$d = d;
-        line$13$clock = clock;
-        line$13$d = d;
-        line$14$clock = clock;
-        line$14$d = d;
-        line$15$clock = clock;
-        line$15$d = d;
-        line$16$clock = clock;
-        line$16$d = d;
-        line$17$clock = clock;
-        line$17$d = d;
-        line$18$clock = clock;
-        line$18$d = d;
-        line$19$clock = clock;
-        line$19$d = d;
-        line$20$clock = clock;
-        line$20$d = d;
-        line$21$clock = clock;
-        line$21$d = d;
-        line$22$clock = clock;
-        line$22$d = d;
-        line$23$clock = clock;
-        line$23$d = d;
-        line$24$clock = clock;
-        line$24$d = d;
-        line$25$clock = clock;
-        line$25$d = d;
-        line$26$clock = clock;
-        line$26$d = d;
-        line$0$d = line$1$q;
-        line$1$d = line$2$q;
-        line$2$d = line$3$q;
-        line$3$d = line$4$q;
-        line$4$d = line$5$q;
-        line$5$d = line$6$q;
-        line$6$d = line$7$q;
-        line$7$d = line$8$q;
-        line$8$d = line$9$q;
-        line$9$d = line$10$q;
-        line$10$d = line$11$q;
-        line$11$d = line$12$q;
-        line$12$d = line$13$q;
-        line$13$d = line$14$q;
-        line$14$d = line$15$q;
-        line$15$d = line$16$q;
-        line$16$d = line$17$q;
-        line$17$d = line$18$q;
-        line$18$d = line$19$q;
-        line$19$d = line$20$q;
-        line$20$d = line$21$q;
-        line$21$d = line$22$q;
-        line$22$d = line$23$q;
-        line$23$d = line$24$q;
-        line$24$d = line$25$q;
-        line$25$d = line$26$q;
-        q = line$0$q;
-    end
-    
-endmodule // top$gap$0$ok_wait
-
-
-module top$gap$0$two_lambda_wait(clock,d,q);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    
-    // Stub signals
-    reg  [31:0] line$0$d;
-    wire  [31:0] line$0$q;
-    reg  line$0$clock;
-    reg  [31:0] line$1$d;
-    wire  [31:0] line$1$q;
-    reg  line$1$clock;
-    reg  [31:0] line$2$d;
-    wire  [31:0] line$2$q;
-    reg  line$2$clock;
-    reg  [31:0] line$3$d;
-    wire  [31:0] line$3$q;
-    reg  line$3$clock;
-    reg  [31:0] line$4$d;
-    wire  [31:0] line$4$q;
-    reg  line$4$clock;
-    reg  [31:0] line$5$d;
-    wire  [31:0] line$5$q;
-    reg  line$5$clock;
-    reg  [31:0] line$6$d;
-    wire  [31:0] line$6$q;
-    reg  line$6$clock;
-    reg  [31:0] line$7$d;
-    wire  [31:0] line$7$q;
-    reg  line$7$clock;
-    reg  [31:0] line$8$d;
-    wire  [31:0] line$8$q;
-    reg  line$8$clock;
-    reg  [31:0] line$9$d;
-    wire  [31:0] line$9$q;
-    reg  line$9$clock;
-    reg  [31:0] line$10$d;
-    wire  [31:0] line$10$q;
-    reg  line$10$clock;
-    reg  [31:0] line$11$d;
-    wire  [31:0] line$11$q;
-    reg  line$11$clock;
-    reg  [31:0] line$12$d;
-    wire  [31:0] line$12$q;
-    reg  line$12$clock;
-    reg  [31:0] line$13$d;
-    wire  [31:0] line$13$q;
-    reg  line$13$clock;
-    reg  [31:0] line$14$d;
-    wire  [31:0] line$14$q;
-    reg  line$14$clock;
-    reg  [31:0] line$15$d;
-    wire  [31:0] line$15$q;
-    reg  line$15$clock;
-    reg  [31:0] line$16$d;
-    wire  [31:0] line$16$q;
-    reg  line$16$clock;
-    reg  [31:0] line$17$d;
-    wire  [31:0] line$17$q;
-    reg  line$17$clock;
-    reg  [31:0] line$18$d;
-    wire  [31:0] line$18$q;
-    reg  line$18$clock;
-    reg  [31:0] line$19$d;
-    wire  [31:0] line$19$q;
-    reg  line$19$clock;
-    reg  [31:0] line$20$d;
-    wire  [31:0] line$20$q;
-    reg  line$20$clock;
-    reg  [31:0] line$21$d;
-    wire  [31:0] line$21$q;
-    reg  line$21$clock;
-    
-    // Sub module instances
-    top$edges$0$a$add$s3_y line$0(
-        .d(line$0$d),
-        .q(line$0$q),
-        .clock(line$0$clock)
-    );
-    top$edges$0$a$add$s3_y line$1(
-        .d(line$1$d),
-        .q(line$1$q),
-        .clock(line$1$clock)
-    );
-    top$edges$0$a$add$s3_y line$2(
-        .d(line$2$d),
-        .q(line$2$q),
-        .clock(line$2$clock)
-    );
-    top$edges$0$a$add$s3_y line$3(
-        .d(line$3$d),
-        .q(line$3$q),
-        .clock(line$3$clock)
-    );
-    top$edges$0$a$add$s3_y line$4(
-        .d(line$4$d),
-        .q(line$4$q),
-        .clock(line$4$clock)
-    );
-    top$edges$0$a$add$s3_y line$5(
-        .d(line$5$d),
-        .q(line$5$q),
-        .clock(line$5$clock)
-    );
-    top$edges$0$a$add$s3_y line$6(
-        .d(line$6$d),
-        .q(line$6$q),
-        .clock(line$6$clock)
-    );
-    top$edges$0$a$add$s3_y line$7(
-        .d(line$7$d),
-        .q(line$7$q),
-        .clock(line$7$clock)
-    );
-    top$edges$0$a$add$s3_y line$8(
-        .d(line$8$d),
-        .q(line$8$q),
-        .clock(line$8$clock)
-    );
-    top$edges$0$a$add$s3_y line$9(
-        .d(line$9$d),
-        .q(line$9$q),
-        .clock(line$9$clock)
-    );
-    top$edges$0$a$add$s3_y line$10(
-        .d(line$10$d),
-        .q(line$10$q),
-        .clock(line$10$clock)
-    );
-    top$edges$0$a$add$s3_y line$11(
-        .d(line$11$d),
-        .q(line$11$q),
-        .clock(line$11$clock)
-    );
-    top$edges$0$a$add$s3_y line$12(
-        .d(line$12$d),
-        .q(line$12$q),
-        .clock(line$12$clock)
-    );
-    top$edges$0$a$add$s3_y line$13(
-        .d(line$13$d),
-        .q(line$13$q),
-        .clock(line$13$clock)
-    );
-    top$edges$0$a$add$s3_y line$14(
-        .d(line$14$d),
-        .q(line$14$q),
-        .clock(line$14$clock)
-    );
-    top$edges$0$a$add$s3_y line$15(
-        .d(line$15$d),
-        .q(line$15$q),
-        .clock(line$15$clock)
-    );
-    top$edges$0$a$add$s3_y line$16(
-        .d(line$16$d),
-        .q(line$16$q),
-        .clock(line$16$clock)
-    );
-    top$edges$0$a$add$s3_y line$17(
-        .d(line$17$d),
-        .q(line$17$q),
-        .clock(line$17$clock)
-    );
-    top$edges$0$a$add$s3_y line$18(
-        .d(line$18$d),
-        .q(line$18$q),
-        .clock(line$18$clock)
-    );
-    top$edges$0$a$add$s3_y line$19(
-        .d(line$19$d),
-        .q(line$19$q),
-        .clock(line$19$clock)
-    );
-    top$edges$0$a$add$s3_y line$20(
-        .d(line$20$d),
-        .q(line$20$q),
-        .clock(line$20$clock)
-    );
-    top$edges$0$a$add$s3_y line$21(
-        .d(line$21$d),
-        .q(line$21$q),
-        .clock(line$21$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        line$0$clock = clock;
-        line$0$d = d;
-        line$1$clock = clock;
-        line$1$d = d;
-        line$2$clock = clock;
-        line$2$d = d;
-        line$3$clock = clock;
-        line$3$d = d;
-        line$4$clock = clock;
-        line$4$d = d;
-        line$5$clock = clock;
-        line$5$d = d;
-        line$6$clock = clock;
-        line$6$d = d;
-        line$7$clock = clock;
-        line$7$d = d;
-        line$8$clock = clock;
-        line$8$d = d;
-        line$9$clock = clock;
-        line$9$d = d;
-        line$10$clock = clock;
-        line$10$d = d;
-        line$11$clock = clock;
-        line$11$d = d;
-        line$12$clock = clock;
-        line$12$d = d;
-        line$13$clock = clock;
-        line$13$d = d;
-        line$14$clock = clock;
-        line$14$d = d;
-        line$15$clock = clock;
-        line$15$d = d;
-        line$16$clock = clock;
-        line$16$d = d;
-        line$17$clock = clock;
-        line$17$d = d;
-        line$18$clock = clock;
-        line$18$d = d;
-        line$19$clock = clock;
-        line$19$d = d;
-        line$20$clock = clock;
-        line$20$d = d;
-        line$21$clock = clock;
-        line$21$d = d;
-        line$0$d = line$1$q;
-        line$1$d = line$2$q;
-        line$2$d = line$3$q;
-        line$3$d = line$4$q;
-        line$4$d = line$5$q;
-        line$5$d = line$6$q;
-        line$6$d = line$7$q;
-        line$7$d = line$8$q;
-        line$8$d = line$9$q;
-        line$9$d = line$10$q;
-        line$10$d = line$11$q;
-        line$11$d = line$12$q;
-        line$12$d = line$13$q;
-        line$13$d = line$14$q;
-        line$14$d = line$15$q;
-        line$15$d = line$16$q;
-        line$16$d = line$17$q;
-        line$17$d = line$18$q;
-        line$18$d = line$19$q;
-        line$19$d = line$20$q;
-        line$20$d = line$21$q;
-        q = line$0$q;
-    end
-    
-endmodule // top$gap$0$two_lambda_wait
-
-
-module top$gap$0$x_wait$0(clock,d,q);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    
-    // Stub signals
-    reg  [31:0] line$0$d;
-    wire  [31:0] line$0$q;
-    reg  line$0$clock;
-    reg  [31:0] line$1$d;
-    wire  [31:0] line$1$q;
-    reg  line$1$clock;
-    reg  [31:0] line$2$d;
-    wire  [31:0] line$2$q;
-    reg  line$2$clock;
-    reg  [31:0] line$3$d;
-    wire  [31:0] line$3$q;
-    reg  line$3$clock;
-    reg  [31:0] line$4$d;
-    wire  [31:0] line$4$q;
-    reg  line$4$clock;
-    reg  [31:0] line$5$d;
-    wire  [31:0] line$5$q;
-    reg  line$5$clock;
-    reg  [31:0] line$6$d;
-    wire  [31:0] line$6$q;
-    reg  line$6$clock;
-    reg  [31:0] line$7$d;
-    wire  [31:0] line$7$q;
-    reg  line$7$clock;
-    reg  [31:0] line$8$d;
-    wire  [31:0] line$8$q;
-    reg  line$8$clock;
-    reg  [31:0] line$9$d;
-    wire  [31:0] line$9$q;
-    reg  line$9$clock;
-    reg  [31:0] line$10$d;
-    wire  [31:0] line$10$q;
-    reg  line$10$clock;
-    reg  [31:0] line$11$d;
-    wire  [31:0] line$11$q;
-    reg  line$11$clock;
-    reg  [31:0] line$12$d;
-    wire  [31:0] line$12$q;
-    reg  line$12$clock;
-    reg  [31:0] line$13$d;
-    wire  [31:0] line$13$q;
-    reg  line$13$clock;
-    reg  [31:0] line$14$d;
-    wire  [31:0] line$14$q;
-    reg  line$14$clock;
-    reg  [31:0] line$15$d;
-    wire  [31:0] line$15$q;
-    reg  line$15$clock;
-    reg  [31:0] line$16$d;
-    wire  [31:0] line$16$q;
-    reg  line$16$clock;
-    reg  [31:0] line$17$d;
-    wire  [31:0] line$17$q;
-    reg  line$17$clock;
-    reg  [31:0] line$18$d;
-    wire  [31:0] line$18$q;
-    reg  line$18$clock;
-    reg  [31:0] line$19$d;
-    wire  [31:0] line$19$q;
-    reg  line$19$clock;
-    reg  [31:0] line$20$d;
-    wire  [31:0] line$20$q;
-    reg  line$20$clock;
-    reg  [31:0] line$21$d;
-    wire  [31:0] line$21$q;
-    reg  line$21$clock;
-    reg  [31:0] line$22$d;
-    wire  [31:0] line$22$q;
-    reg  line$22$clock;
-    reg  [31:0] line$23$d;
-    wire  [31:0] line$23$q;
-    reg  line$23$clock;
-    reg  [31:0] line$24$d;
-    wire  [31:0] line$24$q;
-    reg  line$24$clock;
-    reg  [31:0] line$25$d;
-    wire  [31:0] line$25$q;
-    reg  line$25$clock;
-    reg  [31:0] line$26$d;
-    wire  [31:0] line$26$q;
-    reg  line$26$clock;
-    reg  [31:0] line$27$d;
-    wire  [31:0] line$27$q;
-    reg  line$27$clock;
-    reg  [31:0] line$28$d;
-    wire  [31:0] line$28$q;
-    reg  line$28$clock;
-    reg  [31:0] line$29$d;
-    wire  [31:0] line$29$q;
-    reg  line$29$clock;
-    reg  [31:0] line$30$d;
-    wire  [31:0] line$30$q;
-    reg  line$30$clock;
-    
-    // Sub module instances
-    top$edges$0$a$add$s3_y line$0(
-        .d(line$0$d),
-        .q(line$0$q),
-        .clock(line$0$clock)
-    );
-    top$edges$0$a$add$s3_y line$1(
-        .d(line$1$d),
-        .q(line$1$q),
-        .clock(line$1$clock)
-    );
-    top$edges$0$a$add$s3_y line$2(
-        .d(line$2$d),
-        .q(line$2$q),
-        .clock(line$2$clock)
-    );
-    top$edges$0$a$add$s3_y line$3(
-        .d(line$3$d),
-        .q(line$3$q),
-        .clock(line$3$clock)
-    );
-    top$edges$0$a$add$s3_y line$4(
-        .d(line$4$d),
-        .q(line$4$q),
-        .clock(line$4$clock)
-    );
-    top$edges$0$a$add$s3_y line$5(
-        .d(line$5$d),
-        .q(line$5$q),
-        .clock(line$5$clock)
-    );
-    top$edges$0$a$add$s3_y line$6(
-        .d(line$6$d),
-        .q(line$6$q),
-        .clock(line$6$clock)
-    );
-    top$edges$0$a$add$s3_y line$7(
-        .d(line$7$d),
-        .q(line$7$q),
-        .clock(line$7$clock)
-    );
-    top$edges$0$a$add$s3_y line$8(
-        .d(line$8$d),
-        .q(line$8$q),
-        .clock(line$8$clock)
-    );
-    top$edges$0$a$add$s3_y line$9(
-        .d(line$9$d),
-        .q(line$9$q),
-        .clock(line$9$clock)
-    );
-    top$edges$0$a$add$s3_y line$10(
-        .d(line$10$d),
-        .q(line$10$q),
-        .clock(line$10$clock)
-    );
-    top$edges$0$a$add$s3_y line$11(
-        .d(line$11$d),
-        .q(line$11$q),
-        .clock(line$11$clock)
-    );
-    top$edges$0$a$add$s3_y line$12(
-        .d(line$12$d),
-        .q(line$12$q),
-        .clock(line$12$clock)
-    );
-    top$edges$0$a$add$s3_y line$13(
-        .d(line$13$d),
-        .q(line$13$q),
-        .clock(line$13$clock)
-    );
-    top$edges$0$a$add$s3_y line$14(
-        .d(line$14$d),
-        .q(line$14$q),
-        .clock(line$14$clock)
-    );
-    top$edges$0$a$add$s3_y line$15(
-        .d(line$15$d),
-        .q(line$15$q),
-        .clock(line$15$clock)
-    );
-    top$edges$0$a$add$s3_y line$16(
-        .d(line$16$d),
-        .q(line$16$q),
-        .clock(line$16$clock)
-    );
-    top$edges$0$a$add$s3_y line$17(
-        .d(line$17$d),
-        .q(line$17$q),
-        .clock(line$17$clock)
-    );
-    top$edges$0$a$add$s3_y line$18(
-        .d(line$18$d),
-        .q(line$18$q),
-        .clock(line$18$clock)
-    );
-    top$edges$0$a$add$s3_y line$19(
-        .d(line$19$d),
-        .q(line$19$q),
-        .clock(line$19$clock)
-    );
-    top$edges$0$a$add$s3_y line$20(
-        .d(line$20$d),
-        .q(line$20$q),
-        .clock(line$20$clock)
-    );
-    top$edges$0$a$add$s3_y line$21(
-        .d(line$21$d),
-        .q(line$21$q),
-        .clock(line$21$clock)
-    );
-    top$edges$0$a$add$s3_y line$22(
-        .d(line$22$d),
-        .q(line$22$q),
-        .clock(line$22$clock)
-    );
-    top$edges$0$a$add$s3_y line$23(
-        .d(line$23$d),
-        .q(line$23$q),
-        .clock(line$23$clock)
-    );
-    top$edges$0$a$add$s3_y line$24(
-        .d(line$24$d),
-        .q(line$24$q),
-        .clock(line$24$clock)
-    );
-    top$edges$0$a$add$s3_y line$25(
-        .d(line$25$d),
-        .q(line$25$q),
-        .clock(line$25$clock)
-    );
-    top$edges$0$a$add$s3_y line$26(
-        .d(line$26$d),
-        .q(line$26$q),
-        .clock(line$26$clock)
-    );
-    top$edges$0$a$add$s3_y line$27(
-        .d(line$27$d),
-        .q(line$27$q),
-        .clock(line$27$clock)
-    );
-    top$edges$0$a$add$s3_y line$28(
-        .d(line$28$d),
-        .q(line$28$q),
-        .clock(line$28$clock)
-    );
-    top$edges$0$a$add$s3_y line$29(
-        .d(line$29$d),
-        .q(line$29$q),
-        .clock(line$29$clock)
-    );
-    top$edges$0$a$add$s3_y line$30(
-        .d(line$30$d),
-        .q(line$30$q),
-        .clock(line$30$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        line$0$clock = clock;
-        line$0$d = d;
-        line$1$clock = clock;
-        line$1$d = d;
-        line$2$clock = clock;
-        line$2$d = d;
-        line$3$clock = clock;
-        line$3$d = d;
-        line$4$clock = clock;
-        line$4$d = d;
-        line$5$clock = clock;
-        line$5$d = d;
-        line$6$clock = clock;
-        line$6$d = d;
-        line$7$clock = clock;
-        line$7$d = d;
-        line$8$clock = clock;
-        line$8$d = d;
-        line$9$clock = clock;
-        line$9$d = d;
-        line$10$clock = clock;
-        line$10$d = d;
-        line$11$clock = clock;
-        line$11$d = d;
-        line$12$clock = clock;
-        line$12$d = d;
-        line$13$clock = clock;
-        line$13$d = d;
-        line$14$clock = clock;
-        line$14$d = d;
-        line$15$clock = clock;
-        line$15$d = d;
-        line$16$clock = clock;
-        line$16$d = d;
-        line$17$clock = clock;
-        line$17$d = d;
-        line$18$clock = clock;
-        line$18$d = d;
-        line$19$clock = clock;
-        line$19$d = d;
-        line$20$clock = clock;
-        line$20$d = d;
-        line$21$clock = clock;
-        line$21$d = d;
-        line$22$clock = clock;
-        line$22$d = d;
-        line$23$clock = clock;
-        line$23$d = d;
-        line$24$clock = clock;
-        line$24$d = d;
-        line$25$clock = clock;
-        line$25$d = d;
-        line$26$clock = clock;
-        line$26$d = d;
-        line$27$clock = clock;
-        line$27$d = d;
-        line$28$clock = clock;
-        line$28$d = d;
-        line$29$clock = clock;
-        line$29$d = d;
-        line$30$clock = clock;
-        line$30$d = d;
-        line$0$d = line$1$q;
-        line$1$d = line$2$q;
-        line$2$d = line$3$q;
-        line$3$d = line$4$q;
-        line$4$d = line$5$q;
-        line$5$d = line$6$q;
-        line$6$d = line$7$q;
-        line$7$d = line$8$q;
-        line$8$d = line$9$q;
-        line$9$d = line$10$q;
-        line$10$d = line$11$q;
-        line$11$d = line$12$q;
-        line$12$d = line$13$q;
-        line$13$d = line$14$q;
-        line$14$d = line$15$q;
-        line$15$d = line$16$q;
-        line$16$d = line$17$q;
-        line$17$d = line$18$q;
-        line$18$d = line$19$q;
-        line$19$d = line$20$q;
-        line$20$d = line$21$q;
-        line$21$d = line$22$q;
-        line$22$d = line$23$q;
-        line$23$d = line$24$q;
-        line$24$d = line$25$q;
-        line$25$d = line$26$q;
-        line$26$d = line$27$q;
-        line$27$d = line$28$q;
-        line$28$d = line$29$q;
-        line$29$d = line$30$q;
-        q = line$0$q;
-    end
-    
-endmodule // top$gap$0$x_wait$0
-
-
-module top$gap_en_wait(clock,d,q);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  d;
-    output reg  q;
-    
-    // Stub signals
-    reg  line$0$d;
-    wire  line$0$q;
-    reg  line$0$clock;
-    reg  line$1$d;
-    wire  line$1$q;
-    reg  line$1$clock;
-    reg  line$2$d;
-    wire  line$2$q;
-    reg  line$2$clock;
-    reg  line$3$d;
-    wire  line$3$q;
-    reg  line$3$clock;
-    reg  line$4$d;
-    wire  line$4$q;
-    reg  line$4$clock;
-    reg  line$5$d;
-    wire  line$5$q;
-    reg  line$5$clock;
-    reg  line$6$d;
-    wire  line$6$q;
-    reg  line$6$clock;
-    reg  line$7$d;
-    wire  line$7$q;
-    reg  line$7$clock;
-    reg  line$8$d;
-    wire  line$8$q;
-    reg  line$8$clock;
-    reg  line$9$d;
-    wire  line$9$q;
-    reg  line$9$clock;
-    reg  line$10$d;
-    wire  line$10$q;
-    reg  line$10$clock;
-    reg  line$11$d;
-    wire  line$11$q;
-    reg  line$11$clock;
-    reg  line$12$d;
-    wire  line$12$q;
-    reg  line$12$clock;
-    reg  line$13$d;
-    wire  line$13$q;
-    reg  line$13$clock;
-    reg  line$14$d;
-    wire  line$14$q;
-    reg  line$14$clock;
-    reg  line$15$d;
-    wire  line$15$q;
-    reg  line$15$clock;
-    reg  line$16$d;
-    wire  line$16$q;
-    reg  line$16$clock;
-    reg  line$17$d;
-    wire  line$17$q;
-    reg  line$17$clock;
-    reg  line$18$d;
-    wire  line$18$q;
-    reg  line$18$clock;
-    reg  line$19$d;
-    wire  line$19$q;
-    reg  line$19$clock;
-    reg  line$20$d;
-    wire  line$20$q;
-    reg  line$20$clock;
-    reg  line$21$d;
-    wire  line$21$q;
-    reg  line$21$clock;
-    reg  line$22$d;
-    wire  line$22$q;
-    reg  line$22$clock;
-    reg  line$23$d;
-    wire  line$23$q;
-    reg  line$23$clock;
-    reg  line$24$d;
-    wire  line$24$q;
-    reg  line$24$clock;
-    reg  line$25$d;
-    wire  line$25$q;
-    reg  line$25$clock;
-    reg  line$26$d;
-    wire  line$26$q;
-    reg  line$26$clock;
-    reg  line$27$d;
-    wire  line$27$q;
-    reg  line$27$clock;
-    reg  line$28$d;
-    wire  line$28$q;
-    reg  line$28$clock;
-    reg  line$29$d;
-    wire  line$29$q;
-    reg  line$29$clock;
-    reg  line$30$d;
-    wire  line$30$q;
-    reg  line$30$clock;
-    reg  line$31$d;
-    wire  line$31$q;
-    reg  line$31$clock;
-    reg  line$32$d;
-    wire  line$32$q;
-    reg  line$32$clock;
-    reg  line$33$d;
-    wire  line$33$q;
-    reg  line$33$clock;
-    reg  line$34$d;
-    wire  line$34$q;
-    reg  line$34$clock;
-    reg  line$35$d;
-    wire  line$35$q;
-    reg  line$35$clock;
-    reg  line$36$d;
-    wire  line$36$q;
-    reg  line$36$clock;
-    reg  line$37$d;
-    wire  line$37$q;
-    reg  line$37$clock;
-    reg  line$38$d;
-    wire  line$38$q;
-    reg  line$38$clock;
-    reg  line$39$d;
-    wire  line$39$q;
-    reg  line$39$clock;
-    reg  line$40$d;
-    wire  line$40$q;
-    reg  line$40$clock;
-    reg  line$41$d;
-    wire  line$41$q;
-    reg  line$41$clock;
-    reg  line$42$d;
-    wire  line$42$q;
-    reg  line$42$clock;
-    reg  line$43$d;
-    wire  line$43$q;
-    reg  line$43$clock;
-    reg  line$44$d;
-    wire  line$44$q;
-    reg  line$44$clock;
-    reg  line$45$d;
-    wire  line$45$q;
-    reg  line$45$clock;
-    reg  line$46$d;
-    wire  line$46$q;
-    reg  line$46$clock;
-    reg  line$47$d;
-    wire  line$47$q;
-    reg  line$47$clock;
-    reg  line$48$d;
-    wire  line$48$q;
-    reg  line$48$clock;
-    reg  line$49$d;
-    wire  line$49$q;
-    reg  line$49$clock;
-    reg  line$50$d;
-    wire  line$50$q;
-    reg  line$50$clock;
-    reg  line$51$d;
-    wire  line$51$q;
-    reg  line$51$clock;
-    reg  line$52$d;
-    wire  line$52$q;
-    reg  line$52$clock;
-    reg  line$53$d;
-    wire  line$53$q;
-    reg  line$53$clock;
-    reg  line$54$d;
-    wire  line$54$q;
-    reg  line$54$clock;
-    reg  line$55$d;
-    wire  line$55$q;
-    reg  line$55$clock;
-    reg  line$56$d;
-    wire  line$56$q;
-    reg  line$56$clock;
-    reg  line$57$d;
-    wire  line$57$q;
-    reg  line$57$clock;
-    
-    // Sub module instances
-    top$edges$0$a$add$s1_eff_sub line$0(
-        .d(line$0$d),
-        .q(line$0$q),
-        .clock(line$0$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$1(
-        .d(line$1$d),
-        .q(line$1$q),
-        .clock(line$1$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$2(
-        .d(line$2$d),
-        .q(line$2$q),
-        .clock(line$2$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$3(
-        .d(line$3$d),
-        .q(line$3$q),
-        .clock(line$3$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$4(
-        .d(line$4$d),
-        .q(line$4$q),
-        .clock(line$4$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$5(
-        .d(line$5$d),
-        .q(line$5$q),
-        .clock(line$5$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$6(
-        .d(line$6$d),
-        .q(line$6$q),
-        .clock(line$6$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$7(
-        .d(line$7$d),
-        .q(line$7$q),
-        .clock(line$7$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$8(
-        .d(line$8$d),
-        .q(line$8$q),
-        .clock(line$8$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$9(
-        .d(line$9$d),
-        .q(line$9$q),
-        .clock(line$9$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$10(
-        .d(line$10$d),
-        .q(line$10$q),
-        .clock(line$10$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$11(
-        .d(line$11$d),
-        .q(line$11$q),
-        .clock(line$11$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$12(
-        .d(line$12$d),
-        .q(line$12$q),
-        .clock(line$12$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$13(
-        .d(line$13$d),
-        .q(line$13$q),
-        .clock(line$13$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$14(
-        .d(line$14$d),
-        .q(line$14$q),
-        .clock(line$14$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$15(
-        .d(line$15$d),
-        .q(line$15$q),
-        .clock(line$15$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$16(
-        .d(line$16$d),
-        .q(line$16$q),
-        .clock(line$16$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$17(
-        .d(line$17$d),
-        .q(line$17$q),
-        .clock(line$17$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$18(
-        .d(line$18$d),
-        .q(line$18$q),
-        .clock(line$18$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$19(
-        .d(line$19$d),
-        .q(line$19$q),
-        .clock(line$19$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$20(
-        .d(line$20$d),
-        .q(line$20$q),
-        .clock(line$20$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$21(
-        .d(line$21$d),
-        .q(line$21$q),
-        .clock(line$21$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$22(
-        .d(line$22$d),
-        .q(line$22$q),
-        .clock(line$22$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$23(
-        .d(line$23$d),
-        .q(line$23$q),
-        .clock(line$23$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$24(
-        .d(line$24$d),
-        .q(line$24$q),
-        .clock(line$24$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$25(
-        .d(line$25$d),
-        .q(line$25$q),
-        .clock(line$25$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$26(
-        .d(line$26$d),
-        .q(line$26$q),
-        .clock(line$26$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$27(
-        .d(line$27$d),
-        .q(line$27$q),
-        .clock(line$27$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$28(
-        .d(line$28$d),
-        .q(line$28$q),
-        .clock(line$28$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$29(
-        .d(line$29$d),
-        .q(line$29$q),
-        .clock(line$29$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$30(
-        .d(line$30$d),
-        .q(line$30$q),
-        .clock(line$30$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$31(
-        .d(line$31$d),
-        .q(line$31$q),
-        .clock(line$31$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$32(
-        .d(line$32$d),
-        .q(line$32$q),
-        .clock(line$32$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$33(
-        .d(line$33$d),
-        .q(line$33$q),
-        .clock(line$33$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$34(
-        .d(line$34$d),
-        .q(line$34$q),
-        .clock(line$34$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$35(
-        .d(line$35$d),
-        .q(line$35$q),
-        .clock(line$35$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$36(
-        .d(line$36$d),
-        .q(line$36$q),
-        .clock(line$36$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$37(
-        .d(line$37$d),
-        .q(line$37$q),
-        .clock(line$37$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$38(
-        .d(line$38$d),
-        .q(line$38$q),
-        .clock(line$38$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$39(
-        .d(line$39$d),
-        .q(line$39$q),
-        .clock(line$39$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$40(
-        .d(line$40$d),
-        .q(line$40$q),
-        .clock(line$40$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$41(
-        .d(line$41$d),
-        .q(line$41$q),
-        .clock(line$41$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$42(
-        .d(line$42$d),
-        .q(line$42$q),
-        .clock(line$42$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$43(
-        .d(line$43$d),
-        .q(line$43$q),
-        .clock(line$43$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$44(
-        .d(line$44$d),
-        .q(line$44$q),
-        .clock(line$44$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$45(
-        .d(line$45$d),
-        .q(line$45$q),
-        .clock(line$45$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$46(
-        .d(line$46$d),
-        .q(line$46$q),
-        .clock(line$46$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$47(
-        .d(line$47$d),
-        .q(line$47$q),
-        .clock(line$47$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$48(
-        .d(line$48$d),
-        .q(line$48$q),
-        .clock(line$48$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$49(
-        .d(line$49$d),
-        .q(line$49$q),
-        .clock(line$49$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$50(
-        .d(line$50$d),
-        .q(line$50$q),
-        .clock(line$50$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$51(
-        .d(line$51$d),
-        .q(line$51$q),
-        .clock(line$51$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$52(
-        .d(line$52$d),
-        .q(line$52$q),
-        .clock(line$52$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$53(
-        .d(line$53$d),
-        .q(line$53$q),
-        .clock(line$53$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$54(
-        .d(line$54$d),
-        .q(line$54$q),
-        .clock(line$54$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$55(
-        .d(line$55$d),
-        .q(line$55$q),
-        .clock(line$55$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$56(
-        .d(line$56$d),
-        .q(line$56$q),
-        .clock(line$56$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$57(
-        .d(line$57$d),
-        .q(line$57$q),
-        .clock(line$57$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        line$0$clock = clock;
-        line$0$d = d;
-        line$1$clock = clock;
-        line$1$d = d;
-        line$2$clock = clock;
-        line$2$d = d;
-        line$3$clock = clock;
-        line$3$d = d;
-        line$4$clock = clock;
-        line$4$d = d;
-        line$5$clock = clock;
-        line$5$d = d;
-        line$6$clock = clock;
-        line$6$d = d;
-        line$7$clock = clock;
-        line$7$d = d;
-        line$8$clock = clock;
-        line$8$d = d;
-        line$9$clock = clock;
-        line$9$d = d;
-        line$10$clock = clock;
-        line$10$d = d;
-        line$11$clock = clock;
-        line$11$d = d;
-        line$12$clock = clock;
-        line$12$d = d;
-        line$13$clock = clock;
-        line$13$d = d;
-        line$14$clock = clock;
-        line$14$d = d;
-        line$15$clock = clock;
-        line$15$d = d;
-        line$16$clock = clock;
-        line$16$d = d;
-        line$17$clock = clock;
-        line$17$d = d;
-        line$18$clock = clock;
-        line$18$d = d;
-        line$19$clock = clock;
-        line$19$d = d;
-        line$20$clock = clock;
-        line$20$d = d;
-        line$21$clock = clock;
-        line$21$d = d;
-        line$22$clock = clock;
-        line$22$d = d;
-        line$23$clock = clock;
-        line$23$d = d;
-        line$24$clock = clock;
-        line$24$d = d;
-        line$25$clock = clock;
-        line$25$d = d;
-        line$26$clock = clock;
-        line$26$d = d;
-        line$27$clock = clock;
-        line$27$d = d;
-        line$28$clock = clock;
-        line$28$d = d;
-        line$29$clock = clock;
-        line$29$d = d;
-        line$30$clock = clock;
-        line$30$d = d;
-        line$31$clock = clock;
-        line$31$d = d;
-        line$32$clock = clock;
-        line$32$d = d;
-        line$33$clock = clock;
-        line$33$d = d;
-        line$34$clock = clock;
-        line$34$d = d;
-        line$35$clock = clock;
-        line$35$d = d;
-        line$36$clock = clock;
-        line$36$d = d;
-        line$37$clock = clock;
-        line$37$d = d;
-        line$38$clock = clock;
-        line$38$d = d;
-        line$39$clock = clock;
-        line$39$d = d;
-        line$40$clock = clock;
-        line$40$d = d;
-        line$41$clock = clock;
-        line$41$d = d;
-        line$42$clock = clock;
-        line$42$d = d;
-        line$43$clock = clock;
-        line$43$d = d;
-        line$44$clock = clock;
-        line$44$d = d;
-        line$45$clock = clock;
-        line$45$d = d;
-        line$46$clock = clock;
-        line$46$d = d;
-        line$47$clock = clock;
-        line$47$d = d;
-        line$48$clock = clock;
-        line$48$d = d;
-        line$49$clock = clock;
-        line$49$d = d;
-        line$50$clock = clock;
-        line$50$d = d;
-        line$51$clock = clock;
-        line$51$d = d;
-        line$52$clock = clock;
-        line$52$d = d;
-        line$53$clock = clock;
-        line$53$d = d;
-        line$54$clock = clock;
-        line$54$d = d;
-        line$55$clock = clock;
-        line$55$d = d;
-        line$56$clock = clock;
-        line$56$d = d;
-        line$57$clock = clock;
-        line$57$d = d;
-        line$0$d = line$1$q;
-        line$1$d = line$2$q;
-        line$2$d = line$3$q;
-        line$3$d = line$4$q;
-        line$4$d = line$5$q;
-        line$5$d = line$6$q;
-        line$6$d = line$7$q;
-        line$7$d = line$8$q;
-        line$8$d = line$9$q;
-        line$9$d = line$10$q;
-        line$10$d = line$11$q;
-        line$11$d = line$12$q;
-        line$12$d = line$13$q;
-        line$13$d = line$14$q;
-        line$14$d = line$15$q;
-        line$15$d = line$16$q;
-        line$16$d = line$17$q;
-        line$17$d = line$18$q;
-        line$18$d = line$19$q;
-        line$19$d = line$20$q;
-        line$20$d = line$21$q;
-        line$21$d = line$22$q;
-        line$22$d = line$23$q;
-        line$23$d = line$24$q;
-        line$24$d = line$25$q;
-        line$25$d = line$26$q;
-        line$26$d = line$27$q;
-        line$27$d = line$28$q;
-        line$28$d = line$29$q;
-        line$29$d = line$30$q;
-        line$30$d = line$31$q;
-        line$31$d = line$32$q;
-        line$32$d = line$33$q;
-        line$33$d = line$34$q;
-        line$34$d = line$35$q;
-        line$35$d = line$36$q;
-        line$36$d = line$37$q;
-        line$37$d = line$38$q;
-        line$38$d = line$39$q;
-        line$39$d = line$40$q;
-        line$40$d = line$41$q;
-        line$41$d = line$42$q;
-        line$42$d = line$43$q;
-        line$43$d = line$44$q;
-        line$44$d = line$45$q;
-        line$45$d = line$46$q;
-        line$46$d = line$47$q;
-        line$47$d = line$48$q;
-        line$48$d = line$49$q;
-        line$49$d = line$50$q;
-        line$50$d = line$51$q;
-        line$51$d = line$52$q;
-        line$52$d = line$53$q;
-        line$53$d = line$54$q;
-        line$54$d = line$55$q;
-        line$55$d = line$56$q;
-        line$56$d = line$57$q;
-        q = line$0$q;
-    end
-    
-endmodule // top$gap_en_wait
-
-
-module top$mb_0$0(clock,a0_x,a0_e,a1_x,a1_e,a2_x,a2_e,b0_x,b0_e,b1_x,b1_e,b2_x,b2_e,c_x,c_e,y_x,y_e);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [31:0] a0_x;
-    input wire  [31:0] a0_e;
-    input wire  [31:0] a1_x;
-    input wire  [31:0] a1_e;
-    input wire  [31:0] a2_x;
-    input wire  [31:0] a2_e;
-    input wire  [31:0] b0_x;
-    input wire  [31:0] b0_e;
-    input wire  [31:0] b1_x;
-    input wire  [31:0] b1_e;
-    input wire  [31:0] b2_x;
-    input wire  [31:0] b2_e;
-    input wire  [31:0] c_x;
-    input wire  [31:0] c_e;
-    output reg  [31:0] y_x;
-    output reg  [31:0] y_e;
+    input wire  [31:0] a0;
+    input wire  [31:0] a1;
+    input wire  [31:0] a2;
+    input wire  [31:0] b0;
+    input wire  [31:0] b1;
+    input wire  [31:0] b2;
+    input wire  [31:0] c;
+    output reg  [31:0] y;
     
     // Constant declarations
     localparam  affine = 1'b0;
+    localparam  mask = 32'hffffffff;
     
     // Stub signals
     reg  p$0$clock;
-    reg  [31:0] p$0$ax;
-    reg  [31:0] p$0$ae;
-    reg  [31:0] p$0$bx;
-    reg  [31:0] p$0$be;
-    wire  [31:0] p$0$x;
-    wire  [31:0] p$0$e;
+    reg  [31:0] p$0$a;
+    reg  [31:0] p$0$b;
+    reg  p$0$valid_in;
+    wire  [31:0] p$0$y;
+    wire  p$0$valid_out;
     reg  p$1$clock;
-    reg  [31:0] p$1$ax;
-    reg  [31:0] p$1$ae;
-    reg  [31:0] p$1$bx;
-    reg  [31:0] p$1$be;
-    wire  [31:0] p$1$x;
-    wire  [31:0] p$1$e;
+    reg  [31:0] p$1$a;
+    reg  [31:0] p$1$b;
+    reg  p$1$valid_in;
+    wire  [31:0] p$1$y;
+    wire  p$1$valid_out;
     reg  p$2$clock;
-    reg  [31:0] p$2$ax;
-    reg  [31:0] p$2$ae;
-    reg  [31:0] p$2$bx;
-    reg  [31:0] p$2$be;
-    wire  [31:0] p$2$x;
-    wire  [31:0] p$2$e;
+    reg  [31:0] p$2$a;
+    reg  [31:0] p$2$b;
+    reg  p$2$valid_in;
+    wire  [31:0] p$2$y;
+    wire  p$2$valid_out;
     reg  s01$clock;
-    reg  [31:0] s01$ax;
-    reg  [31:0] s01$ae;
-    reg  [31:0] s01$bx;
-    reg  [31:0] s01$be;
+    reg  [31:0] s01$a;
+    reg  [31:0] s01$b;
     reg  s01$sub;
-    wire  [31:0] s01$x;
-    wire  [31:0] s01$e;
+    reg  s01$valid_in;
+    wire  [31:0] s01$y;
+    wire  s01$valid_out;
     reg  s2c$clock;
-    reg  [31:0] s2c$ax;
-    reg  [31:0] s2c$ae;
-    reg  [31:0] s2c$bx;
-    reg  [31:0] s2c$be;
+    reg  [31:0] s2c$a;
+    reg  [31:0] s2c$b;
     reg  s2c$sub;
-    wire  [31:0] s2c$x;
-    wire  [31:0] s2c$e;
+    reg  s2c$valid_in;
+    wire  [31:0] s2c$y;
+    wire  s2c$valid_out;
     reg  s$clock;
-    reg  [31:0] s$ax;
-    reg  [31:0] s$ae;
-    reg  [31:0] s$bx;
-    reg  [31:0] s$be;
+    reg  [31:0] s$a;
+    reg  [31:0] s$b;
     reg  s$sub;
-    wire  [31:0] s$x;
-    wire  [31:0] s$e;
-    reg  c_x_wait$clock;
-    reg  [31:0] c_x_wait$d;
-    wire  [31:0] c_x_wait$q;
-    reg  c_e_wait$clock;
-    reg  [31:0] c_e_wait$d;
-    wire  [31:0] c_e_wait$q;
-    reg  p2_x_wait$clock;
-    reg  [31:0] p2_x_wait$d;
-    wire  [31:0] p2_x_wait$q;
-    reg  p2_e_wait$clock;
-    reg  [31:0] p2_e_wait$d;
-    wire  [31:0] p2_e_wait$q;
+    reg  s$valid_in;
+    wire  [31:0] s$y;
+    wire  s$valid_out;
+    reg  p2_wait$clock;
+    reg  [31:0] p2_wait$d;
+    wire  [31:0] p2_wait$q;
     
     // Sub module instances
     top$edges$0$px_qz p$0(
         .clock(p$0$clock),
-        .ax(p$0$ax),
-        .ae(p$0$ae),
-        .bx(p$0$bx),
-        .be(p$0$be),
-        .x(p$0$x),
-        .e(p$0$e)
+        .a(p$0$a),
+        .b(p$0$b),
+        .valid_in(p$0$valid_in),
+        .y(p$0$y),
+        .valid_out(p$0$valid_out)
     );
     top$edges$0$px_qz p$1(
         .clock(p$1$clock),
-        .ax(p$1$ax),
-        .ae(p$1$ae),
-        .bx(p$1$bx),
-        .be(p$1$be),
-        .x(p$1$x),
-        .e(p$1$e)
+        .a(p$1$a),
+        .b(p$1$b),
+        .valid_in(p$1$valid_in),
+        .y(p$1$y),
+        .valid_out(p$1$valid_out)
     );
     top$edges$0$px_qz p$2(
         .clock(p$2$clock),
-        .ax(p$2$ax),
-        .ae(p$2$ae),
-        .bx(p$2$bx),
-        .be(p$2$be),
-        .x(p$2$x),
-        .e(p$2$e)
+        .a(p$2$a),
+        .b(p$2$b),
+        .valid_in(p$2$valid_in),
+        .y(p$2$y),
+        .valid_out(p$2$valid_out)
     );
     top$edges$0$a s01(
         .clock(s01$clock),
-        .ax(s01$ax),
-        .ae(s01$ae),
-        .bx(s01$bx),
-        .be(s01$be),
+        .a(s01$a),
+        .b(s01$b),
         .sub(s01$sub),
-        .x(s01$x),
-        .e(s01$e)
+        .valid_in(s01$valid_in),
+        .y(s01$y),
+        .valid_out(s01$valid_out)
     );
     top$edges$0$a s2c(
         .clock(s2c$clock),
-        .ax(s2c$ax),
-        .ae(s2c$ae),
-        .bx(s2c$bx),
-        .be(s2c$be),
+        .a(s2c$a),
+        .b(s2c$b),
         .sub(s2c$sub),
-        .x(s2c$x),
-        .e(s2c$e)
+        .valid_in(s2c$valid_in),
+        .y(s2c$y),
+        .valid_out(s2c$valid_out)
     );
     top$edges$0$a s(
         .clock(s$clock),
-        .ax(s$ax),
-        .ae(s$ae),
-        .bx(s$bx),
-        .be(s$be),
+        .a(s$a),
+        .b(s$b),
         .sub(s$sub),
-        .x(s$x),
-        .e(s$e)
+        .valid_in(s$valid_in),
+        .y(s$y),
+        .valid_out(s$valid_out)
     );
-    top$edges$0$pz_e_wait c_x_wait(
-        .clock(c_x_wait$clock),
-        .d(c_x_wait$d),
-        .q(c_x_wait$q)
-    );
-    top$edges$0$pz_e_wait c_e_wait(
-        .clock(c_e_wait$clock),
-        .d(c_e_wait$d),
-        .q(c_e_wait$q)
-    );
-    top$edges$0$rz_e_wait p2_x_wait(
-        .clock(p2_x_wait$clock),
-        .d(p2_x_wait$d),
-        .q(p2_x_wait$q)
-    );
-    top$edges$0$rz_e_wait p2_e_wait(
-        .clock(p2_e_wait$clock),
-        .d(p2_e_wait$d),
-        .q(p2_e_wait$q)
+    top$edges$0$brs_wait p2_wait(
+        .clock(p2_wait$clock),
+        .d(p2_wait$d),
+        .q(p2_wait$q)
     );
     
     // Update code
@@ -9611,215 +8059,158 @@ module top$mb_0$0(clock,a0_x,a0_e,a1_x,a1_e,a2_x,a2_e,b0_x,b0_e,b1_x,b1_e,b2_x,b
         s01$clock = clock;
         s2c$clock = clock;
         s$clock = clock;
-        c_x_wait$clock = clock;
-        c_e_wait$clock = clock;
-        p2_x_wait$clock = clock;
-        p2_e_wait$clock = clock;
+        p2_wait$clock = clock;
         p$0$clock = clock;
-        p$0$ax = a0_x;
-        p$0$ae = a0_e;
-        p$0$bx = b0_x;
-        p$0$be = b0_e;
+        p$0$valid_in = 1'b0;
         p$1$clock = clock;
-        p$1$ax = a1_x;
-        p$1$ae = a1_e;
-        p$1$bx = b1_x;
-        p$1$be = b1_e;
+        p$1$valid_in = 1'b0;
         p$2$clock = clock;
-        p$2$ax = a2_x;
-        p$2$ae = a2_e;
-        p$2$bx = b2_x;
-        p$2$be = b2_e;
-        s01$ax = p$0$x;
-        s01$ae = p$0$e;
-        s01$bx = p$1$x;
-        s01$be = p$1$e;
+        p$2$valid_in = 1'b0;
+        p$0$a = a0 & mask;
+        p$0$b = b0 & mask;
+        p$1$a = a1 & mask;
+        p$1$b = b1 & mask;
+        p$2$a = a2 & mask;
+        p$2$b = b2 & mask;
+        s01$a = p$0$y;
+        s01$b = p$1$y;
         s01$sub = 1'b0;
-        c_x_wait$d = c_x;
-        c_e_wait$d = c_e;
-        s2c$ax = p$2$x;
-        s2c$ae = p$2$e;
-        s2c$bx = c_x_wait$q;
-        s2c$be = c_e_wait$q;
+        s01$valid_in = 1'b0;
+        s2c$a = p$2$y;
+        s2c$b = c & mask;
         s2c$sub = 1'b0;
-        p2_x_wait$d = p$2$x;
-        p2_e_wait$d = p$2$e;
-        s$ax = s01$x;
-        s$ae = s01$e;
-        s$bx = p2_x_wait$q;
-        s$be = p2_e_wait$q;
+        s2c$valid_in = 1'b0;
+        p2_wait$d = p$2$y;
+        s$a = s01$y;
+        s$b = p2_wait$q;
         if (affine) begin
-            s$bx = s2c$x;
-            s$be = s2c$e;
+            s$b = s2c$y;
         end
         s$sub = 1'b0;
-        y_x = s$x;
-        y_e = s$e;
+        s$valid_in = 1'b0;
+        y = s$y;
     end
     
 endmodule // top$mb_0$0
 
 
-module top$mb_0$3(clock,a0_x,a0_e,a1_x,a1_e,a2_x,a2_e,b0_x,b0_e,b1_x,b1_e,b2_x,b2_e,c_x,c_e,y_x,y_e);
+module top$mb_0$3(clock,a0,a1,a2,b0,b1,b2,c,y);
     
     // Module arguments
     input wire  clock;
-    input wire  [31:0] a0_x;
-    input wire  [31:0] a0_e;
-    input wire  [31:0] a1_x;
-    input wire  [31:0] a1_e;
-    input wire  [31:0] a2_x;
-    input wire  [31:0] a2_e;
-    input wire  [31:0] b0_x;
-    input wire  [31:0] b0_e;
-    input wire  [31:0] b1_x;
-    input wire  [31:0] b1_e;
-    input wire  [31:0] b2_x;
-    input wire  [31:0] b2_e;
-    input wire  [31:0] c_x;
-    input wire  [31:0] c_e;
-    output reg  [31:0] y_x;
-    output reg  [31:0] y_e;
+    input wire  [31:0] a0;
+    input wire  [31:0] a1;
+    input wire  [31:0] a2;
+    input wire  [31:0] b0;
+    input wire  [31:0] b1;
+    input wire  [31:0] b2;
+    input wire  [31:0] c;
+    output reg  [31:0] y;
     
     // Constant declarations
     localparam  affine = 1'b1;
+    localparam  mask = 32'hffffffff;
     
     // Stub signals
     reg  p$0$clock;
-    reg  [31:0] p$0$ax;
-    reg  [31:0] p$0$ae;
-    reg  [31:0] p$0$bx;
-    reg  [31:0] p$0$be;
-    wire  [31:0] p$0$x;
-    wire  [31:0] p$0$e;
+    reg  [31:0] p$0$a;
+    reg  [31:0] p$0$b;
+    reg  p$0$valid_in;
+    wire  [31:0] p$0$y;
+    wire  p$0$valid_out;
     reg  p$1$clock;
-    reg  [31:0] p$1$ax;
-    reg  [31:0] p$1$ae;
-    reg  [31:0] p$1$bx;
-    reg  [31:0] p$1$be;
-    wire  [31:0] p$1$x;
-    wire  [31:0] p$1$e;
+    reg  [31:0] p$1$a;
+    reg  [31:0] p$1$b;
+    reg  p$1$valid_in;
+    wire  [31:0] p$1$y;
+    wire  p$1$valid_out;
     reg  p$2$clock;
-    reg  [31:0] p$2$ax;
-    reg  [31:0] p$2$ae;
-    reg  [31:0] p$2$bx;
-    reg  [31:0] p$2$be;
-    wire  [31:0] p$2$x;
-    wire  [31:0] p$2$e;
+    reg  [31:0] p$2$a;
+    reg  [31:0] p$2$b;
+    reg  p$2$valid_in;
+    wire  [31:0] p$2$y;
+    wire  p$2$valid_out;
     reg  s01$clock;
-    reg  [31:0] s01$ax;
-    reg  [31:0] s01$ae;
-    reg  [31:0] s01$bx;
-    reg  [31:0] s01$be;
+    reg  [31:0] s01$a;
+    reg  [31:0] s01$b;
     reg  s01$sub;
-    wire  [31:0] s01$x;
-    wire  [31:0] s01$e;
+    reg  s01$valid_in;
+    wire  [31:0] s01$y;
+    wire  s01$valid_out;
     reg  s2c$clock;
-    reg  [31:0] s2c$ax;
-    reg  [31:0] s2c$ae;
-    reg  [31:0] s2c$bx;
-    reg  [31:0] s2c$be;
+    reg  [31:0] s2c$a;
+    reg  [31:0] s2c$b;
     reg  s2c$sub;
-    wire  [31:0] s2c$x;
-    wire  [31:0] s2c$e;
+    reg  s2c$valid_in;
+    wire  [31:0] s2c$y;
+    wire  s2c$valid_out;
     reg  s$clock;
-    reg  [31:0] s$ax;
-    reg  [31:0] s$ae;
-    reg  [31:0] s$bx;
-    reg  [31:0] s$be;
+    reg  [31:0] s$a;
+    reg  [31:0] s$b;
     reg  s$sub;
-    wire  [31:0] s$x;
-    wire  [31:0] s$e;
-    reg  c_x_wait$clock;
-    reg  [31:0] c_x_wait$d;
-    wire  [31:0] c_x_wait$q;
-    reg  c_e_wait$clock;
-    reg  [31:0] c_e_wait$d;
-    wire  [31:0] c_e_wait$q;
-    reg  p2_x_wait$clock;
-    reg  [31:0] p2_x_wait$d;
-    wire  [31:0] p2_x_wait$q;
-    reg  p2_e_wait$clock;
-    reg  [31:0] p2_e_wait$d;
-    wire  [31:0] p2_e_wait$q;
+    reg  s$valid_in;
+    wire  [31:0] s$y;
+    wire  s$valid_out;
+    reg  p2_wait$clock;
+    reg  [31:0] p2_wait$d;
+    wire  [31:0] p2_wait$q;
     
     // Sub module instances
     top$edges$0$px_qz p$0(
         .clock(p$0$clock),
-        .ax(p$0$ax),
-        .ae(p$0$ae),
-        .bx(p$0$bx),
-        .be(p$0$be),
-        .x(p$0$x),
-        .e(p$0$e)
+        .a(p$0$a),
+        .b(p$0$b),
+        .valid_in(p$0$valid_in),
+        .y(p$0$y),
+        .valid_out(p$0$valid_out)
     );
     top$edges$0$px_qz p$1(
         .clock(p$1$clock),
-        .ax(p$1$ax),
-        .ae(p$1$ae),
-        .bx(p$1$bx),
-        .be(p$1$be),
-        .x(p$1$x),
-        .e(p$1$e)
+        .a(p$1$a),
+        .b(p$1$b),
+        .valid_in(p$1$valid_in),
+        .y(p$1$y),
+        .valid_out(p$1$valid_out)
     );
     top$edges$0$px_qz p$2(
         .clock(p$2$clock),
-        .ax(p$2$ax),
-        .ae(p$2$ae),
-        .bx(p$2$bx),
-        .be(p$2$be),
-        .x(p$2$x),
-        .e(p$2$e)
+        .a(p$2$a),
+        .b(p$2$b),
+        .valid_in(p$2$valid_in),
+        .y(p$2$y),
+        .valid_out(p$2$valid_out)
     );
     top$edges$0$a s01(
         .clock(s01$clock),
-        .ax(s01$ax),
-        .ae(s01$ae),
-        .bx(s01$bx),
-        .be(s01$be),
+        .a(s01$a),
+        .b(s01$b),
         .sub(s01$sub),
-        .x(s01$x),
-        .e(s01$e)
+        .valid_in(s01$valid_in),
+        .y(s01$y),
+        .valid_out(s01$valid_out)
     );
     top$edges$0$a s2c(
         .clock(s2c$clock),
-        .ax(s2c$ax),
-        .ae(s2c$ae),
-        .bx(s2c$bx),
-        .be(s2c$be),
+        .a(s2c$a),
+        .b(s2c$b),
         .sub(s2c$sub),
-        .x(s2c$x),
-        .e(s2c$e)
+        .valid_in(s2c$valid_in),
+        .y(s2c$y),
+        .valid_out(s2c$valid_out)
     );
     top$edges$0$a s(
         .clock(s$clock),
-        .ax(s$ax),
-        .ae(s$ae),
-        .bx(s$bx),
-        .be(s$be),
+        .a(s$a),
+        .b(s$b),
         .sub(s$sub),
-        .x(s$x),
-        .e(s$e)
+        .valid_in(s$valid_in),
+        .y(s$y),
+        .valid_out(s$valid_out)
     );
-    top$edges$0$pz_e_wait c_x_wait(
-        .clock(c_x_wait$clock),
-        .d(c_x_wait$d),
-        .q(c_x_wait$q)
-    );
-    top$edges$0$pz_e_wait c_e_wait(
-        .clock(c_e_wait$clock),
-        .d(c_e_wait$d),
-        .q(c_e_wait$q)
-    );
-    top$edges$0$rz_e_wait p2_x_wait(
-        .clock(p2_x_wait$clock),
-        .d(p2_x_wait$d),
-        .q(p2_x_wait$q)
-    );
-    top$edges$0$rz_e_wait p2_e_wait(
-        .clock(p2_e_wait$clock),
-        .d(p2_e_wait$d),
-        .q(p2_e_wait$q)
+    top$edges$0$brs_wait p2_wait(
+        .clock(p2_wait$clock),
+        .d(p2_wait$d),
+        .q(p2_wait$q)
     );
     
     // Update code
@@ -9827,555 +8218,357 @@ module top$mb_0$3(clock,a0_x,a0_e,a1_x,a1_e,a2_x,a2_e,b0_x,b0_e,b1_x,b1_e,b2_x,b
         s01$clock = clock;
         s2c$clock = clock;
         s$clock = clock;
-        c_x_wait$clock = clock;
-        c_e_wait$clock = clock;
-        p2_x_wait$clock = clock;
-        p2_e_wait$clock = clock;
+        p2_wait$clock = clock;
         p$0$clock = clock;
-        p$0$ax = a0_x;
-        p$0$ae = a0_e;
-        p$0$bx = b0_x;
-        p$0$be = b0_e;
+        p$0$valid_in = 1'b0;
         p$1$clock = clock;
-        p$1$ax = a1_x;
-        p$1$ae = a1_e;
-        p$1$bx = b1_x;
-        p$1$be = b1_e;
+        p$1$valid_in = 1'b0;
         p$2$clock = clock;
-        p$2$ax = a2_x;
-        p$2$ae = a2_e;
-        p$2$bx = b2_x;
-        p$2$be = b2_e;
-        s01$ax = p$0$x;
-        s01$ae = p$0$e;
-        s01$bx = p$1$x;
-        s01$be = p$1$e;
+        p$2$valid_in = 1'b0;
+        p$0$a = a0 & mask;
+        p$0$b = b0 & mask;
+        p$1$a = a1 & mask;
+        p$1$b = b1 & mask;
+        p$2$a = a2 & mask;
+        p$2$b = b2 & mask;
+        s01$a = p$0$y;
+        s01$b = p$1$y;
         s01$sub = 1'b0;
-        c_x_wait$d = c_x;
-        c_e_wait$d = c_e;
-        s2c$ax = p$2$x;
-        s2c$ae = p$2$e;
-        s2c$bx = c_x_wait$q;
-        s2c$be = c_e_wait$q;
+        s01$valid_in = 1'b0;
+        s2c$a = p$2$y;
+        s2c$b = c & mask;
         s2c$sub = 1'b0;
-        p2_x_wait$d = p$2$x;
-        p2_e_wait$d = p$2$e;
-        s$ax = s01$x;
-        s$ae = s01$e;
-        s$bx = p2_x_wait$q;
-        s$be = p2_e_wait$q;
+        s2c$valid_in = 1'b0;
+        p2_wait$d = p$2$y;
+        s$a = s01$y;
+        s$b = p2_wait$q;
         if (affine) begin
-            s$bx = s2c$x;
-            s$be = s2c$e;
+            s$b = s2c$y;
         end
         s$sub = 1'b0;
-        y_x = s$x;
-        y_e = s$e;
+        s$valid_in = 1'b0;
+        y = s$y;
     end
     
 endmodule // top$mb_0$3
 
 
-module top$ok_wait(clock,d,q);
+module top$mg_0$0(clock,a0,a1,a2,b0,b1,b2,c,y);
     
     // Module arguments
     input wire  clock;
-    input wire  d;
-    output reg  q;
+    input wire  [31:0] a0;
+    input wire  [31:0] a1;
+    input wire  [31:0] a2;
+    input wire  [31:0] b0;
+    input wire  [31:0] b1;
+    input wire  [31:0] b2;
+    input wire  [31:0] c;
+    output reg  [31:0] y;
+    
+    // Constant declarations
+    localparam  affine = 1'b0;
+    localparam  mask = 32'h7fffffff;
     
     // Stub signals
-    reg  line$0$d;
-    wire  line$0$q;
-    reg  line$0$clock;
-    reg  line$1$d;
-    wire  line$1$q;
-    reg  line$1$clock;
-    reg  line$2$d;
-    wire  line$2$q;
-    reg  line$2$clock;
-    reg  line$3$d;
-    wire  line$3$q;
-    reg  line$3$clock;
-    reg  line$4$d;
-    wire  line$4$q;
-    reg  line$4$clock;
-    reg  line$5$d;
-    wire  line$5$q;
-    reg  line$5$clock;
-    reg  line$6$d;
-    wire  line$6$q;
-    reg  line$6$clock;
-    reg  line$7$d;
-    wire  line$7$q;
-    reg  line$7$clock;
-    reg  line$8$d;
-    wire  line$8$q;
-    reg  line$8$clock;
-    reg  line$9$d;
-    wire  line$9$q;
-    reg  line$9$clock;
-    reg  line$10$d;
-    wire  line$10$q;
-    reg  line$10$clock;
-    reg  line$11$d;
-    wire  line$11$q;
-    reg  line$11$clock;
-    reg  line$12$d;
-    wire  line$12$q;
-    reg  line$12$clock;
-    reg  line$13$d;
-    wire  line$13$q;
-    reg  line$13$clock;
-    reg  line$14$d;
-    wire  line$14$q;
-    reg  line$14$clock;
-    reg  line$15$d;
-    wire  line$15$q;
-    reg  line$15$clock;
-    reg  line$16$d;
-    wire  line$16$q;
-    reg  line$16$clock;
-    reg  line$17$d;
-    wire  line$17$q;
-    reg  line$17$clock;
-    reg  line$18$d;
-    wire  line$18$q;
-    reg  line$18$clock;
-    reg  line$19$d;
-    wire  line$19$q;
-    reg  line$19$clock;
-    reg  line$20$d;
-    wire  line$20$q;
-    reg  line$20$clock;
-    reg  line$21$d;
-    wire  line$21$q;
-    reg  line$21$clock;
-    reg  line$22$d;
-    wire  line$22$q;
-    reg  line$22$clock;
-    reg  line$23$d;
-    wire  line$23$q;
-    reg  line$23$clock;
-    reg  line$24$d;
-    wire  line$24$q;
-    reg  line$24$clock;
-    reg  line$25$d;
-    wire  line$25$q;
-    reg  line$25$clock;
-    reg  line$26$d;
-    wire  line$26$q;
-    reg  line$26$clock;
-    reg  line$27$d;
-    wire  line$27$q;
-    reg  line$27$clock;
-    reg  line$28$d;
-    wire  line$28$q;
-    reg  line$28$clock;
-    reg  line$29$d;
-    wire  line$29$q;
-    reg  line$29$clock;
-    reg  line$30$d;
-    wire  line$30$q;
-    reg  line$30$clock;
-    reg  line$31$d;
-    wire  line$31$q;
-    reg  line$31$clock;
-    reg  line$32$d;
-    wire  line$32$q;
-    reg  line$32$clock;
-    reg  line$33$d;
-    wire  line$33$q;
-    reg  line$33$clock;
-    reg  line$34$d;
-    wire  line$34$q;
-    reg  line$34$clock;
-    reg  line$35$d;
-    wire  line$35$q;
-    reg  line$35$clock;
-    reg  line$36$d;
-    wire  line$36$q;
-    reg  line$36$clock;
-    reg  line$37$d;
-    wire  line$37$q;
-    reg  line$37$clock;
-    reg  line$38$d;
-    wire  line$38$q;
-    reg  line$38$clock;
-    reg  line$39$d;
-    wire  line$39$q;
-    reg  line$39$clock;
-    reg  line$40$d;
-    wire  line$40$q;
-    reg  line$40$clock;
-    reg  line$41$d;
-    wire  line$41$q;
-    reg  line$41$clock;
-    reg  line$42$d;
-    wire  line$42$q;
-    reg  line$42$clock;
-    reg  line$43$d;
-    wire  line$43$q;
-    reg  line$43$clock;
+    reg  p$0$clock;
+    reg  [31:0] p$0$a;
+    reg  [31:0] p$0$b;
+    reg  p$0$valid_in;
+    wire  [31:0] p$0$y;
+    wire  p$0$valid_out;
+    reg  p$1$clock;
+    reg  [31:0] p$1$a;
+    reg  [31:0] p$1$b;
+    reg  p$1$valid_in;
+    wire  [31:0] p$1$y;
+    wire  p$1$valid_out;
+    reg  p$2$clock;
+    reg  [31:0] p$2$a;
+    reg  [31:0] p$2$b;
+    reg  p$2$valid_in;
+    wire  [31:0] p$2$y;
+    wire  p$2$valid_out;
+    reg  s01$clock;
+    reg  [31:0] s01$a;
+    reg  [31:0] s01$b;
+    reg  s01$sub;
+    reg  s01$valid_in;
+    wire  [31:0] s01$y;
+    wire  s01$valid_out;
+    reg  s2c$clock;
+    reg  [31:0] s2c$a;
+    reg  [31:0] s2c$b;
+    reg  s2c$sub;
+    reg  s2c$valid_in;
+    wire  [31:0] s2c$y;
+    wire  s2c$valid_out;
+    reg  s$clock;
+    reg  [31:0] s$a;
+    reg  [31:0] s$b;
+    reg  s$sub;
+    reg  s$valid_in;
+    wire  [31:0] s$y;
+    wire  s$valid_out;
+    reg  p2_wait$clock;
+    reg  [31:0] p2_wait$d;
+    wire  [31:0] p2_wait$q;
     
     // Sub module instances
-    top$edges$0$a$add$s1_eff_sub line$0(
-        .d(line$0$d),
-        .q(line$0$q),
-        .clock(line$0$clock)
+    top$af p$0(
+        .clock(p$0$clock),
+        .a(p$0$a),
+        .b(p$0$b),
+        .valid_in(p$0$valid_in),
+        .y(p$0$y),
+        .valid_out(p$0$valid_out)
     );
-    top$edges$0$a$add$s1_eff_sub line$1(
-        .d(line$1$d),
-        .q(line$1$q),
-        .clock(line$1$clock)
+    top$af p$1(
+        .clock(p$1$clock),
+        .a(p$1$a),
+        .b(p$1$b),
+        .valid_in(p$1$valid_in),
+        .y(p$1$y),
+        .valid_out(p$1$valid_out)
     );
-    top$edges$0$a$add$s1_eff_sub line$2(
-        .d(line$2$d),
-        .q(line$2$q),
-        .clock(line$2$clock)
+    top$af p$2(
+        .clock(p$2$clock),
+        .a(p$2$a),
+        .b(p$2$b),
+        .valid_in(p$2$valid_in),
+        .y(p$2$y),
+        .valid_out(p$2$valid_out)
     );
-    top$edges$0$a$add$s1_eff_sub line$3(
-        .d(line$3$d),
-        .q(line$3$q),
-        .clock(line$3$clock)
+    top$aerr s01(
+        .clock(s01$clock),
+        .a(s01$a),
+        .b(s01$b),
+        .sub(s01$sub),
+        .valid_in(s01$valid_in),
+        .y(s01$y),
+        .valid_out(s01$valid_out)
     );
-    top$edges$0$a$add$s1_eff_sub line$4(
-        .d(line$4$d),
-        .q(line$4$q),
-        .clock(line$4$clock)
+    top$aerr s2c(
+        .clock(s2c$clock),
+        .a(s2c$a),
+        .b(s2c$b),
+        .sub(s2c$sub),
+        .valid_in(s2c$valid_in),
+        .y(s2c$y),
+        .valid_out(s2c$valid_out)
     );
-    top$edges$0$a$add$s1_eff_sub line$5(
-        .d(line$5$d),
-        .q(line$5$q),
-        .clock(line$5$clock)
+    top$aerr s(
+        .clock(s$clock),
+        .a(s$a),
+        .b(s$b),
+        .sub(s$sub),
+        .valid_in(s$valid_in),
+        .y(s$y),
+        .valid_out(s$valid_out)
     );
-    top$edges$0$a$add$s1_eff_sub line$6(
-        .d(line$6$d),
-        .q(line$6$q),
-        .clock(line$6$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$7(
-        .d(line$7$d),
-        .q(line$7$q),
-        .clock(line$7$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$8(
-        .d(line$8$d),
-        .q(line$8$q),
-        .clock(line$8$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$9(
-        .d(line$9$d),
-        .q(line$9$q),
-        .clock(line$9$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$10(
-        .d(line$10$d),
-        .q(line$10$q),
-        .clock(line$10$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$11(
-        .d(line$11$d),
-        .q(line$11$q),
-        .clock(line$11$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$12(
-        .d(line$12$d),
-        .q(line$12$q),
-        .clock(line$12$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$13(
-        .d(line$13$d),
-        .q(line$13$q),
-        .clock(line$13$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$14(
-        .d(line$14$d),
-        .q(line$14$q),
-        .clock(line$14$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$15(
-        .d(line$15$d),
-        .q(line$15$q),
-        .clock(line$15$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$16(
-        .d(line$16$d),
-        .q(line$16$q),
-        .clock(line$16$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$17(
-        .d(line$17$d),
-        .q(line$17$q),
-        .clock(line$17$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$18(
-        .d(line$18$d),
-        .q(line$18$q),
-        .clock(line$18$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$19(
-        .d(line$19$d),
-        .q(line$19$q),
-        .clock(line$19$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$20(
-        .d(line$20$d),
-        .q(line$20$q),
-        .clock(line$20$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$21(
-        .d(line$21$d),
-        .q(line$21$q),
-        .clock(line$21$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$22(
-        .d(line$22$d),
-        .q(line$22$q),
-        .clock(line$22$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$23(
-        .d(line$23$d),
-        .q(line$23$q),
-        .clock(line$23$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$24(
-        .d(line$24$d),
-        .q(line$24$q),
-        .clock(line$24$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$25(
-        .d(line$25$d),
-        .q(line$25$q),
-        .clock(line$25$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$26(
-        .d(line$26$d),
-        .q(line$26$q),
-        .clock(line$26$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$27(
-        .d(line$27$d),
-        .q(line$27$q),
-        .clock(line$27$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$28(
-        .d(line$28$d),
-        .q(line$28$q),
-        .clock(line$28$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$29(
-        .d(line$29$d),
-        .q(line$29$q),
-        .clock(line$29$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$30(
-        .d(line$30$d),
-        .q(line$30$q),
-        .clock(line$30$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$31(
-        .d(line$31$d),
-        .q(line$31$q),
-        .clock(line$31$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$32(
-        .d(line$32$d),
-        .q(line$32$q),
-        .clock(line$32$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$33(
-        .d(line$33$d),
-        .q(line$33$q),
-        .clock(line$33$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$34(
-        .d(line$34$d),
-        .q(line$34$q),
-        .clock(line$34$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$35(
-        .d(line$35$d),
-        .q(line$35$q),
-        .clock(line$35$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$36(
-        .d(line$36$d),
-        .q(line$36$q),
-        .clock(line$36$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$37(
-        .d(line$37$d),
-        .q(line$37$q),
-        .clock(line$37$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$38(
-        .d(line$38$d),
-        .q(line$38$q),
-        .clock(line$38$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$39(
-        .d(line$39$d),
-        .q(line$39$q),
-        .clock(line$39$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$40(
-        .d(line$40$d),
-        .q(line$40$q),
-        .clock(line$40$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$41(
-        .d(line$41$d),
-        .q(line$41$q),
-        .clock(line$41$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$42(
-        .d(line$42$d),
-        .q(line$42$q),
-        .clock(line$42$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$43(
-        .d(line$43$d),
-        .q(line$43$q),
-        .clock(line$43$clock)
+    top$edges$0$brs_wait p2_wait(
+        .clock(p2_wait$clock),
+        .d(p2_wait$d),
+        .q(p2_wait$q)
     );
     
     // Update code
     always @(*) begin
-        line$0$clock = clock;
-        line$0$d = d;
-        line$1$clock = clock;
-        line$1$d = d;
-        line$2$clock = clock;
-        line$2$d = d;
-        line$3$clock = clock;
-        line$3$d = d;
-        line$4$clock = clock;
-        line$4$d = d;
-        line$5$clock = clock;
-        line$5$d = d;
-        line$6$clock = clock;
-        line$6$d = d;
-        line$7$clock = clock;
-        line$7$d = d;
-        line$8$clock = clock;
-        line$8$d = d;
-        line$9$clock = clock;
-        line$9$d = d;
-        line$10$clock = clock;
-        line$10$d = d;
-        line$11$clock = clock;
-        line$11$d = d;
-        line$12$clock = clock;
-        line$12$d = d;
-        line$13$clock = clock;
-        line$13$d = d;
-        line$14$clock = clock;
-        line$14$d = d;
-        line$15$clock = clock;
-        line$15$d = d;
-        line$16$clock = clock;
-        line$16$d = d;
-        line$17$clock = clock;
-        line$17$d = d;
-        line$18$clock = clock;
-        line$18$d = d;
-        line$19$clock = clock;
-        line$19$d = d;
-        line$20$clock = clock;
-        line$20$d = d;
-        line$21$clock = clock;
-        line$21$d = d;
-        line$22$clock = clock;
-        line$22$d = d;
-        line$23$clock = clock;
-        line$23$d = d;
-        line$24$clock = clock;
-        line$24$d = d;
-        line$25$clock = clock;
-        line$25$d = d;
-        line$26$clock = clock;
-        line$26$d = d;
-        line$27$clock = clock;
-        line$27$d = d;
-        line$28$clock = clock;
-        line$28$d = d;
-        line$29$clock = clock;
-        line$29$d = d;
-        line$30$clock = clock;
-        line$30$d = d;
-        line$31$clock = clock;
-        line$31$d = d;
-        line$32$clock = clock;
-        line$32$d = d;
-        line$33$clock = clock;
-        line$33$d = d;
-        line$34$clock = clock;
-        line$34$d = d;
-        line$35$clock = clock;
-        line$35$d = d;
-        line$36$clock = clock;
-        line$36$d = d;
-        line$37$clock = clock;
-        line$37$d = d;
-        line$38$clock = clock;
-        line$38$d = d;
-        line$39$clock = clock;
-        line$39$d = d;
-        line$40$clock = clock;
-        line$40$d = d;
-        line$41$clock = clock;
-        line$41$d = d;
-        line$42$clock = clock;
-        line$42$d = d;
-        line$43$clock = clock;
-        line$43$d = d;
-        line$0$d = line$1$q;
-        line$1$d = line$2$q;
-        line$2$d = line$3$q;
-        line$3$d = line$4$q;
-        line$4$d = line$5$q;
-        line$5$d = line$6$q;
-        line$6$d = line$7$q;
-        line$7$d = line$8$q;
-        line$8$d = line$9$q;
-        line$9$d = line$10$q;
-        line$10$d = line$11$q;
-        line$11$d = line$12$q;
-        line$12$d = line$13$q;
-        line$13$d = line$14$q;
-        line$14$d = line$15$q;
-        line$15$d = line$16$q;
-        line$16$d = line$17$q;
-        line$17$d = line$18$q;
-        line$18$d = line$19$q;
-        line$19$d = line$20$q;
-        line$20$d = line$21$q;
-        line$21$d = line$22$q;
-        line$22$d = line$23$q;
-        line$23$d = line$24$q;
-        line$24$d = line$25$q;
-        line$25$d = line$26$q;
-        line$26$d = line$27$q;
-        line$27$d = line$28$q;
-        line$28$d = line$29$q;
-        line$29$d = line$30$q;
-        line$30$d = line$31$q;
-        line$31$d = line$32$q;
-        line$32$d = line$33$q;
-        line$33$d = line$34$q;
-        line$34$d = line$35$q;
-        line$35$d = line$36$q;
-        line$36$d = line$37$q;
-        line$37$d = line$38$q;
-        line$38$d = line$39$q;
-        line$39$d = line$40$q;
-        line$40$d = line$41$q;
-        line$41$d = line$42$q;
-        line$42$d = line$43$q;
-        q = line$0$q;
+        s01$clock = clock;
+        s2c$clock = clock;
+        s$clock = clock;
+        p2_wait$clock = clock;
+        p$0$clock = clock;
+        p$0$valid_in = 1'b0;
+        p$1$clock = clock;
+        p$1$valid_in = 1'b0;
+        p$2$clock = clock;
+        p$2$valid_in = 1'b0;
+        p$0$a = a0 & mask;
+        p$0$b = b0 & mask;
+        p$1$a = a1 & mask;
+        p$1$b = b1 & mask;
+        p$2$a = a2 & mask;
+        p$2$b = b2 & mask;
+        s01$a = p$0$y;
+        s01$b = p$1$y;
+        s01$sub = 1'b0;
+        s01$valid_in = 1'b0;
+        s2c$a = p$2$y;
+        s2c$b = c & mask;
+        s2c$sub = 1'b0;
+        s2c$valid_in = 1'b0;
+        p2_wait$d = p$2$y;
+        s$a = s01$y;
+        s$b = p2_wait$q;
+        if (affine) begin
+            s$b = s2c$y;
+        end
+        s$sub = 1'b0;
+        s$valid_in = 1'b0;
+        y = s$y;
     end
     
-endmodule // top$ok_wait
+endmodule // top$mg_0$0
+
+
+module top$mg_0$3(clock,a0,a1,a2,b0,b1,b2,c,y);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] a0;
+    input wire  [31:0] a1;
+    input wire  [31:0] a2;
+    input wire  [31:0] b0;
+    input wire  [31:0] b1;
+    input wire  [31:0] b2;
+    input wire  [31:0] c;
+    output reg  [31:0] y;
+    
+    // Constant declarations
+    localparam  affine = 1'b1;
+    localparam  mask = 32'h7fffffff;
+    
+    // Stub signals
+    reg  p$0$clock;
+    reg  [31:0] p$0$a;
+    reg  [31:0] p$0$b;
+    reg  p$0$valid_in;
+    wire  [31:0] p$0$y;
+    wire  p$0$valid_out;
+    reg  p$1$clock;
+    reg  [31:0] p$1$a;
+    reg  [31:0] p$1$b;
+    reg  p$1$valid_in;
+    wire  [31:0] p$1$y;
+    wire  p$1$valid_out;
+    reg  p$2$clock;
+    reg  [31:0] p$2$a;
+    reg  [31:0] p$2$b;
+    reg  p$2$valid_in;
+    wire  [31:0] p$2$y;
+    wire  p$2$valid_out;
+    reg  s01$clock;
+    reg  [31:0] s01$a;
+    reg  [31:0] s01$b;
+    reg  s01$sub;
+    reg  s01$valid_in;
+    wire  [31:0] s01$y;
+    wire  s01$valid_out;
+    reg  s2c$clock;
+    reg  [31:0] s2c$a;
+    reg  [31:0] s2c$b;
+    reg  s2c$sub;
+    reg  s2c$valid_in;
+    wire  [31:0] s2c$y;
+    wire  s2c$valid_out;
+    reg  s$clock;
+    reg  [31:0] s$a;
+    reg  [31:0] s$b;
+    reg  s$sub;
+    reg  s$valid_in;
+    wire  [31:0] s$y;
+    wire  s$valid_out;
+    reg  p2_wait$clock;
+    reg  [31:0] p2_wait$d;
+    wire  [31:0] p2_wait$q;
+    
+    // Sub module instances
+    top$af p$0(
+        .clock(p$0$clock),
+        .a(p$0$a),
+        .b(p$0$b),
+        .valid_in(p$0$valid_in),
+        .y(p$0$y),
+        .valid_out(p$0$valid_out)
+    );
+    top$af p$1(
+        .clock(p$1$clock),
+        .a(p$1$a),
+        .b(p$1$b),
+        .valid_in(p$1$valid_in),
+        .y(p$1$y),
+        .valid_out(p$1$valid_out)
+    );
+    top$af p$2(
+        .clock(p$2$clock),
+        .a(p$2$a),
+        .b(p$2$b),
+        .valid_in(p$2$valid_in),
+        .y(p$2$y),
+        .valid_out(p$2$valid_out)
+    );
+    top$aerr s01(
+        .clock(s01$clock),
+        .a(s01$a),
+        .b(s01$b),
+        .sub(s01$sub),
+        .valid_in(s01$valid_in),
+        .y(s01$y),
+        .valid_out(s01$valid_out)
+    );
+    top$aerr s2c(
+        .clock(s2c$clock),
+        .a(s2c$a),
+        .b(s2c$b),
+        .sub(s2c$sub),
+        .valid_in(s2c$valid_in),
+        .y(s2c$y),
+        .valid_out(s2c$valid_out)
+    );
+    top$aerr s(
+        .clock(s$clock),
+        .a(s$a),
+        .b(s$b),
+        .sub(s$sub),
+        .valid_in(s$valid_in),
+        .y(s$y),
+        .valid_out(s$valid_out)
+    );
+    top$edges$0$brs_wait p2_wait(
+        .clock(p2_wait$clock),
+        .d(p2_wait$d),
+        .q(p2_wait$q)
+    );
+    
+    // Update code
+    always @(*) begin
+        s01$clock = clock;
+        s2c$clock = clock;
+        s$clock = clock;
+        p2_wait$clock = clock;
+        p$0$clock = clock;
+        p$0$valid_in = 1'b0;
+        p$1$clock = clock;
+        p$1$valid_in = 1'b0;
+        p$2$clock = clock;
+        p$2$valid_in = 1'b0;
+        p$0$a = a0 & mask;
+        p$0$b = b0 & mask;
+        p$1$a = a1 & mask;
+        p$1$b = b1 & mask;
+        p$2$a = a2 & mask;
+        p$2$b = b2 & mask;
+        s01$a = p$0$y;
+        s01$b = p$1$y;
+        s01$sub = 1'b0;
+        s01$valid_in = 1'b0;
+        s2c$a = p$2$y;
+        s2c$b = c & mask;
+        s2c$sub = 1'b0;
+        s2c$valid_in = 1'b0;
+        p2_wait$d = p$2$y;
+        s$a = s01$y;
+        s$b = p2_wait$q;
+        if (affine) begin
+            s$b = s2c$y;
+        end
+        s$sub = 1'b0;
+        s$valid_in = 1'b0;
+        y = s$y;
+    end
+    
+endmodule // top$mg_0$3
 
 
 module top$tag_wait(clock,d,q);
@@ -10536,865 +8729,257 @@ module top$tag_wait(clock,d,q);
     reg  [31:0] line$49$d;
     wire  [31:0] line$49$q;
     reg  line$49$clock;
-    reg  [31:0] line$50$d;
-    wire  [31:0] line$50$q;
-    reg  line$50$clock;
-    reg  [31:0] line$51$d;
-    wire  [31:0] line$51$q;
-    reg  line$51$clock;
-    reg  [31:0] line$52$d;
-    wire  [31:0] line$52$q;
-    reg  line$52$clock;
-    reg  [31:0] line$53$d;
-    wire  [31:0] line$53$q;
-    reg  line$53$clock;
-    reg  [31:0] line$54$d;
-    wire  [31:0] line$54$q;
-    reg  line$54$clock;
-    reg  [31:0] line$55$d;
-    wire  [31:0] line$55$q;
-    reg  line$55$clock;
-    reg  [31:0] line$56$d;
-    wire  [31:0] line$56$q;
-    reg  line$56$clock;
-    reg  [31:0] line$57$d;
-    wire  [31:0] line$57$q;
-    reg  line$57$clock;
-    reg  [31:0] line$58$d;
-    wire  [31:0] line$58$q;
-    reg  line$58$clock;
-    reg  [31:0] line$59$d;
-    wire  [31:0] line$59$q;
-    reg  line$59$clock;
-    reg  [31:0] line$60$d;
-    wire  [31:0] line$60$q;
-    reg  line$60$clock;
-    reg  [31:0] line$61$d;
-    wire  [31:0] line$61$q;
-    reg  line$61$clock;
-    reg  [31:0] line$62$d;
-    wire  [31:0] line$62$q;
-    reg  line$62$clock;
-    reg  [31:0] line$63$d;
-    wire  [31:0] line$63$q;
-    reg  line$63$clock;
-    reg  [31:0] line$64$d;
-    wire  [31:0] line$64$q;
-    reg  line$64$clock;
-    reg  [31:0] line$65$d;
-    wire  [31:0] line$65$q;
-    reg  line$65$clock;
-    reg  [31:0] line$66$d;
-    wire  [31:0] line$66$q;
-    reg  line$66$clock;
-    reg  [31:0] line$67$d;
-    wire  [31:0] line$67$q;
-    reg  line$67$clock;
-    reg  [31:0] line$68$d;
-    wire  [31:0] line$68$q;
-    reg  line$68$clock;
-    reg  [31:0] line$69$d;
-    wire  [31:0] line$69$q;
-    reg  line$69$clock;
-    reg  [31:0] line$70$d;
-    wire  [31:0] line$70$q;
-    reg  line$70$clock;
-    reg  [31:0] line$71$d;
-    wire  [31:0] line$71$q;
-    reg  line$71$clock;
-    reg  [31:0] line$72$d;
-    wire  [31:0] line$72$q;
-    reg  line$72$clock;
-    reg  [31:0] line$73$d;
-    wire  [31:0] line$73$q;
-    reg  line$73$clock;
-    reg  [31:0] line$74$d;
-    wire  [31:0] line$74$q;
-    reg  line$74$clock;
-    reg  [31:0] line$75$d;
-    wire  [31:0] line$75$q;
-    reg  line$75$clock;
-    reg  [31:0] line$76$d;
-    wire  [31:0] line$76$q;
-    reg  line$76$clock;
-    reg  [31:0] line$77$d;
-    wire  [31:0] line$77$q;
-    reg  line$77$clock;
-    reg  [31:0] line$78$d;
-    wire  [31:0] line$78$q;
-    reg  line$78$clock;
-    reg  [31:0] line$79$d;
-    wire  [31:0] line$79$q;
-    reg  line$79$clock;
-    reg  [31:0] line$80$d;
-    wire  [31:0] line$80$q;
-    reg  line$80$clock;
-    reg  [31:0] line$81$d;
-    wire  [31:0] line$81$q;
-    reg  line$81$clock;
-    reg  [31:0] line$82$d;
-    wire  [31:0] line$82$q;
-    reg  line$82$clock;
-    reg  [31:0] line$83$d;
-    wire  [31:0] line$83$q;
-    reg  line$83$clock;
-    reg  [31:0] line$84$d;
-    wire  [31:0] line$84$q;
-    reg  line$84$clock;
-    reg  [31:0] line$85$d;
-    wire  [31:0] line$85$q;
-    reg  line$85$clock;
-    reg  [31:0] line$86$d;
-    wire  [31:0] line$86$q;
-    reg  line$86$clock;
-    reg  [31:0] line$87$d;
-    wire  [31:0] line$87$q;
-    reg  line$87$clock;
-    reg  [31:0] line$88$d;
-    wire  [31:0] line$88$q;
-    reg  line$88$clock;
-    reg  [31:0] line$89$d;
-    wire  [31:0] line$89$q;
-    reg  line$89$clock;
-    reg  [31:0] line$90$d;
-    wire  [31:0] line$90$q;
-    reg  line$90$clock;
-    reg  [31:0] line$91$d;
-    wire  [31:0] line$91$q;
-    reg  line$91$clock;
-    reg  [31:0] line$92$d;
-    wire  [31:0] line$92$q;
-    reg  line$92$clock;
-    reg  [31:0] line$93$d;
-    wire  [31:0] line$93$q;
-    reg  line$93$clock;
-    reg  [31:0] line$94$d;
-    wire  [31:0] line$94$q;
-    reg  line$94$clock;
-    reg  [31:0] line$95$d;
-    wire  [31:0] line$95$q;
-    reg  line$95$clock;
-    reg  [31:0] line$96$d;
-    wire  [31:0] line$96$q;
-    reg  line$96$clock;
-    reg  [31:0] line$97$d;
-    wire  [31:0] line$97$q;
-    reg  line$97$clock;
-    reg  [31:0] line$98$d;
-    wire  [31:0] line$98$q;
-    reg  line$98$clock;
-    reg  [31:0] line$99$d;
-    wire  [31:0] line$99$q;
-    reg  line$99$clock;
-    reg  [31:0] line$100$d;
-    wire  [31:0] line$100$q;
-    reg  line$100$clock;
-    reg  [31:0] line$101$d;
-    wire  [31:0] line$101$q;
-    reg  line$101$clock;
-    reg  [31:0] line$102$d;
-    wire  [31:0] line$102$q;
-    reg  line$102$clock;
-    reg  [31:0] line$103$d;
-    wire  [31:0] line$103$q;
-    reg  line$103$clock;
-    reg  [31:0] line$104$d;
-    wire  [31:0] line$104$q;
-    reg  line$104$clock;
-    reg  [31:0] line$105$d;
-    wire  [31:0] line$105$q;
-    reg  line$105$clock;
-    reg  [31:0] line$106$d;
-    wire  [31:0] line$106$q;
-    reg  line$106$clock;
-    reg  [31:0] line$107$d;
-    wire  [31:0] line$107$q;
-    reg  line$107$clock;
-    reg  [31:0] line$108$d;
-    wire  [31:0] line$108$q;
-    reg  line$108$clock;
-    reg  [31:0] line$109$d;
-    wire  [31:0] line$109$q;
-    reg  line$109$clock;
-    reg  [31:0] line$110$d;
-    wire  [31:0] line$110$q;
-    reg  line$110$clock;
-    reg  [31:0] line$111$d;
-    wire  [31:0] line$111$q;
-    reg  line$111$clock;
-    reg  [31:0] line$112$d;
-    wire  [31:0] line$112$q;
-    reg  line$112$clock;
-    reg  [31:0] line$113$d;
-    wire  [31:0] line$113$q;
-    reg  line$113$clock;
-    reg  [31:0] line$114$d;
-    wire  [31:0] line$114$q;
-    reg  line$114$clock;
-    reg  [31:0] line$115$d;
-    wire  [31:0] line$115$q;
-    reg  line$115$clock;
-    reg  [31:0] line$116$d;
-    wire  [31:0] line$116$q;
-    reg  line$116$clock;
-    reg  [31:0] line$117$d;
-    wire  [31:0] line$117$q;
-    reg  line$117$clock;
-    reg  [31:0] line$118$d;
-    wire  [31:0] line$118$q;
-    reg  line$118$clock;
-    reg  [31:0] line$119$d;
-    wire  [31:0] line$119$q;
-    reg  line$119$clock;
-    reg  [31:0] line$120$d;
-    wire  [31:0] line$120$q;
-    reg  line$120$clock;
-    reg  [31:0] line$121$d;
-    wire  [31:0] line$121$q;
-    reg  line$121$clock;
-    reg  [31:0] line$122$d;
-    wire  [31:0] line$122$q;
-    reg  line$122$clock;
-    reg  [31:0] line$123$d;
-    wire  [31:0] line$123$q;
-    reg  line$123$clock;
-    reg  [31:0] line$124$d;
-    wire  [31:0] line$124$q;
-    reg  line$124$clock;
-    reg  [31:0] line$125$d;
-    wire  [31:0] line$125$q;
-    reg  line$125$clock;
     
     // Sub module instances
-    top$edges$0$a$add$s3_y line$0(
+    top$aerr$s3_y line$0(
         .d(line$0$d),
         .q(line$0$q),
         .clock(line$0$clock)
     );
-    top$edges$0$a$add$s3_y line$1(
+    top$aerr$s3_y line$1(
         .d(line$1$d),
         .q(line$1$q),
         .clock(line$1$clock)
     );
-    top$edges$0$a$add$s3_y line$2(
+    top$aerr$s3_y line$2(
         .d(line$2$d),
         .q(line$2$q),
         .clock(line$2$clock)
     );
-    top$edges$0$a$add$s3_y line$3(
+    top$aerr$s3_y line$3(
         .d(line$3$d),
         .q(line$3$q),
         .clock(line$3$clock)
     );
-    top$edges$0$a$add$s3_y line$4(
+    top$aerr$s3_y line$4(
         .d(line$4$d),
         .q(line$4$q),
         .clock(line$4$clock)
     );
-    top$edges$0$a$add$s3_y line$5(
+    top$aerr$s3_y line$5(
         .d(line$5$d),
         .q(line$5$q),
         .clock(line$5$clock)
     );
-    top$edges$0$a$add$s3_y line$6(
+    top$aerr$s3_y line$6(
         .d(line$6$d),
         .q(line$6$q),
         .clock(line$6$clock)
     );
-    top$edges$0$a$add$s3_y line$7(
+    top$aerr$s3_y line$7(
         .d(line$7$d),
         .q(line$7$q),
         .clock(line$7$clock)
     );
-    top$edges$0$a$add$s3_y line$8(
+    top$aerr$s3_y line$8(
         .d(line$8$d),
         .q(line$8$q),
         .clock(line$8$clock)
     );
-    top$edges$0$a$add$s3_y line$9(
+    top$aerr$s3_y line$9(
         .d(line$9$d),
         .q(line$9$q),
         .clock(line$9$clock)
     );
-    top$edges$0$a$add$s3_y line$10(
+    top$aerr$s3_y line$10(
         .d(line$10$d),
         .q(line$10$q),
         .clock(line$10$clock)
     );
-    top$edges$0$a$add$s3_y line$11(
+    top$aerr$s3_y line$11(
         .d(line$11$d),
         .q(line$11$q),
         .clock(line$11$clock)
     );
-    top$edges$0$a$add$s3_y line$12(
+    top$aerr$s3_y line$12(
         .d(line$12$d),
         .q(line$12$q),
         .clock(line$12$clock)
     );
-    top$edges$0$a$add$s3_y line$13(
+    top$aerr$s3_y line$13(
         .d(line$13$d),
         .q(line$13$q),
         .clock(line$13$clock)
     );
-    top$edges$0$a$add$s3_y line$14(
+    top$aerr$s3_y line$14(
         .d(line$14$d),
         .q(line$14$q),
         .clock(line$14$clock)
     );
-    top$edges$0$a$add$s3_y line$15(
+    top$aerr$s3_y line$15(
         .d(line$15$d),
         .q(line$15$q),
         .clock(line$15$clock)
     );
-    top$edges$0$a$add$s3_y line$16(
+    top$aerr$s3_y line$16(
         .d(line$16$d),
         .q(line$16$q),
         .clock(line$16$clock)
     );
-    top$edges$0$a$add$s3_y line$17(
+    top$aerr$s3_y line$17(
         .d(line$17$d),
         .q(line$17$q),
         .clock(line$17$clock)
     );
-    top$edges$0$a$add$s3_y line$18(
+    top$aerr$s3_y line$18(
         .d(line$18$d),
         .q(line$18$q),
         .clock(line$18$clock)
     );
-    top$edges$0$a$add$s3_y line$19(
+    top$aerr$s3_y line$19(
         .d(line$19$d),
         .q(line$19$q),
         .clock(line$19$clock)
     );
-    top$edges$0$a$add$s3_y line$20(
+    top$aerr$s3_y line$20(
         .d(line$20$d),
         .q(line$20$q),
         .clock(line$20$clock)
     );
-    top$edges$0$a$add$s3_y line$21(
+    top$aerr$s3_y line$21(
         .d(line$21$d),
         .q(line$21$q),
         .clock(line$21$clock)
     );
-    top$edges$0$a$add$s3_y line$22(
+    top$aerr$s3_y line$22(
         .d(line$22$d),
         .q(line$22$q),
         .clock(line$22$clock)
     );
-    top$edges$0$a$add$s3_y line$23(
+    top$aerr$s3_y line$23(
         .d(line$23$d),
         .q(line$23$q),
         .clock(line$23$clock)
     );
-    top$edges$0$a$add$s3_y line$24(
+    top$aerr$s3_y line$24(
         .d(line$24$d),
         .q(line$24$q),
         .clock(line$24$clock)
     );
-    top$edges$0$a$add$s3_y line$25(
+    top$aerr$s3_y line$25(
         .d(line$25$d),
         .q(line$25$q),
         .clock(line$25$clock)
     );
-    top$edges$0$a$add$s3_y line$26(
+    top$aerr$s3_y line$26(
         .d(line$26$d),
         .q(line$26$q),
         .clock(line$26$clock)
     );
-    top$edges$0$a$add$s3_y line$27(
+    top$aerr$s3_y line$27(
         .d(line$27$d),
         .q(line$27$q),
         .clock(line$27$clock)
     );
-    top$edges$0$a$add$s3_y line$28(
+    top$aerr$s3_y line$28(
         .d(line$28$d),
         .q(line$28$q),
         .clock(line$28$clock)
     );
-    top$edges$0$a$add$s3_y line$29(
+    top$aerr$s3_y line$29(
         .d(line$29$d),
         .q(line$29$q),
         .clock(line$29$clock)
     );
-    top$edges$0$a$add$s3_y line$30(
+    top$aerr$s3_y line$30(
         .d(line$30$d),
         .q(line$30$q),
         .clock(line$30$clock)
     );
-    top$edges$0$a$add$s3_y line$31(
+    top$aerr$s3_y line$31(
         .d(line$31$d),
         .q(line$31$q),
         .clock(line$31$clock)
     );
-    top$edges$0$a$add$s3_y line$32(
+    top$aerr$s3_y line$32(
         .d(line$32$d),
         .q(line$32$q),
         .clock(line$32$clock)
     );
-    top$edges$0$a$add$s3_y line$33(
+    top$aerr$s3_y line$33(
         .d(line$33$d),
         .q(line$33$q),
         .clock(line$33$clock)
     );
-    top$edges$0$a$add$s3_y line$34(
+    top$aerr$s3_y line$34(
         .d(line$34$d),
         .q(line$34$q),
         .clock(line$34$clock)
     );
-    top$edges$0$a$add$s3_y line$35(
+    top$aerr$s3_y line$35(
         .d(line$35$d),
         .q(line$35$q),
         .clock(line$35$clock)
     );
-    top$edges$0$a$add$s3_y line$36(
+    top$aerr$s3_y line$36(
         .d(line$36$d),
         .q(line$36$q),
         .clock(line$36$clock)
     );
-    top$edges$0$a$add$s3_y line$37(
+    top$aerr$s3_y line$37(
         .d(line$37$d),
         .q(line$37$q),
         .clock(line$37$clock)
     );
-    top$edges$0$a$add$s3_y line$38(
+    top$aerr$s3_y line$38(
         .d(line$38$d),
         .q(line$38$q),
         .clock(line$38$clock)
     );
-    top$edges$0$a$add$s3_y line$39(
+    top$aerr$s3_y line$39(
         .d(line$39$d),
         .q(line$39$q),
         .clock(line$39$clock)
     );
-    top$edges$0$a$add$s3_y line$40(
+    top$aerr$s3_y line$40(
         .d(line$40$d),
         .q(line$40$q),
         .clock(line$40$clock)
     );
-    top$edges$0$a$add$s3_y line$41(
+    top$aerr$s3_y line$41(
         .d(line$41$d),
         .q(line$41$q),
         .clock(line$41$clock)
     );
-    top$edges$0$a$add$s3_y line$42(
+    top$aerr$s3_y line$42(
         .d(line$42$d),
         .q(line$42$q),
         .clock(line$42$clock)
     );
-    top$edges$0$a$add$s3_y line$43(
+    top$aerr$s3_y line$43(
         .d(line$43$d),
         .q(line$43$q),
         .clock(line$43$clock)
     );
-    top$edges$0$a$add$s3_y line$44(
+    top$aerr$s3_y line$44(
         .d(line$44$d),
         .q(line$44$q),
         .clock(line$44$clock)
     );
-    top$edges$0$a$add$s3_y line$45(
+    top$aerr$s3_y line$45(
         .d(line$45$d),
         .q(line$45$q),
         .clock(line$45$clock)
     );
-    top$edges$0$a$add$s3_y line$46(
+    top$aerr$s3_y line$46(
         .d(line$46$d),
         .q(line$46$q),
         .clock(line$46$clock)
     );
-    top$edges$0$a$add$s3_y line$47(
+    top$aerr$s3_y line$47(
         .d(line$47$d),
         .q(line$47$q),
         .clock(line$47$clock)
     );
-    top$edges$0$a$add$s3_y line$48(
+    top$aerr$s3_y line$48(
         .d(line$48$d),
         .q(line$48$q),
         .clock(line$48$clock)
     );
-    top$edges$0$a$add$s3_y line$49(
+    top$aerr$s3_y line$49(
         .d(line$49$d),
         .q(line$49$q),
         .clock(line$49$clock)
-    );
-    top$edges$0$a$add$s3_y line$50(
-        .d(line$50$d),
-        .q(line$50$q),
-        .clock(line$50$clock)
-    );
-    top$edges$0$a$add$s3_y line$51(
-        .d(line$51$d),
-        .q(line$51$q),
-        .clock(line$51$clock)
-    );
-    top$edges$0$a$add$s3_y line$52(
-        .d(line$52$d),
-        .q(line$52$q),
-        .clock(line$52$clock)
-    );
-    top$edges$0$a$add$s3_y line$53(
-        .d(line$53$d),
-        .q(line$53$q),
-        .clock(line$53$clock)
-    );
-    top$edges$0$a$add$s3_y line$54(
-        .d(line$54$d),
-        .q(line$54$q),
-        .clock(line$54$clock)
-    );
-    top$edges$0$a$add$s3_y line$55(
-        .d(line$55$d),
-        .q(line$55$q),
-        .clock(line$55$clock)
-    );
-    top$edges$0$a$add$s3_y line$56(
-        .d(line$56$d),
-        .q(line$56$q),
-        .clock(line$56$clock)
-    );
-    top$edges$0$a$add$s3_y line$57(
-        .d(line$57$d),
-        .q(line$57$q),
-        .clock(line$57$clock)
-    );
-    top$edges$0$a$add$s3_y line$58(
-        .d(line$58$d),
-        .q(line$58$q),
-        .clock(line$58$clock)
-    );
-    top$edges$0$a$add$s3_y line$59(
-        .d(line$59$d),
-        .q(line$59$q),
-        .clock(line$59$clock)
-    );
-    top$edges$0$a$add$s3_y line$60(
-        .d(line$60$d),
-        .q(line$60$q),
-        .clock(line$60$clock)
-    );
-    top$edges$0$a$add$s3_y line$61(
-        .d(line$61$d),
-        .q(line$61$q),
-        .clock(line$61$clock)
-    );
-    top$edges$0$a$add$s3_y line$62(
-        .d(line$62$d),
-        .q(line$62$q),
-        .clock(line$62$clock)
-    );
-    top$edges$0$a$add$s3_y line$63(
-        .d(line$63$d),
-        .q(line$63$q),
-        .clock(line$63$clock)
-    );
-    top$edges$0$a$add$s3_y line$64(
-        .d(line$64$d),
-        .q(line$64$q),
-        .clock(line$64$clock)
-    );
-    top$edges$0$a$add$s3_y line$65(
-        .d(line$65$d),
-        .q(line$65$q),
-        .clock(line$65$clock)
-    );
-    top$edges$0$a$add$s3_y line$66(
-        .d(line$66$d),
-        .q(line$66$q),
-        .clock(line$66$clock)
-    );
-    top$edges$0$a$add$s3_y line$67(
-        .d(line$67$d),
-        .q(line$67$q),
-        .clock(line$67$clock)
-    );
-    top$edges$0$a$add$s3_y line$68(
-        .d(line$68$d),
-        .q(line$68$q),
-        .clock(line$68$clock)
-    );
-    top$edges$0$a$add$s3_y line$69(
-        .d(line$69$d),
-        .q(line$69$q),
-        .clock(line$69$clock)
-    );
-    top$edges$0$a$add$s3_y line$70(
-        .d(line$70$d),
-        .q(line$70$q),
-        .clock(line$70$clock)
-    );
-    top$edges$0$a$add$s3_y line$71(
-        .d(line$71$d),
-        .q(line$71$q),
-        .clock(line$71$clock)
-    );
-    top$edges$0$a$add$s3_y line$72(
-        .d(line$72$d),
-        .q(line$72$q),
-        .clock(line$72$clock)
-    );
-    top$edges$0$a$add$s3_y line$73(
-        .d(line$73$d),
-        .q(line$73$q),
-        .clock(line$73$clock)
-    );
-    top$edges$0$a$add$s3_y line$74(
-        .d(line$74$d),
-        .q(line$74$q),
-        .clock(line$74$clock)
-    );
-    top$edges$0$a$add$s3_y line$75(
-        .d(line$75$d),
-        .q(line$75$q),
-        .clock(line$75$clock)
-    );
-    top$edges$0$a$add$s3_y line$76(
-        .d(line$76$d),
-        .q(line$76$q),
-        .clock(line$76$clock)
-    );
-    top$edges$0$a$add$s3_y line$77(
-        .d(line$77$d),
-        .q(line$77$q),
-        .clock(line$77$clock)
-    );
-    top$edges$0$a$add$s3_y line$78(
-        .d(line$78$d),
-        .q(line$78$q),
-        .clock(line$78$clock)
-    );
-    top$edges$0$a$add$s3_y line$79(
-        .d(line$79$d),
-        .q(line$79$q),
-        .clock(line$79$clock)
-    );
-    top$edges$0$a$add$s3_y line$80(
-        .d(line$80$d),
-        .q(line$80$q),
-        .clock(line$80$clock)
-    );
-    top$edges$0$a$add$s3_y line$81(
-        .d(line$81$d),
-        .q(line$81$q),
-        .clock(line$81$clock)
-    );
-    top$edges$0$a$add$s3_y line$82(
-        .d(line$82$d),
-        .q(line$82$q),
-        .clock(line$82$clock)
-    );
-    top$edges$0$a$add$s3_y line$83(
-        .d(line$83$d),
-        .q(line$83$q),
-        .clock(line$83$clock)
-    );
-    top$edges$0$a$add$s3_y line$84(
-        .d(line$84$d),
-        .q(line$84$q),
-        .clock(line$84$clock)
-    );
-    top$edges$0$a$add$s3_y line$85(
-        .d(line$85$d),
-        .q(line$85$q),
-        .clock(line$85$clock)
-    );
-    top$edges$0$a$add$s3_y line$86(
-        .d(line$86$d),
-        .q(line$86$q),
-        .clock(line$86$clock)
-    );
-    top$edges$0$a$add$s3_y line$87(
-        .d(line$87$d),
-        .q(line$87$q),
-        .clock(line$87$clock)
-    );
-    top$edges$0$a$add$s3_y line$88(
-        .d(line$88$d),
-        .q(line$88$q),
-        .clock(line$88$clock)
-    );
-    top$edges$0$a$add$s3_y line$89(
-        .d(line$89$d),
-        .q(line$89$q),
-        .clock(line$89$clock)
-    );
-    top$edges$0$a$add$s3_y line$90(
-        .d(line$90$d),
-        .q(line$90$q),
-        .clock(line$90$clock)
-    );
-    top$edges$0$a$add$s3_y line$91(
-        .d(line$91$d),
-        .q(line$91$q),
-        .clock(line$91$clock)
-    );
-    top$edges$0$a$add$s3_y line$92(
-        .d(line$92$d),
-        .q(line$92$q),
-        .clock(line$92$clock)
-    );
-    top$edges$0$a$add$s3_y line$93(
-        .d(line$93$d),
-        .q(line$93$q),
-        .clock(line$93$clock)
-    );
-    top$edges$0$a$add$s3_y line$94(
-        .d(line$94$d),
-        .q(line$94$q),
-        .clock(line$94$clock)
-    );
-    top$edges$0$a$add$s3_y line$95(
-        .d(line$95$d),
-        .q(line$95$q),
-        .clock(line$95$clock)
-    );
-    top$edges$0$a$add$s3_y line$96(
-        .d(line$96$d),
-        .q(line$96$q),
-        .clock(line$96$clock)
-    );
-    top$edges$0$a$add$s3_y line$97(
-        .d(line$97$d),
-        .q(line$97$q),
-        .clock(line$97$clock)
-    );
-    top$edges$0$a$add$s3_y line$98(
-        .d(line$98$d),
-        .q(line$98$q),
-        .clock(line$98$clock)
-    );
-    top$edges$0$a$add$s3_y line$99(
-        .d(line$99$d),
-        .q(line$99$q),
-        .clock(line$99$clock)
-    );
-    top$edges$0$a$add$s3_y line$100(
-        .d(line$100$d),
-        .q(line$100$q),
-        .clock(line$100$clock)
-    );
-    top$edges$0$a$add$s3_y line$101(
-        .d(line$101$d),
-        .q(line$101$q),
-        .clock(line$101$clock)
-    );
-    top$edges$0$a$add$s3_y line$102(
-        .d(line$102$d),
-        .q(line$102$q),
-        .clock(line$102$clock)
-    );
-    top$edges$0$a$add$s3_y line$103(
-        .d(line$103$d),
-        .q(line$103$q),
-        .clock(line$103$clock)
-    );
-    top$edges$0$a$add$s3_y line$104(
-        .d(line$104$d),
-        .q(line$104$q),
-        .clock(line$104$clock)
-    );
-    top$edges$0$a$add$s3_y line$105(
-        .d(line$105$d),
-        .q(line$105$q),
-        .clock(line$105$clock)
-    );
-    top$edges$0$a$add$s3_y line$106(
-        .d(line$106$d),
-        .q(line$106$q),
-        .clock(line$106$clock)
-    );
-    top$edges$0$a$add$s3_y line$107(
-        .d(line$107$d),
-        .q(line$107$q),
-        .clock(line$107$clock)
-    );
-    top$edges$0$a$add$s3_y line$108(
-        .d(line$108$d),
-        .q(line$108$q),
-        .clock(line$108$clock)
-    );
-    top$edges$0$a$add$s3_y line$109(
-        .d(line$109$d),
-        .q(line$109$q),
-        .clock(line$109$clock)
-    );
-    top$edges$0$a$add$s3_y line$110(
-        .d(line$110$d),
-        .q(line$110$q),
-        .clock(line$110$clock)
-    );
-    top$edges$0$a$add$s3_y line$111(
-        .d(line$111$d),
-        .q(line$111$q),
-        .clock(line$111$clock)
-    );
-    top$edges$0$a$add$s3_y line$112(
-        .d(line$112$d),
-        .q(line$112$q),
-        .clock(line$112$clock)
-    );
-    top$edges$0$a$add$s3_y line$113(
-        .d(line$113$d),
-        .q(line$113$q),
-        .clock(line$113$clock)
-    );
-    top$edges$0$a$add$s3_y line$114(
-        .d(line$114$d),
-        .q(line$114$q),
-        .clock(line$114$clock)
-    );
-    top$edges$0$a$add$s3_y line$115(
-        .d(line$115$d),
-        .q(line$115$q),
-        .clock(line$115$clock)
-    );
-    top$edges$0$a$add$s3_y line$116(
-        .d(line$116$d),
-        .q(line$116$q),
-        .clock(line$116$clock)
-    );
-    top$edges$0$a$add$s3_y line$117(
-        .d(line$117$d),
-        .q(line$117$q),
-        .clock(line$117$clock)
-    );
-    top$edges$0$a$add$s3_y line$118(
-        .d(line$118$d),
-        .q(line$118$q),
-        .clock(line$118$clock)
-    );
-    top$edges$0$a$add$s3_y line$119(
-        .d(line$119$d),
-        .q(line$119$q),
-        .clock(line$119$clock)
-    );
-    top$edges$0$a$add$s3_y line$120(
-        .d(line$120$d),
-        .q(line$120$q),
-        .clock(line$120$clock)
-    );
-    top$edges$0$a$add$s3_y line$121(
-        .d(line$121$d),
-        .q(line$121$q),
-        .clock(line$121$clock)
-    );
-    top$edges$0$a$add$s3_y line$122(
-        .d(line$122$d),
-        .q(line$122$q),
-        .clock(line$122$clock)
-    );
-    top$edges$0$a$add$s3_y line$123(
-        .d(line$123$d),
-        .q(line$123$q),
-        .clock(line$123$clock)
-    );
-    top$edges$0$a$add$s3_y line$124(
-        .d(line$124$d),
-        .q(line$124$q),
-        .clock(line$124$clock)
-    );
-    top$edges$0$a$add$s3_y line$125(
-        .d(line$125$d),
-        .q(line$125$q),
-        .clock(line$125$clock)
     );
     
     // Update code
@@ -11499,158 +9084,6 @@ module top$tag_wait(clock,d,q);
         line$48$d = d;
         line$49$clock = clock;
         line$49$d = d;
-        line$50$clock = clock;
-        line$50$d = d;
-        line$51$clock = clock;
-        line$51$d = d;
-        line$52$clock = clock;
-        line$52$d = d;
-        line$53$clock = clock;
-        line$53$d = d;
-        line$54$clock = clock;
-        line$54$d = d;
-        line$55$clock = clock;
-        line$55$d = d;
-        line$56$clock = clock;
-        line$56$d = d;
-        line$57$clock = clock;
-        line$57$d = d;
-        line$58$clock = clock;
-        line$58$d = d;
-        line$59$clock = clock;
-        line$59$d = d;
-        line$60$clock = clock;
-        line$60$d = d;
-        line$61$clock = clock;
-        line$61$d = d;
-        line$62$clock = clock;
-        line$62$d = d;
-        line$63$clock = clock;
-        line$63$d = d;
-        line$64$clock = clock;
-        line$64$d = d;
-        line$65$clock = clock;
-        line$65$d = d;
-        line$66$clock = clock;
-        line$66$d = d;
-        line$67$clock = clock;
-        line$67$d = d;
-        line$68$clock = clock;
-        line$68$d = d;
-        line$69$clock = clock;
-        line$69$d = d;
-        line$70$clock = clock;
-        line$70$d = d;
-        line$71$clock = clock;
-        line$71$d = d;
-        line$72$clock = clock;
-        line$72$d = d;
-        line$73$clock = clock;
-        line$73$d = d;
-        line$74$clock = clock;
-        line$74$d = d;
-        line$75$clock = clock;
-        line$75$d = d;
-        line$76$clock = clock;
-        line$76$d = d;
-        line$77$clock = clock;
-        line$77$d = d;
-        line$78$clock = clock;
-        line$78$d = d;
-        line$79$clock = clock;
-        line$79$d = d;
-        line$80$clock = clock;
-        line$80$d = d;
-        line$81$clock = clock;
-        line$81$d = d;
-        line$82$clock = clock;
-        line$82$d = d;
-        line$83$clock = clock;
-        line$83$d = d;
-        line$84$clock = clock;
-        line$84$d = d;
-        line$85$clock = clock;
-        line$85$d = d;
-        line$86$clock = clock;
-        line$86$d = d;
-        line$87$clock = clock;
-        line$87$d = d;
-        line$88$clock = clock;
-        line$88$d = d;
-        line$89$clock = clock;
-        line$89$d = d;
-        line$90$clock = clock;
-        line$90$d = d;
-        line$91$clock = clock;
-        line$91$d = d;
-        line$92$clock = clock;
-        line$92$d = d;
-        line$93$clock = clock;
-        line$93$d = d;
-        line$94$clock = clock;
-        line$94$d = d;
-        line$95$clock = clock;
-        line$95$d = d;
-        line$96$clock = clock;
-        line$96$d = d;
-        line$97$clock = clock;
-        line$97$d = d;
-        line$98$clock = clock;
-        line$98$d = d;
-        line$99$clock = clock;
-        line$99$d = d;
-        line$100$clock = clock;
-        line$100$d = d;
-        line$101$clock = clock;
-        line$101$d = d;
-        line$102$clock = clock;
-        line$102$d = d;
-        line$103$clock = clock;
-        line$103$d = d;
-        line$104$clock = clock;
-        line$104$d = d;
-        line$105$clock = clock;
-        line$105$d = d;
-        line$106$clock = clock;
-        line$106$d = d;
-        line$107$clock = clock;
-        line$107$d = d;
-        line$108$clock = clock;
-        line$108$d = d;
-        line$109$clock = clock;
-        line$109$d = d;
-        line$110$clock = clock;
-        line$110$d = d;
-        line$111$clock = clock;
-        line$111$d = d;
-        line$112$clock = clock;
-        line$112$d = d;
-        line$113$clock = clock;
-        line$113$d = d;
-        line$114$clock = clock;
-        line$114$d = d;
-        line$115$clock = clock;
-        line$115$d = d;
-        line$116$clock = clock;
-        line$116$d = d;
-        line$117$clock = clock;
-        line$117$d = d;
-        line$118$clock = clock;
-        line$118$d = d;
-        line$119$clock = clock;
-        line$119$d = d;
-        line$120$clock = clock;
-        line$120$d = d;
-        line$121$clock = clock;
-        line$121$d = d;
-        line$122$clock = clock;
-        line$122$d = d;
-        line$123$clock = clock;
-        line$123$d = d;
-        line$124$clock = clock;
-        line$124$d = d;
-        line$125$clock = clock;
-        line$125$d = d;
         line$0$d = line$1$q;
         line$1$d = line$2$q;
         line$2$d = line$3$q;
@@ -11700,1306 +9133,10 @@ module top$tag_wait(clock,d,q);
         line$46$d = line$47$q;
         line$47$d = line$48$q;
         line$48$d = line$49$q;
-        line$49$d = line$50$q;
-        line$50$d = line$51$q;
-        line$51$d = line$52$q;
-        line$52$d = line$53$q;
-        line$53$d = line$54$q;
-        line$54$d = line$55$q;
-        line$55$d = line$56$q;
-        line$56$d = line$57$q;
-        line$57$d = line$58$q;
-        line$58$d = line$59$q;
-        line$59$d = line$60$q;
-        line$60$d = line$61$q;
-        line$61$d = line$62$q;
-        line$62$d = line$63$q;
-        line$63$d = line$64$q;
-        line$64$d = line$65$q;
-        line$65$d = line$66$q;
-        line$66$d = line$67$q;
-        line$67$d = line$68$q;
-        line$68$d = line$69$q;
-        line$69$d = line$70$q;
-        line$70$d = line$71$q;
-        line$71$d = line$72$q;
-        line$72$d = line$73$q;
-        line$73$d = line$74$q;
-        line$74$d = line$75$q;
-        line$75$d = line$76$q;
-        line$76$d = line$77$q;
-        line$77$d = line$78$q;
-        line$78$d = line$79$q;
-        line$79$d = line$80$q;
-        line$80$d = line$81$q;
-        line$81$d = line$82$q;
-        line$82$d = line$83$q;
-        line$83$d = line$84$q;
-        line$84$d = line$85$q;
-        line$85$d = line$86$q;
-        line$86$d = line$87$q;
-        line$87$d = line$88$q;
-        line$88$d = line$89$q;
-        line$89$d = line$90$q;
-        line$90$d = line$91$q;
-        line$91$d = line$92$q;
-        line$92$d = line$93$q;
-        line$93$d = line$94$q;
-        line$94$d = line$95$q;
-        line$95$d = line$96$q;
-        line$96$d = line$97$q;
-        line$97$d = line$98$q;
-        line$98$d = line$99$q;
-        line$99$d = line$100$q;
-        line$100$d = line$101$q;
-        line$101$d = line$102$q;
-        line$102$d = line$103$q;
-        line$103$d = line$104$q;
-        line$104$d = line$105$q;
-        line$105$d = line$106$q;
-        line$106$d = line$107$q;
-        line$107$d = line$108$q;
-        line$108$d = line$109$q;
-        line$109$d = line$110$q;
-        line$110$d = line$111$q;
-        line$111$d = line$112$q;
-        line$112$d = line$113$q;
-        line$113$d = line$114$q;
-        line$114$d = line$115$q;
-        line$115$d = line$116$q;
-        line$116$d = line$117$q;
-        line$117$d = line$118$q;
-        line$118$d = line$119$q;
-        line$119$d = line$120$q;
-        line$120$d = line$121$q;
-        line$121$d = line$122$q;
-        line$122$d = line$123$q;
-        line$123$d = line$124$q;
-        line$124$d = line$125$q;
         q = line$0$q;
     end
     
 endmodule // top$tag_wait
-
-
-module top$two_lambda_wait(clock,d,q);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    
-    // Stub signals
-    reg  [31:0] line$0$d;
-    wire  [31:0] line$0$q;
-    reg  line$0$clock;
-    reg  [31:0] line$1$d;
-    wire  [31:0] line$1$q;
-    reg  line$1$clock;
-    reg  [31:0] line$2$d;
-    wire  [31:0] line$2$q;
-    reg  line$2$clock;
-    reg  [31:0] line$3$d;
-    wire  [31:0] line$3$q;
-    reg  line$3$clock;
-    reg  [31:0] line$4$d;
-    wire  [31:0] line$4$q;
-    reg  line$4$clock;
-    reg  [31:0] line$5$d;
-    wire  [31:0] line$5$q;
-    reg  line$5$clock;
-    reg  [31:0] line$6$d;
-    wire  [31:0] line$6$q;
-    reg  line$6$clock;
-    reg  [31:0] line$7$d;
-    wire  [31:0] line$7$q;
-    reg  line$7$clock;
-    reg  [31:0] line$8$d;
-    wire  [31:0] line$8$q;
-    reg  line$8$clock;
-    reg  [31:0] line$9$d;
-    wire  [31:0] line$9$q;
-    reg  line$9$clock;
-    reg  [31:0] line$10$d;
-    wire  [31:0] line$10$q;
-    reg  line$10$clock;
-    reg  [31:0] line$11$d;
-    wire  [31:0] line$11$q;
-    reg  line$11$clock;
-    reg  [31:0] line$12$d;
-    wire  [31:0] line$12$q;
-    reg  line$12$clock;
-    reg  [31:0] line$13$d;
-    wire  [31:0] line$13$q;
-    reg  line$13$clock;
-    reg  [31:0] line$14$d;
-    wire  [31:0] line$14$q;
-    reg  line$14$clock;
-    reg  [31:0] line$15$d;
-    wire  [31:0] line$15$q;
-    reg  line$15$clock;
-    reg  [31:0] line$16$d;
-    wire  [31:0] line$16$q;
-    reg  line$16$clock;
-    reg  [31:0] line$17$d;
-    wire  [31:0] line$17$q;
-    reg  line$17$clock;
-    reg  [31:0] line$18$d;
-    wire  [31:0] line$18$q;
-    reg  line$18$clock;
-    reg  [31:0] line$19$d;
-    wire  [31:0] line$19$q;
-    reg  line$19$clock;
-    reg  [31:0] line$20$d;
-    wire  [31:0] line$20$q;
-    reg  line$20$clock;
-    reg  [31:0] line$21$d;
-    wire  [31:0] line$21$q;
-    reg  line$21$clock;
-    reg  [31:0] line$22$d;
-    wire  [31:0] line$22$q;
-    reg  line$22$clock;
-    reg  [31:0] line$23$d;
-    wire  [31:0] line$23$q;
-    reg  line$23$clock;
-    reg  [31:0] line$24$d;
-    wire  [31:0] line$24$q;
-    reg  line$24$clock;
-    reg  [31:0] line$25$d;
-    wire  [31:0] line$25$q;
-    reg  line$25$clock;
-    reg  [31:0] line$26$d;
-    wire  [31:0] line$26$q;
-    reg  line$26$clock;
-    reg  [31:0] line$27$d;
-    wire  [31:0] line$27$q;
-    reg  line$27$clock;
-    reg  [31:0] line$28$d;
-    wire  [31:0] line$28$q;
-    reg  line$28$clock;
-    reg  [31:0] line$29$d;
-    wire  [31:0] line$29$q;
-    reg  line$29$clock;
-    reg  [31:0] line$30$d;
-    wire  [31:0] line$30$q;
-    reg  line$30$clock;
-    reg  [31:0] line$31$d;
-    wire  [31:0] line$31$q;
-    reg  line$31$clock;
-    reg  [31:0] line$32$d;
-    wire  [31:0] line$32$q;
-    reg  line$32$clock;
-    reg  [31:0] line$33$d;
-    wire  [31:0] line$33$q;
-    reg  line$33$clock;
-    reg  [31:0] line$34$d;
-    wire  [31:0] line$34$q;
-    reg  line$34$clock;
-    reg  [31:0] line$35$d;
-    wire  [31:0] line$35$q;
-    reg  line$35$clock;
-    reg  [31:0] line$36$d;
-    wire  [31:0] line$36$q;
-    reg  line$36$clock;
-    reg  [31:0] line$37$d;
-    wire  [31:0] line$37$q;
-    reg  line$37$clock;
-    reg  [31:0] line$38$d;
-    wire  [31:0] line$38$q;
-    reg  line$38$clock;
-    reg  [31:0] line$39$d;
-    wire  [31:0] line$39$q;
-    reg  line$39$clock;
-    reg  [31:0] line$40$d;
-    wire  [31:0] line$40$q;
-    reg  line$40$clock;
-    reg  [31:0] line$41$d;
-    wire  [31:0] line$41$q;
-    reg  line$41$clock;
-    reg  [31:0] line$42$d;
-    wire  [31:0] line$42$q;
-    reg  line$42$clock;
-    reg  [31:0] line$43$d;
-    wire  [31:0] line$43$q;
-    reg  line$43$clock;
-    reg  [31:0] line$44$d;
-    wire  [31:0] line$44$q;
-    reg  line$44$clock;
-    reg  [31:0] line$45$d;
-    wire  [31:0] line$45$q;
-    reg  line$45$clock;
-    reg  [31:0] line$46$d;
-    wire  [31:0] line$46$q;
-    reg  line$46$clock;
-    reg  [31:0] line$47$d;
-    wire  [31:0] line$47$q;
-    reg  line$47$clock;
-    reg  [31:0] line$48$d;
-    wire  [31:0] line$48$q;
-    reg  line$48$clock;
-    
-    // Sub module instances
-    top$edges$0$a$add$s3_y line$0(
-        .d(line$0$d),
-        .q(line$0$q),
-        .clock(line$0$clock)
-    );
-    top$edges$0$a$add$s3_y line$1(
-        .d(line$1$d),
-        .q(line$1$q),
-        .clock(line$1$clock)
-    );
-    top$edges$0$a$add$s3_y line$2(
-        .d(line$2$d),
-        .q(line$2$q),
-        .clock(line$2$clock)
-    );
-    top$edges$0$a$add$s3_y line$3(
-        .d(line$3$d),
-        .q(line$3$q),
-        .clock(line$3$clock)
-    );
-    top$edges$0$a$add$s3_y line$4(
-        .d(line$4$d),
-        .q(line$4$q),
-        .clock(line$4$clock)
-    );
-    top$edges$0$a$add$s3_y line$5(
-        .d(line$5$d),
-        .q(line$5$q),
-        .clock(line$5$clock)
-    );
-    top$edges$0$a$add$s3_y line$6(
-        .d(line$6$d),
-        .q(line$6$q),
-        .clock(line$6$clock)
-    );
-    top$edges$0$a$add$s3_y line$7(
-        .d(line$7$d),
-        .q(line$7$q),
-        .clock(line$7$clock)
-    );
-    top$edges$0$a$add$s3_y line$8(
-        .d(line$8$d),
-        .q(line$8$q),
-        .clock(line$8$clock)
-    );
-    top$edges$0$a$add$s3_y line$9(
-        .d(line$9$d),
-        .q(line$9$q),
-        .clock(line$9$clock)
-    );
-    top$edges$0$a$add$s3_y line$10(
-        .d(line$10$d),
-        .q(line$10$q),
-        .clock(line$10$clock)
-    );
-    top$edges$0$a$add$s3_y line$11(
-        .d(line$11$d),
-        .q(line$11$q),
-        .clock(line$11$clock)
-    );
-    top$edges$0$a$add$s3_y line$12(
-        .d(line$12$d),
-        .q(line$12$q),
-        .clock(line$12$clock)
-    );
-    top$edges$0$a$add$s3_y line$13(
-        .d(line$13$d),
-        .q(line$13$q),
-        .clock(line$13$clock)
-    );
-    top$edges$0$a$add$s3_y line$14(
-        .d(line$14$d),
-        .q(line$14$q),
-        .clock(line$14$clock)
-    );
-    top$edges$0$a$add$s3_y line$15(
-        .d(line$15$d),
-        .q(line$15$q),
-        .clock(line$15$clock)
-    );
-    top$edges$0$a$add$s3_y line$16(
-        .d(line$16$d),
-        .q(line$16$q),
-        .clock(line$16$clock)
-    );
-    top$edges$0$a$add$s3_y line$17(
-        .d(line$17$d),
-        .q(line$17$q),
-        .clock(line$17$clock)
-    );
-    top$edges$0$a$add$s3_y line$18(
-        .d(line$18$d),
-        .q(line$18$q),
-        .clock(line$18$clock)
-    );
-    top$edges$0$a$add$s3_y line$19(
-        .d(line$19$d),
-        .q(line$19$q),
-        .clock(line$19$clock)
-    );
-    top$edges$0$a$add$s3_y line$20(
-        .d(line$20$d),
-        .q(line$20$q),
-        .clock(line$20$clock)
-    );
-    top$edges$0$a$add$s3_y line$21(
-        .d(line$21$d),
-        .q(line$21$q),
-        .clock(line$21$clock)
-    );
-    top$edges$0$a$add$s3_y line$22(
-        .d(line$22$d),
-        .q(line$22$q),
-        .clock(line$22$clock)
-    );
-    top$edges$0$a$add$s3_y line$23(
-        .d(line$23$d),
-        .q(line$23$q),
-        .clock(line$23$clock)
-    );
-    top$edges$0$a$add$s3_y line$24(
-        .d(line$24$d),
-        .q(line$24$q),
-        .clock(line$24$clock)
-    );
-    top$edges$0$a$add$s3_y line$25(
-        .d(line$25$d),
-        .q(line$25$q),
-        .clock(line$25$clock)
-    );
-    top$edges$0$a$add$s3_y line$26(
-        .d(line$26$d),
-        .q(line$26$q),
-        .clock(line$26$clock)
-    );
-    top$edges$0$a$add$s3_y line$27(
-        .d(line$27$d),
-        .q(line$27$q),
-        .clock(line$27$clock)
-    );
-    top$edges$0$a$add$s3_y line$28(
-        .d(line$28$d),
-        .q(line$28$q),
-        .clock(line$28$clock)
-    );
-    top$edges$0$a$add$s3_y line$29(
-        .d(line$29$d),
-        .q(line$29$q),
-        .clock(line$29$clock)
-    );
-    top$edges$0$a$add$s3_y line$30(
-        .d(line$30$d),
-        .q(line$30$q),
-        .clock(line$30$clock)
-    );
-    top$edges$0$a$add$s3_y line$31(
-        .d(line$31$d),
-        .q(line$31$q),
-        .clock(line$31$clock)
-    );
-    top$edges$0$a$add$s3_y line$32(
-        .d(line$32$d),
-        .q(line$32$q),
-        .clock(line$32$clock)
-    );
-    top$edges$0$a$add$s3_y line$33(
-        .d(line$33$d),
-        .q(line$33$q),
-        .clock(line$33$clock)
-    );
-    top$edges$0$a$add$s3_y line$34(
-        .d(line$34$d),
-        .q(line$34$q),
-        .clock(line$34$clock)
-    );
-    top$edges$0$a$add$s3_y line$35(
-        .d(line$35$d),
-        .q(line$35$q),
-        .clock(line$35$clock)
-    );
-    top$edges$0$a$add$s3_y line$36(
-        .d(line$36$d),
-        .q(line$36$q),
-        .clock(line$36$clock)
-    );
-    top$edges$0$a$add$s3_y line$37(
-        .d(line$37$d),
-        .q(line$37$q),
-        .clock(line$37$clock)
-    );
-    top$edges$0$a$add$s3_y line$38(
-        .d(line$38$d),
-        .q(line$38$q),
-        .clock(line$38$clock)
-    );
-    top$edges$0$a$add$s3_y line$39(
-        .d(line$39$d),
-        .q(line$39$q),
-        .clock(line$39$clock)
-    );
-    top$edges$0$a$add$s3_y line$40(
-        .d(line$40$d),
-        .q(line$40$q),
-        .clock(line$40$clock)
-    );
-    top$edges$0$a$add$s3_y line$41(
-        .d(line$41$d),
-        .q(line$41$q),
-        .clock(line$41$clock)
-    );
-    top$edges$0$a$add$s3_y line$42(
-        .d(line$42$d),
-        .q(line$42$q),
-        .clock(line$42$clock)
-    );
-    top$edges$0$a$add$s3_y line$43(
-        .d(line$43$d),
-        .q(line$43$q),
-        .clock(line$43$clock)
-    );
-    top$edges$0$a$add$s3_y line$44(
-        .d(line$44$d),
-        .q(line$44$q),
-        .clock(line$44$clock)
-    );
-    top$edges$0$a$add$s3_y line$45(
-        .d(line$45$d),
-        .q(line$45$q),
-        .clock(line$45$clock)
-    );
-    top$edges$0$a$add$s3_y line$46(
-        .d(line$46$d),
-        .q(line$46$q),
-        .clock(line$46$clock)
-    );
-    top$edges$0$a$add$s3_y line$47(
-        .d(line$47$d),
-        .q(line$47$q),
-        .clock(line$47$clock)
-    );
-    top$edges$0$a$add$s3_y line$48(
-        .d(line$48$d),
-        .q(line$48$q),
-        .clock(line$48$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        line$0$clock = clock;
-        line$0$d = d;
-        line$1$clock = clock;
-        line$1$d = d;
-        line$2$clock = clock;
-        line$2$d = d;
-        line$3$clock = clock;
-        line$3$d = d;
-        line$4$clock = clock;
-        line$4$d = d;
-        line$5$clock = clock;
-        line$5$d = d;
-        line$6$clock = clock;
-        line$6$d = d;
-        line$7$clock = clock;
-        line$7$d = d;
-        line$8$clock = clock;
-        line$8$d = d;
-        line$9$clock = clock;
-        line$9$d = d;
-        line$10$clock = clock;
-        line$10$d = d;
-        line$11$clock = clock;
-        line$11$d = d;
-        line$12$clock = clock;
-        line$12$d = d;
-        line$13$clock = clock;
-        line$13$d = d;
-        line$14$clock = clock;
-        line$14$d = d;
-        line$15$clock = clock;
-        line$15$d = d;
-        line$16$clock = clock;
-        line$16$d = d;
-        line$17$clock = clock;
-        line$17$d = d;
-        line$18$clock = clock;
-        line$18$d = d;
-        line$19$clock = clock;
-        line$19$d = d;
-        line$20$clock = clock;
-        line$20$d = d;
-        line$21$clock = clock;
-        line$21$d = d;
-        line$22$clock = clock;
-        line$22$d = d;
-        line$23$clock = clock;
-        line$23$d = d;
-        line$24$clock = clock;
-        line$24$d = d;
-        line$25$clock = clock;
-        line$25$d = d;
-        line$26$clock = clock;
-        line$26$d = d;
-        line$27$clock = clock;
-        line$27$d = d;
-        line$28$clock = clock;
-        line$28$d = d;
-        line$29$clock = clock;
-        line$29$d = d;
-        line$30$clock = clock;
-        line$30$d = d;
-        line$31$clock = clock;
-        line$31$d = d;
-        line$32$clock = clock;
-        line$32$d = d;
-        line$33$clock = clock;
-        line$33$d = d;
-        line$34$clock = clock;
-        line$34$d = d;
-        line$35$clock = clock;
-        line$35$d = d;
-        line$36$clock = clock;
-        line$36$d = d;
-        line$37$clock = clock;
-        line$37$d = d;
-        line$38$clock = clock;
-        line$38$d = d;
-        line$39$clock = clock;
-        line$39$d = d;
-        line$40$clock = clock;
-        line$40$d = d;
-        line$41$clock = clock;
-        line$41$d = d;
-        line$42$clock = clock;
-        line$42$d = d;
-        line$43$clock = clock;
-        line$43$d = d;
-        line$44$clock = clock;
-        line$44$d = d;
-        line$45$clock = clock;
-        line$45$d = d;
-        line$46$clock = clock;
-        line$46$d = d;
-        line$47$clock = clock;
-        line$47$d = d;
-        line$48$clock = clock;
-        line$48$d = d;
-        line$0$d = line$1$q;
-        line$1$d = line$2$q;
-        line$2$d = line$3$q;
-        line$3$d = line$4$q;
-        line$4$d = line$5$q;
-        line$5$d = line$6$q;
-        line$6$d = line$7$q;
-        line$7$d = line$8$q;
-        line$8$d = line$9$q;
-        line$9$d = line$10$q;
-        line$10$d = line$11$q;
-        line$11$d = line$12$q;
-        line$12$d = line$13$q;
-        line$13$d = line$14$q;
-        line$14$d = line$15$q;
-        line$15$d = line$16$q;
-        line$16$d = line$17$q;
-        line$17$d = line$18$q;
-        line$18$d = line$19$q;
-        line$19$d = line$20$q;
-        line$20$d = line$21$q;
-        line$21$d = line$22$q;
-        line$22$d = line$23$q;
-        line$23$d = line$24$q;
-        line$24$d = line$25$q;
-        line$25$d = line$26$q;
-        line$26$d = line$27$q;
-        line$27$d = line$28$q;
-        line$28$d = line$29$q;
-        line$29$d = line$30$q;
-        line$30$d = line$31$q;
-        line$31$d = line$32$q;
-        line$32$d = line$33$q;
-        line$33$d = line$34$q;
-        line$34$d = line$35$q;
-        line$35$d = line$36$q;
-        line$36$d = line$37$q;
-        line$37$d = line$38$q;
-        line$38$d = line$39$q;
-        line$39$d = line$40$q;
-        line$40$d = line$41$q;
-        line$41$d = line$42$q;
-        line$42$d = line$43$q;
-        line$43$d = line$44$q;
-        line$44$d = line$45$q;
-        line$45$d = line$46$q;
-        line$46$d = line$47$q;
-        line$47$d = line$48$q;
-        q = line$0$q;
-    end
-    
-endmodule // top$two_lambda_wait
-
-
-module top$v_ex_wait$0(clock,d,q);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    
-    // Stub signals
-    reg  [31:0] line$0$d;
-    wire  [31:0] line$0$q;
-    reg  line$0$clock;
-    reg  [31:0] line$1$d;
-    wire  [31:0] line$1$q;
-    reg  line$1$clock;
-    reg  [31:0] line$2$d;
-    wire  [31:0] line$2$q;
-    reg  line$2$clock;
-    reg  [31:0] line$3$d;
-    wire  [31:0] line$3$q;
-    reg  line$3$clock;
-    reg  [31:0] line$4$d;
-    wire  [31:0] line$4$q;
-    reg  line$4$clock;
-    reg  [31:0] line$5$d;
-    wire  [31:0] line$5$q;
-    reg  line$5$clock;
-    reg  [31:0] line$6$d;
-    wire  [31:0] line$6$q;
-    reg  line$6$clock;
-    reg  [31:0] line$7$d;
-    wire  [31:0] line$7$q;
-    reg  line$7$clock;
-    reg  [31:0] line$8$d;
-    wire  [31:0] line$8$q;
-    reg  line$8$clock;
-    reg  [31:0] line$9$d;
-    wire  [31:0] line$9$q;
-    reg  line$9$clock;
-    reg  [31:0] line$10$d;
-    wire  [31:0] line$10$q;
-    reg  line$10$clock;
-    reg  [31:0] line$11$d;
-    wire  [31:0] line$11$q;
-    reg  line$11$clock;
-    reg  [31:0] line$12$d;
-    wire  [31:0] line$12$q;
-    reg  line$12$clock;
-    reg  [31:0] line$13$d;
-    wire  [31:0] line$13$q;
-    reg  line$13$clock;
-    reg  [31:0] line$14$d;
-    wire  [31:0] line$14$q;
-    reg  line$14$clock;
-    reg  [31:0] line$15$d;
-    wire  [31:0] line$15$q;
-    reg  line$15$clock;
-    reg  [31:0] line$16$d;
-    wire  [31:0] line$16$q;
-    reg  line$16$clock;
-    reg  [31:0] line$17$d;
-    wire  [31:0] line$17$q;
-    reg  line$17$clock;
-    reg  [31:0] line$18$d;
-    wire  [31:0] line$18$q;
-    reg  line$18$clock;
-    reg  [31:0] line$19$d;
-    wire  [31:0] line$19$q;
-    reg  line$19$clock;
-    reg  [31:0] line$20$d;
-    wire  [31:0] line$20$q;
-    reg  line$20$clock;
-    reg  [31:0] line$21$d;
-    wire  [31:0] line$21$q;
-    reg  line$21$clock;
-    reg  [31:0] line$22$d;
-    wire  [31:0] line$22$q;
-    reg  line$22$clock;
-    reg  [31:0] line$23$d;
-    wire  [31:0] line$23$q;
-    reg  line$23$clock;
-    reg  [31:0] line$24$d;
-    wire  [31:0] line$24$q;
-    reg  line$24$clock;
-    reg  [31:0] line$25$d;
-    wire  [31:0] line$25$q;
-    reg  line$25$clock;
-    reg  [31:0] line$26$d;
-    wire  [31:0] line$26$q;
-    reg  line$26$clock;
-    reg  [31:0] line$27$d;
-    wire  [31:0] line$27$q;
-    reg  line$27$clock;
-    
-    // Sub module instances
-    top$edges$0$a$add$s3_y line$0(
-        .d(line$0$d),
-        .q(line$0$q),
-        .clock(line$0$clock)
-    );
-    top$edges$0$a$add$s3_y line$1(
-        .d(line$1$d),
-        .q(line$1$q),
-        .clock(line$1$clock)
-    );
-    top$edges$0$a$add$s3_y line$2(
-        .d(line$2$d),
-        .q(line$2$q),
-        .clock(line$2$clock)
-    );
-    top$edges$0$a$add$s3_y line$3(
-        .d(line$3$d),
-        .q(line$3$q),
-        .clock(line$3$clock)
-    );
-    top$edges$0$a$add$s3_y line$4(
-        .d(line$4$d),
-        .q(line$4$q),
-        .clock(line$4$clock)
-    );
-    top$edges$0$a$add$s3_y line$5(
-        .d(line$5$d),
-        .q(line$5$q),
-        .clock(line$5$clock)
-    );
-    top$edges$0$a$add$s3_y line$6(
-        .d(line$6$d),
-        .q(line$6$q),
-        .clock(line$6$clock)
-    );
-    top$edges$0$a$add$s3_y line$7(
-        .d(line$7$d),
-        .q(line$7$q),
-        .clock(line$7$clock)
-    );
-    top$edges$0$a$add$s3_y line$8(
-        .d(line$8$d),
-        .q(line$8$q),
-        .clock(line$8$clock)
-    );
-    top$edges$0$a$add$s3_y line$9(
-        .d(line$9$d),
-        .q(line$9$q),
-        .clock(line$9$clock)
-    );
-    top$edges$0$a$add$s3_y line$10(
-        .d(line$10$d),
-        .q(line$10$q),
-        .clock(line$10$clock)
-    );
-    top$edges$0$a$add$s3_y line$11(
-        .d(line$11$d),
-        .q(line$11$q),
-        .clock(line$11$clock)
-    );
-    top$edges$0$a$add$s3_y line$12(
-        .d(line$12$d),
-        .q(line$12$q),
-        .clock(line$12$clock)
-    );
-    top$edges$0$a$add$s3_y line$13(
-        .d(line$13$d),
-        .q(line$13$q),
-        .clock(line$13$clock)
-    );
-    top$edges$0$a$add$s3_y line$14(
-        .d(line$14$d),
-        .q(line$14$q),
-        .clock(line$14$clock)
-    );
-    top$edges$0$a$add$s3_y line$15(
-        .d(line$15$d),
-        .q(line$15$q),
-        .clock(line$15$clock)
-    );
-    top$edges$0$a$add$s3_y line$16(
-        .d(line$16$d),
-        .q(line$16$q),
-        .clock(line$16$clock)
-    );
-    top$edges$0$a$add$s3_y line$17(
-        .d(line$17$d),
-        .q(line$17$q),
-        .clock(line$17$clock)
-    );
-    top$edges$0$a$add$s3_y line$18(
-        .d(line$18$d),
-        .q(line$18$q),
-        .clock(line$18$clock)
-    );
-    top$edges$0$a$add$s3_y line$19(
-        .d(line$19$d),
-        .q(line$19$q),
-        .clock(line$19$clock)
-    );
-    top$edges$0$a$add$s3_y line$20(
-        .d(line$20$d),
-        .q(line$20$q),
-        .clock(line$20$clock)
-    );
-    top$edges$0$a$add$s3_y line$21(
-        .d(line$21$d),
-        .q(line$21$q),
-        .clock(line$21$clock)
-    );
-    top$edges$0$a$add$s3_y line$22(
-        .d(line$22$d),
-        .q(line$22$q),
-        .clock(line$22$clock)
-    );
-    top$edges$0$a$add$s3_y line$23(
-        .d(line$23$d),
-        .q(line$23$q),
-        .clock(line$23$clock)
-    );
-    top$edges$0$a$add$s3_y line$24(
-        .d(line$24$d),
-        .q(line$24$q),
-        .clock(line$24$clock)
-    );
-    top$edges$0$a$add$s3_y line$25(
-        .d(line$25$d),
-        .q(line$25$q),
-        .clock(line$25$clock)
-    );
-    top$edges$0$a$add$s3_y line$26(
-        .d(line$26$d),
-        .q(line$26$q),
-        .clock(line$26$clock)
-    );
-    top$edges$0$a$add$s3_y line$27(
-        .d(line$27$d),
-        .q(line$27$q),
-        .clock(line$27$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        line$0$clock = clock;
-        line$0$d = d;
-        line$1$clock = clock;
-        line$1$d = d;
-        line$2$clock = clock;
-        line$2$d = d;
-        line$3$clock = clock;
-        line$3$d = d;
-        line$4$clock = clock;
-        line$4$d = d;
-        line$5$clock = clock;
-        line$5$d = d;
-        line$6$clock = clock;
-        line$6$d = d;
-        line$7$clock = clock;
-        line$7$d = d;
-        line$8$clock = clock;
-        line$8$d = d;
-        line$9$clock = clock;
-        line$9$d = d;
-        line$10$clock = clock;
-        line$10$d = d;
-        line$11$clock = clock;
-        line$11$d = d;
-        line$12$clock = clock;
-        line$12$d = d;
-        line$13$clock = clock;
-        line$13$d = d;
-        line$14$clock = clock;
-        line$14$d = d;
-        line$15$clock = clock;
-        line$15$d = d;
-        line$16$clock = clock;
-        line$16$d = d;
-        line$17$clock = clock;
-        line$17$d = d;
-        line$18$clock = clock;
-        line$18$d = d;
-        line$19$clock = clock;
-        line$19$d = d;
-        line$20$clock = clock;
-        line$20$d = d;
-        line$21$clock = clock;
-        line$21$d = d;
-        line$22$clock = clock;
-        line$22$d = d;
-        line$23$clock = clock;
-        line$23$d = d;
-        line$24$clock = clock;
-        line$24$d = d;
-        line$25$clock = clock;
-        line$25$d = d;
-        line$26$clock = clock;
-        line$26$d = d;
-        line$27$clock = clock;
-        line$27$d = d;
-        line$0$d = line$1$q;
-        line$1$d = line$2$q;
-        line$2$d = line$3$q;
-        line$3$d = line$4$q;
-        line$4$d = line$5$q;
-        line$5$d = line$6$q;
-        line$6$d = line$7$q;
-        line$7$d = line$8$q;
-        line$8$d = line$9$q;
-        line$9$d = line$10$q;
-        line$10$d = line$11$q;
-        line$11$d = line$12$q;
-        line$12$d = line$13$q;
-        line$13$d = line$14$q;
-        line$14$d = line$15$q;
-        line$15$d = line$16$q;
-        line$16$d = line$17$q;
-        line$17$d = line$18$q;
-        line$18$d = line$19$q;
-        line$19$d = line$20$q;
-        line$20$d = line$21$q;
-        line$21$d = line$22$q;
-        line$22$d = line$23$q;
-        line$23$d = line$24$q;
-        line$24$d = line$25$q;
-        line$25$d = line$26$q;
-        line$26$d = line$27$q;
-        q = line$0$q;
-    end
-    
-endmodule // top$v_ex_wait$0
-
-
-module top$v_exact_wait(clock,d,q);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  d;
-    output reg  q;
-    
-    // Stub signals
-    reg  line$0$d;
-    wire  line$0$q;
-    reg  line$0$clock;
-    reg  line$1$d;
-    wire  line$1$q;
-    reg  line$1$clock;
-    reg  line$2$d;
-    wire  line$2$q;
-    reg  line$2$clock;
-    reg  line$3$d;
-    wire  line$3$q;
-    reg  line$3$clock;
-    reg  line$4$d;
-    wire  line$4$q;
-    reg  line$4$clock;
-    reg  line$5$d;
-    wire  line$5$q;
-    reg  line$5$clock;
-    reg  line$6$d;
-    wire  line$6$q;
-    reg  line$6$clock;
-    reg  line$7$d;
-    wire  line$7$q;
-    reg  line$7$clock;
-    reg  line$8$d;
-    wire  line$8$q;
-    reg  line$8$clock;
-    reg  line$9$d;
-    wire  line$9$q;
-    reg  line$9$clock;
-    reg  line$10$d;
-    wire  line$10$q;
-    reg  line$10$clock;
-    reg  line$11$d;
-    wire  line$11$q;
-    reg  line$11$clock;
-    reg  line$12$d;
-    wire  line$12$q;
-    reg  line$12$clock;
-    reg  line$13$d;
-    wire  line$13$q;
-    reg  line$13$clock;
-    reg  line$14$d;
-    wire  line$14$q;
-    reg  line$14$clock;
-    reg  line$15$d;
-    wire  line$15$q;
-    reg  line$15$clock;
-    reg  line$16$d;
-    wire  line$16$q;
-    reg  line$16$clock;
-    reg  line$17$d;
-    wire  line$17$q;
-    reg  line$17$clock;
-    reg  line$18$d;
-    wire  line$18$q;
-    reg  line$18$clock;
-    reg  line$19$d;
-    wire  line$19$q;
-    reg  line$19$clock;
-    reg  line$20$d;
-    wire  line$20$q;
-    reg  line$20$clock;
-    reg  line$21$d;
-    wire  line$21$q;
-    reg  line$21$clock;
-    reg  line$22$d;
-    wire  line$22$q;
-    reg  line$22$clock;
-    reg  line$23$d;
-    wire  line$23$q;
-    reg  line$23$clock;
-    reg  line$24$d;
-    wire  line$24$q;
-    reg  line$24$clock;
-    reg  line$25$d;
-    wire  line$25$q;
-    reg  line$25$clock;
-    reg  line$26$d;
-    wire  line$26$q;
-    reg  line$26$clock;
-    reg  line$27$d;
-    wire  line$27$q;
-    reg  line$27$clock;
-    reg  line$28$d;
-    wire  line$28$q;
-    reg  line$28$clock;
-    
-    // Sub module instances
-    top$edges$0$a$add$s1_eff_sub line$0(
-        .d(line$0$d),
-        .q(line$0$q),
-        .clock(line$0$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$1(
-        .d(line$1$d),
-        .q(line$1$q),
-        .clock(line$1$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$2(
-        .d(line$2$d),
-        .q(line$2$q),
-        .clock(line$2$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$3(
-        .d(line$3$d),
-        .q(line$3$q),
-        .clock(line$3$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$4(
-        .d(line$4$d),
-        .q(line$4$q),
-        .clock(line$4$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$5(
-        .d(line$5$d),
-        .q(line$5$q),
-        .clock(line$5$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$6(
-        .d(line$6$d),
-        .q(line$6$q),
-        .clock(line$6$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$7(
-        .d(line$7$d),
-        .q(line$7$q),
-        .clock(line$7$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$8(
-        .d(line$8$d),
-        .q(line$8$q),
-        .clock(line$8$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$9(
-        .d(line$9$d),
-        .q(line$9$q),
-        .clock(line$9$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$10(
-        .d(line$10$d),
-        .q(line$10$q),
-        .clock(line$10$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$11(
-        .d(line$11$d),
-        .q(line$11$q),
-        .clock(line$11$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$12(
-        .d(line$12$d),
-        .q(line$12$q),
-        .clock(line$12$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$13(
-        .d(line$13$d),
-        .q(line$13$q),
-        .clock(line$13$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$14(
-        .d(line$14$d),
-        .q(line$14$q),
-        .clock(line$14$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$15(
-        .d(line$15$d),
-        .q(line$15$q),
-        .clock(line$15$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$16(
-        .d(line$16$d),
-        .q(line$16$q),
-        .clock(line$16$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$17(
-        .d(line$17$d),
-        .q(line$17$q),
-        .clock(line$17$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$18(
-        .d(line$18$d),
-        .q(line$18$q),
-        .clock(line$18$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$19(
-        .d(line$19$d),
-        .q(line$19$q),
-        .clock(line$19$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$20(
-        .d(line$20$d),
-        .q(line$20$q),
-        .clock(line$20$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$21(
-        .d(line$21$d),
-        .q(line$21$q),
-        .clock(line$21$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$22(
-        .d(line$22$d),
-        .q(line$22$q),
-        .clock(line$22$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$23(
-        .d(line$23$d),
-        .q(line$23$q),
-        .clock(line$23$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$24(
-        .d(line$24$d),
-        .q(line$24$q),
-        .clock(line$24$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$25(
-        .d(line$25$d),
-        .q(line$25$q),
-        .clock(line$25$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$26(
-        .d(line$26$d),
-        .q(line$26$q),
-        .clock(line$26$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$27(
-        .d(line$27$d),
-        .q(line$27$q),
-        .clock(line$27$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$28(
-        .d(line$28$d),
-        .q(line$28$q),
-        .clock(line$28$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        line$0$clock = clock;
-        line$0$d = d;
-        line$1$clock = clock;
-        line$1$d = d;
-        line$2$clock = clock;
-        line$2$d = d;
-        line$3$clock = clock;
-        line$3$d = d;
-        line$4$clock = clock;
-        line$4$d = d;
-        line$5$clock = clock;
-        line$5$d = d;
-        line$6$clock = clock;
-        line$6$d = d;
-        line$7$clock = clock;
-        line$7$d = d;
-        line$8$clock = clock;
-        line$8$d = d;
-        line$9$clock = clock;
-        line$9$d = d;
-        line$10$clock = clock;
-        line$10$d = d;
-        line$11$clock = clock;
-        line$11$d = d;
-        line$12$clock = clock;
-        line$12$d = d;
-        line$13$clock = clock;
-        line$13$d = d;
-        line$14$clock = clock;
-        line$14$d = d;
-        line$15$clock = clock;
-        line$15$d = d;
-        line$16$clock = clock;
-        line$16$d = d;
-        line$17$clock = clock;
-        line$17$d = d;
-        line$18$clock = clock;
-        line$18$d = d;
-        line$19$clock = clock;
-        line$19$d = d;
-        line$20$clock = clock;
-        line$20$d = d;
-        line$21$clock = clock;
-        line$21$d = d;
-        line$22$clock = clock;
-        line$22$d = d;
-        line$23$clock = clock;
-        line$23$d = d;
-        line$24$clock = clock;
-        line$24$d = d;
-        line$25$clock = clock;
-        line$25$d = d;
-        line$26$clock = clock;
-        line$26$d = d;
-        line$27$clock = clock;
-        line$27$d = d;
-        line$28$clock = clock;
-        line$28$d = d;
-        line$0$d = line$1$q;
-        line$1$d = line$2$q;
-        line$2$d = line$3$q;
-        line$3$d = line$4$q;
-        line$4$d = line$5$q;
-        line$5$d = line$6$q;
-        line$6$d = line$7$q;
-        line$7$d = line$8$q;
-        line$8$d = line$9$q;
-        line$9$d = line$10$q;
-        line$10$d = line$11$q;
-        line$11$d = line$12$q;
-        line$12$d = line$13$q;
-        line$13$d = line$14$q;
-        line$14$d = line$15$q;
-        line$15$d = line$16$q;
-        line$16$d = line$17$q;
-        line$17$d = line$18$q;
-        line$18$d = line$19$q;
-        line$19$d = line$20$q;
-        line$20$d = line$21$q;
-        line$21$d = line$22$q;
-        line$22$d = line$23$q;
-        line$23$d = line$24$q;
-        line$24$d = line$25$q;
-        line$25$d = line$26$q;
-        line$26$d = line$27$q;
-        line$27$d = line$28$q;
-        q = line$0$q;
-    end
-    
-endmodule // top$v_exact_wait
 
 
 module top$v_x_wait$0(clock,d,q);
@@ -13043,206 +9180,62 @@ module top$v_x_wait$0(clock,d,q);
     reg  [31:0] line$10$d;
     wire  [31:0] line$10$q;
     reg  line$10$clock;
-    reg  [31:0] line$11$d;
-    wire  [31:0] line$11$q;
-    reg  line$11$clock;
-    reg  [31:0] line$12$d;
-    wire  [31:0] line$12$q;
-    reg  line$12$clock;
-    reg  [31:0] line$13$d;
-    wire  [31:0] line$13$q;
-    reg  line$13$clock;
-    reg  [31:0] line$14$d;
-    wire  [31:0] line$14$q;
-    reg  line$14$clock;
-    reg  [31:0] line$15$d;
-    wire  [31:0] line$15$q;
-    reg  line$15$clock;
-    reg  [31:0] line$16$d;
-    wire  [31:0] line$16$q;
-    reg  line$16$clock;
-    reg  [31:0] line$17$d;
-    wire  [31:0] line$17$q;
-    reg  line$17$clock;
-    reg  [31:0] line$18$d;
-    wire  [31:0] line$18$q;
-    reg  line$18$clock;
-    reg  [31:0] line$19$d;
-    wire  [31:0] line$19$q;
-    reg  line$19$clock;
-    reg  [31:0] line$20$d;
-    wire  [31:0] line$20$q;
-    reg  line$20$clock;
-    reg  [31:0] line$21$d;
-    wire  [31:0] line$21$q;
-    reg  line$21$clock;
-    reg  [31:0] line$22$d;
-    wire  [31:0] line$22$q;
-    reg  line$22$clock;
-    reg  [31:0] line$23$d;
-    wire  [31:0] line$23$q;
-    reg  line$23$clock;
-    reg  [31:0] line$24$d;
-    wire  [31:0] line$24$q;
-    reg  line$24$clock;
-    reg  [31:0] line$25$d;
-    wire  [31:0] line$25$q;
-    reg  line$25$clock;
-    reg  [31:0] line$26$d;
-    wire  [31:0] line$26$q;
-    reg  line$26$clock;
-    reg  [31:0] line$27$d;
-    wire  [31:0] line$27$q;
-    reg  line$27$clock;
-    reg  [31:0] line$28$d;
-    wire  [31:0] line$28$q;
-    reg  line$28$clock;
     
     // Sub module instances
-    top$edges$0$a$add$s3_y line$0(
+    top$aerr$s3_y line$0(
         .d(line$0$d),
         .q(line$0$q),
         .clock(line$0$clock)
     );
-    top$edges$0$a$add$s3_y line$1(
+    top$aerr$s3_y line$1(
         .d(line$1$d),
         .q(line$1$q),
         .clock(line$1$clock)
     );
-    top$edges$0$a$add$s3_y line$2(
+    top$aerr$s3_y line$2(
         .d(line$2$d),
         .q(line$2$q),
         .clock(line$2$clock)
     );
-    top$edges$0$a$add$s3_y line$3(
+    top$aerr$s3_y line$3(
         .d(line$3$d),
         .q(line$3$q),
         .clock(line$3$clock)
     );
-    top$edges$0$a$add$s3_y line$4(
+    top$aerr$s3_y line$4(
         .d(line$4$d),
         .q(line$4$q),
         .clock(line$4$clock)
     );
-    top$edges$0$a$add$s3_y line$5(
+    top$aerr$s3_y line$5(
         .d(line$5$d),
         .q(line$5$q),
         .clock(line$5$clock)
     );
-    top$edges$0$a$add$s3_y line$6(
+    top$aerr$s3_y line$6(
         .d(line$6$d),
         .q(line$6$q),
         .clock(line$6$clock)
     );
-    top$edges$0$a$add$s3_y line$7(
+    top$aerr$s3_y line$7(
         .d(line$7$d),
         .q(line$7$q),
         .clock(line$7$clock)
     );
-    top$edges$0$a$add$s3_y line$8(
+    top$aerr$s3_y line$8(
         .d(line$8$d),
         .q(line$8$q),
         .clock(line$8$clock)
     );
-    top$edges$0$a$add$s3_y line$9(
+    top$aerr$s3_y line$9(
         .d(line$9$d),
         .q(line$9$q),
         .clock(line$9$clock)
     );
-    top$edges$0$a$add$s3_y line$10(
+    top$aerr$s3_y line$10(
         .d(line$10$d),
         .q(line$10$q),
         .clock(line$10$clock)
-    );
-    top$edges$0$a$add$s3_y line$11(
-        .d(line$11$d),
-        .q(line$11$q),
-        .clock(line$11$clock)
-    );
-    top$edges$0$a$add$s3_y line$12(
-        .d(line$12$d),
-        .q(line$12$q),
-        .clock(line$12$clock)
-    );
-    top$edges$0$a$add$s3_y line$13(
-        .d(line$13$d),
-        .q(line$13$q),
-        .clock(line$13$clock)
-    );
-    top$edges$0$a$add$s3_y line$14(
-        .d(line$14$d),
-        .q(line$14$q),
-        .clock(line$14$clock)
-    );
-    top$edges$0$a$add$s3_y line$15(
-        .d(line$15$d),
-        .q(line$15$q),
-        .clock(line$15$clock)
-    );
-    top$edges$0$a$add$s3_y line$16(
-        .d(line$16$d),
-        .q(line$16$q),
-        .clock(line$16$clock)
-    );
-    top$edges$0$a$add$s3_y line$17(
-        .d(line$17$d),
-        .q(line$17$q),
-        .clock(line$17$clock)
-    );
-    top$edges$0$a$add$s3_y line$18(
-        .d(line$18$d),
-        .q(line$18$q),
-        .clock(line$18$clock)
-    );
-    top$edges$0$a$add$s3_y line$19(
-        .d(line$19$d),
-        .q(line$19$q),
-        .clock(line$19$clock)
-    );
-    top$edges$0$a$add$s3_y line$20(
-        .d(line$20$d),
-        .q(line$20$q),
-        .clock(line$20$clock)
-    );
-    top$edges$0$a$add$s3_y line$21(
-        .d(line$21$d),
-        .q(line$21$q),
-        .clock(line$21$clock)
-    );
-    top$edges$0$a$add$s3_y line$22(
-        .d(line$22$d),
-        .q(line$22$q),
-        .clock(line$22$clock)
-    );
-    top$edges$0$a$add$s3_y line$23(
-        .d(line$23$d),
-        .q(line$23$q),
-        .clock(line$23$clock)
-    );
-    top$edges$0$a$add$s3_y line$24(
-        .d(line$24$d),
-        .q(line$24$q),
-        .clock(line$24$clock)
-    );
-    top$edges$0$a$add$s3_y line$25(
-        .d(line$25$d),
-        .q(line$25$q),
-        .clock(line$25$clock)
-    );
-    top$edges$0$a$add$s3_y line$26(
-        .d(line$26$d),
-        .q(line$26$q),
-        .clock(line$26$clock)
-    );
-    top$edges$0$a$add$s3_y line$27(
-        .d(line$27$d),
-        .q(line$27$q),
-        .clock(line$27$clock)
-    );
-    top$edges$0$a$add$s3_y line$28(
-        .d(line$28$d),
-        .q(line$28$q),
-        .clock(line$28$clock)
     );
     
     // Update code
@@ -13269,42 +9262,6 @@ module top$v_x_wait$0(clock,d,q);
         line$9$d = d;
         line$10$clock = clock;
         line$10$d = d;
-        line$11$clock = clock;
-        line$11$d = d;
-        line$12$clock = clock;
-        line$12$d = d;
-        line$13$clock = clock;
-        line$13$d = d;
-        line$14$clock = clock;
-        line$14$d = d;
-        line$15$clock = clock;
-        line$15$d = d;
-        line$16$clock = clock;
-        line$16$d = d;
-        line$17$clock = clock;
-        line$17$d = d;
-        line$18$clock = clock;
-        line$18$d = d;
-        line$19$clock = clock;
-        line$19$d = d;
-        line$20$clock = clock;
-        line$20$d = d;
-        line$21$clock = clock;
-        line$21$d = d;
-        line$22$clock = clock;
-        line$22$d = d;
-        line$23$clock = clock;
-        line$23$d = d;
-        line$24$clock = clock;
-        line$24$d = d;
-        line$25$clock = clock;
-        line$25$d = d;
-        line$26$clock = clock;
-        line$26$d = d;
-        line$27$clock = clock;
-        line$27$d = d;
-        line$28$clock = clock;
-        line$28$d = d;
         line$0$d = line$1$q;
         line$1$d = line$2$q;
         line$2$d = line$3$q;
@@ -13315,24 +9272,6 @@ module top$v_x_wait$0(clock,d,q);
         line$7$d = line$8$q;
         line$8$d = line$9$q;
         line$9$d = line$10$q;
-        line$10$d = line$11$q;
-        line$11$d = line$12$q;
-        line$12$d = line$13$q;
-        line$13$d = line$14$q;
-        line$14$d = line$15$q;
-        line$15$d = line$16$q;
-        line$16$d = line$17$q;
-        line$17$d = line$18$q;
-        line$18$d = line$19$q;
-        line$19$d = line$20$q;
-        line$20$d = line$21$q;
-        line$21$d = line$22$q;
-        line$22$d = line$23$q;
-        line$23$d = line$24$q;
-        line$24$d = line$25$q;
-        line$25$d = line$26$q;
-        line$26$d = line$27$q;
-        line$27$d = line$28$q;
         q = line$0$q;
     end
     
@@ -13497,865 +9436,257 @@ module top$valid_wait(clock,d,q);
     reg  line$49$d;
     wire  line$49$q;
     reg  line$49$clock;
-    reg  line$50$d;
-    wire  line$50$q;
-    reg  line$50$clock;
-    reg  line$51$d;
-    wire  line$51$q;
-    reg  line$51$clock;
-    reg  line$52$d;
-    wire  line$52$q;
-    reg  line$52$clock;
-    reg  line$53$d;
-    wire  line$53$q;
-    reg  line$53$clock;
-    reg  line$54$d;
-    wire  line$54$q;
-    reg  line$54$clock;
-    reg  line$55$d;
-    wire  line$55$q;
-    reg  line$55$clock;
-    reg  line$56$d;
-    wire  line$56$q;
-    reg  line$56$clock;
-    reg  line$57$d;
-    wire  line$57$q;
-    reg  line$57$clock;
-    reg  line$58$d;
-    wire  line$58$q;
-    reg  line$58$clock;
-    reg  line$59$d;
-    wire  line$59$q;
-    reg  line$59$clock;
-    reg  line$60$d;
-    wire  line$60$q;
-    reg  line$60$clock;
-    reg  line$61$d;
-    wire  line$61$q;
-    reg  line$61$clock;
-    reg  line$62$d;
-    wire  line$62$q;
-    reg  line$62$clock;
-    reg  line$63$d;
-    wire  line$63$q;
-    reg  line$63$clock;
-    reg  line$64$d;
-    wire  line$64$q;
-    reg  line$64$clock;
-    reg  line$65$d;
-    wire  line$65$q;
-    reg  line$65$clock;
-    reg  line$66$d;
-    wire  line$66$q;
-    reg  line$66$clock;
-    reg  line$67$d;
-    wire  line$67$q;
-    reg  line$67$clock;
-    reg  line$68$d;
-    wire  line$68$q;
-    reg  line$68$clock;
-    reg  line$69$d;
-    wire  line$69$q;
-    reg  line$69$clock;
-    reg  line$70$d;
-    wire  line$70$q;
-    reg  line$70$clock;
-    reg  line$71$d;
-    wire  line$71$q;
-    reg  line$71$clock;
-    reg  line$72$d;
-    wire  line$72$q;
-    reg  line$72$clock;
-    reg  line$73$d;
-    wire  line$73$q;
-    reg  line$73$clock;
-    reg  line$74$d;
-    wire  line$74$q;
-    reg  line$74$clock;
-    reg  line$75$d;
-    wire  line$75$q;
-    reg  line$75$clock;
-    reg  line$76$d;
-    wire  line$76$q;
-    reg  line$76$clock;
-    reg  line$77$d;
-    wire  line$77$q;
-    reg  line$77$clock;
-    reg  line$78$d;
-    wire  line$78$q;
-    reg  line$78$clock;
-    reg  line$79$d;
-    wire  line$79$q;
-    reg  line$79$clock;
-    reg  line$80$d;
-    wire  line$80$q;
-    reg  line$80$clock;
-    reg  line$81$d;
-    wire  line$81$q;
-    reg  line$81$clock;
-    reg  line$82$d;
-    wire  line$82$q;
-    reg  line$82$clock;
-    reg  line$83$d;
-    wire  line$83$q;
-    reg  line$83$clock;
-    reg  line$84$d;
-    wire  line$84$q;
-    reg  line$84$clock;
-    reg  line$85$d;
-    wire  line$85$q;
-    reg  line$85$clock;
-    reg  line$86$d;
-    wire  line$86$q;
-    reg  line$86$clock;
-    reg  line$87$d;
-    wire  line$87$q;
-    reg  line$87$clock;
-    reg  line$88$d;
-    wire  line$88$q;
-    reg  line$88$clock;
-    reg  line$89$d;
-    wire  line$89$q;
-    reg  line$89$clock;
-    reg  line$90$d;
-    wire  line$90$q;
-    reg  line$90$clock;
-    reg  line$91$d;
-    wire  line$91$q;
-    reg  line$91$clock;
-    reg  line$92$d;
-    wire  line$92$q;
-    reg  line$92$clock;
-    reg  line$93$d;
-    wire  line$93$q;
-    reg  line$93$clock;
-    reg  line$94$d;
-    wire  line$94$q;
-    reg  line$94$clock;
-    reg  line$95$d;
-    wire  line$95$q;
-    reg  line$95$clock;
-    reg  line$96$d;
-    wire  line$96$q;
-    reg  line$96$clock;
-    reg  line$97$d;
-    wire  line$97$q;
-    reg  line$97$clock;
-    reg  line$98$d;
-    wire  line$98$q;
-    reg  line$98$clock;
-    reg  line$99$d;
-    wire  line$99$q;
-    reg  line$99$clock;
-    reg  line$100$d;
-    wire  line$100$q;
-    reg  line$100$clock;
-    reg  line$101$d;
-    wire  line$101$q;
-    reg  line$101$clock;
-    reg  line$102$d;
-    wire  line$102$q;
-    reg  line$102$clock;
-    reg  line$103$d;
-    wire  line$103$q;
-    reg  line$103$clock;
-    reg  line$104$d;
-    wire  line$104$q;
-    reg  line$104$clock;
-    reg  line$105$d;
-    wire  line$105$q;
-    reg  line$105$clock;
-    reg  line$106$d;
-    wire  line$106$q;
-    reg  line$106$clock;
-    reg  line$107$d;
-    wire  line$107$q;
-    reg  line$107$clock;
-    reg  line$108$d;
-    wire  line$108$q;
-    reg  line$108$clock;
-    reg  line$109$d;
-    wire  line$109$q;
-    reg  line$109$clock;
-    reg  line$110$d;
-    wire  line$110$q;
-    reg  line$110$clock;
-    reg  line$111$d;
-    wire  line$111$q;
-    reg  line$111$clock;
-    reg  line$112$d;
-    wire  line$112$q;
-    reg  line$112$clock;
-    reg  line$113$d;
-    wire  line$113$q;
-    reg  line$113$clock;
-    reg  line$114$d;
-    wire  line$114$q;
-    reg  line$114$clock;
-    reg  line$115$d;
-    wire  line$115$q;
-    reg  line$115$clock;
-    reg  line$116$d;
-    wire  line$116$q;
-    reg  line$116$clock;
-    reg  line$117$d;
-    wire  line$117$q;
-    reg  line$117$clock;
-    reg  line$118$d;
-    wire  line$118$q;
-    reg  line$118$clock;
-    reg  line$119$d;
-    wire  line$119$q;
-    reg  line$119$clock;
-    reg  line$120$d;
-    wire  line$120$q;
-    reg  line$120$clock;
-    reg  line$121$d;
-    wire  line$121$q;
-    reg  line$121$clock;
-    reg  line$122$d;
-    wire  line$122$q;
-    reg  line$122$clock;
-    reg  line$123$d;
-    wire  line$123$q;
-    reg  line$123$clock;
-    reg  line$124$d;
-    wire  line$124$q;
-    reg  line$124$clock;
-    reg  line$125$d;
-    wire  line$125$q;
-    reg  line$125$clock;
     
     // Sub module instances
-    top$edges$0$a$add$s1_eff_sub line$0(
+    top$aerr$s1_eff_sub line$0(
         .d(line$0$d),
         .q(line$0$q),
         .clock(line$0$clock)
     );
-    top$edges$0$a$add$s1_eff_sub line$1(
+    top$aerr$s1_eff_sub line$1(
         .d(line$1$d),
         .q(line$1$q),
         .clock(line$1$clock)
     );
-    top$edges$0$a$add$s1_eff_sub line$2(
+    top$aerr$s1_eff_sub line$2(
         .d(line$2$d),
         .q(line$2$q),
         .clock(line$2$clock)
     );
-    top$edges$0$a$add$s1_eff_sub line$3(
+    top$aerr$s1_eff_sub line$3(
         .d(line$3$d),
         .q(line$3$q),
         .clock(line$3$clock)
     );
-    top$edges$0$a$add$s1_eff_sub line$4(
+    top$aerr$s1_eff_sub line$4(
         .d(line$4$d),
         .q(line$4$q),
         .clock(line$4$clock)
     );
-    top$edges$0$a$add$s1_eff_sub line$5(
+    top$aerr$s1_eff_sub line$5(
         .d(line$5$d),
         .q(line$5$q),
         .clock(line$5$clock)
     );
-    top$edges$0$a$add$s1_eff_sub line$6(
+    top$aerr$s1_eff_sub line$6(
         .d(line$6$d),
         .q(line$6$q),
         .clock(line$6$clock)
     );
-    top$edges$0$a$add$s1_eff_sub line$7(
+    top$aerr$s1_eff_sub line$7(
         .d(line$7$d),
         .q(line$7$q),
         .clock(line$7$clock)
     );
-    top$edges$0$a$add$s1_eff_sub line$8(
+    top$aerr$s1_eff_sub line$8(
         .d(line$8$d),
         .q(line$8$q),
         .clock(line$8$clock)
     );
-    top$edges$0$a$add$s1_eff_sub line$9(
+    top$aerr$s1_eff_sub line$9(
         .d(line$9$d),
         .q(line$9$q),
         .clock(line$9$clock)
     );
-    top$edges$0$a$add$s1_eff_sub line$10(
+    top$aerr$s1_eff_sub line$10(
         .d(line$10$d),
         .q(line$10$q),
         .clock(line$10$clock)
     );
-    top$edges$0$a$add$s1_eff_sub line$11(
+    top$aerr$s1_eff_sub line$11(
         .d(line$11$d),
         .q(line$11$q),
         .clock(line$11$clock)
     );
-    top$edges$0$a$add$s1_eff_sub line$12(
+    top$aerr$s1_eff_sub line$12(
         .d(line$12$d),
         .q(line$12$q),
         .clock(line$12$clock)
     );
-    top$edges$0$a$add$s1_eff_sub line$13(
+    top$aerr$s1_eff_sub line$13(
         .d(line$13$d),
         .q(line$13$q),
         .clock(line$13$clock)
     );
-    top$edges$0$a$add$s1_eff_sub line$14(
+    top$aerr$s1_eff_sub line$14(
         .d(line$14$d),
         .q(line$14$q),
         .clock(line$14$clock)
     );
-    top$edges$0$a$add$s1_eff_sub line$15(
+    top$aerr$s1_eff_sub line$15(
         .d(line$15$d),
         .q(line$15$q),
         .clock(line$15$clock)
     );
-    top$edges$0$a$add$s1_eff_sub line$16(
+    top$aerr$s1_eff_sub line$16(
         .d(line$16$d),
         .q(line$16$q),
         .clock(line$16$clock)
     );
-    top$edges$0$a$add$s1_eff_sub line$17(
+    top$aerr$s1_eff_sub line$17(
         .d(line$17$d),
         .q(line$17$q),
         .clock(line$17$clock)
     );
-    top$edges$0$a$add$s1_eff_sub line$18(
+    top$aerr$s1_eff_sub line$18(
         .d(line$18$d),
         .q(line$18$q),
         .clock(line$18$clock)
     );
-    top$edges$0$a$add$s1_eff_sub line$19(
+    top$aerr$s1_eff_sub line$19(
         .d(line$19$d),
         .q(line$19$q),
         .clock(line$19$clock)
     );
-    top$edges$0$a$add$s1_eff_sub line$20(
+    top$aerr$s1_eff_sub line$20(
         .d(line$20$d),
         .q(line$20$q),
         .clock(line$20$clock)
     );
-    top$edges$0$a$add$s1_eff_sub line$21(
+    top$aerr$s1_eff_sub line$21(
         .d(line$21$d),
         .q(line$21$q),
         .clock(line$21$clock)
     );
-    top$edges$0$a$add$s1_eff_sub line$22(
+    top$aerr$s1_eff_sub line$22(
         .d(line$22$d),
         .q(line$22$q),
         .clock(line$22$clock)
     );
-    top$edges$0$a$add$s1_eff_sub line$23(
+    top$aerr$s1_eff_sub line$23(
         .d(line$23$d),
         .q(line$23$q),
         .clock(line$23$clock)
     );
-    top$edges$0$a$add$s1_eff_sub line$24(
+    top$aerr$s1_eff_sub line$24(
         .d(line$24$d),
         .q(line$24$q),
         .clock(line$24$clock)
     );
-    top$edges$0$a$add$s1_eff_sub line$25(
+    top$aerr$s1_eff_sub line$25(
         .d(line$25$d),
         .q(line$25$q),
         .clock(line$25$clock)
     );
-    top$edges$0$a$add$s1_eff_sub line$26(
+    top$aerr$s1_eff_sub line$26(
         .d(line$26$d),
         .q(line$26$q),
         .clock(line$26$clock)
     );
-    top$edges$0$a$add$s1_eff_sub line$27(
+    top$aerr$s1_eff_sub line$27(
         .d(line$27$d),
         .q(line$27$q),
         .clock(line$27$clock)
     );
-    top$edges$0$a$add$s1_eff_sub line$28(
+    top$aerr$s1_eff_sub line$28(
         .d(line$28$d),
         .q(line$28$q),
         .clock(line$28$clock)
     );
-    top$edges$0$a$add$s1_eff_sub line$29(
+    top$aerr$s1_eff_sub line$29(
         .d(line$29$d),
         .q(line$29$q),
         .clock(line$29$clock)
     );
-    top$edges$0$a$add$s1_eff_sub line$30(
+    top$aerr$s1_eff_sub line$30(
         .d(line$30$d),
         .q(line$30$q),
         .clock(line$30$clock)
     );
-    top$edges$0$a$add$s1_eff_sub line$31(
+    top$aerr$s1_eff_sub line$31(
         .d(line$31$d),
         .q(line$31$q),
         .clock(line$31$clock)
     );
-    top$edges$0$a$add$s1_eff_sub line$32(
+    top$aerr$s1_eff_sub line$32(
         .d(line$32$d),
         .q(line$32$q),
         .clock(line$32$clock)
     );
-    top$edges$0$a$add$s1_eff_sub line$33(
+    top$aerr$s1_eff_sub line$33(
         .d(line$33$d),
         .q(line$33$q),
         .clock(line$33$clock)
     );
-    top$edges$0$a$add$s1_eff_sub line$34(
+    top$aerr$s1_eff_sub line$34(
         .d(line$34$d),
         .q(line$34$q),
         .clock(line$34$clock)
     );
-    top$edges$0$a$add$s1_eff_sub line$35(
+    top$aerr$s1_eff_sub line$35(
         .d(line$35$d),
         .q(line$35$q),
         .clock(line$35$clock)
     );
-    top$edges$0$a$add$s1_eff_sub line$36(
+    top$aerr$s1_eff_sub line$36(
         .d(line$36$d),
         .q(line$36$q),
         .clock(line$36$clock)
     );
-    top$edges$0$a$add$s1_eff_sub line$37(
+    top$aerr$s1_eff_sub line$37(
         .d(line$37$d),
         .q(line$37$q),
         .clock(line$37$clock)
     );
-    top$edges$0$a$add$s1_eff_sub line$38(
+    top$aerr$s1_eff_sub line$38(
         .d(line$38$d),
         .q(line$38$q),
         .clock(line$38$clock)
     );
-    top$edges$0$a$add$s1_eff_sub line$39(
+    top$aerr$s1_eff_sub line$39(
         .d(line$39$d),
         .q(line$39$q),
         .clock(line$39$clock)
     );
-    top$edges$0$a$add$s1_eff_sub line$40(
+    top$aerr$s1_eff_sub line$40(
         .d(line$40$d),
         .q(line$40$q),
         .clock(line$40$clock)
     );
-    top$edges$0$a$add$s1_eff_sub line$41(
+    top$aerr$s1_eff_sub line$41(
         .d(line$41$d),
         .q(line$41$q),
         .clock(line$41$clock)
     );
-    top$edges$0$a$add$s1_eff_sub line$42(
+    top$aerr$s1_eff_sub line$42(
         .d(line$42$d),
         .q(line$42$q),
         .clock(line$42$clock)
     );
-    top$edges$0$a$add$s1_eff_sub line$43(
+    top$aerr$s1_eff_sub line$43(
         .d(line$43$d),
         .q(line$43$q),
         .clock(line$43$clock)
     );
-    top$edges$0$a$add$s1_eff_sub line$44(
+    top$aerr$s1_eff_sub line$44(
         .d(line$44$d),
         .q(line$44$q),
         .clock(line$44$clock)
     );
-    top$edges$0$a$add$s1_eff_sub line$45(
+    top$aerr$s1_eff_sub line$45(
         .d(line$45$d),
         .q(line$45$q),
         .clock(line$45$clock)
     );
-    top$edges$0$a$add$s1_eff_sub line$46(
+    top$aerr$s1_eff_sub line$46(
         .d(line$46$d),
         .q(line$46$q),
         .clock(line$46$clock)
     );
-    top$edges$0$a$add$s1_eff_sub line$47(
+    top$aerr$s1_eff_sub line$47(
         .d(line$47$d),
         .q(line$47$q),
         .clock(line$47$clock)
     );
-    top$edges$0$a$add$s1_eff_sub line$48(
+    top$aerr$s1_eff_sub line$48(
         .d(line$48$d),
         .q(line$48$q),
         .clock(line$48$clock)
     );
-    top$edges$0$a$add$s1_eff_sub line$49(
+    top$aerr$s1_eff_sub line$49(
         .d(line$49$d),
         .q(line$49$q),
         .clock(line$49$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$50(
-        .d(line$50$d),
-        .q(line$50$q),
-        .clock(line$50$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$51(
-        .d(line$51$d),
-        .q(line$51$q),
-        .clock(line$51$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$52(
-        .d(line$52$d),
-        .q(line$52$q),
-        .clock(line$52$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$53(
-        .d(line$53$d),
-        .q(line$53$q),
-        .clock(line$53$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$54(
-        .d(line$54$d),
-        .q(line$54$q),
-        .clock(line$54$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$55(
-        .d(line$55$d),
-        .q(line$55$q),
-        .clock(line$55$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$56(
-        .d(line$56$d),
-        .q(line$56$q),
-        .clock(line$56$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$57(
-        .d(line$57$d),
-        .q(line$57$q),
-        .clock(line$57$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$58(
-        .d(line$58$d),
-        .q(line$58$q),
-        .clock(line$58$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$59(
-        .d(line$59$d),
-        .q(line$59$q),
-        .clock(line$59$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$60(
-        .d(line$60$d),
-        .q(line$60$q),
-        .clock(line$60$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$61(
-        .d(line$61$d),
-        .q(line$61$q),
-        .clock(line$61$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$62(
-        .d(line$62$d),
-        .q(line$62$q),
-        .clock(line$62$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$63(
-        .d(line$63$d),
-        .q(line$63$q),
-        .clock(line$63$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$64(
-        .d(line$64$d),
-        .q(line$64$q),
-        .clock(line$64$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$65(
-        .d(line$65$d),
-        .q(line$65$q),
-        .clock(line$65$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$66(
-        .d(line$66$d),
-        .q(line$66$q),
-        .clock(line$66$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$67(
-        .d(line$67$d),
-        .q(line$67$q),
-        .clock(line$67$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$68(
-        .d(line$68$d),
-        .q(line$68$q),
-        .clock(line$68$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$69(
-        .d(line$69$d),
-        .q(line$69$q),
-        .clock(line$69$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$70(
-        .d(line$70$d),
-        .q(line$70$q),
-        .clock(line$70$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$71(
-        .d(line$71$d),
-        .q(line$71$q),
-        .clock(line$71$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$72(
-        .d(line$72$d),
-        .q(line$72$q),
-        .clock(line$72$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$73(
-        .d(line$73$d),
-        .q(line$73$q),
-        .clock(line$73$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$74(
-        .d(line$74$d),
-        .q(line$74$q),
-        .clock(line$74$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$75(
-        .d(line$75$d),
-        .q(line$75$q),
-        .clock(line$75$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$76(
-        .d(line$76$d),
-        .q(line$76$q),
-        .clock(line$76$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$77(
-        .d(line$77$d),
-        .q(line$77$q),
-        .clock(line$77$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$78(
-        .d(line$78$d),
-        .q(line$78$q),
-        .clock(line$78$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$79(
-        .d(line$79$d),
-        .q(line$79$q),
-        .clock(line$79$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$80(
-        .d(line$80$d),
-        .q(line$80$q),
-        .clock(line$80$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$81(
-        .d(line$81$d),
-        .q(line$81$q),
-        .clock(line$81$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$82(
-        .d(line$82$d),
-        .q(line$82$q),
-        .clock(line$82$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$83(
-        .d(line$83$d),
-        .q(line$83$q),
-        .clock(line$83$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$84(
-        .d(line$84$d),
-        .q(line$84$q),
-        .clock(line$84$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$85(
-        .d(line$85$d),
-        .q(line$85$q),
-        .clock(line$85$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$86(
-        .d(line$86$d),
-        .q(line$86$q),
-        .clock(line$86$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$87(
-        .d(line$87$d),
-        .q(line$87$q),
-        .clock(line$87$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$88(
-        .d(line$88$d),
-        .q(line$88$q),
-        .clock(line$88$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$89(
-        .d(line$89$d),
-        .q(line$89$q),
-        .clock(line$89$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$90(
-        .d(line$90$d),
-        .q(line$90$q),
-        .clock(line$90$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$91(
-        .d(line$91$d),
-        .q(line$91$q),
-        .clock(line$91$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$92(
-        .d(line$92$d),
-        .q(line$92$q),
-        .clock(line$92$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$93(
-        .d(line$93$d),
-        .q(line$93$q),
-        .clock(line$93$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$94(
-        .d(line$94$d),
-        .q(line$94$q),
-        .clock(line$94$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$95(
-        .d(line$95$d),
-        .q(line$95$q),
-        .clock(line$95$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$96(
-        .d(line$96$d),
-        .q(line$96$q),
-        .clock(line$96$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$97(
-        .d(line$97$d),
-        .q(line$97$q),
-        .clock(line$97$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$98(
-        .d(line$98$d),
-        .q(line$98$q),
-        .clock(line$98$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$99(
-        .d(line$99$d),
-        .q(line$99$q),
-        .clock(line$99$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$100(
-        .d(line$100$d),
-        .q(line$100$q),
-        .clock(line$100$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$101(
-        .d(line$101$d),
-        .q(line$101$q),
-        .clock(line$101$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$102(
-        .d(line$102$d),
-        .q(line$102$q),
-        .clock(line$102$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$103(
-        .d(line$103$d),
-        .q(line$103$q),
-        .clock(line$103$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$104(
-        .d(line$104$d),
-        .q(line$104$q),
-        .clock(line$104$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$105(
-        .d(line$105$d),
-        .q(line$105$q),
-        .clock(line$105$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$106(
-        .d(line$106$d),
-        .q(line$106$q),
-        .clock(line$106$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$107(
-        .d(line$107$d),
-        .q(line$107$q),
-        .clock(line$107$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$108(
-        .d(line$108$d),
-        .q(line$108$q),
-        .clock(line$108$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$109(
-        .d(line$109$d),
-        .q(line$109$q),
-        .clock(line$109$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$110(
-        .d(line$110$d),
-        .q(line$110$q),
-        .clock(line$110$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$111(
-        .d(line$111$d),
-        .q(line$111$q),
-        .clock(line$111$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$112(
-        .d(line$112$d),
-        .q(line$112$q),
-        .clock(line$112$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$113(
-        .d(line$113$d),
-        .q(line$113$q),
-        .clock(line$113$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$114(
-        .d(line$114$d),
-        .q(line$114$q),
-        .clock(line$114$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$115(
-        .d(line$115$d),
-        .q(line$115$q),
-        .clock(line$115$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$116(
-        .d(line$116$d),
-        .q(line$116$q),
-        .clock(line$116$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$117(
-        .d(line$117$d),
-        .q(line$117$q),
-        .clock(line$117$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$118(
-        .d(line$118$d),
-        .q(line$118$q),
-        .clock(line$118$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$119(
-        .d(line$119$d),
-        .q(line$119$q),
-        .clock(line$119$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$120(
-        .d(line$120$d),
-        .q(line$120$q),
-        .clock(line$120$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$121(
-        .d(line$121$d),
-        .q(line$121$q),
-        .clock(line$121$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$122(
-        .d(line$122$d),
-        .q(line$122$q),
-        .clock(line$122$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$123(
-        .d(line$123$d),
-        .q(line$123$q),
-        .clock(line$123$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$124(
-        .d(line$124$d),
-        .q(line$124$q),
-        .clock(line$124$clock)
-    );
-    top$edges$0$a$add$s1_eff_sub line$125(
-        .d(line$125$d),
-        .q(line$125$q),
-        .clock(line$125$clock)
     );
     
     // Update code
@@ -14460,158 +9791,6 @@ module top$valid_wait(clock,d,q);
         line$48$d = d;
         line$49$clock = clock;
         line$49$d = d;
-        line$50$clock = clock;
-        line$50$d = d;
-        line$51$clock = clock;
-        line$51$d = d;
-        line$52$clock = clock;
-        line$52$d = d;
-        line$53$clock = clock;
-        line$53$d = d;
-        line$54$clock = clock;
-        line$54$d = d;
-        line$55$clock = clock;
-        line$55$d = d;
-        line$56$clock = clock;
-        line$56$d = d;
-        line$57$clock = clock;
-        line$57$d = d;
-        line$58$clock = clock;
-        line$58$d = d;
-        line$59$clock = clock;
-        line$59$d = d;
-        line$60$clock = clock;
-        line$60$d = d;
-        line$61$clock = clock;
-        line$61$d = d;
-        line$62$clock = clock;
-        line$62$d = d;
-        line$63$clock = clock;
-        line$63$d = d;
-        line$64$clock = clock;
-        line$64$d = d;
-        line$65$clock = clock;
-        line$65$d = d;
-        line$66$clock = clock;
-        line$66$d = d;
-        line$67$clock = clock;
-        line$67$d = d;
-        line$68$clock = clock;
-        line$68$d = d;
-        line$69$clock = clock;
-        line$69$d = d;
-        line$70$clock = clock;
-        line$70$d = d;
-        line$71$clock = clock;
-        line$71$d = d;
-        line$72$clock = clock;
-        line$72$d = d;
-        line$73$clock = clock;
-        line$73$d = d;
-        line$74$clock = clock;
-        line$74$d = d;
-        line$75$clock = clock;
-        line$75$d = d;
-        line$76$clock = clock;
-        line$76$d = d;
-        line$77$clock = clock;
-        line$77$d = d;
-        line$78$clock = clock;
-        line$78$d = d;
-        line$79$clock = clock;
-        line$79$d = d;
-        line$80$clock = clock;
-        line$80$d = d;
-        line$81$clock = clock;
-        line$81$d = d;
-        line$82$clock = clock;
-        line$82$d = d;
-        line$83$clock = clock;
-        line$83$d = d;
-        line$84$clock = clock;
-        line$84$d = d;
-        line$85$clock = clock;
-        line$85$d = d;
-        line$86$clock = clock;
-        line$86$d = d;
-        line$87$clock = clock;
-        line$87$d = d;
-        line$88$clock = clock;
-        line$88$d = d;
-        line$89$clock = clock;
-        line$89$d = d;
-        line$90$clock = clock;
-        line$90$d = d;
-        line$91$clock = clock;
-        line$91$d = d;
-        line$92$clock = clock;
-        line$92$d = d;
-        line$93$clock = clock;
-        line$93$d = d;
-        line$94$clock = clock;
-        line$94$d = d;
-        line$95$clock = clock;
-        line$95$d = d;
-        line$96$clock = clock;
-        line$96$d = d;
-        line$97$clock = clock;
-        line$97$d = d;
-        line$98$clock = clock;
-        line$98$d = d;
-        line$99$clock = clock;
-        line$99$d = d;
-        line$100$clock = clock;
-        line$100$d = d;
-        line$101$clock = clock;
-        line$101$d = d;
-        line$102$clock = clock;
-        line$102$d = d;
-        line$103$clock = clock;
-        line$103$d = d;
-        line$104$clock = clock;
-        line$104$d = d;
-        line$105$clock = clock;
-        line$105$d = d;
-        line$106$clock = clock;
-        line$106$d = d;
-        line$107$clock = clock;
-        line$107$d = d;
-        line$108$clock = clock;
-        line$108$d = d;
-        line$109$clock = clock;
-        line$109$d = d;
-        line$110$clock = clock;
-        line$110$d = d;
-        line$111$clock = clock;
-        line$111$d = d;
-        line$112$clock = clock;
-        line$112$d = d;
-        line$113$clock = clock;
-        line$113$d = d;
-        line$114$clock = clock;
-        line$114$d = d;
-        line$115$clock = clock;
-        line$115$d = d;
-        line$116$clock = clock;
-        line$116$d = d;
-        line$117$clock = clock;
-        line$117$d = d;
-        line$118$clock = clock;
-        line$118$d = d;
-        line$119$clock = clock;
-        line$119$d = d;
-        line$120$clock = clock;
-        line$120$d = d;
-        line$121$clock = clock;
-        line$121$d = d;
-        line$122$clock = clock;
-        line$122$d = d;
-        line$123$clock = clock;
-        line$123$d = d;
-        line$124$clock = clock;
-        line$124$d = d;
-        line$125$clock = clock;
-        line$125$d = d;
         line$0$d = line$1$q;
         line$1$d = line$2$q;
         line$2$d = line$3$q;
@@ -14661,83 +9840,269 @@ module top$valid_wait(clock,d,q);
         line$46$d = line$47$q;
         line$47$d = line$48$q;
         line$48$d = line$49$q;
-        line$49$d = line$50$q;
-        line$50$d = line$51$q;
-        line$51$d = line$52$q;
-        line$52$d = line$53$q;
-        line$53$d = line$54$q;
-        line$54$d = line$55$q;
-        line$55$d = line$56$q;
-        line$56$d = line$57$q;
-        line$57$d = line$58$q;
-        line$58$d = line$59$q;
-        line$59$d = line$60$q;
-        line$60$d = line$61$q;
-        line$61$d = line$62$q;
-        line$62$d = line$63$q;
-        line$63$d = line$64$q;
-        line$64$d = line$65$q;
-        line$65$d = line$66$q;
-        line$66$d = line$67$q;
-        line$67$d = line$68$q;
-        line$68$d = line$69$q;
-        line$69$d = line$70$q;
-        line$70$d = line$71$q;
-        line$71$d = line$72$q;
-        line$72$d = line$73$q;
-        line$73$d = line$74$q;
-        line$74$d = line$75$q;
-        line$75$d = line$76$q;
-        line$76$d = line$77$q;
-        line$77$d = line$78$q;
-        line$78$d = line$79$q;
-        line$79$d = line$80$q;
-        line$80$d = line$81$q;
-        line$81$d = line$82$q;
-        line$82$d = line$83$q;
-        line$83$d = line$84$q;
-        line$84$d = line$85$q;
-        line$85$d = line$86$q;
-        line$86$d = line$87$q;
-        line$87$d = line$88$q;
-        line$88$d = line$89$q;
-        line$89$d = line$90$q;
-        line$90$d = line$91$q;
-        line$91$d = line$92$q;
-        line$92$d = line$93$q;
-        line$93$d = line$94$q;
-        line$94$d = line$95$q;
-        line$95$d = line$96$q;
-        line$96$d = line$97$q;
-        line$97$d = line$98$q;
-        line$98$d = line$99$q;
-        line$99$d = line$100$q;
-        line$100$d = line$101$q;
-        line$101$d = line$102$q;
-        line$102$d = line$103$q;
-        line$103$d = line$104$q;
-        line$104$d = line$105$q;
-        line$105$d = line$106$q;
-        line$106$d = line$107$q;
-        line$107$d = line$108$q;
-        line$108$d = line$109$q;
-        line$109$d = line$110$q;
-        line$110$d = line$111$q;
-        line$111$d = line$112$q;
-        line$112$d = line$113$q;
-        line$113$d = line$114$q;
-        line$114$d = line$115$q;
-        line$115$d = line$116$q;
-        line$116$d = line$117$q;
-        line$117$d = line$118$q;
-        line$118$d = line$119$q;
-        line$119$d = line$120$q;
-        line$120$d = line$121$q;
-        line$121$d = line$122$q;
-        line$122$d = line$123$q;
-        line$123$d = line$124$q;
-        line$124$d = line$125$q;
         q = line$0$q;
     end
     
 endmodule // top$valid_wait
+
+
+module top$verts$0(clock,x0,x1,x2,m0,m1,m2,c_v,e,f0,f1,f2,h);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] x0;
+    input wire  [31:0] x1;
+    input wire  [31:0] x2;
+    input wire  [31:0] m0;
+    input wire  [31:0] m1;
+    input wire  [31:0] m2;
+    input wire  [31:0] c_v;
+    output reg  [31:0] e;
+    output reg  [31:0] f0;
+    output reg  [31:0] f1;
+    output reg  [31:0] f2;
+    output reg  [31:0] h;
+    
+    // Constant declarations
+    localparam  mask = 32'h7fffffff;
+    localparam  c_2u = 32'h34000001;
+    localparam  c_1u = 32'h33800001;
+    
+    // Stub signals
+    reg  ev$0$clock;
+    reg  [31:0] ev$0$a;
+    reg  [31:0] ev$0$b;
+    reg  ev$0$valid_in;
+    wire  [31:0] ev$0$y;
+    wire  ev$0$valid_out;
+    reg  ev$1$clock;
+    reg  [31:0] ev$1$a;
+    reg  [31:0] ev$1$b;
+    reg  ev$1$valid_in;
+    wire  [31:0] ev$1$y;
+    wire  ev$1$valid_out;
+    reg  ev$2$clock;
+    reg  [31:0] ev$2$a;
+    reg  [31:0] ev$2$b;
+    reg  ev$2$valid_in;
+    wire  [31:0] ev$2$y;
+    wire  ev$2$valid_out;
+    reg  cv$0$clock;
+    reg  [31:0] cv$0$a;
+    reg  [31:0] cv$0$b;
+    reg  cv$0$valid_in;
+    wire  [31:0] cv$0$y;
+    wire  cv$0$valid_out;
+    reg  cv$1$clock;
+    reg  [31:0] cv$1$a;
+    reg  [31:0] cv$1$b;
+    reg  cv$1$valid_in;
+    wire  [31:0] cv$1$y;
+    wire  cv$1$valid_out;
+    reg  cv$2$clock;
+    reg  [31:0] cv$2$a;
+    reg  [31:0] cv$2$b;
+    reg  cv$2$valid_in;
+    wire  [31:0] cv$2$y;
+    wire  cv$2$valid_out;
+    reg  fv$0$clock;
+    reg  [31:0] fv$0$a;
+    reg  [31:0] fv$0$b;
+    reg  fv$0$sub;
+    reg  fv$0$valid_in;
+    wire  [31:0] fv$0$y;
+    wire  fv$0$valid_out;
+    reg  fv$1$clock;
+    reg  [31:0] fv$1$a;
+    reg  [31:0] fv$1$b;
+    reg  fv$1$sub;
+    reg  fv$1$valid_in;
+    wire  [31:0] fv$1$y;
+    wire  fv$1$valid_out;
+    reg  fv$2$clock;
+    reg  [31:0] fv$2$a;
+    reg  [31:0] fv$2$b;
+    reg  fv$2$sub;
+    reg  fv$2$valid_in;
+    wire  [31:0] fv$2$y;
+    wire  fv$2$valid_out;
+    reg  ez2$clock;
+    reg  [31:0] ez2$a;
+    reg  [31:0] ez2$b;
+    reg  ez2$sub;
+    reg  ez2$valid_in;
+    wire  [31:0] ez2$y;
+    wire  ez2$valid_out;
+    reg  hz$clock;
+    reg  [31:0] hz$a;
+    reg  [31:0] hz$b;
+    reg  hz$sub;
+    reg  hz$valid_in;
+    wire  [31:0] hz$y;
+    wire  hz$valid_out;
+    reg  z_wait$clock;
+    reg  [31:0] z_wait$d;
+    wire  [31:0] z_wait$q;
+    
+    // Sub module instances
+    top$af ev$0(
+        .clock(ev$0$clock),
+        .a(ev$0$a),
+        .b(ev$0$b),
+        .valid_in(ev$0$valid_in),
+        .y(ev$0$y),
+        .valid_out(ev$0$valid_out)
+    );
+    top$af ev$1(
+        .clock(ev$1$clock),
+        .a(ev$1$a),
+        .b(ev$1$b),
+        .valid_in(ev$1$valid_in),
+        .y(ev$1$y),
+        .valid_out(ev$1$valid_out)
+    );
+    top$af ev$2(
+        .clock(ev$2$clock),
+        .a(ev$2$a),
+        .b(ev$2$b),
+        .valid_in(ev$2$valid_in),
+        .y(ev$2$y),
+        .valid_out(ev$2$valid_out)
+    );
+    top$af cv$0(
+        .clock(cv$0$clock),
+        .a(cv$0$a),
+        .b(cv$0$b),
+        .valid_in(cv$0$valid_in),
+        .y(cv$0$y),
+        .valid_out(cv$0$valid_out)
+    );
+    top$af cv$1(
+        .clock(cv$1$clock),
+        .a(cv$1$a),
+        .b(cv$1$b),
+        .valid_in(cv$1$valid_in),
+        .y(cv$1$y),
+        .valid_out(cv$1$valid_out)
+    );
+    top$af cv$2(
+        .clock(cv$2$clock),
+        .a(cv$2$a),
+        .b(cv$2$b),
+        .valid_in(cv$2$valid_in),
+        .y(cv$2$y),
+        .valid_out(cv$2$valid_out)
+    );
+    top$aerr fv$0(
+        .clock(fv$0$clock),
+        .a(fv$0$a),
+        .b(fv$0$b),
+        .sub(fv$0$sub),
+        .valid_in(fv$0$valid_in),
+        .y(fv$0$y),
+        .valid_out(fv$0$valid_out)
+    );
+    top$aerr fv$1(
+        .clock(fv$1$clock),
+        .a(fv$1$a),
+        .b(fv$1$b),
+        .sub(fv$1$sub),
+        .valid_in(fv$1$valid_in),
+        .y(fv$1$y),
+        .valid_out(fv$1$valid_out)
+    );
+    top$aerr fv$2(
+        .clock(fv$2$clock),
+        .a(fv$2$a),
+        .b(fv$2$b),
+        .sub(fv$2$sub),
+        .valid_in(fv$2$valid_in),
+        .y(fv$2$y),
+        .valid_out(fv$2$valid_out)
+    );
+    top$aerr ez2(
+        .clock(ez2$clock),
+        .a(ez2$a),
+        .b(ez2$b),
+        .sub(ez2$sub),
+        .valid_in(ez2$valid_in),
+        .y(ez2$y),
+        .valid_out(ez2$valid_out)
+    );
+    top$aerr hz(
+        .clock(hz$clock),
+        .a(hz$a),
+        .b(hz$b),
+        .sub(hz$sub),
+        .valid_in(hz$valid_in),
+        .y(hz$y),
+        .valid_out(hz$valid_out)
+    );
+    top$edges$0$brz_wait z_wait(
+        .clock(z_wait$clock),
+        .d(z_wait$d),
+        .q(z_wait$q)
+    );
+    
+    // Update code
+    always @(*) begin
+        ez2$clock = clock;
+        hz$clock = clock;
+        z_wait$clock = clock;
+        ev$0$clock = clock;
+        cv$0$clock = clock;
+        fv$0$clock = clock;
+        ev$0$valid_in = 1'b0;
+        cv$0$valid_in = 1'b0;
+        fv$0$valid_in = 1'b0;
+        fv$0$sub = 1'b0;
+        ev$0$a = c_v;
+        cv$0$a = c_2u;
+        fv$0$a = ev$0$y;
+        fv$0$b = cv$0$y;
+        ev$1$clock = clock;
+        cv$1$clock = clock;
+        fv$1$clock = clock;
+        ev$1$valid_in = 1'b0;
+        cv$1$valid_in = 1'b0;
+        fv$1$valid_in = 1'b0;
+        fv$1$sub = 1'b0;
+        ev$1$a = c_v;
+        cv$1$a = c_2u;
+        fv$1$a = ev$1$y;
+        fv$1$b = cv$1$y;
+        ev$2$clock = clock;
+        cv$2$clock = clock;
+        fv$2$clock = clock;
+        ev$2$valid_in = 1'b0;
+        cv$2$valid_in = 1'b0;
+        fv$2$valid_in = 1'b0;
+        fv$2$sub = 1'b0;
+        ev$2$a = c_v;
+        cv$2$a = c_2u;
+        fv$2$a = ev$2$y;
+        fv$2$b = cv$2$y;
+        cv$2$a = c_1u;
+        ev$0$b = m0;
+        ev$1$b = m1;
+        ev$2$b = m2;
+        cv$0$b = x0 & mask;
+        cv$1$b = x1 & mask;
+        cv$2$b = x2 & mask;
+        ez2$a = ev$2$y;
+        ez2$b = ev$2$y;
+        ez2$sub = 1'b0;
+        ez2$valid_in = 1'b0;
+        z_wait$d = x2 & mask;
+        hz$a = z_wait$q;
+        hz$b = ez2$y;
+        hz$sub = 1'b0;
+        hz$valid_in = 1'b0;
+        e = ev$2$y;
+        f0 = fv$0$y;
+        f1 = fv$1$y;
+        f2 = fv$2$y;
+        h = hz$y;
+    end
+    
+endmodule // top$verts$0
