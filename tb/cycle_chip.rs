@@ -202,7 +202,7 @@ fn rtl_point_is_the_rtl() {
     use collision_chip::rtl::{e8m15::TriUnit, CREDIT, DOP_LATENCY};
     let p = Params::RTL;
     assert_eq!((p.dop_latency, p.tri_latency, p.tri_fifo, p.credit), (DOP_LATENCY as u32, TriUnit::LATENCY as u32, TriUnit::FIFO_DEPTH as u32, CREDIT as u32));
-    assert_eq!((p.dop_latency, p.tri_latency), (15, 130), "the documented latencies");
+    assert_eq!((p.dop_latency, p.tri_latency), (15, 54), "the documented latencies");
 }
 
 /// A queue too small for the traversal: the query ends with `overflow`, having reported

@@ -12,7 +12,7 @@
 //! (Verilog export and its checks: `harness::units`, scripts/check-rtl.sh.)
 
 use collision_chip::config::{ChipConfig, DopRounding};
-use collision_chip::dop::{DopTree, HostSetup};
+use collision_chip::dop::{DopTree, HostSetup, TriSide};
 use collision_chip::format::{Format, Rounding};
 use collision_chip::golden::doptrf;
 use collision_chip::mesh::soup;
@@ -288,7 +288,7 @@ fn unit_trees<U: Unit>(make: impl Fn(Rounding) -> U, fmt: Format, r: Rounding, n
     };
     let ta = DopTree::build(&soup(n_tris, 1).triangles_f64(), &cfg);
     let tb = DopTree::build(&soup(n_tris, 2).triangles_f64(), &cfg);
-    let setup = HostSetup::new(&cfg, &pose, tb.coord_bound());
+    let setup = HostSetup::new(&cfg, &pose, tb.coord_bound(), TriSide::UNUSED);
     let words = setup_words(fmt, &setup.j, &setup.cmat, &setup.cvec);
     let mut pairs = vec![];
     let mut want = vec![];
@@ -363,7 +363,7 @@ fn unit_random<U: Unit>(make: impl Fn(Rounding) -> U, fmt: Format, n_pairs: usiz
         let cmat: Vec<[f64; 3]> = (0..k).map(|i| [0, 1, 2].map(|l| fmt.from_bits(cm[3 * i + l]))).collect();
         let cvec: Vec<f64> = cv.iter().map(|&b| fmt.from_bits(b)).collect();
         let j: Vec<[u8; 3]> = (0..k).map(|i| [0, 1, 2].map(|l| ((cm[3 * i + l] ^ cv[i] >> l) % k as u64) as u8)).collect();
-        let setup = HostSetup { j: j.clone(), cmat: cmat.clone(), cvec: cvec.clone(), ..HostSetup::new(&ChipConfig { k, format: fmt.into(), ..ChipConfig::default() }, &Pose::default(), 1.0) };
+        let setup = HostSetup { j: j.clone(), cmat: cmat.clone(), cvec: cvec.clone(), ..HostSetup::new(&ChipConfig { k, format: fmt.into(), ..ChipConfig::default() }, &Pose::default(), 1.0, TriSide::UNUSED) };
         let words = setup_words(fmt, &j, &cmat, &cvec);
         let mut pairs = vec![];
         let mut want = vec![];
@@ -443,7 +443,7 @@ fn vcd_traces() {
         let cfg = ChipConfig::default();
         let ta = DopTree::build(&soup(4, 1).triangles_f64(), &cfg);
         let tb = DopTree::build(&soup(4, 2).triangles_f64(), &cfg);
-        let setup = HostSetup::new(&cfg, &Pose::new(10.0, 20.0, 30.0, 0.3, 0.1, 0.0), tb.coord_bound());
+        let setup = HostSetup::new(&cfg, &Pose::new(10.0, 20.0, 30.0, 0.3, 0.1, 0.0), tb.coord_bound(), TriSide::UNUSED);
         let words = setup_words(f, &setup.j, &setup.cmat, &setup.cvec);
         let pairs: Vec<Pair> = (0..ta.len() as u32)
             .flat_map(|na| (0..tb.len() as u32).map(move |nb| (na, nb)))
