@@ -87,7 +87,7 @@ impl TriWord {
     /// `scale` is its object's [`object_scale`].
     pub fn new(t: &Tri, fmt: Format, scale: f64) -> TriWord {
         let rn = |x: f64| fmt.round(x, Rounding::NearestEven);
-        let up = |x: f64| fmt.round(x * (1.0 + 2f64.powi(-40)), Rounding::TowardPositive);
+        let cert = Certificate::new(fmt, Rounding::NearestEven);
         let v = t.map(|p| [rn(p.x), rn(p.y), rn(p.z)]);
         let v_exact = t.iter().zip(&v).all(|(p, q)| p.x == q[0] && p.y == q[1] && p.z == q[2]);
         let bad = TriWord {
@@ -122,11 +122,10 @@ impl TriWord {
         let tr: Vector3<f64> = -(l * v0);
         // The stored words are the f64 ones rounded to nearest: relative error u1 (in the
         // certificate's g) or, below 2^emin, half the smallest subnormal.
-        let eta_s = fmt.min_positive_subnormal() / 2.0;
-        let a_lin = e_lin + eta_s;
+        let a_lin = e_lin + cert.eta_s;
         // |tr - t*| <= |fl(-L v0) + L v0| + |L - L*| |v0|_1
         let derr = (tr.abs() + l.abs() * v0.abs()) * (4.0 * u);
-        let a_tr = derr.max() + e_lin * v0.abs().sum() + eta_s;
+        let a_tr = derr.max() + e_lin * v0.abs().sum() + cert.eta_s;
         let mut m = [[0.0; 4]; 3];
         for (r, row) in m.iter_mut().enumerate() {
             for (c, x) in row.iter_mut().enumerate() {
@@ -136,8 +135,7 @@ impl TriWord {
         if !m.iter().flatten().all(|x| x.is_finite()) {
             return bad;
         }
-        let cert = Certificate::new(fmt, Rounding::NearestEven);
-        let u1 = cert.u / (1.0 - cert.u);
+        let u1 = cert.u1;
         // Lambda-hat (rows of the linear part) and T-hat (translation) bound |M_B*|.
         let lam_hat = (0..3).map(|r| (0..3).map(|c| (1.0 + u1) * m[r][c].abs() + a_lin).sum::<f64>()).fold(0.0, f64::max);
         let t_hat = (0..3).map(|r| (1.0 + u1) * m[r][3].abs() + a_tr).fold(0.0, f64::max);
@@ -156,8 +154,8 @@ impl TriWord {
         TriWord {
             v,
             m,
-            alpha_m: up((alpha_m / g).max(cert.floor / scale)),
-            alpha_f: up(alpha_f / g),
+            alpha_m: cert.word_up((alpha_m / g).max(cert.floor / scale)),
+            alpha_f: cert.word_up(alpha_f / g),
             v_exact,
             degenerate: false,
             lambda,

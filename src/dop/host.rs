@@ -14,6 +14,7 @@
 use super::normals::DopNormals;
 use crate::config::{ChipConfig, DopRounding};
 use crate::format::{Format, Rounding};
+use crate::golden::tcheck::Certificate;
 use crate::pose::Pose;
 use nalgebra::{Matrix3, Vector3};
 
@@ -60,6 +61,13 @@ impl TriSide {
 }
 
 impl HostSetup {
+    /// One direction of TRI_UNIT: the frame map into the leaf's object, its error words and
+    /// the scale of the vertices' object; `ab`: A's edges against U(B) (M_AB, S_A), else B's
+    /// against U(A) (M_BA, S_B).
+    pub fn tri_frame(&self, ab: bool) -> (&Affine, [f64; 2], f64) {
+        if ab { (&self.m_ab, self.beta_ab, self.scale[0]) } else { (&self.m_ba, self.beta_ba, self.scale[1]) }
+    }
+
     /// `b_coord_bound` is X = max |x|_inf over B's root DOP ([`super::DopTree::coord_bound`]).
     pub fn new(cfg: &ChipConfig, pose: &Pose, b_coord_bound: f64, tri: TriSide) -> HostSetup {
         let normals = DopNormals::get(cfg.k).expect("k validated by the caller");
@@ -133,18 +141,16 @@ impl HostSetup {
 /// the vertices' object (scale `s_v`), `eta` the placement move of the leaf's vertices (0
 /// for the direction B vs U(A)), rounded up (docs/ACCURACY.md, "T.CHECK's certificate").
 fn betas(fmt: Format, b: &Affine, tr_err: f64, eta: f64, s_l: f64, s_v: f64) -> [f64; 2] {
-    let half = 2f64.powi(-(fmt.frac_bits() as i32) - 1);
-    let u1 = half / (1.0 - half);
+    let cert = Certificate::new(fmt, Rounding::NearestEven);
+    let u1 = cert.u1;
     // the stored words' subnormal rounding; the vertices' too (a_x)
-    let eta_s = fmt.min_positive_subnormal() / 2.0;
-    let (a_lin, a_tr, a_x) = (eta_s, eta_s + tr_err, eta_s);
+    let (a_lin, a_tr, a_x) = (cert.eta_s, cert.eta_s + tr_err, cert.eta_s);
     let col = |j: usize, a: f64| (0..3).map(|k| (1.0 + u1) * b[k][j].abs() + a).sum::<f64>();
     let b_lin = (0..3).map(|j| col(j, a_lin)).fold(0.0, f64::max);
     let b_tr = col(3, a_tr);
     let bm = (1.0 + u1) * b_lin + (b_tr + s_l) / s_v + 1.0;
     let bf = (1.0 + u1) * a_lin + (a_tr + 3.0 * a_x * b_lin + eta) / s_v + eta * (1.0 + u1) * b_lin / s_l + eta * b_tr / (s_l * s_v);
-    let up = |x: f64| fmt.round(x * (1.0 + 2f64.powi(-40)), Rounding::TowardPositive);
-    [up(bm), up(bf)]
+    [cert.word_up(bm), cert.word_up(bf)]
 }
 
 /// [l | t] rounded to nearest.

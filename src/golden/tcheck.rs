@@ -46,8 +46,14 @@ const UP: Rounding = Rounding::TowardPositive;
 /// (rounded up).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Certificate {
+    pub f: Format,
     /// Unit roundoff of the value datapath: 2^-(F+1) to nearest, 2^-F directed.
     pub u: f64,
+    /// The host's rounding of the words it writes (M_B, the frame maps, the vertices; to
+    /// nearest): relative error `u1` of a normal result, absolute `eta_s` (half the smallest
+    /// subnormal) below 2^emin.
+    pub u1: f64,
+    pub eta_s: f64,
     /// Mapped vertex coordinates: |V - V*| <= g_v M_V, for vertices the host rounded ([0])
     /// or exact ones ([1]).
     pub g_v: [f64; 2],
@@ -68,15 +74,20 @@ impl Certificate {
         let half = 2f64.powi(-(f.frac_bits() as i32) - 1);
         let nearest = r == Rounding::NearestEven;
         let u = if nearest { half } else { 2.0 * half };
-        // The host rounds M_B, the frame map and the vertices to nearest: relative error
-        // u1 of the stored value (normal results; subnormal ones go to the absolute terms).
         let u1 = half / (1.0 - half);
         // A product's absolute error below 2^emin: half the smallest subnormal to nearest.
         let eta = f.min_positive_subnormal() * if nearest { 0.5 } else { 1.0 };
         let g_v = [u1, 0.0].map(|gx| 6.0 * u + ((1.0 + u1) * (1.0 + u1) * (1.0 + gx) - 1.0));
         let floor = 2f64.powi((eta.sqrt() / g_v[1]).log2().ceil() as i32);
-        let up = |g: f64| f.round(g * (1.0 + 2f64.powi(-40)), UP);
-        Certificate { u, g_v, c_v: g_v.map(up), c_2u: up(2.0 * u + u * u), c_1u: up(u + u * u), floor }
+        let mut c = Certificate { f, u, u1, eta_s: f.min_positive_subnormal() / 2.0, g_v, c_v: [0.0; 2], c_2u: 0.0, c_1u: 0.0, floor };
+        (c.c_v, c.c_2u, c.c_1u) = (g_v.map(|g| c.word_up(g)), c.word_up(2.0 * u + u * u), c.word_up(u + u * u));
+        c
+    }
+
+    /// A word of the certificate from its f64 value x (computed to within 2^-50 of the
+    /// quantity it stands for): x (1 + 2^-40) rounded up in the format.
+    pub fn word_up(&self, x: f64) -> f64 {
+        self.f.round(x * (1.0 + 2f64.powi(-40)), UP)
     }
 }
 
@@ -287,8 +298,11 @@ impl TriResult {
 /// leaves its direction unknown.
 pub fn tri_unit(f: Format, r: Rounding, a: &TriWord, b: &TriWord, setup: &HostSetup) -> TriResult {
     let cert = Certificate::new(f, r);
-    let d1 = (!b.degenerate).then(|| edges(f, r, &cert, &stage1(f, r, b, &setup.m_ab, setup.beta_ab, setup.scale[0]), a).result());
-    let d2 = (!a.degenerate).then(|| edges(f, r, &cert, &stage1(f, r, a, &setup.m_ba, setup.beta_ba, setup.scale[1]), b).result());
+    let direction = |leaf: &TriWord, tri: &TriWord, ab: bool| {
+        let (frame, beta, scale) = setup.tri_frame(ab);
+        (!leaf.degenerate).then(|| edges(f, r, &cert, &stage1(f, r, leaf, frame, beta, scale), tri).result())
+    };
+    let (d1, d2) = (direction(b, a, true), direction(a, b, false));
     TriResult::of(d1.flatten(), d2.flatten())
 }
 
@@ -343,7 +357,7 @@ impl<'a> TriUnit<'a> {
     /// when `ab`, else of A).
     fn direction(&mut self, t: u32, leaf: &TriWord, v: &TriWord, ab: bool) -> Option<bool> {
         let (f, r, setup) = (self.f, self.r, self.setup);
-        let (frame, beta, scale) = if ab { (&setup.m_ab, setup.beta_ab, setup.scale[0]) } else { (&setup.m_ba, setup.beta_ba, setup.scale[1]) };
+        let (frame, beta, scale) = setup.tri_frame(ab);
         let cache = if ab { &mut self.mb_b } else { &mut self.mb_a };
         let s1 = cache.get(t, || stage1(f, r, leaf, frame, beta, scale));
         edges_in(f, r, &self.cert, s1, v, false).result()

@@ -76,10 +76,10 @@ fn output(f: Format, t: &Trace) -> TCheckOut {
 /// Both directions of TRI_UNIT for triangle `a` of A against `b` of B under `setup`:
 /// A's edges against U(B), then B's edges against U(A).
 pub fn tri_unit_directions(f: Format, r: Rounding, a: &TriWord, b: &TriWord, setup: &HostSetup) -> [(TCheckIn, TCheckOut); 2] {
-    [
-        direction(f, r, b, &setup.m_ab, setup.beta_ab, setup.scale[0], a),
-        direction(f, r, a, &setup.m_ba, setup.beta_ba, setup.scale[1], b),
-    ]
+    [(b, a, true), (a, b, false)].map(|(leaf, tri, ab)| {
+        let (frame, beta, scale) = setup.tri_frame(ab);
+        direction(f, r, leaf, frame, beta, scale, tri)
+    })
 }
 
 /// TRI_UNIT's per-query write port: `(load_addr, load_data)` for M_AB (address 4 i + c),
@@ -87,7 +87,8 @@ pub fn tri_unit_directions(f: Format, r: Rounding, a: &TriWord, b: &TriWord, set
 /// and B's scale (30).
 pub fn tri_unit_setup_words(f: Format, setup: &HostSetup) -> Vec<(u64, u64)> {
     let mut out = vec![];
-    for (base, m, e, s) in [(0u64, &setup.m_ab, setup.beta_ab, setup.scale[0]), (16, &setup.m_ba, setup.beta_ba, setup.scale[1])] {
+    for (base, ab) in [(0u64, true), (16, false)] {
+        let (m, e, s) = setup.tri_frame(ab);
         for (i, w) in words(f, m).into_iter().enumerate() {
             out.push((base + i as u64, w));
         }
