@@ -17460,8 +17460,6 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
     
     // Constant declarations
     localparam  mask = 32'h7fffffff;
-    localparam  c_v_rounded = 32'h35100001;
-    localparam  c_v_exact = 32'h35000001;
     
     // Stub signals
     reg  [31:0] in_m_0$0$d;
@@ -18324,40 +18322,37 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
     reg  exact_wait$d;
     wire  exact_wait$q;
     reg  verts$0$clock;
-    reg  [31:0] verts$0$x0;
-    reg  [31:0] verts$0$x1;
-    reg  [31:0] verts$0$x2;
+    reg  [31:0] verts$0$z;
     reg  [31:0] verts$0$m0;
     reg  [31:0] verts$0$m1;
     reg  [31:0] verts$0$m2;
-    reg  [31:0] verts$0$c_v;
+    reg  verts$0$exact;
     wire  [31:0] verts$0$e;
+    wire  [31:0] verts$0$g;
     wire  [31:0] verts$0$f0;
     wire  [31:0] verts$0$f1;
     wire  [31:0] verts$0$f2;
     wire  [31:0] verts$0$h;
     reg  verts$1$clock;
-    reg  [31:0] verts$1$x0;
-    reg  [31:0] verts$1$x1;
-    reg  [31:0] verts$1$x2;
+    reg  [31:0] verts$1$z;
     reg  [31:0] verts$1$m0;
     reg  [31:0] verts$1$m1;
     reg  [31:0] verts$1$m2;
-    reg  [31:0] verts$1$c_v;
+    reg  verts$1$exact;
     wire  [31:0] verts$1$e;
+    wire  [31:0] verts$1$g;
     wire  [31:0] verts$1$f0;
     wire  [31:0] verts$1$f1;
     wire  [31:0] verts$1$f2;
     wire  [31:0] verts$1$h;
     reg  verts$2$clock;
-    reg  [31:0] verts$2$x0;
-    reg  [31:0] verts$2$x1;
-    reg  [31:0] verts$2$x2;
+    reg  [31:0] verts$2$z;
     reg  [31:0] verts$2$m0;
     reg  [31:0] verts$2$m1;
     reg  [31:0] verts$2$m2;
-    reg  [31:0] verts$2$c_v;
+    reg  verts$2$exact;
     wire  [31:0] verts$2$e;
+    wire  [31:0] verts$2$g;
     wire  [31:0] verts$2$f0;
     wire  [31:0] verts$2$f1;
     wire  [31:0] verts$2$f2;
@@ -18371,6 +18366,8 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
     reg  [31:0] edges$0$q2;
     reg  [31:0] edges$0$pe;
     reg  [31:0] edges$0$qe;
+    reg  [31:0] edges$0$pg;
+    reg  [31:0] edges$0$qg;
     reg  [31:0] edges$0$pf0;
     reg  [31:0] edges$0$pf1;
     reg  [31:0] edges$0$pf2;
@@ -18392,6 +18389,8 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
     reg  [31:0] edges$1$q2;
     reg  [31:0] edges$1$pe;
     reg  [31:0] edges$1$qe;
+    reg  [31:0] edges$1$pg;
+    reg  [31:0] edges$1$qg;
     reg  [31:0] edges$1$pf0;
     reg  [31:0] edges$1$pf1;
     reg  [31:0] edges$1$pf2;
@@ -18413,6 +18412,8 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
     reg  [31:0] edges$2$q2;
     reg  [31:0] edges$2$pe;
     reg  [31:0] edges$2$qe;
+    reg  [31:0] edges$2$pg;
+    reg  [31:0] edges$2$qg;
     reg  [31:0] edges$2$pf0;
     reg  [31:0] edges$2$pf1;
     reg  [31:0] edges$2$pf2;
@@ -18517,7 +18518,6 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
     reg  out_valid$clock;
     
     // Local signals
-    reg  [31:0] c_v;
     reg  hit_any;
     reg  miss_all;
     
@@ -19727,14 +19727,13 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
     );
     top$tri_unit$tc_ab$verts$0 verts$0(
         .clock(verts$0$clock),
-        .x0(verts$0$x0),
-        .x1(verts$0$x1),
-        .x2(verts$0$x2),
+        .z(verts$0$z),
         .m0(verts$0$m0),
         .m1(verts$0$m1),
         .m2(verts$0$m2),
-        .c_v(verts$0$c_v),
+        .exact(verts$0$exact),
         .e(verts$0$e),
+        .g(verts$0$g),
         .f0(verts$0$f0),
         .f1(verts$0$f1),
         .f2(verts$0$f2),
@@ -19742,14 +19741,13 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
     );
     top$tri_unit$tc_ab$verts$0 verts$1(
         .clock(verts$1$clock),
-        .x0(verts$1$x0),
-        .x1(verts$1$x1),
-        .x2(verts$1$x2),
+        .z(verts$1$z),
         .m0(verts$1$m0),
         .m1(verts$1$m1),
         .m2(verts$1$m2),
-        .c_v(verts$1$c_v),
+        .exact(verts$1$exact),
         .e(verts$1$e),
+        .g(verts$1$g),
         .f0(verts$1$f0),
         .f1(verts$1$f1),
         .f2(verts$1$f2),
@@ -19757,14 +19755,13 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
     );
     top$tri_unit$tc_ab$verts$0 verts$2(
         .clock(verts$2$clock),
-        .x0(verts$2$x0),
-        .x1(verts$2$x1),
-        .x2(verts$2$x2),
+        .z(verts$2$z),
         .m0(verts$2$m0),
         .m1(verts$2$m1),
         .m2(verts$2$m2),
-        .c_v(verts$2$c_v),
+        .exact(verts$2$exact),
         .e(verts$2$e),
+        .g(verts$2$g),
         .f0(verts$2$f0),
         .f1(verts$2$f1),
         .f2(verts$2$f2),
@@ -19780,6 +19777,8 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
         .q2(edges$0$q2),
         .pe(edges$0$pe),
         .qe(edges$0$qe),
+        .pg(edges$0$pg),
+        .qg(edges$0$qg),
         .pf0(edges$0$pf0),
         .pf1(edges$0$pf1),
         .pf2(edges$0$pf2),
@@ -19803,6 +19802,8 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
         .q2(edges$1$q2),
         .pe(edges$1$pe),
         .qe(edges$1$qe),
+        .pg(edges$1$pg),
+        .qg(edges$1$qg),
         .pf0(edges$1$pf0),
         .pf1(edges$1$pf1),
         .pf2(edges$1$pf2),
@@ -19826,6 +19827,8 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
         .q2(edges$2$q2),
         .pe(edges$2$pe),
         .qe(edges$2$qe),
+        .pg(edges$2$pg),
+        .qg(edges$2$qg),
         .pf0(edges$2$pf0),
         .pf1(edges$2$pf1),
         .pf2(edges$2$pf2),
@@ -20673,31 +20676,21 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
         vtr_2$2$d = vt_2$2$y;
         vmr_2$2$d = vm_2$2$y;
         exact_wait$d = in_v_exact$q;
-        c_v = c_v_rounded;
-        if (exact_wait$q) begin
-            c_v = c_v_exact;
-        end
         verts$0$clock = clock;
-        verts$0$c_v = c_v;
-        verts$0$x0 = vtr_0$0$q;
-        verts$0$x1 = vtr_1$0$q;
-        verts$0$x2 = vtr_2$0$q;
+        verts$0$exact = exact_wait$q;
+        verts$0$z = vtr_2$0$q;
         verts$0$m0 = vmr_0$0$q;
         verts$0$m1 = vmr_1$0$q;
         verts$0$m2 = vmr_2$0$q;
         verts$1$clock = clock;
-        verts$1$c_v = c_v;
-        verts$1$x0 = vtr_0$1$q;
-        verts$1$x1 = vtr_1$1$q;
-        verts$1$x2 = vtr_2$1$q;
+        verts$1$exact = exact_wait$q;
+        verts$1$z = vtr_2$1$q;
         verts$1$m0 = vmr_0$1$q;
         verts$1$m1 = vmr_1$1$q;
         verts$1$m2 = vmr_2$1$q;
         verts$2$clock = clock;
-        verts$2$c_v = c_v;
-        verts$2$x0 = vtr_0$2$q;
-        verts$2$x1 = vtr_1$2$q;
-        verts$2$x2 = vtr_2$2$q;
+        verts$2$exact = exact_wait$q;
+        verts$2$z = vtr_2$2$q;
         verts$2$m0 = vmr_0$2$q;
         verts$2$m1 = vmr_1$2$q;
         verts$2$m2 = vmr_2$2$q;
@@ -20709,6 +20702,8 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
         edges$0$q2 = vtr_2$1$q;
         edges$0$pe = verts$0$e;
         edges$0$qe = verts$1$e;
+        edges$0$pg = verts$0$g;
+        edges$0$qg = verts$1$g;
         edges$0$pf0 = verts$0$f0;
         edges$0$pf1 = verts$0$f1;
         edges$0$pf2 = verts$0$f2;
@@ -20725,6 +20720,8 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
         edges$1$q2 = vtr_2$2$q;
         edges$1$pe = verts$1$e;
         edges$1$qe = verts$2$e;
+        edges$1$pg = verts$1$g;
+        edges$1$qg = verts$2$g;
         edges$1$pf0 = verts$1$f0;
         edges$1$pf1 = verts$1$f1;
         edges$1$pf2 = verts$1$f2;
@@ -20741,6 +20738,8 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
         edges$2$q2 = vtr_2$0$q;
         edges$2$pe = verts$2$e;
         edges$2$qe = verts$0$e;
+        edges$2$pg = verts$2$g;
+        edges$2$qg = verts$0$g;
         edges$2$pf0 = verts$2$f0;
         edges$2$pf1 = verts$2$f1;
         edges$2$pf2 = verts$2$f2;
@@ -20938,7 +20937,7 @@ module top$tri_unit$tc_ab$c3_0(clock,d,q);
 endmodule // top$tri_unit$tc_ab$c3_0
 
 
-module top$tri_unit$tc_ab$edges$0(clock,p0,p1,p2,q0,q1,q2,pe,qe,pf0,pf1,pf2,qf0,qf1,qf2,ph,qh,s_x,s_b,cross_t,cross_f);
+module top$tri_unit$tc_ab$edges$0(clock,p0,p1,p2,q0,q1,q2,pe,qe,pg,qg,pf0,pf1,pf2,qf0,qf1,qf2,ph,qh,s_x,s_b,cross_t,cross_f);
     
     // Module arguments
     input wire  clock;
@@ -20950,6 +20949,8 @@ module top$tri_unit$tc_ab$edges$0(clock,p0,p1,p2,q0,q1,q2,pe,qe,pf0,pf1,pf2,qf0,
     input wire  [31:0] q2;
     input wire  [31:0] pe;
     input wire  [31:0] qe;
+    input wire  [31:0] pg;
+    input wire  [31:0] qg;
     input wire  [31:0] pf0;
     input wire  [31:0] pf1;
     input wire  [31:0] pf2;
@@ -20965,7 +20966,6 @@ module top$tri_unit$tc_ab$edges$0(clock,p0,p1,p2,q0,q1,q2,pe,qe,pf0,pf1,pf2,qf0,
     
     // Constant declarations
     localparam  mask = 32'h7fffffff;
-    localparam  c_2u = 32'h34000001;
     
     // Stub signals
     reg  px_qz$clock;
@@ -21182,10 +21182,8 @@ module top$tri_unit$tc_ab$edges$0(clock,p0,p1,p2,q0,q1,q2,pe,qe,pf0,pf1,pf2,qf0,
     wire  rabz$valid_out;
     reg  rs$clock;
     reg  [31:0] rs$a;
-    reg  [31:0] rs$b;
-    reg  rs$valid_in;
+    reg  rs$sel;
     wire  [31:0] rs$y;
-    wire  rs$valid_out;
     reg  brs$clock;
     reg  [31:0] brs$a;
     reg  [31:0] brs$b;
@@ -21400,22 +21398,22 @@ module top$tri_unit$tc_ab$edges$0(clock,p0,p1,p2,q0,q1,q2,pe,qe,pf0,pf1,pf2,qf0,
         .d(qf1_wait$d),
         .q(qf1_wait$q)
     );
-    top$tri_unit$tc_ab$c3_0 p0_wait(
+    top$tri_unit$tc_ab$edges$0$brz_wait p0_wait(
         .clock(p0_wait$clock),
         .d(p0_wait$d),
         .q(p0_wait$q)
     );
-    top$tri_unit$tc_ab$c3_0 q0_wait(
+    top$tri_unit$tc_ab$edges$0$brz_wait q0_wait(
         .clock(q0_wait$clock),
         .d(q0_wait$d),
         .q(q0_wait$q)
     );
-    top$tri_unit$tc_ab$c3_0 p1_wait(
+    top$tri_unit$tc_ab$edges$0$brz_wait p1_wait(
         .clock(p1_wait$clock),
         .d(p1_wait$d),
         .q(p1_wait$q)
     );
-    top$tri_unit$tc_ab$c3_0 q1_wait(
+    top$tri_unit$tc_ab$edges$0$brz_wait q1_wait(
         .clock(q1_wait$clock),
         .d(q1_wait$d),
         .q(q1_wait$q)
@@ -21484,22 +21482,22 @@ module top$tri_unit$tc_ab$edges$0(clock,p0,p1,p2,q0,q1,q2,pe,qe,pf0,pf1,pf2,qf0,
         .y(tb$3$y),
         .valid_out(tb$3$valid_out)
     );
-    top$tri_unit$tc_ab$edges$0$ta_wait$0 ta_wait$0(
+    top$tri_unit$tc_ab$edges$0$brs_wait ta_wait$0(
         .clock(ta_wait$0$clock),
         .d(ta_wait$0$d),
         .q(ta_wait$0$q)
     );
-    top$tri_unit$tc_ab$edges$0$ta_wait$0 ta_wait$1(
+    top$tri_unit$tc_ab$edges$0$brs_wait ta_wait$1(
         .clock(ta_wait$1$clock),
         .d(ta_wait$1$d),
         .q(ta_wait$1$q)
     );
-    top$tri_unit$tc_ab$edges$0$ta_wait$0 tb_wait$0(
+    top$tri_unit$tc_ab$edges$0$brs_wait tb_wait$0(
         .clock(tb_wait$0$clock),
         .d(tb_wait$0$d),
         .q(tb_wait$0$q)
     );
-    top$tri_unit$tc_ab$edges$0$ta_wait$0 tb_wait$1(
+    top$tri_unit$tc_ab$edges$0$brs_wait tb_wait$1(
         .clock(tb_wait$1$clock),
         .d(tb_wait$1$d),
         .q(tb_wait$1$q)
@@ -21590,13 +21588,11 @@ module top$tri_unit$tc_ab$edges$0(clock,p0,p1,p2,q0,q1,q2,pe,qe,pf0,pf1,pf2,qf0,
         .y(rabz$y),
         .valid_out(rabz$valid_out)
     );
-    top$dop$doptrf$0$mul_0 rs(
+    top$tri_unit$tc_ab$edges$0$rs rs(
         .clock(rs$clock),
         .a(rs$a),
-        .b(rs$b),
-        .valid_in(rs$valid_in),
-        .y(rs$y),
-        .valid_out(rs$valid_out)
+        .sel(rs$sel),
+        .y(rs$y)
     );
     top$dop$doptrf$0$add_0 brs(
         .clock(brs$clock),
@@ -21868,19 +21864,19 @@ module top$tri_unit$tc_ab$edges$0(clock,p0,p1,p2,q0,q1,q2,pe,qe,pf0,pf1,pf2,qf0,
         ta$0$a = pf0_wait$q;
         ta$0$b = qh;
         ta$1$a = p0_wait$q;
-        ta$1$b = qe;
+        ta$1$b = qg;
         ta$2$a = qf0_wait$q;
         ta$2$b = ph;
         ta$3$a = q0_wait$q;
-        ta$3$b = pe;
+        ta$3$b = pg;
         tb$0$a = pf1_wait$q;
         tb$0$b = qh;
         tb$1$a = p1_wait$q;
-        tb$1$b = qe;
+        tb$1$b = qg;
         tb$2$a = qf1_wait$q;
         tb$2$b = ph;
         tb$3$a = q1_wait$q;
-        tb$3$b = pe;
+        tb$3$b = pg;
         ta_wait$0$clock = clock;
         tb_wait$0$clock = clock;
         sa$0$clock = clock;
@@ -21930,9 +21926,8 @@ module top$tri_unit$tc_ab$edges$0(clock,p0,p1,p2,q0,q1,q2,pe,qe,pf0,pf1,pf2,qf0,
         rabz$b = rz_wait$q & mask;
         rabz$sub = 1'b0;
         rabz$valid_in = 1'b0;
-        rs$a = c_2u;
-        rs$b = rabz$y;
-        rs$valid_in = 1'b0;
+        rs$a = rabz$y;
+        rs$sel = 1'b0;
         brs$a = brz_wait$q;
         brs$b = rs$y;
         brs$sub = 1'b0;
@@ -23496,6 +23491,114 @@ module top$tri_unit$tc_ab$edges$0$pz_sgn_wait(clock,d,q);
 endmodule // top$tri_unit$tc_ab$edges$0$pz_sgn_wait
 
 
+module top$tri_unit$tc_ab$edges$0$rs(clock,a,sel,y);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] a;
+    input wire  sel;
+    output reg  [31:0] y;
+    
+    // Constant declarations
+    localparam  c_k0 = 10'b11101001;
+    localparam  c_k1 = 10'b11101001;
+    localparam  c_sh0 = 8'h1;
+    localparam  c_sh1 = 8'h1;
+    localparam  c_t0 = 8'h1;
+    localparam  c_t1 = 8'h1;
+    localparam  c_en0 = 1'b0;
+    localparam  c_en1 = 1'b0;
+    localparam  c_j = 8'h19;
+    localparam  c_j1 = 8'h1a;
+    localparam  c_f = 8'h17;
+    localparam  c_ofs = 10'b100000000;
+    localparam  c_norm_min = 10'b100000001;
+    localparam  c_min = 32'h800000;
+    localparam  c_inf = 32'h7f800000;
+    localparam  c_nan = 32'h7fc00000;
+    
+    // Stub signals
+    reg  out$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    
+    // Local signals
+    reg  [7:0] field;
+    reg  [22:0] frac;
+    reg  [49:0] m;
+    reg  [7:0] lo_sh;
+    reg  [7:0] t_sh;
+    reg  t_en;
+    reg  [9:0] kk;
+    reg  [49:0] third;
+    reg  [49:0] sum;
+    reg  top;
+    reg  [7:0] sh;
+    reg  [49:0] hi;
+    reg  lost;
+    reg  [49:0] rnd;
+    reg  [9:0] eb;
+    reg  [9:0] e10;
+    reg  [31:0] res;
+    
+    // Sub module instances
+    top$tri_unit$tc_ab$c3_0 out(
+        .clock(out$clock),
+        .d(out$d),
+        .q(out$q)
+    );
+    
+    // Update code
+    always @(*) begin
+        out$clock = clock;
+        field = a[(32'h17)+:(8)];
+        frac = a[(32'h0)+:(23)];
+        m = (((frac) & 50'h3ffffffffffff) & ~(1 << (32'h17)) | ((1'b1) << (32'h17)));
+        lo_sh = c_sh0;
+        t_sh = c_t0;
+        t_en = c_en0;
+        kk = c_k0;
+        if (sel) begin
+            lo_sh = c_sh1;
+            t_sh = c_t1;
+            t_en = c_en1;
+            kk = c_k1;
+        end
+        third = 32'h0;
+        if (t_en) begin
+            third = m << t_sh;
+        end
+        sum = (m << c_j) + (m << lo_sh) + third;
+        eb = ((field) & 10'h3ff) + kk;
+        top = sum[32'h32 - 32'h1];
+        sh = c_j;
+        if (top) begin
+            sh = c_j1;
+        end
+        hi = sum >> sh;
+        lost = (hi << sh) != sum;
+        rnd = hi + lost;
+        e10 = eb + top + rnd[32'h17 + 32'h1];
+        res = (((e10 - c_ofs) & 32'hffffffff) << c_f) | ((((rnd) & 23'h7fffff)) & 32'hffffffff);
+        if ((field == 32'h0) | (e10 < c_norm_min)) begin
+            res = c_min;
+        end
+        if ((field == 32'h0) & (frac == 32'h0)) begin
+            res = 32'h0;
+        end
+        if (&field) begin
+            res = c_inf;
+            if (frac != 32'h0) begin
+                res = c_nan;
+            end
+        end
+        out$d = res;
+        y = out$q;
+    end
+    
+endmodule // top$tri_unit$tc_ab$edges$0$rs
+
+
 module top$tri_unit$tc_ab$edges$0$rz_sgn_wait(clock,d,q);
     
     // Module arguments
@@ -23719,90 +23822,6 @@ module top$tri_unit$tc_ab$edges$0$sign_a(x,e,sgn);
     end
     
 endmodule // top$tri_unit$tc_ab$edges$0$sign_a
-
-
-module top$tri_unit$tc_ab$edges$0$ta_wait$0(clock,d,q);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    
-    // Stub signals
-    reg  [31:0] line$0$d;
-    wire  [31:0] line$0$q;
-    reg  line$0$clock;
-    reg  [31:0] line$1$d;
-    wire  [31:0] line$1$q;
-    reg  line$1$clock;
-    reg  [31:0] line$2$d;
-    wire  [31:0] line$2$q;
-    reg  line$2$clock;
-    reg  [31:0] line$3$d;
-    wire  [31:0] line$3$q;
-    reg  line$3$clock;
-    reg  [31:0] line$4$d;
-    wire  [31:0] line$4$q;
-    reg  line$4$clock;
-    reg  [31:0] line$5$d;
-    wire  [31:0] line$5$q;
-    reg  line$5$clock;
-    
-    // Sub module instances
-    top$cnt_dop line$0(
-        .d(line$0$d),
-        .q(line$0$q),
-        .clock(line$0$clock)
-    );
-    top$cnt_dop line$1(
-        .d(line$1$d),
-        .q(line$1$q),
-        .clock(line$1$clock)
-    );
-    top$cnt_dop line$2(
-        .d(line$2$d),
-        .q(line$2$q),
-        .clock(line$2$clock)
-    );
-    top$cnt_dop line$3(
-        .d(line$3$d),
-        .q(line$3$q),
-        .clock(line$3$clock)
-    );
-    top$cnt_dop line$4(
-        .d(line$4$d),
-        .q(line$4$q),
-        .clock(line$4$clock)
-    );
-    top$cnt_dop line$5(
-        .d(line$5$d),
-        .q(line$5$q),
-        .clock(line$5$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        line$0$clock = clock;
-        line$0$d = d;
-        line$1$clock = clock;
-        line$1$d = d;
-        line$2$clock = clock;
-        line$2$d = d;
-        line$3$clock = clock;
-        line$3$d = d;
-        line$4$clock = clock;
-        line$4$d = d;
-        line$5$clock = clock;
-        line$5$d = d;
-        line$0$d = line$1$q;
-        line$1$d = line$2$q;
-        line$2$d = line$3$q;
-        line$3$d = line$4$q;
-        line$4$d = line$5$q;
-        q = line$0$q;
-    end
-    
-endmodule // top$tri_unit$tc_ab$edges$0$ta_wait$0
 
 
 module top$tri_unit$tc_ab$exact_wait(clock,d,q);
@@ -26016,18 +26035,17 @@ module top$tri_unit$tc_ab$valid_wait(clock,d,q);
 endmodule // top$tri_unit$tc_ab$valid_wait
 
 
-module top$tri_unit$tc_ab$verts$0(clock,x0,x1,x2,m0,m1,m2,c_v,e,f0,f1,f2,h);
+module top$tri_unit$tc_ab$verts$0(clock,z,m0,m1,m2,exact,e,g,f0,f1,f2,h);
     
     // Module arguments
     input wire  clock;
-    input wire  [31:0] x0;
-    input wire  [31:0] x1;
-    input wire  [31:0] x2;
+    input wire  [31:0] z;
     input wire  [31:0] m0;
     input wire  [31:0] m1;
     input wire  [31:0] m2;
-    input wire  [31:0] c_v;
+    input wire  exact;
     output reg  [31:0] e;
+    output reg  [31:0] g;
     output reg  [31:0] f0;
     output reg  [31:0] f1;
     output reg  [31:0] f2;
@@ -26035,74 +26053,36 @@ module top$tri_unit$tc_ab$verts$0(clock,x0,x1,x2,m0,m1,m2,c_v,e,f0,f1,f2,h);
     
     // Constant declarations
     localparam  mask = 32'h7fffffff;
-    localparam  c_2u = 32'h34000001;
-    localparam  c_1u = 32'h33800001;
+    localparam  c_one = 32'h800000;
     
     // Stub signals
-    reg  ev$0$clock;
-    reg  [31:0] ev$0$a;
-    reg  [31:0] ev$0$b;
-    reg  ev$0$valid_in;
-    wire  [31:0] ev$0$y;
-    wire  ev$0$valid_out;
-    reg  ev$1$clock;
-    reg  [31:0] ev$1$a;
-    reg  [31:0] ev$1$b;
-    reg  ev$1$valid_in;
-    wire  [31:0] ev$1$y;
-    wire  ev$1$valid_out;
-    reg  ev$2$clock;
-    reg  [31:0] ev$2$a;
-    reg  [31:0] ev$2$b;
-    reg  ev$2$valid_in;
-    wire  [31:0] ev$2$y;
-    wire  ev$2$valid_out;
-    reg  cv$0$clock;
-    reg  [31:0] cv$0$a;
-    reg  [31:0] cv$0$b;
-    reg  cv$0$valid_in;
-    wire  [31:0] cv$0$y;
-    wire  cv$0$valid_out;
-    reg  cv$1$clock;
-    reg  [31:0] cv$1$a;
-    reg  [31:0] cv$1$b;
-    reg  cv$1$valid_in;
-    wire  [31:0] cv$1$y;
-    wire  cv$1$valid_out;
-    reg  cv$2$clock;
-    reg  [31:0] cv$2$a;
-    reg  [31:0] cv$2$b;
-    reg  cv$2$valid_in;
-    wire  [31:0] cv$2$y;
-    wire  cv$2$valid_out;
-    reg  fv$0$clock;
-    reg  [31:0] fv$0$a;
-    reg  [31:0] fv$0$b;
-    reg  fv$0$sub;
-    reg  fv$0$valid_in;
-    wire  [31:0] fv$0$y;
-    wire  fv$0$valid_out;
-    reg  fv$1$clock;
-    reg  [31:0] fv$1$a;
-    reg  [31:0] fv$1$b;
-    reg  fv$1$sub;
-    reg  fv$1$valid_in;
-    wire  [31:0] fv$1$y;
-    wire  fv$1$valid_out;
-    reg  fv$2$clock;
-    reg  [31:0] fv$2$a;
-    reg  [31:0] fv$2$b;
-    reg  fv$2$sub;
-    reg  fv$2$valid_in;
-    wire  [31:0] fv$2$y;
-    wire  fv$2$valid_out;
-    reg  ez2$clock;
-    reg  [31:0] ez2$a;
-    reg  [31:0] ez2$b;
-    reg  ez2$sub;
-    reg  ez2$valid_in;
-    wire  [31:0] ez2$y;
-    wire  ez2$valid_out;
+    reg  ef$0$clock;
+    reg  [31:0] ef$0$a;
+    reg  ef$0$sel;
+    wire  [31:0] ef$0$y;
+    reg  ef$1$clock;
+    reg  [31:0] ef$1$a;
+    reg  ef$1$sel;
+    wire  [31:0] ef$1$y;
+    reg  ef$2$clock;
+    reg  [31:0] ef$2$a;
+    reg  ef$2$sel;
+    wire  [31:0] ef$2$y;
+    reg  ez$clock;
+    reg  [31:0] ez$a;
+    reg  ez$sel;
+    wire  [31:0] ez$y;
+    reg  cz$clock;
+    reg  [31:0] cz$a;
+    reg  cz$sel;
+    wire  [31:0] cz$y;
+    reg  gz$clock;
+    reg  [31:0] gz$a;
+    reg  [31:0] gz$b;
+    reg  gz$sub;
+    reg  gz$valid_in;
+    wire  [31:0] gz$y;
+    wire  gz$valid_out;
     reg  hz$clock;
     reg  [31:0] hz$a;
     reg  [31:0] hz$b;
@@ -26110,94 +26090,64 @@ module top$tri_unit$tc_ab$verts$0(clock,x0,x1,x2,m0,m1,m2,c_v,e,f0,f1,f2,h);
     reg  hz$valid_in;
     wire  [31:0] hz$y;
     wire  hz$valid_out;
+    reg  f_wait$0$clock;
+    reg  [31:0] f_wait$0$d;
+    wire  [31:0] f_wait$0$q;
+    reg  f_wait$1$clock;
+    reg  [31:0] f_wait$1$d;
+    wire  [31:0] f_wait$1$q;
+    reg  f_wait$2$clock;
+    reg  [31:0] f_wait$2$d;
+    wire  [31:0] f_wait$2$q;
     reg  z_wait$clock;
     reg  [31:0] z_wait$d;
     wire  [31:0] z_wait$q;
+    reg  h_wait$clock;
+    reg  [31:0] h_wait$d;
+    wire  [31:0] h_wait$q;
+    
+    // Local signals
+    reg  [31:0] e2z;
     
     // Sub module instances
-    top$dop$doptrf$0$mul_0 ev$0(
-        .clock(ev$0$clock),
-        .a(ev$0$a),
-        .b(ev$0$b),
-        .valid_in(ev$0$valid_in),
-        .y(ev$0$y),
-        .valid_out(ev$0$valid_out)
+    top$tri_unit$tc_ab$verts$0$ef$0 ef$0(
+        .clock(ef$0$clock),
+        .a(ef$0$a),
+        .sel(ef$0$sel),
+        .y(ef$0$y)
     );
-    top$dop$doptrf$0$mul_0 ev$1(
-        .clock(ev$1$clock),
-        .a(ev$1$a),
-        .b(ev$1$b),
-        .valid_in(ev$1$valid_in),
-        .y(ev$1$y),
-        .valid_out(ev$1$valid_out)
+    top$tri_unit$tc_ab$verts$0$ef$0 ef$1(
+        .clock(ef$1$clock),
+        .a(ef$1$a),
+        .sel(ef$1$sel),
+        .y(ef$1$y)
     );
-    top$dop$doptrf$0$mul_0 ev$2(
-        .clock(ev$2$clock),
-        .a(ev$2$a),
-        .b(ev$2$b),
-        .valid_in(ev$2$valid_in),
-        .y(ev$2$y),
-        .valid_out(ev$2$valid_out)
+    top$tri_unit$tc_ab$verts$0$ef$2 ef$2(
+        .clock(ef$2$clock),
+        .a(ef$2$a),
+        .sel(ef$2$sel),
+        .y(ef$2$y)
     );
-    top$dop$doptrf$0$mul_0 cv$0(
-        .clock(cv$0$clock),
-        .a(cv$0$a),
-        .b(cv$0$b),
-        .valid_in(cv$0$valid_in),
-        .y(cv$0$y),
-        .valid_out(cv$0$valid_out)
+    top$tri_unit$tc_ab$verts$0$ef$0 ez(
+        .clock(ez$clock),
+        .a(ez$a),
+        .sel(ez$sel),
+        .y(ez$y)
     );
-    top$dop$doptrf$0$mul_0 cv$1(
-        .clock(cv$1$clock),
-        .a(cv$1$a),
-        .b(cv$1$b),
-        .valid_in(cv$1$valid_in),
-        .y(cv$1$y),
-        .valid_out(cv$1$valid_out)
+    top$tri_unit$tc_ab$edges$0$rs cz(
+        .clock(cz$clock),
+        .a(cz$a),
+        .sel(cz$sel),
+        .y(cz$y)
     );
-    top$dop$doptrf$0$mul_0 cv$2(
-        .clock(cv$2$clock),
-        .a(cv$2$a),
-        .b(cv$2$b),
-        .valid_in(cv$2$valid_in),
-        .y(cv$2$y),
-        .valid_out(cv$2$valid_out)
-    );
-    top$dop$doptrf$0$add_0 fv$0(
-        .clock(fv$0$clock),
-        .a(fv$0$a),
-        .b(fv$0$b),
-        .sub(fv$0$sub),
-        .valid_in(fv$0$valid_in),
-        .y(fv$0$y),
-        .valid_out(fv$0$valid_out)
-    );
-    top$dop$doptrf$0$add_0 fv$1(
-        .clock(fv$1$clock),
-        .a(fv$1$a),
-        .b(fv$1$b),
-        .sub(fv$1$sub),
-        .valid_in(fv$1$valid_in),
-        .y(fv$1$y),
-        .valid_out(fv$1$valid_out)
-    );
-    top$dop$doptrf$0$add_0 fv$2(
-        .clock(fv$2$clock),
-        .a(fv$2$a),
-        .b(fv$2$b),
-        .sub(fv$2$sub),
-        .valid_in(fv$2$valid_in),
-        .y(fv$2$y),
-        .valid_out(fv$2$valid_out)
-    );
-    top$dop$doptrf$0$add_0 ez2(
-        .clock(ez2$clock),
-        .a(ez2$a),
-        .b(ez2$b),
-        .sub(ez2$sub),
-        .valid_in(ez2$valid_in),
-        .y(ez2$y),
-        .valid_out(ez2$valid_out)
+    top$dop$doptrf$0$add_0 gz(
+        .clock(gz$clock),
+        .a(gz$a),
+        .b(gz$b),
+        .sub(gz$sub),
+        .valid_in(gz$valid_in),
+        .y(gz$y),
+        .valid_out(gz$valid_out)
     );
     top$dop$doptrf$0$add_0 hz(
         .clock(hz$clock),
@@ -26208,71 +26158,295 @@ module top$tri_unit$tc_ab$verts$0(clock,x0,x1,x2,m0,m1,m2,c_v,e,f0,f1,f2,h);
         .y(hz$y),
         .valid_out(hz$valid_out)
     );
-    top$tri_unit$tc_ab$edges$0$brz_wait z_wait(
+    top$tri_unit$tc_ab$edges$0$brs_wait f_wait$0(
+        .clock(f_wait$0$clock),
+        .d(f_wait$0$d),
+        .q(f_wait$0$q)
+    );
+    top$tri_unit$tc_ab$edges$0$brs_wait f_wait$1(
+        .clock(f_wait$1$clock),
+        .d(f_wait$1$d),
+        .q(f_wait$1$q)
+    );
+    top$tri_unit$tc_ab$edges$0$brs_wait f_wait$2(
+        .clock(f_wait$2$clock),
+        .d(f_wait$2$d),
+        .q(f_wait$2$q)
+    );
+    top$tri_unit$tc_ab$c3_0 z_wait(
         .clock(z_wait$clock),
         .d(z_wait$d),
         .q(z_wait$q)
     );
+    top$tri_unit$tc_ab$edges$0$brs_wait h_wait(
+        .clock(h_wait$clock),
+        .d(h_wait$d),
+        .q(h_wait$q)
+    );
     
     // Update code
     always @(*) begin
-        ez2$clock = clock;
+        ez$clock = clock;
+        cz$clock = clock;
+        gz$clock = clock;
         hz$clock = clock;
         z_wait$clock = clock;
-        ev$0$clock = clock;
-        cv$0$clock = clock;
-        fv$0$clock = clock;
-        ev$0$valid_in = 1'b0;
-        cv$0$valid_in = 1'b0;
-        fv$0$valid_in = 1'b0;
-        fv$0$sub = 1'b0;
-        ev$0$a = c_v;
-        cv$0$a = c_2u;
-        fv$0$a = ev$0$y;
-        fv$0$b = cv$0$y;
-        ev$1$clock = clock;
-        cv$1$clock = clock;
-        fv$1$clock = clock;
-        ev$1$valid_in = 1'b0;
-        cv$1$valid_in = 1'b0;
-        fv$1$valid_in = 1'b0;
-        fv$1$sub = 1'b0;
-        ev$1$a = c_v;
-        cv$1$a = c_2u;
-        fv$1$a = ev$1$y;
-        fv$1$b = cv$1$y;
-        ev$2$clock = clock;
-        cv$2$clock = clock;
-        fv$2$clock = clock;
-        ev$2$valid_in = 1'b0;
-        cv$2$valid_in = 1'b0;
-        fv$2$valid_in = 1'b0;
-        fv$2$sub = 1'b0;
-        ev$2$a = c_v;
-        cv$2$a = c_2u;
-        fv$2$a = ev$2$y;
-        fv$2$b = cv$2$y;
-        cv$2$a = c_1u;
-        ev$0$b = m0;
-        ev$1$b = m1;
-        ev$2$b = m2;
-        cv$0$b = x0 & mask;
-        cv$1$b = x1 & mask;
-        cv$2$b = x2 & mask;
-        ez2$a = ev$2$y;
-        ez2$b = ev$2$y;
-        ez2$sub = 1'b0;
-        ez2$valid_in = 1'b0;
-        z_wait$d = x2 & mask;
+        h_wait$clock = clock;
+        ef$0$clock = clock;
+        ef$0$sel = exact;
+        f_wait$0$clock = clock;
+        f_wait$0$d = ef$0$y;
+        ef$1$clock = clock;
+        ef$1$sel = exact;
+        f_wait$1$clock = clock;
+        f_wait$1$d = ef$1$y;
+        ef$2$clock = clock;
+        ef$2$sel = exact;
+        f_wait$2$clock = clock;
+        f_wait$2$d = ef$2$y;
+        ef$0$a = m0;
+        ef$1$a = m1;
+        ef$2$a = m2;
+        ez$a = m2;
+        ez$sel = exact;
+        cz$a = z;
+        cz$sel = 1'b0;
+        gz$a = ez$y;
+        gz$b = cz$y;
+        gz$sub = 1'b0;
+        gz$valid_in = 1'b0;
+        e2z = ez$y;
+        if ((ez$y[(32'h17)+:(8)] != 32'h0) & ~&ez$y[(32'h17)+:(8)]) begin
+            e2z = ez$y + c_one;
+        end
+        z_wait$d = z & mask;
         hz$a = z_wait$q;
-        hz$b = ez2$y;
+        hz$b = e2z;
         hz$sub = 1'b0;
         hz$valid_in = 1'b0;
-        e = ev$2$y;
-        f0 = fv$0$y;
-        f1 = fv$1$y;
-        f2 = fv$2$y;
-        h = hz$y;
+        h_wait$d = hz$y;
+        e = ez$y;
+        g = gz$y;
+        f0 = f_wait$0$q;
+        f1 = f_wait$1$q;
+        f2 = f_wait$2$q;
+        h = h_wait$q;
     end
     
 endmodule // top$tri_unit$tc_ab$verts$0
+
+
+module top$tri_unit$tc_ab$verts$0$ef$0(clock,a,sel,y);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] a;
+    input wire  sel;
+    output reg  [31:0] y;
+    
+    // Constant declarations
+    localparam  c_k0 = 10'b11101011;
+    localparam  c_k1 = 10'b11101011;
+    localparam  c_sh0 = 8'h16;
+    localparam  c_sh1 = 8'h0;
+    localparam  c_t0 = 8'h1;
+    localparam  c_t1 = 8'h0;
+    localparam  c_en0 = 1'b1;
+    localparam  c_en1 = 1'b0;
+    localparam  c_j = 8'h19;
+    localparam  c_j1 = 8'h1a;
+    localparam  c_f = 8'h17;
+    localparam  c_ofs = 10'b100000000;
+    localparam  c_norm_min = 10'b100000001;
+    localparam  c_min = 32'h800000;
+    localparam  c_inf = 32'h7f800000;
+    localparam  c_nan = 32'h7fc00000;
+    
+    // Stub signals
+    reg  out$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    
+    // Local signals
+    reg  [7:0] field;
+    reg  [22:0] frac;
+    reg  [49:0] m;
+    reg  [7:0] lo_sh;
+    reg  [7:0] t_sh;
+    reg  t_en;
+    reg  [9:0] kk;
+    reg  [49:0] third;
+    reg  [49:0] sum;
+    reg  top;
+    reg  [7:0] sh;
+    reg  [49:0] hi;
+    reg  lost;
+    reg  [49:0] rnd;
+    reg  [9:0] eb;
+    reg  [9:0] e10;
+    reg  [31:0] res;
+    
+    // Sub module instances
+    top$tri_unit$tc_ab$c3_0 out(
+        .clock(out$clock),
+        .d(out$d),
+        .q(out$q)
+    );
+    
+    // Update code
+    always @(*) begin
+        out$clock = clock;
+        field = a[(32'h17)+:(8)];
+        frac = a[(32'h0)+:(23)];
+        m = (((frac) & 50'h3ffffffffffff) & ~(1 << (32'h17)) | ((1'b1) << (32'h17)));
+        lo_sh = c_sh0;
+        t_sh = c_t0;
+        t_en = c_en0;
+        kk = c_k0;
+        if (sel) begin
+            lo_sh = c_sh1;
+            t_sh = c_t1;
+            t_en = c_en1;
+            kk = c_k1;
+        end
+        third = 32'h0;
+        if (t_en) begin
+            third = m << t_sh;
+        end
+        sum = (m << c_j) + (m << lo_sh) + third;
+        eb = ((field) & 10'h3ff) + kk;
+        top = sum[32'h32 - 32'h1];
+        sh = c_j;
+        if (top) begin
+            sh = c_j1;
+        end
+        hi = sum >> sh;
+        lost = (hi << sh) != sum;
+        rnd = hi + lost;
+        e10 = eb + top + rnd[32'h17 + 32'h1];
+        res = (((e10 - c_ofs) & 32'hffffffff) << c_f) | ((((rnd) & 23'h7fffff)) & 32'hffffffff);
+        if ((field == 32'h0) | (e10 < c_norm_min)) begin
+            res = c_min;
+        end
+        if ((field == 32'h0) & (frac == 32'h0)) begin
+            res = 32'h0;
+        end
+        if (&field) begin
+            res = c_inf;
+            if (frac != 32'h0) begin
+                res = c_nan;
+            end
+        end
+        out$d = res;
+        y = out$q;
+    end
+    
+endmodule // top$tri_unit$tc_ab$verts$0$ef$0
+
+
+module top$tri_unit$tc_ab$verts$0$ef$2(clock,a,sel,y);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] a;
+    input wire  sel;
+    output reg  [31:0] y;
+    
+    // Constant declarations
+    localparam  c_k0 = 10'b11101011;
+    localparam  c_k1 = 10'b11101011;
+    localparam  c_sh0 = 8'h17;
+    localparam  c_sh1 = 8'h16;
+    localparam  c_t0 = 8'h1;
+    localparam  c_t1 = 8'h1;
+    localparam  c_en0 = 1'b1;
+    localparam  c_en1 = 1'b1;
+    localparam  c_j = 8'h19;
+    localparam  c_j1 = 8'h1a;
+    localparam  c_f = 8'h17;
+    localparam  c_ofs = 10'b100000000;
+    localparam  c_norm_min = 10'b100000001;
+    localparam  c_min = 32'h800000;
+    localparam  c_inf = 32'h7f800000;
+    localparam  c_nan = 32'h7fc00000;
+    
+    // Stub signals
+    reg  out$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    
+    // Local signals
+    reg  [7:0] field;
+    reg  [22:0] frac;
+    reg  [49:0] m;
+    reg  [7:0] lo_sh;
+    reg  [7:0] t_sh;
+    reg  t_en;
+    reg  [9:0] kk;
+    reg  [49:0] third;
+    reg  [49:0] sum;
+    reg  top;
+    reg  [7:0] sh;
+    reg  [49:0] hi;
+    reg  lost;
+    reg  [49:0] rnd;
+    reg  [9:0] eb;
+    reg  [9:0] e10;
+    reg  [31:0] res;
+    
+    // Sub module instances
+    top$tri_unit$tc_ab$c3_0 out(
+        .clock(out$clock),
+        .d(out$d),
+        .q(out$q)
+    );
+    
+    // Update code
+    always @(*) begin
+        out$clock = clock;
+        field = a[(32'h17)+:(8)];
+        frac = a[(32'h0)+:(23)];
+        m = (((frac) & 50'h3ffffffffffff) & ~(1 << (32'h17)) | ((1'b1) << (32'h17)));
+        lo_sh = c_sh0;
+        t_sh = c_t0;
+        t_en = c_en0;
+        kk = c_k0;
+        if (sel) begin
+            lo_sh = c_sh1;
+            t_sh = c_t1;
+            t_en = c_en1;
+            kk = c_k1;
+        end
+        third = 32'h0;
+        if (t_en) begin
+            third = m << t_sh;
+        end
+        sum = (m << c_j) + (m << lo_sh) + third;
+        eb = ((field) & 10'h3ff) + kk;
+        top = sum[32'h32 - 32'h1];
+        sh = c_j;
+        if (top) begin
+            sh = c_j1;
+        end
+        hi = sum >> sh;
+        lost = (hi << sh) != sum;
+        rnd = hi + lost;
+        e10 = eb + top + rnd[32'h17 + 32'h1];
+        res = (((e10 - c_ofs) & 32'hffffffff) << c_f) | ((((rnd) & 23'h7fffff)) & 32'hffffffff);
+        if ((field == 32'h0) | (e10 < c_norm_min)) begin
+            res = c_min;
+        end
+        if ((field == 32'h0) & (frac == 32'h0)) begin
+            res = 32'h0;
+        end
+        if (&field) begin
+            res = c_inf;
+            if (frac != 32'h0) begin
+                res = c_nan;
+            end
+        end
+        out$d = res;
+        y = out$q;
+    end
+    
+endmodule // top$tri_unit$tc_ab$verts$0$ef$2

@@ -125,6 +125,25 @@ pub struct Format {
     frac_bits: u32,
 }
 
+/// A constant `c = 2^k (1 + 2^-j + 2^-j2)` (1 <= j < j2 <= F + 2, or j2 = 0 for no third
+/// term; the RTL's `FpScale` takes k < 0): multiplying by it takes shifts and additions of
+/// significands instead of a multiplier ([`Format::scale_up`]); T.CHECK's certificate
+/// multiplies by such constants only. Shifts above F + 2 would round upward as F + 2 does
+/// (their addend only sets the sticky bit).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct ScaleConst {
+    pub k: i32,
+    pub j: u32,
+    pub j2: u32,
+}
+
+impl ScaleConst {
+    pub fn value(self) -> f64 {
+        let t = if self.j2 == 0 { 0.0 } else { pow2(-(self.j2 as i32)) };
+        pow2(self.k) * (1.0 + pow2(-(self.j as i32)) + t)
+    }
+}
+
 /// Magnitude rounding direction (after folding the sign into the mode).
 #[derive(Clone, Copy, PartialEq, Eq)]
 enum Mag {
@@ -493,6 +512,32 @@ impl Format {
             return Self::round32_directed(p, 0.0, r == Rounding::TowardPositive);
         }
         self.round2(p, 0.0, r)
+    }
+
+    /// The smallest [`ScaleConst`] of this format at least `x` (positive, normal in f64;
+    /// shifts at most F + 2; of two equal ones, the one without a second shift).
+    pub fn scale_const_at_least(&self, x: f64) -> ScaleConst {
+        assert!(x.is_normal() && x > 0.0 && x < 1e300, "scale constant {x:e} out of range");
+        let jmax = self.frac_bits + 2;
+        let k = exponent64(x);
+        let shapes = (k..=k + 1).flat_map(|k| {
+            (1..=jmax).flat_map(move |j| std::iter::once(0).chain(j + 1..=jmax).map(move |j2| ScaleConst { k, j, j2 }))
+        });
+        let c = shapes.filter(|c| c.value() >= x).min_by(|a, b| a.value().total_cmp(&b.value()).then((a.j2 != 0).cmp(&(b.j2 != 0))));
+        c.expect("2^(k+1) (1 + 2^-jmax) is at least x")
+    }
+
+    /// `|x| c` rounded upward, and at least 2^emin when x is not zero: the golden function
+    /// of `FpScale`, the chip's multiplier by a [`ScaleConst`] (shifts and two additions).
+    /// Results below 2^emin (with c < 1, subnormal x included) become 2^emin, an upper
+    /// bound that spares the unit the subnormal grid; infinity and NaN pass.
+    pub fn scale_up(&self, x: f64, c: ScaleConst) -> f64 {
+        let a = x.abs();
+        if a == 0.0 || !a.is_finite() {
+            return a;
+        }
+        // exact: a has at most F + 1 significant bits, c at most F + 3
+        self.round(a * c.value(), Rounding::TowardPositive).max(self.min_positive_normal())
     }
 
     /// The bit pattern `sign | exp | frac` (fields masked to their widths).

@@ -737,3 +737,33 @@ proptest! {
         check::<E4M3S>(Format::new(4, 3).unwrap(), bits)?;
     }
 }
+
+/// `scale_const_at_least` and `scale_up` on hand-derived cases.
+#[test]
+fn scale_by_hand() {
+    let f = Format::BINARY32;
+    let u = 2f64.powi(-24);
+    let c = |k, j, j2| ScaleConst { k, j, j2 };
+    // 9u (1 + tiny) lies just above 8u (1 + 2^-3): add the smallest third term, 2^-25
+    assert_eq!(f.scale_const_at_least(9.0 * u * (1.0 + 2f64.powi(-40))), c(-21, 3, 25));
+    // exactly 10u takes two terms; just above 2^-21 the shift caps at F + 2 = 25
+    assert_eq!(f.scale_const_at_least(10.0 * u), c(-21, 2, 0));
+    assert_eq!(f.scale_const_at_least(8.0 * u * (1.0 + 2f64.powi(-30))), c(-21, 25, 0));
+    // 11u (1 + tiny) = 8u (1 + 2^-2 + 2^-3 + tiny): three terms cannot hold it; 12u
+    assert_eq!(f.scale_const_at_least(11.0 * u * (1.0 + 2f64.powi(-40))), c(-21, 1, 0));
+    // 0.2 = 2^-3 1.6: 1 + 2^-1 + 2^-3 = 1.625
+    assert_eq!(f.scale_const_at_least(0.2), c(-3, 1, 3));
+    // exact: 1.5 * 0.1875
+    assert_eq!(f.scale_up(-1.5, c(-3, 1, 0)), 0.28125);
+    // (1 + 2^-23) 2^-1 (1 + 2^-25) = 2^-1 (1 + 2^-23 + 2^-25 + 2^-48): up to 2^-1 (1 + 2^-22)
+    assert_eq!(f.scale_up(1.0 + 2f64.powi(-23), c(-1, 25, 0)), 0.5 * (1.0 + 2f64.powi(-22)));
+    // 1.75 2^-2 (1 + 2^-1 + 2^-2) = 1.75 * 1.75 / 4, exact
+    assert_eq!(f.scale_up(1.75, c(-2, 1, 2)), 1.75 * 1.75 / 4.0);
+    // below 2^emin, and any subnormal: 2^emin; zero, inf and NaN pass
+    assert_eq!(f.scale_up(2f64.powi(-126), c(-2, 2, 0)), 2f64.powi(-126));
+    assert_eq!(f.scale_up(2f64.powi(-149), c(-2, 2, 0)), 2f64.powi(-126));
+    assert_eq!(f.scale_up(2f64.powi(-120), c(-2, 2, 0)), 2f64.powi(-122) * 1.25);
+    assert_eq!(f.scale_up(0.0, c(-2, 2, 0)), 0.0);
+    assert_eq!(f.scale_up(f64::NEG_INFINITY, c(-2, 2, 0)), f64::INFINITY);
+    assert!(f.scale_up(f64::NAN, c(-2, 2, 0)).is_nan());
+}

@@ -35,15 +35,16 @@
 //! triangle has no M_B: that direction is unknown.
 
 use crate::dop::host::{Affine, HostSetup};
-use crate::format::{Format, Rounding};
+use crate::format::{Format, Rounding, ScaleConst};
 use crate::memory::TriWord;
 
 const UP: Rounding = Rounding::TowardPositive;
 
 /// The constants of T.CHECK's certificate for a value format and rounding
 /// (docs/ACCURACY.md, "T.CHECK's certificate"). `g_v` is the mapped vertices' error
-/// factor (f64, exact to 2^-50); `c_*` are the format values the chip multiplies by
-/// (rounded up).
+/// factor (f64, exact to 2^-50); `c_*` are the constants the chip multiplies magnitudes
+/// by, each the smallest [`ScaleConst`] at least its target (times 1 + 2^-40), indexed
+/// like `g_v` by whether the vertices are exact.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Certificate {
     pub f: Format,
@@ -57,13 +58,14 @@ pub struct Certificate {
     /// Mapped vertex coordinates: |V - V*| <= g_v M_V, for vertices the host rounded ([0])
     /// or exact ones ([1]).
     pub g_v: [f64; 2],
-    /// C_V = g_v (1 + 2^-40) rounded up: a coordinate's bound is `C_V M_V`.
-    pub c_v: [f64; 2],
-    /// >= 2u + u^2: the rounding of a product and the difference after it, per unit of
-    /// the operands' magnitudes (a, b; and s's two additions).
-    pub c_2u: f64,
-    /// >= u (1 + u): r_z's rounding per unit of |Pz| + |Qz|.
-    pub c_1u: f64,
+    /// E = c_e M >= g_v M: a mapped coordinate's bound (z's).
+    pub c_e: [ScaleConst; 2],
+    /// E' = c_z M >= g_v M + u (1 + u) |z| for z (r_z's rounding).
+    pub c_z: [ScaleConst; 2],
+    /// c_s >= 2u + u^2: the rounding of a product and the difference after it, per unit
+    /// of the operands' magnitudes (in G = E_z + c_s |z|, which carries a's and b's), and of
+    /// s's two additions per unit of |a| + |b| + |r_z|.
+    pub c_s: ScaleConst,
     /// F1: a power of two that every mapped vertex's magnitude is at least (the host's
     /// alpha_m is floored so): (g_v F1)^2 >= the largest underflow error of a product.
     pub floor: f64,
@@ -79,9 +81,19 @@ impl Certificate {
         let eta = f.min_positive_subnormal() * if nearest { 0.5 } else { 1.0 };
         let g_v = [u1, 0.0].map(|gx| 6.0 * u + ((1.0 + u1) * (1.0 + u1) * (1.0 + gx) - 1.0));
         let floor = 2f64.powi((eta.sqrt() / g_v[1]).log2().ceil() as i32);
-        let mut c = Certificate { f, u, u1, eta_s: f.min_positive_subnormal() / 2.0, g_v, c_v: [0.0; 2], c_2u: 0.0, c_1u: 0.0, floor };
-        (c.c_v, c.c_2u, c.c_1u) = (g_v.map(|g| c.word_up(g)), c.word_up(2.0 * u + u * u), c.word_up(u + u * u));
-        c
+        let c = |x: f64| f.scale_const_at_least(x * (1.0 + 2f64.powi(-40)));
+        let (c2, c1) = (2.0 * u + u * u, u + u * u);
+        Certificate {
+            f,
+            u,
+            u1,
+            eta_s: f.min_positive_subnormal() / 2.0,
+            g_v,
+            c_e: g_v.map(c),
+            c_z: g_v.map(|g| c(g + c1)),
+            c_s: c(c2),
+            floor,
+        }
     }
 
     /// A word of the certificate from its f64 value x (computed to within 2^-50 of the
@@ -157,10 +169,14 @@ pub fn stage1(f: Format, r: Rounding, leaf: &TriWord, frame: &Affine, beta: [f64
 #[derive(Clone, Debug, PartialEq)]
 pub struct Trace {
     pub stage1: Stage1,
-    /// Mapped vertex k, coordinate i, its magnitude and its bound.
+    /// Mapped vertex k, coordinate i, and its magnitude; per vertex the bounds E_z
+    /// (`e_z`), E_x, E_y and E'_z (`e1`), G and H.
     pub v: [[f64; 3]; 3],
     pub v_mag: [[f64; 3]; 3],
-    pub v_bound: [[f64; 3]; 3],
+    pub e_z: [f64; 3],
+    pub e1: [[f64; 3]; 3],
+    pub g: [f64; 3],
+    pub h: [f64; 3],
     /// Per edge: the values and their bounds.
     pub a: [f64; 3],
     pub b: [f64; 3],
@@ -207,7 +223,7 @@ pub fn edges(f: Format, r: Rounding, cert: &Certificate, s1: &Stage1, tri: &TriW
 /// conjunctions are surely false, whatever the other signs: the chip's verdict is the same)
 /// and leaves its trace entries at 0.
 fn edges_in(f: Format, r: Rounding, cert: &Certificate, s1: &Stage1, tri: &TriWord, complete: bool) -> Trace {
-    let c_v = cert.c_v[tri.v_exact as usize];
+    let x = tri.v_exact as usize;
     let (mb, mag) = (&s1.mb, &s1.mag);
     let add = |x: f64, y: f64| f.add(x, y, UP);
     let mul = |x: f64, y: f64| f.mul(x, y, UP);
@@ -215,7 +231,10 @@ fn edges_in(f: Format, r: Rounding, cert: &Certificate, s1: &Stage1, tri: &TriWo
         stage1: *s1,
         v: [[0.0; 3]; 3],
         v_mag: [[0.0; 3]; 3],
-        v_bound: [[0.0; 3]; 3],
+        e_z: [0.0; 3],
+        e1: [[0.0; 3]; 3],
+        g: [0.0; 3],
+        h: [0.0; 3],
         a: [0.0; 3],
         b: [0.0; 3],
         rz: [0.0; 3],
@@ -226,9 +245,9 @@ fn edges_in(f: Format, r: Rounding, cert: &Certificate, s1: &Stage1, tri: &TriWo
         s_bound: [0.0; 3],
         crossing: [None; 3],
     };
-    // Per vertex: E (the bound), E' = E + c |v| (x, y: with the rounding of a and b; z:
-    // with r_z's), and H = |z| + 2 E_z.
-    let (mut e1, mut hz) = ([[0.0; 3]; 3], [0.0; 3]);
+    // Per vertex, from the magnitudes times constants: the bounds E of x, y and z,
+    // E'_z >= E_z + u (1 + u) |z| (with r_z's rounding, since M_z >= |z|), G = E_z +
+    // (2u + u^2) |z| (with the rounding of a's and b's products) and H = |z| + 2 E_z.
     for (k, p) in tri.v.iter().enumerate() {
         let l1 = add(add(p[0].abs(), p[1].abs()), add(p[2].abs(), s1.scale));
         let err = mul(s1.a_err, l1);
@@ -237,26 +256,27 @@ fn edges_in(f: Format, r: Rounding, cert: &Certificate, s1: &Stage1, tri: &TriWo
             t.v[k][i] = dot(f, r, row, *p, Some(mb[i][3]));
             let mrow = [mag[i][0], mag[i][1], mag[i][2]];
             t.v_mag[k][i] = dot_mag(f, mrow, *p, Some(add(mag[i][3], err)));
-            t.v_bound[k][i] = mul(c_v, t.v_mag[k][i]);
-            let c = if i < 2 { cert.c_2u } else { cert.c_1u };
-            e1[k][i] = add(t.v_bound[k][i], mul(c, t.v[k][i].abs()));
+            t.e1[k][i] = f.scale_up(t.v_mag[k][i], if i < 2 { cert.c_e[x] } else { cert.c_z[x] });
         }
-        hz[k] = add(t.v[k][2].abs(), add(t.v_bound[k][2], t.v_bound[k][2]));
+        t.e_z[k] = f.scale_up(t.v_mag[k][2], cert.c_e[x]);
+        t.g[k] = add(t.e_z[k], f.scale_up(t.v[k][2], cert.c_s));
+        // 2 E_z is exact: E_z is 0, infinite or at least 2^emin, and far below the largest
+        t.h[k] = add(t.v[k][2].abs(), 2.0 * t.e_z[k]);
     }
-    let (v, vb) = (t.v, t.v_bound);
+    let (v, ez, e1, g, hz) = (t.v, t.e_z, t.e1, t.g, t.h);
     for e in 0..3 {
         let (p, q) = (e, (e + 1) % 3);
-        let (sp, sq) = (sign(v[p][2], vb[p][2]), sign(v[q][2], vb[q][2]));
+        let (sp, sq) = (sign(v[p][2], ez[p]), sign(v[q][2], ez[q]));
         if !complete && sp.is_some() && sp == sq {
             t.crossing[e] = Some(false);
             continue;
         }
         // a = Px Qz - Qx Pz (coordinate 0), b the same with y (coordinate 1); the bound
-        // E'_Px H_Qz + |Px| E_Qz + E'_Qx H_Pz + |Qx| E_Pz
+        // E_Px H_Qz + |Px| G_Qz + E_Qx H_Pz + |Qx| G_Pz
         let cross = |i: usize| {
             let x = f.sub(f.mul(v[p][i], v[q][2], r), f.mul(v[q][i], v[p][2], r), r);
-            let pq = add(mul(e1[p][i], hz[q]), mul(v[p][i].abs(), vb[q][2]));
-            let qp = add(mul(e1[q][i], hz[p]), mul(v[q][i].abs(), vb[p][2]));
+            let pq = add(mul(e1[p][i], hz[q]), mul(v[p][i].abs(), g[q]));
+            let qp = add(mul(e1[q][i], hz[p]), mul(v[q][i].abs(), g[p]));
             (x, add(pq, qp))
         };
         let (a, a_bound) = cross(0);
@@ -264,7 +284,7 @@ fn edges_in(f: Format, r: Rounding, cert: &Certificate, s1: &Stage1, tri: &TriWo
         let rz = f.sub(v[q][2], v[p][2], r);
         let rz_bound = add(e1[q][2], e1[p][2]);
         let s = f.sub(f.add(a, b, r), rz, r);
-        let s_round = mul(cert.c_2u, add(add(a.abs(), b.abs()), rz.abs()));
+        let s_round = f.scale_up(add(add(a.abs(), b.abs()), rz.abs()), cert.c_s);
         let s_bound = add(add(a_bound, b_bound), add(rz_bound, s_round));
         (t.a[e], t.b[e], t.rz[e], t.s[e]) = (a, b, rz, s);
         (t.a_bound[e], t.b_bound[e], t.rz_bound[e], t.s_bound[e]) = (a_bound, b_bound, rz_bound, s_bound);

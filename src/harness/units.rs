@@ -15,8 +15,8 @@ const RANDOM_CASES: usize = 3000;
 
 /// One exported unit.
 pub struct Unit {
-    /// `<unit>_<format>_<rounding>` (`<unit>_<format>` for the bound units, which round to
-    /// nearest and step up), the file stem in rtl/ and vectors/.
+    /// `<unit>_<format>_<rounding>` (`<unit>_<format>` for the constant multiplier, which
+    /// rounds up), the file stem in rtl/ and vectors/.
     pub name: String,
     pub latency: u32,
     verilog: Text,
@@ -126,6 +126,15 @@ pub fn all() -> Vec<Unit> {
         }
     }
     for (tag, fmt) in [("b32", Format::BINARY32), ("e8m15", Format::REDUCED)] {
+        let v: fn() -> String = match tag {
+            "b32" => crate::rtl::b32::verilog_fp_scale,
+            _ => crate::rtl::e8m15::verilog_fp_scale,
+        };
+        let name = format!("fp_scale_{tag}");
+        let n2 = name.clone();
+        units.push(Unit { name, latency: 4, verilog: Box::new(v), vectors: Box::new(move || fp_scale_vectors(&n2, fmt)) });
+    }
+    for (tag, fmt) in [("b32", Format::BINARY32), ("e8m15", Format::REDUCED)] {
         let (vt, vu): (VerilogFn, VerilogFn) = match tag {
             "b32" => (crate::rtl::b32::verilog_tcheck, crate::rtl::b32::verilog_tri_unit),
             _ => (crate::rtl::e8m15::verilog_tcheck, crate::rtl::e8m15::verilog_tri_unit),
@@ -188,6 +197,28 @@ fn fp_vectors(name: &str, fmt: Format, r: Rounding, add: bool, latency: u32) -> 
             let _ = writeln!(out, "{a:0digits$x} {b:0digits$x} {} {z:0digits$x}", sub as u8);
         } else {
             let _ = writeln!(out, "{a:0digits$x} {b:0digits$x} {z:0digits$x}");
+        }
+    }
+    out
+}
+
+/// Vectors `a sel y` of the constant multiplier `fp_scale_<format>` (T.CHECK's C_V for
+/// rounded and exact vertices, `rtl::*::fp_scale_top`): every special pattern and
+/// [`RANDOM_CASES`] random operands, each with both constants.
+fn fp_scale_vectors(name: &str, fmt: Format) -> String {
+    let c = crate::golden::tcheck::Certificate::new(fmt, Rounding::NearestEven).c_e;
+    let digits = (fmt.width() as usize).div_ceil(4);
+    let mut out = String::new();
+    let _ = writeln!(out, "// a sel y");
+    let _ = writeln!(out, "// latency: 4");
+    let _ = writeln!(out, "// {name}: y = |a| c rounded up, at least 2^emin, in {fmt}, c = {:?} (sel 0) or {:?} (sel 1); golden: collision_chip::format::Format::scale_up", c[0], c[1]);
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(0x5eed ^ name.len() as u64);
+    let mut xs = fmt.special_patterns();
+    xs.extend((0..RANDOM_CASES).map(|_| operand(&mut rng, fmt)));
+    for a in xs {
+        for sel in [false, true] {
+            let y = fmt.to_bits(fmt.scale_up(fmt.from_bits(a), c[sel as usize]));
+            let _ = writeln!(out, "{a:0digits$x} {} {y:0digits$x}", sel as u8);
         }
     }
     out

@@ -7,7 +7,7 @@
 //!
 //! | module | format | units |
 //! |---|---|---|
-//! | [`b32`] | `binary32` (e8m23, [`Format::BINARY32`](crate::format::Format::BINARY32)) | [`b32::FpMul`] (latency 4), [`b32::FpAdd`] (latency 3), [`b32::Doptrf`] (latency 15), [`b32::KlmSel`], [`b32::DopUnit6`] ... [`b32::DopUnit26`] (k = 6, 14, 18, 24, 26; latency 15) |
+//! | [`b32`] | `binary32` (e8m23, [`Format::BINARY32`](crate::format::Format::BINARY32)) | [`b32::FpMul`] (latency 4), [`b32::FpAdd`] (latency 3), [`b32::FpScale`] (by a constant, latency 4), [`b32::Doptrf`] (latency 15), [`b32::KlmSel`], [`b32::DopUnit6`] ... [`b32::DopUnit26`] (k = 6, 14, 18, 24, 26; latency 15) |
 //! | [`e8m15`] | e8m15 ([`Format::REDUCED`](crate::format::Format::REDUCED)) | the same |
 //!
 //! Each unit takes one operation per clock with a `valid` bit travelling alongside and
@@ -72,19 +72,21 @@ mod dop_unit;
 mod doptrf;
 mod fp_add;
 mod fp_mul;
+mod fp_scale;
 mod klmsel;
 mod tcheck;
 mod tri_unit;
 
 /// Stamps out one format's units plus constructors and Verilog export.
 macro_rules! fp_format {
-    ($fmt:expr, $W:tt, $WM1:tt, $E:tt, $F:tt, $P:tt, $P2:tt, $P3:tt, $P4:tt, $PP:tt,
+    ($fmt:expr, $W:tt, $WM1:tt, $E:tt, $F:tt, $P:tt, $P2:tt, $P3:tt, $P4:tt, $PP:tt, $S:tt,
      norm_p($($np:tt),*), norm_p3($($nq:tt),*)) => {
         use crate::format::{Format, Rounding};
 
         $crate::rtl::common::fp_common!($W, $WM1, $E, $F, $P, $P2, $P3, $P4, $PP, norm_p($($np),*), norm_p3($($nq),*));
         $crate::rtl::fp_mul::fp_mul!($W, $E, $F, $P, $P2);
         $crate::rtl::fp_add::fp_add!($W, $WM1, $E, $F, $P, $P2, $P3, $P4);
+        $crate::rtl::fp_scale::fp_scale!($W, $E, $F, $S);
         $crate::rtl::doptrf::doptrf!($W, $WM1, $E, $F);
         $crate::rtl::klmsel::klmsel!($W);
         $crate::rtl::dop_unit::dop_unit!($W);
@@ -106,6 +108,18 @@ macro_rules! fp_format {
             top_level!(FpAdd::new(rounding); clock, a, b, sub, valid_in)
         }
 
+        /// A constant multiplier ready to simulate as a top-level block: T.CHECK's C_V
+        /// for rounded (`sel` 0) and exact (`sel` 1) vertices.
+        pub fn fp_scale_top() -> FpScale {
+            let cert = $crate::golden::tcheck::Certificate::new(FORMAT, Rounding::NearestEven);
+            top_level!(FpScale::new(cert.c_e[0], cert.c_e[1]); clock, a, sel)
+        }
+
+        /// Verilog of [`fp_scale_top`] (top module `top`).
+        pub fn verilog_fp_scale() -> String {
+            generate_verilog(&fp_scale_top())
+        }
+
         /// Verilog of the multiplier (top module `top`).
         pub fn verilog_fp_mul(rounding: Rounding) -> String {
             generate_verilog(&fp_mul_top(rounding))
@@ -120,7 +134,7 @@ macro_rules! fp_format {
 
 /// Units for `binary32` (e8m23).
 pub mod b32 {
-    fp_format!(Format::BINARY32, 32, 31, 8, 23, 24, 26, 27, 28, 48,
+    fp_format!(Format::BINARY32, 32, 31, 8, 23, 24, 26, 27, 28, 48, 50,
         norm_p(8, 16, 20, 22, 23), norm_p3(11, 19, 23, 25, 26));
     // the papers' chip: node word 1 + 24 * 32 + 64 bits (wider than a triangle word, 24 * 32 + 2)
     crate::rtl::chip::chip!(24, DopUnit24, 32, 833, 833);
@@ -128,7 +142,7 @@ pub mod b32 {
 
 /// Units for e8m15 (`Format::REDUCED`).
 pub mod e8m15 {
-    fp_format!(Format::REDUCED, 24, 23, 8, 15, 16, 18, 19, 20, 32,
+    fp_format!(Format::REDUCED, 24, 23, 8, 15, 16, 18, 19, 20, 32, 34,
         norm_p(0, 8, 12, 14, 15), norm_p3(3, 11, 15, 17, 18));
     // node word 1 + 6 * 24 + 64 bits, triangle word 23 * 24 + 2
     crate::rtl::chip::chip!(6, DopUnit6, 24, 209, 554);

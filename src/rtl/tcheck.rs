@@ -23,11 +23,6 @@ macro_rules! tcheck {
         /// All ones but the sign bit: a word ANDed with it is its absolute value.
         const ABS_MASK: u64 = (1u64 << $WM1) - 1;
 
-        /// A constant of the format as a word.
-        fn word(x: f64) -> Bits<$W> {
-            FORMAT.to_bits(x).into()
-        }
-
         /// The three-valued sign of a value against its bound (golden
         /// [`sign`](crate::golden::tcheck::sign)), combinational: `sgn = 1` surely positive
         /// (`x > e`), `2` surely negative (`x < -e`), `0` unknown (also for a NaN x or a
@@ -168,71 +163,79 @@ macro_rules! tcheck {
             }
         }
 
-        /// The certificate's terms of one mapped vertex (golden `edges_in`, per vertex):
-        /// from its coordinates `x0..x2` and their magnitudes `m0..m2`, the bounds
-        /// `E_i = C_V m_i`, `E'_i = E_i + c |x_i|` (c = 2u + u^2 for x and y, which covers
-        /// the rounding of a and b; u + u^2 for z, r_z's) and `H = |z| + (E_z + E_z)`, all
-        /// rounded upward. `c_v` is C_V for the triangle's vertices (rounded or exact).
+        /// The certificate's terms of one mapped vertex (golden `edges_in`, per vertex),
+        /// from its z coordinate `z` and the magnitudes `m0..m2` of its coordinates, with
+        /// constant multipliers ([`FpScale`]) and adders, rounded upward: the bounds
+        /// `E_i = c_e m_i`, `E'_z = c_z m2` (c_z >= C_V + u + u^2, r_z's rounding, since
+        /// m2 >= |z|), `G = E_z + c_s |z|` (c_s >= 2u + u^2, the rounding of a's and b's
+        /// products) and `H = |z| + 2 E_z` (the doubling exact: E_z is 0, infinite or at
+        /// least 2^emin, and far below the largest value). `exact` picks the constants of
+        /// exact vertices.
         ///
-        /// Schedule: `e` = E_z after edge 4 ([`Vertex::E_AT`]), `f*` = E' 7
-        /// ([`Vertex::F_AT`]), `h` 10 ([`Vertex::H_AT`]). Ports: in `clock`, `x0` .. `x2`,
-        /// `m0` .. `m2`, `c_v`; out `e`, `f0` .. `f2`, `h`.
+        /// Schedule: `e` = E_z after edge 4 ([`Vertex::E_AT`]), `g` 7 ([`Vertex::G_AT`]),
+        /// `f0`, `f1`, `f2` = E_x, E_y, E'_z 7 ([`Vertex::F_AT`]; ready at 4, they wait for
+        /// H, which the edges pair them with), `h` 10 ([`Vertex::H_AT`]: |z| waits 4 for
+        /// E_z, the sum 3 more). Ports: in `clock`, `z`, `m0` .. `m2`, `exact`; out `e`,
+        /// `g`, `f0` .. `f2`, `h`.
         #[derive(LogicBlock)]
         pub struct Vertex {
             pub clock: Signal<In, Clock>,
-            pub x0: Signal<In, Bits<$W>>,
-            pub x1: Signal<In, Bits<$W>>,
-            pub x2: Signal<In, Bits<$W>>,
+            pub z: Signal<In, Bits<$W>>,
             pub m0: Signal<In, Bits<$W>>,
             pub m1: Signal<In, Bits<$W>>,
             pub m2: Signal<In, Bits<$W>>,
-            pub c_v: Signal<In, Bits<$W>>,
+            pub exact: Signal<In, Bit>,
             pub e: Signal<Out, Bits<$W>>,
+            pub g: Signal<Out, Bits<$W>>,
             pub f0: Signal<Out, Bits<$W>>,
             pub f1: Signal<Out, Bits<$W>>,
             pub f2: Signal<Out, Bits<$W>>,
             pub h: Signal<Out, Bits<$W>>,
             mask: Constant<Bits<$W>>,
-            c_2u: Constant<Bits<$W>>,
-            c_1u: Constant<Bits<$W>>,
-            ev: [FpMul; 3],
-            cv: [FpMul; 3],
-            fv: [FpAdd; 3],
-            ez2: FpAdd,
+            ef: [FpScale; 3],
+            ez: FpScale,
+            cz: FpScale,
+            gz: FpAdd,
+            e2z: Signal<Local, Bits<$W>>,
+            c_one: Constant<Bits<$W>>,
             hz: FpAdd,
-            z_wait: Delay<Bits<$W>, 7>,
+            f_wait: [Delay<Bits<$W>, { Vertex::F_AT - Vertex::E_AT }>; 3],
+            z_wait: Delay<Bits<$W>, { Vertex::E_AT }>,
+            h_wait: Delay<Bits<$W>, 3>,
         }
 
         impl Vertex {
-            pub const E_AT: usize = 4;
+            pub const E_AT: usize = FpScale::LATENCY;
+            pub const G_AT: usize = 7;
             pub const F_AT: usize = 7;
             pub const H_AT: usize = 10;
 
             pub fn new(cert: &$crate::golden::tcheck::Certificate) -> Self {
-                let up = Rounding::TowardPositive;
+                let c = |c: [$crate::format::ScaleConst; 2]| FpScale::new(c[0], c[1]);
                 Self {
                     clock: Default::default(),
-                    x0: Default::default(),
-                    x1: Default::default(),
-                    x2: Default::default(),
+                    z: Default::default(),
                     m0: Default::default(),
                     m1: Default::default(),
                     m2: Default::default(),
-                    c_v: Default::default(),
+                    exact: Default::default(),
                     e: Default::default(),
+                    g: Default::default(),
                     f0: Default::default(),
                     f1: Default::default(),
                     f2: Default::default(),
                     h: Default::default(),
                     mask: Constant::new(ABS_MASK.into()),
-                    c_2u: Constant::new(word(cert.c_2u)),
-                    c_1u: Constant::new(word(cert.c_1u)),
-                    ev: std::array::from_fn(|_| FpMul::new(up)),
-                    cv: std::array::from_fn(|_| FpMul::new(up)),
-                    fv: std::array::from_fn(|_| FpAdd::new(up)),
-                    ez2: FpAdd::new(up),
-                    hz: FpAdd::new(up),
+                    ef: [c(cert.c_e), c(cert.c_e), c(cert.c_z)],
+                    ez: c(cert.c_e),
+                    cz: FpScale::new(cert.c_s, cert.c_s),
+                    gz: FpAdd::new(Rounding::TowardPositive),
+                    e2z: Default::default(),
+                    c_one: Constant::new((1u64 << $F).into()),
+                    hz: FpAdd::new(Rounding::TowardPositive),
+                    f_wait: Default::default(),
                     z_wait: Default::default(),
+                    h_wait: Default::default(),
                 }
             }
         }
@@ -240,64 +243,65 @@ macro_rules! tcheck {
         impl Logic for Vertex {
             #[hdl_gen]
             fn update(&mut self) {
-                clock!(self, clock, ez2, hz, z_wait);
+                clock!(self, clock, ez, cz, gz, hz, z_wait, h_wait);
                 for i in 0..3 {
-                    self.ev[i].clock.next = self.clock.val();
-                    self.cv[i].clock.next = self.clock.val();
-                    self.fv[i].clock.next = self.clock.val();
-                    self.ev[i].valid_in.next = false;
-                    self.cv[i].valid_in.next = false;
-                    self.fv[i].valid_in.next = false;
-                    self.fv[i].sub.next = false;
-                    self.ev[i].a.next = self.c_v.val();
-                    self.cv[i].a.next = self.c_2u.val();
-                    self.fv[i].a.next = self.ev[i].y.val();
-                    self.fv[i].b.next = self.cv[i].y.val();
+                    self.ef[i].clock.next = self.clock.val();
+                    self.ef[i].sel.next = self.exact.val();
+                    self.f_wait[i].clock.next = self.clock.val();
+                    self.f_wait[i].d.next = self.ef[i].y.val();
                 }
-                self.cv[2].a.next = self.c_1u.val();
-                self.ev[0].b.next = self.m0.val();
-                self.ev[1].b.next = self.m1.val();
-                self.ev[2].b.next = self.m2.val();
-                self.cv[0].b.next = self.x0.val() & self.mask.val();
-                self.cv[1].b.next = self.x1.val() & self.mask.val();
-                self.cv[2].b.next = self.x2.val() & self.mask.val();
-                self.ez2.a.next = self.ev[2].y.val();
-                self.ez2.b.next = self.ev[2].y.val();
-                self.ez2.sub.next = false;
-                self.ez2.valid_in.next = false;
-                self.z_wait.d.next = self.x2.val() & self.mask.val();
+                self.ef[0].a.next = self.m0.val();
+                self.ef[1].a.next = self.m1.val();
+                self.ef[2].a.next = self.m2.val();
+                self.ez.a.next = self.m2.val();
+                self.ez.sel.next = self.exact.val();
+                self.cz.a.next = self.z.val();
+                self.cz.sel.next = false;
+                self.gz.a.next = self.ez.y.val();
+                self.gz.b.next = self.cz.y.val();
+                self.gz.sub.next = false;
+                self.gz.valid_in.next = false;
+                // 2 E_z: one more in the exponent field (0 and infinity stay)
+                self.e2z.next = self.ez.y.val();
+                if (self.ez.y.val().get_bits::<$E>($F) != 0) & !self.ez.y.val().get_bits::<$E>($F).all() {
+                    self.e2z.next = self.ez.y.val() + self.c_one.val();
+                }
+                self.z_wait.d.next = self.z.val() & self.mask.val();
                 self.hz.a.next = self.z_wait.q.val();
-                self.hz.b.next = self.ez2.y.val();
+                self.hz.b.next = self.e2z.val();
                 self.hz.sub.next = false;
                 self.hz.valid_in.next = false;
-                self.e.next = self.ev[2].y.val();
-                self.f0.next = self.fv[0].y.val();
-                self.f1.next = self.fv[1].y.val();
-                self.f2.next = self.fv[2].y.val();
-                self.h.next = self.hz.y.val();
+                self.h_wait.d.next = self.hz.y.val();
+                self.e.next = self.ez.y.val();
+                self.g.next = self.gz.y.val();
+                self.f0.next = self.f_wait[0].q.val();
+                self.f1.next = self.f_wait[1].q.val();
+                self.f2.next = self.f_wait[2].q.val();
+                self.h.next = self.h_wait.q.val();
             }
         }
 
         /// Stages 3-5 for one edge P -> Q of the mapped triangle (Eq. 9 and the derived
         /// crossing test, golden `edges_in`): `a = Px Qz - Qx Pz`, `b = Py Qz - Qy Pz`,
         /// `r_z = Qz - Pz`, `s = (a + b) - r_z`; beside them, from the vertices' terms
-        /// ([`Vertex`]), rounded upward: `B_a = (E'_Px H_Qz + |Px| E_Qz) + (E'_Qx H_Pz +
-        /// |Qx| E_Pz)`, B_b the same with y, `B_rz = E'_Qz + E'_Pz`, `B_s = (B_a + B_b) +
-        /// (B_rz + c (|a| + |b| + |r_z|))` (c = 2u + u^2); then three-valued signs and
+        /// ([`Vertex`]), rounded upward: `B_a = (E_Px H_Qz + |Px| G_Qz) + (E_Qx H_Pz +
+        /// |Qx| G_Pz)`, B_b the same with y, `B_rz = E'_Qz + E'_Pz`, `B_s = (B_a + B_b) +
+        /// (B_rz + c_s (|a| + |b| + |r_z|))`; then three-valued signs and
         /// `crossing = (Pz<0, Qz>0, r_z>0, a>0, b>0, s<0) or (Pz>0, Qz<0, r_z<0, a<0, b<0, s>0)`
         /// in Kleene logic: `cross_t` (surely crosses), `cross_f` (surely misses).
         ///
         /// Inputs arrive as the vertex terms are ready: `p*`, `q*` (coordinates) at 0, `pe`,
-        /// `qe` (E_z) at [`Vertex::E_AT`], `pf*`, `qf*` (E') at [`Vertex::F_AT`], `ph`, `qh`
-        /// (H) at [`Vertex::H_AT`]. Schedule: products after edge 4, `a`, `b` 7, `rz` 3
-        /// (waits 7), `ab` 10, `s` 13; bound products 14 (`|P| E` 8, waiting 6), their sums
-        /// 17, `ba`, `bb` 20; `brz` 10 (waits 7); `rab` 10, `rabz` 13, `rs` 17, `brs` 20
-        /// (waits 3), `bab` 23, `bs` 26. Each sign is taken when its value and bound are
-        /// ready (z at 4, r_z 10, a and b 20, s 26), its two bits wait for s's, and the six
-        /// are registered with s and its bound after edge 27: latency [`Edge::LATENCY`] =
-        /// 27 (`cross_t`, `cross_f` combinational from the sign register). Ports: in
-        /// `clock`, `p0` .. `p2`, `q0` .. `q2`, `pe`, `qe`, `pf0` .. `pf2`, `qf0` .. `qf2`,
-        /// `ph`, `qh`; out `s_x`, `s_b`, `cross_t`, `cross_f`.
+        /// `qe` (E_z) at [`Vertex::E_AT`], `pg`, `qg` (G) at [`Vertex::G_AT`], `pf*`, `qf*`
+        /// (E_x, E_y, E'_z) at [`Vertex::F_AT`], `ph`, `qh` (H) at [`Vertex::H_AT`].
+        /// Schedule: products after edge 4, `a`, `b` 7, `rz` 3 (waits 7), `ab` 10, `s` 13;
+        /// bound products 14 (`|P| G` 11, waiting 3), their sums 17, `ba`, `bb` 20; `brz`
+        /// 10 (waits 7); `rab` 10, `rabz` 13, `rs` 17, `brs` 20 (waits 3), `bab` 23, `bs`
+        /// 26. Each sign is taken when its value and bound are ready (z at 4, r_z 10, a and
+        /// b 20, s 26), its two bits wait for s's, and the six are registered with s and its
+        /// bound after edge 27: latency [`Edge::LATENCY`] = 27 (`cross_t`, `cross_f`
+        /// combinational from the sign register). Ports: in `clock`, `p0` .. `p2`, `q0` ..
+        /// `q2`, `pe`, `qe`, `pg`, `qg`, `pf0` .. `pf2`, `qf0` .. `qf2`, `ph`, `qh`; out
+        /// `s_x`, `s_b`, `cross_t`, `cross_f`.
         #[derive(LogicBlock)]
         pub struct Edge {
             pub clock: Signal<In, Clock>,
@@ -309,6 +313,8 @@ macro_rules! tcheck {
             pub q2: Signal<In, Bits<$W>>,
             pub pe: Signal<In, Bits<$W>>,
             pub qe: Signal<In, Bits<$W>>,
+            pub pg: Signal<In, Bits<$W>>,
+            pub qg: Signal<In, Bits<$W>>,
             pub pf0: Signal<In, Bits<$W>>,
             pub pf1: Signal<In, Bits<$W>>,
             pub pf2: Signal<In, Bits<$W>>,
@@ -322,7 +328,6 @@ macro_rules! tcheck {
             pub cross_t: Signal<Out, Bit>,
             pub cross_f: Signal<Out, Bit>,
             mask: Constant<Bits<$W>>,
-            c_2u: Constant<Bits<$W>>,
             // values
             px_qz: FpMul,
             qx_pz: FpMul,
@@ -335,19 +340,19 @@ macro_rules! tcheck {
             ab: FpAdd,
             s: FpAdd,
             // bounds
-            // E' waits for H, |P| for E, |P| E for E' H (the vertices' schedule)
+            // E waits for H, |P| for G, |P| G for E H (the vertices' schedule)
             pf0_wait: Delay<Bits<$W>, { Vertex::H_AT - Vertex::F_AT }>,
             qf0_wait: Delay<Bits<$W>, { Vertex::H_AT - Vertex::F_AT }>,
             pf1_wait: Delay<Bits<$W>, { Vertex::H_AT - Vertex::F_AT }>,
             qf1_wait: Delay<Bits<$W>, { Vertex::H_AT - Vertex::F_AT }>,
-            p0_wait: Delay<Bits<$W>, { Vertex::E_AT }>,
-            q0_wait: Delay<Bits<$W>, { Vertex::E_AT }>,
-            p1_wait: Delay<Bits<$W>, { Vertex::E_AT }>,
-            q1_wait: Delay<Bits<$W>, { Vertex::E_AT }>,
+            p0_wait: Delay<Bits<$W>, { Vertex::G_AT }>,
+            q0_wait: Delay<Bits<$W>, { Vertex::G_AT }>,
+            p1_wait: Delay<Bits<$W>, { Vertex::G_AT }>,
+            q1_wait: Delay<Bits<$W>, { Vertex::G_AT }>,
             ta: [FpMul; 4],
             tb: [FpMul; 4],
-            ta_wait: [Delay<Bits<$W>, { Vertex::H_AT - Vertex::E_AT }>; 2],
-            tb_wait: [Delay<Bits<$W>, { Vertex::H_AT - Vertex::E_AT }>; 2],
+            ta_wait: [Delay<Bits<$W>, { Vertex::H_AT - Vertex::G_AT }>; 2],
+            tb_wait: [Delay<Bits<$W>, { Vertex::H_AT - Vertex::G_AT }>; 2],
             sa: [FpAdd; 2],
             sb: [FpAdd; 2],
             ba: FpAdd,
@@ -356,7 +361,7 @@ macro_rules! tcheck {
             brz_wait: Delay<Bits<$W>, 7>,
             rab: FpAdd,
             rabz: FpAdd,
-            rs: FpMul,
+            rs: FpScale,
             brs: FpAdd,
             brs_wait: Delay<Bits<$W>, 3>,
             bab: FpAdd,
@@ -416,6 +421,8 @@ macro_rules! tcheck {
                     q2: Default::default(),
                     pe: Default::default(),
                     qe: Default::default(),
+                    pg: Default::default(),
+                    qg: Default::default(),
                     pf0: Default::default(),
                     pf1: Default::default(),
                     pf2: Default::default(),
@@ -429,7 +436,6 @@ macro_rules! tcheck {
                     cross_t: Default::default(),
                     cross_f: Default::default(),
                     mask: Constant::new(ABS_MASK.into()),
-                    c_2u: Constant::new(word(cert.c_2u)),
                     px_qz: FpMul::new(rounding),
                     qx_pz: FpMul::new(rounding),
                     py_qz: FpMul::new(rounding),
@@ -460,7 +466,7 @@ macro_rules! tcheck {
                     brz_wait: Default::default(),
                     rab: FpAdd::new(up),
                     rabz: FpAdd::new(up),
-                    rs: FpMul::new(up),
+                    rs: FpScale::new(cert.c_s, cert.c_s),
                     brs: FpAdd::new(up),
                     brs_wait: Default::default(),
                     bab: FpAdd::new(up),
@@ -548,7 +554,7 @@ macro_rules! tcheck {
                 self.s.b.next = self.rz_wait.q.val();
                 self.s.sub.next = true;
                 self.s.valid_in.next = false;
-                // ---- bounds of a and b: (E'_P H_Qz + |P| E_Qz) + (E'_Q H_Pz + |Q| E_Pz)
+                // ---- bounds of a and b: (E_P H_Qz + |P| G_Qz) + (E_Q H_Pz + |Q| G_Pz)
                 self.pf0_wait.d.next = self.pf0.val();
                 self.qf0_wait.d.next = self.qf0.val();
                 self.pf1_wait.d.next = self.pf1.val();
@@ -566,19 +572,19 @@ macro_rules! tcheck {
                 self.ta[0].a.next = self.pf0_wait.q.val();
                 self.ta[0].b.next = self.qh.val();
                 self.ta[1].a.next = self.p0_wait.q.val();
-                self.ta[1].b.next = self.qe.val();
+                self.ta[1].b.next = self.qg.val();
                 self.ta[2].a.next = self.qf0_wait.q.val();
                 self.ta[2].b.next = self.ph.val();
                 self.ta[3].a.next = self.q0_wait.q.val();
-                self.ta[3].b.next = self.pe.val();
+                self.ta[3].b.next = self.pg.val();
                 self.tb[0].a.next = self.pf1_wait.q.val();
                 self.tb[0].b.next = self.qh.val();
                 self.tb[1].a.next = self.p1_wait.q.val();
-                self.tb[1].b.next = self.qe.val();
+                self.tb[1].b.next = self.qg.val();
                 self.tb[2].a.next = self.qf1_wait.q.val();
                 self.tb[2].b.next = self.ph.val();
                 self.tb[3].a.next = self.q1_wait.q.val();
-                self.tb[3].b.next = self.pe.val();
+                self.tb[3].b.next = self.pg.val();
                 for k in 0..2 {
                     self.ta_wait[k].clock.next = self.clock.val();
                     self.tb_wait[k].clock.next = self.clock.val();
@@ -623,9 +629,8 @@ macro_rules! tcheck {
                 self.rabz.b.next = self.rz_wait.q.val() & self.mask.val();
                 self.rabz.sub.next = false;
                 self.rabz.valid_in.next = false;
-                self.rs.a.next = self.c_2u.val();
-                self.rs.b.next = self.rabz.y.val();
-                self.rs.valid_in.next = false;
+                self.rs.a.next = self.rabz.y.val();
+                self.rs.sel.next = false;
                 self.brs.a.next = self.brz_wait.q.val();
                 self.brs.b.next = self.rs.y.val();
                 self.brs.sub.next = false;
@@ -754,8 +759,6 @@ macro_rules! tcheck {
             pub tag_out: Signal<Out, Bits<32>>,
             pub valid_out: Signal<Out, Bit>,
             mask: Constant<Bits<$W>>,
-            c_v_rounded: Constant<Bits<$W>>,
-            c_v_exact: Constant<Bits<$W>>,
             // clock 1: input register
             in_m_0: [DFF<Bits<$W>>; 4],
             in_m_1: [DFF<Bits<$W>>; 4],
@@ -831,7 +834,6 @@ macro_rules! tcheck {
             vmr_1: [DFF<Bits<$W>>; 3],
             vmr_2: [DFF<Bits<$W>>; 3],
             exact_wait: Delay<Bit, 22>,
-            c_v: Signal<Local, Bits<$W>>,
             // stages 3-5
             verts: [Vertex; 3],
             edges: [Edge; 3],
@@ -889,8 +891,6 @@ macro_rules! tcheck {
                     tag_out: Default::default(),
                     valid_out: Default::default(),
                     mask: Constant::new(ABS_MASK.into()),
-                    c_v_rounded: Constant::new(word(cert.c_v[0])),
-                    c_v_exact: Constant::new(word(cert.c_v[1])),
                     in_m_0: Default::default(),
                     in_m_1: Default::default(),
                     in_m_2: Default::default(),
@@ -957,7 +957,6 @@ macro_rules! tcheck {
                     vmr_1: Default::default(),
                     vmr_2: Default::default(),
                     exact_wait: Default::default(),
-                    c_v: Default::default(),
                     verts: std::array::from_fn(|_| Vertex::new(&cert)),
                     edges: std::array::from_fn(|_| Edge::new(rounding, &cert)),
                     tag_wait: Default::default(),
@@ -1122,18 +1121,12 @@ macro_rules! tcheck {
                     self.$vmr[k].d.next = self.$vm[k].y.val();
                 }
                 )*
-                // ---- the vertices' certificate terms, C_V for rounded or exact vertices
+                // ---- the vertices' certificate terms, for rounded or exact vertices
                 self.exact_wait.d.next = self.in_v_exact.q.val();
-                self.c_v.next = self.c_v_rounded.val();
-                if self.exact_wait.q.val() {
-                    self.c_v.next = self.c_v_exact.val();
-                }
                 for k in 0..3 {
                     self.verts[k].clock.next = self.clock.val();
-                    self.verts[k].c_v.next = self.c_v.val();
-                    self.verts[k].x0.next = self.vtr_0[k].q.val();
-                    self.verts[k].x1.next = self.vtr_1[k].q.val();
-                    self.verts[k].x2.next = self.vtr_2[k].q.val();
+                    self.verts[k].exact.next = self.exact_wait.q.val();
+                    self.verts[k].z.next = self.vtr_2[k].q.val();
                     self.verts[k].m0.next = self.vmr_0[k].q.val();
                     self.verts[k].m1.next = self.vmr_1[k].q.val();
                     self.verts[k].m2.next = self.vmr_2[k].q.val();
@@ -1147,6 +1140,8 @@ macro_rules! tcheck {
                 self.edges[0].q2.next = self.vtr_2[1].q.val();
                 self.edges[0].pe.next = self.verts[0].e.val();
                 self.edges[0].qe.next = self.verts[1].e.val();
+                self.edges[0].pg.next = self.verts[0].g.val();
+                self.edges[0].qg.next = self.verts[1].g.val();
                 self.edges[0].pf0.next = self.verts[0].f0.val();
                 self.edges[0].pf1.next = self.verts[0].f1.val();
                 self.edges[0].pf2.next = self.verts[0].f2.val();
@@ -1163,6 +1158,8 @@ macro_rules! tcheck {
                 self.edges[1].q2.next = self.vtr_2[2].q.val();
                 self.edges[1].pe.next = self.verts[1].e.val();
                 self.edges[1].qe.next = self.verts[2].e.val();
+                self.edges[1].pg.next = self.verts[1].g.val();
+                self.edges[1].qg.next = self.verts[2].g.val();
                 self.edges[1].pf0.next = self.verts[1].f0.val();
                 self.edges[1].pf1.next = self.verts[1].f1.val();
                 self.edges[1].pf2.next = self.verts[1].f2.val();
@@ -1179,6 +1176,8 @@ macro_rules! tcheck {
                 self.edges[2].q2.next = self.vtr_2[0].q.val();
                 self.edges[2].pe.next = self.verts[2].e.val();
                 self.edges[2].qe.next = self.verts[0].e.val();
+                self.edges[2].pg.next = self.verts[2].g.val();
+                self.edges[2].qg.next = self.verts[0].g.val();
                 self.edges[2].pf0.next = self.verts[2].f0.val();
                 self.edges[2].pf1.next = self.verts[2].f1.val();
                 self.edges[2].pf2.next = self.verts[2].f2.val();

@@ -1,0 +1,189 @@
+
+
+module top(clock,a,sel,y);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [23:0] a;
+    input wire  sel;
+    output reg  [23:0] y;
+    
+    // Constant declarations
+    localparam  c_k0 = 10'b11110011;
+    localparam  c_k1 = 10'b11110011;
+    localparam  c_sh0 = 8'he;
+    localparam  c_sh1 = 8'h0;
+    localparam  c_t0 = 8'h1;
+    localparam  c_t1 = 8'h0;
+    localparam  c_en0 = 1'b1;
+    localparam  c_en1 = 1'b0;
+    localparam  c_j = 8'h11;
+    localparam  c_j1 = 8'h12;
+    localparam  c_f = 8'hf;
+    localparam  c_ofs = 10'b100000000;
+    localparam  c_norm_min = 10'b100000001;
+    localparam  c_min = 24'h8000;
+    localparam  c_inf = 24'h7f8000;
+    localparam  c_nan = 24'h7fc000;
+    
+    // Stub signals
+    reg  out$clock;
+    reg  [23:0] out$d;
+    wire  [23:0] out$q;
+    
+    // Local signals
+    reg  [7:0] field;
+    reg  [14:0] frac;
+    reg  [33:0] m;
+    reg  [7:0] lo_sh;
+    reg  [7:0] t_sh;
+    reg  t_en;
+    reg  [9:0] kk;
+    reg  [33:0] third;
+    reg  [33:0] sum;
+    reg  top;
+    reg  [7:0] sh;
+    reg  [33:0] hi;
+    reg  lost;
+    reg  [33:0] rnd;
+    reg  [9:0] eb;
+    reg  [9:0] e10;
+    reg  [23:0] res;
+    
+    // Sub module instances
+    top$out out(
+        .clock(out$clock),
+        .d(out$d),
+        .q(out$q)
+    );
+    
+    // Update code
+    always @(*) begin
+        out$clock = clock;
+        field = a[(32'hf)+:(8)];
+        frac = a[(32'h0)+:(15)];
+        m = (((frac) & 34'h3ffffffff) & ~(1 << (32'hf)) | ((1'b1) << (32'hf)));
+        lo_sh = c_sh0;
+        t_sh = c_t0;
+        t_en = c_en0;
+        kk = c_k0;
+        if (sel) begin
+            lo_sh = c_sh1;
+            t_sh = c_t1;
+            t_en = c_en1;
+            kk = c_k1;
+        end
+        third = 32'h0;
+        if (t_en) begin
+            third = m << t_sh;
+        end
+        sum = (m << c_j) + (m << lo_sh) + third;
+        eb = ((field) & 10'h3ff) + kk;
+        top = sum[32'h22 - 32'h1];
+        sh = c_j;
+        if (top) begin
+            sh = c_j1;
+        end
+        hi = sum >> sh;
+        lost = (hi << sh) != sum;
+        rnd = hi + lost;
+        e10 = eb + top + rnd[32'hf + 32'h1];
+        res = (((e10 - c_ofs) & 24'hffffff) << c_f) | ((((rnd) & 15'h7fff)) & 24'hffffff);
+        if ((field == 32'h0) | (e10 < c_norm_min)) begin
+            res = c_min;
+        end
+        if ((field == 32'h0) & (frac == 32'h0)) begin
+            res = 32'h0;
+        end
+        if (&field) begin
+            res = c_inf;
+            if (frac != 32'h0) begin
+                res = c_nan;
+            end
+        end
+        out$d = res;
+        y = out$q;
+    end
+    
+endmodule // top
+
+
+module top$out(clock,d,q);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    
+    // Stub signals
+    reg  [23:0] line$0$d;
+    wire  [23:0] line$0$q;
+    reg  line$0$clock;
+    reg  [23:0] line$1$d;
+    wire  [23:0] line$1$q;
+    reg  line$1$clock;
+    reg  [23:0] line$2$d;
+    wire  [23:0] line$2$q;
+    reg  line$2$clock;
+    reg  [23:0] line$3$d;
+    wire  [23:0] line$3$q;
+    reg  line$3$clock;
+    
+    // Sub module instances
+    top$out$line$0 line$0(
+        .d(line$0$d),
+        .q(line$0$q),
+        .clock(line$0$clock)
+    );
+    top$out$line$0 line$1(
+        .d(line$1$d),
+        .q(line$1$q),
+        .clock(line$1$clock)
+    );
+    top$out$line$0 line$2(
+        .d(line$2$d),
+        .q(line$2$q),
+        .clock(line$2$clock)
+    );
+    top$out$line$0 line$3(
+        .d(line$3$d),
+        .q(line$3$q),
+        .clock(line$3$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line$0$clock = clock;
+        line$0$d = d;
+        line$1$clock = clock;
+        line$1$d = d;
+        line$2$clock = clock;
+        line$2$d = d;
+        line$3$clock = clock;
+        line$3$d = d;
+        line$0$d = line$1$q;
+        line$1$d = line$2$q;
+        line$2$d = line$3$q;
+        q = line$0$q;
+    end
+    
+endmodule // top$out
+
+
+module top$out$line$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 24'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$out$line$0
