@@ -519,12 +519,28 @@ impl Format {
     pub fn scale_const_at_least(&self, x: f64) -> ScaleConst {
         assert!(x.is_normal() && x > 0.0 && x < 1e300, "scale constant {x:e} out of range");
         let jmax = self.frac_bits + 2;
-        let k = exponent64(x);
-        let shapes = (k..=k + 1).flat_map(|k| {
-            (1..=jmax).flat_map(move |j| std::iter::once(0).chain(j + 1..=jmax).map(move |j2| ScaleConst { k, j, j2 }))
-        });
-        let c = shapes.filter(|c| c.value() >= x).min_by(|a, b| a.value().total_cmp(&b.value()).then((a.j2 != 0).cmp(&(b.j2 != 0))));
-        c.expect("2^(k+1) (1 + 2^-jmax) is at least x")
+        let mut best: Option<ScaleConst> = None;
+        for k in [exponent64(x), exponent64(x) + 1] {
+            // x = 2^k (1 + r): per j, the third term is the smallest 2^-j2 >= r - 2^-j
+            let r = x * pow2(-k) - 1.0;
+            for j in 1..=jmax {
+                let d = r - pow2(-(j as i32));
+                let j2 = if d <= 0.0 {
+                    0
+                } else {
+                    let e = exponent64(d);
+                    let largest = if d == pow2(e) { -e } else { -e - 1 };
+                    if largest <= j as i32 { continue } else { (largest as u32).min(jmax) }
+                };
+                let c = ScaleConst { k, j, j2 };
+                if best.is_none_or(|b| c.value() < b.value() || (c.value() == b.value() && j2 == 0)) {
+                    best = Some(c);
+                }
+            }
+        }
+        let c = best.expect("2^(k+1) (1 + 2^-jmax) is at least x");
+        debug_assert!(c.value() >= x);
+        c
     }
 
     /// `|x| c` rounded upward, and at least 2^emin when x is not zero: the golden function

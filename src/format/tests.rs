@@ -767,3 +767,21 @@ fn scale_by_hand() {
     assert_eq!(f.scale_up(f64::NEG_INFINITY, c(-2, 2, 0)), f64::INFINITY);
     assert!(f.scale_up(f64::NAN, c(-2, 2, 0)).is_nan());
 }
+
+/// `scale_const_at_least` against a search over every constant of the shape.
+#[test]
+fn scale_const_is_the_smallest() {
+    for f in [Format::BINARY32, Format::REDUCED, Format::new(5, 4).unwrap()] {
+        let jmax = f.frac_bits() + 2;
+        for i in 0..2000 {
+            let x = 2f64.powi(-(i % 40) - 2) * (1.0 + (i as f64 * 0.618034).fract());
+            let k = x.log2().floor() as i32;
+            let all = (k..=k + 1).flat_map(|k| {
+                (1..=jmax).flat_map(move |j| std::iter::once(0).chain(j + 1..=jmax).map(move |j2| ScaleConst { k, j, j2 }))
+            });
+            let want = all.filter(|c| c.value() >= x).map(|c| c.value()).fold(f64::INFINITY, f64::min);
+            let got = f.scale_const_at_least(x);
+            assert_eq!(got.value(), want, "{f} x = {x:e}: {got:?}");
+        }
+    }
+}
