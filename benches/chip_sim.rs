@@ -51,7 +51,7 @@ fn cycle_model(root: &Path, name: &str, reps: usize) -> (u64, f64, f64) {
         let mut c = Chip::new(&p.chip.cfg, params, &p.chip.a, &p.chip.b, &setup, true).unwrap();
         let words = image_words(&p.chip.a, &p.chip.b);
         let d = Drive { memory: q.timing.into(), word_bits: p.chip.layout.word_bits(), reader: q.reader, words, max_cycles: 10_000_000 };
-        let writes = control_writes(&p.chip.a, &p.chip.b, q.lifo, q.mode, &params);
+        let writes = control_writes(&p.chip.a, &p.chip.b, q.lifo, q.mode, &params, p.chip.cfg.tri_cache);
         let tr = drive_query(&mut c, &writes, &d, false, |_, _| Ok(()), None).unwrap();
         by_clock = by_clock.min(t.elapsed().as_secs_f64());
         assert_eq!(tr.text(), want, "{name}: the cycle model's trace (clock by clock)");

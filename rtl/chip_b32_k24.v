@@ -33,6 +33,7 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
     localparam  c_one16 = 16'h1;
     localparam  c_one32 = 32'h1;
     localparam  c_two = 67'h60000000000000000;
+    localparam  c_one128 = 128'h1;
     
     // Stub signals
     reg  mode_lifo$d;
@@ -603,14 +604,34 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
     reg  [31:0] leaf_tag$d;
     wire  [31:0] leaf_tag$q;
     reg  leaf_tag$clock;
-    reg  ta_ok$d;
-    wire  ta_ok$q;
-    reg  ta_ok$clock;
+    reg  [6:0] tc_mask$d;
+    wire  [6:0] tc_mask$q;
+    reg  tc_mask$clock;
+    reg  [127:0] ta_valid$d;
+    wire  [127:0] ta_valid$q;
+    reg  ta_valid$clock;
+    reg  [6:0] tc_id$read_address;
+    reg  tc_id$read_clock;
+    wire  [15:0] tc_id$read_data;
+    reg  [6:0] tc_id$write_address;
+    reg  tc_id$write_clock;
+    reg  [15:0] tc_id$write_data;
+    reg  tc_id$write_enable;
+    reg  [6:0] tc_word$read_address;
+    reg  tc_word$read_clock;
+    wire  [737:0] tc_word$read_data;
+    reg  [6:0] tc_word$write_address;
+    reg  tc_word$write_clock;
+    reg  [737:0] tc_word$write_data;
+    reg  tc_word$write_enable;
+    reg  tc_byp$d;
+    wire  tc_byp$q;
+    reg  tc_byp$clock;
     reg  [15:0] ta_id$d;
     wire  [15:0] ta_id$q;
     reg  ta_id$clock;
-    reg  [832:0] ta_word$d;
-    wire  [832:0] ta_word$q;
+    reg  [737:0] ta_word$d;
+    wire  [737:0] ta_word$q;
     reg  ta_word$clock;
     reg  tb_ok$d;
     wire  tb_ok$q;
@@ -618,8 +639,8 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
     reg  [15:0] tb_id$d;
     wire  [15:0] tb_id$q;
     reg  tb_id$clock;
-    reg  [832:0] tb_word$d;
-    wire  [832:0] tb_word$q;
+    reg  [737:0] tb_word$d;
+    wire  [737:0] tb_word$q;
     reg  tb_word$clock;
     reg  tri_unit$clock;
     reg  tri_unit$load_en;
@@ -782,6 +803,13 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
     reg  [66:0] e1;
     reg  leaf_in;
     reg  leaf_out;
+    reg  [6:0] tc_line;
+    reg  [6:0] tc_next;
+    reg  [6:0] tc_wr;
+    reg  tc_fill;
+    reg  ta_ok;
+    reg  [15:0] ta_held_id;
+    reg  [737:0] ta_held;
     reg  need_ta;
     reg  need_tb;
     reg  tri_in;
@@ -1690,17 +1718,45 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         .q(leaf_tag$q),
         .clock(leaf_tag$clock)
     );
-    top$done_r ta_ok(
-        .d(ta_ok$d),
-        .q(ta_ok$q),
-        .clock(ta_ok$clock)
+    top$leaf_fifo$read_logic$read_address tc_mask(
+        .d(tc_mask$d),
+        .q(tc_mask$q),
+        .clock(tc_mask$clock)
+    );
+    top$ta_valid ta_valid(
+        .d(ta_valid$d),
+        .q(ta_valid$q),
+        .clock(ta_valid$clock)
+    );
+    top$tc_id tc_id(
+        .read_address(tc_id$read_address),
+        .read_clock(tc_id$read_clock),
+        .read_data(tc_id$read_data),
+        .write_address(tc_id$write_address),
+        .write_clock(tc_id$write_clock),
+        .write_data(tc_id$write_data),
+        .write_enable(tc_id$write_enable)
+    );
+    top$tc_word tc_word(
+        .read_address(tc_word$read_address),
+        .read_clock(tc_word$read_clock),
+        .read_data(tc_word$read_data),
+        .write_address(tc_word$write_address),
+        .write_clock(tc_word$write_clock),
+        .write_data(tc_word$write_data),
+        .write_enable(tc_word$write_enable)
+    );
+    top$done_r tc_byp(
+        .d(tc_byp$d),
+        .q(tc_byp$q),
+        .clock(tc_byp$clock)
     );
     top$dop$tag_1 ta_id(
         .d(ta_id$d),
         .q(ta_id$q),
         .clock(ta_id$clock)
     );
-    top$na_word ta_word(
+    top$ta_word ta_word(
         .d(ta_word$d),
         .q(ta_word$q),
         .clock(ta_word$clock)
@@ -1715,7 +1771,7 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         .q(tb_id$q),
         .clock(tb_id$clock)
     );
-    top$na_word tb_word(
+    top$ta_word tb_word(
         .d(tb_word$d),
         .q(tb_word$q),
         .clock(tb_word$clock)
@@ -2134,20 +2190,28 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         leaf_count$d = leaf_count$q;
         leaf_valid$d = leaf_valid$q;
         leaf_tag$d = leaf_tag$q;
-        ta_ok$clock = clock;
+        tc_mask$clock = clock;
+        ta_valid$clock = clock;
+        tc_byp$clock = clock;
         ta_id$clock = clock;
         ta_word$clock = clock;
         tb_ok$clock = clock;
         tb_id$clock = clock;
         tb_word$clock = clock;
         tri_open$clock = clock;
-        ta_ok$d = ta_ok$q;
+        tc_mask$d = tc_mask$q;
+        ta_valid$d = ta_valid$q;
+        tc_byp$d = tc_byp$q;
         ta_id$d = ta_id$q;
         ta_word$d = ta_word$q;
         tb_ok$d = tb_ok$q;
         tb_id$d = tb_id$q;
         tb_word$d = tb_word$q;
         tri_open$d = tri_open$q;
+        tc_id$read_clock = clock;
+        tc_id$write_clock = clock;
+        tc_word$read_clock = clock;
+        tc_word$write_clock = clock;
         cnt_dop$clock = clock;
         cnt_tri$clock = clock;
         cnt_nf$clock = clock;
@@ -2192,6 +2256,9 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
                 port_out$d = host_data[(32'h4)+:(4)];
                 port_one$d = host_data[32'h8];
                 port_credit$d = host_data[(32'h9)+:(6)];
+            end
+            if (host_addr == 32'h127) begin
+                tc_mask$d = host_data[(32'h0)+:(7)];
             end
         end
         pf = ((port_pf$q) & 5'h1f);
@@ -2398,7 +2465,16 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         end
         need_na = go & ent_valid & cur_fa & (wa_n$q == 32'h0);
         need_nb = go & ent_valid & cur_fb & (wb_n$q == 32'h0);
-        need_ta = go & leaf_valid$q & ~(ta_ok$q & (ta_id$q == leaf_tag$q[(32'h0)+:(16)]));
+        tc_line = leaf_tag$q[(32'h0)+:(7)] & tc_mask$q;
+        tc_wr = ta_req$q[(32'h0)+:(7)] & tc_mask$q;
+        ta_ok = (ta_valid$q & (c_one128 << tc_line)) != 32'h0;
+        ta_held_id = tc_id$read_data;
+        ta_held = tc_word$read_data;
+        if (tc_byp$q) begin
+            ta_held_id = ta_id$q;
+            ta_held = ta_word$q;
+        end
+        need_ta = go & leaf_valid$q & ~(ta_ok & (ta_held_id == leaf_tag$q[(32'h0)+:(16)]));
         need_tb = go & leaf_valid$q & ~(tb_ok$q & (tb_id$q == leaf_tag$q[(32'h10)+:(16)]));
         ask_dec = c_one32 << ask_head$q;
         ask_front = 32'h0;
@@ -2752,15 +2828,15 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
             end
             if (resp_dst == 32'h2) begin
                 ta_pend$d = 1'b0;
-                ta_ok$d = 1'b1;
+                ta_valid$d = ta_valid$q | (c_one128 << tc_wr);
                 ta_id$d = ta_req$q;
-                ta_word$d = mem_resp_data;
+                ta_word$d = mem_resp_data[(32'h0)+:(738)];
             end
             if (resp_dst == 32'h3) begin
                 tb_pend$d = 1'b0;
                 tb_ok$d = 1'b1;
                 tb_id$d = tb_req$q;
-                tb_word$d = mem_resp_data;
+                tb_word$d = mem_resp_data[(32'h0)+:(738)];
             end
         end
         credit = ((inflight$q) & 6'h3f) + leaf_count$q;
@@ -3423,52 +3499,66 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         if (leaf_out & ~leaf_in) begin
             leaf_count$d = leaf_count$q - 32'h1;
         end
-        tri_unit$a_v_x$0 = ta_word$q[(32'h3 * 0 * 32'h20)+:(32)];
-        tri_unit$a_v_y$0 = ta_word$q[((32'h3 * 0 + 32'h1) * 32'h20)+:(32)];
-        tri_unit$a_v_z$0 = ta_word$q[((32'h3 * 0 + 32'h2) * 32'h20)+:(32)];
+        tc_fill = resp & (resp_dst == 32'h2);
+        tc_id$write_enable = tc_fill;
+        tc_id$write_address = tc_wr;
+        tc_id$write_data = ta_req$q;
+        tc_word$write_enable = tc_fill;
+        tc_word$write_address = tc_wr;
+        tc_word$write_data = mem_resp_data[(32'h0)+:(738)];
+        tc_next = tc_line;
+        if (leaf_out & ~halt) begin
+            tc_next = leaf_fifo$data_out[(32'h0)+:(7)] & tc_mask$q;
+        end
+        tc_id$read_address = tc_next;
+        tc_word$read_address = tc_next;
+        tc_byp$d = tc_fill & (tc_wr == tc_next);
+        tri_unit$a_v_x$0 = ta_held[(32'h3 * 0 * 32'h20)+:(32)];
+        tri_unit$a_v_y$0 = ta_held[((32'h3 * 0 + 32'h1) * 32'h20)+:(32)];
+        tri_unit$a_v_z$0 = ta_held[((32'h3 * 0 + 32'h2) * 32'h20)+:(32)];
         tri_unit$b_v_x$0 = tb_word$q[(32'h3 * 0 * 32'h20)+:(32)];
         tri_unit$b_v_y$0 = tb_word$q[((32'h3 * 0 + 32'h1) * 32'h20)+:(32)];
         tri_unit$b_v_z$0 = tb_word$q[((32'h3 * 0 + 32'h2) * 32'h20)+:(32)];
-        tri_unit$a_v_x$1 = ta_word$q[(32'h3 * 1 * 32'h20)+:(32)];
-        tri_unit$a_v_y$1 = ta_word$q[((32'h3 * 1 + 32'h1) * 32'h20)+:(32)];
-        tri_unit$a_v_z$1 = ta_word$q[((32'h3 * 1 + 32'h2) * 32'h20)+:(32)];
+        tri_unit$a_v_x$1 = ta_held[(32'h3 * 1 * 32'h20)+:(32)];
+        tri_unit$a_v_y$1 = ta_held[((32'h3 * 1 + 32'h1) * 32'h20)+:(32)];
+        tri_unit$a_v_z$1 = ta_held[((32'h3 * 1 + 32'h2) * 32'h20)+:(32)];
         tri_unit$b_v_x$1 = tb_word$q[(32'h3 * 1 * 32'h20)+:(32)];
         tri_unit$b_v_y$1 = tb_word$q[((32'h3 * 1 + 32'h1) * 32'h20)+:(32)];
         tri_unit$b_v_z$1 = tb_word$q[((32'h3 * 1 + 32'h2) * 32'h20)+:(32)];
-        tri_unit$a_v_x$2 = ta_word$q[(32'h3 * 2 * 32'h20)+:(32)];
-        tri_unit$a_v_y$2 = ta_word$q[((32'h3 * 2 + 32'h1) * 32'h20)+:(32)];
-        tri_unit$a_v_z$2 = ta_word$q[((32'h3 * 2 + 32'h2) * 32'h20)+:(32)];
+        tri_unit$a_v_x$2 = ta_held[(32'h3 * 2 * 32'h20)+:(32)];
+        tri_unit$a_v_y$2 = ta_held[((32'h3 * 2 + 32'h1) * 32'h20)+:(32)];
+        tri_unit$a_v_z$2 = ta_held[((32'h3 * 2 + 32'h2) * 32'h20)+:(32)];
         tri_unit$b_v_x$2 = tb_word$q[(32'h3 * 2 * 32'h20)+:(32)];
         tri_unit$b_v_y$2 = tb_word$q[((32'h3 * 2 + 32'h1) * 32'h20)+:(32)];
         tri_unit$b_v_z$2 = tb_word$q[((32'h3 * 2 + 32'h2) * 32'h20)+:(32)];
-        tri_unit$a_m_0$0 = ta_word$q[((32'h9 + 0) * 32'h20)+:(32)];
-        tri_unit$a_m_1$0 = ta_word$q[((32'hd + 0) * 32'h20)+:(32)];
-        tri_unit$a_m_2$0 = ta_word$q[((32'h11 + 0) * 32'h20)+:(32)];
+        tri_unit$a_m_0$0 = ta_held[((32'h9 + 0) * 32'h20)+:(32)];
+        tri_unit$a_m_1$0 = ta_held[((32'hd + 0) * 32'h20)+:(32)];
+        tri_unit$a_m_2$0 = ta_held[((32'h11 + 0) * 32'h20)+:(32)];
         tri_unit$b_m_0$0 = tb_word$q[((32'h9 + 0) * 32'h20)+:(32)];
         tri_unit$b_m_1$0 = tb_word$q[((32'hd + 0) * 32'h20)+:(32)];
         tri_unit$b_m_2$0 = tb_word$q[((32'h11 + 0) * 32'h20)+:(32)];
-        tri_unit$a_m_0$1 = ta_word$q[((32'h9 + 1) * 32'h20)+:(32)];
-        tri_unit$a_m_1$1 = ta_word$q[((32'hd + 1) * 32'h20)+:(32)];
-        tri_unit$a_m_2$1 = ta_word$q[((32'h11 + 1) * 32'h20)+:(32)];
+        tri_unit$a_m_0$1 = ta_held[((32'h9 + 1) * 32'h20)+:(32)];
+        tri_unit$a_m_1$1 = ta_held[((32'hd + 1) * 32'h20)+:(32)];
+        tri_unit$a_m_2$1 = ta_held[((32'h11 + 1) * 32'h20)+:(32)];
         tri_unit$b_m_0$1 = tb_word$q[((32'h9 + 1) * 32'h20)+:(32)];
         tri_unit$b_m_1$1 = tb_word$q[((32'hd + 1) * 32'h20)+:(32)];
         tri_unit$b_m_2$1 = tb_word$q[((32'h11 + 1) * 32'h20)+:(32)];
-        tri_unit$a_m_0$2 = ta_word$q[((32'h9 + 2) * 32'h20)+:(32)];
-        tri_unit$a_m_1$2 = ta_word$q[((32'hd + 2) * 32'h20)+:(32)];
-        tri_unit$a_m_2$2 = ta_word$q[((32'h11 + 2) * 32'h20)+:(32)];
+        tri_unit$a_m_0$2 = ta_held[((32'h9 + 2) * 32'h20)+:(32)];
+        tri_unit$a_m_1$2 = ta_held[((32'hd + 2) * 32'h20)+:(32)];
+        tri_unit$a_m_2$2 = ta_held[((32'h11 + 2) * 32'h20)+:(32)];
         tri_unit$b_m_0$2 = tb_word$q[((32'h9 + 2) * 32'h20)+:(32)];
         tri_unit$b_m_1$2 = tb_word$q[((32'hd + 2) * 32'h20)+:(32)];
         tri_unit$b_m_2$2 = tb_word$q[((32'h11 + 2) * 32'h20)+:(32)];
-        tri_unit$a_m_0$3 = ta_word$q[((32'h9 + 3) * 32'h20)+:(32)];
-        tri_unit$a_m_1$3 = ta_word$q[((32'hd + 3) * 32'h20)+:(32)];
-        tri_unit$a_m_2$3 = ta_word$q[((32'h11 + 3) * 32'h20)+:(32)];
+        tri_unit$a_m_0$3 = ta_held[((32'h9 + 3) * 32'h20)+:(32)];
+        tri_unit$a_m_1$3 = ta_held[((32'hd + 3) * 32'h20)+:(32)];
+        tri_unit$a_m_2$3 = ta_held[((32'h11 + 3) * 32'h20)+:(32)];
         tri_unit$b_m_0$3 = tb_word$q[((32'h9 + 3) * 32'h20)+:(32)];
         tri_unit$b_m_1$3 = tb_word$q[((32'hd + 3) * 32'h20)+:(32)];
         tri_unit$b_m_2$3 = tb_word$q[((32'h11 + 3) * 32'h20)+:(32)];
-        tri_unit$a_alpha_m = ta_word$q[(32'h15 * 32'h20)+:(32)];
-        tri_unit$a_alpha_f = ta_word$q[(32'h16 * 32'h20)+:(32)];
-        tri_unit$a_v_exact = ta_word$q[32'h17 * 32'h20];
-        tri_unit$a_degenerate = ta_word$q[32'h17 * 32'h20 + 32'h1];
+        tri_unit$a_alpha_m = ta_held[(32'h15 * 32'h20)+:(32)];
+        tri_unit$a_alpha_f = ta_held[(32'h16 * 32'h20)+:(32)];
+        tri_unit$a_v_exact = ta_held[32'h17 * 32'h20];
+        tri_unit$a_degenerate = ta_held[32'h17 * 32'h20 + 32'h1];
         tri_unit$b_alpha_m = tb_word$q[(32'h15 * 32'h20)+:(32)];
         tri_unit$b_alpha_f = tb_word$q[(32'h16 * 32'h20)+:(32)];
         tri_unit$b_v_exact = tb_word$q[32'h17 * 32'h20];
@@ -3518,7 +3608,7 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
             wb_head$d = 32'h0;
             wb_tail$d = 32'h0;
             wb_n$d = 32'h0;
-            ta_ok$d = 1'b0;
+            ta_valid$d = 32'h0;
             tb_ok$d = 1'b0;
             cnt_dop$d = 32'h0;
             cnt_tri$d = 32'h0;
@@ -15551,6 +15641,44 @@ module top$side$line$0(d,q,clock);
 endmodule // top$side$line$0
 
 
+module top$ta_valid(d,q,clock);
+    
+    // Module arguments
+    input wire  [127:0] d;
+    output reg  [127:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 128'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$ta_valid
+
+
+module top$ta_word(d,q,clock);
+    
+    // Module arguments
+    input wire  [737:0] d;
+    output reg  [737:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 738'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$ta_word
+
+
 module top$tags$0(d,q,clock);
     
     // Module arguments
@@ -15568,6 +15696,64 @@ module top$tags$0(d,q,clock);
     end
           
 endmodule // top$tags$0
+
+
+module top$tc_id(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [6:0] read_address;
+    input wire  read_clock;
+    output reg  [15:0] read_data;
+    input wire  [6:0] write_address;
+    input wire  write_clock;
+    input wire  [15:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg[15:0] mem[127:0];
+    
+    
+    
+    always @(posedge read_clock) begin
+       read_data <= mem[read_address];
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+                
+endmodule // top$tc_id
+
+
+module top$tc_word(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [6:0] read_address;
+    input wire  read_clock;
+    output reg  [737:0] read_data;
+    input wire  [6:0] write_address;
+    input wire  write_clock;
+    input wire  [737:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg[737:0] mem[127:0];
+    
+    
+    
+    always @(posedge read_clock) begin
+       read_data <= mem[read_address];
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+                
+endmodule // top$tc_word
 
 
 module top$tri_open(d,q,clock);

@@ -144,7 +144,7 @@ fn run(chip: &Chip, pose: &Pose, lifo: bool, mode: Mode, p: Params, reader: Read
     let mut c = CycleChip::new(&chip.cfg, p, &chip.a, &chip.b, &setup, true)?;
     let words = image_words(&chip.a, &chip.b);
     let d = Drive { memory: p.memory, word_bits: chip.layout.word_bits(), reader, words, max_cycles: MAX_CYCLES };
-    run_query(&mut c, &control_writes(&chip.a, &chip.b, lifo, mode, &p), &d, true, |_, p| {
+    run_query(&mut c, &control_writes(&chip.a, &chip.b, lifo, mode, &p, chip.cfg.tri_cache), &d, true, |_, p| {
         assert_eq!(p.map(|v| v.len()), Some(cycle::PROBES.len()));
         Ok(())
     }, None)

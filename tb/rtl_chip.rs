@@ -16,8 +16,8 @@ use collision_chip::dop::HostSetup;
 use collision_chip::pose::Pose;
 use collision_chip::query::Chip;
 use collision_chip::cycle::drive::open_vcd;
-use collision_chip::harness::chip_io::{drive, queries, ChipKind, ChipQuery, QueryImage, RtlChip, RtlPorts, CHIP_CONFIG, PAPERS_CONFIG};
-use collision_chip::rtl::{b32, e8m15};
+use collision_chip::harness::chip_io::{drive, queries, ChipKind, ChipQuery, QueryImage, RtlChip, RtlPorts, CHIP_CONFIG, PAPERS_CONFIG, REDUCED_DOP_CONFIG};
+use collision_chip::rtl::{b32, e8m15, e8m15_b32};
 use collision_chip::traversal::{Mode, QueryResult, Traversal};
 use std::path::PathBuf;
 
@@ -43,7 +43,7 @@ impl Case {
     fn new(name: &str, chip: Chip, pose: Pose, lifo: bool, mode: Mode, params: Params, reader: Reader) -> Case {
         let setup = chip.setup(&pose);
         let kind = ChipKind::of(&chip.cfg).expect("an RTL chip's configuration");
-        let image = QueryImage::new(kind, &chip.a, &chip.b, &setup, lifo, mode, &params).unwrap();
+        let image = QueryImage::new(kind, &chip.a, &chip.b, &setup, lifo, mode, &params, chip.cfg.tri_cache).unwrap();
         let golden = chip.query(&pose, Mode::All, if lifo { Traversal::Lifo } else { Traversal::Fifo });
         Case { name: name.into(), chip, setup, image, golden, lifo, mode, params, reader }
     }
@@ -72,6 +72,10 @@ impl Case {
                     ChipKind::K24B32 => {
                         let c = PAPERS_CONFIG;
                         self.run_on(b32::chip_top::<N, NP1, NM1>(c.dop_rounding.op(), c.tri_rounding), 1 << N, runs, vcd)
+                    }
+                    ChipKind::K24E8m15B32 => {
+                        let c = REDUCED_DOP_CONFIG;
+                        self.run_on(e8m15_b32::chip_top::<N, NP1, NM1>(c.dop_rounding.op(), c.tri_rounding), 1 << N, runs, vcd)
                     }
                 })
                 .unwrap()
@@ -209,6 +213,37 @@ fn k24_sphere_lifo_first() {
     let case = Case::of(&q);
     let tr = &case.lockstep::<10, 11, 9>(1, None)[0];
     case.check(tr);
+    compare_with_expect(q.name, tr);
+}
+
+/// A's triangle cache with 4 lines (register 0x127): triangle words fetched only when
+/// their line holds another, a fill bypassed to the leaf pair that reads its line in the
+/// next clock; in lockstep with the cycle model, and in FIFO order A's and B's fetches are
+/// the golden traversal's (`Case::check`), fewer than with the single word held.
+#[test]
+fn sphere_fifo_cache() {
+    let q = query("sphere_fifo_cache");
+    assert_eq!(q.tri_cache, 4);
+    let case = Case::of(&q);
+    let tr = &case.lockstep::<10, 11, 9>(1, None)[0];
+    case.check(tr);
+    let one_line = ChipQuery { tri_cache: 1, ..q.clone() }.prepare().unwrap().golden_all.counters.tri_fetches;
+    assert!(tr.tri_fetches < one_line, "{} triangle fetches with 4 lines, {one_line} with one", tr.tri_fetches);
+    compare_with_expect(q.name, tr);
+}
+
+/// The papers' chip with its DOP unit in e8m15 and TRI_UNIT in binary32 (issue 14 item 1):
+/// 641-bit node words in 738-bit memory words, each unit fed its own format's fields; in
+/// lockstep with the cycle model, whose DOP and T.CHECK verdicts are the golden model's in
+/// those formats.
+#[test]
+fn k24r_patch_fifo_all() {
+    let q = query("k24r_patch_fifo_all");
+    assert_eq!(q.chip, ChipKind::K24E8m15B32);
+    let case = Case::of(&q);
+    let tr = &case.lockstep::<10, 11, 9>(1, None)[0];
+    case.check(tr);
+    assert!(tr.tri_tests > 0, "the query tests triangles");
     compare_with_expect(q.name, tr);
 }
 

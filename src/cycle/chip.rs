@@ -33,6 +33,9 @@ pub mod reg {
     /// (0: 16). Zero after reset: the RTL's default point ([`Params::RTL`]). The cycle model
     /// takes these from its [`Params`]; [`control_writes`] writes them for the RTL.
     pub const PORT: u32 = 0x126;
+    /// A's triangle cache: bits 6:0 its lines less one (`ChipConfig::tri_cache`, at most
+    /// [`crate::rtl::TRI_CACHE_LINES`] in the RTL). Zero after reset: one line.
+    pub const TRI_CACHE: u32 = 0x127;
 }
 
 /// Where the clocks of a running query went, one cause per cycle for the DOP unit's
@@ -420,9 +423,10 @@ impl<'a> Chip<'a> {
 }
 
 /// The host's writes of the traversal's registers for a query in order `lifo` and
-/// `mode`, root pair (0, 0), the memory port of `p` unless it is the reset value, mode
-/// last (the RTL host writes the DOP unit's and TRI_UNIT's setup before these).
-pub fn control_writes(a: &ObjectImage, b: &ObjectImage, lifo: bool, mode: crate::traversal::Mode, p: &Params) -> Vec<(u32, u32)> {
+/// `mode`, root pair (0, 0), the memory port of `p` and A's triangle cache of `tri_cache`
+/// lines unless they are the reset values, mode last (the RTL host writes the DOP unit's
+/// and TRI_UNIT's setup before these).
+pub fn control_writes(a: &ObjectImage, b: &ObjectImage, lifo: bool, mode: crate::traversal::Mode, p: &Params, tri_cache: u32) -> Vec<(u32, u32)> {
     let base = layout(a, b);
     let mut w = vec![
         (reg::BASE_NA, base[Dst::NodeA as usize]),
@@ -438,6 +442,9 @@ pub fn control_writes(a: &ObjectImage, b: &ObjectImage, lifo: bool, mode: crate:
     let port = p.prefetch.min(0xf) | (outstanding - 1) << 4 | ((p.issue_spacing == 1) as u32) << 8 | credit << 9;
     if port != 0 {
         w.push((reg::PORT, port));
+    }
+    if tri_cache > 1 {
+        w.push((reg::TRI_CACHE, (tri_cache - 1).min(crate::rtl::TRI_CACHE_LINES as u32 - 1)));
     }
     w.push((reg::MODE, lifo as u32 | ((mode == crate::traversal::Mode::First) as u32) << 1));
     w

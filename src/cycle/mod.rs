@@ -301,7 +301,7 @@ pub fn run_query(
 ) -> Result<(drive::ChipTrace, Option<chip::Stats>), String> {
     let mut c = chip::Chip::new(&chip.cfg, p, &chip.a, &chip.b, setup, rec.counters)?;
     let d = drive::Drive { memory: p.memory, word_bits: chip.layout.word_bits(), reader, words: chip::image_words(&chip.a, &chip.b), max_cycles };
-    let writes = chip::control_writes(&chip.a, &chip.b, lifo, mode, &p);
+    let writes = chip::control_writes(&chip.a, &chip.b, lifo, mode, &p, chip.cfg.tri_cache);
     let Record { vcd, probes: mut observer, .. } = rec;
     let trace = if vcd.is_none() && observer.is_none() {
         let mut skip = |c: &mut chip::Chip, i: &ChipIn, max: u64| match c.quiet_until(i) {

@@ -27,6 +27,9 @@ pub const CHIP_CONFIG: ChipConfig =
 /// The configuration of the papers' RTL chip, `rtl/chip_b32_k24.v`.
 pub const PAPERS_CONFIG: ChipConfig =
     ChipConfig { k: 24, format: Formats { dop: Format::BINARY32, tri: Format::BINARY32 }, dop_rounding: DopRounding::Outward, tri_rounding: Rounding::NearestEven, tri_cache: 1 };
+/// The papers' chip with its DOP datapath in e8m15 (format `e8m15/binary32`),
+/// `rtl/chip_e8m15_b32_k24.v`.
+pub const REDUCED_DOP_CONFIG: ChipConfig = ChipConfig { format: Formats { dop: Format::REDUCED, tri: Format::BINARY32 }, ..PAPERS_CONFIG };
 
 /// The RTL chips: one `CollisionChip` per configuration, exported to `rtl/<name>.v`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -35,21 +38,26 @@ pub enum ChipKind {
     K6E8m15,
     /// k = 24, binary32: [`PAPERS_CONFIG`].
     K24B32,
+    /// k = 24, e8m15 DOP unit and binary32 TRI_UNIT: [`REDUCED_DOP_CONFIG`].
+    K24E8m15B32,
 }
 
 impl ChipKind {
-    pub const ALL: [ChipKind; 2] = [ChipKind::K6E8m15, ChipKind::K24B32];
+    pub const ALL: [ChipKind; 3] = [ChipKind::K6E8m15, ChipKind::K24B32, ChipKind::K24E8m15B32];
 
     pub fn config(self) -> ChipConfig {
         match self {
             ChipKind::K6E8m15 => CHIP_CONFIG,
             ChipKind::K24B32 => PAPERS_CONFIG,
+            ChipKind::K24E8m15B32 => REDUCED_DOP_CONFIG,
         }
     }
 
-    /// The chip built for `cfg`, if any.
+    /// The chip built for `cfg`, if any (its triangle cache aside: every chip has
+    /// [`TRI_CACHE_LINES`](crate::rtl::TRI_CACHE_LINES) lines, host register 0x127 picks
+    /// how many are used).
     pub fn of(cfg: &ChipConfig) -> Option<ChipKind> {
-        ChipKind::ALL.into_iter().find(|k| k.config() == *cfg)
+        ChipKind::ALL.into_iter().find(|k| k.config() == ChipConfig { tri_cache: 1, ..*cfg })
     }
 
     /// The exported Verilog's file name in rtl/, without `.v`.
@@ -57,6 +65,7 @@ impl ChipKind {
         match self {
             ChipKind::K6E8m15 => "chip_e8m15_k6",
             ChipKind::K24B32 => "chip_b32_k24",
+            ChipKind::K24E8m15B32 => "chip_e8m15_b32_k24",
         }
     }
 
@@ -70,7 +79,7 @@ impl ChipKind {
     pub fn rtl_clocks_per_second(self) -> f64 {
         match self {
             ChipKind::K6E8m15 => 14.0,
-            ChipKind::K24B32 => 4.0,
+            ChipKind::K24B32 | ChipKind::K24E8m15B32 => 4.0,
         }
     }
 
@@ -82,6 +91,7 @@ impl ChipKind {
                 super::verilog::dedup_modules(&match self {
                     ChipKind::K6E8m15 => generate_verilog(&exported_chip()),
                     ChipKind::K24B32 => generate_verilog(&papers_chip()),
+                    ChipKind::K24E8m15B32 => generate_verilog(&reduced_dop_chip()),
                 })
             })
             .expect("spawn")
@@ -159,10 +169,11 @@ pub struct QueryImage {
 }
 
 impl QueryImage {
-    /// The memory port's register is written from `p` ([`crate::cycle::chip::control_writes`]).
+    /// The memory port's register is written from `p`, the triangle cache's from `tri_cache`
+    /// ([`crate::cycle::chip::control_writes`]).
     /// Errors if a tree has more nodes than the 16-bit node ids of D_CNTR address, or the
     /// image more words than the 24-bit memory address.
-    pub fn new(kind: ChipKind, a: &ObjectImage, b: &ObjectImage, setup: &HostSetup, lifo: bool, mode: Mode, p: &crate::cycle::Params) -> Result<Self, String> {
+    pub fn new(kind: ChipKind, a: &ObjectImage, b: &ObjectImage, setup: &HostSetup, lifo: bool, mode: Mode, p: &crate::cycle::Params, tri_cache: u32) -> Result<Self, String> {
         let f = kind.config().format;
         for (name, o) in [("A", a), ("B", b)] {
             if o.tree.len() > 1 << 16 {
@@ -182,7 +193,7 @@ impl QueryImage {
         }
         let mut writes: Vec<(u32, u32)> = dop_unit_setup_words(f.dop, setup).into_iter().map(|(a, d)| (a as u32, d as u32)).collect();
         writes.extend(tri_unit_setup_words(f.tri, setup).into_iter().map(|(a, d)| (reg::TRI_SETUP + a as u32, d as u32)));
-        writes.extend(crate::cycle::chip::control_writes(a, b, lifo, mode, p));
+        writes.extend(crate::cycle::chip::control_writes(a, b, lifo, mode, p, tri_cache));
         Ok(QueryImage { kind, memory, writes })
     }
 
@@ -285,6 +296,7 @@ macro_rules! rtl_ports {
 }
 rtl_ports!(e8m15, ChipKind::K6E8m15);
 rtl_ports!(b32, ChipKind::K24B32);
+rtl_ports!(e8m15_b32, ChipKind::K24E8m15B32);
 
 /// The rust-hdl chip as a [`Clocked`] level: the memory image's words answer its memory
 /// requests; half a clock low (inputs applied, logic settled: what `probe` shows), then the
@@ -367,6 +379,8 @@ pub struct ChipQuery {
     pub outstanding: u32,
     pub issue_spacing: u32,
     pub credit: u32,
+    /// Lines of A's triangle cache (register 0x127; 1: the single word held).
+    pub tri_cache: u32,
     /// Too long for rust-hdl (more than 500 s at [`ChipKind::rtl_clocks_per_second`]): its
     /// trace comes from the cycle model, and Verilator must reproduce it.
     pub large: bool,
@@ -408,9 +422,10 @@ impl ChipQuery {
     }
 
     pub fn prepare(&self) -> Result<PreparedQuery, String> {
-        let chip = crate::query::Chip::new(&query_mesh(self.a)?, &query_mesh(self.b)?, self.chip.config())?;
+        let cfg = ChipConfig { tri_cache: self.tri_cache, ..self.chip.config() };
+        let chip = crate::query::Chip::new(&query_mesh(self.a)?, &query_mesh(self.b)?, cfg)?;
         let golden_all = chip.query(&self.pose, Mode::All, crate::traversal::Traversal::Fifo);
-        let image = QueryImage::new(self.chip, &chip.a, &chip.b, &chip.setup(&self.pose), self.lifo, self.mode, &self.params())?;
+        let image = QueryImage::new(self.chip, &chip.a, &chip.b, &chip.setup(&self.pose), self.lifo, self.mode, &self.params(), self.tri_cache)?;
         Ok(PreparedQuery { chip, golden_all, image })
     }
 }
@@ -423,6 +438,9 @@ pub type ExportedChip = crate::rtl::e8m15::CollisionChip<QUEUE_BITS, { QUEUE_BIT
 /// The exported papers' chip (k = 24, binary32).
 pub type PapersChip = crate::rtl::b32::CollisionChip<QUEUE_BITS, { QUEUE_BITS + 1 }, { QUEUE_BITS - 1 }>;
 
+/// The exported papers' chip with an e8m15 DOP unit.
+pub type ReducedDopChip = crate::rtl::e8m15_b32::CollisionChip<QUEUE_BITS, { QUEUE_BITS + 1 }, { QUEUE_BITS - 1 }>;
+
 /// The exported small chip, ready to simulate (inputs claimed; build it on a thread with a
 /// big stack: TRI_UNIT is large).
 pub fn exported_chip() -> ExportedChip {
@@ -433,6 +451,12 @@ pub fn exported_chip() -> ExportedChip {
 /// unit alone is about 2 MB).
 pub fn papers_chip() -> PapersChip {
     crate::rtl::b32::chip_top(PAPERS_CONFIG.dop_rounding.op(), PAPERS_CONFIG.tri_rounding)
+}
+
+/// The exported papers' chip with an e8m15 DOP unit, ready to simulate (on a thread with a
+/// big stack).
+pub fn reduced_dop_chip() -> ReducedDopChip {
+    crate::rtl::e8m15_b32::chip_top(REDUCED_DOP_CONFIG.dop_rounding.op(), REDUCED_DOP_CONFIG.tri_rounding)
 }
 
 /// The RTL query set. Small (rust-hdl in lockstep with the cycle model, in `cargo test`):
@@ -460,6 +484,7 @@ pub fn queries() -> Vec<ChipQuery> {
         outstanding: 1,
         issue_spacing: 2,
         credit: crate::rtl::CREDIT as u32,
+        tri_cache: 1,
         large: false,
     };
     let big = |name, a, pose, lifo, mode, latency, interval, period| ChipQuery {
@@ -492,6 +517,10 @@ pub fn queries() -> Vec<ChipQuery> {
         ChipQuery { prefetch: 3, outstanding: 4, issue_spacing: 1, credit: 24, ..q("bunny_fifo_prefetch", "bunny-patch:12", patch, false, Mode::First, 8, 1) },
         ChipQuery { prefetch: 14, outstanding: 16, issue_spacing: 1, credit: 48, ..big("big_sphere_lifo_prefetch", "sphere:320", big_spheres, true, Mode::All, 8, 1, 1) },
         ChipQuery { prefetch: 14, outstanding: 16, ..big("big_sphere_fifo_prefetch", "sphere:200", big_spheres, false, Mode::All, 8, 1, 1) },
+        // A's triangle cache (register 0x127): 4 lines, so that lines are shared and
+        // replaced, at full speed (rust-hdl); 128 lines (WSCG'03) on a bunny patch
+        ChipQuery { prefetch: 6, outstanding: 8, issue_spacing: 1, credit: 32, tri_cache: 4, ..q("sphere_fifo_cache", "sphere:12", spheres, false, Mode::All, 8, 1) },
+        ChipQuery { prefetch: 14, outstanding: 16, issue_spacing: 1, credit: 48, tri_cache: 128, ..big("big_patch_lifo_cache", "bunny-patch:300", patch, true, Mode::All, 8, 1, 1) },
         // the papers' chip (k = 24, binary32): the root test only (Icarus), a short
         // first-hit query at full speed (rust-hdl), whole queries at full speed and at the
         // reset point
@@ -500,6 +529,15 @@ pub fn queries() -> Vec<ChipQuery> {
         ChipQuery { chip: ChipKind::K24B32, prefetch: 14, outstanding: 16, issue_spacing: 1, credit: 48, ..big("k24_big_sphere_lifo_prefetch", "sphere:320", big_spheres, true, Mode::All, 8, 1, 1) },
         ChipQuery { chip: ChipKind::K24B32, prefetch: 14, outstanding: 16, issue_spacing: 1, credit: 63, ..big("k24_big_sphere_fifo_prefetch", "sphere:200", big_spheres, false, Mode::All, 8, 1, 1) },
         ChipQuery { chip: ChipKind::K24B32, ..big("k24_big_patch_lifo_first", "bunny-patch:300", patch, true, Mode::First, 2, 1, 1) },
+        ChipQuery { chip: ChipKind::K24B32, prefetch: 14, outstanding: 16, issue_spacing: 1, credit: 48, tri_cache: 128, ..big("k24_big_sphere_fifo_cache", "sphere:200", big_spheres, false, Mode::All, 8, 1, 1) },
+        // the papers' chip with an e8m15 DOP unit (k24r: format e8m15/binary32): the root
+        // test (Icarus), a few leaf pairs (rust-hdl), whole queries at full speed (the second
+        // through the 128-line triangle cache) and at the reset point
+        ChipQuery { chip: ChipKind::K24E8m15B32, ..q("k24r_apart_lifo_first", "sphere:12", Pose::new(10.0, 20.0, 30.0, 3.0, 0.1, 0.0), true, Mode::First, 1, 1) },
+        ChipQuery { chip: ChipKind::K24E8m15B32, prefetch: 3, outstanding: 4, issue_spacing: 1, credit: 24, ..q("k24r_patch_fifo_all", "bunny-patch:4", patch, false, Mode::All, 8, 1) },
+        ChipQuery { chip: ChipKind::K24E8m15B32, prefetch: 14, outstanding: 16, issue_spacing: 1, credit: 63, ..big("k24r_big_sphere_fifo_prefetch", "sphere:200", big_spheres, false, Mode::All, 8, 1, 1) },
+        ChipQuery { chip: ChipKind::K24E8m15B32, prefetch: 14, outstanding: 16, issue_spacing: 1, credit: 48, tri_cache: 128, ..big("k24r_big_sphere_lifo_cache", "sphere:320", big_spheres, true, Mode::All, 8, 1, 1) },
+        ChipQuery { chip: ChipKind::K24E8m15B32, ..big("k24r_big_patch_lifo_first", "bunny-patch:300", patch, true, Mode::First, 2, 1, 1) },
     ]
 }
 
@@ -554,10 +592,16 @@ pub fn rtl_order(cfg: &ChipConfig, traversal: crate::traversal::Traversal, p: &c
     use crate::traversal::Traversal;
     let Some(kind) = ChipKind::of(cfg) else {
         return Err(format!(
-            "the RTL chips are built for k = 6 in format reduced (e8m15) and k = 24 in binary32, both with outward DOP rounding, nearest-even T.CHECK and one triangle word held per object (no triangle cache); this scene has k = {}, format {}, dop_rounding {}, tri_rounding {:?}, tri_cache {}: set [chip] k = 6, format = \"reduced\" or k = 24, format = \"binary32\", with dop_rounding = \"outward\" and no tri_cache",
-            cfg.k, cfg.format, cfg.dop_rounding, cfg.tri_rounding, cfg.tri_cache
+            "the RTL chips are built for k = 6 in format reduced (e8m15) and k = 24 in binary32 or e8m15/binary32, all with outward DOP rounding and nearest-even T.CHECK; this scene has k = {}, format {}, dop_rounding {}, tri_rounding {:?}: set [chip] k = 6, format = \"reduced\" or k = 24, format = \"binary32\" or \"e8m15/binary32\", with dop_rounding = \"outward\"",
+            cfg.k, cfg.format, cfg.dop_rounding, cfg.tri_rounding
         ));
     };
+    if cfg.tri_cache > crate::rtl::TRI_CACHE_LINES as u32 {
+        return Err(format!(
+            "the RTL chips' triangle cache has {} lines; this scene asks for tri_cache = {}: set [chip] tri_cache to at most {}",
+            crate::rtl::TRI_CACHE_LINES, cfg.tri_cache, crate::rtl::TRI_CACHE_LINES
+        ));
+    }
     let rtl = crate::cycle::Params {
         memory: p.memory,
         prefetch: p.prefetch,
@@ -597,7 +641,7 @@ pub fn cross_check(
 ) -> Result<ChipTrace, String> {
     let (kind, lifo) = rtl_order(&chip.cfg, traversal, &p)?;
     let setup = chip.setup(pose);
-    let image = QueryImage::new(kind, &chip.a, &chip.b, &setup, lifo, mode, &p)?;
+    let image = QueryImage::new(kind, &chip.a, &chip.b, &setup, lifo, mode, &p, chip.cfg.tri_cache)?;
     let d = drive(&image, p.memory, Reader::default(), max_cycles);
     fn lockstep<C: RtlPorts>(mut rtl: C, model: crate::cycle::chip::Chip, image: &QueryImage, d: &Drive) -> Result<ChipTrace, String> {
         let mut ls = crate::cycle::drive::Lockstep::new(RtlChip::new(&mut rtl, image), model, ("rust-hdl", "cycle model"));
@@ -611,6 +655,7 @@ pub fn cross_check(
                 match kind {
                     ChipKind::K6E8m15 => lockstep(exported_chip(), model, &image, &d),
                     ChipKind::K24B32 => lockstep(papers_chip(), model, &image, &d),
+                    ChipKind::K24E8m15B32 => lockstep(reduced_dop_chip(), model, &image, &d),
                 }
             })
             .map_err(|e| format!("cannot start the RTL simulation thread: {e}"))?
@@ -642,6 +687,18 @@ mod tests {
         assert_eq!((ChipKind::K6E8m15.word_bits(), crate::rtl::e8m15::CHIP_WORD_BITS), (MEM_BITS, MEM_BITS));
         // the papers' chip: 1 + 24 * 32 + 64 node bits, wider than its 23 * 32 + 2 triangle bits
         assert_eq!((ChipKind::K24B32.word_bits(), crate::rtl::b32::CHIP_WORD_BITS), (833, 833));
+        // e8m15 nodes, binary32 triangles: 1 + 24 * 24 + 64 = 641 node bits, 23 * 32 + 2 = 738
+        assert_eq!((ChipKind::K24E8m15B32.word_bits(), crate::rtl::e8m15_b32::CHIP_WORD_BITS), (738, 738));
+        assert_eq!(crate::memory::Layout::new(&REDUCED_DOP_CONFIG).node_bits, 641);
+        for kind in ChipKind::ALL {
+            let tw = match kind {
+                ChipKind::K6E8m15 => crate::rtl::e8m15::TRI_WORD_BITS,
+                ChipKind::K24B32 => crate::rtl::b32::TRI_WORD_BITS,
+                ChipKind::K24E8m15B32 => crate::rtl::e8m15_b32::TRI_WORD_BITS,
+            };
+            assert_eq!(tw as u32, crate::memory::Layout::new(&kind.config()).tri_bits, "{kind:?}");
+        }
+        assert_eq!(crate::rtl::b32::TRI_WORD_BITS, 23 * 32 + 2);
         assert!(p.image.memory[..a.tree.len()].iter().all(|w| field(w, NODE_BITS, 64) == 0 && field(w, NODE_BITS + 64, MEM_BITS - NODE_BITS - 64) == 0));
         assert_eq!(field(w, 0, 1), 0, "the root is inner");
         assert_eq!(field(w, 1 + 2 * W, W), f.to_bits(a.tree.dop(0)[2]));
@@ -666,7 +723,7 @@ mod tests {
         let big = crate::mesh::builtin("sphere:40000").unwrap().triangles_f64();
         let chip = crate::query::Chip::new(&big, &big[..1], CHIP_CONFIG).unwrap();
         let setup = chip.setup(&crate::pose::Pose::new(0.0, 0.0, 0.0, 0.0, 0.0, 0.0));
-        let e = QueryImage::new(ChipKind::K6E8m15, &chip.a, &chip.b, &setup, true, Mode::All, &crate::cycle::Params::RTL).unwrap_err();
+        let e = QueryImage::new(ChipKind::K6E8m15, &chip.a, &chip.b, &setup, true, Mode::All, &crate::cycle::Params::RTL, 1).unwrap_err();
         assert!(e.contains("16 bits"), "{e}");
     }
 }

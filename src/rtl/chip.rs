@@ -5,21 +5,24 @@
 
 /// Stamps out `CollisionChip<N, NP1, NM1>` in the calling module (which must also hold the
 /// DOP unit `Dop` and `TriUnit`). Arguments: `K` the DOP's k, `Dop` its unit (`DopUnit6`
-/// for k = 6), `W` word width, `NW` node-word bits (`1 + K W + 64`), `MW` memory-word bits
-/// (the wider of a node word and a triangle word, `24 W + 2`: [`crate::memory::Layout`]).
+/// for k = 6), `WD` the DOP format's word width, `WT` T.CHECK's, `NW` node-word bits
+/// (`1 + K WD + 64`), `TW` triangle-word bits (`23 WT + 2`), `MW` memory-word bits (the
+/// wider of the two: [`crate::memory::Layout`]).
 macro_rules! chip {
-    ($K:tt, $Dop:ident, $W:tt, $NW:tt, $MW:tt) => {
+    ($K:tt, $Dop:ident, $WD:tt, $WT:tt, $NW:tt, $TW:tt, $MW:tt) => {
         declare_sync_fifo!(LeafFifo, Bits<32>, $crate::rtl::LEAF_FIFO, 1);
 
         /// The chip's memory word bits (`mem_resp_data`).
         pub const CHIP_WORD_BITS: usize = $MW;
+        /// The triangle word's bits (the low bits of a memory word; a triangle cache line).
+        pub const TRI_WORD_BITS: usize = $TW;
 
         /// The collision chip with a k-DOP: D_CNTR (DATE'05 §4.3) drives the DOP unit (Eq. 10)
         /// over pairs of node words from memory, overlapping leaf pairs go to TRI_UNIT
         /// (§4.2), and the host reads the intersecting and the uncertain triangle pairs.
         /// `2^N` queue entries (`NP1 = N + 1`, `NM1 = N - 1`).
         ///
-        /// Ports (`W` = word width, `MW` = memory word):
+        /// Ports (`W` = word width of the DOP unit's or TRI_UNIT's format, `MW` = memory word):
         ///
         /// * host registers: in `host_we`, `host_addr[10]`, `host_data[32]`, written on
         ///   the rising edge. `0x000 + a`: the DOP unit's setup word `a` (C, c, D.KLMSEL
@@ -33,7 +36,9 @@ macro_rules! chip {
         ///   result's two child entries at once), 14:9 the credit of DOP tests in flight
         ///   plus waiting leaf pairs (0: [`CREDIT`](crate::rtl::CREDIT)); reset: 0, one
         ///   request, no prefetch,
-        ///   issues two clocks apart, credit 16.
+        ///   issues two clocks apart, credit 16; `0x127`: A's triangle cache, bits 6:0 its
+        ///   lines less one (a power of two up to
+        ///   [`TRI_CACHE_LINES`](crate::rtl::TRI_CACHE_LINES); reset: 0, one line).
         /// * `start` (in): begins a query with the registers as written (ignored while
         ///   `busy`); `busy`, `done` (high from the query's end to the next start),
         ///   `overflow` (the pair queue was full when a child entry came: the query ended
@@ -237,12 +242,27 @@ macro_rules! chip {
             leaf_out: Signal<Local, Bit>,
             leaf_valid: DFF<Bit>,
             leaf_tag: DFF<Bits<32>>,
-            ta_ok: DFF<Bit>,
+            // A's triangle cache (WSCG'03 §4.3): line `id & mask` holds word `id`; ids and
+            // words in RAMs read one clock ahead (the next leaf pair's line), the last filled
+            // word beside them for a fill of the line being read (`tc_byp`)
+            tc_mask: DFF<Bits<7>>,
+            ta_valid: DFF<Bits<128>>,
+            tc_id: RAM<Bits<16>, 7>,
+            tc_word: RAM<Bits<$TW>, 7>,
+            tc_byp: DFF<Bit>,
+            tc_line: Signal<Local, Bits<7>>,
+            tc_next: Signal<Local, Bits<7>>,
+            tc_wr: Signal<Local, Bits<7>>,
+            tc_fill: Signal<Local, Bit>,
+            c_one128: Constant<Bits<128>>,
+            ta_ok: Signal<Local, Bit>,
             ta_id: DFF<Bits<16>>,
-            ta_word: DFF<Bits<$MW>>,
+            ta_word: DFF<Bits<$TW>>,
+            ta_held_id: Signal<Local, Bits<16>>,
+            ta_held: Signal<Local, Bits<$TW>>,
             tb_ok: DFF<Bit>,
             tb_id: DFF<Bits<16>>,
-            tb_word: DFF<Bits<$MW>>,
+            tb_word: DFF<Bits<$TW>>,
             need_ta: Signal<Local, Bit>,
             need_tb: Signal<Local, Bit>,
             tri_unit: TriUnit,
@@ -436,9 +456,21 @@ macro_rules! chip {
                     leaf_out: Default::default(),
                     leaf_valid: Default::default(),
                     leaf_tag: Default::default(),
+                    tc_mask: Default::default(),
+                    ta_valid: Default::default(),
+                    tc_id: Default::default(),
+                    tc_word: Default::default(),
+                    tc_byp: Default::default(),
+                    tc_line: Default::default(),
+                    tc_next: Default::default(),
+                    tc_wr: Default::default(),
+                    tc_fill: Default::default(),
+                    c_one128: Constant::new(1.into()),
                     ta_ok: Default::default(),
                     ta_id: Default::default(),
                     ta_word: Default::default(),
+                    ta_held_id: Default::default(),
+                    ta_held: Default::default(),
                     tb_ok: Default::default(),
                     tb_id: Default::default(),
                     tb_word: Default::default(),
@@ -551,16 +583,20 @@ macro_rules! chip {
                     self.tags[i].d.next = self.tags[i].q.val();
                 }
                 dff_setup!(self, clock, last_issue, inflight, pend, pend_data, leaf_count, leaf_valid, leaf_tag);
-                dff_setup!(self, clock, ta_ok, ta_id, ta_word, tb_ok, tb_id, tb_word, tri_open);
+                dff_setup!(self, clock, tc_mask, ta_valid, tc_byp, ta_id, ta_word, tb_ok, tb_id, tb_word, tri_open);
+                self.tc_id.read_clock.next = self.clock.val();
+                self.tc_id.write_clock.next = self.clock.val();
+                self.tc_word.read_clock.next = self.clock.val();
+                self.tc_word.write_clock.next = self.clock.val();
                 dff_setup!(self, clock, cnt_dop, cnt_tri, cnt_nf, cnt_tf);
                 clock!(self, clock, queue, dop, side, leaf_fifo, tri_unit);
                 // ---- host registers and the units' setup ports
                 self.dop.load_en.next = self.host_we.val() & (self.host_addr.val().get_bits::<2>(8) == 0);
                 self.dop.load_addr.next = self.host_addr.val().get_bits::<8>(0);
-                self.dop.load_data.next = self.host_data.val().get_bits::<$W>(0);
+                self.dop.load_data.next = self.host_data.val().get_bits::<$WD>(0);
                 self.tri_unit.load_en.next = self.host_we.val() & (self.host_addr.val().get_bits::<5>(5) == 8);
                 self.tri_unit.load_addr.next = self.host_addr.val().get_bits::<5>(0);
-                self.tri_unit.load_data.next = self.host_data.val().get_bits::<$W>(0);
+                self.tri_unit.load_data.next = self.host_data.val().get_bits::<$WT>(0);
                 if self.host_we.val() {
                     if self.host_addr.val() == 0x120 {
                         self.mode_lifo.d.next = self.host_data.val().get_bit(0);
@@ -586,6 +622,9 @@ macro_rules! chip {
                         self.port_out.d.next = self.host_data.val().get_bits::<4>(4);
                         self.port_one.d.next = self.host_data.val().get_bit(8);
                         self.port_credit.d.next = self.host_data.val().get_bits::<6>(9);
+                    }
+                    if self.host_addr.val() == 0x127 {
+                        self.tc_mask.d.next = self.host_data.val().get_bits::<7>(0);
                     }
                 }
                 self.pf.next = bit_cast::<5, 4>(self.port_pf.q.val());
@@ -651,8 +690,19 @@ macro_rules! chip {
                 }
                 self.need_na.next = self.go.val() & self.ent_valid.val() & self.cur_fa.val() & (self.wa_n.q.val() == 0);
                 self.need_nb.next = self.go.val() & self.ent_valid.val() & self.cur_fb.val() & (self.wb_n.q.val() == 0);
+                // A's triangle word: its line's id and word, read at the last edge for this
+                // leaf pair, or filled at that edge; an A response fills line `tc_wr`
+                self.tc_line.next = self.leaf_tag.q.val().get_bits::<7>(0) & self.tc_mask.q.val();
+                self.tc_wr.next = self.ta_req.q.val().get_bits::<7>(0) & self.tc_mask.q.val();
+                self.ta_ok.next = (self.ta_valid.q.val() & (self.c_one128.val() << self.tc_line.val())) != 0;
+                self.ta_held_id.next = self.tc_id.read_data.val();
+                self.ta_held.next = self.tc_word.read_data.val();
+                if self.tc_byp.q.val() {
+                    self.ta_held_id.next = self.ta_id.q.val();
+                    self.ta_held.next = self.ta_word.q.val();
+                }
                 self.need_ta.next = self.go.val() & self.leaf_valid.q.val()
-                    & !(self.ta_ok.q.val() & (self.ta_id.q.val() == self.leaf_tag.q.val().get_bits::<16>(0)));
+                    & !(self.ta_ok.val() & (self.ta_held_id.val() == self.leaf_tag.q.val().get_bits::<16>(0)));
                 self.need_tb.next = self.go.val() & self.leaf_valid.q.val()
                     & !(self.tb_ok.q.val() & (self.tb_id.q.val() == self.leaf_tag.q.val().get_bits::<16>(16)));
                 // ---- memory requests: triangle words first (one outstanding per
@@ -744,15 +794,15 @@ macro_rules! chip {
                     }
                     if self.resp_dst.val() == 2 {
                         self.ta_pend.d.next = false;
-                        self.ta_ok.d.next = true;
+                        self.ta_valid.d.next = self.ta_valid.q.val() | (self.c_one128.val() << self.tc_wr.val());
                         self.ta_id.d.next = self.ta_req.q.val();
-                        self.ta_word.d.next = self.mem_resp_data.val();
+                        self.ta_word.d.next = self.mem_resp_data.val().get_bits::<$TW>(0);
                     }
                     if self.resp_dst.val() == 3 {
                         self.tb_pend.d.next = false;
                         self.tb_ok.d.next = true;
                         self.tb_id.d.next = self.tb_req.q.val();
-                        self.tb_word.d.next = self.mem_resp_data.val();
+                        self.tb_word.d.next = self.mem_resp_data.val().get_bits::<$TW>(0);
                     }
                 }
                 // ---- issue a pair to the DOP unit once both words are held. Issues are at
@@ -765,8 +815,8 @@ macro_rules! chip {
                     & (self.credit.val() < self.credit_lim.val());
                 self.last_issue.d.next = self.issue.val();
                 for i in 0..$K {
-                    self.dop.d[i].next = self.nb_in.val().get_bits::<$W>(1 + i * $W);
-                    self.dop.e[i].next = self.na_in.val().get_bits::<$W>(1 + i * $W);
+                    self.dop.d[i].next = self.nb_in.val().get_bits::<$WD>(1 + i * $WD);
+                    self.dop.e[i].next = self.na_in.val().get_bits::<$WD>(1 + i * $WD);
                 }
                 self.dop.tag.next = self.cur_a.val();
                 self.dop.valid_in.next = self.issue.val();
@@ -775,11 +825,11 @@ macro_rules! chip {
                     | (bit_cast::<99, 16>(self.cur_b.val()) << 16)
                     | (bit_cast::<99, 1>(self.cur_flip.val()) << 32)
                     | (bit_cast::<99, 1>(self.na_in.val().get_bits::<1>(0)) << 33)
-                    | (bit_cast::<99, 16>(self.na_in.val().get_bits::<16>(1 + $K * $W)) << 34)
-                    | (bit_cast::<99, 16>(self.na_in.val().get_bits::<16>(33 + $K * $W)) << 50)
+                    | (bit_cast::<99, 16>(self.na_in.val().get_bits::<16>(1 + $K * $WD)) << 34)
+                    | (bit_cast::<99, 16>(self.na_in.val().get_bits::<16>(33 + $K * $WD)) << 50)
                     | (bit_cast::<99, 1>(self.nb_in.val().get_bits::<1>(0)) << 66)
-                    | (bit_cast::<99, 16>(self.nb_in.val().get_bits::<16>(1 + $K * $W)) << 67)
-                    | (bit_cast::<99, 16>(self.nb_in.val().get_bits::<16>(33 + $K * $W)) << 83);
+                    | (bit_cast::<99, 16>(self.nb_in.val().get_bits::<16>(1 + $K * $WD)) << 67)
+                    | (bit_cast::<99, 16>(self.nb_in.val().get_bits::<16>(33 + $K * $WD)) << 83);
                 // an issue takes the pair's fetched words from their FIFOs and moves to the
                 // entry's second pair, or to the next entry
                 if self.issue.val() {
@@ -999,31 +1049,47 @@ macro_rules! chip {
                 if self.leaf_out.val() & !self.leaf_in.val() {
                     self.leaf_count.d.next = self.leaf_count.q.val() - 1;
                 }
+                // A's triangle cache: a response for A fills line `tc_wr`; the line of the
+                // next clock's leaf pair is read at this edge
+                self.tc_fill.next = self.resp.val() & (self.resp_dst.val() == 2);
+                self.tc_id.write_enable.next = self.tc_fill.val();
+                self.tc_id.write_address.next = self.tc_wr.val();
+                self.tc_id.write_data.next = self.ta_req.q.val();
+                self.tc_word.write_enable.next = self.tc_fill.val();
+                self.tc_word.write_address.next = self.tc_wr.val();
+                self.tc_word.write_data.next = self.mem_resp_data.val().get_bits::<$TW>(0);
+                self.tc_next.next = self.tc_line.val();
+                if self.leaf_out.val() & !self.halt.val() {
+                    self.tc_next.next = self.leaf_fifo.data_out.val().get_bits::<7>(0) & self.tc_mask.q.val();
+                }
+                self.tc_id.read_address.next = self.tc_next.val();
+                self.tc_word.read_address.next = self.tc_next.val();
+                self.tc_byp.d.next = self.tc_fill.val() & (self.tc_wr.val() == self.tc_next.val());
                 // TRI_UNIT's ports from the held triangle words (crate::memory::TriWord order)
                 for k in 0..3 {
-                    self.tri_unit.a_v_x[k].next = self.ta_word.q.val().get_bits::<$W>(3 * k * $W);
-                    self.tri_unit.a_v_y[k].next = self.ta_word.q.val().get_bits::<$W>((3 * k + 1) * $W);
-                    self.tri_unit.a_v_z[k].next = self.ta_word.q.val().get_bits::<$W>((3 * k + 2) * $W);
-                    self.tri_unit.b_v_x[k].next = self.tb_word.q.val().get_bits::<$W>(3 * k * $W);
-                    self.tri_unit.b_v_y[k].next = self.tb_word.q.val().get_bits::<$W>((3 * k + 1) * $W);
-                    self.tri_unit.b_v_z[k].next = self.tb_word.q.val().get_bits::<$W>((3 * k + 2) * $W);
+                    self.tri_unit.a_v_x[k].next = self.ta_held.val().get_bits::<$WT>(3 * k * $WT);
+                    self.tri_unit.a_v_y[k].next = self.ta_held.val().get_bits::<$WT>((3 * k + 1) * $WT);
+                    self.tri_unit.a_v_z[k].next = self.ta_held.val().get_bits::<$WT>((3 * k + 2) * $WT);
+                    self.tri_unit.b_v_x[k].next = self.tb_word.q.val().get_bits::<$WT>(3 * k * $WT);
+                    self.tri_unit.b_v_y[k].next = self.tb_word.q.val().get_bits::<$WT>((3 * k + 1) * $WT);
+                    self.tri_unit.b_v_z[k].next = self.tb_word.q.val().get_bits::<$WT>((3 * k + 2) * $WT);
                 }
                 for c in 0..4 {
-                    self.tri_unit.a_m_0[c].next = self.ta_word.q.val().get_bits::<$W>((9 + c) * $W);
-                    self.tri_unit.a_m_1[c].next = self.ta_word.q.val().get_bits::<$W>((13 + c) * $W);
-                    self.tri_unit.a_m_2[c].next = self.ta_word.q.val().get_bits::<$W>((17 + c) * $W);
-                    self.tri_unit.b_m_0[c].next = self.tb_word.q.val().get_bits::<$W>((9 + c) * $W);
-                    self.tri_unit.b_m_1[c].next = self.tb_word.q.val().get_bits::<$W>((13 + c) * $W);
-                    self.tri_unit.b_m_2[c].next = self.tb_word.q.val().get_bits::<$W>((17 + c) * $W);
+                    self.tri_unit.a_m_0[c].next = self.ta_held.val().get_bits::<$WT>((9 + c) * $WT);
+                    self.tri_unit.a_m_1[c].next = self.ta_held.val().get_bits::<$WT>((13 + c) * $WT);
+                    self.tri_unit.a_m_2[c].next = self.ta_held.val().get_bits::<$WT>((17 + c) * $WT);
+                    self.tri_unit.b_m_0[c].next = self.tb_word.q.val().get_bits::<$WT>((9 + c) * $WT);
+                    self.tri_unit.b_m_1[c].next = self.tb_word.q.val().get_bits::<$WT>((13 + c) * $WT);
+                    self.tri_unit.b_m_2[c].next = self.tb_word.q.val().get_bits::<$WT>((17 + c) * $WT);
                 }
-                self.tri_unit.a_alpha_m.next = self.ta_word.q.val().get_bits::<$W>(21 * $W);
-                self.tri_unit.a_alpha_f.next = self.ta_word.q.val().get_bits::<$W>(22 * $W);
-                self.tri_unit.a_v_exact.next = self.ta_word.q.val().get_bit(23 * $W);
-                self.tri_unit.a_degenerate.next = self.ta_word.q.val().get_bit(23 * $W + 1);
-                self.tri_unit.b_alpha_m.next = self.tb_word.q.val().get_bits::<$W>(21 * $W);
-                self.tri_unit.b_alpha_f.next = self.tb_word.q.val().get_bits::<$W>(22 * $W);
-                self.tri_unit.b_v_exact.next = self.tb_word.q.val().get_bit(23 * $W);
-                self.tri_unit.b_degenerate.next = self.tb_word.q.val().get_bit(23 * $W + 1);
+                self.tri_unit.a_alpha_m.next = self.ta_held.val().get_bits::<$WT>(21 * $WT);
+                self.tri_unit.a_alpha_f.next = self.ta_held.val().get_bits::<$WT>(22 * $WT);
+                self.tri_unit.a_v_exact.next = self.ta_held.val().get_bit(23 * $WT);
+                self.tri_unit.a_degenerate.next = self.ta_held.val().get_bit(23 * $WT + 1);
+                self.tri_unit.b_alpha_m.next = self.tb_word.q.val().get_bits::<$WT>(21 * $WT);
+                self.tri_unit.b_alpha_f.next = self.tb_word.q.val().get_bits::<$WT>(22 * $WT);
+                self.tri_unit.b_v_exact.next = self.tb_word.q.val().get_bit(23 * $WT);
+                self.tri_unit.b_degenerate.next = self.tb_word.q.val().get_bit(23 * $WT + 1);
                 self.tri_unit.tag.next = self.leaf_tag.q.val();
                 self.tri_unit.in_valid.next = self.tri_in.val();
                 // ---- results: separate pairs leave TRI_UNIT unseen, the others wait for the host
@@ -1078,7 +1144,7 @@ macro_rules! chip {
                     self.wb_head.d.next = 0.into();
                     self.wb_tail.d.next = 0.into();
                     self.wb_n.d.next = 0.into();
-                    self.ta_ok.d.next = false;
+                    self.ta_valid.d.next = 0.into();
                     self.tb_ok.d.next = false;
                     self.cnt_dop.d.next = 0.into();
                     self.cnt_tri.d.next = 0.into();
