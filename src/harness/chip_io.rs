@@ -1,12 +1,14 @@
 //! The host and memory side of the RTL collision chips (`CollisionChip` of
-//! [`crate::rtl::e8m15`] and [`crate::rtl::b32`]): the memory image and register writes of
+//! [`crate::rtl::e8m15`], [`crate::rtl::b32`] and [`crate::rtl::e8m15_b32`]): the memory
+//! image and register writes of
 //! one query, a memory model with configurable timing, the rust-hdl driver that runs a
 //! whole query, and the query trace that the Verilog testbench (`scripts/verilog/chip_tb.v`)
 //! prints in the same format, so that the two simulations are compared line by line.
 //!
-//! Two chips are built ([`ChipKind`]), both with DOP lanes rounding outward and T.CHECK to
-//! nearest-even: k = 6 in e8m15 ([`CHIP_CONFIG`], small and fast to simulate) and the
-//! papers' k = 24 in binary32 ([`PAPERS_CONFIG`], DATE'05 §4).
+//! Three chips are built ([`ChipKind`]), all with DOP lanes rounding outward, T.CHECK to
+//! nearest-even and a 128-line triangle cache: k = 6 in e8m15 ([`CHIP_CONFIG`], small and
+//! fast to simulate), the papers' k = 24 in binary32 ([`PAPERS_CONFIG`], DATE'05 §4), and
+//! the same with its DOP unit in e8m15 ([`REDUCED_DOP_CONFIG`]).
 
 use super::tri_io::{tri_unit_setup_words, LeafIn};
 pub use crate::cycle::drive::{ChipError, ChipTrace, Drive, Reader};
