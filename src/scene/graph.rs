@@ -164,8 +164,8 @@ impl Unit {
                 Some(w) => format!("a VCD per pose into {} ({}, {})", w.dir.display(), w.scopes_text(), w.window_text()),
                 None => "a VCD per pose".into(),
             },
-            Unit::RtlChip => "the rust-hdl chip, in lockstep with the cycle model (every output and probe, every clock)".into(),
-            Unit::VerilogChip => "the exported Verilog under Verilator (built once, cached under target/), every port every clock against the cycle model".into(),
+            Unit::RtlChip => format!("the rust-hdl chip{}, in lockstep with the cycle model (every output and probe, every clock)", chip_name(s)),
+            Unit::VerilogChip => format!("the exported Verilog{} under Verilator (built once, cached under target/), every port every clock against the cycle model", chip_name(s)),
             Unit::OutPairs => format!("the summary table{}", if o.pairs { " and every pose's pairs" } else { "" }),
             Unit::OutCycles => format!("clocks per query, time at {} MHz, speed-up, stall table", s.clock_mhz),
             Unit::OutMemory => "memory words and bytes, words per clock, port busy share".into(),
@@ -177,6 +177,12 @@ impl Unit {
 }
 
 /// The whole graph: every unit, an edge for each flow of data.
+/// ` (rtl/<chip>.v)`: the RTL chip a scene's configuration runs on, if one is built for it
+/// (otherwise the run stops with `chip_io::rtl_order`'s error).
+fn chip_name(s: &Scene) -> String {
+    crate::harness::chip_io::ChipKind::of(&s.cfg).map_or(String::new(), |k| format!(" (rtl/{}.v)", k.name()))
+}
+
 pub fn full_graph() -> (DiGraph<Unit, ()>, Vec<NodeIndex>) {
     use Unit::*;
     let mut g = DiGraph::new();
