@@ -16,7 +16,7 @@ use collision_chip::dop::HostSetup;
 use collision_chip::pose::Pose;
 use collision_chip::query::Chip;
 use collision_chip::cycle::drive::open_vcd;
-use collision_chip::harness::chip_io::{drive, queries, ChipKind, ChipQuery, QueryImage, RtlChip, RtlPorts, CHIP_CONFIG, PAPERS_CONFIG, REDUCED_DOP_CONFIG};
+use collision_chip::harness::chip_io::{drive, queries, ChipKind, ChipQuery, QueryImage, RtlChip, RtlPorts, CHIP_CONFIG};
 use collision_chip::rtl::{b32, e8m15, e8m15_b32};
 use collision_chip::traversal::{Mode, QueryResult, Traversal};
 use std::path::PathBuf;
@@ -64,18 +64,13 @@ impl Case {
         std::thread::scope(|s| {
             std::thread::Builder::new()
                 .stack_size(1 << 30)
-                .spawn_scoped(s, || match self.image.kind {
-                    ChipKind::K6E8m15 => {
-                        let c = CHIP_CONFIG;
-                        self.run_on(e8m15::chip_top::<N, NP1, NM1>(c.dop_rounding.op(), c.tri_rounding), 1 << N, runs, vcd)
-                    }
-                    ChipKind::K24B32 => {
-                        let c = PAPERS_CONFIG;
-                        self.run_on(b32::chip_top::<N, NP1, NM1>(c.dop_rounding.op(), c.tri_rounding), 1 << N, runs, vcd)
-                    }
-                    ChipKind::K24E8m15B32 => {
-                        let c = REDUCED_DOP_CONFIG;
-                        self.run_on(e8m15_b32::chip_top::<N, NP1, NM1>(c.dop_rounding.op(), c.tri_rounding), 1 << N, runs, vcd)
+                .spawn_scoped(s, || {
+                    let (kind, c) = (self.image.kind, self.image.kind.config());
+                    let (dop, tri) = (c.dop_rounding.op(), c.tri_rounding);
+                    match kind {
+                        ChipKind::K6E8m15 => self.run_on(e8m15::chip_top::<N, NP1, NM1>(dop, tri), 1 << N, runs, vcd),
+                        ChipKind::K24B32 => self.run_on(b32::chip_top::<N, NP1, NM1>(dop, tri), 1 << N, runs, vcd),
+                        ChipKind::K24E8m15B32 => self.run_on(e8m15_b32::chip_top::<N, NP1, NM1>(dop, tri), 1 << N, runs, vcd),
                     }
                 })
                 .unwrap()
