@@ -16,10 +16,11 @@
 //! * rust-hdl's simulator on the short query (it runs the chip at about 25 clocks per
 //!   second: the long one would take an hour).
 
-use collision_chip::cycle::chip::{control_writes, image_words, Chip};
+use collision_chip::cycle::chip::Chip;
 use collision_chip::cycle::drive::{run_query as drive_query, Drive};
 use collision_chip::cycle;
-use collision_chip::harness::chip_io::{drive, exported_chip, queries, run_query, ChipQuery, PreparedQuery};
+use collision_chip::chip::rtl::QUEUE_BITS;
+use collision_chip::harness::chip_io::{big_stack, drive, queries, run_query, with_chip, ChipQuery, ChipTrace, OnChip, PreparedQuery, QueryImage, RtlPorts};
 use std::path::Path;
 use std::process::Command;
 use std::time::Instant;
@@ -49,15 +50,14 @@ fn cycle_model(root: &Path, name: &str, reps: usize) -> (u64, f64, f64) {
     for _ in 0..reps {
         let t = Instant::now();
         let mut c = Chip::new(&p.chip.cfg, params, &p.chip.a, &p.chip.b, &setup, true).unwrap();
-        let words = image_words(&p.chip.a, &p.chip.b);
-        let d = Drive { memory: q.timing.into(), word_bits: p.chip.layout.word_bits(), reader: q.reader, words, max_cycles: 10_000_000 };
-        let writes = control_writes(&p.chip.a, &p.chip.b, q.lifo, q.mode, &params, p.chip.cfg.tri_cache);
+        let d = Drive { memory: q.timing.into(), word_bits: p.chip.layout.word_bits(), reader: q.reader, words: p.chip.image_words(), max_cycles: 10_000_000 };
+        let writes = p.chip.control_writes(q.order, q.mode, &params);
         let tr = drive_query(&mut c, &writes, &d, false, |_, _| Ok(()), None).unwrap();
         by_clock = by_clock.min(t.elapsed().as_secs_f64());
         assert_eq!(tr.text(), want, "{name}: the cycle model's trace (clock by clock)");
         cycles = tr.cycles;
         let t = Instant::now();
-        let (tr, _) = cycle::run_query(&p.chip, &setup, q.lifo, q.mode, params, q.reader, 10_000_000, cycle::Record { counters: true, ..Default::default() }).unwrap();
+        let (tr, _) = cycle::run_query(&p.chip, &setup, q.order, q.mode, params, q.reader, 10_000_000, cycle::Record { counters: true, ..Default::default() }).unwrap();
         skipping = skipping.min(t.elapsed().as_secs_f64());
         assert_eq!(tr.text(), want, "{name}: the cycle model's trace (waits skipped)");
     }
@@ -67,17 +67,18 @@ fn cycle_model(root: &Path, name: &str, reps: usize) -> (u64, f64, f64) {
 fn rust_hdl(root: &Path, name: &str) -> (u64, f64) {
     let (q, p) = query(name);
     let img = p.image.clone();
-    let (tr, secs) = std::thread::Builder::new()
-        .stack_size(1 << 30)
-        .spawn(move || {
-            let mut chip = exported_chip();
+    struct Timed(QueryImage, ChipQuery);
+    impl OnChip for Timed {
+        type Out = (ChipTrace, f64);
+        fn run<C: RtlPorts>(self, mut chip: C) -> Self::Out {
+            let (img, q) = (self.0, self.1);
             let t = Instant::now();
             let tr = run_query(&mut chip, &img, &drive(&img, q.timing.into(), q.reader, 1_000_000)).expect("the query finishes");
             (tr, t.elapsed().as_secs_f64())
-        })
-        .unwrap()
-        .join()
-        .unwrap();
+        }
+    }
+    let kind = q.chip;
+    let (tr, secs) = big_stack(move || with_chip::<QUEUE_BITS, { QUEUE_BITS + 1 }, { QUEUE_BITS - 1 }, _>(kind, Timed(img, q)));
     assert_eq!(tr.text(), expect(root, name), "rust-hdl's trace of {name}");
     (tr.cycles, secs)
 }

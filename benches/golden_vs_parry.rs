@@ -10,15 +10,16 @@
 //! Run: `cargo bench --features parry --bench golden_vs_parry` (add `-- --quick` for fewer
 //! orientations).
 
-use collision_chip::config::ChipConfig;
+use collision_chip::chip::config::ChipConfig;
 use collision_chip::measure::mean_seconds;
 use collision_chip::mesh;
 use collision_chip::oracle;
 use collision_chip::peer::{self, PeerMesh};
 use collision_chip::pose::Pose;
 use collision_chip::query::{place, Chip};
-use collision_chip::scene::{sweep_poses, Sweep};
-use collision_chip::traversal::{Mode, Traversal};
+use collision_chip::pose::{sweep_poses, Sweep};
+use collision_chip::traversal::Traversal;
+use collision_chip::chip::reg::Mode;
 
 fn main() {
     let quick = std::env::args().any(|a| a == "--quick");

@@ -37,7 +37,7 @@
 //! ```
 
 use crate::format::Format;
-use crate::golden::tcheck::TriResult;
+use crate::golden::tri_unit::TriResult;
 use crate::oracle::{self, Tri};
 use crate::pose::Pose;
 use crate::query::place;

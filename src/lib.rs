@@ -13,14 +13,13 @@ pub mod oracle;
 #[cfg(feature = "parry")]
 pub mod peer;
 pub mod pose;
-pub mod config;
+pub mod chip;
 pub mod cycle;
 pub mod dop;
 pub mod golden;
 pub mod harness;
 pub mod hard_cases;
 pub mod measure;
-pub mod memory;
 pub mod query;
 pub mod report;
 pub mod rtl;

@@ -5,6 +5,7 @@
 //! that the exact oracle judges.
 
 use nalgebra::{Matrix3, Point3, Vector3};
+use rand::{Rng, SeedableRng};
 use serde::{Deserialize, Serialize};
 
 /// Rotation angles in degrees (applied x, then y, then z) and translation of B in A's frame.
@@ -96,6 +97,57 @@ fn cos_sin_deg(deg: f64) -> [f64; 2] {
     }
 }
 
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Sweep {
+    pub distances: Vec<f64>,
+    pub orientations: usize,
+    #[serde(default = "one")]
+    pub seed: u64,
+}
+
+fn one() -> u64 {
+    1
+}
+
+/// One pose of a scene or study, with the sweep distance it belongs to (if any).
+#[derive(Debug, Clone, Copy)]
+pub struct ScenePose {
+    pub pose: Pose,
+    pub distance: Option<f64>,
+}
+
+/// The most poses a sweep may have: each is a full query, and the poses are held in memory.
+pub const MAX_POSES: usize = 1_000_000;
+
+/// The WSCG'03 benchmark protocol: at each distance (centres apart along x), B takes
+/// `orientations` rotations with angles drawn uniformly from [0, 360) degrees (seeded).
+pub fn sweep_poses(s: &Sweep) -> Result<Vec<ScenePose>, String> {
+    if s.distances.is_empty() || s.orientations == 0 {
+        return Err("a sweep needs at least one distance and one orientation".into());
+    }
+    if let Some(d) = s.distances.iter().find(|d| !d.is_finite()) {
+        return Err(format!("sweep distance {d} is not finite"));
+    }
+    let n = s.distances.len().saturating_mul(s.orientations);
+    if n > MAX_POSES {
+        return Err(format!(
+            "a sweep of {} distances x {} orientations is {n} poses; at most {MAX_POSES} poses \
+             (each is a full query): use fewer orientations",
+            s.distances.len(),
+            s.orientations
+        ));
+    }
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(s.seed);
+    let rots: Vec<[f64; 3]> = (0..s.orientations)
+        .map(|_| [rng.random_range(0.0..360.0), rng.random_range(0.0..360.0), rng.random_range(0.0..360.0)])
+        .collect();
+    Ok(s.distances
+        .iter()
+        .flat_map(|&d| rots.iter().map(move |&r| ScenePose { pose: Pose { rot_deg: r, t: [d, 0.0, 0.0] }, distance: Some(d) }))
+        .collect())
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -132,5 +184,23 @@ mod tests {
         assert!(Pose::parse("1,2,3").unwrap_err().contains("3 numbers"));
         assert!(Pose::parse("1,2,3,4,5,nan").is_err());
         assert_eq!(Pose::parse("10,20,30,0.02,0,0").unwrap().t[0], 0.02);
+    }
+
+    #[test]
+    fn sweep_size_is_checked_first() {
+        let e = sweep_poses(&Sweep { distances: vec![1.0, 2.0], orientations: usize::MAX, seed: 1 }).unwrap_err();
+        assert!(e.contains("at most 1000000 poses"), "{e}");
+        assert_eq!(sweep_poses(&Sweep { distances: vec![1.0], orientations: MAX_POSES, seed: 1 }).unwrap().len(), MAX_POSES);
+    }
+
+    #[test]
+    fn sweep_is_distances_times_orientations_and_seeded() {
+        let s = Sweep { distances: vec![2.0, 1.0], orientations: 3, seed: 7 };
+        let p = sweep_poses(&s).unwrap();
+        assert_eq!(p.len(), 6);
+        assert_eq!(p[0].pose.rot_deg, p[3].pose.rot_deg);
+        assert_eq!(p[4].pose.t, [1.0, 0.0, 0.0]);
+        let q = sweep_poses(&Sweep { seed: 8, ..s }).unwrap();
+        assert_ne!(p[0].pose.rot_deg, q[0].pose.rot_deg);
     }
 }

@@ -2,13 +2,16 @@
 //! images once, sets up C, c, j and the frame maps per pose, and a traversal runs.
 //! With `oracle`, the exact answer for the same f64 geometry is computed too.
 
-use crate::config::ChipConfig;
-use crate::dop::{DopNormals, HostSetup};
+use crate::chip::config::ChipConfig;
+use crate::chip::layout::{image_bases, Layout};
+use crate::chip::params::Params;
+use crate::chip::reg::{self, Mode, Order};
 use crate::dop::tree::Tri;
-use crate::memory::{Layout, ObjectImage};
+use crate::golden::host::HostSetup;
+use crate::golden::memory::ObjectImage;
 use crate::oracle;
 use crate::pose::Pose;
-use crate::traversal::{self, Host, Mode, QueryResult, Traversal};
+use crate::traversal::{self, Host, QueryResult, Traversal};
 use serde::Serialize;
 
 /// Both objects' memory images for one chip configuration, and the host's f64 geometry
@@ -25,8 +28,7 @@ impl Chip {
     /// Errors name what is wrong (unsupported k, empty object, a coordinate outside the
     /// range the exact oracle is exact for).
     pub fn new(a: &[Tri], b: &[Tri], cfg: ChipConfig) -> Result<Chip, String> {
-        DopNormals::get(cfg.k)?;
-        crate::memory::TriCache::check(cfg.tri_cache)?;
+        cfg.check()?;
         if a.is_empty() || b.is_empty() {
             return Err("both objects need at least one triangle".into());
         }
@@ -49,6 +51,24 @@ impl Chip {
 
     pub fn setup(&self, pose: &Pose) -> HostSetup {
         HostSetup::new(&self.cfg, pose, self.b.tree.coord_bound(), self.a.tri_side(&self.b))
+    }
+
+    /// Word addresses of A's and B's first node and triangle words in the memory image
+    /// (by [`Dst`](crate::chip::layout::Dst)).
+    pub fn image_bases(&self) -> [u32; 4] {
+        image_bases(self.a.tree.len() as u32, self.a.tris.len() as u32, self.b.tree.len() as u32)
+    }
+
+    /// Words in the memory image (nodes and triangles of both objects).
+    pub fn image_words(&self) -> u32 {
+        self.image_bases()[crate::chip::layout::Dst::TriB as usize] + self.b.tris.len() as u32
+    }
+
+    /// The register writes that start a query in `order` and `mode` on the port of `p`
+    /// ([`reg::control_writes`]; the RTL host writes the DOP unit's and TRI_UNIT's setup
+    /// before these).
+    pub fn control_writes(&self, order: Order, mode: Mode, p: &Params) -> Vec<(u32, u32)> {
+        reg::control_writes(self.image_bases(), order, mode, p, self.cfg.tri_cache)
     }
 
     pub fn query(&self, pose: &Pose, mode: Mode, traversal: Traversal) -> QueryResult {

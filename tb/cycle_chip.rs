@@ -9,16 +9,32 @@
 //! of every query to target/chip-expect/ for `scripts/run-chip.sh --bless`, which copies
 //! each into vectors/chip/ only if Verilator's trace equals it.
 
-use collision_chip::config::{ChipConfig, DopRounding, Formats};
-use collision_chip::cycle::chip::{control_writes, image_words, Chip as CycleChip};
+use collision_chip::chip::config::{ChipConfig, DopRounding, Formats};
+use collision_chip::chip::memory::{Ddr, MemTiming, Memory};
+use collision_chip::chip::params::Params;
+use collision_chip::chip::probes::PROBES;
+use collision_chip::chip::reg::{Mode, Order};
+use collision_chip::chip::rtl::ChipKind;
+use collision_chip::cycle;
+use collision_chip::cycle::chip::Chip as CycleChip;
 use collision_chip::cycle::drive::{run_query, ChipTrace, Drive, Reader};
-use collision_chip::cycle::{self, Ddr, MemTiming, Memory, Params};
 use collision_chip::format::{Format, Rounding};
+use collision_chip::harness::chip_io::queries;
 use collision_chip::mesh::soup;
 use collision_chip::pose::Pose;
 use collision_chip::query::Chip;
-use collision_chip::harness::chip_io::{queries, CHIP_CONFIG};
-use collision_chip::traversal::{Mode, Traversal};
+use collision_chip::traversal::Traversal;
+
+/// The small RTL chip's configuration (k = 6, e8m15).
+const CHIP_CONFIG: ChipConfig = ChipKind::K6E8m15.config();
+
+fn order(lifo: bool) -> Order {
+    if lifo {
+        Order::Lifo
+    } else {
+        Order::Fifo
+    }
+}
 use proptest::prelude::*;
 use std::path::PathBuf;
 
@@ -41,7 +57,7 @@ fn every_checked_in_trace() {
     for q in queries() {
         let p = q.prepare().unwrap();
         let params = q.params();
-        let (tr, stats) = cycle::run_query(&p.chip, &p.chip.setup(&q.pose), q.lifo, q.mode, params, q.reader, MAX_CYCLES, counted()).unwrap();
+        let (tr, stats) = cycle::run_query(&p.chip, &p.chip.setup(&q.pose), q.order, q.mode, params, q.reader, MAX_CYCLES, counted()).unwrap();
         let stats = stats.expect("counted");
         println!("{}: {} ({stats:?})", q.name, tr.text().lines().last().unwrap());
         tr.check(q.mode, &p.golden_all).unwrap_or_else(|e| panic!("{}: {e}", q.name));
@@ -78,14 +94,14 @@ fn large_queries_cover_what_they_claim() {
     for q in &large {
         let p = q.prepare().unwrap();
         let params = q.params();
-        let (tr, st) = cycle::run_query(&p.chip, &p.chip.setup(&q.pose), q.lifo, q.mode, params, q.reader, MAX_CYCLES, counted()).unwrap();
+        let (tr, st) = cycle::run_query(&p.chip, &p.chip.setup(&q.pose), q.order, q.mode, params, q.reader, MAX_CYCLES, counted()).unwrap();
         let st = st.expect("counted");
         let rust_hdl_seconds = tr.cycles as f64 / q.chip.rtl_clocks_per_second();
         assert!(rust_hdl_seconds > 500.0 && tr.cycles <= 200_000, "{}: {} cycles", q.name, tr.cycles);
         back_pressure |= st.back_pressure > 0 && st.result_wait > 0;
         let (hits, unc) = tr.pairs();
         mixed |= !hits.is_empty() && !unc.is_empty();
-        orders_modes.insert((q.lifo, q.mode == Mode::First));
+        orders_modes.insert((q.order == Order::Lifo, q.mode == Mode::First));
     }
     assert!(back_pressure, "no large query stalls TRI_UNIT on a slow host");
     assert!(mixed, "no large query mixes sure hits with uncertain pairs");
@@ -138,14 +154,13 @@ fn params() -> impl Strategy<Value = Params> {
 /// Runs a query on the cycle model, with idle stretches skipped or (`probe`) clock by clock.
 fn run(chip: &Chip, pose: &Pose, lifo: bool, mode: Mode, p: Params, reader: Reader, probe: bool) -> Result<ChipTrace, String> {
     if !probe {
-        return cycle::run_query(chip, &chip.setup(pose), lifo, mode, p, reader, MAX_CYCLES, counted()).map(|r| r.0);
+        return cycle::run_query(chip, &chip.setup(pose), order(lifo), mode, p, reader, MAX_CYCLES, counted()).map(|r| r.0);
     }
     let setup = chip.setup(pose);
     let mut c = CycleChip::new(&chip.cfg, p, &chip.a, &chip.b, &setup, true)?;
-    let words = image_words(&chip.a, &chip.b);
-    let d = Drive { memory: p.memory, word_bits: chip.layout.word_bits(), reader, words, max_cycles: MAX_CYCLES };
-    run_query(&mut c, &control_writes(&chip.a, &chip.b, lifo, mode, &p, chip.cfg.tri_cache), &d, true, |_, p| {
-        assert_eq!(p.map(|v| v.len()), Some(cycle::PROBES.len()));
+    let d = Drive { memory: p.memory, word_bits: chip.layout.word_bits(), reader, words: chip.image_words(), max_cycles: MAX_CYCLES };
+    run_query(&mut c, &chip.control_writes(order(lifo), mode, &p), &d, true, |_, p| {
+        assert_eq!(p.map(|v| v.len()), Some(PROBES.len()));
         Ok(())
     }, None)
     .map_err(|e| e.0)
@@ -173,7 +188,7 @@ proptest! {
         let mode = if first { Mode::First } else { Mode::All };
         let golden = chip.query(&pose, Mode::All, if lifo { Traversal::Lifo } else { Traversal::Fifo });
         let reader = Reader { period };
-        let (tr, st) = cycle::run_query(&chip, &chip.setup(&pose), lifo, mode, p, reader, MAX_CYCLES, counted()).unwrap();
+        let (tr, st) = cycle::run_query(&chip, &chip.setup(&pose), order(lifo), mode, p, reader, MAX_CYCLES, counted()).unwrap();
         let st = st.expect("counted");
         prop_assert!(!tr.overflow, "a queue of {} entries overflowed", p.queue_entries);
         prop_assert!(tr.check(mode, &golden).is_ok(), "{:?}\n{}", tr.check(mode, &golden), tr.text());
@@ -199,9 +214,11 @@ proptest! {
 /// The RTL configuration's parameters are the RTL's own constants.
 #[test]
 fn rtl_point_is_the_rtl() {
-    use collision_chip::rtl::{e8m15::TriUnit, CREDIT, DOP_LATENCY};
+    use collision_chip::rtl::{e8m15::TriUnit, b32};
+    use collision_chip::chip::rtl::{CREDIT, DOP_LATENCY};
     let p = Params::RTL;
     assert_eq!((p.dop_latency, p.tri_latency, p.tri_fifo, p.credit), (DOP_LATENCY as u32, TriUnit::LATENCY as u32, TriUnit::FIFO_DEPTH as u32, CREDIT as u32));
+    assert_eq!((b32::TriUnit::LATENCY, b32::TriUnit::FIFO_DEPTH), (TriUnit::LATENCY, TriUnit::FIFO_DEPTH));
     assert_eq!((p.dop_latency, p.tri_latency), (15, 54), "the documented latencies");
 }
 
@@ -211,9 +228,9 @@ fn rtl_point_is_the_rtl() {
 fn a_small_queue_overflows() {
     let q = queries().into_iter().find(|q| q.name == "sphere_fifo_all").unwrap();
     let p = q.prepare().unwrap();
-    for lifo in [false, true] {
+    for order in [Order::Fifo, Order::Lifo] {
         let params = Params { queue_entries: 3, ..Params::RTL };
-        let (tr, st) = cycle::run_query(&p.chip, &p.chip.setup(&q.pose), lifo, Mode::All, params, Reader::default(), MAX_CYCLES, counted()).unwrap();
+        let (tr, st) = cycle::run_query(&p.chip, &p.chip.setup(&q.pose), order, Mode::All, params, Reader::default(), MAX_CYCLES, counted()).unwrap();
         let st = st.expect("counted");
         assert!(tr.overflow && tr.max_depth == 3, "{}", tr.text());
         assert!(tr.check(Mode::All, &p.golden_all).is_err());
@@ -260,9 +277,9 @@ fn prefetch_keeps_requests_back_to_back_by_hand() {
     let chip = Chip::new(&tris, &tris, CHIP_CONFIG).unwrap();
     assert_eq!(chip.a.tree.nodes[0], Node::Inner([1, 2]), "the tree this derivation assumes");
     let pose = Pose::new(0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
-    let base = cycle::chip::layout(&chip.a, &chip.b);
+    let base = chip.image_bases();
     let (na, nb) = (base[0], base[1]);
-    let idx = |scope: &str, name: &str| cycle::PROBES.iter().position(|p| (p.0, p.1) == (scope, name)).unwrap();
+    let idx = |scope: &str, name: &str| PROBES.iter().position(|p| (p.0, p.1) == (scope, name)).unwrap();
     let (req, addr, issue) = (idx("memory", "req_valid"), idx("memory", "req_addr"), idx("d_cntr", "issue"));
     let timeline = |prefetch: u32| {
         let p = Params {
@@ -284,7 +301,7 @@ fn prefetch_keeps_requests_back_to_back_by_hand() {
             Ok(())
         };
         let rec = cycle::Record { probes: Some(&mut obs), ..Default::default() };
-        let (tr, _) = cycle::run_query(&chip, &chip.setup(&pose), true, Mode::All, p, Reader::default(), MAX_CYCLES, rec).unwrap();
+        let (tr, _) = cycle::run_query(&chip, &chip.setup(&pose), Order::Lifo, Mode::All, p, Reader::default(), MAX_CYCLES, rec).unwrap();
         assert_eq!(tr.dop_tests, 5);
         (reqs, issues)
     };

@@ -3,11 +3,11 @@
 //! the same pairs, as do the list and recursive traversals; Algorithm 1 never transforms
 //! less than Algorithm 2).
 
-use collision_chip::config::DopRounding;
+use collision_chip::chip::config::DopRounding;
 use collision_chip::format::Format;
 use collision_chip::report::accuracy;
 use collision_chip::report::figures::{generate, Cell, Plan};
-use collision_chip::scene::Sweep;
+use collision_chip::pose::Sweep;
 use std::collections::HashMap;
 
 fn csv(path: &std::path::Path) -> (Vec<String>, Vec<HashMap<String, String>>) {
@@ -138,7 +138,7 @@ fn accuracy_pareto_front() {
     assert!(t.rows.iter().filter(|r| r[col("format")] == Cell::Text("e8m10".into())).all(|r| r[col("cells")] == Cell::None && r[col("pareto_area")] == Cell::None));
 
     // on a 64-bit bus a word costs clocks by its width: binary32's words slow down more
-    let narrow = collision_chip::cycle::MemTiming { bus_bits: Some(64), ..Default::default() };
+    let narrow = collision_chip::chip::memory::MemTiming { bus_bits: Some(64), ..Default::default() };
     let slow = accuracy::study("teapot", &tris, &[24], &formats, &[DopRounding::Outward], &sweep, narrow, || {}).unwrap();
     let wide: Vec<_> = rows.iter().filter(|r| r.k == 24).collect();
     let growth: Vec<f64> = slow.iter().zip(&wide).map(|(s, w)| s.sums.cycles as f64 / w.sums.cycles as f64).collect();

@@ -3,16 +3,19 @@
 
 #![allow(clippy::needless_range_loop)] // lanes are indexed by i in several arrays at once
 
-use collision_chip::config::{ChipConfig, DopRounding, Formats};
-use collision_chip::dop::{DopNormals, DopTree, HostSetup, TriSide, SUPPORTED_K};
+use collision_chip::chip::config::{ChipConfig, DopRounding, Formats};
+use collision_chip::dop::{DopNormals, DopTree, SUPPORTED_K};
+use collision_chip::golden::host::TriSide;
+use collision_chip::golden::host::HostSetup;
 use collision_chip::format::{Format, Rounding};
-use collision_chip::golden::{doptrf, tcheck};
-use collision_chip::memory::TriWord;
+use collision_chip::golden::{certificate, dop_unit, doptrf, tcheck, tri_unit};
+use collision_chip::golden::memory::TriWord;
 use collision_chip::mesh;
 use collision_chip::oracle;
 use collision_chip::pose::Pose;
 use collision_chip::query::{place, Chip};
-use collision_chip::traversal::{Mode, Traversal};
+use collision_chip::traversal::Traversal;
+use collision_chip::chip::reg::Mode;
 use nalgebra::{Matrix3, Point3, Vector3};
 use proptest::prelude::*;
 
@@ -228,7 +231,7 @@ proptest! {
         let cfg = ChipConfig { format: if reduced { Format::REDUCED } else { Format::BINARY32 }.into(), ..Default::default() };
         let chip = Chip::new(&[a], &[b], cfg).unwrap();
         let (wa, wb, setup) = (chip.a.tris[0], chip.b.tris[0], chip.setup(&pose));
-        let got = tcheck::tri_unit(cfg.format.tri, cfg.tri_rounding, &wa, &wb, &setup);
+        let got = tri_unit::tri_unit(cfg.format.tri, cfg.tri_rounding, &wa, &wb, &setup);
         let exact = oracle::tri_tri(&a, &bp);
         if !got.uncertain {
             prop_assert_eq!(got.hit, exact);
@@ -237,7 +240,7 @@ proptest! {
             prop_assert!(!got.uncertain, "clear case flagged uncertain");
         }
         // The traversal's TRI_UNIT (stage 1 kept per leaf) says the same, twice.
-        let mut unit = tcheck::TriUnit::new(cfg.format.tri, cfg.tri_rounding, &setup, 1, 1);
+        let mut unit = tri_unit::TriUnit::new(cfg.format.tri, cfg.tri_rounding, &setup, 1, 1);
         prop_assert_eq!(unit.test(0, &wa, 0, &wb), got);
         prop_assert_eq!(unit.test(0, &wa, 0, &wb), got);
     }
@@ -254,7 +257,7 @@ fn tcheck_unit_triangle_known_crossings() {
     let setup = HostSetup::new(&ChipConfig::default(), &Pose::default(), 1.0, side);
     assert_eq!(setup.m_ab, leaf.m);
     let mb = tcheck::stage1(f, Rounding::NearestEven, &leaf, &setup.m_ab, setup.beta_ab, 1.0);
-    let cert = tcheck::Certificate::new(f, Rounding::NearestEven);
+    let cert = certificate::Certificate::new(f, Rounding::NearestEven);
     let run = |v: [[f64; 3]; 3]| {
         let tri = v.map(|p| Point3::new(p[0], p[1], p[2]));
         tcheck::edges(f, Rounding::NearestEven, &cert, &mb, &TriWord::new(&tri, f, 1.0))
@@ -292,18 +295,18 @@ fn degenerate_and_touching_pairs() {
     let seg = [Point3::new(0.2, 0.2, -1.0), Point3::new(0.2, 0.2, 1.0), Point3::new(0.2, 0.2, 0.0)];
     let (wt, ws) = (word(&tri), word(&seg));
     assert!(ws.degenerate && !wt.degenerate);
-    let sure_hit = tcheck::TriResult { hit: true, uncertain: false };
-    assert_eq!(tcheck::tri_unit(f, Rounding::NearestEven, &wt, &ws, &setup), sure_hit);
-    assert_eq!(tcheck::tri_unit(f, Rounding::NearestEven, &ws, &wt, &setup), sure_hit);
+    let sure_hit = tri_unit::TriResult { hit: true, uncertain: false };
+    assert_eq!(tri_unit::tri_unit(f, Rounding::NearestEven, &wt, &ws, &setup), sure_hit);
+    assert_eq!(tri_unit::tri_unit(f, Rounding::NearestEven, &ws, &wt, &setup), sure_hit);
     assert!(oracle::tri_tri(&tri, &seg));
     // A segment that misses: the degenerate direction is unknown, so the pair is uncertain.
     let miss = seg.map(|p| p + Vector3::new(2.0, 0.0, 0.0));
-    assert!(tcheck::tri_unit(f, Rounding::NearestEven, &wt, &word(&miss), &setup).uncertain);
+    assert!(tri_unit::tri_unit(f, Rounding::NearestEven, &wt, &word(&miss), &setup).uncertain);
     // Vertex touching the face: uncertain. Coplanar overlap: uncertain.
     let touch = [Point3::new(0.2, 0.2, 0.0), Point3::new(0.2, 0.2, 1.0), Point3::new(1.0, 1.0, 1.0)];
-    assert!(tcheck::tri_unit(f, Rounding::NearestEven, &wt, &word(&touch), &setup).uncertain);
+    assert!(tri_unit::tri_unit(f, Rounding::NearestEven, &wt, &word(&touch), &setup).uncertain);
     let coplanar = tri.map(|p| p + Vector3::new(0.1, 0.1, 0.0));
-    assert!(tcheck::tri_unit(f, Rounding::NearestEven, &wt, &word(&coplanar), &setup).uncertain);
+    assert!(tri_unit::tri_unit(f, Rounding::NearestEven, &wt, &word(&coplanar), &setup).uncertain);
 }
 
 fn format_value(f: Format) -> impl Strategy<Value = f64> {
@@ -354,11 +357,11 @@ proptest! {
         };
         let (ta, tb) = (DopTree::build(&soup(12, seed), &cfg), DopTree::build(&soup(12, seed + 1), &cfg));
         let setup = HostSetup::new(&cfg, &pose, tb.coord_bound(), TriSide::UNUSED);
-        let mut cache = doptrf::TransformCache::new(cfg.format.dop, cfg.dop_rounding.op(), &setup, tb.len());
+        let mut cache = dop_unit::TransformCache::new(cfg.format.dop, cfg.dop_rounding.op(), &setup, tb.len());
         for nb in 0..tb.len() as u32 {
             for na in 0..ta.len() as u32 {
                 let fast = cache.overlap(nb, tb.dop(nb), ta.dop(na));
-                prop_assert_eq!(fast, doptrf::dop_overlap(cfg.format.dop, cfg.dop_rounding.op(), &setup, tb.dop(nb), ta.dop(na)));
+                prop_assert_eq!(fast, dop_unit::dop_overlap(cfg.format.dop, cfg.dop_rounding.op(), &setup, tb.dop(nb), ta.dop(na)));
             }
         }
     }
@@ -381,7 +384,7 @@ fn dop_unit_keeps_and_culls() {
                     let setup = HostSetup::new(&cfg, &pose, tb.coord_bound(), TriSide::UNUSED);
                     for nb in 0..tb.len() as u32 {
                         for na in 0..ta.len() as u32 {
-                            overlaps += doptrf::dop_overlap(format, dop_rounding.op(), &setup, tb.dop(nb), ta.dop(na)) as u32;
+                            overlaps += dop_unit::dop_overlap(format, dop_rounding.op(), &setup, tb.dop(nb), ta.dop(na)) as u32;
                             total += 1;
                         }
                     }
@@ -408,10 +411,10 @@ fn tri_unit_fast_path_equals_reference_on_hard_cases() {
             let cfg = ChipConfig { format: format.into(), ..Default::default() };
             let chip = Chip::new(&case.a, &case.b, cfg).unwrap();
             let (wa, wb, setup) = (&chip.a.tris, &chip.b.tris, chip.setup(pose));
-            let mut unit = tcheck::TriUnit::new(format, cfg.tri_rounding, &setup, wa.len(), wb.len());
+            let mut unit = tri_unit::TriUnit::new(format, cfg.tri_rounding, &setup, wa.len(), wb.len());
             for (i, a) in wa.iter().enumerate() {
                 for (j, b) in wb.iter().enumerate() {
-                    let want = tcheck::tri_unit(format, cfg.tri_rounding, a, b, &setup);
+                    let want = tri_unit::tri_unit(format, cfg.tri_rounding, a, b, &setup);
                     assert_eq!(unit.test(i as u32, a, j as u32, b), want, "{} ({i}, {j}) {format}", case.name);
                     pairs += 1;
                 }
@@ -474,7 +477,7 @@ fn outward_dop_test_never_culls_a_contact() {
             for (ta, tb) in oracle::intersecting_pairs(&case.a, &place(&case.b, &case.pose)) {
                 for na in path(&pa, leaf_of(&chip.a.tree, ta)) {
                     for nb in path(&pb, leaf_of(&chip.b.tree, tb)) {
-                        let o = doptrf::dop_overlap(format, rounding.op(), &setup, chip.b.tree.dop(nb), chip.a.tree.dop(na));
+                        let o = dop_unit::dop_overlap(format, rounding.op(), &setup, chip.b.tree.dop(nb), chip.a.tree.dop(na));
                         if rounding == DopRounding::Outward {
                             assert!(o, "{}: k={k} {format}: contact ({ta}, {tb}) culled at nodes ({na}, {nb})", case.name);
                             checked += 1;
@@ -501,8 +504,8 @@ fn outward_dop_test_never_culls_a_contact() {
 /// shares were 0.0033-0.0345 (binary32) and 0.47-0.93 (e8m15), and fail these bounds.
 #[test]
 fn default_query_is_exact_on_vendored_meshes() {
-    let sweep = collision_chip::scene::Sweep { distances: vec![2.2, 1.4, 0.8, 0.2], orientations: 2, seed: 5 };
-    let poses = collision_chip::scene::sweep_poses(&sweep).unwrap();
+    let sweep = collision_chip::pose::Sweep { distances: vec![2.2, 1.4, 0.8, 0.2], orientations: 2, seed: 5 };
+    let poses = collision_chip::pose::sweep_poses(&sweep).unwrap();
     // (mesh, format, most uncertain / triangle tests, most overlapping / DOP tests)
     let bounds = [
         ("bunny", Format::BINARY32, 0.002, 0.5),    // measured 0.0007, 0.368
@@ -555,9 +558,9 @@ fn a_dop_format_apart_keeps_each_datapath_its_own() {
     let tris = mesh::resolve("bunny").unwrap().scaled_into_unit_cube().unwrap().triangles_f64();
     let chip = |f: &str| Chip::new(&tris, &tris, ChipConfig { format: f.parse::<Formats>().unwrap(), ..Default::default() }).unwrap();
     let (split, dop, tri) = (chip("e8m15/binary32"), chip("e8m15"), chip("binary32"));
-    let sweep = collision_chip::scene::Sweep { distances: vec![1.6, 1.0, 0.6], orientations: 2, seed: 3 };
+    let sweep = collision_chip::pose::Sweep { distances: vec![1.6, 1.0, 0.6], orientations: 2, seed: 3 };
     let (mut uncertain, mut dop_uncertain) = (0, 0);
-    for sp in collision_chip::scene::sweep_poses(&sweep).unwrap() {
+    for sp in collision_chip::pose::sweep_poses(&sweep).unwrap() {
         let pose = &sp.pose;
         let r = split.query(pose, Mode::All, Traversal::Lifo);
         let d = dop.query(pose, Mode::All, Traversal::Lifo);
@@ -567,7 +570,7 @@ fn a_dop_format_apart_keeps_each_datapath_its_own() {
         assert_eq!(c.memory_bytes, 81 * c.node_fetches + 93 * c.tri_fetches);
         let setup = tri.setup(pose);
         for &(a, b) in &r.uncertain {
-            let v = tcheck::tri_unit(Format::BINARY32, Rounding::NearestEven, &tri.a.tris[a as usize], &tri.b.tris[b as usize], &setup);
+            let v = tri_unit::tri_unit(Format::BINARY32, Rounding::NearestEven, &tri.a.tris[a as usize], &tri.b.tris[b as usize], &setup);
             assert!(v.uncertain, "({a}, {b}) at {}: binary32 decides it, the split chip does not", pose.text());
         }
         (uncertain, dop_uncertain) = (uncertain + c.uncertain, dop_uncertain + g.uncertain);

@@ -13,12 +13,13 @@
 //!
 //! Test names: `oracle_*` judge the oracle, `chip_*` the chip, `tri_unit_*` its verdicts.
 
-use collision_chip::config::ChipConfig;
+use collision_chip::chip::config::ChipConfig;
 use collision_chip::format::Format;
-use collision_chip::golden::tcheck::TriUnit;
+use collision_chip::golden::tri_unit::TriUnit;
 use collision_chip::hard_cases::{self as hc, Case, ExactMap, Verdict, FAMILIES, VERDICT_FORMATS};
 use collision_chip::query::Chip;
-use collision_chip::traversal::{Mode, Traversal};
+use collision_chip::traversal::Traversal;
+use collision_chip::chip::reg::Mode;
 use proptest::prelude::*;
 use proptest::test_runner::Config as PtConfig;
 

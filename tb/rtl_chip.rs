@@ -11,14 +11,18 @@
 
 use collision_chip::cycle::chip::Chip as CycleChip;
 use collision_chip::cycle::drive::{run_query, ChipTrace, Drive, Lockstep, Reader};
-use collision_chip::cycle::{Ddr, Memory, Params};
-use collision_chip::dop::HostSetup;
+use collision_chip::chip::memory::Ddr;
+use collision_chip::chip::memory::Memory;
+use collision_chip::chip::params::Params;
+use collision_chip::golden::host::HostSetup;
 use collision_chip::pose::Pose;
 use collision_chip::query::Chip;
 use collision_chip::cycle::drive::open_vcd;
-use collision_chip::harness::chip_io::{drive, queries, ChipKind, ChipQuery, QueryImage, RtlChip, RtlPorts, CHIP_CONFIG};
-use collision_chip::rtl::{b32, e8m15, e8m15_b32};
-use collision_chip::traversal::{Mode, QueryResult, Traversal};
+use collision_chip::chip::reg::Order;
+use collision_chip::chip::rtl::ChipKind;
+use collision_chip::harness::chip_io::{drive, queries, with_chip, ChipQuery, OnChip, QueryImage, RtlChip, RtlPorts};
+use collision_chip::traversal::{QueryResult, Traversal};
+use collision_chip::chip::reg::Mode;
 use std::path::PathBuf;
 
 /// Generous: the longest query takes about 2,000 cycles.
@@ -32,7 +36,7 @@ struct Case {
     setup: HostSetup,
     image: QueryImage,
     golden: QueryResult,
-    lifo: bool,
+    order: Order,
     mode: Mode,
     /// The RTL chip's parameters: its memory and memory port (register 0x126).
     params: Params,
@@ -40,17 +44,17 @@ struct Case {
 }
 
 impl Case {
-    fn new(name: &str, chip: Chip, pose: Pose, lifo: bool, mode: Mode, params: Params, reader: Reader) -> Case {
+    fn new(name: &str, chip: Chip, pose: Pose, order: Order, mode: Mode, params: Params, reader: Reader) -> Case {
         let setup = chip.setup(&pose);
         let kind = ChipKind::of(&chip.cfg).expect("an RTL chip's configuration");
-        let image = QueryImage::new(kind, &chip.a, &chip.b, &setup, lifo, mode, &params, chip.cfg.tri_cache).unwrap();
-        let golden = chip.query(&pose, Mode::All, if lifo { Traversal::Lifo } else { Traversal::Fifo });
-        Case { name: name.into(), chip, setup, image, golden, lifo, mode, params, reader }
+        let image = QueryImage::new(kind, &chip.a, &chip.b, &setup, order, mode, &params, chip.cfg.tri_cache).unwrap();
+        let golden = chip.query(&pose, Mode::All, if order == Order::Lifo { Traversal::Lifo } else { Traversal::Fifo });
+        Case { name: name.into(), chip, setup, image, golden, order, mode, params, reader }
     }
 
     fn of(q: &ChipQuery) -> Case {
         let p = q.prepare().unwrap();
-        Case::new(q.name, p.chip, q.pose, q.lifo, q.mode, q.params(), q.reader)
+        Case::new(q.name, p.chip, q.pose, q.order, q.mode, q.params(), q.reader)
     }
 
     fn drive(&self) -> Drive {
@@ -65,13 +69,19 @@ impl Case {
             std::thread::Builder::new()
                 .stack_size(1 << 30)
                 .spawn_scoped(s, || {
-                    let (kind, c) = (self.image.kind, self.image.kind.config());
-                    let (dop, tri) = (c.dop_rounding.op(), c.tri_rounding);
-                    match kind {
-                        ChipKind::K6E8m15 => self.run_on(e8m15::chip_top::<N, NP1, NM1>(dop, tri), 1 << N, runs, vcd),
-                        ChipKind::K24B32 => self.run_on(b32::chip_top::<N, NP1, NM1>(dop, tri), 1 << N, runs, vcd),
-                        ChipKind::K24E8m15B32 => self.run_on(e8m15_b32::chip_top::<N, NP1, NM1>(dop, tri), 1 << N, runs, vcd),
+                    struct Run<'c> {
+                        case: &'c Case,
+                        queue_entries: u32,
+                        runs: usize,
+                        vcd: Option<PathBuf>,
                     }
+                    impl OnChip for Run<'_> {
+                        type Out = Vec<ChipTrace>;
+                        fn run<C: RtlPorts>(self, chip: C) -> Vec<ChipTrace> {
+                            self.case.run_on(chip, self.queue_entries, self.runs, self.vcd)
+                        }
+                    }
+                    with_chip::<N, NP1, NM1, _>(self.image.kind, Run { case: self, queue_entries: 1 << N, runs, vcd })
                 })
                 .unwrap()
                 .join()
@@ -106,7 +116,7 @@ impl Case {
         if self.mode == Mode::All {
             let g = self.golden.counters;
             assert_eq!((tr.dop_tests, tr.tri_tests), (g.dop_tests, g.tri_tests), "{name}: tests");
-            if !self.lifo {
+            if self.order == Order::Fifo {
                 // FIFO order tests pairs in exactly the golden D_CNTR's order
                 assert_eq!((tr.node_fetches, tr.tri_fetches), (g.node_fetches, g.tri_fetches), "{name}: fetches");
             }
@@ -265,8 +275,8 @@ fn a_last_leaf_pair_is_tested() {
     let a = vec![[p(0.0, 0.0, 0.0), p(1.0, 0.0, 0.0), p(0.0, 1.0, 0.0)]];
     let b = vec![[p(0.2, 0.2, -1.0), p(0.3, 0.2, 1.0), p(0.2, 0.3, 1.0)]];
     let pose = Pose::new(0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
-    for lifo in [false, true] {
-        let case = Case::new("one_leaf_pair", Chip::new(&a, &b, CHIP_CONFIG).unwrap(), pose, lifo, Mode::All, Params::RTL, Reader::default());
+    for order in [Order::Fifo, Order::Lifo] {
+        let case = Case::new("one_leaf_pair", Chip::new(&a, &b, ChipKind::K6E8m15.config()).unwrap(), pose, order, Mode::All, Params::RTL, Reader::default());
         let tr = &case.lockstep::<10, 11, 9>(1, None)[0];
         assert_eq!(tr.results.iter().map(|r| (r.1, r.2, r.3)).collect::<Vec<_>>(), [(0, 0, false)], "{}", tr.text());
         case.check(tr);
@@ -302,7 +312,7 @@ fn seeded_random_query() {
     let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(2);
     // small: rust-hdl runs the chip at about 25 clocks per second
     let (na, nb) = (rng.random_range(3..=6), rng.random_range(3..=6));
-    let chip = Chip::new(&soup(na, rng.random()).triangles_f64(), &soup(nb, rng.random()).triangles_f64(), CHIP_CONFIG).unwrap();
+    let chip = Chip::new(&soup(na, rng.random()).triangles_f64(), &soup(nb, rng.random()).triangles_f64(), ChipKind::K6E8m15.config()).unwrap();
     let r = |rng: &mut rand_chacha::ChaCha8Rng| rng.random_range(0.0..360.0);
     let t = |rng: &mut rand_chacha::ChaCha8Rng| rng.random_range(-0.3..0.3);
     let pose = Pose::new(r(&mut rng), r(&mut rng), r(&mut rng), t(&mut rng), t(&mut rng), t(&mut rng));
@@ -313,7 +323,8 @@ fn seeded_random_query() {
     // and the memory port at full speed: 2 pairs prefetched, 3 requests, an issue every
     // clock, a credit of 20
     let params = Params { memory: ddr, prefetch: 2, outstanding: 3, issue_spacing: 1, credit: 20, ..Params::RTL };
-    let case = Case::new("seed 2", chip, pose, lifo, mode, params, reader);
+    let order = if lifo { Order::Lifo } else { Order::Fifo };
+    let case = Case::new("seed 2", chip, pose, order, mode, params, reader);
     println!("seed 2: {na} x {nb} triangles, {}, {mode:?}, reader period {}", if lifo { "LIFO" } else { "FIFO" }, reader.period);
     let tr = &case.lockstep::<10, 11, 9>(1, None)[0];
     case.check(tr);

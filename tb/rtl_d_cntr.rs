@@ -18,10 +18,12 @@
 //! Outputs are also checked to be functions of registers only: after the next cycle's
 //! inputs are applied, before the rising edge, they still show the state after the last edge.
 
+use collision_chip::chip::layout::{pack, unpack, Entry, Pair, ENTRY_BITS};
+use collision_chip::chip::reg::Order;
+use collision_chip::cycle::d_cntr::{QueueIn, QueueModel, QueueOut};
 use collision_chip::dop::Node;
-use collision_chip::cycle::d_cntr::{pack, unpack, QueueIn, QueueModel, QueueOut, ENTRY_BITS};
+use collision_chip::golden::d_cntr::children;
 use collision_chip::rtl::d_cntr::{pair_queue_top, random_ops, PairQueue};
-use collision_chip::traversal::d_cntr::{children, Entry, Pair};
 use proptest::prelude::*;
 use proptest::strategy::ValueTree;
 use proptest::test_runner::{Config, TestRunner};
@@ -140,7 +142,7 @@ fn compare<const N: usize, const NP1: usize, const NM1: usize>(ops: &[QueueIn], 
         cov.clocks += 1;
         if i.clear {
             cov.clear_nonempty[lifo] += !before.empty as usize;
-            lifo = i.lifo as usize;
+            lifo = (i.order == Order::Lifo) as usize;
             continue;
         }
         cov.overflows[lifo] += (got.overflow && !before.overflow) as usize;
@@ -169,8 +171,16 @@ fn check<const N: usize, const NP1: usize, const NM1: usize>(ops: &[QueueIn]) ->
 
 // ---- generated sequences -------------------------------------------------------------
 
+fn order(lifo: bool) -> Order {
+    if lifo {
+        Order::Lifo
+    } else {
+        Order::Fifo
+    }
+}
+
 fn clear(lifo: bool) -> QueueIn {
-    QueueIn { clear: true, lifo, ..Default::default() }
+    QueueIn { clear: true, order: order(lifo), ..Default::default() }
 }
 
 /// One clock: push and pop with the given probabilities, a random entry word, a third of
@@ -179,7 +189,7 @@ fn clear(lifo: bool) -> QueueIn {
 fn op(p_push: f64, p_pop: f64) -> impl Strategy<Value = QueueIn> {
     let two = (prop::bool::weighted(1.0 / 3.0), any::<u128>());
     (prop::bool::weighted(p_push), prop::bool::weighted(p_pop), any::<u128>(), two, prop::bool::weighted(0.004), any::<bool>()).prop_map(
-        |(push, pop, d, (two, d2), clear, lifo)| QueueIn { clear, lifo, push, pop, push_data: d & MASK, push2: (push && two).then_some(d2 & MASK) },
+        |(push, pop, d, (two, d2), clear, lifo)| QueueIn { clear, order: order(lifo), push, pop, push_data: d & MASK, push2: (push && two).then_some(d2 & MASK) },
     )
 }
 
@@ -284,11 +294,11 @@ fn wrong_models_are_caught() {
         let (mut m, mut lifo2, mut over4) = (QueueModel::new(3), false, false);
         for i in &ops {
             let o = m.step(i);
-            lifo2 |= m.lifo() && o.count >= 2;
+            lifo2 |= m.order() == Order::Lifo && o.count >= 2;
             over4 |= o.count >= 4;
         }
         let mut m = QueueModel::new(3);
-        let r = compare::<3, 4, 2>(&ops, |i| m.step(&QueueIn { lifo: false, ..*i }), false);
+        let r = compare::<3, 4, 2>(&ops, |i| m.step(&QueueIn { order: Order::Fifo, ..*i }), false);
         assert_eq!(r.is_err(), lifo2, "FIFO-only model on {} clocks", ops.len());
         let mut m = QueueModel::new(2);
         let r = compare::<3, 4, 2>(&ops, |i| m.step(i), false);

@@ -4,17 +4,19 @@
 //! * the DOPTRF lane against `golden::doptrf::lane` (s and flag) on proptest operands
 //!   (zeros, infinities, NaN, subnormals, ties, near-cancellation of u + e), both formats,
 //!   both roundings, one lane evaluation per clock, latency 15 checked on `valid_out`;
-//! * the DOP unit against `golden::doptrf::dop_overlap` on all node pairs of two real DOP
+//! * the DOP unit against `golden::dop_unit::dop_overlap` on all node pairs of two real DOP
 //!   trees (host setup loaded through the write port), and on random format values and
 //!   random MUX controls; overlap and tag, one pair per clock.
 //!
 //! Also: a short VCD per block under `target/rtl-vcd/`, Verilog export with
 //! (Verilog export and its checks: `harness::units`, scripts/check-rtl.sh.)
 
-use collision_chip::config::{ChipConfig, DopRounding};
-use collision_chip::dop::{DopTree, HostSetup, TriSide};
+use collision_chip::chip::config::{ChipConfig, DopRounding};
+use collision_chip::dop::DopTree;
+use collision_chip::golden::host::TriSide;
+use collision_chip::golden::host::HostSetup;
 use collision_chip::format::{Format, Rounding};
-use collision_chip::golden::doptrf;
+use collision_chip::golden::{dop_unit, doptrf};
 use collision_chip::mesh::soup;
 use collision_chip::pose::Pose;
 use collision_chip::rtl::{b32, e8m15};
@@ -300,7 +302,7 @@ fn unit_trees<U: Unit>(make: impl Fn(Rounding) -> U, fmt: Format, r: Rounding, n
                 e: e.iter().map(|&x| fmt.to_bits(x)).collect(),
                 tag: (pairs.len() as u16).wrapping_mul(40503) ^ 0x5a5a,
             });
-            want.push(doptrf::dop_overlap(fmt, r, &setup, d, e));
+            want.push(dop_unit::dop_overlap(fmt, r, &setup, d, e));
         }
     }
     let mut uut = make(r);
@@ -380,7 +382,7 @@ fn unit_random<U: Unit>(make: impl Fn(Rounding) -> U, fmt: Format, n_pairs: usiz
             }
             let df: Vec<f64> = d.iter().map(|&b| fmt.from_bits(b)).collect();
             let ef: Vec<f64> = e.iter().map(|&b| fmt.from_bits(b)).collect();
-            want.push(doptrf::dop_overlap(fmt, r, &setup, &df, &ef));
+            want.push(dop_unit::dop_overlap(fmt, r, &setup, &df, &ef));
             pairs.push(Pair { d, e, tag: p as u16 });
         }
         let mut uut = make(r);

@@ -321,7 +321,7 @@ macro_rules! scale_test {
         #[test]
         fn $name() {
             let fmt = $fmt;
-            let cert = collision_chip::golden::tcheck::Certificate::new(fmt, Rounding::NearestEven);
+            let cert = collision_chip::golden::certificate::Certificate::new(fmt, Rounding::NearestEven);
             let ops = scale_ops(Fmt::of(fmt));
             let pairs = [cert.c_e, cert.c_z, [cert.c_s, cert.c_s]];
             for (i, c) in pairs.iter().enumerate() {

@@ -14,14 +14,15 @@
 //! `in_ready` fall and loses nothing; with a reader always ready, one result per clock after
 //! `TriUnit::LATENCY`.
 
-use collision_chip::config::ChipConfig;
+use collision_chip::chip::config::ChipConfig;
 use collision_chip::dop::tree::Tri;
 use collision_chip::format::{Format, Rounding};
 use collision_chip::hard_cases as hc;
-use collision_chip::memory::TriWord;
+use collision_chip::golden::memory::TriWord;
 use collision_chip::pose::Pose;
 use collision_chip::query::Chip;
-use collision_chip::golden::tcheck::{tri_unit, TriResult};
+use collision_chip::golden::tri_unit::tri_unit;
+use collision_chip::golden::tri_unit::TriResult;
 use collision_chip::harness::tri_io::{tri_unit_directions, tri_unit_setup_words, LeafIn, TCheckIn, TCheckOut};
 use collision_chip::rtl::{b32, e8m15};
 use nalgebra::Point3;
@@ -90,12 +91,12 @@ fn big_stack<T: Send + 'static>(f: impl FnOnce() -> T + Send + 'static) -> T {
 }
 
 /// The T.CHECK cases of a triangle pair set: both directions of every pair.
-fn cases(f: Format, r: Rounding, pairs: &[(TriWord, TriWord, collision_chip::dop::HostSetup)]) -> Vec<(TCheckIn, TCheckOut)> {
+fn cases(f: Format, r: Rounding, pairs: &[(TriWord, TriWord, collision_chip::golden::host::HostSetup)]) -> Vec<(TCheckIn, TCheckOut)> {
     pairs.iter().flat_map(|(a, b, s)| tri_unit_directions(f, r, a, b, s)).collect()
 }
 
 /// Triangle pairs of a scene: every (a, b) of the two objects under the pose.
-fn scene_pairs(f: Format, a: &[Tri], b: &[Tri], pose: &Pose) -> Vec<(TriWord, TriWord, collision_chip::dop::HostSetup)> {
+fn scene_pairs(f: Format, a: &[Tri], b: &[Tri], pose: &Pose) -> Vec<(TriWord, TriWord, collision_chip::golden::host::HostSetup)> {
     let chip = Chip::new(a, b, ChipConfig { format: f.into(), ..Default::default() }).unwrap();
     let setup = chip.setup(pose);
     let mut out = vec![];
@@ -361,7 +362,7 @@ fn drive<U: TriUnitSim>(uut: &mut U, job: &TriJob, reader: impl Fn(usize) -> boo
 
 /// The host's steps for triangle pairs: a setup write for every frame register whose value
 /// changes with the pair's pose, then the pair.
-fn tri_job(f: Format, triples: &[(TriWord, TriWord, collision_chip::dop::HostSetup)]) -> TriJob {
+fn tri_job(f: Format, triples: &[(TriWord, TriWord, collision_chip::golden::host::HostSetup)]) -> TriJob {
     let mut regs = std::collections::HashMap::new();
     let mut job = TriJob::default();
     for (a, b, s) in triples {
@@ -410,7 +411,7 @@ fn tri_unit_mismatches(f: Format, job: TriJob) -> (Vec<String>, usize) {
 /// under its own pose (the setup changes between pairs in flight). (rust-hdl runs TRI_UNIT
 /// at about 5 clocks per second; the volume is T.CHECK's above, here and in the exported
 /// Verilog, and the chip's, in the cycle model and under Verilator.)
-fn catalogue_triples(f: Format) -> Vec<(TriWord, TriWord, collision_chip::dop::HostSetup)> {
+fn catalogue_triples(f: Format) -> Vec<(TriWord, TriWord, collision_chip::golden::host::HostSetup)> {
     let mut seen = [false; 4];
     let mut out = vec![];
     for case in hc::load_catalogue().unwrap() {
@@ -430,7 +431,7 @@ fn catalogue_triples(f: Format) -> Vec<(TriWord, TriWord, collision_chip::dop::H
 }
 
 /// Triangle pairs of a random soup pair (`na` x `nb` triangles of [-1, 1]^3) under a near pose.
-fn soup_triples(f: Format, na: usize, nb: usize) -> Vec<(TriWord, TriWord, collision_chip::dop::HostSetup)> {
+fn soup_triples(f: Format, na: usize, nb: usize) -> Vec<(TriWord, TriWord, collision_chip::golden::host::HostSetup)> {
     let tris = sample(prop::collection::vec(tri(), na + nb), 1).pop().unwrap();
     let pose = sample(near_pose(), 2).pop().unwrap();
     scene_pairs(f, &tris[..na], &tris[na..], &pose)

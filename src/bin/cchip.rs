@@ -2,8 +2,8 @@
 //! collision chip (and, for small meshes, its RTL in rust-hdl).
 
 use clap::{Args, Parser, Subcommand};
-use collision_chip::config::{ChipConfig, DopRounding, Formats};
-use collision_chip::cycle::Memory;
+use collision_chip::chip::config::{ChipConfig, DopRounding, Formats};
+use collision_chip::chip::memory::Memory;
 use collision_chip::mesh::{self, Mesh};
 use collision_chip::pose::Pose;
 use collision_chip::query::{exact_pairs, Accuracy, Chip};
@@ -11,8 +11,10 @@ use collision_chip::report::{accuracy, figures, memory_table, stall_table, summa
 use collision_chip::harness::units;
 use collision_chip::scene::graph::Plan;
 use collision_chip::scene::run::Prepared;
-use collision_chip::scene::{CrossCheck, Scene, Sweep, Waveforms, DEFAULT_SCENE};
-use collision_chip::traversal::{Counters, Mode, Traversal};
+use collision_chip::pose::Sweep;
+use collision_chip::scene::{CrossCheck, Scene, Waveforms, DEFAULT_SCENE};
+use collision_chip::traversal::{Counters, Traversal};
+use collision_chip::chip::reg::Mode;
 use serde::Serialize;
 use std::io::Write;
 use indicatif::{ProgressBar, ProgressStyle};
@@ -326,7 +328,7 @@ fn progress_bar(len: u64, hidden: bool) -> ProgressBar {
 fn accuracy(a: AccuracyArgs) -> Result<(), String> {
     let sweep = Sweep { distances: a.distances.clone(), orientations: a.orientations, seed: a.seed };
     let roundings = [DopRounding::Outward, DopRounding::NearestEven];
-    let memory = collision_chip::cycle::MemTiming { bus_bits: a.bus_bits, ..Default::default() };
+    let memory = collision_chip::chip::memory::MemTiming { bus_bits: a.bus_bits, ..Default::default() };
     memory.check()?;
     let area = a.area.as_deref().map(accuracy::Area::load).transpose()?;
     let bar = progress_bar(a.meshes.len().saturating_mul(a.distances.len()).saturating_mul(a.orientations) as u64, a.json);

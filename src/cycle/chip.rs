@@ -6,37 +6,23 @@
 //! clocks every register once.
 
 use super::d_cntr::{QueueIn, QueueModel, QueueOut};
+use super::delay::Delay;
 use super::dop_unit::{DopResult, DopUnit};
-use super::delay::{Delay, FIFO_WRITE_TO_HEAD};
-use super::memory::{Dst, MemPort};
+use super::memory_port::MemPort;
 use super::tri_unit::{TriOut, TriUnit};
-use super::{ChipIn, ChipOut, Clocked, Params};
-use crate::config::ChipConfig;
-use crate::dop::{HostSetup, Node};
-use crate::golden::{doptrf, tcheck};
-use crate::memory::{ObjectImage, TriCache};
-use crate::traversal::d_cntr::{children, Entry, Pair};
+use crate::chip::config::ChipConfig;
+use crate::chip::layout::{Dst, Entry, Pair};
+use crate::chip::params::Params;
+use crate::chip::ports::{ChipIn, ChipOut, Clocked};
+use crate::chip::reg::{self, Order};
+use crate::chip::rtl::FIFO_WRITE_TO_HEAD;
+use crate::dop::Node;
+use crate::golden::d_cntr::children;
+use crate::golden::host::HostSetup;
+use crate::golden::memory::{ObjectImage, TriCache};
+use crate::golden::{dop_unit, tri_unit};
 use serde::Serialize;
 use std::collections::VecDeque;
-
-/// The host registers the traversal reads (the DOP unit's and TRI_UNIT's setup words are
-/// the golden [`HostSetup`] given at construction).
-pub mod reg {
-    pub const MODE: u32 = 0x120;
-    pub const ROOT: u32 = 0x121;
-    pub const BASE_NA: u32 = 0x122;
-    pub const BASE_NB: u32 = 0x123;
-    pub const BASE_TA: u32 = 0x124;
-    pub const BASE_TB: u32 = 0x125;
-    /// The memory port: bits 3:0 the pairs prefetched, 7:4 the requests outstanding at
-    /// most, less one; bit 8 an issue every clock (issue spacing 1); bits 14:9 the credit
-    /// (0: 16). Zero after reset: the RTL's default point ([`Params::RTL`]). The cycle model
-    /// takes these from its [`Params`]; [`control_writes`] writes them for the RTL.
-    pub const PORT: u32 = 0x126;
-    /// A's triangle cache: bits 6:0 its lines less one (`ChipConfig::tri_cache`, at most
-    /// [`crate::rtl::TRI_CACHE_LINES`] in the RTL). Zero after reset: one line.
-    pub const TRI_CACHE: u32 = 0x127;
-}
 
 /// Where the clocks of a running query went, one cause per cycle for the DOP unit's
 /// input, plus the other units' occupancy.
@@ -79,7 +65,7 @@ pub struct Stats {
 pub struct Chip<'a> {
     p: Params,
     // ---- host registers
-    lifo: bool,
+    order: Order,
     first: bool,
     root: u32,
     base: [u32; 4],
@@ -165,12 +151,12 @@ impl<'a> Chip<'a> {
         counters: bool,
     ) -> Result<Self, String> {
         p.check()?;
-        let dop_values = doptrf::TransformCache::new(cfg.format.dop, cfg.dop_rounding.op(), setup, b.tree.len());
-        let tri_values = tcheck::TriUnit::new(cfg.format.tri, cfg.tri_rounding, setup, a.tris.len(), b.tris.len());
+        let dop_values = dop_unit::TransformCache::new(cfg.format.dop, cfg.dop_rounding.op(), setup, b.tree.len());
+        let tri_values = tri_unit::TriUnit::new(cfg.format.tri, cfg.tri_rounding, setup, a.tris.len(), b.tris.len());
         let queue = QueueModel::with_capacity(p.queue_entries as usize);
         Ok(Chip {
             p,
-            lifo: false,
+            order: Order::Fifo,
             first: false,
             root: 0,
             base: [0; 4],
@@ -243,7 +229,7 @@ impl<'a> Chip<'a> {
         // room in the buffer of prefetch + 2 pairs for an entry's two, once this cycle's
         // issue has left
         let room = self.ahead.len() - issue as usize <= self.p.prefetch as usize;
-        let pop = go && !self.q.empty && room && !(self.lifo && child_push);
+        let pop = go && !self.q.empty && room && !(self.order == Order::Lifo && child_push);
         // leaf pairs and TRI_UNIT
         let tri_in = go && self.leaf_valid && !need[2] && !need[3];
         let tri_take = tri_in && self.tri.in_ready();
@@ -422,46 +408,6 @@ impl<'a> Chip<'a> {
     }
 }
 
-/// The host's writes of the traversal's registers for a query in order `lifo` and
-/// `mode`, root pair (0, 0), the memory port of `p` and A's triangle cache of `tri_cache`
-/// lines unless they are the reset values, mode last (the RTL host writes the DOP unit's
-/// and TRI_UNIT's setup before these).
-pub fn control_writes(a: &ObjectImage, b: &ObjectImage, lifo: bool, mode: crate::traversal::Mode, p: &Params, tri_cache: u32) -> Vec<(u32, u32)> {
-    let base = layout(a, b);
-    let mut w = vec![
-        (reg::BASE_NA, base[Dst::NodeA as usize]),
-        (reg::BASE_TA, base[Dst::TriA as usize]),
-        (reg::BASE_NB, base[Dst::NodeB as usize]),
-        (reg::BASE_TB, base[Dst::TriB as usize]),
-        (reg::ROOT, 0),
-    ];
-    // (the RTL's fields; the cycle model runs larger values from `p` itself, and
-    // `chip_io::rtl_order` keeps the RTL's queries within them)
-    let credit = if p.credit == crate::rtl::CREDIT as u32 { 0 } else { p.credit.min(crate::rtl::CREDIT_MAX as u32) };
-    let outstanding = p.outstanding.clamp(1, crate::rtl::PORT_OUTSTANDING as u32);
-    let port = p.prefetch.min(0xf) | (outstanding - 1) << 4 | ((p.issue_spacing == 1) as u32) << 8 | credit << 9;
-    if port != 0 {
-        w.push((reg::PORT, port));
-    }
-    if tri_cache > 1 {
-        w.push((reg::TRI_CACHE, (tri_cache - 1).min(crate::rtl::TRI_CACHE_LINES as u32 - 1)));
-    }
-    w.push((reg::MODE, lifo as u32 | ((mode == crate::traversal::Mode::First) as u32) << 1));
-    w
-}
-
-/// Words in the memory image of `a` and `b` (nodes and triangles of both).
-pub fn image_words(a: &ObjectImage, b: &ObjectImage) -> u32 {
-    layout(a, b)[Dst::TriB as usize] + b.tris.len() as u32
-}
-
-/// Word addresses of A's node 0, B's node 0, A's triangle 0, B's triangle 0 (by [`Dst`]):
-/// A's nodes, A's triangles, B's nodes, B's triangles, one word each.
-pub fn layout(a: &ObjectImage, b: &ObjectImage) -> [u32; 4] {
-    let (na, ta, nb) = (a.tree.len() as u32, a.tris.len() as u32, b.tree.len() as u32);
-    [0, na + ta, na, na + ta + nb]
-}
-
 impl Clocked for Chip<'_> {
     fn outputs(&self) -> ChipOut {
         let i = ChipIn::default();
@@ -495,7 +441,7 @@ impl Clocked for Chip<'_> {
         // is popped first)
         let (ch, n) = c.new_children;
         let mut order = ch[..n].to_vec();
-        if self.lifo {
+        if self.order == Order::Lifo {
             order.reverse();
         }
         self.pend.extend(order);
@@ -509,7 +455,10 @@ impl Clocked for Chip<'_> {
         // ---- host registers
         if i.host_we {
             match i.host_addr {
-                reg::MODE => (self.lifo, self.first) = (i.host_data & 1 == 1, i.host_data & 2 == 2),
+                reg::MODE => {
+                    let (order, mode) = reg::mode_fields(i.host_data);
+                    (self.order, self.first) = (order, mode == reg::Mode::First);
+                }
                 reg::ROOT => self.root = i.host_data,
                 reg::BASE_NA..=reg::BASE_TB => {
                     // registers in the order NA, NB, TA, TB = Dst order
@@ -564,7 +513,7 @@ impl Clocked for Chip<'_> {
         }
         self.q = self.queue.step(&QueueIn {
             clear: i.start && !self.run,
-            lifo: self.lifo,
+            order: self.order,
             push: push.is_some(),
             push_data: push.unwrap_or_default(),
             push2,

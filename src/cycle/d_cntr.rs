@@ -1,69 +1,24 @@
 //! D_CNTR's pair queue (DATE'05 §4.3) in the cycle model: the reference the RTL
 //! [`PairQueue`](crate::rtl::d_cntr::PairQueue) must equal on every output after every
 //! clock (on entry words), the queue of the cycle-model chip (on [`Entry`] values, so
-//! that trees of any size fit), and the packing of a queue entry into the 67-bit word the
-//! RTL stores.
+//! that trees of any size fit).
 //!
-//! An *entry* ([`Entry`]) is two node pairs, pushed and popped together; a pair is A's node,
-//! B's node (16 bits each) and the flip bit that orders its children
-//! ([`traversal::d_cntr`](crate::traversal::d_cntr)). Entry word, bit 0 first:
-//!
-//! | bits | field |
-//! |---|---|
-//! | 15:0 | `pairs[0].a` |
-//! | 31:16 | `pairs[0].b` |
-//! | 32 | `pairs[0].flip` |
-//! | 48:33 | `pairs[1].a` |
-//! | 64:49 | `pairs[1].b` |
-//! | 65 | `pairs[1].flip` |
-//! | 66 | `len - 1` (0: one pair, the root entry; 1: two pairs) |
-//!
-//! i.e. in Verilog `{len-1, p1.flip, p1.b, p1.a, p0.flip, p0.b, p0.a}`. `pairs[1]` is
-//! stored as it is also when `len` is 1, so `unpack(pack(e)) == e` for every entry.
-//! Node ids are 16 bits: trees of up to 65,536 nodes.
+//! The entry and its word are [`chip::layout`](crate::chip::layout)'s.
 
-use crate::traversal::d_cntr::{Entry, Pair};
+use crate::chip::layout::{Entry, ENTRY_MASK};
+use crate::chip::reg::Order;
 use std::collections::VecDeque;
-
-/// Bits of an entry word.
-pub const ENTRY_BITS: u32 = 67;
-/// Bits of a node id in an entry word.
-pub const NODE_BITS: u32 = 16;
-const PAIR_BITS: u32 = 2 * NODE_BITS + 1;
-const ENTRY_MASK: u128 = (1 << ENTRY_BITS) - 1;
-
-fn pack_pair(p: &Pair) -> u128 {
-    assert!(p.a < 1 << NODE_BITS && p.b < 1 << NODE_BITS, "node ids of {p:?} do not fit {NODE_BITS} bits");
-    p.a as u128 | (p.b as u128) << NODE_BITS | (p.flip as u128) << (2 * NODE_BITS)
-}
-
-fn unpack_pair(w: u128) -> Pair {
-    let m = (1u128 << NODE_BITS) - 1;
-    Pair { a: (w & m) as u32, b: (w >> NODE_BITS & m) as u32, flip: w >> (2 * NODE_BITS) & 1 == 1 }
-}
-
-/// The entry word of `e` (layout in the module doc). Panics if a node id needs more than
-/// 16 bits or `len` is not 1 or 2.
-pub fn pack(e: &Entry) -> u128 {
-    assert!(e.len == 1 || e.len == 2, "entry length {}", e.len);
-    pack_pair(&e.pairs[0]) | pack_pair(&e.pairs[1]) << PAIR_BITS | ((e.len - 1) as u128) << (2 * PAIR_BITS)
-}
-
-/// The entry of a word (bits above 66 ignored); the inverse of [`pack`].
-pub fn unpack(w: u128) -> Entry {
-    let m = (1u128 << PAIR_BITS) - 1;
-    Entry { pairs: [unpack_pair(w & m), unpack_pair(w >> PAIR_BITS & m)], len: 1 + (w >> (2 * PAIR_BITS) & 1) as u8 }
-}
 
 /// The queue's inputs in one clock cycle (the RTL's ports; `T` the entry: the RTL's
 /// 67-bit word, or an [`Entry`]).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct QueueIn<T = u128> {
-    /// Empty the queue, reset `max_count` and `overflow`, latch `lifo`; push and pop of
+    /// Empty the queue, reset `max_count` and `overflow`, latch `order`; push and pop of
     /// the same cycle are ignored.
     pub clear: bool,
-    /// The order for the query, latched by `clear`: LIFO (depth first) or FIFO.
-    pub lifo: bool,
+    /// The order for the query, latched by `clear`: LIFO (depth first) or FIFO (the RTL's
+    /// `lifo` bit).
+    pub order: Order,
     pub push: bool,
     /// The entry pushed (a word: bits above 66 ignored).
     pub push_data: T,
@@ -109,12 +64,12 @@ impl QueueEntry for Entry {
 }
 
 /// The pair queue, one rising clock edge per [`step`](Self::step). Initial state: empty,
-/// FIFO, `max_count` 0, no overflow (as after a clear with `lifo` low; the RTL's
+/// FIFO, `max_count` 0, no overflow (as after a clear in FIFO order; the RTL's
 /// registers start there too).
 #[derive(Clone, Debug)]
 pub struct QueueModel<T = u128> {
     cap: usize,
-    lifo: bool,
+    order: Order,
     q: VecDeque<T>,
     max_count: u32,
     overflow: bool,
@@ -130,7 +85,7 @@ impl<T: QueueEntry> QueueModel<T> {
     /// A queue of `cap` entries (at least 1).
     pub fn with_capacity(cap: usize) -> Self {
         assert!(cap >= 1, "a queue of no entries");
-        QueueModel { cap, lifo: false, q: VecDeque::new(), max_count: 0, overflow: false }
+        QueueModel { cap, order: Order::Fifo, q: VecDeque::new(), max_count: 0, overflow: false }
     }
 
     /// Entries it holds when full.
@@ -139,13 +94,13 @@ impl<T: QueueEntry> QueueModel<T> {
     }
 
     /// The order latched by the last clear.
-    pub fn lifo(&self) -> bool {
-        self.lifo
+    pub fn order(&self) -> Order {
+        self.order
     }
 
     /// The outputs in the current state.
     pub fn outputs(&self) -> QueueOut<T> {
-        let top = if self.lifo { self.q.back() } else { self.q.front() };
+        let top = if self.order == Order::Lifo { self.q.back() } else { self.q.front() };
         QueueOut {
             empty: self.q.is_empty(),
             full: self.q.len() == self.cap,
@@ -163,12 +118,12 @@ impl<T: QueueEntry> QueueModel<T> {
     pub fn step(&mut self, i: &QueueIn<T>) -> QueueOut<T> {
         if i.clear {
             self.q.clear();
-            self.lifo = i.lifo;
+            self.order = i.order;
             self.max_count = 0;
             self.overflow = false;
         } else {
             if i.pop {
-                if self.lifo {
+                if self.order == Order::Lifo {
                     self.q.pop_back();
                 } else {
                     self.q.pop_front();
@@ -192,28 +147,12 @@ mod tests {
     use super::*;
 
     #[test]
-    fn pack_round_trips_and_places_the_fields() {
-        let p = |a, b, flip| Pair { a, b, flip };
-        let e = Entry { pairs: [p(0x1234, 0xffff, true), p(0, 0xabcd, false)], len: 2 };
-        let w = pack(&e);
-        assert_eq!(w & 0xffff, 0x1234);
-        assert_eq!(w >> 16 & 0xffff, 0xffff);
-        assert_eq!(w >> 32 & 1, 1);
-        assert_eq!(w >> 49 & 0xffff, 0xabcd);
-        assert_eq!(w >> 66, 1);
-        assert_eq!(unpack(w), e);
-        let root = Entry { pairs: [p(0, 0, false); 2], len: 1 };
-        assert_eq!(pack(&root), 0);
-        assert_eq!(unpack(pack(&root)), root);
-        assert_eq!(unpack(ENTRY_MASK), Entry { pairs: [p(0xffff, 0xffff, true); 2], len: 2 });
-    }
-
-    #[test]
     fn model_orders_and_overflow() {
         let (push, pop) = (|d| QueueIn { push: true, push_data: d, ..Default::default() }, QueueIn { pop: true, ..Default::default() });
-        for lifo in [false, true] {
+        for order in [Order::Fifo, Order::Lifo] {
+            let lifo = order == Order::Lifo;
             let mut m = QueueModel::<u128>::new(1);
-            m.step(&QueueIn { clear: true, lifo, ..Default::default() });
+            m.step(&QueueIn { clear: true, order, ..Default::default() });
             m.step(&push(1));
             m.step(&push(2));
             let o = m.step(&push(3));
@@ -225,7 +164,7 @@ mod tests {
             m.step(&pop);
             let o = m.step(&pop);
             assert!(o.empty && o.top_data == 0 && o.overflow && o.max_count == 2);
-            let o = m.step(&QueueIn { clear: true, lifo, ..Default::default() });
+            let o = m.step(&QueueIn { clear: true, order, ..Default::default() });
             assert!(!o.overflow && o.max_count == 0);
             // two pushes in one clock, the second last in (LIFO: on top); the second
             // overflows a queue with room for one
@@ -233,7 +172,7 @@ mod tests {
             let o = m.step(&QueueIn { push2: Some(7), ..push(6) });
             assert!(o.full && o.overflow && o.count == 2);
             assert_eq!(o.top_data, if lifo { 6 } else { 5 });
-            m.step(&QueueIn { clear: true, lifo, ..Default::default() });
+            m.step(&QueueIn { clear: true, order, ..Default::default() });
             let o = m.step(&QueueIn { push2: Some(7), ..push(6) });
             assert_eq!((o.count, o.top_data), (2, if lifo { 7 } else { 6 }));
         }

@@ -3,14 +3,13 @@
 //! [`Delay`](crate::rtl::delay::Delay) and every pipelined unit, whose output is taken in
 //! the cycle it shows) and of rust-hdl's synchronous FIFO (`declare_sync_fifo!`: the write
 //! pointer reaches the read side through one more register, so an entry written at edge
-//! `w` is at the head from cycle `w + 2`, [`FIFO_WRITE_TO_HEAD`], and stays until read).
+//! `w` is at the head from cycle `w + 2`, [`FIFO_WRITE_TO_HEAD`](crate::chip::rtl::FIFO_WRITE_TO_HEAD), and stays until read).
 //! Only the occupied stages are stored, so an idle pipeline costs nothing per clock (a
 //! self-stalling pipe in the manner of gem5's minor CPU buffers).
 
 use std::collections::VecDeque;
 
 /// Clocks from a write into the RTL's synchronous FIFO to the entry at its head.
-pub const FIFO_WRITE_TO_HEAD: u32 = 2;
 
 #[derive(Clone, Debug)]
 pub struct Delay<T> {
@@ -89,7 +88,7 @@ mod tests {
 
     #[test]
     fn a_fifo_entry_shows_two_cycles_after_its_write() {
-        let mut f = Delay::with_capacity(FIFO_WRITE_TO_HEAD, 2);
+        let mut f = Delay::with_capacity(crate::chip::rtl::FIFO_WRITE_TO_HEAD, 2);
         f.push(5, 1);
         f.push(6, 2);
         assert!(!f.has_room());

@@ -6,9 +6,9 @@
 
 use super::delay::Delay;
 use crate::dop::Node;
-use crate::golden::doptrf::TransformCache;
-use crate::memory::ObjectImage;
-use crate::traversal::d_cntr::Pair;
+use crate::golden::dop_unit::TransformCache;
+use crate::golden::memory::ObjectImage;
+use crate::chip::layout::Pair;
 
 /// A DOP test at the unit's output: its pair, both nodes and the verdict.
 #[derive(Clone, Copy, Debug)]

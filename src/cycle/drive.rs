@@ -3,9 +3,12 @@
 //! results, the query trace the Verilog testbench prints in the same format, two levels
 //! in lockstep, and the traversal VCD.
 
-use super::memory::{MemCounters, MemModel, Memory};
-use super::{probe_valid, ChipIn, Clocked, PROBES};
-use crate::traversal::{Mode, QueryResult};
+use super::memory::{MemCounters, MemModel};
+use crate::chip::memory::Memory;
+use crate::chip::ports::{ChipIn, ChipOut, Clocked};
+use crate::chip::probes::{probe_valid, PROBES};
+use crate::chip::reg::Mode;
+use crate::traversal::QueryResult;
 use std::fmt::Write as _;
 
 /// How the host reads results: `res_ready` is high in the cycles `c` with
@@ -230,7 +233,7 @@ impl<A: Clocked, B: Clocked> Lockstep<A, B> {
 }
 
 impl<A: Clocked, B: Clocked> Clocked for Lockstep<A, B> {
-    fn outputs(&self) -> super::ChipOut {
+    fn outputs(&self) -> ChipOut {
         self.a.outputs()
     }
 

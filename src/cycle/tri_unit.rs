@@ -3,11 +3,12 @@
 //! output in cycle `t + tri_latency` (the RTL: T.CHECK's pipeline, then the FIFO's write
 //! and read registers) and waits there until it is given out. `in_ready` is low while
 //! `fifo` pairs are taken and not yet given out, so the FIFO never overflows. Verdicts come
-//! from the golden TRI_UNIT ([`golden::tcheck::TriUnit`](crate::golden::tcheck::TriUnit)).
+//! from the golden TRI_UNIT ([`golden::tcheck::TriUnit`](crate::golden::tri_unit::TriUnit)).
 
 use super::delay::Delay;
-use crate::golden::tcheck::{TriResult, TriUnit as Values};
-use crate::memory::ObjectImage;
+use crate::golden::tri_unit::TriUnit as Values;
+use crate::golden::tri_unit::TriResult;
+use crate::golden::memory::ObjectImage;
 
 /// A verdict at TRI_UNIT's output: the triangle pair (A's, B's) and the result.
 #[derive(Clone, Copy, Debug)]

@@ -9,7 +9,7 @@ use nalgebra::{Matrix3, Vector3};
 use std::sync::OnceLock;
 
 /// The k values the chip supports.
-pub const SUPPORTED_K: [usize; 5] = [6, 14, 18, 24, 26];
+pub use crate::chip::config::SUPPORTED_K;
 
 const AXES: [[i8; 3]; 3] = [[1, 0, 0], [0, 1, 0], [0, 0, 1]];
 const CORNERS4: [[i8; 3]; 4] = [[1, 1, 1], [1, -1, 1], [1, 1, -1], [1, -1, -1]];

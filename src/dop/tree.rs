@@ -4,7 +4,7 @@
 //! the `nearest-even` mode).
 
 use super::normals::DopNormals;
-use crate::config::{ChipConfig, DopRounding};
+use crate::chip::config::{ChipConfig, DopRounding};
 use crate::format::Rounding;
 use nalgebra::Point3;
 

@@ -1,4 +1,4 @@
-//! T.CHECK (DATE'05 §4.2, Eqs. 8, 9, 11-13) and TRI_UNIT (two T.CHECKs), certified: each
+//! T.CHECK (DATE'05 §4.2, Eqs. 8, 9, 11-13; TRI_UNIT, two of them, is [`tri_unit`](super::tri_unit)), certified: each
 //! sign the test depends on is decided only when it lies outside an error bound that the
 //! chip computes *beside* the value, not behind it. Beside every value x the chip runs the
 //! same expression on the absolute values of the operands, rounded upward: a magnitude
@@ -34,74 +34,12 @@
 //! other, so TRI_UNIT runs A's edges against U(B) and B's edges against U(A). A degenerate
 //! triangle has no M_B: that direction is unknown.
 
-use crate::dop::host::{Affine, HostSetup};
-use crate::format::{Format, Rounding, ScaleConst};
-use crate::memory::TriWord;
+use super::certificate::Certificate;
+use super::host::Affine;
+use crate::format::{Format, Rounding};
+use super::memory::TriWord;
 
 const UP: Rounding = Rounding::TowardPositive;
-
-/// The constants of T.CHECK's certificate for a value format and rounding
-/// (docs/ACCURACY.md, "T.CHECK's certificate"). `g_v` is the mapped vertices' error
-/// factor (f64, exact to 2^-50); `c_*` are the constants the chip multiplies magnitudes
-/// by, each the smallest [`ScaleConst`] at least its target (times 1 + 2^-40), indexed
-/// like `g_v` by whether the vertices are exact.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Certificate {
-    pub f: Format,
-    /// Unit roundoff of the value datapath: 2^-(F+1) to nearest, 2^-F directed.
-    pub u: f64,
-    /// The host's rounding of the words it writes (M_B, the frame maps, the vertices; to
-    /// nearest): relative error `u1` of a normal result, absolute `eta_s` (half the smallest
-    /// subnormal) below 2^emin.
-    pub u1: f64,
-    pub eta_s: f64,
-    /// Mapped vertex coordinates: |V - V*| <= g_v M_V, for vertices the host rounded ([0])
-    /// or exact ones ([1]).
-    pub g_v: [f64; 2],
-    /// E = c_e M >= g_v M: a mapped coordinate's bound (z's).
-    pub c_e: [ScaleConst; 2],
-    /// E' = c_z M >= g_v M + u (1 + u) |z| for z (r_z's rounding).
-    pub c_z: [ScaleConst; 2],
-    /// c_s >= 2u + u^2: the rounding of a product and the difference after it, per unit
-    /// of the operands' magnitudes (in G = E_z + c_s |z|, which carries a's and b's), and of
-    /// s's two additions per unit of |a| + |b| + |r_z|.
-    pub c_s: ScaleConst,
-    /// F1: a power of two that every mapped vertex's magnitude is at least (the host's
-    /// alpha_m is floored so): (g_v F1)^2 >= the largest underflow error of a product.
-    pub floor: f64,
-}
-
-impl Certificate {
-    pub fn new(f: Format, r: Rounding) -> Certificate {
-        let half = 2f64.powi(-(f.frac_bits() as i32) - 1);
-        let nearest = r == Rounding::NearestEven;
-        let u = if nearest { half } else { 2.0 * half };
-        let u1 = half / (1.0 - half);
-        // A product's absolute error below 2^emin: half the smallest subnormal to nearest.
-        let eta = f.min_positive_subnormal() * if nearest { 0.5 } else { 1.0 };
-        let g_v = [u1, 0.0].map(|gx| 6.0 * u + ((1.0 + u1) * (1.0 + u1) * (1.0 + gx) - 1.0));
-        let floor = 2f64.powi((eta.sqrt() / g_v[1]).log2().ceil() as i32);
-        let c = |x: f64| f.scale_const_at_least(x * (1.0 + 2f64.powi(-40)));
-        let (c2, c1) = (2.0 * u + u * u, u + u * u);
-        Certificate {
-            f,
-            u,
-            u1,
-            eta_s: f.min_positive_subnormal() / 2.0,
-            g_v,
-            c_e: g_v.map(c),
-            c_z: g_v.map(|g| c(g + c1)),
-            c_s: c(c2),
-            floor,
-        }
-    }
-
-    /// A word of the certificate from its f64 value x (computed to within 2^-50 of the
-    /// quantity it stands for): x (1 + 2^-40) rounded up in the format.
-    pub fn word_up(&self, x: f64) -> f64 {
-        self.f.round(x * (1.0 + 2f64.powi(-40)), UP)
-    }
-}
 
 /// `(a0 b0 + a1 b1) + a2 b2`, or `(a0 b0 + a1 b1) + (a2 b2 + c)` with a translation term,
 /// every operation rounded with `r`: the one dot product of stages 1 and 2.
@@ -197,7 +135,7 @@ impl Trace {
     }
 }
 
-fn or3(it: impl Iterator<Item = Option<bool>>) -> Option<bool> {
+pub(super) fn or3(it: impl Iterator<Item = Option<bool>>) -> Option<bool> {
     let mut acc = Some(false);
     for x in it {
         acc = match (acc, x) {
@@ -222,7 +160,7 @@ pub fn edges(f: Format, r: Rounding, cert: &Certificate, s1: &Stage1, tri: &TriW
 /// `complete = false` skips an edge whose ends are surely on one side of the plane (both
 /// conjunctions are surely false, whatever the other signs: the chip's verdict is the same)
 /// and leaves its trace entries at 0.
-fn edges_in(f: Format, r: Rounding, cert: &Certificate, s1: &Stage1, tri: &TriWord, complete: bool) -> Trace {
+pub(super) fn edges_in(f: Format, r: Rounding, cert: &Certificate, s1: &Stage1, tri: &TriWord, complete: bool) -> Trace {
     let x = tri.v_exact as usize;
     let (mb, mag) = (&s1.mb, &s1.mag);
     let add = |x: f64, y: f64| f.add(x, y, UP);
@@ -296,90 +234,4 @@ fn edges_in(f: Format, r: Rounding, cert: &Certificate, s1: &Stage1, tri: &TriWo
         t.crossing[e] = or3([holds(up), holds(down)].into_iter());
     }
     t
-}
-
-/// Intersecting (surely), separate (surely), or uncertain.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
-pub struct TriResult {
-    pub hit: bool,
-    pub uncertain: bool,
-}
-
-impl TriResult {
-    fn of(dir1: Option<bool>, dir2: Option<bool>) -> TriResult {
-        match or3([dir1, dir2].into_iter()) {
-            Some(hit) => TriResult { hit, uncertain: false },
-            None => TriResult { hit: false, uncertain: true },
-        }
-    }
-}
-
-/// TRI_UNIT: A's edges against U(B), then B's edges against U(A); a degenerate leaf
-/// leaves its direction unknown.
-pub fn tri_unit(f: Format, r: Rounding, a: &TriWord, b: &TriWord, setup: &HostSetup) -> TriResult {
-    let cert = Certificate::new(f, r);
-    let direction = |leaf: &TriWord, tri: &TriWord, ab: bool| {
-        let (frame, beta, scale) = setup.tri_frame(ab);
-        (!leaf.degenerate).then(|| edges(f, r, &cert, &stage1(f, r, leaf, frame, beta, scale), tri).result())
-    };
-    let (d1, d2) = (direction(b, a, true), direction(a, b, false));
-    TriResult::of(d1.flatten(), d2.flatten())
-}
-
-/// TRI_UNIT during one query: the same results as [`tri_unit`] bit for bit (tested),
-/// faster: stage 1 depends on one leaf and the pose only and is kept per leaf, and an edge
-/// whose ends are surely on one side is not computed further.
-pub struct TriUnit<'a> {
-    f: Format,
-    r: Rounding,
-    cert: Certificate,
-    setup: &'a HostSetup,
-    /// Per triangle of B: M_B(b) . M_AB; per triangle of A: M_A(a) . M_BA.
-    mb_b: StageOneCache,
-    mb_a: StageOneCache,
-}
-
-struct StageOneCache {
-    slot: Vec<u32>,
-    values: Vec<Stage1>,
-}
-
-impl StageOneCache {
-    fn get(&mut self, t: u32, compute: impl FnOnce() -> Stage1) -> &Stage1 {
-        let mut s = self.slot[t as usize];
-        if s == u32::MAX {
-            s = self.values.len() as u32;
-            self.slot[t as usize] = s;
-            self.values.push(compute());
-        }
-        &self.values[s as usize]
-    }
-}
-
-impl<'a> TriUnit<'a> {
-    pub fn new(f: Format, r: Rounding, setup: &'a HostSetup, tris_a: usize, tris_b: usize) -> Self {
-        let cache = |n| StageOneCache { slot: vec![u32::MAX; n], values: vec![] };
-        TriUnit { f, r, cert: Certificate::new(f, r), setup, mb_b: cache(tris_b), mb_a: cache(tris_a) }
-    }
-
-    /// Triangle `ta` of A (word `a`) against `tb` of B (word `b`). A sure hit in the first
-    /// direction decides without the second (the result is the same).
-    pub fn test(&mut self, ta: u32, a: &TriWord, tb: u32, b: &TriWord) -> TriResult {
-        let d1 = if b.degenerate { None } else { self.direction(tb, b, a, true) };
-        if d1 == Some(true) {
-            return TriResult { hit: true, uncertain: false };
-        }
-        let d2 = if a.degenerate { None } else { self.direction(ta, a, b, false) };
-        TriResult::of(d1, d2)
-    }
-
-    /// One T.CHECK: the edges of `v` against the unit triangle of `leaf` (triangle `t` of B
-    /// when `ab`, else of A).
-    fn direction(&mut self, t: u32, leaf: &TriWord, v: &TriWord, ab: bool) -> Option<bool> {
-        let (f, r, setup) = (self.f, self.r, self.setup);
-        let (frame, beta, scale) = setup.tri_frame(ab);
-        let cache = if ab { &mut self.mb_b } else { &mut self.mb_a };
-        let s1 = cache.get(t, || stage1(f, r, leaf, frame, beta, scale));
-        edges_in(f, r, &self.cert, s1, v, false).result()
-    }
 }

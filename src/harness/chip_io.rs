@@ -5,108 +5,65 @@
 //! whole query, and the query trace that the Verilog testbench (`scripts/verilog/chip_tb.v`)
 //! prints in the same format, so that the two simulations are compared line by line.
 //!
-//! Three chips are built ([`ChipKind`]), all with DOP lanes rounding outward, T.CHECK to
-//! nearest-even and a 128-line triangle cache: k = 6 in e8m15 ([`CHIP_CONFIG`], small and
-//! fast to simulate), the papers' k = 24 in binary32 ([`PAPERS_CONFIG`], DATE'05 §4), and
-//! the same with its DOP unit in e8m15 ([`REDUCED_DOP_CONFIG`]).
+//! The chips are the rows of [`rtl_chips!`](crate::rtl_chips) ([`ChipKind`]): from that one
+//! table come the port adapters ([`RtlPorts`]) and the dispatcher over their rust-hdl types
+//! ([`with_chip`]).
 
 use super::tri_io::{tri_unit_setup_words, LeafIn};
-pub use crate::cycle::drive::{ChipError, ChipTrace, Drive, Reader};
+use crate::chip::config::ChipConfig;
+use crate::chip::layout::image_bases;
+use crate::chip::memory::{MemTiming, Memory};
+use crate::chip::params::Params;
+use crate::chip::ports::{ChipIn, ChipOut, Clocked};
+use crate::chip::reg::{self, Mode, Order};
+use crate::chip::rtl::{self as chips, ChipKind, QUEUE_BITS};
 use crate::cycle::drive::open_vcd;
-use crate::cycle::{ChipIn, ChipOut, Clocked};
-pub use crate::cycle::MemTiming;
-use crate::config::{ChipConfig, DopRounding, Formats};
-use crate::dop::{HostSetup, Node};
-use crate::format::{Format, Rounding};
-use crate::memory::ObjectImage;
-use crate::traversal::{Mode, QueryResult};
+pub use crate::cycle::drive::{ChipError, ChipTrace, Drive, Reader};
+use crate::dop::Node;
+use crate::format::Format;
+use crate::golden::host::HostSetup;
+use crate::golden::memory::ObjectImage;
+use crate::traversal::{QueryResult, Traversal};
 use rust_hdl::prelude::*;
 use std::fmt::Write as _;
 
-/// The configuration of the small RTL chip, `rtl/chip_e8m15_k6.v`.
-pub const CHIP_CONFIG: ChipConfig =
-    ChipConfig { k: 6, format: Formats { dop: Format::REDUCED, tri: Format::REDUCED }, dop_rounding: DopRounding::Outward, tri_rounding: Rounding::NearestEven, tri_cache: 1 };
-/// The configuration of the papers' RTL chip, `rtl/chip_b32_k24.v`.
-pub const PAPERS_CONFIG: ChipConfig =
-    ChipConfig { k: 24, format: Formats { dop: Format::BINARY32, tri: Format::BINARY32 }, dop_rounding: DopRounding::Outward, tri_rounding: Rounding::NearestEven, tri_cache: 1 };
-/// The papers' chip with its DOP datapath in e8m15 (format `e8m15/binary32`),
-/// `rtl/chip_e8m15_b32_k24.v`.
-pub const REDUCED_DOP_CONFIG: ChipConfig = ChipConfig { format: Formats { dop: Format::REDUCED, tri: Format::BINARY32 }, ..PAPERS_CONFIG };
-
-/// The RTL chips: one `CollisionChip` per configuration, exported to `rtl/<name>.v`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum ChipKind {
-    /// k = 6, e8m15: [`CHIP_CONFIG`].
-    K6E8m15,
-    /// k = 24, binary32: [`PAPERS_CONFIG`].
-    K24B32,
-    /// k = 24, e8m15 DOP unit and binary32 TRI_UNIT: [`REDUCED_DOP_CONFIG`].
-    K24E8m15B32,
+/// What to do with an RTL chip, whichever its rust-hdl type ([`with_chip`]).
+pub trait OnChip {
+    type Out;
+    fn run<C: RtlPorts>(self, chip: C) -> Self::Out;
 }
 
-impl ChipKind {
-    pub const ALL: [ChipKind; 3] = [ChipKind::K6E8m15, ChipKind::K24B32, ChipKind::K24E8m15B32];
-
-    pub fn config(self) -> ChipConfig {
-        match self {
-            ChipKind::K6E8m15 => CHIP_CONFIG,
-            ChipKind::K24B32 => PAPERS_CONFIG,
-            ChipKind::K24E8m15B32 => REDUCED_DOP_CONFIG,
+macro_rules! dispatch {
+    ($($(#[$doc:meta])* $kind:ident, $name:literal, $module:ident, $cfg:tt, $speed:literal;)+) => {
+        /// Builds `kind`'s rust-hdl chip with `2^N` queue entries (`NP1 = N + 1`, `NM1 = N -
+        /// 1`), ready to simulate, and hands it to `f` (call on a thread with a big stack:
+        /// TRI_UNIT and the k = 24 DOP unit are large).
+        pub fn with_chip<const N: usize, const NP1: usize, const NM1: usize, F: OnChip>(kind: ChipKind, f: F) -> F::Out {
+            let c = kind.config();
+            match kind {
+                $(ChipKind::$kind => f.run(crate::rtl::$module::chip_top::<N, NP1, NM1>(c.dop_rounding.op(), c.tri_rounding)),)+
+            }
         }
-    }
-
-    /// The chip built for `cfg`, if any (its triangle cache aside: every chip has
-    /// [`TRI_CACHE_LINES`](crate::rtl::TRI_CACHE_LINES) lines, host register 0x127 picks
-    /// how many are used).
-    pub fn of(cfg: &ChipConfig) -> Option<ChipKind> {
-        ChipKind::ALL.into_iter().find(|k| k.config() == ChipConfig { tri_cache: 1, ..*cfg })
-    }
-
-    /// The exported Verilog's file name in rtl/, without `.v`.
-    pub fn name(self) -> &'static str {
-        match self {
-            ChipKind::K6E8m15 => "chip_e8m15_k6",
-            ChipKind::K24B32 => "chip_b32_k24",
-            ChipKind::K24E8m15B32 => "chip_e8m15_b32_k24",
-        }
-    }
-
-    /// Memory word bits (the wider of a node word and a triangle word).
-    pub fn word_bits(self) -> usize {
-        crate::memory::Layout::new(&self.config()).word_bits() as usize
-    }
-
-    /// rust-hdl simulates the chip at about this many clocks per second on this project's
-    /// machine (README, `cargo bench --bench chip_sim`): for estimates before a run.
-    pub fn rtl_clocks_per_second(self) -> f64 {
-        match self {
-            ChipKind::K6E8m15 => 14.0,
-            ChipKind::K24B32 | ChipKind::K24E8m15B32 => 4.0,
-        }
-    }
-
-    /// The chip's Verilog (top module `top`), identical modules merged.
-    pub fn verilog(self) -> String {
-        std::thread::Builder::new()
-            .stack_size(1 << 30)
-            .spawn(move || {
-                super::verilog::dedup_modules(&match self {
-                    ChipKind::K6E8m15 => generate_verilog(&exported_chip()),
-                    ChipKind::K24B32 => generate_verilog(&papers_chip()),
-                    ChipKind::K24E8m15B32 => generate_verilog(&reduced_dop_chip()),
-                })
-            })
-            .expect("spawn")
-            .join()
-            .expect("chip Verilog")
-    }
+        $(rtl_ports!($module, ChipKind::$kind);)+
+    };
 }
 
-/// The host registers' addresses (see [`CollisionChip`]).
-pub mod reg {
-    pub use crate::cycle::chip::reg::*;
-    /// TRI_UNIT's setup words (the DOP unit's are at 0).
-    pub const TRI_SETUP: u32 = 0x100;
+/// The chip's Verilog (top module `top`) with the exported queue of `2^QUEUE_BITS`
+/// entries, identical modules merged.
+pub fn verilog(kind: ChipKind) -> String {
+    struct Gen;
+    impl OnChip for Gen {
+        type Out = String;
+        fn run<C: RtlPorts>(self, chip: C) -> String {
+            super::verilog::dedup_modules(&generate_verilog(&chip))
+        }
+    }
+    big_stack(move || with_chip::<QUEUE_BITS, { QUEUE_BITS + 1 }, { QUEUE_BITS - 1 }, _>(kind, Gen))
+}
+
+/// Runs `f` on a thread with the 1 GiB stack the RTL chips need to be built.
+pub fn big_stack<T: Send + 'static>(f: impl FnOnce() -> T + Send + 'static) -> T {
+    std::thread::Builder::new().stack_size(1 << 30).spawn(f).expect("spawn").join().expect("the RTL thread")
 }
 
 /// The DOP unit's setup words `(load_addr, load_data)`: lane i's C_i0..2, c_i, and the
@@ -172,10 +129,10 @@ pub struct QueryImage {
 
 impl QueryImage {
     /// The memory port's register is written from `p`, the triangle cache's from `tri_cache`
-    /// ([`crate::cycle::chip::control_writes`]).
+    /// ([`reg::control_writes`]).
     /// Errors if a tree has more nodes than the 16-bit node ids of D_CNTR address, or the
     /// image more words than the 24-bit memory address.
-    pub fn new(kind: ChipKind, a: &ObjectImage, b: &ObjectImage, setup: &HostSetup, lifo: bool, mode: Mode, p: &crate::cycle::Params, tri_cache: u32) -> Result<Self, String> {
+    pub fn new(kind: ChipKind, a: &ObjectImage, b: &ObjectImage, setup: &HostSetup, order: Order, mode: Mode, p: &Params, tri_cache: u32) -> Result<Self, String> {
         let f = kind.config().format;
         for (name, o) in [("A", a), ("B", b)] {
             if o.tree.len() > 1 << 16 {
@@ -195,7 +152,8 @@ impl QueryImage {
         }
         let mut writes: Vec<(u32, u32)> = dop_unit_setup_words(f.dop, setup).into_iter().map(|(a, d)| (a as u32, d as u32)).collect();
         writes.extend(tri_unit_setup_words(f.tri, setup).into_iter().map(|(a, d)| (reg::TRI_SETUP + a as u32, d as u32)));
-        writes.extend(crate::cycle::chip::control_writes(a, b, lifo, mode, p, tri_cache));
+        let bases = image_bases(a.tree.len() as u32, a.tris.len() as u32, b.tree.len() as u32);
+        writes.extend(reg::control_writes(bases, order, mode, p, tri_cache));
         Ok(QueryImage { kind, memory, writes })
     }
 
@@ -240,7 +198,7 @@ pub trait RtlPorts: Block {
     /// The inputs of one clock; the memory response's data if one is valid.
     fn set_inputs(&mut self, i: &ChipIn, resp: Option<&Self::Word>);
     fn set_clock(&mut self, high: bool);
-    /// [`crate::cycle::PROBES`] as the logic shows them now.
+    /// [`crate::chip::probes::PROBES`] as the logic shows them now.
     fn probes(&self) -> Vec<u64>;
 }
 
@@ -296,9 +254,7 @@ macro_rules! rtl_ports {
         }
     };
 }
-rtl_ports!(e8m15, ChipKind::K6E8m15);
-rtl_ports!(b32, ChipKind::K24B32);
-rtl_ports!(e8m15_b32, ChipKind::K24E8m15B32);
+crate::rtl_chips!(dispatch);
 
 /// The rust-hdl chip as a [`Clocked`] level: the memory image's words answer its memory
 /// requests; half a clock low (inputs applied, logic settled: what `probe` shows), then the
@@ -344,7 +300,7 @@ impl<C: RtlPorts> Clocked for RtlChip<'_, C> {
 
 /// How a query of `image` is driven: every result read at once unless `reader` says
 /// otherwise.
-pub fn drive(image: &QueryImage, memory: crate::cycle::Memory, reader: Reader, max_cycles: u64) -> Drive {
+pub fn drive(image: &QueryImage, memory: Memory, reader: Reader, max_cycles: u64) -> Drive {
     Drive { memory, word_bits: image.kind.word_bits() as u32, reader, words: image.memory.len() as u32, max_cycles }
 }
 
@@ -370,7 +326,7 @@ pub struct ChipQuery {
     pub pose: crate::pose::Pose,
     /// The chip that runs it.
     pub chip: ChipKind,
-    pub lifo: bool,
+    pub order: Order,
     pub mode: Mode,
     pub timing: MemTiming,
     /// How the host reads results.
@@ -412,14 +368,14 @@ pub struct PreparedQuery {
 
 impl ChipQuery {
     /// The cycle model's parameters of this query: the RTL chip's, with its memory and port.
-    pub fn params(&self) -> crate::cycle::Params {
-        crate::cycle::Params {
+    pub fn params(&self) -> crate::chip::params::Params {
+        crate::chip::params::Params {
             memory: self.timing.into(),
             prefetch: self.prefetch,
             outstanding: self.outstanding,
             issue_spacing: self.issue_spacing,
             credit: self.credit,
-            ..crate::cycle::Params::RTL
+            ..crate::chip::params::Params::RTL
         }
     }
 
@@ -427,38 +383,9 @@ impl ChipQuery {
         let cfg = ChipConfig { tri_cache: self.tri_cache, ..self.chip.config() };
         let chip = crate::query::Chip::new(&query_mesh(self.a)?, &query_mesh(self.b)?, cfg)?;
         let golden_all = chip.query(&self.pose, Mode::All, crate::traversal::Traversal::Fifo);
-        let image = QueryImage::new(self.chip, &chip.a, &chip.b, &chip.setup(&self.pose), self.lifo, self.mode, &self.params(), self.tri_cache)?;
+        let image = QueryImage::new(self.chip, &chip.a, &chip.b, &chip.setup(&self.pose), self.order, self.mode, &self.params(), self.tri_cache)?;
         Ok(PreparedQuery { chip, golden_all, image })
     }
-}
-
-/// The exported chip's queue: `2^QUEUE_BITS` entries (1,024: a breadth-first (FIFO)
-/// traversal of a few hundred triangles needs about that many; LIFO a few dozen).
-pub const QUEUE_BITS: usize = 10;
-/// The exported small chip (k = 6, e8m15), the one most RTL runs use.
-pub type ExportedChip = crate::rtl::e8m15::CollisionChip<QUEUE_BITS, { QUEUE_BITS + 1 }, { QUEUE_BITS - 1 }>;
-/// The exported papers' chip (k = 24, binary32).
-pub type PapersChip = crate::rtl::b32::CollisionChip<QUEUE_BITS, { QUEUE_BITS + 1 }, { QUEUE_BITS - 1 }>;
-
-/// The exported papers' chip with an e8m15 DOP unit.
-pub type ReducedDopChip = crate::rtl::e8m15_b32::CollisionChip<QUEUE_BITS, { QUEUE_BITS + 1 }, { QUEUE_BITS - 1 }>;
-
-/// The exported small chip, ready to simulate (inputs claimed; build it on a thread with a
-/// big stack: TRI_UNIT is large).
-pub fn exported_chip() -> ExportedChip {
-    crate::rtl::e8m15::chip_top(CHIP_CONFIG.dop_rounding.op(), CHIP_CONFIG.tri_rounding)
-}
-
-/// The exported papers' chip, ready to simulate (on a thread with a big stack: its DOP
-/// unit alone is about 2 MB).
-pub fn papers_chip() -> PapersChip {
-    crate::rtl::b32::chip_top(PAPERS_CONFIG.dop_rounding.op(), PAPERS_CONFIG.tri_rounding)
-}
-
-/// The exported papers' chip with an e8m15 DOP unit, ready to simulate (on a thread with a
-/// big stack).
-pub fn reduced_dop_chip() -> ReducedDopChip {
-    crate::rtl::e8m15_b32::chip_top(REDUCED_DOP_CONFIG.dop_rounding.op(), REDUCED_DOP_CONFIG.tri_rounding)
 }
 
 /// The RTL query set. Small (rust-hdl in lockstep with the cycle model, in `cargo test`):
@@ -470,76 +397,77 @@ pub fn reduced_dop_chip() -> ReducedDopChip {
 /// stall the traversal, sure hits mixed with uncertain pairs.
 pub fn queries() -> Vec<ChipQuery> {
     use crate::pose::Pose;
+    use Order::{Fifo, Lifo};
     let spheres = Pose::new(10.0, 20.0, 30.0, 0.8, 0.1, 0.0);
     let patch = Pose::new(0.0, 0.0, 0.0, 0.002, 0.001, 0.0);
-    let q = |name, a, pose, lifo, mode, latency, interval| ChipQuery {
+    let q = |name, a, pose, order, mode, latency, interval| ChipQuery {
         name,
         a,
         b: a,
         pose,
         chip: ChipKind::K6E8m15,
-        lifo,
+        order,
         mode,
         timing: MemTiming { latency, interval, bus_bits: None },
         reader: Reader::default(),
         prefetch: 0,
         outstanding: 1,
         issue_spacing: 2,
-        credit: crate::rtl::CREDIT as u32,
+        credit: chips::CREDIT as u32,
         tri_cache: 1,
         large: false,
     };
-    let big = |name, a, pose, lifo, mode, latency, interval, period| ChipQuery {
+    let big = |name, a, pose, order, mode, latency, interval, period| ChipQuery {
         reader: Reader { period },
         large: true,
-        ..q(name, a, pose, lifo, mode, latency, interval)
+        ..q(name, a, pose, order, mode, latency, interval)
     };
     let big_spheres = Pose::new(10.0, 20.0, 30.0, 0.9, 0.1, 0.05);
     vec![
-        q("sphere_fifo_all", "sphere:12", spheres, false, Mode::All, 1, 1),
-        q("sphere_lifo_all", "sphere:12", spheres, true, Mode::All, 3, 2),
-        q("sphere_fifo_first", "sphere:12", spheres, false, Mode::First, 2, 1),
-        q("sphere_lifo_first", "sphere:12", spheres, true, Mode::First, 1, 1),
-        q("bunny_lifo_all", "bunny-patch:12", patch, true, Mode::All, 1, 1),
-        q("bunny_fifo_first", "bunny-patch:12", patch, false, Mode::First, 1, 1),
-        q("apart_lifo_first", "sphere:12", Pose::new(10.0, 20.0, 30.0, 3.0, 0.1, 0.0), true, Mode::First, 1, 1),
+        q("sphere_fifo_all", "sphere:12", spheres, Fifo, Mode::All, 1, 1),
+        q("sphere_lifo_all", "sphere:12", spheres, Lifo, Mode::All, 3, 2),
+        q("sphere_fifo_first", "sphere:12", spheres, Fifo, Mode::First, 2, 1),
+        q("sphere_lifo_first", "sphere:12", spheres, Lifo, Mode::First, 1, 1),
+        q("bunny_lifo_all", "bunny-patch:12", patch, Lifo, Mode::All, 1, 1),
+        q("bunny_fifo_first", "bunny-patch:12", patch, Fifo, Mode::First, 1, 1),
+        q("apart_lifo_first", "sphere:12", Pose::new(10.0, 20.0, 30.0, 3.0, 0.1, 0.0), Lifo, Mode::First, 1, 1),
         // sure hits and uncertain pairs; the FIFO holds about 1,000 entries at its widest
-        big("big_sphere_fifo_all", "sphere:200", big_spheres, false, Mode::All, 1, 1, 1),
-        big("big_sphere_lifo_all", "sphere:320", big_spheres, true, Mode::All, 4, 2, 1),
+        big("big_sphere_fifo_all", "sphere:200", big_spheres, Fifo, Mode::All, 1, 1, 1),
+        big("big_sphere_lifo_all", "sphere:320", big_spheres, Lifo, Mode::All, 4, 2, 1),
         // the host reads one result in 40 clocks: TRI_UNIT's FIFO fills and the credit
         // stalls the DOP unit
-        big("big_patch_lifo_all_slow_host", "bunny-patch:300", patch, true, Mode::All, 2, 1, 40),
+        big("big_patch_lifo_all_slow_host", "bunny-patch:300", patch, Lifo, Mode::All, 2, 1, 40),
         // in e8m15 the first sure hit comes after 180 uncertain results (a long first-hit query)
-        big("big_patch_fifo_first", "bunny-patch:120", patch, false, Mode::First, 3, 1, 1),
-        big("big_patch_lifo_first", "bunny-patch:300", patch, true, Mode::First, 1, 1, 1),
+        big("big_patch_fifo_first", "bunny-patch:120", patch, Fifo, Mode::First, 3, 1, 1),
+        big("big_patch_lifo_first", "bunny-patch:300", patch, Lifo, Mode::First, 1, 1, 1),
         // the prefetching memory port (register 0x126): node words asked for pairs ahead,
         // several requests outstanding, at a memory latency of 8; an issue every clock
         // (both child entries pushed in one) with a credit of 24 to 48 but in the last
-        ChipQuery { prefetch: 6, outstanding: 8, issue_spacing: 1, credit: 32, ..q("sphere_lifo_prefetch", "sphere:12", spheres, true, Mode::All, 8, 1) },
-        ChipQuery { prefetch: 3, outstanding: 4, issue_spacing: 1, credit: 24, ..q("bunny_fifo_prefetch", "bunny-patch:12", patch, false, Mode::First, 8, 1) },
-        ChipQuery { prefetch: 14, outstanding: 16, issue_spacing: 1, credit: 48, ..big("big_sphere_lifo_prefetch", "sphere:320", big_spheres, true, Mode::All, 8, 1, 1) },
-        ChipQuery { prefetch: 14, outstanding: 16, ..big("big_sphere_fifo_prefetch", "sphere:200", big_spheres, false, Mode::All, 8, 1, 1) },
+        ChipQuery { prefetch: 6, outstanding: 8, issue_spacing: 1, credit: 32, ..q("sphere_lifo_prefetch", "sphere:12", spheres, Lifo, Mode::All, 8, 1) },
+        ChipQuery { prefetch: 3, outstanding: 4, issue_spacing: 1, credit: 24, ..q("bunny_fifo_prefetch", "bunny-patch:12", patch, Fifo, Mode::First, 8, 1) },
+        ChipQuery { prefetch: 14, outstanding: 16, issue_spacing: 1, credit: 48, ..big("big_sphere_lifo_prefetch", "sphere:320", big_spheres, Lifo, Mode::All, 8, 1, 1) },
+        ChipQuery { prefetch: 14, outstanding: 16, ..big("big_sphere_fifo_prefetch", "sphere:200", big_spheres, Fifo, Mode::All, 8, 1, 1) },
         // A's triangle cache (register 0x127): 4 lines, so that lines are shared and
         // replaced, at full speed (rust-hdl); 128 lines (WSCG'03) on a bunny patch
-        ChipQuery { prefetch: 6, outstanding: 8, issue_spacing: 1, credit: 32, tri_cache: 4, ..q("sphere_fifo_cache", "sphere:12", spheres, false, Mode::All, 8, 1) },
-        ChipQuery { prefetch: 14, outstanding: 16, issue_spacing: 1, credit: 48, tri_cache: 128, ..big("big_patch_lifo_cache", "bunny-patch:300", patch, true, Mode::All, 8, 1, 1) },
+        ChipQuery { prefetch: 6, outstanding: 8, issue_spacing: 1, credit: 32, tri_cache: 4, ..q("sphere_fifo_cache", "sphere:12", spheres, Fifo, Mode::All, 8, 1) },
+        ChipQuery { prefetch: 14, outstanding: 16, issue_spacing: 1, credit: 48, tri_cache: 128, ..big("big_patch_lifo_cache", "bunny-patch:300", patch, Lifo, Mode::All, 8, 1, 1) },
         // the papers' chip (k = 24, binary32): the root test only (Icarus), a short
         // first-hit query at full speed (rust-hdl), whole queries at full speed and at the
         // reset point
-        ChipQuery { chip: ChipKind::K24B32, ..q("k24_apart_lifo_first", "sphere:12", Pose::new(10.0, 20.0, 30.0, 3.0, 0.1, 0.0), true, Mode::First, 1, 1) },
-        ChipQuery { chip: ChipKind::K24B32, prefetch: 3, outstanding: 4, issue_spacing: 1, credit: 24, ..q("k24_sphere_lifo_first", "sphere:12", spheres, true, Mode::First, 8, 1) },
-        ChipQuery { chip: ChipKind::K24B32, prefetch: 14, outstanding: 16, issue_spacing: 1, credit: 48, ..big("k24_big_sphere_lifo_prefetch", "sphere:320", big_spheres, true, Mode::All, 8, 1, 1) },
-        ChipQuery { chip: ChipKind::K24B32, prefetch: 14, outstanding: 16, issue_spacing: 1, credit: 63, ..big("k24_big_sphere_fifo_prefetch", "sphere:200", big_spheres, false, Mode::All, 8, 1, 1) },
-        ChipQuery { chip: ChipKind::K24B32, ..big("k24_big_patch_lifo_first", "bunny-patch:300", patch, true, Mode::First, 2, 1, 1) },
-        ChipQuery { chip: ChipKind::K24B32, prefetch: 14, outstanding: 16, issue_spacing: 1, credit: 48, tri_cache: 128, ..big("k24_big_sphere_fifo_cache", "sphere:200", big_spheres, false, Mode::All, 8, 1, 1) },
+        ChipQuery { chip: ChipKind::K24B32, ..q("k24_apart_lifo_first", "sphere:12", Pose::new(10.0, 20.0, 30.0, 3.0, 0.1, 0.0), Lifo, Mode::First, 1, 1) },
+        ChipQuery { chip: ChipKind::K24B32, prefetch: 3, outstanding: 4, issue_spacing: 1, credit: 24, ..q("k24_sphere_lifo_first", "sphere:12", spheres, Lifo, Mode::First, 8, 1) },
+        ChipQuery { chip: ChipKind::K24B32, prefetch: 14, outstanding: 16, issue_spacing: 1, credit: 48, ..big("k24_big_sphere_lifo_prefetch", "sphere:320", big_spheres, Lifo, Mode::All, 8, 1, 1) },
+        ChipQuery { chip: ChipKind::K24B32, prefetch: 14, outstanding: 16, issue_spacing: 1, credit: 63, ..big("k24_big_sphere_fifo_prefetch", "sphere:200", big_spheres, Fifo, Mode::All, 8, 1, 1) },
+        ChipQuery { chip: ChipKind::K24B32, ..big("k24_big_patch_lifo_first", "bunny-patch:300", patch, Lifo, Mode::First, 2, 1, 1) },
+        ChipQuery { chip: ChipKind::K24B32, prefetch: 14, outstanding: 16, issue_spacing: 1, credit: 48, tri_cache: 128, ..big("k24_big_sphere_fifo_cache", "sphere:200", big_spheres, Fifo, Mode::All, 8, 1, 1) },
         // the papers' chip with an e8m15 DOP unit (k24r: format e8m15/binary32): the root
         // test (Icarus), a few leaf pairs (rust-hdl), whole queries at full speed (the second
         // through the 128-line triangle cache) and at the reset point
-        ChipQuery { chip: ChipKind::K24E8m15B32, ..q("k24r_apart_lifo_first", "sphere:12", Pose::new(10.0, 20.0, 30.0, 3.0, 0.1, 0.0), true, Mode::First, 1, 1) },
-        ChipQuery { chip: ChipKind::K24E8m15B32, prefetch: 3, outstanding: 4, issue_spacing: 1, credit: 24, ..q("k24r_patch_fifo_all", "bunny-patch:4", patch, false, Mode::All, 8, 1) },
-        ChipQuery { chip: ChipKind::K24E8m15B32, prefetch: 14, outstanding: 16, issue_spacing: 1, credit: 63, ..big("k24r_big_sphere_fifo_prefetch", "sphere:200", big_spheres, false, Mode::All, 8, 1, 1) },
-        ChipQuery { chip: ChipKind::K24E8m15B32, prefetch: 14, outstanding: 16, issue_spacing: 1, credit: 48, tri_cache: 128, ..big("k24r_big_sphere_lifo_cache", "sphere:320", big_spheres, true, Mode::All, 8, 1, 1) },
-        ChipQuery { chip: ChipKind::K24E8m15B32, ..big("k24r_big_patch_lifo_first", "bunny-patch:300", patch, true, Mode::First, 2, 1, 1) },
+        ChipQuery { chip: ChipKind::K24E8m15B32, ..q("k24r_apart_lifo_first", "sphere:12", Pose::new(10.0, 20.0, 30.0, 3.0, 0.1, 0.0), Lifo, Mode::First, 1, 1) },
+        ChipQuery { chip: ChipKind::K24E8m15B32, prefetch: 3, outstanding: 4, issue_spacing: 1, credit: 24, ..q("k24r_patch_fifo_all", "bunny-patch:4", patch, Fifo, Mode::All, 8, 1) },
+        ChipQuery { chip: ChipKind::K24E8m15B32, prefetch: 14, outstanding: 16, issue_spacing: 1, credit: 63, ..big("k24r_big_sphere_fifo_prefetch", "sphere:200", big_spheres, Fifo, Mode::All, 8, 1, 1) },
+        ChipQuery { chip: ChipKind::K24E8m15B32, prefetch: 14, outstanding: 16, issue_spacing: 1, credit: 48, tri_cache: 128, ..big("k24r_big_sphere_lifo_cache", "sphere:320", big_spheres, Lifo, Mode::All, 8, 1, 1) },
+        ChipQuery { chip: ChipKind::K24E8m15B32, ..big("k24r_big_patch_lifo_first", "bunny-patch:300", patch, Lifo, Mode::First, 2, 1, 1) },
     ]
 }
 
@@ -567,7 +495,7 @@ pub fn write_vectors(dir: &std::path::Path) -> Result<Vec<String>, String> {
 }
 
 /// [`run_query`] writing a VCD of the traversal to `path` ([`ProbeVcd`]: the signals of
-/// [`crate::cycle::PROBES`], one scope per unit under `chip`, one time unit per clock). For
+/// [`crate::chip::probes::PROBES`], one scope per unit under `chip`, one time unit per clock). For
 /// GTKWave with scripts/gtkw/chip_e8m15_k6.gtkw. (A VCD of every rust-hdl signal would be
 /// about 600 kB per clock, mostly T.CHECK's.)
 pub fn run_query_vcd<C: RtlPorts>(
@@ -589,43 +517,43 @@ pub fn run_query_vcd<C: RtlPorts>(
 }
 
 /// Which RTL chip runs a query of this configuration, traversal and cycle-model
-/// parameters, and in which order (true: LIFO); otherwise what to change.
-pub fn rtl_order(cfg: &ChipConfig, traversal: crate::traversal::Traversal, p: &crate::cycle::Params) -> Result<(ChipKind, bool), String> {
-    use crate::traversal::Traversal;
+/// parameters, and in which order; otherwise what to change.
+pub fn rtl_order(cfg: &ChipConfig, traversal: Traversal, p: &Params) -> Result<(ChipKind, Order), String> {
     let Some(kind) = ChipKind::of(cfg) else {
         return Err(format!(
             "the RTL chips are built for k = 6 in format reduced (e8m15) and k = 24 in binary32 or e8m15/binary32, all with outward DOP rounding and nearest-even T.CHECK; this scene has k = {}, format {}, dop_rounding {}, tri_rounding {:?}: set [chip] k = 6, format = \"reduced\" or k = 24, format = \"binary32\" or \"e8m15/binary32\", with dop_rounding = \"outward\"",
             cfg.k, cfg.format, cfg.dop_rounding, cfg.tri_rounding
         ));
     };
-    if cfg.tri_cache > crate::rtl::TRI_CACHE_LINES as u32 {
-        return Err(format!(
-            "the RTL chips' triangle cache has {} lines; this scene asks for tri_cache = {}: set [chip] tri_cache to at most {}",
-            crate::rtl::TRI_CACHE_LINES, cfg.tri_cache, crate::rtl::TRI_CACHE_LINES
-        ));
+    let lines = chips::TRI_CACHE_LINES;
+    if cfg.tri_cache > lines as u32 {
+        return Err(format!("the RTL chips' triangle cache has {lines} lines; this scene asks for tri_cache = {}: set [chip] tri_cache to at most {lines}", cfg.tri_cache));
     }
-    let rtl = crate::cycle::Params {
+    let rtl = Params {
         memory: p.memory,
         prefetch: p.prefetch,
         outstanding: p.outstanding,
         issue_spacing: p.issue_spacing,
         credit: p.credit,
-        ..crate::cycle::Params::RTL
+        ..Params::RTL
     };
     if *p != rtl {
-        return Err("the RTL chip has the [timing] of the default (queue_entries 1024, latencies 15 and 130, tri_fifo 256) but for memory, issue_spacing, credit, prefetch and outstanding: remove the others from the scene's [timing]".into());
+        let r = Params::RTL;
+        return Err(format!(
+            "the RTL chip has the [timing] of the default (queue_entries {}, dop_latency {}, tri_latency {}, tri_fifo {}) but for memory, issue_spacing, credit, prefetch and outstanding: remove the others from the scene's [timing]",
+            r.queue_entries, r.dop_latency, r.tri_latency, r.tri_fifo
+        ));
     }
-    let (pf, out, credit) = (crate::rtl::PORT_PREFETCH as u32, crate::rtl::PORT_OUTSTANDING as u32, crate::rtl::CREDIT_MAX as u32);
+    let (pf, out, credit) = (chips::PORT_PREFETCH as u32, chips::PORT_OUTSTANDING as u32, chips::CREDIT_MAX as u32);
     if p.prefetch > pf || p.outstanding > out || p.credit > credit {
         return Err(format!(
             "the RTL chip prefetches at most {pf} pairs with at most {out} requests outstanding and a credit of at most {credit} (this scene: prefetch {}, outstanding {}, credit {}): lower them in [timing]",
             p.prefetch, p.outstanding, p.credit
         ));
     }
-    match traversal {
-        Traversal::Lifo => Ok((kind, true)),
-        Traversal::Fifo => Ok((kind, false)),
-        t => Err(format!("the RTL chip's D_CNTR runs the fifo or lifo traversal, not {t:?}: set [query] traversal")),
+    match traversal.order() {
+        Some(order) => Ok((kind, order)),
+        None => Err(format!("the RTL chip's D_CNTR runs the fifo or lifo traversal, not {traversal:?}: set [query] traversal")),
     }
 }
 
@@ -637,28 +565,32 @@ pub fn cross_check(
     chip: &crate::query::Chip,
     pose: &crate::pose::Pose,
     mode: Mode,
-    traversal: crate::traversal::Traversal,
-    p: crate::cycle::Params,
+    traversal: Traversal,
+    p: Params,
     max_cycles: u64,
 ) -> Result<ChipTrace, String> {
-    let (kind, lifo) = rtl_order(&chip.cfg, traversal, &p)?;
+    let (kind, order) = rtl_order(&chip.cfg, traversal, &p)?;
     let setup = chip.setup(pose);
-    let image = QueryImage::new(kind, &chip.a, &chip.b, &setup, lifo, mode, &p, chip.cfg.tri_cache)?;
+    let image = QueryImage::new(kind, &chip.a, &chip.b, &setup, order, mode, &p, chip.cfg.tri_cache)?;
     let d = drive(&image, p.memory, Reader::default(), max_cycles);
-    fn lockstep<C: RtlPorts>(mut rtl: C, model: crate::cycle::chip::Chip, image: &QueryImage, d: &Drive) -> Result<ChipTrace, String> {
-        let mut ls = crate::cycle::drive::Lockstep::new(RtlChip::new(&mut rtl, image), model, ("rust-hdl", "cycle model"));
-        crate::cycle::drive::run_query(&mut ls, &image.writes, d, true, |_, _| Ok(()), None).map_err(|e| e.0)
+    struct Lockstep<'q> {
+        model: crate::cycle::chip::Chip<'q>,
+        image: &'q QueryImage,
+        d: &'q Drive,
+    }
+    impl OnChip for Lockstep<'_> {
+        type Out = Result<ChipTrace, String>;
+        fn run<C: RtlPorts>(self, mut rtl: C) -> Self::Out {
+            let mut ls = crate::cycle::drive::Lockstep::new(RtlChip::new(&mut rtl, self.image), self.model, ("rust-hdl", "cycle model"));
+            crate::cycle::drive::run_query(&mut ls, &self.image.writes, self.d, true, |_, _| Ok(()), None).map_err(|e| e.0)
+        }
     }
     std::thread::scope(|s| {
         std::thread::Builder::new()
             .stack_size(1 << 30)
             .spawn_scoped(s, || {
                 let model = crate::cycle::chip::Chip::new(&chip.cfg, p, &chip.a, &chip.b, &setup, false)?;
-                match kind {
-                    ChipKind::K6E8m15 => lockstep(exported_chip(), model, &image, &d),
-                    ChipKind::K24B32 => lockstep(papers_chip(), model, &image, &d),
-                    ChipKind::K24E8m15B32 => lockstep(reduced_dop_chip(), model, &image, &d),
-                }
+                with_chip::<QUEUE_BITS, { QUEUE_BITS + 1 }, { QUEUE_BITS - 1 }, _>(kind, Lockstep { model, image: &image, d: &d })
             })
             .map_err(|e| format!("cannot start the RTL simulation thread: {e}"))?
             .join()
@@ -670,7 +602,7 @@ pub fn cross_check(
 mod tests {
     use super::*;
 
-    /// Words are laid out as `crate::memory` says: a node's leaf bit, distances and fields,
+    /// Words are laid out as `crate::golden::memory` says: a node's leaf bit, distances and fields,
     /// a triangle's 24 values and two flags, most significant hex digit first.
     #[test]
     fn memory_words_and_writes() {
@@ -678,7 +610,7 @@ mod tests {
         let p = q.prepare().unwrap();
         let a = &p.chip.a;
         assert_eq!(p.image.memory.len(), 2 * a.tree.len() + 2 * a.tris.len(), "A and B are the same sphere");
-        let f = CHIP_CONFIG.format.dop;
+        let f = ChipKind::K6E8m15.config().format.dop;
         let w = &p.image.memory[0];
         let field = |w: &Word, at: usize, bits: usize| (0..bits).fold(0u64, |v, k| v | (w[(at + k) / 64] >> ((at + k) % 64) & 1) << k);
         // hand-derived widths: 24-bit words, 1 + 6 * 24 + 64 node bits, 23 * 24 + 2 triangle bits
@@ -686,21 +618,13 @@ mod tests {
         const NODE_BITS: usize = 209;
         const MEM_BITS: usize = 554;
         assert_eq!(W, f.width() as usize);
-        assert_eq!((ChipKind::K6E8m15.word_bits(), crate::rtl::e8m15::CHIP_WORD_BITS), (MEM_BITS, MEM_BITS));
+        // (the RTL's word widths are checked against the layout at compile time, rtl/mod.rs)
+        assert_eq!(ChipKind::K6E8m15.word_bits(), MEM_BITS);
         // the papers' chip: 1 + 24 * 32 + 64 node bits, wider than its 23 * 32 + 2 triangle bits
-        assert_eq!((ChipKind::K24B32.word_bits(), crate::rtl::b32::CHIP_WORD_BITS), (833, 833));
+        assert_eq!(ChipKind::K24B32.word_bits(), 833);
         // e8m15 nodes, binary32 triangles: 1 + 24 * 24 + 64 = 641 node bits, 23 * 32 + 2 = 738
-        assert_eq!((ChipKind::K24E8m15B32.word_bits(), crate::rtl::e8m15_b32::CHIP_WORD_BITS), (738, 738));
-        assert_eq!(crate::memory::Layout::new(&REDUCED_DOP_CONFIG).node_bits, 641);
-        for kind in ChipKind::ALL {
-            let tw = match kind {
-                ChipKind::K6E8m15 => crate::rtl::e8m15::TRI_WORD_BITS,
-                ChipKind::K24B32 => crate::rtl::b32::TRI_WORD_BITS,
-                ChipKind::K24E8m15B32 => crate::rtl::e8m15_b32::TRI_WORD_BITS,
-            };
-            assert_eq!(tw as u32, crate::memory::Layout::new(&kind.config()).tri_bits, "{kind:?}");
-        }
-        assert_eq!(crate::rtl::b32::TRI_WORD_BITS, 23 * 32 + 2);
+        assert_eq!(ChipKind::K24E8m15B32.word_bits(), 738);
+        assert_eq!(crate::chip::layout::Layout::new(&ChipKind::K24E8m15B32.config()).node_bits, 641);
         assert!(p.image.memory[..a.tree.len()].iter().all(|w| field(w, NODE_BITS, 64) == 0 && field(w, NODE_BITS + 64, MEM_BITS - NODE_BITS - 64) == 0));
         assert_eq!(field(w, 0, 1), 0, "the root is inner");
         assert_eq!(field(w, 1 + 2 * W, W), f.to_bits(a.tree.dop(0)[2]));
@@ -723,9 +647,9 @@ mod tests {
     #[test]
     fn too_large_a_tree_is_an_error() {
         let big = crate::mesh::builtin("sphere:40000").unwrap().triangles_f64();
-        let chip = crate::query::Chip::new(&big, &big[..1], CHIP_CONFIG).unwrap();
+        let chip = crate::query::Chip::new(&big, &big[..1], ChipKind::K6E8m15.config()).unwrap();
         let setup = chip.setup(&crate::pose::Pose::new(0.0, 0.0, 0.0, 0.0, 0.0, 0.0));
-        let e = QueryImage::new(ChipKind::K6E8m15, &chip.a, &chip.b, &setup, true, Mode::All, &crate::cycle::Params::RTL, 1).unwrap_err();
+        let e = QueryImage::new(ChipKind::K6E8m15, &chip.a, &chip.b, &setup, Order::Lifo, Mode::All, &Params::RTL, 1).unwrap_err();
         assert!(e.contains("16 bits"), "{e}");
     }
 }

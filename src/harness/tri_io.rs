@@ -2,10 +2,11 @@
 //! from the golden memory words and host setup, with the golden results they must give:
 //! one source for the testbenches (`tb/rtl_tcheck.rs`) and the exported vectors.
 
-use crate::dop::host::{Affine, HostSetup};
+use crate::golden::host::{Affine, HostSetup};
 use crate::format::{Format, Rounding};
-use crate::golden::tcheck::{self, Certificate, Trace};
-use crate::memory::TriWord;
+use crate::golden::tcheck::{self, Trace};
+use crate::golden::certificate::Certificate;
+use crate::golden::memory::TriWord;
 
 /// The inputs of one T.CHECK: the leaf whose unit triangle is the target (`m` = its M_B,
 /// row-major 3x4, with its error words `alpha_m`, `alpha_f`), the frame map into that
@@ -131,7 +132,7 @@ impl LeafIn {
 /// Triangle pairs for the vector files: every pair of two n-triangle soups under one pose
 /// (crossing, separate and uncertain pairs), A with one zero-area triangle more.
 fn vector_scene(f: Format, n: usize) -> (Vec<TriWord>, Vec<TriWord>, HostSetup) {
-    use crate::config::ChipConfig;
+    use crate::chip::config::ChipConfig;
     use crate::pose::Pose;
     use nalgebra::Point3;
     let mut a = crate::mesh::soup(n, 21).triangles_f64();
@@ -196,7 +197,7 @@ pub fn tcheck_vectors(name: &str, f: Format, r: Rounding) -> String {
         }
     }
     for case in crate::hard_cases::load_catalogue().expect("the hard-case catalogue loads") {
-        let chip = crate::query::Chip::new(&case.a, &case.b, crate::config::ChipConfig { format: f.into(), ..Default::default() }).expect("catalogue objects are non-empty");
+        let chip = crate::query::Chip::new(&case.a, &case.b, crate::chip::config::ChipConfig { format: f.into(), ..Default::default() }).expect("catalogue objects are non-empty");
         let setup = chip.setup(&case.pose);
         for ta in &chip.a.tris {
             for tb in &chip.b.tris {
@@ -259,7 +260,7 @@ pub fn tri_unit_vectors(name: &str, f: Format, r: Rounding) -> String {
                 w.push((l.v_exact as u8).to_string());
                 w.push((l.degenerate as u8).to_string());
             }
-            let res = tcheck::tri_unit(f, r, ta, tb, &setup);
+            let res = crate::golden::tri_unit::tri_unit(f, r, ta, tb, &setup);
             w.push(format!("{tag:08x}"));
             w.push("1".into());
             w.push(format!("{tag:08x}"));

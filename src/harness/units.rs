@@ -4,6 +4,7 @@
 //! and fails if they differ from the checked-in files, then runs every unit against its
 //! vectors under Icarus Verilog and Verilator (`scripts/check-rtl.sh`).
 
+use crate::chip::rtl::ChipKind;
 use crate::format::{Format, Rounding};
 use rand::{Rng, SeedableRng};
 use std::fmt::Write;
@@ -92,14 +93,14 @@ pub fn all() -> Vec<Unit> {
     ] {
         let name = format!("doptrf_{tag}_{}", rounding_tag(r));
         let n2 = name.clone();
-        units.push(Unit { name, latency: crate::rtl::DOP_LATENCY as u32, verilog: Box::new(move || v(r)), vectors: Box::new(move || lane_vectors(&n2, fmt, r)) });
+        units.push(Unit { name, latency: crate::chip::rtl::DOP_LATENCY as u32, verilog: Box::new(move || v(r)), vectors: Box::new(move || lane_vectors(&n2, fmt, r)) });
     }
     for (k, fmt) in [(6, Format::REDUCED), (24, Format::BINARY32)] {
         let r = Rounding::TowardPositive;
         let name = dop_unit_name(k, fmt, r).expect("an RTL format");
         let n2 = name.clone();
         let verilog = move || dop_unit_verilog(k, fmt, r).expect("the RTL builds this k");
-        units.push(Unit { name, latency: crate::rtl::DOP_LATENCY as u32, verilog: Box::new(verilog), vectors: Box::new(move || dop_unit_vectors(&n2, k, fmt)) });
+        units.push(Unit { name, latency: crate::chip::rtl::DOP_LATENCY as u32, verilog: Box::new(verilog), vectors: Box::new(move || dop_unit_vectors(&n2, k, fmt)) });
     }
     for r in [Rounding::NearestEven, Rounding::TowardPositive] {
         for (tag, fmt) in [("b32", Format::BINARY32), ("e8m15", Format::REDUCED)] {
@@ -206,7 +207,7 @@ fn fp_vectors(name: &str, fmt: Format, r: Rounding, add: bool, latency: u32) -> 
 /// rounded and exact vertices, `rtl::*::fp_scale_top`): every special pattern and
 /// [`RANDOM_CASES`] random operands, each with both constants.
 fn fp_scale_vectors(name: &str, fmt: Format) -> String {
-    let c = crate::golden::tcheck::Certificate::new(fmt, Rounding::NearestEven).c_e;
+    let c = crate::golden::certificate::Certificate::new(fmt, Rounding::NearestEven).c_e;
     let digits = (fmt.width() as usize).div_ceil(4);
     let mut out = String::new();
     let _ = writeln!(out, "// a sel y");
@@ -272,9 +273,9 @@ fn lane_vectors(name: &str, fmt: Format, r: Rounding) -> String {
 /// C_i0..2, c_i, j packed as j0 | j1 << 5 | j2 << 10), then every node pair of two small DOP
 /// trees, `d$0.. e$0.. tag -> overlap tag_out` (golden::doptrf::dop_overlap).
 fn dop_unit_vectors(name: &str, k: usize, fmt: Format) -> String {
-    use crate::config::ChipConfig;
-    use crate::dop::{DopTree, HostSetup};
-    use crate::golden::doptrf;
+    use crate::chip::config::ChipConfig;
+    use crate::dop::DopTree;
+    use crate::golden::host::HostSetup;
     use crate::pose::Pose;
     let cfg = ChipConfig { k, format: fmt.into(), ..Default::default() };
     let r = cfg.dop_rounding.op();
@@ -282,7 +283,7 @@ fn dop_unit_vectors(name: &str, k: usize, fmt: Format) -> String {
     let ta = DopTree::build(&crate::mesh::soup(n, 11).triangles_f64(), &cfg);
     let tb = DopTree::build(&crate::mesh::soup(n, 12).triangles_f64(), &cfg);
     let pose = Pose::new(17.0, -41.0, 73.0, 0.05, -0.1, 0.02);
-    let setup = HostSetup::new(&cfg, &pose, tb.coord_bound(), crate::dop::TriSide::UNUSED);
+    let setup = HostSetup::new(&cfg, &pose, tb.coord_bound(), crate::golden::host::TriSide::UNUSED);
     let w = (fmt.width() as usize).div_ceil(4);
     let mut out = String::new();
     let _ = writeln!(out, "// preload: load_en load_addr load_data");
@@ -297,7 +298,7 @@ fn dop_unit_vectors(name: &str, k: usize, fmt: Format) -> String {
     for nb in 0..tb.len() as u32 {
         for na in 0..ta.len() as u32 {
             let (d, e) = (tb.dop(nb), ta.dop(na));
-            let overlap = doptrf::dop_overlap(fmt, r, &setup, d, e);
+            let overlap = crate::golden::dop_unit::dop_overlap(fmt, r, &setup, d, e);
             let vals: Vec<String> = d.iter().chain(e).map(|&x| hex(fmt, x)).collect();
             let _ = writeln!(out, "{} {tag:04x} {} {tag:04x}", vals.join(" "), overlap as u8);
             tag = tag.wrapping_add(1);
@@ -307,12 +308,12 @@ fn dop_unit_vectors(name: &str, k: usize, fmt: Format) -> String {
 }
 
 /// Writes `<dir>/<unit>.v` for every unit and each chip's `<dir>/chip_<format>_k<k>.v`
-/// ([`ChipKind`](super::chip_io::ChipKind)); returns the paths written.
+/// ([`ChipKind`]); returns the paths written.
 pub fn write_verilog(dir: &Path) -> std::io::Result<Vec<String>> {
     let mut written = write_all(dir, "v", all().into_iter().map(|u| (u.name, u.verilog)).collect(), verilog_of)?;
-    for kind in super::chip_io::ChipKind::ALL {
+    for &kind in ChipKind::ALL {
         let p = dir.join(format!("{}.v", kind.name()));
-        std::fs::write(&p, kind.verilog())?;
+        std::fs::write(&p, super::chip_io::verilog(kind))?;
         written.push(p.display().to_string());
     }
     Ok(written)
@@ -398,7 +399,7 @@ mod tests {
             assert!(vec.contains(&format!("// latency: {latency}\n")), "{name}");
         }
         // the chips as checked in (CI checks that rtl/ is what the code writes)
-        for kind in super::super::chip_io::ChipKind::ALL {
+        for kind in crate::chip::rtl::ChipKind::ALL {
             let p = Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("rtl/{}.v", kind.name()));
             let v = std::fs::read_to_string(&p).unwrap_or_else(|e| panic!("{}: {e}", p.display()));
             assert_eq!(v.matches("module top(").count(), 1, "{}", kind.name());

@@ -5,7 +5,10 @@
 //! port whenever one changes) are compared with the cycle model's, clock by clock.
 
 use super::chip_io::{self, QueryImage};
-use crate::cycle::{drive::ChipTrace, probe_valid, Memory, PROBES};
+use crate::chip::memory::Memory;
+use crate::chip::probes::{probe_valid, PROBES};
+use crate::chip::rtl::ChipKind;
+use crate::cycle::drive::ChipTrace;
 use std::path::{Path, PathBuf};
 
 /// Memory words of chip_tb.v's memory (its `DEPTH`).
@@ -110,7 +113,7 @@ fn root() -> &'static Path {
 
 /// Refuses a chip whose memory image does not fit the testbench's memory.
 pub fn check_size(chip: &crate::query::Chip) -> Result<(), String> {
-    let words = crate::cycle::chip::image_words(&chip.a, &chip.b) as usize;
+    let words = chip.image_words() as usize;
     if words > TB_MEMORY_WORDS {
         return Err(format!(
             "the Verilog cross-check's testbench memory holds {TB_MEMORY_WORDS} words and these meshes need {words} (DOP nodes and triangles of both): use meshes of at most a few thousand triangles, or cross-check on the cycle model's level only"
@@ -121,14 +124,14 @@ pub fn check_size(chip: &crate::query::Chip) -> Result<(), String> {
 
 /// Builds (or finds built) the Verilator binary of the exported chip `kind` from this
 /// build's chip Verilog; errors say what is missing.
-pub fn chip_binary(kind: chip_io::ChipKind) -> Result<PathBuf, String> {
+pub fn chip_binary(kind: ChipKind) -> Result<PathBuf, String> {
     let script = root().join("scripts/run-chip.sh");
     if !script.is_file() {
         return Err(format!("the Verilog cross-check needs the collision-chip repository this binary was built from ({} is missing)", script.display()));
     }
     let dir = root().join("target/cchip");
     let v = dir.join(format!("{}.v", kind.name()));
-    let text = kind.verilog();
+    let text = chip_io::verilog(kind);
     // rewritten only when it changed, so that the build's inputs keep their times
     if std::fs::read_to_string(&v).ok().as_deref() != Some(&text) {
         std::fs::create_dir_all(&dir).and_then(|()| std::fs::write(&v, &text)).map_err(|e| format!("{}: {e}", v.display()))?;

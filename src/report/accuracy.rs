@@ -2,16 +2,18 @@
 //! formats, k and DOP roundings, each query compared with the exact oracle and run on the
 //! cycle model (the RTL's microarchitecture) for its clocks.
 
-use crate::config::{ChipConfig, DopRounding, Formats};
-use crate::cycle::{self, drive::Reader, Params};
+use crate::chip::config::{ChipConfig, DopRounding, Formats};
+use crate::cycle::{self, drive::Reader};
+use crate::chip::params::Params;
 use crate::dop::tree::Tri;
 use crate::measure::parallel_map;
-use crate::memory::TriWord;
+use crate::golden::memory::TriWord;
 use crate::oracle;
 use crate::query::{exact_pairs, place, Accuracy, Chip};
 use crate::report::figures::{Cell, Figure, Panel, Series, Style, Table, PALETTE};
-use crate::scene::{sweep_poses, Sweep};
-use crate::traversal::{Mode, Traversal};
+use crate::pose::{sweep_poses, Sweep};
+use crate::traversal::Traversal;
+use crate::chip::reg::{Mode, Order};
 use serde::Serialize;
 use std::fmt::Write;
 
@@ -119,7 +121,7 @@ pub fn study(
     formats: &[Formats],
     roundings: &[DopRounding],
     sweep: &Sweep,
-    memory: cycle::MemTiming,
+    memory: crate::chip::memory::MemTiming,
     progress: impl Fn() + Sync,
 ) -> Result<Vec<Row>, String> {
     let poses = sweep_poses(sweep)?;
@@ -141,7 +143,7 @@ pub fn study(
         let rows = chips.iter().map(|chip| {
             let r = chip.query(&sp.pose, Mode::All, Traversal::Lifo);
             let acc = Accuracy::of(Mode::All, &r.pairs, &exact);
-            let (trace, _) = cycle::run_query(chip, &chip.setup(&sp.pose), true, Mode::All, Params { memory: memory.into(), ..Params::RTL }, Reader::default(), cycle::MAX_CYCLES, Default::default())?;
+            let (trace, _) = cycle::run_query(chip, &chip.setup(&sp.pose), Order::Lifo, Mode::All, Params { memory: memory.into(), ..Params::RTL }, Reader::default(), cycle::MAX_CYCLES, Default::default())?;
             trace.check(Mode::All, &r).map_err(|e| format!("{mesh} k={} {} at {}: the cycle model disagrees with the golden model: {e}", chip.cfg.k, chip.cfg.format, sp.pose.text()))?;
             let mut causes = [0u64; 3];
             for &(a, b) in &r.uncertain {

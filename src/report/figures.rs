@@ -17,14 +17,18 @@
 //! Software is timed one query at a time before anything else runs; the counting work
 //! (golden counters, cycle model) then runs on every core.
 
-use crate::config::ChipConfig;
-use crate::cycle::{self, drive::Reader, Ddr, Memory, Params};
+use crate::chip::config::ChipConfig;
+use crate::cycle::{self, drive::Reader};
+use crate::chip::memory::Ddr;
+use crate::chip::memory::Memory;
+use crate::chip::params::Params;
 use crate::measure::{mean_seconds, parallel_map};
 use crate::mesh;
 use crate::pose::Pose;
 use crate::query::Chip;
-use crate::scene::{sweep_poses, Sweep};
-use crate::traversal::{Mode, Traversal};
+use crate::pose::{sweep_poses, Sweep};
+use crate::traversal::Traversal;
+use crate::chip::reg::{Mode, Order};
 use indicatif::ProgressBar;
 use plotters::coord::ranged1d::{AsRangedCoord, ValueFormatter};
 use plotters::prelude::*;
@@ -395,7 +399,7 @@ fn count(chip: &Chip, pose: &Pose) -> Result<PoseCounts, String> {
     for (oi, &order) in ORDERS.iter().enumerate() {
         for (mi, &mode) in MODES.iter().enumerate() {
             c.pairs[oi][mi] = chip.query(pose, mode, order).pairs.len();
-            let (trace, _) = cycle::run_query(chip, &setup, order == Traversal::Lifo, mode, date_params(), Reader::default(), cycle::MAX_CYCLES, Default::default())?;
+            let (trace, _) = cycle::run_query(chip, &setup, order.order().expect("a D_CNTR order"), mode, date_params(), Reader::default(), cycle::MAX_CYCLES, Default::default())?;
             trace.check(mode, &all).map_err(|e| format!("{} {}: the cycle model disagrees with the golden model: {e}", name(order), mode_name(mode)))?;
             c.cycles[oi][mi] = trace.cycles;
             c.entries[oi][mi] = trace.max_depth;
@@ -413,7 +417,7 @@ fn count(chip: &Chip, pose: &Pose) -> Result<PoseCounts, String> {
             }
         }
     }
-    let (trace, _) = cycle::run_query(chip, &setup, true, Mode::All, wscg_params(), Reader::default(), cycle::MAX_CYCLES, Default::default())?;
+    let (trace, _) = cycle::run_query(chip, &setup, Order::Lifo, Mode::All, wscg_params(), Reader::default(), cycle::MAX_CYCLES, Default::default())?;
     trace.check(Mode::All, &all).map_err(|e| format!("WSCG memory: the cycle model disagrees with the golden model: {e}"))?;
     (c.wscg_cycles, c.wscg_words) = (trace.cycles, trace.node_fetches + trace.tri_fetches);
     Ok(c)
@@ -481,7 +485,7 @@ fn figures(points: &[Point]) -> Vec<Figure> {
                 ]));
                 let entries = p.mean(|c| c.entries[oi][mi] as f64);
                 // an entry is two node pairs of 16-bit ids and a flip bit each, 67 bits
-                let bytes = entries * crate::cycle::d_cntr::ENTRY_BITS as f64 / 8.0;
+                let bytes = entries * crate::chip::layout::ENTRY_BITS as f64 / 8.0;
                 t7.rows.push(base(vec![Cell::Num(entries), Cell::Int(p.max(|c| c.entries[oi][mi])), Cell::Num(bytes)]));
             }
         }

@@ -1,80 +1,13 @@
-//! Reports: per-pose records of a scene run and the readable summary table; the
-//! accuracy study; the papers' figures.
+//! Reports: the readable tables of a scene run's records; the accuracy study; the papers'
+//! figures.
 
 pub mod accuracy;
 pub mod figures;
 
 use crate::cycle::chip::Stats;
-use crate::pose::Pose;
 use crate::query::Accuracy;
-use crate::traversal::Counters;
-use serde::Serialize;
+use crate::scene::record::{CycleRecord, PoseRecord};
 use std::fmt::Write;
-
-/// What one pose of a scene produced.
-#[derive(Clone, Debug, Serialize)]
-pub struct PoseRecord {
-    pub pose: Pose,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub distance: Option<f64>,
-    pub pair_count: usize,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub pairs: Option<Vec<(u32, u32)>>,
-    pub counters: Counters,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub exact_pair_count: Option<usize>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub accuracy: Option<Accuracy>,
-    /// The pose on the cycle model (scenes asking for `cycles`).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub cycles: Option<CycleRecord>,
-}
-
-/// One pose on the cycle model.
-#[derive(Clone, Debug, Serialize)]
-pub struct CycleRecord {
-    /// Clocks from start to done.
-    pub cycles: u64,
-    /// The chip's time for the query at the scene's clock, in microseconds.
-    pub chip_us: f64,
-    /// The golden model's time for the same query on this machine (software), in
-    /// microseconds.
-    pub software_us: f64,
-    /// Pairs the chip reported intersecting, and uncertain (for the host to settle).
-    pub hits: usize,
-    pub uncertain: usize,
-    /// DOP tests (node pairs through the DOP unit) and triangle tests (leaf pairs through
-    /// TRI_UNIT) the chip ran: in all-pairs queries the golden model's counts.
-    pub dop_tests: u64,
-    pub tri_tests: u64,
-    /// Most queue entries (two node pairs each) waiting at once.
-    pub max_entries: u64,
-    pub overflow: bool,
-    /// The memory model's traffic.
-    pub memory: MemoryRecord,
-    /// Where the clocks went (scenes asking for cycles or memory).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub stats: Option<crate::cycle::chip::Stats>,
-    /// The traversal VCD written, if any.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub vcd: Option<String>,
-    /// The level that ran the pose beside the cycle model and agreed clock by clock.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub cross_checked: Option<String>,
-}
-
-/// What one pose moved through the memory port.
-#[derive(Clone, Copy, Debug, Default, Serialize)]
-pub struct MemoryRecord {
-    pub node_words: u64,
-    pub tri_words: u64,
-    /// Bytes of those words at the configuration's node and triangle widths.
-    pub bytes: u64,
-    /// DDR: page hits, misses and bank conflicts (0 with the ideal memory).
-    pub page_hits: u64,
-    pub page_misses: u64,
-    pub bank_conflicts: u64,
-}
 
 /// Records grouped by sweep distance (or one group per pose without a sweep).
 fn groups(records: &[PoseRecord]) -> Vec<(String, Vec<&PoseRecord>)> {
@@ -238,4 +171,24 @@ pub fn memory_table(records: &[PoseRecord]) -> String {
         );
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::scene::record::CycleRecord;
+    use crate::scene::{run::Prepared, Scene};
+
+    /// The stall table's tests per clock: the pose group's tests over its clocks.
+    #[test]
+    fn stall_table_tests_per_clock() {
+        let text = "[objects]\na = \"sphere:80\"\nb = \"torus:60\"\n[chip]\nk = 14\n[sweep]\ndistances = [1.2, 0.6]\norientations = 2\n[outputs]\ncycles = true\n";
+        let s = Scene::parse(text, "test").unwrap();
+        let cyc = Prepared::new(&s, |spec| crate::mesh::resolve(spec).map_err(|e| e.to_string())).unwrap().run(|| ()).unwrap();
+        let d06: Vec<_> = cyc.records.iter().filter(|r| r.distance == Some(0.6)).map(|r| r.cycles.as_ref().unwrap()).collect();
+        let clocks = d06.iter().map(|c| c.cycles).sum::<u64>() as f64;
+        let per = |f: fn(&&CycleRecord) -> u64| format!("{:.3}", d06.iter().map(f).sum::<u64>() as f64 / clocks);
+        let row = super::stall_table(&cyc.records).lines().find(|l| l.starts_with("d=0.6")).unwrap().to_string();
+        let cols: Vec<&str> = row.split_whitespace().collect();
+        assert_eq!(cols[cols.len() - 3..cols.len() - 1], [per(|c| c.dop_tests), per(|c| c.tri_tests)], "{row}");
+    }
 }

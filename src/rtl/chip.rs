@@ -7,10 +7,10 @@
 /// DOP unit `Dop` and `TriUnit`). Arguments: `K` the DOP's k, `Dop` its unit (`DopUnit6`
 /// for k = 6), `WD` the DOP format's word width, `WT` T.CHECK's, `NW` node-word bits
 /// (`1 + K WD + 64`), `TW` triangle-word bits (`23 WT + 2`), `MW` memory-word bits (the
-/// wider of the two: [`crate::memory::Layout`]).
+/// wider of the two: [`crate::chip::layout::Layout`]).
 macro_rules! chip {
     ($K:tt, $Dop:ident, $WD:tt, $WT:tt, $NW:tt, $TW:tt, $MW:tt) => {
-        declare_sync_fifo!(LeafFifo, Bits<32>, $crate::rtl::LEAF_FIFO, 1);
+        declare_sync_fifo!(LeafFifo, Bits<32>, $crate::chip::rtl::LEAF_FIFO, 1);
 
         /// The chip's memory word bits (`mem_resp_data`).
         pub const CHIP_WORD_BITS: usize = $MW;
@@ -31,14 +31,14 @@ macro_rules! chip {
         ///   pair, A's node in bits 15:0, B's in 31:16; `0x122 .. 0x125`: the word
         ///   addresses of A's node 0, B's node 0, A's triangle 0, B's triangle 0; `0x126`:
         ///   the memory port, bits 3:0 the node pairs prefetched (at most
-        ///   [`PORT_PREFETCH`](crate::rtl::PORT_PREFETCH)), 7:4 the requests outstanding at
+        ///   [`PORT_PREFETCH`](crate::chip::rtl::PORT_PREFETCH)), 7:4 the requests outstanding at
         ///   most, less one, 8 an issue every clock (the queue's second write port takes a
         ///   result's two child entries at once), 14:9 the credit of DOP tests in flight
-        ///   plus waiting leaf pairs (0: [`CREDIT`](crate::rtl::CREDIT)); reset: 0, one
+        ///   plus waiting leaf pairs (0: [`CREDIT`](crate::chip::rtl::CREDIT)); reset: 0, one
         ///   request, no prefetch,
         ///   issues two clocks apart, credit 16; `0x127`: A's triangle cache, bits 6:0 its
         ///   lines less one (a power of two up to
-        ///   [`TRI_CACHE_LINES`](crate::rtl::TRI_CACHE_LINES); reset: 0, one line).
+        ///   [`TRI_CACHE_LINES`](crate::chip::rtl::TRI_CACHE_LINES); reset: 0, one line).
         /// * `start` (in): begins a query with the registers as written (ignored while
         ///   `busy`); `busy`, `done` (high from the query's end to the next start),
         ///   `overflow` (the pair queue was full when a child entry came: the query ended
@@ -51,7 +51,7 @@ macro_rules! chip {
         ///   it asks for, so the response has no ready).
         ///   Node word: bit 0 leaf, `d_i` at `1 + i W`, then two 32-bit fields (children,
         ///   or the triangle index and 0); triangle word: v0, v1, v2 (x, y, z), M row-major,
-        ///   alpha_m, alpha_f at `i W`, v_exact, degenerate ([`crate::memory`]).
+        ///   alpha_m, alpha_f at `i W`, v_exact, degenerate ([`crate::golden::memory`]).
         /// * results (valid/ready): out `res_valid`, `res_tag[32]` (A's triangle in bits
         ///   15:0, B's in 31:16), `res_uncertain` (0: intersecting; 1: the host decides);
         ///   in `res_ready`. Separate pairs are not shown.
@@ -108,8 +108,8 @@ macro_rules! chip {
             // ---- D_CNTR: the pair queue, and the pair buffer of entries popped ahead
             // (a ring of PAIR_BUF entries, each with its pairs' fetch bits A0 B0 A1 B1)
             queue: $crate::rtl::d_cntr::PairQueue<N, NP1, NM1>,
-            ahd_ent: [DFF<Bits<67>>; $crate::rtl::PAIR_BUF],
-            ahd_fetch: [DFF<Bits<4>>; $crate::rtl::PAIR_BUF],
+            ahd_ent: [DFF<Bits<67>>; $crate::chip::rtl::PAIR_BUF],
+            ahd_fetch: [DFF<Bits<4>>; $crate::chip::rtl::PAIR_BUF],
             ahd_head: DFF<Bits<4>>,
             ahd_tail: DFF<Bits<4>>,
             ahd_pairs: DFF<Bits<5>>,
@@ -141,7 +141,7 @@ macro_rules! chip {
             last_a: DFF<Bits<16>>,
             last_b: DFF<Bits<16>>,
             // ---- node words to ask for, in pair order: {pair number mod 32, B, id}
-            ask_w: [DFF<Bits<22>>; $crate::rtl::ASK_LIST],
+            ask_w: [DFF<Bits<22>>; $crate::chip::rtl::ASK_LIST],
             ask_head: DFF<Bits<5>>,
             ask_tail: DFF<Bits<5>>,
             ask_n: DFF<Bits<6>>,
@@ -162,11 +162,11 @@ macro_rules! chip {
             put3: Signal<Local, Bits<32>>,
             // ---- node words arrived, per destination in request order (A's: e, B's: d),
             // and the words of the last pair issued
-            wa: [DFF<Bits<$NW>>; $crate::rtl::PAIR_BUF],
+            wa: [DFF<Bits<$NW>>; $crate::chip::rtl::PAIR_BUF],
             wa_head: DFF<Bits<4>>,
             wa_tail: DFF<Bits<4>>,
             wa_n: DFF<Bits<5>>,
-            wb: [DFF<Bits<$NW>>; $crate::rtl::PAIR_BUF],
+            wb: [DFF<Bits<$NW>>; $crate::chip::rtl::PAIR_BUF],
             wb_head: DFF<Bits<4>>,
             wb_tail: DFF<Bits<4>>,
             wb_n: DFF<Bits<5>>,
@@ -184,7 +184,7 @@ macro_rules! chip {
             need_nb: Signal<Local, Bit>,
             // ---- the memory port: the destinations of the requests outstanding, in order,
             // and the triangle word asked for per triangle destination (one at a time)
-            tags: [DFF<Bits<2>>; $crate::rtl::PORT_OUTSTANDING],
+            tags: [DFF<Bits<2>>; $crate::chip::rtl::PORT_OUTSTANDING],
             tag_head: DFF<Bits<4>>,
             tag_tail: DFF<Bits<4>>,
             tag_n: DFF<Bits<5>>,
@@ -206,7 +206,7 @@ macro_rules! chip {
             c_one32: Constant<Bits<32>>,
             // ---- the DOP unit and what travels beside it
             dop: $Dop,
-            side: $crate::rtl::delay::Delay<Bits<99>, { $crate::rtl::DOP_LATENCY }>,
+            side: $crate::rtl::delay::Delay<Bits<99>, { $crate::chip::rtl::DOP_LATENCY }>,
             issue: Signal<Local, Bit>,
             last_issue: DFF<Bit>,
             inflight: DFF<Bits<5>>,
@@ -326,9 +326,9 @@ macro_rules! chip {
                     port_one: Default::default(),
                     port_credit: Default::default(),
                     credit_lim: Default::default(),
-                    c_credit: Constant::new(($crate::rtl::CREDIT as u64).into()),
+                    c_credit: Constant::new(($crate::chip::rtl::CREDIT as u64).into()),
                     pf: Default::default(),
-                    c_pf_max: Constant::new(($crate::rtl::PORT_PREFETCH as u64).into()),
+                    c_pf_max: Constant::new(($crate::chip::rtl::PORT_PREFETCH as u64).into()),
                     go: Default::default(),
                     queue: Default::default(),
                     ahd_ent: std::array::from_fn(|_| Default::default()),
@@ -493,7 +493,7 @@ macro_rules! chip {
         }
 
         impl<const N: usize, const NP1: usize, const NM1: usize> CollisionChip<N, NP1, NM1> {
-            /// The values of the traversal signals [`crate::cycle::PROBES`] (in that
+            /// The values of the traversal signals [`crate::chip::probes::PROBES`] (in that
             /// order) as the logic shows them now: what the lockstep check compares and
             /// the traversal VCD shows (scripts/gtkw/chip_e8m15_k6.gtkw).
             pub fn probe(&self) -> Vec<u64> {
@@ -564,7 +564,7 @@ macro_rules! chip {
                 dff_setup!(self, clock, ask_head, ask_tail, ask_n, seq_head, seq_tail);
                 dff_setup!(self, clock, wa_head, wa_tail, wa_n, wb_head, wb_tail, wb_n, na_word, nb_word);
                 dff_setup!(self, clock, tag_head, tag_tail, tag_n, ta_pend, ta_req, tb_pend, tb_req);
-                for i in 0..$crate::rtl::PAIR_BUF {
+                for i in 0..$crate::chip::rtl::PAIR_BUF {
                     self.ahd_ent[i].clock.next = self.clock.val();
                     self.ahd_ent[i].d.next = self.ahd_ent[i].q.val();
                     self.ahd_fetch[i].clock.next = self.clock.val();
@@ -574,11 +574,11 @@ macro_rules! chip {
                     self.wb[i].clock.next = self.clock.val();
                     self.wb[i].d.next = self.wb[i].q.val();
                 }
-                for i in 0..$crate::rtl::ASK_LIST {
+                for i in 0..$crate::chip::rtl::ASK_LIST {
                     self.ask_w[i].clock.next = self.clock.val();
                     self.ask_w[i].d.next = self.ask_w[i].q.val();
                 }
-                for i in 0..$crate::rtl::PORT_OUTSTANDING {
+                for i in 0..$crate::chip::rtl::PORT_OUTSTANDING {
                     self.tags[i].clock.next = self.clock.val();
                     self.tags[i].d.next = self.tags[i].q.val();
                 }
@@ -645,7 +645,7 @@ macro_rules! chip {
                 self.tail_dec.next = self.c_one16.val() << self.ahd_tail.q.val();
                 self.head_ent.next = 0.into();
                 self.head_fetch.next = 0.into();
-                for i in 0..$crate::rtl::PAIR_BUF {
+                for i in 0..$crate::chip::rtl::PAIR_BUF {
                     if self.head_dec.val().get_bit(i) {
                         self.head_ent.next = self.ahd_ent[i].q.val();
                         self.head_fetch.next = self.ahd_fetch[i].q.val();
@@ -672,7 +672,7 @@ macro_rules! chip {
                 self.wb_tdec.next = self.c_one16.val() << self.wb_tail.q.val();
                 self.wa_front.next = 0.into();
                 self.wb_front.next = 0.into();
-                for i in 0..$crate::rtl::PAIR_BUF {
+                for i in 0..$crate::chip::rtl::PAIR_BUF {
                     if self.wa_hdec.val().get_bit(i) {
                         self.wa_front.next = self.wa[i].q.val();
                     }
@@ -710,7 +710,7 @@ macro_rules! chip {
                 // 0 only the current pair's), while fewer than 0x126[7:4] + 1 are outstanding
                 self.ask_dec.next = self.c_one32.val() << self.ask_head.q.val();
                 self.ask_front.next = 0.into();
-                for i in 0..$crate::rtl::ASK_LIST {
+                for i in 0..$crate::chip::rtl::ASK_LIST {
                     if self.ask_dec.val().get_bit(i) {
                         self.ask_front.next = self.ask_w[i].q.val();
                     }
@@ -743,7 +743,7 @@ macro_rules! chip {
                 self.tag_hdec.next = self.c_one16.val() << self.tag_head.q.val();
                 self.tag_tdec.next = self.c_one16.val() << self.tag_tail.q.val();
                 self.resp_dst.next = 0.into();
-                for i in 0..$crate::rtl::PORT_OUTSTANDING {
+                for i in 0..$crate::chip::rtl::PORT_OUTSTANDING {
                     if self.tag_hdec.val().get_bit(i) {
                         self.resp_dst.next = self.tags[i].q.val();
                     }
@@ -776,7 +776,7 @@ macro_rules! chip {
                     self.tag_n.d.next = self.tag_n.q.val() - 1;
                 }
                 // a response: node words into their FIFO, a triangle word replaces the held one
-                for i in 0..$crate::rtl::PAIR_BUF {
+                for i in 0..$crate::chip::rtl::PAIR_BUF {
                     if self.resp.val() & (self.resp_dst.val() == 0) & self.wa_tdec.val().get_bit(i) {
                         self.wa[i].d.next = self.mem_resp_data.val().get_bits::<$NW>(0);
                     }
@@ -888,7 +888,7 @@ macro_rules! chip {
                     | (bit_cast::<4, 1>(self.fetch_b0.val().into()) << 1)
                     | (bit_cast::<4, 1>(self.fetch_a1.val().into()) << 2)
                     | (bit_cast::<4, 1>(self.fetch_b1.val().into()) << 3);
-                for i in 0..$crate::rtl::PAIR_BUF {
+                for i in 0..$crate::chip::rtl::PAIR_BUF {
                     if self.pop.val() & self.tail_dec.val().get_bit(i) {
                         self.ahd_ent[i].d.next = self.top.val();
                         self.ahd_fetch[i].d.next = self.pop_fetch.val();
@@ -919,7 +919,7 @@ macro_rules! chip {
                 self.put1.next = self.c_one32.val() << (self.ask_tail.q.val() + self.ask_off1.val());
                 self.put2.next = self.c_one32.val() << (self.ask_tail.q.val() + self.ask_off2.val());
                 self.put3.next = self.c_one32.val() << (self.ask_tail.q.val() + self.ask_off3.val());
-                for i in 0..$crate::rtl::ASK_LIST {
+                for i in 0..$crate::chip::rtl::ASK_LIST {
                     if self.pop.val() & self.pop_fetch.val().get_bit(0) & self.put0.val().get_bit(i) {
                         self.ask_w[i].d.next = bit_cast::<22, 16>(self.top.val().get_bits::<16>(0))
                             | (bit_cast::<22, 5>(self.seq_tail.q.val()) << 17);
@@ -1065,7 +1065,7 @@ macro_rules! chip {
                 self.tc_id.read_address.next = self.tc_next.val();
                 self.tc_word.read_address.next = self.tc_next.val();
                 self.tc_byp.d.next = self.tc_fill.val() & (self.tc_wr.val() == self.tc_next.val());
-                // TRI_UNIT's ports from the held triangle words (crate::memory::TriWord order)
+                // TRI_UNIT's ports from the held triangle words (crate::golden::memory::TriWord order)
                 for k in 0..3 {
                     self.tri_unit.a_v_x[k].next = self.ta_held.val().get_bits::<$WT>(3 * k * $WT);
                     self.tri_unit.a_v_y[k].next = self.ta_held.val().get_bits::<$WT>((3 * k + 1) * $WT);

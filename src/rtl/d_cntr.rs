@@ -2,7 +2,10 @@
 //! Golden: [`cycle::d_cntr::QueueModel`](crate::cycle::d_cntr::QueueModel); entry word
 //! layout: [`cycle::d_cntr`](crate::cycle::d_cntr) (`pack` / `unpack`).
 
-use crate::cycle::d_cntr::{QueueIn, QueueModel, QueueOut, ENTRY_BITS};
+use crate::chip::reg::Order;
+use crate::cycle::d_cntr::{QueueIn, QueueModel, QueueOut};
+
+use crate::chip::layout::ENTRY_BITS;
 use rand::{Rng, SeedableRng};
 use rust_hdl::prelude::*;
 use std::fmt::Write;
@@ -354,7 +357,7 @@ impl<const N: usize, const NP1: usize, const NM1: usize> PairQueue<N, NP1, NM1> 
     /// Drives the inputs of one cycle.
     pub fn set_inputs(&mut self, i: &QueueIn) {
         self.clear.next = i.clear;
-        self.lifo.next = i.lifo;
+        self.lifo.next = i.order == Order::Lifo;
         self.push.next = i.push;
         self.push_data.next = i.push_data.to_bits();
         self.push2.next = i.push2.is_some();
@@ -384,8 +387,9 @@ pub fn random_ops(rng: &mut impl Rng, n: u32, len: usize) -> Vec<QueueIn> {
     let cap = 1usize << n;
     let mut model = QueueModel::new(n);
     let mut ops = vec![];
+    let order = |lifo| if lifo { Order::Lifo } else { Order::Fifo };
     let mut lifo = rng.random_range(0..2) == 1;
-    ops.push(QueueIn { clear: true, lifo, ..Default::default() });
+    ops.push(QueueIn { clear: true, order: order(lifo), ..Default::default() });
     model.step(&ops[0]);
     while ops.len() < len {
         // (push %, pop %) of a phase: fill past full, drain, balanced, push+pop
@@ -409,14 +413,14 @@ pub fn random_ops(rng: &mut impl Rng, n: u32, len: usize) -> Vec<QueueIn> {
             }
             if rng.random_range(0..200) == 0 {
                 lifo = rng.random_range(0..2) == 1;
-                i = QueueIn { clear: true, lifo, ..i }; // push and pop ignored
+                i = QueueIn { clear: true, order: order(lifo), ..i }; // push and pop ignored
             }
             model.step(&i);
             ops.push(i);
         }
         if rng.random_range(0..3) == 0 {
             lifo = !lifo;
-            let i = QueueIn { clear: true, lifo, ..Default::default() };
+            let i = QueueIn { clear: true, order: order(lifo), ..Default::default() };
             model.step(&i);
             ops.push(i);
         }
@@ -443,7 +447,7 @@ pub fn pair_queue_vectors(name: &str, n: u32, len: usize) -> String {
         let _ = writeln!(
             out,
             "{:x} {:x} {:x} {:0dw$x} {:x} {:0dw$x} {:x} {:x} {:x} {:0dc$x} {:0dc$x} {:x} {:0dw$x}",
-            i.clear as u8, i.lifo as u8, i.push as u8, i.push_data, i.push2.is_some() as u8, i.push2.unwrap_or_default(), i.pop as u8,
+            i.clear as u8, (i.order == Order::Lifo) as u8, i.push as u8, i.push_data, i.push2.is_some() as u8, i.push2.unwrap_or_default(), i.pop as u8,
             o.empty as u8, o.full as u8, o.count, o.max_count, o.overflow as u8, o.top_data
         );
     }

@@ -5,7 +5,7 @@ macro_rules! klmsel {
     ($W:tt) => {
         /// D.KLMSEL (combinational): for every lane i, routes `d[j0[i]]`, `d[j1[i]]`,
         /// `d[j2[i]]` of the k distances of B's node to `y0[i]`, `y1[i]`, `y2[i]`.
-        /// The MUX controls `j0..j2` are the per-query [`HostSetup::j`](crate::dop::HostSetup)
+        /// The MUX controls `j0..j2` are the per-query [`HostSetup::j`](crate::golden::host::HostSetup)
         /// (`j0[i] = j[i][0]`, ...). A select of k or more routes 0.
         ///
         /// Each output is a k:1 multiplexer written as a loop comparing the select with

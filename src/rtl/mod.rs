@@ -38,40 +38,6 @@ macro_rules! top_level {
     }};
 }
 
-/// Clocks from a DOP test's issue to its result: the DOPTRF lane's pipeline
-/// ([`b32::Doptrf`]; D.KLMSEL and the NOR add no register).
-pub const DOP_LATENCY: usize = 15;
-/// The chip's leaf FIFO: overlapping leaf pairs waiting for TRI_UNIT.
-pub const LEAF_FIFO: usize = 64;
-/// The credit (DOP tests in flight plus waiting leaf pairs, which keeps the leaf FIFO from
-/// overflowing) after reset (0x126[14:9] = 0), and the most the register's 6 bits give.
-pub const CREDIT: usize = 16;
-pub const CREDIT_MAX: usize = 63;
-const _: () = assert!(CREDIT_MAX < LEAF_FIFO);
-
-/// The memory port's limits, set per query in host register 0x126
-/// ([`crate::cycle::chip::reg::PORT`], which also holds the issue spacing and the credit):
-/// node pairs prefetched at most
-/// ([`crate::cycle::Params::prefetch`]; larger values act as this) and memory requests
-/// outstanding at most. The chip's pair buffer holds `PAIR_BUF = PORT_PREFETCH + 2` pairs
-/// (as many entries), each node-word FIFO as many words, the list of node words to ask
-/// for `ASK_LIST`, the response tag FIFO `PORT_OUTSTANDING` destinations.
-pub const PORT_PREFETCH: usize = 14;
-pub const PORT_OUTSTANDING: usize = 16;
-/// Pairs (and entries, and node words per destination) the chip holds ahead of its DOP unit.
-pub const PAIR_BUF: usize = PORT_PREFETCH + 2;
-/// Node words the chip holds to ask for (two per pair).
-pub const ASK_LIST: usize = 2 * PAIR_BUF;
-// the chip's pointers into these buffers are 4 bits (5 for the ask list)
-const _: () = assert!(PAIR_BUF == 16 && PORT_OUTSTANDING == 16);
-/// A's triangle cache (WSCG'03 §4.3): `TRI_CACHE_LINES` lines of RAM in the chip, of which
-/// host register 0x127 ([`crate::cycle::chip::reg::TRI_CACHE`]) uses the first `lines`
-/// (a power of two; reset: one, the single word held).
-pub const TRI_CACHE_BITS: usize = 7;
-pub const TRI_CACHE_LINES: usize = 1 << TRI_CACHE_BITS;
-// the chip's line index and valid bits are 7 and 128 bits wide
-const _: () = assert!(TRI_CACHE_LINES == 128);
-
 mod chip;
 mod common;
 pub mod d_cntr;
@@ -119,7 +85,7 @@ macro_rules! fp_format {
         /// A constant multiplier ready to simulate as a top-level block: T.CHECK's C_V
         /// for rounded (`sel` 0) and exact (`sel` 1) vertices.
         pub fn fp_scale_top() -> FpScale {
-            let cert = $crate::golden::tcheck::Certificate::new(FORMAT, Rounding::NearestEven);
+            let cert = $crate::golden::certificate::Certificate::new(FORMAT, Rounding::NearestEven);
             top_level!(FpScale::new(cert.c_e[0], cert.c_e[1]); clock, a, sel)
         }
 
@@ -168,3 +134,17 @@ pub mod e8m15_b32 {
     // node word 1 + 24 * 24 + 64 bits, triangle word 23 * 32 + 2 (the wider)
     crate::rtl::chip::chip!(24, DopUnit24, 24, 32, 641, 738, 738);
 }
+
+// The contract's widths and latencies (`crate::chip`) are what the blocks are built with: the
+// chip! macros take literals, so each is checked here.
+macro_rules! check_widths {
+    ($m:ident, $k:literal, $wd:literal, $wt:literal) => {
+        const _: () = assert!($m::CHIP_WORD_BITS == crate::chip::layout::word_bits($k, $wd, $wt));
+        const _: () = assert!($m::TRI_WORD_BITS == crate::chip::layout::tri_bits($wt));
+    };
+}
+check_widths!(e8m15, 6, 24, 24);
+check_widths!(b32, 24, 32, 32);
+check_widths!(e8m15_b32, 24, 24, 32);
+const _: () = assert!(b32::TCheck::LATENCY == crate::chip::rtl::TCHECK_LATENCY && e8m15::TCheck::LATENCY == crate::chip::rtl::TCHECK_LATENCY);
+const _: () = assert!(b32::TriUnit::LATENCY == crate::chip::rtl::TRI_LATENCY && e8m15::TriUnit::LATENCY == crate::chip::rtl::TRI_LATENCY);

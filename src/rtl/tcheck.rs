@@ -210,7 +210,7 @@ macro_rules! tcheck {
             pub const F_AT: usize = 7;
             pub const H_AT: usize = 10;
 
-            pub fn new(cert: &$crate::golden::tcheck::Certificate) -> Self {
+            pub fn new(cert: &$crate::golden::certificate::Certificate) -> Self {
                 let c = |c: [$crate::format::ScaleConst; 2]| FpScale::new(c[0], c[1]);
                 Self {
                     clock: Default::default(),
@@ -409,7 +409,7 @@ macro_rules! tcheck {
         impl Edge {
             pub const LATENCY: usize = 27;
 
-            pub fn new(rounding: Rounding, cert: &$crate::golden::tcheck::Certificate) -> Self {
+            pub fn new(rounding: Rounding, cert: &$crate::golden::certificate::Certificate) -> Self {
                 let up = Rounding::TowardPositive;
                 Self {
                     clock: Default::default(),
@@ -861,7 +861,7 @@ macro_rules! tcheck {
             /// A T.CHECK whose value datapath rounds with `rounding` (NearestEven or
             /// TowardPositive; the certificate's units always round upward).
             pub fn new(rounding: Rounding) -> Self {
-                let cert = $crate::golden::tcheck::Certificate::new(FORMAT, rounding);
+                let cert = $crate::golden::certificate::Certificate::new(FORMAT, rounding);
                 let up = Rounding::TowardPositive;
                 Self {
                     clock: Default::default(),

@@ -6,7 +6,7 @@
 macro_rules! tri_unit {
     ($W:tt) => {
         /// log2 of the result FIFO's entries.
-        const TRI_FIFO_BITS: usize = 8;
+        const TRI_FIFO_BITS: usize = $crate::chip::rtl::TRI_FIFO_BITS;
         declare_sync_fifo!(TriFifo, Bits<34>, 256, 1);
 
         /// TRI_UNIT: is triangle a of A intersecting triangle b of B? Golden

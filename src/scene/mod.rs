@@ -73,12 +73,14 @@
 //! ```
 
 pub mod graph;
+pub mod record;
 pub mod run;
 
-use crate::config::{ChipConfig, DopRounding, Formats};
-use crate::pose::Pose;
-use crate::traversal::{Mode, Traversal};
-use rand::{Rng, SeedableRng};
+use crate::chip::config::ChipConfig;
+use crate::chip::params::Params;
+use crate::chip::reg::Mode;
+use crate::pose::{sweep_poses, Pose, ScenePose, Sweep};
+use crate::traversal::Traversal;
 use serde::Deserialize;
 use std::path::Path;
 
@@ -90,7 +92,7 @@ pub const DEFAULT_SCENE: &str = include_str!("../../vectors/scenes/default.toml"
 struct File {
     objects: Objects,
     #[serde(default)]
-    chip: ChipSection,
+    chip: ChipConfig,
     #[serde(default)]
     query: QuerySection,
     #[serde(default)]
@@ -100,23 +102,29 @@ struct File {
     outputs: OutputsSection,
     #[serde(default)]
     memory: MemorySection,
-    #[serde(default)]
-    timing: TimingSection,
+    /// [`Params`] and the host's `clock_mhz`, read in two steps ([`timing`]).
+    timing: Option<toml::Spanned<toml::Table>>,
 }
 
-#[derive(Debug, Default, Deserialize)]
-#[serde(deny_unknown_fields)]
-struct TimingSection {
-    queue_entries: Option<u32>,
-    dop_latency: Option<u32>,
-    tri_latency: Option<u32>,
-    tri_fifo: Option<u32>,
-    issue_spacing: Option<u32>,
-    credit: Option<u32>,
-    outstanding: Option<u32>,
-    prefetch: Option<u32>,
-    clock_mhz: Option<f64>,
+/// `[timing]`: the chip's [`Params`] (each key optional, the RTL chip's by default; the
+/// memory is `[memory]`'s) and `clock_mhz`. Errors name the section's line.
+fn timing(t: Option<toml::Spanned<toml::Table>>, text: &str) -> Result<(Params, f64), String> {
+    let Some(t) = t else { return Ok((Params::RTL, DEFAULT_CLOCK_MHZ)) };
+    let line = text[..t.span().start].matches('\n').count() + 1;
+    let mut table = t.into_inner();
+    let clock_mhz = match table.remove("clock_mhz") {
+        None => DEFAULT_CLOCK_MHZ,
+        Some(toml::Value::Float(x)) => x,
+        Some(toml::Value::Integer(i)) => i as f64,
+        Some(v) => return Err(format!("{line}: [timing] clock_mhz must be a number of MHz, not {v}")),
+    };
+    let params = Params::deserialize(table).map_err(|e| format!("{line}: [timing]: {}", e.message()))?;
+    Ok((params, clock_mhz))
 }
+
+/// The chip's clock without a `[timing] clock_mhz`: DATE'05's 800 MHz (an assumption, not a
+/// measured period).
+pub const DEFAULT_CLOCK_MHZ: f64 = 800.0;
 
 /// `[memory]`: the ideal model (`latency`, `interval`, `bus_bits`; the default, 1, 1 and a
 /// word per clock) or
@@ -137,8 +145,10 @@ struct MemorySection {
 }
 
 impl MemorySection {
-    fn memory(&self) -> Result<crate::cycle::Memory, String> {
-        use crate::cycle::{Ddr, MemTiming, Memory};
+    fn memory(&self) -> Result<crate::chip::memory::Memory, String> {
+        use crate::chip::memory::Ddr;
+        use crate::chip::memory::MemTiming;
+        use crate::chip::memory::Memory;
         let ddr_keys = [self.banks, self.page_bytes, self.burst, self.hit, self.miss];
         match self.model.as_deref().unwrap_or("ideal") {
             "ideal" => {
@@ -194,7 +204,7 @@ impl std::fmt::Display for CrossCheck {
     }
 }
 
-/// Which traversal VCDs a scene writes: one per pose into `dir`, the [`crate::cycle::PROBES`]
+/// Which traversal VCDs a scene writes: one per pose into `dir`, the [`crate::chip::probes::PROBES`]
 /// of `scopes` (all if empty) in cycles `window` (the scene's `cycles = [first, last]`).
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Waveforms {
@@ -243,7 +253,7 @@ impl Waveforms {
             _ => return Err(bad("neither a directory nor a table")),
         };
         let dir = std::path::PathBuf::from(dir);
-        let known = crate::cycle::probe_scopes();
+        let known = crate::chip::probes::probe_scopes();
         let scopes = scopes.unwrap_or_default();
         if let Some(s) = scopes.iter().find(|s| !known.contains(&s.as_str())) {
             return Err(format!("[outputs] waveforms: no scope {s:?}; the scopes are {}", known.join(", ")));
@@ -280,31 +290,9 @@ pub struct Objects {
 
 #[derive(Debug, Default, Deserialize)]
 #[serde(deny_unknown_fields)]
-struct ChipSection {
-    k: Option<usize>,
-    format: Option<String>,
-    dop_rounding: Option<DopRounding>,
-    tri_cache: Option<u32>,
-}
-
-#[derive(Debug, Default, Deserialize)]
-#[serde(deny_unknown_fields)]
 struct QuerySection {
     mode: Option<Mode>,
     traversal: Option<Traversal>,
-}
-
-#[derive(Debug, Clone, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct Sweep {
-    pub distances: Vec<f64>,
-    pub orientations: usize,
-    #[serde(default = "one")]
-    pub seed: u64,
-}
-
-fn one() -> u64 {
-    1
 }
 
 #[derive(Debug, Clone, Default, Deserialize)]
@@ -342,13 +330,6 @@ pub struct Outputs {
     pub cross_check: Option<CrossCheck>,
 }
 
-/// One pose of a scene, with the sweep distance it belongs to (if any).
-#[derive(Debug, Clone, Copy)]
-pub struct ScenePose {
-    pub pose: Pose,
-    pub distance: Option<f64>,
-}
-
 /// A validated scene.
 #[derive(Debug)]
 pub struct Scene {
@@ -360,7 +341,7 @@ pub struct Scene {
     pub poses: Vec<ScenePose>,
     pub outputs: Outputs,
     /// The cycle model's microarchitecture and memory model.
-    pub params: crate::cycle::Params,
+    pub params: Params,
     /// The chip's clock, for its time per query.
     pub clock_mhz: f64,
 }
@@ -392,21 +373,8 @@ impl Scene {
             }
         })?;
         let err = |m: String| format!("{name}: {m}");
-        let mut cfg = ChipConfig::default();
-        if let Some(k) = f.chip.k {
-            crate::dop::DopNormals::get(k).map_err(err)?;
-            cfg.k = k;
-        }
-        if let Some(fmt) = &f.chip.format {
-            cfg.format = fmt.parse::<Formats>().map_err(err)?;
-        }
-        if let Some(r) = f.chip.dop_rounding {
-            cfg.dop_rounding = r;
-        }
-        if let Some(lines) = f.chip.tri_cache {
-            crate::memory::TriCache::check(lines).map_err(|e| err(format!("[chip] {e}")))?;
-            cfg.tri_cache = lines;
-        }
+        let cfg = f.chip;
+        cfg.check().map_err(|e| err(format!("[chip] {e}")))?;
         let poses = match (&f.sweep, f.pose.is_empty()) {
             (Some(_), false) => return Err(err("give either [[pose]] entries or a [sweep], not both".into())),
             (None, true) => return Err(err("no pose: add a [[pose]] (rot_deg, t) or a [sweep]".into())),
@@ -416,21 +384,9 @@ impl Scene {
         if let Some(p) = poses.iter().find(|p| !p.pose.rot_deg.iter().chain(&p.pose.t).all(|x| x.is_finite())) {
             return Err(err(format!("pose {} has a non-finite number", p.pose.text())));
         }
-        let t = &f.timing;
-        let rtl = crate::cycle::Params::RTL;
-        let params = crate::cycle::Params {
-            queue_entries: t.queue_entries.unwrap_or(rtl.queue_entries),
-            dop_latency: t.dop_latency.unwrap_or(rtl.dop_latency),
-            tri_latency: t.tri_latency.unwrap_or(rtl.tri_latency),
-            tri_fifo: t.tri_fifo.unwrap_or(rtl.tri_fifo),
-            issue_spacing: t.issue_spacing.unwrap_or(rtl.issue_spacing),
-            credit: t.credit.unwrap_or(rtl.credit),
-            outstanding: t.outstanding.unwrap_or(rtl.outstanding),
-            prefetch: t.prefetch.unwrap_or(rtl.prefetch),
-            memory: f.memory.memory().map_err(err)?,
-        };
+        let (mut params, clock_mhz) = timing(f.timing, text).map_err(|e| format!("{name}:{e}"))?;
+        params.memory = f.memory.memory().map_err(err)?;
         params.check().map_err(|e| err(format!("[timing] / [memory]: {e}")))?;
-        let clock_mhz = t.clock_mhz.unwrap_or(800.0);
         if !(clock_mhz.is_finite() && clock_mhz > 0.0) {
             return Err(err(format!("[timing] clock_mhz must be a positive number of MHz, not {clock_mhz}")));
         }
@@ -453,37 +409,6 @@ impl Scene {
             clock_mhz,
         })
     }
-}
-
-/// The most poses a sweep may have: each is a full query, and the poses are held in memory.
-pub const MAX_POSES: usize = 1_000_000;
-
-/// The WSCG'03 benchmark protocol: at each distance (centres apart along x), B takes
-/// `orientations` rotations with angles drawn uniformly from [0, 360) degrees (seeded).
-pub fn sweep_poses(s: &Sweep) -> Result<Vec<ScenePose>, String> {
-    if s.distances.is_empty() || s.orientations == 0 {
-        return Err("a sweep needs at least one distance and one orientation".into());
-    }
-    if let Some(d) = s.distances.iter().find(|d| !d.is_finite()) {
-        return Err(format!("sweep distance {d} is not finite"));
-    }
-    let n = s.distances.len().saturating_mul(s.orientations);
-    if n > MAX_POSES {
-        return Err(format!(
-            "a sweep of {} distances x {} orientations is {n} poses; at most {MAX_POSES} poses \
-             (each is a full query): use fewer orientations",
-            s.distances.len(),
-            s.orientations
-        ));
-    }
-    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(s.seed);
-    let rots: Vec<[f64; 3]> = (0..s.orientations)
-        .map(|_| [rng.random_range(0.0..360.0), rng.random_range(0.0..360.0), rng.random_range(0.0..360.0)])
-        .collect();
-    Ok(s.distances
-        .iter()
-        .flat_map(|&d| rots.iter().map(move |&r| ScenePose { pose: Pose { rot_deg: r, t: [d, 0.0, 0.0] }, distance: Some(d) }))
-        .collect())
 }
 
 #[cfg(test)]
@@ -522,7 +447,8 @@ mod tests {
 
     #[test]
     fn cycle_outputs_timing_and_memory() {
-        use crate::cycle::{MemTiming, Params};
+        use crate::chip::memory::MemTiming;
+        use crate::chip::params::Params;
         let base = "[objects]\na = \"sphere:12\"\nb = \"sphere:12\"\n[[pose]]\nrot_deg=[0,0,0]\nt=[0,0,0]\n";
         let s = Scene::parse(&format!("{base}[outputs]\nwaveforms = \"w\"\n[memory]\nlatency = 3\ninterval = 2\n"), "s").unwrap();
         assert_eq!(s.outputs.waveforms, Some(Waveforms::all("w".into())));
@@ -548,11 +474,12 @@ mod tests {
         assert_eq!(s.outputs.waveforms.unwrap().window, 5..6);
         let e = Scene::parse(&format!("{base}[memory]\nlatncy = 2\n"), "s").unwrap_err();
         assert!(e.starts_with("s:8:"), "{e}");
-        use crate::harness::chip_io::ChipKind;
+        use crate::chip::reg::Order;
+        use crate::chip::rtl::ChipKind;
         let rtl = Scene::parse(include_str!("../../vectors/scenes/rtl_spheres.toml"), "rtl_spheres").unwrap();
-        assert_eq!(crate::harness::chip_io::rtl_order(&rtl.cfg, rtl.traversal, &rtl.params), Ok((ChipKind::K6E8m15, true)));
+        assert_eq!(crate::harness::chip_io::rtl_order(&rtl.cfg, rtl.traversal, &rtl.params), Ok((ChipKind::K6E8m15, Order::Lifo)));
         // the default configuration is the papers' chip
-        assert_eq!(crate::harness::chip_io::rtl_order(&ChipConfig::default(), Traversal::Fifo, &rtl.params), Ok((ChipKind::K24B32, false)));
+        assert_eq!(crate::harness::chip_io::rtl_order(&ChipConfig::default(), Traversal::Fifo, &rtl.params), Ok((ChipKind::K24B32, Order::Fifo)));
         let e = crate::harness::chip_io::rtl_order(&ChipConfig { k: 14, ..ChipConfig::default() }, Traversal::Lifo, &rtl.params).unwrap_err();
         assert!(e.contains("k = 6 in format reduced (e8m15) and k = 24 in binary32") && e.contains("k = 14"), "{e}");
         // the triangle cache: a power of two; the RTL chips hold one word
@@ -569,7 +496,7 @@ mod tests {
         assert!(e.contains("[timing]"), "{e}");
         // the memory port's register: within its fields, and no further
         let port = Params { prefetch: 14, outstanding: 16, credit: 63, issue_spacing: 1, ..rtl.params };
-        assert_eq!(crate::harness::chip_io::rtl_order(&rtl.cfg, Traversal::Lifo, &port), Ok((ChipKind::K6E8m15, true)));
+        assert_eq!(crate::harness::chip_io::rtl_order(&rtl.cfg, Traversal::Lifo, &port), Ok((ChipKind::K6E8m15, Order::Lifo)));
         for p in [Params { prefetch: 15, ..port }, Params { outstanding: 17, ..port }, Params { credit: 64, ..port }] {
             let e = crate::harness::chip_io::rtl_order(&rtl.cfg, Traversal::Lifo, &p).unwrap_err();
             assert!(e.contains("at most 14 pairs with at most 16 requests outstanding and a credit of at most 63"), "{e}");
@@ -580,14 +507,15 @@ mod tests {
     /// unknown keys are errors that say what to write.
     #[test]
     fn memory_models_and_presets() {
-        use crate::cycle::{Ddr, Memory};
+        use crate::chip::memory::Ddr;
+        use crate::chip::memory::Memory;
         let base = "[objects]\na = \"sphere:12\"\nb = \"sphere:12\"\n[[pose]]\nrot_deg=[0,0,0]\nt=[0,0,0]\n[memory]\n";
         let mem = |m: &str| Scene::parse(&format!("{base}{m}"), "s").map(|s| s.params.memory);
         assert_eq!(mem("model = \"ddr\"\npreset = \"wscg03\""), Ok(Memory::Ddr(Ddr::WSCG03)));
         assert_eq!(mem("model = \"ddr\"\npreset = \"date05\"\nbanks = 4"), Ok(Memory::Ddr(Ddr { banks: 4, ..Ddr::DATE05 })));
         let own = "model = \"ddr\"\nbanks = 2\npage_bytes = 1024\nbus_bits = 64\nburst = 4\nhit = 6\nmiss = 12";
         assert_eq!(mem(own), Ok(Memory::Ddr(Ddr { banks: 2, page_bytes: 1024, bus_bits: 64, burst: 4, hit: 6, miss: 12 })));
-        assert_eq!(mem("latency = 8\nbus_bits = 128"), Ok(Memory::Ideal(crate::cycle::MemTiming { latency: 8, interval: 1, bus_bits: Some(128) })));
+        assert_eq!(mem("latency = 8\nbus_bits = 128"), Ok(Memory::Ideal(crate::chip::memory::MemTiming { latency: 8, interval: 1, bus_bits: Some(128) })));
         for (m, want) in [
             ("model = \"ddr\"", "needs a preset"),
             ("model = \"ddr\"\nbanks = 2\npage_bytes = 1024\nbus_bits = 64\nburst = 4\nhit = 6", "(miss is missing)"),
@@ -620,23 +548,5 @@ mod tests {
         let _ = std::fs::remove_dir_all(&dir);
         assert_eq!(Path::new(&s.objects.a), dir.join("sub/m.obj"));
         assert_eq!(s.objects.b, "sphere:12");
-    }
-
-    #[test]
-    fn sweep_size_is_checked_first() {
-        let e = sweep_poses(&Sweep { distances: vec![1.0, 2.0], orientations: usize::MAX, seed: 1 }).unwrap_err();
-        assert!(e.contains("at most 1000000 poses"), "{e}");
-        assert_eq!(sweep_poses(&Sweep { distances: vec![1.0], orientations: MAX_POSES, seed: 1 }).unwrap().len(), MAX_POSES);
-    }
-
-    #[test]
-    fn sweep_is_distances_times_orientations_and_seeded() {
-        let s = Sweep { distances: vec![2.0, 1.0], orientations: 3, seed: 7 };
-        let p = sweep_poses(&s).unwrap();
-        assert_eq!(p.len(), 6);
-        assert_eq!(p[0].pose.rot_deg, p[3].pose.rot_deg);
-        assert_eq!(p[4].pose.t, [1.0, 0.0, 0.0]);
-        let q = sweep_poses(&Sweep { seed: 8, ..s }).unwrap();
-        assert_ne!(p[0].pose.rot_deg, q[0].pose.rot_deg);
     }
 }

@@ -2,14 +2,16 @@
 //! at all; [`Activity`] counts what ran, so that tests can prove it.
 
 use super::graph::{Plan, Unit};
-use super::{CrossCheck, Scene, ScenePose};
+use super::{CrossCheck, Scene};
+use crate::pose::ScenePose;
 use crate::cycle::{self, drive::Reader};
 use crate::harness::{chip_io, verilator};
 use crate::measure::parallel_map;
 use crate::oracle;
 use crate::query::{exact_pairs, Accuracy, Chip};
-use crate::report::{CycleRecord, MemoryRecord, PoseRecord};
-use crate::traversal::{Mode, QueryResult, Traversal};
+use super::record::{CycleRecord, MemoryRecord, PoseRecord};
+use crate::traversal::QueryResult;
+use crate::chip::reg::Mode;
 use serde::Serialize;
 
 /// What a scene run built and ran (counted where it happens, not inferred from the
@@ -66,7 +68,7 @@ impl<'s> Prepared<'s> {
     pub fn new(scene: &'s Scene, load: impl Fn(&str) -> Result<crate::mesh::Mesh, String>) -> Result<Self, String> {
         let named = |e: String| format!("{}: {e}", scene.name);
         let plan = Plan::of(scene);
-        if plan.runs(Unit::DCntr) && !matches!(scene.traversal, Traversal::Fifo | Traversal::Lifo) {
+        if plan.runs(Unit::DCntr) && scene.traversal.order().is_none() {
             return Err(named(format!(
                 "cycles, memory, waveforms and cross-checks come from the chip's D_CNTR, which runs the fifo or lifo traversal, not {:?}: set [query] traversal",
                 scene.traversal
@@ -81,9 +83,9 @@ impl<'s> Prepared<'s> {
         let (a, b) = (ma.triangles_f64(), mb.triangles_f64());
         let chip = Chip::new(&a, &b, scene.cfg).map_err(named)?;
         scene.poses.iter().try_for_each(|sp| chip.check_pose(&sp.pose)).map_err(named)?;
-        if let Some((kind, lifo)) = rtl {
+        if let Some((kind, order)) = rtl {
             // the images the RTL reads: node ids and memory words within its widths
-            chip_io::QueryImage::new(kind, &chip.a, &chip.b, &chip.setup(&scene.poses[0].pose), lifo, scene.mode, &scene.params, chip.cfg.tri_cache).map_err(named)?;
+            chip_io::QueryImage::new(kind, &chip.a, &chip.b, &chip.setup(&scene.poses[0].pose), order, scene.mode, &scene.params, chip.cfg.tri_cache).map_err(named)?;
         }
         let verilog = match plan.cross_check {
             Some(CrossCheck::Verilog) => {
@@ -147,7 +149,7 @@ impl<'s> Prepared<'s> {
 
     fn cycles(&self, i: usize, sp: &ScenePose, res: &QueryResult, software_us: f64, counts: &Counts) -> Result<CycleRecord, String> {
         let (s, plan, chip) = (self.scene, &self.plan, &self.chip);
-        let lifo = s.traversal == Traversal::Lifo;
+        let order = s.traversal.order().expect("checked in Prepared::new");
         let setup = chip.setup(&sp.pose);
         let wave = s.outputs.waveforms.as_ref().filter(|_| plan.runs(Unit::WaveformWriter));
         let vcd = wave.map(|w| w.dir.join(format!("pose{i}.vcd")));
@@ -162,7 +164,7 @@ impl<'s> Prepared<'s> {
             vcd: vcd.as_deref().zip(wave).map(|(p, w)| (p, &w.scopes[..], w.window.clone())),
             probes: self.verilog.as_ref().map(|_| &mut observe as &mut dyn FnMut(u64, &[u64]) -> Result<(), String>),
         };
-        let (trace, stats) = cycle::run_query(chip, &setup, lifo, s.mode, s.params, Reader::default(), cycle::MAX_CYCLES, rec)
+        let (trace, stats) = cycle::run_query(chip, &setup, order, s.mode, s.params, Reader::default(), cycle::MAX_CYCLES, rec)
             .map_err(|e| format!("pose {i}: {e}"))?;
         counts.add(|a| {
             a.cycle_runs += 1;
@@ -183,7 +185,7 @@ impl<'s> Prepared<'s> {
         let cross_checked = match plan.cross_check {
             None => None,
             Some(CrossCheck::Rtl) => {
-                let speed = chip_io::ChipKind::of(&chip.cfg).map_or(1.0, |k| k.rtl_clocks_per_second());
+                let speed = crate::chip::rtl::ChipKind::of(&chip.cfg).map_or(1.0, |k| k.rtl_clocks_per_second());
                 let hours = trace.cycles as f64 / speed / 3600.0;
                 if hours > 0.5 {
                     return Err(format!(
@@ -203,7 +205,7 @@ impl<'s> Prepared<'s> {
             Some(CrossCheck::Verilog) => {
                 let bin = self.verilog.as_deref().expect("built in Prepared::new");
                 let (kind, _) = chip_io::rtl_order(&chip.cfg, s.traversal, &s.params).map_err(|e| format!("pose {i}: {e}"))?;
-                let image = chip_io::QueryImage::new(kind, &chip.a, &chip.b, &setup, lifo, s.mode, &s.params, chip.cfg.tri_cache).map_err(|e| format!("pose {i}: {e}"))?;
+                let image = chip_io::QueryImage::new(kind, &chip.a, &chip.b, &setup, order, s.mode, &s.params, chip.cfg.tri_cache).map_err(|e| format!("pose {i}: {e}"))?;
                 let dir = verilator::work_dir().join(format!("pose{i}"));
                 verilator::cross_check(bin, &dir, &image, s.params.memory, 2 * trace.cycles + 1000, &ports, &trace)
                     .map_err(|e| format!("pose {i}: {e}"))?;
@@ -305,13 +307,6 @@ mod tests {
             // all pairs: the chip's tests are the golden traversal's
             assert_eq!((c.dop_tests, c.tri_tests), (p.counters.dop_tests, p.counters.tri_tests));
         }
-        // the stall table's tests per clock: the pose group's tests over its clocks
-        let d06: Vec<_> = cyc.records.iter().filter(|r| r.distance == Some(0.6)).map(|r| r.cycles.as_ref().unwrap()).collect();
-        let clocks = d06.iter().map(|c| c.cycles).sum::<u64>() as f64;
-        let per = |f: fn(&&CycleRecord) -> u64| format!("{:.3}", d06.iter().map(f).sum::<u64>() as f64 / clocks);
-        let row = crate::report::stall_table(&cyc.records).lines().find(|l| l.starts_with("d=0.6")).unwrap().to_string();
-        let cols: Vec<&str> = row.split_whitespace().collect();
-        assert_eq!(cols[cols.len() - 3..cols.len() - 1], [per(|c| c.dop_tests), per(|c| c.tri_tests)], "{row}");
     }
 
     #[test]

@@ -3,34 +3,28 @@
 //! inner/leaf pair to two), only in different orders, so they return the same pairs:
 //! - [`recursive`]: the classic simultaneous recursion (WSCG'03 Algorithm 1), software baseline;
 //! - [`list`]: the list-based scheme that transforms each tumbled node once (WSCG'03 Algorithm 2);
-//! - [`d_cntr`]: the DATE'05 D_CNTR, a FIFO or LIFO of node pairs pushed and popped pairwise
-//!   in the order that shares one DOP between consecutive tests.
+//! - DATE'05's D_CNTR ([`golden::d_cntr`](crate::golden::d_cntr)), a FIFO or LIFO of node
+//!   pairs pushed and popped pairwise in the order that shares one DOP between consecutive
+//!   tests.
 //!
 //! Object A is aligned (its DOPs are the e of Eq. 10), object B tumbled (its DOPs are the d).
 //! Leaf/leaf pairs are DOP-tested before the triangle test (the leaf DOP is in the node word
 //! anyway and filters most triangle tests at one DOP test per cycle).
 
-pub mod d_cntr;
 pub mod list;
 pub mod recursive;
 
-use crate::config::ChipConfig;
+use crate::chip::config::ChipConfig;
+use crate::chip::layout::Layout;
+use crate::chip::reg::{Mode, Order};
 use crate::dop::tree::Tri;
+use crate::dop::Node;
+use crate::golden::host::HostSetup;
+use crate::golden::memory::{ObjectImage, TriCache};
+use crate::golden::{d_cntr, dop_unit, tri_unit};
 use crate::oracle;
 use nalgebra::{Matrix3, Vector3};
-use crate::dop::{HostSetup, Node};
-use crate::golden::{doptrf, tcheck};
-use crate::memory::{Layout, ObjectImage, TriCache};
 use serde::{Deserialize, Serialize};
-
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, clap::ValueEnum)]
-#[serde(rename_all = "kebab-case")]
-pub enum Mode {
-    /// Every intersecting triangle pair.
-    All,
-    /// Stop at the first intersecting pair ("do they touch?").
-    First,
-}
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, clap::ValueEnum)]
 #[serde(rename_all = "kebab-case")]
@@ -47,6 +41,15 @@ pub enum Traversal {
 
 impl Traversal {
     pub const ALL: [Traversal; 4] = [Traversal::Recursive, Traversal::List, Traversal::Fifo, Traversal::Lifo];
+
+    /// D_CNTR's order, for the traversals the chip runs.
+    pub fn order(self) -> Option<Order> {
+        match self {
+            Traversal::Fifo => Some(Order::Fifo),
+            Traversal::Lifo => Some(Order::Lifo),
+            Traversal::Recursive | Traversal::List => None,
+        }
+    }
 }
 
 /// What one query did, in the units the hardware pays for.
@@ -118,8 +121,8 @@ pub(crate) struct Engine<'a> {
     pairs: Vec<(u32, u32)>,
     uncertain: Vec<(u32, u32)>,
     live: u64,
-    dop_unit: doptrf::TransformCache<'a>,
-    tri_unit: tcheck::TriUnit<'a>,
+    dop_unit: dop_unit::TransformCache<'a>,
+    tri_unit: tri_unit::TriUnit<'a>,
     pub(crate) counters: Counters,
     pub(crate) stop: bool,
 }
@@ -211,19 +214,19 @@ pub fn run(
         pairs: vec![],
         uncertain: vec![],
         live: 0,
-        dop_unit: match doptrf::TransformCache::new(cfg.format.dop, cfg.dop_rounding.op(), setup, b.tree.len()) {
+        dop_unit: match dop_unit::TransformCache::new(cfg.format.dop, cfg.dop_rounding.op(), setup, b.tree.len()) {
             c if traversal == Traversal::Recursive => c.without_memo(),
             c => c,
         },
-        tri_unit: tcheck::TriUnit::new(cfg.format.tri, cfg.tri_rounding, setup, a.tris.len(), b.tris.len()),
+        tri_unit: tri_unit::TriUnit::new(cfg.format.tri, cfg.tri_rounding, setup, a.tris.len(), b.tris.len()),
         counters: Counters::default(),
         stop: false,
     };
     match traversal {
         Traversal::Recursive => recursive::run(&mut e),
         Traversal::List => list::run(&mut e),
-        Traversal::Fifo => d_cntr::run(&mut e, d_cntr::Order::Fifo),
-        Traversal::Lifo => d_cntr::run(&mut e, d_cntr::Order::Lifo),
+        Traversal::Fifo => run_d_cntr(&mut e, Order::Fifo),
+        Traversal::Lifo => run_d_cntr(&mut e, Order::Lifo),
     }
     let mut c = e.counters;
     c.memory_bytes = c.node_fetches * e.layout.node_bytes() + c.tri_fetches * e.layout.tri_bytes();
@@ -231,4 +234,30 @@ pub fn run(
     pairs.sort_unstable();
     uncertain.sort_unstable();
     QueryResult { pairs, uncertain, counters: c }
+}
+
+/// DATE'05's traversal: every pair of D_CNTR's queue DOP-tested in turn, a leaf pair's
+/// triangles tested, the child entries of an overlapping pair pushed.
+fn run_d_cntr(e: &mut Engine, order: Order) {
+    let mut q = d_cntr::Queue::new(order);
+    e.queue_add(1);
+    while let Some(ent) = q.pop() {
+        e.queue_remove(ent.len as u64);
+        for &p in &ent.pairs[..ent.len as usize] {
+            if e.stop {
+                return;
+            }
+            e.counters.dop_transforms += 1; // DOPTRF transforms within every test
+            if !e.dop_test(p.a, p.b) {
+                continue;
+            }
+            let (na, nb) = (e.node_a(p.a), e.node_b(p.b));
+            if let (Node::Leaf(ta), Node::Leaf(tb)) = (na, nb) {
+                e.leaf_pair(ta, tb);
+                continue;
+            }
+            let n = q.push_children(p, na, nb);
+            e.queue_add(2 * n as u64);
+        }
+    }
 }

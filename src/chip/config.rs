@@ -4,6 +4,11 @@
 use crate::format::{Format, Rounding};
 use serde::{Deserialize, Serialize};
 
+/// The k of the normal sets there are (`dop::normals`: DATE'05 Fig. 1 and its relatives).
+pub const SUPPORTED_K: [usize; 5] = [6, 14, 18, 24, 26];
+/// Lines of A's triangle cache at most: WSCG'03 assumes 128 (11 KB at binary32).
+pub const TRI_CACHE_MAX_LINES: u32 = 1024;
+
 /// How the DOP datapath and the host round (DESIGN.md 1.1, 3).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[serde(rename_all = "kebab-case")]
@@ -100,7 +105,10 @@ impl From<Formats> for String {
     }
 }
 
+/// A query's chip configuration. Scenes and the CLI deserialize it directly (each key
+/// optional, [`Default`] the papers' chip) and call [`check`](ChipConfig::check) once.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
 pub struct ChipConfig {
     pub k: usize,
     pub format: Formats,
@@ -108,14 +116,23 @@ pub struct ChipConfig {
     /// Rounding of every T.CHECK operation.
     pub tri_rounding: Rounding,
     /// Lines of the triangle cache for A's triangle words (WSCG'03 §4.3: direct mapped, 128
-    /// lines; [`TriCache`](crate::memory::TriCache)); 1: the single word held, as for B's
+    /// lines; [`TriCache`](crate::golden::memory::TriCache)); 1: the single word held, as for B's
     /// and in the RTL chips.
-    #[serde(default = "one_line")]
     pub tri_cache: u32,
 }
 
-fn one_line() -> u32 {
-    1
+impl ChipConfig {
+    /// Errors say what a valid k and triangle cache are.
+    pub fn check(&self) -> Result<(), String> {
+        if !SUPPORTED_K.contains(&self.k) {
+            return Err(format!("k = {} is not supported; choose one of 6, 14, 18, 24, 26", self.k));
+        }
+        let lines = self.tri_cache;
+        if !(lines.is_power_of_two() && lines <= TRI_CACHE_MAX_LINES) {
+            return Err(format!("tri_cache must be a power of two from 1 to {TRI_CACHE_MAX_LINES} lines (WSCG'03: 128), not {lines}"));
+        }
+        Ok(())
+    }
 }
 
 impl Default for ChipConfig {

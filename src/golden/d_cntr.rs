@@ -5,37 +5,10 @@
 //! flip bit set starts with its second child. This reproduces the paper's FIFO sequence
 //! `A1 - B2 B3 C3 C2 - D4 D5 E5 E4 - E6 E7 D7 D6 - F6 F7 G7 G6 - G4 G5 F5 F4`.
 
-use super::Engine;
+use crate::chip::layout::{Entry, Pair};
+use crate::chip::reg::Order;
 use crate::dop::{DopTree, Node};
 use std::collections::VecDeque;
-
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Order {
-    Fifo,
-    Lifo,
-}
-
-/// A node pair: A's node, B's node, the flip bit.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct Pair {
-    pub a: u32,
-    pub b: u32,
-    pub flip: bool,
-}
-
-/// One queue entry: two pairs (one for the root pair), pushed and popped together.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Entry {
-    pub pairs: [Pair; 2],
-    pub len: u8,
-}
-
-/// The entry of the all-zero word: one pair, (0, 0) (what an empty queue shows).
-impl Default for Entry {
-    fn default() -> Self {
-        Entry { pairs: [Pair::default(); 2], len: 1 }
-    }
-}
 
 /// The child pairs of an overlapping pair in the DOP-sharing order, as queue entries of
 /// two pairs: two entries for inner/inner, one for inner/leaf, none for leaf/leaf.
@@ -65,36 +38,38 @@ pub fn children(p: Pair, na: Node, nb: Node) -> ([Entry; 2], usize) {
     }
 }
 
-pub(crate) fn run(e: &mut Engine, order: Order) {
-    let root = Pair { a: DopTree::ROOT, b: DopTree::ROOT, flip: false };
-    let mut q: VecDeque<Entry> = VecDeque::from([Entry { pairs: [root, root], len: 1 }]);
-    e.queue_add(1);
-    while let Some(ent) = match order {
-        Order::Fifo => q.pop_front(),
-        Order::Lifo => q.pop_back(),
-    } {
-        e.queue_remove(ent.len as u64);
-        for &p in &ent.pairs[..ent.len as usize] {
-            if e.stop {
-                return;
-            }
-            e.counters.dop_transforms += 1; // DOPTRF transforms within every test
-            if !e.dop_test(p.a, p.b) {
-                continue;
-            }
-            let (na, nb) = (e.node_a(p.a), e.node_b(p.b));
-            if let (Node::Leaf(ta), Node::Leaf(tb)) = (na, nb) {
-                e.leaf_pair(ta, tb);
-                continue;
-            }
-            let (ch, n) = children(p, na, nb);
-            e.queue_add(2 * n as u64);
-            match order {
-                Order::Fifo => ch[..n].iter().for_each(|&c| q.push_back(c)),
-                // Reversed so that the first entry is popped next.
-                Order::Lifo => ch[..n].iter().rev().for_each(|&c| q.push_back(c)),
-            }
+/// D_CNTR's queue of entries, taken in its order: the root pair's entry first, then the
+/// child entries of every overlapping pair as [`children`] orders them.
+pub struct Queue {
+    order: Order,
+    q: VecDeque<Entry>,
+}
+
+impl Queue {
+    /// The queue at a query's start: the root pair (0, 0).
+    pub fn new(order: Order) -> Queue {
+        let root = Pair { a: DopTree::ROOT, b: DopTree::ROOT, flip: false };
+        Queue { order, q: VecDeque::from([Entry { pairs: [root, root], len: 1 }]) }
+    }
+
+    /// The next entry: the oldest (FIFO) or the newest (LIFO).
+    pub fn pop(&mut self) -> Option<Entry> {
+        match self.order {
+            Order::Fifo => self.q.pop_front(),
+            Order::Lifo => self.q.pop_back(),
         }
+    }
+
+    /// Pushes the child entries of the overlapping pair `p` of nodes `na`, `nb` (not both
+    /// leaves); returns how many.
+    pub fn push_children(&mut self, p: Pair, na: Node, nb: Node) -> usize {
+        let (ch, n) = children(p, na, nb);
+        match self.order {
+            Order::Fifo => ch[..n].iter().for_each(|&c| self.q.push_back(c)),
+            // Reversed so that the first entry is popped next.
+            Order::Lifo => ch[..n].iter().rev().for_each(|&c| self.q.push_back(c)),
+        }
+        n
     }
 }
 
@@ -109,16 +84,13 @@ mod tests {
         // Node ids: letters A..G = 0..6 and digits 1..7 = 0..6, both trees alike.
         let node = |n: u32| if n < 3 { Node::Inner([2 * n + 1, 2 * n + 2]) } else { Node::Leaf(n) };
         let name = |p: &Pair| format!("{}{}", (b'A' + p.a as u8) as char, p.b + 1);
-        let mut q: VecDeque<Entry> = VecDeque::new();
-        let root = Pair { a: 0, b: 0, flip: false };
-        q.push_back(Entry { pairs: [root, root], len: 1 });
+        let mut q = Queue::new(Order::Fifo);
         let mut seq = vec![];
-        while let Some(ent) = q.pop_front() {
+        while let Some(ent) = q.pop() {
             for p in &ent.pairs[..ent.len as usize] {
                 seq.push(name(p));
                 if p.a < 3 || p.b < 3 {
-                    let (ch, n) = children(*p, node(p.a), node(p.b));
-                    q.extend(&ch[..n]);
+                    q.push_children(*p, node(p.a), node(p.b));
                 }
             }
         }

@@ -1,46 +1,14 @@
-//! The memory image the chip fetches: per object, one node word per DOP-tree node and one
-//! triangle word per triangle. Defined once here; the traversals count fetches in these
-//! words and `docs/ARCHITECTURE.md` documents the same layout.
-//!
-//! With W = 1 + exp_bits + frac_bits (the format's width):
-//! - node word, `1 + k*W + 64` bits: `is_leaf`, d_0..d_{k-1}, then two 32-bit fields:
-//!   children (inner node) or triangle index and 0 (leaf). Node i lives at
-//!   `base + i * node_bytes`, pre-order, root at node 0.
-//! - triangle word, `23*W + 2` bits: vertices v0, v1, v2 (x, y, z each), M_B row-major
-//!   (3x4: the affine map sending the triangle to the unit triangle), its error words
-//!   `alpha_m`, `alpha_f` (see [`TriWord`]), the `v_exact` bit (the vertices needed no
-//!   rounding) and the `degenerate` bit (no usable M_B: stored as zeros).
-//!   Triangle t lives at `base + t * tri_bytes`.
+//! The memory image the chip fetches, as values: per object, one node word per DOP-tree
+//! node and one triangle word per triangle (their bit layout is
+//! [`chip::layout`](crate::chip::layout)'s); and A's triangle cache.
 
-use crate::config::ChipConfig;
-use crate::dop::host::{Affine, TriSide};
+use crate::chip::config::ChipConfig;
+use crate::chip::layout::Layout;
+use crate::golden::host::{Affine, TriSide};
 use crate::dop::tree::{DopTree, Tri};
 use crate::format::{Format, Rounding};
-use crate::golden::tcheck::Certificate;
+use crate::golden::certificate::Certificate;
 use nalgebra::{Matrix3, Vector3};
-
-/// Word sizes of one configuration.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
-pub struct Layout {
-    pub node_bits: u32,
-    pub tri_bits: u32,
-}
-
-impl Layout {
-    pub fn new(cfg: &ChipConfig) -> Layout {
-        Layout { node_bits: 1 + cfg.k as u32 * cfg.format.dop.width() + 64, tri_bits: 23 * cfg.format.tri.width() + 2 }
-    }
-    /// A memory word holds either record: the wider one.
-    pub fn word_bits(&self) -> u32 {
-        self.node_bits.max(self.tri_bits)
-    }
-    pub fn node_bytes(&self) -> u64 {
-        self.node_bits.div_ceil(8) as u64
-    }
-    pub fn tri_bytes(&self) -> u64 {
-        self.tri_bits.div_ceil(8) as u64
-    }
-}
 
 /// The triangle word of one leaf (DATE'05 §4.2: the triangle and its M_B), with the two
 /// error words T.CHECK's certificate needs (docs/ACCURACY.md, "T.CHECK's certificate").
@@ -185,7 +153,7 @@ impl ObjectImage {
     }
 
     /// What T.CHECK's error words need of A (`self`) and B for
-    /// [`HostSetup::new`](crate::dop::HostSetup::new).
+    /// [`HostSetup::new`](crate::golden::host::HostSetup::new).
     pub fn tri_side(&self, b: &ObjectImage) -> TriSide {
         TriSide { scale: [self.scale, b.scale], lambda_max_b: b.tris.iter().map(|t| t.lambda).fold(0.0, f64::max) }
     }
@@ -216,21 +184,9 @@ pub struct TriCache {
 }
 
 impl TriCache {
-    /// Lines at most: WSCG'03 assumes 128 (11 KB at binary32).
-    pub const MAX_LINES: u32 = 1024;
-
-    /// An empty cache; `lines` must pass [`TriCache::check`].
+    /// An empty cache; `lines` must pass [`ChipConfig::check`](crate::chip::config::ChipConfig::check).
     pub fn new(lines: u32) -> TriCache {
         TriCache { tags: vec![None; lines as usize] }
-    }
-
-    /// Errors say what a valid number of lines is.
-    pub fn check(lines: u32) -> Result<(), String> {
-        if lines.is_power_of_two() && lines <= Self::MAX_LINES {
-            Ok(())
-        } else {
-            Err(format!("tri_cache must be a power of two from 1 to {} lines (WSCG'03: 128), not {lines}", Self::MAX_LINES))
-        }
     }
 
     fn line(&self, t: u32) -> usize {
@@ -277,8 +233,9 @@ mod tests {
         assert_eq!(misses(1), [1, 1, 1, 1, 1, 1, 1]);
         assert_eq!(misses(4), [1, 1, 1, 1, 1, 1, 0]);
         assert_eq!(misses(8), [1, 1, 0, 1, 1, 0, 0]);
-        assert!(TriCache::check(128).is_ok() && TriCache::check(1).is_ok());
-        assert!(TriCache::check(0).is_err() && TriCache::check(96).is_err() && TriCache::check(2048).is_err());
+        let check = |tri_cache| crate::chip::config::ChipConfig { tri_cache, ..Default::default() }.check();
+        assert!(check(128).is_ok() && check(1).is_ok());
+        assert!(check(0).is_err() && check(96).is_err() && check(2048).is_err());
     }
 
     proptest! {

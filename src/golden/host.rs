@@ -11,10 +11,10 @@
 //! rounding of B's vertices into A's frame, so that d'_i bounds the f64 geometry the
 //! oracle judges. c_i is then rounded up. In `nearest-even` mode nothing is padded.
 
-use super::normals::DopNormals;
-use crate::config::{ChipConfig, DopRounding};
+use crate::dop::normals::DopNormals;
+use crate::chip::config::{ChipConfig, DopRounding};
 use crate::format::{Format, Rounding};
-use crate::golden::tcheck::Certificate;
+use crate::golden::certificate::Certificate;
 use crate::pose::Pose;
 use nalgebra::{Matrix3, Vector3};
 
@@ -40,12 +40,12 @@ pub struct HostSetup {
     pub beta_ab: [f64; 2],
     /// The same for M_BA = [R | t]; its translation error covers B's placement.
     pub beta_ba: [f64; 2],
-    /// [S_A, S_B], the objects' scales ([`crate::memory::object_scale`]).
+    /// [S_A, S_B], the objects' scales ([`crate::golden::memory::object_scale`]).
     pub scale: [f64; 2],
 }
 
 /// What T.CHECK's error words need of the two objects
-/// ([`ObjectImage::tri_side`](crate::memory::ObjectImage::tri_side)).
+/// ([`ObjectImage::tri_side`](crate::golden::memory::ObjectImage::tri_side)).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct TriSide {
     /// [S_A, S_B].

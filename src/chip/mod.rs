@@ -1,0 +1,23 @@
+//! The chip's contract: what every level (golden, cycle, rtl, Verilog) agrees on, below all
+//! of them. Nothing here computes a value or a clock; the levels import it and it imports
+//! none of them.
+//!
+//! | file | what |
+//! |---|---|
+//! | [`config`] | a query's chip configuration: k, the formats, the roundings, the triangle cache, with its one [`check`](config::ChipConfig::check) |
+//! | [`params`] | the microarchitecture's timing parameters ([`Params`](params::Params), the RTL chip's point [`Params::RTL`](params::Params::RTL)) |
+//! | [`memory`] | the memory a query runs against (ideal, DDR SDRAM; WSCG'03's and DATE'05's presets) |
+//! | [`ports`] | the chip's ports per clock and the [`Clocked`](ports::Clocked) interface of every level |
+//! | [`probes`] | the traversal signals every level shows (VCDs, lockstep) |
+//! | [`reg`] | the host register map, the query's mode and D_CNTR's order, the writes that start a query |
+//! | [`layout`] | bit layouts: node and triangle words, the memory image, the port's destinations, D_CNTR's entry |
+//! | [`rtl`] | the RTL chips' sizes and latencies, and the table of the exported chips |
+
+pub mod config;
+pub mod layout;
+pub mod memory;
+pub mod params;
+pub mod ports;
+pub mod probes;
+pub mod reg;
+pub mod rtl;

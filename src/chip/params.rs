@@ -1,0 +1,93 @@
+//! The timing parameters of the chip's microarchitecture, the cycle model's knobs and the
+//! RTL chip's point among them.
+
+use super::memory::{MemTiming, Memory};
+use super::rtl;
+use serde::{Deserialize, Serialize};
+
+/// The timing parameters of the chip's microarchitecture.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct Params {
+    /// Queue entries (two node pairs each).
+    pub queue_entries: u32,
+    /// Clocks from a DOP test's issue to its result.
+    pub dop_latency: u32,
+    /// Clocks from a pair entering TRI_UNIT to its verdict at the output.
+    pub tri_latency: u32,
+    /// TRI_UNIT's result FIFO: pairs taken and not yet given out.
+    pub tri_fifo: u32,
+    /// Clocks between two DOP issues at the least (the RTL: 2, so that the two child
+    /// entries of a result are pushed one per clock; at 1 the queue has a second write
+    /// port and takes both in one clock).
+    pub issue_spacing: u32,
+    /// DOP tests in flight plus leaf pairs waiting: the leaf FIFO's entries.
+    pub credit: u32,
+    /// Memory requests outstanding (at most one per triangle destination).
+    pub outstanding: u32,
+    /// Node pairs popped from the queue ahead of the current entry, whose node words the
+    /// port asks for before they reach the DOP unit (a pair buffer of `prefetch + 2` pairs,
+    /// their words queued in request order). 0: the port asks only for the current pair's
+    /// words. The RTL chip: 0 to 14 and `outstanding` 1 to 16, in host register 0x126.
+    pub prefetch: u32,
+    /// Not read with the others: a scene's `[memory]` is a section of its own.
+    #[serde(skip_deserializing)]
+    pub memory: Memory,
+}
+
+impl Params {
+    /// The RTL chip (`rtl/chip_e8m15_k6.v`) after reset: 2^10 queue entries, the 15-clock
+    /// DOP unit, TRI_UNIT's 130 clocks and 256-entry FIFO, issues two clocks apart, a credit
+    /// of 16, one request outstanding, no prefetch. `tb/rtl_chip.rs` checks these against
+    /// the RTL; its host register 0x126 sets the last four (`cycle::chip::reg::PORT`).
+    pub const RTL: Params = Params {
+        queue_entries: 1 << rtl::QUEUE_BITS,
+        dop_latency: rtl::DOP_LATENCY as u32,
+        tri_latency: rtl::TRI_LATENCY as u32,
+        tri_fifo: rtl::TRI_FIFO as u32,
+        issue_spacing: 2,
+        credit: rtl::CREDIT as u32,
+        outstanding: 1,
+        prefetch: 0,
+        memory: Memory::Ideal(MemTiming { latency: 1, interval: 1, bus_bits: None }),
+    };
+
+    /// Pairs prefetched at most.
+    pub const MAX_PREFETCH: u32 = 256;
+    /// Memory requests outstanding at most.
+    pub const MAX_OUTSTANDING: u32 = 64;
+
+    /// Errors name a parameter out of range.
+    pub fn check(&self) -> Result<(), String> {
+        let nonzero = [
+            ("queue_entries", self.queue_entries),
+            ("dop_latency", self.dop_latency),
+            ("tri_latency", self.tri_latency),
+            ("tri_fifo", self.tri_fifo),
+            ("credit", self.credit),
+        ];
+        if let Some((n, _)) = nonzero.iter().find(|(_, v)| *v == 0) {
+            return Err(format!("chip parameter {n} must be at least 1"));
+        }
+        if self.tri_latency < rtl::FIFO_WRITE_TO_HEAD + 1 {
+            return Err(format!("tri_latency must be at least {} (the result FIFO's registers)", rtl::FIFO_WRITE_TO_HEAD + 1));
+        }
+        if !(1..=2).contains(&self.issue_spacing) {
+            return Err("issue_spacing must be 1 or 2 clocks".into());
+        }
+        if !(1..=Params::MAX_OUTSTANDING).contains(&self.outstanding) {
+            return Err(format!("outstanding must be 1 to {} requests", Params::MAX_OUTSTANDING));
+        }
+        if self.prefetch > Params::MAX_PREFETCH {
+            return Err(format!("prefetch must be at most {} pairs", Params::MAX_PREFETCH));
+        }
+        self.memory.check()
+    }
+}
+
+impl Default for Params {
+    fn default() -> Self {
+        Params::RTL
+    }
+}
+

@@ -1,0 +1,88 @@
+//! The host registers: their addresses, fields and the writes that set up one query. The
+//! DOP unit's setup words are at `0x000 + a` (lane i's C_i0..2, c_i and D.KLMSEL control at
+//! `8 i + 0..4`), TRI_UNIT's at [`TRI_SETUP`]` + a`; the traversal's from [`MODE`] on.
+
+use super::params::Params;
+use super::rtl;
+use serde::{Deserialize, Serialize};
+
+/// TRI_UNIT's setup words (frame maps, bounds, eta).
+pub const TRI_SETUP: u32 = 0x100;
+/// The query: bit 0 the order ([`Order::Lifo`]), bit 1 first hit ([`Mode::First`]).
+pub const MODE: u32 = 0x120;
+pub const ROOT: u32 = 0x121;
+/// Word addresses of A's nodes, B's nodes, A's triangles, B's triangles (24 bits each).
+pub const BASE_NA: u32 = 0x122;
+pub const BASE_NB: u32 = 0x123;
+pub const BASE_TA: u32 = 0x124;
+pub const BASE_TB: u32 = 0x125;
+/// The memory port: bits 3:0 the pairs prefetched, 7:4 the requests outstanding at most,
+/// less one; bit 8 an issue every clock (issue spacing 1); bits 14:9 the credit (0:
+/// [`rtl::CREDIT`]). Zero after reset: the RTL's default point ([`Params::RTL`]). The cycle
+/// model takes these from its [`Params`]; [`control_writes`] writes them for the RTL.
+pub const PORT: u32 = 0x126;
+/// A's triangle cache: bits 6:0 its lines less one (`ChipConfig::tri_cache`, at most
+/// [`rtl::TRI_CACHE_LINES`] in the RTL). Zero after reset: one line.
+pub const TRI_CACHE: u32 = 0x127;
+
+/// What a query looks for.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, clap::ValueEnum)]
+#[serde(rename_all = "kebab-case")]
+pub enum Mode {
+    /// Every intersecting triangle pair.
+    All,
+    /// Stop at the first intersecting pair ("do they touch?").
+    First,
+}
+
+/// D_CNTR's order (DATE'05 §4.3): pairs wait in a FIFO (breadth first) or a LIFO (depth
+/// first). Bit 0 of [`MODE`].
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Order {
+    #[default]
+    Fifo,
+    Lifo,
+}
+
+/// The [`MODE`] word.
+pub fn mode_word(order: Order, mode: Mode) -> u32 {
+    (order == Order::Lifo) as u32 | ((mode == Mode::First) as u32) << 1
+}
+
+/// The fields of a [`MODE`] word.
+pub fn mode_fields(w: u32) -> (Order, Mode) {
+    let order = if w & 1 == 1 { Order::Lifo } else { Order::Fifo };
+    (order, if w & 2 == 2 { Mode::First } else { Mode::All })
+}
+
+/// The [`PORT`] word of `p`, in the RTL's fields (the cycle model runs larger values from
+/// `p` itself; `harness::chip_io::rtl_order` keeps the RTL's queries within them).
+pub fn port_word(p: &Params) -> u32 {
+    let credit = if p.credit == rtl::CREDIT as u32 { 0 } else { p.credit.min(rtl::CREDIT_MAX as u32) };
+    let outstanding = p.outstanding.clamp(1, rtl::PORT_OUTSTANDING as u32);
+    p.prefetch.min(0xf) | (outstanding - 1) << 4 | ((p.issue_spacing == 1) as u32) << 8 | credit << 9
+}
+
+/// The register writes that start a query after the setup words: the memory image's
+/// bases (`base`, by [`Dst`](super::layout::Dst): [`image_bases`](super::layout::image_bases)),
+/// the root, the port and the triangle cache if not at their reset values, the mode last.
+pub fn control_writes(base: [u32; 4], order: Order, mode: Mode, p: &Params, tri_cache: u32) -> Vec<(u32, u32)> {
+    use super::layout::Dst;
+    let mut w = vec![
+        (BASE_NA, base[Dst::NodeA as usize]),
+        (BASE_TA, base[Dst::TriA as usize]),
+        (BASE_NB, base[Dst::NodeB as usize]),
+        (BASE_TB, base[Dst::TriB as usize]),
+        (ROOT, 0),
+    ];
+    let port = port_word(p);
+    if port != 0 {
+        w.push((PORT, port));
+    }
+    if tri_cache > 1 {
+        w.push((TRI_CACHE, (tri_cache - 1).min(rtl::TRI_CACHE_LINES as u32 - 1)));
+    }
+    w.push((MODE, mode_word(order, mode)));
+    w
+}

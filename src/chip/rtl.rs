@@ -1,0 +1,130 @@
+//! The RTL chips: the sizes and latencies their blocks are built with, and the table of the
+//! chips exported to `rtl/` ([`rtl_chips!`]), from which the contract makes [`ChipKind`]
+//! and the harness makes the port adapters and the dispatcher over the rust-hdl types.
+//! The RTL checks its own numbers against these at compile time (`src/rtl/mod.rs`).
+
+use super::config::{ChipConfig, DopRounding, Formats};
+use crate::format::{Format, Rounding};
+
+/// Clocks from a DOP test's issue to its result: the DOPTRF lane's pipeline (D.KLMSEL and
+/// the NOR add no register).
+pub const DOP_LATENCY: usize = 15;
+/// T.CHECK's pipeline: a pair in, its verdict 52 clocks later (DATE'05's budget).
+pub const TCHECK_LATENCY: usize = 52;
+/// TRI_UNIT: a pair taken at its input shows at the output port this many clocks later
+/// (T.CHECK's, the pair register before it and the result FIFO's write after it).
+pub const TRI_LATENCY: usize = TCHECK_LATENCY + 2;
+/// TRI_UNIT's result FIFO: `2^TRI_FIFO_BITS` pairs taken and not yet given out.
+pub const TRI_FIFO_BITS: usize = 8;
+pub const TRI_FIFO: usize = 1 << TRI_FIFO_BITS;
+/// Clocks from a write into rust-hdl's synchronous FIFO (`declare_sync_fifo!`) to the
+/// entry at its head: the write pointer reaches the read side through one more register.
+pub const FIFO_WRITE_TO_HEAD: u32 = 2;
+/// The pair queue: `2^QUEUE_BITS` entries (1,024: a breadth-first (FIFO) traversal of a few
+/// hundred triangles needs about that many; LIFO a few dozen).
+pub const QUEUE_BITS: usize = 10;
+/// The chip's leaf FIFO: overlapping leaf pairs waiting for TRI_UNIT.
+pub const LEAF_FIFO: usize = 64;
+/// The credit (DOP tests in flight plus waiting leaf pairs, which keeps the leaf FIFO from
+/// overflowing) after reset (0x126[14:9] = 0), and the most the register's 6 bits give.
+pub const CREDIT: usize = 16;
+pub const CREDIT_MAX: usize = 63;
+const _: () = assert!(CREDIT_MAX < LEAF_FIFO);
+
+/// The memory port's limits, set per query in host register 0x126
+/// ([`super::reg::PORT`], which also holds the issue spacing and the credit): node pairs
+/// prefetched at most ([`super::params::Params::prefetch`]; larger values act as this) and
+/// memory requests outstanding at most. The chip's pair buffer holds `PAIR_BUF =
+/// PORT_PREFETCH + 2` pairs (as many entries), each node-word FIFO as many words, the list
+/// of node words to ask for `ASK_LIST`, the response tag FIFO `PORT_OUTSTANDING`
+/// destinations.
+pub const PORT_PREFETCH: usize = 14;
+pub const PORT_OUTSTANDING: usize = 16;
+/// Pairs (and entries, and node words per destination) the chip holds ahead of its DOP unit.
+pub const PAIR_BUF: usize = PORT_PREFETCH + 2;
+/// Node words the chip holds to ask for (two per pair).
+pub const ASK_LIST: usize = 2 * PAIR_BUF;
+// the chip's pointers into these buffers are 4 bits (5 for the ask list)
+const _: () = assert!(PAIR_BUF == 16 && PORT_OUTSTANDING == 16);
+/// A's triangle cache (WSCG'03 §4.3): `TRI_CACHE_LINES` lines of RAM in the chip, of which
+/// host register 0x127 ([`super::reg::TRI_CACHE`]) uses the first `lines` (a power of two;
+/// reset: one, the single word held).
+pub const TRI_CACHE_BITS: usize = 7;
+pub const TRI_CACHE_LINES: usize = 1 << TRI_CACHE_BITS;
+// the chip's line index and valid bits are 7 and 128 bits wide
+const _: () = assert!(TRI_CACHE_LINES == 128);
+
+/// The RTL chips, one row each: the kind's name, the exported file's name in `rtl/`, the
+/// module of `crate::rtl` that stamps it out, its configuration, and rust-hdl's speed on
+/// it in clocks per second on this project's machine (README, `cargo bench --bench
+/// chip_sim`: for estimates before a run). Every chip has DOP lanes rounding outward,
+/// T.CHECK to nearest-even and a triangle cache of [`TRI_CACHE_LINES`] lines (host register
+/// 0x127 picks how many are used). Calls `$m!` with the rows, so that each layer makes
+/// what it needs of one table: the contract [`ChipKind`], the harness its adapters.
+#[macro_export]
+macro_rules! rtl_chips {
+    ($m:ident) => {
+        $m! {
+            /// k = 6 in e8m15: small and fast to simulate.
+            K6E8m15, "chip_e8m15_k6", e8m15, (6, REDUCED, REDUCED), 14.0;
+            /// The papers' chip (DATE'05 §4): k = 24 in binary32.
+            K24B32, "chip_b32_k24", b32, (24, BINARY32, BINARY32), 4.0;
+            /// The papers' chip with its DOP datapath in e8m15 (format `e8m15/binary32`).
+            K24E8m15B32, "chip_e8m15_b32_k24", e8m15_b32, (24, REDUCED, BINARY32), 4.0;
+        }
+    };
+}
+
+macro_rules! chip_kinds {
+    ($($(#[$doc:meta])* $kind:ident, $name:literal, $module:ident, ($k:literal, $dop:ident, $tri:ident), $speed:literal;)+) => {
+        /// The RTL chips: one `CollisionChip` per configuration, exported to `rtl/<name>.v`.
+        #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+        pub enum ChipKind {
+            $($(#[$doc])* $kind,)+
+        }
+
+        impl ChipKind {
+            pub const ALL: &'static [ChipKind] = &[$(ChipKind::$kind),+];
+
+            pub const fn config(self) -> ChipConfig {
+                match self {
+                    $(ChipKind::$kind => ChipConfig {
+                        k: $k,
+                        format: Formats { dop: Format::$dop, tri: Format::$tri },
+                        dop_rounding: DopRounding::Outward,
+                        tri_rounding: Rounding::NearestEven,
+                        tri_cache: 1,
+                    },)+
+                }
+            }
+
+            /// The exported Verilog's file name in rtl/, without `.v`.
+            pub const fn name(self) -> &'static str {
+                match self {
+                    $(ChipKind::$kind => $name,)+
+                }
+            }
+
+            /// rust-hdl's clocks per second on this chip, for estimates before a run.
+            pub const fn rtl_clocks_per_second(self) -> f64 {
+                match self {
+                    $(ChipKind::$kind => $speed,)+
+                }
+            }
+        }
+    };
+}
+rtl_chips!(chip_kinds);
+
+impl ChipKind {
+    /// The chip built for `cfg`, if any (its triangle cache aside: every chip has
+    /// [`TRI_CACHE_LINES`] lines, host register 0x127 picks how many are used).
+    pub fn of(cfg: &ChipConfig) -> Option<ChipKind> {
+        ChipKind::ALL.iter().copied().find(|k| k.config() == ChipConfig { tri_cache: 1, ..*cfg })
+    }
+
+    /// Memory word bits (the wider of a node word and a triangle word).
+    pub fn word_bits(self) -> usize {
+        super::layout::Layout::new(&self.config()).word_bits() as usize
+    }
+}

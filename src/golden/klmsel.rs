@@ -1,0 +1,14 @@
+//! D.KLMSEL (DATE'05 Fig. 3, Eq. 10): the operand selection in front of the DOPTRF lanes.
+//! Lane i multiplies the three distances of B's DOP that the host's correspondence j_i
+//! names (DATE'05 Eq. 6), and compares against A's distance along the opposite normal.
+
+/// The distances `d_j0, d_j1, d_j2` lane i reads of B's DOP `d` under control `j` = `j_i`.
+pub fn klmsel(d: &[f64], j: [u8; 3]) -> [f64; 3] {
+    [d[j[0] as usize], d[j[1] as usize], d[j[2] as usize]]
+}
+
+/// A's distance `e_opp(i)` along the normal opposite B_i (normal i + k/2, mod k).
+pub fn opposite(e: &[f64], i: usize) -> f64 {
+    let h = e.len() / 2;
+    e[if i < h { i + h } else { i - h }]
+}

@@ -1,0 +1,74 @@
+//! What a scene run records per pose: the golden model's counters and answer, the exact
+//! oracle's, and the cycle model's clocks and memory traffic (`--json`; the tables of
+//! [`report`](crate::report) read them).
+
+use crate::pose::Pose;
+use crate::query::Accuracy;
+use crate::traversal::Counters;
+use serde::Serialize;
+
+/// What one pose of a scene produced.
+#[derive(Clone, Debug, Serialize)]
+pub struct PoseRecord {
+    pub pose: Pose,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub distance: Option<f64>,
+    pub pair_count: usize,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub pairs: Option<Vec<(u32, u32)>>,
+    pub counters: Counters,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub exact_pair_count: Option<usize>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub accuracy: Option<Accuracy>,
+    /// The pose on the cycle model (scenes asking for `cycles`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub cycles: Option<CycleRecord>,
+}
+
+/// One pose on the cycle model.
+#[derive(Clone, Debug, Serialize)]
+pub struct CycleRecord {
+    /// Clocks from start to done.
+    pub cycles: u64,
+    /// The chip's time for the query at the scene's clock, in microseconds.
+    pub chip_us: f64,
+    /// The golden model's time for the same query on this machine (software), in
+    /// microseconds.
+    pub software_us: f64,
+    /// Pairs the chip reported intersecting, and uncertain (for the host to settle).
+    pub hits: usize,
+    pub uncertain: usize,
+    /// DOP tests (node pairs through the DOP unit) and triangle tests (leaf pairs through
+    /// TRI_UNIT) the chip ran: in all-pairs queries the golden model's counts.
+    pub dop_tests: u64,
+    pub tri_tests: u64,
+    /// Most queue entries (two node pairs each) waiting at once.
+    pub max_entries: u64,
+    pub overflow: bool,
+    /// The memory model's traffic.
+    pub memory: MemoryRecord,
+    /// Where the clocks went (scenes asking for cycles or memory).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub stats: Option<crate::cycle::chip::Stats>,
+    /// The traversal VCD written, if any.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub vcd: Option<String>,
+    /// The level that ran the pose beside the cycle model and agreed clock by clock.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub cross_checked: Option<String>,
+}
+
+/// What one pose moved through the memory port.
+#[derive(Clone, Copy, Debug, Default, Serialize)]
+pub struct MemoryRecord {
+    pub node_words: u64,
+    pub tri_words: u64,
+    /// Bytes of those words at the configuration's node and triangle widths.
+    pub bytes: u64,
+    /// DDR: page hits, misses and bank conflicts (0 with the ideal memory).
+    pub page_hits: u64,
+    pub page_misses: u64,
+    pub bank_conflicts: u64,
+}
+
