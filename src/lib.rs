@@ -1,11 +1,14 @@
-//! collision-chip: golden model, number formats and (later) RTL of the hierarchical
-//! k-DOP collision-detection accelerator of Zachmann & Knittel (WSCG'03) and
-//! Raabe, Bartyzel, Anlauf & Zachmann (DATE'05).
+//! collision-chip: the hierarchical k-DOP collision-detection accelerator of Zachmann &
+//! Knittel (WSCG'03) and Raabe, Bartyzel, Anlauf & Zachmann (DATE'05) at four levels that
+//! give one answer: a bit-exact golden model, a fast cycle-exact model, the RTL in rust-hdl
+//! (exported as Verilog for Verilator, Icarus, Yosys and FPGA tools), and scenes that run
+//! real meshes through them and report what accuracy costs.
 //!
-//! Layout: `format` (chip number formats), `mesh` (loaders and procedural meshes),
-//! `oracle` (exact triangle intersection), `dop` (k-DOP normals, trees, host setup),
-//! `golden` (bit-exact datapath in pipeline order), `traversal` (recursive, list, D_CNTR),
-//! `scene` (scene files), `report` (summaries).
+//! The modules in layers, each importing only those below (docs/ARCHITECTURE.md, "Source
+//! map"; `tb/layers.rs` checks it): `format`, `pose`, `measure`, `oracle`, `mesh`; [`chip`],
+//! the contract every level agrees on; `dop` (normals, trees); [`golden`] (values, one file
+//! per unit); `traversal`, `query`, `hard_cases`; [`cycle`] (when things happen); [`rtl`]
+//! (the hardware); [`harness`] (host side, Verilog flows); [`scene`]; [`report`].
 
 pub mod format;
 pub mod mesh;

@@ -520,9 +520,10 @@ pub fn run_query_vcd<C: RtlPorts>(
 /// parameters, and in which order; otherwise what to change.
 pub fn rtl_order(cfg: &ChipConfig, traversal: Traversal, p: &Params) -> Result<(ChipKind, Order), String> {
     let Some(kind) = ChipKind::of(cfg) else {
+        let built: Vec<String> = ChipKind::ALL.iter().map(|k| format!("k = {}, format = \"{}\"", k.config().k, k.config().format)).collect();
         return Err(format!(
-            "the RTL chips are built for k = 6 in format reduced (e8m15) and k = 24 in binary32 or e8m15/binary32, all with outward DOP rounding and nearest-even T.CHECK; this scene has k = {}, format {}, dop_rounding {}, tri_rounding {:?}: set [chip] k = 6, format = \"reduced\" or k = 24, format = \"binary32\" or \"e8m15/binary32\", with dop_rounding = \"outward\"",
-            cfg.k, cfg.format, cfg.dop_rounding, cfg.tri_rounding
+            "the RTL chips are built for {}, all with dop_rounding = \"outward\" and T.CHECK to nearest-even; this scene has k = {}, format {}, dop_rounding {}, tri_rounding {:?}: set [chip] to one of them",
+            built.join(" or "), cfg.k, cfg.format, cfg.dop_rounding, cfg.tri_rounding
         ));
     };
     let lines = chips::TRI_CACHE_LINES;
