@@ -211,6 +211,12 @@ macro_rules! memory_port {
             }
         }
 
+        impl Default for MemoryPort {
+            fn default() -> Self {
+                Self::new()
+            }
+        }
+
         impl Logic for MemoryPort {
             #[hdl_gen]
             fn update(&mut self) {
