@@ -29,10 +29,6 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
     // Constant declarations
     localparam  c_credit = 6'b10000;
     localparam  c_pf_max = 5'b1110;
-    localparam  c_ask_b = 22'h10000;
-    localparam  c_one16 = 16'h1;
-    localparam  c_one32 = 32'h1;
-    localparam  c_two = 67'h60000000000000000;
     localparam  c_one128 = 128'h1;
     
     // Stub signals
@@ -81,437 +77,80 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
     reg  [5:0] port_credit$d;
     wire  [5:0] port_credit$q;
     reg  port_credit$clock;
-    reg  queue$clock;
-    reg  queue$clear;
-    reg  queue$lifo;
-    reg  queue$push;
-    reg  [66:0] queue$push_data;
-    reg  queue$push2;
-    reg  [66:0] queue$push2_data;
-    reg  queue$pop;
-    wire  queue$empty;
-    wire  queue$full;
-    wire  [10:0] queue$count;
-    wire  [10:0] queue$max_count;
-    wire  queue$overflow;
-    wire  [66:0] queue$top_data;
-    reg  [66:0] ahd_ent$0$d;
-    wire  [66:0] ahd_ent$0$q;
-    reg  ahd_ent$0$clock;
-    reg  [66:0] ahd_ent$1$d;
-    wire  [66:0] ahd_ent$1$q;
-    reg  ahd_ent$1$clock;
-    reg  [66:0] ahd_ent$2$d;
-    wire  [66:0] ahd_ent$2$q;
-    reg  ahd_ent$2$clock;
-    reg  [66:0] ahd_ent$3$d;
-    wire  [66:0] ahd_ent$3$q;
-    reg  ahd_ent$3$clock;
-    reg  [66:0] ahd_ent$4$d;
-    wire  [66:0] ahd_ent$4$q;
-    reg  ahd_ent$4$clock;
-    reg  [66:0] ahd_ent$5$d;
-    wire  [66:0] ahd_ent$5$q;
-    reg  ahd_ent$5$clock;
-    reg  [66:0] ahd_ent$6$d;
-    wire  [66:0] ahd_ent$6$q;
-    reg  ahd_ent$6$clock;
-    reg  [66:0] ahd_ent$7$d;
-    wire  [66:0] ahd_ent$7$q;
-    reg  ahd_ent$7$clock;
-    reg  [66:0] ahd_ent$8$d;
-    wire  [66:0] ahd_ent$8$q;
-    reg  ahd_ent$8$clock;
-    reg  [66:0] ahd_ent$9$d;
-    wire  [66:0] ahd_ent$9$q;
-    reg  ahd_ent$9$clock;
-    reg  [66:0] ahd_ent$10$d;
-    wire  [66:0] ahd_ent$10$q;
-    reg  ahd_ent$10$clock;
-    reg  [66:0] ahd_ent$11$d;
-    wire  [66:0] ahd_ent$11$q;
-    reg  ahd_ent$11$clock;
-    reg  [66:0] ahd_ent$12$d;
-    wire  [66:0] ahd_ent$12$q;
-    reg  ahd_ent$12$clock;
-    reg  [66:0] ahd_ent$13$d;
-    wire  [66:0] ahd_ent$13$q;
-    reg  ahd_ent$13$clock;
-    reg  [66:0] ahd_ent$14$d;
-    wire  [66:0] ahd_ent$14$q;
-    reg  ahd_ent$14$clock;
-    reg  [66:0] ahd_ent$15$d;
-    wire  [66:0] ahd_ent$15$q;
-    reg  ahd_ent$15$clock;
-    reg  [3:0] ahd_fetch$0$d;
-    wire  [3:0] ahd_fetch$0$q;
-    reg  ahd_fetch$0$clock;
-    reg  [3:0] ahd_fetch$1$d;
-    wire  [3:0] ahd_fetch$1$q;
-    reg  ahd_fetch$1$clock;
-    reg  [3:0] ahd_fetch$2$d;
-    wire  [3:0] ahd_fetch$2$q;
-    reg  ahd_fetch$2$clock;
-    reg  [3:0] ahd_fetch$3$d;
-    wire  [3:0] ahd_fetch$3$q;
-    reg  ahd_fetch$3$clock;
-    reg  [3:0] ahd_fetch$4$d;
-    wire  [3:0] ahd_fetch$4$q;
-    reg  ahd_fetch$4$clock;
-    reg  [3:0] ahd_fetch$5$d;
-    wire  [3:0] ahd_fetch$5$q;
-    reg  ahd_fetch$5$clock;
-    reg  [3:0] ahd_fetch$6$d;
-    wire  [3:0] ahd_fetch$6$q;
-    reg  ahd_fetch$6$clock;
-    reg  [3:0] ahd_fetch$7$d;
-    wire  [3:0] ahd_fetch$7$q;
-    reg  ahd_fetch$7$clock;
-    reg  [3:0] ahd_fetch$8$d;
-    wire  [3:0] ahd_fetch$8$q;
-    reg  ahd_fetch$8$clock;
-    reg  [3:0] ahd_fetch$9$d;
-    wire  [3:0] ahd_fetch$9$q;
-    reg  ahd_fetch$9$clock;
-    reg  [3:0] ahd_fetch$10$d;
-    wire  [3:0] ahd_fetch$10$q;
-    reg  ahd_fetch$10$clock;
-    reg  [3:0] ahd_fetch$11$d;
-    wire  [3:0] ahd_fetch$11$q;
-    reg  ahd_fetch$11$clock;
-    reg  [3:0] ahd_fetch$12$d;
-    wire  [3:0] ahd_fetch$12$q;
-    reg  ahd_fetch$12$clock;
-    reg  [3:0] ahd_fetch$13$d;
-    wire  [3:0] ahd_fetch$13$q;
-    reg  ahd_fetch$13$clock;
-    reg  [3:0] ahd_fetch$14$d;
-    wire  [3:0] ahd_fetch$14$q;
-    reg  ahd_fetch$14$clock;
-    reg  [3:0] ahd_fetch$15$d;
-    wire  [3:0] ahd_fetch$15$q;
-    reg  ahd_fetch$15$clock;
-    reg  [3:0] ahd_head$d;
-    wire  [3:0] ahd_head$q;
-    reg  ahd_head$clock;
-    reg  [3:0] ahd_tail$d;
-    wire  [3:0] ahd_tail$q;
-    reg  ahd_tail$clock;
-    reg  [4:0] ahd_pairs$d;
-    wire  [4:0] ahd_pairs$q;
-    reg  ahd_pairs$clock;
-    reg  ent_second$d;
-    wire  ent_second$q;
-    reg  ent_second$clock;
-    reg  last_ok$d;
-    wire  last_ok$q;
-    reg  last_ok$clock;
-    reg  [15:0] last_a$d;
-    wire  [15:0] last_a$q;
-    reg  last_a$clock;
-    reg  [15:0] last_b$d;
-    wire  [15:0] last_b$q;
-    reg  last_b$clock;
-    reg  [21:0] ask_w$0$d;
-    wire  [21:0] ask_w$0$q;
-    reg  ask_w$0$clock;
-    reg  [21:0] ask_w$1$d;
-    wire  [21:0] ask_w$1$q;
-    reg  ask_w$1$clock;
-    reg  [21:0] ask_w$2$d;
-    wire  [21:0] ask_w$2$q;
-    reg  ask_w$2$clock;
-    reg  [21:0] ask_w$3$d;
-    wire  [21:0] ask_w$3$q;
-    reg  ask_w$3$clock;
-    reg  [21:0] ask_w$4$d;
-    wire  [21:0] ask_w$4$q;
-    reg  ask_w$4$clock;
-    reg  [21:0] ask_w$5$d;
-    wire  [21:0] ask_w$5$q;
-    reg  ask_w$5$clock;
-    reg  [21:0] ask_w$6$d;
-    wire  [21:0] ask_w$6$q;
-    reg  ask_w$6$clock;
-    reg  [21:0] ask_w$7$d;
-    wire  [21:0] ask_w$7$q;
-    reg  ask_w$7$clock;
-    reg  [21:0] ask_w$8$d;
-    wire  [21:0] ask_w$8$q;
-    reg  ask_w$8$clock;
-    reg  [21:0] ask_w$9$d;
-    wire  [21:0] ask_w$9$q;
-    reg  ask_w$9$clock;
-    reg  [21:0] ask_w$10$d;
-    wire  [21:0] ask_w$10$q;
-    reg  ask_w$10$clock;
-    reg  [21:0] ask_w$11$d;
-    wire  [21:0] ask_w$11$q;
-    reg  ask_w$11$clock;
-    reg  [21:0] ask_w$12$d;
-    wire  [21:0] ask_w$12$q;
-    reg  ask_w$12$clock;
-    reg  [21:0] ask_w$13$d;
-    wire  [21:0] ask_w$13$q;
-    reg  ask_w$13$clock;
-    reg  [21:0] ask_w$14$d;
-    wire  [21:0] ask_w$14$q;
-    reg  ask_w$14$clock;
-    reg  [21:0] ask_w$15$d;
-    wire  [21:0] ask_w$15$q;
-    reg  ask_w$15$clock;
-    reg  [21:0] ask_w$16$d;
-    wire  [21:0] ask_w$16$q;
-    reg  ask_w$16$clock;
-    reg  [21:0] ask_w$17$d;
-    wire  [21:0] ask_w$17$q;
-    reg  ask_w$17$clock;
-    reg  [21:0] ask_w$18$d;
-    wire  [21:0] ask_w$18$q;
-    reg  ask_w$18$clock;
-    reg  [21:0] ask_w$19$d;
-    wire  [21:0] ask_w$19$q;
-    reg  ask_w$19$clock;
-    reg  [21:0] ask_w$20$d;
-    wire  [21:0] ask_w$20$q;
-    reg  ask_w$20$clock;
-    reg  [21:0] ask_w$21$d;
-    wire  [21:0] ask_w$21$q;
-    reg  ask_w$21$clock;
-    reg  [21:0] ask_w$22$d;
-    wire  [21:0] ask_w$22$q;
-    reg  ask_w$22$clock;
-    reg  [21:0] ask_w$23$d;
-    wire  [21:0] ask_w$23$q;
-    reg  ask_w$23$clock;
-    reg  [21:0] ask_w$24$d;
-    wire  [21:0] ask_w$24$q;
-    reg  ask_w$24$clock;
-    reg  [21:0] ask_w$25$d;
-    wire  [21:0] ask_w$25$q;
-    reg  ask_w$25$clock;
-    reg  [21:0] ask_w$26$d;
-    wire  [21:0] ask_w$26$q;
-    reg  ask_w$26$clock;
-    reg  [21:0] ask_w$27$d;
-    wire  [21:0] ask_w$27$q;
-    reg  ask_w$27$clock;
-    reg  [21:0] ask_w$28$d;
-    wire  [21:0] ask_w$28$q;
-    reg  ask_w$28$clock;
-    reg  [21:0] ask_w$29$d;
-    wire  [21:0] ask_w$29$q;
-    reg  ask_w$29$clock;
-    reg  [21:0] ask_w$30$d;
-    wire  [21:0] ask_w$30$q;
-    reg  ask_w$30$clock;
-    reg  [21:0] ask_w$31$d;
-    wire  [21:0] ask_w$31$q;
-    reg  ask_w$31$clock;
-    reg  [4:0] ask_head$d;
-    wire  [4:0] ask_head$q;
-    reg  ask_head$clock;
-    reg  [4:0] ask_tail$d;
-    wire  [4:0] ask_tail$q;
-    reg  ask_tail$clock;
-    reg  [5:0] ask_n$d;
-    wire  [5:0] ask_n$q;
-    reg  ask_n$clock;
-    reg  [4:0] seq_head$d;
-    wire  [4:0] seq_head$q;
-    reg  seq_head$clock;
-    reg  [4:0] seq_tail$d;
-    wire  [4:0] seq_tail$q;
-    reg  seq_tail$clock;
-    reg  [208:0] wa$0$d;
-    wire  [208:0] wa$0$q;
-    reg  wa$0$clock;
-    reg  [208:0] wa$1$d;
-    wire  [208:0] wa$1$q;
-    reg  wa$1$clock;
-    reg  [208:0] wa$2$d;
-    wire  [208:0] wa$2$q;
-    reg  wa$2$clock;
-    reg  [208:0] wa$3$d;
-    wire  [208:0] wa$3$q;
-    reg  wa$3$clock;
-    reg  [208:0] wa$4$d;
-    wire  [208:0] wa$4$q;
-    reg  wa$4$clock;
-    reg  [208:0] wa$5$d;
-    wire  [208:0] wa$5$q;
-    reg  wa$5$clock;
-    reg  [208:0] wa$6$d;
-    wire  [208:0] wa$6$q;
-    reg  wa$6$clock;
-    reg  [208:0] wa$7$d;
-    wire  [208:0] wa$7$q;
-    reg  wa$7$clock;
-    reg  [208:0] wa$8$d;
-    wire  [208:0] wa$8$q;
-    reg  wa$8$clock;
-    reg  [208:0] wa$9$d;
-    wire  [208:0] wa$9$q;
-    reg  wa$9$clock;
-    reg  [208:0] wa$10$d;
-    wire  [208:0] wa$10$q;
-    reg  wa$10$clock;
-    reg  [208:0] wa$11$d;
-    wire  [208:0] wa$11$q;
-    reg  wa$11$clock;
-    reg  [208:0] wa$12$d;
-    wire  [208:0] wa$12$q;
-    reg  wa$12$clock;
-    reg  [208:0] wa$13$d;
-    wire  [208:0] wa$13$q;
-    reg  wa$13$clock;
-    reg  [208:0] wa$14$d;
-    wire  [208:0] wa$14$q;
-    reg  wa$14$clock;
-    reg  [208:0] wa$15$d;
-    wire  [208:0] wa$15$q;
-    reg  wa$15$clock;
-    reg  [3:0] wa_head$d;
-    wire  [3:0] wa_head$q;
-    reg  wa_head$clock;
-    reg  [3:0] wa_tail$d;
-    wire  [3:0] wa_tail$q;
-    reg  wa_tail$clock;
-    reg  [4:0] wa_n$d;
-    wire  [4:0] wa_n$q;
-    reg  wa_n$clock;
-    reg  [208:0] wb$0$d;
-    wire  [208:0] wb$0$q;
-    reg  wb$0$clock;
-    reg  [208:0] wb$1$d;
-    wire  [208:0] wb$1$q;
-    reg  wb$1$clock;
-    reg  [208:0] wb$2$d;
-    wire  [208:0] wb$2$q;
-    reg  wb$2$clock;
-    reg  [208:0] wb$3$d;
-    wire  [208:0] wb$3$q;
-    reg  wb$3$clock;
-    reg  [208:0] wb$4$d;
-    wire  [208:0] wb$4$q;
-    reg  wb$4$clock;
-    reg  [208:0] wb$5$d;
-    wire  [208:0] wb$5$q;
-    reg  wb$5$clock;
-    reg  [208:0] wb$6$d;
-    wire  [208:0] wb$6$q;
-    reg  wb$6$clock;
-    reg  [208:0] wb$7$d;
-    wire  [208:0] wb$7$q;
-    reg  wb$7$clock;
-    reg  [208:0] wb$8$d;
-    wire  [208:0] wb$8$q;
-    reg  wb$8$clock;
-    reg  [208:0] wb$9$d;
-    wire  [208:0] wb$9$q;
-    reg  wb$9$clock;
-    reg  [208:0] wb$10$d;
-    wire  [208:0] wb$10$q;
-    reg  wb$10$clock;
-    reg  [208:0] wb$11$d;
-    wire  [208:0] wb$11$q;
-    reg  wb$11$clock;
-    reg  [208:0] wb$12$d;
-    wire  [208:0] wb$12$q;
-    reg  wb$12$clock;
-    reg  [208:0] wb$13$d;
-    wire  [208:0] wb$13$q;
-    reg  wb$13$clock;
-    reg  [208:0] wb$14$d;
-    wire  [208:0] wb$14$q;
-    reg  wb$14$clock;
-    reg  [208:0] wb$15$d;
-    wire  [208:0] wb$15$q;
-    reg  wb$15$clock;
-    reg  [3:0] wb_head$d;
-    wire  [3:0] wb_head$q;
-    reg  wb_head$clock;
-    reg  [3:0] wb_tail$d;
-    wire  [3:0] wb_tail$q;
-    reg  wb_tail$clock;
-    reg  [4:0] wb_n$d;
-    wire  [4:0] wb_n$q;
-    reg  wb_n$clock;
-    reg  [208:0] na_word$d;
-    wire  [208:0] na_word$q;
-    reg  na_word$clock;
-    reg  [208:0] nb_word$d;
-    wire  [208:0] nb_word$q;
-    reg  nb_word$clock;
-    reg  [1:0] tags$0$d;
-    wire  [1:0] tags$0$q;
-    reg  tags$0$clock;
-    reg  [1:0] tags$1$d;
-    wire  [1:0] tags$1$q;
-    reg  tags$1$clock;
-    reg  [1:0] tags$2$d;
-    wire  [1:0] tags$2$q;
-    reg  tags$2$clock;
-    reg  [1:0] tags$3$d;
-    wire  [1:0] tags$3$q;
-    reg  tags$3$clock;
-    reg  [1:0] tags$4$d;
-    wire  [1:0] tags$4$q;
-    reg  tags$4$clock;
-    reg  [1:0] tags$5$d;
-    wire  [1:0] tags$5$q;
-    reg  tags$5$clock;
-    reg  [1:0] tags$6$d;
-    wire  [1:0] tags$6$q;
-    reg  tags$6$clock;
-    reg  [1:0] tags$7$d;
-    wire  [1:0] tags$7$q;
-    reg  tags$7$clock;
-    reg  [1:0] tags$8$d;
-    wire  [1:0] tags$8$q;
-    reg  tags$8$clock;
-    reg  [1:0] tags$9$d;
-    wire  [1:0] tags$9$q;
-    reg  tags$9$clock;
-    reg  [1:0] tags$10$d;
-    wire  [1:0] tags$10$q;
-    reg  tags$10$clock;
-    reg  [1:0] tags$11$d;
-    wire  [1:0] tags$11$q;
-    reg  tags$11$clock;
-    reg  [1:0] tags$12$d;
-    wire  [1:0] tags$12$q;
-    reg  tags$12$clock;
-    reg  [1:0] tags$13$d;
-    wire  [1:0] tags$13$q;
-    reg  tags$13$clock;
-    reg  [1:0] tags$14$d;
-    wire  [1:0] tags$14$q;
-    reg  tags$14$clock;
-    reg  [1:0] tags$15$d;
-    wire  [1:0] tags$15$q;
-    reg  tags$15$clock;
-    reg  [3:0] tag_head$d;
-    wire  [3:0] tag_head$q;
-    reg  tag_head$clock;
-    reg  [3:0] tag_tail$d;
-    wire  [3:0] tag_tail$q;
-    reg  tag_tail$clock;
-    reg  [4:0] tag_n$d;
-    wire  [4:0] tag_n$q;
-    reg  tag_n$clock;
-    reg  ta_pend$d;
-    wire  ta_pend$q;
-    reg  ta_pend$clock;
-    reg  [15:0] ta_req$d;
-    wire  [15:0] ta_req$q;
-    reg  ta_req$clock;
-    reg  tb_pend$d;
-    wire  tb_pend$q;
-    reg  tb_pend$clock;
-    reg  [15:0] tb_req$d;
-    wire  [15:0] tb_req$q;
-    reg  tb_req$clock;
+    reg  d_cntr$clock;
+    reg  d_cntr$clear;
+    reg  d_cntr$lifo;
+    reg  d_cntr$push_root;
+    reg  [31:0] d_cntr$root;
+    reg  d_cntr$go;
+    reg  [4:0] d_cntr$pf;
+    reg  d_cntr$one;
+    reg  [5:0] d_cntr$credit_lim;
+    reg  [5:0] d_cntr$leaf_count;
+    reg  d_cntr$wa_empty;
+    reg  d_cntr$wb_empty;
+    reg  d_cntr$dop_valid;
+    reg  d_cntr$dop_overlap;
+    reg  [98:0] d_cntr$side;
+    wire  d_cntr$empty;
+    wire  [10:0] d_cntr$count;
+    wire  [10:0] d_cntr$max_count;
+    wire  d_cntr$overflow;
+    wire  d_cntr$push;
+    wire  d_cntr$pop;
+    wire  [66:0] d_cntr$pop_entry;
+    wire  [3:0] d_cntr$pop_fetch;
+    wire  d_cntr$ent_valid;
+    wire  [15:0] d_cntr$cur_a;
+    wire  [15:0] d_cntr$cur_b;
+    wire  d_cntr$cur_flip;
+    wire  d_cntr$cur_fa;
+    wire  d_cntr$cur_fb;
+    wire  d_cntr$need_na;
+    wire  d_cntr$need_nb;
+    wire  d_cntr$issue;
+    wire  [15:0] d_cntr$r_a;
+    wire  [15:0] d_cntr$r_b;
+    wire  d_cntr$r_a_leaf;
+    wire  d_cntr$r_b_leaf;
+    wire  d_cntr$leaf_in;
+    wire  [31:0] d_cntr$leaf_pair;
+    wire  [4:0] d_cntr$inflight;
+    wire  d_cntr$pend;
+    reg  mem_port$clock;
+    reg  mem_port$clear;
+    reg  mem_port$go;
+    reg  mem_port$pf_on;
+    reg  [3:0] mem_port$port_out;
+    reg  [23:0] mem_port$base_na;
+    reg  [23:0] mem_port$base_nb;
+    reg  [23:0] mem_port$base_ta;
+    reg  [23:0] mem_port$base_tb;
+    reg  mem_port$pop;
+    reg  [66:0] mem_port$pop_entry;
+    reg  [3:0] mem_port$pop_fetch;
+    reg  mem_port$issue;
+    reg  mem_port$cur_fa;
+    reg  mem_port$cur_fb;
+    reg  mem_port$need_ta;
+    reg  mem_port$need_tb;
+    reg  [31:0] mem_port$leaf_tag;
+    reg  mem_port$mem_req_ready;
+    reg  mem_port$mem_resp_valid;
+    reg  [553:0] mem_port$mem_resp_data;
+    wire  mem_port$mem_req_valid;
+    wire  [23:0] mem_port$mem_req_addr;
+    wire  [1:0] mem_port$req_dst;
+    wire  mem_port$accept;
+    wire  mem_port$resp;
+    wire  [1:0] mem_port$resp_dst;
+    wire  [15:0] mem_port$ta_req;
+    wire  [15:0] mem_port$tb_req;
+    wire  mem_port$outstanding;
+    wire  [208:0] mem_port$na_in;
+    wire  [208:0] mem_port$nb_in;
+    wire  mem_port$wa_empty;
+    wire  mem_port$wb_empty;
     reg  dop$clock;
     reg  dop$load_en;
     reg  [7:0] dop$load_addr;
@@ -536,18 +175,6 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
     reg  side$clock;
     reg  [98:0] side$d;
     wire  [98:0] side$q;
-    reg  last_issue$d;
-    wire  last_issue$q;
-    reg  last_issue$clock;
-    reg  [4:0] inflight$d;
-    wire  [4:0] inflight$q;
-    reg  inflight$clock;
-    reg  pend$d;
-    wire  pend$q;
-    reg  pend$clock;
-    reg  [66:0] pend_data$d;
-    wire  [66:0] pend_data$q;
-    reg  pend_data$clock;
     reg  leaf_fifo$clock;
     reg  leaf_fifo$read;
     wire  [31:0] leaf_fifo$data_out;
@@ -668,9 +295,20 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
     wire  tri_unit$out_uncertain;
     wire  tri_unit$out_valid;
     reg  tri_unit$out_ready;
-    reg  [8:0] tri_open$d;
-    wire  [8:0] tri_open$q;
-    reg  tri_open$clock;
+    reg  result$clock;
+    reg  result$take;
+    reg  result$out_valid;
+    reg  result$out_hit;
+    reg  result$out_uncertain;
+    reg  [31:0] result$out_tag;
+    reg  result$res_ready;
+    wire  result$out_ready;
+    wire  result$res_valid;
+    wire  [31:0] result$res_tag;
+    wire  result$res_uncertain;
+    wire  result$give;
+    wire  result$sure_hit;
+    wire  [8:0] result$open;
     reg  [31:0] cnt_dop$d;
     wire  [31:0] cnt_dop$q;
     reg  cnt_dop$clock;
@@ -686,86 +324,10 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
     
     // Local signals
     reg  halt;
+    reg  start_q;
     reg  [5:0] credit_lim;
     reg  [4:0] pf;
     reg  go;
-    reg  [15:0] head_dec;
-    reg  [15:0] tail_dec;
-    reg  [66:0] head_ent;
-    reg  [3:0] head_fetch;
-    reg  ent_valid;
-    reg  [15:0] cur_a;
-    reg  [15:0] cur_b;
-    reg  cur_flip;
-    reg  cur_fa;
-    reg  cur_fb;
-    reg  ent_last;
-    reg  room;
-    reg  pop;
-    reg  child_push;
-    reg  [66:0] top;
-    reg  top_two;
-    reg  [3:0] pop_fetch;
-    reg  fetch_a0;
-    reg  fetch_b0;
-    reg  fetch_a1;
-    reg  fetch_b1;
-    reg  ask_take;
-    reg  [4:0] seq_tail1;
-    reg  [31:0] ask_dec;
-    reg  [21:0] ask_front;
-    reg  ask_ok;
-    reg  [4:0] ask_off1;
-    reg  [4:0] ask_off2;
-    reg  [4:0] ask_off3;
-    reg  [4:0] ask_new;
-    reg  [31:0] put0;
-    reg  [31:0] put1;
-    reg  [31:0] put2;
-    reg  [31:0] put3;
-    reg  [15:0] wa_hdec;
-    reg  [15:0] wa_tdec;
-    reg  [15:0] wb_hdec;
-    reg  [15:0] wb_tdec;
-    reg  [208:0] wa_front;
-    reg  [208:0] wb_front;
-    reg  [208:0] na_in;
-    reg  [208:0] nb_in;
-    reg  need_na;
-    reg  need_nb;
-    reg  [15:0] tag_hdec;
-    reg  [15:0] tag_tdec;
-    reg  port_free;
-    reg  resp;
-    reg  [1:0] resp_dst;
-    reg  req;
-    reg  [1:0] req_dst;
-    reg  [15:0] req_id;
-    reg  [23:0] req_addr;
-    reg  accept;
-    reg  issue;
-    reg  [5:0] credit;
-    reg  [15:0] r_a;
-    reg  [15:0] r_b;
-    reg  r_flip;
-    reg  r_a_leaf;
-    reg  [15:0] r_a0;
-    reg  [15:0] r_a1;
-    reg  r_b_leaf;
-    reg  [15:0] r_b0;
-    reg  [15:0] r_b1;
-    reg  r_hit;
-    reg  [15:0] xa;
-    reg  [15:0] xb;
-    reg  [15:0] ya;
-    reg  [15:0] yb;
-    reg  [15:0] p0a;
-    reg  [15:0] p0b;
-    reg  [15:0] p1a;
-    reg  [15:0] p1b;
-    reg  [66:0] e0;
-    reg  [66:0] e1;
-    reg  leaf_in;
     reg  leaf_out;
     reg  [6:0] tc_line;
     reg  [6:0] tc_next;
@@ -778,18 +340,16 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
     reg  need_tb;
     reg  tri_in;
     reg  tri_take;
-    reg  tri_give;
-    reg  keep;
     reg  all_idle;
     reg  halt_idle;
     
     // Sub module instances
-    top$done_r mode_lifo(
+    top$d_cntr$ent_second mode_lifo(
         .d(mode_lifo$d),
         .q(mode_lifo$q),
         .clock(mode_lifo$clock)
     );
-    top$done_r mode_first(
+    top$d_cntr$ent_second mode_first(
         .d(mode_first$d),
         .q(mode_first$q),
         .clock(mode_first$clock)
@@ -819,756 +379,123 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         .q(base_tb$q),
         .clock(base_tb$clock)
     );
-    top$done_r run(
+    top$d_cntr$ent_second run(
         .d(run$d),
         .q(run$q),
         .clock(run$clock)
     );
-    top$done_r done_r(
+    top$d_cntr$ent_second done_r(
         .d(done_r$d),
         .q(done_r$q),
         .clock(done_r$clock)
     );
-    top$done_r push_root(
+    top$d_cntr$ent_second push_root(
         .d(push_root$d),
         .q(push_root$q),
         .clock(push_root$clock)
     );
-    top$done_r stop(
+    top$d_cntr$ent_second stop(
         .d(stop$d),
         .q(stop$q),
         .clock(stop$clock)
     );
-    top$ahd_fetch$0 port_pf(
+    top$d_cntr$ahd_fetch$row$0 port_pf(
         .d(port_pf$d),
         .q(port_pf$q),
         .clock(port_pf$clock)
     );
-    top$ahd_fetch$0 port_out(
+    top$d_cntr$ahd_fetch$row$0 port_out(
         .d(port_out$d),
         .q(port_out$q),
         .clock(port_out$clock)
     );
-    top$done_r port_one(
+    top$d_cntr$ent_second port_one(
         .d(port_one$d),
         .q(port_one$q),
         .clock(port_one$clock)
     );
-    top$ask_n port_credit(
+    top$leaf_count port_credit(
         .d(port_credit$d),
         .q(port_credit$q),
         .clock(port_credit$clock)
     );
-    top$queue queue(
-        .clock(queue$clock),
-        .clear(queue$clear),
-        .lifo(queue$lifo),
-        .push(queue$push),
-        .push_data(queue$push_data),
-        .push2(queue$push2),
-        .push2_data(queue$push2_data),
-        .pop(queue$pop),
-        .empty(queue$empty),
-        .full(queue$full),
-        .count(queue$count),
-        .max_count(queue$max_count),
-        .overflow(queue$overflow),
-        .top_data(queue$top_data)
-    );
-    top$ahd_ent$0 ahd_ent$0(
-        .d(ahd_ent$0$d),
-        .q(ahd_ent$0$q),
-        .clock(ahd_ent$0$clock)
-    );
-    top$ahd_ent$0 ahd_ent$1(
-        .d(ahd_ent$1$d),
-        .q(ahd_ent$1$q),
-        .clock(ahd_ent$1$clock)
-    );
-    top$ahd_ent$0 ahd_ent$2(
-        .d(ahd_ent$2$d),
-        .q(ahd_ent$2$q),
-        .clock(ahd_ent$2$clock)
-    );
-    top$ahd_ent$0 ahd_ent$3(
-        .d(ahd_ent$3$d),
-        .q(ahd_ent$3$q),
-        .clock(ahd_ent$3$clock)
-    );
-    top$ahd_ent$0 ahd_ent$4(
-        .d(ahd_ent$4$d),
-        .q(ahd_ent$4$q),
-        .clock(ahd_ent$4$clock)
-    );
-    top$ahd_ent$0 ahd_ent$5(
-        .d(ahd_ent$5$d),
-        .q(ahd_ent$5$q),
-        .clock(ahd_ent$5$clock)
-    );
-    top$ahd_ent$0 ahd_ent$6(
-        .d(ahd_ent$6$d),
-        .q(ahd_ent$6$q),
-        .clock(ahd_ent$6$clock)
-    );
-    top$ahd_ent$0 ahd_ent$7(
-        .d(ahd_ent$7$d),
-        .q(ahd_ent$7$q),
-        .clock(ahd_ent$7$clock)
-    );
-    top$ahd_ent$0 ahd_ent$8(
-        .d(ahd_ent$8$d),
-        .q(ahd_ent$8$q),
-        .clock(ahd_ent$8$clock)
-    );
-    top$ahd_ent$0 ahd_ent$9(
-        .d(ahd_ent$9$d),
-        .q(ahd_ent$9$q),
-        .clock(ahd_ent$9$clock)
-    );
-    top$ahd_ent$0 ahd_ent$10(
-        .d(ahd_ent$10$d),
-        .q(ahd_ent$10$q),
-        .clock(ahd_ent$10$clock)
-    );
-    top$ahd_ent$0 ahd_ent$11(
-        .d(ahd_ent$11$d),
-        .q(ahd_ent$11$q),
-        .clock(ahd_ent$11$clock)
-    );
-    top$ahd_ent$0 ahd_ent$12(
-        .d(ahd_ent$12$d),
-        .q(ahd_ent$12$q),
-        .clock(ahd_ent$12$clock)
-    );
-    top$ahd_ent$0 ahd_ent$13(
-        .d(ahd_ent$13$d),
-        .q(ahd_ent$13$q),
-        .clock(ahd_ent$13$clock)
-    );
-    top$ahd_ent$0 ahd_ent$14(
-        .d(ahd_ent$14$d),
-        .q(ahd_ent$14$q),
-        .clock(ahd_ent$14$clock)
-    );
-    top$ahd_ent$0 ahd_ent$15(
-        .d(ahd_ent$15$d),
-        .q(ahd_ent$15$q),
-        .clock(ahd_ent$15$clock)
-    );
-    top$ahd_fetch$0 ahd_fetch$0(
-        .d(ahd_fetch$0$d),
-        .q(ahd_fetch$0$q),
-        .clock(ahd_fetch$0$clock)
-    );
-    top$ahd_fetch$0 ahd_fetch$1(
-        .d(ahd_fetch$1$d),
-        .q(ahd_fetch$1$q),
-        .clock(ahd_fetch$1$clock)
-    );
-    top$ahd_fetch$0 ahd_fetch$2(
-        .d(ahd_fetch$2$d),
-        .q(ahd_fetch$2$q),
-        .clock(ahd_fetch$2$clock)
-    );
-    top$ahd_fetch$0 ahd_fetch$3(
-        .d(ahd_fetch$3$d),
-        .q(ahd_fetch$3$q),
-        .clock(ahd_fetch$3$clock)
-    );
-    top$ahd_fetch$0 ahd_fetch$4(
-        .d(ahd_fetch$4$d),
-        .q(ahd_fetch$4$q),
-        .clock(ahd_fetch$4$clock)
-    );
-    top$ahd_fetch$0 ahd_fetch$5(
-        .d(ahd_fetch$5$d),
-        .q(ahd_fetch$5$q),
-        .clock(ahd_fetch$5$clock)
-    );
-    top$ahd_fetch$0 ahd_fetch$6(
-        .d(ahd_fetch$6$d),
-        .q(ahd_fetch$6$q),
-        .clock(ahd_fetch$6$clock)
-    );
-    top$ahd_fetch$0 ahd_fetch$7(
-        .d(ahd_fetch$7$d),
-        .q(ahd_fetch$7$q),
-        .clock(ahd_fetch$7$clock)
-    );
-    top$ahd_fetch$0 ahd_fetch$8(
-        .d(ahd_fetch$8$d),
-        .q(ahd_fetch$8$q),
-        .clock(ahd_fetch$8$clock)
-    );
-    top$ahd_fetch$0 ahd_fetch$9(
-        .d(ahd_fetch$9$d),
-        .q(ahd_fetch$9$q),
-        .clock(ahd_fetch$9$clock)
-    );
-    top$ahd_fetch$0 ahd_fetch$10(
-        .d(ahd_fetch$10$d),
-        .q(ahd_fetch$10$q),
-        .clock(ahd_fetch$10$clock)
-    );
-    top$ahd_fetch$0 ahd_fetch$11(
-        .d(ahd_fetch$11$d),
-        .q(ahd_fetch$11$q),
-        .clock(ahd_fetch$11$clock)
-    );
-    top$ahd_fetch$0 ahd_fetch$12(
-        .d(ahd_fetch$12$d),
-        .q(ahd_fetch$12$q),
-        .clock(ahd_fetch$12$clock)
-    );
-    top$ahd_fetch$0 ahd_fetch$13(
-        .d(ahd_fetch$13$d),
-        .q(ahd_fetch$13$q),
-        .clock(ahd_fetch$13$clock)
-    );
-    top$ahd_fetch$0 ahd_fetch$14(
-        .d(ahd_fetch$14$d),
-        .q(ahd_fetch$14$q),
-        .clock(ahd_fetch$14$clock)
-    );
-    top$ahd_fetch$0 ahd_fetch$15(
-        .d(ahd_fetch$15$d),
-        .q(ahd_fetch$15$q),
-        .clock(ahd_fetch$15$clock)
-    );
-    top$ahd_fetch$0 ahd_head(
-        .d(ahd_head$d),
-        .q(ahd_head$q),
-        .clock(ahd_head$clock)
-    );
-    top$ahd_fetch$0 ahd_tail(
-        .d(ahd_tail$d),
-        .q(ahd_tail$q),
-        .clock(ahd_tail$clock)
-    );
-    top$ahd_pairs ahd_pairs(
-        .d(ahd_pairs$d),
-        .q(ahd_pairs$q),
-        .clock(ahd_pairs$clock)
-    );
-    top$done_r ent_second(
-        .d(ent_second$d),
-        .q(ent_second$q),
-        .clock(ent_second$clock)
-    );
-    top$done_r last_ok(
-        .d(last_ok$d),
-        .q(last_ok$q),
-        .clock(last_ok$clock)
-    );
-    top$dop$doptrf$0$mul_0$s1_sig_a last_a(
-        .d(last_a$d),
-        .q(last_a$q),
-        .clock(last_a$clock)
-    );
-    top$dop$doptrf$0$mul_0$s1_sig_a last_b(
-        .d(last_b$d),
-        .q(last_b$q),
-        .clock(last_b$clock)
-    );
-    top$ask_w$0 ask_w$0(
-        .d(ask_w$0$d),
-        .q(ask_w$0$q),
-        .clock(ask_w$0$clock)
-    );
-    top$ask_w$0 ask_w$1(
-        .d(ask_w$1$d),
-        .q(ask_w$1$q),
-        .clock(ask_w$1$clock)
-    );
-    top$ask_w$0 ask_w$2(
-        .d(ask_w$2$d),
-        .q(ask_w$2$q),
-        .clock(ask_w$2$clock)
-    );
-    top$ask_w$0 ask_w$3(
-        .d(ask_w$3$d),
-        .q(ask_w$3$q),
-        .clock(ask_w$3$clock)
-    );
-    top$ask_w$0 ask_w$4(
-        .d(ask_w$4$d),
-        .q(ask_w$4$q),
-        .clock(ask_w$4$clock)
-    );
-    top$ask_w$0 ask_w$5(
-        .d(ask_w$5$d),
-        .q(ask_w$5$q),
-        .clock(ask_w$5$clock)
-    );
-    top$ask_w$0 ask_w$6(
-        .d(ask_w$6$d),
-        .q(ask_w$6$q),
-        .clock(ask_w$6$clock)
-    );
-    top$ask_w$0 ask_w$7(
-        .d(ask_w$7$d),
-        .q(ask_w$7$q),
-        .clock(ask_w$7$clock)
-    );
-    top$ask_w$0 ask_w$8(
-        .d(ask_w$8$d),
-        .q(ask_w$8$q),
-        .clock(ask_w$8$clock)
-    );
-    top$ask_w$0 ask_w$9(
-        .d(ask_w$9$d),
-        .q(ask_w$9$q),
-        .clock(ask_w$9$clock)
-    );
-    top$ask_w$0 ask_w$10(
-        .d(ask_w$10$d),
-        .q(ask_w$10$q),
-        .clock(ask_w$10$clock)
-    );
-    top$ask_w$0 ask_w$11(
-        .d(ask_w$11$d),
-        .q(ask_w$11$q),
-        .clock(ask_w$11$clock)
-    );
-    top$ask_w$0 ask_w$12(
-        .d(ask_w$12$d),
-        .q(ask_w$12$q),
-        .clock(ask_w$12$clock)
-    );
-    top$ask_w$0 ask_w$13(
-        .d(ask_w$13$d),
-        .q(ask_w$13$q),
-        .clock(ask_w$13$clock)
-    );
-    top$ask_w$0 ask_w$14(
-        .d(ask_w$14$d),
-        .q(ask_w$14$q),
-        .clock(ask_w$14$clock)
-    );
-    top$ask_w$0 ask_w$15(
-        .d(ask_w$15$d),
-        .q(ask_w$15$q),
-        .clock(ask_w$15$clock)
-    );
-    top$ask_w$0 ask_w$16(
-        .d(ask_w$16$d),
-        .q(ask_w$16$q),
-        .clock(ask_w$16$clock)
-    );
-    top$ask_w$0 ask_w$17(
-        .d(ask_w$17$d),
-        .q(ask_w$17$q),
-        .clock(ask_w$17$clock)
-    );
-    top$ask_w$0 ask_w$18(
-        .d(ask_w$18$d),
-        .q(ask_w$18$q),
-        .clock(ask_w$18$clock)
-    );
-    top$ask_w$0 ask_w$19(
-        .d(ask_w$19$d),
-        .q(ask_w$19$q),
-        .clock(ask_w$19$clock)
-    );
-    top$ask_w$0 ask_w$20(
-        .d(ask_w$20$d),
-        .q(ask_w$20$q),
-        .clock(ask_w$20$clock)
-    );
-    top$ask_w$0 ask_w$21(
-        .d(ask_w$21$d),
-        .q(ask_w$21$q),
-        .clock(ask_w$21$clock)
-    );
-    top$ask_w$0 ask_w$22(
-        .d(ask_w$22$d),
-        .q(ask_w$22$q),
-        .clock(ask_w$22$clock)
-    );
-    top$ask_w$0 ask_w$23(
-        .d(ask_w$23$d),
-        .q(ask_w$23$q),
-        .clock(ask_w$23$clock)
-    );
-    top$ask_w$0 ask_w$24(
-        .d(ask_w$24$d),
-        .q(ask_w$24$q),
-        .clock(ask_w$24$clock)
-    );
-    top$ask_w$0 ask_w$25(
-        .d(ask_w$25$d),
-        .q(ask_w$25$q),
-        .clock(ask_w$25$clock)
-    );
-    top$ask_w$0 ask_w$26(
-        .d(ask_w$26$d),
-        .q(ask_w$26$q),
-        .clock(ask_w$26$clock)
-    );
-    top$ask_w$0 ask_w$27(
-        .d(ask_w$27$d),
-        .q(ask_w$27$q),
-        .clock(ask_w$27$clock)
-    );
-    top$ask_w$0 ask_w$28(
-        .d(ask_w$28$d),
-        .q(ask_w$28$q),
-        .clock(ask_w$28$clock)
-    );
-    top$ask_w$0 ask_w$29(
-        .d(ask_w$29$d),
-        .q(ask_w$29$q),
-        .clock(ask_w$29$clock)
-    );
-    top$ask_w$0 ask_w$30(
-        .d(ask_w$30$d),
-        .q(ask_w$30$q),
-        .clock(ask_w$30$clock)
-    );
-    top$ask_w$0 ask_w$31(
-        .d(ask_w$31$d),
-        .q(ask_w$31$q),
-        .clock(ask_w$31$clock)
-    );
-    top$ahd_pairs ask_head(
-        .d(ask_head$d),
-        .q(ask_head$q),
-        .clock(ask_head$clock)
-    );
-    top$ahd_pairs ask_tail(
-        .d(ask_tail$d),
-        .q(ask_tail$q),
-        .clock(ask_tail$clock)
-    );
-    top$ask_n ask_n(
-        .d(ask_n$d),
-        .q(ask_n$q),
-        .clock(ask_n$clock)
-    );
-    top$ahd_pairs seq_head(
-        .d(seq_head$d),
-        .q(seq_head$q),
-        .clock(seq_head$clock)
-    );
-    top$ahd_pairs seq_tail(
-        .d(seq_tail$d),
-        .q(seq_tail$q),
-        .clock(seq_tail$clock)
-    );
-    top$na_word wa$0(
-        .d(wa$0$d),
-        .q(wa$0$q),
-        .clock(wa$0$clock)
-    );
-    top$na_word wa$1(
-        .d(wa$1$d),
-        .q(wa$1$q),
-        .clock(wa$1$clock)
-    );
-    top$na_word wa$2(
-        .d(wa$2$d),
-        .q(wa$2$q),
-        .clock(wa$2$clock)
-    );
-    top$na_word wa$3(
-        .d(wa$3$d),
-        .q(wa$3$q),
-        .clock(wa$3$clock)
-    );
-    top$na_word wa$4(
-        .d(wa$4$d),
-        .q(wa$4$q),
-        .clock(wa$4$clock)
-    );
-    top$na_word wa$5(
-        .d(wa$5$d),
-        .q(wa$5$q),
-        .clock(wa$5$clock)
-    );
-    top$na_word wa$6(
-        .d(wa$6$d),
-        .q(wa$6$q),
-        .clock(wa$6$clock)
-    );
-    top$na_word wa$7(
-        .d(wa$7$d),
-        .q(wa$7$q),
-        .clock(wa$7$clock)
-    );
-    top$na_word wa$8(
-        .d(wa$8$d),
-        .q(wa$8$q),
-        .clock(wa$8$clock)
-    );
-    top$na_word wa$9(
-        .d(wa$9$d),
-        .q(wa$9$q),
-        .clock(wa$9$clock)
-    );
-    top$na_word wa$10(
-        .d(wa$10$d),
-        .q(wa$10$q),
-        .clock(wa$10$clock)
-    );
-    top$na_word wa$11(
-        .d(wa$11$d),
-        .q(wa$11$q),
-        .clock(wa$11$clock)
-    );
-    top$na_word wa$12(
-        .d(wa$12$d),
-        .q(wa$12$q),
-        .clock(wa$12$clock)
-    );
-    top$na_word wa$13(
-        .d(wa$13$d),
-        .q(wa$13$q),
-        .clock(wa$13$clock)
-    );
-    top$na_word wa$14(
-        .d(wa$14$d),
-        .q(wa$14$q),
-        .clock(wa$14$clock)
-    );
-    top$na_word wa$15(
-        .d(wa$15$d),
-        .q(wa$15$q),
-        .clock(wa$15$clock)
-    );
-    top$ahd_fetch$0 wa_head(
-        .d(wa_head$d),
-        .q(wa_head$q),
-        .clock(wa_head$clock)
-    );
-    top$ahd_fetch$0 wa_tail(
-        .d(wa_tail$d),
-        .q(wa_tail$q),
-        .clock(wa_tail$clock)
-    );
-    top$ahd_pairs wa_n(
-        .d(wa_n$d),
-        .q(wa_n$q),
-        .clock(wa_n$clock)
-    );
-    top$na_word wb$0(
-        .d(wb$0$d),
-        .q(wb$0$q),
-        .clock(wb$0$clock)
-    );
-    top$na_word wb$1(
-        .d(wb$1$d),
-        .q(wb$1$q),
-        .clock(wb$1$clock)
-    );
-    top$na_word wb$2(
-        .d(wb$2$d),
-        .q(wb$2$q),
-        .clock(wb$2$clock)
-    );
-    top$na_word wb$3(
-        .d(wb$3$d),
-        .q(wb$3$q),
-        .clock(wb$3$clock)
-    );
-    top$na_word wb$4(
-        .d(wb$4$d),
-        .q(wb$4$q),
-        .clock(wb$4$clock)
-    );
-    top$na_word wb$5(
-        .d(wb$5$d),
-        .q(wb$5$q),
-        .clock(wb$5$clock)
-    );
-    top$na_word wb$6(
-        .d(wb$6$d),
-        .q(wb$6$q),
-        .clock(wb$6$clock)
-    );
-    top$na_word wb$7(
-        .d(wb$7$d),
-        .q(wb$7$q),
-        .clock(wb$7$clock)
-    );
-    top$na_word wb$8(
-        .d(wb$8$d),
-        .q(wb$8$q),
-        .clock(wb$8$clock)
-    );
-    top$na_word wb$9(
-        .d(wb$9$d),
-        .q(wb$9$q),
-        .clock(wb$9$clock)
-    );
-    top$na_word wb$10(
-        .d(wb$10$d),
-        .q(wb$10$q),
-        .clock(wb$10$clock)
-    );
-    top$na_word wb$11(
-        .d(wb$11$d),
-        .q(wb$11$q),
-        .clock(wb$11$clock)
-    );
-    top$na_word wb$12(
-        .d(wb$12$d),
-        .q(wb$12$q),
-        .clock(wb$12$clock)
-    );
-    top$na_word wb$13(
-        .d(wb$13$d),
-        .q(wb$13$q),
-        .clock(wb$13$clock)
-    );
-    top$na_word wb$14(
-        .d(wb$14$d),
-        .q(wb$14$q),
-        .clock(wb$14$clock)
-    );
-    top$na_word wb$15(
-        .d(wb$15$d),
-        .q(wb$15$q),
-        .clock(wb$15$clock)
-    );
-    top$ahd_fetch$0 wb_head(
-        .d(wb_head$d),
-        .q(wb_head$q),
-        .clock(wb_head$clock)
-    );
-    top$ahd_fetch$0 wb_tail(
-        .d(wb_tail$d),
-        .q(wb_tail$q),
-        .clock(wb_tail$clock)
-    );
-    top$ahd_pairs wb_n(
-        .d(wb_n$d),
-        .q(wb_n$q),
-        .clock(wb_n$clock)
-    );
-    top$na_word na_word(
-        .d(na_word$d),
-        .q(na_word$q),
-        .clock(na_word$clock)
-    );
-    top$na_word nb_word(
-        .d(nb_word$d),
-        .q(nb_word$q),
-        .clock(nb_word$clock)
-    );
-    top$tags$0 tags$0(
-        .d(tags$0$d),
-        .q(tags$0$q),
-        .clock(tags$0$clock)
-    );
-    top$tags$0 tags$1(
-        .d(tags$1$d),
-        .q(tags$1$q),
-        .clock(tags$1$clock)
-    );
-    top$tags$0 tags$2(
-        .d(tags$2$d),
-        .q(tags$2$q),
-        .clock(tags$2$clock)
-    );
-    top$tags$0 tags$3(
-        .d(tags$3$d),
-        .q(tags$3$q),
-        .clock(tags$3$clock)
-    );
-    top$tags$0 tags$4(
-        .d(tags$4$d),
-        .q(tags$4$q),
-        .clock(tags$4$clock)
-    );
-    top$tags$0 tags$5(
-        .d(tags$5$d),
-        .q(tags$5$q),
-        .clock(tags$5$clock)
-    );
-    top$tags$0 tags$6(
-        .d(tags$6$d),
-        .q(tags$6$q),
-        .clock(tags$6$clock)
-    );
-    top$tags$0 tags$7(
-        .d(tags$7$d),
-        .q(tags$7$q),
-        .clock(tags$7$clock)
-    );
-    top$tags$0 tags$8(
-        .d(tags$8$d),
-        .q(tags$8$q),
-        .clock(tags$8$clock)
-    );
-    top$tags$0 tags$9(
-        .d(tags$9$d),
-        .q(tags$9$q),
-        .clock(tags$9$clock)
-    );
-    top$tags$0 tags$10(
-        .d(tags$10$d),
-        .q(tags$10$q),
-        .clock(tags$10$clock)
-    );
-    top$tags$0 tags$11(
-        .d(tags$11$d),
-        .q(tags$11$q),
-        .clock(tags$11$clock)
-    );
-    top$tags$0 tags$12(
-        .d(tags$12$d),
-        .q(tags$12$q),
-        .clock(tags$12$clock)
-    );
-    top$tags$0 tags$13(
-        .d(tags$13$d),
-        .q(tags$13$q),
-        .clock(tags$13$clock)
-    );
-    top$tags$0 tags$14(
-        .d(tags$14$d),
-        .q(tags$14$q),
-        .clock(tags$14$clock)
-    );
-    top$tags$0 tags$15(
-        .d(tags$15$d),
-        .q(tags$15$q),
-        .clock(tags$15$clock)
-    );
-    top$ahd_fetch$0 tag_head(
-        .d(tag_head$d),
-        .q(tag_head$q),
-        .clock(tag_head$clock)
-    );
-    top$ahd_fetch$0 tag_tail(
-        .d(tag_tail$d),
-        .q(tag_tail$q),
-        .clock(tag_tail$clock)
-    );
-    top$ahd_pairs tag_n(
-        .d(tag_n$d),
-        .q(tag_n$q),
-        .clock(tag_n$clock)
-    );
-    top$done_r ta_pend(
-        .d(ta_pend$d),
-        .q(ta_pend$q),
-        .clock(ta_pend$clock)
-    );
-    top$dop$doptrf$0$mul_0$s1_sig_a ta_req(
-        .d(ta_req$d),
-        .q(ta_req$q),
-        .clock(ta_req$clock)
-    );
-    top$done_r tb_pend(
-        .d(tb_pend$d),
-        .q(tb_pend$q),
-        .clock(tb_pend$clock)
-    );
-    top$dop$doptrf$0$mul_0$s1_sig_a tb_req(
-        .d(tb_req$d),
-        .q(tb_req$q),
-        .clock(tb_req$clock)
+    top$d_cntr d_cntr(
+        .clock(d_cntr$clock),
+        .clear(d_cntr$clear),
+        .lifo(d_cntr$lifo),
+        .push_root(d_cntr$push_root),
+        .root(d_cntr$root),
+        .go(d_cntr$go),
+        .pf(d_cntr$pf),
+        .one(d_cntr$one),
+        .credit_lim(d_cntr$credit_lim),
+        .leaf_count(d_cntr$leaf_count),
+        .wa_empty(d_cntr$wa_empty),
+        .wb_empty(d_cntr$wb_empty),
+        .dop_valid(d_cntr$dop_valid),
+        .dop_overlap(d_cntr$dop_overlap),
+        .side(d_cntr$side),
+        .empty(d_cntr$empty),
+        .count(d_cntr$count),
+        .max_count(d_cntr$max_count),
+        .overflow(d_cntr$overflow),
+        .push(d_cntr$push),
+        .pop(d_cntr$pop),
+        .pop_entry(d_cntr$pop_entry),
+        .pop_fetch(d_cntr$pop_fetch),
+        .ent_valid(d_cntr$ent_valid),
+        .cur_a(d_cntr$cur_a),
+        .cur_b(d_cntr$cur_b),
+        .cur_flip(d_cntr$cur_flip),
+        .cur_fa(d_cntr$cur_fa),
+        .cur_fb(d_cntr$cur_fb),
+        .need_na(d_cntr$need_na),
+        .need_nb(d_cntr$need_nb),
+        .issue(d_cntr$issue),
+        .r_a(d_cntr$r_a),
+        .r_b(d_cntr$r_b),
+        .r_a_leaf(d_cntr$r_a_leaf),
+        .r_b_leaf(d_cntr$r_b_leaf),
+        .leaf_in(d_cntr$leaf_in),
+        .leaf_pair(d_cntr$leaf_pair),
+        .inflight(d_cntr$inflight),
+        .pend(d_cntr$pend)
+    );
+    top$mem_port mem_port(
+        .clock(mem_port$clock),
+        .clear(mem_port$clear),
+        .go(mem_port$go),
+        .pf_on(mem_port$pf_on),
+        .port_out(mem_port$port_out),
+        .base_na(mem_port$base_na),
+        .base_nb(mem_port$base_nb),
+        .base_ta(mem_port$base_ta),
+        .base_tb(mem_port$base_tb),
+        .pop(mem_port$pop),
+        .pop_entry(mem_port$pop_entry),
+        .pop_fetch(mem_port$pop_fetch),
+        .issue(mem_port$issue),
+        .cur_fa(mem_port$cur_fa),
+        .cur_fb(mem_port$cur_fb),
+        .need_ta(mem_port$need_ta),
+        .need_tb(mem_port$need_tb),
+        .leaf_tag(mem_port$leaf_tag),
+        .mem_req_ready(mem_port$mem_req_ready),
+        .mem_resp_valid(mem_port$mem_resp_valid),
+        .mem_resp_data(mem_port$mem_resp_data),
+        .mem_req_valid(mem_port$mem_req_valid),
+        .mem_req_addr(mem_port$mem_req_addr),
+        .req_dst(mem_port$req_dst),
+        .accept(mem_port$accept),
+        .resp(mem_port$resp),
+        .resp_dst(mem_port$resp_dst),
+        .ta_req(mem_port$ta_req),
+        .tb_req(mem_port$tb_req),
+        .outstanding(mem_port$outstanding),
+        .na_in(mem_port$na_in),
+        .nb_in(mem_port$nb_in),
+        .wa_empty(mem_port$wa_empty),
+        .wb_empty(mem_port$wb_empty)
     );
     top$dop dop(
         .clock(dop$clock),
@@ -1598,26 +525,6 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         .d(side$d),
         .q(side$q)
     );
-    top$done_r last_issue(
-        .d(last_issue$d),
-        .q(last_issue$q),
-        .clock(last_issue$clock)
-    );
-    top$ahd_pairs inflight(
-        .d(inflight$d),
-        .q(inflight$q),
-        .clock(inflight$clock)
-    );
-    top$done_r pend(
-        .d(pend$d),
-        .q(pend$q),
-        .clock(pend$clock)
-    );
-    top$ahd_ent$0 pend_data(
-        .d(pend_data$d),
-        .q(pend_data$q),
-        .clock(pend_data$clock)
-    );
     top$leaf_fifo leaf_fifo(
         .clock(leaf_fifo$clock),
         .read(leaf_fifo$read),
@@ -1631,12 +538,12 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         .almost_full(leaf_fifo$almost_full),
         .overflow(leaf_fifo$overflow)
     );
-    top$ask_n leaf_count(
+    top$leaf_count leaf_count(
         .d(leaf_count$d),
         .q(leaf_count$q),
         .clock(leaf_count$clock)
     );
-    top$done_r leaf_valid(
+    top$d_cntr$ent_second leaf_valid(
         .d(leaf_valid$d),
         .q(leaf_valid$q),
         .clock(leaf_valid$clock)
@@ -1674,12 +581,12 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         .write_data(tc_word$write_data),
         .write_enable(tc_word$write_enable)
     );
-    top$done_r tc_byp(
+    top$d_cntr$ent_second tc_byp(
         .d(tc_byp$d),
         .q(tc_byp$q),
         .clock(tc_byp$clock)
     );
-    top$dop$doptrf$0$mul_0$s1_sig_a ta_id(
+    top$d_cntr$last_a ta_id(
         .d(ta_id$d),
         .q(ta_id$q),
         .clock(ta_id$clock)
@@ -1689,12 +596,12 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         .q(ta_word$q),
         .clock(ta_word$clock)
     );
-    top$done_r tb_ok(
+    top$d_cntr$ent_second tb_ok(
         .d(tb_ok$d),
         .q(tb_ok$q),
         .clock(tb_ok$clock)
     );
-    top$dop$doptrf$0$mul_0$s1_sig_a tb_id(
+    top$d_cntr$last_a tb_id(
         .d(tb_id$d),
         .q(tb_id$q),
         .clock(tb_id$clock)
@@ -1768,10 +675,21 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         .out_valid(tri_unit$out_valid),
         .out_ready(tri_unit$out_ready)
     );
-    top$tri_open tri_open(
-        .d(tri_open$d),
-        .q(tri_open$q),
-        .clock(tri_open$clock)
+    top$result result(
+        .clock(result$clock),
+        .take(result$take),
+        .out_valid(result$out_valid),
+        .out_hit(result$out_hit),
+        .out_uncertain(result$out_uncertain),
+        .out_tag(result$out_tag),
+        .res_ready(result$res_ready),
+        .out_ready(result$out_ready),
+        .res_valid(result$res_valid),
+        .res_tag(result$res_tag),
+        .res_uncertain(result$res_uncertain),
+        .give(result$give),
+        .sure_hit(result$sure_hit),
+        .open(result$open)
     );
     top$cnt_dop cnt_dop(
         .d(cnt_dop$d),
@@ -1826,295 +744,9 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         done_r$d = done_r$q;
         push_root$d = push_root$q;
         stop$d = stop$q;
-        ahd_head$clock = clock;
-        ahd_tail$clock = clock;
-        ahd_pairs$clock = clock;
-        ent_second$clock = clock;
-        last_ok$clock = clock;
-        last_a$clock = clock;
-        last_b$clock = clock;
-        ahd_head$d = ahd_head$q;
-        ahd_tail$d = ahd_tail$q;
-        ahd_pairs$d = ahd_pairs$q;
-        ent_second$d = ent_second$q;
-        last_ok$d = last_ok$q;
-        last_a$d = last_a$q;
-        last_b$d = last_b$q;
-        ask_head$clock = clock;
-        ask_tail$clock = clock;
-        ask_n$clock = clock;
-        seq_head$clock = clock;
-        seq_tail$clock = clock;
-        ask_head$d = ask_head$q;
-        ask_tail$d = ask_tail$q;
-        ask_n$d = ask_n$q;
-        seq_head$d = seq_head$q;
-        seq_tail$d = seq_tail$q;
-        wa_head$clock = clock;
-        wa_tail$clock = clock;
-        wa_n$clock = clock;
-        wb_head$clock = clock;
-        wb_tail$clock = clock;
-        wb_n$clock = clock;
-        na_word$clock = clock;
-        nb_word$clock = clock;
-        wa_head$d = wa_head$q;
-        wa_tail$d = wa_tail$q;
-        wa_n$d = wa_n$q;
-        wb_head$d = wb_head$q;
-        wb_tail$d = wb_tail$q;
-        wb_n$d = wb_n$q;
-        na_word$d = na_word$q;
-        nb_word$d = nb_word$q;
-        tag_head$clock = clock;
-        tag_tail$clock = clock;
-        tag_n$clock = clock;
-        ta_pend$clock = clock;
-        ta_req$clock = clock;
-        tb_pend$clock = clock;
-        tb_req$clock = clock;
-        tag_head$d = tag_head$q;
-        tag_tail$d = tag_tail$q;
-        tag_n$d = tag_n$q;
-        ta_pend$d = ta_pend$q;
-        ta_req$d = ta_req$q;
-        tb_pend$d = tb_pend$q;
-        tb_req$d = tb_req$q;
-        ahd_ent$0$clock = clock;
-        ahd_ent$0$d = ahd_ent$0$q;
-        ahd_fetch$0$clock = clock;
-        ahd_fetch$0$d = ahd_fetch$0$q;
-        wa$0$clock = clock;
-        wa$0$d = wa$0$q;
-        wb$0$clock = clock;
-        wb$0$d = wb$0$q;
-        ahd_ent$1$clock = clock;
-        ahd_ent$1$d = ahd_ent$1$q;
-        ahd_fetch$1$clock = clock;
-        ahd_fetch$1$d = ahd_fetch$1$q;
-        wa$1$clock = clock;
-        wa$1$d = wa$1$q;
-        wb$1$clock = clock;
-        wb$1$d = wb$1$q;
-        ahd_ent$2$clock = clock;
-        ahd_ent$2$d = ahd_ent$2$q;
-        ahd_fetch$2$clock = clock;
-        ahd_fetch$2$d = ahd_fetch$2$q;
-        wa$2$clock = clock;
-        wa$2$d = wa$2$q;
-        wb$2$clock = clock;
-        wb$2$d = wb$2$q;
-        ahd_ent$3$clock = clock;
-        ahd_ent$3$d = ahd_ent$3$q;
-        ahd_fetch$3$clock = clock;
-        ahd_fetch$3$d = ahd_fetch$3$q;
-        wa$3$clock = clock;
-        wa$3$d = wa$3$q;
-        wb$3$clock = clock;
-        wb$3$d = wb$3$q;
-        ahd_ent$4$clock = clock;
-        ahd_ent$4$d = ahd_ent$4$q;
-        ahd_fetch$4$clock = clock;
-        ahd_fetch$4$d = ahd_fetch$4$q;
-        wa$4$clock = clock;
-        wa$4$d = wa$4$q;
-        wb$4$clock = clock;
-        wb$4$d = wb$4$q;
-        ahd_ent$5$clock = clock;
-        ahd_ent$5$d = ahd_ent$5$q;
-        ahd_fetch$5$clock = clock;
-        ahd_fetch$5$d = ahd_fetch$5$q;
-        wa$5$clock = clock;
-        wa$5$d = wa$5$q;
-        wb$5$clock = clock;
-        wb$5$d = wb$5$q;
-        ahd_ent$6$clock = clock;
-        ahd_ent$6$d = ahd_ent$6$q;
-        ahd_fetch$6$clock = clock;
-        ahd_fetch$6$d = ahd_fetch$6$q;
-        wa$6$clock = clock;
-        wa$6$d = wa$6$q;
-        wb$6$clock = clock;
-        wb$6$d = wb$6$q;
-        ahd_ent$7$clock = clock;
-        ahd_ent$7$d = ahd_ent$7$q;
-        ahd_fetch$7$clock = clock;
-        ahd_fetch$7$d = ahd_fetch$7$q;
-        wa$7$clock = clock;
-        wa$7$d = wa$7$q;
-        wb$7$clock = clock;
-        wb$7$d = wb$7$q;
-        ahd_ent$8$clock = clock;
-        ahd_ent$8$d = ahd_ent$8$q;
-        ahd_fetch$8$clock = clock;
-        ahd_fetch$8$d = ahd_fetch$8$q;
-        wa$8$clock = clock;
-        wa$8$d = wa$8$q;
-        wb$8$clock = clock;
-        wb$8$d = wb$8$q;
-        ahd_ent$9$clock = clock;
-        ahd_ent$9$d = ahd_ent$9$q;
-        ahd_fetch$9$clock = clock;
-        ahd_fetch$9$d = ahd_fetch$9$q;
-        wa$9$clock = clock;
-        wa$9$d = wa$9$q;
-        wb$9$clock = clock;
-        wb$9$d = wb$9$q;
-        ahd_ent$10$clock = clock;
-        ahd_ent$10$d = ahd_ent$10$q;
-        ahd_fetch$10$clock = clock;
-        ahd_fetch$10$d = ahd_fetch$10$q;
-        wa$10$clock = clock;
-        wa$10$d = wa$10$q;
-        wb$10$clock = clock;
-        wb$10$d = wb$10$q;
-        ahd_ent$11$clock = clock;
-        ahd_ent$11$d = ahd_ent$11$q;
-        ahd_fetch$11$clock = clock;
-        ahd_fetch$11$d = ahd_fetch$11$q;
-        wa$11$clock = clock;
-        wa$11$d = wa$11$q;
-        wb$11$clock = clock;
-        wb$11$d = wb$11$q;
-        ahd_ent$12$clock = clock;
-        ahd_ent$12$d = ahd_ent$12$q;
-        ahd_fetch$12$clock = clock;
-        ahd_fetch$12$d = ahd_fetch$12$q;
-        wa$12$clock = clock;
-        wa$12$d = wa$12$q;
-        wb$12$clock = clock;
-        wb$12$d = wb$12$q;
-        ahd_ent$13$clock = clock;
-        ahd_ent$13$d = ahd_ent$13$q;
-        ahd_fetch$13$clock = clock;
-        ahd_fetch$13$d = ahd_fetch$13$q;
-        wa$13$clock = clock;
-        wa$13$d = wa$13$q;
-        wb$13$clock = clock;
-        wb$13$d = wb$13$q;
-        ahd_ent$14$clock = clock;
-        ahd_ent$14$d = ahd_ent$14$q;
-        ahd_fetch$14$clock = clock;
-        ahd_fetch$14$d = ahd_fetch$14$q;
-        wa$14$clock = clock;
-        wa$14$d = wa$14$q;
-        wb$14$clock = clock;
-        wb$14$d = wb$14$q;
-        ahd_ent$15$clock = clock;
-        ahd_ent$15$d = ahd_ent$15$q;
-        ahd_fetch$15$clock = clock;
-        ahd_fetch$15$d = ahd_fetch$15$q;
-        wa$15$clock = clock;
-        wa$15$d = wa$15$q;
-        wb$15$clock = clock;
-        wb$15$d = wb$15$q;
-        ask_w$0$clock = clock;
-        ask_w$0$d = ask_w$0$q;
-        ask_w$1$clock = clock;
-        ask_w$1$d = ask_w$1$q;
-        ask_w$2$clock = clock;
-        ask_w$2$d = ask_w$2$q;
-        ask_w$3$clock = clock;
-        ask_w$3$d = ask_w$3$q;
-        ask_w$4$clock = clock;
-        ask_w$4$d = ask_w$4$q;
-        ask_w$5$clock = clock;
-        ask_w$5$d = ask_w$5$q;
-        ask_w$6$clock = clock;
-        ask_w$6$d = ask_w$6$q;
-        ask_w$7$clock = clock;
-        ask_w$7$d = ask_w$7$q;
-        ask_w$8$clock = clock;
-        ask_w$8$d = ask_w$8$q;
-        ask_w$9$clock = clock;
-        ask_w$9$d = ask_w$9$q;
-        ask_w$10$clock = clock;
-        ask_w$10$d = ask_w$10$q;
-        ask_w$11$clock = clock;
-        ask_w$11$d = ask_w$11$q;
-        ask_w$12$clock = clock;
-        ask_w$12$d = ask_w$12$q;
-        ask_w$13$clock = clock;
-        ask_w$13$d = ask_w$13$q;
-        ask_w$14$clock = clock;
-        ask_w$14$d = ask_w$14$q;
-        ask_w$15$clock = clock;
-        ask_w$15$d = ask_w$15$q;
-        ask_w$16$clock = clock;
-        ask_w$16$d = ask_w$16$q;
-        ask_w$17$clock = clock;
-        ask_w$17$d = ask_w$17$q;
-        ask_w$18$clock = clock;
-        ask_w$18$d = ask_w$18$q;
-        ask_w$19$clock = clock;
-        ask_w$19$d = ask_w$19$q;
-        ask_w$20$clock = clock;
-        ask_w$20$d = ask_w$20$q;
-        ask_w$21$clock = clock;
-        ask_w$21$d = ask_w$21$q;
-        ask_w$22$clock = clock;
-        ask_w$22$d = ask_w$22$q;
-        ask_w$23$clock = clock;
-        ask_w$23$d = ask_w$23$q;
-        ask_w$24$clock = clock;
-        ask_w$24$d = ask_w$24$q;
-        ask_w$25$clock = clock;
-        ask_w$25$d = ask_w$25$q;
-        ask_w$26$clock = clock;
-        ask_w$26$d = ask_w$26$q;
-        ask_w$27$clock = clock;
-        ask_w$27$d = ask_w$27$q;
-        ask_w$28$clock = clock;
-        ask_w$28$d = ask_w$28$q;
-        ask_w$29$clock = clock;
-        ask_w$29$d = ask_w$29$q;
-        ask_w$30$clock = clock;
-        ask_w$30$d = ask_w$30$q;
-        ask_w$31$clock = clock;
-        ask_w$31$d = ask_w$31$q;
-        tags$0$clock = clock;
-        tags$0$d = tags$0$q;
-        tags$1$clock = clock;
-        tags$1$d = tags$1$q;
-        tags$2$clock = clock;
-        tags$2$d = tags$2$q;
-        tags$3$clock = clock;
-        tags$3$d = tags$3$q;
-        tags$4$clock = clock;
-        tags$4$d = tags$4$q;
-        tags$5$clock = clock;
-        tags$5$d = tags$5$q;
-        tags$6$clock = clock;
-        tags$6$d = tags$6$q;
-        tags$7$clock = clock;
-        tags$7$d = tags$7$q;
-        tags$8$clock = clock;
-        tags$8$d = tags$8$q;
-        tags$9$clock = clock;
-        tags$9$d = tags$9$q;
-        tags$10$clock = clock;
-        tags$10$d = tags$10$q;
-        tags$11$clock = clock;
-        tags$11$d = tags$11$q;
-        tags$12$clock = clock;
-        tags$12$d = tags$12$q;
-        tags$13$clock = clock;
-        tags$13$d = tags$13$q;
-        tags$14$clock = clock;
-        tags$14$d = tags$14$q;
-        tags$15$clock = clock;
-        tags$15$d = tags$15$q;
-        last_issue$clock = clock;
-        inflight$clock = clock;
-        pend$clock = clock;
-        pend_data$clock = clock;
         leaf_count$clock = clock;
         leaf_valid$clock = clock;
         leaf_tag$clock = clock;
-        last_issue$d = last_issue$q;
-        inflight$d = inflight$q;
-        pend$d = pend$q;
-        pend_data$d = pend_data$q;
         leaf_count$d = leaf_count$q;
         leaf_valid$d = leaf_valid$q;
         leaf_tag$d = leaf_tag$q;
@@ -2126,7 +758,6 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         tb_ok$clock = clock;
         tb_id$clock = clock;
         tb_word$clock = clock;
-        tri_open$clock = clock;
         tc_mask$d = tc_mask$q;
         ta_valid$d = ta_valid$q;
         tc_byp$d = tc_byp$q;
@@ -2135,7 +766,6 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         tb_ok$d = tb_ok$q;
         tb_id$d = tb_id$q;
         tb_word$d = tb_word$q;
-        tri_open$d = tri_open$q;
         tc_id$read_clock = clock;
         tc_id$write_clock = clock;
         tc_word$read_clock = clock;
@@ -2148,11 +778,13 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         cnt_tri$d = cnt_tri$q;
         cnt_nf$d = cnt_nf$q;
         cnt_tf$d = cnt_tf$q;
-        queue$clock = clock;
+        d_cntr$clock = clock;
+        mem_port$clock = clock;
         dop$clock = clock;
         side$clock = clock;
         leaf_fifo$clock = clock;
         tri_unit$clock = clock;
+        result$clock = clock;
         dop$load_en = host_we & (host_addr[(32'h8)+:(2)] == 32'h0);
         dop$load_addr = host_addr[(32'h0)+:(8)];
         dop$load_data = host_data[(32'h0)+:(24)];
@@ -2197,204 +829,26 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         if (port_credit$q == 32'h0) begin
             credit_lim = c_credit;
         end
-        halt = stop$q | queue$overflow;
+        halt = stop$q | d_cntr$overflow;
         go = run$q & ~halt;
-        head_dec = c_one16 << ahd_head$q;
-        tail_dec = c_one16 << ahd_tail$q;
-        head_ent = 32'h0;
-        head_fetch = 32'h0;
-        if (head_dec[0]) begin
-            head_ent = ahd_ent$0$q;
-            head_fetch = ahd_fetch$0$q;
-        end
-        if (head_dec[1]) begin
-            head_ent = ahd_ent$1$q;
-            head_fetch = ahd_fetch$1$q;
-        end
-        if (head_dec[2]) begin
-            head_ent = ahd_ent$2$q;
-            head_fetch = ahd_fetch$2$q;
-        end
-        if (head_dec[3]) begin
-            head_ent = ahd_ent$3$q;
-            head_fetch = ahd_fetch$3$q;
-        end
-        if (head_dec[4]) begin
-            head_ent = ahd_ent$4$q;
-            head_fetch = ahd_fetch$4$q;
-        end
-        if (head_dec[5]) begin
-            head_ent = ahd_ent$5$q;
-            head_fetch = ahd_fetch$5$q;
-        end
-        if (head_dec[6]) begin
-            head_ent = ahd_ent$6$q;
-            head_fetch = ahd_fetch$6$q;
-        end
-        if (head_dec[7]) begin
-            head_ent = ahd_ent$7$q;
-            head_fetch = ahd_fetch$7$q;
-        end
-        if (head_dec[8]) begin
-            head_ent = ahd_ent$8$q;
-            head_fetch = ahd_fetch$8$q;
-        end
-        if (head_dec[9]) begin
-            head_ent = ahd_ent$9$q;
-            head_fetch = ahd_fetch$9$q;
-        end
-        if (head_dec[10]) begin
-            head_ent = ahd_ent$10$q;
-            head_fetch = ahd_fetch$10$q;
-        end
-        if (head_dec[11]) begin
-            head_ent = ahd_ent$11$q;
-            head_fetch = ahd_fetch$11$q;
-        end
-        if (head_dec[12]) begin
-            head_ent = ahd_ent$12$q;
-            head_fetch = ahd_fetch$12$q;
-        end
-        if (head_dec[13]) begin
-            head_ent = ahd_ent$13$q;
-            head_fetch = ahd_fetch$13$q;
-        end
-        if (head_dec[14]) begin
-            head_ent = ahd_ent$14$q;
-            head_fetch = ahd_fetch$14$q;
-        end
-        if (head_dec[15]) begin
-            head_ent = ahd_ent$15$q;
-            head_fetch = ahd_fetch$15$q;
-        end
-        ent_valid = ahd_pairs$q != 32'h0;
-        cur_a = head_ent[(32'h0)+:(16)];
-        cur_b = head_ent[(32'h10)+:(16)];
-        cur_flip = head_ent[(32'h20)+:(1)];
-        cur_fa = head_fetch[32'h0];
-        cur_fb = head_fetch[32'h1];
-        if (ent_second$q) begin
-            cur_a = head_ent[(32'h21)+:(16)];
-            cur_b = head_ent[(32'h31)+:(16)];
-            cur_flip = head_ent[(32'h41)+:(1)];
-            cur_fa = head_fetch[32'h2];
-            cur_fb = head_fetch[32'h3];
-        end
-        ent_last = ent_second$q | ~head_ent[32'h42];
-        wa_hdec = c_one16 << wa_head$q;
-        wa_tdec = c_one16 << wa_tail$q;
-        wb_hdec = c_one16 << wb_head$q;
-        wb_tdec = c_one16 << wb_tail$q;
-        wa_front = 32'h0;
-        wb_front = 32'h0;
-        if (wa_hdec[0]) begin
-            wa_front = wa$0$q;
-        end
-        if (wb_hdec[0]) begin
-            wb_front = wb$0$q;
-        end
-        if (wa_hdec[1]) begin
-            wa_front = wa$1$q;
-        end
-        if (wb_hdec[1]) begin
-            wb_front = wb$1$q;
-        end
-        if (wa_hdec[2]) begin
-            wa_front = wa$2$q;
-        end
-        if (wb_hdec[2]) begin
-            wb_front = wb$2$q;
-        end
-        if (wa_hdec[3]) begin
-            wa_front = wa$3$q;
-        end
-        if (wb_hdec[3]) begin
-            wb_front = wb$3$q;
-        end
-        if (wa_hdec[4]) begin
-            wa_front = wa$4$q;
-        end
-        if (wb_hdec[4]) begin
-            wb_front = wb$4$q;
-        end
-        if (wa_hdec[5]) begin
-            wa_front = wa$5$q;
-        end
-        if (wb_hdec[5]) begin
-            wb_front = wb$5$q;
-        end
-        if (wa_hdec[6]) begin
-            wa_front = wa$6$q;
-        end
-        if (wb_hdec[6]) begin
-            wb_front = wb$6$q;
-        end
-        if (wa_hdec[7]) begin
-            wa_front = wa$7$q;
-        end
-        if (wb_hdec[7]) begin
-            wb_front = wb$7$q;
-        end
-        if (wa_hdec[8]) begin
-            wa_front = wa$8$q;
-        end
-        if (wb_hdec[8]) begin
-            wb_front = wb$8$q;
-        end
-        if (wa_hdec[9]) begin
-            wa_front = wa$9$q;
-        end
-        if (wb_hdec[9]) begin
-            wb_front = wb$9$q;
-        end
-        if (wa_hdec[10]) begin
-            wa_front = wa$10$q;
-        end
-        if (wb_hdec[10]) begin
-            wb_front = wb$10$q;
-        end
-        if (wa_hdec[11]) begin
-            wa_front = wa$11$q;
-        end
-        if (wb_hdec[11]) begin
-            wb_front = wb$11$q;
-        end
-        if (wa_hdec[12]) begin
-            wa_front = wa$12$q;
-        end
-        if (wb_hdec[12]) begin
-            wb_front = wb$12$q;
-        end
-        if (wa_hdec[13]) begin
-            wa_front = wa$13$q;
-        end
-        if (wb_hdec[13]) begin
-            wb_front = wb$13$q;
-        end
-        if (wa_hdec[14]) begin
-            wa_front = wa$14$q;
-        end
-        if (wb_hdec[14]) begin
-            wb_front = wb$14$q;
-        end
-        if (wa_hdec[15]) begin
-            wa_front = wa$15$q;
-        end
-        if (wb_hdec[15]) begin
-            wb_front = wb$15$q;
-        end
-        na_in = na_word$q;
-        if (cur_fa) begin
-            na_in = wa_front;
-        end
-        nb_in = nb_word$q;
-        if (cur_fb) begin
-            nb_in = wb_front;
-        end
-        need_na = go & ent_valid & cur_fa & (wa_n$q == 32'h0);
-        need_nb = go & ent_valid & cur_fb & (wb_n$q == 32'h0);
+        start_q = start & ~run$q;
+        d_cntr$clear = start_q;
+        d_cntr$lifo = mode_lifo$q;
+        d_cntr$push_root = push_root$q;
+        d_cntr$root = root$q;
+        d_cntr$go = go;
+        d_cntr$pf = pf;
+        d_cntr$one = port_one$q;
+        d_cntr$credit_lim = credit_lim;
+        d_cntr$leaf_count = leaf_count$q;
+        d_cntr$wa_empty = mem_port$wa_empty;
+        d_cntr$wb_empty = mem_port$wb_empty;
+        d_cntr$dop_valid = dop$valid_out;
+        d_cntr$dop_overlap = dop$overlap;
+        d_cntr$side = side$q;
+        push_root$d = 1'b0;
         tc_line = leaf_tag$q[(32'h0)+:(7)] & tc_mask$q;
-        tc_wr = ta_req$q[(32'h0)+:(7)] & tc_mask$q;
+        tc_wr = mem_port$ta_req[(32'h0)+:(7)] & tc_mask$q;
         ta_ok = (ta_valid$q & (c_one128 << tc_line)) != 32'h0;
         ta_held_id = tc_id$read_data;
         ta_held = tc_word$read_data;
@@ -2404,975 +858,68 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         end
         need_ta = go & leaf_valid$q & ~(ta_ok & (ta_held_id == leaf_tag$q[(32'h0)+:(16)]));
         need_tb = go & leaf_valid$q & ~(tb_ok$q & (tb_id$q == leaf_tag$q[(32'h10)+:(16)]));
-        ask_dec = c_one32 << ask_head$q;
-        ask_front = 32'h0;
-        if (ask_dec[0]) begin
-            ask_front = ask_w$0$q;
-        end
-        if (ask_dec[1]) begin
-            ask_front = ask_w$1$q;
-        end
-        if (ask_dec[2]) begin
-            ask_front = ask_w$2$q;
-        end
-        if (ask_dec[3]) begin
-            ask_front = ask_w$3$q;
-        end
-        if (ask_dec[4]) begin
-            ask_front = ask_w$4$q;
-        end
-        if (ask_dec[5]) begin
-            ask_front = ask_w$5$q;
-        end
-        if (ask_dec[6]) begin
-            ask_front = ask_w$6$q;
-        end
-        if (ask_dec[7]) begin
-            ask_front = ask_w$7$q;
-        end
-        if (ask_dec[8]) begin
-            ask_front = ask_w$8$q;
-        end
-        if (ask_dec[9]) begin
-            ask_front = ask_w$9$q;
-        end
-        if (ask_dec[10]) begin
-            ask_front = ask_w$10$q;
-        end
-        if (ask_dec[11]) begin
-            ask_front = ask_w$11$q;
-        end
-        if (ask_dec[12]) begin
-            ask_front = ask_w$12$q;
-        end
-        if (ask_dec[13]) begin
-            ask_front = ask_w$13$q;
-        end
-        if (ask_dec[14]) begin
-            ask_front = ask_w$14$q;
-        end
-        if (ask_dec[15]) begin
-            ask_front = ask_w$15$q;
-        end
-        if (ask_dec[16]) begin
-            ask_front = ask_w$16$q;
-        end
-        if (ask_dec[17]) begin
-            ask_front = ask_w$17$q;
-        end
-        if (ask_dec[18]) begin
-            ask_front = ask_w$18$q;
-        end
-        if (ask_dec[19]) begin
-            ask_front = ask_w$19$q;
-        end
-        if (ask_dec[20]) begin
-            ask_front = ask_w$20$q;
-        end
-        if (ask_dec[21]) begin
-            ask_front = ask_w$21$q;
-        end
-        if (ask_dec[22]) begin
-            ask_front = ask_w$22$q;
-        end
-        if (ask_dec[23]) begin
-            ask_front = ask_w$23$q;
-        end
-        if (ask_dec[24]) begin
-            ask_front = ask_w$24$q;
-        end
-        if (ask_dec[25]) begin
-            ask_front = ask_w$25$q;
-        end
-        if (ask_dec[26]) begin
-            ask_front = ask_w$26$q;
-        end
-        if (ask_dec[27]) begin
-            ask_front = ask_w$27$q;
-        end
-        if (ask_dec[28]) begin
-            ask_front = ask_w$28$q;
-        end
-        if (ask_dec[29]) begin
-            ask_front = ask_w$29$q;
-        end
-        if (ask_dec[30]) begin
-            ask_front = ask_w$30$q;
-        end
-        if (ask_dec[31]) begin
-            ask_front = ask_w$31$q;
-        end
-        ask_ok = go & (ask_n$q != 32'h0) & ((pf != 32'h0) | (ask_front[(32'h11)+:(5)] == seq_head$q));
-        port_free = tag_n$q <= ((port_out$q) & 5'h1f);
-        req_dst = ((ask_front[(32'h10)+:(1)]) & 2'h3);
-        req_id = ask_front[(32'h0)+:(16)];
-        req_addr = base_na$q + ((ask_front[(32'h0)+:(16)]) & 24'hffffff);
-        if (ask_front[32'h10]) begin
-            req_addr = base_nb$q + ((ask_front[(32'h0)+:(16)]) & 24'hffffff);
-        end
-        req = port_free & ask_ok;
-        if (need_tb & ~tb_pend$q) begin
-            req_dst = 32'h3;
-            req_id = leaf_tag$q[(32'h10)+:(16)];
-            req_addr = base_tb$q + ((leaf_tag$q[(32'h10)+:(16)]) & 24'hffffff);
-            req = port_free;
-        end
-        if (need_ta & ~ta_pend$q) begin
-            req_dst = 32'h2;
-            req_id = leaf_tag$q[(32'h0)+:(16)];
-            req_addr = base_ta$q + ((leaf_tag$q[(32'h0)+:(16)]) & 24'hffffff);
-            req = port_free;
-        end
-        mem_req_valid = req;
-        mem_req_addr = req_addr;
-        accept = req & mem_req_ready;
-        tag_hdec = c_one16 << tag_head$q;
-        tag_tdec = c_one16 << tag_tail$q;
-        resp_dst = 32'h0;
-        if (tag_hdec[0]) begin
-            resp_dst = tags$0$q;
-        end
-        if (accept & tag_tdec[0]) begin
-            tags$0$d = req_dst;
-        end
-        if (tag_hdec[1]) begin
-            resp_dst = tags$1$q;
-        end
-        if (accept & tag_tdec[1]) begin
-            tags$1$d = req_dst;
-        end
-        if (tag_hdec[2]) begin
-            resp_dst = tags$2$q;
-        end
-        if (accept & tag_tdec[2]) begin
-            tags$2$d = req_dst;
-        end
-        if (tag_hdec[3]) begin
-            resp_dst = tags$3$q;
-        end
-        if (accept & tag_tdec[3]) begin
-            tags$3$d = req_dst;
-        end
-        if (tag_hdec[4]) begin
-            resp_dst = tags$4$q;
-        end
-        if (accept & tag_tdec[4]) begin
-            tags$4$d = req_dst;
-        end
-        if (tag_hdec[5]) begin
-            resp_dst = tags$5$q;
-        end
-        if (accept & tag_tdec[5]) begin
-            tags$5$d = req_dst;
-        end
-        if (tag_hdec[6]) begin
-            resp_dst = tags$6$q;
-        end
-        if (accept & tag_tdec[6]) begin
-            tags$6$d = req_dst;
-        end
-        if (tag_hdec[7]) begin
-            resp_dst = tags$7$q;
-        end
-        if (accept & tag_tdec[7]) begin
-            tags$7$d = req_dst;
-        end
-        if (tag_hdec[8]) begin
-            resp_dst = tags$8$q;
-        end
-        if (accept & tag_tdec[8]) begin
-            tags$8$d = req_dst;
-        end
-        if (tag_hdec[9]) begin
-            resp_dst = tags$9$q;
-        end
-        if (accept & tag_tdec[9]) begin
-            tags$9$d = req_dst;
-        end
-        if (tag_hdec[10]) begin
-            resp_dst = tags$10$q;
-        end
-        if (accept & tag_tdec[10]) begin
-            tags$10$d = req_dst;
-        end
-        if (tag_hdec[11]) begin
-            resp_dst = tags$11$q;
-        end
-        if (accept & tag_tdec[11]) begin
-            tags$11$d = req_dst;
-        end
-        if (tag_hdec[12]) begin
-            resp_dst = tags$12$q;
-        end
-        if (accept & tag_tdec[12]) begin
-            tags$12$d = req_dst;
-        end
-        if (tag_hdec[13]) begin
-            resp_dst = tags$13$q;
-        end
-        if (accept & tag_tdec[13]) begin
-            tags$13$d = req_dst;
-        end
-        if (tag_hdec[14]) begin
-            resp_dst = tags$14$q;
-        end
-        if (accept & tag_tdec[14]) begin
-            tags$14$d = req_dst;
-        end
-        if (tag_hdec[15]) begin
-            resp_dst = tags$15$q;
-        end
-        if (accept & tag_tdec[15]) begin
-            tags$15$d = req_dst;
-        end
-        resp = mem_resp_valid & (tag_n$q != 32'h0);
-        if (accept) begin
-            tag_tail$d = tag_tail$q + 32'h1;
-            if (req_dst[32'h1]) begin
+        mem_port$clear = start_q;
+        mem_port$go = go;
+        mem_port$pf_on = pf != 32'h0;
+        mem_port$port_out = port_out$q;
+        mem_port$base_na = base_na$q;
+        mem_port$base_nb = base_nb$q;
+        mem_port$base_ta = base_ta$q;
+        mem_port$base_tb = base_tb$q;
+        mem_port$pop = d_cntr$pop;
+        mem_port$pop_entry = d_cntr$pop_entry;
+        mem_port$pop_fetch = d_cntr$pop_fetch;
+        mem_port$issue = d_cntr$issue;
+        mem_port$cur_fa = d_cntr$cur_fa;
+        mem_port$cur_fb = d_cntr$cur_fb;
+        mem_port$need_ta = need_ta;
+        mem_port$need_tb = need_tb;
+        mem_port$leaf_tag = leaf_tag$q;
+        mem_port$mem_req_ready = mem_req_ready;
+        mem_port$mem_resp_valid = mem_resp_valid;
+        mem_port$mem_resp_data = mem_resp_data;
+        mem_req_valid = mem_port$mem_req_valid;
+        mem_req_addr = mem_port$mem_req_addr;
+        if (mem_port$accept) begin
+            if (mem_port$req_dst[32'h1]) begin
                 cnt_tf$d = cnt_tf$q + 32'h1;
             end
             else begin
                 cnt_nf$d = cnt_nf$q + 32'h1;
-                ask_head$d = ask_head$q + 32'h1;
-            end
-            if (req_dst == 32'h2) begin
-                ta_pend$d = 1'b1;
-                ta_req$d = req_id;
-            end
-            if (req_dst == 32'h3) begin
-                tb_pend$d = 1'b1;
-                tb_req$d = req_id;
             end
         end
-        if (accept & ~resp) begin
-            tag_n$d = tag_n$q + 32'h1;
-        end
-        if (resp & ~accept) begin
-            tag_n$d = tag_n$q - 32'h1;
-        end
-        if (resp & (resp_dst == 32'h0) & wa_tdec[0]) begin
-            wa$0$d = mem_resp_data[(32'h0)+:(209)];
-        end
-        if (resp & (resp_dst == 32'h1) & wb_tdec[0]) begin
-            wb$0$d = mem_resp_data[(32'h0)+:(209)];
-        end
-        if (resp & (resp_dst == 32'h0) & wa_tdec[1]) begin
-            wa$1$d = mem_resp_data[(32'h0)+:(209)];
-        end
-        if (resp & (resp_dst == 32'h1) & wb_tdec[1]) begin
-            wb$1$d = mem_resp_data[(32'h0)+:(209)];
-        end
-        if (resp & (resp_dst == 32'h0) & wa_tdec[2]) begin
-            wa$2$d = mem_resp_data[(32'h0)+:(209)];
-        end
-        if (resp & (resp_dst == 32'h1) & wb_tdec[2]) begin
-            wb$2$d = mem_resp_data[(32'h0)+:(209)];
-        end
-        if (resp & (resp_dst == 32'h0) & wa_tdec[3]) begin
-            wa$3$d = mem_resp_data[(32'h0)+:(209)];
-        end
-        if (resp & (resp_dst == 32'h1) & wb_tdec[3]) begin
-            wb$3$d = mem_resp_data[(32'h0)+:(209)];
-        end
-        if (resp & (resp_dst == 32'h0) & wa_tdec[4]) begin
-            wa$4$d = mem_resp_data[(32'h0)+:(209)];
-        end
-        if (resp & (resp_dst == 32'h1) & wb_tdec[4]) begin
-            wb$4$d = mem_resp_data[(32'h0)+:(209)];
-        end
-        if (resp & (resp_dst == 32'h0) & wa_tdec[5]) begin
-            wa$5$d = mem_resp_data[(32'h0)+:(209)];
-        end
-        if (resp & (resp_dst == 32'h1) & wb_tdec[5]) begin
-            wb$5$d = mem_resp_data[(32'h0)+:(209)];
-        end
-        if (resp & (resp_dst == 32'h0) & wa_tdec[6]) begin
-            wa$6$d = mem_resp_data[(32'h0)+:(209)];
-        end
-        if (resp & (resp_dst == 32'h1) & wb_tdec[6]) begin
-            wb$6$d = mem_resp_data[(32'h0)+:(209)];
-        end
-        if (resp & (resp_dst == 32'h0) & wa_tdec[7]) begin
-            wa$7$d = mem_resp_data[(32'h0)+:(209)];
-        end
-        if (resp & (resp_dst == 32'h1) & wb_tdec[7]) begin
-            wb$7$d = mem_resp_data[(32'h0)+:(209)];
-        end
-        if (resp & (resp_dst == 32'h0) & wa_tdec[8]) begin
-            wa$8$d = mem_resp_data[(32'h0)+:(209)];
-        end
-        if (resp & (resp_dst == 32'h1) & wb_tdec[8]) begin
-            wb$8$d = mem_resp_data[(32'h0)+:(209)];
-        end
-        if (resp & (resp_dst == 32'h0) & wa_tdec[9]) begin
-            wa$9$d = mem_resp_data[(32'h0)+:(209)];
-        end
-        if (resp & (resp_dst == 32'h1) & wb_tdec[9]) begin
-            wb$9$d = mem_resp_data[(32'h0)+:(209)];
-        end
-        if (resp & (resp_dst == 32'h0) & wa_tdec[10]) begin
-            wa$10$d = mem_resp_data[(32'h0)+:(209)];
-        end
-        if (resp & (resp_dst == 32'h1) & wb_tdec[10]) begin
-            wb$10$d = mem_resp_data[(32'h0)+:(209)];
-        end
-        if (resp & (resp_dst == 32'h0) & wa_tdec[11]) begin
-            wa$11$d = mem_resp_data[(32'h0)+:(209)];
-        end
-        if (resp & (resp_dst == 32'h1) & wb_tdec[11]) begin
-            wb$11$d = mem_resp_data[(32'h0)+:(209)];
-        end
-        if (resp & (resp_dst == 32'h0) & wa_tdec[12]) begin
-            wa$12$d = mem_resp_data[(32'h0)+:(209)];
-        end
-        if (resp & (resp_dst == 32'h1) & wb_tdec[12]) begin
-            wb$12$d = mem_resp_data[(32'h0)+:(209)];
-        end
-        if (resp & (resp_dst == 32'h0) & wa_tdec[13]) begin
-            wa$13$d = mem_resp_data[(32'h0)+:(209)];
-        end
-        if (resp & (resp_dst == 32'h1) & wb_tdec[13]) begin
-            wb$13$d = mem_resp_data[(32'h0)+:(209)];
-        end
-        if (resp & (resp_dst == 32'h0) & wa_tdec[14]) begin
-            wa$14$d = mem_resp_data[(32'h0)+:(209)];
-        end
-        if (resp & (resp_dst == 32'h1) & wb_tdec[14]) begin
-            wb$14$d = mem_resp_data[(32'h0)+:(209)];
-        end
-        if (resp & (resp_dst == 32'h0) & wa_tdec[15]) begin
-            wa$15$d = mem_resp_data[(32'h0)+:(209)];
-        end
-        if (resp & (resp_dst == 32'h1) & wb_tdec[15]) begin
-            wb$15$d = mem_resp_data[(32'h0)+:(209)];
-        end
-        if (resp) begin
-            tag_head$d = tag_head$q + 32'h1;
-            if (resp_dst == 32'h0) begin
-                wa_tail$d = wa_tail$q + 32'h1;
-            end
-            if (resp_dst == 32'h1) begin
-                wb_tail$d = wb_tail$q + 32'h1;
-            end
-            if (resp_dst == 32'h2) begin
-                ta_pend$d = 1'b0;
+        if (mem_port$resp) begin
+            if (mem_port$resp_dst == 32'h2) begin
                 ta_valid$d = ta_valid$q | (c_one128 << tc_wr);
-                ta_id$d = ta_req$q;
+                ta_id$d = mem_port$ta_req;
                 ta_word$d = mem_resp_data[(32'h0)+:(554)];
             end
-            if (resp_dst == 32'h3) begin
-                tb_pend$d = 1'b0;
+            if (mem_port$resp_dst == 32'h3) begin
                 tb_ok$d = 1'b1;
-                tb_id$d = tb_req$q;
+                tb_id$d = mem_port$tb_req;
                 tb_word$d = mem_resp_data[(32'h0)+:(554)];
             end
         end
-        credit = ((inflight$q) & 6'h3f) + leaf_count$q;
-        issue = go & ent_valid & ~need_na & ~need_nb & ~(last_issue$q & ~port_one$q) & (credit < credit_lim);
-        last_issue$d = issue;
-        dop$d$0 = nb_in[(32'h1 + 0 * 32'h18)+:(24)];
-        dop$e$0 = na_in[(32'h1 + 0 * 32'h18)+:(24)];
-        dop$d$1 = nb_in[(32'h1 + 1 * 32'h18)+:(24)];
-        dop$e$1 = na_in[(32'h1 + 1 * 32'h18)+:(24)];
-        dop$d$2 = nb_in[(32'h1 + 2 * 32'h18)+:(24)];
-        dop$e$2 = na_in[(32'h1 + 2 * 32'h18)+:(24)];
-        dop$d$3 = nb_in[(32'h1 + 3 * 32'h18)+:(24)];
-        dop$e$3 = na_in[(32'h1 + 3 * 32'h18)+:(24)];
-        dop$d$4 = nb_in[(32'h1 + 4 * 32'h18)+:(24)];
-        dop$e$4 = na_in[(32'h1 + 4 * 32'h18)+:(24)];
-        dop$d$5 = nb_in[(32'h1 + 5 * 32'h18)+:(24)];
-        dop$e$5 = na_in[(32'h1 + 5 * 32'h18)+:(24)];
-        dop$tag = cur_a;
-        dop$valid_in = issue;
-        side$d = ((cur_a) & 99'h7ffffffffffffffffffffffff) | (((cur_b) & 99'h7ffffffffffffffffffffffff) << 32'h10) | (((cur_flip) & 99'h7ffffffffffffffffffffffff) << 32'h20) | (((na_in[(32'h0)+:(1)]) & 99'h7ffffffffffffffffffffffff) << 32'h21) | (((na_in[(32'h1 + 32'h6 * 32'h18)+:(16)]) & 99'h7ffffffffffffffffffffffff) << 32'h22) | (((na_in[(32'h21 + 32'h6 * 32'h18)+:(16)]) & 99'h7ffffffffffffffffffffffff) << 32'h32) | (((nb_in[(32'h0)+:(1)]) & 99'h7ffffffffffffffffffffffff) << 32'h42) | (((nb_in[(32'h1 + 32'h6 * 32'h18)+:(16)]) & 99'h7ffffffffffffffffffffffff) << 32'h43) | (((nb_in[(32'h21 + 32'h6 * 32'h18)+:(16)]) & 99'h7ffffffffffffffffffffffff) << 32'h53);
-        if (issue) begin
+        dop$d$0 = mem_port$nb_in[(32'h1 + 0 * 32'h18)+:(24)];
+        dop$e$0 = mem_port$na_in[(32'h1 + 0 * 32'h18)+:(24)];
+        dop$d$1 = mem_port$nb_in[(32'h1 + 1 * 32'h18)+:(24)];
+        dop$e$1 = mem_port$na_in[(32'h1 + 1 * 32'h18)+:(24)];
+        dop$d$2 = mem_port$nb_in[(32'h1 + 2 * 32'h18)+:(24)];
+        dop$e$2 = mem_port$na_in[(32'h1 + 2 * 32'h18)+:(24)];
+        dop$d$3 = mem_port$nb_in[(32'h1 + 3 * 32'h18)+:(24)];
+        dop$e$3 = mem_port$na_in[(32'h1 + 3 * 32'h18)+:(24)];
+        dop$d$4 = mem_port$nb_in[(32'h1 + 4 * 32'h18)+:(24)];
+        dop$e$4 = mem_port$na_in[(32'h1 + 4 * 32'h18)+:(24)];
+        dop$d$5 = mem_port$nb_in[(32'h1 + 5 * 32'h18)+:(24)];
+        dop$e$5 = mem_port$na_in[(32'h1 + 5 * 32'h18)+:(24)];
+        dop$tag = d_cntr$cur_a;
+        dop$valid_in = d_cntr$issue;
+        side$d = ((d_cntr$cur_a) & 99'h7ffffffffffffffffffffffff) | (((d_cntr$cur_b) & 99'h7ffffffffffffffffffffffff) << 32'h10) | (((d_cntr$cur_flip) & 99'h7ffffffffffffffffffffffff) << 32'h20) | (((mem_port$na_in[(32'h0)+:(1)]) & 99'h7ffffffffffffffffffffffff) << 32'h21) | (((mem_port$na_in[(32'h1 + 32'h6 * 32'h18)+:(16)]) & 99'h7ffffffffffffffffffffffff) << 32'h22) | (((mem_port$na_in[(32'h21 + 32'h6 * 32'h18)+:(16)]) & 99'h7ffffffffffffffffffffffff) << 32'h32) | (((mem_port$nb_in[(32'h0)+:(1)]) & 99'h7ffffffffffffffffffffffff) << 32'h42) | (((mem_port$nb_in[(32'h1 + 32'h6 * 32'h18)+:(16)]) & 99'h7ffffffffffffffffffffffff) << 32'h43) | (((mem_port$nb_in[(32'h21 + 32'h6 * 32'h18)+:(16)]) & 99'h7ffffffffffffffffffffffff) << 32'h53);
+        if (d_cntr$issue) begin
             cnt_dop$d = cnt_dop$q + 32'h1;
-            seq_head$d = seq_head$q + 32'h1;
-            ent_second$d = 1'b1;
-            if (ent_last) begin
-                ent_second$d = 1'b0;
-                ahd_head$d = ahd_head$q + 32'h1;
-            end
-            if (cur_fa) begin
-                na_word$d = wa_front;
-                wa_head$d = wa_head$q + 32'h1;
-            end
-            if (cur_fb) begin
-                nb_word$d = wb_front;
-                wb_head$d = wb_head$q + 32'h1;
-            end
         end
-        wa_n$d = wa_n$q + (((resp & (resp_dst == 32'h0))) & 5'h1f) - (((issue & cur_fa)) & 5'h1f);
-        wb_n$d = wb_n$q + (((resp & (resp_dst == 32'h1))) & 5'h1f) - (((issue & cur_fb)) & 5'h1f);
-        r_a = side$q[(32'h0)+:(16)];
-        r_b = side$q[(32'h10)+:(16)];
-        r_flip = side$q[32'h20];
-        r_a_leaf = side$q[32'h21];
-        r_a0 = side$q[(32'h22)+:(16)];
-        r_a1 = side$q[(32'h32)+:(16)];
-        r_b_leaf = side$q[32'h42];
-        r_b0 = side$q[(32'h43)+:(16)];
-        r_b1 = side$q[(32'h53)+:(16)];
-        r_hit = dop$valid_out & dop$overlap;
-        child_push = pend$q | (r_hit & ~(r_a_leaf & r_b_leaf));
-        room = (ahd_pairs$q - ((issue) & 5'h1f)) <= pf;
-        pop = go & ~queue$empty & room & ~(mode_lifo$q & child_push);
-        queue$pop = pop;
-        top = queue$top_data;
-        top_two = top[32'h42];
-        fetch_a0 = ~(last_ok$q & (last_a$q == top[(32'h0)+:(16)]));
-        fetch_b0 = ~(last_ok$q & (last_b$q == top[(32'h10)+:(16)]));
-        fetch_a1 = top_two & (top[(32'h21)+:(16)] != top[(32'h0)+:(16)]);
-        fetch_b1 = top_two & (top[(32'h31)+:(16)] != top[(32'h10)+:(16)]);
-        pop_fetch = ((fetch_a0) & 4'hf) | (((fetch_b0) & 4'hf) << 32'h1) | (((fetch_a1) & 4'hf) << 32'h2) | (((fetch_b1) & 4'hf) << 32'h3);
-        if (pop & tail_dec[0]) begin
-            ahd_ent$0$d = top;
-            ahd_fetch$0$d = pop_fetch;
-        end
-        if (pop & tail_dec[1]) begin
-            ahd_ent$1$d = top;
-            ahd_fetch$1$d = pop_fetch;
-        end
-        if (pop & tail_dec[2]) begin
-            ahd_ent$2$d = top;
-            ahd_fetch$2$d = pop_fetch;
-        end
-        if (pop & tail_dec[3]) begin
-            ahd_ent$3$d = top;
-            ahd_fetch$3$d = pop_fetch;
-        end
-        if (pop & tail_dec[4]) begin
-            ahd_ent$4$d = top;
-            ahd_fetch$4$d = pop_fetch;
-        end
-        if (pop & tail_dec[5]) begin
-            ahd_ent$5$d = top;
-            ahd_fetch$5$d = pop_fetch;
-        end
-        if (pop & tail_dec[6]) begin
-            ahd_ent$6$d = top;
-            ahd_fetch$6$d = pop_fetch;
-        end
-        if (pop & tail_dec[7]) begin
-            ahd_ent$7$d = top;
-            ahd_fetch$7$d = pop_fetch;
-        end
-        if (pop & tail_dec[8]) begin
-            ahd_ent$8$d = top;
-            ahd_fetch$8$d = pop_fetch;
-        end
-        if (pop & tail_dec[9]) begin
-            ahd_ent$9$d = top;
-            ahd_fetch$9$d = pop_fetch;
-        end
-        if (pop & tail_dec[10]) begin
-            ahd_ent$10$d = top;
-            ahd_fetch$10$d = pop_fetch;
-        end
-        if (pop & tail_dec[11]) begin
-            ahd_ent$11$d = top;
-            ahd_fetch$11$d = pop_fetch;
-        end
-        if (pop & tail_dec[12]) begin
-            ahd_ent$12$d = top;
-            ahd_fetch$12$d = pop_fetch;
-        end
-        if (pop & tail_dec[13]) begin
-            ahd_ent$13$d = top;
-            ahd_fetch$13$d = pop_fetch;
-        end
-        if (pop & tail_dec[14]) begin
-            ahd_ent$14$d = top;
-            ahd_fetch$14$d = pop_fetch;
-        end
-        if (pop & tail_dec[15]) begin
-            ahd_ent$15$d = top;
-            ahd_fetch$15$d = pop_fetch;
-        end
-        ahd_pairs$d = ahd_pairs$q - ((issue) & 5'h1f);
-        if (pop) begin
-            ahd_tail$d = ahd_tail$q + 32'h1;
-            ahd_pairs$d = ahd_pairs$q - ((issue) & 5'h1f) + 32'h1 + ((top_two) & 5'h1f);
-            seq_tail$d = seq_tail$q + 32'h1 + ((top_two) & 5'h1f);
-            last_ok$d = 1'b1;
-            last_a$d = top[(32'h0)+:(16)];
-            last_b$d = top[(32'h10)+:(16)];
-            if (top_two) begin
-                last_a$d = top[(32'h21)+:(16)];
-                last_b$d = top[(32'h31)+:(16)];
-            end
-        end
-        seq_tail1 = seq_tail$q + 32'h1;
-        ask_off1 = ((pop_fetch[(32'h0)+:(1)]) & 5'h1f);
-        ask_off2 = ask_off1 + ((pop_fetch[(32'h1)+:(1)]) & 5'h1f);
-        ask_off3 = ask_off2 + ((pop_fetch[(32'h2)+:(1)]) & 5'h1f);
-        ask_new = ask_off3 + ((pop_fetch[(32'h3)+:(1)]) & 5'h1f);
-        put0 = c_one32 << ask_tail$q;
-        put1 = c_one32 << (ask_tail$q + ask_off1);
-        put2 = c_one32 << (ask_tail$q + ask_off2);
-        put3 = c_one32 << (ask_tail$q + ask_off3);
-        if (pop & pop_fetch[32'h0] & put0[0]) begin
-            ask_w$0$d = ((top[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
-        end
-        if (pop & pop_fetch[32'h1] & put1[0]) begin
-            ask_w$0$d = ((top[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
-        end
-        if (pop & pop_fetch[32'h2] & put2[0]) begin
-            ask_w$0$d = ((top[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
-        end
-        if (pop & pop_fetch[32'h3] & put3[0]) begin
-            ask_w$0$d = ((top[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
-        end
-        if (pop & pop_fetch[32'h0] & put0[1]) begin
-            ask_w$1$d = ((top[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
-        end
-        if (pop & pop_fetch[32'h1] & put1[1]) begin
-            ask_w$1$d = ((top[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
-        end
-        if (pop & pop_fetch[32'h2] & put2[1]) begin
-            ask_w$1$d = ((top[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
-        end
-        if (pop & pop_fetch[32'h3] & put3[1]) begin
-            ask_w$1$d = ((top[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
-        end
-        if (pop & pop_fetch[32'h0] & put0[2]) begin
-            ask_w$2$d = ((top[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
-        end
-        if (pop & pop_fetch[32'h1] & put1[2]) begin
-            ask_w$2$d = ((top[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
-        end
-        if (pop & pop_fetch[32'h2] & put2[2]) begin
-            ask_w$2$d = ((top[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
-        end
-        if (pop & pop_fetch[32'h3] & put3[2]) begin
-            ask_w$2$d = ((top[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
-        end
-        if (pop & pop_fetch[32'h0] & put0[3]) begin
-            ask_w$3$d = ((top[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
-        end
-        if (pop & pop_fetch[32'h1] & put1[3]) begin
-            ask_w$3$d = ((top[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
-        end
-        if (pop & pop_fetch[32'h2] & put2[3]) begin
-            ask_w$3$d = ((top[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
-        end
-        if (pop & pop_fetch[32'h3] & put3[3]) begin
-            ask_w$3$d = ((top[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
-        end
-        if (pop & pop_fetch[32'h0] & put0[4]) begin
-            ask_w$4$d = ((top[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
-        end
-        if (pop & pop_fetch[32'h1] & put1[4]) begin
-            ask_w$4$d = ((top[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
-        end
-        if (pop & pop_fetch[32'h2] & put2[4]) begin
-            ask_w$4$d = ((top[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
-        end
-        if (pop & pop_fetch[32'h3] & put3[4]) begin
-            ask_w$4$d = ((top[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
-        end
-        if (pop & pop_fetch[32'h0] & put0[5]) begin
-            ask_w$5$d = ((top[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
-        end
-        if (pop & pop_fetch[32'h1] & put1[5]) begin
-            ask_w$5$d = ((top[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
-        end
-        if (pop & pop_fetch[32'h2] & put2[5]) begin
-            ask_w$5$d = ((top[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
-        end
-        if (pop & pop_fetch[32'h3] & put3[5]) begin
-            ask_w$5$d = ((top[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
-        end
-        if (pop & pop_fetch[32'h0] & put0[6]) begin
-            ask_w$6$d = ((top[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
-        end
-        if (pop & pop_fetch[32'h1] & put1[6]) begin
-            ask_w$6$d = ((top[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
-        end
-        if (pop & pop_fetch[32'h2] & put2[6]) begin
-            ask_w$6$d = ((top[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
-        end
-        if (pop & pop_fetch[32'h3] & put3[6]) begin
-            ask_w$6$d = ((top[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
-        end
-        if (pop & pop_fetch[32'h0] & put0[7]) begin
-            ask_w$7$d = ((top[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
-        end
-        if (pop & pop_fetch[32'h1] & put1[7]) begin
-            ask_w$7$d = ((top[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
-        end
-        if (pop & pop_fetch[32'h2] & put2[7]) begin
-            ask_w$7$d = ((top[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
-        end
-        if (pop & pop_fetch[32'h3] & put3[7]) begin
-            ask_w$7$d = ((top[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
-        end
-        if (pop & pop_fetch[32'h0] & put0[8]) begin
-            ask_w$8$d = ((top[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
-        end
-        if (pop & pop_fetch[32'h1] & put1[8]) begin
-            ask_w$8$d = ((top[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
-        end
-        if (pop & pop_fetch[32'h2] & put2[8]) begin
-            ask_w$8$d = ((top[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
-        end
-        if (pop & pop_fetch[32'h3] & put3[8]) begin
-            ask_w$8$d = ((top[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
-        end
-        if (pop & pop_fetch[32'h0] & put0[9]) begin
-            ask_w$9$d = ((top[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
-        end
-        if (pop & pop_fetch[32'h1] & put1[9]) begin
-            ask_w$9$d = ((top[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
-        end
-        if (pop & pop_fetch[32'h2] & put2[9]) begin
-            ask_w$9$d = ((top[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
-        end
-        if (pop & pop_fetch[32'h3] & put3[9]) begin
-            ask_w$9$d = ((top[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
-        end
-        if (pop & pop_fetch[32'h0] & put0[10]) begin
-            ask_w$10$d = ((top[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
-        end
-        if (pop & pop_fetch[32'h1] & put1[10]) begin
-            ask_w$10$d = ((top[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
-        end
-        if (pop & pop_fetch[32'h2] & put2[10]) begin
-            ask_w$10$d = ((top[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
-        end
-        if (pop & pop_fetch[32'h3] & put3[10]) begin
-            ask_w$10$d = ((top[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
-        end
-        if (pop & pop_fetch[32'h0] & put0[11]) begin
-            ask_w$11$d = ((top[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
-        end
-        if (pop & pop_fetch[32'h1] & put1[11]) begin
-            ask_w$11$d = ((top[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
-        end
-        if (pop & pop_fetch[32'h2] & put2[11]) begin
-            ask_w$11$d = ((top[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
-        end
-        if (pop & pop_fetch[32'h3] & put3[11]) begin
-            ask_w$11$d = ((top[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
-        end
-        if (pop & pop_fetch[32'h0] & put0[12]) begin
-            ask_w$12$d = ((top[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
-        end
-        if (pop & pop_fetch[32'h1] & put1[12]) begin
-            ask_w$12$d = ((top[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
-        end
-        if (pop & pop_fetch[32'h2] & put2[12]) begin
-            ask_w$12$d = ((top[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
-        end
-        if (pop & pop_fetch[32'h3] & put3[12]) begin
-            ask_w$12$d = ((top[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
-        end
-        if (pop & pop_fetch[32'h0] & put0[13]) begin
-            ask_w$13$d = ((top[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
-        end
-        if (pop & pop_fetch[32'h1] & put1[13]) begin
-            ask_w$13$d = ((top[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
-        end
-        if (pop & pop_fetch[32'h2] & put2[13]) begin
-            ask_w$13$d = ((top[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
-        end
-        if (pop & pop_fetch[32'h3] & put3[13]) begin
-            ask_w$13$d = ((top[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
-        end
-        if (pop & pop_fetch[32'h0] & put0[14]) begin
-            ask_w$14$d = ((top[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
-        end
-        if (pop & pop_fetch[32'h1] & put1[14]) begin
-            ask_w$14$d = ((top[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
-        end
-        if (pop & pop_fetch[32'h2] & put2[14]) begin
-            ask_w$14$d = ((top[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
-        end
-        if (pop & pop_fetch[32'h3] & put3[14]) begin
-            ask_w$14$d = ((top[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
-        end
-        if (pop & pop_fetch[32'h0] & put0[15]) begin
-            ask_w$15$d = ((top[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
-        end
-        if (pop & pop_fetch[32'h1] & put1[15]) begin
-            ask_w$15$d = ((top[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
-        end
-        if (pop & pop_fetch[32'h2] & put2[15]) begin
-            ask_w$15$d = ((top[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
-        end
-        if (pop & pop_fetch[32'h3] & put3[15]) begin
-            ask_w$15$d = ((top[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
-        end
-        if (pop & pop_fetch[32'h0] & put0[16]) begin
-            ask_w$16$d = ((top[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
-        end
-        if (pop & pop_fetch[32'h1] & put1[16]) begin
-            ask_w$16$d = ((top[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
-        end
-        if (pop & pop_fetch[32'h2] & put2[16]) begin
-            ask_w$16$d = ((top[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
-        end
-        if (pop & pop_fetch[32'h3] & put3[16]) begin
-            ask_w$16$d = ((top[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
-        end
-        if (pop & pop_fetch[32'h0] & put0[17]) begin
-            ask_w$17$d = ((top[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
-        end
-        if (pop & pop_fetch[32'h1] & put1[17]) begin
-            ask_w$17$d = ((top[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
-        end
-        if (pop & pop_fetch[32'h2] & put2[17]) begin
-            ask_w$17$d = ((top[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
-        end
-        if (pop & pop_fetch[32'h3] & put3[17]) begin
-            ask_w$17$d = ((top[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
-        end
-        if (pop & pop_fetch[32'h0] & put0[18]) begin
-            ask_w$18$d = ((top[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
-        end
-        if (pop & pop_fetch[32'h1] & put1[18]) begin
-            ask_w$18$d = ((top[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
-        end
-        if (pop & pop_fetch[32'h2] & put2[18]) begin
-            ask_w$18$d = ((top[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
-        end
-        if (pop & pop_fetch[32'h3] & put3[18]) begin
-            ask_w$18$d = ((top[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
-        end
-        if (pop & pop_fetch[32'h0] & put0[19]) begin
-            ask_w$19$d = ((top[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
-        end
-        if (pop & pop_fetch[32'h1] & put1[19]) begin
-            ask_w$19$d = ((top[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
-        end
-        if (pop & pop_fetch[32'h2] & put2[19]) begin
-            ask_w$19$d = ((top[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
-        end
-        if (pop & pop_fetch[32'h3] & put3[19]) begin
-            ask_w$19$d = ((top[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
-        end
-        if (pop & pop_fetch[32'h0] & put0[20]) begin
-            ask_w$20$d = ((top[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
-        end
-        if (pop & pop_fetch[32'h1] & put1[20]) begin
-            ask_w$20$d = ((top[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
-        end
-        if (pop & pop_fetch[32'h2] & put2[20]) begin
-            ask_w$20$d = ((top[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
-        end
-        if (pop & pop_fetch[32'h3] & put3[20]) begin
-            ask_w$20$d = ((top[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
-        end
-        if (pop & pop_fetch[32'h0] & put0[21]) begin
-            ask_w$21$d = ((top[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
-        end
-        if (pop & pop_fetch[32'h1] & put1[21]) begin
-            ask_w$21$d = ((top[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
-        end
-        if (pop & pop_fetch[32'h2] & put2[21]) begin
-            ask_w$21$d = ((top[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
-        end
-        if (pop & pop_fetch[32'h3] & put3[21]) begin
-            ask_w$21$d = ((top[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
-        end
-        if (pop & pop_fetch[32'h0] & put0[22]) begin
-            ask_w$22$d = ((top[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
-        end
-        if (pop & pop_fetch[32'h1] & put1[22]) begin
-            ask_w$22$d = ((top[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
-        end
-        if (pop & pop_fetch[32'h2] & put2[22]) begin
-            ask_w$22$d = ((top[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
-        end
-        if (pop & pop_fetch[32'h3] & put3[22]) begin
-            ask_w$22$d = ((top[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
-        end
-        if (pop & pop_fetch[32'h0] & put0[23]) begin
-            ask_w$23$d = ((top[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
-        end
-        if (pop & pop_fetch[32'h1] & put1[23]) begin
-            ask_w$23$d = ((top[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
-        end
-        if (pop & pop_fetch[32'h2] & put2[23]) begin
-            ask_w$23$d = ((top[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
-        end
-        if (pop & pop_fetch[32'h3] & put3[23]) begin
-            ask_w$23$d = ((top[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
-        end
-        if (pop & pop_fetch[32'h0] & put0[24]) begin
-            ask_w$24$d = ((top[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
-        end
-        if (pop & pop_fetch[32'h1] & put1[24]) begin
-            ask_w$24$d = ((top[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
-        end
-        if (pop & pop_fetch[32'h2] & put2[24]) begin
-            ask_w$24$d = ((top[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
-        end
-        if (pop & pop_fetch[32'h3] & put3[24]) begin
-            ask_w$24$d = ((top[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
-        end
-        if (pop & pop_fetch[32'h0] & put0[25]) begin
-            ask_w$25$d = ((top[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
-        end
-        if (pop & pop_fetch[32'h1] & put1[25]) begin
-            ask_w$25$d = ((top[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
-        end
-        if (pop & pop_fetch[32'h2] & put2[25]) begin
-            ask_w$25$d = ((top[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
-        end
-        if (pop & pop_fetch[32'h3] & put3[25]) begin
-            ask_w$25$d = ((top[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
-        end
-        if (pop & pop_fetch[32'h0] & put0[26]) begin
-            ask_w$26$d = ((top[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
-        end
-        if (pop & pop_fetch[32'h1] & put1[26]) begin
-            ask_w$26$d = ((top[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
-        end
-        if (pop & pop_fetch[32'h2] & put2[26]) begin
-            ask_w$26$d = ((top[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
-        end
-        if (pop & pop_fetch[32'h3] & put3[26]) begin
-            ask_w$26$d = ((top[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
-        end
-        if (pop & pop_fetch[32'h0] & put0[27]) begin
-            ask_w$27$d = ((top[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
-        end
-        if (pop & pop_fetch[32'h1] & put1[27]) begin
-            ask_w$27$d = ((top[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
-        end
-        if (pop & pop_fetch[32'h2] & put2[27]) begin
-            ask_w$27$d = ((top[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
-        end
-        if (pop & pop_fetch[32'h3] & put3[27]) begin
-            ask_w$27$d = ((top[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
-        end
-        if (pop & pop_fetch[32'h0] & put0[28]) begin
-            ask_w$28$d = ((top[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
-        end
-        if (pop & pop_fetch[32'h1] & put1[28]) begin
-            ask_w$28$d = ((top[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
-        end
-        if (pop & pop_fetch[32'h2] & put2[28]) begin
-            ask_w$28$d = ((top[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
-        end
-        if (pop & pop_fetch[32'h3] & put3[28]) begin
-            ask_w$28$d = ((top[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
-        end
-        if (pop & pop_fetch[32'h0] & put0[29]) begin
-            ask_w$29$d = ((top[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
-        end
-        if (pop & pop_fetch[32'h1] & put1[29]) begin
-            ask_w$29$d = ((top[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
-        end
-        if (pop & pop_fetch[32'h2] & put2[29]) begin
-            ask_w$29$d = ((top[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
-        end
-        if (pop & pop_fetch[32'h3] & put3[29]) begin
-            ask_w$29$d = ((top[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
-        end
-        if (pop & pop_fetch[32'h0] & put0[30]) begin
-            ask_w$30$d = ((top[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
-        end
-        if (pop & pop_fetch[32'h1] & put1[30]) begin
-            ask_w$30$d = ((top[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
-        end
-        if (pop & pop_fetch[32'h2] & put2[30]) begin
-            ask_w$30$d = ((top[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
-        end
-        if (pop & pop_fetch[32'h3] & put3[30]) begin
-            ask_w$30$d = ((top[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
-        end
-        if (pop & pop_fetch[32'h0] & put0[31]) begin
-            ask_w$31$d = ((top[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
-        end
-        if (pop & pop_fetch[32'h1] & put1[31]) begin
-            ask_w$31$d = ((top[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
-        end
-        if (pop & pop_fetch[32'h2] & put2[31]) begin
-            ask_w$31$d = ((top[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
-        end
-        if (pop & pop_fetch[32'h3] & put3[31]) begin
-            ask_w$31$d = ((top[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
-        end
-        ask_take = accept & ~req_dst[32'h1];
-        ask_n$d = ask_n$q - ((ask_take) & 6'h3f);
-        if (pop) begin
-            ask_tail$d = ask_tail$q + ask_new;
-            ask_n$d = ask_n$q - ((ask_take) & 6'h3f) + ((ask_new) & 6'h3f);
-        end
-        xa = r_a0;
-        xb = r_a1;
-        ya = r_b0;
-        yb = r_b1;
-        if (r_flip) begin
-            xa = r_a1;
-            xb = r_a0;
-            ya = r_b1;
-            yb = r_b0;
-        end
-        p0a = xa;
-        p0b = r_b0;
-        p1a = xa;
-        p1b = r_b1;
-        if (r_b_leaf) begin
-            p0b = r_b;
-            p1a = xb;
-            p1b = r_b;
-        end
-        if (r_a_leaf) begin
-            p0a = r_a;
-            p0b = ya;
-            p1a = r_a;
-            p1b = yb;
-        end
-        e0 = c_two | ((p0a) & 67'h7ffffffffffffffff) | (((p0b) & 67'h7ffffffffffffffff) << 32'h10) | (((p1a) & 67'h7ffffffffffffffff) << 32'h21) | (((p1b) & 67'h7ffffffffffffffff) << 32'h31);
-        e1 = c_two | ((xb) & 67'h7ffffffffffffffff) | (((r_b1) & 67'h7ffffffffffffffff) << 32'h10) | (((xb) & 67'h7ffffffffffffffff) << 32'h21) | (((r_b0) & 67'h7ffffffffffffffff) << 32'h31);
-        queue$clear = start & ~run$q;
-        queue$lifo = mode_lifo$q;
-        queue$push = 1'b0;
-        queue$push_data = e0;
-        queue$push2 = 1'b0;
-        queue$push2_data = e1;
-        pend$d = 1'b0;
-        if (pend$q) begin
-            queue$push = 1'b1;
-            queue$push_data = pend_data$q;
-        end
-        leaf_in = r_hit & r_a_leaf & r_b_leaf;
-        if (r_hit & ~(r_a_leaf & r_b_leaf)) begin
-            queue$push = 1'b1;
-            if (r_a_leaf | r_b_leaf) begin
-                queue$push_data = e0;
-            end
-            else begin
-                queue$push2 = port_one$q;
-                pend$d = ~port_one$q;
-                if (mode_lifo$q) begin
-                    queue$push_data = e1;
-                    queue$push2_data = e0;
-                    pend_data$d = e0;
-                end
-                else begin
-                    queue$push_data = e0;
-                    pend_data$d = e1;
-                end
-            end
-        end
-        if (push_root$q) begin
-            queue$push = 1'b1;
-            queue$push_data = ((root$q) & 67'h7ffffffffffffffff);
-        end
-        push_root$d = 1'b0;
-        inflight$d = inflight$q;
-        if (issue & ~dop$valid_out) begin
-            inflight$d = inflight$q + 32'h1;
-        end
-        if (dop$valid_out & ~issue) begin
-            inflight$d = inflight$q - 32'h1;
-        end
-        leaf_fifo$write = leaf_in;
-        leaf_fifo$data_in = ((r_a0) & 32'hffffffff) | (((r_b0) & 32'hffffffff) << 32'h10);
+        leaf_fifo$write = d_cntr$leaf_in;
+        leaf_fifo$data_in = d_cntr$leaf_pair;
         tri_in = run$q & ~halt & leaf_valid$q & ~need_ta & ~need_tb;
         tri_take = tri_in & tri_unit$in_ready;
         leaf_out = ~leaf_fifo$empty & (halt | (run$q & (~leaf_valid$q | tri_take)));
@@ -3385,16 +932,16 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
             leaf_valid$d = 1'b1;
             leaf_tag$d = leaf_fifo$data_out;
         end
-        if (leaf_in & ~leaf_out) begin
+        if (d_cntr$leaf_in & ~leaf_out) begin
             leaf_count$d = leaf_count$q + 32'h1;
         end
-        if (leaf_out & ~leaf_in) begin
+        if (leaf_out & ~d_cntr$leaf_in) begin
             leaf_count$d = leaf_count$q - 32'h1;
         end
-        tc_fill = resp & (resp_dst == 32'h2);
+        tc_fill = mem_port$resp & (mem_port$resp_dst == 32'h2);
         tc_id$write_enable = tc_fill;
         tc_id$write_address = tc_wr;
-        tc_id$write_data = ta_req$q;
+        tc_id$write_data = mem_port$ta_req;
         tc_word$write_enable = tc_fill;
         tc_word$write_address = tc_wr;
         tc_word$write_data = mem_resp_data[(32'h0)+:(554)];
@@ -3457,49 +1004,31 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         tri_unit$b_degenerate = tb_word$q[32'h17 * 32'h18 + 32'h1];
         tri_unit$tag = leaf_tag$q;
         tri_unit$in_valid = tri_in;
-        keep = tri_unit$out_hit | tri_unit$out_uncertain;
-        res_valid = tri_unit$out_valid & keep;
-        res_tag = tri_unit$out_tag;
-        res_uncertain = tri_unit$out_uncertain;
-        tri_unit$out_ready = res_ready | ~keep;
-        tri_give = tri_unit$out_valid & (res_ready | ~keep);
-        if (tri_take & ~tri_give) begin
-            tri_open$d = tri_open$q + 32'h1;
-        end
-        if (tri_give & ~tri_take) begin
-            tri_open$d = tri_open$q - 32'h1;
-        end
-        if (run$q & mode_first$q & tri_unit$out_valid & tri_unit$out_hit & ~tri_unit$out_uncertain) begin
+        result$take = tri_take;
+        result$out_valid = tri_unit$out_valid;
+        result$out_hit = tri_unit$out_hit;
+        result$out_uncertain = tri_unit$out_uncertain;
+        result$out_tag = tri_unit$out_tag;
+        result$res_ready = res_ready;
+        tri_unit$out_ready = result$out_ready;
+        res_valid = result$res_valid;
+        res_tag = result$res_tag;
+        res_uncertain = result$res_uncertain;
+        if (run$q & mode_first$q & result$sure_hit) begin
             stop$d = 1'b1;
         end
-        halt_idle = (inflight$q == 32'h0) & ~pend$q & (tag_n$q == 32'h0) & (tri_open$q == 32'h0) & ~push_root$q & (leaf_count$q == 32'h0);
-        all_idle = halt_idle & queue$empty & ~ent_valid & ~leaf_valid$q;
+        halt_idle = (d_cntr$inflight == 32'h0) & ~d_cntr$pend & ~mem_port$outstanding & (result$open == 32'h0) & ~push_root$q & (leaf_count$q == 32'h0);
+        all_idle = halt_idle & d_cntr$empty & ~d_cntr$ent_valid & ~leaf_valid$q;
         if (run$q & (all_idle | (halt & halt_idle))) begin
             run$d = 1'b0;
             done_r$d = 1'b1;
         end
-        if (start & ~run$q) begin
+        if (start_q) begin
             run$d = 1'b1;
             done_r$d = 1'b0;
             push_root$d = 1'b1;
             stop$d = 1'b0;
             leaf_valid$d = 1'b0;
-            ahd_head$d = 32'h0;
-            ahd_tail$d = 32'h0;
-            ahd_pairs$d = 32'h0;
-            ent_second$d = 1'b0;
-            last_ok$d = 1'b0;
-            ask_head$d = 32'h0;
-            ask_tail$d = 32'h0;
-            ask_n$d = 32'h0;
-            seq_head$d = 32'h0;
-            seq_tail$d = 32'h0;
-            wa_head$d = 32'h0;
-            wa_tail$d = 32'h0;
-            wa_n$d = 32'h0;
-            wb_head$d = 32'h0;
-            wb_tail$d = 32'h0;
-            wb_n$d = 32'h0;
             ta_valid$d = 32'h0;
             tb_ok$d = 1'b0;
             cnt_dop$d = 32'h0;
@@ -3509,8 +1038,8 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         end
         busy = run$q;
         done = done_r$q;
-        overflow = queue$overflow;
-        max_depth = queue$max_count;
+        overflow = d_cntr$overflow;
+        max_depth = d_cntr$max_count;
         dop_tests = cnt_dop$q;
         tri_tests = cnt_tri$q;
         node_fetches = cnt_nf$q;
@@ -3518,101 +1047,6 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
     end
     
 endmodule // top
-
-
-module top$ahd_ent$0(d,q,clock);
-    
-    // Module arguments
-    input wire  [66:0] d;
-    output reg  [66:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 67'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$ahd_ent$0
-
-
-module top$ahd_fetch$0(d,q,clock);
-    
-    // Module arguments
-    input wire  [3:0] d;
-    output reg  [3:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 4'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$ahd_fetch$0
-
-
-module top$ahd_pairs(d,q,clock);
-    
-    // Module arguments
-    input wire  [4:0] d;
-    output reg  [4:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 5'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$ahd_pairs
-
-
-module top$ask_n(d,q,clock);
-    
-    // Module arguments
-    input wire  [5:0] d;
-    output reg  [5:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 6'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$ask_n
-
-
-module top$ask_w$0(d,q,clock);
-    
-    // Module arguments
-    input wire  [21:0] d;
-    output reg  [21:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 22'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$ask_w$0
 
 
 module top$base_na(d,q,clock);
@@ -3653,7 +1087,1038 @@ module top$cnt_dop(d,q,clock);
 endmodule // top$cnt_dop
 
 
-module top$done_r(d,q,clock);
+module top$d_cntr(clock,clear,lifo,push_root,root,go,pf,one,credit_lim,leaf_count,wa_empty,wb_empty,dop_valid,dop_overlap,side,empty,count,max_count,overflow,push,pop,pop_entry,pop_fetch,ent_valid,cur_a,cur_b,cur_flip,cur_fa,cur_fb,need_na,need_nb,issue,r_a,r_b,r_a_leaf,r_b_leaf,leaf_in,leaf_pair,inflight,pend);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  clear;
+    input wire  lifo;
+    input wire  push_root;
+    input wire  [31:0] root;
+    input wire  go;
+    input wire  [4:0] pf;
+    input wire  one;
+    input wire  [5:0] credit_lim;
+    input wire  [5:0] leaf_count;
+    input wire  wa_empty;
+    input wire  wb_empty;
+    input wire  dop_valid;
+    input wire  dop_overlap;
+    input wire  [98:0] side;
+    output reg  empty;
+    output reg  [10:0] count;
+    output reg  [10:0] max_count;
+    output reg  overflow;
+    output reg  push;
+    output reg  pop;
+    output reg  [66:0] pop_entry;
+    output reg  [3:0] pop_fetch;
+    output reg  ent_valid;
+    output reg  [15:0] cur_a;
+    output reg  [15:0] cur_b;
+    output reg  cur_flip;
+    output reg  cur_fa;
+    output reg  cur_fb;
+    output reg  need_na;
+    output reg  need_nb;
+    output reg  issue;
+    output reg  [15:0] r_a;
+    output reg  [15:0] r_b;
+    output reg  r_a_leaf;
+    output reg  r_b_leaf;
+    output reg  leaf_in;
+    output reg  [31:0] leaf_pair;
+    output reg  [4:0] inflight;
+    output reg  pend;
+    
+    // Constant declarations
+    localparam  c_one16 = 16'h1;
+    localparam  c_two = 67'h60000000000000000;
+    
+    // Stub signals
+    reg  queue$clock;
+    reg  queue$clear;
+    reg  queue$lifo;
+    reg  queue$push;
+    reg  [66:0] queue$push_data;
+    reg  queue$push2;
+    reg  [66:0] queue$push2_data;
+    reg  queue$pop;
+    wire  queue$empty;
+    wire  queue$full;
+    wire  [10:0] queue$count;
+    wire  [10:0] queue$max_count;
+    wire  queue$overflow;
+    wire  [66:0] queue$top_data;
+    reg  ahd_ent$clock;
+    reg  [15:0] ahd_ent$wsel;
+    reg  [66:0] ahd_ent$wdata;
+    reg  [15:0] ahd_ent$rsel;
+    wire  [66:0] ahd_ent$rdata;
+    reg  ahd_fetch$clock;
+    reg  [15:0] ahd_fetch$wsel;
+    reg  [3:0] ahd_fetch$wdata;
+    reg  [15:0] ahd_fetch$rsel;
+    wire  [3:0] ahd_fetch$rdata;
+    reg  [3:0] ahd_head$d;
+    wire  [3:0] ahd_head$q;
+    reg  ahd_head$clock;
+    reg  [3:0] ahd_tail$d;
+    wire  [3:0] ahd_tail$q;
+    reg  ahd_tail$clock;
+    reg  [4:0] ahd_pairs$d;
+    wire  [4:0] ahd_pairs$q;
+    reg  ahd_pairs$clock;
+    reg  ent_second$d;
+    wire  ent_second$q;
+    reg  ent_second$clock;
+    reg  last_ok$d;
+    wire  last_ok$q;
+    reg  last_ok$clock;
+    reg  [15:0] last_a$d;
+    wire  [15:0] last_a$q;
+    reg  last_a$clock;
+    reg  [15:0] last_b$d;
+    wire  [15:0] last_b$q;
+    reg  last_b$clock;
+    reg  last_issue$d;
+    wire  last_issue$q;
+    reg  last_issue$clock;
+    reg  [4:0] inflight_r$d;
+    wire  [4:0] inflight_r$q;
+    reg  inflight_r$clock;
+    reg  pend_r$d;
+    wire  pend_r$q;
+    reg  pend_r$clock;
+    reg  [66:0] pend_data$d;
+    wire  [66:0] pend_data$q;
+    reg  pend_data$clock;
+    
+    // Local signals
+    reg  [66:0] head_ent;
+    reg  [3:0] head_fetch;
+    reg  ent_last;
+    reg  [5:0] credit;
+    reg  room;
+    reg  child_push;
+    reg  [66:0] top;
+    reg  top_two;
+    reg  fetch_a0;
+    reg  fetch_b0;
+    reg  fetch_a1;
+    reg  fetch_b1;
+    reg  r_flip;
+    reg  [15:0] r_a0;
+    reg  [15:0] r_a1;
+    reg  [15:0] r_b0;
+    reg  [15:0] r_b1;
+    reg  r_hit;
+    reg  [15:0] xa;
+    reg  [15:0] xb;
+    reg  [15:0] ya;
+    reg  [15:0] yb;
+    reg  [15:0] p0a;
+    reg  [15:0] p0b;
+    reg  [15:0] p1a;
+    reg  [15:0] p1b;
+    reg  [66:0] e0;
+    reg  [66:0] e1;
+    
+    // Sub module instances
+    top$d_cntr$queue queue(
+        .clock(queue$clock),
+        .clear(queue$clear),
+        .lifo(queue$lifo),
+        .push(queue$push),
+        .push_data(queue$push_data),
+        .push2(queue$push2),
+        .push2_data(queue$push2_data),
+        .pop(queue$pop),
+        .empty(queue$empty),
+        .full(queue$full),
+        .count(queue$count),
+        .max_count(queue$max_count),
+        .overflow(queue$overflow),
+        .top_data(queue$top_data)
+    );
+    top$d_cntr$ahd_ent ahd_ent(
+        .clock(ahd_ent$clock),
+        .wsel(ahd_ent$wsel),
+        .wdata(ahd_ent$wdata),
+        .rsel(ahd_ent$rsel),
+        .rdata(ahd_ent$rdata)
+    );
+    top$d_cntr$ahd_fetch ahd_fetch(
+        .clock(ahd_fetch$clock),
+        .wsel(ahd_fetch$wsel),
+        .wdata(ahd_fetch$wdata),
+        .rsel(ahd_fetch$rsel),
+        .rdata(ahd_fetch$rdata)
+    );
+    top$d_cntr$ahd_fetch$row$0 ahd_head(
+        .d(ahd_head$d),
+        .q(ahd_head$q),
+        .clock(ahd_head$clock)
+    );
+    top$d_cntr$ahd_fetch$row$0 ahd_tail(
+        .d(ahd_tail$d),
+        .q(ahd_tail$q),
+        .clock(ahd_tail$clock)
+    );
+    top$d_cntr$ahd_pairs ahd_pairs(
+        .d(ahd_pairs$d),
+        .q(ahd_pairs$q),
+        .clock(ahd_pairs$clock)
+    );
+    top$d_cntr$ent_second ent_second(
+        .d(ent_second$d),
+        .q(ent_second$q),
+        .clock(ent_second$clock)
+    );
+    top$d_cntr$ent_second last_ok(
+        .d(last_ok$d),
+        .q(last_ok$q),
+        .clock(last_ok$clock)
+    );
+    top$d_cntr$last_a last_a(
+        .d(last_a$d),
+        .q(last_a$q),
+        .clock(last_a$clock)
+    );
+    top$d_cntr$last_a last_b(
+        .d(last_b$d),
+        .q(last_b$q),
+        .clock(last_b$clock)
+    );
+    top$d_cntr$ent_second last_issue(
+        .d(last_issue$d),
+        .q(last_issue$q),
+        .clock(last_issue$clock)
+    );
+    top$d_cntr$ahd_pairs inflight_r(
+        .d(inflight_r$d),
+        .q(inflight_r$q),
+        .clock(inflight_r$clock)
+    );
+    top$d_cntr$ent_second pend_r(
+        .d(pend_r$d),
+        .q(pend_r$q),
+        .clock(pend_r$clock)
+    );
+    top$d_cntr$ahd_ent$row$0 pend_data(
+        .d(pend_data$d),
+        .q(pend_data$q),
+        .clock(pend_data$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        ahd_head$clock = clock;
+        ahd_tail$clock = clock;
+        ahd_pairs$clock = clock;
+        ent_second$clock = clock;
+        last_ok$clock = clock;
+        last_a$clock = clock;
+        last_b$clock = clock;
+        ahd_head$d = ahd_head$q;
+        ahd_tail$d = ahd_tail$q;
+        ahd_pairs$d = ahd_pairs$q;
+        ent_second$d = ent_second$q;
+        last_ok$d = last_ok$q;
+        last_a$d = last_a$q;
+        last_b$d = last_b$q;
+        last_issue$clock = clock;
+        inflight_r$clock = clock;
+        pend_r$clock = clock;
+        pend_data$clock = clock;
+        last_issue$d = last_issue$q;
+        inflight_r$d = inflight_r$q;
+        pend_r$d = pend_r$q;
+        pend_data$d = pend_data$q;
+        queue$clock = clock;
+        ahd_ent$clock = clock;
+        ahd_fetch$clock = clock;
+        ahd_ent$rsel = c_one16 << ahd_head$q;
+        ahd_fetch$rsel = c_one16 << ahd_head$q;
+        head_ent = ahd_ent$rdata;
+        head_fetch = ahd_fetch$rdata;
+        ent_valid = ahd_pairs$q != 32'h0;
+        cur_a = head_ent[(32'h0)+:(16)];
+        cur_b = head_ent[(32'h10)+:(16)];
+        cur_flip = head_ent[(32'h20)+:(1)];
+        cur_fa = head_fetch[32'h0];
+        cur_fb = head_fetch[32'h1];
+        if (ent_second$q) begin
+            cur_a = head_ent[(32'h21)+:(16)];
+            cur_b = head_ent[(32'h31)+:(16)];
+            cur_flip = head_ent[(32'h41)+:(1)];
+            cur_fa = head_fetch[32'h2];
+            cur_fb = head_fetch[32'h3];
+        end
+        ent_last = ent_second$q | ~head_ent[32'h42];
+        need_na = go & (ahd_pairs$q != 32'h0) & cur_fa & wa_empty;
+        need_nb = go & (ahd_pairs$q != 32'h0) & cur_fb & wb_empty;
+        credit = ((inflight_r$q) & 6'h3f) + leaf_count;
+        issue = go & (ahd_pairs$q != 32'h0) & ~need_na & ~need_nb & ~(last_issue$q & ~one) & (credit < credit_lim);
+        last_issue$d = issue;
+        if (issue) begin
+            ent_second$d = 1'b1;
+            if (ent_last) begin
+                ent_second$d = 1'b0;
+                ahd_head$d = ahd_head$q + 32'h1;
+            end
+        end
+        r_a = side[(32'h0)+:(16)];
+        r_b = side[(32'h10)+:(16)];
+        r_flip = side[32'h20];
+        r_a_leaf = side[32'h21];
+        r_a0 = side[(32'h22)+:(16)];
+        r_a1 = side[(32'h32)+:(16)];
+        r_b_leaf = side[32'h42];
+        r_b0 = side[(32'h43)+:(16)];
+        r_b1 = side[(32'h53)+:(16)];
+        r_hit = dop_valid & dop_overlap;
+        child_push = pend_r$q | (r_hit & ~(r_a_leaf & r_b_leaf));
+        room = (ahd_pairs$q - ((issue) & 5'h1f)) <= pf;
+        pop = go & ~queue$empty & room & ~(lifo & child_push);
+        queue$pop = pop;
+        top = queue$top_data;
+        top_two = top[32'h42];
+        fetch_a0 = ~(last_ok$q & (last_a$q == top[(32'h0)+:(16)]));
+        fetch_b0 = ~(last_ok$q & (last_b$q == top[(32'h10)+:(16)]));
+        fetch_a1 = top_two & (top[(32'h21)+:(16)] != top[(32'h0)+:(16)]);
+        fetch_b1 = top_two & (top[(32'h31)+:(16)] != top[(32'h10)+:(16)]);
+        pop_fetch = ((fetch_a0) & 4'hf) | (((fetch_b0) & 4'hf) << 32'h1) | (((fetch_a1) & 4'hf) << 32'h2) | (((fetch_b1) & 4'hf) << 32'h3);
+        pop_entry = top;
+        ahd_ent$wsel = 32'h0;
+        ahd_fetch$wsel = 32'h0;
+        if (pop) begin
+            ahd_ent$wsel = c_one16 << ahd_tail$q;
+            ahd_fetch$wsel = c_one16 << ahd_tail$q;
+        end
+        ahd_ent$wdata = top;
+        ahd_fetch$wdata = pop_fetch;
+        ahd_pairs$d = ahd_pairs$q - ((issue) & 5'h1f);
+        if (pop) begin
+            ahd_tail$d = ahd_tail$q + 32'h1;
+            ahd_pairs$d = ahd_pairs$q - ((issue) & 5'h1f) + 32'h1 + ((top_two) & 5'h1f);
+            last_ok$d = 1'b1;
+            last_a$d = top[(32'h0)+:(16)];
+            last_b$d = top[(32'h10)+:(16)];
+            if (top_two) begin
+                last_a$d = top[(32'h21)+:(16)];
+                last_b$d = top[(32'h31)+:(16)];
+            end
+        end
+        xa = r_a0;
+        xb = r_a1;
+        ya = r_b0;
+        yb = r_b1;
+        if (r_flip) begin
+            xa = r_a1;
+            xb = r_a0;
+            ya = r_b1;
+            yb = r_b0;
+        end
+        p0a = xa;
+        p0b = r_b0;
+        p1a = xa;
+        p1b = r_b1;
+        if (r_b_leaf) begin
+            p0b = r_b;
+            p1a = xb;
+            p1b = r_b;
+        end
+        if (r_a_leaf) begin
+            p0a = r_a;
+            p0b = ya;
+            p1a = r_a;
+            p1b = yb;
+        end
+        e0 = c_two | ((p0a) & 67'h7ffffffffffffffff) | (((p0b) & 67'h7ffffffffffffffff) << 32'h10) | (((p1a) & 67'h7ffffffffffffffff) << 32'h21) | (((p1b) & 67'h7ffffffffffffffff) << 32'h31);
+        e1 = c_two | ((xb) & 67'h7ffffffffffffffff) | (((r_b1) & 67'h7ffffffffffffffff) << 32'h10) | (((xb) & 67'h7ffffffffffffffff) << 32'h21) | (((r_b0) & 67'h7ffffffffffffffff) << 32'h31);
+        queue$clear = clear;
+        queue$lifo = lifo;
+        queue$push = 1'b0;
+        queue$push_data = e0;
+        queue$push2 = 1'b0;
+        queue$push2_data = e1;
+        pend_r$d = 1'b0;
+        if (pend_r$q) begin
+            queue$push = 1'b1;
+            queue$push_data = pend_data$q;
+        end
+        leaf_in = r_hit & r_a_leaf & r_b_leaf;
+        leaf_pair = ((r_a0) & 32'hffffffff) | (((r_b0) & 32'hffffffff) << 32'h10);
+        if (r_hit & ~(r_a_leaf & r_b_leaf)) begin
+            queue$push = 1'b1;
+            if (r_a_leaf | r_b_leaf) begin
+                queue$push_data = e0;
+            end
+            else begin
+                queue$push2 = one;
+                pend_r$d = ~one;
+                if (lifo) begin
+                    queue$push_data = e1;
+                    queue$push2_data = e0;
+                    pend_data$d = e0;
+                end
+                else begin
+                    queue$push_data = e0;
+                    pend_data$d = e1;
+                end
+            end
+        end
+        if (push_root) begin
+            queue$push = 1'b1;
+            queue$push_data = ((root) & 67'h7ffffffffffffffff);
+        end
+        inflight_r$d = inflight_r$q;
+        if (issue & ~dop_valid) begin
+            inflight_r$d = inflight_r$q + 32'h1;
+        end
+        if (dop_valid & ~issue) begin
+            inflight_r$d = inflight_r$q - 32'h1;
+        end
+        if (clear) begin
+            ahd_head$d = 32'h0;
+            ahd_tail$d = 32'h0;
+            ahd_pairs$d = 32'h0;
+            ent_second$d = 1'b0;
+            last_ok$d = 1'b0;
+        end
+        push = queue$push;
+        empty = queue$empty;
+        count = queue$count;
+        max_count = queue$max_count;
+        overflow = queue$overflow;
+        inflight = inflight_r$q;
+        pend = pend_r$q;
+    end
+    
+endmodule // top$d_cntr
+
+
+module top$d_cntr$ahd_ent(clock,wsel,wdata,rsel,rdata);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] wsel;
+    input wire  [66:0] wdata;
+    input wire  [15:0] rsel;
+    output reg  [66:0] rdata;
+    
+    // Stub signals
+    reg  [66:0] row$0$d;
+    wire  [66:0] row$0$q;
+    reg  row$0$clock;
+    reg  [66:0] row$1$d;
+    wire  [66:0] row$1$q;
+    reg  row$1$clock;
+    reg  [66:0] row$2$d;
+    wire  [66:0] row$2$q;
+    reg  row$2$clock;
+    reg  [66:0] row$3$d;
+    wire  [66:0] row$3$q;
+    reg  row$3$clock;
+    reg  [66:0] row$4$d;
+    wire  [66:0] row$4$q;
+    reg  row$4$clock;
+    reg  [66:0] row$5$d;
+    wire  [66:0] row$5$q;
+    reg  row$5$clock;
+    reg  [66:0] row$6$d;
+    wire  [66:0] row$6$q;
+    reg  row$6$clock;
+    reg  [66:0] row$7$d;
+    wire  [66:0] row$7$q;
+    reg  row$7$clock;
+    reg  [66:0] row$8$d;
+    wire  [66:0] row$8$q;
+    reg  row$8$clock;
+    reg  [66:0] row$9$d;
+    wire  [66:0] row$9$q;
+    reg  row$9$clock;
+    reg  [66:0] row$10$d;
+    wire  [66:0] row$10$q;
+    reg  row$10$clock;
+    reg  [66:0] row$11$d;
+    wire  [66:0] row$11$q;
+    reg  row$11$clock;
+    reg  [66:0] row$12$d;
+    wire  [66:0] row$12$q;
+    reg  row$12$clock;
+    reg  [66:0] row$13$d;
+    wire  [66:0] row$13$q;
+    reg  row$13$clock;
+    reg  [66:0] row$14$d;
+    wire  [66:0] row$14$q;
+    reg  row$14$clock;
+    reg  [66:0] row$15$d;
+    wire  [66:0] row$15$q;
+    reg  row$15$clock;
+    
+    // Local signals
+    reg  [66:0] picked;
+    
+    // Sub module instances
+    top$d_cntr$ahd_ent$row$0 row$0(
+        .d(row$0$d),
+        .q(row$0$q),
+        .clock(row$0$clock)
+    );
+    top$d_cntr$ahd_ent$row$0 row$1(
+        .d(row$1$d),
+        .q(row$1$q),
+        .clock(row$1$clock)
+    );
+    top$d_cntr$ahd_ent$row$0 row$2(
+        .d(row$2$d),
+        .q(row$2$q),
+        .clock(row$2$clock)
+    );
+    top$d_cntr$ahd_ent$row$0 row$3(
+        .d(row$3$d),
+        .q(row$3$q),
+        .clock(row$3$clock)
+    );
+    top$d_cntr$ahd_ent$row$0 row$4(
+        .d(row$4$d),
+        .q(row$4$q),
+        .clock(row$4$clock)
+    );
+    top$d_cntr$ahd_ent$row$0 row$5(
+        .d(row$5$d),
+        .q(row$5$q),
+        .clock(row$5$clock)
+    );
+    top$d_cntr$ahd_ent$row$0 row$6(
+        .d(row$6$d),
+        .q(row$6$q),
+        .clock(row$6$clock)
+    );
+    top$d_cntr$ahd_ent$row$0 row$7(
+        .d(row$7$d),
+        .q(row$7$q),
+        .clock(row$7$clock)
+    );
+    top$d_cntr$ahd_ent$row$0 row$8(
+        .d(row$8$d),
+        .q(row$8$q),
+        .clock(row$8$clock)
+    );
+    top$d_cntr$ahd_ent$row$0 row$9(
+        .d(row$9$d),
+        .q(row$9$q),
+        .clock(row$9$clock)
+    );
+    top$d_cntr$ahd_ent$row$0 row$10(
+        .d(row$10$d),
+        .q(row$10$q),
+        .clock(row$10$clock)
+    );
+    top$d_cntr$ahd_ent$row$0 row$11(
+        .d(row$11$d),
+        .q(row$11$q),
+        .clock(row$11$clock)
+    );
+    top$d_cntr$ahd_ent$row$0 row$12(
+        .d(row$12$d),
+        .q(row$12$q),
+        .clock(row$12$clock)
+    );
+    top$d_cntr$ahd_ent$row$0 row$13(
+        .d(row$13$d),
+        .q(row$13$q),
+        .clock(row$13$clock)
+    );
+    top$d_cntr$ahd_ent$row$0 row$14(
+        .d(row$14$d),
+        .q(row$14$q),
+        .clock(row$14$clock)
+    );
+    top$d_cntr$ahd_ent$row$0 row$15(
+        .d(row$15$d),
+        .q(row$15$q),
+        .clock(row$15$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        picked = 32'h0;
+        row$0$clock = clock;
+        row$0$d = row$0$q;
+        if (wsel[0]) begin
+            row$0$d = wdata;
+        end
+        if (rsel[0]) begin
+            picked = row$0$q;
+        end
+        row$1$clock = clock;
+        row$1$d = row$1$q;
+        if (wsel[1]) begin
+            row$1$d = wdata;
+        end
+        if (rsel[1]) begin
+            picked = row$1$q;
+        end
+        row$2$clock = clock;
+        row$2$d = row$2$q;
+        if (wsel[2]) begin
+            row$2$d = wdata;
+        end
+        if (rsel[2]) begin
+            picked = row$2$q;
+        end
+        row$3$clock = clock;
+        row$3$d = row$3$q;
+        if (wsel[3]) begin
+            row$3$d = wdata;
+        end
+        if (rsel[3]) begin
+            picked = row$3$q;
+        end
+        row$4$clock = clock;
+        row$4$d = row$4$q;
+        if (wsel[4]) begin
+            row$4$d = wdata;
+        end
+        if (rsel[4]) begin
+            picked = row$4$q;
+        end
+        row$5$clock = clock;
+        row$5$d = row$5$q;
+        if (wsel[5]) begin
+            row$5$d = wdata;
+        end
+        if (rsel[5]) begin
+            picked = row$5$q;
+        end
+        row$6$clock = clock;
+        row$6$d = row$6$q;
+        if (wsel[6]) begin
+            row$6$d = wdata;
+        end
+        if (rsel[6]) begin
+            picked = row$6$q;
+        end
+        row$7$clock = clock;
+        row$7$d = row$7$q;
+        if (wsel[7]) begin
+            row$7$d = wdata;
+        end
+        if (rsel[7]) begin
+            picked = row$7$q;
+        end
+        row$8$clock = clock;
+        row$8$d = row$8$q;
+        if (wsel[8]) begin
+            row$8$d = wdata;
+        end
+        if (rsel[8]) begin
+            picked = row$8$q;
+        end
+        row$9$clock = clock;
+        row$9$d = row$9$q;
+        if (wsel[9]) begin
+            row$9$d = wdata;
+        end
+        if (rsel[9]) begin
+            picked = row$9$q;
+        end
+        row$10$clock = clock;
+        row$10$d = row$10$q;
+        if (wsel[10]) begin
+            row$10$d = wdata;
+        end
+        if (rsel[10]) begin
+            picked = row$10$q;
+        end
+        row$11$clock = clock;
+        row$11$d = row$11$q;
+        if (wsel[11]) begin
+            row$11$d = wdata;
+        end
+        if (rsel[11]) begin
+            picked = row$11$q;
+        end
+        row$12$clock = clock;
+        row$12$d = row$12$q;
+        if (wsel[12]) begin
+            row$12$d = wdata;
+        end
+        if (rsel[12]) begin
+            picked = row$12$q;
+        end
+        row$13$clock = clock;
+        row$13$d = row$13$q;
+        if (wsel[13]) begin
+            row$13$d = wdata;
+        end
+        if (rsel[13]) begin
+            picked = row$13$q;
+        end
+        row$14$clock = clock;
+        row$14$d = row$14$q;
+        if (wsel[14]) begin
+            row$14$d = wdata;
+        end
+        if (rsel[14]) begin
+            picked = row$14$q;
+        end
+        row$15$clock = clock;
+        row$15$d = row$15$q;
+        if (wsel[15]) begin
+            row$15$d = wdata;
+        end
+        if (rsel[15]) begin
+            picked = row$15$q;
+        end
+        rdata = picked;
+    end
+    
+endmodule // top$d_cntr$ahd_ent
+
+
+module top$d_cntr$ahd_ent$row$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [66:0] d;
+    output reg  [66:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 67'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$d_cntr$ahd_ent$row$0
+
+
+module top$d_cntr$ahd_fetch(clock,wsel,wdata,rsel,rdata);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] wsel;
+    input wire  [3:0] wdata;
+    input wire  [15:0] rsel;
+    output reg  [3:0] rdata;
+    
+    // Stub signals
+    reg  [3:0] row$0$d;
+    wire  [3:0] row$0$q;
+    reg  row$0$clock;
+    reg  [3:0] row$1$d;
+    wire  [3:0] row$1$q;
+    reg  row$1$clock;
+    reg  [3:0] row$2$d;
+    wire  [3:0] row$2$q;
+    reg  row$2$clock;
+    reg  [3:0] row$3$d;
+    wire  [3:0] row$3$q;
+    reg  row$3$clock;
+    reg  [3:0] row$4$d;
+    wire  [3:0] row$4$q;
+    reg  row$4$clock;
+    reg  [3:0] row$5$d;
+    wire  [3:0] row$5$q;
+    reg  row$5$clock;
+    reg  [3:0] row$6$d;
+    wire  [3:0] row$6$q;
+    reg  row$6$clock;
+    reg  [3:0] row$7$d;
+    wire  [3:0] row$7$q;
+    reg  row$7$clock;
+    reg  [3:0] row$8$d;
+    wire  [3:0] row$8$q;
+    reg  row$8$clock;
+    reg  [3:0] row$9$d;
+    wire  [3:0] row$9$q;
+    reg  row$9$clock;
+    reg  [3:0] row$10$d;
+    wire  [3:0] row$10$q;
+    reg  row$10$clock;
+    reg  [3:0] row$11$d;
+    wire  [3:0] row$11$q;
+    reg  row$11$clock;
+    reg  [3:0] row$12$d;
+    wire  [3:0] row$12$q;
+    reg  row$12$clock;
+    reg  [3:0] row$13$d;
+    wire  [3:0] row$13$q;
+    reg  row$13$clock;
+    reg  [3:0] row$14$d;
+    wire  [3:0] row$14$q;
+    reg  row$14$clock;
+    reg  [3:0] row$15$d;
+    wire  [3:0] row$15$q;
+    reg  row$15$clock;
+    
+    // Local signals
+    reg  [3:0] picked;
+    
+    // Sub module instances
+    top$d_cntr$ahd_fetch$row$0 row$0(
+        .d(row$0$d),
+        .q(row$0$q),
+        .clock(row$0$clock)
+    );
+    top$d_cntr$ahd_fetch$row$0 row$1(
+        .d(row$1$d),
+        .q(row$1$q),
+        .clock(row$1$clock)
+    );
+    top$d_cntr$ahd_fetch$row$0 row$2(
+        .d(row$2$d),
+        .q(row$2$q),
+        .clock(row$2$clock)
+    );
+    top$d_cntr$ahd_fetch$row$0 row$3(
+        .d(row$3$d),
+        .q(row$3$q),
+        .clock(row$3$clock)
+    );
+    top$d_cntr$ahd_fetch$row$0 row$4(
+        .d(row$4$d),
+        .q(row$4$q),
+        .clock(row$4$clock)
+    );
+    top$d_cntr$ahd_fetch$row$0 row$5(
+        .d(row$5$d),
+        .q(row$5$q),
+        .clock(row$5$clock)
+    );
+    top$d_cntr$ahd_fetch$row$0 row$6(
+        .d(row$6$d),
+        .q(row$6$q),
+        .clock(row$6$clock)
+    );
+    top$d_cntr$ahd_fetch$row$0 row$7(
+        .d(row$7$d),
+        .q(row$7$q),
+        .clock(row$7$clock)
+    );
+    top$d_cntr$ahd_fetch$row$0 row$8(
+        .d(row$8$d),
+        .q(row$8$q),
+        .clock(row$8$clock)
+    );
+    top$d_cntr$ahd_fetch$row$0 row$9(
+        .d(row$9$d),
+        .q(row$9$q),
+        .clock(row$9$clock)
+    );
+    top$d_cntr$ahd_fetch$row$0 row$10(
+        .d(row$10$d),
+        .q(row$10$q),
+        .clock(row$10$clock)
+    );
+    top$d_cntr$ahd_fetch$row$0 row$11(
+        .d(row$11$d),
+        .q(row$11$q),
+        .clock(row$11$clock)
+    );
+    top$d_cntr$ahd_fetch$row$0 row$12(
+        .d(row$12$d),
+        .q(row$12$q),
+        .clock(row$12$clock)
+    );
+    top$d_cntr$ahd_fetch$row$0 row$13(
+        .d(row$13$d),
+        .q(row$13$q),
+        .clock(row$13$clock)
+    );
+    top$d_cntr$ahd_fetch$row$0 row$14(
+        .d(row$14$d),
+        .q(row$14$q),
+        .clock(row$14$clock)
+    );
+    top$d_cntr$ahd_fetch$row$0 row$15(
+        .d(row$15$d),
+        .q(row$15$q),
+        .clock(row$15$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        picked = 32'h0;
+        row$0$clock = clock;
+        row$0$d = row$0$q;
+        if (wsel[0]) begin
+            row$0$d = wdata;
+        end
+        if (rsel[0]) begin
+            picked = row$0$q;
+        end
+        row$1$clock = clock;
+        row$1$d = row$1$q;
+        if (wsel[1]) begin
+            row$1$d = wdata;
+        end
+        if (rsel[1]) begin
+            picked = row$1$q;
+        end
+        row$2$clock = clock;
+        row$2$d = row$2$q;
+        if (wsel[2]) begin
+            row$2$d = wdata;
+        end
+        if (rsel[2]) begin
+            picked = row$2$q;
+        end
+        row$3$clock = clock;
+        row$3$d = row$3$q;
+        if (wsel[3]) begin
+            row$3$d = wdata;
+        end
+        if (rsel[3]) begin
+            picked = row$3$q;
+        end
+        row$4$clock = clock;
+        row$4$d = row$4$q;
+        if (wsel[4]) begin
+            row$4$d = wdata;
+        end
+        if (rsel[4]) begin
+            picked = row$4$q;
+        end
+        row$5$clock = clock;
+        row$5$d = row$5$q;
+        if (wsel[5]) begin
+            row$5$d = wdata;
+        end
+        if (rsel[5]) begin
+            picked = row$5$q;
+        end
+        row$6$clock = clock;
+        row$6$d = row$6$q;
+        if (wsel[6]) begin
+            row$6$d = wdata;
+        end
+        if (rsel[6]) begin
+            picked = row$6$q;
+        end
+        row$7$clock = clock;
+        row$7$d = row$7$q;
+        if (wsel[7]) begin
+            row$7$d = wdata;
+        end
+        if (rsel[7]) begin
+            picked = row$7$q;
+        end
+        row$8$clock = clock;
+        row$8$d = row$8$q;
+        if (wsel[8]) begin
+            row$8$d = wdata;
+        end
+        if (rsel[8]) begin
+            picked = row$8$q;
+        end
+        row$9$clock = clock;
+        row$9$d = row$9$q;
+        if (wsel[9]) begin
+            row$9$d = wdata;
+        end
+        if (rsel[9]) begin
+            picked = row$9$q;
+        end
+        row$10$clock = clock;
+        row$10$d = row$10$q;
+        if (wsel[10]) begin
+            row$10$d = wdata;
+        end
+        if (rsel[10]) begin
+            picked = row$10$q;
+        end
+        row$11$clock = clock;
+        row$11$d = row$11$q;
+        if (wsel[11]) begin
+            row$11$d = wdata;
+        end
+        if (rsel[11]) begin
+            picked = row$11$q;
+        end
+        row$12$clock = clock;
+        row$12$d = row$12$q;
+        if (wsel[12]) begin
+            row$12$d = wdata;
+        end
+        if (rsel[12]) begin
+            picked = row$12$q;
+        end
+        row$13$clock = clock;
+        row$13$d = row$13$q;
+        if (wsel[13]) begin
+            row$13$d = wdata;
+        end
+        if (rsel[13]) begin
+            picked = row$13$q;
+        end
+        row$14$clock = clock;
+        row$14$d = row$14$q;
+        if (wsel[14]) begin
+            row$14$d = wdata;
+        end
+        if (rsel[14]) begin
+            picked = row$14$q;
+        end
+        row$15$clock = clock;
+        row$15$d = row$15$q;
+        if (wsel[15]) begin
+            row$15$d = wdata;
+        end
+        if (rsel[15]) begin
+            picked = row$15$q;
+        end
+        rdata = picked;
+    end
+    
+endmodule // top$d_cntr$ahd_fetch
+
+
+module top$d_cntr$ahd_fetch$row$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [3:0] d;
+    output reg  [3:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 4'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$d_cntr$ahd_fetch$row$0
+
+
+module top$d_cntr$ahd_pairs(d,q,clock);
+    
+    // Module arguments
+    input wire  [4:0] d;
+    output reg  [4:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 5'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$d_cntr$ahd_pairs
+
+
+module top$d_cntr$ent_second(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -3669,7 +2134,429 @@ module top$done_r(d,q,clock);
        q <= d;
     end
           
-endmodule // top$done_r
+endmodule // top$d_cntr$ent_second
+
+
+module top$d_cntr$last_a(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$d_cntr$last_a
+
+
+module top$d_cntr$queue(clock,clear,lifo,push,push_data,push2,push2_data,pop,empty,full,count,max_count,overflow,top_data);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  clear;
+    input wire  lifo;
+    input wire  push;
+    input wire  [66:0] push_data;
+    input wire  push2;
+    input wire  [66:0] push2_data;
+    input wire  pop;
+    output reg  empty;
+    output reg  full;
+    output reg  [10:0] count;
+    output reg  [10:0] max_count;
+    output reg  overflow;
+    output reg  [66:0] top_data;
+    
+    // Constant declarations
+    localparam  c_cap = 11'b10000000000;
+    
+    // Stub signals
+    reg  [10:0] cnt$d;
+    wire  [10:0] cnt$q;
+    reg  cnt$clock;
+    reg  [66:0] top_r$d;
+    wire  [66:0] top_r$q;
+    reg  top_r$clock;
+    reg  [9:0] rd_ptr$d;
+    wire  [9:0] rd_ptr$q;
+    reg  rd_ptr$clock;
+    reg  [9:0] wr_ptr$d;
+    wire  [9:0] wr_ptr$q;
+    reg  wr_ptr$clock;
+    reg  byp$d;
+    wire  byp$q;
+    reg  byp$clock;
+    reg  [66:0] byp_data$d;
+    wire  [66:0] byp_data$q;
+    reg  byp_data$clock;
+    reg  rsel$d;
+    wire  rsel$q;
+    reg  rsel$clock;
+    reg  order_lifo$d;
+    wire  order_lifo$q;
+    reg  order_lifo$clock;
+    reg  [10:0] max_r$d;
+    wire  [10:0] max_r$q;
+    reg  max_r$clock;
+    reg  ovf_r$d;
+    wire  ovf_r$q;
+    reg  ovf_r$clock;
+    reg  [8:0] bank0$read_address;
+    reg  bank0$read_clock;
+    wire  [66:0] bank0$read_data;
+    reg  [8:0] bank0$write_address;
+    reg  bank0$write_clock;
+    reg  [66:0] bank0$write_data;
+    reg  bank0$write_enable;
+    reg  [8:0] bank1$read_address;
+    reg  bank1$read_clock;
+    wire  [66:0] bank1$read_data;
+    reg  [8:0] bank1$write_address;
+    reg  bank1$write_clock;
+    reg  [66:0] bank1$write_data;
+    reg  bank1$write_enable;
+    
+    // Local signals
+    reg  nonempty;
+    reg  many;
+    reg  do_pop;
+    reg  [10:0] c0;
+    reg  [66:0] e1;
+    reg  any;
+    reg  two;
+    reg  s1;
+    reg  s2;
+    reg  [66:0] next_entry;
+    reg  [10:0] cnt_n;
+    reg  [9:0] rd_n;
+    reg  [9:0] wr_n;
+    reg  [9:0] wr1;
+    reg  [9:0] raddr;
+    reg  we_a;
+    reg  we_b;
+    reg  [66:0] wdata_a;
+    reg  [66:0] wdata_b;
+    
+    // Sub module instances
+    top$d_cntr$queue$cnt cnt(
+        .d(cnt$d),
+        .q(cnt$q),
+        .clock(cnt$clock)
+    );
+    top$d_cntr$ahd_ent$row$0 top_r(
+        .d(top_r$d),
+        .q(top_r$q),
+        .clock(top_r$clock)
+    );
+    top$d_cntr$queue$rd_ptr rd_ptr(
+        .d(rd_ptr$d),
+        .q(rd_ptr$q),
+        .clock(rd_ptr$clock)
+    );
+    top$d_cntr$queue$rd_ptr wr_ptr(
+        .d(wr_ptr$d),
+        .q(wr_ptr$q),
+        .clock(wr_ptr$clock)
+    );
+    top$d_cntr$ent_second byp(
+        .d(byp$d),
+        .q(byp$q),
+        .clock(byp$clock)
+    );
+    top$d_cntr$ahd_ent$row$0 byp_data(
+        .d(byp_data$d),
+        .q(byp_data$q),
+        .clock(byp_data$clock)
+    );
+    top$d_cntr$ent_second rsel(
+        .d(rsel$d),
+        .q(rsel$q),
+        .clock(rsel$clock)
+    );
+    top$d_cntr$ent_second order_lifo(
+        .d(order_lifo$d),
+        .q(order_lifo$q),
+        .clock(order_lifo$clock)
+    );
+    top$d_cntr$queue$cnt max_r(
+        .d(max_r$d),
+        .q(max_r$q),
+        .clock(max_r$clock)
+    );
+    top$d_cntr$ent_second ovf_r(
+        .d(ovf_r$d),
+        .q(ovf_r$q),
+        .clock(ovf_r$clock)
+    );
+    top$d_cntr$queue$bank0 bank0(
+        .read_address(bank0$read_address),
+        .read_clock(bank0$read_clock),
+        .read_data(bank0$read_data),
+        .write_address(bank0$write_address),
+        .write_clock(bank0$write_clock),
+        .write_data(bank0$write_data),
+        .write_enable(bank0$write_enable)
+    );
+    top$d_cntr$queue$bank0 bank1(
+        .read_address(bank1$read_address),
+        .read_clock(bank1$read_clock),
+        .read_data(bank1$read_data),
+        .write_address(bank1$write_address),
+        .write_clock(bank1$write_clock),
+        .write_data(bank1$write_data),
+        .write_enable(bank1$write_enable)
+    );
+    
+    // Update code
+    always @(*) begin
+        cnt$clock = clock;
+        top_r$clock = clock;
+        rd_ptr$clock = clock;
+        wr_ptr$clock = clock;
+        byp$clock = clock;
+        byp_data$clock = clock;
+        rsel$clock = clock;
+        order_lifo$clock = clock;
+        max_r$clock = clock;
+        ovf_r$clock = clock;
+        cnt$d = cnt$q;
+        top_r$d = top_r$q;
+        rd_ptr$d = rd_ptr$q;
+        wr_ptr$d = wr_ptr$q;
+        byp$d = byp$q;
+        byp_data$d = byp_data$q;
+        rsel$d = rsel$q;
+        order_lifo$d = order_lifo$q;
+        max_r$d = max_r$q;
+        ovf_r$d = ovf_r$q;
+        bank0$read_clock = clock;
+        bank0$write_clock = clock;
+        bank1$read_clock = clock;
+        bank1$write_clock = clock;
+        empty = cnt$q == 32'h0;
+        full = cnt$q == c_cap;
+        count = cnt$q;
+        max_count = max_r$q;
+        overflow = ovf_r$q;
+        top_data = top_r$q;
+        nonempty = cnt$q != 32'h0;
+        many = cnt$q > 32'h1;
+        do_pop = pop & nonempty;
+        c0 = cnt$q - ((do_pop) & 11'h7ff);
+        e1 = push2_data;
+        if (push) begin
+            e1 = push_data;
+        end
+        any = push | push2;
+        two = push & push2;
+        s1 = any & (c0 != c_cap);
+        s2 = two & (c0 + 32'h1 < c_cap);
+        next_entry = bank0$read_data;
+        if (rsel$q) begin
+            next_entry = bank1$read_data;
+        end
+        if (byp$q) begin
+            next_entry = byp_data$q;
+        end
+        cnt_n = c0 + ((s1) & 11'h7ff) + ((s2) & 11'h7ff);
+        rd_n = rd_ptr$q;
+        wr_n = wr_ptr$q;
+        wr1 = wr_ptr$q + 32'h1;
+        we_a = 1'b0;
+        we_b = 1'b0;
+        wdata_a = e1;
+        wdata_b = push2_data;
+        if (order_lifo$q) begin
+            wdata_b = e1;
+            if (do_pop) begin
+                if (~s1) begin
+                    top_r$d = 32'h0;
+                    if (many) begin
+                        top_r$d = next_entry;
+                        wr_n = wr_ptr$q - 32'h1;
+                    end
+                end
+                if (s1) begin
+                    top_r$d = e1;
+                end
+                if (s2) begin
+                    we_a = 1'b1;
+                    wr_n = wr_ptr$q + 32'h1;
+                    top_r$d = push2_data;
+                end
+            end
+            else begin
+                if (s1) begin
+                    top_r$d = e1;
+                    if (nonempty) begin
+                        we_a = 1'b1;
+                        wdata_a = top_r$q;
+                        wr_n = wr_ptr$q + 32'h1;
+                    end
+                end
+                if (s2) begin
+                    top_r$d = push2_data;
+                    we_a = 1'b1;
+                    wr_n = wr_ptr$q + 32'h1;
+                    if (nonempty) begin
+                        we_b = 1'b1;
+                        wr_n = wr_ptr$q + 32'h2;
+                    end
+                end
+            end
+        end
+        else begin
+            if (do_pop) begin
+                top_r$d = 32'h0;
+                if (many) begin
+                    top_r$d = next_entry;
+                    rd_n = rd_ptr$q + 32'h1;
+                end
+            end
+            if (c0 == 32'h0) begin
+                if (s1) begin
+                    top_r$d = e1;
+                end
+                if (s2) begin
+                    we_a = 1'b1;
+                    wdata_a = push2_data;
+                    wr_n = wr_ptr$q + 32'h1;
+                end
+            end
+            else begin
+                if (s1) begin
+                    we_a = 1'b1;
+                    wr_n = wr_ptr$q + 32'h1;
+                end
+                if (s2) begin
+                    we_b = 1'b1;
+                    wr_n = wr_ptr$q + 32'h2;
+                end
+            end
+        end
+        cnt$d = cnt_n;
+        if (cnt_n > max_r$q) begin
+            max_r$d = cnt_n;
+        end
+        if ((any & ~s1) | (two & ~s2)) begin
+            ovf_r$d = 1'b1;
+        end
+        if (clear) begin
+            cnt$d = 32'h0;
+            top_r$d = 32'h0;
+            rd_n = 32'h0;
+            wr_n = 32'h0;
+            we_a = 1'b0;
+            we_b = 1'b0;
+            order_lifo$d = lifo;
+            max_r$d = 32'h0;
+            ovf_r$d = 1'b0;
+        end
+        rd_ptr$d = rd_n;
+        wr_ptr$d = wr_n;
+        raddr = rd_n;
+        if (order_lifo$d) begin
+            raddr = wr_n - 32'h1;
+        end
+        bank0$write_enable = (we_a & ~wr_ptr$q[32'h0]) | (we_b & wr_ptr$q[32'h0]);
+        bank1$write_enable = (we_a & wr_ptr$q[32'h0]) | (we_b & ~wr_ptr$q[32'h0]);
+        bank0$write_address = wr_ptr$q[(32'h1)+:(9)];
+        bank0$write_data = wdata_a;
+        bank1$write_address = wr_ptr$q[(32'h1)+:(9)];
+        bank1$write_data = wdata_a;
+        if (wr_ptr$q[32'h0]) begin
+            bank0$write_address = wr1[(32'h1)+:(9)];
+            bank0$write_data = wdata_b;
+        end
+        else begin
+            bank1$write_address = wr1[(32'h1)+:(9)];
+            bank1$write_data = wdata_b;
+        end
+        bank0$read_address = raddr[(32'h1)+:(9)];
+        bank1$read_address = raddr[(32'h1)+:(9)];
+        rsel$d = raddr[32'h0];
+        byp$d = (we_a & (raddr == wr_ptr$q)) | (we_b & (raddr == wr1));
+        byp_data$d = wdata_a;
+        if (we_b & (raddr == wr1)) begin
+            byp_data$d = wdata_b;
+        end
+    end
+    
+endmodule // top$d_cntr$queue
+
+
+module top$d_cntr$queue$bank0(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [8:0] read_address;
+    input wire  read_clock;
+    output reg  [66:0] read_data;
+    input wire  [8:0] write_address;
+    input wire  write_clock;
+    input wire  [66:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg[66:0] mem[511:0];
+    
+    
+    
+    always @(posedge read_clock) begin
+       read_data <= mem[read_address];
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+                
+endmodule // top$d_cntr$queue$bank0
+
+
+module top$d_cntr$queue$cnt(d,q,clock);
+    
+    // Module arguments
+    input wire  [10:0] d;
+    output reg  [10:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 11'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$d_cntr$queue$cnt
+
+
+module top$d_cntr$queue$rd_ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [9:0] d;
+    output reg  [9:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 10'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$d_cntr$queue$rd_ptr
 
 
 module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,e$0,e$1,e$2,e$3,e$4,e$5,tag,valid_in,overlap,tag_out,valid_out);
@@ -4124,92 +3011,92 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,e$0,e$1
         .q(cvec$5$q),
         .clock(cvec$5$clock)
     );
-    top$ahd_pairs jsel_0$0(
+    top$d_cntr$ahd_pairs jsel_0$0(
         .d(jsel_0$0$d),
         .q(jsel_0$0$q),
         .clock(jsel_0$0$clock)
     );
-    top$ahd_pairs jsel_0$1(
+    top$d_cntr$ahd_pairs jsel_0$1(
         .d(jsel_0$1$d),
         .q(jsel_0$1$q),
         .clock(jsel_0$1$clock)
     );
-    top$ahd_pairs jsel_0$2(
+    top$d_cntr$ahd_pairs jsel_0$2(
         .d(jsel_0$2$d),
         .q(jsel_0$2$q),
         .clock(jsel_0$2$clock)
     );
-    top$ahd_pairs jsel_0$3(
+    top$d_cntr$ahd_pairs jsel_0$3(
         .d(jsel_0$3$d),
         .q(jsel_0$3$q),
         .clock(jsel_0$3$clock)
     );
-    top$ahd_pairs jsel_0$4(
+    top$d_cntr$ahd_pairs jsel_0$4(
         .d(jsel_0$4$d),
         .q(jsel_0$4$q),
         .clock(jsel_0$4$clock)
     );
-    top$ahd_pairs jsel_0$5(
+    top$d_cntr$ahd_pairs jsel_0$5(
         .d(jsel_0$5$d),
         .q(jsel_0$5$q),
         .clock(jsel_0$5$clock)
     );
-    top$ahd_pairs jsel_1$0(
+    top$d_cntr$ahd_pairs jsel_1$0(
         .d(jsel_1$0$d),
         .q(jsel_1$0$q),
         .clock(jsel_1$0$clock)
     );
-    top$ahd_pairs jsel_1$1(
+    top$d_cntr$ahd_pairs jsel_1$1(
         .d(jsel_1$1$d),
         .q(jsel_1$1$q),
         .clock(jsel_1$1$clock)
     );
-    top$ahd_pairs jsel_1$2(
+    top$d_cntr$ahd_pairs jsel_1$2(
         .d(jsel_1$2$d),
         .q(jsel_1$2$q),
         .clock(jsel_1$2$clock)
     );
-    top$ahd_pairs jsel_1$3(
+    top$d_cntr$ahd_pairs jsel_1$3(
         .d(jsel_1$3$d),
         .q(jsel_1$3$q),
         .clock(jsel_1$3$clock)
     );
-    top$ahd_pairs jsel_1$4(
+    top$d_cntr$ahd_pairs jsel_1$4(
         .d(jsel_1$4$d),
         .q(jsel_1$4$q),
         .clock(jsel_1$4$clock)
     );
-    top$ahd_pairs jsel_1$5(
+    top$d_cntr$ahd_pairs jsel_1$5(
         .d(jsel_1$5$d),
         .q(jsel_1$5$q),
         .clock(jsel_1$5$clock)
     );
-    top$ahd_pairs jsel_2$0(
+    top$d_cntr$ahd_pairs jsel_2$0(
         .d(jsel_2$0$d),
         .q(jsel_2$0$q),
         .clock(jsel_2$0$clock)
     );
-    top$ahd_pairs jsel_2$1(
+    top$d_cntr$ahd_pairs jsel_2$1(
         .d(jsel_2$1$d),
         .q(jsel_2$1$q),
         .clock(jsel_2$1$clock)
     );
-    top$ahd_pairs jsel_2$2(
+    top$d_cntr$ahd_pairs jsel_2$2(
         .d(jsel_2$2$d),
         .q(jsel_2$2$q),
         .clock(jsel_2$2$clock)
     );
-    top$ahd_pairs jsel_2$3(
+    top$d_cntr$ahd_pairs jsel_2$3(
         .d(jsel_2$3$d),
         .q(jsel_2$3$q),
         .clock(jsel_2$3$clock)
     );
-    top$ahd_pairs jsel_2$4(
+    top$d_cntr$ahd_pairs jsel_2$4(
         .d(jsel_2$4$d),
         .q(jsel_2$4$q),
         .clock(jsel_2$4$clock)
     );
-    top$ahd_pairs jsel_2$5(
+    top$d_cntr$ahd_pairs jsel_2$5(
         .d(jsel_2$5$d),
         .q(jsel_2$5$q),
         .clock(jsel_2$5$clock)
@@ -4348,77 +3235,77 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,e$0,e$1
         .flag(doptrf$5$flag),
         .valid_out(doptrf$5$valid_out)
     );
-    top$dop$doptrf$0$mul_0$s1_sig_a tag_1(
+    top$d_cntr$last_a tag_1(
         .d(tag_1$d),
         .q(tag_1$q),
         .clock(tag_1$clock)
     );
-    top$dop$doptrf$0$mul_0$s1_sig_a tag_2(
+    top$d_cntr$last_a tag_2(
         .d(tag_2$d),
         .q(tag_2$q),
         .clock(tag_2$clock)
     );
-    top$dop$doptrf$0$mul_0$s1_sig_a tag_3(
+    top$d_cntr$last_a tag_3(
         .d(tag_3$d),
         .q(tag_3$q),
         .clock(tag_3$clock)
     );
-    top$dop$doptrf$0$mul_0$s1_sig_a tag_4(
+    top$d_cntr$last_a tag_4(
         .d(tag_4$d),
         .q(tag_4$q),
         .clock(tag_4$clock)
     );
-    top$dop$doptrf$0$mul_0$s1_sig_a tag_5(
+    top$d_cntr$last_a tag_5(
         .d(tag_5$d),
         .q(tag_5$q),
         .clock(tag_5$clock)
     );
-    top$dop$doptrf$0$mul_0$s1_sig_a tag_6(
+    top$d_cntr$last_a tag_6(
         .d(tag_6$d),
         .q(tag_6$q),
         .clock(tag_6$clock)
     );
-    top$dop$doptrf$0$mul_0$s1_sig_a tag_7(
+    top$d_cntr$last_a tag_7(
         .d(tag_7$d),
         .q(tag_7$q),
         .clock(tag_7$clock)
     );
-    top$dop$doptrf$0$mul_0$s1_sig_a tag_8(
+    top$d_cntr$last_a tag_8(
         .d(tag_8$d),
         .q(tag_8$q),
         .clock(tag_8$clock)
     );
-    top$dop$doptrf$0$mul_0$s1_sig_a tag_9(
+    top$d_cntr$last_a tag_9(
         .d(tag_9$d),
         .q(tag_9$q),
         .clock(tag_9$clock)
     );
-    top$dop$doptrf$0$mul_0$s1_sig_a tag_10(
+    top$d_cntr$last_a tag_10(
         .d(tag_10$d),
         .q(tag_10$q),
         .clock(tag_10$clock)
     );
-    top$dop$doptrf$0$mul_0$s1_sig_a tag_11(
+    top$d_cntr$last_a tag_11(
         .d(tag_11$d),
         .q(tag_11$q),
         .clock(tag_11$clock)
     );
-    top$dop$doptrf$0$mul_0$s1_sig_a tag_12(
+    top$d_cntr$last_a tag_12(
         .d(tag_12$d),
         .q(tag_12$q),
         .clock(tag_12$clock)
     );
-    top$dop$doptrf$0$mul_0$s1_sig_a tag_13(
+    top$d_cntr$last_a tag_13(
         .d(tag_13$d),
         .q(tag_13$q),
         .clock(tag_13$clock)
     );
-    top$dop$doptrf$0$mul_0$s1_sig_a tag_14(
+    top$d_cntr$last_a tag_14(
         .d(tag_14$d),
         .q(tag_14$q),
         .clock(tag_14$clock)
     );
-    top$dop$doptrf$0$mul_0$s1_sig_a tag_15(
+    top$d_cntr$last_a tag_15(
         .d(tag_15$d),
         .q(tag_15$q),
         .clock(tag_15$clock)
@@ -4932,7 +3819,7 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
     reg  c15_nan;
     
     // Sub module instances
-    top$done_r s1_valid(
+    top$d_cntr$ent_second s1_valid(
         .d(s1_valid$d),
         .q(s1_valid$q),
         .clock(s1_valid$clock)
@@ -5107,7 +3994,7 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
         .q(e_11$q),
         .clock(e_11$clock)
     );
-    top$done_r s15_valid(
+    top$d_cntr$ent_second s15_valid(
         .d(s15_valid$d),
         .q(s15_valid$q),
         .clock(s15_valid$clock)
@@ -5117,7 +4004,7 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
         .q(s15_s$q),
         .clock(s15_s$clock)
     );
-    top$done_r s15_flag(
+    top$d_cntr$ent_second s15_flag(
         .d(s15_flag$d),
         .q(s15_flag$q),
         .clock(s15_flag$clock)
@@ -5397,37 +4284,37 @@ module top$dop$doptrf$0$add_0(clock,a,b,sub,valid_in,y,valid_out);
         .is_inf(unpack_b$is_inf),
         .is_nan(unpack_b$is_nan)
     );
-    top$done_r s1_valid(
+    top$d_cntr$ent_second s1_valid(
         .d(s1_valid$d),
         .q(s1_valid$q),
         .clock(s1_valid$clock)
     );
-    top$done_r s1_nan(
+    top$d_cntr$ent_second s1_nan(
         .d(s1_nan$d),
         .q(s1_nan$q),
         .clock(s1_nan$clock)
     );
-    top$done_r s1_inf(
+    top$d_cntr$ent_second s1_inf(
         .d(s1_inf$d),
         .q(s1_inf$q),
         .clock(s1_inf$clock)
     );
-    top$done_r s1_inf_sign(
+    top$d_cntr$ent_second s1_inf_sign(
         .d(s1_inf_sign$d),
         .q(s1_inf_sign$q),
         .clock(s1_inf_sign$clock)
     );
-    top$done_r s1_zero_sign(
+    top$d_cntr$ent_second s1_zero_sign(
         .d(s1_zero_sign$d),
         .q(s1_zero_sign$q),
         .clock(s1_zero_sign$clock)
     );
-    top$done_r s1_sign(
+    top$d_cntr$ent_second s1_sign(
         .d(s1_sign$d),
         .q(s1_sign$q),
         .clock(s1_sign$clock)
     );
-    top$done_r s1_eff_sub(
+    top$d_cntr$ent_second s1_eff_sub(
         .d(s1_eff_sub$d),
         .q(s1_eff_sub$q),
         .clock(s1_eff_sub$clock)
@@ -5452,32 +4339,32 @@ module top$dop$doptrf$0$add_0(clock,a,b,sub,valid_in,y,valid_out);
         .y(norm$y),
         .lz(norm$lz)
     );
-    top$done_r s2_valid(
+    top$d_cntr$ent_second s2_valid(
         .d(s2_valid$d),
         .q(s2_valid$q),
         .clock(s2_valid$clock)
     );
-    top$done_r s2_sign(
+    top$d_cntr$ent_second s2_sign(
         .d(s2_sign$d),
         .q(s2_sign$q),
         .clock(s2_sign$clock)
     );
-    top$done_r s2_nan(
+    top$d_cntr$ent_second s2_nan(
         .d(s2_nan$d),
         .q(s2_nan$q),
         .clock(s2_nan$clock)
     );
-    top$done_r s2_inf(
+    top$d_cntr$ent_second s2_inf(
         .d(s2_inf$d),
         .q(s2_inf$q),
         .clock(s2_inf$clock)
     );
-    top$done_r s2_zero(
+    top$d_cntr$ent_second s2_zero(
         .d(s2_zero$d),
         .q(s2_zero$q),
         .clock(s2_zero$clock)
     );
-    top$done_r s2_ovf(
+    top$d_cntr$ent_second s2_ovf(
         .d(s2_ovf$d),
         .q(s2_ovf$q),
         .clock(s2_ovf$clock)
@@ -5503,7 +4390,7 @@ module top$dop$doptrf$0$add_0(clock,a,b,sub,valid_in,y,valid_out);
         .nm(round$nm),
         .y(round$y)
     );
-    top$done_r s3_valid(
+    top$d_cntr$ent_second s3_valid(
         .d(s3_valid$d),
         .q(s3_valid$q),
         .clock(s3_valid$clock)
@@ -6038,42 +4925,42 @@ module top$dop$doptrf$0$mul_0(clock,a,b,valid_in,y,valid_out);
         .y(norm_b$y),
         .lz(norm_b$lz)
     );
-    top$done_r s1_valid(
+    top$d_cntr$ent_second s1_valid(
         .d(s1_valid$d),
         .q(s1_valid$q),
         .clock(s1_valid$clock)
     );
-    top$done_r s1_sign(
+    top$d_cntr$ent_second s1_sign(
         .d(s1_sign$d),
         .q(s1_sign$q),
         .clock(s1_sign$clock)
     );
-    top$done_r s1_nan(
+    top$d_cntr$ent_second s1_nan(
         .d(s1_nan$d),
         .q(s1_nan$q),
         .clock(s1_nan$clock)
     );
-    top$done_r s1_inf(
+    top$d_cntr$ent_second s1_inf(
         .d(s1_inf$d),
         .q(s1_inf$q),
         .clock(s1_inf$clock)
     );
-    top$done_r s1_zero(
+    top$d_cntr$ent_second s1_zero(
         .d(s1_zero$d),
         .q(s1_zero$q),
         .clock(s1_zero$clock)
     );
-    top$dop$doptrf$0$mul_0$s1_exp s1_exp(
+    top$d_cntr$queue$rd_ptr s1_exp(
         .d(s1_exp$d),
         .q(s1_exp$q),
         .clock(s1_exp$clock)
     );
-    top$dop$doptrf$0$mul_0$s1_sig_a s1_sig_a(
+    top$d_cntr$last_a s1_sig_a(
         .d(s1_sig_a$d),
         .q(s1_sig_a$q),
         .clock(s1_sig_a$clock)
     );
-    top$dop$doptrf$0$mul_0$s1_sig_a s1_sig_b(
+    top$d_cntr$last_a s1_sig_b(
         .d(s1_sig_b$d),
         .q(s1_sig_b$q),
         .clock(s1_sig_b$clock)
@@ -6084,32 +4971,32 @@ module top$dop$doptrf$0$mul_0(clock,a,b,valid_in,y,valid_out);
         .hi(sig_mul$hi),
         .sticky(sig_mul$sticky)
     );
-    top$done_r s2_valid(
+    top$d_cntr$ent_second s2_valid(
         .d(s2_valid$d),
         .q(s2_valid$q),
         .clock(s2_valid$clock)
     );
-    top$done_r s2_sign(
+    top$d_cntr$ent_second s2_sign(
         .d(s2_sign$d),
         .q(s2_sign$q),
         .clock(s2_sign$clock)
     );
-    top$done_r s2_nan(
+    top$d_cntr$ent_second s2_nan(
         .d(s2_nan$d),
         .q(s2_nan$q),
         .clock(s2_nan$clock)
     );
-    top$done_r s2_inf(
+    top$d_cntr$ent_second s2_inf(
         .d(s2_inf$d),
         .q(s2_inf$q),
         .clock(s2_inf$clock)
     );
-    top$done_r s2_zero(
+    top$d_cntr$ent_second s2_zero(
         .d(s2_zero$d),
         .q(s2_zero$q),
         .clock(s2_zero$clock)
     );
-    top$dop$doptrf$0$mul_0$s1_exp s2_exp(
+    top$d_cntr$queue$rd_ptr s2_exp(
         .d(s2_exp$d),
         .q(s2_exp$q),
         .clock(s2_exp$clock)
@@ -6119,37 +5006,37 @@ module top$dop$doptrf$0$mul_0(clock,a,b,valid_in,y,valid_out);
         .q(s2_hi$q),
         .clock(s2_hi$clock)
     );
-    top$done_r s2_sticky(
+    top$d_cntr$ent_second s2_sticky(
         .d(s2_sticky$d),
         .q(s2_sticky$q),
         .clock(s2_sticky$clock)
     );
-    top$done_r s3_valid(
+    top$d_cntr$ent_second s3_valid(
         .d(s3_valid$d),
         .q(s3_valid$q),
         .clock(s3_valid$clock)
     );
-    top$done_r s3_sign(
+    top$d_cntr$ent_second s3_sign(
         .d(s3_sign$d),
         .q(s3_sign$q),
         .clock(s3_sign$clock)
     );
-    top$done_r s3_nan(
+    top$d_cntr$ent_second s3_nan(
         .d(s3_nan$d),
         .q(s3_nan$q),
         .clock(s3_nan$clock)
     );
-    top$done_r s3_inf(
+    top$d_cntr$ent_second s3_inf(
         .d(s3_inf$d),
         .q(s3_inf$q),
         .clock(s3_inf$clock)
     );
-    top$done_r s3_zero(
+    top$d_cntr$ent_second s3_zero(
         .d(s3_zero$d),
         .q(s3_zero$q),
         .clock(s3_zero$clock)
     );
-    top$done_r s3_ovf(
+    top$d_cntr$ent_second s3_ovf(
         .d(s3_ovf$d),
         .q(s3_ovf$q),
         .clock(s3_ovf$clock)
@@ -6175,7 +5062,7 @@ module top$dop$doptrf$0$mul_0(clock,a,b,valid_in,y,valid_out);
         .nm(round$nm),
         .y(round$y)
     );
-    top$done_r s4_valid(
+    top$d_cntr$ent_second s4_valid(
         .d(s4_valid$d),
         .q(s4_valid$q),
         .clock(s4_valid$clock)
@@ -6358,44 +5245,6 @@ module top$dop$doptrf$0$mul_0$norm_a(x,y,lz);
     end
     
 endmodule // top$dop$doptrf$0$mul_0$norm_a
-
-
-module top$dop$doptrf$0$mul_0$s1_exp(d,q,clock);
-    
-    // Module arguments
-    input wire  [9:0] d;
-    output reg  [9:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 10'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$dop$doptrf$0$mul_0$s1_exp
-
-
-module top$dop$doptrf$0$mul_0$s1_sig_a(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$dop$doptrf$0$mul_0$s1_sig_a
 
 
 module top$dop$doptrf$0$mul_0$sig_mul(a,b,hi,sticky);
@@ -6819,6 +5668,25 @@ module top$dop$klmsel(d$0,d$1,d$2,d$3,d$4,d$5,j0$0,j0$1,j0$2,j0$3,j0$4,j0$5,j1$0
 endmodule // top$dop$klmsel
 
 
+module top$leaf_count(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$leaf_count
+
+
 module top$leaf_fifo(clock,read,data_out,empty,almost_empty,underflow,write,data_in,full,almost_full,overflow);
     
     // Module arguments
@@ -7004,7 +5872,7 @@ module top$leaf_fifo$read_logic(clock,read,data_out,empty,almost_empty,underflow
         .q(read_address$q),
         .clock(read_address$clock)
     );
-    top$done_r dff_underflow(
+    top$d_cntr$ent_second dff_underflow(
         .d(dff_underflow$d),
         .q(dff_underflow$q),
         .clock(dff_underflow$clock)
@@ -7109,7 +5977,7 @@ module top$leaf_fifo$write_logic(write,data_in,full,almost_full,overflow,clock,r
         .q(dff_write_address_delay$q),
         .clock(dff_write_address_delay$clock)
     );
-    top$done_r dff_overflow(
+    top$d_cntr$ent_second dff_overflow(
         .d(dff_overflow$d),
         .q(dff_overflow$q),
         .clock(dff_overflow$clock)
@@ -7152,7 +6020,1278 @@ module top$leaf_fifo$write_logic(write,data_in,full,almost_full,overflow,clock,r
 endmodule // top$leaf_fifo$write_logic
 
 
-module top$na_word(d,q,clock);
+module top$mem_port(clock,clear,go,pf_on,port_out,base_na,base_nb,base_ta,base_tb,pop,pop_entry,pop_fetch,issue,cur_fa,cur_fb,need_ta,need_tb,leaf_tag,mem_req_ready,mem_resp_valid,mem_resp_data,mem_req_valid,mem_req_addr,req_dst,accept,resp,resp_dst,ta_req,tb_req,outstanding,na_in,nb_in,wa_empty,wb_empty);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  clear;
+    input wire  go;
+    input wire  pf_on;
+    input wire  [3:0] port_out;
+    input wire  [23:0] base_na;
+    input wire  [23:0] base_nb;
+    input wire  [23:0] base_ta;
+    input wire  [23:0] base_tb;
+    input wire  pop;
+    input wire  [66:0] pop_entry;
+    input wire  [3:0] pop_fetch;
+    input wire  issue;
+    input wire  cur_fa;
+    input wire  cur_fb;
+    input wire  need_ta;
+    input wire  need_tb;
+    input wire  [31:0] leaf_tag;
+    input wire  mem_req_ready;
+    input wire  mem_resp_valid;
+    input wire  [553:0] mem_resp_data;
+    output reg  mem_req_valid;
+    output reg  [23:0] mem_req_addr;
+    output reg  [1:0] req_dst;
+    output reg  accept;
+    output reg  resp;
+    output reg  [1:0] resp_dst;
+    output reg  [15:0] ta_req;
+    output reg  [15:0] tb_req;
+    output reg  outstanding;
+    output reg  [208:0] na_in;
+    output reg  [208:0] nb_in;
+    output reg  wa_empty;
+    output reg  wb_empty;
+    
+    // Constant declarations
+    localparam  c_ask_b = 22'h10000;
+    localparam  c_one16 = 16'h1;
+    localparam  c_one32 = 32'h1;
+    
+    // Stub signals
+    reg  [21:0] ask_w$0$d;
+    wire  [21:0] ask_w$0$q;
+    reg  ask_w$0$clock;
+    reg  [21:0] ask_w$1$d;
+    wire  [21:0] ask_w$1$q;
+    reg  ask_w$1$clock;
+    reg  [21:0] ask_w$2$d;
+    wire  [21:0] ask_w$2$q;
+    reg  ask_w$2$clock;
+    reg  [21:0] ask_w$3$d;
+    wire  [21:0] ask_w$3$q;
+    reg  ask_w$3$clock;
+    reg  [21:0] ask_w$4$d;
+    wire  [21:0] ask_w$4$q;
+    reg  ask_w$4$clock;
+    reg  [21:0] ask_w$5$d;
+    wire  [21:0] ask_w$5$q;
+    reg  ask_w$5$clock;
+    reg  [21:0] ask_w$6$d;
+    wire  [21:0] ask_w$6$q;
+    reg  ask_w$6$clock;
+    reg  [21:0] ask_w$7$d;
+    wire  [21:0] ask_w$7$q;
+    reg  ask_w$7$clock;
+    reg  [21:0] ask_w$8$d;
+    wire  [21:0] ask_w$8$q;
+    reg  ask_w$8$clock;
+    reg  [21:0] ask_w$9$d;
+    wire  [21:0] ask_w$9$q;
+    reg  ask_w$9$clock;
+    reg  [21:0] ask_w$10$d;
+    wire  [21:0] ask_w$10$q;
+    reg  ask_w$10$clock;
+    reg  [21:0] ask_w$11$d;
+    wire  [21:0] ask_w$11$q;
+    reg  ask_w$11$clock;
+    reg  [21:0] ask_w$12$d;
+    wire  [21:0] ask_w$12$q;
+    reg  ask_w$12$clock;
+    reg  [21:0] ask_w$13$d;
+    wire  [21:0] ask_w$13$q;
+    reg  ask_w$13$clock;
+    reg  [21:0] ask_w$14$d;
+    wire  [21:0] ask_w$14$q;
+    reg  ask_w$14$clock;
+    reg  [21:0] ask_w$15$d;
+    wire  [21:0] ask_w$15$q;
+    reg  ask_w$15$clock;
+    reg  [21:0] ask_w$16$d;
+    wire  [21:0] ask_w$16$q;
+    reg  ask_w$16$clock;
+    reg  [21:0] ask_w$17$d;
+    wire  [21:0] ask_w$17$q;
+    reg  ask_w$17$clock;
+    reg  [21:0] ask_w$18$d;
+    wire  [21:0] ask_w$18$q;
+    reg  ask_w$18$clock;
+    reg  [21:0] ask_w$19$d;
+    wire  [21:0] ask_w$19$q;
+    reg  ask_w$19$clock;
+    reg  [21:0] ask_w$20$d;
+    wire  [21:0] ask_w$20$q;
+    reg  ask_w$20$clock;
+    reg  [21:0] ask_w$21$d;
+    wire  [21:0] ask_w$21$q;
+    reg  ask_w$21$clock;
+    reg  [21:0] ask_w$22$d;
+    wire  [21:0] ask_w$22$q;
+    reg  ask_w$22$clock;
+    reg  [21:0] ask_w$23$d;
+    wire  [21:0] ask_w$23$q;
+    reg  ask_w$23$clock;
+    reg  [21:0] ask_w$24$d;
+    wire  [21:0] ask_w$24$q;
+    reg  ask_w$24$clock;
+    reg  [21:0] ask_w$25$d;
+    wire  [21:0] ask_w$25$q;
+    reg  ask_w$25$clock;
+    reg  [21:0] ask_w$26$d;
+    wire  [21:0] ask_w$26$q;
+    reg  ask_w$26$clock;
+    reg  [21:0] ask_w$27$d;
+    wire  [21:0] ask_w$27$q;
+    reg  ask_w$27$clock;
+    reg  [21:0] ask_w$28$d;
+    wire  [21:0] ask_w$28$q;
+    reg  ask_w$28$clock;
+    reg  [21:0] ask_w$29$d;
+    wire  [21:0] ask_w$29$q;
+    reg  ask_w$29$clock;
+    reg  [21:0] ask_w$30$d;
+    wire  [21:0] ask_w$30$q;
+    reg  ask_w$30$clock;
+    reg  [21:0] ask_w$31$d;
+    wire  [21:0] ask_w$31$q;
+    reg  ask_w$31$clock;
+    reg  [4:0] ask_head$d;
+    wire  [4:0] ask_head$q;
+    reg  ask_head$clock;
+    reg  [4:0] ask_tail$d;
+    wire  [4:0] ask_tail$q;
+    reg  ask_tail$clock;
+    reg  [5:0] ask_n$d;
+    wire  [5:0] ask_n$q;
+    reg  ask_n$clock;
+    reg  [4:0] seq_head$d;
+    wire  [4:0] seq_head$q;
+    reg  seq_head$clock;
+    reg  [4:0] seq_tail$d;
+    wire  [4:0] seq_tail$q;
+    reg  seq_tail$clock;
+    reg  wa$clock;
+    reg  [15:0] wa$wsel;
+    reg  [208:0] wa$wdata;
+    reg  [15:0] wa$rsel;
+    wire  [208:0] wa$rdata;
+    reg  [3:0] wa_head$d;
+    wire  [3:0] wa_head$q;
+    reg  wa_head$clock;
+    reg  [3:0] wa_tail$d;
+    wire  [3:0] wa_tail$q;
+    reg  wa_tail$clock;
+    reg  [4:0] wa_n$d;
+    wire  [4:0] wa_n$q;
+    reg  wa_n$clock;
+    reg  wb$clock;
+    reg  [15:0] wb$wsel;
+    reg  [208:0] wb$wdata;
+    reg  [15:0] wb$rsel;
+    wire  [208:0] wb$rdata;
+    reg  [3:0] wb_head$d;
+    wire  [3:0] wb_head$q;
+    reg  wb_head$clock;
+    reg  [3:0] wb_tail$d;
+    wire  [3:0] wb_tail$q;
+    reg  wb_tail$clock;
+    reg  [4:0] wb_n$d;
+    wire  [4:0] wb_n$q;
+    reg  wb_n$clock;
+    reg  [208:0] na_word$d;
+    wire  [208:0] na_word$q;
+    reg  na_word$clock;
+    reg  [208:0] nb_word$d;
+    wire  [208:0] nb_word$q;
+    reg  nb_word$clock;
+    reg  tags$clock;
+    reg  [15:0] tags$wsel;
+    reg  [1:0] tags$wdata;
+    reg  [15:0] tags$rsel;
+    wire  [1:0] tags$rdata;
+    reg  [3:0] tag_head$d;
+    wire  [3:0] tag_head$q;
+    reg  tag_head$clock;
+    reg  [3:0] tag_tail$d;
+    wire  [3:0] tag_tail$q;
+    reg  tag_tail$clock;
+    reg  [4:0] tag_n$d;
+    wire  [4:0] tag_n$q;
+    reg  tag_n$clock;
+    reg  ta_pend$d;
+    wire  ta_pend$q;
+    reg  ta_pend$clock;
+    reg  [15:0] ta_req_r$d;
+    wire  [15:0] ta_req_r$q;
+    reg  ta_req_r$clock;
+    reg  tb_pend$d;
+    wire  tb_pend$q;
+    reg  tb_pend$clock;
+    reg  [15:0] tb_req_r$d;
+    wire  [15:0] tb_req_r$q;
+    reg  tb_req_r$clock;
+    
+    // Local signals
+    reg  [4:0] seq_tail1;
+    reg  [31:0] ask_dec;
+    reg  [21:0] ask_front;
+    reg  ask_ok;
+    reg  [4:0] ask_off1;
+    reg  [4:0] ask_off2;
+    reg  [4:0] ask_off3;
+    reg  [4:0] ask_new;
+    reg  ask_take;
+    reg  top_two;
+    reg  [31:0] put0;
+    reg  [31:0] put1;
+    reg  [31:0] put2;
+    reg  [31:0] put3;
+    reg  port_free;
+    reg  req;
+    reg  [15:0] req_id;
+    reg  [23:0] req_addr;
+    
+    // Sub module instances
+    top$mem_port$ask_w$0 ask_w$0(
+        .d(ask_w$0$d),
+        .q(ask_w$0$q),
+        .clock(ask_w$0$clock)
+    );
+    top$mem_port$ask_w$0 ask_w$1(
+        .d(ask_w$1$d),
+        .q(ask_w$1$q),
+        .clock(ask_w$1$clock)
+    );
+    top$mem_port$ask_w$0 ask_w$2(
+        .d(ask_w$2$d),
+        .q(ask_w$2$q),
+        .clock(ask_w$2$clock)
+    );
+    top$mem_port$ask_w$0 ask_w$3(
+        .d(ask_w$3$d),
+        .q(ask_w$3$q),
+        .clock(ask_w$3$clock)
+    );
+    top$mem_port$ask_w$0 ask_w$4(
+        .d(ask_w$4$d),
+        .q(ask_w$4$q),
+        .clock(ask_w$4$clock)
+    );
+    top$mem_port$ask_w$0 ask_w$5(
+        .d(ask_w$5$d),
+        .q(ask_w$5$q),
+        .clock(ask_w$5$clock)
+    );
+    top$mem_port$ask_w$0 ask_w$6(
+        .d(ask_w$6$d),
+        .q(ask_w$6$q),
+        .clock(ask_w$6$clock)
+    );
+    top$mem_port$ask_w$0 ask_w$7(
+        .d(ask_w$7$d),
+        .q(ask_w$7$q),
+        .clock(ask_w$7$clock)
+    );
+    top$mem_port$ask_w$0 ask_w$8(
+        .d(ask_w$8$d),
+        .q(ask_w$8$q),
+        .clock(ask_w$8$clock)
+    );
+    top$mem_port$ask_w$0 ask_w$9(
+        .d(ask_w$9$d),
+        .q(ask_w$9$q),
+        .clock(ask_w$9$clock)
+    );
+    top$mem_port$ask_w$0 ask_w$10(
+        .d(ask_w$10$d),
+        .q(ask_w$10$q),
+        .clock(ask_w$10$clock)
+    );
+    top$mem_port$ask_w$0 ask_w$11(
+        .d(ask_w$11$d),
+        .q(ask_w$11$q),
+        .clock(ask_w$11$clock)
+    );
+    top$mem_port$ask_w$0 ask_w$12(
+        .d(ask_w$12$d),
+        .q(ask_w$12$q),
+        .clock(ask_w$12$clock)
+    );
+    top$mem_port$ask_w$0 ask_w$13(
+        .d(ask_w$13$d),
+        .q(ask_w$13$q),
+        .clock(ask_w$13$clock)
+    );
+    top$mem_port$ask_w$0 ask_w$14(
+        .d(ask_w$14$d),
+        .q(ask_w$14$q),
+        .clock(ask_w$14$clock)
+    );
+    top$mem_port$ask_w$0 ask_w$15(
+        .d(ask_w$15$d),
+        .q(ask_w$15$q),
+        .clock(ask_w$15$clock)
+    );
+    top$mem_port$ask_w$0 ask_w$16(
+        .d(ask_w$16$d),
+        .q(ask_w$16$q),
+        .clock(ask_w$16$clock)
+    );
+    top$mem_port$ask_w$0 ask_w$17(
+        .d(ask_w$17$d),
+        .q(ask_w$17$q),
+        .clock(ask_w$17$clock)
+    );
+    top$mem_port$ask_w$0 ask_w$18(
+        .d(ask_w$18$d),
+        .q(ask_w$18$q),
+        .clock(ask_w$18$clock)
+    );
+    top$mem_port$ask_w$0 ask_w$19(
+        .d(ask_w$19$d),
+        .q(ask_w$19$q),
+        .clock(ask_w$19$clock)
+    );
+    top$mem_port$ask_w$0 ask_w$20(
+        .d(ask_w$20$d),
+        .q(ask_w$20$q),
+        .clock(ask_w$20$clock)
+    );
+    top$mem_port$ask_w$0 ask_w$21(
+        .d(ask_w$21$d),
+        .q(ask_w$21$q),
+        .clock(ask_w$21$clock)
+    );
+    top$mem_port$ask_w$0 ask_w$22(
+        .d(ask_w$22$d),
+        .q(ask_w$22$q),
+        .clock(ask_w$22$clock)
+    );
+    top$mem_port$ask_w$0 ask_w$23(
+        .d(ask_w$23$d),
+        .q(ask_w$23$q),
+        .clock(ask_w$23$clock)
+    );
+    top$mem_port$ask_w$0 ask_w$24(
+        .d(ask_w$24$d),
+        .q(ask_w$24$q),
+        .clock(ask_w$24$clock)
+    );
+    top$mem_port$ask_w$0 ask_w$25(
+        .d(ask_w$25$d),
+        .q(ask_w$25$q),
+        .clock(ask_w$25$clock)
+    );
+    top$mem_port$ask_w$0 ask_w$26(
+        .d(ask_w$26$d),
+        .q(ask_w$26$q),
+        .clock(ask_w$26$clock)
+    );
+    top$mem_port$ask_w$0 ask_w$27(
+        .d(ask_w$27$d),
+        .q(ask_w$27$q),
+        .clock(ask_w$27$clock)
+    );
+    top$mem_port$ask_w$0 ask_w$28(
+        .d(ask_w$28$d),
+        .q(ask_w$28$q),
+        .clock(ask_w$28$clock)
+    );
+    top$mem_port$ask_w$0 ask_w$29(
+        .d(ask_w$29$d),
+        .q(ask_w$29$q),
+        .clock(ask_w$29$clock)
+    );
+    top$mem_port$ask_w$0 ask_w$30(
+        .d(ask_w$30$d),
+        .q(ask_w$30$q),
+        .clock(ask_w$30$clock)
+    );
+    top$mem_port$ask_w$0 ask_w$31(
+        .d(ask_w$31$d),
+        .q(ask_w$31$q),
+        .clock(ask_w$31$clock)
+    );
+    top$d_cntr$ahd_pairs ask_head(
+        .d(ask_head$d),
+        .q(ask_head$q),
+        .clock(ask_head$clock)
+    );
+    top$d_cntr$ahd_pairs ask_tail(
+        .d(ask_tail$d),
+        .q(ask_tail$q),
+        .clock(ask_tail$clock)
+    );
+    top$leaf_count ask_n(
+        .d(ask_n$d),
+        .q(ask_n$q),
+        .clock(ask_n$clock)
+    );
+    top$d_cntr$ahd_pairs seq_head(
+        .d(seq_head$d),
+        .q(seq_head$q),
+        .clock(seq_head$clock)
+    );
+    top$d_cntr$ahd_pairs seq_tail(
+        .d(seq_tail$d),
+        .q(seq_tail$q),
+        .clock(seq_tail$clock)
+    );
+    top$mem_port$wa wa(
+        .clock(wa$clock),
+        .wsel(wa$wsel),
+        .wdata(wa$wdata),
+        .rsel(wa$rsel),
+        .rdata(wa$rdata)
+    );
+    top$d_cntr$ahd_fetch$row$0 wa_head(
+        .d(wa_head$d),
+        .q(wa_head$q),
+        .clock(wa_head$clock)
+    );
+    top$d_cntr$ahd_fetch$row$0 wa_tail(
+        .d(wa_tail$d),
+        .q(wa_tail$q),
+        .clock(wa_tail$clock)
+    );
+    top$d_cntr$ahd_pairs wa_n(
+        .d(wa_n$d),
+        .q(wa_n$q),
+        .clock(wa_n$clock)
+    );
+    top$mem_port$wa wb(
+        .clock(wb$clock),
+        .wsel(wb$wsel),
+        .wdata(wb$wdata),
+        .rsel(wb$rsel),
+        .rdata(wb$rdata)
+    );
+    top$d_cntr$ahd_fetch$row$0 wb_head(
+        .d(wb_head$d),
+        .q(wb_head$q),
+        .clock(wb_head$clock)
+    );
+    top$d_cntr$ahd_fetch$row$0 wb_tail(
+        .d(wb_tail$d),
+        .q(wb_tail$q),
+        .clock(wb_tail$clock)
+    );
+    top$d_cntr$ahd_pairs wb_n(
+        .d(wb_n$d),
+        .q(wb_n$q),
+        .clock(wb_n$clock)
+    );
+    top$mem_port$na_word na_word(
+        .d(na_word$d),
+        .q(na_word$q),
+        .clock(na_word$clock)
+    );
+    top$mem_port$na_word nb_word(
+        .d(nb_word$d),
+        .q(nb_word$q),
+        .clock(nb_word$clock)
+    );
+    top$mem_port$tags tags(
+        .clock(tags$clock),
+        .wsel(tags$wsel),
+        .wdata(tags$wdata),
+        .rsel(tags$rsel),
+        .rdata(tags$rdata)
+    );
+    top$d_cntr$ahd_fetch$row$0 tag_head(
+        .d(tag_head$d),
+        .q(tag_head$q),
+        .clock(tag_head$clock)
+    );
+    top$d_cntr$ahd_fetch$row$0 tag_tail(
+        .d(tag_tail$d),
+        .q(tag_tail$q),
+        .clock(tag_tail$clock)
+    );
+    top$d_cntr$ahd_pairs tag_n(
+        .d(tag_n$d),
+        .q(tag_n$q),
+        .clock(tag_n$clock)
+    );
+    top$d_cntr$ent_second ta_pend(
+        .d(ta_pend$d),
+        .q(ta_pend$q),
+        .clock(ta_pend$clock)
+    );
+    top$d_cntr$last_a ta_req_r(
+        .d(ta_req_r$d),
+        .q(ta_req_r$q),
+        .clock(ta_req_r$clock)
+    );
+    top$d_cntr$ent_second tb_pend(
+        .d(tb_pend$d),
+        .q(tb_pend$q),
+        .clock(tb_pend$clock)
+    );
+    top$d_cntr$last_a tb_req_r(
+        .d(tb_req_r$d),
+        .q(tb_req_r$q),
+        .clock(tb_req_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        ask_head$clock = clock;
+        ask_tail$clock = clock;
+        ask_n$clock = clock;
+        seq_head$clock = clock;
+        seq_tail$clock = clock;
+        ask_head$d = ask_head$q;
+        ask_tail$d = ask_tail$q;
+        ask_n$d = ask_n$q;
+        seq_head$d = seq_head$q;
+        seq_tail$d = seq_tail$q;
+        wa_head$clock = clock;
+        wa_tail$clock = clock;
+        wa_n$clock = clock;
+        wb_head$clock = clock;
+        wb_tail$clock = clock;
+        wb_n$clock = clock;
+        na_word$clock = clock;
+        nb_word$clock = clock;
+        wa_head$d = wa_head$q;
+        wa_tail$d = wa_tail$q;
+        wa_n$d = wa_n$q;
+        wb_head$d = wb_head$q;
+        wb_tail$d = wb_tail$q;
+        wb_n$d = wb_n$q;
+        na_word$d = na_word$q;
+        nb_word$d = nb_word$q;
+        tag_head$clock = clock;
+        tag_tail$clock = clock;
+        tag_n$clock = clock;
+        ta_pend$clock = clock;
+        ta_req_r$clock = clock;
+        tb_pend$clock = clock;
+        tb_req_r$clock = clock;
+        tag_head$d = tag_head$q;
+        tag_tail$d = tag_tail$q;
+        tag_n$d = tag_n$q;
+        ta_pend$d = ta_pend$q;
+        ta_req_r$d = ta_req_r$q;
+        tb_pend$d = tb_pend$q;
+        tb_req_r$d = tb_req_r$q;
+        ask_w$0$clock = clock;
+        ask_w$0$d = ask_w$0$q;
+        ask_w$1$clock = clock;
+        ask_w$1$d = ask_w$1$q;
+        ask_w$2$clock = clock;
+        ask_w$2$d = ask_w$2$q;
+        ask_w$3$clock = clock;
+        ask_w$3$d = ask_w$3$q;
+        ask_w$4$clock = clock;
+        ask_w$4$d = ask_w$4$q;
+        ask_w$5$clock = clock;
+        ask_w$5$d = ask_w$5$q;
+        ask_w$6$clock = clock;
+        ask_w$6$d = ask_w$6$q;
+        ask_w$7$clock = clock;
+        ask_w$7$d = ask_w$7$q;
+        ask_w$8$clock = clock;
+        ask_w$8$d = ask_w$8$q;
+        ask_w$9$clock = clock;
+        ask_w$9$d = ask_w$9$q;
+        ask_w$10$clock = clock;
+        ask_w$10$d = ask_w$10$q;
+        ask_w$11$clock = clock;
+        ask_w$11$d = ask_w$11$q;
+        ask_w$12$clock = clock;
+        ask_w$12$d = ask_w$12$q;
+        ask_w$13$clock = clock;
+        ask_w$13$d = ask_w$13$q;
+        ask_w$14$clock = clock;
+        ask_w$14$d = ask_w$14$q;
+        ask_w$15$clock = clock;
+        ask_w$15$d = ask_w$15$q;
+        ask_w$16$clock = clock;
+        ask_w$16$d = ask_w$16$q;
+        ask_w$17$clock = clock;
+        ask_w$17$d = ask_w$17$q;
+        ask_w$18$clock = clock;
+        ask_w$18$d = ask_w$18$q;
+        ask_w$19$clock = clock;
+        ask_w$19$d = ask_w$19$q;
+        ask_w$20$clock = clock;
+        ask_w$20$d = ask_w$20$q;
+        ask_w$21$clock = clock;
+        ask_w$21$d = ask_w$21$q;
+        ask_w$22$clock = clock;
+        ask_w$22$d = ask_w$22$q;
+        ask_w$23$clock = clock;
+        ask_w$23$d = ask_w$23$q;
+        ask_w$24$clock = clock;
+        ask_w$24$d = ask_w$24$q;
+        ask_w$25$clock = clock;
+        ask_w$25$d = ask_w$25$q;
+        ask_w$26$clock = clock;
+        ask_w$26$d = ask_w$26$q;
+        ask_w$27$clock = clock;
+        ask_w$27$d = ask_w$27$q;
+        ask_w$28$clock = clock;
+        ask_w$28$d = ask_w$28$q;
+        ask_w$29$clock = clock;
+        ask_w$29$d = ask_w$29$q;
+        ask_w$30$clock = clock;
+        ask_w$30$d = ask_w$30$q;
+        ask_w$31$clock = clock;
+        ask_w$31$d = ask_w$31$q;
+        wa$clock = clock;
+        wb$clock = clock;
+        tags$clock = clock;
+        wa$rsel = c_one16 << wa_head$q;
+        wb$rsel = c_one16 << wb_head$q;
+        na_in = na_word$q;
+        if (cur_fa) begin
+            na_in = wa$rdata;
+        end
+        nb_in = nb_word$q;
+        if (cur_fb) begin
+            nb_in = wb$rdata;
+        end
+        wa_empty = wa_n$q == 32'h0;
+        wb_empty = wb_n$q == 32'h0;
+        ask_dec = c_one32 << ask_head$q;
+        ask_front = 32'h0;
+        if (ask_dec[0]) begin
+            ask_front = ask_w$0$q;
+        end
+        if (ask_dec[1]) begin
+            ask_front = ask_w$1$q;
+        end
+        if (ask_dec[2]) begin
+            ask_front = ask_w$2$q;
+        end
+        if (ask_dec[3]) begin
+            ask_front = ask_w$3$q;
+        end
+        if (ask_dec[4]) begin
+            ask_front = ask_w$4$q;
+        end
+        if (ask_dec[5]) begin
+            ask_front = ask_w$5$q;
+        end
+        if (ask_dec[6]) begin
+            ask_front = ask_w$6$q;
+        end
+        if (ask_dec[7]) begin
+            ask_front = ask_w$7$q;
+        end
+        if (ask_dec[8]) begin
+            ask_front = ask_w$8$q;
+        end
+        if (ask_dec[9]) begin
+            ask_front = ask_w$9$q;
+        end
+        if (ask_dec[10]) begin
+            ask_front = ask_w$10$q;
+        end
+        if (ask_dec[11]) begin
+            ask_front = ask_w$11$q;
+        end
+        if (ask_dec[12]) begin
+            ask_front = ask_w$12$q;
+        end
+        if (ask_dec[13]) begin
+            ask_front = ask_w$13$q;
+        end
+        if (ask_dec[14]) begin
+            ask_front = ask_w$14$q;
+        end
+        if (ask_dec[15]) begin
+            ask_front = ask_w$15$q;
+        end
+        if (ask_dec[16]) begin
+            ask_front = ask_w$16$q;
+        end
+        if (ask_dec[17]) begin
+            ask_front = ask_w$17$q;
+        end
+        if (ask_dec[18]) begin
+            ask_front = ask_w$18$q;
+        end
+        if (ask_dec[19]) begin
+            ask_front = ask_w$19$q;
+        end
+        if (ask_dec[20]) begin
+            ask_front = ask_w$20$q;
+        end
+        if (ask_dec[21]) begin
+            ask_front = ask_w$21$q;
+        end
+        if (ask_dec[22]) begin
+            ask_front = ask_w$22$q;
+        end
+        if (ask_dec[23]) begin
+            ask_front = ask_w$23$q;
+        end
+        if (ask_dec[24]) begin
+            ask_front = ask_w$24$q;
+        end
+        if (ask_dec[25]) begin
+            ask_front = ask_w$25$q;
+        end
+        if (ask_dec[26]) begin
+            ask_front = ask_w$26$q;
+        end
+        if (ask_dec[27]) begin
+            ask_front = ask_w$27$q;
+        end
+        if (ask_dec[28]) begin
+            ask_front = ask_w$28$q;
+        end
+        if (ask_dec[29]) begin
+            ask_front = ask_w$29$q;
+        end
+        if (ask_dec[30]) begin
+            ask_front = ask_w$30$q;
+        end
+        if (ask_dec[31]) begin
+            ask_front = ask_w$31$q;
+        end
+        ask_ok = go & (ask_n$q != 32'h0) & (pf_on | (ask_front[(32'h11)+:(5)] == seq_head$q));
+        port_free = tag_n$q <= ((port_out) & 5'h1f);
+        req_dst = ((ask_front[(32'h10)+:(1)]) & 2'h3);
+        req_id = ask_front[(32'h0)+:(16)];
+        req_addr = base_na + ((ask_front[(32'h0)+:(16)]) & 24'hffffff);
+        if (ask_front[32'h10]) begin
+            req_addr = base_nb + ((ask_front[(32'h0)+:(16)]) & 24'hffffff);
+        end
+        req = port_free & ask_ok;
+        if (need_tb & ~tb_pend$q) begin
+            req_dst = 32'h3;
+            req_id = leaf_tag[(32'h10)+:(16)];
+            req_addr = base_tb + ((leaf_tag[(32'h10)+:(16)]) & 24'hffffff);
+            req = port_free;
+        end
+        if (need_ta & ~ta_pend$q) begin
+            req_dst = 32'h2;
+            req_id = leaf_tag[(32'h0)+:(16)];
+            req_addr = base_ta + ((leaf_tag[(32'h0)+:(16)]) & 24'hffffff);
+            req = port_free;
+        end
+        mem_req_valid = req;
+        mem_req_addr = req_addr;
+        accept = req & mem_req_ready;
+        tags$rsel = c_one16 << tag_head$q;
+        resp_dst = tags$rdata;
+        tags$wsel = 32'h0;
+        if (accept) begin
+            tags$wsel = c_one16 << tag_tail$q;
+        end
+        tags$wdata = req_dst;
+        resp = mem_resp_valid & (tag_n$q != 32'h0);
+        if (accept) begin
+            tag_tail$d = tag_tail$q + 32'h1;
+            if (~req_dst[32'h1]) begin
+                ask_head$d = ask_head$q + 32'h1;
+            end
+            if (req_dst == 32'h2) begin
+                ta_pend$d = 1'b1;
+                ta_req_r$d = req_id;
+            end
+            if (req_dst == 32'h3) begin
+                tb_pend$d = 1'b1;
+                tb_req_r$d = req_id;
+            end
+        end
+        if (accept & ~resp) begin
+            tag_n$d = tag_n$q + 32'h1;
+        end
+        if (resp & ~accept) begin
+            tag_n$d = tag_n$q - 32'h1;
+        end
+        wa$wsel = 32'h0;
+        if (resp & (resp_dst == 32'h0)) begin
+            wa$wsel = c_one16 << wa_tail$q;
+        end
+        wa$wdata = mem_resp_data[(32'h0)+:(209)];
+        wb$wsel = 32'h0;
+        if (resp & (resp_dst == 32'h1)) begin
+            wb$wsel = c_one16 << wb_tail$q;
+        end
+        wb$wdata = mem_resp_data[(32'h0)+:(209)];
+        if (resp) begin
+            tag_head$d = tag_head$q + 32'h1;
+            if (resp_dst == 32'h0) begin
+                wa_tail$d = wa_tail$q + 32'h1;
+            end
+            if (resp_dst == 32'h1) begin
+                wb_tail$d = wb_tail$q + 32'h1;
+            end
+            if (resp_dst == 32'h2) begin
+                ta_pend$d = 1'b0;
+            end
+            if (resp_dst == 32'h3) begin
+                tb_pend$d = 1'b0;
+            end
+        end
+        if (issue) begin
+            seq_head$d = seq_head$q + 32'h1;
+            if (cur_fa) begin
+                na_word$d = wa$rdata;
+                wa_head$d = wa_head$q + 32'h1;
+            end
+            if (cur_fb) begin
+                nb_word$d = wb$rdata;
+                wb_head$d = wb_head$q + 32'h1;
+            end
+        end
+        wa_n$d = wa_n$q + (((resp & (resp_dst == 32'h0))) & 5'h1f) - (((issue & cur_fa)) & 5'h1f);
+        wb_n$d = wb_n$q + (((resp & (resp_dst == 32'h1))) & 5'h1f) - (((issue & cur_fb)) & 5'h1f);
+        top_two = pop_entry[32'h42];
+        if (pop) begin
+            seq_tail$d = seq_tail$q + 32'h1 + ((top_two) & 5'h1f);
+        end
+        seq_tail1 = seq_tail$q + 32'h1;
+        ask_off1 = ((pop_fetch[(32'h0)+:(1)]) & 5'h1f);
+        ask_off2 = ask_off1 + ((pop_fetch[(32'h1)+:(1)]) & 5'h1f);
+        ask_off3 = ask_off2 + ((pop_fetch[(32'h2)+:(1)]) & 5'h1f);
+        ask_new = ask_off3 + ((pop_fetch[(32'h3)+:(1)]) & 5'h1f);
+        put0 = c_one32 << ask_tail$q;
+        put1 = c_one32 << (ask_tail$q + ask_off1);
+        put2 = c_one32 << (ask_tail$q + ask_off2);
+        put3 = c_one32 << (ask_tail$q + ask_off3);
+        if (pop & pop_fetch[32'h0] & put0[0]) begin
+            ask_w$0$d = ((pop_entry[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h1] & put1[0]) begin
+            ask_w$0$d = ((pop_entry[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h2] & put2[0]) begin
+            ask_w$0$d = ((pop_entry[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h3] & put3[0]) begin
+            ask_w$0$d = ((pop_entry[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h0] & put0[1]) begin
+            ask_w$1$d = ((pop_entry[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h1] & put1[1]) begin
+            ask_w$1$d = ((pop_entry[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h2] & put2[1]) begin
+            ask_w$1$d = ((pop_entry[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h3] & put3[1]) begin
+            ask_w$1$d = ((pop_entry[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h0] & put0[2]) begin
+            ask_w$2$d = ((pop_entry[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h1] & put1[2]) begin
+            ask_w$2$d = ((pop_entry[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h2] & put2[2]) begin
+            ask_w$2$d = ((pop_entry[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h3] & put3[2]) begin
+            ask_w$2$d = ((pop_entry[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h0] & put0[3]) begin
+            ask_w$3$d = ((pop_entry[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h1] & put1[3]) begin
+            ask_w$3$d = ((pop_entry[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h2] & put2[3]) begin
+            ask_w$3$d = ((pop_entry[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h3] & put3[3]) begin
+            ask_w$3$d = ((pop_entry[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h0] & put0[4]) begin
+            ask_w$4$d = ((pop_entry[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h1] & put1[4]) begin
+            ask_w$4$d = ((pop_entry[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h2] & put2[4]) begin
+            ask_w$4$d = ((pop_entry[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h3] & put3[4]) begin
+            ask_w$4$d = ((pop_entry[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h0] & put0[5]) begin
+            ask_w$5$d = ((pop_entry[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h1] & put1[5]) begin
+            ask_w$5$d = ((pop_entry[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h2] & put2[5]) begin
+            ask_w$5$d = ((pop_entry[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h3] & put3[5]) begin
+            ask_w$5$d = ((pop_entry[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h0] & put0[6]) begin
+            ask_w$6$d = ((pop_entry[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h1] & put1[6]) begin
+            ask_w$6$d = ((pop_entry[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h2] & put2[6]) begin
+            ask_w$6$d = ((pop_entry[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h3] & put3[6]) begin
+            ask_w$6$d = ((pop_entry[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h0] & put0[7]) begin
+            ask_w$7$d = ((pop_entry[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h1] & put1[7]) begin
+            ask_w$7$d = ((pop_entry[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h2] & put2[7]) begin
+            ask_w$7$d = ((pop_entry[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h3] & put3[7]) begin
+            ask_w$7$d = ((pop_entry[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h0] & put0[8]) begin
+            ask_w$8$d = ((pop_entry[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h1] & put1[8]) begin
+            ask_w$8$d = ((pop_entry[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h2] & put2[8]) begin
+            ask_w$8$d = ((pop_entry[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h3] & put3[8]) begin
+            ask_w$8$d = ((pop_entry[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h0] & put0[9]) begin
+            ask_w$9$d = ((pop_entry[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h1] & put1[9]) begin
+            ask_w$9$d = ((pop_entry[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h2] & put2[9]) begin
+            ask_w$9$d = ((pop_entry[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h3] & put3[9]) begin
+            ask_w$9$d = ((pop_entry[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h0] & put0[10]) begin
+            ask_w$10$d = ((pop_entry[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h1] & put1[10]) begin
+            ask_w$10$d = ((pop_entry[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h2] & put2[10]) begin
+            ask_w$10$d = ((pop_entry[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h3] & put3[10]) begin
+            ask_w$10$d = ((pop_entry[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h0] & put0[11]) begin
+            ask_w$11$d = ((pop_entry[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h1] & put1[11]) begin
+            ask_w$11$d = ((pop_entry[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h2] & put2[11]) begin
+            ask_w$11$d = ((pop_entry[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h3] & put3[11]) begin
+            ask_w$11$d = ((pop_entry[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h0] & put0[12]) begin
+            ask_w$12$d = ((pop_entry[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h1] & put1[12]) begin
+            ask_w$12$d = ((pop_entry[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h2] & put2[12]) begin
+            ask_w$12$d = ((pop_entry[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h3] & put3[12]) begin
+            ask_w$12$d = ((pop_entry[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h0] & put0[13]) begin
+            ask_w$13$d = ((pop_entry[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h1] & put1[13]) begin
+            ask_w$13$d = ((pop_entry[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h2] & put2[13]) begin
+            ask_w$13$d = ((pop_entry[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h3] & put3[13]) begin
+            ask_w$13$d = ((pop_entry[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h0] & put0[14]) begin
+            ask_w$14$d = ((pop_entry[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h1] & put1[14]) begin
+            ask_w$14$d = ((pop_entry[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h2] & put2[14]) begin
+            ask_w$14$d = ((pop_entry[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h3] & put3[14]) begin
+            ask_w$14$d = ((pop_entry[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h0] & put0[15]) begin
+            ask_w$15$d = ((pop_entry[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h1] & put1[15]) begin
+            ask_w$15$d = ((pop_entry[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h2] & put2[15]) begin
+            ask_w$15$d = ((pop_entry[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h3] & put3[15]) begin
+            ask_w$15$d = ((pop_entry[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h0] & put0[16]) begin
+            ask_w$16$d = ((pop_entry[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h1] & put1[16]) begin
+            ask_w$16$d = ((pop_entry[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h2] & put2[16]) begin
+            ask_w$16$d = ((pop_entry[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h3] & put3[16]) begin
+            ask_w$16$d = ((pop_entry[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h0] & put0[17]) begin
+            ask_w$17$d = ((pop_entry[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h1] & put1[17]) begin
+            ask_w$17$d = ((pop_entry[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h2] & put2[17]) begin
+            ask_w$17$d = ((pop_entry[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h3] & put3[17]) begin
+            ask_w$17$d = ((pop_entry[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h0] & put0[18]) begin
+            ask_w$18$d = ((pop_entry[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h1] & put1[18]) begin
+            ask_w$18$d = ((pop_entry[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h2] & put2[18]) begin
+            ask_w$18$d = ((pop_entry[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h3] & put3[18]) begin
+            ask_w$18$d = ((pop_entry[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h0] & put0[19]) begin
+            ask_w$19$d = ((pop_entry[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h1] & put1[19]) begin
+            ask_w$19$d = ((pop_entry[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h2] & put2[19]) begin
+            ask_w$19$d = ((pop_entry[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h3] & put3[19]) begin
+            ask_w$19$d = ((pop_entry[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h0] & put0[20]) begin
+            ask_w$20$d = ((pop_entry[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h1] & put1[20]) begin
+            ask_w$20$d = ((pop_entry[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h2] & put2[20]) begin
+            ask_w$20$d = ((pop_entry[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h3] & put3[20]) begin
+            ask_w$20$d = ((pop_entry[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h0] & put0[21]) begin
+            ask_w$21$d = ((pop_entry[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h1] & put1[21]) begin
+            ask_w$21$d = ((pop_entry[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h2] & put2[21]) begin
+            ask_w$21$d = ((pop_entry[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h3] & put3[21]) begin
+            ask_w$21$d = ((pop_entry[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h0] & put0[22]) begin
+            ask_w$22$d = ((pop_entry[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h1] & put1[22]) begin
+            ask_w$22$d = ((pop_entry[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h2] & put2[22]) begin
+            ask_w$22$d = ((pop_entry[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h3] & put3[22]) begin
+            ask_w$22$d = ((pop_entry[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h0] & put0[23]) begin
+            ask_w$23$d = ((pop_entry[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h1] & put1[23]) begin
+            ask_w$23$d = ((pop_entry[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h2] & put2[23]) begin
+            ask_w$23$d = ((pop_entry[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h3] & put3[23]) begin
+            ask_w$23$d = ((pop_entry[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h0] & put0[24]) begin
+            ask_w$24$d = ((pop_entry[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h1] & put1[24]) begin
+            ask_w$24$d = ((pop_entry[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h2] & put2[24]) begin
+            ask_w$24$d = ((pop_entry[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h3] & put3[24]) begin
+            ask_w$24$d = ((pop_entry[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h0] & put0[25]) begin
+            ask_w$25$d = ((pop_entry[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h1] & put1[25]) begin
+            ask_w$25$d = ((pop_entry[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h2] & put2[25]) begin
+            ask_w$25$d = ((pop_entry[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h3] & put3[25]) begin
+            ask_w$25$d = ((pop_entry[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h0] & put0[26]) begin
+            ask_w$26$d = ((pop_entry[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h1] & put1[26]) begin
+            ask_w$26$d = ((pop_entry[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h2] & put2[26]) begin
+            ask_w$26$d = ((pop_entry[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h3] & put3[26]) begin
+            ask_w$26$d = ((pop_entry[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h0] & put0[27]) begin
+            ask_w$27$d = ((pop_entry[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h1] & put1[27]) begin
+            ask_w$27$d = ((pop_entry[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h2] & put2[27]) begin
+            ask_w$27$d = ((pop_entry[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h3] & put3[27]) begin
+            ask_w$27$d = ((pop_entry[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h0] & put0[28]) begin
+            ask_w$28$d = ((pop_entry[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h1] & put1[28]) begin
+            ask_w$28$d = ((pop_entry[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h2] & put2[28]) begin
+            ask_w$28$d = ((pop_entry[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h3] & put3[28]) begin
+            ask_w$28$d = ((pop_entry[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h0] & put0[29]) begin
+            ask_w$29$d = ((pop_entry[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h1] & put1[29]) begin
+            ask_w$29$d = ((pop_entry[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h2] & put2[29]) begin
+            ask_w$29$d = ((pop_entry[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h3] & put3[29]) begin
+            ask_w$29$d = ((pop_entry[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h0] & put0[30]) begin
+            ask_w$30$d = ((pop_entry[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h1] & put1[30]) begin
+            ask_w$30$d = ((pop_entry[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h2] & put2[30]) begin
+            ask_w$30$d = ((pop_entry[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h3] & put3[30]) begin
+            ask_w$30$d = ((pop_entry[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h0] & put0[31]) begin
+            ask_w$31$d = ((pop_entry[(32'h0)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h1] & put1[31]) begin
+            ask_w$31$d = ((pop_entry[(32'h10)+:(16)]) & 22'h3fffff) | (((seq_tail$q) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        if (pop & pop_fetch[32'h2] & put2[31]) begin
+            ask_w$31$d = ((pop_entry[(32'h21)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11);
+        end
+        if (pop & pop_fetch[32'h3] & put3[31]) begin
+            ask_w$31$d = ((pop_entry[(32'h31)+:(16)]) & 22'h3fffff) | (((seq_tail1) & 22'h3fffff) << 32'h11) | c_ask_b;
+        end
+        ask_take = accept & ~req_dst[32'h1];
+        ask_n$d = ask_n$q - ((ask_take) & 6'h3f);
+        if (pop) begin
+            ask_tail$d = ask_tail$q + ask_new;
+            ask_n$d = ask_n$q - ((ask_take) & 6'h3f) + ((ask_new) & 6'h3f);
+        end
+        if (clear) begin
+            ask_head$d = 32'h0;
+            ask_tail$d = 32'h0;
+            ask_n$d = 32'h0;
+            seq_head$d = 32'h0;
+            seq_tail$d = 32'h0;
+            wa_head$d = 32'h0;
+            wa_tail$d = 32'h0;
+            wa_n$d = 32'h0;
+            wb_head$d = 32'h0;
+            wb_tail$d = 32'h0;
+            wb_n$d = 32'h0;
+        end
+        ta_req = ta_req_r$q;
+        tb_req = tb_req_r$q;
+        outstanding = tag_n$q != 32'h0;
+    end
+    
+endmodule // top$mem_port
+
+
+module top$mem_port$ask_w$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [21:0] d;
+    output reg  [21:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 22'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$mem_port$ask_w$0
+
+
+module top$mem_port$na_word(d,q,clock);
     
     // Module arguments
     input wire  [208:0] d;
@@ -7168,391 +7307,663 @@ module top$na_word(d,q,clock);
        q <= d;
     end
           
-endmodule // top$na_word
+endmodule // top$mem_port$na_word
 
 
-module top$queue(clock,clear,lifo,push,push_data,push2,push2_data,pop,empty,full,count,max_count,overflow,top_data);
+module top$mem_port$tags(clock,wsel,wdata,rsel,rdata);
     
     // Module arguments
     input wire  clock;
-    input wire  clear;
-    input wire  lifo;
-    input wire  push;
-    input wire  [66:0] push_data;
-    input wire  push2;
-    input wire  [66:0] push2_data;
-    input wire  pop;
-    output reg  empty;
-    output reg  full;
-    output reg  [10:0] count;
-    output reg  [10:0] max_count;
-    output reg  overflow;
-    output reg  [66:0] top_data;
-    
-    // Constant declarations
-    localparam  c_cap = 11'b10000000000;
+    input wire  [15:0] wsel;
+    input wire  [1:0] wdata;
+    input wire  [15:0] rsel;
+    output reg  [1:0] rdata;
     
     // Stub signals
-    reg  [10:0] cnt$d;
-    wire  [10:0] cnt$q;
-    reg  cnt$clock;
-    reg  [66:0] top_r$d;
-    wire  [66:0] top_r$q;
-    reg  top_r$clock;
-    reg  [9:0] rd_ptr$d;
-    wire  [9:0] rd_ptr$q;
-    reg  rd_ptr$clock;
-    reg  [9:0] wr_ptr$d;
-    wire  [9:0] wr_ptr$q;
-    reg  wr_ptr$clock;
-    reg  byp$d;
-    wire  byp$q;
-    reg  byp$clock;
-    reg  [66:0] byp_data$d;
-    wire  [66:0] byp_data$q;
-    reg  byp_data$clock;
-    reg  rsel$d;
-    wire  rsel$q;
-    reg  rsel$clock;
-    reg  order_lifo$d;
-    wire  order_lifo$q;
-    reg  order_lifo$clock;
-    reg  [10:0] max_r$d;
-    wire  [10:0] max_r$q;
-    reg  max_r$clock;
-    reg  ovf_r$d;
-    wire  ovf_r$q;
-    reg  ovf_r$clock;
-    reg  [8:0] bank0$read_address;
-    reg  bank0$read_clock;
-    wire  [66:0] bank0$read_data;
-    reg  [8:0] bank0$write_address;
-    reg  bank0$write_clock;
-    reg  [66:0] bank0$write_data;
-    reg  bank0$write_enable;
-    reg  [8:0] bank1$read_address;
-    reg  bank1$read_clock;
-    wire  [66:0] bank1$read_data;
-    reg  [8:0] bank1$write_address;
-    reg  bank1$write_clock;
-    reg  [66:0] bank1$write_data;
-    reg  bank1$write_enable;
+    reg  [1:0] row$0$d;
+    wire  [1:0] row$0$q;
+    reg  row$0$clock;
+    reg  [1:0] row$1$d;
+    wire  [1:0] row$1$q;
+    reg  row$1$clock;
+    reg  [1:0] row$2$d;
+    wire  [1:0] row$2$q;
+    reg  row$2$clock;
+    reg  [1:0] row$3$d;
+    wire  [1:0] row$3$q;
+    reg  row$3$clock;
+    reg  [1:0] row$4$d;
+    wire  [1:0] row$4$q;
+    reg  row$4$clock;
+    reg  [1:0] row$5$d;
+    wire  [1:0] row$5$q;
+    reg  row$5$clock;
+    reg  [1:0] row$6$d;
+    wire  [1:0] row$6$q;
+    reg  row$6$clock;
+    reg  [1:0] row$7$d;
+    wire  [1:0] row$7$q;
+    reg  row$7$clock;
+    reg  [1:0] row$8$d;
+    wire  [1:0] row$8$q;
+    reg  row$8$clock;
+    reg  [1:0] row$9$d;
+    wire  [1:0] row$9$q;
+    reg  row$9$clock;
+    reg  [1:0] row$10$d;
+    wire  [1:0] row$10$q;
+    reg  row$10$clock;
+    reg  [1:0] row$11$d;
+    wire  [1:0] row$11$q;
+    reg  row$11$clock;
+    reg  [1:0] row$12$d;
+    wire  [1:0] row$12$q;
+    reg  row$12$clock;
+    reg  [1:0] row$13$d;
+    wire  [1:0] row$13$q;
+    reg  row$13$clock;
+    reg  [1:0] row$14$d;
+    wire  [1:0] row$14$q;
+    reg  row$14$clock;
+    reg  [1:0] row$15$d;
+    wire  [1:0] row$15$q;
+    reg  row$15$clock;
     
     // Local signals
-    reg  nonempty;
-    reg  many;
-    reg  do_pop;
-    reg  [10:0] c0;
-    reg  [66:0] e1;
-    reg  any;
-    reg  two;
-    reg  s1;
-    reg  s2;
-    reg  [66:0] next_entry;
-    reg  [10:0] cnt_n;
-    reg  [9:0] rd_n;
-    reg  [9:0] wr_n;
-    reg  [9:0] wr1;
-    reg  [9:0] raddr;
-    reg  we_a;
-    reg  we_b;
-    reg  [66:0] wdata_a;
-    reg  [66:0] wdata_b;
+    reg  [1:0] picked;
     
     // Sub module instances
-    top$queue$cnt cnt(
-        .d(cnt$d),
-        .q(cnt$q),
-        .clock(cnt$clock)
+    top$mem_port$tags$row$0 row$0(
+        .d(row$0$d),
+        .q(row$0$q),
+        .clock(row$0$clock)
     );
-    top$ahd_ent$0 top_r(
-        .d(top_r$d),
-        .q(top_r$q),
-        .clock(top_r$clock)
+    top$mem_port$tags$row$0 row$1(
+        .d(row$1$d),
+        .q(row$1$q),
+        .clock(row$1$clock)
     );
-    top$dop$doptrf$0$mul_0$s1_exp rd_ptr(
-        .d(rd_ptr$d),
-        .q(rd_ptr$q),
-        .clock(rd_ptr$clock)
+    top$mem_port$tags$row$0 row$2(
+        .d(row$2$d),
+        .q(row$2$q),
+        .clock(row$2$clock)
     );
-    top$dop$doptrf$0$mul_0$s1_exp wr_ptr(
-        .d(wr_ptr$d),
-        .q(wr_ptr$q),
-        .clock(wr_ptr$clock)
+    top$mem_port$tags$row$0 row$3(
+        .d(row$3$d),
+        .q(row$3$q),
+        .clock(row$3$clock)
     );
-    top$done_r byp(
-        .d(byp$d),
-        .q(byp$q),
-        .clock(byp$clock)
+    top$mem_port$tags$row$0 row$4(
+        .d(row$4$d),
+        .q(row$4$q),
+        .clock(row$4$clock)
     );
-    top$ahd_ent$0 byp_data(
-        .d(byp_data$d),
-        .q(byp_data$q),
-        .clock(byp_data$clock)
+    top$mem_port$tags$row$0 row$5(
+        .d(row$5$d),
+        .q(row$5$q),
+        .clock(row$5$clock)
     );
-    top$done_r rsel(
-        .d(rsel$d),
-        .q(rsel$q),
-        .clock(rsel$clock)
+    top$mem_port$tags$row$0 row$6(
+        .d(row$6$d),
+        .q(row$6$q),
+        .clock(row$6$clock)
     );
-    top$done_r order_lifo(
-        .d(order_lifo$d),
-        .q(order_lifo$q),
-        .clock(order_lifo$clock)
+    top$mem_port$tags$row$0 row$7(
+        .d(row$7$d),
+        .q(row$7$q),
+        .clock(row$7$clock)
     );
-    top$queue$cnt max_r(
-        .d(max_r$d),
-        .q(max_r$q),
-        .clock(max_r$clock)
+    top$mem_port$tags$row$0 row$8(
+        .d(row$8$d),
+        .q(row$8$q),
+        .clock(row$8$clock)
     );
-    top$done_r ovf_r(
-        .d(ovf_r$d),
-        .q(ovf_r$q),
-        .clock(ovf_r$clock)
+    top$mem_port$tags$row$0 row$9(
+        .d(row$9$d),
+        .q(row$9$q),
+        .clock(row$9$clock)
     );
-    top$queue$bank0 bank0(
-        .read_address(bank0$read_address),
-        .read_clock(bank0$read_clock),
-        .read_data(bank0$read_data),
-        .write_address(bank0$write_address),
-        .write_clock(bank0$write_clock),
-        .write_data(bank0$write_data),
-        .write_enable(bank0$write_enable)
+    top$mem_port$tags$row$0 row$10(
+        .d(row$10$d),
+        .q(row$10$q),
+        .clock(row$10$clock)
     );
-    top$queue$bank0 bank1(
-        .read_address(bank1$read_address),
-        .read_clock(bank1$read_clock),
-        .read_data(bank1$read_data),
-        .write_address(bank1$write_address),
-        .write_clock(bank1$write_clock),
-        .write_data(bank1$write_data),
-        .write_enable(bank1$write_enable)
+    top$mem_port$tags$row$0 row$11(
+        .d(row$11$d),
+        .q(row$11$q),
+        .clock(row$11$clock)
+    );
+    top$mem_port$tags$row$0 row$12(
+        .d(row$12$d),
+        .q(row$12$q),
+        .clock(row$12$clock)
+    );
+    top$mem_port$tags$row$0 row$13(
+        .d(row$13$d),
+        .q(row$13$q),
+        .clock(row$13$clock)
+    );
+    top$mem_port$tags$row$0 row$14(
+        .d(row$14$d),
+        .q(row$14$q),
+        .clock(row$14$clock)
+    );
+    top$mem_port$tags$row$0 row$15(
+        .d(row$15$d),
+        .q(row$15$q),
+        .clock(row$15$clock)
     );
     
     // Update code
     always @(*) begin
-        cnt$clock = clock;
-        top_r$clock = clock;
-        rd_ptr$clock = clock;
-        wr_ptr$clock = clock;
-        byp$clock = clock;
-        byp_data$clock = clock;
-        rsel$clock = clock;
-        order_lifo$clock = clock;
-        max_r$clock = clock;
-        ovf_r$clock = clock;
-        cnt$d = cnt$q;
-        top_r$d = top_r$q;
-        rd_ptr$d = rd_ptr$q;
-        wr_ptr$d = wr_ptr$q;
-        byp$d = byp$q;
-        byp_data$d = byp_data$q;
-        rsel$d = rsel$q;
-        order_lifo$d = order_lifo$q;
-        max_r$d = max_r$q;
-        ovf_r$d = ovf_r$q;
-        bank0$read_clock = clock;
-        bank0$write_clock = clock;
-        bank1$read_clock = clock;
-        bank1$write_clock = clock;
-        empty = cnt$q == 32'h0;
-        full = cnt$q == c_cap;
-        count = cnt$q;
-        max_count = max_r$q;
-        overflow = ovf_r$q;
-        top_data = top_r$q;
-        nonempty = cnt$q != 32'h0;
-        many = cnt$q > 32'h1;
-        do_pop = pop & nonempty;
-        c0 = cnt$q - ((do_pop) & 11'h7ff);
-        e1 = push2_data;
-        if (push) begin
-            e1 = push_data;
+        picked = 32'h0;
+        row$0$clock = clock;
+        row$0$d = row$0$q;
+        if (wsel[0]) begin
+            row$0$d = wdata;
         end
-        any = push | push2;
-        two = push & push2;
-        s1 = any & (c0 != c_cap);
-        s2 = two & (c0 + 32'h1 < c_cap);
-        next_entry = bank0$read_data;
-        if (rsel$q) begin
-            next_entry = bank1$read_data;
+        if (rsel[0]) begin
+            picked = row$0$q;
         end
-        if (byp$q) begin
-            next_entry = byp_data$q;
+        row$1$clock = clock;
+        row$1$d = row$1$q;
+        if (wsel[1]) begin
+            row$1$d = wdata;
         end
-        cnt_n = c0 + ((s1) & 11'h7ff) + ((s2) & 11'h7ff);
-        rd_n = rd_ptr$q;
-        wr_n = wr_ptr$q;
-        wr1 = wr_ptr$q + 32'h1;
-        we_a = 1'b0;
-        we_b = 1'b0;
-        wdata_a = e1;
-        wdata_b = push2_data;
-        if (order_lifo$q) begin
-            wdata_b = e1;
-            if (do_pop) begin
-                if (~s1) begin
-                    top_r$d = 32'h0;
-                    if (many) begin
-                        top_r$d = next_entry;
-                        wr_n = wr_ptr$q - 32'h1;
-                    end
-                end
-                if (s1) begin
-                    top_r$d = e1;
-                end
-                if (s2) begin
-                    we_a = 1'b1;
-                    wr_n = wr_ptr$q + 32'h1;
-                    top_r$d = push2_data;
-                end
-            end
-            else begin
-                if (s1) begin
-                    top_r$d = e1;
-                    if (nonempty) begin
-                        we_a = 1'b1;
-                        wdata_a = top_r$q;
-                        wr_n = wr_ptr$q + 32'h1;
-                    end
-                end
-                if (s2) begin
-                    top_r$d = push2_data;
-                    we_a = 1'b1;
-                    wr_n = wr_ptr$q + 32'h1;
-                    if (nonempty) begin
-                        we_b = 1'b1;
-                        wr_n = wr_ptr$q + 32'h2;
-                    end
-                end
-            end
+        if (rsel[1]) begin
+            picked = row$1$q;
         end
-        else begin
-            if (do_pop) begin
-                top_r$d = 32'h0;
-                if (many) begin
-                    top_r$d = next_entry;
-                    rd_n = rd_ptr$q + 32'h1;
-                end
-            end
-            if (c0 == 32'h0) begin
-                if (s1) begin
-                    top_r$d = e1;
-                end
-                if (s2) begin
-                    we_a = 1'b1;
-                    wdata_a = push2_data;
-                    wr_n = wr_ptr$q + 32'h1;
-                end
-            end
-            else begin
-                if (s1) begin
-                    we_a = 1'b1;
-                    wr_n = wr_ptr$q + 32'h1;
-                end
-                if (s2) begin
-                    we_b = 1'b1;
-                    wr_n = wr_ptr$q + 32'h2;
-                end
-            end
+        row$2$clock = clock;
+        row$2$d = row$2$q;
+        if (wsel[2]) begin
+            row$2$d = wdata;
         end
-        cnt$d = cnt_n;
-        if (cnt_n > max_r$q) begin
-            max_r$d = cnt_n;
+        if (rsel[2]) begin
+            picked = row$2$q;
         end
-        if ((any & ~s1) | (two & ~s2)) begin
-            ovf_r$d = 1'b1;
+        row$3$clock = clock;
+        row$3$d = row$3$q;
+        if (wsel[3]) begin
+            row$3$d = wdata;
         end
-        if (clear) begin
-            cnt$d = 32'h0;
-            top_r$d = 32'h0;
-            rd_n = 32'h0;
-            wr_n = 32'h0;
-            we_a = 1'b0;
-            we_b = 1'b0;
-            order_lifo$d = lifo;
-            max_r$d = 32'h0;
-            ovf_r$d = 1'b0;
+        if (rsel[3]) begin
+            picked = row$3$q;
         end
-        rd_ptr$d = rd_n;
-        wr_ptr$d = wr_n;
-        raddr = rd_n;
-        if (order_lifo$d) begin
-            raddr = wr_n - 32'h1;
+        row$4$clock = clock;
+        row$4$d = row$4$q;
+        if (wsel[4]) begin
+            row$4$d = wdata;
         end
-        bank0$write_enable = (we_a & ~wr_ptr$q[32'h0]) | (we_b & wr_ptr$q[32'h0]);
-        bank1$write_enable = (we_a & wr_ptr$q[32'h0]) | (we_b & ~wr_ptr$q[32'h0]);
-        bank0$write_address = wr_ptr$q[(32'h1)+:(9)];
-        bank0$write_data = wdata_a;
-        bank1$write_address = wr_ptr$q[(32'h1)+:(9)];
-        bank1$write_data = wdata_a;
-        if (wr_ptr$q[32'h0]) begin
-            bank0$write_address = wr1[(32'h1)+:(9)];
-            bank0$write_data = wdata_b;
+        if (rsel[4]) begin
+            picked = row$4$q;
         end
-        else begin
-            bank1$write_address = wr1[(32'h1)+:(9)];
-            bank1$write_data = wdata_b;
+        row$5$clock = clock;
+        row$5$d = row$5$q;
+        if (wsel[5]) begin
+            row$5$d = wdata;
         end
-        bank0$read_address = raddr[(32'h1)+:(9)];
-        bank1$read_address = raddr[(32'h1)+:(9)];
-        rsel$d = raddr[32'h0];
-        byp$d = (we_a & (raddr == wr_ptr$q)) | (we_b & (raddr == wr1));
-        byp_data$d = wdata_a;
-        if (we_b & (raddr == wr1)) begin
-            byp_data$d = wdata_b;
+        if (rsel[5]) begin
+            picked = row$5$q;
         end
+        row$6$clock = clock;
+        row$6$d = row$6$q;
+        if (wsel[6]) begin
+            row$6$d = wdata;
+        end
+        if (rsel[6]) begin
+            picked = row$6$q;
+        end
+        row$7$clock = clock;
+        row$7$d = row$7$q;
+        if (wsel[7]) begin
+            row$7$d = wdata;
+        end
+        if (rsel[7]) begin
+            picked = row$7$q;
+        end
+        row$8$clock = clock;
+        row$8$d = row$8$q;
+        if (wsel[8]) begin
+            row$8$d = wdata;
+        end
+        if (rsel[8]) begin
+            picked = row$8$q;
+        end
+        row$9$clock = clock;
+        row$9$d = row$9$q;
+        if (wsel[9]) begin
+            row$9$d = wdata;
+        end
+        if (rsel[9]) begin
+            picked = row$9$q;
+        end
+        row$10$clock = clock;
+        row$10$d = row$10$q;
+        if (wsel[10]) begin
+            row$10$d = wdata;
+        end
+        if (rsel[10]) begin
+            picked = row$10$q;
+        end
+        row$11$clock = clock;
+        row$11$d = row$11$q;
+        if (wsel[11]) begin
+            row$11$d = wdata;
+        end
+        if (rsel[11]) begin
+            picked = row$11$q;
+        end
+        row$12$clock = clock;
+        row$12$d = row$12$q;
+        if (wsel[12]) begin
+            row$12$d = wdata;
+        end
+        if (rsel[12]) begin
+            picked = row$12$q;
+        end
+        row$13$clock = clock;
+        row$13$d = row$13$q;
+        if (wsel[13]) begin
+            row$13$d = wdata;
+        end
+        if (rsel[13]) begin
+            picked = row$13$q;
+        end
+        row$14$clock = clock;
+        row$14$d = row$14$q;
+        if (wsel[14]) begin
+            row$14$d = wdata;
+        end
+        if (rsel[14]) begin
+            picked = row$14$q;
+        end
+        row$15$clock = clock;
+        row$15$d = row$15$q;
+        if (wsel[15]) begin
+            row$15$d = wdata;
+        end
+        if (rsel[15]) begin
+            picked = row$15$q;
+        end
+        rdata = picked;
     end
     
-endmodule // top$queue
+endmodule // top$mem_port$tags
 
 
-module top$queue$bank0(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+module top$mem_port$tags$row$0(d,q,clock);
     
     // Module arguments
-    input wire  [8:0] read_address;
-    input wire  read_clock;
-    output reg  [66:0] read_data;
-    input wire  [8:0] write_address;
-    input wire  write_clock;
-    input wire  [66:0] write_data;
-    input wire  write_enable;
-    
-    // Update code (custom)
-    reg[66:0] mem[511:0];
-    
-    
-    
-    always @(posedge read_clock) begin
-       read_data <= mem[read_address];
-    end
-    
-    always @(posedge write_clock) begin
-       if (write_enable) begin
-          mem[write_address] <= write_data;
-       end
-    end
-                
-endmodule // top$queue$bank0
-
-
-module top$queue$cnt(d,q,clock);
-    
-    // Module arguments
-    input wire  [10:0] d;
-    output reg  [10:0] q;
+    input wire  [1:0] d;
+    output reg  [1:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 11'h0;
+       q = 2'h0;
     end
     
     always @(posedge clock) begin
        q <= d;
     end
           
-endmodule // top$queue$cnt
+endmodule // top$mem_port$tags$row$0
+
+
+module top$mem_port$wa(clock,wsel,wdata,rsel,rdata);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] wsel;
+    input wire  [208:0] wdata;
+    input wire  [15:0] rsel;
+    output reg  [208:0] rdata;
+    
+    // Stub signals
+    reg  [208:0] row$0$d;
+    wire  [208:0] row$0$q;
+    reg  row$0$clock;
+    reg  [208:0] row$1$d;
+    wire  [208:0] row$1$q;
+    reg  row$1$clock;
+    reg  [208:0] row$2$d;
+    wire  [208:0] row$2$q;
+    reg  row$2$clock;
+    reg  [208:0] row$3$d;
+    wire  [208:0] row$3$q;
+    reg  row$3$clock;
+    reg  [208:0] row$4$d;
+    wire  [208:0] row$4$q;
+    reg  row$4$clock;
+    reg  [208:0] row$5$d;
+    wire  [208:0] row$5$q;
+    reg  row$5$clock;
+    reg  [208:0] row$6$d;
+    wire  [208:0] row$6$q;
+    reg  row$6$clock;
+    reg  [208:0] row$7$d;
+    wire  [208:0] row$7$q;
+    reg  row$7$clock;
+    reg  [208:0] row$8$d;
+    wire  [208:0] row$8$q;
+    reg  row$8$clock;
+    reg  [208:0] row$9$d;
+    wire  [208:0] row$9$q;
+    reg  row$9$clock;
+    reg  [208:0] row$10$d;
+    wire  [208:0] row$10$q;
+    reg  row$10$clock;
+    reg  [208:0] row$11$d;
+    wire  [208:0] row$11$q;
+    reg  row$11$clock;
+    reg  [208:0] row$12$d;
+    wire  [208:0] row$12$q;
+    reg  row$12$clock;
+    reg  [208:0] row$13$d;
+    wire  [208:0] row$13$q;
+    reg  row$13$clock;
+    reg  [208:0] row$14$d;
+    wire  [208:0] row$14$q;
+    reg  row$14$clock;
+    reg  [208:0] row$15$d;
+    wire  [208:0] row$15$q;
+    reg  row$15$clock;
+    
+    // Local signals
+    reg  [208:0] picked;
+    
+    // Sub module instances
+    top$mem_port$na_word row$0(
+        .d(row$0$d),
+        .q(row$0$q),
+        .clock(row$0$clock)
+    );
+    top$mem_port$na_word row$1(
+        .d(row$1$d),
+        .q(row$1$q),
+        .clock(row$1$clock)
+    );
+    top$mem_port$na_word row$2(
+        .d(row$2$d),
+        .q(row$2$q),
+        .clock(row$2$clock)
+    );
+    top$mem_port$na_word row$3(
+        .d(row$3$d),
+        .q(row$3$q),
+        .clock(row$3$clock)
+    );
+    top$mem_port$na_word row$4(
+        .d(row$4$d),
+        .q(row$4$q),
+        .clock(row$4$clock)
+    );
+    top$mem_port$na_word row$5(
+        .d(row$5$d),
+        .q(row$5$q),
+        .clock(row$5$clock)
+    );
+    top$mem_port$na_word row$6(
+        .d(row$6$d),
+        .q(row$6$q),
+        .clock(row$6$clock)
+    );
+    top$mem_port$na_word row$7(
+        .d(row$7$d),
+        .q(row$7$q),
+        .clock(row$7$clock)
+    );
+    top$mem_port$na_word row$8(
+        .d(row$8$d),
+        .q(row$8$q),
+        .clock(row$8$clock)
+    );
+    top$mem_port$na_word row$9(
+        .d(row$9$d),
+        .q(row$9$q),
+        .clock(row$9$clock)
+    );
+    top$mem_port$na_word row$10(
+        .d(row$10$d),
+        .q(row$10$q),
+        .clock(row$10$clock)
+    );
+    top$mem_port$na_word row$11(
+        .d(row$11$d),
+        .q(row$11$q),
+        .clock(row$11$clock)
+    );
+    top$mem_port$na_word row$12(
+        .d(row$12$d),
+        .q(row$12$q),
+        .clock(row$12$clock)
+    );
+    top$mem_port$na_word row$13(
+        .d(row$13$d),
+        .q(row$13$q),
+        .clock(row$13$clock)
+    );
+    top$mem_port$na_word row$14(
+        .d(row$14$d),
+        .q(row$14$q),
+        .clock(row$14$clock)
+    );
+    top$mem_port$na_word row$15(
+        .d(row$15$d),
+        .q(row$15$q),
+        .clock(row$15$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        picked = 32'h0;
+        row$0$clock = clock;
+        row$0$d = row$0$q;
+        if (wsel[0]) begin
+            row$0$d = wdata;
+        end
+        if (rsel[0]) begin
+            picked = row$0$q;
+        end
+        row$1$clock = clock;
+        row$1$d = row$1$q;
+        if (wsel[1]) begin
+            row$1$d = wdata;
+        end
+        if (rsel[1]) begin
+            picked = row$1$q;
+        end
+        row$2$clock = clock;
+        row$2$d = row$2$q;
+        if (wsel[2]) begin
+            row$2$d = wdata;
+        end
+        if (rsel[2]) begin
+            picked = row$2$q;
+        end
+        row$3$clock = clock;
+        row$3$d = row$3$q;
+        if (wsel[3]) begin
+            row$3$d = wdata;
+        end
+        if (rsel[3]) begin
+            picked = row$3$q;
+        end
+        row$4$clock = clock;
+        row$4$d = row$4$q;
+        if (wsel[4]) begin
+            row$4$d = wdata;
+        end
+        if (rsel[4]) begin
+            picked = row$4$q;
+        end
+        row$5$clock = clock;
+        row$5$d = row$5$q;
+        if (wsel[5]) begin
+            row$5$d = wdata;
+        end
+        if (rsel[5]) begin
+            picked = row$5$q;
+        end
+        row$6$clock = clock;
+        row$6$d = row$6$q;
+        if (wsel[6]) begin
+            row$6$d = wdata;
+        end
+        if (rsel[6]) begin
+            picked = row$6$q;
+        end
+        row$7$clock = clock;
+        row$7$d = row$7$q;
+        if (wsel[7]) begin
+            row$7$d = wdata;
+        end
+        if (rsel[7]) begin
+            picked = row$7$q;
+        end
+        row$8$clock = clock;
+        row$8$d = row$8$q;
+        if (wsel[8]) begin
+            row$8$d = wdata;
+        end
+        if (rsel[8]) begin
+            picked = row$8$q;
+        end
+        row$9$clock = clock;
+        row$9$d = row$9$q;
+        if (wsel[9]) begin
+            row$9$d = wdata;
+        end
+        if (rsel[9]) begin
+            picked = row$9$q;
+        end
+        row$10$clock = clock;
+        row$10$d = row$10$q;
+        if (wsel[10]) begin
+            row$10$d = wdata;
+        end
+        if (rsel[10]) begin
+            picked = row$10$q;
+        end
+        row$11$clock = clock;
+        row$11$d = row$11$q;
+        if (wsel[11]) begin
+            row$11$d = wdata;
+        end
+        if (rsel[11]) begin
+            picked = row$11$q;
+        end
+        row$12$clock = clock;
+        row$12$d = row$12$q;
+        if (wsel[12]) begin
+            row$12$d = wdata;
+        end
+        if (rsel[12]) begin
+            picked = row$12$q;
+        end
+        row$13$clock = clock;
+        row$13$d = row$13$q;
+        if (wsel[13]) begin
+            row$13$d = wdata;
+        end
+        if (rsel[13]) begin
+            picked = row$13$q;
+        end
+        row$14$clock = clock;
+        row$14$d = row$14$q;
+        if (wsel[14]) begin
+            row$14$d = wdata;
+        end
+        if (rsel[14]) begin
+            picked = row$14$q;
+        end
+        row$15$clock = clock;
+        row$15$d = row$15$q;
+        if (wsel[15]) begin
+            row$15$d = wdata;
+        end
+        if (rsel[15]) begin
+            picked = row$15$q;
+        end
+        rdata = picked;
+    end
+    
+endmodule // top$mem_port$wa
+
+
+module top$result(clock,take,out_valid,out_hit,out_uncertain,out_tag,res_ready,out_ready,res_valid,res_tag,res_uncertain,give,sure_hit,open);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  take;
+    input wire  out_valid;
+    input wire  out_hit;
+    input wire  out_uncertain;
+    input wire  [31:0] out_tag;
+    input wire  res_ready;
+    output reg  out_ready;
+    output reg  res_valid;
+    output reg  [31:0] res_tag;
+    output reg  res_uncertain;
+    output reg  give;
+    output reg  sure_hit;
+    output reg  [8:0] open;
+    
+    // Stub signals
+    reg  [8:0] open_r$d;
+    wire  [8:0] open_r$q;
+    reg  open_r$clock;
+    
+    // Local signals
+    reg  keep;
+    
+    // Sub module instances
+    top$result$open_r open_r(
+        .d(open_r$d),
+        .q(open_r$q),
+        .clock(open_r$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        open_r$clock = clock;
+        open_r$d = open_r$q;
+        keep = out_hit | out_uncertain;
+        res_valid = out_valid & keep;
+        res_tag = out_tag;
+        res_uncertain = out_uncertain;
+        out_ready = res_ready | ~keep;
+        give = out_valid & (res_ready | ~keep);
+        if (take & ~give) begin
+            open_r$d = open_r$q + 32'h1;
+        end
+        if (give & ~take) begin
+            open_r$d = open_r$q - 32'h1;
+        end
+        sure_hit = out_valid & out_hit & ~out_uncertain;
+        open = open_r$q;
+    end
+    
+endmodule // top$result
+
+
+module top$result$open_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [8:0] d;
+    output reg  [8:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 9'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$result$open_r
 
 
 module top$side(clock,d,q);
@@ -7795,25 +8206,6 @@ module top$ta_word(d,q,clock);
 endmodule // top$ta_word
 
 
-module top$tags$0(d,q,clock);
-    
-    // Module arguments
-    input wire  [1:0] d;
-    output reg  [1:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 2'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$tags$0
-
-
 module top$tc_id(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
@@ -7870,25 +8262,6 @@ module top$tc_word(read_address,read_clock,read_data,write_address,write_clock,w
     end
                 
 endmodule // top$tc_word
-
-
-module top$tri_open(d,q,clock);
-    
-    // Module arguments
-    input wire  [8:0] d;
-    output reg  [8:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 9'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$tri_open
 
 
 module top$tri_unit(clock,load_en,load_addr,load_data,a_m_0$0,a_m_0$1,a_m_0$2,a_m_0$3,a_m_1$0,a_m_1$1,a_m_1$2,a_m_1$3,a_m_2$0,a_m_2$1,a_m_2$2,a_m_2$3,a_alpha_m,a_alpha_f,a_v_x$0,a_v_x$1,a_v_x$2,a_v_y$0,a_v_y$1,a_v_y$2,a_v_z$0,a_v_z$1,a_v_z$2,a_v_exact,a_degenerate,b_m_0$0,b_m_0$1,b_m_0$2,b_m_0$3,b_m_1$0,b_m_1$1,b_m_1$2,b_m_1$3,b_m_2$0,b_m_2$1,b_m_2$2,b_m_2$3,b_alpha_m,b_alpha_f,b_v_x$0,b_v_x$1,b_v_x$2,b_v_y$0,b_v_y$1,b_v_y$2,b_v_z$0,b_v_z$1,b_v_z$2,b_v_exact,b_degenerate,tag,in_valid,in_ready,out_tag,out_hit,out_uncertain,out_valid,out_ready);
@@ -8497,7 +8870,7 @@ module top$tri_unit(clock,load_en,load_addr,load_data,a_m_0$0,a_m_0$1,a_m_0$2,a_
         .almost_full(fifo$almost_full),
         .overflow(fifo$overflow)
     );
-    top$tri_open count(
+    top$result$open_r count(
         .d(count$d),
         .q(count$q),
         .clock(count$clock)
@@ -8960,262 +9333,262 @@ module top$tri_unit$degenerate_wait(clock,d,q);
     reg  line$51$clock;
     
     // Sub module instances
-    top$tags$0 line$0(
+    top$mem_port$tags$row$0 line$0(
         .d(line$0$d),
         .q(line$0$q),
         .clock(line$0$clock)
     );
-    top$tags$0 line$1(
+    top$mem_port$tags$row$0 line$1(
         .d(line$1$d),
         .q(line$1$q),
         .clock(line$1$clock)
     );
-    top$tags$0 line$2(
+    top$mem_port$tags$row$0 line$2(
         .d(line$2$d),
         .q(line$2$q),
         .clock(line$2$clock)
     );
-    top$tags$0 line$3(
+    top$mem_port$tags$row$0 line$3(
         .d(line$3$d),
         .q(line$3$q),
         .clock(line$3$clock)
     );
-    top$tags$0 line$4(
+    top$mem_port$tags$row$0 line$4(
         .d(line$4$d),
         .q(line$4$q),
         .clock(line$4$clock)
     );
-    top$tags$0 line$5(
+    top$mem_port$tags$row$0 line$5(
         .d(line$5$d),
         .q(line$5$q),
         .clock(line$5$clock)
     );
-    top$tags$0 line$6(
+    top$mem_port$tags$row$0 line$6(
         .d(line$6$d),
         .q(line$6$q),
         .clock(line$6$clock)
     );
-    top$tags$0 line$7(
+    top$mem_port$tags$row$0 line$7(
         .d(line$7$d),
         .q(line$7$q),
         .clock(line$7$clock)
     );
-    top$tags$0 line$8(
+    top$mem_port$tags$row$0 line$8(
         .d(line$8$d),
         .q(line$8$q),
         .clock(line$8$clock)
     );
-    top$tags$0 line$9(
+    top$mem_port$tags$row$0 line$9(
         .d(line$9$d),
         .q(line$9$q),
         .clock(line$9$clock)
     );
-    top$tags$0 line$10(
+    top$mem_port$tags$row$0 line$10(
         .d(line$10$d),
         .q(line$10$q),
         .clock(line$10$clock)
     );
-    top$tags$0 line$11(
+    top$mem_port$tags$row$0 line$11(
         .d(line$11$d),
         .q(line$11$q),
         .clock(line$11$clock)
     );
-    top$tags$0 line$12(
+    top$mem_port$tags$row$0 line$12(
         .d(line$12$d),
         .q(line$12$q),
         .clock(line$12$clock)
     );
-    top$tags$0 line$13(
+    top$mem_port$tags$row$0 line$13(
         .d(line$13$d),
         .q(line$13$q),
         .clock(line$13$clock)
     );
-    top$tags$0 line$14(
+    top$mem_port$tags$row$0 line$14(
         .d(line$14$d),
         .q(line$14$q),
         .clock(line$14$clock)
     );
-    top$tags$0 line$15(
+    top$mem_port$tags$row$0 line$15(
         .d(line$15$d),
         .q(line$15$q),
         .clock(line$15$clock)
     );
-    top$tags$0 line$16(
+    top$mem_port$tags$row$0 line$16(
         .d(line$16$d),
         .q(line$16$q),
         .clock(line$16$clock)
     );
-    top$tags$0 line$17(
+    top$mem_port$tags$row$0 line$17(
         .d(line$17$d),
         .q(line$17$q),
         .clock(line$17$clock)
     );
-    top$tags$0 line$18(
+    top$mem_port$tags$row$0 line$18(
         .d(line$18$d),
         .q(line$18$q),
         .clock(line$18$clock)
     );
-    top$tags$0 line$19(
+    top$mem_port$tags$row$0 line$19(
         .d(line$19$d),
         .q(line$19$q),
         .clock(line$19$clock)
     );
-    top$tags$0 line$20(
+    top$mem_port$tags$row$0 line$20(
         .d(line$20$d),
         .q(line$20$q),
         .clock(line$20$clock)
     );
-    top$tags$0 line$21(
+    top$mem_port$tags$row$0 line$21(
         .d(line$21$d),
         .q(line$21$q),
         .clock(line$21$clock)
     );
-    top$tags$0 line$22(
+    top$mem_port$tags$row$0 line$22(
         .d(line$22$d),
         .q(line$22$q),
         .clock(line$22$clock)
     );
-    top$tags$0 line$23(
+    top$mem_port$tags$row$0 line$23(
         .d(line$23$d),
         .q(line$23$q),
         .clock(line$23$clock)
     );
-    top$tags$0 line$24(
+    top$mem_port$tags$row$0 line$24(
         .d(line$24$d),
         .q(line$24$q),
         .clock(line$24$clock)
     );
-    top$tags$0 line$25(
+    top$mem_port$tags$row$0 line$25(
         .d(line$25$d),
         .q(line$25$q),
         .clock(line$25$clock)
     );
-    top$tags$0 line$26(
+    top$mem_port$tags$row$0 line$26(
         .d(line$26$d),
         .q(line$26$q),
         .clock(line$26$clock)
     );
-    top$tags$0 line$27(
+    top$mem_port$tags$row$0 line$27(
         .d(line$27$d),
         .q(line$27$q),
         .clock(line$27$clock)
     );
-    top$tags$0 line$28(
+    top$mem_port$tags$row$0 line$28(
         .d(line$28$d),
         .q(line$28$q),
         .clock(line$28$clock)
     );
-    top$tags$0 line$29(
+    top$mem_port$tags$row$0 line$29(
         .d(line$29$d),
         .q(line$29$q),
         .clock(line$29$clock)
     );
-    top$tags$0 line$30(
+    top$mem_port$tags$row$0 line$30(
         .d(line$30$d),
         .q(line$30$q),
         .clock(line$30$clock)
     );
-    top$tags$0 line$31(
+    top$mem_port$tags$row$0 line$31(
         .d(line$31$d),
         .q(line$31$q),
         .clock(line$31$clock)
     );
-    top$tags$0 line$32(
+    top$mem_port$tags$row$0 line$32(
         .d(line$32$d),
         .q(line$32$q),
         .clock(line$32$clock)
     );
-    top$tags$0 line$33(
+    top$mem_port$tags$row$0 line$33(
         .d(line$33$d),
         .q(line$33$q),
         .clock(line$33$clock)
     );
-    top$tags$0 line$34(
+    top$mem_port$tags$row$0 line$34(
         .d(line$34$d),
         .q(line$34$q),
         .clock(line$34$clock)
     );
-    top$tags$0 line$35(
+    top$mem_port$tags$row$0 line$35(
         .d(line$35$d),
         .q(line$35$q),
         .clock(line$35$clock)
     );
-    top$tags$0 line$36(
+    top$mem_port$tags$row$0 line$36(
         .d(line$36$d),
         .q(line$36$q),
         .clock(line$36$clock)
     );
-    top$tags$0 line$37(
+    top$mem_port$tags$row$0 line$37(
         .d(line$37$d),
         .q(line$37$q),
         .clock(line$37$clock)
     );
-    top$tags$0 line$38(
+    top$mem_port$tags$row$0 line$38(
         .d(line$38$d),
         .q(line$38$q),
         .clock(line$38$clock)
     );
-    top$tags$0 line$39(
+    top$mem_port$tags$row$0 line$39(
         .d(line$39$d),
         .q(line$39$q),
         .clock(line$39$clock)
     );
-    top$tags$0 line$40(
+    top$mem_port$tags$row$0 line$40(
         .d(line$40$d),
         .q(line$40$q),
         .clock(line$40$clock)
     );
-    top$tags$0 line$41(
+    top$mem_port$tags$row$0 line$41(
         .d(line$41$d),
         .q(line$41$q),
         .clock(line$41$clock)
     );
-    top$tags$0 line$42(
+    top$mem_port$tags$row$0 line$42(
         .d(line$42$d),
         .q(line$42$q),
         .clock(line$42$clock)
     );
-    top$tags$0 line$43(
+    top$mem_port$tags$row$0 line$43(
         .d(line$43$d),
         .q(line$43$q),
         .clock(line$43$clock)
     );
-    top$tags$0 line$44(
+    top$mem_port$tags$row$0 line$44(
         .d(line$44$d),
         .q(line$44$q),
         .clock(line$44$clock)
     );
-    top$tags$0 line$45(
+    top$mem_port$tags$row$0 line$45(
         .d(line$45$d),
         .q(line$45$q),
         .clock(line$45$clock)
     );
-    top$tags$0 line$46(
+    top$mem_port$tags$row$0 line$46(
         .d(line$46$d),
         .q(line$46$q),
         .clock(line$46$clock)
     );
-    top$tags$0 line$47(
+    top$mem_port$tags$row$0 line$47(
         .d(line$47$d),
         .q(line$47$q),
         .clock(line$47$clock)
     );
-    top$tags$0 line$48(
+    top$mem_port$tags$row$0 line$48(
         .d(line$48$d),
         .q(line$48$q),
         .clock(line$48$clock)
     );
-    top$tags$0 line$49(
+    top$mem_port$tags$row$0 line$49(
         .d(line$49$d),
         .q(line$49$q),
         .clock(line$49$clock)
     );
-    top$tags$0 line$50(
+    top$mem_port$tags$row$0 line$50(
         .d(line$50$d),
         .q(line$50$q),
         .clock(line$50$clock)
     );
-    top$tags$0 line$51(
+    top$mem_port$tags$row$0 line$51(
         .d(line$51$d),
         .q(line$51$q),
         .clock(line$51$clock)
@@ -9564,12 +9937,12 @@ module top$tri_unit$fifo$read_logic(clock,read,data_out,empty,almost_empty,under
     reg  is_full;
     
     // Sub module instances
-    top$tri_open read_address(
+    top$result$open_r read_address(
         .d(read_address$d),
         .q(read_address$q),
         .clock(read_address$clock)
     );
-    top$done_r dff_underflow(
+    top$d_cntr$ent_second dff_underflow(
         .d(dff_underflow$d),
         .q(dff_underflow$q),
         .clock(dff_underflow$clock)
@@ -9645,17 +10018,17 @@ module top$tri_unit$fifo$write_logic(write,data_in,full,almost_full,overflow,clo
     reg  is_full;
     
     // Sub module instances
-    top$tri_open write_address(
+    top$result$open_r write_address(
         .d(write_address$d),
         .q(write_address$q),
         .clock(write_address$clock)
     );
-    top$tri_open dff_write_address_delay(
+    top$result$open_r dff_write_address_delay(
         .d(dff_write_address_delay$d),
         .q(dff_write_address_delay$q),
         .clock(dff_write_address_delay$clock)
     );
-    top$done_r dff_overflow(
+    top$d_cntr$ent_second dff_overflow(
         .d(dff_overflow$d),
         .q(dff_overflow$q),
         .clock(dff_overflow$clock)
@@ -11014,7 +11387,7 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
         .q(in_v_z$2$q),
         .clock(in_v_z$2$clock)
     );
-    top$done_r in_v_exact(
+    top$d_cntr$ent_second in_v_exact(
         .d(in_v_exact$d),
         .q(in_v_exact$q),
         .clock(in_v_exact$clock)
@@ -11024,7 +11397,7 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
         .q(in_tag$q),
         .clock(in_tag$clock)
     );
-    top$done_r in_valid(
+    top$d_cntr$ent_second in_valid(
         .d(in_valid$d),
         .q(in_valid$q),
         .clock(in_valid$clock)
@@ -12154,32 +12527,32 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
         .d(valid_wait$d),
         .q(valid_wait$q)
     );
-    top$done_r v_cross_t$0(
+    top$d_cntr$ent_second v_cross_t$0(
         .d(v_cross_t$0$d),
         .q(v_cross_t$0$q),
         .clock(v_cross_t$0$clock)
     );
-    top$done_r v_cross_t$1(
+    top$d_cntr$ent_second v_cross_t$1(
         .d(v_cross_t$1$d),
         .q(v_cross_t$1$q),
         .clock(v_cross_t$1$clock)
     );
-    top$done_r v_cross_t$2(
+    top$d_cntr$ent_second v_cross_t$2(
         .d(v_cross_t$2$d),
         .q(v_cross_t$2$q),
         .clock(v_cross_t$2$clock)
     );
-    top$done_r v_cross_f$0(
+    top$d_cntr$ent_second v_cross_f$0(
         .d(v_cross_f$0$d),
         .q(v_cross_f$0$q),
         .clock(v_cross_f$0$clock)
     );
-    top$done_r v_cross_f$1(
+    top$d_cntr$ent_second v_cross_f$1(
         .d(v_cross_f$1$d),
         .q(v_cross_f$1$q),
         .clock(v_cross_f$1$clock)
     );
-    top$done_r v_cross_f$2(
+    top$d_cntr$ent_second v_cross_f$2(
         .d(v_cross_f$2$d),
         .q(v_cross_f$2$q),
         .clock(v_cross_f$2$clock)
@@ -12244,42 +12617,42 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
         .q(out_s_b$2$q),
         .clock(out_s_b$2$clock)
     );
-    top$done_r out_cross_t$0(
+    top$d_cntr$ent_second out_cross_t$0(
         .d(out_cross_t$0$d),
         .q(out_cross_t$0$q),
         .clock(out_cross_t$0$clock)
     );
-    top$done_r out_cross_t$1(
+    top$d_cntr$ent_second out_cross_t$1(
         .d(out_cross_t$1$d),
         .q(out_cross_t$1$q),
         .clock(out_cross_t$1$clock)
     );
-    top$done_r out_cross_t$2(
+    top$d_cntr$ent_second out_cross_t$2(
         .d(out_cross_t$2$d),
         .q(out_cross_t$2$q),
         .clock(out_cross_t$2$clock)
     );
-    top$done_r out_cross_f$0(
+    top$d_cntr$ent_second out_cross_f$0(
         .d(out_cross_f$0$d),
         .q(out_cross_f$0$q),
         .clock(out_cross_f$0$clock)
     );
-    top$done_r out_cross_f$1(
+    top$d_cntr$ent_second out_cross_f$1(
         .d(out_cross_f$1$d),
         .q(out_cross_f$1$q),
         .clock(out_cross_f$1$clock)
     );
-    top$done_r out_cross_f$2(
+    top$d_cntr$ent_second out_cross_f$2(
         .d(out_cross_f$2$d),
         .q(out_cross_f$2$q),
         .clock(out_cross_f$2$clock)
     );
-    top$done_r out_hit(
+    top$d_cntr$ent_second out_hit(
         .d(out_hit$d),
         .q(out_hit$q),
         .clock(out_hit$clock)
     );
-    top$done_r out_miss(
+    top$d_cntr$ent_second out_miss(
         .d(out_miss$d),
         .q(out_miss$q),
         .clock(out_miss$clock)
@@ -12289,7 +12662,7 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
         .q(out_tag$q),
         .clock(out_tag$clock)
     );
-    top$done_r out_valid(
+    top$d_cntr$ent_second out_valid(
         .d(out_valid$d),
         .q(out_valid$q),
         .clock(out_valid$clock)
@@ -14008,32 +14381,32 @@ module top$tri_unit$tc_ab$edges$0(clock,p0,p1,p2,q0,q1,q2,pe,qe,pg,qg,pf0,pf1,pf
         .d(b_sgn_wait$d),
         .q(b_sgn_wait$q)
     );
-    top$tags$0 r_pz(
+    top$mem_port$tags$row$0 r_pz(
         .d(r_pz$d),
         .q(r_pz$q),
         .clock(r_pz$clock)
     );
-    top$tags$0 r_qz(
+    top$mem_port$tags$row$0 r_qz(
         .d(r_qz$d),
         .q(r_qz$q),
         .clock(r_qz$clock)
     );
-    top$tags$0 r_rz(
+    top$mem_port$tags$row$0 r_rz(
         .d(r_rz$d),
         .q(r_rz$q),
         .clock(r_rz$clock)
     );
-    top$tags$0 r_a(
+    top$mem_port$tags$row$0 r_a(
         .d(r_a$d),
         .q(r_a$q),
         .clock(r_a$clock)
     );
-    top$tags$0 r_b(
+    top$mem_port$tags$row$0 r_b(
         .d(r_b$d),
         .q(r_b$q),
         .clock(r_b$clock)
     );
-    top$tags$0 r_s(
+    top$mem_port$tags$row$0 r_s(
         .d(r_s$d),
         .q(r_s$q),
         .clock(r_s$clock)
@@ -14444,37 +14817,37 @@ module top$tri_unit$tc_ab$edges$0$a(clock,a,b,sub,valid_in,y,valid_out);
         .is_inf(unpack_b$is_inf),
         .is_nan(unpack_b$is_nan)
     );
-    top$done_r s1_valid(
+    top$d_cntr$ent_second s1_valid(
         .d(s1_valid$d),
         .q(s1_valid$q),
         .clock(s1_valid$clock)
     );
-    top$done_r s1_nan(
+    top$d_cntr$ent_second s1_nan(
         .d(s1_nan$d),
         .q(s1_nan$q),
         .clock(s1_nan$clock)
     );
-    top$done_r s1_inf(
+    top$d_cntr$ent_second s1_inf(
         .d(s1_inf$d),
         .q(s1_inf$q),
         .clock(s1_inf$clock)
     );
-    top$done_r s1_inf_sign(
+    top$d_cntr$ent_second s1_inf_sign(
         .d(s1_inf_sign$d),
         .q(s1_inf_sign$q),
         .clock(s1_inf_sign$clock)
     );
-    top$done_r s1_zero_sign(
+    top$d_cntr$ent_second s1_zero_sign(
         .d(s1_zero_sign$d),
         .q(s1_zero_sign$q),
         .clock(s1_zero_sign$clock)
     );
-    top$done_r s1_sign(
+    top$d_cntr$ent_second s1_sign(
         .d(s1_sign$d),
         .q(s1_sign$q),
         .clock(s1_sign$clock)
     );
-    top$done_r s1_eff_sub(
+    top$d_cntr$ent_second s1_eff_sub(
         .d(s1_eff_sub$d),
         .q(s1_eff_sub$q),
         .clock(s1_eff_sub$clock)
@@ -14499,32 +14872,32 @@ module top$tri_unit$tc_ab$edges$0$a(clock,a,b,sub,valid_in,y,valid_out);
         .y(norm$y),
         .lz(norm$lz)
     );
-    top$done_r s2_valid(
+    top$d_cntr$ent_second s2_valid(
         .d(s2_valid$d),
         .q(s2_valid$q),
         .clock(s2_valid$clock)
     );
-    top$done_r s2_sign(
+    top$d_cntr$ent_second s2_sign(
         .d(s2_sign$d),
         .q(s2_sign$q),
         .clock(s2_sign$clock)
     );
-    top$done_r s2_nan(
+    top$d_cntr$ent_second s2_nan(
         .d(s2_nan$d),
         .q(s2_nan$q),
         .clock(s2_nan$clock)
     );
-    top$done_r s2_inf(
+    top$d_cntr$ent_second s2_inf(
         .d(s2_inf$d),
         .q(s2_inf$q),
         .clock(s2_inf$clock)
     );
-    top$done_r s2_zero(
+    top$d_cntr$ent_second s2_zero(
         .d(s2_zero$d),
         .q(s2_zero$q),
         .clock(s2_zero$clock)
     );
-    top$done_r s2_ovf(
+    top$d_cntr$ent_second s2_ovf(
         .d(s2_ovf$d),
         .q(s2_ovf$q),
         .clock(s2_ovf$clock)
@@ -14550,7 +14923,7 @@ module top$tri_unit$tc_ab$edges$0$a(clock,a,b,sub,valid_in,y,valid_out);
         .nm(round$nm),
         .y(round$y)
     );
-    top$done_r s3_valid(
+    top$d_cntr$ent_second s3_valid(
         .d(s3_valid$d),
         .q(s3_valid$q),
         .clock(s3_valid$clock)
@@ -14727,32 +15100,32 @@ module top$tri_unit$tc_ab$edges$0$a_sgn_wait(clock,d,q);
     reg  line$5$clock;
     
     // Sub module instances
-    top$tags$0 line$0(
+    top$mem_port$tags$row$0 line$0(
         .d(line$0$d),
         .q(line$0$q),
         .clock(line$0$clock)
     );
-    top$tags$0 line$1(
+    top$mem_port$tags$row$0 line$1(
         .d(line$1$d),
         .q(line$1$q),
         .clock(line$1$clock)
     );
-    top$tags$0 line$2(
+    top$mem_port$tags$row$0 line$2(
         .d(line$2$d),
         .q(line$2$q),
         .clock(line$2$clock)
     );
-    top$tags$0 line$3(
+    top$mem_port$tags$row$0 line$3(
         .d(line$3$d),
         .q(line$3$q),
         .clock(line$3$clock)
     );
-    top$tags$0 line$4(
+    top$mem_port$tags$row$0 line$4(
         .d(line$4$d),
         .q(line$4$q),
         .clock(line$4$clock)
     );
-    top$tags$0 line$5(
+    top$mem_port$tags$row$0 line$5(
         .d(line$5$d),
         .q(line$5$q),
         .clock(line$5$clock)
@@ -15262,42 +15635,42 @@ module top$tri_unit$tc_ab$edges$0$px_qz(clock,a,b,valid_in,y,valid_out);
         .y(norm_b$y),
         .lz(norm_b$lz)
     );
-    top$done_r s1_valid(
+    top$d_cntr$ent_second s1_valid(
         .d(s1_valid$d),
         .q(s1_valid$q),
         .clock(s1_valid$clock)
     );
-    top$done_r s1_sign(
+    top$d_cntr$ent_second s1_sign(
         .d(s1_sign$d),
         .q(s1_sign$q),
         .clock(s1_sign$clock)
     );
-    top$done_r s1_nan(
+    top$d_cntr$ent_second s1_nan(
         .d(s1_nan$d),
         .q(s1_nan$q),
         .clock(s1_nan$clock)
     );
-    top$done_r s1_inf(
+    top$d_cntr$ent_second s1_inf(
         .d(s1_inf$d),
         .q(s1_inf$q),
         .clock(s1_inf$clock)
     );
-    top$done_r s1_zero(
+    top$d_cntr$ent_second s1_zero(
         .d(s1_zero$d),
         .q(s1_zero$q),
         .clock(s1_zero$clock)
     );
-    top$dop$doptrf$0$mul_0$s1_exp s1_exp(
+    top$d_cntr$queue$rd_ptr s1_exp(
         .d(s1_exp$d),
         .q(s1_exp$q),
         .clock(s1_exp$clock)
     );
-    top$dop$doptrf$0$mul_0$s1_sig_a s1_sig_a(
+    top$d_cntr$last_a s1_sig_a(
         .d(s1_sig_a$d),
         .q(s1_sig_a$q),
         .clock(s1_sig_a$clock)
     );
-    top$dop$doptrf$0$mul_0$s1_sig_a s1_sig_b(
+    top$d_cntr$last_a s1_sig_b(
         .d(s1_sig_b$d),
         .q(s1_sig_b$q),
         .clock(s1_sig_b$clock)
@@ -15308,32 +15681,32 @@ module top$tri_unit$tc_ab$edges$0$px_qz(clock,a,b,valid_in,y,valid_out);
         .hi(sig_mul$hi),
         .sticky(sig_mul$sticky)
     );
-    top$done_r s2_valid(
+    top$d_cntr$ent_second s2_valid(
         .d(s2_valid$d),
         .q(s2_valid$q),
         .clock(s2_valid$clock)
     );
-    top$done_r s2_sign(
+    top$d_cntr$ent_second s2_sign(
         .d(s2_sign$d),
         .q(s2_sign$q),
         .clock(s2_sign$clock)
     );
-    top$done_r s2_nan(
+    top$d_cntr$ent_second s2_nan(
         .d(s2_nan$d),
         .q(s2_nan$q),
         .clock(s2_nan$clock)
     );
-    top$done_r s2_inf(
+    top$d_cntr$ent_second s2_inf(
         .d(s2_inf$d),
         .q(s2_inf$q),
         .clock(s2_inf$clock)
     );
-    top$done_r s2_zero(
+    top$d_cntr$ent_second s2_zero(
         .d(s2_zero$d),
         .q(s2_zero$q),
         .clock(s2_zero$clock)
     );
-    top$dop$doptrf$0$mul_0$s1_exp s2_exp(
+    top$d_cntr$queue$rd_ptr s2_exp(
         .d(s2_exp$d),
         .q(s2_exp$q),
         .clock(s2_exp$clock)
@@ -15343,37 +15716,37 @@ module top$tri_unit$tc_ab$edges$0$px_qz(clock,a,b,valid_in,y,valid_out);
         .q(s2_hi$q),
         .clock(s2_hi$clock)
     );
-    top$done_r s2_sticky(
+    top$d_cntr$ent_second s2_sticky(
         .d(s2_sticky$d),
         .q(s2_sticky$q),
         .clock(s2_sticky$clock)
     );
-    top$done_r s3_valid(
+    top$d_cntr$ent_second s3_valid(
         .d(s3_valid$d),
         .q(s3_valid$q),
         .clock(s3_valid$clock)
     );
-    top$done_r s3_sign(
+    top$d_cntr$ent_second s3_sign(
         .d(s3_sign$d),
         .q(s3_sign$q),
         .clock(s3_sign$clock)
     );
-    top$done_r s3_nan(
+    top$d_cntr$ent_second s3_nan(
         .d(s3_nan$d),
         .q(s3_nan$q),
         .clock(s3_nan$clock)
     );
-    top$done_r s3_inf(
+    top$d_cntr$ent_second s3_inf(
         .d(s3_inf$d),
         .q(s3_inf$q),
         .clock(s3_inf$clock)
     );
-    top$done_r s3_zero(
+    top$d_cntr$ent_second s3_zero(
         .d(s3_zero$d),
         .q(s3_zero$q),
         .clock(s3_zero$clock)
     );
-    top$done_r s3_ovf(
+    top$d_cntr$ent_second s3_ovf(
         .d(s3_ovf$d),
         .q(s3_ovf$q),
         .clock(s3_ovf$clock)
@@ -15399,7 +15772,7 @@ module top$tri_unit$tc_ab$edges$0$px_qz(clock,a,b,valid_in,y,valid_out);
         .nm(round$nm),
         .y(round$y)
     );
-    top$done_r s4_valid(
+    top$d_cntr$ent_second s4_valid(
         .d(s4_valid$d),
         .q(s4_valid$q),
         .clock(s4_valid$clock)
@@ -15609,112 +15982,112 @@ module top$tri_unit$tc_ab$edges$0$pz_sgn_wait(clock,d,q);
     reg  line$21$clock;
     
     // Sub module instances
-    top$tags$0 line$0(
+    top$mem_port$tags$row$0 line$0(
         .d(line$0$d),
         .q(line$0$q),
         .clock(line$0$clock)
     );
-    top$tags$0 line$1(
+    top$mem_port$tags$row$0 line$1(
         .d(line$1$d),
         .q(line$1$q),
         .clock(line$1$clock)
     );
-    top$tags$0 line$2(
+    top$mem_port$tags$row$0 line$2(
         .d(line$2$d),
         .q(line$2$q),
         .clock(line$2$clock)
     );
-    top$tags$0 line$3(
+    top$mem_port$tags$row$0 line$3(
         .d(line$3$d),
         .q(line$3$q),
         .clock(line$3$clock)
     );
-    top$tags$0 line$4(
+    top$mem_port$tags$row$0 line$4(
         .d(line$4$d),
         .q(line$4$q),
         .clock(line$4$clock)
     );
-    top$tags$0 line$5(
+    top$mem_port$tags$row$0 line$5(
         .d(line$5$d),
         .q(line$5$q),
         .clock(line$5$clock)
     );
-    top$tags$0 line$6(
+    top$mem_port$tags$row$0 line$6(
         .d(line$6$d),
         .q(line$6$q),
         .clock(line$6$clock)
     );
-    top$tags$0 line$7(
+    top$mem_port$tags$row$0 line$7(
         .d(line$7$d),
         .q(line$7$q),
         .clock(line$7$clock)
     );
-    top$tags$0 line$8(
+    top$mem_port$tags$row$0 line$8(
         .d(line$8$d),
         .q(line$8$q),
         .clock(line$8$clock)
     );
-    top$tags$0 line$9(
+    top$mem_port$tags$row$0 line$9(
         .d(line$9$d),
         .q(line$9$q),
         .clock(line$9$clock)
     );
-    top$tags$0 line$10(
+    top$mem_port$tags$row$0 line$10(
         .d(line$10$d),
         .q(line$10$q),
         .clock(line$10$clock)
     );
-    top$tags$0 line$11(
+    top$mem_port$tags$row$0 line$11(
         .d(line$11$d),
         .q(line$11$q),
         .clock(line$11$clock)
     );
-    top$tags$0 line$12(
+    top$mem_port$tags$row$0 line$12(
         .d(line$12$d),
         .q(line$12$q),
         .clock(line$12$clock)
     );
-    top$tags$0 line$13(
+    top$mem_port$tags$row$0 line$13(
         .d(line$13$d),
         .q(line$13$q),
         .clock(line$13$clock)
     );
-    top$tags$0 line$14(
+    top$mem_port$tags$row$0 line$14(
         .d(line$14$d),
         .q(line$14$q),
         .clock(line$14$clock)
     );
-    top$tags$0 line$15(
+    top$mem_port$tags$row$0 line$15(
         .d(line$15$d),
         .q(line$15$q),
         .clock(line$15$clock)
     );
-    top$tags$0 line$16(
+    top$mem_port$tags$row$0 line$16(
         .d(line$16$d),
         .q(line$16$q),
         .clock(line$16$clock)
     );
-    top$tags$0 line$17(
+    top$mem_port$tags$row$0 line$17(
         .d(line$17$d),
         .q(line$17$q),
         .clock(line$17$clock)
     );
-    top$tags$0 line$18(
+    top$mem_port$tags$row$0 line$18(
         .d(line$18$d),
         .q(line$18$q),
         .clock(line$18$clock)
     );
-    top$tags$0 line$19(
+    top$mem_port$tags$row$0 line$19(
         .d(line$19$d),
         .q(line$19$q),
         .clock(line$19$clock)
     );
-    top$tags$0 line$20(
+    top$mem_port$tags$row$0 line$20(
         .d(line$20$d),
         .q(line$20$q),
         .clock(line$20$clock)
     );
-    top$tags$0 line$21(
+    top$mem_port$tags$row$0 line$21(
         .d(line$21$d),
         .q(line$21$q),
         .clock(line$21$clock)
@@ -15959,82 +16332,82 @@ module top$tri_unit$tc_ab$edges$0$rz_sgn_wait(clock,d,q);
     reg  line$15$clock;
     
     // Sub module instances
-    top$tags$0 line$0(
+    top$mem_port$tags$row$0 line$0(
         .d(line$0$d),
         .q(line$0$q),
         .clock(line$0$clock)
     );
-    top$tags$0 line$1(
+    top$mem_port$tags$row$0 line$1(
         .d(line$1$d),
         .q(line$1$q),
         .clock(line$1$clock)
     );
-    top$tags$0 line$2(
+    top$mem_port$tags$row$0 line$2(
         .d(line$2$d),
         .q(line$2$q),
         .clock(line$2$clock)
     );
-    top$tags$0 line$3(
+    top$mem_port$tags$row$0 line$3(
         .d(line$3$d),
         .q(line$3$q),
         .clock(line$3$clock)
     );
-    top$tags$0 line$4(
+    top$mem_port$tags$row$0 line$4(
         .d(line$4$d),
         .q(line$4$q),
         .clock(line$4$clock)
     );
-    top$tags$0 line$5(
+    top$mem_port$tags$row$0 line$5(
         .d(line$5$d),
         .q(line$5$q),
         .clock(line$5$clock)
     );
-    top$tags$0 line$6(
+    top$mem_port$tags$row$0 line$6(
         .d(line$6$d),
         .q(line$6$q),
         .clock(line$6$clock)
     );
-    top$tags$0 line$7(
+    top$mem_port$tags$row$0 line$7(
         .d(line$7$d),
         .q(line$7$q),
         .clock(line$7$clock)
     );
-    top$tags$0 line$8(
+    top$mem_port$tags$row$0 line$8(
         .d(line$8$d),
         .q(line$8$q),
         .clock(line$8$clock)
     );
-    top$tags$0 line$9(
+    top$mem_port$tags$row$0 line$9(
         .d(line$9$d),
         .q(line$9$q),
         .clock(line$9$clock)
     );
-    top$tags$0 line$10(
+    top$mem_port$tags$row$0 line$10(
         .d(line$10$d),
         .q(line$10$q),
         .clock(line$10$clock)
     );
-    top$tags$0 line$11(
+    top$mem_port$tags$row$0 line$11(
         .d(line$11$d),
         .q(line$11$q),
         .clock(line$11$clock)
     );
-    top$tags$0 line$12(
+    top$mem_port$tags$row$0 line$12(
         .d(line$12$d),
         .q(line$12$q),
         .clock(line$12$clock)
     );
-    top$tags$0 line$13(
+    top$mem_port$tags$row$0 line$13(
         .d(line$13$d),
         .q(line$13$q),
         .clock(line$13$clock)
     );
-    top$tags$0 line$14(
+    top$mem_port$tags$row$0 line$14(
         .d(line$14$d),
         .q(line$14$q),
         .clock(line$14$clock)
     );
-    top$tags$0 line$15(
+    top$mem_port$tags$row$0 line$15(
         .d(line$15$d),
         .q(line$15$q),
         .clock(line$15$clock)
@@ -16202,112 +16575,112 @@ module top$tri_unit$tc_ab$exact_wait(clock,d,q);
     reg  line$21$clock;
     
     // Sub module instances
-    top$done_r line$0(
+    top$d_cntr$ent_second line$0(
         .d(line$0$d),
         .q(line$0$q),
         .clock(line$0$clock)
     );
-    top$done_r line$1(
+    top$d_cntr$ent_second line$1(
         .d(line$1$d),
         .q(line$1$q),
         .clock(line$1$clock)
     );
-    top$done_r line$2(
+    top$d_cntr$ent_second line$2(
         .d(line$2$d),
         .q(line$2$q),
         .clock(line$2$clock)
     );
-    top$done_r line$3(
+    top$d_cntr$ent_second line$3(
         .d(line$3$d),
         .q(line$3$q),
         .clock(line$3$clock)
     );
-    top$done_r line$4(
+    top$d_cntr$ent_second line$4(
         .d(line$4$d),
         .q(line$4$q),
         .clock(line$4$clock)
     );
-    top$done_r line$5(
+    top$d_cntr$ent_second line$5(
         .d(line$5$d),
         .q(line$5$q),
         .clock(line$5$clock)
     );
-    top$done_r line$6(
+    top$d_cntr$ent_second line$6(
         .d(line$6$d),
         .q(line$6$q),
         .clock(line$6$clock)
     );
-    top$done_r line$7(
+    top$d_cntr$ent_second line$7(
         .d(line$7$d),
         .q(line$7$q),
         .clock(line$7$clock)
     );
-    top$done_r line$8(
+    top$d_cntr$ent_second line$8(
         .d(line$8$d),
         .q(line$8$q),
         .clock(line$8$clock)
     );
-    top$done_r line$9(
+    top$d_cntr$ent_second line$9(
         .d(line$9$d),
         .q(line$9$q),
         .clock(line$9$clock)
     );
-    top$done_r line$10(
+    top$d_cntr$ent_second line$10(
         .d(line$10$d),
         .q(line$10$q),
         .clock(line$10$clock)
     );
-    top$done_r line$11(
+    top$d_cntr$ent_second line$11(
         .d(line$11$d),
         .q(line$11$q),
         .clock(line$11$clock)
     );
-    top$done_r line$12(
+    top$d_cntr$ent_second line$12(
         .d(line$12$d),
         .q(line$12$q),
         .clock(line$12$clock)
     );
-    top$done_r line$13(
+    top$d_cntr$ent_second line$13(
         .d(line$13$d),
         .q(line$13$q),
         .clock(line$13$clock)
     );
-    top$done_r line$14(
+    top$d_cntr$ent_second line$14(
         .d(line$14$d),
         .q(line$14$q),
         .clock(line$14$clock)
     );
-    top$done_r line$15(
+    top$d_cntr$ent_second line$15(
         .d(line$15$d),
         .q(line$15$q),
         .clock(line$15$clock)
     );
-    top$done_r line$16(
+    top$d_cntr$ent_second line$16(
         .d(line$16$d),
         .q(line$16$q),
         .clock(line$16$clock)
     );
-    top$done_r line$17(
+    top$d_cntr$ent_second line$17(
         .d(line$17$d),
         .q(line$17$q),
         .clock(line$17$clock)
     );
-    top$done_r line$18(
+    top$d_cntr$ent_second line$18(
         .d(line$18$d),
         .q(line$18$q),
         .clock(line$18$clock)
     );
-    top$done_r line$19(
+    top$d_cntr$ent_second line$19(
         .d(line$19$d),
         .q(line$19$q),
         .clock(line$19$clock)
     );
-    top$done_r line$20(
+    top$d_cntr$ent_second line$20(
         .d(line$20$d),
         .q(line$20$q),
         .clock(line$20$clock)
     );
-    top$done_r line$21(
+    top$d_cntr$ent_second line$21(
         .d(line$21$d),
         .q(line$21$q),
         .clock(line$21$clock)
@@ -17929,252 +18302,252 @@ module top$tri_unit$tc_ab$valid_wait(clock,d,q);
     reg  line$49$clock;
     
     // Sub module instances
-    top$done_r line$0(
+    top$d_cntr$ent_second line$0(
         .d(line$0$d),
         .q(line$0$q),
         .clock(line$0$clock)
     );
-    top$done_r line$1(
+    top$d_cntr$ent_second line$1(
         .d(line$1$d),
         .q(line$1$q),
         .clock(line$1$clock)
     );
-    top$done_r line$2(
+    top$d_cntr$ent_second line$2(
         .d(line$2$d),
         .q(line$2$q),
         .clock(line$2$clock)
     );
-    top$done_r line$3(
+    top$d_cntr$ent_second line$3(
         .d(line$3$d),
         .q(line$3$q),
         .clock(line$3$clock)
     );
-    top$done_r line$4(
+    top$d_cntr$ent_second line$4(
         .d(line$4$d),
         .q(line$4$q),
         .clock(line$4$clock)
     );
-    top$done_r line$5(
+    top$d_cntr$ent_second line$5(
         .d(line$5$d),
         .q(line$5$q),
         .clock(line$5$clock)
     );
-    top$done_r line$6(
+    top$d_cntr$ent_second line$6(
         .d(line$6$d),
         .q(line$6$q),
         .clock(line$6$clock)
     );
-    top$done_r line$7(
+    top$d_cntr$ent_second line$7(
         .d(line$7$d),
         .q(line$7$q),
         .clock(line$7$clock)
     );
-    top$done_r line$8(
+    top$d_cntr$ent_second line$8(
         .d(line$8$d),
         .q(line$8$q),
         .clock(line$8$clock)
     );
-    top$done_r line$9(
+    top$d_cntr$ent_second line$9(
         .d(line$9$d),
         .q(line$9$q),
         .clock(line$9$clock)
     );
-    top$done_r line$10(
+    top$d_cntr$ent_second line$10(
         .d(line$10$d),
         .q(line$10$q),
         .clock(line$10$clock)
     );
-    top$done_r line$11(
+    top$d_cntr$ent_second line$11(
         .d(line$11$d),
         .q(line$11$q),
         .clock(line$11$clock)
     );
-    top$done_r line$12(
+    top$d_cntr$ent_second line$12(
         .d(line$12$d),
         .q(line$12$q),
         .clock(line$12$clock)
     );
-    top$done_r line$13(
+    top$d_cntr$ent_second line$13(
         .d(line$13$d),
         .q(line$13$q),
         .clock(line$13$clock)
     );
-    top$done_r line$14(
+    top$d_cntr$ent_second line$14(
         .d(line$14$d),
         .q(line$14$q),
         .clock(line$14$clock)
     );
-    top$done_r line$15(
+    top$d_cntr$ent_second line$15(
         .d(line$15$d),
         .q(line$15$q),
         .clock(line$15$clock)
     );
-    top$done_r line$16(
+    top$d_cntr$ent_second line$16(
         .d(line$16$d),
         .q(line$16$q),
         .clock(line$16$clock)
     );
-    top$done_r line$17(
+    top$d_cntr$ent_second line$17(
         .d(line$17$d),
         .q(line$17$q),
         .clock(line$17$clock)
     );
-    top$done_r line$18(
+    top$d_cntr$ent_second line$18(
         .d(line$18$d),
         .q(line$18$q),
         .clock(line$18$clock)
     );
-    top$done_r line$19(
+    top$d_cntr$ent_second line$19(
         .d(line$19$d),
         .q(line$19$q),
         .clock(line$19$clock)
     );
-    top$done_r line$20(
+    top$d_cntr$ent_second line$20(
         .d(line$20$d),
         .q(line$20$q),
         .clock(line$20$clock)
     );
-    top$done_r line$21(
+    top$d_cntr$ent_second line$21(
         .d(line$21$d),
         .q(line$21$q),
         .clock(line$21$clock)
     );
-    top$done_r line$22(
+    top$d_cntr$ent_second line$22(
         .d(line$22$d),
         .q(line$22$q),
         .clock(line$22$clock)
     );
-    top$done_r line$23(
+    top$d_cntr$ent_second line$23(
         .d(line$23$d),
         .q(line$23$q),
         .clock(line$23$clock)
     );
-    top$done_r line$24(
+    top$d_cntr$ent_second line$24(
         .d(line$24$d),
         .q(line$24$q),
         .clock(line$24$clock)
     );
-    top$done_r line$25(
+    top$d_cntr$ent_second line$25(
         .d(line$25$d),
         .q(line$25$q),
         .clock(line$25$clock)
     );
-    top$done_r line$26(
+    top$d_cntr$ent_second line$26(
         .d(line$26$d),
         .q(line$26$q),
         .clock(line$26$clock)
     );
-    top$done_r line$27(
+    top$d_cntr$ent_second line$27(
         .d(line$27$d),
         .q(line$27$q),
         .clock(line$27$clock)
     );
-    top$done_r line$28(
+    top$d_cntr$ent_second line$28(
         .d(line$28$d),
         .q(line$28$q),
         .clock(line$28$clock)
     );
-    top$done_r line$29(
+    top$d_cntr$ent_second line$29(
         .d(line$29$d),
         .q(line$29$q),
         .clock(line$29$clock)
     );
-    top$done_r line$30(
+    top$d_cntr$ent_second line$30(
         .d(line$30$d),
         .q(line$30$q),
         .clock(line$30$clock)
     );
-    top$done_r line$31(
+    top$d_cntr$ent_second line$31(
         .d(line$31$d),
         .q(line$31$q),
         .clock(line$31$clock)
     );
-    top$done_r line$32(
+    top$d_cntr$ent_second line$32(
         .d(line$32$d),
         .q(line$32$q),
         .clock(line$32$clock)
     );
-    top$done_r line$33(
+    top$d_cntr$ent_second line$33(
         .d(line$33$d),
         .q(line$33$q),
         .clock(line$33$clock)
     );
-    top$done_r line$34(
+    top$d_cntr$ent_second line$34(
         .d(line$34$d),
         .q(line$34$q),
         .clock(line$34$clock)
     );
-    top$done_r line$35(
+    top$d_cntr$ent_second line$35(
         .d(line$35$d),
         .q(line$35$q),
         .clock(line$35$clock)
     );
-    top$done_r line$36(
+    top$d_cntr$ent_second line$36(
         .d(line$36$d),
         .q(line$36$q),
         .clock(line$36$clock)
     );
-    top$done_r line$37(
+    top$d_cntr$ent_second line$37(
         .d(line$37$d),
         .q(line$37$q),
         .clock(line$37$clock)
     );
-    top$done_r line$38(
+    top$d_cntr$ent_second line$38(
         .d(line$38$d),
         .q(line$38$q),
         .clock(line$38$clock)
     );
-    top$done_r line$39(
+    top$d_cntr$ent_second line$39(
         .d(line$39$d),
         .q(line$39$q),
         .clock(line$39$clock)
     );
-    top$done_r line$40(
+    top$d_cntr$ent_second line$40(
         .d(line$40$d),
         .q(line$40$q),
         .clock(line$40$clock)
     );
-    top$done_r line$41(
+    top$d_cntr$ent_second line$41(
         .d(line$41$d),
         .q(line$41$q),
         .clock(line$41$clock)
     );
-    top$done_r line$42(
+    top$d_cntr$ent_second line$42(
         .d(line$42$d),
         .q(line$42$q),
         .clock(line$42$clock)
     );
-    top$done_r line$43(
+    top$d_cntr$ent_second line$43(
         .d(line$43$d),
         .q(line$43$q),
         .clock(line$43$clock)
     );
-    top$done_r line$44(
+    top$d_cntr$ent_second line$44(
         .d(line$44$d),
         .q(line$44$q),
         .clock(line$44$clock)
     );
-    top$done_r line$45(
+    top$d_cntr$ent_second line$45(
         .d(line$45$d),
         .q(line$45$q),
         .clock(line$45$clock)
     );
-    top$done_r line$46(
+    top$d_cntr$ent_second line$46(
         .d(line$46$d),
         .q(line$46$q),
         .clock(line$46$clock)
     );
-    top$done_r line$47(
+    top$d_cntr$ent_second line$47(
         .d(line$47$d),
         .q(line$47$q),
         .clock(line$47$clock)
     );
-    top$done_r line$48(
+    top$d_cntr$ent_second line$48(
         .d(line$48$d),
         .q(line$48$q),
         .clock(line$48$clock)
     );
-    top$done_r line$49(
+    top$d_cntr$ent_second line$49(
         .d(line$49$d),
         .q(line$49$q),
         .clock(line$49$clock)

@@ -28,13 +28,13 @@ macro_rules! klmsel {
             pub fn new() -> Self {
                 assert!(K <= 32, "KlmSel: k > 32 needs wider selects");
                 Self {
-                    d: std::array::from_fn(|_| Default::default()),
-                    j0: std::array::from_fn(|_| Default::default()),
-                    j1: std::array::from_fn(|_| Default::default()),
-                    j2: std::array::from_fn(|_| Default::default()),
-                    y0: std::array::from_fn(|_| Default::default()),
-                    y1: std::array::from_fn(|_| Default::default()),
-                    y2: std::array::from_fn(|_| Default::default()),
+                    d: $crate::rtl::reg_ring::array_init(),
+                    j0: $crate::rtl::reg_ring::array_init(),
+                    j1: $crate::rtl::reg_ring::array_init(),
+                    j2: $crate::rtl::reg_ring::array_init(),
+                    y0: $crate::rtl::reg_ring::array_init(),
+                    y1: $crate::rtl::reg_ring::array_init(),
+                    y2: $crate::rtl::reg_ring::array_init(),
                     idx: std::array::from_fn(|a| Constant::new((a as u64).into())),
                 }
             }

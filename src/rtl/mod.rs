@@ -48,6 +48,8 @@ mod fp_add;
 mod fp_mul;
 mod fp_scale;
 mod klmsel;
+mod memory_port;
+mod reg_ring;
 mod tcheck;
 mod tri_unit;
 

@@ -358,3 +358,61 @@ macro_rules! tri_unit {
     };
 }
 pub(crate) use tri_unit;
+
+use rust_hdl::prelude::*;
+
+/// The result port (the host's read side of TRI_UNIT's result FIFO, DATE'05 Fig. 4's
+/// output): an intersecting or uncertain pair at the FIFO's head is shown to the host and
+/// leaves when it is read (`res_ready`), holding the FIFO until then, which back-pressures
+/// the traversal; a separate pair leaves unseen. It lives here, beside the FIFO it reads,
+/// and outside `tri_unit!` because nothing in it depends on the format; it is a block of
+/// its own so that the chip's kernel keeps to D_CNTR's and the memory port's wiring.
+/// Golden: `cycle::chip`'s `give` and `kept()` (no unit there of its own; checked in the
+/// chip, tb/rtl_chip.rs).
+///
+/// Ports: in `clock`, `take` (a pair entered TRI_UNIT), TRI_UNIT's `out_valid`,
+/// `out_hit`, `out_uncertain`, `out_tag[32]`, the host's `res_ready`; out `out_ready`
+/// (to TRI_UNIT), `res_valid`, `res_tag[32]`, `res_uncertain` (to the host), `give` (the
+/// head leaves at this edge), `sure_hit` (the head is a sure hit, shown or not: first-hit
+/// mode stops there), `open[9]` (pairs taken whose results have not left; registered).
+#[derive(LogicBlock, Default)]
+pub struct ResultPort {
+    pub clock: Signal<In, Clock>,
+    pub take: Signal<In, Bit>,
+    pub out_valid: Signal<In, Bit>,
+    pub out_hit: Signal<In, Bit>,
+    pub out_uncertain: Signal<In, Bit>,
+    pub out_tag: Signal<In, Bits<32>>,
+    pub res_ready: Signal<In, Bit>,
+    pub out_ready: Signal<Out, Bit>,
+    pub res_valid: Signal<Out, Bit>,
+    pub res_tag: Signal<Out, Bits<32>>,
+    pub res_uncertain: Signal<Out, Bit>,
+    pub give: Signal<Out, Bit>,
+    pub sure_hit: Signal<Out, Bit>,
+    pub open: Signal<Out, Bits<9>>,
+    open_r: DFF<Bits<9>>,
+    keep: Signal<Local, Bit>,
+}
+
+impl Logic for ResultPort {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(self, clock, open_r);
+        // separate pairs leave TRI_UNIT unseen, the others wait for the host
+        self.keep.next = self.out_hit.val() | self.out_uncertain.val();
+        self.res_valid.next = self.out_valid.val() & self.keep.val();
+        self.res_tag.next = self.out_tag.val();
+        self.res_uncertain.next = self.out_uncertain.val();
+        self.out_ready.next = self.res_ready.val() | !self.keep.val();
+        self.give.next = self.out_valid.val() & (self.res_ready.val() | !self.keep.val());
+        if self.take.val() & !self.give.val() {
+            self.open_r.d.next = self.open_r.q.val() + 1;
+        }
+        if self.give.val() & !self.take.val() {
+            self.open_r.d.next = self.open_r.q.val() - 1;
+        }
+        self.sure_hit.next = self.out_valid.val() & self.out_hit.val() & !self.out_uncertain.val();
+        self.open.next = self.open_r.q.val();
+    }
+}
