@@ -264,7 +264,7 @@ fn bad_parameters_are_refused() {
 /// LIFO. Start at 0, the root pushed at edge 1, popped in cycle 2; its words A0, B0 asked in
 /// cycles 3, 4, arrive at edges 6, 7; the root issues in cycle 8, its result in cycle 10 pushes
 /// both child entries at once: E1 = (1,1), (1,2), E2 = (2,2), (2,1) (the DOP-sharing order,
-/// `traversal::d_cntr::children`), E1 on top. E1 is popped in cycle 11, E2 in 12 (the buffer
+/// `golden::d_cntr::children`), E1 on top. E1 is popped in cycle 11, E2 in 12 (the buffer
 /// holds 4 pairs) while E1's first word goes out: A1, B1, B2, A2, B1 in cycles 12..=16 (the
 /// pair (2,2) reuses B2), one a clock, answered at edges 15..=19; each pair issues the clock
 /// after its last word: cycles 17, 18, 19, 20. Without prefetch the words go one pair at a

@@ -1,6 +1,6 @@
 //! The RTL collision chip in rust-hdl, clocked in lockstep with the cycle model
 //! (`cycle::drive::Lockstep`): every output and every traversal signal of
-//! `cycle::PROBES` equal after every clock, on three queries of the checked-in set, one of
+//! `chip::probes::PROBES` equal after every clock, on three queries of the checked-in set, one of
 //! them on the papers' chip (k = 24, binary32; the traces the exported Verilog must
 //! reproduce under Verilator, scripts/run-chip.sh), on a
 //! query drawn from a fixed seed (DDR memory), on a leaf pair that is the query's last event

@@ -11,7 +11,7 @@
 //! * directed, hand-derived: two pushes a clock in both orders;
 //! * wrong models are caught: LIFO treated as FIFO, half the capacity;
 //! * directed: push and pop on a one-entry LIFO, a pop on an empty queue is ignored;
-//! * the traversal order: the entries `traversal::d_cntr::children` makes for the paper's
+//! * the traversal order: the entries `golden::d_cntr::children` makes for the paper's
 //!   example tree, pushed into and popped from the RTL queue, give the paper's FIFO
 //!   sequence, and in LIFO order the golden depth-first sequence.
 //!
@@ -22,14 +22,13 @@ use collision_chip::chip::layout::{pack, unpack, Entry, Pair, ENTRY_BITS};
 use collision_chip::chip::reg::Order;
 use collision_chip::cycle::d_cntr::{QueueIn, QueueModel, QueueOut};
 use collision_chip::dop::Node;
-use collision_chip::golden::d_cntr::children;
+use collision_chip::golden::d_cntr::{children, Queue};
 use collision_chip::rtl::d_cntr::{pair_queue_top, random_ops, PairQueue};
 use proptest::prelude::*;
 use proptest::strategy::ValueTree;
 use proptest::test_runner::{Config, TestRunner};
 use rand::SeedableRng;
 use rust_hdl::prelude::*;
-use std::collections::VecDeque;
 
 mod common;
 use common::settle;
@@ -406,7 +405,7 @@ fn name(p: &Pair) -> String {
 }
 
 /// The child entries of a popped entry in push order: per pair, `children` (LIFO: reversed,
-/// so the first is popped next), as `traversal::d_cntr::run` pushes them.
+/// so the first is popped next), as `golden::d_cntr::Queue` pushes them.
 fn child_entries(ent: &Entry, lifo: bool) -> Vec<Entry> {
     let mut out = vec![];
     for p in &ent.pairs[..ent.len as usize] {
@@ -422,14 +421,17 @@ fn child_entries(ent: &Entry, lifo: bool) -> Vec<Entry> {
     out
 }
 
-/// The tested pairs in order, with a software queue.
+/// The tested pairs in order, with the golden D_CNTR's queue.
 fn software_order(lifo: bool) -> Vec<String> {
-    let root = Pair { a: 0, b: 0, flip: false };
-    let mut q = VecDeque::from([Entry { pairs: [root, root], len: 1 }]);
+    let mut q = Queue::new(order(lifo));
     let mut seq = vec![];
-    while let Some(ent) = if lifo { q.pop_back() } else { q.pop_front() } {
-        seq.extend(ent.pairs[..ent.len as usize].iter().map(name));
-        q.extend(child_entries(&ent, lifo));
+    while let Some(ent) = q.pop() {
+        for p in &ent.pairs[..ent.len as usize] {
+            seq.push(name(p));
+            if p.a < 3 || p.b < 3 {
+                q.push_children(*p, node(p.a), node(p.b));
+            }
+        }
     }
     seq
 }

@@ -1,5 +1,5 @@
 //! The chip's memory port in RTL (`rtl::e8m15::MemoryPort`, rtl/memory_port.rs) against the
-//! cycle model's unit `cycle::memory::MemPort` (the requests outstanding: which destination
+//! cycle model's unit `cycle::memory_port::MemPort` (the requests outstanding: which destination
 //! may ask, which request a response answers) and the cycle chip's node-word lists
 //! (`cycle::chip`: `to_ask`, the words arrived), clock by clock on random traffic: every
 //! request (valid, address, destination), every response's destination and triangle id,

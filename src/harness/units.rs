@@ -271,7 +271,7 @@ fn lane_vectors(name: &str, fmt: Format, r: Rounding) -> String {
 
 /// Vectors of the DOP unit: a preload of the host setup (lane i's field f at address 8i + f:
 /// C_i0..2, c_i, j packed as j0 | j1 << 5 | j2 << 10), then every node pair of two small DOP
-/// trees, `d$0.. e$0.. tag -> overlap tag_out` (golden::doptrf::dop_overlap).
+/// trees, `d$0.. e$0.. tag -> overlap tag_out` (golden::dop_unit::dop_overlap).
 fn dop_unit_vectors(name: &str, k: usize, fmt: Format) -> String {
     use crate::chip::config::ChipConfig;
     use crate::dop::DopTree;
@@ -290,7 +290,7 @@ fn dop_unit_vectors(name: &str, k: usize, fmt: Format) -> String {
     let names: Vec<String> = (0..k).map(|i| format!("d${i}")).chain((0..k).map(|i| format!("e${i}"))).collect();
     let _ = writeln!(out, "// {} tag overlap tag_out", names.join(" "));
     let _ = writeln!(out, "// latency: 15");
-    let _ = writeln!(out, "// {name}: k = {k}, {fmt}, outward; all node pairs of two DOP trees of 'soup' meshes under one pose; golden: golden::doptrf::dop_overlap");
+    let _ = writeln!(out, "// {name}: k = {k}, {fmt}, outward; all node pairs of two DOP trees of 'soup' meshes under one pose; golden: golden::dop_unit::dop_overlap");
     for (a, v) in super::chip_io::dop_unit_setup_words(fmt, &setup) {
         let _ = writeln!(out, "@ 1 {a:02x} {v:0w$x}");
     }

@@ -42,7 +42,7 @@ macro_rules! dop_unit {
     (@unit $W:tt, $name:ident, $top:ident, $K:tt; lanes($($i:tt)*); opp($($o:tt)*)) => {
         /// The DOP unit (DATE'05 Eq. 10): does B's node DOP `d` (transformed on the fly)
         /// overlap A's node DOP `e`? One node pair per clock, latency 15; bit for bit
-        /// [`dop_overlap`](crate::golden::doptrf::dop_overlap) (`DopUnit6` for k = 6, and so on).
+        /// [`dop_overlap`](crate::golden::dop_unit::dop_overlap) (`DopUnit6` for k = 6, and so on).
         ///
         /// Ports (arrays are flat, numbered ports in Verilog: `d$0`, `d$1`, ...):
         ///

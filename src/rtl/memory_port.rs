@@ -8,7 +8,7 @@
 macro_rules! memory_port {
     ($NW:tt, $MW:tt) => {
         /// The memory port: up to `0x126[7:4] + 1` requests outstanding, answered in request
-        /// order. Golden: [`cycle::memory::MemPort`](crate::cycle::memory::MemPort) (the
+        /// order. Golden: [`cycle::memory_port::MemPort`](crate::cycle::memory_port::MemPort) (the
         /// requests outstanding, whose destinations here are the tag ring `tags`) and the
         /// node-word lists of [`cycle::chip`](crate::cycle::chip) (`to_ask`, `words`); cycle
         /// semantics: docs/ARCHITECTURE.md, "Cycle semantics" (Node words, Memory requests).
