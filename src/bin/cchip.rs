@@ -179,7 +179,7 @@ struct QueryArgs {
     #[arg(long, value_enum, default_value = "lifo")]
     traversal: Traversal,
     #[command(flatten)]
-    chip: ChipArgs,
+    chip: ChipConfig,
     /// Scale each mesh uniformly into [-1,1]^3 first (the WSCG'03 benchmark protocol).
     #[arg(long)]
     unit_cube: bool,
@@ -193,19 +193,6 @@ struct QueryArgs {
     json: bool,
 }
 
-#[derive(Args)]
-struct ChipArgs {
-    /// k of the k-DOP: 6, 14, 18, 24 or 26.
-    #[arg(long, default_value_t = 24)]
-    k: usize,
-    /// Number format of the datapaths: binary32, reduced (e8m15) or eEmF; DOP/T.CHECK, such as
-    /// e8m15/binary32, gives the DOP words and DOPTRF a format of their own.
-    #[arg(long, default_value = "binary32")]
-    format: Formats,
-    /// DOP rounding: outward (conservative, never a false "separated") or nearest-even.
-    #[arg(long, default_value = "outward")]
-    dop_rounding: DopRounding,
-}
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
@@ -234,7 +221,7 @@ fn load(spec: &str, unit_cube: bool) -> Result<Mesh, String> {
 }
 
 fn query(q: QueryArgs) -> Result<(), String> {
-    let cfg = ChipConfig { k: q.chip.k, format: q.chip.format, dop_rounding: q.chip.dop_rounding, ..Default::default() };
+    let cfg = q.chip;
     let (ma, mb) = (load(&q.a, q.unit_cube)?, load(&q.b, q.unit_cube)?);
     let (ta, tb) = (ma.triangles_f64(), mb.triangles_f64());
     let chip = Chip::new(&ta, &tb, cfg)?;

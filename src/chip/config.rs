@@ -105,19 +105,28 @@ impl From<Formats> for String {
     }
 }
 
-/// A query's chip configuration. Scenes and the CLI deserialize it directly (each key
-/// optional, [`Default`] the papers' chip) and call [`check`](ChipConfig::check) once.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+/// A query's chip configuration. Scenes (`[chip]`) and the CLI (`--k`, `--format`, ...) read
+/// it directly, each key optional ([`Default`]: the papers' chip), and
+/// [`check`](ChipConfig::check) it once.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize, clap::Args)]
 #[serde(deny_unknown_fields, default)]
 pub struct ChipConfig {
+    /// k of the k-DOP: 6, 14, 18, 24 or 26.
+    #[arg(long, default_value_t = ChipConfig::default().k)]
     pub k: usize,
+    /// Number format of the datapaths: binary32, reduced (e8m15) or eEmF; DOP/T.CHECK, such as
+    /// e8m15/binary32, gives the DOP words and DOPTRF a format of their own.
+    #[arg(long, default_value_t = ChipConfig::default().format)]
     pub format: Formats,
+    /// DOP rounding: outward (conservative, never a false "separated") or nearest-even.
+    #[arg(long, default_value_t = ChipConfig::default().dop_rounding)]
     pub dop_rounding: DopRounding,
-    /// Rounding of every T.CHECK operation.
+    /// Rounding of every T.CHECK operation (scenes only).
+    #[arg(skip = ChipConfig::default().tri_rounding)]
     pub tri_rounding: Rounding,
-    /// Lines of the triangle cache for A's triangle words (WSCG'03 §4.3: direct mapped, 128
-    /// lines; [`TriCache`](crate::golden::memory::TriCache)); 1: the single word held, as for B's
-    /// and in the RTL chips.
+    /// Lines of A's triangle cache (WSCG'03 §4.3: direct mapped, a power of two; WSCG'03 has
+    /// 128); 1: the single word held, as for B's and in the RTL chips' reset state.
+    #[arg(long, default_value_t = ChipConfig::default().tri_cache)]
     pub tri_cache: u32,
 }
 
