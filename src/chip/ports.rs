@@ -55,7 +55,7 @@ pub trait Clocked {
     /// The outputs in the current cycle.
     fn outputs(&self) -> ChipOut;
     /// Applies `i` for the current cycle and clocks one rising edge. With `probe`, returns
-    /// the [`PROBES`] signals' values in that cycle (inputs applied, before the edge).
+    /// the [`PROBES`](super::probes::PROBES) signals' values in that cycle (inputs applied, before the edge).
     fn step(&mut self, i: &ChipIn, probe: bool) -> Option<Vec<u64>>;
     /// Why this level cannot go on (a lockstep difference), if so.
     fn fault(&self) -> Option<String> {

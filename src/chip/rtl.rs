@@ -1,5 +1,5 @@
 //! The RTL chips: the sizes and latencies their blocks are built with, and the table of the
-//! chips exported to `rtl/` ([`rtl_chips!`]), from which the contract makes [`ChipKind`]
+//! chips exported to `rtl/` ([`rtl_chips!`](crate::rtl_chips)), from which the contract makes [`ChipKind`]
 //! and the harness makes the port adapters and the dispatcher over the rust-hdl types.
 //! The RTL checks its own numbers against these at compile time (`src/rtl/mod.rs`).
 

@@ -140,7 +140,7 @@ struct Comb {
 }
 
 impl<'a> Chip<'a> {
-    /// A chip after reset (its host registers zero: write [`control_writes`] before
+    /// A chip after reset (its host registers zero: write [`control_writes`](crate::chip::reg::control_writes) before
     /// `start`); `counters`: count [`Stats`].
     pub fn new(
         cfg: &ChipConfig,

@@ -3,7 +3,7 @@
 //! output in cycle `t + tri_latency` (the RTL: T.CHECK's pipeline, then the FIFO's write
 //! and read registers) and waits there until it is given out. `in_ready` is low while
 //! `fifo` pairs are taken and not yet given out, so the FIFO never overflows. Verdicts come
-//! from the golden TRI_UNIT ([`golden::tcheck::TriUnit`](crate::golden::tri_unit::TriUnit)).
+//! from the golden TRI_UNIT ([`golden::tri_unit::TriUnit`](crate::golden::tri_unit::TriUnit)).
 
 use super::delay::Delay;
 use crate::golden::tri_unit::TriUnit as Values;

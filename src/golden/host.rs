@@ -68,7 +68,7 @@ impl HostSetup {
         if ab { (&self.m_ab, self.beta_ab, self.scale[0]) } else { (&self.m_ba, self.beta_ba, self.scale[1]) }
     }
 
-    /// `b_coord_bound` is X = max |x|_inf over B's root DOP ([`super::DopTree::coord_bound`]).
+    /// `b_coord_bound` is X = max |x|_inf over B's root DOP ([`DopTree::coord_bound`](crate::dop::DopTree::coord_bound)).
     pub fn new(cfg: &ChipConfig, pose: &Pose, b_coord_bound: f64, tri: TriSide) -> HostSetup {
         let normals = DopNormals::get(cfg.k).expect("k validated by the caller");
         let rot = pose.rotation();

@@ -84,8 +84,8 @@ pub struct Stage1 {
 }
 
 /// Stage 1: M_b = M_B . M_f (Eqs. 11, 12) and its magnitude for the leaf word `leaf` and
-/// a frame map `frame` with its error words `beta` ([`HostSetup::beta_ab`]), `scale` the
-/// vertices' object's ([`HostSetup::scale`]).
+/// a frame map `frame` with its error words `beta` ([`HostSetup::beta_ab`](super::host::HostSetup::beta_ab)), `scale` the
+/// vertices' object's ([`HostSetup::scale`](super::host::HostSetup::scale)).
 pub fn stage1(f: Format, r: Rounding, leaf: &TriWord, frame: &Affine, beta: [f64; 2], scale: f64) -> Stage1 {
     let m = &leaf.m;
     let mut mb = [[0.0; 4]; 3];

@@ -494,7 +494,7 @@ pub fn write_vectors(dir: &std::path::Path) -> Result<Vec<String>, String> {
     Ok(written)
 }
 
-/// [`run_query`] writing a VCD of the traversal to `path` ([`ProbeVcd`]: the signals of
+/// [`run_query`] writing a VCD of the traversal to `path` ([`ProbeVcd`](crate::cycle::drive::ProbeVcd): the signals of
 /// [`crate::chip::probes::PROBES`], one scope per unit under `chip`, one time unit per clock). For
 /// GTKWave with scripts/gtkw/chip_e8m15_k6.gtkw. (A VCD of every rust-hdl signal would be
 /// about 600 kB per clock, mostly T.CHECK's.)

@@ -1,6 +1,6 @@
 //! T.CHECK's operands and results as the RTL sees them (bit patterns of the format), built
 //! from the golden memory words and host setup, with the golden results they must give:
-//! one source for the testbenches (`tb/rtl_tcheck.rs`) and the exported vectors.
+//! one source for the testbenches (`tb/rtl_tri.rs`) and the exported vectors.
 
 use crate::golden::host::{Affine, HostSetup};
 use crate::format::{Format, Rounding};

@@ -10,7 +10,7 @@ macro_rules! tri_unit {
         declare_sync_fifo!(TriFifo, Bits<34>, 256, 1);
 
         /// TRI_UNIT: is triangle a of A intersecting triangle b of B? Golden
-        /// [`tri_unit`](crate::golden::tcheck::tri_unit), bit for bit: `tc_ab` tests A's
+        /// [`tri_unit`](crate::golden::tri_unit::tri_unit), bit for bit: `tc_ab` tests A's
         /// edges against U(B) (B's leaf, the frame map M_AB), `tc_ba`
         /// B's edges against U(A) (A's leaf, M_BA); a degenerate leaf leaves its direction
         /// unknown; the verdict is the Kleene OR of the two: intersecting (`hit`), separate,

@@ -15,6 +15,7 @@
 //! dop_rounding = "outward"    # or "nearest-even"
 //! tri_cache = 1               # lines of A's triangle cache (WSCG'03 §4.3: 128; a power of
 //!                             # two up to 1024; 1: one word held, the RTL chips)
+//! tri_rounding = "NearestEven" # T.CHECK's rounding, or "TowardPositive", "TowardNegative"
 //!
 //! [query]                     # all optional
 //! mode = "all"                # or "first"
