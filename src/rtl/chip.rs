@@ -2,6 +2,13 @@
 //! TRI_UNIT joined into one block that runs whole queries, stamped out per format by
 //! `chip!`. Host side, memory model and drivers: [`chip_io`](crate::harness::chip_io); cycle
 //! semantics: docs/ARCHITECTURE.md, "Cycle semantics".
+//!
+//! Its sub-blocks: D_CNTR with its pair queue ([`DCntr`](crate::rtl::d_cntr::DCntr),
+//! rtl/d_cntr.rs), the memory port (`MemoryPort`, rtl/memory_port.rs), the DOP unit with the
+//! side delay line of its pairs, TRI_UNIT and its result port
+//! ([`ResultPort`](crate::rtl::tri_unit::ResultPort), rtl/tri_unit.rs). This file keeps what
+//! joins them: the host registers, the leaf FIFO and register with the triangle words held
+//! (A's triangle cache), the counters and the end of a query.
 
 /// Stamps out `CollisionChip<N, NP1, NM1>` in the calling module (which must also hold the
 /// DOP unit `Dop` and `TriUnit`). Arguments: `K` the DOP's k, `Dop` its unit (`DopUnit6`

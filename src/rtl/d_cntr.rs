@@ -1,6 +1,8 @@
-//! D_CNTR (DATE'05 §4.3): the pair queue, first block of the traversal controller.
-//! Golden: [`cycle::d_cntr::QueueModel`](crate::cycle::d_cntr::QueueModel); entry word
-//! layout: [`cycle::d_cntr`](crate::cycle::d_cntr) (`pack` / `unpack`).
+//! D_CNTR (DATE'05 §4.3), the traversal controller: the pair queue ([`PairQueue`], golden
+//! [`cycle::d_cntr::QueueModel`](crate::cycle::d_cntr::QueueModel)) and around it the
+//! control that pops entries ahead, issues their pairs to the DOP unit and pushes the
+//! children of its results ([`DCntr`], the chip's). Entry word layout:
+//! [`cycle::d_cntr`](crate::cycle::d_cntr) (`pack` / `unpack`).
 
 use crate::chip::layout::ENTRY_BITS;
 use crate::chip::reg::Order;

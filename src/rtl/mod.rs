@@ -52,6 +52,8 @@ mod memory_port;
 mod reg_ring;
 mod tcheck;
 mod tri_unit;
+/// The result port, TRI_UNIT's read side in the chip (format-free: not stamped per format).
+pub use tri_unit::ResultPort;
 
 /// Stamps out one format's units plus constructors and Verilog export.
 macro_rules! fp_format {
