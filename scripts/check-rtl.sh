@@ -20,11 +20,8 @@ if [ "${1:-}" = "--no-synth" ]; then synth=0; shift; fi
 if [ $# -gt 0 ]; then units=("$@"); else units=(); for f in rtl/*.v; do units+=("$(basename "$f" .v)"); done; fi
 
 # The pipelined units name their valid ports valid_in / valid_out; units with a ready/valid
-# handshake (TRI_UNIT) in_valid / out_valid, the run scripts' defaults. rust-hdl's output
-# needs -Wno-WIDTH (32-bit literals); the adders' normaliser is a chain of bit fields of one
-# signal, which Verilator reports as UNOPTFLAT (a scheduling note, not a loop: Icarus and
-# the vectors agree).
-export VERILATOR_WNO="${VERILATOR_WNO:--Wno-WIDTH -Wno-UNOPTFLAT}"
+# handshake (TRI_UNIT) in_valid / out_valid, the run scripts' defaults. The warnings that
+# rust-hdl's output needs off are run-verilator.sh's default (VERILATOR_WNO).
 jobs_max=${JOBS:-$(nproc 2>/dev/null || echo 2)}
 out_dir=$(mktemp -d)
 trap 'rm -rf "$out_dir"' EXIT

@@ -13,7 +13,9 @@
 #   --out DIR        build directory (default target/verilog/verilator/<unit>)
 #   +bubble=K        an idle cycle (in_valid low) after every K cases
 #   +max_print=N     mismatches printed (default 10)
-# Environment: VERILATOR_WNO (default "-Wno-WIDTH", the warnings rust-hdl output needs off),
+# Environment: VERILATOR_WNO (default "-Wno-WIDTH -Wno-UNOPTFLAT", the warnings rust-hdl
+#   output needs off: 32-bit literals, and the FP normalisers' chains of bit fields of one
+#   signal, a scheduling note rather than a loop),
 #   VERILATOR_FLAGS (extra flags for both the lint and the build).
 # Lints the unit alone first (warnings are errors), then builds and runs the testbench.
 # Prints the mismatches and `N passed, M failed`; exits non-zero on any failure.
@@ -25,7 +27,7 @@ SIM=verilator
 need verilator verilator
 parse_args "$@"
 
-read -r -a WNO <<<"${VERILATOR_WNO--Wno-WIDTH}"
+read -r -a WNO <<<"${VERILATOR_WNO--Wno-WIDTH -Wno-UNOPTFLAT}"
 read -r -a XFLAGS <<<"${VERILATOR_FLAGS-}"
 verilator --lint-only "${WNO[@]}" "${XFLAGS[@]}" --top-module "$UNIT" "$OUT/$UNIT.v" "${EXTRA[@]}"
 

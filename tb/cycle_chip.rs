@@ -315,3 +315,34 @@ fn prefetch_keeps_requests_back_to_back_by_hand() {
     assert_eq!(reqs[2..5], [(12, na + 1), (13, nb + 1), (18, nb + 2)]);
     assert_eq!(issues[..3], [8, 17, 22]);
 }
+
+/// A wait costs no time, however long (issue 35): memory latency, memory interval and the
+/// host's reading period at 2^32 - 1 clocks each are skipped in one step, on two
+/// 210-triangle meshes (the scene that walked its waits clock by clock). Run on a thread
+/// with a generous bound so that a regression fails here instead of hanging the suite.
+#[test]
+fn the_longest_waits_are_skipped() {
+    let chip = Chip::new(&collision_chip::mesh::builtin("sphere:200").unwrap().triangles_f64(), &collision_chip::mesh::builtin("torus:200").unwrap().triangles_f64(), CHIP_CONFIG).unwrap();
+    let pose = Pose::new(10.0, 20.0, 30.0, 0.5, 0.0, 0.0);
+    let golden = chip.query(&pose, Mode::All, Traversal::Lifo);
+    let long = u32::MAX;
+    let cases = [
+        (MemTiming { latency: long, ..Default::default() }, Reader::default()),
+        (MemTiming { interval: long, ..Default::default() }, Reader::default()),
+        (MemTiming::default(), Reader { period: long }),
+    ];
+    let (tx, rx) = std::sync::mpsc::channel();
+    std::thread::spawn(move || {
+        for (timing, reader) in cases {
+            let p = Params { memory: timing.into(), ..Params::RTL };
+            let r = cycle::run_query(&chip, &chip.setup(&pose), Order::Lifo, Mode::All, p, reader, cycle::MAX_CYCLES, counted()).map(|r| r.0);
+            tx.send((timing, reader, r)).unwrap();
+        }
+    });
+    for _ in 0..3 {
+        let (timing, reader, r) = rx.recv_timeout(std::time::Duration::from_secs(60)).expect("a wait of 2^32 - 1 clocks was walked, not skipped");
+        let tr = r.unwrap();
+        tr.check(Mode::All, &golden).unwrap();
+        assert!(tr.cycles > long as u64, "{timing:?} {reader:?}: {} cycles", tr.cycles);
+    }
+}

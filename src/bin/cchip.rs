@@ -375,10 +375,10 @@ fn run(path: Option<PathBuf>, o: RunOpts) -> Result<(), String> {
     let (ta, tb) = (&prepared.a, &prepared.b);
     if !o.json {
         println!(
-            "scene: {}\n  A = {} ({} triangles), B = {} ({} triangles){}\n  chip: k={} format={} dop-rounding={}; {:?} traversal, {:?} mode; {} poses",
+            "scene: {}\n  A = {} ({} triangles), B = {} ({} triangles){}\n  chip: k={} format={} dop-rounding={}; {} traversal, {} mode; {} poses",
             scene.name, scene.objects.a, ta.len(), scene.objects.b, tb.len(),
             if scene.objects.unit_cube { ", both scaled into [-1,1]^3" } else { "" },
-            scene.cfg.k, scene.cfg.format, scene.cfg.dop_rounding, scene.traversal, scene.mode, scene.poses.len()
+            scene.cfg.k, scene.cfg.format, scene.cfg.dop_rounding, format!("{:?}", scene.traversal).to_lowercase(), format!("{:?}", scene.mode).to_lowercase(), scene.poses.len()
         );
     }
     let bar = progress_bar(scene.poses.len() as u64, o.json);
@@ -420,8 +420,8 @@ fn run(path: Option<PathBuf>, o: RunOpts) -> Result<(), String> {
         }
         if c.overflow {
             println!(
-                "pose {i} ({:?}): the chip's pair queue overflowed ({} entries): its answer is incomplete; raise [timing] queue_entries",
-                r.pose, scene.params.queue_entries
+                "pose {i} ({}): the chip's pair queue overflowed ({} entries): its answer is incomplete; raise [timing] queue_entries",
+                r.pose.text(), scene.params.queue_entries
             );
         }
     }

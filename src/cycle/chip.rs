@@ -369,9 +369,10 @@ impl<'a> Chip<'a> {
 
     /// With the inputs `i` held, the chip does nothing but wait until this cycle: no
     /// register but the clock changes before it (the next DOP result, leaf pair at the
-    /// FIFO's head, TRI_UNIT verdict, or the end of the issue spacing). `None`: it may act
-    /// in the current cycle. Memory responses, `mem_req_ready` and `res_ready` are the
-    /// driver's to add. Lets the driver skip a wait in one step, the trace exact.
+    /// FIFO's head, TRI_UNIT verdict, or the end of the issue spacing; `u64::MAX`: nothing
+    /// inside the chip is under way). `None`: it may act in the current cycle. Memory
+    /// responses, `mem_req_ready` and `res_ready` are the driver's to add. Lets the driver
+    /// skip a wait of any length in one step, the trace exact.
     pub fn quiet_until(&self, i: &ChipIn) -> Option<u64> {
         let c = self.comb(i);
         let acts = !self.run
@@ -387,7 +388,9 @@ impl<'a> Chip<'a> {
             || c.tri_take
             || c.leaf_out
             || c.give
-            || c.finish;
+            || c.finish
+            // a first hit shown halts the traversal (a register), read or not
+            || (self.run && self.first && !self.stop && c.out.is_some_and(|o| o.sure_hit()));
         if acts {
             return None;
         }
@@ -397,6 +400,7 @@ impl<'a> Chip<'a> {
             .flatten()
             .filter(|&t| t > self.now)
             .min()
+            .or(Some(u64::MAX))
     }
 
     /// Skips `n` clocks before [`quiet_until`](Self::quiet_until)'s cycle with the inputs

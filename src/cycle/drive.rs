@@ -29,6 +29,11 @@ impl Reader {
     pub fn ready(&self, cyc: u64) -> bool {
         cyc % self.period.max(1) as u64 == 0
     }
+
+    /// The first cycle from `cyc` on in which the host reads.
+    pub fn next_ready(&self, cyc: u64) -> u64 {
+        cyc.next_multiple_of(self.period.max(1) as u64)
+    }
 }
 
 /// What a query did: the chip's outputs, in the trace format the Verilog testbench
@@ -190,10 +195,14 @@ pub fn run_query<C: Clocked>(
             results.push((cyc, out.res_tag.0, out.res_tag.1, out.res_uncertain));
         }
         // a wait the model may skip: nothing to answer, request or read before `until`
-        if let Some(skip) = skip.as_deref_mut().filter(|_| !probe && i.mem_resp.is_none() && !out.res_valid) {
+        let read = out.res_valid && i.res_ready;
+        if let Some(skip) = skip.as_deref_mut().filter(|_| !probe && i.mem_resp.is_none() && !read && !(out.mem_req_valid && ready)) {
             let mut until = mem.next_response().unwrap_or(u64::MAX);
-            if out.mem_req_valid && !ready {
+            if out.mem_req_valid {
                 until = until.min(mem.next_ready());
+            }
+            if out.res_valid {
+                until = until.min(d.reader.next_ready(cyc));
             }
             let n = skip(chip, &i, until.saturating_sub(cyc).min(d.max_cycles + 1 - cyc));
             if n > 0 {

@@ -72,7 +72,7 @@ pub fn run_query(
     let trace = if vcd.is_none() && observer.is_none() {
         let mut skip = |c: &mut chip::Chip, i: &ChipIn, max: u64| match c.quiet_until(i) {
             Some(t) => {
-                let n = (t - c.now()).min(max);
+                let n = t.saturating_sub(c.now()).min(max);
                 c.skip(n, i);
                 n
             }
