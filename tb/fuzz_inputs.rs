@@ -1,0 +1,173 @@
+//! Inputs nobody thought of (issue 35): the mesh loaders (OBJ, STL, PLY), scene files and
+//! poses, fed mutations of the vendored and bad inputs. Each must come back as a value or a
+//! clear error: never a panic, a hang or an allocation the input's size does not justify.
+//!
+//! Stable Rust has no coverage-guided fuzzer here (cargo fuzz needs nightly), so the
+//! mutations are proptest's: bytes flipped, ranges cut, duplicated or truncated, and tokens
+//! that have broken parsers before (huge counts and indices, NaN, overflowing exponents,
+//! NUL bytes, headers inside bodies) spliced in at random places. Every failure proptest
+//! finds is shrunk to a minimal input; add it to `vectors/bad-meshes/` (and the mesh error
+//! tests) when it is fixed. `FUZZ_CASES=N` runs N cases per target (default: CI's bounded
+//! run).
+
+use collision_chip::mesh;
+use collision_chip::pose::Pose;
+use collision_chip::scene::Scene;
+use proptest::prelude::*;
+use std::path::{Path, PathBuf};
+
+const TOKENS: &[&str] = &[
+    "-1", "0", "1", "4294967295", "4294967296", "18446744073709551616", "99999999999999999999999",
+    "nan", "NaN", "inf", "-inf", "1e309", "-1e-320", "1e-400", "0x10", "\n", " ", "\t", "\r\n", "/",
+    "//", "\0", "\u{ff}", "#", "v 1 2 3\n", "f 1 2 3\n", "f -1 -2 -3\n", "vt 0 0\n", "f 1/1/1 2/2/2 3/3/3\n",
+    "solid x\n", "facet normal 0 0 1\n", "outer loop\n", "vertex 1 2 3\n", "endloop\n", "endfacet\n",
+    "endsolid\n", "ply\n", "format ascii 1.0\n", "format binary_little_endian 1.0\n",
+    "format binary_big_endian 1.0\n", "element vertex 1000000000\n", "element face 4294967295\n",
+    "property float x\n", "property list uchar int vertex_indices\n", "property list uint uint vertex_indices\n",
+    "end_header\n", "= ", "[", "]", "{", "}", "\"", "'", "[[pose]]\n", "[sweep]\n", "orientations = 1000000\n",
+    "distances = []\n", "k = 0\n", "latency = 4294967295\n", "queue_entries = 0\n", "tri_cache = 3\n",
+];
+
+/// One edit of a byte string.
+#[derive(Clone, Debug)]
+enum Edit {
+    Flip(usize, u8),
+    Cut(usize, usize),
+    Dup(usize, usize),
+    Token(usize, usize),
+    Truncate(usize),
+}
+
+fn edit() -> impl Strategy<Value = Edit> {
+    prop_oneof![
+        (any::<usize>(), any::<u8>()).prop_map(|(a, b)| Edit::Flip(a, b)),
+        (any::<usize>(), 1usize..64).prop_map(|(a, n)| Edit::Cut(a, n)),
+        (any::<usize>(), 1usize..64).prop_map(|(a, n)| Edit::Dup(a, n)),
+        (any::<usize>(), 0..TOKENS.len()).prop_map(|(a, t)| Edit::Token(a, t)),
+        any::<usize>().prop_map(Edit::Truncate),
+    ]
+}
+
+fn apply(mut b: Vec<u8>, edits: &[Edit]) -> Vec<u8> {
+    for e in edits {
+        let at = |a: usize, len: usize| if len == 0 { 0 } else { a % (len + 1) };
+        match *e {
+            Edit::Flip(a, v) if !b.is_empty() => {
+                let i = a % b.len();
+                b[i] = v;
+            }
+            Edit::Cut(a, n) => {
+                let i = at(a, b.len());
+                b.drain(i..(i + n).min(b.len()));
+            }
+            Edit::Dup(a, n) => {
+                let i = at(a, b.len());
+                let chunk = b[i..(i + n).min(b.len())].to_vec();
+                b.splice(i..i, chunk);
+            }
+            Edit::Token(a, t) => {
+                let i = at(a, b.len());
+                b.splice(i..i, TOKENS[t].bytes());
+            }
+            Edit::Truncate(a) => b.truncate(at(a, b.len())),
+            _ => {}
+        }
+    }
+    b
+}
+
+fn root() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+}
+
+/// The seeds: every small bad mesh, and the head of each vendored mesh (a few hundred lines:
+/// valid files of each format's shape).
+fn mesh_seeds() -> Vec<(String, Vec<u8>)> {
+    let mut seeds = vec![];
+    for dir in ["vectors/bad-meshes", "vectors/meshes"] {
+        let mut entries: Vec<_> = std::fs::read_dir(root().join(dir)).unwrap().flatten().map(|e| e.path()).collect();
+        entries.sort();
+        for p in entries.into_iter().filter(|p| p.is_file()) {
+            let ext = p.extension().map_or(String::new(), |e| e.to_string_lossy().into_owned());
+            if !["obj", "stl", "ply"].contains(&ext.as_str()) {
+                continue;
+            }
+            let mut b = std::fs::read(&p).unwrap();
+            b.truncate(16 * 1024);
+            seeds.push((ext, b));
+        }
+    }
+    seeds
+}
+
+fn cases() -> u32 {
+    std::env::var("FUZZ_CASES").ok().and_then(|v| v.parse().ok()).unwrap_or(1500)
+}
+
+fn config() -> ProptestConfig {
+    ProptestConfig { cases: cases(), failure_persistence: None, ..ProptestConfig::default() }
+}
+
+/// A loader's answer for a mutated file: a mesh of finite coordinates, or an error that
+/// names the file.
+fn check_load(path: &Path) -> Result<(), String> {
+    match mesh::load(path) {
+        Ok(m) => {
+            let tris = m.triangles_f64();
+            if tris.iter().flatten().all(|p| p.coords.iter().all(|x| x.is_finite())) {
+                Ok(())
+            } else {
+                Err("a mesh with a non-finite coordinate was accepted".into())
+            }
+        }
+        Err(e) => {
+            let text = e.to_string();
+            let name = path.file_name().unwrap().to_string_lossy();
+            if text.contains(&*name) { Ok(()) } else { Err(format!("the error does not name the file: {text}")) }
+        }
+    }
+}
+
+#[test]
+fn mesh_loaders_take_any_bytes() {
+    let seeds = mesh_seeds();
+    assert!(seeds.len() > 20, "{} seeds", seeds.len());
+    let dir = std::env::temp_dir().join(format!("cchip-fuzz-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let mut runner = proptest::test_runner::TestRunner::new(config());
+    let strategy = (0..seeds.len(), prop::collection::vec(edit(), 1..6));
+    let result = runner.run(&strategy, |(s, edits)| {
+        let (ext, bytes) = &seeds[s];
+        let path = dir.join(format!("case.{ext}"));
+        std::fs::write(&path, apply(bytes.clone(), &edits)).unwrap();
+        check_load(&path).map_err(|e| TestCaseError::fail(format!("seed {s} (.{ext}): {e}")))
+    });
+    let _ = std::fs::remove_dir_all(&dir);
+    result.unwrap();
+}
+
+#[test]
+fn scene_files_take_any_text() {
+    let mut seeds: Vec<Vec<u8>> = vec![];
+    let mut entries: Vec<_> = std::fs::read_dir(root().join("vectors/scenes")).unwrap().flatten().map(|e| e.path()).collect();
+    entries.sort();
+    for p in entries.into_iter().filter(|p| p.extension().is_some_and(|e| e == "toml")) {
+        seeds.push(std::fs::read(p).unwrap());
+    }
+    proptest!(config(), |(s in 0..seeds.len(), edits in prop::collection::vec(edit(), 1..6))| {
+        let text = String::from_utf8_lossy(&apply(seeds[s].clone(), &edits)).into_owned();
+        // a scene is checked whole before anything runs: a value or an error naming the file
+        if let Err(e) = Scene::parse(&text, "fuzz.toml") {
+            prop_assert!(e.starts_with("fuzz.toml"), "{e}");
+        }
+    });
+}
+
+#[test]
+fn poses_take_any_text() {
+    proptest!(config(), |(s in "[-+0-9.,eEnaifNI xX_]{0,48}")| {
+        if let Ok(p) = Pose::parse(&s) {
+            prop_assert!(p.rot_deg.iter().chain(&p.t).all(|x| x.is_finite()), "{s:?} gave {p:?}");
+        }
+    });
+}
