@@ -13,7 +13,8 @@ Usage: scripts/memory-study.py [--meshes bunny dragon-11k] [--orientations 8] [-
   --timing  the scenes' [timing] table, e.g. 'issue_spacing = 1, outstanding = 16, credit = 48,
             prefetch = 14' (the memory port at full speed: docs/ARCHITECTURE.md, "With
             prefetch"; default: the RTL's parameters after reset)
-  --chip    the scenes' [chip] table instead of the default's, e.g. the RTL chip's
+  --chip    the scenes' [chip] table (default: preset "rtl", the papers' k = 24 binary32
+            chip at the RTL's reset values, which --timing overrides), e.g. the RTL chip's
             'k = 6, format = "reduced", dop_rounding = "outward"', or the default's with
             WSCG'03's triangle cache: 'k = 24, format = "binary32", tri_cache = 128'
   --cchip   a built cchip binary (default: `cargo run --release -q --`)
@@ -46,8 +47,9 @@ def scene(mesh, orientations, timing, memory, chip):
     with open(DEFAULT) as f:
         text = f.read()
     text = text[: text.index("[outputs]")]
-    if chip:
-        text = re.sub(r"(?ms)^\[chip\]\n.*?\n\n", lambda _: f"[chip]\n{chip}\n\n", text, count=1)
+    # the RTL's reset values under the scene's keys (the default scene's preset is date05's port)
+    chip = chip or 'preset = "rtl"'
+    text = re.sub(r"(?ms)^\[chip\]\n.*?\n\n", lambda _: f"[chip]\n{chip}\n\n", text, count=1)
     text = re.sub(r'(?m)^([ab]) = ".*"$', lambda m: f'{m.group(1)} = "{mesh}"', text)
     text = re.sub(r"(?m)^orientations = \d+$", f"orientations = {orientations}", text)
     return f"{text}[timing]\n{timing}\n\n[memory]\n{memory}\n\n[outputs]\ncycles = true\nmemory = true\n"

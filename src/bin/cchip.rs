@@ -2,6 +2,7 @@
 //! collision chip (and, for small meshes, its RTL in rust-hdl).
 
 use clap::{Args, Parser, Subcommand};
+use collision_chip::chip::preset::Preset;
 use collision_chip::chip::config::{ChipConfig, DopRounding, Formats};
 use collision_chip::chip::memory::Memory;
 use collision_chip::mesh::{self, Mesh};
@@ -122,6 +123,12 @@ struct RunOpts {
     /// Like --explain, as Graphviz DOT (skipped units dashed): `cchip run --dot | dot -Tsvg`.
     #[arg(long)]
     dot: bool,
+    /// Run the scene on this chip instead of its [chip] preset (its own keys still override):
+    /// date05 (DATE'05's k = 24 binary32 chip on its DDR2 memory, the port at full speed),
+    /// wscg03 (WSCG'03's DDR SDRAM at 266 MHz, a 128-line triangle cache) or rtl (the RTL's
+    /// reset values). --explain prints the values it resolves to.
+    #[arg(long, value_enum)]
+    preset: Option<Preset>,
 }
 
 #[derive(Args)]
@@ -357,8 +364,8 @@ fn figures(out: &std::path::Path, quick: bool) -> Result<(), String> {
 
 fn run(path: Option<PathBuf>, o: RunOpts) -> Result<(), String> {
     let mut scene = match &path {
-        Some(p) => Scene::load(p)?,
-        None => Scene::parse(DEFAULT_SCENE, "built-in default scene")?,
+        Some(p) => Scene::load_with(p, o.preset)?,
+        None => Scene::parse_with(DEFAULT_SCENE, "built-in default scene", o.preset)?,
     };
     if let Some(dir) = o.vcd {
         scene.outputs.waveforms = Some(Waveforms::all(dir));

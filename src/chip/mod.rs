@@ -7,6 +7,7 @@
 //! | [`config`] | a query's chip configuration: k, the formats, the roundings, the triangle cache, with its one [`check`](config::ChipConfig::check) |
 //! | [`params`] | the microarchitecture's timing parameters ([`Params`](params::Params), the RTL chip's point [`Params::RTL`](params::Params::RTL)) |
 //! | [`memory`] | the memory a query runs against (ideal, DDR SDRAM; WSCG'03's and DATE'05's presets) |
+//! | [`preset`] | the papers' chips and the RTL's reset point as whole configurations (`date05`, `wscg03`, `rtl`) |
 //! | [`ports`] | the chip's ports per clock and the [`Clocked`](ports::Clocked) interface of every level |
 //! | [`probes`] | the traversal signals every level shows (VCDs, lockstep) |
 //! | [`reg`] | the host register map, the query's mode and D_CNTR's order, the writes that start a query |
@@ -18,6 +19,7 @@ pub mod layout;
 pub mod memory;
 pub mod params;
 pub mod ports;
+pub mod preset;
 pub mod probes;
 pub mod reg;
 pub mod rtl;

@@ -314,7 +314,7 @@ impl Plan {
     pub fn explain(&self, s: &Scene) -> String {
         let mut out = String::new();
         let asked: Vec<&str> = sinks(s).iter().map(|u| u.name()).collect();
-        let _ = writeln!(out, "scene: {}\noutputs: {}\n", s.name, asked.join(", "));
+        let _ = writeln!(out, "scene: {}\noutputs: {}\n{}\n", s.name, asked.join(", "), s.configuration());
         let mut k = 0;
         for stage in &self.stages {
             let units: Vec<Unit> = stage.iter().copied().filter(|u| u.level().is_some()).collect();

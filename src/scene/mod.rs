@@ -9,6 +9,11 @@
 //! unit_cube = true            # scale each copy into [-1,1]^3 first (WSCG'03 protocol)
 //!
 //! [chip]                      # all optional
+//! preset = "date05"           # a whole chip, the keys below and [timing]'s and [memory]'s
+//!                             # over it: "date05" (k = 24, binary32, DATE'05's DDR2, the
+//!                             # port at full speed, 800 MHz), "wscg03" (WSCG'03's DDR SDRAM
+//!                             # at 266 MHz, a 128-line triangle cache), "rtl" (the RTL's
+//!                             # reset values, the default); `cchip run --preset` replaces it
 //! k = 24
 //! format = "binary32"         # or "reduced" (e8m15) or "eEmF"; "e8m15/binary32": the DOP
 //!                             # datapath's format / T.CHECK's (narrower node words)
@@ -53,7 +58,8 @@
 //! Only what the outputs need is built and run (`graph::Plan`; `cchip run --explain`).
 //!
 //! [memory]                    # the memory model (optional; default: the ideal one)
-//! model = "ideal"             # or "ddr" (DDR SDRAM with banks and pages, cycle::memory::Ddr)
+//! model = "ideal"             # or "ddr" (DDR SDRAM with banks and pages, chip::memory::Ddr);
+//!                             # default: the preset's memory, its keys overridden
 //! latency = 1                 # ideal: clocks from an accepted request to its response
 //! interval = 1                # ideal: clocks between accepted requests (1 / words per clock)
 //! # bus_bits = 256            # ideal: a word moves in ceil(word bits / bus_bits) clocks
@@ -62,15 +68,16 @@
 //! # banks = 4, page_bytes = 4096, bus_bits = 256, burst = 8, hit = 8, miss = 20
 //!
 //! [timing]                    # the cycle model's microarchitecture (optional; default:
-//! queue_entries = 1024        # the RTL chip's, these values)
+//! queue_entries = 1024        # the preset's; the RTL chip's are these values)
 //! dop_latency = 15
-//! tri_latency = 130
+//! tri_latency = 54
 //! tri_fifo = 256
 //! issue_spacing = 2           # 1 or 2 clocks between DOP issues
 //! credit = 16                 # DOP tests in flight + leaf pairs waiting (RTL: 1 to 63)
 //! outstanding = 1             # memory requests in flight (1 to 64; the RTL chip 1 to 16)
 //! prefetch = 0                # node pairs whose words are fetched ahead (0 to 256; RTL 0 to 14)
-//! clock_mhz = 800             # the chip's clock for its time per query (DATE'05: 800)
+//! clock_mhz = 800             # the chip's clock for its time per query (default: the
+//!                             # preset's, an assumption: DATE'05 800, WSCG'03 266)
 //! ```
 
 pub mod graph;
@@ -78,7 +85,9 @@ pub mod record;
 pub mod run;
 
 use crate::chip::config::ChipConfig;
+use crate::chip::memory::{Ddr, MemTiming, Memory};
 use crate::chip::params::Params;
+use crate::chip::preset::Preset;
 use crate::chip::reg::Mode;
 use crate::pose::{sweep_poses, Pose, ScenePose, Sweep};
 use crate::traversal::Traversal;
@@ -92,8 +101,8 @@ pub const DEFAULT_SCENE: &str = include_str!("../../vectors/scenes/default.toml"
 #[serde(deny_unknown_fields)]
 struct File {
     objects: Objects,
-    #[serde(default)]
-    chip: ChipConfig,
+    /// A [`Preset`] and [`ChipConfig`]'s keys over it, read in two steps ([`chip`]).
+    chip: Option<Keys>,
     #[serde(default)]
     query: QuerySection,
     #[serde(default)]
@@ -104,28 +113,62 @@ struct File {
     #[serde(default)]
     memory: MemorySection,
     /// [`Params`] and the host's `clock_mhz`, read in two steps ([`timing`]).
-    timing: Option<toml::Spanned<toml::Table>>,
+    timing: Option<Keys>,
 }
 
-/// `[timing]`: the chip's [`Params`] (each key optional, the RTL chip's by default; the
-/// memory is `[memory]`'s) and `clock_mhz`. Errors name the section's line.
-fn timing(t: Option<toml::Spanned<toml::Table>>, text: &str) -> Result<(Params, f64), String> {
-    let Some(t) = t else { return Ok((Params::RTL, DEFAULT_CLOCK_MHZ)) };
-    let line = text[..t.span().start].matches('\n').count() + 1;
-    let mut table = t.into_inner();
-    let clock_mhz = match table.remove("clock_mhz") {
-        None => DEFAULT_CLOCK_MHZ,
-        Some(toml::Value::Float(x)) => x,
-        Some(toml::Value::Integer(i)) => i as f64,
-        Some(v) => return Err(format!("{line}: [timing] clock_mhz must be a number of MHz, not {v}")),
+/// A section's keys, each with its place in the file.
+type Keys = std::collections::BTreeMap<String, toml::Spanned<toml::Value>>;
+
+fn line_of(text: &str, at: usize) -> usize {
+    text[..at.min(text.len())].matches('\n').count() + 1
+}
+
+/// `value`'s keys with the scene's `keys` over them, as a `T` (a preset's values overridden,
+/// `drop` left out). An error names the line of the first key that makes it fail.
+fn over<T: serde::Serialize + serde::de::DeserializeOwned>(value: &T, keys: Keys, text: &str, section: &str, drop: &str) -> Result<T, String> {
+    let mut table = toml::Table::try_from(value).map_err(|e| e.to_string())?;
+    table.remove(drop);
+    let mut keys: Vec<(String, toml::Spanned<toml::Value>)> = keys.into_iter().collect();
+    keys.sort_by_key(|(_, v)| v.span().start);
+    let mut t = T::deserialize(table.clone()).map_err(|e| e.message().to_string())?;
+    for (k, v) in keys {
+        let line = line_of(text, v.span().start);
+        table.insert(k, v.into_inner());
+        t = T::deserialize(table.clone()).map_err(|e| format!("{line}: {section}: {}", e.message()))?;
+    }
+    Ok(t)
+}
+
+/// `[chip]`: the preset (the scene's, or `flag` over it; none: [`Preset::Rtl`], the RTL's reset
+/// point) and [`ChipConfig`]'s keys over its chip.
+fn chip(keys: Option<Keys>, text: &str, flag: Option<Preset>) -> Result<(Preset, ChipConfig), String> {
+    let mut keys = keys.unwrap_or_default();
+    let named = match keys.remove("preset") {
+        None => None,
+        Some(v) => {
+            let line = line_of(text, v.span().start);
+            let v = v.into_inner();
+            Some(Preset::deserialize(v.clone()).map_err(|_| format!("{line}: [chip] preset {v} is not known: use \"date05\", \"wscg03\" or \"rtl\""))?)
+        }
     };
-    let params = Params::deserialize(table).map_err(|e| format!("{line}: [timing]: {}", e.message()))?;
-    Ok((params, clock_mhz))
+    let preset = flag.or(named).unwrap_or(Preset::Rtl);
+    Ok((preset, over(&preset.chip(), keys, text, "[chip]", "")?))
 }
 
-/// The chip's clock without a `[timing] clock_mhz`: DATE'05's 800 MHz (an assumption, not a
-/// measured period).
-pub const DEFAULT_CLOCK_MHZ: f64 = 800.0;
+/// `[timing]`: the chip's [`Params`] (each key optional, the preset's by default; the memory
+/// is `[memory]`'s) and `clock_mhz`.
+fn timing(keys: Option<Keys>, text: &str, preset: Preset) -> Result<(Params, f64), String> {
+    let mut keys = keys.unwrap_or_default();
+    let clock_mhz = match keys.remove("clock_mhz") {
+        None => preset.clock_mhz(),
+        Some(v) => match v.get_ref() {
+            toml::Value::Float(x) => *x,
+            toml::Value::Integer(i) => *i as f64,
+            other => return Err(format!("{}: [timing] clock_mhz must be a number of MHz, not {other}", line_of(text, v.span().start))),
+        },
+    };
+    Ok((over(&preset.params(), keys, text, "[timing]", "memory")?, clock_mhz))
+}
 
 /// `[memory]`: the ideal model (`latency`, `interval`, `bus_bits`; the default, 1, 1 and a
 /// word per clock) or
@@ -146,17 +189,19 @@ struct MemorySection {
 }
 
 impl MemorySection {
-    fn memory(&self) -> Result<crate::chip::memory::Memory, String> {
-        use crate::chip::memory::Ddr;
-        use crate::chip::memory::MemTiming;
-        use crate::chip::memory::Memory;
+    /// The memory: this section's keys over `preset`'s (the chip preset's memory).
+    fn memory(&self, preset: Memory) -> Result<Memory, String> {
         let ddr_keys = [self.banks, self.page_bytes, self.burst, self.hit, self.miss];
-        match self.model.as_deref().unwrap_or("ideal") {
+        let (preset_model, preset_ideal, preset_ddr) = match preset {
+            Memory::Ideal(t) => ("ideal", t, None),
+            Memory::Ddr(d) => ("ddr", MemTiming::default(), Some(d)),
+        };
+        match self.model.as_deref().unwrap_or(preset_model) {
             "ideal" => {
                 if self.preset.is_some() || ddr_keys.iter().any(Option::is_some) {
                     return Err("[memory] preset, banks, page_bytes, burst, hit and miss belong to model = \"ddr\"; the ideal model takes latency, interval and bus_bits".into());
                 }
-                let d = MemTiming::default();
+                let d = if self.model.is_some() { MemTiming::default() } else { preset_ideal };
                 Ok(Memory::Ideal(MemTiming { latency: self.latency.unwrap_or(d.latency), interval: self.interval.unwrap_or(d.interval), bus_bits: self.bus_bits }))
             }
             "ddr" => {
@@ -165,7 +210,8 @@ impl MemorySection {
                 }
                 let base = (self.preset.as_deref())
                     .map(|p| Ddr::preset(p).ok_or_else(|| format!("[memory] preset \"{p}\" is not known: use \"wscg03\" or \"date05\"")))
-                    .transpose()?;
+                    .transpose()?
+                    .or(preset_ddr.filter(|_| self.model.is_none()));
                 // each parameter: the scene's, else the preset's
                 let get = |key: &str, own: Option<u32>, preset: fn(&Ddr) -> u32| {
                     own.or(base.as_ref().map(preset)).ok_or_else(|| {
@@ -336,6 +382,8 @@ pub struct Outputs {
 pub struct Scene {
     pub name: String,
     pub objects: Objects,
+    /// The configuration the scene's keys override.
+    pub preset: Preset,
     pub cfg: ChipConfig,
     pub mode: Mode,
     pub traversal: Traversal,
@@ -348,12 +396,28 @@ pub struct Scene {
 }
 
 impl Scene {
+    /// The configuration the scene resolved to: its preset and every value it runs with.
+    pub fn configuration(&self) -> String {
+        let (c, p) = (&self.cfg, &self.params);
+        format!(
+            "configuration (preset {} and the scene's keys):\n  chip: k = {}, format {}, dop_rounding {}, tri_rounding {:?}, tri_cache {}\n  timing: queue_entries {}, dop_latency {}, tri_latency {}, tri_fifo {}, issue_spacing {}, credit {}, outstanding {}, prefetch {}\n  memory: {}\n  clock: {} MHz (assumed, not a measured period)",
+            self.preset.name(), c.k, c.format, c.dop_rounding, c.tri_rounding, c.tri_cache,
+            p.queue_entries, p.dop_latency, p.tri_latency, p.tri_fifo, p.issue_spacing, p.credit, p.outstanding, p.prefetch,
+            p.memory, self.clock_mhz
+        )
+    }
+
     /// Reads a scene file; its mesh paths are taken relative to its directory (a spec stays a
     /// built-in name only if it is one and no such file is there).
     pub fn load(path: &Path) -> Result<Scene, String> {
+        Scene::load_with(path, None)
+    }
+
+    /// [`load`](Self::load) with `preset` in place of the scene's own (`cchip run --preset`).
+    pub fn load_with(path: &Path, preset: Option<Preset>) -> Result<Scene, String> {
         let text = std::fs::read_to_string(path)
             .map_err(|e| format!("{}: cannot read scene: {e}", path.display()))?;
-        let mut scene = Scene::parse(&text, &path.display().to_string())?;
+        let mut scene = Scene::parse_with(&text, &path.display().to_string(), preset)?;
         let dir = path.parent().unwrap_or(Path::new(""));
         for spec in [&mut scene.objects.a, &mut scene.objects.b] {
             let local = dir.join(&*spec);
@@ -366,6 +430,11 @@ impl Scene {
 
     /// `name` is used in error messages (the file name).
     pub fn parse(text: &str, name: &str) -> Result<Scene, String> {
+        Scene::parse_with(text, name, None)
+    }
+
+    /// [`parse`](Self::parse) with `preset` in place of the scene's own.
+    pub fn parse_with(text: &str, name: &str, preset: Option<Preset>) -> Result<Scene, String> {
         let f: File = toml::from_str(text).map_err(|e| {
             let line = e.span().map(|s| text[..s.start].matches('\n').count() + 1);
             match line {
@@ -374,7 +443,7 @@ impl Scene {
             }
         })?;
         let err = |m: String| format!("{name}: {m}");
-        let cfg = f.chip;
+        let (preset, cfg) = chip(f.chip, text, preset).map_err(|e| format!("{name}:{e}"))?;
         cfg.check().map_err(|e| err(format!("[chip] {e}")))?;
         let poses = match (&f.sweep, f.pose.is_empty()) {
             (Some(_), false) => return Err(err("give either [[pose]] entries or a [sweep], not both".into())),
@@ -385,8 +454,8 @@ impl Scene {
         if let Some(p) = poses.iter().find(|p| !p.pose.rot_deg.iter().chain(&p.pose.t).all(|x| x.is_finite())) {
             return Err(err(format!("pose {} has a non-finite number", p.pose.text())));
         }
-        let (mut params, clock_mhz) = timing(f.timing, text).map_err(|e| format!("{name}:{e}"))?;
-        params.memory = f.memory.memory().map_err(err)?;
+        let (mut params, clock_mhz) = timing(f.timing, text, preset).map_err(|e| format!("{name}:{e}"))?;
+        params.memory = f.memory.memory(preset.params().memory).map_err(err)?;
         params.check().map_err(|e| err(format!("[timing] / [memory]: {e}")))?;
         if !(clock_mhz.is_finite() && clock_mhz > 0.0) {
             return Err(err(format!("[timing] clock_mhz must be a positive number of MHz, not {clock_mhz}")));
@@ -394,6 +463,7 @@ impl Scene {
         Ok(Scene {
             name: name.to_string(),
             objects: f.objects,
+            preset,
             cfg,
             mode: f.query.mode.unwrap_or(Mode::All),
             traversal: f.query.traversal.unwrap_or(Traversal::Lifo),
@@ -534,6 +604,38 @@ mod tests {
         let s = Scene::parse(&format!("[outputs]\ncycles = true\n{base}model = \"ddr\"\npreset = \"wscg03\""), "s").unwrap();
         let explain = crate::scene::graph::Plan::of(&s).explain(&s);
         assert!(explain.contains("DDR SDRAM: 4 banks, 4096-byte pages, 256-bit bus, bursts of 8, page hit 8 and miss 20 clocks"), "{explain}");
+    }
+
+    /// A chip preset is the base of `[chip]`, `[timing]`, `[memory]` and the clock; the
+    /// scene's keys override each of its values, and `--preset` replaces the scene's.
+    #[test]
+    fn chip_presets_and_their_overrides() {
+        use crate::chip::memory::Memory;
+        let base = "[objects]\na = \"sphere:12\"\nb = \"sphere:12\"\n[[pose]]\nrot_deg=[0,0,0]\nt=[0,0,0]\n";
+        let parse = |t: &str| Scene::parse(&format!("{base}{t}"), "s");
+        // no preset: the RTL's reset values, as before presets
+        let rtl = parse("").unwrap();
+        assert_eq!((rtl.preset, rtl.cfg, rtl.params, rtl.clock_mhz), (Preset::Rtl, ChipConfig::default(), Params::RTL, 800.0));
+        let d = parse("[chip]\npreset = \"date05\"").unwrap();
+        assert_eq!((d.cfg.k, d.params.memory, d.clock_mhz), (24, Memory::Ddr(Ddr::DATE05), 800.0));
+        assert_eq!((d.params.issue_spacing, d.params.outstanding, d.params.prefetch, d.params.credit), (1, 16, 14, 48));
+        // each key over the preset's value, the rest kept
+        let o = parse("[chip]\npreset = \"date05\"\nk = 6\n[timing]\ncredit = 32\nclock_mhz = 400\n[memory]\nbanks = 4").unwrap();
+        assert_eq!((o.cfg.k, o.cfg.format, o.params.credit, o.params.prefetch, o.clock_mhz), (6, d.cfg.format, 32, 14, 400.0));
+        assert_eq!(o.params.memory, Memory::Ddr(Ddr { banks: 4, ..Ddr::DATE05 }));
+        // a memory model named replaces the preset's
+        let i = parse("[chip]\npreset = \"date05\"\n[memory]\nmodel = \"ideal\"").unwrap();
+        assert_eq!(i.params.memory, Memory::Ideal(MemTiming::default()));
+        let w = parse("[chip]\npreset = \"wscg03\"").unwrap();
+        assert_eq!((w.cfg.tri_cache, w.params.memory, w.clock_mhz), (128, Memory::Ddr(Ddr::WSCG03), 266.0));
+        // --preset replaces the scene's preset, not its keys
+        let f = Scene::parse_with(&format!("{base}[chip]\npreset = \"date05\"\nk = 6"), "s", Some(Preset::Rtl)).unwrap();
+        assert_eq!((f.preset, f.cfg.k, f.params), (Preset::Rtl, 6, Params::RTL));
+        let e = parse("[chip]\npreset = \"date06\"").unwrap_err();
+        assert!(e.starts_with("s:8:") && e.contains("\"date05\", \"wscg03\" or \"rtl\""), "{e}");
+        let e = parse("[chip]\nkk = 6").unwrap_err();
+        assert!(e.starts_with("s:8: [chip]") && e.contains("unknown field `kk`"), "{e}");
+        assert!(graph::Plan::of(&d).explain(&d).contains("preset date05"));
     }
 
     /// Issue 16: mesh paths were resolved against the current directory.

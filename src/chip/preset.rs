@@ -1,0 +1,66 @@
+//! The papers' configurations and the RTL's reset point, each a whole chip: its
+//! configuration, timing parameters, memory and clock. A scene names one (`[chip] preset`)
+//! and overrides any of its keys; `cchip run --preset` overrides the scene's.
+
+use super::config::ChipConfig;
+use super::memory::{Ddr, Memory};
+use super::params::Params;
+use super::rtl;
+use serde::{Deserialize, Serialize};
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, clap::ValueEnum)]
+#[serde(rename_all = "kebab-case")]
+pub enum Preset {
+    /// DATE'05's chip: k = 24, binary32, DATE'05's 756-bit DDR2 (our timing assumptions,
+    /// `Ddr::DATE05`) and the memory port at full speed (an issue every clock, 16 requests in
+    /// flight, 14 pairs prefetched, a credit of 48); the paper's 800 MHz.
+    Date05,
+    /// WSCG'03's memory: its 4-bank DDR SDRAM on a 256-bit bus (`Ddr::WSCG03`) at 266 MHz,
+    /// A's 128-line triangle cache (§4.3), requests in flight as `date05`, on DATE'05's k = 24
+    /// binary32 datapath.
+    Wscg03,
+    /// The RTL chips' reset values, which the checked-in traces use: one request outstanding,
+    /// issues two clocks apart, a memory word every clock after one clock; 800 MHz.
+    Rtl,
+}
+
+impl Preset {
+    /// The memory port at full speed: what the RTL's register 0x126 allows at most but the
+    /// credit.
+    fn full_port(memory: Memory) -> Params {
+        let outstanding = rtl::PORT_OUTSTANDING as u32;
+        Params { issue_spacing: 1, outstanding, credit: 48, prefetch: rtl::PORT_PREFETCH as u32, memory, ..Params::RTL }
+    }
+
+    pub fn chip(self) -> ChipConfig {
+        match self {
+            Preset::Date05 | Preset::Rtl => ChipConfig::default(),
+            Preset::Wscg03 => ChipConfig { tri_cache: 128, ..ChipConfig::default() },
+        }
+    }
+
+    pub fn params(self) -> Params {
+        match self {
+            Preset::Date05 => Preset::full_port(Memory::Ddr(Ddr::DATE05)),
+            Preset::Wscg03 => Preset::full_port(Memory::Ddr(Ddr::WSCG03)),
+            Preset::Rtl => Params::RTL,
+        }
+    }
+
+    /// The papers' clocks (DATE'05's target, WSCG'03's memory clock): assumed, not measured.
+    pub fn clock_mhz(self) -> f64 {
+        match self {
+            Preset::Date05 | Preset::Rtl => 800.0,
+            Preset::Wscg03 => 266.0,
+        }
+    }
+
+    /// The name scenes and the CLI use.
+    pub fn name(self) -> &'static str {
+        match self {
+            Preset::Date05 => "date05",
+            Preset::Wscg03 => "wscg03",
+            Preset::Rtl => "rtl",
+        }
+    }
+}
