@@ -37,10 +37,13 @@ done
 #         within depth), abc = yosys-abc bmc3 to depth (frames).
 PQ_PREP='rename top pair_queue'
 PQ_HIER='connect -set f_order_lifo dut.order_lifo$q'
+RP_PREP='hierarchy -top \top$result; rename \top$result result_port'
 PROOFS=(
   "pair_queue.bounds|pair_queue.sv|rtl/pair_queue_n4.v|BOUNDS|ind|4/20|count <= 16, count/max_count/overflow = the spec's model, empty = (count == 0), full = (count == 16), max_count >= count, overflow sticky until clear, top_data 0 while empty, order latched by clear"
   "pair_queue.step|pair_queue.sv|rtl/pair_queue_n4.v|BOUNDS STEP|ind|4/20|count changes by push + push2 - pop when nothing overflows and no empty pop; LIFO top_data after a push is the last stored pushed entry; FIFO a push into an empty queue becomes top_data; clear empties"
   "pair_queue.order|pair_queue.sv|rtl/pair_queue_n4.v|ORDER|abc|10|tracked (any-constant) entry, FIFO and LIFO: shown on top_data exactly when all entries that leave before it have left, removed by exactly one pop, never shown before it is pushed nor after it is popped"
+  "result_port.port|result_port.sv|rtl/chip_e8m15_k6.v|PORT|ind|2/20|open = taken - given (<= 511), give = offered and out_ready, a kept (hit/uncertain) result leaves exactly when the host reads it, shown with its tag and uncertain bit while offered, back-pressure on TRI_UNIT while the host is not ready, a separate result leaves at once unseen, sure_hit"
+  "result_port.cover|result_port.sv|rtl/chip_e8m15_k6.v|COVER|cover|8|reachable: back-pressure for two edges, a take and a give at one edge, 3 pairs open, a separate result passing while the host is not ready, an uncertain result read"
   "pair_queue.cover|pair_queue.sv|rtl/pair_queue_n4.v|COVER|cover|14|reachable: full, overflow, two stored pushes in a cycle, a stored push2 alone, FIFO/LIFO tracked entry out after 3+ others, LIFO full with pop+push+push2"
 )
 
@@ -54,10 +57,13 @@ MUTANTS=(
   "lifo_push2_top_is_push|pair_queue.step|rtl/pair_queue_n4.v|/if (order_lifo\$q) begin/,/else begin/s/top_r\$d = push2_data;/top_r\$d = e1;/"
   "fifo_rd_ptr_stuck|pair_queue.order|rtl/pair_queue_n4.v|s/rd_n = rd_ptr\$q + 32'h1;/rd_n = rd_ptr\$q;/"
   "no_bypass|pair_queue.order|rtl/pair_queue_n4.v|s/byp\$d = (we_a \& (raddr == wr_ptr\$q)) | (we_b \& (raddr == wr1));/byp\$d = 1'b0;/"
+  "result_hides_uncertain|result_port.port|rtl/chip_e8m15_k6.v|s/keep = out_hit | out_uncertain;/keep = out_hit;/"
+  "result_open_no_decrement|result_port.port|rtl/chip_e8m15_k6.v|s/open_r\$d = open_r\$q - 32'h1;/open_r\$d = open_r\$q;/"
+  "result_separate_waits|result_port.port|rtl/chip_e8m15_k6.v|s/give = out_valid \& (res_ready | ~keep);/give = out_valid \& res_ready;/"
   "lifo_pop_no_wr_ptr_dec|pair_queue.order|rtl/pair_queue_n4.v|s/wr_n = wr_ptr\$q - 32'h1;/wr_n = wr_ptr\$q;/"
 )
 
-prep_of() { case $1 in pair_queue.*) echo "$PQ_PREP";; esac; }
+prep_of() { case $1 in pair_queue.*) echo "$PQ_PREP";; result_port.*) echo "$RP_PREP";; esac; }
 hier_of() { case $1 in pair_queue.*) echo "$PQ_HIER";; esac; }
 
 # build <name> <wrapper> <dut.v> <defines> <engine> <dir>: writes <dir>/<name>.smt2 or .aig
