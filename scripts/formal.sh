@@ -44,6 +44,9 @@ PROOFS=(
   "pair_queue.order|pair_queue.sv|rtl/pair_queue_n4.v|ORDER|abc|10|tracked (any-constant) entry, FIFO and LIFO: shown on top_data exactly when all entries that leave before it have left, removed by exactly one pop, never shown before it is pushed nor after it is popped"
   "result_port.port|result_port.sv|rtl/chip_e8m15_k6.v|PORT|ind|2/20|open = taken - given (<= 511), give = offered and out_ready, a kept (hit/uncertain) result leaves exactly when the host reads it, shown with its tag and uncertain bit while offered, back-pressure on TRI_UNIT while the host is not ready, a separate result leaves at once unseen, sure_hit"
   "result_port.cover|result_port.sv|rtl/chip_e8m15_k6.v|COVER|cover|8|reachable: back-pressure for two edges, a take and a give at one edge, 3 pairs open, a separate result passing while the host is not ready, an uncertain result read"
+  "mem_port.count|mem_port.sv|rtl/chip_e8m15_k6.v|COUNT|ind|2/20|accept = mem_req_valid && mem_req_ready; outstanding (tag_n) = accepted - answered, <= port_out + 1 and <= 16; outstanding flag; accept only with <= port_out outstanding; resp only while one is outstanding (spurious memory responses ignored), and always then"
+  "mem_port.order|mem_port.sv|rtl/chip_e8m15_k6.v|ORDER|abc|20|each response routed (resp_dst) to the destination of the oldest unanswered accepted request (a FIFO model in the wrapper)"
+  "mem_port.cover|mem_port.sv|rtl/chip_e8m15_k6.v|COVER|cover|20|reachable: 16 outstanding, a request and a response at one edge, a spurious memory response ignored, responses to all four destinations"
   "pair_queue.cover|pair_queue.sv|rtl/pair_queue_n4.v|COVER|cover|14|reachable: full, overflow, two stored pushes in a cycle, a stored push2 alone, FIFO/LIFO tracked entry out after 3+ others, LIFO full with pop+push+push2"
 )
 
@@ -60,11 +63,16 @@ MUTANTS=(
   "result_hides_uncertain|result_port.port|rtl/chip_e8m15_k6.v|s/keep = out_hit | out_uncertain;/keep = out_hit;/"
   "result_open_no_decrement|result_port.port|rtl/chip_e8m15_k6.v|s/open_r\$d = open_r\$q - 32'h1;/open_r\$d = open_r\$q;/"
   "result_separate_waits|result_port.port|rtl/chip_e8m15_k6.v|s/give = out_valid \& (res_ready | ~keep);/give = out_valid \& res_ready;/"
+  "mem_credit_off_by_one|mem_port.count|rtl/chip_e8m15_k6.v|s/port_free = tag_n\$q <= ((port_out) \& 5'h1f);/port_free = tag_n\$q <= ((port_out) \& 5'h1f) + 5'h1;/"
+  "mem_resp_unguarded|mem_port.count|rtl/chip_e8m15_k6.v|s/resp = mem_resp_valid \& (tag_n\$q != 32'h0);/resp = mem_resp_valid;/"
+  "mem_tag_head_stuck|mem_port.order|rtl/chip_e8m15_k6.v|s/tag_head\$d = tag_head\$q + 32'h1;/tag_head\$d = tag_head\$q;/"
   "lifo_pop_no_wr_ptr_dec|pair_queue.order|rtl/pair_queue_n4.v|s/wr_n = wr_ptr\$q - 32'h1;/wr_n = wr_ptr\$q;/"
 )
 
-prep_of() { case $1 in pair_queue.*) echo "$PQ_PREP";; result_port.*) echo "$RP_PREP";; esac; }
-hier_of() { case $1 in pair_queue.*) echo "$PQ_HIER";; esac; }
+MP_PREP='hierarchy -top \top$mem_port; rename \top$mem_port mem_port'
+MP_HIER='connect -set f_tag_n dut.tag_n$q'
+prep_of() { case $1 in pair_queue.*) echo "$PQ_PREP";; result_port.*) echo "$RP_PREP";; mem_port.*) echo "$MP_PREP";; esac; }
+hier_of() { case $1 in pair_queue.*) echo "$PQ_HIER";; mem_port.*) echo "$MP_HIER";; esac; }
 
 # build <name> <wrapper> <dut.v> <defines> <engine> <dir>: writes <dir>/<name>.smt2 or .aig
 build() {
