@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Formal proofs of the chip's control blocks (issue 35): the wrappers in scripts/formal/
-# around the exported Verilog, unchanged, proven with Yosys and yosys-smtbmc (z3) or, where
+# Formal proofs of the chip's control blocks (issue 35): the pair queue
+# (rtl/pair_queue_n4.v), the result port and the memory port (top$result, top$mem_port of
+# rtl/chip_e8m15_k6.v); the wrappers in scripts/formal/ around the exported Verilog, unchanged, proven with Yosys and yosys-smtbmc (z3) or, where
 # SMT BMC is too slow, Yosys's ABC (`bmc3`). Prints PASS/FAIL per proof (a group of
 # properties, listed) and a last line `N passed, M failed`; exits non-zero on a failure.
 #
@@ -42,12 +43,12 @@ PROOFS=(
   "pair_queue.bounds|pair_queue.sv|rtl/pair_queue_n4.v|BOUNDS|ind|4/20|count <= 16, count/max_count/overflow = the spec's model, empty = (count == 0), full = (count == 16), max_count >= count, overflow sticky until clear, top_data 0 while empty, order latched by clear"
   "pair_queue.step|pair_queue.sv|rtl/pair_queue_n4.v|BOUNDS STEP|ind|4/20|count changes by push + push2 - pop when nothing overflows and no empty pop; LIFO top_data after a push is the last stored pushed entry; FIFO a push into an empty queue becomes top_data; clear empties"
   "pair_queue.order|pair_queue.sv|rtl/pair_queue_n4.v|ORDER|abc|10|tracked (any-constant) entry, FIFO and LIFO: shown on top_data exactly when all entries that leave before it have left, removed by exactly one pop, never shown before it is pushed nor after it is popped"
+  "pair_queue.cover|pair_queue.sv|rtl/pair_queue_n4.v|COVER|cover|14|reachable: full, overflow, two stored pushes in a cycle, a stored push2 alone, FIFO/LIFO tracked entry out after 3+ others, LIFO full with pop+push+push2"
   "result_port.port|result_port.sv|rtl/chip_e8m15_k6.v|PORT|ind|2/20|open = taken - given (<= 511), give = offered and out_ready, a kept (hit/uncertain) result leaves exactly when the host reads it, shown with its tag and uncertain bit while offered, back-pressure on TRI_UNIT while the host is not ready, a separate result leaves at once unseen, sure_hit"
   "result_port.cover|result_port.sv|rtl/chip_e8m15_k6.v|COVER|cover|8|reachable: back-pressure for two edges, a take and a give at one edge, 3 pairs open, a separate result passing while the host is not ready, an uncertain result read"
   "mem_port.count|mem_port.sv|rtl/chip_e8m15_k6.v|COUNT|ind|2/20|accept = mem_req_valid && mem_req_ready; outstanding (tag_n) = accepted - answered, <= port_out + 1 and <= 16; outstanding flag; accept only with <= port_out outstanding; resp only while one is outstanding (spurious memory responses ignored), and always then"
   "mem_port.order|mem_port.sv|rtl/chip_e8m15_k6.v|ORDER|abc|20|each response routed (resp_dst) to the destination of the oldest unanswered accepted request (a FIFO model in the wrapper)"
   "mem_port.cover|mem_port.sv|rtl/chip_e8m15_k6.v|COVER|cover|20|reachable: 16 outstanding, a request and a response at one edge, a spurious memory response ignored, responses to all four destinations"
-  "pair_queue.cover|pair_queue.sv|rtl/pair_queue_n4.v|COVER|cover|14|reachable: full, overflow, two stored pushes in a cycle, a stored push2 alone, FIFO/LIFO tracked entry out after 3+ others, LIFO full with pop+push+push2"
 )
 
 # ---- mutants: name | proof it must break | DUT Verilog | sed script (applied to a copy)
