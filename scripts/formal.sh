@@ -108,7 +108,8 @@ prove() {
            grep -q "No output asserted in" "$log" && return 0
            return 1 ;;
   esac
-  grep -q "Status: PASSED" "$log"
+  # the last status (for ind the induction step's; the base case's is above it)
+  grep "Status:" "$log" | tail -1 | grep -q "Status: PASSED"
 }
 
 fail_detail() { # the first failed assertion / unreached cover in a log, with its source line
