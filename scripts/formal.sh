@@ -1,0 +1,167 @@
+#!/usr/bin/env bash
+# Formal proofs of the chip's control blocks (issue 35): the pair queue
+# (rtl/pair_queue_n4.v), the result port and the memory port (top$result, top$mem_port of
+# rtl/chip_e8m15_k6.v); the wrappers in scripts/formal/ around the exported Verilog, unchanged, proven with Yosys and yosys-smtbmc (z3) or, where
+# SMT BMC is too slow, Yosys's ABC (`bmc3`). Prints PASS/FAIL per proof (a group of
+# properties, listed) and a last line `N passed, M failed`; exits non-zero on a failure.
+#
+# Needs: yosys (0.23; it ships yosys-smtbmc and yosys-abc) and z3. Debian 12:
+#   apt-get install -y yosys z3
+# It installs nothing. (Debian's boolector, 1.5.118 from 2012, cannot read yosys-smtbmc's
+# SMT-LIB; without --unroll, z3 4.8.12 hangs on the queue's first step, so every SMT run
+# uses --unroll.)
+#
+# Usage: scripts/formal.sh [--mutate] [proof ...]
+#   (default: every proof; names as printed, e.g. pair_queue.bounds)
+#   --mutate  instead runs each hand mutation of MUTANTS below on a copy of the Verilog
+#             (sed, under target/formal/mutants/) against the proof it must break, and
+#             fails unless every mutant makes its proof FAIL.
+# Everything goes under target/formal/ (the SMT2/AIGER files, one log per run).
+set -uo pipefail
+cd "$(dirname "$0")/.."
+root=$PWD
+out=$root/target/formal
+mkdir -p "$out"
+
+mutate=0
+if [ "${1:-}" = "--mutate" ]; then mutate=1; shift; fi
+only=("$@")
+
+for tool in yosys yosys-smtbmc yosys-abc z3; do
+  command -v "$tool" >/dev/null || { echo "formal.sh: $tool not found (apt-get install -y yosys z3)" >&2; exit 2; }
+done
+
+# ---- proofs: name | wrapper | DUT Verilog | Yosys lines before write (after reading) | defines | engine | depth | what
+# engine: ind = k-induction, depth k/b: yosys-smtbmc BMC to b >= k (the base case) and
+#         yosys-smtbmc -i to k (the induction step),
+#         bmc = yosys-smtbmc BMC to depth, cover = yosys-smtbmc -c (every cover reached
+#         within depth), abc = yosys-abc bmc3 to depth (frames).
+PQ_PREP='rename top pair_queue'
+PQ_HIER='connect -set f_order_lifo dut.order_lifo$q'
+RP_PREP='hierarchy -top \top$result; rename \top$result result_port'
+PROOFS=(
+  "pair_queue.bounds|pair_queue.sv|rtl/pair_queue_n4.v|BOUNDS|ind|4/20|count <= 16, count/max_count/overflow = the spec's model, empty = (count == 0), full = (count == 16), max_count >= count, overflow sticky until clear, top_data 0 while empty, order latched by clear"
+  "pair_queue.step|pair_queue.sv|rtl/pair_queue_n4.v|BOUNDS STEP|ind|4/20|count changes by push + push2 - pop when nothing overflows and no empty pop; LIFO top_data after a push is the last stored pushed entry; FIFO a push into an empty queue becomes top_data; clear empties"
+  "pair_queue.order|pair_queue.sv|rtl/pair_queue_n4.v|ORDER|abc|10|tracked (any-constant) entry, FIFO and LIFO: shown on top_data exactly when all entries that leave before it have left, removed by exactly one pop, never shown before it is pushed nor after it is popped"
+  "pair_queue.cover|pair_queue.sv|rtl/pair_queue_n4.v|COVER|cover|14|reachable: full, overflow, two stored pushes in a cycle, a stored push2 alone, FIFO and LIFO tracked entry out with 4+ entries held at some point, LIFO full with pop+push+push2"
+  "result_port.port|result_port.sv|rtl/chip_e8m15_k6.v|PORT|ind|2/20|open = taken - given (<= 511), give = offered and out_ready, a kept (hit/uncertain) result leaves exactly when the host reads it, shown with its tag and uncertain bit while offered, back-pressure on TRI_UNIT while the host is not ready, a separate result leaves at once unseen, sure_hit"
+  "result_port.cover|result_port.sv|rtl/chip_e8m15_k6.v|COVER|cover|8|reachable: back-pressure for two edges, a take and a give at one edge, 3 pairs open, a separate result passing while the host is not ready, an uncertain result read"
+  "mem_port.count|mem_port.sv|rtl/chip_e8m15_k6.v|COUNT|ind|2/20|accept = mem_req_valid && mem_req_ready; outstanding (tag_n) = accepted - answered, <= port_out + 1 and <= 16; outstanding flag; accept only with <= port_out outstanding; resp only while one is outstanding (spurious memory responses ignored), and always then"
+  "mem_port.order|mem_port.sv|rtl/chip_e8m15_k6.v|ORDER|abc|20|each response routed (resp_dst) to the destination of the oldest unanswered accepted request (a FIFO model in the wrapper)"
+  "mem_port.cover|mem_port.sv|rtl/chip_e8m15_k6.v|COVER|cover|20|reachable: 16 outstanding, a request and a response at one edge, a spurious memory response ignored, responses to all four destinations"
+)
+
+# ---- mutants: name | proof it must break | DUT Verilog | sed script (applied to a copy)
+MUTANTS=(
+  "s2_room_off_by_one|pair_queue.bounds|rtl/pair_queue_n4.v|s/s2 = two \& (c0 + 32'h1 < c_cap);/s2 = two \& (c0 + 32'h1 <= c_cap);/"
+  "full_flag_at_15|pair_queue.bounds|rtl/pair_queue_n4.v|s/full = cnt\$q == c_cap;/full = cnt\$q == c_cap - 5'h1;/"
+  "max_count_lags|pair_queue.bounds|rtl/pair_queue_n4.v|s/if (cnt_n > max_r\$q) begin/if (cnt_n > max_r\$q + 5'h1) begin/"
+  "overflow_not_sticky|pair_queue.bounds|rtl/pair_queue_n4.v|s/ovf_r\$d = ovf_r\$q;/ovf_r\$d = 1'b0;/"
+  "overflow_on_one_push|pair_queue.bounds|rtl/pair_queue_n4.v|s/if ((any \& ~s1) | (two \& ~s2)) begin/if ((any \& ~s1)) begin/"
+  "lifo_push2_top_is_push|pair_queue.step|rtl/pair_queue_n4.v|/if (order_lifo\$q) begin/,/else begin/s/top_r\$d = push2_data;/top_r\$d = e1;/"
+  "fifo_rd_ptr_stuck|pair_queue.order|rtl/pair_queue_n4.v|s/rd_n = rd_ptr\$q + 32'h1;/rd_n = rd_ptr\$q;/"
+  "no_bypass|pair_queue.order|rtl/pair_queue_n4.v|s/byp\$d = (we_a \& (raddr == wr_ptr\$q)) | (we_b \& (raddr == wr1));/byp\$d = 1'b0;/"
+  "result_hides_uncertain|result_port.port|rtl/chip_e8m15_k6.v|s/keep = out_hit | out_uncertain;/keep = out_hit;/"
+  "result_open_no_decrement|result_port.port|rtl/chip_e8m15_k6.v|s/open_r\$d = open_r\$q - 32'h1;/open_r\$d = open_r\$q;/"
+  "result_separate_waits|result_port.port|rtl/chip_e8m15_k6.v|s/give = out_valid \& (res_ready | ~keep);/give = out_valid \& res_ready;/"
+  "mem_credit_off_by_one|mem_port.count|rtl/chip_e8m15_k6.v|s/port_free = tag_n\$q <= ((port_out) \& 5'h1f);/port_free = tag_n\$q <= ((port_out) \& 5'h1f) + 5'h1;/"
+  "mem_resp_unguarded|mem_port.count|rtl/chip_e8m15_k6.v|s/resp = mem_resp_valid \& (tag_n\$q != 32'h0);/resp = mem_resp_valid;/"
+  "mem_tag_head_stuck|mem_port.order|rtl/chip_e8m15_k6.v|s/tag_head\$d = tag_head\$q + 32'h1;/tag_head\$d = tag_head\$q;/"
+  "lifo_pop_no_wr_ptr_dec|pair_queue.order|rtl/pair_queue_n4.v|s/wr_n = wr_ptr\$q - 32'h1;/wr_n = wr_ptr\$q;/"
+)
+
+MP_PREP='hierarchy -top \top$mem_port; rename \top$mem_port mem_port'
+MP_HIER='connect -set f_tag_n dut.tag_n$q'
+prep_of() { case $1 in pair_queue.*) echo "$PQ_PREP";; result_port.*) echo "$RP_PREP";; mem_port.*) echo "$MP_PREP";; esac; }
+hier_of() { case $1 in pair_queue.*) echo "$PQ_HIER";; mem_port.*) echo "$MP_HIER";; esac; }
+
+# build <name> <wrapper> <dut.v> <defines> <engine> <dir>: writes <dir>/<name>.smt2 or .aig
+build() {
+  local name=$1 wrapper=$2 dut=$3 defs=$4 engine=$5 dir=$6 dflags="" d
+  for d in $defs; do dflags+=" -D$d"; done
+  local common="read_verilog $dut; $(prep_of "$name"); read_verilog -formal$dflags $root/scripts/formal/$wrapper; hierarchy -top wrapper; proc; flatten; $(hier_of "$name"); prep -top wrapper"
+  if [ "$engine" = abc ]; then
+    yosys -q -l "$dir/$name.yosys.log" -p "$common; memory_map; opt -fast; async2sync; chformal -assume -early; chformal -live -fair -cover -remove; opt_clean; setundef -anyseq; opt -keepdc -fast; delete -output; techmap; opt -fast; dffunmap; aigmap; opt_clean; write_aiger -I -B -zinit -map $dir/$name.aim $dir/$name.aig" >/dev/null 2>&1
+  else
+    yosys -q -l "$dir/$name.yosys.log" -p "$common; async2sync; dffunmap; write_smt2 -wires $dir/$name.smt2" >/dev/null 2>&1
+  fi
+}
+
+# prove <name> <wrapper> <dut.v> <defines> <engine> <depth> <dir>: 0 = proven, 1 = failed
+prove() {
+  local name=$1 wrapper=$2 dut=$3 defs=$4 engine=$5 depth=$6 dir=$7 log
+  log=$dir/$name.log
+  if ! build "$name" "$wrapper" "$dut" "$defs" "$engine" "$dir"; then
+    echo "yosys failed: $dir/$name.yosys.log" >"$log"; return 1
+  fi
+  case $engine in
+    ind)   # depth k/b: the base case (BMC to b >= k, deeper than needed so that a broken
+           # design fails with a real trace, not only an induction step) then the step
+           yosys-smtbmc -s z3 --unroll --noprogress -t "${depth#*/}" "$dir/$name.smt2" >"$log" 2>&1 \
+             && grep -q "Status: PASSED" "$log" || return 1
+           yosys-smtbmc -s z3 --unroll --noprogress -i -t "${depth%/*}" "$dir/$name.smt2" >>"$log" 2>&1 ;;
+    bmc)   yosys-smtbmc -s z3 --unroll --noprogress -t "$depth" "$dir/$name.smt2" >"$log" 2>&1 ;;
+    cover) yosys-smtbmc -s z3 --unroll --noprogress -c -t "$depth" "$dir/$name.smt2" >"$log" 2>&1 ;;
+    abc)   yosys-abc -c "read_aiger $dir/$name.aig; fold; strash; bmc3 -F $depth -v" >"$log" 2>&1
+           # "No output asserted in N frames." = passed; "Output 0 ... was asserted in frame" = failed
+           grep -q "was asserted in frame" "$log" && return 1
+           grep -q "No output asserted in" "$log" && return 0
+           return 1 ;;
+  esac
+  # the last status (for ind the induction step's; the base case's is above it)
+  grep "Status:" "$log" | tail -1 | grep -q "Status: PASSED"
+}
+
+fail_detail() { # the first failed assertion / unreached cover in a log, with its source line
+  local l f n
+  l=$(grep -m1 -E "Assert failed|Unreached cover|was asserted in frame|yosys failed|Temporal induction failed" "$1" | sed 's/^## *[0-9:]* *//')
+  # Yosys names an assertion file:L0.C0-L1.C1 (L1 is the assert's own line)
+  if [[ $l =~ ([^ :]+\.sv):[0-9]+\.[0-9]+-([0-9]+)\. ]]; then
+    f=${BASH_REMATCH[1]}; n=${BASH_REMATCH[2]}
+    l="$(basename "$f"):$n: $(sed -n "${n}p" "$f" | sed 's/^ *//; s/  */ /g')"
+    grep -q "Temporal induction failed" "$1" && l="induction step: $l"
+  fi
+  echo "$l"
+}
+
+passed=0; failed=0
+selected() { [ ${#only[@]} -eq 0 ] && return 0; local o; for o in "${only[@]}"; do [ "$o" = "$1" ] && return 0; done; return 1; }
+
+if [ $mutate = 0 ]; then
+  dir=$out/proofs; mkdir -p "$dir"
+  for p in "${PROOFS[@]}"; do
+    IFS='|' read -r name wrapper dut defs engine depth what <<<"$p"
+    selected "$name" || continue
+    t0=$SECONDS
+    case $engine in ind) how="k-induction, k = ${depth%/*}, base case BMC to ${depth#*/}";; bmc|abc) how="BMC to depth $depth ($engine)";; cover) how="cover within $depth steps";; esac
+    if prove "$name" "$wrapper" "$root/$dut" "$defs" "$engine" "$depth" "$dir"; then
+      echo "PASS $name ($how, $((SECONDS - t0)) s): $what"; passed=$((passed + 1))
+    else
+      echo "FAIL $name ($how, $((SECONDS - t0)) s): $(fail_detail "$dir/$name.log") [log: ${dir#$root/}/$name.log]"; failed=$((failed + 1))
+    fi
+  done
+else
+  for m in "${MUTANTS[@]}"; do
+    IFS='|' read -r mname proof dut script <<<"$m"
+    selected "$mname" || continue
+    dir=$out/mutants/$mname; mkdir -p "$dir"
+    cp "$root/$dut" "$dir/$(basename "$dut")"
+    sed -i "$script" "$dir/$(basename "$dut")"
+    if cmp -s "$root/$dut" "$dir/$(basename "$dut")"; then
+      echo "FAIL mutant $mname: the sed changed nothing"; failed=$((failed + 1)); continue
+    fi
+    for p in "${PROOFS[@]}"; do
+      IFS='|' read -r name wrapper pdut defs engine depth what <<<"$p"
+      [ "$name" = "$proof" ] || continue
+      t0=$SECONDS
+      if prove "$name" "$wrapper" "$dir/$(basename "$dut")" "$defs" "$engine" "$depth" "$dir"; then
+        echo "FAIL mutant $mname: $name still passes (mutant survived)"; failed=$((failed + 1))
+      else
+        echo "PASS mutant $mname: $name fails ($((SECONDS - t0)) s): $(fail_detail "$dir/$name.log")"; passed=$((passed + 1))
+      fi
+    done
+  done
+fi
+
+echo "$passed passed, $failed failed"
+[ $failed -eq 0 ]
