@@ -15,9 +15,13 @@
 #          (report_checks -from [all_registers -clock_pins] -to [all_registers -data_pins]):
 #          path_ns = its data arrival (clk-to-q + logic);
 #          min_period = 10 - slack = clk-to-q + logic + setup; fmax = 1000 / min_period
-#          and the worst such path into each register block (`stage_ns`)
+#          and the worst such path into each register block (`stage_ns`, `<block>:<ns>`);
+#          in_path_ns / out_path_ns: data arrival of the worst input->register and
+#          register->output paths (inputs arrive at 0 ns, outputs required at the edge):
+#          logic at a unit's ports, which adds to the register driving it in a design
+#          (fp_scale's shift sits between its inputs and its output register)
 # Writes (updates: rows of units not measured now are kept) the CSV
-#   unit,format,rounding,cells,area_um2,path_ns,min_period_ns,fmax_mhz,startpoint,endpoint,slow_stage,stage_ns
+#   unit,format,rounding,cells,area_um2,path_ns,min_period_ns,fmax_mhz,startpoint,endpoint,slow_stage,in_path_ns,out_path_ns,stage_ns
 # and prints, per format / DOP rounding configuration, the period of its slowest measured unit
 # (also written to docs/figures/timing_config.csv, next to --out).
 # Work files: target/timing/<unit>/ (netlist.v, stat.txt, sta.tcl, sta.txt, yosys.log).
@@ -103,6 +107,10 @@ set_input_delay 0 -clock clk [delete_from_list [all_inputs] [get_ports clock]]
 set_output_delay 0 -clock clk [all_outputs]
 puts "=== worst"
 report_checks -path_delay max -format full_clock -digits 3 -from [all_registers -clock_pins] -to [all_registers -data_pins]
+puts "=== in"
+report_checks -path_delay max -digits 3 -from [delete_from_list [all_inputs] [get_ports clock]] -to [all_registers -data_pins]
+puts "=== out"
+report_checks -path_delay max -digits 3 -from [all_registers -clock_pins] -to [all_outputs]
 puts "=== endpoints"
 report_checks -path_delay max -digits 3 -from [all_registers -clock_pins] -to [all_registers -data_pins] -group_count 1000000 -endpoint_count 1 -format end
 EOF
@@ -117,7 +125,13 @@ st = open(stat).read()
 cells = int(re.findall(r'Number of cells:\s+(\d+)', st)[-1])
 area = float(re.findall(r'Chip area for module .*?:\s+([\d.]+)', st)[-1])
 txt = open(sta).read()
-worst, ends = txt.split('=== endpoints')
+worst, rest = txt.split('=== in')
+inp, rest = rest.split('=== out')
+outp, ends = rest.split('=== endpoints')
+def arrival(t):
+    m = re.search(r'(-?[\d.]+)\s+data arrival time', t)
+    return f'{float(m.group(1)):.3f}' if m else ''
+io = f'{arrival(inp)},{arrival(outp)}'
 sp = re.search(r'Startpoint: (\S+)', worst); ep = re.search(r'Endpoint: (\S+)', worst)
 slack = re.search(r'(-?[\d.]+)\s+slack', worst)
 arr = re.search(r'(-?[\d.]+)\s+data arrival time', worst)
@@ -132,7 +146,7 @@ def block(inst):
     if m: segs[-1] = m.group(1)
     return '.'.join(segs)
 if not slack:  # no register-to-register path (combinational unit)
-    print(f'{unit},{fmt},{rnd},{cells},{area:.0f},,,,-,-,-,-'); sys.exit()
+    print(f'{unit},{fmt},{rnd},{cells},{area:.0f},,,,-,-,-,{io},-'); sys.exit()
 period = 10 - float(slack.group(1))
 stages = {}
 for m in re.finditer(r'^(\S+)/D \(\S+\)\s+(-?[\d.]+)\s+(-?[\d.]+)\s+(-?[\d.]+)', ends, re.M):
@@ -141,7 +155,7 @@ for m in re.finditer(r'^(\S+)/D \(\S+\)\s+(-?[\d.]+)\s+(-?[\d.]+)\s+(-?[\d.]+)',
 order = sorted(stages.items(), key=lambda kv: -kv[1])
 sn = ' '.join(f'{b}:{p:.2f}' for b, p in order)
 print(f'{unit},{fmt},{rnd},{cells},{area:.0f},{float(arr.group(1)):.3f},{period:.3f},{1000/period:.1f},'
-      f'{sp.group(1)},{ep.group(1)},{block(ep.group(1))},{sn}')
+      f'{sp.group(1)},{ep.group(1)},{block(ep.group(1))},{io},{sn}')
 PY
   echo "$(tail -n 1 "$NEW" | cut -d, -f1,4-8,11)  ($((t1 - t0)) s)" >&2
 done
@@ -151,7 +165,7 @@ CONF=$(dirname "$OUT")/timing_config.csv
 "$PY" - "$OUT" "$NEW" "$CONF" <<'PY'
 import csv, os, sys
 out, new, conf = sys.argv[1:4]
-head = 'unit,format,rounding,cells,area_um2,path_ns,min_period_ns,fmax_mhz,startpoint,endpoint,slow_stage,stage_ns'.split(',')
+head = 'unit,format,rounding,cells,area_um2,path_ns,min_period_ns,fmax_mhz,startpoint,endpoint,slow_stage,in_path_ns,out_path_ns,stage_ns'.split(',')
 rows = {}
 if os.path.exists(out):
     for r in csv.DictReader(open(out)): rows[r['unit']] = r
@@ -172,26 +186,34 @@ def member(r, fmt, rnd):
     if r['format'] != fmt: return False
     if r['unit'].startswith(('tcheck', 'tri_unit')): return True
     return r['rounding'] in (rnd, '-')
-ch = 'format,rounding,min_period_ns,fmax_mhz,slowest_unit,slow_stage,next_unit,next_ns,units'.split(',')
+ch = ('format,rounding,min_period_ns,fmax_mhz,slowest_unit,slow_stage,'
+      'datapath_period_ns,datapath_unit,datapath_stage,in_path_ns,in_path_unit,units').split(',')
 crow = []
 for fmt, rnd in configs:
     m = sorted((r for r in timed if member(r, fmt, rnd)), key=lambda r: -float(r['min_period_ns']))
-    s = m[0]; n = m[1] if len(m) > 1 else None
+    s = m[0]
+    d = next((r for r in m if r['format'] != '-'), None)
+    i = max((r for r in m if r.get('in_path_ns') and r['format'] != '-'), key=lambda r: float(r['in_path_ns']), default=None)
     crow.append(dict(format=fmt, rounding=rnd, min_period_ns=s['min_period_ns'], fmax_mhz=s['fmax_mhz'],
                      slowest_unit=s['unit'], slow_stage=s['slow_stage'],
-                     next_unit=n['unit'] if n else '-', next_ns=n['min_period_ns'] if n else '',
+                     datapath_period_ns=d['min_period_ns'] if d else '', datapath_unit=d['unit'] if d else '-',
+                     datapath_stage=d['slow_stage'] if d else '-',
+                     in_path_ns=i['in_path_ns'] if i else '', in_path_unit=i['unit'] if i else '-',
                      units=' '.join(r['unit'] for r in m)))
 with open(conf, 'w', newline='') as f:
     w = csv.DictWriter(f, ch, lineterminator='\n'); w.writeheader(); w.writerows(crow)
-fmt = '{:<24} {:>7} {:>11} {:>10} {:>8}  {}'
-print(fmt.format('unit', 'cells', 'area_um2', 'period_ns', 'fmax', 'slowest path into'))
+fmt = '{:<24} {:>7} {:>11} {:>10} {:>8} {:>8}  {}'
+print(fmt.format('unit', 'cells', 'area_um2', 'period_ns', 'fmax', 'in_path', 'slowest reg-to-reg path into'))
 for r in rows:
-    print(fmt.format(r['unit'], r['cells'], r['area_um2'], r['min_period_ns'] or '-', r['fmax_mhz'] or '-', r['slow_stage']))
-print('\nper configuration (format, DOP rounding): the period of its slowest measured unit')
+    print(fmt.format(r['unit'], r['cells'], r['area_um2'], r['min_period_ns'] or '-', r['fmax_mhz'] or '-',
+                     r.get('in_path_ns') or '-', r['slow_stage']))
+print('\nper configuration (format, DOP rounding): the period of its slowest measured unit (reg-to-reg)')
 for c in crow:
-    print(f"{c['format']:<6} {c['rounding']:<4} {c['min_period_ns']:>7} ns {c['fmax_mhz']:>6} MHz  "
-          f"slowest: {c['slowest_unit']} into {c['slow_stage']} (a register there buys clock rate; "
-          f"next: {c['next_unit']} {c['next_ns']} ns)")
+    print(f"{c['format']:<6} {c['rounding']:<4} {c['min_period_ns']:>7} ns {c['fmax_mhz']:>6} MHz: "
+          f"{c['slowest_unit']}, path into {c['slow_stage']}; slowest datapath unit "
+          f"{c['datapath_unit']} {c['datapath_period_ns']} ns into {c['datapath_stage']}; "
+          f"worst datapath input-to-register logic {c['in_path_ns']} ns ({c['in_path_unit']}, its stage 1: "
+          f"in a design it follows another unit's register, so add that clock-to-Q and a setup)")
 print(f'\nwrote {out} and {conf}')
 PY
 exit $status
