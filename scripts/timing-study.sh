@@ -1,0 +1,219 @@
+#!/usr/bin/env bash
+# The timing study (issue 32, deliverable 1, ASIC part): each exported unit's minimum clock
+# period and area against the OSU 0.18 um standard cells, pre-layout.
+#
+# Needs: yosys, OpenSTA (`sta`) and the OSU 0.18 liberty
+#   apt-get install -y yosys opensta qflow-tech-osu018
+# (LIB defaults to /usr/share/qflow/tech/osu018/osu018_stdcells.lib; set LIB to use another).
+#
+# Per unit rtl/<unit>.v (flat, top module `top`):
+#   yosys: read_verilog; synth -top top -flatten; dfflibmap -liberty LIB; abc -liberty LIB;
+#          opt_clean; stat -liberty LIB (cells, area in um^2); write_verilog -noattr
+#   each flip-flop instance is renamed after the register net it drives (`s3_nm.q[0]` ->
+#   `s3_nm__q_0_`), so a path's start and end name their pipeline stage (rust-hdl: `sK_*`)
+#   sta:   ideal clock of 10 ns on `clock`; the worst register-to-register setup path
+#          (report_checks -from [all_registers -clock_pins] -to [all_registers -data_pins]):
+#          path_ns = its data arrival (clk-to-q + logic);
+#          min_period = 10 - slack = clk-to-q + logic + setup; fmax = 1000 / min_period
+#          and the worst such path into each register block (`stage_ns`, `<block>:<ns>`);
+#          in_path_ns / out_path_ns: data arrival of the worst input->register and
+#          register->output paths (inputs arrive at 0 ns, outputs required at the edge):
+#          logic at a unit's ports, which adds to the register driving it in a design
+#          (fp_scale's shift sits between its inputs and its output register)
+# Writes (updates: rows of units not measured now are kept) the CSV
+#   unit,format,rounding,cells,area_um2,path_ns,min_period_ns,fmax_mhz,startpoint,endpoint,slow_stage,in_path_ns,out_path_ns,stage_ns
+# and prints, per format / DOP rounding configuration, the period of its slowest measured unit
+# (also written to docs/figures/timing_config.csv, next to --out).
+# Work files: target/timing/<unit>/ (netlist.v, stat.txt, sta.tcl, sta.txt, yosys.log).
+#
+# Usage: scripts/timing-study.sh [--units PATTERNS] [--out FILE] [--timeout SECONDS]
+#   --units    space-separated shell globs on the unit name (default:
+#              'fp_mul_* fp_add_* fp_scale_* doptrf_* pair_queue_*'); e.g.
+#              --units tcheck_e8m15_rne adds T.CHECK (large: minutes and GBs)
+#   --out      default docs/figures/timing.csv
+#   --timeout  per unit, Yosys + STA (default 1200 s); a unit that times out is reported, not written
+set -euo pipefail
+SCRIPTS=$(cd "$(dirname "$0")" && pwd)
+ROOT=$(cd "$SCRIPTS/.." && pwd)
+LIB=${LIB:-/usr/share/qflow/tech/osu018/osu018_stdcells.lib}
+PY=${PYTHON:-python3}
+UNITS='fp_mul_* fp_add_* fp_scale_* doptrf_* pair_queue_*'
+OUT=$ROOT/docs/figures/timing.csv
+TIMEOUT=1200
+usage() { sed -n '2,/^$/p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 2; }
+while [ $# -gt 0 ]; do
+  case $1 in
+    --units) UNITS=$2; shift 2 ;;
+    --out) OUT=$2; shift 2 ;;
+    --timeout) TIMEOUT=$2; shift 2 ;;
+    -h|--help) usage ;;
+    *) echo "timing-study.sh: unknown argument $1 (see --help)" >&2; exit 2 ;;
+  esac
+done
+missing=
+command -v yosys >/dev/null || missing="$missing yosys"
+command -v sta >/dev/null || missing="$missing opensta"
+[ -f "$LIB" ] || missing="$missing qflow-tech-osu018"
+if [ -n "$missing" ]; then
+  echo "timing-study.sh: missing:$missing (apt-get install -y$missing; or set LIB=<liberty>)" >&2
+  exit 127
+fi
+
+FILES=()
+for u in $UNITS; do
+  for f in "$ROOT"/rtl/$u.v; do [ -f "$f" ] && FILES+=("$f"); done
+done
+[ ${#FILES[@]} -gt 0 ] || { echo "timing-study.sh: no rtl/<unit>.v matches '$UNITS'" >&2; exit 2; }
+case $OUT in /*) ;; *) OUT=$PWD/$OUT ;; esac
+mkdir -p "$ROOT/target/timing" "$(dirname "$OUT")"
+NEW=$ROOT/target/timing/rows.csv
+: > "$NEW"
+status=0
+for f in "${FILES[@]}"; do
+  unit=$(basename "$f" .v)
+  w=$ROOT/target/timing/$unit
+  rm -rf "$w"; mkdir -p "$w"
+  t0=$(date +%s)
+  if ! timeout "$TIMEOUT" yosys -q -l "$w/yosys.log" -p "read_verilog $f; synth -top top -flatten; dfflibmap -liberty $LIB; abc -liberty $LIB; opt_clean; tee -q -o $w/stat.txt stat -liberty $LIB; write_verilog -noattr $w/netlist_raw.v" >/dev/null 2>&1; then
+    echo "timing-study.sh: $unit: yosys failed or timed out after ${TIMEOUT}s (log $w/yosys.log)" >&2
+    status=1; continue
+  fi
+  # Flip-flops named after the net their Q drives.
+  "$PY" - "$w/netlist_raw.v" "$w/netlist.v" <<'PY'
+import re, sys
+src = open(sys.argv[1]).read()
+used = set()
+def name(m):
+    cell, inst, body = m.group(1), m.group(2), m.group(3)
+    q = re.search(r'\.Q\((.*?)\)\s*[,)]?', body, re.S)
+    net = q.group(1).strip() if q else ''
+    if not net or net.lstrip('\\').startswith('_'):
+        return m.group(0)
+    net = net.lstrip('\\')
+    new = re.sub(r'[^A-Za-z0-9_]+', '_', net.replace('.', '__')).strip('_')
+    while new in used:
+        new += '_'
+    used.add(new)
+    return f'{cell} {new} ({body}'
+out = re.sub(r'^(\s*DFF\w*|\s*LATCH)\s+(\S+)\s+\((.*?\);)', name, src, flags=re.S | re.M)
+open(sys.argv[2], 'w').write(out)
+PY
+  cat > "$w/sta.tcl" <<EOF
+read_liberty $LIB
+read_verilog $w/netlist.v
+link_design top
+create_clock -name clk -period 10 [get_ports clock]
+set_input_delay 0 -clock clk [delete_from_list [all_inputs] [get_ports clock]]
+set_output_delay 0 -clock clk [all_outputs]
+puts "=== worst"
+report_checks -path_delay max -format full_clock -digits 3 -from [all_registers -clock_pins] -to [all_registers -data_pins]
+puts "=== in"
+report_checks -path_delay max -digits 3 -from [delete_from_list [all_inputs] [get_ports clock]] -to [all_registers -data_pins]
+puts "=== out"
+report_checks -path_delay max -digits 3 -from [all_registers -clock_pins] -to [all_outputs]
+puts "=== endpoints"
+report_checks -path_delay max -digits 3 -from [all_registers -clock_pins] -to [all_registers -data_pins] -group_count 1000000 -endpoint_count 1 -format end
+EOF
+  if ! timeout "$TIMEOUT" sta -no_init -exit "$w/sta.tcl" > "$w/sta.txt" 2>&1; then
+    echo "timing-study.sh: $unit: sta failed (see $w/sta.txt)" >&2; status=1; continue
+  fi
+  t1=$(date +%s)
+  "$PY" - "$unit" "$w/stat.txt" "$w/sta.txt" >> "$NEW" <<'PY'
+import re, sys
+unit, stat, sta = sys.argv[1:4]
+st = open(stat).read()
+cells = int(re.findall(r'Number of cells:\s+(\d+)', st)[-1])
+area = float(re.findall(r'Chip area for module .*?:\s+([\d.]+)', st)[-1])
+txt = open(sta).read()
+worst, rest = txt.split('=== in')
+inp, rest = rest.split('=== out')
+outp, ends = rest.split('=== endpoints')
+def arrival(t):
+    m = re.search(r'(-?[\d.]+)\s+data arrival time', t)
+    return f'{float(m.group(1)):.3f}' if m else ''
+io = f'{arrival(inp)},{arrival(outp)}'
+sp = re.search(r'Startpoint: (\S+)', worst); ep = re.search(r'Endpoint: (\S+)', worst)
+slack = re.search(r'(-?[\d.]+)\s+slack', worst)
+arr = re.search(r'(-?[\d.]+)\s+data arrival time', worst)
+parts = unit.split('_')
+fmt = next((p for p in parts if re.fullmatch(r'b32|e\d+m\d+', p)), '-')
+rnd = next((p for p in parts if p in ('rne', 'ru', 'rd', 'rz')), '-')
+def block(inst):
+    # register block: the instance name up to its `__q_N_` / `_N_` bit suffix
+    b = inst.split('__q')[0] if '__q' in inst else re.sub(r'_\d+$', '', inst)
+    segs = b.split('__')
+    m = re.match(r'(s\d+)_', segs[-1])
+    if m: segs[-1] = m.group(1)
+    return '.'.join(segs)
+if not slack:  # no register-to-register path (combinational unit)
+    print(f'{unit},{fmt},{rnd},{cells},{area:.0f},,,,-,-,-,{io},-'); sys.exit()
+period = 10 - float(slack.group(1))
+stages = {}
+for m in re.finditer(r'^(\S+)/D \(\S+\)\s+(-?[\d.]+)\s+(-?[\d.]+)\s+(-?[\d.]+)', ends, re.M):
+    b = block(m.group(1)); p = 10 - float(m.group(4))
+    stages[b] = max(stages.get(b, 0), p)
+order = sorted(stages.items(), key=lambda kv: -kv[1])
+sn = ' '.join(f'{b}:{p:.2f}' for b, p in order)
+print(f'{unit},{fmt},{rnd},{cells},{area:.0f},{float(arr.group(1)):.3f},{period:.3f},{1000/period:.1f},'
+      f'{sp.group(1)},{ep.group(1)},{block(ep.group(1))},{io},{sn}')
+PY
+  echo "$(tail -n 1 "$NEW" | cut -d, -f1,4-8,11)  ($((t1 - t0)) s)" >&2
+done
+
+# Merge into OUT (replace measured units' rows), then the configurations.
+CONF=$(dirname "$OUT")/timing_config.csv
+"$PY" - "$OUT" "$NEW" "$CONF" <<'PY'
+import csv, os, sys
+out, new, conf = sys.argv[1:4]
+head = 'unit,format,rounding,cells,area_um2,path_ns,min_period_ns,fmax_mhz,startpoint,endpoint,slow_stage,in_path_ns,out_path_ns,stage_ns'.split(',')
+rows = {}
+if os.path.exists(out):
+    for r in csv.DictReader(open(out)): rows[r['unit']] = r
+for r in csv.DictReader(open(new), fieldnames=head): rows[r['unit']] = r
+rows = [rows[k] for k in sorted(rows)]
+with open(out, 'w', newline='') as f:
+    w = csv.DictWriter(f, head, lineterminator='\n'); w.writeheader(); w.writerows(rows)
+# A configuration = number format x DOP rounding. Its units: those of that format and
+# rounding, those of that format without a rounding (fp_scale), the triangle datapath of that
+# format (T.CHECK / TRI_UNIT: round to nearest even in every configuration) and the
+# format-free ones (pair queue).
+timed = [r for r in rows if r['min_period_ns']]
+configs = sorted({(r['format'], r['rounding']) for r in timed
+                  if r['format'] != '-' and r['rounding'] != '-'
+                  and not r['unit'].startswith(('tcheck', 'tri_unit'))})
+def member(r, fmt, rnd):
+    if r['format'] == '-': return True
+    if r['format'] != fmt: return False
+    if r['unit'].startswith(('tcheck', 'tri_unit')): return True
+    return r['rounding'] in (rnd, '-')
+ch = ('format,rounding,min_period_ns,fmax_mhz,slowest_unit,slow_stage,'
+      'datapath_period_ns,datapath_unit,datapath_stage,in_path_ns,in_path_unit,units').split(',')
+crow = []
+for fmt, rnd in configs:
+    m = sorted((r for r in timed if member(r, fmt, rnd)), key=lambda r: -float(r['min_period_ns']))
+    s = m[0]
+    d = next((r for r in m if r['format'] != '-'), None)
+    i = max((r for r in m if r.get('in_path_ns') and r['format'] != '-'), key=lambda r: float(r['in_path_ns']), default=None)
+    crow.append(dict(format=fmt, rounding=rnd, min_period_ns=s['min_period_ns'], fmax_mhz=s['fmax_mhz'],
+                     slowest_unit=s['unit'], slow_stage=s['slow_stage'],
+                     datapath_period_ns=d['min_period_ns'] if d else '', datapath_unit=d['unit'] if d else '-',
+                     datapath_stage=d['slow_stage'] if d else '-',
+                     in_path_ns=i['in_path_ns'] if i else '', in_path_unit=i['unit'] if i else '-',
+                     units=' '.join(r['unit'] for r in m)))
+with open(conf, 'w', newline='') as f:
+    w = csv.DictWriter(f, ch, lineterminator='\n'); w.writeheader(); w.writerows(crow)
+fmt = '{:<24} {:>7} {:>11} {:>10} {:>8} {:>8}  {}'
+print(fmt.format('unit', 'cells', 'area_um2', 'period_ns', 'fmax', 'in_path', 'slowest reg-to-reg path into'))
+for r in rows:
+    print(fmt.format(r['unit'], r['cells'], r['area_um2'], r['min_period_ns'] or '-', r['fmax_mhz'] or '-',
+                     r.get('in_path_ns') or '-', r['slow_stage']))
+print('\nper configuration (format, DOP rounding): the period of its slowest measured unit (reg-to-reg)')
+for c in crow:
+    print(f"{c['format']:<6} {c['rounding']:<4} {c['min_period_ns']:>7} ns {c['fmax_mhz']:>6} MHz: "
+          f"{c['slowest_unit']}, path into {c['slow_stage']}; slowest datapath unit "
+          f"{c['datapath_unit']} {c['datapath_period_ns']} ns into {c['datapath_stage']}; "
+          f"worst datapath input-to-register logic {c['in_path_ns']} ns ({c['in_path_unit']}, its stage 1: "
+          f"in a design it follows another unit's register, so add that clock-to-Q and a setup)")
+print(f'\nwrote {out} and {conf}')
+PY
+exit $status
