@@ -4,7 +4,8 @@
 #![allow(clippy::needless_range_loop)] // lanes are indexed by i in several arrays at once
 
 use collision_chip::chip::config::{ChipConfig, DopRounding, Formats};
-use collision_chip::dop::{DopNormals, DopTree, SUPPORTED_K};
+use collision_chip::chip::config::SUPPORTED_K;
+use collision_chip::dop::{DopNormals, DopTree};
 use collision_chip::golden::host::TriSide;
 use collision_chip::golden::host::HostSetup;
 use collision_chip::format::{Format, Rounding};

@@ -130,12 +130,19 @@ pub struct ChipConfig {
     pub tri_cache: u32,
 }
 
+/// Errors say which k there are.
+pub fn check_k(k: usize) -> Result<(), String> {
+    if SUPPORTED_K.contains(&k) {
+        Ok(())
+    } else {
+        Err(format!("k = {k} is not supported; choose one of 6, 14, 18, 24, 26"))
+    }
+}
+
 impl ChipConfig {
     /// Errors say what a valid k and triangle cache are.
     pub fn check(&self) -> Result<(), String> {
-        if !SUPPORTED_K.contains(&self.k) {
-            return Err(format!("k = {} is not supported; choose one of 6, 14, 18, 24, 26", self.k));
-        }
+        check_k(self.k)?;
         let lines = self.tri_cache;
         if !(lines.is_power_of_two() && lines <= TRI_CACHE_MAX_LINES) {
             return Err(format!("tri_cache must be a power of two from 1 to {TRI_CACHE_MAX_LINES} lines (WSCG'03: 128), not {lines}"));

@@ -196,9 +196,9 @@ pub fn run_query<C: Clocked>(
         }
         // a wait the model may skip: nothing to answer, request or read before `until`
         let read = out.res_valid && i.res_ready;
-        if let Some(skip) = skip.as_deref_mut().filter(|_| !probe && i.mem_resp.is_none() && !read && !(out.mem_req_valid && ready)) {
+        if let Some(skip) = skip.as_deref_mut().filter(|_| !probe && i.mem_resp.is_none() && !read) {
             let mut until = mem.next_response().unwrap_or(u64::MAX);
-            if out.mem_req_valid {
+            if out.mem_req_valid && !ready {
                 until = until.min(mem.next_ready());
             }
             if out.res_valid {

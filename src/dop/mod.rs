@@ -4,5 +4,5 @@
 pub mod normals;
 pub mod tree;
 
-pub use normals::{DopNormals, SUPPORTED_K};
+pub use normals::DopNormals;
 pub use tree::{DopTree, Node};

@@ -9,7 +9,7 @@ use nalgebra::{Matrix3, Vector3};
 use std::sync::OnceLock;
 
 /// The k values the chip supports.
-pub use crate::chip::config::SUPPORTED_K;
+use crate::chip::config::{check_k, SUPPORTED_K};
 
 const AXES: [[i8; 3]; 3] = [[1, 0, 0], [0, 1, 0], [0, 0, 1]];
 const CORNERS4: [[i8; 3]; 4] = [[1, 1, 1], [1, -1, 1], [1, 1, -1], [1, -1, -1]];
@@ -44,9 +44,8 @@ impl DopNormals {
     pub fn get(k: usize) -> Result<&'static DopNormals, String> {
         static SETS: [OnceLock<DopNormals>; 5] =
             [OnceLock::new(), OnceLock::new(), OnceLock::new(), OnceLock::new(), OnceLock::new()];
-        let slot = SUPPORTED_K.iter().position(|&s| s == k).ok_or_else(|| {
-            format!("k = {k} is not supported; choose one of 6, 14, 18, 24, 26")
-        })?;
+        check_k(k)?;
+        let slot = SUPPORTED_K.iter().position(|&s| s == k).expect("checked");
         Ok(SETS[slot].get_or_init(|| DopNormals::build(k)))
     }
 

@@ -334,7 +334,7 @@ pub fn write_vectors(dir: &Path) -> std::io::Result<Vec<String>> {
 fn area_units() -> Vec<(String, Text)> {
     let mut units: Vec<(String, Text)> = vec![];
     for fmt in [Format::BINARY32, Format::REDUCED] {
-        for k in crate::dop::SUPPORTED_K {
+        for k in crate::chip::config::SUPPORTED_K {
             for r in [Rounding::TowardPositive, Rounding::NearestEven] {
                 units.push((dop_unit_name(k, fmt, r).expect("an RTL format"), Box::new(move || dop_unit_verilog(k, fmt, r).expect("the RTL builds every supported k"))));
             }
