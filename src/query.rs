@@ -3,7 +3,7 @@
 //! With `oracle`, the exact answer for the same f64 geometry is computed too.
 
 use crate::chip::config::ChipConfig;
-use crate::chip::layout::{image_bases, Layout};
+use crate::chip::layout::Layout;
 use crate::chip::params::Params;
 use crate::chip::reg::{self, Mode, Order};
 use crate::dop::tree::Tri;
@@ -56,7 +56,7 @@ impl Chip {
     /// Word addresses of A's and B's first node and triangle words in the memory image
     /// (by [`Dst`](crate::chip::layout::Dst)).
     pub fn image_bases(&self) -> [u32; 4] {
-        image_bases(self.a.tree.len() as u32, self.a.tris.len() as u32, self.b.tree.len() as u32)
+        crate::golden::memory::image_bases(&self.a, &self.b)
     }
 
     /// Words in the memory image (nodes and triangles of both objects).

@@ -164,6 +164,12 @@ impl ObjectImage {
     }
 }
 
+/// Word addresses of A's and B's first node and triangle words in the memory image of `a`
+/// and `b` (by [`Dst`](crate::chip::layout::Dst), [`image_bases`](crate::chip::layout::image_bases)).
+pub fn image_bases(a: &ObjectImage, b: &ObjectImage) -> [u32; 4] {
+    crate::chip::layout::image_bases(a.tree.len() as u32, a.tris.len() as u32, b.tree.len() as u32)
+}
+
 /// An object's scale S for T.CHECK's certificate: the power of two at or above its largest
 /// |coordinate|, kept within the normal range of `fmt` (down to 2^emin, up to 2^-2 of its
 /// largest value). The input-error terms are measured against `|x| + |y| + |z| + S`, so

@@ -11,7 +11,6 @@
 
 use super::tri_io::{tri_unit_setup_words, LeafIn};
 use crate::chip::config::ChipConfig;
-use crate::chip::layout::image_bases;
 use crate::chip::memory::{MemTiming, Memory};
 use crate::chip::params::Params;
 use crate::chip::ports::{ChipIn, ChipOut, Clocked};
@@ -152,8 +151,7 @@ impl QueryImage {
         }
         let mut writes: Vec<(u32, u32)> = dop_unit_setup_words(f.dop, setup).into_iter().map(|(a, d)| (a as u32, d as u32)).collect();
         writes.extend(tri_unit_setup_words(f.tri, setup).into_iter().map(|(a, d)| (reg::TRI_SETUP + a as u32, d as u32)));
-        let bases = image_bases(a.tree.len() as u32, a.tris.len() as u32, b.tree.len() as u32);
-        writes.extend(reg::control_writes(bases, order, mode, p, tri_cache));
+        writes.extend(reg::control_writes(crate::golden::memory::image_bases(a, b), order, mode, p, tri_cache));
         Ok(QueryImage { kind, memory, writes })
     }
 
