@@ -59,3 +59,19 @@ pub fn thread_seconds() -> f64 {
     static T0: std::sync::OnceLock<std::time::Instant> = std::sync::OnceLock::new();
     T0.get_or_init(std::time::Instant::now).elapsed().as_secs_f64()
 }
+
+/// Bytes this process may still allocate: the smaller of the kernel's `MemAvailable` and the
+/// cgroup's `memory.max` (a container's limit); `CCHIP_MAX_MEMORY_MB` replaces both. `None`
+/// where none of them can be read (then nothing is refused).
+pub fn memory_available() -> Option<u64> {
+    if let Ok(mb) = std::env::var("CCHIP_MAX_MEMORY_MB") {
+        return mb.trim().parse::<u64>().ok().map(|mb| mb << 20);
+    }
+    let read = |p: &str| std::fs::read_to_string(p).ok();
+    let kernel = read("/proc/meminfo").and_then(|m| {
+        let line = m.lines().find(|l| l.starts_with("MemAvailable:"))?;
+        line.split_whitespace().nth(1)?.parse::<u64>().ok().map(|kb| kb << 10)
+    });
+    let cgroup = read("/sys/fs/cgroup/memory.max").and_then(|s| s.trim().parse::<u64>().ok());
+    [kernel, cgroup].into_iter().flatten().min()
+}

@@ -14,6 +14,28 @@ use crate::pose::Pose;
 use crate::traversal::{self, Host, QueryResult, Traversal};
 use serde::Serialize;
 
+/// Peak bytes of a query's setup per triangle of an object at `k` DOP directions: the f64
+/// geometry, the DOP tree (2n nodes of k distances), the memory image and the triangle
+/// words, with what their build holds at once. An upper bound of what `cchip run` peaked at
+/// (`/usr/bin/time -v`, the 871k dragon against itself, cycles and accuracy on): 585 bytes
+/// at k = 6, 900 at k = 24 (README, "Limits").
+pub fn memory_estimate(triangles: usize, k: usize) -> u64 {
+    triangles as u64 * (512 + 18 * k as u64)
+}
+
+/// Refuses objects whose setup would not fit in `available` bytes, before anything is built.
+fn check_memory(a: usize, b: usize, k: usize, available: Option<u64>) -> Result<(), String> {
+    let need = memory_estimate(a, k) + memory_estimate(b, k);
+    match available {
+        Some(free) if need > free => Err(format!(
+            "objects of {a} and {b} triangles at k = {k} need about {} MB of memory (trees, memory images, triangle words) and this machine has {} MB available: use smaller meshes or a smaller k, or set CCHIP_MAX_MEMORY_MB if more memory is free than /proc/meminfo and the cgroup's limit say",
+            need >> 20,
+            free >> 20
+        )),
+        _ => Ok(()),
+    }
+}
+
 /// Both objects' memory images for one chip configuration, and the host's f64 geometry
 /// (to settle uncertain pairs).
 pub struct Chip {
@@ -34,6 +56,7 @@ impl Chip {
         }
         oracle::check_range(a, "object A")?;
         oracle::check_range(b, "object B")?;
+        check_memory(a.len(), b.len(), cfg.k, crate::measure::memory_available())?;
         Ok(Chip {
             cfg,
             a: ObjectImage::build(a, &cfg),
@@ -145,6 +168,18 @@ mod tests {
             let e = chip.check_pose(&pose).unwrap_err();
             assert!(e.starts_with("object B at pose ") && e.contains("1e-60 to 1e60"), "{e}");
         }
+    }
+
+    /// Issue 35: the estimate is checked against what is available, and the refusal says
+    /// what to do.
+    #[test]
+    fn memory_beyond_the_available_is_refused() {
+        let need = 2 * memory_estimate(1 << 20, 24);
+        assert_eq!(need, 2 * (1 << 20) * 944);
+        check_memory(1 << 20, 1 << 20, 24, Some(need)).unwrap();
+        check_memory(1 << 20, 1 << 20, 24, None).unwrap();
+        let e = check_memory(1 << 20, 1 << 20, 24, Some(need - 1)).unwrap_err();
+        assert!(e.starts_with("objects of 1048576 and 1048576 triangles at k = 24 need about 1888 MB") && e.contains("CCHIP_MAX_MEMORY_MB"), "{e}");
     }
 
     #[test]

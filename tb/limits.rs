@@ -1,0 +1,42 @@
+//! Issue 35, item 4: the memory limit is kept. `cchip run` refuses objects whose setup would
+//! not fit before it builds anything, and its estimate is an upper bound of the peak it
+//! reaches (measured as the child process's maximum resident set).
+
+use std::process::Command;
+
+/// Two 200k-triangle objects on the papers' chip, one overlapping pose, every output that
+/// builds state per triangle (cycles, accuracy).
+fn scene(dir: &std::path::Path) -> std::path::PathBuf {
+    let path = dir.join("limits.toml");
+    let text = "[objects]\na = \"sphere:200000\"\nb = \"torus:200000\"\nunit_cube = true\n[chip]\npreset = \"date05\"\n[[pose]]\nrot_deg = [10, 20, 30]\nt = [1.0, 0, 0]\n[outputs]\naccuracy = true\ncycles = true\n";
+    std::fs::create_dir_all(dir).unwrap();
+    std::fs::write(&path, text).unwrap();
+    path
+}
+
+fn tmp() -> std::path::PathBuf {
+    std::env::temp_dir().join(format!("cchip-limits-{}", std::process::id()))
+}
+
+#[test]
+fn too_little_memory_is_refused_before_work() {
+    let out = Command::new(env!("CARGO_BIN_EXE_cchip")).args(["run"]).arg(scene(&tmp())).env("CCHIP_MAX_MEMORY_MB", "100").output().unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(err.contains("need about") && err.contains("100 MB available") && err.contains("CCHIP_MAX_MEMORY_MB"), "{err}");
+}
+
+#[cfg(target_os = "linux")]
+#[test]
+fn the_estimate_bounds_the_peak() {
+    let out = Command::new(env!("CARGO_BIN_EXE_cchip")).args(["run"]).arg(scene(&tmp())).output().unwrap();
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let mut ru: libc::rusage = unsafe { std::mem::zeroed() };
+    // SAFETY: `ru` is a valid rusage for getrusage to write.
+    assert_eq!(unsafe { libc::getrusage(libc::RUSAGE_CHILDREN, &mut ru) }, 0);
+    let peak = ru.ru_maxrss as u64 * 1024; // kB on Linux
+    let estimate = 2 * collision_chip::query::memory_estimate(200_000, 24);
+    // the process's own baseline (code, the vendored meshes) is not per triangle
+    let baseline = 64 << 20;
+    assert!(peak <= estimate + baseline, "peak {} MB > estimate {} MB + 64 MB", peak >> 20, estimate >> 20);
+}
