@@ -12,16 +12,18 @@
 #          opt_clean; stat -liberty LIB (cells, area in um^2); write_verilog -noattr
 #   fanout: scripts/verilog/fanout.py puts a BUFX4 tree on every net with more than FANOUT
 #          (16) cell loads (register outputs, which ABC does not buffer); its buffers are in
-#          the netlist STA times, not in `cells`/`area_um2` (they add well under 1%)
+#          the netlist STA times, not in `cells`/`area_um2` (at most 2.3% more cells: fp_mul_b32)
 #   hier:  as scripts/synth.sh, every module that instantiates others is kept
 #          (`setattr -mod -set keep_hierarchy 1 t:* t:$* %d %m`), so each distinct one (the
 #          DOPTRF lane, an FP adder, T.CHECK, ...) is mapped by ABC once, however often it is
-#          used; leaf modules (registers, helpers) are flattened into their parents. OpenSTA
-#          links the mapped hierarchical netlist (`link_design top`) into one timing graph, so
-#          the paths inside each module and those crossing module boundaries are all timed.
-#          ABC does not optimize across a kept boundary: a hier period is that of a netlist
-#          with those boundaries (an upper bound on the flat one; the k = 6 DOP unit: 9.90 ns
-#          flat, see scripts/README.md for hier).
+#          used; leaf modules (registers, helpers) are flattened into their parents. The
+#          mapped modules are then flattened (Yosys `flatten`, no re-mapping; flow `hier+flat`)
+#          into the netlist OpenSTA times, so the fanout repair also sees the nets that cross
+#          module boundaries. Above FLATTEN_MAX cells (default 650000; the k = 24 DOP unit's
+#          620k took Yosys 4 GB and 11 minutes) OpenSTA links the hierarchical netlist instead
+#          (`link_design top`, flow `hier`): every path is still timed, across boundaries too,
+#          but a net that leaves its module is not repaired (its driver sees all the loads in
+#          the modules it feeds). ABC does not optimize across a kept boundary.
 #   each flip-flop instance is renamed after the register net it drives (`s3_nm.q[0]` ->
 #   `s3_nm__q_0_`), so a path's start and end name their pipeline stage (rust-hdl: `sK_*`);
 #   (hier: after flattening, `doptrf$4.add_2.s1_small.q[0]` -> `doptrf_4__add_2__s1_small__q_0`)
@@ -61,6 +63,7 @@ UNITS='*'
 HIER='dop_unit_* tcheck_* tri_unit_* chip_*'
 MEM_KB=${MEM_KB:-8000000}
 STA_ONLY=
+FLATTEN_MAX=${FLATTEN_MAX:-650000}
 # ABC: Yosys's default script for a liberty, then buffering (incl. of ABC's inputs, -p) and gate sizing
 ABC_SCRIPT='strash; &get -n; &fraig -x; &put; scorr; dc2; dretime; strash; &get -n; &dch -f; &nf; &put; buffer -p; upsize; dnsize'
 FANOUT=${FANOUT:-16}
@@ -118,8 +121,12 @@ for f in ${FILES[@]+"${FILES[@]}"}; do
   fi
   # hier: the mapped modules flattened into one netlist (no re-mapping), so that the fanout
   # repair below sees the nets that cross module boundaries too
+  # (Yosys needs about 6.5 KB per cell for this: up to FLATTEN_MAX cells; a larger unit is timed
+  # hierarchical, flow `hier`, where a net that leaves its module is not repaired)
   mapped=$w/netlist_raw.v
-  if [ $flow = hier ]; then
+  cells=$(grep -E 'Number of cells:' "$w/stat.txt" | tail -n 1 | tr -dc 0-9)
+  if [ $flow = hier ] && [ "$cells" -le "$FLATTEN_MAX" ]; then
+    flow=hier+flat
     mapped=$w/netlist_flat.v
     if ! run yosys -q -l "$w/flatten.log" -p "read_liberty -lib $LIB; read_verilog $w/netlist_raw.v; hierarchy -top top; flatten; opt_clean; write_verilog -noattr $mapped" >/dev/null 2>&1; then
       echo "timing-study.sh: $unit: flattening the mapped netlist failed (log $w/flatten.log)" >&2
