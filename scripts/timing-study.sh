@@ -224,7 +224,7 @@ done
 # Merge into OUT (replace measured units' rows), then the configurations.
 CONF=$(dirname "$OUT")/timing_config.csv
 "$PY" - "$OUT" "$NEW" "$CONF" <<'PY'
-import csv, os, sys
+import csv, os, re, sys
 out, new, conf = sys.argv[1:4]
 head = 'unit,format,rounding,cells,area_um2,path_ns,min_period_ns,fmax_mhz,startpoint,endpoint,slow_stage,in_path_ns,out_path_ns,stage_ns,flow,rtl_sha256'.split(',')
 rows = {}
@@ -247,8 +247,8 @@ chip = lambda r: r['unit'].startswith('chip_')
 configs = sorted({(r['format'], r['rounding']) for r in timed
                   if r['format'] != '-' and r['rounding'] != '-'
                   and not r['unit'].startswith(('tcheck', 'tri_unit'))})
-def member(r, fmt, rnd, tri_fmt=None):
-    if chip(r): return False
+def member(r, fmt, rnd, tri_fmt=None, k=None):
+    if chip(r) or (k and r['unit'].startswith('dop_unit_') and f'_k{k}_' not in r['unit']): return False
     if r['format'] == '-': return True
     if r['unit'].startswith(('tcheck', 'tri_unit')): return r['format'] == (tri_fmt or fmt)
     return r['format'] == fmt and r['rounding'] in (rnd, '-')
@@ -268,7 +268,8 @@ ch = ('format,rounding,min_period_ns,fmax_mhz,slowest_unit,slow_stage,'
 crow = [config_row(f'{fmt} {rnd}', fmt, rnd, [r for r in timed if member(r, fmt, rnd)]) for fmt, rnd in configs]
 for c in (r for r in timed if chip(r)):
     dop, tri = (c['format'].split('/') + [None])[:2]
-    crow.append(config_row(c['unit'], c['format'], 'ru', [r for r in timed if member(r, dop, 'ru', tri)], c))
+    k = re.search(r'_k(\d+)$', c['unit']).group(1)
+    crow.append(config_row(c['unit'], c['format'], 'ru', [r for r in timed if member(r, dop, 'ru', tri, k)], c))
 with open(conf, 'w', newline='') as f:
     w = csv.DictWriter(f, ch, lineterminator='\n'); w.writeheader(); w.writerows(crow)
 fmt = '{:<24} {:>7} {:>11} {:>10} {:>8} {:>8}  {}'
