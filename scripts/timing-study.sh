@@ -6,11 +6,27 @@
 #   apt-get install -y yosys opensta qflow-tech-osu018
 # (LIB defaults to /usr/share/qflow/tech/osu018/osu018_stdcells.lib; set LIB to use another).
 #
-# Per unit rtl/<unit>.v (flat, top module `top`):
-#   yosys: read_verilog; synth -top top -flatten; dfflibmap -liberty LIB; abc -liberty LIB;
+# Per unit rtl/<unit>.v (top module `top`), flat or hierarchical (--hier):
+#   yosys: read_verilog; synth -top top -flatten; dfflibmap -liberty LIB; abc -liberty LIB
+#          -script ABC_SCRIPT (Yosys's default mapping, then ABC's `buffer -p; upsize; dnsize`);
 #          opt_clean; stat -liberty LIB (cells, area in um^2); write_verilog -noattr
+#   fanout: scripts/verilog/fanout.py puts a BUFX4 tree on every net with more than FANOUT
+#          (16) cell loads (register outputs, which ABC does not buffer); its buffers are in
+#          the netlist STA times, not in `cells`/`area_um2` (at most 2.3% more cells: fp_mul_b32)
+#   hier:  as scripts/synth.sh, every module that instantiates others is kept
+#          (`setattr -mod -set keep_hierarchy 1 t:* t:$* %d %m`), so each distinct one (the
+#          DOPTRF lane, an FP adder, T.CHECK, ...) is mapped by ABC once, however often it is
+#          used; leaf modules (registers, helpers) are flattened into their parents. The
+#          mapped modules are then flattened (Yosys `flatten`, no re-mapping; flow `hier+flat`)
+#          into the netlist OpenSTA times, so the fanout repair also sees the nets that cross
+#          module boundaries. Above FLATTEN_MAX cells (default 650000; the k = 24 DOP unit's
+#          620k took Yosys 4 GB and 11 minutes) OpenSTA links the hierarchical netlist instead
+#          (`link_design top`, flow `hier`): every path is still timed, across boundaries too,
+#          but a net that leaves its module is not repaired (its driver sees all the loads in
+#          the modules it feeds). ABC does not optimize across a kept boundary.
 #   each flip-flop instance is renamed after the register net it drives (`s3_nm.q[0]` ->
-#   `s3_nm__q_0_`), so a path's start and end name their pipeline stage (rust-hdl: `sK_*`)
+#   `s3_nm__q_0_`), so a path's start and end name their pipeline stage (rust-hdl: `sK_*`);
+#   (hier: after flattening, `doptrf$4.add_2.s1_small.q[0]` -> `doptrf_4__add_2__s1_small__q_0`)
 #   sta:   ideal clock of 10 ns on `clock`; the worst register-to-register setup path
 #          (report_checks -from [all_registers -clock_pins] -to [all_registers -data_pins]):
 #          path_ns = its data arrival (clk-to-q + logic);
@@ -21,29 +37,45 @@
 #          logic at a unit's ports, which adds to the register driving it in a design
 #          (fp_scale's shift sits between its inputs and its output register)
 # Writes (updates: rows of units not measured now are kept) the CSV
-#   unit,format,rounding,cells,area_um2,path_ns,min_period_ns,fmax_mhz,startpoint,endpoint,slow_stage,in_path_ns,out_path_ns,stage_ns
+#   unit,format,rounding,cells,area_um2,path_ns,min_period_ns,fmax_mhz,startpoint,endpoint,slow_stage,in_path_ns,out_path_ns,stage_ns,flow,rtl_sha256
+# (flow: flat | hier; rtl_sha256: sha256sum of the rtl/<unit>.v measured, which
+# scripts/check-timing-fresh.sh compares with rtl/ in CI)
 # and prints, per format / DOP rounding configuration, the period of its slowest measured unit
 # (also written to docs/figures/timing_config.csv, next to --out).
 # Work files: target/timing/<unit>/ (netlist.v, stat.txt, sta.tcl, sta.txt, yosys.log).
 #
-# Usage: scripts/timing-study.sh [--units PATTERNS] [--out FILE] [--timeout SECONDS]
-#   --units    space-separated shell globs on the unit name (default:
-#              'fp_mul_* fp_add_* fp_scale_* doptrf_* pair_queue_*'); e.g.
-#              --units tcheck_e8m15_rne adds T.CHECK (large: minutes and GBs)
+# Usage: scripts/timing-study.sh [--units PATTERNS | --configs-only] [--hier PATTERNS] [--out FILE] [--timeout SECONDS]
+#   --units    space-separated shell globs on the unit name (default: every rtl/*.v); e.g.
+#              --units 'fp_* doptrf_*' for the small ones (seconds to minutes each)
+#   --hier     the units synthesized hierarchically (default 'dop_unit_* tcheck_* tri_unit_* chip_*':
+#              flat, ABC does not finish them in 20 minutes / 4.7 GB)
+#   --configs-only  measure nothing: rewrite timing_config.csv from the rows of --out
+#   --sta-only re-time the netlists of an earlier run (target/timing/<unit>/netlist_raw.v)
 #   --out      default docs/figures/timing.csv
 #   --timeout  per unit, Yosys + STA (default 1200 s); a unit that times out is reported, not written
+#   MEM_KB     virtual memory limit per tool run (ulimit -v; default 8000000 = 8 GB)
 set -euo pipefail
 SCRIPTS=$(cd "$(dirname "$0")" && pwd)
 ROOT=$(cd "$SCRIPTS/.." && pwd)
 LIB=${LIB:-/usr/share/qflow/tech/osu018/osu018_stdcells.lib}
 PY=${PYTHON:-python3}
-UNITS='fp_mul_* fp_add_* fp_scale_* doptrf_* pair_queue_*'
+UNITS='*'
+HIER='dop_unit_* tcheck_* tri_unit_* chip_*'
+MEM_KB=${MEM_KB:-8000000}
+STA_ONLY=
+FLATTEN_MAX=${FLATTEN_MAX:-650000}
+# ABC: Yosys's default script for a liberty, then buffering (incl. of ABC's inputs, -p) and gate sizing
+ABC_SCRIPT='strash; &get -n; &fraig -x; &put; scorr; dc2; dretime; strash; &get -n; &dch -f; &nf; &put; buffer -p; upsize; dnsize'
+FANOUT=${FANOUT:-16}
 OUT=$ROOT/docs/figures/timing.csv
 TIMEOUT=1200
 usage() { sed -n '2,/^$/p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 2; }
 while [ $# -gt 0 ]; do
   case $1 in
     --units) UNITS=$2; shift 2 ;;
+    --hier) HIER=$2; shift 2 ;;
+    --configs-only) UNITS=; shift ;;
+    --sta-only) STA_ONLY=1; shift ;;
     --out) OUT=$2; shift 2 ;;
     --timeout) TIMEOUT=$2; shift 2 ;;
     -h|--help) usage ;;
@@ -59,27 +91,50 @@ if [ -n "$missing" ]; then
   exit 127
 fi
 
+# One bounded tool run (time and virtual memory).
+run() { (ulimit -v "$MEM_KB"; exec timeout "$TIMEOUT" "$@"); }
 FILES=()
 for u in $UNITS; do
   for f in "$ROOT"/rtl/$u.v; do [ -f "$f" ] && FILES+=("$f"); done
 done
-[ ${#FILES[@]} -gt 0 ] || { echo "timing-study.sh: no rtl/<unit>.v matches '$UNITS'" >&2; exit 2; }
+[ ${#FILES[@]} -gt 0 ] || [ -z "$UNITS" ] || { echo "timing-study.sh: no rtl/<unit>.v matches '$UNITS'" >&2; exit 2; }
 case $OUT in /*) ;; *) OUT=$PWD/$OUT ;; esac
 mkdir -p "$ROOT/target/timing" "$(dirname "$OUT")"
-NEW=$ROOT/target/timing/rows.csv
-: > "$NEW"
+NEW=$(mktemp "$ROOT/target/timing/rows.XXXXXX")
+trap 'rm -f "$NEW"' EXIT
 status=0
-for f in "${FILES[@]}"; do
+for f in ${FILES[@]+"${FILES[@]}"}; do
   unit=$(basename "$f" .v)
   w=$ROOT/target/timing/$unit
-  rm -rf "$w"; mkdir -p "$w"
   t0=$(date +%s)
-  if ! timeout "$TIMEOUT" yosys -q -l "$w/yosys.log" -p "read_verilog $f; synth -top top -flatten; dfflibmap -liberty $LIB; abc -liberty $LIB; opt_clean; tee -q -o $w/stat.txt stat -liberty $LIB; write_verilog -noattr $w/netlist_raw.v" >/dev/null 2>&1; then
-    echo "timing-study.sh: $unit: yosys failed or timed out after ${TIMEOUT}s (log $w/yosys.log)" >&2
-    status=1; continue
+  flow=flat; keep=
+  for h in $HIER; do case $unit in $h) flow=hier; keep='hierarchy -check -top top; setattr -mod -set keep_hierarchy 1 t:* t:$* %d %m;' ;; esac; done
+  if [ -n "$STA_ONLY" ]; then
+    [ -f "$w/netlist_raw.v" ] && [ -f "$w/stat.txt" ] || { echo "timing-study.sh: $unit: --sta-only needs $w/netlist_raw.v (run without it first)" >&2; status=1; continue; }
+  else
+    rm -rf "$w"; mkdir -p "$w"
+    echo "$ABC_SCRIPT" > "$w/abc.script"
+    if ! run yosys -q -l "$w/yosys.log" -p "read_verilog $f; $keep synth -top top -flatten; dfflibmap -liberty $LIB; abc -liberty $LIB -script $w/abc.script; opt_clean; tee -q -o $w/stat.txt stat -top top -liberty $LIB; write_verilog -noattr $w/netlist_raw.v" >/dev/null 2>&1; then
+      echo "timing-study.sh: $unit: yosys failed or timed out after ${TIMEOUT}s (log $w/yosys.log)" >&2
+      status=1; continue
+    fi
+  fi
+  # hier: the mapped modules flattened into one netlist (no re-mapping), so that the fanout
+  # repair below sees the nets that cross module boundaries too
+  # (Yosys needs about 6.5 KB per cell for this: up to FLATTEN_MAX cells; a larger unit is timed
+  # hierarchical, flow `hier`, where a net that leaves its module is not repaired)
+  mapped=$w/netlist_raw.v
+  cells=$(grep -E 'Number of cells:' "$w/stat.txt" | tail -n 1 | tr -dc 0-9)
+  if [ $flow = hier ] && [ "$cells" -le "$FLATTEN_MAX" ]; then
+    flow=hier+flat
+    mapped=$w/netlist_flat.v
+    if ! run yosys -q -l "$w/flatten.log" -p "read_liberty -lib $LIB; read_verilog $w/netlist_raw.v; hierarchy -top top; flatten; opt_clean; write_verilog -noattr $mapped" >/dev/null 2>&1; then
+      echo "timing-study.sh: $unit: flattening the mapped netlist failed (log $w/flatten.log)" >&2
+      status=1; continue
+    fi
   fi
   # Flip-flops named after the net their Q drives.
-  "$PY" - "$w/netlist_raw.v" "$w/netlist.v" <<'PY'
+  "$PY" - "$mapped" "$w/netlist_named.v" <<'PY'
 import re, sys
 src = open(sys.argv[1]).read()
 used = set()
@@ -98,6 +153,7 @@ def name(m):
 out = re.sub(r'^(\s*DFF\w*|\s*LATCH)\s+(\S+)\s+\((.*?\);)', name, src, flags=re.S | re.M)
 open(sys.argv[2], 'w').write(out)
 PY
+  "$PY" "$SCRIPTS/verilog/fanout.py" "$w/netlist_named.v" "$w/netlist.v" "$FANOUT" 2>> "$w/yosys.log"
   cat > "$w/sta.tcl" <<EOF
 read_liberty $LIB
 read_verilog $w/netlist.v
@@ -114,17 +170,22 @@ report_checks -path_delay max -digits 3 -from [all_registers -clock_pins] -to [a
 puts "=== endpoints"
 report_checks -path_delay max -digits 3 -from [all_registers -clock_pins] -to [all_registers -data_pins] -group_count 1000000 -endpoint_count 1 -format end
 EOF
-  if ! timeout "$TIMEOUT" sta -no_init -exit "$w/sta.tcl" > "$w/sta.txt" 2>&1; then
+  if ! run sta -no_init -exit "$w/sta.tcl" > "$w/sta.txt" 2>&1; then
     echo "timing-study.sh: $unit: sta failed (see $w/sta.txt)" >&2; status=1; continue
   fi
   t1=$(date +%s)
-  "$PY" - "$unit" "$w/stat.txt" "$w/sta.txt" >> "$NEW" <<'PY'
+  sha=$(sha256sum "$f" | cut -d' ' -f1)
+  "$PY" - "$unit" "$w/stat.txt" "$w/sta.txt" "$flow,$sha" >> "$NEW" <<'PY'
 import re, sys
-unit, stat, sta = sys.argv[1:4]
+unit, stat, sta, tail = sys.argv[1:5]
 st = open(stat).read()
 cells = int(re.findall(r'Number of cells:\s+(\d+)', st)[-1])
-area = float(re.findall(r'Chip area for module .*?:\s+([\d.]+)', st)[-1])
-txt = open(sta).read()
+area = float(re.findall(r'Chip area for (?:top )?module .*?:\s+([\d.]+)', st)[-1])
+# hier: OpenSTA names instances by path (`doptrf\$4/add_2/s1_small__q_0`): write them as flat ones
+def flat(tok):
+    inst, pin = re.fullmatch(r'(.*?)(/[A-Z]+\d*)?', tok.replace('\\', '')).groups()
+    return inst.replace('$', '_').replace('/', '__') + (pin or '')
+txt = re.sub(r'\S*[$/]\S*', lambda m: flat(m.group()), open(sta).read())
 worst, rest = txt.split('=== in')
 inp, rest = rest.split('=== out')
 outp, ends = rest.split('=== endpoints')
@@ -136,7 +197,7 @@ sp = re.search(r'Startpoint: (\S+)', worst); ep = re.search(r'Endpoint: (\S+)', 
 slack = re.search(r'(-?[\d.]+)\s+slack', worst)
 arr = re.search(r'(-?[\d.]+)\s+data arrival time', worst)
 parts = unit.split('_')
-fmt = next((p for p in parts if re.fullmatch(r'b32|e\d+m\d+', p)), '-')
+fmt = '/'.join(p for p in parts if re.fullmatch(r'b32|e\d+m\d+', p)) or '-'  # chip_e8m15_b32_k24: e8m15/b32
 rnd = next((p for p in parts if p in ('rne', 'ru', 'rd', 'rz')), '-')
 def block(inst):
     # register block: the instance name up to its `__q_N_` / `_N_` bit suffix
@@ -146,7 +207,7 @@ def block(inst):
     if m: segs[-1] = m.group(1)
     return '.'.join(segs)
 if not slack:  # no register-to-register path (combinational unit)
-    print(f'{unit},{fmt},{rnd},{cells},{area:.0f},,,,-,-,-,{io},-'); sys.exit()
+    print(f'{unit},{fmt},{rnd},{cells},{area:.0f},,,,-,-,-,{io},-,{tail}'); sys.exit()
 period = 10 - float(slack.group(1))
 stages = {}
 for m in re.finditer(r'^(\S+)/D \(\S+\)\s+(-?[\d.]+)\s+(-?[\d.]+)\s+(-?[\d.]+)', ends, re.M):
@@ -155,7 +216,7 @@ for m in re.finditer(r'^(\S+)/D \(\S+\)\s+(-?[\d.]+)\s+(-?[\d.]+)\s+(-?[\d.]+)',
 order = sorted(stages.items(), key=lambda kv: -kv[1])
 sn = ' '.join(f'{b}:{p:.2f}' for b, p in order)
 print(f'{unit},{fmt},{rnd},{cells},{area:.0f},{float(arr.group(1)):.3f},{period:.3f},{1000/period:.1f},'
-      f'{sp.group(1)},{ep.group(1)},{block(ep.group(1))},{io},{sn}')
+      f'{sp.group(1)},{ep.group(1)},{block(ep.group(1))},{io},{sn},{tail}')
 PY
   echo "$(tail -n 1 "$NEW" | cut -d, -f1,4-8,11)  ($((t1 - t0)) s)" >&2
 done
@@ -163,9 +224,9 @@ done
 # Merge into OUT (replace measured units' rows), then the configurations.
 CONF=$(dirname "$OUT")/timing_config.csv
 "$PY" - "$OUT" "$NEW" "$CONF" <<'PY'
-import csv, os, sys
+import csv, os, re, sys
 out, new, conf = sys.argv[1:4]
-head = 'unit,format,rounding,cells,area_um2,path_ns,min_period_ns,fmax_mhz,startpoint,endpoint,slow_stage,in_path_ns,out_path_ns,stage_ns'.split(',')
+head = 'unit,format,rounding,cells,area_um2,path_ns,min_period_ns,fmax_mhz,startpoint,endpoint,slow_stage,in_path_ns,out_path_ns,stage_ns,flow,rtl_sha256'.split(',')
 rows = {}
 if os.path.exists(out):
     for r in csv.DictReader(open(out)): rows[r['unit']] = r
@@ -176,30 +237,39 @@ with open(out, 'w', newline='') as f:
 # A configuration = number format x DOP rounding. Its units: those of that format and
 # rounding, those of that format without a rounding (fp_scale), the triangle datapath of that
 # format (T.CHECK / TRI_UNIT: round to nearest even in every configuration) and the
-# format-free ones (pair queue).
+# format-free ones (pair queue). A chip (chip_<dop format>[_<triangle format>]_k<k>) is a
+# configuration of its own: its period is that of its own netlist, where every stage, the
+# control and the paths between units are timed together; its units' rows (DOP format rounding
+# outward, as every chip's lanes: src/chip/rtl.rs; T.CHECK / TRI_UNIT of the triangle
+# format; the pair queue) are listed and their slowest given as datapath_* for comparison.
 timed = [r for r in rows if r['min_period_ns']]
+chip = lambda r: r['unit'].startswith('chip_')
 configs = sorted({(r['format'], r['rounding']) for r in timed
                   if r['format'] != '-' and r['rounding'] != '-'
                   and not r['unit'].startswith(('tcheck', 'tri_unit'))})
-def member(r, fmt, rnd):
+def member(r, fmt, rnd, tri_fmt=None, k=None):
+    if chip(r) or (k and r['unit'].startswith('dop_unit_') and f'_k{k}_' not in r['unit']): return False
     if r['format'] == '-': return True
-    if r['format'] != fmt: return False
-    if r['unit'].startswith(('tcheck', 'tri_unit')): return True
-    return r['rounding'] in (rnd, '-')
-ch = ('format,rounding,min_period_ns,fmax_mhz,slowest_unit,slow_stage,'
-      'datapath_period_ns,datapath_unit,datapath_stage,in_path_ns,in_path_unit,units').split(',')
-crow = []
-for fmt, rnd in configs:
-    m = sorted((r for r in timed if member(r, fmt, rnd)), key=lambda r: -float(r['min_period_ns']))
-    s = m[0]
+    if r['unit'].startswith(('tcheck', 'tri_unit')): return r['format'] == (tri_fmt or fmt)
+    return r['format'] == fmt and r['rounding'] in (rnd, '-')
+def config_row(name, fmt, rnd, m, own=None):
+    m = sorted(m, key=lambda r: -float(r['min_period_ns']))
+    s = own or m[0]
     d = next((r for r in m if r['format'] != '-'), None)
     i = max((r for r in m if r.get('in_path_ns') and r['format'] != '-'), key=lambda r: float(r['in_path_ns']), default=None)
-    crow.append(dict(format=fmt, rounding=rnd, min_period_ns=s['min_period_ns'], fmax_mhz=s['fmax_mhz'],
-                     slowest_unit=s['unit'], slow_stage=s['slow_stage'],
-                     datapath_period_ns=d['min_period_ns'] if d else '', datapath_unit=d['unit'] if d else '-',
-                     datapath_stage=d['slow_stage'] if d else '-',
-                     in_path_ns=i['in_path_ns'] if i else '', in_path_unit=i['unit'] if i else '-',
-                     units=' '.join(r['unit'] for r in m)))
+    return dict(format=fmt, rounding=rnd, min_period_ns=s['min_period_ns'], fmax_mhz=s['fmax_mhz'],
+                slowest_unit=s['unit'], slow_stage=s['slow_stage'],
+                datapath_period_ns=d['min_period_ns'] if d else '', datapath_unit=d['unit'] if d else '-',
+                datapath_stage=d['slow_stage'] if d else '-',
+                in_path_ns=i['in_path_ns'] if i else '', in_path_unit=i['unit'] if i else '-',
+                units=' '.join(r['unit'] for r in m), config=name)
+ch = ('format,rounding,min_period_ns,fmax_mhz,slowest_unit,slow_stage,'
+      'datapath_period_ns,datapath_unit,datapath_stage,in_path_ns,in_path_unit,units,config').split(',')
+crow = [config_row(f'{fmt} {rnd}', fmt, rnd, [r for r in timed if member(r, fmt, rnd)]) for fmt, rnd in configs]
+for c in (r for r in timed if chip(r)):
+    dop, tri = (c['format'].split('/') + [None])[:2]
+    k = re.search(r'_k(\d+)$', c['unit']).group(1)
+    crow.append(config_row(c['unit'], c['format'], 'ru', [r for r in timed if member(r, dop, 'ru', tri, k)], c))
 with open(conf, 'w', newline='') as f:
     w = csv.DictWriter(f, ch, lineterminator='\n'); w.writeheader(); w.writerows(crow)
 fmt = '{:<24} {:>7} {:>11} {:>10} {:>8} {:>8}  {}'
@@ -207,9 +277,9 @@ print(fmt.format('unit', 'cells', 'area_um2', 'period_ns', 'fmax', 'in_path', 's
 for r in rows:
     print(fmt.format(r['unit'], r['cells'], r['area_um2'], r['min_period_ns'] or '-', r['fmax_mhz'] or '-',
                      r.get('in_path_ns') or '-', r['slow_stage']))
-print('\nper configuration (format, DOP rounding): the period of its slowest measured unit (reg-to-reg)')
+print('\nper configuration (format, DOP rounding; a chip): the period of its slowest measured unit (reg-to-reg)')
 for c in crow:
-    print(f"{c['format']:<6} {c['rounding']:<4} {c['min_period_ns']:>7} ns {c['fmax_mhz']:>6} MHz: "
+    print(f"{c['config']:<20} {c['min_period_ns']:>7} ns {c['fmax_mhz']:>6} MHz: "
           f"{c['slowest_unit']}, path into {c['slow_stage']}; slowest datapath unit "
           f"{c['datapath_unit']} {c['datapath_period_ns']} ns into {c['datapath_stage']}; "
           f"worst datapath input-to-register logic {c['in_path_ns']} ns ({c['in_path_unit']}, its stage 1: "

@@ -1,0 +1,41 @@
+#!/usr/bin/env bash
+# Are the checked-in timing tables measured on the current rtl/? Cheap (no EDA tool runs):
+# each row's `rtl_sha256` must be the sha256sum of rtl/<unit>.v and a row's unit must still be
+# exported. The exported units without a row in docs/figures/timing.csv are listed (not an
+# error: the large ones take the study tens of minutes each; the ECP5 table,
+# docs/figures/timing_ecp5.csv, has rows only for the units it measures).
+# Usage: scripts/check-timing-fresh.sh [TABLE ...]   (default: the two tables; what CI runs)
+set -euo pipefail
+ROOT=$(cd "$(dirname "$0")/.." && pwd)
+cd "$ROOT"
+[ $# -gt 0 ] || set -- docs/figures/timing.csv docs/figures/timing_ecp5.csv
+python3 - "$@" <<'PY'
+import csv, glob, hashlib, os, sys
+rtl = {os.path.basename(f)[:-2]: hashlib.sha256(open(f, 'rb').read()).hexdigest()
+       for f in glob.glob('rtl/*.v')}
+bad = []
+for table in sys.argv[1:]:
+    rows = list(csv.DictReader(open(table)))
+    if not rows or 'rtl_sha256' not in rows[0]:
+        bad.append(f'{table}: no rtl_sha256 column')
+        continue
+    seen = set()
+    for line, r in enumerate(rows, 2):
+        u = r['unit']
+        seen.add(u)
+        if u not in rtl:
+            bad.append(f'{table}:{line}: {u}: rtl/{u}.v is no longer exported: delete the row')
+        elif r['rtl_sha256'] != rtl[u]:
+            bad.append(f'{table}:{line}: {u}: measured on another rtl/{u}.v (sha256 {r["rtl_sha256"][:12]}.., '
+                       f'now {rtl[u][:12]}..)')
+    missing = sorted(set(rtl) - seen)
+    if missing and table.endswith('/timing.csv'):
+        print(f'{table}: not measured (no row): {" ".join(missing)}')
+for b in bad:
+    print(b, file=sys.stderr)
+if bad:
+    print('stale timing tables: re-run scripts/timing-study.sh --units "<unit> ..." '
+          '(scripts/timing-ecp5.sh --units "<unit> ..." for timing_ecp5.csv); scripts/README.md', file=sys.stderr)
+    sys.exit(1)
+print(f'timing tables fresh: {", ".join(sys.argv[1:])} ({len(rtl)} units in rtl/)')
+PY
