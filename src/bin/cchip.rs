@@ -3,6 +3,7 @@
 
 use clap::{Args, Parser, Subcommand};
 use collision_chip::chip::preset::Preset;
+use collision_chip::chip::timing::Technology;
 use collision_chip::chip::config::{ChipConfig, DopRounding, Formats};
 use collision_chip::chip::memory::Memory;
 use collision_chip::mesh::{self, Mesh};
@@ -13,7 +14,7 @@ use collision_chip::harness::units;
 use collision_chip::scene::graph::Plan;
 use collision_chip::scene::run::Prepared;
 use collision_chip::pose::Sweep;
-use collision_chip::scene::{CrossCheck, Scene, Waveforms, DEFAULT_SCENE};
+use collision_chip::scene::{CrossCheck, Flags, Scene, Waveforms, DEFAULT_SCENE};
 use collision_chip::traversal::{Counters, Traversal};
 use collision_chip::chip::reg::Mode;
 use serde::Serialize;
@@ -129,6 +130,12 @@ struct RunOpts {
     /// reset values). --explain prints the values it resolves to.
     #[arg(long, value_enum)]
     preset: Option<Preset>,
+    /// The chip's clock instead of the scene's [timing] technology or clock_mhz: osu018 (the
+    /// configuration's slowest RTL unit measured on OSU 0.18 um cells, docs/figures/timing.csv;
+    /// a scene's default), ecp5 (docs/figures/timing_ecp5.csv) or paper (the preset's clock,
+    /// assumed: 800 or 266 MHz).
+    #[arg(long, value_enum)]
+    technology: Option<Technology>,
 }
 
 #[derive(Args)]
@@ -363,9 +370,10 @@ fn figures(out: &std::path::Path, quick: bool) -> Result<(), String> {
 }
 
 fn run(path: Option<PathBuf>, o: RunOpts) -> Result<(), String> {
+    let flags = Flags { preset: o.preset, technology: o.technology };
     let mut scene = match &path {
-        Some(p) => Scene::load_with(p, o.preset)?,
-        None => Scene::parse_with(DEFAULT_SCENE, "built-in default scene", o.preset)?,
+        Some(p) => Scene::load_with(p, flags)?,
+        None => Scene::parse_with(DEFAULT_SCENE, "built-in default scene", flags)?,
     };
     if let Some(dir) = o.vcd {
         scene.outputs.waveforms = Some(Waveforms::all(dir));
@@ -382,10 +390,10 @@ fn run(path: Option<PathBuf>, o: RunOpts) -> Result<(), String> {
     let (ta, tb) = (&prepared.a, &prepared.b);
     if !o.json {
         println!(
-            "scene: {}\n  A = {} ({} triangles), B = {} ({} triangles){}\n  chip: k={} format={} dop-rounding={}; {} traversal, {} mode; {} poses",
+            "scene: {}\n  A = {} ({} triangles), B = {} ({} triangles){}\n  chip: k={} format={} dop-rounding={}; {} traversal, {} mode; {} poses\n  clock: {}",
             scene.name, scene.objects.a, ta.len(), scene.objects.b, tb.len(),
             if scene.objects.unit_cube { ", both scaled into [-1,1]^3" } else { "" },
-            scene.cfg.k, scene.cfg.format, scene.cfg.dop_rounding, format!("{:?}", scene.traversal).to_lowercase(), format!("{:?}", scene.mode).to_lowercase(), scene.poses.len()
+            scene.cfg.k, scene.cfg.format, scene.cfg.dop_rounding, format!("{:?}", scene.traversal).to_lowercase(), format!("{:?}", scene.mode).to_lowercase(), scene.poses.len(), scene.clock.source()
         );
     }
     let bar = progress_bar(scene.poses.len() as u64, o.json);
@@ -410,8 +418,8 @@ fn run(path: Option<PathBuf>, o: RunOpts) -> Result<(), String> {
     if out.cycles {
         let p = &scene.params;
         println!(
-            "cycles = the chip's clocks from start to done (cycle model: {} queue entries, {memory}); chip_us at {} MHz; sw_us = the golden model's query on this machine (one at a time); speedup = sw_us / chip_us.",
-            p.queue_entries, scene.clock_mhz
+            "cycles = the chip's clocks from start to done (cycle model: {} queue entries, {memory});\nchip_us = cycles x the clock period, {};\nsetup_us, settle_us = the host's setup for the pose and its settling of the uncertain pairs with the exact oracle, measured on this machine (wall clock, the fastest of 3, one pose at a time: noisy);\ne2e_us = setup_us + chip_us + settle_us; sw_us = the golden model's query on this machine (one at a time); speedup = sw_us / chip_us; e2e_x = sw_us / e2e_us.",
+            p.queue_entries, scene.clock.source()
         );
         println!("\nwhere the clocks went (share of clocks by what the DOP unit's input did; occupancy = mean units in flight):");
         print!("{}", stall_table(&records));
