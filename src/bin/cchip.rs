@@ -168,6 +168,23 @@ struct AccuracyArgs {
     /// word per clock whatever its width).
     #[arg(long, value_name = "N")]
     bus_bits: Option<u32>,
+    /// Memory systems: the chip presets whose memory, port and triangle cache each
+    /// configuration runs on (rtl: the RTL's reset port on a one-clock memory; date05, wscg03:
+    /// the papers' DDR memories, the port at full speed), comma separated.
+    #[arg(long, value_enum, value_delimiter = ',', default_value = "rtl,date05,wscg03")]
+    presets: Vec<Preset>,
+    /// The clock period of each configuration: osu018 (its slowest RTL unit measured on OSU
+    /// 0.18 um, docs/figures/timing.csv), ecp5 or paper (the preset's 800 / 266 MHz, assumed).
+    #[arg(long, value_enum, default_value = "osu018")]
+    technology: Technology,
+    /// Run only the K-th of N shares of the (mesh, pose) items (1 <= K <= N) and print the
+    /// share's sums as JSON, for --merge (a SLURM array job, GNU parallel: README).
+    #[arg(long, value_name = "K/N", conflicts_with = "merge")]
+    shard: Option<accuracy::Shard>,
+    /// Combine the shards' JSON files (all N of one study) into the serial run's output:
+    /// the study's own arguments are read from the files.
+    #[arg(long, value_name = "FILES", num_args = 1..)]
+    merge: Vec<PathBuf>,
     /// Yosys cells per unit (`unit,cells`, as scripts/area-study.sh writes
     /// docs/figures/area_cells.csv): adds each configuration's cells (DOP unit + TRI_UNIT) to
     /// the table and, with --plot, the plot of clocks against cells.
@@ -327,18 +344,36 @@ fn progress_bar(len: u64, hidden: bool) -> ProgressBar {
 }
 
 fn accuracy(a: AccuracyArgs) -> Result<(), String> {
-    let sweep = Sweep { distances: a.distances.clone(), orientations: a.orientations, seed: a.seed };
-    let roundings = [DopRounding::Outward, DopRounding::NearestEven];
-    let memory = collision_chip::chip::memory::MemTiming { bus_bits: a.bus_bits, ..Default::default() };
-    memory.check()?;
     let area = a.area.as_deref().map(accuracy::Area::load).transpose()?;
-    let bar = progress_bar(a.meshes.len().saturating_mul(a.distances.len()).saturating_mul(a.orientations) as u64, a.json);
-    let mut rows = vec![];
-    for m in &a.meshes {
-        let tris = load(m, true)?.triangles_f64();
-        rows.extend(accuracy::study(m, &tris, &a.k, &a.formats, &roundings, &sweep, memory, || bar.inc(1))?);
-    }
-    bar.finish_and_clear();
+    let (plan, rows) = if a.merge.is_empty() {
+        let plan = accuracy::Plan {
+            meshes: a.meshes.clone(),
+            presets: a.presets.clone(),
+            ks: a.k.clone(),
+            formats: a.formats.clone(),
+            roundings: vec![DopRounding::Outward, DopRounding::NearestEven],
+            sweep: Sweep { distances: a.distances.clone(), orientations: a.orientations, seed: a.seed },
+            bus_bits: a.bus_bits,
+            technology: a.technology,
+        };
+        let shard = a.shard.unwrap_or(accuracy::Shard::ALL);
+        let items = a.meshes.len().saturating_mul(a.distances.len()).saturating_mul(a.orientations);
+        let bar = progress_bar(items.div_ceil(shard.n) as u64, a.json || a.shard.is_some());
+        let rows = accuracy::run(&plan, |m| Ok(load(m, true)?.triangles_f64()), shard, || bar.inc(1))?;
+        bar.finish_and_clear();
+        if a.shard.is_some() {
+            let file = accuracy::ShardFile { plan, shard, rows };
+            println!("{}", serde_json::to_string_pretty(&file).expect("serialisable"));
+            return Ok(());
+        }
+        (plan, rows)
+    } else {
+        let files = a.merge.iter().map(|p| {
+            let text = std::fs::read_to_string(p).map_err(|e| format!("{}: {e}", p.display()))?;
+            serde_json::from_str(&text).map_err(|e| format!("{}:{}: not a shard's output ({e}); write shards with cchip accuracy --shard K/N > FILE", p.display(), e.line()))
+        });
+        accuracy::merge(files.collect::<Result<_, String>>()?)?
+    };
     if let Some(dir) = &a.plot {
         std::fs::create_dir_all(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
         for f in accuracy::figures(&rows, area.as_ref()) {
@@ -350,7 +385,8 @@ fn accuracy(a: AccuracyArgs) -> Result<(), String> {
     if a.json {
         println!("{}", serde_json::to_string_pretty(&rows).expect("serialisable"));
     } else {
-        print!("{}", accuracy::table(&rows, area.as_ref()));
+        print!("{}", accuracy::table(&plan, &rows, area.as_ref())?);
+        println!("\nhost us = the host's setup per pose and its settling of the uncertain pairs with the exact oracle, measured on this machine (wall clock, the fastest of 3, poses on every core: noisy); end to end = host + chip.\nclock periods:\n{}", accuracy::clocks(&rows));
     }
     Ok(())
 }

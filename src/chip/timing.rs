@@ -34,10 +34,12 @@ impl Technology {
     }
 }
 
-/// One timing table: each measured unit's minimum clock period in ns.
+/// One timing table: each measured unit's minimum clock period in ns, and its area in um^2
+/// where the table gives it.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Table {
     periods: BTreeMap<String, f64>,
+    areas: BTreeMap<String, f64>,
 }
 
 impl Table {
@@ -49,11 +51,11 @@ impl Table {
         let head = r.headers().map_err(|e| format!("{file}:1: {e}"))?.clone();
         let col = |name: &str| head.iter().position(|h| h.trim() == name);
         let unit = col("unit").ok_or_else(|| format!("{file}:1: no `unit` column (re-run scripts/timing-study.sh)"))?;
-        let (period, fmax) = (col("min_period_ns"), col("fmax_mhz"));
+        let (period, fmax, area) = (col("min_period_ns"), col("fmax_mhz"), col("area_um2"));
         if period.is_none() && fmax.is_none() {
             return Err(format!("{file}:1: neither a `min_period_ns` nor a `fmax_mhz` column (re-run scripts/timing-study.sh)"));
         }
-        let mut periods = BTreeMap::new();
+        let (mut periods, mut areas) = (BTreeMap::new(), BTreeMap::new());
         for (i, row) in r.records().enumerate() {
             let line = i + 2;
             let row = row.map_err(|e| format!("{file}:{line}: {e}"))?;
@@ -70,12 +72,37 @@ impl Table {
                 Some(ns) => Some(ns),
                 None => num(fmax)?.map(|f| 1000.0 / f),
             };
-            if let (Some(name), Some(ns)) = (row.get(unit), ns) {
-                periods.insert(name.trim().to_string(), ns);
+            let name = row.get(unit).unwrap_or("").trim().to_string();
+            if let Some(a) = num(area)? {
+                areas.insert(name.clone(), a);
+            }
+            if let Some(ns) = ns {
+                periods.insert(name, ns);
             }
         }
-        Ok(Table { periods })
+        Ok(Table { periods, areas })
     }
+
+    /// The table of `tech` (none for [`Technology::Paper`]).
+    pub fn of(tech: Technology) -> Result<Option<Table>, String> {
+        tech.table().map(|(file, text, _)| Table::parse(text, file)).transpose()
+    }
+
+    /// um^2 of the units a configuration changes, its DOP unit and TRI_UNIT (as the area
+    /// study's cells); `None` unless both are measured.
+    pub fn datapath_area_um2(&self, cfg: &ChipConfig) -> Option<f64> {
+        Some(self.areas.get(&dop_unit(cfg))? + self.areas.get(&tri_unit(cfg))?)
+    }
+}
+
+/// The DOP unit's name: k DOPTRF lanes in the DOP format and rounding.
+fn dop_unit(cfg: &ChipConfig) -> String {
+    format!("dop_unit_k{}_{}_{}", cfg.k, rtl::format_tag(cfg.format.dop), rtl::rounding_tag(cfg.dop_rounding.op()))
+}
+
+/// TRI_UNIT's name: two T.CHECKs in T.CHECK's format and rounding.
+fn tri_unit(cfg: &ChipConfig) -> String {
+    format!("tri_unit_{}_{}", rtl::format_tag(cfg.format.tri), rtl::rounding_tag(cfg.tri_rounding))
 }
 
 /// The RTL units a configuration is built from, by their names in `rtl/` and the timing
@@ -86,8 +113,8 @@ impl Table {
 pub fn units(cfg: &ChipConfig) -> Vec<String> {
     let (d, dr) = (rtl::format_tag(cfg.format.dop), rtl::rounding_tag(cfg.dop_rounding.op()));
     let (t, tr) = (rtl::format_tag(cfg.format.tri), rtl::rounding_tag(cfg.tri_rounding));
-    let mut u = vec![format!("fp_mul_{d}_{dr}"), format!("fp_add_{d}_{dr}"), format!("doptrf_{d}_{dr}"), format!("dop_unit_k{}_{d}_{dr}", cfg.k)];
-    for name in [format!("fp_mul_{t}_{tr}"), format!("fp_add_{t}_{tr}"), format!("fp_scale_{t}"), format!("tcheck_{t}_{tr}"), format!("tri_unit_{t}_{tr}")] {
+    let mut u = vec![format!("fp_mul_{d}_{dr}"), format!("fp_add_{d}_{dr}"), format!("doptrf_{d}_{dr}"), dop_unit(cfg)];
+    for name in [format!("fp_mul_{t}_{tr}"), format!("fp_add_{t}_{tr}"), format!("fp_scale_{t}"), format!("tcheck_{t}_{tr}"), tri_unit(cfg)] {
         if !u.contains(&name) {
             u.push(name);
         }
