@@ -97,7 +97,7 @@ fn cos_sin_deg(deg: f64) -> [f64; 2] {
     }
 }
 
-#[derive(Debug, Clone, Deserialize)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Sweep {
     pub distances: Vec<f64>,

@@ -96,8 +96,48 @@ impl Chip {
 
     pub fn query(&self, pose: &Pose, mode: Mode, traversal: Traversal) -> QueryResult {
         let setup = self.setup(pose);
-        let host = Host { a: &self.geometry[0], b: &self.geometry[1], rot: pose.rotation(), t: pose.translation() };
-        traversal::run(&self.cfg, &self.a, &self.b, &setup, &host, mode, traversal)
+        traversal::run(&self.cfg, &self.a, &self.b, &setup, &self.host(pose), mode, traversal)
+    }
+
+    /// What the host settles uncertain pairs with at `pose`.
+    pub fn host(&self, pose: &Pose) -> Host<'_> {
+        Host { a: &self.geometry[0], b: &self.geometry[1], rot: pose.rotation(), t: pose.translation() }
+    }
+}
+
+/// The host's share of one query, wall clock on this machine: the setup per pose (`b_i`, j,
+/// C, c, the frame maps: DATE'05 Eq. 6) and the settling of the chip's uncertain pairs by
+/// the exact oracle. A measurement, noisy: reported, never compared.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize)]
+pub struct HostTime {
+    pub setup_us: f64,
+    pub settle_us: f64,
+}
+
+/// Each host time is the fastest of this many runs (the first pays for cold caches).
+const HOST_REPEATS: usize = 3;
+
+impl Chip {
+    /// Measures the host's setup for `pose` and its settling of `uncertain`.
+    pub fn host_time(&self, pose: &Pose, uncertain: &[(u32, u32)]) -> HostTime {
+        let fastest = |f: &dyn Fn()| {
+            (0..HOST_REPEATS)
+                .map(|_| {
+                    let t0 = std::time::Instant::now();
+                    f();
+                    t0.elapsed().as_secs_f64() * 1e6
+                })
+                .fold(f64::INFINITY, f64::min)
+        };
+        HostTime {
+            setup_us: fastest(&|| {
+                std::hint::black_box(self.setup(std::hint::black_box(pose)));
+            }),
+            settle_us: fastest(&|| {
+                let host = self.host(std::hint::black_box(pose));
+                std::hint::black_box(uncertain.iter().filter(|&&(a, b)| host.settle(a, b)).count());
+            }),
+        }
     }
 }
 

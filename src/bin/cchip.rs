@@ -3,6 +3,7 @@
 
 use clap::{Args, Parser, Subcommand};
 use collision_chip::chip::preset::Preset;
+use collision_chip::chip::timing::Technology;
 use collision_chip::chip::config::{ChipConfig, DopRounding, Formats};
 use collision_chip::chip::memory::Memory;
 use collision_chip::mesh::{self, Mesh};
@@ -13,7 +14,7 @@ use collision_chip::harness::units;
 use collision_chip::scene::graph::Plan;
 use collision_chip::scene::run::Prepared;
 use collision_chip::pose::Sweep;
-use collision_chip::scene::{CrossCheck, Scene, Waveforms, DEFAULT_SCENE};
+use collision_chip::scene::{CrossCheck, Flags, Scene, Waveforms, DEFAULT_SCENE};
 use collision_chip::traversal::{Counters, Traversal};
 use collision_chip::chip::reg::Mode;
 use serde::Serialize;
@@ -129,6 +130,12 @@ struct RunOpts {
     /// reset values). --explain prints the values it resolves to.
     #[arg(long, value_enum)]
     preset: Option<Preset>,
+    /// The chip's clock instead of the scene's [timing] technology or clock_mhz: osu018 (the
+    /// configuration's slowest RTL unit measured on OSU 0.18 um cells, docs/figures/timing.csv;
+    /// a scene's default), ecp5 (docs/figures/timing_ecp5.csv) or paper (the preset's clock,
+    /// assumed: 800 or 266 MHz).
+    #[arg(long, value_enum)]
+    technology: Option<Technology>,
 }
 
 #[derive(Args)]
@@ -161,6 +168,23 @@ struct AccuracyArgs {
     /// word per clock whatever its width).
     #[arg(long, value_name = "N")]
     bus_bits: Option<u32>,
+    /// Memory systems: the chip presets whose memory, port and triangle cache each
+    /// configuration runs on (rtl: the RTL's reset port on a one-clock memory; date05, wscg03:
+    /// the papers' DDR memories, the port at full speed), comma separated.
+    #[arg(long, value_enum, value_delimiter = ',', default_value = "rtl,date05,wscg03")]
+    presets: Vec<Preset>,
+    /// The clock period of each configuration: osu018 (its slowest RTL unit measured on OSU
+    /// 0.18 um, docs/figures/timing.csv), ecp5 or paper (the preset's 800 / 266 MHz, assumed).
+    #[arg(long, value_enum, default_value = "osu018")]
+    technology: Technology,
+    /// Run only the K-th of N shares of the (mesh, pose) items (1 <= K <= N) and print the
+    /// share's sums as JSON, for --merge (a SLURM array job, GNU parallel: README).
+    #[arg(long, value_name = "K/N", conflicts_with = "merge")]
+    shard: Option<accuracy::Shard>,
+    /// Combine the shards' JSON files (all N of one study) into the serial run's output:
+    /// the study's own arguments are read from the files.
+    #[arg(long, value_name = "FILES", num_args = 1..)]
+    merge: Vec<PathBuf>,
     /// Yosys cells per unit (`unit,cells`, as scripts/area-study.sh writes
     /// docs/figures/area_cells.csv): adds each configuration's cells (DOP unit + TRI_UNIT) to
     /// the table and, with --plot, the plot of clocks against cells.
@@ -320,18 +344,36 @@ fn progress_bar(len: u64, hidden: bool) -> ProgressBar {
 }
 
 fn accuracy(a: AccuracyArgs) -> Result<(), String> {
-    let sweep = Sweep { distances: a.distances.clone(), orientations: a.orientations, seed: a.seed };
-    let roundings = [DopRounding::Outward, DopRounding::NearestEven];
-    let memory = collision_chip::chip::memory::MemTiming { bus_bits: a.bus_bits, ..Default::default() };
-    memory.check()?;
     let area = a.area.as_deref().map(accuracy::Area::load).transpose()?;
-    let bar = progress_bar(a.meshes.len().saturating_mul(a.distances.len()).saturating_mul(a.orientations) as u64, a.json);
-    let mut rows = vec![];
-    for m in &a.meshes {
-        let tris = load(m, true)?.triangles_f64();
-        rows.extend(accuracy::study(m, &tris, &a.k, &a.formats, &roundings, &sweep, memory, || bar.inc(1))?);
-    }
-    bar.finish_and_clear();
+    let (plan, rows) = if a.merge.is_empty() {
+        let plan = accuracy::Plan {
+            meshes: a.meshes.clone(),
+            presets: a.presets.clone(),
+            ks: a.k.clone(),
+            formats: a.formats.clone(),
+            roundings: vec![DopRounding::Outward, DopRounding::NearestEven],
+            sweep: Sweep { distances: a.distances.clone(), orientations: a.orientations, seed: a.seed },
+            bus_bits: a.bus_bits,
+            technology: a.technology,
+        };
+        let shard = a.shard.unwrap_or(accuracy::Shard::ALL);
+        let items = a.meshes.len().saturating_mul(a.distances.len()).saturating_mul(a.orientations);
+        let bar = progress_bar(items.div_ceil(shard.n) as u64, a.json || a.shard.is_some());
+        let rows = accuracy::run(&plan, |m| Ok(load(m, true)?.triangles_f64()), shard, || bar.inc(1))?;
+        bar.finish_and_clear();
+        if a.shard.is_some() {
+            let file = accuracy::ShardFile { plan, shard, rows };
+            println!("{}", serde_json::to_string_pretty(&file).expect("serialisable"));
+            return Ok(());
+        }
+        (plan, rows)
+    } else {
+        let files = a.merge.iter().map(|p| {
+            let text = std::fs::read_to_string(p).map_err(|e| format!("{}: {e}", p.display()))?;
+            serde_json::from_str(&text).map_err(|e| format!("{}:{}: not a shard's output ({e}); write shards with cchip accuracy --shard K/N > FILE", p.display(), e.line()))
+        });
+        accuracy::merge(files.collect::<Result<_, String>>()?)?
+    };
     if let Some(dir) = &a.plot {
         std::fs::create_dir_all(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
         for f in accuracy::figures(&rows, area.as_ref()) {
@@ -343,7 +385,8 @@ fn accuracy(a: AccuracyArgs) -> Result<(), String> {
     if a.json {
         println!("{}", serde_json::to_string_pretty(&rows).expect("serialisable"));
     } else {
-        print!("{}", accuracy::table(&rows, area.as_ref()));
+        print!("{}", accuracy::table(&plan, &rows, area.as_ref())?);
+        println!("\nhost us = the host's setup per pose and its settling of the uncertain pairs with the exact oracle, measured on this machine (wall clock, the fastest of 3, poses on every core: noisy); end to end = host + chip.\nclock periods:\n{}", accuracy::clocks(&rows));
     }
     Ok(())
 }
@@ -363,9 +406,10 @@ fn figures(out: &std::path::Path, quick: bool) -> Result<(), String> {
 }
 
 fn run(path: Option<PathBuf>, o: RunOpts) -> Result<(), String> {
+    let flags = Flags { preset: o.preset, technology: o.technology };
     let mut scene = match &path {
-        Some(p) => Scene::load_with(p, o.preset)?,
-        None => Scene::parse_with(DEFAULT_SCENE, "built-in default scene", o.preset)?,
+        Some(p) => Scene::load_with(p, flags)?,
+        None => Scene::parse_with(DEFAULT_SCENE, "built-in default scene", flags)?,
     };
     if let Some(dir) = o.vcd {
         scene.outputs.waveforms = Some(Waveforms::all(dir));
@@ -382,10 +426,10 @@ fn run(path: Option<PathBuf>, o: RunOpts) -> Result<(), String> {
     let (ta, tb) = (&prepared.a, &prepared.b);
     if !o.json {
         println!(
-            "scene: {}\n  A = {} ({} triangles), B = {} ({} triangles){}\n  chip: k={} format={} dop-rounding={}; {} traversal, {} mode; {} poses",
+            "scene: {}\n  A = {} ({} triangles), B = {} ({} triangles){}\n  chip: k={} format={} dop-rounding={}; {} traversal, {} mode; {} poses\n  clock: {}",
             scene.name, scene.objects.a, ta.len(), scene.objects.b, tb.len(),
             if scene.objects.unit_cube { ", both scaled into [-1,1]^3" } else { "" },
-            scene.cfg.k, scene.cfg.format, scene.cfg.dop_rounding, format!("{:?}", scene.traversal).to_lowercase(), format!("{:?}", scene.mode).to_lowercase(), scene.poses.len()
+            scene.cfg.k, scene.cfg.format, scene.cfg.dop_rounding, format!("{:?}", scene.traversal).to_lowercase(), format!("{:?}", scene.mode).to_lowercase(), scene.poses.len(), scene.clock.source()
         );
     }
     let bar = progress_bar(scene.poses.len() as u64, o.json);
@@ -410,8 +454,8 @@ fn run(path: Option<PathBuf>, o: RunOpts) -> Result<(), String> {
     if out.cycles {
         let p = &scene.params;
         println!(
-            "cycles = the chip's clocks from start to done (cycle model: {} queue entries, {memory}); chip_us at {} MHz; sw_us = the golden model's query on this machine (one at a time); speedup = sw_us / chip_us.",
-            p.queue_entries, scene.clock_mhz
+            "cycles = the chip's clocks from start to done (cycle model: {} queue entries, {memory});\nchip_us = cycles x the clock period, {};\nsetup_us, settle_us = the host's setup for the pose and its settling of the uncertain pairs with the exact oracle, measured on this machine (wall clock, the fastest of 3, one pose at a time: noisy);\ne2e_us = setup_us + chip_us + settle_us; sw_us = the golden model's query on this machine (one at a time); speedup = sw_us / chip_us; e2e_x = sw_us / e2e_us.",
+            p.queue_entries, scene.clock.source()
         );
         println!("\nwhere the clocks went (share of clocks by what the DOP unit's input did; occupancy = mean units in flight):");
         print!("{}", stall_table(&records));

@@ -13,6 +13,7 @@
 //! | [`reg`] | the host register map, the query's mode and D_CNTR's order, the writes that start a query |
 //! | [`layout`] | bit layouts: node and triangle words, the memory image, the port's destinations, D_CNTR's entry |
 //! | [`rtl`] | the RTL chips' sizes and latencies, and the table of the exported chips |
+//! | [`timing`] | the clock period of a configuration: the slowest of its RTL units in the timing study's table (OSU 0.18 um, ECP5), or the paper's clock |
 
 pub mod config;
 pub mod layout;
@@ -23,3 +24,4 @@ pub mod preset;
 pub mod probes;
 pub mod reg;
 pub mod rtl;
+pub mod timing;

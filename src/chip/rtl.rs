@@ -54,6 +54,23 @@ pub const TRI_CACHE_LINES: usize = 1 << TRI_CACHE_BITS;
 // the chip's line index and valid bits are 7 and 128 bits wide
 const _: () = assert!(TRI_CACHE_LINES == 128);
 
+/// The exported unit of D_CNTR's pair queue (16 entries) in `rtl/` and the timing tables.
+pub const PAIR_QUEUE_UNIT: &str = "pair_queue_n4";
+
+/// A format's tag in the RTL's file names: `b32` for binary32, else `eEmF` (`e8m15`).
+pub fn format_tag(fmt: Format) -> String {
+    if fmt == Format::BINARY32 { "b32".into() } else { fmt.to_string() }
+}
+
+/// A rounding's tag in the RTL's file names.
+pub fn rounding_tag(r: Rounding) -> &'static str {
+    match r {
+        Rounding::NearestEven => "rne",
+        Rounding::TowardPositive => "ru",
+        Rounding::TowardNegative => "rd",
+    }
+}
+
 /// The RTL chips, one row each: the kind's name, the exported file's name in `rtl/`, the
 /// module of `crate::rtl` that stamps it out, its configuration, and rust-hdl's speed on
 /// it in clocks per second on this project's machine (README, `cargo bench --bench

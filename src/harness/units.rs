@@ -4,7 +4,7 @@
 //! and fails if they differ from the checked-in files, then runs every unit against its
 //! vectors under Icarus Verilog and Verilator (`scripts/check-rtl.sh`).
 
-use crate::chip::rtl::ChipKind;
+use crate::chip::rtl::{rounding_tag, ChipKind};
 use crate::format::{Format, Rounding};
 use rand::{Rng, SeedableRng};
 use std::fmt::Write;
@@ -48,12 +48,8 @@ fn verilog_of(v: &Text) -> String {
 type VerilogFn = fn(Rounding) -> String;
 
 /// The file-name tag of a format the RTL is built in (`b32`, `e8m15`).
-fn format_tag(fmt: Format) -> Option<&'static str> {
-    match fmt {
-        Format::BINARY32 => Some("b32"),
-        Format::REDUCED => Some("e8m15"),
-        _ => None,
-    }
+fn format_tag(fmt: Format) -> Option<String> {
+    [Format::BINARY32, Format::REDUCED].contains(&fmt).then(|| crate::chip::rtl::format_tag(fmt))
 }
 
 /// `dop_unit_k<k>_<format>_<rounding>`: the DOP unit's file stem in rtl/ and the area study
@@ -69,19 +65,12 @@ pub fn tri_unit_name(fmt: Format) -> Option<String> {
 
 /// The DOP unit's Verilog, where the RTL builds this k and format.
 fn dop_unit_verilog(k: usize, fmt: Format, r: Rounding) -> Option<String> {
-    match format_tag(fmt)? {
+    match format_tag(fmt)?.as_str() {
         "b32" => crate::rtl::b32::verilog_dop_unit(k, r),
         _ => crate::rtl::e8m15::verilog_dop_unit(k, r),
     }
 }
 
-fn rounding_tag(r: Rounding) -> &'static str {
-    match r {
-        Rounding::NearestEven => "rne",
-        Rounding::TowardPositive => "ru",
-        Rounding::TowardNegative => "rd",
-    }
-}
 
 /// Every exported unit, in a fixed order.
 pub fn all() -> Vec<Unit> {
@@ -149,7 +138,7 @@ pub fn all() -> Vec<Unit> {
         units.push(Unit { name, latency: crate::rtl::b32::TriUnit::LATENCY as u32, verilog: Box::new(move || vu(r)), vectors: Box::new(move || super::tri_io::tri_unit_vectors(&n2, fmt, r)) });
     }
     // D_CNTR's pair queue, 16 entries (format independent): one line per clock
-    let name = "pair_queue_n4".to_string();
+    let name = crate::chip::rtl::PAIR_QUEUE_UNIT.to_string();
     let n2 = name.clone();
     units.push(Unit { name, latency: 1, verilog: Box::new(crate::rtl::d_cntr::verilog_pair_queue::<4, 5, 3>), vectors: Box::new(move || crate::rtl::d_cntr::pair_queue_vectors(&n2, 4, RANDOM_CASES)) });
     units

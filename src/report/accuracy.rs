@@ -1,8 +1,13 @@
 //! "What accuracy costs": the same tumbling sweep (WSCG'03 protocol) run with several number
-//! formats, k and DOP roundings, each query compared with the exact oracle and run on the
-//! cycle model (the RTL's microarchitecture) for its clocks.
+//! formats, k, DOP roundings and memory systems (the chip presets), each query compared with
+//! the exact oracle and run on the cycle model for its clocks, at the configuration's
+//! measured clock period ([`Clock`]), with the host's share measured: the time end to end.
+//! A study splits into shards (`--shard K/N`) whose rows add up to the serial run's.
 
 use crate::chip::config::{ChipConfig, DopRounding, Formats};
+use crate::chip::memory::Memory;
+use crate::chip::preset::Preset;
+use crate::chip::timing::{self, Clock, Technology};
 use crate::cycle::{self, drive::Reader};
 use crate::chip::params::Params;
 use crate::dop::tree::Tri;
@@ -14,22 +19,128 @@ use crate::report::figures::{Cell, Figure, Panel, Series, Style, Table, PALETTE}
 use crate::pose::{sweep_poses, Sweep};
 use crate::traversal::Traversal;
 use crate::chip::reg::{Mode, Order};
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 use std::fmt::Write;
 
-/// One mesh, k, format and rounding over all poses of the sweep.
-#[derive(Clone, Debug, Serialize)]
+/// What a study runs: each mesh against a copy of itself over the sweep, in every memory
+/// preset x k x format x DOP rounding, at `technology`'s clock.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Plan {
+    pub meshes: Vec<String>,
+    pub presets: Vec<Preset>,
+    pub ks: Vec<usize>,
+    pub formats: Vec<Formats>,
+    pub roundings: Vec<DopRounding>,
+    pub sweep: Sweep,
+    /// The ideal memory's bus (the `rtl` preset): a word moves in ceil(bits / bus_bits) clocks.
+    pub bus_bits: Option<u32>,
+    pub technology: Technology,
+}
+
+impl Plan {
+    /// The configurations in the order of the table: (memory preset, chip, its timing).
+    pub fn configs(&self) -> Result<Vec<(Preset, ChipConfig, Params)>, String> {
+        let mut out = vec![];
+        for &preset in &self.presets {
+            let mut params = preset.params();
+            if let Memory::Ideal(t) = &mut params.memory {
+                t.bus_bits = self.bus_bits.or(t.bus_bits);
+            }
+            params.check()?;
+            for &k in &self.ks {
+                for &format in &self.formats {
+                    for &dop_rounding in &self.roundings {
+                        out.push((preset, ChipConfig { k, format, dop_rounding, ..preset.chip() }, params));
+                    }
+                }
+            }
+        }
+        Ok(out)
+    }
+}
+
+/// Which share of a study's (mesh, pose) items to run: the `k`-th of `n` (1-based), items
+/// dealt round-robin.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub struct Shard {
+    pub k: usize,
+    pub n: usize,
+}
+
+impl Shard {
+    pub const ALL: Shard = Shard { k: 1, n: 1 };
+
+    fn has(self, item: usize) -> bool {
+        item % self.n == self.k - 1
+    }
+}
+
+impl std::str::FromStr for Shard {
+    type Err = String;
+
+    /// `K/N` with 1 <= K <= N.
+    fn from_str(s: &str) -> Result<Shard, String> {
+        let bad = || format!("shard {s:?}: give K/N with 1 <= K <= N (e.g. 3/8; SLURM: $SLURM_ARRAY_TASK_ID/N)");
+        let (k, n) = s.split_once('/').ok_or_else(bad)?;
+        let (k, n) = (k.trim().parse().map_err(|_| bad())?, n.trim().parse().map_err(|_| bad())?);
+        if k == 0 || k > n { Err(bad()) } else { Ok(Shard { k, n }) }
+    }
+}
+
+/// One shard's output (`--shard K/N`): its plan and its rows' sums over its items.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub struct ShardFile {
+    pub plan: Plan,
+    pub shard: Shard,
+    pub rows: Vec<Row>,
+}
+
+/// One mesh and configuration over all poses of the sweep.
+#[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct Row {
     pub mesh: String,
+    /// The memory system: the chip preset whose memory, port and triangle cache ran.
+    pub memory: Preset,
     pub k: usize,
     pub format: Formats,
     pub dop_rounding: DopRounding,
+    /// The clock period and where it came from ([`Clock::source`]).
+    pub period_ns: f64,
+    pub clock: String,
     #[serde(flatten)]
     pub sums: Sums,
+    /// The host's share, measured (wall clock, the poses on every core: noisy).
+    pub host: HostSums,
+}
+
+/// The host's measured time over the queries, in microseconds.
+#[derive(Clone, Copy, Debug, Default, Serialize, Deserialize)]
+pub struct HostSums {
+    pub setup_us: f64,
+    pub settle_us: f64,
+}
+
+impl Row {
+    fn per_query(&self, x: f64) -> f64 {
+        x / self.sums.queries.max(1) as f64
+    }
+
+    pub fn chip_us(&self) -> f64 {
+        self.per_query(self.sums.cycles as f64) * self.period_ns / 1000.0
+    }
+
+    pub fn host_us(&self) -> f64 {
+        self.per_query(self.host.setup_us + self.host.settle_us)
+    }
+
+    /// Per query: the host's setup + the chip's clocks x period + the host's settling.
+    pub fn end_to_end_us(&self) -> f64 {
+        self.host_us() + self.chip_us()
+    }
 }
 
 /// Sums over the queries.
-#[derive(Clone, Copy, Debug, Default, Serialize)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
 pub struct Sums {
     pub queries: u64,
     pub exact_pairs: u64,
@@ -43,9 +154,15 @@ pub struct Sums {
     pub memory_bytes: u64,
     pub misses: u64,
     pub extras: u64,
-    /// The cycle model's clocks (LIFO, all pairs, [`Params::RTL`] with the study's ideal
-    /// memory).
+    /// The cycle model's clocks (LIFO, all pairs, the memory preset's port and memory).
     pub cycles: u64,
+}
+
+impl std::ops::AddAssign for HostSums {
+    fn add_assign(&mut self, h: HostSums) {
+        self.setup_us += h.setup_us;
+        self.settle_us += h.settle_us;
+    }
 }
 
 impl std::ops::AddAssign for Sums {
@@ -112,90 +229,139 @@ fn ratio(a: u64, b: u64) -> f64 {
     }
 }
 
-/// Runs every (k, format, rounding) on one mesh against a copy of itself, the poses on every
-/// core, the cycle model against the ideal `memory`; `progress` is called once per pose.
-pub fn study(
-    mesh: &str,
-    tris: &[Tri],
-    ks: &[usize],
-    formats: &[Formats],
-    roundings: &[DopRounding],
-    sweep: &Sweep,
-    memory: crate::chip::memory::MemTiming,
-    progress: impl Fn() + Sync,
-) -> Result<Vec<Row>, String> {
-    let poses = sweep_poses(sweep)?;
-    let mut cfgs = vec![];
-    for &k in ks {
-        for &format in formats {
-            for &dop_rounding in roundings {
-                cfgs.push(ChipConfig { k, format, dop_rounding, ..Default::default() });
+/// Runs `plan`'s configurations on its `index`-th mesh against a copy of itself, the poses of
+/// `shard` on every core; `progress` is called once per pose run.
+pub fn study(plan: &Plan, index: usize, tris: &[Tri], shard: Shard, progress: impl Fn() + Sync) -> Result<Vec<Row>, String> {
+    let mesh = &plan.meshes[index];
+    let all = sweep_poses(&plan.sweep)?;
+    let poses: Vec<_> = all.iter().enumerate().filter(|(i, _)| shard.has(index * all.len() + i)).map(|(_, p)| p.clone()).collect();
+    let configs = plan.configs()?;
+    let mut rows = vec![];
+    let mut chips: Vec<Chip> = vec![];
+    let mut chip_of = vec![];
+    for &(preset, cfg, _) in &configs {
+        let clock = Clock::of(plan.technology, &cfg, preset)?;
+        rows.push(Row { mesh: mesh.clone(), memory: preset, k: cfg.k, format: cfg.format, dop_rounding: cfg.dop_rounding, period_ns: clock.period_ns, clock: clock.source(), sums: Sums::default(), host: HostSums::default() });
+        // one image per distinct chip (the presets share some)
+        chip_of.push(match chips.iter().position(|c| c.cfg == cfg) {
+            Some(i) => i,
+            None => {
+                chips.push(Chip::new(tris, tris, cfg)?);
+                chips.len() - 1
             }
-        }
+        });
     }
-    let chips: Vec<Chip> = cfgs.iter().map(|&cfg| Chip::new(tris, tris, cfg)).collect::<Result<_, _>>()?;
     if let Some(chip) = chips.first() {
-        poses.iter().try_for_each(|sp| chip.check_pose(&sp.pose))?;
+        all.iter().try_for_each(|sp| chip.check_pose(&sp.pose))?;
     }
     let per_pose = parallel_map(&poses, |_, sp| {
         let exact = exact_pairs(tris, tris, &sp.pose);
         let placed = place(tris, &sp.pose);
-        let rows = chips.iter().map(|chip| {
-            let r = chip.query(&sp.pose, Mode::All, Traversal::Lifo);
+        let golden: Vec<_> = chips.iter().map(|chip| chip.query(&sp.pose, Mode::All, Traversal::Lifo)).collect();
+        let rows = configs.iter().zip(&chip_of).map(|(&(_, _, params), &c)| {
+            let (chip, r) = (&chips[c], &golden[c]);
             let acc = Accuracy::of(Mode::All, &r.pairs, &exact);
-            let (trace, _) = cycle::run_query(chip, &chip.setup(&sp.pose), Order::Lifo, Mode::All, Params { memory: memory.into(), ..Params::RTL }, Reader::default(), cycle::MAX_CYCLES, Default::default())?;
-            trace.check(Mode::All, &r).map_err(|e| format!("{mesh} k={} {} at {}: the cycle model disagrees with the golden model: {e}", chip.cfg.k, chip.cfg.format, sp.pose.text()))?;
+            let (trace, _) = cycle::run_query(chip, &chip.setup(&sp.pose), Order::Lifo, Mode::All, params, Reader::default(), cycle::MAX_CYCLES, Default::default())?;
+            trace.check(Mode::All, r).map_err(|e| format!("{mesh} k={} {} at {}: the cycle model disagrees with the golden model: {e}", chip.cfg.k, chip.cfg.format, sp.pose.text()))?;
             let mut causes = [0u64; 3];
             for &(a, b) in &r.uncertain {
                 let (a, b) = (a as usize, b as usize);
                 causes[Cause::of(&chip.a.tris[a], &chip.b.tris[b], &tris[a], &placed[b]) as usize] += 1;
             }
-            Ok(Sums {
-                queries: 1,
-                uncertain_degenerate: causes[Cause::Degenerate as usize],
-                uncertain_on_plane: causes[Cause::OnPlane as usize],
-                uncertain_bound: causes[Cause::Bound as usize],
-                exact_pairs: exact.len() as u64,
-                dop_tests: r.counters.dop_tests,
-                tri_tests: r.counters.tri_tests,
-                uncertain: r.counters.uncertain,
-                memory_bytes: r.counters.memory_bytes,
-                misses: acc.misses,
-                extras: acc.extras,
-                cycles: trace.cycles,
-            })
+            let h = chip.host_time(&sp.pose, &r.uncertain);
+            Ok((
+                Sums {
+                    queries: 1,
+                    uncertain_degenerate: causes[Cause::Degenerate as usize],
+                    uncertain_on_plane: causes[Cause::OnPlane as usize],
+                    uncertain_bound: causes[Cause::Bound as usize],
+                    exact_pairs: exact.len() as u64,
+                    dop_tests: r.counters.dop_tests,
+                    tri_tests: r.counters.tri_tests,
+                    uncertain: r.counters.uncertain,
+                    memory_bytes: r.counters.memory_bytes,
+                    misses: acc.misses,
+                    extras: acc.extras,
+                    cycles: trace.cycles,
+                },
+                HostSums { setup_us: h.setup_us, settle_us: h.settle_us },
+            ))
         });
-        let rows = rows.collect::<Result<Vec<Sums>, String>>();
+        let rows = rows.collect::<Result<Vec<_>, String>>();
         progress();
         rows
     });
-    let mut rows: Vec<Row> = chips
-        .iter()
-        .map(|c| Row { mesh: mesh.to_string(), k: c.cfg.k, format: c.cfg.format, dop_rounding: c.cfg.dop_rounding, sums: Sums::default() })
-        .collect();
     for pose_rows in per_pose {
-        for (row, q) in rows.iter_mut().zip(pose_rows?) {
+        for (row, (q, h)) in rows.iter_mut().zip(pose_rows?) {
             row.sums += q;
+            row.host += h;
         }
     }
     Ok(rows)
 }
 
+/// Runs `plan` on `shard`, each mesh's triangles from `load`.
+pub fn run(plan: &Plan, load: impl Fn(&str) -> Result<Vec<Tri>, String>, shard: Shard, progress: impl Fn() + Sync) -> Result<Vec<Row>, String> {
+    let mut rows = vec![];
+    for (i, m) in plan.meshes.iter().enumerate() {
+        rows.extend(study(plan, i, &load(m)?, shard, &progress)?);
+    }
+    Ok(rows)
+}
+
+/// The serial run's rows from its shards' files: the same plan, each of 1..=N once; the
+/// counted sums add up exactly (the host's measured times are each shard's).
+pub fn merge(files: Vec<ShardFile>) -> Result<(Plan, Vec<Row>), String> {
+    let first = files.first().ok_or("--merge: no shard files")?;
+    let (plan, n) = (first.plan.clone(), first.shard.n);
+    let mut seen = vec![false; n];
+    let mut rows: Vec<Row> = first.rows.iter().map(|r| Row { sums: Sums::default(), host: HostSums::default(), ..r.clone() }).collect();
+    for f in &files {
+        if f.plan != plan || f.shard.n != n {
+            return Err(format!("--merge: shard {}/{} is of another study (its plan or N differs from shard {}/{}'s)", f.shard.k, f.shard.n, first.shard.k, n));
+        }
+        if f.shard.k == 0 || f.shard.k > n {
+            return Err(format!("--merge: shard {}/{n} is not one of 1..={n}", f.shard.k));
+        }
+        if std::mem::replace(&mut seen[f.shard.k - 1], true) {
+            return Err(format!("--merge: shard {}/{n} given twice", f.shard.k));
+        }
+        let same = |a: &Row, b: &Row| (&a.mesh, a.memory, a.k, a.format, a.dop_rounding) == (&b.mesh, b.memory, b.k, b.format, b.dop_rounding);
+        if f.rows.len() != rows.len() || !f.rows.iter().zip(&rows).all(|(a, b)| same(a, b)) {
+            return Err(format!("--merge: shard {}/{n}'s rows are not the study's configurations", f.shard.k));
+        }
+        for (row, r) in rows.iter_mut().zip(&f.rows) {
+            row.sums += r.sums;
+            row.host += r.host;
+        }
+    }
+    if let Some(k) = seen.iter().position(|s| !s) {
+        return Err(format!("--merge: shard {}/{n} is missing", k + 1));
+    }
+    Ok((plan, rows))
+}
+
 /// The Markdown table of docs/ACCURACY.md; with `area`, the cells of each configuration's
-/// DOP unit and TRI_UNIT ("-" where the RTL is not built in its format).
-pub fn table(rows: &[Row], area: Option<&Area>) -> String {
-    let mut columns = vec!["mesh", "k", "format", "DOP rounding", "queries", "exact pairs / query", "DOP tests / query", "triangle tests / query", "DOP false positives", "uncertain", "uncertain: degenerate / on plane / bound", "misses", "extra pairs", "memory KiB / query", "cycles / query"];
+/// DOP unit and TRI_UNIT ("-" where the RTL is not built in its format). The times are per
+/// query: the chip's at its period, the host's measured, end to end; um^2 where the timing
+/// table measured both units.
+pub fn table(plan: &Plan, rows: &[Row], area: Option<&Area>) -> Result<String, String> {
+    let mut columns = vec!["mesh", "memory", "k", "format", "DOP rounding", "queries", "exact pairs / query", "DOP tests / query", "triangle tests / query", "DOP false positives", "uncertain", "uncertain: degenerate / on plane / bound", "misses", "extra pairs", "memory KiB / query", "cycles / query", "period ns", "chip us", "host us (measured)", "end to end us", "um^2: DOP unit + TRI_UNIT"];
     if area.is_some() {
         columns.push("cells: DOP unit + TRI_UNIT");
     }
+    let timing = timing::Table::of(plan.technology)?;
     let mut out = format!("| {} |\n|{}\n", columns.join(" | "), "---|".repeat(columns.len()));
     for row in rows {
         let r = &row.sums;
         let q = r.queries.max(1) as f64;
+        let cfg = ChipConfig { k: row.k, format: row.format, dop_rounding: row.dop_rounding, ..row.memory.chip() };
+        let um2 = timing.as_ref().and_then(|t| t.datapath_area_um2(&cfg)).map_or("-".into(), |a| format!("{a:.0}"));
         let _ = write!(
             out,
-            "| {} | {} | {} | {} | {} | {:.1} | {:.0} | {:.1} | {:.1}% | {:.2}% | {} / {} / {} | {} | {} | {:.1} | {:.0} |",
+            "| {} | {} | {} | {} | {} | {} | {:.1} | {:.0} | {:.1} | {:.1}% | {:.2}% | {} / {} / {} | {} | {} | {:.1} | {:.0} | {:.3} | {:.1} | {:.1} | {:.1} | {um2} |",
             row.mesh,
+            row.memory.name(),
             row.k,
             row.format,
             row.dop_rounding,
@@ -211,14 +377,30 @@ pub fn table(rows: &[Row], area: Option<&Area>) -> String {
             r.misses,
             r.extras,
             r.memory_bytes as f64 / q / 1024.0,
-            r.cycles as f64 / q
+            r.cycles as f64 / q,
+            row.period_ns,
+            row.chip_us(),
+            row.host_us(),
+            row.end_to_end_us(),
         );
         if let Some(a) = area {
             let _ = write!(out, " {} |", a.of(row.k, row.format, row.dop_rounding).map_or("-".into(), |c| c.to_string()));
         }
         out.push('\n');
     }
-    out
+    Ok(out)
+}
+
+/// Each distinct clock of the rows, once: the table's footnote.
+pub fn clocks(rows: &[Row]) -> String {
+    let mut seen: Vec<String> = vec![];
+    for r in rows {
+        let line = format!("k = {}, {}, {} DOP rounding: {}", r.k, r.format, r.dop_rounding, r.clock);
+        if !seen.contains(&line) {
+            seen.push(line);
+        }
+    }
+    seen.join("\n")
 }
 
 /// Yosys cells per unit: the file scripts/area-study.sh writes (`unit,cells`, one row per
@@ -261,74 +443,92 @@ fn pareto(points: &[Option<(f64, f64)>]) -> Vec<bool> {
     points.iter().map(|p| p.is_some_and(|p| !beaten(p))).collect()
 }
 
-/// One panel of clocks per query against `x`, a point per configuration that has one, grouped
-/// by format and rounding, with the Pareto front (`on`) as a dashed line.
-fn front_panel(title: &str, x_label: &'static str, log_x: bool, cfgs: &[Config], x: &[Option<f64>], on: &[bool]) -> Panel {
+/// One panel of end-to-end time per query against `x` for the configurations `mine` (one
+/// memory system), a point per configuration that has one, grouped by format and rounding,
+/// with the Pareto front (`on`) as a dashed line.
+fn front_panel(title: String, x_label: &'static str, log_x: bool, cfgs: &[Row], mine: &[usize], x: &[Option<f64>], on: &[bool]) -> Panel {
     let mut groups: Vec<(Formats, DopRounding)> = vec![];
-    for c in cfgs {
-        if !groups.contains(&(c.1, c.2)) {
-            groups.push((c.1, c.2));
+    for &i in mine {
+        if !groups.contains(&(cfgs[i].format, cfgs[i].dop_rounding)) {
+            groups.push((cfgs[i].format, cfgs[i].dop_rounding));
         }
     }
-    let point = |i: usize| x[i].map(|x| (x, cfgs[i].3.cycles as f64 / cfgs[i].3.queries.max(1) as f64));
+    let point = |i: usize| x[i].map(|x| (x, cfgs[i].end_to_end_us()));
     let mut series = vec![];
     for (gi, &(f, r)) in groups.iter().enumerate() {
-        let mine: Vec<usize> = (0..cfgs.len()).filter(|&i| (cfgs[i].1, cfgs[i].2) == (f, r) && x[i].is_some()).collect();
-        if !mine.is_empty() {
+        let these: Vec<usize> = mine.iter().copied().filter(|&i| (cfgs[i].format, cfgs[i].dop_rounding) == (f, r) && x[i].is_some()).collect();
+        if !these.is_empty() {
             series.push(Series {
                 label: format!("{f}, {r} DOP rounding"),
-                color: gi,
+                color: gi % (PALETTE.len() - 1),
                 style: Style::Points,
-                points: mine.iter().filter_map(|&i| point(i)).collect(),
-                labels: mine.iter().map(|&i| format!("  k={}", cfgs[i].0)).collect(),
+                points: these.iter().filter_map(|&i| point(i)).collect(),
+                labels: these.iter().map(|&i| format!("  k={}", cfgs[i].k)).collect(),
             });
         }
     }
-    let mut front: Vec<(f64, f64)> = (0..cfgs.len()).filter(|&i| on[i]).filter_map(point).collect();
+    let mut front: Vec<(f64, f64)> = mine.iter().copied().filter(|&i| on[i]).filter_map(point).collect();
     front.sort_by(|a, b| a.0.total_cmp(&b.0));
     series.push(Series { label: "Pareto front (no misses)".into(), color: PALETTE.len() - 1, style: Style::Dashed, points: front, labels: vec![] });
-    Panel { title: title.into(), x_label, y_label: "clocks per query", log_x, log_y: false, series }
+    Panel { title, x_label, y_label: "end to end per query, us", log_x, log_y: false, series }
 }
 
-/// (k, formats, DOP rounding, sums over the meshes)
-type Config = (usize, Formats, DopRounding, Sums);
-
-/// The configurations over all meshes, one point each: cycles per query against the share of
-/// triangle tests left to the host, and, with `area`, against the cells of the units the
-/// configuration changes (DOP unit + TRI_UNIT). Each plot marks its Pareto front among the
-/// configurations with no miss (no other is both faster and smaller in its x). Both figures
-/// carry the same table.
+/// The configurations over all meshes, one point each: the end-to-end time per query (the
+/// host's measured setup and settling plus the chip's clocks at its period) against the share
+/// of triangle tests left to the host, and, with `area`, against the cells of the units the
+/// configuration changes (DOP unit + TRI_UNIT); a panel per memory system. Each panel marks
+/// its Pareto front among the configurations with no miss (no other is both faster and
+/// smaller in its x). Both figures carry the same table.
 pub fn figures(rows: &[Row], area: Option<&Area>) -> Vec<Figure> {
-    let mut cfgs: Vec<Config> = vec![];
+    let key = |r: &Row| (r.memory, r.k, r.format, r.dop_rounding);
+    let mut cfgs: Vec<Row> = vec![];
     for r in rows {
-        match cfgs.iter_mut().find(|c| (c.0, c.1, c.2) == (r.k, r.format, r.dop_rounding)) {
-            Some(c) => c.3 += r.sums,
-            None => cfgs.push((r.k, r.format, r.dop_rounding, r.sums)),
+        match cfgs.iter_mut().find(|c| key(c) == key(r)) {
+            Some(c) => (c.sums, c.host) = ({ let mut s = c.sums; s += r.sums; s }, { let mut h = c.host; h += r.host; h }),
+            None => cfgs.push(Row { mesh: String::new(), ..r.clone() }),
         }
     }
-    let cycles = |s: &Sums| s.cycles as f64 / s.queries.max(1) as f64;
-    let uncertain: Vec<Option<f64>> = cfgs.iter().map(|c| Some(100.0 * c.3.uncertain_rate())).collect();
-    let cells: Vec<Option<u64>> = cfgs.iter().map(|c| area.and_then(|a| a.of(c.0, c.1, c.2))).collect();
-    let eligible = |x: &[Option<f64>]| -> Vec<Option<(f64, f64)>> {
-        cfgs.iter().zip(x).map(|(c, x)| x.filter(|_| c.3.misses == 0).map(|x| (x, cycles(&c.3)))).collect()
-    };
-    let on_uncertain = pareto(&eligible(&uncertain));
+    let presets: Vec<Preset> = cfgs.iter().map(|c| c.memory).fold(vec![], |mut v, p| {
+        if !v.contains(&p) {
+            v.push(p);
+        }
+        v
+    });
+    let uncertain: Vec<Option<f64>> = cfgs.iter().map(|c| Some(100.0 * c.sums.uncertain_rate())).collect();
+    let cells: Vec<Option<u64>> = cfgs.iter().map(|c| area.and_then(|a| a.of(c.k, c.format, c.dop_rounding))).collect();
     let cells_x: Vec<Option<f64>> = cells.iter().map(|c| c.map(|c| c as f64 / 1e6)).collect();
-    let on_area = pareto(&eligible(&cells_x));
+    // the fronts, each among one memory system's configurations
+    let front = |x: &[Option<f64>]| -> Vec<bool> {
+        let mut on = vec![false; cfgs.len()];
+        for &p in &presets {
+            let pts: Vec<Option<(f64, f64)>> = cfgs.iter().zip(x).map(|(c, x)| x.filter(|_| c.sums.misses == 0 && c.memory == p).map(|x| (x, c.end_to_end_us()))).collect();
+            for (o, f) in on.iter_mut().zip(pareto(&pts)) {
+                *o |= f;
+            }
+        }
+        on
+    };
+    let (on_uncertain, on_area) = (front(&uncertain), front(&cells_x));
     let mut table = Table {
-        columns: vec!["k", "format", "dop_rounding", "queries", "uncertain_share", "cycles_per_query", "memory_kib_per_query", "misses", "pareto", "cells", "pareto_area"],
+        columns: vec!["memory", "k", "format", "dop_rounding", "queries", "uncertain_share", "cycles_per_query", "period_ns", "chip_us", "host_us", "end_to_end_us", "memory_kib_per_query", "misses", "pareto", "cells", "pareto_area"],
         rows: vec![],
     };
     for (i, c) in cfgs.iter().enumerate() {
+        let q = c.sums.queries.max(1) as f64;
         table.rows.push(vec![
-            Cell::Int(c.0 as u64),
-            Cell::Text(c.1.to_string()),
-            Cell::Text(c.2.to_string()),
-            Cell::Int(c.3.queries),
-            Cell::Num(c.3.uncertain_rate()),
-            Cell::Num(cycles(&c.3)),
-            Cell::Num(c.3.memory_bytes as f64 / c.3.queries.max(1) as f64 / 1024.0),
-            Cell::Int(c.3.misses),
+            Cell::Text(c.memory.name().into()),
+            Cell::Int(c.k as u64),
+            Cell::Text(c.format.to_string()),
+            Cell::Text(c.dop_rounding.to_string()),
+            Cell::Int(c.sums.queries),
+            Cell::Num(c.sums.uncertain_rate()),
+            Cell::Num(c.sums.cycles as f64 / q),
+            Cell::Num(c.period_ns),
+            Cell::Num(c.chip_us()),
+            Cell::Num(c.host_us()),
+            Cell::Num(c.end_to_end_us()),
+            Cell::Num(c.sums.memory_bytes as f64 / q / 1024.0),
+            Cell::Int(c.sums.misses),
             Cell::Text(on_uncertain[i].to_string()),
             cells[i].map_or(Cell::None, Cell::Int),
             if cells[i].is_some() { Cell::Text(on_area[i].to_string()) } else { Cell::None },
@@ -340,20 +540,55 @@ pub fn figures(rows: &[Row], area: Option<&Area>) -> Vec<Figure> {
         }
         v
     });
-    let what = "one point per configuration (cycle model, LIFO, all pairs)";
+    let mine = |p: Preset| -> Vec<usize> { (0..cfgs.len()).filter(|&i| cfgs[i].memory == p).collect() };
+    let what = |p: Preset| format!("memory {}: one point per configuration (cycle model, LIFO, all pairs; host measured)", p.name());
     let mut out = vec![Figure {
         stem: "accuracy_cycles_uncertain",
-        title: format!("What accuracy costs: the chip's clocks against the host's share ({})", meshes.join(", ")),
-        panels: vec![front_panel(what, "triangle tests left to the host (uncertain), %", true, &cfgs, &uncertain, &on_uncertain)],
+        title: format!("What accuracy costs: the query's time end to end against the host's share ({})", meshes.join(", ")),
+        panels: presets.iter().map(|&p| front_panel(what(p), "triangle tests left to the host (uncertain), %", true, &cfgs, &mine(p), &uncertain, &on_uncertain)).collect(),
         table: table.clone(),
     }];
     if area.is_some() {
         out.push(Figure {
             stem: "accuracy_cycles_area",
-            title: format!("What accuracy costs in area: the chip's clocks against the cells of its DOP unit and TRI_UNIT ({})", meshes.join(", ")),
-            panels: vec![front_panel(&format!("{what}; Yosys cells, generic gates"), "Yosys cells, DOP unit + TRI_UNIT, millions", false, &cfgs, &cells_x, &on_area)],
+            title: format!("What accuracy costs in area: the query's time end to end against the cells of its DOP unit and TRI_UNIT ({})", meshes.join(", ")),
+            panels: presets.iter().map(|&p| front_panel(format!("{}; Yosys cells, generic gates", what(p)), "Yosys cells, DOP unit + TRI_UNIT, millions", false, &cfgs, &mine(p), &cells_x, &on_area)).collect(),
             table,
         });
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Three shards merged give the serial run's rows and table (the host's measured times
+    /// aside); a shard missing or given twice is an error.
+    #[test]
+    fn shards_merge_into_the_serial_run() {
+        let plan = Plan {
+            meshes: vec!["sphere:40".into(), "torus:40".into()],
+            presets: vec![Preset::Rtl, Preset::Wscg03],
+            ks: vec![6],
+            formats: vec![Formats::from(crate::format::Format::REDUCED)],
+            roundings: vec![DopRounding::Outward],
+            sweep: Sweep { distances: vec![1.0, 0.5], orientations: 2, seed: 1 },
+            bus_bits: None,
+            technology: Technology::Osu018,
+        };
+        let load = |m: &str| crate::mesh::resolve(m).map_err(|e| e.to_string())?.scaled_into_unit_cube().map(|m| m.triangles_f64()).map_err(|e| e.to_string());
+        let unmeasured = |rows: Vec<Row>| -> Vec<Row> { rows.into_iter().map(|r| Row { host: HostSums::default(), ..r }).collect() };
+        let serial = unmeasured(run(&plan, load, Shard::ALL, || ()).unwrap());
+        let shard = |k| ShardFile { plan: plan.clone(), shard: Shard { k, n: 3 }, rows: run(&plan, load, Shard { k, n: 3 }, || ()).unwrap() };
+        let files: Vec<ShardFile> = (1..=3).map(shard).collect();
+        let (p, merged) = merge(files.clone()).unwrap();
+        let merged = unmeasured(merged);
+        assert_eq!(p, plan);
+        assert!(serial.iter().all(|r| r.sums.queries == 4) && serial.iter().any(|r| r.sums.cycles > 0));
+        assert_eq!(serial.iter().map(|r| r.sums).collect::<Vec<_>>(), merged.iter().map(|r| r.sums).collect::<Vec<_>>());
+        assert_eq!(table(&plan, &serial, None).unwrap(), table(&plan, &merged, None).unwrap());
+        assert!(merge(files[..2].to_vec()).unwrap_err().contains("shard 3/3 is missing"));
+        assert!(merge(vec![files[0].clone(), files[0].clone(), files[1].clone()]).unwrap_err().contains("given twice"));
+    }
 }

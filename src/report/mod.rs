@@ -28,7 +28,8 @@ fn groups(records: &[PoseRecord]) -> Vec<(String, Vec<&PoseRecord>)> {
 
 /// One table row per sweep distance (or one per pose without a sweep): means of the
 /// counters, sums of misses and extra pairs; with `cycles`, the cycle model's mean clocks,
-/// the chip's time at its clock, the software's, and their ratio.
+/// the chip's time at its clock, the host's measured setup and settling, the end-to-end
+/// time, the software's, and its ratio to the chip's and to the end-to-end time.
 pub fn summary_table(records: &[PoseRecord], cycles: bool) -> String {
     let groups = groups(records);
     let with_acc = records.iter().any(|r| r.accuracy.is_some());
@@ -43,7 +44,7 @@ pub fn summary_table(records: &[PoseRecord], cycles: bool) -> String {
         let _ = write!(out, " {:>9} {:>7} {:>7}", "exact", "misses", "extras");
     }
     if with_cycles {
-        let _ = write!(out, " {:>10} {:>9} {:>9} {:>8}", "cycles", "chip_us", "sw_us", "speedup");
+        let _ = write!(out, " {:>10} {:>9} {:>9} {:>9} {:>9} {:>9} {:>8} {:>7}", "cycles", "chip_us", "setup_us", "settle_us", "e2e_us", "sw_us", "speedup", "e2e_x");
     }
     out.push('\n');
     for (key, g) in &groups {
@@ -76,8 +77,9 @@ pub fn summary_table(records: &[PoseRecord], cycles: bool) -> String {
         if with_cycles {
             let c: Vec<_> = g.iter().filter_map(|r| r.cycles.as_ref()).collect();
             let m = |f: &dyn Fn(&CycleRecord) -> f64| c.iter().map(|r| f(r)).sum::<f64>() / c.len().max(1) as f64;
-            let (chip, sw) = (m(&|r| r.chip_us), m(&|r| r.software_us));
-            let _ = write!(out, " {:>10.0} {:>9.2} {:>9.1} {:>8.1}", m(&|r| r.cycles as f64), chip, sw, sw / chip);
+            let (chip, sw, e2e) = (m(&|r| r.chip_us), m(&|r| r.software_us), m(&|r| r.end_to_end_us));
+            let (setup, settle) = (m(&|r| r.host_setup_us), m(&|r| r.settle_us));
+            let _ = write!(out, " {:>10.0} {:>9.2} {:>9.2} {:>9.2} {:>9.2} {:>9.1} {:>8.1} {:>7.1}", m(&|r| r.cycles as f64), chip, setup, settle, e2e, sw, sw / chip, sw / e2e);
         }
         out.push('\n');
     }

@@ -167,7 +167,7 @@ impl Unit {
             Unit::RtlChip => format!("the rust-hdl chip{}, in lockstep with the cycle model (every output and probe, every clock)", chip_name(s)),
             Unit::VerilogChip => format!("the exported Verilog{} under Verilator (built once, cached under target/), every port every clock against the cycle model", chip_name(s)),
             Unit::OutPairs => format!("the summary table{}", if o.pairs { " and every pose's pairs" } else { "" }),
-            Unit::OutCycles => format!("clocks per query, time at {} MHz, speed-up, stall table", s.clock_mhz),
+            Unit::OutCycles => format!("clocks per query; the chip's time at {}; the host's setup and settling (measured); end to end; speed-up; stall table", s.clock.source()),
             Unit::OutMemory => "memory words and bytes, words per clock, port busy share".into(),
             Unit::OutWaveforms => "VCD files for GTKWave (scripts/gtkw/chip_e8m15_k6.gtkw)".into(),
             Unit::OutAccuracy => "exact pairs, misses, extras per pose".into(),

@@ -76,8 +76,13 @@
 //! credit = 16                 # DOP tests in flight + leaf pairs waiting (RTL: 1 to 63)
 //! outstanding = 1             # memory requests in flight (1 to 64; the RTL chip 1 to 16)
 //! prefetch = 0                # node pairs whose words are fetched ahead (0 to 256; RTL 0 to 14)
-//! clock_mhz = 800             # the chip's clock for its time per query (default: the
-//!                             # preset's, an assumption: DATE'05 800, WSCG'03 266)
+//! technology = "osu018"       # the chip's clock for its time per query: the configuration's
+//!                             # measured period, its slowest RTL unit in the timing study
+//!                             # (docs/figures/timing.csv, OSU 0.18 um; the default), or
+//!                             # "ecp5" (docs/figures/timing_ecp5.csv), or "paper" (the
+//!                             # preset's clock, assumed: DATE'05 800 MHz, WSCG'03 266 MHz);
+//!                             # `cchip run --technology` replaces it
+//! # clock_mhz = 800           # or an assumed clock instead of a technology
 //! ```
 
 pub mod graph;
@@ -88,6 +93,7 @@ use crate::chip::config::ChipConfig;
 use crate::chip::memory::{Ddr, MemTiming, Memory};
 use crate::chip::params::Params;
 use crate::chip::preset::Preset;
+use crate::chip::timing::{Clock, Technology};
 use crate::chip::reg::Mode;
 use crate::pose::{sweep_poses, Pose, ScenePose, Sweep};
 use crate::traversal::Traversal;
@@ -112,7 +118,7 @@ struct File {
     outputs: OutputsSection,
     #[serde(default)]
     memory: MemorySection,
-    /// [`Params`] and the host's `clock_mhz`, read in two steps ([`timing`]).
+    /// [`Params`], `technology` and `clock_mhz`, read in two steps ([`timing`]).
     timing: Option<Keys>,
 }
 
@@ -156,18 +162,37 @@ fn chip(keys: Option<Keys>, text: &str, flag: Option<Preset>) -> Result<(Preset,
 }
 
 /// `[timing]`: the chip's [`Params`] (each key optional, the preset's by default; the memory
-/// is `[memory]`'s) and `clock_mhz`.
-fn timing(keys: Option<Keys>, text: &str, preset: Preset) -> Result<(Params, f64), String> {
+/// is `[memory]`'s), and the clock's `technology` or an assumed `clock_mhz`.
+fn timing(keys: Option<Keys>, text: &str, preset: Preset) -> Result<(Params, Option<Technology>, Option<f64>), String> {
     let mut keys = keys.unwrap_or_default();
     let clock_mhz = match keys.remove("clock_mhz") {
-        None => preset.clock_mhz(),
+        None => None,
         Some(v) => match v.get_ref() {
-            toml::Value::Float(x) => *x,
-            toml::Value::Integer(i) => *i as f64,
+            toml::Value::Float(x) => Some(*x),
+            toml::Value::Integer(i) => Some(*i as f64),
             other => return Err(format!("{}: [timing] clock_mhz must be a number of MHz, not {other}", line_of(text, v.span().start))),
         },
     };
-    Ok((over(&preset.params(), keys, text, "[timing]", "memory")?, clock_mhz))
+    let technology = match keys.remove("technology") {
+        None => None,
+        Some(v) => {
+            let line = line_of(text, v.span().start);
+            let v = v.into_inner();
+            Some(Technology::deserialize(v.clone()).map_err(|_| format!("{line}: [timing] technology {v} is not known: use \"osu018\", \"ecp5\" or \"paper\""))?)
+        }
+    };
+    Ok((over(&preset.params(), keys, text, "[timing]", "memory")?, technology, clock_mhz))
+}
+
+/// The clock: an assumed `clock_mhz`, else `technology`'s period for the configuration
+/// (default: measured on OSU 0.18 um).
+fn clock(cfg: &ChipConfig, preset: Preset, technology: Option<Technology>, clock_mhz: Option<f64>) -> Result<Clock, String> {
+    match (clock_mhz, technology) {
+        (Some(_), Some(_)) => Err("[timing] give clock_mhz (an assumed clock) or technology (a measured period), not both".into()),
+        (Some(mhz), None) if !(mhz.is_finite() && mhz > 0.0) => Err(format!("[timing] clock_mhz must be a positive number of MHz, not {mhz}")),
+        (Some(mhz), None) => Ok(Clock::assumed(mhz, format!("the scene's clock_mhz = {mhz}, assumed"))),
+        (None, t) => Clock::of(t.unwrap_or_default(), cfg, preset),
+    }
 }
 
 /// `[memory]`: the ideal model (`latency`, `interval`, `bus_bits`; the default, 1, 1 and a
@@ -391,8 +416,15 @@ pub struct Scene {
     pub outputs: Outputs,
     /// The cycle model's microarchitecture and memory model.
     pub params: Params,
-    /// The chip's clock, for its time per query.
-    pub clock_mhz: f64,
+    /// The chip's clock, for its time per query, and where it came from.
+    pub clock: Clock,
+}
+
+/// What the command line puts over a scene's own keys (`cchip run --preset --technology`).
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Flags {
+    pub preset: Option<Preset>,
+    pub technology: Option<Technology>,
 }
 
 impl Scene {
@@ -400,24 +432,24 @@ impl Scene {
     pub fn configuration(&self) -> String {
         let (c, p) = (&self.cfg, &self.params);
         format!(
-            "configuration (preset {} and the scene's keys):\n  chip: k = {}, format {}, dop_rounding {}, tri_rounding {:?}, tri_cache {}\n  timing: queue_entries {}, dop_latency {}, tri_latency {}, tri_fifo {}, issue_spacing {}, credit {}, outstanding {}, prefetch {}\n  memory: {}\n  clock: {} MHz (assumed, not a measured period)",
+            "configuration (preset {} and the scene's keys):\n  chip: k = {}, format {}, dop_rounding {}, tri_rounding {:?}, tri_cache {}\n  timing: queue_entries {}, dop_latency {}, tri_latency {}, tri_fifo {}, issue_spacing {}, credit {}, outstanding {}, prefetch {}\n  memory: {}\n  clock: {}",
             self.preset.name(), c.k, c.format, c.dop_rounding, c.tri_rounding, c.tri_cache,
             p.queue_entries, p.dop_latency, p.tri_latency, p.tri_fifo, p.issue_spacing, p.credit, p.outstanding, p.prefetch,
-            p.memory, self.clock_mhz
+            p.memory, self.clock.source()
         )
     }
 
     /// Reads a scene file; its mesh paths are taken relative to its directory (a spec stays a
     /// built-in name only if it is one and no such file is there).
     pub fn load(path: &Path) -> Result<Scene, String> {
-        Scene::load_with(path, None)
+        Scene::load_with(path, Flags::default())
     }
 
-    /// [`load`](Self::load) with `preset` in place of the scene's own (`cchip run --preset`).
-    pub fn load_with(path: &Path, preset: Option<Preset>) -> Result<Scene, String> {
+    /// [`load`](Self::load) with the command line's `flags` over the scene's own keys.
+    pub fn load_with(path: &Path, flags: Flags) -> Result<Scene, String> {
         let text = std::fs::read_to_string(path)
             .map_err(|e| format!("{}: cannot read scene: {e}", path.display()))?;
-        let mut scene = Scene::parse_with(&text, &path.display().to_string(), preset)?;
+        let mut scene = Scene::parse_with(&text, &path.display().to_string(), flags)?;
         let dir = path.parent().unwrap_or(Path::new(""));
         for spec in [&mut scene.objects.a, &mut scene.objects.b] {
             let local = dir.join(&*spec);
@@ -430,11 +462,11 @@ impl Scene {
 
     /// `name` is used in error messages (the file name).
     pub fn parse(text: &str, name: &str) -> Result<Scene, String> {
-        Scene::parse_with(text, name, None)
+        Scene::parse_with(text, name, Flags::default())
     }
 
-    /// [`parse`](Self::parse) with `preset` in place of the scene's own.
-    pub fn parse_with(text: &str, name: &str, preset: Option<Preset>) -> Result<Scene, String> {
+    /// [`parse`](Self::parse) with the command line's `flags` over the scene's own keys.
+    pub fn parse_with(text: &str, name: &str, flags: Flags) -> Result<Scene, String> {
         let f: File = toml::from_str(text).map_err(|e| {
             let line = e.span().map(|s| text[..s.start].matches('\n').count() + 1);
             match line {
@@ -443,7 +475,7 @@ impl Scene {
             }
         })?;
         let err = |m: String| format!("{name}: {m}");
-        let (preset, cfg) = chip(f.chip, text, preset).map_err(|e| format!("{name}:{e}"))?;
+        let (preset, cfg) = chip(f.chip, text, flags.preset).map_err(|e| format!("{name}:{e}"))?;
         cfg.check().map_err(|e| err(format!("[chip] {e}")))?;
         let poses = match (&f.sweep, f.pose.is_empty()) {
             (Some(_), false) => return Err(err("give either [[pose]] entries or a [sweep], not both".into())),
@@ -454,12 +486,12 @@ impl Scene {
         if let Some(p) = poses.iter().find(|p| !p.pose.rot_deg.iter().chain(&p.pose.t).all(|x| x.is_finite())) {
             return Err(err(format!("pose {} has a non-finite number", p.pose.text())));
         }
-        let (mut params, clock_mhz) = timing(f.timing, text, preset).map_err(|e| format!("{name}:{e}"))?;
+        let (mut params, technology, clock_mhz) = timing(f.timing, text, preset).map_err(|e| format!("{name}:{e}"))?;
         params.memory = f.memory.memory(preset.params().memory).map_err(err)?;
         params.check().map_err(|e| err(format!("[timing] / [memory]: {e}")))?;
-        if !(clock_mhz.is_finite() && clock_mhz > 0.0) {
-            return Err(err(format!("[timing] clock_mhz must be a positive number of MHz, not {clock_mhz}")));
-        }
+        // the command line's technology replaces the scene's clock
+        let (technology, clock_mhz) = if flags.technology.is_some() { (flags.technology, None) } else { (technology, clock_mhz) };
+        let clock = clock(&cfg, preset, technology, clock_mhz).map_err(err)?;
         Ok(Scene {
             name: name.to_string(),
             objects: f.objects,
@@ -477,7 +509,7 @@ impl Scene {
                 cross_check: f.outputs.cross_check,
             },
             params,
-            clock_mhz,
+            clock,
         })
     }
 }
@@ -527,10 +559,10 @@ mod tests {
         assert_eq!(s.params, Params { memory: MemTiming { latency: 3, interval: 2, bus_bits: None }.into(), ..Params::RTL });
         let s = Scene::parse(base, "s").unwrap();
         assert!(!s.outputs.cycles);
-        assert_eq!((s.params, s.clock_mhz), (Params::RTL, 800.0));
+        assert_eq!((s.params, s.clock.technology), (Params::RTL, Some(Technology::Osu018)));
         let s = Scene::parse(&format!("{base}[outputs]\ncross_check = \"rtl\"\n[timing]\ncredit = 4\nclock_mhz = 266\n"), "s").unwrap();
         assert!(s.outputs.cross_check == Some(CrossCheck::Rtl));
-        assert_eq!((s.params.credit, s.clock_mhz), (4, 266.0));
+        assert_eq!((s.params.credit, s.clock.mhz()), (4, 266.0));
         let e = Scene::parse(&format!("{base}[memory]\nlatency = 0\ninterval = 1\n"), "s").unwrap_err();
         assert!(e.contains("at least 1"), "{e}");
         let e = Scene::parse(&format!("{base}[timing]\nissue_spacing = 5\n"), "s").unwrap_err();
@@ -615,21 +647,21 @@ mod tests {
         let parse = |t: &str| Scene::parse(&format!("{base}{t}"), "s");
         // no preset: the RTL's reset values, as before presets
         let rtl = parse("").unwrap();
-        assert_eq!((rtl.preset, rtl.cfg, rtl.params, rtl.clock_mhz), (Preset::Rtl, ChipConfig::default(), Params::RTL, 800.0));
-        let d = parse("[chip]\npreset = \"date05\"").unwrap();
-        assert_eq!((d.cfg.k, d.params.memory, d.clock_mhz), (24, Memory::Ddr(Ddr::DATE05), 800.0));
+        assert_eq!((rtl.preset, rtl.cfg, rtl.params), (Preset::Rtl, ChipConfig::default(), Params::RTL));
+        let d = parse("[chip]\npreset = \"date05\"\n[timing]\ntechnology = \"paper\"").unwrap();
+        assert_eq!((d.cfg.k, d.params.memory, d.clock.mhz()), (24, Memory::Ddr(Ddr::DATE05), 800.0));
         assert_eq!((d.params.issue_spacing, d.params.outstanding, d.params.prefetch, d.params.credit), (1, 16, 14, 48));
         // each key over the preset's value, the rest kept
         let o = parse("[chip]\npreset = \"date05\"\nk = 6\n[timing]\ncredit = 32\nclock_mhz = 400\n[memory]\nbanks = 4").unwrap();
-        assert_eq!((o.cfg.k, o.cfg.format, o.params.credit, o.params.prefetch, o.clock_mhz), (6, d.cfg.format, 32, 14, 400.0));
+        assert_eq!((o.cfg.k, o.cfg.format, o.params.credit, o.params.prefetch, o.clock.mhz()), (6, d.cfg.format, 32, 14, 400.0));
         assert_eq!(o.params.memory, Memory::Ddr(Ddr { banks: 4, ..Ddr::DATE05 }));
         // a memory model named replaces the preset's
         let i = parse("[chip]\npreset = \"date05\"\n[memory]\nmodel = \"ideal\"").unwrap();
         assert_eq!(i.params.memory, Memory::Ideal(MemTiming::default()));
-        let w = parse("[chip]\npreset = \"wscg03\"").unwrap();
-        assert_eq!((w.cfg.tri_cache, w.params.memory, w.clock_mhz), (128, Memory::Ddr(Ddr::WSCG03), 266.0));
+        let w = parse("[chip]\npreset = \"wscg03\"\n[timing]\ntechnology = \"paper\"").unwrap();
+        assert_eq!((w.cfg.tri_cache, w.params.memory, w.clock.mhz()), (128, Memory::Ddr(Ddr::WSCG03), 266.0));
         // --preset replaces the scene's preset, not its keys
-        let f = Scene::parse_with(&format!("{base}[chip]\npreset = \"date05\"\nk = 6"), "s", Some(Preset::Rtl)).unwrap();
+        let f = Scene::parse_with(&format!("{base}[chip]\npreset = \"date05\"\nk = 6"), "s", Flags { preset: Some(Preset::Rtl), ..Default::default() }).unwrap();
         assert_eq!((f.preset, f.cfg.k, f.params), (Preset::Rtl, 6, Params::RTL));
         let e = parse("[chip]\npreset = \"date06\"").unwrap_err();
         assert!(e.starts_with("s:8:") && e.contains("\"date05\", \"wscg03\" or \"rtl\""), "{e}");
@@ -651,5 +683,22 @@ mod tests {
         let _ = std::fs::remove_dir_all(&dir);
         assert_eq!(Path::new(&s.objects.a), dir.join("sub/m.obj"));
         assert_eq!(s.objects.b, "sphere:12");
+    }
+    /// The clock: the configuration's measured period by default, the paper's with
+    /// `technology = "paper"`, an assumed `clock_mhz`; never both; `--technology` over all.
+    #[test]
+    fn clock_technology() {
+        let base = "[objects]\na = \"sphere:12\"\nb = \"sphere:12\"\n[[pose]]\nrot_deg=[0,0,0]\nt=[0,0,0]\n[chip]\nk = 6\nformat = \"reduced\"\n";
+        let parse = |t: &str| Scene::parse(&format!("{base}{t}"), "s");
+        let m = parse("").unwrap();
+        assert_eq!(m.clock, Clock::of(Technology::Osu018, &m.cfg, Preset::Rtl).unwrap());
+        assert!(m.configuration().contains("measured, OSU 0.18 um, docs/figures/timing.csv, slowest unit"), "{}", m.configuration());
+        assert_eq!(parse("[timing]\ntechnology = \"paper\"").unwrap().clock.mhz(), 800.0);
+        let e = parse("[timing]\ntechnology = \"paper\"\nclock_mhz = 3").unwrap_err();
+        assert!(e.contains("not both"), "{e}");
+        let e = parse("[timing]\ntechnology = \"tsmc\"").unwrap_err();
+        assert!(e.starts_with("s:11:") && e.contains("\"osu018\", \"ecp5\" or \"paper\""), "{e}");
+        let flags = Flags { technology: Some(Technology::Paper), ..Default::default() };
+        assert_eq!(Scene::parse_with(&format!("{base}[timing]\nclock_mhz = 3"), "s", flags).unwrap().clock.mhz(), 800.0);
     }
 }

@@ -31,14 +31,26 @@ pub struct PoseRecord {
 pub struct CycleRecord {
     /// Clocks from start to done.
     pub cycles: u64,
-    /// The chip's time for the query at the scene's clock, in microseconds.
+    /// The scene's clock period ([`Scene::clock`](crate::scene::Scene::clock)), in ns.
+    pub period_ns: f64,
+    /// The chip's time for the query: cycles x period, in microseconds.
     pub chip_us: f64,
+    /// The host's share, measured on this machine (wall clock, noisy): its setup for the
+    /// pose, and its settling of the chip's uncertain pairs with the exact oracle, in
+    /// microseconds.
+    pub host_setup_us: f64,
+    pub settle_us: f64,
+    /// The query end to end: host_setup_us + chip_us + settle_us.
+    pub end_to_end_us: f64,
     /// The golden model's time for the same query on this machine (software), in
     /// microseconds.
     pub software_us: f64,
     /// Pairs the chip reported intersecting, and uncertain (for the host to settle).
     pub hits: usize,
     pub uncertain: usize,
+    /// The uncertain pairs themselves (what the host settles).
+    #[serde(skip)]
+    pub uncertain_pairs: Vec<(u32, u32)>,
     /// DOP tests (node pairs through the DOP unit) and triangle tests (leaf pairs through
     /// TRI_UNIT) the chip ran: in all-pairs queries the golden model's counts.
     pub dop_tests: u64,
@@ -57,6 +69,14 @@ pub struct CycleRecord {
     /// The level that ran the pose beside the cycle model and agreed clock by clock.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub cross_checked: Option<String>,
+}
+
+impl CycleRecord {
+    /// Adds the host's measured share and the end-to-end time it makes.
+    pub fn add_host(&mut self, h: crate::query::HostTime) {
+        (self.host_setup_us, self.settle_us) = (h.setup_us, h.settle_us);
+        self.end_to_end_us = h.setup_us + self.chip_us + h.settle_us;
+    }
 }
 
 /// What one pose moved through the memory port.

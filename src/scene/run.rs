@@ -112,7 +112,7 @@ impl<'s> Prepared<'s> {
                 (res, t0.elapsed().as_secs_f64() * 1e6)
             })
             .collect();
-        let records = parallel_map(&s.poses, |i, sp| {
+        let mut records = parallel_map(&s.poses, |i, sp| {
             let r = self.pose(i, sp, &golden[i], &counts);
             progress();
             r
@@ -120,6 +120,12 @@ impl<'s> Prepared<'s> {
         .into_iter()
         .collect::<Result<Vec<_>, String>>()
         .map_err(|e| format!("{}: {e}", s.name))?;
+        // the host's share, one pose at a time (as the golden queries: an otherwise idle machine)
+        for (r, sp) in records.iter_mut().zip(&s.poses) {
+            if let Some(c) = r.cycles.as_mut() {
+                c.add_host(self.chip.host_time(&sp.pose, &c.uncertain_pairs));
+            }
+        }
         Ok(SceneRun { records, activity: counts.0.into_inner().expect("a pose's thread panicked") })
     }
 
@@ -217,10 +223,16 @@ impl<'s> Prepared<'s> {
         let layout = &chip.layout;
         Ok(CycleRecord {
             cycles: trace.cycles,
-            chip_us: trace.cycles as f64 / s.clock_mhz,
+            period_ns: s.clock.period_ns,
+            chip_us: trace.cycles as f64 * s.clock.period_ns / 1000.0,
+            // the host's share: Prepared::run measures it after every pose ran
+            host_setup_us: 0.0,
+            settle_us: 0.0,
+            end_to_end_us: 0.0,
             software_us,
             hits: hits.len(),
             uncertain: unc.len(),
+            uncertain_pairs: unc,
             dop_tests: trace.dop_tests,
             tri_tests: trace.tri_tests,
             max_entries: trace.max_depth,
@@ -306,6 +318,24 @@ mod tests {
             assert_eq!(x.memory.bytes > 0, c.cycles > 100);
             // all pairs: the chip's tests are the golden traversal's
             assert_eq!((c.dop_tests, c.tri_tests), (p.counters.dop_tests, p.counters.tri_tests));
+        }
+    }
+
+    /// `--json`: every pose of a cycles scene carries the clock period, the chip's time, the
+    /// host's measured setup and settling, and their sum end to end.
+    #[test]
+    fn json_times_add_up() {
+        let s = Scene::parse(&format!("{BASE}[outputs]\ncycles = true"), "test").unwrap();
+        let r = Prepared::new(&s, |spec| crate::mesh::resolve(spec).map_err(|e| e.to_string())).unwrap().run(|| ()).unwrap();
+        let v = serde_json::to_value(&r.records).unwrap();
+        for p in v.as_array().unwrap() {
+            let c = &p["cycles"];
+            let f = |k: &str| c[k].as_f64().unwrap_or_else(|| panic!("no {k} in {c}"));
+            let close = |a: f64, b: f64| (a - b).abs() <= 1e-12 * b.abs();
+            assert_eq!(f("period_ns"), s.clock.period_ns);
+            assert!(close(f("chip_us"), f("cycles") * f("period_ns") / 1000.0), "{c}");
+            assert!(f("host_setup_us") > 0.0 && f("settle_us") > 0.0, "{c}");
+            assert!(close(f("end_to_end_us"), f("host_setup_us") + f("chip_us") + f("settle_us")), "{c}");
         }
     }
 

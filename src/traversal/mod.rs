@@ -101,7 +101,9 @@ pub struct Host<'a> {
 }
 
 impl Host<'_> {
-    fn settle(&self, ta: u32, tb: u32) -> bool {
+    /// Whether triangle `ta` of A and `tb` of B intersect: the exact oracle on the f64
+    /// geometry (DATE'05 §4.2: the host decides what TRI_UNIT cannot).
+    pub fn settle(&self, ta: u32, tb: u32) -> bool {
         let (r, t) = (&self.rot, &self.t);
         oracle::tri_tri(&self.a[ta as usize], &self.b[tb as usize].map(|p| r * p + t))
     }
