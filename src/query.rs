@@ -7,7 +7,7 @@ use crate::chip::layout::Layout;
 use crate::chip::params::Params;
 use crate::chip::reg::{self, Mode, Order};
 use crate::dop::tree::Tri;
-use crate::golden::host::HostSetup;
+use crate::golden::host::{HostSetup, TriSide};
 use crate::golden::memory::ObjectImage;
 use crate::oracle;
 use crate::pose::Pose;
@@ -22,6 +22,8 @@ pub struct Chip {
     pub b: ObjectImage,
     pub layout: Layout,
     geometry: [Vec<Tri>; 2],
+    /// What T.CHECK's error words need of both objects, once (it scans B's triangles).
+    tri_side: TriSide,
 }
 
 impl Chip {
@@ -34,13 +36,9 @@ impl Chip {
         }
         oracle::check_range(a, "object A")?;
         oracle::check_range(b, "object B")?;
-        Ok(Chip {
-            cfg,
-            a: ObjectImage::build(a, &cfg),
-            b: ObjectImage::build(b, &cfg),
-            layout: Layout::new(&cfg),
-            geometry: [a.to_vec(), b.to_vec()],
-        })
+        let (a_image, b_image) = (ObjectImage::build(a, &cfg), ObjectImage::build(b, &cfg));
+        let tri_side = a_image.tri_side(&b_image);
+        Ok(Chip { cfg, a: a_image, b: b_image, layout: Layout::new(&cfg), geometry: [a.to_vec(), b.to_vec()], tri_side })
     }
 
     /// Ok iff B placed by `pose` stays in the range the exact oracle is exact for (a huge
@@ -50,7 +48,7 @@ impl Chip {
     }
 
     pub fn setup(&self, pose: &Pose) -> HostSetup {
-        HostSetup::new(&self.cfg, pose, self.b.tree.coord_bound(), self.a.tri_side(&self.b))
+        HostSetup::new(&self.cfg, pose, self.b.tree.coord_bound(), self.tri_side)
     }
 
     /// Word addresses of A's and B's first node and triangle words in the memory image

@@ -2,6 +2,7 @@
 //! NOR-reduced: B's node overlaps A's unless some lane says "separated".
 
 use super::doptrf::{lane, separated, transformed};
+use super::enclosure::checking;
 use super::host::HostSetup;
 use super::klmsel::{klmsel, opposite};
 use crate::format::{Format, Rounding};
@@ -24,7 +25,11 @@ pub struct TransformCache<'a> {
     k: usize,
     q: f64,
     rel: f64,
-    /// Per B node, the index of its block of k lanes (u32::MAX: not yet computed).
+    /// Per B node, the index of its block of k lanes (u32::MAX: not yet computed); the
+    /// table is allocated when a second node is transformed (the first node's block is
+    /// block 0), so that a query ending at the root does not pay for it.
+    nodes: usize,
+    first: Option<u32>,
     slot: Vec<u32>,
     approx: Vec<f64>,
     err: Vec<f64>,
@@ -46,7 +51,9 @@ impl<'a> TransformCache<'a> {
             k,
             q: f.min_positive_subnormal(),
             rel: 2f64.powi(4 - p) + 2f64.powi(-50),
-            slot: vec![u32::MAX; nodes],
+            nodes,
+            first: None,
+            slot: vec![],
             approx: vec![],
             err: vec![],
             exact: vec![],
@@ -61,22 +68,37 @@ impl<'a> TransformCache<'a> {
         TransformCache { memo: false, ..self }
     }
 
-    /// The DOP unit: does B's node `nb` (DOP `d`) overlap A's DOP `e`?
+    /// The DOP unit: does B's node `nb` (DOP `d`) overlap A's DOP `e`? First every lane's
+    /// estimate at once (a loop the compiler vectorises), then the exact value of the lanes
+    /// the estimate leaves open, if no lane is surely separated. In check mode
+    /// ([`checking`]) the answer is compared with [`dop_overlap`]'s.
     pub fn overlap(&mut self, nb: u32, d: &[f64], e: &[f64]) -> bool {
-        let k = self.k;
-        let block = match self.slot[nb as usize] {
-            u32::MAX => self.fill(nb, d),
-            b => b as usize,
-        };
+        let (k, h) = (self.k, self.k / 2);
+        let block = self.block(nb, d);
         let base = block * k;
-        for i in 0..k {
+        let (approx, err) = (&self.approx[base..base + k], &self.err[base..base + k]);
+        // Lane i meets e_opp(i): the first half e[h..], the second e[..h].
+        // Most pairs are separated: the second half waits for the first's answer.
+        let (s1, o1) = scan(self.q, &approx[..h], &err[..h], &e[h..]);
+        let overlap = !s1 && {
+            let (s2, o2) = scan(self.q, &approx[h..], &err[h..], &e[..h]);
+            !s2 && (!(o1 | o2) || self.exact_lanes(block, d, e))
+        };
+        if checking() {
+            let want = dop_overlap(self.f, self.r, self.setup, d, e);
+            assert_eq!(overlap, want, "check mode: the DOP unit's estimate said overlap = {overlap}, the lanes {want}: d {d:?}, e {e:?}");
+        }
+        overlap
+    }
+
+    /// The lanes the estimate leaves open, bit for bit: false if one is separated.
+    #[cold]
+    fn exact_lanes(&mut self, block: usize, d: &[f64], e: &[f64]) -> bool {
+        let base = block * self.k;
+        for i in 0..self.k {
             let ei = opposite(e, i);
             let x = self.approx[base + i] + ei;
-            // NaN bounds fail both comparisons: exact path.
-            let t = self.err[base + i] + 2f64.powi(-52) * (x.abs() + ei.abs());
-            if x <= -self.q - t {
-                return false;
-            }
+            let t = self.err[base + i] + EPS * (x.abs() + ei.abs());
             if x > -self.q + t {
                 continue;
             }
@@ -92,27 +114,73 @@ impl<'a> TransformCache<'a> {
         true
     }
 
-    fn fill(&mut self, nb: u32, d: &[f64]) -> usize {
-        if self.memo {
-            self.slot[nb as usize] = self.known.len() as u32;
-        } else {
+    /// The block of B's node `nb`, transformed on its first test.
+    fn block(&mut self, nb: u32, d: &[f64]) -> usize {
+        if !self.memo {
             self.approx.clear();
             self.err.clear();
             self.known.clear();
+            return self.fill(d);
         }
-        let block = self.known.len();
+        match self.first {
+            None => {
+                self.first = Some(nb);
+                return self.fill(d);
+            }
+            Some(f) if f == nb => return 0,
+            Some(_) => {}
+        }
+        if self.slot.is_empty() {
+            self.slot = vec![u32::MAX; self.nodes];
+            for v in [&mut self.approx, &mut self.err, &mut self.exact] {
+                v.reserve(self.k * 256);
+            }
+        }
+        match self.slot[nb as usize] {
+            u32::MAX => {
+                let b = self.fill(d);
+                self.slot[nb as usize] = b as u32;
+                b
+            }
+            b => b as usize,
+        }
+    }
+
+    fn fill(&mut self, d: &[f64]) -> usize {
+        let (block, base) = (self.known.len(), self.approx.len());
         self.known.push(0);
-        let max = self.f.max_finite() / 8.0;
-        for ((j, cm), &c) in self.setup.j.iter().zip(&self.setup.cmat).zip(&self.setup.cvec) {
+        self.approx.resize(base + self.k, 0.0);
+        self.err.resize(base + self.k, 0.0);
+        self.exact.resize(base + self.k, 0.0);
+        let (max, rel, q8) = (self.f.max_finite() / 8.0, self.rel, 8.0 * self.q);
+        let lanes = self.setup.j.iter().zip(&self.setup.cmat).zip(&self.setup.cvec);
+        for ((a, t), ((j, cm), &c)) in self.approx[base..].iter_mut().zip(&mut self.err[base..]).zip(lanes) {
             let dj = klmsel(d, *j);
             let p = [dj[0] * cm[0], dj[1] * cm[1], dj[2] * cm[2]];
-            self.approx.push((p[0] + p[1]) + (p[2] + c));
+            *a = (p[0] + p[1]) + (p[2] + c);
             let s = p[0].abs() + p[1].abs() + p[2].abs() + c.abs();
-            self.err.push(if s <= max { self.rel * s + 8.0 * self.q } else { f64::NAN });
+            *t = if s <= max { rel * s + q8 } else { f64::NAN };
         }
-        self.exact.resize(self.approx.len(), 0.0);
         block
     }
+}
+
+/// 2^-52: the f64 addition of a lane's estimate and e, and its bound.
+const EPS: f64 = f64::EPSILON;
+
+/// Lanes with estimates `approx` (bounds `err`) against A's distances `e`: is one surely
+/// separated (`approx + e` below -q by more than its bound), is one open (neither surely
+/// separated nor surely not; a NaN bound leaves its lane open)? Branch-free, vectorised.
+#[inline(always)]
+fn scan(q: f64, approx: &[f64], err: &[f64], e: &[f64]) -> (bool, bool) {
+    let (mut sure, mut open) = (false, false);
+    for ((&a, &t0), &ei) in approx.iter().zip(err).zip(e) {
+        let x = a + ei;
+        let t = t0 + EPS * (x.abs() + ei.abs());
+        sure |= x <= -q - t;
+        open |= !(x > -q + t);
+    }
+    (sure, open)
 }
 
 /// The DOP unit, lane by lane as the pipeline computes it (the reference for the RTL).

@@ -168,14 +168,12 @@ fn affine(fmt: Format, l: &Matrix3<f64>, t: &Vector3<f64>) -> Affine {
 /// of the unit normals by (largest `plane . b`; among coplanar triangles of one face, one
 /// whose lambdas are >= 0), and its lambdas clamped to >= 0 (the clamping residual is padded).
 fn best_cone(n: &DopNormals, b: &Vector3<f64>) -> ([usize; 3], [f64; 3]) {
-    let score: Vec<f64> = n.hull.iter().map(|t| t.plane.dot(b)).collect();
-    let top = score.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+    let top = n.hull.iter().map(|t| t.plane.dot(b)).fold(f64::NEG_INFINITY, f64::max);
     let (t, l) = n
         .hull
         .iter()
-        .zip(&score)
-        .filter(|(_, &s)| s >= top - 1e-12 * top.abs())
-        .map(|(t, _)| (t, t.inv * b))
+        .filter(|t| t.plane.dot(b) >= top - 1e-12 * top.abs())
+        .map(|t| (t, t.inv * b))
         .max_by(|x, y| x.1.min().total_cmp(&y.1.min()))
         .expect("the hull is not empty");
     debug_assert!(l.min() >= -1e-12 * b.norm(), "direction {b:?} outside its cone: {l:?}");
