@@ -55,7 +55,7 @@ pub struct TriUnit<'a> {
 /// Stage 1 of one leaf: enclosed always, bit for bit once the enclosure failed to decide.
 struct Leaf {
     hi: Stage1Hi,
-    exact: Option<Stage1>,
+    exact: Option<Box<Stage1>>,
 }
 
 /// Per triangle, its slot in `values` (the table of one word per triangle is allocated at
@@ -111,7 +111,7 @@ impl<'a> TriUnit<'a> {
         if fast.is_some() && !checking() {
             return fast;
         }
-        let exact = s1.exact.get_or_insert_with(|| stage1(f, r, leaf, frame, beta, scale));
+        let exact = s1.exact.get_or_insert_with(|| Box::new(stage1(f, r, leaf, frame, beta, scale)));
         let want = edges_in(f, r, &self.cert, exact, v, false).result();
         if fast.is_some() {
             assert_eq!(fast, want, "check mode: T.CHECK's enclosure decided {fast:?}, the bit-exact path {want:?}: leaf {leaf:?}, triangle {v:?}, {}", if ab { "M_AB" } else { "M_BA" });
