@@ -7,7 +7,7 @@ use crate::chip::layout::Layout;
 use crate::chip::params::Params;
 use crate::chip::reg::{self, Mode, Order};
 use crate::dop::tree::Tri;
-use crate::golden::host::{HostSetup, TriSide};
+use crate::golden::host::{DopLanes, HostSetup, TriSide};
 use crate::golden::memory::ObjectImage;
 use crate::oracle;
 use crate::pose::Pose;
@@ -69,10 +69,14 @@ impl Chip {
         reg::control_writes(self.image_bases(), order, mode, p, self.cfg.tri_cache)
     }
 
+    /// The host's setup as [`Chip::setup`] gives it, the DOP lanes computed when the DOP unit
+    /// first needs them ([`DopLanes`]).
     pub fn query(&self, pose: &Pose, mode: Mode, traversal: Traversal) -> QueryResult {
-        let setup = self.setup(pose);
+        let x = self.b.tree.coord_bound();
+        let frames = HostSetup::frames(&self.cfg, pose, x, self.tri_side);
+        let lanes = DopLanes::new(&self.cfg, pose, x);
         let host = Host { a: &self.geometry[0], b: &self.geometry[1], rot: pose.rotation(), t: pose.translation() };
-        traversal::run(&self.cfg, &self.a, &self.b, &setup, &host, mode, traversal)
+        traversal::run(&self.cfg, &self.a, &self.b, &frames, lanes, &host, mode, traversal)
     }
 }
 

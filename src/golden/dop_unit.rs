@@ -3,12 +3,13 @@
 
 use super::doptrf::{lane, separated, transformed};
 use super::enclosure::checking;
-use super::host::HostSetup;
+use super::host::{DopLanes, HostSetup, Lane};
+use std::borrow::Cow;
 use super::klmsel::{klmsel, opposite};
 use crate::format::{Format, Rounding};
 
 /// B's transformed DOPs during one query, computed on a node's first test (or at every
-/// test, [`without_memo`](TransformCache::without_memo)): per lane an
+/// test, [`forget_rows`](TransformCache::forget_rows)): per lane an
 /// f64 estimate `approx` of u_i with a bound `err` on |u_i - approx|, and the exact u_i
 /// (the chip's value, [`transformed`]) only for the lanes whose flag falls within the bound.
 /// The decisions equal [`dop_overlap`]'s bit for bit (tested); this only saves time.
@@ -21,7 +22,11 @@ use crate::format::{Format, Rounding};
 pub struct TransformCache<'a> {
     f: Format,
     r: Rounding,
-    setup: &'a HostSetup,
+    /// The lanes' words (`j`, `cmat`, `cvec`); [`lazy`](TransformCache::lazy): filled in
+    /// once `pending` is done.
+    setup: Cow<'a, HostSetup>,
+    /// The lanes still to compute, and the mirror pairs computed so far.
+    pending: Option<(DopLanes, Vec<[Lane; 2]>)>,
     k: usize,
     q: f64,
     rel: f64,
@@ -47,7 +52,8 @@ impl<'a> TransformCache<'a> {
         TransformCache {
             f,
             r,
-            setup,
+            setup: Cow::Borrowed(setup),
+            pending: None,
             k,
             q: f.min_positive_subnormal(),
             rel: 2f64.powi(4 - p) + 2f64.powi(-50),
@@ -62,10 +68,19 @@ impl<'a> TransformCache<'a> {
         }
     }
 
+    /// With lanes computed when first needed, a mirror pair at a time (`frames`: the setup
+    /// without lanes, [`HostSetup::frames`]): the first test computes pairs until a lane is
+    /// surely separated, so that a query ending at the root pays for few cone searches.
+    pub fn lazy(f: Format, r: Rounding, frames: &HostSetup, lanes: DopLanes, nodes: usize) -> Self {
+        let k = lanes.k();
+        let cache = TransformCache::new(f, r, frames, nodes);
+        TransformCache { setup: Cow::Owned(frames.clone()), pending: Some((lanes, vec![])), k, ..cache }
+    }
+
     /// Transforms B's DOP anew at every test, as WSCG'03 Algorithm 1 does in software: the
     /// recursive traversal's time then is that algorithm's (the decisions are the same).
-    pub fn without_memo(self) -> Self {
-        TransformCache { memo: false, ..self }
+    pub fn forget_rows(&mut self) {
+        self.memo = false;
     }
 
     /// The DOP unit: does B's node `nb` (DOP `d`) overlap A's DOP `e`? First every lane's
@@ -73,6 +88,48 @@ impl<'a> TransformCache<'a> {
     /// the estimate leaves open, if no lane is surely separated. In check mode
     /// ([`checking`]) the answer is compared with [`dop_overlap`]'s.
     pub fn overlap(&mut self, nb: u32, d: &[f64], e: &[f64]) -> bool {
+        let overlap = !(self.pending.is_some() && self.lazy_separated(d, e)) && {
+            self.complete();
+            self.estimated(nb, d, e)
+        };
+        if checking() {
+            self.complete();
+            let want = dop_overlap(self.f, self.r, &self.setup, d, e);
+            assert_eq!(overlap, want, "check mode: the DOP unit's estimate said overlap = {overlap}, the lanes {want}: d {d:?}, e {e:?}");
+        }
+        overlap
+    }
+
+    /// Computes pending mirror pairs until a lane is surely separated (true), or all are.
+    fn lazy_separated(&mut self, d: &[f64], e: &[f64]) -> bool {
+        let (h, q, est) = (self.k / 2, self.q, self.estimator());
+        let Some((lanes, pairs)) = &mut self.pending else { return false };
+        while pairs.len() < h {
+            let i = pairs.len();
+            let p = lanes.pair(i);
+            pairs.push(p);
+            for (l, ei) in [(p[0], e[i + h]), (p[1], e[i])] {
+                let (a, t0) = est.lane(d, l.j, l.c, l.cv);
+                if flags(q, a, t0, ei).0 {
+                    return true;
+                }
+            }
+        }
+        false
+    }
+
+    /// Every lane computed (lane 0 first: the first halves of the pairs, then the mirrors).
+    fn complete(&mut self) {
+        if let Some((lanes, mut pairs)) = self.pending.take() {
+            let h = self.k / 2;
+            pairs.extend((pairs.len()..h).map(|i| lanes.pair(i)));
+            let all: Vec<Lane> = pairs.iter().map(|p| p[0]).chain(pairs.iter().map(|p| p[1])).collect();
+            self.setup.to_mut().set_lanes(&all);
+        }
+    }
+
+    /// [`overlap`](Self::overlap) with every lane's words known.
+    fn estimated(&mut self, nb: u32, d: &[f64], e: &[f64]) -> bool {
         let (k, h) = (self.k, self.k / 2);
         let block = self.block(nb, d);
         let base = block * k;
@@ -84,10 +141,6 @@ impl<'a> TransformCache<'a> {
             let (s2, o2) = scan(self.q, &approx[h..], &err[h..], &e[..h]);
             !s2 && (!(o1 | o2) || self.exact_lanes(block, d, e))
         };
-        if checking() {
-            let want = dop_overlap(self.f, self.r, self.setup, d, e);
-            assert_eq!(overlap, want, "check mode: the DOP unit's estimate said overlap = {overlap}, the lanes {want}: d {d:?}, e {e:?}");
-        }
         overlap
     }
 
@@ -97,9 +150,7 @@ impl<'a> TransformCache<'a> {
         let base = block * self.k;
         for i in 0..self.k {
             let ei = opposite(e, i);
-            let x = self.approx[base + i] + ei;
-            let t = self.err[base + i] + EPS * (x.abs() + ei.abs());
-            if x > -self.q + t {
+            if !flags(self.q, self.approx[base + i], self.err[base + i], ei).1 {
                 continue;
             }
             if self.known[block] & (1 << i) == 0 {
@@ -152,16 +203,34 @@ impl<'a> TransformCache<'a> {
         self.approx.resize(base + self.k, 0.0);
         self.err.resize(base + self.k, 0.0);
         self.exact.resize(base + self.k, 0.0);
-        let (max, rel, q8) = (self.f.max_finite() / 8.0, self.rel, 8.0 * self.q);
+        let est = self.estimator();
         let lanes = self.setup.j.iter().zip(&self.setup.cmat).zip(&self.setup.cvec);
         for ((a, t), ((j, cm), &c)) in self.approx[base..].iter_mut().zip(&mut self.err[base..]).zip(lanes) {
-            let dj = klmsel(d, *j);
-            let p = [dj[0] * cm[0], dj[1] * cm[1], dj[2] * cm[2]];
-            *a = (p[0] + p[1]) + (p[2] + c);
-            let s = p[0].abs() + p[1].abs() + p[2].abs() + c.abs();
-            *t = if s <= max { rel * s + q8 } else { f64::NAN };
+            (*a, *t) = est.lane(d, *j, *cm, c);
         }
         block
+    }
+
+    fn estimator(&self) -> Estimator {
+        Estimator { max: self.f.max_finite() / 8.0, rel: self.rel, q8: 8.0 * self.q }
+    }
+}
+
+/// A lane's f64 estimate of u_i and its bound (the bound above).
+#[derive(Clone, Copy)]
+struct Estimator {
+    max: f64,
+    rel: f64,
+    q8: f64,
+}
+
+impl Estimator {
+    #[inline(always)]
+    fn lane(&self, d: &[f64], j: [u8; 3], cm: [f64; 3], c: f64) -> (f64, f64) {
+        let dj = klmsel(d, j);
+        let p = [dj[0] * cm[0], dj[1] * cm[1], dj[2] * cm[2]];
+        let s = p[0].abs() + p[1].abs() + p[2].abs() + c.abs();
+        ((p[0] + p[1]) + (p[2] + c), if s <= self.max { self.rel * s + self.q8 } else { f64::NAN })
     }
 }
 
@@ -175,12 +244,19 @@ const EPS: f64 = f64::EPSILON;
 fn scan(q: f64, approx: &[f64], err: &[f64], e: &[f64]) -> (bool, bool) {
     let (mut sure, mut open) = (false, false);
     for ((&a, &t0), &ei) in approx.iter().zip(err).zip(e) {
-        let x = a + ei;
-        let t = t0 + EPS * (x.abs() + ei.abs());
-        sure |= x <= -q - t;
-        open |= !(x > -q + t);
+        let (s, o) = flags(q, a, t0, ei);
+        sure |= s;
+        open |= o;
     }
     (sure, open)
+}
+
+/// One lane: surely separated, open.
+#[inline(always)]
+fn flags(q: f64, a: f64, t0: f64, ei: f64) -> (bool, bool) {
+    let x = a + ei;
+    let t = t0 + EPS * (x.abs() + ei.abs());
+    (x <= -q - t, !(x > -q + t))
 }
 
 /// The DOP unit, lane by lane as the pipeline computes it (the reference for the RTL).
