@@ -7,7 +7,7 @@ use crate::chip::layout::Layout;
 use crate::chip::params::Params;
 use crate::chip::reg::{self, Mode, Order};
 use crate::dop::tree::Tri;
-use crate::golden::host::HostSetup;
+use crate::golden::host::{DopLanes, HostSetup, TriSide};
 use crate::golden::memory::ObjectImage;
 use crate::oracle;
 use crate::pose::Pose;
@@ -44,6 +44,8 @@ pub struct Chip {
     pub b: ObjectImage,
     pub layout: Layout,
     geometry: [Vec<Tri>; 2],
+    /// What T.CHECK's error words need of both objects, once (it scans B's triangles).
+    tri_side: TriSide,
 }
 
 impl Chip {
@@ -57,13 +59,9 @@ impl Chip {
         oracle::check_range(a, "object A")?;
         oracle::check_range(b, "object B")?;
         check_memory(a.len(), b.len(), cfg.k, crate::measure::memory_available())?;
-        Ok(Chip {
-            cfg,
-            a: ObjectImage::build(a, &cfg),
-            b: ObjectImage::build(b, &cfg),
-            layout: Layout::new(&cfg),
-            geometry: [a.to_vec(), b.to_vec()],
-        })
+        let (a_image, b_image) = (ObjectImage::build(a, &cfg), ObjectImage::build(b, &cfg));
+        let tri_side = a_image.tri_side(&b_image);
+        Ok(Chip { cfg, a: a_image, b: b_image, layout: Layout::new(&cfg), geometry: [a.to_vec(), b.to_vec()], tri_side })
     }
 
     /// Ok iff B placed by `pose` stays in the range the exact oracle is exact for (a huge
@@ -73,7 +71,7 @@ impl Chip {
     }
 
     pub fn setup(&self, pose: &Pose) -> HostSetup {
-        HostSetup::new(&self.cfg, pose, self.b.tree.coord_bound(), self.a.tri_side(&self.b))
+        HostSetup::new(&self.cfg, pose, self.b.tree.coord_bound(), self.tri_side)
     }
 
     /// Word addresses of A's and B's first node and triangle words in the memory image
@@ -94,9 +92,13 @@ impl Chip {
         reg::control_writes(self.image_bases(), order, mode, p, self.cfg.tri_cache)
     }
 
+    /// The host's setup as [`Chip::setup`] gives it, the DOP lanes computed when the DOP unit
+    /// first needs them ([`DopLanes`]).
     pub fn query(&self, pose: &Pose, mode: Mode, traversal: Traversal) -> QueryResult {
-        let setup = self.setup(pose);
-        traversal::run(&self.cfg, &self.a, &self.b, &setup, &self.host(pose), mode, traversal)
+        let x = self.b.tree.coord_bound();
+        let frames = HostSetup::frames(&self.cfg, pose, x, self.tri_side);
+        let lanes = DopLanes::new(&self.cfg, pose, x);
+        traversal::run(&self.cfg, &self.a, &self.b, &frames, lanes, &self.host(pose), mode, traversal)
     }
 
     /// What the host settles uncertain pairs with at `pose`.

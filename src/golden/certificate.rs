@@ -36,7 +36,23 @@ pub struct Certificate {
 }
 
 impl Certificate {
+    /// Computed once per format and rounding and thread (the host asks for it at every
+    /// pose; finding the scale constants takes microseconds).
     pub fn new(f: Format, r: Rounding) -> Certificate {
+        thread_local! {
+            static KNOWN: std::cell::RefCell<Vec<(Rounding, Certificate)>> = const { std::cell::RefCell::new(Vec::new()) };
+        }
+        KNOWN.with_borrow_mut(|known| match known.iter().find(|(kr, c)| *kr == r && c.f == f) {
+            Some((_, c)) => *c,
+            None => {
+                let c = Certificate::compute(f, r);
+                known.push((r, c));
+                c
+            }
+        })
+    }
+
+    fn compute(f: Format, r: Rounding) -> Certificate {
         let half = 2f64.powi(-(f.frac_bits() as i32) - 1);
         let nearest = r == Rounding::NearestEven;
         let u = if nearest { half } else { 2.0 * half };

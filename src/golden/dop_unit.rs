@@ -2,12 +2,14 @@
 //! NOR-reduced: B's node overlaps A's unless some lane says "separated".
 
 use super::doptrf::{lane, separated, transformed};
-use super::host::HostSetup;
+use super::enclosure::checking;
+use super::host::{DopLanes, HostSetup, Lane};
+use std::borrow::Cow;
 use super::klmsel::{klmsel, opposite};
 use crate::format::{Format, Rounding};
 
 /// B's transformed DOPs during one query, computed on a node's first test (or at every
-/// test, [`without_memo`](TransformCache::without_memo)): per lane an
+/// test, [`forget_rows`](TransformCache::forget_rows)): per lane an
 /// f64 estimate `approx` of u_i with a bound `err` on |u_i - approx|, and the exact u_i
 /// (the chip's value, [`transformed`]) only for the lanes whose flag falls within the bound.
 /// The decisions equal [`dop_overlap`]'s bit for bit (tested); this only saves time.
@@ -20,11 +22,19 @@ use crate::format::{Format, Rounding};
 pub struct TransformCache<'a> {
     f: Format,
     r: Rounding,
-    setup: &'a HostSetup,
+    /// The lanes' words (`j`, `cmat`, `cvec`); [`lazy`](TransformCache::lazy): filled in
+    /// once `pending` is done.
+    setup: Cow<'a, HostSetup>,
+    /// The lanes still to compute, and the mirror pairs computed so far.
+    pending: Option<(DopLanes, Vec<[Lane; 2]>)>,
     k: usize,
     q: f64,
     rel: f64,
-    /// Per B node, the index of its block of k lanes (u32::MAX: not yet computed).
+    /// Per B node, the index of its block of k lanes (u32::MAX: not yet computed); the
+    /// table is allocated when a second node is transformed (the first node's block is
+    /// block 0), so that a query ending at the root does not pay for it.
+    nodes: usize,
+    first: Option<u32>,
     slot: Vec<u32>,
     approx: Vec<f64>,
     err: Vec<f64>,
@@ -42,11 +52,14 @@ impl<'a> TransformCache<'a> {
         TransformCache {
             f,
             r,
-            setup,
+            setup: Cow::Borrowed(setup),
+            pending: None,
             k,
             q: f.min_positive_subnormal(),
             rel: 2f64.powi(4 - p) + 2f64.powi(-50),
-            slot: vec![u32::MAX; nodes],
+            nodes,
+            first: None,
+            slot: vec![],
             approx: vec![],
             err: vec![],
             exact: vec![],
@@ -55,29 +68,89 @@ impl<'a> TransformCache<'a> {
         }
     }
 
-    /// Transforms B's DOP anew at every test, as WSCG'03 Algorithm 1 does in software: the
-    /// recursive traversal's time then is that algorithm's (the decisions are the same).
-    pub fn without_memo(self) -> Self {
-        TransformCache { memo: false, ..self }
+    /// With lanes computed when first needed, a mirror pair at a time (`frames`: the setup
+    /// without lanes, [`HostSetup::frames`]): the first test computes pairs until a lane is
+    /// surely separated, so that a query ending at the root pays for few cone searches.
+    pub fn lazy(f: Format, r: Rounding, frames: &HostSetup, lanes: DopLanes, nodes: usize) -> Self {
+        let k = lanes.k();
+        let cache = TransformCache::new(f, r, frames, nodes);
+        TransformCache { setup: Cow::Owned(frames.clone()), pending: Some((lanes, vec![])), k, ..cache }
     }
 
-    /// The DOP unit: does B's node `nb` (DOP `d`) overlap A's DOP `e`?
+    /// Transforms B's DOP anew at every test, as WSCG'03 Algorithm 1 does in software: the
+    /// recursive traversal's time then is that algorithm's (the decisions are the same).
+    pub fn forget_rows(&mut self) {
+        self.memo = false;
+    }
+
+    /// The DOP unit: does B's node `nb` (DOP `d`) overlap A's DOP `e`? First every lane's
+    /// estimate at once (a loop the compiler vectorises), then the exact value of the lanes
+    /// the estimate leaves open, if no lane is surely separated. In check mode
+    /// ([`checking`]) the answer is compared with [`dop_overlap`]'s.
     pub fn overlap(&mut self, nb: u32, d: &[f64], e: &[f64]) -> bool {
-        let k = self.k;
-        let block = match self.slot[nb as usize] {
-            u32::MAX => self.fill(nb, d),
-            b => b as usize,
+        let overlap = !(self.pending.is_some() && self.lazy_separated(d, e)) && {
+            self.complete();
+            self.estimated(nb, d, e)
         };
-        let base = block * k;
-        for i in 0..k {
-            let ei = opposite(e, i);
-            let x = self.approx[base + i] + ei;
-            // NaN bounds fail both comparisons: exact path.
-            let t = self.err[base + i] + 2f64.powi(-52) * (x.abs() + ei.abs());
-            if x <= -self.q - t {
-                return false;
+        if checking() {
+            self.complete();
+            let want = dop_overlap(self.f, self.r, &self.setup, d, e);
+            assert_eq!(overlap, want, "check mode: the DOP unit's estimate said overlap = {overlap}, the lanes {want}: d {d:?}, e {e:?}");
+        }
+        overlap
+    }
+
+    /// Computes pending mirror pairs until a lane is surely separated (true), or all are.
+    fn lazy_separated(&mut self, d: &[f64], e: &[f64]) -> bool {
+        let (h, q, est) = (self.k / 2, self.q, self.estimator());
+        let Some((lanes, pairs)) = &mut self.pending else { return false };
+        while pairs.len() < h {
+            let i = pairs.len();
+            let p = lanes.pair(i);
+            pairs.push(p);
+            for (l, ei) in [(p[0], e[i + h]), (p[1], e[i])] {
+                let (a, t0) = est.lane(d, l.j, l.c, l.cv);
+                if flags(q, a, t0, ei).0 {
+                    return true;
+                }
             }
-            if x > -self.q + t {
+        }
+        false
+    }
+
+    /// Every lane computed (lane 0 first: the first halves of the pairs, then the mirrors).
+    fn complete(&mut self) {
+        if let Some((lanes, mut pairs)) = self.pending.take() {
+            let h = self.k / 2;
+            pairs.extend((pairs.len()..h).map(|i| lanes.pair(i)));
+            let all: Vec<Lane> = pairs.iter().map(|p| p[0]).chain(pairs.iter().map(|p| p[1])).collect();
+            self.setup.to_mut().set_lanes(&all);
+        }
+    }
+
+    /// [`overlap`](Self::overlap) with every lane's words known.
+    fn estimated(&mut self, nb: u32, d: &[f64], e: &[f64]) -> bool {
+        let (k, h) = (self.k, self.k / 2);
+        let block = self.block(nb, d);
+        let base = block * k;
+        let (approx, err) = (&self.approx[base..base + k], &self.err[base..base + k]);
+        // Lane i meets e_opp(i): the first half e[h..], the second e[..h].
+        // Most pairs are separated: the second half waits for the first's answer.
+        let (s1, o1) = scan(self.q, &approx[..h], &err[..h], &e[h..]);
+        let overlap = !s1 && {
+            let (s2, o2) = scan(self.q, &approx[h..], &err[h..], &e[..h]);
+            !s2 && (!(o1 | o2) || self.exact_lanes(block, d, e))
+        };
+        overlap
+    }
+
+    /// The lanes the estimate leaves open, bit for bit: false if one is separated.
+    #[cold]
+    fn exact_lanes(&mut self, block: usize, d: &[f64], e: &[f64]) -> bool {
+        let base = block * self.k;
+        for i in 0..self.k {
+            let ei = opposite(e, i);
+            if !flags(self.q, self.approx[base + i], self.err[base + i], ei).1 {
                 continue;
             }
             if self.known[block] & (1 << i) == 0 {
@@ -92,27 +165,98 @@ impl<'a> TransformCache<'a> {
         true
     }
 
-    fn fill(&mut self, nb: u32, d: &[f64]) -> usize {
-        if self.memo {
-            self.slot[nb as usize] = self.known.len() as u32;
-        } else {
+    /// The block of B's node `nb`, transformed on its first test.
+    fn block(&mut self, nb: u32, d: &[f64]) -> usize {
+        if !self.memo {
             self.approx.clear();
             self.err.clear();
             self.known.clear();
+            return self.fill(d);
         }
-        let block = self.known.len();
+        match self.first {
+            None => {
+                self.first = Some(nb);
+                return self.fill(d);
+            }
+            Some(f) if f == nb => return 0,
+            Some(_) => {}
+        }
+        if self.slot.is_empty() {
+            self.slot = vec![u32::MAX; self.nodes];
+            for v in [&mut self.approx, &mut self.err, &mut self.exact] {
+                v.reserve(self.k * 256);
+            }
+        }
+        match self.slot[nb as usize] {
+            u32::MAX => {
+                let b = self.fill(d);
+                self.slot[nb as usize] = b as u32;
+                b
+            }
+            b => b as usize,
+        }
+    }
+
+    fn fill(&mut self, d: &[f64]) -> usize {
+        let (block, base) = (self.known.len(), self.approx.len());
         self.known.push(0);
-        let max = self.f.max_finite() / 8.0;
-        for ((j, cm), &c) in self.setup.j.iter().zip(&self.setup.cmat).zip(&self.setup.cvec) {
-            let dj = klmsel(d, *j);
-            let p = [dj[0] * cm[0], dj[1] * cm[1], dj[2] * cm[2]];
-            self.approx.push((p[0] + p[1]) + (p[2] + c));
-            let s = p[0].abs() + p[1].abs() + p[2].abs() + c.abs();
-            self.err.push(if s <= max { self.rel * s + 8.0 * self.q } else { f64::NAN });
+        self.approx.resize(base + self.k, 0.0);
+        self.err.resize(base + self.k, 0.0);
+        self.exact.resize(base + self.k, 0.0);
+        let est = self.estimator();
+        let lanes = self.setup.j.iter().zip(&self.setup.cmat).zip(&self.setup.cvec);
+        for ((a, t), ((j, cm), &c)) in self.approx[base..].iter_mut().zip(&mut self.err[base..]).zip(lanes) {
+            (*a, *t) = est.lane(d, *j, *cm, c);
         }
-        self.exact.resize(self.approx.len(), 0.0);
         block
     }
+
+    fn estimator(&self) -> Estimator {
+        Estimator { max: self.f.max_finite() / 8.0, rel: self.rel, q8: 8.0 * self.q }
+    }
+}
+
+/// A lane's f64 estimate of u_i and its bound (the bound above).
+#[derive(Clone, Copy)]
+struct Estimator {
+    max: f64,
+    rel: f64,
+    q8: f64,
+}
+
+impl Estimator {
+    #[inline(always)]
+    fn lane(&self, d: &[f64], j: [u8; 3], cm: [f64; 3], c: f64) -> (f64, f64) {
+        let dj = klmsel(d, j);
+        let p = [dj[0] * cm[0], dj[1] * cm[1], dj[2] * cm[2]];
+        let s = p[0].abs() + p[1].abs() + p[2].abs() + c.abs();
+        ((p[0] + p[1]) + (p[2] + c), if s <= self.max { self.rel * s + self.q8 } else { f64::NAN })
+    }
+}
+
+/// 2^-52: the f64 addition of a lane's estimate and e, and its bound.
+const EPS: f64 = f64::EPSILON;
+
+/// Lanes with estimates `approx` (bounds `err`) against A's distances `e`: is one surely
+/// separated (`approx + e` below -q by more than its bound), is one open (neither surely
+/// separated nor surely not; a NaN bound leaves its lane open)? Branch-free, vectorised.
+#[inline(always)]
+fn scan(q: f64, approx: &[f64], err: &[f64], e: &[f64]) -> (bool, bool) {
+    let (mut sure, mut open) = (false, false);
+    for ((&a, &t0), &ei) in approx.iter().zip(err).zip(e) {
+        let (s, o) = flags(q, a, t0, ei);
+        sure |= s;
+        open |= o;
+    }
+    (sure, open)
+}
+
+/// One lane: surely separated, open.
+#[inline(always)]
+fn flags(q: f64, a: f64, t0: f64, ei: f64) -> (bool, bool) {
+    let x = a + ei;
+    let t = t0 + EPS * (x.abs() + ei.abs());
+    (x <= -q - t, !(x > -q + t))
 }
 
 /// The DOP unit, lane by lane as the pipeline computes it (the reference for the RTL).

@@ -70,43 +70,17 @@ impl HostSetup {
 
     /// `b_coord_bound` is X = max |x|_inf over B's root DOP ([`DopTree::coord_bound`](crate::dop::DopTree::coord_bound)).
     pub fn new(cfg: &ChipConfig, pose: &Pose, b_coord_bound: f64, tri: TriSide) -> HostSetup {
-        let normals = DopNormals::get(cfg.k).expect("k validated by the caller");
+        let mut s = HostSetup::frames(cfg, pose, b_coord_bound, tri);
+        s.set_lanes(&DopLanes::new(cfg, pose, b_coord_bound).all());
+        s
+    }
+
+    /// TRI_UNIT's part of the setup only, its DOP lanes empty: for a query whose DOP unit
+    /// computes its lanes when it needs them ([`DopLanes`]).
+    pub fn frames(cfg: &ChipConfig, pose: &Pose, b_coord_bound: f64, tri: TriSide) -> HostSetup {
         let rot = pose.rotation();
         let t = pose.translation();
-        let fmt = cfg.format.dop;
-        let outward = cfg.dop_rounding == DopRounding::Outward;
-        let eps = f64::EPSILON; // 2^-52
         let t_inf = t.amax();
-        let h = cfg.k / 2;
-        // The hull is centrally symmetric: -b_i lies in the antipodal cone with the same
-        // lambdas, so the second half of the lanes mirrors the first.
-        let cones: Vec<([usize; 3], [f64; 3])> =
-            normals.b[..h].iter().map(|bi| best_cone(normals, &(rot.transpose() * bi))).collect();
-        let (mut j, mut cmat, mut cvec) = (vec![], vec![], vec![]);
-        for (i, bi) in normals.b.iter().enumerate() {
-            let b = rot.transpose() * bi;
-            let (tri, lambda) = if i < h { cones[i] } else { (cones[i - h].0.map(|x| normals.opp(x)), cones[i - h].1) };
-            let c3 = lambda.map(|l| fmt.round(l, Rounding::NearestEven));
-            j.push(tri.map(|x| x as u8));
-            cmat.push(c3);
-            let bt = bi.dot(&t);
-            let c = if outward {
-                let approx: Vector3<f64> = (0..3).map(|l| normals.b[tri[l]] * c3[l]).sum();
-                let r = b - approx;
-                // f64 error of b (3 products, 2 sums per entry) and of approx, generously.
-                let scale: f64 = b.abs().sum() + (0..3).map(|l| c3[l] * normals.b[tri[l]].abs().sum()).sum::<f64>();
-                let resid = r.abs().sum() + 8.0 * eps * scale;
-                let bi1 = bi.abs().sum();
-                let transform_err = bi1 * 2.0 * eps * (3.0 * b_coord_bound + t_inf);
-                let pad = resid * b_coord_bound + transform_err + bi1 * t_inf * eps;
-                let pad = if pad.is_nan() { f64::INFINITY } else { pad };
-                // next_up covers the rounding of this last f64 addition.
-                fmt.round((bt + pad).next_up(), Rounding::TowardPositive)
-            } else {
-                fmt.round(bt, Rounding::NearestEven)
-            };
-            cvec.push(c);
-        }
         let rt = rot.transpose();
         let tab = -(rt * t);
         // T.CHECK's maps and their error words, in its format.
@@ -124,15 +98,100 @@ impl HostSetup {
         let eta_ab = if 4.0 * tri.lambda_max_b * eta <= 0.5 { eta } else { f64::INFINITY };
         let [sa, sb] = tri.scale;
         HostSetup {
-            j,
-            cmat,
-            cvec,
+            j: vec![],
+            cmat: vec![],
+            cvec: vec![],
             m_ab,
             m_ba,
             beta_ab: betas(fmt, &m_ab, tab_err, eta_ab, sb, sa),
             beta_ba: betas(fmt, &m_ba, place, 0.0, sa, sb),
             scale: tri.scale,
         }
+    }
+
+    /// The DOP lanes' words, lane 0 first.
+    pub fn set_lanes(&mut self, lanes: &[Lane]) {
+        self.j = lanes.iter().map(|l| l.j).collect();
+        self.cmat = lanes.iter().map(|l| l.c).collect();
+        self.cvec = lanes.iter().map(|l| l.cv).collect();
+    }
+}
+
+/// One DOP lane's words: j_i (the D.KLMSEL control), C_i and c_i.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Lane {
+    pub j: [u8; 3],
+    pub c: [f64; 3],
+    pub cv: f64,
+}
+
+/// The DOP unit's part of the host setup of one pose (DATE'05 Eq. 6), a mirror pair of lanes
+/// at a time: lane i < k/2 and lane i + k/2 share one cone search, the setup's main cost, so
+/// that a query whose root pair some lane separates computes few of them.
+#[derive(Clone, Debug)]
+pub struct DopLanes {
+    normals: &'static DopNormals,
+    rt: Matrix3<f64>,
+    t: Vector3<f64>,
+    fmt: Format,
+    outward: bool,
+    x: f64,
+}
+
+impl DopLanes {
+    pub fn new(cfg: &ChipConfig, pose: &Pose, b_coord_bound: f64) -> DopLanes {
+        DopLanes {
+            normals: DopNormals::get(cfg.k).expect("k validated by the caller"),
+            rt: pose.rotation().transpose(),
+            t: pose.translation(),
+            fmt: cfg.format.dop,
+            outward: cfg.dop_rounding == DopRounding::Outward,
+            x: b_coord_bound,
+        }
+    }
+
+    pub fn k(&self) -> usize {
+        self.normals.k
+    }
+
+    /// Every lane, lane 0 first.
+    pub fn all(&self) -> Vec<Lane> {
+        let pairs: Vec<[Lane; 2]> = (0..self.k() / 2).map(|i| self.pair(i)).collect();
+        pairs.iter().map(|p| p[0]).chain(pairs.iter().map(|p| p[1])).collect()
+    }
+
+    /// Lanes i and i + k/2 (i < k/2). The hull is centrally symmetric: -b_i lies in the
+    /// antipodal cone with the same lambdas, so the second lane mirrors the first.
+    pub fn pair(&self, i: usize) -> [Lane; 2] {
+        let n = self.normals;
+        let (tri, lambda) = best_cone(n, &(self.rt * n.b[i]));
+        [self.lane(i, tri, lambda), self.lane(i + self.k() / 2, tri.map(|x| n.opp(x)), lambda)]
+    }
+
+    fn lane(&self, i: usize, tri: [usize; 3], lambda: [f64; 3]) -> Lane {
+        let (normals, fmt, t, b_coord_bound) = (self.normals, self.fmt, &self.t, self.x);
+        let eps = f64::EPSILON; // 2^-52
+        let t_inf = t.amax();
+        let bi = &normals.b[i];
+        let b = self.rt * bi;
+        let c3 = lambda.map(|l| fmt.round(l, Rounding::NearestEven));
+        let bt = bi.dot(t);
+        let c = if self.outward {
+            let approx: Vector3<f64> = (0..3).map(|l| normals.b[tri[l]] * c3[l]).sum();
+            let r = b - approx;
+            // f64 error of b (3 products, 2 sums per entry) and of approx, generously.
+            let scale: f64 = b.abs().sum() + (0..3).map(|l| c3[l] * normals.b[tri[l]].abs().sum()).sum::<f64>();
+            let resid = r.abs().sum() + 8.0 * eps * scale;
+            let bi1 = bi.abs().sum();
+            let transform_err = bi1 * 2.0 * eps * (3.0 * b_coord_bound + t_inf);
+            let pad = resid * b_coord_bound + transform_err + bi1 * t_inf * eps;
+            let pad = if pad.is_nan() { f64::INFINITY } else { pad };
+            // next_up covers the rounding of this last f64 addition.
+            fmt.round((bt + pad).next_up(), Rounding::TowardPositive)
+        } else {
+            fmt.round(bt, Rounding::NearestEven)
+        };
+        Lane { j: tri.map(|x| x as u8), c: c3, cv: c }
     }
 }
 
@@ -168,14 +227,12 @@ fn affine(fmt: Format, l: &Matrix3<f64>, t: &Vector3<f64>) -> Affine {
 /// of the unit normals by (largest `plane . b`; among coplanar triangles of one face, one
 /// whose lambdas are >= 0), and its lambdas clamped to >= 0 (the clamping residual is padded).
 fn best_cone(n: &DopNormals, b: &Vector3<f64>) -> ([usize; 3], [f64; 3]) {
-    let score: Vec<f64> = n.hull.iter().map(|t| t.plane.dot(b)).collect();
-    let top = score.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+    let top = n.hull.iter().map(|t| t.plane.dot(b)).fold(f64::NEG_INFINITY, f64::max);
     let (t, l) = n
         .hull
         .iter()
-        .zip(&score)
-        .filter(|(_, &s)| s >= top - 1e-12 * top.abs())
-        .map(|(t, _)| (t, t.inv * b))
+        .filter(|t| t.plane.dot(b) >= top - 1e-12 * top.abs())
+        .map(|t| (t, t.inv * b))
         .max_by(|x, y| x.1.min().total_cmp(&y.1.min()))
         .expect("the hull is not empty");
     debug_assert!(l.min() >= -1e-12 * b.norm(), "direction {b:?} outside its cone: {l:?}");

@@ -6,6 +6,7 @@
 //! |---|---|
 //! | [`host`] | the host's setup per pose (DATE'05 Eq. 6, WSCG'03 Eq. 3) |
 //! | [`certificate`] | T.CHECK's certificate constants |
+//! | [`enclosure`] | f64 upper bounds of the certificate's rounded values; the check mode of the fast paths |
 //! | [`memory`] | the memory image: node and triangle words, A's triangle cache |
 //! | [`doptrf`] | the DOPTRF lane (DATE'05 Eq. 10) |
 //! | [`klmsel`] | D.KLMSEL, the lanes' operand selection |
@@ -18,6 +19,7 @@ pub mod certificate;
 pub mod d_cntr;
 pub mod dop_unit;
 pub mod doptrf;
+pub mod enclosure;
 pub mod host;
 pub mod klmsel;
 pub mod memory;

@@ -35,6 +35,7 @@
 //! triangle has no M_B: that direction is unknown.
 
 use super::certificate::Certificate;
+use super::enclosure::Upper;
 use super::host::Affine;
 use crate::format::{Format, Rounding};
 use super::memory::TriWord;
@@ -57,6 +58,17 @@ fn dot(f: Format, r: Rounding, a: [f64; 3], b: [f64; 3], c: Option<f64>) -> f64 
 #[inline(always)]
 fn dot_mag(f: Format, a: [f64; 3], b: [f64; 3], c: Option<f64>) -> f64 {
     dot(f, UP, a.map(f64::abs), b.map(f64::abs), c.map(f64::abs))
+}
+
+/// [`dot_mag`] enclosed from above ([`Upper`]): operands already non-negative.
+#[inline(always)]
+fn dot_hi(up: &Upper, a: [f64; 3], b: [f64; 3], c: Option<f64>) -> f64 {
+    let p = |k: usize| up.mul(a[k], b[k]);
+    let s01 = up.add(p(0), p(1));
+    match c {
+        None => up.add(s01, p(2)),
+        Some(c) => up.add(s01, up.add(p(2), c)),
+    }
 }
 
 /// The sign of a value with bound `bound`: surely positive (`x > bound`), surely negative
@@ -101,6 +113,126 @@ pub fn stage1(f: Format, r: Rounding, leaf: &TriWord, frame: &Affine, beta: [f64
     }
     let a_err = f.add(f.mul(leaf.alpha_m, beta[0], UP), f.mul(leaf.alpha_f, beta[1], UP), UP);
     Stage1 { mb, mag, a_err, scale }
+}
+
+/// Stage 1 for [`decide`]: M_b as the chip computes it, and upper enclosures ([`Upper`]) of
+/// its magnitude and of A'. `fits`: every enclosure and value is below the format's
+/// largest finite value (else nothing is proven).
+#[derive(Clone, Copy, Debug)]
+pub struct Stage1Hi {
+    pub mb: Affine,
+    pub mag: Affine,
+    pub a_err: f64,
+    pub scale: f64,
+    pub fits: bool,
+}
+
+/// [`stage1`] with the magnitudes enclosed instead of rounded.
+pub fn stage1_hi(f: Format, r: Rounding, up: &Upper, leaf: &TriWord, frame: &Affine, beta: [f64; 2], scale: f64) -> Stage1Hi {
+    let m = &leaf.m;
+    let (mut mb, mut mag, mut fits) = ([[0.0; 4]; 3], [[0.0; 4]; 3], true);
+    for i in 0..3 {
+        for j in 0..4 {
+            let col = [frame[0][j], frame[1][j], frame[2][j]];
+            let row = [m[i][0], m[i][1], m[i][2]];
+            let c = (j == 3).then_some(m[i][3]);
+            mb[i][j] = dot(f, r, row, col, c);
+            mag[i][j] = dot_hi(up, row.map(f64::abs), col.map(f64::abs), c.map(f64::abs));
+            fits &= up.fits(mb[i][j]) & up.fits(mag[i][j]);
+        }
+    }
+    let a_err = up.add(up.mul(leaf.alpha_m, beta[0]), up.mul(leaf.alpha_f, beta[1]));
+    Stage1Hi { mb, mag, a_err, scale, fits: fits & up.fits(a_err) }
+}
+
+/// Coordinate i of a mapped vertex p (|p| = `pa`) as the chip computes it, and its
+/// magnitude enclosed, with the input errors `err` = A' L1(p).
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+fn coordinate(f: Format, r: Rounding, up: &Upper, s1: &Stage1Hi, p: [f64; 3], pa: [f64; 3], i: usize, err: f64) -> (f64, f64) {
+    let (mb, mag) = (&s1.mb[i], &s1.mag[i]);
+    let v = dot(f, r, [mb[0], mb[1], mb[2]], p, Some(mb[3]));
+    (v, dot_hi(up, [mag[0], mag[1], mag[2]], pa, Some(up.add(mag[3], err))))
+}
+
+/// T.CHECK's verdict decided with the chip's values and upper enclosures of its bounds
+/// (docs/ACCURACY.md, "Deciding T.CHECK in f64"): `Some` only where it equals
+/// `edges(..).result()` of the same inputs, `None` where the enclosure cannot tell (the
+/// caller then takes the bit-exact path). A sign is sure when the value lies beyond the
+/// enclosure of its bound (then beyond the chip's bound too), otherwise taken as unknown;
+/// Kleene logic is monotone (an unknown input that becomes known never changes a decided
+/// output), so a decided verdict is the chip's.
+pub fn decide(f: Format, r: Rounding, cert: &Certificate, up: &Upper, s1: &Stage1Hi, tri: &TriWord) -> Option<bool> {
+    let x = tri.v_exact as usize;
+    let mut fits = s1.fits;
+    let (mut v, mut m, mut e1) = ([[0.0; 3]; 3], [[0.0; 3]; 3], [[0.0; 3]; 3]);
+    let (mut err, mut ez, mut g, mut h) = ([0.0; 3], [0.0; 3], [0.0; 3], [0.0; 3]);
+    let pa = tri.v.map(|p| p.map(f64::abs));
+    // The bounds in the order of `edges_in`, each operation enclosed; z first: a vertex
+    // triangle surely on one side of the plane needs nothing else.
+    let coordinate = |k: usize, i: usize, err: f64| coordinate(f, r, up, s1, tri.v[k], pa[k], i, err);
+    for k in 0..3 {
+        let l1 = up.add(up.add(pa[k][0], pa[k][1]), up.add(pa[k][2], s1.scale));
+        err[k] = up.mul(s1.a_err, l1);
+        (v[k][2], m[k][2]) = coordinate(k, 2, err[k]);
+        ez[k] = up.scale(m[k][2], cert.c_e[x]);
+        fits &= up.fits(l1) & up.fits(v[k][2]) & up.fits(m[k][2]) & up.fits(ez[k]);
+    }
+    if !fits {
+        return None;
+    }
+    let sz = [0, 1, 2].map(|k| sign(v[k][2], ez[k]));
+    if sz[0].is_some() && sz[0] == sz[1] && sz[1] == sz[2] {
+        return Some(false);
+    }
+    for k in 0..3 {
+        for i in 0..2 {
+            (v[k][i], m[k][i]) = coordinate(k, i, err[k]);
+        }
+        for i in 0..3 {
+            e1[k][i] = up.scale(m[k][i], if i < 2 { cert.c_e[x] } else { cert.c_z[x] });
+            fits &= up.fits(v[k][i]) & up.fits(m[k][i]) & up.fits(e1[k][i]);
+        }
+        g[k] = up.add(ez[k], up.scale(v[k][2].abs(), cert.c_s));
+        h[k] = up.add(v[k][2].abs(), 2.0 * ez[k]);
+        fits &= up.fits(g[k]) & up.fits(h[k]);
+    }
+    if !fits {
+        return None;
+    }
+    let up_signs = [false, true, true, true, true, false];
+    let down_signs = [true, false, false, false, false, true];
+    let mut verdict = Some(false);
+    for e in 0..3 {
+        let (p, q) = (e, (e + 1) % 3);
+        let (sp, sq) = (sz[p], sz[q]);
+        if sp.is_some() && sp == sq {
+            continue;
+        }
+        let cross = |i: usize| {
+            let x = f.sub(f.mul(v[p][i], v[q][2], r), f.mul(v[q][i], v[p][2], r), r);
+            let pq = up.add(up.mul(e1[p][i], h[q]), up.mul(v[p][i].abs(), g[q]));
+            let qp = up.add(up.mul(e1[q][i], h[p]), up.mul(v[q][i].abs(), g[p]));
+            (x, up.add(pq, qp))
+        };
+        let (a, a_bound) = cross(0);
+        let (b, b_bound) = cross(1);
+        let rz = f.sub(v[q][2], v[p][2], r);
+        let rz_bound = up.add(e1[q][2], e1[p][2]);
+        let s = f.sub(f.add(a, b, r), rz, r);
+        let s_sum = up.add(up.add(a.abs(), b.abs()), rz.abs());
+        let s_bound = up.add(up.add(a_bound, b_bound), up.add(rz_bound, up.scale(s_sum, cert.c_s)));
+        if !(up.fits(a) & up.fits(b) & up.fits(rz) & up.fits(s) & up.fits(s_sum) & up.fits(s_bound)) {
+            return None;
+        }
+        let signs = [sp, sq, sign(rz, rz_bound), sign(a, a_bound), sign(b, b_bound), sign(s, s_bound)];
+        let holds = |want: [bool; 6]| and3(signs.iter().zip(want).map(|(s, w)| s.map(|s| s == w)));
+        verdict = or3([verdict, holds(up_signs), holds(down_signs)].into_iter());
+        if verdict == Some(true) {
+            break;
+        }
+    }
+    verdict
 }
 
 /// Every intermediate of one T.CHECK that the RTL shows, for bit-exact comparison.

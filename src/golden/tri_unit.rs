@@ -2,9 +2,10 @@
 //! U(A), combined in Kleene logic into intersecting, separate or uncertain.
 
 use super::certificate::Certificate;
+use super::enclosure::{checking, Upper};
 use super::host::HostSetup;
 use super::memory::TriWord;
-use super::tcheck::{edges, edges_in, or3, stage1, Stage1};
+use super::tcheck::{decide, edges, edges_in, or3, stage1, stage1_hi, Stage1, Stage1Hi};
 use crate::format::{Format, Rounding};
 
 /// Intersecting (surely), separate (surely), or uncertain.
@@ -35,40 +36,57 @@ pub fn tri_unit(f: Format, r: Rounding, a: &TriWord, b: &TriWord, setup: &HostSe
     TriResult::of(d1.flatten(), d2.flatten())
 }
 
-/// TRI_UNIT during one query: the same results as [`tri_unit`] bit for bit (tested),
-/// faster: stage 1 depends on one leaf and the pose only and is kept per leaf, and an edge
+/// TRI_UNIT during one query: the same results as [`tri_unit`] bit for bit (tested, and
+/// checked at every test in check mode, [`checking`]), faster: stage 1 depends on one leaf
+/// and the pose only and is kept per leaf; each direction is decided with the enclosure of
+/// the certificate's bounds ([`decide`]) where it can be, else bit for bit, where an edge
 /// whose ends are surely on one side is not computed further.
 pub struct TriUnit<'a> {
     f: Format,
     r: Rounding,
     cert: Certificate,
+    up: Upper,
     setup: &'a HostSetup,
     /// Per triangle of B: M_B(b) . M_AB; per triangle of A: M_A(a) . M_BA.
     mb_b: StageOneCache,
     mb_a: StageOneCache,
 }
 
+/// Stage 1 of one leaf: enclosed always, bit for bit once the enclosure failed to decide.
+struct Leaf {
+    hi: Stage1Hi,
+    exact: Option<Box<Stage1>>,
+}
+
+/// Per triangle, its slot in `values` (the table of one word per triangle is allocated at
+/// the first leaf pair, so that a query ending above the leaves does not pay for it).
 struct StageOneCache {
+    n: usize,
     slot: Vec<u32>,
-    values: Vec<Stage1>,
+    values: Vec<Leaf>,
 }
 
 impl StageOneCache {
-    fn get(&mut self, t: u32, compute: impl FnOnce() -> Stage1) -> &Stage1 {
+    fn get(&mut self, t: u32, compute: impl FnOnce() -> Stage1Hi) -> &mut Leaf {
+        if self.slot.is_empty() {
+            self.slot = vec![u32::MAX; self.n];
+            self.values.reserve(64);
+        }
         let mut s = self.slot[t as usize];
         if s == u32::MAX {
             s = self.values.len() as u32;
             self.slot[t as usize] = s;
-            self.values.push(compute());
+            self.values.push(Leaf { hi: compute(), exact: None });
         }
-        &self.values[s as usize]
+        &mut self.values[s as usize]
     }
 }
 
 impl<'a> TriUnit<'a> {
     pub fn new(f: Format, r: Rounding, setup: &'a HostSetup, tris_a: usize, tris_b: usize) -> Self {
-        let cache = |n| StageOneCache { slot: vec![u32::MAX; n], values: vec![] };
-        TriUnit { f, r, cert: Certificate::new(f, r), setup, mb_b: cache(tris_b), mb_a: cache(tris_a) }
+        let cache = |n| StageOneCache { n, slot: vec![], values: vec![] };
+        let (cert, up) = (Certificate::new(f, r), Upper::new(f));
+        TriUnit { f, r, cert, up, setup, mb_b: cache(tris_b), mb_a: cache(tris_a) }
     }
 
     /// Triangle `ta` of A (word `a`) against `tb` of B (word `b`). A sure hit in the first
@@ -85,10 +103,19 @@ impl<'a> TriUnit<'a> {
     /// One T.CHECK: the edges of `v` against the unit triangle of `leaf` (triangle `t` of B
     /// when `ab`, else of A).
     fn direction(&mut self, t: u32, leaf: &TriWord, v: &TriWord, ab: bool) -> Option<bool> {
-        let (f, r, setup) = (self.f, self.r, self.setup);
+        let (f, r, up, setup) = (self.f, self.r, self.up, self.setup);
         let (frame, beta, scale) = setup.tri_frame(ab);
         let cache = if ab { &mut self.mb_b } else { &mut self.mb_a };
-        let s1 = cache.get(t, || stage1(f, r, leaf, frame, beta, scale));
-        edges_in(f, r, &self.cert, s1, v, false).result()
+        let s1 = cache.get(t, || stage1_hi(f, r, &up, leaf, frame, beta, scale));
+        let fast = decide(f, r, &self.cert, &up, &s1.hi, v);
+        if fast.is_some() && !checking() {
+            return fast;
+        }
+        let exact = s1.exact.get_or_insert_with(|| Box::new(stage1(f, r, leaf, frame, beta, scale)));
+        let want = edges_in(f, r, &self.cert, exact, v, false).result();
+        if fast.is_some() {
+            assert_eq!(fast, want, "check mode: T.CHECK's enclosure decided {fast:?}, the bit-exact path {want:?}: leaf {leaf:?}, triangle {v:?}, {}", if ab { "M_AB" } else { "M_BA" });
+        }
+        want
     }
 }

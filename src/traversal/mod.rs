@@ -19,7 +19,7 @@ use crate::chip::layout::Layout;
 use crate::chip::reg::{Mode, Order};
 use crate::dop::tree::Tri;
 use crate::dop::Node;
-use crate::golden::host::HostSetup;
+use crate::golden::host::{DopLanes, HostSetup};
 use crate::golden::memory::{ObjectImage, TriCache};
 use crate::golden::{d_cntr, dop_unit, tri_unit};
 use crate::oracle;
@@ -195,12 +195,15 @@ impl<'a> Engine<'a> {
     }
 }
 
-/// Runs one query on the golden model.
+/// Runs one query on the golden model: `setup` holds TRI_UNIT's part of the host setup
+/// ([`HostSetup::frames`]), and the DOP unit computes its lanes from `lanes` when it needs them.
+#[allow(clippy::too_many_arguments)]
 pub fn run(
     cfg: &ChipConfig,
     a: &ObjectImage,
     b: &ObjectImage,
     setup: &HostSetup,
+    lanes: DopLanes,
     host: &Host,
     mode: Mode,
     traversal: Traversal,
@@ -216,14 +219,14 @@ pub fn run(
         pairs: vec![],
         uncertain: vec![],
         live: 0,
-        dop_unit: match dop_unit::TransformCache::new(cfg.format.dop, cfg.dop_rounding.op(), setup, b.tree.len()) {
-            c if traversal == Traversal::Recursive => c.without_memo(),
-            c => c,
-        },
+        dop_unit: dop_unit::TransformCache::lazy(cfg.format.dop, cfg.dop_rounding.op(), setup, lanes, b.tree.len()),
         tri_unit: tri_unit::TriUnit::new(cfg.format.tri, cfg.tri_rounding, setup, a.tris.len(), b.tris.len()),
         counters: Counters::default(),
         stop: false,
     };
+    if traversal == Traversal::Recursive {
+        e.dop_unit.forget_rows();
+    }
     match traversal {
         Traversal::Recursive => recursive::run(&mut e),
         Traversal::List => list::run(&mut e),

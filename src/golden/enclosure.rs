@@ -1,0 +1,77 @@
+//! A proven upper enclosure, in f64, of the chip's upward-rounded arithmetic on non-negative
+//! operands (T.CHECK's certificate, DATE'05 §4.2; docs/ACCURACY.md, "Deciding T.CHECK in
+//! f64"), so that software decides most signs without rounding every bound bit for bit,
+//! and the switch that checks every such decision against the bit-exact path.
+//!
+//! Per operation: for x, y >= 0 and w = x + y or x y, the chip's `round_up(w)` is at most
+//! `w (1 + 2^-F) + q` below overflow (q the smallest subnormal), and `FpScale`'s floor
+//! `max(., 2^emin)` adds at most 2^emin. [`Upper::up`] evaluates `fl(fl(w) K) + Q` with
+//! `K = 1 + 2^-F + 2^-49` and `Q = 2^(emin+1)`, which is at least that even after its own
+//! three f64 roundings (each at most a factor 1 - 2^-53): by induction over the operations,
+//! an enclosed value is at least the chip's. An enclosure at or above the format's largest
+//! finite value proves nothing (the chip may have overflowed): [`Upper::fits`] says whether
+//! every enclosed value stayed below it.
+
+use crate::format::{Format, ScaleConst};
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::OnceLock;
+
+/// Upper bounds of upward-rounded operations of one format.
+#[derive(Clone, Copy, Debug)]
+pub struct Upper {
+    k: f64,
+    q: f64,
+    limit: f64,
+}
+
+impl Upper {
+    pub fn new(f: Format) -> Upper {
+        let p2 = |e: i32| 2f64.powi(e);
+        Upper { k: 1.0 + p2(-(f.frac_bits() as i32)) + p2(-49), q: 2.0 * f.min_positive_normal(), limit: f.max_finite() }
+    }
+
+    /// An upper bound of the chip's `round_up(w)` from the f64 `w` of enclosed operands.
+    #[inline(always)]
+    pub fn up(&self, w: f64) -> f64 {
+        w * self.k + self.q
+    }
+
+    #[inline(always)]
+    pub fn add(&self, x: f64, y: f64) -> f64 {
+        self.up(x + y)
+    }
+
+    #[inline(always)]
+    pub fn mul(&self, x: f64, y: f64) -> f64 {
+        self.up(x * y)
+    }
+
+    /// [`Format::scale_up`]: c's value is an exact f64 (at most F + 3 significant bits).
+    #[inline(always)]
+    pub fn scale(&self, x: f64, c: ScaleConst) -> f64 {
+        self.up(x * c.value())
+    }
+
+    /// Whether `x` (an enclosure, or a chip value) is below the largest finite value: false
+    /// for infinities and NaN too.
+    #[inline(always)]
+    pub fn fits(&self, x: f64) -> bool {
+        x.abs() < self.limit
+    }
+}
+
+static FORCED: AtomicBool = AtomicBool::new(false);
+
+/// Check mode: every decision of a fast path (the DOP unit's f64 estimate, T.CHECK's
+/// enclosure) is compared with the bit-exact path, and a difference panics. On when the
+/// environment variable `CCHIP_CHECK_FAST` is `1`, or after [`force_check`].
+#[inline]
+pub fn checking() -> bool {
+    static ENV: OnceLock<bool> = OnceLock::new();
+    FORCED.load(Ordering::Relaxed) || *ENV.get_or_init(|| std::env::var("CCHIP_CHECK_FAST").is_ok_and(|v| v == "1"))
+}
+
+/// Turns check mode on for the rest of the process (tests).
+pub fn force_check() {
+    FORCED.store(true, Ordering::Relaxed);
+}

@@ -1,0 +1,74 @@
+//! Check mode (issue 36): the golden model's fast paths (the DOP unit's f64 estimate,
+//! T.CHECK decided with the enclosure of its certificate, docs/ACCURACY.md) run beside the
+//! bit-exact path, and every decision is compared (a difference panics inside the query).
+//! Run on random soups, the vendored meshes and the hard-case catalogue, in binary32, the
+//! reduced format and e5m4, both DOP roundings, every traversal.
+
+use collision_chip::chip::config::{ChipConfig, DopRounding, SUPPORTED_K};
+use collision_chip::chip::reg::Mode;
+use collision_chip::format::Format;
+use collision_chip::golden::enclosure::force_check;
+use collision_chip::mesh;
+use collision_chip::pose::{sweep_poses, Pose, Sweep};
+use collision_chip::query::Chip;
+use collision_chip::traversal::Traversal;
+use proptest::prelude::*;
+
+fn formats() -> [Format; 3] {
+    [Format::BINARY32, Format::REDUCED, Format::new(5, 4).unwrap()]
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 96, .. ProptestConfig::default() })]
+
+    #[test]
+    fn fast_paths_equal_the_bit_exact_path_on_soups(
+        seed in 0u64..10_000, n in 1usize..40,
+        rot in prop::array::uniform3(-180.0..180.0f64), t in prop::array::uniform3(-0.6..0.6f64),
+        k in prop::sample::select(SUPPORTED_K.to_vec()), format in 0usize..3, outward in any::<bool>(),
+        traversal in prop::sample::select(Traversal::ALL.to_vec()),
+    ) {
+        force_check();
+        let cfg = ChipConfig {
+            k,
+            format: formats()[format].into(),
+            dop_rounding: if outward { DopRounding::Outward } else { DopRounding::NearestEven },
+            ..Default::default()
+        };
+        let (a, b) = (mesh::soup(n, seed).triangles_f64(), mesh::soup(n, seed + 1).triangles_f64());
+        let chip = Chip::new(&a, &b, cfg).unwrap();
+        chip.query(&Pose { rot_deg: rot, t }, Mode::All, traversal);
+    }
+}
+
+#[test]
+fn fast_paths_equal_the_bit_exact_path_on_meshes() {
+    force_check();
+    let poses = sweep_poses(&Sweep { distances: vec![2.2, 1.4, 1.0, 0.6], orientations: 2, seed: 3 }).unwrap();
+    for name in ["bunny", "teapot", "dragon-11k"] {
+        let tris = mesh::resolve(name).unwrap().scaled_into_unit_cube().unwrap().triangles_f64();
+        for format in formats() {
+            let chip = Chip::new(&tris, &tris, ChipConfig { format: format.into(), ..Default::default() }).unwrap();
+            for sp in &poses {
+                chip.query(&sp.pose, Mode::All, Traversal::Lifo);
+            }
+        }
+    }
+}
+
+#[test]
+fn fast_paths_equal_the_bit_exact_path_on_hard_cases() {
+    force_check();
+    let moves = [Pose::new(13.0, -71.0, 33.0, 0.0, 0.0, 0.0), Pose::new(90.0, 0.0, 0.0, 0.0, 0.0, 0.0)];
+    for case in collision_chip::hard_cases::load_catalogue().unwrap() {
+        let cases = [case.clone(), case.moved_by(&moves[0]), case.moved_by(&moves[1])];
+        for c in &cases {
+            for format in formats() {
+                let chip = Chip::new(&c.a, &c.b, ChipConfig { format: format.into(), ..Default::default() }).unwrap();
+                for traversal in Traversal::ALL {
+                    chip.query(&c.pose, Mode::All, traversal);
+                }
+            }
+        }
+    }
+}
