@@ -103,3 +103,17 @@ fn reuse_distance_of_node_records() {
         }
     }
 }
+
+/// The papers' presets lay the image out for the bus and hold 16 node records per object;
+/// the RTL's keeps the words and one; a scene's key overrides its preset's.
+#[test]
+fn presets_lay_out_for_the_bus() {
+    let (d, r) = (Preset::Date05.chip(), Preset::Rtl.chip());
+    assert_eq!((d.layout, d.node_cache, Preset::Wscg03.chip().layout), (MemLayout::Records, 16, MemLayout::Records));
+    assert_eq!((r.layout, r.node_cache), (MemLayout::Words, 1));
+    let text = "[objects]\na = \"sphere:8\"\nb = \"sphere:8\"\n[chip]\npreset = \"date05\"\nlayout = \"words\"\n[[pose]]\nrot_deg = [0, 0, 0]\nt = [0, 0, 0]\n";
+    let s = Scene::parse(text, "s").unwrap();
+    assert_eq!((s.cfg.layout, s.cfg.node_cache), (MemLayout::Words, 16));
+    let e = Scene::parse(&text.replace("\"words\"", "\"pairs\""), "s").unwrap_err();
+    assert!(e.contains("s:6") && e.contains("`words` or `records`"), "{e}");
+}
