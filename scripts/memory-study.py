@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """The chip's throughput under each memory model (docs/ARCHITECTURE.md, "Throughput by memory
 model"): DOP tests, triangle tests and memory words per clock, where the clocks went, page
-hits and bank conflicts, on the default sweep of each mesh.
+hits, misses and bank conflicts, the bus's busy share (clocks carrying data / clocks) and the
+node and triangle words (records) per query, on the default sweep of each mesh.
 
 For every mesh and memory model it writes a scene (vectors/scenes/default.toml's sweep and
 chip: k = 24, binary32, outward DOP rounding, LIFO, all pairs; `[memory]` set to the model), runs
@@ -30,12 +31,13 @@ import tempfile
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
-# name, [memory] table, what it stands for
+# name, [memory] table, what it stands for, clocks the bus takes per memory word (one burst:
+# a k = 24 binary32 node word or record fits one burst of either DDR)
 MODELS = [
-    ("ideal, latency 1", 'model = "ideal"\nlatency = 1\ninterval = 1', "a word every clock, one clock after the request"),
-    ("ideal, latency 8", 'model = "ideal"\nlatency = 8\ninterval = 1', "a request every clock, the word 8 clocks later"),
-    ("DDR wscg03", 'model = "ddr"\npreset = "wscg03"', "WSCG'03: 4 banks, 4 KiB pages, 256-bit bus, hit 8, miss 20"),
-    ("DDR date05", 'model = "ddr"\npreset = "date05"', "DATE'05's 756-bit DDR2 bus (banks, pages, timings assumed)"),
+    ("ideal, latency 1", 'model = "ideal"\nlatency = 1\ninterval = 1', "a word every clock, one clock after the request", 1),
+    ("ideal, latency 8", 'model = "ideal"\nlatency = 8\ninterval = 1', "a request every clock, the word 8 clocks later", 1),
+    ("DDR wscg03", 'model = "ddr"\npreset = "wscg03"', "WSCG'03: 4 banks, 4 KiB pages, 256-bit bus, hit 8, miss 20", 8),
+    ("DDR date05", 'model = "ddr"\npreset = "date05"', "DATE'05's 756-bit DDR2 bus (banks, pages, timings assumed)", 4),
 ]
 
 DEFAULT = os.path.join(ROOT, "vectors", "scenes", "default.toml")
@@ -62,7 +64,7 @@ def run(cmd, scene):
     return json.loads(out.stdout)
 
 
-def row(mesh, name, records):
+def row(mesh, name, records, bus_clocks):
     c = [r["cycles"] for r in records if r.get("cycles") and r["cycles"]["dop_tests"] > 1]
     if not c:
         return f"| {mesh} | {name} | no overlapping pose |"
@@ -80,7 +82,8 @@ def row(mesh, name, records):
         f"{sum(x['tri_tests'] for x in c) / clocks:.3f} | {words / clocks:.3f} | {100 * st('issue') / clocks:.1f} | "
         f"{100 * st('stall_memory') / clocks:.1f} | {100 * st('stall_spacing') / clocks:.1f} | "
         f"{100 * (st('stall_credit') + st('back_pressure')) / clocks:.1f} | {mem('bytes') / len(c) / 1024:,.0f} | "
-        f"{page_hit} | {mem('bank_conflicts')} | {a_hit} |"
+        f"{page_hit} | {mem('page_misses')} | {mem('bank_conflicts')} | {a_hit} | {100 * words * bus_clocks / clocks:.0f}% | "
+        f"{mem('node_words') / len(c):,.0f} | {mem('tri_words') / len(c):,.0f} |"
     )
 
 
@@ -94,18 +97,19 @@ def main():
     a = ap.parse_args()
     cmd = [a.cchip] if a.cchip else ["cargo", "run", "--release", "-q", "--"]
     print("| mesh | memory | poses | clocks | DOP tests/clock | tri tests/clock | words/clock | issue% | memory% "
-          "| spacing% | credit+bkpres% | KiB/query | page hits | bank conflicts | A tri hits |")
-    print("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+          "| spacing% | credit+bkpres% | KiB/query | page hits | page misses | bank conflicts | A tri hits | bus busy | node words/query "
+          "| tri words/query |")
+    print("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
     with tempfile.TemporaryDirectory() as tmp:
         for mesh in a.meshes:
-            for name, memory, _ in MODELS:
+            for name, memory, _, bus_clocks in MODELS:
                 path = os.path.join(tmp, f"{mesh}-{name.replace(' ', '').replace(',', '-')}.toml")
                 with open(path, "w") as f:
                     lines = lambda t: "\n".join(x.strip() for x in t.split(","))
                     f.write(scene(mesh, a.orientations, lines(a.timing), memory, lines(a.chip) if a.chip else ""))
-                print(row(mesh, name, run(cmd, path)), flush=True)
+                print(row(mesh, name, run(cmd, path), bus_clocks), flush=True)
     print()
-    for name, _, what in MODELS:
+    for name, _, what, _ in MODELS:
         print(f"- {name}: {what}")
 
 

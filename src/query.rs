@@ -80,9 +80,16 @@ impl Chip {
         crate::golden::memory::image_bases(&self.a, &self.b)
     }
 
-    /// Words in the memory image (nodes and triangles of both objects).
+    /// Records in the memory image (node records and triangles of both objects).
     pub fn image_words(&self) -> u32 {
         self.image_bases()[crate::chip::layout::Dst::TriB as usize] + self.b.tris.len() as u32
+    }
+
+    /// Word addresses the memory image spans on `memory` (its records as
+    /// [`RecordMap`](crate::chip::layout::RecordMap) places them).
+    pub fn image_span(&self, memory: &crate::chip::memory::Memory) -> u32 {
+        let records = [self.a.node_records(), self.b.node_records(), self.a.tris.len() as u32, self.b.tris.len() as u32];
+        crate::chip::layout::RecordMap::new(&self.layout, memory).extent(records)
     }
 
     /// The register writes that start a query in `order` and `mode` on the port of `p`

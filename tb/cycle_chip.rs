@@ -10,6 +10,7 @@
 //! each into vectors/chip/ only if Verilator's trace equals it.
 
 use collision_chip::chip::config::{ChipConfig, DopRounding, Formats};
+use collision_chip::chip::config::MemLayout;
 use collision_chip::chip::memory::{Ddr, MemTiming, Memory};
 use collision_chip::chip::params::Params;
 use collision_chip::chip::probes::PROBES;
@@ -109,8 +110,8 @@ fn large_queries_cover_what_they_claim() {
 }
 
 /// A configuration to run: k, the DOP and T.CHECK formats (binary32 or e8m15 each), DOP
-/// rounding, the triangle cache's lines.
-fn config(k: usize, dop_binary32: bool, tri_binary32: bool, outward: bool, tri_cache: u32) -> ChipConfig {
+/// rounding, the triangle cache's lines, the memory layout and node records held.
+fn config(k: usize, dop_binary32: bool, tri_binary32: bool, outward: bool, tri_cache: u32, (records, node_cache): (bool, u32)) -> ChipConfig {
     let f = |b32| if b32 { Format::BINARY32 } else { Format::REDUCED };
     ChipConfig {
         k,
@@ -118,6 +119,8 @@ fn config(k: usize, dop_binary32: bool, tri_binary32: bool, outward: bool, tri_c
         dop_rounding: if outward { DopRounding::Outward } else { DopRounding::NearestEven },
         tri_rounding: Rounding::NearestEven,
         tri_cache,
+        layout: if records { MemLayout::Records } else { MemLayout::Words },
+        node_cache,
     }
 }
 
@@ -126,7 +129,7 @@ fn config(k: usize, dop_binary32: bool, tri_binary32: bool, outward: bool, tri_c
 fn memory() -> impl Strategy<Value = Memory> {
     prop_oneof![
         (1u32..=6, 1u32..=3, prop::option::of(16u32..=1024)).prop_map(|(latency, interval, bus_bits)| Memory::Ideal(MemTiming { latency, interval, bus_bits })),
-        (1u32..=4, 6u32..=12, 5u32..=8, 0u32..=3, 0u32..=4, 0u32..=12).prop_map(|(banks, page, bus, burst, hit, miss)| {
+        (1u32..=8, 6u32..=12, 5u32..=8, 0u32..=3, 0u32..=4, 0u32..=12).prop_map(|(banks, page, bus, burst, hit, miss)| {
             let burst = 1 << burst;
             Memory::Ddr(Ddr { banks, page_bytes: 1 << page, bus_bits: 1 << bus, burst, hit: burst + hit, miss: burst + hit + miss })
         }),
@@ -158,7 +161,7 @@ fn run(chip: &Chip, pose: &Pose, lifo: bool, mode: Mode, p: Params, reader: Read
     }
     let setup = chip.setup(pose);
     let mut c = CycleChip::new(&chip.cfg, p, &chip.a, &chip.b, &setup, true)?;
-    let d = Drive { memory: p.memory, word_bits: chip.layout.word_bits(), reader, words: chip.image_words(), max_cycles: MAX_CYCLES };
+    let d = Drive { memory: p.memory, word_bits: chip.layout.word_bits(), reader, words: chip.image_span(&p.memory), max_cycles: MAX_CYCLES };
     run_query(&mut c, &chip.control_writes(order(lifo), mode, &p), &d, true, |_, p| {
         assert_eq!(p.map(|v| v.len()), Some(PROBES.len()));
         Ok(())
@@ -175,6 +178,7 @@ proptest! {
     /// each level's triangle cache on its own leaf-pair order), the same with idle
     /// stretches skipped as clock by clock, and every running clock is booked to exactly
     /// one cause. A cache with a line for each of A's triangles fetches each at most once.
+    /// Either memory layout, 1 to 16 node records held.
     #[test]
     fn any_configuration_answers_as_golden(
         k in prop::sample::select(vec![6usize, 14, 18, 24, 26]), dop_b32: bool, tri_b32: bool, outward: bool,
@@ -182,8 +186,9 @@ proptest! {
         na in 4usize..=120, nb in 4usize..=120, sa: u64, sb: u64,
         rot in prop::array::uniform3(0.0f64..360.0), t in prop::array::uniform3(-0.4f64..0.4),
         lifo: bool, first: bool, p in params(), period in 1u32..=12,
+        layout in (any::<bool>(), prop::sample::select(vec![1u32, 1, 3, 16])),
     ) {
-        let chip = Chip::new(&soup(na, sa).triangles_f64(), &soup(nb, sb).triangles_f64(), config(k, dop_b32, tri_b32, outward, tri_cache)).unwrap();
+        let chip = Chip::new(&soup(na, sa).triangles_f64(), &soup(nb, sb).triangles_f64(), config(k, dop_b32, tri_b32, outward, tri_cache, layout)).unwrap();
         let pose = Pose::new(rot[0], rot[1], rot[2], t[0], t[1], t[2]);
         let mode = if first { Mode::First } else { Mode::All };
         let golden = chip.query(&pose, Mode::All, if lifo { Traversal::Lifo } else { Traversal::Fifo });

@@ -8,6 +8,8 @@ use serde::{Deserialize, Serialize};
 pub const SUPPORTED_K: [usize; 5] = [6, 14, 18, 24, 26];
 /// Lines of A's triangle cache at most: WSCG'03 assumes 128 (11 KB at binary32).
 pub const TRI_CACHE_MAX_LINES: u32 = 1024;
+/// Node records held per object at most.
+pub const NODE_CACHE_MAX_LINES: u32 = 256;
 
 /// How the DOP datapath and the host round (DESIGN.md 1.1, 3).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
@@ -105,6 +107,22 @@ impl From<Formats> for String {
     }
 }
 
+/// How the memory image is laid out (a scene's `[chip] layout`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum MemLayout {
+    /// One node word per record, pre-order; a memory word is the wider of a node word and a
+    /// triangle word, addresses in order. The RTL chips' layout and the `rtl` preset's.
+    #[default]
+    Words,
+    /// Laid out for the bus (WSCG'03 §4.3 stores a node pair per 256-byte burst): the root
+    /// alone, then the two children of every inner node in one record ([`sibling_records`](super::layout::sibling_records):
+    /// D_CNTR tests both children of a pair next to each other); a memory word of a power of
+    /// two bytes holds a node pair or one triangle word; on DDR the records are spread over
+    /// the banks ([`RecordMap`](super::layout::RecordMap)). The papers' presets'.
+    Records,
+}
+
 /// A query's chip configuration. Scenes (`[chip]`) and the CLI (`--k`, `--format`, ...) read
 /// it directly, each key optional ([`Default`]: the papers' chip), and
 /// [`check`](ChipConfig::check) it once.
@@ -128,6 +146,15 @@ pub struct ChipConfig {
     /// 128); 1: the single word held, as for B's and in the RTL chips' reset state.
     #[arg(long, default_value_t = ChipConfig::default().tri_cache)]
     pub tri_cache: u32,
+    /// The memory image's layout: `words` (a node word per record, the RTL chips') or
+    /// `records` (sibling nodes in one record, records spread over DDR banks; scenes and
+    /// presets only).
+    #[arg(skip = ChipConfig::default().layout)]
+    pub layout: MemLayout,
+    /// Node records held per object for the DOP unit, least recently used replaced
+    /// (`golden::memory::NodeCache`); 1: the previous pair's, as in the RTL chips.
+    #[arg(long, default_value_t = ChipConfig::default().node_cache)]
+    pub node_cache: u32,
 }
 
 /// Errors say which k there are.
@@ -147,6 +174,9 @@ impl ChipConfig {
         if !(lines.is_power_of_two() && lines <= TRI_CACHE_MAX_LINES) {
             return Err(format!("tri_cache must be a power of two from 1 to {TRI_CACHE_MAX_LINES} lines (WSCG'03: 128), not {lines}"));
         }
+        if !(1..=NODE_CACHE_MAX_LINES).contains(&self.node_cache) {
+            return Err(format!("node_cache must be 1 to {NODE_CACHE_MAX_LINES} records per object, not {}", self.node_cache));
+        }
         Ok(())
     }
 }
@@ -160,6 +190,8 @@ impl Default for ChipConfig {
             dop_rounding: DopRounding::Outward,
             tri_rounding: Rounding::NearestEven,
             tri_cache: 1,
+            layout: MemLayout::Words,
+            node_cache: 1,
         }
     }
 }

@@ -5,13 +5,18 @@
 //! Memory words, with W the width of the datapath's format (docs/ARCHITECTURE.md, "DOP tree
 //! and memory image"):
 //! - node word, `1 + k*W + 64` bits: `is_leaf`, d_0..d_{k-1}, then two 32-bit fields:
-//!   children (inner node) or triangle index and 0 (leaf), pre-order, root at node 0;
+//!   children (inner node) or triangle index and 0 (leaf; `records`: the triangle's
+//!   record), pre-order, root at node 0;
 //! - triangle word, `23*W + 2` bits: vertices v0, v1, v2 (x, y, z each), M_B row-major
 //!   (3x4), the error words `alpha_m`, `alpha_f` ([`TriWord`](crate::golden::memory::TriWord)),
 //!   the `v_exact` bit and the `degenerate` bit.
 //!
-//! The memory image holds one word per record: A's nodes, A's triangles, B's nodes, B's
-//! triangles ([`image_bases`]).
+//! The memory image holds A's node records, A's triangles, B's node records, B's triangles
+//! ([`image_bases`]), in one of two layouts ([`MemLayout`]): `words`, one node word per
+//! record, every record one memory word of the wider kind (the RTL chips'); `records`, the
+//! two children of an inner node in one record ([`sibling_records`]), every record padded to
+//! a power of two bytes, and the records of a DDR memory spread over its banks
+//! ([`RecordMap`]).
 //!
 //! D_CNTR's entry ([`Entry`]) is two node pairs, pushed and popped together; a pair is A's
 //! node, B's node (16 bits each) and the flip bit that orders its children
@@ -31,7 +36,8 @@
 //! stored as it is also when `len` is 1, so `unpack(pack(e)) == e` for every entry.
 //! Node ids are 16 bits: trees of up to 65,536 nodes.
 
-use super::config::ChipConfig;
+use super::config::{ChipConfig, MemLayout};
+use super::memory::Memory;
 
 /// Bits of a node word: the leaf bit, k distances of `w` bits, two 32-bit fields.
 pub const fn node_bits(k: usize, w: usize) -> usize {
@@ -49,27 +55,129 @@ pub const fn word_bits(k: usize, dop_w: usize, tri_w: usize) -> usize {
     if n > t { n } else { t }
 }
 
-/// Word sizes of one configuration.
+/// Word sizes of one configuration, and its layout.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
 pub struct Layout {
     pub node_bits: u32,
     pub tri_bits: u32,
+    pub kind: MemLayout,
 }
 
 impl Layout {
     pub fn new(cfg: &ChipConfig) -> Layout {
         let (dop_w, tri_w) = (cfg.format.dop.width() as usize, cfg.format.tri.width() as usize);
-        Layout { node_bits: node_bits(cfg.k, dop_w) as u32, tri_bits: tri_bits(tri_w) as u32 }
+        Layout { node_bits: node_bits(cfg.k, dop_w) as u32, tri_bits: tri_bits(tri_w) as u32, kind: cfg.layout }
     }
-    /// A memory word holds either record: the wider one.
+    /// Bits of a memory word: `words`, the wider of a node word and a triangle word;
+    /// `records`, a node pair or a triangle word padded to a power of two bytes.
     pub fn word_bits(&self) -> u32 {
-        self.node_bits.max(self.tri_bits)
+        match self.kind {
+            MemLayout::Words => self.node_bits.max(self.tri_bits),
+            MemLayout::Records => 8 * (2 * self.node_bits).max(self.tri_bits).div_ceil(8).next_power_of_two(),
+        }
     }
     pub fn node_bytes(&self) -> u64 {
         self.node_bits.div_ceil(8) as u64
     }
     pub fn tri_bytes(&self) -> u64 {
         self.tri_bits.div_ceil(8) as u64
+    }
+    /// Bytes a node record and a triangle record take in the image (and on the bus per fetch).
+    pub fn record_bytes(&self) -> [u64; 2] {
+        match self.kind {
+            MemLayout::Words => [self.node_bytes(), self.tri_bytes()],
+            MemLayout::Records => [self.word_bits() as u64 / 8; 2],
+        }
+    }
+}
+
+/// The record of every node of a tree whose node `n` has the children `children(n)` (none for
+/// a leaf), nodes numbered in pre-order from the root 0. `words`: node n in record n.
+/// `records`: the root in record 0, alone; the children of the j-th inner node (pre-order,
+/// from 0) in record j + 1, the first child in slot 0, the second in slot 1.
+pub fn node_records(kind: MemLayout, children: &[Option<[u32; 2]>]) -> Vec<u32> {
+    match kind {
+        MemLayout::Words => (0..children.len() as u32).collect(),
+        MemLayout::Records => sibling_records(children),
+    }
+}
+
+/// The record of every triangle of an object whose leaves, in pre-order, hold the triangles
+/// `leaves` (each triangle once). `words`: triangle t in record t. `records`: in leaf order,
+/// so that the triangles of neighbouring leaves are neighbours in memory too.
+pub fn tri_records(kind: MemLayout, leaves: &[u32]) -> Vec<u32> {
+    let mut rec: Vec<u32> = (0..leaves.len() as u32).collect();
+    if kind == MemLayout::Records {
+        leaves.iter().zip(0..).for_each(|(&t, i)| rec[t as usize] = i);
+    }
+    rec
+}
+
+/// [`MemLayout::Records`]'s record of every node ([`node_records`]).
+pub fn sibling_records(children: &[Option<[u32; 2]>]) -> Vec<u32> {
+    let mut rec = vec![0; children.len()];
+    let inner = children.iter().flatten();
+    for (j, c) in inner.enumerate() {
+        c.iter().for_each(|&n| rec[n as usize] = j as u32 + 1);
+    }
+    rec
+}
+
+/// Where a record lies: its word address in memory. `words`, and any layout on an ideal
+/// memory or a DDR of fewer than 4 banks: the image in order, record `base + i` of a region
+/// (A's nodes, B's nodes, A's triangles, B's triangles: [`image_bases`]). `records` on DDR:
+/// each region in banks of its own ([`RecordMap::banks`]), so that the four streams of
+/// requests do not close each other's rows, its records dealt round its banks a page's worth
+/// at a time: record `i` of a region of `n` banks from bank `b0` is in bank
+/// `b0 + (i mod n)`, column `(i / n) mod per_page`, row `i / (n * per_page)`, so that
+/// consecutive records (a node's children, then a child's children: pre-order) are in
+/// different banks and requests in flight rarely wait for a bank. Word `a` is in bank
+/// `(a / per_page) mod banks` (the DDR model's page interleaving,
+/// [`Ddr`](super::memory::Ddr)), `per_page` the records of a page.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct RecordMap {
+    /// `(first bank, banks)` of each region by [`Dst`]; `None`: the image in order.
+    regions: Option<[(u32, u32); 4]>,
+    banks: u32,
+    per_page: u32,
+}
+
+impl RecordMap {
+    pub fn new(layout: &Layout, memory: &Memory) -> RecordMap {
+        match (layout.kind, memory) {
+            (MemLayout::Records, Memory::Ddr(d)) if d.banks >= 4 => RecordMap {
+                regions: Some(RecordMap::banks(d.banks)),
+                banks: d.banks,
+                per_page: (d.page_bytes / (layout.word_bits() / 8)).max(1),
+            },
+            _ => RecordMap { regions: None, banks: 1, per_page: 1 },
+        }
+    }
+
+    /// The banks of each region by [`Dst`] on a DDR of `banks` (at least 4) banks, as
+    /// `(first, count)`: each triangle region `banks / 8` (at least 1), the node regions the
+    /// rest, half each (A's the odd one). Node records are most of the traffic.
+    pub fn banks(banks: u32) -> [(u32, u32); 4] {
+        let t = (banks / 8).max(1);
+        let nb = (banks - 2 * t) / 2;
+        let na = banks - 2 * t - nb;
+        [(0, na), (na, nb), (na + nb, t), (na + nb + t, t)]
+    }
+
+    /// The word address of record `i` of region `d`, whose first record is record `base` of
+    /// the image.
+    pub fn addr(&self, d: Dst, base: u32, i: u32) -> u32 {
+        let Some(regions) = self.regions else { return base + i };
+        let (b0, n) = regions[d as usize];
+        let (row, j) = (i / (n * self.per_page), i % (n * self.per_page));
+        (row * self.banks + b0 + j % n) * self.per_page + j / n
+    }
+
+    /// Word addresses an image of regions of `records` records (by [`Dst`]) spans.
+    pub fn extent(&self, records: [u32; 4]) -> u32 {
+        let Some(regions) = self.regions else { return records.iter().sum() };
+        let rows = (0..4).map(|d| records[d].div_ceil(regions[d].1 * self.per_page)).max().unwrap_or(0);
+        rows * self.banks * self.per_page
     }
 }
 
@@ -92,9 +200,10 @@ impl Dst {
     }
 }
 
-/// Word addresses of A's node 0, B's node 0, A's triangle 0, B's triangle 0 (indexed by
-/// [`Dst`]) for objects of `na`/`nb` nodes and `ta` triangles in A: A's nodes, A's
-/// triangles, B's nodes, B's triangles, one word each.
+/// Record numbers of A's node record 0, B's node record 0, A's triangle 0, B's triangle 0
+/// (indexed by [`Dst`]) for objects of `na`/`nb` node records and `ta` triangles in A: A's
+/// node records, A's triangles, B's node records, B's triangles, one record each
+/// ([`RecordMap::addr`] gives their word addresses).
 pub fn image_bases(na: u32, ta: u32, nb: u32) -> [u32; 4] {
     [0, na + ta, na, na + ta + nb]
 }
@@ -155,6 +264,63 @@ pub fn unpack(w: u128) -> Entry {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A tree of 7 nodes by hand, pre-order: 0(1(2, 3), 4(5, 6)); leaves 2, 3, 5, 6 hold
+    /// triangles 3, 0, 2, 1. Records: the root alone (0), the children of inner nodes 0, 1,
+    /// 4 (the 1st, 2nd, 3rd inner node) in records 1, 2, 3; triangles in leaf order.
+    #[test]
+    fn siblings_share_a_record_by_hand() {
+        let c = |a: u32, b: u32| Some([a, b]);
+        let tree = [c(1, 4), c(2, 3), None, None, c(5, 6), None, None];
+        assert_eq!(node_records(MemLayout::Records, &tree), [0, 1, 2, 2, 1, 3, 3]);
+        assert_eq!(node_records(MemLayout::Words, &tree), [0, 1, 2, 3, 4, 5, 6]);
+        assert_eq!(tri_records(MemLayout::Records, &[3, 0, 2, 1]), [1, 3, 2, 0]);
+        assert_eq!(tri_records(MemLayout::Words, &[3, 0, 2, 1]), [0, 1, 2, 3]);
+    }
+
+    /// k = 24 binary32: a node pair is 1,666 bits (209 bytes), a record 256 bytes, one burst
+    /// of WSCG'03 (8 x 256 bits) and of DATE'05 (4 x 756 bits); DATE'05's 8 KiB pages hold
+    /// 32. Its 8 banks: A's nodes in 0..2, B's in 3..5, A's triangles in 6, B's in 7.
+    #[test]
+    fn records_are_dealt_round_their_banks_by_hand() {
+        let l = Layout::new(&ChipConfig { layout: MemLayout::Records, ..ChipConfig::default() });
+        assert_eq!((l.word_bits(), l.record_bytes()), (2048, [256, 256]));
+        assert_eq!(Layout { kind: MemLayout::Words, ..l }.record_bytes(), [105, 93]);
+        assert_eq!(RecordMap::banks(8), [(0, 3), (3, 3), (6, 1), (7, 1)]);
+        assert_eq!(RecordMap::banks(4), [(0, 1), (1, 1), (2, 1), (3, 1)]);
+        let m = RecordMap::new(&l, &Memory::Ddr(super::super::memory::Ddr::DATE05));
+        // A's records 0, 1, 2, 3 in banks 0, 1, 2, 0 (word a is in bank (a / 32) mod 8)
+        let bank = |a: u32| a / 32 % 8;
+        let a: Vec<u32> = (0..4).map(|i| m.addr(Dst::NodeA, 0, i)).collect();
+        assert_eq!(a, [0, 32, 64, 1]);
+        assert_eq!(a.iter().map(|&a| bank(a)).collect::<Vec<_>>(), [0, 1, 2, 0]);
+        // B's record 4 in bank 3 + 4 mod 3 = 4, column 1; record 96 in row 1 (3 banks x 32)
+        assert_eq!(m.addr(Dst::NodeB, 1000, 4), 4 * 32 + 1);
+        assert_eq!(m.addr(Dst::NodeB, 1000, 96), 256 + 3 * 32);
+        assert_eq!(m.addr(Dst::TriB, 1000, 33), 256 + 7 * 32 + 1);
+        // rows of 8 banks x 32: the largest region (A's triangles, 33 records in 1 bank) spans 2
+        assert_eq!(m.extent([96, 10, 33, 5]), 2 * 256);
+        // the image in order on an ideal memory and in the words layout
+        let ideal = RecordMap::new(&l, &Memory::default());
+        assert_eq!((ideal.addr(Dst::NodeB, 1000, 4), ideal.extent([96, 10, 33, 5])), (1004, 144));
+    }
+
+    /// Every record of every region has its own word address.
+    #[test]
+    fn record_addresses_are_distinct() {
+        let l = Layout::new(&ChipConfig { layout: MemLayout::Records, ..ChipConfig::default() });
+        for d in [super::super::memory::Ddr::DATE05, super::super::memory::Ddr::WSCG03] {
+            let m = RecordMap::new(&l, &Memory::Ddr(d));
+            let sizes = [700, 500, 300, 200];
+            let mut all: Vec<u32> = (0..4).flat_map(|r| (0..sizes[r]).map(move |i| (r, i))).map(|(r, i)| {
+                m.addr([Dst::NodeA, Dst::NodeB, Dst::TriA, Dst::TriB][r], 0, i)
+            }).collect();
+            assert!(all.iter().all(|&a| a < m.extent(sizes)));
+            all.sort_unstable();
+            all.dedup();
+            assert_eq!(all.len(), 1700);
+        }
+    }
 
     #[test]
     fn pack_round_trips_and_places_the_fields() {

@@ -3,6 +3,7 @@
 //! and overrides any of its keys; `cchip run --preset` overrides the scene's.
 
 use super::config::ChipConfig;
+use super::config::MemLayout;
 use super::memory::{Ddr, Memory};
 use super::params::Params;
 use super::rtl;
@@ -12,14 +13,15 @@ use serde::{Deserialize, Serialize};
 #[serde(rename_all = "kebab-case")]
 pub enum Preset {
     /// DATE'05's chip: k = 24, binary32, DATE'05's 756-bit DDR2 (our timing assumptions,
-    /// `Ddr::DATE05`) and the memory port at full speed (an issue every clock, 16 requests in
+    /// `Ddr::DATE05`), the image laid out for the bus (`MemLayout::Records`, 16 node records held per object) and the memory
+    /// port at full speed (an issue every clock, 16 requests in
     /// flight, 14 pairs prefetched, a credit of 48); the paper's 800 MHz.
     Date05,
     /// WSCG'03's memory: its 4-bank DDR SDRAM on a 256-bit bus (`Ddr::WSCG03`) at 266 MHz,
-    /// A's 128-line triangle cache (§4.3), requests in flight as `date05`, on DATE'05's k = 24
+    /// A's 128-line triangle cache (§4.3), records and requests in flight as `date05`, on DATE'05's k = 24
     /// binary32 datapath.
     Wscg03,
-    /// The RTL chips' reset values, which the checked-in traces use: one request outstanding,
+    /// The RTL chips' reset values, which the checked-in traces use: the `words` layout, one request outstanding,
     /// issues two clocks apart, a memory word every clock after one clock; 800 MHz.
     Rtl,
 }
@@ -34,8 +36,9 @@ impl Preset {
 
     pub fn chip(self) -> ChipConfig {
         match self {
-            Preset::Date05 | Preset::Rtl => ChipConfig::default(),
-            Preset::Wscg03 => ChipConfig { tri_cache: 128, ..ChipConfig::default() },
+            Preset::Date05 => ChipConfig { layout: MemLayout::Records, node_cache: 16, ..ChipConfig::default() },
+            Preset::Wscg03 => ChipConfig { tri_cache: 128, layout: MemLayout::Records, node_cache: 16, ..ChipConfig::default() },
+            Preset::Rtl => ChipConfig::default(),
         }
     }
 

@@ -111,6 +111,8 @@ macro_rules! chip_kinds {
                         dop_rounding: DopRounding::Outward,
                         tri_rounding: Rounding::NearestEven,
                         tri_cache: 1,
+                        layout: super::config::MemLayout::Words,
+                        node_cache: 1,
                     },)+
                 }
             }

@@ -11,7 +11,7 @@ use super::dop_unit::{DopResult, DopUnit};
 use super::memory_port::MemPort;
 use super::tri_unit::{TriOut, TriUnit};
 use crate::chip::config::ChipConfig;
-use crate::chip::layout::{Dst, Entry, Pair};
+use crate::chip::layout::{Dst, Entry, Layout, Pair, RecordMap};
 use crate::chip::params::Params;
 use crate::chip::ports::{ChipIn, ChipOut, Clocked};
 use crate::chip::reg::{self, Order};
@@ -19,7 +19,7 @@ use crate::chip::rtl::FIFO_WRITE_TO_HEAD;
 use crate::dop::Node;
 use crate::golden::d_cntr::children;
 use crate::golden::host::HostSetup;
-use crate::golden::memory::{ObjectImage, TriCache};
+use crate::golden::memory::{NodeCache, ObjectImage, TriCache};
 use crate::golden::{dop_unit, tri_unit};
 use serde::Serialize;
 use std::collections::VecDeque;
@@ -69,6 +69,11 @@ pub struct Chip<'a> {
     first: bool,
     root: u32,
     base: [u32; 4],
+    /// Where the image's records lie in memory.
+    map: RecordMap,
+    /// The record of each node of A and B, and of each triangle.
+    records: [&'a [u32]; 2],
+    tri_records: [&'a [u32]; 2],
     // ---- query state
     run: bool,
     done: bool,
@@ -80,11 +85,11 @@ pub struct Chip<'a> {
     /// The pairs popped from the queue and not yet issued, oldest (the DOP unit's input)
     /// first: the RTL's pair buffer.
     ahead: VecDeque<Ahead>,
-    /// The node ids of the last pair put into `ahead` (whose words a repeat reuses).
-    last_ids: [Option<u32>; 2],
-    /// Node words of `ahead`'s pairs not yet requested, in order: destination, id, pair.
+    /// The node records held, A's and B's, as the pairs put into `ahead` left them.
+    held_nodes: [NodeCache; 2],
+    /// Node records of `ahead`'s pairs not yet requested, in order: destination, record, pair.
     to_ask: VecDeque<(Dst, u32, u64)>,
-    /// Node words arrived and not yet used, in order (the RTL's two node-word FIFOs, A's and
+    /// Node records arrived and not yet used, in order (the RTL's two node-word FIFOs, A's and
     /// B's: a pair's words are at their heads when they are at this queue's).
     words: VecDeque<u32>,
     /// Pairs put into `ahead` since start (each pair's number).
@@ -109,7 +114,7 @@ pub struct Chip<'a> {
     pub stats: Option<Stats>,
 }
 
-/// A pair waiting for the DOP unit: its number since start, and which of its node words
+/// A pair waiting for the DOP unit: its number since start, and which of its node records
 /// come from memory (A's, B's; the others repeat the previous pair's).
 #[derive(Clone, Copy, Debug)]
 struct Ahead {
@@ -160,6 +165,9 @@ impl<'a> Chip<'a> {
             first: false,
             root: 0,
             base: [0; 4],
+            map: RecordMap::new(&Layout::new(cfg), &p.memory),
+            records: [&a.records, &b.records],
+            tri_records: [&a.tri_records, &b.tri_records],
             run: false,
             done: false,
             push_root: false,
@@ -167,7 +175,7 @@ impl<'a> Chip<'a> {
             q: queue.outputs(),
             queue,
             ahead: VecDeque::new(),
-            last_ids: [None; 2],
+            held_nodes: [NodeCache::new(cfg.node_cache), NodeCache::new(cfg.node_cache)],
             to_ask: VecDeque::new(),
             words: VecDeque::new(),
             seq: 0,
@@ -195,15 +203,16 @@ impl<'a> Chip<'a> {
         // its own first
         let [fa, fb] = cur.map_or([false; 2], |c| c.fetch);
         let tri_needs = go && self.leaf_valid;
+        let tri_recs = [self.tri_records[0][self.leaf_tag.0 as usize], self.tri_records[1][self.leaf_tag.1 as usize]];
         let need = [
             go && fa && self.words.is_empty(),
             go && fb && self.words.len() < 1 + fa as usize,
-            tri_needs && !self.held[0].holds(self.leaf_tag.0),
-            tri_needs && !self.held[1].holds(self.leaf_tag.1),
+            tri_needs && !self.held[0].holds(tri_recs[0]),
+            tri_needs && !self.held[1].holds(tri_recs[1]),
         ];
         // triangle words first, then the next node word in pair order: the current pair's
         // only at prefetch 0, any pair's in the buffer else
-        let tri_req = [(Dst::TriA, self.leaf_tag.0), (Dst::TriB, self.leaf_tag.1)]
+        let tri_req = [(Dst::TriA, tri_recs[0]), (Dst::TriB, tri_recs[1])]
             .into_iter()
             .find(|&(d, _)| need[d as usize] && self.port.free(d));
         let node_req = self
@@ -266,8 +275,14 @@ impl<'a> Chip<'a> {
         }
     }
 
+    /// The word address of record `id` of `d`.
     fn addr(&self, d: Dst, id: u32) -> u32 {
-        self.base[d as usize] + id
+        self.map.addr(d, self.base[d as usize], id)
+    }
+
+    /// The records of a pair's nodes, A's and B's.
+    fn pair_records(&self, p: Pair) -> [u32; 2] {
+        [self.records[0][p.a as usize], self.records[1][p.b as usize]]
     }
 
     /// Books `n` cycles with the logic `c` (the same in each) to [`Stats`].
@@ -495,7 +510,7 @@ impl Clocked for Chip<'_> {
             self.cnt[0] += 1;
             self.last_issue = Some(now);
             self.ahead.pop_front();
-            for (k, id) in [cur.pair.a, cur.pair.b].into_iter().enumerate().filter(|&(k, _)| cur.fetch[k]) {
+            for (k, id) in self.pair_records(cur.pair).into_iter().enumerate().filter(|&(k, _)| cur.fetch[k]) {
                 // the word queue is in pair order: the head's words are its own
                 let w = self.words.pop_front();
                 assert_eq!(w, Some(id), "node word {k} of {:?}", cur.pair);
@@ -505,13 +520,12 @@ impl Clocked for Chip<'_> {
         if c.pop {
             let e = self.q.top_data;
             for &pair in &e.pairs[..e.len as usize] {
-                let ids = [pair.a, pair.b];
-                let fetch = [0, 1].map(|k| self.last_ids[k] != Some(ids[k]));
+                let ids = self.pair_records(pair);
+                let fetch = [0, 1].map(|k| self.held_nodes[k].fetch(ids[k]));
                 for (k, d) in [Dst::NodeA, Dst::NodeB].into_iter().enumerate().filter(|&(k, _)| fetch[k]) {
                     self.to_ask.push_back((d, ids[k], self.seq));
                 }
                 self.ahead.push_back(Ahead { pair, seq: self.seq, fetch });
-                self.last_ids = ids.map(Some);
                 self.seq += 1;
             }
         }
@@ -559,7 +573,7 @@ impl Clocked for Chip<'_> {
             self.ahead.clear();
             self.to_ask.clear();
             self.words.clear();
-            self.last_ids = [None; 2];
+            self.held_nodes.iter_mut().for_each(NodeCache::clear);
             self.leaf_valid = false;
             self.held.iter_mut().for_each(TriCache::clear);
             self.cnt = [0; 4];

@@ -66,7 +66,7 @@ pub fn run_query(
     rec: Record,
 ) -> Result<(drive::ChipTrace, Option<chip::Stats>), String> {
     let mut c = chip::Chip::new(&chip.cfg, p, &chip.a, &chip.b, setup, rec.counters)?;
-    let d = drive::Drive { memory: p.memory, word_bits: chip.layout.word_bits(), reader, words: chip.image_words(), max_cycles };
+    let d = drive::Drive { memory: p.memory, word_bits: chip.layout.word_bits(), reader, words: chip.image_span(&p.memory), max_cycles };
     let writes = chip.control_writes(order, mode, &p);
     let Record { vcd, probes: mut observer, .. } = rec;
     let trace = if vcd.is_none() && observer.is_none() {

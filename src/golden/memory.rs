@@ -1,11 +1,12 @@
 //! The memory image the chip fetches, as values: per object, one node word per DOP-tree
-//! node and one triangle word per triangle (their bit layout is
-//! [`chip::layout`](crate::chip::layout)'s); and A's triangle cache.
+//! node in its record and one triangle word per triangle (their bit layout and the layout of
+//! the records are [`chip::layout`](crate::chip::layout)'s); and A's triangle cache.
 
 use crate::chip::config::ChipConfig;
-use crate::chip::layout::Layout;
+use crate::chip::layout::{node_records, tri_records, Layout};
 use crate::golden::host::{Affine, TriSide};
 use crate::dop::tree::{DopTree, Tri};
+use crate::dop::Node;
 use crate::format::{Format, Rounding};
 use crate::golden::certificate::Certificate;
 use nalgebra::{Matrix3, Vector3};
@@ -139,17 +140,42 @@ pub struct ObjectImage {
     pub scale: f64,
     /// Indexed by triangle index.
     pub tris: Vec<TriWord>,
+    /// The record of each node in the configuration's layout
+    /// ([`node_records`](crate::chip::layout::node_records)).
+    pub records: Vec<u32>,
+    /// The record of each triangle ([`tri_records`](crate::chip::layout::tri_records)).
+    pub tri_records: Vec<u32>,
 }
 
 impl ObjectImage {
     /// `tris` must not be empty (mesh loaders reject empty meshes).
     pub fn build(tris: &[Tri], cfg: &ChipConfig) -> ObjectImage {
         let scale = object_scale(tris, cfg.format.tri);
+        let tree = DopTree::build(tris, cfg);
+        let children: Vec<_> = tree.nodes.iter().map(|n| if let Node::Inner(c) = n { Some(*c) } else { None }).collect();
+        let leaves: Vec<u32> = tree.nodes.iter().filter_map(|n| if let Node::Leaf(t) = n { Some(*t) } else { None }).collect();
         ObjectImage {
-            tree: DopTree::build(tris, cfg),
+            records: node_records(cfg.layout, &children),
+            tri_records: tri_records(cfg.layout, &leaves),
+            tree,
             scale,
             tris: tris.iter().map(|t| TriWord::new(t, cfg.format.tri, scale)).collect(),
         }
+    }
+
+    /// The record holding node `n`.
+    pub fn record(&self, n: u32) -> u32 {
+        self.records[n as usize]
+    }
+
+    /// The record holding triangle `t`'s word.
+    pub fn tri_record(&self, t: u32) -> u32 {
+        self.tri_records[t as usize]
+    }
+
+    /// Node records in the image (the last node's record is the last).
+    pub fn node_records(&self) -> u32 {
+        self.records.iter().max().map_or(0, |r| r + 1)
     }
 
     /// What T.CHECK's error words need of A (`self`) and B for
@@ -160,14 +186,15 @@ impl ObjectImage {
 
     /// Bytes of this object's image in memory.
     pub fn bytes(&self, layout: &Layout) -> u64 {
-        self.tree.len() as u64 * layout.node_bytes() + self.tris.len() as u64 * layout.tri_bytes()
+        let [node, tri] = layout.record_bytes();
+        self.node_records() as u64 * node + self.tris.len() as u64 * tri
     }
 }
 
-/// Word addresses of A's and B's first node and triangle words in the memory image of `a`
+/// Record numbers of A's and B's first node and triangle records in the memory image of `a`
 /// and `b` (by [`Dst`](crate::chip::layout::Dst), [`image_bases`](crate::chip::layout::image_bases)).
 pub fn image_bases(a: &ObjectImage, b: &ObjectImage) -> [u32; 4] {
-    crate::chip::layout::image_bases(a.tree.len() as u32, a.tris.len() as u32, b.tree.len() as u32)
+    crate::chip::layout::image_bases(a.node_records(), a.tris.len() as u32, b.node_records())
 }
 
 /// An object's scale S for T.CHECK's certificate: the power of two at or above its largest
@@ -223,6 +250,47 @@ impl TriCache {
     }
 }
 
+/// The node records held for the DOP unit, per object: the `lines` records used last (least
+/// recently used replaced), looked up as D_CNTR's pairs leave the queue, in order. One line
+/// is the RTL chips' single record held (a pair repeats the previous pair's word). A record
+/// enters its line as its pair issues, so every hit's data is there at its pair's issue: the
+/// pairs popped before it have issued before it, and those after it write after it.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct NodeCache {
+    lines: usize,
+    /// Most recently used last.
+    tags: Vec<u32>,
+}
+
+impl NodeCache {
+    /// `lines` from [`ChipConfig::node_cache`](crate::chip::config::ChipConfig::node_cache).
+    pub fn new(lines: u32) -> NodeCache {
+        NodeCache { lines: lines as usize, tags: Vec::with_capacity(lines as usize) }
+    }
+
+    /// A use of record `r`: true if it had to be fetched (a miss, which replaces the least
+    /// recently used line).
+    pub fn fetch(&mut self, r: u32) -> bool {
+        let hit = self.tags.iter().position(|&t| t == r);
+        match hit {
+            Some(i) => {
+                self.tags.remove(i);
+            }
+            None if self.tags.len() == self.lines => {
+                self.tags.remove(0);
+            }
+            None => {}
+        }
+        self.tags.push(r);
+        hit.is_none()
+    }
+
+    /// Every line empty (a query's start).
+    pub fn clear(&mut self) {
+        self.tags.clear();
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -256,6 +324,19 @@ mod tests {
                 prop_assert_eq!(c.fetch(t), last != Some(&t), "use {} of {:?}, {} lines", i, uses, lines);
             }
         }
+    }
+
+    /// Hand-derived: with 2 lines, 1 2 1 3 evicts 2 (least recently used), so 2 misses
+    /// again and evicts 1; with 1 line, every change of record misses.
+    #[test]
+    fn node_cache_by_hand() {
+        let misses = |lines: u32| {
+            let mut c = NodeCache::new(lines);
+            [1, 2, 1, 3, 2, 1, 1].map(|r| c.fetch(r) as u32)
+        };
+        assert_eq!(misses(1), [1, 1, 1, 1, 1, 1, 0]);
+        assert_eq!(misses(2), [1, 1, 0, 1, 1, 1, 0]);
+        assert_eq!(misses(3), [1, 1, 0, 1, 0, 0, 0]);
     }
 
     #[test]

@@ -11,6 +11,7 @@
 
 use super::tri_io::{tri_unit_setup_words, LeafIn};
 use crate::chip::config::ChipConfig;
+use crate::chip::config::MemLayout;
 use crate::chip::memory::{MemTiming, Memory};
 use crate::chip::params::Params;
 use crate::chip::ports::{ChipIn, ChipOut, Clocked};
@@ -517,6 +518,12 @@ pub fn run_query_vcd<C: RtlPorts>(
 /// Which RTL chip runs a query of this configuration, traversal and cycle-model
 /// parameters, and in which order; otherwise what to change.
 pub fn rtl_order(cfg: &ChipConfig, traversal: Traversal, p: &Params) -> Result<(ChipKind, Order), String> {
+    if cfg.layout != MemLayout::Words || cfg.node_cache != 1 {
+        return Err(format!(
+            "the RTL chips read the `words` layout and hold one node word per object; this scene has layout = {:?}, node_cache = {}: set [chip] layout = \"words\", node_cache = 1 (or preset = \"rtl\")",
+            cfg.layout, cfg.node_cache
+        ));
+    }
     let Some(kind) = ChipKind::of(cfg) else {
         let built: Vec<String> = ChipKind::ALL.iter().map(|k| format!("k = {}, format = \"{}\"", k.config().k, k.config().format)).collect();
         return Err(format!(

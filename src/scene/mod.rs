@@ -21,6 +21,9 @@
 //! tri_cache = 1               # lines of A's triangle cache (WSCG'03 §4.3: 128; a power of
 //!                             # two up to 1024; 1: one word held, the RTL chips)
 //! tri_rounding = "NearestEven" # T.CHECK's rounding, or "TowardPositive", "TowardNegative"
+//! layout = "words"            # or "records": sibling nodes in one record, records spread
+//!                             # over DDR banks (date05, wscg03); "words" the RTL chips'
+//! node_cache = 1              # node records held per object, LRU (date05, wscg03: 16)
 //!
 //! [query]                     # all optional
 //! mode = "all"                # or "first"
@@ -432,8 +435,8 @@ impl Scene {
     pub fn configuration(&self) -> String {
         let (c, p) = (&self.cfg, &self.params);
         format!(
-            "configuration (preset {} and the scene's keys):\n  chip: k = {}, format {}, dop_rounding {}, tri_rounding {:?}, tri_cache {}\n  timing: queue_entries {}, dop_latency {}, tri_latency {}, tri_fifo {}, issue_spacing {}, credit {}, outstanding {}, prefetch {}\n  memory: {}\n  clock: {}",
-            self.preset.name(), c.k, c.format, c.dop_rounding, c.tri_rounding, c.tri_cache,
+            "configuration (preset {} and the scene's keys):\n  chip: k = {}, format {}, dop_rounding {}, tri_rounding {:?}, tri_cache {}, layout {:?}, node_cache {}\n  timing: queue_entries {}, dop_latency {}, tri_latency {}, tri_fifo {}, issue_spacing {}, credit {}, outstanding {}, prefetch {}\n  memory: {}\n  clock: {}",
+            self.preset.name(), c.k, c.format, c.dop_rounding, c.tri_rounding, c.tri_cache, c.layout, c.node_cache,
             p.queue_entries, p.dop_latency, p.tri_latency, p.tri_fifo, p.issue_spacing, p.credit, p.outstanding, p.prefetch,
             p.memory, self.clock.source()
         )

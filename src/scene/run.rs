@@ -240,7 +240,7 @@ impl<'s> Prepared<'s> {
             memory: MemoryRecord {
                 node_words: trace.node_fetches,
                 tri_words: trace.tri_fetches,
-                bytes: trace.node_fetches * layout.node_bytes() + trace.tri_fetches * layout.tri_bytes(),
+                bytes: trace.node_fetches * layout.record_bytes()[0] + trace.tri_fetches * layout.record_bytes()[1],
                 page_hits: trace.memory.page_hits,
                 page_misses: trace.memory.page_misses,
                 bank_conflicts: trace.memory.bank_conflicts,

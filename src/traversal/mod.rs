@@ -20,7 +20,7 @@ use crate::chip::reg::{Mode, Order};
 use crate::dop::tree::Tri;
 use crate::dop::Node;
 use crate::golden::host::{DopLanes, HostSetup};
-use crate::golden::memory::{ObjectImage, TriCache};
+use crate::golden::memory::{NodeCache, ObjectImage, TriCache};
 use crate::golden::{d_cntr, dop_unit, tri_unit};
 use crate::oracle;
 use nalgebra::{Matrix3, Vector3};
@@ -59,7 +59,10 @@ pub struct Counters {
     pub dop_overlaps: u64,
     /// DOP transforms of the tumbled object (DATE'05 fuses one into every DOP test).
     pub dop_transforms: u64,
-    /// Node words fetched (a node already held by the DOP unit is not fetched again).
+    /// Node records fetched (a node word or, `[chip] layout = "records"`, a sibling pair;
+    /// a record held for the DOP unit, per object, is not fetched again: the previous pair's,
+    /// or one of `ChipConfig::node_cache`'s lines). The lookups that hit are the other
+    /// `2 * dop_tests - node_fetches`.
     pub node_fetches: u64,
     pub tri_tests: u64,
     /// Triangle words fetched (same holding rule as nodes; A's through the triangle cache,
@@ -116,7 +119,7 @@ pub(crate) struct Engine<'a> {
     b: &'a ObjectImage,
     layout: Layout,
     mode: Mode,
-    held_node: [Option<u32>; 2],
+    held_node: [NodeCache; 2],
     /// A's triangle words held (the triangle cache), B's (one line).
     held_tri: [TriCache; 2],
     host: &'a Host<'a>,
@@ -138,15 +141,6 @@ impl<'a> Engine<'a> {
         self.b.tree.nodes[n as usize]
     }
 
-    fn fetch(held: &mut Option<u32>, n: u32) -> u64 {
-        if *held == Some(n) {
-            0
-        } else {
-            *held = Some(n);
-            1
-        }
-    }
-
     /// One DOP test of A's node `na` against B's node `nb`. B's transformed distances are
     /// computed on first use and kept for the query (the recursive traversal recomputes them
     /// at every test, as WSCG'03 Algorithm 1 does): the same values the lane computes (the
@@ -154,7 +148,7 @@ impl<'a> Engine<'a> {
     fn dop_test(&mut self, na: u32, nb: u32) -> bool {
         let c = &mut self.counters;
         c.dop_tests += 1;
-        c.node_fetches += Self::fetch(&mut self.held_node[0], na) + Self::fetch(&mut self.held_node[1], nb);
+        c.node_fetches += self.held_node[0].fetch(self.a.record(na)) as u64 + self.held_node[1].fetch(self.b.record(nb)) as u64;
         let hit = self.dop_unit.overlap(nb, self.b.tree.dop(nb), self.a.tree.dop(na));
         c.dop_overlaps += hit as u64;
         hit
@@ -165,9 +159,9 @@ impl<'a> Engine<'a> {
     fn leaf_pair(&mut self, ta: u32, tb: u32) {
         let c = &mut self.counters;
         c.tri_tests += 1;
-        let fetch_a = self.held_tri[0].fetch(ta) as u64;
+        let fetch_a = self.held_tri[0].fetch(self.a.tri_record(ta)) as u64;
         c.tri_fetches_a += fetch_a;
-        c.tri_fetches += fetch_a + self.held_tri[1].fetch(tb) as u64;
+        c.tri_fetches += fetch_a + self.held_tri[1].fetch(self.b.tri_record(tb)) as u64;
         let (wa, wb) = (&self.a.tris[ta as usize], &self.b.tris[tb as usize]);
         let res = self.tri_unit.test(ta, wa, tb, wb);
         let hit = if res.uncertain {
@@ -213,7 +207,7 @@ pub fn run(
         b,
         layout: Layout::new(cfg),
         mode,
-        held_node: [None; 2],
+        held_node: [NodeCache::new(cfg.node_cache), NodeCache::new(cfg.node_cache)],
         held_tri: [TriCache::new(cfg.tri_cache), TriCache::new(1)],
         host,
         pairs: vec![],
@@ -234,7 +228,8 @@ pub fn run(
         Traversal::Lifo => run_d_cntr(&mut e, Order::Lifo),
     }
     let mut c = e.counters;
-    c.memory_bytes = c.node_fetches * e.layout.node_bytes() + c.tri_fetches * e.layout.tri_bytes();
+    let [node_bytes, tri_bytes] = e.layout.record_bytes();
+    c.memory_bytes = c.node_fetches * node_bytes + c.tri_fetches * tri_bytes;
     let (mut pairs, mut uncertain) = (e.pairs, e.uncertain);
     pairs.sort_unstable();
     uncertain.sort_unstable();
