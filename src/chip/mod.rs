@@ -12,6 +12,7 @@
 //! | [`probes`] | the traversal signals every level shows (VCDs, lockstep) |
 //! | [`reg`] | the host register map, the query's mode and D_CNTR's order, the writes that start a query |
 //! | [`layout`] | bit layouts: node and triangle words, the memory image, the port's destinations, D_CNTR's entry |
+//! | [`wscg03`] | which paper's chip runs ([`Architecture`](wscg03::Architecture)), WSCG'03's timing ([`StackParams`](wscg03::StackParams)) |
 //! | [`rtl`] | the RTL chips' sizes and latencies, and the table of the exported chips |
 
 pub mod config;
@@ -23,3 +24,4 @@ pub mod preset;
 pub mod probes;
 pub mod reg;
 pub mod rtl;
+pub mod wscg03;
