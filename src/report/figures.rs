@@ -11,8 +11,10 @@
 //!   overflow, so that FIFO's need shows.
 //! - WSCG'03 Figs. 9-10 (software time of Algorithm 2, the list traversal, vs Algorithm 1,
 //!   the recursive one; first witness, all pairs), Fig. 11 (node words fetched), Fig. 12 (DOP
-//!   transforms): the golden model's traversals. Fig. 13: the chip's speed-up at 266 MHz with
-//!   [`WSCG_MEMORY`], and Eq. 5's estimate from the list traversal's lists.
+//!   transforms): the golden model's traversals. Fig. 13: WSCG'03's chip
+//!   ([`cycle::wscg03`]) at 266 MHz on [`WSCG_MEMORY`], Eq. 5's estimate from the list
+//!   traversal's lists, and DATE'05's chip on the same memory ([`wscg_params`]); beside it the
+//!   two chips' table (`wscg03_vs_date05`).
 //!
 //! Software is timed one query at a time before anything else runs; the counting work
 //! (golden counters, cycle model) then runs on every core.
@@ -22,6 +24,7 @@ use crate::cycle::{self, drive::Reader};
 use crate::chip::memory::Ddr;
 use crate::chip::memory::Memory;
 use crate::chip::params::Params;
+use crate::chip::preset::Preset;
 use crate::chip::wscg03::StackParams;
 use crate::measure::{mean_seconds, parallel_map};
 use crate::mesh;
@@ -78,8 +81,7 @@ pub const DATE_MHZ: f64 = 800.0;
 /// The chip's clock in WSCG'03 (the burst rate of PC133 DDR SDRAM).
 pub const WSCG_MHZ: f64 = 266.0;
 /// WSCG'03's memory: its four-bank DDR SDRAM ([`Ddr::WSCG03`]: a page hit 8 clocks, a miss
-/// 20). The chip fetches one node per request with one request outstanding, so no bank's
-/// command part overlaps another's transfer.
+/// 20).
 pub const WSCG_MEMORY: Memory = Memory::Ddr(Ddr::WSCG03);
 /// Queue entries of the figures' chip: no FIFO traversal of these meshes overflows it
 /// (the RTL's 1,024 would, and an overflowed query has no complete answer).
@@ -90,9 +92,11 @@ pub fn date_params() -> Params {
     Params { queue_entries: QUEUE_ENTRIES, ..Params::RTL }
 }
 
-/// The chip of WSCG'03 Fig. 13: the same with [`WSCG_MEMORY`].
+/// The memory and port of WSCG'03 Fig. 13: the `wscg03` preset's ([`WSCG_MEMORY`];
+/// DATE'05's chip with its port at full speed: 16 requests in flight, 14 pairs prefetched),
+/// with [`QUEUE_ENTRIES`]. WSCG'03's chip reads only the memory.
 pub fn wscg_params() -> Params {
-    Params { memory: WSCG_MEMORY, ..date_params() }
+    Params { queue_entries: QUEUE_ENTRIES, ..Preset::Wscg03.params() }
 }
 
 /// WSCG'03 Eq. 5 in clocks: sum over lists of 100 + (alpha - 2) * 10, alpha the list's
