@@ -44,7 +44,7 @@ pub(super) struct StackEngine<'a> {
 
 /// One list being processed: its start, its first pointer's clock at the Memory
 /// Controller, when its tumbled pair's d' are ready, and its aligned words' clocks.
-struct Run {
+struct ListRun {
     t0: u64,
     ptr: u64,
     ready: u64,
@@ -102,7 +102,7 @@ impl<'a> StackEngine<'a> {
         self.tri.new_group(&leaves);
         let ptr = t0 + self.sram_latency;
         let (ready, held) = self.tumbled(&group, ptr);
-        let mut run = Run { t0, ptr, ready, present: vec![], ends: vec![], resume: 0 };
+        let mut run = ListRun { t0, ptr, ready, present: vec![], ends: vec![], resume: 0 };
         let out = self.stream(&group, &list, &mut run);
         let first_compare = run.ends.first().map(|&e| e - self.dop.beats());
         if let Some(c) = first_compare.filter(|_| !held) {
@@ -146,19 +146,19 @@ impl<'a> StackEngine<'a> {
 
     /// The earliest clock aligned word `j` may be asked for: its pointer read, a place in
     /// the Memory Controller's buffer, no interrupt.
-    fn earliest(&self, r: &Run, j: usize) -> u64 {
+    fn earliest(&self, r: &ListRun, j: usize) -> u64 {
         let room = if j >= self.word_buffer { r.ends[j - self.word_buffer] } else { 0 };
         (r.ptr + j as u64).max(room).max(r.resume)
     }
 
-    fn ask(&mut self, r: &mut Run, list: &[u32]) {
+    fn ask(&mut self, r: &mut ListRun, list: &[u32]) {
         let j = r.present.len();
         let t = self.earliest(r, j);
         r.present.push(self.mem.fetch(t, Dst::NodeA, list[j]));
     }
 
     /// Streams `list` through the compare units: the lists for each member of `group`.
-    fn stream(&mut self, group: &[u32], list: &[u32], r: &mut Run) -> Vec<Vec<u32>> {
+    fn stream(&mut self, group: &[u32], list: &[u32], r: &mut ListRun) -> Vec<Vec<u32>> {
         let mut out = vec![vec![]; group.len()];
         let mut last_flags = r.t0;
         for (i, &n) in list.iter().enumerate() {
@@ -197,7 +197,7 @@ impl<'a> StackEngine<'a> {
 
     /// An overlapping leaf pair flagged at clock `f`: its triangle words (an interrupt if
     /// one is not held), the Triangle Unit, a result for the host.
-    fn leaf_pair(&mut self, f: u64, ta: u32, tb: u32, r: &mut Run) {
+    fn leaf_pair(&mut self, f: u64, ta: u32, tb: u32, r: &mut ListRun) {
         let misses = self.tri.misses(ta, tb);
         let mut present = f + 1;
         for (miss, d, id) in [(misses[0], Dst::TriA, ta), (misses[1], Dst::TriB, tb)] {
@@ -227,7 +227,7 @@ impl<'a> StackEngine<'a> {
     /// Books the compare units' clocks from `from` to `end`: between lists (the Stack
     /// Engine's switch), waiting for what came last (the tumbled pair's d', or the aligned
     /// word), comparing.
-    fn book(&mut self, r: &Run, from: u64, start: u64, end: u64, present: u64) {
+    fn book(&mut self, r: &ListRun, from: u64, start: u64, end: u64, present: u64) {
         let s = &mut self.stats;
         let switched = r.t0.max(from).min(start);
         s.stall_list += switched - from;
