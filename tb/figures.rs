@@ -36,6 +36,7 @@ fn figures_data_hold_what_the_papers_compare() {
         "wscg03_fig11_nodes",
         "wscg03_fig12_transforms",
         "wscg03_fig13_speedup",
+        "wscg03_vs_date05",
     ];
     for s in stems {
         for ext in ["svg", "png", "csv", "json"] {
@@ -85,12 +86,17 @@ fn figures_data_hold_what_the_papers_compare() {
     let (cols, fig13) = csv(&out.join("wscg03_fig13_speedup.csv"));
     assert_eq!(
         cols[4..],
-        ["pairs", "software_us", "cycles", "chip_us", "words", "lists", "alpha", "eq5_cycles", "eq5_us", "speedup_cycle_model", "speedup_eq5"]
+        ["pairs", "software_us", "wscg03_cycles", "eq5_cycles", "date05_cycles", "lists", "alpha", "wscg03_clocks_per_list", "eq5_clocks_per_list", "speedup_wscg03", "speedup_eq5", "speedup_date05"]
     );
     for r in &fig13 {
         let eq5 = 100.0 * num(r, "lists") + 10.0 * (num(r, "alpha") - 2.0) * num(r, "lists");
         assert!((eq5 - num(r, "eq5_cycles")).abs() <= 1e-6 * eq5.abs().max(1.0), "{r:?}");
+        assert!(num(r, "wscg03_cycles") > 0.0 && num(r, "date05_cycles") > 0.0, "{r:?}");
     }
+    let (cols, side) = csv(&out.join("wscg03_vs_date05.csv"));
+    assert_eq!(cols[4..], ["wscg03_clocks", "date05_clocks", "wscg03_dop_per_clock", "date05_dop_per_clock", "wscg03_transforms_per_clock", "date05_transforms_per_clock", "wscg03_words", "date05_words", "wscg03_list_pointers", "date05_queue_entries"]);
+    // DATE'05 transforms in every DOP test
+    assert!(side.iter().all(|r| num(r, "date05_transforms_per_clock") == num(r, "date05_dop_per_clock")), "{side:?}");
     let json: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(out.join("wscg03_fig13_speedup.json")).unwrap()).unwrap();
     assert_eq!(json.as_array().unwrap().len(), fig13.len());
     let _ = std::fs::remove_dir_all(&out);

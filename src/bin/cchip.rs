@@ -4,12 +4,13 @@
 use clap::{Args, Parser, Subcommand};
 use collision_chip::chip::preset::Preset;
 use collision_chip::chip::timing::Technology;
+use collision_chip::chip::wscg03::Architecture;
 use collision_chip::chip::config::{ChipConfig, DopRounding, Formats};
 use collision_chip::chip::memory::Memory;
 use collision_chip::mesh::{self, Mesh};
 use collision_chip::pose::Pose;
 use collision_chip::query::{exact_pairs, Accuracy, Chip};
-use collision_chip::report::{accuracy, figures, memory_table, stall_table, summary_table};
+use collision_chip::report::{accuracy, figures, memory_table, stack_table, stall_table, summary_table};
 use collision_chip::harness::units;
 use collision_chip::scene::graph::Plan;
 use collision_chip::scene::run::Prepared;
@@ -136,6 +137,10 @@ struct RunOpts {
     /// assumed: 800 or 266 MHz).
     #[arg(long, value_enum)]
     technology: Option<Technology>,
+    /// Run the scene on this chip instead of its [chip] architecture: date05 (D_CNTR) or
+    /// wscg03 (WSCG'03's Stack Engine and list traversal, its units in --explain).
+    #[arg(long, value_enum)]
+    architecture: Option<Architecture>,
 }
 
 #[derive(Args)]
@@ -411,6 +416,9 @@ fn run(path: Option<PathBuf>, o: RunOpts) -> Result<(), String> {
         Some(p) => Scene::load_with(p, flags)?,
         None => Scene::parse_with(DEFAULT_SCENE, "built-in default scene", flags)?,
     };
+    if let Some(a) = o.architecture {
+        scene.architecture = a;
+    }
     if let Some(dir) = o.vcd {
         scene.outputs.waveforms = Some(Waveforms::all(dir));
     }
@@ -457,8 +465,13 @@ fn run(path: Option<PathBuf>, o: RunOpts) -> Result<(), String> {
             "cycles = the chip's clocks from start to done (cycle model: {} queue entries, {memory});\nchip_us = cycles x the clock period, {};\nsetup_us, settle_us = the host's setup for the pose and its settling of the uncertain pairs with the exact oracle, measured on this machine (wall clock, the fastest of 3, one pose at a time: noisy);\ne2e_us = setup_us + chip_us + settle_us; sw_us = the golden model's query on this machine (one at a time); speedup = sw_us / chip_us; e2e_x = sw_us / e2e_us.",
             p.queue_entries, scene.clock.source()
         );
-        println!("\nwhere the clocks went (share of clocks by what the DOP unit's input did; occupancy = mean units in flight):");
-        print!("{}", stall_table(&records));
+        if scene.architecture == Architecture::Wscg03 {
+            println!("\nWSCG'03's chip: where the compare units' clocks went; dop/c, xf/c = DOP tests, transforms per clock; lists = tau, alpha = aligned node pairs per list; clk/list against WSCG'03 Eq. 5's 100 + (alpha - 2) 10; start = clocks from a list's start to its first compare when its pair was not transformed ahead (WSCG'03: 64); spec% = speculative pairs used; interr = interrupts for triangle words; sram = most pointers in the list SRAMs:");
+            print!("{}", stack_table(&records));
+        } else {
+            println!("\nwhere the clocks went (share of clocks by what the DOP unit's input did; occupancy = mean units in flight):");
+            print!("{}", stall_table(&records));
+        }
     }
     if out.memory {
         println!("\n{memory}; busy = a request outstanding, waiting = the DOP unit's input waits for a node word:");

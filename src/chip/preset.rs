@@ -7,6 +7,7 @@ use super::config::MemLayout;
 use super::memory::{Ddr, Memory};
 use super::params::Params;
 use super::rtl;
+use super::wscg03::Architecture;
 use serde::{Deserialize, Serialize};
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, clap::ValueEnum)]
@@ -17,9 +18,10 @@ pub enum Preset {
     /// port at full speed (an issue every clock, 16 requests in
     /// flight, 14 pairs prefetched, a credit of 48); the paper's 800 MHz.
     Date05,
-    /// WSCG'03's memory: its 4-bank DDR SDRAM on a 256-bit bus (`Ddr::WSCG03`) at 266 MHz,
-    /// A's 128-line triangle cache (§4.3), records and requests in flight as `date05`, on DATE'05's k = 24
-    /// binary32 datapath.
+    /// WSCG'03's chip (the Stack Engine, `Architecture::Wscg03`) on its 4-bank DDR SDRAM on a
+    /// 256-bit bus (`Ddr::WSCG03`) at 266 MHz, A's 128-line triangle cache (§4.3), records as
+    /// `date05`, k = 24 binary32; `[chip] architecture = "date05"` runs DATE'05's chip (its
+    /// port as `date05`'s) on the same memory.
     Wscg03,
     /// The RTL chips' reset values, which the checked-in traces use: the `words` layout, one request outstanding,
     /// issues two clocks apart, a memory word every clock after one clock; 800 MHz.
@@ -47,6 +49,14 @@ impl Preset {
             Preset::Date05 => Preset::full_port(Memory::Ddr(Ddr::DATE05)),
             Preset::Wscg03 => Preset::full_port(Memory::Ddr(Ddr::WSCG03)),
             Preset::Rtl => Params::RTL,
+        }
+    }
+
+    /// The chip the preset runs: WSCG'03's Stack Engine for `wscg03`, else DATE'05's D_CNTR.
+    pub fn architecture(self) -> Architecture {
+        match self {
+            Preset::Wscg03 => Architecture::Wscg03,
+            Preset::Date05 | Preset::Rtl => Architecture::Date05,
         }
     }
 

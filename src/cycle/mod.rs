@@ -15,6 +15,7 @@
 //! | [`memory`] | the memory models (ideal, DDR SDRAM) |
 //! | [`delay`] | a fixed-latency pipeline, and the RTL's synchronous FIFO as one |
 //! | [`drive`] | one driver for every level: host, memory model, result reader, lockstep |
+//! | [`wscg03`] | WSCG'03's chip: Stack Engine, DOP Unit, Triangle Unit, Memory Controller |
 //!
 //! The model runs any configuration the golden model runs (k, format, rounding) with any
 //! [`Params`]; [`Params::RTL`] is the RTL chip's point.
@@ -27,6 +28,7 @@ pub mod drive;
 pub mod memory;
 pub mod memory_port;
 pub mod tri_unit;
+pub mod wscg03;
 
 use crate::chip::params::Params;
 use crate::chip::ports::ChipIn;

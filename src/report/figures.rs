@@ -11,8 +11,10 @@
 //!   overflow, so that FIFO's need shows.
 //! - WSCG'03 Figs. 9-10 (software time of Algorithm 2, the list traversal, vs Algorithm 1,
 //!   the recursive one; first witness, all pairs), Fig. 11 (node words fetched), Fig. 12 (DOP
-//!   transforms): the golden model's traversals. Fig. 13: the chip's speed-up at 266 MHz with
-//!   [`WSCG_MEMORY`], and Eq. 5's estimate from the list traversal's lists.
+//!   transforms): the golden model's traversals. Fig. 13: WSCG'03's chip
+//!   ([`cycle::wscg03`]) at 266 MHz on [`WSCG_MEMORY`], Eq. 5's estimate from the list
+//!   traversal's lists, and DATE'05's chip on the same memory ([`wscg_params`]); beside it the
+//!   two chips' table (`wscg03_vs_date05`).
 //!
 //! Software is timed one query at a time before anything else runs; the counting work
 //! (golden counters, cycle model) then runs on every core.
@@ -22,6 +24,8 @@ use crate::cycle::{self, drive::Reader};
 use crate::chip::memory::Ddr;
 use crate::chip::memory::Memory;
 use crate::chip::params::Params;
+use crate::chip::preset::Preset;
+use crate::chip::wscg03::StackParams;
 use crate::measure::{mean_seconds, parallel_map};
 use crate::mesh;
 use crate::pose::Pose;
@@ -77,8 +81,7 @@ pub const DATE_MHZ: f64 = 800.0;
 /// The chip's clock in WSCG'03 (the burst rate of PC133 DDR SDRAM).
 pub const WSCG_MHZ: f64 = 266.0;
 /// WSCG'03's memory: its four-bank DDR SDRAM ([`Ddr::WSCG03`]: a page hit 8 clocks, a miss
-/// 20). The chip fetches one node per request with one request outstanding, so no bank's
-/// command part overlaps another's transfer.
+/// 20).
 pub const WSCG_MEMORY: Memory = Memory::Ddr(Ddr::WSCG03);
 /// Queue entries of the figures' chip: no FIFO traversal of these meshes overflows it
 /// (the RTL's 1,024 would, and an overflowed query has no complete answer).
@@ -89,9 +92,11 @@ pub fn date_params() -> Params {
     Params { queue_entries: QUEUE_ENTRIES, ..Params::RTL }
 }
 
-/// The chip of WSCG'03 Fig. 13: the same with [`WSCG_MEMORY`].
+/// The memory and port of WSCG'03 Fig. 13: the `wscg03` preset's ([`WSCG_MEMORY`];
+/// DATE'05's chip with its port at full speed: 16 requests in flight, 14 pairs prefetched),
+/// with [`QUEUE_ENTRIES`]. WSCG'03's chip reads only the memory.
 pub fn wscg_params() -> Params {
-    Params { memory: WSCG_MEMORY, ..date_params() }
+    Params { queue_entries: QUEUE_ENTRIES, ..Preset::Wscg03.params() }
 }
 
 /// WSCG'03 Eq. 5 in clocks: sum over lists of 100 + (alpha - 2) * 10, alpha the list's
@@ -137,9 +142,18 @@ struct PoseCounts {
     /// The list traversal's lists and aligned node pairs (all pairs).
     lists: u64,
     list_node_pairs: u64,
-    /// LIFO, all pairs, at [`wscg_params`]: clocks and memory words.
+    /// DATE'05's chip, LIFO, all pairs, at [`wscg_params`]: clocks, memory words, most
+    /// queue entries (two node pairs each).
     wscg_cycles: u64,
     wscg_words: u64,
+    wscg_entries: u64,
+    /// WSCG'03's chip ([`cycle::wscg03`]) on the same memory, all pairs: clocks, memory
+    /// words, DOP tests, tumbled DOPs transformed, most pointers in its list SRAMs.
+    stack_cycles: u64,
+    stack_words: u64,
+    stack_dop_tests: u64,
+    stack_transforms: u64,
+    stack_pointers: u64,
 }
 
 /// Means over the orientations of one mesh at one distance.
@@ -419,7 +433,12 @@ fn count(chip: &Chip, pose: &Pose) -> Result<PoseCounts, String> {
     }
     let (trace, _) = cycle::run_query(chip, &setup, Order::Lifo, Mode::All, wscg_params(), Reader::default(), cycle::MAX_CYCLES, Default::default())?;
     trace.check(Mode::All, &all).map_err(|e| format!("WSCG memory: the cycle model disagrees with the golden model: {e}"))?;
-    (c.wscg_cycles, c.wscg_words) = (trace.cycles, trace.node_fetches + trace.tri_fetches);
+    (c.wscg_cycles, c.wscg_words, c.wscg_entries) = (trace.cycles, trace.node_fetches + trace.tri_fetches, trace.max_depth);
+    let run = cycle::wscg03::run_query(chip, &setup, Mode::All, &wscg_params(), &StackParams::PAPER)?;
+    run.trace.check(Mode::All, &all).map_err(|e| format!("WSCG'03's chip disagrees with the golden model: {e}"))?;
+    let (t, s) = (&run.trace, &run.stats);
+    (c.stack_cycles, c.stack_words, c.stack_dop_tests) = (t.cycles, t.node_fetches + t.tri_fetches, s.dop_tests);
+    (c.stack_transforms, c.stack_pointers) = (s.transforms, s.max_list_words);
     Ok(c)
 }
 
@@ -631,46 +650,84 @@ fn figures(points: &[Point]) -> Vec<Figure> {
         table: t9,
     });
 
-    // WSCG'03 Fig. 13 and Eq. 5.
-    let cyc_us = |p: &Point| p.mean(|c| c.wscg_cycles as f64) / WSCG_MHZ;
+    // WSCG'03 Fig. 13 and Eq. 5: WSCG'03's chip, its Eq. 5, and DATE'05's chip on the same memory.
     let eq5 = |p: &Point| p.mean(|c| eq5_cycles(c.lists, c.list_node_pairs));
+    let clocks = |p: &Point, v: usize| match v {
+        0 => p.mean(|c| c.stack_cycles as f64),
+        1 => eq5(p),
+        _ => p.mean(|c| c.wscg_cycles as f64),
+    };
     let mut t13 = Table {
-        columns: [&KEY[..], &["pairs", "software_us", "cycles", "chip_us", "words", "lists", "alpha", "eq5_cycles", "eq5_us", "speedup_cycle_model", "speedup_eq5"]].concat(),
+        columns: [&KEY[..], &["pairs", "software_us", "wscg03_cycles", "eq5_cycles", "date05_cycles", "lists", "alpha", "wscg03_clocks_per_list", "eq5_clocks_per_list", "speedup_wscg03", "speedup_eq5", "speedup_date05"]].concat(),
         rows: vec![],
     };
     for p in points {
-        let lists = p.mean(|c| c.lists as f64);
-        t13.rows.push(
-            [
-                &key(p)[..],
-                &[
-                    Cell::Num(p.mean(|c| c.sw_pairs[0][0] as f64)),
-                    Cell::Num(p.sw_us[0][0]),
-                    Cell::Num(p.mean(|c| c.wscg_cycles as f64)),
-                    Cell::Num(cyc_us(p)),
-                    Cell::Num(p.mean(|c| c.wscg_words as f64)),
-                    Cell::Num(lists),
-                    Cell::Num(p.mean(|c| c.list_node_pairs as f64) / lists.max(1.0)),
-                    Cell::Num(eq5(p)),
-                    Cell::Num(eq5(p) / WSCG_MHZ),
-                    Cell::Num(p.sw_us[0][0] / cyc_us(p)),
-                    Cell::Num(p.sw_us[0][0] / (eq5(p) / WSCG_MHZ)),
-                ],
-            ]
-            .concat(),
-        );
+        let lists = p.mean(|c| c.lists as f64).max(1.0);
+        let speedup = |v| p.sw_us[0][0] / (clocks(p, v) / WSCG_MHZ);
+        let nums = [
+            p.mean(|c| c.sw_pairs[0][0] as f64),
+            p.sw_us[0][0],
+            clocks(p, 0),
+            clocks(p, 1),
+            clocks(p, 2),
+            lists,
+            p.mean(|c| c.list_node_pairs as f64) / lists,
+            clocks(p, 0) / lists,
+            clocks(p, 1) / lists,
+            speedup(0),
+            speedup(1),
+            speedup(2),
+        ];
+        t13.rows.push([&key(p)[..], &nums.map(Cell::Num)[..]].concat());
     }
-    let models = [("cycle model (LIFO, latency 16)", false), ("Eq. 5 (list traversal)", true)];
+    let models = [("WSCG'03's chip (cycle model)", false), ("Eq. 5", true), ("DATE'05's chip, LIFO (cycle model)", true)];
     figs.push(Figure {
         stem: "wscg03_fig13_speedup",
-        title: format!("WSCG'03 Fig. 13: the chip at {WSCG_MHZ} MHz over software (Alg. 2) on this machine, all pairs"),
+        title: format!("WSCG'03 Fig. 13: the chip at {WSCG_MHZ} MHz over software (Alg. 2) on this machine, all pairs, WSCG'03's memory"),
         panels: vec![
-            panel("speed-up", DIST, "speed-up", by_distance(points, &models, |p, v| Some(p.sw_us[0][0] / if v == 0 { cyc_us(p) } else { eq5(p) / WSCG_MHZ }))),
-            panel("the chip's clocks per query", DIST, "clocks", by_distance(points, &models, |p, v| Some(if v == 0 { p.mean(|c| c.wscg_cycles as f64) } else { eq5(p) }))),
+            panel("speed-up", DIST, "speed-up", by_distance(points, &models, |p, v| Some(p.sw_us[0][0] / (clocks(p, v) / WSCG_MHZ)))),
+            panel("the chip's clocks per query", DIST, "clocks", by_distance(points, &models, |p, v| Some(clocks(p, v)))),
         ],
         table: t13,
     });
+    figs.push(side_by_side(points));
     figs
+}
+
+/// The two papers' chips on the same sweep and WSCG'03's memory, all pairs: clocks, DOP
+/// tests and tumbled-DOP transforms per clock (DATE'05's DOPTRF transforms in every test),
+/// memory words, and their traversal memory (D_CNTR's queue entries, two node pairs each;
+/// the Stack Engine's aligned pointers in its list SRAMs).
+fn side_by_side(points: &[Point]) -> Figure {
+    let chips = [("WSCG'03's chip", false), ("DATE'05's chip, LIFO", true)];
+    let mut t = Table {
+        columns: [&KEY[..], &["wscg03_clocks", "date05_clocks", "wscg03_dop_per_clock", "date05_dop_per_clock", "wscg03_transforms_per_clock", "date05_transforms_per_clock", "wscg03_words", "date05_words", "wscg03_list_pointers", "date05_queue_entries"]].concat(),
+        rows: vec![],
+    };
+    let per_clock = |p: &Point, f: fn(&PoseCounts) -> u64, clocks: fn(&PoseCounts) -> u64| p.mean(|c| f(c) as f64) / p.mean(|c| clocks(c) as f64).max(1.0);
+    // all pairs, both chips test the golden traversal's DOP pairs (tb/wscg03.rs,
+    // tb/cycle_chip.rs): one count; DATE'05 transforms in every test
+    for p in points {
+        let nums = [
+            p.mean(|c| c.stack_cycles as f64),
+            p.mean(|c| c.wscg_cycles as f64),
+            per_clock(p, |c| c.stack_dop_tests, |c| c.stack_cycles),
+            per_clock(p, |c| c.stack_dop_tests, |c| c.wscg_cycles),
+            per_clock(p, |c| c.stack_transforms, |c| c.stack_cycles),
+            per_clock(p, |c| c.stack_dop_tests, |c| c.wscg_cycles),
+            p.mean(|c| c.stack_words as f64),
+            p.mean(|c| c.wscg_words as f64),
+        ];
+        let mem = [Cell::Int(p.max(|c| c.stack_pointers)), Cell::Int(p.max(|c| c.wscg_entries))];
+        t.rows.push([&key(p)[..], &nums.map(Cell::Num)[..], &mem[..]].concat());
+    }
+    let y = |p: &Point, v: usize| Some(p.mean(|c| if v == 0 { c.stack_cycles } else { c.wscg_cycles } as f64));
+    Figure {
+        stem: "wscg03_vs_date05",
+        title: format!("WSCG'03's chip and DATE'05's on WSCG'03's memory at {WSCG_MHZ} MHz, all pairs"),
+        panels: vec![panel("clocks per query", DIST, "clocks", by_distance(points, &chips, y))],
+        table: t,
+    }
 }
 
 pub const PALETTE: [RGBColor; 9] = [

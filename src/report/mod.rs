@@ -132,6 +132,54 @@ pub fn stall_table(records: &[PoseRecord]) -> String {
     out
 }
 
+/// WSCG'03's chip (`[chip] architecture = "wscg03"`): where its compare units' clocks went
+/// (comparing, waiting for a node word, for the tumbled pair's transform, between lists,
+/// the Triangle Unit's drain), DOP tests and transforms per clock, its lists (tau), their
+/// mean aligned node pairs (alpha), clocks per list against WSCG'03 Eq. 5's, the start
+/// latency of a list whose pair was not transformed ahead (§4.1: 64), the speculative pairs used, interrupts for triangle words, the most pointers in the SRAMs.
+pub fn stack_table(records: &[PoseRecord]) -> String {
+    let mut out = String::new();
+    let _ = writeln!(
+        out,
+        "{:<28} {:>8} {:>7} {:>10} {:>6} {:>7} {:>7} {:>7} {:>7} {:>7} {:>6} {:>9} {:>9} {:>6} {:>6} {:>8} {:>7}",
+        "pose", "compare%", "memory%", "transform%", "list%", "drain%", "dop/c", "xf/c", "words/c", "lists", "alpha", "clk/list", "eq5/list", "start", "spec%", "interr", "sram"
+    );
+    for (key, g) in groups(records) {
+        let c: Vec<&CycleRecord> = g.iter().filter_map(|r| r.cycles.as_ref()).collect();
+        let st: Vec<&crate::cycle::wscg03::Stats> = c.iter().filter_map(|r| r.wscg03.as_ref()).collect();
+        if st.is_empty() {
+            continue;
+        }
+        let sum = |f: &dyn Fn(&crate::cycle::wscg03::Stats) -> u64| st.iter().map(|s| f(s)).sum::<u64>() as f64;
+        let cycles = sum(&|s| s.cycles).max(1.0);
+        let pc = |f: &dyn Fn(&crate::cycle::wscg03::Stats) -> u64| 100.0 * sum(f) / cycles;
+        let lists = sum(&|s| s.lists).max(1.0);
+        let words = c.iter().map(|r| r.memory.node_words + r.memory.tri_words).sum::<u64>() as f64;
+        let _ = writeln!(
+            out,
+            "{:<28} {:>8.1} {:>7.1} {:>10.1} {:>6.1} {:>7.1} {:>7.3} {:>7.3} {:>7.3} {:>7.1} {:>6.2} {:>9.1} {:>9.1} {:>6.1} {:>6.1} {:>8.1} {:>7}",
+            key,
+            pc(&|s| s.compare),
+            pc(&|s| s.stall_memory),
+            pc(&|s| s.stall_transform),
+            pc(&|s| s.stall_list),
+            pc(&|s| s.drain),
+            sum(&|s| s.dop_tests) / cycles,
+            sum(&|s| s.transforms) / cycles,
+            words / cycles,
+            lists / st.len() as f64,
+            sum(&|s| s.list_node_pairs) / lists,
+            sum(&|s| s.list_clocks) / lists,
+            figures::eq5_cycles(sum(&|s| s.lists) as u64, sum(&|s| s.list_node_pairs) as u64) / lists,
+            sum(&|s| s.cold_start) / sum(&|s| s.cold_lists).max(1.0),
+            100.0 * sum(&|s| s.spec_used) / sum(&|s| s.spec_pairs).max(1.0),
+            sum(&|s| s.interrupts) / st.len() as f64,
+            st.iter().map(|s| s.max_list_words).max().unwrap_or(0),
+        );
+    }
+    out
+}
+
 /// The memory model's traffic, one row per sweep distance (or pose): mean node and
 /// triangle words and KiB per query, the share of triangle tests whose A word was held
 /// (the triangle cache's hit rate, `[chip] tri_cache`), words per clock, and the share of
@@ -153,20 +201,28 @@ pub fn memory_table(records: &[PoseRecord]) -> String {
         let sum = |f: &dyn Fn(&CycleRecord) -> u64| c.iter().map(|r| f(r)).sum::<u64>() as f64;
         let cycles = sum(&|r| r.cycles).max(1.0);
         let st = |f: &dyn Fn(&Stats) -> u64| c.iter().filter_map(|r| r.stats.as_ref()).map(f).sum::<u64>() as f64;
+        // A's triangle words fetched (the cache's misses), on either chip
+        let wscg = |f: &dyn Fn(&crate::cycle::wscg03::Stats) -> u64| c.iter().filter_map(|r| r.wscg03.as_ref()).map(f).sum::<u64>() as f64;
+        let fetches_a = st(&|s| s.tri_fetches_a) + wscg(&|s| s.tri_fetches_a);
+        // WSCG'03's Memory Controller keeps no count of clocks with a request outstanding
+        let busy = match c.iter().any(|r| r.stats.is_some()) {
+            true => format!("{:.1}", 100.0 * st(&|s| s.memory_busy) / cycles),
+            false => "-".into(),
+        };
         let _ = writeln!(
             out,
-            "{:<28} {:>10.0} {:>10.0} {:>7} {:>10.1} {:>8.3} {:>7.1} {:>8.1} {:>9.0} {:>9.0} {:>9.0}",
+            "{:<28} {:>10.0} {:>10.0} {:>7} {:>10.1} {:>8.3} {:>7} {:>8.1} {:>9.0} {:>9.0} {:>9.0}",
             key,
             sum(&|r| r.memory.node_words) / n,
             sum(&|r| r.memory.tri_words) / n,
             match sum(&|r| r.tri_tests) {
                 0.0 => "-".to_string(),
-                t => format!("{:.1}", 100.0 * (1.0 - st(&|s| s.tri_fetches_a) / t)),
+                t => format!("{:.1}", 100.0 * (1.0 - fetches_a / t)),
             },
             sum(&|r| r.memory.bytes) / n / 1024.0,
             sum(&|r| r.memory.node_words + r.memory.tri_words) / cycles,
-            100.0 * st(&|s| s.memory_busy) / cycles,
-            100.0 * st(&|s| s.stall_memory) / cycles,
+            busy,
+            100.0 * (st(&|s| s.stall_memory) + wscg(&|s| s.stall_memory)) / cycles,
             sum(&|r| r.memory.page_hits) / n,
             sum(&|r| r.memory.page_misses) / n,
             sum(&|r| r.memory.bank_conflicts) / n,

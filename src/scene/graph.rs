@@ -113,6 +113,36 @@ impl Unit {
         }
     }
 
+    /// The name `--explain` shows in `s`: WSCG'03's units for its chip (the Stack Engine in
+    /// D_CNTR's place, the Memory Controller in the port's, the Triangle Unit, the Pointer
+    /// FIFO).
+    pub fn name_in(self, s: &Scene) -> &'static str {
+        if s.architecture != crate::chip::wscg03::Architecture::Wscg03 {
+            return self.name();
+        }
+        match self {
+            Unit::DCntr => "stack_engine",
+            Unit::MemoryPort => "memory_controller",
+            Unit::TriUnit => "triangle_unit",
+            Unit::ResultPort => "pointer_fifo",
+            u => u.name(),
+        }
+    }
+
+    /// What WSCG'03's units do in `s` (`None`: the unit is the same as DATE'05's).
+    fn does_wscg03(self, s: &Scene) -> Option<String> {
+        let w = &s.stack;
+        Some(match self {
+            Unit::DCntr => format!("WSCG'03's Stack Engine: lists of aligned pointers in two SRAMs (read latency {}), one list per tumbled sibling pair, left list first, step up when both are done; interrupts for triangle words", w.sram_latency),
+            Unit::MemoryPort => format!("WSCG'03's Memory Controller: node and triangle words in order, {} node words ahead of the compare units, A's triangle words through a {}-line cache, B's in a two-entry SRAM", w.word_buffer, s.cfg.tri_cache),
+            Unit::DopUnit => format!("WSCG'03's DOP Unit: two DOTADD units ({} stages) transform each tumbled pair once per list, and the left parent's children speculatively; an aligned DOP against both in ceil(node bits / {}) clocks, flags {} clocks later", w.dotadd_stages, w.data_bus_bits, w.compare_latency),
+            Unit::TriUnit => format!("WSCG'03's Triangle Unit: a pair every {} clocks, verdict {} clocks later (TRI_UNIT's T.CHECKs)", w.tri_interval, w.tri_latency),
+            Unit::ResultPort => "intersecting and uncertain pairs to the host, read at once".into(),
+            Unit::GoldenCheck => "the cycle model's pairs against the golden list traversal's (WSCG'03 Algorithm 2)".into(),
+            _ => return None,
+        })
+    }
+
     /// The level the unit runs at; `None` for an output.
     pub fn level(self) -> Option<Level> {
         use Unit::*;
@@ -129,6 +159,9 @@ impl Unit {
 
     /// What the unit does in `scene` (one line).
     pub fn does(self, s: &Scene) -> String {
+        if let Some(d) = (s.architecture == crate::chip::wscg03::Architecture::Wscg03).then(|| self.does_wscg03(s)).flatten() {
+            return d;
+        }
         let p = &s.params;
         let o = &s.outputs;
         match self {
@@ -326,12 +359,12 @@ impl Plan {
             let _ = writeln!(out, "stage {k}{together}");
             for u in units {
                 let level = format!("{:?}", u.level().expect("a unit")).to_lowercase();
-                let _ = writeln!(out, "  {:<17} {:<10} {}", u.name(), level, u.does(s));
+                let _ = writeln!(out, "  {:<17} {:<10} {}", u.name_in(s), level, u.does(s));
             }
         }
         let _ = writeln!(out, "outputs");
         for u in Unit::ALL.iter().filter(|u| u.level().is_none() && self.runs(**u)) {
-            let _ = writeln!(out, "  {:<17} {}", u.name(), u.does(s));
+            let _ = writeln!(out, "  {:<17} {}", u.name_in(s), u.does(s));
         }
         let skipped: Vec<&str> = Unit::ALL.iter().filter(|u| !self.runs(**u)).map(|u| u.name()).collect();
         if !skipped.is_empty() {

@@ -14,6 +14,9 @@
 //!                             # port at full speed, 800 MHz), "wscg03" (WSCG'03's DDR SDRAM
 //!                             # at 266 MHz, a 128-line triangle cache), "rtl" (the RTL's
 //!                             # reset values, the default); `cchip run --preset` replaces it
+//! architecture = "date05"     # the chip the cycle model runs: "date05" (D_CNTR) or "wscg03"
+//!                             # (WSCG'03's Stack Engine and list traversal; the wscg03
+//!                             # preset's); `cchip run --architecture` replaces it
 //! k = 24
 //! format = "binary32"         # or "reduced" (e8m15) or "eEmF"; "e8m15/binary32": the DOP
 //!                             # datapath's format / T.CHECK's (narrower node words)
@@ -86,6 +89,15 @@
 //!                             # preset's clock, assumed: DATE'05 800 MHz, WSCG'03 266 MHz);
 //!                             # `cchip run --technology` replaces it
 //! # clock_mhz = 800           # or an assumed clock instead of a technology
+//!
+//! [stack_engine]              # WSCG'03's chip (chip::wscg03::StackParams; default: these)
+//! sram_latency = 2            # list SRAM read to the Memory Controller
+//! dotadd_stages = 6           # a tumbled DOP is ready k + 6 clocks after its word
+//! data_bus_bits = 256         # an aligned DOP takes ceil(node bits / 256) clocks to compare
+//! compare_latency = 2         # last bundle to the overlap flags
+//! word_buffer = 2             # node words asked for ahead of the compare units
+//! tri_interval = 3            # the Triangle Unit takes a pair every 3 clocks
+//! tri_latency = 24            # and shows its verdict 24 clocks later
 //! ```
 
 pub mod graph;
@@ -98,6 +110,7 @@ use crate::chip::params::Params;
 use crate::chip::preset::Preset;
 use crate::chip::timing::{Clock, Technology};
 use crate::chip::reg::Mode;
+use crate::chip::wscg03::{Architecture, StackParams};
 use crate::pose::{sweep_poses, Pose, ScenePose, Sweep};
 use crate::traversal::Traversal;
 use serde::Deserialize;
@@ -123,6 +136,8 @@ struct File {
     memory: MemorySection,
     /// [`Params`], `technology` and `clock_mhz`, read in two steps ([`timing`]).
     timing: Option<Keys>,
+    #[serde(default)]
+    stack_engine: StackParams,
 }
 
 /// A section's keys, each with its place in the file.
@@ -149,9 +164,18 @@ fn over<T: serde::Serialize + serde::de::DeserializeOwned>(value: &T, keys: Keys
 }
 
 /// `[chip]`: the preset (the scene's, or `flag` over it; none: [`Preset::Rtl`], the RTL's reset
-/// point) and [`ChipConfig`]'s keys over its chip.
-fn chip(keys: Option<Keys>, text: &str, flag: Option<Preset>) -> Result<(Preset, ChipConfig), String> {
+/// point), the architecture (the scene's, else the preset's) and [`ChipConfig`]'s keys over
+/// its chip.
+fn chip(keys: Option<Keys>, text: &str, flag: Option<Preset>) -> Result<(Preset, Architecture, ChipConfig), String> {
     let mut keys = keys.unwrap_or_default();
+    let arch = match keys.remove("architecture") {
+        None => None,
+        Some(v) => {
+            let line = line_of(text, v.span().start);
+            let v = v.into_inner();
+            Some(Architecture::deserialize(v.clone()).map_err(|_| format!("{line}: [chip] architecture {v} is not known: use \"date05\" or \"wscg03\""))?)
+        }
+    };
     let named = match keys.remove("preset") {
         None => None,
         Some(v) => {
@@ -161,7 +185,8 @@ fn chip(keys: Option<Keys>, text: &str, flag: Option<Preset>) -> Result<(Preset,
         }
     };
     let preset = flag.or(named).unwrap_or(Preset::Rtl);
-    Ok((preset, over(&preset.chip(), keys, text, "[chip]", "")?))
+    let arch = arch.unwrap_or(preset.architecture());
+    Ok((preset, arch, over(&preset.chip(), keys, text, "[chip]", "")?))
 }
 
 /// `[timing]`: the chip's [`Params`] (each key optional, the preset's by default; the memory
@@ -412,6 +437,9 @@ pub struct Scene {
     pub objects: Objects,
     /// The configuration the scene's keys override.
     pub preset: Preset,
+    /// The chip the cycle model runs, and WSCG'03's timing.
+    pub architecture: Architecture,
+    pub stack: StackParams,
     pub cfg: ChipConfig,
     pub mode: Mode,
     pub traversal: Traversal,
@@ -433,11 +461,20 @@ pub struct Flags {
 impl Scene {
     /// The configuration the scene resolved to: its preset and every value it runs with.
     pub fn configuration(&self) -> String {
-        let (c, p) = (&self.cfg, &self.params);
+        let (c, p, w) = (&self.cfg, &self.params, &self.stack);
+        let timing = match self.architecture {
+            Architecture::Date05 => format!(
+                "timing: queue_entries {}, dop_latency {}, tri_latency {}, tri_fifo {}, issue_spacing {}, credit {}, outstanding {}, prefetch {}",
+                p.queue_entries, p.dop_latency, p.tri_latency, p.tri_fifo, p.issue_spacing, p.credit, p.outstanding, p.prefetch
+            ),
+            Architecture::Wscg03 => format!(
+                "stack_engine: sram_latency {}, dotadd_stages {}, data_bus_bits {}, compare_latency {}, word_buffer {}, tri_interval {}, tri_latency {}",
+                w.sram_latency, w.dotadd_stages, w.data_bus_bits, w.compare_latency, w.word_buffer, w.tri_interval, w.tri_latency
+            ),
+        };
         format!(
-            "configuration (preset {} and the scene's keys):\n  chip: k = {}, format {}, dop_rounding {}, tri_rounding {:?}, tri_cache {}, layout {:?}, node_cache {}\n  timing: queue_entries {}, dop_latency {}, tri_latency {}, tri_fifo {}, issue_spacing {}, credit {}, outstanding {}, prefetch {}\n  memory: {}\n  clock: {}",
-            self.preset.name(), c.k, c.format, c.dop_rounding, c.tri_rounding, c.tri_cache, c.layout, c.node_cache,
-            p.queue_entries, p.dop_latency, p.tri_latency, p.tri_fifo, p.issue_spacing, p.credit, p.outstanding, p.prefetch,
+            "configuration (preset {} and the scene's keys):\n  architecture: {}\n  chip: k = {}, format {}, dop_rounding {}, tri_rounding {:?}, tri_cache {}, layout {:?}, node_cache {}\n  {timing}\n  memory: {}\n  clock: {}",
+            self.preset.name(), self.architecture.name(), c.k, c.format, c.dop_rounding, c.tri_rounding, c.tri_cache, c.layout, c.node_cache,
             p.memory, self.clock.source()
         )
     }
@@ -478,7 +515,8 @@ impl Scene {
             }
         })?;
         let err = |m: String| format!("{name}: {m}");
-        let (preset, cfg) = chip(f.chip, text, flags.preset).map_err(|e| format!("{name}:{e}"))?;
+        let (preset, architecture, cfg) = chip(f.chip, text, flags.preset).map_err(|e| format!("{name}:{e}"))?;
+        f.stack_engine.check().map_err(err)?;
         cfg.check().map_err(|e| err(format!("[chip] {e}")))?;
         let poses = match (&f.sweep, f.pose.is_empty()) {
             (Some(_), false) => return Err(err("give either [[pose]] entries or a [sweep], not both".into())),
@@ -499,6 +537,8 @@ impl Scene {
             name: name.to_string(),
             objects: f.objects,
             preset,
+            architecture,
+            stack: f.stack_engine,
             cfg,
             mode: f.query.mode.unwrap_or(Mode::All),
             traversal: f.query.traversal.unwrap_or(Traversal::Lifo),
@@ -663,6 +703,14 @@ mod tests {
         assert_eq!(i.params.memory, Memory::Ideal(MemTiming::default()));
         let w = parse("[chip]\npreset = \"wscg03\"\n[timing]\ntechnology = \"paper\"").unwrap();
         assert_eq!((w.cfg.tri_cache, w.params.memory, w.clock.mhz()), (128, Memory::Ddr(Ddr::WSCG03), 266.0));
+        // the wscg03 preset runs WSCG'03's chip; a scene's architecture key over any preset
+        assert_eq!((w.architecture, d.architecture, rtl.architecture), (Architecture::Wscg03, Architecture::Date05, Architecture::Date05));
+        let a = parse("[chip]\npreset = \"wscg03\"\narchitecture = \"date05\"\n[stack_engine]\nword_buffer = 4").unwrap();
+        assert_eq!((a.architecture, a.cfg.tri_cache, a.stack.word_buffer), (Architecture::Date05, 128, 4));
+        let e = parse("[chip]\narchitecture = \"wscg04\"").unwrap_err();
+        assert!(e.starts_with("s:8:") && e.contains("\"date05\" or \"wscg03\""), "{e}");
+        let e = parse("[stack_engine]\ntri_interval = 0").unwrap_err();
+        assert!(e.contains("[stack_engine] tri_interval must be at least 1"), "{e}");
         // --preset replaces the scene's preset, not its keys
         let f = Scene::parse_with(&format!("{base}[chip]\npreset = \"date05\"\nk = 6"), "s", Flags { preset: Some(Preset::Rtl), ..Default::default() }).unwrap();
         assert_eq!((f.preset, f.cfg.k, f.params), (Preset::Rtl, 6, Params::RTL));

@@ -55,7 +55,8 @@ pub struct CycleRecord {
     /// TRI_UNIT) the chip ran: in all-pairs queries the golden model's counts.
     pub dop_tests: u64,
     pub tri_tests: u64,
-    /// Most queue entries (two node pairs each) waiting at once.
+    /// Most queue entries (two node pairs each) waiting at once; WSCG'03's chip: most
+    /// aligned pointers in its list SRAMs.
     pub max_entries: u64,
     pub overflow: bool,
     /// The memory model's traffic.
@@ -63,6 +64,9 @@ pub struct CycleRecord {
     /// Where the clocks went (scenes asking for cycles or memory).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub stats: Option<crate::cycle::chip::Stats>,
+    /// WSCG'03's chip: where its clocks went, its lists and transforms.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub wscg03: Option<crate::cycle::wscg03::Stats>,
     /// The traversal VCD written, if any.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub vcd: Option<String>,

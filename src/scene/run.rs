@@ -12,6 +12,8 @@ use crate::query::{exact_pairs, Accuracy, Chip};
 use super::record::{CycleRecord, MemoryRecord, PoseRecord};
 use crate::traversal::QueryResult;
 use crate::chip::reg::Mode;
+use crate::chip::wscg03::Architecture;
+use crate::traversal::Traversal;
 use serde::Serialize;
 
 /// What a scene run built and ran (counted where it happens, not inferred from the
@@ -68,7 +70,11 @@ impl<'s> Prepared<'s> {
     pub fn new(scene: &'s Scene, load: impl Fn(&str) -> Result<crate::mesh::Mesh, String>) -> Result<Self, String> {
         let named = |e: String| format!("{}: {e}", scene.name);
         let plan = Plan::of(scene);
-        if plan.runs(Unit::DCntr) && scene.traversal.order().is_none() {
+        let wscg03 = scene.architecture == Architecture::Wscg03;
+        if wscg03 && (plan.cross_check.is_some() || scene.outputs.waveforms.is_some()) {
+            return Err(named("WSCG'03's chip ([chip] architecture = \"wscg03\") is an event model with no RTL and no probes: drop cross_check and waveforms, or set architecture = \"date05\"".into()));
+        }
+        if plan.runs(Unit::DCntr) && !wscg03 && scene.traversal.order().is_none() {
             return Err(named(format!(
                 "cycles, memory, waveforms and cross-checks come from the chip's D_CNTR, which runs the fifo or lifo traversal, not {:?}: set [query] traversal",
                 scene.traversal
@@ -154,6 +160,9 @@ impl<'s> Prepared<'s> {
     }
 
     fn cycles(&self, i: usize, sp: &ScenePose, res: &QueryResult, software_us: f64, counts: &Counts) -> Result<CycleRecord, String> {
+        if self.scene.architecture == Architecture::Wscg03 {
+            return self.stack_cycles(i, sp, res, software_us, counts);
+        }
         let (s, plan, chip) = (self.scene, &self.plan, &self.chip);
         let order = s.traversal.order().expect("checked in Prepared::new");
         let setup = chip.setup(&sp.pose);
@@ -219,36 +228,68 @@ impl<'s> Prepared<'s> {
                 Some(CrossCheck::Verilog)
             }
         };
-        let (hits, unc) = trace.pairs();
-        let layout = &chip.layout;
-        Ok(CycleRecord {
-            cycles: trace.cycles,
-            period_ns: s.clock.period_ns,
-            chip_us: trace.cycles as f64 * s.clock.period_ns / 1000.0,
-            // the host's share: Prepared::run measures it after every pose ran
-            host_setup_us: 0.0,
-            settle_us: 0.0,
-            end_to_end_us: 0.0,
-            software_us,
-            hits: hits.len(),
-            uncertain: unc.len(),
-            uncertain_pairs: unc,
-            dop_tests: trace.dop_tests,
-            tri_tests: trace.tri_tests,
-            max_entries: trace.max_depth,
-            overflow: trace.overflow,
-            memory: MemoryRecord {
-                node_words: trace.node_fetches,
-                tri_words: trace.tri_fetches,
-                bytes: trace.node_fetches * layout.record_bytes()[0] + trace.tri_fetches * layout.record_bytes()[1],
-                page_hits: trace.memory.page_hits,
-                page_misses: trace.memory.page_misses,
-                bank_conflicts: trace.memory.bank_conflicts,
-            },
-            stats,
-            vcd: vcd.map(|p| p.display().to_string()),
-            cross_checked: cross_checked.map(|c| c.to_string()),
-        })
+        let mut r = record(chip, &trace, s.clock.period_ns, software_us);
+        (r.stats, r.vcd, r.cross_checked) = (stats, vcd.map(|p| p.display().to_string()), cross_checked.map(|c| c.to_string()));
+        Ok(r)
+    }
+
+    /// One pose on WSCG'03's chip ([`cycle::wscg03`]), checked against the golden list
+    /// traversal (WSCG'03 Algorithm 2), all pairs.
+    fn stack_cycles(&self, i: usize, sp: &ScenePose, res: &QueryResult, software_us: f64, counts: &Counts) -> Result<CycleRecord, String> {
+        let (s, chip) = (self.scene, &self.chip);
+        let run = cycle::wscg03::run_query(chip, &chip.setup(&sp.pose), s.mode, &s.params, &s.stack).map_err(|e| format!("pose {i}: {e}"))?;
+        counts.add(|a| {
+            a.cycle_runs += 1;
+            a.counted_runs += 1;
+            a.cycle_clocks += run.trace.cycles;
+        });
+        if self.plan.runs(Unit::GoldenCheck) {
+            let golden = match (s.mode, s.traversal) {
+                (Mode::All, Traversal::List) => res.clone(),
+                _ => chip.query(&sp.pose, Mode::All, Traversal::List),
+            };
+            if let Err(e) = run.trace.check(s.mode, &golden) {
+                return Err(format!("pose {i}: WSCG'03's chip disagrees with the golden list traversal: {e}"));
+            }
+        }
+        let mut r = record(chip, &run.trace, s.clock.period_ns, software_us);
+        r.wscg03 = Some(run.stats);
+        Ok(r)
+    }
+}
+
+/// A cycle-model trace as a record (no stall counts, VCD or cross-check yet).
+fn record(chip: &Chip, trace: &cycle::drive::ChipTrace, period_ns: f64, software_us: f64) -> CycleRecord {
+    let (hits, unc) = trace.pairs();
+    let layout = &chip.layout;
+    CycleRecord {
+        cycles: trace.cycles,
+        period_ns,
+        chip_us: trace.cycles as f64 * period_ns / 1000.0,
+        // the host's share: Prepared::run measures it after every pose ran
+        host_setup_us: 0.0,
+        settle_us: 0.0,
+        end_to_end_us: 0.0,
+        software_us,
+        hits: hits.len(),
+        uncertain: unc.len(),
+        uncertain_pairs: unc,
+        dop_tests: trace.dop_tests,
+        tri_tests: trace.tri_tests,
+        max_entries: trace.max_depth,
+        overflow: trace.overflow,
+        memory: MemoryRecord {
+            node_words: trace.node_fetches,
+            tri_words: trace.tri_fetches,
+            bytes: trace.node_fetches * layout.record_bytes()[0] + trace.tri_fetches * layout.record_bytes()[1],
+            page_hits: trace.memory.page_hits,
+            page_misses: trace.memory.page_misses,
+            bank_conflicts: trace.memory.bank_conflicts,
+        },
+        stats: None,
+        wscg03: None,
+        vcd: None,
+        cross_checked: None,
     }
 }
 

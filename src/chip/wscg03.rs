@@ -1,0 +1,90 @@
+//! WSCG'03's CollisionChip (§4, Fig. 4) in the contract: which of the two papers' chips a
+//! query runs ([`Architecture`]), and the timing of WSCG'03's Stack Engine, DOP Unit and
+//! Triangle Unit ([`StackParams`]). Its memory is [`Params::memory`](super::params::Params),
+//! shared with DATE'05's chip; the cycle model is [`cycle::wscg03`](crate::cycle).
+
+use serde::{Deserialize, Serialize};
+
+/// The chip a query runs on: DATE'05's (D_CNTR, one DOP test per clock) or WSCG'03's
+/// (the Stack Engine's lists, a tumbled sibling pair transformed once per list).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize, clap::ValueEnum)]
+#[serde(rename_all = "kebab-case")]
+pub enum Architecture {
+    #[default]
+    Date05,
+    Wscg03,
+}
+
+impl Architecture {
+    pub fn name(self) -> &'static str {
+        match self {
+            Architecture::Date05 => "date05",
+            Architecture::Wscg03 => "wscg03",
+        }
+    }
+}
+
+/// WSCG'03's timing. The paper gives the DOTADD pipeline (§5.2: 6 stages), the on-chip
+/// data bus (§4.1: 256 bits, so an aligned DOP against the tumbled pair takes 4 clocks at
+/// k = 24, binary32), the Memory Controller's buffer (§4.4: a node pair) and the Triangle
+/// Unit's rate (§4.3: a pair every 3 clocks); the rest is our assumption
+/// (docs/ARCHITECTURE.md, "WSCG'03's chip").
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct StackParams {
+    /// Clocks from the Stack Engine's read of a list SRAM to the pointer at the Memory
+    /// Controller (assumed: 2, a synchronous SRAM's read and the address register).
+    pub sram_latency: u32,
+    /// DOTADD pipeline stages (§5.2: 6); a DOTADD unit writes one transformed d' per clock,
+    /// so a tumbled DOP is transformed k + `dotadd_stages` clocks after its word is present.
+    pub dotadd_stages: u32,
+    /// The DOP Unit's data bus (§4.1: 256 bits): an aligned node word streams through the
+    /// 16 compare units in `ceil(node bits / data_bus_bits)` clocks.
+    pub data_bus_bits: u32,
+    /// Clocks from an aligned DOP's last bundle to its overlap flags at the Stack Engine
+    /// (assumed: 2, the compare units and the NOR).
+    pub compare_latency: u32,
+    /// Node words the Memory Controller asks for ahead of the compare units (§4.4: a node
+    /// pair, 2 of our words).
+    pub word_buffer: u32,
+    /// Clocks between two triangle pairs entering the Triangle Unit (§4.3: 3).
+    pub tri_interval: u32,
+    /// Clocks from a triangle pair entering the Triangle Unit to its verdict (assumed: 24,
+    /// two DOTADD rows of 6 stages each fed for 3 clocks, the ITU's 2 clocks to the first
+    /// edge, 3 edges and a verdict register).
+    pub tri_latency: u32,
+}
+
+impl Default for StackParams {
+    fn default() -> Self {
+        StackParams::PAPER
+    }
+}
+
+impl StackParams {
+    /// WSCG'03's numbers and our assumptions where it is silent.
+    pub const PAPER: StackParams = StackParams {
+        sram_latency: 2,
+        dotadd_stages: 6,
+        data_bus_bits: 256,
+        compare_latency: 2,
+        word_buffer: 2,
+        tri_interval: 3,
+        tri_latency: 24,
+    };
+
+    /// Errors name the parameter out of range.
+    pub fn check(&self) -> Result<(), String> {
+        let at_least_one = [
+            ("data_bus_bits", self.data_bus_bits),
+            ("compare_latency", self.compare_latency),
+            ("word_buffer", self.word_buffer),
+            ("tri_interval", self.tri_interval),
+            ("tri_latency", self.tri_latency),
+        ];
+        match at_least_one.iter().find(|(_, v)| *v == 0) {
+            Some((n, _)) => Err(format!("[stack_engine] {n} must be at least 1")),
+            None => Ok(()),
+        }
+    }
+}

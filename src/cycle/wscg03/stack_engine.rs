@@ -1,0 +1,249 @@
+//! WSCG'03's Stack Engine (§4.2): it processes a list of aligned node pointers against a
+//! tumbled sibling pair, reading the pointers one per clock from its list SRAM and passing
+//! them to the Memory Controller; each overlap flag appends the aligned node's children
+//! (or the node itself, a leaf) to the new list of the tumbled sibling it overlaps, the
+//! left sibling's list in the left SRAM, the right's in the right SRAM (§3: two lists
+//! produced at once). When a list is done it recurses one level down, left list first,
+//! then the right one, then steps up (its stack of list pointers per level and branch is
+//! this recursion). Overlapping leaves go to the Triangle Unit; if its words are not held,
+//! list processing is interrupted until they arrive. A tumbled leaf's list holds the
+//! aligned nodes to test against that leaf itself (Algorithm 2's overloaded call).
+//! The lists, tests and verdicts are those of the golden list traversal
+//! ([`traversal::list`](crate::traversal::list)).
+
+use super::dop_unit::DopUnit;
+use super::tri_unit::TriUnit;
+use super::{ListRecord, MemCtl, Stats};
+use crate::chip::layout::Dst;
+use crate::dop::{DopTree, Node};
+use crate::golden::memory::ObjectImage;
+
+pub(super) struct StackEngine<'a> {
+    pub a: &'a ObjectImage,
+    pub b: &'a ObjectImage,
+    pub sram_latency: u64,
+    pub word_buffer: usize,
+    pub mem: MemCtl,
+    pub dop: DopUnit<'a>,
+    pub tri: TriUnit<'a>,
+    /// `(clock of the verdict, A's triangle, B's triangle, uncertain)`.
+    pub results: Vec<(u64, u32, u32, bool)>,
+    /// First-hit mode: the clock of the first sure verdict stops the traversal.
+    pub first: bool,
+    stop_at: Option<u64>,
+    halted: bool,
+    /// The clock the next list starts; the last verdict's clock.
+    next_list: u64,
+    last_verdict: u64,
+    /// Aligned pointers in the list SRAMs (lists written and not yet done).
+    live_words: u64,
+    pub stats: Stats,
+    /// Each list's timeline, in the order processed.
+    pub timeline: Vec<ListRecord>,
+}
+
+/// One list being processed: its start, its first pointer's clock at the Memory
+/// Controller, when its tumbled pair's d' are ready, and its aligned words' clocks.
+struct ListRun {
+    t0: u64,
+    ptr: u64,
+    ready: u64,
+    present: Vec<u64>,
+    ends: Vec<u64>,
+    /// The list resumes fetching aligned words after an interrupt from this clock.
+    resume: u64,
+}
+
+impl<'a> StackEngine<'a> {
+    #[allow(clippy::too_many_arguments)]
+    pub fn new(a: &'a ObjectImage, b: &'a ObjectImage, sram_latency: u32, word_buffer: u32, mem: MemCtl, dop: DopUnit<'a>, tri: TriUnit<'a>, first: bool) -> Self {
+        StackEngine {
+            a,
+            b,
+            sram_latency: sram_latency as u64,
+            word_buffer: word_buffer as usize,
+            mem,
+            dop,
+            tri,
+            results: vec![],
+            first,
+            stop_at: None,
+            halted: false,
+            next_list: 1,
+            last_verdict: 0,
+            live_words: 0,
+            stats: Stats::default(),
+            timeline: vec![],
+        }
+    }
+
+    /// The traversal from the roots (the first list: B's root against A's root), started
+    /// at clock 0; books the clocks to [`Stats`].
+    pub fn run(&mut self) {
+        self.live_words = 1;
+        self.list(vec![DopTree::ROOT], vec![DopTree::ROOT], 0);
+        let s = &mut self.stats;
+        s.cycles = self.next_list.max(self.last_verdict + 1);
+        s.drain = s.cycles - self.dop.compare_free().min(s.cycles);
+    }
+
+    /// One list of aligned nodes against the tumbled `group` (a sibling pair, or a leaf
+    /// alone), then the lists it produced, left first.
+    fn list(&mut self, group: Vec<u32>, list: Vec<u32>, level: u32) {
+        if self.halted {
+            return;
+        }
+        let s = &mut self.stats;
+        s.lists += 1;
+        s.list_node_pairs += list.len().div_ceil(2) as u64;
+        s.max_level = s.max_level.max(level as u64);
+        let t0 = self.next_list;
+        let leaves: Vec<u32> = group.iter().filter_map(|&x| leaf(self.b, x)).collect();
+        self.tri.new_group(&leaves);
+        let ptr = t0 + self.sram_latency;
+        let (ready, held) = self.tumbled(&group, ptr);
+        let mut run = ListRun { t0, ptr, ready, present: vec![], ends: vec![], resume: 0 };
+        let out = self.stream(&group, &list, &mut run);
+        let first_compare = run.ends.first().map(|&e| e - self.dop.beats());
+        if let Some(c) = first_compare.filter(|_| !held) {
+            self.stats.cold_lists += 1;
+            self.stats.cold_start += c - t0;
+        }
+        self.timeline.push(ListRecord { t0, held, ready, first_compare, next: self.next_list, len: list.len() });
+        self.stats.list_clocks += self.next_list - t0;
+        self.live_words += out.iter().map(|l| l.len() as u64).sum::<u64>();
+        self.stats.max_list_words = self.stats.max_list_words.max(self.live_words);
+        self.live_words -= list.len() as u64;
+        for (&x, l) in group.iter().zip(out) {
+            if l.is_empty() {
+                continue;
+            }
+            let g = match self.b.tree.nodes[x as usize] {
+                Node::Inner(ch) => ch.to_vec(),
+                Node::Leaf(_) => vec![x],
+            };
+            self.list(g, l, level + 1);
+        }
+    }
+
+    /// The tumbled group's d' (held, or fetched and transformed) and the speculative
+    /// prefetch of the left parent's children: the clock the group is ready, and whether
+    /// it was held.
+    fn tumbled(&mut self, group: &[u32], ptr: u64) -> (u64, bool) {
+        let held = self.dop.held(group);
+        let ready = held.unwrap_or_else(|| {
+            let words: Vec<(u32, u64)> = group.iter().map(|&x| (x, self.mem.fetch(ptr, Dst::NodeB, x))).collect();
+            self.dop.load(&words)
+        });
+        if let Node::Inner(ch) = self.b.tree.nodes[group[0] as usize] {
+            if !self.dop.speculated(&ch) {
+                let words: Vec<(u32, u64)> = ch.iter().map(|&x| (x, self.mem.fetch(ptr, Dst::NodeB, x))).collect();
+                self.dop.speculate(&words);
+            }
+        }
+        (ready, held.is_some())
+    }
+
+    /// The earliest clock aligned word `j` may be asked for: its pointer read, a place in
+    /// the Memory Controller's buffer, no interrupt.
+    fn earliest(&self, r: &ListRun, j: usize) -> u64 {
+        let room = if j >= self.word_buffer { r.ends[j - self.word_buffer] } else { 0 };
+        (r.ptr + j as u64).max(room).max(r.resume)
+    }
+
+    fn ask(&mut self, r: &mut ListRun, list: &[u32]) {
+        let j = r.present.len();
+        let t = self.earliest(r, j);
+        r.present.push(self.mem.fetch(t, Dst::NodeA, list[j]));
+    }
+
+    /// Streams `list` through the compare units: the lists for each member of `group`.
+    fn stream(&mut self, group: &[u32], list: &[u32], r: &mut ListRun) -> Vec<Vec<u32>> {
+        let mut out = vec![vec![]; group.len()];
+        let mut last_flags = r.t0;
+        for (i, &n) in list.iter().enumerate() {
+            while r.present.len() <= i {
+                self.ask(r, list);
+            }
+            if self.stop_at.is_some_and(|v| self.dop.start(r.present[i], r.ready) > v) {
+                self.halted = true;
+                break;
+            }
+            let from = self.dop.compare_free();
+            let (start, end) = self.dop.compare(r.present[i], r.ready);
+            self.book(r, from, start, end, r.present[i]);
+            r.ends.push(end);
+            let f = self.dop.flags(end);
+            last_flags = f;
+            // the words asked for before these flags (and an interrupt they cause)
+            while r.present.len() < list.len().min(i + 1 + self.word_buffer) && self.earliest(r, r.present.len()) <= f {
+                self.ask(r, list);
+            }
+            let na = self.a.tree.nodes[n as usize];
+            for (m, &x) in group.iter().enumerate() {
+                if !self.dop.overlap(n, x) {
+                    continue;
+                }
+                match (na, self.b.tree.nodes[x as usize]) {
+                    (Node::Leaf(ta), Node::Leaf(tb)) => self.leaf_pair(f, ta, tb, r),
+                    (Node::Inner(ch), _) => out[m].extend(ch),
+                    (Node::Leaf(_), Node::Inner(_)) => out[m].push(n),
+                }
+            }
+        }
+        self.next_list = last_flags + 1;
+        out
+    }
+
+    /// An overlapping leaf pair flagged at clock `f`: its triangle words (an interrupt if
+    /// one is not held), the Triangle Unit, a result for the host.
+    fn leaf_pair(&mut self, f: u64, ta: u32, tb: u32, r: &mut ListRun) {
+        let misses = self.tri.misses(ta, tb);
+        let mut present = f + 1;
+        for (miss, d, id) in [(misses[0], Dst::TriA, ta), (misses[1], Dst::TriB, tb)] {
+            if miss {
+                present = present.max(self.mem.fetch(f, d, id));
+            }
+        }
+        if misses[0] || misses[1] {
+            self.stats.interrupts += 1;
+            self.stats.tri_fetches_a += misses[0] as u64;
+            r.resume = r.resume.max(present);
+        }
+        if self.stop_at.is_some_and(|v| self.tri.when(present) > v) {
+            return;
+        }
+        let (take, res) = self.tri.take(present, ta, tb);
+        let v = self.tri.verdict(take);
+        self.last_verdict = self.last_verdict.max(v);
+        if res.hit || res.uncertain {
+            self.results.push((v, ta, tb, res.uncertain));
+        }
+        if self.first && res.hit && !res.uncertain && self.stop_at.is_none() {
+            self.stop_at = Some(v);
+        }
+    }
+
+    /// Books the compare units' clocks from `from` to `end`: between lists (the Stack
+    /// Engine's switch), waiting for what came last (the tumbled pair's d', or the aligned
+    /// word), comparing.
+    fn book(&mut self, r: &ListRun, from: u64, start: u64, end: u64, present: u64) {
+        let s = &mut self.stats;
+        let switched = r.t0.max(from).min(start);
+        s.stall_list += switched - from;
+        let gap = start - switched;
+        if r.ready >= present {
+            s.stall_transform += gap;
+        } else {
+            s.stall_memory += gap;
+        }
+        s.compare += end - start;
+    }
+}
+
+fn leaf(o: &ObjectImage, x: u32) -> Option<u32> {
+    match o.tree.nodes[x as usize] {
+        Node::Leaf(t) => Some(t),
+        Node::Inner(_) => None,
+    }
+}

@@ -1,0 +1,184 @@
+//! WSCG'03's chip in the cycle model (`src/cycle/wscg03`): its answers are the golden list
+//! traversal's (WSCG'03 Algorithm 2) on random configurations and memories, every clock is
+//! booked to one cause, and small lists follow timelines derived by hand.
+
+use collision_chip::chip::config::{ChipConfig, DopRounding, Formats};
+use collision_chip::chip::memory::{Ddr, MemTiming, Memory};
+use collision_chip::chip::params::Params;
+use collision_chip::chip::reg::Mode;
+use collision_chip::chip::rtl::ChipKind;
+use collision_chip::chip::wscg03::StackParams;
+use collision_chip::cycle::wscg03::{run_query, ListRecord};
+use collision_chip::format::{Format, Rounding};
+use collision_chip::mesh::soup;
+use collision_chip::pose::Pose;
+use collision_chip::query::Chip;
+use collision_chip::traversal::Traversal;
+use nalgebra::Point3;
+use proptest::prelude::*;
+
+fn memory() -> impl Strategy<Value = Memory> {
+    prop_oneof![
+        (1u32..=6, 1u32..=3, prop::option::of(16u32..=1024)).prop_map(|(latency, interval, bus_bits)| Memory::Ideal(MemTiming { latency, interval, bus_bits })),
+        Just(Memory::Ddr(Ddr::WSCG03)),
+        (1u32..=4, 6u32..=12, 5u32..=8, 0u32..=3, 0u32..=4, 0u32..=12).prop_map(|(banks, page, bus, burst, hit, miss)| {
+            let burst = 1 << burst;
+            Memory::Ddr(Ddr { banks, page_bytes: 1 << page, bus_bits: 1 << bus, burst, hit: burst + hit, miss: burst + hit + miss })
+        }),
+    ]
+}
+
+fn stack_params() -> impl Strategy<Value = StackParams> {
+    (0u32..=4, 0u32..=8, prop::sample::select(vec![64u32, 256, 1024]), 1u32..=4, 1u32..=6, 1u32..=4, 1u32..=60).prop_map(
+        |(sram_latency, dotadd_stages, data_bus_bits, compare_latency, word_buffer, tri_interval, tri_latency)| StackParams {
+            sram_latency,
+            dotadd_stages,
+            data_bus_bits,
+            compare_latency,
+            word_buffer,
+            tri_interval,
+            tri_latency,
+        },
+    )
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 160, failure_persistence: None, .. ProptestConfig::default() })]
+
+    /// Any k, formats, rounding, triangle cache, memory and WSCG'03 timing: the chip reports
+    /// the golden list traversal's sure hits and uncertain pairs (first hit: pairs of it,
+    /// and a hit exactly when it has one), and in all-pairs mode tests the same DOP pairs,
+    /// overlaps, triangle pairs, lists and aligned node pairs (Eq. 5's tau and alpha); every
+    /// clock is booked to one cause; a list's d' are never ready before its start.
+    #[test]
+    fn answers_as_the_golden_list_traversal(
+        k in prop::sample::select(vec![6usize, 14, 18, 24, 26]), dop_b32: bool, tri_b32: bool, outward: bool,
+        tri_cache in prop::sample::select(vec![1u32, 4, 128]),
+        na in 1usize..=100, nb in 1usize..=100, sa: u64, sb: u64,
+        rot in prop::array::uniform3(0.0f64..360.0), t in prop::array::uniform3(-0.4f64..0.4),
+        first: bool, memory in memory(), sp in stack_params(),
+    ) {
+        let f = |b32| if b32 { Format::BINARY32 } else { Format::REDUCED };
+        let cfg = ChipConfig {
+            k,
+            format: Formats { dop: f(dop_b32), tri: f(tri_b32) },
+            dop_rounding: if outward { DopRounding::Outward } else { DopRounding::NearestEven },
+            tri_rounding: Rounding::NearestEven,
+            tri_cache,
+        };
+        let chip = Chip::new(&soup(na, sa).triangles_f64(), &soup(nb, sb).triangles_f64(), cfg).unwrap();
+        let pose = Pose::new(rot[0], rot[1], rot[2], t[0], t[1], t[2]);
+        let mode = if first { Mode::First } else { Mode::All };
+        let golden = chip.query(&pose, Mode::All, Traversal::List);
+        let p = Params { memory, ..Params::RTL };
+        let run = run_query(&chip, &chip.setup(&pose), mode, &p, &sp).unwrap();
+        let (tr, s) = (&run.trace, &run.stats);
+        prop_assert!(tr.check(mode, &golden).is_ok(), "{:?}\n{}", tr.check(mode, &golden), tr.text());
+        if !first {
+            let g = golden.counters;
+            prop_assert_eq!((s.dop_tests, s.dop_overlaps, tr.tri_tests), (g.dop_tests, g.dop_overlaps, g.tri_tests));
+            prop_assert_eq!((s.lists, s.list_node_pairs), (g.lists, g.list_node_pairs));
+            prop_assert_eq!(run.lists.len() as u64, s.lists);
+        }
+        prop_assert_eq!(s.compare + s.stall_memory + s.stall_transform + s.stall_list + s.drain, s.cycles, "{:?} {:?}", s, run.lists);
+        prop_assert_eq!(tr.cycles, s.cycles);
+        prop_assert!(tr.results.iter().all(|r| r.0 < tr.cycles));
+        prop_assert!(run.lists.iter().all(|l| l.first_compare.is_none_or(|c| c >= l.ready && c > l.t0)));
+    }
+}
+
+/// Two unit squares, one in the plane z = 0, one in y = 0 through it (two triangles each).
+fn squares() -> (Vec<[Point3<f64>; 3]>, Vec<[Point3<f64>; 3]>) {
+    let p = Point3::new;
+    let flat = vec![[p(0., 0., 0.), p(1., 0., 0.), p(1., 1., 0.)], [p(0., 0., 0.), p(1., 1., 0.), p(0., 1., 0.)]];
+    let upright = vec![[p(0., 0.5, -0.5), p(1., 0.5, -0.5), p(1., 0.5, 0.5)], [p(0., 0.5, -0.5), p(1., 0.5, 0.5), p(0., 0.5, 0.5)]];
+    (upright, flat)
+}
+
+/// The hand-derived timelines on the k = 6 e8m15 chip (a node word of 209 bits: one clock
+/// on the 256-bit data bus) with a memory answering in the next cycle, one word per clock,
+/// and WSCG'03's timing (SRAM 2, DOTADD 6 stages, compare latency 2):
+///
+/// List 1 (B's root against [A's root]) starts at clock 1, its pointer reaches the Memory
+/// Controller at 3; B's root asked for at 3 is answered in cycle 4, present at 5;
+/// transformed by clock 5 + k + 6 = 17. The left parent (B's root) has children: asked for
+/// at 4 and 5, present at 6 and 7; the left DOTADD is busy until 5 + k = 11, so child 1
+/// is ready at 11 + 12 = 23, child 2 at 7 + 12 = 19: the speculative pair at 23. A's root
+/// is asked for at 6 (after those), present at 8. The compare waits for the transform:
+/// clock 17 (16 clocks of start latency after the list's start), flags at 17 + 2 = 19.
+///
+/// Apart (no overlap): nothing follows; the query ends at clock 20 (1 clock of start, 16
+/// waiting for the transform, 1 compare, 2 of flags).
+///
+/// Overlapping: list 2 (B's children against A's root's children) starts at 20, its pair
+/// already transformed (ready at 23, hidden behind list 1); its first word asked at 22
+/// is present at 24, compared at 24: no transform wait.
+#[test]
+fn small_lists_follow_the_hand_derived_timeline() {
+    let (a, b) = squares();
+    let chip = Chip::new(&a, &b, ChipKind::K6E8m15.config()).unwrap();
+    let p = Params { memory: Memory::Ideal(MemTiming { latency: 1, interval: 1, bus_bits: None }), ..Params::RTL };
+    let sp = StackParams::PAPER;
+    let rec = |t0, held, ready, first, next, len| ListRecord { t0, held, ready, first_compare: Some(first), next, len };
+
+    let apart = Pose::new(0.0, 0.0, 0.0, 5.0, 0.0, 0.0);
+    let run = run_query(&chip, &chip.setup(&apart), Mode::All, &p, &sp).unwrap();
+    assert_eq!(run.lists, vec![rec(1, false, 17, 17, 20, 1)]);
+    let s = run.stats;
+    assert_eq!((s.cycles, s.stall_list, s.stall_transform, s.compare, s.drain), (20, 1, 16, 1, 2));
+    assert_eq!((s.transforms, s.spec_pairs, s.spec_used), (3, 1, 0));
+    assert_eq!((s.cold_lists, s.cold_start), (1, 16));
+
+    let touching = Pose::new(0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
+    let run = run_query(&chip, &chip.setup(&touching), Mode::All, &p, &sp).unwrap();
+    assert_eq!(run.lists[..2], [rec(1, false, 17, 17, 20, 1), rec(20, true, 23, 24, run.lists[1].next, 2)]);
+    assert_eq!(run.stats.spec_used, 1);
+    let golden = chip.query(&touching, Mode::All, Traversal::List);
+    run.trace.check(Mode::All, &golden).unwrap();
+    assert!(!golden.pairs.is_empty());
+}
+
+/// A long list hides the transform of the next pair: after a list of n aligned words at one
+/// word per clock, the speculative pair (ready 6 + 2 (k + 6) clocks into the list at most)
+/// is ready before the next list's first word, so that list waits for no transform. Checked
+/// on the squares scaled up to a few hundred triangles.
+#[test]
+fn long_lists_hide_the_transforms() {
+    let a = soup(300, 1).triangles_f64();
+    let chip = Chip::new(&a, &a, ChipKind::K6E8m15.config()).unwrap();
+    let p = Params { memory: Memory::Ideal(MemTiming { latency: 1, interval: 1, bus_bits: None }), ..Params::RTL };
+    let run = run_query(&chip, &chip.setup(&Pose::new(0.0, 0.0, 0.0, 0.0, 0.0, 0.0)), Mode::All, &p, &StackParams::PAPER).unwrap();
+    let k = 6;
+    let mut checked = 0;
+    for w in run.lists.windows(2) {
+        if w[1].held && w[0].len >= 2 * (k + 6) + 6 {
+            assert!(w[1].ready <= w[1].first_compare.unwrap(), "{w:?}");
+            assert!(w[1].ready <= w[1].t0 + StackParams::PAPER.sram_latency as u64 + 2, "the transform is not hidden: {w:?}");
+            checked += 1;
+        }
+    }
+    assert!(checked > 0, "no long list followed by a speculated pair");
+}
+
+/// A scene on WSCG'03's chip (`[chip] preset = "wscg03"`): the chip's pairs are the golden
+/// list traversal's (the run's golden check fails the run otherwise), whose pairs are the
+/// exact oracle's (no misses, no extras), every pose has its stall counts, and the explain
+/// names WSCG'03's units.
+#[test]
+fn a_scene_on_wscg03s_chip_answers_as_the_exact_oracle() {
+    use collision_chip::scene::{graph::Plan, run::Prepared, Scene};
+    let text = "[objects]\na = \"sphere:80\"\nb = \"torus:60\"\n[chip]\npreset = \"wscg03\"\n[sweep]\ndistances = [1.2, 0.6]\norientations = 2\n[outputs]\naccuracy = true\ncycles = true\nmemory = true\n";
+    let s = Scene::parse(text, "test").unwrap();
+    let explain = Plan::of(&s).explain(&s);
+    assert!(explain.contains("  stack_engine") && explain.contains("  triangle_unit") && !explain.contains("  d_cntr"), "{explain}");
+    let run = Prepared::new(&s, |spec| collision_chip::mesh::resolve(spec).map_err(|e| e.to_string())).unwrap().run(|| ()).unwrap();
+    assert!(run.records.iter().any(|r| r.pair_count > 0));
+    for r in &run.records {
+        let a = r.accuracy.as_ref().unwrap();
+        assert_eq!((a.misses, a.extras), (0, 0), "{r:?}");
+        let c = r.cycles.as_ref().unwrap();
+        assert!(c.stats.is_none() && c.wscg03.is_some_and(|w| w.cycles == c.cycles && w.lists > 0), "{c:?}");
+    }
+    let e = Scene::parse(&format!("{text}waveforms = \"w\"\n"), "t").map(|s| Prepared::new(&s, |spec| collision_chip::mesh::resolve(spec).map_err(|e| e.to_string())).err());
+    assert!(e.unwrap().unwrap().contains("no RTL and no probes"));
+}
