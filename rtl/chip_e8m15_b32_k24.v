@@ -29,7 +29,6 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
     // Constant declarations
     localparam  c_credit = 6'b10000;
     localparam  c_pf_max = 5'b1110;
-    localparam  c_one128 = 128'h1;
     
     // Stub signals
     reg  mode_lifo$d;
@@ -234,32 +233,16 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
     reg  [6:0] tc_mask$d;
     wire  [6:0] tc_mask$q;
     reg  tc_mask$clock;
-    reg  [127:0] ta_valid$d;
-    wire  [127:0] ta_valid$q;
-    reg  ta_valid$clock;
-    reg  [6:0] tc_id$read_address;
-    reg  tc_id$read_clock;
-    wire  [15:0] tc_id$read_data;
-    reg  [6:0] tc_id$write_address;
-    reg  tc_id$write_clock;
-    reg  [15:0] tc_id$write_data;
-    reg  tc_id$write_enable;
-    reg  [6:0] tc_word$read_address;
-    reg  tc_word$read_clock;
-    wire  [737:0] tc_word$read_data;
-    reg  [6:0] tc_word$write_address;
-    reg  tc_word$write_clock;
-    reg  [737:0] tc_word$write_data;
-    reg  tc_word$write_enable;
-    reg  tc_byp$d;
-    wire  tc_byp$q;
-    reg  tc_byp$clock;
-    reg  [15:0] ta_id$d;
-    wire  [15:0] ta_id$q;
-    reg  ta_id$clock;
-    reg  [737:0] ta_word$d;
-    wire  [737:0] ta_word$q;
-    reg  ta_word$clock;
+    reg  tri_cache$clock;
+    reg  tri_cache$clear;
+    reg  [6:0] tri_cache$mask;
+    reg  tri_cache$fill;
+    reg  [15:0] tri_cache$fill_id;
+    reg  [737:0] tri_cache$fill_word;
+    reg  [15:0] tri_cache$id;
+    reg  [15:0] tri_cache$next_id;
+    wire  tri_cache$hit;
+    wire  [737:0] tri_cache$word;
     reg  tb_ok$d;
     wire  tb_ok$q;
     reg  tb_ok$clock;
@@ -365,13 +348,6 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
     reg  [4:0] pf;
     reg  go;
     reg  leaf_out;
-    reg  [6:0] tc_line;
-    reg  [6:0] tc_next;
-    reg  [6:0] tc_wr;
-    reg  tc_fill;
-    reg  ta_ok;
-    reg  [15:0] ta_held_id;
-    reg  [737:0] ta_held;
     reg  need_ta;
     reg  need_tb;
     reg  tri_in;
@@ -630,43 +606,17 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         .q(tc_mask$q),
         .clock(tc_mask$clock)
     );
-    top$ta_valid ta_valid(
-        .d(ta_valid$d),
-        .q(ta_valid$q),
-        .clock(ta_valid$clock)
-    );
-    top$tc_id tc_id(
-        .read_address(tc_id$read_address),
-        .read_clock(tc_id$read_clock),
-        .read_data(tc_id$read_data),
-        .write_address(tc_id$write_address),
-        .write_clock(tc_id$write_clock),
-        .write_data(tc_id$write_data),
-        .write_enable(tc_id$write_enable)
-    );
-    top$tc_word tc_word(
-        .read_address(tc_word$read_address),
-        .read_clock(tc_word$read_clock),
-        .read_data(tc_word$read_data),
-        .write_address(tc_word$write_address),
-        .write_clock(tc_word$write_clock),
-        .write_data(tc_word$write_data),
-        .write_enable(tc_word$write_enable)
-    );
-    top$d_cntr$ent_second tc_byp(
-        .d(tc_byp$d),
-        .q(tc_byp$q),
-        .clock(tc_byp$clock)
-    );
-    top$d_cntr$last_a ta_id(
-        .d(ta_id$d),
-        .q(ta_id$q),
-        .clock(ta_id$clock)
-    );
-    top$ta_word ta_word(
-        .d(ta_word$d),
-        .q(ta_word$q),
-        .clock(ta_word$clock)
+    top$tri_cache tri_cache(
+        .clock(tri_cache$clock),
+        .clear(tri_cache$clear),
+        .mask(tri_cache$mask),
+        .fill(tri_cache$fill),
+        .fill_id(tri_cache$fill_id),
+        .fill_word(tri_cache$fill_word),
+        .id(tri_cache$id),
+        .next_id(tri_cache$next_id),
+        .hit(tri_cache$hit),
+        .word(tri_cache$word)
     );
     top$d_cntr$ent_second tb_ok(
         .d(tb_ok$d),
@@ -678,7 +628,7 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         .q(tb_id$q),
         .clock(tb_id$clock)
     );
-    top$ta_word tb_word(
+    top$tb_word tb_word(
         .d(tb_word$d),
         .q(tb_word$q),
         .clock(tb_word$clock)
@@ -823,25 +773,13 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         leaf_valid$d = leaf_valid$q;
         leaf_tag$d = leaf_tag$q;
         tc_mask$clock = clock;
-        ta_valid$clock = clock;
-        tc_byp$clock = clock;
-        ta_id$clock = clock;
-        ta_word$clock = clock;
         tb_ok$clock = clock;
         tb_id$clock = clock;
         tb_word$clock = clock;
         tc_mask$d = tc_mask$q;
-        ta_valid$d = ta_valid$q;
-        tc_byp$d = tc_byp$q;
-        ta_id$d = ta_id$q;
-        ta_word$d = ta_word$q;
         tb_ok$d = tb_ok$q;
         tb_id$d = tb_id$q;
         tb_word$d = tb_word$q;
-        tc_id$read_clock = clock;
-        tc_id$write_clock = clock;
-        tc_word$read_clock = clock;
-        tc_word$write_clock = clock;
         cnt_dop$clock = clock;
         cnt_tri$clock = clock;
         cnt_nf$clock = clock;
@@ -855,6 +793,7 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         dop$clock = clock;
         side$clock = clock;
         leaf_fifo$clock = clock;
+        tri_cache$clock = clock;
         tri_unit$clock = clock;
         result$clock = clock;
         dop$load_en = host_we & (host_addr[(32'h8)+:(2)] == 32'h0);
@@ -919,16 +858,10 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         d_cntr$dop_overlap = dop$overlap;
         d_cntr$side = side$q;
         push_root$d = 1'b0;
-        tc_line = leaf_tag$q[(32'h0)+:(7)] & tc_mask$q;
-        tc_wr = mem_port$ta_req[(32'h0)+:(7)] & tc_mask$q;
-        ta_ok = (ta_valid$q & (c_one128 << tc_line)) != 32'h0;
-        ta_held_id = tc_id$read_data;
-        ta_held = tc_word$read_data;
-        if (tc_byp$q) begin
-            ta_held_id = ta_id$q;
-            ta_held = ta_word$q;
-        end
-        need_ta = go & leaf_valid$q & ~(ta_ok & (ta_held_id == leaf_tag$q[(32'h0)+:(16)]));
+        tri_cache$clear = start_q;
+        tri_cache$mask = tc_mask$q;
+        tri_cache$id = leaf_tag$q[(32'h0)+:(16)];
+        need_ta = go & leaf_valid$q & ~tri_cache$hit;
         need_tb = go & leaf_valid$q & ~(tb_ok$q & (tb_id$q == leaf_tag$q[(32'h10)+:(16)]));
         mem_port$clear = start_q;
         mem_port$go = go;
@@ -960,12 +893,10 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
                 cnt_nf$d = cnt_nf$q + 32'h1;
             end
         end
+        tri_cache$fill = mem_port$resp & (mem_port$resp_dst == 32'h2);
+        tri_cache$fill_id = mem_port$ta_req;
+        tri_cache$fill_word = mem_resp_data[(32'h0)+:(738)];
         if (mem_port$resp) begin
-            if (mem_port$resp_dst == 32'h2) begin
-                ta_valid$d = ta_valid$q | (c_one128 << tc_wr);
-                ta_id$d = mem_port$ta_req;
-                ta_word$d = mem_resp_data[(32'h0)+:(738)];
-            end
             if (mem_port$resp_dst == 32'h3) begin
                 tb_ok$d = 1'b1;
                 tb_id$d = mem_port$tb_req;
@@ -1046,66 +977,56 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         if (leaf_out & ~d_cntr$leaf_in) begin
             leaf_count$d = leaf_count$q - 32'h1;
         end
-        tc_fill = mem_port$resp & (mem_port$resp_dst == 32'h2);
-        tc_id$write_enable = tc_fill;
-        tc_id$write_address = tc_wr;
-        tc_id$write_data = mem_port$ta_req;
-        tc_word$write_enable = tc_fill;
-        tc_word$write_address = tc_wr;
-        tc_word$write_data = mem_resp_data[(32'h0)+:(738)];
-        tc_next = tc_line;
+        tri_cache$next_id = leaf_tag$q[(32'h0)+:(16)];
         if (leaf_out & ~halt) begin
-            tc_next = leaf_fifo$data_out[(32'h0)+:(7)] & tc_mask$q;
+            tri_cache$next_id = leaf_fifo$data_out[(32'h0)+:(16)];
         end
-        tc_id$read_address = tc_next;
-        tc_word$read_address = tc_next;
-        tc_byp$d = tc_fill & (tc_wr == tc_next);
-        tri_unit$a_v_x$0 = ta_held[(32'h3 * 0 * 32'h20)+:(32)];
-        tri_unit$a_v_y$0 = ta_held[((32'h3 * 0 + 32'h1) * 32'h20)+:(32)];
-        tri_unit$a_v_z$0 = ta_held[((32'h3 * 0 + 32'h2) * 32'h20)+:(32)];
+        tri_unit$a_v_x$0 = tri_cache$word[(32'h3 * 0 * 32'h20)+:(32)];
+        tri_unit$a_v_y$0 = tri_cache$word[((32'h3 * 0 + 32'h1) * 32'h20)+:(32)];
+        tri_unit$a_v_z$0 = tri_cache$word[((32'h3 * 0 + 32'h2) * 32'h20)+:(32)];
         tri_unit$b_v_x$0 = tb_word$q[(32'h3 * 0 * 32'h20)+:(32)];
         tri_unit$b_v_y$0 = tb_word$q[((32'h3 * 0 + 32'h1) * 32'h20)+:(32)];
         tri_unit$b_v_z$0 = tb_word$q[((32'h3 * 0 + 32'h2) * 32'h20)+:(32)];
-        tri_unit$a_v_x$1 = ta_held[(32'h3 * 1 * 32'h20)+:(32)];
-        tri_unit$a_v_y$1 = ta_held[((32'h3 * 1 + 32'h1) * 32'h20)+:(32)];
-        tri_unit$a_v_z$1 = ta_held[((32'h3 * 1 + 32'h2) * 32'h20)+:(32)];
+        tri_unit$a_v_x$1 = tri_cache$word[(32'h3 * 1 * 32'h20)+:(32)];
+        tri_unit$a_v_y$1 = tri_cache$word[((32'h3 * 1 + 32'h1) * 32'h20)+:(32)];
+        tri_unit$a_v_z$1 = tri_cache$word[((32'h3 * 1 + 32'h2) * 32'h20)+:(32)];
         tri_unit$b_v_x$1 = tb_word$q[(32'h3 * 1 * 32'h20)+:(32)];
         tri_unit$b_v_y$1 = tb_word$q[((32'h3 * 1 + 32'h1) * 32'h20)+:(32)];
         tri_unit$b_v_z$1 = tb_word$q[((32'h3 * 1 + 32'h2) * 32'h20)+:(32)];
-        tri_unit$a_v_x$2 = ta_held[(32'h3 * 2 * 32'h20)+:(32)];
-        tri_unit$a_v_y$2 = ta_held[((32'h3 * 2 + 32'h1) * 32'h20)+:(32)];
-        tri_unit$a_v_z$2 = ta_held[((32'h3 * 2 + 32'h2) * 32'h20)+:(32)];
+        tri_unit$a_v_x$2 = tri_cache$word[(32'h3 * 2 * 32'h20)+:(32)];
+        tri_unit$a_v_y$2 = tri_cache$word[((32'h3 * 2 + 32'h1) * 32'h20)+:(32)];
+        tri_unit$a_v_z$2 = tri_cache$word[((32'h3 * 2 + 32'h2) * 32'h20)+:(32)];
         tri_unit$b_v_x$2 = tb_word$q[(32'h3 * 2 * 32'h20)+:(32)];
         tri_unit$b_v_y$2 = tb_word$q[((32'h3 * 2 + 32'h1) * 32'h20)+:(32)];
         tri_unit$b_v_z$2 = tb_word$q[((32'h3 * 2 + 32'h2) * 32'h20)+:(32)];
-        tri_unit$a_m_0$0 = ta_held[((32'h9 + 0) * 32'h20)+:(32)];
-        tri_unit$a_m_1$0 = ta_held[((32'hd + 0) * 32'h20)+:(32)];
-        tri_unit$a_m_2$0 = ta_held[((32'h11 + 0) * 32'h20)+:(32)];
+        tri_unit$a_m_0$0 = tri_cache$word[((32'h9 + 0) * 32'h20)+:(32)];
+        tri_unit$a_m_1$0 = tri_cache$word[((32'hd + 0) * 32'h20)+:(32)];
+        tri_unit$a_m_2$0 = tri_cache$word[((32'h11 + 0) * 32'h20)+:(32)];
         tri_unit$b_m_0$0 = tb_word$q[((32'h9 + 0) * 32'h20)+:(32)];
         tri_unit$b_m_1$0 = tb_word$q[((32'hd + 0) * 32'h20)+:(32)];
         tri_unit$b_m_2$0 = tb_word$q[((32'h11 + 0) * 32'h20)+:(32)];
-        tri_unit$a_m_0$1 = ta_held[((32'h9 + 1) * 32'h20)+:(32)];
-        tri_unit$a_m_1$1 = ta_held[((32'hd + 1) * 32'h20)+:(32)];
-        tri_unit$a_m_2$1 = ta_held[((32'h11 + 1) * 32'h20)+:(32)];
+        tri_unit$a_m_0$1 = tri_cache$word[((32'h9 + 1) * 32'h20)+:(32)];
+        tri_unit$a_m_1$1 = tri_cache$word[((32'hd + 1) * 32'h20)+:(32)];
+        tri_unit$a_m_2$1 = tri_cache$word[((32'h11 + 1) * 32'h20)+:(32)];
         tri_unit$b_m_0$1 = tb_word$q[((32'h9 + 1) * 32'h20)+:(32)];
         tri_unit$b_m_1$1 = tb_word$q[((32'hd + 1) * 32'h20)+:(32)];
         tri_unit$b_m_2$1 = tb_word$q[((32'h11 + 1) * 32'h20)+:(32)];
-        tri_unit$a_m_0$2 = ta_held[((32'h9 + 2) * 32'h20)+:(32)];
-        tri_unit$a_m_1$2 = ta_held[((32'hd + 2) * 32'h20)+:(32)];
-        tri_unit$a_m_2$2 = ta_held[((32'h11 + 2) * 32'h20)+:(32)];
+        tri_unit$a_m_0$2 = tri_cache$word[((32'h9 + 2) * 32'h20)+:(32)];
+        tri_unit$a_m_1$2 = tri_cache$word[((32'hd + 2) * 32'h20)+:(32)];
+        tri_unit$a_m_2$2 = tri_cache$word[((32'h11 + 2) * 32'h20)+:(32)];
         tri_unit$b_m_0$2 = tb_word$q[((32'h9 + 2) * 32'h20)+:(32)];
         tri_unit$b_m_1$2 = tb_word$q[((32'hd + 2) * 32'h20)+:(32)];
         tri_unit$b_m_2$2 = tb_word$q[((32'h11 + 2) * 32'h20)+:(32)];
-        tri_unit$a_m_0$3 = ta_held[((32'h9 + 3) * 32'h20)+:(32)];
-        tri_unit$a_m_1$3 = ta_held[((32'hd + 3) * 32'h20)+:(32)];
-        tri_unit$a_m_2$3 = ta_held[((32'h11 + 3) * 32'h20)+:(32)];
+        tri_unit$a_m_0$3 = tri_cache$word[((32'h9 + 3) * 32'h20)+:(32)];
+        tri_unit$a_m_1$3 = tri_cache$word[((32'hd + 3) * 32'h20)+:(32)];
+        tri_unit$a_m_2$3 = tri_cache$word[((32'h11 + 3) * 32'h20)+:(32)];
         tri_unit$b_m_0$3 = tb_word$q[((32'h9 + 3) * 32'h20)+:(32)];
         tri_unit$b_m_1$3 = tb_word$q[((32'hd + 3) * 32'h20)+:(32)];
         tri_unit$b_m_2$3 = tb_word$q[((32'h11 + 3) * 32'h20)+:(32)];
-        tri_unit$a_alpha_m = ta_held[(32'h15 * 32'h20)+:(32)];
-        tri_unit$a_alpha_f = ta_held[(32'h16 * 32'h20)+:(32)];
-        tri_unit$a_v_exact = ta_held[32'h17 * 32'h20];
-        tri_unit$a_degenerate = ta_held[32'h17 * 32'h20 + 32'h1];
+        tri_unit$a_alpha_m = tri_cache$word[(32'h15 * 32'h20)+:(32)];
+        tri_unit$a_alpha_f = tri_cache$word[(32'h16 * 32'h20)+:(32)];
+        tri_unit$a_v_exact = tri_cache$word[32'h17 * 32'h20];
+        tri_unit$a_degenerate = tri_cache$word[32'h17 * 32'h20 + 32'h1];
         tri_unit$b_alpha_m = tb_word$q[(32'h15 * 32'h20)+:(32)];
         tri_unit$b_alpha_f = tb_word$q[(32'h16 * 32'h20)+:(32)];
         tri_unit$b_v_exact = tb_word$q[32'h17 * 32'h20];
@@ -1137,7 +1058,6 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
             push_root$d = 1'b1;
             stop$d = 1'b0;
             leaf_valid$d = 1'b0;
-            ta_valid$d = 32'h0;
             tb_ok$d = 1'b0;
             cnt_dop$d = 32'h0;
             cnt_tri$d = 32'h0;
@@ -16052,26 +15972,7 @@ module top$side$line$0(d,q,clock);
 endmodule // top$side$line$0
 
 
-module top$ta_valid(d,q,clock);
-    
-    // Module arguments
-    input wire  [127:0] d;
-    output reg  [127:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 128'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$ta_valid
-
-
-module top$ta_word(d,q,clock);
+module top$tb_word(d,q,clock);
     
     // Module arguments
     input wire  [737:0] d;
@@ -16087,10 +15988,147 @@ module top$ta_word(d,q,clock);
        q <= d;
     end
           
-endmodule // top$ta_word
+endmodule // top$tb_word
 
 
-module top$tc_id(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+module top$tri_cache(clock,clear,mask,fill,fill_id,fill_word,id,next_id,hit,word);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  clear;
+    input wire  [6:0] mask;
+    input wire  fill;
+    input wire  [15:0] fill_id;
+    input wire  [737:0] fill_word;
+    input wire  [15:0] id;
+    input wire  [15:0] next_id;
+    output reg  hit;
+    output reg  [737:0] word;
+    
+    // Constant declarations
+    localparam  c_one128 = 128'h1;
+    
+    // Stub signals
+    reg  [127:0] valid$d;
+    wire  [127:0] valid$q;
+    reg  valid$clock;
+    reg  [6:0] ids$read_address;
+    reg  ids$read_clock;
+    wire  [15:0] ids$read_data;
+    reg  [6:0] ids$write_address;
+    reg  ids$write_clock;
+    reg  [15:0] ids$write_data;
+    reg  ids$write_enable;
+    reg  [6:0] words$read_address;
+    reg  words$read_clock;
+    wire  [737:0] words$read_data;
+    reg  [6:0] words$write_address;
+    reg  words$write_clock;
+    reg  [737:0] words$write_data;
+    reg  words$write_enable;
+    reg  byp$d;
+    wire  byp$q;
+    reg  byp$clock;
+    reg  [15:0] last_id$d;
+    wire  [15:0] last_id$q;
+    reg  last_id$clock;
+    reg  [737:0] last_word$d;
+    wire  [737:0] last_word$q;
+    reg  last_word$clock;
+    
+    // Local signals
+    reg  [6:0] line;
+    reg  [6:0] fill_line;
+    reg  [6:0] next_line;
+    reg  [15:0] held_id;
+    
+    // Sub module instances
+    top$tri_cache$valid valid(
+        .d(valid$d),
+        .q(valid$q),
+        .clock(valid$clock)
+    );
+    top$tri_cache$ids ids(
+        .read_address(ids$read_address),
+        .read_clock(ids$read_clock),
+        .read_data(ids$read_data),
+        .write_address(ids$write_address),
+        .write_clock(ids$write_clock),
+        .write_data(ids$write_data),
+        .write_enable(ids$write_enable)
+    );
+    top$tri_cache$words words(
+        .read_address(words$read_address),
+        .read_clock(words$read_clock),
+        .read_data(words$read_data),
+        .write_address(words$write_address),
+        .write_clock(words$write_clock),
+        .write_data(words$write_data),
+        .write_enable(words$write_enable)
+    );
+    top$d_cntr$ent_second byp(
+        .d(byp$d),
+        .q(byp$q),
+        .clock(byp$clock)
+    );
+    top$d_cntr$last_a last_id(
+        .d(last_id$d),
+        .q(last_id$q),
+        .clock(last_id$clock)
+    );
+    top$tb_word last_word(
+        .d(last_word$d),
+        .q(last_word$q),
+        .clock(last_word$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        valid$clock = clock;
+        byp$clock = clock;
+        last_id$clock = clock;
+        last_word$clock = clock;
+        valid$d = valid$q;
+        byp$d = byp$q;
+        last_id$d = last_id$q;
+        last_word$d = last_word$q;
+        ids$read_clock = clock;
+        ids$write_clock = clock;
+        words$read_clock = clock;
+        words$write_clock = clock;
+        line = id[(32'h0)+:(7)] & mask;
+        fill_line = fill_id[(32'h0)+:(7)] & mask;
+        next_line = next_id[(32'h0)+:(7)] & mask;
+        held_id = ids$read_data;
+        word = words$read_data;
+        if (byp$q) begin
+            held_id = last_id$q;
+            word = last_word$q;
+        end
+        hit = ((valid$q & (c_one128 << line)) != 32'h0) & (held_id == id);
+        ids$write_enable = fill;
+        ids$write_address = fill_line;
+        ids$write_data = fill_id;
+        words$write_enable = fill;
+        words$write_address = fill_line;
+        words$write_data = fill_word;
+        ids$read_address = next_line;
+        words$read_address = next_line;
+        byp$d = fill & (fill_line == next_line);
+        if (fill) begin
+            valid$d = valid$q | (c_one128 << fill_line);
+            last_id$d = fill_id;
+            last_word$d = fill_word;
+        end
+        if (clear) begin
+            valid$d = 32'h0;
+        end
+    end
+    
+endmodule // top$tri_cache
+
+
+module top$tri_cache$ids(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [6:0] read_address;
@@ -16116,10 +16154,29 @@ module top$tc_id(read_address,read_clock,read_data,write_address,write_clock,wri
        end
     end
                 
-endmodule // top$tc_id
+endmodule // top$tri_cache$ids
 
 
-module top$tc_word(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+module top$tri_cache$valid(d,q,clock);
+    
+    // Module arguments
+    input wire  [127:0] d;
+    output reg  [127:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 128'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$tri_cache$valid
+
+
+module top$tri_cache$words(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [6:0] read_address;
@@ -16145,7 +16202,7 @@ module top$tc_word(read_address,read_clock,read_data,write_address,write_clock,w
        end
     end
                 
-endmodule // top$tc_word
+endmodule // top$tri_cache$words
 
 
 module top$tri_unit(clock,load_en,load_addr,load_data,a_m_0$0,a_m_0$1,a_m_0$2,a_m_0$3,a_m_1$0,a_m_1$1,a_m_1$2,a_m_1$3,a_m_2$0,a_m_2$1,a_m_2$2,a_m_2$3,a_alpha_m,a_alpha_f,a_v_x$0,a_v_x$1,a_v_x$2,a_v_y$0,a_v_y$1,a_v_y$2,a_v_z$0,a_v_z$1,a_v_z$2,a_v_exact,a_degenerate,b_m_0$0,b_m_0$1,b_m_0$2,b_m_0$3,b_m_1$0,b_m_1$1,b_m_1$2,b_m_1$3,b_m_2$0,b_m_2$1,b_m_2$2,b_m_2$3,b_alpha_m,b_alpha_f,b_v_x$0,b_v_x$1,b_v_x$2,b_v_y$0,b_v_y$1,b_v_y$2,b_v_z$0,b_v_z$1,b_v_z$2,b_v_exact,b_degenerate,tag,in_valid,in_ready,out_tag,out_hit,out_uncertain,out_valid,out_ready);

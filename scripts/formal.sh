@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Formal proofs of the chip's control blocks (issue 35): the pair queue
-# (rtl/pair_queue_n4.v), the result port and the memory port (top$result, top$mem_port of
-# rtl/chip_e8m15_k6.v); the wrappers in scripts/formal/ around the exported Verilog, unchanged, proven with Yosys and yosys-smtbmc (z3) or, where
+# (rtl/pair_queue_n4.v), the result port, the memory port and A's triangle cache (top$result,
+# top$mem_port, top$tri_cache of rtl/chip_e8m15_k6.v); the wrappers in scripts/formal/ around the exported Verilog, unchanged, proven with Yosys and yosys-smtbmc (z3) or, where
 # SMT BMC is too slow, Yosys's ABC (`bmc3`). Prints PASS/FAIL per proof (a group of
 # properties, listed) and a last line `N passed, M failed`; exits non-zero on a failure.
 #
@@ -49,6 +49,8 @@ PROOFS=(
   "mem_port.count|mem_port.sv|rtl/chip_e8m15_k6.v|COUNT|ind|2/20|accept = mem_req_valid && mem_req_ready; outstanding (tag_n) = accepted - answered, <= port_out + 1 and <= 16; outstanding flag; accept only with <= port_out outstanding; resp only while one is outstanding (spurious memory responses ignored), and always then"
   "mem_port.order|mem_port.sv|rtl/chip_e8m15_k6.v|ORDER|abc|20|each response routed (resp_dst) to the destination of the oldest unanswered accepted request (a FIFO model in the wrapper)"
   "mem_port.cover|mem_port.sv|rtl/chip_e8m15_k6.v|COVER|cover|20|reachable: 16 outstanding, a request and a response at one edge, a spurious memory response ignored, responses to all four destinations"
+  "tri_cache.cache|tri_cache.sv|rtl/chip_e8m15_k6.v|CACHE|bmc|5|tracked (any-constant) triangle id, any stale RAM contents, any mask: a hit only after its fill since the last clear, a hit returns its last fill's word (also through the bypass of a fill into the line being read), found while its line holds it"
+  "tri_cache.cover|tri_cache.sv|rtl/chip_e8m15_k6.v|COVER|cover|8|reachable: a hit through the bypass, a hit from the RAM, a miss after another id took the line, a miss after a clear, the highest line"
 )
 
 # ---- mutants: name | proof it must break | DUT Verilog | sed script (applied to a copy)
@@ -67,12 +69,16 @@ MUTANTS=(
   "mem_credit_off_by_one|mem_port.count|rtl/chip_e8m15_k6.v|s/port_free = tag_n\$q <= ((port_out) \& 5'h1f);/port_free = tag_n\$q <= ((port_out) \& 5'h1f) + 5'h1;/"
   "mem_resp_unguarded|mem_port.count|rtl/chip_e8m15_k6.v|s/resp = mem_resp_valid \& (tag_n\$q != 32'h0);/resp = mem_resp_valid;/"
   "mem_tag_head_stuck|mem_port.order|rtl/chip_e8m15_k6.v|s/tag_head\$d = tag_head\$q + 32'h1;/tag_head\$d = tag_head\$q;/"
+  "cache_no_bypass|tri_cache.cache|rtl/chip_e8m15_k6.v|s/byp\$d = fill \& (fill_line == next_line);/byp\$d = 1'b0;/"
+  "cache_valid_not_cleared|tri_cache.cache|rtl/chip_e8m15_k6.v|/if (clear) begin/,/end/s/valid\$d = 32'h0;/valid\$d = valid\$q;/"
+  "cache_hit_ignores_id|tri_cache.cache|rtl/chip_e8m15_k6.v|s/hit = ((valid\$q \& (c_one128 << line)) != 32'h0) \& (held_id == id);/hit = ((valid\$q \& (c_one128 << line)) != 32'h0);/"
   "lifo_pop_no_wr_ptr_dec|pair_queue.order|rtl/pair_queue_n4.v|s/wr_n = wr_ptr\$q - 32'h1;/wr_n = wr_ptr\$q;/"
 )
 
 MP_PREP='hierarchy -top \top$mem_port; rename \top$mem_port mem_port'
 MP_HIER='connect -set f_tag_n dut.tag_n$q'
-prep_of() { case $1 in pair_queue.*) echo "$PQ_PREP";; result_port.*) echo "$RP_PREP";; mem_port.*) echo "$MP_PREP";; esac; }
+TC_PREP='hierarchy -top \top$tri_cache; rename \top$tri_cache tri_cache'
+prep_of() { case $1 in pair_queue.*) echo "$PQ_PREP";; result_port.*) echo "$RP_PREP";; mem_port.*) echo "$MP_PREP";; tri_cache.*) echo "$TC_PREP";; esac; }
 hier_of() { case $1 in pair_queue.*) echo "$PQ_HIER";; mem_port.*) echo "$MP_HIER";; esac; }
 
 # build <name> <wrapper> <dut.v> <defines> <engine> <dir>: writes <dir>/<name>.smt2 or .aig

@@ -8,7 +8,7 @@
 //! side delay line of its pairs, TRI_UNIT and its result port
 //! ([`ResultPort`](crate::rtl::tri_unit::ResultPort), rtl/tri_unit.rs). This file keeps what
 //! joins them: the host registers, the leaf FIFO and register with the triangle words held
-//! (A's triangle cache), the counters and the end of a query.
+//! (A's in its triangle cache, `TriCache`, rtl/tri_cache.rs), the counters and the end of a query.
 
 /// Stamps out `CollisionChip<N, NP1, NM1>` in the calling module (which must also hold the
 /// DOP unit `Dop` and `TriUnit`). Arguments: `K` the DOP's k, `Dop` its unit (`DopUnit6`
@@ -19,6 +19,7 @@ macro_rules! chip {
     ($K:tt, $Dop:ident, $WD:tt, $WT:tt, $NW:tt, $TW:tt, $MW:tt) => {
         declare_sync_fifo!(LeafFifo, Bits<32>, $crate::chip::rtl::LEAF_FIFO, 1);
         $crate::rtl::memory_port::memory_port!($NW, $MW);
+        $crate::rtl::tri_cache::tri_cache!($TW);
 
         /// The chip's memory word bits (`mem_resp_data`).
         pub const CHIP_WORD_BITS: usize = $MW;
@@ -127,24 +128,9 @@ macro_rules! chip {
             leaf_out: Signal<Local, Bit>,
             leaf_valid: DFF<Bit>,
             leaf_tag: DFF<Bits<32>>,
-            // A's triangle cache (WSCG'03 §4.3): line `id & mask` holds word `id`; ids and
-            // words in RAMs read one clock ahead (the next leaf pair's line), the last filled
-            // word beside them for a fill of the line being read (`tc_byp`)
+            // A's triangle cache (WSCG'03 §4.3; rtl/tri_cache.rs), its lines used less one
             tc_mask: DFF<Bits<7>>,
-            ta_valid: DFF<Bits<128>>,
-            tc_id: RAM<Bits<16>, 7>,
-            tc_word: RAM<Bits<$TW>, 7>,
-            tc_byp: DFF<Bit>,
-            tc_line: Signal<Local, Bits<7>>,
-            tc_next: Signal<Local, Bits<7>>,
-            tc_wr: Signal<Local, Bits<7>>,
-            tc_fill: Signal<Local, Bit>,
-            c_one128: Constant<Bits<128>>,
-            ta_ok: Signal<Local, Bit>,
-            ta_id: DFF<Bits<16>>,
-            ta_word: DFF<Bits<$TW>>,
-            ta_held_id: Signal<Local, Bits<16>>,
-            ta_held: Signal<Local, Bits<$TW>>,
+            tri_cache: TriCache,
             tb_ok: DFF<Bit>,
             tb_id: DFF<Bits<16>>,
             tb_word: DFF<Bits<$TW>>,
@@ -225,20 +211,7 @@ macro_rules! chip {
                     leaf_valid: Default::default(),
                     leaf_tag: Default::default(),
                     tc_mask: Default::default(),
-                    ta_valid: Default::default(),
-                    tc_id: Default::default(),
-                    tc_word: Default::default(),
-                    tc_byp: Default::default(),
-                    tc_line: Default::default(),
-                    tc_next: Default::default(),
-                    tc_wr: Default::default(),
-                    tc_fill: Default::default(),
-                    c_one128: Constant::new(1.into()),
-                    ta_ok: Default::default(),
-                    ta_id: Default::default(),
-                    ta_word: Default::default(),
-                    ta_held_id: Default::default(),
-                    ta_held: Default::default(),
+                    tri_cache: TriCache::new(),
                     tb_ok: Default::default(),
                     tb_id: Default::default(),
                     tb_word: Default::default(),
@@ -328,13 +301,9 @@ macro_rules! chip {
                 dff_setup!(self, clock, mode_lifo, mode_first, root, base_na, base_nb, base_ta, base_tb);
                 dff_setup!(self, clock, port_pf, port_out, port_one, port_credit, run, done_r, push_root, stop);
                 dff_setup!(self, clock, leaf_count, leaf_valid, leaf_tag);
-                dff_setup!(self, clock, tc_mask, ta_valid, tc_byp, ta_id, ta_word, tb_ok, tb_id, tb_word);
-                self.tc_id.read_clock.next = self.clock.val();
-                self.tc_id.write_clock.next = self.clock.val();
-                self.tc_word.read_clock.next = self.clock.val();
-                self.tc_word.write_clock.next = self.clock.val();
+                dff_setup!(self, clock, tc_mask, tb_ok, tb_id, tb_word);
                 dff_setup!(self, clock, cnt_dop, cnt_tri, cnt_nf, cnt_tf);
-                clock!(self, clock, d_cntr, mem_port, dop, side, leaf_fifo, tri_unit, result);
+                clock!(self, clock, d_cntr, mem_port, dop, side, leaf_fifo, tri_cache, tri_unit, result);
                 // ---- host registers and the units' setup ports
                 self.dop.load_en.next = self.host_we.val() & (self.host_addr.val().get_bits::<2>(8) == 0);
                 self.dop.load_addr.next = self.host_addr.val().get_bits::<8>(0);
@@ -401,19 +370,11 @@ macro_rules! chip {
                 self.d_cntr.dop_overlap.next = self.dop.overlap.val();
                 self.d_cntr.side.next = self.side.q.val();
                 self.push_root.d.next = false;
-                // A's triangle word: its line's id and word, read at the last edge for this
-                // leaf pair, or filled at that edge; an A response fills line `tc_wr`
-                self.tc_line.next = self.leaf_tag.q.val().get_bits::<7>(0) & self.tc_mask.q.val();
-                self.tc_wr.next = self.mem_port.ta_req.val().get_bits::<7>(0) & self.tc_mask.q.val();
-                self.ta_ok.next = (self.ta_valid.q.val() & (self.c_one128.val() << self.tc_line.val())) != 0;
-                self.ta_held_id.next = self.tc_id.read_data.val();
-                self.ta_held.next = self.tc_word.read_data.val();
-                if self.tc_byp.q.val() {
-                    self.ta_held_id.next = self.ta_id.q.val();
-                    self.ta_held.next = self.ta_word.q.val();
-                }
-                self.need_ta.next = self.go.val() & self.leaf_valid.q.val()
-                    & !(self.ta_ok.val() & (self.ta_held_id.val() == self.leaf_tag.q.val().get_bits::<16>(0)));
+                // A's triangle word: from the cache, which read its line at the last edge
+                self.tri_cache.clear.next = self.start_q.val();
+                self.tri_cache.mask.next = self.tc_mask.q.val();
+                self.tri_cache.id.next = self.leaf_tag.q.val().get_bits::<16>(0);
+                self.need_ta.next = self.go.val() & self.leaf_valid.q.val() & !self.tri_cache.hit.val();
                 self.need_tb.next = self.go.val() & self.leaf_valid.q.val()
                     & !(self.tb_ok.q.val() & (self.tb_id.q.val() == self.leaf_tag.q.val().get_bits::<16>(16)));
                 // ---- the memory port: the node words D_CNTR's pops ask for, the triangle
@@ -447,13 +408,11 @@ macro_rules! chip {
                         self.cnt_nf.d.next = self.cnt_nf.q.val() + 1;
                     }
                 }
-                // a triangle word replaces the held one (A's: its cache line)
+                // a triangle word: A's fills its cache line, B's replaces the held one
+                self.tri_cache.fill.next = self.mem_port.resp.val() & (self.mem_port.resp_dst.val() == 2);
+                self.tri_cache.fill_id.next = self.mem_port.ta_req.val();
+                self.tri_cache.fill_word.next = self.mem_resp_data.val().get_bits::<$TW>(0);
                 if self.mem_port.resp.val() {
-                    if self.mem_port.resp_dst.val() == 2 {
-                        self.ta_valid.d.next = self.ta_valid.q.val() | (self.c_one128.val() << self.tc_wr.val());
-                        self.ta_id.d.next = self.mem_port.ta_req.val();
-                        self.ta_word.d.next = self.mem_resp_data.val().get_bits::<$TW>(0);
-                    }
                     if self.mem_port.resp_dst.val() == 3 {
                         self.tb_ok.d.next = true;
                         self.tb_id.d.next = self.mem_port.tb_req.val();
@@ -504,43 +463,32 @@ macro_rules! chip {
                 if self.leaf_out.val() & !self.d_cntr.leaf_in.val() {
                     self.leaf_count.d.next = self.leaf_count.q.val() - 1;
                 }
-                // A's triangle cache: a response for A fills line `tc_wr`; the line of the
-                // next clock's leaf pair is read at this edge
-                self.tc_fill.next = self.mem_port.resp.val() & (self.mem_port.resp_dst.val() == 2);
-                self.tc_id.write_enable.next = self.tc_fill.val();
-                self.tc_id.write_address.next = self.tc_wr.val();
-                self.tc_id.write_data.next = self.mem_port.ta_req.val();
-                self.tc_word.write_enable.next = self.tc_fill.val();
-                self.tc_word.write_address.next = self.tc_wr.val();
-                self.tc_word.write_data.next = self.mem_resp_data.val().get_bits::<$TW>(0);
-                self.tc_next.next = self.tc_line.val();
+                // the cache reads the line of the next clock's leaf pair at this edge
+                self.tri_cache.next_id.next = self.leaf_tag.q.val().get_bits::<16>(0);
                 if self.leaf_out.val() & !self.halt.val() {
-                    self.tc_next.next = self.leaf_fifo.data_out.val().get_bits::<7>(0) & self.tc_mask.q.val();
+                    self.tri_cache.next_id.next = self.leaf_fifo.data_out.val().get_bits::<16>(0);
                 }
-                self.tc_id.read_address.next = self.tc_next.val();
-                self.tc_word.read_address.next = self.tc_next.val();
-                self.tc_byp.d.next = self.tc_fill.val() & (self.tc_wr.val() == self.tc_next.val());
                 // TRI_UNIT's ports from the held triangle words (crate::golden::memory::TriWord order)
                 for k in 0..3 {
-                    self.tri_unit.a_v_x[k].next = self.ta_held.val().get_bits::<$WT>(3 * k * $WT);
-                    self.tri_unit.a_v_y[k].next = self.ta_held.val().get_bits::<$WT>((3 * k + 1) * $WT);
-                    self.tri_unit.a_v_z[k].next = self.ta_held.val().get_bits::<$WT>((3 * k + 2) * $WT);
+                    self.tri_unit.a_v_x[k].next = self.tri_cache.word.val().get_bits::<$WT>(3 * k * $WT);
+                    self.tri_unit.a_v_y[k].next = self.tri_cache.word.val().get_bits::<$WT>((3 * k + 1) * $WT);
+                    self.tri_unit.a_v_z[k].next = self.tri_cache.word.val().get_bits::<$WT>((3 * k + 2) * $WT);
                     self.tri_unit.b_v_x[k].next = self.tb_word.q.val().get_bits::<$WT>(3 * k * $WT);
                     self.tri_unit.b_v_y[k].next = self.tb_word.q.val().get_bits::<$WT>((3 * k + 1) * $WT);
                     self.tri_unit.b_v_z[k].next = self.tb_word.q.val().get_bits::<$WT>((3 * k + 2) * $WT);
                 }
                 for c in 0..4 {
-                    self.tri_unit.a_m_0[c].next = self.ta_held.val().get_bits::<$WT>((9 + c) * $WT);
-                    self.tri_unit.a_m_1[c].next = self.ta_held.val().get_bits::<$WT>((13 + c) * $WT);
-                    self.tri_unit.a_m_2[c].next = self.ta_held.val().get_bits::<$WT>((17 + c) * $WT);
+                    self.tri_unit.a_m_0[c].next = self.tri_cache.word.val().get_bits::<$WT>((9 + c) * $WT);
+                    self.tri_unit.a_m_1[c].next = self.tri_cache.word.val().get_bits::<$WT>((13 + c) * $WT);
+                    self.tri_unit.a_m_2[c].next = self.tri_cache.word.val().get_bits::<$WT>((17 + c) * $WT);
                     self.tri_unit.b_m_0[c].next = self.tb_word.q.val().get_bits::<$WT>((9 + c) * $WT);
                     self.tri_unit.b_m_1[c].next = self.tb_word.q.val().get_bits::<$WT>((13 + c) * $WT);
                     self.tri_unit.b_m_2[c].next = self.tb_word.q.val().get_bits::<$WT>((17 + c) * $WT);
                 }
-                self.tri_unit.a_alpha_m.next = self.ta_held.val().get_bits::<$WT>(21 * $WT);
-                self.tri_unit.a_alpha_f.next = self.ta_held.val().get_bits::<$WT>(22 * $WT);
-                self.tri_unit.a_v_exact.next = self.ta_held.val().get_bit(23 * $WT);
-                self.tri_unit.a_degenerate.next = self.ta_held.val().get_bit(23 * $WT + 1);
+                self.tri_unit.a_alpha_m.next = self.tri_cache.word.val().get_bits::<$WT>(21 * $WT);
+                self.tri_unit.a_alpha_f.next = self.tri_cache.word.val().get_bits::<$WT>(22 * $WT);
+                self.tri_unit.a_v_exact.next = self.tri_cache.word.val().get_bit(23 * $WT);
+                self.tri_unit.a_degenerate.next = self.tri_cache.word.val().get_bit(23 * $WT + 1);
                 self.tri_unit.b_alpha_m.next = self.tb_word.q.val().get_bits::<$WT>(21 * $WT);
                 self.tri_unit.b_alpha_f.next = self.tb_word.q.val().get_bits::<$WT>(22 * $WT);
                 self.tri_unit.b_v_exact.next = self.tb_word.q.val().get_bit(23 * $WT);
@@ -579,7 +527,6 @@ macro_rules! chip {
                     self.push_root.d.next = true;
                     self.stop.d.next = false;
                     self.leaf_valid.d.next = false;
-                    self.ta_valid.d.next = 0.into();
                     self.tb_ok.d.next = false;
                     self.cnt_dop.d.next = 0.into();
                     self.cnt_tri.d.next = 0.into();

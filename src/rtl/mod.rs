@@ -51,6 +51,7 @@ mod klmsel;
 mod memory_port;
 mod reg_ring;
 mod tcheck;
+mod tri_cache;
 mod tri_unit;
 /// The result port, TRI_UNIT's read side in the chip (format-free: not stamped per format).
 pub use tri_unit::ResultPort;
