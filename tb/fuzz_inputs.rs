@@ -171,3 +171,74 @@ fn poses_take_any_text() {
         }
     });
 }
+
+/// Arguments that have broken command lines before, spliced into `cchip`'s.
+const ARGS: &[&str] = &[
+    "--k", "0", "25", "-1", "4294967296", "--pose", "nan,0,0,0,0,0", "1e309,0,0,0,0,0", ",,,,,", "0,0,0", "--format",
+    "e0m0", "e99m99", "reduced/binary32", "--preset", "date05", "wscg03", "--json", "--oracle", "sphere:0",
+    "sphere:99999999", "soup:3:x", "--traversal", "list", "recursive", "--mode", "first", "--unit-cube", "--", "-",
+    "", "\u{ff}", "query", "--explain", "--dot", "--help", "--tri-cache", "3", "--node-cache", "0", "--technology",
+    "ecp5", "--architecture", "wscg03", "no/such/file.obj", "vectors/scenes",
+];
+
+/// Quick invocations: small queries and scenes explained, not run.
+const INVOCATIONS: &[&[&str]] = &[
+    &["query", "--pose", "10,20,30,0.5,0,0", "sphere:20", "torus:20"],
+    &["query", "--pose", "0,0,0,0,0,0", "--k", "6", "--format", "e8m15", "--mode", "first", "--json", "soup:8", "soup:8:2"],
+    &["query", "--pose", "5,0,0,0.1,0,0", "--oracle", "--traversal", "fifo", "--tri-cache", "4", "teapot", "sphere:40"],
+    &["run", "--preset", "rtl", "--explain"],
+    &["run", "--technology", "paper", "--architecture", "wscg03", "--explain"],
+];
+
+/// `cchip` run with `args` from the project root: its exit code, or an error for a signal or a
+/// run past `limit`.
+fn cchip(args: &[String], limit: std::time::Duration) -> Result<(i32, String), String> {
+    let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_cchip"))
+        .args(args)
+        .current_dir(root())
+        .stdout(std::process::Stdio::null())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    let t0 = std::time::Instant::now();
+    while child.try_wait().unwrap().is_none() {
+        if t0.elapsed() > limit {
+            child.kill().unwrap();
+            return Err(format!("still running after {limit:?}"));
+        }
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    }
+    let out = child.wait_with_output().unwrap();
+    let err = String::from_utf8_lossy(&out.stderr).into_owned();
+    out.status.code().map(|c| (c, err)).ok_or_else(|| format!("ended by a signal: {:?}", out.status))
+}
+
+/// `cchip`'s argument parsing and checks (issue 35): mutated quick invocations end with
+/// success or a clear error (exit code 2, no panic), never a hang. A `run` stays explained:
+/// `--explain` is appended, so that no mutation starts the default scene's sweep.
+#[test]
+fn cchip_takes_any_arguments() {
+    let config = ProptestConfig { cases: (cases() / 25).max(8), failure_persistence: None, ..ProptestConfig::default() };
+    let edit = prop_oneof![
+        (any::<usize>(), 0..ARGS.len()).prop_map(|(i, a)| (0u8, i, a)),
+        (any::<usize>(), 0..ARGS.len()).prop_map(|(i, a)| (1u8, i, a)),
+        any::<usize>().prop_map(|i| (2u8, i, 0)),
+    ];
+    proptest!(config, |(s in 0..INVOCATIONS.len(), edits in prop::collection::vec(edit, 1..4))| {
+        let mut args: Vec<String> = INVOCATIONS[s].iter().map(|a| a.to_string()).collect();
+        for (op, i, a) in edits {
+            let at = i % (args.len() + 1);
+            match op {
+                0 => args.insert(at, ARGS[a].into()),
+                1 if at < args.len() => args[at] = ARGS[a].into(),
+                _ if at < args.len() && args.len() > 1 => { args.remove(at); }
+                _ => {}
+            }
+        }
+        if args.first().is_some_and(|a| a == "run") {
+            args.push("--explain".into());
+        }
+        let (code, err) = cchip(&args, std::time::Duration::from_secs(60)).map_err(|e| TestCaseError::fail(format!("{args:?}: {e}")))?;
+        prop_assert!(code == 0 || (code == 2 && !err.contains("panicked")), "{args:?}: exit {code}\n{err}");
+    });
+}

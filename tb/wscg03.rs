@@ -65,6 +65,7 @@ proptest! {
             dop_rounding: if outward { DopRounding::Outward } else { DopRounding::NearestEven },
             tri_rounding: Rounding::NearestEven,
             tri_cache,
+            ..ChipConfig::default()
         };
         let chip = Chip::new(&soup(na, sa).triangles_f64(), &soup(nb, sb).triangles_f64(), cfg).unwrap();
         let pose = Pose::new(rot[0], rot[1], rot[2], t[0], t[1], t[2]);

@@ -11,6 +11,7 @@ use crate::oracle;
 use crate::query::{exact_pairs, Accuracy, Chip};
 use super::record::{CycleRecord, MemoryRecord, PoseRecord};
 use crate::traversal::QueryResult;
+use crate::chip::layout::Layout;
 use crate::chip::reg::Mode;
 use crate::chip::wscg03::Architecture;
 use crate::traversal::Traversal;
@@ -228,7 +229,7 @@ impl<'s> Prepared<'s> {
                 Some(CrossCheck::Verilog)
             }
         };
-        let mut r = record(chip, &trace, s.clock.period_ns, software_us);
+        let mut r = record(&chip.layout, &trace, s.clock.period_ns, software_us);
         (r.stats, r.vcd, r.cross_checked) = (stats, vcd.map(|p| p.display().to_string()), cross_checked.map(|c| c.to_string()));
         Ok(r)
     }
@@ -252,16 +253,15 @@ impl<'s> Prepared<'s> {
                 return Err(format!("pose {i}: WSCG'03's chip disagrees with the golden list traversal: {e}"));
             }
         }
-        let mut r = record(chip, &run.trace, s.clock.period_ns, software_us);
+        let mut r = record(&cycle::wscg03::layout(&chip.cfg), &run.trace, s.clock.period_ns, software_us);
         r.wscg03 = Some(run.stats);
         Ok(r)
     }
 }
 
 /// A cycle-model trace as a record (no stall counts, VCD or cross-check yet).
-fn record(chip: &Chip, trace: &cycle::drive::ChipTrace, period_ns: f64, software_us: f64) -> CycleRecord {
+fn record(layout: &Layout, trace: &cycle::drive::ChipTrace, period_ns: f64, software_us: f64) -> CycleRecord {
     let (hits, unc) = trace.pairs();
-    let layout = &chip.layout;
     CycleRecord {
         cycles: trace.cycles,
         period_ns,

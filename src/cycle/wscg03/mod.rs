@@ -116,6 +116,13 @@ impl MemCtl {
     }
 }
 
+/// WSCG'03's chip reads a node word per request (its Stack Engine asks for each node of a
+/// list, §4.2) from an image of one node or triangle word per record: the `words` layout,
+/// whatever layout `cfg` gives DATE'05's chip.
+pub fn layout(cfg: &crate::chip::config::ChipConfig) -> crate::chip::layout::Layout {
+    crate::chip::layout::Layout::new(&crate::chip::config::ChipConfig { layout: crate::chip::config::MemLayout::Words, ..*cfg })
+}
+
 /// One query on WSCG'03's chip: `chip`'s images, B placed by `setup`, `mode`, the memory
 /// of `p`, the timing `sp`. All pairs or first hit; the host reads every result at once.
 pub fn run_query(
@@ -128,7 +135,9 @@ pub fn run_query(
     sp.check()?;
     p.memory.check()?;
     let cfg = &chip.cfg;
-    let mem = MemCtl::new(MemModel::new(p.memory, chip.layout.word_bits()), chip.image_bases());
+    let words = layout(cfg);
+    let bases = crate::chip::layout::image_bases(chip.a.tree.len() as u32, chip.a.tris.len() as u32, chip.b.tree.len() as u32);
+    let mem = MemCtl::new(MemModel::new(p.memory, words.word_bits()), bases);
     let values = gdop::TransformCache::new(cfg.format.dop, cfg.dop_rounding.op(), setup, chip.b.tree.len());
     let dop = dop_unit::DopUnit::new(&chip.a, &chip.b, values, sp, chip.layout.node_bits);
     let verdicts = gtri::TriUnit::new(cfg.format.tri, cfg.tri_rounding, setup, chip.a.tris.len(), chip.b.tris.len());
