@@ -95,21 +95,25 @@ pub struct Stage1 {
     pub scale: f64,
 }
 
+/// The twelve dot products of M_b = M x frame in row order, entry (i, j): row i of M's
+/// 3 x 3 part, column j of the frame, and M's translation `m[i][3]` added in column 3.
+#[inline(always)]
+fn mb_terms(m: &Affine, frame: &Affine) -> [(usize, usize, [f64; 3], [f64; 3], Option<f64>); 12] {
+    std::array::from_fn(|n| {
+        let (i, j) = (n / 4, n % 4);
+        (i, j, [m[i][0], m[i][1], m[i][2]], [frame[0][j], frame[1][j], frame[2][j]], (j == 3).then_some(m[i][3]))
+    })
+}
+
 /// Stage 1: M_b = M_B . M_f (Eqs. 11, 12) and its magnitude for the leaf word `leaf` and
 /// a frame map `frame` with its error words `beta` ([`HostSetup::beta_ab`](super::host::HostSetup::beta_ab)), `scale` the
 /// vertices' object's ([`HostSetup::scale`](super::host::HostSetup::scale)).
 pub fn stage1(f: Format, r: Rounding, leaf: &TriWord, frame: &Affine, beta: [f64; 2], scale: f64) -> Stage1 {
-    let m = &leaf.m;
     let mut mb = [[0.0; 4]; 3];
     let mut mag = [[0.0; 4]; 3];
-    for i in 0..3 {
-        for j in 0..4 {
-            let col = [frame[0][j], frame[1][j], frame[2][j]];
-            let row = [m[i][0], m[i][1], m[i][2]];
-            let c = (j == 3).then_some(m[i][3]);
-            mb[i][j] = dot(f, r, row, col, c);
-            mag[i][j] = dot_mag(f, row, col, c);
-        }
+    for (i, j, row, col, c) in mb_terms(&leaf.m, frame) {
+        mb[i][j] = dot(f, r, row, col, c);
+        mag[i][j] = dot_mag(f, row, col, c);
     }
     let a_err = f.add(f.mul(leaf.alpha_m, beta[0], UP), f.mul(leaf.alpha_f, beta[1], UP), UP);
     Stage1 { mb, mag, a_err, scale }
@@ -129,17 +133,11 @@ pub struct Stage1Hi {
 
 /// [`stage1`] with the magnitudes enclosed instead of rounded.
 pub fn stage1_hi(f: Format, r: Rounding, up: &Upper, leaf: &TriWord, frame: &Affine, beta: [f64; 2], scale: f64) -> Stage1Hi {
-    let m = &leaf.m;
     let (mut mb, mut mag, mut fits) = ([[0.0; 4]; 3], [[0.0; 4]; 3], true);
-    for i in 0..3 {
-        for j in 0..4 {
-            let col = [frame[0][j], frame[1][j], frame[2][j]];
-            let row = [m[i][0], m[i][1], m[i][2]];
-            let c = (j == 3).then_some(m[i][3]);
-            mb[i][j] = dot(f, r, row, col, c);
-            mag[i][j] = dot_hi(up, row.map(f64::abs), col.map(f64::abs), c.map(f64::abs));
-            fits &= up.fits(mb[i][j]) & up.fits(mag[i][j]);
-        }
+    for (i, j, row, col, c) in mb_terms(&leaf.m, frame) {
+        mb[i][j] = dot(f, r, row, col, c);
+        mag[i][j] = dot_hi(up, row.map(f64::abs), col.map(f64::abs), c.map(f64::abs));
+        fits &= up.fits(mb[i][j]) & up.fits(mag[i][j]);
     }
     let a_err = up.add(up.mul(leaf.alpha_m, beta[0]), up.mul(leaf.alpha_f, beta[1]));
     Stage1Hi { mb, mag, a_err, scale, fits: fits & up.fits(a_err) }

@@ -163,27 +163,25 @@ fn over<T: serde::Serialize + serde::de::DeserializeOwned>(value: &T, keys: Keys
     Ok(t)
 }
 
+/// `[chip] key = "name"` taken out of `keys` as a `T`; an unknown name is an error naming
+/// its line and the `known` ones.
+fn named_key<T: serde::de::DeserializeOwned>(keys: &mut Keys, key: &str, text: &str, known: &str) -> Result<Option<T>, String> {
+    keys.remove(key)
+        .map(|v| {
+            let line = line_of(text, v.span().start);
+            let v = v.into_inner();
+            T::deserialize(v.clone()).map_err(|_| format!("{line}: [chip] {key} {v} is not known: use {known}"))
+        })
+        .transpose()
+}
+
 /// `[chip]`: the preset (the scene's, or `flag` over it; none: [`Preset::Rtl`], the RTL's reset
 /// point), the architecture (the scene's, else the preset's) and [`ChipConfig`]'s keys over
 /// its chip.
 fn chip(keys: Option<Keys>, text: &str, flag: Option<Preset>) -> Result<(Preset, Architecture, ChipConfig), String> {
     let mut keys = keys.unwrap_or_default();
-    let arch = match keys.remove("architecture") {
-        None => None,
-        Some(v) => {
-            let line = line_of(text, v.span().start);
-            let v = v.into_inner();
-            Some(Architecture::deserialize(v.clone()).map_err(|_| format!("{line}: [chip] architecture {v} is not known: use \"date05\" or \"wscg03\""))?)
-        }
-    };
-    let named = match keys.remove("preset") {
-        None => None,
-        Some(v) => {
-            let line = line_of(text, v.span().start);
-            let v = v.into_inner();
-            Some(Preset::deserialize(v.clone()).map_err(|_| format!("{line}: [chip] preset {v} is not known: use \"date05\", \"wscg03\" or \"rtl\""))?)
-        }
-    };
+    let arch: Option<Architecture> = named_key(&mut keys, "architecture", text, "\"date05\" or \"wscg03\"")?;
+    let named: Option<Preset> = named_key(&mut keys, "preset", text, "\"date05\", \"wscg03\" or \"rtl\"")?;
     let preset = flag.or(named).unwrap_or(Preset::Rtl);
     let arch = arch.unwrap_or(preset.architecture());
     Ok((preset, arch, over(&preset.chip(), keys, text, "[chip]", "")?))
