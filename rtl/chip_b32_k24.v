@@ -20,7 +20,7 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
     output reg  [23:0] mem_req_addr;
     input wire  mem_req_ready;
     input wire  mem_resp_valid;
-    input wire  [832:0] mem_resp_data;
+    input wire  [2047:0] mem_resp_data;
     output reg  res_valid;
     output reg  [31:0] res_tag;
     output reg  res_uncertain;
@@ -37,6 +37,9 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
     reg  mode_first$d;
     wire  mode_first$q;
     reg  mode_first$clock;
+    reg  mode_rec$d;
+    wire  mode_rec$q;
+    reg  mode_rec$clock;
     reg  [31:0] root$d;
     wire  [31:0] root$q;
     reg  root$clock;
@@ -86,6 +89,7 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
     reg  d_cntr$one;
     reg  [5:0] d_cntr$credit_lim;
     reg  [5:0] d_cntr$leaf_count;
+    reg  d_cntr$records;
     reg  d_cntr$wa_empty;
     reg  d_cntr$wb_empty;
     reg  d_cntr$dop_valid;
@@ -113,13 +117,14 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
     wire  d_cntr$r_a_leaf;
     wire  d_cntr$r_b_leaf;
     wire  d_cntr$leaf_in;
-    wire  [31:0] d_cntr$leaf_pair;
+    wire  [63:0] d_cntr$leaf_pair;
     wire  [4:0] d_cntr$inflight;
     wire  d_cntr$pend;
     reg  mem_port$clock;
     reg  mem_port$clear;
     reg  mem_port$go;
     reg  mem_port$pf_on;
+    reg  mem_port$records;
     reg  [3:0] mem_port$port_out;
     reg  [23:0] mem_port$base_na;
     reg  [23:0] mem_port$base_nb;
@@ -131,12 +136,14 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
     reg  mem_port$issue;
     reg  mem_port$cur_fa;
     reg  mem_port$cur_fb;
+    reg  mem_port$cur_sa;
+    reg  mem_port$cur_sb;
     reg  mem_port$need_ta;
     reg  mem_port$need_tb;
     reg  [31:0] mem_port$leaf_tag;
     reg  mem_port$mem_req_ready;
     reg  mem_port$mem_resp_valid;
-    reg  [832:0] mem_port$mem_resp_data;
+    reg  [2047:0] mem_port$mem_resp_data;
     wire  mem_port$mem_req_valid;
     wire  [23:0] mem_port$mem_req_addr;
     wire  [1:0] mem_port$req_dst;
@@ -212,12 +219,12 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
     wire  [98:0] side$q;
     reg  leaf_fifo$clock;
     reg  leaf_fifo$read;
-    wire  [31:0] leaf_fifo$data_out;
+    wire  [63:0] leaf_fifo$data_out;
     wire  leaf_fifo$empty;
     wire  leaf_fifo$almost_empty;
     wire  leaf_fifo$underflow;
     reg  leaf_fifo$write;
-    reg  [31:0] leaf_fifo$data_in;
+    reg  [63:0] leaf_fifo$data_in;
     wire  leaf_fifo$full;
     wire  leaf_fifo$almost_full;
     wire  leaf_fifo$overflow;
@@ -227,8 +234,8 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
     reg  leaf_valid$d;
     wire  leaf_valid$q;
     reg  leaf_valid$clock;
-    reg  [31:0] leaf_tag$d;
-    wire  [31:0] leaf_tag$q;
+    reg  [63:0] leaf_tag$d;
+    wire  [63:0] leaf_tag$q;
     reg  leaf_tag$clock;
     reg  [6:0] tc_mask$d;
     wire  [6:0] tc_mask$q;
@@ -348,6 +355,8 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
     reg  [4:0] pf;
     reg  go;
     reg  leaf_out;
+    reg  [31:0] tri_ids;
+    reg  [31:0] next_tri_ids;
     reg  need_ta;
     reg  need_tb;
     reg  tri_in;
@@ -365,6 +374,11 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         .d(mode_first$d),
         .q(mode_first$q),
         .clock(mode_first$clock)
+    );
+    top$d_cntr$ent_second mode_rec(
+        .d(mode_rec$d),
+        .q(mode_rec$q),
+        .clock(mode_rec$clock)
     );
     top$cnt_dop root(
         .d(root$d),
@@ -442,6 +456,7 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         .one(d_cntr$one),
         .credit_lim(d_cntr$credit_lim),
         .leaf_count(d_cntr$leaf_count),
+        .records(d_cntr$records),
         .wa_empty(d_cntr$wa_empty),
         .wb_empty(d_cntr$wb_empty),
         .dop_valid(d_cntr$dop_valid),
@@ -478,6 +493,7 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         .clear(mem_port$clear),
         .go(mem_port$go),
         .pf_on(mem_port$pf_on),
+        .records(mem_port$records),
         .port_out(mem_port$port_out),
         .base_na(mem_port$base_na),
         .base_nb(mem_port$base_nb),
@@ -489,6 +505,8 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         .issue(mem_port$issue),
         .cur_fa(mem_port$cur_fa),
         .cur_fb(mem_port$cur_fb),
+        .cur_sa(mem_port$cur_sa),
+        .cur_sb(mem_port$cur_sb),
         .need_ta(mem_port$need_ta),
         .need_tb(mem_port$need_tb),
         .leaf_tag(mem_port$leaf_tag),
@@ -596,7 +614,7 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         .q(leaf_valid$q),
         .clock(leaf_valid$clock)
     );
-    top$cnt_dop leaf_tag(
+    top$leaf_tag leaf_tag(
         .d(leaf_tag$d),
         .q(leaf_tag$q),
         .clock(leaf_tag$clock)
@@ -738,6 +756,7 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
     always @(*) begin
         mode_lifo$clock = clock;
         mode_first$clock = clock;
+        mode_rec$clock = clock;
         root$clock = clock;
         base_na$clock = clock;
         base_nb$clock = clock;
@@ -745,6 +764,7 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         base_tb$clock = clock;
         mode_lifo$d = mode_lifo$q;
         mode_first$d = mode_first$q;
+        mode_rec$d = mode_rec$q;
         root$d = root$q;
         base_na$d = base_na$q;
         base_nb$d = base_nb$q;
@@ -806,6 +826,7 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
             if (host_addr == 32'h120) begin
                 mode_lifo$d = host_data[32'h0];
                 mode_first$d = host_data[32'h1];
+                mode_rec$d = host_data[32'h2];
             end
             if (host_addr == 32'h121) begin
                 root$d = host_data;
@@ -857,12 +878,17 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         d_cntr$dop_valid = dop$valid_out;
         d_cntr$dop_overlap = dop$overlap;
         d_cntr$side = side$q;
+        d_cntr$records = mode_rec$q;
         push_root$d = 1'b0;
+        tri_ids = leaf_tag$q[(32'h0)+:(32)];
+        if (mode_rec$q) begin
+            tri_ids = leaf_tag$q[(32'h20)+:(32)];
+        end
         tri_cache$clear = start_q;
         tri_cache$mask = tc_mask$q;
-        tri_cache$id = leaf_tag$q[(32'h0)+:(16)];
+        tri_cache$id = tri_ids[(32'h0)+:(16)];
         need_ta = go & leaf_valid$q & ~tri_cache$hit;
-        need_tb = go & leaf_valid$q & ~(tb_ok$q & (tb_id$q == leaf_tag$q[(32'h10)+:(16)]));
+        need_tb = go & leaf_valid$q & ~(tb_ok$q & (tb_id$q == tri_ids[(32'h10)+:(16)]));
         mem_port$clear = start_q;
         mem_port$go = go;
         mem_port$pf_on = pf != 32'h0;
@@ -879,7 +905,10 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         mem_port$cur_fb = d_cntr$cur_fb;
         mem_port$need_ta = need_ta;
         mem_port$need_tb = need_tb;
-        mem_port$leaf_tag = leaf_tag$q;
+        mem_port$leaf_tag = tri_ids;
+        mem_port$records = mode_rec$q;
+        mem_port$cur_sa = d_cntr$cur_a[32'h0];
+        mem_port$cur_sb = d_cntr$cur_b[32'h0];
         mem_port$mem_req_ready = mem_req_ready;
         mem_port$mem_resp_valid = mem_resp_valid;
         mem_port$mem_resp_data = mem_resp_data;
@@ -977,9 +1006,13 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         if (leaf_out & ~d_cntr$leaf_in) begin
             leaf_count$d = leaf_count$q - 32'h1;
         end
-        tri_cache$next_id = leaf_tag$q[(32'h0)+:(16)];
+        next_tri_ids = leaf_fifo$data_out[(32'h0)+:(32)];
+        if (mode_rec$q) begin
+            next_tri_ids = leaf_fifo$data_out[(32'h20)+:(32)];
+        end
+        tri_cache$next_id = tri_ids[(32'h0)+:(16)];
         if (leaf_out & ~halt) begin
-            tri_cache$next_id = leaf_fifo$data_out[(32'h0)+:(16)];
+            tri_cache$next_id = next_tri_ids[(32'h0)+:(16)];
         end
         tri_unit$a_v_x$0 = tri_cache$word[(32'h3 * 0 * 32'h20)+:(32)];
         tri_unit$a_v_y$0 = tri_cache$word[((32'h3 * 0 + 32'h1) * 32'h20)+:(32)];
@@ -1031,7 +1064,7 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         tri_unit$b_alpha_f = tb_word$q[(32'h16 * 32'h20)+:(32)];
         tri_unit$b_v_exact = tb_word$q[32'h17 * 32'h20];
         tri_unit$b_degenerate = tb_word$q[32'h17 * 32'h20 + 32'h1];
-        tri_unit$tag = leaf_tag$q;
+        tri_unit$tag = leaf_tag$q[(32'h0)+:(32)];
         tri_unit$in_valid = tri_in;
         result$take = tri_take;
         result$out_valid = tri_unit$out_valid;
@@ -1115,7 +1148,7 @@ module top$cnt_dop(d,q,clock);
 endmodule // top$cnt_dop
 
 
-module top$d_cntr(clock,clear,lifo,push_root,root,go,pf,one,credit_lim,leaf_count,wa_empty,wb_empty,dop_valid,dop_overlap,side,empty,count,max_count,overflow,push,pop,pop_entry,pop_fetch,ent_valid,cur_a,cur_b,cur_flip,cur_fa,cur_fb,need_na,need_nb,issue,r_a,r_b,r_a_leaf,r_b_leaf,leaf_in,leaf_pair,inflight,pend);
+module top$d_cntr(clock,clear,lifo,push_root,root,go,pf,one,credit_lim,leaf_count,records,wa_empty,wb_empty,dop_valid,dop_overlap,side,empty,count,max_count,overflow,push,pop,pop_entry,pop_fetch,ent_valid,cur_a,cur_b,cur_flip,cur_fa,cur_fb,need_na,need_nb,issue,r_a,r_b,r_a_leaf,r_b_leaf,leaf_in,leaf_pair,inflight,pend);
     
     // Module arguments
     input wire  clock;
@@ -1128,6 +1161,7 @@ module top$d_cntr(clock,clear,lifo,push_root,root,go,pf,one,credit_lim,leaf_coun
     input wire  one;
     input wire  [5:0] credit_lim;
     input wire  [5:0] leaf_count;
+    input wire  records;
     input wire  wa_empty;
     input wire  wb_empty;
     input wire  dop_valid;
@@ -1155,7 +1189,7 @@ module top$d_cntr(clock,clear,lifo,push_root,root,go,pf,one,credit_lim,leaf_coun
     output reg  r_a_leaf;
     output reg  r_b_leaf;
     output reg  leaf_in;
-    output reg  [31:0] leaf_pair;
+    output reg  [63:0] leaf_pair;
     output reg  [4:0] inflight;
     output reg  pend;
     
@@ -1223,6 +1257,7 @@ module top$d_cntr(clock,clear,lifo,push_root,root,go,pf,one,credit_lim,leaf_coun
     reg  pend_data$clock;
     
     // Local signals
+    reg  [15:0] id_mask;
     reg  [66:0] head_ent;
     reg  [3:0] head_fetch;
     reg  ent_last;
@@ -1412,10 +1447,14 @@ module top$d_cntr(clock,clear,lifo,push_root,root,go,pf,one,credit_lim,leaf_coun
         queue$pop = pop;
         top = queue$top_data;
         top_two = top[32'h42];
-        fetch_a0 = ~(last_ok$q & (last_a$q == top[(32'h0)+:(16)]));
-        fetch_b0 = ~(last_ok$q & (last_b$q == top[(32'h10)+:(16)]));
-        fetch_a1 = top_two & (top[(32'h21)+:(16)] != top[(32'h0)+:(16)]);
-        fetch_b1 = top_two & (top[(32'h31)+:(16)] != top[(32'h10)+:(16)]);
+        id_mask = 32'hffff;
+        if (records) begin
+            id_mask = 32'hfffe;
+        end
+        fetch_a0 = ~(last_ok$q & ((last_a$q & id_mask) == (top[(32'h0)+:(16)] & id_mask)));
+        fetch_b0 = ~(last_ok$q & ((last_b$q & id_mask) == (top[(32'h10)+:(16)] & id_mask)));
+        fetch_a1 = top_two & ((top[(32'h21)+:(16)] & id_mask) != (top[(32'h0)+:(16)] & id_mask));
+        fetch_b1 = top_two & ((top[(32'h31)+:(16)] & id_mask) != (top[(32'h10)+:(16)] & id_mask));
         pop_fetch = ((fetch_a0) & 4'hf) | (((fetch_b0) & 4'hf) << 32'h1) | (((fetch_a1) & 4'hf) << 32'h2) | (((fetch_b1) & 4'hf) << 32'h3);
         pop_entry = top;
         ahd_ent$wsel = 32'h0;
@@ -1477,7 +1516,7 @@ module top$d_cntr(clock,clear,lifo,push_root,root,go,pf,one,credit_lim,leaf_coun
             queue$push_data = pend_data$q;
         end
         leaf_in = r_hit & r_a_leaf & r_b_leaf;
-        leaf_pair = ((r_a0) & 32'hffffffff) | (((r_b0) & 32'hffffffff) << 32'h10);
+        leaf_pair = ((r_a0) & 64'hffffffffffffffff) | (((r_b0) & 64'hffffffffffffffff) << 32'h10) | (((r_a1) & 64'hffffffffffffffff) << 32'h20) | (((r_b1) & 64'hffffffffffffffff) << 32'h30);
         if (r_hit & ~(r_a_leaf & r_b_leaf)) begin
             queue$push = 1'b1;
             if (r_a_leaf | r_b_leaf) begin
@@ -13496,12 +13535,12 @@ module top$leaf_fifo(clock,read,data_out,empty,almost_empty,underflow,write,data
     // Module arguments
     input wire  clock;
     input wire  read;
-    output reg  [31:0] data_out;
+    output reg  [63:0] data_out;
     output reg  empty;
     output reg  almost_empty;
     output reg  underflow;
     input wire  write;
-    input wire  [31:0] data_in;
+    input wire  [63:0] data_in;
     output reg  full;
     output reg  almost_full;
     output reg  overflow;
@@ -13509,32 +13548,32 @@ module top$leaf_fifo(clock,read,data_out,empty,almost_empty,underflow,write,data
     // Stub signals
     reg  [5:0] ram$read_address;
     reg  ram$read_clock;
-    wire  [31:0] ram$read_data;
+    wire  [63:0] ram$read_data;
     reg  [5:0] ram$write_address;
     reg  ram$write_clock;
-    reg  [31:0] ram$write_data;
+    reg  [63:0] ram$write_data;
     reg  ram$write_enable;
     reg  read_logic$clock;
     reg  read_logic$read;
-    wire  [31:0] read_logic$data_out;
+    wire  [63:0] read_logic$data_out;
     wire  read_logic$empty;
     wire  read_logic$almost_empty;
     wire  read_logic$underflow;
     reg  [6:0] read_logic$write_address_delayed;
     wire  [5:0] read_logic$ram_read_address;
-    reg  [31:0] read_logic$ram_read_data;
+    reg  [63:0] read_logic$ram_read_data;
     wire  read_logic$ram_read_clock;
     wire  [6:0] read_logic$read_address_out;
     wire  [6:0] read_logic$fill_level;
     reg  write_logic$write;
-    reg  [31:0] write_logic$data_in;
+    reg  [63:0] write_logic$data_in;
     wire  write_logic$full;
     wire  write_logic$almost_full;
     wire  write_logic$overflow;
     reg  write_logic$clock;
     wire  [5:0] write_logic$ram_write_address;
     wire  write_logic$ram_write_clock;
-    wire  [31:0] write_logic$ram_write_data;
+    wire  [63:0] write_logic$ram_write_data;
     wire  write_logic$ram_write_enable;
     reg  [6:0] write_logic$read_address;
     wire  [6:0] write_logic$write_address_delayed;
@@ -13613,14 +13652,14 @@ module top$leaf_fifo$ram(read_address,read_clock,read_data,write_address,write_c
     // Module arguments
     input wire  [5:0] read_address;
     input wire  read_clock;
-    output reg  [31:0] read_data;
+    output reg  [63:0] read_data;
     input wire  [5:0] write_address;
     input wire  write_clock;
-    input wire  [31:0] write_data;
+    input wire  [63:0] write_data;
     input wire  write_enable;
     
     // Update code (custom)
-    reg[31:0] mem[63:0];
+    reg[63:0] mem[63:0];
     
     
     
@@ -13642,13 +13681,13 @@ module top$leaf_fifo$read_logic(clock,read,data_out,empty,almost_empty,underflow
     // Module arguments
     input wire  clock;
     input wire  read;
-    output reg  [31:0] data_out;
+    output reg  [63:0] data_out;
     output reg  empty;
     output reg  almost_empty;
     output reg  underflow;
     input wire  [6:0] write_address_delayed;
     output reg  [5:0] ram_read_address;
-    input wire  [31:0] ram_read_data;
+    input wire  [63:0] ram_read_data;
     output reg  ram_read_clock;
     output reg  [6:0] read_address_out;
     output reg  [6:0] fill_level;
@@ -13737,14 +13776,14 @@ module top$leaf_fifo$write_logic(write,data_in,full,almost_full,overflow,clock,r
     
     // Module arguments
     input wire  write;
-    input wire  [31:0] data_in;
+    input wire  [63:0] data_in;
     output reg  full;
     output reg  almost_full;
     output reg  overflow;
     input wire  clock;
     output reg  [5:0] ram_write_address;
     output reg  ram_write_clock;
-    output reg  [31:0] ram_write_data;
+    output reg  [63:0] ram_write_data;
     output reg  ram_write_enable;
     input wire  [6:0] read_address;
     output reg  [6:0] write_address_delayed;
@@ -13824,13 +13863,33 @@ module top$leaf_fifo$write_logic(write,data_in,full,almost_full,overflow,clock,r
 endmodule // top$leaf_fifo$write_logic
 
 
-module top$mem_port(clock,clear,go,pf_on,port_out,base_na,base_nb,base_ta,base_tb,pop,pop_entry,pop_fetch,issue,cur_fa,cur_fb,need_ta,need_tb,leaf_tag,mem_req_ready,mem_resp_valid,mem_resp_data,mem_req_valid,mem_req_addr,req_dst,accept,resp,resp_dst,ta_req,tb_req,outstanding,na_in,nb_in,wa_empty,wb_empty);
+module top$leaf_tag(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$leaf_tag
+
+
+module top$mem_port(clock,clear,go,pf_on,records,port_out,base_na,base_nb,base_ta,base_tb,pop,pop_entry,pop_fetch,issue,cur_fa,cur_fb,cur_sa,cur_sb,need_ta,need_tb,leaf_tag,mem_req_ready,mem_resp_valid,mem_resp_data,mem_req_valid,mem_req_addr,req_dst,accept,resp,resp_dst,ta_req,tb_req,outstanding,na_in,nb_in,wa_empty,wb_empty);
     
     // Module arguments
     input wire  clock;
     input wire  clear;
     input wire  go;
     input wire  pf_on;
+    input wire  records;
     input wire  [3:0] port_out;
     input wire  [23:0] base_na;
     input wire  [23:0] base_nb;
@@ -13842,12 +13901,14 @@ module top$mem_port(clock,clear,go,pf_on,port_out,base_na,base_nb,base_ta,base_t
     input wire  issue;
     input wire  cur_fa;
     input wire  cur_fb;
+    input wire  cur_sa;
+    input wire  cur_sb;
     input wire  need_ta;
     input wire  need_tb;
     input wire  [31:0] leaf_tag;
     input wire  mem_req_ready;
     input wire  mem_resp_valid;
-    input wire  [832:0] mem_resp_data;
+    input wire  [2047:0] mem_resp_data;
     output reg  mem_req_valid;
     output reg  [23:0] mem_req_addr;
     output reg  [1:0] req_dst;
@@ -13981,9 +14042,9 @@ module top$mem_port(clock,clear,go,pf_on,port_out,base_na,base_nb,base_ta,base_t
     reg  seq_tail$clock;
     reg  wa$clock;
     reg  [15:0] wa$wsel;
-    reg  [832:0] wa$wdata;
+    reg  [1665:0] wa$wdata;
     reg  [15:0] wa$rsel;
-    wire  [832:0] wa$rdata;
+    wire  [1665:0] wa$rdata;
     reg  [3:0] wa_head$d;
     wire  [3:0] wa_head$q;
     reg  wa_head$clock;
@@ -13995,9 +14056,9 @@ module top$mem_port(clock,clear,go,pf_on,port_out,base_na,base_nb,base_ta,base_t
     reg  wa_n$clock;
     reg  wb$clock;
     reg  [15:0] wb$wsel;
-    reg  [832:0] wb$wdata;
+    reg  [1665:0] wb$wdata;
     reg  [15:0] wb$rsel;
-    wire  [832:0] wb$rdata;
+    wire  [1665:0] wb$rdata;
     reg  [3:0] wb_head$d;
     wire  [3:0] wb_head$q;
     reg  wb_head$clock;
@@ -14007,11 +14068,11 @@ module top$mem_port(clock,clear,go,pf_on,port_out,base_na,base_nb,base_ta,base_t
     reg  [4:0] wb_n$d;
     wire  [4:0] wb_n$q;
     reg  wb_n$clock;
-    reg  [832:0] na_word$d;
-    wire  [832:0] na_word$q;
+    reg  [1665:0] na_word$d;
+    wire  [1665:0] na_word$q;
     reg  na_word$clock;
-    reg  [832:0] nb_word$d;
-    wire  [832:0] nb_word$q;
+    reg  [1665:0] nb_word$d;
+    wire  [1665:0] nb_word$q;
     reg  nb_word$clock;
     reg  tags$clock;
     reg  [15:0] tags$wsel;
@@ -14055,9 +14116,12 @@ module top$mem_port(clock,clear,go,pf_on,port_out,base_na,base_nb,base_ta,base_t
     reg  [31:0] put1;
     reg  [31:0] put2;
     reg  [31:0] put3;
+    reg  [1665:0] rec_a;
+    reg  [1665:0] rec_b;
     reg  port_free;
     reg  req;
     reg  [15:0] req_id;
+    reg  [15:0] ask_rec;
     reg  [23:0] req_addr;
     
     // Sub module instances
@@ -14454,13 +14518,21 @@ module top$mem_port(clock,clear,go,pf_on,port_out,base_na,base_nb,base_ta,base_t
         tags$clock = clock;
         wa$rsel = c_one16 << wa_head$q;
         wb$rsel = c_one16 << wb_head$q;
-        na_in = na_word$q;
+        rec_a = na_word$q;
         if (cur_fa) begin
-            na_in = wa$rdata;
+            rec_a = wa$rdata;
         end
-        nb_in = nb_word$q;
+        rec_b = nb_word$q;
         if (cur_fb) begin
-            nb_in = wb$rdata;
+            rec_b = wb$rdata;
+        end
+        na_in = rec_a[(32'h0)+:(833)];
+        if (records & cur_sa) begin
+            na_in = rec_a[(32'h682 - 32'h341)+:(833)];
+        end
+        nb_in = rec_b[(32'h0)+:(833)];
+        if (records & cur_sb) begin
+            nb_in = rec_b[(32'h682 - 32'h341)+:(833)];
         end
         wa_empty = wa_n$q == 32'h0;
         wb_empty = wb_n$q == 32'h0;
@@ -14566,9 +14638,13 @@ module top$mem_port(clock,clear,go,pf_on,port_out,base_na,base_nb,base_ta,base_t
         port_free = tag_n$q <= ((port_out) & 5'h1f);
         req_dst = ((ask_front[(32'h10)+:(1)]) & 2'h3);
         req_id = ask_front[(32'h0)+:(16)];
-        req_addr = base_na + ((ask_front[(32'h0)+:(16)]) & 24'hffffff);
+        ask_rec = ask_front[(32'h0)+:(16)];
+        if (records) begin
+            ask_rec = ((ask_front[(32'h1)+:(15)]) & 16'hffff);
+        end
+        req_addr = base_na + ((ask_rec) & 24'hffffff);
         if (ask_front[32'h10]) begin
-            req_addr = base_nb + ((ask_front[(32'h0)+:(16)]) & 24'hffffff);
+            req_addr = base_nb + ((ask_rec) & 24'hffffff);
         end
         req = port_free & ask_ok;
         if (need_tb & ~tb_pend$q) begin
@@ -14618,12 +14694,12 @@ module top$mem_port(clock,clear,go,pf_on,port_out,base_na,base_nb,base_ta,base_t
         if (resp & (resp_dst == 32'h0)) begin
             wa$wsel = c_one16 << wa_tail$q;
         end
-        wa$wdata = mem_resp_data[(32'h0)+:(833)];
+        wa$wdata = mem_resp_data[(32'h0)+:(1666)];
         wb$wsel = 32'h0;
         if (resp & (resp_dst == 32'h1)) begin
             wb$wsel = c_one16 << wb_tail$q;
         end
-        wb$wdata = mem_resp_data[(32'h0)+:(833)];
+        wb$wdata = mem_resp_data[(32'h0)+:(1666)];
         if (resp) begin
             tag_head$d = tag_head$q + 32'h1;
             if (resp_dst == 32'h0) begin
@@ -15098,13 +15174,13 @@ endmodule // top$mem_port$ask_w$0
 module top$mem_port$na_word(d,q,clock);
     
     // Module arguments
-    input wire  [832:0] d;
-    output reg  [832:0] q;
+    input wire  [1665:0] d;
+    output reg  [1665:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 833'h0;
+       q = 1666'h0;
     end
     
     always @(posedge clock) begin
@@ -15419,62 +15495,62 @@ module top$mem_port$wa(clock,wsel,wdata,rsel,rdata);
     // Module arguments
     input wire  clock;
     input wire  [15:0] wsel;
-    input wire  [832:0] wdata;
+    input wire  [1665:0] wdata;
     input wire  [15:0] rsel;
-    output reg  [832:0] rdata;
+    output reg  [1665:0] rdata;
     
     // Stub signals
-    reg  [832:0] row$0$d;
-    wire  [832:0] row$0$q;
+    reg  [1665:0] row$0$d;
+    wire  [1665:0] row$0$q;
     reg  row$0$clock;
-    reg  [832:0] row$1$d;
-    wire  [832:0] row$1$q;
+    reg  [1665:0] row$1$d;
+    wire  [1665:0] row$1$q;
     reg  row$1$clock;
-    reg  [832:0] row$2$d;
-    wire  [832:0] row$2$q;
+    reg  [1665:0] row$2$d;
+    wire  [1665:0] row$2$q;
     reg  row$2$clock;
-    reg  [832:0] row$3$d;
-    wire  [832:0] row$3$q;
+    reg  [1665:0] row$3$d;
+    wire  [1665:0] row$3$q;
     reg  row$3$clock;
-    reg  [832:0] row$4$d;
-    wire  [832:0] row$4$q;
+    reg  [1665:0] row$4$d;
+    wire  [1665:0] row$4$q;
     reg  row$4$clock;
-    reg  [832:0] row$5$d;
-    wire  [832:0] row$5$q;
+    reg  [1665:0] row$5$d;
+    wire  [1665:0] row$5$q;
     reg  row$5$clock;
-    reg  [832:0] row$6$d;
-    wire  [832:0] row$6$q;
+    reg  [1665:0] row$6$d;
+    wire  [1665:0] row$6$q;
     reg  row$6$clock;
-    reg  [832:0] row$7$d;
-    wire  [832:0] row$7$q;
+    reg  [1665:0] row$7$d;
+    wire  [1665:0] row$7$q;
     reg  row$7$clock;
-    reg  [832:0] row$8$d;
-    wire  [832:0] row$8$q;
+    reg  [1665:0] row$8$d;
+    wire  [1665:0] row$8$q;
     reg  row$8$clock;
-    reg  [832:0] row$9$d;
-    wire  [832:0] row$9$q;
+    reg  [1665:0] row$9$d;
+    wire  [1665:0] row$9$q;
     reg  row$9$clock;
-    reg  [832:0] row$10$d;
-    wire  [832:0] row$10$q;
+    reg  [1665:0] row$10$d;
+    wire  [1665:0] row$10$q;
     reg  row$10$clock;
-    reg  [832:0] row$11$d;
-    wire  [832:0] row$11$q;
+    reg  [1665:0] row$11$d;
+    wire  [1665:0] row$11$q;
     reg  row$11$clock;
-    reg  [832:0] row$12$d;
-    wire  [832:0] row$12$q;
+    reg  [1665:0] row$12$d;
+    wire  [1665:0] row$12$q;
     reg  row$12$clock;
-    reg  [832:0] row$13$d;
-    wire  [832:0] row$13$q;
+    reg  [1665:0] row$13$d;
+    wire  [1665:0] row$13$q;
     reg  row$13$clock;
-    reg  [832:0] row$14$d;
-    wire  [832:0] row$14$q;
+    reg  [1665:0] row$14$d;
+    wire  [1665:0] row$14$q;
     reg  row$14$clock;
-    reg  [832:0] row$15$d;
-    wire  [832:0] row$15$q;
+    reg  [1665:0] row$15$d;
+    wire  [1665:0] row$15$q;
     reg  row$15$clock;
     
     // Local signals
-    reg  [832:0] picked;
+    reg  [1665:0] picked;
     
     // Sub module instances
     top$mem_port$na_word row$0(

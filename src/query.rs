@@ -96,7 +96,7 @@ impl Chip {
     /// ([`reg::control_writes`]; the RTL host writes the DOP unit's and TRI_UNIT's setup
     /// before these).
     pub fn control_writes(&self, order: Order, mode: Mode, p: &Params) -> Vec<(u32, u32)> {
-        reg::control_writes(self.image_bases(), order, mode, p, self.cfg.tri_cache)
+        reg::control_writes(self.image_bases(), order, mode, p, &self.cfg)
     }
 
     /// The host's setup as [`Chip::setup`] gives it, the DOP lanes computed when the DOP unit

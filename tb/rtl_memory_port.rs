@@ -109,6 +109,10 @@ fn run(seed: u64, cycles: u64, cov: &mut Coverage) {
     uut.issue.connect();
     uut.cur_fa.connect();
     uut.cur_fb.connect();
+    // the `words` layout (records, cur_sa, cur_sb low; the `records` layout: tb/rtl_chip.rs)
+    uut.records.connect();
+    uut.cur_sa.connect();
+    uut.cur_sb.connect();
     uut.need_ta.connect();
     uut.need_tb.connect();
     uut.leaf_tag.connect();

@@ -1,10 +1,12 @@
 // Testbench of an exported collision chip (rtl/chip_*.v, module `top`; parameter MW its
-// memory word bits: 578 for chip_e8m15_k6, 833 for chip_b32_k24): the host and the memory
+// memory word bits: 554 for chip_e8m15_k6, 2048 for chip_b32_k24): the host and the memory
 // of src/harness/chip_io.rs, clock for clock. It writes the registers from
 // +host=<file> (one `{addr[10], data[32]}` per line), pulses `start`, serves memory
 // requests from +mem=<file> ($readmemh, one MW-bit word per line) with the memory model
-// (+latency=L: a request accepted at edge t is answered in the cycle ending with edge
-// t+L+B-1, B = ceil(MW / +bus_bits) clocks on the bus, 1 without +bus_bits; +interval=I:
+// (+word_bits=W the bits a word moves on the bus, default MW: the layout's word, which a
+// port of records also carries in the `words` layout; +latency=L: a request accepted at
+// edge t is answered in the cycle ending with edge t+L+B-1, B = ceil(W / +bus_bits)
+// clocks on the bus, 1 without +bus_bits; +interval=I:
 // the next request is accepted max(I, B) edges later at the earliest; or, with +ddr,
 // the DDR SDRAM model of cycle::memory::Ddr: +banks +page_bytes +bus_bits +burst +hit
 // +miss, a request accepted in any cycle; docs/ARCHITECTURE.md), reads results
@@ -23,7 +25,6 @@
 `timescale 1ns / 1ps
 module tb;
   parameter MW = 578;
-  localparam WB = (MW + 7) / 8;  // bytes per word: word address a starts at byte a * WB
   localparam DEPTH = 1 << 16;
   reg clock = 0;
   reg host_we = 0;
@@ -56,6 +57,7 @@ module tb;
   integer qaddr [0:15];
   integer qh, qt, next_accept, cyc, i, latency, interval, reader, max_cycles;
   // DDR SDRAM: per bank the open row (-1: none) and the cycle it is free; the data bus
+  integer wbits, wb;  // bits and bytes per word: word address a starts at byte a * wb
   integer ddr, banks, page_bytes, bus_bits, burst, hit, miss, bursts, page, bank, row, t0, t1, bus_free, beats;
   integer open_row [0:63];  // cycle::memory::Ddr::MAX_BANKS
   integer bank_free [0:63];
@@ -78,6 +80,8 @@ module tb;
     if (!$value$plusargs("latency=%d", latency)) latency = 1;
     if (!$value$plusargs("interval=%d", interval)) interval = 1;
     if (!$value$plusargs("reader=%d", reader)) reader = 1;
+    if (!$value$plusargs("word_bits=%d", wbits)) wbits = MW;
+    wb = (wbits + 7) / 8;
     ddr = $test$plusargs("ddr");
     if (ddr) begin
       if (!$value$plusargs("banks=%d", banks) || !$value$plusargs("page_bytes=%d", page_bytes)
@@ -86,7 +90,7 @@ module tb;
         $display("chip_tb: +ddr needs +banks (at most 64) +page_bytes +bus_bits +burst +hit +miss");
         $finish;
       end
-      bursts = (MW + bus_bits * burst - 1) / (bus_bits * burst);
+      bursts = (wbits + bus_bits * burst - 1) / (bus_bits * burst);
       for (i = 0; i < 64; i = i + 1) begin
         open_row[i] = -1;
         bank_free[i] = 0;
@@ -94,9 +98,9 @@ module tb;
       bus_free = 0;
       beats = 1;
     end else begin
-      // ideal: a word moves in ceil(MW / bus_bits) clocks on a +bus_bits bus, else in one
+      // ideal: a word moves in ceil(W / bus_bits) clocks on a +bus_bits bus, else in one
       if (!$value$plusargs("bus_bits=%d", bus_bits)) bus_bits = 0;
-      beats = bus_bits > 0 ? (MW + bus_bits - 1) / bus_bits : 1;
+      beats = bus_bits > 0 ? (wbits + bus_bits - 1) / bus_bits : 1;
     end
     if (!$value$plusargs("max_cycles=%d", max_cycles)) max_cycles = 100000;
     ports = $test$plusargs("ports");
@@ -128,7 +132,7 @@ module tb;
       // the chip's request and result outputs depend on its registers only
       if (mem_req_valid && mem_req_ready) begin
         if (ddr) begin
-          page = mem_req_addr * WB / page_bytes;
+          page = mem_req_addr * wb / page_bytes;
           bank = page % banks;
           row = page / banks;
           t0 = cyc > bank_free[bank] ? cyc : bank_free[bank];

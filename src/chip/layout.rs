@@ -5,18 +5,19 @@
 //! Memory words, with W the width of the datapath's format (docs/ARCHITECTURE.md, "DOP tree
 //! and memory image"):
 //! - node word, `1 + k*W + 64` bits: `is_leaf`, d_0..d_{k-1}, then two 32-bit fields:
-//!   children (inner node) or triangle index and 0 (leaf; `records`: the triangle's
-//!   record), pre-order, root at node 0;
+//!   the children's ids ([`node_ids`]; inner node) or triangle index and 0 (leaf;
+//!   `records`: the triangle's record), pre-order, root at node 0;
 //! - triangle word, `23*W + 2` bits: vertices v0, v1, v2 (x, y, z each), M_B row-major
 //!   (3x4), the error words `alpha_m`, `alpha_f` ([`TriWord`](crate::golden::memory::TriWord)),
 //!   the `v_exact` bit and the `degenerate` bit.
 //!
 //! The memory image holds A's node records, A's triangles, B's node records, B's triangles
 //! ([`image_bases`]), in one of two layouts ([`MemLayout`]): `words`, one node word per
-//! record, every record one memory word of the wider kind (the RTL chips'); `records`, the
+//! record, every record one memory word of the wider kind; `records`, the
 //! two children of an inner node in one record ([`sibling_records`]), every record padded to
 //! a power of two bytes, and the records of a DDR memory spread over its banks
-//! ([`RecordMap`]).
+//! ([`RecordMap`]): slot 0's node word in bits `0 .. node_bits`, slot 1's from `node_bits`
+//! (a triangle word from bit 0), the chip naming a node `2 record + slot` ([`node_ids`]).
 //!
 //! D_CNTR's entry ([`Entry`]) is two node pairs, pushed and popped together; a pair is A's
 //! node, B's node (16 bits each) and the flip bit that orders its children
@@ -55,6 +56,17 @@ pub const fn word_bits(k: usize, dop_w: usize, tri_w: usize) -> usize {
     if n > t { n } else { t }
 }
 
+/// Bits of a [`MemLayout::Records`] memory word: a node pair or a triangle word, padded to a
+/// power of two bytes.
+pub const fn record_bits(k: usize, dop_w: usize, tri_w: usize) -> usize {
+    padded_record(node_bits(k, dop_w), tri_bits(tri_w))
+}
+
+const fn padded_record(node: usize, tri: usize) -> usize {
+    let n = 2 * node;
+    8 * (if n > tri { n } else { tri }).div_ceil(8).next_power_of_two()
+}
+
 /// Word sizes of one configuration, and its layout.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
 pub struct Layout {
@@ -73,7 +85,7 @@ impl Layout {
     pub fn word_bits(&self) -> u32 {
         match self.kind {
             MemLayout::Words => self.node_bits.max(self.tri_bits),
-            MemLayout::Records => 8 * (2 * self.node_bits).max(self.tri_bits).div_ceil(8).next_power_of_two(),
+            MemLayout::Records => padded_record(self.node_bits as usize, self.tri_bits as usize) as u32,
         }
     }
     pub fn node_bytes(&self) -> u64 {
@@ -121,6 +133,21 @@ pub fn sibling_records(children: &[Option<[u32; 2]>]) -> Vec<u32> {
         c.iter().for_each(|&n| rec[n as usize] = j as u32 + 1);
     }
     rec
+}
+
+/// The id the chip knows each node by (in D_CNTR's entries and the children fields of node
+/// words). `words`: its pre-order number. `records`: `2 record + slot`, the first child of a
+/// record in slot 0, the second in slot 1, the root in record 0, slot 0, so that the RTL
+/// finds a node's record (`id >> 1`) and its half of the record word (`id & 1`) without a
+/// table.
+pub fn node_ids(kind: MemLayout, children: &[Option<[u32; 2]>]) -> Vec<u32> {
+    let rec = node_records(kind, children);
+    if kind == MemLayout::Words {
+        return rec;
+    }
+    let mut id: Vec<u32> = rec.iter().map(|r| 2 * r).collect();
+    children.iter().flatten().for_each(|c| id[c[1] as usize] += 1);
+    id
 }
 
 /// Where a record lies: its word address in memory. `words`, and any layout on an ideal
@@ -171,6 +198,12 @@ impl RecordMap {
         let (b0, n) = regions[d as usize];
         let (row, j) = (i / (n * self.per_page), i % (n * self.per_page));
         (row * self.banks + b0 + j % n) * self.per_page + j / n
+    }
+
+    /// Whether the regions have banks of their own (else the image is in order, record `base
+    /// + i` at word `base + i`).
+    pub fn spread(&self) -> bool {
+        self.regions.is_some()
     }
 
     /// Word addresses an image of regions of `records` records (by [`Dst`]) spans.
@@ -275,6 +308,8 @@ mod tests {
         assert_eq!(node_records(MemLayout::Records, &tree), [0, 1, 2, 2, 1, 3, 3]);
         assert_eq!(node_records(MemLayout::Words, &tree), [0, 1, 2, 3, 4, 5, 6]);
         assert_eq!(tri_records(MemLayout::Records, &[3, 0, 2, 1]), [1, 3, 2, 0]);
+        assert_eq!(node_ids(MemLayout::Records, &tree), [0, 2, 4, 5, 3, 6, 7]);
+        assert_eq!(node_ids(MemLayout::Words, &tree), [0, 1, 2, 3, 4, 5, 6]);
         assert_eq!(tri_records(MemLayout::Words, &[3, 0, 2, 1]), [0, 1, 2, 3]);
     }
 

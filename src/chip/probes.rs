@@ -2,7 +2,8 @@
 
 /// The traversal signals every level shows (VCD scopes under `chip`, GTKWave save file
 /// scripts/gtkw/chip_e8m15_k6.gtkw): `(scope, name, width)`. [`probe_valid`] says which
-/// signal qualifies a value (a value nobody reads is left unspecified).
+/// signal qualifies a value (a value nobody reads is left unspecified). Nodes are shown by
+/// the chip's ids ([`node_ids`](super::layout::node_ids)), triangles by their indices.
 pub const PROBES: [(&str, &str, u32); 50] = [
     ("host", "start", 1),
     ("host", "busy", 1),

@@ -2,13 +2,16 @@
 //! DOP unit's setup words are at `0x000 + a` (lane i's C_i0..2, c_i and D.KLMSEL control at
 //! `8 i + 0..4`), TRI_UNIT's at [`TRI_SETUP`]` + a`; the traversal's from [`MODE`] on.
 
+use super::config::{ChipConfig, MemLayout};
 use super::params::Params;
 use super::rtl;
 use serde::{Deserialize, Serialize};
 
 /// TRI_UNIT's setup words (frame maps, bounds, eta).
 pub const TRI_SETUP: u32 = 0x100;
-/// The query: bit 0 the order ([`Order::Lifo`]), bit 1 first hit ([`Mode::First`]).
+/// The query: bit 0 the order ([`Order::Lifo`]), bit 1 first hit ([`Mode::First`]), bit 2
+/// the memory layout ([`MemLayout::Records`]; the cycle model takes it from its
+/// configuration).
 pub const MODE: u32 = 0x120;
 pub const ROOT: u32 = 0x121;
 /// Word addresses of A's nodes, B's nodes, A's triangles, B's triangles (24 bits each).
@@ -46,8 +49,8 @@ pub enum Order {
 }
 
 /// The [`MODE`] word.
-pub fn mode_word(order: Order, mode: Mode) -> u32 {
-    (order == Order::Lifo) as u32 | ((mode == Mode::First) as u32) << 1
+pub fn mode_word(order: Order, mode: Mode, layout: MemLayout) -> u32 {
+    (order == Order::Lifo) as u32 | ((mode == Mode::First) as u32) << 1 | ((layout == MemLayout::Records) as u32) << 2
 }
 
 /// The fields of a [`MODE`] word.
@@ -66,8 +69,10 @@ pub fn port_word(p: &Params) -> u32 {
 
 /// The register writes that start a query after the setup words: the memory image's
 /// bases (`base`, by [`Dst`](super::layout::Dst): [`image_bases`](super::layout::image_bases)),
-/// the root, the port and the triangle cache if not at their reset values, the mode last.
-pub fn control_writes(base: [u32; 4], order: Order, mode: Mode, p: &Params, tri_cache: u32) -> Vec<(u32, u32)> {
+/// the root, the port and `cfg`'s triangle cache if not at their reset values, the mode
+/// (with `cfg`'s layout) last.
+pub fn control_writes(base: [u32; 4], order: Order, mode: Mode, p: &Params, cfg: &ChipConfig) -> Vec<(u32, u32)> {
+    let tri_cache = cfg.tri_cache;
     use super::layout::Dst;
     let mut w = vec![
         (BASE_NA, base[Dst::NodeA as usize]),
@@ -83,6 +88,6 @@ pub fn control_writes(base: [u32; 4], order: Order, mode: Mode, p: &Params, tri_
     if tri_cache > 1 {
         w.push((TRI_CACHE, (tri_cache - 1).min(rtl::TRI_CACHE_LINES as u32 - 1)));
     }
-    w.push((MODE, mode_word(order, mode)));
+    w.push((MODE, mode_word(order, mode, cfg.layout)));
     w
 }

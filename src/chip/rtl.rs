@@ -72,7 +72,8 @@ pub fn rounding_tag(r: Rounding) -> &'static str {
 }
 
 /// The RTL chips, one row each: the kind's name, the exported file's name in `rtl/`, the
-/// module of `crate::rtl` that stamps it out, its configuration, and rust-hdl's speed on
+/// module of `crate::rtl` that stamps it out, its configuration, whether it also reads the
+/// `records` layout (host register 0x120 bit 2; its memory word then a record), and rust-hdl's speed on
 /// it in clocks per second on this project's machine (README, `cargo bench --bench
 /// chip_sim`: for estimates before a run). Every chip has DOP lanes rounding outward,
 /// T.CHECK to nearest-even and a triangle cache of [`TRI_CACHE_LINES`] lines (host register
@@ -83,17 +84,17 @@ macro_rules! rtl_chips {
     ($m:ident) => {
         $m! {
             /// k = 6 in e8m15: small and fast to simulate.
-            K6E8m15, "chip_e8m15_k6", e8m15, (6, REDUCED, REDUCED), 14.0;
+            K6E8m15, "chip_e8m15_k6", e8m15, (6, REDUCED, REDUCED), false, 14.0;
             /// The papers' chip (DATE'05 §4): k = 24 in binary32.
-            K24B32, "chip_b32_k24", b32, (24, BINARY32, BINARY32), 4.0;
+            K24B32, "chip_b32_k24", b32, (24, BINARY32, BINARY32), true, 4.0;
             /// The papers' chip with its DOP datapath in e8m15 (format `e8m15/binary32`).
-            K24E8m15B32, "chip_e8m15_b32_k24", e8m15_b32, (24, REDUCED, BINARY32), 4.0;
+            K24E8m15B32, "chip_e8m15_b32_k24", e8m15_b32, (24, REDUCED, BINARY32), false, 4.0;
         }
     };
 }
 
 macro_rules! chip_kinds {
-    ($($(#[$doc:meta])* $kind:ident, $name:literal, $module:ident, ($k:literal, $dop:ident, $tri:ident), $speed:literal;)+) => {
+    ($($(#[$doc:meta])* $kind:ident, $name:literal, $module:ident, ($k:literal, $dop:ident, $tri:ident), $records:literal, $speed:literal;)+) => {
         /// The RTL chips: one `CollisionChip` per configuration, exported to `rtl/<name>.v`.
         #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
         pub enum ChipKind {
@@ -124,6 +125,14 @@ macro_rules! chip_kinds {
                 }
             }
 
+            /// Whether the chip also reads the `records` layout (with one node record held per
+            /// object).
+            pub const fn records(self) -> bool {
+                match self {
+                    $(ChipKind::$kind => $records,)+
+                }
+            }
+
             /// rust-hdl's clocks per second on this chip, for estimates before a run.
             pub const fn rtl_clocks_per_second(self) -> f64 {
                 match self {
@@ -136,14 +145,24 @@ macro_rules! chip_kinds {
 rtl_chips!(chip_kinds);
 
 impl ChipKind {
-    /// The chip built for `cfg`, if any (its triangle cache aside: every chip has
-    /// [`TRI_CACHE_LINES`] lines, host register 0x127 picks how many are used).
+    /// The chip built for `cfg`'s k, formats and roundings, if any (its triangle cache and
+    /// memory layout aside: every chip has [`TRI_CACHE_LINES`] lines, host register 0x127
+    /// picks how many are used; [`records`](Self::records) says which layouts it reads).
     pub fn of(cfg: &ChipConfig) -> Option<ChipKind> {
-        ChipKind::ALL.iter().copied().find(|k| k.config() == ChipConfig { tri_cache: 1, ..*cfg })
+        let base = ChipConfig { tri_cache: 1, layout: super::config::MemLayout::Words, node_cache: 1, ..*cfg };
+        ChipKind::ALL.iter().copied().find(|k| k.config() == base)
     }
 
-    /// Memory word bits (the wider of a node word and a triangle word).
-    pub fn word_bits(self) -> usize {
-        super::layout::Layout::new(&self.config()).word_bits() as usize
+    /// Memory word bits: a record ([`record_bits`](super::layout::record_bits)) on a chip
+    /// that reads the `records` layout, else the wider of a node word and a triangle word
+    /// (in either layout a word's or record's bits from bit 0, the rest zero).
+    pub const fn word_bits(self) -> usize {
+        let c = self.config();
+        let (dop_w, tri_w) = (c.format.dop.width() as usize, c.format.tri.width() as usize);
+        if self.records() {
+            super::layout::record_bits(c.k, dop_w, tri_w)
+        } else {
+            super::layout::word_bits(c.k, dop_w, tri_w)
+        }
     }
 }

@@ -73,6 +73,8 @@ pub struct Chip<'a> {
     map: RecordMap,
     /// The record of each node of A and B, and of each triangle.
     records: [&'a [u32]; 2],
+    /// The id the chip knows each node of A and B by (what the traversal signals show).
+    ids: [&'a [u32]; 2],
     tri_records: [&'a [u32]; 2],
     // ---- query state
     run: bool,
@@ -167,6 +169,7 @@ impl<'a> Chip<'a> {
             base: [0; 4],
             map: RecordMap::new(&Layout::new(cfg), &p.memory),
             records: [&a.records, &b.records],
+            ids: [&a.ids, &b.ids],
             tri_records: [&a.tri_records, &b.tri_records],
             run: false,
             done: false,
@@ -334,8 +337,8 @@ impl<'a> Chip<'a> {
             b(push),
             b(c.pop),
             b(c.cur.is_some()),
-            c.cur.map_or(0, |c| c.pair.a as u64),
-            c.cur.map_or(0, |c| c.pair.b as u64),
+            c.cur.map_or(0, |c| self.ids[0][c.pair.a as usize] as u64),
+            c.cur.map_or(0, |c| self.ids[1][c.pair.b as usize] as u64),
             b(c.need[0]),
             b(c.need[1]),
             b(c.issue),
@@ -348,8 +351,8 @@ impl<'a> Chip<'a> {
             b(i.mem_resp.is_some()),
             b(dop.is_some()),
             b(dop.is_some_and(|r| r.overlap)),
-            dop.map_or(0, |r| r.pair.a as u64),
-            dop.map_or(0, |r| r.pair.b as u64),
+            dop.map_or(0, |r| self.ids[0][r.pair.a as usize] as u64),
+            dop.map_or(0, |r| self.ids[1][r.pair.b as usize] as u64),
             leaf(dop.map(|r| r.na)),
             leaf(dop.map(|r| r.nb)),
             b(c.leaf_in.is_some()),

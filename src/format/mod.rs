@@ -215,7 +215,7 @@ impl Format {
 
     /// Word width `1 + exp_bits + frac_bits`.
     #[inline]
-    pub fn width(&self) -> u32 {
+    pub const fn width(&self) -> u32 {
         1 + self.exp_bits + self.frac_bits
     }
 

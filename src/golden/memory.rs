@@ -3,7 +3,7 @@
 //! the records are [`chip::layout`](crate::chip::layout)'s); and A's triangle cache.
 
 use crate::chip::config::ChipConfig;
-use crate::chip::layout::{node_records, tri_records, Layout};
+use crate::chip::layout::{node_ids, node_records, tri_records, Layout};
 use crate::golden::host::{Affine, TriSide};
 use crate::dop::tree::{DopTree, Tri};
 use crate::dop::Node;
@@ -143,6 +143,8 @@ pub struct ObjectImage {
     /// The record of each node in the configuration's layout
     /// ([`node_records`](crate::chip::layout::node_records)).
     pub records: Vec<u32>,
+    /// The id the chip knows each node by ([`node_ids`](crate::chip::layout::node_ids)).
+    pub ids: Vec<u32>,
     /// The record of each triangle ([`tri_records`](crate::chip::layout::tri_records)).
     pub tri_records: Vec<u32>,
 }
@@ -156,6 +158,7 @@ impl ObjectImage {
         let leaves: Vec<u32> = tree.nodes.iter().filter_map(|n| if let Node::Leaf(t) = n { Some(*t) } else { None }).collect();
         ObjectImage {
             records: node_records(cfg.layout, &children),
+            ids: node_ids(cfg.layout, &children),
             tri_records: tri_records(cfg.layout, &leaves),
             tree,
             scale,

@@ -34,7 +34,7 @@ pub trait OnChip {
 }
 
 macro_rules! dispatch {
-    ($($(#[$doc:meta])* $kind:ident, $name:literal, $module:ident, $cfg:tt, $speed:literal;)+) => {
+    ($($(#[$doc:meta])* $kind:ident, $name:literal, $module:ident, $cfg:tt, $records:literal, $speed:literal;)+) => {
         /// Builds `kind`'s rust-hdl chip with `2^N` queue entries (`NP1 = N + 1`, `NM1 = N -
         /// 1`), ready to simulate, and hands it to `f` (call on a thread with a big stack:
         /// TRI_UNIT and the k = 24 DOP unit are large).
@@ -89,21 +89,39 @@ fn put(w: &mut Word, at: usize, bits: usize, v: u64) {
     }
 }
 
-fn node_word(kind: ChipKind, obj: &ObjectImage, n: u32) -> Word {
+/// Node `n`'s word at bit `at` of `w`: children by their ids ([`ObjectImage::ids`]), a
+/// leaf's triangle index and (`records`) its triangle's record.
+fn put_node_word(w: &mut Word, at: usize, kind: ChipKind, layout: MemLayout, obj: &ObjectImage, n: u32) {
     let (f, k) = (kind.config().format.dop, kind.config().k);
     let w_ = f.width() as usize;
-    let mut w = vec![0; kind.word_bits().div_ceil(64)];
     for (i, &d) in obj.tree.dop(n).iter().enumerate() {
-        put(&mut w, 1 + i * w_, w_, f.to_bits(d));
+        put(w, at + 1 + i * w_, w_, f.to_bits(d));
     }
     let (leaf, f0, f1) = match obj.tree.nodes[n as usize] {
-        Node::Inner([c0, c1]) => (false, c0, c1),
+        Node::Inner([c0, c1]) => (false, obj.ids[c0 as usize], obj.ids[c1 as usize]),
+        Node::Leaf(t) if layout == MemLayout::Records => (true, t, obj.tri_record(t)),
         Node::Leaf(t) => (true, t, 0),
     };
-    put(&mut w, 0, 1, leaf as u64);
-    put(&mut w, 1 + k * w_, 32, f0 as u64);
-    put(&mut w, 33 + k * w_, 32, f1 as u64);
-    w
+    put(w, at, 1, leaf as u64);
+    put(w, at + 1 + k * w_, 32, f0 as u64);
+    put(w, at + 33 + k * w_, 32, f1 as u64);
+}
+
+/// An object's node records, then its triangle records, in `layout` (`chip::layout`): a
+/// node record holds its nodes' words in their slots (`records`: slot 1 from bit
+/// `node_bits`), a triangle record its triangle's word.
+fn object_words(kind: ChipKind, layout: MemLayout, obj: &ObjectImage) -> Vec<Word> {
+    let f = kind.config().format;
+    let node_bits = crate::chip::layout::node_bits(kind.config().k, f.dop.width() as usize);
+    let mut words = vec![vec![0; kind.word_bits().div_ceil(64)]; obj.node_records() as usize + obj.tris.len()];
+    for n in 0..obj.tree.len() as u32 {
+        let slot = if layout == MemLayout::Records { obj.ids[n as usize] as usize & 1 } else { 0 };
+        put_node_word(&mut words[obj.record(n) as usize], slot * node_bits, kind, layout, obj, n);
+    }
+    for (t, tri) in obj.tris.iter().enumerate() {
+        words[(obj.node_records() + obj.tri_record(t as u32)) as usize] = tri_word(kind, &LeafIn::of(f.tri, tri));
+    }
+    words
 }
 
 fn tri_word(kind: ChipKind, l: &LeafIn) -> Word {
@@ -118,21 +136,24 @@ fn tri_word(kind: ChipKind, l: &LeafIn) -> Word {
     w
 }
 
-/// Everything the host gives the chip for one query: the memory image (A's nodes, A's
-/// triangles, B's nodes, B's triangles) and the register writes, mode last.
+/// Everything the host gives the chip for one query: the memory image (A's node records,
+/// A's triangles, B's node records, B's triangles) and the register writes, mode last.
 #[derive(Clone, Debug)]
 pub struct QueryImage {
     pub kind: ChipKind,
     pub memory: Vec<Word>,
     pub writes: Vec<(u32, u32)>,
+    /// The layout's memory word ([`Layout::word_bits`](crate::chip::layout::Layout::word_bits)):
+    /// what the memory model moves per request.
+    pub word_bits: u32,
 }
 
 impl QueryImage {
-    /// The memory port's register is written from `p`, the triangle cache's from `tri_cache`
-    /// ([`reg::control_writes`]).
+    /// The memory port's register is written from `p`, the triangle cache's and the layout's
+    /// from `cfg` ([`reg::control_writes`]; `a` and `b` built in `cfg`'s layout).
     /// Errors if a tree has more nodes than the 16-bit node ids of D_CNTR address, or the
     /// image more words than the 24-bit memory address.
-    pub fn new(kind: ChipKind, a: &ObjectImage, b: &ObjectImage, setup: &HostSetup, order: Order, mode: Mode, p: &Params, tri_cache: u32) -> Result<Self, String> {
+    pub fn new(kind: ChipKind, a: &ObjectImage, b: &ObjectImage, setup: &HostSetup, order: Order, mode: Mode, p: &Params, cfg: &ChipConfig) -> Result<Self, String> {
         let f = kind.config().format;
         for (name, o) in [("A", a), ("B", b)] {
             if o.tree.len() > 1 << 16 {
@@ -144,16 +165,15 @@ impl QueryImage {
         }
         let mut memory = vec![];
         for o in [a, b] {
-            memory.extend((0..o.tree.len() as u32).map(|n| node_word(kind, o, n)));
-            memory.extend(o.tris.iter().map(|t| tri_word(kind, &LeafIn::of(f.tri, t))));
+            memory.extend(object_words(kind, cfg.layout, o));
         }
         if memory.len() > 1 << 24 {
             return Err(format!("memory image of {} words; the RTL chip addresses 2^24", memory.len()));
         }
         let mut writes: Vec<(u32, u32)> = dop_unit_setup_words(f.dop, setup).into_iter().map(|(a, d)| (a as u32, d as u32)).collect();
         writes.extend(tri_unit_setup_words(f.tri, setup).into_iter().map(|(a, d)| (reg::TRI_SETUP + a as u32, d as u32)));
-        writes.extend(reg::control_writes(crate::golden::memory::image_bases(a, b), order, mode, p, tri_cache));
-        Ok(QueryImage { kind, memory, writes })
+        writes.extend(reg::control_writes(crate::golden::memory::image_bases(a, b), order, mode, p, cfg));
+        Ok(QueryImage { kind, memory, writes, word_bits: crate::chip::layout::Layout::new(cfg).word_bits() })
     }
 
     /// `$readmemh` text: one word per line, most significant digit first.
@@ -300,7 +320,7 @@ impl<C: RtlPorts> Clocked for RtlChip<'_, C> {
 /// How a query of `image` is driven: every result read at once unless `reader` says
 /// otherwise.
 pub fn drive(image: &QueryImage, memory: Memory, reader: Reader, max_cycles: u64) -> Drive {
-    Drive { memory, word_bits: image.kind.word_bits() as u32, reader, words: image.memory.len() as u32, max_cycles }
+    Drive { memory, word_bits: image.word_bits, reader, words: image.memory.len() as u32, max_cycles }
 }
 
 /// Runs one query on the rust-hdl chip (fresh from `chip_top`, or after a finished
@@ -338,6 +358,8 @@ pub struct ChipQuery {
     pub credit: u32,
     /// Lines of A's triangle cache (register 0x127; 1: the single word held).
     pub tri_cache: u32,
+    /// The memory layout (register 0x120 bit 2; `records` on a chip that reads it).
+    pub layout: MemLayout,
     /// Too long for rust-hdl (more than 500 s at [`ChipKind::rtl_clocks_per_second`]): its
     /// trace comes from the cycle model, and Verilator must reproduce it.
     pub large: bool,
@@ -379,10 +401,10 @@ impl ChipQuery {
     }
 
     pub fn prepare(&self) -> Result<PreparedQuery, String> {
-        let cfg = ChipConfig { tri_cache: self.tri_cache, ..self.chip.config() };
+        let cfg = ChipConfig { tri_cache: self.tri_cache, layout: self.layout, ..self.chip.config() };
         let chip = crate::query::Chip::new(&query_mesh(self.a)?, &query_mesh(self.b)?, cfg)?;
         let golden_all = chip.query(&self.pose, Mode::All, crate::traversal::Traversal::Fifo);
-        let image = QueryImage::new(self.chip, &chip.a, &chip.b, &chip.setup(&self.pose), self.order, self.mode, &self.params(), self.tri_cache)?;
+        let image = QueryImage::new(self.chip, &chip.a, &chip.b, &chip.setup(&self.pose), self.order, self.mode, &self.params(), &cfg)?;
         Ok(PreparedQuery { chip, golden_all, image })
     }
 }
@@ -414,6 +436,7 @@ pub fn queries() -> Vec<ChipQuery> {
         issue_spacing: 2,
         credit: chips::CREDIT as u32,
         tri_cache: 1,
+        layout: MemLayout::Words,
         large: false,
     };
     let big = |name, a, pose, order, mode, latency, interval, period| ChipQuery {
@@ -459,6 +482,13 @@ pub fn queries() -> Vec<ChipQuery> {
         ChipQuery { chip: ChipKind::K24B32, prefetch: 14, outstanding: 16, issue_spacing: 1, credit: 63, ..big("k24_big_sphere_fifo_prefetch", "sphere:200", big_spheres, Fifo, Mode::All, 8, 1, 1) },
         ChipQuery { chip: ChipKind::K24B32, ..big("k24_big_patch_lifo_first", "bunny-patch:300", patch, Lifo, Mode::First, 2, 1, 1) },
         ChipQuery { chip: ChipKind::K24B32, prefetch: 14, outstanding: 16, issue_spacing: 1, credit: 48, tri_cache: 128, ..big("k24_big_sphere_fifo_cache", "sphere:200", big_spheres, Fifo, Mode::All, 8, 1, 1) },
+        // the papers' chip reading the records layout (register 0x120 bit 2: sibling nodes in
+        // one 2,048-bit record, triangles in leaf order, one record held per object): a
+        // bunny patch through a 2-line triangle cache at full speed (rust-hdl), whole
+        // queries at full speed through the 128-line cache and at the reset point
+        ChipQuery { chip: ChipKind::K24B32, layout: MemLayout::Records, prefetch: 3, outstanding: 4, issue_spacing: 1, credit: 24, tri_cache: 2, ..q("k24_rec_patch_fifo_all", "bunny-patch:4", patch, Fifo, Mode::All, 8, 1) },
+        ChipQuery { chip: ChipKind::K24B32, layout: MemLayout::Records, prefetch: 14, outstanding: 16, issue_spacing: 1, credit: 48, tri_cache: 128, ..big("k24_big_rec_sphere_fifo_cache", "sphere:200", big_spheres, Fifo, Mode::All, 8, 1, 1) },
+        ChipQuery { chip: ChipKind::K24B32, layout: MemLayout::Records, ..big("k24_big_rec_patch_lifo_all", "bunny-patch:300", patch, Lifo, Mode::All, 2, 1, 1) },
         // the papers' chip with an e8m15 DOP unit (k24r: format e8m15/binary32): the root
         // test (Icarus), a few leaf pairs (rust-hdl), whole queries at full speed (the second
         // through the 128-line triangle cache) and at the reset point
@@ -518,12 +548,6 @@ pub fn run_query_vcd<C: RtlPorts>(
 /// Which RTL chip runs a query of this configuration, traversal and cycle-model
 /// parameters, and in which order; otherwise what to change.
 pub fn rtl_order(cfg: &ChipConfig, traversal: Traversal, p: &Params) -> Result<(ChipKind, Order), String> {
-    if cfg.layout != MemLayout::Words || cfg.node_cache != 1 {
-        return Err(format!(
-            "the RTL chips read the `words` layout and hold one node word per object; this scene has layout = {:?}, node_cache = {}: set [chip] layout = \"words\", node_cache = 1 (or preset = \"rtl\")",
-            cfg.layout, cfg.node_cache
-        ));
-    }
     let Some(kind) = ChipKind::of(cfg) else {
         let built: Vec<String> = ChipKind::ALL.iter().map(|k| format!("k = {}, format = \"{}\"", k.config().k, k.config().format)).collect();
         return Err(format!(
@@ -531,6 +555,7 @@ pub fn rtl_order(cfg: &ChipConfig, traversal: Traversal, p: &Params) -> Result<(
             built.join(" or "), cfg.k, cfg.format, cfg.dop_rounding, cfg.tri_rounding
         ));
     };
+    rtl_layout(kind, cfg, p)?;
     let lines = chips::TRI_CACHE_LINES;
     if cfg.tri_cache > lines as u32 {
         return Err(format!("the RTL chips' triangle cache has {lines} lines; this scene asks for tri_cache = {}: set [chip] tri_cache to at most {lines}", cfg.tri_cache));
@@ -563,6 +588,23 @@ pub fn rtl_order(cfg: &ChipConfig, traversal: Traversal, p: &Params) -> Result<(
     }
 }
 
+/// Whether `kind` reads `cfg`'s memory layout on `p`'s memory: every chip the `words`
+/// layout, the chips of [`ChipKind::records`] also `records`, all with one node record held
+/// per object and the image in order (no DDR of 4 banks or more, on which the records'
+/// regions would have banks of their own, [`RecordMap`](crate::chip::layout::RecordMap)).
+fn rtl_layout(kind: ChipKind, cfg: &ChipConfig, p: &Params) -> Result<(), String> {
+    let records = cfg.layout == MemLayout::Records;
+    let records_chips: Vec<&str> = ChipKind::ALL.iter().filter(|k| k.records()).map(|k| k.name()).collect();
+    let spread = crate::chip::layout::RecordMap::new(&crate::chip::layout::Layout::new(cfg), &p.memory).spread();
+    if cfg.node_cache != 1 || (records && (!kind.records() || spread)) {
+        return Err(format!(
+            "the RTL chips hold one node record per object and read the `words` layout; {} also `records`, with the image in order (an ideal memory or a DDR of fewer than 4 banks); this scene has {}, layout = {:?}, node_cache = {}, memory {:?}: set [chip] layout = \"words\", node_cache = 1 (or preset = \"rtl\")",
+            records_chips.join(", "), kind.name(), cfg.layout, cfg.node_cache, p.memory
+        ));
+    }
+    Ok(())
+}
+
 /// Runs one pose on the rust-hdl chip in lockstep with the cycle model (on a thread with
 /// the big stack the RTL needs): every output and traversal signal equal after every clock.
 /// Errors name the cycle and the signal of the first difference, or what the RTL chip
@@ -577,7 +619,7 @@ pub fn cross_check(
 ) -> Result<ChipTrace, String> {
     let (kind, order) = rtl_order(&chip.cfg, traversal, &p)?;
     let setup = chip.setup(pose);
-    let image = QueryImage::new(kind, &chip.a, &chip.b, &setup, order, mode, &p, chip.cfg.tri_cache)?;
+    let image = QueryImage::new(kind, &chip.a, &chip.b, &setup, order, mode, &p, &chip.cfg)?;
     let d = drive(&image, p.memory, Reader::default(), max_cycles);
     struct Lockstep<'q> {
         model: crate::cycle::chip::Chip<'q>,
@@ -627,7 +669,8 @@ mod tests {
         // (the RTL's word widths are checked against the layout at compile time, rtl/mod.rs)
         assert_eq!(ChipKind::K6E8m15.word_bits(), MEM_BITS);
         // the papers' chip: 1 + 24 * 32 + 64 node bits, wider than its 23 * 32 + 2 triangle bits
-        assert_eq!(ChipKind::K24B32.word_bits(), 833);
+        // a record: two node words padded to 256 bytes (it also reads the `records` layout)
+        assert_eq!(ChipKind::K24B32.word_bits(), 2048);
         // e8m15 nodes, binary32 triangles: 1 + 24 * 24 + 64 = 641 node bits, 23 * 32 + 2 = 738
         assert_eq!(ChipKind::K24E8m15B32.word_bits(), 738);
         assert_eq!(crate::chip::layout::Layout::new(&ChipKind::K24E8m15B32.config()).node_bits, 641);
@@ -655,7 +698,7 @@ mod tests {
         let big = crate::mesh::builtin("sphere:40000").unwrap().triangles_f64();
         let chip = crate::query::Chip::new(&big, &big[..1], ChipKind::K6E8m15.config()).unwrap();
         let setup = chip.setup(&crate::pose::Pose::new(0.0, 0.0, 0.0, 0.0, 0.0, 0.0));
-        let e = QueryImage::new(ChipKind::K6E8m15, &chip.a, &chip.b, &setup, Order::Lifo, Mode::All, &Params::RTL, 1).unwrap_err();
+        let e = QueryImage::new(ChipKind::K6E8m15, &chip.a, &chip.b, &setup, Order::Lifo, Mode::All, &Params::RTL, &chip.cfg).unwrap_err();
         assert!(e.contains("16 bits"), "{e}");
     }
 }

@@ -194,6 +194,7 @@ pub fn cross_check(bin: &Path, dir: &Path, image: &QueryImage, memory: Memory, m
         .arg(format!("+mem={}", mem.display()))
         .arg(format!("+host={}", host.display()))
         .args(memory_args)
+        .arg(format!("+word_bits={}", image.word_bits))
         .arg("+reader=1")
         .arg(format!("+max_cycles={max_cycles}"))
         .arg("+ports")

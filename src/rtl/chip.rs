@@ -13,18 +13,21 @@
 /// Stamps out `CollisionChip<N, NP1, NM1>` in the calling module (which must also hold the
 /// DOP unit `Dop` and `TriUnit`). Arguments: `K` the DOP's k, `Dop` its unit (`DopUnit6`
 /// for k = 6), `WD` the DOP format's word width, `WT` T.CHECK's, `NW` node-word bits
-/// (`1 + K WD + 64`), `TW` triangle-word bits (`23 WT + 2`), `MW` memory-word bits (the
-/// wider of the two: [`crate::chip::layout::Layout`]).
+/// (`1 + K WD + 64`), `TW` triangle-word bits (`23 WT + 2`), `MW` memory-word bits
+/// ([`crate::chip::rtl::ChipKind::word_bits`]), `RW` the node record's bits (`2 NW` on a
+/// chip that also reads the `records` layout, else `NW`).
 macro_rules! chip {
-    ($K:tt, $Dop:ident, $WD:tt, $WT:tt, $NW:tt, $TW:tt, $MW:tt) => {
-        declare_sync_fifo!(LeafFifo, Bits<32>, $crate::chip::rtl::LEAF_FIFO, 1);
-        $crate::rtl::memory_port::memory_port!($NW, $MW);
+    ($K:tt, $Dop:ident, $WD:tt, $WT:tt, $NW:tt, $TW:tt, $MW:tt, $RW:tt) => {
+        declare_sync_fifo!(LeafFifo, Bits<64>, $crate::chip::rtl::LEAF_FIFO, 1);
+        $crate::rtl::memory_port::memory_port!($NW, $MW, $RW);
         $crate::rtl::tri_cache::tri_cache!($TW);
 
         /// The chip's memory word bits (`mem_resp_data`).
         pub const CHIP_WORD_BITS: usize = $MW;
         /// The triangle word's bits (the low bits of a memory word; a triangle cache line).
         pub const TRI_WORD_BITS: usize = $TW;
+        /// The node record's bits (the low bits of a memory word): one node word, or two.
+        pub const RECORD_BITS: usize = $RW;
 
         /// The collision chip with a k-DOP: D_CNTR (DATE'05 §4.3) drives the DOP unit (Eq. 10)
         /// over pairs of node words from memory, overlapping leaf pairs go to TRI_UNIT
@@ -36,7 +39,9 @@ macro_rules! chip {
         /// * host registers: in `host_we`, `host_addr[10]`, `host_data[32]`, written on
         ///   the rising edge. `0x000 + a`: the DOP unit's setup word `a` (C, c, D.KLMSEL
         ///   control, the DOP unit's); `0x100 + a`: TRI_UNIT's (frame maps, bounds, eta,
-        ///   [`TriUnit`]); `0x120`: mode, bit 0 LIFO, bit 1 first hit; `0x121`: the root
+        ///   [`TriUnit`]); `0x120`: mode, bit 0 LIFO, bit 1 first hit, bit 2 the `records`
+        ///   layout (node ids `2 record + slot`, a node record two node words, a leaf's
+        ///   triangles fetched by their records; only if `RW` is `2 NW`); `0x121`: the root
         ///   pair, A's node in bits 15:0, B's in 31:16; `0x122 .. 0x125`: the word
         ///   addresses of A's node 0, B's node 0, A's triangle 0, B's triangle 0; `0x126`:
         ///   the memory port, bits 3:0 the node pairs prefetched (at most
@@ -59,7 +64,8 @@ macro_rules! chip {
         ///   takes every response at the rising edge it is valid (it has room for every word
         ///   it asks for, so the response has no ready).
         ///   Node word: bit 0 leaf, `d_i` at `1 + i W`, then two 32-bit fields (children,
-        ///   or the triangle index and 0); triangle word: v0, v1, v2 (x, y, z), M row-major,
+        ///   or the triangle index and 0, `records`: its record); a node record: the node
+        ///   word, or (`records`) slot 0's and slot 1's from bit `NW`; triangle word: v0, v1, v2 (x, y, z), M row-major,
         ///   alpha_m, alpha_f at `i W`, v_exact, degenerate ([`crate::golden::memory`]).
         /// * results (valid/ready): out `res_valid`, `res_tag[32]` (A's triangle in bits
         ///   15:0, B's in 31:16), `res_uncertain` (0: intersecting; 1: the host decides);
@@ -93,6 +99,7 @@ macro_rules! chip {
             // ---- host registers
             mode_lifo: DFF<Bit>,
             mode_first: DFF<Bit>,
+            mode_rec: DFF<Bit>,
             root: DFF<Bits<32>>,
             base_na: DFF<Bits<24>>,
             base_nb: DFF<Bits<24>>,
@@ -127,7 +134,11 @@ macro_rules! chip {
             leaf_count: DFF<Bits<6>>,
             leaf_out: Signal<Local, Bit>,
             leaf_valid: DFF<Bit>,
-            leaf_tag: DFF<Bits<32>>,
+            // A's and B's triangle index (bits 31:0, for results), A's and B's triangle word
+            // as fetched (63:32, its record; or 31:0 in the `words` layout)
+            leaf_tag: DFF<Bits<64>>,
+            tri_ids: Signal<Local, Bits<32>>,
+            next_tri_ids: Signal<Local, Bits<32>>,
             // A's triangle cache (WSCG'03 §4.3; rtl/tri_cache.rs), its lines used less one
             tc_mask: DFF<Bits<7>>,
             tri_cache: TriCache,
@@ -181,6 +192,7 @@ macro_rules! chip {
                     res_ready: Default::default(),
                     mode_lifo: Default::default(),
                     mode_first: Default::default(),
+                    mode_rec: Default::default(),
                     root: Default::default(),
                     base_na: Default::default(),
                     base_nb: Default::default(),
@@ -210,6 +222,8 @@ macro_rules! chip {
                     leaf_out: Default::default(),
                     leaf_valid: Default::default(),
                     leaf_tag: Default::default(),
+                    tri_ids: Default::default(),
+                    next_tri_ids: Default::default(),
                     tc_mask: Default::default(),
                     tri_cache: TriCache::new(),
                     tb_ok: Default::default(),
@@ -273,7 +287,7 @@ macro_rules! chip {
                     self.leaf_count.q.val().to_u64(),
                     b(self.leaf_valid.q.val()),
                     l_tag & 0xffff,
-                    l_tag >> 16,
+                    l_tag >> 16 & 0xffff,
                     b(self.tri_in.val()),
                     b(self.tri_unit.in_ready.val()),
                     b(self.tri_take.val()),
@@ -298,7 +312,7 @@ macro_rules! chip {
         impl<const N: usize, const NP1: usize, const NM1: usize> Logic for CollisionChip<N, NP1, NM1> {
             #[hdl_gen]
             fn update(&mut self) {
-                dff_setup!(self, clock, mode_lifo, mode_first, root, base_na, base_nb, base_ta, base_tb);
+                dff_setup!(self, clock, mode_lifo, mode_first, mode_rec, root, base_na, base_nb, base_ta, base_tb);
                 dff_setup!(self, clock, port_pf, port_out, port_one, port_credit, run, done_r, push_root, stop);
                 dff_setup!(self, clock, leaf_count, leaf_valid, leaf_tag);
                 dff_setup!(self, clock, tc_mask, tb_ok, tb_id, tb_word);
@@ -315,6 +329,7 @@ macro_rules! chip {
                     if self.host_addr.val() == 0x120 {
                         self.mode_lifo.d.next = self.host_data.val().get_bit(0);
                         self.mode_first.d.next = self.host_data.val().get_bit(1);
+                        self.mode_rec.d.next = self.host_data.val().get_bit(2);
                     }
                     if self.host_addr.val() == 0x121 {
                         self.root.d.next = self.host_data.val();
@@ -369,14 +384,20 @@ macro_rules! chip {
                 self.d_cntr.dop_valid.next = self.dop.valid_out.val();
                 self.d_cntr.dop_overlap.next = self.dop.overlap.val();
                 self.d_cntr.side.next = self.side.q.val();
+                self.d_cntr.records.next = self.mode_rec.q.val();
                 self.push_root.d.next = false;
+                // the leaf pair's triangle words as fetched: by index, or (`records`) record
+                self.tri_ids.next = self.leaf_tag.q.val().get_bits::<32>(0);
+                if self.mode_rec.q.val() {
+                    self.tri_ids.next = self.leaf_tag.q.val().get_bits::<32>(32);
+                }
                 // A's triangle word: from the cache, which read its line at the last edge
                 self.tri_cache.clear.next = self.start_q.val();
                 self.tri_cache.mask.next = self.tc_mask.q.val();
-                self.tri_cache.id.next = self.leaf_tag.q.val().get_bits::<16>(0);
+                self.tri_cache.id.next = self.tri_ids.val().get_bits::<16>(0);
                 self.need_ta.next = self.go.val() & self.leaf_valid.q.val() & !self.tri_cache.hit.val();
                 self.need_tb.next = self.go.val() & self.leaf_valid.q.val()
-                    & !(self.tb_ok.q.val() & (self.tb_id.q.val() == self.leaf_tag.q.val().get_bits::<16>(16)));
+                    & !(self.tb_ok.q.val() & (self.tb_id.q.val() == self.tri_ids.val().get_bits::<16>(16)));
                 // ---- the memory port: the node words D_CNTR's pops ask for, the triangle
                 // words the leaf register needs
                 self.mem_port.clear.next = self.start_q.val();
@@ -395,7 +416,10 @@ macro_rules! chip {
                 self.mem_port.cur_fb.next = self.d_cntr.cur_fb.val();
                 self.mem_port.need_ta.next = self.need_ta.val();
                 self.mem_port.need_tb.next = self.need_tb.val();
-                self.mem_port.leaf_tag.next = self.leaf_tag.q.val();
+                self.mem_port.leaf_tag.next = self.tri_ids.val();
+                self.mem_port.records.next = self.mode_rec.q.val();
+                self.mem_port.cur_sa.next = self.d_cntr.cur_a.val().get_bit(0);
+                self.mem_port.cur_sb.next = self.d_cntr.cur_b.val().get_bit(0);
                 self.mem_port.mem_req_ready.next = self.mem_req_ready.val();
                 self.mem_port.mem_resp_valid.next = self.mem_resp_valid.val();
                 self.mem_port.mem_resp_data.next = self.mem_resp_data.val();
@@ -464,9 +488,13 @@ macro_rules! chip {
                     self.leaf_count.d.next = self.leaf_count.q.val() - 1;
                 }
                 // the cache reads the line of the next clock's leaf pair at this edge
-                self.tri_cache.next_id.next = self.leaf_tag.q.val().get_bits::<16>(0);
+                self.next_tri_ids.next = self.leaf_fifo.data_out.val().get_bits::<32>(0);
+                if self.mode_rec.q.val() {
+                    self.next_tri_ids.next = self.leaf_fifo.data_out.val().get_bits::<32>(32);
+                }
+                self.tri_cache.next_id.next = self.tri_ids.val().get_bits::<16>(0);
                 if self.leaf_out.val() & !self.halt.val() {
-                    self.tri_cache.next_id.next = self.leaf_fifo.data_out.val().get_bits::<16>(0);
+                    self.tri_cache.next_id.next = self.next_tri_ids.val().get_bits::<16>(0);
                 }
                 // TRI_UNIT's ports from the held triangle words (crate::golden::memory::TriWord order)
                 for k in 0..3 {
@@ -493,7 +521,7 @@ macro_rules! chip {
                 self.tri_unit.b_alpha_f.next = self.tb_word.q.val().get_bits::<$WT>(22 * $WT);
                 self.tri_unit.b_v_exact.next = self.tb_word.q.val().get_bit(23 * $WT);
                 self.tri_unit.b_degenerate.next = self.tb_word.q.val().get_bit(23 * $WT + 1);
-                self.tri_unit.tag.next = self.leaf_tag.q.val();
+                self.tri_unit.tag.next = self.leaf_tag.q.val().get_bits::<32>(0);
                 self.tri_unit.in_valid.next = self.tri_in.val();
                 // ---- results: the result port shows the host the pairs it must see
                 self.result.take.next = self.tri_take.val();

@@ -473,18 +473,22 @@ const _: () = assert!(W == 67);
 ///   emptied), `lifo`, `push_root`, `root[32]` (the root pair, pushed as a one-pair entry
 ///   while `push_root`), `go` (running, not halted), the limits of host register 0x126:
 ///   `pf[5]` (pairs prefetched), `one` (an issue every clock), `credit_lim[6]`;
-///   `leaf_count[6]` (leaf pairs waiting, counted against the credit).
+///   `leaf_count[6]` (leaf pairs waiting, counted against the credit), `records` (the
+///   `records` layout: a node id is `2 record + slot`, and a pair shares the pair before's
+///   record, not only its node).
 /// * the queue's state: out `empty`, `count[NP1]`, `max_count[NP1]`, `overflow`, `push`.
 /// * pop: out `pop`, `pop_entry[67]` (the entry popped), `pop_fetch[4]` (which of its node
-///   words A0 B0 A1 B1 the memory port must fetch: those the pair before does not share).
+///   records A0 B0 A1 B1 the memory port must fetch: those the pair before does not share).
 /// * the current pair (pair 0, then 1, of the buffer's head entry): out `ent_valid`,
 ///   `cur_a[16]`, `cur_b[16]`, `cur_flip`, `cur_fa`, `cur_fb` (it takes its A, B word from
 ///   the node-word FIFOs, not the last pair's); in `wa_empty`, `wb_empty` (those FIFOs);
 ///   out `need_na`, `need_nb` (it waits for them), `issue` (it enters the DOP unit).
 /// * DOP results: in `dop_valid`, `dop_overlap`, `side[99]` (the pair's ids, flip, leaf
 ///   bits and children from the DOP unit's side delay line); out `r_a`, `r_b`,
-///   `r_a_leaf`, `r_b_leaf`, `leaf_in` and `leaf_pair[32]` (an overlapping leaf pair for
-///   TRI_UNIT), `inflight[5]` (DOP tests in flight), `pend` (a second child entry waits).
+///   `r_a_leaf`, `r_b_leaf`, `leaf_in` and `leaf_pair[64]` (an overlapping leaf pair for
+///   TRI_UNIT: A's and B's first leaf field, the triangle index, in bits 31:0, their
+///   second, the triangle's record in the `records` layout, in 63:32), `inflight[5]` (DOP
+///   tests in flight), `pend` (a second child entry waits).
 #[derive(LogicBlock)]
 pub struct DCntr<const N: usize, const NP1: usize, const NM1: usize> {
     pub clock: Signal<In, Clock>,
@@ -497,6 +501,7 @@ pub struct DCntr<const N: usize, const NP1: usize, const NM1: usize> {
     pub one: Signal<In, Bit>,
     pub credit_lim: Signal<In, Bits<6>>,
     pub leaf_count: Signal<In, Bits<6>>,
+    pub records: Signal<In, Bit>,
     pub wa_empty: Signal<In, Bit>,
     pub wb_empty: Signal<In, Bit>,
     pub dop_valid: Signal<In, Bit>,
@@ -524,7 +529,7 @@ pub struct DCntr<const N: usize, const NP1: usize, const NM1: usize> {
     pub r_a_leaf: Signal<Out, Bit>,
     pub r_b_leaf: Signal<Out, Bit>,
     pub leaf_in: Signal<Out, Bit>,
-    pub leaf_pair: Signal<Out, Bits<32>>,
+    pub leaf_pair: Signal<Out, Bits<64>>,
     pub inflight: Signal<Out, Bits<5>>,
     pub pend: Signal<Out, Bit>,
     queue: PairQueue<N, NP1, NM1>,
@@ -539,6 +544,7 @@ pub struct DCntr<const N: usize, const NP1: usize, const NM1: usize> {
     last_ok: DFF<Bit>,
     last_a: DFF<Bits<16>>,
     last_b: DFF<Bits<16>>,
+    id_mask: Signal<Local, Bits<16>>,
     last_issue: DFF<Bit>,
     inflight_r: DFF<Bits<5>>,
     pend_r: DFF<Bit>,
@@ -589,6 +595,7 @@ impl<const N: usize, const NP1: usize, const NM1: usize> Default for DCntr<N, NP
             one: Default::default(),
             credit_lim: Default::default(),
             leaf_count: Default::default(),
+            records: Default::default(),
             wa_empty: Default::default(),
             wb_empty: Default::default(),
             dop_valid: Default::default(),
@@ -629,6 +636,7 @@ impl<const N: usize, const NP1: usize, const NM1: usize> Default for DCntr<N, NP
             last_ok: Default::default(),
             last_a: Default::default(),
             last_b: Default::default(),
+            id_mask: Default::default(),
             last_issue: Default::default(),
             inflight_r: Default::default(),
             pend_r: Default::default(),
@@ -738,10 +746,19 @@ impl<const N: usize, const NP1: usize, const NM1: usize> Logic for DCntr<N, NP1,
         // bits too)
         self.top.next = self.queue.top_data.val();
         self.top_two.next = self.top.val().get_bit(66);
-        self.fetch_a0.next = !(self.last_ok.q.val() & (self.last_a.q.val() == self.top.val().get_bits::<16>(0)));
-        self.fetch_b0.next = !(self.last_ok.q.val() & (self.last_b.q.val() == self.top.val().get_bits::<16>(16)));
-        self.fetch_a1.next = self.top_two.val() & (self.top.val().get_bits::<16>(33) != self.top.val().get_bits::<16>(0));
-        self.fetch_b1.next = self.top_two.val() & (self.top.val().get_bits::<16>(49) != self.top.val().get_bits::<16>(16));
+        // (ids compared without their slot bit in the `records` layout: the record's)
+        self.id_mask.next = 0xffff.into();
+        if self.records.val() {
+            self.id_mask.next = 0xfffe.into();
+        }
+        self.fetch_a0.next = !(self.last_ok.q.val()
+            & ((self.last_a.q.val() & self.id_mask.val()) == (self.top.val().get_bits::<16>(0) & self.id_mask.val())));
+        self.fetch_b0.next = !(self.last_ok.q.val()
+            & ((self.last_b.q.val() & self.id_mask.val()) == (self.top.val().get_bits::<16>(16) & self.id_mask.val())));
+        self.fetch_a1.next = self.top_two.val()
+            & ((self.top.val().get_bits::<16>(33) & self.id_mask.val()) != (self.top.val().get_bits::<16>(0) & self.id_mask.val()));
+        self.fetch_b1.next = self.top_two.val()
+            & ((self.top.val().get_bits::<16>(49) & self.id_mask.val()) != (self.top.val().get_bits::<16>(16) & self.id_mask.val()));
         self.pop_fetch.next = bit_cast::<4, 1>(self.fetch_a0.val().into())
             | (bit_cast::<4, 1>(self.fetch_b0.val().into()) << 1)
             | (bit_cast::<4, 1>(self.fetch_a1.val().into()) << 2)
@@ -818,7 +835,8 @@ impl<const N: usize, const NP1: usize, const NM1: usize> Logic for DCntr<N, NP1,
             self.queue.push_data.next = self.pend_data.q.val();
         }
         self.leaf_in.next = self.r_hit.val() & self.r_a_leaf.val() & self.r_b_leaf.val();
-        self.leaf_pair.next = bit_cast::<32, 16>(self.r_a0.val()) | (bit_cast::<32, 16>(self.r_b0.val()) << 16);
+        self.leaf_pair.next = bit_cast::<64, 16>(self.r_a0.val()) | (bit_cast::<64, 16>(self.r_b0.val()) << 16)
+            | (bit_cast::<64, 16>(self.r_a1.val()) << 32) | (bit_cast::<64, 16>(self.r_b1.val()) << 48);
         if self.r_hit.val() & !(self.r_a_leaf.val() & self.r_b_leaf.val()) {
             self.queue.push.next = true;
             if self.r_a_leaf.val() | self.r_b_leaf.val() {

@@ -4,9 +4,10 @@
 //! Stamped out per node word by `memory_port!` (the chip's `chip!`).
 
 /// Stamps out `MemoryPort` in the calling module. Arguments: `NW` node-word bits, `MW`
-/// memory-word bits (`mem_resp_data`; a node word is its low `NW` bits).
+/// memory-word bits (`mem_resp_data`), `RW` node-record bits (its low `RW` bits: one node
+/// word, or two on a chip that reads the `records` layout).
 macro_rules! memory_port {
-    ($NW:tt, $MW:tt) => {
+    ($NW:tt, $MW:tt, $RW:tt) => {
         /// The memory port: up to `0x126[7:4] + 1` requests outstanding, answered in request
         /// order. Golden: [`cycle::memory_port::MemPort`](crate::cycle::memory_port::MemPort) (the
         /// requests outstanding, whose destinations here are the tag ring `tags`) and the
@@ -21,17 +22,19 @@ macro_rules! memory_port {
         /// * Requests, by priority: A's triangle word (`need_ta`, unless one is outstanding),
         ///   B's (`need_tb`), the node word at the head of the ask list; while fewer than
         ///   `port_out + 1` are outstanding and `go`. Addresses: the destination's base plus
-        ///   the id. A request is taken (`accept`) with `mem_req_ready`; its destination
+        ///   the record: a node's id (`records`: `id >> 1`), the triangle's `leaf_tag` field
+        ///   (the chip puts the records there in the `records` layout). A request is taken (`accept`) with `mem_req_ready`; its destination
         ///   `req_dst` (0 A's node, 1 B's node, 2 A's triangle, 3 B's triangle) joins the tag
         ///   ring, a triangle id its pending register (`ta_req`, `tb_req`).
         /// * A response (`mem_resp_valid`, `resp` while a request is outstanding) belongs to
         ///   the oldest tag (`resp_dst`): a node word goes into its FIFO (`wa`: A's, the DOP
         ///   unit's e; `wb`: B's, d; [`PAIR_BUF`](crate::chip::rtl::PAIR_BUF) words each); a
         ///   triangle word is the chip's to hold (`resp`, `resp_dst`, `ta_req`, `tb_req`).
-        /// * The DOP unit's words of the current pair (`na_in`, `nb_in`): the FIFO's head if
-        ///   the pair fetches it (`cur_fa`, `cur_fb`), else the last pair's (`na_word`,
-        ///   `nb_word`); an `issue` takes the fetched heads. `wa_empty`, `wb_empty`: D_CNTR's
-        ///   pair waits for a word.
+        /// * The DOP unit's words of the current pair (`na_in`, `nb_in`): of the record at the
+        ///   FIFO's head if the pair fetches it (`cur_fa`, `cur_fb`), else of the last pair's
+        ///   (`na_word`, `nb_word`), the node word in the pair's slot (`cur_sa`, `cur_sb`:
+        ///   `records`; else the record is the word); an `issue` takes the fetched heads.
+        ///   `wa_empty`, `wb_empty`: D_CNTR's pair waits for a word.
         ///
         /// `clear` (a start) empties the ask list and the FIFOs; requests outstanding
         /// finish as they would.
@@ -41,6 +44,7 @@ macro_rules! memory_port {
             pub clear: Signal<In, Bit>,
             pub go: Signal<In, Bit>,
             pub pf_on: Signal<In, Bit>,
+            pub records: Signal<In, Bit>,
             pub port_out: Signal<In, Bits<4>>,
             pub base_na: Signal<In, Bits<24>>,
             pub base_nb: Signal<In, Bits<24>>,
@@ -52,6 +56,8 @@ macro_rules! memory_port {
             pub issue: Signal<In, Bit>,
             pub cur_fa: Signal<In, Bit>,
             pub cur_fb: Signal<In, Bit>,
+            pub cur_sa: Signal<In, Bit>,
+            pub cur_sb: Signal<In, Bit>,
             pub need_ta: Signal<In, Bit>,
             pub need_tb: Signal<In, Bit>,
             pub leaf_tag: Signal<In, Bits<32>>,
@@ -94,18 +100,20 @@ macro_rules! memory_port {
             put1: Signal<Local, Bits<32>>,
             put2: Signal<Local, Bits<32>>,
             put3: Signal<Local, Bits<32>>,
-            // ---- node words arrived, per destination in request order (A's: e, B's: d),
-            // and the words of the last pair issued
-            wa: $crate::rtl::reg_ring::RegRing<$NW, { $crate::chip::rtl::PAIR_BUF }>,
+            // ---- node records arrived, per destination in request order (A's: e, B's: d),
+            // and the records of the last pair issued
+            wa: $crate::rtl::reg_ring::RegRing<$RW, { $crate::chip::rtl::PAIR_BUF }>,
             wa_head: DFF<Bits<4>>,
             wa_tail: DFF<Bits<4>>,
             wa_n: DFF<Bits<5>>,
-            wb: $crate::rtl::reg_ring::RegRing<$NW, { $crate::chip::rtl::PAIR_BUF }>,
+            wb: $crate::rtl::reg_ring::RegRing<$RW, { $crate::chip::rtl::PAIR_BUF }>,
             wb_head: DFF<Bits<4>>,
             wb_tail: DFF<Bits<4>>,
             wb_n: DFF<Bits<5>>,
-            na_word: DFF<Bits<$NW>>,
-            nb_word: DFF<Bits<$NW>>,
+            na_word: DFF<Bits<$RW>>,
+            nb_word: DFF<Bits<$RW>>,
+            rec_a: Signal<Local, Bits<$RW>>,
+            rec_b: Signal<Local, Bits<$RW>>,
             // ---- the destinations of the requests outstanding, in order, and the triangle
             // word asked for per triangle destination (one at a time)
             tags: $crate::rtl::reg_ring::RegRing<2, { $crate::chip::rtl::PORT_OUTSTANDING }>,
@@ -119,6 +127,7 @@ macro_rules! memory_port {
             port_free: Signal<Local, Bit>,
             req: Signal<Local, Bit>,
             req_id: Signal<Local, Bits<16>>,
+            ask_rec: Signal<Local, Bits<16>>,
             req_addr: Signal<Local, Bits<24>>,
             c_one16: Constant<Bits<16>>,
             c_one32: Constant<Bits<32>>,
@@ -132,6 +141,7 @@ macro_rules! memory_port {
                     clear: Default::default(),
                     go: Default::default(),
                     pf_on: Default::default(),
+                    records: Default::default(),
                     port_out: Default::default(),
                     base_na: Default::default(),
                     base_nb: Default::default(),
@@ -143,6 +153,8 @@ macro_rules! memory_port {
                     issue: Default::default(),
                     cur_fa: Default::default(),
                     cur_fb: Default::default(),
+                    cur_sa: Default::default(),
+                    cur_sb: Default::default(),
                     need_ta: Default::default(),
                     need_tb: Default::default(),
                     leaf_tag: Default::default(),
@@ -193,6 +205,8 @@ macro_rules! memory_port {
                     wb_n: Default::default(),
                     na_word: Default::default(),
                     nb_word: Default::default(),
+                    rec_a: Default::default(),
+                    rec_b: Default::default(),
                     tags: Default::default(),
                     tag_head: Default::default(),
                     tag_tail: Default::default(),
@@ -204,6 +218,7 @@ macro_rules! memory_port {
                     port_free: Default::default(),
                     req: Default::default(),
                     req_id: Default::default(),
+                    ask_rec: Default::default(),
                     req_addr: Default::default(),
                     c_one16: Constant::new(1.into()),
                     c_one32: Constant::new(1.into()),
@@ -228,16 +243,26 @@ macro_rules! memory_port {
                     self.ask_w[i].d.next = self.ask_w[i].q.val();
                 }
                 clock!(self, clock, wa, wb, tags);
-                // ---- the current pair's node words: from the FIFO heads, or the last pair's
+                // ---- the current pair's node words: of the records at the FIFO heads, or of
+                // the last pair's, in the pair's slot (slot 1 from bit RW - NW: NW, or 0 on a
+                // chip of one node word per record)
                 self.wa.rsel.next = self.c_one16.val() << self.wa_head.q.val();
                 self.wb.rsel.next = self.c_one16.val() << self.wb_head.q.val();
-                self.na_in.next = self.na_word.q.val();
+                self.rec_a.next = self.na_word.q.val();
                 if self.cur_fa.val() {
-                    self.na_in.next = self.wa.rdata.val();
+                    self.rec_a.next = self.wa.rdata.val();
                 }
-                self.nb_in.next = self.nb_word.q.val();
+                self.rec_b.next = self.nb_word.q.val();
                 if self.cur_fb.val() {
-                    self.nb_in.next = self.wb.rdata.val();
+                    self.rec_b.next = self.wb.rdata.val();
+                }
+                self.na_in.next = self.rec_a.val().get_bits::<$NW>(0);
+                if self.records.val() & self.cur_sa.val() {
+                    self.na_in.next = self.rec_a.val().get_bits::<$NW>($RW - $NW);
+                }
+                self.nb_in.next = self.rec_b.val().get_bits::<$NW>(0);
+                if self.records.val() & self.cur_sb.val() {
+                    self.nb_in.next = self.rec_b.val().get_bits::<$NW>($RW - $NW);
                 }
                 self.wa_empty.next = self.wa_n.q.val() == 0;
                 self.wb_empty.next = self.wb_n.q.val() == 0;
@@ -256,9 +281,13 @@ macro_rules! memory_port {
                 self.port_free.next = self.tag_n.q.val() <= bit_cast::<5, 4>(self.port_out.val());
                 self.req_dst.next = bit_cast::<2, 1>(self.ask_front.val().get_bits::<1>(16));
                 self.req_id.next = self.ask_front.val().get_bits::<16>(0);
-                self.req_addr.next = self.base_na.val() + bit_cast::<24, 16>(self.ask_front.val().get_bits::<16>(0));
+                self.ask_rec.next = self.ask_front.val().get_bits::<16>(0);
+                if self.records.val() {
+                    self.ask_rec.next = bit_cast::<16, 15>(self.ask_front.val().get_bits::<15>(1));
+                }
+                self.req_addr.next = self.base_na.val() + bit_cast::<24, 16>(self.ask_rec.val());
                 if self.ask_front.val().get_bit(16) {
-                    self.req_addr.next = self.base_nb.val() + bit_cast::<24, 16>(self.ask_front.val().get_bits::<16>(0));
+                    self.req_addr.next = self.base_nb.val() + bit_cast::<24, 16>(self.ask_rec.val());
                 }
                 self.req.next = self.port_free.val() & self.ask_ok.val();
                 if self.need_tb.val() & !self.tb_pend.q.val() {
@@ -310,12 +339,12 @@ macro_rules! memory_port {
                 if self.resp.val() & (self.resp_dst.val() == 0) {
                     self.wa.wsel.next = self.c_one16.val() << self.wa_tail.q.val();
                 }
-                self.wa.wdata.next = self.mem_resp_data.val().get_bits::<$NW>(0);
+                self.wa.wdata.next = self.mem_resp_data.val().get_bits::<$RW>(0);
                 self.wb.wsel.next = 0.into();
                 if self.resp.val() & (self.resp_dst.val() == 1) {
                     self.wb.wsel.next = self.c_one16.val() << self.wb_tail.q.val();
                 }
-                self.wb.wdata.next = self.mem_resp_data.val().get_bits::<$NW>(0);
+                self.wb.wdata.next = self.mem_resp_data.val().get_bits::<$RW>(0);
                 if self.resp.val() {
                     self.tag_head.d.next = self.tag_head.q.val() + 1;
                     if self.resp_dst.val() == 0 {

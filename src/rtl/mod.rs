@@ -116,7 +116,7 @@ pub mod b32 {
     fp_format!(Format::BINARY32, 32, 31, 8, 23, 24, 26, 27, 28, 48, 50,
         norm_p(8, 16, 20, 22, 23), norm_p3(11, 19, 23, 25, 26));
     // the papers' chip: node word 1 + 24 * 32 + 64 bits (wider than a triangle word, 23 * 32 + 2)
-    crate::rtl::chip::chip!(24, DopUnit24, 32, 32, 833, 738, 833);
+    crate::rtl::chip::chip!(24, DopUnit24, 32, 32, 833, 738, 2048, 1666);
 }
 
 /// Units for e8m15 (`Format::REDUCED`).
@@ -124,7 +124,7 @@ pub mod e8m15 {
     fp_format!(Format::REDUCED, 24, 23, 8, 15, 16, 18, 19, 20, 32, 34,
         norm_p(0, 8, 12, 14, 15), norm_p3(3, 11, 15, 17, 18));
     // node word 1 + 6 * 24 + 64 bits, triangle word 23 * 24 + 2
-    crate::rtl::chip::chip!(6, DopUnit6, 24, 24, 209, 554, 554);
+    crate::rtl::chip::chip!(6, DopUnit6, 24, 24, 209, 554, 554, 209);
 }
 
 /// The papers' chip with the DOP datapath in e8m15 and T.CHECK in binary32 (format
@@ -137,19 +137,28 @@ pub mod e8m15_b32 {
     use crate::format::Rounding;
     use rust_hdl::prelude::*;
     // node word 1 + 24 * 24 + 64 bits, triangle word 23 * 32 + 2 (the wider)
-    crate::rtl::chip::chip!(24, DopUnit24, 24, 32, 641, 738, 738);
+    crate::rtl::chip::chip!(24, DopUnit24, 24, 32, 641, 738, 738, 641);
 }
 
 // The contract's widths and latencies (`crate::chip`) are what the blocks are built with: the
 // chip! macros take literals, so each is checked here.
+/// The RTL's widths are the contract's: the memory word (`ChipKind::word_bits`), the
+/// triangle word, and the node record the node-word FIFOs hold (two node words on a chip that
+/// reads the `records` layout).
 macro_rules! check_widths {
-    ($m:ident, $k:literal, $wd:literal, $wt:literal) => {
-        const _: () = assert!($m::CHIP_WORD_BITS == crate::chip::layout::word_bits($k, $wd, $wt));
-        const _: () = assert!($m::TRI_WORD_BITS == crate::chip::layout::tri_bits($wt));
+    ($m:ident, $kind:ident) => {
+        const _: () = {
+            use crate::chip::{layout, rtl::ChipKind};
+            let c = ChipKind::$kind.config();
+            let node = layout::node_bits(c.k, c.format.dop.width() as usize);
+            assert!($m::CHIP_WORD_BITS == ChipKind::$kind.word_bits());
+            assert!($m::TRI_WORD_BITS == layout::tri_bits(c.format.tri.width() as usize));
+            assert!($m::RECORD_BITS == if ChipKind::$kind.records() { 2 * node } else { node });
+        };
     };
 }
-check_widths!(e8m15, 6, 24, 24);
-check_widths!(b32, 24, 32, 32);
-check_widths!(e8m15_b32, 24, 24, 32);
+check_widths!(e8m15, K6E8m15);
+check_widths!(b32, K24B32);
+check_widths!(e8m15_b32, K24E8m15B32);
 const _: () = assert!(b32::TCheck::LATENCY == crate::chip::rtl::TCHECK_LATENCY && e8m15::TCheck::LATENCY == crate::chip::rtl::TCHECK_LATENCY);
 const _: () = assert!(b32::TriUnit::LATENCY == crate::chip::rtl::TRI_LATENCY && e8m15::TriUnit::LATENCY == crate::chip::rtl::TRI_LATENCY);

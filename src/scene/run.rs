@@ -92,7 +92,7 @@ impl<'s> Prepared<'s> {
         scene.poses.iter().try_for_each(|sp| chip.check_pose(&sp.pose)).map_err(named)?;
         if let Some((kind, order)) = rtl {
             // the images the RTL reads: node ids and memory words within its widths
-            chip_io::QueryImage::new(kind, &chip.a, &chip.b, &chip.setup(&scene.poses[0].pose), order, scene.mode, &scene.params, chip.cfg.tri_cache).map_err(named)?;
+            chip_io::QueryImage::new(kind, &chip.a, &chip.b, &chip.setup(&scene.poses[0].pose), order, scene.mode, &scene.params, &chip.cfg).map_err(named)?;
         }
         let verilog = match plan.cross_check {
             Some(CrossCheck::Verilog) => {
@@ -221,7 +221,7 @@ impl<'s> Prepared<'s> {
             Some(CrossCheck::Verilog) => {
                 let bin = self.verilog.as_deref().expect("built in Prepared::new");
                 let (kind, _) = chip_io::rtl_order(&chip.cfg, s.traversal, &s.params).map_err(|e| format!("pose {i}: {e}"))?;
-                let image = chip_io::QueryImage::new(kind, &chip.a, &chip.b, &setup, order, s.mode, &s.params, chip.cfg.tri_cache).map_err(|e| format!("pose {i}: {e}"))?;
+                let image = chip_io::QueryImage::new(kind, &chip.a, &chip.b, &setup, order, s.mode, &s.params, &chip.cfg).map_err(|e| format!("pose {i}: {e}"))?;
                 let dir = verilator::work_dir().join(format!("pose{i}"));
                 verilator::cross_check(bin, &dir, &image, s.params.memory, 2 * trace.cycles + 1000, &ports, &trace)
                     .map_err(|e| format!("pose {i}: {e}"))?;
