@@ -598,8 +598,8 @@ fn rtl_layout(kind: ChipKind, cfg: &ChipConfig, p: &Params) -> Result<(), String
     let spread = crate::chip::layout::RecordMap::new(&crate::chip::layout::Layout::new(cfg), &p.memory).spread();
     if cfg.node_cache != 1 || (records && (!kind.records() || spread)) {
         return Err(format!(
-            "the RTL chips hold one node record per object and read the `words` layout; {} also `records`, with the image in order (an ideal memory or a DDR of fewer than 4 banks); this scene has {}, layout = {:?}, node_cache = {}, memory {:?}: set [chip] layout = \"words\", node_cache = 1 (or preset = \"rtl\")",
-            records_chips.join(", "), kind.name(), cfg.layout, cfg.node_cache, p.memory
+            "the RTL chips hold one node record per object and read the `words` layout; {} also `records`, with the image in order (an ideal memory or a DDR of fewer than 4 banks); this scene has {}, layout = {:?}, node_cache = {}, {}: set [chip] node_cache = 1, and layout = \"words\" (preset = \"rtl\") or an ideal [memory] on {}",
+            records_chips.join(", "), kind.name(), cfg.layout, cfg.node_cache, if spread { "a DDR of 4 banks or more" } else { "the image in order" }, records_chips.join(", ")
         ));
     }
     Ok(())
