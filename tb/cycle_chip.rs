@@ -1,6 +1,6 @@
 //! The fast cycle model of the chip (`src/cycle`): it reproduces every checked-in chip
 //! trace (vectors/chip/*.expect: each also agreed by the exported Verilog under
-//! Verilator, two by rust-hdl in lockstep), answers as the golden model does in
+//! Verilator, six by rust-hdl in lockstep, tb/rtl_chip.rs), answers as the golden model does in
 //! configurations beyond the RTL (k, format, latencies, spacing, credit, requests
 //! outstanding, prefetch, memory timing, a slow host), skips idle stretches without changing a
 //! trace, reports an overflowing queue, and prefetches as derived by hand.
