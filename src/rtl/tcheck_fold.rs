@@ -46,7 +46,8 @@ pub(crate) fn body_verilog(p: &crate::fold::plan::Plan, w: usize, ew: usize, f: 
     use std::fmt::Write;
     let mut v = String::new();
     let c = "counter$q";
-    let _ = writeln!(v, "always @(*) begin\n  counter$clock = clock;\n  counter$d = ({c} == 8'd{}) ? 8'd0 : {c} + 8'd1;", p.ii - 1);
+    let _ = writeln!(v, "always @(*) begin\n  run$clock = clock;\n  run$d = run$q | valid_in;\n  counter$clock = clock;");
+    let _ = writeln!(v, "  counter$d = (!(run$q | valid_in) || {c} == 8'd{}) ? 8'd0 : {c} + 8'd1;", p.ii - 1);
     let inputs = input_names();
     for ch in &p.words {
         for i in 0..ch.len {
@@ -156,8 +157,8 @@ macro_rules! tcheck_fold {
     };
     (@block $W:tt, $WM1:tt, $E:tt, $F:tt) => {
         /// T.CHECK folded onto shared units by a [`Plan`](crate::fold::plan::Plan): one
-        /// triangle pair every `ii` clocks, taken while the control counter is 0 (from
-        /// power-up: clocks 0, ii, 2 ii, ...), its results at the outputs `latency` clocks
+        /// triangle pair every `ii` clocks, taken while the control counter is 0 (it stays 0
+        /// until the first pair, then runs: pairs come ii, 2 ii, ... clocks after it), its results at the outputs `latency` clocks
         /// later with `valid_out` high for one clock (docs/ARCHITECTURE.md, "Folded
         /// T.CHECK"). Bit for bit [`TCheck`]'s values and verdicts. Ports: [`TCheck`]'s.
         #[derive(LogicBlock)]
@@ -189,6 +190,8 @@ macro_rules! tcheck_fold {
             pub tag_out: Signal<Out, Bits<32>>,
             pub valid_out: Signal<Out, Bit>,
             plan: $crate::rtl::tcheck_fold::Fixed<$crate::fold::plan::Plan>,
+            // the counter starts with the first pair (`run`), then runs freely
+            run: DFF<Bit>,
             counter: DFF<Bits<8>>,
             regs: Vec<DFF<Bits<$W>>>,
             exact: Vec<DFF<Bit>>,
@@ -250,6 +253,7 @@ macro_rules! tcheck_fold {
                     miss: Default::default(),
                     tag_out: Default::default(),
                     valid_out: Default::default(),
+                    run: Default::default(),
                     counter: Default::default(),
                     regs: (0..plan.word_regs()).map(|_| Default::default()).collect(),
                     exact: (0..plan.exact.len).map(|_| Default::default()).collect(),
@@ -354,8 +358,10 @@ macro_rules! tcheck_fold {
                 let p = self.plan.0.clone();
                 let clock = self.clock.val();
                 let c = self.counter.q.val().to_u64() as usize;
+                let run = self.run.q.val() | self.valid_in.val();
+                (self.run.clock.next, self.run.d.next) = (clock, run);
                 self.counter.clock.next = clock;
-                self.counter.d.next = (((c + 1) % p.ii) as u64).into();
+                self.counter.d.next = (if run { ((c + 1) % p.ii) as u64 } else { 0 }).into();
                 for ch in &p.words {
                     for i in 0..ch.len {
                         let r = ch.first + i;
@@ -434,6 +440,7 @@ macro_rules! tcheck_fold {
             }
 
             fn connect(&mut self) {
+                (self.run.clock.connect(), self.run.d.connect());
                 self.counter.clock.connect();
                 self.counter.d.connect();
                 for r in &mut self.regs {
