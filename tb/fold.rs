@@ -62,6 +62,7 @@ fn ops_equal_golden_tcheck() {
             }
         }
     }
+    eprintln!("{n} directions equal");
     assert!(n > 1000, "{n} directions");
 }
 
@@ -149,6 +150,7 @@ fn fold16_equals_golden() {
         .map(|(leaf, frame, beta, scale, tri)| direction(f, r, leaf, frame, *beta, *scale, tri))
         .collect();
     let n = cases.len();
+    eprintln!("{n} directions at II 16");
     let bad = mismatches(collision_chip::fold::tcheck_plan(16).unwrap(), cases);
     assert!(bad.is_empty(), "{} of {n} differ:\n{}", bad.len(), bad[..bad.len().min(5)].join("\n"));
 }

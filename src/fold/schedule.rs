@@ -198,8 +198,6 @@ mod tests {
         for ii in [1, 2, 4, 8, 16, 32] {
             let s = schedule(&g.g, &outs, ii, minimal_units(&g.g, ii)).unwrap();
             assert_eq!(check(&g.g, &outs, &s), Ok(()), "II {ii}");
-            let p = crate::fold::plan::Plan::new(&g, &s);
-            eprintln!("II {ii}: units {:?}, latency {}, word registers {}", s.units, s.latency(), p.word_regs());
         }
         assert!(schedule(&g.g, &outs, 16, [1; 7]).is_err(), "75 products do not fit one multiplier at II 16");
     }
