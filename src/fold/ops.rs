@@ -134,6 +134,7 @@ fn dot_mag<A: Arith>(o: &mut A, a: [A::V; 3], b: [A::V; 3], c: Option<A::V>) -> 
 /// values and bounds.
 pub fn tcheck<A: Arith>(o: &mut A, x: &Inputs<A::V>) -> Outputs<A::V> {
     let up = Rnd::Up;
+    // (arrays start filled with any value: V has no default)
     let (mut mb, mut mag) = ([[x.scale; 4]; 3], [[x.scale; 4]; 3]);
     for n in 0..12 {
         let (i, j) = (n / 4, n % 4);

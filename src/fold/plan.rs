@@ -57,7 +57,8 @@ pub struct Issue {
 
 /// The folded unit: word registers, the three side chains (1-bit `v_exact` and `valid`
 /// registers, 32-bit tag registers), each unit's issue per counter value, and the output
-/// registers' reads, taken at counter value `out_slot`.
+/// registers' reads (words in `outputs`, the tag and valid registers `side_out`), taken at
+/// counter value `out_slot`.
 #[derive(Clone, Debug)]
 pub struct Plan {
     pub ii: usize,
@@ -71,8 +72,7 @@ pub struct Plan {
     pub issues: Vec<Vec<Vec<Option<Issue>>>>,
     pub out_slot: usize,
     pub outputs: Outputs<usize>,
-    pub tag_out: usize,
-    pub valid_out: usize,
+    pub side_out: usize,
 }
 
 impl Plan {
@@ -131,8 +131,7 @@ impl Plan {
             issues,
             out_slot: (s.out_at + 1) % ii,
             outputs,
-            tag_out: s.out_at / ii,
-            valid_out: s.out_at / ii,
+            side_out: s.out_at / ii,
         }
     }
 }

@@ -8,7 +8,7 @@
 //! cycle t, its unit's result is on the unit's output in cycle t + L (L the unit's latency)
 //! and in a register from cycle t + L + 1 ([`Schedule::ready`]).
 
-use super::graph::{Class, Op, Operand};
+use super::graph::{counts, Class, Op, Operand};
 use crate::chip::rtl::{FP_ADD_LATENCY, FP_MUL_LATENCY, FP_SCALE_LATENCY};
 use petgraph::graph::{DiGraph, NodeIndex};
 use petgraph::Direction;
@@ -25,17 +25,6 @@ pub fn latency(c: Class) -> usize {
 
 /// Units per class ([`Class::ALL`]'s order).
 pub type Units = [usize; 7];
-
-/// Operations per class of a graph.
-pub fn counts(g: &DiGraph<Op, Operand>) -> Units {
-    let mut c = [0; 7];
-    for op in g.node_weights() {
-        if let Op::Fp { class, .. } = op {
-            c[class.index()] += 1;
-        }
-    }
-    c
-}
 
 /// The fewest units that run every operation once per `ii` clocks: ceil(ops / ii) per class.
 pub fn minimal_units(g: &DiGraph<Op, Operand>, ii: usize) -> Units {
@@ -96,7 +85,7 @@ pub fn schedule(g: &DiGraph<Op, Operand>, outputs: &[NodeIndex], ii: usize, unit
             asap[s.index()] = asap[s.index()].max(asap[n.index()] + lat);
         }
     }
-    let mut order = topo.clone();
+    let mut order = topo;
     order.sort_by_key(|n| (asap[n.index()], n.index()));
     let mut s = Schedule { ii, units, start: vec![0; g.node_count()], unit: vec![0; g.node_count()], out_at: 0 };
     // busy[class][unit][cycle mod ii]

@@ -124,8 +124,8 @@ pub(crate) fn body_verilog(p: &crate::fold::plan::Plan, w: usize, ew: usize, f: 
     }
     let _ = writeln!(v, "  out_hit$clock = clock;\n  out_hit$d = {take} ? ({}) : out_hit$q;", hit.join(" | "));
     let _ = writeln!(v, "  out_miss$clock = clock;\n  out_miss$d = {take} ? ({}) : out_miss$q;", miss.join(" & "));
-    let _ = writeln!(v, "  out_tag$clock = clock;\n  out_tag$d = {take} ? tags${}$q : out_tag$q;", p.tag_out);
-    let _ = writeln!(v, "  out_valid$clock = clock;\n  out_valid$d = {take} & valid${}$q;", p.valid_out);
+    let _ = writeln!(v, "  out_tag$clock = clock;\n  out_tag$d = {take} ? tags${}$q : out_tag$q;", p.side_out);
+    let _ = writeln!(v, "  out_valid$clock = clock;\n  out_valid$d = {take} & valid${}$q;", p.side_out);
     let _ = writeln!(v, "  hit = out_hit$q;\n  miss = out_miss$q;\n  tag_out = out_tag$q;\n  valid_out = out_valid$q;\nend");
     v
 }
@@ -430,9 +430,9 @@ macro_rules! tcheck_fold {
                 for (r, v) in [(&mut self.out_hit, hit), (&mut self.out_miss, miss)] {
                     (r.clock.next, r.d.next) = (clock, if take { v } else { r.q.val() });
                 }
-                let t = if take { self.tags[p.tag_out].q.val() } else { self.out_tag.q.val() };
+                let t = if take { self.tags[p.side_out].q.val() } else { self.out_tag.q.val() };
                 (self.out_tag.clock.next, self.out_tag.d.next) = (clock, t);
-                (self.out_valid.clock.next, self.out_valid.d.next) = (clock, take & self.valid[p.valid_out].q.val());
+                (self.out_valid.clock.next, self.out_valid.d.next) = (clock, take & self.valid[p.side_out].q.val());
                 self.hit.next = self.out_hit.q.val();
                 self.miss.next = self.out_miss.q.val();
                 self.tag_out.next = self.out_tag.q.val();
