@@ -19,10 +19,13 @@ use collision_chip::rtl::b32;
 use nalgebra::Point3;
 use rust_hdl::prelude::*;
 
+/// One T.CHECK's inputs: the leaf, the frame map, its error words, the scale, the triangle.
+type Dir = (TriWord, [[f64; 4]; 3], [f64; 2], f64, TriWord);
+
 /// Every direction of every pair of two n-triangle soups under a pose where they meet, A
 /// with a zero-area triangle more (as the exported vectors): (leaf, frame, its error words,
 /// scale, triangle).
-fn directions(f: Format, n: usize, pose: &Pose) -> Vec<(TriWord, [[f64; 4]; 3], [f64; 2], f64, TriWord)> {
+fn directions(f: Format, n: usize, pose: &Pose) -> Vec<Dir> {
     let mut a = collision_chip::mesh::soup(n, 21).triangles_f64();
     a.push([Point3::new(0.1, 0.2, 0.3), Point3::new(0.3, 0.4, 0.5), Point3::new(0.7, 0.8, 0.9)]);
     let b = collision_chip::mesh::soup(n, 22).triangles_f64();
@@ -33,7 +36,7 @@ fn directions(f: Format, n: usize, pose: &Pose) -> Vec<(TriWord, [[f64; 4]; 3], 
         for tb in &chip.b.tris {
             for (leaf, tri, ab) in [(tb, ta, true), (ta, tb, false)] {
                 let (frame, beta, scale) = setup.tri_frame(ab);
-                out.push((leaf.clone(), *frame, beta, scale, tri.clone()));
+                out.push((*leaf, *frame, beta, scale, *tri));
             }
         }
     }
