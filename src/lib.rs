@@ -19,6 +19,7 @@ pub mod pose;
 pub mod chip;
 pub mod cycle;
 pub mod dop;
+pub mod fold;
 pub mod golden;
 pub mod harness;
 pub mod hard_cases;

@@ -16,7 +16,7 @@ const LAYERS: &[&[&str]] = &[
     /* 2 */ &["chip"],
     /* 3 */ &["dop"],
     /* 4 */ &["golden"],
-    /* 5 */ &["traversal"],
+    /* 5 */ &["traversal", "fold"],
     /* 6 */ &["query", "hard_cases"],
     /* 7 */ &["cycle"],
     /* 8 */ &["rtl"],

@@ -75,13 +75,14 @@ def rename_modules(src, top, unit):
 
 
 def parse_vectors(path):
-    """(comments, latency, cases, preload_header, preloads) of a vector file.
+    """(comments, latency, interval, cases, preload_header, preloads) of a vector file.
 
     comments: the bodies of the `//`/`#` lines before the first case (header candidates);
     cases, preloads: [(line number, tokens)]; preload_header: (line number, names) of the
     `// preload: ...` line or None. Preload (`@`) lines after the first case are an error."""
     comments = []
     latency = None
+    interval = 1
     cases = []
     pre_header = None
     preloads = []
@@ -97,9 +98,14 @@ def parse_vectors(path):
             if s.startswith("//") or s.startswith("#"):
                 body = s.lstrip("/#").strip()
                 m = re.match(r"latency\s*[:=]\s*(\d+)\s*$", body)
+                mi = re.match(r"interval\s*[:=]\s*(\d+)\s*$", body)
                 mp = re.match(r"preload\s*:(.*)$", body)
                 if m:
                     latency = int(m.group(1))
+                elif mi:
+                    interval = int(mi.group(1))
+                    if interval < 1:
+                        die(f"{path}:{no}: `// interval:` must be at least 1")
                 elif mp:
                     if cases:
                         die(f"{path}:{no}: `// preload:` header after the first case (line {cases[0][0]})")
@@ -121,7 +127,7 @@ def parse_vectors(path):
                 preloads.append((no, toks))
             else:
                 cases.append((no, toks))
-    return comments, latency, cases, pre_header, preloads
+    return comments, latency, interval, cases, pre_header, preloads
 
 
 def main():
@@ -174,7 +180,7 @@ def main():
 
     if not a.vectors:
         die("no vector file given")
-    comments, hlat, cases, pre_header, preloads = parse_vectors(a.vectors)
+    comments, hlat, interval, cases, pre_header, preloads = parse_vectors(a.vectors)
     latency = a.latency if a.latency is not None else hlat
     if latency is None:
         die(f"{a.vectors}: no latency: pass --latency N or put a line `// latency: N` in the vector file")
@@ -322,6 +328,7 @@ def main():
     w("module tb;")
     w(f"  localparam integer NCASES = {len(words)};")
     w(f"  localparam integer LATENCY = {latency};")
+    w(f"  localparam integer INTERVAL = {interval}; // a case only in cycles t = 0 mod INTERVAL")
     w(f"  localparam integer WORD = {total};")
     w("  reg [WORD-1:0] vec [0:NCASES-1];")
     w(f"  localparam integer NPRE = {len(pwords)};")
@@ -382,7 +389,7 @@ def main():
     body_start = len(L)
     for fld in pfields:
         w(f"      {fld} = 0;")
-    w("      if (next < NCASES && !(bubble > 0 && since == bubble)) begin")
+    w("      if (next < NCASES && !(bubble > 0 && since == bubble) && t % INTERVAL == 0) begin")
     w("        cur = vec[next];")
     for fld, hi, lo in layout:
         if fld in ins:

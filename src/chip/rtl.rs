@@ -6,6 +6,11 @@
 use super::config::{ChipConfig, DopRounding, Formats};
 use crate::format::{Format, Rounding};
 
+/// The floating-point units' pipelines: `FpMul`, `FpAdd`, `FpScale` (the folded units'
+/// scheduler, `fold::schedule`, places operations by these).
+pub const FP_MUL_LATENCY: usize = 4;
+pub const FP_ADD_LATENCY: usize = 3;
+pub const FP_SCALE_LATENCY: usize = 4;
 /// Clocks from a DOP test's issue to its result: the DOPTRF lane's pipeline (D.KLMSEL and
 /// the NOR add no register).
 pub const DOP_LATENCY: usize = 15;

@@ -171,8 +171,10 @@ fn vertex_words(f: Format, v: &[[u64; 3]; 3]) -> Vec<String> {
 
 /// T.CHECK's vectors: both directions of every pair of the vector scene (12
 /// soup triangles each) and
-/// of every catalogue case, `inputs -> s_x$e s_e$e cross_t$e cross_f$e hit miss tag_out`.
-pub fn tcheck_vectors(name: &str, f: Format, r: Rounding) -> String {
+/// of every catalogue case, `inputs -> s_x$e s_e$e cross_t$e cross_f$e hit miss tag_out`,
+/// for a T.CHECK of `latency` taking a pair every `interval` clocks (a folded one,
+/// `rtl::b32::TCheckFold`: the testbench then drives a case in cycles 0 mod `interval`).
+pub fn tcheck_vectors(name: &str, f: Format, r: Rounding, latency: usize, interval: usize) -> String {
     use std::fmt::Write;
     let mut names = leaf_names("");
     for row in 0..3 {
@@ -187,7 +189,10 @@ pub fn tcheck_vectors(name: &str, f: Format, r: Rounding) -> String {
     names.extend(["hit", "miss", "tag_out"].map(String::from));
     let mut out = String::new();
     let _ = writeln!(out, "// {}", names.join(" "));
-    let _ = writeln!(out, "// latency: {}", crate::rtl::b32::TCheck::LATENCY);
+    let _ = writeln!(out, "// latency: {latency}");
+    if interval > 1 {
+        let _ = writeln!(out, "// interval: {interval}");
+    }
     let _ = writeln!(out, "// {name}: T.CHECK in {f}, rounding {r:?}: both directions of every pair of two 12-triangle soups under one pose, then of every hard case; golden: golden::tcheck::{{stage1, edges}}");
     let mut triples = vec![];
     let (a, b, setup) = vector_scene(f, 12);

@@ -72,6 +72,24 @@ fn dop_unit_verilog(k: usize, fmt: Format, r: Rounding) -> Option<String> {
 }
 
 
+/// The folded T.CHECKs exported (binary32, nearest-even; `rtl::b32::TCheckFold`).
+const FOLDED_II: [usize; 1] = [16];
+
+/// `tcheck_fold<ii>_b32_rne`: T.CHECK folded for initiation interval `ii`, with T.CHECK's
+/// vectors driven every `ii` clocks.
+fn tcheck_fold_unit(ii: usize) -> Unit {
+    let r = Rounding::NearestEven;
+    let name = format!("tcheck_fold{ii}_b32_{}", rounding_tag(r));
+    let latency = crate::fold::tcheck_plan(ii).expect("T.CHECK schedules at every II").latency;
+    let n2 = name.clone();
+    Unit {
+        name,
+        latency: latency as u32,
+        verilog: Box::new(move || crate::rtl::b32::verilog_tcheck_fold(ii, r)),
+        vectors: Box::new(move || super::tri_io::tcheck_vectors(&n2, Format::BINARY32, r, latency, ii)),
+    }
+}
+
 /// Every exported unit, in a fixed order.
 pub fn all() -> Vec<Unit> {
     let mut units = vec![];
@@ -132,10 +150,14 @@ pub fn all() -> Vec<Unit> {
         let r = Rounding::NearestEven;
         let name = format!("tcheck_{tag}_{}", rounding_tag(r));
         let n2 = name.clone();
-        units.push(Unit { name, latency: crate::rtl::b32::TCheck::LATENCY as u32, verilog: Box::new(move || vt(r)), vectors: Box::new(move || super::tri_io::tcheck_vectors(&n2, fmt, r)) });
+        let latency = crate::rtl::b32::TCheck::LATENCY;
+        units.push(Unit { name, latency: latency as u32, verilog: Box::new(move || vt(r)), vectors: Box::new(move || super::tri_io::tcheck_vectors(&n2, fmt, r, latency, 1)) });
         let name = tri_unit_name(fmt).expect("an RTL format");
         let n2 = name.clone();
         units.push(Unit { name, latency: crate::rtl::b32::TriUnit::LATENCY as u32, verilog: Box::new(move || vu(r)), vectors: Box::new(move || super::tri_io::tri_unit_vectors(&n2, fmt, r)) });
+    }
+    for ii in FOLDED_II {
+        units.push(tcheck_fold_unit(ii));
     }
     // D_CNTR's pair queue, 16 entries (format independent): one line per clock
     let name = crate::chip::rtl::PAIR_QUEUE_UNIT.to_string();

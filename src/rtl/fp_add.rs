@@ -85,6 +85,8 @@ macro_rules! fp_add {
         }
 
         impl FpAdd {
+            pub const LATENCY: usize = 3;
+
             /// An adder rounding with `rounding` (NearestEven or TowardPositive).
             pub fn new(rounding: Rounding) -> Self {
                 let ones: u64 = (1u64 << $E) - 1;

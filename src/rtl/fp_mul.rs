@@ -84,6 +84,8 @@ macro_rules! fp_mul {
         }
 
         impl FpMul {
+            pub const LATENCY: usize = 4;
+
             /// A multiplier rounding with `rounding` (NearestEven or TowardPositive).
             pub fn new(rounding: Rounding) -> Self {
                 let bias: u64 = (1u64 << ($E - 1)) - 1;

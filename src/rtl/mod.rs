@@ -51,6 +51,7 @@ mod klmsel;
 mod memory_port;
 mod reg_ring;
 mod tcheck;
+mod tcheck_fold;
 mod tri_cache;
 mod tri_unit;
 /// The result port, TRI_UNIT's read side in the chip (format-free: not stamped per format).
@@ -117,6 +118,7 @@ pub mod b32 {
         norm_p(8, 16, 20, 22, 23), norm_p3(11, 19, 23, 25, 26));
     // the papers' chip: node word 1 + 24 * 32 + 64 bits (wider than a triangle word, 23 * 32 + 2)
     crate::rtl::chip::chip!(24, DopUnit24, 32, 32, 833, 738, 2048, 1666);
+    crate::rtl::tcheck_fold::tcheck_fold!(32, 31, 8, 23);
 }
 
 /// Units for e8m15 (`Format::REDUCED`).
@@ -161,4 +163,6 @@ check_widths!(e8m15, K6E8m15);
 check_widths!(b32, K24B32);
 check_widths!(e8m15_b32, K24E8m15B32);
 const _: () = assert!(b32::TCheck::LATENCY == crate::chip::rtl::TCHECK_LATENCY && e8m15::TCheck::LATENCY == crate::chip::rtl::TCHECK_LATENCY);
+const _: () = assert!(b32::FpMul::LATENCY == crate::chip::rtl::FP_MUL_LATENCY && b32::FpAdd::LATENCY == crate::chip::rtl::FP_ADD_LATENCY);
+const _: () = assert!(b32::FpScale::LATENCY == crate::chip::rtl::FP_SCALE_LATENCY);
 const _: () = assert!(b32::TriUnit::LATENCY == crate::chip::rtl::TRI_LATENCY && e8m15::TriUnit::LATENCY == crate::chip::rtl::TRI_LATENCY);

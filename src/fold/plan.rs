@@ -1,0 +1,156 @@
+//! The folded T.CHECK's registers and control, from a [`Schedule`]: what the RTL
+//! (`rtl::tcheck_fold`) builds, read by its simulation and by its Verilog alike.
+//!
+//! A free-running counter `c` counts 0 .. ii-1; during cycle t of an input set taken at
+//! counter 0 (edge 0) it holds (t + 1) mod ii. Every value (an input word or an
+//! operation's result) lives in a *chain* of registers: at each edge where the counter
+//! equals the chain's slot (the value's ready cycle mod ii), the first register takes the
+//! value's source (input port or unit output) and each other one its predecessor's. A
+//! value ready in cycle T is then in register `first + (t - T) / ii` in cycle t, and a
+//! chain is as long as its last read needs. An operation started in cycle t is issued
+//! while the counter is (t + 1) mod ii: its unit's operand multiplexers select the
+//! registers of that cycle.
+
+use super::graph::{Class, Graph, Op};
+use super::ops::{Const, Outputs};
+use super::schedule::Schedule;
+use petgraph::graph::NodeIndex;
+use petgraph::Direction;
+
+/// What the first register of a chain takes: input word `i`, the result of a unit (class
+/// index, unit), or one of the pair's side inputs (`v_exact`, `tag`, `valid_in`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Src {
+    Input(usize),
+    Unit(usize, usize),
+    Side,
+}
+
+/// A chain of registers: `first .. first + len` in its register file, written at counter
+/// value `slot`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Chain {
+    pub first: usize,
+    pub len: usize,
+    pub slot: usize,
+    pub src: Src,
+}
+
+/// A word register read into a unit or an output, with its sign cleared (`abs`) or the
+/// value doubled (`dbl`, one more in the exponent field unless it is 0 or all ones).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Read {
+    pub reg: usize,
+    pub abs: bool,
+    pub dbl: bool,
+}
+
+/// One operation issued to a unit: operands `a`, `b` (none for a constant multiplier),
+/// the adder's `sub`, and the constant multiplier's `sel` (the `v_exact` register, or 0).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Issue {
+    pub a: Read,
+    pub b: Option<Read>,
+    pub sub: bool,
+    pub sel: Option<usize>,
+}
+
+/// The folded unit: word registers, the three side chains (1-bit `v_exact` and `valid`
+/// registers, 32-bit tag registers), each unit's issue per counter value, and the output
+/// registers' reads (words in `outputs`, the tag and valid registers `side_out`), taken at
+/// counter value `out_slot`.
+#[derive(Clone, Debug)]
+pub struct Plan {
+    pub ii: usize,
+    pub latency: usize,
+    pub units: [usize; 7],
+    pub words: Vec<Chain>,
+    pub exact: Chain,
+    pub valid: Chain,
+    pub tag: Chain,
+    /// `issues[class][unit][counter]`.
+    pub issues: Vec<Vec<Vec<Option<Issue>>>>,
+    pub out_slot: usize,
+    pub outputs: Outputs<usize>,
+    pub side_out: usize,
+}
+
+impl Plan {
+    /// Word registers in all.
+    pub fn word_regs(&self) -> usize {
+        self.words.iter().map(|c| c.len).sum()
+    }
+
+    /// The plan of `g` under schedule `s`.
+    pub fn new(g: &Graph, s: &Schedule) -> Plan {
+        let ii = s.ii;
+        let ready = |n: NodeIndex| s.ready(&g.g, n);
+        // the last cycle each value is read: by its operations, or as an output
+        let mut last = vec![None::<usize>; g.g.node_count()];
+        for n in g.g.node_indices() {
+            for p in g.g.neighbors_directed(n, Direction::Incoming) {
+                last[p.index()] = last[p.index()].max(Some(s.start[n.index()]));
+            }
+        }
+        for n in g.outputs.all() {
+            last[n.index()] = last[n.index()].max(Some(s.out_at));
+        }
+        let (mut words, mut chain_of, mut next) = (vec![], vec![usize::MAX; g.g.node_count()], 0);
+        for n in g.g.node_indices() {
+            let Some(l) = last[n.index()] else { continue };
+            let src = match g.g[n] {
+                Op::Input(i) => Src::Input(i),
+                Op::Fp { class, .. } => Src::Unit(class.index(), s.unit[n.index()]),
+            };
+            let len = (l - ready(n)) / ii + 1;
+            chain_of[n.index()] = words.len();
+            words.push(Chain { first: next, len, slot: ready(n) % ii, src });
+            next += len;
+        }
+        let read = |n: NodeIndex, t: usize, abs: bool, dbl: bool| Read { reg: words[chain_of[n.index()]].first + (t - ready(n)) / ii, abs, dbl };
+        // v_exact: read by the c_e and c_z multipliers; valid and tag at the outputs
+        let exact_last = g.g.node_indices().filter(|&n| matches!(g.class(n), Some(Class::Scale(Const::Ce | Const::Cz)))).map(|n| s.start[n.index()]).max().unwrap_or(0);
+        let side = |last: usize| Chain { first: 0, len: last / ii + 1, slot: 0, src: Src::Side };
+        let mut issues: Vec<Vec<Vec<Option<Issue>>>> = s.units.iter().map(|&u| vec![vec![None; ii]; u]).collect();
+        for n in g.g.node_indices() {
+            let Op::Fp { class, sub } = g.g[n] else { continue };
+            let t = s.start[n.index()];
+            let ops: Vec<Read> = g.operands(n).into_iter().map(|(p, o)| read(p, t, o.abs, o.dbl)).collect();
+            let sel = matches!(class, Class::Scale(Const::Ce | Const::Cz)).then_some(t / ii);
+            issues[class.index()][s.unit[n.index()]][(t + 1) % ii] = Some(Issue { a: ops[0], b: ops.get(1).copied(), sub, sel });
+        }
+        let outputs = g.outputs.map(|n| read(n, s.out_at, false, false).reg);
+        Plan {
+            ii,
+            latency: s.latency(),
+            units: s.units,
+            words,
+            exact: side(exact_last),
+            valid: side(s.out_at),
+            tag: side(s.out_at),
+            issues,
+            out_slot: (s.out_at + 1) % ii,
+            outputs,
+            side_out: s.out_at / ii,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    /// At every II of issue 33 the plan reads only registers that exist, issues at most one
+    /// operation per unit and counter value (a table of ii entries), and prints its size
+    /// (docs/ARCHITECTURE.md, "Folded T.CHECK", has the table).
+    #[test]
+    fn tcheck_plans() {
+        for ii in [1, 2, 4, 8, 16, 32] {
+            let p = crate::fold::tcheck_plan(ii).unwrap();
+            let n = p.word_regs();
+            let reads = p.issues.iter().flatten().flatten().flatten().flat_map(|i| [Some(i.a), i.b]).flatten();
+            assert!(reads.map(|r| r.reg).chain(p.outputs.all()).all(|r| r < n), "II {ii}");
+            assert!(p.issues.iter().flatten().all(|slots| slots.len() == ii));
+            assert!([p.exact, p.valid, p.tag].iter().all(|c| c.slot < ii) && p.words.iter().all(|c| c.slot < ii && c.len > 0));
+            eprintln!("II {ii}: units {:?}, latency {}, word registers {n}", p.units, p.latency);
+        }
+    }
+}

@@ -1,0 +1,515 @@
+//! Folded T.CHECK (issue 33): T.CHECK's operations on a few shared FP units, one triangle
+//! pair every `ii` clocks, built from a [`Plan`](crate::fold::plan::Plan) (the modulo
+//! schedule of T.CHECK's dataflow graph, `crate::fold`). The same plan drives the
+//! simulation (`update`, an interpreter of the plan's tables) and the Verilog (a custom
+//! module body generated from the same tables): registers are rust-hdl `DFF`s, the units
+//! `FpMul`, `FpAdd`, `FpScale` and `Sign`, so every value is rounded as in `TCheck`.
+
+/// A value a block's logic reads in simulation and its Verilog is generated from, with no
+/// signals of its own (rust-hdl visits nothing in it).
+#[derive(Clone, Debug)]
+pub struct Fixed<T>(pub std::sync::Arc<T>);
+
+impl<T> rust_hdl::prelude::Logic for Fixed<T> {
+    fn update(&mut self) {}
+}
+
+impl<T> rust_hdl::prelude::Block for Fixed<T> {
+    fn connect_all(&mut self) {}
+    fn update_all(&mut self) {}
+    fn has_changed(&self) -> bool {
+        false
+    }
+    fn accept(&self, _name: &str, _probe: &mut dyn rust_hdl::prelude::Probe) {}
+}
+
+/// The Verilog expression of a word register read with its modifiers (`regs$r$q`, sign
+/// cleared, or doubled: one more in the exponent field unless it is 0 or all ones).
+pub(crate) fn read_verilog(r: &crate::fold::plan::Read, w: usize, e: usize, f: usize) -> String {
+    let q = format!("regs${}$q", r.reg);
+    if r.abs {
+        format!("{{1'b0, {q}[{}:0]}}", w - 2)
+    } else if r.dbl {
+        let x = format!("{q}[{}:{f}]", w - 2);
+        format!("((({x} != {e}'d0) && ({x} != {e}'d{})) ? {q} + {w}'d{} : {q})", (1u64 << e) - 1, 1u64 << f)
+    } else {
+        q
+    }
+}
+
+/// The module body (after rust-hdl's declarations and instances) of a folded T.CHECK:
+/// the counter, every register's input, every unit's operand multiplexers (a `case` on
+/// the counter), the signs' inputs and the output registers. `units` names the unit
+/// vectors per class (`Class::ALL` order).
+pub(crate) fn body_verilog(p: &crate::fold::plan::Plan, w: usize, ew: usize, f: usize, units: [&str; 7]) -> String {
+    use crate::fold::plan::Src;
+    use std::fmt::Write;
+    let mut v = String::new();
+    let c = "counter$q";
+    let _ = writeln!(v, "always @(*) begin\n  run$clock = clock;\n  run$d = run$q | valid_in;\n  counter$clock = clock;");
+    let _ = writeln!(v, "  counter$d = (!(run$q | valid_in) || {c} == 8'd{}) ? 8'd0 : {c} + 8'd1;", p.ii - 1);
+    let inputs = input_names();
+    for ch in &p.words {
+        for i in 0..ch.len {
+            let r = ch.first + i;
+            let src = match (i, ch.src) {
+                (0, Src::Input(n)) => inputs[n].clone(),
+                (0, Src::Unit(k, u)) => format!("{}${u}$y", units[k]),
+                _ => format!("regs${}$q", r - 1),
+            };
+            let _ = writeln!(v, "  regs${r}$clock = clock;\n  regs${r}$d = ({c} == 8'd{}) ? {src} : regs${r}$q;", ch.slot);
+        }
+    }
+    for (name, ch, port) in [("exact", &p.exact, "v_exact"), ("valid", &p.valid, "valid_in"), ("tags", &p.tag, "tag")] {
+        for i in 0..ch.len {
+            let src = if i == 0 { port.to_string() } else { format!("{name}${}$q", i - 1) };
+            let _ = writeln!(v, "  {name}${i}$clock = clock;\n  {name}${i}$d = ({c} == 8'd{}) ? {src} : {name}${i}$q;", ch.slot);
+        }
+    }
+    for (k, unit) in units.iter().enumerate() {
+        for (u, slots) in p.issues[k].iter().enumerate() {
+            let n = format!("{unit}${u}");
+            let scale = k >= 4;
+            let _ = writeln!(v, "  {n}$clock = clock;");
+            if !scale {
+                let _ = writeln!(v, "  {n}$valid_in = 1'b0;");
+            }
+            let _ = writeln!(v, "  case ({c})");
+            for (slot, iss) in slots.iter().enumerate() {
+                let Some(iss) = iss else { continue };
+                let _ = write!(v, "    8'd{slot}: begin {n}$a = {};", read_verilog(&iss.a, w, ew, f));
+                if let Some(b) = &iss.b {
+                    let _ = write!(v, " {n}$b = {};", read_verilog(b, w, ew, f));
+                }
+                if k == 2 || k == 3 {
+                    let _ = write!(v, " {n}$sub = 1'b{};", iss.sub as u8);
+                }
+                if scale {
+                    let sel = iss.sel.map_or("1'b0".to_string(), |r| format!("exact${r}$q"));
+                    let _ = write!(v, " {n}$sel = {sel};");
+                }
+                let _ = writeln!(v, " end");
+            }
+            let _ = write!(v, "    default: begin {n}$a = {w}'d0;");
+            let _ = write!(v, "{}", if scale { format!(" {n}$sel = 1'b0;") } else { format!(" {n}$b = {w}'d0;") });
+            if k == 2 || k == 3 {
+                let _ = write!(v, " {n}$sub = 1'b0;");
+            }
+            let _ = writeln!(v, " end\n  endcase");
+        }
+    }
+    let o = &p.outputs;
+    let take = format!("({c} == 8'd{})", p.out_slot);
+    let (mut hit, mut miss) = (vec![], vec![]);
+    for e in 0..3 {
+        let q = (e + 1) % 3;
+        let pairs = [(o.z[e], o.e_z[e]), (o.z[q], o.e_z[q]), (o.rz[e], o.rz_bound[e]), (o.a[e], o.a_bound[e]), (o.b[e], o.b_bound[e]), (o.s[e], o.s_bound[e])];
+        for (i, (x, b)) in pairs.iter().enumerate() {
+            let _ = writeln!(v, "  signs${}$x = regs${x}$q;\n  signs${}$e = regs${b}$q;", 6 * e + i, 6 * e + i);
+        }
+        // signs pz qz rz a b s; bit 0 positive, bit 1 negative
+        let s = |i: usize, neg: bool| format!("signs${}$sgn[{}]", 6 * e + i, neg as u8);
+        let up = [true, false, false, false, false, true]; // P below (negative), Q above, ...
+        let t = |want_neg: [bool; 6]| (0..6).map(|i| s(i, want_neg[i])).collect::<Vec<_>>();
+        let down = up.map(|x| !x);
+        let ct = format!("(({}) | ({}))", t(up).join(" & "), t(down).join(" & "));
+        let cf = format!("(({}) & ({}))", t(down).join(" | "), t(up).join(" | "));
+        let _ = writeln!(v, "  out_s_x${e}$clock = clock;\n  out_s_x${e}$d = {take} ? regs${}$q : out_s_x${e}$q;", o.s[e]);
+        let _ = writeln!(v, "  out_s_b${e}$clock = clock;\n  out_s_b${e}$d = {take} ? regs${}$q : out_s_b${e}$q;", o.s_bound[e]);
+        let _ = writeln!(v, "  out_cross_t${e}$clock = clock;\n  out_cross_t${e}$d = {take} ? {ct} : out_cross_t${e}$q;");
+        let _ = writeln!(v, "  out_cross_f${e}$clock = clock;\n  out_cross_f${e}$d = {take} ? {cf} : out_cross_f${e}$q;");
+        hit.push(ct);
+        miss.push(cf);
+        let _ = writeln!(v, "  s_x${e} = out_s_x${e}$q;\n  s_b${e} = out_s_b${e}$q;\n  cross_t${e} = out_cross_t${e}$q;\n  cross_f${e} = out_cross_f${e}$q;");
+    }
+    let _ = writeln!(v, "  out_hit$clock = clock;\n  out_hit$d = {take} ? ({}) : out_hit$q;", hit.join(" | "));
+    let _ = writeln!(v, "  out_miss$clock = clock;\n  out_miss$d = {take} ? ({}) : out_miss$q;", miss.join(" & "));
+    let _ = writeln!(v, "  out_tag$clock = clock;\n  out_tag$d = {take} ? tags${}$q : out_tag$q;", p.side_out);
+    let _ = writeln!(v, "  out_valid$clock = clock;\n  out_valid$d = {take} & valid${}$q;", p.side_out);
+    let _ = writeln!(v, "  hit = out_hit$q;\n  miss = out_miss$q;\n  tag_out = out_tag$q;\n  valid_out = out_valid$q;\nend");
+    v
+}
+
+/// The input word ports in [`Inputs::from_words`](crate::fold::ops::Inputs::from_words)'s
+/// order, as the Verilog names them.
+pub(crate) fn input_names() -> Vec<String> {
+    let mut n = vec![];
+    for r in 0..3 {
+        n.extend((0..4).map(|c| format!("m_{r}${c}")));
+    }
+    n.extend(["alpha_m", "alpha_f"].map(String::from));
+    for r in 0..3 {
+        n.extend((0..4).map(|c| format!("f_{r}${c}")));
+    }
+    n.extend(["beta_m", "beta_f", "scale"].map(String::from));
+    for k in 0..3 {
+        n.extend(["v_x", "v_y", "v_z"].map(|a| format!("{a}${k}")));
+    }
+    n
+}
+
+/// Stamps out `TCheckFold` in the calling module (after `tcheck!`: it uses `Sign`, `FpMul`,
+/// `FpAdd`, `FpScale`, `FORMAT`). Arguments: `W`, `WM1` = W-1, `E`, `F`.
+macro_rules! tcheck_fold {
+    ($W:tt, $WM1:tt, $E:tt, $F:tt) => {
+        $crate::rtl::tcheck_fold::tcheck_fold!(@block $W, $WM1, $E, $F);
+        $crate::rtl::tcheck_fold::tcheck_fold!(@logic $W, $WM1, $E, $F);
+    };
+    (@block $W:tt, $WM1:tt, $E:tt, $F:tt) => {
+        /// T.CHECK folded onto shared units by a [`Plan`](crate::fold::plan::Plan): one
+        /// triangle pair every `ii` clocks, taken while the control counter is 0 (it stays 0
+        /// until the first pair, then runs: pairs come ii, 2 ii, ... clocks after it), its results at the outputs `latency` clocks
+        /// later with `valid_out` high for one clock (docs/ARCHITECTURE.md, "Folded
+        /// T.CHECK"). Bit for bit [`TCheck`]'s values and verdicts. Ports: [`TCheck`]'s.
+        #[derive(LogicBlock)]
+        pub struct TCheckFold {
+            pub clock: Signal<In, Clock>,
+            pub m_0: [Signal<In, Bits<$W>>; 4],
+            pub m_1: [Signal<In, Bits<$W>>; 4],
+            pub m_2: [Signal<In, Bits<$W>>; 4],
+            pub alpha_m: Signal<In, Bits<$W>>,
+            pub alpha_f: Signal<In, Bits<$W>>,
+            pub f_0: [Signal<In, Bits<$W>>; 4],
+            pub f_1: [Signal<In, Bits<$W>>; 4],
+            pub f_2: [Signal<In, Bits<$W>>; 4],
+            pub beta_m: Signal<In, Bits<$W>>,
+            pub beta_f: Signal<In, Bits<$W>>,
+            pub scale: Signal<In, Bits<$W>>,
+            pub v_x: [Signal<In, Bits<$W>>; 3],
+            pub v_y: [Signal<In, Bits<$W>>; 3],
+            pub v_z: [Signal<In, Bits<$W>>; 3],
+            pub v_exact: Signal<In, Bit>,
+            pub tag: Signal<In, Bits<32>>,
+            pub valid_in: Signal<In, Bit>,
+            pub s_x: [Signal<Out, Bits<$W>>; 3],
+            pub s_b: [Signal<Out, Bits<$W>>; 3],
+            pub cross_t: [Signal<Out, Bit>; 3],
+            pub cross_f: [Signal<Out, Bit>; 3],
+            pub hit: Signal<Out, Bit>,
+            pub miss: Signal<Out, Bit>,
+            pub tag_out: Signal<Out, Bits<32>>,
+            pub valid_out: Signal<Out, Bit>,
+            plan: $crate::rtl::tcheck_fold::Fixed<$crate::fold::plan::Plan>,
+            // the counter starts with the first pair (`run`), then runs freely
+            run: DFF<Bit>,
+            counter: DFF<Bits<8>>,
+            regs: Vec<DFF<Bits<$W>>>,
+            exact: Vec<DFF<Bit>>,
+            valid: Vec<DFF<Bit>>,
+            tags: Vec<DFF<Bits<32>>>,
+            // the units per class (Class::ALL order)
+            mul_v: Vec<FpMul>,
+            mul_up: Vec<FpMul>,
+            add_v: Vec<FpAdd>,
+            add_up: Vec<FpAdd>,
+            scale_e: Vec<FpScale>,
+            scale_z: Vec<FpScale>,
+            scale_s: Vec<FpScale>,
+            // per edge the signs of Pz, Qz, r_z, a, b, s
+            signs: Vec<Sign>,
+            out_s_x: [DFF<Bits<$W>>; 3],
+            out_s_b: [DFF<Bits<$W>>; 3],
+            out_cross_t: [DFF<Bit>; 3],
+            out_cross_f: [DFF<Bit>; 3],
+            out_hit: DFF<Bit>,
+            out_miss: DFF<Bit>,
+            out_tag: DFF<Bits<32>>,
+            out_valid: DFF<Bit>,
+        }
+
+        impl TCheckFold {
+            /// The unit vectors' names per class (the Verilog's instance prefixes).
+            const UNITS: [&'static str; 7] = ["mul_v", "mul_up", "add_v", "add_up", "scale_e", "scale_z", "scale_s"];
+
+            /// A folded T.CHECK built from `plan`, its value datapath rounding with `rounding`.
+            pub fn new(plan: $crate::fold::plan::Plan, rounding: Rounding) -> Self {
+                let cert = $crate::golden::certificate::Certificate::new(FORMAT, rounding);
+                let up = Rounding::TowardPositive;
+                let u = plan.units;
+                Self {
+                    clock: Default::default(),
+                    m_0: Default::default(),
+                    m_1: Default::default(),
+                    m_2: Default::default(),
+                    alpha_m: Default::default(),
+                    alpha_f: Default::default(),
+                    f_0: Default::default(),
+                    f_1: Default::default(),
+                    f_2: Default::default(),
+                    beta_m: Default::default(),
+                    beta_f: Default::default(),
+                    scale: Default::default(),
+                    v_x: Default::default(),
+                    v_y: Default::default(),
+                    v_z: Default::default(),
+                    v_exact: Default::default(),
+                    tag: Default::default(),
+                    valid_in: Default::default(),
+                    s_x: Default::default(),
+                    s_b: Default::default(),
+                    cross_t: Default::default(),
+                    cross_f: Default::default(),
+                    hit: Default::default(),
+                    miss: Default::default(),
+                    tag_out: Default::default(),
+                    valid_out: Default::default(),
+                    run: Default::default(),
+                    counter: Default::default(),
+                    regs: (0..plan.word_regs()).map(|_| Default::default()).collect(),
+                    exact: (0..plan.exact.len).map(|_| Default::default()).collect(),
+                    valid: (0..plan.valid.len).map(|_| Default::default()).collect(),
+                    tags: (0..plan.tag.len).map(|_| Default::default()).collect(),
+                    mul_v: (0..u[0]).map(|_| FpMul::new(rounding)).collect(),
+                    mul_up: (0..u[1]).map(|_| FpMul::new(up)).collect(),
+                    add_v: (0..u[2]).map(|_| FpAdd::new(rounding)).collect(),
+                    add_up: (0..u[3]).map(|_| FpAdd::new(up)).collect(),
+                    scale_e: (0..u[4]).map(|_| FpScale::new(cert.c_e[0], cert.c_e[1])).collect(),
+                    scale_z: (0..u[5]).map(|_| FpScale::new(cert.c_z[0], cert.c_z[1])).collect(),
+                    scale_s: (0..u[6]).map(|_| FpScale::new(cert.c_s, cert.c_s)).collect(),
+                    signs: (0..18).map(|_| Sign::new()).collect(),
+                    out_s_x: Default::default(),
+                    out_s_b: Default::default(),
+                    out_cross_t: Default::default(),
+                    out_cross_f: Default::default(),
+                    out_hit: Default::default(),
+                    out_miss: Default::default(),
+                    out_tag: Default::default(),
+                    out_valid: Default::default(),
+                    plan: $crate::rtl::tcheck_fold::Fixed(std::sync::Arc::new(plan)),
+                }
+            }
+
+            /// The input word `i` ([`Inputs::from_words`](crate::fold::ops::Inputs::from_words)'s order).
+            fn input_word(&self, i: usize) -> u64 {
+                let x = match i {
+                    0..=11 => [&self.m_0, &self.m_1, &self.m_2][i / 4][i % 4].val(),
+                    12 => self.alpha_m.val(),
+                    13 => self.alpha_f.val(),
+                    14..=25 => [&self.f_0, &self.f_1, &self.f_2][(i - 14) / 4][(i - 14) % 4].val(),
+                    26 => self.beta_m.val(),
+                    27 => self.beta_f.val(),
+                    28 => self.scale.val(),
+                    _ => [&self.v_x, &self.v_y, &self.v_z][(i - 29) % 3][(i - 29) / 3].val(),
+                };
+                x.to_u64()
+            }
+
+            /// The output of unit `u` of class `k`.
+            fn unit_y(&self, k: usize, u: usize) -> u64 {
+                match k {
+                    0 => self.mul_v[u].y.val(),
+                    1 => self.mul_up[u].y.val(),
+                    2 => self.add_v[u].y.val(),
+                    3 => self.add_up[u].y.val(),
+                    4 => self.scale_e[u].y.val(),
+                    5 => self.scale_z[u].y.val(),
+                    _ => self.scale_s[u].y.val(),
+                }
+                .to_u64()
+            }
+
+            /// A word register read with its modifiers.
+            fn read(&self, r: &$crate::fold::plan::Read) -> u64 {
+                let q = self.regs[r.reg].q.val().to_u64();
+                let e = (q >> $F) & ((1 << $E) - 1);
+                if r.abs {
+                    q & ((1u64 << $WM1) - 1)
+                } else if r.dbl && e != 0 && e != (1 << $E) - 1 {
+                    q + (1u64 << $F)
+                } else {
+                    q
+                }
+            }
+
+            /// Drives unit `u` of class `k`: operands, `sub`, `sel`.
+            fn issue(&mut self, k: usize, u: usize, a: u64, b: u64, sub: bool, sel: bool) {
+                let clock = self.clock.val();
+                match k {
+                    0 | 1 => {
+                        let m = if k == 0 { &mut self.mul_v[u] } else { &mut self.mul_up[u] };
+                        (m.clock.next, m.a.next, m.b.next, m.valid_in.next) = (clock, a.into(), b.into(), false);
+                    }
+                    2 | 3 => {
+                        let m = if k == 2 { &mut self.add_v[u] } else { &mut self.add_up[u] };
+                        (m.clock.next, m.a.next, m.b.next, m.sub.next, m.valid_in.next) = (clock, a.into(), b.into(), sub, false);
+                    }
+                    _ => {
+                        let m = match k {
+                            4 => &mut self.scale_e[u],
+                            5 => &mut self.scale_z[u],
+                            _ => &mut self.scale_s[u],
+                        };
+                        (m.clock.next, m.a.next, m.sel.next) = (clock, a.into(), sel);
+                    }
+                }
+            }
+
+            /// Verilog of the folded T.CHECK's own logic (its registers and units are
+            /// rust-hdl's instances).
+            fn body(&self) -> String {
+                $crate::rtl::tcheck_fold::body_verilog(&self.plan.0, $W, $E, $F, Self::UNITS)
+            }
+        }
+    };
+    (@logic $W:tt, $WM1:tt, $E:tt, $F:tt) => {
+        impl Logic for TCheckFold {
+            fn update(&mut self) {
+                use $crate::fold::plan::Src;
+                let p = self.plan.0.clone();
+                let clock = self.clock.val();
+                let c = self.counter.q.val().to_u64() as usize;
+                let run = self.run.q.val() | self.valid_in.val();
+                (self.run.clock.next, self.run.d.next) = (clock, run);
+                self.counter.clock.next = clock;
+                self.counter.d.next = (if run { ((c + 1) % p.ii) as u64 } else { 0 }).into();
+                for ch in &p.words {
+                    for i in 0..ch.len {
+                        let r = ch.first + i;
+                        let d = match (c == ch.slot, i, ch.src) {
+                            (false, _, _) => self.regs[r].q.val(),
+                            (true, 0, Src::Input(n)) => self.input_word(n).into(),
+                            (true, 0, Src::Unit(k, u)) => self.unit_y(k, u).into(),
+                            _ => self.regs[r - 1].q.val(),
+                        };
+                        (self.regs[r].clock.next, self.regs[r].d.next) = (clock, d);
+                    }
+                }
+                for i in 0..p.exact.len {
+                    let src = if i == 0 { self.v_exact.val() } else { self.exact[i - 1].q.val() };
+                    let d = if c == p.exact.slot { src } else { self.exact[i].q.val() };
+                    (self.exact[i].clock.next, self.exact[i].d.next) = (clock, d);
+                }
+                for i in 0..p.valid.len {
+                    let src = if i == 0 { self.valid_in.val() } else { self.valid[i - 1].q.val() };
+                    let d = if c == p.valid.slot { src } else { self.valid[i].q.val() };
+                    (self.valid[i].clock.next, self.valid[i].d.next) = (clock, d);
+                }
+                for i in 0..p.tag.len {
+                    let src = if i == 0 { self.tag.val() } else { self.tags[i - 1].q.val() };
+                    let d = if c == p.tag.slot { src } else { self.tags[i].q.val() };
+                    (self.tags[i].clock.next, self.tags[i].d.next) = (clock, d);
+                }
+                for k in 0..7 {
+                    for u in 0..p.units[k] {
+                        let (a, b, sub, sel) = match &p.issues[k][u][c] {
+                            Some(iss) => (self.read(&iss.a), iss.b.map_or(0, |b| self.read(&b)), iss.sub, iss.sel.is_some_and(|r| self.exact[r].q.val())),
+                            None => (0, 0, false, false),
+                        };
+                        self.issue(k, u, a, b, sub, sel);
+                    }
+                }
+                let o = &p.outputs;
+                let take = c == p.out_slot;
+                let (mut hit, mut miss) = (false, true);
+                for e in 0..3 {
+                    let q = (e + 1) % 3;
+                    let pairs = [(o.z[e], o.e_z[e]), (o.z[q], o.e_z[q]), (o.rz[e], o.rz_bound[e]), (o.a[e], o.a_bound[e]), (o.b[e], o.b_bound[e]), (o.s[e], o.s_bound[e])];
+                    let mut pos = [false; 6];
+                    let mut neg = [false; 6];
+                    for (i, (x, b)) in pairs.iter().enumerate() {
+                        let s = &mut self.signs[6 * e + i];
+                        (s.x.next, s.e.next) = (self.regs[*x].q.val(), self.regs[*b].q.val());
+                        (pos[i], neg[i]) = (s.sgn.val().get_bit(0), s.sgn.val().get_bit(1));
+                    }
+                    // P below, Q above | the mirror (Pz, Qz, r_z, a, b, s)
+                    let ct = (neg[0] & pos[1] & pos[2] & pos[3] & pos[4] & neg[5]) | (pos[0] & neg[1] & neg[2] & neg[3] & neg[4] & pos[5]);
+                    let cf = (pos[0] | neg[1] | neg[2] | neg[3] | neg[4] | pos[5]) & (neg[0] | pos[1] | pos[2] | pos[3] | pos[4] | neg[5]);
+                    (hit, miss) = (hit | ct, miss & cf);
+                    let (sx, sb) = (self.regs[o.s[e]].q.val(), self.regs[o.s_bound[e]].q.val());
+                    for (r, v) in [(&mut self.out_s_x[e], sx), (&mut self.out_s_b[e], sb)] {
+                        (r.clock.next, r.d.next) = (clock, if take { v } else { r.q.val() });
+                    }
+                    for (r, v) in [(&mut self.out_cross_t[e], ct), (&mut self.out_cross_f[e], cf)] {
+                        (r.clock.next, r.d.next) = (clock, if take { v } else { r.q.val() });
+                    }
+                    self.s_x[e].next = self.out_s_x[e].q.val();
+                    self.s_b[e].next = self.out_s_b[e].q.val();
+                    self.cross_t[e].next = self.out_cross_t[e].q.val();
+                    self.cross_f[e].next = self.out_cross_f[e].q.val();
+                }
+                for (r, v) in [(&mut self.out_hit, hit), (&mut self.out_miss, miss)] {
+                    (r.clock.next, r.d.next) = (clock, if take { v } else { r.q.val() });
+                }
+                let t = if take { self.tags[p.side_out].q.val() } else { self.out_tag.q.val() };
+                (self.out_tag.clock.next, self.out_tag.d.next) = (clock, t);
+                (self.out_valid.clock.next, self.out_valid.d.next) = (clock, take & self.valid[p.side_out].q.val());
+                self.hit.next = self.out_hit.q.val();
+                self.miss.next = self.out_miss.q.val();
+                self.tag_out.next = self.out_tag.q.val();
+                self.valid_out.next = self.out_valid.q.val();
+            }
+
+            fn connect(&mut self) {
+                (self.run.clock.connect(), self.run.d.connect());
+                self.counter.clock.connect();
+                self.counter.d.connect();
+                for r in &mut self.regs {
+                    (r.clock.connect(), r.d.connect());
+                }
+                for r in self.exact.iter_mut().chain(&mut self.valid) {
+                    (r.clock.connect(), r.d.connect());
+                }
+                for r in &mut self.tags {
+                    (r.clock.connect(), r.d.connect());
+                }
+                for m in self.mul_v.iter_mut().chain(&mut self.mul_up) {
+                    (m.clock.connect(), m.a.connect(), m.b.connect(), m.valid_in.connect());
+                }
+                for m in self.add_v.iter_mut().chain(&mut self.add_up) {
+                    (m.clock.connect(), m.a.connect(), m.b.connect(), m.sub.connect(), m.valid_in.connect());
+                }
+                for m in self.scale_e.iter_mut().chain(&mut self.scale_z).chain(&mut self.scale_s) {
+                    (m.clock.connect(), m.a.connect(), m.sel.connect());
+                }
+                for s in &mut self.signs {
+                    (s.x.connect(), s.e.connect());
+                }
+                for e in 0..3 {
+                    for r in [&mut self.out_s_x[e], &mut self.out_s_b[e]] {
+                        (r.clock.connect(), r.d.connect());
+                    }
+                    for r in [&mut self.out_cross_t[e], &mut self.out_cross_f[e]] {
+                        (r.clock.connect(), r.d.connect());
+                    }
+                    (self.s_x[e].connect(), self.s_b[e].connect(), self.cross_t[e].connect(), self.cross_f[e].connect());
+                }
+                for r in [&mut self.out_hit, &mut self.out_miss, &mut self.out_valid] {
+                    (r.clock.connect(), r.d.connect());
+                }
+                (self.out_tag.clock.connect(), self.out_tag.d.connect());
+                (self.hit.connect(), self.miss.connect(), self.tag_out.connect(), self.valid_out.connect());
+            }
+
+            fn hdl(&self) -> Verilog {
+                Verilog::Custom(self.body())
+            }
+        }
+
+        /// A folded T.CHECK built from `plan` ([`crate::fold::tcheck_plan`]), ready to
+        /// simulate as a top-level block (inputs claimed, connected).
+        pub fn tcheck_fold_top(plan: $crate::fold::plan::Plan, rounding: Rounding) -> TCheckFold {
+            let mut uut = TCheckFold::new(plan, rounding);
+            for c in 0..4 {
+                uut.m_0[c].connect();
+                uut.m_1[c].connect();
+                uut.m_2[c].connect();
+                uut.f_0[c].connect();
+                uut.f_1[c].connect();
+                uut.f_2[c].connect();
+            }
+            for k in 0..3 {
+                uut.v_x[k].connect();
+                uut.v_y[k].connect();
+                uut.v_z[k].connect();
+            }
+            top_level!(uut; clock, alpha_m, alpha_f, beta_m, beta_f, scale, v_exact, tag, valid_in)
+        }
+
+        /// Verilog of the folded T.CHECK (top module `top`).
+        pub fn verilog_tcheck_fold(ii: usize, rounding: Rounding) -> String {
+            let plan = $crate::fold::tcheck_plan(ii).expect("T.CHECK schedules at every II >= 1");
+            generate_verilog(&tcheck_fold_top(plan, rounding))
+        }
+    };
+}
+pub(crate) use tcheck_fold;
