@@ -200,21 +200,24 @@ parts = unit.split('_')
 fmt = '/'.join(p for p in parts if re.fullmatch(r'b32|e\d+m\d+', p)) or '-'  # chip_e8m15_b32_k24: e8m15/b32
 rnd = next((p for p in parts if p in ('rne', 'ru', 'rd', 'rz')), '-')
 def block(inst):
-    # register block: the instance name up to its `__q_N_` / `_N_` bit suffix
-    b = inst.split('__q')[0] if '__q' in inst else re.sub(r'_\d+$', '', inst)
+    # register block: the instance name up to its `__q_N_` / `_N_` bit suffix (`d_cntr__queue__...`
+    # is a module named q..., not a suffix)
+    q = re.fullmatch(r'(.*)__q(_\d+_?)?', inst)
+    b = q.group(1) if q else re.sub(r'_\d+$', '', inst)
     segs = b.split('__')
     m = re.match(r'(s\d+)_', segs[-1])
     if m: segs[-1] = m.group(1)
     return '.'.join(segs)
 if not slack:  # no register-to-register path (combinational unit)
     print(f'{unit},{fmt},{rnd},{cells},{area:.0f},,,,-,-,-,{io},-,{tail}'); sys.exit()
+STAGES = 200
 period = 10 - float(slack.group(1))
 stages = {}
 for m in re.finditer(r'^(\S+)/D \(\S+\)\s+(-?[\d.]+)\s+(-?[\d.]+)\s+(-?[\d.]+)', ends, re.M):
     b = block(m.group(1)); p = 10 - float(m.group(4))
     stages[b] = max(stages.get(b, 0), p)
 order = sorted(stages.items(), key=lambda kv: -kv[1])
-sn = ' '.join(f'{b}:{p:.2f}' for b, p in order)
+sn = ' '.join(f'{b}:{p:.2f}' for b, p in order[:STAGES])  # a chip has tens of thousands of blocks
 print(f'{unit},{fmt},{rnd},{cells},{area:.0f},{float(arr.group(1)):.3f},{period:.3f},{1000/period:.1f},'
       f'{sp.group(1)},{ep.group(1)},{block(ep.group(1))},{io},{sn},{tail}')
 PY
@@ -225,6 +228,7 @@ done
 CONF=$(dirname "$OUT")/timing_config.csv
 "$PY" - "$OUT" "$NEW" "$CONF" <<'PY'
 import csv, os, re, sys
+csv.field_size_limit(sys.maxsize)  # a chip's stage_ns lists thousands of register blocks
 out, new, conf = sys.argv[1:4]
 head = 'unit,format,rounding,cells,area_um2,path_ns,min_period_ns,fmax_mhz,startpoint,endpoint,slow_stage,in_path_ns,out_path_ns,stage_ns,flow,rtl_sha256'.split(',')
 rows = {}

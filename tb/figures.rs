@@ -1,14 +1,16 @@
 //! `cchip figures` on a small plan: every file is written, the CSV has the columns the
 //! docs read, and the data obey what must hold whatever the timing (LIFO and FIFO find
 //! the same pairs, as do the list and recursive traversals; Algorithm 1 never transforms
-//! less than Algorithm 2).
+//! less than Algorithm 2); each chip runs on its preset at its configuration's period, and
+//! its times add up (end to end = host setup + clocks x period + host settling).
 
 use collision_chip::chip::config::DopRounding;
 use collision_chip::chip::preset::Preset;
-use collision_chip::chip::timing::Technology;
+use collision_chip::chip::timing::{Clock, Technology};
 use collision_chip::format::Format;
 use collision_chip::report::accuracy;
-use collision_chip::report::figures::{generate, Cell, Plan};
+use collision_chip::report::figures::{generate, Plan};
+use collision_chip::report::plot::Cell;
 use collision_chip::pose::Sweep;
 use std::collections::HashMap;
 
@@ -27,7 +29,7 @@ fn num(r: &HashMap<String, String>, c: &str) -> f64 {
 #[test]
 fn figures_data_hold_what_the_papers_compare() {
     let out = std::env::temp_dir().join(format!("cchip-figures-test-{}", std::process::id()));
-    let plan = Plan { meshes: vec!["teapot".into()], distances: vec![2.2, 1.4, 1.0], orientations: 2, seed: 3, min_seconds: 0.001 };
+    let plan = Plan { meshes: vec!["teapot".into()], distances: vec![2.2, 1.4, 1.0], orientations: 2, seed: 3, min_seconds: 0.001, preset: None, technology: Technology::Osu018 };
     let written = generate(&plan, &out, &indicatif::ProgressBar::hidden()).unwrap();
     let stems = [
         "date05_fig6_cycles",
@@ -50,7 +52,14 @@ fn figures_data_hold_what_the_papers_compare() {
     assert!(std::fs::read(out.join("date05_fig6_cycles.png")).unwrap().starts_with(b"\x89PNG"));
 
     let (cols, fig6) = csv(&out.join("date05_fig6_cycles.csv"));
-    assert_eq!(cols, ["mesh", "triangles", "distance", "queries", "order", "mode", "pairs", "cycles", "cycles_max", "chip_us", "words"]);
+    assert_eq!(cols, ["mesh", "triangles", "distance", "queries", "order", "mode", "pairs", "cycles", "cycles_max", "period_ns", "chip_us", "words"]);
+    // DATE'05's figures on the date05 preset, at its configuration's measured period
+    let period = |p: Preset| Clock::of(Technology::Osu018, &p.chip(), p).unwrap().period_ns;
+    let close = |a: f64, b: f64| (a - b).abs() <= 1e-9 * a.abs().max(b.abs()).max(1.0);
+    for r in &fig6 {
+        assert_eq!(num(r, "period_ns"), period(Preset::Date05), "{r:?}");
+        assert!(close(num(r, "chip_us"), num(r, "cycles") * num(r, "period_ns") / 1000.0), "{r:?}");
+    }
     assert_eq!(fig6.len(), 3 * 2 * 2);
     for r in &fig6 {
         let twin = fig6
@@ -72,8 +81,19 @@ fn figures_data_hold_what_the_papers_compare() {
     assert!(fig7.iter().all(|r| num(r, "max_entries") >= 1.0));
 
     let (cols, fig8) = csv(&out.join("date05_fig8_speedup.csv"));
-    assert_eq!(cols[4..], ["pairs", "cycles", "chip_us", "golden_us", "parry_us", "speedup_golden", "speedup_parry"]);
-    assert!(fig8.iter().all(|r| num(r, "speedup_golden") > 0.0));
+    assert_eq!(
+        cols[4..],
+        ["pairs", "cycles", "period_ns", "chip_us", "setup_us", "settle_us", "end_to_end_us", "golden_us", "parry_us", "speedup_golden", "speedup_parry", "e2e_speedup_golden", "e2e_speedup_parry"]
+    );
+    for r in &fig8 {
+        let lifo_all = fig6.iter().find(|q| q["distance"] == r["distance"] && q["order"] == "lifo" && q["mode"] == "all").unwrap();
+        assert_eq!((num(r, "cycles"), num(r, "chip_us")), (num(lifo_all, "cycles"), num(lifo_all, "chip_us")), "{r:?}");
+        assert!(num(r, "setup_us") > 0.0 && num(r, "settle_us") > 0.0, "{r:?}");
+        assert!(close(num(r, "end_to_end_us"), num(r, "setup_us") + num(r, "chip_us") + num(r, "settle_us")), "{r:?}");
+        assert!(close(num(r, "speedup_golden"), num(r, "golden_us") / num(r, "chip_us")), "{r:?}");
+        assert!(close(num(r, "e2e_speedup_golden"), num(r, "golden_us") / num(r, "end_to_end_us")), "{r:?}");
+        assert_eq!(r["parry_us"].is_empty(), !cfg!(feature = "parry"), "{r:?}");
+    }
 
     let (cols, fig11) = csv(&out.join("wscg03_fig11_nodes.csv"));
     assert_eq!(cols[4..], ["traversal", "mode", "pairs", "software_us", "node_fetches", "dop_transforms"]);
@@ -88,12 +108,22 @@ fn figures_data_hold_what_the_papers_compare() {
     let (cols, fig13) = csv(&out.join("wscg03_fig13_speedup.csv"));
     assert_eq!(
         cols[4..],
-        ["pairs", "software_us", "wscg03_cycles", "eq5_cycles", "date05_cycles", "lists", "alpha", "wscg03_clocks_per_list", "eq5_clocks_per_list", "speedup_wscg03", "speedup_eq5", "speedup_date05"]
+        [
+            "pairs", "software_us", "parry_us", "wscg03_cycles", "eq5_cycles", "date05_cycles", "lists", "alpha", "wscg03_clocks_per_list", "eq5_clocks_per_list", "period_ns", "setup_us", "settle_us",
+            "speedup_wscg03", "speedup_eq5", "speedup_date05", "speedup_parry_wscg03", "speedup_parry_eq5", "speedup_parry_date05", "e2e_us_wscg03", "e2e_us_eq5", "e2e_us_date05"
+        ]
     );
     for r in &fig13 {
         let eq5 = 100.0 * num(r, "lists") + 10.0 * (num(r, "alpha") - 2.0) * num(r, "lists");
         assert!((eq5 - num(r, "eq5_cycles")).abs() <= 1e-6 * eq5.abs().max(1.0), "{r:?}");
         assert!(num(r, "wscg03_cycles") > 0.0 && num(r, "date05_cycles") > 0.0, "{r:?}");
+        // WSCG'03's figure on the wscg03 preset
+        assert_eq!(num(r, "period_ns"), period(Preset::Wscg03), "{r:?}");
+        for m in ["wscg03", "eq5", "date05"] {
+            let chip_us = num(r, &format!("{m}_cycles")) * num(r, "period_ns") / 1000.0;
+            assert!(close(num(r, &format!("speedup_{m}")), num(r, "software_us") / chip_us), "{m}: {r:?}");
+            assert!(close(num(r, &format!("e2e_us_{m}")), num(r, "setup_us") + chip_us + num(r, "settle_us")), "{m}: {r:?}");
+        }
     }
     let (cols, side) = csv(&out.join("wscg03_vs_date05.csv"));
     assert_eq!(cols[4..], ["wscg03_clocks", "date05_clocks", "wscg03_dop_per_clock", "date05_dop_per_clock", "wscg03_transforms_per_clock", "date05_transforms_per_clock", "wscg03_words", "date05_words", "wscg03_list_pointers", "date05_queue_entries"]);
@@ -101,6 +131,25 @@ fn figures_data_hold_what_the_papers_compare() {
     assert!(side.iter().all(|r| num(r, "date05_transforms_per_clock") == num(r, "date05_dop_per_clock")), "{side:?}");
     let json: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(out.join("wscg03_fig13_speedup.json")).unwrap()).unwrap();
     assert_eq!(json.as_array().unwrap().len(), fig13.len());
+    let setup: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(out.join("plan.json")).unwrap()).unwrap();
+    assert_eq!((&setup["runs"]["date"]["preset"], &setup["runs"]["wscg"]["preset"]), (&"date05".into(), &"wscg03".into()));
+    assert!(setup["runs"]["date"]["clock_source"].as_str().unwrap().contains("docs/figures/timing.csv"), "{setup}");
+    let _ = std::fs::remove_dir_all(&out);
+}
+
+/// `--preset` runs every figure's chips on that preset, and `--technology paper` at its
+/// clock: the `rtl` preset's 800 MHz in DATE'05's figures and in Fig. 13 alike.
+#[test]
+fn figures_preset_overrides_both_papers() {
+    let out = std::env::temp_dir().join(format!("cchip-figures-preset-{}", std::process::id()));
+    let plan = Plan { meshes: vec!["teapot".into()], distances: vec![1.2], orientations: 1, seed: 3, min_seconds: 0.001, preset: Some(Preset::Rtl), technology: Technology::Paper };
+    generate(&plan, &out, &indicatif::ProgressBar::hidden()).unwrap();
+    for (stem, col) in [("date05_fig6_cycles", "period_ns"), ("date05_fig8_speedup", "period_ns"), ("wscg03_fig13_speedup", "period_ns")] {
+        let (_, rows) = csv(&out.join(format!("{stem}.csv")));
+        assert!(rows.iter().all(|r| num(r, col) == 1.25), "{stem}: {rows:?}");
+    }
+    let setup: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(out.join("plan.json")).unwrap()).unwrap();
+    assert_eq!((&setup["runs"]["date"]["preset"], &setup["runs"]["wscg"]["preset"]), (&"rtl".into(), &"rtl".into()));
     let _ = std::fs::remove_dir_all(&out);
 }
 

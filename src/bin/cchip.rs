@@ -10,7 +10,7 @@ use collision_chip::chip::memory::Memory;
 use collision_chip::mesh::{self, Mesh};
 use collision_chip::pose::Pose;
 use collision_chip::query::{exact_pairs, Accuracy, Chip};
-use collision_chip::report::{accuracy, figures, memory_table, stack_table, stall_table, summary_table};
+use collision_chip::report::{accuracy, figures, memory_table, plot, stack_table, stall_table, summary_table};
 use collision_chip::harness::units;
 use collision_chip::scene::graph::Plan;
 use collision_chip::scene::run::Prepared;
@@ -86,18 +86,28 @@ enum Cmd {
     /// cycle model for its clocks (poses on every core); with --area, the Yosys cells of
     /// each configuration's units. Prints the tables of docs/ACCURACY.md; --plot draws them.
     Accuracy(AccuracyArgs),
-    /// The papers' figures regenerated (docs/FIGURES.md): DATE'05 Figs. 6-8 (cycles and
-    /// queue memory, LIFO vs FIFO; the chip's speed-up at 800 MHz) and WSCG'03 Figs. 9-13
-    /// (software time, nodes and DOP transforms of the list and recursive traversals; the
-    /// chip's speed-up at 266 MHz beside Eq. 5), each as SVG and PNG with its data as CSV
-    /// and JSON. Software is timed one query at a time, the rest runs on every core. Build
-    /// with `--features parry` to add the parry3d peer to Fig. 8.
+    /// The papers' figures regenerated (docs/FIGURES.md): DATE'05 Figs. 6-8 on the `date05`
+    /// preset (cycles and queue memory, LIFO vs FIFO; the chip's speed-up, of its time and
+    /// end to end) and WSCG'03 Figs. 9-13 (software time, nodes and DOP transforms of the
+    /// list and recursive traversals; on the `wscg03` preset the chips' speed-up beside
+    /// Eq. 5), each as SVG and PNG with its data as CSV and JSON. Software and the host are
+    /// timed one query at a time, the rest runs on every core. Build with `--features parry`
+    /// to add the parry3d peer.
     Figures {
         #[arg(long, default_value = "target/figures")]
         out: PathBuf,
         /// A small run for CI: teapot and bunny, 5 distances, 6 orientations.
         #[arg(long)]
         quick: bool,
+        /// Run every figure's chips on this preset instead of date05 (DATE'05's figures) and
+        /// wscg03 (WSCG'03's Fig. 13).
+        #[arg(long, value_enum)]
+        preset: Option<Preset>,
+        /// The chips' clock period: osu018 (the configuration's slowest RTL unit measured on
+        /// OSU 0.18 um, docs/figures/timing.csv), ecp5 or paper (the preset's 800 / 266 MHz,
+        /// assumed).
+        #[arg(long, value_enum, default_value = "osu018")]
+        technology: Technology,
     },
 }
 
@@ -236,7 +246,7 @@ fn main() -> ExitCode {
         Some(Cmd::Query(q)) => query(q),
         Some(Cmd::Run { scene, opts }) => run(scene, opts),
         Some(Cmd::Accuracy(a)) => accuracy(a),
-        Some(Cmd::Figures { out, quick }) => figures(&out, quick),
+        Some(Cmd::Figures { out, quick, preset, technology }) => figures(&out, quick, preset, technology),
         Some(Cmd::ExportVerilog { out, area: false }) => report_written(units::write_verilog(&out)),
         Some(Cmd::ExportVerilog { out, area: true }) => report_written(units::write_area_verilog(&out)),
         Some(Cmd::Vectors { out }) => report_written(units::write_vectors(&out)),
@@ -382,7 +392,7 @@ fn accuracy(a: AccuracyArgs) -> Result<(), String> {
     if let Some(dir) = &a.plot {
         std::fs::create_dir_all(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
         for f in accuracy::figures(&rows, area.as_ref()) {
-            for p in figures::write_figure(&f, dir)? {
+            for p in plot::write_figure(&f, dir)? {
                 eprintln!("wrote {}", p.display());
             }
         }
@@ -396,8 +406,8 @@ fn accuracy(a: AccuracyArgs) -> Result<(), String> {
     Ok(())
 }
 
-fn figures(out: &std::path::Path, quick: bool) -> Result<(), String> {
-    let plan = if quick { figures::Plan::quick() } else { figures::Plan::full() };
+fn figures(out: &std::path::Path, quick: bool, preset: Option<Preset>, technology: Technology) -> Result<(), String> {
+    let plan = figures::Plan { preset, technology, ..if quick { figures::Plan::quick() } else { figures::Plan::full() } };
     let bar = progress_bar(0, false);
     bar.set_style(ProgressStyle::with_template("{bar:40} {pos}/{len} {elapsed} (eta {eta}) {msg}").expect("valid template"));
     let t0 = std::time::Instant::now();

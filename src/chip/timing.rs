@@ -231,6 +231,10 @@ mod tests {
         let t = Table::parse("fmax_mhz,unit\n125,pair_queue_n4\n", "t.csv").unwrap();
         assert_eq!(Clock::measured(&t, &cfg).unwrap().period_ns, 8.0);
         assert!(Clock::measured(&Table::parse("unit,min_period_ns\nfp_mul_b32_ru,3\n", "t").unwrap(), &cfg).is_none());
+        // the whole chip, where measured, is one of its units: its control and the paths
+        // between units count
+        let t = Table::parse("unit,min_period_ns\nfp_add_e8m15_rne,8\nchip_e8m15_k6,9\n", "t").unwrap();
+        assert_eq!(Clock::measured(&t, &cfg).unwrap().slowest.as_deref(), Some("chip_e8m15_k6"));
     }
 
     #[test]

@@ -15,7 +15,7 @@ use crate::measure::parallel_map;
 use crate::golden::memory::TriWord;
 use crate::oracle;
 use crate::query::{exact_pairs, place, Accuracy, Chip};
-use crate::report::figures::{Cell, Figure, Panel, Series, Style, Table, PALETTE};
+use crate::report::plot::{Cell, Figure, Panel, Series, Style, Table, PALETTE};
 use crate::pose::{sweep_poses, Sweep};
 use crate::traversal::Traversal;
 use crate::chip::reg::{Mode, Order};

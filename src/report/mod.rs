@@ -3,6 +3,7 @@
 
 pub mod accuracy;
 pub mod figures;
+pub mod plot;
 
 use crate::cycle::chip::Stats;
 use crate::query::Accuracy;
