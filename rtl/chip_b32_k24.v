@@ -55,6 +55,9 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
     reg  [23:0] base_tb$d;
     wire  [23:0] base_tb$q;
     reg  base_tb$clock;
+    reg  [19:0] map$d;
+    wire  [19:0] map$q;
+    reg  map$clock;
     reg  run$d;
     wire  run$q;
     reg  run$clock;
@@ -130,6 +133,7 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
     reg  [23:0] mem_port$base_nb;
     reg  [23:0] mem_port$base_ta;
     reg  [23:0] mem_port$base_tb;
+    reg  [19:0] mem_port$map;
     reg  mem_port$pop;
     reg  [66:0] mem_port$pop_entry;
     reg  [3:0] mem_port$pop_fetch;
@@ -405,6 +409,11 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         .q(base_tb$q),
         .clock(base_tb$clock)
     );
+    top$map map(
+        .d(map$d),
+        .q(map$q),
+        .clock(map$clock)
+    );
     top$d_cntr$ent_second run(
         .d(run$d),
         .q(run$q),
@@ -499,6 +508,7 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         .base_nb(mem_port$base_nb),
         .base_ta(mem_port$base_ta),
         .base_tb(mem_port$base_tb),
+        .map(mem_port$map),
         .pop(mem_port$pop),
         .pop_entry(mem_port$pop_entry),
         .pop_fetch(mem_port$pop_fetch),
@@ -762,6 +772,7 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         base_nb$clock = clock;
         base_ta$clock = clock;
         base_tb$clock = clock;
+        map$clock = clock;
         mode_lifo$d = mode_lifo$q;
         mode_first$d = mode_first$q;
         mode_rec$d = mode_rec$q;
@@ -770,6 +781,7 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         base_nb$d = base_nb$q;
         base_ta$d = base_ta$q;
         base_tb$d = base_tb$q;
+        map$d = map$q;
         port_pf$clock = clock;
         port_out$clock = clock;
         port_one$clock = clock;
@@ -852,6 +864,9 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
             if (host_addr == 32'h127) begin
                 tc_mask$d = host_data[(32'h0)+:(7)];
             end
+            if (host_addr == 32'h128) begin
+                map$d = host_data[(32'h0)+:(20)];
+            end
         end
         pf = ((port_pf$q) & 5'h1f);
         if (((port_pf$q) & 5'h1f) > c_pf_max) begin
@@ -897,6 +912,7 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         mem_port$base_nb = base_nb$q;
         mem_port$base_ta = base_ta$q;
         mem_port$base_tb = base_tb$q;
+        mem_port$map = map$q;
         mem_port$pop = d_cntr$pop;
         mem_port$pop_entry = d_cntr$pop_entry;
         mem_port$pop_fetch = d_cntr$pop_fetch;
@@ -13882,7 +13898,26 @@ module top$leaf_tag(d,q,clock);
 endmodule // top$leaf_tag
 
 
-module top$mem_port(clock,clear,go,pf_on,records,port_out,base_na,base_nb,base_ta,base_tb,pop,pop_entry,pop_fetch,issue,cur_fa,cur_fb,cur_sa,cur_sb,need_ta,need_tb,leaf_tag,mem_req_ready,mem_resp_valid,mem_resp_data,mem_req_valid,mem_req_addr,req_dst,accept,resp,resp_dst,ta_req,tb_req,outstanding,na_in,nb_in,wa_empty,wb_empty);
+module top$map(d,q,clock);
+    
+    // Module arguments
+    input wire  [19:0] d;
+    output reg  [19:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 20'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$map
+
+
+module top$mem_port(clock,clear,go,pf_on,records,port_out,base_na,base_nb,base_ta,base_tb,map,pop,pop_entry,pop_fetch,issue,cur_fa,cur_fb,cur_sa,cur_sb,need_ta,need_tb,leaf_tag,mem_req_ready,mem_resp_valid,mem_resp_data,mem_req_valid,mem_req_addr,req_dst,accept,resp,resp_dst,ta_req,tb_req,outstanding,na_in,nb_in,wa_empty,wb_empty);
     
     // Module arguments
     input wire  clock;
@@ -13895,6 +13930,7 @@ module top$mem_port(clock,clear,go,pf_on,records,port_out,base_na,base_nb,base_t
     input wire  [23:0] base_nb;
     input wire  [23:0] base_ta;
     input wire  [23:0] base_tb;
+    input wire  [19:0] map;
     input wire  pop;
     input wire  [66:0] pop_entry;
     input wire  [3:0] pop_fetch;
@@ -13925,6 +13961,7 @@ module top$mem_port(clock,clear,go,pf_on,records,port_out,base_na,base_nb,base_t
     
     // Constant declarations
     localparam  c_ask_b = 22'h10000;
+    localparam  c_one24 = 24'h1;
     localparam  c_one16 = 16'h1;
     localparam  c_one32 = 32'h1;
     
@@ -14123,6 +14160,11 @@ module top$mem_port(clock,clear,go,pf_on,records,port_out,base_na,base_nb,base_t
     reg  [15:0] req_id;
     reg  [15:0] ask_rec;
     reg  [23:0] req_addr;
+    reg  [23:0] req_base;
+    reg  [23:0] req_rec;
+    reg  [4:0] map_ln;
+    reg  [4:0] map_lp;
+    reg  [4:0] map_lb;
     
     // Sub module instances
     top$mem_port$ask_w$0 ask_w$0(
@@ -14642,23 +14684,39 @@ module top$mem_port(clock,clear,go,pf_on,records,port_out,base_na,base_nb,base_t
         if (records) begin
             ask_rec = ((ask_front[(32'h1)+:(15)]) & 16'hffff);
         end
-        req_addr = base_na + ((ask_rec) & 24'hffffff);
+        req_base = base_na;
         if (ask_front[32'h10]) begin
-            req_addr = base_nb + ((ask_rec) & 24'hffffff);
+            req_base = base_nb;
         end
+        req_rec = ((ask_rec) & 24'hffffff);
         req = port_free & ask_ok;
         if (need_tb & ~tb_pend$q) begin
             req_dst = 32'h3;
             req_id = leaf_tag[(32'h10)+:(16)];
-            req_addr = base_tb + ((leaf_tag[(32'h10)+:(16)]) & 24'hffffff);
+            req_base = base_tb;
+            req_rec = ((leaf_tag[(32'h10)+:(16)]) & 24'hffffff);
             req = port_free;
         end
         if (need_ta & ~ta_pend$q) begin
             req_dst = 32'h2;
             req_id = leaf_tag[(32'h0)+:(16)];
-            req_addr = base_ta + ((leaf_tag[(32'h0)+:(16)]) & 24'hffffff);
+            req_base = base_ta;
+            req_rec = ((leaf_tag[(32'h0)+:(16)]) & 24'hffffff);
             req = port_free;
         end
+        map_ln = ((map[(32'h0)+:(3)]) & 5'h1f);
+        if (req_dst == 32'h1) begin
+            map_ln = ((map[(32'h3)+:(3)]) & 5'h1f);
+        end
+        if (req_dst == 32'h2) begin
+            map_ln = ((map[(32'h6)+:(3)]) & 5'h1f);
+        end
+        if (req_dst == 32'h3) begin
+            map_ln = ((map[(32'h9)+:(3)]) & 5'h1f);
+        end
+        map_lp = ((map[(32'hc)+:(4)]) & 5'h1f);
+        map_lb = ((map[(32'h10)+:(4)]) & 5'h1f);
+        req_addr = req_base + ((req_rec >> (map_ln + map_lp)) << (map_lb + map_lp)) + ((req_rec & ((c_one24 << map_ln) - 32'h1)) << map_lp) + ((req_rec >> map_ln) & ((c_one24 << map_lp) - 32'h1));
         mem_req_valid = req;
         mem_req_addr = req_addr;
         accept = req & mem_req_ready;

@@ -80,11 +80,6 @@ impl Chip {
         crate::golden::memory::image_bases(&self.a, &self.b)
     }
 
-    /// Records in the memory image (node records and triangles of both objects).
-    pub fn image_words(&self) -> u32 {
-        self.image_bases()[crate::chip::layout::Dst::TriB as usize] + self.b.tris.len() as u32
-    }
-
     /// Word addresses the memory image spans on `memory` (its records as
     /// [`RecordMap`](crate::chip::layout::RecordMap) places them).
     pub fn image_span(&self, memory: &crate::chip::memory::Memory) -> u32 {

@@ -243,6 +243,24 @@ fn k24_rec_patch_fifo_all() {
     compare_with_expect(q.name, tr);
 }
 
+/// The `records` layout on a DDR of 8 banks (2 records a page), its regions in banks of
+/// their own (A's nodes 2, B's 4, the triangles 1 each: register 0x128, the memory port's
+/// shifts and masks, `chip::layout::RecordMap`): the same query as
+/// [`k24_rec_patch_fifo_all`], every signal (the request addresses too) equal to the cycle
+/// model's, clock by clock, and the answer the golden model's.
+#[test]
+fn k24_rec_patch_fifo_ddr_banks() {
+    use collision_chip::chip::reg::MAP;
+    let q = query("k24_rec_patch_fifo_all");
+    let ddr = Memory::Ddr(Ddr { banks: 8, page_bytes: 512, bus_bits: 1024, burst: 2, hit: 3, miss: 6 });
+    let p = q.prepare().unwrap();
+    let case = Case::new("k24_rec_patch_fifo_ddr_banks", p.chip, q.pose, q.order, q.mode, Params { memory: ddr, ..q.params() }, q.reader);
+    let map = case.image.writes.iter().find(|w| w.0 == MAP).expect("the record map written").1;
+    assert_eq!(map, 1 | 2 << 3 | 1 << 12 | 3 << 16, "A's nodes 2 banks, B's 4, a page 2 records, 8 banks");
+    let tr = &case.lockstep::<10, 11, 9>(1, None)[0];
+    case.check(tr);
+}
+
 /// A's triangle cache with 4 lines (register 0x127): triangle words fetched only when
 /// their line holds another, a fill bypassed to the leaf pair that reads its line in the
 /// next clock; in lockstep with the cycle model, and in FIFO order A's and B's fetches are

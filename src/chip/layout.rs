@@ -151,69 +151,104 @@ pub fn node_ids(kind: MemLayout, children: &[Option<[u32; 2]>]) -> Vec<u32> {
 }
 
 /// Where a record lies: its word address in memory. `words`, and any layout on an ideal
-/// memory or a DDR of fewer than 4 banks: the image in order, record `base + i` of a region
-/// (A's nodes, B's nodes, A's triangles, B's triangles: [`image_bases`]). `records` on DDR:
-/// each region in banks of its own ([`RecordMap::banks`]), so that the four streams of
-/// requests do not close each other's rows, its records dealt round its banks a page's worth
-/// at a time: record `i` of a region of `n` banks from bank `b0` is in bank
-/// `b0 + (i mod n)`, column `(i / n) mod per_page`, row `i / (n * per_page)`, so that
-/// consecutive records (a node's children, then a child's children: pre-order) are in
-/// different banks and requests in flight rarely wait for a bank. Word `a` is in bank
-/// `(a / per_page) mod banks` (the DDR model's page interleaving,
-/// [`Ddr`](super::memory::Ddr)), `per_page` the records of a page.
+/// memory or a DDR whose banks or page's records are not a power of two or fewer than 4
+/// banks: the image in order, record `i` of a region (A's nodes, B's nodes, A's
+/// triangles, B's triangles: [`image_bases`]) at word `base + i`. `records` on DDR: each
+/// region in banks of its own ([`RecordMap::banks`]), so that the four streams of requests
+/// do not close each other's rows, its records dealt round its banks a page's worth at a
+/// time: record `i` of a region of `n` banks from bank `b0` is in bank `b0 + (i mod n)`,
+/// column `(i / n) mod per_page`, row `i / (n * per_page)`, so that consecutive records (a
+/// node's children, then a child's children: pre-order) are in different banks and requests
+/// in flight rarely wait for a bank. Word `a` is in bank `(a / per_page) mod banks` (the DDR
+/// model's page interleaving, [`Ddr`](super::memory::Ddr)), `per_page` the records of a
+/// page. Banks, a region's banks and `per_page` are powers of two, so that the RTL's memory
+/// port computes the address with shifts and masks ([`RecordMap::addr`]) from the host
+/// register [`MAP`](super::reg::MAP) ([`RecordMap::word`]), `base` the region's first word
+/// (`b0 per_page`, [`RecordMap::bases`]).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct RecordMap {
-    /// `(first bank, banks)` of each region by [`Dst`]; `None`: the image in order.
-    regions: Option<[(u32, u32); 4]>,
-    banks: u32,
-    per_page: u32,
+    /// log2 of each region's banks, by [`Dst`].
+    ln: [u32; 4],
+    /// log2 of the records of a page.
+    lp: u32,
+    /// log2 of the banks; 0: the image in order.
+    lb: u32,
 }
 
 impl RecordMap {
+    /// The image in order: the register's reset value.
+    pub const IN_ORDER: RecordMap = RecordMap { ln: [0; 4], lp: 0, lb: 0 };
+
     pub fn new(layout: &Layout, memory: &Memory) -> RecordMap {
         match (layout.kind, memory) {
-            (MemLayout::Records, Memory::Ddr(d)) if d.banks >= 4 => RecordMap {
-                regions: Some(RecordMap::banks(d.banks)),
-                banks: d.banks,
-                per_page: (d.page_bytes / (layout.word_bits() / 8)).max(1),
-            },
-            _ => RecordMap { regions: None, banks: 1, per_page: 1 },
+            (MemLayout::Records, Memory::Ddr(d)) => {
+                let per_page = d.page_bytes / (layout.word_bits() / 8);
+                if d.banks < 4 || !d.banks.is_power_of_two() || !per_page.is_power_of_two() || per_page >= 1 << 16 {
+                    return RecordMap::IN_ORDER;
+                }
+                let ln = RecordMap::banks(d.banks).map(|(_, n)| n.trailing_zeros());
+                RecordMap { ln, lp: per_page.trailing_zeros(), lb: d.banks.trailing_zeros() }
+            }
+            _ => RecordMap::IN_ORDER,
         }
     }
 
-    /// The banks of each region by [`Dst`] on a DDR of `banks` (at least 4) banks, as
-    /// `(first, count)`: each triangle region `banks / 8` (at least 1), the node regions the
-    /// rest, half each (A's the odd one). Node records are most of the traffic.
+    /// The banks of each region by [`Dst`] on a DDR of `banks` (a power of two, at least 4)
+    /// banks, as `(first, count)`: A's nodes a quarter, each triangle region an eighth (at
+    /// least 1), B's nodes the rest (half from 8 banks on). Node records are most of the
+    /// traffic; on DATE'05's 8 banks 2/4/1/1 tests more DOP pairs per clock than 4/2/1/1 or
+    /// 2/2/2/2 (and powers of two let the RTL compute addresses with shifts) (docs/ARCHITECTURE.md, "Two
+    /// layouts": measured with `scripts/memory-study.py`).
     pub fn banks(banks: u32) -> [(u32, u32); 4] {
-        let t = (banks / 8).max(1);
-        let nb = (banks - 2 * t) / 2;
-        let na = banks - 2 * t - nb;
+        let (na, t) = (banks / 4, (banks / 8).max(1));
+        let nb = banks - na - 2 * t;
         [(0, na), (na, nb), (na + nb, t), (na + nb + t, t)]
     }
 
-    /// The word address of record `i` of region `d`, whose first record is record `base` of
-    /// the image.
-    pub fn addr(&self, d: Dst, base: u32, i: u32) -> u32 {
-        let Some(regions) = self.regions else { return base + i };
-        let (b0, n) = regions[d as usize];
-        let (row, j) = (i / (n * self.per_page), i % (n * self.per_page));
-        (row * self.banks + b0 + j % n) * self.per_page + j / n
+    /// The first word of each region by [`Dst`], written to the base registers: `image`
+    /// ([`image_bases`]) in order, else its first bank's first word.
+    pub fn bases(&self, image: [u32; 4]) -> [u32; 4] {
+        if !self.spread() {
+            return image;
+        }
+        RecordMap::banks(1 << self.lb).map(|(b0, _)| b0 << self.lp)
     }
 
-    /// Whether the regions have banks of their own (else the image is in order, record `base
-    /// + i` at word `base + i`).
+    /// The word address of record `i` of region `d`, whose first word is `base`: the row
+    /// above the bank field, the bank within the region's, the column below; in order
+    /// (all shifts 0) `base + i`.
+    pub fn addr(&self, d: Dst, base: u32, i: u32) -> u32 {
+        let (ln, lp) = (self.ln[d as usize], self.lp);
+        let mask = |l: u32| (1 << l) - 1;
+        base + ((i >> (ln + lp)) << (self.lb + lp)) + ((i & mask(ln)) << lp) + ((i >> ln) & mask(lp))
+    }
+
+    /// Whether the regions have banks of their own.
     pub fn spread(&self) -> bool {
-        self.regions.is_some()
+        self.lb != 0
+    }
+
+    /// The [`MAP`](super::reg::MAP) register's word: bits `3 d + 2 .. 3 d` the log2 of
+    /// region d's banks, 15:12 of a page's records, 19:16 of the banks.
+    pub fn word(&self) -> u32 {
+        self.ln.iter().enumerate().map(|(d, l)| l << (3 * d)).sum::<u32>() | self.lp << 12 | self.lb << 16
+    }
+
+    /// The map of a [`MAP`](super::reg::MAP) word.
+    pub fn of_word(w: u32) -> RecordMap {
+        RecordMap { ln: [0, 1, 2, 3].map(|d| w >> (3 * d) & 7), lp: w >> 12 & 0xf, lb: w >> 16 & 0xf }
     }
 
     /// Word addresses an image of regions of `records` records (by [`Dst`]) spans.
     pub fn extent(&self, records: [u32; 4]) -> u32 {
-        let Some(regions) = self.regions else { return records.iter().sum() };
-        let rows = (0..4).map(|d| records[d].div_ceil(regions[d].1 * self.per_page)).max().unwrap_or(0);
-        rows * self.banks * self.per_page
+        if !self.spread() {
+            return records.iter().sum();
+        }
+        let page_row = |d: usize| 1 << (self.ln[d] + self.lp);
+        let rows = (0..4).map(|d| records[d].div_ceil(page_row(d))).max().unwrap_or(0);
+        rows << (self.lb + self.lp)
     }
 }
-
 
 /// Where a memory word goes: the node words for the DOP unit (A's, B's) and the triangle
 /// words held for TRI_UNIT (A's, B's). Triangle words are asked for first, A's before B's;
@@ -315,29 +350,38 @@ mod tests {
 
     /// k = 24 binary32: a node pair is 1,666 bits (209 bytes), a record 256 bytes, one burst
     /// of WSCG'03 (8 x 256 bits) and of DATE'05 (4 x 756 bits); DATE'05's 8 KiB pages hold
-    /// 32. Its 8 banks: A's nodes in 0..2, B's in 3..5, A's triangles in 6, B's in 7.
+    /// 32. Its 8 banks: A's nodes in 0..1, B's in 2..5, A's triangles in 6, B's in 7.
     #[test]
     fn records_are_dealt_round_their_banks_by_hand() {
         let l = Layout::new(&ChipConfig { layout: MemLayout::Records, ..ChipConfig::default() });
         assert_eq!((l.word_bits(), l.record_bytes()), (2048, [256, 256]));
         assert_eq!(Layout { kind: MemLayout::Words, ..l }.record_bytes(), [105, 93]);
-        assert_eq!(RecordMap::banks(8), [(0, 3), (3, 3), (6, 1), (7, 1)]);
+        assert_eq!(RecordMap::banks(8), [(0, 2), (2, 4), (6, 1), (7, 1)]);
         assert_eq!(RecordMap::banks(4), [(0, 1), (1, 1), (2, 1), (3, 1)]);
+        assert_eq!(RecordMap::banks(16), [(0, 4), (4, 8), (12, 2), (14, 2)]);
         let m = RecordMap::new(&l, &Memory::Ddr(super::super::memory::Ddr::DATE05));
-        // A's records 0, 1, 2, 3 in banks 0, 1, 2, 0 (word a is in bank (a / 32) mod 8)
+        // the regions start at their first banks' first words; the register word
+        assert_eq!(m.bases([9; 4]), [0, 2 * 32, 6 * 32, 7 * 32]);
+        assert_eq!(m.word(), 1 | 2 << 3 | 5 << 12 | 3 << 16);
+        assert_eq!(RecordMap::of_word(m.word()), m);
+        // A's records 0, 1, 2, 3 in banks 0, 1, 0, 1 (word a is in bank (a / 32) mod 8)
         let bank = |a: u32| a / 32 % 8;
         let a: Vec<u32> = (0..4).map(|i| m.addr(Dst::NodeA, 0, i)).collect();
-        assert_eq!(a, [0, 32, 64, 1]);
-        assert_eq!(a.iter().map(|&a| bank(a)).collect::<Vec<_>>(), [0, 1, 2, 0]);
-        // B's record 4 in bank 3 + 4 mod 3 = 4, column 1; record 96 in row 1 (3 banks x 32)
-        assert_eq!(m.addr(Dst::NodeB, 1000, 4), 4 * 32 + 1);
-        assert_eq!(m.addr(Dst::NodeB, 1000, 96), 256 + 3 * 32);
-        assert_eq!(m.addr(Dst::TriB, 1000, 33), 256 + 7 * 32 + 1);
-        // rows of 8 banks x 32: the largest region (A's triangles, 33 records in 1 bank) spans 2
+        assert_eq!(a, [0, 32, 1, 33]);
+        assert_eq!(a.iter().map(|&a| bank(a)).collect::<Vec<_>>(), [0, 1, 0, 1]);
+        // B's record 4 in bank 2 + 4 mod 4 = 2, column 1; record 128 in row 1 (4 banks x 32)
+        assert_eq!(m.addr(Dst::NodeB, 64, 4), 2 * 32 + 1);
+        assert_eq!(m.addr(Dst::NodeB, 64, 128), 256 + 2 * 32);
+        assert_eq!(m.addr(Dst::TriB, 224, 33), 256 + 7 * 32 + 1);
+        // rows of 8 banks x 32: A's triangles (33 records in 1 bank) and A's nodes (96 in 2) span 2
         assert_eq!(m.extent([96, 10, 33, 5]), 2 * 256);
-        // the image in order on an ideal memory and in the words layout
+        // the image in order on an ideal memory, on banks not a power of two, in the words layout
         let ideal = RecordMap::new(&l, &Memory::default());
         assert_eq!((ideal.addr(Dst::NodeB, 1000, 4), ideal.extent([96, 10, 33, 5])), (1004, 144));
+        let six = Memory::Ddr(super::super::memory::Ddr { banks: 6, ..super::super::memory::Ddr::DATE05 });
+        assert_eq!(RecordMap::new(&l, &six), RecordMap::IN_ORDER);
+        assert_eq!(RecordMap::new(&Layout { kind: MemLayout::Words, ..l }, &Memory::Ddr(super::super::memory::Ddr::DATE05)), RecordMap::IN_ORDER);
+        assert_eq!((RecordMap::IN_ORDER.word(), RecordMap::IN_ORDER.bases([1, 2, 3, 4])), (0, [1, 2, 3, 4]));
     }
 
     /// Every record of every region has its own word address.
@@ -346,9 +390,10 @@ mod tests {
         let l = Layout::new(&ChipConfig { layout: MemLayout::Records, ..ChipConfig::default() });
         for d in [super::super::memory::Ddr::DATE05, super::super::memory::Ddr::WSCG03] {
             let m = RecordMap::new(&l, &Memory::Ddr(d));
-            let sizes = [700, 500, 300, 200];
+            assert!(m.spread());
+            let (sizes, base) = ([700, 500, 300, 200], m.bases([0; 4]));
             let mut all: Vec<u32> = (0..4).flat_map(|r| (0..sizes[r]).map(move |i| (r, i))).map(|(r, i)| {
-                m.addr([Dst::NodeA, Dst::NodeB, Dst::TriA, Dst::TriB][r], 0, i)
+                m.addr([Dst::NodeA, Dst::NodeB, Dst::TriA, Dst::TriB][r], base[r], i)
             }).collect();
             assert!(all.iter().all(|&a| a < m.extent(sizes)));
             all.sort_unstable();

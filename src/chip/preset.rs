@@ -26,7 +26,7 @@ pub enum Preset {
     /// The RTL chips' reset values, which the checked-in traces use: the `words` layout, one request outstanding,
     /// issues two clocks apart, a memory word every clock after one clock; 800 MHz. (The
     /// k = 24 binary32 chip also reads `[chip] layout = "records"` with one node record
-    /// held, on this preset's ideal memory: `harness::chip_io::rtl_order`.)
+    /// held, on any memory: `harness::chip_io::rtl_order`.)
     Rtl,
 }
 

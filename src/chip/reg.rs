@@ -27,6 +27,10 @@ pub const PORT: u32 = 0x126;
 /// A's triangle cache: bits 6:0 its lines less one (`ChipConfig::tri_cache`, at most
 /// [`rtl::TRI_CACHE_LINES`] in the RTL). Zero after reset: one line.
 pub const TRI_CACHE: u32 = 0x127;
+/// Where the records lie ([`RecordMap::word`](super::layout::RecordMap::word)): the log2 of
+/// each region's banks, of a page's records and of the banks. Zero after reset: the image
+/// in order, record `i` of a region at its base plus `i`.
+pub const MAP: u32 = 0x128;
 
 /// What a query looks for.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, clap::ValueEnum)]
@@ -68,12 +72,15 @@ pub fn port_word(p: &Params) -> u32 {
 }
 
 /// The register writes that start a query after the setup words: the memory image's
-/// bases (`base`, by [`Dst`](super::layout::Dst): [`image_bases`](super::layout::image_bases)),
-/// the root, the port and `cfg`'s triangle cache if not at their reset values, the mode
-/// (with `cfg`'s layout) last.
-pub fn control_writes(base: [u32; 4], order: Order, mode: Mode, p: &Params, cfg: &ChipConfig) -> Vec<(u32, u32)> {
+/// regions' first words (by [`Dst`](super::layout::Dst), of `image`, the
+/// [`image_bases`](super::layout::image_bases), where `cfg`'s layout puts them on `p`'s
+/// memory: [`RecordMap::bases`](super::layout::RecordMap::bases)), the root, the port, `cfg`'s triangle cache and the
+/// record map if not at their reset values, the mode (with `cfg`'s layout) last.
+pub fn control_writes(image: [u32; 4], order: Order, mode: Mode, p: &Params, cfg: &ChipConfig) -> Vec<(u32, u32)> {
     let tri_cache = cfg.tri_cache;
-    use super::layout::Dst;
+    use super::layout::{Dst, Layout, RecordMap};
+    let map = RecordMap::new(&Layout::new(cfg), &p.memory);
+    let base = map.bases(image);
     let mut w = vec![
         (BASE_NA, base[Dst::NodeA as usize]),
         (BASE_TA, base[Dst::TriA as usize]),
@@ -87,6 +94,9 @@ pub fn control_writes(base: [u32; 4], order: Order, mode: Mode, p: &Params, cfg:
     }
     if tri_cache > 1 {
         w.push((TRI_CACHE, (tri_cache - 1).min(rtl::TRI_CACHE_LINES as u32 - 1)));
+    }
+    if map.spread() {
+        w.push((MAP, map.word()));
     }
     w.push((MODE, mode_word(order, mode, cfg.layout)));
     w

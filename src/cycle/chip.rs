@@ -11,7 +11,7 @@ use super::dop_unit::{DopResult, DopUnit};
 use super::memory_port::MemPort;
 use super::tri_unit::{TriOut, TriUnit};
 use crate::chip::config::ChipConfig;
-use crate::chip::layout::{Dst, Entry, Layout, Pair, RecordMap};
+use crate::chip::layout::{Dst, Entry, Pair, RecordMap};
 use crate::chip::params::Params;
 use crate::chip::ports::{ChipIn, ChipOut, Clocked};
 use crate::chip::reg::{self, Order};
@@ -69,7 +69,7 @@ pub struct Chip<'a> {
     first: bool,
     root: u32,
     base: [u32; 4],
-    /// Where the image's records lie in memory.
+    /// Where the image's records lie in memory (register `MAP`).
     map: RecordMap,
     /// The record of each node of A and B, and of each triangle.
     records: [&'a [u32]; 2],
@@ -167,7 +167,7 @@ impl<'a> Chip<'a> {
             first: false,
             root: 0,
             base: [0; 4],
-            map: RecordMap::new(&Layout::new(cfg), &p.memory),
+            map: RecordMap::IN_ORDER,
             records: [&a.records, &b.records],
             ids: [&a.ids, &b.ids],
             tri_records: [&a.tri_records, &b.tri_records],
@@ -486,6 +486,7 @@ impl Clocked for Chip<'_> {
                     // registers in the order NA, NB, TA, TB = Dst order
                     self.base[(i.host_addr - reg::BASE_NA) as usize] = i.host_data & 0xff_ffff;
                 }
+                reg::MAP => self.map = RecordMap::of_word(i.host_data),
                 _ => {} // the DOP unit's and TRI_UNIT's setup: the golden HostSetup
             }
         }

@@ -12,6 +12,7 @@
 use super::tri_io::{tri_unit_setup_words, LeafIn};
 use crate::chip::config::ChipConfig;
 use crate::chip::config::MemLayout;
+use crate::chip::layout::{Dst, RecordMap};
 use crate::chip::memory::{MemTiming, Memory};
 use crate::chip::params::Params;
 use crate::chip::ports::{ChipIn, ChipOut, Clocked};
@@ -107,19 +108,37 @@ fn put_node_word(w: &mut Word, at: usize, kind: ChipKind, layout: MemLayout, obj
     put(w, at + 33 + k * w_, 32, f1 as u64);
 }
 
-/// An object's node records, then its triangle records, in `layout` (`chip::layout`): a
+/// An object's node records and its triangle records, in `layout` (`chip::layout`): a
 /// node record holds its nodes' words in their slots (`records`: slot 1 from bit
 /// `node_bits`), a triangle record its triangle's word.
-fn object_words(kind: ChipKind, layout: MemLayout, obj: &ObjectImage) -> Vec<Word> {
+fn object_words(kind: ChipKind, layout: MemLayout, obj: &ObjectImage) -> [Vec<Word>; 2] {
     let f = kind.config().format;
     let node_bits = crate::chip::layout::node_bits(kind.config().k, f.dop.width() as usize);
-    let mut words = vec![vec![0; kind.word_bits().div_ceil(64)]; obj.node_records() as usize + obj.tris.len()];
+    let mut nodes = vec![vec![0; kind.word_bits().div_ceil(64)]; obj.node_records() as usize];
     for n in 0..obj.tree.len() as u32 {
         let slot = if layout == MemLayout::Records { obj.ids[n as usize] as usize & 1 } else { 0 };
-        put_node_word(&mut words[obj.record(n) as usize], slot * node_bits, kind, layout, obj, n);
+        put_node_word(&mut nodes[obj.record(n) as usize], slot * node_bits, kind, layout, obj, n);
     }
+    let mut tris = vec![vec![]; obj.tris.len()];
     for (t, tri) in obj.tris.iter().enumerate() {
-        words[(obj.node_records() + obj.tri_record(t as u32)) as usize] = tri_word(kind, &LeafIn::of(f.tri, tri));
+        tris[obj.tri_record(t as u32) as usize] = tri_word(kind, &LeafIn::of(f.tri, tri));
+    }
+    [nodes, tris]
+}
+
+/// The memory image of `a` and `b` for `cfg` on `memory`: every record where
+/// [`RecordMap`] puts it, the words between zero.
+fn image_words(kind: ChipKind, a: &ObjectImage, b: &ObjectImage, cfg: &ChipConfig, memory: &Memory) -> Vec<Word> {
+    let map = RecordMap::new(&crate::chip::layout::Layout::new(cfg), memory);
+    let [na, ta] = object_words(kind, cfg.layout, a);
+    let [nb, tb] = object_words(kind, cfg.layout, b);
+    let regions = [na, nb, ta, tb];
+    let base = map.bases(crate::golden::memory::image_bases(a, b));
+    let mut words = vec![vec![0; kind.word_bits().div_ceil(64)]; map.extent(regions.each_ref().map(|r| r.len() as u32)) as usize];
+    for (d, region) in [Dst::NodeA, Dst::NodeB, Dst::TriA, Dst::TriB].into_iter().zip(regions) {
+        for (i, w) in (0..).zip(region) {
+            words[map.addr(d, base[d as usize], i) as usize] = w;
+        }
     }
     words
 }
@@ -163,10 +182,7 @@ impl QueryImage {
                 ));
             }
         }
-        let mut memory = vec![];
-        for o in [a, b] {
-            memory.extend(object_words(kind, cfg.layout, o));
-        }
+        let memory = image_words(kind, a, b, cfg, &p.memory);
         if memory.len() > 1 << 24 {
             return Err(format!("memory image of {} words; the RTL chip addresses 2^24", memory.len()));
         }
@@ -555,7 +571,7 @@ pub fn rtl_order(cfg: &ChipConfig, traversal: Traversal, p: &Params) -> Result<(
             built.join(" or "), cfg.k, cfg.format, cfg.dop_rounding, cfg.tri_rounding
         ));
     };
-    rtl_layout(kind, cfg, p)?;
+    rtl_layout(kind, cfg)?;
     let lines = chips::TRI_CACHE_LINES;
     if cfg.tri_cache > lines as u32 {
         return Err(format!("the RTL chips' triangle cache has {lines} lines; this scene asks for tri_cache = {}: set [chip] tri_cache to at most {lines}", cfg.tri_cache));
@@ -588,18 +604,16 @@ pub fn rtl_order(cfg: &ChipConfig, traversal: Traversal, p: &Params) -> Result<(
     }
 }
 
-/// Whether `kind` reads `cfg`'s memory layout on `p`'s memory: every chip the `words`
-/// layout, the chips of [`ChipKind::records`] also `records`, all with one node record held
-/// per object and the image in order (no DDR of 4 banks or more, on which the records'
-/// regions would have banks of their own, [`RecordMap`](crate::chip::layout::RecordMap)).
-fn rtl_layout(kind: ChipKind, cfg: &ChipConfig, p: &Params) -> Result<(), String> {
+/// Whether `kind` reads `cfg`'s memory layout: every chip the `words` layout, the chips of
+/// [`ChipKind::records`] also `records` (on any memory: the port computes
+/// [`RecordMap`]'s addresses), all with one node record held per object.
+fn rtl_layout(kind: ChipKind, cfg: &ChipConfig) -> Result<(), String> {
     let records = cfg.layout == MemLayout::Records;
     let records_chips: Vec<&str> = ChipKind::ALL.iter().filter(|k| k.records()).map(|k| k.name()).collect();
-    let spread = crate::chip::layout::RecordMap::new(&crate::chip::layout::Layout::new(cfg), &p.memory).spread();
-    if cfg.node_cache != 1 || (records && (!kind.records() || spread)) {
+    if cfg.node_cache != 1 || (records && !kind.records()) {
         return Err(format!(
-            "the RTL chips hold one node record per object and read the `words` layout; {} also `records`, with the image in order (an ideal memory or a DDR of fewer than 4 banks); this scene has {}, layout = {:?}, node_cache = {}, {}: set [chip] node_cache = 1, and layout = \"words\" (preset = \"rtl\") or an ideal [memory] on {}",
-            records_chips.join(", "), kind.name(), cfg.layout, cfg.node_cache, if spread { "a DDR of 4 banks or more" } else { "the image in order" }, records_chips.join(", ")
+            "the RTL chips hold one node record per object and read the `words` layout; {} also `records`; this scene has {}, layout = {:?}, node_cache = {}: set [chip] node_cache = 1, and layout = \"words\" (preset = \"rtl\") or the chip {}",
+            records_chips.join(", "), kind.name(), cfg.layout, cfg.node_cache, records_chips.join(", ")
         ));
     }
     Ok(())

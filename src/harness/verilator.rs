@@ -111,9 +111,9 @@ fn root() -> &'static Path {
     Path::new(env!("CARGO_MANIFEST_DIR"))
 }
 
-/// Refuses a chip whose memory image does not fit the testbench's memory.
-pub fn check_size(chip: &crate::query::Chip) -> Result<(), String> {
-    let words = chip.image_words() as usize;
+/// Refuses a chip whose memory image on `memory` does not fit the testbench's memory.
+pub fn check_size(chip: &crate::query::Chip, memory: &Memory) -> Result<(), String> {
+    let words = chip.image_span(memory) as usize;
     if words > TB_MEMORY_WORDS {
         return Err(format!(
             "the Verilog cross-check's testbench memory holds {TB_MEMORY_WORDS} words and these meshes need {words} (DOP nodes and triangles of both): use meshes of at most a few thousand triangles, or cross-check on the cycle model's level only"

@@ -52,7 +52,10 @@ macro_rules! chip {
         ///   request, no prefetch,
         ///   issues two clocks apart, credit 16; `0x127`: A's triangle cache, bits 6:0 its
         ///   lines less one (a power of two up to
-        ///   [`TRI_CACHE_LINES`](crate::chip::rtl::TRI_CACHE_LINES); reset: 0, one line).
+        ///   [`TRI_CACHE_LINES`](crate::chip::rtl::TRI_CACHE_LINES); reset: 0, one line);
+        ///   `0x128`: where the records lie, bits 19:0
+        ///   ([`RecordMap::word`](crate::chip::layout::RecordMap::word); reset: 0, the image
+        ///   in order).
         /// * `start` (in): begins a query with the registers as written (ignored while
         ///   `busy`); `busy`, `done` (high from the query's end to the next start),
         ///   `overflow` (the pair queue was full when a child entry came: the query ended
@@ -105,6 +108,7 @@ macro_rules! chip {
             base_nb: DFF<Bits<24>>,
             base_ta: DFF<Bits<24>>,
             base_tb: DFF<Bits<24>>,
+            map: DFF<Bits<20>>,
             // ---- query state
             run: DFF<Bit>,
             done_r: DFF<Bit>,
@@ -198,6 +202,7 @@ macro_rules! chip {
                     base_nb: Default::default(),
                     base_ta: Default::default(),
                     base_tb: Default::default(),
+                    map: Default::default(),
                     run: Default::default(),
                     done_r: Default::default(),
                     push_root: Default::default(),
@@ -312,7 +317,7 @@ macro_rules! chip {
         impl<const N: usize, const NP1: usize, const NM1: usize> Logic for CollisionChip<N, NP1, NM1> {
             #[hdl_gen]
             fn update(&mut self) {
-                dff_setup!(self, clock, mode_lifo, mode_first, mode_rec, root, base_na, base_nb, base_ta, base_tb);
+                dff_setup!(self, clock, mode_lifo, mode_first, mode_rec, root, base_na, base_nb, base_ta, base_tb, map);
                 dff_setup!(self, clock, port_pf, port_out, port_one, port_credit, run, done_r, push_root, stop);
                 dff_setup!(self, clock, leaf_count, leaf_valid, leaf_tag);
                 dff_setup!(self, clock, tc_mask, tb_ok, tb_id, tb_word);
@@ -354,6 +359,9 @@ macro_rules! chip {
                     }
                     if self.host_addr.val() == 0x127 {
                         self.tc_mask.d.next = self.host_data.val().get_bits::<7>(0);
+                    }
+                    if self.host_addr.val() == 0x128 {
+                        self.map.d.next = self.host_data.val().get_bits::<20>(0);
                     }
                 }
                 self.pf.next = bit_cast::<5, 4>(self.port_pf.q.val());
@@ -408,6 +416,7 @@ macro_rules! chip {
                 self.mem_port.base_nb.next = self.base_nb.q.val();
                 self.mem_port.base_ta.next = self.base_ta.q.val();
                 self.mem_port.base_tb.next = self.base_tb.q.val();
+                self.mem_port.map.next = self.map.q.val();
                 self.mem_port.pop.next = self.d_cntr.pop.val();
                 self.mem_port.pop_entry.next = self.d_cntr.pop_entry.val();
                 self.mem_port.pop_fetch.next = self.d_cntr.pop_fetch.val();

@@ -21,9 +21,12 @@ macro_rules! memory_port {
         ///   low) only the current pair's words are asked for.
         /// * Requests, by priority: A's triangle word (`need_ta`, unless one is outstanding),
         ///   B's (`need_tb`), the node word at the head of the ask list; while fewer than
-        ///   `port_out + 1` are outstanding and `go`. Addresses: the destination's base plus
-        ///   the record: a node's id (`records`: `id >> 1`), the triangle's `leaf_tag` field
-        ///   (the chip puts the records there in the `records` layout). A request is taken (`accept`) with `mem_req_ready`; its destination
+        ///   `port_out + 1` are outstanding and `go`. Addresses: of the record (a node's id,
+        ///   `records`: `id >> 1`; the triangle's `leaf_tag` field, where the chip puts the
+        ///   records in the `records` layout) in the destination's region, whose first word is
+        ///   its base, placed by `map` (register [`MAP`](crate::chip::reg::MAP), shifts and
+        ///   masks: [`RecordMap::addr`](crate::chip::layout::RecordMap::addr); 0: base plus
+        ///   record). A request is taken (`accept`) with `mem_req_ready`; its destination
         ///   `req_dst` (0 A's node, 1 B's node, 2 A's triangle, 3 B's triangle) joins the tag
         ///   ring, a triangle id its pending register (`ta_req`, `tb_req`).
         /// * A response (`mem_resp_valid`, `resp` while a request is outstanding) belongs to
@@ -50,6 +53,7 @@ macro_rules! memory_port {
             pub base_nb: Signal<In, Bits<24>>,
             pub base_ta: Signal<In, Bits<24>>,
             pub base_tb: Signal<In, Bits<24>>,
+            pub map: Signal<In, Bits<20>>,
             pub pop: Signal<In, Bit>,
             pub pop_entry: Signal<In, Bits<67>>,
             pub pop_fetch: Signal<In, Bits<4>>,
@@ -129,6 +133,12 @@ macro_rules! memory_port {
             req_id: Signal<Local, Bits<16>>,
             ask_rec: Signal<Local, Bits<16>>,
             req_addr: Signal<Local, Bits<24>>,
+            req_base: Signal<Local, Bits<24>>,
+            req_rec: Signal<Local, Bits<24>>,
+            map_ln: Signal<Local, Bits<5>>,
+            map_lp: Signal<Local, Bits<5>>,
+            map_lb: Signal<Local, Bits<5>>,
+            c_one24: Constant<Bits<24>>,
             c_one16: Constant<Bits<16>>,
             c_one32: Constant<Bits<32>>,
         }
@@ -147,6 +157,7 @@ macro_rules! memory_port {
                     base_nb: Default::default(),
                     base_ta: Default::default(),
                     base_tb: Default::default(),
+                    map: Default::default(),
                     pop: Default::default(),
                     pop_entry: Default::default(),
                     pop_fetch: Default::default(),
@@ -220,6 +231,12 @@ macro_rules! memory_port {
                     req_id: Default::default(),
                     ask_rec: Default::default(),
                     req_addr: Default::default(),
+                    req_base: Default::default(),
+                    req_rec: Default::default(),
+                    map_ln: Default::default(),
+                    map_lp: Default::default(),
+                    map_lb: Default::default(),
+                    c_one24: Constant::new(1.into()),
                     c_one16: Constant::new(1.into()),
                     c_one32: Constant::new(1.into()),
                 }
@@ -285,23 +302,45 @@ macro_rules! memory_port {
                 if self.records.val() {
                     self.ask_rec.next = bit_cast::<16, 15>(self.ask_front.val().get_bits::<15>(1));
                 }
-                self.req_addr.next = self.base_na.val() + bit_cast::<24, 16>(self.ask_rec.val());
+                self.req_base.next = self.base_na.val();
                 if self.ask_front.val().get_bit(16) {
-                    self.req_addr.next = self.base_nb.val() + bit_cast::<24, 16>(self.ask_rec.val());
+                    self.req_base.next = self.base_nb.val();
                 }
+                self.req_rec.next = bit_cast::<24, 16>(self.ask_rec.val());
                 self.req.next = self.port_free.val() & self.ask_ok.val();
                 if self.need_tb.val() & !self.tb_pend.q.val() {
                     self.req_dst.next = 3.into();
                     self.req_id.next = self.leaf_tag.val().get_bits::<16>(16);
-                    self.req_addr.next = self.base_tb.val() + bit_cast::<24, 16>(self.leaf_tag.val().get_bits::<16>(16));
+                    self.req_base.next = self.base_tb.val();
+                    self.req_rec.next = bit_cast::<24, 16>(self.leaf_tag.val().get_bits::<16>(16));
                     self.req.next = self.port_free.val();
                 }
                 if self.need_ta.val() & !self.ta_pend.q.val() {
                     self.req_dst.next = 2.into();
                     self.req_id.next = self.leaf_tag.val().get_bits::<16>(0);
-                    self.req_addr.next = self.base_ta.val() + bit_cast::<24, 16>(self.leaf_tag.val().get_bits::<16>(0));
+                    self.req_base.next = self.base_ta.val();
+                    self.req_rec.next = bit_cast::<24, 16>(self.leaf_tag.val().get_bits::<16>(0));
                     self.req.next = self.port_free.val();
                 }
+                // the record's word: row above the bank field, the bank within the
+                // region's, the column below (`map`: the log2 of the region's banks, by
+                // destination, of a page's records, of the banks)
+                self.map_ln.next = bit_cast::<5, 3>(self.map.val().get_bits::<3>(0));
+                if self.req_dst.val() == 1 {
+                    self.map_ln.next = bit_cast::<5, 3>(self.map.val().get_bits::<3>(3));
+                }
+                if self.req_dst.val() == 2 {
+                    self.map_ln.next = bit_cast::<5, 3>(self.map.val().get_bits::<3>(6));
+                }
+                if self.req_dst.val() == 3 {
+                    self.map_ln.next = bit_cast::<5, 3>(self.map.val().get_bits::<3>(9));
+                }
+                self.map_lp.next = bit_cast::<5, 4>(self.map.val().get_bits::<4>(12));
+                self.map_lb.next = bit_cast::<5, 4>(self.map.val().get_bits::<4>(16));
+                self.req_addr.next = self.req_base.val()
+                    + ((self.req_rec.val() >> (self.map_ln.val() + self.map_lp.val())) << (self.map_lb.val() + self.map_lp.val()))
+                    + ((self.req_rec.val() & ((self.c_one24.val() << self.map_ln.val()) - 1)) << self.map_lp.val())
+                    + ((self.req_rec.val() >> self.map_ln.val()) & ((self.c_one24.val() << self.map_lp.val()) - 1));
                 self.mem_req_valid.next = self.req.val();
                 self.mem_req_addr.next = self.req_addr.val();
                 self.accept.next = self.req.val() & self.mem_req_ready.val();

@@ -96,7 +96,7 @@ impl<'s> Prepared<'s> {
         }
         let verilog = match plan.cross_check {
             Some(CrossCheck::Verilog) => {
-                verilator::check_size(&chip).map_err(named)?;
+                verilator::check_size(&chip, &scene.params.memory).map_err(named)?;
                 Some(verilator::chip_binary(rtl.expect("checked above").0).map_err(named)?)
             }
             _ => None,
