@@ -68,6 +68,9 @@ def row(mesh, name, records, bus_clocks):
     c = [r["cycles"] for r in records if r.get("cycles") and r["cycles"]["dop_tests"] > 1]
     if not c:
         return f"| {mesh} | {name} | no overlapping pose |"
+    if any("tri_fetches_a" not in x.get("stats", {}) for x in c):
+        sys.exit("memory-study.py: this study reads DATE'05's chip's counters, and the scenes ran another "
+                 "chip (the wscg03 preset selects WSCG'03's): add architecture = \"date05\" to --chip")
     clocks = sum(x["cycles"] for x in c)
     st = lambda k: sum(x["stats"][k] for x in c)
     mem = lambda k: sum(x["memory"][k] for x in c)
