@@ -112,6 +112,10 @@ pub struct Chip<'a> {
     // ---- counters: DOP tests, triangle tests, node fetches, triangle fetches
     cnt: [u64; 4],
     now: u64,
+    /// The cycle's logic as far as it depends on the registers alone ([`logic`](Self::logic)),
+    /// computed once per state change: the driver asks for the outputs, whether the chip
+    /// waits and then clocks it, all from one evaluation.
+    logic: Comb,
     /// Where the clocks went, if counted (a scene that asks for no cycles leaves them out).
     pub stats: Option<Stats>,
 }
@@ -125,7 +129,9 @@ struct Ahead {
     fetch: [bool; 2],
 }
 
-/// The cycle's logic: functions of the registers and the inputs.
+/// The cycle's logic: functions of the registers and the inputs (of the inputs only
+/// `accept` and `give`).
+#[derive(Clone, Copy, Default)]
 struct Comb {
     halt: bool,
     cur: Option<Ahead>,
@@ -146,6 +152,18 @@ struct Comb {
     finish: bool,
 }
 
+impl Comb {
+    /// The memory takes the request.
+    fn accepts(&self, i: &ChipIn) -> bool {
+        self.req.is_some() && i.mem_req_ready
+    }
+
+    /// TRI_UNIT gives out its verdict: the host reads it, or it is not shown (a separate pair).
+    fn gives(&self, i: &ChipIn) -> bool {
+        self.out.is_some_and(|o| i.res_ready || !o.kept())
+    }
+}
+
 impl<'a> Chip<'a> {
     /// A chip after reset (its host registers zero: write [`control_writes`](crate::chip::reg::control_writes) before
     /// `start`); `counters`: count [`Stats`].
@@ -161,7 +179,7 @@ impl<'a> Chip<'a> {
         let dop_values = dop_unit::TransformCache::new(cfg.format.dop, cfg.dop_rounding.op(), setup, b.tree.len());
         let tri_values = tri_unit::TriUnit::new(cfg.format.tri, cfg.tri_rounding, setup, a.tris.len(), b.tris.len());
         let queue = QueueModel::with_capacity(p.queue_entries as usize);
-        Ok(Chip {
+        let mut chip = Chip {
             p,
             order: Order::Fifo,
             first: false,
@@ -193,11 +211,23 @@ impl<'a> Chip<'a> {
             tri: TriUnit::new(a, b, tri_values, p.tri_latency, p.tri_fifo),
             cnt: [0; 4],
             now: 0,
+            logic: Comb::default(),
             stats: counters.then(Stats::default),
-        })
+        };
+        chip.logic = chip.logic();
+        Ok(chip)
     }
 
+    /// The cycle's logic with the inputs `i`.
     fn comb(&self, i: &ChipIn) -> Comb {
+        let mut c = self.logic;
+        (c.accept, c.give) = (c.accepts(i), c.gives(i));
+        c
+    }
+
+    /// The cycle's logic from the registers (`accept` and `give` low: [`comb`](Self::comb)
+    /// adds the inputs).
+    fn logic(&self) -> Comb {
         let run = self.run;
         let halt = self.stop || self.q.overflow;
         let cur = self.ahead.front().copied();
@@ -224,7 +254,6 @@ impl<'a> Chip<'a> {
             .filter(|w| go && (self.p.prefetch > 0 || cur.is_some_and(|c| c.seq == w.2)) && self.port.free(w.0))
             .map(|w| (w.0, w.1));
         let req = tri_req.or(node_req);
-        let accept = req.is_some() && i.mem_req_ready;
         let spaced = self.last_issue.is_none_or(|t| self.now - t >= self.p.issue_spacing as u64);
         let credit = self.dop.in_flight() + self.leaf_fifo.len();
         let issue = go && cur.is_some() && !need[0] && !need[1] && spaced && credit < self.p.credit as usize;
@@ -248,7 +277,6 @@ impl<'a> Chip<'a> {
         let leaf_out =
             self.leaf_fifo.out(self.now).is_some() && (halt || (run && (!self.leaf_valid || tri_take)));
         let out = self.tri.out(self.now).copied();
-        let give = out.is_some_and(|o| i.res_ready || !o.kept());
         let halt_idle = self.dop.in_flight() == 0
             && self.pend.is_empty()
             && self.port.is_empty()
@@ -262,7 +290,7 @@ impl<'a> Chip<'a> {
             cur,
             need,
             req,
-            accept,
+            accept: false,
             issue,
             dop_out,
             leaf_in,
@@ -273,7 +301,7 @@ impl<'a> Chip<'a> {
             tri_take,
             leaf_out,
             out,
-            give,
+            give: false,
             finish,
         }
     }
@@ -288,8 +316,9 @@ impl<'a> Chip<'a> {
         [self.records[0][p.a as usize], self.records[1][p.b as usize]]
     }
 
-    /// Books `n` cycles with the logic `c` (the same in each) to [`Stats`].
-    fn tally(&mut self, c: &Comb, i: &ChipIn, n: u64) {
+    /// Books `n` cycles with the current logic (the same in each) and inputs `i` to [`Stats`].
+    fn tally(&mut self, i: &ChipIn, n: u64) {
+        let c = &self.logic;
         let spacing = self.last_issue.is_some_and(|t| self.now - t < self.p.issue_spacing as u64);
         let Some(s) = &mut self.stats else { return };
         s.cycles += n;
@@ -392,20 +421,20 @@ impl<'a> Chip<'a> {
     /// responses, `mem_req_ready` and `res_ready` are the driver's to add. Lets the driver
     /// skip a wait of any length in one step, the trace exact.
     pub fn quiet_until(&self, i: &ChipIn) -> Option<u64> {
-        let c = self.comb(i);
+        let c = &self.logic;
         let acts = !self.run
             || self.push_root
             || i.start
             || i.host_we
             || i.mem_resp.is_some()
-            || c.accept
+            || c.accepts(i)
             || c.issue
             || c.pop
             || c.child_push
             || c.dop_out.is_some()
             || c.tri_take
             || c.leaf_out
-            || c.give
+            || c.gives(i)
             || c.finish
             // a first hit shown halts the traversal (a register), read or not
             || (self.run && self.first && !self.stop && c.out.is_some_and(|o| o.sure_hit()));
@@ -424,16 +453,15 @@ impl<'a> Chip<'a> {
     /// Skips `n` clocks before [`quiet_until`](Self::quiet_until)'s cycle with the inputs
     /// `i`: the same state as `n` steps.
     pub fn skip(&mut self, n: u64, i: &ChipIn) {
-        let c = self.comb(i);
-        self.tally(&c, i, n);
+        self.tally(i, n);
         self.now += n;
+        self.logic = self.logic();
     }
 }
 
 impl Clocked for Chip<'_> {
     fn outputs(&self) -> ChipOut {
-        let i = ChipIn::default();
-        let c = self.comb(&i);
+        let c = &self.logic;
         let res = c.out.filter(|o| o.kept());
         ChipOut {
             busy: self.run,
@@ -456,17 +484,17 @@ impl Clocked for Chip<'_> {
         let c = self.comb(i);
         let now = self.now;
         if self.run {
-            self.tally(&c, i, 1);
+            self.tally(i, 1);
         }
         // the queue's push: the root entry, else a pending child entry, else a new one
         // (FIFO pushes a result's first entry first, LIFO its second, so that the first
         // is popped first)
         let (ch, n) = c.new_children;
-        let mut order = ch[..n].to_vec();
         if self.order == Order::Lifo {
-            order.reverse();
+            self.pend.extend(ch[..n].iter().rev());
+        } else {
+            self.pend.extend(&ch[..n]);
         }
-        self.pend.extend(order);
         let push = if self.push_root {
             Some(Entry { pairs: [Pair { a: self.root & 0xffff, b: self.root >> 16, flip: false }, Pair::default()], len: 1 })
         } else {
@@ -585,6 +613,7 @@ impl Clocked for Chip<'_> {
             self.last_issue = None;
         }
         self.now += 1;
+        self.logic = self.logic();
         probed
     }
 }
