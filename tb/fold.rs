@@ -178,3 +178,25 @@ fn fold16_broken_mux_is_caught() {
     let bad = mismatches(plan, few_cases(Format::BINARY32, Rounding::NearestEven));
     assert!(!bad.is_empty(), "an operand off by one register went unnoticed");
 }
+
+/// Not a check: writes the folded TRI_UNIT's Verilog at every even II of issue 33 for
+/// synthesis (the time-against-area rows of docs/ARCHITECTURE.md, "Folded TRI_UNIT"; only
+/// ii = 16 is exported): `cargo test --release --test fold -- --ignored
+/// tri_unit_fold_verilog`, then `nice scripts/synth.sh target/fold-area/*.v`.
+#[test]
+#[ignore]
+fn tri_unit_fold_verilog() {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("target/fold-area");
+    std::fs::create_dir_all(&dir).unwrap();
+    for ii in [2, 4, 8, 16, 32] {
+        let v = std::thread::Builder::new()
+            .stack_size(1 << 30)
+            .spawn(move || b32::verilog_tri_unit_fold(ii, Rounding::NearestEven).unwrap())
+            .unwrap()
+            .join()
+            .unwrap();
+        let p = dir.join(format!("tri_unit_fold{ii}_b32_rne.v"));
+        std::fs::write(&p, collision_chip::harness::verilog::dedup_modules(&v)).unwrap();
+        eprintln!("wrote {}", p.display());
+    }
+}

@@ -227,7 +227,10 @@ fn tcheck_wrong_rounding_is_caught() {
 
 /// TRI_UNIT's ports as the driver sees them.
 trait TriUnitSim: Block {
-    const LATENCY: usize;
+    /// Pair in to result out, with a reader always ready.
+    fn latency(&self) -> usize;
+    /// Clocks between pairs taken (1: one per clock).
+    fn interval(&self) -> usize;
     fn set_load(&mut self, en: bool, addr: u64, data: u64);
     fn set_pair(&mut self, a: &LeafIn, b: &LeafIn, tag: u32, valid: bool);
     fn set_out_ready(&mut self, ready: bool);
@@ -238,9 +241,16 @@ trait TriUnitSim: Block {
 }
 
 macro_rules! impl_tri_unit {
-    ($t:ty) => {
+    ($t:ty, $latency:expr, $interval:expr) => {
         impl TriUnitSim for $t {
-            const LATENCY: usize = <$t>::LATENCY;
+            fn latency(&self) -> usize {
+                let f: fn(&$t) -> usize = $latency;
+                f(self)
+            }
+            fn interval(&self) -> usize {
+                let f: fn(&$t) -> usize = $interval;
+                f(self)
+            }
             fn set_load(&mut self, en: bool, addr: u64, data: u64) {
                 self.load_en.next = en;
                 self.load_addr.next = addr.into();
@@ -291,8 +301,9 @@ macro_rules! impl_tri_unit {
     };
 }
 
-impl_tri_unit!(b32::TriUnit);
-impl_tri_unit!(e8m15::TriUnit);
+impl_tri_unit!(b32::TriUnit, |_| b32::TriUnit::LATENCY, |_| 1);
+impl_tri_unit!(e8m15::TriUnit, |_| e8m15::TriUnit::LATENCY, |_| 1);
+impl_tri_unit!(b32::TriUnitFold, b32::TriUnitFold::latency, b32::TriUnitFold::interval);
 
 /// TRI_UNIT work: setup writes and pairs in the order the host issues them (the frame
 /// registers are read when a pair is taken, so a new pose's setup may follow pairs still
@@ -310,11 +321,13 @@ enum Step {
 }
 
 /// What the driver saw: results `(tag, verdict)` in output order, the clocks from taking
-/// the first pair to reading the first result, whether `in_ready` was ever low.
+/// the first pair to reading the first result, whether `in_ready` was ever low, the cycles
+/// pairs were taken in.
 struct TriRun {
     results: Vec<(u32, TriResult)>,
     first_latency: Option<usize>,
     stalled: bool,
+    taken: Vec<usize>,
 }
 
 /// Issues the steps (a setup write per clock with `in_valid` low; a pair with `in_valid`
@@ -322,8 +335,8 @@ struct TriRun {
 /// handshakes are sampled before each rising edge.
 fn drive<U: TriUnitSim>(uut: &mut U, job: &TriJob, reader: impl Fn(usize) -> bool) -> TriRun {
     let blank = LeafIn::default();
-    let (mut step, mut tag, mut results, mut first_in, mut first_latency, mut stalled) = (0, 0u32, vec![], None, None, false);
-    let limit = job.steps.len() * 4 + 4 * U::LATENCY + 1000;
+    let (mut step, mut tag, mut results, mut first_in, mut first_latency, mut stalled, mut taken) = (0, 0u32, vec![], None, None, false, vec![]);
+    let limit = job.steps.len() * 4 * uut.interval() + 4 * uut.latency() + 1000;
     for cycle in 0..limit {
         if results.len() == job.golden.len() && step == job.steps.len() {
             break;
@@ -341,6 +354,7 @@ fn drive<U: TriUnitSim>(uut: &mut U, job: &TriJob, reader: impl Fn(usize) -> boo
             Some(Step::Load(..)) => step += 1,
             Some(Step::Pair(..)) if uut.in_ready() => {
                 first_in.get_or_insert(cycle);
+                taken.push(cycle);
                 step += 1;
                 tag += 1;
             }
@@ -357,7 +371,7 @@ fn drive<U: TriUnitSim>(uut: &mut U, job: &TriJob, reader: impl Fn(usize) -> boo
             settle(uut);
         }
     }
-    TriRun { results, first_latency, stalled }
+    TriRun { results, first_latency, stalled, taken }
 }
 
 /// The host's steps for triangle pairs: a setup write for every frame register whose value
@@ -381,29 +395,41 @@ fn tri_job(f: Format, triples: &[(TriWord, TriWord, collision_chip::golden::host
 /// number of pairs.
 fn tri_unit_mismatches(f: Format, job: TriJob) -> (Vec<String>, usize) {
     big_stack(move || {
-        let run = if f == Format::BINARY32 {
-            drive(&mut b32::tri_unit_top(Rounding::NearestEven), &job, |_| true)
+        let bad = if f == Format::BINARY32 {
+            run_mismatches(&mut b32::tri_unit_top(Rounding::NearestEven), &job)
         } else {
-            drive(&mut e8m15::tri_unit_top(Rounding::NearestEven), &job, |_| true)
+            run_mismatches(&mut e8m15::tri_unit_top(Rounding::NearestEven), &job)
         };
-        let mut bad = vec![];
-        let want: Vec<(u32, TriResult)> = job.golden.iter().enumerate().map(|(i, &r)| (i as u32, r)).collect();
-        for (i, w) in want.iter().enumerate() {
-            if run.results.get(i) != Some(w) {
-                bad.push(format!("pair {i}: golden {w:?}, rtl {:?}", run.results.get(i)));
-            }
-        }
-        if run.results.len() != want.len() {
-            bad.push(format!("{} results for {} pairs", run.results.len(), want.len()));
-        }
-        if run.first_latency != Some(b32::TriUnit::LATENCY) {
-            bad.push(format!("first result {:?} clocks after the first pair, not {}", run.first_latency, b32::TriUnit::LATENCY));
-        }
-        if run.stalled {
-            bad.push("in_ready fell with a reader always ready".into());
-        }
-        (bad, want.len())
+        (bad, job.golden.len())
     })
+}
+
+/// Runs `job` through `uut` with a reader always ready: the mismatches against the golden
+/// verdicts, the first result's latency, and the rhythm (pairs taken `interval` clocks apart or
+/// a multiple of it; one per clock: `in_ready` never low).
+fn run_mismatches<U: TriUnitSim>(uut: &mut U, job: &TriJob) -> Vec<String> {
+    let run = drive(uut, job, |_| true);
+    let mut bad = vec![];
+    let want: Vec<(u32, TriResult)> = job.golden.iter().enumerate().map(|(i, &r)| (i as u32, r)).collect();
+    for (i, w) in want.iter().enumerate() {
+        if run.results.get(i) != Some(w) {
+            bad.push(format!("pair {i}: golden {w:?}, rtl {:?}", run.results.get(i)));
+        }
+    }
+    if run.results.len() != want.len() {
+        bad.push(format!("{} results for {} pairs", run.results.len(), want.len()));
+    }
+    if run.first_latency != Some(uut.latency()) {
+        bad.push(format!("first result {:?} clocks after the first pair, not {}", run.first_latency, uut.latency()));
+    }
+    let ii = uut.interval();
+    if ii == 1 && run.stalled {
+        bad.push("in_ready fell with a reader always ready".into());
+    }
+    if let Some(w) = run.taken.windows(2).find(|w| (w[1] - w[0]) % ii != 0) {
+        bad.push(format!("pairs taken at cycles {} and {}, not a multiple of {ii} apart", w[0], w[1]));
+    }
+    bad
 }
 
 /// Hard cases that reach every kind of TRI_UNIT result: the first catalogue case that adds a
@@ -446,6 +472,25 @@ fn tri_unit_e8m15() {
     let mut triples = catalogue_triples(f);
     triples.extend(soup_triples(f, 3, 4));
     assert_none("TRI_UNIT e8m15", "pairs", tri_unit_mismatches(f, tri_job(f, &triples)));
+}
+
+/// The folded TRI_UNIT (`TriUnitFold`, a pair every 16 clocks, both directions on one T.CHECK
+/// folded for 8) with a reader always ready: the hard cases of every kind of result, each
+/// under its own pose (the setup changes between pairs in flight), and a 4 x 5 soup, every verdict and pair id
+/// the golden model's, in order; the first result `latency()` clocks after the first pair;
+/// pairs taken 16 clocks apart (or a multiple: a setup write can make a pair miss its slot).
+#[test]
+fn tri_unit_fold16_binary32() {
+    let f = Format::BINARY32;
+    let mut triples = catalogue_triples(f);
+    triples.extend(soup_triples(f, 4, 5));
+    let job = tri_job(f, &triples);
+    let n = job.golden.len();
+    let bad = big_stack(move || {
+        let plan = collision_chip::fold::tri_unit_plan(16).unwrap();
+        run_mismatches(&mut b32::tri_unit_fold_top(plan, Rounding::NearestEven), &job)
+    });
+    assert_none("folded TRI_UNIT (II 16) binary32", "pairs", (bad, n));
 }
 
 /// TRI_UNIT in binary32 under back pressure: the hard cases, then more soup pairs than the

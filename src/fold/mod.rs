@@ -17,3 +17,22 @@ pub fn tcheck_plan(ii: usize) -> Result<plan::Plan, String> {
     let s = schedule::schedule(&g.g, &g.outputs.all(), ii, schedule::minimal_units(&g.g, ii))?;
     Ok(plan::Plan::new(&g, &s))
 }
+
+/// TRI_UNIT folded for initiation interval `ii` (a pair every `ii` clocks): both directions
+/// on one T.CHECK folded for ii / 2, A's edges against U(B) when the pair is taken, B's
+/// against U(A) ii / 2 clocks later (docs/ARCHITECTURE.md, "Folded TRI_UNIT"). The shared
+/// T.CHECK's plan; Err for an odd or zero `ii`.
+pub fn tri_unit_plan(ii: usize) -> Result<plan::Plan, String> {
+    if ii < 2 || ii % 2 == 1 {
+        return Err(format!("a folded TRI_UNIT runs its two directions on one T.CHECK at II ii / 2, so ii must be even and at least 2, not {ii}"));
+    }
+    tcheck_plan(ii / 2)
+}
+
+/// The folded TRI_UNIT's latency from its shared T.CHECK's plan `p`: a pair taken at edge t
+/// has its second direction in the T.CHECK at t + p.ii, its result at the result FIFO's
+/// write port p.latency clocks later and at the output two clocks after (the FIFO's write
+/// and read registers, as in `TriUnit`).
+pub fn tri_unit_latency(p: &plan::Plan) -> usize {
+    p.ii + p.latency + 2
+}

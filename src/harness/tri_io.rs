@@ -232,12 +232,15 @@ pub fn tcheck_vectors(name: &str, f: Format, r: Rounding, latency: usize, interv
 }
 
 /// TRI_UNIT's vectors (reader always ready): a preload of the frame setup,
-/// then every pair of the vector scene (6 soup triangles each; Icarus runs TRI_UNIT at a few
-/// clocks per second), `a_* b_* tag out_ready -> out_tag out_hit
-/// out_uncertain in_ready` (golden::tcheck::tri_unit).
-pub fn tri_unit_vectors(name: &str, f: Format, r: Rounding) -> String {
+/// then every pair of the vector scene (`n` soup triangles each: Icarus runs TRI_UNIT at a few
+/// clocks per second, the folded one much faster), `a_* b_* tag out_ready -> out_tag out_hit
+/// out_uncertain in_ready` (golden::tcheck::tri_unit), for a TRI_UNIT of `latency` taking a
+/// pair every `interval` clocks (the folded one, `rtl::b32::TriUnitFold`: the testbench drives
+/// a pair in cycles 0 mod `interval`, and `in_ready` at a result's cycle is its counter's,
+/// `latency` mod `interval`, being 0).
+pub fn tri_unit_vectors(name: &str, f: Format, r: Rounding, latency: usize, interval: usize, n: usize) -> String {
     use std::fmt::Write;
-    let (a, b, setup) = vector_scene(f, 6);
+    let (a, b, setup) = vector_scene(f, n);
     let mut names = vec![];
     for pre in ["a_", "b_"] {
         names.extend(leaf_names(pre));
@@ -248,8 +251,11 @@ pub fn tri_unit_vectors(name: &str, f: Format, r: Rounding) -> String {
     let mut out = String::new();
     let _ = writeln!(out, "// preload: load_en load_addr load_data");
     let _ = writeln!(out, "// {}", names.join(" "));
-    let _ = writeln!(out, "// latency: {}", crate::rtl::b32::TriUnit::LATENCY);
-    let _ = writeln!(out, "// {name}: TRI_UNIT in {f}, rounding {r:?}: every pair of two 6-triangle soups (A with a zero-area triangle) under one pose; golden: golden::tcheck::tri_unit");
+    let _ = writeln!(out, "// latency: {latency}");
+    if interval > 1 {
+        let _ = writeln!(out, "// interval: {interval}");
+    }
+    let _ = writeln!(out, "// {name}: TRI_UNIT in {f}, rounding {r:?}: every pair of two {n}-triangle soups (A with a zero-area triangle) under one pose; golden: golden::tcheck::tri_unit");
     for (addr, data) in tri_unit_setup_words(f, &setup) {
         let _ = writeln!(out, "@ 1 {addr:02x} {}", hexw(f, data));
     }
@@ -271,7 +277,7 @@ pub fn tri_unit_vectors(name: &str, f: Format, r: Rounding) -> String {
             w.push(format!("{tag:08x}"));
             w.push((res.hit as u8).to_string());
             w.push((res.uncertain as u8).to_string());
-            w.push("1".into());
+            w.push(((latency % interval == 0) as u8).to_string());
             let _ = writeln!(out, "{}", w.join(" "));
             tag += 1;
         }

@@ -72,7 +72,8 @@ fn dop_unit_verilog(k: usize, fmt: Format, r: Rounding) -> Option<String> {
 }
 
 
-/// The folded T.CHECKs exported (binary32, nearest-even; `rtl::b32::TCheckFold`).
+/// The folded T.CHECKs and TRI_UNITs exported (binary32, nearest-even; `rtl::b32::TCheckFold`,
+/// `rtl::b32::TriUnitFold`), each at these initiation intervals.
 const FOLDED_II: [usize; 1] = [16];
 
 /// `tcheck_fold<ii>_b32_rne`: T.CHECK folded for initiation interval `ii`, with T.CHECK's
@@ -87,6 +88,22 @@ fn tcheck_fold_unit(ii: usize) -> Unit {
         latency: latency as u32,
         verilog: Box::new(move || crate::rtl::b32::verilog_tcheck_fold(ii, r)),
         vectors: Box::new(move || super::tri_io::tcheck_vectors(&n2, Format::BINARY32, r, latency, ii)),
+    }
+}
+
+/// `tri_unit_fold<ii>_b32_rne`: TRI_UNIT folded for a pair every `ii` clocks
+/// (`rtl::b32::TriUnitFold`), with TRI_UNIT's vectors driven every `ii` clocks, on 12-triangle
+/// soups (156 pairs: a verdict per pair checks less than T.CHECK's values).
+fn tri_unit_fold_unit(ii: usize) -> Unit {
+    let r = Rounding::NearestEven;
+    let name = format!("tri_unit_fold{ii}_b32_{}", rounding_tag(r));
+    let latency = crate::fold::tri_unit_latency(&crate::fold::tri_unit_plan(ii).expect("an exported II folds"));
+    let n2 = name.clone();
+    Unit {
+        name,
+        latency: latency as u32,
+        verilog: Box::new(move || crate::rtl::b32::verilog_tri_unit_fold(ii, r).expect("an exported II folds")),
+        vectors: Box::new(move || super::tri_io::tri_unit_vectors(&n2, Format::BINARY32, r, latency, ii, 12)),
     }
 }
 
@@ -154,10 +171,11 @@ pub fn all() -> Vec<Unit> {
         units.push(Unit { name, latency: latency as u32, verilog: Box::new(move || vt(r)), vectors: Box::new(move || super::tri_io::tcheck_vectors(&n2, fmt, r, latency, 1)) });
         let name = tri_unit_name(fmt).expect("an RTL format");
         let n2 = name.clone();
-        units.push(Unit { name, latency: crate::rtl::b32::TriUnit::LATENCY as u32, verilog: Box::new(move || vu(r)), vectors: Box::new(move || super::tri_io::tri_unit_vectors(&n2, fmt, r)) });
+        units.push(Unit { name, latency: crate::rtl::b32::TriUnit::LATENCY as u32, verilog: Box::new(move || vu(r)), vectors: Box::new(move || super::tri_io::tri_unit_vectors(&n2, fmt, r, crate::rtl::b32::TriUnit::LATENCY, 1, 6)) });
     }
     for ii in FOLDED_II {
         units.push(tcheck_fold_unit(ii));
+        units.push(tri_unit_fold_unit(ii));
     }
     // D_CNTR's pair queue, 16 entries (format independent): one line per clock
     let name = crate::chip::rtl::PAIR_QUEUE_UNIT.to_string();

@@ -11,6 +11,9 @@
 //! | [`e8m15`] | e8m15 ([`Format::REDUCED`](crate::format::Format::REDUCED)) | the same |
 //! | [`e8m15_b32`] | e8m15 DOP unit, binary32 TRI_UNIT | the k = 24 chip only |
 //!
+//! [`b32`] also holds the folded units of issue 33, built from `crate::fold`'s plans:
+//! [`b32::TCheckFold`] and [`b32::TriUnitFold`] (both directions on one `TCheckFold`).
+//!
 //! Each unit takes one operation per clock with a `valid` bit travelling alongside and
 //! is bit-exact with the golden [`Format`](crate::format::Format) operations in the
 //! rounding mode fixed at construction (NearestEven or TowardPositive), including
@@ -54,6 +57,7 @@ mod tcheck;
 mod tcheck_fold;
 mod tri_cache;
 mod tri_unit;
+mod tri_unit_fold;
 /// The result port, TRI_UNIT's read side in the chip (format-free: not stamped per format).
 pub use tri_unit::ResultPort;
 
@@ -119,6 +123,7 @@ pub mod b32 {
     // the papers' chip: node word 1 + 24 * 32 + 64 bits (wider than a triangle word, 23 * 32 + 2)
     crate::rtl::chip::chip!(24, DopUnit24, 32, 32, 833, 738, 2048, 1666);
     crate::rtl::tcheck_fold::tcheck_fold!(32, 31, 8, 23);
+    crate::rtl::tri_unit_fold::tri_unit_fold!(32);
 }
 
 /// Units for e8m15 (`Format::REDUCED`).

@@ -294,6 +294,42 @@ macro_rules! tcheck_fold {
                 x.to_u64()
             }
 
+            /// The input word port `i` ([`Inputs::from_words`](crate::fold::ops::Inputs::from_words)'s
+            /// order), for a block that drives this one (the folded TRI_UNIT).
+            fn input_mut(&mut self, i: usize) -> &mut Signal<In, Bits<$W>> {
+                match i {
+                    0..=11 => {
+                        let row = match i / 4 {
+                            0 => &mut self.m_0,
+                            1 => &mut self.m_1,
+                            _ => &mut self.m_2,
+                        };
+                        &mut row[i % 4]
+                    }
+                    12 => &mut self.alpha_m,
+                    13 => &mut self.alpha_f,
+                    14..=25 => {
+                        let row = match (i - 14) / 4 {
+                            0 => &mut self.f_0,
+                            1 => &mut self.f_1,
+                            _ => &mut self.f_2,
+                        };
+                        &mut row[(i - 14) % 4]
+                    }
+                    26 => &mut self.beta_m,
+                    27 => &mut self.beta_f,
+                    28 => &mut self.scale,
+                    _ => {
+                        let axis = match (i - 29) % 3 {
+                            0 => &mut self.v_x,
+                            1 => &mut self.v_y,
+                            _ => &mut self.v_z,
+                        };
+                        &mut axis[(i - 29) / 3]
+                    }
+                }
+            }
+
             /// The output of unit `u` of class `k`.
             fn unit_y(&self, k: usize, u: usize) -> u64 {
                 match k {

@@ -330,25 +330,7 @@ macro_rules! tri_unit {
         /// A TRI_UNIT ready to simulate as a top-level block (inputs claimed, connected).
         /// Large (two T.CHECKs): build it on a thread with a big stack.
         pub fn tri_unit_top(rounding: Rounding) -> TriUnit {
-            let mut uut = TriUnit::new(rounding);
-            for c in 0..4 {
-                uut.a_m_0[c].connect();
-                uut.a_m_1[c].connect();
-                uut.a_m_2[c].connect();
-                uut.b_m_0[c].connect();
-                uut.b_m_1[c].connect();
-                uut.b_m_2[c].connect();
-            }
-            for k in 0..3 {
-                uut.a_v_x[k].connect();
-                uut.a_v_y[k].connect();
-                uut.a_v_z[k].connect();
-                uut.b_v_x[k].connect();
-                uut.b_v_y[k].connect();
-                uut.b_v_z[k].connect();
-            }
-            top_level!(uut; clock, load_en, load_addr, load_data, a_alpha_m, a_alpha_f, a_v_exact, a_degenerate,
-                b_alpha_m, b_alpha_f, b_v_exact, b_degenerate, tag, in_valid, out_ready)
+            $crate::rtl::tri_unit::tri_unit_top_level!(TriUnit::new(rounding))
         }
 
         /// Verilog of TRI_UNIT (top module `top`).
@@ -358,6 +340,33 @@ macro_rules! tri_unit {
     };
 }
 pub(crate) use tri_unit;
+
+/// A block with TRI_UNIT's ports (`TriUnit`, `TriUnitFold`) ready to simulate as a top-level
+/// block: its inputs claimed, connected.
+macro_rules! tri_unit_top_level {
+    ($uut:expr) => {{
+        let mut uut = $uut;
+        for c in 0..4 {
+            uut.a_m_0[c].connect();
+            uut.a_m_1[c].connect();
+            uut.a_m_2[c].connect();
+            uut.b_m_0[c].connect();
+            uut.b_m_1[c].connect();
+            uut.b_m_2[c].connect();
+        }
+        for k in 0..3 {
+            uut.a_v_x[k].connect();
+            uut.a_v_y[k].connect();
+            uut.a_v_z[k].connect();
+            uut.b_v_x[k].connect();
+            uut.b_v_y[k].connect();
+            uut.b_v_z[k].connect();
+        }
+        top_level!(uut; clock, load_en, load_addr, load_data, a_alpha_m, a_alpha_f, a_v_exact, a_degenerate,
+            b_alpha_m, b_alpha_f, b_v_exact, b_degenerate, tag, in_valid, out_ready)
+    }};
+}
+pub(crate) use tri_unit_top_level;
 
 use rust_hdl::prelude::*;
 
