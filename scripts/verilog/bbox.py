@@ -30,7 +30,7 @@ The liberty cell of a black box (what is measured, what is assumed):
     A unit's worst input's figure is applied to every input (pessimistic). A RAM's are its own
     per address bit and per other port (pins.txt: timing-study.sh times each from that pin
     alone), since the queue pointer's late high bit meets only the last levels of the read
-    multiplexer (chip_e8m15_k6: 1.15 ns for read_address[8] against 2.18 for the worst
+    multiplexer (the 512 x 67 queue bank: 1.15 ns for read_address[8] against 2.20 for the worst
     bit). Pin load: one BUFX4 input
     (assumed: a unit's input as the fanout repair buffers it).
   - every output pin: a clock-to-output arc of out_path_ns (measured: register to output,
