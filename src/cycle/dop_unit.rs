@@ -34,7 +34,7 @@ impl<'a> DopUnit<'a> {
     /// Takes the pair at edge `now`: B's node word as d, A's as e.
     pub fn issue(&mut self, now: u64, pair: Pair) {
         let (na, nb) = (self.a.tree.node(pair.a), self.b.tree.node(pair.b));
-        let overlap = self.values.overlap(pair.b, &self.b.tree.dop(pair.b), &self.a.tree.dop(pair.a));
+        let overlap = self.values.overlap(pair.b, pair.a);
         self.pipe.push(now, DopResult { pair, na, nb, overlap });
     }
 

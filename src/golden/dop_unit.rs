@@ -6,7 +6,9 @@ use super::enclosure::checking;
 use super::host::{DopLanes, HostSetup, Lane};
 use std::borrow::Cow;
 use super::klmsel::{klmsel, opposite};
+use crate::dop::{Dop, DopTree};
 use crate::format::{Format, Rounding};
+use std::cell::OnceCell;
 
 /// B's transformed DOPs during one query, computed on a node's first test (or at every
 /// test, [`forget_rows`](TransformCache::forget_rows)): per lane an
@@ -43,21 +45,28 @@ pub struct TransformCache<'a> {
     known: Vec<u32>,
     /// Keep a node's rows for the query (false: one block, refilled by every test).
     memo: bool,
+    /// A's and B's DOP trees.
+    trees: [&'a DopTree; 2],
+    held: HeldDops,
 }
 
 impl<'a> TransformCache<'a> {
-    pub fn new(f: Format, r: Rounding, setup: &'a HostSetup, nodes: usize) -> Self {
-        let k = setup.j.len();
+    pub fn new(f: Format, r: Rounding, setup: &'a HostSetup, a: &'a DopTree, b: &'a DopTree) -> Self {
+        Self::with(f, r, Cow::Borrowed(setup), None, a, b)
+    }
+
+    fn with(f: Format, r: Rounding, setup: Cow<'a, HostSetup>, lanes: Option<DopLanes>, a: &'a DopTree, b: &'a DopTree) -> Self {
+        let k = lanes.as_ref().map_or(setup.j.len(), |l| l.k());
         let p = f.frac_bits() as i32 + 1;
         TransformCache {
             f,
             r,
-            setup: Cow::Borrowed(setup),
-            pending: None,
+            setup,
+            pending: lanes.map(|l| (l, vec![])),
             k,
             q: f.min_positive_subnormal(),
             rel: 2f64.powi(4 - p) + 2f64.powi(-50),
-            nodes,
+            nodes: b.len(),
             first: None,
             slot: vec![],
             approx: vec![],
@@ -65,16 +74,21 @@ impl<'a> TransformCache<'a> {
             exact: vec![],
             known: vec![],
             memo: true,
+            trees: [a, b],
+            held: HeldDops::default(),
         }
     }
 
     /// With lanes computed when first needed, a mirror pair at a time (`frames`: the setup
     /// without lanes, [`HostSetup::frames`]): the first test computes pairs until a lane is
     /// surely separated, so that a query ending at the root pays for few cone searches.
-    pub fn lazy(f: Format, r: Rounding, frames: &HostSetup, lanes: DopLanes, nodes: usize) -> Self {
-        let k = lanes.k();
-        let cache = TransformCache::new(f, r, frames, nodes);
-        TransformCache { setup: Cow::Owned(frames.clone()), pending: Some((lanes, vec![])), k, ..cache }
+    pub fn lazy(f: Format, r: Rounding, frames: &HostSetup, lanes: DopLanes, a: &'a DopTree, b: &'a DopTree) -> Self {
+        Self::with(f, r, Cow::Owned(frames.clone()), Some(lanes), a, b)
+    }
+
+    /// The DOP's size.
+    pub fn k(&self) -> usize {
+        self.k
     }
 
     /// Transforms B's DOP anew at every test, as WSCG'03 Algorithm 1 does in software: the
@@ -83,18 +97,25 @@ impl<'a> TransformCache<'a> {
         self.memo = false;
     }
 
-    /// The DOP unit: does B's node `nb` (DOP `d`) overlap A's DOP `e`? First every lane's
-    /// estimate at once (a loop the compiler vectorises), then the exact value of the lanes
-    /// the estimate leaves open, if no lane is surely separated. In check mode
-    /// ([`checking`]) the answer is compared with [`dop_overlap`]'s.
-    pub fn overlap(&mut self, nb: u32, d: &[f64], e: &[f64]) -> bool {
-        let overlap = !(self.pending.is_some() && self.lazy_separated(d, e)) && {
+    /// The DOP unit: does B's node `nb` overlap A's node `na`? First every lane's estimate
+    /// at once (a loop the compiler vectorises), then the exact value of the lanes the
+    /// estimate leaves open, if no lane is surely separated. B's DOP is read only where a
+    /// lane needs it (mostly its node's first test: its rows are then kept), A's through
+    /// [`HeldDops`]. In check mode ([`checking`]) the answer is compared with
+    /// [`dop_overlap`]'s.
+    pub fn overlap(&mut self, nb: u32, na: u32) -> bool {
+        let [a, b] = self.trees;
+        let d = LazyDop { tree: b, n: nb, dop: OnceCell::new() };
+        let e = self.held.dop(a, na);
+        let overlap = !(self.pending.is_some() && self.lazy_separated(d.get(), &e)) && {
             self.complete();
-            self.estimated(nb, d, e)
+            self.estimated(&d, &e)
         };
         if checking() {
             self.complete();
-            let want = dop_overlap(self.f, self.r, &self.setup, d, e);
+            // A's DOP read anew, not the held one: the check covers HeldDops too.
+            let (d, e) = (b.dop(nb), a.dop(na));
+            let want = dop_overlap(self.f, self.r, &self.setup, &d, &e);
             assert_eq!(overlap, want, "check mode: the DOP unit's estimate said overlap = {overlap}, the lanes {want}: d {d:?}, e {e:?}");
         }
         overlap
@@ -129,9 +150,9 @@ impl<'a> TransformCache<'a> {
     }
 
     /// [`overlap`](Self::overlap) with every lane's words known.
-    fn estimated(&mut self, nb: u32, d: &[f64], e: &[f64]) -> bool {
+    fn estimated(&mut self, d: &LazyDop, e: &[f64]) -> bool {
         let (k, h) = (self.k, self.k / 2);
-        let block = self.block(nb, d);
+        let block = self.block(d);
         let base = block * k;
         let (approx, err) = (&self.approx[base..base + k], &self.err[base..base + k]);
         // Lane i meets e_opp(i): the first half e[h..], the second e[..h].
@@ -146,7 +167,7 @@ impl<'a> TransformCache<'a> {
 
     /// The lanes the estimate leaves open, bit for bit: false if one is separated.
     #[cold]
-    fn exact_lanes(&mut self, block: usize, d: &[f64], e: &[f64]) -> bool {
+    fn exact_lanes(&mut self, block: usize, d: &LazyDop, e: &[f64]) -> bool {
         let base = block * self.k;
         for i in 0..self.k {
             let ei = opposite(e, i);
@@ -154,7 +175,7 @@ impl<'a> TransformCache<'a> {
                 continue;
             }
             if self.known[block] & (1 << i) == 0 {
-                let di = klmsel(d, self.setup.j[i]);
+                let di = klmsel(d.get(), self.setup.j[i]);
                 self.exact[base + i] = transformed(self.f, self.r, di, self.setup.cmat[i], self.setup.cvec[i]);
                 self.known[block] |= 1 << i;
             }
@@ -166,17 +187,18 @@ impl<'a> TransformCache<'a> {
     }
 
     /// The block of B's node `nb`, transformed on its first test.
-    fn block(&mut self, nb: u32, d: &[f64]) -> usize {
+    fn block(&mut self, d: &LazyDop) -> usize {
+        let nb = d.n;
         if !self.memo {
             self.approx.clear();
             self.err.clear();
             self.known.clear();
-            return self.fill(d);
+            return self.fill(d.get());
         }
         match self.first {
             None => {
                 self.first = Some(nb);
-                return self.fill(d);
+                return self.fill(d.get());
             }
             Some(f) if f == nb => return 0,
             Some(_) => {}
@@ -189,7 +211,7 @@ impl<'a> TransformCache<'a> {
         }
         match self.slot[nb as usize] {
             u32::MAX => {
-                let b = self.fill(d);
+                let b = self.fill(d.get());
                 self.slot[nb as usize] = b as u32;
                 b
             }
@@ -213,6 +235,47 @@ impl<'a> TransformCache<'a> {
 
     fn estimator(&self) -> Estimator {
         Estimator { max: self.f.max_finite() / 8.0, rel: self.rel, q8: 8.0 * self.q }
+    }
+}
+
+/// B's node DOP, read from its tree when a lane first needs it: a leaf's is computed from its
+/// triangle ([`DopTree::dop`]), and most tests find B's rows already transformed.
+struct LazyDop<'t> {
+    tree: &'t DopTree,
+    n: u32,
+    dop: OnceCell<Dop>,
+}
+
+impl LazyDop<'_> {
+    fn get(&self) -> &[f64] {
+        self.dop.get_or_init(|| self.tree.dop(self.n))
+    }
+}
+
+/// A's DOPs last read, direct-mapped by node ([`HELD_LINES`] lines, allocated at the first
+/// node below the root): a leaf's DOP is computed from its triangle when read (an inner
+/// node's widened from its stored format), and an A node meets several of B's in a row.
+/// Software only: the chip reads the node's record.
+#[derive(Default)]
+struct HeldDops {
+    lines: Vec<(u32, Dop)>,
+}
+
+const HELD_LINES: usize = 1024;
+
+impl HeldDops {
+    fn dop(&mut self, tree: &DopTree, n: u32) -> Dop {
+        if n == 0 {
+            return tree.dop(n);
+        }
+        if self.lines.is_empty() {
+            self.lines = vec![(u32::MAX, tree.dop(n)); HELD_LINES];
+        }
+        let line = &mut self.lines[n as usize % HELD_LINES];
+        if line.0 != n {
+            *line = (n, tree.dop(n));
+        }
+        line.1
     }
 }
 

@@ -149,7 +149,7 @@ impl<'a> Engine<'a> {
         let c = &mut self.counters;
         c.dop_tests += 1;
         c.node_fetches += self.held_node[0].fetch(self.a.record(na)) as u64 + self.held_node[1].fetch(self.b.record(nb)) as u64;
-        let hit = self.dop_unit.overlap(nb, &self.b.tree.dop(nb), &self.a.tree.dop(na));
+        let hit = self.dop_unit.overlap(nb, na);
         c.dop_overlaps += hit as u64;
         hit
     }
@@ -213,7 +213,7 @@ pub fn run(
         pairs: vec![],
         uncertain: vec![],
         live: 0,
-        dop_unit: dop_unit::TransformCache::lazy(cfg.format.dop, cfg.dop_rounding.op(), setup, lanes, b.tree.len()),
+        dop_unit: dop_unit::TransformCache::lazy(cfg.format.dop, cfg.dop_rounding.op(), setup, lanes, &a.tree, &b.tree),
         tri_unit: tri_unit::TriUnit::new(cfg.format.tri, cfg.tri_rounding, setup, a.tri_count(), b.tri_count()),
         counters: Counters::default(),
         stop: false,

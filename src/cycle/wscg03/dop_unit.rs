@@ -8,7 +8,6 @@
 
 use crate::chip::wscg03::StackParams;
 use crate::golden::dop_unit::TransformCache;
-use crate::golden::memory::ObjectImage;
 
 /// A d' set of the dual-port memory: its tumbled nodes and the clock they are all present.
 #[derive(Clone, Debug)]
@@ -18,8 +17,6 @@ struct Set {
 }
 
 pub struct DopUnit<'a> {
-    a: &'a ObjectImage,
-    b: &'a ObjectImage,
     values: TransformCache<'a>,
     k: u64,
     stages: u64,
@@ -41,12 +38,10 @@ pub struct DopUnit<'a> {
 }
 
 impl<'a> DopUnit<'a> {
-    pub fn new(a: &'a ObjectImage, b: &'a ObjectImage, values: TransformCache<'a>, p: &StackParams, node_bits: u32) -> Self {
+    pub fn new(values: TransformCache<'a>, p: &StackParams, node_bits: u32) -> Self {
         DopUnit {
-            a,
-            b,
+            k: values.k() as u64,
             values,
-            k: a.tree.k as u64,
             stages: p.dotadd_stages as u64,
             beats: node_bits.div_ceil(p.data_bus_bits) as u64,
             compare_latency: p.compare_latency as u64,
@@ -137,7 +132,7 @@ impl<'a> DopUnit<'a> {
 
     /// The golden overlap of A's aligned node `n` and B's tumbled node `x`.
     pub fn overlap(&mut self, n: u32, x: u32) -> bool {
-        let hit = self.values.overlap(x, &self.b.tree.dop(x), &self.a.tree.dop(n));
+        let hit = self.values.overlap(x, n);
         self.tests += 1;
         self.overlaps += hit as u64;
         hit
