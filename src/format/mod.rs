@@ -97,6 +97,10 @@
 //!   lies strictly between two neighbours. Stepping *down in magnitude* from an exact
 //!   power of two `2^e` with `e > emin` uses the half-size ulp of the binade below.
 //!   No allocation and no big integers; a few ns per operation.
+//! * Nearest-even with an exact `f64` operand or result (`lo == 0`) in the format's normal
+//!   range: rounded on the `f64` bits (`nearest_normal`), fewer operations than `round2`
+//!   (the reduced format's T.CHECK is most of its queries); subnormal and overflowing
+//!   results still take `round2`.
 use std::fmt;
 use std::str::FromStr;
 
@@ -303,6 +307,20 @@ impl Format {
         }
     }
 
+    /// `x` (finite, nonzero, exact) rounded to nearest-even on its f64 bits, where x and the
+    /// result are normal in the format (else `None`: `round2` handles subnormals and
+    /// overflow): adding half a step less one, plus the last kept bit, carries into the
+    /// kept bits exactly when the dropped bits exceed half a step, or equal it with the
+    /// kept last bit odd; the carry may step the exponent, the sign bit is untouched.
+    #[inline(always)]
+    fn nearest_normal(&self, x: f64) -> Option<f64> {
+        let shift = 52 - self.frac_bits;
+        let bits = x.to_bits();
+        let up = bits + (1u64 << (shift - 1)) - 1 + ((bits >> shift) & 1);
+        let y = f64::from_bits(up & !((1u64 << shift) - 1));
+        ((exponent64(x) >= self.emin()) & (exponent64(y) <= self.emax())).then_some(y)
+    }
+
     /// Rounds the exact value `hi + lo` once into the format.
     ///
     /// Preconditions: `hi` finite and nonzero; `lo == 0` or `|lo| <= ulp64(hi)/2`
@@ -485,6 +503,11 @@ impl Format {
         if self.is_binary32() && r != Rounding::NearestEven && s.abs() >= F32_MIN_NORMAL {
             return Self::round32_directed(s, lo, r == Rounding::TowardPositive);
         }
+        if r == Rounding::NearestEven && lo == 0.0 {
+            if let Some(y) = self.nearest_normal(s) {
+                return y;
+            }
+        }
         self.round2(s, lo, r)
     }
 
@@ -510,6 +533,11 @@ impl Format {
         }
         if self.is_binary32() && r != Rounding::NearestEven && p.abs() >= F32_MIN_NORMAL {
             return Self::round32_directed(p, 0.0, r == Rounding::TowardPositive);
+        }
+        if r == Rounding::NearestEven {
+            if let Some(y) = self.nearest_normal(p) {
+                return y;
+            }
         }
         self.round2(p, 0.0, r)
     }

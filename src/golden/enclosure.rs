@@ -22,12 +22,32 @@ pub struct Upper {
     k: f64,
     q: f64,
     limit: f64,
+    /// [`Upper::dot_gap`]'s factors: (1 + 2^-F)^3 - 1 + 2^-49 and 7 times the smallest
+    /// subnormal.
+    gap_rel: f64,
+    gap_abs: f64,
 }
 
 impl Upper {
     pub fn new(f: Format) -> Upper {
         let p2 = |e: i32| 2f64.powi(e);
-        Upper { k: 1.0 + p2(-(f.frac_bits() as i32)) + p2(-49), q: 2.0 * f.min_positive_normal(), limit: f.max_finite() }
+        let u = p2(-(f.frac_bits() as i32));
+        Upper {
+            k: 1.0 + u + p2(-49),
+            q: 2.0 * f.min_positive_normal(),
+            limit: f.max_finite(),
+            gap_rel: 3.0 * u + 3.0 * u * u + u * u * u + p2(-49),
+            gap_abs: 7.0 * f.min_positive_subnormal(),
+        }
+    }
+
+    /// An upper bound of the distance between the chip's value of a dot product
+    /// `(a0 b0 + a1 b1) + (a2 b2 + c)` (its own rounding, any mode) and the same expression
+    /// evaluated in f64, from an enclosure `mag` of `|a0 b0| + |a1 b1| + |a2 b2| + |c|`,
+    /// while the chip does not overflow (docs/ACCURACY.md, "Deciding T.CHECK in f64").
+    #[inline(always)]
+    pub fn dot_gap(&self, mag: f64) -> f64 {
+        self.add(self.mul(mag, self.gap_rel), self.gap_abs)
     }
 
     /// An upper bound of the chip's `round_up(w)` from the f64 `w` of enclosed operands.

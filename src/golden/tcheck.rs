@@ -143,16 +143,6 @@ pub fn stage1_hi(f: Format, r: Rounding, up: &Upper, leaf: &TriWord, frame: &Aff
     Stage1Hi { mb, mag, a_err, scale, fits: fits & up.fits(a_err) }
 }
 
-/// Coordinate i of a mapped vertex p (|p| = `pa`) as the chip computes it, and its
-/// magnitude enclosed, with the input errors `err` = A' L1(p).
-#[inline(always)]
-#[allow(clippy::too_many_arguments)]
-fn coordinate(f: Format, r: Rounding, up: &Upper, s1: &Stage1Hi, p: [f64; 3], pa: [f64; 3], i: usize, err: f64) -> (f64, f64) {
-    let (mb, mag) = (&s1.mb[i], &s1.mag[i]);
-    let v = dot(f, r, [mb[0], mb[1], mb[2]], p, Some(mb[3]));
-    (v, dot_hi(up, [mag[0], mag[1], mag[2]], pa, Some(up.add(mag[3], err))))
-}
-
 /// T.CHECK's verdict decided with the chip's values and upper enclosures of its bounds
 /// (docs/ACCURACY.md, "Deciding T.CHECK in f64"): `Some` only where it equals
 /// `edges(..).result()` of the same inputs, `None` where the enclosure cannot tell (the
@@ -166,15 +156,41 @@ pub fn decide(f: Format, r: Rounding, cert: &Certificate, up: &Upper, s1: &Stage
     let (mut v, mut m, mut e1) = ([[0.0; 3]; 3], [[0.0; 3]; 3], [[0.0; 3]; 3]);
     let (mut err, mut ez, mut g, mut h) = ([0.0; 3], [0.0; 3], [0.0; 3], [0.0; 3]);
     let pa = tri.v.map(|p| p.map(f64::abs));
-    // The bounds in the order of `edges_in`, each operation enclosed; z first: a vertex
-    // triangle surely on one side of the plane needs nothing else.
-    let coordinate = |k: usize, i: usize, err: f64| coordinate(f, r, up, s1, tri.v[k], pa[k], i, err);
+    // The bounds in the order of `edges_in`, each operation enclosed. Coordinate i of
+    // mapped vertex k as the chip computes it, and its magnitude enclosed with the input
+    // errors `err` = A' L1(p).
+    let value = |k: usize, i: usize| {
+        let mb = &s1.mb[i];
+        dot(f, r, [mb[0], mb[1], mb[2]], tri.v[k], Some(mb[3]))
+    };
+    let magnitude = |k: usize, i: usize, err: f64| {
+        let mag = &s1.mag[i];
+        dot_hi(up, [mag[0], mag[1], mag[2]], pa[k], Some(up.add(mag[3], err)))
+    };
+    // z first: a vertex triangle surely on one side of the plane needs nothing else. z in
+    // f64 first (its products are exact), within `dot_gap` of the chip's z: a sign sure
+    // beyond E_z plus that gap is the chip value's sure sign too, so the chip's z is
+    // computed only if these do not settle it.
+    let mut sz_f64 = [None; 3];
     for k in 0..3 {
         let l1 = up.add(up.add(pa[k][0], pa[k][1]), up.add(pa[k][2], s1.scale));
         err[k] = up.mul(s1.a_err, l1);
-        (v[k][2], m[k][2]) = coordinate(k, 2, err[k]);
+        m[k][2] = magnitude(k, 2, err[k]);
         ez[k] = up.scale(m[k][2], cert.c_e[x]);
-        fits &= up.fits(l1) & up.fits(v[k][2]) & up.fits(m[k][2]) & up.fits(ez[k]);
+        let mb = &s1.mb[2];
+        let z = (mb[0] * tri.v[k][0] + mb[1] * tri.v[k][1]) + (mb[2] * tri.v[k][2] + mb[3]);
+        sz_f64[k] = sign(z, up.add(ez[k], up.dot_gap(m[k][2])));
+        fits &= up.fits(l1) & up.fits(m[k][2]) & up.fits(ez[k]);
+    }
+    if !fits {
+        return None;
+    }
+    if sz_f64[0].is_some() && sz_f64[0] == sz_f64[1] && sz_f64[1] == sz_f64[2] {
+        return Some(false);
+    }
+    for k in 0..3 {
+        v[k][2] = value(k, 2);
+        fits &= up.fits(v[k][2]);
     }
     if !fits {
         return None;
@@ -185,7 +201,7 @@ pub fn decide(f: Format, r: Rounding, cert: &Certificate, up: &Upper, s1: &Stage
     }
     for k in 0..3 {
         for i in 0..2 {
-            (v[k][i], m[k][i]) = coordinate(k, i, err[k]);
+            (v[k][i], m[k][i]) = (value(k, i), magnitude(k, i, err[k]));
         }
         for i in 0..3 {
             e1[k][i] = up.scale(m[k][i], if i < 2 { cert.c_e[x] } else { cert.c_z[x] });
