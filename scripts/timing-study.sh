@@ -24,6 +24,34 @@
 #          (`link_design top`, flow `hier`): every path is still timed, across boundaries too,
 #          but a net that leaves its module is not repaired (its driver sees all the loads in
 #          the modules it feeds). ABC does not optimize across a kept boundary.
+#   bbox:  (--bbox) a chip timed as its glue around black boxes, for the k = 24 chips (3.3-3.6 M
+#          cells) that the hier flow cannot synthesize in the machine's budget.
+#          scripts/verilog/bbox.py walks the chip's instance tree from `top`; a module becomes a
+#          black box when its design is that of an exported unit with a row in --out
+#          (TRI_UNIT, the DOP unit or its DOPTRF lanes: equal canonical hashes, whatever the
+#          chip's deduplicated module names), or when it is a rust-hdl RAM (D_CNTR's queue banks,
+#          the node-word FIFO, the triangle cache's ids and words), which is timed first as a
+#          unit of its own, flat, by this script (target/timing/ram_<hash>/, rows kept in
+#          target/timing/parts.csv and reused): flip-flops and a read multiplexer, as in the whole
+#          chip's netlist. The rest (D_CNTR, the memory port, the cache's control, KLMSEL where
+#          the DOP unit has no row, the result port) is synthesized as `hier`, flattened, and
+#          timed by OpenSTA with one liberty cell per black box (WORK/bbox.lib):
+#            measured: each input's setup = the black box's in_path_ns + its flip-flops' setup
+#            (min_period_ns - path_ns), a RAM's per address bit and per other port (timed from
+#            that pin alone: target/timing/ram_<hash>/pins.txt); each output's clock-to-output
+#            = its out_path_ns; the black box's own register-to-register period = its row's
+#            min_period_ns;
+#            assumed: a unit's worst input's and output's figure holds for every input and
+#            output (pessimistic); an input loads its driver like one BUFX4 input; an output
+#            drives its load like a DFFPOSX1's Q; no combinational input-to-output path
+#            through a black box; ABC does not optimize across a black box's boundary.
+#          The row: min_period_ns = the largest of the glue's worst register/black-box path
+#          and the black boxes' own periods (its stage named `<module>(<unit>).<stage>` when a
+#          black box's); cells and area add the black boxes' rows per instance; stage_ns lists
+#          the black boxes first. Checked on chip_e8m15_k6 against its whole-chip `hier` row
+#          (scripts/README.md). With --bbox a chip's work directory holds glue.v, stubs.v,
+#          parts.csv (which module is which black box, timed by which row) and bbox.lib;
+#          --sta-only re-times its glue netlist with the black boxes' cells made again.
 #   each flip-flop instance is renamed after the register net it drives (`s3_nm.q[0]` ->
 #   `s3_nm__q_0_`), so a path's start and end name their pipeline stage (rust-hdl: `sK_*`);
 #   (hier: after flattening, `doptrf$4.add_2.s1_small.q[0]` -> `doptrf_4__add_2__s1_small__q_0`)
@@ -38,17 +66,21 @@
 #          (fp_scale's shift sits between its inputs and its output register)
 # Writes (updates: rows of units not measured now are kept) the CSV
 #   unit,format,rounding,cells,area_um2,path_ns,min_period_ns,fmax_mhz,startpoint,endpoint,slow_stage,in_path_ns,out_path_ns,stage_ns,flow,rtl_sha256
-# (flow: flat | hier; rtl_sha256: sha256sum of the rtl/<unit>.v measured, which
+# (flow: flat | hier | hier+flat | bbox; rtl_sha256: sha256sum of the rtl/<unit>.v measured, which
 # scripts/check-timing-fresh.sh compares with rtl/ in CI)
 # and prints, per format / DOP rounding configuration, the period of its slowest measured unit
 # (also written to docs/figures/timing_config.csv, next to --out).
 # Work files: target/timing/<unit>/ (netlist.v, stat.txt, sta.tcl, sta.txt, yosys.log).
 #
-# Usage: scripts/timing-study.sh [--units PATTERNS | --configs-only] [--hier PATTERNS] [--out FILE] [--timeout SECONDS]
+# Usage: scripts/timing-study.sh [--units PATTERNS | --configs-only] [--hier PATTERNS] [--bbox PATTERNS] [--out FILE] [--timeout SECONDS]
 #   --units    space-separated shell globs on the unit name (default: every rtl/*.v); e.g.
 #              --units 'fp_* doptrf_*' for the small ones (seconds to minutes each)
 #   --hier     the units synthesized hierarchically (default 'dop_unit_* tcheck_* tri_unit_* chip_*':
 #              flat, ABC does not finish them in 20 minutes / 4.7 GB)
+#   --bbox     the units timed by the bbox flow (default none), e.g.
+#              --units 'chip_b32_k24 chip_e8m15_b32_k24' --bbox 'chip_*'
+#              (needs the rows of the units it black-boxes in --out)
+#   --rtl      the directory of the units' Verilog (default rtl/; the bbox flow's RAM parts)
 #   --configs-only  measure nothing: rewrite timing_config.csv from the rows of --out
 #   --sta-only re-time the netlists of an earlier run (target/timing/<unit>/netlist_raw.v)
 #   --out      default docs/figures/timing.csv
@@ -61,6 +93,9 @@ LIB=${LIB:-/usr/share/qflow/tech/osu018/osu018_stdcells.lib}
 PY=${PYTHON:-python3}
 UNITS='*'
 HIER='dop_unit_* tcheck_* tri_unit_* chip_*'
+BBOX=
+RTL=$ROOT/rtl
+PARTS_CSV=$ROOT/target/timing/parts.csv
 MEM_KB=${MEM_KB:-8000000}
 STA_ONLY=
 FLATTEN_MAX=${FLATTEN_MAX:-650000}
@@ -74,6 +109,8 @@ while [ $# -gt 0 ]; do
   case $1 in
     --units) UNITS=$2; shift 2 ;;
     --hier) HIER=$2; shift 2 ;;
+    --bbox) BBOX=$2; shift 2 ;;
+    --rtl) RTL=$(cd "$2" && pwd); shift 2 ;;
     --configs-only) UNITS=; shift ;;
     --sta-only) STA_ONLY=1; shift ;;
     --out) OUT=$2; shift 2 ;;
@@ -93,9 +130,49 @@ fi
 
 # One bounded tool run (time and virtual memory).
 run() { (ulimit -v "$MEM_KB"; exec timeout "$TIMEOUT" "$@"); }
+# bbox: the chip's black boxes (scripts/verilog/bbox.py split); its RAMs timed as units by this
+# script (flat, target/timing/ram_<hash>/; rows kept in target/timing/parts.csv, so a RAM timed
+# before on the same text is not timed again), then from each input pin alone (pins.txt: per
+# address bit, per other port); then the black boxes' liberty cells.
+bbox_parts() {
+  local f=$1 w=$2 parts=$ROOT/target/timing/parts todo= r d
+  "$PY" "$SCRIPTS/verilog/bbox.py" split "$f" "$OUT" "$RTL" "$w" "$parts" || return 1
+  for r in $(awk -F, 'NR > 1 && $2 == "ram" {print $4}' "$w/parts.csv" | sort -u); do
+    grep -q "^$r,.*,$(sha256sum "$parts/$r.v" | cut -d' ' -f1)\$" "$PARTS_CSV" 2>/dev/null || todo="$todo $r"
+  done
+  if [ -n "$todo" ]; then
+    "$SCRIPTS/timing-study.sh" --rtl "$parts" --units "$todo" --hier '' --out "$PARTS_CSV" --timeout "$TIMEOUT" || return 1
+  fi
+  for r in $(awk -F, 'NR > 1 && $2 == "ram" {print $4}' "$w/parts.csv" | sort -u); do
+    d=$ROOT/target/timing/$r
+    [ "$d/pins.txt" -nt "$d/netlist.v" ] && continue
+    cat > "$d/pins.tcl" <<EOF
+read_liberty $LIB
+read_verilog $d/netlist.v
+link_design top
+create_clock -name clk -period 10 [get_ports clock]
+set_input_delay 0 -clock clk [delete_from_list [all_inputs] [get_ports clock]]
+set buses {}
+foreach p [delete_from_list [all_inputs] [get_ports clock]] {
+  set n [get_full_name \$p]
+  regsub {\[[0-9]+\]\$} \$n {} bus
+  if {[string match *address* \$n]} {
+    puts "=== \$n"
+    report_checks -path_delay max -digits 3 -from \$p -to [all_registers -data_pins] -format end
+  } elseif {[lsearch \$buses \$bus] < 0} {
+    lappend buses \$bus
+    puts "=== \$bus"
+    report_checks -path_delay max -digits 3 -from [get_ports \$bus*] -to [all_registers -data_pins] -format end
+  }
+}
+EOF
+    run sta -no_init -exit "$d/pins.tcl" > "$d/pins.txt" 2>&1 || { echo "timing-study.sh: $r: sta failed (see $d/pins.txt)" >&2; return 1; }
+  done
+  "$PY" "$SCRIPTS/verilog/bbox.py" lib "$w" "$OUT" "$PARTS_CSV" "$LIB" "$ROOT/target/timing"
+}
 FILES=()
 for u in $UNITS; do
-  for f in "$ROOT"/rtl/$u.v; do [ -f "$f" ] && FILES+=("$f"); done
+  for f in "$RTL"/$u.v; do [ -f "$f" ] && FILES+=("$f"); done
 done
 [ ${#FILES[@]} -gt 0 ] || [ -z "$UNITS" ] || { echo "timing-study.sh: no rtl/<unit>.v matches '$UNITS'" >&2; exit 2; }
 case $OUT in /*) ;; *) OUT=$PWD/$OUT ;; esac
@@ -107,14 +184,19 @@ for f in ${FILES[@]+"${FILES[@]}"}; do
   unit=$(basename "$f" .v)
   w=$ROOT/target/timing/$unit
   t0=$(date +%s)
-  flow=flat; keep=
+  flow=flat; keep=; stubs=; src=$f
   for h in $HIER; do case $unit in $h) flow=hier; keep='hierarchy -check -top top; setattr -mod -set keep_hierarchy 1 t:* t:$* %d %m;' ;; esac; done
+  for h in $BBOX; do case $unit in $h) flow=bbox; src=$w/glue.v; stubs="read_verilog -lib $w/stubs.v;" ;; esac; done
+  if [ $flow = bbox ]; then
+    [ -n "$STA_ONLY" ] || { rm -rf "$w"; mkdir -p "$w"; }
+    bbox_parts "$f" "$w" || { status=1; continue; }
+  fi
   if [ -n "$STA_ONLY" ]; then
     [ -f "$w/netlist_raw.v" ] && [ -f "$w/stat.txt" ] || { echo "timing-study.sh: $unit: --sta-only needs $w/netlist_raw.v (run without it first)" >&2; status=1; continue; }
   else
-    rm -rf "$w"; mkdir -p "$w"
+    [ $flow = bbox ] || { rm -rf "$w"; mkdir -p "$w"; }
     echo "$ABC_SCRIPT" > "$w/abc.script"
-    if ! run yosys -q -l "$w/yosys.log" -p "read_verilog $f; $keep synth -top top -flatten; dfflibmap -liberty $LIB; abc -liberty $LIB -script $w/abc.script; opt_clean; tee -q -o $w/stat.txt stat -top top -liberty $LIB; write_verilog -noattr $w/netlist_raw.v" >/dev/null 2>&1; then
+    if ! run yosys -q -l "$w/yosys.log" -p "read_verilog $src; $keep synth -top top -flatten; dfflibmap -liberty $LIB; abc -liberty $LIB -script $w/abc.script; opt_clean; tee -q -o $w/stat.txt stat -top top -liberty $LIB; write_verilog -noattr $w/netlist_raw.v" >/dev/null 2>&1; then
       echo "timing-study.sh: $unit: yosys failed or timed out after ${TIMEOUT}s (log $w/yosys.log)" >&2
       status=1; continue
     fi
@@ -125,10 +207,10 @@ for f in ${FILES[@]+"${FILES[@]}"}; do
   # hierarchical, flow `hier`, where a net that leaves its module is not repaired)
   mapped=$w/netlist_raw.v
   cells=$(grep -E 'Number of cells:' "$w/stat.txt" | tail -n 1 | tr -dc 0-9)
-  if [ $flow = hier ] && [ "$cells" -le "$FLATTEN_MAX" ]; then
-    flow=hier+flat
+  if [ $flow != flat ] && [ "$cells" -le "$FLATTEN_MAX" ]; then
+    [ $flow = bbox ] || flow=hier+flat
     mapped=$w/netlist_flat.v
-    if ! run yosys -q -l "$w/flatten.log" -p "read_liberty -lib $LIB; read_verilog $w/netlist_raw.v; hierarchy -top top; flatten; opt_clean; write_verilog -noattr $mapped" >/dev/null 2>&1; then
+    if ! run yosys -q -l "$w/flatten.log" -p "read_liberty -lib $LIB; $stubs read_verilog $w/netlist_raw.v; hierarchy -top top; flatten; opt_clean; write_verilog -noattr $mapped" >/dev/null 2>&1; then
       echo "timing-study.sh: $unit: flattening the mapped netlist failed (log $w/flatten.log)" >&2
       status=1; continue
     fi
@@ -154,21 +236,31 @@ out = re.sub(r'^(\s*DFF\w*|\s*LATCH)\s+(\S+)\s+\((.*?\);)', name, src, flags=re.
 open(sys.argv[2], 'w').write(out)
 PY
   "$PY" "$SCRIPTS/verilog/fanout.py" "$w/netlist_named.v" "$w/netlist.v" "$FANOUT" 2>> "$w/yosys.log"
+  # bbox: the black boxes' liberty cells; the worst path between registers and black boxes is
+  # the worst constrained path while the ports are unconstrained (no input/output delay yet)
+  if [ $flow = bbox ]; then
+    bblib="read_liberty $w/bbox.lib"; worst='report_checks -path_delay max -format full_clock -digits 3'
+    ends='report_checks -path_delay max -digits 3 -group_count 1000000 -endpoint_count 1 -format end'
+  else
+    bblib=; worst='report_checks -path_delay max -format full_clock -digits 3 -from [all_registers -clock_pins] -to [all_registers -data_pins]'
+    ends='report_checks -path_delay max -digits 3 -from [all_registers -clock_pins] -to [all_registers -data_pins] -group_count 1000000 -endpoint_count 1 -format end'
+  fi
   cat > "$w/sta.tcl" <<EOF
 read_liberty $LIB
+$bblib
 read_verilog $w/netlist.v
 link_design top
 create_clock -name clk -period 10 [get_ports clock]
+puts "=== worst"
+$worst
+puts "=== endpoints"
+$ends
 set_input_delay 0 -clock clk [delete_from_list [all_inputs] [get_ports clock]]
 set_output_delay 0 -clock clk [all_outputs]
-puts "=== worst"
-report_checks -path_delay max -format full_clock -digits 3 -from [all_registers -clock_pins] -to [all_registers -data_pins]
 puts "=== in"
 report_checks -path_delay max -digits 3 -from [delete_from_list [all_inputs] [get_ports clock]] -to [all_registers -data_pins]
 puts "=== out"
 report_checks -path_delay max -digits 3 -from [all_registers -clock_pins] -to [all_outputs]
-puts "=== endpoints"
-report_checks -path_delay max -digits 3 -from [all_registers -clock_pins] -to [all_registers -data_pins] -group_count 1000000 -endpoint_count 1 -format end
 EOF
   if ! run sta -no_init -exit "$w/sta.tcl" > "$w/sta.txt" 2>&1; then
     echo "timing-study.sh: $unit: sta failed (see $w/sta.txt)" >&2; status=1; continue
@@ -186,9 +278,9 @@ def flat(tok):
     inst, pin = re.fullmatch(r'(.*?)(/[A-Z]+\d*)?', tok.replace('\\', '')).groups()
     return inst.replace('$', '_').replace('/', '__') + (pin or '')
 txt = re.sub(r'\S*[$/]\S*', lambda m: flat(m.group()), open(sta).read())
-worst, rest = txt.split('=== in')
-inp, rest = rest.split('=== out')
-outp, ends = rest.split('=== endpoints')
+worst, rest = txt.split('=== endpoints')
+ends, rest = rest.split('=== in')
+inp, outp = rest.split('=== out')
 def arrival(t):
     m = re.search(r'(-?[\d.]+)\s+data arrival time', t)
     return f'{float(m.group(1)):.3f}' if m else ''
@@ -221,6 +313,7 @@ sn = ' '.join(f'{b}:{p:.2f}' for b, p in order[:STAGES])  # a chip has tens of t
 print(f'{unit},{fmt},{rnd},{cells},{area:.0f},{float(arr.group(1)):.3f},{period:.3f},{1000/period:.1f},'
       f'{sp.group(1)},{ep.group(1)},{block(ep.group(1))},{io},{sn},{tail}')
 PY
+  [ $flow != bbox ] || "$PY" "$SCRIPTS/verilog/bbox.py" fold "$w" "$OUT" "$PARTS_CSV" "$NEW"
   echo "$(tail -n 1 "$NEW" | cut -d, -f1,4-8,11)  ($((t1 - t0)) s)" >&2
 done
 

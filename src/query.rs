@@ -14,18 +14,20 @@ use crate::pose::Pose;
 use crate::traversal::{self, Host, QueryResult, Traversal};
 use serde::Serialize;
 
-/// Peak bytes of a query's setup per triangle of an object at `k` DOP directions: the f64
-/// geometry, the DOP tree (2n nodes of k distances), the memory image and the triangle
-/// words, with what their build holds at once. An upper bound of what `cchip run` peaked at
-/// (`/usr/bin/time -v`, the 871k dragon against itself, cycles and accuracy on): 637 bytes
-/// at k = 6, 929 at k = 24 (README, "Limits").
-pub fn memory_estimate(triangles: usize, k: usize) -> u64 {
-    triangles as u64 * (576 + 16 * k as u64)
+/// Peak bytes of a query's setup and its exact oracle for objects of `a` and `b` triangles at
+/// `k` DOP directions: per triangle of either object, the f64 geometry (72), an inner
+/// node's k distances (at most 8 bytes each), the tree's links, node ids and records, the
+/// build's temporaries and the process's own share; and the exact oracle's placed chunk of B
+/// with its search tree ([`ORACLE_CHUNK`]). An upper bound of what `cchip run` peaked at
+/// (`/usr/bin/time -v`, the 871k dragon against itself, cycles and accuracy on): 200 bytes
+/// per triangle per object at k = 6, 261 at k = 24 (README, "Limits").
+pub fn memory_estimate(a: usize, b: usize, k: usize) -> u64 {
+    (a + b) as u64 * (160 + 8 * k as u64) + b.min(ORACLE_CHUNK) as u64 * 256
 }
 
 /// Refuses objects whose setup would not fit in `available` bytes, before anything is built.
 fn check_memory(a: usize, b: usize, k: usize, available: Option<u64>) -> Result<(), String> {
-    let need = memory_estimate(a, k) + memory_estimate(b, k);
+    let need = memory_estimate(a, b, k);
     match available {
         Some(free) if need > free => Err(format!(
             "objects of {a} and {b} triangles at k = {k} need about {} MB of memory (trees, memory images, triangle words) and this machine has {} MB available: use smaller meshes or a smaller k, or set CCHIP_MAX_MEMORY_MB if more memory is free than /proc/meminfo and the cgroup's limit say",
@@ -36,14 +38,13 @@ fn check_memory(a: usize, b: usize, k: usize, available: Option<u64>) -> Result<
     }
 }
 
-/// Both objects' memory images for one chip configuration, and the host's f64 geometry
+/// Both objects' memory images for one chip configuration, with the host's f64 geometry
 /// (to settle uncertain pairs).
 pub struct Chip {
     pub cfg: ChipConfig,
     pub a: ObjectImage,
     pub b: ObjectImage,
     pub layout: Layout,
-    geometry: [Vec<Tri>; 2],
     /// What T.CHECK's error words need of both objects, once (it scans B's triangles).
     tri_side: TriSide,
 }
@@ -52,22 +53,36 @@ impl Chip {
     /// Errors name what is wrong (unsupported k, empty object, a coordinate outside the
     /// range the exact oracle is exact for).
     pub fn new(a: &[Tri], b: &[Tri], cfg: ChipConfig) -> Result<Chip, String> {
+        Chip::of(a.to_vec(), b.to_vec(), cfg)
+    }
+
+    /// [`Chip::new`] keeping `a` and `b` in the images as the host's geometry (no copy).
+    pub fn of(a: Vec<Tri>, b: Vec<Tri>, cfg: ChipConfig) -> Result<Chip, String> {
         cfg.check()?;
         if a.is_empty() || b.is_empty() {
             return Err("both objects need at least one triangle".into());
         }
-        oracle::check_range(a, "object A")?;
-        oracle::check_range(b, "object B")?;
+        oracle::check_range(&a, "object A")?;
+        oracle::check_range(&b, "object B")?;
         check_memory(a.len(), b.len(), cfg.k, crate::measure::memory_available())?;
         let (a_image, b_image) = (ObjectImage::build(a, &cfg), ObjectImage::build(b, &cfg));
         let tri_side = a_image.tri_side(&b_image);
-        Ok(Chip { cfg, a: a_image, b: b_image, layout: Layout::new(&cfg), geometry: [a.to_vec(), b.to_vec()], tri_side })
+        Ok(Chip { cfg, a: a_image, b: b_image, layout: Layout::new(&cfg), tri_side })
+    }
+
+    /// The host's f64 geometry of A (`0`) or B (`1`): the triangles the images were built from.
+    pub fn geometry(&self, object: usize) -> &[Tri] {
+        [&self.a, &self.b][object].geometry()
     }
 
     /// Ok iff B placed by `pose` stays in the range the exact oracle is exact for (a huge
     /// translation or a tiny rotation angle can leave it); check before [`Chip::query`].
     pub fn check_pose(&self, pose: &Pose) -> Result<(), String> {
-        oracle::check_range(&place(&self.geometry[1], pose), &format!("object B at pose {}", pose.text()))
+        let (r, t, b) = (pose.rotation(), pose.translation(), self.geometry(1));
+        // B placed one triangle at a time (a placed copy would be most of B's memory); the
+        // prefix up to the first triangle out of range, if any, names it
+        let bad = b.iter().position(|tri| tri.iter().any(|p| (r * p + t).iter().any(|&c| !oracle::in_range(c))));
+        bad.map_or(Ok(()), |i| oracle::check_range(&place(&b[..=i], pose), &format!("object B at pose {}", pose.text())))
     }
 
     pub fn setup(&self, pose: &Pose) -> HostSetup {
@@ -83,7 +98,7 @@ impl Chip {
     /// Word addresses the memory image spans on `memory` (its records as
     /// [`RecordMap`](crate::chip::layout::RecordMap) places them).
     pub fn image_span(&self, memory: &crate::chip::memory::Memory) -> u32 {
-        let records = [self.a.node_records(), self.b.node_records(), self.a.tris.len() as u32, self.b.tris.len() as u32];
+        let records = [self.a.node_records(), self.b.node_records(), self.a.tri_count() as u32, self.b.tri_count() as u32];
         crate::chip::layout::RecordMap::new(&self.layout, memory).extent(records)
     }
 
@@ -105,7 +120,7 @@ impl Chip {
 
     /// What the host settles uncertain pairs with at `pose`.
     pub fn host(&self, pose: &Pose) -> Host<'_> {
-        Host { a: &self.geometry[0], b: &self.geometry[1], rot: pose.rotation(), t: pose.translation() }
+        Host { a: self.geometry(0), b: self.geometry(1), rot: pose.rotation(), t: pose.translation() }
     }
 }
 
@@ -156,10 +171,21 @@ pub fn place(b: &[Tri], pose: &Pose) -> Vec<Tri> {
     b.iter().map(|tri| tri.map(|p| r * p + t)).collect()
 }
 
+/// B's triangles the exact oracle places and indexes at a time in [`exact_pairs`]: its
+/// placed copy and search tree (some 240 bytes a triangle) stay small beside the images.
+const ORACLE_CHUNK: usize = 1 << 18;
+
 /// The exact answer for B placed by `pose` against A: every intersecting pair of the f64
-/// geometry (the oracle's exact predicates).
+/// geometry (the oracle's exact predicates), sorted. B is placed and searched a chunk of
+/// [`ORACLE_CHUNK`] triangles at a time.
 pub fn exact_pairs(a: &[Tri], b: &[Tri], pose: &Pose) -> Vec<(u32, u32)> {
-    oracle::intersecting_pairs(a, &place(b, pose))
+    let mut pairs: Vec<(u32, u32)> = b
+        .chunks(ORACLE_CHUNK)
+        .zip((0..).step_by(ORACLE_CHUNK))
+        .flat_map(|(chunk, first)| oracle::intersecting_pairs(a, &place(chunk, pose)).into_iter().map(move |(i, j)| (i, j + first as u32)))
+        .collect();
+    pairs.sort_unstable();
+    pairs
 }
 
 /// Chip pairs against the exact pairs.
@@ -223,12 +249,12 @@ mod tests {
     /// what to do.
     #[test]
     fn memory_beyond_the_available_is_refused() {
-        let need = 2 * memory_estimate(1 << 20, 24);
-        assert_eq!(need, 2 * (1 << 20) * 960);
+        let need = memory_estimate(1 << 20, 1 << 20, 24);
+        assert_eq!(need, 2 * (1 << 20) * 352 + (1 << 18) * 256);
         check_memory(1 << 20, 1 << 20, 24, Some(need)).unwrap();
         check_memory(1 << 20, 1 << 20, 24, None).unwrap();
         let e = check_memory(1 << 20, 1 << 20, 24, Some(need - 1)).unwrap_err();
-        assert!(e.starts_with("objects of 1048576 and 1048576 triangles at k = 24 need about 1920 MB") && e.contains("CCHIP_MAX_MEMORY_MB"), "{e}");
+        assert!(e.starts_with("objects of 1048576 and 1048576 triangles at k = 24 need about 768 MB") && e.contains("CCHIP_MAX_MEMORY_MB"), "{e}");
     }
 
     #[test]

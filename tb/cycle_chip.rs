@@ -283,7 +283,7 @@ fn prefetch_keeps_requests_back_to_back_by_hand() {
     let p3 = |x: f64, y: f64| nalgebra::Point3::new(x, y, 0.0);
     let tris = vec![[p3(0.0, 0.0), p3(1.0, 0.0), p3(0.0, 1.0)], [p3(2.0, 0.0), p3(3.0, 0.0), p3(2.0, 1.0)]];
     let chip = Chip::new(&tris, &tris, CHIP_CONFIG).unwrap();
-    assert_eq!(chip.a.tree.nodes[0], Node::Inner([1, 2]), "the tree this derivation assumes");
+    assert_eq!(chip.a.tree.node(0), Node::Inner([1, 2]), "the tree this derivation assumes");
     let pose = Pose::new(0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     let base = chip.image_bases();
     let (na, nb) = (base[0], base[1]);

@@ -32,11 +32,11 @@ fn directions(f: Format, n: usize, pose: &Pose) -> Vec<Dir> {
     let chip = Chip::new(&a, &b, ChipConfig { format: f.into(), ..Default::default() }).unwrap();
     let setup: HostSetup = chip.setup(pose);
     let mut out = vec![];
-    for ta in &chip.a.tris {
-        for tb in &chip.b.tris {
+    for ta in chip.a.tris() {
+        for tb in chip.b.tris() {
             for (leaf, tri, ab) in [(tb, ta, true), (ta, tb, false)] {
                 let (frame, beta, scale) = setup.tri_frame(ab);
-                out.push((*leaf, *frame, beta, scale, *tri));
+                out.push((leaf, *frame, beta, scale, tri));
             }
         }
     }

@@ -177,7 +177,7 @@ proptest! {
         }
         // the stored DOP itself (f64 vertex enumeration, tolerance far below one format ulp)
         let (r, t) = (pose.rotation(), pose.translation());
-        let corners = dop_vertices(normals, d);
+        let corners = dop_vertices(normals, &d);
         prop_assert!(corners.len() >= 4, "only {} DOP vertices found", corners.len());
         for x in corners {
             let y = r * x + t;
@@ -231,7 +231,7 @@ proptest! {
         let bp = place(&[b], &pose)[0];
         let cfg = ChipConfig { format: if reduced { Format::REDUCED } else { Format::BINARY32 }.into(), ..Default::default() };
         let chip = Chip::new(&[a], &[b], cfg).unwrap();
-        let (wa, wb, setup) = (chip.a.tris[0], chip.b.tris[0], chip.setup(&pose));
+        let (wa, wb, setup) = (chip.a.tri(0), chip.b.tri(0), chip.setup(&pose));
         let got = tri_unit::tri_unit(cfg.format.tri, cfg.tri_rounding, &wa, &wb, &setup);
         let exact = oracle::tri_tri(&a, &bp);
         if !got.uncertain {
@@ -361,8 +361,8 @@ proptest! {
         let mut cache = dop_unit::TransformCache::new(cfg.format.dop, cfg.dop_rounding.op(), &setup, tb.len());
         for nb in 0..tb.len() as u32 {
             for na in 0..ta.len() as u32 {
-                let fast = cache.overlap(nb, tb.dop(nb), ta.dop(na));
-                prop_assert_eq!(fast, dop_unit::dop_overlap(cfg.format.dop, cfg.dop_rounding.op(), &setup, tb.dop(nb), ta.dop(na)));
+                let fast = cache.overlap(nb, &tb.dop(nb), &ta.dop(na));
+                prop_assert_eq!(fast, dop_unit::dop_overlap(cfg.format.dop, cfg.dop_rounding.op(), &setup, &tb.dop(nb), &ta.dop(na)));
             }
         }
     }
@@ -385,7 +385,7 @@ fn dop_unit_keeps_and_culls() {
                     let setup = HostSetup::new(&cfg, &pose, tb.coord_bound(), TriSide::UNUSED);
                     for nb in 0..tb.len() as u32 {
                         for na in 0..ta.len() as u32 {
-                            overlaps += dop_unit::dop_overlap(format, dop_rounding.op(), &setup, tb.dop(nb), ta.dop(na)) as u32;
+                            overlaps += dop_unit::dop_overlap(format, dop_rounding.op(), &setup, &tb.dop(nb), &ta.dop(na)) as u32;
                             total += 1;
                         }
                     }
@@ -411,7 +411,7 @@ fn tri_unit_fast_path_equals_reference_on_hard_cases() {
         for (pose, format) in moved.iter().flat_map(|p| [(p, Format::BINARY32), (p, Format::REDUCED), (p, tiny)]) {
             let cfg = ChipConfig { format: format.into(), ..Default::default() };
             let chip = Chip::new(&case.a, &case.b, cfg).unwrap();
-            let (wa, wb, setup) = (&chip.a.tris, &chip.b.tris, chip.setup(pose));
+            let (wa, wb, setup) = (chip.a.tris().collect::<Vec<_>>(), chip.b.tris().collect::<Vec<_>>(), chip.setup(pose));
             let mut unit = tri_unit::TriUnit::new(format, cfg.tri_rounding, &setup, wa.len(), wb.len());
             for (i, a) in wa.iter().enumerate() {
                 for (j, b) in wb.iter().enumerate() {
@@ -428,10 +428,10 @@ fn tri_unit_fast_path_equals_reference_on_hard_cases() {
 /// Parent of every node (None for the root).
 fn parents(tree: &DopTree) -> Vec<Option<u32>> {
     let mut p = vec![None; tree.len()];
-    for (i, n) in tree.nodes.iter().enumerate() {
+    for (i, n) in tree.nodes().enumerate() {
         if let collision_chip::dop::Node::Inner(ch) = n {
             for c in ch {
-                p[*c as usize] = Some(i as u32);
+                p[c as usize] = Some(i as u32);
             }
         }
     }
@@ -439,7 +439,7 @@ fn parents(tree: &DopTree) -> Vec<Option<u32>> {
 }
 
 fn leaf_of(tree: &DopTree, tri: u32) -> u32 {
-    tree.nodes.iter().position(|n| *n == collision_chip::dop::Node::Leaf(tri)).unwrap() as u32
+    tree.nodes().position(|n| n == collision_chip::dop::Node::Leaf(tri)).unwrap() as u32
 }
 
 fn path(parent: &[Option<u32>], mut n: u32) -> Vec<u32> {
@@ -478,7 +478,7 @@ fn outward_dop_test_never_culls_a_contact() {
             for (ta, tb) in oracle::intersecting_pairs(&case.a, &place(&case.b, &case.pose)) {
                 for na in path(&pa, leaf_of(&chip.a.tree, ta)) {
                     for nb in path(&pb, leaf_of(&chip.b.tree, tb)) {
-                        let o = dop_unit::dop_overlap(format, rounding.op(), &setup, chip.b.tree.dop(nb), chip.a.tree.dop(na));
+                        let o = dop_unit::dop_overlap(format, rounding.op(), &setup, &chip.b.tree.dop(nb), &chip.a.tree.dop(na));
                         if rounding == DopRounding::Outward {
                             assert!(o, "{}: k={k} {format}: contact ({ta}, {tb}) culled at nodes ({na}, {nb})", case.name);
                             checked += 1;
@@ -571,7 +571,7 @@ fn a_dop_format_apart_keeps_each_datapath_its_own() {
         assert_eq!(c.memory_bytes, 81 * c.node_fetches + 93 * c.tri_fetches);
         let setup = tri.setup(pose);
         for &(a, b) in &r.uncertain {
-            let v = tri_unit::tri_unit(Format::BINARY32, Rounding::NearestEven, &tri.a.tris[a as usize], &tri.b.tris[b as usize], &setup);
+            let v = tri_unit::tri_unit(Format::BINARY32, Rounding::NearestEven, &tri.a.tri(a), &tri.b.tri(b), &setup);
             assert!(v.uncertain, "({a}, {b}) at {}: binary32 decides it, the split chip does not", pose.text());
         }
         (uncertain, dop_uncertain) = (uncertain + c.uncertain, dop_uncertain + g.uncertain);

@@ -186,12 +186,12 @@ fn tri_unit_verdicts(case: &Case, format: Format) -> Vec<((u32, u32), Verdict)> 
     let cfg = ChipConfig { format: format.into(), ..Default::default() };
     let chip = Chip::new(&case.a, &case.b, cfg).unwrap();
     let setup = chip.setup(&case.pose);
-    let mut unit = TriUnit::new(format, cfg.tri_rounding, &setup, chip.a.tris.len(), chip.b.tris.len());
+    let mut unit = TriUnit::new(format, cfg.tri_rounding, &setup, chip.a.tri_count(), chip.b.tri_count());
     let mut out = Vec::new();
-    for (i, wa) in chip.a.tris.iter().enumerate() {
-        for (j, wb) in chip.b.tris.iter().enumerate() {
+    for (i, wa) in chip.a.tris().enumerate() {
+        for (j, wb) in chip.b.tris().enumerate() {
             let (i, j) = (i as u32, j as u32);
-            out.push(((i, j), Verdict::of(unit.test(i, wa, j, wb))));
+            out.push(((i, j), Verdict::of(unit.test(i, &wa, j, &wb))));
         }
     }
     out

@@ -35,7 +35,7 @@ fn the_estimate_bounds_the_peak() {
     // SAFETY: `ru` is a valid rusage for getrusage to write.
     assert_eq!(unsafe { libc::getrusage(libc::RUSAGE_CHILDREN, &mut ru) }, 0);
     let peak = ru.ru_maxrss as u64 * 1024; // kB on Linux
-    let estimate = 2 * collision_chip::query::memory_estimate(200_000, 24);
+    let estimate = collision_chip::query::memory_estimate(200_000, 200_000, 24);
     // the process's own baseline (code, the vendored meshes) is not per triangle
     let baseline = 64 << 20;
     assert!(peak <= estimate + baseline, "peak {} MB > estimate {} MB + 64 MB", peak >> 20, estimate >> 20);

@@ -302,7 +302,7 @@ fn unit_trees<U: Unit>(make: impl Fn(Rounding) -> U, fmt: Format, r: Rounding, n
                 e: e.iter().map(|&x| fmt.to_bits(x)).collect(),
                 tag: (pairs.len() as u16).wrapping_mul(40503) ^ 0x5a5a,
             });
-            want.push(dop_unit::dop_overlap(fmt, r, &setup, d, e));
+            want.push(dop_unit::dop_overlap(fmt, r, &setup, &d, &e));
         }
     }
     let mut uut = make(r);

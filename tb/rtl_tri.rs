@@ -100,9 +100,9 @@ fn scene_pairs(f: Format, a: &[Tri], b: &[Tri], pose: &Pose) -> Vec<(TriWord, Tr
     let chip = Chip::new(a, b, ChipConfig { format: f.into(), ..Default::default() }).unwrap();
     let setup = chip.setup(pose);
     let mut out = vec![];
-    for ta in &chip.a.tris {
-        for tb in &chip.b.tris {
-            out.push((ta.clone(), tb.clone(), setup.clone()));
+    for ta in chip.a.tris() {
+        for tb in chip.b.tris() {
+            out.push((ta, tb, setup.clone()));
         }
     }
     out

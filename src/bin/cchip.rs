@@ -441,7 +441,7 @@ fn run(path: Option<PathBuf>, o: RunOpts) -> Result<(), String> {
         return Ok(());
     }
     let prepared = Prepared::new(&scene, |spec| load(spec, scene.objects.unit_cube))?;
-    let (ta, tb) = (&prepared.a, &prepared.b);
+    let (ta, tb) = (prepared.chip.geometry(0), prepared.chip.geometry(1));
     if !o.json {
         println!(
             "scene: {}\n  A = {} ({} triangles), B = {} ({} triangles){}\n  chip: k={} format={} dop-rounding={}; {} traversal, {} mode; {} poses\n  clock: {}",

@@ -177,7 +177,7 @@ impl<'a> Chip<'a> {
     ) -> Result<Self, String> {
         p.check()?;
         let dop_values = dop_unit::TransformCache::new(cfg.format.dop, cfg.dop_rounding.op(), setup, b.tree.len());
-        let tri_values = tri_unit::TriUnit::new(cfg.format.tri, cfg.tri_rounding, setup, a.tris.len(), b.tris.len());
+        let tri_values = tri_unit::TriUnit::new(cfg.format.tri, cfg.tri_rounding, setup, a.tri_count(), b.tri_count());
         let queue = QueueModel::with_capacity(p.queue_entries as usize);
         let mut chip = Chip {
             p,

@@ -33,8 +33,8 @@ impl<'a> DopUnit<'a> {
 
     /// Takes the pair at edge `now`: B's node word as d, A's as e.
     pub fn issue(&mut self, now: u64, pair: Pair) {
-        let (na, nb) = (self.a.tree.nodes[pair.a as usize], self.b.tree.nodes[pair.b as usize]);
-        let overlap = self.values.overlap(pair.b, self.b.tree.dop(pair.b), self.a.tree.dop(pair.a));
+        let (na, nb) = (self.a.tree.node(pair.a), self.b.tree.node(pair.b));
+        let overlap = self.values.overlap(pair.b, &self.b.tree.dop(pair.b), &self.a.tree.dop(pair.a));
         self.pipe.push(now, DopResult { pair, na, nb, overlap });
     }
 

@@ -75,7 +75,7 @@ impl<'a> TriUnit<'a> {
     /// Takes the pair of triangles `(ta, tb)` at edge `now`.
     pub fn take(&mut self, now: u64, ta: u32, tb: u32) {
         self.first.get_or_insert(now);
-        let res = self.values.test(ta, &self.a.tris[ta as usize], tb, &self.b.tris[tb as usize]);
+        let res = self.values.test(ta, &self.a.tri(ta), tb, &self.b.tri(tb));
         self.open.push(now, TriOut { a: ta, b: tb, res });
     }
 

@@ -3,6 +3,8 @@
 
 pub mod normals;
 pub mod tree;
+pub mod values;
 
 pub use normals::DopNormals;
-pub use tree::{DopTree, Node};
+pub use tree::{Dop, DopTree, Node};
+pub use values::Values;

@@ -4,8 +4,9 @@
 //! the `nearest-even` mode).
 
 use super::normals::DopNormals;
-use crate::chip::config::{ChipConfig, DopRounding};
-use crate::format::Rounding;
+use super::values::Values;
+use crate::chip::config::{ChipConfig, DopRounding, SUPPORTED_K};
+use crate::format::{Format, Rounding};
 use nalgebra::Point3;
 
 pub type Tri = [Point3<f64>; 3];
@@ -18,32 +19,67 @@ pub enum Node {
     Leaf(u32),
 }
 
+/// Inner nodes hold their k distances; a leaf's are its triangle's, rounded when read
+/// ([`DopTree::dop`]): a leaf DOP per triangle held would be half of a large object's memory
+/// (README, "Limits"), and reading one costs k supports of three vertices.
 #[derive(Clone, Debug)]
 pub struct DopTree {
     pub k: usize,
-    /// Node i's k distances at `dops[i*k .. (i+1)*k]`, values of the chip format.
-    dops: Vec<f64>,
-    /// Pre-order: the root is node 0.
-    pub nodes: Vec<Node>,
+    /// The j-th inner node's (pre-order) k distances at `j*k .. (j+1)*k`, values of the
+    /// chip's DOP format held in the narrowest float that holds them ([`Values`]).
+    dops: Values,
+    /// Node i in pre-order (the root is node 0, an inner node's first child the next
+    /// node): an inner node's rank j among the inner nodes, or a leaf's triangle with
+    /// [`LEAF`] set.
+    links: Vec<u32>,
+    /// The j-th inner node's second child.
+    second: Vec<u32>,
+    /// The triangles, in the object's frame, by triangle index.
+    tris: Vec<Tri>,
+    normals: &'static DopNormals,
+    fmt: Format,
+    rounding: Rounding,
     /// Number of levels (a single leaf has depth 1).
     pub depth: usize,
+}
+
+/// The bit of a leaf in [`DopTree`]'s links (so trees of up to 2^31 nodes).
+const LEAF: u32 = 1 << 31;
+
+/// The largest k of [`SUPPORTED_K`].
+const MAX_K: usize = SUPPORTED_K[SUPPORTED_K.len() - 1];
+
+/// A node's k distances as f64s, read out of its tree ([`DopTree::dop`]).
+#[derive(Clone, Copy, Debug)]
+pub struct Dop {
+    d: [f64; MAX_K],
+    k: usize,
+}
+
+impl std::ops::Deref for Dop {
+    type Target = [f64];
+    fn deref(&self) -> &[f64] {
+        &self.d[..self.k]
+    }
 }
 
 impl DopTree {
     pub const ROOT: u32 = 0;
 
+    /// [`DopTree::of`] a copy of `tris`.
+    pub fn build(tris: &[Tri], cfg: &ChipConfig) -> DopTree {
+        DopTree::of(tris.to_vec(), cfg)
+    }
+
     /// Builds the tree by recursive median split of the triangle centroids along the
     /// longest axis of their bounding box (ties broken by index, so the build is
-    /// deterministic). `tris` must not be empty.
-    pub fn build(tris: &[Tri], cfg: &ChipConfig) -> DopTree {
+    /// deterministic); the tree keeps `tris`, which must not be empty.
+    ///
+    /// A leaf's distances are its triangle's f64 supports rounded into the format, a
+    /// parent's the max of its children's rounded distances: rounding is monotone, so this
+    /// is the rounded max of the children's supports.
+    pub fn of(tris: Vec<Tri>, cfg: &ChipConfig) -> DopTree {
         assert!(!tris.is_empty(), "DOP tree of an empty mesh");
-        let normals = DopNormals::get(cfg.k).expect("k validated by the caller");
-        let k = cfg.k;
-        // Exact-or-above f64 support of every triangle along every normal.
-        let support: Vec<f64> = tris
-            .iter()
-            .flat_map(|t| normals.b.iter().map(move |b| tri_support(t, b)))
-            .collect();
         let centroids: Vec<[f64; 3]> = tris
             .iter()
             .map(|t| {
@@ -51,28 +87,86 @@ impl DopTree {
                 [c.x, c.y, c.z]
             })
             .collect();
-        let mut b = Builder { k, support: &support, centroids: &centroids, nodes: vec![], raw: vec![], depth: 0 };
-        let mut idx: Vec<u32> = (0..tris.len() as u32).collect();
-        b.build(&mut idx, 1);
-        let rnd = match cfg.dop_rounding {
+        let rounding = match cfg.dop_rounding {
             DopRounding::Outward => Rounding::TowardPositive,
             DopRounding::NearestEven => Rounding::NearestEven,
         };
-        let dops = b.raw.iter().map(|&x| cfg.format.dop.round(x, rnd)).collect();
-        DopTree { k, dops, nodes: b.nodes, depth: b.depth }
+        let (n, k) = (tris.len(), cfg.k);
+        let mut tree = DopTree {
+            k,
+            dops: Values::new(cfg.format.dop, (n - 1) * k),
+            links: Vec::with_capacity(2 * n - 1),
+            second: Vec::with_capacity(n - 1),
+            tris,
+            normals: DopNormals::get(k).expect("k validated by the caller"),
+            fmt: cfg.format.dop,
+            rounding,
+            depth: 0,
+        };
+        let mut idx: Vec<u32> = (0..n as u32).collect();
+        tree.grow(&centroids, &mut idx, 1);
+        tree
     }
 
-    pub fn dop(&self, node: u32) -> &[f64] {
-        let i = node as usize * self.k;
-        &self.dops[i..i + self.k]
+    pub fn dop(&self, node: u32) -> Dop {
+        let mut d = [0.0; MAX_K];
+        match self.links[node as usize] {
+            l if l & LEAF != 0 => self.leaf_dop(&self.tris[(l & !LEAF) as usize], &mut d[..self.k]),
+            j => {
+                let at = j as usize * self.k;
+                d[..self.k].iter_mut().enumerate().for_each(|(i, x)| *x = self.dops.get(at + i));
+            }
+        }
+        Dop { d, k: self.k }
+    }
+
+    /// The distances of triangle `t`'s leaf: max over the vertices of B.v along each normal B,
+    /// computed in f64 and padded so that it is >= the exact value (B has entries in
+    /// {-1, 0, 1}, so B.v is at most two f64 additions, each off by at most 2^-53 of a partial
+    /// sum bounded by sum |v_i|: 2^-52 sum |v_i| covers both and the padding's addition),
+    /// rounded into the format. The
+    /// second half of the normals negates the first (`B_{i+k/2} = -B_i`), and negation is
+    /// exact in every f64 operation of the support, so one pass over the first half gives
+    /// both: the support along -B_i is the max of `-(B_i . v)` plus the same padding.
+    fn leaf_dop(&self, t: &Tri, d: &mut [f64]) {
+        let h = self.k / 2;
+        for (i, b) in self.normals.b[..h].iter().enumerate() {
+            let (mut up, mut down) = (f64::NEG_INFINITY, f64::NEG_INFINITY);
+            for v in t {
+                let s = b.dot(&v.coords);
+                let pad = v.coords.abs().dot(&b.abs()) * f64::EPSILON;
+                (up, down) = (up.max(s + pad), down.max(-s + pad));
+            }
+            d[i] = self.fmt.round(up, self.rounding);
+            d[i + h] = self.fmt.round(down, self.rounding);
+        }
+    }
+
+    /// Node `n`.
+    #[inline]
+    pub fn node(&self, n: u32) -> Node {
+        match self.links[n as usize] {
+            l if l & LEAF != 0 => Node::Leaf(l & !LEAF),
+            j => Node::Inner([n + 1, self.second[j as usize]]),
+        }
+    }
+
+    /// Every node, in pre-order.
+    pub fn nodes(&self) -> impl Iterator<Item = Node> + '_ {
+        (0..self.len() as u32).map(|n| self.node(n))
+    }
+
+    /// The triangles, by triangle index.
+    pub fn tris(&self) -> &[Tri] {
+        &self.tris
     }
 
     pub fn len(&self) -> usize {
-        self.nodes.len()
+        self.links.len()
     }
 
     pub fn is_empty(&self) -> bool {
-        self.nodes.is_empty()
+        self.links.is_empty()
     }
 
     /// A bound X with |x|_inf <= X for every point of every node DOP (from the root's
@@ -82,68 +176,76 @@ impl DopTree {
         let h = self.k / 2;
         (0..3).map(|a| d[a].abs().max(d[a + h].abs())).fold(0.0, f64::max)
     }
-}
 
-/// max over the vertices of B.v, computed in f64 and padded so that it is >= the exact
-/// value: B has entries in {-1, 0, 1}, so B.v is at most two f64 additions, each off by at
-/// most 2^-53 of a partial sum bounded by sum |v_i|.
-fn tri_support(t: &Tri, b: &nalgebra::Vector3<f64>) -> f64 {
-    t.iter()
-        .map(|v| {
-            let s = b.dot(&v.coords);
-            let mag = v.coords.abs().dot(&b.abs());
-            s + mag * f64::EPSILON // 2^-52 * mag covers both additions and this one
-        })
-        .fold(f64::NEG_INFINITY, f64::max)
-}
-
-struct Builder<'a> {
-    k: usize,
-    support: &'a [f64],
-    centroids: &'a [[f64; 3]],
-    nodes: Vec<Node>,
-    raw: Vec<f64>,
-    depth: usize,
-}
-
-impl Builder<'_> {
-    fn build(&mut self, idx: &mut [u32], level: usize) -> u32 {
+    /// Adds the subtree of the triangles `idx` in pre-order; its root's number.
+    fn grow(&mut self, centroids: &[[f64; 3]], idx: &mut [u32], level: usize) -> u32 {
         self.depth = self.depth.max(level);
-        let me = self.nodes.len() as u32;
-        let k = self.k;
+        let me = self.links.len() as u32;
         if idx.len() == 1 {
-            self.nodes.push(Node::Leaf(idx[0]));
-            let t = idx[0] as usize;
-            self.raw.extend_from_slice(&self.support[t * k..(t + 1) * k]);
+            self.links.push(idx[0] | LEAF);
             return me;
         }
-        self.nodes.push(Node::Inner([0, 0]));
-        self.raw.extend(std::iter::repeat_n(f64::NEG_INFINITY, k));
-        let axis = self.split_axis(idx);
-        let c = self.centroids;
-        idx.sort_unstable_by(|&p, &q| {
-            c[p as usize][axis].total_cmp(&c[q as usize][axis]).then(p.cmp(&q))
-        });
+        let (j, k) = (self.second.len(), self.k);
+        self.links.push(j as u32);
+        self.second.push(0);
+        (0..k).for_each(|_| self.dops.push(f64::NEG_INFINITY));
+        let axis = split_axis(centroids, idx);
+        idx.sort_unstable_by(|&p, &q| centroids[p as usize][axis].total_cmp(&centroids[q as usize][axis]).then(p.cmp(&q)));
         let (lo, hi) = idx.split_at_mut(idx.len() / 2);
-        let l = self.build(lo, level + 1);
-        let r = self.build(hi, level + 1);
-        self.nodes[me as usize] = Node::Inner([l, r]);
-        for j in 0..k {
-            let m = self.raw[l as usize * k + j].max(self.raw[r as usize * k + j]);
-            self.raw[me as usize * k + j] = m;
-        }
+        let l = self.grow(centroids, lo, level + 1);
+        let r = self.grow(centroids, hi, level + 1);
+        debug_assert_eq!(l, me + 1, "pre-order");
+        self.second[j] = r;
+        let (dl, dr) = (self.dop(l), self.dop(r));
+        (0..k).for_each(|i| self.dops.set(j * k + i, dl[i].max(dr[i])));
         me
     }
+}
 
-    fn split_axis(&self, idx: &[u32]) -> usize {
-        let mut lo = [f64::INFINITY; 3];
-        let mut hi = [f64::NEG_INFINITY; 3];
-        for &i in idx {
-            for a in 0..3 {
-                lo[a] = lo[a].min(self.centroids[i as usize][a]);
-                hi[a] = hi[a].max(self.centroids[i as usize][a]);
+fn split_axis(centroids: &[[f64; 3]], idx: &[u32]) -> usize {
+    let mut lo = [f64::INFINITY; 3];
+    let mut hi = [f64::NEG_INFINITY; 3];
+    for &i in idx {
+        for a in 0..3 {
+            lo[a] = lo[a].min(centroids[i as usize][a]);
+            hi[a] = hi[a].max(centroids[i as usize][a]);
+        }
+    }
+    (0..3).max_by(|&a, &b| (hi[a] - lo[a]).total_cmp(&(hi[b] - lo[b])).then(b.cmp(&a))).unwrap()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use nalgebra::Vector3;
+
+    /// Another formulation of a leaf's distances: each normal on its own, as the tree held
+    /// them before leaves were computed when read.
+    fn tri_support(t: &Tri, b: &Vector3<f64>) -> f64 {
+        t.iter().map(|v| b.dot(&v.coords) + v.coords.abs().dot(&b.abs()) * f64::EPSILON).fold(f64::NEG_INFINITY, f64::max)
+    }
+
+    /// Every leaf of random soups (and a triangle on the axes through the origin, whose
+    /// supports are signed zeros) equals the per-normal support rounded, for every k and
+    /// both roundings; a parent is the max of its children.
+    #[test]
+    fn leaves_are_their_supports_rounded() {
+        let mut tris = crate::mesh::soup(40, 3).triangles_f64();
+        tris.push([Point3::origin(), Point3::new(1.0, 0.0, 0.0), Point3::new(0.0, -0.0, 1.0)]);
+        for k in SUPPORTED_K {
+            for dop_rounding in [DopRounding::Outward, DopRounding::NearestEven] {
+                let cfg = ChipConfig { k, dop_rounding, ..ChipConfig::default() };
+                let tree = DopTree::build(&tris, &cfg);
+                let rnd = if dop_rounding == DopRounding::Outward { Rounding::TowardPositive } else { Rounding::NearestEven };
+                for n in 0..tree.len() as u32 {
+                    let d = tree.dop(n);
+                    let want: Vec<f64> = match tree.node(n) {
+                        Node::Leaf(t) => tree.normals.b.iter().map(|b| cfg.format.dop.round(tri_support(&tris[t as usize], b), rnd)).collect(),
+                        Node::Inner([l, r]) => (0..k).map(|j| tree.dop(l)[j].max(tree.dop(r)[j])).collect(),
+                    };
+                    assert_eq!(d.iter().map(|x| x.to_bits()).collect::<Vec<_>>(), want.iter().map(|x| x.to_bits()).collect::<Vec<_>>(), "k = {k}, node {n}");
+                }
             }
         }
-        (0..3).max_by(|&a, &b| (hi[a] - lo[a]).total_cmp(&(hi[b] - lo[b])).then(b.cmp(&a))).unwrap()
     }
 }

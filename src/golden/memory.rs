@@ -138,8 +138,10 @@ pub struct ObjectImage {
     pub tree: DopTree,
     /// [`object_scale`] of its triangles in T.CHECK's format.
     pub scale: f64,
-    /// Indexed by triangle index.
-    pub tris: Vec<TriWord>,
+    /// T.CHECK's format, the triangle words'.
+    tri_format: Format,
+    /// The largest [`TriWord::lambda`] of the object's triangles.
+    lambda_max: f64,
     /// The record of each node in the configuration's layout
     /// ([`node_records`](crate::chip::layout::node_records)).
     pub records: Vec<u32>,
@@ -150,20 +152,41 @@ pub struct ObjectImage {
 }
 
 impl ObjectImage {
-    /// `tris` must not be empty (mesh loaders reject empty meshes).
-    pub fn build(tris: &[Tri], cfg: &ChipConfig) -> ObjectImage {
-        let scale = object_scale(tris, cfg.format.tri);
-        let tree = DopTree::build(tris, cfg);
-        let children: Vec<_> = tree.nodes.iter().map(|n| if let Node::Inner(c) = n { Some(*c) } else { None }).collect();
-        let leaves: Vec<u32> = tree.nodes.iter().filter_map(|n| if let Node::Leaf(t) = n { Some(*t) } else { None }).collect();
-        ObjectImage {
-            records: node_records(cfg.layout, &children),
-            ids: node_ids(cfg.layout, &children),
-            tri_records: tri_records(cfg.layout, &leaves),
-            tree,
-            scale,
-            tris: tris.iter().map(|t| TriWord::new(t, cfg.format.tri, scale)).collect(),
-        }
+    /// `tris` must not be empty (mesh loaders reject empty meshes); the tree keeps them,
+    /// the image's [`geometry`](ObjectImage::geometry).
+    pub fn build(tris: Vec<Tri>, cfg: &ChipConfig) -> ObjectImage {
+        let fmt = cfg.format.tri;
+        let scale = object_scale(&tris, fmt);
+        let lambda_max = tris.iter().map(|t| TriWord::new(t, fmt, scale).lambda).fold(0.0, f64::max);
+        let tree = DopTree::of(tris, cfg);
+        let children: Vec<_> = tree.nodes().map(|n| if let Node::Inner(c) = n { Some(c) } else { None }).collect();
+        let leaves: Vec<u32> = tree.nodes().filter_map(|n| if let Node::Leaf(t) = n { Some(t) } else { None }).collect();
+        let (records, ids, tri_records) = (node_records(cfg.layout, &children), node_ids(cfg.layout, &children), tri_records(cfg.layout, &leaves));
+        drop((children, leaves));
+        ObjectImage { tree, scale, tri_format: fmt, lambda_max, records, ids, tri_records }
+    }
+
+    /// Triangle `t`'s word. Made from the f64 triangle when read, as the host made it
+    /// for the memory image: a word per triangle held would be most of a large object's
+    /// memory (README, "Limits").
+    pub fn tri(&self, t: u32) -> TriWord {
+        TriWord::new(&self.geometry()[t as usize], self.tri_format, self.scale)
+    }
+
+    /// Triangles of the object.
+    pub fn tri_count(&self) -> usize {
+        self.geometry().len()
+    }
+
+    /// Every triangle word, by triangle index.
+    pub fn tris(&self) -> impl Iterator<Item = TriWord> + '_ {
+        (0..self.tri_count() as u32).map(|t| self.tri(t))
+    }
+
+    /// The host's f64 triangles, by triangle index: the input the exact oracle judges, and
+    /// what the triangle words are made from when read ([`ObjectImage::tri`]).
+    pub fn geometry(&self) -> &[Tri] {
+        self.tree.tris()
     }
 
     /// The record holding node `n`.
@@ -184,20 +207,20 @@ impl ObjectImage {
     /// What T.CHECK's error words need of A (`self`) and B for
     /// [`HostSetup::new`](crate::golden::host::HostSetup::new).
     pub fn tri_side(&self, b: &ObjectImage) -> TriSide {
-        TriSide { scale: [self.scale, b.scale], lambda_max_b: b.tris.iter().map(|t| t.lambda).fold(0.0, f64::max) }
+        TriSide { scale: [self.scale, b.scale], lambda_max_b: b.lambda_max }
     }
 
     /// Bytes of this object's image in memory.
     pub fn bytes(&self, layout: &Layout) -> u64 {
         let [node, tri] = layout.record_bytes();
-        self.node_records() as u64 * node + self.tris.len() as u64 * tri
+        self.node_records() as u64 * node + self.tri_count() as u64 * tri
     }
 }
 
 /// Record numbers of A's and B's first node and triangle records in the memory image of `a`
 /// and `b` (by [`Dst`](crate::chip::layout::Dst), [`image_bases`](crate::chip::layout::image_bases)).
 pub fn image_bases(a: &ObjectImage, b: &ObjectImage) -> [u32; 4] {
-    crate::chip::layout::image_bases(a.node_records(), a.tris.len() as u32, b.node_records())
+    crate::chip::layout::image_bases(a.node_records(), a.tri_count() as u32, b.node_records())
 }
 
 /// An object's scale S for T.CHECK's certificate: the power of two at or above its largest

@@ -98,7 +98,7 @@ fn put_node_word(w: &mut Word, at: usize, kind: ChipKind, layout: MemLayout, obj
     for (i, &d) in obj.tree.dop(n).iter().enumerate() {
         put(w, at + 1 + i * w_, w_, f.to_bits(d));
     }
-    let (leaf, f0, f1) = match obj.tree.nodes[n as usize] {
+    let (leaf, f0, f1) = match obj.tree.node(n) {
         Node::Inner([c0, c1]) => (false, obj.ids[c0 as usize], obj.ids[c1 as usize]),
         Node::Leaf(t) if layout == MemLayout::Records => (true, t, obj.tri_record(t)),
         Node::Leaf(t) => (true, t, 0),
@@ -119,9 +119,9 @@ fn object_words(kind: ChipKind, layout: MemLayout, obj: &ObjectImage) -> [Vec<Wo
         let slot = if layout == MemLayout::Records { obj.ids[n as usize] as usize & 1 } else { 0 };
         put_node_word(&mut nodes[obj.record(n) as usize], slot * node_bits, kind, layout, obj, n);
     }
-    let mut tris = vec![vec![]; obj.tris.len()];
-    for (t, tri) in obj.tris.iter().enumerate() {
-        tris[obj.tri_record(t as u32) as usize] = tri_word(kind, &LeafIn::of(f.tri, tri));
+    let mut tris = vec![vec![]; obj.tri_count()];
+    for (t, tri) in obj.tris().enumerate() {
+        tris[obj.tri_record(t as u32) as usize] = tri_word(kind, &LeafIn::of(f.tri, &tri));
     }
     [nodes, tris]
 }
@@ -677,7 +677,7 @@ mod tests {
         let q = queries().into_iter().find(|q| q.name == "sphere_fifo_all").unwrap();
         let p = q.prepare().unwrap();
         let a = &p.chip.a;
-        assert_eq!(p.image.memory.len(), 2 * a.tree.len() + 2 * a.tris.len(), "A and B are the same sphere");
+        assert_eq!(p.image.memory.len(), 2 * a.tree.len() + 2 * a.tri_count(), "A and B are the same sphere");
         let f = ChipKind::K6E8m15.config().format.dop;
         let w = &p.image.memory[0];
         let field = |w: &Word, at: usize, bits: usize| (0..bits).fold(0u64, |v, k| v | (w[(at + k) / 64] >> ((at + k) % 64) & 1) << k);
@@ -697,10 +697,10 @@ mod tests {
         assert!(p.image.memory[..a.tree.len()].iter().all(|w| field(w, NODE_BITS, 64) == 0 && field(w, NODE_BITS + 64, MEM_BITS - NODE_BITS - 64) == 0));
         assert_eq!(field(w, 0, 1), 0, "the root is inner");
         assert_eq!(field(w, 1 + 2 * W, W), f.to_bits(a.tree.dop(0)[2]));
-        let Node::Inner([c0, c1]) = a.tree.nodes[0] else { panic!() };
+        let Node::Inner([c0, c1]) = a.tree.node(0) else { panic!() };
         assert_eq!((field(w, 145, 32), field(w, 177, 32)), (c0 as u64, c1 as u64));
         let t = &p.image.memory[a.tree.len() + 3];
-        let l = LeafIn::of(f, &a.tris[3]);
+        let l = LeafIn::of(f, &a.tri(3));
         assert_eq!(field(t, 4 * W, W), l.v[1][1]);
         assert_eq!(field(t, 9 * W + 5 * W, W), l.m[5]);
         assert_eq!(field(t, 22 * W, W), l.alpha_f);

@@ -140,7 +140,7 @@ fn vector_scene(f: Format, n: usize) -> (Vec<TriWord>, Vec<TriWord>, HostSetup) 
     let b = crate::mesh::soup(n, 22).triangles_f64();
     let chip = crate::query::Chip::new(&a, &b, ChipConfig { format: f.into(), ..Default::default() }).expect("two non-empty soups");
     let setup = chip.setup(&Pose::new(23.0, -61.0, 11.0, 0.05, -0.08, 0.03));
-    (chip.a.tris, chip.b.tris, setup)
+    (chip.a.tris().collect(), chip.b.tris().collect(), setup)
 }
 
 fn hexw(f: Format, w: u64) -> String {
@@ -204,9 +204,9 @@ pub fn tcheck_vectors(name: &str, f: Format, r: Rounding, latency: usize, interv
     for case in crate::hard_cases::load_catalogue().expect("the hard-case catalogue loads") {
         let chip = crate::query::Chip::new(&case.a, &case.b, crate::chip::config::ChipConfig { format: f.into(), ..Default::default() }).expect("catalogue objects are non-empty");
         let setup = chip.setup(&case.pose);
-        for ta in &chip.a.tris {
-            for tb in &chip.b.tris {
-                triples.push((ta.clone(), tb.clone(), setup.clone()));
+        for ta in chip.a.tris() {
+            for tb in chip.b.tris() {
+                triples.push((ta, tb, setup.clone()));
             }
         }
     }

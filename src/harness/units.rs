@@ -327,8 +327,8 @@ fn dop_unit_vectors(name: &str, k: usize, fmt: Format) -> String {
     for nb in 0..tb.len() as u32 {
         for na in 0..ta.len() as u32 {
             let (d, e) = (tb.dop(nb), ta.dop(na));
-            let overlap = crate::golden::dop_unit::dop_overlap(fmt, r, &setup, d, e);
-            let vals: Vec<String> = d.iter().chain(e).map(|&x| hex(fmt, x)).collect();
+            let overlap = crate::golden::dop_unit::dop_overlap(fmt, r, &setup, &d, &e);
+            let vals: Vec<String> = d.iter().chain(e.iter()).map(|&x| hex(fmt, x)).collect();
             let _ = writeln!(out, "{} {tag:04x} {} {tag:04x}", vals.join(" "), overlap as u8);
             tag = tag.wrapping_add(1);
         }

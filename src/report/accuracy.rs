@@ -266,7 +266,7 @@ pub fn study(plan: &Plan, index: usize, tris: &[Tri], shard: Shard, progress: im
             let mut causes = [0u64; 3];
             for &(a, b) in &r.uncertain {
                 let (a, b) = (a as usize, b as usize);
-                causes[Cause::of(&chip.a.tris[a], &chip.b.tris[b], &tris[a], &placed[b]) as usize] += 1;
+                causes[Cause::of(&chip.a.tri(a as u32), &chip.b.tri(b as u32), &tris[a], &placed[b]) as usize] += 1;
             }
             let h = chip.host_time(&sp.pose, &r.uncertain);
             Ok((

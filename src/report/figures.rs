@@ -338,7 +338,7 @@ fn measure(plan: &Plan, runs: &Runs, bar: &ProgressBar) -> Result<Vec<Point>, St
             let parry_us = None;
             points.push(Point {
                 mesh: o.name.clone(),
-                triangles: o.software.a.tris.len(),
+                triangles: o.software.a.tri_count(),
                 distance,
                 queries: n,
                 counts: vec![],

@@ -7,7 +7,6 @@ use crate::pose::ScenePose;
 use crate::cycle::{self, drive::Reader};
 use crate::harness::{chip_io, verilator};
 use crate::measure::parallel_map;
-use crate::oracle;
 use crate::query::{exact_pairs, Accuracy, Chip};
 use super::record::{CycleRecord, MemoryRecord, PoseRecord};
 use crate::traversal::QueryResult;
@@ -52,9 +51,8 @@ impl Counts {
 pub struct Prepared<'s> {
     pub scene: &'s Scene,
     pub plan: Plan,
+    /// The images and the host's geometry of both objects ([`Chip::geometry`]).
     pub chip: Chip,
-    pub a: Vec<oracle::Tri>,
-    pub b: Vec<oracle::Tri>,
     /// The exported chip's Verilator binary (a Verilog cross-check).
     verilog: Option<std::path::PathBuf>,
 }
@@ -88,7 +86,8 @@ impl<'s> Prepared<'s> {
         }
         let (ma, mb) = (load(&scene.objects.a).map_err(named)?, load(&scene.objects.b).map_err(named)?);
         let (a, b) = (ma.triangles_f64(), mb.triangles_f64());
-        let chip = Chip::new(&a, &b, scene.cfg).map_err(named)?;
+        drop((ma, mb));
+        let chip = Chip::of(a, b, scene.cfg).map_err(named)?;
         scene.poses.iter().try_for_each(|sp| chip.check_pose(&sp.pose)).map_err(named)?;
         if let Some((kind, order)) = rtl {
             // the images the RTL reads: node ids and memory words within its widths
@@ -101,7 +100,7 @@ impl<'s> Prepared<'s> {
             }
             _ => None,
         };
-        Ok(Prepared { scene, plan, chip, a, b, verilog })
+        Ok(Prepared { scene, plan, chip, verilog })
     }
 
     /// Runs every pose: the golden queries one at a time (their time is the software's on an
@@ -142,7 +141,7 @@ impl<'s> Prepared<'s> {
         let (res, software_us) = (&golden.0, golden.1);
         let exact = self.plan.runs(Unit::ExactOracle).then(|| {
             counts.add(|a| a.oracle_queries += 1);
-            exact_pairs(&self.a, &self.b, &sp.pose)
+            exact_pairs(self.chip.geometry(0), self.chip.geometry(1), &sp.pose)
         });
         let cycles = match self.plan.runs(Unit::DCntr) {
             false => None,

@@ -134,11 +134,11 @@ pub(crate) struct Engine<'a> {
 
 impl<'a> Engine<'a> {
     fn node_a(&self, n: u32) -> Node {
-        self.a.tree.nodes[n as usize]
+        self.a.tree.node(n)
     }
 
     fn node_b(&self, n: u32) -> Node {
-        self.b.tree.nodes[n as usize]
+        self.b.tree.node(n)
     }
 
     /// One DOP test of A's node `na` against B's node `nb`. B's transformed distances are
@@ -149,7 +149,7 @@ impl<'a> Engine<'a> {
         let c = &mut self.counters;
         c.dop_tests += 1;
         c.node_fetches += self.held_node[0].fetch(self.a.record(na)) as u64 + self.held_node[1].fetch(self.b.record(nb)) as u64;
-        let hit = self.dop_unit.overlap(nb, self.b.tree.dop(nb), self.a.tree.dop(na));
+        let hit = self.dop_unit.overlap(nb, &self.b.tree.dop(nb), &self.a.tree.dop(na));
         c.dop_overlaps += hit as u64;
         hit
     }
@@ -162,7 +162,7 @@ impl<'a> Engine<'a> {
         let fetch_a = self.held_tri[0].fetch(self.a.tri_record(ta)) as u64;
         c.tri_fetches_a += fetch_a;
         c.tri_fetches += fetch_a + self.held_tri[1].fetch(self.b.tri_record(tb)) as u64;
-        let (wa, wb) = (&self.a.tris[ta as usize], &self.b.tris[tb as usize]);
+        let (wa, wb) = (&self.a.tri(ta), &self.b.tri(tb));
         let res = self.tri_unit.test(ta, wa, tb, wb);
         let hit = if res.uncertain {
             self.counters.uncertain += 1;
@@ -214,7 +214,7 @@ pub fn run(
         uncertain: vec![],
         live: 0,
         dop_unit: dop_unit::TransformCache::lazy(cfg.format.dop, cfg.dop_rounding.op(), setup, lanes, b.tree.len()),
-        tri_unit: tri_unit::TriUnit::new(cfg.format.tri, cfg.tri_rounding, setup, a.tris.len(), b.tris.len()),
+        tri_unit: tri_unit::TriUnit::new(cfg.format.tri, cfg.tri_rounding, setup, a.tri_count(), b.tri_count()),
         counters: Counters::default(),
         stop: false,
     };

@@ -137,7 +137,7 @@ impl<'a> DopUnit<'a> {
 
     /// The golden overlap of A's aligned node `n` and B's tumbled node `x`.
     pub fn overlap(&mut self, n: u32, x: u32) -> bool {
-        let hit = self.values.overlap(x, self.b.tree.dop(x), self.a.tree.dop(n));
+        let hit = self.values.overlap(x, &self.b.tree.dop(x), &self.a.tree.dop(n));
         self.tests += 1;
         self.overlaps += hit as u64;
         hit

@@ -136,11 +136,11 @@ pub fn run_query(
     p.memory.check()?;
     let cfg = &chip.cfg;
     let words = layout(cfg);
-    let bases = crate::chip::layout::image_bases(chip.a.tree.len() as u32, chip.a.tris.len() as u32, chip.b.tree.len() as u32);
+    let bases = crate::chip::layout::image_bases(chip.a.tree.len() as u32, chip.a.tri_count() as u32, chip.b.tree.len() as u32);
     let mem = MemCtl::new(MemModel::new(p.memory, words.word_bits()), bases);
     let values = gdop::TransformCache::new(cfg.format.dop, cfg.dop_rounding.op(), setup, chip.b.tree.len());
     let dop = dop_unit::DopUnit::new(&chip.a, &chip.b, values, sp, chip.layout.node_bits);
-    let verdicts = gtri::TriUnit::new(cfg.format.tri, cfg.tri_rounding, setup, chip.a.tris.len(), chip.b.tris.len());
+    let verdicts = gtri::TriUnit::new(cfg.format.tri, cfg.tri_rounding, setup, chip.a.tri_count(), chip.b.tri_count());
     let tri = tri_unit::TriUnit::new(&chip.a, &chip.b, verdicts, sp, cfg.tri_cache);
     let mut e = stack_engine::StackEngine::new(&chip.a, &chip.b, sp.sram_latency, sp.word_buffer, mem, dop, tri, mode == Mode::First);
     e.run();

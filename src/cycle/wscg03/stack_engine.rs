@@ -118,7 +118,7 @@ impl<'a> StackEngine<'a> {
             if l.is_empty() {
                 continue;
             }
-            let g = match self.b.tree.nodes[x as usize] {
+            let g = match self.b.tree.node(x) {
                 Node::Inner(ch) => ch.to_vec(),
                 Node::Leaf(_) => vec![x],
             };
@@ -135,7 +135,7 @@ impl<'a> StackEngine<'a> {
             let words: Vec<(u32, u64)> = group.iter().map(|&x| (x, self.mem.fetch(ptr, Dst::NodeB, x))).collect();
             self.dop.load(&words)
         });
-        if let Node::Inner(ch) = self.b.tree.nodes[group[0] as usize] {
+        if let Node::Inner(ch) = self.b.tree.node(group[0]) {
             if !self.dop.speculated(&ch) {
                 let words: Vec<(u32, u64)> = ch.iter().map(|&x| (x, self.mem.fetch(ptr, Dst::NodeB, x))).collect();
                 self.dop.speculate(&words);
@@ -179,12 +179,12 @@ impl<'a> StackEngine<'a> {
             while r.present.len() < list.len().min(i + 1 + self.word_buffer) && self.earliest(r, r.present.len()) <= f {
                 self.ask(r, list);
             }
-            let na = self.a.tree.nodes[n as usize];
+            let na = self.a.tree.node(n);
             for (m, &x) in group.iter().enumerate() {
                 if !self.dop.overlap(n, x) {
                     continue;
                 }
-                match (na, self.b.tree.nodes[x as usize]) {
+                match (na, self.b.tree.node(x)) {
                     (Node::Leaf(ta), Node::Leaf(tb)) => self.leaf_pair(f, ta, tb, r),
                     (Node::Inner(ch), _) => out[m].extend(ch),
                     (Node::Leaf(_), Node::Inner(_)) => out[m].push(n),
@@ -242,7 +242,7 @@ impl<'a> StackEngine<'a> {
 }
 
 fn leaf(o: &ObjectImage, x: u32) -> Option<u32> {
-    match o.tree.nodes[x as usize] {
+    match o.tree.node(x) {
         Node::Leaf(t) => Some(t),
         Node::Inner(_) => None,
     }

@@ -57,7 +57,7 @@ impl<'a> TriUnit<'a> {
         let t = self.when(present);
         self.next_take = t + self.interval;
         self.tests += 1;
-        (t, self.values.test(ta, &self.a.tris[ta as usize], tb, &self.b.tris[tb as usize]))
+        (t, self.values.test(ta, &self.a.tri(ta), tb, &self.b.tri(tb)))
     }
 
     /// The clock a pair whose words are present from `present` would enter.
