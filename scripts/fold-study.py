@@ -6,9 +6,9 @@ each memory: the preset's (DATE'05's DDR2) and the ideal one (a word every clock
 after the request). One `cchip run --json` per (memory, ii); prints one markdown row each:
 TRI_UNIT's Yosys cells at that ii, clocks per query (mean over the 40 poses), the slow-down
 against ii = 1, triangle tests per clock, the clocks a leaf pair waited at TRI_UNIT's input
-(`back_pressure`: its rhythm or its full FIFO), and the time per query at the configuration's
-period (the scene's clock: docs/figures/timing.csv's slowest unit of the unfolded binary32
-chip; the folded TRI_UNIT's period is not measured).
+(`back_pressure`: its rhythm or its full FIFO), and the time per query at the scene's clock
+(the configuration's measured period, docs/figures/timing_config.csv: the unfolded chip's; the
+folded TRI_UNIT's period is not measured).
 
 Usage: scripts/fold-study.py [--cchip PATH]
   --cchip   a built cchip binary (default: `cargo run --release -q --`)
