@@ -138,14 +138,16 @@ fn memory() -> impl Strategy<Value = Memory> {
 
 fn params() -> impl Strategy<Value = Params> {
     (
-        (10u32..=14, 1u32..=20, 3u32..=140, 1u32..=64),
+        (10u32..=14, 1u32..=20, 3u32..=140, 1u32..=64, prop_oneof![3 => Just(1u32), 1 => (1u32..=16).prop_map(|h| 2 * h)]),
         (1u32..=2, 1u32..=32, 1u32..=16, prop_oneof![Just(0u32), 1u32..=12], memory()),
     )
-        .prop_map(|((q, dl, tl, tf), (sp, cr, os, pf, memory))| Params {
+        .prop_map(|((q, dl, tl, tf, ti), (sp, cr, os, pf, memory))| Params {
             queue_entries: 1 << q,
             dop_latency: dl,
-            tri_latency: tl,
+            // a folded TRI_UNIT's latency is its schedule's
+            tri_latency: if ti == 1 { tl } else { Params::RTL.tri_latency },
             tri_fifo: tf,
+            tri_interval: ti,
             issue_spacing: sp,
             credit: cr,
             outstanding: os,
@@ -255,6 +257,7 @@ fn bad_parameters_are_refused() {
         (Params { issue_spacing: 3, ..Params::RTL }, "issue_spacing"),
         (Params { outstanding: 65, ..Params::RTL }, "outstanding"),
         (Params { prefetch: 257, ..Params::RTL }, "prefetch"),
+        (Params { tri_interval: 5, ..Params::RTL }, "tri_interval"),
         (Params { memory: MemTiming { latency: 0, ..Default::default() }.into(), ..Params::RTL }, "latency"),
         (Params { memory: Memory::Ddr(Ddr { burst: 9, ..Ddr::WSCG03 }), ..Params::RTL }, "burst <= hit <= miss"),
     ] {
@@ -349,5 +352,44 @@ fn the_longest_waits_are_skipped() {
         let tr = r.unwrap();
         tr.check(Mode::All, &golden).unwrap();
         assert!(tr.cycles > long as u64, "{timing:?} {reader:?}: {} cycles", tr.cycles);
+    }
+}
+
+/// The folded TRI_UNIT's rhythm (issue 33), derived from `rtl::b32::TriUnitFold`'s rule, not
+/// from the model: its counter runs from the first pair taken, so pairs enter in cycles
+/// t0 + n ii (from ii 4 some exactly ii apart: pairs queue behind the unit on these meshes), and the
+/// first verdict is at the output `fold::tri_unit_latency` clocks after t0. The answer is
+/// golden's, and the same with idle stretches skipped as clock by clock.
+#[test]
+fn folded_tri_unit_takes_a_pair_every_interval() {
+    let chip = Chip::new(&collision_chip::mesh::builtin("sphere:200").unwrap().triangles_f64(), &collision_chip::mesh::builtin("torus:200").unwrap().triangles_f64(), CHIP_CONFIG).unwrap();
+    let pose = Pose::new(10.0, 20.0, 30.0, 0.5, 0.0, 0.0);
+    let golden = chip.query(&pose, Mode::All, Traversal::Lifo);
+    let idx = |name: &str| PROBES.iter().position(|p| (p.0, p.1) == ("tri_unit", name)).unwrap();
+    let (take, out_valid) = (idx("take"), idx("out_valid"));
+    for ii in [2u32, 4, 16, 32] {
+        let p = Params { tri_interval: ii, ..Params::RTL };
+        let latency = collision_chip::fold::tri_unit_latency(&collision_chip::fold::tri_unit_plan(ii as usize).unwrap()) as u64;
+        let (mut takes, mut first_out) = (vec![], None);
+        let mut obs = |t: u64, v: &[u64]| {
+            if v[take] == 1 {
+                takes.push(t);
+            }
+            if v[out_valid] == 1 && first_out.is_none() {
+                first_out = Some(t);
+            }
+            Ok(())
+        };
+        let rec = cycle::Record { probes: Some(&mut obs), ..Default::default() };
+        let (clocked, _) = cycle::run_query(&chip, &chip.setup(&pose), Order::Lifo, Mode::All, p, Reader::default(), MAX_CYCLES, rec).unwrap();
+        clocked.check(Mode::All, &golden).unwrap();
+        assert_eq!(takes.len() as u64, clocked.tri_tests, "ii {ii}");
+        let gaps: Vec<u64> = takes.windows(2).map(|w| w[1] - w[0]).collect();
+        assert!(gaps.iter().all(|g| g % ii as u64 == 0), "ii {ii}: pairs taken {takes:?}");
+        // (at ii 2 the triangle words' fetches keep pairs at least 4 clocks apart here)
+        assert!(ii < 4 || gaps.contains(&(ii as u64)), "ii {ii}: no two pairs back to back: {gaps:?}");
+        assert_eq!(first_out, Some(takes[0] + latency), "ii {ii}: the first verdict {latency} clocks after the first pair");
+        let skipped = cycle::run_query(&chip, &chip.setup(&pose), Order::Lifo, Mode::All, p, Reader::default(), MAX_CYCLES, counted()).unwrap().0;
+        assert_eq!(skipped, clocked, "ii {ii}");
     }
 }

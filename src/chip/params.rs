@@ -13,8 +13,14 @@ pub struct Params {
     pub queue_entries: u32,
     /// Clocks from a DOP test's issue to its result.
     pub dop_latency: u32,
-    /// Clocks from a pair entering TRI_UNIT to its verdict at the output.
+    /// Clocks from a pair entering TRI_UNIT to its verdict at the output (the unfolded
+    /// TRI_UNIT's; a folded one's is its schedule's, `fold::tri_unit_latency`).
     pub tri_latency: u32,
+    /// Clocks between pairs TRI_UNIT takes (issue 33): 1, the unfolded TRI_UNIT (a pair
+    /// every clock), or an even 2 to 32, the folded TRI_UNIT (`rtl::b32::TriUnitFold`: both
+    /// directions on one T.CHECK folded for `tri_interval` / 2, a pair taken only when its
+    /// control counter, running from the first pair taken, is 0).
+    pub tri_interval: u32,
     /// TRI_UNIT's result FIFO: pairs taken and not yet given out.
     pub tri_fifo: u32,
     /// Clocks between two DOP issues at the least (the RTL: 2, so that the two child
@@ -37,7 +43,7 @@ pub struct Params {
 
 impl Params {
     /// The RTL chip (`rtl/chip_e8m15_k6.v`) after reset: 2^10 queue entries, the 15-clock
-    /// DOP unit, TRI_UNIT's 130 clocks and 256-entry FIFO, issues two clocks apart, a credit
+    /// DOP unit, TRI_UNIT unfolded with its 54 clocks and 256-entry FIFO, issues two clocks apart, a credit
     /// of 16, one request outstanding, no prefetch. `tb/rtl_chip.rs` checks these against
     /// the RTL; its host register 0x126 sets the last four (`cycle::chip::reg::PORT`).
     pub const RTL: Params = Params {
@@ -45,6 +51,7 @@ impl Params {
         dop_latency: rtl::DOP_LATENCY as u32,
         tri_latency: rtl::TRI_LATENCY as u32,
         tri_fifo: rtl::TRI_FIFO as u32,
+        tri_interval: 1,
         issue_spacing: 2,
         credit: rtl::CREDIT as u32,
         outstanding: 1,
@@ -56,6 +63,8 @@ impl Params {
     pub const MAX_PREFETCH: u32 = 256;
     /// Memory requests outstanding at most.
     pub const MAX_OUTSTANDING: u32 = 64;
+    /// The longest folded TRI_UNIT's pair interval (issue 33's folds: 2 to 32).
+    pub const MAX_TRI_INTERVAL: u32 = 32;
 
     /// Errors name a parameter out of range.
     pub fn check(&self) -> Result<(), String> {
@@ -71,6 +80,18 @@ impl Params {
         }
         if self.tri_latency < rtl::FIFO_WRITE_TO_HEAD + 1 {
             return Err(format!("tri_latency must be at least {} (the result FIFO's registers)", rtl::FIFO_WRITE_TO_HEAD + 1));
+        }
+        if !(self.tri_interval == 1 || (2..=Params::MAX_TRI_INTERVAL).contains(&self.tri_interval) && self.tri_interval % 2 == 0) {
+            return Err(format!(
+                "tri_interval must be 1 (TRI_UNIT unfolded) or an even number of clocks from 2 to {} (the folded TRI_UNIT runs its two directions on one T.CHECK at tri_interval / 2), not {}",
+                Params::MAX_TRI_INTERVAL, self.tri_interval
+            ));
+        }
+        if self.tri_interval > 1 && self.tri_latency != rtl::TRI_LATENCY as u32 {
+            return Err(format!(
+                "tri_latency {} is the unfolded TRI_UNIT's; a folded one (tri_interval {}) has its schedule's latency: remove tri_latency, or set tri_interval = 1",
+                self.tri_latency, self.tri_interval
+            ));
         }
         if !(1..=2).contains(&self.issue_spacing) {
             return Err("issue_spacing must be 1 or 2 clocks".into());

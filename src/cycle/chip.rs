@@ -208,7 +208,7 @@ impl<'a> Chip<'a> {
             leaf_fifo: Delay::with_capacity(FIFO_WRITE_TO_HEAD, p.credit as usize),
             leaf_valid: false,
             leaf_tag: (0, 0),
-            tri: TriUnit::new(a, b, tri_values, p.tri_latency, p.tri_fifo),
+            tri: TriUnit::new(a, b, tri_values, &p)?,
             cnt: [0; 4],
             now: 0,
             logic: Comb::default(),
@@ -273,7 +273,7 @@ impl<'a> Chip<'a> {
         let pop = go && !self.q.empty && room && !(self.order == Order::Lifo && child_push);
         // leaf pairs and TRI_UNIT
         let tri_in = go && self.leaf_valid && !need[2] && !need[3];
-        let tri_take = tri_in && self.tri.in_ready();
+        let tri_take = tri_in && self.tri.in_ready(self.now);
         let leaf_out =
             self.leaf_fifo.out(self.now).is_some() && (halt || (run && (!self.leaf_valid || tri_take)));
         let out = self.tri.out(self.now).copied();
@@ -390,7 +390,7 @@ impl<'a> Chip<'a> {
             self.leaf_tag.0 as u64,
             self.leaf_tag.1 as u64,
             b(c.tri_in),
-            b(self.tri.in_ready()),
+            b(self.tri.in_ready(self.now)),
             b(c.tri_take),
             self.tri.open() as u64,
             b(c.out.is_some()),
@@ -416,7 +416,8 @@ impl<'a> Chip<'a> {
 
     /// With the inputs `i` held, the chip does nothing but wait until this cycle: no
     /// register but the clock changes before it (the next DOP result, leaf pair at the
-    /// FIFO's head, TRI_UNIT verdict, or the end of the issue spacing; `u64::MAX`: nothing
+    /// FIFO's head, TRI_UNIT verdict, the folded TRI_UNIT's next slot for the leaf pair
+    /// waiting at its input, or the end of the issue spacing; `u64::MAX`: nothing
     /// inside the chip is under way). `None`: it may act in the current cycle. Memory
     /// responses, `mem_req_ready` and `res_ready` are the driver's to add. Lets the driver
     /// skip a wait of any length in one step, the trace exact.
@@ -442,7 +443,8 @@ impl<'a> Chip<'a> {
             return None;
         }
         let spaced = self.last_issue.map(|t| t + self.p.issue_spacing as u64);
-        [self.dop.next_out(), self.leaf_fifo.next_out(), self.tri.next_out(), spaced]
+        let slot = self.tri.next_slot(self.now).filter(|_| c.tri_in);
+        [self.dop.next_out(), self.leaf_fifo.next_out(), self.tri.next_out(), spaced, slot]
             .into_iter()
             .flatten()
             .filter(|&t| t > self.now)

@@ -4,8 +4,15 @@
 //! and read registers) and waits there until it is given out. `in_ready` is low while
 //! `fifo` pairs are taken and not yet given out, so the FIFO never overflows. Verdicts come
 //! from the golden TRI_UNIT ([`golden::tri_unit::TriUnit`](crate::golden::tri_unit::TriUnit)).
+//!
+//! Folded (`tri_interval` ii > 1, `rtl::b32::TriUnitFold`'s rhythm): its control counter
+//! runs 0 .. ii-1 from the first pair taken since reset and never stops, and `in_ready` is
+//! high only while it is 0, so pairs are taken in cycles t0 + n ii; the latency is the
+//! folded unit's, [`fold::tri_unit_latency`].
 
 use super::delay::Delay;
+use crate::chip::params::Params;
+use crate::fold;
 use crate::golden::tri_unit::TriUnit as Values;
 use crate::golden::tri_unit::TriResult;
 use crate::golden::memory::ObjectImage;
@@ -36,20 +43,38 @@ pub struct TriUnit<'a> {
     values: Values<'a>,
     /// Pairs taken and not given out.
     open: Delay<TriOut>,
+    /// Clocks between pairs taken (`tri_interval`; 1: unfolded).
+    interval: u64,
+    /// The cycle of the first pair taken, where the folded unit's counter starts.
+    first: Option<u64>,
 }
 
 impl<'a> TriUnit<'a> {
-    pub fn new(a: &'a ObjectImage, b: &'a ObjectImage, values: Values<'a>, latency: u32, depth: u32) -> Self {
-        TriUnit { a, b, values, open: Delay::with_capacity(latency, depth as usize) }
+    /// TRI_UNIT with `p`'s interval, latency (the folded unit's schedule's for an interval
+    /// over 1) and FIFO depth.
+    pub fn new(a: &'a ObjectImage, b: &'a ObjectImage, values: Values<'a>, p: &Params) -> Result<Self, String> {
+        let latency = match p.tri_interval {
+            1 => p.tri_latency,
+            ii => fold::tri_unit_latency(&fold::tri_unit_plan(ii as usize)?) as u32,
+        };
+        let open = Delay::with_capacity(latency, p.tri_fifo as usize);
+        Ok(TriUnit { a, b, values, open, interval: p.tri_interval as u64, first: None })
     }
 
-    /// `in_ready`: the result FIFO has room for one more pair.
-    pub fn in_ready(&self) -> bool {
-        self.open.has_room()
+    /// `in_ready` in cycle `now`: the result FIFO has room for one more pair, and the
+    /// folded unit's counter is 0.
+    pub fn in_ready(&self, now: u64) -> bool {
+        self.open.has_room() && self.first.is_none_or(|t0| (now - t0) % self.interval == 0)
+    }
+
+    /// The first cycle after `now` where the folded unit's counter is 0 again, if it runs.
+    pub fn next_slot(&self, now: u64) -> Option<u64> {
+        self.first.filter(|_| self.interval > 1).map(|t0| now + self.interval - (now - t0) % self.interval)
     }
 
     /// Takes the pair of triangles `(ta, tb)` at edge `now`.
     pub fn take(&mut self, now: u64, ta: u32, tb: u32) {
+        self.first.get_or_insert(now);
         let res = self.values.test(ta, &self.a.tri(ta), tb, &self.b.tri(tb));
         self.open.push(now, TriOut { a: ta, b: tb, res });
     }

@@ -576,6 +576,12 @@ pub fn rtl_order(cfg: &ChipConfig, traversal: Traversal, p: &Params) -> Result<(
     if cfg.tri_cache > lines as u32 {
         return Err(format!("the RTL chips' triangle cache has {lines} lines; this scene asks for tri_cache = {}: set [chip] tri_cache to at most {lines}", cfg.tri_cache));
     }
+    if p.tri_interval != 1 {
+        return Err(format!(
+            "the RTL chips' TRI_UNIT is unfolded (no chip is built on the folded TriUnitFold yet), so tri_interval {} runs on the cycle model only: set [timing] tri_interval = 1 to cross-check, or drop cross_check",
+            p.tri_interval
+        ));
+    }
     let rtl = Params {
         memory: p.memory,
         prefetch: p.prefetch,

@@ -78,6 +78,9 @@
 //! dop_latency = 15
 //! tri_latency = 54
 //! tri_fifo = 256
+//! tri_interval = 1            # clocks between TRI_UNIT's pairs: 1 (unfolded), or 2, 4, .. 32
+//!                             # (even): the folded TRI_UNIT, its latency its schedule's
+//!                             # (no tri_latency then); the cycle model only, no cross_check
 //! issue_spacing = 2           # 1 or 2 clocks between DOP issues
 //! credit = 16                 # DOP tests in flight + leaf pairs waiting (RTL: 1 to 63)
 //! outstanding = 1             # memory requests in flight (1 to 64; the RTL chip 1 to 16)
@@ -428,6 +431,14 @@ pub struct Outputs {
     pub cross_check: Option<CrossCheck>,
 }
 
+/// TRI_UNIT's timing in the configuration line: its latency, and its interval if folded.
+fn tri_timing(p: &Params) -> String {
+    match p.tri_interval {
+        1 => format!("tri_latency {}", p.tri_latency),
+        ii => format!("tri_interval {ii} (folded TRI_UNIT, its schedule's latency)"),
+    }
+}
+
 /// A validated scene.
 #[derive(Debug)]
 pub struct Scene {
@@ -462,8 +473,8 @@ impl Scene {
         let (c, p, w) = (&self.cfg, &self.params, &self.stack);
         let timing = match self.architecture {
             Architecture::Date05 => format!(
-                "timing: queue_entries {}, dop_latency {}, tri_latency {}, tri_fifo {}, issue_spacing {}, credit {}, outstanding {}, prefetch {}",
-                p.queue_entries, p.dop_latency, p.tri_latency, p.tri_fifo, p.issue_spacing, p.credit, p.outstanding, p.prefetch
+                "timing: queue_entries {}, dop_latency {}, {}, tri_fifo {}, issue_spacing {}, credit {}, outstanding {}, prefetch {}",
+                p.queue_entries, p.dop_latency, tri_timing(p), p.tri_fifo, p.issue_spacing, p.credit, p.outstanding, p.prefetch
             ),
             Architecture::Wscg03 => format!(
                 "stack_engine: sram_latency {}, dotadd_stages {}, data_bus_bits {}, compare_latency {}, word_buffer {}, tri_interval {}, tri_latency {}",
@@ -528,6 +539,9 @@ impl Scene {
         let (mut params, technology, clock_mhz) = timing(f.timing, text, preset).map_err(|e| format!("{name}:{e}"))?;
         params.memory = f.memory.memory(preset.params().memory).map_err(err)?;
         params.check().map_err(|e| err(format!("[timing] / [memory]: {e}")))?;
+        if architecture == Architecture::Wscg03 && params.tri_interval != 1 {
+            return Err(err("[timing] tri_interval folds DATE'05's TRI_UNIT; WSCG'03's chip takes its Triangle Unit's interval from [stack_engine] tri_interval".into()));
+        }
         // the command line's technology replaces the scene's clock
         let (technology, clock_mhz) = if flags.technology.is_some() { (flags.technology, None) } else { (technology, clock_mhz) };
         let clock = clock(&cfg, preset, technology, clock_mhz).map_err(err)?;
@@ -659,6 +673,30 @@ mod tests {
 
     /// `[memory]` picks the ideal model or DDR SDRAM with a preset and overrides; mixed or
     /// unknown keys are errors that say what to write.
+    /// `[timing] tri_interval`: 1 or even 2 to 32, no tri_latency beside a fold, DATE'05's
+    /// chip only, and no RTL cross-check (the RTL chips' TRI_UNIT is unfolded).
+    #[test]
+    fn tri_interval_key() {
+        let base = "[objects]\na = \"sphere:12\"\nb = \"sphere:12\"\n[[pose]]\nrot_deg=[0,0,0]\nt=[0,0,0]\n";
+        let s = Scene::parse(&format!("{base}[chip]\npreset = \"date05\"\n[timing]\ntri_interval = 16\n"), "s").unwrap();
+        assert_eq!(s.params, Params { tri_interval: 16, ..Preset::Date05.params() });
+        assert!(s.configuration().contains("tri_interval 16 (folded TRI_UNIT"), "{}", s.configuration());
+        for (keys, want) in [
+            ("tri_interval = 3", "tri_interval must be 1 (TRI_UNIT unfolded) or an even number of clocks from 2 to 32"),
+            ("tri_interval = 34", "not 34"),
+            ("tri_interval = 0", "not 0"),
+            ("tri_interval = 4\ntri_latency = 60", "tri_latency 60 is the unfolded TRI_UNIT's"),
+        ] {
+            let e = Scene::parse(&format!("{base}[timing]\n{keys}\n"), "s").unwrap_err();
+            assert!(e.contains(want), "{e}");
+        }
+        let e = Scene::parse(&format!("{base}[chip]\npreset = \"wscg03\"\n[timing]\ntri_interval = 2\n"), "s").unwrap_err();
+        assert!(e.contains("[stack_engine] tri_interval"), "{e}");
+        let rtl = Scene::parse(include_str!("../../vectors/scenes/rtl_spheres.toml"), "rtl_spheres").unwrap();
+        let e = crate::harness::chip_io::rtl_order(&rtl.cfg, rtl.traversal, &Params { tri_interval: 2, ..rtl.params }).unwrap_err();
+        assert!(e.contains("TRI_UNIT is unfolded") && e.contains("tri_interval = 1"), "{e}");
+    }
+
     #[test]
     fn memory_models_and_presets() {
         use crate::chip::memory::Ddr;
