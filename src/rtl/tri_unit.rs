@@ -1,45 +1,14 @@
 //! TRI_UNIT (DATE'05 §4.2): two T.CHECKs and the result FIFO, stamped out per format by
 //! `tri_unit!`.
 
-/// Stamps out `TriUnit` in the calling module (which must also hold `TCheck`).
+/// TRI_UNIT's ports (documented on `TriUnit`), one list for every TRI_UNIT: declares the
+/// block `name` (its doc attributes first) with them, then its own fields `rest`.
 /// Arguments: `W` word width.
-macro_rules! tri_unit {
-    ($W:tt) => {
-        /// log2 of the result FIFO's entries.
-        const TRI_FIFO_BITS: usize = $crate::chip::rtl::TRI_FIFO_BITS;
-        declare_sync_fifo!(TriFifo, Bits<34>, 256, 1);
-
-        /// TRI_UNIT: is triangle a of A intersecting triangle b of B? Golden
-        /// [`tri_unit`](crate::golden::tri_unit::tri_unit), bit for bit: `tc_ab` tests A's
-        /// edges against U(B) (B's leaf, the frame map M_AB), `tc_ba`
-        /// B's edges against U(A) (A's leaf, M_BA); a degenerate leaf leaves its direction
-        /// unknown; the verdict is the Kleene OR of the two: intersecting (`hit`), separate,
-        /// or `uncertain` (the host settles it with the exact oracle).
-        ///
-        /// Ports (words in the format):
-        ///
-        /// * per query, a write port for the frame maps: in `load_en`, `load_addr[5]`,
-        ///   `load_data[W]`; address `4 i + c` (i < 3, c < 4) writes M_AB[i][c], 12 and 13
-        ///   its error words (beta_m, beta_f), 14 A's scale, `16 + 4 i + c` M_BA[i][c], 28
-        ///   and 29 its error words, 30 B's scale. Written on the rising edge while
-        ///   `load_en` is high.
-        /// * per pair (valid/ready): in `a_*`, `b_*` = the two leaves' triangle words
-        ///   (`m_0[4]`, `m_1[4]`, `m_2[4]` = M rows, `alpha_m`, `alpha_f`,
-        ///   `v_x[3]`, `v_y[3]`, `v_z[3]` = vertices, `v_exact`, `degenerate`),
-        ///   `tag[32]` (the pair id), `in_valid`; out `in_ready`. A pair is taken on a
-        ///   rising edge with `in_valid` and `in_ready` high.
-        /// * results (valid/ready): out `out_tag[32]`, `out_hit`, `out_uncertain`,
-        ///   `out_valid`; in `out_ready`. A result leaves on a rising edge with
-        ///   `out_valid` and `out_ready` high, in the order the pairs came in.
-        ///
-        /// Timing: a pair taken at edge t (presented in cycle t) is at the FIFO's write
-        /// port in cycle t + 52 (the T.CHECKs, [`TCheck::LATENCY`]) and at the output
-        /// (`out_valid`) in cycle t + 54 (the FIFO's write and read registers).
-        /// Back-pressure: `in_ready` is low while 256 pairs (the FIFO's depth) are taken
-        /// and not yet read out (`count`), so the FIFO never overflows and no result is
-        /// lost; a reader that is always ready sees one result per clock.
+macro_rules! tri_unit_ports {
+    ($W:tt, $(#[$m:meta])* $name:ident { $($rest:tt)* }) => {
+        $(#[$m])*
         #[derive(LogicBlock)]
-        pub struct TriUnit {
+        pub struct $name {
             pub clock: Signal<In, Clock>,
             pub load_en: Signal<In, Bit>,
             pub load_addr: Signal<In, Bits<5>>,
@@ -72,39 +41,86 @@ macro_rules! tri_unit {
             pub out_uncertain: Signal<Out, Bit>,
             pub out_valid: Signal<Out, Bit>,
             pub out_ready: Signal<In, Bit>,
-            // per-query registers: rows of M_AB, M_BA; their error words; the scales
-            addr_0: [Constant<Bits<5>>; 4],
-            addr_1: [Constant<Bits<5>>; 4],
-            addr_2: [Constant<Bits<5>>; 4],
-            ab_0: [DFF<Bits<$W>>; 4],
-            ab_1: [DFF<Bits<$W>>; 4],
-            ab_2: [DFF<Bits<$W>>; 4],
-            ab_bm: DFF<Bits<$W>>,
-            ab_bf: DFF<Bits<$W>>,
-            ab_s: DFF<Bits<$W>>,
-            ba_0: [DFF<Bits<$W>>; 4],
-            ba_1: [DFF<Bits<$W>>; 4],
-            ba_2: [DFF<Bits<$W>>; 4],
-            ba_bm: DFF<Bits<$W>>,
-            ba_bf: DFF<Bits<$W>>,
-            ba_s: DFF<Bits<$W>>,
-            // the two directions
-            tc_ab: TCheck,
-            tc_ba: TCheck,
-            degenerate_wait: Delay<Bits<2>, { TCheck::LATENCY }>,
-            d1_t: Signal<Local, Bit>,
-            d1_f: Signal<Local, Bit>,
-            d2_t: Signal<Local, Bit>,
-            d2_f: Signal<Local, Bit>,
-            c_hit: Constant<Bits<34>>,
-            c_uncertain: Constant<Bits<34>>,
-            c_full: Constant<Bits<9>>,
-            result: Signal<Local, Bits<34>>,
-            fifo: TriFifo,
-            // pairs taken and not yet read out
-            count: DFF<Bits<9>>,
-            take: Signal<Local, Bit>,
-            give: Signal<Local, Bit>,
+            $($rest)*
+        }
+    };
+}
+pub(crate) use tri_unit_ports;
+
+/// Stamps out `TriUnit` in the calling module (which must also hold `TCheck`).
+/// Arguments: `W` word width.
+macro_rules! tri_unit {
+    ($W:tt) => {
+        /// log2 of the result FIFO's entries.
+        const TRI_FIFO_BITS: usize = $crate::chip::rtl::TRI_FIFO_BITS;
+        declare_sync_fifo!(TriFifo, Bits<34>, 256, 1);
+
+        $crate::rtl::tri_unit::tri_unit_ports! {
+            $W,
+            /// TRI_UNIT: is triangle a of A intersecting triangle b of B? Golden
+            /// [`tri_unit`](crate::golden::tri_unit::tri_unit), bit for bit: `tc_ab` tests A's
+            /// edges against U(B) (B's leaf, the frame map M_AB), `tc_ba`
+            /// B's edges against U(A) (A's leaf, M_BA); a degenerate leaf leaves its direction
+            /// unknown; the verdict is the Kleene OR of the two: intersecting (`hit`), separate,
+            /// or `uncertain` (the host settles it with the exact oracle).
+            ///
+            /// Ports (words in the format):
+            ///
+            /// * per query, a write port for the frame maps: in `load_en`, `load_addr[5]`,
+            ///   `load_data[W]`; address `4 i + c` (i < 3, c < 4) writes M_AB[i][c], 12 and 13
+            ///   its error words (beta_m, beta_f), 14 A's scale, `16 + 4 i + c` M_BA[i][c], 28
+            ///   and 29 its error words, 30 B's scale. Written on the rising edge while
+            ///   `load_en` is high.
+            /// * per pair (valid/ready): in `a_*`, `b_*` = the two leaves' triangle words
+            ///   (`m_0[4]`, `m_1[4]`, `m_2[4]` = M rows, `alpha_m`, `alpha_f`,
+            ///   `v_x[3]`, `v_y[3]`, `v_z[3]` = vertices, `v_exact`, `degenerate`),
+            ///   `tag[32]` (the pair id), `in_valid`; out `in_ready`. A pair is taken on a
+            ///   rising edge with `in_valid` and `in_ready` high.
+            /// * results (valid/ready): out `out_tag[32]`, `out_hit`, `out_uncertain`,
+            ///   `out_valid`; in `out_ready`. A result leaves on a rising edge with
+            ///   `out_valid` and `out_ready` high, in the order the pairs came in.
+            ///
+            /// Timing: a pair taken at edge t (presented in cycle t) is at the FIFO's write
+            /// port in cycle t + 52 (the T.CHECKs, [`TCheck::LATENCY`]) and at the output
+            /// (`out_valid`) in cycle t + 54 (the FIFO's write and read registers).
+            /// Back-pressure: `in_ready` is low while 256 pairs (the FIFO's depth) are taken
+            /// and not yet read out (`count`), so the FIFO never overflows and no result is
+            /// lost; a reader that is always ready sees one result per clock.
+            TriUnit {
+                // per-query registers: rows of M_AB, M_BA; their error words; the scales
+                addr_0: [Constant<Bits<5>>; 4],
+                addr_1: [Constant<Bits<5>>; 4],
+                addr_2: [Constant<Bits<5>>; 4],
+                ab_0: [DFF<Bits<$W>>; 4],
+                ab_1: [DFF<Bits<$W>>; 4],
+                ab_2: [DFF<Bits<$W>>; 4],
+                ab_bm: DFF<Bits<$W>>,
+                ab_bf: DFF<Bits<$W>>,
+                ab_s: DFF<Bits<$W>>,
+                ba_0: [DFF<Bits<$W>>; 4],
+                ba_1: [DFF<Bits<$W>>; 4],
+                ba_2: [DFF<Bits<$W>>; 4],
+                ba_bm: DFF<Bits<$W>>,
+                ba_bf: DFF<Bits<$W>>,
+                ba_s: DFF<Bits<$W>>,
+                // the two directions
+                tc_ab: TCheck,
+                tc_ba: TCheck,
+                degenerate_wait: Delay<Bits<2>, { TCheck::LATENCY }>,
+                d1_t: Signal<Local, Bit>,
+                d1_f: Signal<Local, Bit>,
+                d2_t: Signal<Local, Bit>,
+                d2_f: Signal<Local, Bit>,
+                c_hit: Constant<Bits<34>>,
+                c_uncertain: Constant<Bits<34>>,
+                c_full: Constant<Bits<9>>,
+                result: Signal<Local, Bits<34>>,
+                fifo: TriFifo,
+                // pairs taken and not yet read out
+                count: DFF<Bits<9>>,
+                take: Signal<Local, Bit>,
+                give: Signal<Local, Bit>,
+            }
         }
 
         impl TriUnit {

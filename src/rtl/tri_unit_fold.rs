@@ -76,71 +76,41 @@ pub(crate) fn body_verilog(half: usize, tc_latency: usize) -> String {
 /// uses `TCheckFold`, `TriFifo`, `TRI_FIFO_BITS`). Arguments: `W` word width.
 macro_rules! tri_unit_fold {
     ($W:tt) => {
-        /// TRI_UNIT folded (docs/ARCHITECTURE.md, "Folded TRI_UNIT"): [`TriUnit`]'s ports and
-        /// verdicts, bit for bit golden [`tri_unit`](crate::golden::tri_unit::tri_unit), with
-        /// both directions on one [`TCheckFold`] folded for ii / 2 (its plan,
-        /// [`crate::fold::tri_unit_plan`]). A control counter runs 0 .. ii-1 from the first
-        /// pair taken; `in_ready` is high while it is 0 and the result FIFO has room, so a pair
-        /// is taken at most every ii clocks (a writer holds `in_valid` until `in_ready`).
-        /// Taken at counter 0: A's edges against U(B) (B's leaf, M_AB) enter the T.CHECK at
-        /// once, and B's edges against U(A) (A's leaf, M_BA), held in registers with the
-        /// pair's tag and B's `v_exact`, at counter ii / 2. The first direction's T.CHECK tag
-        /// carries the pair's degenerate flags; its masked verdict waits in `ab_t`, `ab_f`
-        /// for the second's, and their Kleene OR enters the result FIFO
-        /// ([`crate::fold::tri_unit_latency`] after the pair, with the FIFO's two registers).
-        /// The frame registers are read when the pair is taken, as in [`TriUnit`].
-        #[derive(LogicBlock)]
-        pub struct TriUnitFold {
-            pub clock: Signal<In, Clock>,
-            pub load_en: Signal<In, Bit>,
-            pub load_addr: Signal<In, Bits<5>>,
-            pub load_data: Signal<In, Bits<$W>>,
-            pub a_m_0: [Signal<In, Bits<$W>>; 4],
-            pub a_m_1: [Signal<In, Bits<$W>>; 4],
-            pub a_m_2: [Signal<In, Bits<$W>>; 4],
-            pub a_alpha_m: Signal<In, Bits<$W>>,
-            pub a_alpha_f: Signal<In, Bits<$W>>,
-            pub a_v_x: [Signal<In, Bits<$W>>; 3],
-            pub a_v_y: [Signal<In, Bits<$W>>; 3],
-            pub a_v_z: [Signal<In, Bits<$W>>; 3],
-            pub a_v_exact: Signal<In, Bit>,
-            pub a_degenerate: Signal<In, Bit>,
-            pub b_m_0: [Signal<In, Bits<$W>>; 4],
-            pub b_m_1: [Signal<In, Bits<$W>>; 4],
-            pub b_m_2: [Signal<In, Bits<$W>>; 4],
-            pub b_alpha_m: Signal<In, Bits<$W>>,
-            pub b_alpha_f: Signal<In, Bits<$W>>,
-            pub b_v_x: [Signal<In, Bits<$W>>; 3],
-            pub b_v_y: [Signal<In, Bits<$W>>; 3],
-            pub b_v_z: [Signal<In, Bits<$W>>; 3],
-            pub b_v_exact: Signal<In, Bit>,
-            pub b_degenerate: Signal<In, Bit>,
-            pub tag: Signal<In, Bits<32>>,
-            pub in_valid: Signal<In, Bit>,
-            pub in_ready: Signal<Out, Bit>,
-            pub out_tag: Signal<Out, Bits<32>>,
-            pub out_hit: Signal<Out, Bit>,
-            pub out_uncertain: Signal<Out, Bit>,
-            pub out_valid: Signal<Out, Bit>,
-            pub out_ready: Signal<In, Bit>,
-            // the counter starts with the first pair (`run`), then runs freely
-            run: DFF<Bit>,
-            counter: DFF<Bits<8>>,
-            // per-query registers (`frame_addr`)
-            frame: Vec<DFF<Bits<$W>>>,
-            // the second direction's T.CHECK inputs, held from counter 0 to ii / 2
-            held: Vec<DFF<Bits<$W>>>,
-            held_exact: DFF<Bit>,
-            held_tag: DFF<Bits<32>>,
-            held_valid: DFF<Bit>,
-            tc: TCheckFold,
-            // the first direction's verdict (masked by B's degenerate flag) and A's flag
-            ab_t: DFF<Bit>,
-            ab_f: DFF<Bit>,
-            a_deg: DFF<Bit>,
-            fifo: TriFifo,
-            // pairs taken and not yet read out
-            count: DFF<Bits<9>>,
+        $crate::rtl::tri_unit::tri_unit_ports! {
+            $W,
+            /// TRI_UNIT folded (docs/ARCHITECTURE.md, "Folded TRI_UNIT"): [`TriUnit`]'s ports and
+            /// verdicts, bit for bit golden [`tri_unit`](crate::golden::tri_unit::tri_unit), with
+            /// both directions on one [`TCheckFold`] folded for ii / 2 (its plan,
+            /// [`crate::fold::tri_unit_plan`]). A control counter runs 0 .. ii-1 from the first
+            /// pair taken; `in_ready` is high while it is 0 and the result FIFO has room, so a pair
+            /// is taken at most every ii clocks (a writer holds `in_valid` until `in_ready`).
+            /// Taken at counter 0: A's edges against U(B) (B's leaf, M_AB) enter the T.CHECK at
+            /// once, and B's edges against U(A) (A's leaf, M_BA), held in registers with the
+            /// pair's tag and B's `v_exact`, at counter ii / 2. The first direction's T.CHECK tag
+            /// carries the pair's degenerate flags; its masked verdict waits in `ab_t`, `ab_f`
+            /// for the second's, and their Kleene OR enters the result FIFO
+            /// ([`crate::fold::tri_unit_latency`] after the pair, with the FIFO's two registers).
+            /// The frame registers are read when the pair is taken, as in [`TriUnit`].
+            TriUnitFold {
+                // the counter starts with the first pair (`run`), then runs freely
+                run: DFF<Bit>,
+                counter: DFF<Bits<8>>,
+                // per-query registers (`frame_addr`)
+                frame: Vec<DFF<Bits<$W>>>,
+                // the second direction's T.CHECK inputs, held from counter 0 to ii / 2
+                held: Vec<DFF<Bits<$W>>>,
+                held_exact: DFF<Bit>,
+                held_tag: DFF<Bits<32>>,
+                held_valid: DFF<Bit>,
+                tc: TCheckFold,
+                // the first direction's verdict (masked by B's degenerate flag) and A's flag
+                ab_t: DFF<Bit>,
+                ab_f: DFF<Bit>,
+                a_deg: DFF<Bit>,
+                fifo: TriFifo,
+                // pairs taken and not yet read out
+                count: DFF<Bits<9>>,
+            }
         }
 
         impl TriUnitFold {
