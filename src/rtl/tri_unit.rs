@@ -47,6 +47,49 @@ macro_rules! tri_unit_ports {
 }
 pub(crate) use tri_unit_ports;
 
+/// A TRI_UNIT block `name` with [`tri_unit_ports!`]' ports at their defaults and its own
+/// fields `rest` as given.
+macro_rules! tri_unit_new {
+    ($name:ident { $($rest:tt)* }) => {
+        $name {
+            clock: Default::default(),
+            load_en: Default::default(),
+            load_addr: Default::default(),
+            load_data: Default::default(),
+            a_m_0: Default::default(),
+            a_m_1: Default::default(),
+            a_m_2: Default::default(),
+            a_alpha_m: Default::default(),
+            a_alpha_f: Default::default(),
+            a_v_x: Default::default(),
+            a_v_y: Default::default(),
+            a_v_z: Default::default(),
+            a_v_exact: Default::default(),
+            a_degenerate: Default::default(),
+            b_m_0: Default::default(),
+            b_m_1: Default::default(),
+            b_m_2: Default::default(),
+            b_alpha_m: Default::default(),
+            b_alpha_f: Default::default(),
+            b_v_x: Default::default(),
+            b_v_y: Default::default(),
+            b_v_z: Default::default(),
+            b_v_exact: Default::default(),
+            b_degenerate: Default::default(),
+            tag: Default::default(),
+            in_valid: Default::default(),
+            in_ready: Default::default(),
+            out_tag: Default::default(),
+            out_hit: Default::default(),
+            out_uncertain: Default::default(),
+            out_valid: Default::default(),
+            out_ready: Default::default(),
+            $($rest)*
+        }
+    };
+}
+pub(crate) use tri_unit_new;
+
 /// Stamps out `TriUnit` in the calling module (which must also hold `TCheck`).
 /// Arguments: `W` word width.
 macro_rules! tri_unit {
@@ -131,39 +174,7 @@ macro_rules! tri_unit {
 
             /// Both T.CHECKs' value datapaths round with `rounding`.
             pub fn new(rounding: Rounding) -> Self {
-                Self {
-                    clock: Default::default(),
-                    load_en: Default::default(),
-                    load_addr: Default::default(),
-                    load_data: Default::default(),
-                    a_m_0: Default::default(),
-                    a_m_1: Default::default(),
-                    a_m_2: Default::default(),
-                    a_alpha_m: Default::default(),
-                    a_alpha_f: Default::default(),
-                    a_v_x: Default::default(),
-                    a_v_y: Default::default(),
-                    a_v_z: Default::default(),
-                    a_v_exact: Default::default(),
-                    a_degenerate: Default::default(),
-                    b_m_0: Default::default(),
-                    b_m_1: Default::default(),
-                    b_m_2: Default::default(),
-                    b_alpha_m: Default::default(),
-                    b_alpha_f: Default::default(),
-                    b_v_x: Default::default(),
-                    b_v_y: Default::default(),
-                    b_v_z: Default::default(),
-                    b_v_exact: Default::default(),
-                    b_degenerate: Default::default(),
-                    tag: Default::default(),
-                    in_valid: Default::default(),
-                    in_ready: Default::default(),
-                    out_tag: Default::default(),
-                    out_hit: Default::default(),
-                    out_uncertain: Default::default(),
-                    out_valid: Default::default(),
-                    out_ready: Default::default(),
+                $crate::rtl::tri_unit::tri_unit_new! { Self {
                     addr_0: std::array::from_fn(|c| Constant::new((c as u64).into())),
                     addr_1: std::array::from_fn(|c| Constant::new((4 + c as u64).into())),
                     addr_2: std::array::from_fn(|c| Constant::new((8 + c as u64).into())),
@@ -194,7 +205,7 @@ macro_rules! tri_unit {
                     count: Default::default(),
                     take: Default::default(),
                     give: Default::default(),
-                }
+                } }
             }
         }
 

@@ -120,39 +120,7 @@ macro_rules! tri_unit_fold {
             /// A folded TRI_UNIT on a T.CHECK built from `plan` ([`crate::fold::tri_unit_plan`]),
             /// its value datapath rounding with `rounding`.
             pub fn new(plan: $crate::fold::plan::Plan, rounding: Rounding) -> Self {
-                Self {
-                    clock: Default::default(),
-                    load_en: Default::default(),
-                    load_addr: Default::default(),
-                    load_data: Default::default(),
-                    a_m_0: Default::default(),
-                    a_m_1: Default::default(),
-                    a_m_2: Default::default(),
-                    a_alpha_m: Default::default(),
-                    a_alpha_f: Default::default(),
-                    a_v_x: Default::default(),
-                    a_v_y: Default::default(),
-                    a_v_z: Default::default(),
-                    a_v_exact: Default::default(),
-                    a_degenerate: Default::default(),
-                    b_m_0: Default::default(),
-                    b_m_1: Default::default(),
-                    b_m_2: Default::default(),
-                    b_alpha_m: Default::default(),
-                    b_alpha_f: Default::default(),
-                    b_v_x: Default::default(),
-                    b_v_y: Default::default(),
-                    b_v_z: Default::default(),
-                    b_v_exact: Default::default(),
-                    b_degenerate: Default::default(),
-                    tag: Default::default(),
-                    in_valid: Default::default(),
-                    in_ready: Default::default(),
-                    out_tag: Default::default(),
-                    out_hit: Default::default(),
-                    out_uncertain: Default::default(),
-                    out_valid: Default::default(),
-                    out_ready: Default::default(),
+                $crate::rtl::tri_unit::tri_unit_new! { Self {
                     run: Default::default(),
                     counter: Default::default(),
                     frame: (0..$crate::rtl::tri_unit_fold::FRAME_REGS).map(|_| Default::default()).collect(),
@@ -166,7 +134,7 @@ macro_rules! tri_unit_fold {
                     a_deg: Default::default(),
                     fifo: Default::default(),
                     count: Default::default(),
-                }
+                } }
             }
 
             /// Pair in to result visible at the output, with a reader always ready.
