@@ -156,65 +156,33 @@ macro_rules! tcheck_fold {
         $crate::rtl::tcheck_fold::tcheck_fold!(@logic $W, $WM1, $E, $F);
     };
     (@block $W:tt, $WM1:tt, $E:tt, $F:tt) => {
-        /// T.CHECK folded onto shared units by a [`Plan`](crate::fold::plan::Plan): one
-        /// triangle pair every `ii` clocks, taken while the control counter is 0 (it stays 0
-        /// until the first pair, then runs: pairs come ii, 2 ii, ... clocks after it), its results at the outputs `latency` clocks
-        /// later with `valid_out` high for one clock (docs/ARCHITECTURE.md, "Folded
-        /// T.CHECK"). Bit for bit [`TCheck`]'s values and verdicts. Ports: [`TCheck`]'s.
-        #[derive(LogicBlock)]
-        pub struct TCheckFold {
-            pub clock: Signal<In, Clock>,
-            pub m_0: [Signal<In, Bits<$W>>; 4],
-            pub m_1: [Signal<In, Bits<$W>>; 4],
-            pub m_2: [Signal<In, Bits<$W>>; 4],
-            pub alpha_m: Signal<In, Bits<$W>>,
-            pub alpha_f: Signal<In, Bits<$W>>,
-            pub f_0: [Signal<In, Bits<$W>>; 4],
-            pub f_1: [Signal<In, Bits<$W>>; 4],
-            pub f_2: [Signal<In, Bits<$W>>; 4],
-            pub beta_m: Signal<In, Bits<$W>>,
-            pub beta_f: Signal<In, Bits<$W>>,
-            pub scale: Signal<In, Bits<$W>>,
-            pub v_x: [Signal<In, Bits<$W>>; 3],
-            pub v_y: [Signal<In, Bits<$W>>; 3],
-            pub v_z: [Signal<In, Bits<$W>>; 3],
-            pub v_exact: Signal<In, Bit>,
-            pub tag: Signal<In, Bits<32>>,
-            pub valid_in: Signal<In, Bit>,
-            pub s_x: [Signal<Out, Bits<$W>>; 3],
-            pub s_b: [Signal<Out, Bits<$W>>; 3],
-            pub cross_t: [Signal<Out, Bit>; 3],
-            pub cross_f: [Signal<Out, Bit>; 3],
-            pub hit: Signal<Out, Bit>,
-            pub miss: Signal<Out, Bit>,
-            pub tag_out: Signal<Out, Bits<32>>,
-            pub valid_out: Signal<Out, Bit>,
-            plan: $crate::rtl::tcheck_fold::Fixed<$crate::fold::plan::Plan>,
-            // the counter starts with the first pair (`run`), then runs freely
-            run: DFF<Bit>,
-            counter: DFF<Bits<8>>,
-            regs: Vec<DFF<Bits<$W>>>,
-            exact: Vec<DFF<Bit>>,
-            valid: Vec<DFF<Bit>>,
-            tags: Vec<DFF<Bits<32>>>,
-            // the units per class (Class::ALL order)
-            mul_v: Vec<FpMul>,
-            mul_up: Vec<FpMul>,
-            add_v: Vec<FpAdd>,
-            add_up: Vec<FpAdd>,
-            scale_e: Vec<FpScale>,
-            scale_z: Vec<FpScale>,
-            scale_s: Vec<FpScale>,
-            // per edge the signs of Pz, Qz, r_z, a, b, s
-            signs: Vec<Sign>,
-            out_s_x: [DFF<Bits<$W>>; 3],
-            out_s_b: [DFF<Bits<$W>>; 3],
-            out_cross_t: [DFF<Bit>; 3],
-            out_cross_f: [DFF<Bit>; 3],
-            out_hit: DFF<Bit>,
-            out_miss: DFF<Bit>,
-            out_tag: DFF<Bits<32>>,
-            out_valid: DFF<Bit>,
+        $crate::rtl::tcheck::tcheck_ports! {
+            $W,
+            /// T.CHECK folded onto shared units by a [`Plan`](crate::fold::plan::Plan): one
+            /// triangle pair every `ii` clocks, taken while the control counter is 0 (it stays 0
+            /// until the first pair, then runs: pairs come ii, 2 ii, ... clocks after it), its results at the outputs `latency` clocks
+            /// later with `valid_out` high for one clock (docs/ARCHITECTURE.md, "Folded
+            /// T.CHECK"). Bit for bit [`TCheck`]'s values and verdicts. Ports: [`TCheck`]'s.
+            TCheckFold {
+                plan: $crate::rtl::tcheck_fold::Fixed<$crate::fold::plan::Plan>,
+                // the counter starts with the first pair (`run`), then runs freely
+                run: DFF<Bit>,
+                counter: DFF<Bits<8>>,
+                regs: Vec<DFF<Bits<$W>>>,
+                exact: Vec<DFF<Bit>>,
+                valid: Vec<DFF<Bit>>,
+                tags: Vec<DFF<Bits<32>>>,
+                // the units per class (Class::ALL order)
+                mul_v: Vec<FpMul>,
+                mul_up: Vec<FpMul>,
+                add_v: Vec<FpAdd>,
+                add_up: Vec<FpAdd>,
+                scale_e: Vec<FpScale>,
+                scale_z: Vec<FpScale>,
+                scale_s: Vec<FpScale>,
+                // per edge the signs of Pz, Qz, r_z, a, b, s
+                signs: Vec<Sign>,
+            }
         }
 
         impl TCheckFold {
@@ -226,33 +194,7 @@ macro_rules! tcheck_fold {
                 let cert = $crate::golden::certificate::Certificate::new(FORMAT, rounding);
                 let up = Rounding::TowardPositive;
                 let u = plan.units;
-                Self {
-                    clock: Default::default(),
-                    m_0: Default::default(),
-                    m_1: Default::default(),
-                    m_2: Default::default(),
-                    alpha_m: Default::default(),
-                    alpha_f: Default::default(),
-                    f_0: Default::default(),
-                    f_1: Default::default(),
-                    f_2: Default::default(),
-                    beta_m: Default::default(),
-                    beta_f: Default::default(),
-                    scale: Default::default(),
-                    v_x: Default::default(),
-                    v_y: Default::default(),
-                    v_z: Default::default(),
-                    v_exact: Default::default(),
-                    tag: Default::default(),
-                    valid_in: Default::default(),
-                    s_x: Default::default(),
-                    s_b: Default::default(),
-                    cross_t: Default::default(),
-                    cross_f: Default::default(),
-                    hit: Default::default(),
-                    miss: Default::default(),
-                    tag_out: Default::default(),
-                    valid_out: Default::default(),
+                $crate::rtl::tcheck::tcheck_new! { Self {
                     run: Default::default(),
                     counter: Default::default(),
                     regs: (0..plan.word_regs()).map(|_| Default::default()).collect(),
@@ -267,16 +209,8 @@ macro_rules! tcheck_fold {
                     scale_z: (0..u[5]).map(|_| FpScale::new(cert.c_z[0], cert.c_z[1])).collect(),
                     scale_s: (0..u[6]).map(|_| FpScale::new(cert.c_s, cert.c_s)).collect(),
                     signs: (0..18).map(|_| Sign::new()).collect(),
-                    out_s_x: Default::default(),
-                    out_s_b: Default::default(),
-                    out_cross_t: Default::default(),
-                    out_cross_f: Default::default(),
-                    out_hit: Default::default(),
-                    out_miss: Default::default(),
-                    out_tag: Default::default(),
-                    out_valid: Default::default(),
                     plan: $crate::rtl::tcheck_fold::Fixed(std::sync::Arc::new(plan)),
-                }
+                } }
             }
 
             /// The input word `i` ([`Inputs::from_words`](crate::fold::ops::Inputs::from_words)'s order).

@@ -13,63 +13,14 @@ pub(crate) use edge::edge;
 pub(crate) use sign::sign;
 pub(crate) use vertex::vertex;
 
-/// Stamps out `Sign`, `Dot`, `Vertex`, `Edge` and `TCheck` in the calling module (which
-/// must also hold `FpMul`, `FpAdd` and `FORMAT`). Arguments: `W`, `WM1` = W-1, `E`, `F`.
-macro_rules! tcheck {
-    ($W:tt, $WM1:tt, $E:tt, $F:tt) => {
-        use $crate::rtl::delay::Delay;
-
-        /// All ones but the sign bit: a word ANDed with it is its absolute value.
-        const ABS_MASK: u64 = (1u64 << $WM1) - 1;
-
-        // the sub-blocks, one file each (src/rtl/tcheck/*.rs), then TCheck
-        $crate::rtl::tcheck::sign!($W, $WM1, $E, $F);
-        $crate::rtl::tcheck::dot!($W, $WM1);
-        $crate::rtl::tcheck::vertex!($W, $E, $F);
-        $crate::rtl::tcheck::edge!($W);
-        // Row i of M_b (`mb_i`, `mg_i` its magnitude, `in_m_i` M_B's input register, the
-        // R1 registers `mbr_i`, `mgr_i`) and coordinate i of the mapped vertices (`vt_i`,
-        // `vm_i`, `m3_i`, the R2 registers `vtr_i`, `vmr_i`): the kernel's wiring is written
-        // once per row by repetition (rust-hdl kernels allow one loop level only).
-        $crate::rtl::tcheck::tcheck!(@units $W, $WM1, $E, $F;
-            (mb_0 mg_0 in_m_0 c3_0 mbr_0 mgr_0 mg3_0 vc_0 vt_0 vm_0 m3_0 vtr_0 vmr_0)
-            (mb_1 mg_1 in_m_1 c3_1 mbr_1 mgr_1 mg3_1 vc_1 vt_1 vm_1 m3_1 vtr_1 vmr_1)
-            (mb_2 mg_2 in_m_2 c3_2 mbr_2 mgr_2 mg3_2 vc_2 vt_2 vm_2 m3_2 vtr_2 vmr_2));
-    };
-    (@units $W:tt, $WM1:tt, $E:tt, $F:tt; $(($mb:ident $mg:ident $in_m:ident $c3:ident $mbr:ident $mgr:ident $mg3:ident $vc:ident $vt:ident $vm:ident $m3:ident $vtr:ident $vmr:ident))*) => {
-        /// T.CHECK: do the edges of triangle A cross the unit triangle of B's leaf? (DATE'05
-        /// §4.2; golden [`stage1`](crate::golden::tcheck::stage1) then
-        /// [`edges`](crate::golden::tcheck::edges), bit for bit.) One triangle pair per
-        /// clock, latency [`TCheck::LATENCY`] = 52, DATE'05's budget:
-        ///
-        /// | clocks | stage | values | certificate, beside them |
-        /// |---|---|---|---|
-        /// | 1 | input register | `in_*` | |
-        /// | 2-11 | 1: M_b = M_B M_AB (Eqs. 11, 12) | `mb_0..2[j]` ([`Dot`]) | magnitudes `mg_0..2[j]`; A' = alpha_m beta_m + alpha_f beta_f, L1(x) = \|x\| + \|y\| + \|z\| + S per vertex |
-        /// | 12 | fan-out register R1 | `mbr_*` | `mgr_*` |
-        /// | 13-22 | 2: mapped vertices V'_k (Eq. 13) | `vt_0..2[k]` (coordinate i, vertex k) | `vm_0..2[k]`, with `m3_i[k]` = magnitude of Mb_i3 + A' L1 (clocks 13-16) |
-        /// | 23 | fan-out register R2 | `vtr_*` | `vmr_*` |
-        /// | 24-49 | 3, 4: a, b, r_z, s per edge (Eq. 9) | `edges[0..2]` ([`Edge`]) | `verts[k]` ([`Vertex`]): E, E', H; the edges' bounds |
-        /// | 50 | sign register (in each [`Edge`]) | | |
-        /// | 51 | 5: crossing per edge | `v_cross_t`, `v_cross_f` | |
-        /// | 52 | OR over the edges; output register | `out_*` | |
-        ///
-        /// The value datapath takes 1 + 10 + 10 + 7 + 6 + 1 of the paper's 52 clocks; the
-        /// fan-out registers (an M_b entry feeds three vertices' products, a coordinate
-        /// two edges' and the certificate's units) and the sign and verdict registers are
-        /// where the spare clocks buy clock rate, and the certificate's tail (the bounds
-        /// of a, b and s, 13 clocks after s) fits in them.
-        ///
-        /// Ports, all words in the format:
-        /// in `m_0[4]`, `m_1[4]`, `m_2[4]` (rows of B's M_B), `alpha_m`, `alpha_f` (its
-        /// error words), `f_0[4]`, `f_1[4]`, `f_2[4]` (rows of the frame map M_AB),
-        /// `beta_m`, `beta_f` (its error words), `scale` (S of A's object), `v_x[3]`,
-        /// `v_y[3]`, `v_z[3]` (A's vertices), `v_exact`, `tag[32]`, `valid_in`;
-        /// out `s_x[3]`, `s_b[3]` (stage 4's s per edge and its bound), `cross_t[3]`,
-        /// `cross_f[3]`, `hit` (surely crosses), `miss` (surely does not), `tag_out`,
-        /// `valid_out`.
+/// T.CHECK's ports (documented on `TCheck`), one list for every T.CHECK: declares the block
+/// `name` (its doc attributes first) with them, then its own fields `rest`, then the output
+/// registers every T.CHECK drives its outputs from. Arguments: `W` word width.
+macro_rules! tcheck_ports {
+    ($W:tt, $(#[$m:meta])* $name:ident { $($rest:tt)* }) => {
+        $(#[$m])*
         #[derive(LogicBlock)]
-        pub struct TCheck {
+        pub struct $name {
             pub clock: Signal<In, Clock>,
             pub m_0: [Signal<In, Bits<$W>>; 4],
             pub m_1: [Signal<In, Bits<$W>>; 4],
@@ -96,93 +47,8 @@ macro_rules! tcheck {
             pub miss: Signal<Out, Bit>,
             pub tag_out: Signal<Out, Bits<32>>,
             pub valid_out: Signal<Out, Bit>,
-            mask: Constant<Bits<$W>>,
-            // clock 1: input register
-            in_m_0: [DFF<Bits<$W>>; 4],
-            in_m_1: [DFF<Bits<$W>>; 4],
-            in_m_2: [DFF<Bits<$W>>; 4],
-            in_alpha_m: DFF<Bits<$W>>,
-            in_alpha_f: DFF<Bits<$W>>,
-            in_f_0: [DFF<Bits<$W>>; 4],
-            in_f_1: [DFF<Bits<$W>>; 4],
-            in_f_2: [DFF<Bits<$W>>; 4],
-            in_beta_m: DFF<Bits<$W>>,
-            in_beta_f: DFF<Bits<$W>>,
-            in_scale: DFF<Bits<$W>>,
-            in_v_x: [DFF<Bits<$W>>; 3],
-            in_v_y: [DFF<Bits<$W>>; 3],
-            in_v_z: [DFF<Bits<$W>>; 3],
-            in_v_exact: DFF<Bit>,
-            in_tag: DFF<Bits<32>>,
-            in_valid: DFF<Bit>,
-            // stage 1: row i of M_b and its magnitude, column j; M_B's translation waits
-            // for the products (Dot::C_AT)
-            mb_0: [Dot; 4],
-            mb_1: [Dot; 4],
-            mb_2: [Dot; 4],
-            mg_0: [Dot; 4],
-            mg_1: [Dot; 4],
-            mg_2: [Dot; 4],
-            c3_0: Delay<Bits<$W>, { Dot::C_AT }>,
-            c3_1: Delay<Bits<$W>, { Dot::C_AT }>,
-            c3_2: Delay<Bits<$W>, { Dot::C_AT }>,
-            // the input errors: A' (clocks 2-8, waiting 1) and L1 per vertex (2-7, waiting 2),
-            // err = A' L1 (10-13)
-            am: FpMul,
-            af: FpMul,
-            aerr: FpAdd,
-            aerr_wait: Delay<Bits<$W>, 1>,
-            la: [FpAdd; 3],
-            lb: [FpAdd; 3],
-            l1: [FpAdd; 3],
-            l1_wait: [Delay<Bits<$W>, 2>; 3],
-            err: [FpMul; 3],
-            // R1
-            mbr_0: [DFF<Bits<$W>>; 4],
-            mbr_1: [DFF<Bits<$W>>; 4],
-            mbr_2: [DFF<Bits<$W>>; 4],
-            mgr_0: [DFF<Bits<$W>>; 4],
-            mgr_1: [DFF<Bits<$W>>; 4],
-            mgr_2: [DFF<Bits<$W>>; 4],
-            // stage 2: coordinate i of vertex k, its magnitude (translation term + A' L1),
-            // the vertices waiting for M_b, Mb_i3 waiting for the products
-            mg3_0: Delay<Bits<$W>, 1>,
-            mg3_1: Delay<Bits<$W>, 1>,
-            mg3_2: Delay<Bits<$W>, 1>,
-            m3_0: [FpAdd; 3],
-            m3_1: [FpAdd; 3],
-            m3_2: [FpAdd; 3],
-            vc_0: Delay<Bits<$W>, { Dot::C_AT }>,
-            vc_1: Delay<Bits<$W>, { Dot::C_AT }>,
-            vc_2: Delay<Bits<$W>, { Dot::C_AT }>,
-            v_x_wait: [Delay<Bits<$W>, 11>; 3],
-            v_y_wait: [Delay<Bits<$W>, 11>; 3],
-            v_z_wait: [Delay<Bits<$W>, 11>; 3],
-            vt_0: [Dot; 3],
-            vt_1: [Dot; 3],
-            vt_2: [Dot; 3],
-            vm_0: [Dot; 3],
-            vm_1: [Dot; 3],
-            vm_2: [Dot; 3],
-            // R2
-            vtr_0: [DFF<Bits<$W>>; 3],
-            vtr_1: [DFF<Bits<$W>>; 3],
-            vtr_2: [DFF<Bits<$W>>; 3],
-            vmr_0: [DFF<Bits<$W>>; 3],
-            vmr_1: [DFF<Bits<$W>>; 3],
-            vmr_2: [DFF<Bits<$W>>; 3],
-            exact_wait: Delay<Bit, 22>,
-            // stages 3-5
-            verts: [Vertex; 3],
-            edges: [Edge; 3],
-            tag_wait: Delay<Bits<32>, 50>,
-            valid_wait: Delay<Bit, 50>,
-            v_cross_t: [DFF<Bit>; 3],
-            v_cross_f: [DFF<Bit>; 3],
-            v_s_x: [DFF<Bits<$W>>; 3],
-            v_s_b: [DFF<Bits<$W>>; 3],
-            hit_any: Signal<Local, Bit>,
-            miss_all: Signal<Local, Bit>,
+            $($rest)*
+            // the output registers
             out_s_x: [DFF<Bits<$W>>; 3],
             out_s_b: [DFF<Bits<$W>>; 3],
             out_cross_t: [DFF<Bit>; 3],
@@ -191,6 +57,202 @@ macro_rules! tcheck {
             out_miss: DFF<Bit>,
             out_tag: DFF<Bits<32>>,
             out_valid: DFF<Bit>,
+        }
+    };
+}
+pub(crate) use tcheck_ports;
+
+/// A T.CHECK block `name` with [`tcheck_ports!`]' ports and output registers at their
+/// defaults and its own fields `rest` as given.
+macro_rules! tcheck_new {
+    ($name:ident { $($rest:tt)* }) => {
+        $name {
+            clock: Default::default(),
+            m_0: Default::default(),
+            m_1: Default::default(),
+            m_2: Default::default(),
+            alpha_m: Default::default(),
+            alpha_f: Default::default(),
+            f_0: Default::default(),
+            f_1: Default::default(),
+            f_2: Default::default(),
+            beta_m: Default::default(),
+            beta_f: Default::default(),
+            scale: Default::default(),
+            v_x: Default::default(),
+            v_y: Default::default(),
+            v_z: Default::default(),
+            v_exact: Default::default(),
+            tag: Default::default(),
+            valid_in: Default::default(),
+            s_x: Default::default(),
+            s_b: Default::default(),
+            cross_t: Default::default(),
+            cross_f: Default::default(),
+            hit: Default::default(),
+            miss: Default::default(),
+            tag_out: Default::default(),
+            valid_out: Default::default(),
+            out_s_x: Default::default(),
+            out_s_b: Default::default(),
+            out_cross_t: Default::default(),
+            out_cross_f: Default::default(),
+            out_hit: Default::default(),
+            out_miss: Default::default(),
+            out_tag: Default::default(),
+            out_valid: Default::default(),
+            $($rest)*
+        }
+    };
+}
+pub(crate) use tcheck_new;
+
+/// Stamps out `Sign`, `Dot`, `Vertex`, `Edge` and `TCheck` in the calling module (which
+/// must also hold `FpMul`, `FpAdd` and `FORMAT`). Arguments: `W`, `WM1` = W-1, `E`, `F`.
+macro_rules! tcheck {
+    ($W:tt, $WM1:tt, $E:tt, $F:tt) => {
+        use $crate::rtl::delay::Delay;
+
+        /// All ones but the sign bit: a word ANDed with it is its absolute value.
+        const ABS_MASK: u64 = (1u64 << $WM1) - 1;
+
+        // the sub-blocks, one file each (src/rtl/tcheck/*.rs), then TCheck
+        $crate::rtl::tcheck::sign!($W, $WM1, $E, $F);
+        $crate::rtl::tcheck::dot!($W, $WM1);
+        $crate::rtl::tcheck::vertex!($W, $E, $F);
+        $crate::rtl::tcheck::edge!($W);
+        // Row i of M_b (`mb_i`, `mg_i` its magnitude, `in_m_i` M_B's input register, the
+        // R1 registers `mbr_i`, `mgr_i`) and coordinate i of the mapped vertices (`vt_i`,
+        // `vm_i`, `m3_i`, the R2 registers `vtr_i`, `vmr_i`): the kernel's wiring is written
+        // once per row by repetition (rust-hdl kernels allow one loop level only).
+        $crate::rtl::tcheck::tcheck!(@units $W, $WM1, $E, $F;
+            (mb_0 mg_0 in_m_0 c3_0 mbr_0 mgr_0 mg3_0 vc_0 vt_0 vm_0 m3_0 vtr_0 vmr_0)
+            (mb_1 mg_1 in_m_1 c3_1 mbr_1 mgr_1 mg3_1 vc_1 vt_1 vm_1 m3_1 vtr_1 vmr_1)
+            (mb_2 mg_2 in_m_2 c3_2 mbr_2 mgr_2 mg3_2 vc_2 vt_2 vm_2 m3_2 vtr_2 vmr_2));
+    };
+    (@units $W:tt, $WM1:tt, $E:tt, $F:tt; $(($mb:ident $mg:ident $in_m:ident $c3:ident $mbr:ident $mgr:ident $mg3:ident $vc:ident $vt:ident $vm:ident $m3:ident $vtr:ident $vmr:ident))*) => {
+        $crate::rtl::tcheck::tcheck_ports! {
+            $W,
+            /// T.CHECK: do the edges of triangle A cross the unit triangle of B's leaf? (DATE'05
+            /// §4.2; golden [`stage1`](crate::golden::tcheck::stage1) then
+            /// [`edges`](crate::golden::tcheck::edges), bit for bit.) One triangle pair per
+            /// clock, latency [`TCheck::LATENCY`] = 52, DATE'05's budget:
+            ///
+            /// | clocks | stage | values | certificate, beside them |
+            /// |---|---|---|---|
+            /// | 1 | input register | `in_*` | |
+            /// | 2-11 | 1: M_b = M_B M_AB (Eqs. 11, 12) | `mb_0..2[j]` ([`Dot`]) | magnitudes `mg_0..2[j]`; A' = alpha_m beta_m + alpha_f beta_f, L1(x) = \|x\| + \|y\| + \|z\| + S per vertex |
+            /// | 12 | fan-out register R1 | `mbr_*` | `mgr_*` |
+            /// | 13-22 | 2: mapped vertices V'_k (Eq. 13) | `vt_0..2[k]` (coordinate i, vertex k) | `vm_0..2[k]`, with `m3_i[k]` = magnitude of Mb_i3 + A' L1 (clocks 13-16) |
+            /// | 23 | fan-out register R2 | `vtr_*` | `vmr_*` |
+            /// | 24-49 | 3, 4: a, b, r_z, s per edge (Eq. 9) | `edges[0..2]` ([`Edge`]) | `verts[k]` ([`Vertex`]): E, E', H; the edges' bounds |
+            /// | 50 | sign register (in each [`Edge`]) | | |
+            /// | 51 | 5: crossing per edge | `v_cross_t`, `v_cross_f` | |
+            /// | 52 | OR over the edges; output register | `out_*` | |
+            ///
+            /// The value datapath takes 1 + 10 + 10 + 7 + 6 + 1 of the paper's 52 clocks; the
+            /// fan-out registers (an M_b entry feeds three vertices' products, a coordinate
+            /// two edges' and the certificate's units) and the sign and verdict registers are
+            /// where the spare clocks buy clock rate, and the certificate's tail (the bounds
+            /// of a, b and s, 13 clocks after s) fits in them.
+            ///
+            /// Ports, all words in the format:
+            /// in `m_0[4]`, `m_1[4]`, `m_2[4]` (rows of B's M_B), `alpha_m`, `alpha_f` (its
+            /// error words), `f_0[4]`, `f_1[4]`, `f_2[4]` (rows of the frame map M_AB),
+            /// `beta_m`, `beta_f` (its error words), `scale` (S of A's object), `v_x[3]`,
+            /// `v_y[3]`, `v_z[3]` (A's vertices), `v_exact`, `tag[32]`, `valid_in`;
+            /// out `s_x[3]`, `s_b[3]` (stage 4's s per edge and its bound), `cross_t[3]`,
+            /// `cross_f[3]`, `hit` (surely crosses), `miss` (surely does not), `tag_out`,
+            /// `valid_out`.
+            TCheck {
+                mask: Constant<Bits<$W>>,
+                // clock 1: input register
+                in_m_0: [DFF<Bits<$W>>; 4],
+                in_m_1: [DFF<Bits<$W>>; 4],
+                in_m_2: [DFF<Bits<$W>>; 4],
+                in_alpha_m: DFF<Bits<$W>>,
+                in_alpha_f: DFF<Bits<$W>>,
+                in_f_0: [DFF<Bits<$W>>; 4],
+                in_f_1: [DFF<Bits<$W>>; 4],
+                in_f_2: [DFF<Bits<$W>>; 4],
+                in_beta_m: DFF<Bits<$W>>,
+                in_beta_f: DFF<Bits<$W>>,
+                in_scale: DFF<Bits<$W>>,
+                in_v_x: [DFF<Bits<$W>>; 3],
+                in_v_y: [DFF<Bits<$W>>; 3],
+                in_v_z: [DFF<Bits<$W>>; 3],
+                in_v_exact: DFF<Bit>,
+                in_tag: DFF<Bits<32>>,
+                in_valid: DFF<Bit>,
+                // stage 1: row i of M_b and its magnitude, column j; M_B's translation waits
+                // for the products (Dot::C_AT)
+                mb_0: [Dot; 4],
+                mb_1: [Dot; 4],
+                mb_2: [Dot; 4],
+                mg_0: [Dot; 4],
+                mg_1: [Dot; 4],
+                mg_2: [Dot; 4],
+                c3_0: Delay<Bits<$W>, { Dot::C_AT }>,
+                c3_1: Delay<Bits<$W>, { Dot::C_AT }>,
+                c3_2: Delay<Bits<$W>, { Dot::C_AT }>,
+                // the input errors: A' (clocks 2-8, waiting 1) and L1 per vertex (2-7, waiting 2),
+                // err = A' L1 (10-13)
+                am: FpMul,
+                af: FpMul,
+                aerr: FpAdd,
+                aerr_wait: Delay<Bits<$W>, 1>,
+                la: [FpAdd; 3],
+                lb: [FpAdd; 3],
+                l1: [FpAdd; 3],
+                l1_wait: [Delay<Bits<$W>, 2>; 3],
+                err: [FpMul; 3],
+                // R1
+                mbr_0: [DFF<Bits<$W>>; 4],
+                mbr_1: [DFF<Bits<$W>>; 4],
+                mbr_2: [DFF<Bits<$W>>; 4],
+                mgr_0: [DFF<Bits<$W>>; 4],
+                mgr_1: [DFF<Bits<$W>>; 4],
+                mgr_2: [DFF<Bits<$W>>; 4],
+                // stage 2: coordinate i of vertex k, its magnitude (translation term + A' L1),
+                // the vertices waiting for M_b, Mb_i3 waiting for the products
+                mg3_0: Delay<Bits<$W>, 1>,
+                mg3_1: Delay<Bits<$W>, 1>,
+                mg3_2: Delay<Bits<$W>, 1>,
+                m3_0: [FpAdd; 3],
+                m3_1: [FpAdd; 3],
+                m3_2: [FpAdd; 3],
+                vc_0: Delay<Bits<$W>, { Dot::C_AT }>,
+                vc_1: Delay<Bits<$W>, { Dot::C_AT }>,
+                vc_2: Delay<Bits<$W>, { Dot::C_AT }>,
+                v_x_wait: [Delay<Bits<$W>, 11>; 3],
+                v_y_wait: [Delay<Bits<$W>, 11>; 3],
+                v_z_wait: [Delay<Bits<$W>, 11>; 3],
+                vt_0: [Dot; 3],
+                vt_1: [Dot; 3],
+                vt_2: [Dot; 3],
+                vm_0: [Dot; 3],
+                vm_1: [Dot; 3],
+                vm_2: [Dot; 3],
+                // R2
+                vtr_0: [DFF<Bits<$W>>; 3],
+                vtr_1: [DFF<Bits<$W>>; 3],
+                vtr_2: [DFF<Bits<$W>>; 3],
+                vmr_0: [DFF<Bits<$W>>; 3],
+                vmr_1: [DFF<Bits<$W>>; 3],
+                vmr_2: [DFF<Bits<$W>>; 3],
+                exact_wait: Delay<Bit, 22>,
+                // stages 3-5
+                verts: [Vertex; 3],
+                edges: [Edge; 3],
+                tag_wait: Delay<Bits<32>, 50>,
+                valid_wait: Delay<Bit, 50>,
+                v_cross_t: [DFF<Bit>; 3],
+                v_cross_f: [DFF<Bit>; 3],
+                v_s_x: [DFF<Bits<$W>>; 3],
+                v_s_b: [DFF<Bits<$W>>; 3],
+                hit_any: Signal<Local, Bit>,
+                miss_all: Signal<Local, Bit>,
+            }
         }
 
         impl TCheck {
@@ -201,33 +263,7 @@ macro_rules! tcheck {
             pub fn new(rounding: Rounding) -> Self {
                 let cert = $crate::golden::certificate::Certificate::new(FORMAT, rounding);
                 let up = Rounding::TowardPositive;
-                Self {
-                    clock: Default::default(),
-                    m_0: Default::default(),
-                    m_1: Default::default(),
-                    m_2: Default::default(),
-                    alpha_m: Default::default(),
-                    alpha_f: Default::default(),
-                    f_0: Default::default(),
-                    f_1: Default::default(),
-                    f_2: Default::default(),
-                    beta_m: Default::default(),
-                    beta_f: Default::default(),
-                    scale: Default::default(),
-                    v_x: Default::default(),
-                    v_y: Default::default(),
-                    v_z: Default::default(),
-                    v_exact: Default::default(),
-                    tag: Default::default(),
-                    valid_in: Default::default(),
-                    s_x: Default::default(),
-                    s_b: Default::default(),
-                    cross_t: Default::default(),
-                    cross_f: Default::default(),
-                    hit: Default::default(),
-                    miss: Default::default(),
-                    tag_out: Default::default(),
-                    valid_out: Default::default(),
+                $crate::rtl::tcheck::tcheck_new! { Self {
                     mask: Constant::new(ABS_MASK.into()),
                     in_m_0: Default::default(),
                     in_m_1: Default::default(),
@@ -305,15 +341,7 @@ macro_rules! tcheck {
                     v_s_b: Default::default(),
                     hit_any: Default::default(),
                     miss_all: Default::default(),
-                    out_s_x: Default::default(),
-                    out_s_b: Default::default(),
-                    out_cross_t: Default::default(),
-                    out_cross_f: Default::default(),
-                    out_hit: Default::default(),
-                    out_miss: Default::default(),
-                    out_tag: Default::default(),
-                    out_valid: Default::default(),
-                }
+                } }
             }
         }
 
