@@ -179,9 +179,14 @@ const ORACLE_CHUNK: usize = 1 << 18;
 /// geometry (the oracle's exact predicates), sorted. B is placed and searched a chunk of
 /// [`ORACLE_CHUNK`] triangles at a time.
 pub fn exact_pairs(a: &[Tri], b: &[Tri], pose: &Pose) -> Vec<(u32, u32)> {
+    exact_pairs_by(a, b, pose, ORACLE_CHUNK)
+}
+
+/// [`exact_pairs`] with B placed and searched `chunk` triangles at a time.
+fn exact_pairs_by(a: &[Tri], b: &[Tri], pose: &Pose, chunk: usize) -> Vec<(u32, u32)> {
     let mut pairs: Vec<(u32, u32)> = b
-        .chunks(ORACLE_CHUNK)
-        .zip((0..).step_by(ORACLE_CHUNK))
+        .chunks(chunk)
+        .zip((0..).step_by(chunk))
         .flat_map(|(chunk, first)| oracle::intersecting_pairs(a, &place(chunk, pose)).into_iter().map(move |(i, j)| (i, j + first as u32)))
         .collect();
     pairs.sort_unstable();
@@ -242,6 +247,21 @@ mod tests {
         for pose in [Pose::new(0.0, 0.0, 0.0, 2e60, 0.0, 0.0), Pose::new(1e-300, 0.0, 0.0, 0.0, 0.0, 0.0)] {
             let e = chip.check_pose(&pose).unwrap_err();
             assert!(e.starts_with("object B at pose ") && e.contains("1e-60 to 1e60"), "{e}");
+        }
+    }
+
+    /// B searched a chunk at a time gives the pairs of B searched whole (the oracle on all of
+    /// B placed), sorted, whatever the chunk: chunk offsets and order are checked where
+    /// [`ORACLE_CHUNK`] is too large for a test's meshes to split.
+    #[test]
+    fn exact_pairs_by_chunk_equal_the_whole_search() {
+        let (a, b) = (crate::mesh::soup(60, 1).triangles_f64(), crate::mesh::soup(60, 2).triangles_f64());
+        let pose = Pose::new(10.0, 20.0, 30.0, 0.05, 0.0, 0.0);
+        let mut whole = oracle::intersecting_pairs(&a, &place(&b, &pose));
+        whole.sort_unstable();
+        assert!(whole.len() > 5 && whole.iter().any(|p| p.1 >= 40), "a test with pairs in later chunks: {whole:?}");
+        for chunk in [1, 7, 32, 60, 1000] {
+            assert_eq!(exact_pairs_by(&a, &b, &pose, chunk), whole, "chunk {chunk}");
         }
     }
 

@@ -162,7 +162,6 @@ impl ObjectImage {
         let children: Vec<_> = tree.nodes().map(|n| if let Node::Inner(c) = n { Some(c) } else { None }).collect();
         let leaves: Vec<u32> = tree.nodes().filter_map(|n| if let Node::Leaf(t) = n { Some(t) } else { None }).collect();
         let (records, ids, tri_records) = (node_records(cfg.layout, &children), node_ids(cfg.layout, &children), tri_records(cfg.layout, &leaves));
-        drop((children, leaves));
         ObjectImage { tree, scale, tri_format: fmt, lambda_max, records, ids, tri_records }
     }
 
