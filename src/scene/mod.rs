@@ -544,7 +544,11 @@ impl Scene {
         }
         // the command line's technology replaces the scene's clock
         let (technology, clock_mhz) = if flags.technology.is_some() { (flags.technology, None) } else { (technology, clock_mhz) };
-        let clock = clock(&cfg, preset, technology, clock_mhz).map_err(err)?;
+        let mut clock = clock(&cfg, preset, technology, clock_mhz).map_err(err)?;
+        if params.tri_interval > 1 && clock.assumed.is_none() {
+            // the timing tables measure the unfolded TRI_UNIT and chips built on it
+            clock.not_measured.push(format!("the folded TRI_UNIT at tri_interval {} (the period is the unfolded chip's, assumed for it)", params.tri_interval));
+        }
         Ok(Scene {
             name: name.to_string(),
             objects: f.objects,
@@ -681,6 +685,7 @@ mod tests {
         let s = Scene::parse(&format!("{base}[chip]\npreset = \"date05\"\n[timing]\ntri_interval = 16\n"), "s").unwrap();
         assert_eq!(s.params, Params { tri_interval: 16, ..Preset::Date05.params() });
         assert!(s.configuration().contains("tri_interval 16 (folded TRI_UNIT"), "{}", s.configuration());
+        assert!(s.clock.source().contains("units not measured: the folded TRI_UNIT at tri_interval 16"), "{}", s.clock.source());
         for (keys, want) in [
             ("tri_interval = 3", "tri_interval must be 1 (TRI_UNIT unfolded) or an even number of clocks from 2 to 32"),
             ("tri_interval = 34", "not 34"),
