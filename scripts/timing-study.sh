@@ -334,7 +334,7 @@ with open(out, 'w', newline='') as f:
 # A configuration = number format x DOP rounding. Its units: those of that format and
 # rounding, those of that format without a rounding (fp_scale), the triangle datapath of that
 # format (T.CHECK / TRI_UNIT: round to nearest even in every configuration) and the
-# format-free ones (pair queue). A chip (chip_<dop format>[_<triangle format>]_k<k>) is a
+# format-free ones (pair queue); a folded unit (`_fold<ii>`) only in a chip folded alike. A chip (chip_<dop format>[_<triangle format>]_k<k>) is a
 # configuration of its own: its period is that of its own netlist, where every stage, the
 # control and the paths between units are timed together; its units' rows (DOP format rounding
 # outward, as every chip's lanes: src/chip/rtl.rs; T.CHECK / TRI_UNIT of the triangle
@@ -344,8 +344,10 @@ chip = lambda r: r['unit'].startswith('chip_')
 configs = sorted({(r['format'], r['rounding']) for r in timed
                   if r['format'] != '-' and r['rounding'] != '-'
                   and not r['unit'].startswith(('tcheck', 'tri_unit'))})
-def member(r, fmt, rnd, tri_fmt=None, k=None):
+fold = lambda name: (re.search(r'_fold(\d+)', name) or [None, None])[1]
+def member(r, fmt, rnd, tri_fmt=None, k=None, ii=None):
     if chip(r) or (k and r['unit'].startswith('dop_unit_') and f'_k{k}_' not in r['unit']): return False
+    if fold(r['unit']) != ii: return False  # a folded unit (tri_unit_fold16_*) is in its folded chips only
     if r['format'] == '-': return True
     if r['unit'].startswith(('tcheck', 'tri_unit')): return r['format'] == (tri_fmt or fmt)
     return r['format'] == fmt and r['rounding'] in (rnd, '-')
@@ -365,8 +367,8 @@ ch = ('format,rounding,min_period_ns,fmax_mhz,slowest_unit,slow_stage,'
 crow = [config_row(f'{fmt} {rnd}', fmt, rnd, [r for r in timed if member(r, fmt, rnd)]) for fmt, rnd in configs]
 for c in (r for r in timed if chip(r)):
     dop, tri = (c['format'].split('/') + [None])[:2]
-    k = re.search(r'_k(\d+)$', c['unit']).group(1)
-    crow.append(config_row(c['unit'], c['format'], 'ru', [r for r in timed if member(r, dop, 'ru', tri, k)], c))
+    k = re.search(r'_k(\d+)', c['unit']).group(1)
+    crow.append(config_row(c['unit'], c['format'], 'ru', [r for r in timed if member(r, dop, 'ru', tri, k, fold(c['unit']))], c))
 with open(conf, 'w', newline='') as f:
     w = csv.DictWriter(f, ch, lineterminator='\n'); w.writeheader(); w.writerows(crow)
 fmt = '{:<24} {:>7} {:>11} {:>10} {:>8} {:>8}  {}'
