@@ -3,8 +3,10 @@
 #
 # Usage: scripts/synth.sh [--target generic|ice40|ecp5|xilinx] [--top MODULE] [--flat] <unit_file.v>...
 #   --target T   generic (default): `synth -flatten` to Yosys' internal gate library;
-#                ice40/ecp5/xilinx: the FPGA flow synth_<T> -flatten (both keep the
-#                hierarchy described below unless --flat)
+#                ice40/ecp5/xilinx: the FPGA flow synth_<T> -flatten (xilinx: `-family xcup`,
+#                AMD UltraScale+: LUT6, DSP48E2, RAMB18E2/36E2; all keep the hierarchy
+#                described below unless --flat). FPGA targets add a line `<unit> resources:`
+#                with LUTs, flip-flops, shift-register LUTs, DSP blocks and block RAMs.
 #   --top MODULE top module in each file (default: `top` if present, else the file's basename)
 #   --flat       flatten the whole unit (slow for the DOP units; the default is hierarchical)
 # Hierarchical by default: every module that instantiates other modules (the unit, a DOP
@@ -35,7 +37,8 @@ done
 [ ${#FILES[@]} -gt 0 ] || { sed -n '2,/^$/p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 2; }
 case $TARGET in
   generic) SYNTH="synth -flatten" ;;
-  ice40|ecp5|xilinx) SYNTH="synth_$TARGET -flatten" ;;
+  ice40|ecp5) SYNTH="synth_$TARGET -flatten" ;;
+  xilinx) SYNTH="synth_xilinx -family xcup -flatten" ;;
   *) echo "synth.sh: unknown target $TARGET" >&2; exit 2 ;;
 esac
 # Modules holding an instance of a module (cells whose type is not a Yosys `$` cell) keep
@@ -58,6 +61,11 @@ for f in "${FILES[@]}"; do
   cells=$(grep -E '^\s+Number of cells:' "$out/stat.txt" | tail -n 1 | awk '{print $4}')
   echo "$unit cells: $cells"
   SUMMARY+=("$unit cells: $cells")
+  if [ "$TARGET" != generic ]; then
+    res=$("$PY" "$SCRIPTS/verilog/resources.py" "$out/stat.txt")
+    echo "$unit resources: $res"
+    SUMMARY+=("$unit resources: $res")
+  fi
 done
 if [ ${#FILES[@]} -gt 1 ]; then printf '%s\n' "--- summary ($TARGET)" "${SUMMARY[@]}"; fi
 exit $status
