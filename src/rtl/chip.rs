@@ -14,9 +14,9 @@
 /// k; `Dop = dop_new` its unit's type and constructor from the DOP rounding (`DopUnit6 =
 /// DopUnit6::new` for k = 6); `Tri = tri_new` TRI_UNIT's type and constructor from T.CHECK's
 /// rounding (`TriUnit = TriUnit::new`, or a `TriUnitFold` on its plan: any block with
-/// `TriUnit`'s ports, `tri_unit_ports!`, whose
-/// `in_ready` paces the leaf register); `WD` the DOP format's word width, `WT` T.CHECK's, `NW` node-word
-/// bits (`1 + K WD + 64`), `TW` triangle-word bits (`23 WT + 2`), `MW` memory-word bits
+/// `TriUnit`'s ports, `tri_unit_ports!`, whose `in_ready` paces the leaf register); `WD` the
+/// DOP format's word width, `WT` T.CHECK's, `NW` node-word bits (`1 + K WD + 64`), `TW`
+/// triangle-word bits (`23 WT + 2`), `MW` memory-word bits
 /// ([`crate::chip::rtl::ChipKind::word_bits`]), `RW` the node record's bits (`2 NW` on a
 /// chip that also reads the `records` layout, else `NW`).
 macro_rules! chip {
