@@ -1,7 +1,8 @@
 //! The RTL collision chip in rust-hdl, clocked in lockstep with the cycle model
 //! (`cycle::drive::Lockstep`): every output and every traversal signal of
-//! `chip::probes::PROBES` equal after every clock, on three queries of the checked-in set, one of
-//! them on the papers' chip (k = 24, binary32; the traces the exported Verilog must
+//! `chip::probes::PROBES` equal after every clock, on queries of the checked-in set, one of
+//! them on the papers' chip (k = 24, binary32), one on the k = 6 chip with a folded TRI_UNIT
+//! (the traces the exported Verilog must
 //! reproduce under Verilator, scripts/run-chip.sh), on a
 //! query drawn from a fixed seed (DDR memory), on a leaf pair that is the query's last event
 //! and on an overflowing queue. The answers are checked against the golden model too.
@@ -46,7 +47,7 @@ struct Case {
 impl Case {
     fn new(name: &str, chip: Chip, pose: Pose, order: Order, mode: Mode, params: Params, reader: Reader) -> Case {
         let setup = chip.setup(&pose);
-        let kind = ChipKind::of(&chip.cfg).expect("an RTL chip's configuration");
+        let kind = ChipKind::of(&chip.cfg, params.tri_interval).expect("an RTL chip's configuration");
         let image = QueryImage::new(kind, &chip.a, &chip.b, &setup, order, mode, &params, &chip.cfg).unwrap();
         let golden = chip.query(&pose, Mode::All, if order == Order::Lifo { Traversal::Lifo } else { Traversal::Fifo });
         Case { name: name.into(), chip, setup, image, golden, order, mode, params, reader }
@@ -289,6 +290,24 @@ fn k24r_patch_fifo_all() {
     let tr = &case.lockstep::<10, 11, 9>(1, None)[0];
     case.check(tr);
     assert!(tr.tri_tests > 0, "the query tests triangles");
+    compare_with_expect(q.name, tr);
+}
+
+/// The k = 6 chip with TRI_UNIT folded (`TriUnitFold`, a pair every 16 clocks; issue 33) on a
+/// bunny patch at full speed: leaf pairs wait in the leaf register for the unit's slots
+/// (`in_ready` high one clock in 16 from the first pair), every signal equal to the cycle
+/// model's (`[timing] tri_interval = 16`, its latency `fold::tri_unit_latency`) clock by
+/// clock, the answer the golden model's, and the trace the checked-in one (which Verilator
+/// reproduces in CI).
+#[test]
+fn fold16_patch_fifo_all() {
+    let q = query("fold16_patch_fifo_all");
+    assert_eq!((q.chip, q.params().tri_interval), (ChipKind::K6E8m15Fold16, 16));
+    let case = Case::of(&q);
+    let tr = &case.lockstep::<10, 11, 9>(1, None)[0];
+    case.check(tr);
+    // pairs back to back at one a clock would need fewer clocks than 16 per pair
+    assert!(tr.tri_tests > 4, "{} triangle tests", tr.tri_tests);
     compare_with_expect(q.name, tr);
 }
 

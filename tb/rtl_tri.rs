@@ -304,6 +304,7 @@ macro_rules! impl_tri_unit {
 impl_tri_unit!(b32::TriUnit, |_| b32::TriUnit::LATENCY, |_| 1);
 impl_tri_unit!(e8m15::TriUnit, |_| e8m15::TriUnit::LATENCY, |_| 1);
 impl_tri_unit!(b32::TriUnitFold, b32::TriUnitFold::latency, b32::TriUnitFold::interval);
+impl_tri_unit!(e8m15::TriUnitFold, e8m15::TriUnitFold::latency, e8m15::TriUnitFold::interval);
 
 /// TRI_UNIT work: setup writes and pairs in the order the host issues them (the frame
 /// registers are read when a pair is taken, so a new pose's setup may follow pairs still
@@ -481,16 +482,32 @@ fn tri_unit_e8m15() {
 /// pairs taken 16 clocks apart (or a multiple: a setup write can make a pair miss its slot).
 #[test]
 fn tri_unit_fold16_binary32() {
-    let f = Format::BINARY32;
+    assert_none("folded TRI_UNIT (II 16) binary32", "pairs", tri_unit_fold16_mismatches(Format::BINARY32));
+}
+
+/// The same in e8m15 (`rtl::e8m15::TriUnitFold`, the TRI_UNIT of the chip
+/// `chip_e8m15_k6_fold16`): the generator's schedule on e8m15's units, bit for bit golden.
+#[test]
+fn tri_unit_fold16_e8m15() {
+    assert_none("folded TRI_UNIT (II 16) e8m15", "pairs", tri_unit_fold16_mismatches(Format::REDUCED));
+}
+
+/// The hard cases and a 4 x 5 soup through the TRI_UNIT folded for a pair every 16 clocks
+/// in `f`: the mismatches and the number of pairs.
+fn tri_unit_fold16_mismatches(f: Format) -> (Vec<String>, usize) {
     let mut triples = catalogue_triples(f);
     triples.extend(soup_triples(f, 4, 5));
     let job = tri_job(f, &triples);
     let n = job.golden.len();
     let bad = big_stack(move || {
         let plan = collision_chip::fold::tri_unit_plan(16).unwrap();
-        run_mismatches(&mut b32::tri_unit_fold_top(plan, Rounding::NearestEven), &job)
+        if f == Format::BINARY32 {
+            run_mismatches(&mut b32::tri_unit_fold_top(plan, Rounding::NearestEven), &job)
+        } else {
+            run_mismatches(&mut e8m15::tri_unit_fold_top(plan, Rounding::NearestEven), &job)
+        }
     });
-    assert_none("folded TRI_UNIT (II 16) binary32", "pairs", (bad, n));
+    (bad, n)
 }
 
 /// TRI_UNIT in binary32 under back pressure: the hard cases, then more soup pairs than the

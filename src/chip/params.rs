@@ -17,7 +17,7 @@ pub struct Params {
     /// TRI_UNIT's; a folded one's is its schedule's, `fold::tri_unit_latency`).
     pub tri_latency: u32,
     /// Clocks between pairs TRI_UNIT takes (issue 33): 1, the unfolded TRI_UNIT (a pair
-    /// every clock), or an even 2 to 32, the folded TRI_UNIT (`rtl::b32::TriUnitFold`: both
+    /// every clock), or an even 2 to 32, the folded TRI_UNIT (`TriUnitFold`: both
     /// directions on one T.CHECK folded for `tri_interval` / 2, a pair taken only when its
     /// control counter, running from the first pair taken, is 0).
     pub tri_interval: u32,
@@ -58,6 +58,11 @@ impl Params {
         prefetch: 0,
         memory: Memory::Ideal(MemTiming { latency: 1, interval: 1, bus_bits: None }),
     };
+
+    /// RTL chip `kind` after reset: [`RTL`](Self::RTL) with its TRI_UNIT's interval.
+    pub const fn of(kind: rtl::ChipKind) -> Params {
+        Params { tri_interval: kind.tri_interval(), ..Params::RTL }
+    }
 
     /// Pairs prefetched at most.
     pub const MAX_PREFETCH: u32 = 256;

@@ -109,7 +109,8 @@ fn tri_unit(cfg: &ChipConfig) -> String {
 /// tables: the DOP datapath's (FP multiplier and adder, DOPTRF lane, DOP unit of k lanes:
 /// DATE'05 Eq. 10) in the DOP format and rounding; T.CHECK's (its FP units, the certificate's
 /// scaler, T.CHECK, TRI_UNIT: §4.2) in T.CHECK's format and rounding; D_CNTR's pair queue
-/// (§4.3); and the whole chip where the RTL builds this configuration.
+/// (§4.3); and the whole chip where the RTL builds this configuration (the unfolded one: a
+/// folded TRI_UNIT's period is not measured, and a scene says so).
 pub fn units(cfg: &ChipConfig) -> Vec<String> {
     let (d, dr) = (rtl::format_tag(cfg.format.dop), rtl::rounding_tag(cfg.dop_rounding.op()));
     let (t, tr) = (rtl::format_tag(cfg.format.tri), rtl::rounding_tag(cfg.tri_rounding));
@@ -120,7 +121,7 @@ pub fn units(cfg: &ChipConfig) -> Vec<String> {
         }
     }
     u.push(rtl::PAIR_QUEUE_UNIT.to_string());
-    match ChipKind::of(cfg) {
+    match ChipKind::of(cfg, 1) {
         Some(kind) => u.push(kind.name().to_string()),
         None => u.push(format!("chip_{}", cfg_tag(cfg))),
     }

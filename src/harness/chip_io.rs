@@ -35,7 +35,7 @@ pub trait OnChip {
 }
 
 macro_rules! dispatch {
-    ($($(#[$doc:meta])* $kind:ident, $name:literal, $module:ident, $cfg:tt, $records:literal, $speed:literal;)+) => {
+    ($($(#[$doc:meta])* $kind:ident, $name:literal, $module:ident, $cfg:tt, $records:literal, $ii:literal, $speed:literal;)+) => {
         /// Builds `kind`'s rust-hdl chip with `2^N` queue entries (`NP1 = N + 1`, `NM1 = N -
         /// 1`), ready to simulate, and hands it to `f` (call on a thread with a big stack:
         /// TRI_UNIT and the k = 24 DOP unit are large).
@@ -412,7 +412,7 @@ impl ChipQuery {
             outstanding: self.outstanding,
             issue_spacing: self.issue_spacing,
             credit: self.credit,
-            ..crate::chip::params::Params::RTL
+            ..crate::chip::params::Params::of(self.chip)
         }
     }
 
@@ -513,6 +513,15 @@ pub fn queries() -> Vec<ChipQuery> {
         ChipQuery { chip: ChipKind::K24E8m15B32, prefetch: 14, outstanding: 16, issue_spacing: 1, credit: 63, ..big("k24r_big_sphere_fifo_prefetch", "sphere:200", big_spheres, Fifo, Mode::All, 8, 1, 1) },
         ChipQuery { chip: ChipKind::K24E8m15B32, prefetch: 14, outstanding: 16, issue_spacing: 1, credit: 48, tri_cache: 128, ..big("k24r_big_sphere_lifo_cache", "sphere:320", big_spheres, Lifo, Mode::All, 8, 1, 1) },
         ChipQuery { chip: ChipKind::K24E8m15B32, ..big("k24r_big_patch_lifo_first", "bunny-patch:300", patch, Lifo, Mode::First, 2, 1, 1) },
+        // the k = 6 chip with TRI_UNIT folded to a pair every 16 clocks (issue 33): the root
+        // test (Icarus), a bunny patch whose leaf pairs wait for the unit's slots at full
+        // speed (rust-hdl), whole queries at full speed and at the reset point (Verilator;
+        // rust-hdl runs this chip ten times faster than `chip_e8m15_k6`, so they are not
+        // `large`, but only the first two run in rust-hdl)
+        ChipQuery { chip: ChipKind::K6E8m15Fold16, ..q("fold16_apart_lifo_first", "sphere:12", Pose::new(10.0, 20.0, 30.0, 3.0, 0.1, 0.0), Lifo, Mode::First, 1, 1) },
+        ChipQuery { chip: ChipKind::K6E8m15Fold16, prefetch: 3, outstanding: 4, issue_spacing: 1, credit: 24, ..q("fold16_patch_fifo_all", "bunny-patch:12", patch, Fifo, Mode::All, 8, 1) },
+        ChipQuery { chip: ChipKind::K6E8m15Fold16, prefetch: 14, outstanding: 16, issue_spacing: 1, credit: 48, ..q("fold16_sphere_lifo_prefetch", "sphere:320", big_spheres, Lifo, Mode::All, 8, 1) },
+        ChipQuery { chip: ChipKind::K6E8m15Fold16, ..q("fold16_patch_lifo_first", "bunny-patch:300", patch, Lifo, Mode::First, 1, 1) },
     ]
 }
 
@@ -564,11 +573,20 @@ pub fn run_query_vcd<C: RtlPorts>(
 /// Which RTL chip runs a query of this configuration, traversal and cycle-model
 /// parameters, and in which order; otherwise what to change.
 pub fn rtl_order(cfg: &ChipConfig, traversal: Traversal, p: &Params) -> Result<(ChipKind, Order), String> {
-    let Some(kind) = ChipKind::of(cfg) else {
-        let built: Vec<String> = ChipKind::ALL.iter().map(|k| format!("k = {}, format = \"{}\"", k.config().k, k.config().format)).collect();
+    if ChipKind::built(cfg).next().is_none() {
+        let mut built: Vec<String> = ChipKind::ALL.iter().map(|k| format!("k = {}, format = \"{}\"", k.config().k, k.config().format)).collect();
+        built.dedup();
         return Err(format!(
             "the RTL chips are built for {}, all with dop_rounding = \"outward\" and T.CHECK to nearest-even; this scene has k = {}, format {}, dop_rounding {}, tri_rounding {:?}: set [chip] to one of them",
             built.join(" or "), cfg.k, cfg.format, cfg.dop_rounding, cfg.tri_rounding
+        ));
+    }
+    let Some(kind) = ChipKind::of(cfg, p.tri_interval) else {
+        let ii: Vec<String> = ChipKind::built(cfg).map(|k| format!("{} ({})", k.tri_interval(), k.name())).collect();
+        return Err(format!(
+            "no RTL chip of this configuration takes a TRI_UNIT pair every {} clocks: its chips have tri_interval {}: set [timing] tri_interval to one of them, or drop cross_check",
+            p.tri_interval,
+            ii.join(" or ")
         ));
     };
     rtl_layout(kind, cfg)?;
@@ -576,19 +594,13 @@ pub fn rtl_order(cfg: &ChipConfig, traversal: Traversal, p: &Params) -> Result<(
     if cfg.tri_cache > lines as u32 {
         return Err(format!("the RTL chips' triangle cache has {lines} lines; this scene asks for tri_cache = {}: set [chip] tri_cache to at most {lines}", cfg.tri_cache));
     }
-    if p.tri_interval != 1 {
-        return Err(format!(
-            "the RTL chips' TRI_UNIT is unfolded (no chip is built on the folded TriUnitFold yet), so tri_interval {} runs on the cycle model only: set [timing] tri_interval = 1 to cross-check, or drop cross_check",
-            p.tri_interval
-        ));
-    }
     let rtl = Params {
         memory: p.memory,
         prefetch: p.prefetch,
         outstanding: p.outstanding,
         issue_spacing: p.issue_spacing,
         credit: p.credit,
-        ..Params::RTL
+        ..Params::of(kind)
     };
     if *p != rtl {
         let r = Params::RTL;

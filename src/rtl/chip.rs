@@ -10,14 +10,17 @@
 //! joins them: the host registers, the leaf FIFO and register with the triangle words held
 //! (A's in its triangle cache, `TriCache`, rtl/tri_cache.rs), the counters and the end of a query.
 
-/// Stamps out `CollisionChip<N, NP1, NM1>` in the calling module (which must also hold the
-/// DOP unit `Dop` and `TriUnit`). Arguments: `K` the DOP's k, `Dop` its unit (`DopUnit6`
-/// for k = 6), `WD` the DOP format's word width, `WT` T.CHECK's, `NW` node-word bits
-/// (`1 + K WD + 64`), `TW` triangle-word bits (`23 WT + 2`), `MW` memory-word bits
+/// Stamps out `CollisionChip<N, NP1, NM1>` in the calling module. Arguments: `K` the DOP's
+/// k; `Dop = dop_new` its unit's type and constructor from the DOP rounding (`DopUnit6 =
+/// DopUnit6::new` for k = 6); `Tri = tri_new` TRI_UNIT's type and constructor from T.CHECK's
+/// rounding (`TriUnit = TriUnit::new`, or a `TriUnitFold` on its plan: any block with
+/// `TriUnit`'s ports, `tri_unit_ports!`, whose `in_ready` paces the leaf register); `WD` the
+/// DOP format's word width, `WT` T.CHECK's, `NW` node-word bits (`1 + K WD + 64`), `TW`
+/// triangle-word bits (`23 WT + 2`), `MW` memory-word bits
 /// ([`crate::chip::rtl::ChipKind::word_bits`]), `RW` the node record's bits (`2 NW` on a
 /// chip that also reads the `records` layout, else `NW`).
 macro_rules! chip {
-    ($K:tt, $Dop:ident, $WD:tt, $WT:tt, $NW:tt, $TW:tt, $MW:tt, $RW:tt) => {
+    ($K:tt, $Dop:ident = $dop_new:expr, $Tri:ident = $tri_new:expr, $WD:tt, $WT:tt, $NW:tt, $TW:tt, $MW:tt, $RW:tt) => {
         declare_sync_fifo!(LeafFifo, Bits<64>, $crate::chip::rtl::LEAF_FIFO, 1);
         $crate::rtl::memory_port::memory_port!($NW, $MW, $RW);
         $crate::rtl::tri_cache::tri_cache!($TW);
@@ -151,7 +154,7 @@ macro_rules! chip {
             tb_word: DFF<Bits<$TW>>,
             need_ta: Signal<Local, Bit>,
             need_tb: Signal<Local, Bit>,
-            tri_unit: TriUnit,
+            tri_unit: $Tri,
             tri_in: Signal<Local, Bit>,
             tri_take: Signal<Local, Bit>,
             // ---- results for the host
@@ -220,7 +223,7 @@ macro_rules! chip {
                     go: Default::default(),
                     d_cntr: Default::default(),
                     mem_port: MemoryPort::new(),
-                    dop: $Dop::new(dop),
+                    dop: ($dop_new)(dop),
                     side: Default::default(),
                     leaf_fifo: Default::default(),
                     leaf_count: Default::default(),
@@ -236,7 +239,7 @@ macro_rules! chip {
                     tb_word: Default::default(),
                     need_ta: Default::default(),
                     need_tb: Default::default(),
-                    tri_unit: TriUnit::new(tri),
+                    tri_unit: ($tri_new)(tri),
                     tri_in: Default::default(),
                     tri_take: Default::default(),
                     result: Default::default(),

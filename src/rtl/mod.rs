@@ -10,9 +10,10 @@
 //! | [`b32`] | `binary32` (e8m23, [`Format::BINARY32`](crate::format::Format::BINARY32)) | [`b32::FpMul`] (latency 4), [`b32::FpAdd`] (latency 3), [`b32::FpScale`] (by a constant, latency 4), [`b32::Doptrf`] (latency 15), [`b32::KlmSel`], [`b32::DopUnit6`] ... [`b32::DopUnit26`] (k = 6, 14, 18, 24, 26; latency 15) |
 //! | [`e8m15`] | e8m15 ([`Format::REDUCED`](crate::format::Format::REDUCED)) | the same |
 //! | [`e8m15_b32`] | e8m15 DOP unit, binary32 TRI_UNIT | the k = 24 chip only |
+//! | [`e8m15_fold16`] | e8m15, TRI_UNIT folded (a pair every 16 clocks) | the k = 6 chip only |
 //!
-//! [`b32`] also holds the folded units of issue 33, built from `crate::fold`'s plans:
-//! [`b32::TCheckFold`] and [`b32::TriUnitFold`] (both directions on one `TCheckFold`).
+//! [`b32`] and [`e8m15`] also hold the folded units of issue 33, built from `crate::fold`'s
+//! plans: `TCheckFold` and `TriUnitFold` (both directions on one `TCheckFold`).
 //!
 //! Each unit takes one operation per clock with a `valid` bit travelling alongside and
 //! is bit-exact with the golden [`Format`](crate::format::Format) operations in the
@@ -121,7 +122,7 @@ pub mod b32 {
     fp_format!(Format::BINARY32, 32, 31, 8, 23, 24, 26, 27, 28, 48, 50,
         norm_p(8, 16, 20, 22, 23), norm_p3(11, 19, 23, 25, 26));
     // the papers' chip: node word 1 + 24 * 32 + 64 bits (wider than a triangle word, 23 * 32 + 2)
-    crate::rtl::chip::chip!(24, DopUnit24, 32, 32, 833, 738, 2048, 1666);
+    crate::rtl::chip::chip!(24, DopUnit24 = DopUnit24::new, TriUnit = TriUnit::new, 32, 32, 833, 738, 2048, 1666);
     crate::rtl::tcheck_fold::tcheck_fold!(32, 31, 8, 23);
     crate::rtl::tri_unit_fold::tri_unit_fold!(32);
 }
@@ -131,7 +132,9 @@ pub mod e8m15 {
     fp_format!(Format::REDUCED, 24, 23, 8, 15, 16, 18, 19, 20, 32, 34,
         norm_p(0, 8, 12, 14, 15), norm_p3(3, 11, 15, 17, 18));
     // node word 1 + 6 * 24 + 64 bits, triangle word 23 * 24 + 2
-    crate::rtl::chip::chip!(6, DopUnit6, 24, 24, 209, 554, 554, 209);
+    crate::rtl::chip::chip!(6, DopUnit6 = DopUnit6::new, TriUnit = TriUnit::new, 24, 24, 209, 554, 554, 209);
+    crate::rtl::tcheck_fold::tcheck_fold!(24, 23, 8, 15);
+    crate::rtl::tri_unit_fold::tri_unit_fold!(24);
 }
 
 /// The papers' chip with the DOP datapath in e8m15 and T.CHECK in binary32 (format
@@ -144,7 +147,25 @@ pub mod e8m15_b32 {
     use crate::format::Rounding;
     use rust_hdl::prelude::*;
     // node word 1 + 24 * 24 + 64 bits, triangle word 23 * 32 + 2 (the wider)
-    crate::rtl::chip::chip!(24, DopUnit24, 24, 32, 641, 738, 738, 641);
+    crate::rtl::chip::chip!(24, DopUnit24 = DopUnit24::new, TriUnit = TriUnit::new, 24, 32, 641, 738, 738, 641);
+}
+
+/// The k = 6 e8m15 chip with its TRI_UNIT folded (issue 33): e8m15's DOP unit and e8m15's
+/// `TriUnitFold`, a pair every `ChipKind::K6E8m15Fold16.tri_interval()` = 16 clocks on one
+/// T.CHECK folded for 8 (docs/ARCHITECTURE.md, "Folded TRI_UNIT").
+pub mod e8m15_fold16 {
+    use super::e8m15::{DopUnit6, TriUnitFold};
+    use crate::chip::rtl::ChipKind;
+    use crate::format::Rounding;
+    use rust_hdl::prelude::*;
+
+    /// TRI_UNIT folded to the chip's interval, T.CHECK rounding with `r`.
+    fn tri_unit(r: Rounding) -> TriUnitFold {
+        let ii = ChipKind::K6E8m15Fold16.tri_interval() as usize;
+        TriUnitFold::new(crate::fold::tri_unit_plan(ii).expect("the chip's interval is even"), r)
+    }
+    // node word 1 + 6 * 24 + 64 bits, triangle word 23 * 24 + 2
+    crate::rtl::chip::chip!(6, DopUnit6 = DopUnit6::new, TriUnitFold = tri_unit, 24, 24, 209, 554, 554, 209);
 }
 
 // The contract's widths and latencies (`crate::chip`) are what the blocks are built with: the
@@ -167,6 +188,7 @@ macro_rules! check_widths {
 check_widths!(e8m15, K6E8m15);
 check_widths!(b32, K24B32);
 check_widths!(e8m15_b32, K24E8m15B32);
+check_widths!(e8m15_fold16, K6E8m15Fold16);
 const _: () = assert!(b32::TCheck::LATENCY == crate::chip::rtl::TCHECK_LATENCY && e8m15::TCheck::LATENCY == crate::chip::rtl::TCHECK_LATENCY);
 const _: () = assert!(b32::FpMul::LATENCY == crate::chip::rtl::FP_MUL_LATENCY && b32::FpAdd::LATENCY == crate::chip::rtl::FP_ADD_LATENCY);
 const _: () = assert!(b32::FpScale::LATENCY == crate::chip::rtl::FP_SCALE_LATENCY);

@@ -678,7 +678,8 @@ mod tests {
     /// `[memory]` picks the ideal model or DDR SDRAM with a preset and overrides; mixed or
     /// unknown keys are errors that say what to write.
     /// `[timing] tri_interval`: 1 or even 2 to 32, no tri_latency beside a fold, DATE'05's
-    /// chip only, and no RTL cross-check (the RTL chips' TRI_UNIT is unfolded).
+    /// chip only, and an RTL cross-check only at an interval an RTL chip of the configuration
+    /// is built with (k = 6 e8m15: 1 and 16).
     #[test]
     fn tri_interval_key() {
         let base = "[objects]\na = \"sphere:12\"\nb = \"sphere:12\"\n[[pose]]\nrot_deg=[0,0,0]\nt=[0,0,0]\n";
@@ -698,8 +699,10 @@ mod tests {
         let e = Scene::parse(&format!("{base}[chip]\npreset = \"wscg03\"\n[timing]\ntri_interval = 2\n"), "s").unwrap_err();
         assert!(e.contains("[stack_engine] tri_interval"), "{e}");
         let rtl = Scene::parse(include_str!("../../vectors/scenes/rtl_spheres.toml"), "rtl_spheres").unwrap();
-        let e = crate::harness::chip_io::rtl_order(&rtl.cfg, rtl.traversal, &Params { tri_interval: 2, ..rtl.params }).unwrap_err();
-        assert!(e.contains("TRI_UNIT is unfolded") && e.contains("tri_interval = 1"), "{e}");
+        let order = |ii| crate::harness::chip_io::rtl_order(&rtl.cfg, rtl.traversal, &Params { tri_interval: ii, ..rtl.params });
+        let e = order(2).unwrap_err();
+        assert!(e.contains("every 2 clocks") && e.contains("1 (chip_e8m15_k6) or 16 (chip_e8m15_k6_fold16)"), "{e}");
+        assert_eq!(order(16).unwrap().0, crate::chip::rtl::ChipKind::K6E8m15Fold16);
     }
 
     #[test]
