@@ -91,7 +91,7 @@ impl Table {
     /// um^2 of the units a configuration changes, its DOP unit and TRI_UNIT (as the area
     /// study's cells); `None` unless both are measured.
     pub fn datapath_area_um2(&self, cfg: &ChipConfig) -> Option<f64> {
-        Some(self.areas.get(&dop_unit(cfg))? + self.areas.get(&tri_unit(cfg))?)
+        Some(self.areas.get(&dop_unit(cfg))? + self.areas.get(&tri_unit(cfg, 1))?)
     }
 }
 
@@ -100,32 +100,48 @@ fn dop_unit(cfg: &ChipConfig) -> String {
     format!("dop_unit_k{}_{}_{}", cfg.k, rtl::format_tag(cfg.format.dop), rtl::rounding_tag(cfg.dop_rounding.op()))
 }
 
-/// TRI_UNIT's name: two T.CHECKs in T.CHECK's format and rounding.
-fn tri_unit(cfg: &ChipConfig) -> String {
-    format!("tri_unit_{}_{}", rtl::format_tag(cfg.format.tri), rtl::rounding_tag(cfg.tri_rounding))
+/// TRI_UNIT's name: two T.CHECKs in T.CHECK's format and rounding, or (`tri_interval` > 1)
+/// one folded T.CHECK taking a pair every `tri_interval` clocks (`rtl::tri_unit_fold`).
+fn tri_unit(cfg: &ChipConfig, tri_interval: u32) -> String {
+    let fold = if tri_interval > 1 { format!("fold{tri_interval}_") } else { String::new() };
+    format!("tri_unit_{fold}{}_{}", rtl::format_tag(cfg.format.tri), rtl::rounding_tag(cfg.tri_rounding))
 }
 
 /// The RTL units a configuration is built from, by their names in `rtl/` and the timing
 /// tables: the DOP datapath's (FP multiplier and adder, DOPTRF lane, DOP unit of k lanes:
 /// DATE'05 Eq. 10) in the DOP format and rounding; T.CHECK's (its FP units, the certificate's
-/// scaler, T.CHECK, TRI_UNIT: §4.2) in T.CHECK's format and rounding; D_CNTR's pair queue
-/// (§4.3); and the whole chip where the RTL builds this configuration (the unfolded one: a
-/// folded TRI_UNIT's period is not measured, and a scene says so).
-pub fn units(cfg: &ChipConfig) -> Vec<String> {
+/// scaler, T.CHECK, TRI_UNIT: §4.2) in T.CHECK's format and rounding, or the folded TRI_UNIT
+/// that takes a pair every `tri_interval` clocks; D_CNTR's pair queue (§4.3); and the whole
+/// chip where the RTL builds this configuration. A folded configuration also counts the
+/// unfolded chip: its slowest path is in the glue the two share (D_CNTR's look-ahead into
+/// the pair queue, docs/figures/timing_config.csv), so it bounds the folded chip's glue until
+/// the folded chip has a row of its own.
+pub fn units(cfg: &ChipConfig, tri_interval: u32) -> Vec<String> {
     let (d, dr) = (rtl::format_tag(cfg.format.dop), rtl::rounding_tag(cfg.dop_rounding.op()));
     let (t, tr) = (rtl::format_tag(cfg.format.tri), rtl::rounding_tag(cfg.tri_rounding));
     let mut u = vec![format!("fp_mul_{d}_{dr}"), format!("fp_add_{d}_{dr}"), format!("doptrf_{d}_{dr}"), dop_unit(cfg)];
-    for name in [format!("fp_mul_{t}_{tr}"), format!("fp_add_{t}_{tr}"), format!("fp_scale_{t}"), format!("tcheck_{t}_{tr}"), tri_unit(cfg)] {
+    let tcheck = (tri_interval == 1).then(|| format!("tcheck_{t}_{tr}"));
+    for name in [format!("fp_mul_{t}_{tr}"), format!("fp_add_{t}_{tr}"), format!("fp_scale_{t}")].into_iter().chain(tcheck).chain([tri_unit(cfg, tri_interval)]) {
         if !u.contains(&name) {
             u.push(name);
         }
     }
     u.push(rtl::PAIR_QUEUE_UNIT.to_string());
-    match ChipKind::of(cfg, 1) {
-        Some(kind) => u.push(kind.name().to_string()),
-        None => u.push(format!("chip_{}", cfg_tag(cfg))),
+    u.push(chip_name(cfg, 1));
+    if tri_interval > 1 {
+        u.push(chip_name(cfg, tri_interval));
     }
     u
+}
+
+/// The chip's name: the RTL's where it builds `cfg` at `tri_interval`, else as `rtl_chips!`
+/// would name it.
+fn chip_name(cfg: &ChipConfig, tri_interval: u32) -> String {
+    match ChipKind::of(cfg, tri_interval) {
+        Some(kind) => kind.name().to_string(),
+        None if tri_interval > 1 => format!("chip_{}_fold{tri_interval}", cfg_tag(cfg)),
+        None => format!("chip_{}", cfg_tag(cfg)),
+    }
 }
 
 /// A chip's name for a configuration the RTL does not build (as `rtl_chips!` names them).
@@ -157,26 +173,27 @@ impl Clock {
         Clock { period_ns: 1000.0 / mhz, technology: None, table: None, slowest: None, not_measured: vec![], assumed: Some(why) }
     }
 
-    /// The configuration's period in `tech`: the slowest of its measured [`units`] (or the
-    /// preset's paper clock). An error if the table measured none of them.
-    pub fn of(tech: Technology, cfg: &ChipConfig, preset: Preset) -> Result<Clock, String> {
+    /// The configuration's period in `tech` with TRI_UNIT taking a pair every `tri_interval`
+    /// clocks: the slowest of its measured [`units`] (or the preset's paper clock). An error
+    /// if the table measured none of them.
+    pub fn of(tech: Technology, cfg: &ChipConfig, tri_interval: u32, preset: Preset) -> Result<Clock, String> {
         let Some((file, text, what)) = tech.table() else {
             let mut c = Clock::assumed(preset.clock_mhz(), format!("the paper's {} MHz (preset {}), assumed", preset.clock_mhz(), preset.name()));
             c.technology = Some(tech);
             return Ok(c);
         };
         let table = Table::parse(text, file)?;
-        let mut c = Clock::measured(&table, cfg).ok_or_else(|| {
-            format!("{file} ({what}) measures none of this configuration's units ({}): run scripts/timing-study.sh, or set [timing] technology = \"paper\" or clock_mhz", units(cfg).join(", "))
+        let mut c = Clock::measured(&table, cfg, tri_interval).ok_or_else(|| {
+            format!("{file} ({what}) measures none of this configuration's units ({}): run scripts/timing-study.sh, or set [timing] technology = \"paper\" or clock_mhz", units(cfg, tri_interval).join(", "))
         })?;
         (c.technology, c.table) = (Some(tech), Some(file));
         Ok(c)
     }
 
     /// The slowest of `cfg`'s units that `table` measured, the others named as not measured.
-    pub fn measured(table: &Table, cfg: &ChipConfig) -> Option<Clock> {
+    pub fn measured(table: &Table, cfg: &ChipConfig, tri_interval: u32) -> Option<Clock> {
         let (mut slowest, mut not_measured) = (None::<(String, f64)>, vec![]);
-        for u in units(cfg) {
+        for u in units(cfg, tri_interval) {
             match table.periods.get(&u) {
                 None => not_measured.push(u),
                 Some(&ns) if slowest.as_ref().is_none_or(|s| ns > s.1) => slowest = Some((u, ns)),
@@ -223,19 +240,19 @@ mod tests {
                     tcheck_e8m15_rne,1,,x\n";
         let t = Table::parse(text, "t.csv").unwrap();
         let cfg = ChipConfig { k: 6, format: Formats::from(Format::REDUCED), dop_rounding: DopRounding::Outward, ..Default::default() };
-        let c = Clock::measured(&t, &cfg).unwrap();
+        let c = Clock::measured(&t, &cfg, 1).unwrap();
         // DOP: mul 6.5, add 7.0 (ru); T.CHECK: add 8.0 (rne); queue 4.0; b32's 30 not ours
         assert_eq!((c.period_ns, c.slowest.as_deref()), (8.0, Some("fp_add_e8m15_rne")));
         assert!(c.not_measured.contains(&"tcheck_e8m15_rne".to_string()) && c.not_measured.contains(&"chip_e8m15_k6".to_string()));
         assert!(!c.not_measured.iter().any(|u| u.starts_with("fp_mul") || u.starts_with("fp_add")), "{:?}", c.not_measured);
         // columns found by name, in any order; Fmax where no period is given
         let t = Table::parse("fmax_mhz,unit\n125,pair_queue_n4\n", "t.csv").unwrap();
-        assert_eq!(Clock::measured(&t, &cfg).unwrap().period_ns, 8.0);
-        assert!(Clock::measured(&Table::parse("unit,min_period_ns\nfp_mul_b32_ru,3\n", "t").unwrap(), &cfg).is_none());
+        assert_eq!(Clock::measured(&t, &cfg, 1).unwrap().period_ns, 8.0);
+        assert!(Clock::measured(&Table::parse("unit,min_period_ns\nfp_mul_b32_ru,3\n", "t").unwrap(), &cfg, 1).is_none());
         // the whole chip, where measured, is one of its units: its control and the paths
         // between units count
         let t = Table::parse("unit,min_period_ns\nfp_add_e8m15_rne,8\nchip_e8m15_k6,9\n", "t").unwrap();
-        assert_eq!(Clock::measured(&t, &cfg).unwrap().slowest.as_deref(), Some("chip_e8m15_k6"));
+        assert_eq!(Clock::measured(&t, &cfg, 1).unwrap().slowest.as_deref(), Some("chip_e8m15_k6"));
     }
 
     #[test]
@@ -245,13 +262,34 @@ mod tests {
         assert!(Table::parse("unit,min_period_ns\na,1\nb,-3\n", "t.csv").unwrap_err().starts_with("t.csv:3:"));
     }
 
+    /// A folded configuration counts the folded TRI_UNIT, not T.CHECK or the unfolded
+    /// TRI_UNIT, and both the unfolded chip (its glue) and the folded one.
+    #[test]
+    fn a_folded_configuration_counts_the_folded_unit_and_both_chips() {
+        let cfg = ChipConfig { k: 6, format: Formats::from(Format::REDUCED), dop_rounding: DopRounding::Outward, ..Default::default() };
+        let u = units(&cfg, 16);
+        for name in ["tri_unit_fold16_e8m15_rne", "chip_e8m15_k6", "chip_e8m15_k6_fold16"] {
+            assert!(u.contains(&name.to_string()), "{name} not in {u:?}");
+        }
+        assert!(!u.iter().any(|n| n == "tcheck_e8m15_rne" || n == "tri_unit_e8m15_rne"), "{u:?}");
+        let t = Table::parse("unit,min_period_ns
+tri_unit_e8m15_rne,20
+tri_unit_fold16_e8m15_rne,9
+chip_e8m15_k6,8
+", "t").unwrap();
+        let c = Clock::measured(&t, &cfg, 16).unwrap();
+        assert_eq!((c.period_ns, c.slowest.as_deref()), (9.0, Some("tri_unit_fold16_e8m15_rne")));
+        assert!(c.not_measured.contains(&"chip_e8m15_k6_fold16".to_string()), "{:?}", c.not_measured);
+        assert_eq!(units(&cfg, 8).iter().filter(|n| n.starts_with("chip_")).collect::<Vec<_>>(), ["chip_e8m15_k6", "chip_e8m15_k6_fold8"]);
+    }
+
     /// The checked-in tables parse, and the paper clock is the preset's.
     #[test]
     fn technologies() {
         let cfg = ChipConfig::default();
-        let osu = Clock::of(Technology::Osu018, &cfg, Preset::Rtl).unwrap();
+        let osu = Clock::of(Technology::Osu018, &cfg, 1, Preset::Rtl).unwrap();
         assert!(osu.source().contains("docs/figures/timing.csv"), "{}", osu.source());
-        let paper = Clock::of(Technology::Paper, &cfg, Preset::Wscg03).unwrap();
+        let paper = Clock::of(Technology::Paper, &cfg, 1, Preset::Wscg03).unwrap();
         assert_eq!(paper.mhz(), 266.0);
         assert!(paper.source().contains("assumed"));
     }

@@ -115,7 +115,7 @@ pub struct ChipRun {
 impl ChipRun {
     pub fn of(preset: Preset, technology: Technology) -> Result<ChipRun, String> {
         let cfg = preset.chip();
-        let clock = Clock::of(technology, &cfg, preset)?;
+        let clock = Clock::of(technology, &cfg, 1, preset)?;
         let params = Params { queue_entries: QUEUE_ENTRIES, ..preset.params() };
         Ok(ChipRun { preset, cfg, params, clock_source: clock.source(), clock })
     }

@@ -215,12 +215,12 @@ fn timing(keys: Option<Keys>, text: &str, preset: Preset) -> Result<(Params, Opt
 
 /// The clock: an assumed `clock_mhz`, else `technology`'s period for the configuration
 /// (default: measured on OSU 0.18 um).
-fn clock(cfg: &ChipConfig, preset: Preset, technology: Option<Technology>, clock_mhz: Option<f64>) -> Result<Clock, String> {
+fn clock(cfg: &ChipConfig, tri_interval: u32, preset: Preset, technology: Option<Technology>, clock_mhz: Option<f64>) -> Result<Clock, String> {
     match (clock_mhz, technology) {
         (Some(_), Some(_)) => Err("[timing] give clock_mhz (an assumed clock) or technology (a measured period), not both".into()),
         (Some(mhz), None) if !(mhz.is_finite() && mhz > 0.0) => Err(format!("[timing] clock_mhz must be a positive number of MHz, not {mhz}")),
         (Some(mhz), None) => Ok(Clock::assumed(mhz, format!("the scene's clock_mhz = {mhz}, assumed"))),
-        (None, t) => Clock::of(t.unwrap_or_default(), cfg, preset),
+        (None, t) => Clock::of(t.unwrap_or_default(), cfg, tri_interval, preset),
     }
 }
 
@@ -544,11 +544,7 @@ impl Scene {
         }
         // the command line's technology replaces the scene's clock
         let (technology, clock_mhz) = if flags.technology.is_some() { (flags.technology, None) } else { (technology, clock_mhz) };
-        let mut clock = clock(&cfg, preset, technology, clock_mhz).map_err(err)?;
-        if params.tri_interval > 1 && clock.assumed.is_none() {
-            // the timing tables measure the unfolded TRI_UNIT and chips built on it
-            clock.not_measured.push(format!("the folded TRI_UNIT at tri_interval {} (the period is the unfolded chip's, assumed for it)", params.tri_interval));
-        }
+        let clock = clock(&cfg, params.tri_interval, preset, technology, clock_mhz).map_err(err)?;
         Ok(Scene {
             name: name.to_string(),
             objects: f.objects,
@@ -686,7 +682,10 @@ mod tests {
         let s = Scene::parse(&format!("{base}[chip]\npreset = \"date05\"\n[timing]\ntri_interval = 16\n"), "s").unwrap();
         assert_eq!(s.params, Params { tri_interval: 16, ..Preset::Date05.params() });
         assert!(s.configuration().contains("tri_interval 16 (folded TRI_UNIT"), "{}", s.configuration());
-        assert!(s.clock.source().contains("units not measured: the folded TRI_UNIT at tri_interval 16"), "{}", s.clock.source());
+        // the folded TRI_UNIT has a row; the folded chip as a whole has none
+        assert!(s.clock.source().contains("units not measured: chip_b32_k24_fold16"), "{}", s.clock.source());
+        let s8 = Scene::parse(&format!("{base}[chip]\npreset = \"date05\"\n[timing]\ntri_interval = 8\n"), "s").unwrap();
+        assert!(s8.clock.not_measured.contains(&"tri_unit_fold8_b32_rne".to_string()), "{}", s8.clock.source());
         for (keys, want) in [
             ("tri_interval = 3", "tri_interval must be 1 (TRI_UNIT unfolded) or an even number of clocks from 2 to 32"),
             ("tri_interval = 34", "not 34"),
@@ -796,7 +795,7 @@ mod tests {
         let base = "[objects]\na = \"sphere:12\"\nb = \"sphere:12\"\n[[pose]]\nrot_deg=[0,0,0]\nt=[0,0,0]\n[chip]\nk = 6\nformat = \"reduced\"\n";
         let parse = |t: &str| Scene::parse(&format!("{base}{t}"), "s");
         let m = parse("").unwrap();
-        assert_eq!(m.clock, Clock::of(Technology::Osu018, &m.cfg, Preset::Rtl).unwrap());
+        assert_eq!(m.clock, Clock::of(Technology::Osu018, &m.cfg, 1, Preset::Rtl).unwrap());
         assert!(m.configuration().contains("measured, OSU 0.18 um, docs/figures/timing.csv, slowest unit"), "{}", m.configuration());
         assert_eq!(parse("[timing]\ntechnology = \"paper\"").unwrap().clock.mhz(), 800.0);
         let e = parse("[timing]\ntechnology = \"paper\"\nclock_mhz = 3").unwrap_err();
