@@ -141,7 +141,9 @@ struct Comb {
     issue: bool,
     dop_out: Option<DopResult>,
     leaf_in: Option<(u32, u32)>,
-    new_children: ([Entry; 2], usize),
+    /// The DOP result has child entries ([`children`]: made at the edge, not kept here, so
+    /// that the cycle's logic stays small to copy).
+    grows: bool,
     child_push: bool,
     pop: bool,
     tri_in: bool,
@@ -226,7 +228,10 @@ impl<'a> Chip<'a> {
     }
 
     /// The cycle's logic from the registers (`accept` and `give` low: [`comb`](Self::comb)
-    /// adds the inputs).
+    /// adds the inputs). Inlined so that `self.logic = self.logic()` writes the fields in
+    /// place: a copy of the returned value, read right after its bytes were written, stalls
+    /// the store buffer (`perf annotate`: a sixth of `step`).
+    #[inline(always)]
     fn logic(&self) -> Comb {
         let run = self.run;
         let halt = self.stop || self.q.overflow;
@@ -236,7 +241,8 @@ impl<'a> Chip<'a> {
         // its own first
         let [fa, fb] = cur.map_or([false; 2], |c| c.fetch);
         let tri_needs = go && self.leaf_valid;
-        let tri_recs = [self.tri_records[0][self.leaf_tag.0 as usize], self.tri_records[1][self.leaf_tag.1 as usize]];
+        // the leaf pair's triangle records (looked up only while a leaf pair waits)
+        let tri_recs = if tri_needs { [self.tri_records[0][self.leaf_tag.0 as usize], self.tri_records[1][self.leaf_tag.1 as usize]] } else { [0; 2] };
         let need = [
             go && fa && self.words.is_empty(),
             go && fb && self.words.len() < 1 + fa as usize,
@@ -259,14 +265,14 @@ impl<'a> Chip<'a> {
         let issue = go && cur.is_some() && !need[0] && !need[1] && spaced && credit < self.p.credit as usize;
         // a DOP result: child entries, or a leaf pair
         let dop_out = self.dop.out(self.now).copied();
-        let (mut leaf_in, mut new_children) = (None, ([Entry::default(); 2], 0));
+        let (mut leaf_in, mut grows) = (None, false);
         if let Some(r) = dop_out.filter(|r| r.overlap) {
             match (r.na, r.nb) {
                 (Node::Leaf(ta), Node::Leaf(tb)) => leaf_in = Some((ta, tb)),
-                (na, nb) => new_children = children(r.pair, na, nb),
+                _ => grows = true,
             }
         }
-        let child_push = !self.pend.is_empty() || new_children.1 > 0;
+        let child_push = !self.pend.is_empty() || grows;
         // room in the buffer of prefetch + 2 pairs for an entry's two, once this cycle's
         // issue has left
         let room = self.ahead.len() - issue as usize <= self.p.prefetch as usize;
@@ -294,7 +300,7 @@ impl<'a> Chip<'a> {
             issue,
             dop_out,
             leaf_in,
-            new_children,
+            grows,
             child_push,
             pop,
             tri_in,
@@ -491,11 +497,13 @@ impl Clocked for Chip<'_> {
         // the queue's push: the root entry, else a pending child entry, else a new one
         // (FIFO pushes a result's first entry first, LIFO its second, so that the first
         // is popped first)
-        let (ch, n) = c.new_children;
-        if self.order == Order::Lifo {
-            self.pend.extend(ch[..n].iter().rev());
-        } else {
-            self.pend.extend(&ch[..n]);
+        if let Some(r) = c.dop_out.filter(|_| c.grows) {
+            let (ch, n) = children(r.pair, r.na, r.nb);
+            if self.order == Order::Lifo {
+                self.pend.extend(ch[..n].iter().rev());
+            } else {
+                self.pend.extend(&ch[..n]);
+            }
         }
         let push = if self.push_root {
             Some(Entry { pairs: [Pair { a: self.root & 0xffff, b: self.root >> 16, flip: false }, Pair::default()], len: 1 })
@@ -563,14 +571,12 @@ impl Clocked for Chip<'_> {
                 self.seq += 1;
             }
         }
-        self.q = self.queue.step(&QueueIn {
-            clear: i.start && !self.run,
-            order: self.order,
-            push: push.is_some(),
-            push_data: push.unwrap_or_default(),
-            push2,
-            pop: c.pop,
-        });
+        // a clock with no clear, push or pop leaves the queue as it is (a second push comes
+        // only with a first)
+        let clear = i.start && !self.run;
+        if clear || push.is_some() || c.pop {
+            self.q = self.queue.step(&QueueIn { clear, order: self.order, push: push.is_some(), push_data: push.unwrap_or_default(), push2, pop: c.pop });
+        }
         self.push_root = false;
         // ---- leaf pairs and TRI_UNIT
         if c.tri_take {
