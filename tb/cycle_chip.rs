@@ -139,11 +139,13 @@ fn memory() -> impl Strategy<Value = Memory> {
 fn params() -> impl Strategy<Value = Params> {
     (
         (10u32..=14, 1u32..=20, 3u32..=140, 1u32..=64, prop_oneof![3 => Just(1u32), 1 => (1u32..=16).prop_map(|h| 2 * h)]),
-        (1u32..=2, 1u32..=32, 1u32..=16, prop_oneof![Just(0u32), 1u32..=12], memory()),
+        (1u32..=2, 1u32..=32, 1u32..=16, prop_oneof![Just(0u32), 1u32..=12], memory(), prop_oneof![3 => Just(1u32), 1 => prop::sample::select(vec![2u32, 3, 6])]),
     )
-        .prop_map(|((q, dl, tl, tf, ti), (sp, cr, os, pf, memory))| Params {
+        .prop_map(|((q, dl, tl, tf, ti), (sp, cr, os, pf, memory, di))| Params {
             queue_entries: 1 << q,
-            dop_latency: dl,
+            // a folded DOP unit's latency is its own (k = 6: a pair every 2, 3 or 6 clocks)
+            dop_latency: if di == 1 { dl } else { Params::RTL.dop_latency },
+            dop_interval: di,
             // a folded TRI_UNIT's latency is its schedule's
             tri_latency: if ti == 1 { tl } else { Params::RTL.tri_latency },
             tri_fifo: tf,
@@ -193,6 +195,8 @@ proptest! {
         let chip = Chip::new(&soup(na, sa).triangles_f64(), &soup(nb, sb).triangles_f64(), config(k, dop_b32, tri_b32, outward, tri_cache, layout)).unwrap();
         let pose = Pose::new(rot[0], rot[1], rot[2], t[0], t[1], t[2]);
         let mode = if first { Mode::First } else { Mode::All };
+        // a DOP interval that does not divide this k: 2 (every supported k is even)
+        let p = Params { dop_interval: if k % p.dop_interval as usize == 0 { p.dop_interval } else { 2 }, ..p };
         let golden = chip.query(&pose, Mode::All, if lifo { Traversal::Lifo } else { Traversal::Fifo });
         let reader = Reader { period };
         let (tr, st) = cycle::run_query(&chip, &chip.setup(&pose), order(lifo), mode, p, reader, MAX_CYCLES, counted()).unwrap();
@@ -215,6 +219,44 @@ proptest! {
         prop_assert_eq!((st.cycles, booked, st.issue), (tr.cycles, tr.cycles, tr.dop_tests));
         let clocked = run(&chip, &pose, lifo, mode, p, reader, true).unwrap();
         prop_assert_eq!(clocked, tr);
+    }
+}
+
+/// The folded DOP unit's rhythm by hand: issues a multiple of ii clocks apart (some exactly
+/// ii), the first result `dop_fold_latency(ii)` clocks after the first issue; the answers
+/// golden's, clock by clock equal to the skipping run.
+#[test]
+fn folded_dop_unit_takes_a_pair_every_interval() {
+    let chip = Chip::new(&collision_chip::mesh::builtin("sphere:200").unwrap().triangles_f64(), &collision_chip::mesh::builtin("torus:200").unwrap().triangles_f64(), CHIP_CONFIG).unwrap();
+    let pose = Pose::new(10.0, 20.0, 30.0, 0.5, 0.0, 0.0);
+    let golden = chip.query(&pose, Mode::All, Traversal::Lifo);
+    let idx = |unit: &str, name: &str| PROBES.iter().position(|p| (p.0, p.1) == (unit, name)).unwrap();
+    let (issue, valid) = (idx("d_cntr", "issue"), idx("dop", "valid_out"));
+    for ii in [2u32, 3, 6] {
+        // one request outstanding would space issues by the memory; prefetch keeps words ready
+        let p = Params { dop_interval: ii, prefetch: 8, outstanding: 8, ..Params::RTL };
+        let latency = collision_chip::chip::rtl::dop_fold_latency(ii as usize) as u64;
+        let (mut issues, mut first_out) = (vec![], None);
+        let mut obs = |t: u64, v: &[u64]| {
+            if v[issue] == 1 {
+                issues.push(t);
+            }
+            if v[valid] == 1 && first_out.is_none() {
+                first_out = Some(t);
+            }
+            Ok(())
+        };
+        let rec = cycle::Record { probes: Some(&mut obs), ..Default::default() };
+        let (clocked, _) = cycle::run_query(&chip, &chip.setup(&pose), Order::Lifo, Mode::All, p, Reader::default(), MAX_CYCLES, rec).unwrap();
+        clocked.check(Mode::All, &golden).unwrap();
+        assert_eq!(issues.len() as u64, clocked.dop_tests, "ii {ii}");
+        let gaps: Vec<u64> = issues.windows(2).map(|w| w[1] - w[0]).collect();
+        let odd = issues.windows(2).find(|w| (w[1] - w[0]) % ii as u64 != 0);
+        assert!(odd.is_none(), "ii {ii}: pairs issued in cycles {odd:?}, not a multiple of {ii} apart");
+        assert!(gaps.contains(&(ii as u64)), "ii {ii}: no two pairs back to back");
+        assert_eq!(first_out, Some(issues[0] + latency), "ii {ii}: the first result {latency} clocks after the first pair");
+        let skipped = cycle::run_query(&chip, &chip.setup(&pose), Order::Lifo, Mode::All, p, Reader::default(), MAX_CYCLES, counted()).unwrap().0;
+        assert_eq!(skipped, clocked, "ii {ii}");
     }
 }
 
@@ -258,6 +300,9 @@ fn bad_parameters_are_refused() {
         (Params { outstanding: 65, ..Params::RTL }, "outstanding"),
         (Params { prefetch: 257, ..Params::RTL }, "prefetch"),
         (Params { tri_interval: 5, ..Params::RTL }, "tri_interval"),
+        (Params { dop_interval: 0, ..Params::RTL }, "dop_interval must be at least 1"),
+        (Params { dop_interval: 4, ..Params::RTL }, "dop_interval 4 does not divide k = 6"),
+        (Params { dop_interval: 2, dop_latency: 9, ..Params::RTL }, "dop_latency 9 is the unfolded"),
         (Params { memory: MemTiming { latency: 0, ..Default::default() }.into(), ..Params::RTL }, "latency"),
         (Params { memory: Memory::Ddr(Ddr { burst: 9, ..Ddr::WSCG03 }), ..Params::RTL }, "burst <= hit <= miss"),
     ] {

@@ -6,7 +6,10 @@
 //!   both roundings, one lane evaluation per clock, latency 15 checked on `valid_out`;
 //! * the DOP unit against `golden::dop_unit::dop_overlap` on all node pairs of two real DOP
 //!   trees (host setup loaded through the write port), and on random format values and
-//!   random MUX controls; overlap and tag, one pair per clock.
+//!   random MUX controls; overlap and tag, one pair per clock;
+//! * the folded DOP units (`DopUnit6Fold2` .. `DopUnit24Fold24`, a pair every ii clocks) the
+//!   same way, the writer holding each pair until `in_ready` (with idle gaps now and then),
+//!   the result `dop_fold_latency(ii)` clocks after the pair was taken.
 //!
 //! Also: a short VCD per block under `target/rtl-vcd/`, Verilog export with
 //! (Verilog export and its checks: `harness::units`, scripts/check-rtl.sh.)
@@ -249,10 +252,19 @@ fn setup_words(fmt: Format, j: &[[u8; 3]], cmat: &[[f64; 3]], cvec: &[f64]) -> V
     w
 }
 
-/// Loads the setup, streams `pairs` one per cycle, flushes; returns (overlap, tag) in order
-/// (latency checked) and the number of cycles of the pair stream.
+/// Idle cycles the writer leaves after taken pair `i`: none for most, a few now and then
+/// (a folded unit's counter runs on meanwhile, and the next pair waits for `in_ready`).
+fn gap(i: usize) -> usize {
+    if i % 7 == 6 { i % 5 } else { 0 }
+}
+
+/// Loads the setup, streams `pairs`, flushes; returns (overlap, tag) in order (latency
+/// checked) and the number of cycles of the pair stream. A writer holds each pair with
+/// `valid_in` high until `in_ready` takes it (a folded unit sees the next pair on its ports
+/// during the passes of the one taken), then leaves [`gap`] idle cycles.
 fn run_unit<U: Unit>(uut: &mut U, words: &[(u64, u64)], pairs: &[Pair], mut probe: Option<Probe<U>>) -> (Vec<(bool, u16)>, usize) {
     let k = U::K;
+    let latency = collision_chip::chip::rtl::dop_fold_latency(U::INTERVAL);
     let zero = vec![0u64; k];
     for &(a, d) in words {
         uut.set_load(true, a, d);
@@ -262,20 +274,32 @@ fn run_unit<U: Unit>(uut: &mut U, words: &[(u64, u64)], pairs: &[Pair], mut prob
     uut.set_load(false, 0, 0);
     let n = pairs.len();
     let mut outs = Vec::with_capacity(n);
-    for cyc in 0..n + LATENCY + 1 {
-        match pairs.get(cyc) {
+    // the cycles the pairs were taken in; the next pair is driven from cycle `from`
+    let (mut taken, mut from) = (vec![], 0);
+    let mut cyc = 0;
+    while outs.len() < n {
+        let p = pairs.get(taken.len()).filter(|_| cyc >= from);
+        match p {
             Some(p) => uut.set_pair(&p.d, &p.e, p.tag, true),
             None => uut.set_pair(&zero, &zero, 0, false),
+        }
+        if p.is_some() && uut.in_ready() {
+            from = cyc + 1 + gap(taken.len());
+            taken.push(cyc);
         }
         cycle(uut, &mut probe);
         let (v, ov, tag) = uut.out();
         if v {
-            assert_eq!(cyc + 1, outs.len() + LATENCY, "unit output {} at the wrong edge", outs.len());
+            let i = outs.len();
+            assert!(i < taken.len() && cyc + 1 == taken[i] + latency, "unit output {i} at the wrong edge ({cyc})");
             outs.push((ov, tag));
         }
+        if let Some(&t) = taken.get(outs.len()) {
+            assert!(cyc + 1 < t + latency, "unit output {} lost", outs.len());
+        }
+        cyc += 1;
     }
-    assert_eq!(outs.len(), n, "valid outputs lost");
-    (outs, n + LATENCY + 1)
+    (outs, cyc)
 }
 
 /// All node pairs of two soup trees under a pose, against `dop_overlap`. Returns
@@ -321,7 +345,7 @@ fn unit_trees_all<U: Unit>(make: impl Fn(Rounding) -> U + Copy, fmt: Format, n_t
     for r in MODES {
         for pose in [Pose::new(10.0, 20.0, 30.0, 0.3, 0.1, 0.0), Pose::new(-35.0, 80.0, 5.0, 1.2, -0.4, 0.2)] {
             let (n, ov, rate) = unit_trees(make, fmt, r, n_tris, pose);
-            println!("DopUnit k={} {fmt} {r:?} pose {pose:?}: {n} node pairs ok ({ov} overlap), {rate:.0} cycles/s", U::K);
+            println!("DopUnit k={} interval {} {fmt} {r:?} pose {pose:?}: {n} node pairs ok ({ov} overlap), {rate:.0} cycles/s", U::K, U::INTERVAL);
             assert!(ov > 0 && ov < n, "the pose should give both verdicts");
         }
     }
@@ -346,6 +370,31 @@ fn unit_k6_trees() {
     big_stack(|| {
         unit_trees_all(b32::dop_unit6_top, Format::BINARY32, 16);
         unit_trees_all(e8m15::dop_unit6_top, Format::REDUCED, 16);
+    });
+}
+
+/// The folded DOP units (k = 6 on 3, 2 and 1 lanes) on all node pairs of the trees, both
+/// roundings.
+#[test]
+fn fold_k6_trees() {
+    big_stack(|| {
+        unit_trees_all(e8m15::dop_unit6_fold2_top, Format::REDUCED, 16);
+        unit_trees_all(e8m15::dop_unit6_fold3_top, Format::REDUCED, 16);
+        unit_trees_all(e8m15::dop_unit6_fold6_top, Format::REDUCED, 16);
+        unit_trees_all(b32::dop_unit6_fold3_top, Format::BINARY32, 8);
+    });
+}
+
+/// The folded k = 24 units, every interval stamped out, on the trees (binary32) and on random
+/// values (e8m15).
+#[test]
+fn fold_k24() {
+    big_stack(|| {
+        unit_trees_all(b32::dop_unit24_fold4_top, Format::BINARY32, 4);
+        unit_trees_all(b32::dop_unit24_fold8_top, Format::BINARY32, 4);
+        unit_trees_all(b32::dop_unit24_fold24_top, Format::BINARY32, 4);
+        unit_random(e8m15::dop_unit24_fold6_top, Format::REDUCED, 30, 8);
+        unit_random(e8m15::dop_unit24_fold12_top, Format::REDUCED, 30, 9);
     });
 }
 
@@ -407,6 +456,10 @@ fn unit_random_values() {
         unit_random(e8m15::dop_unit14_top, Format::REDUCED, 40, 5);
         unit_random(b32::dop_unit18_top, Format::BINARY32, 40, 6);
         unit_random(e8m15::dop_unit26_top, Format::REDUCED, 40, 7);
+        // folded: a pair every 2, 3, 6 clocks
+        unit_random(b32::dop_unit6_fold2_top, Format::BINARY32, 100, 10);
+        unit_random(e8m15::dop_unit6_fold3_top, Format::REDUCED, 100, 11);
+        unit_random(e8m15::dop_unit6_fold6_top, Format::REDUCED, 100, 12);
     });
 }
 
@@ -491,5 +544,31 @@ fn dop_units_pass_their_exported_vectors() {
         let run24 = sim::run_dop_vectors(&mut b32::dop_unit24_top(Rounding::TowardPositive), &v24).unwrap();
         assert_eq!(run24.mismatches(&v24).count(), 0);
         assert!(v6.cases.len() > 900 && v24.cases.len() > 200);
+        // the folded units: the same pairs, a pair every 2, 3, 6 clocks
+        let fold = |ii: usize| sim::parse_dop_vectors(&text(&units::dop_unit_fold_name(ii, 6, Format::REDUCED, Rounding::TowardPositive).unwrap()), e8m15::WIDTH).unwrap();
+        let (v2, v3, v6f) = (fold(2), fold(3), fold(6));
+        assert_eq!((v2.interval, v2.cases.len()), (2, v6.cases.len()));
+        assert_eq!(sim::run_dop_vectors(&mut e8m15::dop_unit6_fold2_top(Rounding::TowardPositive), &v2).unwrap().mismatches(&v2).count(), 0);
+        assert_eq!(sim::run_dop_vectors(&mut e8m15::dop_unit6_fold3_top(Rounding::TowardPositive), &v3).unwrap().mismatches(&v3).count(), 0);
+        assert_eq!(sim::run_dop_vectors(&mut e8m15::dop_unit6_fold6_top(Rounding::TowardPositive), &v6f).unwrap().mismatches(&v6f).count(), 0);
     });
+}
+
+/// Not a check: writes the folded k = 24 DOP units' Verilog (binary32, outward; none is
+/// exported) for synthesis (docs/ARCHITECTURE.md, "Folded DOP unit"): `cargo test --release
+/// --test rtl_dop -- --ignored dop_unit_fold_verilog`, then `nice scripts/synth.sh --target
+/// ecp5 target/fold-area/dop_unit_fold*_k24_b32_ru.v`.
+#[test]
+#[ignore]
+fn dop_unit_fold_verilog() {
+    use collision_chip::harness::{units, verilog::dedup_modules};
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("target/fold-area");
+    std::fs::create_dir_all(&dir).unwrap();
+    for ii in [4, 8, 12, 24] {
+        let (f, r) = (Format::BINARY32, Rounding::TowardPositive);
+        let v = std::thread::Builder::new().stack_size(1 << 30).spawn(move || units::dop_unit_fold_verilog(ii, 24, f, r).unwrap()).unwrap().join().unwrap();
+        let p = dir.join(format!("{}.v", units::dop_unit_fold_name(ii, 24, f, r).unwrap()));
+        std::fs::write(&p, dedup_modules(&v)).unwrap();
+        eprintln!("wrote {}", p.display());
+    }
 }

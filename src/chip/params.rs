@@ -11,8 +11,13 @@ use serde::{Deserialize, Serialize};
 pub struct Params {
     /// Queue entries (two node pairs each).
     pub queue_entries: u32,
-    /// Clocks from a DOP test's issue to its result.
+    /// Clocks from a DOP test's issue to its result (the unfolded DOP unit's; a folded one's
+    /// is [`rtl::dop_fold_latency`]).
     pub dop_latency: u32,
+    /// Clocks between pairs the DOP unit takes (issue 33): 1, the unfolded unit (k lanes), or
+    /// ii dividing k, the folded one (`rtl::*::DopUnit<k>Fold<ii>`: k/ii lanes in ii passes, a
+    /// pair taken only when its counter, running from the first pair taken, is 0).
+    pub dop_interval: u32,
     /// Clocks from a pair entering TRI_UNIT to its verdict at the output (the unfolded
     /// TRI_UNIT's; a folded one's is its schedule's, `fold::tri_unit_latency`).
     pub tri_latency: u32,
@@ -49,6 +54,7 @@ impl Params {
     pub const RTL: Params = Params {
         queue_entries: 1 << rtl::QUEUE_BITS,
         dop_latency: rtl::DOP_LATENCY as u32,
+        dop_interval: 1,
         tri_latency: rtl::TRI_LATENCY as u32,
         tri_fifo: rtl::TRI_FIFO as u32,
         tri_interval: 1,
@@ -70,6 +76,15 @@ impl Params {
     pub const MAX_OUTSTANDING: u32 = 64;
     /// The longest folded TRI_UNIT's pair interval (issue 33's folds: 2 to 32).
     pub const MAX_TRI_INTERVAL: u32 = 32;
+
+    /// The DOP unit's latency: `dop_latency` unfolded, the folded unit's (the RTL's
+    /// [`rtl::dop_fold_latency`]) at a `dop_interval` over 1.
+    pub fn dop_unit_latency(&self) -> u32 {
+        match self.dop_interval {
+            1 => self.dop_latency,
+            ii => rtl::dop_fold_latency(ii as usize) as u32,
+        }
+    }
 
     /// Errors name a parameter out of range.
     pub fn check(&self) -> Result<(), String> {
@@ -96,6 +111,17 @@ impl Params {
             return Err(format!(
                 "tri_latency {} is the unfolded TRI_UNIT's; a folded one (tri_interval {}) has its schedule's latency: remove tri_latency, or set tri_interval = 1",
                 self.tri_latency, self.tri_interval
+            ));
+        }
+        if self.dop_interval == 0 {
+            return Err("dop_interval must be at least 1 (1: the DOP unit unfolded)".into());
+        }
+        if self.dop_interval > 1 && self.dop_latency != rtl::DOP_LATENCY as u32 {
+            return Err(format!(
+                "dop_latency {} is the unfolded DOP unit's; a folded one (dop_interval {}) has latency {}: remove dop_latency, or set dop_interval = 1",
+                self.dop_latency,
+                self.dop_interval,
+                rtl::dop_fold_latency(self.dop_interval as usize)
             ));
         }
         if !(1..=2).contains(&self.issue_spacing) {

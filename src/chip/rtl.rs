@@ -14,6 +14,13 @@ pub const FP_SCALE_LATENCY: usize = 4;
 /// Clocks from a DOP test's issue to its result: the DOPTRF lane's pipeline (D.KLMSEL and
 /// the NOR add no register).
 pub const DOP_LATENCY: usize = 15;
+
+/// The folded DOP unit (`rtl::*::DopUnit<k>Fold<ii>`, a pair every `ii` clocks in `ii` passes
+/// of its lanes): a pair taken in cycle t has its verdict in cycle t + this, the last pass's
+/// lane latency (its pass starts ii - 1 clocks after the first).
+pub const fn dop_fold_latency(ii: usize) -> usize {
+    DOP_LATENCY + ii - 1
+}
 /// T.CHECK's pipeline: a pair in, its verdict 52 clocks later (DATE'05's budget).
 pub const TCHECK_LATENCY: usize = 52;
 /// TRI_UNIT: a pair taken at its input shows at the output port this many clocks later

@@ -34,7 +34,8 @@ pub struct Stats {
     pub issue: u64,
     /// The entry's pair waits for a node word (the memory port).
     pub stall_memory: u64,
-    /// Both words held, but the last issue was too recent (issue spacing).
+    /// Both words held, but the last issue was too recent (issue spacing), or a folded DOP
+    /// unit's counter is not 0 (`dop_interval`).
     pub stall_spacing: u64,
     /// Both words held, but DOP tests in flight + leaf pairs waiting fill the credit.
     pub stall_credit: u64,
@@ -206,7 +207,7 @@ impl<'a> Chip<'a> {
             pend: VecDeque::new(),
             held: [TriCache::new(cfg.tri_cache), TriCache::new(1)],
             port: MemPort::new(p.outstanding),
-            dop: DopUnit::new(a, b, dop_values, p.dop_latency),
+            dop: DopUnit::new(a, b, dop_values, &p, cfg.k)?,
             leaf_fifo: Delay::with_capacity(FIFO_WRITE_TO_HEAD, p.credit as usize),
             leaf_valid: false,
             leaf_tag: (0, 0),
@@ -260,7 +261,8 @@ impl<'a> Chip<'a> {
             .filter(|w| go && (self.p.prefetch > 0 || cur.is_some_and(|c| c.seq == w.2)) && self.port.free(w.0))
             .map(|w| (w.0, w.1));
         let req = tri_req.or(node_req);
-        let spaced = self.last_issue.is_none_or(|t| self.now - t >= self.p.issue_spacing as u64);
+        // the issue spacing, and a folded DOP unit's `in_ready`
+        let spaced = self.last_issue.is_none_or(|t| self.now - t >= self.p.issue_spacing as u64) && self.dop.in_ready(self.now);
         let credit = self.dop.in_flight() + self.leaf_fifo.len();
         let issue = go && cur.is_some() && !need[0] && !need[1] && spaced && credit < self.p.credit as usize;
         // a DOP result: child entries, or a leaf pair
@@ -325,7 +327,7 @@ impl<'a> Chip<'a> {
     /// Books `n` cycles with the current logic (the same in each) and inputs `i` to [`Stats`].
     fn tally(&mut self, i: &ChipIn, n: u64) {
         let c = &self.logic;
-        let spacing = self.last_issue.is_some_and(|t| self.now - t < self.p.issue_spacing as u64);
+        let spacing = self.last_issue.is_some_and(|t| self.now - t < self.p.issue_spacing as u64) || !self.dop.in_ready(self.now);
         let Some(s) = &mut self.stats else { return };
         s.cycles += n;
         s.memory_busy += n * !self.port.is_empty() as u64;
@@ -423,7 +425,8 @@ impl<'a> Chip<'a> {
     /// With the inputs `i` held, the chip does nothing but wait until this cycle: no
     /// register but the clock changes before it (the next DOP result, leaf pair at the
     /// FIFO's head, TRI_UNIT verdict, the folded TRI_UNIT's next slot for the leaf pair
-    /// waiting at its input, or the end of the issue spacing; `u64::MAX`: nothing
+    /// waiting at its input, the folded DOP unit's for the pair waiting at its input, or the
+    /// end of the issue spacing; `u64::MAX`: nothing
     /// inside the chip is under way). `None`: it may act in the current cycle. Memory
     /// responses, `mem_req_ready` and `res_ready` are the driver's to add. Lets the driver
     /// skip a wait of any length in one step, the trace exact.
@@ -450,7 +453,8 @@ impl<'a> Chip<'a> {
         }
         let spaced = self.last_issue.map(|t| t + self.p.issue_spacing as u64);
         let slot = self.tri.next_slot(self.now).filter(|_| c.tri_in);
-        [self.dop.next_out(), self.leaf_fifo.next_out(), self.tri.next_out(), spaced, slot]
+        let dop_slot = self.dop.next_slot(self.now).filter(|_| c.cur.is_some());
+        [self.dop.next_out(), self.leaf_fifo.next_out(), self.tri.next_out(), spaced, slot, dop_slot]
             .into_iter()
             .flatten()
             .filter(|&t| t > self.now)

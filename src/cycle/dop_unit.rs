@@ -3,12 +3,18 @@
 //! overlap comes from the golden model ([`TransformCache`]), with the RTL's side delay
 //! line beside it (the pair and both nodes' leaf bits and children, what D_CNTR needs
 //! when the result comes out).
+//!
+//! Folded (`dop_interval` ii > 1, `rtl::*::DopUnit<k>Fold<ii>`'s rhythm): its counter runs
+//! 0 .. ii-1 from the first pair taken since reset and never stops, and `in_ready` is high
+//! only while it is 0, so pairs are taken in cycles t0 + n ii; the latency is
+//! [`dop_fold_latency`](crate::chip::rtl::dop_fold_latency)(ii), the RTL's.
 
 use super::delay::Delay;
 use crate::dop::Node;
 use crate::golden::dop_unit::TransformCache;
 use crate::golden::memory::ObjectImage;
 use crate::chip::layout::Pair;
+use crate::chip::params::Params;
 
 /// A DOP test at the unit's output: its pair, both nodes and the verdict.
 #[derive(Clone, Copy, Debug)]
@@ -24,15 +30,35 @@ pub struct DopUnit<'a> {
     b: &'a ObjectImage,
     values: TransformCache<'a>,
     pipe: Delay<DopResult>,
+    /// Clocks between pairs taken (`dop_interval`; 1: unfolded).
+    interval: u64,
+    /// The cycle of the first pair taken, where the folded unit's counter starts.
+    first: Option<u64>,
 }
 
 impl<'a> DopUnit<'a> {
-    pub fn new(a: &'a ObjectImage, b: &'a ObjectImage, values: TransformCache<'a>, latency: u32) -> Self {
-        DopUnit { a, b, values, pipe: Delay::new(latency) }
+    /// The DOP unit with `p`'s interval and latency (the folded unit's for an interval over 1)
+    /// for k directions; Err if the interval does not divide k.
+    pub fn new(a: &'a ObjectImage, b: &'a ObjectImage, values: TransformCache<'a>, p: &Params, k: usize) -> Result<Self, String> {
+        if k % p.dop_interval as usize != 0 {
+            return Err(format!("dop_interval {} does not divide k = {k} (the folded DOP unit runs k / dop_interval lanes)", p.dop_interval));
+        }
+        Ok(DopUnit { a, b, values, pipe: Delay::new(p.dop_unit_latency()), interval: p.dop_interval as u64, first: None })
+    }
+
+    /// `in_ready` in cycle `now`: the folded unit's counter is 0 (always, unfolded).
+    pub fn in_ready(&self, now: u64) -> bool {
+        self.first.is_none_or(|t0| (now - t0) % self.interval == 0)
+    }
+
+    /// The first cycle after `now` where the folded unit's counter is 0 again, if it runs.
+    pub fn next_slot(&self, now: u64) -> Option<u64> {
+        self.first.filter(|_| self.interval > 1).map(|t0| now + self.interval - (now - t0) % self.interval)
     }
 
     /// Takes the pair at edge `now`: B's node word as d, A's as e.
     pub fn issue(&mut self, now: u64, pair: Pair) {
+        self.first.get_or_insert(now);
         let (na, nb) = (self.a.tree.node(pair.a), self.b.tree.node(pair.b));
         let overlap = self.values.overlap(pair.b, pair.a);
         self.pipe.push(now, DopResult { pair, na, nb, overlap });

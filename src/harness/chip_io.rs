@@ -594,6 +594,12 @@ pub fn rtl_order(cfg: &ChipConfig, traversal: Traversal, p: &Params) -> Result<(
     if cfg.tri_cache > lines as u32 {
         return Err(format!("the RTL chips' triangle cache has {lines} lines; this scene asks for tri_cache = {}: set [chip] tri_cache to at most {lines}", cfg.tri_cache));
     }
+    if p.dop_interval != 1 {
+        return Err(format!(
+            "the RTL chips' DOP unit is unfolded (no chip is built on a folded DopUnit<k>Fold<ii> yet), so dop_interval {} runs on the cycle model only: set [timing] dop_interval = 1 to cross-check, or drop cross_check",
+            p.dop_interval
+        ));
+    }
     let rtl = Params {
         memory: p.memory,
         prefetch: p.prefetch,

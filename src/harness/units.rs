@@ -58,6 +58,24 @@ pub fn dop_unit_name(k: usize, fmt: Format, r: Rounding) -> Option<String> {
     Some(format!("dop_unit_k{k}_{}_{}", format_tag(fmt)?, rounding_tag(r)))
 }
 
+/// `dop_unit_fold<ii>_k<k>_<format>_<rounding>`: the folded DOP unit's file stem (a pair every
+/// `ii` clocks, `rtl::*::DopUnit<k>Fold<ii>`).
+pub fn dop_unit_fold_name(ii: usize, k: usize, fmt: Format, r: Rounding) -> Option<String> {
+    Some(format!("dop_unit_fold{ii}_k{k}_{}_{}", format_tag(fmt)?, rounding_tag(r)))
+}
+
+/// The folded DOP unit's Verilog, where the RTL stamps out this k, interval and format.
+pub fn dop_unit_fold_verilog(ii: usize, k: usize, fmt: Format, r: Rounding) -> Option<String> {
+    match format_tag(fmt)?.as_str() {
+        "b32" => crate::rtl::b32::verilog_dop_unit_fold(k, ii, r),
+        _ => crate::rtl::e8m15::verilog_dop_unit_fold(k, ii, r),
+    }
+}
+
+/// The folded DOP units exported (`rtl::*::DopUnit<k>Fold<ii>`, outward rounding): (ii, k,
+/// format), with the unfolded unit's vectors driven every ii clocks.
+const DOP_FOLDS: [(usize, usize, Format); 3] = [(2, 6, Format::REDUCED), (3, 6, Format::REDUCED), (6, 6, Format::REDUCED)];
+
 /// `tri_unit_<format>_rne`: TRI_UNIT's file stem (T.CHECK rounds to nearest).
 pub fn tri_unit_name(fmt: Format) -> Option<String> {
     Some(format!("tri_unit_{}_{}", format_tag(fmt)?, rounding_tag(Rounding::NearestEven)))
@@ -124,7 +142,15 @@ pub fn all() -> Vec<Unit> {
         let name = dop_unit_name(k, fmt, r).expect("an RTL format");
         let n2 = name.clone();
         let verilog = move || dop_unit_verilog(k, fmt, r).expect("the RTL builds this k");
-        units.push(Unit { name, latency: crate::chip::rtl::DOP_LATENCY as u32, verilog: Box::new(verilog), vectors: Box::new(move || dop_unit_vectors(&n2, k, fmt)) });
+        units.push(Unit { name, latency: crate::chip::rtl::DOP_LATENCY as u32, verilog: Box::new(verilog), vectors: Box::new(move || dop_unit_vectors(&n2, k, fmt, 1)) });
+    }
+    for (ii, k, fmt) in DOP_FOLDS {
+        let r = Rounding::TowardPositive;
+        let name = dop_unit_fold_name(ii, k, fmt, r).expect("an RTL format");
+        let n2 = name.clone();
+        let verilog = move || dop_unit_fold_verilog(ii, k, fmt, r).expect("the RTL stamps out this fold");
+        let latency = crate::chip::rtl::dop_fold_latency(ii) as u32;
+        units.push(Unit { name, latency, verilog: Box::new(verilog), vectors: Box::new(move || dop_unit_vectors(&n2, k, fmt, ii)) });
     }
     for r in [Rounding::NearestEven, Rounding::TowardPositive] {
         for (tag, fmt) in [("b32", Format::BINARY32), ("e8m15", Format::REDUCED)] {
@@ -300,8 +326,11 @@ fn lane_vectors(name: &str, fmt: Format, r: Rounding) -> String {
 
 /// Vectors of the DOP unit: a preload of the host setup (lane i's field f at address 8i + f:
 /// C_i0..2, c_i, j packed as j0 | j1 << 5 | j2 << 10), then every node pair of two small DOP
-/// trees, `d$0.. e$0.. tag -> overlap tag_out` (golden::dop_unit::dop_overlap).
-fn dop_unit_vectors(name: &str, k: usize, fmt: Format) -> String {
+/// trees, `d$0.. e$0.. tag -> overlap tag_out` (golden::dop_unit::dop_overlap), for a unit
+/// taking a pair every `interval` clocks (a folded one: the testbench drives a pair in cycles
+/// 0 mod `interval`, and a last column `in_ready` at a result's cycle is its counter's,
+/// latency mod `interval`, being 0).
+fn dop_unit_vectors(name: &str, k: usize, fmt: Format, interval: usize) -> String {
     use crate::chip::config::ChipConfig;
     use crate::dop::DopTree;
     use crate::golden::host::HostSetup;
@@ -317,8 +346,13 @@ fn dop_unit_vectors(name: &str, k: usize, fmt: Format) -> String {
     let mut out = String::new();
     let _ = writeln!(out, "// preload: load_en load_addr load_data");
     let names: Vec<String> = (0..k).map(|i| format!("d${i}")).chain((0..k).map(|i| format!("e${i}"))).collect();
-    let _ = writeln!(out, "// {} tag overlap tag_out", names.join(" "));
-    let _ = writeln!(out, "// latency: 15");
+    let latency = crate::chip::rtl::dop_fold_latency(interval);
+    let ready = if interval > 1 { format!(" {}", (latency % interval == 0) as u8) } else { String::new() };
+    let _ = writeln!(out, "// {} tag overlap tag_out{}", names.join(" "), if interval > 1 { " in_ready" } else { "" });
+    let _ = writeln!(out, "// latency: {latency}");
+    if interval > 1 {
+        let _ = writeln!(out, "// interval: {interval}");
+    }
     let _ = writeln!(out, "// {name}: k = {k}, {fmt}, outward; all node pairs of two DOP trees of 'soup' meshes under one pose; golden: golden::dop_unit::dop_overlap");
     for (a, v) in super::chip_io::dop_unit_setup_words(fmt, &setup) {
         let _ = writeln!(out, "@ 1 {a:02x} {v:0w$x}");
@@ -329,7 +363,7 @@ fn dop_unit_vectors(name: &str, k: usize, fmt: Format) -> String {
             let (d, e) = (tb.dop(nb), ta.dop(na));
             let overlap = crate::golden::dop_unit::dop_overlap(fmt, r, &setup, &d, &e);
             let vals: Vec<String> = d.iter().chain(e.iter()).map(|&x| hex(fmt, x)).collect();
-            let _ = writeln!(out, "{} {tag:04x} {} {tag:04x}", vals.join(" "), overlap as u8);
+            let _ = writeln!(out, "{} {tag:04x} {} {tag:04x}{ready}", vals.join(" "), overlap as u8);
             tag = tag.wrapping_add(1);
         }
     }

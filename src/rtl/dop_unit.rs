@@ -2,7 +2,7 @@
 //! format by `dop_unit!` for the k of the k-DOPs (6, 14, 18, 24, 26).
 
 /// Stamps out `DopUnit6`, `DopUnit14`, `DopUnit18`, `DopUnit24`, `DopUnit26` in the calling module (which must
-/// also hold that format's `Doptrf` and `KlmSel<K>`) with their constructors and Verilog
+/// also hold that format's `Doptrf` and `KlmSel<K, N>`) with their constructors and Verilog
 /// export.
 /// Argument: `W` word width.
 macro_rules! dop_unit {
@@ -89,7 +89,7 @@ macro_rules! dop_unit {
             jsel_1: [DFF<Bits<5>>; $K],
             jsel_2: [DFF<Bits<5>>; $K],
             // datapath
-            klmsel: KlmSel<$K>,
+            klmsel: KlmSel<$K, $K>,
             doptrf: [Doptrf; $K],
             tag_1: DFF<Bits<16>>,
             tag_2: DFF<Bits<16>>,

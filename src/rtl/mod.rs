@@ -7,7 +7,7 @@
 //!
 //! | module | format | units |
 //! |---|---|---|
-//! | [`b32`] | `binary32` (e8m23, [`Format::BINARY32`](crate::format::Format::BINARY32)) | [`b32::FpMul`] (latency 4), [`b32::FpAdd`] (latency 3), [`b32::FpScale`] (by a constant, latency 4), [`b32::Doptrf`] (latency 15), [`b32::KlmSel`], [`b32::DopUnit6`] ... [`b32::DopUnit26`] (k = 6, 14, 18, 24, 26; latency 15) |
+//! | [`b32`] | `binary32` (e8m23, [`Format::BINARY32`](crate::format::Format::BINARY32)) | [`b32::FpMul`] (latency 4), [`b32::FpAdd`] (latency 3), [`b32::FpScale`] (by a constant, latency 4), [`b32::Doptrf`] (latency 15), [`b32::KlmSel`], [`b32::DopUnit6`] ... [`b32::DopUnit26`] (k = 6, 14, 18, 24, 26; latency 15), the folded [`b32::DopUnit6Fold2`] ... [`b32::DopUnit24Fold24`] (a pair every ii clocks; latency 14 + ii) |
 //! | [`e8m15`] | e8m15 ([`Format::REDUCED`](crate::format::Format::REDUCED)) | the same |
 //! | [`e8m15_b32`] | e8m15 DOP unit, binary32 TRI_UNIT | the k = 24 chip only |
 //! | [`e8m15_fold16`] | e8m15, TRI_UNIT folded (a pair every 16 clocks) | the k = 6 chip only |
@@ -47,6 +47,7 @@ mod common;
 pub mod d_cntr;
 pub mod delay;
 mod dop_unit;
+mod dop_unit_fold;
 mod doptrf;
 mod fp_add;
 mod fp_mul;
@@ -75,6 +76,7 @@ macro_rules! fp_format {
         $crate::rtl::doptrf::doptrf!($W, $WM1, $E, $F);
         $crate::rtl::klmsel::klmsel!($W);
         $crate::rtl::dop_unit::dop_unit!($W);
+        $crate::rtl::dop_unit_fold::dop_unit_fold!($W);
         $crate::rtl::tcheck::tcheck!($W, $WM1, $E, $F);
         $crate::rtl::tri_unit::tri_unit!($W);
 

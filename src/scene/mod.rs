@@ -76,6 +76,9 @@
 //! [timing]                    # the cycle model's microarchitecture (optional; default:
 //! queue_entries = 1024        # the preset's; the RTL chip's are these values)
 //! dop_latency = 15
+//! dop_interval = 1            # clocks between the DOP unit's pairs: 1 (unfolded), or ii
+//!                             # dividing k: k/ii lanes in ii passes, latency 14 + ii (no
+//!                             # dop_latency then); the cycle model only, no cross_check
 //! tri_latency = 54
 //! tri_fifo = 256
 //! tri_interval = 1            # clocks between TRI_UNIT's pairs: 1 (unfolded), or 2, 4, .. 32
@@ -439,6 +442,14 @@ fn tri_timing(p: &Params) -> String {
     }
 }
 
+/// The DOP unit's timing in the configuration line: its latency, and its interval if folded.
+fn dop_timing(p: &Params) -> String {
+    match p.dop_interval {
+        1 => format!("dop_latency {}", p.dop_latency),
+        ii => format!("dop_interval {ii} (folded DOP unit, latency {})", p.dop_unit_latency()),
+    }
+}
+
 /// A validated scene.
 #[derive(Debug)]
 pub struct Scene {
@@ -473,8 +484,8 @@ impl Scene {
         let (c, p, w) = (&self.cfg, &self.params, &self.stack);
         let timing = match self.architecture {
             Architecture::Date05 => format!(
-                "timing: queue_entries {}, dop_latency {}, {}, tri_fifo {}, issue_spacing {}, credit {}, outstanding {}, prefetch {}",
-                p.queue_entries, p.dop_latency, tri_timing(p), p.tri_fifo, p.issue_spacing, p.credit, p.outstanding, p.prefetch
+                "timing: queue_entries {}, {}, {}, tri_fifo {}, issue_spacing {}, credit {}, outstanding {}, prefetch {}",
+                p.queue_entries, dop_timing(p), tri_timing(p), p.tri_fifo, p.issue_spacing, p.credit, p.outstanding, p.prefetch
             ),
             Architecture::Wscg03 => format!(
                 "stack_engine: sram_latency {}, dotadd_stages {}, data_bus_bits {}, compare_latency {}, word_buffer {}, tri_interval {}, tri_latency {}",
@@ -542,9 +553,16 @@ impl Scene {
         if architecture == Architecture::Wscg03 && params.tri_interval != 1 {
             return Err(err("[timing] tri_interval folds DATE'05's TRI_UNIT; WSCG'03's chip takes its Triangle Unit's interval from [stack_engine] tri_interval".into()));
         }
+        if architecture == Architecture::Wscg03 && params.dop_interval != 1 {
+            return Err(err("[timing] dop_interval folds DATE'05's DOP unit; WSCG'03's DOP Unit has its own timing ([stack_engine])".into()));
+        }
         // the command line's technology replaces the scene's clock
         let (technology, clock_mhz) = if flags.technology.is_some() { (flags.technology, None) } else { (technology, clock_mhz) };
-        let clock = clock(&cfg, params.tri_interval, preset, technology, clock_mhz).map_err(err)?;
+        let mut clock = clock(&cfg, params.tri_interval, preset, technology, clock_mhz).map_err(err)?;
+        if params.dop_interval > 1 && clock.assumed.is_none() {
+            // the timing tables measure the unfolded DOP unit and the chips built on it
+            clock.not_measured.push(format!("the folded DOP unit at dop_interval {} (the period is the unfolded chip's, assumed for it)", params.dop_interval));
+        }
         Ok(Scene {
             name: name.to_string(),
             objects: f.objects,
