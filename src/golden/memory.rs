@@ -232,6 +232,47 @@ pub fn object_scale(tris: &[Tri], fmt: Format) -> f64 {
     s.clamp(fmt.min_positive_normal(), 2f64.powi(fmt.max_finite().log2().floor() as i32 - 2))
 }
 
+/// Values made when read (a leaf's DOP, a triangle's word), the last ones read held
+/// direct-mapped by index in [`HELD_LINES`] lines: software only (the chip reads the
+/// record), so that a node or triangle met several times in a row is made once. The lines
+/// are allocated at the first read; [`Held::emptied`] hands them to the next query.
+pub struct Held<T> {
+    /// Per line, the index held (u32::MAX: none), apart from the values so that emptying
+    /// the lines touches 4 KB.
+    tags: Vec<u32>,
+    values: Vec<T>,
+}
+
+impl<T> Default for Held<T> {
+    fn default() -> Self {
+        Held { tags: vec![], values: vec![] }
+    }
+}
+
+pub const HELD_LINES: usize = 1024;
+
+impl<T: Copy> Held<T> {
+    /// The value of `n`, made by `make` unless held.
+    #[inline]
+    pub fn get(&mut self, n: u32, make: impl FnOnce() -> T) -> &T {
+        let i = n as usize % HELD_LINES;
+        if self.values.is_empty() {
+            self.values = vec![make(); HELD_LINES];
+            self.tags = vec![u32::MAX; HELD_LINES];
+            self.tags[i] = n;
+        } else if self.tags[i] != n {
+            (self.tags[i], self.values[i]) = (n, make());
+        }
+        &self.values[i]
+    }
+
+    /// The lines, every one emptied (for the next query).
+    pub fn emptied(mut self) -> Held<T> {
+        self.tags.fill(u32::MAX);
+        self
+    }
+}
+
 /// WSCG'03 §4.3's triangle cache on the aligned side (object A): direct mapped, triangle
 /// word t in line `t mod lines` with its index as the tag (`lines` a power of two,
 /// [`ChipConfig::tri_cache`]). One line is the single word held that B's side and the RTL
