@@ -237,15 +237,17 @@ pub fn object_scale(tris: &[Tri], fmt: Format) -> f64 {
 /// record), so that a node or triangle met several times in a row is made once. The lines
 /// are allocated at the first read; [`Held::emptied`] hands them to the next query.
 pub struct Held<T> {
-    /// Per line, the index held (u32::MAX: none), apart from the values so that emptying
-    /// the lines touches 4 KB.
-    tags: Vec<u32>,
+    /// Per line, the query's generation and the index held, `generation << 32 | n`
+    /// (`u64::MAX`: none; indices are below 2^31), so that emptying the lines for the next
+    /// query is one increment.
+    tags: Vec<u64>,
     values: Vec<T>,
+    generation: u32,
 }
 
 impl<T> Default for Held<T> {
     fn default() -> Self {
-        Held { tags: vec![], values: vec![] }
+        Held { tags: vec![], values: vec![], generation: 0 }
     }
 }
 
@@ -255,20 +257,23 @@ impl<T: Copy> Held<T> {
     /// The value of `n`, made by `make` unless held.
     #[inline]
     pub fn get(&mut self, n: u32, make: impl FnOnce() -> T) -> &T {
-        let i = n as usize % HELD_LINES;
+        let (i, tag) = (n as usize % HELD_LINES, (self.generation as u64) << 32 | n as u64);
         if self.values.is_empty() {
             self.values = vec![make(); HELD_LINES];
-            self.tags = vec![u32::MAX; HELD_LINES];
-            self.tags[i] = n;
-        } else if self.tags[i] != n {
-            (self.tags[i], self.values[i]) = (n, make());
+            self.tags = vec![u64::MAX; HELD_LINES];
+            self.tags[i] = tag;
+        } else if self.tags[i] != tag {
+            (self.tags[i], self.values[i]) = (tag, make());
         }
         &self.values[i]
     }
 
     /// The lines, every one emptied (for the next query).
     pub fn emptied(mut self) -> Held<T> {
-        self.tags.fill(u32::MAX);
+        self.generation = self.generation.wrapping_add(1);
+        if self.generation == 0 {
+            self.tags.fill(u64::MAX);
+        }
         self
     }
 }
@@ -403,6 +408,17 @@ mod tests {
         assert_eq!(misses(1), [1, 1, 1, 1, 1, 1, 0]);
         assert_eq!(misses(2), [1, 1, 0, 1, 1, 1, 0]);
         assert_eq!(misses(3), [1, 1, 0, 1, 0, 0, 0]);
+    }
+
+    /// Hand-derived: a value held is not made again until its line holds another index or
+    /// the lines are emptied for the next query (which may read another object).
+    #[test]
+    fn held_lines_are_emptied_between_queries() {
+        let mut h = Held::default();
+        assert_eq!((*h.get(5, || 1), *h.get(5, || 2)), (1, 1));
+        assert_eq!((*h.get(5 + HELD_LINES as u32, || 3), *h.get(5, || 4)), (3, 4));
+        let mut h = h.emptied();
+        assert_eq!((*h.get(5, || 6), *h.get(5, || 7)), (6, 6));
     }
 
     #[test]
