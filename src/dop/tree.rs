@@ -112,10 +112,7 @@ impl DopTree {
         let mut d = [0.0; MAX_K];
         match self.links[node as usize] {
             l if l & LEAF != 0 => self.leaf_dop(&self.tris[(l & !LEAF) as usize], &mut d[..self.k]),
-            j => {
-                let at = j as usize * self.k;
-                d[..self.k].iter_mut().enumerate().for_each(|(i, x)| *x = self.dops.get(at + i));
-            }
+            j => self.dops.read(j as usize * self.k, &mut d[..self.k]),
         }
         Dop { d, k: self.k }
     }

@@ -41,6 +41,16 @@ impl Values {
         }
     }
 
+    /// Values `at..at + out.len()` into `out`.
+    #[inline]
+    pub fn read(&self, at: usize, out: &mut [f64]) {
+        let n = out.len();
+        match self {
+            Values::F32(v) => out.iter_mut().zip(&v[at..at + n]).for_each(|(o, &x)| *o = x as f64),
+            Values::F64(v) => out.copy_from_slice(&v[at..at + n]),
+        }
+    }
+
     /// Replaces value `i` by `x`, a value of the format.
     pub fn set(&mut self, i: usize, x: f64) {
         match self {

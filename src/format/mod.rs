@@ -442,8 +442,9 @@ impl Format {
     }
 
     /// Rounds an arbitrary `f64` (taken as exact) into the format. NaN gives the
-    /// canonical NaN, `±inf` and `±0` are returned unchanged.
-    #[inline]
+    /// canonical NaN, `±inf` and `±0` are returned unchanged. binary32's cases inline, the
+    /// rest a call.
+    #[inline(always)]
     pub fn round(&self, x: f64, r: Rounding) -> f64 {
         if self.is_binary32() && r == Rounding::NearestEven {
             let y = x as f32 as f64;
@@ -455,7 +456,7 @@ impl Format {
         self.round_general(x, r)
     }
 
-    #[inline(always)]
+    #[inline(never)]
     fn round_general(&self, x: f64, r: Rounding) -> f64 {
         if x == 0.0 || !x.is_finite() {
             return if x.is_nan() { f64::NAN } else { x };

@@ -6,9 +6,10 @@ use super::enclosure::checking;
 use super::host::{DopLanes, HostSetup, Lane};
 use std::borrow::Cow;
 use super::klmsel::{klmsel, opposite};
+use super::memory::Held;
 use crate::dop::{Dop, DopTree};
 use crate::format::{Format, Rounding};
-use std::cell::OnceCell;
+use std::cell::{Cell, OnceCell};
 
 /// B's transformed DOPs during one query, computed on a node's first test (or at every
 /// test, [`forget_rows`](TransformCache::forget_rows)): per lane an
@@ -32,22 +33,15 @@ pub struct TransformCache<'a> {
     k: usize,
     q: f64,
     rel: f64,
-    /// Per B node, the index of its block of k lanes (u32::MAX: not yet computed); the
-    /// table is allocated when a second node is transformed (the first node's block is
-    /// block 0), so that a query ending at the root does not pay for it.
-    nodes: usize,
-    first: Option<u32>,
-    slot: Vec<u32>,
-    approx: Vec<f64>,
-    err: Vec<f64>,
-    exact: Vec<f64>,
-    /// Per block, the lanes whose exact value is in `exact`.
-    known: Vec<u32>,
+    /// B's rows transformed so far, kept for the thread's next query when this one ends.
+    rows: Rows,
     /// Keep a node's rows for the query (false: one block, refilled by every test).
     memo: bool,
     /// A's and B's DOP trees.
     trees: [&'a DopTree; 2],
-    held: HeldDops,
+    /// A's DOPs last read (a leaf's is computed from its triangle when read, an inner node's
+    /// widened from its stored format, and an A node meets several of B's in a row).
+    held: Held<Dop>,
 }
 
 impl<'a> TransformCache<'a> {
@@ -66,16 +60,10 @@ impl<'a> TransformCache<'a> {
             k,
             q: f.min_positive_subnormal(),
             rel: 2f64.powi(4 - p) + 2f64.powi(-50),
-            nodes: b.len(),
-            first: None,
-            slot: vec![],
-            approx: vec![],
-            err: vec![],
-            exact: vec![],
-            known: vec![],
+            rows: Rows::take(b.len()),
             memo: true,
             trees: [a, b],
-            held: HeldDops::default(),
+            held: SPARE_HELD.take(),
         }
     }
 
@@ -101,19 +89,19 @@ impl<'a> TransformCache<'a> {
     /// at once (a loop the compiler vectorises), then the exact value of the lanes the
     /// estimate leaves open, if no lane is surely separated. B's DOP is read only where a
     /// lane needs it (mostly its node's first test: its rows are then kept), A's through
-    /// [`HeldDops`]. In check mode ([`checking`]) the answer is compared with
+    /// [`Held`] lines. In check mode ([`checking`]) the answer is compared with
     /// [`dop_overlap`]'s.
     pub fn overlap(&mut self, nb: u32, na: u32) -> bool {
         let [a, b] = self.trees;
         let d = LazyDop { tree: b, n: nb, dop: OnceCell::new() };
-        let e = self.held.dop(a, na);
+        let e = *self.held.get(na, || a.dop(na));
         let overlap = !(self.pending.is_some() && self.lazy_separated(d.get(), &e)) && {
             self.complete();
             self.estimated(&d, &e)
         };
         if checking() {
             self.complete();
-            // A's DOP read anew, not the held one: the check covers HeldDops too.
+            // A's DOP read anew, not the held one: the check covers the held lines too.
             let (d, e) = (b.dop(nb), a.dop(na));
             let want = dop_overlap(self.f, self.r, &self.setup, &d, &e);
             assert_eq!(overlap, want, "check mode: the DOP unit's estimate said overlap = {overlap}, the lanes {want}: d {d:?}, e {e:?}");
@@ -154,7 +142,7 @@ impl<'a> TransformCache<'a> {
         let (k, h) = (self.k, self.k / 2);
         let block = self.block(d);
         let base = block * k;
-        let (approx, err) = (&self.approx[base..base + k], &self.err[base..base + k]);
+        let (approx, err) = (&self.rows.approx[base..base + k], &self.rows.err[base..base + k]);
         // Lane i meets e_opp(i): the first half e[h..], the second e[..h].
         // Most pairs are separated: the second half waits for the first's answer.
         let (s1, o1) = scan(self.q, &approx[..h], &err[..h], &e[h..]);
@@ -168,18 +156,19 @@ impl<'a> TransformCache<'a> {
     /// The lanes the estimate leaves open, bit for bit: false if one is separated.
     #[cold]
     fn exact_lanes(&mut self, block: usize, d: &LazyDop, e: &[f64]) -> bool {
-        let base = block * self.k;
+        let (base, rows) = (block * self.k, &mut self.rows);
         for i in 0..self.k {
             let ei = opposite(e, i);
-            if !flags(self.q, self.approx[base + i], self.err[base + i], ei).1 {
+            if !flags(self.q, rows.approx[base + i], rows.err[base + i], ei).1 {
                 continue;
             }
-            if self.known[block] & (1 << i) == 0 {
+            let known = &mut rows.blocks[block].known;
+            if *known & (1 << i) == 0 {
                 let di = klmsel(d.get(), self.setup.j[i]);
-                self.exact[base + i] = transformed(self.f, self.r, di, self.setup.cmat[i], self.setup.cvec[i]);
-                self.known[block] |= 1 << i;
+                rows.exact[base + i] = transformed(self.f, self.r, di, self.setup.cmat[i], self.setup.cvec[i]);
+                *known |= 1 << i;
             }
-            if separated(self.q, self.exact[base + i], ei) {
+            if separated(self.q, rows.exact[base + i], ei) {
                 return false;
             }
         }
@@ -188,46 +177,31 @@ impl<'a> TransformCache<'a> {
 
     /// The block of B's node `nb`, transformed on its first test.
     fn block(&mut self, d: &LazyDop) -> usize {
-        let nb = d.n;
         if !self.memo {
-            self.approx.clear();
-            self.err.clear();
-            self.known.clear();
-            return self.fill(d.get());
+            self.rows.forget();
+            return self.fill(d);
         }
-        match self.first {
-            None => {
-                self.first = Some(nb);
-                return self.fill(d.get());
-            }
-            Some(f) if f == nb => return 0,
-            Some(_) => {}
-        }
-        if self.slot.is_empty() {
-            self.slot = vec![u32::MAX; self.nodes];
-            for v in [&mut self.approx, &mut self.err, &mut self.exact] {
-                v.reserve(self.k * 256);
-            }
-        }
-        match self.slot[nb as usize] {
+        match self.rows.slot[d.n as usize] {
             u32::MAX => {
-                let b = self.fill(d.get());
-                self.slot[nb as usize] = b as u32;
+                let b = self.fill(d);
+                self.rows.slot[d.n as usize] = b as u32;
                 b
             }
             b => b as usize,
         }
     }
 
-    fn fill(&mut self, d: &[f64]) -> usize {
-        let (block, base) = (self.known.len(), self.approx.len());
-        self.known.push(0);
-        self.approx.resize(base + self.k, 0.0);
-        self.err.resize(base + self.k, 0.0);
-        self.exact.resize(base + self.k, 0.0);
+    fn fill(&mut self, d: &LazyDop) -> usize {
+        let (k, rows) = (self.k, &mut self.rows);
+        let (block, base) = (rows.blocks.len(), rows.approx.len());
+        rows.blocks.push(Block { node: d.n, known: 0 });
+        rows.approx.resize(base + k, 0.0);
+        rows.err.resize(base + k, 0.0);
+        rows.exact.resize(base + k, 0.0);
         let est = self.estimator();
+        let (d, rows) = (d.get(), &mut self.rows);
         let lanes = self.setup.j.iter().zip(&self.setup.cmat).zip(&self.setup.cvec);
-        for ((a, t), ((j, cm), &c)) in self.approx[base..].iter_mut().zip(&mut self.err[base..]).zip(lanes) {
+        for ((a, t), ((j, cm), &c)) in rows.approx[base..].iter_mut().zip(&mut rows.err[base..]).zip(lanes) {
             (*a, *t) = est.lane(d, *j, *cm, c);
         }
         block
@@ -252,30 +226,69 @@ impl LazyDop<'_> {
     }
 }
 
-/// A's DOPs last read, direct-mapped by node ([`HELD_LINES`] lines, allocated at the first
-/// node below the root): a leaf's DOP is computed from its triangle when read (an inner
-/// node's widened from its stored format), and an A node meets several of B's in a row.
-/// Software only: the chip reads the node's record.
+/// B's transformed rows during one query, a block of k lanes per node: per lane the f64
+/// estimate, its bound and (once a test needed it) the chip's value. Kept per thread for
+/// the next query, emptied, so that a query does not pay for allocating them anew and the
+/// pages the allocator returned to the system (a quarter of a contact query's time before);
+/// one larger than [`SPARE_BYTES`] is freed.
 #[derive(Default)]
-struct HeldDops {
-    lines: Vec<(u32, Dop)>,
+struct Rows {
+    /// Per B node, its block (u32::MAX: not transformed in this query).
+    slot: Vec<u32>,
+    approx: Vec<f64>,
+    err: Vec<f64>,
+    exact: Vec<f64>,
+    blocks: Vec<Block>,
 }
 
-const HELD_LINES: usize = 1024;
+/// A transformed node and its lanes whose exact value is in [`Rows::exact`].
+struct Block {
+    node: u32,
+    known: u32,
+}
 
-impl HeldDops {
-    fn dop(&mut self, tree: &DopTree, n: u32) -> Dop {
-        if n == 0 {
-            return tree.dop(n);
+/// The largest [`Rows`] a thread keeps between queries.
+const SPARE_BYTES: usize = 8 << 20;
+
+thread_local! {
+    static SPARE_ROWS: Cell<Rows> = Cell::default();
+    static SPARE_HELD: Cell<Held<Dop>> = Cell::default();
+}
+
+impl Rows {
+    /// The thread's spare rows for a tree of `nodes` nodes.
+    fn take(nodes: usize) -> Rows {
+        let mut rows = SPARE_ROWS.take();
+        if rows.slot.len() != nodes {
+            rows.slot = vec![u32::MAX; nodes];
         }
-        if self.lines.is_empty() {
-            self.lines = vec![(u32::MAX, tree.dop(n)); HELD_LINES];
+        rows
+    }
+
+    /// Every block dropped (its nodes untransformed).
+    fn forget(&mut self) {
+        for b in &self.blocks {
+            self.slot[b.node as usize] = u32::MAX;
         }
-        let line = &mut self.lines[n as usize % HELD_LINES];
-        if line.0 != n {
-            *line = (n, tree.dop(n));
+        self.blocks.clear();
+        self.approx.clear();
+        self.err.clear();
+        self.exact.clear();
+    }
+
+    fn bytes(&self) -> usize {
+        4 * self.slot.capacity() + 8 * (self.approx.capacity() + self.err.capacity() + self.exact.capacity()) + 8 * self.blocks.capacity()
+    }
+}
+
+impl Drop for TransformCache<'_> {
+    fn drop(&mut self) {
+        let mut rows = std::mem::take(&mut self.rows);
+        rows.forget();
+        if rows.bytes() <= SPARE_BYTES {
+            SPARE_ROWS.set(rows);
         }
-        line.1
+        SPARE_HELD.set(std::mem::take(&mut self.held).emptied());
     }
 }
 

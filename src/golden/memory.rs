@@ -232,6 +232,52 @@ pub fn object_scale(tris: &[Tri], fmt: Format) -> f64 {
     s.clamp(fmt.min_positive_normal(), 2f64.powi(fmt.max_finite().log2().floor() as i32 - 2))
 }
 
+/// Values made when read (a leaf's DOP, a triangle's word), the last ones read held
+/// direct-mapped by index in [`HELD_LINES`] lines: software only (the chip reads the
+/// record), so that a node or triangle met several times in a row is made once. The lines
+/// are allocated at the first read; [`Held::emptied`] hands them to the next query.
+pub struct Held<T> {
+    /// Per line, the query's generation and the index held, `generation << 32 | n`
+    /// (`u64::MAX`: none; indices are below 2^31), so that emptying the lines for the next
+    /// query is one increment.
+    tags: Vec<u64>,
+    values: Vec<T>,
+    generation: u32,
+}
+
+impl<T> Default for Held<T> {
+    fn default() -> Self {
+        Held { tags: vec![], values: vec![], generation: 0 }
+    }
+}
+
+pub const HELD_LINES: usize = 1024;
+
+impl<T: Copy> Held<T> {
+    /// The value of `n`, made by `make` unless held.
+    #[inline]
+    pub fn get(&mut self, n: u32, make: impl FnOnce() -> T) -> &T {
+        let (i, tag) = (n as usize % HELD_LINES, (self.generation as u64) << 32 | n as u64);
+        if self.values.is_empty() {
+            self.values = vec![make(); HELD_LINES];
+            self.tags = vec![u64::MAX; HELD_LINES];
+            self.tags[i] = tag;
+        } else if self.tags[i] != tag {
+            (self.tags[i], self.values[i]) = (tag, make());
+        }
+        &self.values[i]
+    }
+
+    /// The lines, every one emptied (for the next query).
+    pub fn emptied(mut self) -> Held<T> {
+        self.generation = self.generation.wrapping_add(1);
+        if self.generation == 0 {
+            self.tags.fill(u64::MAX);
+        }
+        self
+    }
+}
+
 /// WSCG'03 §4.3's triangle cache on the aligned side (object A): direct mapped, triangle
 /// word t in line `t mod lines` with its index as the tag (`lines` a power of two,
 /// [`ChipConfig::tri_cache`]). One line is the single word held that B's side and the RTL
@@ -362,6 +408,17 @@ mod tests {
         assert_eq!(misses(1), [1, 1, 1, 1, 1, 1, 0]);
         assert_eq!(misses(2), [1, 1, 0, 1, 1, 1, 0]);
         assert_eq!(misses(3), [1, 1, 0, 1, 0, 0, 0]);
+    }
+
+    /// Hand-derived: a value held is not made again until its line holds another index or
+    /// the lines are emptied for the next query (which may read another object).
+    #[test]
+    fn held_lines_are_emptied_between_queries() {
+        let mut h = Held::default();
+        assert_eq!((*h.get(5, || 1), *h.get(5, || 2)), (1, 1));
+        assert_eq!((*h.get(5 + HELD_LINES as u32, || 3), *h.get(5, || 4)), (3, 4));
+        let mut h = h.emptied();
+        assert_eq!((*h.get(5, || 6), *h.get(5, || 7)), (6, 6));
     }
 
     #[test]

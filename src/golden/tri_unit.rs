@@ -7,6 +7,7 @@ use super::host::HostSetup;
 use super::memory::TriWord;
 use super::tcheck::{decide, edges, edges_in, or3, stage1, stage1_hi, Stage1, Stage1Hi};
 use crate::format::{Format, Rounding};
+use std::cell::Cell;
 
 /// Intersecting (surely), separate (surely), or uncertain.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
@@ -52,41 +53,70 @@ pub struct TriUnit<'a> {
     mb_a: StageOneCache,
 }
 
-/// Stage 1 of one leaf: enclosed always, bit for bit once the enclosure failed to decide.
+/// Stage 1 of one leaf (triangle `tri`): enclosed always, bit for bit once the enclosure
+/// failed to decide.
 struct Leaf {
+    tri: u32,
     hi: Stage1Hi,
     exact: Option<Box<Stage1>>,
 }
 
-/// Per triangle, its slot in `values` (the table of one word per triangle is allocated at
-/// the first leaf pair, so that a query ending above the leaves does not pay for it).
+/// Per triangle, its slot in `values`. Kept per thread for the next query, emptied, so
+/// that a query does not allocate the table of one word per triangle anew.
+#[derive(Default)]
 struct StageOneCache {
-    n: usize,
     slot: Vec<u32>,
     values: Vec<Leaf>,
 }
 
+thread_local! {
+    static SPARE: Cell<[StageOneCache; 2]> = Cell::default();
+}
+
+/// The most leaves' room a thread keeps between queries (some 4 MB).
+const SPARE_LEAVES: usize = 1 << 14;
+
 impl StageOneCache {
-    fn get(&mut self, t: u32, compute: impl FnOnce() -> Stage1Hi) -> &mut Leaf {
-        if self.slot.is_empty() {
-            self.slot = vec![u32::MAX; self.n];
-            self.values.reserve(64);
+    /// The table sized for `n` triangles.
+    fn sized(mut self, n: usize) -> StageOneCache {
+        if self.slot.len() != n {
+            self.slot = vec![u32::MAX; n];
         }
+        self
+    }
+
+    fn get(&mut self, t: u32, compute: impl FnOnce() -> Stage1Hi) -> &mut Leaf {
         let mut s = self.slot[t as usize];
         if s == u32::MAX {
             s = self.values.len() as u32;
             self.slot[t as usize] = s;
-            self.values.push(Leaf { hi: compute(), exact: None });
+            self.values.push(Leaf { tri: t, hi: compute(), exact: None });
         }
         &mut self.values[s as usize]
+    }
+
+    /// Every slot emptied.
+    fn emptied(mut self) -> StageOneCache {
+        for l in &self.values {
+            self.slot[l.tri as usize] = u32::MAX;
+        }
+        self.values.clear();
+        self.values.shrink_to(SPARE_LEAVES);
+        self
+    }
+}
+
+impl Drop for TriUnit<'_> {
+    fn drop(&mut self) {
+        SPARE.set([std::mem::take(&mut self.mb_a).emptied(), std::mem::take(&mut self.mb_b).emptied()]);
     }
 }
 
 impl<'a> TriUnit<'a> {
     pub fn new(f: Format, r: Rounding, setup: &'a HostSetup, tris_a: usize, tris_b: usize) -> Self {
-        let cache = |n| StageOneCache { n, slot: vec![], values: vec![] };
+        let [mb_a, mb_b] = SPARE.take();
         let (cert, up) = (Certificate::new(f, r), Upper::new(f));
-        TriUnit { f, r, cert, up, setup, mb_b: cache(tris_b), mb_a: cache(tris_a) }
+        TriUnit { f, r, cert, up, setup, mb_b: mb_b.sized(tris_b), mb_a: mb_a.sized(tris_a) }
     }
 
     /// Triangle `ta` of A (word `a`) against `tb` of B (word `b`). A sure hit in the first

@@ -20,7 +20,8 @@ use crate::chip::reg::{Mode, Order};
 use crate::dop::tree::Tri;
 use crate::dop::Node;
 use crate::golden::host::{DopLanes, HostSetup};
-use crate::golden::memory::{NodeCache, ObjectImage, TriCache};
+use crate::golden::memory::{Held, NodeCache, ObjectImage, TriCache, TriWord};
+use std::cell::Cell;
 use crate::golden::{d_cntr, dop_unit, tri_unit};
 use crate::oracle;
 use nalgebra::{Matrix3, Vector3};
@@ -122,6 +123,9 @@ pub(crate) struct Engine<'a> {
     held_node: [NodeCache; 2],
     /// A's triangle words held (the triangle cache), B's (one line).
     held_tri: [TriCache; 2],
+    /// A's and B's triangle words last made (software only: a word is made from the f64
+    /// triangle when read, and a leaf meets several of the other object's in a row).
+    words: [Held<TriWord>; 2],
     host: &'a Host<'a>,
     pairs: Vec<(u32, u32)>,
     uncertain: Vec<(u32, u32)>,
@@ -162,8 +166,8 @@ impl<'a> Engine<'a> {
         let fetch_a = self.held_tri[0].fetch(self.a.tri_record(ta)) as u64;
         c.tri_fetches_a += fetch_a;
         c.tri_fetches += fetch_a + self.held_tri[1].fetch(self.b.tri_record(tb)) as u64;
-        let (wa, wb) = (&self.a.tri(ta), &self.b.tri(tb));
-        let res = self.tri_unit.test(ta, wa, tb, wb);
+        let (a, b, [words_a, words_b]) = (self.a, self.b, &mut self.words);
+        let res = self.tri_unit.test(ta, words_a.get(ta, || a.tri(ta)), tb, words_b.get(tb, || b.tri(tb)));
         let hit = if res.uncertain {
             self.counters.uncertain += 1;
             self.uncertain.push((ta, tb));
@@ -209,6 +213,7 @@ pub fn run(
         mode,
         held_node: [NodeCache::new(cfg.node_cache), NodeCache::new(cfg.node_cache)],
         held_tri: [TriCache::new(cfg.tri_cache), TriCache::new(1)],
+        words: SPARE_WORDS.take(),
         host,
         pairs: vec![],
         uncertain: vec![],
@@ -227,6 +232,7 @@ pub fn run(
         Traversal::Fifo => run_d_cntr(&mut e, Order::Fifo),
         Traversal::Lifo => run_d_cntr(&mut e, Order::Lifo),
     }
+    SPARE_WORDS.set(e.words.map(Held::emptied));
     let mut c = e.counters;
     let [node_bytes, tri_bytes] = e.layout.record_bytes();
     c.memory_bytes = c.node_fetches * node_bytes + c.tri_fetches * tri_bytes;
@@ -234,6 +240,11 @@ pub fn run(
     pairs.sort_unstable();
     uncertain.sort_unstable();
     QueryResult { pairs, uncertain, counters: c }
+}
+
+thread_local! {
+    /// [`Engine::words`]' lines, kept for the thread's next query.
+    static SPARE_WORDS: Cell<[Held<TriWord>; 2]> = Cell::default();
 }
 
 /// DATE'05's traversal: every pair of D_CNTR's queue DOP-tested in turn, a leaf pair's
