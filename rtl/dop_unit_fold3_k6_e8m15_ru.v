@@ -186,6 +186,12 @@ module top(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,e$0,e$1,e$2
     // Local signals
     reg  c_zero;
     reg  c_take;
+    reg  [4:0] c_j0$0;
+    reg  [4:0] c_j0$1;
+    reg  [4:0] c_j1$0;
+    reg  [4:0] c_j1$1;
+    reg  [4:0] c_j2$0;
+    reg  [4:0] c_j2$1;
     reg  c_any;
     reg  c_first;
     
@@ -414,79 +420,91 @@ module top(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,e$0,e$1,e$2
         held_e$0$clock = clock;
         held_d$0$d = held_d$0$q;
         held_e$0$d = held_e$0$q;
-        klmsel$d$0 = held_d$0$q;
         if (c_zero) begin
             held_d$0$d = d$0;
             held_e$0$d = e$0;
             klmsel$d$0 = d$0;
         end
+        else begin
+            klmsel$d$0 = held_d$0$q;
+        end
         held_d$1$clock = clock;
         held_e$1$clock = clock;
         held_d$1$d = held_d$1$q;
         held_e$1$d = held_e$1$q;
-        klmsel$d$1 = held_d$1$q;
         if (c_zero) begin
             held_d$1$d = d$1;
             held_e$1$d = e$1;
             klmsel$d$1 = d$1;
         end
+        else begin
+            klmsel$d$1 = held_d$1$q;
+        end
         held_d$2$clock = clock;
         held_e$2$clock = clock;
         held_d$2$d = held_d$2$q;
         held_e$2$d = held_e$2$q;
-        klmsel$d$2 = held_d$2$q;
         if (c_zero) begin
             held_d$2$d = d$2;
             held_e$2$d = e$2;
             klmsel$d$2 = d$2;
         end
+        else begin
+            klmsel$d$2 = held_d$2$q;
+        end
         held_d$3$clock = clock;
         held_e$3$clock = clock;
         held_d$3$d = held_d$3$q;
         held_e$3$d = held_e$3$q;
-        klmsel$d$3 = held_d$3$q;
         if (c_zero) begin
             held_d$3$d = d$3;
             held_e$3$d = e$3;
             klmsel$d$3 = d$3;
         end
+        else begin
+            klmsel$d$3 = held_d$3$q;
+        end
         held_d$4$clock = clock;
         held_e$4$clock = clock;
         held_d$4$d = held_d$4$q;
         held_e$4$d = held_e$4$q;
-        klmsel$d$4 = held_d$4$q;
         if (c_zero) begin
             held_d$4$d = d$4;
             held_e$4$d = e$4;
             klmsel$d$4 = d$4;
         end
+        else begin
+            klmsel$d$4 = held_d$4$q;
+        end
         held_d$5$clock = clock;
         held_e$5$clock = clock;
         held_d$5$d = held_d$5$q;
         held_e$5$d = held_e$5$q;
-        klmsel$d$5 = held_d$5$q;
         if (c_zero) begin
             held_d$5$d = d$5;
             held_e$5$d = e$5;
             klmsel$d$5 = d$5;
+        end
+        else begin
+            klmsel$d$5 = held_d$5$q;
         end
         doptrf$0$clock = clock;
         doptrf$0$valid_in = held_valid$q;
         if (c_zero) begin
             doptrf$0$valid_in = c_take;
         end
-        klmsel$j0$0 = setup$j0$0;
-        klmsel$j1$0 = setup$j1$0;
-        klmsel$j2$0 = setup$j2$0;
+        c_j0$0 = setup$j0$0;
+        c_j1$0 = setup$j1$0;
+        c_j2$0 = setup$j2$0;
         doptrf$0$c0 = setup$c0$0;
         doptrf$0$c1 = setup$c1$0;
         doptrf$0$c2 = setup$c2$0;
         doptrf$0$c = setup$c$0;
         doptrf$0$e = e$3;
         if (counter$q == idx$1) begin
-            klmsel$j0$0 = setup$j0$2;
-            klmsel$j1$0 = setup$j1$2;
-            klmsel$j2$0 = setup$j2$2;
+            c_j0$0 = setup$j0$2;
+            c_j1$0 = setup$j1$2;
+            c_j2$0 = setup$j2$2;
             doptrf$0$c0 = setup$c0$2;
             doptrf$0$c1 = setup$c1$2;
             doptrf$0$c2 = setup$c2$2;
@@ -494,15 +512,18 @@ module top(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,e$0,e$1,e$2
             doptrf$0$e = held_e$5$q;
         end
         if (counter$q == idx$2) begin
-            klmsel$j0$0 = setup$j0$4;
-            klmsel$j1$0 = setup$j1$4;
-            klmsel$j2$0 = setup$j2$4;
+            c_j0$0 = setup$j0$4;
+            c_j1$0 = setup$j1$4;
+            c_j2$0 = setup$j2$4;
             doptrf$0$c0 = setup$c0$4;
             doptrf$0$c1 = setup$c1$4;
             doptrf$0$c2 = setup$c2$4;
             doptrf$0$c = setup$c$4;
             doptrf$0$e = held_e$1$q;
         end
+        klmsel$j0$0 = c_j0$0;
+        klmsel$j1$0 = c_j1$0;
+        klmsel$j2$0 = c_j2$0;
         doptrf$0$d0 = klmsel$y0$0;
         doptrf$0$d1 = klmsel$y1$0;
         doptrf$0$d2 = klmsel$y2$0;
@@ -511,18 +532,18 @@ module top(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,e$0,e$1,e$2
         if (c_zero) begin
             doptrf$1$valid_in = c_take;
         end
-        klmsel$j0$1 = setup$j0$1;
-        klmsel$j1$1 = setup$j1$1;
-        klmsel$j2$1 = setup$j2$1;
+        c_j0$1 = setup$j0$1;
+        c_j1$1 = setup$j1$1;
+        c_j2$1 = setup$j2$1;
         doptrf$1$c0 = setup$c0$1;
         doptrf$1$c1 = setup$c1$1;
         doptrf$1$c2 = setup$c2$1;
         doptrf$1$c = setup$c$1;
         doptrf$1$e = e$4;
         if (counter$q == idx$1) begin
-            klmsel$j0$1 = setup$j0$3;
-            klmsel$j1$1 = setup$j1$3;
-            klmsel$j2$1 = setup$j2$3;
+            c_j0$1 = setup$j0$3;
+            c_j1$1 = setup$j1$3;
+            c_j2$1 = setup$j2$3;
             doptrf$1$c0 = setup$c0$3;
             doptrf$1$c1 = setup$c1$3;
             doptrf$1$c2 = setup$c2$3;
@@ -530,15 +551,18 @@ module top(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,e$0,e$1,e$2
             doptrf$1$e = held_e$0$q;
         end
         if (counter$q == idx$2) begin
-            klmsel$j0$1 = setup$j0$5;
-            klmsel$j1$1 = setup$j1$5;
-            klmsel$j2$1 = setup$j2$5;
+            c_j0$1 = setup$j0$5;
+            c_j1$1 = setup$j1$5;
+            c_j2$1 = setup$j2$5;
             doptrf$1$c0 = setup$c0$5;
             doptrf$1$c1 = setup$c1$5;
             doptrf$1$c2 = setup$c2$5;
             doptrf$1$c = setup$c$5;
             doptrf$1$e = held_e$2$q;
         end
+        klmsel$j0$1 = c_j0$1;
+        klmsel$j1$1 = c_j1$1;
+        klmsel$j2$1 = c_j2$1;
         doptrf$1$d0 = klmsel$y0$1;
         doptrf$1$d1 = klmsel$y1$1;
         doptrf$1$d2 = klmsel$y2$1;

@@ -198,6 +198,12 @@ macro_rules! dop_unit_fold {
             held_tag: DFF<Bits<16>>,
             held_valid: DFF<Bit>,
             klmsel: KlmSel<$K, $L>,
+            // the selects of each lane's direction this pass, given to D.KLMSEL once: a select
+            // written twice per evaluation would glitch its combinational outputs, which this
+            // block reads, and Icarus would never settle
+            c_j0: [Signal<Local, Bits<5>>; $L],
+            c_j1: [Signal<Local, Bits<5>>; $L],
+            c_j2: [Signal<Local, Bits<5>>; $L],
             doptrf: [Doptrf; $L],
             tag_line: $crate::rtl::delay::Delay<Bits<16>, 15>,
             // the flags of the pair's passes so far
@@ -243,6 +249,9 @@ macro_rules! dop_unit_fold {
                     held_tag: Default::default(),
                     held_valid: Default::default(),
                     klmsel: KlmSel::new(),
+                    c_j0: array_init(),
+                    c_j1: array_init(),
+                    c_j2: array_init(),
                     doptrf: std::array::from_fn(|_| Doptrf::new(rounding)),
                     tag_line: Default::default(),
                     acc: Default::default(),
@@ -282,11 +291,12 @@ macro_rules! dop_unit_fold {
                     self.held_e[a].clock.next = self.clock.val();
                     self.held_d[a].d.next = self.held_d[a].q.val();
                     self.held_e[a].d.next = self.held_e[a].q.val();
-                    self.klmsel.d[a].next = self.held_d[a].q.val();
                     if self.c_zero.val() {
                         self.held_d[a].d.next = self.d[a].val();
                         self.held_e[a].d.next = self.e[a].val();
                         self.klmsel.d[a].next = self.d[a].val();
+                    } else {
+                        self.klmsel.d[a].next = self.held_d[a].q.val();
                     }
                 }
                 // ---- lane l, pass p: direction p L + l (pass 0 the default)
@@ -296,9 +306,9 @@ macro_rules! dop_unit_fold {
                     if self.c_zero.val() {
                         self.doptrf[l].valid_in.next = self.c_take.val();
                     }
-                    self.klmsel.j0[l].next = self.setup.j0[l].val();
-                    self.klmsel.j1[l].next = self.setup.j1[l].val();
-                    self.klmsel.j2[l].next = self.setup.j2[l].val();
+                    self.c_j0[l].next = self.setup.j0[l].val();
+                    self.c_j1[l].next = self.setup.j1[l].val();
+                    self.c_j2[l].next = self.setup.j2[l].val();
                     self.doptrf[l].c0.next = self.setup.c0[l].val();
                     self.doptrf[l].c1.next = self.setup.c1[l].val();
                     self.doptrf[l].c2.next = self.setup.c2[l].val();
@@ -306,9 +316,9 @@ macro_rules! dop_unit_fold {
                     self.doptrf[l].e.next = self.e[(l + $H) % $K].val();
                     for p in 1..$P {
                         if self.counter.q.val() == self.idx[p].val() {
-                            self.klmsel.j0[l].next = self.setup.j0[p * $L + l].val();
-                            self.klmsel.j1[l].next = self.setup.j1[p * $L + l].val();
-                            self.klmsel.j2[l].next = self.setup.j2[p * $L + l].val();
+                            self.c_j0[l].next = self.setup.j0[p * $L + l].val();
+                            self.c_j1[l].next = self.setup.j1[p * $L + l].val();
+                            self.c_j2[l].next = self.setup.j2[p * $L + l].val();
                             self.doptrf[l].c0.next = self.setup.c0[p * $L + l].val();
                             self.doptrf[l].c1.next = self.setup.c1[p * $L + l].val();
                             self.doptrf[l].c2.next = self.setup.c2[p * $L + l].val();
@@ -316,6 +326,9 @@ macro_rules! dop_unit_fold {
                             self.doptrf[l].e.next = self.held_e[(p * $L + l + $H) % $K].q.val();
                         }
                     }
+                    self.klmsel.j0[l].next = self.c_j0[l].val();
+                    self.klmsel.j1[l].next = self.c_j1[l].val();
+                    self.klmsel.j2[l].next = self.c_j2[l].val();
                     self.doptrf[l].d0.next = self.klmsel.y0[l].val();
                     self.doptrf[l].d1.next = self.klmsel.y1[l].val();
                     self.doptrf[l].d2.next = self.klmsel.y2[l].val();
