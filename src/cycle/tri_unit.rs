@@ -15,7 +15,7 @@ use crate::chip::params::Params;
 use crate::fold;
 use crate::golden::tri_unit::TriUnit as Values;
 use crate::golden::tri_unit::TriResult;
-use crate::golden::memory::{ObjectImage, TriWord};
+use crate::golden::memory::{Held, ObjectImage, TriWord};
 
 /// A verdict at TRI_UNIT's output: the triangle pair (A's, B's) and the result.
 #[derive(Clone, Copy, Debug)]
@@ -37,35 +37,13 @@ impl TriOut {
     }
 }
 
-/// Lines of [`Words`]: triangle words made from the f64 triangle are costly (M_B's
-/// inverse), and consecutive leaf pairs mostly share a triangle or a near one.
-const WORD_LINES: usize = 64;
-
-/// The triangle words of one object used last, direct-mapped by triangle index (what the
-/// chip's triangle words held save the memory, this saves the host's arithmetic): each
-/// word is [`ObjectImage::tri`]'s, only not made again while it stays.
-struct Words<'a> {
-    image: &'a ObjectImage,
-    lines: Vec<Option<(u32, TriWord)>>,
-}
-
-impl<'a> Words<'a> {
-    fn new(image: &'a ObjectImage) -> Self {
-        Words { image, lines: vec![None; WORD_LINES] }
-    }
-
-    fn get(&mut self, t: u32) -> &TriWord {
-        let line = &mut self.lines[t as usize % WORD_LINES];
-        if line.is_none_or(|(held, _)| held != t) {
-            *line = Some((t, self.image.tri(t)));
-        }
-        &line.as_ref().expect("filled").1
-    }
-}
-
 pub struct TriUnit<'a> {
-    a: Words<'a>,
-    b: Words<'a>,
+    a: &'a ObjectImage,
+    b: &'a ObjectImage,
+    /// The triangle words used last, as the golden model holds them: made from the f64
+    /// triangle (M_B's inverse) only when not held.
+    words_a: Held<TriWord>,
+    words_b: Held<TriWord>,
     values: Values<'a>,
     /// Pairs taken and not given out.
     open: Delay<TriOut>,
@@ -84,7 +62,7 @@ impl<'a> TriUnit<'a> {
             ii => fold::tri_unit_latency(&fold::tri_unit_plan(ii as usize)?) as u32,
         };
         let open = Delay::with_capacity(latency, p.tri_fifo as usize);
-        Ok(TriUnit { a: Words::new(a), b: Words::new(b), values, open, interval: p.tri_interval as u64, first: None })
+        Ok(TriUnit { a, b, words_a: Held::default(), words_b: Held::default(), values, open, interval: p.tri_interval as u64, first: None })
     }
 
     /// `in_ready` in cycle `now`: the result FIFO has room for one more pair, and the
@@ -101,7 +79,8 @@ impl<'a> TriUnit<'a> {
     /// Takes the pair of triangles `(ta, tb)` at edge `now`.
     pub fn take(&mut self, now: u64, ta: u32, tb: u32) {
         self.first.get_or_insert(now);
-        let res = self.values.test(ta, self.a.get(ta), tb, self.b.get(tb));
+        let (a, b) = (self.a, self.b);
+        let res = self.values.test(ta, self.words_a.get(ta, || a.tri(ta)), tb, self.words_b.get(tb, || b.tri(tb)));
         self.open.push(now, TriOut { a: ta, b: tb, res });
     }
 
