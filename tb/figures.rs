@@ -6,7 +6,7 @@
 
 use collision_chip::chip::config::DopRounding;
 use collision_chip::chip::preset::Preset;
-use collision_chip::chip::timing::{Clock, Technology};
+use collision_chip::chip::timing::{Clock, Folds, Technology};
 use collision_chip::format::Format;
 use collision_chip::report::accuracy;
 use collision_chip::report::figures::{generate, Plan};
@@ -54,7 +54,7 @@ fn figures_data_hold_what_the_papers_compare() {
     let (cols, fig6) = csv(&out.join("date05_fig6_cycles.csv"));
     assert_eq!(cols, ["mesh", "triangles", "distance", "queries", "order", "mode", "pairs", "cycles", "cycles_max", "period_ns", "chip_us", "words"]);
     // DATE'05's figures on the date05 preset, at its configuration's measured period
-    let period = |p: Preset| Clock::of(Technology::Osu018, &p.chip(), 1, p).unwrap().period_ns;
+    let period = |p: Preset| Clock::of(Technology::Osu018, &p.chip(), Folds::NONE, p).unwrap().period_ns;
     let close = |a: f64, b: f64| (a - b).abs() <= 1e-9 * a.abs().max(b.abs()).max(1.0);
     for r in &fig6 {
         assert_eq!(num(r, "period_ns"), period(Preset::Date05), "{r:?}");

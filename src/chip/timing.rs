@@ -91,13 +91,28 @@ impl Table {
     /// um^2 of the units a configuration changes, its DOP unit and TRI_UNIT (as the area
     /// study's cells); `None` unless both are measured.
     pub fn datapath_area_um2(&self, cfg: &ChipConfig) -> Option<f64> {
-        Some(self.areas.get(&dop_unit(cfg))? + self.areas.get(&tri_unit(cfg, 1))?)
+        Some(self.areas.get(&dop_unit(cfg, 1))? + self.areas.get(&tri_unit(cfg, 1))?)
     }
 }
 
-/// The DOP unit's name: k DOPTRF lanes in the DOP format and rounding.
-fn dop_unit(cfg: &ChipConfig) -> String {
-    format!("dop_unit_k{}_{}_{}", cfg.k, rtl::format_tag(cfg.format.dop), rtl::rounding_tag(cfg.dop_rounding.op()))
+/// The DOP unit's name: k DOPTRF lanes in the DOP format and rounding, or (`dop_interval`
+/// > 1) k/ii lanes taking a pair every `dop_interval` clocks (`rtl::dop_unit_fold`).
+fn dop_unit(cfg: &ChipConfig, dop_interval: u32) -> String {
+    let fold = if dop_interval > 1 { format!("fold{dop_interval}_") } else { String::new() };
+    format!("dop_unit_{fold}k{}_{}_{}", cfg.k, rtl::format_tag(cfg.format.dop), rtl::rounding_tag(cfg.dop_rounding.op()))
+}
+
+/// The clocks between the pairs a folded unit takes (1: unfolded): the cycle model's
+/// `[timing] tri_interval` and `dop_interval`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Folds {
+    pub tri: u32,
+    pub dop: u32,
+}
+
+impl Folds {
+    /// Both units unfolded.
+    pub const NONE: Folds = Folds { tri: 1, dop: 1 };
 }
 
 /// TRI_UNIT's name: two T.CHECKs in T.CHECK's format and rounding, or (`tri_interval` > 1)
@@ -111,15 +126,16 @@ fn tri_unit(cfg: &ChipConfig, tri_interval: u32) -> String {
 /// tables: the DOP datapath's (FP multiplier and adder, DOPTRF lane, DOP unit of k lanes:
 /// DATE'05 Eq. 10) in the DOP format and rounding; T.CHECK's (its FP units, the certificate's
 /// scaler, T.CHECK, TRI_UNIT: §4.2) in T.CHECK's format and rounding, or the folded TRI_UNIT
-/// that takes a pair every `tri_interval` clocks; D_CNTR's pair queue (§4.3); and the whole
+/// that takes a pair every `folds.tri` clocks (the DOP unit likewise, `folds.dop`); D_CNTR's pair queue (§4.3); and the whole
 /// chip where the RTL builds this configuration. A folded configuration also counts the
 /// unfolded chip: its slowest path is in the glue the two share (D_CNTR's look-ahead into
 /// the pair queue, docs/figures/timing_config.csv), so it bounds the folded chip's glue until
 /// the folded chip has a row of its own.
-pub fn units(cfg: &ChipConfig, tri_interval: u32) -> Vec<String> {
+pub fn units(cfg: &ChipConfig, folds: Folds) -> Vec<String> {
+    let tri_interval = folds.tri;
     let (d, dr) = (rtl::format_tag(cfg.format.dop), rtl::rounding_tag(cfg.dop_rounding.op()));
     let (t, tr) = (rtl::format_tag(cfg.format.tri), rtl::rounding_tag(cfg.tri_rounding));
-    let mut u = vec![format!("fp_mul_{d}_{dr}"), format!("fp_add_{d}_{dr}"), format!("doptrf_{d}_{dr}"), dop_unit(cfg)];
+    let mut u = vec![format!("fp_mul_{d}_{dr}"), format!("fp_add_{d}_{dr}"), format!("doptrf_{d}_{dr}"), dop_unit(cfg, folds.dop)];
     let tcheck = (tri_interval == 1).then(|| format!("tcheck_{t}_{tr}"));
     for name in [format!("fp_mul_{t}_{tr}"), format!("fp_add_{t}_{tr}"), format!("fp_scale_{t}")].into_iter().chain(tcheck).chain([tri_unit(cfg, tri_interval)]) {
         if !u.contains(&name) {
@@ -173,27 +189,26 @@ impl Clock {
         Clock { period_ns: 1000.0 / mhz, technology: None, table: None, slowest: None, not_measured: vec![], assumed: Some(why) }
     }
 
-    /// The configuration's period in `tech` with TRI_UNIT taking a pair every `tri_interval`
-    /// clocks: the slowest of its measured [`units`] (or the preset's paper clock). An error
+    /// The configuration's period in `tech` with its units folded as `folds`: the slowest of its measured [`units`] (or the preset's paper clock). An error
     /// if the table measured none of them.
-    pub fn of(tech: Technology, cfg: &ChipConfig, tri_interval: u32, preset: Preset) -> Result<Clock, String> {
+    pub fn of(tech: Technology, cfg: &ChipConfig, folds: Folds, preset: Preset) -> Result<Clock, String> {
         let Some((file, text, what)) = tech.table() else {
             let mut c = Clock::assumed(preset.clock_mhz(), format!("the paper's {} MHz (preset {}), assumed", preset.clock_mhz(), preset.name()));
             c.technology = Some(tech);
             return Ok(c);
         };
         let table = Table::parse(text, file)?;
-        let mut c = Clock::measured(&table, cfg, tri_interval).ok_or_else(|| {
-            format!("{file} ({what}) measures none of this configuration's units ({}): run scripts/timing-study.sh, or set [timing] technology = \"paper\" or clock_mhz", units(cfg, tri_interval).join(", "))
+        let mut c = Clock::measured(&table, cfg, folds).ok_or_else(|| {
+            format!("{file} ({what}) measures none of this configuration's units ({}): run scripts/timing-study.sh, or set [timing] technology = \"paper\" or clock_mhz", units(cfg, folds).join(", "))
         })?;
         (c.technology, c.table) = (Some(tech), Some(file));
         Ok(c)
     }
 
     /// The slowest of `cfg`'s units that `table` measured, the others named as not measured.
-    pub fn measured(table: &Table, cfg: &ChipConfig, tri_interval: u32) -> Option<Clock> {
+    pub fn measured(table: &Table, cfg: &ChipConfig, folds: Folds) -> Option<Clock> {
         let (mut slowest, mut not_measured) = (None::<(String, f64)>, vec![]);
-        for u in units(cfg, tri_interval) {
+        for u in units(cfg, folds) {
             match table.periods.get(&u) {
                 None => not_measured.push(u),
                 Some(&ns) if slowest.as_ref().is_none_or(|s| ns > s.1) => slowest = Some((u, ns)),
@@ -240,19 +255,19 @@ mod tests {
                     tcheck_e8m15_rne,1,,x\n";
         let t = Table::parse(text, "t.csv").unwrap();
         let cfg = ChipConfig { k: 6, format: Formats::from(Format::REDUCED), dop_rounding: DopRounding::Outward, ..Default::default() };
-        let c = Clock::measured(&t, &cfg, 1).unwrap();
+        let c = Clock::measured(&t, &cfg, Folds::NONE).unwrap();
         // DOP: mul 6.5, add 7.0 (ru); T.CHECK: add 8.0 (rne); queue 4.0; b32's 30 not ours
         assert_eq!((c.period_ns, c.slowest.as_deref()), (8.0, Some("fp_add_e8m15_rne")));
         assert!(c.not_measured.contains(&"tcheck_e8m15_rne".to_string()) && c.not_measured.contains(&"chip_e8m15_k6".to_string()));
         assert!(!c.not_measured.iter().any(|u| u.starts_with("fp_mul") || u.starts_with("fp_add")), "{:?}", c.not_measured);
         // columns found by name, in any order; Fmax where no period is given
         let t = Table::parse("fmax_mhz,unit\n125,pair_queue_n4\n", "t.csv").unwrap();
-        assert_eq!(Clock::measured(&t, &cfg, 1).unwrap().period_ns, 8.0);
-        assert!(Clock::measured(&Table::parse("unit,min_period_ns\nfp_mul_b32_ru,3\n", "t").unwrap(), &cfg, 1).is_none());
+        assert_eq!(Clock::measured(&t, &cfg, Folds::NONE).unwrap().period_ns, 8.0);
+        assert!(Clock::measured(&Table::parse("unit,min_period_ns\nfp_mul_b32_ru,3\n", "t").unwrap(), &cfg, Folds::NONE).is_none());
         // the whole chip, where measured, is one of its units: its control and the paths
         // between units count
         let t = Table::parse("unit,min_period_ns\nfp_add_e8m15_rne,8\nchip_e8m15_k6,9\n", "t").unwrap();
-        assert_eq!(Clock::measured(&t, &cfg, 1).unwrap().slowest.as_deref(), Some("chip_e8m15_k6"));
+        assert_eq!(Clock::measured(&t, &cfg, Folds::NONE).unwrap().slowest.as_deref(), Some("chip_e8m15_k6"));
     }
 
     #[test]
@@ -267,7 +282,7 @@ mod tests {
     #[test]
     fn a_folded_configuration_counts_the_folded_unit_and_both_chips() {
         let cfg = ChipConfig { k: 6, format: Formats::from(Format::REDUCED), dop_rounding: DopRounding::Outward, ..Default::default() };
-        let u = units(&cfg, 16);
+        let u = units(&cfg, Folds { tri: 16, dop: 1 });
         for name in ["tri_unit_fold16_e8m15_rne", "chip_e8m15_k6", "chip_e8m15_k6_fold16"] {
             assert!(u.contains(&name.to_string()), "{name} not in {u:?}");
         }
@@ -277,19 +292,20 @@ tri_unit_e8m15_rne,20
 tri_unit_fold16_e8m15_rne,9
 chip_e8m15_k6,8
 ", "t").unwrap();
-        let c = Clock::measured(&t, &cfg, 16).unwrap();
+        let c = Clock::measured(&t, &cfg, Folds { tri: 16, dop: 1 }).unwrap();
         assert_eq!((c.period_ns, c.slowest.as_deref()), (9.0, Some("tri_unit_fold16_e8m15_rne")));
         assert!(c.not_measured.contains(&"chip_e8m15_k6_fold16".to_string()), "{:?}", c.not_measured);
-        assert_eq!(units(&cfg, 8).iter().filter(|n| n.starts_with("chip_")).collect::<Vec<_>>(), ["chip_e8m15_k6", "chip_e8m15_k6_fold8"]);
+        assert!(units(&cfg, Folds { tri: 1, dop: 6 }).contains(&"dop_unit_fold6_k6_e8m15_ru".to_string()));
+        assert_eq!(units(&cfg, Folds { tri: 8, dop: 1 }).iter().filter(|n| n.starts_with("chip_")).collect::<Vec<_>>(), ["chip_e8m15_k6", "chip_e8m15_k6_fold8"]);
     }
 
     /// The checked-in tables parse, and the paper clock is the preset's.
     #[test]
     fn technologies() {
         let cfg = ChipConfig::default();
-        let osu = Clock::of(Technology::Osu018, &cfg, 1, Preset::Rtl).unwrap();
+        let osu = Clock::of(Technology::Osu018, &cfg, Folds::NONE, Preset::Rtl).unwrap();
         assert!(osu.source().contains("docs/figures/timing.csv"), "{}", osu.source());
-        let paper = Clock::of(Technology::Paper, &cfg, 1, Preset::Wscg03).unwrap();
+        let paper = Clock::of(Technology::Paper, &cfg, Folds::NONE, Preset::Wscg03).unwrap();
         assert_eq!(paper.mhz(), 266.0);
         assert!(paper.source().contains("assumed"));
     }

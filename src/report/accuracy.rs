@@ -7,7 +7,7 @@
 use crate::chip::config::{ChipConfig, DopRounding, Formats};
 use crate::chip::memory::Memory;
 use crate::chip::preset::Preset;
-use crate::chip::timing::{self, Clock, Technology};
+use crate::chip::timing::{self, Clock, Folds, Technology};
 use crate::cycle::{self, drive::Reader};
 use crate::chip::params::Params;
 use crate::dop::tree::Tri;
@@ -240,7 +240,7 @@ pub fn study(plan: &Plan, index: usize, tris: &[Tri], shard: Shard, progress: im
     let mut chips: Vec<Chip> = vec![];
     let mut chip_of = vec![];
     for &(preset, cfg, _) in &configs {
-        let clock = Clock::of(plan.technology, &cfg, 1, preset)?;
+        let clock = Clock::of(plan.technology, &cfg, Folds::NONE, preset)?;
         rows.push(Row { mesh: mesh.clone(), memory: preset, k: cfg.k, format: cfg.format, dop_rounding: cfg.dop_rounding, period_ns: clock.period_ns, clock: clock.source(), sums: Sums::default(), host: HostSums::default() });
         // one image per distinct chip (the presets share some)
         chip_of.push(match chips.iter().position(|c| c.cfg == cfg) {

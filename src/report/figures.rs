@@ -26,7 +26,7 @@
 use crate::chip::config::ChipConfig;
 use crate::chip::params::Params;
 use crate::chip::preset::Preset;
-use crate::chip::timing::{Clock, Technology};
+use crate::chip::timing::{Clock, Folds, Technology};
 use crate::cycle::{self, drive::Reader};
 use crate::chip::wscg03::StackParams;
 use crate::measure::{mean_seconds, parallel_map};
@@ -115,7 +115,7 @@ pub struct ChipRun {
 impl ChipRun {
     pub fn of(preset: Preset, technology: Technology) -> Result<ChipRun, String> {
         let cfg = preset.chip();
-        let clock = Clock::of(technology, &cfg, 1, preset)?;
+        let clock = Clock::of(technology, &cfg, Folds::NONE, preset)?;
         let params = Params { queue_entries: QUEUE_ENTRIES, ..preset.params() };
         Ok(ChipRun { preset, cfg, params, clock_source: clock.source(), clock })
     }

@@ -114,7 +114,7 @@ use crate::chip::config::ChipConfig;
 use crate::chip::memory::{Ddr, MemTiming, Memory};
 use crate::chip::params::Params;
 use crate::chip::preset::Preset;
-use crate::chip::timing::{Clock, Technology};
+use crate::chip::timing::{Clock, Folds, Technology};
 use crate::chip::reg::Mode;
 use crate::chip::wscg03::{Architecture, StackParams};
 use crate::pose::{sweep_poses, Pose, ScenePose, Sweep};
@@ -218,12 +218,12 @@ fn timing(keys: Option<Keys>, text: &str, preset: Preset) -> Result<(Params, Opt
 
 /// The clock: an assumed `clock_mhz`, else `technology`'s period for the configuration
 /// (default: measured on OSU 0.18 um).
-fn clock(cfg: &ChipConfig, tri_interval: u32, preset: Preset, technology: Option<Technology>, clock_mhz: Option<f64>) -> Result<Clock, String> {
+fn clock(cfg: &ChipConfig, folds: Folds, preset: Preset, technology: Option<Technology>, clock_mhz: Option<f64>) -> Result<Clock, String> {
     match (clock_mhz, technology) {
         (Some(_), Some(_)) => Err("[timing] give clock_mhz (an assumed clock) or technology (a measured period), not both".into()),
         (Some(mhz), None) if !(mhz.is_finite() && mhz > 0.0) => Err(format!("[timing] clock_mhz must be a positive number of MHz, not {mhz}")),
         (Some(mhz), None) => Ok(Clock::assumed(mhz, format!("the scene's clock_mhz = {mhz}, assumed"))),
-        (None, t) => Clock::of(t.unwrap_or_default(), cfg, tri_interval, preset),
+        (None, t) => Clock::of(t.unwrap_or_default(), cfg, folds, preset),
     }
 }
 
@@ -558,11 +558,8 @@ impl Scene {
         }
         // the command line's technology replaces the scene's clock
         let (technology, clock_mhz) = if flags.technology.is_some() { (flags.technology, None) } else { (technology, clock_mhz) };
-        let mut clock = clock(&cfg, params.tri_interval, preset, technology, clock_mhz).map_err(err)?;
-        if params.dop_interval > 1 && clock.assumed.is_none() {
-            // the timing tables measure the unfolded DOP unit and the chips built on it
-            clock.not_measured.push(format!("the folded DOP unit at dop_interval {} (the period is the unfolded chip's, assumed for it)", params.dop_interval));
-        }
+        let folds = Folds { tri: params.tri_interval, dop: params.dop_interval };
+        let clock = clock(&cfg, folds, preset, technology, clock_mhz).map_err(err)?;
         Ok(Scene {
             name: name.to_string(),
             objects: f.objects,
@@ -813,7 +810,7 @@ mod tests {
         let base = "[objects]\na = \"sphere:12\"\nb = \"sphere:12\"\n[[pose]]\nrot_deg=[0,0,0]\nt=[0,0,0]\n[chip]\nk = 6\nformat = \"reduced\"\n";
         let parse = |t: &str| Scene::parse(&format!("{base}{t}"), "s");
         let m = parse("").unwrap();
-        assert_eq!(m.clock, Clock::of(Technology::Osu018, &m.cfg, 1, Preset::Rtl).unwrap());
+        assert_eq!(m.clock, Clock::of(Technology::Osu018, &m.cfg, Folds::NONE, Preset::Rtl).unwrap());
         assert!(m.configuration().contains("measured, OSU 0.18 um, docs/figures/timing.csv, slowest unit"), "{}", m.configuration());
         assert_eq!(parse("[timing]\ntechnology = \"paper\"").unwrap().clock.mhz(), 800.0);
         let e = parse("[timing]\ntechnology = \"paper\"\nclock_mhz = 3").unwrap_err();
