@@ -86,6 +86,14 @@ impl Params {
         }
     }
 
+    /// The folded DOP unit runs k / `dop_interval` lanes: Err unless the interval divides k.
+    pub fn check_dop_interval(&self, k: usize) -> Result<(), String> {
+        if k % self.dop_interval.max(1) as usize != 0 {
+            return Err(format!("dop_interval {} does not divide k = {k} (the folded DOP unit runs k / dop_interval lanes): pick a divisor of k", self.dop_interval));
+        }
+        Ok(())
+    }
+
     /// Errors name a parameter out of range.
     pub fn check(&self) -> Result<(), String> {
         let nonzero = [

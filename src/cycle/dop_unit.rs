@@ -40,9 +40,7 @@ impl<'a> DopUnit<'a> {
     /// The DOP unit with `p`'s interval and latency (the folded unit's for an interval over 1)
     /// for k directions; Err if the interval does not divide k.
     pub fn new(a: &'a ObjectImage, b: &'a ObjectImage, values: TransformCache<'a>, p: &Params, k: usize) -> Result<Self, String> {
-        if k % p.dop_interval as usize != 0 {
-            return Err(format!("dop_interval {} does not divide k = {k} (the folded DOP unit runs k / dop_interval lanes)", p.dop_interval));
-        }
+        p.check_dop_interval(k)?;
         Ok(DopUnit { a, b, values, pipe: Delay::new(p.dop_unit_latency()), interval: p.dop_interval as u64, first: None })
     }
 

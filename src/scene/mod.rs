@@ -550,6 +550,7 @@ impl Scene {
         let (mut params, technology, clock_mhz) = timing(f.timing, text, preset).map_err(|e| format!("{name}:{e}"))?;
         params.memory = f.memory.memory(preset.params().memory).map_err(err)?;
         params.check().map_err(|e| err(format!("[timing] / [memory]: {e}")))?;
+        params.check_dop_interval(cfg.k).map_err(|e| err(format!("[timing] {e}")))?;
         if architecture == Architecture::Wscg03 && params.tri_interval != 1 {
             return Err(err("[timing] tri_interval folds DATE'05's TRI_UNIT; WSCG'03's chip takes its Triangle Unit's interval from [stack_engine] tri_interval".into()));
         }
@@ -706,6 +707,7 @@ mod tests {
             ("tri_interval = 34", "not 34"),
             ("tri_interval = 0", "not 0"),
             ("tri_interval = 4\ntri_latency = 60", "tri_latency 60 is the unfolded TRI_UNIT's"),
+            ("dop_interval = 5", "dop_interval 5 does not divide k = "),
         ] {
             let e = Scene::parse(&format!("{base}[timing]\n{keys}\n"), "s").unwrap_err();
             assert!(e.contains(want), "{e}");
