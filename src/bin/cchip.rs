@@ -3,7 +3,7 @@
 
 use clap::{Args, Parser, Subcommand};
 use collision_chip::chip::preset::Preset;
-use collision_chip::chip::timing::Technology;
+use collision_chip::chip::timing::{Folds, Technology};
 use collision_chip::chip::wscg03::Architecture;
 use collision_chip::chip::config::{ChipConfig, DopRounding, Formats};
 use collision_chip::chip::memory::Memory;
@@ -200,6 +200,15 @@ struct AccuracyArgs {
     /// the study's own arguments are read from the files.
     #[arg(long, value_name = "FILES", num_args = 1..)]
     merge: Vec<PathBuf>,
+    /// TRI_UNIT folded: the clocks between the pairs it takes, comma separated (1:
+    /// unfolded; 2 to 32, even: one T.CHECK folded for half of it, docs/ARCHITECTURE.md
+    /// "Folded TRI_UNIT"). Each runs with each --dop-intervals: what area costs in time.
+    #[arg(long, value_delimiter = ',', default_value = "1")]
+    tri_intervals: Vec<u32>,
+    /// The DOP unit folded: the clocks between the node pairs it takes, comma separated
+    /// (1: unfolded; ii dividing k: k / ii DOPTRF lanes in ii passes).
+    #[arg(long, value_delimiter = ',', default_value = "1")]
+    dop_intervals: Vec<u32>,
     /// Yosys cells per unit (`unit,cells`, as scripts/area-study.sh writes
     /// docs/figures/area_cells.csv): adds each configuration's cells (DOP unit + TRI_UNIT) to
     /// the table and, with --plot, the plot of clocks against cells.
@@ -370,6 +379,7 @@ fn accuracy(a: AccuracyArgs) -> Result<(), String> {
             sweep: Sweep { distances: a.distances.clone(), orientations: a.orientations, seed: a.seed },
             bus_bits: a.bus_bits,
             technology: a.technology,
+            folds: a.tri_intervals.iter().flat_map(|&tri| a.dop_intervals.iter().map(move |&dop| Folds { tri, dop })).collect(),
         };
         let shard = a.shard.unwrap_or(accuracy::Shard::ALL);
         let items = a.meshes.len().saturating_mul(a.distances.len()).saturating_mul(a.orientations);

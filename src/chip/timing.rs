@@ -88,23 +88,23 @@ impl Table {
         tech.table().map(|(file, text, _)| Table::parse(text, file)).transpose()
     }
 
-    /// um^2 of the units a configuration changes, its DOP unit and TRI_UNIT (as the area
-    /// study's cells); `None` unless both are measured.
-    pub fn datapath_area_um2(&self, cfg: &ChipConfig) -> Option<f64> {
-        Some(self.areas.get(&dop_unit(cfg, 1))? + self.areas.get(&tri_unit(cfg, 1))?)
+    /// um^2 of the units a configuration changes, its DOP unit and TRI_UNIT, folded as
+    /// `folds` (as the area study's cells); `None` unless both are measured.
+    pub fn datapath_area_um2(&self, cfg: &ChipConfig, folds: Folds) -> Option<f64> {
+        Some(self.areas.get(&dop_unit(cfg, folds.dop))? + self.areas.get(&tri_unit(cfg, folds.tri))?)
     }
 }
 
 /// The DOP unit's name: k DOPTRF lanes in the DOP format and rounding, or (`dop_interval`
 /// > 1) k/ii lanes taking a pair every `dop_interval` clocks (`rtl::dop_unit_fold`).
-fn dop_unit(cfg: &ChipConfig, dop_interval: u32) -> String {
+pub fn dop_unit(cfg: &ChipConfig, dop_interval: u32) -> String {
     let fold = if dop_interval > 1 { format!("fold{dop_interval}_") } else { String::new() };
     format!("dop_unit_{fold}k{}_{}_{}", cfg.k, rtl::format_tag(cfg.format.dop), rtl::rounding_tag(cfg.dop_rounding.op()))
 }
 
 /// The clocks between the pairs a folded unit takes (1: unfolded): the cycle model's
 /// `[timing] tri_interval` and `dop_interval`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
 pub struct Folds {
     pub tri: u32,
     pub dop: u32,
@@ -115,9 +115,15 @@ impl Folds {
     pub const NONE: Folds = Folds { tri: 1, dop: 1 };
 }
 
+impl Default for Folds {
+    fn default() -> Folds {
+        Folds::NONE
+    }
+}
+
 /// TRI_UNIT's name: two T.CHECKs in T.CHECK's format and rounding, or (`tri_interval` > 1)
 /// one folded T.CHECK taking a pair every `tri_interval` clocks (`rtl::tri_unit_fold`).
-fn tri_unit(cfg: &ChipConfig, tri_interval: u32) -> String {
+pub fn tri_unit(cfg: &ChipConfig, tri_interval: u32) -> String {
     let fold = if tri_interval > 1 { format!("fold{tri_interval}_") } else { String::new() };
     format!("tri_unit_{fold}{}_{}", rtl::format_tag(cfg.format.tri), rtl::rounding_tag(cfg.tri_rounding))
 }

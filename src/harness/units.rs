@@ -405,8 +405,39 @@ fn area_units() -> Vec<(String, Text)> {
     }
     units.push((tri_unit_name(Format::BINARY32).expect("an RTL format"), Box::new(|| crate::rtl::b32::verilog_tri_unit(Rounding::NearestEven))));
     units.push((tri_unit_name(Format::REDUCED).expect("an RTL format"), Box::new(|| crate::rtl::e8m15::verilog_tri_unit(Rounding::NearestEven))));
+    units.extend(area_fold_units());
     units
 }
+
+/// TRI_UNIT folded at every interval of the fold study (`AREA_TRI_FOLDS`) and the DOP unit
+/// folded at every (k, interval) the RTL stamps out (`AREA_DOP_FOLDS`), in both formats and
+/// DOP roundings, named as [`crate::chip::timing::units`] names them.
+fn area_fold_units() -> Vec<(String, Text)> {
+    use crate::chip::config::{ChipConfig, DopRounding};
+    use crate::chip::timing::{dop_unit, tri_unit};
+    let mut units: Vec<(String, Text)> = vec![];
+    for fmt in [Format::BINARY32, Format::REDUCED] {
+        let b32 = fmt == Format::BINARY32;
+        for ii in AREA_TRI_FOLDS {
+            let cfg = ChipConfig { format: fmt.into(), ..Default::default() };
+            let v = if b32 { crate::rtl::b32::verilog_tri_unit_fold } else { crate::rtl::e8m15::verilog_tri_unit_fold };
+            units.push((tri_unit(&cfg, ii as u32), Box::new(move || v(ii, Rounding::NearestEven).expect("the fold study's intervals fold"))));
+        }
+        for (k, ii) in AREA_DOP_FOLDS {
+            for dop_rounding in [DopRounding::Outward, DopRounding::NearestEven] {
+                let cfg = ChipConfig { k, format: fmt.into(), dop_rounding, ..Default::default() };
+                units.push((dop_unit(&cfg, ii as u32), Box::new(move || dop_unit_fold_verilog(ii, k, fmt, dop_rounding.op()).expect("the RTL stamps this fold"))));
+            }
+        }
+    }
+    units
+}
+
+/// TRI_UNIT's pair intervals in the area study (`rtl::*::TriUnitFold`).
+const AREA_TRI_FOLDS: [usize; 5] = [2, 4, 8, 16, 32];
+
+/// The DOP unit's (k, pair interval) in the area study: every `rtl::*::DopUnit<k>Fold<ii>`.
+const AREA_DOP_FOLDS: [(usize, usize); 8] = [(6, 2), (6, 3), (6, 6), (24, 4), (24, 6), (24, 8), (24, 12), (24, 24)];
 
 /// Writes `<dir>/<unit>.v` for every unit of the area study; returns the paths written.
 pub fn write_area_verilog(dir: &Path) -> std::io::Result<Vec<String>> {

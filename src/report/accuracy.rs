@@ -23,7 +23,7 @@ use serde::{Deserialize, Serialize};
 use std::fmt::Write;
 
 /// What a study runs: each mesh against a copy of itself over the sweep, in every memory
-/// preset x k x format x DOP rounding, at `technology`'s clock.
+/// preset x k x format x DOP rounding x fold, at `technology`'s clock.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Plan {
     pub meshes: Vec<String>,
@@ -35,6 +35,14 @@ pub struct Plan {
     /// The ideal memory's bus (the `rtl` preset): a word moves in ceil(bits / bus_bits) clocks.
     pub bus_bits: Option<u32>,
     pub technology: Technology,
+    /// TRI_UNIT's and the DOP unit's pair intervals (issue 33: what area costs in time);
+    /// `[Folds::NONE]` (both unfolded) in studies written before folds.
+    #[serde(default = "unfolded")]
+    pub folds: Vec<Folds>,
+}
+
+fn unfolded() -> Vec<Folds> {
+    vec![Folds::NONE]
 }
 
 impl Plan {
@@ -50,7 +58,11 @@ impl Plan {
             for &k in &self.ks {
                 for &format in &self.formats {
                     for &dop_rounding in &self.roundings {
-                        out.push((preset, ChipConfig { k, format, dop_rounding, ..preset.chip() }, params));
+                        for &f in &self.folds {
+                            let params = Params { tri_interval: f.tri, dop_interval: f.dop, ..params };
+                            params.check().and_then(|_| params.check_dop_interval(k)).map_err(|e| format!("k = {k}, TRI_UNIT interval {}, DOP interval {}: {e}", f.tri, f.dop))?;
+                            out.push((preset, ChipConfig { k, format, dop_rounding, ..preset.chip() }, params));
+                        }
                     }
                 }
             }
@@ -104,6 +116,9 @@ pub struct Row {
     pub k: usize,
     pub format: Formats,
     pub dop_rounding: DopRounding,
+    /// The pair intervals of TRI_UNIT and the DOP unit (1: unfolded).
+    #[serde(default)]
+    pub folds: Folds,
     /// The clock period and where it came from ([`Clock::source`]).
     pub period_ns: f64,
     pub clock: String,
@@ -121,6 +136,11 @@ pub struct HostSums {
 }
 
 impl Row {
+    /// The chip this row ran: its memory preset's with the row's k, formats and DOP rounding.
+    pub fn chip(&self) -> ChipConfig {
+        ChipConfig { k: self.k, format: self.format, dop_rounding: self.dop_rounding, ..self.memory.chip() }
+    }
+
     fn per_query(&self, x: f64) -> f64 {
         x / self.sums.queries.max(1) as f64
     }
@@ -239,9 +259,10 @@ pub fn study(plan: &Plan, index: usize, tris: &[Tri], shard: Shard, progress: im
     let mut rows = vec![];
     let mut chips: Vec<Chip> = vec![];
     let mut chip_of = vec![];
-    for &(preset, cfg, _) in &configs {
-        let clock = Clock::of(plan.technology, &cfg, Folds::NONE, preset)?;
-        rows.push(Row { mesh: mesh.clone(), memory: preset, k: cfg.k, format: cfg.format, dop_rounding: cfg.dop_rounding, period_ns: clock.period_ns, clock: clock.source(), sums: Sums::default(), host: HostSums::default() });
+    for &(preset, cfg, params) in &configs {
+        let folds = Folds { tri: params.tri_interval, dop: params.dop_interval };
+        let clock = Clock::of(plan.technology, &cfg, folds, preset)?;
+        rows.push(Row { mesh: mesh.clone(), memory: preset, k: cfg.k, format: cfg.format, dop_rounding: cfg.dop_rounding, folds, period_ns: clock.period_ns, clock: clock.source(), sums: Sums::default(), host: HostSums::default() });
         // one image per distinct chip (the presets share some)
         chip_of.push(match chips.iter().position(|c| c.cfg == cfg) {
             Some(i) => i,
@@ -326,7 +347,7 @@ pub fn merge(files: Vec<ShardFile>) -> Result<(Plan, Vec<Row>), String> {
         if std::mem::replace(&mut seen[f.shard.k - 1], true) {
             return Err(format!("--merge: shard {}/{n} given twice", f.shard.k));
         }
-        let same = |a: &Row, b: &Row| (&a.mesh, a.memory, a.k, a.format, a.dop_rounding) == (&b.mesh, b.memory, b.k, b.format, b.dop_rounding);
+        let same = |a: &Row, b: &Row| (&a.mesh, a.memory, a.k, a.format, a.dop_rounding, a.folds) == (&b.mesh, b.memory, b.k, b.format, b.dop_rounding, b.folds);
         if f.rows.len() != rows.len() || !f.rows.iter().zip(&rows).all(|(a, b)| same(a, b)) {
             return Err(format!("--merge: shard {}/{n}'s rows are not the study's configurations", f.shard.k));
         }
@@ -346,7 +367,7 @@ pub fn merge(files: Vec<ShardFile>) -> Result<(Plan, Vec<Row>), String> {
 /// query: the chip's at its period, the host's measured, end to end; um^2 where the timing
 /// table measured both units.
 pub fn table(plan: &Plan, rows: &[Row], area: Option<&Area>) -> Result<String, String> {
-    let mut columns = vec!["mesh", "memory", "k", "format", "DOP rounding", "queries", "exact pairs / query", "DOP tests / query", "triangle tests / query", "DOP false positives", "uncertain", "uncertain: degenerate / on plane / bound", "misses", "extra pairs", "memory KiB / query", "cycles / query", "period ns", "chip us", "host us (measured)", "end to end us", "um^2: DOP unit + TRI_UNIT"];
+    let mut columns = vec!["mesh", "memory", "k", "format", "DOP rounding", "pair interval: TRI_UNIT / DOP unit", "queries", "exact pairs / query", "DOP tests / query", "triangle tests / query", "DOP false positives", "uncertain", "uncertain: degenerate / on plane / bound", "misses", "extra pairs", "memory KiB / query", "cycles / query", "period ns", "chip us", "host us (measured)", "end to end us", "um^2: DOP unit + TRI_UNIT"];
     if area.is_some() {
         columns.push("cells: DOP unit + TRI_UNIT");
     }
@@ -355,16 +376,18 @@ pub fn table(plan: &Plan, rows: &[Row], area: Option<&Area>) -> Result<String, S
     for row in rows {
         let r = &row.sums;
         let q = r.queries.max(1) as f64;
-        let cfg = ChipConfig { k: row.k, format: row.format, dop_rounding: row.dop_rounding, ..row.memory.chip() };
-        let um2 = timing.as_ref().and_then(|t| t.datapath_area_um2(&cfg)).map_or("-".into(), |a| format!("{a:.0}"));
+        let cfg = row.chip();
+        let um2 = timing.as_ref().and_then(|t| t.datapath_area_um2(&cfg, row.folds)).map_or("-".into(), |a| format!("{a:.0}"));
         let _ = write!(
             out,
-            "| {} | {} | {} | {} | {} | {} | {:.1} | {:.0} | {:.1} | {:.1}% | {:.2}% | {} / {} / {} | {} | {} | {:.1} | {:.0} | {:.3} | {:.1} | {:.1} | {:.1} | {um2} |",
+            "| {} | {} | {} | {} | {} | {} / {} | {} | {:.1} | {:.0} | {:.1} | {:.1}% | {:.2}% | {} / {} / {} | {} | {} | {:.1} | {:.0} | {:.3} | {:.1} | {:.1} | {:.1} | {um2} |",
             row.mesh,
             row.memory.name(),
             row.k,
             row.format,
             row.dop_rounding,
+            row.folds.tri,
+            row.folds.dop,
             r.queries,
             r.exact_pairs as f64 / q,
             r.dop_tests as f64 / q,
@@ -384,7 +407,7 @@ pub fn table(plan: &Plan, rows: &[Row], area: Option<&Area>) -> Result<String, S
             row.end_to_end_us(),
         );
         if let Some(a) = area {
-            let _ = write!(out, " {} |", a.of(row.k, row.format, row.dop_rounding).map_or("-".into(), |c| c.to_string()));
+            let _ = write!(out, " {} |", a.of(&cfg, row.folds).map_or("-".into(), |c| c.to_string()));
         }
         out.push('\n');
     }
@@ -395,7 +418,8 @@ pub fn table(plan: &Plan, rows: &[Row], area: Option<&Area>) -> Result<String, S
 pub fn clocks(rows: &[Row]) -> String {
     let mut seen: Vec<String> = vec![];
     for r in rows {
-        let line = format!("k = {}, {}, {} DOP rounding: {}", r.k, r.format, r.dop_rounding, r.clock);
+        let fold = if r.folds == Folds::NONE { String::new() } else { format!(", pair intervals {} / {}", r.folds.tri, r.folds.dop) };
+        let line = format!("k = {}, {}, {} DOP rounding{fold}: {}", r.k, r.format, r.dop_rounding, r.clock);
         if !seen.contains(&line) {
             seen.push(line);
         }
@@ -428,11 +452,11 @@ impl Area {
     }
 
     /// Cells of the units a configuration changes: its DOP unit (k lanes, the DOP format and
-    /// rounding) and TRI_UNIT (T.CHECK's format). D_CNTR, the queue and the memory port are
-    /// not counted. `None` where the RTL is not built in a format (e8m10).
-    pub fn of(&self, k: usize, f: Formats, r: DopRounding) -> Option<u64> {
-        use crate::harness::units::{dop_unit_name, tri_unit_name};
-        Some(self.cells.get(&dop_unit_name(k, f.dop, r.op())?)? + self.cells.get(&tri_unit_name(f.tri)?)?)
+    /// rounding) and TRI_UNIT (T.CHECK's format and rounding), each folded as `folds`
+    /// ([`timing::units`]' names). D_CNTR, the queue and the memory port are not counted.
+    /// `None` where the file has no row for one of them (e8m10: the RTL is not built).
+    pub fn of(&self, cfg: &ChipConfig, folds: Folds) -> Option<u64> {
+        Some(self.cells.get(&timing::dop_unit(cfg, folds.dop))? + self.cells.get(&timing::tri_unit(cfg, folds.tri))?)
     }
 }
 
@@ -441,6 +465,12 @@ impl Area {
 fn pareto(points: &[Option<(f64, f64)>]) -> Vec<bool> {
     let beaten = |(x, y): (f64, f64)| points.iter().flatten().any(|&(qx, qy)| qx <= x && qy <= y && (qx, qy) != (x, y));
     points.iter().map(|p| p.is_some_and(|p| !beaten(p))).collect()
+}
+
+/// A point's label for its folds: nothing unfolded, else `, ii T/D` (TRI_UNIT's and the DOP
+/// unit's pair intervals).
+fn fold_label(f: Folds) -> String {
+    if f == Folds::NONE { String::new() } else { format!(", ii {}/{}", f.tri, f.dop) }
 }
 
 /// One panel of end-to-end time per query against `x` for the configurations `mine` (one
@@ -463,7 +493,7 @@ fn front_panel(title: String, x_label: &'static str, log_x: bool, cfgs: &[Row], 
                 color: gi % (PALETTE.len() - 1),
                 style: Style::Points,
                 points: these.iter().filter_map(|&i| point(i)).collect(),
-                labels: these.iter().map(|&i| format!("  k={}", cfgs[i].k)).collect(),
+                labels: these.iter().map(|&i| format!("  k={}{}", cfgs[i].k, fold_label(cfgs[i].folds))).collect(),
             });
         }
     }
@@ -480,7 +510,7 @@ fn front_panel(title: String, x_label: &'static str, log_x: bool, cfgs: &[Row], 
 /// its Pareto front among the configurations with no miss (no other is both faster and
 /// smaller in its x). Both figures carry the same table.
 pub fn figures(rows: &[Row], area: Option<&Area>) -> Vec<Figure> {
-    let key = |r: &Row| (r.memory, r.k, r.format, r.dop_rounding);
+    let key = |r: &Row| (r.memory, r.k, r.format, r.dop_rounding, r.folds);
     let mut cfgs: Vec<Row> = vec![];
     for r in rows {
         match cfgs.iter_mut().find(|c| key(c) == key(r)) {
@@ -495,7 +525,7 @@ pub fn figures(rows: &[Row], area: Option<&Area>) -> Vec<Figure> {
         v
     });
     let uncertain: Vec<Option<f64>> = cfgs.iter().map(|c| Some(100.0 * c.sums.uncertain_rate())).collect();
-    let cells: Vec<Option<u64>> = cfgs.iter().map(|c| area.and_then(|a| a.of(c.k, c.format, c.dop_rounding))).collect();
+    let cells: Vec<Option<u64>> = cfgs.iter().map(|c| area.and_then(|a| a.of(&c.chip(), c.folds))).collect();
     let cells_x: Vec<Option<f64>> = cells.iter().map(|c| c.map(|c| c as f64 / 1e6)).collect();
     // the fronts, each among one memory system's configurations
     let front = |x: &[Option<f64>]| -> Vec<bool> {
@@ -576,6 +606,7 @@ mod tests {
             sweep: Sweep { distances: vec![1.0, 0.5], orientations: 2, seed: 1 },
             bus_bits: None,
             technology: Technology::Osu018,
+            folds: vec![Folds::NONE],
         };
         let load = |m: &str| crate::mesh::resolve(m).map_err(|e| e.to_string())?.scaled_into_unit_cube().map(|m| m.triangles_f64()).map_err(|e| e.to_string());
         let unmeasured = |rows: Vec<Row>| -> Vec<Row> { rows.into_iter().map(|r| Row { host: HostSums::default(), ..r }).collect() };
@@ -590,5 +621,30 @@ mod tests {
         assert_eq!(table(&plan, &serial, None).unwrap(), table(&plan, &merged, None).unwrap());
         assert!(merge(files[..2].to_vec()).unwrap_err().contains("shard 3/3 is missing"));
         assert!(merge(vec![files[0].clone(), files[0].clone(), files[1].clone()]).unwrap_err().contains("given twice"));
+    }
+
+    /// A fold changes the clocks only: the folded rows count the unfolded ones' tests and
+    /// pairs, in no fewer clocks; a DOP interval that does not divide k is refused up front.
+    #[test]
+    fn folds_cost_clocks_and_nothing_else() {
+        let plan = Plan {
+            meshes: vec!["sphere:40".into()],
+            presets: vec![Preset::Date05],
+            ks: vec![6],
+            formats: vec![Formats::from(crate::format::Format::REDUCED)],
+            roundings: vec![DopRounding::Outward],
+            sweep: Sweep { distances: vec![0.5], orientations: 2, seed: 1 },
+            bus_bits: None,
+            technology: Technology::Paper,
+            folds: vec![Folds::NONE, Folds { tri: 32, dop: 6 }],
+        };
+        let load = |m: &str| crate::mesh::resolve(m).map_err(|e| e.to_string())?.scaled_into_unit_cube().map(|m| m.triangles_f64()).map_err(|e| e.to_string());
+        let rows = run(&plan, load, Shard::ALL, || ()).unwrap();
+        let (a, b) = (&rows[0].sums, &rows[1].sums);
+        assert_eq!((rows[0].folds, rows[1].folds), (Folds::NONE, Folds { tri: 32, dop: 6 }));
+        assert_eq!((a.dop_tests, a.tri_tests, a.uncertain), (b.dop_tests, b.tri_tests, b.uncertain));
+        assert!(a.tri_tests > 0 && b.cycles > a.cycles, "{} -> {} clocks", a.cycles, b.cycles);
+        let bad = Plan { folds: vec![Folds { tri: 1, dop: 4 }], ..plan };
+        assert!(run(&bad, load, Shard::ALL, || ()).unwrap_err().contains("k = 6, TRI_UNIT interval 1, DOP interval 4"));
     }
 }
