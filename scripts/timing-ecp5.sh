@@ -7,7 +7,8 @@
 #   YOSYS=yosys NEXTPNR=nextpnr-ecp5)
 # Per unit rtl/<unit>.v (top module `top`):
 #   yosys:   read_verilog; synth_ecp5 -top top -json (flat; multipliers into MULT18X18D)
-#   nextpnr: --85k --out-of-context --freq 100 --seed 1 --timing-allow-fail --report
+#   nextpnr: --85k --out-of-context --freq 100 --seed 1 --timing-allow-fail --router router2
+#            --report
 #            (out of context: no I/O buffers, so a unit is not limited by the package's pins;
 #            its ports are the boundary, as for the ASIC numbers)
 #   fmax_mhz is nextpnr's achieved Fmax of `clock` after routing (register to register, with
@@ -16,11 +17,14 @@
 #   unit,format,rounding,luts,ffs,dsps,fmax_mhz,period_ns,status,seconds,rtl_sha256
 # Work files: target/timing-ecp5/<unit>/ (yosys.log, <unit>.json, nextpnr.log, report.json).
 #
-# Usage: scripts/timing-ecp5.sh [--units PATTERNS] [--out FILE] [--timeout SECONDS]
+# Usage: scripts/timing-ecp5.sh [--units PATTERNS] [--out FILE] [--timeout SECONDS] [--router R]
 #   --units    space-separated shell globs on the unit name (default
 #              'fp_* doptrf_* dop_unit_k6_* pair_queue_* tcheck_e8m15_*'); bigger units run
 #              out of the device or the time
-#   --timeout  per unit, yosys and nextpnr each (default 1200 s)
+#   --timeout  per unit, yosys and nextpnr each (default 1200 s; a unit of 30k LUT4s takes
+#              about 40 minutes on this project's shared 2-core machine, most of it placing)
+#   --router   nextpnr's router (default router2: it routed the k = 6 DOP unit in 11 minutes;
+#              router1 left 230,000 arcs of the folded TRI_UNIT unrouted after 90)
 #   MEM_KB     virtual memory limit per tool run (ulimit -v; default none: YoWASP's WebAssembly
 #              runtime reserves more address space than it uses and fails under 8 GB)
 set -euo pipefail
@@ -33,11 +37,13 @@ MEM_KB=${MEM_KB:-unlimited}
 UNITS='fp_* doptrf_* dop_unit_k6_* pair_queue_* tcheck_e8m15_*'
 OUT=$ROOT/docs/figures/timing_ecp5.csv
 TIMEOUT=1200
+ROUTER=router2
 while [ $# -gt 0 ]; do
   case $1 in
     --units) UNITS=$2; shift 2 ;;
     --out) OUT=$2; shift 2 ;;
     --timeout) TIMEOUT=$2; shift 2 ;;
+    --router) ROUTER=$2; shift 2 ;;
     -h|--help) sed -n '2,/^$/p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 2 ;;
     *) echo "timing-ecp5.sh: unknown argument $1 (see --help)" >&2; exit 2 ;;
   esac
@@ -61,7 +67,7 @@ for pat in $UNITS; do
     cp "$f" "$w/"   # YoWASP's tools see the working directory only: relative paths
     rc=0; (cd "$w" && run "$YOSYS" -q -l yosys.log -p "read_verilog $unit.v; synth_ecp5 -top top -json $unit.json") >/dev/null 2>&1 || rc=$?
     [ $rc -eq 0 ] && { (cd "$w" && run "$NEXTPNR" --85k --out-of-context --freq 100 --seed 1 --timing-allow-fail \
-        --json "$unit.json" --report report.json) >"$w/nextpnr.log" 2>&1 || rc=$?; }
+        --router "$ROUTER" --json "$unit.json" --report report.json) >"$w/nextpnr.log" 2>&1 || rc=$?; }
     if [ $rc -eq 124 ]; then st=timeout
     elif [ $rc -ne 0 ] && grep -qiE "Unable to (place|find a placement)|exceeds|too many|not enough" "$w/nextpnr.log" 2>/dev/null; then st=no_fit
     elif [ $rc -ne 0 ]; then st=failed; fi
