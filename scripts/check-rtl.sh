@@ -32,7 +32,7 @@ run_one() { # unit simulator (its wall time, build and run, into $out_dir/<unit>
   if [[ $u == chip_* ]]; then # whole queries (scripts/run-chip.sh); Icarus only the short ones
     local status=0 qs=()
     if [ "$sim" = icarus ]; then
-      for cq in ${ICARUS_CHIP_QUERIES-chip_e8m15_k6:apart_lifo_first chip_b32_k24:k24_apart_lifo_first chip_e8m15_b32_k24:k24r_apart_lifo_first chip_e8m15_k6_fold16:fold16_apart_lifo_first}; do
+      for cq in ${ICARUS_CHIP_QUERIES-chip_e8m15_k6:apart_lifo_first chip_b32_k24:k24_apart_lifo_first chip_e8m15_b32_k24:k24r_apart_lifo_first chip_e8m15_k6_fold16:fold16_apart_lifo_first chip_e8m15_k6_dop6_tri32:dop6tri32_apart_lifo_first}; do
         [ "${cq%%:*}" = "$u" ] && qs+=("${cq#*:}")
       done
       [ ${#qs[@]} -gt 0 ] || { echo "0 passed, 0 failed (no Icarus query for $u)" >"$out_dir/$u.$sim.out"; echo 0 >"$out_dir/$u.$sim.rc"; return; }

@@ -47,7 +47,7 @@ struct Case {
 impl Case {
     fn new(name: &str, chip: Chip, pose: Pose, order: Order, mode: Mode, params: Params, reader: Reader) -> Case {
         let setup = chip.setup(&pose);
-        let kind = ChipKind::of(&chip.cfg, params.tri_interval).expect("an RTL chip's configuration");
+        let kind = ChipKind::of(&chip.cfg, params.dop_interval, params.tri_interval).expect("an RTL chip's configuration");
         let image = QueryImage::new(kind, &chip.a, &chip.b, &setup, order, mode, &params, &chip.cfg).unwrap();
         let golden = chip.query(&pose, Mode::All, if order == Order::Lifo { Traversal::Lifo } else { Traversal::Fifo });
         Case { name: name.into(), chip, setup, image, golden, order, mode, params, reader }
@@ -308,6 +308,26 @@ fn fold16_patch_fifo_all() {
     case.check(tr);
     // pairs back to back at one a clock would need fewer clocks than 16 per pair
     assert!(tr.tri_tests > 4, "{} triangle tests", tr.tri_tests);
+    compare_with_expect(q.name, tr);
+}
+
+/// The k = 6 chip with both units folded (issue 33): the DOP unit on one lane
+/// (`DopUnit6Fold6`, a pair every 6 clocks, latency 20) and TRI_UNIT a pair every 32 clocks,
+/// on a bunny patch at full speed: D_CNTR's pairs wait with both node words held for the DOP
+/// unit's `in_ready` (high one clock in 6 from the first pair taken since reset), every
+/// signal equal to the cycle model's (`[timing] dop_interval = 6, tri_interval = 32`) clock
+/// by clock, the answer the golden model's, and the trace the checked-in one (which
+/// Verilator reproduces).
+#[test]
+fn dop6tri32_patch_fifo_all() {
+    let q = query("dop6tri32_patch_fifo_all");
+    let p = q.params();
+    assert_eq!((q.chip, p.dop_interval, p.tri_interval), (ChipKind::K6E8m15Dop6Tri32, 6, 32));
+    let case = Case::of(&q);
+    let tr = &case.lockstep::<10, 11, 9>(1, None)[0];
+    case.check(tr);
+    // issued every clock, the tests would need fewer clocks than 6 per DOP test
+    assert!(tr.dop_tests > 6 && tr.tri_tests > 4, "{} DOP tests, {} triangle tests", tr.dop_tests, tr.tri_tests);
     compare_with_expect(q.name, tr);
 }
 

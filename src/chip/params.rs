@@ -65,9 +65,10 @@ impl Params {
         memory: Memory::Ideal(MemTiming { latency: 1, interval: 1, bus_bits: None }),
     };
 
-    /// RTL chip `kind` after reset: [`RTL`](Self::RTL) with its TRI_UNIT's interval.
+    /// RTL chip `kind` after reset: [`RTL`](Self::RTL) with its DOP unit's and TRI_UNIT's
+    /// intervals.
     pub const fn of(kind: rtl::ChipKind) -> Params {
-        Params { tri_interval: kind.tri_interval(), ..Params::RTL }
+        Params { dop_interval: kind.dop_interval(), tri_interval: kind.tri_interval(), ..Params::RTL }
     }
 
     /// Pairs prefetched at most.

@@ -86,8 +86,9 @@ pub fn rounding_tag(r: Rounding) -> &'static str {
 /// The RTL chips, one row each: the kind's name, the exported file's name in `rtl/`, the
 /// module of `crate::rtl` that stamps it out, its configuration, whether it also reads the
 /// `records` layout (host register 0x120 bit 2; its memory word then a record), the clocks
-/// between TRI_UNIT's pairs (1: `TriUnit`; an even ii: `TriUnitFold`, the cycle model's
-/// `tri_interval`), and rust-hdl's speed on
+/// between the DOP unit's pairs (1: `DopUnit<k>`; ii dividing k: `DopUnit<k>Fold<ii>`, the
+/// cycle model's `dop_interval`) and between TRI_UNIT's (1: `TriUnit`; an even ii:
+/// `TriUnitFold`, the cycle model's `tri_interval`), and rust-hdl's speed on
 /// it in clocks per second on this project's machine (README, `cargo bench --bench
 /// chip_sim`: for estimates before a run). Every chip has DOP lanes rounding outward,
 /// T.CHECK to nearest-even and a triangle cache of [`TRI_CACHE_LINES`] lines (host register
@@ -98,21 +99,25 @@ macro_rules! rtl_chips {
     ($m:ident) => {
         $m! {
             /// k = 6 in e8m15: small and fast to simulate.
-            K6E8m15, "chip_e8m15_k6", e8m15, (6, REDUCED, REDUCED), false, 1, 14.0;
+            K6E8m15, "chip_e8m15_k6", e8m15, (6, REDUCED, REDUCED), false, 1, 1, 14.0;
             /// The papers' chip (DATE'05 §4): k = 24 in binary32.
-            K24B32, "chip_b32_k24", b32, (24, BINARY32, BINARY32), true, 1, 4.0;
+            K24B32, "chip_b32_k24", b32, (24, BINARY32, BINARY32), true, 1, 1, 4.0;
             /// The papers' chip with its DOP datapath in e8m15 (format `e8m15/binary32`).
-            K24E8m15B32, "chip_e8m15_b32_k24", e8m15_b32, (24, REDUCED, BINARY32), false, 1, 4.0;
+            K24E8m15B32, "chip_e8m15_b32_k24", e8m15_b32, (24, REDUCED, BINARY32), false, 1, 1, 4.0;
             /// k = 6 in e8m15 with TRI_UNIT folded: a pair every 16 clocks (issue 33).
             /// (rust-hdl's speed from `fold16_patch_fifo_all` in lockstep, tb/rtl_chip.rs: 1,498
             /// clocks in 10.4 s; the folded TRI_UNIT simulates far faster than two T.CHECKs.)
-            K6E8m15Fold16, "chip_e8m15_k6_fold16", e8m15_fold16, (6, REDUCED, REDUCED), false, 16, 140.0;
+            K6E8m15Fold16, "chip_e8m15_k6_fold16", e8m15_fold16, (6, REDUCED, REDUCED), false, 1, 16, 140.0;
+            /// k = 6 in e8m15 with both units folded (issue 33), for an ECP5 LFE5U-85F: the DOP
+            /// unit on one DOPTRF lane, a pair every 6 clocks; TRI_UNIT a pair every 32.
+            /// (rust-hdl's speed from `dop6tri32_patch_fifo_all` in lockstep: 2,882 clocks in 7.2 s.)
+            K6E8m15Dop6Tri32, "chip_e8m15_k6_dop6_tri32", e8m15_dop6_tri32, (6, REDUCED, REDUCED), false, 6, 32, 400.0;
         }
     };
 }
 
 macro_rules! chip_kinds {
-    ($($(#[$doc:meta])* $kind:ident, $name:literal, $module:ident, ($k:literal, $dop:ident, $tri:ident), $records:literal, $ii:literal, $speed:literal;)+) => {
+    ($($(#[$doc:meta])* $kind:ident, $name:literal, $module:ident, ($k:literal, $dop:ident, $tri:ident), $records:literal, $dop_ii:literal, $ii:literal, $speed:literal;)+) => {
         /// The RTL chips: one `CollisionChip` per configuration, exported to `rtl/<name>.v`.
         #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
         pub enum ChipKind {
@@ -151,6 +156,14 @@ macro_rules! chip_kinds {
                 }
             }
 
+            /// Clocks between the DOP unit's pairs: 1 (unfolded), or the folded unit's ii (the
+            /// cycle model's [`dop_interval`](super::params::Params::dop_interval)).
+            pub const fn dop_interval(self) -> u32 {
+                match self {
+                    $(ChipKind::$kind => $dop_ii,)+
+                }
+            }
+
             /// Clocks between TRI_UNIT's pairs: 1 (unfolded), or the folded unit's ii (the
             /// cycle model's [`tri_interval`](super::params::Params::tri_interval)).
             pub const fn tri_interval(self) -> u32 {
@@ -171,12 +184,12 @@ macro_rules! chip_kinds {
 rtl_chips!(chip_kinds);
 
 impl ChipKind {
-    /// The chip built for `cfg`'s k, formats and roundings with TRI_UNIT taking a pair every
-    /// `tri_interval` clocks, if any (its triangle cache and memory layout aside: every chip
-    /// has [`TRI_CACHE_LINES`] lines, host register 0x127 picks how many are used;
-    /// [`records`](Self::records) says which layouts it reads).
-    pub fn of(cfg: &ChipConfig, tri_interval: u32) -> Option<ChipKind> {
-        ChipKind::built(cfg).find(|k| k.tri_interval() == tri_interval)
+    /// The chip built for `cfg`'s k, formats and roundings with the DOP unit taking a pair
+    /// every `dop_interval` clocks and TRI_UNIT every `tri_interval`, if any (its triangle
+    /// cache and memory layout aside: every chip has [`TRI_CACHE_LINES`] lines, host register
+    /// 0x127 picks how many are used; [`records`](Self::records) says which layouts it reads).
+    pub fn of(cfg: &ChipConfig, dop_interval: u32, tri_interval: u32) -> Option<ChipKind> {
+        ChipKind::built(cfg).find(|k| (k.dop_interval(), k.tri_interval()) == (dop_interval, tri_interval))
     }
 
     /// The chips built for `cfg`'s k, formats and roundings, at any TRI_UNIT interval.

@@ -149,20 +149,21 @@ pub fn units(cfg: &ChipConfig, folds: Folds) -> Vec<String> {
         }
     }
     u.push(rtl::PAIR_QUEUE_UNIT.to_string());
-    u.push(chip_name(cfg, 1));
-    if tri_interval > 1 {
-        u.push(chip_name(cfg, tri_interval));
+    u.push(chip_name(cfg, Folds::NONE));
+    if folds != Folds::NONE {
+        u.push(chip_name(cfg, folds));
     }
     u
 }
 
-/// The chip's name: the RTL's where it builds `cfg` at `tri_interval`, else as `rtl_chips!`
+/// The chip's name: the RTL's where it builds `cfg` with `folds`, else as `rtl_chips!`
 /// would name it.
-fn chip_name(cfg: &ChipConfig, tri_interval: u32) -> String {
-    match ChipKind::of(cfg, tri_interval) {
-        Some(kind) => kind.name().to_string(),
-        None if tri_interval > 1 => format!("chip_{}_fold{tri_interval}", cfg_tag(cfg)),
-        None => format!("chip_{}", cfg_tag(cfg)),
+fn chip_name(cfg: &ChipConfig, folds: Folds) -> String {
+    match (ChipKind::of(cfg, folds.dop, folds.tri), folds) {
+        (Some(kind), _) => kind.name().to_string(),
+        (None, Folds { dop: 1, tri: 1 }) => format!("chip_{}", cfg_tag(cfg)),
+        (None, Folds { dop: 1, tri }) => format!("chip_{}_fold{tri}", cfg_tag(cfg)),
+        (None, Folds { dop, tri }) => format!("chip_{}_dop{dop}_tri{tri}", cfg_tag(cfg)),
     }
 }
 
@@ -303,6 +304,9 @@ chip_e8m15_k6,8
         assert!(c.not_measured.contains(&"chip_e8m15_k6_fold16".to_string()), "{:?}", c.not_measured);
         assert!(units(&cfg, Folds { tri: 1, dop: 6 }).contains(&"dop_unit_fold6_k6_e8m15_ru".to_string()));
         assert_eq!(units(&cfg, Folds { tri: 8, dop: 1 }).iter().filter(|n| n.starts_with("chip_")).collect::<Vec<_>>(), ["chip_e8m15_k6", "chip_e8m15_k6_fold8"]);
+        let both = units(&cfg, Folds { tri: 32, dop: 6 });
+        assert_eq!(both.iter().filter(|n| n.starts_with("chip_")).collect::<Vec<_>>(), ["chip_e8m15_k6", "chip_e8m15_k6_dop6_tri32"]);
+        assert!(both.contains(&"dop_unit_fold6_k6_e8m15_ru".to_string()) && both.contains(&"tri_unit_fold32_e8m15_rne".to_string()), "{both:?}");
     }
 
     /// The checked-in tables parse, and the paper clock is the preset's.

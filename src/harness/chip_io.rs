@@ -35,7 +35,7 @@ pub trait OnChip {
 }
 
 macro_rules! dispatch {
-    ($($(#[$doc:meta])* $kind:ident, $name:literal, $module:ident, $cfg:tt, $records:literal, $ii:literal, $speed:literal;)+) => {
+    ($($(#[$doc:meta])* $kind:ident, $name:literal, $module:ident, $cfg:tt, $records:literal, $dop_ii:literal, $ii:literal, $speed:literal;)+) => {
         /// Builds `kind`'s rust-hdl chip with `2^N` queue entries (`NP1 = N + 1`, `NM1 = N -
         /// 1`), ready to simulate, and hands it to `f` (call on a thread with a big stack:
         /// TRI_UNIT and the k = 24 DOP unit are large).
@@ -522,6 +522,14 @@ pub fn queries() -> Vec<ChipQuery> {
         ChipQuery { chip: ChipKind::K6E8m15Fold16, prefetch: 3, outstanding: 4, issue_spacing: 1, credit: 24, ..q("fold16_patch_fifo_all", "bunny-patch:12", patch, Fifo, Mode::All, 8, 1) },
         ChipQuery { chip: ChipKind::K6E8m15Fold16, prefetch: 14, outstanding: 16, issue_spacing: 1, credit: 48, ..q("fold16_sphere_lifo_prefetch", "sphere:320", big_spheres, Lifo, Mode::All, 8, 1) },
         ChipQuery { chip: ChipKind::K6E8m15Fold16, ..q("fold16_patch_lifo_first", "bunny-patch:300", patch, Lifo, Mode::First, 1, 1) },
+        // the k = 6 chip with both units folded, the DOP unit a pair every 6 clocks and
+        // TRI_UNIT every 32 (issue 33; the chip for an LFE5U-85F): the root test (Icarus), a
+        // bunny patch at full speed whose pairs wait for both units' slots (rust-hdl), whole
+        // queries at full speed and at the reset point (Verilator)
+        ChipQuery { chip: ChipKind::K6E8m15Dop6Tri32, ..q("dop6tri32_apart_lifo_first", "sphere:12", Pose::new(10.0, 20.0, 30.0, 3.0, 0.1, 0.0), Lifo, Mode::First, 1, 1) },
+        ChipQuery { chip: ChipKind::K6E8m15Dop6Tri32, prefetch: 3, outstanding: 4, issue_spacing: 1, credit: 24, ..q("dop6tri32_patch_fifo_all", "bunny-patch:12", patch, Fifo, Mode::All, 8, 1) },
+        ChipQuery { chip: ChipKind::K6E8m15Dop6Tri32, prefetch: 14, outstanding: 16, issue_spacing: 1, credit: 48, ..q("dop6tri32_sphere_lifo_prefetch", "sphere:320", big_spheres, Lifo, Mode::All, 8, 1) },
+        ChipQuery { chip: ChipKind::K6E8m15Dop6Tri32, ..q("dop6tri32_patch_lifo_first", "bunny-patch:300", patch, Lifo, Mode::First, 1, 1) },
     ]
 }
 
@@ -581,10 +589,11 @@ pub fn rtl_order(cfg: &ChipConfig, traversal: Traversal, p: &Params) -> Result<(
             built.join(" or "), cfg.k, cfg.format, cfg.dop_rounding, cfg.tri_rounding
         ));
     }
-    let Some(kind) = ChipKind::of(cfg, p.tri_interval) else {
-        let ii: Vec<String> = ChipKind::built(cfg).map(|k| format!("{} ({})", k.tri_interval(), k.name())).collect();
+    let Some(kind) = ChipKind::of(cfg, p.dop_interval, p.tri_interval) else {
+        let ii: Vec<String> = ChipKind::built(cfg).map(|k| format!("{} and {} ({})", k.dop_interval(), k.tri_interval(), k.name())).collect();
         return Err(format!(
-            "no RTL chip of this configuration takes a TRI_UNIT pair every {} clocks: its chips have tri_interval {}: set [timing] tri_interval to one of them, or drop cross_check",
+            "no RTL chip of this configuration takes a DOP pair every {} clocks and a TRI_UNIT pair every {}: its chips have dop_interval and tri_interval {}: set [timing] dop_interval and tri_interval to one of them, or drop cross_check",
+            p.dop_interval,
             p.tri_interval,
             ii.join(" or ")
         ));
@@ -593,12 +602,6 @@ pub fn rtl_order(cfg: &ChipConfig, traversal: Traversal, p: &Params) -> Result<(
     let lines = chips::TRI_CACHE_LINES;
     if cfg.tri_cache > lines as u32 {
         return Err(format!("the RTL chips' triangle cache has {lines} lines; this scene asks for tri_cache = {}: set [chip] tri_cache to at most {lines}", cfg.tri_cache));
-    }
-    if p.dop_interval != 1 {
-        return Err(format!(
-            "the RTL chips' DOP unit is unfolded (no chip is built on a folded DopUnit<k>Fold<ii> yet), so dop_interval {} runs on the cycle model only: set [timing] dop_interval = 1 to cross-check, or drop cross_check",
-            p.dop_interval
-        ));
     }
     let rtl = Params {
         memory: p.memory,

@@ -11,8 +11,9 @@
 //! (A's in its triangle cache, `TriCache`, rtl/tri_cache.rs), the counters and the end of a query.
 
 /// Stamps out `CollisionChip<N, NP1, NM1>` in the calling module. Arguments: `K` the DOP's
-/// k; `Dop = dop_new` its unit's type and constructor from the DOP rounding (`DopUnit6 =
-/// DopUnit6::new` for k = 6); `Tri = tri_new` TRI_UNIT's type and constructor from T.CHECK's
+/// k; `Dop = dop_new` its unit's type (its `LATENCY` sets the side delay line) and
+/// constructor from the DOP rounding (`DopUnit6 = DopUnit6::new` for k = 6), followed by
+/// `=> in_ready` for a folded DOP unit whose `in_ready` gates D_CNTR's issue; `Tri = tri_new` TRI_UNIT's type and constructor from T.CHECK's
 /// rounding (`TriUnit = TriUnit::new`, or a `TriUnitFold` on its plan: any block with
 /// `TriUnit`'s ports, `tri_unit_ports!`, whose `in_ready` paces the leaf register); `WD` the
 /// DOP format's word width, `WT` T.CHECK's, `NW` node-word bits (`1 + K WD + 64`), `TW`
@@ -20,7 +21,7 @@
 /// ([`crate::chip::rtl::ChipKind::word_bits`]), `RW` the node record's bits (`2 NW` on a
 /// chip that also reads the `records` layout, else `NW`).
 macro_rules! chip {
-    ($K:tt, $Dop:ident = $dop_new:expr, $Tri:ident = $tri_new:expr, $WD:tt, $WT:tt, $NW:tt, $TW:tt, $MW:tt, $RW:tt) => {
+    ($K:tt, $Dop:ident = $dop_new:expr $(=> $dop_ready:ident)?, $Tri:ident = $tri_new:expr, $WD:tt, $WT:tt, $NW:tt, $TW:tt, $MW:tt, $RW:tt) => {
         declare_sync_fifo!(LeafFifo, Bits<64>, $crate::chip::rtl::LEAF_FIFO, 1);
         $crate::rtl::memory_port::memory_port!($NW, $MW, $RW);
         $crate::rtl::tri_cache::tri_cache!($TW);
@@ -135,7 +136,7 @@ macro_rules! chip {
             mem_port: MemoryPort,
             // ---- the DOP unit and what travels beside it
             dop: $Dop,
-            side: $crate::rtl::delay::Delay<Bits<99>, { $crate::chip::rtl::DOP_LATENCY }>,
+            side: $crate::rtl::delay::Delay<Bits<99>, { $Dop::LATENCY }>,
             // ---- leaf pairs waiting for TRI_UNIT, and the one being fetched
             leaf_fifo: LeafFifo,
             leaf_count: DFF<Bits<6>>,
@@ -389,6 +390,12 @@ macro_rules! chip {
                 self.d_cntr.pf.next = self.pf.val();
                 self.d_cntr.one.next = self.port_one.q.val();
                 self.d_cntr.credit_lim.next = self.credit_lim.val();
+                // a folded DOP unit takes a pair only while `in_ready`: D_CNTR issues none
+                // otherwise (a credit limit of 0 blocks its issue and nothing else, so D_CNTR
+                // keeps its ports and the unfolded chips their Verilog)
+                $(if !self.dop.$dop_ready.val() {
+                    self.d_cntr.credit_lim.next = 0.into();
+                })?
                 self.d_cntr.leaf_count.next = self.leaf_count.q.val();
                 self.d_cntr.wa_empty.next = self.mem_port.wa_empty.val();
                 self.d_cntr.wb_empty.next = self.mem_port.wb_empty.val();

@@ -110,6 +110,9 @@ macro_rules! dop_unit {
         }
 
         impl $name {
+            /// Clocks from a pair taken to its verdict.
+            pub const LATENCY: usize = $crate::chip::rtl::DOP_LATENCY;
+
             /// A unit whose lanes round with `rounding` (NearestEven or TowardPositive).
             pub fn new(rounding: Rounding) -> Self {
                 Self {

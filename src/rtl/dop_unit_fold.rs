@@ -119,6 +119,15 @@ macro_rules! dop_unit_fold {
             }
         }
 
+        /// The folded DOP unit of `K` directions taking a pair every `II` clocks, by its
+        /// numbers: `<DopFold<6, 6> as FoldedDop>::Unit` is [`DopUnit6Fold6`], so that a chip
+        /// picks its DOP unit from its `ChipKind`'s `dop_interval`.
+        pub struct DopFold<const K: usize, const II: usize>;
+        /// See [`DopFold`].
+        pub trait FoldedDop {
+            type Unit;
+        }
+
         // Each unit: k, L lanes, ii = k/L passes, k/2 (the opposite direction's offset).
         $crate::rtl::dop_unit_fold::dop_unit_fold!(@unit $W, DopUnit6Fold2, dop_unit6_fold2_top, 6, 3, 2, 3);
         $crate::rtl::dop_unit_fold::dop_unit_fold!(@unit $W, DopUnit6Fold3, dop_unit6_fold3_top, 6, 2, 3, 3);
@@ -212,9 +221,15 @@ macro_rules! dop_unit_fold {
             c_first: Signal<Local, Bit>,
         }
 
+        impl FoldedDop for DopFold<$K, $P> {
+            type Unit = $name;
+        }
+
         impl $name {
             /// Clocks between pairs taken.
             pub const INTERVAL: usize = $P;
+            /// Clocks from a pair taken to its verdict.
+            pub const LATENCY: usize = $crate::chip::rtl::dop_fold_latency($P);
 
             /// A unit whose lanes round with `rounding` (NearestEven or TowardPositive).
             pub fn new(rounding: Rounding) -> Self {

@@ -11,6 +11,7 @@
 //! | [`e8m15`] | e8m15 ([`Format::REDUCED`](crate::format::Format::REDUCED)) | the same |
 //! | [`e8m15_b32`] | e8m15 DOP unit, binary32 TRI_UNIT | the k = 24 chip only |
 //! | [`e8m15_fold16`] | e8m15, TRI_UNIT folded (a pair every 16 clocks) | the k = 6 chip only |
+//! | [`e8m15_dop6_tri32`] | e8m15, the DOP unit folded (a pair every 6 clocks) and TRI_UNIT (every 32) | the k = 6 chip only |
 //!
 //! [`b32`] and [`e8m15`] also hold the folded units of issue 33, built from `crate::fold`'s
 //! plans: `TCheckFold` and `TriUnitFold` (both directions on one `TCheckFold`).
@@ -170,6 +171,29 @@ pub mod e8m15_fold16 {
     crate::rtl::chip::chip!(6, DopUnit6 = DopUnit6::new, TriUnitFold = tri_unit, 24, 24, 209, 554, 554, 209);
 }
 
+/// The k = 6 e8m15 chip with both units folded (issue 33), small enough for an ECP5
+/// LFE5U-85F: the DOP unit on one DOPTRF lane, a pair every
+/// `ChipKind::K6E8m15Dop6Tri32.dop_interval()` = 6 clocks (`DopUnit6Fold6`, its `in_ready`
+/// gating D_CNTR's issue), and TRI_UNIT a pair every `tri_interval()` = 32 clocks on one
+/// T.CHECK folded for 16 (docs/ARCHITECTURE.md, "A chip on the folded DOP unit").
+pub mod e8m15_dop6_tri32 {
+    use super::e8m15::{DopFold, FoldedDop, TriUnitFold};
+    use crate::chip::rtl::ChipKind;
+    use crate::format::Rounding;
+    use rust_hdl::prelude::*;
+
+    const KIND: ChipKind = ChipKind::K6E8m15Dop6Tri32;
+    /// The DOP unit folded to the chip's interval.
+    pub type DopUnit = <DopFold<6, { KIND.dop_interval() as usize }> as FoldedDop>::Unit;
+
+    /// TRI_UNIT folded to the chip's interval, T.CHECK rounding with `r`.
+    fn tri_unit(r: Rounding) -> TriUnitFold {
+        TriUnitFold::new(crate::fold::tri_unit_plan(KIND.tri_interval() as usize).expect("the chip's interval is even"), r)
+    }
+    // node word 1 + 6 * 24 + 64 bits, triangle word 23 * 24 + 2
+    crate::rtl::chip::chip!(6, DopUnit = DopUnit::new => in_ready, TriUnitFold = tri_unit, 24, 24, 209, 554, 554, 209);
+}
+
 // The contract's widths and latencies (`crate::chip`) are what the blocks are built with: the
 // chip! macros take literals, so each is checked here.
 /// The RTL's widths are the contract's: the memory word (`ChipKind::word_bits`), the
@@ -191,6 +215,7 @@ check_widths!(e8m15, K6E8m15);
 check_widths!(b32, K24B32);
 check_widths!(e8m15_b32, K24E8m15B32);
 check_widths!(e8m15_fold16, K6E8m15Fold16);
+check_widths!(e8m15_dop6_tri32, K6E8m15Dop6Tri32);
 const _: () = assert!(b32::TCheck::LATENCY == crate::chip::rtl::TCHECK_LATENCY && e8m15::TCheck::LATENCY == crate::chip::rtl::TCHECK_LATENCY);
 const _: () = assert!(b32::FpMul::LATENCY == crate::chip::rtl::FP_MUL_LATENCY && b32::FpAdd::LATENCY == crate::chip::rtl::FP_ADD_LATENCY);
 const _: () = assert!(b32::FpScale::LATENCY == crate::chip::rtl::FP_SCALE_LATENCY);

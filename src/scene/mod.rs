@@ -78,12 +78,14 @@
 //! dop_latency = 15
 //! dop_interval = 1            # clocks between the DOP unit's pairs: 1 (unfolded), or ii
 //!                             # dividing k: k/ii lanes in ii passes, latency 14 + ii (no
-//!                             # dop_latency then); the cycle model only, no cross_check
+//!                             # dop_latency then)
 //! tri_latency = 54
 //! tri_fifo = 256
 //! tri_interval = 1            # clocks between TRI_UNIT's pairs: 1 (unfolded), or 2, 4, .. 32
 //!                             # (even): the folded TRI_UNIT, its latency its schedule's
-//!                             # (no tri_latency then); the cycle model only, no cross_check
+//!                             # (no tri_latency then); cross_check only on a pair
+//!                             # (dop_interval, tri_interval) an RTL chip has: (1, 1),
+//!                             # (1, 16), (6, 32) (docs/ARCHITECTURE.md, chip list)
 //! issue_spacing = 2           # 1 or 2 clocks between DOP issues
 //! credit = 16                 # DOP tests in flight + leaf pairs waiting (RTL: 1 to 63)
 //! outstanding = 1             # memory requests in flight (1 to 64; the RTL chip 1 to 16)
@@ -691,7 +693,7 @@ mod tests {
     /// unknown keys are errors that say what to write.
     /// `[timing] tri_interval`: 1 or even 2 to 32, no tri_latency beside a fold, DATE'05's
     /// chip only, and an RTL cross-check only at an interval an RTL chip of the configuration
-    /// is built with (k = 6 e8m15: 1 and 16).
+    /// is built with (k = 6 e8m15: dop_interval and tri_interval 1 and 1, 1 and 16, 6 and 32).
     #[test]
     fn tri_interval_key() {
         let base = "[objects]\na = \"sphere:12\"\nb = \"sphere:12\"\n[[pose]]\nrot_deg=[0,0,0]\nt=[0,0,0]\n";
@@ -715,10 +717,12 @@ mod tests {
         let e = Scene::parse(&format!("{base}[chip]\npreset = \"wscg03\"\n[timing]\ntri_interval = 2\n"), "s").unwrap_err();
         assert!(e.contains("[stack_engine] tri_interval"), "{e}");
         let rtl = Scene::parse(include_str!("../../vectors/scenes/rtl_spheres.toml"), "rtl_spheres").unwrap();
-        let order = |ii| crate::harness::chip_io::rtl_order(&rtl.cfg, rtl.traversal, &Params { tri_interval: ii, ..rtl.params });
-        let e = order(2).unwrap_err();
-        assert!(e.contains("every 2 clocks") && e.contains("1 (chip_e8m15_k6) or 16 (chip_e8m15_k6_fold16)"), "{e}");
-        assert_eq!(order(16).unwrap().0, crate::chip::rtl::ChipKind::K6E8m15Fold16);
+        let order = |dop_interval, tri_interval| crate::harness::chip_io::rtl_order(&rtl.cfg, rtl.traversal, &Params { dop_interval, tri_interval, ..rtl.params });
+        let e = order(1, 2).unwrap_err();
+        assert!(e.contains("every 2") && e.contains("1 and 1 (chip_e8m15_k6) or 1 and 16 (chip_e8m15_k6_fold16) or 6 and 32 (chip_e8m15_k6_dop6_tri32)"), "{e}");
+        assert!(order(6, 16).is_err() && order(6, 1).is_err());
+        assert_eq!(order(1, 16).unwrap().0, crate::chip::rtl::ChipKind::K6E8m15Fold16);
+        assert_eq!(order(6, 32).unwrap().0, crate::chip::rtl::ChipKind::K6E8m15Dop6Tri32);
     }
 
     #[test]

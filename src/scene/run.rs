@@ -200,7 +200,7 @@ impl<'s> Prepared<'s> {
         let cross_checked = match plan.cross_check {
             None => None,
             Some(CrossCheck::Rtl) => {
-                let speed = crate::chip::rtl::ChipKind::of(&chip.cfg, s.params.tri_interval).map_or(1.0, |k| k.rtl_clocks_per_second());
+                let speed = crate::chip::rtl::ChipKind::of(&chip.cfg, s.params.dop_interval, s.params.tri_interval).map_or(1.0, |k| k.rtl_clocks_per_second());
                 let hours = trace.cycles as f64 / speed / 3600.0;
                 if hours > 0.5 {
                     return Err(format!(
