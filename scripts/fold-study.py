@@ -15,6 +15,7 @@ Usage: scripts/fold-study.py [--cchip PATH]
 Only the Python 3 standard library is used.
 """
 import argparse
+import csv
 import json
 import os
 import subprocess
@@ -27,8 +28,19 @@ DEFAULT = os.path.join(ROOT, "vectors", "scenes", "default.toml")
 INTERVALS = [1, 2, 4, 8, 16, 32]
 
 # TRI_UNIT's Yosys cells (binary32, nearest-even): ii = 1 the unfolded TriUnit, else
-# TriUnitFold (docs/ARCHITECTURE.md, "Folded TRI_UNIT": scripts/synth.sh on each Verilog)
-CELLS = {1: 2_499_552, 2: 1_298_013, 4: 701_897, 8: 391_579, 16: 240_759, 32: 162_113}
+# TriUnitFold; the area study's file (scripts/area-study.sh)
+AREA = os.path.join(ROOT, "docs", "figures", "area_cells.csv")
+
+
+def cells():
+    """TRI_UNIT's cells by interval, from the area study's file."""
+    with open(AREA) as f:
+        rows = {r["unit"]: int(r["cells"]) for r in csv.DictReader(f)}
+    name = lambda ii: "tri_unit_b32_rne" if ii == 1 else f"tri_unit_fold{ii}_b32_rne"
+    missing = [name(ii) for ii in INTERVALS if name(ii) not in rows]
+    if missing:
+        sys.exit(f"fold-study.py: {AREA} has no row for {', '.join(missing)}: run scripts/area-study.sh --units 'tri_unit*'")
+    return {ii: rows[name(ii)] for ii in INTERVALS}
 
 # name, [memory] table (None: the preset's)
 MEMORIES = [
@@ -65,6 +77,7 @@ def main():
     ap.add_argument("--cchip", help="a built cchip binary")
     a = ap.parse_args()
     cmd = [a.cchip] if a.cchip else ["cargo", "run", "--release", "-q", "--"]
+    area = cells()
     print("| memory | ii | TRI_UNIT cells | clocks / query | x ii = 1 | tri tests / clock | waits at TRI_UNIT / clock | time / query |")
     print("|---|---:|---:|---:|---:|---:|---:|---:|")
     for name, memory in MEMORIES:
@@ -78,7 +91,7 @@ def main():
             base = base or clocks
             per = clocks / len(c)
             time = " / ".join(f"{per * p / 1000:.2f} us at {p} ns" for p in sorted(periods))
-            print(f"| {name} | {ii} | {CELLS[ii]:,} | {per:,.0f} | {clocks / base:.3f} | {tri / clocks:.4f} | {waits / clocks:.3f} | {time} |")
+            print(f"| {name} | {ii} | {area[ii]:,} | {per:,.0f} | {clocks / base:.3f} | {tri / clocks:.4f} | {waits / clocks:.3f} | {time} |")
 
 
 if __name__ == "__main__":
