@@ -6,10 +6,36 @@
 #
 # Usage: scripts/fpga.sh rtl/<unit>.v ...    (needs `apt-get install -y yosys nextpnr-ice40`)
 # Logs and reports in target/fpga/<unit>/. Exits non-zero if a tool fails on a unit that fits.
+#
+# scripts/fpga.sh --ecp5 [--timeout SECONDS] rtl/<unit>.v ...
+#   A Lattice LFE5U-85F instead (a whole chip fits: README, "On an FPGA"): the ECP5 flow of
+#   scripts/timing-ecp5.sh (YoWASP Yosys, flat synth_ecp5; nextpnr-ecp5 out of context,
+#   router2), its row into docs/figures/timing_ecp5.csv, and one line per unit: LUT4s,
+#   flip-flops, MULT18X18D, DP16KD block RAMs and Fmax. Default timeout 14400 s per tool
+#   (a whole k = 6 chip: about 8 minutes of Yosys and an hour or more of nextpnr here).
 set -euo pipefail
 SCRIPTS=$(cd "$(dirname "$0")" && pwd)
 ROOT=$(cd "$SCRIPTS/.." && pwd)
 PY=${PYTHON:-python3}
+if [ "${1:-}" = --ecp5 ]; then
+  shift; timeout=14400
+  [ "${1:-}" = --timeout ] && { timeout=$2; shift 2; }
+  [ $# -gt 0 ] || { sed -n '2,/^set/p' "$0" | sed '$d' | sed 's/^# \{0,1\}//' >&2; exit 2; }
+  units=$(for f in "$@"; do basename "$f" .v; done | tr '\n' ' ')
+  rc=0; "$SCRIPTS/timing-ecp5.sh" --units "$units" --timeout "$timeout" || rc=$?
+  "$PY" - "$ROOT/docs/figures/timing_ecp5.csv" $units <<'PYEOF'
+import csv, sys
+rows = {r["unit"]: r for r in csv.DictReader(open(sys.argv[1]))}
+for u in sys.argv[2:]:
+    r = rows.get(u)
+    if r is None or r["status"] != "ok":
+        print(f"{u}: {r['status'] if r else 'no row'} (see target/timing-ecp5/{u}/)")
+        continue
+    print(f"{u}: LFE5U-85F: LUT4 {r['luts']}/83640, FF {r['ffs']}/83640, MULT18X18D {r['dsps']}/156, "
+          f"DP16KD {r['ebrs'] or '?'}/208, Fmax {r['fmax_mhz']} MHz ({r['period_ns']} ns)")
+PYEOF
+  exit $rc
+fi
 for t in yosys nextpnr-ice40; do
   command -v $t >/dev/null || { echo "fpga.sh: $t not found (apt-get install -y yosys nextpnr-ice40)" >&2; exit 127; }
 done

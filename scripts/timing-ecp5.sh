@@ -14,7 +14,8 @@
 #   fmax_mhz is nextpnr's achieved Fmax of `clock` after routing (register to register, with
 #   routing delays); status = ok | no_fit (needs more than the device) | timeout | failed
 # Writes (rows of units not measured now are kept) docs/figures/timing_ecp5.csv:
-#   unit,format,rounding,luts,ffs,dsps,fmax_mhz,period_ns,status,seconds,rtl_sha256
+#   unit,format,rounding,luts,ffs,dsps,ebrs,fmax_mhz,period_ns,status,seconds,rtl_sha256
+#   (luts: TRELLIS_COMB, LUT4s and carry halves; dsps: MULT18X18D; ebrs: DP16KD block RAMs)
 # Work files: target/timing-ecp5/<unit>/ (yosys.log, <unit>.json, nextpnr.log, report.json).
 #
 # Usage: scripts/timing-ecp5.sh [--units PATTERNS] [--out FILE] [--timeout SECONDS] [--router R]
@@ -79,25 +80,25 @@ unit, report, st, secs, sha = sys.argv[1:6]
 parts = unit.split('_')
 fmt = next((p for p in parts if re.fullmatch(r'b32|e\d+m\d+', p)), '-')
 rnd = next((p for p in parts if p in ('rne', 'ru', 'rd', 'rz')), '-')
-luts = ffs = dsps = fmax = period = ''
+luts = ffs = dsps = ebrs = fmax = period = ''
 if st == 'ok' and os.path.exists(report):
     r = json.load(open(report))
     u = r.get('utilization', {})
     used = lambda k: str(u[k]['used']) if k in u else '0'
-    luts, ffs, dsps = used('TRELLIS_COMB'), used('TRELLIS_FF'), used('MULT18X18D')
+    luts, ffs, dsps, ebrs = used('TRELLIS_COMB'), used('TRELLIS_FF'), used('MULT18X18D'), used('DP16KD')
     f = [c['achieved'] for c in r.get('fmax', {}).values()]
     if f:
         fmax = f'{min(f):.1f}'; period = f'{1000 / min(f):.3f}'
-print(f'{unit},{fmt},{rnd},{luts},{ffs},{dsps},{fmax},{period},{st},{secs},{sha}')
+print(f'{unit},{fmt},{rnd},{luts},{ffs},{dsps},{ebrs},{fmax},{period},{st},{secs},{sha}')
 PY
-    echo "$(tail -n 1 "$NEW" | cut -d, -f1-10)" >&2
+    echo "$(tail -n 1 "$NEW" | cut -d, -f1-11)" >&2
   done
 done
 [ -s "$NEW" ] || { echo "timing-ecp5.sh: no rtl/<unit>.v matches '$UNITS'" >&2; exit 2; }
 "$PY" - "$OUT" "$NEW" <<'PY'
 import csv, os, sys
 out, new = sys.argv[1:3]
-head = 'unit,format,rounding,luts,ffs,dsps,fmax_mhz,period_ns,status,seconds,rtl_sha256'.split(',')
+head = 'unit,format,rounding,luts,ffs,dsps,ebrs,fmax_mhz,period_ns,status,seconds,rtl_sha256'.split(',')
 rows = {r['unit']: r for r in csv.DictReader(open(out))} if os.path.exists(out) else {}
 rows.update((r['unit'], r) for r in csv.DictReader(open(new), fieldnames=head))
 with open(out, 'w', newline='') as f:

@@ -484,6 +484,9 @@ fn front_panel(title: String, x_label: &'static str, log_x: bool, cfgs: &[Row], 
         }
     }
     let point = |i: usize| x[i].map(|x| (x, cfgs[i].end_to_end_us()));
+    // a fold study has tens of points per group: only the front's are named
+    let folded = mine.iter().any(|&i| cfgs[i].folds != Folds::NONE);
+    let label = |i: usize| if folded && !on[i] { String::new() } else { format!("  k={}{}", cfgs[i].k, fold_label(cfgs[i].folds)) };
     let mut series = vec![];
     for (gi, &(f, r)) in groups.iter().enumerate() {
         let these: Vec<usize> = mine.iter().copied().filter(|&i| (cfgs[i].format, cfgs[i].dop_rounding) == (f, r) && x[i].is_some()).collect();
@@ -493,7 +496,7 @@ fn front_panel(title: String, x_label: &'static str, log_x: bool, cfgs: &[Row], 
                 color: gi % (PALETTE.len() - 1),
                 style: Style::Points,
                 points: these.iter().filter_map(|&i| point(i)).collect(),
-                labels: these.iter().map(|&i| format!("  k={}{}", cfgs[i].k, fold_label(cfgs[i].folds))).collect(),
+                labels: these.iter().map(|&i| label(i)).collect(),
             });
         }
     }
@@ -508,7 +511,8 @@ fn front_panel(title: String, x_label: &'static str, log_x: bool, cfgs: &[Row], 
 /// of triangle tests left to the host, and, with `area`, against the cells of the units the
 /// configuration changes (DOP unit + TRI_UNIT); a panel per memory system. Each panel marks
 /// its Pareto front among the configurations with no miss (no other is both faster and
-/// smaller in its x). Both figures carry the same table.
+/// smaller in its x). Both figures carry the same table. A study with folds draws only the
+/// area figure, `fold_cycles_area`: what area costs in time.
 pub fn figures(rows: &[Row], area: Option<&Area>) -> Vec<Figure> {
     let key = |r: &Row| (r.memory, r.k, r.format, r.dop_rounding, r.folds);
     let mut cfgs: Vec<Row> = vec![];
@@ -572,17 +576,25 @@ pub fn figures(rows: &[Row], area: Option<&Area>) -> Vec<Figure> {
     });
     let mine = |p: Preset| -> Vec<usize> { (0..cfgs.len()).filter(|&i| cfgs[i].memory == p).collect() };
     let what = |p: Preset| format!("memory {}: one point per configuration (cycle model, LIFO, all pairs; host measured)", p.name());
-    let mut out = vec![Figure {
+    let folded = cfgs.iter().any(|c| c.folds != Folds::NONE);
+    let mut out = vec![];
+    out.extend((!folded).then(|| Figure {
         stem: "accuracy_cycles_uncertain",
         title: format!("What accuracy costs: the query's time end to end against the host's share ({})", meshes.join(", ")),
         panels: presets.iter().map(|&p| front_panel(what(p), "triangle tests left to the host (uncertain), %", true, &cfgs, &mine(p), &uncertain, &on_uncertain)).collect(),
         table: table.clone(),
-    }];
+    }));
+    // with folds (`--tri-intervals`, `--dop-intervals`) the area figure alone (a fold leaves
+    // the uncertain share as it is), the cells on a log scale (they span a factor of 30)
     if area.is_some() {
         out.push(Figure {
-            stem: "accuracy_cycles_area",
-            title: format!("What accuracy costs in area: the query's time end to end against the cells of its DOP unit and TRI_UNIT ({})", meshes.join(", ")),
-            panels: presets.iter().map(|&p| front_panel(format!("{}; Yosys cells, generic gates", what(p)), "Yosys cells, DOP unit + TRI_UNIT, millions", false, &cfgs, &mine(p), &cells_x, &on_area)).collect(),
+            stem: if folded { "fold_cycles_area" } else { "accuracy_cycles_area" },
+            title: if folded {
+                format!("What area costs in time: a query end to end against the cells of the folded DOP unit and TRI_UNIT ({})", meshes.join(", "))
+            } else {
+                format!("What accuracy costs in area: the query's time end to end against the cells of its DOP unit and TRI_UNIT ({})", meshes.join(", "))
+            },
+            panels: presets.iter().map(|&p| front_panel(format!("{}; Yosys cells, generic gates", what(p)), if folded { "Yosys cells, DOP unit + TRI_UNIT, millions (labels: k, ii TRI_UNIT/DOP unit)" } else { "Yosys cells, DOP unit + TRI_UNIT, millions" }, folded, &cfgs, &mine(p), &cells_x, &on_area)).collect(),
             table,
         });
     }
