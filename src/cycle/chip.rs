@@ -462,12 +462,17 @@ impl<'a> Chip<'a> {
             .or(Some(u64::MAX))
     }
 
-    /// Skips `n` clocks before [`quiet_until`](Self::quiet_until)'s cycle with the inputs
-    /// `i`: the same state as `n` steps.
-    pub fn skip(&mut self, n: u64, i: &ChipIn) {
+    /// Skips `n` clocks before `until`, [`quiet_until`](Self::quiet_until)'s cycle, with
+    /// the inputs `i`: the same state as `n` steps. The cycle's logic depends on the clock
+    /// only through the times `quiet_until` takes the earliest of, so it is the same until
+    /// then and is evaluated anew only if the skip reaches `until` (most skips end earlier,
+    /// at a memory response: evaluating it was a skip's largest cost).
+    pub fn skip(&mut self, n: u64, until: u64, i: &ChipIn) {
         self.tally(i, n);
         self.now += n;
-        self.logic = self.logic();
+        if self.now >= until {
+            self.logic = self.logic();
+        }
     }
 }
 
