@@ -454,12 +454,16 @@ impl<'a> Chip<'a> {
         let spaced = self.last_issue.map(|t| t + self.p.issue_spacing as u64);
         let slot = self.tri.next_slot(self.now).filter(|_| c.tri_in);
         let dop_slot = self.dop.next_slot(self.now).filter(|_| c.cur.is_some());
-        [self.dop.next_out(), self.leaf_fifo.next_out(), self.tri.next_out(), spaced, slot, dop_slot]
-            .into_iter()
-            .flatten()
-            .filter(|&t| t > self.now)
-            .min()
-            .or(Some(u64::MAX))
+        // the earliest, written out: `min` over the array was a call of its own, a tenth of
+        // a skip (most skips are of one clock)
+        let mut until = u64::MAX;
+        for t in [self.dop.next_out(), self.leaf_fifo.next_out(), self.tri.next_out(), spaced, slot, dop_slot] {
+            until = match t {
+                Some(t) if t > self.now => until.min(t),
+                _ => until,
+            };
+        }
+        Some(until)
     }
 
     /// Skips `n` clocks before `until`, [`quiet_until`](Self::quiet_until)'s cycle, with
