@@ -46,7 +46,8 @@ impl<'a> DopUnit<'a> {
 
     /// `in_ready` in cycle `now`: the folded unit's counter is 0 (always, unfolded).
     pub fn in_ready(&self, now: u64) -> bool {
-        self.first.is_none_or(|t0| (now - t0) % self.interval == 0)
+        // unfolded without a division: this is asked every clock
+        self.interval == 1 || self.first.is_none_or(|t0| (now - t0) % self.interval == 0)
     }
 
     /// The first cycle after `now` where the folded unit's counter is 0 again, if it runs.

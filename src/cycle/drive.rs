@@ -27,7 +27,8 @@ impl Default for Reader {
 
 impl Reader {
     pub fn ready(&self, cyc: u64) -> bool {
-        cyc % self.period.max(1) as u64 == 0
+        // period 1 (every cycle) without a division: this is asked every clock
+        self.period <= 1 || cyc % self.period as u64 == 0
     }
 
     /// The first cycle from `cyc` on in which the host reads.

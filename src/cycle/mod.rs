@@ -75,7 +75,7 @@ pub fn run_query(
         let mut skip = |c: &mut chip::Chip, i: &ChipIn, max: u64| match c.quiet_until(i) {
             Some(t) => {
                 let n = t.saturating_sub(c.now()).min(max);
-                c.skip(n, i);
+                c.skip(n, t, i);
                 n
             }
             None => 0,

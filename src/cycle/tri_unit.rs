@@ -68,7 +68,8 @@ impl<'a> TriUnit<'a> {
     /// `in_ready` in cycle `now`: the result FIFO has room for one more pair, and the
     /// folded unit's counter is 0.
     pub fn in_ready(&self, now: u64) -> bool {
-        self.open.has_room() && self.first.is_none_or(|t0| (now - t0) % self.interval == 0)
+        // unfolded without a division: this is asked every clock
+        self.open.has_room() && (self.interval == 1 || self.first.is_none_or(|t0| (now - t0) % self.interval == 0))
     }
 
     /// The first cycle after `now` where the folded unit's counter is 0 again, if it runs.
