@@ -2,11 +2,12 @@
 //! T.CHECK decided with the enclosure of its certificate, docs/ACCURACY.md) run beside the
 //! bit-exact path, and every decision is compared (a difference panics inside the query).
 //! Run on random soups, the vendored meshes and the hard-case catalogue, in binary32, the
-//! reduced format and e5m4, both DOP roundings, every traversal.
+//! reduced format and e5m4, both DOP roundings, T.CHECK rounding to nearest and directed
+//! (every mode on soups, upward on meshes too), every traversal.
 
 use collision_chip::chip::config::{ChipConfig, DopRounding, SUPPORTED_K};
 use collision_chip::chip::reg::Mode;
-use collision_chip::format::Format;
+use collision_chip::format::{Format, Rounding};
 use collision_chip::golden::enclosure::force_check;
 use collision_chip::mesh;
 use collision_chip::pose::{sweep_poses, Pose, Sweep};
@@ -27,12 +28,14 @@ proptest! {
         rot in prop::array::uniform3(-180.0..180.0f64), t in prop::array::uniform3(-0.6..0.6f64),
         k in prop::sample::select(SUPPORTED_K.to_vec()), format in 0usize..3, outward in any::<bool>(),
         traversal in prop::sample::select(Traversal::ALL.to_vec()),
+        tri_rounding in prop::sample::select(vec![Rounding::NearestEven, Rounding::TowardPositive, Rounding::TowardNegative]),
     ) {
         force_check();
         let cfg = ChipConfig {
             k,
             format: formats()[format].into(),
             dop_rounding: if outward { DopRounding::Outward } else { DopRounding::NearestEven },
+            tri_rounding,
             ..Default::default()
         };
         let (a, b) = (mesh::soup(n, seed).triangles_f64(), mesh::soup(n, seed + 1).triangles_f64());
@@ -47,8 +50,8 @@ fn fast_paths_equal_the_bit_exact_path_on_meshes() {
     let poses = sweep_poses(&Sweep { distances: vec![2.2, 1.4, 1.0, 0.6], orientations: 2, seed: 3 }).unwrap();
     for name in ["bunny", "teapot", "dragon-11k"] {
         let tris = mesh::resolve(name).unwrap().scaled_into_unit_cube().unwrap().triangles_f64();
-        for format in formats() {
-            let chip = Chip::new(&tris, &tris, ChipConfig { format: format.into(), ..Default::default() }).unwrap();
+        for (format, tri_rounding) in formats().into_iter().flat_map(|f| [(f, Rounding::NearestEven), (f, Rounding::TowardPositive)]) {
+            let chip = Chip::new(&tris, &tris, ChipConfig { format: format.into(), tri_rounding, ..Default::default() }).unwrap();
             for sp in &poses {
                 chip.query(&sp.pose, Mode::All, Traversal::Lifo);
             }

@@ -26,6 +26,9 @@ pub struct Upper {
     /// subnormal.
     gap_rel: f64,
     gap_abs: f64,
+    /// [`Upper::round_rel`] and [`Upper::value_limit`].
+    round_rel: f64,
+    value_limit: f64,
 }
 
 impl Upper {
@@ -38,7 +41,32 @@ impl Upper {
             limit: f.max_finite(),
             gap_rel: 3.0 * u + 3.0 * u * u + u * u * u + p2(-49),
             gap_abs: 7.0 * f.min_positive_subnormal(),
+            round_rel: 2.0 * u + u * u + p2(-51),
+            value_limit: p2(f.max_finite().log2().floor() as i32 / 2 - 3),
         }
+    }
+
+    /// 2u + u^2 + 2^-51 (u = 2^-F, exact in f64): per unit of its operands' magnitudes, the
+    /// chip's rounding of a product and a sum after it (any mode, above underflow) plus
+    /// f64's rounding of the same two operations (docs/ACCURACY.md, "Values in f64").
+    #[inline(always)]
+    pub fn round_rel(&self) -> f64 {
+        self.round_rel
+    }
+
+    /// [`Upper::dot_gap`]'s absolute term (7 times the smallest subnormal), which also covers
+    /// the underflow of a's and b's two products.
+    #[inline(always)]
+    pub fn gap_abs(&self) -> f64 {
+        self.gap_abs
+    }
+
+    /// Whether `x` (an upper bound of a mapped coordinate's magnitude) is at most
+    /// 2^(floor(emax / 2) - 3): then no product of two such values, no difference of two
+    /// products and no s can overflow (docs/ACCURACY.md, "Values in f64").
+    #[inline(always)]
+    pub fn value_fits(&self, x: f64) -> bool {
+        x <= self.value_limit
     }
 
     /// An upper bound of the distance between the chip's value of a dot product

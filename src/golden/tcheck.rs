@@ -143,100 +143,116 @@ pub fn stage1_hi(f: Format, r: Rounding, up: &Upper, leaf: &TriWord, frame: &Aff
     Stage1Hi { mb, mag, a_err, scale, fits: fits & up.fits(a_err) }
 }
 
-/// T.CHECK's verdict decided with the chip's values and upper enclosures of its bounds
-/// (docs/ACCURACY.md, "Deciding T.CHECK in f64"): `Some` only where it equals
-/// `edges(..).result()` of the same inputs, `None` where the enclosure cannot tell (the
-/// caller then takes the bit-exact path). A sign is sure when the value lies beyond the
-/// enclosure of its bound (then beyond the chip's bound too), otherwise taken as unknown;
-/// Kleene logic is monotone (an unknown input that becomes known never changes a decided
-/// output), so a decided verdict is the chip's.
-pub fn decide(f: Format, r: Rounding, cert: &Certificate, up: &Upper, s1: &Stage1Hi, tri: &TriWord) -> Option<bool> {
+/// One mapped vertex as [`decide`] sees it (docs/ACCURACY.md, "Values in f64"): each
+/// coordinate's f64 value `c`, within a proven gap of the chip's; `abs` >= both |c| and the
+/// chip value's magnitude; and enclosures of the certificate's bounds, each widened by what
+/// the f64 values may be off: `ep` >= E + gap (x, y), `rz` >= E'_z + delta, `h` >= H, `g`
+/// >= G + delta, where delta >= gap_z + round_rel |z|.
+#[derive(Clone, Copy, Default)]
+struct VertexHi {
+    c: [f64; 3],
+    abs: [f64; 3],
+    ep: [f64; 2],
+    rz: f64,
+    h: f64,
+    g: f64,
+}
+
+/// T.CHECK's verdict decided in f64 (docs/ACCURACY.md, "Deciding T.CHECK in f64" and
+/// "Values in f64"): `Some` only where it equals `edges(..).result()` of the same inputs,
+/// `None` where the enclosure cannot tell (the caller then takes the bit-exact path). Every
+/// value the chip computes after stage 1 (the mapped vertices, a, b, r_z, s) is taken in f64
+/// with a proven gap to the chip's, every bound enclosed from above; a sign is sure when
+/// the f64 value lies beyond the bound's enclosure plus the gap (then the chip's value lies
+/// beyond the chip's bound), otherwise taken as unknown. Kleene logic is monotone (an
+/// unknown input that becomes known never changes a decided output), so a decided verdict
+/// is the chip's.
+pub fn decide(cert: &Certificate, up: &Upper, s1: &Stage1Hi, tri: &TriWord) -> Option<bool> {
     let x = tri.v_exact as usize;
-    let mut fits = s1.fits;
-    let (mut v, mut m, mut e1) = ([[0.0; 3]; 3], [[0.0; 3]; 3], [[0.0; 3]; 3]);
-    let (mut err, mut ez, mut g, mut h) = ([0.0; 3], [0.0; 3], [0.0; 3], [0.0; 3]);
     let pa = tri.v.map(|p| p.map(f64::abs));
-    // The bounds in the order of `edges_in`, each operation enclosed. Coordinate i of
-    // mapped vertex k as the chip computes it, and its magnitude enclosed with the input
-    // errors `err` = A' L1(p).
-    let value = |k: usize, i: usize| {
-        let mb = &s1.mb[i];
-        dot(f, r, [mb[0], mb[1], mb[2]], tri.v[k], Some(mb[3]))
+    // Coordinate i of mapped vertex k in f64: its products are exact (format numbers), so
+    // it is within `dot_gap` of the chip's value ("z before the chip's z"). Its magnitude
+    // enclosed with the input errors `err` = A' L1(p).
+    let center = |k: usize, i: usize| {
+        let (m, p) = (&s1.mb[i], tri.v[k]);
+        (m[0] * p[0] + m[1] * p[1]) + (m[2] * p[2] + m[3])
     };
     let magnitude = |k: usize, i: usize, err: f64| {
         let mag = &s1.mag[i];
         dot_hi(up, [mag[0], mag[1], mag[2]], pa[k], Some(up.add(mag[3], err)))
     };
-    // z first: a vertex triangle surely on one side of the plane needs nothing else. z in
-    // f64 first (its products are exact), within `dot_gap` of the chip's z: a sign sure
-    // beyond E_z plus that gap is the chip value's sure sign too, so the chip's z is
-    // computed only if these do not settle it.
-    let mut sz_f64 = [None; 3];
+    // z first: a vertex triangle surely on one side of the plane needs nothing else.
+    let mut fits = s1.fits;
+    let (mut err, mut mz, mut ez, mut cz, mut gz) = ([0.0; 3], [0.0; 3], [0.0; 3], [0.0; 3], [0.0; 3]);
+    let mut sz = [None; 3];
     for k in 0..3 {
         let l1 = up.add(up.add(pa[k][0], pa[k][1]), up.add(pa[k][2], s1.scale));
         err[k] = up.mul(s1.a_err, l1);
-        m[k][2] = magnitude(k, 2, err[k]);
-        ez[k] = up.scale(m[k][2], cert.c_e[x]);
-        let mb = &s1.mb[2];
-        let z = (mb[0] * tri.v[k][0] + mb[1] * tri.v[k][1]) + (mb[2] * tri.v[k][2] + mb[3]);
-        sz_f64[k] = sign(z, up.add(ez[k], up.dot_gap(m[k][2])));
-        fits &= up.fits(l1) & up.fits(m[k][2]) & up.fits(ez[k]);
+        mz[k] = magnitude(k, 2, err[k]);
+        ez[k] = up.scale(mz[k], cert.c_e[x]);
+        (cz[k], gz[k]) = (center(k, 2), up.dot_gap(mz[k]));
+        sz[k] = sign(cz[k], up.add(ez[k], gz[k]));
+        fits &= up.fits(l1) & up.fits(mz[k]) & up.fits(ez[k]);
     }
     if !fits {
         return None;
     }
-    if sz_f64[0].is_some() && sz_f64[0] == sz_f64[1] && sz_f64[1] == sz_f64[2] {
-        return Some(false);
-    }
-    for k in 0..3 {
-        v[k][2] = value(k, 2);
-        fits &= up.fits(v[k][2]);
-    }
-    if !fits {
-        return None;
-    }
-    let sz = [0, 1, 2].map(|k| sign(v[k][2], ez[k]));
     if sz[0].is_some() && sz[0] == sz[1] && sz[1] == sz[2] {
         return Some(false);
     }
-    for k in 0..3 {
+    let mut v = [VertexHi::default(); 3];
+    for (k, vk) in v.iter_mut().enumerate() {
+        let az = up.add(cz[k].abs(), gz[k]);
+        let delta = up.add(gz[k], up.mul(az, up.round_rel()));
+        vk.c[2] = cz[k];
+        vk.abs[2] = az;
+        vk.rz = up.add(up.scale(mz[k], cert.c_z[x]), delta);
+        vk.h = up.add(az, 2.0 * ez[k]);
+        vk.g = up.add(up.add(ez[k], up.scale(az, cert.c_s)), delta);
         for i in 0..2 {
-            (v[k][i], m[k][i]) = (value(k, i), magnitude(k, i, err[k]));
+            let m = magnitude(k, i, err[k]);
+            let gap = up.dot_gap(m);
+            vk.c[i] = center(k, i);
+            vk.abs[i] = up.add(vk.c[i].abs(), gap);
+            vk.ep[i] = up.add(up.scale(m, cert.c_e[x]), gap);
+            fits &= up.fits(m) & up.fits(vk.ep[i]);
         }
-        for i in 0..3 {
-            e1[k][i] = up.scale(m[k][i], if i < 2 { cert.c_e[x] } else { cert.c_z[x] });
-            fits &= up.fits(v[k][i]) & up.fits(m[k][i]) & up.fits(e1[k][i]);
-        }
-        g[k] = up.add(ez[k], up.scale(v[k][2].abs(), cert.c_s));
-        h[k] = up.add(v[k][2].abs(), 2.0 * ez[k]);
-        fits &= up.fits(g[k]) & up.fits(h[k]);
+        fits &= vk.abs.iter().all(|&a| up.value_fits(a)) & up.fits(vk.rz) & up.fits(vk.h) & up.fits(vk.g);
     }
     if !fits {
         return None;
     }
+    edges_hi(cert, up, &v, sz)
+}
+
+/// [`decide`]'s stages 3-5 on the vertices in f64: per edge, a, b, r_z and s in f64 and an
+/// enclosure of each one's bound plus its gap (the same expression tree as the chip's bound,
+/// on the widened vertex bounds).
+fn edges_hi(cert: &Certificate, up: &Upper, v: &[VertexHi; 3], sz: [Option<bool>; 3]) -> Option<bool> {
     let up_signs = [false, true, true, true, true, false];
     let down_signs = [true, false, false, false, false, true];
     let mut verdict = Some(false);
     for e in 0..3 {
-        let (p, q) = (e, (e + 1) % 3);
-        let (sp, sq) = (sz[p], sz[q]);
+        let (p, q) = (&v[e], &v[(e + 1) % 3]);
+        let (sp, sq) = (sz[e], sz[(e + 1) % 3]);
         if sp.is_some() && sp == sq {
             continue;
         }
         let cross = |i: usize| {
-            let x = f.sub(f.mul(v[p][i], v[q][2], r), f.mul(v[q][i], v[p][2], r), r);
-            let pq = up.add(up.mul(e1[p][i], h[q]), up.mul(v[p][i].abs(), g[q]));
-            let qp = up.add(up.mul(e1[q][i], h[p]), up.mul(v[q][i].abs(), g[p]));
-            (x, up.add(pq, qp))
+            let x = p.c[i] * q.c[2] - q.c[i] * p.c[2];
+            let pq = up.add(up.mul(p.ep[i], q.h), up.mul(p.abs[i], q.g));
+            let qp = up.add(up.mul(q.ep[i], p.h), up.mul(q.abs[i], p.g));
+            (x, up.add(up.add(pq, qp), up.gap_abs()))
         };
         let (a, a_bound) = cross(0);
         let (b, b_bound) = cross(1);
-        let rz = f.sub(v[q][2], v[p][2], r);
-        let rz_bound = up.add(e1[q][2], e1[p][2]);
-        let s = f.sub(f.add(a, b, r), rz, r);
-        let s_sum = up.add(up.add(a.abs(), b.abs()), rz.abs());
-        let s_bound = up.add(up.add(a_bound, b_bound), up.add(rz_bound, up.scale(s_sum, cert.c_s)));
-        if !(up.fits(a) & up.fits(b) & up.fits(rz) & up.fits(s) & up.fits(s_sum) & up.fits(s_bound)) {
+        let rz = q.c[2] - p.c[2];
+        let rz_bound = up.add(q.rz, p.rz);
+        let s = (a + b) - rz;
+        let s_sum = up.add(up.add(up.add(a.abs(), a_bound), up.add(b.abs(), b_bound)), up.add(rz.abs(), rz_bound));
+        let s_round = up.add(up.scale(s_sum, cert.c_s), up.mul(s_sum, up.round_rel()));
+        let s_bound = up.add(up.add(a_bound, b_bound), up.add(rz_bound, s_round));
+        if !(up.fits(a_bound) & up.fits(b_bound) & up.fits(s_bound)) {
             return None;
         }
         let signs = [sp, sq, sign(rz, rz_bound), sign(a, a_bound), sign(b, b_bound), sign(s, s_bound)];

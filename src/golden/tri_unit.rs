@@ -137,7 +137,7 @@ impl<'a> TriUnit<'a> {
         let (frame, beta, scale) = setup.tri_frame(ab);
         let cache = if ab { &mut self.mb_b } else { &mut self.mb_a };
         let s1 = cache.get(t, || stage1_hi(f, r, &up, leaf, frame, beta, scale));
-        let fast = decide(f, r, &self.cert, &up, &s1.hi, v);
+        let fast = decide(&self.cert, &up, &s1.hi, v);
         if fast.is_some() && !checking() {
             return fast;
         }
