@@ -162,7 +162,7 @@ fn accuracy_pareto_front() {
     let sweep = Sweep { distances: vec![1.2], orientations: 2, seed: 1 };
     let formats = vec![Format::BINARY32.into(), "e8m10".parse().unwrap()];
     // the papers' clock: e8m10 has no RTL unit to take a period from
-    let plan = |ks: Vec<usize>, bus_bits| accuracy::Plan { meshes: vec!["teapot".into()], presets: vec![Preset::Rtl], ks, formats: formats.clone(), roundings: vec![DopRounding::Outward], sweep: sweep.clone(), bus_bits, technology: Technology::Paper };
+    let plan = |ks: Vec<usize>, bus_bits| accuracy::Plan { meshes: vec!["teapot".into()], presets: vec![Preset::Rtl], ks, formats: formats.clone(), roundings: vec![DopRounding::Outward], sweep: sweep.clone(), bus_bits, technology: Technology::Paper, folds: vec![Folds::NONE] };
     let rows = accuracy::study(&plan(vec![6, 24], None), 0, &tris, accuracy::Shard::ALL, || {}).unwrap();
     assert_eq!(rows.len(), 4);
     assert!(rows.iter().all(|r| r.sums.queries == 2 && r.sums.cycles > 0 && r.sums.misses == 0));
