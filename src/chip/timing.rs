@@ -170,11 +170,6 @@ fn stand_in(cfg: &ChipConfig, folds: Folds, unit: &str) -> Option<String> {
     }
 }
 
-/// The unit a `measured` candidate names: `u`, or the folded unit in `s (for u)`.
-fn units_name(name: &str) -> String {
-    name.rsplit_once(" (for ").map_or(name, |(_, u)| u.trim_end_matches(')')).to_string()
-}
-
 /// The chip's name: the RTL's where it builds `cfg` with `folds`, else as `rtl_chips!`
 /// would name it.
 fn chip_name(cfg: &ChipConfig, folds: Folds) -> String {
@@ -235,16 +230,15 @@ impl Clock {
     pub fn measured(table: &Table, cfg: &ChipConfig, folds: Folds) -> Option<Clock> {
         let (mut slowest, mut not_measured) = (None::<(String, f64)>, vec![]);
         for u in units(cfg, folds) {
-            let (name, ns) = match (table.periods.get(&u), stand_in(cfg, folds, &u)) {
-                (Some(&ns), _) => (u, ns),
-                (None, Some(s)) if table.periods.contains_key(&s) => (format!("{s} (for {u})"), table.periods[&s]),
-                (None, _) => (u, f64::NAN),
-            };
-            if ns.is_nan() || name.ends_with(')') {
-                not_measured.push(units_name(&name));
+            let own = table.periods.get(&u).map(|&ns| (u.clone(), ns));
+            if own.is_none() {
+                not_measured.push(u.clone());
             }
-            if !ns.is_nan() && slowest.as_ref().is_none_or(|s| ns > s.1) {
-                slowest = Some((name, ns));
+            let stood = || stand_in(cfg, folds, &u).and_then(|s| table.periods.get(&s).map(|&ns| (format!("{s} (for {u})"), ns)));
+            if let Some((name, ns)) = own.or_else(stood) {
+                if slowest.as_ref().is_none_or(|s| ns > s.1) {
+                    slowest = Some((name, ns));
+                }
             }
         }
         let (unit, ns) = slowest?;
