@@ -1498,156 +1498,6 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
     reg  [7:0] counter$d;
     wire  [7:0] counter$q;
     reg  counter$clock;
-    reg  [7:0] ctr$0$d;
-    wire  [7:0] ctr$0$q;
-    reg  ctr$0$clock;
-    reg  [7:0] ctr$1$d;
-    wire  [7:0] ctr$1$q;
-    reg  ctr$1$clock;
-    reg  [7:0] ctr$2$d;
-    wire  [7:0] ctr$2$q;
-    reg  ctr$2$clock;
-    reg  [7:0] ctr$3$d;
-    wire  [7:0] ctr$3$q;
-    reg  ctr$3$clock;
-    reg  [7:0] ctr$4$d;
-    wire  [7:0] ctr$4$q;
-    reg  ctr$4$clock;
-    reg  [7:0] ctr$5$d;
-    wire  [7:0] ctr$5$q;
-    reg  ctr$5$clock;
-    reg  [7:0] ctr$6$d;
-    wire  [7:0] ctr$6$q;
-    reg  ctr$6$clock;
-    reg  [7:0] ctr$7$d;
-    wire  [7:0] ctr$7$q;
-    reg  ctr$7$clock;
-    reg  [7:0] ctr$8$d;
-    wire  [7:0] ctr$8$q;
-    reg  ctr$8$clock;
-    reg  [7:0] ctr$9$d;
-    wire  [7:0] ctr$9$q;
-    reg  ctr$9$clock;
-    reg  [7:0] ctr$10$d;
-    wire  [7:0] ctr$10$q;
-    reg  ctr$10$clock;
-    reg  [7:0] ctr$11$d;
-    wire  [7:0] ctr$11$q;
-    reg  ctr$11$clock;
-    reg  [7:0] ctr$12$d;
-    wire  [7:0] ctr$12$q;
-    reg  ctr$12$clock;
-    reg  [7:0] ctr$13$d;
-    wire  [7:0] ctr$13$q;
-    reg  ctr$13$clock;
-    reg  [7:0] ctr$14$d;
-    wire  [7:0] ctr$14$q;
-    reg  ctr$14$clock;
-    reg  [7:0] ctr$15$d;
-    wire  [7:0] ctr$15$q;
-    reg  ctr$15$clock;
-    reg  [7:0] ctr$16$d;
-    wire  [7:0] ctr$16$q;
-    reg  ctr$16$clock;
-    reg  [7:0] ctr$17$d;
-    wire  [7:0] ctr$17$q;
-    reg  ctr$17$clock;
-    reg  [7:0] ctr$18$d;
-    wire  [7:0] ctr$18$q;
-    reg  ctr$18$clock;
-    reg  [7:0] ctr$19$d;
-    wire  [7:0] ctr$19$q;
-    reg  ctr$19$clock;
-    reg  [7:0] ctr$20$d;
-    wire  [7:0] ctr$20$q;
-    reg  ctr$20$clock;
-    reg  [7:0] ctr$21$d;
-    wire  [7:0] ctr$21$q;
-    reg  ctr$21$clock;
-    reg  [7:0] ctr$22$d;
-    wire  [7:0] ctr$22$q;
-    reg  ctr$22$clock;
-    reg  [7:0] ctr$23$d;
-    wire  [7:0] ctr$23$q;
-    reg  ctr$23$clock;
-    reg  [7:0] ctr$24$d;
-    wire  [7:0] ctr$24$q;
-    reg  ctr$24$clock;
-    reg  [7:0] ctr$25$d;
-    wire  [7:0] ctr$25$q;
-    reg  ctr$25$clock;
-    reg  [7:0] ctr$26$d;
-    wire  [7:0] ctr$26$q;
-    reg  ctr$26$clock;
-    reg  [7:0] ctr$27$d;
-    wire  [7:0] ctr$27$q;
-    reg  ctr$27$clock;
-    reg  [7:0] ctr$28$d;
-    wire  [7:0] ctr$28$q;
-    reg  ctr$28$clock;
-    reg  [7:0] ctr$29$d;
-    wire  [7:0] ctr$29$q;
-    reg  ctr$29$clock;
-    reg  [7:0] ctr$30$d;
-    wire  [7:0] ctr$30$q;
-    reg  ctr$30$clock;
-    reg  [7:0] ctr$31$d;
-    wire  [7:0] ctr$31$q;
-    reg  ctr$31$clock;
-    reg  [7:0] ctr$32$d;
-    wire  [7:0] ctr$32$q;
-    reg  ctr$32$clock;
-    reg  [7:0] ctr$33$d;
-    wire  [7:0] ctr$33$q;
-    reg  ctr$33$clock;
-    reg  [7:0] ctr$34$d;
-    wire  [7:0] ctr$34$q;
-    reg  ctr$34$clock;
-    reg  [7:0] ctr$35$d;
-    wire  [7:0] ctr$35$q;
-    reg  ctr$35$clock;
-    reg  [7:0] ctr$36$d;
-    wire  [7:0] ctr$36$q;
-    reg  ctr$36$clock;
-    reg  [7:0] ctr$37$d;
-    wire  [7:0] ctr$37$q;
-    reg  ctr$37$clock;
-    reg  [7:0] ctr$38$d;
-    wire  [7:0] ctr$38$q;
-    reg  ctr$38$clock;
-    reg  [7:0] ctr$39$d;
-    wire  [7:0] ctr$39$q;
-    reg  ctr$39$clock;
-    reg  [7:0] ctr$40$d;
-    wire  [7:0] ctr$40$q;
-    reg  ctr$40$clock;
-    reg  [7:0] ctr$41$d;
-    wire  [7:0] ctr$41$q;
-    reg  ctr$41$clock;
-    reg  [7:0] ctr$42$d;
-    wire  [7:0] ctr$42$q;
-    reg  ctr$42$clock;
-    reg  [7:0] ctr$43$d;
-    wire  [7:0] ctr$43$q;
-    reg  ctr$43$clock;
-    reg  [7:0] ctr$44$d;
-    wire  [7:0] ctr$44$q;
-    reg  ctr$44$clock;
-    reg  [7:0] ctr$45$d;
-    wire  [7:0] ctr$45$q;
-    reg  ctr$45$clock;
-    reg  [7:0] ctr$46$d;
-    wire  [7:0] ctr$46$q;
-    reg  ctr$46$clock;
-    reg  [7:0] ctr$47$d;
-    wire  [7:0] ctr$47$q;
-    reg  ctr$47$clock;
-    reg  [7:0] ctr$48$d;
-    wire  [7:0] ctr$48$q;
-    reg  ctr$48$clock;
-    reg  [7:0] ctr$49$d;
-    wire  [7:0] ctr$49$q;
-    reg  ctr$49$clock;
     reg  [31:0] regs$0$d;
     wire  [31:0] regs$0$q;
     reg  regs$0$clock;
@@ -3820,256 +3670,6 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
         .d(counter$d),
         .q(counter$q),
         .clock(counter$clock)
-    );
-    top$counter ctr$0(
-        .d(ctr$0$d),
-        .q(ctr$0$q),
-        .clock(ctr$0$clock)
-    );
-    top$counter ctr$1(
-        .d(ctr$1$d),
-        .q(ctr$1$q),
-        .clock(ctr$1$clock)
-    );
-    top$counter ctr$2(
-        .d(ctr$2$d),
-        .q(ctr$2$q),
-        .clock(ctr$2$clock)
-    );
-    top$counter ctr$3(
-        .d(ctr$3$d),
-        .q(ctr$3$q),
-        .clock(ctr$3$clock)
-    );
-    top$counter ctr$4(
-        .d(ctr$4$d),
-        .q(ctr$4$q),
-        .clock(ctr$4$clock)
-    );
-    top$counter ctr$5(
-        .d(ctr$5$d),
-        .q(ctr$5$q),
-        .clock(ctr$5$clock)
-    );
-    top$counter ctr$6(
-        .d(ctr$6$d),
-        .q(ctr$6$q),
-        .clock(ctr$6$clock)
-    );
-    top$counter ctr$7(
-        .d(ctr$7$d),
-        .q(ctr$7$q),
-        .clock(ctr$7$clock)
-    );
-    top$counter ctr$8(
-        .d(ctr$8$d),
-        .q(ctr$8$q),
-        .clock(ctr$8$clock)
-    );
-    top$counter ctr$9(
-        .d(ctr$9$d),
-        .q(ctr$9$q),
-        .clock(ctr$9$clock)
-    );
-    top$counter ctr$10(
-        .d(ctr$10$d),
-        .q(ctr$10$q),
-        .clock(ctr$10$clock)
-    );
-    top$counter ctr$11(
-        .d(ctr$11$d),
-        .q(ctr$11$q),
-        .clock(ctr$11$clock)
-    );
-    top$counter ctr$12(
-        .d(ctr$12$d),
-        .q(ctr$12$q),
-        .clock(ctr$12$clock)
-    );
-    top$counter ctr$13(
-        .d(ctr$13$d),
-        .q(ctr$13$q),
-        .clock(ctr$13$clock)
-    );
-    top$counter ctr$14(
-        .d(ctr$14$d),
-        .q(ctr$14$q),
-        .clock(ctr$14$clock)
-    );
-    top$counter ctr$15(
-        .d(ctr$15$d),
-        .q(ctr$15$q),
-        .clock(ctr$15$clock)
-    );
-    top$counter ctr$16(
-        .d(ctr$16$d),
-        .q(ctr$16$q),
-        .clock(ctr$16$clock)
-    );
-    top$counter ctr$17(
-        .d(ctr$17$d),
-        .q(ctr$17$q),
-        .clock(ctr$17$clock)
-    );
-    top$counter ctr$18(
-        .d(ctr$18$d),
-        .q(ctr$18$q),
-        .clock(ctr$18$clock)
-    );
-    top$counter ctr$19(
-        .d(ctr$19$d),
-        .q(ctr$19$q),
-        .clock(ctr$19$clock)
-    );
-    top$counter ctr$20(
-        .d(ctr$20$d),
-        .q(ctr$20$q),
-        .clock(ctr$20$clock)
-    );
-    top$counter ctr$21(
-        .d(ctr$21$d),
-        .q(ctr$21$q),
-        .clock(ctr$21$clock)
-    );
-    top$counter ctr$22(
-        .d(ctr$22$d),
-        .q(ctr$22$q),
-        .clock(ctr$22$clock)
-    );
-    top$counter ctr$23(
-        .d(ctr$23$d),
-        .q(ctr$23$q),
-        .clock(ctr$23$clock)
-    );
-    top$counter ctr$24(
-        .d(ctr$24$d),
-        .q(ctr$24$q),
-        .clock(ctr$24$clock)
-    );
-    top$counter ctr$25(
-        .d(ctr$25$d),
-        .q(ctr$25$q),
-        .clock(ctr$25$clock)
-    );
-    top$counter ctr$26(
-        .d(ctr$26$d),
-        .q(ctr$26$q),
-        .clock(ctr$26$clock)
-    );
-    top$counter ctr$27(
-        .d(ctr$27$d),
-        .q(ctr$27$q),
-        .clock(ctr$27$clock)
-    );
-    top$counter ctr$28(
-        .d(ctr$28$d),
-        .q(ctr$28$q),
-        .clock(ctr$28$clock)
-    );
-    top$counter ctr$29(
-        .d(ctr$29$d),
-        .q(ctr$29$q),
-        .clock(ctr$29$clock)
-    );
-    top$counter ctr$30(
-        .d(ctr$30$d),
-        .q(ctr$30$q),
-        .clock(ctr$30$clock)
-    );
-    top$counter ctr$31(
-        .d(ctr$31$d),
-        .q(ctr$31$q),
-        .clock(ctr$31$clock)
-    );
-    top$counter ctr$32(
-        .d(ctr$32$d),
-        .q(ctr$32$q),
-        .clock(ctr$32$clock)
-    );
-    top$counter ctr$33(
-        .d(ctr$33$d),
-        .q(ctr$33$q),
-        .clock(ctr$33$clock)
-    );
-    top$counter ctr$34(
-        .d(ctr$34$d),
-        .q(ctr$34$q),
-        .clock(ctr$34$clock)
-    );
-    top$counter ctr$35(
-        .d(ctr$35$d),
-        .q(ctr$35$q),
-        .clock(ctr$35$clock)
-    );
-    top$counter ctr$36(
-        .d(ctr$36$d),
-        .q(ctr$36$q),
-        .clock(ctr$36$clock)
-    );
-    top$counter ctr$37(
-        .d(ctr$37$d),
-        .q(ctr$37$q),
-        .clock(ctr$37$clock)
-    );
-    top$counter ctr$38(
-        .d(ctr$38$d),
-        .q(ctr$38$q),
-        .clock(ctr$38$clock)
-    );
-    top$counter ctr$39(
-        .d(ctr$39$d),
-        .q(ctr$39$q),
-        .clock(ctr$39$clock)
-    );
-    top$counter ctr$40(
-        .d(ctr$40$d),
-        .q(ctr$40$q),
-        .clock(ctr$40$clock)
-    );
-    top$counter ctr$41(
-        .d(ctr$41$d),
-        .q(ctr$41$q),
-        .clock(ctr$41$clock)
-    );
-    top$counter ctr$42(
-        .d(ctr$42$d),
-        .q(ctr$42$q),
-        .clock(ctr$42$clock)
-    );
-    top$counter ctr$43(
-        .d(ctr$43$d),
-        .q(ctr$43$q),
-        .clock(ctr$43$clock)
-    );
-    top$counter ctr$44(
-        .d(ctr$44$d),
-        .q(ctr$44$q),
-        .clock(ctr$44$clock)
-    );
-    top$counter ctr$45(
-        .d(ctr$45$d),
-        .q(ctr$45$q),
-        .clock(ctr$45$clock)
-    );
-    top$counter ctr$46(
-        .d(ctr$46$d),
-        .q(ctr$46$q),
-        .clock(ctr$46$clock)
-    );
-    top$counter ctr$47(
-        .d(ctr$47$d),
-        .q(ctr$47$q),
-        .clock(ctr$47$clock)
-    );
-    top$counter ctr$48(
-        .d(ctr$48$d),
-        .q(ctr$48$q),
-        .clock(ctr$48$clock)
-    );
-    top$counter ctr$49(
-        .d(ctr$49$d),
-        .q(ctr$49$q),
-        .clock(ctr$49$clock)
     );
     top$frame$0 regs$0(
         .d(regs$0$d),
@@ -7569,106 +7169,6 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
       run$d = run$q | valid_in;
       counter$clock = clock;
       counter$d = (!(run$q | valid_in) || counter$q == 8'd7) ? 8'd0 : counter$q + 8'd1;
-      ctr$0$clock = clock;
-      ctr$0$d = (!(run$q | valid_in) || ctr$0$q == 8'd7) ? 8'd0 : ctr$0$q + 8'd1;
-      ctr$1$clock = clock;
-      ctr$1$d = (!(run$q | valid_in) || ctr$1$q == 8'd7) ? 8'd0 : ctr$1$q + 8'd1;
-      ctr$2$clock = clock;
-      ctr$2$d = (!(run$q | valid_in) || ctr$2$q == 8'd7) ? 8'd0 : ctr$2$q + 8'd1;
-      ctr$3$clock = clock;
-      ctr$3$d = (!(run$q | valid_in) || ctr$3$q == 8'd7) ? 8'd0 : ctr$3$q + 8'd1;
-      ctr$4$clock = clock;
-      ctr$4$d = (!(run$q | valid_in) || ctr$4$q == 8'd7) ? 8'd0 : ctr$4$q + 8'd1;
-      ctr$5$clock = clock;
-      ctr$5$d = (!(run$q | valid_in) || ctr$5$q == 8'd7) ? 8'd0 : ctr$5$q + 8'd1;
-      ctr$6$clock = clock;
-      ctr$6$d = (!(run$q | valid_in) || ctr$6$q == 8'd7) ? 8'd0 : ctr$6$q + 8'd1;
-      ctr$7$clock = clock;
-      ctr$7$d = (!(run$q | valid_in) || ctr$7$q == 8'd7) ? 8'd0 : ctr$7$q + 8'd1;
-      ctr$8$clock = clock;
-      ctr$8$d = (!(run$q | valid_in) || ctr$8$q == 8'd7) ? 8'd0 : ctr$8$q + 8'd1;
-      ctr$9$clock = clock;
-      ctr$9$d = (!(run$q | valid_in) || ctr$9$q == 8'd7) ? 8'd0 : ctr$9$q + 8'd1;
-      ctr$10$clock = clock;
-      ctr$10$d = (!(run$q | valid_in) || ctr$10$q == 8'd7) ? 8'd0 : ctr$10$q + 8'd1;
-      ctr$11$clock = clock;
-      ctr$11$d = (!(run$q | valid_in) || ctr$11$q == 8'd7) ? 8'd0 : ctr$11$q + 8'd1;
-      ctr$12$clock = clock;
-      ctr$12$d = (!(run$q | valid_in) || ctr$12$q == 8'd7) ? 8'd0 : ctr$12$q + 8'd1;
-      ctr$13$clock = clock;
-      ctr$13$d = (!(run$q | valid_in) || ctr$13$q == 8'd7) ? 8'd0 : ctr$13$q + 8'd1;
-      ctr$14$clock = clock;
-      ctr$14$d = (!(run$q | valid_in) || ctr$14$q == 8'd7) ? 8'd0 : ctr$14$q + 8'd1;
-      ctr$15$clock = clock;
-      ctr$15$d = (!(run$q | valid_in) || ctr$15$q == 8'd7) ? 8'd0 : ctr$15$q + 8'd1;
-      ctr$16$clock = clock;
-      ctr$16$d = (!(run$q | valid_in) || ctr$16$q == 8'd7) ? 8'd0 : ctr$16$q + 8'd1;
-      ctr$17$clock = clock;
-      ctr$17$d = (!(run$q | valid_in) || ctr$17$q == 8'd7) ? 8'd0 : ctr$17$q + 8'd1;
-      ctr$18$clock = clock;
-      ctr$18$d = (!(run$q | valid_in) || ctr$18$q == 8'd7) ? 8'd0 : ctr$18$q + 8'd1;
-      ctr$19$clock = clock;
-      ctr$19$d = (!(run$q | valid_in) || ctr$19$q == 8'd7) ? 8'd0 : ctr$19$q + 8'd1;
-      ctr$20$clock = clock;
-      ctr$20$d = (!(run$q | valid_in) || ctr$20$q == 8'd7) ? 8'd0 : ctr$20$q + 8'd1;
-      ctr$21$clock = clock;
-      ctr$21$d = (!(run$q | valid_in) || ctr$21$q == 8'd7) ? 8'd0 : ctr$21$q + 8'd1;
-      ctr$22$clock = clock;
-      ctr$22$d = (!(run$q | valid_in) || ctr$22$q == 8'd7) ? 8'd0 : ctr$22$q + 8'd1;
-      ctr$23$clock = clock;
-      ctr$23$d = (!(run$q | valid_in) || ctr$23$q == 8'd7) ? 8'd0 : ctr$23$q + 8'd1;
-      ctr$24$clock = clock;
-      ctr$24$d = (!(run$q | valid_in) || ctr$24$q == 8'd7) ? 8'd0 : ctr$24$q + 8'd1;
-      ctr$25$clock = clock;
-      ctr$25$d = (!(run$q | valid_in) || ctr$25$q == 8'd7) ? 8'd0 : ctr$25$q + 8'd1;
-      ctr$26$clock = clock;
-      ctr$26$d = (!(run$q | valid_in) || ctr$26$q == 8'd7) ? 8'd0 : ctr$26$q + 8'd1;
-      ctr$27$clock = clock;
-      ctr$27$d = (!(run$q | valid_in) || ctr$27$q == 8'd7) ? 8'd0 : ctr$27$q + 8'd1;
-      ctr$28$clock = clock;
-      ctr$28$d = (!(run$q | valid_in) || ctr$28$q == 8'd7) ? 8'd0 : ctr$28$q + 8'd1;
-      ctr$29$clock = clock;
-      ctr$29$d = (!(run$q | valid_in) || ctr$29$q == 8'd7) ? 8'd0 : ctr$29$q + 8'd1;
-      ctr$30$clock = clock;
-      ctr$30$d = (!(run$q | valid_in) || ctr$30$q == 8'd7) ? 8'd0 : ctr$30$q + 8'd1;
-      ctr$31$clock = clock;
-      ctr$31$d = (!(run$q | valid_in) || ctr$31$q == 8'd7) ? 8'd0 : ctr$31$q + 8'd1;
-      ctr$32$clock = clock;
-      ctr$32$d = (!(run$q | valid_in) || ctr$32$q == 8'd7) ? 8'd0 : ctr$32$q + 8'd1;
-      ctr$33$clock = clock;
-      ctr$33$d = (!(run$q | valid_in) || ctr$33$q == 8'd7) ? 8'd0 : ctr$33$q + 8'd1;
-      ctr$34$clock = clock;
-      ctr$34$d = (!(run$q | valid_in) || ctr$34$q == 8'd7) ? 8'd0 : ctr$34$q + 8'd1;
-      ctr$35$clock = clock;
-      ctr$35$d = (!(run$q | valid_in) || ctr$35$q == 8'd7) ? 8'd0 : ctr$35$q + 8'd1;
-      ctr$36$clock = clock;
-      ctr$36$d = (!(run$q | valid_in) || ctr$36$q == 8'd7) ? 8'd0 : ctr$36$q + 8'd1;
-      ctr$37$clock = clock;
-      ctr$37$d = (!(run$q | valid_in) || ctr$37$q == 8'd7) ? 8'd0 : ctr$37$q + 8'd1;
-      ctr$38$clock = clock;
-      ctr$38$d = (!(run$q | valid_in) || ctr$38$q == 8'd7) ? 8'd0 : ctr$38$q + 8'd1;
-      ctr$39$clock = clock;
-      ctr$39$d = (!(run$q | valid_in) || ctr$39$q == 8'd7) ? 8'd0 : ctr$39$q + 8'd1;
-      ctr$40$clock = clock;
-      ctr$40$d = (!(run$q | valid_in) || ctr$40$q == 8'd7) ? 8'd0 : ctr$40$q + 8'd1;
-      ctr$41$clock = clock;
-      ctr$41$d = (!(run$q | valid_in) || ctr$41$q == 8'd7) ? 8'd0 : ctr$41$q + 8'd1;
-      ctr$42$clock = clock;
-      ctr$42$d = (!(run$q | valid_in) || ctr$42$q == 8'd7) ? 8'd0 : ctr$42$q + 8'd1;
-      ctr$43$clock = clock;
-      ctr$43$d = (!(run$q | valid_in) || ctr$43$q == 8'd7) ? 8'd0 : ctr$43$q + 8'd1;
-      ctr$44$clock = clock;
-      ctr$44$d = (!(run$q | valid_in) || ctr$44$q == 8'd7) ? 8'd0 : ctr$44$q + 8'd1;
-      ctr$45$clock = clock;
-      ctr$45$d = (!(run$q | valid_in) || ctr$45$q == 8'd7) ? 8'd0 : ctr$45$q + 8'd1;
-      ctr$46$clock = clock;
-      ctr$46$d = (!(run$q | valid_in) || ctr$46$q == 8'd7) ? 8'd0 : ctr$46$q + 8'd1;
-      ctr$47$clock = clock;
-      ctr$47$d = (!(run$q | valid_in) || ctr$47$q == 8'd7) ? 8'd0 : ctr$47$q + 8'd1;
-      ctr$48$clock = clock;
-      ctr$48$d = (!(run$q | valid_in) || ctr$48$q == 8'd7) ? 8'd0 : ctr$48$q + 8'd1;
-      ctr$49$clock = clock;
-      ctr$49$d = (!(run$q | valid_in) || ctr$49$q == 8'd7) ? 8'd0 : ctr$49$q + 8'd1;
       regs$0$clock = clock;
       regs$0$d = (counter$q == 8'd0) ? m_0$0 : regs$0$q;
       regs$1$clock = clock;
@@ -7772,1011 +7272,1011 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
       regs$50$clock = clock;
       regs$50$d = (counter$q == 8'd0) ? regs$49$q : regs$50$q;
       regs$51$clock = clock;
-      regs$51$d = (ctr$0$q == 8'd5) ? mul_v$0$y : regs$51$q;
+      regs$51$d = (counter$q == 8'd5) ? mul_v$0$y : regs$51$q;
       regs$52$clock = clock;
-      regs$52$d = (ctr$1$q == 8'd5) ? mul_v$1$y : regs$52$q;
+      regs$52$d = (counter$q == 8'd5) ? mul_v$1$y : regs$52$q;
       regs$53$clock = clock;
-      regs$53$d = (ctr$2$q == 8'd5) ? mul_v$2$y : regs$53$q;
+      regs$53$d = (counter$q == 8'd5) ? mul_v$2$y : regs$53$q;
       regs$54$clock = clock;
-      regs$54$d = (ctr$22$q == 8'd1) ? add_v$0$y : regs$54$q;
+      regs$54$d = (counter$q == 8'd1) ? add_v$0$y : regs$54$q;
       regs$55$clock = clock;
-      regs$55$d = (ctr$22$q == 8'd5) ? add_v$0$y : regs$55$q;
+      regs$55$d = (counter$q == 8'd5) ? add_v$0$y : regs$55$q;
       regs$56$clock = clock;
-      regs$56$d = (ctr$10$q == 8'd5) ? mul_up$0$y : regs$56$q;
+      regs$56$d = (counter$q == 8'd5) ? mul_up$0$y : regs$56$q;
       regs$57$clock = clock;
-      regs$57$d = (ctr$11$q == 8'd5) ? mul_up$1$y : regs$57$q;
+      regs$57$d = (counter$q == 8'd5) ? mul_up$1$y : regs$57$q;
       regs$58$clock = clock;
-      regs$58$d = (ctr$12$q == 8'd5) ? mul_up$2$y : regs$58$q;
+      regs$58$d = (counter$q == 8'd5) ? mul_up$2$y : regs$58$q;
       regs$59$clock = clock;
-      regs$59$d = (ctr$31$q == 8'd1) ? add_up$0$y : regs$59$q;
+      regs$59$d = (counter$q == 8'd1) ? add_up$0$y : regs$59$q;
       regs$60$clock = clock;
-      regs$60$d = (ctr$31$q == 8'd5) ? add_up$0$y : regs$60$q;
+      regs$60$d = (counter$q == 8'd5) ? add_up$0$y : regs$60$q;
       regs$61$clock = clock;
-      regs$61$d = (ctr$3$q == 8'd5) ? mul_v$3$y : regs$61$q;
+      regs$61$d = (counter$q == 8'd5) ? mul_v$3$y : regs$61$q;
       regs$62$clock = clock;
-      regs$62$d = (ctr$4$q == 8'd5) ? mul_v$4$y : regs$62$q;
+      regs$62$d = (counter$q == 8'd5) ? mul_v$4$y : regs$62$q;
       regs$63$clock = clock;
-      regs$63$d = (ctr$5$q == 8'd5) ? mul_v$5$y : regs$63$q;
+      regs$63$d = (counter$q == 8'd5) ? mul_v$5$y : regs$63$q;
       regs$64$clock = clock;
-      regs$64$d = (ctr$23$q == 8'd1) ? add_v$1$y : regs$64$q;
+      regs$64$d = (counter$q == 8'd1) ? add_v$1$y : regs$64$q;
       regs$65$clock = clock;
-      regs$65$d = (ctr$23$q == 8'd5) ? add_v$1$y : regs$65$q;
+      regs$65$d = (counter$q == 8'd5) ? add_v$1$y : regs$65$q;
       regs$66$clock = clock;
-      regs$66$d = (ctr$13$q == 8'd5) ? mul_up$3$y : regs$66$q;
+      regs$66$d = (counter$q == 8'd5) ? mul_up$3$y : regs$66$q;
       regs$67$clock = clock;
-      regs$67$d = (ctr$14$q == 8'd5) ? mul_up$4$y : regs$67$q;
+      regs$67$d = (counter$q == 8'd5) ? mul_up$4$y : regs$67$q;
       regs$68$clock = clock;
-      regs$68$d = (ctr$15$q == 8'd5) ? mul_up$5$y : regs$68$q;
+      regs$68$d = (counter$q == 8'd5) ? mul_up$5$y : regs$68$q;
       regs$69$clock = clock;
-      regs$69$d = (ctr$32$q == 8'd1) ? add_up$1$y : regs$69$q;
+      regs$69$d = (counter$q == 8'd1) ? add_up$1$y : regs$69$q;
       regs$70$clock = clock;
-      regs$70$d = (ctr$32$q == 8'd5) ? add_up$1$y : regs$70$q;
+      regs$70$d = (counter$q == 8'd5) ? add_up$1$y : regs$70$q;
       regs$71$clock = clock;
-      regs$71$d = (ctr$6$q == 8'd5) ? mul_v$6$y : regs$71$q;
+      regs$71$d = (counter$q == 8'd5) ? mul_v$6$y : regs$71$q;
       regs$72$clock = clock;
-      regs$72$d = (ctr$7$q == 8'd5) ? mul_v$7$y : regs$72$q;
+      regs$72$d = (counter$q == 8'd5) ? mul_v$7$y : regs$72$q;
       regs$73$clock = clock;
-      regs$73$d = (ctr$8$q == 8'd5) ? mul_v$8$y : regs$73$q;
+      regs$73$d = (counter$q == 8'd5) ? mul_v$8$y : regs$73$q;
       regs$74$clock = clock;
-      regs$74$d = (ctr$24$q == 8'd1) ? add_v$2$y : regs$74$q;
+      regs$74$d = (counter$q == 8'd1) ? add_v$2$y : regs$74$q;
       regs$75$clock = clock;
-      regs$75$d = (ctr$24$q == 8'd5) ? add_v$2$y : regs$75$q;
+      regs$75$d = (counter$q == 8'd5) ? add_v$2$y : regs$75$q;
       regs$76$clock = clock;
-      regs$76$d = (ctr$16$q == 8'd5) ? mul_up$6$y : regs$76$q;
+      regs$76$d = (counter$q == 8'd5) ? mul_up$6$y : regs$76$q;
       regs$77$clock = clock;
-      regs$77$d = (ctr$17$q == 8'd5) ? mul_up$7$y : regs$77$q;
+      regs$77$d = (counter$q == 8'd5) ? mul_up$7$y : regs$77$q;
       regs$78$clock = clock;
-      regs$78$d = (ctr$18$q == 8'd5) ? mul_up$8$y : regs$78$q;
+      regs$78$d = (counter$q == 8'd5) ? mul_up$8$y : regs$78$q;
       regs$79$clock = clock;
-      regs$79$d = (ctr$33$q == 8'd1) ? add_up$2$y : regs$79$q;
+      regs$79$d = (counter$q == 8'd1) ? add_up$2$y : regs$79$q;
       regs$80$clock = clock;
-      regs$80$d = (ctr$33$q == 8'd5) ? add_up$2$y : regs$80$q;
+      regs$80$d = (counter$q == 8'd5) ? add_up$2$y : regs$80$q;
       regs$81$clock = clock;
-      regs$81$d = (ctr$9$q == 8'd5) ? mul_v$9$y : regs$81$q;
+      regs$81$d = (counter$q == 8'd5) ? mul_v$9$y : regs$81$q;
       regs$82$clock = clock;
-      regs$82$d = (ctr$0$q == 8'd6) ? mul_v$0$y : regs$82$q;
+      regs$82$d = (counter$q == 8'd6) ? mul_v$0$y : regs$82$q;
       regs$83$clock = clock;
-      regs$83$d = (ctr$1$q == 8'd6) ? mul_v$1$y : regs$83$q;
+      regs$83$d = (counter$q == 8'd6) ? mul_v$1$y : regs$83$q;
       regs$84$clock = clock;
-      regs$84$d = (ctr$22$q == 8'd2) ? add_v$0$y : regs$84$q;
+      regs$84$d = (counter$q == 8'd2) ? add_v$0$y : regs$84$q;
       regs$85$clock = clock;
-      regs$85$d = (ctr$23$q == 8'd2) ? add_v$1$y : regs$85$q;
+      regs$85$d = (counter$q == 8'd2) ? add_v$1$y : regs$85$q;
       regs$86$clock = clock;
-      regs$86$d = (ctr$22$q == 8'd6) ? add_v$0$y : regs$86$q;
+      regs$86$d = (counter$q == 8'd6) ? add_v$0$y : regs$86$q;
       regs$87$clock = clock;
-      regs$87$d = (ctr$19$q == 8'd5) ? mul_up$9$y : regs$87$q;
+      regs$87$d = (counter$q == 8'd5) ? mul_up$9$y : regs$87$q;
       regs$88$clock = clock;
-      regs$88$d = (ctr$20$q == 8'd5) ? mul_up$10$y : regs$88$q;
+      regs$88$d = (counter$q == 8'd5) ? mul_up$10$y : regs$88$q;
       regs$89$clock = clock;
-      regs$89$d = (ctr$21$q == 8'd5) ? mul_up$11$y : regs$89$q;
+      regs$89$d = (counter$q == 8'd5) ? mul_up$11$y : regs$89$q;
       regs$90$clock = clock;
-      regs$90$d = (ctr$34$q == 8'd1) ? add_up$3$y : regs$90$q;
+      regs$90$d = (counter$q == 8'd1) ? add_up$3$y : regs$90$q;
       regs$91$clock = clock;
-      regs$91$d = (ctr$35$q == 8'd1) ? add_up$4$y : regs$91$q;
+      regs$91$d = (counter$q == 8'd1) ? add_up$4$y : regs$91$q;
       regs$92$clock = clock;
-      regs$92$d = (ctr$34$q == 8'd5) ? add_up$3$y : regs$92$q;
+      regs$92$d = (counter$q == 8'd5) ? add_up$3$y : regs$92$q;
       regs$93$clock = clock;
-      regs$93$d = (ctr$2$q == 8'd6) ? mul_v$2$y : regs$93$q;
+      regs$93$d = (counter$q == 8'd6) ? mul_v$2$y : regs$93$q;
       regs$94$clock = clock;
-      regs$94$d = (ctr$3$q == 8'd6) ? mul_v$3$y : regs$94$q;
+      regs$94$d = (counter$q == 8'd6) ? mul_v$3$y : regs$94$q;
       regs$95$clock = clock;
-      regs$95$d = (ctr$4$q == 8'd6) ? mul_v$4$y : regs$95$q;
+      regs$95$d = (counter$q == 8'd6) ? mul_v$4$y : regs$95$q;
       regs$96$clock = clock;
-      regs$96$d = (ctr$24$q == 8'd2) ? add_v$2$y : regs$96$q;
+      regs$96$d = (counter$q == 8'd2) ? add_v$2$y : regs$96$q;
       regs$97$clock = clock;
-      regs$97$d = (ctr$23$q == 8'd6) ? add_v$1$y : regs$97$q;
+      regs$97$d = (counter$q == 8'd6) ? add_v$1$y : regs$97$q;
       regs$98$clock = clock;
-      regs$98$d = (ctr$10$q == 8'd6) ? mul_up$0$y : regs$98$q;
+      regs$98$d = (counter$q == 8'd6) ? mul_up$0$y : regs$98$q;
       regs$99$clock = clock;
-      regs$99$d = (ctr$11$q == 8'd6) ? mul_up$1$y : regs$99$q;
+      regs$99$d = (counter$q == 8'd6) ? mul_up$1$y : regs$99$q;
       regs$100$clock = clock;
-      regs$100$d = (ctr$12$q == 8'd6) ? mul_up$2$y : regs$100$q;
+      regs$100$d = (counter$q == 8'd6) ? mul_up$2$y : regs$100$q;
       regs$101$clock = clock;
-      regs$101$d = (ctr$31$q == 8'd2) ? add_up$0$y : regs$101$q;
+      regs$101$d = (counter$q == 8'd2) ? add_up$0$y : regs$101$q;
       regs$102$clock = clock;
-      regs$102$d = (ctr$31$q == 8'd6) ? add_up$0$y : regs$102$q;
+      regs$102$d = (counter$q == 8'd6) ? add_up$0$y : regs$102$q;
       regs$103$clock = clock;
-      regs$103$d = (ctr$5$q == 8'd6) ? mul_v$5$y : regs$103$q;
+      regs$103$d = (counter$q == 8'd6) ? mul_v$5$y : regs$103$q;
       regs$104$clock = clock;
-      regs$104$d = (ctr$6$q == 8'd6) ? mul_v$6$y : regs$104$q;
+      regs$104$d = (counter$q == 8'd6) ? mul_v$6$y : regs$104$q;
       regs$105$clock = clock;
-      regs$105$d = (ctr$7$q == 8'd6) ? mul_v$7$y : regs$105$q;
+      regs$105$d = (counter$q == 8'd6) ? mul_v$7$y : regs$105$q;
       regs$106$clock = clock;
-      regs$106$d = (ctr$25$q == 8'd2) ? add_v$3$y : regs$106$q;
+      regs$106$d = (counter$q == 8'd2) ? add_v$3$y : regs$106$q;
       regs$107$clock = clock;
-      regs$107$d = (ctr$24$q == 8'd6) ? add_v$2$y : regs$107$q;
+      regs$107$d = (counter$q == 8'd6) ? add_v$2$y : regs$107$q;
       regs$108$clock = clock;
-      regs$108$d = (ctr$13$q == 8'd6) ? mul_up$3$y : regs$108$q;
+      regs$108$d = (counter$q == 8'd6) ? mul_up$3$y : regs$108$q;
       regs$109$clock = clock;
-      regs$109$d = (ctr$14$q == 8'd6) ? mul_up$4$y : regs$109$q;
+      regs$109$d = (counter$q == 8'd6) ? mul_up$4$y : regs$109$q;
       regs$110$clock = clock;
-      regs$110$d = (ctr$15$q == 8'd6) ? mul_up$5$y : regs$110$q;
+      regs$110$d = (counter$q == 8'd6) ? mul_up$5$y : regs$110$q;
       regs$111$clock = clock;
-      regs$111$d = (ctr$32$q == 8'd2) ? add_up$1$y : regs$111$q;
+      regs$111$d = (counter$q == 8'd2) ? add_up$1$y : regs$111$q;
       regs$112$clock = clock;
-      regs$112$d = (ctr$32$q == 8'd6) ? add_up$1$y : regs$112$q;
+      regs$112$d = (counter$q == 8'd6) ? add_up$1$y : regs$112$q;
       regs$113$clock = clock;
-      regs$113$d = (ctr$8$q == 8'd6) ? mul_v$8$y : regs$113$q;
+      regs$113$d = (counter$q == 8'd6) ? mul_v$8$y : regs$113$q;
       regs$114$clock = clock;
-      regs$114$d = (ctr$9$q == 8'd6) ? mul_v$9$y : regs$114$q;
+      regs$114$d = (counter$q == 8'd6) ? mul_v$9$y : regs$114$q;
       regs$115$clock = clock;
-      regs$115$d = (ctr$0$q == 8'd7) ? mul_v$0$y : regs$115$q;
+      regs$115$d = (counter$q == 8'd7) ? mul_v$0$y : regs$115$q;
       regs$116$clock = clock;
-      regs$116$d = (ctr$26$q == 8'd2) ? add_v$4$y : regs$116$q;
+      regs$116$d = (counter$q == 8'd2) ? add_v$4$y : regs$116$q;
       regs$117$clock = clock;
-      regs$117$d = (ctr$25$q == 8'd6) ? add_v$3$y : regs$117$q;
+      regs$117$d = (counter$q == 8'd6) ? add_v$3$y : regs$117$q;
       regs$118$clock = clock;
-      regs$118$d = (ctr$16$q == 8'd6) ? mul_up$6$y : regs$118$q;
+      regs$118$d = (counter$q == 8'd6) ? mul_up$6$y : regs$118$q;
       regs$119$clock = clock;
-      regs$119$d = (ctr$17$q == 8'd6) ? mul_up$7$y : regs$119$q;
+      regs$119$d = (counter$q == 8'd6) ? mul_up$7$y : regs$119$q;
       regs$120$clock = clock;
-      regs$120$d = (ctr$18$q == 8'd6) ? mul_up$8$y : regs$120$q;
+      regs$120$d = (counter$q == 8'd6) ? mul_up$8$y : regs$120$q;
       regs$121$clock = clock;
-      regs$121$d = (ctr$33$q == 8'd2) ? add_up$2$y : regs$121$q;
+      regs$121$d = (counter$q == 8'd2) ? add_up$2$y : regs$121$q;
       regs$122$clock = clock;
-      regs$122$d = (ctr$33$q == 8'd6) ? add_up$2$y : regs$122$q;
+      regs$122$d = (counter$q == 8'd6) ? add_up$2$y : regs$122$q;
       regs$123$clock = clock;
-      regs$123$d = (ctr$1$q == 8'd7) ? mul_v$1$y : regs$123$q;
+      regs$123$d = (counter$q == 8'd7) ? mul_v$1$y : regs$123$q;
       regs$124$clock = clock;
-      regs$124$d = (ctr$2$q == 8'd7) ? mul_v$2$y : regs$124$q;
+      regs$124$d = (counter$q == 8'd7) ? mul_v$2$y : regs$124$q;
       regs$125$clock = clock;
-      regs$125$d = (ctr$3$q == 8'd7) ? mul_v$3$y : regs$125$q;
+      regs$125$d = (counter$q == 8'd7) ? mul_v$3$y : regs$125$q;
       regs$126$clock = clock;
-      regs$126$d = (ctr$22$q == 8'd3) ? add_v$0$y : regs$126$q;
+      regs$126$d = (counter$q == 8'd3) ? add_v$0$y : regs$126$q;
       regs$127$clock = clock;
-      regs$127$d = (ctr$23$q == 8'd3) ? add_v$1$y : regs$127$q;
+      regs$127$d = (counter$q == 8'd3) ? add_v$1$y : regs$127$q;
       regs$128$clock = clock;
-      regs$128$d = (ctr$22$q == 8'd7) ? add_v$0$y : regs$128$q;
+      regs$128$d = (counter$q == 8'd7) ? add_v$0$y : regs$128$q;
       regs$129$clock = clock;
-      regs$129$d = (ctr$19$q == 8'd6) ? mul_up$9$y : regs$129$q;
+      regs$129$d = (counter$q == 8'd6) ? mul_up$9$y : regs$129$q;
       regs$130$clock = clock;
-      regs$130$d = (ctr$20$q == 8'd6) ? mul_up$10$y : regs$130$q;
+      regs$130$d = (counter$q == 8'd6) ? mul_up$10$y : regs$130$q;
       regs$131$clock = clock;
-      regs$131$d = (ctr$21$q == 8'd6) ? mul_up$11$y : regs$131$q;
+      regs$131$d = (counter$q == 8'd6) ? mul_up$11$y : regs$131$q;
       regs$132$clock = clock;
-      regs$132$d = (ctr$34$q == 8'd2) ? add_up$3$y : regs$132$q;
+      regs$132$d = (counter$q == 8'd2) ? add_up$3$y : regs$132$q;
       regs$133$clock = clock;
-      regs$133$d = (ctr$35$q == 8'd2) ? add_up$4$y : regs$133$q;
+      regs$133$d = (counter$q == 8'd2) ? add_up$4$y : regs$133$q;
       regs$134$clock = clock;
-      regs$134$d = (ctr$34$q == 8'd6) ? add_up$3$y : regs$134$q;
+      regs$134$d = (counter$q == 8'd6) ? add_up$3$y : regs$134$q;
       regs$135$clock = clock;
-      regs$135$d = (ctr$4$q == 8'd7) ? mul_v$4$y : regs$135$q;
+      regs$135$d = (counter$q == 8'd7) ? mul_v$4$y : regs$135$q;
       regs$136$clock = clock;
-      regs$136$d = (ctr$5$q == 8'd7) ? mul_v$5$y : regs$136$q;
+      regs$136$d = (counter$q == 8'd7) ? mul_v$5$y : regs$136$q;
       regs$137$clock = clock;
-      regs$137$d = (ctr$6$q == 8'd7) ? mul_v$6$y : regs$137$q;
+      regs$137$d = (counter$q == 8'd7) ? mul_v$6$y : regs$137$q;
       regs$138$clock = clock;
-      regs$138$d = (ctr$24$q == 8'd3) ? add_v$2$y : regs$138$q;
+      regs$138$d = (counter$q == 8'd3) ? add_v$2$y : regs$138$q;
       regs$139$clock = clock;
-      regs$139$d = (ctr$23$q == 8'd7) ? add_v$1$y : regs$139$q;
+      regs$139$d = (counter$q == 8'd7) ? add_v$1$y : regs$139$q;
       regs$140$clock = clock;
-      regs$140$d = (ctr$10$q == 8'd7) ? mul_up$0$y : regs$140$q;
+      regs$140$d = (counter$q == 8'd7) ? mul_up$0$y : regs$140$q;
       regs$141$clock = clock;
-      regs$141$d = (ctr$11$q == 8'd7) ? mul_up$1$y : regs$141$q;
+      regs$141$d = (counter$q == 8'd7) ? mul_up$1$y : regs$141$q;
       regs$142$clock = clock;
-      regs$142$d = (ctr$12$q == 8'd7) ? mul_up$2$y : regs$142$q;
+      regs$142$d = (counter$q == 8'd7) ? mul_up$2$y : regs$142$q;
       regs$143$clock = clock;
-      regs$143$d = (ctr$31$q == 8'd3) ? add_up$0$y : regs$143$q;
+      regs$143$d = (counter$q == 8'd3) ? add_up$0$y : regs$143$q;
       regs$144$clock = clock;
-      regs$144$d = (ctr$31$q == 8'd7) ? add_up$0$y : regs$144$q;
+      regs$144$d = (counter$q == 8'd7) ? add_up$0$y : regs$144$q;
       regs$145$clock = clock;
-      regs$145$d = (ctr$7$q == 8'd7) ? mul_v$7$y : regs$145$q;
+      regs$145$d = (counter$q == 8'd7) ? mul_v$7$y : regs$145$q;
       regs$146$clock = clock;
-      regs$146$d = (ctr$8$q == 8'd7) ? mul_v$8$y : regs$146$q;
+      regs$146$d = (counter$q == 8'd7) ? mul_v$8$y : regs$146$q;
       regs$147$clock = clock;
-      regs$147$d = (ctr$9$q == 8'd7) ? mul_v$9$y : regs$147$q;
+      regs$147$d = (counter$q == 8'd7) ? mul_v$9$y : regs$147$q;
       regs$148$clock = clock;
-      regs$148$d = (ctr$25$q == 8'd3) ? add_v$3$y : regs$148$q;
+      regs$148$d = (counter$q == 8'd3) ? add_v$3$y : regs$148$q;
       regs$149$clock = clock;
-      regs$149$d = (ctr$24$q == 8'd7) ? add_v$2$y : regs$149$q;
+      regs$149$d = (counter$q == 8'd7) ? add_v$2$y : regs$149$q;
       regs$150$clock = clock;
-      regs$150$d = (ctr$13$q == 8'd7) ? mul_up$3$y : regs$150$q;
+      regs$150$d = (counter$q == 8'd7) ? mul_up$3$y : regs$150$q;
       regs$151$clock = clock;
-      regs$151$d = (ctr$14$q == 8'd7) ? mul_up$4$y : regs$151$q;
+      regs$151$d = (counter$q == 8'd7) ? mul_up$4$y : regs$151$q;
       regs$152$clock = clock;
-      regs$152$d = (ctr$15$q == 8'd7) ? mul_up$5$y : regs$152$q;
+      regs$152$d = (counter$q == 8'd7) ? mul_up$5$y : regs$152$q;
       regs$153$clock = clock;
-      regs$153$d = (ctr$32$q == 8'd3) ? add_up$1$y : regs$153$q;
+      regs$153$d = (counter$q == 8'd3) ? add_up$1$y : regs$153$q;
       regs$154$clock = clock;
-      regs$154$d = (ctr$32$q == 8'd7) ? add_up$1$y : regs$154$q;
+      regs$154$d = (counter$q == 8'd7) ? add_up$1$y : regs$154$q;
       regs$155$clock = clock;
-      regs$155$d = (ctr$0$q == 8'd0) ? mul_v$0$y : regs$155$q;
+      regs$155$d = (counter$q == 8'd0) ? mul_v$0$y : regs$155$q;
       regs$156$clock = clock;
-      regs$156$d = (ctr$1$q == 8'd0) ? mul_v$1$y : regs$156$q;
+      regs$156$d = (counter$q == 8'd0) ? mul_v$1$y : regs$156$q;
       regs$157$clock = clock;
-      regs$157$d = (ctr$2$q == 8'd0) ? mul_v$2$y : regs$157$q;
+      regs$157$d = (counter$q == 8'd0) ? mul_v$2$y : regs$157$q;
       regs$158$clock = clock;
-      regs$158$d = (ctr$22$q == 8'd4) ? add_v$0$y : regs$158$q;
+      regs$158$d = (counter$q == 8'd4) ? add_v$0$y : regs$158$q;
       regs$159$clock = clock;
-      regs$159$d = (ctr$22$q == 8'd0) ? add_v$0$y : regs$159$q;
+      regs$159$d = (counter$q == 8'd0) ? add_v$0$y : regs$159$q;
       regs$160$clock = clock;
-      regs$160$d = (ctr$16$q == 8'd7) ? mul_up$6$y : regs$160$q;
+      regs$160$d = (counter$q == 8'd7) ? mul_up$6$y : regs$160$q;
       regs$161$clock = clock;
-      regs$161$d = (ctr$17$q == 8'd7) ? mul_up$7$y : regs$161$q;
+      regs$161$d = (counter$q == 8'd7) ? mul_up$7$y : regs$161$q;
       regs$162$clock = clock;
-      regs$162$d = (ctr$18$q == 8'd7) ? mul_up$8$y : regs$162$q;
+      regs$162$d = (counter$q == 8'd7) ? mul_up$8$y : regs$162$q;
       regs$163$clock = clock;
-      regs$163$d = (ctr$33$q == 8'd3) ? add_up$2$y : regs$163$q;
+      regs$163$d = (counter$q == 8'd3) ? add_up$2$y : regs$163$q;
       regs$164$clock = clock;
-      regs$164$d = (ctr$33$q == 8'd7) ? add_up$2$y : regs$164$q;
+      regs$164$d = (counter$q == 8'd7) ? add_up$2$y : regs$164$q;
       regs$165$clock = clock;
-      regs$165$d = (ctr$3$q == 8'd0) ? mul_v$3$y : regs$165$q;
+      regs$165$d = (counter$q == 8'd0) ? mul_v$3$y : regs$165$q;
       regs$166$clock = clock;
-      regs$166$d = (ctr$4$q == 8'd0) ? mul_v$4$y : regs$166$q;
+      regs$166$d = (counter$q == 8'd0) ? mul_v$4$y : regs$166$q;
       regs$167$clock = clock;
-      regs$167$d = (ctr$5$q == 8'd0) ? mul_v$5$y : regs$167$q;
+      regs$167$d = (counter$q == 8'd0) ? mul_v$5$y : regs$167$q;
       regs$168$clock = clock;
-      regs$168$d = (ctr$23$q == 8'd4) ? add_v$1$y : regs$168$q;
+      regs$168$d = (counter$q == 8'd4) ? add_v$1$y : regs$168$q;
       regs$169$clock = clock;
-      regs$169$d = (ctr$24$q == 8'd4) ? add_v$2$y : regs$169$q;
+      regs$169$d = (counter$q == 8'd4) ? add_v$2$y : regs$169$q;
       regs$170$clock = clock;
-      regs$170$d = (ctr$23$q == 8'd0) ? add_v$1$y : regs$170$q;
+      regs$170$d = (counter$q == 8'd0) ? add_v$1$y : regs$170$q;
       regs$171$clock = clock;
-      regs$171$d = (ctr$23$q == 8'd0) ? regs$170$q : regs$171$q;
+      regs$171$d = (counter$q == 8'd0) ? regs$170$q : regs$171$q;
       regs$172$clock = clock;
-      regs$172$d = (ctr$19$q == 8'd7) ? mul_up$9$y : regs$172$q;
+      regs$172$d = (counter$q == 8'd7) ? mul_up$9$y : regs$172$q;
       regs$173$clock = clock;
-      regs$173$d = (ctr$20$q == 8'd7) ? mul_up$10$y : regs$173$q;
+      regs$173$d = (counter$q == 8'd7) ? mul_up$10$y : regs$173$q;
       regs$174$clock = clock;
-      regs$174$d = (ctr$21$q == 8'd7) ? mul_up$11$y : regs$174$q;
+      regs$174$d = (counter$q == 8'd7) ? mul_up$11$y : regs$174$q;
       regs$175$clock = clock;
-      regs$175$d = (ctr$34$q == 8'd3) ? add_up$3$y : regs$175$q;
+      regs$175$d = (counter$q == 8'd3) ? add_up$3$y : regs$175$q;
       regs$176$clock = clock;
-      regs$176$d = (ctr$35$q == 8'd3) ? add_up$4$y : regs$176$q;
+      regs$176$d = (counter$q == 8'd3) ? add_up$4$y : regs$176$q;
       regs$177$clock = clock;
-      regs$177$d = (ctr$34$q == 8'd7) ? add_up$3$y : regs$177$q;
+      regs$177$d = (counter$q == 8'd7) ? add_up$3$y : regs$177$q;
       regs$178$clock = clock;
-      regs$178$d = (ctr$10$q == 8'd0) ? mul_up$0$y : regs$178$q;
+      regs$178$d = (counter$q == 8'd0) ? mul_up$0$y : regs$178$q;
       regs$179$clock = clock;
-      regs$179$d = (ctr$11$q == 8'd0) ? mul_up$1$y : regs$179$q;
+      regs$179$d = (counter$q == 8'd0) ? mul_up$1$y : regs$179$q;
       regs$180$clock = clock;
-      regs$180$d = (ctr$37$q == 8'd4) ? add_up$6$y : regs$180$q;
+      regs$180$d = (counter$q == 8'd4) ? add_up$6$y : regs$180$q;
       regs$181$clock = clock;
-      regs$181$d = (ctr$31$q == 8'd4) ? add_up$0$y : regs$181$q;
+      regs$181$d = (counter$q == 8'd4) ? add_up$0$y : regs$181$q;
       regs$182$clock = clock;
-      regs$182$d = (ctr$32$q == 8'd4) ? add_up$1$y : regs$182$q;
+      regs$182$d = (counter$q == 8'd4) ? add_up$1$y : regs$182$q;
       regs$183$clock = clock;
-      regs$183$d = (ctr$31$q == 8'd0) ? add_up$0$y : regs$183$q;
+      regs$183$d = (counter$q == 8'd0) ? add_up$0$y : regs$183$q;
       regs$184$clock = clock;
-      regs$184$d = (ctr$10$q == 8'd1) ? mul_up$0$y : regs$184$q;
+      regs$184$d = (counter$q == 8'd1) ? mul_up$0$y : regs$184$q;
       regs$185$clock = clock;
-      regs$185$d = (ctr$0$q == 8'd2) ? mul_v$0$y : regs$185$q;
+      regs$185$d = (counter$q == 8'd2) ? mul_v$0$y : regs$185$q;
       regs$186$clock = clock;
-      regs$186$d = (ctr$1$q == 8'd2) ? mul_v$1$y : regs$186$q;
+      regs$186$d = (counter$q == 8'd2) ? mul_v$1$y : regs$186$q;
       regs$187$clock = clock;
-      regs$187$d = (ctr$2$q == 8'd2) ? mul_v$2$y : regs$187$q;
+      regs$187$d = (counter$q == 8'd2) ? mul_v$2$y : regs$187$q;
       regs$188$clock = clock;
-      regs$188$d = (ctr$26$q == 8'd6) ? add_v$4$y : regs$188$q;
+      regs$188$d = (counter$q == 8'd6) ? add_v$4$y : regs$188$q;
       regs$189$clock = clock;
-      regs$189$d = (ctr$27$q == 8'd6) ? add_v$5$y : regs$189$q;
+      regs$189$d = (counter$q == 8'd6) ? add_v$5$y : regs$189$q;
       regs$190$clock = clock;
-      regs$190$d = (ctr$27$q == 8'd2) ? add_v$5$y : regs$190$q;
+      regs$190$d = (counter$q == 8'd2) ? add_v$5$y : regs$190$q;
       regs$191$clock = clock;
-      regs$191$d = (ctr$27$q == 8'd2) ? regs$190$q : regs$191$q;
+      regs$191$d = (counter$q == 8'd2) ? regs$190$q : regs$191$q;
       regs$192$clock = clock;
-      regs$192$d = (ctr$27$q == 8'd2) ? regs$191$q : regs$192$q;
+      regs$192$d = (counter$q == 8'd2) ? regs$191$q : regs$192$q;
       regs$193$clock = clock;
-      regs$193$d = (ctr$35$q == 8'd5) ? add_up$4$y : regs$193$q;
+      regs$193$d = (counter$q == 8'd5) ? add_up$4$y : regs$193$q;
       regs$194$clock = clock;
-      regs$194$d = (ctr$10$q == 8'd2) ? mul_up$0$y : regs$194$q;
+      regs$194$d = (counter$q == 8'd2) ? mul_up$0$y : regs$194$q;
       regs$195$clock = clock;
-      regs$195$d = (ctr$11$q == 8'd2) ? mul_up$1$y : regs$195$q;
+      regs$195$d = (counter$q == 8'd2) ? mul_up$1$y : regs$195$q;
       regs$196$clock = clock;
-      regs$196$d = (ctr$12$q == 8'd2) ? mul_up$2$y : regs$196$q;
+      regs$196$d = (counter$q == 8'd2) ? mul_up$2$y : regs$196$q;
       regs$197$clock = clock;
-      regs$197$d = (ctr$35$q == 8'd6) ? add_up$4$y : regs$197$q;
+      regs$197$d = (counter$q == 8'd6) ? add_up$4$y : regs$197$q;
       regs$198$clock = clock;
-      regs$198$d = (ctr$36$q == 8'd1) ? add_up$5$y : regs$198$q;
+      regs$198$d = (counter$q == 8'd1) ? add_up$5$y : regs$198$q;
       regs$199$clock = clock;
-      regs$199$d = (ctr$44$q == 8'd5) ? add_up$13$y : regs$199$q;
+      regs$199$d = (counter$q == 8'd5) ? add_up$13$y : regs$199$q;
       regs$200$clock = clock;
-      regs$200$d = (ctr$46$q == 8'd2) ? scale_e$0$y : regs$200$q;
+      regs$200$d = (counter$q == 8'd2) ? scale_e$0$y : regs$200$q;
       regs$201$clock = clock;
-      regs$201$d = (ctr$46$q == 8'd2) ? regs$200$q : regs$201$q;
+      regs$201$d = (counter$q == 8'd2) ? regs$200$q : regs$201$q;
       regs$202$clock = clock;
-      regs$202$d = (ctr$0$q == 8'd3) ? mul_v$0$y : regs$202$q;
+      regs$202$d = (counter$q == 8'd3) ? mul_v$0$y : regs$202$q;
       regs$203$clock = clock;
-      regs$203$d = (ctr$1$q == 8'd3) ? mul_v$1$y : regs$203$q;
+      regs$203$d = (counter$q == 8'd3) ? mul_v$1$y : regs$203$q;
       regs$204$clock = clock;
-      regs$204$d = (ctr$2$q == 8'd3) ? mul_v$2$y : regs$204$q;
+      regs$204$d = (counter$q == 8'd3) ? mul_v$2$y : regs$204$q;
       regs$205$clock = clock;
-      regs$205$d = (ctr$25$q == 8'd7) ? add_v$3$y : regs$205$q;
+      regs$205$d = (counter$q == 8'd7) ? add_v$3$y : regs$205$q;
       regs$206$clock = clock;
-      regs$206$d = (ctr$26$q == 8'd7) ? add_v$4$y : regs$206$q;
+      regs$206$d = (counter$q == 8'd7) ? add_v$4$y : regs$206$q;
       regs$207$clock = clock;
-      regs$207$d = (ctr$26$q == 8'd3) ? add_v$4$y : regs$207$q;
+      regs$207$d = (counter$q == 8'd3) ? add_v$4$y : regs$207$q;
       regs$208$clock = clock;
-      regs$208$d = (ctr$26$q == 8'd3) ? regs$207$q : regs$208$q;
+      regs$208$d = (counter$q == 8'd3) ? regs$207$q : regs$208$q;
       regs$209$clock = clock;
-      regs$209$d = (ctr$26$q == 8'd3) ? regs$208$q : regs$209$q;
+      regs$209$d = (counter$q == 8'd3) ? regs$208$q : regs$209$q;
       regs$210$clock = clock;
-      regs$210$d = (ctr$36$q == 8'd5) ? add_up$5$y : regs$210$q;
+      regs$210$d = (counter$q == 8'd5) ? add_up$5$y : regs$210$q;
       regs$211$clock = clock;
-      regs$211$d = (ctr$10$q == 8'd3) ? mul_up$0$y : regs$211$q;
+      regs$211$d = (counter$q == 8'd3) ? mul_up$0$y : regs$211$q;
       regs$212$clock = clock;
-      regs$212$d = (ctr$11$q == 8'd3) ? mul_up$1$y : regs$212$q;
+      regs$212$d = (counter$q == 8'd3) ? mul_up$1$y : regs$212$q;
       regs$213$clock = clock;
-      regs$213$d = (ctr$12$q == 8'd3) ? mul_up$2$y : regs$213$q;
+      regs$213$d = (counter$q == 8'd3) ? mul_up$2$y : regs$213$q;
       regs$214$clock = clock;
-      regs$214$d = (ctr$35$q == 8'd7) ? add_up$4$y : regs$214$q;
+      regs$214$d = (counter$q == 8'd7) ? add_up$4$y : regs$214$q;
       regs$215$clock = clock;
-      regs$215$d = (ctr$37$q == 8'd1) ? add_up$6$y : regs$215$q;
+      regs$215$d = (counter$q == 8'd1) ? add_up$6$y : regs$215$q;
       regs$216$clock = clock;
-      regs$216$d = (ctr$45$q == 8'd5) ? add_up$14$y : regs$216$q;
+      regs$216$d = (counter$q == 8'd5) ? add_up$14$y : regs$216$q;
       regs$217$clock = clock;
-      regs$217$d = (ctr$47$q == 8'd2) ? scale_e$1$y : regs$217$q;
+      regs$217$d = (counter$q == 8'd2) ? scale_e$1$y : regs$217$q;
       regs$218$clock = clock;
-      regs$218$d = (ctr$47$q == 8'd2) ? regs$217$q : regs$218$q;
+      regs$218$d = (counter$q == 8'd2) ? regs$217$q : regs$218$q;
       regs$219$clock = clock;
-      regs$219$d = (ctr$0$q == 8'd4) ? mul_v$0$y : regs$219$q;
+      regs$219$d = (counter$q == 8'd4) ? mul_v$0$y : regs$219$q;
       regs$220$clock = clock;
-      regs$220$d = (ctr$1$q == 8'd4) ? mul_v$1$y : regs$220$q;
+      regs$220$d = (counter$q == 8'd4) ? mul_v$1$y : regs$220$q;
       regs$221$clock = clock;
-      regs$221$d = (ctr$6$q == 8'd0) ? mul_v$6$y : regs$221$q;
+      regs$221$d = (counter$q == 8'd0) ? mul_v$6$y : regs$221$q;
       regs$222$clock = clock;
-      regs$222$d = (ctr$24$q == 8'd0) ? add_v$2$y : regs$222$q;
+      regs$222$d = (counter$q == 8'd0) ? add_v$2$y : regs$222$q;
       regs$223$clock = clock;
-      regs$223$d = (ctr$25$q == 8'd4) ? add_v$3$y : regs$223$q;
+      regs$223$d = (counter$q == 8'd4) ? add_v$3$y : regs$223$q;
       regs$224$clock = clock;
-      regs$224$d = (ctr$28$q == 8'd0) ? add_v$6$y : regs$224$q;
+      regs$224$d = (counter$q == 8'd0) ? add_v$6$y : regs$224$q;
       regs$225$clock = clock;
-      regs$225$d = (ctr$28$q == 8'd0) ? regs$224$q : regs$225$q;
+      regs$225$d = (counter$q == 8'd0) ? regs$224$q : regs$225$q;
       regs$226$clock = clock;
-      regs$226$d = (ctr$28$q == 8'd0) ? regs$225$q : regs$226$q;
+      regs$226$d = (counter$q == 8'd0) ? regs$225$q : regs$226$q;
       regs$227$clock = clock;
-      regs$227$d = (ctr$28$q == 8'd0) ? regs$226$q : regs$227$q;
+      regs$227$d = (counter$q == 8'd0) ? regs$226$q : regs$227$q;
       regs$228$clock = clock;
-      regs$228$d = (ctr$28$q == 8'd0) ? regs$227$q : regs$228$q;
+      regs$228$d = (counter$q == 8'd0) ? regs$227$q : regs$228$q;
       regs$229$clock = clock;
-      regs$229$d = (ctr$28$q == 8'd0) ? regs$228$q : regs$229$q;
+      regs$229$d = (counter$q == 8'd0) ? regs$228$q : regs$229$q;
       regs$230$clock = clock;
-      regs$230$d = (ctr$28$q == 8'd0) ? regs$229$q : regs$230$q;
+      regs$230$d = (counter$q == 8'd0) ? regs$229$q : regs$230$q;
       regs$231$clock = clock;
-      regs$231$d = (ctr$37$q == 8'd5) ? add_up$6$y : regs$231$q;
+      regs$231$d = (counter$q == 8'd5) ? add_up$6$y : regs$231$q;
       regs$232$clock = clock;
-      regs$232$d = (ctr$10$q == 8'd4) ? mul_up$0$y : regs$232$q;
+      regs$232$d = (counter$q == 8'd4) ? mul_up$0$y : regs$232$q;
       regs$233$clock = clock;
-      regs$233$d = (ctr$11$q == 8'd4) ? mul_up$1$y : regs$233$q;
+      regs$233$d = (counter$q == 8'd4) ? mul_up$1$y : regs$233$q;
       regs$234$clock = clock;
-      regs$234$d = (ctr$12$q == 8'd4) ? mul_up$2$y : regs$234$q;
+      regs$234$d = (counter$q == 8'd4) ? mul_up$2$y : regs$234$q;
       regs$235$clock = clock;
-      regs$235$d = (ctr$34$q == 8'd0) ? add_up$3$y : regs$235$q;
+      regs$235$d = (counter$q == 8'd0) ? add_up$3$y : regs$235$q;
       regs$236$clock = clock;
-      regs$236$d = (ctr$38$q == 8'd1) ? add_up$7$y : regs$236$q;
+      regs$236$d = (counter$q == 8'd1) ? add_up$7$y : regs$236$q;
       regs$237$clock = clock;
-      regs$237$d = (ctr$38$q == 8'd6) ? add_up$7$y : regs$237$q;
+      regs$237$d = (counter$q == 8'd6) ? add_up$7$y : regs$237$q;
       regs$238$clock = clock;
-      regs$238$d = (ctr$48$q == 8'd3) ? scale_z$0$y : regs$238$q;
+      regs$238$d = (counter$q == 8'd3) ? scale_z$0$y : regs$238$q;
       regs$239$clock = clock;
-      regs$239$d = (ctr$46$q == 8'd3) ? scale_e$0$y : regs$239$q;
+      regs$239$d = (counter$q == 8'd3) ? scale_e$0$y : regs$239$q;
       regs$240$clock = clock;
-      regs$240$d = (ctr$46$q == 8'd3) ? regs$239$q : regs$240$q;
+      regs$240$d = (counter$q == 8'd3) ? regs$239$q : regs$240$q;
       regs$241$clock = clock;
-      regs$241$d = (ctr$46$q == 8'd3) ? regs$240$q : regs$241$q;
+      regs$241$d = (counter$q == 8'd3) ? regs$240$q : regs$241$q;
       regs$242$clock = clock;
-      regs$242$d = (ctr$46$q == 8'd3) ? regs$241$q : regs$242$q;
+      regs$242$d = (counter$q == 8'd3) ? regs$241$q : regs$242$q;
       regs$243$clock = clock;
-      regs$243$d = (ctr$46$q == 8'd3) ? regs$242$q : regs$243$q;
+      regs$243$d = (counter$q == 8'd3) ? regs$242$q : regs$243$q;
       regs$244$clock = clock;
-      regs$244$d = (ctr$46$q == 8'd3) ? regs$243$q : regs$244$q;
+      regs$244$d = (counter$q == 8'd3) ? regs$243$q : regs$244$q;
       regs$245$clock = clock;
-      regs$245$d = (ctr$46$q == 8'd3) ? regs$244$q : regs$245$q;
+      regs$245$d = (counter$q == 8'd3) ? regs$244$q : regs$245$q;
       regs$246$clock = clock;
-      regs$246$d = (ctr$49$q == 8'd5) ? scale_s$0$y : regs$246$q;
+      regs$246$d = (counter$q == 8'd5) ? scale_s$0$y : regs$246$q;
       regs$247$clock = clock;
-      regs$247$d = (ctr$45$q == 8'd1) ? add_up$14$y : regs$247$q;
+      regs$247$d = (counter$q == 8'd1) ? add_up$14$y : regs$247$q;
       regs$248$clock = clock;
-      regs$248$d = (ctr$38$q == 8'd7) ? add_up$7$y : regs$248$q;
+      regs$248$d = (counter$q == 8'd7) ? add_up$7$y : regs$248$q;
       regs$249$clock = clock;
-      regs$249$d = (ctr$33$q == 8'd4) ? add_up$2$y : regs$249$q;
+      regs$249$d = (counter$q == 8'd4) ? add_up$2$y : regs$249$q;
       regs$250$clock = clock;
-      regs$250$d = (ctr$34$q == 8'd4) ? add_up$3$y : regs$250$q;
+      regs$250$d = (counter$q == 8'd4) ? add_up$3$y : regs$250$q;
       regs$251$clock = clock;
-      regs$251$d = (ctr$32$q == 8'd0) ? add_up$1$y : regs$251$q;
+      regs$251$d = (counter$q == 8'd0) ? add_up$1$y : regs$251$q;
       regs$252$clock = clock;
-      regs$252$d = (ctr$11$q == 8'd1) ? mul_up$1$y : regs$252$q;
+      regs$252$d = (counter$q == 8'd1) ? mul_up$1$y : regs$252$q;
       regs$253$clock = clock;
-      regs$253$d = (ctr$3$q == 8'd2) ? mul_v$3$y : regs$253$q;
+      regs$253$d = (counter$q == 8'd2) ? mul_v$3$y : regs$253$q;
       regs$254$clock = clock;
-      regs$254$d = (ctr$4$q == 8'd2) ? mul_v$4$y : regs$254$q;
+      regs$254$d = (counter$q == 8'd2) ? mul_v$4$y : regs$254$q;
       regs$255$clock = clock;
-      regs$255$d = (ctr$5$q == 8'd2) ? mul_v$5$y : regs$255$q;
+      regs$255$d = (counter$q == 8'd2) ? mul_v$5$y : regs$255$q;
       regs$256$clock = clock;
-      regs$256$d = (ctr$28$q == 8'd6) ? add_v$6$y : regs$256$q;
+      regs$256$d = (counter$q == 8'd6) ? add_v$6$y : regs$256$q;
       regs$257$clock = clock;
-      regs$257$d = (ctr$29$q == 8'd6) ? add_v$7$y : regs$257$q;
+      regs$257$d = (counter$q == 8'd6) ? add_v$7$y : regs$257$q;
       regs$258$clock = clock;
-      regs$258$d = (ctr$28$q == 8'd2) ? add_v$6$y : regs$258$q;
+      regs$258$d = (counter$q == 8'd2) ? add_v$6$y : regs$258$q;
       regs$259$clock = clock;
-      regs$259$d = (ctr$28$q == 8'd2) ? regs$258$q : regs$259$q;
+      regs$259$d = (counter$q == 8'd2) ? regs$258$q : regs$259$q;
       regs$260$clock = clock;
-      regs$260$d = (ctr$28$q == 8'd2) ? regs$259$q : regs$260$q;
+      regs$260$d = (counter$q == 8'd2) ? regs$259$q : regs$260$q;
       regs$261$clock = clock;
-      regs$261$d = (ctr$38$q == 8'd5) ? add_up$7$y : regs$261$q;
+      regs$261$d = (counter$q == 8'd5) ? add_up$7$y : regs$261$q;
       regs$262$clock = clock;
-      regs$262$d = (ctr$13$q == 8'd2) ? mul_up$3$y : regs$262$q;
+      regs$262$d = (counter$q == 8'd2) ? mul_up$3$y : regs$262$q;
       regs$263$clock = clock;
-      regs$263$d = (ctr$14$q == 8'd2) ? mul_up$4$y : regs$263$q;
+      regs$263$d = (counter$q == 8'd2) ? mul_up$4$y : regs$263$q;
       regs$264$clock = clock;
-      regs$264$d = (ctr$15$q == 8'd2) ? mul_up$5$y : regs$264$q;
+      regs$264$d = (counter$q == 8'd2) ? mul_up$5$y : regs$264$q;
       regs$265$clock = clock;
-      regs$265$d = (ctr$36$q == 8'd6) ? add_up$5$y : regs$265$q;
+      regs$265$d = (counter$q == 8'd6) ? add_up$5$y : regs$265$q;
       regs$266$clock = clock;
-      regs$266$d = (ctr$39$q == 8'd1) ? add_up$8$y : regs$266$q;
+      regs$266$d = (counter$q == 8'd1) ? add_up$8$y : regs$266$q;
       regs$267$clock = clock;
-      regs$267$d = (ctr$39$q == 8'd6) ? add_up$8$y : regs$267$q;
+      regs$267$d = (counter$q == 8'd6) ? add_up$8$y : regs$267$q;
       regs$268$clock = clock;
-      regs$268$d = (ctr$47$q == 8'd3) ? scale_e$1$y : regs$268$q;
+      regs$268$d = (counter$q == 8'd3) ? scale_e$1$y : regs$268$q;
       regs$269$clock = clock;
-      regs$269$d = (ctr$47$q == 8'd3) ? regs$268$q : regs$269$q;
+      regs$269$d = (counter$q == 8'd3) ? regs$268$q : regs$269$q;
       regs$270$clock = clock;
-      regs$270$d = (ctr$3$q == 8'd3) ? mul_v$3$y : regs$270$q;
+      regs$270$d = (counter$q == 8'd3) ? mul_v$3$y : regs$270$q;
       regs$271$clock = clock;
-      regs$271$d = (ctr$4$q == 8'd3) ? mul_v$4$y : regs$271$q;
+      regs$271$d = (counter$q == 8'd3) ? mul_v$4$y : regs$271$q;
       regs$272$clock = clock;
-      regs$272$d = (ctr$5$q == 8'd3) ? mul_v$5$y : regs$272$q;
+      regs$272$d = (counter$q == 8'd3) ? mul_v$5$y : regs$272$q;
       regs$273$clock = clock;
-      regs$273$d = (ctr$27$q == 8'd7) ? add_v$5$y : regs$273$q;
+      regs$273$d = (counter$q == 8'd7) ? add_v$5$y : regs$273$q;
       regs$274$clock = clock;
-      regs$274$d = (ctr$28$q == 8'd7) ? add_v$6$y : regs$274$q;
+      regs$274$d = (counter$q == 8'd7) ? add_v$6$y : regs$274$q;
       regs$275$clock = clock;
-      regs$275$d = (ctr$27$q == 8'd3) ? add_v$5$y : regs$275$q;
+      regs$275$d = (counter$q == 8'd3) ? add_v$5$y : regs$275$q;
       regs$276$clock = clock;
-      regs$276$d = (ctr$27$q == 8'd3) ? regs$275$q : regs$276$q;
+      regs$276$d = (counter$q == 8'd3) ? regs$275$q : regs$276$q;
       regs$277$clock = clock;
-      regs$277$d = (ctr$27$q == 8'd3) ? regs$276$q : regs$277$q;
+      regs$277$d = (counter$q == 8'd3) ? regs$276$q : regs$277$q;
       regs$278$clock = clock;
-      regs$278$d = (ctr$39$q == 8'd5) ? add_up$8$y : regs$278$q;
+      regs$278$d = (counter$q == 8'd5) ? add_up$8$y : regs$278$q;
       regs$279$clock = clock;
-      regs$279$d = (ctr$13$q == 8'd3) ? mul_up$3$y : regs$279$q;
+      regs$279$d = (counter$q == 8'd3) ? mul_up$3$y : regs$279$q;
       regs$280$clock = clock;
-      regs$280$d = (ctr$14$q == 8'd3) ? mul_up$4$y : regs$280$q;
+      regs$280$d = (counter$q == 8'd3) ? mul_up$4$y : regs$280$q;
       regs$281$clock = clock;
-      regs$281$d = (ctr$15$q == 8'd3) ? mul_up$5$y : regs$281$q;
+      regs$281$d = (counter$q == 8'd3) ? mul_up$5$y : regs$281$q;
       regs$282$clock = clock;
-      regs$282$d = (ctr$36$q == 8'd7) ? add_up$5$y : regs$282$q;
+      regs$282$d = (counter$q == 8'd7) ? add_up$5$y : regs$282$q;
       regs$283$clock = clock;
-      regs$283$d = (ctr$40$q == 8'd1) ? add_up$9$y : regs$283$q;
+      regs$283$d = (counter$q == 8'd1) ? add_up$9$y : regs$283$q;
       regs$284$clock = clock;
-      regs$284$d = (ctr$40$q == 8'd6) ? add_up$9$y : regs$284$q;
+      regs$284$d = (counter$q == 8'd6) ? add_up$9$y : regs$284$q;
       regs$285$clock = clock;
-      regs$285$d = (ctr$46$q == 8'd4) ? scale_e$0$y : regs$285$q;
+      regs$285$d = (counter$q == 8'd4) ? scale_e$0$y : regs$285$q;
       regs$286$clock = clock;
-      regs$286$d = (ctr$46$q == 8'd4) ? regs$285$q : regs$286$q;
+      regs$286$d = (counter$q == 8'd4) ? regs$285$q : regs$286$q;
       regs$287$clock = clock;
-      regs$287$d = (ctr$2$q == 8'd4) ? mul_v$2$y : regs$287$q;
+      regs$287$d = (counter$q == 8'd4) ? mul_v$2$y : regs$287$q;
       regs$288$clock = clock;
-      regs$288$d = (ctr$3$q == 8'd4) ? mul_v$3$y : regs$288$q;
+      regs$288$d = (counter$q == 8'd4) ? mul_v$3$y : regs$288$q;
       regs$289$clock = clock;
-      regs$289$d = (ctr$7$q == 8'd0) ? mul_v$7$y : regs$289$q;
+      regs$289$d = (counter$q == 8'd0) ? mul_v$7$y : regs$289$q;
       regs$290$clock = clock;
-      regs$290$d = (ctr$25$q == 8'd0) ? add_v$3$y : regs$290$q;
+      regs$290$d = (counter$q == 8'd0) ? add_v$3$y : regs$290$q;
       regs$291$clock = clock;
-      regs$291$d = (ctr$26$q == 8'd4) ? add_v$4$y : regs$291$q;
+      regs$291$d = (counter$q == 8'd4) ? add_v$4$y : regs$291$q;
       regs$292$clock = clock;
-      regs$292$d = (ctr$29$q == 8'd0) ? add_v$7$y : regs$292$q;
+      regs$292$d = (counter$q == 8'd0) ? add_v$7$y : regs$292$q;
       regs$293$clock = clock;
-      regs$293$d = (ctr$29$q == 8'd0) ? regs$292$q : regs$293$q;
+      regs$293$d = (counter$q == 8'd0) ? regs$292$q : regs$293$q;
       regs$294$clock = clock;
-      regs$294$d = (ctr$29$q == 8'd0) ? regs$293$q : regs$294$q;
+      regs$294$d = (counter$q == 8'd0) ? regs$293$q : regs$294$q;
       regs$295$clock = clock;
-      regs$295$d = (ctr$29$q == 8'd0) ? regs$294$q : regs$295$q;
+      regs$295$d = (counter$q == 8'd0) ? regs$294$q : regs$295$q;
       regs$296$clock = clock;
-      regs$296$d = (ctr$29$q == 8'd0) ? regs$295$q : regs$296$q;
+      regs$296$d = (counter$q == 8'd0) ? regs$295$q : regs$296$q;
       regs$297$clock = clock;
-      regs$297$d = (ctr$29$q == 8'd0) ? regs$296$q : regs$297$q;
+      regs$297$d = (counter$q == 8'd0) ? regs$296$q : regs$297$q;
       regs$298$clock = clock;
-      regs$298$d = (ctr$29$q == 8'd0) ? regs$297$q : regs$298$q;
+      regs$298$d = (counter$q == 8'd0) ? regs$297$q : regs$298$q;
       regs$299$clock = clock;
-      regs$299$d = (ctr$40$q == 8'd5) ? add_up$9$y : regs$299$q;
+      regs$299$d = (counter$q == 8'd5) ? add_up$9$y : regs$299$q;
       regs$300$clock = clock;
-      regs$300$d = (ctr$13$q == 8'd4) ? mul_up$3$y : regs$300$q;
+      regs$300$d = (counter$q == 8'd4) ? mul_up$3$y : regs$300$q;
       regs$301$clock = clock;
-      regs$301$d = (ctr$14$q == 8'd4) ? mul_up$4$y : regs$301$q;
+      regs$301$d = (counter$q == 8'd4) ? mul_up$4$y : regs$301$q;
       regs$302$clock = clock;
-      regs$302$d = (ctr$15$q == 8'd4) ? mul_up$5$y : regs$302$q;
+      regs$302$d = (counter$q == 8'd4) ? mul_up$5$y : regs$302$q;
       regs$303$clock = clock;
-      regs$303$d = (ctr$35$q == 8'd0) ? add_up$4$y : regs$303$q;
+      regs$303$d = (counter$q == 8'd0) ? add_up$4$y : regs$303$q;
       regs$304$clock = clock;
-      regs$304$d = (ctr$41$q == 8'd1) ? add_up$10$y : regs$304$q;
+      regs$304$d = (counter$q == 8'd1) ? add_up$10$y : regs$304$q;
       regs$305$clock = clock;
-      regs$305$d = (ctr$41$q == 8'd6) ? add_up$10$y : regs$305$q;
+      regs$305$d = (counter$q == 8'd6) ? add_up$10$y : regs$305$q;
       regs$306$clock = clock;
-      regs$306$d = (ctr$48$q == 8'd4) ? scale_z$0$y : regs$306$q;
+      regs$306$d = (counter$q == 8'd4) ? scale_z$0$y : regs$306$q;
       regs$307$clock = clock;
-      regs$307$d = (ctr$47$q == 8'd4) ? scale_e$1$y : regs$307$q;
+      regs$307$d = (counter$q == 8'd4) ? scale_e$1$y : regs$307$q;
       regs$308$clock = clock;
-      regs$308$d = (ctr$47$q == 8'd4) ? regs$307$q : regs$308$q;
+      regs$308$d = (counter$q == 8'd4) ? regs$307$q : regs$308$q;
       regs$309$clock = clock;
-      regs$309$d = (ctr$47$q == 8'd4) ? regs$308$q : regs$309$q;
+      regs$309$d = (counter$q == 8'd4) ? regs$308$q : regs$309$q;
       regs$310$clock = clock;
-      regs$310$d = (ctr$47$q == 8'd4) ? regs$309$q : regs$310$q;
+      regs$310$d = (counter$q == 8'd4) ? regs$309$q : regs$310$q;
       regs$311$clock = clock;
-      regs$311$d = (ctr$47$q == 8'd4) ? regs$310$q : regs$311$q;
+      regs$311$d = (counter$q == 8'd4) ? regs$310$q : regs$311$q;
       regs$312$clock = clock;
-      regs$312$d = (ctr$47$q == 8'd4) ? regs$311$q : regs$312$q;
+      regs$312$d = (counter$q == 8'd4) ? regs$311$q : regs$312$q;
       regs$313$clock = clock;
-      regs$313$d = (ctr$49$q == 8'd6) ? scale_s$0$y : regs$313$q;
+      regs$313$d = (counter$q == 8'd6) ? scale_s$0$y : regs$313$q;
       regs$314$clock = clock;
-      regs$314$d = (ctr$36$q == 8'd2) ? add_up$5$y : regs$314$q;
+      regs$314$d = (counter$q == 8'd2) ? add_up$5$y : regs$314$q;
       regs$315$clock = clock;
-      regs$315$d = (ctr$37$q == 8'd0) ? add_up$6$y : regs$315$q;
+      regs$315$d = (counter$q == 8'd0) ? add_up$6$y : regs$315$q;
       regs$316$clock = clock;
-      regs$316$d = (ctr$35$q == 8'd4) ? add_up$4$y : regs$316$q;
+      regs$316$d = (counter$q == 8'd4) ? add_up$4$y : regs$316$q;
       regs$317$clock = clock;
-      regs$317$d = (ctr$36$q == 8'd4) ? add_up$5$y : regs$317$q;
+      regs$317$d = (counter$q == 8'd4) ? add_up$5$y : regs$317$q;
       regs$318$clock = clock;
-      regs$318$d = (ctr$33$q == 8'd0) ? add_up$2$y : regs$318$q;
+      regs$318$d = (counter$q == 8'd0) ? add_up$2$y : regs$318$q;
       regs$319$clock = clock;
-      regs$319$d = (ctr$12$q == 8'd1) ? mul_up$2$y : regs$319$q;
+      regs$319$d = (counter$q == 8'd1) ? mul_up$2$y : regs$319$q;
       regs$320$clock = clock;
-      regs$320$d = (ctr$6$q == 8'd2) ? mul_v$6$y : regs$320$q;
+      regs$320$d = (counter$q == 8'd2) ? mul_v$6$y : regs$320$q;
       regs$321$clock = clock;
-      regs$321$d = (ctr$7$q == 8'd2) ? mul_v$7$y : regs$321$q;
+      regs$321$d = (counter$q == 8'd2) ? mul_v$7$y : regs$321$q;
       regs$322$clock = clock;
-      regs$322$d = (ctr$8$q == 8'd2) ? mul_v$8$y : regs$322$q;
+      regs$322$d = (counter$q == 8'd2) ? mul_v$8$y : regs$322$q;
       regs$323$clock = clock;
-      regs$323$d = (ctr$30$q == 8'd6) ? add_v$8$y : regs$323$q;
+      regs$323$d = (counter$q == 8'd6) ? add_v$8$y : regs$323$q;
       regs$324$clock = clock;
-      regs$324$d = (ctr$29$q == 8'd7) ? add_v$7$y : regs$324$q;
+      regs$324$d = (counter$q == 8'd7) ? add_v$7$y : regs$324$q;
       regs$325$clock = clock;
-      regs$325$d = (ctr$28$q == 8'd3) ? add_v$6$y : regs$325$q;
+      regs$325$d = (counter$q == 8'd3) ? add_v$6$y : regs$325$q;
       regs$326$clock = clock;
-      regs$326$d = (ctr$28$q == 8'd3) ? regs$325$q : regs$326$q;
+      regs$326$d = (counter$q == 8'd3) ? regs$325$q : regs$326$q;
       regs$327$clock = clock;
-      regs$327$d = (ctr$28$q == 8'd3) ? regs$326$q : regs$327$q;
+      regs$327$d = (counter$q == 8'd3) ? regs$326$q : regs$327$q;
       regs$328$clock = clock;
-      regs$328$d = (ctr$41$q == 8'd5) ? add_up$10$y : regs$328$q;
+      regs$328$d = (counter$q == 8'd5) ? add_up$10$y : regs$328$q;
       regs$329$clock = clock;
-      regs$329$d = (ctr$16$q == 8'd2) ? mul_up$6$y : regs$329$q;
+      regs$329$d = (counter$q == 8'd2) ? mul_up$6$y : regs$329$q;
       regs$330$clock = clock;
-      regs$330$d = (ctr$17$q == 8'd2) ? mul_up$7$y : regs$330$q;
+      regs$330$d = (counter$q == 8'd2) ? mul_up$7$y : regs$330$q;
       regs$331$clock = clock;
-      regs$331$d = (ctr$18$q == 8'd2) ? mul_up$8$y : regs$331$q;
+      regs$331$d = (counter$q == 8'd2) ? mul_up$8$y : regs$331$q;
       regs$332$clock = clock;
-      regs$332$d = (ctr$37$q == 8'd6) ? add_up$6$y : regs$332$q;
+      regs$332$d = (counter$q == 8'd6) ? add_up$6$y : regs$332$q;
       regs$333$clock = clock;
-      regs$333$d = (ctr$42$q == 8'd1) ? add_up$11$y : regs$333$q;
+      regs$333$d = (counter$q == 8'd1) ? add_up$11$y : regs$333$q;
       regs$334$clock = clock;
-      regs$334$d = (ctr$42$q == 8'd6) ? add_up$11$y : regs$334$q;
+      regs$334$d = (counter$q == 8'd6) ? add_up$11$y : regs$334$q;
       regs$335$clock = clock;
-      regs$335$d = (ctr$46$q == 8'd5) ? scale_e$0$y : regs$335$q;
+      regs$335$d = (counter$q == 8'd5) ? scale_e$0$y : regs$335$q;
       regs$336$clock = clock;
-      regs$336$d = (ctr$6$q == 8'd3) ? mul_v$6$y : regs$336$q;
+      regs$336$d = (counter$q == 8'd3) ? mul_v$6$y : regs$336$q;
       regs$337$clock = clock;
-      regs$337$d = (ctr$7$q == 8'd3) ? mul_v$7$y : regs$337$q;
+      regs$337$d = (counter$q == 8'd3) ? mul_v$7$y : regs$337$q;
       regs$338$clock = clock;
-      regs$338$d = (ctr$8$q == 8'd3) ? mul_v$8$y : regs$338$q;
+      regs$338$d = (counter$q == 8'd3) ? mul_v$8$y : regs$338$q;
       regs$339$clock = clock;
-      regs$339$d = (ctr$30$q == 8'd7) ? add_v$8$y : regs$339$q;
+      regs$339$d = (counter$q == 8'd7) ? add_v$8$y : regs$339$q;
       regs$340$clock = clock;
-      regs$340$d = (ctr$26$q == 8'd0) ? add_v$4$y : regs$340$q;
+      regs$340$d = (counter$q == 8'd0) ? add_v$4$y : regs$340$q;
       regs$341$clock = clock;
-      regs$341$d = (ctr$28$q == 8'd4) ? add_v$6$y : regs$341$q;
+      regs$341$d = (counter$q == 8'd4) ? add_v$6$y : regs$341$q;
       regs$342$clock = clock;
-      regs$342$d = (ctr$28$q == 8'd4) ? regs$341$q : regs$342$q;
+      regs$342$d = (counter$q == 8'd4) ? regs$341$q : regs$342$q;
       regs$343$clock = clock;
-      regs$343$d = (ctr$28$q == 8'd4) ? regs$342$q : regs$343$q;
+      regs$343$d = (counter$q == 8'd4) ? regs$342$q : regs$343$q;
       regs$344$clock = clock;
-      regs$344$d = (ctr$42$q == 8'd5) ? add_up$11$y : regs$344$q;
+      regs$344$d = (counter$q == 8'd5) ? add_up$11$y : regs$344$q;
       regs$345$clock = clock;
-      regs$345$d = (ctr$16$q == 8'd3) ? mul_up$6$y : regs$345$q;
+      regs$345$d = (counter$q == 8'd3) ? mul_up$6$y : regs$345$q;
       regs$346$clock = clock;
-      regs$346$d = (ctr$17$q == 8'd3) ? mul_up$7$y : regs$346$q;
+      regs$346$d = (counter$q == 8'd3) ? mul_up$7$y : regs$346$q;
       regs$347$clock = clock;
-      regs$347$d = (ctr$18$q == 8'd3) ? mul_up$8$y : regs$347$q;
+      regs$347$d = (counter$q == 8'd3) ? mul_up$8$y : regs$347$q;
       regs$348$clock = clock;
-      regs$348$d = (ctr$37$q == 8'd7) ? add_up$6$y : regs$348$q;
+      regs$348$d = (counter$q == 8'd7) ? add_up$6$y : regs$348$q;
       regs$349$clock = clock;
-      regs$349$d = (ctr$43$q == 8'd1) ? add_up$12$y : regs$349$q;
+      regs$349$d = (counter$q == 8'd1) ? add_up$12$y : regs$349$q;
       regs$350$clock = clock;
-      regs$350$d = (ctr$43$q == 8'd6) ? add_up$12$y : regs$350$q;
+      regs$350$d = (counter$q == 8'd6) ? add_up$12$y : regs$350$q;
       regs$351$clock = clock;
-      regs$351$d = (ctr$47$q == 8'd5) ? scale_e$1$y : regs$351$q;
+      regs$351$d = (counter$q == 8'd5) ? scale_e$1$y : regs$351$q;
       regs$352$clock = clock;
-      regs$352$d = (ctr$4$q == 8'd4) ? mul_v$4$y : regs$352$q;
+      regs$352$d = (counter$q == 8'd4) ? mul_v$4$y : regs$352$q;
       regs$353$clock = clock;
-      regs$353$d = (ctr$5$q == 8'd4) ? mul_v$5$y : regs$353$q;
+      regs$353$d = (counter$q == 8'd4) ? mul_v$5$y : regs$353$q;
       regs$354$clock = clock;
-      regs$354$d = (ctr$8$q == 8'd0) ? mul_v$8$y : regs$354$q;
+      regs$354$d = (counter$q == 8'd0) ? mul_v$8$y : regs$354$q;
       regs$355$clock = clock;
-      regs$355$d = (ctr$27$q == 8'd0) ? add_v$5$y : regs$355$q;
+      regs$355$d = (counter$q == 8'd0) ? add_v$5$y : regs$355$q;
       regs$356$clock = clock;
-      regs$356$d = (ctr$27$q == 8'd4) ? add_v$5$y : regs$356$q;
+      regs$356$d = (counter$q == 8'd4) ? add_v$5$y : regs$356$q;
       regs$357$clock = clock;
-      regs$357$d = (ctr$30$q == 8'd0) ? add_v$8$y : regs$357$q;
+      regs$357$d = (counter$q == 8'd0) ? add_v$8$y : regs$357$q;
       regs$358$clock = clock;
-      regs$358$d = (ctr$30$q == 8'd0) ? regs$357$q : regs$358$q;
+      regs$358$d = (counter$q == 8'd0) ? regs$357$q : regs$358$q;
       regs$359$clock = clock;
-      regs$359$d = (ctr$30$q == 8'd0) ? regs$358$q : regs$359$q;
+      regs$359$d = (counter$q == 8'd0) ? regs$358$q : regs$359$q;
       regs$360$clock = clock;
-      regs$360$d = (ctr$30$q == 8'd0) ? regs$359$q : regs$360$q;
+      regs$360$d = (counter$q == 8'd0) ? regs$359$q : regs$360$q;
       regs$361$clock = clock;
-      regs$361$d = (ctr$30$q == 8'd0) ? regs$360$q : regs$361$q;
+      regs$361$d = (counter$q == 8'd0) ? regs$360$q : regs$361$q;
       regs$362$clock = clock;
-      regs$362$d = (ctr$30$q == 8'd0) ? regs$361$q : regs$362$q;
+      regs$362$d = (counter$q == 8'd0) ? regs$361$q : regs$362$q;
       regs$363$clock = clock;
-      regs$363$d = (ctr$30$q == 8'd0) ? regs$362$q : regs$363$q;
+      regs$363$d = (counter$q == 8'd0) ? regs$362$q : regs$363$q;
       regs$364$clock = clock;
-      regs$364$d = (ctr$43$q == 8'd5) ? add_up$12$y : regs$364$q;
+      regs$364$d = (counter$q == 8'd5) ? add_up$12$y : regs$364$q;
       regs$365$clock = clock;
-      regs$365$d = (ctr$16$q == 8'd4) ? mul_up$6$y : regs$365$q;
+      regs$365$d = (counter$q == 8'd4) ? mul_up$6$y : regs$365$q;
       regs$366$clock = clock;
-      regs$366$d = (ctr$17$q == 8'd4) ? mul_up$7$y : regs$366$q;
+      regs$366$d = (counter$q == 8'd4) ? mul_up$7$y : regs$366$q;
       regs$367$clock = clock;
-      regs$367$d = (ctr$18$q == 8'd4) ? mul_up$8$y : regs$367$q;
+      regs$367$d = (counter$q == 8'd4) ? mul_up$8$y : regs$367$q;
       regs$368$clock = clock;
-      regs$368$d = (ctr$36$q == 8'd0) ? add_up$5$y : regs$368$q;
+      regs$368$d = (counter$q == 8'd0) ? add_up$5$y : regs$368$q;
       regs$369$clock = clock;
-      regs$369$d = (ctr$44$q == 8'd1) ? add_up$13$y : regs$369$q;
+      regs$369$d = (counter$q == 8'd1) ? add_up$13$y : regs$369$q;
       regs$370$clock = clock;
-      regs$370$d = (ctr$44$q == 8'd6) ? add_up$13$y : regs$370$q;
+      regs$370$d = (counter$q == 8'd6) ? add_up$13$y : regs$370$q;
       regs$371$clock = clock;
-      regs$371$d = (ctr$48$q == 8'd5) ? scale_z$0$y : regs$371$q;
+      regs$371$d = (counter$q == 8'd5) ? scale_z$0$y : regs$371$q;
       regs$372$clock = clock;
-      regs$372$d = (ctr$46$q == 8'd6) ? scale_e$0$y : regs$372$q;
+      regs$372$d = (counter$q == 8'd6) ? scale_e$0$y : regs$372$q;
       regs$373$clock = clock;
-      regs$373$d = (ctr$46$q == 8'd6) ? regs$372$q : regs$373$q;
+      regs$373$d = (counter$q == 8'd6) ? regs$372$q : regs$373$q;
       regs$374$clock = clock;
-      regs$374$d = (ctr$46$q == 8'd6) ? regs$373$q : regs$374$q;
+      regs$374$d = (counter$q == 8'd6) ? regs$373$q : regs$374$q;
       regs$375$clock = clock;
-      regs$375$d = (ctr$46$q == 8'd6) ? regs$374$q : regs$375$q;
+      regs$375$d = (counter$q == 8'd6) ? regs$374$q : regs$375$q;
       regs$376$clock = clock;
-      regs$376$d = (ctr$46$q == 8'd6) ? regs$375$q : regs$376$q;
+      regs$376$d = (counter$q == 8'd6) ? regs$375$q : regs$376$q;
       regs$377$clock = clock;
-      regs$377$d = (ctr$46$q == 8'd6) ? regs$376$q : regs$377$q;
+      regs$377$d = (counter$q == 8'd6) ? regs$376$q : regs$377$q;
       regs$378$clock = clock;
-      regs$378$d = (ctr$49$q == 8'd7) ? scale_s$0$y : regs$378$q;
+      regs$378$d = (counter$q == 8'd7) ? scale_s$0$y : regs$378$q;
       regs$379$clock = clock;
-      regs$379$d = (ctr$36$q == 8'd3) ? add_up$5$y : regs$379$q;
+      regs$379$d = (counter$q == 8'd3) ? add_up$5$y : regs$379$q;
       regs$380$clock = clock;
-      regs$380$d = (ctr$37$q == 8'd2) ? add_up$6$y : regs$380$q;
+      regs$380$d = (counter$q == 8'd2) ? add_up$6$y : regs$380$q;
       regs$381$clock = clock;
-      regs$381$d = (ctr$9$q == 8'd0) ? mul_v$9$y : regs$381$q;
+      regs$381$d = (counter$q == 8'd0) ? mul_v$9$y : regs$381$q;
       regs$382$clock = clock;
-      regs$382$d = (ctr$0$q == 8'd1) ? mul_v$0$y : regs$382$q;
+      regs$382$d = (counter$q == 8'd1) ? mul_v$0$y : regs$382$q;
       regs$383$clock = clock;
-      regs$383$d = (ctr$26$q == 8'd5) ? add_v$4$y : regs$383$q;
+      regs$383$d = (counter$q == 8'd5) ? add_v$4$y : regs$383$q;
       regs$384$clock = clock;
-      regs$384$d = (ctr$26$q == 8'd5) ? regs$383$q : regs$384$q;
+      regs$384$d = (counter$q == 8'd5) ? regs$383$q : regs$384$q;
       regs$385$clock = clock;
-      regs$385$d = (ctr$26$q == 8'd5) ? regs$384$q : regs$385$q;
+      regs$385$d = (counter$q == 8'd5) ? regs$384$q : regs$385$q;
       regs$386$clock = clock;
-      regs$386$d = (ctr$26$q == 8'd5) ? regs$385$q : regs$386$q;
+      regs$386$d = (counter$q == 8'd5) ? regs$385$q : regs$386$q;
       regs$387$clock = clock;
-      regs$387$d = (ctr$26$q == 8'd5) ? regs$386$q : regs$387$q;
+      regs$387$d = (counter$q == 8'd5) ? regs$386$q : regs$387$q;
       regs$388$clock = clock;
-      regs$388$d = (ctr$12$q == 8'd0) ? mul_up$2$y : regs$388$q;
+      regs$388$d = (counter$q == 8'd0) ? mul_up$2$y : regs$388$q;
       regs$389$clock = clock;
-      regs$389$d = (ctr$13$q == 8'd0) ? mul_up$3$y : regs$389$q;
+      regs$389$d = (counter$q == 8'd0) ? mul_up$3$y : regs$389$q;
       regs$390$clock = clock;
-      regs$390$d = (ctr$38$q == 8'd4) ? add_up$7$y : regs$390$q;
+      regs$390$d = (counter$q == 8'd4) ? add_up$7$y : regs$390$q;
       regs$391$clock = clock;
-      regs$391$d = (ctr$19$q == 8'd4) ? mul_up$9$y : regs$391$q;
+      regs$391$d = (counter$q == 8'd4) ? mul_up$9$y : regs$391$q;
       regs$392$clock = clock;
-      regs$392$d = (ctr$14$q == 8'd0) ? mul_up$4$y : regs$392$q;
+      regs$392$d = (counter$q == 8'd0) ? mul_up$4$y : regs$392$q;
       regs$393$clock = clock;
-      regs$393$d = (ctr$39$q == 8'd4) ? add_up$8$y : regs$393$q;
+      regs$393$d = (counter$q == 8'd4) ? add_up$8$y : regs$393$q;
       regs$394$clock = clock;
-      regs$394$d = (ctr$40$q == 8'd0) ? add_up$9$y : regs$394$q;
+      regs$394$d = (counter$q == 8'd0) ? add_up$9$y : regs$394$q;
       regs$395$clock = clock;
-      regs$395$d = (ctr$40$q == 8'd0) ? regs$394$q : regs$395$q;
+      regs$395$d = (counter$q == 8'd0) ? regs$394$q : regs$395$q;
       regs$396$clock = clock;
-      regs$396$d = (ctr$40$q == 8'd0) ? regs$395$q : regs$396$q;
+      regs$396$d = (counter$q == 8'd0) ? regs$395$q : regs$396$q;
       regs$397$clock = clock;
-      regs$397$d = (ctr$40$q == 8'd0) ? regs$396$q : regs$397$q;
+      regs$397$d = (counter$q == 8'd0) ? regs$396$q : regs$397$q;
       regs$398$clock = clock;
-      regs$398$d = (ctr$1$q == 8'd1) ? mul_v$1$y : regs$398$q;
+      regs$398$d = (counter$q == 8'd1) ? mul_v$1$y : regs$398$q;
       regs$399$clock = clock;
-      regs$399$d = (ctr$2$q == 8'd1) ? mul_v$2$y : regs$399$q;
+      regs$399$d = (counter$q == 8'd1) ? mul_v$2$y : regs$399$q;
       regs$400$clock = clock;
-      regs$400$d = (ctr$27$q == 8'd5) ? add_v$5$y : regs$400$q;
+      regs$400$d = (counter$q == 8'd5) ? add_v$5$y : regs$400$q;
       regs$401$clock = clock;
-      regs$401$d = (ctr$27$q == 8'd5) ? regs$400$q : regs$401$q;
+      regs$401$d = (counter$q == 8'd5) ? regs$400$q : regs$401$q;
       regs$402$clock = clock;
-      regs$402$d = (ctr$27$q == 8'd5) ? regs$401$q : regs$402$q;
+      regs$402$d = (counter$q == 8'd5) ? regs$401$q : regs$402$q;
       regs$403$clock = clock;
-      regs$403$d = (ctr$27$q == 8'd5) ? regs$402$q : regs$403$q;
+      regs$403$d = (counter$q == 8'd5) ? regs$402$q : regs$403$q;
       regs$404$clock = clock;
-      regs$404$d = (ctr$27$q == 8'd5) ? regs$403$q : regs$404$q;
+      regs$404$d = (counter$q == 8'd5) ? regs$403$q : regs$404$q;
       regs$405$clock = clock;
-      regs$405$d = (ctr$15$q == 8'd0) ? mul_up$5$y : regs$405$q;
+      regs$405$d = (counter$q == 8'd0) ? mul_up$5$y : regs$405$q;
       regs$406$clock = clock;
-      regs$406$d = (ctr$16$q == 8'd0) ? mul_up$6$y : regs$406$q;
+      regs$406$d = (counter$q == 8'd0) ? mul_up$6$y : regs$406$q;
       regs$407$clock = clock;
-      regs$407$d = (ctr$40$q == 8'd4) ? add_up$9$y : regs$407$q;
+      regs$407$d = (counter$q == 8'd4) ? add_up$9$y : regs$407$q;
       regs$408$clock = clock;
-      regs$408$d = (ctr$20$q == 8'd4) ? mul_up$10$y : regs$408$q;
+      regs$408$d = (counter$q == 8'd4) ? mul_up$10$y : regs$408$q;
       regs$409$clock = clock;
-      regs$409$d = (ctr$17$q == 8'd0) ? mul_up$7$y : regs$409$q;
+      regs$409$d = (counter$q == 8'd0) ? mul_up$7$y : regs$409$q;
       regs$410$clock = clock;
-      regs$410$d = (ctr$41$q == 8'd4) ? add_up$10$y : regs$410$q;
+      regs$410$d = (counter$q == 8'd4) ? add_up$10$y : regs$410$q;
       regs$411$clock = clock;
-      regs$411$d = (ctr$41$q == 8'd0) ? add_up$10$y : regs$411$q;
+      regs$411$d = (counter$q == 8'd0) ? add_up$10$y : regs$411$q;
       regs$412$clock = clock;
-      regs$412$d = (ctr$41$q == 8'd0) ? regs$411$q : regs$412$q;
+      regs$412$d = (counter$q == 8'd0) ? regs$411$q : regs$412$q;
       regs$413$clock = clock;
-      regs$413$d = (ctr$41$q == 8'd0) ? regs$412$q : regs$413$q;
+      regs$413$d = (counter$q == 8'd0) ? regs$412$q : regs$413$q;
       regs$414$clock = clock;
-      regs$414$d = (ctr$41$q == 8'd0) ? regs$413$q : regs$414$q;
+      regs$414$d = (counter$q == 8'd0) ? regs$413$q : regs$414$q;
       regs$415$clock = clock;
-      regs$415$d = (ctr$29$q == 8'd4) ? add_v$7$y : regs$415$q;
+      regs$415$d = (counter$q == 8'd4) ? add_v$7$y : regs$415$q;
       regs$416$clock = clock;
-      regs$416$d = (ctr$29$q == 8'd4) ? regs$415$q : regs$416$q;
+      regs$416$d = (counter$q == 8'd4) ? regs$415$q : regs$416$q;
       regs$417$clock = clock;
-      regs$417$d = (ctr$29$q == 8'd4) ? regs$416$q : regs$417$q;
+      regs$417$d = (counter$q == 8'd4) ? regs$416$q : regs$417$q;
       regs$418$clock = clock;
-      regs$418$d = (ctr$29$q == 8'd4) ? regs$417$q : regs$418$q;
+      regs$418$d = (counter$q == 8'd4) ? regs$417$q : regs$418$q;
       regs$419$clock = clock;
-      regs$419$d = (ctr$29$q == 8'd4) ? regs$418$q : regs$419$q;
+      regs$419$d = (counter$q == 8'd4) ? regs$418$q : regs$419$q;
       regs$420$clock = clock;
-      regs$420$d = (ctr$29$q == 8'd4) ? regs$419$q : regs$420$q;
+      regs$420$d = (counter$q == 8'd4) ? regs$419$q : regs$420$q;
       regs$421$clock = clock;
-      regs$421$d = (ctr$38$q == 8'd0) ? add_up$7$y : regs$421$q;
+      regs$421$d = (counter$q == 8'd0) ? add_up$7$y : regs$421$q;
       regs$422$clock = clock;
-      regs$422$d = (ctr$38$q == 8'd0) ? regs$421$q : regs$422$q;
+      regs$422$d = (counter$q == 8'd0) ? regs$421$q : regs$422$q;
       regs$423$clock = clock;
-      regs$423$d = (ctr$38$q == 8'd0) ? regs$422$q : regs$423$q;
+      regs$423$d = (counter$q == 8'd0) ? regs$422$q : regs$423$q;
       regs$424$clock = clock;
-      regs$424$d = (ctr$38$q == 8'd0) ? regs$423$q : regs$424$q;
+      regs$424$d = (counter$q == 8'd0) ? regs$423$q : regs$424$q;
       regs$425$clock = clock;
-      regs$425$d = (ctr$38$q == 8'd0) ? regs$424$q : regs$425$q;
+      regs$425$d = (counter$q == 8'd0) ? regs$424$q : regs$425$q;
       regs$426$clock = clock;
-      regs$426$d = (ctr$38$q == 8'd0) ? regs$425$q : regs$426$q;
+      regs$426$d = (counter$q == 8'd0) ? regs$425$q : regs$426$q;
       regs$427$clock = clock;
-      regs$427$d = (ctr$26$q == 8'd1) ? add_v$4$y : regs$427$q;
+      regs$427$d = (counter$q == 8'd1) ? add_v$4$y : regs$427$q;
       regs$428$clock = clock;
-      regs$428$d = (ctr$29$q == 8'd1) ? add_v$7$y : regs$428$q;
+      regs$428$d = (counter$q == 8'd1) ? add_v$7$y : regs$428$q;
       regs$429$clock = clock;
-      regs$429$d = (ctr$29$q == 8'd1) ? regs$428$q : regs$429$q;
+      regs$429$d = (counter$q == 8'd1) ? regs$428$q : regs$429$q;
       regs$430$clock = clock;
-      regs$430$d = (ctr$29$q == 8'd1) ? regs$429$q : regs$430$q;
+      regs$430$d = (counter$q == 8'd1) ? regs$429$q : regs$430$q;
       regs$431$clock = clock;
-      regs$431$d = (ctr$29$q == 8'd1) ? regs$430$q : regs$431$q;
+      regs$431$d = (counter$q == 8'd1) ? regs$430$q : regs$431$q;
       regs$432$clock = clock;
-      regs$432$d = (ctr$40$q == 8'd2) ? add_up$9$y : regs$432$q;
+      regs$432$d = (counter$q == 8'd2) ? add_up$9$y : regs$432$q;
       regs$433$clock = clock;
-      regs$433$d = (ctr$39$q == 8'd7) ? add_up$8$y : regs$433$q;
+      regs$433$d = (counter$q == 8'd7) ? add_up$8$y : regs$433$q;
       regs$434$clock = clock;
-      regs$434$d = (ctr$49$q == 8'd4) ? scale_s$0$y : regs$434$q;
+      regs$434$d = (counter$q == 8'd4) ? scale_s$0$y : regs$434$q;
       regs$435$clock = clock;
-      regs$435$d = (ctr$45$q == 8'd4) ? add_up$14$y : regs$435$q;
+      regs$435$d = (counter$q == 8'd4) ? add_up$14$y : regs$435$q;
       regs$436$clock = clock;
-      regs$436$d = (ctr$45$q == 8'd4) ? regs$435$q : regs$436$q;
+      regs$436$d = (counter$q == 8'd4) ? regs$435$q : regs$436$q;
       regs$437$clock = clock;
-      regs$437$d = (ctr$43$q == 8'd0) ? add_up$12$y : regs$437$q;
+      regs$437$d = (counter$q == 8'd0) ? add_up$12$y : regs$437$q;
       regs$438$clock = clock;
-      regs$438$d = (ctr$45$q == 8'd2) ? add_up$14$y : regs$438$q;
+      regs$438$d = (counter$q == 8'd2) ? add_up$14$y : regs$438$q;
       regs$439$clock = clock;
-      regs$439$d = (ctr$45$q == 8'd2) ? regs$438$q : regs$439$q;
+      regs$439$d = (counter$q == 8'd2) ? regs$438$q : regs$439$q;
       regs$440$clock = clock;
-      regs$440$d = (ctr$3$q == 8'd1) ? mul_v$3$y : regs$440$q;
+      regs$440$d = (counter$q == 8'd1) ? mul_v$3$y : regs$440$q;
       regs$441$clock = clock;
-      regs$441$d = (ctr$4$q == 8'd1) ? mul_v$4$y : regs$441$q;
+      regs$441$d = (counter$q == 8'd1) ? mul_v$4$y : regs$441$q;
       regs$442$clock = clock;
-      regs$442$d = (ctr$28$q == 8'd5) ? add_v$6$y : regs$442$q;
+      regs$442$d = (counter$q == 8'd5) ? add_v$6$y : regs$442$q;
       regs$443$clock = clock;
-      regs$443$d = (ctr$28$q == 8'd5) ? regs$442$q : regs$443$q;
+      regs$443$d = (counter$q == 8'd5) ? regs$442$q : regs$443$q;
       regs$444$clock = clock;
-      regs$444$d = (ctr$28$q == 8'd5) ? regs$443$q : regs$444$q;
+      regs$444$d = (counter$q == 8'd5) ? regs$443$q : regs$444$q;
       regs$445$clock = clock;
-      regs$445$d = (ctr$28$q == 8'd5) ? regs$444$q : regs$445$q;
+      regs$445$d = (counter$q == 8'd5) ? regs$444$q : regs$445$q;
       regs$446$clock = clock;
-      regs$446$d = (ctr$28$q == 8'd5) ? regs$445$q : regs$446$q;
+      regs$446$d = (counter$q == 8'd5) ? regs$445$q : regs$446$q;
       regs$447$clock = clock;
-      regs$447$d = (ctr$18$q == 8'd0) ? mul_up$8$y : regs$447$q;
+      regs$447$d = (counter$q == 8'd0) ? mul_up$8$y : regs$447$q;
       regs$448$clock = clock;
-      regs$448$d = (ctr$19$q == 8'd0) ? mul_up$9$y : regs$448$q;
+      regs$448$d = (counter$q == 8'd0) ? mul_up$9$y : regs$448$q;
       regs$449$clock = clock;
-      regs$449$d = (ctr$42$q == 8'd4) ? add_up$11$y : regs$449$q;
+      regs$449$d = (counter$q == 8'd4) ? add_up$11$y : regs$449$q;
       regs$450$clock = clock;
-      regs$450$d = (ctr$20$q == 8'd0) ? mul_up$10$y : regs$450$q;
+      regs$450$d = (counter$q == 8'd0) ? mul_up$10$y : regs$450$q;
       regs$451$clock = clock;
-      regs$451$d = (ctr$21$q == 8'd0) ? mul_up$11$y : regs$451$q;
+      regs$451$d = (counter$q == 8'd0) ? mul_up$11$y : regs$451$q;
       regs$452$clock = clock;
-      regs$452$d = (ctr$43$q == 8'd4) ? add_up$12$y : regs$452$q;
+      regs$452$d = (counter$q == 8'd4) ? add_up$12$y : regs$452$q;
       regs$453$clock = clock;
-      regs$453$d = (ctr$42$q == 8'd0) ? add_up$11$y : regs$453$q;
+      regs$453$d = (counter$q == 8'd0) ? add_up$11$y : regs$453$q;
       regs$454$clock = clock;
-      regs$454$d = (ctr$42$q == 8'd0) ? regs$453$q : regs$454$q;
+      regs$454$d = (counter$q == 8'd0) ? regs$453$q : regs$454$q;
       regs$455$clock = clock;
-      regs$455$d = (ctr$42$q == 8'd0) ? regs$454$q : regs$455$q;
+      regs$455$d = (counter$q == 8'd0) ? regs$454$q : regs$455$q;
       regs$456$clock = clock;
-      regs$456$d = (ctr$42$q == 8'd0) ? regs$455$q : regs$456$q;
+      regs$456$d = (counter$q == 8'd0) ? regs$455$q : regs$456$q;
       regs$457$clock = clock;
-      regs$457$d = (ctr$5$q == 8'd1) ? mul_v$5$y : regs$457$q;
+      regs$457$d = (counter$q == 8'd1) ? mul_v$5$y : regs$457$q;
       regs$458$clock = clock;
-      regs$458$d = (ctr$6$q == 8'd1) ? mul_v$6$y : regs$458$q;
+      regs$458$d = (counter$q == 8'd1) ? mul_v$6$y : regs$458$q;
       regs$459$clock = clock;
-      regs$459$d = (ctr$29$q == 8'd5) ? add_v$7$y : regs$459$q;
+      regs$459$d = (counter$q == 8'd5) ? add_v$7$y : regs$459$q;
       regs$460$clock = clock;
-      regs$460$d = (ctr$29$q == 8'd5) ? regs$459$q : regs$460$q;
+      regs$460$d = (counter$q == 8'd5) ? regs$459$q : regs$460$q;
       regs$461$clock = clock;
-      regs$461$d = (ctr$29$q == 8'd5) ? regs$460$q : regs$461$q;
+      regs$461$d = (counter$q == 8'd5) ? regs$460$q : regs$461$q;
       regs$462$clock = clock;
-      regs$462$d = (ctr$29$q == 8'd5) ? regs$461$q : regs$462$q;
+      regs$462$d = (counter$q == 8'd5) ? regs$461$q : regs$462$q;
       regs$463$clock = clock;
-      regs$463$d = (ctr$29$q == 8'd5) ? regs$462$q : regs$463$q;
+      regs$463$d = (counter$q == 8'd5) ? regs$462$q : regs$463$q;
       regs$464$clock = clock;
-      regs$464$d = (ctr$13$q == 8'd1) ? mul_up$3$y : regs$464$q;
+      regs$464$d = (counter$q == 8'd1) ? mul_up$3$y : regs$464$q;
       regs$465$clock = clock;
-      regs$465$d = (ctr$14$q == 8'd1) ? mul_up$4$y : regs$465$q;
+      regs$465$d = (counter$q == 8'd1) ? mul_up$4$y : regs$465$q;
       regs$466$clock = clock;
-      regs$466$d = (ctr$41$q == 8'd7) ? add_up$10$y : regs$466$q;
+      regs$466$d = (counter$q == 8'd7) ? add_up$10$y : regs$466$q;
       regs$467$clock = clock;
-      regs$467$d = (ctr$15$q == 8'd1) ? mul_up$5$y : regs$467$q;
+      regs$467$d = (counter$q == 8'd1) ? mul_up$5$y : regs$467$q;
       regs$468$clock = clock;
-      regs$468$d = (ctr$16$q == 8'd1) ? mul_up$6$y : regs$468$q;
+      regs$468$d = (counter$q == 8'd1) ? mul_up$6$y : regs$468$q;
       regs$469$clock = clock;
-      regs$469$d = (ctr$42$q == 8'd7) ? add_up$11$y : regs$469$q;
+      regs$469$d = (counter$q == 8'd7) ? add_up$11$y : regs$469$q;
       regs$470$clock = clock;
-      regs$470$d = (ctr$37$q == 8'd3) ? add_up$6$y : regs$470$q;
+      regs$470$d = (counter$q == 8'd3) ? add_up$6$y : regs$470$q;
       regs$471$clock = clock;
-      regs$471$d = (ctr$37$q == 8'd3) ? regs$470$q : regs$471$q;
+      regs$471$d = (counter$q == 8'd3) ? regs$470$q : regs$471$q;
       regs$472$clock = clock;
-      regs$472$d = (ctr$37$q == 8'd3) ? regs$471$q : regs$472$q;
+      regs$472$d = (counter$q == 8'd3) ? regs$471$q : regs$472$q;
       regs$473$clock = clock;
-      regs$473$d = (ctr$37$q == 8'd3) ? regs$472$q : regs$473$q;
+      regs$473$d = (counter$q == 8'd3) ? regs$472$q : regs$473$q;
       regs$474$clock = clock;
-      regs$474$d = (ctr$30$q == 8'd4) ? add_v$8$y : regs$474$q;
+      regs$474$d = (counter$q == 8'd4) ? add_v$8$y : regs$474$q;
       regs$475$clock = clock;
-      regs$475$d = (ctr$30$q == 8'd4) ? regs$474$q : regs$475$q;
+      regs$475$d = (counter$q == 8'd4) ? regs$474$q : regs$475$q;
       regs$476$clock = clock;
-      regs$476$d = (ctr$30$q == 8'd4) ? regs$475$q : regs$476$q;
+      regs$476$d = (counter$q == 8'd4) ? regs$475$q : regs$476$q;
       regs$477$clock = clock;
-      regs$477$d = (ctr$30$q == 8'd4) ? regs$476$q : regs$477$q;
+      regs$477$d = (counter$q == 8'd4) ? regs$476$q : regs$477$q;
       regs$478$clock = clock;
-      regs$478$d = (ctr$30$q == 8'd4) ? regs$477$q : regs$478$q;
+      regs$478$d = (counter$q == 8'd4) ? regs$477$q : regs$478$q;
       regs$479$clock = clock;
-      regs$479$d = (ctr$30$q == 8'd4) ? regs$478$q : regs$479$q;
+      regs$479$d = (counter$q == 8'd4) ? regs$478$q : regs$479$q;
       regs$480$clock = clock;
-      regs$480$d = (ctr$38$q == 8'd2) ? add_up$7$y : regs$480$q;
+      regs$480$d = (counter$q == 8'd2) ? add_up$7$y : regs$480$q;
       regs$481$clock = clock;
-      regs$481$d = (ctr$38$q == 8'd2) ? regs$480$q : regs$481$q;
+      regs$481$d = (counter$q == 8'd2) ? regs$480$q : regs$481$q;
       regs$482$clock = clock;
-      regs$482$d = (ctr$38$q == 8'd2) ? regs$481$q : regs$482$q;
+      regs$482$d = (counter$q == 8'd2) ? regs$481$q : regs$482$q;
       regs$483$clock = clock;
-      regs$483$d = (ctr$38$q == 8'd2) ? regs$482$q : regs$483$q;
+      regs$483$d = (counter$q == 8'd2) ? regs$482$q : regs$483$q;
       regs$484$clock = clock;
-      regs$484$d = (ctr$38$q == 8'd2) ? regs$483$q : regs$484$q;
+      regs$484$d = (counter$q == 8'd2) ? regs$483$q : regs$484$q;
       regs$485$clock = clock;
-      regs$485$d = (ctr$38$q == 8'd2) ? regs$484$q : regs$485$q;
+      regs$485$d = (counter$q == 8'd2) ? regs$484$q : regs$485$q;
       regs$486$clock = clock;
-      regs$486$d = (ctr$27$q == 8'd1) ? add_v$5$y : regs$486$q;
+      regs$486$d = (counter$q == 8'd1) ? add_v$5$y : regs$486$q;
       regs$487$clock = clock;
-      regs$487$d = (ctr$30$q == 8'd1) ? add_v$8$y : regs$487$q;
+      regs$487$d = (counter$q == 8'd1) ? add_v$8$y : regs$487$q;
       regs$488$clock = clock;
-      regs$488$d = (ctr$30$q == 8'd1) ? regs$487$q : regs$488$q;
+      regs$488$d = (counter$q == 8'd1) ? regs$487$q : regs$488$q;
       regs$489$clock = clock;
-      regs$489$d = (ctr$30$q == 8'd1) ? regs$488$q : regs$489$q;
+      regs$489$d = (counter$q == 8'd1) ? regs$488$q : regs$489$q;
       regs$490$clock = clock;
-      regs$490$d = (ctr$30$q == 8'd1) ? regs$489$q : regs$490$q;
+      regs$490$d = (counter$q == 8'd1) ? regs$489$q : regs$490$q;
       regs$491$clock = clock;
-      regs$491$d = (ctr$41$q == 8'd2) ? add_up$10$y : regs$491$q;
+      regs$491$d = (counter$q == 8'd2) ? add_up$10$y : regs$491$q;
       regs$492$clock = clock;
-      regs$492$d = (ctr$40$q == 8'd7) ? add_up$9$y : regs$492$q;
+      regs$492$d = (counter$q == 8'd7) ? add_up$9$y : regs$492$q;
       regs$493$clock = clock;
-      regs$493$d = (ctr$49$q == 8'd0) ? scale_s$0$y : regs$493$q;
+      regs$493$d = (counter$q == 8'd0) ? scale_s$0$y : regs$493$q;
       regs$494$clock = clock;
-      regs$494$d = (ctr$44$q == 8'd0) ? add_up$13$y : regs$494$q;
+      regs$494$d = (counter$q == 8'd0) ? add_up$13$y : regs$494$q;
       regs$495$clock = clock;
-      regs$495$d = (ctr$44$q == 8'd0) ? regs$494$q : regs$495$q;
+      regs$495$d = (counter$q == 8'd0) ? regs$494$q : regs$495$q;
       regs$496$clock = clock;
-      regs$496$d = (ctr$45$q == 8'd0) ? add_up$14$y : regs$496$q;
+      regs$496$d = (counter$q == 8'd0) ? add_up$14$y : regs$496$q;
       regs$497$clock = clock;
-      regs$497$d = (ctr$39$q == 8'd3) ? add_up$8$y : regs$497$q;
+      regs$497$d = (counter$q == 8'd3) ? add_up$8$y : regs$497$q;
       regs$498$clock = clock;
-      regs$498$d = (ctr$7$q == 8'd1) ? mul_v$7$y : regs$498$q;
+      regs$498$d = (counter$q == 8'd1) ? mul_v$7$y : regs$498$q;
       regs$499$clock = clock;
-      regs$499$d = (ctr$8$q == 8'd1) ? mul_v$8$y : regs$499$q;
+      regs$499$d = (counter$q == 8'd1) ? mul_v$8$y : regs$499$q;
       regs$500$clock = clock;
-      regs$500$d = (ctr$30$q == 8'd5) ? add_v$8$y : regs$500$q;
+      regs$500$d = (counter$q == 8'd5) ? add_v$8$y : regs$500$q;
       regs$501$clock = clock;
-      regs$501$d = (ctr$30$q == 8'd5) ? regs$500$q : regs$501$q;
+      regs$501$d = (counter$q == 8'd5) ? regs$500$q : regs$501$q;
       regs$502$clock = clock;
-      regs$502$d = (ctr$30$q == 8'd5) ? regs$501$q : regs$502$q;
+      regs$502$d = (counter$q == 8'd5) ? regs$501$q : regs$502$q;
       regs$503$clock = clock;
-      regs$503$d = (ctr$30$q == 8'd5) ? regs$502$q : regs$503$q;
+      regs$503$d = (counter$q == 8'd5) ? regs$502$q : regs$503$q;
       regs$504$clock = clock;
-      regs$504$d = (ctr$30$q == 8'd5) ? regs$503$q : regs$504$q;
+      regs$504$d = (counter$q == 8'd5) ? regs$503$q : regs$504$q;
       regs$505$clock = clock;
-      regs$505$d = (ctr$21$q == 8'd4) ? mul_up$11$y : regs$505$q;
+      regs$505$d = (counter$q == 8'd4) ? mul_up$11$y : regs$505$q;
       regs$506$clock = clock;
-      regs$506$d = (ctr$17$q == 8'd1) ? mul_up$7$y : regs$506$q;
+      regs$506$d = (counter$q == 8'd1) ? mul_up$7$y : regs$506$q;
       regs$507$clock = clock;
-      regs$507$d = (ctr$43$q == 8'd7) ? add_up$12$y : regs$507$q;
+      regs$507$d = (counter$q == 8'd7) ? add_up$12$y : regs$507$q;
       regs$508$clock = clock;
-      regs$508$d = (ctr$18$q == 8'd1) ? mul_up$8$y : regs$508$q;
+      regs$508$d = (counter$q == 8'd1) ? mul_up$8$y : regs$508$q;
       regs$509$clock = clock;
-      regs$509$d = (ctr$19$q == 8'd1) ? mul_up$9$y : regs$509$q;
+      regs$509$d = (counter$q == 8'd1) ? mul_up$9$y : regs$509$q;
       regs$510$clock = clock;
-      regs$510$d = (ctr$44$q == 8'd7) ? add_up$13$y : regs$510$q;
+      regs$510$d = (counter$q == 8'd7) ? add_up$13$y : regs$510$q;
       regs$511$clock = clock;
-      regs$511$d = (ctr$38$q == 8'd3) ? add_up$7$y : regs$511$q;
+      regs$511$d = (counter$q == 8'd3) ? add_up$7$y : regs$511$q;
       regs$512$clock = clock;
-      regs$512$d = (ctr$38$q == 8'd3) ? regs$511$q : regs$512$q;
+      regs$512$d = (counter$q == 8'd3) ? regs$511$q : regs$512$q;
       regs$513$clock = clock;
-      regs$513$d = (ctr$38$q == 8'd3) ? regs$512$q : regs$513$q;
+      regs$513$d = (counter$q == 8'd3) ? regs$512$q : regs$513$q;
       regs$514$clock = clock;
-      regs$514$d = (ctr$38$q == 8'd3) ? regs$513$q : regs$514$q;
+      regs$514$d = (counter$q == 8'd3) ? regs$513$q : regs$514$q;
       regs$515$clock = clock;
-      regs$515$d = (ctr$9$q == 8'd1) ? mul_v$9$y : regs$515$q;
+      regs$515$d = (counter$q == 8'd1) ? mul_v$9$y : regs$515$q;
       regs$516$clock = clock;
-      regs$516$d = (ctr$9$q == 8'd2) ? mul_v$9$y : regs$516$q;
+      regs$516$d = (counter$q == 8'd2) ? mul_v$9$y : regs$516$q;
       regs$517$clock = clock;
-      regs$517$d = (ctr$25$q == 8'd1) ? add_v$3$y : regs$517$q;
+      regs$517$d = (counter$q == 8'd1) ? add_v$3$y : regs$517$q;
       regs$518$clock = clock;
-      regs$518$d = (ctr$25$q == 8'd1) ? regs$517$q : regs$518$q;
+      regs$518$d = (counter$q == 8'd1) ? regs$517$q : regs$518$q;
       regs$519$clock = clock;
-      regs$519$d = (ctr$25$q == 8'd1) ? regs$518$q : regs$519$q;
+      regs$519$d = (counter$q == 8'd1) ? regs$518$q : regs$519$q;
       regs$520$clock = clock;
-      regs$520$d = (ctr$25$q == 8'd1) ? regs$519$q : regs$520$q;
+      regs$520$d = (counter$q == 8'd1) ? regs$519$q : regs$520$q;
       regs$521$clock = clock;
-      regs$521$d = (ctr$25$q == 8'd1) ? regs$520$q : regs$521$q;
+      regs$521$d = (counter$q == 8'd1) ? regs$520$q : regs$521$q;
       regs$522$clock = clock;
-      regs$522$d = (ctr$20$q == 8'd1) ? mul_up$10$y : regs$522$q;
+      regs$522$d = (counter$q == 8'd1) ? mul_up$10$y : regs$522$q;
       regs$523$clock = clock;
-      regs$523$d = (ctr$21$q == 8'd1) ? mul_up$11$y : regs$523$q;
+      regs$523$d = (counter$q == 8'd1) ? mul_up$11$y : regs$523$q;
       regs$524$clock = clock;
-      regs$524$d = (ctr$45$q == 8'd7) ? add_up$14$y : regs$524$q;
+      regs$524$d = (counter$q == 8'd7) ? add_up$14$y : regs$524$q;
       regs$525$clock = clock;
-      regs$525$d = (ctr$19$q == 8'd2) ? mul_up$9$y : regs$525$q;
+      regs$525$d = (counter$q == 8'd2) ? mul_up$9$y : regs$525$q;
       regs$526$clock = clock;
-      regs$526$d = (ctr$20$q == 8'd2) ? mul_up$10$y : regs$526$q;
+      regs$526$d = (counter$q == 8'd2) ? mul_up$10$y : regs$526$q;
       regs$527$clock = clock;
-      regs$527$d = (ctr$39$q == 8'd0) ? add_up$8$y : regs$527$q;
+      regs$527$d = (counter$q == 8'd0) ? add_up$8$y : regs$527$q;
       regs$528$clock = clock;
-      regs$528$d = (ctr$44$q == 8'd4) ? add_up$13$y : regs$528$q;
+      regs$528$d = (counter$q == 8'd4) ? add_up$13$y : regs$528$q;
       regs$529$clock = clock;
-      regs$529$d = (ctr$44$q == 8'd4) ? regs$528$q : regs$529$q;
+      regs$529$d = (counter$q == 8'd4) ? regs$528$q : regs$529$q;
       regs$530$clock = clock;
-      regs$530$d = (ctr$44$q == 8'd4) ? regs$529$q : regs$530$q;
+      regs$530$d = (counter$q == 8'd4) ? regs$529$q : regs$530$q;
       regs$531$clock = clock;
-      regs$531$d = (ctr$25$q == 8'd5) ? add_v$3$y : regs$531$q;
+      regs$531$d = (counter$q == 8'd5) ? add_v$3$y : regs$531$q;
       regs$532$clock = clock;
-      regs$532$d = (ctr$25$q == 8'd5) ? regs$531$q : regs$532$q;
+      regs$532$d = (counter$q == 8'd5) ? regs$531$q : regs$532$q;
       regs$533$clock = clock;
-      regs$533$d = (ctr$25$q == 8'd5) ? regs$532$q : regs$533$q;
+      regs$533$d = (counter$q == 8'd5) ? regs$532$q : regs$533$q;
       regs$534$clock = clock;
-      regs$534$d = (ctr$25$q == 8'd5) ? regs$533$q : regs$534$q;
+      regs$534$d = (counter$q == 8'd5) ? regs$533$q : regs$534$q;
       regs$535$clock = clock;
-      regs$535$d = (ctr$25$q == 8'd5) ? regs$534$q : regs$535$q;
+      regs$535$d = (counter$q == 8'd5) ? regs$534$q : regs$535$q;
       regs$536$clock = clock;
-      regs$536$d = (ctr$25$q == 8'd5) ? regs$535$q : regs$536$q;
+      regs$536$d = (counter$q == 8'd5) ? regs$535$q : regs$536$q;
       regs$537$clock = clock;
-      regs$537$d = (ctr$39$q == 8'd2) ? add_up$8$y : regs$537$q;
+      regs$537$d = (counter$q == 8'd2) ? add_up$8$y : regs$537$q;
       regs$538$clock = clock;
-      regs$538$d = (ctr$39$q == 8'd2) ? regs$537$q : regs$538$q;
+      regs$538$d = (counter$q == 8'd2) ? regs$537$q : regs$538$q;
       regs$539$clock = clock;
-      regs$539$d = (ctr$39$q == 8'd2) ? regs$538$q : regs$539$q;
+      regs$539$d = (counter$q == 8'd2) ? regs$538$q : regs$539$q;
       regs$540$clock = clock;
-      regs$540$d = (ctr$39$q == 8'd2) ? regs$539$q : regs$540$q;
+      regs$540$d = (counter$q == 8'd2) ? regs$539$q : regs$540$q;
       regs$541$clock = clock;
-      regs$541$d = (ctr$39$q == 8'd2) ? regs$540$q : regs$541$q;
+      regs$541$d = (counter$q == 8'd2) ? regs$540$q : regs$541$q;
       regs$542$clock = clock;
-      regs$542$d = (ctr$39$q == 8'd2) ? regs$541$q : regs$542$q;
+      regs$542$d = (counter$q == 8'd2) ? regs$541$q : regs$542$q;
       regs$543$clock = clock;
-      regs$543$d = (ctr$28$q == 8'd1) ? add_v$6$y : regs$543$q;
+      regs$543$d = (counter$q == 8'd1) ? add_v$6$y : regs$543$q;
       regs$544$clock = clock;
-      regs$544$d = (ctr$29$q == 8'd2) ? add_v$7$y : regs$544$q;
+      regs$544$d = (counter$q == 8'd2) ? add_v$7$y : regs$544$q;
       regs$545$clock = clock;
-      regs$545$d = (ctr$29$q == 8'd2) ? regs$544$q : regs$545$q;
+      regs$545$d = (counter$q == 8'd2) ? regs$544$q : regs$545$q;
       regs$546$clock = clock;
-      regs$546$d = (ctr$29$q == 8'd2) ? regs$545$q : regs$546$q;
+      regs$546$d = (counter$q == 8'd2) ? regs$545$q : regs$546$q;
       regs$547$clock = clock;
-      regs$547$d = (ctr$45$q == 8'd6) ? add_up$14$y : regs$547$q;
+      regs$547$d = (counter$q == 8'd6) ? add_up$14$y : regs$547$q;
       regs$548$clock = clock;
-      regs$548$d = (ctr$42$q == 8'd2) ? add_up$11$y : regs$548$q;
+      regs$548$d = (counter$q == 8'd2) ? add_up$11$y : regs$548$q;
       regs$549$clock = clock;
-      regs$549$d = (ctr$49$q == 8'd1) ? scale_s$0$y : regs$549$q;
+      regs$549$d = (counter$q == 8'd1) ? scale_s$0$y : regs$549$q;
       regs$550$clock = clock;
-      regs$550$d = (ctr$43$q == 8'd2) ? add_up$12$y : regs$550$q;
+      regs$550$d = (counter$q == 8'd2) ? add_up$12$y : regs$550$q;
       regs$551$clock = clock;
-      regs$551$d = (ctr$43$q == 8'd2) ? regs$550$q : regs$551$q;
+      regs$551$d = (counter$q == 8'd2) ? regs$550$q : regs$551$q;
       regs$552$clock = clock;
-      regs$552$d = (ctr$44$q == 8'd2) ? add_up$13$y : regs$552$q;
+      regs$552$d = (counter$q == 8'd2) ? add_up$13$y : regs$552$q;
       regs$553$clock = clock;
-      regs$553$d = (ctr$40$q == 8'd3) ? add_up$9$y : regs$553$q;
+      regs$553$d = (counter$q == 8'd3) ? add_up$9$y : regs$553$q;
       exact$0$clock = clock;
       exact$0$d = (counter$q == 8'd0) ? v_exact : exact$0$q;
       exact$1$clock = clock;
@@ -8833,7 +8333,7 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
       tags$10$d = (counter$q == 8'd0) ? tags$9$q : tags$10$q;
       mul_v$0$clock = clock;
       mul_v$0$valid_in = 1'b0;
-      case (ctr$0$q)
+      case (counter$q)
         8'd0: begin mul_v$0$a = regs$139$q; mul_v$0$b = regs$31$q; end
         8'd1: begin mul_v$0$a = regs$0$q; mul_v$0$b = regs$15$q; end
         8'd2: begin mul_v$0$a = regs$1$q; mul_v$0$b = regs$22$q; end
@@ -8846,7 +8346,7 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
       endcase
       mul_v$1$clock = clock;
       mul_v$1$valid_in = 1'b0;
-      case (ctr$1$q)
+      case (counter$q)
         8'd0: begin mul_v$1$a = regs$149$q; mul_v$1$b = regs$33$q; end
         8'd1: begin mul_v$1$a = regs$1$q; mul_v$1$b = regs$19$q; end
         8'd2: begin mul_v$1$a = regs$2$q; mul_v$1$b = regs$26$q; end
@@ -8859,7 +8359,7 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
       endcase
       mul_v$2$clock = clock;
       mul_v$2$valid_in = 1'b0;
-      case (ctr$2$q)
+      case (counter$q)
         8'd0: begin mul_v$2$a = regs$139$q; mul_v$2$b = regs$38$q; end
         8'd1: begin mul_v$2$a = regs$2$q; mul_v$2$b = regs$23$q; end
         8'd2: begin mul_v$2$a = regs$4$q; mul_v$2$b = regs$15$q; end
@@ -8872,7 +8372,7 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
       endcase
       mul_v$3$clock = clock;
       mul_v$3$valid_in = 1'b0;
-      case (ctr$3$q)
+      case (counter$q)
         8'd0: begin mul_v$3$a = regs$149$q; mul_v$3$b = regs$40$q; end
         8'd1: begin mul_v$3$a = regs$0$q; mul_v$3$b = regs$16$q; end
         8'd2: begin mul_v$3$a = regs$5$q; mul_v$3$b = regs$19$q; end
@@ -8885,7 +8385,7 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
       endcase
       mul_v$4$clock = clock;
       mul_v$4$valid_in = 1'b0;
-      case (ctr$4$q)
+      case (counter$q)
         8'd0: begin mul_v$4$a = regs$139$q; mul_v$4$b = regs$45$q; end
         8'd1: begin mul_v$4$a = regs$1$q; mul_v$4$b = regs$20$q; end
         8'd2: begin mul_v$4$a = regs$6$q; mul_v$4$b = regs$23$q; end
@@ -8898,7 +8398,7 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
       endcase
       mul_v$5$clock = clock;
       mul_v$5$valid_in = 1'b0;
-      case (ctr$5$q)
+      case (counter$q)
         8'd0: begin mul_v$5$a = regs$149$q; mul_v$5$b = regs$47$q; end
         8'd1: begin mul_v$5$a = regs$2$q; mul_v$5$b = regs$24$q; end
         8'd2: begin mul_v$5$a = regs$4$q; mul_v$5$b = regs$16$q; end
@@ -8911,7 +8411,7 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
       endcase
       mul_v$6$clock = clock;
       mul_v$6$valid_in = 1'b0;
-      case (ctr$6$q)
+      case (counter$q)
         8'd1: begin mul_v$6$a = regs$0$q; mul_v$6$b = regs$17$q; end
         8'd2: begin mul_v$6$a = regs$5$q; mul_v$6$b = regs$20$q; end
         8'd3: begin mul_v$6$a = regs$10$q; mul_v$6$b = regs$23$q; end
@@ -8923,7 +8423,7 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
       endcase
       mul_v$7$clock = clock;
       mul_v$7$valid_in = 1'b0;
-      case (ctr$7$q)
+      case (counter$q)
         8'd1: begin mul_v$7$a = regs$1$q; mul_v$7$b = regs$21$q; end
         8'd2: begin mul_v$7$a = regs$6$q; mul_v$7$b = regs$24$q; end
         8'd3: begin mul_v$7$a = regs$8$q; mul_v$7$b = regs$16$q; end
@@ -8935,7 +8435,7 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
       endcase
       mul_v$8$clock = clock;
       mul_v$8$valid_in = 1'b0;
-      case (ctr$8$q)
+      case (counter$q)
         8'd1: begin mul_v$8$a = regs$2$q; mul_v$8$b = regs$25$q; end
         8'd2: begin mul_v$8$a = regs$4$q; mul_v$8$b = regs$17$q; end
         8'd3: begin mul_v$8$a = regs$9$q; mul_v$8$b = regs$20$q; end
@@ -8947,7 +8447,7 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
       endcase
       mul_v$9$clock = clock;
       mul_v$9$valid_in = 1'b0;
-      case (ctr$9$q)
+      case (counter$q)
         8'd1: begin mul_v$9$a = regs$0$q; mul_v$9$b = regs$18$q; end
         8'd2: begin mul_v$9$a = regs$5$q; mul_v$9$b = regs$21$q; end
         8'd3: begin mul_v$9$a = regs$10$q; mul_v$9$b = regs$24$q; end
@@ -8958,7 +8458,7 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
       endcase
       mul_up$0$clock = clock;
       mul_up$0$valid_in = 1'b0;
-      case (ctr$10$q)
+      case (counter$q)
         8'd0: begin mul_up$0$a = {1'b0, regs$144$q[30:0]}; mul_up$0$b = {1'b0, regs$31$q[30:0]}; end
         8'd1: begin mul_up$0$a = {1'b0, regs$0$q[30:0]}; mul_up$0$b = {1'b0, regs$15$q[30:0]}; end
         8'd2: begin mul_up$0$a = {1'b0, regs$4$q[30:0]}; mul_up$0$b = {1'b0, regs$15$q[30:0]}; end
@@ -8971,7 +8471,7 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
       endcase
       mul_up$1$clock = clock;
       mul_up$1$valid_in = 1'b0;
-      case (ctr$11$q)
+      case (counter$q)
         8'd0: begin mul_up$1$a = {1'b0, regs$154$q[30:0]}; mul_up$1$b = {1'b0, regs$33$q[30:0]}; end
         8'd1: begin mul_up$1$a = {1'b0, regs$1$q[30:0]}; mul_up$1$b = {1'b0, regs$19$q[30:0]}; end
         8'd2: begin mul_up$1$a = {1'b0, regs$5$q[30:0]}; mul_up$1$b = {1'b0, regs$19$q[30:0]}; end
@@ -8984,7 +8484,7 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
       endcase
       mul_up$2$clock = clock;
       mul_up$2$valid_in = 1'b0;
-      case (ctr$12$q)
+      case (counter$q)
         8'd0: begin mul_up$2$a = {1'b0, regs$164$q[30:0]}; mul_up$2$b = {1'b0, regs$35$q[30:0]}; end
         8'd1: begin mul_up$2$a = {1'b0, regs$2$q[30:0]}; mul_up$2$b = {1'b0, regs$23$q[30:0]}; end
         8'd2: begin mul_up$2$a = {1'b0, regs$6$q[30:0]}; mul_up$2$b = {1'b0, regs$23$q[30:0]}; end
@@ -8997,7 +8497,7 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
       endcase
       mul_up$3$clock = clock;
       mul_up$3$valid_in = 1'b0;
-      case (ctr$13$q)
+      case (counter$q)
         8'd0: begin mul_up$3$a = {1'b0, regs$144$q[30:0]}; mul_up$3$b = {1'b0, regs$38$q[30:0]}; end
         8'd1: begin mul_up$3$a = {1'b0, regs$0$q[30:0]}; mul_up$3$b = {1'b0, regs$16$q[30:0]}; end
         8'd2: begin mul_up$3$a = {1'b0, regs$4$q[30:0]}; mul_up$3$b = {1'b0, regs$16$q[30:0]}; end
@@ -9010,7 +8510,7 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
       endcase
       mul_up$4$clock = clock;
       mul_up$4$valid_in = 1'b0;
-      case (ctr$14$q)
+      case (counter$q)
         8'd0: begin mul_up$4$a = {1'b0, regs$154$q[30:0]}; mul_up$4$b = {1'b0, regs$40$q[30:0]}; end
         8'd1: begin mul_up$4$a = {1'b0, regs$1$q[30:0]}; mul_up$4$b = {1'b0, regs$20$q[30:0]}; end
         8'd2: begin mul_up$4$a = {1'b0, regs$5$q[30:0]}; mul_up$4$b = {1'b0, regs$20$q[30:0]}; end
@@ -9023,7 +8523,7 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
       endcase
       mul_up$5$clock = clock;
       mul_up$5$valid_in = 1'b0;
-      case (ctr$15$q)
+      case (counter$q)
         8'd0: begin mul_up$5$a = {1'b0, regs$164$q[30:0]}; mul_up$5$b = {1'b0, regs$42$q[30:0]}; end
         8'd1: begin mul_up$5$a = {1'b0, regs$2$q[30:0]}; mul_up$5$b = {1'b0, regs$24$q[30:0]}; end
         8'd2: begin mul_up$5$a = {1'b0, regs$6$q[30:0]}; mul_up$5$b = {1'b0, regs$24$q[30:0]}; end
@@ -9036,7 +8536,7 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
       endcase
       mul_up$6$clock = clock;
       mul_up$6$valid_in = 1'b0;
-      case (ctr$16$q)
+      case (counter$q)
         8'd0: begin mul_up$6$a = {1'b0, regs$144$q[30:0]}; mul_up$6$b = {1'b0, regs$45$q[30:0]}; end
         8'd1: begin mul_up$6$a = {1'b0, regs$0$q[30:0]}; mul_up$6$b = {1'b0, regs$17$q[30:0]}; end
         8'd2: begin mul_up$6$a = {1'b0, regs$4$q[30:0]}; mul_up$6$b = {1'b0, regs$17$q[30:0]}; end
@@ -9049,7 +8549,7 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
       endcase
       mul_up$7$clock = clock;
       mul_up$7$valid_in = 1'b0;
-      case (ctr$17$q)
+      case (counter$q)
         8'd0: begin mul_up$7$a = {1'b0, regs$154$q[30:0]}; mul_up$7$b = {1'b0, regs$47$q[30:0]}; end
         8'd1: begin mul_up$7$a = {1'b0, regs$1$q[30:0]}; mul_up$7$b = {1'b0, regs$21$q[30:0]}; end
         8'd2: begin mul_up$7$a = {1'b0, regs$5$q[30:0]}; mul_up$7$b = {1'b0, regs$21$q[30:0]}; end
@@ -9062,7 +8562,7 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
       endcase
       mul_up$8$clock = clock;
       mul_up$8$valid_in = 1'b0;
-      case (ctr$18$q)
+      case (counter$q)
         8'd0: begin mul_up$8$a = {1'b0, regs$164$q[30:0]}; mul_up$8$b = {1'b0, regs$49$q[30:0]}; end
         8'd1: begin mul_up$8$a = {1'b0, regs$2$q[30:0]}; mul_up$8$b = {1'b0, regs$25$q[30:0]}; end
         8'd2: begin mul_up$8$a = {1'b0, regs$6$q[30:0]}; mul_up$8$b = {1'b0, regs$25$q[30:0]}; end
@@ -9075,7 +8575,7 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
       endcase
       mul_up$9$clock = clock;
       mul_up$9$valid_in = 1'b0;
-      case (ctr$19$q)
+      case (counter$q)
         8'd0: begin mul_up$9$a = regs$268$q; mul_up$9$b = regs$248$q; end
         8'd1: begin mul_up$9$a = {1'b0, regs$0$q[30:0]}; mul_up$9$b = {1'b0, regs$18$q[30:0]}; end
         8'd2: begin mul_up$9$a = {1'b0, regs$4$q[30:0]}; mul_up$9$b = {1'b0, regs$18$q[30:0]}; end
@@ -9087,7 +8587,7 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
       endcase
       mul_up$10$clock = clock;
       mul_up$10$valid_in = 1'b0;
-      case (ctr$20$q)
+      case (counter$q)
         8'd0: begin mul_up$10$a = regs$285$q; mul_up$10$b = regs$248$q; end
         8'd1: begin mul_up$10$a = {1'b0, regs$1$q[30:0]}; mul_up$10$b = {1'b0, regs$22$q[30:0]}; end
         8'd2: begin mul_up$10$a = {1'b0, regs$5$q[30:0]}; mul_up$10$b = {1'b0, regs$22$q[30:0]}; end
@@ -9099,7 +8599,7 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
       endcase
       mul_up$11$clock = clock;
       mul_up$11$valid_in = 1'b0;
-      case (ctr$21$q)
+      case (counter$q)
         8'd0: begin mul_up$11$a = regs$335$q; mul_up$11$b = regs$248$q; end
         8'd1: begin mul_up$11$a = {1'b0, regs$2$q[30:0]}; mul_up$11$b = {1'b0, regs$26$q[30:0]}; end
         8'd2: begin mul_up$11$a = {1'b0, regs$6$q[30:0]}; mul_up$11$b = {1'b0, regs$26$q[30:0]}; end
@@ -9110,7 +8610,7 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
       endcase
       add_v$0$clock = clock;
       add_v$0$valid_in = 1'b0;
-      case (ctr$22$q)
+      case (counter$q)
         8'd0: begin add_v$0$a = regs$123$q; add_v$0$b = regs$124$q; add_v$0$sub = 1'b0; end
         8'd1: begin add_v$0$a = regs$155$q; add_v$0$b = regs$156$q; add_v$0$sub = 1'b0; end
         8'd2: begin add_v$0$a = regs$54$q; add_v$0$b = regs$53$q; add_v$0$sub = 1'b0; end
@@ -9123,7 +8623,7 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
       endcase
       add_v$1$clock = clock;
       add_v$1$valid_in = 1'b0;
-      case (ctr$23$q)
+      case (counter$q)
         8'd0: begin add_v$1$a = regs$125$q; add_v$1$b = regs$7$q; add_v$1$sub = 1'b0; end
         8'd1: begin add_v$1$a = regs$165$q; add_v$1$b = regs$166$q; add_v$1$sub = 1'b0; end
         8'd2: begin add_v$1$a = regs$64$q; add_v$1$b = regs$63$q; add_v$1$sub = 1'b0; end
@@ -9136,7 +8636,7 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
       endcase
       add_v$2$clock = clock;
       add_v$2$valid_in = 1'b0;
-      case (ctr$24$q)
+      case (counter$q)
         8'd0: begin add_v$2$a = regs$135$q; add_v$2$b = regs$136$q; add_v$2$sub = 1'b0; end
         8'd1: begin add_v$2$a = regs$167$q; add_v$2$b = regs$12$q; add_v$2$sub = 1'b0; end
         8'd2: begin add_v$2$a = regs$74$q; add_v$2$b = regs$73$q; add_v$2$sub = 1'b0; end
@@ -9149,7 +8649,7 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
       endcase
       add_v$3$clock = clock;
       add_v$3$valid_in = 1'b0;
-      case (ctr$25$q)
+      case (counter$q)
         8'd0: begin add_v$3$a = regs$145$q; add_v$3$b = regs$146$q; add_v$3$sub = 1'b0; end
         8'd1: begin add_v$3$a = regs$221$q; add_v$3$b = regs$171$q; add_v$3$sub = 1'b0; end
         8'd2: begin add_v$3$a = regs$224$q; add_v$3$b = regs$357$q; add_v$3$sub = 1'b1; end
@@ -9162,7 +8662,7 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
       endcase
       add_v$4$clock = clock;
       add_v$4$valid_in = 1'b0;
-      case (ctr$26$q)
+      case (counter$q)
         8'd0: begin add_v$4$a = regs$205$q; add_v$4$b = regs$206$q; add_v$4$sub = 1'b0; end
         8'd1: begin add_v$4$a = regs$289$q; add_v$4$b = regs$171$q; add_v$4$sub = 1'b0; end
         8'd2: begin add_v$4$a = regs$381$q; add_v$4$b = regs$382$q; add_v$4$sub = 1'b1; end
@@ -9175,7 +8675,7 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
       endcase
       add_v$5$clock = clock;
       add_v$5$valid_in = 1'b0;
-      case (ctr$27$q)
+      case (counter$q)
         8'd0: begin add_v$5$a = regs$273$q; add_v$5$b = regs$274$q; add_v$5$sub = 1'b0; end
         8'd1: begin add_v$5$a = regs$354$q; add_v$5$b = regs$171$q; add_v$5$sub = 1'b0; end
         8'd2: begin add_v$5$a = regs$398$q; add_v$5$b = regs$399$q; add_v$5$sub = 1'b1; end
@@ -9188,7 +8688,7 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
       endcase
       add_v$6$clock = clock;
       add_v$6$valid_in = 1'b0;
-      case (ctr$28$q)
+      case (counter$q)
         8'd0: begin add_v$6$a = regs$323$q; add_v$6$b = regs$324$q; add_v$6$sub = 1'b0; end
         8'd1: begin add_v$6$a = regs$339$q; add_v$6$b = regs$340$q; add_v$6$sub = 1'b0; end
         8'd2: begin add_v$6$a = regs$440$q; add_v$6$b = regs$441$q; add_v$6$sub = 1'b1; end
@@ -9201,7 +8701,7 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
       endcase
       add_v$7$clock = clock;
       add_v$7$valid_in = 1'b0;
-      case (ctr$29$q)
+      case (counter$q)
         8'd1: begin add_v$7$a = regs$292$q; add_v$7$b = regs$224$q; add_v$7$sub = 1'b1; end
         8'd2: begin add_v$7$a = regs$457$q; add_v$7$b = regs$458$q; add_v$7$sub = 1'b1; end
         8'd3: begin add_v$7$a = regs$255$q; add_v$7$b = regs$86$q; add_v$7$sub = 1'b0; end
@@ -9213,7 +8713,7 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
       endcase
       add_v$8$clock = clock;
       add_v$8$valid_in = 1'b0;
-      case (ctr$30$q)
+      case (counter$q)
         8'd1: begin add_v$8$a = regs$357$q; add_v$8$b = regs$292$q; add_v$8$sub = 1'b1; end
         8'd2: begin add_v$8$a = regs$498$q; add_v$8$b = regs$499$q; add_v$8$sub = 1'b1; end
         8'd3: begin add_v$8$a = regs$320$q; add_v$8$b = regs$321$q; add_v$8$sub = 1'b0; end
@@ -9224,7 +8724,7 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
       endcase
       add_up$0$clock = clock;
       add_up$0$valid_in = 1'b0;
-      case (ctr$31$q)
+      case (counter$q)
         8'd0: begin add_up$0$a = regs$140$q; add_up$0$b = regs$141$q; add_up$0$sub = 1'b0; end
         8'd1: begin add_up$0$a = {1'b0, regs$30$q[30:0]}; add_up$0$b = {1'b0, regs$32$q[30:0]}; add_up$0$sub = 1'b0; end
         8'd2: begin add_up$0$a = regs$59$q; add_up$0$b = regs$58$q; add_up$0$sub = 1'b0; end
@@ -9237,7 +8737,7 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
       endcase
       add_up$1$clock = clock;
       add_up$1$valid_in = 1'b0;
-      case (ctr$32$q)
+      case (counter$q)
         8'd0: begin add_up$1$a = regs$150$q; add_up$1$b = regs$151$q; add_up$1$sub = 1'b0; end
         8'd1: begin add_up$1$a = {1'b0, regs$34$q[30:0]}; add_up$1$b = regs$29$q; add_up$1$sub = 1'b0; end
         8'd2: begin add_up$1$a = regs$69$q; add_up$1$b = regs$68$q; add_up$1$sub = 1'b0; end
@@ -9250,7 +8750,7 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
       endcase
       add_up$2$clock = clock;
       add_up$2$valid_in = 1'b0;
-      case (ctr$33$q)
+      case (counter$q)
         8'd0: begin add_up$2$a = regs$160$q; add_up$2$b = regs$161$q; add_up$2$sub = 1'b0; end
         8'd1: begin add_up$2$a = {1'b0, regs$37$q[30:0]}; add_up$2$b = {1'b0, regs$39$q[30:0]}; add_up$2$sub = 1'b0; end
         8'd2: begin add_up$2$a = regs$79$q; add_up$2$b = regs$78$q; add_up$2$sub = 1'b0; end
@@ -9263,7 +8763,7 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
       endcase
       add_up$3$clock = clock;
       add_up$3$valid_in = 1'b0;
-      case (ctr$34$q)
+      case (counter$q)
         8'd0: begin add_up$3$a = regs$172$q; add_up$3$b = regs$173$q; add_up$3$sub = 1'b0; end
         8'd1: begin add_up$3$a = {1'b0, regs$41$q[30:0]}; add_up$3$b = regs$29$q; add_up$3$sub = 1'b0; end
         8'd2: begin add_up$3$a = regs$90$q; add_up$3$b = regs$91$q; add_up$3$sub = 1'b0; end
@@ -9276,7 +8776,7 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
       endcase
       add_up$4$clock = clock;
       add_up$4$valid_in = 1'b0;
-      case (ctr$35$q)
+      case (counter$q)
         8'd0: begin add_up$4$a = regs$174$q; add_up$4$b = {1'b0, regs$11$q[30:0]}; add_up$4$sub = 1'b0; end
         8'd1: begin add_up$4$a = {1'b0, regs$44$q[30:0]}; add_up$4$b = {1'b0, regs$46$q[30:0]}; add_up$4$sub = 1'b0; end
         8'd2: begin add_up$4$a = regs$92$q; add_up$4$b = regs$184$q; add_up$4$sub = 1'b0; end
@@ -9289,7 +8789,7 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
       endcase
       add_up$5$clock = clock;
       add_up$5$valid_in = 1'b0;
-      case (ctr$36$q)
+      case (counter$q)
         8'd0: begin add_up$5$a = regs$372$q; add_up$5$b = regs$378$q; add_up$5$sub = 1'b0; end
         8'd1: begin add_up$5$a = {1'b0, regs$48$q[30:0]}; add_up$5$b = regs$29$q; add_up$5$sub = 1'b0; end
         8'd2: begin add_up$5$a = regs$134$q; add_up$5$b = regs$184$q; add_up$5$sub = 1'b0; end
@@ -9302,7 +8802,7 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
       endcase
       add_up$6$clock = clock;
       add_up$6$valid_in = 1'b0;
-      case (ctr$37$q)
+      case (counter$q)
         8'd0: begin add_up$6$a = regs$466$q; add_up$6$b = regs$469$q; add_up$6$sub = 1'b0; end
         8'd1: begin add_up$6$a = regs$178$q; add_up$6$b = regs$179$q; add_up$6$sub = 1'b0; end
         8'd2: begin add_up$6$a = regs$177$q; add_up$6$b = regs$184$q; add_up$6$sub = 1'b0; end
@@ -9315,7 +8815,7 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
       endcase
       add_up$7$clock = clock;
       add_up$7$valid_in = 1'b0;
-      case (ctr$38$q)
+      case (counter$q)
         8'd0: begin add_up$7$a = regs$507$q; add_up$7$b = regs$510$q; add_up$7$sub = 1'b0; end
         8'd1: begin add_up$7$a = regs$388$q; add_up$7$b = regs$389$q; add_up$7$sub = 1'b0; end
         8'd2: begin add_up$7$a = regs$92$q; add_up$7$b = regs$252$q; add_up$7$sub = 1'b0; end
@@ -9328,7 +8828,7 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
       endcase
       add_up$8$clock = clock;
       add_up$8$valid_in = 1'b0;
-      case (ctr$39$q)
+      case (counter$q)
         8'd0: begin add_up$8$a = regs$495$q; add_up$8$b = regs$496$q; add_up$8$sub = 1'b0; end
         8'd1: begin add_up$8$a = regs$391$q; add_up$8$b = regs$392$q; add_up$8$sub = 1'b0; end
         8'd2: begin add_up$8$a = regs$134$q; add_up$8$b = regs$252$q; add_up$8$sub = 1'b0; end
@@ -9341,7 +8841,7 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
       endcase
       add_up$9$clock = clock;
       add_up$9$valid_in = 1'b0;
-      case (ctr$40$q)
+      case (counter$q)
         8'd0: begin add_up$9$a = regs$551$q; add_up$9$b = regs$552$q; add_up$9$sub = 1'b0; end
         8'd1: begin add_up$9$a = regs$405$q; add_up$9$b = regs$406$q; add_up$9$sub = 1'b0; end
         8'd2: begin add_up$9$a = regs$177$q; add_up$9$b = regs$252$q; add_up$9$sub = 1'b0; end
@@ -9354,7 +8854,7 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
       endcase
       add_up$10$clock = clock;
       add_up$10$valid_in = 1'b0;
-      case (ctr$41$q)
+      case (counter$q)
         8'd1: begin add_up$10$a = regs$408$q; add_up$10$b = regs$409$q; add_up$10$sub = 1'b0; end
         8'd2: begin add_up$10$a = regs$92$q; add_up$10$b = regs$319$q; add_up$10$sub = 1'b0; end
         8'd3: begin add_up$10$a = regs$303$q; add_up$10$b = regs$304$q; add_up$10$sub = 1'b0; end
@@ -9366,7 +8866,7 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
       endcase
       add_up$11$clock = clock;
       add_up$11$valid_in = 1'b0;
-      case (ctr$42$q)
+      case (counter$q)
         8'd1: begin add_up$11$a = regs$447$q; add_up$11$b = regs$448$q; add_up$11$sub = 1'b0; end
         8'd2: begin add_up$11$a = regs$134$q; add_up$11$b = regs$319$q; add_up$11$sub = 1'b0; end
         8'd3: begin add_up$11$a = regs$332$q; add_up$11$b = regs$333$q; add_up$11$sub = 1'b0; end
@@ -9378,7 +8878,7 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
       endcase
       add_up$12$clock = clock;
       add_up$12$valid_in = 1'b0;
-      case (ctr$43$q)
+      case (counter$q)
         8'd1: begin add_up$12$a = regs$450$q; add_up$12$b = regs$451$q; add_up$12$sub = 1'b0; end
         8'd2: begin add_up$12$a = regs$177$q; add_up$12$b = regs$319$q; add_up$12$sub = 1'b0; end
         8'd3: begin add_up$12$a = regs$348$q; add_up$12$b = regs$349$q; add_up$12$sub = 1'b0; end
@@ -9390,7 +8890,7 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
       endcase
       add_up$13$clock = clock;
       add_up$13$valid_in = 1'b0;
-      case (ctr$44$q)
+      case (counter$q)
         8'd1: begin add_up$13$a = regs$524$q; add_up$13$b = regs$527$q; add_up$13$sub = 1'b0; end
         8'd2: begin add_up$13$a = regs$197$q; add_up$13$b = regs$198$q; add_up$13$sub = 1'b0; end
         8'd3: begin add_up$13$a = regs$368$q; add_up$13$b = regs$369$q; add_up$13$sub = 1'b0; end
@@ -9402,7 +8902,7 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
       endcase
       add_up$14$clock = clock;
       add_up$14$valid_in = 1'b0;
-      case (ctr$45$q)
+      case (counter$q)
         8'd1: begin add_up$14$a = regs$394$q; add_up$14$b = regs$411$q; add_up$14$sub = 1'b0; end
         8'd2: begin add_up$14$a = regs$214$q; add_up$14$b = regs$215$q; add_up$14$sub = 1'b0; end
         8'd3: begin add_up$14$a = {1'b0, regs$500$q[30:0]}; add_up$14$b = {1'b0, regs$517$q[30:0]}; add_up$14$sub = 1'b0; end
@@ -9413,7 +8913,7 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
         default: begin add_up$14$a = 32'd0; add_up$14$b = 32'd0; add_up$14$sub = 1'b0; end
       endcase
       scale_e$0$clock = clock;
-      case (ctr$46$q)
+      case (counter$q)
         8'd0: begin scale_e$0$a = regs$284$q; scale_e$0$sel = exact$3$q; end
         8'd1: begin scale_e$0$a = regs$334$q; scale_e$0$sel = exact$4$q; end
         8'd2: begin scale_e$0$a = regs$370$q; scale_e$0$sel = exact$4$q; end
@@ -9422,7 +8922,7 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
         default: begin scale_e$0$a = 32'd0; scale_e$0$sel = 1'b0; end
       endcase
       scale_e$1$clock = clock;
-      case (ctr$47$q)
+      case (counter$q)
         8'd0: begin scale_e$1$a = regs$305$q; scale_e$1$sel = exact$3$q; end
         8'd1: begin scale_e$1$a = regs$350$q; scale_e$1$sel = exact$4$q; end
         8'd6: begin scale_e$1$a = regs$216$q; scale_e$1$sel = exact$3$q; end
@@ -9430,14 +8930,14 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
         default: begin scale_e$1$a = 32'd0; scale_e$1$sel = 1'b0; end
       endcase
       scale_z$0$clock = clock;
-      case (ctr$48$q)
+      case (counter$q)
         8'd0: begin scale_z$0$a = regs$305$q; scale_z$0$sel = exact$3$q; end
         8'd1: begin scale_z$0$a = regs$370$q; scale_z$0$sel = exact$4$q; end
         8'd7: begin scale_z$0$a = regs$237$q; scale_z$0$sel = exact$3$q; end
         default: begin scale_z$0$a = 32'd0; scale_z$0$sel = 1'b0; end
       endcase
       scale_s$0$clock = clock;
-      case (ctr$49$q)
+      case (counter$q)
         8'd0: begin scale_s$0$a = regs$433$q; scale_s$0$sel = 1'b0; end
         8'd1: begin scale_s$0$a = regs$224$q; scale_s$0$sel = 1'b0; end
         8'd2: begin scale_s$0$a = regs$292$q; scale_s$0$sel = 1'b0; end

@@ -37,30 +37,19 @@ pub(crate) fn read_verilog(r: &crate::fold::plan::Read, w: usize, e: usize, f: u
     }
 }
 
-/// The index of unit `u` of class `k` among all units (`Class::ALL` order): its counter copy.
-pub(crate) fn unit_index(p: &crate::fold::plan::Plan, k: usize, u: usize) -> usize {
-    p.units[..k].iter().sum::<usize>() + u
-}
-
 /// The module body (after rust-hdl's declarations and instances) of a folded T.CHECK:
-/// the counters, every register's input, every unit's operand multiplexers (a `case` on
-/// its counter copy), the signs' inputs and the output registers. `units` names the unit
+/// the counter, every register's input, every unit's operand multiplexers (a `case` on
+/// the counter), the signs' inputs and the output registers. `units` names the unit
 /// vectors per class (`Class::ALL` order).
 pub(crate) fn body_verilog(p: &crate::fold::plan::Plan, w: usize, ew: usize, f: usize, units: [&str; 7]) -> String {
     use crate::fold::plan::Src;
     use std::fmt::Write;
     let mut v = String::new();
     let c = "counter$q";
-    let _ = writeln!(v, "always @(*) begin\n  run$clock = clock;\n  run$d = run$q | valid_in;");
-    for n in std::iter::once("counter".to_string()).chain((0..p.units.iter().sum()).map(|j| format!("ctr${j}"))) {
-        let _ = writeln!(v, "  {n}$clock = clock;\n  {n}$d = (!(run$q | valid_in) || {n}$q == 8'd{}) ? 8'd0 : {n}$q + 8'd1;", p.ii - 1);
-    }
+    let _ = writeln!(v, "always @(*) begin\n  run$clock = clock;\n  run$d = run$q | valid_in;\n  counter$clock = clock;");
+    let _ = writeln!(v, "  counter$d = (!(run$q | valid_in) || {c} == 8'd{}) ? 8'd0 : {c} + 8'd1;", p.ii - 1);
     let inputs = input_names();
     for ch in &p.words {
-        let ctr = match ch.src {
-            Src::Input(_) | Src::Side => c.to_string(),
-            Src::Unit(k, u) => format!("ctr${}$q", unit_index(p, k, u)),
-        };
         for i in 0..ch.len {
             let r = ch.first + i;
             let src = match (i, ch.src) {
@@ -68,7 +57,7 @@ pub(crate) fn body_verilog(p: &crate::fold::plan::Plan, w: usize, ew: usize, f: 
                 (0, Src::Unit(k, u)) => format!("{}${u}$y", units[k]),
                 _ => format!("regs${}$q", r - 1),
             };
-            let _ = writeln!(v, "  regs${r}$clock = clock;\n  regs${r}$d = ({ctr} == 8'd{}) ? {src} : regs${r}$q;", ch.slot);
+            let _ = writeln!(v, "  regs${r}$clock = clock;\n  regs${r}$d = ({c} == 8'd{}) ? {src} : regs${r}$q;", ch.slot);
         }
     }
     for (name, ch, port) in [("exact", &p.exact, "v_exact"), ("valid", &p.valid, "valid_in"), ("tags", &p.tag, "tag")] {
@@ -85,7 +74,7 @@ pub(crate) fn body_verilog(p: &crate::fold::plan::Plan, w: usize, ew: usize, f: 
             if !scale {
                 let _ = writeln!(v, "  {n}$valid_in = 1'b0;");
             }
-            let _ = writeln!(v, "  case (ctr${}$q)", unit_index(p, k, u));
+            let _ = writeln!(v, "  case ({c})");
             for (slot, iss) in slots.iter().enumerate() {
                 let Some(iss) = iss else { continue };
                 let _ = write!(v, "    8'd{slot}: begin {n}$a = {};", read_verilog(&iss.a, w, ew, f));
@@ -179,10 +168,6 @@ macro_rules! tcheck_fold {
                 // the counter starts with the first pair (`run`), then runs freely
                 run: DFF<Bit>,
                 counter: DFF<Bits<8>>,
-                // a copy of the counter per unit, for its operand multiplexers and the
-                // registers it loads: one counter's decodes reached every multiplexer of the
-                // unit, nets of 1,000-3,000 loads that left the ECP5 chip unroutable (issue 33)
-                ctr: Vec<DFF<Bits<8>>>,
                 regs: Vec<DFF<Bits<$W>>>,
                 exact: Vec<DFF<Bit>>,
                 valid: Vec<DFF<Bit>>,
@@ -212,7 +197,6 @@ macro_rules! tcheck_fold {
                 $crate::rtl::tcheck::tcheck_new! { Self {
                     run: Default::default(),
                     counter: Default::default(),
-                    ctr: (0..u.iter().sum()).map(|_| Default::default()).collect(),
                     regs: (0..plan.word_regs()).map(|_| Default::default()).collect(),
                     exact: (0..plan.exact.len).map(|_| Default::default()).collect(),
                     valid: (0..plan.valid.len).map(|_| Default::default()).collect(),
@@ -346,17 +330,9 @@ macro_rules! tcheck_fold {
                 let c = self.counter.q.val().to_u64() as usize;
                 let run = self.run.q.val() | self.valid_in.val();
                 (self.run.clock.next, self.run.d.next) = (clock, run);
-                let step = |c: usize| (if run { ((c + 1) % p.ii) as u64 } else { 0 }).into();
-                (self.counter.clock.next, self.counter.d.next) = (clock, step(c));
-                let cu: Vec<usize> = self.ctr.iter().map(|r| r.q.val().to_u64() as usize).collect();
-                for (r, &c) in self.ctr.iter_mut().zip(&cu) {
-                    (r.clock.next, r.d.next) = (clock, step(c));
-                }
+                self.counter.clock.next = clock;
+                self.counter.d.next = (if run { ((c + 1) % p.ii) as u64 } else { 0 }).into();
                 for ch in &p.words {
-                    let c = match ch.src {
-                        Src::Input(_) | Src::Side => c,
-                        Src::Unit(k, u) => cu[$crate::rtl::tcheck_fold::unit_index(&p, k, u)],
-                    };
                     for i in 0..ch.len {
                         let r = ch.first + i;
                         let d = match (c == ch.slot, i, ch.src) {
@@ -385,7 +361,7 @@ macro_rules! tcheck_fold {
                 }
                 for k in 0..7 {
                     for u in 0..p.units[k] {
-                        let (a, b, sub, sel) = match &p.issues[k][u][cu[$crate::rtl::tcheck_fold::unit_index(&p, k, u)]] {
+                        let (a, b, sub, sel) = match &p.issues[k][u][c] {
                             Some(iss) => (self.read(&iss.a), iss.b.map_or(0, |b| self.read(&b)), iss.sub, iss.sel.is_some_and(|r| self.exact[r].q.val())),
                             None => (0, 0, false, false),
                         };
@@ -435,9 +411,8 @@ macro_rules! tcheck_fold {
 
             fn connect(&mut self) {
                 (self.run.clock.connect(), self.run.d.connect());
-                for r in std::iter::once(&mut self.counter).chain(&mut self.ctr) {
-                    (r.clock.connect(), r.d.connect());
-                }
+                self.counter.clock.connect();
+                self.counter.d.connect();
                 for r in &mut self.regs {
                     (r.clock.connect(), r.d.connect());
                 }
