@@ -86,11 +86,15 @@ fn cycle_model(root: &Path, name: &str, reps: usize) -> (u64, f64, f64) {
     let setup = p.chip.setup(&q.pose);
     let (mut by_clock, mut skipping, mut cycles) = (f64::INFINITY, f64::INFINITY, 0);
     for _ in 0..reps {
+        // each run's chip dropped before the next is made, as in a scene's sequence of
+        // queries: the golden values' per-thread tables are then reused, not allocated anew
         let t = cpu();
-        let mut c = Chip::new(&p.chip.cfg, params, &p.chip.a, &p.chip.b, &setup, true).unwrap();
-        let d = Drive { memory: q.timing.into(), word_bits: p.chip.layout.word_bits(), reader: q.reader, words: p.chip.image_span(&params.memory), max_cycles: 10_000_000 };
-        let writes = p.chip.control_writes(q.order, q.mode, &params);
-        let tr = drive_query(&mut c, &writes, &d, false, |_, _| Ok(()), None).unwrap();
+        let tr = {
+            let mut c = Chip::new(&p.chip.cfg, params, &p.chip.a, &p.chip.b, &setup, true).unwrap();
+            let d = Drive { memory: q.timing.into(), word_bits: p.chip.layout.word_bits(), reader: q.reader, words: p.chip.image_span(&params.memory), max_cycles: 10_000_000 };
+            let writes = p.chip.control_writes(q.order, q.mode, &params);
+            drive_query(&mut c, &writes, &d, false, |_, _| Ok(()), None).unwrap()
+        };
         by_clock = by_clock.min(cpu() - t);
         assert_eq!(tr.text(), want, "{name}: the cycle model's trace (clock by clock)");
         cycles = tr.cycles;

@@ -145,7 +145,6 @@ struct Comb {
     /// The DOP result has child entries ([`children`]: made at the edge, not kept here, so
     /// that the cycle's logic stays small to copy).
     grows: bool,
-    child_push: bool,
     pop: bool,
     tri_in: bool,
     tri_take: bool,
@@ -153,6 +152,10 @@ struct Comb {
     out: Option<TriOut>,
     give: bool,
     finish: bool,
+    /// The chip acts in this cycle whatever its inputs (the part of
+    /// [`quiet_until`](Chip::quiet_until)'s test that depends on the registers alone, made
+    /// with the rest of the logic: most clocks act, and this one load answers for them).
+    acts: bool,
 }
 
 impl Comb {
@@ -293,6 +296,17 @@ impl<'a> Chip<'a> {
             && self.leaf_fifo.is_empty();
         let all_idle = halt_idle && self.q.empty && self.ahead.is_empty() && !self.leaf_valid;
         let finish = run && (all_idle || (halt && halt_idle));
+        let acts = !run
+            || self.push_root
+            || issue
+            || pop
+            || child_push
+            || dop_out.is_some()
+            || tri_take
+            || leaf_out
+            || finish
+            // a first hit shown halts the traversal (a register), read or not
+            || (self.first && !self.stop && out.is_some_and(|o| o.sure_hit()));
         Comb {
             halt,
             cur,
@@ -303,7 +317,6 @@ impl<'a> Chip<'a> {
             dop_out,
             leaf_in,
             grows,
-            child_push,
             pop,
             tri_in,
             tri_take,
@@ -311,6 +324,7 @@ impl<'a> Chip<'a> {
             out,
             give: false,
             finish,
+            acts,
         }
     }
 
@@ -325,10 +339,10 @@ impl<'a> Chip<'a> {
     }
 
     /// Books `n` cycles with the current logic (the same in each) and inputs `i` to [`Stats`].
+    #[inline]
     fn tally(&mut self, i: &ChipIn, n: u64) {
-        let c = &self.logic;
-        let spacing = self.last_issue.is_some_and(|t| self.now - t < self.p.issue_spacing as u64) || !self.dop.in_ready(self.now);
         let Some(s) = &mut self.stats else { return };
+        let c = &self.logic;
         s.cycles += n;
         s.memory_busy += n * !self.port.is_empty() as u64;
         s.dop_occupancy += n * self.dop.in_flight() as u64;
@@ -342,7 +356,7 @@ impl<'a> Chip<'a> {
         } else if c.cur.is_some() {
             if c.need[0] || c.need[1] {
                 &mut s.stall_memory
-            } else if spacing {
+            } else if self.last_issue.is_some_and(|t| self.now - t < self.p.issue_spacing as u64) || !self.dop.in_ready(self.now) {
                 &mut s.stall_spacing
             } else {
                 &mut s.stall_credit
@@ -430,25 +444,10 @@ impl<'a> Chip<'a> {
     /// inside the chip is under way). `None`: it may act in the current cycle. Memory
     /// responses, `mem_req_ready` and `res_ready` are the driver's to add. Lets the driver
     /// skip a wait of any length in one step, the trace exact.
+    #[inline]
     pub fn quiet_until(&self, i: &ChipIn) -> Option<u64> {
         let c = &self.logic;
-        let acts = !self.run
-            || self.push_root
-            || i.start
-            || i.host_we
-            || i.mem_resp.is_some()
-            || c.accepts(i)
-            || c.issue
-            || c.pop
-            || c.child_push
-            || c.dop_out.is_some()
-            || c.tri_take
-            || c.leaf_out
-            || c.gives(i)
-            || c.finish
-            // a first hit shown halts the traversal (a register), read or not
-            || (self.run && self.first && !self.stop && c.out.is_some_and(|o| o.sure_hit()));
-        if acts {
+        if c.acts || i.start || i.host_we || i.mem_resp.is_some() || c.accepts(i) || c.gives(i) {
             return None;
         }
         let spaced = self.last_issue.map(|t| t + self.p.issue_spacing as u64);
@@ -481,6 +480,7 @@ impl<'a> Chip<'a> {
 }
 
 impl Clocked for Chip<'_> {
+    #[inline]
     fn outputs(&self) -> ChipOut {
         let c = &self.logic;
         let res = c.out.filter(|o| o.kept());
@@ -576,7 +576,8 @@ impl Clocked for Chip<'_> {
             let e = self.q.top_data;
             for &pair in &e.pairs[..e.len as usize] {
                 let ids = self.pair_records(pair);
-                let fetch = [0, 1].map(|k| self.held_nodes[k].fetch(ids[k]));
+                // written out: `[0, 1].map` was a call per element
+                let fetch = [self.held_nodes[0].fetch(ids[0]), self.held_nodes[1].fetch(ids[1])];
                 for (k, d) in [Dst::NodeA, Dst::NodeB].into_iter().enumerate().filter(|&(k, _)| fetch[k]) {
                     self.to_ask.push_back((d, ids[k], self.seq));
                 }

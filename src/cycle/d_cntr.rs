@@ -129,16 +129,24 @@ impl<T: QueueEntry> QueueModel<T> {
                     self.q.pop_front();
                 }
             }
-            for d in [i.push.then_some(i.push_data), i.push2].into_iter().flatten() {
-                if self.q.len() < self.cap {
-                    self.q.push_back(d.masked());
-                } else {
-                    self.overflow = true;
-                }
+            if i.push {
+                self.push(i.push_data);
+            }
+            if let Some(d) = i.push2 {
+                self.push(d);
             }
             self.max_count = self.max_count.max(self.q.len() as u32);
         }
         self.outputs()
+    }
+
+    /// Stores `d`, or sets `overflow` if full.
+    fn push(&mut self, d: T) {
+        if self.q.len() < self.cap {
+            self.q.push_back(d.masked());
+        } else {
+            self.overflow = true;
+        }
     }
 }
 
