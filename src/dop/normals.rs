@@ -26,7 +26,14 @@ pub struct DopNormals {
     /// Triangles (index triples into `b`) of the convex hull of the unit normals. Every
     /// direction lies in the cone of at least one of them.
     pub hull: Vec<HullTriangle>,
+    /// The first half's components as columns (`x[i]`, `y[i]`, `z[i]` of B_i, i < k/2,
+    /// zero beyond), so that a leaf's supports are computed for all normals at once in a
+    /// loop the compiler vectorises ([`DopTree::dop`](super::DopTree::dop)).
+    pub half: [[f64; HALF_LANES]; 3],
 }
+
+/// The largest k/2 of [`SUPPORTED_K`] rounded up to even (whole pairs of vector lanes).
+pub const HALF_LANES: usize = (SUPPORTED_K[SUPPORTED_K.len() - 1] / 2 + 1) & !1;
 
 /// One triangle of the hull of the unit normals.
 #[derive(Debug)]
@@ -71,7 +78,11 @@ impl DopNormals {
                 HullTriangle { j, inv: m.try_inverse().expect("hull triangles are not flat"), plane: n / n.dot(&u[0]) }
             })
             .collect();
-        DopNormals { k, b, hull }
+        let mut cols = [[0.0; HALF_LANES]; 3];
+        for (i, n) in half.iter().enumerate() {
+            (0..3).for_each(|c| cols[c][i] = n[c] as f64);
+        }
+        DopNormals { k, b, hull, half: cols }
     }
 
     /// Index of the antiparallel normal.

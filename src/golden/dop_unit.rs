@@ -9,19 +9,14 @@ use super::klmsel::{klmsel, opposite};
 use super::memory::Held;
 use crate::dop::{Dop, DopTree};
 use crate::format::{Format, Rounding};
-use std::cell::{Cell, OnceCell};
+use std::cell::Cell;
 
 /// B's transformed DOPs during one query, computed on a node's first test (or at every
-/// test, [`forget_rows`](TransformCache::forget_rows)): per lane an
-/// f64 estimate `approx` of u_i with a bound `err` on |u_i - approx|, and the exact u_i
-/// (the chip's value, [`transformed`]) only for the lanes whose flag falls within the bound.
-/// The decisions equal [`dop_overlap`]'s bit for bit (tested); this only saves time.
-///
-/// The bound: the products d C are exact in f64 (significands of at most 25 bits), the
-/// three f64 additions are off by at most 2^-50 S with S = |p0| + |p1| + |p2| + |c|, and each
-/// of the chip's six roundings by at most one ulp, 2^(1-p) |x| + q (precision p, smallest
-/// subnormal q): in all at most 2^(4-p) S + 8q, generously. A non-finite S (inf, NaN or
-/// possible overflow) has no bound: those lanes always take the exact path.
+/// test, [`forget_rows`](TransformCache::forget_rows)): per lane an f64 interval
+/// `[lo, hi]` that provably holds u_i, the chip's value ([`transformed`]), and u_i itself
+/// only for the lanes whose flag the interval leaves open. The decisions equal
+/// [`dop_overlap`]'s bit for bit (proof: docs/ACCURACY.md, "The DOP unit in f64"; checked
+/// in check mode, [`checking`]); this only saves time.
 pub struct TransformCache<'a> {
     f: Format,
     r: Rounding,
@@ -42,6 +37,10 @@ pub struct TransformCache<'a> {
     /// A's DOPs last read (a leaf's is computed from its triangle when read, an inner node's
     /// widened from its stored format, and an A node meets several of B's in a row).
     held: Held<Dop>,
+    /// B's DOP last read, and its node (`u32::MAX`: none).
+    b_dop: (u32, Dop),
+    /// Check mode ([`checking`]), read once.
+    check: bool,
 }
 
 impl<'a> TransformCache<'a> {
@@ -64,6 +63,8 @@ impl<'a> TransformCache<'a> {
             memo: true,
             trees: [a, b],
             held: SPARE_HELD.take(),
+            b_dop: (u32::MAX, Dop::default()),
+            check: checking(),
         }
     }
 
@@ -85,41 +86,44 @@ impl<'a> TransformCache<'a> {
         self.memo = false;
     }
 
-    /// The DOP unit: does B's node `nb` overlap A's node `na`? First every lane's estimate
+    /// The DOP unit: does B's node `nb` overlap A's node `na`? First every lane's interval
     /// at once (a loop the compiler vectorises), then the exact value of the lanes the
-    /// estimate leaves open, if no lane is surely separated. B's DOP is read only where a
+    /// intervals leave open, if no lane is surely separated. B's DOP is read only where a
     /// lane needs it (mostly its node's first test: its rows are then kept), A's through
     /// [`Held`] lines. In check mode ([`checking`]) the answer is compared with
     /// [`dop_overlap`]'s.
     pub fn overlap(&mut self, nb: u32, na: u32) -> bool {
-        let [a, b] = self.trees;
-        let d = LazyDop { tree: b, n: nb, dop: OnceCell::new() };
-        let e = *self.held.get(na, || a.dop(na));
-        let overlap = !(self.pending.is_some() && self.lazy_separated(d.get(), &e)) && {
+        let a = self.trees[0];
+        // The held lines lent out for this test, so that A's DOP is read in place.
+        let mut held = std::mem::take(&mut self.held);
+        let e = held.get_in(na, |line| a.dop_into(na, line));
+        let overlap = !(self.pending.is_some() && self.lazy_separated(nb, e)) && {
             self.complete();
-            self.estimated(&d, &e)
+            self.bounded(nb, e)
         };
-        if checking() {
+        if self.check {
             self.complete();
             // A's DOP read anew, not the held one: the check covers the held lines too.
-            let (d, e) = (b.dop(nb), a.dop(na));
+            let (d, e) = (self.trees[1].dop(nb), a.dop(na));
             let want = dop_overlap(self.f, self.r, &self.setup, &d, &e);
-            assert_eq!(overlap, want, "check mode: the DOP unit's estimate said overlap = {overlap}, the lanes {want}: d {d:?}, e {e:?}");
+            assert_eq!(overlap, want, "check mode: the DOP unit's intervals said overlap = {overlap}, the lanes {want}: d {d:?}, e {e:?}");
         }
+        self.held = held;
         overlap
     }
 
     /// Computes pending mirror pairs until a lane is surely separated (true), or all are.
-    fn lazy_separated(&mut self, d: &[f64], e: &[f64]) -> bool {
+    fn lazy_separated(&mut self, nb: u32, e: &[f64]) -> bool {
         let (h, q, est) = (self.k / 2, self.q, self.estimator());
+        let d = read(self.trees[1], &mut self.b_dop, nb);
         let Some((lanes, pairs)) = &mut self.pending else { return false };
         while pairs.len() < h {
             let i = pairs.len();
             let p = lanes.pair(i);
             pairs.push(p);
             for (l, ei) in [(p[0], e[i + h]), (p[1], e[i])] {
-                let (a, t0) = est.lane(d, l.j, l.c, l.cv);
-                if flags(q, a, t0, ei).0 {
+                let (_, hi) = est.bounds(d, l.j, l.c, l.cv);
+                if flag_surely_set(q, hi, ei) {
                     return true;
                 }
             }
@@ -128,7 +132,15 @@ impl<'a> TransformCache<'a> {
     }
 
     /// Every lane computed (lane 0 first: the first halves of the pairs, then the mirrors).
+    #[inline]
     fn complete(&mut self) {
+        if self.pending.is_some() {
+            self.compute_lanes();
+        }
+    }
+
+    #[cold]
+    fn compute_lanes(&mut self) {
         if let Some((lanes, mut pairs)) = self.pending.take() {
             let h = self.k / 2;
             pairs.extend((pairs.len()..h).map(|i| lanes.pair(i)));
@@ -138,37 +150,42 @@ impl<'a> TransformCache<'a> {
     }
 
     /// [`overlap`](Self::overlap) with every lane's words known.
-    fn estimated(&mut self, d: &LazyDop, e: &[f64]) -> bool {
+    fn bounded(&mut self, nb: u32, e: &[f64]) -> bool {
         let (k, h) = (self.k, self.k / 2);
-        let block = self.block(d);
-        let base = block * k;
-        let (approx, err) = (&self.rows.approx[base..base + k], &self.rows.err[base..base + k]);
+        let block = self.block(nb);
+        let base = block * 2 * k;
+        let bounds = &self.rows.bounds[base..base + 2 * k];
+        let (hi1, lo1, hi2, lo2) = (&bounds[..h], &bounds[h..k], &bounds[k..k + h], &bounds[k + h..]);
         // Lane i meets e_opp(i): the first half e[h..], the second e[..h].
         // Most pairs are separated: the second half waits for the first's answer.
-        let (s1, o1) = scan(self.q, &approx[..h], &err[..h], &e[h..]);
-        let overlap = !s1 && {
-            let (s2, o2) = scan(self.q, &approx[h..], &err[h..], &e[..h]);
-            !s2 && (!(o1 | o2) || self.exact_lanes(block, d, e))
-        };
-        overlap
+        let (s1, o1) = scan(self.q, lo1, hi1, &e[h..]);
+        !s1 && {
+            let (s2, o2) = scan(self.q, lo2, hi2, &e[..h]);
+            !s2 && (!(o1 | o2) || self.exact_lanes(block, nb, e))
+        }
     }
 
-    /// The lanes the estimate leaves open, bit for bit: false if one is separated.
+    /// The lanes the intervals leave open, bit for bit: false if one is separated.
     #[cold]
-    fn exact_lanes(&mut self, block: usize, d: &LazyDop, e: &[f64]) -> bool {
-        let (base, rows) = (block * self.k, &mut self.rows);
-        for i in 0..self.k {
+    fn exact_lanes(&mut self, block: usize, nb: u32, e: &[f64]) -> bool {
+        let (k, rows, q) = (self.k, &mut self.rows, self.q);
+        for i in 0..k {
             let ei = opposite(e, i);
-            if !flags(self.q, rows.approx[base + i], rows.err[base + i], ei).1 {
+            if flag_surely_clear(q, rows.bounds[Rows::lo(block, k, i)], ei) {
                 continue;
             }
-            let known = &mut rows.blocks[block].known;
-            if *known & (1 << i) == 0 {
-                let di = klmsel(d.get(), self.setup.j[i]);
-                rows.exact[base + i] = transformed(self.f, self.r, di, self.setup.cmat[i], self.setup.cvec[i]);
-                *known |= 1 << i;
+            let b = &mut rows.blocks[block];
+            if b.exact == u32::MAX {
+                b.exact = rows.exact.len() as u32;
+                rows.exact.resize(rows.exact.len() + k, 0.0);
             }
-            if separated(self.q, rows.exact[base + i], ei) {
+            let at = b.exact as usize + i;
+            if b.known & (1 << i) == 0 {
+                let di = klmsel(read(self.trees[1], &mut self.b_dop, nb), self.setup.j[i]);
+                rows.exact[at] = transformed(self.f, self.r, di, self.setup.cmat[i], self.setup.cvec[i]);
+                b.known |= 1 << i;
+            }
+            if separated(q, rows.exact[at], ei) {
                 return false;
             }
         }
@@ -176,58 +193,58 @@ impl<'a> TransformCache<'a> {
     }
 
     /// The block of B's node `nb`, transformed on its first test.
-    fn block(&mut self, d: &LazyDop) -> usize {
+    fn block(&mut self, nb: u32) -> usize {
         if !self.memo {
             self.rows.forget();
-            return self.fill(d);
+            return self.fill(nb);
         }
-        match self.rows.slot[d.n as usize] {
+        match self.rows.slot[nb as usize] {
             u32::MAX => {
-                let b = self.fill(d);
-                self.rows.slot[d.n as usize] = b as u32;
+                let b = self.fill(nb);
+                self.rows.slot[nb as usize] = b as u32;
                 b
             }
             b => b as usize,
         }
     }
 
-    fn fill(&mut self, d: &LazyDop) -> usize {
-        let (k, rows) = (self.k, &mut self.rows);
-        let (block, base) = (rows.blocks.len(), rows.approx.len());
-        rows.blocks.push(Block { node: d.n, known: 0 });
-        rows.approx.resize(base + k, 0.0);
-        rows.err.resize(base + k, 0.0);
-        rows.exact.resize(base + k, 0.0);
-        let est = self.estimator();
-        let (d, rows) = (d.get(), &mut self.rows);
-        let lanes = self.setup.j.iter().zip(&self.setup.cmat).zip(&self.setup.cvec);
-        for ((a, t), ((j, cm), &c)) in rows.approx[base..].iter_mut().zip(&mut rows.err[base..]).zip(lanes) {
-            (*a, *t) = est.lane(d, *j, *cm, c);
+    fn fill(&mut self, nb: u32) -> usize {
+        let (k, est) = (self.k, self.estimator());
+        let rows = &mut self.rows;
+        let block = rows.blocks.len();
+        rows.blocks.push(Block { node: nb, known: 0, exact: u32::MAX });
+        rows.bounds.resize((block + 1) * 2 * k, 0.0);
+        let d = read(self.trees[1], &mut self.b_dop, nb);
+        let (setup, h) = (&self.setup, k / 2);
+        for (half, run) in rows.bounds[block * 2 * k..].chunks_exact_mut(k).enumerate() {
+            let (hi, lo) = run.split_at_mut(h);
+            for (m, (hi, lo)) in hi.iter_mut().zip(lo).enumerate() {
+                let i = half * h + m;
+                (*lo, *hi) = est.bounds(d, setup.j[i], setup.cmat[i], setup.cvec[i]);
+            }
         }
         block
     }
 
     fn estimator(&self) -> Estimator {
-        Estimator { max: self.f.max_finite() / 8.0, rel: self.rel, q8: 8.0 * self.q }
+        Estimator { max: self.f.max_finite() / 8.0, rel: self.rel, abs: 11.0 * self.q }
     }
 }
 
-/// B's node DOP, read from its tree when a lane first needs it: a leaf's is computed from its
-/// triangle ([`DopTree::dop`]), and most tests find B's rows already transformed.
-struct LazyDop<'t> {
-    tree: &'t DopTree,
-    n: u32,
-    dop: OnceCell<Dop>,
-}
-
-impl LazyDop<'_> {
-    fn get(&self) -> &[f64] {
-        self.dop.get_or_init(|| self.tree.dop(self.n))
+/// B's node `n`'s DOP, read from `tree` into `last` unless it is the one read last (a leaf's
+/// is computed from its triangle, [`DopTree::dop`]; most tests find B's rows already
+/// transformed and read none).
+#[inline]
+fn read<'d>(tree: &DopTree, last: &'d mut (u32, Dop), n: u32) -> &'d [f64] {
+    if last.0 != n {
+        tree.dop_into(n, &mut last.1);
+        last.0 = n;
     }
+    &last.1
 }
 
-/// B's transformed rows during one query, a block of k lanes per node: per lane the f64
-/// estimate, its bound and (once a test needed it) the chip's value. Kept per thread for
+/// B's transformed rows during one query, a block per node: per lane the f64 interval of
+/// u_i and (once a test needed it) the chip's value. Kept per thread for
 /// the next query, emptied, so that a query does not pay for allocating them anew and the
 /// pages the allocator returned to the system (a quarter of a contact query's time before);
 /// one larger than [`SPARE_BYTES`] is freed.
@@ -235,16 +252,21 @@ impl LazyDop<'_> {
 struct Rows {
     /// Per B node, its block (u32::MAX: not transformed in this query).
     slot: Vec<u32>,
-    approx: Vec<f64>,
-    err: Vec<f64>,
+    /// Per block, 2k bounds in one run, so that a test reads a few neighbouring lines: per
+    /// half of the lanes (the first half, then the mirrors) their k/2 upper ends, then their
+    /// k/2 lower ends ([`Rows::lo`]).
+    bounds: Vec<f64>,
+    /// The chip's values of the blocks that needed some, k each.
     exact: Vec<f64>,
     blocks: Vec<Block>,
 }
 
-/// A transformed node and its lanes whose exact value is in [`Rows::exact`].
+/// A transformed node, its lanes whose exact value is known, and where its k exact values
+/// are in [`Rows::exact`] (`u32::MAX`: none needed yet).
 struct Block {
     node: u32,
     known: u32,
+    exact: u32,
 }
 
 /// The largest [`Rows`] a thread keeps between queries.
@@ -256,6 +278,13 @@ thread_local! {
 }
 
 impl Rows {
+    /// Where lane i's lower end is in [`Rows::bounds`] (its upper end is k/2 before).
+    #[inline]
+    fn lo(block: usize, k: usize, i: usize) -> usize {
+        let h = k / 2;
+        block * 2 * k + (i / h) * k + h + i % h
+    }
+
     /// The thread's spare rows for a tree of `nodes` nodes.
     fn take(nodes: usize) -> Rows {
         let mut rows = SPARE_ROWS.take();
@@ -271,13 +300,12 @@ impl Rows {
             self.slot[b.node as usize] = u32::MAX;
         }
         self.blocks.clear();
-        self.approx.clear();
-        self.err.clear();
+        self.bounds.clear();
         self.exact.clear();
     }
 
     fn bytes(&self) -> usize {
-        4 * self.slot.capacity() + 8 * (self.approx.capacity() + self.err.capacity() + self.exact.capacity()) + 8 * self.blocks.capacity()
+        4 * self.slot.capacity() + 8 * (self.bounds.capacity() + self.exact.capacity()) + 12 * self.blocks.capacity()
     }
 }
 
@@ -292,47 +320,56 @@ impl Drop for TransformCache<'_> {
     }
 }
 
-/// A lane's f64 estimate of u_i and its bound (the bound above).
+/// A lane's f64 interval of u_i (docs/ACCURACY.md, "The DOP unit in f64").
 #[derive(Clone, Copy)]
 struct Estimator {
     max: f64,
     rel: f64,
-    q8: f64,
+    abs: f64,
 }
 
 impl Estimator {
+    /// `[lo, hi]` holding u_i of lane (j, C, c) on B's DOP `d`: the f64 estimate
+    /// `(p0 + p1) + (p2 + c)` (the products exact) widened by the bound
+    /// `(2^(4-p) + 2^-50) S + 11q`, S the sum of the terms' magnitudes: it bounds
+    /// |u_i - estimate| with room for the f64 roundings of the bound and of its two ends.
+    /// NaN ends (no bound: S possibly at overflow, or not finite) decide nothing.
     #[inline(always)]
-    fn lane(&self, d: &[f64], j: [u8; 3], cm: [f64; 3], c: f64) -> (f64, f64) {
+    fn bounds(&self, d: &[f64], j: [u8; 3], cm: [f64; 3], c: f64) -> (f64, f64) {
         let dj = klmsel(d, j);
         let p = [dj[0] * cm[0], dj[1] * cm[1], dj[2] * cm[2]];
         let s = p[0].abs() + p[1].abs() + p[2].abs() + c.abs();
-        ((p[0] + p[1]) + (p[2] + c), if s <= self.max { self.rel * s + self.q8 } else { f64::NAN })
+        let a = (p[0] + p[1]) + (p[2] + c);
+        let t = if s <= self.max { self.rel * s + self.abs } else { f64::NAN };
+        (a - t, a + t)
     }
 }
 
-/// 2^-52: the f64 addition of a lane's estimate and e, and its bound.
-const EPS: f64 = f64::EPSILON;
-
-/// Lanes with estimates `approx` (bounds `err`) against A's distances `e`: is one surely
-/// separated (`approx + e` below -q by more than its bound), is one open (neither surely
-/// separated nor surely not; a NaN bound leaves its lane open)? Branch-free, vectorised.
+/// Lanes with intervals `[lo, hi]` against A's distances `e`: is one surely separated, is
+/// one open (its flag not surely clear; a NaN bound leaves its lane open)? Branch-free,
+/// vectorised.
 #[inline(always)]
-fn scan(q: f64, approx: &[f64], err: &[f64], e: &[f64]) -> (bool, bool) {
+fn scan(q: f64, lo: &[f64], hi: &[f64], e: &[f64]) -> (bool, bool) {
     let (mut sure, mut open) = (false, false);
-    for ((&a, &t0), &ei) in approx.iter().zip(err).zip(e) {
-        let (s, o) = flags(q, a, t0, ei);
-        sure |= s;
-        open |= o;
+    for ((&l, &h), &ei) in lo.iter().zip(hi).zip(e) {
+        sure |= flag_surely_set(q, h, ei);
+        open |= !flag_surely_clear(q, l, ei);
     }
     (sure, open)
 }
 
-/// One lane: surely separated, open.
+/// The lane's flag is surely set: `hi + e < -q` in f64 implies `u + e <= -q` (f64's
+/// rounding is monotone and -q is an f64), the flag's condition ([`separated`]).
 #[inline(always)]
-fn flags(q: f64, a: f64, t0: f64, ei: f64) -> (bool, bool) {
-    let x = a + ei;
-    let t = t0 + EPS * (x.abs() + ei.abs());
-    (x <= -q - t, !(x > -q + t))
+fn flag_surely_set(q: f64, hi: f64, e: f64) -> bool {
+    hi + e < -q
+}
+
+/// The lane's flag is surely clear: `lo + e > -q` in f64 implies `u + e > -q`, hence
+/// `u + e >= 0` (a multiple of q), so the flag's `u + e <= -q` fails.
+#[inline(always)]
+fn flag_surely_clear(q: f64, lo: f64, e: f64) -> bool {
+    lo + e > -q
 }
 
 /// The DOP unit, lane by lane as the pipeline computes it (the reference for the RTL).

@@ -26,7 +26,7 @@ use nalgebra::{Matrix3, Vector3};
 /// distance from the plane, so the bound of z was some 1 / size times too wide: on
 /// dragon-11k 3.1% of the triangle tests were uncertain at binary32, and 0.04% with n
 /// scaled like the edges (`cargo run --release -- accuracy`, docs/ACCURACY.md).
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct TriWord {
     /// Vertices in the object's frame, rounded to nearest in the chip format.
     pub v: [[f64; 3]; 3],
@@ -253,17 +253,25 @@ impl<T> Default for Held<T> {
 
 pub const HELD_LINES: usize = 1024;
 
-impl<T: Copy> Held<T> {
+impl<T: Copy + Default> Held<T> {
     /// The value of `n`, made by `make` unless held.
     #[inline]
     pub fn get(&mut self, n: u32, make: impl FnOnce() -> T) -> &T {
+        self.get_in(n, |line| *line = make())
+    }
+
+    /// The value of `n`, written into its line by `make` unless held (no copy of a large
+    /// value).
+    #[inline]
+    pub fn get_in(&mut self, n: u32, make: impl FnOnce(&mut T)) -> &T {
         let (i, tag) = (n as usize % HELD_LINES, (self.generation as u64) << 32 | n as u64);
         if self.values.is_empty() {
-            self.values = vec![make(); HELD_LINES];
+            self.values = vec![T::default(); HELD_LINES];
             self.tags = vec![u64::MAX; HELD_LINES];
+        }
+        if self.tags[i] != tag {
             self.tags[i] = tag;
-        } else if self.tags[i] != tag {
-            (self.tags[i], self.values[i]) = (tag, make());
+            make(&mut self.values[i]);
         }
         &self.values[i]
     }
@@ -340,19 +348,26 @@ impl NodeCache {
     }
 
     /// A use of record `r`: true if it had to be fetched (a miss, which replaces the least
-    /// recently used line).
+    /// recently used line). A use of the most recent line (most of them: D_CNTR's
+    /// consecutive pairs share a node) changes nothing; otherwise the lines from `r`'s (or
+    /// the least recent) on move down one and `r` goes last.
+    #[inline]
     pub fn fetch(&mut self, r: u32) -> bool {
-        let hit = self.tags.iter().position(|&t| t == r);
-        match hit {
-            Some(i) => {
-                self.tags.remove(i);
-            }
-            None if self.tags.len() == self.lines => {
-                self.tags.remove(0);
-            }
-            None => {}
+        if self.tags.last() == Some(&r) {
+            return false;
         }
-        self.tags.push(r);
+        let hit = self.tags.iter().position(|&t| t == r);
+        let from = match hit {
+            Some(i) => i,
+            None if self.tags.len() == self.lines => 0,
+            None => {
+                self.tags.push(r);
+                return true;
+            }
+        };
+        let last = self.tags.len() - 1;
+        (from..last).for_each(|j| self.tags[j] = self.tags[j + 1]);
+        self.tags[last] = r;
         hit.is_none()
     }
 
