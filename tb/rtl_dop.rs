@@ -15,6 +15,7 @@
 //! (Verilog export and its checks: `harness::units`, scripts/check-rtl.sh.)
 
 use collision_chip::chip::config::{ChipConfig, DopRounding};
+use collision_chip::chip::rtl::dop_unit_name;
 use collision_chip::dop::DopTree;
 use collision_chip::golden::host::TriSide;
 use collision_chip::golden::host::HostSetup;
@@ -545,7 +546,7 @@ fn dop_units_pass_their_exported_vectors() {
         assert_eq!(run24.mismatches(&v24).count(), 0);
         assert!(v6.cases.len() > 900 && v24.cases.len() > 200);
         // the folded units: the same pairs, a pair every 2, 3, 6 clocks
-        let fold = |ii: usize| sim::parse_dop_vectors(&text(&units::dop_unit_fold_name(ii, 6, Format::REDUCED, Rounding::TowardPositive).unwrap()), e8m15::WIDTH).unwrap();
+        let fold = |ii: usize| sim::parse_dop_vectors(&text(&dop_unit_name(6, Format::REDUCED, Rounding::TowardPositive, ii as u32)), e8m15::WIDTH).unwrap();
         let (v2, v3, v6f) = (fold(2), fold(3), fold(6));
         assert_eq!((v2.interval, v2.cases.len()), (2, v6.cases.len()));
         assert_eq!(sim::run_dop_vectors(&mut e8m15::dop_unit6_fold2_top(Rounding::TowardPositive), &v2).unwrap().mismatches(&v2).count(), 0);
@@ -567,7 +568,7 @@ fn dop_unit_fold_verilog() {
     for ii in [4, 8, 12, 24] {
         let (f, r) = (Format::BINARY32, Rounding::TowardPositive);
         let v = std::thread::Builder::new().stack_size(1 << 30).spawn(move || units::dop_unit_fold_verilog(ii, 24, f, r).unwrap()).unwrap().join().unwrap();
-        let p = dir.join(format!("{}.v", units::dop_unit_fold_name(ii, 24, f, r).unwrap()));
+        let p = dir.join(format!("{}.v", dop_unit_name(24, f, r, ii as u32)));
         std::fs::write(&p, dedup_modules(&v)).unwrap();
         eprintln!("wrote {}", p.display());
     }

@@ -70,7 +70,9 @@ enum Cmd {
         #[arg(long, default_value = "rtl")]
         out: PathBuf,
         /// Instead, the units of the area study: the DOP unit for every k, format and DOP
-        /// rounding, and TRI_UNIT per format (scripts/area-study.sh synthesizes them).
+        /// rounding, and TRI_UNIT per format, each also folded (TRI_UNIT at a pair every 2 to
+        /// 32 clocks, the DOP unit at every interval the RTL builds; scripts/area-study.sh
+        /// synthesizes them).
         #[arg(long)]
         area: bool,
     },

@@ -74,6 +74,25 @@ pub fn format_tag(fmt: Format) -> String {
     if fmt == Format::BINARY32 { "b32".into() } else { fmt.to_string() }
 }
 
+/// `fold<ii>_` in a folded unit's name (`ii` clocks between its pairs), nothing unfolded.
+fn fold_tag(ii: u32) -> String {
+    if ii > 1 { format!("fold{ii}_") } else { String::new() }
+}
+
+/// The DOP unit's name in `rtl/`, the area study and the timing tables: k DOPTRF lanes in
+/// `fmt` rounding with `r` (`dop_unit_k<k>_<format>_<rounding>`), or (`ii` > 1) k/ii lanes
+/// taking a pair every `ii` clocks (`dop_unit_fold<ii>_k<k>_...`, `rtl::*::DopUnit<k>Fold<ii>`).
+pub fn dop_unit_name(k: usize, fmt: Format, r: Rounding, ii: u32) -> String {
+    format!("dop_unit_{}k{k}_{}_{}", fold_tag(ii), format_tag(fmt), rounding_tag(r))
+}
+
+/// TRI_UNIT's name there: two T.CHECKs in `fmt` rounding with `r` (`tri_unit_<format>_<rounding>`),
+/// or (`ii` > 1) one folded T.CHECK taking a pair every `ii` clocks (`tri_unit_fold<ii>_...`,
+/// `rtl::*::TriUnitFold`).
+pub fn tri_unit_name(fmt: Format, r: Rounding, ii: u32) -> String {
+    format!("tri_unit_{}{}_{}", fold_tag(ii), format_tag(fmt), rounding_tag(r))
+}
+
 /// A rounding's tag in the RTL's file names.
 pub fn rounding_tag(r: Rounding) -> &'static str {
     match r {

@@ -95,11 +95,9 @@ impl Table {
     }
 }
 
-/// The DOP unit's name: k DOPTRF lanes in the DOP format and rounding, or (`dop_interval`
-/// > 1) k/ii lanes taking a pair every `dop_interval` clocks (`rtl::dop_unit_fold`).
+/// `cfg`'s DOP unit's name ([`rtl::dop_unit_name`]), taking a pair every `dop_interval` clocks.
 pub fn dop_unit(cfg: &ChipConfig, dop_interval: u32) -> String {
-    let fold = if dop_interval > 1 { format!("fold{dop_interval}_") } else { String::new() };
-    format!("dop_unit_{fold}k{}_{}_{}", cfg.k, rtl::format_tag(cfg.format.dop), rtl::rounding_tag(cfg.dop_rounding.op()))
+    rtl::dop_unit_name(cfg.k, cfg.format.dop, cfg.dop_rounding.op(), dop_interval)
 }
 
 /// The clocks between the pairs a folded unit takes (1: unfolded): the cycle model's
@@ -121,11 +119,9 @@ impl Default for Folds {
     }
 }
 
-/// TRI_UNIT's name: two T.CHECKs in T.CHECK's format and rounding, or (`tri_interval` > 1)
-/// one folded T.CHECK taking a pair every `tri_interval` clocks (`rtl::tri_unit_fold`).
+/// `cfg`'s TRI_UNIT's name ([`rtl::tri_unit_name`]), taking a pair every `tri_interval` clocks.
 pub fn tri_unit(cfg: &ChipConfig, tri_interval: u32) -> String {
-    let fold = if tri_interval > 1 { format!("fold{tri_interval}_") } else { String::new() };
-    format!("tri_unit_{fold}{}_{}", rtl::format_tag(cfg.format.tri), rtl::rounding_tag(cfg.tri_rounding))
+    rtl::tri_unit_name(cfg.format.tri, cfg.tri_rounding, tri_interval)
 }
 
 /// The RTL units a configuration is built from, by their names in `rtl/` and the timing

@@ -453,16 +453,12 @@ impl<'a> Chip<'a> {
         let spaced = self.last_issue.map(|t| t + self.p.issue_spacing as u64);
         let slot = self.tri.next_slot(self.now).filter(|_| c.tri_in);
         let dop_slot = self.dop.next_slot(self.now).filter(|_| c.cur.is_some());
-        // the earliest, written out: `min` over the array was a call of its own, a tenth of
-        // a skip (most skips are of one clock)
-        let mut until = u64::MAX;
-        for t in [self.dop.next_out(), self.leaf_fifo.next_out(), self.tri.next_out(), spaced, slot, dop_slot] {
-            until = match t {
-                Some(t) if t > self.now => until.min(t),
-                _ => until,
-            };
-        }
-        Some(until)
+        [self.dop.next_out(), self.leaf_fifo.next_out(), self.tri.next_out(), spaced, slot, dop_slot]
+            .into_iter()
+            .flatten()
+            .filter(|&t| t > self.now)
+            .min()
+            .or(Some(u64::MAX))
     }
 
     /// Skips `n` clocks before `until`, [`quiet_until`](Self::quiet_until)'s cycle, with
@@ -576,8 +572,7 @@ impl Clocked for Chip<'_> {
             let e = self.q.top_data;
             for &pair in &e.pairs[..e.len as usize] {
                 let ids = self.pair_records(pair);
-                // written out: `[0, 1].map` was a call per element
-                let fetch = [self.held_nodes[0].fetch(ids[0]), self.held_nodes[1].fetch(ids[1])];
+                let fetch = [0, 1].map(|k| self.held_nodes[k].fetch(ids[k]));
                 for (k, d) in [Dst::NodeA, Dst::NodeB].into_iter().enumerate().filter(|&(k, _)| fetch[k]) {
                     self.to_ask.push_back((d, ids[k], self.seq));
                 }

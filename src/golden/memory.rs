@@ -365,9 +365,8 @@ impl NodeCache {
                 return true;
             }
         };
-        let last = self.tags.len() - 1;
-        (from..last).for_each(|j| self.tags[j] = self.tags[j + 1]);
-        self.tags[last] = r;
+        self.tags[from..].rotate_left(1);
+        *self.tags.last_mut().expect("a full or hit cache has lines") = r;
         hit.is_none()
     }
 

@@ -4,7 +4,7 @@
 //! and fails if they differ from the checked-in files, then runs every unit against its
 //! vectors under Icarus Verilog and Verilator (`scripts/check-rtl.sh`).
 
-use crate::chip::rtl::{rounding_tag, ChipKind};
+use crate::chip::rtl::{dop_unit_name, rounding_tag, tri_unit_name, ChipKind};
 use crate::format::{Format, Rounding};
 use rand::{Rng, SeedableRng};
 use std::fmt::Write;
@@ -52,18 +52,6 @@ fn format_tag(fmt: Format) -> Option<String> {
     [Format::BINARY32, Format::REDUCED].contains(&fmt).then(|| crate::chip::rtl::format_tag(fmt))
 }
 
-/// `dop_unit_k<k>_<format>_<rounding>`: the DOP unit's file stem in rtl/ and the area study
-/// (`None` for a format the RTL is not built in).
-pub fn dop_unit_name(k: usize, fmt: Format, r: Rounding) -> Option<String> {
-    Some(format!("dop_unit_k{k}_{}_{}", format_tag(fmt)?, rounding_tag(r)))
-}
-
-/// `dop_unit_fold<ii>_k<k>_<format>_<rounding>`: the folded DOP unit's file stem (a pair every
-/// `ii` clocks, `rtl::*::DopUnit<k>Fold<ii>`).
-pub fn dop_unit_fold_name(ii: usize, k: usize, fmt: Format, r: Rounding) -> Option<String> {
-    Some(format!("dop_unit_fold{ii}_k{k}_{}_{}", format_tag(fmt)?, rounding_tag(r)))
-}
-
 /// The folded DOP unit's Verilog, where the RTL stamps out this k, interval and format.
 pub fn dop_unit_fold_verilog(ii: usize, k: usize, fmt: Format, r: Rounding) -> Option<String> {
     match format_tag(fmt)?.as_str() {
@@ -75,11 +63,6 @@ pub fn dop_unit_fold_verilog(ii: usize, k: usize, fmt: Format, r: Rounding) -> O
 /// The folded DOP units exported (`rtl::*::DopUnit<k>Fold<ii>`, outward rounding): (ii, k,
 /// format), with the unfolded unit's vectors driven every ii clocks.
 const DOP_FOLDS: [(usize, usize, Format); 3] = [(2, 6, Format::REDUCED), (3, 6, Format::REDUCED), (6, 6, Format::REDUCED)];
-
-/// `tri_unit_<format>_rne`: TRI_UNIT's file stem (T.CHECK rounds to nearest).
-pub fn tri_unit_name(fmt: Format) -> Option<String> {
-    Some(format!("tri_unit_{}_{}", format_tag(fmt)?, rounding_tag(Rounding::NearestEven)))
-}
 
 /// The DOP unit's Verilog, where the RTL builds this k and format.
 fn dop_unit_verilog(k: usize, fmt: Format, r: Rounding) -> Option<String> {
@@ -114,7 +97,7 @@ fn tcheck_fold_unit(ii: usize) -> Unit {
 /// soups (156 pairs: a verdict per pair checks less than T.CHECK's values).
 fn tri_unit_fold_unit(ii: usize) -> Unit {
     let r = Rounding::NearestEven;
-    let name = format!("tri_unit_fold{ii}_b32_{}", rounding_tag(r));
+    let name = tri_unit_name(Format::BINARY32, r, ii as u32);
     let latency = crate::fold::tri_unit_latency(&crate::fold::tri_unit_plan(ii).expect("an exported II folds"));
     let n2 = name.clone();
     Unit {
@@ -139,14 +122,14 @@ pub fn all() -> Vec<Unit> {
     }
     for (k, fmt) in [(6, Format::REDUCED), (24, Format::BINARY32)] {
         let r = Rounding::TowardPositive;
-        let name = dop_unit_name(k, fmt, r).expect("an RTL format");
+        let name = dop_unit_name(k, fmt, r, 1);
         let n2 = name.clone();
         let verilog = move || dop_unit_verilog(k, fmt, r).expect("the RTL builds this k");
         units.push(Unit { name, latency: crate::chip::rtl::DOP_LATENCY as u32, verilog: Box::new(verilog), vectors: Box::new(move || dop_unit_vectors(&n2, k, fmt, 1)) });
     }
     for (ii, k, fmt) in DOP_FOLDS {
         let r = Rounding::TowardPositive;
-        let name = dop_unit_fold_name(ii, k, fmt, r).expect("an RTL format");
+        let name = dop_unit_name(k, fmt, r, ii as u32);
         let n2 = name.clone();
         let verilog = move || dop_unit_fold_verilog(ii, k, fmt, r).expect("the RTL stamps out this fold");
         let latency = crate::chip::rtl::dop_fold_latency(ii) as u32;
@@ -195,7 +178,7 @@ pub fn all() -> Vec<Unit> {
         let n2 = name.clone();
         let latency = crate::rtl::b32::TCheck::LATENCY;
         units.push(Unit { name, latency: latency as u32, verilog: Box::new(move || vt(r)), vectors: Box::new(move || super::tri_io::tcheck_vectors(&n2, fmt, r, latency, 1)) });
-        let name = tri_unit_name(fmt).expect("an RTL format");
+        let name = tri_unit_name(fmt, r, 1);
         let n2 = name.clone();
         units.push(Unit { name, latency: crate::rtl::b32::TriUnit::LATENCY as u32, verilog: Box::new(move || vu(r)), vectors: Box::new(move || super::tri_io::tri_unit_vectors(&n2, fmt, r, crate::rtl::b32::TriUnit::LATENCY, 1, 6)) });
     }
@@ -399,34 +382,31 @@ fn area_units() -> Vec<(String, Text)> {
     for fmt in [Format::BINARY32, Format::REDUCED] {
         for k in crate::chip::config::SUPPORTED_K {
             for r in [Rounding::TowardPositive, Rounding::NearestEven] {
-                units.push((dop_unit_name(k, fmt, r).expect("an RTL format"), Box::new(move || dop_unit_verilog(k, fmt, r).expect("the RTL builds every supported k"))));
+                units.push((dop_unit_name(k, fmt, r, 1), Box::new(move || dop_unit_verilog(k, fmt, r).expect("the RTL builds every supported k"))));
             }
         }
     }
-    units.push((tri_unit_name(Format::BINARY32).expect("an RTL format"), Box::new(|| crate::rtl::b32::verilog_tri_unit(Rounding::NearestEven))));
-    units.push((tri_unit_name(Format::REDUCED).expect("an RTL format"), Box::new(|| crate::rtl::e8m15::verilog_tri_unit(Rounding::NearestEven))));
+    for fmt in [Format::BINARY32, Format::REDUCED] {
+        let v: VerilogFn = if fmt == Format::BINARY32 { crate::rtl::b32::verilog_tri_unit } else { crate::rtl::e8m15::verilog_tri_unit };
+        units.push((tri_unit_name(fmt, Rounding::NearestEven, 1), Box::new(move || v(Rounding::NearestEven))));
+    }
     units.extend(area_fold_units());
     units
 }
 
 /// TRI_UNIT folded at every interval of the fold study (`AREA_TRI_FOLDS`) and the DOP unit
-/// folded at every (k, interval) the RTL stamps out (`AREA_DOP_FOLDS`), in both formats and
-/// DOP roundings, named as [`crate::chip::timing::units`] names them.
+/// folded at every (k, interval) the RTL stamps out (`rtl::*::DOP_UNIT_FOLDS`), in both
+/// formats and DOP roundings.
 fn area_fold_units() -> Vec<(String, Text)> {
-    use crate::chip::config::{ChipConfig, DopRounding};
-    use crate::chip::timing::{dop_unit, tri_unit};
     let mut units: Vec<(String, Text)> = vec![];
     for fmt in [Format::BINARY32, Format::REDUCED] {
-        let b32 = fmt == Format::BINARY32;
         for ii in AREA_TRI_FOLDS {
-            let cfg = ChipConfig { format: fmt.into(), ..Default::default() };
-            let v = if b32 { crate::rtl::b32::verilog_tri_unit_fold } else { crate::rtl::e8m15::verilog_tri_unit_fold };
-            units.push((tri_unit(&cfg, ii as u32), Box::new(move || v(ii, Rounding::NearestEven).expect("the fold study's intervals fold"))));
+            let v = if fmt == Format::BINARY32 { crate::rtl::b32::verilog_tri_unit_fold } else { crate::rtl::e8m15::verilog_tri_unit_fold };
+            units.push((tri_unit_name(fmt, Rounding::NearestEven, ii as u32), Box::new(move || v(ii, Rounding::NearestEven).expect("the fold study's intervals fold"))));
         }
-        for (k, ii) in AREA_DOP_FOLDS {
-            for dop_rounding in [DopRounding::Outward, DopRounding::NearestEven] {
-                let cfg = ChipConfig { k, format: fmt.into(), dop_rounding, ..Default::default() };
-                units.push((dop_unit(&cfg, ii as u32), Box::new(move || dop_unit_fold_verilog(ii, k, fmt, dop_rounding.op()).expect("the RTL stamps this fold"))));
+        for &(k, ii) in crate::rtl::b32::DOP_UNIT_FOLDS {
+            for r in [Rounding::TowardPositive, Rounding::NearestEven] {
+                units.push((dop_unit_name(k, fmt, r, ii as u32), Box::new(move || dop_unit_fold_verilog(ii, k, fmt, r).expect("the RTL stamps this fold"))));
             }
         }
     }
@@ -435,9 +415,6 @@ fn area_fold_units() -> Vec<(String, Text)> {
 
 /// TRI_UNIT's pair intervals in the area study (`rtl::*::TriUnitFold`).
 const AREA_TRI_FOLDS: [usize; 5] = [2, 4, 8, 16, 32];
-
-/// The DOP unit's (k, pair interval) in the area study: every `rtl::*::DopUnit<k>Fold<ii>`.
-const AREA_DOP_FOLDS: [(usize, usize); 8] = [(6, 2), (6, 3), (6, 6), (24, 4), (24, 6), (24, 8), (24, 12), (24, 24)];
 
 /// Writes `<dir>/<unit>.v` for every unit of the area study; returns the paths written.
 pub fn write_area_verilog(dir: &Path) -> std::io::Result<Vec<String>> {

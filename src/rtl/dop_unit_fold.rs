@@ -129,27 +129,29 @@ macro_rules! dop_unit_fold {
         }
 
         // Each unit: k, L lanes, ii = k/L passes, k/2 (the opposite direction's offset).
-        $crate::rtl::dop_unit_fold::dop_unit_fold!(@unit $W, DopUnit6Fold2, dop_unit6_fold2_top, 6, 3, 2, 3);
-        $crate::rtl::dop_unit_fold::dop_unit_fold!(@unit $W, DopUnit6Fold3, dop_unit6_fold3_top, 6, 2, 3, 3);
-        $crate::rtl::dop_unit_fold::dop_unit_fold!(@unit $W, DopUnit6Fold6, dop_unit6_fold6_top, 6, 1, 6, 3);
-        $crate::rtl::dop_unit_fold::dop_unit_fold!(@unit $W, DopUnit24Fold4, dop_unit24_fold4_top, 24, 6, 4, 12);
-        $crate::rtl::dop_unit_fold::dop_unit_fold!(@unit $W, DopUnit24Fold6, dop_unit24_fold6_top, 24, 4, 6, 12);
-        $crate::rtl::dop_unit_fold::dop_unit_fold!(@unit $W, DopUnit24Fold8, dop_unit24_fold8_top, 24, 3, 8, 12);
-        $crate::rtl::dop_unit_fold::dop_unit_fold!(@unit $W, DopUnit24Fold12, dop_unit24_fold12_top, 24, 2, 12, 12);
-        $crate::rtl::dop_unit_fold::dop_unit_fold!(@unit $W, DopUnit24Fold24, dop_unit24_fold24_top, 24, 1, 24, 12);
+        $crate::rtl::dop_unit_fold::dop_unit_fold!(@units $W;
+            (DopUnit6Fold2, dop_unit6_fold2_top, 6, 3, 2, 3)
+            (DopUnit6Fold3, dop_unit6_fold3_top, 6, 2, 3, 3)
+            (DopUnit6Fold6, dop_unit6_fold6_top, 6, 1, 6, 3)
+            (DopUnit24Fold4, dop_unit24_fold4_top, 24, 6, 4, 12)
+            (DopUnit24Fold6, dop_unit24_fold6_top, 24, 4, 6, 12)
+            (DopUnit24Fold8, dop_unit24_fold8_top, 24, 3, 8, 12)
+            (DopUnit24Fold12, dop_unit24_fold12_top, 24, 2, 12, 12)
+            (DopUnit24Fold24, dop_unit24_fold24_top, 24, 1, 24, 12)
+        );
+    };
+    // The units of one list, the (k, ii) they are stamped out for and their Verilog by (k, ii).
+    (@units $W:tt; $(($name:ident, $top:ident, $K:tt, $L:tt, $P:tt, $H:tt))+) => {
+        $($crate::rtl::dop_unit_fold::dop_unit_fold!(@unit $W, $name, $top, $K, $L, $P, $H);)+
+
+        /// The (k, ii) of every folded DOP unit stamped out here.
+        pub const DOP_UNIT_FOLDS: &[(usize, usize)] = &[$(($K, $P)),+];
 
         /// Verilog of the DOP unit for k directions folded to a pair every `ii` clocks (top
-        /// module `top`); `None` for a (k, ii) not stamped out above.
+        /// module `top`); `None` for a (k, ii) not in [`DOP_UNIT_FOLDS`].
         pub fn verilog_dop_unit_fold(k: usize, ii: usize, rounding: Rounding) -> Option<String> {
             Some(match (k, ii) {
-                (6, 2) => generate_verilog(&dop_unit6_fold2_top(rounding)),
-                (6, 3) => generate_verilog(&dop_unit6_fold3_top(rounding)),
-                (6, 6) => generate_verilog(&dop_unit6_fold6_top(rounding)),
-                (24, 4) => generate_verilog(&dop_unit24_fold4_top(rounding)),
-                (24, 6) => generate_verilog(&dop_unit24_fold6_top(rounding)),
-                (24, 8) => generate_verilog(&dop_unit24_fold8_top(rounding)),
-                (24, 12) => generate_verilog(&dop_unit24_fold12_top(rounding)),
-                (24, 24) => generate_verilog(&dop_unit24_fold24_top(rounding)),
+                $(($K, $P) => generate_verilog(&$top(rounding)),)+
                 _ => return None,
             })
         }
