@@ -11296,6 +11296,879 @@ module top$tri_unit$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2
     reg  [23:0] regs$472$d;
     wire  [23:0] regs$472$q;
     reg  regs$472$clock;
+    reg  [23:0] regs$473$d;
+    wire  [23:0] regs$473$q;
+    reg  regs$473$clock;
+    reg  [23:0] regs$474$d;
+    wire  [23:0] regs$474$q;
+    reg  regs$474$clock;
+    reg  [23:0] regs$475$d;
+    wire  [23:0] regs$475$q;
+    reg  regs$475$clock;
+    reg  [23:0] regs$476$d;
+    wire  [23:0] regs$476$q;
+    reg  regs$476$clock;
+    reg  [23:0] regs$477$d;
+    wire  [23:0] regs$477$q;
+    reg  regs$477$clock;
+    reg  [23:0] regs$478$d;
+    wire  [23:0] regs$478$q;
+    reg  regs$478$clock;
+    reg  [23:0] regs$479$d;
+    wire  [23:0] regs$479$q;
+    reg  regs$479$clock;
+    reg  [23:0] regs$480$d;
+    wire  [23:0] regs$480$q;
+    reg  regs$480$clock;
+    reg  [23:0] regs$481$d;
+    wire  [23:0] regs$481$q;
+    reg  regs$481$clock;
+    reg  [23:0] regs$482$d;
+    wire  [23:0] regs$482$q;
+    reg  regs$482$clock;
+    reg  [23:0] regs$483$d;
+    wire  [23:0] regs$483$q;
+    reg  regs$483$clock;
+    reg  [23:0] regs$484$d;
+    wire  [23:0] regs$484$q;
+    reg  regs$484$clock;
+    reg  [23:0] regs$485$d;
+    wire  [23:0] regs$485$q;
+    reg  regs$485$clock;
+    reg  [23:0] regs$486$d;
+    wire  [23:0] regs$486$q;
+    reg  regs$486$clock;
+    reg  [23:0] regs$487$d;
+    wire  [23:0] regs$487$q;
+    reg  regs$487$clock;
+    reg  [23:0] regs$488$d;
+    wire  [23:0] regs$488$q;
+    reg  regs$488$clock;
+    reg  [23:0] regs$489$d;
+    wire  [23:0] regs$489$q;
+    reg  regs$489$clock;
+    reg  [23:0] regs$490$d;
+    wire  [23:0] regs$490$q;
+    reg  regs$490$clock;
+    reg  [23:0] regs$491$d;
+    wire  [23:0] regs$491$q;
+    reg  regs$491$clock;
+    reg  [23:0] regs$492$d;
+    wire  [23:0] regs$492$q;
+    reg  regs$492$clock;
+    reg  [23:0] regs$493$d;
+    wire  [23:0] regs$493$q;
+    reg  regs$493$clock;
+    reg  [23:0] regs$494$d;
+    wire  [23:0] regs$494$q;
+    reg  regs$494$clock;
+    reg  [23:0] regs$495$d;
+    wire  [23:0] regs$495$q;
+    reg  regs$495$clock;
+    reg  [23:0] regs$496$d;
+    wire  [23:0] regs$496$q;
+    reg  regs$496$clock;
+    reg  [23:0] regs$497$d;
+    wire  [23:0] regs$497$q;
+    reg  regs$497$clock;
+    reg  [23:0] regs$498$d;
+    wire  [23:0] regs$498$q;
+    reg  regs$498$clock;
+    reg  [23:0] regs$499$d;
+    wire  [23:0] regs$499$q;
+    reg  regs$499$clock;
+    reg  [23:0] regs$500$d;
+    wire  [23:0] regs$500$q;
+    reg  regs$500$clock;
+    reg  [23:0] regs$501$d;
+    wire  [23:0] regs$501$q;
+    reg  regs$501$clock;
+    reg  [23:0] regs$502$d;
+    wire  [23:0] regs$502$q;
+    reg  regs$502$clock;
+    reg  [23:0] regs$503$d;
+    wire  [23:0] regs$503$q;
+    reg  regs$503$clock;
+    reg  [23:0] regs$504$d;
+    wire  [23:0] regs$504$q;
+    reg  regs$504$clock;
+    reg  [23:0] regs$505$d;
+    wire  [23:0] regs$505$q;
+    reg  regs$505$clock;
+    reg  [23:0] regs$506$d;
+    wire  [23:0] regs$506$q;
+    reg  regs$506$clock;
+    reg  [23:0] regs$507$d;
+    wire  [23:0] regs$507$q;
+    reg  regs$507$clock;
+    reg  [23:0] regs$508$d;
+    wire  [23:0] regs$508$q;
+    reg  regs$508$clock;
+    reg  [23:0] regs$509$d;
+    wire  [23:0] regs$509$q;
+    reg  regs$509$clock;
+    reg  [23:0] regs$510$d;
+    wire  [23:0] regs$510$q;
+    reg  regs$510$clock;
+    reg  [23:0] regs$511$d;
+    wire  [23:0] regs$511$q;
+    reg  regs$511$clock;
+    reg  [23:0] regs$512$d;
+    wire  [23:0] regs$512$q;
+    reg  regs$512$clock;
+    reg  [23:0] regs$513$d;
+    wire  [23:0] regs$513$q;
+    reg  regs$513$clock;
+    reg  [23:0] regs$514$d;
+    wire  [23:0] regs$514$q;
+    reg  regs$514$clock;
+    reg  [23:0] regs$515$d;
+    wire  [23:0] regs$515$q;
+    reg  regs$515$clock;
+    reg  [23:0] regs$516$d;
+    wire  [23:0] regs$516$q;
+    reg  regs$516$clock;
+    reg  [23:0] regs$517$d;
+    wire  [23:0] regs$517$q;
+    reg  regs$517$clock;
+    reg  [23:0] regs$518$d;
+    wire  [23:0] regs$518$q;
+    reg  regs$518$clock;
+    reg  [23:0] regs$519$d;
+    wire  [23:0] regs$519$q;
+    reg  regs$519$clock;
+    reg  [23:0] regs$520$d;
+    wire  [23:0] regs$520$q;
+    reg  regs$520$clock;
+    reg  [23:0] regs$521$d;
+    wire  [23:0] regs$521$q;
+    reg  regs$521$clock;
+    reg  [23:0] regs$522$d;
+    wire  [23:0] regs$522$q;
+    reg  regs$522$clock;
+    reg  [23:0] regs$523$d;
+    wire  [23:0] regs$523$q;
+    reg  regs$523$clock;
+    reg  [23:0] regs$524$d;
+    wire  [23:0] regs$524$q;
+    reg  regs$524$clock;
+    reg  [23:0] regs$525$d;
+    wire  [23:0] regs$525$q;
+    reg  regs$525$clock;
+    reg  [23:0] regs$526$d;
+    wire  [23:0] regs$526$q;
+    reg  regs$526$clock;
+    reg  [23:0] regs$527$d;
+    wire  [23:0] regs$527$q;
+    reg  regs$527$clock;
+    reg  [23:0] regs$528$d;
+    wire  [23:0] regs$528$q;
+    reg  regs$528$clock;
+    reg  [23:0] regs$529$d;
+    wire  [23:0] regs$529$q;
+    reg  regs$529$clock;
+    reg  [23:0] regs$530$d;
+    wire  [23:0] regs$530$q;
+    reg  regs$530$clock;
+    reg  [23:0] regs$531$d;
+    wire  [23:0] regs$531$q;
+    reg  regs$531$clock;
+    reg  [23:0] regs$532$d;
+    wire  [23:0] regs$532$q;
+    reg  regs$532$clock;
+    reg  [23:0] regs$533$d;
+    wire  [23:0] regs$533$q;
+    reg  regs$533$clock;
+    reg  [23:0] regs$534$d;
+    wire  [23:0] regs$534$q;
+    reg  regs$534$clock;
+    reg  [23:0] regs$535$d;
+    wire  [23:0] regs$535$q;
+    reg  regs$535$clock;
+    reg  [23:0] regs$536$d;
+    wire  [23:0] regs$536$q;
+    reg  regs$536$clock;
+    reg  [23:0] regs$537$d;
+    wire  [23:0] regs$537$q;
+    reg  regs$537$clock;
+    reg  [23:0] regs$538$d;
+    wire  [23:0] regs$538$q;
+    reg  regs$538$clock;
+    reg  [23:0] regs$539$d;
+    wire  [23:0] regs$539$q;
+    reg  regs$539$clock;
+    reg  [23:0] regs$540$d;
+    wire  [23:0] regs$540$q;
+    reg  regs$540$clock;
+    reg  [23:0] regs$541$d;
+    wire  [23:0] regs$541$q;
+    reg  regs$541$clock;
+    reg  [23:0] regs$542$d;
+    wire  [23:0] regs$542$q;
+    reg  regs$542$clock;
+    reg  [23:0] regs$543$d;
+    wire  [23:0] regs$543$q;
+    reg  regs$543$clock;
+    reg  [23:0] regs$544$d;
+    wire  [23:0] regs$544$q;
+    reg  regs$544$clock;
+    reg  [23:0] regs$545$d;
+    wire  [23:0] regs$545$q;
+    reg  regs$545$clock;
+    reg  [23:0] regs$546$d;
+    wire  [23:0] regs$546$q;
+    reg  regs$546$clock;
+    reg  [23:0] regs$547$d;
+    wire  [23:0] regs$547$q;
+    reg  regs$547$clock;
+    reg  [23:0] regs$548$d;
+    wire  [23:0] regs$548$q;
+    reg  regs$548$clock;
+    reg  [23:0] regs$549$d;
+    wire  [23:0] regs$549$q;
+    reg  regs$549$clock;
+    reg  [23:0] regs$550$d;
+    wire  [23:0] regs$550$q;
+    reg  regs$550$clock;
+    reg  [23:0] regs$551$d;
+    wire  [23:0] regs$551$q;
+    reg  regs$551$clock;
+    reg  [23:0] regs$552$d;
+    wire  [23:0] regs$552$q;
+    reg  regs$552$clock;
+    reg  [23:0] regs$553$d;
+    wire  [23:0] regs$553$q;
+    reg  regs$553$clock;
+    reg  [23:0] regs$554$d;
+    wire  [23:0] regs$554$q;
+    reg  regs$554$clock;
+    reg  [23:0] regs$555$d;
+    wire  [23:0] regs$555$q;
+    reg  regs$555$clock;
+    reg  [23:0] regs$556$d;
+    wire  [23:0] regs$556$q;
+    reg  regs$556$clock;
+    reg  [23:0] regs$557$d;
+    wire  [23:0] regs$557$q;
+    reg  regs$557$clock;
+    reg  [23:0] regs$558$d;
+    wire  [23:0] regs$558$q;
+    reg  regs$558$clock;
+    reg  [23:0] regs$559$d;
+    wire  [23:0] regs$559$q;
+    reg  regs$559$clock;
+    reg  [23:0] regs$560$d;
+    wire  [23:0] regs$560$q;
+    reg  regs$560$clock;
+    reg  [23:0] regs$561$d;
+    wire  [23:0] regs$561$q;
+    reg  regs$561$clock;
+    reg  [23:0] regs$562$d;
+    wire  [23:0] regs$562$q;
+    reg  regs$562$clock;
+    reg  [23:0] regs$563$d;
+    wire  [23:0] regs$563$q;
+    reg  regs$563$clock;
+    reg  [23:0] regs$564$d;
+    wire  [23:0] regs$564$q;
+    reg  regs$564$clock;
+    reg  [23:0] regs$565$d;
+    wire  [23:0] regs$565$q;
+    reg  regs$565$clock;
+    reg  [23:0] regs$566$d;
+    wire  [23:0] regs$566$q;
+    reg  regs$566$clock;
+    reg  [23:0] regs$567$d;
+    wire  [23:0] regs$567$q;
+    reg  regs$567$clock;
+    reg  [23:0] regs$568$d;
+    wire  [23:0] regs$568$q;
+    reg  regs$568$clock;
+    reg  [23:0] regs$569$d;
+    wire  [23:0] regs$569$q;
+    reg  regs$569$clock;
+    reg  [23:0] regs$570$d;
+    wire  [23:0] regs$570$q;
+    reg  regs$570$clock;
+    reg  [23:0] regs$571$d;
+    wire  [23:0] regs$571$q;
+    reg  regs$571$clock;
+    reg  [23:0] regs$572$d;
+    wire  [23:0] regs$572$q;
+    reg  regs$572$clock;
+    reg  [23:0] regs$573$d;
+    wire  [23:0] regs$573$q;
+    reg  regs$573$clock;
+    reg  [23:0] regs$574$d;
+    wire  [23:0] regs$574$q;
+    reg  regs$574$clock;
+    reg  [23:0] regs$575$d;
+    wire  [23:0] regs$575$q;
+    reg  regs$575$clock;
+    reg  [23:0] regs$576$d;
+    wire  [23:0] regs$576$q;
+    reg  regs$576$clock;
+    reg  [23:0] regs$577$d;
+    wire  [23:0] regs$577$q;
+    reg  regs$577$clock;
+    reg  [23:0] regs$578$d;
+    wire  [23:0] regs$578$q;
+    reg  regs$578$clock;
+    reg  [23:0] regs$579$d;
+    wire  [23:0] regs$579$q;
+    reg  regs$579$clock;
+    reg  [23:0] regs$580$d;
+    wire  [23:0] regs$580$q;
+    reg  regs$580$clock;
+    reg  [23:0] regs$581$d;
+    wire  [23:0] regs$581$q;
+    reg  regs$581$clock;
+    reg  [23:0] regs$582$d;
+    wire  [23:0] regs$582$q;
+    reg  regs$582$clock;
+    reg  [23:0] regs$583$d;
+    wire  [23:0] regs$583$q;
+    reg  regs$583$clock;
+    reg  [23:0] regs$584$d;
+    wire  [23:0] regs$584$q;
+    reg  regs$584$clock;
+    reg  [23:0] regs$585$d;
+    wire  [23:0] regs$585$q;
+    reg  regs$585$clock;
+    reg  [23:0] regs$586$d;
+    wire  [23:0] regs$586$q;
+    reg  regs$586$clock;
+    reg  [23:0] regs$587$d;
+    wire  [23:0] regs$587$q;
+    reg  regs$587$clock;
+    reg  [23:0] regs$588$d;
+    wire  [23:0] regs$588$q;
+    reg  regs$588$clock;
+    reg  [23:0] regs$589$d;
+    wire  [23:0] regs$589$q;
+    reg  regs$589$clock;
+    reg  [23:0] regs$590$d;
+    wire  [23:0] regs$590$q;
+    reg  regs$590$clock;
+    reg  [23:0] regs$591$d;
+    wire  [23:0] regs$591$q;
+    reg  regs$591$clock;
+    reg  [23:0] regs$592$d;
+    wire  [23:0] regs$592$q;
+    reg  regs$592$clock;
+    reg  [23:0] regs$593$d;
+    wire  [23:0] regs$593$q;
+    reg  regs$593$clock;
+    reg  [23:0] regs$594$d;
+    wire  [23:0] regs$594$q;
+    reg  regs$594$clock;
+    reg  [23:0] regs$595$d;
+    wire  [23:0] regs$595$q;
+    reg  regs$595$clock;
+    reg  [23:0] regs$596$d;
+    wire  [23:0] regs$596$q;
+    reg  regs$596$clock;
+    reg  [23:0] regs$597$d;
+    wire  [23:0] regs$597$q;
+    reg  regs$597$clock;
+    reg  [23:0] regs$598$d;
+    wire  [23:0] regs$598$q;
+    reg  regs$598$clock;
+    reg  [23:0] regs$599$d;
+    wire  [23:0] regs$599$q;
+    reg  regs$599$clock;
+    reg  [23:0] regs$600$d;
+    wire  [23:0] regs$600$q;
+    reg  regs$600$clock;
+    reg  [23:0] regs$601$d;
+    wire  [23:0] regs$601$q;
+    reg  regs$601$clock;
+    reg  [23:0] regs$602$d;
+    wire  [23:0] regs$602$q;
+    reg  regs$602$clock;
+    reg  [23:0] regs$603$d;
+    wire  [23:0] regs$603$q;
+    reg  regs$603$clock;
+    reg  [23:0] regs$604$d;
+    wire  [23:0] regs$604$q;
+    reg  regs$604$clock;
+    reg  [23:0] regs$605$d;
+    wire  [23:0] regs$605$q;
+    reg  regs$605$clock;
+    reg  [23:0] regs$606$d;
+    wire  [23:0] regs$606$q;
+    reg  regs$606$clock;
+    reg  [23:0] regs$607$d;
+    wire  [23:0] regs$607$q;
+    reg  regs$607$clock;
+    reg  [23:0] regs$608$d;
+    wire  [23:0] regs$608$q;
+    reg  regs$608$clock;
+    reg  [23:0] regs$609$d;
+    wire  [23:0] regs$609$q;
+    reg  regs$609$clock;
+    reg  [23:0] regs$610$d;
+    wire  [23:0] regs$610$q;
+    reg  regs$610$clock;
+    reg  [23:0] regs$611$d;
+    wire  [23:0] regs$611$q;
+    reg  regs$611$clock;
+    reg  [23:0] regs$612$d;
+    wire  [23:0] regs$612$q;
+    reg  regs$612$clock;
+    reg  [23:0] regs$613$d;
+    wire  [23:0] regs$613$q;
+    reg  regs$613$clock;
+    reg  [23:0] regs$614$d;
+    wire  [23:0] regs$614$q;
+    reg  regs$614$clock;
+    reg  [23:0] regs$615$d;
+    wire  [23:0] regs$615$q;
+    reg  regs$615$clock;
+    reg  [23:0] regs$616$d;
+    wire  [23:0] regs$616$q;
+    reg  regs$616$clock;
+    reg  [23:0] regs$617$d;
+    wire  [23:0] regs$617$q;
+    reg  regs$617$clock;
+    reg  [23:0] regs$618$d;
+    wire  [23:0] regs$618$q;
+    reg  regs$618$clock;
+    reg  [23:0] regs$619$d;
+    wire  [23:0] regs$619$q;
+    reg  regs$619$clock;
+    reg  [23:0] regs$620$d;
+    wire  [23:0] regs$620$q;
+    reg  regs$620$clock;
+    reg  [23:0] regs$621$d;
+    wire  [23:0] regs$621$q;
+    reg  regs$621$clock;
+    reg  [23:0] regs$622$d;
+    wire  [23:0] regs$622$q;
+    reg  regs$622$clock;
+    reg  [23:0] regs$623$d;
+    wire  [23:0] regs$623$q;
+    reg  regs$623$clock;
+    reg  [23:0] regs$624$d;
+    wire  [23:0] regs$624$q;
+    reg  regs$624$clock;
+    reg  [23:0] regs$625$d;
+    wire  [23:0] regs$625$q;
+    reg  regs$625$clock;
+    reg  [23:0] regs$626$d;
+    wire  [23:0] regs$626$q;
+    reg  regs$626$clock;
+    reg  [23:0] regs$627$d;
+    wire  [23:0] regs$627$q;
+    reg  regs$627$clock;
+    reg  [23:0] regs$628$d;
+    wire  [23:0] regs$628$q;
+    reg  regs$628$clock;
+    reg  [23:0] regs$629$d;
+    wire  [23:0] regs$629$q;
+    reg  regs$629$clock;
+    reg  [23:0] regs$630$d;
+    wire  [23:0] regs$630$q;
+    reg  regs$630$clock;
+    reg  [23:0] regs$631$d;
+    wire  [23:0] regs$631$q;
+    reg  regs$631$clock;
+    reg  [23:0] regs$632$d;
+    wire  [23:0] regs$632$q;
+    reg  regs$632$clock;
+    reg  [23:0] regs$633$d;
+    wire  [23:0] regs$633$q;
+    reg  regs$633$clock;
+    reg  [23:0] regs$634$d;
+    wire  [23:0] regs$634$q;
+    reg  regs$634$clock;
+    reg  [23:0] regs$635$d;
+    wire  [23:0] regs$635$q;
+    reg  regs$635$clock;
+    reg  [23:0] regs$636$d;
+    wire  [23:0] regs$636$q;
+    reg  regs$636$clock;
+    reg  [23:0] regs$637$d;
+    wire  [23:0] regs$637$q;
+    reg  regs$637$clock;
+    reg  [23:0] regs$638$d;
+    wire  [23:0] regs$638$q;
+    reg  regs$638$clock;
+    reg  [23:0] regs$639$d;
+    wire  [23:0] regs$639$q;
+    reg  regs$639$clock;
+    reg  [23:0] regs$640$d;
+    wire  [23:0] regs$640$q;
+    reg  regs$640$clock;
+    reg  [23:0] regs$641$d;
+    wire  [23:0] regs$641$q;
+    reg  regs$641$clock;
+    reg  [23:0] regs$642$d;
+    wire  [23:0] regs$642$q;
+    reg  regs$642$clock;
+    reg  [23:0] regs$643$d;
+    wire  [23:0] regs$643$q;
+    reg  regs$643$clock;
+    reg  [23:0] regs$644$d;
+    wire  [23:0] regs$644$q;
+    reg  regs$644$clock;
+    reg  [23:0] regs$645$d;
+    wire  [23:0] regs$645$q;
+    reg  regs$645$clock;
+    reg  [23:0] regs$646$d;
+    wire  [23:0] regs$646$q;
+    reg  regs$646$clock;
+    reg  [23:0] regs$647$d;
+    wire  [23:0] regs$647$q;
+    reg  regs$647$clock;
+    reg  [23:0] regs$648$d;
+    wire  [23:0] regs$648$q;
+    reg  regs$648$clock;
+    reg  [23:0] regs$649$d;
+    wire  [23:0] regs$649$q;
+    reg  regs$649$clock;
+    reg  [23:0] regs$650$d;
+    wire  [23:0] regs$650$q;
+    reg  regs$650$clock;
+    reg  [23:0] regs$651$d;
+    wire  [23:0] regs$651$q;
+    reg  regs$651$clock;
+    reg  [23:0] regs$652$d;
+    wire  [23:0] regs$652$q;
+    reg  regs$652$clock;
+    reg  [23:0] regs$653$d;
+    wire  [23:0] regs$653$q;
+    reg  regs$653$clock;
+    reg  [23:0] regs$654$d;
+    wire  [23:0] regs$654$q;
+    reg  regs$654$clock;
+    reg  [23:0] regs$655$d;
+    wire  [23:0] regs$655$q;
+    reg  regs$655$clock;
+    reg  [23:0] regs$656$d;
+    wire  [23:0] regs$656$q;
+    reg  regs$656$clock;
+    reg  [23:0] regs$657$d;
+    wire  [23:0] regs$657$q;
+    reg  regs$657$clock;
+    reg  [23:0] regs$658$d;
+    wire  [23:0] regs$658$q;
+    reg  regs$658$clock;
+    reg  [23:0] regs$659$d;
+    wire  [23:0] regs$659$q;
+    reg  regs$659$clock;
+    reg  [23:0] regs$660$d;
+    wire  [23:0] regs$660$q;
+    reg  regs$660$clock;
+    reg  [23:0] regs$661$d;
+    wire  [23:0] regs$661$q;
+    reg  regs$661$clock;
+    reg  [23:0] regs$662$d;
+    wire  [23:0] regs$662$q;
+    reg  regs$662$clock;
+    reg  [23:0] regs$663$d;
+    wire  [23:0] regs$663$q;
+    reg  regs$663$clock;
+    reg  [23:0] regs$664$d;
+    wire  [23:0] regs$664$q;
+    reg  regs$664$clock;
+    reg  [23:0] regs$665$d;
+    wire  [23:0] regs$665$q;
+    reg  regs$665$clock;
+    reg  [23:0] regs$666$d;
+    wire  [23:0] regs$666$q;
+    reg  regs$666$clock;
+    reg  [23:0] regs$667$d;
+    wire  [23:0] regs$667$q;
+    reg  regs$667$clock;
+    reg  [23:0] regs$668$d;
+    wire  [23:0] regs$668$q;
+    reg  regs$668$clock;
+    reg  [23:0] regs$669$d;
+    wire  [23:0] regs$669$q;
+    reg  regs$669$clock;
+    reg  [23:0] regs$670$d;
+    wire  [23:0] regs$670$q;
+    reg  regs$670$clock;
+    reg  [23:0] regs$671$d;
+    wire  [23:0] regs$671$q;
+    reg  regs$671$clock;
+    reg  [23:0] regs$672$d;
+    wire  [23:0] regs$672$q;
+    reg  regs$672$clock;
+    reg  [23:0] regs$673$d;
+    wire  [23:0] regs$673$q;
+    reg  regs$673$clock;
+    reg  [23:0] regs$674$d;
+    wire  [23:0] regs$674$q;
+    reg  regs$674$clock;
+    reg  [23:0] regs$675$d;
+    wire  [23:0] regs$675$q;
+    reg  regs$675$clock;
+    reg  [23:0] regs$676$d;
+    wire  [23:0] regs$676$q;
+    reg  regs$676$clock;
+    reg  [23:0] regs$677$d;
+    wire  [23:0] regs$677$q;
+    reg  regs$677$clock;
+    reg  [23:0] regs$678$d;
+    wire  [23:0] regs$678$q;
+    reg  regs$678$clock;
+    reg  [23:0] regs$679$d;
+    wire  [23:0] regs$679$q;
+    reg  regs$679$clock;
+    reg  [23:0] regs$680$d;
+    wire  [23:0] regs$680$q;
+    reg  regs$680$clock;
+    reg  [23:0] regs$681$d;
+    wire  [23:0] regs$681$q;
+    reg  regs$681$clock;
+    reg  [23:0] regs$682$d;
+    wire  [23:0] regs$682$q;
+    reg  regs$682$clock;
+    reg  [23:0] regs$683$d;
+    wire  [23:0] regs$683$q;
+    reg  regs$683$clock;
+    reg  [23:0] regs$684$d;
+    wire  [23:0] regs$684$q;
+    reg  regs$684$clock;
+    reg  [23:0] regs$685$d;
+    wire  [23:0] regs$685$q;
+    reg  regs$685$clock;
+    reg  [23:0] regs$686$d;
+    wire  [23:0] regs$686$q;
+    reg  regs$686$clock;
+    reg  [23:0] regs$687$d;
+    wire  [23:0] regs$687$q;
+    reg  regs$687$clock;
+    reg  [23:0] regs$688$d;
+    wire  [23:0] regs$688$q;
+    reg  regs$688$clock;
+    reg  [23:0] regs$689$d;
+    wire  [23:0] regs$689$q;
+    reg  regs$689$clock;
+    reg  [23:0] regs$690$d;
+    wire  [23:0] regs$690$q;
+    reg  regs$690$clock;
+    reg  [23:0] regs$691$d;
+    wire  [23:0] regs$691$q;
+    reg  regs$691$clock;
+    reg  [23:0] regs$692$d;
+    wire  [23:0] regs$692$q;
+    reg  regs$692$clock;
+    reg  [23:0] regs$693$d;
+    wire  [23:0] regs$693$q;
+    reg  regs$693$clock;
+    reg  [23:0] regs$694$d;
+    wire  [23:0] regs$694$q;
+    reg  regs$694$clock;
+    reg  [23:0] regs$695$d;
+    wire  [23:0] regs$695$q;
+    reg  regs$695$clock;
+    reg  [23:0] regs$696$d;
+    wire  [23:0] regs$696$q;
+    reg  regs$696$clock;
+    reg  [23:0] regs$697$d;
+    wire  [23:0] regs$697$q;
+    reg  regs$697$clock;
+    reg  [23:0] regs$698$d;
+    wire  [23:0] regs$698$q;
+    reg  regs$698$clock;
+    reg  [23:0] regs$699$d;
+    wire  [23:0] regs$699$q;
+    reg  regs$699$clock;
+    reg  [23:0] regs$700$d;
+    wire  [23:0] regs$700$q;
+    reg  regs$700$clock;
+    reg  [23:0] regs$701$d;
+    wire  [23:0] regs$701$q;
+    reg  regs$701$clock;
+    reg  [23:0] regs$702$d;
+    wire  [23:0] regs$702$q;
+    reg  regs$702$clock;
+    reg  [23:0] regs$703$d;
+    wire  [23:0] regs$703$q;
+    reg  regs$703$clock;
+    reg  [23:0] regs$704$d;
+    wire  [23:0] regs$704$q;
+    reg  regs$704$clock;
+    reg  [23:0] regs$705$d;
+    wire  [23:0] regs$705$q;
+    reg  regs$705$clock;
+    reg  [23:0] regs$706$d;
+    wire  [23:0] regs$706$q;
+    reg  regs$706$clock;
+    reg  [23:0] regs$707$d;
+    wire  [23:0] regs$707$q;
+    reg  regs$707$clock;
+    reg  [23:0] regs$708$d;
+    wire  [23:0] regs$708$q;
+    reg  regs$708$clock;
+    reg  [23:0] regs$709$d;
+    wire  [23:0] regs$709$q;
+    reg  regs$709$clock;
+    reg  [23:0] regs$710$d;
+    wire  [23:0] regs$710$q;
+    reg  regs$710$clock;
+    reg  [23:0] regs$711$d;
+    wire  [23:0] regs$711$q;
+    reg  regs$711$clock;
+    reg  [23:0] regs$712$d;
+    wire  [23:0] regs$712$q;
+    reg  regs$712$clock;
+    reg  [23:0] regs$713$d;
+    wire  [23:0] regs$713$q;
+    reg  regs$713$clock;
+    reg  [23:0] regs$714$d;
+    wire  [23:0] regs$714$q;
+    reg  regs$714$clock;
+    reg  [23:0] regs$715$d;
+    wire  [23:0] regs$715$q;
+    reg  regs$715$clock;
+    reg  [23:0] regs$716$d;
+    wire  [23:0] regs$716$q;
+    reg  regs$716$clock;
+    reg  [23:0] regs$717$d;
+    wire  [23:0] regs$717$q;
+    reg  regs$717$clock;
+    reg  [23:0] regs$718$d;
+    wire  [23:0] regs$718$q;
+    reg  regs$718$clock;
+    reg  [23:0] regs$719$d;
+    wire  [23:0] regs$719$q;
+    reg  regs$719$clock;
+    reg  [23:0] regs$720$d;
+    wire  [23:0] regs$720$q;
+    reg  regs$720$clock;
+    reg  [23:0] regs$721$d;
+    wire  [23:0] regs$721$q;
+    reg  regs$721$clock;
+    reg  [23:0] regs$722$d;
+    wire  [23:0] regs$722$q;
+    reg  regs$722$clock;
+    reg  [23:0] regs$723$d;
+    wire  [23:0] regs$723$q;
+    reg  regs$723$clock;
+    reg  [23:0] regs$724$d;
+    wire  [23:0] regs$724$q;
+    reg  regs$724$clock;
+    reg  [23:0] regs$725$d;
+    wire  [23:0] regs$725$q;
+    reg  regs$725$clock;
+    reg  [23:0] regs$726$d;
+    wire  [23:0] regs$726$q;
+    reg  regs$726$clock;
+    reg  [23:0] regs$727$d;
+    wire  [23:0] regs$727$q;
+    reg  regs$727$clock;
+    reg  [23:0] regs$728$d;
+    wire  [23:0] regs$728$q;
+    reg  regs$728$clock;
+    reg  [23:0] regs$729$d;
+    wire  [23:0] regs$729$q;
+    reg  regs$729$clock;
+    reg  [23:0] regs$730$d;
+    wire  [23:0] regs$730$q;
+    reg  regs$730$clock;
+    reg  [23:0] regs$731$d;
+    wire  [23:0] regs$731$q;
+    reg  regs$731$clock;
+    reg  [23:0] regs$732$d;
+    wire  [23:0] regs$732$q;
+    reg  regs$732$clock;
+    reg  [23:0] regs$733$d;
+    wire  [23:0] regs$733$q;
+    reg  regs$733$clock;
+    reg  [23:0] regs$734$d;
+    wire  [23:0] regs$734$q;
+    reg  regs$734$clock;
+    reg  [23:0] regs$735$d;
+    wire  [23:0] regs$735$q;
+    reg  regs$735$clock;
+    reg  [23:0] regs$736$d;
+    wire  [23:0] regs$736$q;
+    reg  regs$736$clock;
+    reg  [23:0] regs$737$d;
+    wire  [23:0] regs$737$q;
+    reg  regs$737$clock;
+    reg  [23:0] regs$738$d;
+    wire  [23:0] regs$738$q;
+    reg  regs$738$clock;
+    reg  [23:0] regs$739$d;
+    wire  [23:0] regs$739$q;
+    reg  regs$739$clock;
+    reg  [23:0] regs$740$d;
+    wire  [23:0] regs$740$q;
+    reg  regs$740$clock;
+    reg  [23:0] regs$741$d;
+    wire  [23:0] regs$741$q;
+    reg  regs$741$clock;
+    reg  [23:0] regs$742$d;
+    wire  [23:0] regs$742$q;
+    reg  regs$742$clock;
+    reg  [23:0] regs$743$d;
+    wire  [23:0] regs$743$q;
+    reg  regs$743$clock;
+    reg  [23:0] regs$744$d;
+    wire  [23:0] regs$744$q;
+    reg  regs$744$clock;
+    reg  [23:0] regs$745$d;
+    wire  [23:0] regs$745$q;
+    reg  regs$745$clock;
+    reg  [23:0] regs$746$d;
+    wire  [23:0] regs$746$q;
+    reg  regs$746$clock;
+    reg  [23:0] regs$747$d;
+    wire  [23:0] regs$747$q;
+    reg  regs$747$clock;
+    reg  [23:0] regs$748$d;
+    wire  [23:0] regs$748$q;
+    reg  regs$748$clock;
+    reg  [23:0] regs$749$d;
+    wire  [23:0] regs$749$q;
+    reg  regs$749$clock;
+    reg  [23:0] regs$750$d;
+    wire  [23:0] regs$750$q;
+    reg  regs$750$clock;
+    reg  [23:0] regs$751$d;
+    wire  [23:0] regs$751$q;
+    reg  regs$751$clock;
+    reg  [23:0] regs$752$d;
+    wire  [23:0] regs$752$q;
+    reg  regs$752$clock;
+    reg  [23:0] regs$753$d;
+    wire  [23:0] regs$753$q;
+    reg  regs$753$clock;
+    reg  [23:0] regs$754$d;
+    wire  [23:0] regs$754$q;
+    reg  regs$754$clock;
+    reg  [23:0] regs$755$d;
+    wire  [23:0] regs$755$q;
+    reg  regs$755$clock;
+    reg  [23:0] regs$756$d;
+    wire  [23:0] regs$756$q;
+    reg  regs$756$clock;
+    reg  [23:0] regs$757$d;
+    wire  [23:0] regs$757$q;
+    reg  regs$757$clock;
+    reg  [23:0] regs$758$d;
+    wire  [23:0] regs$758$q;
+    reg  regs$758$clock;
+    reg  [23:0] regs$759$d;
+    wire  [23:0] regs$759$q;
+    reg  regs$759$clock;
+    reg  [23:0] regs$760$d;
+    wire  [23:0] regs$760$q;
+    reg  regs$760$clock;
+    reg  [23:0] regs$761$d;
+    wire  [23:0] regs$761$q;
+    reg  regs$761$clock;
+    reg  [23:0] regs$762$d;
+    wire  [23:0] regs$762$q;
+    reg  regs$762$clock;
+    reg  [23:0] regs$763$d;
+    wire  [23:0] regs$763$q;
+    reg  regs$763$clock;
     reg  exact$0$d;
     wire  exact$0$q;
     reg  exact$0$clock;
@@ -11624,2370 +12497,3825 @@ module top$tri_unit$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2
         .q(counter$q),
         .clock(counter$clock)
     );
-    top$base_na regs$0(
+    top$tri_unit$tc$regs$0 regs$0(
         .d(regs$0$d),
         .q(regs$0$q),
         .clock(regs$0$clock)
     );
-    top$base_na regs$1(
+    top$tri_unit$tc$regs$0 regs$1(
         .d(regs$1$d),
         .q(regs$1$q),
         .clock(regs$1$clock)
     );
-    top$base_na regs$2(
+    top$tri_unit$tc$regs$0 regs$2(
         .d(regs$2$d),
         .q(regs$2$q),
         .clock(regs$2$clock)
     );
-    top$base_na regs$3(
+    top$tri_unit$tc$regs$0 regs$3(
         .d(regs$3$d),
         .q(regs$3$q),
         .clock(regs$3$clock)
     );
-    top$base_na regs$4(
+    top$tri_unit$tc$regs$0 regs$4(
         .d(regs$4$d),
         .q(regs$4$q),
         .clock(regs$4$clock)
     );
-    top$base_na regs$5(
+    top$tri_unit$tc$regs$0 regs$5(
         .d(regs$5$d),
         .q(regs$5$q),
         .clock(regs$5$clock)
     );
-    top$base_na regs$6(
+    top$tri_unit$tc$regs$0 regs$6(
         .d(regs$6$d),
         .q(regs$6$q),
         .clock(regs$6$clock)
     );
-    top$base_na regs$7(
+    top$tri_unit$tc$regs$0 regs$7(
         .d(regs$7$d),
         .q(regs$7$q),
         .clock(regs$7$clock)
     );
-    top$base_na regs$8(
+    top$tri_unit$tc$regs$0 regs$8(
         .d(regs$8$d),
         .q(regs$8$q),
         .clock(regs$8$clock)
     );
-    top$base_na regs$9(
+    top$tri_unit$tc$regs$0 regs$9(
         .d(regs$9$d),
         .q(regs$9$q),
         .clock(regs$9$clock)
     );
-    top$base_na regs$10(
+    top$tri_unit$tc$regs$0 regs$10(
         .d(regs$10$d),
         .q(regs$10$q),
         .clock(regs$10$clock)
     );
-    top$base_na regs$11(
+    top$tri_unit$tc$regs$0 regs$11(
         .d(regs$11$d),
         .q(regs$11$q),
         .clock(regs$11$clock)
     );
-    top$base_na regs$12(
+    top$tri_unit$tc$regs$0 regs$12(
         .d(regs$12$d),
         .q(regs$12$q),
         .clock(regs$12$clock)
     );
-    top$base_na regs$13(
+    top$tri_unit$tc$regs$0 regs$13(
         .d(regs$13$d),
         .q(regs$13$q),
         .clock(regs$13$clock)
     );
-    top$base_na regs$14(
+    top$tri_unit$tc$regs$0 regs$14(
         .d(regs$14$d),
         .q(regs$14$q),
         .clock(regs$14$clock)
     );
-    top$base_na regs$15(
+    top$tri_unit$tc$regs$0 regs$15(
         .d(regs$15$d),
         .q(regs$15$q),
         .clock(regs$15$clock)
     );
-    top$base_na regs$16(
+    top$tri_unit$tc$regs$0 regs$16(
         .d(regs$16$d),
         .q(regs$16$q),
         .clock(regs$16$clock)
     );
-    top$base_na regs$17(
+    top$tri_unit$tc$regs$0 regs$17(
         .d(regs$17$d),
         .q(regs$17$q),
         .clock(regs$17$clock)
     );
-    top$base_na regs$18(
+    top$tri_unit$tc$regs$0 regs$18(
         .d(regs$18$d),
         .q(regs$18$q),
         .clock(regs$18$clock)
     );
-    top$base_na regs$19(
+    top$tri_unit$tc$regs$0 regs$19(
         .d(regs$19$d),
         .q(regs$19$q),
         .clock(regs$19$clock)
     );
-    top$base_na regs$20(
+    top$tri_unit$tc$regs$0 regs$20(
         .d(regs$20$d),
         .q(regs$20$q),
         .clock(regs$20$clock)
     );
-    top$base_na regs$21(
+    top$tri_unit$tc$regs$0 regs$21(
         .d(regs$21$d),
         .q(regs$21$q),
         .clock(regs$21$clock)
     );
-    top$base_na regs$22(
+    top$tri_unit$tc$regs$0 regs$22(
         .d(regs$22$d),
         .q(regs$22$q),
         .clock(regs$22$clock)
     );
-    top$base_na regs$23(
+    top$tri_unit$tc$regs$0 regs$23(
         .d(regs$23$d),
         .q(regs$23$q),
         .clock(regs$23$clock)
     );
-    top$base_na regs$24(
+    top$tri_unit$tc$regs$0 regs$24(
         .d(regs$24$d),
         .q(regs$24$q),
         .clock(regs$24$clock)
     );
-    top$base_na regs$25(
+    top$tri_unit$tc$regs$0 regs$25(
         .d(regs$25$d),
         .q(regs$25$q),
         .clock(regs$25$clock)
     );
-    top$base_na regs$26(
+    top$tri_unit$tc$regs$0 regs$26(
         .d(regs$26$d),
         .q(regs$26$q),
         .clock(regs$26$clock)
     );
-    top$base_na regs$27(
+    top$tri_unit$tc$regs$0 regs$27(
         .d(regs$27$d),
         .q(regs$27$q),
         .clock(regs$27$clock)
     );
-    top$base_na regs$28(
+    top$tri_unit$tc$regs$0 regs$28(
         .d(regs$28$d),
         .q(regs$28$q),
         .clock(regs$28$clock)
     );
-    top$base_na regs$29(
+    top$tri_unit$tc$regs$0 regs$29(
         .d(regs$29$d),
         .q(regs$29$q),
         .clock(regs$29$clock)
     );
-    top$base_na regs$30(
+    top$tri_unit$tc$regs$0 regs$30(
         .d(regs$30$d),
         .q(regs$30$q),
         .clock(regs$30$clock)
     );
-    top$base_na regs$31(
+    top$tri_unit$tc$regs$0 regs$31(
         .d(regs$31$d),
         .q(regs$31$q),
         .clock(regs$31$clock)
     );
-    top$base_na regs$32(
+    top$tri_unit$tc$regs$0 regs$32(
         .d(regs$32$d),
         .q(regs$32$q),
         .clock(regs$32$clock)
     );
-    top$base_na regs$33(
+    top$tri_unit$tc$regs$0 regs$33(
         .d(regs$33$d),
         .q(regs$33$q),
         .clock(regs$33$clock)
     );
-    top$base_na regs$34(
+    top$tri_unit$tc$regs$0 regs$34(
         .d(regs$34$d),
         .q(regs$34$q),
         .clock(regs$34$clock)
     );
-    top$base_na regs$35(
+    top$tri_unit$tc$regs$0 regs$35(
         .d(regs$35$d),
         .q(regs$35$q),
         .clock(regs$35$clock)
     );
-    top$base_na regs$36(
+    top$tri_unit$tc$regs$0 regs$36(
         .d(regs$36$d),
         .q(regs$36$q),
         .clock(regs$36$clock)
     );
-    top$base_na regs$37(
+    top$tri_unit$tc$regs$0 regs$37(
         .d(regs$37$d),
         .q(regs$37$q),
         .clock(regs$37$clock)
     );
-    top$base_na regs$38(
+    top$tri_unit$tc$regs$0 regs$38(
         .d(regs$38$d),
         .q(regs$38$q),
         .clock(regs$38$clock)
     );
-    top$base_na regs$39(
+    top$tri_unit$tc$regs$0 regs$39(
         .d(regs$39$d),
         .q(regs$39$q),
         .clock(regs$39$clock)
     );
-    top$base_na regs$40(
+    top$tri_unit$tc$regs$0 regs$40(
         .d(regs$40$d),
         .q(regs$40$q),
         .clock(regs$40$clock)
     );
-    top$base_na regs$41(
+    top$tri_unit$tc$regs$0 regs$41(
         .d(regs$41$d),
         .q(regs$41$q),
         .clock(regs$41$clock)
     );
-    top$base_na regs$42(
+    top$tri_unit$tc$regs$0 regs$42(
         .d(regs$42$d),
         .q(regs$42$q),
         .clock(regs$42$clock)
     );
-    top$base_na regs$43(
+    top$tri_unit$tc$regs$0 regs$43(
         .d(regs$43$d),
         .q(regs$43$q),
         .clock(regs$43$clock)
     );
-    top$base_na regs$44(
+    top$tri_unit$tc$regs$0 regs$44(
         .d(regs$44$d),
         .q(regs$44$q),
         .clock(regs$44$clock)
     );
-    top$base_na regs$45(
+    top$tri_unit$tc$regs$0 regs$45(
         .d(regs$45$d),
         .q(regs$45$q),
         .clock(regs$45$clock)
     );
-    top$base_na regs$46(
+    top$tri_unit$tc$regs$0 regs$46(
         .d(regs$46$d),
         .q(regs$46$q),
         .clock(regs$46$clock)
     );
-    top$base_na regs$47(
+    top$tri_unit$tc$regs$0 regs$47(
         .d(regs$47$d),
         .q(regs$47$q),
         .clock(regs$47$clock)
     );
-    top$base_na regs$48(
+    top$tri_unit$tc$regs$0 regs$48(
         .d(regs$48$d),
         .q(regs$48$q),
         .clock(regs$48$clock)
     );
-    top$base_na regs$49(
+    top$tri_unit$tc$regs$0 regs$49(
         .d(regs$49$d),
         .q(regs$49$q),
         .clock(regs$49$clock)
     );
-    top$base_na regs$50(
+    top$tri_unit$tc$regs$0 regs$50(
         .d(regs$50$d),
         .q(regs$50$q),
         .clock(regs$50$clock)
     );
-    top$base_na regs$51(
+    top$tri_unit$tc$regs$0 regs$51(
         .d(regs$51$d),
         .q(regs$51$q),
         .clock(regs$51$clock)
     );
-    top$base_na regs$52(
+    top$tri_unit$tc$regs$0 regs$52(
         .d(regs$52$d),
         .q(regs$52$q),
         .clock(regs$52$clock)
     );
-    top$base_na regs$53(
+    top$tri_unit$tc$regs$0 regs$53(
         .d(regs$53$d),
         .q(regs$53$q),
         .clock(regs$53$clock)
     );
-    top$base_na regs$54(
+    top$tri_unit$tc$regs$0 regs$54(
         .d(regs$54$d),
         .q(regs$54$q),
         .clock(regs$54$clock)
     );
-    top$base_na regs$55(
+    top$tri_unit$tc$regs$0 regs$55(
         .d(regs$55$d),
         .q(regs$55$q),
         .clock(regs$55$clock)
     );
-    top$base_na regs$56(
+    top$tri_unit$tc$regs$0 regs$56(
         .d(regs$56$d),
         .q(regs$56$q),
         .clock(regs$56$clock)
     );
-    top$base_na regs$57(
+    top$tri_unit$tc$regs$0 regs$57(
         .d(regs$57$d),
         .q(regs$57$q),
         .clock(regs$57$clock)
     );
-    top$base_na regs$58(
+    top$tri_unit$tc$regs$0 regs$58(
         .d(regs$58$d),
         .q(regs$58$q),
         .clock(regs$58$clock)
     );
-    top$base_na regs$59(
+    top$tri_unit$tc$regs$0 regs$59(
         .d(regs$59$d),
         .q(regs$59$q),
         .clock(regs$59$clock)
     );
-    top$base_na regs$60(
+    top$tri_unit$tc$regs$0 regs$60(
         .d(regs$60$d),
         .q(regs$60$q),
         .clock(regs$60$clock)
     );
-    top$base_na regs$61(
+    top$tri_unit$tc$regs$0 regs$61(
         .d(regs$61$d),
         .q(regs$61$q),
         .clock(regs$61$clock)
     );
-    top$base_na regs$62(
+    top$tri_unit$tc$regs$0 regs$62(
         .d(regs$62$d),
         .q(regs$62$q),
         .clock(regs$62$clock)
     );
-    top$base_na regs$63(
+    top$tri_unit$tc$regs$0 regs$63(
         .d(regs$63$d),
         .q(regs$63$q),
         .clock(regs$63$clock)
     );
-    top$base_na regs$64(
+    top$tri_unit$tc$regs$0 regs$64(
         .d(regs$64$d),
         .q(regs$64$q),
         .clock(regs$64$clock)
     );
-    top$base_na regs$65(
+    top$tri_unit$tc$regs$0 regs$65(
         .d(regs$65$d),
         .q(regs$65$q),
         .clock(regs$65$clock)
     );
-    top$base_na regs$66(
+    top$tri_unit$tc$regs$0 regs$66(
         .d(regs$66$d),
         .q(regs$66$q),
         .clock(regs$66$clock)
     );
-    top$base_na regs$67(
+    top$tri_unit$tc$regs$0 regs$67(
         .d(regs$67$d),
         .q(regs$67$q),
         .clock(regs$67$clock)
     );
-    top$base_na regs$68(
+    top$tri_unit$tc$regs$0 regs$68(
         .d(regs$68$d),
         .q(regs$68$q),
         .clock(regs$68$clock)
     );
-    top$base_na regs$69(
+    top$tri_unit$tc$regs$0 regs$69(
         .d(regs$69$d),
         .q(regs$69$q),
         .clock(regs$69$clock)
     );
-    top$base_na regs$70(
+    top$tri_unit$tc$regs$0 regs$70(
         .d(regs$70$d),
         .q(regs$70$q),
         .clock(regs$70$clock)
     );
-    top$base_na regs$71(
+    top$tri_unit$tc$regs$0 regs$71(
         .d(regs$71$d),
         .q(regs$71$q),
         .clock(regs$71$clock)
     );
-    top$base_na regs$72(
+    top$tri_unit$tc$regs$0 regs$72(
         .d(regs$72$d),
         .q(regs$72$q),
         .clock(regs$72$clock)
     );
-    top$base_na regs$73(
+    top$tri_unit$tc$regs$0 regs$73(
         .d(regs$73$d),
         .q(regs$73$q),
         .clock(regs$73$clock)
     );
-    top$base_na regs$74(
+    top$tri_unit$tc$regs$0 regs$74(
         .d(regs$74$d),
         .q(regs$74$q),
         .clock(regs$74$clock)
     );
-    top$base_na regs$75(
+    top$tri_unit$tc$regs$0 regs$75(
         .d(regs$75$d),
         .q(regs$75$q),
         .clock(regs$75$clock)
     );
-    top$base_na regs$76(
+    top$tri_unit$tc$regs$0 regs$76(
         .d(regs$76$d),
         .q(regs$76$q),
         .clock(regs$76$clock)
     );
-    top$base_na regs$77(
+    top$tri_unit$tc$regs$0 regs$77(
         .d(regs$77$d),
         .q(regs$77$q),
         .clock(regs$77$clock)
     );
-    top$base_na regs$78(
+    top$tri_unit$tc$regs$0 regs$78(
         .d(regs$78$d),
         .q(regs$78$q),
         .clock(regs$78$clock)
     );
-    top$base_na regs$79(
+    top$tri_unit$tc$regs$0 regs$79(
         .d(regs$79$d),
         .q(regs$79$q),
         .clock(regs$79$clock)
     );
-    top$base_na regs$80(
+    top$tri_unit$tc$regs$0 regs$80(
         .d(regs$80$d),
         .q(regs$80$q),
         .clock(regs$80$clock)
     );
-    top$base_na regs$81(
+    top$tri_unit$tc$regs$0 regs$81(
         .d(regs$81$d),
         .q(regs$81$q),
         .clock(regs$81$clock)
     );
-    top$base_na regs$82(
+    top$tri_unit$tc$regs$0 regs$82(
         .d(regs$82$d),
         .q(regs$82$q),
         .clock(regs$82$clock)
     );
-    top$base_na regs$83(
+    top$tri_unit$tc$regs$0 regs$83(
         .d(regs$83$d),
         .q(regs$83$q),
         .clock(regs$83$clock)
     );
-    top$base_na regs$84(
+    top$tri_unit$tc$regs$0 regs$84(
         .d(regs$84$d),
         .q(regs$84$q),
         .clock(regs$84$clock)
     );
-    top$base_na regs$85(
+    top$tri_unit$tc$regs$0 regs$85(
         .d(regs$85$d),
         .q(regs$85$q),
         .clock(regs$85$clock)
     );
-    top$base_na regs$86(
+    top$tri_unit$tc$regs$0 regs$86(
         .d(regs$86$d),
         .q(regs$86$q),
         .clock(regs$86$clock)
     );
-    top$base_na regs$87(
+    top$tri_unit$tc$regs$0 regs$87(
         .d(regs$87$d),
         .q(regs$87$q),
         .clock(regs$87$clock)
     );
-    top$base_na regs$88(
+    top$tri_unit$tc$regs$0 regs$88(
         .d(regs$88$d),
         .q(regs$88$q),
         .clock(regs$88$clock)
     );
-    top$base_na regs$89(
+    top$tri_unit$tc$regs$0 regs$89(
         .d(regs$89$d),
         .q(regs$89$q),
         .clock(regs$89$clock)
     );
-    top$base_na regs$90(
+    top$tri_unit$tc$regs$0 regs$90(
         .d(regs$90$d),
         .q(regs$90$q),
         .clock(regs$90$clock)
     );
-    top$base_na regs$91(
+    top$tri_unit$tc$regs$0 regs$91(
         .d(regs$91$d),
         .q(regs$91$q),
         .clock(regs$91$clock)
     );
-    top$base_na regs$92(
+    top$tri_unit$tc$regs$0 regs$92(
         .d(regs$92$d),
         .q(regs$92$q),
         .clock(regs$92$clock)
     );
-    top$base_na regs$93(
+    top$tri_unit$tc$regs$0 regs$93(
         .d(regs$93$d),
         .q(regs$93$q),
         .clock(regs$93$clock)
     );
-    top$base_na regs$94(
+    top$tri_unit$tc$regs$0 regs$94(
         .d(regs$94$d),
         .q(regs$94$q),
         .clock(regs$94$clock)
     );
-    top$base_na regs$95(
+    top$tri_unit$tc$regs$0 regs$95(
         .d(regs$95$d),
         .q(regs$95$q),
         .clock(regs$95$clock)
     );
-    top$base_na regs$96(
+    top$tri_unit$tc$regs$0 regs$96(
         .d(regs$96$d),
         .q(regs$96$q),
         .clock(regs$96$clock)
     );
-    top$base_na regs$97(
+    top$tri_unit$tc$regs$0 regs$97(
         .d(regs$97$d),
         .q(regs$97$q),
         .clock(regs$97$clock)
     );
-    top$base_na regs$98(
+    top$tri_unit$tc$regs$0 regs$98(
         .d(regs$98$d),
         .q(regs$98$q),
         .clock(regs$98$clock)
     );
-    top$base_na regs$99(
+    top$tri_unit$tc$regs$0 regs$99(
         .d(regs$99$d),
         .q(regs$99$q),
         .clock(regs$99$clock)
     );
-    top$base_na regs$100(
+    top$tri_unit$tc$regs$0 regs$100(
         .d(regs$100$d),
         .q(regs$100$q),
         .clock(regs$100$clock)
     );
-    top$base_na regs$101(
+    top$tri_unit$tc$regs$0 regs$101(
         .d(regs$101$d),
         .q(regs$101$q),
         .clock(regs$101$clock)
     );
-    top$base_na regs$102(
+    top$tri_unit$tc$regs$0 regs$102(
         .d(regs$102$d),
         .q(regs$102$q),
         .clock(regs$102$clock)
     );
-    top$base_na regs$103(
+    top$tri_unit$tc$regs$0 regs$103(
         .d(regs$103$d),
         .q(regs$103$q),
         .clock(regs$103$clock)
     );
-    top$base_na regs$104(
+    top$tri_unit$tc$regs$0 regs$104(
         .d(regs$104$d),
         .q(regs$104$q),
         .clock(regs$104$clock)
     );
-    top$base_na regs$105(
+    top$tri_unit$tc$regs$0 regs$105(
         .d(regs$105$d),
         .q(regs$105$q),
         .clock(regs$105$clock)
     );
-    top$base_na regs$106(
+    top$tri_unit$tc$regs$0 regs$106(
         .d(regs$106$d),
         .q(regs$106$q),
         .clock(regs$106$clock)
     );
-    top$base_na regs$107(
+    top$tri_unit$tc$regs$0 regs$107(
         .d(regs$107$d),
         .q(regs$107$q),
         .clock(regs$107$clock)
     );
-    top$base_na regs$108(
+    top$tri_unit$tc$regs$0 regs$108(
         .d(regs$108$d),
         .q(regs$108$q),
         .clock(regs$108$clock)
     );
-    top$base_na regs$109(
+    top$tri_unit$tc$regs$0 regs$109(
         .d(regs$109$d),
         .q(regs$109$q),
         .clock(regs$109$clock)
     );
-    top$base_na regs$110(
+    top$tri_unit$tc$regs$0 regs$110(
         .d(regs$110$d),
         .q(regs$110$q),
         .clock(regs$110$clock)
     );
-    top$base_na regs$111(
+    top$tri_unit$tc$regs$0 regs$111(
         .d(regs$111$d),
         .q(regs$111$q),
         .clock(regs$111$clock)
     );
-    top$base_na regs$112(
+    top$tri_unit$tc$regs$0 regs$112(
         .d(regs$112$d),
         .q(regs$112$q),
         .clock(regs$112$clock)
     );
-    top$base_na regs$113(
+    top$tri_unit$tc$regs$0 regs$113(
         .d(regs$113$d),
         .q(regs$113$q),
         .clock(regs$113$clock)
     );
-    top$base_na regs$114(
+    top$tri_unit$tc$regs$0 regs$114(
         .d(regs$114$d),
         .q(regs$114$q),
         .clock(regs$114$clock)
     );
-    top$base_na regs$115(
+    top$tri_unit$tc$regs$0 regs$115(
         .d(regs$115$d),
         .q(regs$115$q),
         .clock(regs$115$clock)
     );
-    top$base_na regs$116(
+    top$tri_unit$tc$regs$0 regs$116(
         .d(regs$116$d),
         .q(regs$116$q),
         .clock(regs$116$clock)
     );
-    top$base_na regs$117(
+    top$tri_unit$tc$regs$0 regs$117(
         .d(regs$117$d),
         .q(regs$117$q),
         .clock(regs$117$clock)
     );
-    top$base_na regs$118(
+    top$tri_unit$tc$regs$0 regs$118(
         .d(regs$118$d),
         .q(regs$118$q),
         .clock(regs$118$clock)
     );
-    top$base_na regs$119(
+    top$tri_unit$tc$regs$0 regs$119(
         .d(regs$119$d),
         .q(regs$119$q),
         .clock(regs$119$clock)
     );
-    top$base_na regs$120(
+    top$tri_unit$tc$regs$0 regs$120(
         .d(regs$120$d),
         .q(regs$120$q),
         .clock(regs$120$clock)
     );
-    top$base_na regs$121(
+    top$tri_unit$tc$regs$0 regs$121(
         .d(regs$121$d),
         .q(regs$121$q),
         .clock(regs$121$clock)
     );
-    top$base_na regs$122(
+    top$tri_unit$tc$regs$0 regs$122(
         .d(regs$122$d),
         .q(regs$122$q),
         .clock(regs$122$clock)
     );
-    top$base_na regs$123(
+    top$tri_unit$tc$regs$0 regs$123(
         .d(regs$123$d),
         .q(regs$123$q),
         .clock(regs$123$clock)
     );
-    top$base_na regs$124(
+    top$tri_unit$tc$regs$0 regs$124(
         .d(regs$124$d),
         .q(regs$124$q),
         .clock(regs$124$clock)
     );
-    top$base_na regs$125(
+    top$tri_unit$tc$regs$0 regs$125(
         .d(regs$125$d),
         .q(regs$125$q),
         .clock(regs$125$clock)
     );
-    top$base_na regs$126(
+    top$tri_unit$tc$regs$0 regs$126(
         .d(regs$126$d),
         .q(regs$126$q),
         .clock(regs$126$clock)
     );
-    top$base_na regs$127(
+    top$tri_unit$tc$regs$0 regs$127(
         .d(regs$127$d),
         .q(regs$127$q),
         .clock(regs$127$clock)
     );
-    top$base_na regs$128(
+    top$tri_unit$tc$regs$0 regs$128(
         .d(regs$128$d),
         .q(regs$128$q),
         .clock(regs$128$clock)
     );
-    top$base_na regs$129(
+    top$tri_unit$tc$regs$0 regs$129(
         .d(regs$129$d),
         .q(regs$129$q),
         .clock(regs$129$clock)
     );
-    top$base_na regs$130(
+    top$tri_unit$tc$regs$0 regs$130(
         .d(regs$130$d),
         .q(regs$130$q),
         .clock(regs$130$clock)
     );
-    top$base_na regs$131(
+    top$tri_unit$tc$regs$0 regs$131(
         .d(regs$131$d),
         .q(regs$131$q),
         .clock(regs$131$clock)
     );
-    top$base_na regs$132(
+    top$tri_unit$tc$regs$0 regs$132(
         .d(regs$132$d),
         .q(regs$132$q),
         .clock(regs$132$clock)
     );
-    top$base_na regs$133(
+    top$tri_unit$tc$regs$0 regs$133(
         .d(regs$133$d),
         .q(regs$133$q),
         .clock(regs$133$clock)
     );
-    top$base_na regs$134(
+    top$tri_unit$tc$regs$0 regs$134(
         .d(regs$134$d),
         .q(regs$134$q),
         .clock(regs$134$clock)
     );
-    top$base_na regs$135(
+    top$tri_unit$tc$regs$0 regs$135(
         .d(regs$135$d),
         .q(regs$135$q),
         .clock(regs$135$clock)
     );
-    top$base_na regs$136(
+    top$tri_unit$tc$regs$0 regs$136(
         .d(regs$136$d),
         .q(regs$136$q),
         .clock(regs$136$clock)
     );
-    top$base_na regs$137(
+    top$tri_unit$tc$regs$0 regs$137(
         .d(regs$137$d),
         .q(regs$137$q),
         .clock(regs$137$clock)
     );
-    top$base_na regs$138(
+    top$tri_unit$tc$regs$0 regs$138(
         .d(regs$138$d),
         .q(regs$138$q),
         .clock(regs$138$clock)
     );
-    top$base_na regs$139(
+    top$tri_unit$tc$regs$0 regs$139(
         .d(regs$139$d),
         .q(regs$139$q),
         .clock(regs$139$clock)
     );
-    top$base_na regs$140(
+    top$tri_unit$tc$regs$0 regs$140(
         .d(regs$140$d),
         .q(regs$140$q),
         .clock(regs$140$clock)
     );
-    top$base_na regs$141(
+    top$tri_unit$tc$regs$0 regs$141(
         .d(regs$141$d),
         .q(regs$141$q),
         .clock(regs$141$clock)
     );
-    top$base_na regs$142(
+    top$tri_unit$tc$regs$0 regs$142(
         .d(regs$142$d),
         .q(regs$142$q),
         .clock(regs$142$clock)
     );
-    top$base_na regs$143(
+    top$tri_unit$tc$regs$0 regs$143(
         .d(regs$143$d),
         .q(regs$143$q),
         .clock(regs$143$clock)
     );
-    top$base_na regs$144(
+    top$tri_unit$tc$regs$0 regs$144(
         .d(regs$144$d),
         .q(regs$144$q),
         .clock(regs$144$clock)
     );
-    top$base_na regs$145(
+    top$tri_unit$tc$regs$0 regs$145(
         .d(regs$145$d),
         .q(regs$145$q),
         .clock(regs$145$clock)
     );
-    top$base_na regs$146(
+    top$tri_unit$tc$regs$0 regs$146(
         .d(regs$146$d),
         .q(regs$146$q),
         .clock(regs$146$clock)
     );
-    top$base_na regs$147(
+    top$tri_unit$tc$regs$0 regs$147(
         .d(regs$147$d),
         .q(regs$147$q),
         .clock(regs$147$clock)
     );
-    top$base_na regs$148(
+    top$tri_unit$tc$regs$0 regs$148(
         .d(regs$148$d),
         .q(regs$148$q),
         .clock(regs$148$clock)
     );
-    top$base_na regs$149(
+    top$tri_unit$tc$regs$0 regs$149(
         .d(regs$149$d),
         .q(regs$149$q),
         .clock(regs$149$clock)
     );
-    top$base_na regs$150(
+    top$tri_unit$tc$regs$0 regs$150(
         .d(regs$150$d),
         .q(regs$150$q),
         .clock(regs$150$clock)
     );
-    top$base_na regs$151(
+    top$tri_unit$tc$regs$0 regs$151(
         .d(regs$151$d),
         .q(regs$151$q),
         .clock(regs$151$clock)
     );
-    top$base_na regs$152(
+    top$tri_unit$tc$regs$0 regs$152(
         .d(regs$152$d),
         .q(regs$152$q),
         .clock(regs$152$clock)
     );
-    top$base_na regs$153(
+    top$tri_unit$tc$regs$0 regs$153(
         .d(regs$153$d),
         .q(regs$153$q),
         .clock(regs$153$clock)
     );
-    top$base_na regs$154(
+    top$tri_unit$tc$regs$0 regs$154(
         .d(regs$154$d),
         .q(regs$154$q),
         .clock(regs$154$clock)
     );
-    top$base_na regs$155(
+    top$tri_unit$tc$regs$0 regs$155(
         .d(regs$155$d),
         .q(regs$155$q),
         .clock(regs$155$clock)
     );
-    top$base_na regs$156(
+    top$tri_unit$tc$regs$0 regs$156(
         .d(regs$156$d),
         .q(regs$156$q),
         .clock(regs$156$clock)
     );
-    top$base_na regs$157(
+    top$tri_unit$tc$regs$0 regs$157(
         .d(regs$157$d),
         .q(regs$157$q),
         .clock(regs$157$clock)
     );
-    top$base_na regs$158(
+    top$tri_unit$tc$regs$0 regs$158(
         .d(regs$158$d),
         .q(regs$158$q),
         .clock(regs$158$clock)
     );
-    top$base_na regs$159(
+    top$tri_unit$tc$regs$0 regs$159(
         .d(regs$159$d),
         .q(regs$159$q),
         .clock(regs$159$clock)
     );
-    top$base_na regs$160(
+    top$tri_unit$tc$regs$0 regs$160(
         .d(regs$160$d),
         .q(regs$160$q),
         .clock(regs$160$clock)
     );
-    top$base_na regs$161(
+    top$tri_unit$tc$regs$0 regs$161(
         .d(regs$161$d),
         .q(regs$161$q),
         .clock(regs$161$clock)
     );
-    top$base_na regs$162(
+    top$tri_unit$tc$regs$0 regs$162(
         .d(regs$162$d),
         .q(regs$162$q),
         .clock(regs$162$clock)
     );
-    top$base_na regs$163(
+    top$tri_unit$tc$regs$0 regs$163(
         .d(regs$163$d),
         .q(regs$163$q),
         .clock(regs$163$clock)
     );
-    top$base_na regs$164(
+    top$tri_unit$tc$regs$0 regs$164(
         .d(regs$164$d),
         .q(regs$164$q),
         .clock(regs$164$clock)
     );
-    top$base_na regs$165(
+    top$tri_unit$tc$regs$0 regs$165(
         .d(regs$165$d),
         .q(regs$165$q),
         .clock(regs$165$clock)
     );
-    top$base_na regs$166(
+    top$tri_unit$tc$regs$0 regs$166(
         .d(regs$166$d),
         .q(regs$166$q),
         .clock(regs$166$clock)
     );
-    top$base_na regs$167(
+    top$tri_unit$tc$regs$0 regs$167(
         .d(regs$167$d),
         .q(regs$167$q),
         .clock(regs$167$clock)
     );
-    top$base_na regs$168(
+    top$tri_unit$tc$regs$0 regs$168(
         .d(regs$168$d),
         .q(regs$168$q),
         .clock(regs$168$clock)
     );
-    top$base_na regs$169(
+    top$tri_unit$tc$regs$0 regs$169(
         .d(regs$169$d),
         .q(regs$169$q),
         .clock(regs$169$clock)
     );
-    top$base_na regs$170(
+    top$tri_unit$tc$regs$0 regs$170(
         .d(regs$170$d),
         .q(regs$170$q),
         .clock(regs$170$clock)
     );
-    top$base_na regs$171(
+    top$tri_unit$tc$regs$0 regs$171(
         .d(regs$171$d),
         .q(regs$171$q),
         .clock(regs$171$clock)
     );
-    top$base_na regs$172(
+    top$tri_unit$tc$regs$0 regs$172(
         .d(regs$172$d),
         .q(regs$172$q),
         .clock(regs$172$clock)
     );
-    top$base_na regs$173(
+    top$tri_unit$tc$regs$0 regs$173(
         .d(regs$173$d),
         .q(regs$173$q),
         .clock(regs$173$clock)
     );
-    top$base_na regs$174(
+    top$tri_unit$tc$regs$0 regs$174(
         .d(regs$174$d),
         .q(regs$174$q),
         .clock(regs$174$clock)
     );
-    top$base_na regs$175(
+    top$tri_unit$tc$regs$0 regs$175(
         .d(regs$175$d),
         .q(regs$175$q),
         .clock(regs$175$clock)
     );
-    top$base_na regs$176(
+    top$tri_unit$tc$regs$0 regs$176(
         .d(regs$176$d),
         .q(regs$176$q),
         .clock(regs$176$clock)
     );
-    top$base_na regs$177(
+    top$tri_unit$tc$regs$0 regs$177(
         .d(regs$177$d),
         .q(regs$177$q),
         .clock(regs$177$clock)
     );
-    top$base_na regs$178(
+    top$tri_unit$tc$regs$0 regs$178(
         .d(regs$178$d),
         .q(regs$178$q),
         .clock(regs$178$clock)
     );
-    top$base_na regs$179(
+    top$tri_unit$tc$regs$0 regs$179(
         .d(regs$179$d),
         .q(regs$179$q),
         .clock(regs$179$clock)
     );
-    top$base_na regs$180(
+    top$tri_unit$tc$regs$0 regs$180(
         .d(regs$180$d),
         .q(regs$180$q),
         .clock(regs$180$clock)
     );
-    top$base_na regs$181(
+    top$tri_unit$tc$regs$0 regs$181(
         .d(regs$181$d),
         .q(regs$181$q),
         .clock(regs$181$clock)
     );
-    top$base_na regs$182(
+    top$tri_unit$tc$regs$0 regs$182(
         .d(regs$182$d),
         .q(regs$182$q),
         .clock(regs$182$clock)
     );
-    top$base_na regs$183(
+    top$tri_unit$tc$regs$0 regs$183(
         .d(regs$183$d),
         .q(regs$183$q),
         .clock(regs$183$clock)
     );
-    top$base_na regs$184(
+    top$tri_unit$tc$regs$0 regs$184(
         .d(regs$184$d),
         .q(regs$184$q),
         .clock(regs$184$clock)
     );
-    top$base_na regs$185(
+    top$tri_unit$tc$regs$0 regs$185(
         .d(regs$185$d),
         .q(regs$185$q),
         .clock(regs$185$clock)
     );
-    top$base_na regs$186(
+    top$tri_unit$tc$regs$0 regs$186(
         .d(regs$186$d),
         .q(regs$186$q),
         .clock(regs$186$clock)
     );
-    top$base_na regs$187(
+    top$tri_unit$tc$regs$0 regs$187(
         .d(regs$187$d),
         .q(regs$187$q),
         .clock(regs$187$clock)
     );
-    top$base_na regs$188(
+    top$tri_unit$tc$regs$0 regs$188(
         .d(regs$188$d),
         .q(regs$188$q),
         .clock(regs$188$clock)
     );
-    top$base_na regs$189(
+    top$tri_unit$tc$regs$0 regs$189(
         .d(regs$189$d),
         .q(regs$189$q),
         .clock(regs$189$clock)
     );
-    top$base_na regs$190(
+    top$tri_unit$tc$regs$0 regs$190(
         .d(regs$190$d),
         .q(regs$190$q),
         .clock(regs$190$clock)
     );
-    top$base_na regs$191(
+    top$tri_unit$tc$regs$0 regs$191(
         .d(regs$191$d),
         .q(regs$191$q),
         .clock(regs$191$clock)
     );
-    top$base_na regs$192(
+    top$tri_unit$tc$regs$0 regs$192(
         .d(regs$192$d),
         .q(regs$192$q),
         .clock(regs$192$clock)
     );
-    top$base_na regs$193(
+    top$tri_unit$tc$regs$0 regs$193(
         .d(regs$193$d),
         .q(regs$193$q),
         .clock(regs$193$clock)
     );
-    top$base_na regs$194(
+    top$tri_unit$tc$regs$0 regs$194(
         .d(regs$194$d),
         .q(regs$194$q),
         .clock(regs$194$clock)
     );
-    top$base_na regs$195(
+    top$tri_unit$tc$regs$0 regs$195(
         .d(regs$195$d),
         .q(regs$195$q),
         .clock(regs$195$clock)
     );
-    top$base_na regs$196(
+    top$tri_unit$tc$regs$0 regs$196(
         .d(regs$196$d),
         .q(regs$196$q),
         .clock(regs$196$clock)
     );
-    top$base_na regs$197(
+    top$tri_unit$tc$regs$0 regs$197(
         .d(regs$197$d),
         .q(regs$197$q),
         .clock(regs$197$clock)
     );
-    top$base_na regs$198(
+    top$tri_unit$tc$regs$0 regs$198(
         .d(regs$198$d),
         .q(regs$198$q),
         .clock(regs$198$clock)
     );
-    top$base_na regs$199(
+    top$tri_unit$tc$regs$0 regs$199(
         .d(regs$199$d),
         .q(regs$199$q),
         .clock(regs$199$clock)
     );
-    top$base_na regs$200(
+    top$tri_unit$tc$regs$0 regs$200(
         .d(regs$200$d),
         .q(regs$200$q),
         .clock(regs$200$clock)
     );
-    top$base_na regs$201(
+    top$tri_unit$tc$regs$0 regs$201(
         .d(regs$201$d),
         .q(regs$201$q),
         .clock(regs$201$clock)
     );
-    top$base_na regs$202(
+    top$tri_unit$tc$regs$0 regs$202(
         .d(regs$202$d),
         .q(regs$202$q),
         .clock(regs$202$clock)
     );
-    top$base_na regs$203(
+    top$tri_unit$tc$regs$0 regs$203(
         .d(regs$203$d),
         .q(regs$203$q),
         .clock(regs$203$clock)
     );
-    top$base_na regs$204(
+    top$tri_unit$tc$regs$0 regs$204(
         .d(regs$204$d),
         .q(regs$204$q),
         .clock(regs$204$clock)
     );
-    top$base_na regs$205(
+    top$tri_unit$tc$regs$0 regs$205(
         .d(regs$205$d),
         .q(regs$205$q),
         .clock(regs$205$clock)
     );
-    top$base_na regs$206(
+    top$tri_unit$tc$regs$0 regs$206(
         .d(regs$206$d),
         .q(regs$206$q),
         .clock(regs$206$clock)
     );
-    top$base_na regs$207(
+    top$tri_unit$tc$regs$0 regs$207(
         .d(regs$207$d),
         .q(regs$207$q),
         .clock(regs$207$clock)
     );
-    top$base_na regs$208(
+    top$tri_unit$tc$regs$0 regs$208(
         .d(regs$208$d),
         .q(regs$208$q),
         .clock(regs$208$clock)
     );
-    top$base_na regs$209(
+    top$tri_unit$tc$regs$0 regs$209(
         .d(regs$209$d),
         .q(regs$209$q),
         .clock(regs$209$clock)
     );
-    top$base_na regs$210(
+    top$tri_unit$tc$regs$0 regs$210(
         .d(regs$210$d),
         .q(regs$210$q),
         .clock(regs$210$clock)
     );
-    top$base_na regs$211(
+    top$tri_unit$tc$regs$0 regs$211(
         .d(regs$211$d),
         .q(regs$211$q),
         .clock(regs$211$clock)
     );
-    top$base_na regs$212(
+    top$tri_unit$tc$regs$0 regs$212(
         .d(regs$212$d),
         .q(regs$212$q),
         .clock(regs$212$clock)
     );
-    top$base_na regs$213(
+    top$tri_unit$tc$regs$0 regs$213(
         .d(regs$213$d),
         .q(regs$213$q),
         .clock(regs$213$clock)
     );
-    top$base_na regs$214(
+    top$tri_unit$tc$regs$0 regs$214(
         .d(regs$214$d),
         .q(regs$214$q),
         .clock(regs$214$clock)
     );
-    top$base_na regs$215(
+    top$tri_unit$tc$regs$0 regs$215(
         .d(regs$215$d),
         .q(regs$215$q),
         .clock(regs$215$clock)
     );
-    top$base_na regs$216(
+    top$tri_unit$tc$regs$0 regs$216(
         .d(regs$216$d),
         .q(regs$216$q),
         .clock(regs$216$clock)
     );
-    top$base_na regs$217(
+    top$tri_unit$tc$regs$0 regs$217(
         .d(regs$217$d),
         .q(regs$217$q),
         .clock(regs$217$clock)
     );
-    top$base_na regs$218(
+    top$tri_unit$tc$regs$0 regs$218(
         .d(regs$218$d),
         .q(regs$218$q),
         .clock(regs$218$clock)
     );
-    top$base_na regs$219(
+    top$tri_unit$tc$regs$0 regs$219(
         .d(regs$219$d),
         .q(regs$219$q),
         .clock(regs$219$clock)
     );
-    top$base_na regs$220(
+    top$tri_unit$tc$regs$0 regs$220(
         .d(regs$220$d),
         .q(regs$220$q),
         .clock(regs$220$clock)
     );
-    top$base_na regs$221(
+    top$tri_unit$tc$regs$0 regs$221(
         .d(regs$221$d),
         .q(regs$221$q),
         .clock(regs$221$clock)
     );
-    top$base_na regs$222(
+    top$tri_unit$tc$regs$0 regs$222(
         .d(regs$222$d),
         .q(regs$222$q),
         .clock(regs$222$clock)
     );
-    top$base_na regs$223(
+    top$tri_unit$tc$regs$0 regs$223(
         .d(regs$223$d),
         .q(regs$223$q),
         .clock(regs$223$clock)
     );
-    top$base_na regs$224(
+    top$tri_unit$tc$regs$0 regs$224(
         .d(regs$224$d),
         .q(regs$224$q),
         .clock(regs$224$clock)
     );
-    top$base_na regs$225(
+    top$tri_unit$tc$regs$0 regs$225(
         .d(regs$225$d),
         .q(regs$225$q),
         .clock(regs$225$clock)
     );
-    top$base_na regs$226(
+    top$tri_unit$tc$regs$0 regs$226(
         .d(regs$226$d),
         .q(regs$226$q),
         .clock(regs$226$clock)
     );
-    top$base_na regs$227(
+    top$tri_unit$tc$regs$0 regs$227(
         .d(regs$227$d),
         .q(regs$227$q),
         .clock(regs$227$clock)
     );
-    top$base_na regs$228(
+    top$tri_unit$tc$regs$0 regs$228(
         .d(regs$228$d),
         .q(regs$228$q),
         .clock(regs$228$clock)
     );
-    top$base_na regs$229(
+    top$tri_unit$tc$regs$0 regs$229(
         .d(regs$229$d),
         .q(regs$229$q),
         .clock(regs$229$clock)
     );
-    top$base_na regs$230(
+    top$tri_unit$tc$regs$0 regs$230(
         .d(regs$230$d),
         .q(regs$230$q),
         .clock(regs$230$clock)
     );
-    top$base_na regs$231(
+    top$tri_unit$tc$regs$0 regs$231(
         .d(regs$231$d),
         .q(regs$231$q),
         .clock(regs$231$clock)
     );
-    top$base_na regs$232(
+    top$tri_unit$tc$regs$0 regs$232(
         .d(regs$232$d),
         .q(regs$232$q),
         .clock(regs$232$clock)
     );
-    top$base_na regs$233(
+    top$tri_unit$tc$regs$0 regs$233(
         .d(regs$233$d),
         .q(regs$233$q),
         .clock(regs$233$clock)
     );
-    top$base_na regs$234(
+    top$tri_unit$tc$regs$0 regs$234(
         .d(regs$234$d),
         .q(regs$234$q),
         .clock(regs$234$clock)
     );
-    top$base_na regs$235(
+    top$tri_unit$tc$regs$0 regs$235(
         .d(regs$235$d),
         .q(regs$235$q),
         .clock(regs$235$clock)
     );
-    top$base_na regs$236(
+    top$tri_unit$tc$regs$0 regs$236(
         .d(regs$236$d),
         .q(regs$236$q),
         .clock(regs$236$clock)
     );
-    top$base_na regs$237(
+    top$tri_unit$tc$regs$0 regs$237(
         .d(regs$237$d),
         .q(regs$237$q),
         .clock(regs$237$clock)
     );
-    top$base_na regs$238(
+    top$tri_unit$tc$regs$0 regs$238(
         .d(regs$238$d),
         .q(regs$238$q),
         .clock(regs$238$clock)
     );
-    top$base_na regs$239(
+    top$tri_unit$tc$regs$0 regs$239(
         .d(regs$239$d),
         .q(regs$239$q),
         .clock(regs$239$clock)
     );
-    top$base_na regs$240(
+    top$tri_unit$tc$regs$0 regs$240(
         .d(regs$240$d),
         .q(regs$240$q),
         .clock(regs$240$clock)
     );
-    top$base_na regs$241(
+    top$tri_unit$tc$regs$0 regs$241(
         .d(regs$241$d),
         .q(regs$241$q),
         .clock(regs$241$clock)
     );
-    top$base_na regs$242(
+    top$tri_unit$tc$regs$0 regs$242(
         .d(regs$242$d),
         .q(regs$242$q),
         .clock(regs$242$clock)
     );
-    top$base_na regs$243(
+    top$tri_unit$tc$regs$0 regs$243(
         .d(regs$243$d),
         .q(regs$243$q),
         .clock(regs$243$clock)
     );
-    top$base_na regs$244(
+    top$tri_unit$tc$regs$0 regs$244(
         .d(regs$244$d),
         .q(regs$244$q),
         .clock(regs$244$clock)
     );
-    top$base_na regs$245(
+    top$tri_unit$tc$regs$0 regs$245(
         .d(regs$245$d),
         .q(regs$245$q),
         .clock(regs$245$clock)
     );
-    top$base_na regs$246(
+    top$tri_unit$tc$regs$0 regs$246(
         .d(regs$246$d),
         .q(regs$246$q),
         .clock(regs$246$clock)
     );
-    top$base_na regs$247(
+    top$tri_unit$tc$regs$0 regs$247(
         .d(regs$247$d),
         .q(regs$247$q),
         .clock(regs$247$clock)
     );
-    top$base_na regs$248(
+    top$tri_unit$tc$regs$0 regs$248(
         .d(regs$248$d),
         .q(regs$248$q),
         .clock(regs$248$clock)
     );
-    top$base_na regs$249(
+    top$tri_unit$tc$regs$0 regs$249(
         .d(regs$249$d),
         .q(regs$249$q),
         .clock(regs$249$clock)
     );
-    top$base_na regs$250(
+    top$tri_unit$tc$regs$0 regs$250(
         .d(regs$250$d),
         .q(regs$250$q),
         .clock(regs$250$clock)
     );
-    top$base_na regs$251(
+    top$tri_unit$tc$regs$0 regs$251(
         .d(regs$251$d),
         .q(regs$251$q),
         .clock(regs$251$clock)
     );
-    top$base_na regs$252(
+    top$tri_unit$tc$regs$0 regs$252(
         .d(regs$252$d),
         .q(regs$252$q),
         .clock(regs$252$clock)
     );
-    top$base_na regs$253(
+    top$tri_unit$tc$regs$0 regs$253(
         .d(regs$253$d),
         .q(regs$253$q),
         .clock(regs$253$clock)
     );
-    top$base_na regs$254(
+    top$tri_unit$tc$regs$0 regs$254(
         .d(regs$254$d),
         .q(regs$254$q),
         .clock(regs$254$clock)
     );
-    top$base_na regs$255(
+    top$tri_unit$tc$regs$0 regs$255(
         .d(regs$255$d),
         .q(regs$255$q),
         .clock(regs$255$clock)
     );
-    top$base_na regs$256(
+    top$tri_unit$tc$regs$0 regs$256(
         .d(regs$256$d),
         .q(regs$256$q),
         .clock(regs$256$clock)
     );
-    top$base_na regs$257(
+    top$tri_unit$tc$regs$0 regs$257(
         .d(regs$257$d),
         .q(regs$257$q),
         .clock(regs$257$clock)
     );
-    top$base_na regs$258(
+    top$tri_unit$tc$regs$0 regs$258(
         .d(regs$258$d),
         .q(regs$258$q),
         .clock(regs$258$clock)
     );
-    top$base_na regs$259(
+    top$tri_unit$tc$regs$0 regs$259(
         .d(regs$259$d),
         .q(regs$259$q),
         .clock(regs$259$clock)
     );
-    top$base_na regs$260(
+    top$tri_unit$tc$regs$0 regs$260(
         .d(regs$260$d),
         .q(regs$260$q),
         .clock(regs$260$clock)
     );
-    top$base_na regs$261(
+    top$tri_unit$tc$regs$0 regs$261(
         .d(regs$261$d),
         .q(regs$261$q),
         .clock(regs$261$clock)
     );
-    top$base_na regs$262(
+    top$tri_unit$tc$regs$0 regs$262(
         .d(regs$262$d),
         .q(regs$262$q),
         .clock(regs$262$clock)
     );
-    top$base_na regs$263(
+    top$tri_unit$tc$regs$0 regs$263(
         .d(regs$263$d),
         .q(regs$263$q),
         .clock(regs$263$clock)
     );
-    top$base_na regs$264(
+    top$tri_unit$tc$regs$0 regs$264(
         .d(regs$264$d),
         .q(regs$264$q),
         .clock(regs$264$clock)
     );
-    top$base_na regs$265(
+    top$tri_unit$tc$regs$0 regs$265(
         .d(regs$265$d),
         .q(regs$265$q),
         .clock(regs$265$clock)
     );
-    top$base_na regs$266(
+    top$tri_unit$tc$regs$0 regs$266(
         .d(regs$266$d),
         .q(regs$266$q),
         .clock(regs$266$clock)
     );
-    top$base_na regs$267(
+    top$tri_unit$tc$regs$0 regs$267(
         .d(regs$267$d),
         .q(regs$267$q),
         .clock(regs$267$clock)
     );
-    top$base_na regs$268(
+    top$tri_unit$tc$regs$0 regs$268(
         .d(regs$268$d),
         .q(regs$268$q),
         .clock(regs$268$clock)
     );
-    top$base_na regs$269(
+    top$tri_unit$tc$regs$0 regs$269(
         .d(regs$269$d),
         .q(regs$269$q),
         .clock(regs$269$clock)
     );
-    top$base_na regs$270(
+    top$tri_unit$tc$regs$0 regs$270(
         .d(regs$270$d),
         .q(regs$270$q),
         .clock(regs$270$clock)
     );
-    top$base_na regs$271(
+    top$tri_unit$tc$regs$0 regs$271(
         .d(regs$271$d),
         .q(regs$271$q),
         .clock(regs$271$clock)
     );
-    top$base_na regs$272(
+    top$tri_unit$tc$regs$0 regs$272(
         .d(regs$272$d),
         .q(regs$272$q),
         .clock(regs$272$clock)
     );
-    top$base_na regs$273(
+    top$tri_unit$tc$regs$0 regs$273(
         .d(regs$273$d),
         .q(regs$273$q),
         .clock(regs$273$clock)
     );
-    top$base_na regs$274(
+    top$tri_unit$tc$regs$0 regs$274(
         .d(regs$274$d),
         .q(regs$274$q),
         .clock(regs$274$clock)
     );
-    top$base_na regs$275(
+    top$tri_unit$tc$regs$0 regs$275(
         .d(regs$275$d),
         .q(regs$275$q),
         .clock(regs$275$clock)
     );
-    top$base_na regs$276(
+    top$tri_unit$tc$regs$0 regs$276(
         .d(regs$276$d),
         .q(regs$276$q),
         .clock(regs$276$clock)
     );
-    top$base_na regs$277(
+    top$tri_unit$tc$regs$0 regs$277(
         .d(regs$277$d),
         .q(regs$277$q),
         .clock(regs$277$clock)
     );
-    top$base_na regs$278(
+    top$tri_unit$tc$regs$0 regs$278(
         .d(regs$278$d),
         .q(regs$278$q),
         .clock(regs$278$clock)
     );
-    top$base_na regs$279(
+    top$tri_unit$tc$regs$0 regs$279(
         .d(regs$279$d),
         .q(regs$279$q),
         .clock(regs$279$clock)
     );
-    top$base_na regs$280(
+    top$tri_unit$tc$regs$0 regs$280(
         .d(regs$280$d),
         .q(regs$280$q),
         .clock(regs$280$clock)
     );
-    top$base_na regs$281(
+    top$tri_unit$tc$regs$0 regs$281(
         .d(regs$281$d),
         .q(regs$281$q),
         .clock(regs$281$clock)
     );
-    top$base_na regs$282(
+    top$tri_unit$tc$regs$0 regs$282(
         .d(regs$282$d),
         .q(regs$282$q),
         .clock(regs$282$clock)
     );
-    top$base_na regs$283(
+    top$tri_unit$tc$regs$0 regs$283(
         .d(regs$283$d),
         .q(regs$283$q),
         .clock(regs$283$clock)
     );
-    top$base_na regs$284(
+    top$tri_unit$tc$regs$0 regs$284(
         .d(regs$284$d),
         .q(regs$284$q),
         .clock(regs$284$clock)
     );
-    top$base_na regs$285(
+    top$tri_unit$tc$regs$0 regs$285(
         .d(regs$285$d),
         .q(regs$285$q),
         .clock(regs$285$clock)
     );
-    top$base_na regs$286(
+    top$tri_unit$tc$regs$0 regs$286(
         .d(regs$286$d),
         .q(regs$286$q),
         .clock(regs$286$clock)
     );
-    top$base_na regs$287(
+    top$tri_unit$tc$regs$0 regs$287(
         .d(regs$287$d),
         .q(regs$287$q),
         .clock(regs$287$clock)
     );
-    top$base_na regs$288(
+    top$tri_unit$tc$regs$0 regs$288(
         .d(regs$288$d),
         .q(regs$288$q),
         .clock(regs$288$clock)
     );
-    top$base_na regs$289(
+    top$tri_unit$tc$regs$0 regs$289(
         .d(regs$289$d),
         .q(regs$289$q),
         .clock(regs$289$clock)
     );
-    top$base_na regs$290(
+    top$tri_unit$tc$regs$0 regs$290(
         .d(regs$290$d),
         .q(regs$290$q),
         .clock(regs$290$clock)
     );
-    top$base_na regs$291(
+    top$tri_unit$tc$regs$0 regs$291(
         .d(regs$291$d),
         .q(regs$291$q),
         .clock(regs$291$clock)
     );
-    top$base_na regs$292(
+    top$tri_unit$tc$regs$0 regs$292(
         .d(regs$292$d),
         .q(regs$292$q),
         .clock(regs$292$clock)
     );
-    top$base_na regs$293(
+    top$tri_unit$tc$regs$0 regs$293(
         .d(regs$293$d),
         .q(regs$293$q),
         .clock(regs$293$clock)
     );
-    top$base_na regs$294(
+    top$tri_unit$tc$regs$0 regs$294(
         .d(regs$294$d),
         .q(regs$294$q),
         .clock(regs$294$clock)
     );
-    top$base_na regs$295(
+    top$tri_unit$tc$regs$0 regs$295(
         .d(regs$295$d),
         .q(regs$295$q),
         .clock(regs$295$clock)
     );
-    top$base_na regs$296(
+    top$tri_unit$tc$regs$0 regs$296(
         .d(regs$296$d),
         .q(regs$296$q),
         .clock(regs$296$clock)
     );
-    top$base_na regs$297(
+    top$tri_unit$tc$regs$0 regs$297(
         .d(regs$297$d),
         .q(regs$297$q),
         .clock(regs$297$clock)
     );
-    top$base_na regs$298(
+    top$tri_unit$tc$regs$0 regs$298(
         .d(regs$298$d),
         .q(regs$298$q),
         .clock(regs$298$clock)
     );
-    top$base_na regs$299(
+    top$tri_unit$tc$regs$0 regs$299(
         .d(regs$299$d),
         .q(regs$299$q),
         .clock(regs$299$clock)
     );
-    top$base_na regs$300(
+    top$tri_unit$tc$regs$0 regs$300(
         .d(regs$300$d),
         .q(regs$300$q),
         .clock(regs$300$clock)
     );
-    top$base_na regs$301(
+    top$tri_unit$tc$regs$0 regs$301(
         .d(regs$301$d),
         .q(regs$301$q),
         .clock(regs$301$clock)
     );
-    top$base_na regs$302(
+    top$tri_unit$tc$regs$0 regs$302(
         .d(regs$302$d),
         .q(regs$302$q),
         .clock(regs$302$clock)
     );
-    top$base_na regs$303(
+    top$tri_unit$tc$regs$0 regs$303(
         .d(regs$303$d),
         .q(regs$303$q),
         .clock(regs$303$clock)
     );
-    top$base_na regs$304(
+    top$tri_unit$tc$regs$0 regs$304(
         .d(regs$304$d),
         .q(regs$304$q),
         .clock(regs$304$clock)
     );
-    top$base_na regs$305(
+    top$tri_unit$tc$regs$0 regs$305(
         .d(regs$305$d),
         .q(regs$305$q),
         .clock(regs$305$clock)
     );
-    top$base_na regs$306(
+    top$tri_unit$tc$regs$0 regs$306(
         .d(regs$306$d),
         .q(regs$306$q),
         .clock(regs$306$clock)
     );
-    top$base_na regs$307(
+    top$tri_unit$tc$regs$0 regs$307(
         .d(regs$307$d),
         .q(regs$307$q),
         .clock(regs$307$clock)
     );
-    top$base_na regs$308(
+    top$tri_unit$tc$regs$0 regs$308(
         .d(regs$308$d),
         .q(regs$308$q),
         .clock(regs$308$clock)
     );
-    top$base_na regs$309(
+    top$tri_unit$tc$regs$0 regs$309(
         .d(regs$309$d),
         .q(regs$309$q),
         .clock(regs$309$clock)
     );
-    top$base_na regs$310(
+    top$tri_unit$tc$regs$0 regs$310(
         .d(regs$310$d),
         .q(regs$310$q),
         .clock(regs$310$clock)
     );
-    top$base_na regs$311(
+    top$tri_unit$tc$regs$0 regs$311(
         .d(regs$311$d),
         .q(regs$311$q),
         .clock(regs$311$clock)
     );
-    top$base_na regs$312(
+    top$tri_unit$tc$regs$0 regs$312(
         .d(regs$312$d),
         .q(regs$312$q),
         .clock(regs$312$clock)
     );
-    top$base_na regs$313(
+    top$tri_unit$tc$regs$0 regs$313(
         .d(regs$313$d),
         .q(regs$313$q),
         .clock(regs$313$clock)
     );
-    top$base_na regs$314(
+    top$tri_unit$tc$regs$0 regs$314(
         .d(regs$314$d),
         .q(regs$314$q),
         .clock(regs$314$clock)
     );
-    top$base_na regs$315(
+    top$tri_unit$tc$regs$0 regs$315(
         .d(regs$315$d),
         .q(regs$315$q),
         .clock(regs$315$clock)
     );
-    top$base_na regs$316(
+    top$tri_unit$tc$regs$0 regs$316(
         .d(regs$316$d),
         .q(regs$316$q),
         .clock(regs$316$clock)
     );
-    top$base_na regs$317(
+    top$tri_unit$tc$regs$0 regs$317(
         .d(regs$317$d),
         .q(regs$317$q),
         .clock(regs$317$clock)
     );
-    top$base_na regs$318(
+    top$tri_unit$tc$regs$0 regs$318(
         .d(regs$318$d),
         .q(regs$318$q),
         .clock(regs$318$clock)
     );
-    top$base_na regs$319(
+    top$tri_unit$tc$regs$0 regs$319(
         .d(regs$319$d),
         .q(regs$319$q),
         .clock(regs$319$clock)
     );
-    top$base_na regs$320(
+    top$tri_unit$tc$regs$0 regs$320(
         .d(regs$320$d),
         .q(regs$320$q),
         .clock(regs$320$clock)
     );
-    top$base_na regs$321(
+    top$tri_unit$tc$regs$0 regs$321(
         .d(regs$321$d),
         .q(regs$321$q),
         .clock(regs$321$clock)
     );
-    top$base_na regs$322(
+    top$tri_unit$tc$regs$0 regs$322(
         .d(regs$322$d),
         .q(regs$322$q),
         .clock(regs$322$clock)
     );
-    top$base_na regs$323(
+    top$tri_unit$tc$regs$0 regs$323(
         .d(regs$323$d),
         .q(regs$323$q),
         .clock(regs$323$clock)
     );
-    top$base_na regs$324(
+    top$tri_unit$tc$regs$0 regs$324(
         .d(regs$324$d),
         .q(regs$324$q),
         .clock(regs$324$clock)
     );
-    top$base_na regs$325(
+    top$tri_unit$tc$regs$0 regs$325(
         .d(regs$325$d),
         .q(regs$325$q),
         .clock(regs$325$clock)
     );
-    top$base_na regs$326(
+    top$tri_unit$tc$regs$0 regs$326(
         .d(regs$326$d),
         .q(regs$326$q),
         .clock(regs$326$clock)
     );
-    top$base_na regs$327(
+    top$tri_unit$tc$regs$0 regs$327(
         .d(regs$327$d),
         .q(regs$327$q),
         .clock(regs$327$clock)
     );
-    top$base_na regs$328(
+    top$tri_unit$tc$regs$0 regs$328(
         .d(regs$328$d),
         .q(regs$328$q),
         .clock(regs$328$clock)
     );
-    top$base_na regs$329(
+    top$tri_unit$tc$regs$0 regs$329(
         .d(regs$329$d),
         .q(regs$329$q),
         .clock(regs$329$clock)
     );
-    top$base_na regs$330(
+    top$tri_unit$tc$regs$0 regs$330(
         .d(regs$330$d),
         .q(regs$330$q),
         .clock(regs$330$clock)
     );
-    top$base_na regs$331(
+    top$tri_unit$tc$regs$0 regs$331(
         .d(regs$331$d),
         .q(regs$331$q),
         .clock(regs$331$clock)
     );
-    top$base_na regs$332(
+    top$tri_unit$tc$regs$0 regs$332(
         .d(regs$332$d),
         .q(regs$332$q),
         .clock(regs$332$clock)
     );
-    top$base_na regs$333(
+    top$tri_unit$tc$regs$0 regs$333(
         .d(regs$333$d),
         .q(regs$333$q),
         .clock(regs$333$clock)
     );
-    top$base_na regs$334(
+    top$tri_unit$tc$regs$0 regs$334(
         .d(regs$334$d),
         .q(regs$334$q),
         .clock(regs$334$clock)
     );
-    top$base_na regs$335(
+    top$tri_unit$tc$regs$0 regs$335(
         .d(regs$335$d),
         .q(regs$335$q),
         .clock(regs$335$clock)
     );
-    top$base_na regs$336(
+    top$tri_unit$tc$regs$0 regs$336(
         .d(regs$336$d),
         .q(regs$336$q),
         .clock(regs$336$clock)
     );
-    top$base_na regs$337(
+    top$tri_unit$tc$regs$0 regs$337(
         .d(regs$337$d),
         .q(regs$337$q),
         .clock(regs$337$clock)
     );
-    top$base_na regs$338(
+    top$tri_unit$tc$regs$0 regs$338(
         .d(regs$338$d),
         .q(regs$338$q),
         .clock(regs$338$clock)
     );
-    top$base_na regs$339(
+    top$tri_unit$tc$regs$0 regs$339(
         .d(regs$339$d),
         .q(regs$339$q),
         .clock(regs$339$clock)
     );
-    top$base_na regs$340(
+    top$tri_unit$tc$regs$0 regs$340(
         .d(regs$340$d),
         .q(regs$340$q),
         .clock(regs$340$clock)
     );
-    top$base_na regs$341(
+    top$tri_unit$tc$regs$0 regs$341(
         .d(regs$341$d),
         .q(regs$341$q),
         .clock(regs$341$clock)
     );
-    top$base_na regs$342(
+    top$tri_unit$tc$regs$0 regs$342(
         .d(regs$342$d),
         .q(regs$342$q),
         .clock(regs$342$clock)
     );
-    top$base_na regs$343(
+    top$tri_unit$tc$regs$0 regs$343(
         .d(regs$343$d),
         .q(regs$343$q),
         .clock(regs$343$clock)
     );
-    top$base_na regs$344(
+    top$tri_unit$tc$regs$0 regs$344(
         .d(regs$344$d),
         .q(regs$344$q),
         .clock(regs$344$clock)
     );
-    top$base_na regs$345(
+    top$tri_unit$tc$regs$0 regs$345(
         .d(regs$345$d),
         .q(regs$345$q),
         .clock(regs$345$clock)
     );
-    top$base_na regs$346(
+    top$tri_unit$tc$regs$0 regs$346(
         .d(regs$346$d),
         .q(regs$346$q),
         .clock(regs$346$clock)
     );
-    top$base_na regs$347(
+    top$tri_unit$tc$regs$0 regs$347(
         .d(regs$347$d),
         .q(regs$347$q),
         .clock(regs$347$clock)
     );
-    top$base_na regs$348(
+    top$tri_unit$tc$regs$0 regs$348(
         .d(regs$348$d),
         .q(regs$348$q),
         .clock(regs$348$clock)
     );
-    top$base_na regs$349(
+    top$tri_unit$tc$regs$0 regs$349(
         .d(regs$349$d),
         .q(regs$349$q),
         .clock(regs$349$clock)
     );
-    top$base_na regs$350(
+    top$tri_unit$tc$regs$0 regs$350(
         .d(regs$350$d),
         .q(regs$350$q),
         .clock(regs$350$clock)
     );
-    top$base_na regs$351(
+    top$tri_unit$tc$regs$0 regs$351(
         .d(regs$351$d),
         .q(regs$351$q),
         .clock(regs$351$clock)
     );
-    top$base_na regs$352(
+    top$tri_unit$tc$regs$0 regs$352(
         .d(regs$352$d),
         .q(regs$352$q),
         .clock(regs$352$clock)
     );
-    top$base_na regs$353(
+    top$tri_unit$tc$regs$0 regs$353(
         .d(regs$353$d),
         .q(regs$353$q),
         .clock(regs$353$clock)
     );
-    top$base_na regs$354(
+    top$tri_unit$tc$regs$0 regs$354(
         .d(regs$354$d),
         .q(regs$354$q),
         .clock(regs$354$clock)
     );
-    top$base_na regs$355(
+    top$tri_unit$tc$regs$0 regs$355(
         .d(regs$355$d),
         .q(regs$355$q),
         .clock(regs$355$clock)
     );
-    top$base_na regs$356(
+    top$tri_unit$tc$regs$0 regs$356(
         .d(regs$356$d),
         .q(regs$356$q),
         .clock(regs$356$clock)
     );
-    top$base_na regs$357(
+    top$tri_unit$tc$regs$0 regs$357(
         .d(regs$357$d),
         .q(regs$357$q),
         .clock(regs$357$clock)
     );
-    top$base_na regs$358(
+    top$tri_unit$tc$regs$0 regs$358(
         .d(regs$358$d),
         .q(regs$358$q),
         .clock(regs$358$clock)
     );
-    top$base_na regs$359(
+    top$tri_unit$tc$regs$0 regs$359(
         .d(regs$359$d),
         .q(regs$359$q),
         .clock(regs$359$clock)
     );
-    top$base_na regs$360(
+    top$tri_unit$tc$regs$0 regs$360(
         .d(regs$360$d),
         .q(regs$360$q),
         .clock(regs$360$clock)
     );
-    top$base_na regs$361(
+    top$tri_unit$tc$regs$0 regs$361(
         .d(regs$361$d),
         .q(regs$361$q),
         .clock(regs$361$clock)
     );
-    top$base_na regs$362(
+    top$tri_unit$tc$regs$0 regs$362(
         .d(regs$362$d),
         .q(regs$362$q),
         .clock(regs$362$clock)
     );
-    top$base_na regs$363(
+    top$tri_unit$tc$regs$0 regs$363(
         .d(regs$363$d),
         .q(regs$363$q),
         .clock(regs$363$clock)
     );
-    top$base_na regs$364(
+    top$tri_unit$tc$regs$0 regs$364(
         .d(regs$364$d),
         .q(regs$364$q),
         .clock(regs$364$clock)
     );
-    top$base_na regs$365(
+    top$tri_unit$tc$regs$0 regs$365(
         .d(regs$365$d),
         .q(regs$365$q),
         .clock(regs$365$clock)
     );
-    top$base_na regs$366(
+    top$tri_unit$tc$regs$0 regs$366(
         .d(regs$366$d),
         .q(regs$366$q),
         .clock(regs$366$clock)
     );
-    top$base_na regs$367(
+    top$tri_unit$tc$regs$0 regs$367(
         .d(regs$367$d),
         .q(regs$367$q),
         .clock(regs$367$clock)
     );
-    top$base_na regs$368(
+    top$tri_unit$tc$regs$0 regs$368(
         .d(regs$368$d),
         .q(regs$368$q),
         .clock(regs$368$clock)
     );
-    top$base_na regs$369(
+    top$tri_unit$tc$regs$0 regs$369(
         .d(regs$369$d),
         .q(regs$369$q),
         .clock(regs$369$clock)
     );
-    top$base_na regs$370(
+    top$tri_unit$tc$regs$0 regs$370(
         .d(regs$370$d),
         .q(regs$370$q),
         .clock(regs$370$clock)
     );
-    top$base_na regs$371(
+    top$tri_unit$tc$regs$0 regs$371(
         .d(regs$371$d),
         .q(regs$371$q),
         .clock(regs$371$clock)
     );
-    top$base_na regs$372(
+    top$tri_unit$tc$regs$0 regs$372(
         .d(regs$372$d),
         .q(regs$372$q),
         .clock(regs$372$clock)
     );
-    top$base_na regs$373(
+    top$tri_unit$tc$regs$0 regs$373(
         .d(regs$373$d),
         .q(regs$373$q),
         .clock(regs$373$clock)
     );
-    top$base_na regs$374(
+    top$tri_unit$tc$regs$0 regs$374(
         .d(regs$374$d),
         .q(regs$374$q),
         .clock(regs$374$clock)
     );
-    top$base_na regs$375(
+    top$tri_unit$tc$regs$0 regs$375(
         .d(regs$375$d),
         .q(regs$375$q),
         .clock(regs$375$clock)
     );
-    top$base_na regs$376(
+    top$tri_unit$tc$regs$0 regs$376(
         .d(regs$376$d),
         .q(regs$376$q),
         .clock(regs$376$clock)
     );
-    top$base_na regs$377(
+    top$tri_unit$tc$regs$0 regs$377(
         .d(regs$377$d),
         .q(regs$377$q),
         .clock(regs$377$clock)
     );
-    top$base_na regs$378(
+    top$tri_unit$tc$regs$0 regs$378(
         .d(regs$378$d),
         .q(regs$378$q),
         .clock(regs$378$clock)
     );
-    top$base_na regs$379(
+    top$tri_unit$tc$regs$0 regs$379(
         .d(regs$379$d),
         .q(regs$379$q),
         .clock(regs$379$clock)
     );
-    top$base_na regs$380(
+    top$tri_unit$tc$regs$0 regs$380(
         .d(regs$380$d),
         .q(regs$380$q),
         .clock(regs$380$clock)
     );
-    top$base_na regs$381(
+    top$tri_unit$tc$regs$0 regs$381(
         .d(regs$381$d),
         .q(regs$381$q),
         .clock(regs$381$clock)
     );
-    top$base_na regs$382(
+    top$tri_unit$tc$regs$0 regs$382(
         .d(regs$382$d),
         .q(regs$382$q),
         .clock(regs$382$clock)
     );
-    top$base_na regs$383(
+    top$tri_unit$tc$regs$0 regs$383(
         .d(regs$383$d),
         .q(regs$383$q),
         .clock(regs$383$clock)
     );
-    top$base_na regs$384(
+    top$tri_unit$tc$regs$0 regs$384(
         .d(regs$384$d),
         .q(regs$384$q),
         .clock(regs$384$clock)
     );
-    top$base_na regs$385(
+    top$tri_unit$tc$regs$0 regs$385(
         .d(regs$385$d),
         .q(regs$385$q),
         .clock(regs$385$clock)
     );
-    top$base_na regs$386(
+    top$tri_unit$tc$regs$0 regs$386(
         .d(regs$386$d),
         .q(regs$386$q),
         .clock(regs$386$clock)
     );
-    top$base_na regs$387(
+    top$tri_unit$tc$regs$0 regs$387(
         .d(regs$387$d),
         .q(regs$387$q),
         .clock(regs$387$clock)
     );
-    top$base_na regs$388(
+    top$tri_unit$tc$regs$0 regs$388(
         .d(regs$388$d),
         .q(regs$388$q),
         .clock(regs$388$clock)
     );
-    top$base_na regs$389(
+    top$tri_unit$tc$regs$0 regs$389(
         .d(regs$389$d),
         .q(regs$389$q),
         .clock(regs$389$clock)
     );
-    top$base_na regs$390(
+    top$tri_unit$tc$regs$0 regs$390(
         .d(regs$390$d),
         .q(regs$390$q),
         .clock(regs$390$clock)
     );
-    top$base_na regs$391(
+    top$tri_unit$tc$regs$0 regs$391(
         .d(regs$391$d),
         .q(regs$391$q),
         .clock(regs$391$clock)
     );
-    top$base_na regs$392(
+    top$tri_unit$tc$regs$0 regs$392(
         .d(regs$392$d),
         .q(regs$392$q),
         .clock(regs$392$clock)
     );
-    top$base_na regs$393(
+    top$tri_unit$tc$regs$0 regs$393(
         .d(regs$393$d),
         .q(regs$393$q),
         .clock(regs$393$clock)
     );
-    top$base_na regs$394(
+    top$tri_unit$tc$regs$0 regs$394(
         .d(regs$394$d),
         .q(regs$394$q),
         .clock(regs$394$clock)
     );
-    top$base_na regs$395(
+    top$tri_unit$tc$regs$0 regs$395(
         .d(regs$395$d),
         .q(regs$395$q),
         .clock(regs$395$clock)
     );
-    top$base_na regs$396(
+    top$tri_unit$tc$regs$0 regs$396(
         .d(regs$396$d),
         .q(regs$396$q),
         .clock(regs$396$clock)
     );
-    top$base_na regs$397(
+    top$tri_unit$tc$regs$0 regs$397(
         .d(regs$397$d),
         .q(regs$397$q),
         .clock(regs$397$clock)
     );
-    top$base_na regs$398(
+    top$tri_unit$tc$regs$0 regs$398(
         .d(regs$398$d),
         .q(regs$398$q),
         .clock(regs$398$clock)
     );
-    top$base_na regs$399(
+    top$tri_unit$tc$regs$0 regs$399(
         .d(regs$399$d),
         .q(regs$399$q),
         .clock(regs$399$clock)
     );
-    top$base_na regs$400(
+    top$tri_unit$tc$regs$0 regs$400(
         .d(regs$400$d),
         .q(regs$400$q),
         .clock(regs$400$clock)
     );
-    top$base_na regs$401(
+    top$tri_unit$tc$regs$0 regs$401(
         .d(regs$401$d),
         .q(regs$401$q),
         .clock(regs$401$clock)
     );
-    top$base_na regs$402(
+    top$tri_unit$tc$regs$0 regs$402(
         .d(regs$402$d),
         .q(regs$402$q),
         .clock(regs$402$clock)
     );
-    top$base_na regs$403(
+    top$tri_unit$tc$regs$0 regs$403(
         .d(regs$403$d),
         .q(regs$403$q),
         .clock(regs$403$clock)
     );
-    top$base_na regs$404(
+    top$tri_unit$tc$regs$0 regs$404(
         .d(regs$404$d),
         .q(regs$404$q),
         .clock(regs$404$clock)
     );
-    top$base_na regs$405(
+    top$tri_unit$tc$regs$0 regs$405(
         .d(regs$405$d),
         .q(regs$405$q),
         .clock(regs$405$clock)
     );
-    top$base_na regs$406(
+    top$tri_unit$tc$regs$0 regs$406(
         .d(regs$406$d),
         .q(regs$406$q),
         .clock(regs$406$clock)
     );
-    top$base_na regs$407(
+    top$tri_unit$tc$regs$0 regs$407(
         .d(regs$407$d),
         .q(regs$407$q),
         .clock(regs$407$clock)
     );
-    top$base_na regs$408(
+    top$tri_unit$tc$regs$0 regs$408(
         .d(regs$408$d),
         .q(regs$408$q),
         .clock(regs$408$clock)
     );
-    top$base_na regs$409(
+    top$tri_unit$tc$regs$0 regs$409(
         .d(regs$409$d),
         .q(regs$409$q),
         .clock(regs$409$clock)
     );
-    top$base_na regs$410(
+    top$tri_unit$tc$regs$0 regs$410(
         .d(regs$410$d),
         .q(regs$410$q),
         .clock(regs$410$clock)
     );
-    top$base_na regs$411(
+    top$tri_unit$tc$regs$0 regs$411(
         .d(regs$411$d),
         .q(regs$411$q),
         .clock(regs$411$clock)
     );
-    top$base_na regs$412(
+    top$tri_unit$tc$regs$0 regs$412(
         .d(regs$412$d),
         .q(regs$412$q),
         .clock(regs$412$clock)
     );
-    top$base_na regs$413(
+    top$tri_unit$tc$regs$0 regs$413(
         .d(regs$413$d),
         .q(regs$413$q),
         .clock(regs$413$clock)
     );
-    top$base_na regs$414(
+    top$tri_unit$tc$regs$0 regs$414(
         .d(regs$414$d),
         .q(regs$414$q),
         .clock(regs$414$clock)
     );
-    top$base_na regs$415(
+    top$tri_unit$tc$regs$0 regs$415(
         .d(regs$415$d),
         .q(regs$415$q),
         .clock(regs$415$clock)
     );
-    top$base_na regs$416(
+    top$tri_unit$tc$regs$0 regs$416(
         .d(regs$416$d),
         .q(regs$416$q),
         .clock(regs$416$clock)
     );
-    top$base_na regs$417(
+    top$tri_unit$tc$regs$0 regs$417(
         .d(regs$417$d),
         .q(regs$417$q),
         .clock(regs$417$clock)
     );
-    top$base_na regs$418(
+    top$tri_unit$tc$regs$0 regs$418(
         .d(regs$418$d),
         .q(regs$418$q),
         .clock(regs$418$clock)
     );
-    top$base_na regs$419(
+    top$tri_unit$tc$regs$0 regs$419(
         .d(regs$419$d),
         .q(regs$419$q),
         .clock(regs$419$clock)
     );
-    top$base_na regs$420(
+    top$tri_unit$tc$regs$0 regs$420(
         .d(regs$420$d),
         .q(regs$420$q),
         .clock(regs$420$clock)
     );
-    top$base_na regs$421(
+    top$tri_unit$tc$regs$0 regs$421(
         .d(regs$421$d),
         .q(regs$421$q),
         .clock(regs$421$clock)
     );
-    top$base_na regs$422(
+    top$tri_unit$tc$regs$0 regs$422(
         .d(regs$422$d),
         .q(regs$422$q),
         .clock(regs$422$clock)
     );
-    top$base_na regs$423(
+    top$tri_unit$tc$regs$0 regs$423(
         .d(regs$423$d),
         .q(regs$423$q),
         .clock(regs$423$clock)
     );
-    top$base_na regs$424(
+    top$tri_unit$tc$regs$0 regs$424(
         .d(regs$424$d),
         .q(regs$424$q),
         .clock(regs$424$clock)
     );
-    top$base_na regs$425(
+    top$tri_unit$tc$regs$0 regs$425(
         .d(regs$425$d),
         .q(regs$425$q),
         .clock(regs$425$clock)
     );
-    top$base_na regs$426(
+    top$tri_unit$tc$regs$0 regs$426(
         .d(regs$426$d),
         .q(regs$426$q),
         .clock(regs$426$clock)
     );
-    top$base_na regs$427(
+    top$tri_unit$tc$regs$0 regs$427(
         .d(regs$427$d),
         .q(regs$427$q),
         .clock(regs$427$clock)
     );
-    top$base_na regs$428(
+    top$tri_unit$tc$regs$0 regs$428(
         .d(regs$428$d),
         .q(regs$428$q),
         .clock(regs$428$clock)
     );
-    top$base_na regs$429(
+    top$tri_unit$tc$regs$0 regs$429(
         .d(regs$429$d),
         .q(regs$429$q),
         .clock(regs$429$clock)
     );
-    top$base_na regs$430(
+    top$tri_unit$tc$regs$0 regs$430(
         .d(regs$430$d),
         .q(regs$430$q),
         .clock(regs$430$clock)
     );
-    top$base_na regs$431(
+    top$tri_unit$tc$regs$0 regs$431(
         .d(regs$431$d),
         .q(regs$431$q),
         .clock(regs$431$clock)
     );
-    top$base_na regs$432(
+    top$tri_unit$tc$regs$0 regs$432(
         .d(regs$432$d),
         .q(regs$432$q),
         .clock(regs$432$clock)
     );
-    top$base_na regs$433(
+    top$tri_unit$tc$regs$0 regs$433(
         .d(regs$433$d),
         .q(regs$433$q),
         .clock(regs$433$clock)
     );
-    top$base_na regs$434(
+    top$tri_unit$tc$regs$0 regs$434(
         .d(regs$434$d),
         .q(regs$434$q),
         .clock(regs$434$clock)
     );
-    top$base_na regs$435(
+    top$tri_unit$tc$regs$0 regs$435(
         .d(regs$435$d),
         .q(regs$435$q),
         .clock(regs$435$clock)
     );
-    top$base_na regs$436(
+    top$tri_unit$tc$regs$0 regs$436(
         .d(regs$436$d),
         .q(regs$436$q),
         .clock(regs$436$clock)
     );
-    top$base_na regs$437(
+    top$tri_unit$tc$regs$0 regs$437(
         .d(regs$437$d),
         .q(regs$437$q),
         .clock(regs$437$clock)
     );
-    top$base_na regs$438(
+    top$tri_unit$tc$regs$0 regs$438(
         .d(regs$438$d),
         .q(regs$438$q),
         .clock(regs$438$clock)
     );
-    top$base_na regs$439(
+    top$tri_unit$tc$regs$0 regs$439(
         .d(regs$439$d),
         .q(regs$439$q),
         .clock(regs$439$clock)
     );
-    top$base_na regs$440(
+    top$tri_unit$tc$regs$0 regs$440(
         .d(regs$440$d),
         .q(regs$440$q),
         .clock(regs$440$clock)
     );
-    top$base_na regs$441(
+    top$tri_unit$tc$regs$0 regs$441(
         .d(regs$441$d),
         .q(regs$441$q),
         .clock(regs$441$clock)
     );
-    top$base_na regs$442(
+    top$tri_unit$tc$regs$0 regs$442(
         .d(regs$442$d),
         .q(regs$442$q),
         .clock(regs$442$clock)
     );
-    top$base_na regs$443(
+    top$tri_unit$tc$regs$0 regs$443(
         .d(regs$443$d),
         .q(regs$443$q),
         .clock(regs$443$clock)
     );
-    top$base_na regs$444(
+    top$tri_unit$tc$regs$0 regs$444(
         .d(regs$444$d),
         .q(regs$444$q),
         .clock(regs$444$clock)
     );
-    top$base_na regs$445(
+    top$tri_unit$tc$regs$0 regs$445(
         .d(regs$445$d),
         .q(regs$445$q),
         .clock(regs$445$clock)
     );
-    top$base_na regs$446(
+    top$tri_unit$tc$regs$0 regs$446(
         .d(regs$446$d),
         .q(regs$446$q),
         .clock(regs$446$clock)
     );
-    top$base_na regs$447(
+    top$tri_unit$tc$regs$0 regs$447(
         .d(regs$447$d),
         .q(regs$447$q),
         .clock(regs$447$clock)
     );
-    top$base_na regs$448(
+    top$tri_unit$tc$regs$0 regs$448(
         .d(regs$448$d),
         .q(regs$448$q),
         .clock(regs$448$clock)
     );
-    top$base_na regs$449(
+    top$tri_unit$tc$regs$0 regs$449(
         .d(regs$449$d),
         .q(regs$449$q),
         .clock(regs$449$clock)
     );
-    top$base_na regs$450(
+    top$tri_unit$tc$regs$0 regs$450(
         .d(regs$450$d),
         .q(regs$450$q),
         .clock(regs$450$clock)
     );
-    top$base_na regs$451(
+    top$tri_unit$tc$regs$0 regs$451(
         .d(regs$451$d),
         .q(regs$451$q),
         .clock(regs$451$clock)
     );
-    top$base_na regs$452(
+    top$tri_unit$tc$regs$0 regs$452(
         .d(regs$452$d),
         .q(regs$452$q),
         .clock(regs$452$clock)
     );
-    top$base_na regs$453(
+    top$tri_unit$tc$regs$0 regs$453(
         .d(regs$453$d),
         .q(regs$453$q),
         .clock(regs$453$clock)
     );
-    top$base_na regs$454(
+    top$tri_unit$tc$regs$0 regs$454(
         .d(regs$454$d),
         .q(regs$454$q),
         .clock(regs$454$clock)
     );
-    top$base_na regs$455(
+    top$tri_unit$tc$regs$0 regs$455(
         .d(regs$455$d),
         .q(regs$455$q),
         .clock(regs$455$clock)
     );
-    top$base_na regs$456(
+    top$tri_unit$tc$regs$0 regs$456(
         .d(regs$456$d),
         .q(regs$456$q),
         .clock(regs$456$clock)
     );
-    top$base_na regs$457(
+    top$tri_unit$tc$regs$0 regs$457(
         .d(regs$457$d),
         .q(regs$457$q),
         .clock(regs$457$clock)
     );
-    top$base_na regs$458(
+    top$tri_unit$tc$regs$0 regs$458(
         .d(regs$458$d),
         .q(regs$458$q),
         .clock(regs$458$clock)
     );
-    top$base_na regs$459(
+    top$tri_unit$tc$regs$0 regs$459(
         .d(regs$459$d),
         .q(regs$459$q),
         .clock(regs$459$clock)
     );
-    top$base_na regs$460(
+    top$tri_unit$tc$regs$0 regs$460(
         .d(regs$460$d),
         .q(regs$460$q),
         .clock(regs$460$clock)
     );
-    top$base_na regs$461(
+    top$tri_unit$tc$regs$0 regs$461(
         .d(regs$461$d),
         .q(regs$461$q),
         .clock(regs$461$clock)
     );
-    top$base_na regs$462(
+    top$tri_unit$tc$regs$0 regs$462(
         .d(regs$462$d),
         .q(regs$462$q),
         .clock(regs$462$clock)
     );
-    top$base_na regs$463(
+    top$tri_unit$tc$regs$0 regs$463(
         .d(regs$463$d),
         .q(regs$463$q),
         .clock(regs$463$clock)
     );
-    top$base_na regs$464(
+    top$tri_unit$tc$regs$0 regs$464(
         .d(regs$464$d),
         .q(regs$464$q),
         .clock(regs$464$clock)
     );
-    top$base_na regs$465(
+    top$tri_unit$tc$regs$0 regs$465(
         .d(regs$465$d),
         .q(regs$465$q),
         .clock(regs$465$clock)
     );
-    top$base_na regs$466(
+    top$tri_unit$tc$regs$0 regs$466(
         .d(regs$466$d),
         .q(regs$466$q),
         .clock(regs$466$clock)
     );
-    top$base_na regs$467(
+    top$tri_unit$tc$regs$0 regs$467(
         .d(regs$467$d),
         .q(regs$467$q),
         .clock(regs$467$clock)
     );
-    top$base_na regs$468(
+    top$tri_unit$tc$regs$0 regs$468(
         .d(regs$468$d),
         .q(regs$468$q),
         .clock(regs$468$clock)
     );
-    top$base_na regs$469(
+    top$tri_unit$tc$regs$0 regs$469(
         .d(regs$469$d),
         .q(regs$469$q),
         .clock(regs$469$clock)
     );
-    top$base_na regs$470(
+    top$tri_unit$tc$regs$0 regs$470(
         .d(regs$470$d),
         .q(regs$470$q),
         .clock(regs$470$clock)
     );
-    top$base_na regs$471(
+    top$tri_unit$tc$regs$0 regs$471(
         .d(regs$471$d),
         .q(regs$471$q),
         .clock(regs$471$clock)
     );
-    top$base_na regs$472(
+    top$tri_unit$tc$regs$0 regs$472(
         .d(regs$472$d),
         .q(regs$472$q),
         .clock(regs$472$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$473(
+        .d(regs$473$d),
+        .q(regs$473$q),
+        .clock(regs$473$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$474(
+        .d(regs$474$d),
+        .q(regs$474$q),
+        .clock(regs$474$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$475(
+        .d(regs$475$d),
+        .q(regs$475$q),
+        .clock(regs$475$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$476(
+        .d(regs$476$d),
+        .q(regs$476$q),
+        .clock(regs$476$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$477(
+        .d(regs$477$d),
+        .q(regs$477$q),
+        .clock(regs$477$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$478(
+        .d(regs$478$d),
+        .q(regs$478$q),
+        .clock(regs$478$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$479(
+        .d(regs$479$d),
+        .q(regs$479$q),
+        .clock(regs$479$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$480(
+        .d(regs$480$d),
+        .q(regs$480$q),
+        .clock(regs$480$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$481(
+        .d(regs$481$d),
+        .q(regs$481$q),
+        .clock(regs$481$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$482(
+        .d(regs$482$d),
+        .q(regs$482$q),
+        .clock(regs$482$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$483(
+        .d(regs$483$d),
+        .q(regs$483$q),
+        .clock(regs$483$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$484(
+        .d(regs$484$d),
+        .q(regs$484$q),
+        .clock(regs$484$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$485(
+        .d(regs$485$d),
+        .q(regs$485$q),
+        .clock(regs$485$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$486(
+        .d(regs$486$d),
+        .q(regs$486$q),
+        .clock(regs$486$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$487(
+        .d(regs$487$d),
+        .q(regs$487$q),
+        .clock(regs$487$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$488(
+        .d(regs$488$d),
+        .q(regs$488$q),
+        .clock(regs$488$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$489(
+        .d(regs$489$d),
+        .q(regs$489$q),
+        .clock(regs$489$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$490(
+        .d(regs$490$d),
+        .q(regs$490$q),
+        .clock(regs$490$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$491(
+        .d(regs$491$d),
+        .q(regs$491$q),
+        .clock(regs$491$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$492(
+        .d(regs$492$d),
+        .q(regs$492$q),
+        .clock(regs$492$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$493(
+        .d(regs$493$d),
+        .q(regs$493$q),
+        .clock(regs$493$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$494(
+        .d(regs$494$d),
+        .q(regs$494$q),
+        .clock(regs$494$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$495(
+        .d(regs$495$d),
+        .q(regs$495$q),
+        .clock(regs$495$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$496(
+        .d(regs$496$d),
+        .q(regs$496$q),
+        .clock(regs$496$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$497(
+        .d(regs$497$d),
+        .q(regs$497$q),
+        .clock(regs$497$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$498(
+        .d(regs$498$d),
+        .q(regs$498$q),
+        .clock(regs$498$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$499(
+        .d(regs$499$d),
+        .q(regs$499$q),
+        .clock(regs$499$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$500(
+        .d(regs$500$d),
+        .q(regs$500$q),
+        .clock(regs$500$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$501(
+        .d(regs$501$d),
+        .q(regs$501$q),
+        .clock(regs$501$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$502(
+        .d(regs$502$d),
+        .q(regs$502$q),
+        .clock(regs$502$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$503(
+        .d(regs$503$d),
+        .q(regs$503$q),
+        .clock(regs$503$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$504(
+        .d(regs$504$d),
+        .q(regs$504$q),
+        .clock(regs$504$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$505(
+        .d(regs$505$d),
+        .q(regs$505$q),
+        .clock(regs$505$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$506(
+        .d(regs$506$d),
+        .q(regs$506$q),
+        .clock(regs$506$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$507(
+        .d(regs$507$d),
+        .q(regs$507$q),
+        .clock(regs$507$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$508(
+        .d(regs$508$d),
+        .q(regs$508$q),
+        .clock(regs$508$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$509(
+        .d(regs$509$d),
+        .q(regs$509$q),
+        .clock(regs$509$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$510(
+        .d(regs$510$d),
+        .q(regs$510$q),
+        .clock(regs$510$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$511(
+        .d(regs$511$d),
+        .q(regs$511$q),
+        .clock(regs$511$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$512(
+        .d(regs$512$d),
+        .q(regs$512$q),
+        .clock(regs$512$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$513(
+        .d(regs$513$d),
+        .q(regs$513$q),
+        .clock(regs$513$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$514(
+        .d(regs$514$d),
+        .q(regs$514$q),
+        .clock(regs$514$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$515(
+        .d(regs$515$d),
+        .q(regs$515$q),
+        .clock(regs$515$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$516(
+        .d(regs$516$d),
+        .q(regs$516$q),
+        .clock(regs$516$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$517(
+        .d(regs$517$d),
+        .q(regs$517$q),
+        .clock(regs$517$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$518(
+        .d(regs$518$d),
+        .q(regs$518$q),
+        .clock(regs$518$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$519(
+        .d(regs$519$d),
+        .q(regs$519$q),
+        .clock(regs$519$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$520(
+        .d(regs$520$d),
+        .q(regs$520$q),
+        .clock(regs$520$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$521(
+        .d(regs$521$d),
+        .q(regs$521$q),
+        .clock(regs$521$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$522(
+        .d(regs$522$d),
+        .q(regs$522$q),
+        .clock(regs$522$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$523(
+        .d(regs$523$d),
+        .q(regs$523$q),
+        .clock(regs$523$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$524(
+        .d(regs$524$d),
+        .q(regs$524$q),
+        .clock(regs$524$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$525(
+        .d(regs$525$d),
+        .q(regs$525$q),
+        .clock(regs$525$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$526(
+        .d(regs$526$d),
+        .q(regs$526$q),
+        .clock(regs$526$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$527(
+        .d(regs$527$d),
+        .q(regs$527$q),
+        .clock(regs$527$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$528(
+        .d(regs$528$d),
+        .q(regs$528$q),
+        .clock(regs$528$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$529(
+        .d(regs$529$d),
+        .q(regs$529$q),
+        .clock(regs$529$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$530(
+        .d(regs$530$d),
+        .q(regs$530$q),
+        .clock(regs$530$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$531(
+        .d(regs$531$d),
+        .q(regs$531$q),
+        .clock(regs$531$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$532(
+        .d(regs$532$d),
+        .q(regs$532$q),
+        .clock(regs$532$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$533(
+        .d(regs$533$d),
+        .q(regs$533$q),
+        .clock(regs$533$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$534(
+        .d(regs$534$d),
+        .q(regs$534$q),
+        .clock(regs$534$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$535(
+        .d(regs$535$d),
+        .q(regs$535$q),
+        .clock(regs$535$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$536(
+        .d(regs$536$d),
+        .q(regs$536$q),
+        .clock(regs$536$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$537(
+        .d(regs$537$d),
+        .q(regs$537$q),
+        .clock(regs$537$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$538(
+        .d(regs$538$d),
+        .q(regs$538$q),
+        .clock(regs$538$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$539(
+        .d(regs$539$d),
+        .q(regs$539$q),
+        .clock(regs$539$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$540(
+        .d(regs$540$d),
+        .q(regs$540$q),
+        .clock(regs$540$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$541(
+        .d(regs$541$d),
+        .q(regs$541$q),
+        .clock(regs$541$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$542(
+        .d(regs$542$d),
+        .q(regs$542$q),
+        .clock(regs$542$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$543(
+        .d(regs$543$d),
+        .q(regs$543$q),
+        .clock(regs$543$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$544(
+        .d(regs$544$d),
+        .q(regs$544$q),
+        .clock(regs$544$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$545(
+        .d(regs$545$d),
+        .q(regs$545$q),
+        .clock(regs$545$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$546(
+        .d(regs$546$d),
+        .q(regs$546$q),
+        .clock(regs$546$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$547(
+        .d(regs$547$d),
+        .q(regs$547$q),
+        .clock(regs$547$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$548(
+        .d(regs$548$d),
+        .q(regs$548$q),
+        .clock(regs$548$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$549(
+        .d(regs$549$d),
+        .q(regs$549$q),
+        .clock(regs$549$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$550(
+        .d(regs$550$d),
+        .q(regs$550$q),
+        .clock(regs$550$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$551(
+        .d(regs$551$d),
+        .q(regs$551$q),
+        .clock(regs$551$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$552(
+        .d(regs$552$d),
+        .q(regs$552$q),
+        .clock(regs$552$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$553(
+        .d(regs$553$d),
+        .q(regs$553$q),
+        .clock(regs$553$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$554(
+        .d(regs$554$d),
+        .q(regs$554$q),
+        .clock(regs$554$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$555(
+        .d(regs$555$d),
+        .q(regs$555$q),
+        .clock(regs$555$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$556(
+        .d(regs$556$d),
+        .q(regs$556$q),
+        .clock(regs$556$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$557(
+        .d(regs$557$d),
+        .q(regs$557$q),
+        .clock(regs$557$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$558(
+        .d(regs$558$d),
+        .q(regs$558$q),
+        .clock(regs$558$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$559(
+        .d(regs$559$d),
+        .q(regs$559$q),
+        .clock(regs$559$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$560(
+        .d(regs$560$d),
+        .q(regs$560$q),
+        .clock(regs$560$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$561(
+        .d(regs$561$d),
+        .q(regs$561$q),
+        .clock(regs$561$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$562(
+        .d(regs$562$d),
+        .q(regs$562$q),
+        .clock(regs$562$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$563(
+        .d(regs$563$d),
+        .q(regs$563$q),
+        .clock(regs$563$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$564(
+        .d(regs$564$d),
+        .q(regs$564$q),
+        .clock(regs$564$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$565(
+        .d(regs$565$d),
+        .q(regs$565$q),
+        .clock(regs$565$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$566(
+        .d(regs$566$d),
+        .q(regs$566$q),
+        .clock(regs$566$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$567(
+        .d(regs$567$d),
+        .q(regs$567$q),
+        .clock(regs$567$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$568(
+        .d(regs$568$d),
+        .q(regs$568$q),
+        .clock(regs$568$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$569(
+        .d(regs$569$d),
+        .q(regs$569$q),
+        .clock(regs$569$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$570(
+        .d(regs$570$d),
+        .q(regs$570$q),
+        .clock(regs$570$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$571(
+        .d(regs$571$d),
+        .q(regs$571$q),
+        .clock(regs$571$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$572(
+        .d(regs$572$d),
+        .q(regs$572$q),
+        .clock(regs$572$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$573(
+        .d(regs$573$d),
+        .q(regs$573$q),
+        .clock(regs$573$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$574(
+        .d(regs$574$d),
+        .q(regs$574$q),
+        .clock(regs$574$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$575(
+        .d(regs$575$d),
+        .q(regs$575$q),
+        .clock(regs$575$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$576(
+        .d(regs$576$d),
+        .q(regs$576$q),
+        .clock(regs$576$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$577(
+        .d(regs$577$d),
+        .q(regs$577$q),
+        .clock(regs$577$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$578(
+        .d(regs$578$d),
+        .q(regs$578$q),
+        .clock(regs$578$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$579(
+        .d(regs$579$d),
+        .q(regs$579$q),
+        .clock(regs$579$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$580(
+        .d(regs$580$d),
+        .q(regs$580$q),
+        .clock(regs$580$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$581(
+        .d(regs$581$d),
+        .q(regs$581$q),
+        .clock(regs$581$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$582(
+        .d(regs$582$d),
+        .q(regs$582$q),
+        .clock(regs$582$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$583(
+        .d(regs$583$d),
+        .q(regs$583$q),
+        .clock(regs$583$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$584(
+        .d(regs$584$d),
+        .q(regs$584$q),
+        .clock(regs$584$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$585(
+        .d(regs$585$d),
+        .q(regs$585$q),
+        .clock(regs$585$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$586(
+        .d(regs$586$d),
+        .q(regs$586$q),
+        .clock(regs$586$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$587(
+        .d(regs$587$d),
+        .q(regs$587$q),
+        .clock(regs$587$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$588(
+        .d(regs$588$d),
+        .q(regs$588$q),
+        .clock(regs$588$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$589(
+        .d(regs$589$d),
+        .q(regs$589$q),
+        .clock(regs$589$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$590(
+        .d(regs$590$d),
+        .q(regs$590$q),
+        .clock(regs$590$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$591(
+        .d(regs$591$d),
+        .q(regs$591$q),
+        .clock(regs$591$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$592(
+        .d(regs$592$d),
+        .q(regs$592$q),
+        .clock(regs$592$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$593(
+        .d(regs$593$d),
+        .q(regs$593$q),
+        .clock(regs$593$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$594(
+        .d(regs$594$d),
+        .q(regs$594$q),
+        .clock(regs$594$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$595(
+        .d(regs$595$d),
+        .q(regs$595$q),
+        .clock(regs$595$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$596(
+        .d(regs$596$d),
+        .q(regs$596$q),
+        .clock(regs$596$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$597(
+        .d(regs$597$d),
+        .q(regs$597$q),
+        .clock(regs$597$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$598(
+        .d(regs$598$d),
+        .q(regs$598$q),
+        .clock(regs$598$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$599(
+        .d(regs$599$d),
+        .q(regs$599$q),
+        .clock(regs$599$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$600(
+        .d(regs$600$d),
+        .q(regs$600$q),
+        .clock(regs$600$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$601(
+        .d(regs$601$d),
+        .q(regs$601$q),
+        .clock(regs$601$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$602(
+        .d(regs$602$d),
+        .q(regs$602$q),
+        .clock(regs$602$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$603(
+        .d(regs$603$d),
+        .q(regs$603$q),
+        .clock(regs$603$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$604(
+        .d(regs$604$d),
+        .q(regs$604$q),
+        .clock(regs$604$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$605(
+        .d(regs$605$d),
+        .q(regs$605$q),
+        .clock(regs$605$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$606(
+        .d(regs$606$d),
+        .q(regs$606$q),
+        .clock(regs$606$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$607(
+        .d(regs$607$d),
+        .q(regs$607$q),
+        .clock(regs$607$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$608(
+        .d(regs$608$d),
+        .q(regs$608$q),
+        .clock(regs$608$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$609(
+        .d(regs$609$d),
+        .q(regs$609$q),
+        .clock(regs$609$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$610(
+        .d(regs$610$d),
+        .q(regs$610$q),
+        .clock(regs$610$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$611(
+        .d(regs$611$d),
+        .q(regs$611$q),
+        .clock(regs$611$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$612(
+        .d(regs$612$d),
+        .q(regs$612$q),
+        .clock(regs$612$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$613(
+        .d(regs$613$d),
+        .q(regs$613$q),
+        .clock(regs$613$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$614(
+        .d(regs$614$d),
+        .q(regs$614$q),
+        .clock(regs$614$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$615(
+        .d(regs$615$d),
+        .q(regs$615$q),
+        .clock(regs$615$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$616(
+        .d(regs$616$d),
+        .q(regs$616$q),
+        .clock(regs$616$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$617(
+        .d(regs$617$d),
+        .q(regs$617$q),
+        .clock(regs$617$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$618(
+        .d(regs$618$d),
+        .q(regs$618$q),
+        .clock(regs$618$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$619(
+        .d(regs$619$d),
+        .q(regs$619$q),
+        .clock(regs$619$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$620(
+        .d(regs$620$d),
+        .q(regs$620$q),
+        .clock(regs$620$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$621(
+        .d(regs$621$d),
+        .q(regs$621$q),
+        .clock(regs$621$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$622(
+        .d(regs$622$d),
+        .q(regs$622$q),
+        .clock(regs$622$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$623(
+        .d(regs$623$d),
+        .q(regs$623$q),
+        .clock(regs$623$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$624(
+        .d(regs$624$d),
+        .q(regs$624$q),
+        .clock(regs$624$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$625(
+        .d(regs$625$d),
+        .q(regs$625$q),
+        .clock(regs$625$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$626(
+        .d(regs$626$d),
+        .q(regs$626$q),
+        .clock(regs$626$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$627(
+        .d(regs$627$d),
+        .q(regs$627$q),
+        .clock(regs$627$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$628(
+        .d(regs$628$d),
+        .q(regs$628$q),
+        .clock(regs$628$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$629(
+        .d(regs$629$d),
+        .q(regs$629$q),
+        .clock(regs$629$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$630(
+        .d(regs$630$d),
+        .q(regs$630$q),
+        .clock(regs$630$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$631(
+        .d(regs$631$d),
+        .q(regs$631$q),
+        .clock(regs$631$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$632(
+        .d(regs$632$d),
+        .q(regs$632$q),
+        .clock(regs$632$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$633(
+        .d(regs$633$d),
+        .q(regs$633$q),
+        .clock(regs$633$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$634(
+        .d(regs$634$d),
+        .q(regs$634$q),
+        .clock(regs$634$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$635(
+        .d(regs$635$d),
+        .q(regs$635$q),
+        .clock(regs$635$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$636(
+        .d(regs$636$d),
+        .q(regs$636$q),
+        .clock(regs$636$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$637(
+        .d(regs$637$d),
+        .q(regs$637$q),
+        .clock(regs$637$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$638(
+        .d(regs$638$d),
+        .q(regs$638$q),
+        .clock(regs$638$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$639(
+        .d(regs$639$d),
+        .q(regs$639$q),
+        .clock(regs$639$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$640(
+        .d(regs$640$d),
+        .q(regs$640$q),
+        .clock(regs$640$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$641(
+        .d(regs$641$d),
+        .q(regs$641$q),
+        .clock(regs$641$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$642(
+        .d(regs$642$d),
+        .q(regs$642$q),
+        .clock(regs$642$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$643(
+        .d(regs$643$d),
+        .q(regs$643$q),
+        .clock(regs$643$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$644(
+        .d(regs$644$d),
+        .q(regs$644$q),
+        .clock(regs$644$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$645(
+        .d(regs$645$d),
+        .q(regs$645$q),
+        .clock(regs$645$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$646(
+        .d(regs$646$d),
+        .q(regs$646$q),
+        .clock(regs$646$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$647(
+        .d(regs$647$d),
+        .q(regs$647$q),
+        .clock(regs$647$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$648(
+        .d(regs$648$d),
+        .q(regs$648$q),
+        .clock(regs$648$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$649(
+        .d(regs$649$d),
+        .q(regs$649$q),
+        .clock(regs$649$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$650(
+        .d(regs$650$d),
+        .q(regs$650$q),
+        .clock(regs$650$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$651(
+        .d(regs$651$d),
+        .q(regs$651$q),
+        .clock(regs$651$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$652(
+        .d(regs$652$d),
+        .q(regs$652$q),
+        .clock(regs$652$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$653(
+        .d(regs$653$d),
+        .q(regs$653$q),
+        .clock(regs$653$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$654(
+        .d(regs$654$d),
+        .q(regs$654$q),
+        .clock(regs$654$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$655(
+        .d(regs$655$d),
+        .q(regs$655$q),
+        .clock(regs$655$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$656(
+        .d(regs$656$d),
+        .q(regs$656$q),
+        .clock(regs$656$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$657(
+        .d(regs$657$d),
+        .q(regs$657$q),
+        .clock(regs$657$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$658(
+        .d(regs$658$d),
+        .q(regs$658$q),
+        .clock(regs$658$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$659(
+        .d(regs$659$d),
+        .q(regs$659$q),
+        .clock(regs$659$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$660(
+        .d(regs$660$d),
+        .q(regs$660$q),
+        .clock(regs$660$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$661(
+        .d(regs$661$d),
+        .q(regs$661$q),
+        .clock(regs$661$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$662(
+        .d(regs$662$d),
+        .q(regs$662$q),
+        .clock(regs$662$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$663(
+        .d(regs$663$d),
+        .q(regs$663$q),
+        .clock(regs$663$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$664(
+        .d(regs$664$d),
+        .q(regs$664$q),
+        .clock(regs$664$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$665(
+        .d(regs$665$d),
+        .q(regs$665$q),
+        .clock(regs$665$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$666(
+        .d(regs$666$d),
+        .q(regs$666$q),
+        .clock(regs$666$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$667(
+        .d(regs$667$d),
+        .q(regs$667$q),
+        .clock(regs$667$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$668(
+        .d(regs$668$d),
+        .q(regs$668$q),
+        .clock(regs$668$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$669(
+        .d(regs$669$d),
+        .q(regs$669$q),
+        .clock(regs$669$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$670(
+        .d(regs$670$d),
+        .q(regs$670$q),
+        .clock(regs$670$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$671(
+        .d(regs$671$d),
+        .q(regs$671$q),
+        .clock(regs$671$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$672(
+        .d(regs$672$d),
+        .q(regs$672$q),
+        .clock(regs$672$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$673(
+        .d(regs$673$d),
+        .q(regs$673$q),
+        .clock(regs$673$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$674(
+        .d(regs$674$d),
+        .q(regs$674$q),
+        .clock(regs$674$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$675(
+        .d(regs$675$d),
+        .q(regs$675$q),
+        .clock(regs$675$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$676(
+        .d(regs$676$d),
+        .q(regs$676$q),
+        .clock(regs$676$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$677(
+        .d(regs$677$d),
+        .q(regs$677$q),
+        .clock(regs$677$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$678(
+        .d(regs$678$d),
+        .q(regs$678$q),
+        .clock(regs$678$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$679(
+        .d(regs$679$d),
+        .q(regs$679$q),
+        .clock(regs$679$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$680(
+        .d(regs$680$d),
+        .q(regs$680$q),
+        .clock(regs$680$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$681(
+        .d(regs$681$d),
+        .q(regs$681$q),
+        .clock(regs$681$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$682(
+        .d(regs$682$d),
+        .q(regs$682$q),
+        .clock(regs$682$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$683(
+        .d(regs$683$d),
+        .q(regs$683$q),
+        .clock(regs$683$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$684(
+        .d(regs$684$d),
+        .q(regs$684$q),
+        .clock(regs$684$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$685(
+        .d(regs$685$d),
+        .q(regs$685$q),
+        .clock(regs$685$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$686(
+        .d(regs$686$d),
+        .q(regs$686$q),
+        .clock(regs$686$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$687(
+        .d(regs$687$d),
+        .q(regs$687$q),
+        .clock(regs$687$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$688(
+        .d(regs$688$d),
+        .q(regs$688$q),
+        .clock(regs$688$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$689(
+        .d(regs$689$d),
+        .q(regs$689$q),
+        .clock(regs$689$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$690(
+        .d(regs$690$d),
+        .q(regs$690$q),
+        .clock(regs$690$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$691(
+        .d(regs$691$d),
+        .q(regs$691$q),
+        .clock(regs$691$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$692(
+        .d(regs$692$d),
+        .q(regs$692$q),
+        .clock(regs$692$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$693(
+        .d(regs$693$d),
+        .q(regs$693$q),
+        .clock(regs$693$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$694(
+        .d(regs$694$d),
+        .q(regs$694$q),
+        .clock(regs$694$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$695(
+        .d(regs$695$d),
+        .q(regs$695$q),
+        .clock(regs$695$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$696(
+        .d(regs$696$d),
+        .q(regs$696$q),
+        .clock(regs$696$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$697(
+        .d(regs$697$d),
+        .q(regs$697$q),
+        .clock(regs$697$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$698(
+        .d(regs$698$d),
+        .q(regs$698$q),
+        .clock(regs$698$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$699(
+        .d(regs$699$d),
+        .q(regs$699$q),
+        .clock(regs$699$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$700(
+        .d(regs$700$d),
+        .q(regs$700$q),
+        .clock(regs$700$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$701(
+        .d(regs$701$d),
+        .q(regs$701$q),
+        .clock(regs$701$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$702(
+        .d(regs$702$d),
+        .q(regs$702$q),
+        .clock(regs$702$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$703(
+        .d(regs$703$d),
+        .q(regs$703$q),
+        .clock(regs$703$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$704(
+        .d(regs$704$d),
+        .q(regs$704$q),
+        .clock(regs$704$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$705(
+        .d(regs$705$d),
+        .q(regs$705$q),
+        .clock(regs$705$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$706(
+        .d(regs$706$d),
+        .q(regs$706$q),
+        .clock(regs$706$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$707(
+        .d(regs$707$d),
+        .q(regs$707$q),
+        .clock(regs$707$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$708(
+        .d(regs$708$d),
+        .q(regs$708$q),
+        .clock(regs$708$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$709(
+        .d(regs$709$d),
+        .q(regs$709$q),
+        .clock(regs$709$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$710(
+        .d(regs$710$d),
+        .q(regs$710$q),
+        .clock(regs$710$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$711(
+        .d(regs$711$d),
+        .q(regs$711$q),
+        .clock(regs$711$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$712(
+        .d(regs$712$d),
+        .q(regs$712$q),
+        .clock(regs$712$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$713(
+        .d(regs$713$d),
+        .q(regs$713$q),
+        .clock(regs$713$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$714(
+        .d(regs$714$d),
+        .q(regs$714$q),
+        .clock(regs$714$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$715(
+        .d(regs$715$d),
+        .q(regs$715$q),
+        .clock(regs$715$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$716(
+        .d(regs$716$d),
+        .q(regs$716$q),
+        .clock(regs$716$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$717(
+        .d(regs$717$d),
+        .q(regs$717$q),
+        .clock(regs$717$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$718(
+        .d(regs$718$d),
+        .q(regs$718$q),
+        .clock(regs$718$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$719(
+        .d(regs$719$d),
+        .q(regs$719$q),
+        .clock(regs$719$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$720(
+        .d(regs$720$d),
+        .q(regs$720$q),
+        .clock(regs$720$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$721(
+        .d(regs$721$d),
+        .q(regs$721$q),
+        .clock(regs$721$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$722(
+        .d(regs$722$d),
+        .q(regs$722$q),
+        .clock(regs$722$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$723(
+        .d(regs$723$d),
+        .q(regs$723$q),
+        .clock(regs$723$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$724(
+        .d(regs$724$d),
+        .q(regs$724$q),
+        .clock(regs$724$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$725(
+        .d(regs$725$d),
+        .q(regs$725$q),
+        .clock(regs$725$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$726(
+        .d(regs$726$d),
+        .q(regs$726$q),
+        .clock(regs$726$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$727(
+        .d(regs$727$d),
+        .q(regs$727$q),
+        .clock(regs$727$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$728(
+        .d(regs$728$d),
+        .q(regs$728$q),
+        .clock(regs$728$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$729(
+        .d(regs$729$d),
+        .q(regs$729$q),
+        .clock(regs$729$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$730(
+        .d(regs$730$d),
+        .q(regs$730$q),
+        .clock(regs$730$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$731(
+        .d(regs$731$d),
+        .q(regs$731$q),
+        .clock(regs$731$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$732(
+        .d(regs$732$d),
+        .q(regs$732$q),
+        .clock(regs$732$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$733(
+        .d(regs$733$d),
+        .q(regs$733$q),
+        .clock(regs$733$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$734(
+        .d(regs$734$d),
+        .q(regs$734$q),
+        .clock(regs$734$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$735(
+        .d(regs$735$d),
+        .q(regs$735$q),
+        .clock(regs$735$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$736(
+        .d(regs$736$d),
+        .q(regs$736$q),
+        .clock(regs$736$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$737(
+        .d(regs$737$d),
+        .q(regs$737$q),
+        .clock(regs$737$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$738(
+        .d(regs$738$d),
+        .q(regs$738$q),
+        .clock(regs$738$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$739(
+        .d(regs$739$d),
+        .q(regs$739$q),
+        .clock(regs$739$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$740(
+        .d(regs$740$d),
+        .q(regs$740$q),
+        .clock(regs$740$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$741(
+        .d(regs$741$d),
+        .q(regs$741$q),
+        .clock(regs$741$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$742(
+        .d(regs$742$d),
+        .q(regs$742$q),
+        .clock(regs$742$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$743(
+        .d(regs$743$d),
+        .q(regs$743$q),
+        .clock(regs$743$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$744(
+        .d(regs$744$d),
+        .q(regs$744$q),
+        .clock(regs$744$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$745(
+        .d(regs$745$d),
+        .q(regs$745$q),
+        .clock(regs$745$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$746(
+        .d(regs$746$d),
+        .q(regs$746$q),
+        .clock(regs$746$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$747(
+        .d(regs$747$d),
+        .q(regs$747$q),
+        .clock(regs$747$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$748(
+        .d(regs$748$d),
+        .q(regs$748$q),
+        .clock(regs$748$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$749(
+        .d(regs$749$d),
+        .q(regs$749$q),
+        .clock(regs$749$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$750(
+        .d(regs$750$d),
+        .q(regs$750$q),
+        .clock(regs$750$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$751(
+        .d(regs$751$d),
+        .q(regs$751$q),
+        .clock(regs$751$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$752(
+        .d(regs$752$d),
+        .q(regs$752$q),
+        .clock(regs$752$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$753(
+        .d(regs$753$d),
+        .q(regs$753$q),
+        .clock(regs$753$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$754(
+        .d(regs$754$d),
+        .q(regs$754$q),
+        .clock(regs$754$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$755(
+        .d(regs$755$d),
+        .q(regs$755$q),
+        .clock(regs$755$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$756(
+        .d(regs$756$d),
+        .q(regs$756$q),
+        .clock(regs$756$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$757(
+        .d(regs$757$d),
+        .q(regs$757$q),
+        .clock(regs$757$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$758(
+        .d(regs$758$d),
+        .q(regs$758$q),
+        .clock(regs$758$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$759(
+        .d(regs$759$d),
+        .q(regs$759$q),
+        .clock(regs$759$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$760(
+        .d(regs$760$d),
+        .q(regs$760$q),
+        .clock(regs$760$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$761(
+        .d(regs$761$d),
+        .q(regs$761$q),
+        .clock(regs$761$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$762(
+        .d(regs$762$d),
+        .q(regs$762$q),
+        .clock(regs$762$clock)
+    );
+    top$tri_unit$tc$regs$0 regs$763(
+        .d(regs$763$d),
+        .q(regs$763$q),
+        .clock(regs$763$clock)
     );
     top$d_cntr$ent_second exact$0(
         .d(exact$0$d),
@@ -14471,945 +16799,1527 @@ module top$tri_unit$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2
       regs$2$clock = clock;
       regs$2$d = (counter$q == 8'd0) ? m_0$2 : regs$2$q;
       regs$3$clock = clock;
-      regs$3$d = (counter$q == 8'd0) ? m_0$3 : regs$3$q;
+      regs$3$d = (counter$q == 8'd0) ? m_1$0 : regs$3$q;
       regs$4$clock = clock;
-      regs$4$d = (counter$q == 8'd0) ? m_1$0 : regs$4$q;
+      regs$4$d = (counter$q == 8'd0) ? m_1$2 : regs$4$q;
       regs$5$clock = clock;
-      regs$5$d = (counter$q == 8'd0) ? m_1$1 : regs$5$q;
+      regs$5$d = (counter$q == 8'd0) ? m_2$0 : regs$5$q;
       regs$6$clock = clock;
-      regs$6$d = (counter$q == 8'd0) ? m_1$2 : regs$6$q;
+      regs$6$d = (counter$q == 8'd0) ? m_2$1 : regs$6$q;
       regs$7$clock = clock;
-      regs$7$d = (counter$q == 8'd0) ? m_1$3 : regs$7$q;
+      regs$7$d = (counter$q == 8'd0) ? m_2$2 : regs$7$q;
       regs$8$clock = clock;
-      regs$8$d = (counter$q == 8'd0) ? m_2$0 : regs$8$q;
+      regs$8$d = (counter$q == 8'd0) ? f_0$0 : regs$8$q;
       regs$9$clock = clock;
-      regs$9$d = (counter$q == 8'd0) ? m_2$1 : regs$9$q;
+      regs$9$d = (counter$q == 8'd0) ? f_0$1 : regs$9$q;
       regs$10$clock = clock;
-      regs$10$d = (counter$q == 8'd0) ? m_2$2 : regs$10$q;
+      regs$10$d = (counter$q == 8'd0) ? f_0$2 : regs$10$q;
       regs$11$clock = clock;
-      regs$11$d = (counter$q == 8'd0) ? m_2$3 : regs$11$q;
+      regs$11$d = (counter$q == 8'd0) ? f_1$0 : regs$11$q;
       regs$12$clock = clock;
-      regs$12$d = (counter$q == 8'd0) ? alpha_m : regs$12$q;
+      regs$12$d = (counter$q == 8'd0) ? f_1$3 : regs$12$q;
       regs$13$clock = clock;
-      regs$13$d = (counter$q == 8'd0) ? alpha_f : regs$13$q;
+      regs$13$d = (counter$q == 8'd0) ? f_2$1 : regs$13$q;
       regs$14$clock = clock;
-      regs$14$d = (counter$q == 8'd0) ? f_0$0 : regs$14$q;
+      regs$14$d = (counter$q == 8'd0) ? f_2$2 : regs$14$q;
       regs$15$clock = clock;
-      regs$15$d = (counter$q == 8'd0) ? f_0$1 : regs$15$q;
+      regs$15$d = (counter$q == 8'd0) ? f_2$3 : regs$15$q;
       regs$16$clock = clock;
-      regs$16$d = (counter$q == 8'd0) ? f_0$2 : regs$16$q;
+      regs$16$d = (counter$q == 8'd0) ? v_x$0 : regs$16$q;
       regs$17$clock = clock;
-      regs$17$d = (counter$q == 8'd0) ? f_0$3 : regs$17$q;
+      regs$17$d = (counter$q == 8'd0) ? v_z$0 : regs$17$q;
       regs$18$clock = clock;
-      regs$18$d = (counter$q == 8'd0) ? f_1$0 : regs$18$q;
+      regs$18$d = (counter$q == 8'd0) ? regs$17$q : regs$18$q;
       regs$19$clock = clock;
-      regs$19$d = (counter$q == 8'd0) ? f_1$1 : regs$19$q;
+      regs$19$d = (counter$q == 8'd0) ? v_z$1 : regs$19$q;
       regs$20$clock = clock;
-      regs$20$d = (counter$q == 8'd0) ? f_1$2 : regs$20$q;
+      regs$20$d = (counter$q == 8'd0) ? regs$19$q : regs$20$q;
       regs$21$clock = clock;
-      regs$21$d = (counter$q == 8'd0) ? f_1$3 : regs$21$q;
+      regs$21$d = (counter$q == 8'd0) ? v_z$2 : regs$21$q;
       regs$22$clock = clock;
-      regs$22$d = (counter$q == 8'd0) ? f_2$0 : regs$22$q;
+      regs$22$d = (counter$q == 8'd0) ? regs$21$q : regs$22$q;
       regs$23$clock = clock;
-      regs$23$d = (counter$q == 8'd0) ? f_2$1 : regs$23$q;
+      regs$23$d = (counter$q == 8'd13) ? add_v$2$y : regs$23$q;
       regs$24$clock = clock;
-      regs$24$d = (counter$q == 8'd0) ? f_2$2 : regs$24$q;
+      regs$24$d = (counter$q == 8'd14) ? add_v$2$y : regs$24$q;
       regs$25$clock = clock;
-      regs$25$d = (counter$q == 8'd0) ? f_2$3 : regs$25$q;
+      regs$25$d = (counter$q == 8'd15) ? add_v$3$y : regs$25$q;
       regs$26$clock = clock;
-      regs$26$d = (counter$q == 8'd0) ? beta_m : regs$26$q;
+      regs$26$d = (counter$q == 8'd3) ? add_v$0$y : regs$26$q;
       regs$27$clock = clock;
-      regs$27$d = (counter$q == 8'd0) ? beta_f : regs$27$q;
+      regs$27$d = (counter$q == 8'd11) ? add_v$3$y : regs$27$q;
       regs$28$clock = clock;
-      regs$28$d = (counter$q == 8'd0) ? scale : regs$28$q;
+      regs$28$d = (counter$q == 8'd11) ? regs$27$q : regs$28$q;
       regs$29$clock = clock;
-      regs$29$d = (counter$q == 8'd0) ? v_x$0 : regs$29$q;
+      regs$29$d = (counter$q == 8'd11) ? add_v$4$y : regs$29$q;
       regs$30$clock = clock;
-      regs$30$d = (counter$q == 8'd0) ? regs$29$q : regs$30$q;
+      regs$30$d = (counter$q == 8'd11) ? regs$29$q : regs$30$q;
       regs$31$clock = clock;
-      regs$31$d = (counter$q == 8'd0) ? v_y$0 : regs$31$q;
+      regs$31$d = (counter$q == 8'd8) ? add_v$0$y : regs$31$q;
       regs$32$clock = clock;
-      regs$32$d = (counter$q == 8'd0) ? regs$31$q : regs$32$q;
+      regs$32$d = (counter$q == 8'd0) ? m_0$0 : regs$32$q;
       regs$33$clock = clock;
-      regs$33$d = (counter$q == 8'd0) ? v_z$0 : regs$33$q;
+      regs$33$d = (counter$q == 8'd0) ? m_0$1 : regs$33$q;
       regs$34$clock = clock;
-      regs$34$d = (counter$q == 8'd0) ? regs$33$q : regs$34$q;
+      regs$34$d = (counter$q == 8'd0) ? m_0$2 : regs$34$q;
       regs$35$clock = clock;
-      regs$35$d = (counter$q == 8'd0) ? v_x$1 : regs$35$q;
+      regs$35$d = (counter$q == 8'd0) ? m_1$0 : regs$35$q;
       regs$36$clock = clock;
-      regs$36$d = (counter$q == 8'd0) ? regs$35$q : regs$36$q;
+      regs$36$d = (counter$q == 8'd0) ? m_1$1 : regs$36$q;
       regs$37$clock = clock;
-      regs$37$d = (counter$q == 8'd0) ? v_y$1 : regs$37$q;
+      regs$37$d = (counter$q == 8'd0) ? m_2$1 : regs$37$q;
       regs$38$clock = clock;
-      regs$38$d = (counter$q == 8'd0) ? regs$37$q : regs$38$q;
+      regs$38$d = (counter$q == 8'd0) ? m_2$2 : regs$38$q;
       regs$39$clock = clock;
-      regs$39$d = (counter$q == 8'd0) ? v_z$1 : regs$39$q;
+      regs$39$d = (counter$q == 8'd0) ? f_0$2 : regs$39$q;
       regs$40$clock = clock;
-      regs$40$d = (counter$q == 8'd0) ? regs$39$q : regs$40$q;
+      regs$40$d = (counter$q == 8'd0) ? f_0$3 : regs$40$q;
       regs$41$clock = clock;
-      regs$41$d = (counter$q == 8'd0) ? v_x$2 : regs$41$q;
+      regs$41$d = (counter$q == 8'd0) ? f_1$0 : regs$41$q;
       regs$42$clock = clock;
-      regs$42$d = (counter$q == 8'd0) ? regs$41$q : regs$42$q;
+      regs$42$d = (counter$q == 8'd0) ? f_1$1 : regs$42$q;
       regs$43$clock = clock;
-      regs$43$d = (counter$q == 8'd0) ? v_y$2 : regs$43$q;
+      regs$43$d = (counter$q == 8'd0) ? f_1$2 : regs$43$q;
       regs$44$clock = clock;
-      regs$44$d = (counter$q == 8'd0) ? regs$43$q : regs$44$q;
+      regs$44$d = (counter$q == 8'd0) ? f_2$0 : regs$44$q;
       regs$45$clock = clock;
-      regs$45$d = (counter$q == 8'd0) ? v_z$2 : regs$45$q;
+      regs$45$d = (counter$q == 8'd0) ? f_2$3 : regs$45$q;
       regs$46$clock = clock;
-      regs$46$d = (counter$q == 8'd0) ? regs$45$q : regs$46$q;
+      regs$46$d = (counter$q == 8'd0) ? v_y$0 : regs$46$q;
       regs$47$clock = clock;
-      regs$47$d = (counter$q == 8'd5) ? mul_v$0$y : regs$47$q;
+      regs$47$d = (counter$q == 8'd0) ? regs$46$q : regs$47$q;
       regs$48$clock = clock;
-      regs$48$d = (counter$q == 8'd5) ? mul_v$1$y : regs$48$q;
+      regs$48$d = (counter$q == 8'd0) ? v_x$1 : regs$48$q;
       regs$49$clock = clock;
-      regs$49$d = (counter$q == 8'd5) ? mul_v$2$y : regs$49$q;
+      regs$49$d = (counter$q == 8'd0) ? v_y$1 : regs$49$q;
       regs$50$clock = clock;
-      regs$50$d = (counter$q == 8'd9) ? add_v$0$y : regs$50$q;
+      regs$50$d = (counter$q == 8'd0) ? regs$49$q : regs$50$q;
       regs$51$clock = clock;
-      regs$51$d = (counter$q == 8'd13) ? add_v$2$y : regs$51$q;
+      regs$51$d = (counter$q == 8'd0) ? v_z$1 : regs$51$q;
       regs$52$clock = clock;
-      regs$52$d = (counter$q == 8'd5) ? mul_up$0$y : regs$52$q;
+      regs$52$d = (counter$q == 8'd0) ? v_y$2 : regs$52$q;
       regs$53$clock = clock;
-      regs$53$d = (counter$q == 8'd5) ? mul_up$1$y : regs$53$q;
+      regs$53$d = (counter$q == 8'd0) ? regs$52$q : regs$53$q;
       regs$54$clock = clock;
-      regs$54$d = (counter$q == 8'd5) ? mul_up$2$y : regs$54$q;
+      regs$54$d = (counter$q == 8'd13) ? add_v$3$y : regs$54$q;
       regs$55$clock = clock;
-      regs$55$d = (counter$q == 8'd9) ? add_up$0$y : regs$55$q;
+      regs$55$d = (counter$q == 8'd14) ? add_v$2$y : regs$55$q;
       regs$56$clock = clock;
-      regs$56$d = (counter$q == 8'd13) ? add_up$2$y : regs$56$q;
+      regs$56$d = (counter$q == 8'd15) ? add_v$3$y : regs$56$q;
       regs$57$clock = clock;
-      regs$57$d = (counter$q == 8'd5) ? mul_v$3$y : regs$57$q;
+      regs$57$d = (counter$q == 8'd0) ? add_v$1$y : regs$57$q;
       regs$58$clock = clock;
-      regs$58$d = (counter$q == 8'd5) ? mul_v$4$y : regs$58$q;
+      regs$58$d = (counter$q == 8'd11) ? add_v$3$y : regs$58$q;
       regs$59$clock = clock;
-      regs$59$d = (counter$q == 8'd6) ? mul_v$0$y : regs$59$q;
+      regs$59$d = (counter$q == 8'd5) ? add_v$0$y : regs$59$q;
       regs$60$clock = clock;
-      regs$60$d = (counter$q == 8'd9) ? add_v$1$y : regs$60$q;
+      regs$60$d = (counter$q == 8'd6) ? add_v$2$y : regs$60$q;
       regs$61$clock = clock;
-      regs$61$d = (counter$q == 8'd13) ? add_v$3$y : regs$61$q;
+      regs$61$d = (counter$q == 8'd12) ? add_v$2$y : regs$61$q;
       regs$62$clock = clock;
-      regs$62$d = (counter$q == 8'd5) ? mul_up$3$y : regs$62$q;
+      regs$62$d = (counter$q == 8'd7) ? add_v$4$y : regs$62$q;
       regs$63$clock = clock;
-      regs$63$d = (counter$q == 8'd5) ? mul_up$4$y : regs$63$q;
+      regs$63$d = (counter$q == 8'd0) ? m_0$1 : regs$63$q;
       regs$64$clock = clock;
-      regs$64$d = (counter$q == 8'd5) ? mul_up$5$y : regs$64$q;
+      regs$64$d = (counter$q == 8'd0) ? m_0$2 : regs$64$q;
       regs$65$clock = clock;
-      regs$65$d = (counter$q == 8'd9) ? add_up$1$y : regs$65$q;
+      regs$65$d = (counter$q == 8'd0) ? m_1$0 : regs$65$q;
       regs$66$clock = clock;
-      regs$66$d = (counter$q == 8'd13) ? add_up$3$y : regs$66$q;
+      regs$66$d = (counter$q == 8'd0) ? m_1$1 : regs$66$q;
       regs$67$clock = clock;
-      regs$67$d = (counter$q == 8'd6) ? mul_v$1$y : regs$67$q;
+      regs$67$d = (counter$q == 8'd0) ? m_1$2 : regs$67$q;
       regs$68$clock = clock;
-      regs$68$d = (counter$q == 8'd6) ? mul_v$2$y : regs$68$q;
+      regs$68$d = (counter$q == 8'd0) ? m_2$0 : regs$68$q;
       regs$69$clock = clock;
-      regs$69$d = (counter$q == 8'd6) ? mul_v$3$y : regs$69$q;
+      regs$69$d = (counter$q == 8'd0) ? m_2$2 : regs$69$q;
       regs$70$clock = clock;
-      regs$70$d = (counter$q == 8'd10) ? add_v$0$y : regs$70$q;
+      regs$70$d = (counter$q == 8'd0) ? f_0$0 : regs$70$q;
       regs$71$clock = clock;
-      regs$71$d = (counter$q == 8'd14) ? add_v$2$y : regs$71$q;
+      regs$71$d = (counter$q == 8'd0) ? f_0$1 : regs$71$q;
       regs$72$clock = clock;
-      regs$72$d = (counter$q == 8'd6) ? mul_up$0$y : regs$72$q;
+      regs$72$d = (counter$q == 8'd0) ? f_1$2 : regs$72$q;
       regs$73$clock = clock;
-      regs$73$d = (counter$q == 8'd6) ? mul_up$1$y : regs$73$q;
+      regs$73$d = (counter$q == 8'd0) ? f_1$3 : regs$73$q;
       regs$74$clock = clock;
-      regs$74$d = (counter$q == 8'd6) ? mul_up$2$y : regs$74$q;
+      regs$74$d = (counter$q == 8'd0) ? f_2$0 : regs$74$q;
       regs$75$clock = clock;
-      regs$75$d = (counter$q == 8'd10) ? add_up$0$y : regs$75$q;
+      regs$75$d = (counter$q == 8'd0) ? f_2$1 : regs$75$q;
       regs$76$clock = clock;
-      regs$76$d = (counter$q == 8'd14) ? add_up$3$y : regs$76$q;
+      regs$76$d = (counter$q == 8'd0) ? f_2$2 : regs$76$q;
       regs$77$clock = clock;
-      regs$77$d = (counter$q == 8'd6) ? mul_v$4$y : regs$77$q;
+      regs$77$d = (counter$q == 8'd0) ? v_z$0 : regs$77$q;
       regs$78$clock = clock;
-      regs$78$d = (counter$q == 8'd7) ? mul_v$0$y : regs$78$q;
+      regs$78$d = (counter$q == 8'd0) ? regs$77$q : regs$78$q;
       regs$79$clock = clock;
-      regs$79$d = (counter$q == 8'd7) ? mul_v$1$y : regs$79$q;
+      regs$79$d = (counter$q == 8'd0) ? v_x$1 : regs$79$q;
       regs$80$clock = clock;
-      regs$80$d = (counter$q == 8'd11) ? add_v$0$y : regs$80$q;
+      regs$80$d = (counter$q == 8'd0) ? v_z$1 : regs$80$q;
       regs$81$clock = clock;
-      regs$81$d = (counter$q == 8'd11) ? add_v$1$y : regs$81$q;
+      regs$81$d = (counter$q == 8'd0) ? regs$80$q : regs$81$q;
       regs$82$clock = clock;
-      regs$82$d = (counter$q == 8'd15) ? add_v$2$y : regs$82$q;
+      regs$82$d = (counter$q == 8'd0) ? v_x$2 : regs$82$q;
       regs$83$clock = clock;
-      regs$83$d = (counter$q == 8'd6) ? mul_up$3$y : regs$83$q;
+      regs$83$d = (counter$q == 8'd0) ? v_y$2 : regs$83$q;
       regs$84$clock = clock;
-      regs$84$d = (counter$q == 8'd6) ? mul_up$4$y : regs$84$q;
+      regs$84$d = (counter$q == 8'd0) ? v_z$2 : regs$84$q;
       regs$85$clock = clock;
-      regs$85$d = (counter$q == 8'd6) ? mul_up$5$y : regs$85$q;
+      regs$85$d = (counter$q == 8'd0) ? regs$84$q : regs$85$q;
       regs$86$clock = clock;
-      regs$86$d = (counter$q == 8'd10) ? add_up$1$y : regs$86$q;
+      regs$86$d = (counter$q == 8'd13) ? add_v$2$y : regs$86$q;
       regs$87$clock = clock;
-      regs$87$d = (counter$q == 8'd10) ? add_up$2$y : regs$87$q;
+      regs$87$d = (counter$q == 8'd13) ? add_v$3$y : regs$87$q;
       regs$88$clock = clock;
-      regs$88$d = (counter$q == 8'd14) ? add_up$4$y : regs$88$q;
+      regs$88$d = (counter$q == 8'd15) ? add_v$3$y : regs$88$q;
       regs$89$clock = clock;
-      regs$89$d = (counter$q == 8'd7) ? mul_v$2$y : regs$89$q;
+      regs$89$d = (counter$q == 8'd0) ? add_v$2$y : regs$89$q;
       regs$90$clock = clock;
-      regs$90$d = (counter$q == 8'd7) ? mul_v$3$y : regs$90$q;
+      regs$90$d = (counter$q == 8'd4) ? add_v$1$y : regs$90$q;
       regs$91$clock = clock;
-      regs$91$d = (counter$q == 8'd7) ? mul_v$4$y : regs$91$q;
+      regs$91$d = (counter$q == 8'd5) ? add_v$0$y : regs$91$q;
       regs$92$clock = clock;
-      regs$92$d = (counter$q == 8'd11) ? add_v$2$y : regs$92$q;
+      regs$92$d = (counter$q == 8'd11) ? add_v$4$y : regs$92$q;
       regs$93$clock = clock;
-      regs$93$d = (counter$q == 8'd15) ? add_v$3$y : regs$93$q;
+      regs$93$d = (counter$q == 8'd5) ? add_v$1$y : regs$93$q;
       regs$94$clock = clock;
-      regs$94$d = (counter$q == 8'd7) ? mul_up$0$y : regs$94$q;
+      regs$94$d = (counter$q == 8'd8) ? add_v$0$y : regs$94$q;
       regs$95$clock = clock;
-      regs$95$d = (counter$q == 8'd7) ? mul_up$1$y : regs$95$q;
+      regs$95$d = (counter$q == 8'd0) ? m_0$0 : regs$95$q;
       regs$96$clock = clock;
-      regs$96$d = (counter$q == 8'd7) ? mul_up$2$y : regs$96$q;
+      regs$96$d = (counter$q == 8'd0) ? m_0$2 : regs$96$q;
       regs$97$clock = clock;
-      regs$97$d = (counter$q == 8'd11) ? add_up$0$y : regs$97$q;
+      regs$97$d = (counter$q == 8'd0) ? m_1$0 : regs$97$q;
       regs$98$clock = clock;
-      regs$98$d = (counter$q == 8'd15) ? add_up$1$y : regs$98$q;
+      regs$98$d = (counter$q == 8'd0) ? m_1$1 : regs$98$q;
       regs$99$clock = clock;
-      regs$99$d = (counter$q == 8'd8) ? mul_v$0$y : regs$99$q;
+      regs$99$d = (counter$q == 8'd0) ? m_1$2 : regs$99$q;
       regs$100$clock = clock;
-      regs$100$d = (counter$q == 8'd8) ? mul_v$1$y : regs$100$q;
+      regs$100$d = (counter$q == 8'd0) ? m_2$0 : regs$100$q;
       regs$101$clock = clock;
-      regs$101$d = (counter$q == 8'd8) ? mul_v$2$y : regs$101$q;
+      regs$101$d = (counter$q == 8'd0) ? m_2$1 : regs$101$q;
       regs$102$clock = clock;
-      regs$102$d = (counter$q == 8'd12) ? add_v$0$y : regs$102$q;
+      regs$102$d = (counter$q == 8'd0) ? f_0$1 : regs$102$q;
       regs$103$clock = clock;
-      regs$103$d = (counter$q == 8'd0) ? add_v$1$y : regs$103$q;
+      regs$103$d = (counter$q == 8'd0) ? f_0$2 : regs$103$q;
       regs$104$clock = clock;
-      regs$104$d = (counter$q == 8'd7) ? mul_up$3$y : regs$104$q;
+      regs$104$d = (counter$q == 8'd0) ? f_0$3 : regs$104$q;
       regs$105$clock = clock;
-      regs$105$d = (counter$q == 8'd7) ? mul_up$4$y : regs$105$q;
+      regs$105$d = (counter$q == 8'd0) ? f_1$0 : regs$105$q;
       regs$106$clock = clock;
-      regs$106$d = (counter$q == 8'd7) ? mul_up$5$y : regs$106$q;
+      regs$106$d = (counter$q == 8'd0) ? f_1$1 : regs$106$q;
       regs$107$clock = clock;
-      regs$107$d = (counter$q == 8'd11) ? add_up$1$y : regs$107$q;
+      regs$107$d = (counter$q == 8'd0) ? f_2$2 : regs$107$q;
       regs$108$clock = clock;
-      regs$108$d = (counter$q == 8'd15) ? add_up$2$y : regs$108$q;
+      regs$108$d = (counter$q == 8'd0) ? f_2$3 : regs$108$q;
       regs$109$clock = clock;
-      regs$109$d = (counter$q == 8'd8) ? mul_v$3$y : regs$109$q;
+      regs$109$d = (counter$q == 8'd0) ? v_x$0 : regs$109$q;
       regs$110$clock = clock;
-      regs$110$d = (counter$q == 8'd8) ? mul_v$4$y : regs$110$q;
+      regs$110$d = (counter$q == 8'd0) ? regs$109$q : regs$110$q;
       regs$111$clock = clock;
-      regs$111$d = (counter$q == 8'd9) ? mul_v$0$y : regs$111$q;
+      regs$111$d = (counter$q == 8'd0) ? v_x$1 : regs$111$q;
       regs$112$clock = clock;
-      regs$112$d = (counter$q == 8'd12) ? add_v$1$y : regs$112$q;
+      regs$112$d = (counter$q == 8'd0) ? regs$111$q : regs$112$q;
       regs$113$clock = clock;
-      regs$113$d = (counter$q == 8'd0) ? add_v$2$y : regs$113$q;
+      regs$113$d = (counter$q == 8'd0) ? v_y$1 : regs$113$q;
       regs$114$clock = clock;
-      regs$114$d = (counter$q == 8'd8) ? mul_up$0$y : regs$114$q;
+      regs$114$d = (counter$q == 8'd0) ? v_x$2 : regs$114$q;
       regs$115$clock = clock;
-      regs$115$d = (counter$q == 8'd8) ? mul_up$1$y : regs$115$q;
+      regs$115$d = (counter$q == 8'd0) ? regs$114$q : regs$115$q;
       regs$116$clock = clock;
-      regs$116$d = (counter$q == 8'd8) ? mul_up$2$y : regs$116$q;
+      regs$116$d = (counter$q == 8'd0) ? v_z$2 : regs$116$q;
       regs$117$clock = clock;
-      regs$117$d = (counter$q == 8'd12) ? add_up$0$y : regs$117$q;
+      regs$117$d = (counter$q == 8'd13) ? add_v$3$y : regs$117$q;
       regs$118$clock = clock;
-      regs$118$d = (counter$q == 8'd0) ? add_up$0$y : regs$118$q;
+      regs$118$d = (counter$q == 8'd14) ? add_v$2$y : regs$118$q;
       regs$119$clock = clock;
-      regs$119$d = (counter$q == 8'd9) ? mul_v$1$y : regs$119$q;
+      regs$119$d = (counter$q == 8'd2) ? add_v$0$y : regs$119$q;
       regs$120$clock = clock;
-      regs$120$d = (counter$q == 8'd9) ? mul_v$2$y : regs$120$q;
+      regs$120$d = (counter$q == 8'd4) ? add_v$1$y : regs$120$q;
       regs$121$clock = clock;
-      regs$121$d = (counter$q == 8'd9) ? mul_v$3$y : regs$121$q;
+      regs$121$d = (counter$q == 8'd6) ? add_v$2$y : regs$121$q;
       regs$122$clock = clock;
-      regs$122$d = (counter$q == 8'd13) ? add_v$0$y : regs$122$q;
+      regs$122$d = (counter$q == 8'd7) ? add_v$4$y : regs$122$q;
       regs$123$clock = clock;
-      regs$123$d = (counter$q == 8'd13) ? add_v$1$y : regs$123$q;
+      regs$123$d = (counter$q == 8'd0) ? m_0$0 : regs$123$q;
       regs$124$clock = clock;
-      regs$124$d = (counter$q == 8'd1) ? add_v$0$y : regs$124$q;
+      regs$124$d = (counter$q == 8'd0) ? m_0$1 : regs$124$q;
       regs$125$clock = clock;
-      regs$125$d = (counter$q == 8'd8) ? mul_up$3$y : regs$125$q;
+      regs$125$d = (counter$q == 8'd0) ? m_1$1 : regs$125$q;
       regs$126$clock = clock;
-      regs$126$d = (counter$q == 8'd8) ? mul_up$4$y : regs$126$q;
+      regs$126$d = (counter$q == 8'd0) ? m_1$2 : regs$126$q;
       regs$127$clock = clock;
-      regs$127$d = (counter$q == 8'd8) ? mul_up$5$y : regs$127$q;
+      regs$127$d = (counter$q == 8'd0) ? m_2$0 : regs$127$q;
       regs$128$clock = clock;
-      regs$128$d = (counter$q == 8'd12) ? add_up$1$y : regs$128$q;
+      regs$128$d = (counter$q == 8'd0) ? m_2$1 : regs$128$q;
       regs$129$clock = clock;
-      regs$129$d = (counter$q == 8'd12) ? add_up$2$y : regs$129$q;
+      regs$129$d = (counter$q == 8'd0) ? m_2$2 : regs$129$q;
       regs$130$clock = clock;
-      regs$130$d = (counter$q == 8'd0) ? add_up$1$y : regs$130$q;
+      regs$130$d = (counter$q == 8'd0) ? f_0$0 : regs$130$q;
       regs$131$clock = clock;
-      regs$131$d = (counter$q == 8'd9) ? mul_v$4$y : regs$131$q;
+      regs$131$d = (counter$q == 8'd0) ? f_0$3 : regs$131$q;
       regs$132$clock = clock;
-      regs$132$d = (counter$q == 8'd10) ? mul_v$0$y : regs$132$q;
+      regs$132$d = (counter$q == 8'd0) ? f_1$1 : regs$132$q;
       regs$133$clock = clock;
-      regs$133$d = (counter$q == 8'd10) ? mul_v$1$y : regs$133$q;
+      regs$133$d = (counter$q == 8'd0) ? f_1$2 : regs$133$q;
       regs$134$clock = clock;
-      regs$134$d = (counter$q == 8'd14) ? add_v$0$y : regs$134$q;
+      regs$134$d = (counter$q == 8'd0) ? f_1$3 : regs$134$q;
       regs$135$clock = clock;
-      regs$135$d = (counter$q == 8'd2) ? add_v$0$y : regs$135$q;
+      regs$135$d = (counter$q == 8'd0) ? f_2$0 : regs$135$q;
       regs$136$clock = clock;
-      regs$136$d = (counter$q == 8'd9) ? mul_up$0$y : regs$136$q;
+      regs$136$d = (counter$q == 8'd0) ? f_2$1 : regs$136$q;
       regs$137$clock = clock;
-      regs$137$d = (counter$q == 8'd9) ? mul_up$1$y : regs$137$q;
+      regs$137$d = (counter$q == 8'd0) ? v_y$0 : regs$137$q;
       regs$138$clock = clock;
-      regs$138$d = (counter$q == 8'd9) ? mul_up$2$y : regs$138$q;
+      regs$138$d = (counter$q == 8'd0) ? regs$137$q : regs$138$q;
       regs$139$clock = clock;
-      regs$139$d = (counter$q == 8'd13) ? add_up$0$y : regs$139$q;
+      regs$139$d = (counter$q == 8'd0) ? v_y$1 : regs$139$q;
       regs$140$clock = clock;
-      regs$140$d = (counter$q == 8'd1) ? add_up$0$y : regs$140$q;
+      regs$140$d = (counter$q == 8'd0) ? regs$139$q : regs$140$q;
       regs$141$clock = clock;
-      regs$141$d = (counter$q == 8'd10) ? mul_v$2$y : regs$141$q;
+      regs$141$d = (counter$q == 8'd0) ? v_x$2 : regs$141$q;
       regs$142$clock = clock;
-      regs$142$d = (counter$q == 8'd10) ? mul_v$3$y : regs$142$q;
+      regs$142$d = (counter$q == 8'd0) ? v_y$2 : regs$142$q;
       regs$143$clock = clock;
-      regs$143$d = (counter$q == 8'd10) ? mul_v$4$y : regs$143$q;
+      regs$143$d = (counter$q == 8'd0) ? regs$142$q : regs$143$q;
       regs$144$clock = clock;
-      regs$144$d = (counter$q == 8'd14) ? add_v$1$y : regs$144$q;
+      regs$144$d = (counter$q == 8'd13) ? add_v$2$y : regs$144$q;
       regs$145$clock = clock;
       regs$145$d = (counter$q == 8'd2) ? add_v$1$y : regs$145$q;
       regs$146$clock = clock;
-      regs$146$d = (counter$q == 8'd9) ? mul_up$3$y : regs$146$q;
+      regs$146$d = (counter$q == 8'd5) ? add_v$0$y : regs$146$q;
       regs$147$clock = clock;
-      regs$147$d = (counter$q == 8'd9) ? mul_up$4$y : regs$147$q;
+      regs$147$d = (counter$q == 8'd5) ? add_v$1$y : regs$147$q;
       regs$148$clock = clock;
-      regs$148$d = (counter$q == 8'd9) ? mul_up$5$y : regs$148$q;
+      regs$148$d = (counter$q == 8'd12) ? add_v$2$y : regs$148$q;
       regs$149$clock = clock;
-      regs$149$d = (counter$q == 8'd13) ? add_up$1$y : regs$149$q;
+      regs$149$d = (counter$q == 8'd0) ? m_0$0 : regs$149$q;
       regs$150$clock = clock;
-      regs$150$d = (counter$q == 8'd1) ? add_up$1$y : regs$150$q;
+      regs$150$d = (counter$q == 8'd0) ? m_1$0 : regs$150$q;
       regs$151$clock = clock;
-      regs$151$d = (counter$q == 8'd11) ? mul_v$0$y : regs$151$q;
+      regs$151$d = (counter$q == 8'd0) ? m_2$0 : regs$151$q;
       regs$152$clock = clock;
-      regs$152$d = (counter$q == 8'd11) ? mul_v$1$y : regs$152$q;
+      regs$152$d = (counter$q == 8'd0) ? alpha_m : regs$152$q;
       regs$153$clock = clock;
-      regs$153$d = (counter$q == 8'd11) ? mul_v$2$y : regs$153$q;
+      regs$153$d = (counter$q == 8'd0) ? f_0$0 : regs$153$q;
       regs$154$clock = clock;
-      regs$154$d = (counter$q == 8'd15) ? add_v$0$y : regs$154$q;
+      regs$154$d = (counter$q == 8'd0) ? f_0$2 : regs$154$q;
       regs$155$clock = clock;
-      regs$155$d = (counter$q == 8'd3) ? add_v$0$y : regs$155$q;
+      regs$155$d = (counter$q == 8'd0) ? beta_m : regs$155$q;
       regs$156$clock = clock;
-      regs$156$d = (counter$q == 8'd10) ? mul_up$0$y : regs$156$q;
+      regs$156$d = (counter$q == 8'd0) ? v_x$0 : regs$156$q;
       regs$157$clock = clock;
-      regs$157$d = (counter$q == 8'd10) ? mul_up$1$y : regs$157$q;
+      regs$157$d = (counter$q == 8'd0) ? v_z$0 : regs$157$q;
       regs$158$clock = clock;
-      regs$158$d = (counter$q == 8'd10) ? mul_up$2$y : regs$158$q;
+      regs$158$d = (counter$q == 8'd0) ? v_y$1 : regs$158$q;
       regs$159$clock = clock;
-      regs$159$d = (counter$q == 8'd14) ? add_up$0$y : regs$159$q;
+      regs$159$d = (counter$q == 8'd0) ? regs$158$q : regs$159$q;
       regs$160$clock = clock;
-      regs$160$d = (counter$q == 8'd2) ? add_up$0$y : regs$160$q;
+      regs$160$d = (counter$q == 8'd0) ? v_y$2 : regs$160$q;
       regs$161$clock = clock;
-      regs$161$d = (counter$q == 8'd11) ? mul_v$3$y : regs$161$q;
+      regs$161$d = (counter$q == 8'd0) ? regs$160$q : regs$161$q;
       regs$162$clock = clock;
-      regs$162$d = (counter$q == 8'd11) ? mul_v$4$y : regs$162$q;
+      regs$162$d = (counter$q == 8'd13) ? add_up$2$y : regs$162$q;
       regs$163$clock = clock;
-      regs$163$d = (counter$q == 8'd12) ? mul_v$0$y : regs$163$q;
+      regs$163$d = (counter$q == 8'd14) ? add_up$3$y : regs$163$q;
       regs$164$clock = clock;
-      regs$164$d = (counter$q == 8'd15) ? add_v$1$y : regs$164$q;
+      regs$164$d = (counter$q == 8'd15) ? add_up$2$y : regs$164$q;
       regs$165$clock = clock;
-      regs$165$d = (counter$q == 8'd0) ? add_v$0$y : regs$165$q;
+      regs$165$d = (counter$q == 8'd15) ? add_up$0$y : regs$165$q;
       regs$166$clock = clock;
-      regs$166$d = (counter$q == 8'd4) ? add_v$0$y : regs$166$q;
+      regs$166$d = (counter$q == 8'd8) ? add_up$0$y : regs$166$q;
       regs$167$clock = clock;
-      regs$167$d = (counter$q == 8'd10) ? mul_up$3$y : regs$167$q;
+      regs$167$d = (counter$q == 8'd11) ? add_v$3$y : regs$167$q;
       regs$168$clock = clock;
-      regs$168$d = (counter$q == 8'd10) ? mul_up$4$y : regs$168$q;
+      regs$168$d = (counter$q == 8'd11) ? regs$167$q : regs$168$q;
       regs$169$clock = clock;
-      regs$169$d = (counter$q == 8'd10) ? mul_up$5$y : regs$169$q;
+      regs$169$d = (counter$q == 8'd8) ? scale_e$0$y : regs$169$q;
       regs$170$clock = clock;
-      regs$170$d = (counter$q == 8'd14) ? add_up$1$y : regs$170$q;
+      regs$170$d = (counter$q == 8'd8) ? regs$169$q : regs$170$q;
       regs$171$clock = clock;
-      regs$171$d = (counter$q == 8'd14) ? add_up$2$y : regs$171$q;
+      regs$171$d = (counter$q == 8'd13) ? add_up$5$y : regs$171$q;
       regs$172$clock = clock;
-      regs$172$d = (counter$q == 8'd2) ? add_up$1$y : regs$172$q;
+      regs$172$d = (counter$q == 8'd15) ? add_up$6$y : regs$172$q;
       regs$173$clock = clock;
-      regs$173$d = (counter$q == 8'd11) ? mul_up$0$y : regs$173$q;
+      regs$173$d = (counter$q == 8'd15) ? add_up$7$y : regs$173$q;
       regs$174$clock = clock;
-      regs$174$d = (counter$q == 8'd11) ? mul_up$1$y : regs$174$q;
+      regs$174$d = (counter$q == 8'd7) ? scale_e$0$y : regs$174$q;
       regs$175$clock = clock;
-      regs$175$d = (counter$q == 8'd15) ? add_up$0$y : regs$175$q;
+      regs$175$d = (counter$q == 8'd7) ? regs$174$q : regs$175$q;
       regs$176$clock = clock;
-      regs$176$d = (counter$q == 8'd4) ? add_up$0$y : regs$176$q;
+      regs$176$d = (counter$q == 8'd2) ? add_up$2$y : regs$176$q;
       regs$177$clock = clock;
-      regs$177$d = (counter$q == 8'd4) ? add_up$1$y : regs$177$q;
+      regs$177$d = (counter$q == 8'd0) ? m_0$1 : regs$177$q;
       regs$178$clock = clock;
-      regs$178$d = (counter$q == 8'd8) ? add_up$0$y : regs$178$q;
+      regs$178$d = (counter$q == 8'd0) ? m_1$1 : regs$178$q;
       regs$179$clock = clock;
-      regs$179$d = (counter$q == 8'd4) ? mul_up$0$y : regs$179$q;
+      regs$179$d = (counter$q == 8'd0) ? m_2$1 : regs$179$q;
       regs$180$clock = clock;
-      regs$180$d = (counter$q == 8'd2) ? mul_v$0$y : regs$180$q;
+      regs$180$d = (counter$q == 8'd0) ? alpha_f : regs$180$q;
       regs$181$clock = clock;
-      regs$181$d = (counter$q == 8'd2) ? mul_v$1$y : regs$181$q;
+      regs$181$d = (counter$q == 8'd0) ? f_1$0 : regs$181$q;
       regs$182$clock = clock;
-      regs$182$d = (counter$q == 8'd3) ? mul_v$0$y : regs$182$q;
+      regs$182$d = (counter$q == 8'd0) ? f_1$2 : regs$182$q;
       regs$183$clock = clock;
-      regs$183$d = (counter$q == 8'd6) ? add_v$0$y : regs$183$q;
+      regs$183$d = (counter$q == 8'd0) ? beta_f : regs$183$q;
       regs$184$clock = clock;
-      regs$184$d = (counter$q == 8'd7) ? add_v$0$y : regs$184$q;
+      regs$184$d = (counter$q == 8'd0) ? v_y$0 : regs$184$q;
       regs$185$clock = clock;
-      regs$185$d = (counter$q == 8'd11) ? add_v$3$y : regs$185$q;
+      regs$185$d = (counter$q == 8'd0) ? v_z$1 : regs$185$q;
       regs$186$clock = clock;
-      regs$186$d = (counter$q == 8'd11) ? regs$185$q : regs$186$q;
+      regs$186$d = (counter$q == 8'd0) ? regs$185$q : regs$186$q;
       regs$187$clock = clock;
-      regs$187$d = (counter$q == 8'd11) ? regs$186$q : regs$187$q;
+      regs$187$d = (counter$q == 8'd0) ? v_z$2 : regs$187$q;
       regs$188$clock = clock;
-      regs$188$d = (counter$q == 8'd8) ? add_up$3$y : regs$188$q;
+      regs$188$d = (counter$q == 8'd0) ? regs$187$q : regs$188$q;
       regs$189$clock = clock;
-      regs$189$d = (counter$q == 8'd2) ? mul_up$0$y : regs$189$q;
+      regs$189$d = (counter$q == 8'd13) ? add_up$3$y : regs$189$q;
       regs$190$clock = clock;
-      regs$190$d = (counter$q == 8'd2) ? mul_up$1$y : regs$190$q;
+      regs$190$d = (counter$q == 8'd14) ? add_up$3$y : regs$190$q;
       regs$191$clock = clock;
-      regs$191$d = (counter$q == 8'd3) ? mul_up$0$y : regs$191$q;
+      regs$191$d = (counter$q == 8'd0) ? add_up$0$y : regs$191$q;
       regs$192$clock = clock;
-      regs$192$d = (counter$q == 8'd6) ? add_up$0$y : regs$192$q;
+      regs$192$d = (counter$q == 8'd15) ? add_up$0$y : regs$192$q;
       regs$193$clock = clock;
-      regs$193$d = (counter$q == 8'd12) ? add_up$3$y : regs$193$q;
+      regs$193$d = (counter$q == 8'd4) ? add_v$1$y : regs$193$q;
       regs$194$clock = clock;
-      regs$194$d = (counter$q == 8'd0) ? add_up$6$y : regs$194$q;
+      regs$194$d = (counter$q == 8'd4) ? regs$193$q : regs$194$q;
       regs$195$clock = clock;
-      regs$195$d = (counter$q == 8'd5) ? scale_e$0$y : regs$195$q;
+      regs$195$d = (counter$q == 8'd8) ? scale_e$0$y : regs$195$q;
       regs$196$clock = clock;
-      regs$196$d = (counter$q == 8'd5) ? regs$195$q : regs$196$q;
+      regs$196$d = (counter$q == 8'd8) ? regs$195$q : regs$196$q;
       regs$197$clock = clock;
-      regs$197$d = (counter$q == 8'd4) ? mul_v$0$y : regs$197$q;
+      regs$197$d = (counter$q == 8'd14) ? add_up$5$y : regs$197$q;
       regs$198$clock = clock;
-      regs$198$d = (counter$q == 8'd12) ? mul_v$1$y : regs$198$q;
+      regs$198$d = (counter$q == 8'd8) ? add_up$1$y : regs$198$q;
       regs$199$clock = clock;
-      regs$199$d = (counter$q == 8'd12) ? mul_v$2$y : regs$199$q;
+      regs$199$d = (counter$q == 8'd15) ? add_up$6$y : regs$199$q;
       regs$200$clock = clock;
-      regs$200$d = (counter$q == 8'd0) ? add_v$3$y : regs$200$q;
+      regs$200$d = (counter$q == 8'd15) ? add_up$7$y : regs$200$q;
       regs$201$clock = clock;
-      regs$201$d = (counter$q == 8'd0) ? add_v$4$y : regs$201$q;
+      regs$201$d = (counter$q == 8'd12) ? add_v$2$y : regs$201$q;
       regs$202$clock = clock;
-      regs$202$d = (counter$q == 8'd4) ? add_v$1$y : regs$202$q;
+      regs$202$d = (counter$q == 8'd12) ? regs$201$q : regs$202$q;
       regs$203$clock = clock;
-      regs$203$d = (counter$q == 8'd4) ? regs$202$q : regs$203$q;
+      regs$203$d = (counter$q == 8'd1) ? add_up$7$y : regs$203$q;
       regs$204$clock = clock;
-      regs$204$d = (counter$q == 8'd8) ? add_up$4$y : regs$204$q;
+      regs$204$d = (counter$q == 8'd0) ? m_0$2 : regs$204$q;
       regs$205$clock = clock;
-      regs$205$d = (counter$q == 8'd4) ? mul_up$3$y : regs$205$q;
+      regs$205$d = (counter$q == 8'd0) ? m_1$2 : regs$205$q;
       regs$206$clock = clock;
-      regs$206$d = (counter$q == 8'd4) ? mul_up$4$y : regs$206$q;
+      regs$206$d = (counter$q == 8'd0) ? m_2$2 : regs$206$q;
       regs$207$clock = clock;
-      regs$207$d = (counter$q == 8'd11) ? mul_up$2$y : regs$207$q;
+      regs$207$d = (counter$q == 8'd0) ? f_2$0 : regs$207$q;
       regs$208$clock = clock;
-      regs$208$d = (counter$q == 8'd9) ? add_up$6$y : regs$208$q;
+      regs$208$d = (counter$q == 8'd0) ? f_2$2 : regs$208$q;
       regs$209$clock = clock;
-      regs$209$d = (counter$q == 8'd15) ? add_up$3$y : regs$209$q;
+      regs$209$d = (counter$q == 8'd0) ? v_z$0 : regs$209$q;
       regs$210$clock = clock;
-      regs$210$d = (counter$q == 8'd3) ? add_up$0$y : regs$210$q;
+      regs$210$d = (counter$q == 8'd0) ? regs$209$q : regs$210$q;
       regs$211$clock = clock;
-      regs$211$d = (counter$q == 8'd8) ? scale_e$0$y : regs$211$q;
+      regs$211$d = (counter$q == 8'd0) ? v_x$1 : regs$211$q;
       regs$212$clock = clock;
-      regs$212$d = (counter$q == 8'd8) ? regs$211$q : regs$212$q;
+      regs$212$d = (counter$q == 8'd0) ? regs$211$q : regs$212$q;
       regs$213$clock = clock;
-      regs$213$d = (counter$q == 8'd12) ? mul_v$3$y : regs$213$q;
+      regs$213$d = (counter$q == 8'd0) ? v_x$2 : regs$213$q;
       regs$214$clock = clock;
-      regs$214$d = (counter$q == 8'd12) ? mul_v$4$y : regs$214$q;
+      regs$214$d = (counter$q == 8'd0) ? regs$213$q : regs$214$q;
       regs$215$clock = clock;
-      regs$215$d = (counter$q == 8'd13) ? mul_v$0$y : regs$215$q;
+      regs$215$d = (counter$q == 8'd0) ? v_z$2 : regs$215$q;
       regs$216$clock = clock;
-      regs$216$d = (counter$q == 8'd1) ? add_v$1$y : regs$216$q;
+      regs$216$d = (counter$q == 8'd13) ? add_up$2$y : regs$216$q;
       regs$217$clock = clock;
-      regs$217$d = (counter$q == 8'd1) ? add_v$2$y : regs$217$q;
+      regs$217$d = (counter$q == 8'd14) ? add_up$3$y : regs$217$q;
       regs$218$clock = clock;
-      regs$218$d = (counter$q == 8'd5) ? add_v$0$y : regs$218$q;
+      regs$218$d = (counter$q == 8'd0) ? add_up$0$y : regs$218$q;
       regs$219$clock = clock;
-      regs$219$d = (counter$q == 8'd5) ? regs$218$q : regs$219$q;
+      regs$219$d = (counter$q == 8'd1) ? add_up$0$y : regs$219$q;
       regs$220$clock = clock;
-      regs$220$d = (counter$q == 8'd5) ? regs$219$q : regs$220$q;
+      regs$220$d = (counter$q == 8'd15) ? add_up$0$y : regs$220$q;
       regs$221$clock = clock;
-      regs$221$d = (counter$q == 8'd5) ? regs$220$q : regs$221$q;
+      regs$221$d = (counter$q == 8'd5) ? scale_e$0$y : regs$221$q;
       regs$222$clock = clock;
-      regs$222$d = (counter$q == 8'd8) ? add_up$5$y : regs$222$q;
+      regs$222$d = (counter$q == 8'd5) ? regs$221$q : regs$222$q;
       regs$223$clock = clock;
-      regs$223$d = (counter$q == 8'd11) ? mul_up$3$y : regs$223$q;
+      regs$223$d = (counter$q == 8'd4) ? add_v$1$y : regs$223$q;
       regs$224$clock = clock;
-      regs$224$d = (counter$q == 8'd11) ? mul_up$4$y : regs$224$q;
+      regs$224$d = (counter$q == 8'd4) ? regs$223$q : regs$224$q;
       regs$225$clock = clock;
-      regs$225$d = (counter$q == 8'd11) ? mul_up$5$y : regs$225$q;
+      regs$225$d = (counter$q == 8'd10) ? scale_e$0$y : regs$225$q;
       regs$226$clock = clock;
-      regs$226$d = (counter$q == 8'd15) ? add_up$4$y : regs$226$q;
+      regs$226$d = (counter$q == 8'd10) ? regs$225$q : regs$226$q;
       regs$227$clock = clock;
-      regs$227$d = (counter$q == 8'd15) ? add_up$5$y : regs$227$q;
+      regs$227$d = (counter$q == 8'd15) ? add_up$6$y : regs$227$q;
       regs$228$clock = clock;
-      regs$228$d = (counter$q == 8'd3) ? add_up$1$y : regs$228$q;
+      regs$228$d = (counter$q == 8'd8) ? add_up$2$y : regs$228$q;
       regs$229$clock = clock;
-      regs$229$d = (counter$q == 8'd8) ? scale_z$0$y : regs$229$q;
+      regs$229$d = (counter$q == 8'd2) ? add_up$2$y : regs$229$q;
       regs$230$clock = clock;
-      regs$230$d = (counter$q == 8'd9) ? scale_e$0$y : regs$230$q;
+      regs$230$d = (counter$q == 8'd0) ? m_0$0 : regs$230$q;
       regs$231$clock = clock;
-      regs$231$d = (counter$q == 8'd9) ? regs$230$q : regs$231$q;
+      regs$231$d = (counter$q == 8'd0) ? m_1$0 : regs$231$q;
       regs$232$clock = clock;
-      regs$232$d = (counter$q == 8'd9) ? regs$231$q : regs$232$q;
+      regs$232$d = (counter$q == 8'd0) ? m_2$0 : regs$232$q;
       regs$233$clock = clock;
-      regs$233$d = (counter$q == 8'd10) ? scale_s$0$y : regs$233$q;
+      regs$233$d = (counter$q == 8'd0) ? f_0$1 : regs$233$q;
       regs$234$clock = clock;
-      regs$234$d = (counter$q == 8'd14) ? add_up$5$y : regs$234$q;
+      regs$234$d = (counter$q == 8'd0) ? f_0$3 : regs$234$q;
       regs$235$clock = clock;
-      regs$235$d = (counter$q == 8'd13) ? add_up$5$y : regs$235$q;
+      regs$235$d = (counter$q == 8'd0) ? v_x$0 : regs$235$q;
       regs$236$clock = clock;
-      regs$236$d = (counter$q == 8'd4) ? add_up$2$y : regs$236$q;
+      regs$236$d = (counter$q == 8'd0) ? regs$235$q : regs$236$q;
       regs$237$clock = clock;
-      regs$237$d = (counter$q == 8'd4) ? add_up$3$y : regs$237$q;
+      regs$237$d = (counter$q == 8'd0) ? v_y$1 : regs$237$q;
       regs$238$clock = clock;
-      regs$238$d = (counter$q == 8'd8) ? add_up$1$y : regs$238$q;
+      regs$238$d = (counter$q == 8'd0) ? regs$237$q : regs$238$q;
       regs$239$clock = clock;
-      regs$239$d = (counter$q == 8'd4) ? mul_up$1$y : regs$239$q;
+      regs$239$d = (counter$q == 8'd0) ? v_y$2 : regs$239$q;
       regs$240$clock = clock;
-      regs$240$d = (counter$q == 8'd2) ? mul_v$2$y : regs$240$q;
+      regs$240$d = (counter$q == 8'd0) ? regs$239$q : regs$240$q;
       regs$241$clock = clock;
-      regs$241$d = (counter$q == 8'd2) ? mul_v$3$y : regs$241$q;
+      regs$241$d = (counter$q == 8'd13) ? add_up$3$y : regs$241$q;
       regs$242$clock = clock;
-      regs$242$d = (counter$q == 8'd3) ? mul_v$1$y : regs$242$q;
+      regs$242$d = (counter$q == 8'd15) ? add_up$1$y : regs$242$q;
       regs$243$clock = clock;
-      regs$243$d = (counter$q == 8'd6) ? add_v$1$y : regs$243$q;
+      regs$243$d = (counter$q == 8'd1) ? add_up$0$y : regs$243$q;
       regs$244$clock = clock;
-      regs$244$d = (counter$q == 8'd7) ? add_v$1$y : regs$244$q;
+      regs$244$d = (counter$q == 8'd1) ? add_up$1$y : regs$244$q;
       regs$245$clock = clock;
-      regs$245$d = (counter$q == 8'd11) ? add_v$4$y : regs$245$q;
+      regs$245$d = (counter$q == 8'd11) ? add_v$3$y : regs$245$q;
       regs$246$clock = clock;
       regs$246$d = (counter$q == 8'd11) ? regs$245$q : regs$246$q;
       regs$247$clock = clock;
-      regs$247$d = (counter$q == 8'd8) ? add_up$6$y : regs$247$q;
+      regs$247$d = (counter$q == 8'd11) ? regs$246$q : regs$247$q;
       regs$248$clock = clock;
-      regs$248$d = (counter$q == 8'd2) ? mul_up$2$y : regs$248$q;
+      regs$248$d = (counter$q == 8'd14) ? add_up$5$y : regs$248$q;
       regs$249$clock = clock;
-      regs$249$d = (counter$q == 8'd2) ? mul_up$3$y : regs$249$q;
+      regs$249$d = (counter$q == 8'd13) ? add_up$5$y : regs$249$q;
       regs$250$clock = clock;
-      regs$250$d = (counter$q == 8'd3) ? mul_up$1$y : regs$250$q;
+      regs$250$d = (counter$q == 8'd6) ? scale_e$0$y : regs$250$q;
       regs$251$clock = clock;
-      regs$251$d = (counter$q == 8'd6) ? add_up$1$y : regs$251$q;
+      regs$251$d = (counter$q == 8'd5) ? add_v$1$y : regs$251$q;
       regs$252$clock = clock;
-      regs$252$d = (counter$q == 8'd12) ? add_up$4$y : regs$252$q;
+      regs$252$d = (counter$q == 8'd5) ? regs$251$q : regs$252$q;
       regs$253$clock = clock;
-      regs$253$d = (counter$q == 8'd0) ? add_up$7$y : regs$253$q;
+      regs$253$d = (counter$q == 8'd1) ? add_up$7$y : regs$253$q;
       regs$254$clock = clock;
-      regs$254$d = (counter$q == 8'd6) ? scale_e$0$y : regs$254$q;
+      regs$254$d = (counter$q == 8'd0) ? m_0$1 : regs$254$q;
       regs$255$clock = clock;
-      regs$255$d = (counter$q == 8'd6) ? regs$254$q : regs$255$q;
+      regs$255$d = (counter$q == 8'd0) ? m_1$1 : regs$255$q;
       regs$256$clock = clock;
-      regs$256$d = (counter$q == 8'd4) ? mul_v$1$y : regs$256$q;
+      regs$256$d = (counter$q == 8'd0) ? m_2$1 : regs$256$q;
       regs$257$clock = clock;
-      regs$257$d = (counter$q == 8'd13) ? mul_v$1$y : regs$257$q;
+      regs$257$d = (counter$q == 8'd0) ? f_1$1 : regs$257$q;
       regs$258$clock = clock;
-      regs$258$d = (counter$q == 8'd13) ? mul_v$2$y : regs$258$q;
+      regs$258$d = (counter$q == 8'd0) ? f_1$3 : regs$258$q;
       regs$259$clock = clock;
-      regs$259$d = (counter$q == 8'd1) ? add_v$3$y : regs$259$q;
+      regs$259$d = (counter$q == 8'd0) ? v_y$0 : regs$259$q;
       regs$260$clock = clock;
-      regs$260$d = (counter$q == 8'd1) ? add_v$4$y : regs$260$q;
+      regs$260$d = (counter$q == 8'd0) ? regs$259$q : regs$260$q;
       regs$261$clock = clock;
-      regs$261$d = (counter$q == 8'd5) ? add_v$1$y : regs$261$q;
+      regs$261$d = (counter$q == 8'd0) ? v_z$1 : regs$261$q;
       regs$262$clock = clock;
-      regs$262$d = (counter$q == 8'd5) ? regs$261$q : regs$262$q;
+      regs$262$d = (counter$q == 8'd0) ? regs$261$q : regs$262$q;
       regs$263$clock = clock;
-      regs$263$d = (counter$q == 8'd8) ? add_up$7$y : regs$263$q;
+      regs$263$d = (counter$q == 8'd0) ? v_x$2 : regs$263$q;
       regs$264$clock = clock;
-      regs$264$d = (counter$q == 8'd4) ? mul_up$5$y : regs$264$q;
+      regs$264$d = (counter$q == 8'd0) ? v_z$2 : regs$264$q;
       regs$265$clock = clock;
-      regs$265$d = (counter$q == 8'd12) ? mul_up$0$y : regs$265$q;
+      regs$265$d = (counter$q == 8'd0) ? regs$264$q : regs$265$q;
       regs$266$clock = clock;
-      regs$266$d = (counter$q == 8'd12) ? mul_up$1$y : regs$266$q;
+      regs$266$d = (counter$q == 8'd13) ? add_up$2$y : regs$266$q;
       regs$267$clock = clock;
-      regs$267$d = (counter$q == 8'd0) ? add_up$2$y : regs$267$q;
+      regs$267$d = (counter$q == 8'd15) ? add_up$2$y : regs$267$q;
       regs$268$clock = clock;
-      regs$268$d = (counter$q == 8'd0) ? add_up$3$y : regs$268$q;
+      regs$268$d = (counter$q == 8'd1) ? add_up$1$y : regs$268$q;
       regs$269$clock = clock;
-      regs$269$d = (counter$q == 8'd4) ? add_up$6$y : regs$269$q;
+      regs$269$d = (counter$q == 8'd2) ? add_up$0$y : regs$269$q;
       regs$270$clock = clock;
-      regs$270$d = (counter$q == 8'd10) ? scale_e$0$y : regs$270$q;
+      regs$270$d = (counter$q == 8'd14) ? add_up$5$y : regs$270$q;
       regs$271$clock = clock;
-      regs$271$d = (counter$q == 8'd10) ? regs$270$q : regs$271$q;
+      regs$271$d = (counter$q == 8'd13) ? add_up$5$y : regs$271$q;
       regs$272$clock = clock;
-      regs$272$d = (counter$q == 8'd13) ? mul_v$3$y : regs$272$q;
+      regs$272$d = (counter$q == 8'd11) ? add_v$4$y : regs$272$q;
       regs$273$clock = clock;
-      regs$273$d = (counter$q == 8'd13) ? mul_v$4$y : regs$273$q;
+      regs$273$d = (counter$q == 8'd11) ? regs$272$q : regs$273$q;
       regs$274$clock = clock;
-      regs$274$d = (counter$q == 8'd14) ? mul_v$0$y : regs$274$q;
+      regs$274$d = (counter$q == 8'd6) ? scale_e$0$y : regs$274$q;
       regs$275$clock = clock;
-      regs$275$d = (counter$q == 8'd2) ? add_v$2$y : regs$275$q;
+      regs$275$d = (counter$q == 8'd6) ? regs$274$q : regs$275$q;
       regs$276$clock = clock;
-      regs$276$d = (counter$q == 8'd2) ? add_v$3$y : regs$276$q;
+      regs$276$d = (counter$q == 8'd15) ? add_up$7$y : regs$276$q;
       regs$277$clock = clock;
-      regs$277$d = (counter$q == 8'd6) ? add_v$2$y : regs$277$q;
+      regs$277$d = (counter$q == 8'd12) ? scale_e$0$y : regs$277$q;
       regs$278$clock = clock;
-      regs$278$d = (counter$q == 8'd6) ? regs$277$q : regs$278$q;
+      regs$278$d = (counter$q == 8'd2) ? add_up$2$y : regs$278$q;
       regs$279$clock = clock;
-      regs$279$d = (counter$q == 8'd6) ? regs$278$q : regs$279$q;
+      regs$279$d = (counter$q == 8'd0) ? m_0$2 : regs$279$q;
       regs$280$clock = clock;
-      regs$280$d = (counter$q == 8'd6) ? regs$279$q : regs$280$q;
+      regs$280$d = (counter$q == 8'd0) ? m_1$2 : regs$280$q;
       regs$281$clock = clock;
-      regs$281$d = (counter$q == 8'd9) ? add_up$2$y : regs$281$q;
+      regs$281$d = (counter$q == 8'd0) ? m_2$2 : regs$281$q;
       regs$282$clock = clock;
-      regs$282$d = (counter$q == 8'd12) ? mul_up$2$y : regs$282$q;
+      regs$282$d = (counter$q == 8'd0) ? f_2$1 : regs$282$q;
       regs$283$clock = clock;
-      regs$283$d = (counter$q == 8'd12) ? mul_up$3$y : regs$283$q;
+      regs$283$d = (counter$q == 8'd0) ? f_2$3 : regs$283$q;
       regs$284$clock = clock;
-      regs$284$d = (counter$q == 8'd12) ? mul_up$4$y : regs$284$q;
+      regs$284$d = (counter$q == 8'd0) ? v_z$0 : regs$284$q;
       regs$285$clock = clock;
-      regs$285$d = (counter$q == 8'd0) ? add_up$4$y : regs$285$q;
+      regs$285$d = (counter$q == 8'd0) ? regs$284$q : regs$285$q;
       regs$286$clock = clock;
-      regs$286$d = (counter$q == 8'd0) ? add_up$5$y : regs$286$q;
+      regs$286$d = (counter$q == 8'd0) ? v_x$1 : regs$286$q;
       regs$287$clock = clock;
-      regs$287$d = (counter$q == 8'd4) ? add_up$7$y : regs$287$q;
+      regs$287$d = (counter$q == 8'd0) ? v_x$2 : regs$287$q;
       regs$288$clock = clock;
-      regs$288$d = (counter$q == 8'd9) ? scale_z$0$y : regs$288$q;
+      regs$288$d = (counter$q == 8'd0) ? regs$287$q : regs$288$q;
       regs$289$clock = clock;
-      regs$289$d = (counter$q == 8'd11) ? scale_e$0$y : regs$289$q;
+      regs$289$d = (counter$q == 8'd0) ? v_y$2 : regs$289$q;
       regs$290$clock = clock;
-      regs$290$d = (counter$q == 8'd11) ? regs$289$q : regs$290$q;
+      regs$290$d = (counter$q == 8'd13) ? add_up$3$y : regs$290$q;
       regs$291$clock = clock;
-      regs$291$d = (counter$q == 8'd11) ? regs$290$q : regs$291$q;
+      regs$291$d = (counter$q == 8'd15) ? add_up$1$y : regs$291$q;
       regs$292$clock = clock;
-      regs$292$d = (counter$q == 8'd11) ? scale_s$0$y : regs$292$q;
+      regs$292$d = (counter$q == 8'd2) ? add_up$0$y : regs$292$q;
       regs$293$clock = clock;
-      regs$293$d = (counter$q == 8'd15) ? add_up$6$y : regs$293$q;
+      regs$293$d = (counter$q == 8'd5) ? scale_e$0$y : regs$293$q;
       regs$294$clock = clock;
-      regs$294$d = (counter$q == 8'd15) ? add_up$7$y : regs$294$q;
+      regs$294$d = (counter$q == 8'd5) ? regs$293$q : regs$294$q;
       regs$295$clock = clock;
-      regs$295$d = (counter$q == 8'd4) ? add_up$4$y : regs$295$q;
+      regs$295$d = (counter$q == 8'd14) ? add_up$5$y : regs$295$q;
       regs$296$clock = clock;
-      regs$296$d = (counter$q == 8'd4) ? add_up$5$y : regs$296$q;
+      regs$296$d = (counter$q == 8'd13) ? add_up$5$y : regs$296$q;
       regs$297$clock = clock;
-      regs$297$d = (counter$q == 8'd8) ? add_up$2$y : regs$297$q;
+      regs$297$d = (counter$q == 8'd11) ? add_v$4$y : regs$297$q;
       regs$298$clock = clock;
-      regs$298$d = (counter$q == 8'd4) ? mul_up$2$y : regs$298$q;
+      regs$298$d = (counter$q == 8'd11) ? regs$297$q : regs$298$q;
       regs$299$clock = clock;
-      regs$299$d = (counter$q == 8'd2) ? mul_v$4$y : regs$299$q;
+      regs$299$d = (counter$q == 8'd10) ? scale_e$0$y : regs$299$q;
       regs$300$clock = clock;
-      regs$300$d = (counter$q == 8'd3) ? mul_v$2$y : regs$300$q;
+      regs$300$d = (counter$q == 8'd15) ? add_up$6$y : regs$300$q;
       regs$301$clock = clock;
-      regs$301$d = (counter$q == 8'd3) ? mul_v$3$y : regs$301$q;
+      regs$301$d = (counter$q == 8'd15) ? add_up$7$y : regs$301$q;
       regs$302$clock = clock;
-      regs$302$d = (counter$q == 8'd7) ? add_v$2$y : regs$302$q;
+      regs$302$d = (counter$q == 8'd7) ? add_v$4$y : regs$302$q;
       regs$303$clock = clock;
-      regs$303$d = (counter$q == 8'd7) ? add_v$3$y : regs$303$q;
+      regs$303$d = (counter$q == 8'd7) ? regs$302$q : regs$303$q;
       regs$304$clock = clock;
-      regs$304$d = (counter$q == 8'd12) ? add_v$2$y : regs$304$q;
+      regs$304$d = (counter$q == 8'd1) ? add_up$7$y : regs$304$q;
       regs$305$clock = clock;
-      regs$305$d = (counter$q == 8'd12) ? regs$304$q : regs$305$q;
+      regs$305$d = (counter$q == 8'd0) ? m_2$3 : regs$305$q;
       regs$306$clock = clock;
-      regs$306$d = (counter$q == 8'd9) ? add_up$3$y : regs$306$q;
+      regs$306$d = (counter$q == 8'd5) ? mul_v$0$y : regs$306$q;
       regs$307$clock = clock;
-      regs$307$d = (counter$q == 8'd2) ? mul_up$4$y : regs$307$q;
+      regs$307$d = (counter$q == 8'd5) ? mul_v$1$y : regs$307$q;
       regs$308$clock = clock;
-      regs$308$d = (counter$q == 8'd2) ? mul_up$5$y : regs$308$q;
+      regs$308$d = (counter$q == 8'd6) ? mul_v$1$y : regs$308$q;
       regs$309$clock = clock;
-      regs$309$d = (counter$q == 8'd3) ? mul_up$2$y : regs$309$q;
+      regs$309$d = (counter$q == 8'd6) ? mul_v$2$y : regs$309$q;
       regs$310$clock = clock;
-      regs$310$d = (counter$q == 8'd6) ? add_up$2$y : regs$310$q;
+      regs$310$d = (counter$q == 8'd6) ? mul_v$4$y : regs$310$q;
       regs$311$clock = clock;
-      regs$311$d = (counter$q == 8'd13) ? add_up$4$y : regs$311$q;
+      regs$311$d = (counter$q == 8'd7) ? mul_v$0$y : regs$311$q;
       regs$312$clock = clock;
-      regs$312$d = (counter$q == 8'd1) ? add_up$6$y : regs$312$q;
+      regs$312$d = (counter$q == 8'd15) ? add_v$2$y : regs$312$q;
       regs$313$clock = clock;
-      regs$313$d = (counter$q == 8'd7) ? scale_e$0$y : regs$313$q;
+      regs$313$d = (counter$q == 8'd8) ? mul_v$0$y : regs$313$q;
       regs$314$clock = clock;
-      regs$314$d = (counter$q == 8'd7) ? regs$313$q : regs$314$q;
+      regs$314$d = (counter$q == 8'd8) ? mul_v$1$y : regs$314$q;
       regs$315$clock = clock;
-      regs$315$d = (counter$q == 8'd4) ? mul_v$2$y : regs$315$q;
+      regs$315$d = (counter$q == 8'd9) ? mul_v$1$y : regs$315$q;
       regs$316$clock = clock;
-      regs$316$d = (counter$q == 8'd14) ? mul_v$1$y : regs$316$q;
+      regs$316$d = (counter$q == 8'd9) ? mul_v$2$y : regs$316$q;
       regs$317$clock = clock;
-      regs$317$d = (counter$q == 8'd14) ? mul_v$2$y : regs$317$q;
+      regs$317$d = (counter$q == 8'd13) ? add_v$0$y : regs$317$q;
       regs$318$clock = clock;
-      regs$318$d = (counter$q == 8'd2) ? add_v$4$y : regs$318$q;
+      regs$318$d = (counter$q == 8'd13) ? add_v$1$y : regs$318$q;
       regs$319$clock = clock;
-      regs$319$d = (counter$q == 8'd3) ? add_v$1$y : regs$319$q;
+      regs$319$d = (counter$q == 8'd9) ? mul_v$4$y : regs$319$q;
       regs$320$clock = clock;
-      regs$320$d = (counter$q == 8'd7) ? add_v$4$y : regs$320$q;
+      regs$320$d = (counter$q == 8'd10) ? mul_v$0$y : regs$320$q;
       regs$321$clock = clock;
-      regs$321$d = (counter$q == 8'd7) ? regs$320$q : regs$321$q;
+      regs$321$d = (counter$q == 8'd10) ? mul_v$1$y : regs$321$q;
       regs$322$clock = clock;
-      regs$322$d = (counter$q == 8'd9) ? add_up$4$y : regs$322$q;
+      regs$322$d = (counter$q == 8'd14) ? add_v$0$y : regs$322$q;
       regs$323$clock = clock;
-      regs$323$d = (counter$q == 8'd12) ? mul_up$5$y : regs$323$q;
+      regs$323$d = (counter$q == 8'd11) ? mul_v$0$y : regs$323$q;
       regs$324$clock = clock;
-      regs$324$d = (counter$q == 8'd13) ? mul_up$0$y : regs$324$q;
+      regs$324$d = (counter$q == 8'd11) ? mul_v$1$y : regs$324$q;
       regs$325$clock = clock;
-      regs$325$d = (counter$q == 8'd13) ? mul_up$1$y : regs$325$q;
+      regs$325$d = (counter$q == 8'd11) ? mul_v$2$y : regs$325$q;
       regs$326$clock = clock;
-      regs$326$d = (counter$q == 8'd1) ? add_up$2$y : regs$326$q;
+      regs$326$d = (counter$q == 8'd15) ? add_v$0$y : regs$326$q;
       regs$327$clock = clock;
-      regs$327$d = (counter$q == 8'd1) ? add_up$3$y : regs$327$q;
+      regs$327$d = (counter$q == 8'd12) ? mul_v$0$y : regs$327$q;
       regs$328$clock = clock;
-      regs$328$d = (counter$q == 8'd5) ? add_up$0$y : regs$328$q;
+      regs$328$d = (counter$q == 8'd15) ? add_v$1$y : regs$328$q;
       regs$329$clock = clock;
-      regs$329$d = (counter$q == 8'd12) ? scale_e$0$y : regs$329$q;
+      regs$329$d = (counter$q == 8'd0) ? add_v$0$y : regs$329$q;
       regs$330$clock = clock;
-      regs$330$d = (counter$q == 8'd14) ? mul_v$3$y : regs$330$q;
+      regs$330$d = (counter$q == 8'd2) ? mul_v$0$y : regs$330$q;
       regs$331$clock = clock;
-      regs$331$d = (counter$q == 8'd14) ? mul_v$4$y : regs$331$q;
+      regs$331$d = (counter$q == 8'd2) ? mul_v$1$y : regs$331$q;
       regs$332$clock = clock;
-      regs$332$d = (counter$q == 8'd15) ? mul_v$0$y : regs$332$q;
+      regs$332$d = (counter$q == 8'd3) ? mul_v$0$y : regs$332$q;
       regs$333$clock = clock;
-      regs$333$d = (counter$q == 8'd3) ? add_v$2$y : regs$333$q;
+      regs$333$d = (counter$q == 8'd1) ? add_v$1$y : regs$333$q;
       regs$334$clock = clock;
-      regs$334$d = (counter$q == 8'd3) ? add_v$3$y : regs$334$q;
+      regs$334$d = (counter$q == 8'd1) ? add_v$2$y : regs$334$q;
       regs$335$clock = clock;
-      regs$335$d = (counter$q == 8'd8) ? add_v$0$y : regs$335$q;
+      regs$335$d = (counter$q == 8'd3) ? add_v$2$y : regs$335$q;
       regs$336$clock = clock;
-      regs$336$d = (counter$q == 8'd8) ? regs$335$q : regs$336$q;
+      regs$336$d = (counter$q == 8'd3) ? add_v$3$y : regs$336$q;
       regs$337$clock = clock;
-      regs$337$d = (counter$q == 8'd8) ? regs$336$q : regs$337$q;
+      regs$337$d = (counter$q == 8'd0) ? m_0$3 : regs$337$q;
       regs$338$clock = clock;
-      regs$338$d = (counter$q == 8'd9) ? add_up$5$y : regs$338$q;
+      regs$338$d = (counter$q == 8'd0) ? m_1$3 : regs$338$q;
       regs$339$clock = clock;
-      regs$339$d = (counter$q == 8'd13) ? mul_up$2$y : regs$339$q;
+      regs$339$d = (counter$q == 8'd5) ? mul_v$3$y : regs$339$q;
       regs$340$clock = clock;
-      regs$340$d = (counter$q == 8'd13) ? mul_up$3$y : regs$340$q;
+      regs$340$d = (counter$q == 8'd5) ? mul_v$4$y : regs$340$q;
       regs$341$clock = clock;
-      regs$341$d = (counter$q == 8'd13) ? mul_up$4$y : regs$341$q;
+      regs$341$d = (counter$q == 8'd7) ? mul_v$1$y : regs$341$q;
       regs$342$clock = clock;
-      regs$342$d = (counter$q == 8'd1) ? add_up$4$y : regs$342$q;
+      regs$342$d = (counter$q == 8'd15) ? add_v$2$y : regs$342$q;
       regs$343$clock = clock;
-      regs$343$d = (counter$q == 8'd1) ? add_up$5$y : regs$343$q;
+      regs$343$d = (counter$q == 8'd8) ? mul_v$2$y : regs$343$q;
       regs$344$clock = clock;
-      regs$344$d = (counter$q == 8'd5) ? add_up$1$y : regs$344$q;
+      regs$344$d = (counter$q == 8'd12) ? add_v$0$y : regs$344$q;
       regs$345$clock = clock;
-      regs$345$d = (counter$q == 8'd10) ? scale_z$0$y : regs$345$q;
+      regs$345$d = (counter$q == 8'd8) ? mul_v$3$y : regs$345$q;
       regs$346$clock = clock;
-      regs$346$d = (counter$q == 8'd13) ? scale_e$0$y : regs$346$q;
+      regs$346$d = (counter$q == 8'd8) ? mul_v$4$y : regs$346$q;
       regs$347$clock = clock;
-      regs$347$d = (counter$q == 8'd13) ? regs$346$q : regs$347$q;
+      regs$347$d = (counter$q == 8'd9) ? mul_v$3$y : regs$347$q;
       regs$348$clock = clock;
-      regs$348$d = (counter$q == 8'd13) ? regs$347$q : regs$348$q;
+      regs$348$d = (counter$q == 8'd1) ? add_v$0$y : regs$348$q;
       regs$349$clock = clock;
-      regs$349$d = (counter$q == 8'd13) ? scale_s$0$y : regs$349$q;
+      regs$349$d = (counter$q == 8'd10) ? mul_v$2$y : regs$349$q;
       regs$350$clock = clock;
-      regs$350$d = (counter$q == 8'd1) ? add_up$7$y : regs$350$q;
+      regs$350$d = (counter$q == 8'd10) ? mul_v$3$y : regs$350$q;
       regs$351$clock = clock;
-      regs$351$d = (counter$q == 8'd2) ? add_up$2$y : regs$351$q;
+      regs$351$d = (counter$q == 8'd10) ? mul_v$4$y : regs$351$q;
       regs$352$clock = clock;
-      regs$352$d = (counter$q == 8'd15) ? mul_v$1$y : regs$352$q;
+      regs$352$d = (counter$q == 8'd14) ? add_v$1$y : regs$352$q;
       regs$353$clock = clock;
-      regs$353$d = (counter$q == 8'd15) ? mul_v$2$y : regs$353$q;
+      regs$353$d = (counter$q == 8'd11) ? mul_v$3$y : regs$353$q;
       regs$354$clock = clock;
-      regs$354$d = (counter$q == 8'd3) ? add_v$4$y : regs$354$q;
+      regs$354$d = (counter$q == 8'd11) ? mul_v$4$y : regs$354$q;
       regs$355$clock = clock;
-      regs$355$d = (counter$q == 8'd3) ? regs$354$q : regs$355$q;
+      regs$355$d = (counter$q == 8'd0) ? add_v$3$y : regs$355$q;
       regs$356$clock = clock;
-      regs$356$d = (counter$q == 8'd3) ? regs$355$q : regs$356$q;
+      regs$356$d = (counter$q == 8'd0) ? add_v$4$y : regs$356$q;
       regs$357$clock = clock;
-      regs$357$d = (counter$q == 8'd13) ? mul_up$5$y : regs$357$q;
+      regs$357$d = (counter$q == 8'd12) ? mul_v$3$y : regs$357$q;
       regs$358$clock = clock;
-      regs$358$d = (counter$q == 8'd14) ? mul_up$0$y : regs$358$q;
+      regs$358$d = (counter$q == 8'd12) ? mul_v$4$y : regs$358$q;
       regs$359$clock = clock;
-      regs$359$d = (counter$q == 8'd2) ? add_up$5$y : regs$359$q;
+      regs$359$d = (counter$q == 8'd5) ? add_v$0$y : regs$359$q;
       regs$360$clock = clock;
-      regs$360$d = (counter$q == 8'd3) ? mul_up$3$y : regs$360$q;
+      regs$360$d = (counter$q == 8'd2) ? mul_v$2$y : regs$360$q;
       regs$361$clock = clock;
-      regs$361$d = (counter$q == 8'd3) ? mul_up$4$y : regs$361$q;
+      regs$361$d = (counter$q == 8'd2) ? mul_v$3$y : regs$361$q;
       regs$362$clock = clock;
-      regs$362$d = (counter$q == 8'd7) ? add_up$0$y : regs$362$q;
+      regs$362$d = (counter$q == 8'd3) ? mul_v$1$y : regs$362$q;
       regs$363$clock = clock;
-      regs$363$d = (counter$q == 8'd6) ? add_up$3$y : regs$363$q;
+      regs$363$d = (counter$q == 8'd1) ? add_v$3$y : regs$363$q;
       regs$364$clock = clock;
-      regs$364$d = (counter$q == 8'd6) ? regs$363$q : regs$364$q;
+      regs$364$d = (counter$q == 8'd1) ? add_v$4$y : regs$364$q;
       regs$365$clock = clock;
-      regs$365$d = (counter$q == 8'd15) ? mul_v$3$y : regs$365$q;
+      regs$365$d = (counter$q == 8'd6) ? add_v$2$y : regs$365$q;
       regs$366$clock = clock;
-      regs$366$d = (counter$q == 8'd15) ? mul_v$4$y : regs$366$q;
+      regs$366$d = (counter$q == 8'd14) ? mul_v$2$y : regs$366$q;
       regs$367$clock = clock;
-      regs$367$d = (counter$q == 8'd4) ? add_v$2$y : regs$367$q;
+      regs$367$d = (counter$q == 8'd3) ? add_v$4$y : regs$367$q;
       regs$368$clock = clock;
-      regs$368$d = (counter$q == 8'd4) ? regs$367$q : regs$368$q;
+      regs$368$d = (counter$q == 8'd4) ? add_v$2$y : regs$368$q;
       regs$369$clock = clock;
-      regs$369$d = (counter$q == 8'd4) ? regs$368$q : regs$369$q;
+      regs$369$d = (counter$q == 8'd5) ? mul_v$2$y : regs$369$q;
       regs$370$clock = clock;
-      regs$370$d = (counter$q == 8'd14) ? mul_up$1$y : regs$370$q;
+      regs$370$d = (counter$q == 8'd9) ? add_v$0$y : regs$370$q;
       regs$371$clock = clock;
-      regs$371$d = (counter$q == 8'd14) ? mul_up$2$y : regs$371$q;
+      regs$371$d = (counter$q == 8'd6) ? mul_v$3$y : regs$371$q;
       regs$372$clock = clock;
-      regs$372$d = (counter$q == 8'd2) ? add_up$6$y : regs$372$q;
+      regs$372$d = (counter$q == 8'd10) ? add_v$0$y : regs$372$q;
       regs$373$clock = clock;
-      regs$373$d = (counter$q == 8'd3) ? mul_up$5$y : regs$373$q;
+      regs$373$d = (counter$q == 8'd11) ? add_v$0$y : regs$373$q;
       regs$374$clock = clock;
-      regs$374$d = (counter$q == 8'd14) ? mul_up$3$y : regs$374$q;
+      regs$374$d = (counter$q == 8'd11) ? add_v$1$y : regs$374$q;
       regs$375$clock = clock;
-      regs$375$d = (counter$q == 8'd2) ? add_up$7$y : regs$375$q;
+      regs$375$d = (counter$q == 8'd7) ? mul_v$2$y : regs$375$q;
       regs$376$clock = clock;
-      regs$376$d = (counter$q == 8'd6) ? add_up$4$y : regs$376$q;
+      regs$376$d = (counter$q == 8'd7) ? mul_v$3$y : regs$376$q;
       regs$377$clock = clock;
-      regs$377$d = (counter$q == 8'd6) ? regs$376$q : regs$377$q;
+      regs$377$d = (counter$q == 8'd9) ? mul_v$0$y : regs$377$q;
       regs$378$clock = clock;
-      regs$378$d = (counter$q == 8'd10) ? add_v$1$y : regs$378$q;
+      regs$378$d = (counter$q == 8'd12) ? add_v$1$y : regs$378$q;
       regs$379$clock = clock;
-      regs$379$d = (counter$q == 8'd10) ? regs$378$q : regs$379$q;
+      regs$379$d = (counter$q == 8'd4) ? add_v$0$y : regs$379$q;
       regs$380$clock = clock;
-      regs$380$d = (counter$q == 8'd10) ? regs$379$q : regs$380$q;
+      regs$380$d = (counter$q == 8'd13) ? mul_v$0$y : regs$380$q;
       regs$381$clock = clock;
-      regs$381$d = (counter$q == 8'd13) ? add_up$6$y : regs$381$q;
+      regs$381$d = (counter$q == 8'd13) ? mul_v$3$y : regs$381$q;
       regs$382$clock = clock;
-      regs$382$d = (counter$q == 8'd13) ? regs$381$q : regs$382$q;
+      regs$382$d = (counter$q == 8'd13) ? mul_v$4$y : regs$382$q;
       regs$383$clock = clock;
-      regs$383$d = (counter$q == 8'd13) ? regs$382$q : regs$383$q;
+      regs$383$d = (counter$q == 8'd2) ? add_v$2$y : regs$383$q;
       regs$384$clock = clock;
-      regs$384$d = (counter$q == 8'd8) ? add_v$1$y : regs$384$q;
+      regs$384$d = (counter$q == 8'd2) ? add_v$3$y : regs$384$q;
       regs$385$clock = clock;
-      regs$385$d = (counter$q == 8'd13) ? add_v$4$y : regs$385$q;
+      regs$385$d = (counter$q == 8'd2) ? mul_v$4$y : regs$385$q;
       regs$386$clock = clock;
-      regs$386$d = (counter$q == 8'd13) ? regs$385$q : regs$386$q;
+      regs$386$d = (counter$q == 8'd3) ? mul_v$2$y : regs$386$q;
       regs$387$clock = clock;
-      regs$387$d = (counter$q == 8'd9) ? add_up$7$y : regs$387$q;
+      regs$387$d = (counter$q == 8'd7) ? add_v$2$y : regs$387$q;
       regs$388$clock = clock;
-      regs$388$d = (counter$q == 8'd13) ? add_up$7$y : regs$388$q;
+      regs$388$d = (counter$q == 8'd7) ? add_v$3$y : regs$388$q;
       regs$389$clock = clock;
-      regs$389$d = (counter$q == 8'd2) ? scale_s$0$y : regs$389$q;
+      regs$389$d = (counter$q == 8'd14) ? mul_v$3$y : regs$389$q;
       regs$390$clock = clock;
-      regs$390$d = (counter$q == 8'd10) ? add_up$7$y : regs$390$q;
+      regs$390$d = (counter$q == 8'd14) ? mul_v$4$y : regs$390$q;
       regs$391$clock = clock;
-      regs$391$d = (counter$q == 8'd6) ? add_up$5$y : regs$391$q;
+      regs$391$d = (counter$q == 8'd15) ? mul_v$3$y : regs$391$q;
       regs$392$clock = clock;
-      regs$392$d = (counter$q == 8'd3) ? add_up$7$y : regs$392$q;
+      regs$392$d = (counter$q == 8'd15) ? mul_v$4$y : regs$392$q;
       regs$393$clock = clock;
-      regs$393$d = (counter$q == 8'd0) ? mul_v$0$y : regs$393$q;
+      regs$393$d = (counter$q == 8'd4) ? add_v$3$y : regs$393$q;
       regs$394$clock = clock;
-      regs$394$d = (counter$q == 8'd0) ? mul_v$1$y : regs$394$q;
+      regs$394$d = (counter$q == 8'd4) ? add_v$4$y : regs$394$q;
       regs$395$clock = clock;
-      regs$395$d = (counter$q == 8'd4) ? add_v$3$y : regs$395$q;
+      regs$395$d = (counter$q == 8'd0) ? mul_v$4$y : regs$395$q;
       regs$396$clock = clock;
-      regs$396$d = (counter$q == 8'd4) ? regs$395$q : regs$396$q;
+      regs$396$d = (counter$q == 8'd1) ? mul_v$0$y : regs$396$q;
       regs$397$clock = clock;
-      regs$397$d = (counter$q == 8'd4) ? regs$396$q : regs$397$q;
+      regs$397$d = (counter$q == 8'd5) ? add_v$2$y : regs$397$q;
       regs$398$clock = clock;
-      regs$398$d = (counter$q == 8'd14) ? mul_up$4$y : regs$398$q;
+      regs$398$d = (counter$q == 8'd5) ? add_v$3$y : regs$398$q;
       regs$399$clock = clock;
-      regs$399$d = (counter$q == 8'd14) ? mul_up$5$y : regs$399$q;
+      regs$399$d = (counter$q == 8'd6) ? mul_v$0$y : regs$399$q;
       regs$400$clock = clock;
-      regs$400$d = (counter$q == 8'd3) ? add_up$2$y : regs$400$q;
+      regs$400$d = (counter$q == 8'd9) ? add_v$1$y : regs$400$q;
       regs$401$clock = clock;
-      regs$401$d = (counter$q == 8'd15) ? mul_up$0$y : regs$401$q;
+      regs$401$d = (counter$q == 8'd15) ? add_v$2$y : regs$401$q;
       regs$402$clock = clock;
-      regs$402$d = (counter$q == 8'd15) ? mul_up$1$y : regs$402$q;
+      regs$402$d = (counter$q == 8'd7) ? mul_v$4$y : regs$402$q;
       regs$403$clock = clock;
-      regs$403$d = (counter$q == 8'd3) ? add_up$3$y : regs$403$q;
+      regs$403$d = (counter$q == 8'd11) ? add_v$2$y : regs$403$q;
       regs$404$clock = clock;
-      regs$404$d = (counter$q == 8'd7) ? add_up$1$y : regs$404$q;
+      regs$404$d = (counter$q == 8'd4) ? add_v$0$y : regs$404$q;
       regs$405$clock = clock;
-      regs$405$d = (counter$q == 8'd7) ? regs$404$q : regs$405$q;
+      regs$405$d = (counter$q == 8'd6) ? add_v$0$y : regs$405$q;
       regs$406$clock = clock;
-      regs$406$d = (counter$q == 8'd0) ? mul_v$2$y : regs$406$q;
+      regs$406$d = (counter$q == 8'd7) ? add_v$0$y : regs$406$q;
       regs$407$clock = clock;
-      regs$407$d = (counter$q == 8'd0) ? mul_v$3$y : regs$407$q;
+      regs$407$d = (counter$q == 8'd4) ? mul_v$0$y : regs$407$q;
       regs$408$clock = clock;
-      regs$408$d = (counter$q == 8'd4) ? add_v$4$y : regs$408$q;
+      regs$408$d = (counter$q == 8'd12) ? mul_v$1$y : regs$408$q;
       regs$409$clock = clock;
-      regs$409$d = (counter$q == 8'd4) ? regs$408$q : regs$409$q;
+      regs$409$d = (counter$q == 8'd4) ? mul_v$1$y : regs$409$q;
       regs$410$clock = clock;
-      regs$410$d = (counter$q == 8'd4) ? regs$409$q : regs$410$q;
+      regs$410$d = (counter$q == 8'd13) ? mul_v$1$y : regs$410$q;
       regs$411$clock = clock;
-      regs$411$d = (counter$q == 8'd15) ? mul_up$2$y : regs$411$q;
+      regs$411$d = (counter$q == 8'd14) ? mul_v$0$y : regs$411$q;
       regs$412$clock = clock;
-      regs$412$d = (counter$q == 8'd15) ? mul_up$3$y : regs$412$q;
+      regs$412$d = (counter$q == 8'd6) ? add_v$2$y : regs$412$q;
       regs$413$clock = clock;
-      regs$413$d = (counter$q == 8'd3) ? add_up$4$y : regs$413$q;
+      regs$413$d = (counter$q == 8'd3) ? mul_v$3$y : regs$413$q;
       regs$414$clock = clock;
-      regs$414$d = (counter$q == 8'd15) ? mul_up$4$y : regs$414$q;
+      regs$414$d = (counter$q == 8'd15) ? mul_v$0$y : regs$414$q;
       regs$415$clock = clock;
-      regs$415$d = (counter$q == 8'd15) ? mul_up$5$y : regs$415$q;
+      regs$415$d = (counter$q == 8'd8) ? add_v$0$y : regs$415$q;
       regs$416$clock = clock;
-      regs$416$d = (counter$q == 8'd3) ? add_up$5$y : regs$416$q;
+      regs$416$d = (counter$q == 8'd0) ? mul_v$0$y : regs$416$q;
       regs$417$clock = clock;
-      regs$417$d = (counter$q == 8'd7) ? add_up$2$y : regs$417$q;
+      regs$417$d = (counter$q == 8'd0) ? mul_v$1$y : regs$417$q;
       regs$418$clock = clock;
-      regs$418$d = (counter$q == 8'd7) ? regs$417$q : regs$418$q;
+      regs$418$d = (counter$q == 8'd12) ? add_v$3$y : regs$418$q;
       regs$419$clock = clock;
-      regs$419$d = (counter$q == 8'd12) ? add_v$3$y : regs$419$q;
+      regs$419$d = (counter$q == 8'd8) ? add_v$2$y : regs$419$q;
       regs$420$clock = clock;
-      regs$420$d = (counter$q == 8'd12) ? regs$419$q : regs$420$q;
+      regs$420$d = (counter$q == 8'd1) ? mul_v$1$y : regs$420$q;
       regs$421$clock = clock;
-      regs$421$d = (counter$q == 8'd12) ? regs$420$q : regs$421$q;
+      regs$421$d = (counter$q == 8'd1) ? mul_v$2$y : regs$421$q;
       regs$422$clock = clock;
-      regs$422$d = (counter$q == 8'd14) ? add_up$6$y : regs$422$q;
+      regs$422$d = (counter$q == 8'd1) ? add_v$0$y : regs$422$q;
       regs$423$clock = clock;
-      regs$423$d = (counter$q == 8'd14) ? regs$422$q : regs$423$q;
+      regs$423$d = (counter$q == 8'd12) ? mul_v$2$y : regs$423$q;
       regs$424$clock = clock;
-      regs$424$d = (counter$q == 8'd14) ? regs$423$q : regs$424$q;
+      regs$424$d = (counter$q == 8'd5) ? add_v$0$y : regs$424$q;
       regs$425$clock = clock;
-      regs$425$d = (counter$q == 8'd8) ? add_v$2$y : regs$425$q;
+      regs$425$d = (counter$q == 8'd6) ? add_v$1$y : regs$425$q;
       regs$426$clock = clock;
-      regs$426$d = (counter$q == 8'd14) ? add_v$3$y : regs$426$q;
+      regs$426$d = (counter$q == 8'd7) ? add_v$1$y : regs$426$q;
       regs$427$clock = clock;
-      regs$427$d = (counter$q == 8'd14) ? regs$426$q : regs$427$q;
+      regs$427$d = (counter$q == 8'd13) ? mul_v$2$y : regs$427$q;
       regs$428$clock = clock;
-      regs$428$d = (counter$q == 8'd10) ? add_up$3$y : regs$428$q;
+      regs$428$d = (counter$q == 8'd4) ? mul_v$2$y : regs$428$q;
       regs$429$clock = clock;
-      regs$429$d = (counter$q == 8'd2) ? add_up$3$y : regs$429$q;
+      regs$429$d = (counter$q == 8'd14) ? mul_v$1$y : regs$429$q;
       regs$430$clock = clock;
-      regs$430$d = (counter$q == 8'd7) ? scale_s$0$y : regs$430$q;
+      regs$430$d = (counter$q == 8'd2) ? add_v$4$y : regs$430$q;
       regs$431$clock = clock;
-      regs$431$d = (counter$q == 8'd11) ? add_up$2$y : regs$431$q;
+      regs$431$d = (counter$q == 8'd3) ? add_v$1$y : regs$431$q;
       regs$432$clock = clock;
-      regs$432$d = (counter$q == 8'd11) ? add_up$3$y : regs$432$q;
+      regs$432$d = (counter$q == 8'd8) ? add_v$0$y : regs$432$q;
       regs$433$clock = clock;
-      regs$433$d = (counter$q == 8'd5) ? add_up$6$y : regs$433$q;
+      regs$433$d = (counter$q == 8'd15) ? mul_v$1$y : regs$433$q;
       regs$434$clock = clock;
-      regs$434$d = (counter$q == 8'd0) ? mul_v$4$y : regs$434$q;
+      regs$434$d = (counter$q == 8'd15) ? mul_v$2$y : regs$434$q;
       regs$435$clock = clock;
-      regs$435$d = (counter$q == 8'd1) ? mul_v$0$y : regs$435$q;
+      regs$435$d = (counter$q == 8'd10) ? add_v$1$y : regs$435$q;
       regs$436$clock = clock;
-      regs$436$d = (counter$q == 8'd5) ? add_v$2$y : regs$436$q;
+      regs$436$d = (counter$q == 8'd8) ? add_v$1$y : regs$436$q;
       regs$437$clock = clock;
-      regs$437$d = (counter$q == 8'd5) ? regs$436$q : regs$437$q;
+      regs$437$d = (counter$q == 8'd0) ? mul_v$2$y : regs$437$q;
       regs$438$clock = clock;
-      regs$438$d = (counter$q == 8'd5) ? regs$437$q : regs$438$q;
+      regs$438$d = (counter$q == 8'd0) ? mul_v$3$y : regs$438$q;
       regs$439$clock = clock;
-      regs$439$d = (counter$q == 8'd0) ? mul_up$0$y : regs$439$q;
+      regs$439$d = (counter$q == 8'd12) ? add_v$4$y : regs$439$q;
       regs$440$clock = clock;
-      regs$440$d = (counter$q == 8'd0) ? mul_up$1$y : regs$440$q;
+      regs$440$d = (counter$q == 8'd9) ? add_v$2$y : regs$440$q;
       regs$441$clock = clock;
-      regs$441$d = (counter$q == 8'd5) ? add_up$2$y : regs$441$q;
+      regs$441$d = (counter$q == 8'd0) ? v_x$0 : regs$441$q;
       regs$442$clock = clock;
-      regs$442$d = (counter$q == 8'd0) ? mul_up$2$y : regs$442$q;
+      regs$442$d = (counter$q == 8'd0) ? v_y$0 : regs$442$q;
       regs$443$clock = clock;
-      regs$443$d = (counter$q == 8'd0) ? mul_up$3$y : regs$443$q;
+      regs$443$d = (counter$q == 8'd5) ? mul_up$0$y : regs$443$q;
       regs$444$clock = clock;
-      regs$444$d = (counter$q == 8'd5) ? add_up$3$y : regs$444$q;
+      regs$444$d = (counter$q == 8'd5) ? mul_up$1$y : regs$444$q;
       regs$445$clock = clock;
-      regs$445$d = (counter$q == 8'd10) ? add_up$5$y : regs$445$q;
+      regs$445$d = (counter$q == 8'd6) ? mul_up$0$y : regs$445$q;
       regs$446$clock = clock;
-      regs$446$d = (counter$q == 8'd1) ? mul_v$1$y : regs$446$q;
+      regs$446$d = (counter$q == 8'd6) ? mul_up$1$y : regs$446$q;
       regs$447$clock = clock;
-      regs$447$d = (counter$q == 8'd1) ? mul_v$2$y : regs$447$q;
+      regs$447$d = (counter$q == 8'd7) ? mul_up$0$y : regs$447$q;
       regs$448$clock = clock;
-      regs$448$d = (counter$q == 8'd5) ? add_v$3$y : regs$448$q;
+      regs$448$d = (counter$q == 8'd7) ? mul_up$1$y : regs$448$q;
       regs$449$clock = clock;
-      regs$449$d = (counter$q == 8'd5) ? regs$448$q : regs$449$q;
+      regs$449$d = (counter$q == 8'd8) ? mul_up$0$y : regs$449$q;
       regs$450$clock = clock;
-      regs$450$d = (counter$q == 8'd5) ? regs$449$q : regs$450$q;
+      regs$450$d = (counter$q == 8'd8) ? mul_up$1$y : regs$450$q;
       regs$451$clock = clock;
-      regs$451$d = (counter$q == 8'd0) ? mul_up$4$y : regs$451$q;
+      regs$451$d = (counter$q == 8'd8) ? mul_up$2$y : regs$451$q;
       regs$452$clock = clock;
-      regs$452$d = (counter$q == 8'd0) ? mul_up$5$y : regs$452$q;
+      regs$452$d = (counter$q == 8'd12) ? add_up$0$y : regs$452$q;
       regs$453$clock = clock;
-      regs$453$d = (counter$q == 8'd5) ? add_up$4$y : regs$453$q;
+      regs$453$d = (counter$q == 8'd9) ? mul_up$0$y : regs$453$q;
       regs$454$clock = clock;
-      regs$454$d = (counter$q == 8'd1) ? mul_up$0$y : regs$454$q;
+      regs$454$d = (counter$q == 8'd9) ? mul_up$1$y : regs$454$q;
       regs$455$clock = clock;
-      regs$455$d = (counter$q == 8'd1) ? mul_up$1$y : regs$455$q;
+      regs$455$d = (counter$q == 8'd9) ? mul_up$2$y : regs$455$q;
       regs$456$clock = clock;
-      regs$456$d = (counter$q == 8'd5) ? add_up$5$y : regs$456$q;
+      regs$456$d = (counter$q == 8'd13) ? add_up$0$y : regs$456$q;
       regs$457$clock = clock;
-      regs$457$d = (counter$q == 8'd10) ? add_up$6$y : regs$457$q;
+      regs$457$d = (counter$q == 8'd10) ? mul_up$0$y : regs$457$q;
       regs$458$clock = clock;
-      regs$458$d = (counter$q == 8'd12) ? add_v$4$y : regs$458$q;
+      regs$458$d = (counter$q == 8'd10) ? mul_up$1$y : regs$458$q;
       regs$459$clock = clock;
-      regs$459$d = (counter$q == 8'd12) ? regs$458$q : regs$459$q;
+      regs$459$d = (counter$q == 8'd10) ? mul_up$2$y : regs$459$q;
       regs$460$clock = clock;
-      regs$460$d = (counter$q == 8'd12) ? regs$459$q : regs$460$q;
+      regs$460$d = (counter$q == 8'd14) ? add_up$0$y : regs$460$q;
       regs$461$clock = clock;
-      regs$461$d = (counter$q == 8'd14) ? add_up$7$y : regs$461$q;
+      regs$461$d = (counter$q == 8'd11) ? mul_up$0$y : regs$461$q;
       regs$462$clock = clock;
-      regs$462$d = (counter$q == 8'd14) ? regs$461$q : regs$462$q;
+      regs$462$d = (counter$q == 8'd11) ? mul_up$1$y : regs$462$q;
       regs$463$clock = clock;
-      regs$463$d = (counter$q == 8'd14) ? regs$462$q : regs$463$q;
+      regs$463$d = (counter$q == 8'd4) ? add_up$0$y : regs$463$q;
       regs$464$clock = clock;
-      regs$464$d = (counter$q == 8'd9) ? add_v$2$y : regs$464$q;
+      regs$464$d = (counter$q == 8'd4) ? add_up$1$y : regs$464$q;
       regs$465$clock = clock;
-      regs$465$d = (counter$q == 8'd14) ? add_v$4$y : regs$465$q;
+      regs$465$d = (counter$q == 8'd2) ? mul_up$0$y : regs$465$q;
       regs$466$clock = clock;
-      regs$466$d = (counter$q == 8'd14) ? regs$465$q : regs$466$q;
+      regs$466$d = (counter$q == 8'd2) ? mul_up$1$y : regs$466$q;
       regs$467$clock = clock;
-      regs$467$d = (counter$q == 8'd10) ? add_up$4$y : regs$467$q;
+      regs$467$d = (counter$q == 8'd9) ? add_up$6$y : regs$467$q;
       regs$468$clock = clock;
-      regs$468$d = (counter$q == 8'd2) ? add_up$4$y : regs$468$q;
+      regs$468$d = (counter$q == 8'd15) ? add_up$3$y : regs$468$q;
       regs$469$clock = clock;
-      regs$469$d = (counter$q == 8'd8) ? scale_s$0$y : regs$469$q;
+      regs$469$d = (counter$q == 8'd1) ? add_up$2$y : regs$469$q;
       regs$470$clock = clock;
-      regs$470$d = (counter$q == 8'd3) ? add_up$6$y : regs$470$q;
+      regs$470$d = (counter$q == 8'd1) ? add_up$3$y : regs$470$q;
       regs$471$clock = clock;
-      regs$471$d = (counter$q == 8'd12) ? add_up$5$y : regs$471$q;
+      regs$471$d = (counter$q == 8'd3) ? mul_up$3$y : regs$471$q;
       regs$472$clock = clock;
-      regs$472$d = (counter$q == 8'd7) ? add_up$3$y : regs$472$q;
+      regs$472$d = (counter$q == 8'd3) ? mul_up$4$y : regs$472$q;
+      regs$473$clock = clock;
+      regs$473$d = (counter$q == 8'd0) ? scale : regs$473$q;
+      regs$474$clock = clock;
+      regs$474$d = (counter$q == 8'd0) ? v_z$0 : regs$474$q;
+      regs$475$clock = clock;
+      regs$475$d = (counter$q == 8'd5) ? mul_up$3$y : regs$475$q;
+      regs$476$clock = clock;
+      regs$476$d = (counter$q == 8'd5) ? mul_up$4$y : regs$476$q;
+      regs$477$clock = clock;
+      regs$477$d = (counter$q == 8'd6) ? mul_up$3$y : regs$477$q;
+      regs$478$clock = clock;
+      regs$478$d = (counter$q == 8'd6) ? mul_up$4$y : regs$478$q;
+      regs$479$clock = clock;
+      regs$479$d = (counter$q == 8'd7) ? mul_up$2$y : regs$479$q;
+      regs$480$clock = clock;
+      regs$480$d = (counter$q == 8'd11) ? add_up$0$y : regs$480$q;
+      regs$481$clock = clock;
+      regs$481$d = (counter$q == 8'd7) ? mul_up$3$y : regs$481$q;
+      regs$482$clock = clock;
+      regs$482$d = (counter$q == 8'd7) ? mul_up$4$y : regs$482$q;
+      regs$483$clock = clock;
+      regs$483$d = (counter$q == 8'd8) ? mul_up$3$y : regs$483$q;
+      regs$484$clock = clock;
+      regs$484$d = (counter$q == 8'd8) ? mul_up$4$y : regs$484$q;
+      regs$485$clock = clock;
+      regs$485$d = (counter$q == 8'd12) ? add_up$1$y : regs$485$q;
+      regs$486$clock = clock;
+      regs$486$d = (counter$q == 8'd12) ? add_up$2$y : regs$486$q;
+      regs$487$clock = clock;
+      regs$487$d = (counter$q == 8'd9) ? mul_up$3$y : regs$487$q;
+      regs$488$clock = clock;
+      regs$488$d = (counter$q == 8'd9) ? mul_up$4$y : regs$488$q;
+      regs$489$clock = clock;
+      regs$489$d = (counter$q == 8'd9) ? mul_up$5$y : regs$489$q;
+      regs$490$clock = clock;
+      regs$490$d = (counter$q == 8'd13) ? add_up$1$y : regs$490$q;
+      regs$491$clock = clock;
+      regs$491$d = (counter$q == 8'd10) ? mul_up$3$y : regs$491$q;
+      regs$492$clock = clock;
+      regs$492$d = (counter$q == 8'd10) ? mul_up$4$y : regs$492$q;
+      regs$493$clock = clock;
+      regs$493$d = (counter$q == 8'd14) ? add_up$1$y : regs$493$q;
+      regs$494$clock = clock;
+      regs$494$d = (counter$q == 8'd14) ? add_up$2$y : regs$494$q;
+      regs$495$clock = clock;
+      regs$495$d = (counter$q == 8'd15) ? add_up$4$y : regs$495$q;
+      regs$496$clock = clock;
+      regs$496$d = (counter$q == 8'd15) ? add_up$5$y : regs$496$q;
+      regs$497$clock = clock;
+      regs$497$d = (counter$q == 8'd4) ? add_up$2$y : regs$497$q;
+      regs$498$clock = clock;
+      regs$498$d = (counter$q == 8'd4) ? add_up$3$y : regs$498$q;
+      regs$499$clock = clock;
+      regs$499$d = (counter$q == 8'd2) ? mul_up$2$y : regs$499$q;
+      regs$500$clock = clock;
+      regs$500$d = (counter$q == 8'd2) ? mul_up$3$y : regs$500$q;
+      regs$501$clock = clock;
+      regs$501$d = (counter$q == 8'd1) ? add_up$4$y : regs$501$q;
+      regs$502$clock = clock;
+      regs$502$d = (counter$q == 8'd1) ? add_up$5$y : regs$502$q;
+      regs$503$clock = clock;
+      regs$503$d = (counter$q == 8'd3) ? add_up$2$y : regs$503$q;
+      regs$504$clock = clock;
+      regs$504$d = (counter$q == 8'd3) ? add_up$3$y : regs$504$q;
+      regs$505$clock = clock;
+      regs$505$d = (counter$q == 8'd0) ? m_0$3 : regs$505$q;
+      regs$506$clock = clock;
+      regs$506$d = (counter$q == 8'd0) ? m_1$3 : regs$506$q;
+      regs$507$clock = clock;
+      regs$507$d = (counter$q == 8'd0) ? m_2$3 : regs$507$q;
+      regs$508$clock = clock;
+      regs$508$d = (counter$q == 8'd0) ? v_x$1 : regs$508$q;
+      regs$509$clock = clock;
+      regs$509$d = (counter$q == 8'd0) ? v_y$1 : regs$509$q;
+      regs$510$clock = clock;
+      regs$510$d = (counter$q == 8'd5) ? mul_up$2$y : regs$510$q;
+      regs$511$clock = clock;
+      regs$511$d = (counter$q == 8'd9) ? add_up$0$y : regs$511$q;
+      regs$512$clock = clock;
+      regs$512$d = (counter$q == 8'd6) ? mul_up$5$y : regs$512$q;
+      regs$513$clock = clock;
+      regs$513$d = (counter$q == 8'd7) ? mul_up$5$y : regs$513$q;
+      regs$514$clock = clock;
+      regs$514$d = (counter$q == 8'd11) ? add_up$1$y : regs$514$q;
+      regs$515$clock = clock;
+      regs$515$d = (counter$q == 8'd8) ? mul_up$5$y : regs$515$q;
+      regs$516$clock = clock;
+      regs$516$d = (counter$q == 8'd10) ? mul_up$5$y : regs$516$q;
+      regs$517$clock = clock;
+      regs$517$d = (counter$q == 8'd2) ? add_up$1$y : regs$517$q;
+      regs$518$clock = clock;
+      regs$518$d = (counter$q == 8'd4) ? mul_up$1$y : regs$518$q;
+      regs$519$clock = clock;
+      regs$519$d = (counter$q == 8'd4) ? mul_up$5$y : regs$519$q;
+      regs$520$clock = clock;
+      regs$520$d = (counter$q == 8'd12) ? mul_up$0$y : regs$520$q;
+      regs$521$clock = clock;
+      regs$521$d = (counter$q == 8'd4) ? add_up$4$y : regs$521$q;
+      regs$522$clock = clock;
+      regs$522$d = (counter$q == 8'd4) ? add_up$5$y : regs$522$q;
+      regs$523$clock = clock;
+      regs$523$d = (counter$q == 8'd2) ? mul_up$4$y : regs$523$q;
+      regs$524$clock = clock;
+      regs$524$d = (counter$q == 8'd2) ? mul_up$5$y : regs$524$q;
+      regs$525$clock = clock;
+      regs$525$d = (counter$q == 8'd12) ? mul_up$5$y : regs$525$q;
+      regs$526$clock = clock;
+      regs$526$d = (counter$q == 8'd13) ? mul_up$0$y : regs$526$q;
+      regs$527$clock = clock;
+      regs$527$d = (counter$q == 8'd8) ? add_v$0$y : regs$527$q;
+      regs$528$clock = clock;
+      regs$528$d = (counter$q == 8'd13) ? scale_e$0$y : regs$528$q;
+      regs$529$clock = clock;
+      regs$529$d = (counter$q == 8'd14) ? mul_up$4$y : regs$529$q;
+      regs$530$clock = clock;
+      regs$530$d = (counter$q == 8'd14) ? mul_up$5$y : regs$530$q;
+      regs$531$clock = clock;
+      regs$531$d = (counter$q == 8'd7) ? add_up$1$y : regs$531$q;
+      regs$532$clock = clock;
+      regs$532$d = (counter$q == 8'd3) ? add_up$4$y : regs$532$q;
+      regs$533$clock = clock;
+      regs$533$d = (counter$q == 8'd3) ? add_up$5$y : regs$533$q;
+      regs$534$clock = clock;
+      regs$534$d = (counter$q == 8'd7) ? add_up$2$y : regs$534$q;
+      regs$535$clock = clock;
+      regs$535$d = (counter$q == 8'd0) ? mul_up$0$y : regs$535$q;
+      regs$536$clock = clock;
+      regs$536$d = (counter$q == 8'd0) ? mul_up$1$y : regs$536$q;
+      regs$537$clock = clock;
+      regs$537$d = (counter$q == 8'd0) ? scale : regs$537$q;
+      regs$538$clock = clock;
+      regs$538$d = (counter$q == 8'd0) ? v_z$1 : regs$538$q;
+      regs$539$clock = clock;
+      regs$539$d = (counter$q == 8'd5) ? mul_up$5$y : regs$539$q;
+      regs$540$clock = clock;
+      regs$540$d = (counter$q == 8'd9) ? add_up$1$y : regs$540$q;
+      regs$541$clock = clock;
+      regs$541$d = (counter$q == 8'd6) ? mul_up$2$y : regs$541$q;
+      regs$542$clock = clock;
+      regs$542$d = (counter$q == 8'd10) ? add_up$0$y : regs$542$q;
+      regs$543$clock = clock;
+      regs$543$d = (counter$q == 8'd14) ? add_up$4$y : regs$543$q;
+      regs$544$clock = clock;
+      regs$544$d = (counter$q == 8'd4) ? mul_up$0$y : regs$544$q;
+      regs$545$clock = clock;
+      regs$545$d = (counter$q == 8'd8) ? add_up$3$y : regs$545$q;
+      regs$546$clock = clock;
+      regs$546$d = (counter$q == 8'd3) ? mul_up$0$y : regs$546$q;
+      regs$547$clock = clock;
+      regs$547$d = (counter$q == 8'd8) ? add_up$4$y : regs$547$q;
+      regs$548$clock = clock;
+      regs$548$d = (counter$q == 8'd11) ? mul_up$2$y : regs$548$q;
+      regs$549$clock = clock;
+      regs$549$d = (counter$q == 8'd8) ? add_up$7$y : regs$549$q;
+      regs$550$clock = clock;
+      regs$550$d = (counter$q == 8'd12) ? mul_up$1$y : regs$550$q;
+      regs$551$clock = clock;
+      regs$551$d = (counter$q == 8'd4) ? mul_up$2$y : regs$551$q;
+      regs$552$clock = clock;
+      regs$552$d = (counter$q == 8'd9) ? add_up$4$y : regs$552$q;
+      regs$553$clock = clock;
+      regs$553$d = (counter$q == 8'd13) ? mul_up$1$y : regs$553$q;
+      regs$554$clock = clock;
+      regs$554$d = (counter$q == 8'd2) ? add_up$5$y : regs$554$q;
+      regs$555$clock = clock;
+      regs$555$d = (counter$q == 8'd7) ? add_up$0$y : regs$555$q;
+      regs$556$clock = clock;
+      regs$556$d = (counter$q == 8'd4) ? add_v$3$y : regs$556$q;
+      regs$557$clock = clock;
+      regs$557$d = (counter$q == 8'd15) ? mul_up$0$y : regs$557$q;
+      regs$558$clock = clock;
+      regs$558$d = (counter$q == 8'd15) ? mul_up$1$y : regs$558$q;
+      regs$559$clock = clock;
+      regs$559$d = (counter$q == 8'd4) ? add_v$4$y : regs$559$q;
+      regs$560$clock = clock;
+      regs$560$d = (counter$q == 8'd12) ? add_v$3$y : regs$560$q;
+      regs$561$clock = clock;
+      regs$561$d = (counter$q == 8'd12) ? regs$560$q : regs$561$q;
+      regs$562$clock = clock;
+      regs$562$d = (counter$q == 8'd14) ? add_up$6$y : regs$562$q;
+      regs$563$clock = clock;
+      regs$563$d = (counter$q == 8'd14) ? regs$562$q : regs$563$q;
+      regs$564$clock = clock;
+      regs$564$d = (counter$q == 8'd10) ? add_up$3$y : regs$564$q;
+      regs$565$clock = clock;
+      regs$565$d = (counter$q == 8'd7) ? scale_s$0$y : regs$565$q;
+      regs$566$clock = clock;
+      regs$566$d = (counter$q == 8'd0) ? mul_up$2$y : regs$566$q;
+      regs$567$clock = clock;
+      regs$567$d = (counter$q == 8'd0) ? mul_up$3$y : regs$567$q;
+      regs$568$clock = clock;
+      regs$568$d = (counter$q == 8'd3) ? add_up$6$y : regs$568$q;
+      regs$569$clock = clock;
+      regs$569$d = (counter$q == 8'd12) ? add_up$5$y : regs$569$q;
+      regs$570$clock = clock;
+      regs$570$d = (counter$q == 8'd0) ? v_x$2 : regs$570$q;
+      regs$571$clock = clock;
+      regs$571$d = (counter$q == 8'd0) ? v_y$2 : regs$571$q;
+      regs$572$clock = clock;
+      regs$572$d = (counter$q == 8'd10) ? add_up$1$y : regs$572$q;
+      regs$573$clock = clock;
+      regs$573$d = (counter$q == 8'd10) ? add_up$2$y : regs$573$q;
+      regs$574$clock = clock;
+      regs$574$d = (counter$q == 8'd0) ? add_up$1$y : regs$574$q;
+      regs$575$clock = clock;
+      regs$575$d = (counter$q == 8'd4) ? mul_up$0$y : regs$575$q;
+      regs$576$clock = clock;
+      regs$576$d = (counter$q == 8'd11) ? mul_up$3$y : regs$576$q;
+      regs$577$clock = clock;
+      regs$577$d = (counter$q == 8'd11) ? mul_up$4$y : regs$577$q;
+      regs$578$clock = clock;
+      regs$578$d = (counter$q == 8'd8) ? add_up$6$y : regs$578$q;
+      regs$579$clock = clock;
+      regs$579$d = (counter$q == 8'd3) ? mul_up$1$y : regs$579$q;
+      regs$580$clock = clock;
+      regs$580$d = (counter$q == 8'd12) ? mul_up$2$y : regs$580$q;
+      regs$581$clock = clock;
+      regs$581$d = (counter$q == 8'd12) ? mul_up$3$y : regs$581$q;
+      regs$582$clock = clock;
+      regs$582$d = (counter$q == 8'd4) ? mul_up$2$y : regs$582$q;
+      regs$583$clock = clock;
+      regs$583$d = (counter$q == 8'd9) ? add_up$3$y : regs$583$q;
+      regs$584$clock = clock;
+      regs$584$d = (counter$q == 8'd3) ? mul_up$2$y : regs$584$q;
+      regs$585$clock = clock;
+      regs$585$d = (counter$q == 8'd13) ? mul_up$2$y : regs$585$q;
+      regs$586$clock = clock;
+      regs$586$d = (counter$q == 8'd13) ? mul_up$3$y : regs$586$q;
+      regs$587$clock = clock;
+      regs$587$d = (counter$q == 8'd2) ? add_up$6$y : regs$587$q;
+      regs$588$clock = clock;
+      regs$588$d = (counter$q == 8'd2) ? add_up$7$y : regs$588$q;
+      regs$589$clock = clock;
+      regs$589$d = (counter$q == 8'd15) ? mul_up$2$y : regs$589$q;
+      regs$590$clock = clock;
+      regs$590$d = (counter$q == 8'd15) ? mul_up$3$y : regs$590$q;
+      regs$591$clock = clock;
+      regs$591$d = (counter$q == 8'd5) ? add_v$2$y : regs$591$q;
+      regs$592$clock = clock;
+      regs$592$d = (counter$q == 8'd5) ? add_v$3$y : regs$592$q;
+      regs$593$clock = clock;
+      regs$593$d = (counter$q == 8'd0) ? mul_up$4$y : regs$593$q;
+      regs$594$clock = clock;
+      regs$594$d = (counter$q == 8'd0) ? mul_up$5$y : regs$594$q;
+      regs$595$clock = clock;
+      regs$595$d = (counter$q == 8'd12) ? add_v$4$y : regs$595$q;
+      regs$596$clock = clock;
+      regs$596$d = (counter$q == 8'd12) ? regs$595$q : regs$596$q;
+      regs$597$clock = clock;
+      regs$597$d = (counter$q == 8'd10) ? add_up$4$y : regs$597$q;
+      regs$598$clock = clock;
+      regs$598$d = (counter$q == 8'd0) ? scale : regs$598$q;
+      regs$599$clock = clock;
+      regs$599$d = (counter$q == 8'd0) ? v_z$2 : regs$599$q;
+      regs$600$clock = clock;
+      regs$600$d = (counter$q == 8'd2) ? add_up$1$y : regs$600$q;
+      regs$601$clock = clock;
+      regs$601$d = (counter$q == 8'd4) ? mul_up$0$y : regs$601$q;
+      regs$602$clock = clock;
+      regs$602$d = (counter$q == 8'd5) ? add_v$0$y : regs$602$q;
+      regs$603$clock = clock;
+      regs$603$d = (counter$q == 8'd8) ? add_up$5$y : regs$603$q;
+      regs$604$clock = clock;
+      regs$604$d = (counter$q == 8'd11) ? mul_up$5$y : regs$604$q;
+      regs$605$clock = clock;
+      regs$605$d = (counter$q == 8'd9) ? scale_e$0$y : regs$605$q;
+      regs$606$clock = clock;
+      regs$606$d = (counter$q == 8'd10) ? scale_s$0$y : regs$606$q;
+      regs$607$clock = clock;
+      regs$607$d = (counter$q == 8'd9) ? add_up$2$y : regs$607$q;
+      regs$608$clock = clock;
+      regs$608$d = (counter$q == 8'd12) ? mul_up$4$y : regs$608$q;
+      regs$609$clock = clock;
+      regs$609$d = (counter$q == 8'd4) ? mul_up$2$y : regs$609$q;
+      regs$610$clock = clock;
+      regs$610$d = (counter$q == 8'd9) ? add_up$5$y : regs$610$q;
+      regs$611$clock = clock;
+      regs$611$d = (counter$q == 8'd13) ? mul_up$4$y : regs$611$q;
+      regs$612$clock = clock;
+      regs$612$d = (counter$q == 8'd13) ? mul_up$5$y : regs$612$q;
+      regs$613$clock = clock;
+      regs$613$d = (counter$q == 8'd14) ? mul_up$0$y : regs$613$q;
+      regs$614$clock = clock;
+      regs$614$d = (counter$q == 8'd13) ? add_up$6$y : regs$614$q;
+      regs$615$clock = clock;
+      regs$615$d = (counter$q == 8'd13) ? regs$614$q : regs$615$q;
+      regs$616$clock = clock;
+      regs$616$d = (counter$q == 8'd2) ? scale_s$0$y : regs$616$q;
+      regs$617$clock = clock;
+      regs$617$d = (counter$q == 8'd15) ? mul_up$4$y : regs$617$q;
+      regs$618$clock = clock;
+      regs$618$d = (counter$q == 8'd15) ? mul_up$5$y : regs$618$q;
+      regs$619$clock = clock;
+      regs$619$d = (counter$q == 8'd5) ? add_up$2$y : regs$619$q;
+      regs$620$clock = clock;
+      regs$620$d = (counter$q == 8'd5) ? add_up$3$y : regs$620$q;
+      regs$621$clock = clock;
+      regs$621$d = (counter$q == 8'd1) ? mul_up$0$y : regs$621$q;
+      regs$622$clock = clock;
+      regs$622$d = (counter$q == 8'd1) ? mul_up$1$y : regs$622$q;
+      regs$623$clock = clock;
+      regs$623$d = (counter$q == 8'd14) ? add_up$7$y : regs$623$q;
+      regs$624$clock = clock;
+      regs$624$d = (counter$q == 8'd14) ? regs$623$q : regs$624$q;
+      regs$625$clock = clock;
+      regs$625$d = (counter$q == 8'd8) ? scale_s$0$y : regs$625$q;
+      regs$626$clock = clock;
+      regs$626$d = (counter$q == 8'd14) ? add_up$4$y : regs$626$q;
+      regs$627$clock = clock;
+      regs$627$d = (counter$q == 8'd6) ? add_up$0$y : regs$627$q;
+      regs$628$clock = clock;
+      regs$628$d = (counter$q == 8'd12) ? add_up$3$y : regs$628$q;
+      regs$629$clock = clock;
+      regs$629$d = (counter$q == 8'd4) ? mul_up$3$y : regs$629$q;
+      regs$630$clock = clock;
+      regs$630$d = (counter$q == 8'd4) ? mul_up$4$y : regs$630$q;
+      regs$631$clock = clock;
+      regs$631$d = (counter$q == 8'd8) ? scale_z$0$y : regs$631$q;
+      regs$632$clock = clock;
+      regs$632$d = (counter$q == 8'd4) ? mul_up$1$y : regs$632$q;
+      regs$633$clock = clock;
+      regs$633$d = (counter$q == 8'd0) ? add_up$2$y : regs$633$q;
+      regs$634$clock = clock;
+      regs$634$d = (counter$q == 8'd0) ? add_up$3$y : regs$634$q;
+      regs$635$clock = clock;
+      regs$635$d = (counter$q == 8'd9) ? scale_z$0$y : regs$635$q;
+      regs$636$clock = clock;
+      regs$636$d = (counter$q == 8'd11) ? scale_e$0$y : regs$636$q;
+      regs$637$clock = clock;
+      regs$637$d = (counter$q == 8'd11) ? scale_s$0$y : regs$637$q;
+      regs$638$clock = clock;
+      regs$638$d = (counter$q == 8'd6) ? add_up$2$y : regs$638$q;
+      regs$639$clock = clock;
+      regs$639$d = (counter$q == 8'd13) ? add_up$4$y : regs$639$q;
+      regs$640$clock = clock;
+      regs$640$d = (counter$q == 8'd10) ? scale_z$0$y : regs$640$q;
+      regs$641$clock = clock;
+      regs$641$d = (counter$q == 8'd14) ? mul_up$1$y : regs$641$q;
+      regs$642$clock = clock;
+      regs$642$d = (counter$q == 8'd14) ? mul_up$2$y : regs$642$q;
+      regs$643$clock = clock;
+      regs$643$d = (counter$q == 8'd11) ? add_up$2$y : regs$643$q;
+      regs$644$clock = clock;
+      regs$644$d = (counter$q == 8'd11) ? add_up$3$y : regs$644$q;
+      regs$645$clock = clock;
+      regs$645$d = (counter$q == 8'd10) ? add_up$5$y : regs$645$q;
+      regs$646$clock = clock;
+      regs$646$d = (counter$q == 8'd5) ? add_up$4$y : regs$646$q;
+      regs$647$clock = clock;
+      regs$647$d = (counter$q == 8'd5) ? add_up$5$y : regs$647$q;
+      regs$648$clock = clock;
+      regs$648$d = (counter$q == 8'd10) ? add_up$6$y : regs$648$q;
+      regs$649$clock = clock;
+      regs$649$d = (counter$q == 8'd0) ? add_up$1$y : regs$649$q;
+      regs$650$clock = clock;
+      regs$650$d = (counter$q == 8'd8) ? scale_z$0$y : regs$650$q;
+      regs$651$clock = clock;
+      regs$651$d = (counter$q == 8'd4) ? mul_up$1$y : regs$651$q;
+      regs$652$clock = clock;
+      regs$652$d = (counter$q == 8'd6) ? add_up$1$y : regs$652$q;
+      regs$653$clock = clock;
+      regs$653$d = (counter$q == 8'd12) ? add_up$4$y : regs$653$q;
+      regs$654$clock = clock;
+      regs$654$d = (counter$q == 8'd6) ? add_v$2$y : regs$654$q;
+      regs$655$clock = clock;
+      regs$655$d = (counter$q == 8'd0) ? add_up$4$y : regs$655$q;
+      regs$656$clock = clock;
+      regs$656$d = (counter$q == 8'd0) ? add_up$5$y : regs$656$q;
+      regs$657$clock = clock;
+      regs$657$d = (counter$q == 8'd11) ? scale_e$0$y : regs$657$q;
+      regs$658$clock = clock;
+      regs$658$d = (counter$q == 8'd10) ? scale_z$0$y : regs$658$q;
+      regs$659$clock = clock;
+      regs$659$d = (counter$q == 8'd13) ? scale_e$0$y : regs$659$q;
+      regs$660$clock = clock;
+      regs$660$d = (counter$q == 8'd13) ? scale_s$0$y : regs$660$q;
+      regs$661$clock = clock;
+      regs$661$d = (counter$q == 8'd3) ? add_v$4$y : regs$661$q;
+      regs$662$clock = clock;
+      regs$662$d = (counter$q == 8'd6) ? add_up$3$y : regs$662$q;
+      regs$663$clock = clock;
+      regs$663$d = (counter$q == 8'd4) ? add_v$2$y : regs$663$q;
+      regs$664$clock = clock;
+      regs$664$d = (counter$q == 8'd3) ? mul_up$5$y : regs$664$q;
+      regs$665$clock = clock;
+      regs$665$d = (counter$q == 8'd14) ? mul_up$3$y : regs$665$q;
+      regs$666$clock = clock;
+      regs$666$d = (counter$q == 8'd6) ? add_up$4$y : regs$666$q;
+      regs$667$clock = clock;
+      regs$667$d = (counter$q == 8'd10) ? add_v$1$y : regs$667$q;
+      regs$668$clock = clock;
+      regs$668$d = (counter$q == 8'd9) ? add_up$7$y : regs$668$q;
+      regs$669$clock = clock;
+      regs$669$d = (counter$q == 8'd10) ? add_up$7$y : regs$669$q;
+      regs$670$clock = clock;
+      regs$670$d = (counter$q == 8'd6) ? add_up$5$y : regs$670$q;
+      regs$671$clock = clock;
+      regs$671$d = (counter$q == 8'd0) ? add_up$6$y : regs$671$q;
+      regs$672$clock = clock;
+      regs$672$d = (counter$q == 8'd3) ? add_up$0$y : regs$672$q;
+      regs$673$clock = clock;
+      regs$673$d = (counter$q == 8'd3) ? add_up$1$y : regs$673$q;
+      regs$674$clock = clock;
+      regs$674$d = (counter$q == 8'd0) ? add_up$7$y : regs$674$q;
+      regs$675$clock = clock;
+      regs$675$d = (counter$q == 8'd4) ? add_up$6$y : regs$675$q;
+      regs$676$clock = clock;
+      regs$676$d = (counter$q == 8'd4) ? add_up$7$y : regs$676$q;
+      regs$677$clock = clock;
+      regs$677$d = (counter$q == 8'd1) ? add_up$6$y : regs$677$q;
+      regs$678$clock = clock;
+      regs$678$d = (counter$q == 8'd5) ? add_up$0$y : regs$678$q;
+      regs$679$clock = clock;
+      regs$679$d = (counter$q == 8'd5) ? add_up$1$y : regs$679$q;
+      regs$680$clock = clock;
+      regs$680$d = (counter$q == 8'd3) ? add_up$1$y : regs$680$q;
+      regs$681$clock = clock;
+      regs$681$d = (counter$q == 8'd4) ? add_up$7$y : regs$681$q;
+      regs$682$clock = clock;
+      regs$682$d = (counter$q == 8'd5) ? add_up$1$y : regs$682$q;
+      regs$683$clock = clock;
+      regs$683$d = (counter$q == 8'd5) ? add_v$0$y : regs$683$q;
+      regs$684$clock = clock;
+      regs$684$d = (counter$q == 8'd6) ? add_v$2$y : regs$684$q;
+      regs$685$clock = clock;
+      regs$685$d = (counter$q == 8'd8) ? add_v$0$y : regs$685$q;
+      regs$686$clock = clock;
+      regs$686$d = (counter$q == 8'd13) ? add_up$7$y : regs$686$q;
+      regs$687$clock = clock;
+      regs$687$d = (counter$q == 8'd2) ? add_up$3$y : regs$687$q;
+      regs$688$clock = clock;
+      regs$688$d = (counter$q == 8'd2) ? add_up$4$y : regs$688$q;
+      regs$689$clock = clock;
+      regs$689$d = (counter$q == 8'd5) ? add_v$0$y : regs$689$q;
+      regs$690$clock = clock;
+      regs$690$d = (counter$q == 8'd5) ? regs$689$q : regs$690$q;
+      regs$691$clock = clock;
+      regs$691$d = (counter$q == 8'd5) ? regs$690$q : regs$691$q;
+      regs$692$clock = clock;
+      regs$692$d = (counter$q == 8'd5) ? regs$691$q : regs$692$q;
+      regs$693$clock = clock;
+      regs$693$d = (counter$q == 8'd9) ? scale_e$0$y : regs$693$q;
+      regs$694$clock = clock;
+      regs$694$d = (counter$q == 8'd9) ? regs$693$q : regs$694$q;
+      regs$695$clock = clock;
+      regs$695$d = (counter$q == 8'd9) ? regs$694$q : regs$695$q;
+      regs$696$clock = clock;
+      regs$696$d = (counter$q == 8'd6) ? add_v$2$y : regs$696$q;
+      regs$697$clock = clock;
+      regs$697$d = (counter$q == 8'd6) ? regs$696$q : regs$697$q;
+      regs$698$clock = clock;
+      regs$698$d = (counter$q == 8'd6) ? regs$697$q : regs$698$q;
+      regs$699$clock = clock;
+      regs$699$d = (counter$q == 8'd6) ? regs$698$q : regs$699$q;
+      regs$700$clock = clock;
+      regs$700$d = (counter$q == 8'd11) ? scale_e$0$y : regs$700$q;
+      regs$701$clock = clock;
+      regs$701$d = (counter$q == 8'd11) ? regs$700$q : regs$701$q;
+      regs$702$clock = clock;
+      regs$702$d = (counter$q == 8'd11) ? regs$701$q : regs$702$q;
+      regs$703$clock = clock;
+      regs$703$d = (counter$q == 8'd8) ? add_v$0$y : regs$703$q;
+      regs$704$clock = clock;
+      regs$704$d = (counter$q == 8'd8) ? regs$703$q : regs$704$q;
+      regs$705$clock = clock;
+      regs$705$d = (counter$q == 8'd8) ? regs$704$q : regs$705$q;
+      regs$706$clock = clock;
+      regs$706$d = (counter$q == 8'd13) ? scale_e$0$y : regs$706$q;
+      regs$707$clock = clock;
+      regs$707$d = (counter$q == 8'd13) ? regs$706$q : regs$707$q;
+      regs$708$clock = clock;
+      regs$708$d = (counter$q == 8'd13) ? regs$707$q : regs$708$q;
+      regs$709$clock = clock;
+      regs$709$d = (counter$q == 8'd3) ? add_v$4$y : regs$709$q;
+      regs$710$clock = clock;
+      regs$710$d = (counter$q == 8'd3) ? regs$709$q : regs$710$q;
+      regs$711$clock = clock;
+      regs$711$d = (counter$q == 8'd3) ? regs$710$q : regs$711$q;
+      regs$712$clock = clock;
+      regs$712$d = (counter$q == 8'd6) ? add_up$3$y : regs$712$q;
+      regs$713$clock = clock;
+      regs$713$d = (counter$q == 8'd6) ? regs$712$q : regs$713$q;
+      regs$714$clock = clock;
+      regs$714$d = (counter$q == 8'd4) ? add_v$2$y : regs$714$q;
+      regs$715$clock = clock;
+      regs$715$d = (counter$q == 8'd4) ? regs$714$q : regs$715$q;
+      regs$716$clock = clock;
+      regs$716$d = (counter$q == 8'd4) ? regs$715$q : regs$716$q;
+      regs$717$clock = clock;
+      regs$717$d = (counter$q == 8'd6) ? add_up$4$y : regs$717$q;
+      regs$718$clock = clock;
+      regs$718$d = (counter$q == 8'd6) ? regs$717$q : regs$718$q;
+      regs$719$clock = clock;
+      regs$719$d = (counter$q == 8'd10) ? add_v$1$y : regs$719$q;
+      regs$720$clock = clock;
+      regs$720$d = (counter$q == 8'd10) ? regs$719$q : regs$720$q;
+      regs$721$clock = clock;
+      regs$721$d = (counter$q == 8'd10) ? regs$720$q : regs$721$q;
+      regs$722$clock = clock;
+      regs$722$d = (counter$q == 8'd13) ? add_up$6$y : regs$722$q;
+      regs$723$clock = clock;
+      regs$723$d = (counter$q == 8'd13) ? regs$722$q : regs$723$q;
+      regs$724$clock = clock;
+      regs$724$d = (counter$q == 8'd13) ? regs$723$q : regs$724$q;
+      regs$725$clock = clock;
+      regs$725$d = (counter$q == 8'd13) ? add_v$4$y : regs$725$q;
+      regs$726$clock = clock;
+      regs$726$d = (counter$q == 8'd13) ? regs$725$q : regs$726$q;
+      regs$727$clock = clock;
+      regs$727$d = (counter$q == 8'd3) ? add_up$7$y : regs$727$q;
+      regs$728$clock = clock;
+      regs$728$d = (counter$q == 8'd4) ? add_v$3$y : regs$728$q;
+      regs$729$clock = clock;
+      regs$729$d = (counter$q == 8'd4) ? regs$728$q : regs$729$q;
+      regs$730$clock = clock;
+      regs$730$d = (counter$q == 8'd4) ? regs$729$q : regs$730$q;
+      regs$731$clock = clock;
+      regs$731$d = (counter$q == 8'd7) ? add_up$1$y : regs$731$q;
+      regs$732$clock = clock;
+      regs$732$d = (counter$q == 8'd7) ? regs$731$q : regs$732$q;
+      regs$733$clock = clock;
+      regs$733$d = (counter$q == 8'd4) ? add_v$4$y : regs$733$q;
+      regs$734$clock = clock;
+      regs$734$d = (counter$q == 8'd4) ? regs$733$q : regs$734$q;
+      regs$735$clock = clock;
+      regs$735$d = (counter$q == 8'd4) ? regs$734$q : regs$735$q;
+      regs$736$clock = clock;
+      regs$736$d = (counter$q == 8'd7) ? add_up$2$y : regs$736$q;
+      regs$737$clock = clock;
+      regs$737$d = (counter$q == 8'd7) ? regs$736$q : regs$737$q;
+      regs$738$clock = clock;
+      regs$738$d = (counter$q == 8'd12) ? add_v$3$y : regs$738$q;
+      regs$739$clock = clock;
+      regs$739$d = (counter$q == 8'd12) ? regs$738$q : regs$739$q;
+      regs$740$clock = clock;
+      regs$740$d = (counter$q == 8'd12) ? regs$739$q : regs$740$q;
+      regs$741$clock = clock;
+      regs$741$d = (counter$q == 8'd14) ? add_up$6$y : regs$741$q;
+      regs$742$clock = clock;
+      regs$742$d = (counter$q == 8'd14) ? regs$741$q : regs$742$q;
+      regs$743$clock = clock;
+      regs$743$d = (counter$q == 8'd14) ? regs$742$q : regs$743$q;
+      regs$744$clock = clock;
+      regs$744$d = (counter$q == 8'd14) ? add_v$3$y : regs$744$q;
+      regs$745$clock = clock;
+      regs$745$d = (counter$q == 8'd14) ? regs$744$q : regs$745$q;
+      regs$746$clock = clock;
+      regs$746$d = (counter$q == 8'd5) ? add_up$6$y : regs$746$q;
+      regs$747$clock = clock;
+      regs$747$d = (counter$q == 8'd5) ? add_v$2$y : regs$747$q;
+      regs$748$clock = clock;
+      regs$748$d = (counter$q == 8'd5) ? regs$747$q : regs$748$q;
+      regs$749$clock = clock;
+      regs$749$d = (counter$q == 8'd5) ? regs$748$q : regs$749$q;
+      regs$750$clock = clock;
+      regs$750$d = (counter$q == 8'd10) ? add_up$5$y : regs$750$q;
+      regs$751$clock = clock;
+      regs$751$d = (counter$q == 8'd5) ? add_v$3$y : regs$751$q;
+      regs$752$clock = clock;
+      regs$752$d = (counter$q == 8'd5) ? regs$751$q : regs$752$q;
+      regs$753$clock = clock;
+      regs$753$d = (counter$q == 8'd5) ? regs$752$q : regs$753$q;
+      regs$754$clock = clock;
+      regs$754$d = (counter$q == 8'd10) ? add_up$6$y : regs$754$q;
+      regs$755$clock = clock;
+      regs$755$d = (counter$q == 8'd12) ? add_v$4$y : regs$755$q;
+      regs$756$clock = clock;
+      regs$756$d = (counter$q == 8'd12) ? regs$755$q : regs$756$q;
+      regs$757$clock = clock;
+      regs$757$d = (counter$q == 8'd12) ? regs$756$q : regs$757$q;
+      regs$758$clock = clock;
+      regs$758$d = (counter$q == 8'd14) ? add_up$7$y : regs$758$q;
+      regs$759$clock = clock;
+      regs$759$d = (counter$q == 8'd14) ? regs$758$q : regs$759$q;
+      regs$760$clock = clock;
+      regs$760$d = (counter$q == 8'd14) ? regs$759$q : regs$760$q;
+      regs$761$clock = clock;
+      regs$761$d = (counter$q == 8'd14) ? add_v$4$y : regs$761$q;
+      regs$762$clock = clock;
+      regs$762$d = (counter$q == 8'd14) ? regs$761$q : regs$762$q;
+      regs$763$clock = clock;
+      regs$763$d = (counter$q == 8'd7) ? add_up$3$y : regs$763$q;
       exact$0$clock = clock;
       exact$0$d = (counter$q == 8'd0) ? v_exact : exact$0$q;
       exact$1$clock = clock;
@@ -15443,520 +18353,520 @@ module top$tri_unit$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2
       mul_v$0$clock = clock;
       mul_v$0$valid_in = 1'b0;
       case (counter$q)
-        8'd0: begin mul_v$0$a = regs$93$q; mul_v$0$b = regs$29$q; end
-        8'd1: begin mul_v$0$a = regs$0$q; mul_v$0$b = regs$14$q; end
-        8'd2: begin mul_v$0$a = regs$2$q; mul_v$0$b = regs$23$q; end
-        8'd3: begin mul_v$0$a = regs$1$q; mul_v$0$b = regs$21$q; end
-        8'd4: begin mul_v$0$a = regs$4$q; mul_v$0$b = regs$15$q; end
-        8'd5: begin mul_v$0$a = regs$6$q; mul_v$0$b = regs$24$q; end
-        8'd6: begin mul_v$0$a = regs$9$q; mul_v$0$b = regs$18$q; end
-        8'd7: begin mul_v$0$a = regs$8$q; mul_v$0$b = regs$16$q; end
-        8'd8: begin mul_v$0$a = regs$10$q; mul_v$0$b = regs$25$q; end
-        8'd9: begin mul_v$0$a = regs$155$q; mul_v$0$b = regs$34$q; end
-        8'd10: begin mul_v$0$a = regs$155$q; mul_v$0$b = regs$40$q; end
-        8'd11: begin mul_v$0$a = regs$155$q; mul_v$0$b = regs$46$q; end
-        8'd12: begin mul_v$0$a = regs$246$q; mul_v$0$b = regs$335$q; end
-        8'd13: begin mul_v$0$a = regs$186$q; mul_v$0$b = regs$335$q; end
-        8'd14: begin mul_v$0$a = regs$51$q; mul_v$0$b = regs$29$q; end
-        8'd15: begin mul_v$0$a = regs$71$q; mul_v$0$b = regs$33$q; end
+        8'd0: begin mul_v$0$a = regs$25$q; mul_v$0$b = regs$16$q; end
+        8'd1: begin mul_v$0$a = regs$0$q; mul_v$0$b = regs$8$q; end
+        8'd2: begin mul_v$0$a = regs$2$q; mul_v$0$b = regs$13$q; end
+        8'd3: begin mul_v$0$a = regs$1$q; mul_v$0$b = regs$12$q; end
+        8'd4: begin mul_v$0$a = regs$3$q; mul_v$0$b = regs$9$q; end
+        8'd5: begin mul_v$0$a = regs$4$q; mul_v$0$b = regs$14$q; end
+        8'd6: begin mul_v$0$a = regs$6$q; mul_v$0$b = regs$11$q; end
+        8'd7: begin mul_v$0$a = regs$5$q; mul_v$0$b = regs$10$q; end
+        8'd8: begin mul_v$0$a = regs$7$q; mul_v$0$b = regs$15$q; end
+        8'd9: begin mul_v$0$a = regs$26$q; mul_v$0$b = regs$18$q; end
+        8'd10: begin mul_v$0$a = regs$26$q; mul_v$0$b = regs$20$q; end
+        8'd11: begin mul_v$0$a = regs$26$q; mul_v$0$b = regs$22$q; end
+        8'd12: begin mul_v$0$a = regs$30$q; mul_v$0$b = regs$31$q; end
+        8'd13: begin mul_v$0$a = regs$28$q; mul_v$0$b = regs$31$q; end
+        8'd14: begin mul_v$0$a = regs$23$q; mul_v$0$b = regs$16$q; end
+        8'd15: begin mul_v$0$a = regs$24$q; mul_v$0$b = regs$17$q; end
         default: begin mul_v$0$a = 24'd0; mul_v$0$b = 24'd0; end
       endcase
       mul_v$1$clock = clock;
       mul_v$1$valid_in = 1'b0;
       case (counter$q)
-        8'd0: begin mul_v$1$a = regs$93$q; mul_v$1$b = regs$35$q; end
-        8'd1: begin mul_v$1$a = regs$1$q; mul_v$1$b = regs$18$q; end
-        8'd2: begin mul_v$1$a = regs$0$q; mul_v$1$b = regs$16$q; end
-        8'd3: begin mul_v$1$a = regs$2$q; mul_v$1$b = regs$25$q; end
-        8'd4: begin mul_v$1$a = regs$5$q; mul_v$1$b = regs$19$q; end
-        8'd5: begin mul_v$1$a = regs$4$q; mul_v$1$b = regs$17$q; end
-        8'd6: begin mul_v$1$a = regs$10$q; mul_v$1$b = regs$22$q; end
-        8'd7: begin mul_v$1$a = regs$9$q; mul_v$1$b = regs$20$q; end
-        8'd8: begin mul_v$1$a = regs$103$q; mul_v$1$b = regs$32$q; end
-        8'd9: begin mul_v$1$a = regs$103$q; mul_v$1$b = regs$38$q; end
-        8'd10: begin mul_v$1$a = regs$103$q; mul_v$1$b = regs$44$q; end
-        8'd11: begin mul_v$1$a = regs$185$q; mul_v$1$b = regs$277$q; end
-        8'd12: begin mul_v$1$a = regs$304$q; mul_v$1$b = regs$277$q; end
-        8'd13: begin mul_v$1$a = regs$320$q; mul_v$1$b = regs$218$q; end
-        8'd14: begin mul_v$1$a = regs$61$q; mul_v$1$b = regs$31$q; end
-        8'd15: begin mul_v$1$a = regs$71$q; mul_v$1$b = regs$39$q; end
+        8'd0: begin mul_v$1$a = regs$56$q; mul_v$1$b = regs$48$q; end
+        8'd1: begin mul_v$1$a = regs$33$q; mul_v$1$b = regs$41$q; end
+        8'd2: begin mul_v$1$a = regs$32$q; mul_v$1$b = regs$39$q; end
+        8'd3: begin mul_v$1$a = regs$34$q; mul_v$1$b = regs$45$q; end
+        8'd4: begin mul_v$1$a = regs$36$q; mul_v$1$b = regs$42$q; end
+        8'd5: begin mul_v$1$a = regs$35$q; mul_v$1$b = regs$40$q; end
+        8'd6: begin mul_v$1$a = regs$38$q; mul_v$1$b = regs$44$q; end
+        8'd7: begin mul_v$1$a = regs$37$q; mul_v$1$b = regs$43$q; end
+        8'd8: begin mul_v$1$a = regs$57$q; mul_v$1$b = regs$47$q; end
+        8'd9: begin mul_v$1$a = regs$57$q; mul_v$1$b = regs$50$q; end
+        8'd10: begin mul_v$1$a = regs$57$q; mul_v$1$b = regs$53$q; end
+        8'd11: begin mul_v$1$a = regs$58$q; mul_v$1$b = regs$60$q; end
+        8'd12: begin mul_v$1$a = regs$61$q; mul_v$1$b = regs$60$q; end
+        8'd13: begin mul_v$1$a = regs$62$q; mul_v$1$b = regs$59$q; end
+        8'd14: begin mul_v$1$a = regs$54$q; mul_v$1$b = regs$46$q; end
+        8'd15: begin mul_v$1$a = regs$55$q; mul_v$1$b = regs$51$q; end
         default: begin mul_v$1$a = 24'd0; mul_v$1$b = 24'd0; end
       endcase
       mul_v$2$clock = clock;
       mul_v$2$valid_in = 1'b0;
       case (counter$q)
-        8'd0: begin mul_v$2$a = regs$93$q; mul_v$2$b = regs$41$q; end
-        8'd1: begin mul_v$2$a = regs$2$q; mul_v$2$b = regs$22$q; end
-        8'd2: begin mul_v$2$a = regs$1$q; mul_v$2$b = regs$20$q; end
-        8'd3: begin mul_v$2$a = regs$4$q; mul_v$2$b = regs$14$q; end
-        8'd4: begin mul_v$2$a = regs$6$q; mul_v$2$b = regs$23$q; end
-        8'd5: begin mul_v$2$a = regs$5$q; mul_v$2$b = regs$21$q; end
-        8'd6: begin mul_v$2$a = regs$8$q; mul_v$2$b = regs$15$q; end
-        8'd7: begin mul_v$2$a = regs$10$q; mul_v$2$b = regs$24$q; end
-        8'd8: begin mul_v$2$a = regs$113$q; mul_v$2$b = regs$34$q; end
-        8'd9: begin mul_v$2$a = regs$113$q; mul_v$2$b = regs$40$q; end
-        8'd10: begin mul_v$2$a = regs$113$q; mul_v$2$b = regs$46$q; end
-        8'd11: begin mul_v$2$a = regs$245$q; mul_v$2$b = regs$218$q; end
-        8'd12: begin mul_v$2$a = regs$261$q; mul_v$2$b = regs$335$q; end
-        8'd13: begin mul_v$2$a = regs$202$q; mul_v$2$b = regs$335$q; end
-        8'd14: begin mul_v$2$a = regs$51$q; mul_v$2$b = regs$35$q; end
-        8'd15: begin mul_v$2$a = regs$61$q; mul_v$2$b = regs$43$q; end
+        8'd0: begin mul_v$2$a = regs$88$q; mul_v$2$b = regs$82$q; end
+        8'd1: begin mul_v$2$a = regs$64$q; mul_v$2$b = regs$74$q; end
+        8'd2: begin mul_v$2$a = regs$63$q; mul_v$2$b = regs$72$q; end
+        8'd3: begin mul_v$2$a = regs$65$q; mul_v$2$b = regs$70$q; end
+        8'd4: begin mul_v$2$a = regs$67$q; mul_v$2$b = regs$75$q; end
+        8'd5: begin mul_v$2$a = regs$66$q; mul_v$2$b = regs$73$q; end
+        8'd6: begin mul_v$2$a = regs$68$q; mul_v$2$b = regs$71$q; end
+        8'd7: begin mul_v$2$a = regs$69$q; mul_v$2$b = regs$76$q; end
+        8'd8: begin mul_v$2$a = regs$89$q; mul_v$2$b = regs$78$q; end
+        8'd9: begin mul_v$2$a = regs$89$q; mul_v$2$b = regs$81$q; end
+        8'd10: begin mul_v$2$a = regs$89$q; mul_v$2$b = regs$85$q; end
+        8'd11: begin mul_v$2$a = regs$92$q; mul_v$2$b = regs$91$q; end
+        8'd12: begin mul_v$2$a = regs$93$q; mul_v$2$b = regs$94$q; end
+        8'd13: begin mul_v$2$a = regs$90$q; mul_v$2$b = regs$94$q; end
+        8'd14: begin mul_v$2$a = regs$86$q; mul_v$2$b = regs$79$q; end
+        8'd15: begin mul_v$2$a = regs$87$q; mul_v$2$b = regs$83$q; end
         default: begin mul_v$2$a = 24'd0; mul_v$2$b = 24'd0; end
       endcase
       mul_v$3$clock = clock;
       mul_v$3$valid_in = 1'b0;
       case (counter$q)
-        8'd1: begin mul_v$3$a = regs$0$q; mul_v$3$b = regs$15$q; end
-        8'd2: begin mul_v$3$a = regs$2$q; mul_v$3$b = regs$24$q; end
-        8'd3: begin mul_v$3$a = regs$5$q; mul_v$3$b = regs$18$q; end
-        8'd4: begin mul_v$3$a = regs$4$q; mul_v$3$b = regs$16$q; end
-        8'd5: begin mul_v$3$a = regs$6$q; mul_v$3$b = regs$25$q; end
-        8'd6: begin mul_v$3$a = regs$9$q; mul_v$3$b = regs$19$q; end
-        8'd7: begin mul_v$3$a = regs$8$q; mul_v$3$b = regs$17$q; end
-        8'd8: begin mul_v$3$a = regs$135$q; mul_v$3$b = regs$30$q; end
-        8'd9: begin mul_v$3$a = regs$135$q; mul_v$3$b = regs$36$q; end
-        8'd10: begin mul_v$3$a = regs$135$q; mul_v$3$b = regs$42$q; end
-        8'd11: begin mul_v$3$a = regs$202$q; mul_v$3$b = regs$277$q; end
-        8'd12: begin mul_v$3$a = regs$320$q; mul_v$3$b = regs$277$q; end
-        8'd14: begin mul_v$3$a = regs$61$q; mul_v$3$b = regs$37$q; end
-        8'd15: begin mul_v$3$a = regs$71$q; mul_v$3$b = regs$45$q; end
+        8'd1: begin mul_v$3$a = regs$95$q; mul_v$3$b = regs$102$q; end
+        8'd2: begin mul_v$3$a = regs$96$q; mul_v$3$b = regs$107$q; end
+        8'd3: begin mul_v$3$a = regs$98$q; mul_v$3$b = regs$105$q; end
+        8'd4: begin mul_v$3$a = regs$97$q; mul_v$3$b = regs$103$q; end
+        8'd5: begin mul_v$3$a = regs$99$q; mul_v$3$b = regs$108$q; end
+        8'd6: begin mul_v$3$a = regs$101$q; mul_v$3$b = regs$106$q; end
+        8'd7: begin mul_v$3$a = regs$100$q; mul_v$3$b = regs$104$q; end
+        8'd8: begin mul_v$3$a = regs$119$q; mul_v$3$b = regs$110$q; end
+        8'd9: begin mul_v$3$a = regs$119$q; mul_v$3$b = regs$112$q; end
+        8'd10: begin mul_v$3$a = regs$119$q; mul_v$3$b = regs$115$q; end
+        8'd11: begin mul_v$3$a = regs$120$q; mul_v$3$b = regs$121$q; end
+        8'd12: begin mul_v$3$a = regs$122$q; mul_v$3$b = regs$121$q; end
+        8'd14: begin mul_v$3$a = regs$117$q; mul_v$3$b = regs$113$q; end
+        8'd15: begin mul_v$3$a = regs$118$q; mul_v$3$b = regs$116$q; end
         default: begin mul_v$3$a = 24'd0; mul_v$3$b = 24'd0; end
       endcase
       mul_v$4$clock = clock;
       mul_v$4$valid_in = 1'b0;
       case (counter$q)
-        8'd1: begin mul_v$4$a = regs$1$q; mul_v$4$b = regs$19$q; end
-        8'd2: begin mul_v$4$a = regs$0$q; mul_v$4$b = regs$17$q; end
-        8'd3: begin mul_v$4$a = regs$6$q; mul_v$4$b = regs$22$q; end
-        8'd4: begin mul_v$4$a = regs$5$q; mul_v$4$b = regs$20$q; end
-        8'd5: begin mul_v$4$a = regs$8$q; mul_v$4$b = regs$14$q; end
-        8'd6: begin mul_v$4$a = regs$10$q; mul_v$4$b = regs$23$q; end
-        8'd7: begin mul_v$4$a = regs$9$q; mul_v$4$b = regs$21$q; end
-        8'd8: begin mul_v$4$a = regs$145$q; mul_v$4$b = regs$32$q; end
-        8'd9: begin mul_v$4$a = regs$145$q; mul_v$4$b = regs$38$q; end
-        8'd10: begin mul_v$4$a = regs$145$q; mul_v$4$b = regs$44$q; end
-        8'd11: begin mul_v$4$a = regs$261$q; mul_v$4$b = regs$218$q; end
-        8'd12: begin mul_v$4$a = regs$304$q; mul_v$4$b = regs$218$q; end
-        8'd14: begin mul_v$4$a = regs$51$q; mul_v$4$b = regs$41$q; end
+        8'd1: begin mul_v$4$a = regs$124$q; mul_v$4$b = regs$132$q; end
+        8'd2: begin mul_v$4$a = regs$123$q; mul_v$4$b = regs$131$q; end
+        8'd3: begin mul_v$4$a = regs$126$q; mul_v$4$b = regs$135$q; end
+        8'd4: begin mul_v$4$a = regs$125$q; mul_v$4$b = regs$133$q; end
+        8'd5: begin mul_v$4$a = regs$127$q; mul_v$4$b = regs$130$q; end
+        8'd6: begin mul_v$4$a = regs$129$q; mul_v$4$b = regs$136$q; end
+        8'd7: begin mul_v$4$a = regs$128$q; mul_v$4$b = regs$134$q; end
+        8'd8: begin mul_v$4$a = regs$145$q; mul_v$4$b = regs$138$q; end
+        8'd9: begin mul_v$4$a = regs$145$q; mul_v$4$b = regs$140$q; end
+        8'd10: begin mul_v$4$a = regs$145$q; mul_v$4$b = regs$143$q; end
+        8'd11: begin mul_v$4$a = regs$147$q; mul_v$4$b = regs$146$q; end
+        8'd12: begin mul_v$4$a = regs$148$q; mul_v$4$b = regs$146$q; end
+        8'd14: begin mul_v$4$a = regs$144$q; mul_v$4$b = regs$141$q; end
         default: begin mul_v$4$a = 24'd0; mul_v$4$b = 24'd0; end
       endcase
       mul_up$0$clock = clock;
       mul_up$0$valid_in = 1'b0;
       case (counter$q)
-        8'd0: begin mul_up$0$a = regs$175$q; mul_up$0$b = regs$178$q; end
-        8'd1: begin mul_up$0$a = {1'b0, regs$0$q[22:0]}; mul_up$0$b = {1'b0, regs$14$q[22:0]}; end
-        8'd2: begin mul_up$0$a = {1'b0, regs$0$q[22:0]}; mul_up$0$b = {1'b0, regs$16$q[22:0]}; end
-        8'd3: begin mul_up$0$a = {1'b0, regs$4$q[22:0]}; mul_up$0$b = {1'b0, regs$14$q[22:0]}; end
-        8'd4: begin mul_up$0$a = {1'b0, regs$4$q[22:0]}; mul_up$0$b = {1'b0, regs$16$q[22:0]}; end
-        8'd5: begin mul_up$0$a = {1'b0, regs$8$q[22:0]}; mul_up$0$b = {1'b0, regs$14$q[22:0]}; end
-        8'd6: begin mul_up$0$a = {1'b0, regs$8$q[22:0]}; mul_up$0$b = {1'b0, regs$16$q[22:0]}; end
-        8'd7: begin mul_up$0$a = regs$12$q; mul_up$0$b = regs$26$q; end
-        8'd8: begin mul_up$0$a = {1'b0, regs$108$q[22:0]}; mul_up$0$b = {1'b0, regs$38$q[22:0]}; end
-        8'd9: begin mul_up$0$a = {1'b0, regs$108$q[22:0]}; mul_up$0$b = {1'b0, regs$44$q[22:0]}; end
-        8'd10: begin mul_up$0$a = {1'b0, regs$186$q[22:0]}; mul_up$0$b = regs$293$q; end
-        8'd11: begin mul_up$0$a = regs$314$q; mul_up$0$b = regs$294$q; end
-        8'd12: begin mul_up$0$a = regs$314$q; mul_up$0$b = regs$235$q; end
-        8'd13: begin mul_up$0$a = regs$212$q; mul_up$0$b = regs$351$q; end
-        8'd14: begin mul_up$0$a = {1'b0, regs$56$q[22:0]}; mul_up$0$b = {1'b0, regs$29$q[22:0]}; end
-        8'd15: begin mul_up$0$a = {1'b0, regs$76$q[22:0]}; mul_up$0$b = {1'b0, regs$33$q[22:0]}; end
+        8'd0: begin mul_up$0$a = regs$165$q; mul_up$0$b = regs$166$q; end
+        8'd1: begin mul_up$0$a = {1'b0, regs$149$q[22:0]}; mul_up$0$b = {1'b0, regs$153$q[22:0]}; end
+        8'd2: begin mul_up$0$a = {1'b0, regs$149$q[22:0]}; mul_up$0$b = {1'b0, regs$154$q[22:0]}; end
+        8'd3: begin mul_up$0$a = {1'b0, regs$150$q[22:0]}; mul_up$0$b = {1'b0, regs$153$q[22:0]}; end
+        8'd4: begin mul_up$0$a = {1'b0, regs$150$q[22:0]}; mul_up$0$b = {1'b0, regs$154$q[22:0]}; end
+        8'd5: begin mul_up$0$a = {1'b0, regs$151$q[22:0]}; mul_up$0$b = {1'b0, regs$153$q[22:0]}; end
+        8'd6: begin mul_up$0$a = {1'b0, regs$151$q[22:0]}; mul_up$0$b = {1'b0, regs$154$q[22:0]}; end
+        8'd7: begin mul_up$0$a = regs$152$q; mul_up$0$b = regs$155$q; end
+        8'd8: begin mul_up$0$a = {1'b0, regs$164$q[22:0]}; mul_up$0$b = {1'b0, regs$159$q[22:0]}; end
+        8'd9: begin mul_up$0$a = {1'b0, regs$164$q[22:0]}; mul_up$0$b = {1'b0, regs$161$q[22:0]}; end
+        8'd10: begin mul_up$0$a = {1'b0, regs$168$q[22:0]}; mul_up$0$b = regs$172$q; end
+        8'd11: begin mul_up$0$a = regs$175$q; mul_up$0$b = regs$173$q; end
+        8'd12: begin mul_up$0$a = regs$175$q; mul_up$0$b = regs$171$q; end
+        8'd13: begin mul_up$0$a = regs$170$q; mul_up$0$b = regs$176$q; end
+        8'd14: begin mul_up$0$a = {1'b0, regs$162$q[22:0]}; mul_up$0$b = {1'b0, regs$156$q[22:0]}; end
+        8'd15: begin mul_up$0$a = {1'b0, regs$163$q[22:0]}; mul_up$0$b = {1'b0, regs$157$q[22:0]}; end
         default: begin mul_up$0$a = 24'd0; mul_up$0$b = 24'd0; end
       endcase
       mul_up$1$clock = clock;
       mul_up$1$valid_in = 1'b0;
       case (counter$q)
-        8'd0: begin mul_up$1$a = regs$175$q; mul_up$1$b = regs$238$q; end
-        8'd1: begin mul_up$1$a = {1'b0, regs$1$q[22:0]}; mul_up$1$b = {1'b0, regs$18$q[22:0]}; end
-        8'd2: begin mul_up$1$a = {1'b0, regs$1$q[22:0]}; mul_up$1$b = {1'b0, regs$20$q[22:0]}; end
-        8'd3: begin mul_up$1$a = {1'b0, regs$5$q[22:0]}; mul_up$1$b = {1'b0, regs$18$q[22:0]}; end
-        8'd4: begin mul_up$1$a = {1'b0, regs$5$q[22:0]}; mul_up$1$b = {1'b0, regs$20$q[22:0]}; end
-        8'd5: begin mul_up$1$a = {1'b0, regs$9$q[22:0]}; mul_up$1$b = {1'b0, regs$18$q[22:0]}; end
-        8'd6: begin mul_up$1$a = {1'b0, regs$9$q[22:0]}; mul_up$1$b = {1'b0, regs$20$q[22:0]}; end
-        8'd7: begin mul_up$1$a = regs$13$q; mul_up$1$b = regs$27$q; end
-        8'd8: begin mul_up$1$a = {1'b0, regs$118$q[22:0]}; mul_up$1$b = {1'b0, regs$40$q[22:0]}; end
-        8'd9: begin mul_up$1$a = {1'b0, regs$118$q[22:0]}; mul_up$1$b = {1'b0, regs$46$q[22:0]}; end
-        8'd10: begin mul_up$1$a = regs$212$q; mul_up$1$b = regs$294$q; end
-        8'd11: begin mul_up$1$a = {1'b0, regs$305$q[22:0]}; mul_up$1$b = regs$293$q; end
-        8'd12: begin mul_up$1$a = {1'b0, regs$305$q[22:0]}; mul_up$1$b = regs$234$q; end
-        8'd13: begin mul_up$1$a = {1'b0, regs$203$q[22:0]}; mul_up$1$b = regs$350$q; end
-        8'd14: begin mul_up$1$a = {1'b0, regs$66$q[22:0]}; mul_up$1$b = {1'b0, regs$31$q[22:0]}; end
-        8'd15: begin mul_up$1$a = {1'b0, regs$76$q[22:0]}; mul_up$1$b = {1'b0, regs$39$q[22:0]}; end
+        8'd0: begin mul_up$1$a = regs$192$q; mul_up$1$b = regs$198$q; end
+        8'd1: begin mul_up$1$a = {1'b0, regs$177$q[22:0]}; mul_up$1$b = {1'b0, regs$181$q[22:0]}; end
+        8'd2: begin mul_up$1$a = {1'b0, regs$177$q[22:0]}; mul_up$1$b = {1'b0, regs$182$q[22:0]}; end
+        8'd3: begin mul_up$1$a = {1'b0, regs$178$q[22:0]}; mul_up$1$b = {1'b0, regs$181$q[22:0]}; end
+        8'd4: begin mul_up$1$a = {1'b0, regs$178$q[22:0]}; mul_up$1$b = {1'b0, regs$182$q[22:0]}; end
+        8'd5: begin mul_up$1$a = {1'b0, regs$179$q[22:0]}; mul_up$1$b = {1'b0, regs$181$q[22:0]}; end
+        8'd6: begin mul_up$1$a = {1'b0, regs$179$q[22:0]}; mul_up$1$b = {1'b0, regs$182$q[22:0]}; end
+        8'd7: begin mul_up$1$a = regs$180$q; mul_up$1$b = regs$183$q; end
+        8'd8: begin mul_up$1$a = {1'b0, regs$191$q[22:0]}; mul_up$1$b = {1'b0, regs$186$q[22:0]}; end
+        8'd9: begin mul_up$1$a = {1'b0, regs$191$q[22:0]}; mul_up$1$b = {1'b0, regs$188$q[22:0]}; end
+        8'd10: begin mul_up$1$a = regs$196$q; mul_up$1$b = regs$200$q; end
+        8'd11: begin mul_up$1$a = {1'b0, regs$202$q[22:0]}; mul_up$1$b = regs$199$q; end
+        8'd12: begin mul_up$1$a = {1'b0, regs$202$q[22:0]}; mul_up$1$b = regs$197$q; end
+        8'd13: begin mul_up$1$a = {1'b0, regs$194$q[22:0]}; mul_up$1$b = regs$203$q; end
+        8'd14: begin mul_up$1$a = {1'b0, regs$189$q[22:0]}; mul_up$1$b = {1'b0, regs$184$q[22:0]}; end
+        8'd15: begin mul_up$1$a = {1'b0, regs$190$q[22:0]}; mul_up$1$b = {1'b0, regs$185$q[22:0]}; end
         default: begin mul_up$1$a = 24'd0; mul_up$1$b = 24'd0; end
       endcase
       mul_up$2$clock = clock;
       mul_up$2$valid_in = 1'b0;
       case (counter$q)
-        8'd0: begin mul_up$2$a = regs$175$q; mul_up$2$b = regs$297$q; end
-        8'd1: begin mul_up$2$a = {1'b0, regs$2$q[22:0]}; mul_up$2$b = {1'b0, regs$22$q[22:0]}; end
-        8'd2: begin mul_up$2$a = {1'b0, regs$2$q[22:0]}; mul_up$2$b = {1'b0, regs$24$q[22:0]}; end
-        8'd3: begin mul_up$2$a = {1'b0, regs$6$q[22:0]}; mul_up$2$b = {1'b0, regs$22$q[22:0]}; end
-        8'd4: begin mul_up$2$a = {1'b0, regs$6$q[22:0]}; mul_up$2$b = {1'b0, regs$24$q[22:0]}; end
-        8'd5: begin mul_up$2$a = {1'b0, regs$10$q[22:0]}; mul_up$2$b = {1'b0, regs$22$q[22:0]}; end
-        8'd6: begin mul_up$2$a = {1'b0, regs$10$q[22:0]}; mul_up$2$b = {1'b0, regs$24$q[22:0]}; end
-        8'd7: begin mul_up$2$a = {1'b0, regs$118$q[22:0]}; mul_up$2$b = {1'b0, regs$34$q[22:0]}; end
-        8'd8: begin mul_up$2$a = {1'b0, regs$140$q[22:0]}; mul_up$2$b = {1'b0, regs$36$q[22:0]}; end
-        8'd9: begin mul_up$2$a = {1'b0, regs$140$q[22:0]}; mul_up$2$b = {1'b0, regs$42$q[22:0]}; end
-        8'd10: begin mul_up$2$a = {1'b0, regs$203$q[22:0]}; mul_up$2$b = regs$293$q; end
-        8'd11: begin mul_up$2$a = regs$271$q; mul_up$2$b = regs$351$q; end
-        8'd12: begin mul_up$2$a = regs$196$q; mul_up$2$b = regs$351$q; end
-        8'd14: begin mul_up$2$a = {1'b0, regs$56$q[22:0]}; mul_up$2$b = {1'b0, regs$35$q[22:0]}; end
-        8'd15: begin mul_up$2$a = {1'b0, regs$76$q[22:0]}; mul_up$2$b = {1'b0, regs$45$q[22:0]}; end
+        8'd0: begin mul_up$2$a = regs$220$q; mul_up$2$b = regs$228$q; end
+        8'd1: begin mul_up$2$a = {1'b0, regs$204$q[22:0]}; mul_up$2$b = {1'b0, regs$207$q[22:0]}; end
+        8'd2: begin mul_up$2$a = {1'b0, regs$204$q[22:0]}; mul_up$2$b = {1'b0, regs$208$q[22:0]}; end
+        8'd3: begin mul_up$2$a = {1'b0, regs$205$q[22:0]}; mul_up$2$b = {1'b0, regs$207$q[22:0]}; end
+        8'd4: begin mul_up$2$a = {1'b0, regs$205$q[22:0]}; mul_up$2$b = {1'b0, regs$208$q[22:0]}; end
+        8'd5: begin mul_up$2$a = {1'b0, regs$206$q[22:0]}; mul_up$2$b = {1'b0, regs$207$q[22:0]}; end
+        8'd6: begin mul_up$2$a = {1'b0, regs$206$q[22:0]}; mul_up$2$b = {1'b0, regs$208$q[22:0]}; end
+        8'd7: begin mul_up$2$a = {1'b0, regs$218$q[22:0]}; mul_up$2$b = {1'b0, regs$210$q[22:0]}; end
+        8'd8: begin mul_up$2$a = {1'b0, regs$219$q[22:0]}; mul_up$2$b = {1'b0, regs$212$q[22:0]}; end
+        8'd9: begin mul_up$2$a = {1'b0, regs$219$q[22:0]}; mul_up$2$b = {1'b0, regs$214$q[22:0]}; end
+        8'd10: begin mul_up$2$a = {1'b0, regs$224$q[22:0]}; mul_up$2$b = regs$227$q; end
+        8'd11: begin mul_up$2$a = regs$226$q; mul_up$2$b = regs$229$q; end
+        8'd12: begin mul_up$2$a = regs$222$q; mul_up$2$b = regs$229$q; end
+        8'd14: begin mul_up$2$a = {1'b0, regs$216$q[22:0]}; mul_up$2$b = {1'b0, regs$211$q[22:0]}; end
+        8'd15: begin mul_up$2$a = {1'b0, regs$217$q[22:0]}; mul_up$2$b = {1'b0, regs$215$q[22:0]}; end
         default: begin mul_up$2$a = 24'd0; mul_up$2$b = 24'd0; end
       endcase
       mul_up$3$clock = clock;
       mul_up$3$valid_in = 1'b0;
       case (counter$q)
-        8'd0: begin mul_up$3$a = {1'b0, regs$98$q[22:0]}; mul_up$3$b = {1'b0, regs$29$q[22:0]}; end
-        8'd1: begin mul_up$3$a = {1'b0, regs$0$q[22:0]}; mul_up$3$b = {1'b0, regs$15$q[22:0]}; end
-        8'd2: begin mul_up$3$a = {1'b0, regs$0$q[22:0]}; mul_up$3$b = {1'b0, regs$17$q[22:0]}; end
-        8'd3: begin mul_up$3$a = {1'b0, regs$4$q[22:0]}; mul_up$3$b = {1'b0, regs$15$q[22:0]}; end
-        8'd4: begin mul_up$3$a = {1'b0, regs$4$q[22:0]}; mul_up$3$b = {1'b0, regs$17$q[22:0]}; end
-        8'd5: begin mul_up$3$a = {1'b0, regs$8$q[22:0]}; mul_up$3$b = {1'b0, regs$15$q[22:0]}; end
-        8'd6: begin mul_up$3$a = {1'b0, regs$8$q[22:0]}; mul_up$3$b = {1'b0, regs$17$q[22:0]}; end
-        8'd7: begin mul_up$3$a = {1'b0, regs$140$q[22:0]}; mul_up$3$b = {1'b0, regs$30$q[22:0]}; end
-        8'd8: begin mul_up$3$a = {1'b0, regs$150$q[22:0]}; mul_up$3$b = {1'b0, regs$38$q[22:0]}; end
-        8'd9: begin mul_up$3$a = {1'b0, regs$150$q[22:0]}; mul_up$3$b = {1'b0, regs$44$q[22:0]}; end
-        8'd10: begin mul_up$3$a = {1'b0, regs$262$q[22:0]}; mul_up$3$b = regs$234$q; end
-        8'd11: begin mul_up$3$a = {1'b0, regs$262$q[22:0]}; mul_up$3$b = regs$350$q; end
-        8'd12: begin mul_up$3$a = {1'b0, regs$187$q[22:0]}; mul_up$3$b = regs$350$q; end
-        8'd14: begin mul_up$3$a = {1'b0, regs$66$q[22:0]}; mul_up$3$b = {1'b0, regs$37$q[22:0]}; end
-        8'd15: begin mul_up$3$a = regs$254$q; mul_up$3$b = regs$235$q; end
+        8'd0: begin mul_up$3$a = {1'b0, regs$242$q[22:0]}; mul_up$3$b = {1'b0, regs$235$q[22:0]}; end
+        8'd1: begin mul_up$3$a = {1'b0, regs$230$q[22:0]}; mul_up$3$b = {1'b0, regs$233$q[22:0]}; end
+        8'd2: begin mul_up$3$a = {1'b0, regs$230$q[22:0]}; mul_up$3$b = {1'b0, regs$234$q[22:0]}; end
+        8'd3: begin mul_up$3$a = {1'b0, regs$231$q[22:0]}; mul_up$3$b = {1'b0, regs$233$q[22:0]}; end
+        8'd4: begin mul_up$3$a = {1'b0, regs$231$q[22:0]}; mul_up$3$b = {1'b0, regs$234$q[22:0]}; end
+        8'd5: begin mul_up$3$a = {1'b0, regs$232$q[22:0]}; mul_up$3$b = {1'b0, regs$233$q[22:0]}; end
+        8'd6: begin mul_up$3$a = {1'b0, regs$232$q[22:0]}; mul_up$3$b = {1'b0, regs$234$q[22:0]}; end
+        8'd7: begin mul_up$3$a = {1'b0, regs$243$q[22:0]}; mul_up$3$b = {1'b0, regs$236$q[22:0]}; end
+        8'd8: begin mul_up$3$a = {1'b0, regs$244$q[22:0]}; mul_up$3$b = {1'b0, regs$238$q[22:0]}; end
+        8'd9: begin mul_up$3$a = {1'b0, regs$244$q[22:0]}; mul_up$3$b = {1'b0, regs$240$q[22:0]}; end
+        8'd10: begin mul_up$3$a = {1'b0, regs$252$q[22:0]}; mul_up$3$b = regs$248$q; end
+        8'd11: begin mul_up$3$a = {1'b0, regs$252$q[22:0]}; mul_up$3$b = regs$253$q; end
+        8'd12: begin mul_up$3$a = {1'b0, regs$247$q[22:0]}; mul_up$3$b = regs$253$q; end
+        8'd14: begin mul_up$3$a = {1'b0, regs$241$q[22:0]}; mul_up$3$b = {1'b0, regs$237$q[22:0]}; end
+        8'd15: begin mul_up$3$a = regs$250$q; mul_up$3$b = regs$249$q; end
         default: begin mul_up$3$a = 24'd0; mul_up$3$b = 24'd0; end
       endcase
       mul_up$4$clock = clock;
       mul_up$4$valid_in = 1'b0;
       case (counter$q)
-        8'd0: begin mul_up$4$a = {1'b0, regs$108$q[22:0]}; mul_up$4$b = {1'b0, regs$31$q[22:0]}; end
-        8'd1: begin mul_up$4$a = {1'b0, regs$1$q[22:0]}; mul_up$4$b = {1'b0, regs$19$q[22:0]}; end
-        8'd2: begin mul_up$4$a = {1'b0, regs$1$q[22:0]}; mul_up$4$b = {1'b0, regs$21$q[22:0]}; end
-        8'd3: begin mul_up$4$a = {1'b0, regs$5$q[22:0]}; mul_up$4$b = {1'b0, regs$19$q[22:0]}; end
-        8'd4: begin mul_up$4$a = {1'b0, regs$5$q[22:0]}; mul_up$4$b = {1'b0, regs$21$q[22:0]}; end
-        8'd5: begin mul_up$4$a = {1'b0, regs$9$q[22:0]}; mul_up$4$b = {1'b0, regs$19$q[22:0]}; end
-        8'd6: begin mul_up$4$a = {1'b0, regs$9$q[22:0]}; mul_up$4$b = {1'b0, regs$21$q[22:0]}; end
-        8'd7: begin mul_up$4$a = {1'b0, regs$150$q[22:0]}; mul_up$4$b = {1'b0, regs$32$q[22:0]}; end
-        8'd8: begin mul_up$4$a = {1'b0, regs$160$q[22:0]}; mul_up$4$b = {1'b0, regs$40$q[22:0]}; end
-        8'd9: begin mul_up$4$a = {1'b0, regs$160$q[22:0]}; mul_up$4$b = {1'b0, regs$46$q[22:0]}; end
-        8'd10: begin mul_up$4$a = regs$255$q; mul_up$4$b = regs$351$q; end
-        8'd11: begin mul_up$4$a = regs$329$q; mul_up$4$b = regs$294$q; end
-        8'd12: begin mul_up$4$a = regs$329$q; mul_up$4$b = regs$235$q; end
-        8'd14: begin mul_up$4$a = {1'b0, regs$56$q[22:0]}; mul_up$4$b = {1'b0, regs$41$q[22:0]}; end
-        8'd15: begin mul_up$4$a = {1'b0, regs$246$q[22:0]}; mul_up$4$b = regs$234$q; end
+        8'd0: begin mul_up$4$a = {1'b0, regs$267$q[22:0]}; mul_up$4$b = {1'b0, regs$259$q[22:0]}; end
+        8'd1: begin mul_up$4$a = {1'b0, regs$254$q[22:0]}; mul_up$4$b = {1'b0, regs$257$q[22:0]}; end
+        8'd2: begin mul_up$4$a = {1'b0, regs$254$q[22:0]}; mul_up$4$b = {1'b0, regs$258$q[22:0]}; end
+        8'd3: begin mul_up$4$a = {1'b0, regs$255$q[22:0]}; mul_up$4$b = {1'b0, regs$257$q[22:0]}; end
+        8'd4: begin mul_up$4$a = {1'b0, regs$255$q[22:0]}; mul_up$4$b = {1'b0, regs$258$q[22:0]}; end
+        8'd5: begin mul_up$4$a = {1'b0, regs$256$q[22:0]}; mul_up$4$b = {1'b0, regs$257$q[22:0]}; end
+        8'd6: begin mul_up$4$a = {1'b0, regs$256$q[22:0]}; mul_up$4$b = {1'b0, regs$258$q[22:0]}; end
+        8'd7: begin mul_up$4$a = {1'b0, regs$268$q[22:0]}; mul_up$4$b = {1'b0, regs$260$q[22:0]}; end
+        8'd8: begin mul_up$4$a = {1'b0, regs$269$q[22:0]}; mul_up$4$b = {1'b0, regs$262$q[22:0]}; end
+        8'd9: begin mul_up$4$a = {1'b0, regs$269$q[22:0]}; mul_up$4$b = {1'b0, regs$265$q[22:0]}; end
+        8'd10: begin mul_up$4$a = regs$275$q; mul_up$4$b = regs$278$q; end
+        8'd11: begin mul_up$4$a = regs$277$q; mul_up$4$b = regs$276$q; end
+        8'd12: begin mul_up$4$a = regs$277$q; mul_up$4$b = regs$271$q; end
+        8'd14: begin mul_up$4$a = {1'b0, regs$266$q[22:0]}; mul_up$4$b = {1'b0, regs$263$q[22:0]}; end
+        8'd15: begin mul_up$4$a = {1'b0, regs$273$q[22:0]}; mul_up$4$b = regs$270$q; end
         default: begin mul_up$4$a = 24'd0; mul_up$4$b = 24'd0; end
       endcase
       mul_up$5$clock = clock;
       mul_up$5$valid_in = 1'b0;
       case (counter$q)
-        8'd0: begin mul_up$5$a = {1'b0, regs$98$q[22:0]}; mul_up$5$b = {1'b0, regs$35$q[22:0]}; end
-        8'd1: begin mul_up$5$a = {1'b0, regs$2$q[22:0]}; mul_up$5$b = {1'b0, regs$23$q[22:0]}; end
-        8'd2: begin mul_up$5$a = {1'b0, regs$2$q[22:0]}; mul_up$5$b = {1'b0, regs$25$q[22:0]}; end
-        8'd3: begin mul_up$5$a = {1'b0, regs$6$q[22:0]}; mul_up$5$b = {1'b0, regs$23$q[22:0]}; end
-        8'd4: begin mul_up$5$a = {1'b0, regs$6$q[22:0]}; mul_up$5$b = {1'b0, regs$25$q[22:0]}; end
-        8'd5: begin mul_up$5$a = {1'b0, regs$10$q[22:0]}; mul_up$5$b = {1'b0, regs$23$q[22:0]}; end
-        8'd6: begin mul_up$5$a = {1'b0, regs$10$q[22:0]}; mul_up$5$b = {1'b0, regs$25$q[22:0]}; end
-        8'd7: begin mul_up$5$a = {1'b0, regs$160$q[22:0]}; mul_up$5$b = {1'b0, regs$34$q[22:0]}; end
-        8'd8: begin mul_up$5$a = {1'b0, regs$98$q[22:0]}; mul_up$5$b = {1'b0, regs$42$q[22:0]}; end
-        8'd9: begin mul_up$5$a = regs$196$q; mul_up$5$b = regs$294$q; end
-        8'd10: begin mul_up$5$a = {1'b0, regs$246$q[22:0]}; mul_up$5$b = regs$350$q; end
-        8'd11: begin mul_up$5$a = {1'b0, regs$321$q[22:0]}; mul_up$5$b = regs$293$q; end
-        8'd12: begin mul_up$5$a = {1'b0, regs$321$q[22:0]}; mul_up$5$b = regs$234$q; end
-        8'd14: begin mul_up$5$a = {1'b0, regs$66$q[22:0]}; mul_up$5$b = {1'b0, regs$43$q[22:0]}; end
-        8'd15: begin mul_up$5$a = regs$270$q; mul_up$5$b = regs$235$q; end
+        8'd0: begin mul_up$5$a = {1'b0, regs$291$q[22:0]}; mul_up$5$b = {1'b0, regs$286$q[22:0]}; end
+        8'd1: begin mul_up$5$a = {1'b0, regs$279$q[22:0]}; mul_up$5$b = {1'b0, regs$282$q[22:0]}; end
+        8'd2: begin mul_up$5$a = {1'b0, regs$279$q[22:0]}; mul_up$5$b = {1'b0, regs$283$q[22:0]}; end
+        8'd3: begin mul_up$5$a = {1'b0, regs$280$q[22:0]}; mul_up$5$b = {1'b0, regs$282$q[22:0]}; end
+        8'd4: begin mul_up$5$a = {1'b0, regs$280$q[22:0]}; mul_up$5$b = {1'b0, regs$283$q[22:0]}; end
+        8'd5: begin mul_up$5$a = {1'b0, regs$281$q[22:0]}; mul_up$5$b = {1'b0, regs$282$q[22:0]}; end
+        8'd6: begin mul_up$5$a = {1'b0, regs$281$q[22:0]}; mul_up$5$b = {1'b0, regs$283$q[22:0]}; end
+        8'd7: begin mul_up$5$a = {1'b0, regs$292$q[22:0]}; mul_up$5$b = {1'b0, regs$285$q[22:0]}; end
+        8'd8: begin mul_up$5$a = {1'b0, regs$291$q[22:0]}; mul_up$5$b = {1'b0, regs$288$q[22:0]}; end
+        8'd9: begin mul_up$5$a = regs$294$q; mul_up$5$b = regs$301$q; end
+        8'd10: begin mul_up$5$a = {1'b0, regs$298$q[22:0]}; mul_up$5$b = regs$304$q; end
+        8'd11: begin mul_up$5$a = {1'b0, regs$303$q[22:0]}; mul_up$5$b = regs$300$q; end
+        8'd12: begin mul_up$5$a = {1'b0, regs$303$q[22:0]}; mul_up$5$b = regs$295$q; end
+        8'd14: begin mul_up$5$a = {1'b0, regs$290$q[22:0]}; mul_up$5$b = {1'b0, regs$289$q[22:0]}; end
+        8'd15: begin mul_up$5$a = regs$299$q; mul_up$5$b = regs$296$q; end
         default: begin mul_up$5$a = 24'd0; mul_up$5$b = 24'd0; end
       endcase
       add_v$0$clock = clock;
       add_v$0$valid_in = 1'b0;
       case (counter$q)
-        8'd0: begin add_v$0$a = regs$154$q; add_v$0$b = regs$153$q; add_v$0$sub = 1'b0; end
-        8'd1: begin add_v$0$a = regs$164$q; add_v$0$b = regs$165$q; add_v$0$sub = 1'b0; end
-        8'd2: begin add_v$0$a = regs$216$q; add_v$0$b = regs$217$q; add_v$0$sub = 1'b0; end
-        8'd3: begin add_v$0$a = regs$180$q; add_v$0$b = regs$181$q; add_v$0$sub = 1'b0; end
-        8'd4: begin add_v$0$a = regs$182$q; add_v$0$b = regs$82$q; add_v$0$sub = 1'b0; end
-        8'd5: begin add_v$0$a = regs$333$q; add_v$0$b = regs$334$q; add_v$0$sub = 1'b0; end
-        8'd6: begin add_v$0$a = regs$47$q; add_v$0$b = regs$48$q; add_v$0$sub = 1'b0; end
-        8'd7: begin add_v$0$a = regs$67$q; add_v$0$b = regs$68$q; add_v$0$sub = 1'b0; end
-        8'd8: begin add_v$0$a = regs$77$q; add_v$0$b = regs$78$q; add_v$0$sub = 1'b0; end
-        8'd9: begin add_v$0$a = regs$99$q; add_v$0$b = regs$100$q; add_v$0$sub = 1'b0; end
-        8'd10: begin add_v$0$a = regs$119$q; add_v$0$b = regs$120$q; add_v$0$sub = 1'b0; end
-        8'd11: begin add_v$0$a = regs$131$q; add_v$0$b = regs$132$q; add_v$0$sub = 1'b0; end
-        8'd12: begin add_v$0$a = regs$151$q; add_v$0$b = regs$152$q; add_v$0$sub = 1'b0; end
-        8'd13: begin add_v$0$a = regs$163$q; add_v$0$b = regs$11$q; add_v$0$sub = 1'b0; end
-        8'd14: begin add_v$0$a = regs$122$q; add_v$0$b = regs$123$q; add_v$0$sub = 1'b0; end
-        8'd15: begin add_v$0$a = regs$134$q; add_v$0$b = regs$133$q; add_v$0$sub = 1'b0; end
+        8'd0: begin add_v$0$a = regs$326$q; add_v$0$b = regs$325$q; add_v$0$sub = 1'b0; end
+        8'd1: begin add_v$0$a = regs$328$q; add_v$0$b = regs$329$q; add_v$0$sub = 1'b0; end
+        8'd2: begin add_v$0$a = regs$333$q; add_v$0$b = regs$334$q; add_v$0$sub = 1'b0; end
+        8'd3: begin add_v$0$a = regs$330$q; add_v$0$b = regs$331$q; add_v$0$sub = 1'b0; end
+        8'd4: begin add_v$0$a = regs$332$q; add_v$0$b = regs$312$q; add_v$0$sub = 1'b0; end
+        8'd5: begin add_v$0$a = regs$335$q; add_v$0$b = regs$336$q; add_v$0$sub = 1'b0; end
+        8'd6: begin add_v$0$a = regs$306$q; add_v$0$b = regs$307$q; add_v$0$sub = 1'b0; end
+        8'd7: begin add_v$0$a = regs$308$q; add_v$0$b = regs$309$q; add_v$0$sub = 1'b0; end
+        8'd8: begin add_v$0$a = regs$310$q; add_v$0$b = regs$311$q; add_v$0$sub = 1'b0; end
+        8'd9: begin add_v$0$a = regs$313$q; add_v$0$b = regs$314$q; add_v$0$sub = 1'b0; end
+        8'd10: begin add_v$0$a = regs$315$q; add_v$0$b = regs$316$q; add_v$0$sub = 1'b0; end
+        8'd11: begin add_v$0$a = regs$319$q; add_v$0$b = regs$320$q; add_v$0$sub = 1'b0; end
+        8'd12: begin add_v$0$a = regs$323$q; add_v$0$b = regs$324$q; add_v$0$sub = 1'b0; end
+        8'd13: begin add_v$0$a = regs$327$q; add_v$0$b = regs$305$q; add_v$0$sub = 1'b0; end
+        8'd14: begin add_v$0$a = regs$317$q; add_v$0$b = regs$318$q; add_v$0$sub = 1'b0; end
+        8'd15: begin add_v$0$a = regs$322$q; add_v$0$b = regs$321$q; add_v$0$sub = 1'b0; end
         default: begin add_v$0$a = 24'd0; add_v$0$b = 24'd0; add_v$0$sub = 1'b0; end
       endcase
       add_v$1$clock = clock;
       add_v$1$valid_in = 1'b0;
       case (counter$q)
-        8'd0: begin add_v$1$a = regs$317$q; add_v$1$b = regs$124$q; add_v$1$sub = 1'b0; end
-        8'd1: begin add_v$1$a = regs$200$q; add_v$1$b = regs$201$q; add_v$1$sub = 1'b0; end
-        8'd2: begin add_v$1$a = regs$259$q; add_v$1$b = regs$260$q; add_v$1$sub = 1'b0; end
-        8'd3: begin add_v$1$a = regs$240$q; add_v$1$b = regs$241$q; add_v$1$sub = 1'b0; end
-        8'd4: begin add_v$1$a = regs$242$q; add_v$1$b = regs$82$q; add_v$1$sub = 1'b0; end
-        8'd5: begin add_v$1$a = regs$354$q; add_v$1$b = regs$367$q; add_v$1$sub = 1'b0; end
-        8'd6: begin add_v$1$a = regs$57$q; add_v$1$b = regs$58$q; add_v$1$sub = 1'b0; end
-        8'd7: begin add_v$1$a = regs$277$q; add_v$1$b = regs$218$q; add_v$1$sub = 1'b1; end
-        8'd8: begin add_v$1$a = regs$79$q; add_v$1$b = regs$3$q; add_v$1$sub = 1'b0; end
-        8'd9: begin add_v$1$a = regs$109$q; add_v$1$b = regs$110$q; add_v$1$sub = 1'b0; end
-        8'd10: begin add_v$1$a = regs$121$q; add_v$1$b = regs$7$q; add_v$1$sub = 1'b0; end
-        8'd11: begin add_v$1$a = regs$141$q; add_v$1$b = regs$142$q; add_v$1$sub = 1'b0; end
-        8'd12: begin add_v$1$a = regs$161$q; add_v$1$b = regs$162$q; add_v$1$sub = 1'b0; end
-        8'd13: begin add_v$1$a = regs$102$q; add_v$1$b = regs$101$q; add_v$1$sub = 1'b0; end
-        8'd14: begin add_v$1$a = regs$213$q; add_v$1$b = regs$214$q; add_v$1$sub = 1'b0; end
-        8'd15: begin add_v$1$a = regs$144$q; add_v$1$b = regs$143$q; add_v$1$sub = 1'b0; end
+        8'd0: begin add_v$1$a = regs$366$q; add_v$1$b = regs$348$q; add_v$1$sub = 1'b0; end
+        8'd1: begin add_v$1$a = regs$355$q; add_v$1$b = regs$356$q; add_v$1$sub = 1'b0; end
+        8'd2: begin add_v$1$a = regs$363$q; add_v$1$b = regs$364$q; add_v$1$sub = 1'b0; end
+        8'd3: begin add_v$1$a = regs$360$q; add_v$1$b = regs$361$q; add_v$1$sub = 1'b0; end
+        8'd4: begin add_v$1$a = regs$362$q; add_v$1$b = regs$342$q; add_v$1$sub = 1'b0; end
+        8'd5: begin add_v$1$a = regs$367$q; add_v$1$b = regs$368$q; add_v$1$sub = 1'b0; end
+        8'd6: begin add_v$1$a = regs$339$q; add_v$1$b = regs$340$q; add_v$1$sub = 1'b0; end
+        8'd7: begin add_v$1$a = regs$365$q; add_v$1$b = regs$359$q; add_v$1$sub = 1'b1; end
+        8'd8: begin add_v$1$a = regs$341$q; add_v$1$b = regs$337$q; add_v$1$sub = 1'b0; end
+        8'd9: begin add_v$1$a = regs$345$q; add_v$1$b = regs$346$q; add_v$1$sub = 1'b0; end
+        8'd10: begin add_v$1$a = regs$347$q; add_v$1$b = regs$338$q; add_v$1$sub = 1'b0; end
+        8'd11: begin add_v$1$a = regs$349$q; add_v$1$b = regs$350$q; add_v$1$sub = 1'b0; end
+        8'd12: begin add_v$1$a = regs$353$q; add_v$1$b = regs$354$q; add_v$1$sub = 1'b0; end
+        8'd13: begin add_v$1$a = regs$344$q; add_v$1$b = regs$343$q; add_v$1$sub = 1'b0; end
+        8'd14: begin add_v$1$a = regs$357$q; add_v$1$b = regs$358$q; add_v$1$sub = 1'b0; end
+        8'd15: begin add_v$1$a = regs$352$q; add_v$1$b = regs$351$q; add_v$1$sub = 1'b0; end
         default: begin add_v$1$a = 24'd0; add_v$1$b = 24'd0; add_v$1$sub = 1'b0; end
       endcase
       add_v$2$clock = clock;
       add_v$2$valid_in = 1'b0;
       case (counter$q)
-        8'd0: begin add_v$2$a = regs$330$q; add_v$2$b = regs$331$q; add_v$2$sub = 1'b0; end
-        8'd1: begin add_v$2$a = regs$365$q; add_v$2$b = regs$366$q; add_v$2$sub = 1'b1; end
-        8'd2: begin add_v$2$a = regs$434$q; add_v$2$b = regs$435$q; add_v$2$sub = 1'b1; end
-        8'd3: begin add_v$2$a = regs$275$q; add_v$2$b = regs$276$q; add_v$2$sub = 1'b0; end
-        8'd4: begin add_v$2$a = regs$299$q; add_v$2$b = regs$300$q; add_v$2$sub = 1'b0; end
-        8'd5: begin add_v$2$a = regs$395$q; add_v$2$b = regs$408$q; add_v$2$sub = 1'b0; end
-        8'd6: begin add_v$2$a = regs$436$q; add_v$2$b = regs$448$q; add_v$2$sub = 1'b0; end
-        8'd8: begin add_v$2$a = regs$89$q; add_v$2$b = regs$90$q; add_v$2$sub = 1'b0; end
-        8'd9: begin add_v$2$a = regs$302$q; add_v$2$b = regs$303$q; add_v$2$sub = 1'b0; end
-        8'd10: begin add_v$2$a = regs$50$q; add_v$2$b = regs$49$q; add_v$2$sub = 1'b0; end
-        8'd11: begin add_v$2$a = regs$70$q; add_v$2$b = regs$69$q; add_v$2$sub = 1'b0; end
-        8'd12: begin add_v$2$a = regs$80$q; add_v$2$b = regs$81$q; add_v$2$sub = 1'b0; end
-        8'd13: begin add_v$2$a = regs$112$q; add_v$2$b = regs$111$q; add_v$2$sub = 1'b0; end
-        8'd14: begin add_v$2$a = regs$215$q; add_v$2$b = regs$166$q; add_v$2$sub = 1'b0; end
-        8'd15: begin add_v$2$a = regs$272$q; add_v$2$b = regs$273$q; add_v$2$sub = 1'b0; end
+        8'd0: begin add_v$2$a = regs$389$q; add_v$2$b = regs$390$q; add_v$2$sub = 1'b0; end
+        8'd1: begin add_v$2$a = regs$391$q; add_v$2$b = regs$392$q; add_v$2$sub = 1'b1; end
+        8'd2: begin add_v$2$a = regs$395$q; add_v$2$b = regs$396$q; add_v$2$sub = 1'b1; end
+        8'd3: begin add_v$2$a = regs$383$q; add_v$2$b = regs$384$q; add_v$2$sub = 1'b0; end
+        8'd4: begin add_v$2$a = regs$385$q; add_v$2$b = regs$386$q; add_v$2$sub = 1'b0; end
+        8'd5: begin add_v$2$a = regs$393$q; add_v$2$b = regs$394$q; add_v$2$sub = 1'b0; end
+        8'd6: begin add_v$2$a = regs$397$q; add_v$2$b = regs$398$q; add_v$2$sub = 1'b0; end
+        8'd8: begin add_v$2$a = regs$375$q; add_v$2$b = regs$376$q; add_v$2$sub = 1'b0; end
+        8'd9: begin add_v$2$a = regs$387$q; add_v$2$b = regs$388$q; add_v$2$sub = 1'b0; end
+        8'd10: begin add_v$2$a = regs$370$q; add_v$2$b = regs$369$q; add_v$2$sub = 1'b0; end
+        8'd11: begin add_v$2$a = regs$372$q; add_v$2$b = regs$371$q; add_v$2$sub = 1'b0; end
+        8'd12: begin add_v$2$a = regs$373$q; add_v$2$b = regs$374$q; add_v$2$sub = 1'b0; end
+        8'd13: begin add_v$2$a = regs$378$q; add_v$2$b = regs$377$q; add_v$2$sub = 1'b0; end
+        8'd14: begin add_v$2$a = regs$380$q; add_v$2$b = regs$379$q; add_v$2$sub = 1'b0; end
+        8'd15: begin add_v$2$a = regs$381$q; add_v$2$b = regs$382$q; add_v$2$sub = 1'b0; end
         default: begin add_v$2$a = 24'd0; add_v$2$b = 24'd0; add_v$2$sub = 1'b0; end
       endcase
       add_v$3$clock = clock;
       add_v$3$valid_in = 1'b0;
       case (counter$q)
-        8'd0: begin add_v$3$a = regs$332$q; add_v$3$b = regs$166$q; add_v$3$sub = 1'b0; end
-        8'd1: begin add_v$3$a = regs$393$q; add_v$3$b = regs$394$q; add_v$3$sub = 1'b1; end
-        8'd2: begin add_v$3$a = regs$446$q; add_v$3$b = regs$447$q; add_v$3$sub = 1'b1; end
-        8'd4: begin add_v$3$a = regs$301$q; add_v$3$b = regs$82$q; add_v$3$sub = 1'b0; end
-        8'd8: begin add_v$3$a = regs$183$q; add_v$3$b = regs$184$q; add_v$3$sub = 1'b0; end
-        8'd9: begin add_v$3$a = regs$335$q; add_v$3$b = regs$277$q; add_v$3$sub = 1'b1; end
-        8'd10: begin add_v$3$a = regs$60$q; add_v$3$b = regs$59$q; add_v$3$sub = 1'b0; end
-        8'd11: begin add_v$3$a = regs$425$q; add_v$3$b = regs$419$q; add_v$3$sub = 1'b1; end
-        8'd12: begin add_v$3$a = regs$92$q; add_v$3$b = regs$91$q; add_v$3$sub = 1'b0; end
-        8'd13: begin add_v$3$a = regs$197$q; add_v$3$b = regs$198$q; add_v$3$sub = 1'b0; end
-        8'd14: begin add_v$3$a = regs$256$q; add_v$3$b = regs$257$q; add_v$3$sub = 1'b0; end
-        8'd15: begin add_v$3$a = regs$274$q; add_v$3$b = regs$166$q; add_v$3$sub = 1'b0; end
+        8'd0: begin add_v$3$a = regs$414$q; add_v$3$b = regs$404$q; add_v$3$sub = 1'b0; end
+        8'd1: begin add_v$3$a = regs$416$q; add_v$3$b = regs$417$q; add_v$3$sub = 1'b1; end
+        8'd2: begin add_v$3$a = regs$420$q; add_v$3$b = regs$421$q; add_v$3$sub = 1'b1; end
+        8'd4: begin add_v$3$a = regs$413$q; add_v$3$b = regs$401$q; add_v$3$sub = 1'b0; end
+        8'd8: begin add_v$3$a = regs$405$q; add_v$3$b = regs$406$q; add_v$3$sub = 1'b0; end
+        8'd9: begin add_v$3$a = regs$415$q; add_v$3$b = regs$412$q; add_v$3$sub = 1'b1; end
+        8'd10: begin add_v$3$a = regs$400$q; add_v$3$b = regs$399$q; add_v$3$sub = 1'b0; end
+        8'd11: begin add_v$3$a = regs$419$q; add_v$3$b = regs$418$q; add_v$3$sub = 1'b1; end
+        8'd12: begin add_v$3$a = regs$403$q; add_v$3$b = regs$402$q; add_v$3$sub = 1'b0; end
+        8'd13: begin add_v$3$a = regs$407$q; add_v$3$b = regs$408$q; add_v$3$sub = 1'b0; end
+        8'd14: begin add_v$3$a = regs$409$q; add_v$3$b = regs$410$q; add_v$3$sub = 1'b0; end
+        8'd15: begin add_v$3$a = regs$411$q; add_v$3$b = regs$404$q; add_v$3$sub = 1'b0; end
         default: begin add_v$3$a = 24'd0; add_v$3$b = 24'd0; add_v$3$sub = 1'b0; end
       endcase
       add_v$4$clock = clock;
       add_v$4$valid_in = 1'b0;
       case (counter$q)
-        8'd0: begin add_v$4$a = regs$352$q; add_v$4$b = regs$353$q; add_v$4$sub = 1'b1; end
-        8'd1: begin add_v$4$a = regs$406$q; add_v$4$b = regs$407$q; add_v$4$sub = 1'b1; end
-        8'd4: begin add_v$4$a = regs$318$q; add_v$4$b = regs$319$q; add_v$4$sub = 1'b0; end
-        8'd8: begin add_v$4$a = regs$243$q; add_v$4$b = regs$244$q; add_v$4$sub = 1'b0; end
-        8'd9: begin add_v$4$a = regs$218$q; add_v$4$b = regs$335$q; add_v$4$sub = 1'b1; end
-        8'd10: begin add_v$4$a = regs$384$q; add_v$4$b = regs$378$q; add_v$4$sub = 1'b1; end
-        8'd11: begin add_v$4$a = regs$464$q; add_v$4$b = regs$458$q; add_v$4$sub = 1'b1; end
-        8'd13: begin add_v$4$a = regs$199$q; add_v$4$b = regs$124$q; add_v$4$sub = 1'b0; end
-        8'd14: begin add_v$4$a = regs$258$q; add_v$4$b = regs$124$q; add_v$4$sub = 1'b0; end
-        8'd15: begin add_v$4$a = regs$315$q; add_v$4$b = regs$316$q; add_v$4$sub = 1'b0; end
+        8'd0: begin add_v$4$a = regs$433$q; add_v$4$b = regs$434$q; add_v$4$sub = 1'b1; end
+        8'd1: begin add_v$4$a = regs$437$q; add_v$4$b = regs$438$q; add_v$4$sub = 1'b1; end
+        8'd4: begin add_v$4$a = regs$430$q; add_v$4$b = regs$431$q; add_v$4$sub = 1'b0; end
+        8'd8: begin add_v$4$a = regs$425$q; add_v$4$b = regs$426$q; add_v$4$sub = 1'b0; end
+        8'd9: begin add_v$4$a = regs$424$q; add_v$4$b = regs$432$q; add_v$4$sub = 1'b1; end
+        8'd10: begin add_v$4$a = regs$436$q; add_v$4$b = regs$435$q; add_v$4$sub = 1'b1; end
+        8'd11: begin add_v$4$a = regs$440$q; add_v$4$b = regs$439$q; add_v$4$sub = 1'b1; end
+        8'd13: begin add_v$4$a = regs$423$q; add_v$4$b = regs$422$q; add_v$4$sub = 1'b0; end
+        8'd14: begin add_v$4$a = regs$427$q; add_v$4$b = regs$422$q; add_v$4$sub = 1'b0; end
+        8'd15: begin add_v$4$a = regs$428$q; add_v$4$b = regs$429$q; add_v$4$sub = 1'b0; end
         default: begin add_v$4$a = 24'd0; add_v$4$b = 24'd0; add_v$4$sub = 1'b0; end
       endcase
       add_up$0$clock = clock;
       add_up$0$valid_in = 1'b0;
       case (counter$q)
-        8'd0: begin add_up$0$a = regs$208$q; add_up$0$b = regs$209$q; add_up$0$sub = 1'b0; end
-        8'd1: begin add_up$0$a = {1'b0, regs$29$q[22:0]}; add_up$0$b = {1'b0, regs$31$q[22:0]}; add_up$0$sub = 1'b0; end
-        8'd2: begin add_up$0$a = regs$326$q; add_up$0$b = regs$327$q; add_up$0$sub = 1'b0; end
-        8'd3: begin add_up$0$a = regs$189$q; add_up$0$b = regs$190$q; add_up$0$sub = 1'b0; end
-        8'd4: begin add_up$0$a = regs$360$q; add_up$0$b = regs$361$q; add_up$0$sub = 1'b0; end
-        8'd5: begin add_up$0$a = regs$176$q; add_up$0$b = regs$177$q; add_up$0$sub = 1'b0; end
-        8'd6: begin add_up$0$a = regs$52$q; add_up$0$b = regs$53$q; add_up$0$sub = 1'b0; end
-        8'd7: begin add_up$0$a = regs$72$q; add_up$0$b = regs$73$q; add_up$0$sub = 1'b0; end
-        8'd8: begin add_up$0$a = regs$94$q; add_up$0$b = regs$95$q; add_up$0$sub = 1'b0; end
-        8'd9: begin add_up$0$a = regs$114$q; add_up$0$b = regs$115$q; add_up$0$sub = 1'b0; end
-        8'd10: begin add_up$0$a = regs$136$q; add_up$0$b = regs$137$q; add_up$0$sub = 1'b0; end
-        8'd11: begin add_up$0$a = regs$156$q; add_up$0$b = regs$157$q; add_up$0$sub = 1'b0; end
-        8'd12: begin add_up$0$a = regs$173$q; add_up$0$b = regs$174$q; add_up$0$sub = 1'b0; end
-        8'd13: begin add_up$0$a = regs$117$q; add_up$0$b = regs$116$q; add_up$0$sub = 1'b0; end
-        8'd14: begin add_up$0$a = regs$139$q; add_up$0$b = regs$138$q; add_up$0$sub = 1'b0; end
-        8'd15: begin add_up$0$a = regs$159$q; add_up$0$b = regs$158$q; add_up$0$sub = 1'b0; end
+        8'd0: begin add_up$0$a = regs$467$q; add_up$0$b = regs$468$q; add_up$0$sub = 1'b0; end
+        8'd1: begin add_up$0$a = {1'b0, regs$441$q[22:0]}; add_up$0$b = {1'b0, regs$442$q[22:0]}; add_up$0$sub = 1'b0; end
+        8'd2: begin add_up$0$a = regs$469$q; add_up$0$b = regs$470$q; add_up$0$sub = 1'b0; end
+        8'd3: begin add_up$0$a = regs$465$q; add_up$0$b = regs$466$q; add_up$0$sub = 1'b0; end
+        8'd4: begin add_up$0$a = regs$471$q; add_up$0$b = regs$472$q; add_up$0$sub = 1'b0; end
+        8'd5: begin add_up$0$a = regs$463$q; add_up$0$b = regs$464$q; add_up$0$sub = 1'b0; end
+        8'd6: begin add_up$0$a = regs$443$q; add_up$0$b = regs$444$q; add_up$0$sub = 1'b0; end
+        8'd7: begin add_up$0$a = regs$445$q; add_up$0$b = regs$446$q; add_up$0$sub = 1'b0; end
+        8'd8: begin add_up$0$a = regs$447$q; add_up$0$b = regs$448$q; add_up$0$sub = 1'b0; end
+        8'd9: begin add_up$0$a = regs$449$q; add_up$0$b = regs$450$q; add_up$0$sub = 1'b0; end
+        8'd10: begin add_up$0$a = regs$453$q; add_up$0$b = regs$454$q; add_up$0$sub = 1'b0; end
+        8'd11: begin add_up$0$a = regs$457$q; add_up$0$b = regs$458$q; add_up$0$sub = 1'b0; end
+        8'd12: begin add_up$0$a = regs$461$q; add_up$0$b = regs$462$q; add_up$0$sub = 1'b0; end
+        8'd13: begin add_up$0$a = regs$452$q; add_up$0$b = regs$451$q; add_up$0$sub = 1'b0; end
+        8'd14: begin add_up$0$a = regs$456$q; add_up$0$b = regs$455$q; add_up$0$sub = 1'b0; end
+        8'd15: begin add_up$0$a = regs$460$q; add_up$0$b = regs$459$q; add_up$0$sub = 1'b0; end
         default: begin add_up$0$a = 24'd0; add_up$0$b = 24'd0; add_up$0$sub = 1'b0; end
       endcase
       add_up$1$clock = clock;
       add_up$1$valid_in = 1'b0;
       case (counter$q)
-        8'd0: begin add_up$1$a = regs$226$q; add_up$1$b = regs$227$q; add_up$1$sub = 1'b0; end
-        8'd1: begin add_up$1$a = {1'b0, regs$33$q[22:0]}; add_up$1$b = regs$28$q; add_up$1$sub = 1'b0; end
-        8'd2: begin add_up$1$a = regs$342$q; add_up$1$b = regs$343$q; add_up$1$sub = 1'b0; end
-        8'd3: begin add_up$1$a = regs$248$q; add_up$1$b = regs$249$q; add_up$1$sub = 1'b0; end
-        8'd4: begin add_up$1$a = regs$400$q; add_up$1$b = regs$403$q; add_up$1$sub = 1'b0; end
-        8'd5: begin add_up$1$a = regs$236$q; add_up$1$b = regs$237$q; add_up$1$sub = 1'b0; end
-        8'd6: begin add_up$1$a = regs$62$q; add_up$1$b = regs$63$q; add_up$1$sub = 1'b0; end
-        8'd7: begin add_up$1$a = regs$83$q; add_up$1$b = regs$84$q; add_up$1$sub = 1'b0; end
-        8'd8: begin add_up$1$a = regs$104$q; add_up$1$b = regs$105$q; add_up$1$sub = 1'b0; end
-        8'd9: begin add_up$1$a = regs$125$q; add_up$1$b = regs$126$q; add_up$1$sub = 1'b0; end
-        8'd10: begin add_up$1$a = regs$146$q; add_up$1$b = regs$147$q; add_up$1$sub = 1'b0; end
-        8'd11: begin add_up$1$a = regs$167$q; add_up$1$b = regs$168$q; add_up$1$sub = 1'b0; end
-        8'd12: begin add_up$1$a = regs$97$q; add_up$1$b = regs$96$q; add_up$1$sub = 1'b0; end
-        8'd13: begin add_up$1$a = regs$128$q; add_up$1$b = regs$129$q; add_up$1$sub = 1'b0; end
-        8'd14: begin add_up$1$a = regs$149$q; add_up$1$b = regs$148$q; add_up$1$sub = 1'b0; end
-        8'd15: begin add_up$1$a = regs$170$q; add_up$1$b = regs$171$q; add_up$1$sub = 1'b0; end
+        8'd0: begin add_up$1$a = regs$495$q; add_up$1$b = regs$496$q; add_up$1$sub = 1'b0; end
+        8'd1: begin add_up$1$a = {1'b0, regs$474$q[22:0]}; add_up$1$b = regs$473$q; add_up$1$sub = 1'b0; end
+        8'd2: begin add_up$1$a = regs$501$q; add_up$1$b = regs$502$q; add_up$1$sub = 1'b0; end
+        8'd3: begin add_up$1$a = regs$499$q; add_up$1$b = regs$500$q; add_up$1$sub = 1'b0; end
+        8'd4: begin add_up$1$a = regs$503$q; add_up$1$b = regs$504$q; add_up$1$sub = 1'b0; end
+        8'd5: begin add_up$1$a = regs$497$q; add_up$1$b = regs$498$q; add_up$1$sub = 1'b0; end
+        8'd6: begin add_up$1$a = regs$475$q; add_up$1$b = regs$476$q; add_up$1$sub = 1'b0; end
+        8'd7: begin add_up$1$a = regs$477$q; add_up$1$b = regs$478$q; add_up$1$sub = 1'b0; end
+        8'd8: begin add_up$1$a = regs$481$q; add_up$1$b = regs$482$q; add_up$1$sub = 1'b0; end
+        8'd9: begin add_up$1$a = regs$483$q; add_up$1$b = regs$484$q; add_up$1$sub = 1'b0; end
+        8'd10: begin add_up$1$a = regs$487$q; add_up$1$b = regs$488$q; add_up$1$sub = 1'b0; end
+        8'd11: begin add_up$1$a = regs$491$q; add_up$1$b = regs$492$q; add_up$1$sub = 1'b0; end
+        8'd12: begin add_up$1$a = regs$480$q; add_up$1$b = regs$479$q; add_up$1$sub = 1'b0; end
+        8'd13: begin add_up$1$a = regs$485$q; add_up$1$b = regs$486$q; add_up$1$sub = 1'b0; end
+        8'd14: begin add_up$1$a = regs$490$q; add_up$1$b = regs$489$q; add_up$1$sub = 1'b0; end
+        8'd15: begin add_up$1$a = regs$493$q; add_up$1$b = regs$494$q; add_up$1$sub = 1'b0; end
         default: begin add_up$1$a = 24'd0; add_up$1$b = 24'd0; add_up$1$sub = 1'b0; end
       endcase
       add_up$2$clock = clock;
       add_up$2$valid_in = 1'b0;
       case (counter$q)
-        8'd0: begin add_up$2$a = regs$398$q; add_up$2$b = regs$399$q; add_up$2$sub = 1'b0; end
-        8'd1: begin add_up$2$a = {1'b0, regs$35$q[22:0]}; add_up$2$b = {1'b0, regs$37$q[22:0]}; add_up$2$sub = 1'b0; end
-        8'd2: begin add_up$2$a = regs$439$q; add_up$2$b = regs$440$q; add_up$2$sub = 1'b0; end
-        8'd3: begin add_up$2$a = regs$307$q; add_up$2$b = regs$308$q; add_up$2$sub = 1'b0; end
-        8'd4: begin add_up$2$a = regs$413$q; add_up$2$b = regs$416$q; add_up$2$sub = 1'b0; end
-        8'd5: begin add_up$2$a = regs$295$q; add_up$2$b = regs$296$q; add_up$2$sub = 1'b0; end
-        8'd6: begin add_up$2$a = regs$172$q; add_up$2$b = regs$239$q; add_up$2$sub = 1'b0; end
-        8'd7: begin add_up$2$a = regs$85$q; add_up$2$b = {1'b0, regs$3$q[22:0]}; add_up$2$sub = 1'b0; end
-        8'd8: begin add_up$2$a = regs$404$q; add_up$2$b = regs$417$q; add_up$2$sub = 1'b0; end
-        8'd9: begin add_up$2$a = regs$127$q; add_up$2$b = {1'b0, regs$7$q[22:0]}; add_up$2$sub = 1'b0; end
-        8'd10: begin add_up$2$a = regs$55$q; add_up$2$b = regs$54$q; add_up$2$sub = 1'b0; end
-        8'd11: begin add_up$2$a = regs$169$q; add_up$2$b = {1'b0, regs$11$q[22:0]}; add_up$2$sub = 1'b0; end
-        8'd12: begin add_up$2$a = regs$107$q; add_up$2$b = regs$106$q; add_up$2$sub = 1'b0; end
-        8'd13: begin add_up$2$a = regs$264$q; add_up$2$b = regs$265$q; add_up$2$sub = 1'b0; end
-        8'd14: begin add_up$2$a = regs$323$q; add_up$2$b = regs$324$q; add_up$2$sub = 1'b0; end
-        8'd15: begin add_up$2$a = {1'b0, regs$335$q[22:0]}; add_up$2$b = (((regs$346$q[22:15] != 8'd0) && (regs$346$q[22:15] != 8'd255)) ? regs$346$q + 24'd32768 : regs$346$q); add_up$2$sub = 1'b0; end
+        8'd0: begin add_up$2$a = regs$529$q; add_up$2$b = regs$530$q; add_up$2$sub = 1'b0; end
+        8'd1: begin add_up$2$a = {1'b0, regs$508$q[22:0]}; add_up$2$b = {1'b0, regs$509$q[22:0]}; add_up$2$sub = 1'b0; end
+        8'd2: begin add_up$2$a = regs$535$q; add_up$2$b = regs$536$q; add_up$2$sub = 1'b0; end
+        8'd3: begin add_up$2$a = regs$523$q; add_up$2$b = regs$524$q; add_up$2$sub = 1'b0; end
+        8'd4: begin add_up$2$a = regs$532$q; add_up$2$b = regs$533$q; add_up$2$sub = 1'b0; end
+        8'd5: begin add_up$2$a = regs$521$q; add_up$2$b = regs$522$q; add_up$2$sub = 1'b0; end
+        8'd6: begin add_up$2$a = regs$517$q; add_up$2$b = regs$518$q; add_up$2$sub = 1'b0; end
+        8'd7: begin add_up$2$a = regs$512$q; add_up$2$b = {1'b0, regs$505$q[22:0]}; add_up$2$sub = 1'b0; end
+        8'd8: begin add_up$2$a = regs$531$q; add_up$2$b = regs$534$q; add_up$2$sub = 1'b0; end
+        8'd9: begin add_up$2$a = regs$515$q; add_up$2$b = {1'b0, regs$506$q[22:0]}; add_up$2$sub = 1'b0; end
+        8'd10: begin add_up$2$a = regs$511$q; add_up$2$b = regs$510$q; add_up$2$sub = 1'b0; end
+        8'd11: begin add_up$2$a = regs$516$q; add_up$2$b = {1'b0, regs$507$q[22:0]}; add_up$2$sub = 1'b0; end
+        8'd12: begin add_up$2$a = regs$514$q; add_up$2$b = regs$513$q; add_up$2$sub = 1'b0; end
+        8'd13: begin add_up$2$a = regs$519$q; add_up$2$b = regs$520$q; add_up$2$sub = 1'b0; end
+        8'd14: begin add_up$2$a = regs$525$q; add_up$2$b = regs$526$q; add_up$2$sub = 1'b0; end
+        8'd15: begin add_up$2$a = {1'b0, regs$527$q[22:0]}; add_up$2$b = (((regs$528$q[22:15] != 8'd0) && (regs$528$q[22:15] != 8'd255)) ? regs$528$q + 24'd32768 : regs$528$q); add_up$2$sub = 1'b0; end
         default: begin add_up$2$a = 24'd0; add_up$2$b = 24'd0; add_up$2$sub = 1'b0; end
       endcase
       add_up$3$clock = clock;
       add_up$3$valid_in = 1'b0;
       case (counter$q)
-        8'd0: begin add_up$3$a = regs$401$q; add_up$3$b = regs$402$q; add_up$3$sub = 1'b0; end
-        8'd1: begin add_up$3$a = {1'b0, regs$39$q[22:0]}; add_up$3$b = regs$28$q; add_up$3$sub = 1'b0; end
-        8'd2: begin add_up$3$a = regs$442$q; add_up$3$b = regs$443$q; add_up$3$sub = 1'b0; end
-        8'd3: begin add_up$3$a = regs$359$q; add_up$3$b = regs$362$q; add_up$3$sub = 1'b0; end
-        8'd4: begin add_up$3$a = regs$470$q; add_up$3$b = regs$471$q; add_up$3$sub = 1'b0; end
-        8'd5: begin add_up$3$a = regs$88$q; add_up$3$b = regs$179$q; add_up$3$sub = 1'b0; end
-        8'd6: begin add_up$3$a = regs$88$q; add_up$3$b = regs$298$q; add_up$3$sub = 1'b0; end
-        8'd7: begin add_up$3$a = {1'b0, regs$395$q[22:0]}; add_up$3$b = {1'b0, regs$408$q[22:0]}; add_up$3$sub = 1'b0; end
-        8'd8: begin add_up$3$a = regs$423$q; add_up$3$b = regs$430$q; add_up$3$sub = 1'b0; end
-        8'd9: begin add_up$3$a = regs$191$q; add_up$3$b = {1'b0, regs$188$q[22:0]}; add_up$3$sub = 1'b0; end
-        8'd10: begin add_up$3$a = regs$65$q; add_up$3$b = regs$64$q; add_up$3$sub = 1'b0; end
-        8'd11: begin add_up$3$a = regs$75$q; add_up$3$b = regs$74$q; add_up$3$sub = 1'b0; end
-        8'd12: begin add_up$3$a = regs$207$q; add_up$3$b = {1'b0, regs$204$q[22:0]}; add_up$3$sub = 1'b0; end
-        8'd13: begin add_up$3$a = regs$266$q; add_up$3$b = {1'b0, regs$263$q[22:0]}; add_up$3$sub = 1'b0; end
-        8'd14: begin add_up$3$a = regs$325$q; add_up$3$b = {1'b0, regs$322$q[22:0]}; add_up$3$sub = 1'b0; end
-        8'd15: begin add_up$3$a = regs$428$q; add_up$3$b = {1'b0, regs$420$q[22:0]}; add_up$3$sub = 1'b0; end
+        8'd0: begin add_up$3$a = regs$557$q; add_up$3$b = regs$558$q; add_up$3$sub = 1'b0; end
+        8'd1: begin add_up$3$a = {1'b0, regs$538$q[22:0]}; add_up$3$b = regs$537$q; add_up$3$sub = 1'b0; end
+        8'd2: begin add_up$3$a = regs$566$q; add_up$3$b = regs$567$q; add_up$3$sub = 1'b0; end
+        8'd3: begin add_up$3$a = regs$554$q; add_up$3$b = regs$555$q; add_up$3$sub = 1'b0; end
+        8'd4: begin add_up$3$a = regs$568$q; add_up$3$b = regs$569$q; add_up$3$sub = 1'b0; end
+        8'd5: begin add_up$3$a = regs$543$q; add_up$3$b = regs$544$q; add_up$3$sub = 1'b0; end
+        8'd6: begin add_up$3$a = regs$543$q; add_up$3$b = regs$551$q; add_up$3$sub = 1'b0; end
+        8'd7: begin add_up$3$a = {1'b0, regs$556$q[22:0]}; add_up$3$b = {1'b0, regs$559$q[22:0]}; add_up$3$sub = 1'b0; end
+        8'd8: begin add_up$3$a = regs$563$q; add_up$3$b = regs$565$q; add_up$3$sub = 1'b0; end
+        8'd9: begin add_up$3$a = regs$546$q; add_up$3$b = {1'b0, regs$545$q[22:0]}; add_up$3$sub = 1'b0; end
+        8'd10: begin add_up$3$a = regs$540$q; add_up$3$b = regs$539$q; add_up$3$sub = 1'b0; end
+        8'd11: begin add_up$3$a = regs$542$q; add_up$3$b = regs$541$q; add_up$3$sub = 1'b0; end
+        8'd12: begin add_up$3$a = regs$548$q; add_up$3$b = {1'b0, regs$547$q[22:0]}; add_up$3$sub = 1'b0; end
+        8'd13: begin add_up$3$a = regs$550$q; add_up$3$b = {1'b0, regs$549$q[22:0]}; add_up$3$sub = 1'b0; end
+        8'd14: begin add_up$3$a = regs$553$q; add_up$3$b = {1'b0, regs$552$q[22:0]}; add_up$3$sub = 1'b0; end
+        8'd15: begin add_up$3$a = regs$564$q; add_up$3$b = {1'b0, regs$561$q[22:0]}; add_up$3$sub = 1'b0; end
         default: begin add_up$3$a = 24'd0; add_up$3$b = 24'd0; add_up$3$sub = 1'b0; end
       endcase
       add_up$4$clock = clock;
       add_up$4$valid_in = 1'b0;
       case (counter$q)
-        8'd0: begin add_up$4$a = regs$411$q; add_up$4$b = regs$412$q; add_up$4$sub = 1'b0; end
-        8'd1: begin add_up$4$a = {1'b0, regs$41$q[22:0]}; add_up$4$b = {1'b0, regs$43$q[22:0]}; add_up$4$sub = 1'b0; end
-        8'd2: begin add_up$4$a = regs$451$q; add_up$4$b = regs$452$q; add_up$4$sub = 1'b0; end
-        8'd3: begin add_up$4$a = regs$372$q; add_up$4$b = regs$375$q; add_up$4$sub = 1'b0; end
-        8'd5: begin add_up$4$a = regs$130$q; add_up$4$b = regs$179$q; add_up$4$sub = 1'b0; end
-        8'd6: begin add_up$4$a = regs$130$q; add_up$4$b = regs$298$q; add_up$4$sub = 1'b0; end
-        8'd7: begin add_up$4$a = {1'b0, regs$436$q[22:0]}; add_up$4$b = {1'b0, regs$448$q[22:0]}; add_up$4$sub = 1'b0; end
-        8'd9: begin add_up$4$a = regs$250$q; add_up$4$b = {1'b0, regs$247$q[22:0]}; add_up$4$sub = 1'b0; end
-        8'd10: begin add_up$4$a = regs$309$q; add_up$4$b = {1'b0, regs$306$q[22:0]}; add_up$4$sub = 1'b0; end
-        8'd11: begin add_up$4$a = regs$86$q; add_up$4$b = regs$87$q; add_up$4$sub = 1'b0; end
-        8'd12: begin add_up$4$a = regs$223$q; add_up$4$b = regs$224$q; add_up$4$sub = 1'b0; end
-        8'd13: begin add_up$4$a = regs$282$q; add_up$4$b = regs$283$q; add_up$4$sub = 1'b0; end
-        8'd14: begin add_up$4$a = regs$339$q; add_up$4$b = regs$340$q; add_up$4$sub = 1'b0; end
-        8'd15: begin add_up$4$a = regs$467$q; add_up$4$b = {1'b0, regs$459$q[22:0]}; add_up$4$sub = 1'b0; end
+        8'd0: begin add_up$4$a = regs$589$q; add_up$4$b = regs$590$q; add_up$4$sub = 1'b0; end
+        8'd1: begin add_up$4$a = {1'b0, regs$570$q[22:0]}; add_up$4$b = {1'b0, regs$571$q[22:0]}; add_up$4$sub = 1'b0; end
+        8'd2: begin add_up$4$a = regs$593$q; add_up$4$b = regs$594$q; add_up$4$sub = 1'b0; end
+        8'd3: begin add_up$4$a = regs$587$q; add_up$4$b = regs$588$q; add_up$4$sub = 1'b0; end
+        8'd5: begin add_up$4$a = regs$574$q; add_up$4$b = regs$575$q; add_up$4$sub = 1'b0; end
+        8'd6: begin add_up$4$a = regs$574$q; add_up$4$b = regs$582$q; add_up$4$sub = 1'b0; end
+        8'd7: begin add_up$4$a = {1'b0, regs$591$q[22:0]}; add_up$4$b = {1'b0, regs$592$q[22:0]}; add_up$4$sub = 1'b0; end
+        8'd9: begin add_up$4$a = regs$579$q; add_up$4$b = {1'b0, regs$578$q[22:0]}; add_up$4$sub = 1'b0; end
+        8'd10: begin add_up$4$a = regs$584$q; add_up$4$b = {1'b0, regs$583$q[22:0]}; add_up$4$sub = 1'b0; end
+        8'd11: begin add_up$4$a = regs$572$q; add_up$4$b = regs$573$q; add_up$4$sub = 1'b0; end
+        8'd12: begin add_up$4$a = regs$576$q; add_up$4$b = regs$577$q; add_up$4$sub = 1'b0; end
+        8'd13: begin add_up$4$a = regs$580$q; add_up$4$b = regs$581$q; add_up$4$sub = 1'b0; end
+        8'd14: begin add_up$4$a = regs$585$q; add_up$4$b = regs$586$q; add_up$4$sub = 1'b0; end
+        8'd15: begin add_up$4$a = regs$597$q; add_up$4$b = {1'b0, regs$596$q[22:0]}; add_up$4$sub = 1'b0; end
         default: begin add_up$4$a = 24'd0; add_up$4$b = 24'd0; add_up$4$sub = 1'b0; end
       endcase
       add_up$5$clock = clock;
       add_up$5$valid_in = 1'b0;
       case (counter$q)
-        8'd0: begin add_up$5$a = regs$414$q; add_up$5$b = regs$415$q; add_up$5$sub = 1'b0; end
-        8'd1: begin add_up$5$a = {1'b0, regs$45$q[22:0]}; add_up$5$b = regs$28$q; add_up$5$sub = 1'b0; end
-        8'd2: begin add_up$5$a = regs$454$q; add_up$5$b = regs$455$q; add_up$5$sub = 1'b0; end
-        8'd3: begin add_up$5$a = regs$382$q; add_up$5$b = regs$389$q; add_up$5$sub = 1'b0; end
-        8'd5: begin add_up$5$a = regs$172$q; add_up$5$b = regs$179$q; add_up$5$sub = 1'b0; end
-        8'd6: begin add_up$5$a = regs$172$q; add_up$5$b = regs$298$q; add_up$5$sub = 1'b0; end
-        8'd7: begin add_up$5$a = regs$441$q; add_up$5$b = regs$444$q; add_up$5$sub = 1'b0; end
-        8'd9: begin add_up$5$a = regs$462$q; add_up$5$b = regs$469$q; add_up$5$sub = 1'b0; end
-        8'd10: begin add_up$5$a = {1'b0, regs$218$q[22:0]}; add_up$5$b = (((regs$230$q[22:15] != 8'd0) && (regs$230$q[22:15] != 8'd255)) ? regs$230$q + 24'd32768 : regs$230$q); add_up$5$sub = 1'b0; end
-        8'd11: begin add_up$5$a = regs$230$q; add_up$5$b = regs$233$q; add_up$5$sub = 1'b0; end
-        8'd12: begin add_up$5$a = regs$225$q; add_up$5$b = {1'b0, regs$222$q[22:0]}; add_up$5$sub = 1'b0; end
-        8'd13: begin add_up$5$a = regs$284$q; add_up$5$b = {1'b0, regs$281$q[22:0]}; add_up$5$sub = 1'b0; end
-        8'd14: begin add_up$5$a = regs$341$q; add_up$5$b = {1'b0, regs$338$q[22:0]}; add_up$5$sub = 1'b0; end
-        8'd15: begin add_up$5$a = regs$357$q; add_up$5$b = regs$358$q; add_up$5$sub = 1'b0; end
+        8'd0: begin add_up$5$a = regs$617$q; add_up$5$b = regs$618$q; add_up$5$sub = 1'b0; end
+        8'd1: begin add_up$5$a = {1'b0, regs$599$q[22:0]}; add_up$5$b = regs$598$q; add_up$5$sub = 1'b0; end
+        8'd2: begin add_up$5$a = regs$621$q; add_up$5$b = regs$622$q; add_up$5$sub = 1'b0; end
+        8'd3: begin add_up$5$a = regs$615$q; add_up$5$b = regs$616$q; add_up$5$sub = 1'b0; end
+        8'd5: begin add_up$5$a = regs$600$q; add_up$5$b = regs$601$q; add_up$5$sub = 1'b0; end
+        8'd6: begin add_up$5$a = regs$600$q; add_up$5$b = regs$609$q; add_up$5$sub = 1'b0; end
+        8'd7: begin add_up$5$a = regs$619$q; add_up$5$b = regs$620$q; add_up$5$sub = 1'b0; end
+        8'd9: begin add_up$5$a = regs$624$q; add_up$5$b = regs$625$q; add_up$5$sub = 1'b0; end
+        8'd10: begin add_up$5$a = {1'b0, regs$602$q[22:0]}; add_up$5$b = (((regs$605$q[22:15] != 8'd0) && (regs$605$q[22:15] != 8'd255)) ? regs$605$q + 24'd32768 : regs$605$q); add_up$5$sub = 1'b0; end
+        8'd11: begin add_up$5$a = regs$605$q; add_up$5$b = regs$606$q; add_up$5$sub = 1'b0; end
+        8'd12: begin add_up$5$a = regs$604$q; add_up$5$b = {1'b0, regs$603$q[22:0]}; add_up$5$sub = 1'b0; end
+        8'd13: begin add_up$5$a = regs$608$q; add_up$5$b = {1'b0, regs$607$q[22:0]}; add_up$5$sub = 1'b0; end
+        8'd14: begin add_up$5$a = regs$611$q; add_up$5$b = {1'b0, regs$610$q[22:0]}; add_up$5$sub = 1'b0; end
+        8'd15: begin add_up$5$a = regs$612$q; add_up$5$b = regs$613$q; add_up$5$sub = 1'b0; end
         default: begin add_up$5$a = 24'd0; add_up$5$b = 24'd0; add_up$5$sub = 1'b0; end
       endcase
       add_up$6$clock = clock;
       add_up$6$valid_in = 1'b0;
       case (counter$q)
-        8'd0: begin add_up$6$a = regs$445$q; add_up$6$b = regs$457$q; add_up$6$sub = 1'b0; end
-        8'd1: begin add_up$6$a = regs$267$q; add_up$6$b = regs$268$q; add_up$6$sub = 1'b0; end
-        8'd2: begin add_up$6$a = regs$431$q; add_up$6$b = regs$432$q; add_up$6$sub = 1'b0; end
-        8'd5: begin add_up$6$a = regs$88$q; add_up$6$b = regs$239$q; add_up$6$sub = 1'b0; end
-        8'd6: begin add_up$6$a = regs$205$q; add_up$6$b = regs$206$q; add_up$6$sub = 1'b0; end
-        8'd7: begin add_up$6$a = regs$453$q; add_up$6$b = regs$456$q; add_up$6$sub = 1'b0; end
-        8'd10: begin add_up$6$a = regs$288$q; add_up$6$b = regs$229$q; add_up$6$sub = 1'b0; end
-        8'd11: begin add_up$6$a = regs$345$q; add_up$6$b = regs$288$q; add_up$6$sub = 1'b0; end
-        8'd12: begin add_up$6$a = regs$289$q; add_up$6$b = regs$292$q; add_up$6$sub = 1'b0; end
-        8'd13: begin add_up$6$a = regs$192$q; add_up$6$b = regs$193$q; add_up$6$sub = 1'b0; end
-        8'd14: begin add_up$6$a = regs$310$q; add_up$6$b = regs$311$q; add_up$6$sub = 1'b0; end
-        8'd15: begin add_up$6$a = regs$370$q; add_up$6$b = regs$371$q; add_up$6$sub = 1'b0; end
+        8'd0: begin add_up$6$a = regs$645$q; add_up$6$b = regs$648$q; add_up$6$sub = 1'b0; end
+        8'd1: begin add_up$6$a = regs$633$q; add_up$6$b = regs$634$q; add_up$6$sub = 1'b0; end
+        8'd2: begin add_up$6$a = regs$643$q; add_up$6$b = regs$644$q; add_up$6$sub = 1'b0; end
+        8'd5: begin add_up$6$a = regs$626$q; add_up$6$b = regs$632$q; add_up$6$sub = 1'b0; end
+        8'd6: begin add_up$6$a = regs$629$q; add_up$6$b = regs$630$q; add_up$6$sub = 1'b0; end
+        8'd7: begin add_up$6$a = regs$646$q; add_up$6$b = regs$647$q; add_up$6$sub = 1'b0; end
+        8'd10: begin add_up$6$a = regs$635$q; add_up$6$b = regs$631$q; add_up$6$sub = 1'b0; end
+        8'd11: begin add_up$6$a = regs$640$q; add_up$6$b = regs$635$q; add_up$6$sub = 1'b0; end
+        8'd12: begin add_up$6$a = regs$636$q; add_up$6$b = regs$637$q; add_up$6$sub = 1'b0; end
+        8'd13: begin add_up$6$a = regs$627$q; add_up$6$b = regs$628$q; add_up$6$sub = 1'b0; end
+        8'd14: begin add_up$6$a = regs$638$q; add_up$6$b = regs$639$q; add_up$6$sub = 1'b0; end
+        8'd15: begin add_up$6$a = regs$641$q; add_up$6$b = regs$642$q; add_up$6$sub = 1'b0; end
         default: begin add_up$6$a = 24'd0; add_up$6$b = 24'd0; add_up$6$sub = 1'b0; end
       endcase
       add_up$7$clock = clock;
       add_up$7$valid_in = 1'b0;
       case (counter$q)
-        8'd0: begin add_up$7$a = regs$390$q; add_up$7$b = regs$391$q; add_up$7$sub = 1'b0; end
-        8'd1: begin add_up$7$a = regs$285$q; add_up$7$b = regs$286$q; add_up$7$sub = 1'b0; end
-        8'd5: begin add_up$7$a = regs$130$q; add_up$7$b = regs$239$q; add_up$7$sub = 1'b0; end
-        8'd6: begin add_up$7$a = {1'b0, regs$354$q[22:0]}; add_up$7$b = {1'b0, regs$367$q[22:0]}; add_up$7$sub = 1'b0; end
-        8'd7: begin add_up$7$a = regs$363$q; add_up$7$b = regs$376$q; add_up$7$sub = 1'b0; end
-        8'd10: begin add_up$7$a = regs$387$q; add_up$7$b = {1'b0, regs$378$q[22:0]}; add_up$7$sub = 1'b0; end
-        8'd11: begin add_up$7$a = regs$229$q; add_up$7$b = regs$345$q; add_up$7$sub = 1'b0; end
-        8'd12: begin add_up$7$a = {1'b0, regs$277$q[22:0]}; add_up$7$b = (((regs$289$q[22:15] != 8'd0) && (regs$289$q[22:15] != 8'd255)) ? regs$289$q + 24'd32768 : regs$289$q); add_up$7$sub = 1'b0; end
-        8'd13: begin add_up$7$a = regs$251$q; add_up$7$b = regs$252$q; add_up$7$sub = 1'b0; end
-        8'd14: begin add_up$7$a = regs$346$q; add_up$7$b = regs$349$q; add_up$7$sub = 1'b0; end
-        8'd15: begin add_up$7$a = regs$373$q; add_up$7$b = regs$374$q; add_up$7$sub = 1'b0; end
+        8'd0: begin add_up$7$a = regs$669$q; add_up$7$b = regs$670$q; add_up$7$sub = 1'b0; end
+        8'd1: begin add_up$7$a = regs$655$q; add_up$7$b = regs$656$q; add_up$7$sub = 1'b0; end
+        8'd5: begin add_up$7$a = regs$649$q; add_up$7$b = regs$651$q; add_up$7$sub = 1'b0; end
+        8'd6: begin add_up$7$a = {1'b0, regs$661$q[22:0]}; add_up$7$b = {1'b0, regs$663$q[22:0]}; add_up$7$sub = 1'b0; end
+        8'd7: begin add_up$7$a = regs$662$q; add_up$7$b = regs$666$q; add_up$7$sub = 1'b0; end
+        8'd10: begin add_up$7$a = regs$668$q; add_up$7$b = {1'b0, regs$667$q[22:0]}; add_up$7$sub = 1'b0; end
+        8'd11: begin add_up$7$a = regs$650$q; add_up$7$b = regs$658$q; add_up$7$sub = 1'b0; end
+        8'd12: begin add_up$7$a = {1'b0, regs$654$q[22:0]}; add_up$7$b = (((regs$657$q[22:15] != 8'd0) && (regs$657$q[22:15] != 8'd255)) ? regs$657$q + 24'd32768 : regs$657$q); add_up$7$sub = 1'b0; end
+        8'd13: begin add_up$7$a = regs$652$q; add_up$7$b = regs$653$q; add_up$7$sub = 1'b0; end
+        8'd14: begin add_up$7$a = regs$659$q; add_up$7$b = regs$660$q; add_up$7$sub = 1'b0; end
+        8'd15: begin add_up$7$a = regs$664$q; add_up$7$b = regs$665$q; add_up$7$sub = 1'b0; end
         default: begin add_up$7$a = 24'd0; add_up$7$b = 24'd0; add_up$7$sub = 1'b0; end
       endcase
       scale_e$0$clock = clock;
       case (counter$q)
-        8'd1: begin scale_e$0$a = regs$194$q; scale_e$0$sel = exact$2$q; end
-        8'd2: begin scale_e$0$a = regs$253$q; scale_e$0$sel = exact$2$q; end
-        8'd3: begin scale_e$0$a = regs$312$q; scale_e$0$sel = exact$2$q; end
-        8'd4: begin scale_e$0$a = regs$210$q; scale_e$0$sel = exact$2$q; end
-        8'd5: begin scale_e$0$a = regs$228$q; scale_e$0$sel = exact$2$q; end
-        8'd6: begin scale_e$0$a = regs$269$q; scale_e$0$sel = exact$2$q; end
-        8'd7: begin scale_e$0$a = regs$287$q; scale_e$0$sel = exact$2$q; end
-        8'd8: begin scale_e$0$a = regs$328$q; scale_e$0$sel = exact$2$q; end
-        8'd9: begin scale_e$0$a = regs$344$q; scale_e$0$sel = exact$2$q; end
+        8'd1: begin scale_e$0$a = regs$671$q; scale_e$0$sel = exact$2$q; end
+        8'd2: begin scale_e$0$a = regs$674$q; scale_e$0$sel = exact$2$q; end
+        8'd3: begin scale_e$0$a = regs$677$q; scale_e$0$sel = exact$2$q; end
+        8'd4: begin scale_e$0$a = regs$672$q; scale_e$0$sel = exact$2$q; end
+        8'd5: begin scale_e$0$a = regs$673$q; scale_e$0$sel = exact$2$q; end
+        8'd6: begin scale_e$0$a = regs$675$q; scale_e$0$sel = exact$2$q; end
+        8'd7: begin scale_e$0$a = regs$676$q; scale_e$0$sel = exact$2$q; end
+        8'd8: begin scale_e$0$a = regs$678$q; scale_e$0$sel = exact$2$q; end
+        8'd9: begin scale_e$0$a = regs$679$q; scale_e$0$sel = exact$2$q; end
         default: begin scale_e$0$a = 24'd0; scale_e$0$sel = 1'b0; end
       endcase
       scale_z$0$clock = clock;
       case (counter$q)
-        8'd4: begin scale_z$0$a = regs$228$q; scale_z$0$sel = exact$2$q; end
-        8'd5: begin scale_z$0$a = regs$287$q; scale_z$0$sel = exact$2$q; end
-        8'd6: begin scale_z$0$a = regs$344$q; scale_z$0$sel = exact$2$q; end
+        8'd4: begin scale_z$0$a = regs$680$q; scale_z$0$sel = exact$2$q; end
+        8'd5: begin scale_z$0$a = regs$681$q; scale_z$0$sel = exact$2$q; end
+        8'd6: begin scale_z$0$a = regs$682$q; scale_z$0$sel = exact$2$q; end
         default: begin scale_z$0$a = 24'd0; scale_z$0$sel = 1'b0; end
       endcase
       scale_s$0$clock = clock;
       case (counter$q)
-        8'd3: begin scale_s$0$a = regs$429$q; scale_s$0$sel = 1'b0; end
-        8'd4: begin scale_s$0$a = regs$468$q; scale_s$0$sel = 1'b0; end
-        8'd6: begin scale_s$0$a = regs$218$q; scale_s$0$sel = 1'b0; end
-        8'd7: begin scale_s$0$a = regs$277$q; scale_s$0$sel = 1'b0; end
-        8'd9: begin scale_s$0$a = regs$335$q; scale_s$0$sel = 1'b0; end
-        8'd14: begin scale_s$0$a = regs$388$q; scale_s$0$sel = 1'b0; end
+        8'd3: begin scale_s$0$a = regs$687$q; scale_s$0$sel = 1'b0; end
+        8'd4: begin scale_s$0$a = regs$688$q; scale_s$0$sel = 1'b0; end
+        8'd6: begin scale_s$0$a = regs$683$q; scale_s$0$sel = 1'b0; end
+        8'd7: begin scale_s$0$a = regs$684$q; scale_s$0$sel = 1'b0; end
+        8'd9: begin scale_s$0$a = regs$685$q; scale_s$0$sel = 1'b0; end
+        8'd14: begin scale_s$0$a = regs$686$q; scale_s$0$sel = 1'b0; end
         default: begin scale_s$0$a = 24'd0; scale_s$0$sel = 1'b0; end
       endcase
-      signs$0$x = regs$221$q;
-      signs$0$e = regs$232$q;
-      signs$1$x = regs$280$q;
-      signs$1$e = regs$291$q;
-      signs$2$x = regs$380$q;
-      signs$2$e = regs$383$q;
-      signs$3$x = regs$356$q;
-      signs$3$e = regs$364$q;
-      signs$4$x = regs$369$q;
-      signs$4$e = regs$377$q;
-      signs$5$x = regs$386$q;
-      signs$5$e = regs$392$q;
+      signs$0$x = regs$692$q;
+      signs$0$e = regs$695$q;
+      signs$1$x = regs$699$q;
+      signs$1$e = regs$702$q;
+      signs$2$x = regs$721$q;
+      signs$2$e = regs$724$q;
+      signs$3$x = regs$711$q;
+      signs$3$e = regs$713$q;
+      signs$4$x = regs$716$q;
+      signs$4$e = regs$718$q;
+      signs$5$x = regs$726$q;
+      signs$5$e = regs$727$q;
       out_s_x$0$clock = clock;
-      out_s_x$0$d = (counter$q == 8'd8) ? regs$386$q : out_s_x$0$q;
+      out_s_x$0$d = (counter$q == 8'd8) ? regs$726$q : out_s_x$0$q;
       out_s_b$0$clock = clock;
-      out_s_b$0$d = (counter$q == 8'd8) ? regs$392$q : out_s_b$0$q;
+      out_s_b$0$d = (counter$q == 8'd8) ? regs$727$q : out_s_b$0$q;
       out_cross_t$0$clock = clock;
       out_cross_t$0$d = (counter$q == 8'd8) ? ((signs$0$sgn[1] & signs$1$sgn[0] & signs$2$sgn[0] & signs$3$sgn[0] & signs$4$sgn[0] & signs$5$sgn[1]) | (signs$0$sgn[0] & signs$1$sgn[1] & signs$2$sgn[1] & signs$3$sgn[1] & signs$4$sgn[1] & signs$5$sgn[0])) : out_cross_t$0$q;
       out_cross_f$0$clock = clock;
@@ -15965,22 +18875,22 @@ module top$tri_unit$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2
       s_b$0 = out_s_b$0$q;
       cross_t$0 = out_cross_t$0$q;
       cross_f$0 = out_cross_f$0$q;
-      signs$6$x = regs$280$q;
-      signs$6$e = regs$291$q;
-      signs$7$x = regs$337$q;
-      signs$7$e = regs$348$q;
-      signs$8$x = regs$421$q;
-      signs$8$e = regs$424$q;
-      signs$9$x = regs$397$q;
-      signs$9$e = regs$405$q;
-      signs$10$x = regs$410$q;
-      signs$10$e = regs$418$q;
-      signs$11$x = regs$427$q;
-      signs$11$e = regs$433$q;
+      signs$6$x = regs$699$q;
+      signs$6$e = regs$702$q;
+      signs$7$x = regs$705$q;
+      signs$7$e = regs$708$q;
+      signs$8$x = regs$740$q;
+      signs$8$e = regs$743$q;
+      signs$9$x = regs$730$q;
+      signs$9$e = regs$732$q;
+      signs$10$x = regs$735$q;
+      signs$10$e = regs$737$q;
+      signs$11$x = regs$745$q;
+      signs$11$e = regs$746$q;
       out_s_x$1$clock = clock;
-      out_s_x$1$d = (counter$q == 8'd8) ? regs$427$q : out_s_x$1$q;
+      out_s_x$1$d = (counter$q == 8'd8) ? regs$745$q : out_s_x$1$q;
       out_s_b$1$clock = clock;
-      out_s_b$1$d = (counter$q == 8'd8) ? regs$433$q : out_s_b$1$q;
+      out_s_b$1$d = (counter$q == 8'd8) ? regs$746$q : out_s_b$1$q;
       out_cross_t$1$clock = clock;
       out_cross_t$1$d = (counter$q == 8'd8) ? ((signs$6$sgn[1] & signs$7$sgn[0] & signs$8$sgn[0] & signs$9$sgn[0] & signs$10$sgn[0] & signs$11$sgn[1]) | (signs$6$sgn[0] & signs$7$sgn[1] & signs$8$sgn[1] & signs$9$sgn[1] & signs$10$sgn[1] & signs$11$sgn[0])) : out_cross_t$1$q;
       out_cross_f$1$clock = clock;
@@ -15989,22 +18899,22 @@ module top$tri_unit$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2
       s_b$1 = out_s_b$1$q;
       cross_t$1 = out_cross_t$1$q;
       cross_f$1 = out_cross_f$1$q;
-      signs$12$x = regs$337$q;
-      signs$12$e = regs$348$q;
-      signs$13$x = regs$221$q;
-      signs$13$e = regs$232$q;
-      signs$14$x = regs$460$q;
-      signs$14$e = regs$463$q;
-      signs$15$x = regs$438$q;
-      signs$15$e = regs$445$q;
-      signs$16$x = regs$450$q;
-      signs$16$e = regs$457$q;
-      signs$17$x = regs$466$q;
-      signs$17$e = regs$472$q;
+      signs$12$x = regs$705$q;
+      signs$12$e = regs$708$q;
+      signs$13$x = regs$692$q;
+      signs$13$e = regs$695$q;
+      signs$14$x = regs$757$q;
+      signs$14$e = regs$760$q;
+      signs$15$x = regs$749$q;
+      signs$15$e = regs$750$q;
+      signs$16$x = regs$753$q;
+      signs$16$e = regs$754$q;
+      signs$17$x = regs$762$q;
+      signs$17$e = regs$763$q;
       out_s_x$2$clock = clock;
-      out_s_x$2$d = (counter$q == 8'd8) ? regs$466$q : out_s_x$2$q;
+      out_s_x$2$d = (counter$q == 8'd8) ? regs$762$q : out_s_x$2$q;
       out_s_b$2$clock = clock;
-      out_s_b$2$d = (counter$q == 8'd8) ? regs$472$q : out_s_b$2$q;
+      out_s_b$2$d = (counter$q == 8'd8) ? regs$763$q : out_s_b$2$q;
       out_cross_t$2$clock = clock;
       out_cross_t$2$d = (counter$q == 8'd8) ? ((signs$12$sgn[1] & signs$13$sgn[0] & signs$14$sgn[0] & signs$15$sgn[0] & signs$16$sgn[0] & signs$17$sgn[1]) | (signs$12$sgn[0] & signs$13$sgn[1] & signs$14$sgn[1] & signs$15$sgn[1] & signs$16$sgn[1] & signs$17$sgn[0])) : out_cross_t$2$q;
       out_cross_f$2$clock = clock;
@@ -16875,6 +19785,25 @@ module top$tri_unit$tc$mul_v$0(clock,a,b,valid_in,y,valid_out);
     end
     
 endmodule // top$tri_unit$tc$mul_v$0
+
+
+module top$tri_unit$tc$regs$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 24'h0;
+    end
+    
+    (* keep *) always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$tri_unit$tc$regs$0
 
 
 module top$tri_unit$tc$scale_e$0(clock,a,sel,y);

@@ -414,7 +414,7 @@ fn folded_tri_unit_takes_a_pair_every_interval() {
     let (take, out_valid) = (idx("take"), idx("out_valid"));
     for ii in [2u32, 4, 16, 32] {
         let p = Params { tri_interval: ii, ..Params::RTL };
-        let latency = collision_chip::fold::tri_unit_latency(&collision_chip::fold::tri_unit_plan(ii as usize).unwrap()) as u64;
+        let latency = collision_chip::fold::tri_unit_latency(&collision_chip::fold::tri_unit_plan(ii as usize, collision_chip::fold::plan::Binding::Shared).unwrap()) as u64;
         let (mut takes, mut first_out) = (vec![], None);
         let mut obs = |t: u64, v: &[u64]| {
             if v[take] == 1 {

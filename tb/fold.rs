@@ -154,17 +154,19 @@ fn fold16_equals_golden() {
         .collect();
     let n = cases.len();
     eprintln!("{n} directions at II 16");
-    let bad = mismatches(collision_chip::fold::tcheck_plan(16).unwrap(), cases);
+    let bad = mismatches(collision_chip::fold::tcheck_plan(16, collision_chip::fold::plan::Binding::Shared).unwrap(), cases);
     assert!(bad.is_empty(), "{} of {n} differ:\n{}", bad.len(), bad[..bad.len().min(5)].join("\n"));
 }
 
 /// The same generator at every other II of issue 33 equals the golden model on directions
-/// of every verdict.
+/// of every verdict, and so does each II with its registers bound per reader.
 #[test]
 fn every_ii_equals_golden() {
-    for ii in [1, 2, 4, 8, 32] {
-        let bad = mismatches(collision_chip::fold::tcheck_plan(ii).unwrap(), few_cases(Format::BINARY32, Rounding::NearestEven));
-        assert!(bad.is_empty(), "II {ii}: {}", bad.join("\n"));
+    use collision_chip::fold::plan::Binding::{PerReader, Shared};
+    let plans = [1, 2, 4, 8, 32].map(|ii| (ii, Shared)).into_iter().chain([1, 2, 4, 8, 16, 32].map(|ii| (ii, PerReader)));
+    for (ii, binding) in plans {
+        let bad = mismatches(collision_chip::fold::tcheck_plan(ii, binding).unwrap(), few_cases(Format::BINARY32, Rounding::NearestEven));
+        assert!(bad.is_empty(), "II {ii} {binding:?}: {}", bad.join("\n"));
     }
 }
 
@@ -172,7 +174,7 @@ fn every_ii_equals_golden() {
 /// register (a stage-1 product reading a neighbouring word).
 #[test]
 fn fold16_broken_mux_is_caught() {
-    let mut plan = collision_chip::fold::tcheck_plan(16).unwrap();
+    let mut plan = collision_chip::fold::tcheck_plan(16, collision_chip::fold::plan::Binding::Shared).unwrap();
     let iss = plan.issues[0][0].iter_mut().flatten().next().unwrap();
     iss.a.reg += 1;
     let bad = mismatches(plan, few_cases(Format::BINARY32, Rounding::NearestEven));

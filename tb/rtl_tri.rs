@@ -500,7 +500,7 @@ fn tri_unit_fold16_mismatches(f: Format) -> (Vec<String>, usize) {
     let job = tri_job(f, &triples);
     let n = job.golden.len();
     let bad = big_stack(move || {
-        let plan = collision_chip::fold::tri_unit_plan(16).unwrap();
+        let plan = collision_chip::fold::tri_unit_plan(16, collision_chip::fold::plan::Binding::Shared).unwrap();
         if f == Format::BINARY32 {
             run_mismatches(&mut b32::tri_unit_fold_top(plan, Rounding::NearestEven), &job)
         } else {

@@ -59,7 +59,7 @@ impl<'a> TriUnit<'a> {
     pub fn new(a: &'a ObjectImage, b: &'a ObjectImage, values: Values<'a>, p: &Params) -> Result<Self, String> {
         let latency = match p.tri_interval {
             1 => p.tri_latency,
-            ii => fold::tri_unit_latency(&fold::tri_unit_plan(ii as usize)?) as u32,
+            ii => fold::tri_unit_latency(&fold::tri_unit_plan(ii as usize, fold::plan::Binding::Shared)?) as u32,
         };
         let open = Delay::with_capacity(latency, p.tri_fifo as usize);
         Ok(TriUnit { a, b, words_a: Held::default(), words_b: Held::default(), values, open, interval: p.tri_interval as u64, first: None })

@@ -11,22 +11,23 @@ pub mod ops;
 pub mod plan;
 pub mod schedule;
 
-/// T.CHECK folded for initiation interval `ii` on the fewest units that allow it.
-pub fn tcheck_plan(ii: usize) -> Result<plan::Plan, String> {
+/// T.CHECK folded for initiation interval `ii` on the fewest units that allow it, values
+/// bound to registers by `binding`.
+pub fn tcheck_plan(ii: usize, binding: plan::Binding) -> Result<plan::Plan, String> {
     let g = graph::Graph::tcheck();
     let s = schedule::schedule(&g.g, &g.outputs.all(), ii, schedule::minimal_units(&g.g, ii))?;
-    Ok(plan::Plan::new(&g, &s))
+    Ok(plan::Plan::new(&g, &s, binding))
 }
 
 /// TRI_UNIT folded for initiation interval `ii` (a pair every `ii` clocks): both directions
 /// on one T.CHECK folded for ii / 2, A's edges against U(B) when the pair is taken, B's
 /// against U(A) ii / 2 clocks later (docs/ARCHITECTURE.md, "Folded TRI_UNIT"). The shared
 /// T.CHECK's plan; Err for an odd or zero `ii`.
-pub fn tri_unit_plan(ii: usize) -> Result<plan::Plan, String> {
+pub fn tri_unit_plan(ii: usize, binding: plan::Binding) -> Result<plan::Plan, String> {
     if ii < 2 || ii % 2 == 1 {
         return Err(format!("a folded TRI_UNIT runs its two directions on one T.CHECK at II ii / 2, so ii must be even and at least 2, not {ii}"));
     }
-    tcheck_plan(ii / 2)
+    tcheck_plan(ii / 2, binding)
 }
 
 /// The folded TRI_UNIT's latency from its shared T.CHECK's plan `p`: a pair taken at edge t

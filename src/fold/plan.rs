@@ -10,6 +10,9 @@
 //! chain is as long as its last read needs. An operation started in cycle t is issued
 //! while the counter is (t + 1) mod ii: its unit's operand multiplexers select the
 //! registers of that cycle.
+//!
+//! How values are bound to chains is a parameter, [`Binding`]: one chain per value (the
+//! fewest registers), or one per value and reader (routable on an FPGA).
 
 use super::graph::{Class, Graph, Op};
 use super::ops::{Const, Outputs};
@@ -24,6 +27,29 @@ pub enum Src {
     Input(usize),
     Unit(usize, usize),
     Side,
+}
+
+/// How a plan binds values to chains.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Binding {
+    /// One chain per value, read by every unit that needs it: the fewest registers (the
+    /// exported units and the area study).
+    Shared,
+    /// One chain per value and [`Reader`] (each unit, and the output registers): a unit's
+    /// operand multiplexers select only among registers no other unit reads, which a placer
+    /// puts beside it, and what crosses the chip is the units' outputs to the chains' first
+    /// registers. Shared chains made every multiplexer reach across the whole register
+    /// file, which nextpnr could not route on the LFE5U-85F (README, "FPGA"). The RTL marks
+    /// these registers `keep` so that synthesis does not merge the copies back.
+    PerReader,
+}
+
+/// Who reads a value's chain: a unit (class index, unit) or the output registers (all
+/// readers are one under [`Binding::Shared`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+enum Reader {
+    Unit(usize, usize),
+    Outputs,
 }
 
 /// A chain of registers: `first .. first + len` in its register file, written at counter
@@ -62,6 +88,7 @@ pub struct Issue {
 #[derive(Clone, Debug)]
 pub struct Plan {
     pub ii: usize,
+    pub binding: Binding,
     pub latency: usize,
     pub units: [usize; 7],
     pub words: Vec<Chain>,
@@ -81,33 +108,40 @@ impl Plan {
         self.words.iter().map(|c| c.len).sum()
     }
 
-    /// The plan of `g` under schedule `s`.
-    pub fn new(g: &Graph, s: &Schedule) -> Plan {
+    /// The plan of `g` under schedule `s`, values bound to chains by `binding`.
+    pub fn new(g: &Graph, s: &Schedule, binding: Binding) -> Plan {
         let ii = s.ii;
         let ready = |n: NodeIndex| s.ready(&g.g, n);
-        // the last cycle each value is read: by its operations, or as an output
-        let mut last = vec![None::<usize>; g.g.node_count()];
+        // the reader of operation n's operands (shared: one reader, the outputs', for all)
+        let reader = |n: NodeIndex| match (binding, g.class(n)) {
+            (Binding::PerReader, Some(class)) => Reader::Unit(class.index(), s.unit[n.index()]),
+            _ => Reader::Outputs,
+        };
+        // the last cycle each reader reads each value (in order: a reader's registers together)
+        let mut last = std::collections::BTreeMap::<(Reader, usize), usize>::new();
         for n in g.g.node_indices() {
             for p in g.g.neighbors_directed(n, Direction::Incoming) {
-                last[p.index()] = last[p.index()].max(Some(s.start[n.index()]));
+                let l = last.entry((reader(n), p.index())).or_default();
+                *l = (*l).max(s.start[n.index()]);
             }
         }
         for n in g.outputs.all() {
-            last[n.index()] = last[n.index()].max(Some(s.out_at));
+            let l = last.entry((Reader::Outputs, n.index())).or_default();
+            *l = (*l).max(s.out_at);
         }
-        let (mut words, mut chain_of, mut next) = (vec![], vec![usize::MAX; g.g.node_count()], 0);
-        for n in g.g.node_indices() {
-            let Some(l) = last[n.index()] else { continue };
+        let (mut words, mut chain_of, mut next) = (vec![], std::collections::HashMap::new(), 0);
+        for (&(r, i), &l) in &last {
+            let n = NodeIndex::new(i);
             let src = match g.g[n] {
                 Op::Input(i) => Src::Input(i),
                 Op::Fp { class, .. } => Src::Unit(class.index(), s.unit[n.index()]),
             };
             let len = (l - ready(n)) / ii + 1;
-            chain_of[n.index()] = words.len();
+            chain_of.insert((r, i), words.len());
             words.push(Chain { first: next, len, slot: ready(n) % ii, src });
             next += len;
         }
-        let read = |n: NodeIndex, t: usize, abs: bool, dbl: bool| Read { reg: words[chain_of[n.index()]].first + (t - ready(n)) / ii, abs, dbl };
+        let read = |n: NodeIndex, r: Reader, t: usize, abs: bool, dbl: bool| Read { reg: words[chain_of[&(r, n.index())]].first + (t - ready(n)) / ii, abs, dbl };
         // v_exact: read by the c_e and c_z multipliers; valid and tag at the outputs
         let exact_last = g.g.node_indices().filter(|&n| matches!(g.class(n), Some(Class::Scale(Const::Ce | Const::Cz)))).map(|n| s.start[n.index()]).max().unwrap_or(0);
         let side = |last: usize| Chain { first: 0, len: last / ii + 1, slot: 0, src: Src::Side };
@@ -115,13 +149,14 @@ impl Plan {
         for n in g.g.node_indices() {
             let Op::Fp { class, sub } = g.g[n] else { continue };
             let t = s.start[n.index()];
-            let ops: Vec<Read> = g.operands(n).into_iter().map(|(p, o)| read(p, t, o.abs, o.dbl)).collect();
+            let ops: Vec<Read> = g.operands(n).into_iter().map(|(p, o)| read(p, reader(n), t, o.abs, o.dbl)).collect();
             let sel = matches!(class, Class::Scale(Const::Ce | Const::Cz)).then_some(t / ii);
             issues[class.index()][s.unit[n.index()]][(t + 1) % ii] = Some(Issue { a: ops[0], b: ops.get(1).copied(), sub, sel });
         }
-        let outputs = g.outputs.map(|n| read(n, s.out_at, false, false).reg);
+        let outputs = g.outputs.map(|n| read(n, Reader::Outputs, s.out_at, false, false).reg);
         Plan {
             ii,
+            binding,
             latency: s.latency(),
             units: s.units,
             words,
@@ -144,7 +179,7 @@ mod tests {
     #[test]
     fn tcheck_plans() {
         for ii in [1, 2, 4, 8, 16, 32] {
-            let p = crate::fold::tcheck_plan(ii).unwrap();
+            let p = crate::fold::tcheck_plan(ii, super::Binding::Shared).unwrap();
             let n = p.word_regs();
             let reads = p.issues.iter().flatten().flatten().flatten().flat_map(|i| [Some(i.a), i.b]).flatten();
             assert!(reads.map(|r| r.reg).chain(p.outputs.all()).all(|r| r < n), "II {ii}");

@@ -82,7 +82,7 @@ const FOLDED_II: [usize; 1] = [16];
 fn tcheck_fold_unit(ii: usize) -> Unit {
     let r = Rounding::NearestEven;
     let name = format!("tcheck_fold{ii}_b32_{}", rounding_tag(r));
-    let latency = crate::fold::tcheck_plan(ii).expect("T.CHECK schedules at every II").latency;
+    let latency = crate::fold::tcheck_plan(ii, crate::fold::plan::Binding::Shared).expect("T.CHECK schedules at every II").latency;
     let n2 = name.clone();
     Unit {
         name,
@@ -98,7 +98,7 @@ fn tcheck_fold_unit(ii: usize) -> Unit {
 fn tri_unit_fold_unit(ii: usize) -> Unit {
     let r = Rounding::NearestEven;
     let name = tri_unit_name(Format::BINARY32, r, ii as u32);
-    let latency = crate::fold::tri_unit_latency(&crate::fold::tri_unit_plan(ii).expect("an exported II folds"));
+    let latency = crate::fold::tri_unit_latency(&crate::fold::tri_unit_plan(ii, crate::fold::plan::Binding::Shared).expect("an exported II folds"));
     let n2 = name.clone();
     Unit {
         name,

@@ -165,7 +165,7 @@ pub mod e8m15_fold16 {
     /// TRI_UNIT folded to the chip's interval, T.CHECK rounding with `r`.
     fn tri_unit(r: Rounding) -> TriUnitFold {
         let ii = ChipKind::K6E8m15Fold16.tri_interval() as usize;
-        TriUnitFold::new(crate::fold::tri_unit_plan(ii).expect("the chip's interval is even"), r)
+        TriUnitFold::new(crate::fold::tri_unit_plan(ii, crate::fold::plan::Binding::Shared).expect("the chip's interval is even"), r)
     }
     // node word 1 + 6 * 24 + 64 bits, triangle word 23 * 24 + 2
     crate::rtl::chip::chip!(6, DopUnit6 = DopUnit6::new, TriUnitFold = tri_unit, 24, 24, 209, 554, 554, 209);
@@ -186,9 +186,11 @@ pub mod e8m15_dop6_tri32 {
     /// The DOP unit folded to the chip's interval.
     pub type DopUnit = <DopFold<6, { KIND.dop_interval() as usize }> as FoldedDop>::Unit;
 
-    /// TRI_UNIT folded to the chip's interval, T.CHECK rounding with `r`.
+    /// TRI_UNIT folded to the chip's interval, T.CHECK rounding with `r`, its registers
+    /// bound per reader (`Binding::PerReader`: for the FPGA's router).
     fn tri_unit(r: Rounding) -> TriUnitFold {
-        TriUnitFold::new(crate::fold::tri_unit_plan(KIND.tri_interval() as usize).expect("the chip's interval is even"), r)
+        let plan = crate::fold::tri_unit_plan(KIND.tri_interval() as usize, crate::fold::plan::Binding::PerReader);
+        TriUnitFold::new(plan.expect("the chip's interval is even"), r)
     }
     // node word 1 + 6 * 24 + 64 bits, triangle word 23 * 24 + 2
     crate::rtl::chip::chip!(6, DopUnit = DopUnit::new => in_ready, TriUnitFold = tri_unit, 24, 24, 209, 554, 554, 209);

@@ -23,6 +23,47 @@ impl<T> rust_hdl::prelude::Block for Fixed<T> {
     fn accept(&self, _name: &str, _probe: &mut dyn rust_hdl::prelude::Probe) {}
 }
 
+pub use kept::KeptDff;
+mod kept {
+    use super::Fixed;
+    use rust_hdl::prelude::*;
+
+    /// rust-hdl's `DFF`, its Verilog marked `(* keep *)` when `keep` holds: a register that
+    /// synthesis must not merge with an identical one (the copies of a value's chain under
+    /// [`Binding::PerReader`](crate::fold::plan::Binding::PerReader)). Otherwise its Verilog
+    /// is `DFF`'s, byte for byte.
+    #[derive(Clone, Debug, LogicBlock)]
+    pub struct KeptDff<T: Synth> {
+        pub d: Signal<In, T>,
+        pub q: Signal<Out, T>,
+        pub clock: Signal<In, Clock>,
+        keep: Fixed<bool>,
+    }
+
+    impl<T: Synth> KeptDff<T> {
+        pub fn new(keep: bool) -> Self {
+            Self { d: Default::default(), q: Default::default(), clock: Default::default(), keep: Fixed(std::sync::Arc::new(keep)) }
+        }
+    }
+
+    impl<T: Synth> Logic for KeptDff<T> {
+        fn update(&mut self) {
+            if self.clock.pos_edge() {
+                self.q.next = self.d.val()
+            }
+        }
+        fn connect(&mut self) {
+            self.q.connect();
+        }
+        fn hdl(&self) -> Verilog {
+            match DFF::<T>::default().hdl() {
+                Verilog::Custom(v) if *self.keep.0 => Verilog::Custom(v.replace("always @(posedge clock)", "(* keep *) always @(posedge clock)")),
+                v => v,
+            }
+        }
+    }
+}
+
 /// The Verilog expression of a word register read with its modifiers (`regs$r$q`, sign
 /// cleared, or doubled: one more in the exponent field unless it is 0 or all ones).
 pub(crate) fn read_verilog(r: &crate::fold::plan::Read, w: usize, e: usize, f: usize) -> String {
@@ -168,7 +209,7 @@ macro_rules! tcheck_fold {
                 // the counter starts with the first pair (`run`), then runs freely
                 run: DFF<Bit>,
                 counter: DFF<Bits<8>>,
-                regs: Vec<DFF<Bits<$W>>>,
+                regs: Vec<$crate::rtl::tcheck_fold::KeptDff<Bits<$W>>>,
                 exact: Vec<DFF<Bit>>,
                 valid: Vec<DFF<Bit>>,
                 tags: Vec<DFF<Bits<32>>>,
@@ -197,7 +238,7 @@ macro_rules! tcheck_fold {
                 $crate::rtl::tcheck::tcheck_new! { Self {
                     run: Default::default(),
                     counter: Default::default(),
-                    regs: (0..plan.word_regs()).map(|_| Default::default()).collect(),
+                    regs: (0..plan.word_regs()).map(|_| $crate::rtl::tcheck_fold::KeptDff::new(plan.binding == $crate::fold::plan::Binding::PerReader)).collect(),
                     exact: (0..plan.exact.len).map(|_| Default::default()).collect(),
                     valid: (0..plan.valid.len).map(|_| Default::default()).collect(),
                     tags: (0..plan.tag.len).map(|_| Default::default()).collect(),
@@ -477,7 +518,7 @@ macro_rules! tcheck_fold {
 
         /// Verilog of the folded T.CHECK (top module `top`).
         pub fn verilog_tcheck_fold(ii: usize, rounding: Rounding) -> String {
-            let plan = $crate::fold::tcheck_plan(ii).expect("T.CHECK schedules at every II >= 1");
+            let plan = $crate::fold::tcheck_plan(ii, $crate::fold::plan::Binding::Shared).expect("T.CHECK schedules at every II >= 1");
             generate_verilog(&tcheck_fold_top(plan, rounding))
         }
     };

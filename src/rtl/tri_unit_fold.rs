@@ -266,7 +266,7 @@ macro_rules! tri_unit_fold {
         /// Verilog of the TRI_UNIT folded for a pair every `ii` clocks (top module `top`); Err
         /// for an `ii` it cannot be folded to ([`crate::fold::tri_unit_plan`]).
         pub fn verilog_tri_unit_fold(ii: usize, rounding: Rounding) -> Result<String, String> {
-            Ok(generate_verilog(&tri_unit_fold_top($crate::fold::tri_unit_plan(ii)?, rounding)))
+            Ok(generate_verilog(&tri_unit_fold_top($crate::fold::tri_unit_plan(ii, $crate::fold::plan::Binding::Shared)?, rounding)))
         }
     };
 }
