@@ -175,17 +175,17 @@ impl Plan {
 mod tests {
     /// At every II of issue 33 the plan reads only registers that exist, issues at most one
     /// operation per unit and counter value (a table of ii entries), and prints its size
-    /// (docs/ARCHITECTURE.md, "Folded T.CHECK", has the table).
+    /// (docs/ARCHITECTURE.md, "Folded T.CHECK", has the table), under either binding.
     #[test]
     fn tcheck_plans() {
-        for ii in [1, 2, 4, 8, 16, 32] {
-            let p = crate::fold::tcheck_plan(ii, super::Binding::Shared).unwrap();
+        for (ii, binding) in [1, 2, 4, 8, 16, 32].into_iter().flat_map(|ii| [(ii, super::Binding::Shared), (ii, super::Binding::PerReader)]) {
+            let p = crate::fold::tcheck_plan(ii, binding).unwrap();
             let n = p.word_regs();
             let reads = p.issues.iter().flatten().flatten().flatten().flat_map(|i| [Some(i.a), i.b]).flatten();
             assert!(reads.map(|r| r.reg).chain(p.outputs.all()).all(|r| r < n), "II {ii}");
             assert!(p.issues.iter().flatten().all(|slots| slots.len() == ii));
             assert!([p.exact, p.valid, p.tag].iter().all(|c| c.slot < ii) && p.words.iter().all(|c| c.slot < ii && c.len > 0));
-            eprintln!("II {ii}: units {:?}, latency {}, word registers {n}", p.units, p.latency);
+            eprintln!("II {ii} {binding:?}: units {:?}, latency {}, word registers {n}", p.units, p.latency);
         }
     }
 }
