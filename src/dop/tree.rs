@@ -167,6 +167,16 @@ impl DopTree {
         }
     }
 
+    /// [`prefetch`](super::prefetch) of what [`DopTree::dop`] reads of node `n` (an inner
+    /// node's row, a leaf's triangle).
+    #[inline]
+    pub fn prefetch(&self, n: u32) {
+        match self.links[n as usize] {
+            l if l & LEAF != 0 => super::prefetch(&self.tris[(l & !LEAF) as usize]),
+            j => self.dops.prefetch(j as usize * self.k),
+        }
+    }
+
     /// Node `n`.
     #[inline]
     pub fn node(&self, n: u32) -> Node {

@@ -51,6 +51,15 @@ impl Values {
         }
     }
 
+    /// [`prefetch`](super::prefetch) of values `at..`.
+    #[inline]
+    pub fn prefetch(&self, at: usize) {
+        match self {
+            Values::F32(v) => super::prefetch(v.as_ptr().wrapping_add(at)),
+            Values::F64(v) => super::prefetch(v.as_ptr().wrapping_add(at)),
+        }
+    }
+
     /// Replaces value `i` by `x`, a value of the format.
     pub fn set(&mut self, i: usize, x: f64) {
         match self {

@@ -112,6 +112,25 @@ impl<'a> TransformCache<'a> {
         overlap
     }
 
+    /// [`prefetch`](crate::dop::prefetch) of what a test of A's node `na` reads first: its
+    /// DOP, unless held.
+    #[inline]
+    pub fn prefetch_a(&self, na: u32) {
+        if !self.held.holds(na) {
+            self.trees[0].prefetch(na);
+        }
+    }
+
+    /// [`prefetch`](crate::dop::prefetch) of what a test of B's node `nb` reads first: its
+    /// rows or, before its first test, its DOP.
+    #[inline]
+    pub fn prefetch_b(&self, nb: u32) {
+        match self.rows.slot[nb as usize] {
+            u32::MAX => self.trees[1].prefetch(nb),
+            b => crate::dop::prefetch(self.rows.bounds.as_ptr().wrapping_add(b as usize * 2 * self.k)),
+        }
+    }
+
     /// Computes pending mirror pairs until a lane is surely separated (true), or all are.
     fn lazy_separated(&mut self, nb: u32, e: &[f64]) -> bool {
         let (h, q, est) = (self.k / 2, self.q, self.estimator());

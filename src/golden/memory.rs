@@ -276,6 +276,12 @@ impl<T: Copy + Default> Held<T> {
         &self.values[i]
     }
 
+    /// Whether the value of `n` is held.
+    #[inline]
+    pub fn holds(&self, n: u32) -> bool {
+        self.tags.get(n as usize % HELD_LINES) == Some(&((self.generation as u64) << 32 | n as u64))
+    }
+
     /// The lines, every one emptied (for the next query).
     pub fn emptied(mut self) -> Held<T> {
         self.generation = self.generation.wrapping_add(1);
@@ -365,8 +371,11 @@ impl NodeCache {
                 return true;
             }
         };
-        self.tags[from..].rotate_left(1);
-        *self.tags.last_mut().expect("a full or hit cache has lines") = r;
+        let last = self.tags.len() - 1;
+        for i in from..last {
+            self.tags[i] = self.tags[i + 1];
+        }
+        self.tags[last] = r;
         hit.is_none()
     }
 

@@ -227,42 +227,74 @@ pub fn decide(cert: &Certificate, up: &Upper, s1: &Stage1Hi, tri: &TriWord) -> O
 
 /// [`decide`]'s stages 3-5 on the vertices in f64: per edge, a, b, r_z and s in f64 and an
 /// enclosure of each one's bound plus its gap (the same expression tree as the chip's bound,
-/// on the widened vertex bounds).
+/// on the widened vertex bounds). An edge's signs are taken in the order r_z, a, b, s and
+/// the rest skipped once both directions' conjunctions are surely false (docs/ACCURACY.md,
+/// "Deciding T.CHECK in f64": a sign not taken is an unknown one).
 fn edges_hi(cert: &Certificate, up: &Upper, v: &[VertexHi; 3], sz: [Option<bool>; 3]) -> Option<bool> {
-    let up_signs = [false, true, true, true, true, false];
-    let down_signs = [true, false, false, false, false, true];
     let mut verdict = Some(false);
     for e in 0..3 {
         let (p, q) = (&v[e], &v[(e + 1) % 3]);
-        let (sp, sq) = (sz[e], sz[(e + 1) % 3]);
-        if sp.is_some() && sp == sq {
+        let mut edge = Conjunctions::default();
+        if !(edge.take(sz[e], false) & edge.take(sz[(e + 1) % 3], true)) {
             continue;
         }
+        let rz = q.c[2] - p.c[2];
+        let rz_bound = up.add(q.rz, p.rz);
         let cross = |i: usize| {
             let x = p.c[i] * q.c[2] - q.c[i] * p.c[2];
             let pq = up.add(up.mul(p.ep[i], q.h), up.mul(p.abs[i], q.g));
             let qp = up.add(up.mul(q.ep[i], p.h), up.mul(q.abs[i], p.g));
-            (x, up.add(up.add(pq, qp), up.gap_abs()))
+            let bound = up.add(up.add(pq, qp), up.gap_abs());
+            up.fits(bound).then_some((x, bound))
         };
-        let (a, a_bound) = cross(0);
-        let (b, b_bound) = cross(1);
-        let rz = q.c[2] - p.c[2];
-        let rz_bound = up.add(q.rz, p.rz);
+        if !edge.take(sign(rz, rz_bound), true) {
+            continue;
+        }
+        let (a, a_bound) = cross(0)?;
+        if !edge.take(sign(a, a_bound), true) {
+            continue;
+        }
+        let (b, b_bound) = cross(1)?;
+        if !edge.take(sign(b, b_bound), true) {
+            continue;
+        }
         let s = (a + b) - rz;
         let s_sum = up.add(up.add(up.add(a.abs(), a_bound), up.add(b.abs(), b_bound)), up.add(rz.abs(), rz_bound));
         let s_round = up.add(up.scale(s_sum, cert.c_s), up.mul(s_sum, up.round_rel()));
         let s_bound = up.add(up.add(a_bound, b_bound), up.add(rz_bound, s_round));
-        if !(up.fits(a_bound) & up.fits(b_bound) & up.fits(s_bound)) {
+        if !up.fits(s_bound) {
             return None;
         }
-        let signs = [sp, sq, sign(rz, rz_bound), sign(a, a_bound), sign(b, b_bound), sign(s, s_bound)];
-        let holds = |want: [bool; 6]| and3(signs.iter().zip(want).map(|(s, w)| s.map(|s| s == w)));
-        verdict = or3([verdict, holds(up_signs), holds(down_signs)].into_iter());
+        edge.take(sign(s, s_bound), false);
+        verdict = or3([verdict, edge.up, edge.down].into_iter());
         if verdict == Some(true) {
             break;
         }
     }
     verdict
+}
+
+/// An edge's two conjunctions (stage 5) in Kleene logic over the signs taken so far: P
+/// below and Q above (`up`), the mirror (`down`).
+struct Conjunctions {
+    up: Option<bool>,
+    down: Option<bool>,
+}
+
+impl Default for Conjunctions {
+    fn default() -> Self {
+        Conjunctions { up: Some(true), down: Some(true) }
+    }
+}
+
+impl Conjunctions {
+    /// Takes a sign that `up` wants `want_up` and `down` the opposite; false once both
+    /// conjunctions are surely false (the edge surely misses, whatever the other signs).
+    fn take(&mut self, sign: Option<bool>, want_up: bool) -> bool {
+        let and = |acc: Option<bool>, want: bool| and3([acc, sign.map(|s| s == want)].into_iter());
+        (self.up, self.down) = (and(self.up, want_up), and(self.down, !want_up));
+        (self.up, self.down) != (Some(false), Some(false))
+    }
 }
 
 /// Every intermediate of one T.CHECK that the RTL shows, for bit-exact comparison.

@@ -15,7 +15,7 @@ pub mod list;
 pub mod recursive;
 
 use crate::chip::config::ChipConfig;
-use crate::chip::layout::Layout;
+use crate::chip::layout::{Layout, Pair};
 use crate::chip::reg::{Mode, Order};
 use crate::dop::tree::Tri;
 use crate::dop::Node;
@@ -182,6 +182,15 @@ impl<'a> Engine<'a> {
         }
     }
 
+    /// Prefetches the DOP unit's reads for the child pairs of the overlapping pair `p` of
+    /// nodes `na`, `nb` (software only: they are tested soon).
+    fn prefetch_children(&self, p: Pair, na: Node, nb: Node) {
+        let kids = |n: Node, own: u32| if let Node::Inner(c) = n { c } else { [own; 2] };
+        let (ca, cb) = (kids(na, p.a), kids(nb, p.b));
+        ca.into_iter().for_each(|a| self.dop_unit.prefetch_a(a));
+        cb.into_iter().for_each(|b| self.dop_unit.prefetch_b(b));
+    }
+
     /// Bookkeeping of waiting pairs (queue, stack or lists).
     fn queue_add(&mut self, n: u64) {
         self.live += n;
@@ -269,6 +278,7 @@ fn run_d_cntr(e: &mut Engine, order: Order) {
             }
             let n = q.push_children(p, na, nb);
             e.queue_add(2 * n as u64);
+            e.prefetch_children(p, na, nb);
         }
     }
 }
