@@ -371,11 +371,8 @@ impl NodeCache {
                 return true;
             }
         };
-        let last = self.tags.len() - 1;
-        for i in from..last {
-            self.tags[i] = self.tags[i + 1];
-        }
-        self.tags[last] = r;
+        self.tags[from..].rotate_left(1);
+        *self.tags.last_mut().expect("a full or hit cache has lines") = r;
         hit.is_none()
     }
 
