@@ -7,22 +7,32 @@
 # Usage: scripts/fpga.sh rtl/<unit>.v ...    (needs `apt-get install -y yosys nextpnr-ice40`)
 # Logs and reports in target/fpga/<unit>/. Exits non-zero if a tool fails on a unit that fits.
 #
-# scripts/fpga.sh --ecp5 [--timeout SECONDS] rtl/<unit>.v ...
-#   A Lattice LFE5U-85F instead (a whole chip fits: README, "On an FPGA"): the ECP5 flow of
+# scripts/fpga.sh --ecp5 [--timeout SECONDS] [--placer P] [--no-tmdriv] rtl/<unit>.v ...
+#   A Lattice LFE5U-85F instead (a whole chip fits: README, "FPGA"): the ECP5 flow of
 #   scripts/timing-ecp5.sh (YoWASP Yosys, flat synth_ecp5; nextpnr-ecp5 out of context,
 #   router2), its row into docs/figures/timing_ecp5.csv, and one line per unit: LUT4s,
 #   flip-flops, MULT18X18D, DP16KD block RAMs and Fmax. Default timeout 14400 s per tool
-#   (a whole k = 6 chip: about 8 minutes of Yosys and an hour or more of nextpnr here).
+#   (the k = 6 chip on both folded units: about 5 minutes of Yosys and 15-30 of nextpnr
+#   here). Default placer: static (nextpnr's electrostatic placer; heap, timing-ecp5.sh's
+#   default for single units, left the whole chip unroutable); --no-tmdriv places without
+#   timing.
 set -euo pipefail
 SCRIPTS=$(cd "$(dirname "$0")" && pwd)
 ROOT=$(cd "$SCRIPTS/.." && pwd)
 PY=${PYTHON:-python3}
 if [ "${1:-}" = --ecp5 ]; then
-  shift; timeout=14400
-  [ "${1:-}" = --timeout ] && { timeout=$2; shift 2; }
+  shift; timeout=14400; place=(--placer static)
+  while [ $# -gt 0 ]; do
+    case $1 in
+      --timeout) timeout=$2; shift 2 ;;
+      --placer) place[1]=$2; shift 2 ;;
+      --no-tmdriv) place+=(--no-tmdriv); shift ;;
+      *) break ;;
+    esac
+  done
   [ $# -gt 0 ] || { sed -n '2,/^set/p' "$0" | sed '$d' | sed 's/^# \{0,1\}//' >&2; exit 2; }
   units=$(for f in "$@"; do basename "$f" .v; done | tr '\n' ' ')
-  rc=0; "$SCRIPTS/timing-ecp5.sh" --units "$units" --timeout "$timeout" || rc=$?
+  rc=0; "$SCRIPTS/timing-ecp5.sh" --units "$units" --timeout "$timeout" "${place[@]}" || rc=$?
   "$PY" - "$ROOT/docs/figures/timing_ecp5.csv" $units <<'PYEOF'
 import csv, sys
 rows = {r["unit"]: r for r in csv.DictReader(open(sys.argv[1]))}
@@ -32,7 +42,7 @@ for u in sys.argv[2:]:
         print(f"{u}: {r['status'] if r else 'no row'} (see target/timing-ecp5/{u}/)")
         continue
     print(f"{u}: LFE5U-85F: LUT4 {r['luts']}/83640, FF {r['ffs']}/83640, MULT18X18D {r['dsps']}/156, "
-          f"DP16KD {r['ebrs'] or '?'}/208, Fmax {r['fmax_mhz']} MHz ({r['period_ns']} ns)")
+          f"DP16KD {r['ebrs'] or '?'}/208, Fmax {r['fmax_mhz']} MHz ({r['period_ns']} ns), placer {r['placer']}")
 PYEOF
   exit $rc
 fi
