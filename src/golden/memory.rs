@@ -264,7 +264,7 @@ impl<T: Copy + Default> Held<T> {
     /// value).
     #[inline]
     pub fn get_in(&mut self, n: u32, make: impl FnOnce(&mut T)) -> &T {
-        let (i, tag) = (n as usize % HELD_LINES, (self.generation as u64) << 32 | n as u64);
+        let (i, tag) = self.line(n);
         if self.values.is_empty() {
             self.values = vec![T::default(); HELD_LINES];
             self.tags = vec![u64::MAX; HELD_LINES];
@@ -279,7 +279,14 @@ impl<T: Copy + Default> Held<T> {
     /// Whether the value of `n` is held.
     #[inline]
     pub fn holds(&self, n: u32) -> bool {
-        self.tags.get(n as usize % HELD_LINES) == Some(&((self.generation as u64) << 32 | n as u64))
+        let (i, tag) = self.line(n);
+        self.tags.get(i) == Some(&tag)
+    }
+
+    /// The line of `n` and the tag it holds while `n`'s value is there.
+    #[inline]
+    fn line(&self, n: u32) -> (usize, u64) {
+        (n as usize % HELD_LINES, (self.generation as u64) << 32 | n as u64)
     }
 
     /// The lines, every one emptied (for the next query).
