@@ -7,7 +7,7 @@
 
 use crate::chip::layout::{Entry, ENTRY_MASK};
 use crate::chip::reg::Order;
-use std::collections::VecDeque;
+use super::ring::Ring;
 
 /// The queue's inputs in one clock cycle (the RTL's ports; `T` the entry: the RTL's
 /// 67-bit word, or an [`Entry`]).
@@ -70,7 +70,7 @@ impl QueueEntry for Entry {
 pub struct QueueModel<T = u128> {
     cap: usize,
     order: Order,
-    q: VecDeque<T>,
+    q: Ring<T>,
     max_count: u32,
     overflow: bool,
 }
@@ -85,7 +85,7 @@ impl<T: QueueEntry> QueueModel<T> {
     /// A queue of `cap` entries (at least 1).
     pub fn with_capacity(cap: usize) -> Self {
         assert!(cap >= 1, "a queue of no entries");
-        QueueModel { cap, order: Order::Fifo, q: VecDeque::new(), max_count: 0, overflow: false }
+        QueueModel { cap, order: Order::Fifo, q: Ring::default(), max_count: 0, overflow: false }
     }
 
     /// Entries it holds when full.

@@ -7,7 +7,7 @@
 //! Only the occupied stages are stored, so an idle pipeline costs nothing per clock (a
 //! self-stalling pipe in the manner of gem5's minor CPU buffers).
 
-use std::collections::VecDeque;
+use super::ring::Ring;
 
 /// Clocks from a write into the RTL's synchronous FIFO to the entry at its head.
 
@@ -16,10 +16,10 @@ pub struct Delay<T> {
     latency: u64,
     cap: usize,
     /// `(first cycle at the output, value)`, oldest first.
-    items: VecDeque<(u64, T)>,
+    items: Ring<(u64, T)>,
 }
 
-impl<T> Delay<T> {
+impl<T: Copy> Delay<T> {
     /// A pipeline of `latency` clocks holding any number of values.
     pub fn new(latency: u32) -> Self {
         Self::with_capacity(latency, usize::MAX)
@@ -28,7 +28,7 @@ impl<T> Delay<T> {
     /// At most `cap` values at once (a FIFO's entries).
     pub fn with_capacity(latency: u32, cap: usize) -> Self {
         assert!(latency >= 1, "a pipeline has at least one register");
-        Delay { latency: latency as u64, cap, items: VecDeque::new() }
+        Delay { latency: latency as u64, cap, items: Ring::default() }
     }
 
     /// Enters `v` at edge `now`. Panics if full: the chip's credits must prevent that (an

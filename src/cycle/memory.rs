@@ -4,7 +4,7 @@
 //! Verilog) `scripts/verilog/chip_tb.v`.
 
 use crate::chip::memory::{Ddr, MemTiming, Memory};
-use std::collections::VecDeque;
+use super::ring::Ring;
 
 /// What the memory did during a query.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize)]
@@ -41,7 +41,7 @@ pub struct MemModel {
     beats: u64,
     ddr: Option<DdrState>,
     /// `(cycle of the response, word address)` in request order.
-    pending: VecDeque<(u64, u32)>,
+    pending: Ring<(u64, u32)>,
     next_accept: u64,
     pub counters: MemCounters,
 }
@@ -65,7 +65,7 @@ impl MemModel {
                 (MemTiming::default(), 1, Some(state))
             }
         };
-        MemModel { timing, beats, ddr, pending: VecDeque::new(), next_accept: 0, counters: MemCounters::default() }
+        MemModel { timing, beats, ddr, pending: Ring::default(), next_accept: 0, counters: MemCounters::default() }
     }
 
     /// `mem_req_ready` in cycle `cyc`.

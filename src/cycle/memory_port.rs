@@ -3,7 +3,7 @@
 
 use crate::chip::layout::Dst;
 use crate::chip::params::Params;
-use std::collections::VecDeque;
+use super::ring::Ring;
 
 /// The chip's memory port: up to `max` requests outstanding, at most one per triangle
 /// destination (a response replaces its held word; node words queue for their pairs),
@@ -12,13 +12,13 @@ use std::collections::VecDeque;
 pub struct MemPort {
     max: usize,
     /// `(destination, id)` of the requests outstanding, oldest first.
-    outstanding: VecDeque<(Dst, u32)>,
+    outstanding: Ring<(Dst, u32)>,
 }
 
 impl MemPort {
     pub fn new(max: u32) -> Self {
         assert!((1..=Params::MAX_OUTSTANDING).contains(&max), "1 to {} requests outstanding", Params::MAX_OUTSTANDING);
-        MemPort { max: max as usize, outstanding: VecDeque::new() }
+        MemPort { max: max as usize, outstanding: Ring::default() }
     }
 
 

@@ -14,6 +14,7 @@
 //! | [`memory_port`] | the memory port: requests outstanding, where responses go |
 //! | [`memory`] | the memory models (ideal, DDR SDRAM) |
 //! | [`delay`] | a fixed-latency pipeline, and the RTL's synchronous FIFO as one |
+//! | [`ring`] | the queues' buffer (a power-of-two ring) |
 //! | [`drive`] | one driver for every level: host, memory model, result reader, lockstep |
 //! | [`wscg03`] | WSCG'03's chip: Stack Engine, DOP Unit, Triangle Unit, Memory Controller |
 //!
@@ -27,6 +28,7 @@ pub mod dop_unit;
 pub mod drive;
 pub mod memory;
 pub mod memory_port;
+pub mod ring;
 pub mod tri_unit;
 pub mod wscg03;
 
@@ -72,9 +74,9 @@ pub fn run_query(
     let writes = chip.control_writes(order, mode, &p);
     let Record { vcd, probes: mut observer, .. } = rec;
     let trace = if vcd.is_none() && observer.is_none() {
-        let mut skip = |c: &mut chip::Chip, i: &ChipIn, max: u64| match c.quiet_until(i) {
+        let mut skip = |c: &mut chip::Chip, i: &ChipIn, most: &dyn Fn() -> u64| match c.quiet_until(i) {
             Some(t) => {
-                let n = t.saturating_sub(c.now()).min(max);
+                let n = t.saturating_sub(c.now()).min(most());
                 c.skip(n, t, i);
                 n
             }
