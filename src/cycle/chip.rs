@@ -9,6 +9,7 @@ use super::d_cntr::{QueueIn, QueueModel, QueueOut};
 use super::delay::Delay;
 use super::dop_unit::DopUnit;
 use super::memory_port::MemPort;
+use super::ring::Ring;
 use super::tri_unit::{TriOut, TriUnit};
 use crate::chip::config::ChipConfig;
 use crate::chip::layout::{Dst, Entry, Pair, RecordMap};
@@ -22,7 +23,6 @@ use crate::golden::host::HostSetup;
 use crate::golden::memory::{NodeCache, ObjectImage, TriCache};
 use crate::golden::{dop_unit, tri_unit};
 use serde::Serialize;
-use super::ring::Ring;
 
 /// Where the clocks of a running query went, one cause per cycle for the DOP unit's
 /// input, plus the other units' occupancy.

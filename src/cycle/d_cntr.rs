@@ -5,9 +5,9 @@
 //!
 //! The entry and its word are [`chip::layout`](crate::chip::layout)'s.
 
+use super::ring::Ring;
 use crate::chip::layout::{Entry, ENTRY_MASK};
 use crate::chip::reg::Order;
-use super::ring::Ring;
 
 /// The queue's inputs in one clock cycle (the RTL's ports; `T` the entry: the RTL's
 /// 67-bit word, or an [`Entry`]).
