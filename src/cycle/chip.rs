@@ -9,7 +9,7 @@ use super::d_cntr::{QueueIn, QueueModel, QueueOut};
 use super::delay::Delay;
 use super::dop_unit::DopUnit;
 use super::memory_port::MemPort;
-use super::ring::Ring;
+use std::collections::VecDeque;
 use super::tri_unit::{TriOut, TriUnit};
 use crate::chip::config::ChipConfig;
 use crate::chip::layout::{Dst, Entry, Pair, RecordMap};
@@ -87,21 +87,21 @@ pub struct Chip<'a> {
     q: QueueOut<Entry>,
     /// The pairs popped from the queue and not yet issued, oldest (the DOP unit's input)
     /// first: the RTL's pair buffer.
-    ahead: Ring<Ahead>,
+    ahead: VecDeque<Ahead>,
     /// The node records held, A's and B's, as the pairs put into `ahead` left them.
     held_nodes: [NodeCache; 2],
     /// Node records of `ahead`'s pairs not yet requested, in order: destination, record, pair.
-    to_ask: Ring<(Dst, u32, u64)>,
+    to_ask: VecDeque<(Dst, u32, u64)>,
     /// Node records arrived and not yet used, in order (the RTL's two node-word FIFOs, A's and
     /// B's: a pair's words are at their heads when they are at this queue's).
-    words: Ring<u32>,
+    words: VecDeque<u32>,
     /// Pairs put into `ahead` since start (each pair's number).
     seq: u64,
     /// The first cycle the issue spacing lets a pair issue.
     next_issue: u64,
     /// Child entries not yet pushed (the RTL's `pend`: one at most; none at issue spacing
     /// 1, where the queue takes two entries a clock).
-    pend: Ring<Entry>,
+    pend: VecDeque<Entry>,
     // ---- triangle words held (A's in the triangle cache, B's: one line) and the memory port
     held: [TriCache; 2],
     port: MemPort,
@@ -201,13 +201,13 @@ impl<'a> Chip<'a> {
             stop: false,
             q: queue.outputs(),
             queue,
-            ahead: Ring::default(),
+            ahead: VecDeque::new(),
             held_nodes: [NodeCache::new(cfg.node_cache), NodeCache::new(cfg.node_cache)],
-            to_ask: Ring::default(),
-            words: Ring::default(),
+            to_ask: VecDeque::new(),
+            words: VecDeque::new(),
             seq: 0,
             next_issue: 0,
-            pend: Ring::default(),
+            pend: VecDeque::new(),
             held: [TriCache::new(cfg.tri_cache), TriCache::new(1)],
             port: MemPort::new(p.outstanding),
             dop: DopUnit::new(a, b, dop_values, &p, cfg.k)?,

@@ -5,7 +5,7 @@
 //!
 //! The entry and its word are [`chip::layout`](crate::chip::layout)'s.
 
-use super::ring::Ring;
+use std::collections::VecDeque;
 use crate::chip::layout::{Entry, ENTRY_MASK};
 use crate::chip::reg::Order;
 
@@ -70,7 +70,7 @@ impl QueueEntry for Entry {
 pub struct QueueModel<T = u128> {
     cap: usize,
     order: Order,
-    q: Ring<T>,
+    q: VecDeque<T>,
     max_count: u32,
     overflow: bool,
 }
@@ -85,7 +85,7 @@ impl<T: QueueEntry> QueueModel<T> {
     /// A queue of `cap` entries (at least 1).
     pub fn with_capacity(cap: usize) -> Self {
         assert!(cap >= 1, "a queue of no entries");
-        QueueModel { cap, order: Order::Fifo, q: Ring::default(), max_count: 0, overflow: false }
+        QueueModel { cap, order: Order::Fifo, q: VecDeque::new(), max_count: 0, overflow: false }
     }
 
     /// Entries it holds when full.

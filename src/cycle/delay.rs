@@ -7,19 +7,17 @@
 //! Only the occupied stages are stored, so an idle pipeline costs nothing per clock (a
 //! self-stalling pipe in the manner of gem5's minor CPU buffers).
 
-use super::ring::Ring;
-
-/// Clocks from a write into the RTL's synchronous FIFO to the entry at its head.
+use std::collections::VecDeque;
 
 #[derive(Clone, Debug)]
 pub struct Delay<T> {
     latency: u64,
     cap: usize,
     /// `(first cycle at the output, value)`, oldest first.
-    items: Ring<(u64, T)>,
+    items: VecDeque<(u64, T)>,
 }
 
-impl<T: Copy> Delay<T> {
+impl<T> Delay<T> {
     /// A pipeline of `latency` clocks holding any number of values.
     pub fn new(latency: u32) -> Self {
         Self::with_capacity(latency, usize::MAX)
@@ -28,7 +26,7 @@ impl<T: Copy> Delay<T> {
     /// At most `cap` values at once (a FIFO's entries).
     pub fn with_capacity(latency: u32, cap: usize) -> Self {
         assert!(latency >= 1, "a pipeline has at least one register");
-        Delay { latency: latency as u64, cap, items: Ring::default() }
+        Delay { latency: latency as u64, cap, items: VecDeque::new() }
     }
 
     /// Enters `v` at edge `now`. Panics if full: the chip's credits must prevent that (an

@@ -3,7 +3,7 @@
 //! memory for every level: the cycle model, the rust-hdl driver and (the same rules in
 //! Verilog) `scripts/verilog/chip_tb.v`.
 
-use super::ring::Ring;
+use std::collections::VecDeque;
 use crate::chip::memory::{Ddr, MemTiming, Memory};
 
 /// What the memory did during a query.
@@ -41,7 +41,7 @@ pub struct MemModel {
     beats: u64,
     ddr: Option<DdrState>,
     /// `(cycle of the response, word address)` in request order.
-    pending: Ring<(u64, u32)>,
+    pending: VecDeque<(u64, u32)>,
     next_accept: u64,
     pub counters: MemCounters,
 }
@@ -65,7 +65,7 @@ impl MemModel {
                 (MemTiming::default(), 1, Some(state))
             }
         };
-        MemModel { timing, beats, ddr, pending: Ring::default(), next_accept: 0, counters: MemCounters::default() }
+        MemModel { timing, beats, ddr, pending: VecDeque::new(), next_accept: 0, counters: MemCounters::default() }
     }
 
     /// `mem_req_ready` in cycle `cyc`.

@@ -1,7 +1,7 @@
 //! The chip's memory port in the cycle model: the requests outstanding and where each
 //! response goes ([`rtl::memory_port`](crate::rtl) builds the same port in RTL).
 
-use super::ring::Ring;
+use std::collections::VecDeque;
 use crate::chip::layout::Dst;
 use crate::chip::params::Params;
 
@@ -12,13 +12,13 @@ use crate::chip::params::Params;
 pub struct MemPort {
     max: usize,
     /// `(destination, id)` of the requests outstanding, oldest first.
-    outstanding: Ring<(Dst, u32)>,
+    outstanding: VecDeque<(Dst, u32)>,
 }
 
 impl MemPort {
     pub fn new(max: u32) -> Self {
         assert!((1..=Params::MAX_OUTSTANDING).contains(&max), "1 to {} requests outstanding", Params::MAX_OUTSTANDING);
-        MemPort { max: max as usize, outstanding: Ring::default() }
+        MemPort { max: max as usize, outstanding: VecDeque::new() }
     }
 
 

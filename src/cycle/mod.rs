@@ -14,7 +14,6 @@
 //! | [`memory_port`] | the memory port: requests outstanding, where responses go |
 //! | [`memory`] | the memory models (ideal, DDR SDRAM) |
 //! | [`delay`] | a fixed-latency pipeline, and the RTL's synchronous FIFO as one |
-//! | [`ring`] | the queues' buffer (a power-of-two ring) |
 //! | [`drive`] | one driver for every level: host, memory model, result reader, lockstep |
 //! | [`wscg03`] | WSCG'03's chip: Stack Engine, DOP Unit, Triangle Unit, Memory Controller |
 //!
@@ -28,7 +27,6 @@ pub mod dop_unit;
 pub mod drive;
 pub mod memory;
 pub mod memory_port;
-pub mod ring;
 pub mod tri_unit;
 pub mod wscg03;
 
