@@ -7,8 +7,9 @@
 
 use super::d_cntr::{QueueIn, QueueModel, QueueOut};
 use super::delay::Delay;
-use super::dop_unit::{DopResult, DopUnit};
+use super::dop_unit::DopUnit;
 use super::memory_port::MemPort;
+use std::collections::VecDeque;
 use super::tri_unit::{TriOut, TriUnit};
 use crate::chip::config::ChipConfig;
 use crate::chip::layout::{Dst, Entry, Pair, RecordMap};
@@ -22,7 +23,6 @@ use crate::golden::host::HostSetup;
 use crate::golden::memory::{NodeCache, ObjectImage, TriCache};
 use crate::golden::{dop_unit, tri_unit};
 use serde::Serialize;
-use std::collections::VecDeque;
 
 /// Where the clocks of a running query went, one cause per cycle for the DOP unit's
 /// input, plus the other units' occupancy.
@@ -97,7 +97,8 @@ pub struct Chip<'a> {
     words: VecDeque<u32>,
     /// Pairs put into `ahead` since start (each pair's number).
     seq: u64,
-    last_issue: Option<u64>,
+    /// The first cycle the issue spacing lets a pair issue.
+    next_issue: u64,
     /// Child entries not yet pushed (the RTL's `pend`: one at most; none at issue spacing
     /// 1, where the queue takes two entries a clock).
     pend: VecDeque<Entry>,
@@ -130,27 +131,26 @@ struct Ahead {
     fetch: [bool; 2],
 }
 
-/// The cycle's logic: functions of the registers and the inputs (of the inputs only
-/// `accept` and `give`).
+/// The cycle's logic as far as it depends on the registers alone ([`Chip::logic`]); the
+/// inputs add `accept` and `give` ([`accepts`](Self::accepts), [`gives`](Self::gives)).
+/// Flags, not copies of the values they point at (the pair at the DOP unit's input, the DOP
+/// result: read at the edge), so that the logic stays small to write and read every clock.
 #[derive(Clone, Copy, Default)]
 struct Comb {
     halt: bool,
-    cur: Option<Ahead>,
+    /// A pair waits at the DOP unit's input (`ahead`'s head).
+    cur: bool,
     need: [bool; 4],
     req: Option<(Dst, u32)>,
-    accept: bool,
     issue: bool,
-    dop_out: Option<DopResult>,
     leaf_in: Option<(u32, u32)>,
-    /// The DOP result has child entries ([`children`]: made at the edge, not kept here, so
-    /// that the cycle's logic stays small to copy).
+    /// The DOP result has child entries ([`children`], made at the edge).
     grows: bool,
     pop: bool,
     tri_in: bool,
     tri_take: bool,
     leaf_out: bool,
     out: Option<TriOut>,
-    give: bool,
     finish: bool,
     /// The chip acts in this cycle whatever its inputs (the part of
     /// [`quiet_until`](Chip::quiet_until)'s test that depends on the registers alone, made
@@ -206,7 +206,7 @@ impl<'a> Chip<'a> {
             to_ask: VecDeque::new(),
             words: VecDeque::new(),
             seq: 0,
-            last_issue: None,
+            next_issue: 0,
             pend: VecDeque::new(),
             held: [TriCache::new(cfg.tri_cache), TriCache::new(1)],
             port: MemPort::new(p.outstanding),
@@ -224,52 +224,47 @@ impl<'a> Chip<'a> {
         Ok(chip)
     }
 
-    /// The cycle's logic with the inputs `i`.
-    fn comb(&self, i: &ChipIn) -> Comb {
-        let mut c = self.logic;
-        (c.accept, c.give) = (c.accepts(i), c.gives(i));
-        c
-    }
-
-    /// The cycle's logic from the registers (`accept` and `give` low: [`comb`](Self::comb)
-    /// adds the inputs). Inlined so that `self.logic = self.logic()` writes the fields in
+    /// The cycle's logic from the registers (the inputs' part: [`Comb::accepts`],
+    /// [`Comb::gives`]). Inlined so that `self.logic = self.logic()` writes the fields in
     /// place: a copy of the returned value, read right after its bytes were written, stalls
     /// the store buffer (`perf annotate`: a sixth of `step`).
     #[inline(always)]
     fn logic(&self) -> Comb {
         let run = self.run;
         let halt = self.stop || self.q.overflow;
-        let cur = self.ahead.front().copied();
         let go = run && !halt;
+        let cur = self.ahead.front();
         // the pair at the DOP unit's input waits for its words: they come in request order,
         // its own first
         let [fa, fb] = cur.map_or([false; 2], |c| c.fetch);
         let tri_needs = go && self.leaf_valid;
         // the leaf pair's triangle records (looked up only while a leaf pair waits)
         let tri_recs = if tri_needs { [self.tri_records[0][self.leaf_tag.0 as usize], self.tri_records[1][self.leaf_tag.1 as usize]] } else { [0; 2] };
+        let words = self.words.len();
         let need = [
-            go && fa && self.words.is_empty(),
-            go && fb && self.words.len() < 1 + fa as usize,
+            go && fa && words == 0,
+            go && fb && words < 1 + fa as usize,
             tri_needs && !self.held[0].holds(tri_recs[0]),
             tri_needs && !self.held[1].holds(tri_recs[1]),
         ];
         // triangle words first, then the next node word in pair order: the current pair's
         // only at prefetch 0, any pair's in the buffer else
-        let tri_req = [(Dst::TriA, tri_recs[0]), (Dst::TriB, tri_recs[1])]
-            .into_iter()
-            .find(|&(d, _)| need[d as usize] && self.port.free(d));
-        let node_req = self
-            .to_ask
-            .front()
-            .filter(|w| go && (self.p.prefetch > 0 || cur.is_some_and(|c| c.seq == w.2)) && self.port.free(w.0))
-            .map(|w| (w.0, w.1));
-        let req = tri_req.or(node_req);
+        let req = if need[2] || need[3] {
+            [(Dst::TriA, tri_recs[0]), (Dst::TriB, tri_recs[1])].into_iter().find(|&(d, _)| need[d as usize] && self.port.free(d))
+        } else {
+            None
+        };
+        let req = req.or_else(|| {
+            let w = self.to_ask.front().filter(|_| go)?;
+            let mine = self.p.prefetch > 0 || cur.is_some_and(|c| c.seq == w.2);
+            (mine && self.port.free(w.0)).then_some((w.0, w.1))
+        });
+        let in_flight = self.dop.in_flight();
         // the issue spacing, and a folded DOP unit's `in_ready`
-        let spaced = self.last_issue.is_none_or(|t| self.now - t >= self.p.issue_spacing as u64) && self.dop.in_ready(self.now);
-        let credit = self.dop.in_flight() + self.leaf_fifo.len();
-        let issue = go && cur.is_some() && !need[0] && !need[1] && spaced && credit < self.p.credit as usize;
+        let spaced = self.now >= self.next_issue && self.dop.in_ready(self.now);
+        let issue = go && cur.is_some() && !need[0] && !need[1] && spaced && in_flight + self.leaf_fifo.len() < self.p.credit as usize;
         // a DOP result: child entries, or a leaf pair
-        let dop_out = self.dop.out(self.now).copied();
+        let dop_out = self.dop.out(self.now);
         let (mut leaf_in, mut grows) = (None, false);
         if let Some(r) = dop_out.filter(|r| r.overlap) {
             match (r.na, r.nb) {
@@ -288,13 +283,13 @@ impl<'a> Chip<'a> {
         let leaf_out =
             self.leaf_fifo.out(self.now).is_some() && (halt || (run && (!self.leaf_valid || tri_take)));
         let out = self.tri.out(self.now).copied();
-        let halt_idle = self.dop.in_flight() == 0
+        let halt_idle = in_flight == 0
             && self.pend.is_empty()
             && self.port.is_empty()
             && self.tri.open() == 0
             && !self.push_root
             && self.leaf_fifo.is_empty();
-        let all_idle = halt_idle && self.q.empty && self.ahead.is_empty() && !self.leaf_valid;
+        let all_idle = halt_idle && self.q.empty && cur.is_none() && !self.leaf_valid;
         let finish = run && (all_idle || (halt && halt_idle));
         let acts = !run
             || self.push_root
@@ -309,12 +304,10 @@ impl<'a> Chip<'a> {
             || (self.first && !self.stop && out.is_some_and(|o| o.sure_hit()));
         Comb {
             halt,
-            cur,
+            cur: cur.is_some(),
             need,
             req,
-            accept: false,
             issue,
-            dop_out,
             leaf_in,
             grows,
             pop,
@@ -322,7 +315,6 @@ impl<'a> Chip<'a> {
             tri_take,
             leaf_out,
             out,
-            give: false,
             finish,
             acts,
         }
@@ -353,10 +345,10 @@ impl<'a> Chip<'a> {
             &mut s.halted
         } else if c.issue {
             &mut s.issue
-        } else if c.cur.is_some() {
+        } else if c.cur {
             if c.need[0] || c.need[1] {
                 &mut s.stall_memory
-            } else if self.last_issue.is_some_and(|t| self.now - t < self.p.issue_spacing as u64) || !self.dop.in_ready(self.now) {
+            } else if self.now < self.next_issue || !self.dop.in_ready(self.now) {
                 &mut s.stall_spacing
             } else {
                 &mut s.stall_credit
@@ -373,7 +365,8 @@ impl<'a> Chip<'a> {
 
     fn probe(&self, c: &Comb, i: &ChipIn, push: bool) -> Vec<u64> {
         let b = |x: bool| x as u64;
-        let dop = c.dop_out;
+        let dop = self.dop.out(self.now).copied();
+        let cur = self.ahead.front();
         let res = c.out.filter(|o| o.kept());
         let leaf = |n: Option<Node>| b(matches!(n, Some(Node::Leaf(_))));
         let (req_addr, req_dst) = c.req.map_or((0, 0), |(d, id)| (self.addr(d, id) as u64, d as u64));
@@ -387,9 +380,9 @@ impl<'a> Chip<'a> {
             self.q.max_count as u64,
             b(push),
             b(c.pop),
-            b(c.cur.is_some()),
-            c.cur.map_or(0, |c| self.ids[0][c.pair.a as usize] as u64),
-            c.cur.map_or(0, |c| self.ids[1][c.pair.b as usize] as u64),
+            b(c.cur),
+            cur.map_or(0, |c| self.ids[0][c.pair.a as usize] as u64),
+            cur.map_or(0, |c| self.ids[1][c.pair.b as usize] as u64),
             b(c.need[0]),
             b(c.need[1]),
             b(c.issue),
@@ -450,10 +443,9 @@ impl<'a> Chip<'a> {
         if c.acts || i.start || i.host_we || i.mem_resp.is_some() || c.accepts(i) || c.gives(i) {
             return None;
         }
-        let spaced = self.last_issue.map(|t| t + self.p.issue_spacing as u64);
         let slot = self.tri.next_slot(self.now).filter(|_| c.tri_in);
-        let dop_slot = self.dop.next_slot(self.now).filter(|_| c.cur.is_some());
-        [self.dop.next_out(), self.leaf_fifo.next_out(), self.tri.next_out(), spaced, slot, dop_slot]
+        let dop_slot = self.dop.next_slot(self.now).filter(|_| c.cur);
+        [self.dop.next_out(), self.leaf_fifo.next_out(), self.tri.next_out(), Some(self.next_issue), slot, dop_slot]
             .into_iter()
             .flatten()
             .filter(|&t| t > self.now)
@@ -498,7 +490,8 @@ impl Clocked for Chip<'_> {
     }
 
     fn step(&mut self, i: &ChipIn, probe: bool) -> Option<Vec<u64>> {
-        let c = self.comb(i);
+        let c = self.logic;
+        let (accept, give) = (c.accepts(i), c.gives(i));
         let now = self.now;
         if self.run {
             self.tally(i, 1);
@@ -506,12 +499,12 @@ impl Clocked for Chip<'_> {
         // the queue's push: the root entry, else a pending child entry, else a new one
         // (FIFO pushes a result's first entry first, LIFO its second, so that the first
         // is popped first)
-        if let Some(r) = c.dop_out.filter(|_| c.grows) {
+        if c.grows {
+            let r = self.dop.out(now).expect("a growing result is out");
             let (ch, n) = children(r.pair, r.na, r.nb);
-            if self.order == Order::Lifo {
-                self.pend.extend(ch[..n].iter().rev());
-            } else {
-                self.pend.extend(&ch[..n]);
+            let lifo = self.order == Order::Lifo;
+            for k in 0..n {
+                self.pend.push_back(ch[if lifo { n - 1 - k } else { k }]);
             }
         }
         let push = if self.push_root {
@@ -538,15 +531,15 @@ impl Clocked for Chip<'_> {
             }
         }
         // ---- memory port
-        if let Some((d, id)) = c.req.filter(|_| c.accept) {
+        if let Some((d, id)) = c.req.filter(|_| accept) {
             self.port.accept(d, id);
             self.cnt[if d.is_tri() { 3 } else { 2 }] += 1;
+            if !d.is_tri() {
+                self.to_ask.pop_front();
+            }
             if let Some(s) = self.stats.as_mut().filter(|_| d == Dst::TriA) {
                 s.tri_fetches_a += 1;
             }
-        }
-        if c.req.is_some_and(|(d, _)| c.accept && !d.is_tri()) {
-            self.to_ask.pop_front();
         }
         if i.mem_resp.is_some() {
             match self.port.respond() {
@@ -556,11 +549,11 @@ impl Clocked for Chip<'_> {
             }
         }
         // ---- issue, DOP results
-        if let Some(cur) = c.cur.filter(|_| c.issue) {
+        if c.issue {
+            let cur = self.ahead.pop_front().expect("an issue has a pair");
             self.dop.issue(now, cur.pair);
             self.cnt[0] += 1;
-            self.last_issue = Some(now);
-            self.ahead.pop_front();
+            self.next_issue = now + self.p.issue_spacing as u64;
             for (k, id) in self.pair_records(cur.pair).into_iter().enumerate().filter(|&(k, _)| cur.fetch[k]) {
                 // the word queue is in pair order: the head's words are its own
                 let w = self.words.pop_front();
@@ -603,7 +596,7 @@ impl Clocked for Chip<'_> {
         if let Some(tag) = c.leaf_in {
             self.leaf_fifo.push(now, tag);
         }
-        if c.give {
+        if give {
             self.tri.give(now);
         }
         // ---- first hit, end of query, start
@@ -627,7 +620,7 @@ impl Clocked for Chip<'_> {
             self.held.iter_mut().for_each(TriCache::clear);
             self.cnt = [0; 4];
             self.stats = self.stats.map(|_| Stats::default());
-            self.last_issue = None;
+            self.next_issue = 0;
         }
         self.now += 1;
         self.logic = self.logic();

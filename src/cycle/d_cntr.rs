@@ -5,9 +5,9 @@
 //!
 //! The entry and its word are [`chip::layout`](crate::chip::layout)'s.
 
+use std::collections::VecDeque;
 use crate::chip::layout::{Entry, ENTRY_MASK};
 use crate::chip::reg::Order;
-use std::collections::VecDeque;
 
 /// The queue's inputs in one clock cycle (the RTL's ports; `T` the entry: the RTL's
 /// 67-bit word, or an [`Entry`]).

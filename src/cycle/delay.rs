@@ -9,8 +9,6 @@
 
 use std::collections::VecDeque;
 
-/// Clocks from a write into the RTL's synchronous FIFO to the entry at its head.
-
 #[derive(Clone, Debug)]
 pub struct Delay<T> {
     latency: u64,

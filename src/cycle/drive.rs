@@ -33,7 +33,11 @@ impl Reader {
 
     /// The first cycle from `cyc` on in which the host reads.
     pub fn next_ready(&self, cyc: u64) -> u64 {
-        cyc.next_multiple_of(self.period.max(1) as u64)
+        if self.period <= 1 {
+            cyc
+        } else {
+            cyc.next_multiple_of(self.period as u64)
+        }
     }
 }
 
@@ -145,15 +149,17 @@ pub struct Drive {
 /// until `done`, the memory model serving requests and the host reading results by
 /// `d.reader`. `observe(cycle, probes)` sees every cycle from 0 on with the [`PROBES`]
 /// values if `probe` is set (a VCD, a lockstep check). Without `probe`, stretches in which
-/// the cycle model only waits may be skipped in one step (`skip`: the model's
-/// [`quiet_until`](super::chip::Chip::quiet_until) and [`skip`](super::chip::Chip::skip)).
+/// the cycle model only waits may be skipped in one step (`skip(chip, inputs, most)`: the
+/// model's [`quiet_until`](super::chip::Chip::quiet_until) and
+/// [`skip`](super::chip::Chip::skip); `most()`, the clocks before the driver has something
+/// to do, asked only if the chip waits: most clocks it does not).
 pub fn run_query<C: Clocked>(
     chip: &mut C,
     writes: &[(u32, u32)],
     d: &Drive,
     probe: bool,
     mut observe: impl FnMut(u64, Option<Vec<u64>>) -> Result<(), String>,
-    mut skip: Option<&mut dyn FnMut(&mut C, &ChipIn, u64) -> u64>,
+    mut skip: Option<&mut dyn FnMut(&mut C, &ChipIn, &dyn Fn() -> u64) -> u64>,
 ) -> Result<ChipTrace, ChipError> {
     d.memory.check().map_err(ChipError)?;
     let idle = ChipIn { res_ready: true, ..Default::default() };
@@ -198,14 +204,17 @@ pub fn run_query<C: Clocked>(
         // a wait the model may skip: nothing to answer, request or read before `until`
         let read = out.res_valid && i.res_ready;
         if let Some(skip) = skip.as_deref_mut().filter(|_| !probe && i.mem_resp.is_none() && !read) {
-            let mut until = mem.next_response().unwrap_or(u64::MAX);
-            if out.mem_req_valid && !ready {
-                until = until.min(mem.next_ready());
-            }
-            if out.res_valid {
-                until = until.min(d.reader.next_ready(cyc));
-            }
-            let n = skip(chip, &i, until.saturating_sub(cyc).min(d.max_cycles + 1 - cyc));
+            let most = || {
+                let mut until = mem.next_response().unwrap_or(u64::MAX);
+                if out.mem_req_valid && !ready {
+                    until = until.min(mem.next_ready());
+                }
+                if out.res_valid {
+                    until = until.min(d.reader.next_ready(cyc));
+                }
+                until.saturating_sub(cyc).min(d.max_cycles + 1 - cyc)
+            };
+            let n = skip(chip, &i, &most);
             if n > 0 {
                 cyc += n;
                 continue;

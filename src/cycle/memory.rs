@@ -3,8 +3,8 @@
 //! memory for every level: the cycle model, the rust-hdl driver and (the same rules in
 //! Verilog) `scripts/verilog/chip_tb.v`.
 
-use crate::chip::memory::{Ddr, MemTiming, Memory};
 use std::collections::VecDeque;
+use crate::chip::memory::{Ddr, MemTiming, Memory};
 
 /// What the memory did during a query.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize)]

@@ -1,9 +1,9 @@
 //! The chip's memory port in the cycle model: the requests outstanding and where each
 //! response goes ([`rtl::memory_port`](crate::rtl) builds the same port in RTL).
 
+use std::collections::VecDeque;
 use crate::chip::layout::Dst;
 use crate::chip::params::Params;
-use std::collections::VecDeque;
 
 /// The chip's memory port: up to `max` requests outstanding, at most one per triangle
 /// destination (a response replaces its held word; node words queue for their pairs),

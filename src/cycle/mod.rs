@@ -72,9 +72,9 @@ pub fn run_query(
     let writes = chip.control_writes(order, mode, &p);
     let Record { vcd, probes: mut observer, .. } = rec;
     let trace = if vcd.is_none() && observer.is_none() {
-        let mut skip = |c: &mut chip::Chip, i: &ChipIn, max: u64| match c.quiet_until(i) {
+        let mut skip = |c: &mut chip::Chip, i: &ChipIn, most: &dyn Fn() -> u64| match c.quiet_until(i) {
             Some(t) => {
-                let n = t.saturating_sub(c.now()).min(max);
+                let n = t.saturating_sub(c.now()).min(most());
                 c.skip(n, t, i);
                 n
             }
