@@ -73,16 +73,25 @@ thread_local! {
 const MAX_K: usize = SUPPORTED_K[SUPPORTED_K.len() - 1];
 
 /// A node's k distances as f64s, read out of its tree ([`DopTree::dop`]; the default:
-/// none, k = 0).
+/// none, k = 0), followed by zeros up to [`Dop::padded`]'s length.
 #[derive(Clone, Copy, Debug)]
 pub struct Dop {
-    d: [f64; MAX_K],
+    d: [f64; 2 * HALF_LANES],
     k: usize,
 }
 
 impl Default for Dop {
     fn default() -> Self {
-        Dop { d: [0.0; MAX_K], k: 0 }
+        Dop { d: [0.0; 2 * HALF_LANES], k: 0 }
+    }
+}
+
+impl Dop {
+    /// The k distances and zeros after them, in a fixed-size array (for loops without
+    /// bounds checks).
+    #[inline]
+    pub fn padded(&self) -> &[f64; 2 * HALF_LANES] {
+        &self.d
     }
 }
 

@@ -111,7 +111,7 @@ impl<'a> TransformCache<'a> {
             // A's DOP read anew, not the held one: the check covers the held lines too.
             let (d, e) = (self.trees[1].dop(nb), a.dop(na));
             let want = dop_overlap(self.f, self.r, &self.setup, &d, &e);
-            assert_eq!(overlap, want, "check mode: the DOP unit's intervals said overlap = {overlap}, the lanes {want}: d {d:?}, e {e:?}");
+            assert_eq!(overlap, want, "check mode: the DOP unit's thresholds said overlap = {overlap}, the lanes {want}: d {d:?}, e {e:?}");
         }
         self.held = held;
         overlap
@@ -132,7 +132,7 @@ impl<'a> TransformCache<'a> {
     pub fn prefetch_b(&self, nb: u32) {
         match self.rows.slot[nb as usize] {
             u32::MAX => self.trees[1].prefetch(nb),
-            b => crate::dop::prefetch(self.rows.bounds.as_ptr().wrapping_add(b as usize * 2 * self.k)),
+            b => crate::dop::prefetch(self.rows.bounds.as_ptr().wrapping_add(b as usize)),
         }
     }
 
@@ -176,15 +176,16 @@ impl<'a> TransformCache<'a> {
     }
 
     /// [`overlap`](Self::overlap) with every lane's words known.
-    fn bounded(&mut self, nb: u32, e: &[f64]) -> bool {
-        let (k, h) = (self.k, self.k / 2);
+    fn bounded(&mut self, nb: u32, e: &Dop) -> bool {
+        let h = self.k / 2;
         let block = self.block(nb);
-        let base = block * 2 * k;
-        let bounds = &self.rows.bounds[base..base + 2 * k];
-        // Lane i meets e_opp(i): the first half e[h..], the second e[..h]. Both halves
-        // without a branch between them (which one decides is unpredictable).
-        let (s1, o1) = scan(&bounds[..h], &bounds[h..k], &e[h..]);
-        let (s2, o2) = scan(&bounds[k..k + h], &bounds[k + h..], &e[..h]);
+        let t = &self.rows.bounds[block];
+        // Lane i meets e_opp(i): the first half e[h..], the second e[..h] (past h, the
+        // padding lanes meet what follows, and never decide). Both halves without a branch
+        // between them (which one decides is unpredictable).
+        let ep = e.padded();
+        let (s1, o1) = scan(t, 0, ep[h..h + H].try_into().expect("h + H <= 2H"));
+        let (s2, o2) = scan(t, 1, ep[..H].try_into().expect("H <= 2H"));
         !(s1 | s2) && (!(o1 | o2) || self.exact_lanes(block, nb, e))
     }
 
@@ -194,7 +195,7 @@ impl<'a> TransformCache<'a> {
         let (k, rows, q) = (self.k, &mut self.rows, self.q);
         for i in 0..k {
             let ei = opposite(e, i);
-            if flag_surely_clear(rows.bounds[Rows::clear_at(block, k, i)], ei) {
+            if flag_surely_clear(rows.bounds[block][clear_at(k / 2, i)], ei) {
                 continue;
             }
             let b = &mut rows.blocks[block];
@@ -232,7 +233,7 @@ impl<'a> TransformCache<'a> {
     }
 
     /// Every lane's thresholds at once: the lanes' words and B's DOP in fixed-size arrays
-    /// (lanes past k have zero words; `j % 32` selects within k < 32), so that the loop has
+    /// (padding lanes have zero words; `j % 32` selects within k < 32), so that the loop has
     /// no bounds checks and its arithmetic vectorises.
     fn fill(&mut self, nb: u32) -> usize {
         let (k, h, q, est, w) = (self.k, self.k / 2, self.q, self.estimator(), &self.words);
@@ -249,14 +250,18 @@ impl<'a> TransformCache<'a> {
         for i in 0..LANES {
             (set[i], clear[i]) = est.thresholds(q, [p[0][i], p[1][i], p[2][i]], w.cv[i]);
         }
+        // The padding lanes' thresholds never decide: -inf is above no e, below any other.
+        let mut t = [0.0; 4 * H];
+        for half in 0..2 {
+            for m in 0..H {
+                let (s, c) = if m < h { (set[half * H + m], clear[half * H + m]) } else { (f64::NEG_INFINITY, f64::NEG_INFINITY) };
+                (t[half * 2 * H + m], t[half * 2 * H + H + m]) = (s, c);
+            }
+        }
         let rows = &mut self.rows;
         let block = rows.blocks.len();
         rows.blocks.push(Block { node: nb, known: 0, exact: u32::MAX });
-        rows.bounds.resize((block + 1) * 2 * k, 0.0);
-        for (half, run) in rows.bounds[block * 2 * k..].chunks_exact_mut(k).enumerate() {
-            run[..h].copy_from_slice(&set[half * h..][..h]);
-            run[h..].copy_from_slice(&clear[half * h..][..h]);
-        }
+        rows.bounds.push(t);
         block
     }
 
@@ -286,10 +291,10 @@ fn read<'d>(tree: &DopTree, last: &'d mut (u32, Dop), n: u32) -> &'d [f64] {
 struct Rows {
     /// Per B node, its block (u32::MAX: not transformed in this query).
     slot: Vec<u32>,
-    /// Per block, 2k thresholds in one run, so that a test reads a few neighbouring lines:
-    /// per half of the lanes (the first half, then the mirrors) their k/2 thresholds of a
-    /// set flag, then their k/2 of a clear one ([`Rows::clear_at`]).
-    bounds: Vec<f64>,
+    /// Per block, its thresholds in one run, so that a test reads a few neighbouring lines:
+    /// per half of the lanes (the first half, then the mirrors) H thresholds of a set flag,
+    /// then H of a clear one ([`clear_at`]), a half's lanes past k/2 padding.
+    bounds: Vec<[f64; 4 * H]>,
     /// The chip's values of the blocks that needed some, k each.
     exact: Vec<f64>,
     blocks: Vec<Block>,
@@ -312,14 +317,6 @@ thread_local! {
 }
 
 impl Rows {
-    /// Where lane i's threshold of a clear flag is in [`Rows::bounds`] (of a set flag, k/2
-    /// before).
-    #[inline]
-    fn clear_at(block: usize, k: usize, i: usize) -> usize {
-        let h = k / 2;
-        block * 2 * k + (i / h) * k + h + i % h
-    }
-
     /// The thread's spare rows for a tree of `nodes` nodes.
     fn take(nodes: usize) -> Rows {
         let mut rows = SPARE_ROWS.take();
@@ -340,7 +337,7 @@ impl Rows {
     }
 
     fn bytes(&self) -> usize {
-        4 * self.slot.capacity() + 8 * (self.bounds.capacity() + self.exact.capacity()) + 12 * self.blocks.capacity()
+        4 * self.slot.capacity() + 32 * H * self.bounds.capacity() + 8 * self.exact.capacity() + 12 * self.blocks.capacity()
     }
 }
 
@@ -380,11 +377,22 @@ impl Estimator {
     }
 }
 
-/// The largest k, rounded up to an even number of lanes: [`LaneWords`]' and
-/// [`TransformCache::fill`]'s arrays.
-const LANES: usize = 2 * HALF_LANES;
+/// Lanes per half in [`Rows::bounds`]: at least k/2 for every k, even.
+const H: usize = HALF_LANES;
 
-/// The lanes' words as structure of arrays (lane i at index i; zero past k).
+/// Lanes in [`LaneWords`] and [`TransformCache::fill`]'s arrays: a half of H, then the
+/// mirrors' half.
+const LANES: usize = 2 * H;
+
+/// Where the threshold of a clear flag of lane i (of 2h) is in a block of [`Rows::bounds`]
+/// (of a set flag: H before).
+#[inline]
+fn clear_at(h: usize, i: usize) -> usize {
+    (i / h) * 2 * H + H + i % h
+}
+
+/// The lanes' words as structure of arrays, lane i (of 2h) at `(i / h) H + i % h`, zero
+/// words in the padding lanes.
 #[derive(Clone, Copy)]
 struct LaneWords {
     j: [[u8; LANES]; 3],
@@ -395,25 +403,28 @@ struct LaneWords {
 impl LaneWords {
     fn of(setup: &HostSetup) -> LaneWords {
         let mut w = LaneWords { j: [[0; LANES]; 3], c: [[0.0; LANES]; 3], cv: [0.0; LANES] };
+        let h = setup.j.len() / 2;
         for (i, ((j, c), cv)) in setup.j.iter().zip(&setup.cmat).zip(&setup.cvec).enumerate() {
+            let at = (i / h) * H + i % h;
             for l in 0..3 {
-                (w.j[l][i], w.c[l][i]) = (j[l], c[l]);
+                (w.j[l][at], w.c[l][at]) = (j[l], c[l]);
             }
-            w.cv[i] = *cv;
+            w.cv[at] = *cv;
         }
         w
     }
 }
 
-/// Lanes with thresholds `set`, `clear` against A's distances `e`: is one surely
+/// The lanes of one half (`half`) of a block `t` against A's distances `e`: is one surely
 /// separated, is one open (its flag not surely clear; a NaN threshold leaves its lane
-/// open)? Branch-free, vectorised.
+/// open)? Branch-free, vectorised, unrolled.
 #[inline(always)]
-fn scan(set: &[f64], clear: &[f64], e: &[f64]) -> (bool, bool) {
+fn scan(t: &[f64; 4 * H], half: usize, e: &[f64; H]) -> (bool, bool) {
+    let (set, clear) = t[half * 2 * H..][..2 * H].split_at(H);
     let (mut sure, mut open) = (false, false);
-    for ((&s, &c), &ei) in set.iter().zip(clear).zip(e) {
-        sure |= flag_surely_set(s, ei);
-        open |= !flag_surely_clear(c, ei);
+    for m in 0..H {
+        sure |= flag_surely_set(set[m], e[m]);
+        open |= !flag_surely_clear(clear[m], e[m]);
     }
     (sure, open)
 }
