@@ -74,7 +74,7 @@ const MAX_K: usize = SUPPORTED_K[SUPPORTED_K.len() - 1];
 
 /// A node's k distances as f64s, read out of its tree ([`DopTree::dop`]; the default:
 /// none, k = 0), followed by zeros up to [`Dop::padded`]'s length.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy)]
 pub struct Dop {
     d: [f64; 2 * HALF_LANES],
     k: usize,
@@ -83,6 +83,13 @@ pub struct Dop {
 impl Default for Dop {
     fn default() -> Self {
         Dop { d: [0.0; 2 * HALF_LANES], k: 0 }
+    }
+}
+
+/// The k distances only.
+impl std::fmt::Debug for Dop {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_list().entries(&self.d[..self.k]).finish()
     }
 }
 

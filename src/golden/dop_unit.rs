@@ -132,7 +132,7 @@ impl<'a> TransformCache<'a> {
     pub fn prefetch_b(&self, nb: u32) {
         match self.rows.slot[nb as usize] {
             u32::MAX => self.trees[1].prefetch(nb),
-            b => crate::dop::prefetch(self.rows.bounds.as_ptr().wrapping_add(b as usize)),
+            b => crate::dop::prefetch(self.rows.thresholds.as_ptr().wrapping_add(b as usize)),
         }
     }
 
@@ -179,7 +179,7 @@ impl<'a> TransformCache<'a> {
     fn bounded(&mut self, nb: u32, e: &Dop) -> bool {
         let h = self.k / 2;
         let block = self.block(nb);
-        let t = &self.rows.bounds[block];
+        let t = &self.rows.thresholds[block];
         // Lane i meets e_opp(i): the first half e[h..], the second e[..h] (past h, the
         // padding lanes meet what follows, and never decide). Both halves without a branch
         // between them (which one decides is unpredictable).
@@ -195,7 +195,7 @@ impl<'a> TransformCache<'a> {
         let (k, rows, q) = (self.k, &mut self.rows, self.q);
         for i in 0..k {
             let ei = opposite(e, i);
-            if flag_surely_clear(rows.bounds[block][clear_at(k / 2, i)], ei) {
+            if flag_surely_clear(rows.thresholds[block][clear_at(k / 2, i)], ei) {
                 continue;
             }
             let b = &mut rows.blocks[block];
@@ -261,7 +261,7 @@ impl<'a> TransformCache<'a> {
         let rows = &mut self.rows;
         let block = rows.blocks.len();
         rows.blocks.push(Block { node: nb, known: 0, exact: u32::MAX });
-        rows.bounds.push(t);
+        rows.thresholds.push(t);
         block
     }
 
@@ -294,7 +294,7 @@ struct Rows {
     /// Per block, its thresholds in one run, so that a test reads a few neighbouring lines:
     /// per half of the lanes (the first half, then the mirrors) H thresholds of a set flag,
     /// then H of a clear one ([`clear_at`]), a half's lanes past k/2 padding.
-    bounds: Vec<[f64; 4 * H]>,
+    thresholds: Vec<[f64; 4 * H]>,
     /// The chip's values of the blocks that needed some, k each.
     exact: Vec<f64>,
     blocks: Vec<Block>,
@@ -332,12 +332,12 @@ impl Rows {
             self.slot[b.node as usize] = u32::MAX;
         }
         self.blocks.clear();
-        self.bounds.clear();
+        self.thresholds.clear();
         self.exact.clear();
     }
 
     fn bytes(&self) -> usize {
-        4 * self.slot.capacity() + 32 * H * self.bounds.capacity() + 8 * self.exact.capacity() + 12 * self.blocks.capacity()
+        4 * self.slot.capacity() + 32 * H * self.thresholds.capacity() + 8 * self.exact.capacity() + 12 * self.blocks.capacity()
     }
 }
 
@@ -377,14 +377,14 @@ impl Estimator {
     }
 }
 
-/// Lanes per half in [`Rows::bounds`]: at least k/2 for every k, even.
+/// Lanes per half in [`Rows::thresholds`]: at least k/2 for every k, even.
 const H: usize = HALF_LANES;
 
 /// Lanes in [`LaneWords`] and [`TransformCache::fill`]'s arrays: a half of H, then the
 /// mirrors' half.
 const LANES: usize = 2 * H;
 
-/// Where the threshold of a clear flag of lane i (of 2h) is in a block of [`Rows::bounds`]
+/// Where the threshold of a clear flag of lane i (of 2h) is in a block of [`Rows::thresholds`]
 /// (of a set flag: H before).
 #[inline]
 fn clear_at(h: usize, i: usize) -> usize {
