@@ -8,6 +8,8 @@ use super::values::Values;
 use crate::chip::config::{ChipConfig, DopRounding, SUPPORTED_K};
 use crate::format::{Format, Rounding};
 use nalgebra::Point3;
+use std::cell::RefCell;
+use std::sync::atomic::{AtomicU32, Ordering};
 
 pub type Tri = [Point3<f64>; 3];
 
@@ -41,25 +43,62 @@ pub struct DopTree {
     rounding: Rounding,
     /// Number of levels (a single leaf has depth 1).
     pub depth: usize,
+    /// This tree's number in the process ([`LeafLines`]' tags; a clone has the same leaves).
+    id: u32,
 }
 
 /// The bit of a leaf in [`DopTree`]'s links (so trees of up to 2^31 nodes).
 const LEAF: u32 = 1 << 31;
 
+/// [`DopTree`]'s numbers: the next tree's.
+static NEXT_ID: AtomicU32 = AtomicU32::new(0);
+
+/// Leaf distances made lately, per thread, for any tree (software only: a leaf's DOP is
+/// made from its triangle when read, k supports of three vertices, and the same leaves are
+/// read again by the next query of the same objects): [`HELD_LEAVES`] lines, direct mapped
+/// by tree and triangle, each tagged `id << 32 | triangle` (`u64::MAX`: none), allocated at
+/// the first read (some 3.5 MB).
+struct LeafLines {
+    tags: Vec<u64>,
+    values: Vec<f64>,
+}
+
+const HELD_LEAVES: usize = 1 << 14;
+
+thread_local! {
+    static LEAVES: RefCell<LeafLines> = const { RefCell::new(LeafLines { tags: Vec::new(), values: Vec::new() }) };
+}
+
 /// The largest k of [`SUPPORTED_K`].
 const MAX_K: usize = SUPPORTED_K[SUPPORTED_K.len() - 1];
 
 /// A node's k distances as f64s, read out of its tree ([`DopTree::dop`]; the default:
-/// none, k = 0).
-#[derive(Clone, Copy, Debug)]
+/// none, k = 0), followed by zeros up to [`Dop::padded`]'s length.
+#[derive(Clone, Copy)]
 pub struct Dop {
-    d: [f64; MAX_K],
+    d: [f64; 2 * HALF_LANES],
     k: usize,
 }
 
 impl Default for Dop {
     fn default() -> Self {
-        Dop { d: [0.0; MAX_K], k: 0 }
+        Dop { d: [0.0; 2 * HALF_LANES], k: 0 }
+    }
+}
+
+/// The k distances only.
+impl std::fmt::Debug for Dop {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_list().entries(&self.d[..self.k]).finish()
+    }
+}
+
+impl Dop {
+    /// The k distances and zeros after them, in a fixed-size array (for loops without
+    /// bounds checks).
+    #[inline]
+    pub fn padded(&self) -> &[f64; 2 * HALF_LANES] {
+        &self.d
     }
 }
 
@@ -109,6 +148,7 @@ impl DopTree {
             fmt: cfg.format.dop,
             rounding,
             depth: 0,
+            id: NEXT_ID.fetch_add(1, Ordering::Relaxed),
         };
         let mut idx: Vec<u32> = (0..n as u32).collect();
         tree.grow(&centroids, &mut idx, 1);
@@ -127,9 +167,27 @@ impl DopTree {
         out.k = self.k;
         let d = &mut out.d[..self.k];
         match self.links[node as usize] {
-            l if l & LEAF != 0 => self.leaf_dop(&self.tris[(l & !LEAF) as usize], d),
+            l if l & LEAF != 0 => self.leaf_held(l & !LEAF, d),
             j => self.dops.read(j as usize * self.k, d),
         }
+    }
+
+    /// Triangle `t`'s leaf distances ([`DopTree::leaf_dop`]) through the thread's
+    /// [`LeafLines`]: most leaves meet again in the next query of the same objects.
+    fn leaf_held(&self, t: u32, d: &mut [f64]) {
+        LEAVES.with_borrow_mut(|lines| {
+            let tag = (self.id as u64) << 32 | t as u64;
+            let line = (t as usize).wrapping_add(self.id as usize * 0x9e37) % HELD_LEAVES;
+            if lines.tags.is_empty() {
+                (lines.tags, lines.values) = (vec![u64::MAX; HELD_LEAVES], vec![0.0; HELD_LEAVES * MAX_K]);
+            }
+            let held = &mut lines.values[line * MAX_K..][..self.k];
+            if lines.tags[line] != tag {
+                self.leaf_dop(&self.tris[t as usize], held);
+                lines.tags[line] = tag;
+            }
+            d.copy_from_slice(held);
+        })
     }
 
     /// The distances of triangle `t`'s leaf: max over the vertices of B.v along each normal B,
@@ -175,6 +233,11 @@ impl DopTree {
             l if l & LEAF != 0 => super::prefetch(&self.tris[(l & !LEAF) as usize]),
             j => self.dops.prefetch(j as usize * self.k),
         }
+    }
+
+    /// The tree's number in the process: the same for a clone, another for any other tree.
+    pub fn id(&self) -> u32 {
+        self.id
     }
 
     /// Node `n`.

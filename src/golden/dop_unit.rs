@@ -7,14 +7,15 @@ use super::host::{DopLanes, HostSetup, Lane};
 use std::borrow::Cow;
 use super::klmsel::{klmsel, opposite};
 use super::memory::Held;
+use crate::dop::normals::HALF_LANES;
 use crate::dop::{Dop, DopTree};
 use crate::format::{Format, Rounding};
 use std::cell::Cell;
 
 /// B's transformed DOPs during one query, computed on a node's first test (or at every
-/// test, [`forget_rows`](TransformCache::forget_rows)): per lane an f64 interval
-/// `[lo, hi]` that provably holds u_i, the chip's value ([`transformed`]), and u_i itself
-/// only for the lanes whose flag the interval leaves open. The decisions equal
+/// test, [`forget_rows`](TransformCache::forget_rows)): per lane two f64 thresholds that
+/// provably enclose -q - u_i, u_i the chip's value ([`transformed`]), and u_i itself only
+/// for the lanes whose flag the thresholds leave open. The decisions equal
 /// [`dop_overlap`]'s bit for bit (proof: docs/ACCURACY.md, "The DOP unit in f64"; checked
 /// in check mode, [`checking`]); this only saves time.
 pub struct TransformCache<'a> {
@@ -23,6 +24,8 @@ pub struct TransformCache<'a> {
     /// The lanes' words (`j`, `cmat`, `cvec`); [`lazy`](TransformCache::lazy): filled in
     /// once `pending` is done.
     setup: Cow<'a, HostSetup>,
+    /// The same words gathered for [`fill`](TransformCache::fill)'s loop.
+    words: LaneWords,
     /// The lanes still to compute, and the mirror pairs computed so far.
     pending: Option<(DopLanes, Vec<[Lane; 2]>)>,
     k: usize,
@@ -35,7 +38,8 @@ pub struct TransformCache<'a> {
     /// A's and B's DOP trees.
     trees: [&'a DopTree; 2],
     /// A's DOPs last read (a leaf's is computed from its triangle when read, an inner node's
-    /// widened from its stored format, and an A node meets several of B's in a row).
+    /// widened from its stored format, and an A node meets several of B's in a row), kept
+    /// for the thread's next query of the same object.
     held: Held<Dop>,
     /// B's DOP last read, and its node (`u32::MAX`: none).
     b_dop: (u32, Dop),
@@ -54,6 +58,7 @@ impl<'a> TransformCache<'a> {
         TransformCache {
             f,
             r,
+            words: LaneWords::of(&setup),
             setup,
             pending: lanes.map(|l| (l, vec![])),
             k,
@@ -62,7 +67,7 @@ impl<'a> TransformCache<'a> {
             rows: Rows::take(b.len()),
             memo: true,
             trees: [a, b],
-            held: SPARE_HELD.take(),
+            held: SPARE_HELD.take().of(a.id()),
             b_dop: (u32::MAX, Dop::default()),
             check: checking(),
         }
@@ -106,7 +111,7 @@ impl<'a> TransformCache<'a> {
             // A's DOP read anew, not the held one: the check covers the held lines too.
             let (d, e) = (self.trees[1].dop(nb), a.dop(na));
             let want = dop_overlap(self.f, self.r, &self.setup, &d, &e);
-            assert_eq!(overlap, want, "check mode: the DOP unit's intervals said overlap = {overlap}, the lanes {want}: d {d:?}, e {e:?}");
+            assert_eq!(overlap, want, "check mode: the DOP unit's thresholds said overlap = {overlap}, the lanes {want}: d {d:?}, e {e:?}");
         }
         self.held = held;
         overlap
@@ -127,7 +132,7 @@ impl<'a> TransformCache<'a> {
     pub fn prefetch_b(&self, nb: u32) {
         match self.rows.slot[nb as usize] {
             u32::MAX => self.trees[1].prefetch(nb),
-            b => crate::dop::prefetch(self.rows.bounds.as_ptr().wrapping_add(b as usize * 2 * self.k)),
+            b => crate::dop::prefetch(self.rows.thresholds.as_ptr().wrapping_add(b as usize)),
         }
     }
 
@@ -141,8 +146,9 @@ impl<'a> TransformCache<'a> {
             let p = lanes.pair(i);
             pairs.push(p);
             for (l, ei) in [(p[0], e[i + h]), (p[1], e[i])] {
-                let (_, hi) = est.bounds(d, l.j, l.c, l.cv);
-                if flag_surely_set(q, hi, ei) {
+                let dj = klmsel(d, l.j);
+                let (set, _) = est.thresholds(q, [dj[0] * l.c[0], dj[1] * l.c[1], dj[2] * l.c[2]], l.cv);
+                if flag_surely_set(set, ei) {
                     return true;
                 }
             }
@@ -165,23 +171,22 @@ impl<'a> TransformCache<'a> {
             pairs.extend((pairs.len()..h).map(|i| lanes.pair(i)));
             let all: Vec<Lane> = pairs.iter().map(|p| p[0]).chain(pairs.iter().map(|p| p[1])).collect();
             self.setup.to_mut().set_lanes(&all);
+            self.words = LaneWords::of(&self.setup);
         }
     }
 
     /// [`overlap`](Self::overlap) with every lane's words known.
-    fn bounded(&mut self, nb: u32, e: &[f64]) -> bool {
-        let (k, h) = (self.k, self.k / 2);
+    fn bounded(&mut self, nb: u32, e: &Dop) -> bool {
+        let h = self.k / 2;
         let block = self.block(nb);
-        let base = block * 2 * k;
-        let bounds = &self.rows.bounds[base..base + 2 * k];
-        let (hi1, lo1, hi2, lo2) = (&bounds[..h], &bounds[h..k], &bounds[k..k + h], &bounds[k + h..]);
-        // Lane i meets e_opp(i): the first half e[h..], the second e[..h].
-        // Most pairs are separated: the second half waits for the first's answer.
-        let (s1, o1) = scan(self.q, lo1, hi1, &e[h..]);
-        !s1 && {
-            let (s2, o2) = scan(self.q, lo2, hi2, &e[..h]);
-            !s2 && (!(o1 | o2) || self.exact_lanes(block, nb, e))
-        }
+        let t = &self.rows.thresholds[block];
+        // Lane i meets e_opp(i): the first half e[h..], the second e[..h] (past h, the
+        // padding lanes meet what follows, and never decide). Both halves without a branch
+        // between them (which one decides is unpredictable).
+        let ep = e.padded();
+        let (s1, o1) = scan(t, 0, ep[h..h + H].try_into().expect("h + H <= 2H"));
+        let (s2, o2) = scan(t, 1, ep[..H].try_into().expect("H <= 2H"));
+        !(s1 | s2) && (!(o1 | o2) || self.exact_lanes(block, nb, e))
     }
 
     /// The lanes the intervals leave open, bit for bit: false if one is separated.
@@ -190,7 +195,7 @@ impl<'a> TransformCache<'a> {
         let (k, rows, q) = (self.k, &mut self.rows, self.q);
         for i in 0..k {
             let ei = opposite(e, i);
-            if flag_surely_clear(q, rows.bounds[Rows::lo(block, k, i)], ei) {
+            if flag_surely_clear(rows.thresholds[block][clear_at(k / 2, i)], ei) {
                 continue;
             }
             let b = &mut rows.blocks[block];
@@ -227,21 +232,36 @@ impl<'a> TransformCache<'a> {
         }
     }
 
+    /// Every lane's thresholds at once: the lanes' words and B's DOP in fixed-size arrays
+    /// (padding lanes have zero words; `j % 32` selects within k < 32), so that the loop has
+    /// no bounds checks and its arithmetic vectorises.
     fn fill(&mut self, nb: u32) -> usize {
-        let (k, est) = (self.k, self.estimator());
+        let (k, h, q, est, w) = (self.k, self.k / 2, self.q, self.estimator(), &self.words);
+        let mut d = [0.0; 32];
+        d[..k].copy_from_slice(read(self.trees[1], &mut self.b_dop, nb));
+        // The products gathered first: the thresholds' loop then vectorises.
+        let mut p = [[0.0; LANES]; 3];
+        for (l, p) in p.iter_mut().enumerate() {
+            for (i, p) in p.iter_mut().enumerate() {
+                *p = d[w.j[l][i] as usize % 32] * w.c[l][i];
+            }
+        }
+        let (mut set, mut clear) = ([0.0; LANES], [0.0; LANES]);
+        for i in 0..LANES {
+            (set[i], clear[i]) = est.thresholds(q, [p[0][i], p[1][i], p[2][i]], w.cv[i]);
+        }
+        // The padding lanes' thresholds never decide: -inf is above no e, below any other.
+        let mut t = [0.0; 4 * H];
+        for half in 0..2 {
+            for m in 0..H {
+                let (s, c) = if m < h { (set[half * H + m], clear[half * H + m]) } else { (f64::NEG_INFINITY, f64::NEG_INFINITY) };
+                (t[half * 2 * H + m], t[half * 2 * H + H + m]) = (s, c);
+            }
+        }
         let rows = &mut self.rows;
         let block = rows.blocks.len();
         rows.blocks.push(Block { node: nb, known: 0, exact: u32::MAX });
-        rows.bounds.resize((block + 1) * 2 * k, 0.0);
-        let d = read(self.trees[1], &mut self.b_dop, nb);
-        let (setup, h) = (&self.setup, k / 2);
-        for (half, run) in rows.bounds[block * 2 * k..].chunks_exact_mut(k).enumerate() {
-            let (hi, lo) = run.split_at_mut(h);
-            for (m, (hi, lo)) in hi.iter_mut().zip(lo).enumerate() {
-                let i = half * h + m;
-                (*lo, *hi) = est.bounds(d, setup.j[i], setup.cmat[i], setup.cvec[i]);
-            }
-        }
+        rows.thresholds.push(t);
         block
     }
 
@@ -262,8 +282,8 @@ fn read<'d>(tree: &DopTree, last: &'d mut (u32, Dop), n: u32) -> &'d [f64] {
     &last.1
 }
 
-/// B's transformed rows during one query, a block per node: per lane the f64 interval of
-/// u_i and (once a test needed it) the chip's value. Kept per thread for
+/// B's transformed rows during one query, a block per node: per lane the f64 thresholds
+/// of its flag and (once a test needed it) the chip's value. Kept per thread for
 /// the next query, emptied, so that a query does not pay for allocating them anew and the
 /// pages the allocator returned to the system (a quarter of a contact query's time before);
 /// one larger than [`SPARE_BYTES`] is freed.
@@ -271,10 +291,10 @@ fn read<'d>(tree: &DopTree, last: &'d mut (u32, Dop), n: u32) -> &'d [f64] {
 struct Rows {
     /// Per B node, its block (u32::MAX: not transformed in this query).
     slot: Vec<u32>,
-    /// Per block, 2k bounds in one run, so that a test reads a few neighbouring lines: per
-    /// half of the lanes (the first half, then the mirrors) their k/2 upper ends, then their
-    /// k/2 lower ends ([`Rows::lo`]).
-    bounds: Vec<f64>,
+    /// Per block, its thresholds in one run, so that a test reads a few neighbouring lines:
+    /// per half of the lanes (the first half, then the mirrors) H thresholds of a set flag,
+    /// then H of a clear one ([`clear_at`]), a half's lanes past k/2 padding.
+    thresholds: Vec<[f64; 4 * H]>,
     /// The chip's values of the blocks that needed some, k each.
     exact: Vec<f64>,
     blocks: Vec<Block>,
@@ -297,13 +317,6 @@ thread_local! {
 }
 
 impl Rows {
-    /// Where lane i's lower end is in [`Rows::bounds`] (its upper end is k/2 before).
-    #[inline]
-    fn lo(block: usize, k: usize, i: usize) -> usize {
-        let h = k / 2;
-        block * 2 * k + (i / h) * k + h + i % h
-    }
-
     /// The thread's spare rows for a tree of `nodes` nodes.
     fn take(nodes: usize) -> Rows {
         let mut rows = SPARE_ROWS.take();
@@ -319,12 +332,12 @@ impl Rows {
             self.slot[b.node as usize] = u32::MAX;
         }
         self.blocks.clear();
-        self.bounds.clear();
+        self.thresholds.clear();
         self.exact.clear();
     }
 
     fn bytes(&self) -> usize {
-        4 * self.slot.capacity() + 8 * (self.bounds.capacity() + self.exact.capacity()) + 12 * self.blocks.capacity()
+        4 * self.slot.capacity() + 32 * H * self.thresholds.capacity() + 8 * self.exact.capacity() + 12 * self.blocks.capacity()
     }
 }
 
@@ -335,11 +348,11 @@ impl Drop for TransformCache<'_> {
         if rows.bytes() <= SPARE_BYTES {
             SPARE_ROWS.set(rows);
         }
-        SPARE_HELD.set(std::mem::take(&mut self.held).emptied());
+        SPARE_HELD.set(std::mem::take(&mut self.held));
     }
 }
 
-/// A lane's f64 interval of u_i (docs/ACCURACY.md, "The DOP unit in f64").
+/// A lane's f64 thresholds of its flag (docs/ACCURACY.md, "The DOP unit in f64").
 #[derive(Clone, Copy)]
 struct Estimator {
     max: f64,
@@ -348,47 +361,86 @@ struct Estimator {
 }
 
 impl Estimator {
-    /// `[lo, hi]` holding u_i of lane (j, C, c) on B's DOP `d`: the f64 estimate
-    /// `(p0 + p1) + (p2 + c)` (the products exact) widened by the bound
-    /// `(2^(4-p) + 2^-50) S + 11q`, S the sum of the terms' magnitudes: it bounds
-    /// |u_i - estimate| with room for the f64 roundings of the bound and of its two ends.
-    /// NaN ends (no bound: S possibly at overflow, or not finite) decide nothing.
+    /// `(set, clear)` with `set <= -q - u_i <= clear` for u_i of a lane whose exact products
+    /// are `p` and whose offset is `c`: the f64 estimate `a = (p0 + p1) + (p2 + c)` widened
+    /// by the bound `t = (2^(4-p) + 2^-50) S + 11q`, S the sum of the terms' magnitudes, as
+    /// `fl(-q - a) -+ t`: t bounds |u_i - a| with room for the f64 roundings of t and of the
+    /// thresholds. NaN thresholds (no bound: S possibly at overflow, or not finite) decide
+    /// nothing.
     #[inline(always)]
-    fn bounds(&self, d: &[f64], j: [u8; 3], cm: [f64; 3], c: f64) -> (f64, f64) {
-        let dj = klmsel(d, j);
-        let p = [dj[0] * cm[0], dj[1] * cm[1], dj[2] * cm[2]];
+    fn thresholds(&self, q: f64, p: [f64; 3], c: f64) -> (f64, f64) {
         let s = p[0].abs() + p[1].abs() + p[2].abs() + c.abs();
         let a = (p[0] + p[1]) + (p[2] + c);
         let t = if s <= self.max { self.rel * s + self.abs } else { f64::NAN };
-        (a - t, a + t)
+        let m = -q - a;
+        (m - t, m + t)
     }
 }
 
-/// Lanes with intervals `[lo, hi]` against A's distances `e`: is one surely separated, is
-/// one open (its flag not surely clear; a NaN bound leaves its lane open)? Branch-free,
-/// vectorised.
+/// Lanes per half in [`Rows::thresholds`]: at least k/2 for every k, even.
+const H: usize = HALF_LANES;
+
+/// Lanes in [`LaneWords`] and [`TransformCache::fill`]'s arrays: a half of H, then the
+/// mirrors' half.
+const LANES: usize = 2 * H;
+
+/// Where the threshold of a clear flag of lane i (of 2h) is in a block of [`Rows::thresholds`]
+/// (of a set flag: H before).
+#[inline]
+fn clear_at(h: usize, i: usize) -> usize {
+    (i / h) * 2 * H + H + i % h
+}
+
+/// The lanes' words as structure of arrays, lane i (of 2h) at `(i / h) H + i % h`, zero
+/// words in the padding lanes.
+#[derive(Clone, Copy)]
+struct LaneWords {
+    j: [[u8; LANES]; 3],
+    c: [[f64; LANES]; 3],
+    cv: [f64; LANES],
+}
+
+impl LaneWords {
+    fn of(setup: &HostSetup) -> LaneWords {
+        let mut w = LaneWords { j: [[0; LANES]; 3], c: [[0.0; LANES]; 3], cv: [0.0; LANES] };
+        let h = setup.j.len() / 2;
+        for (i, ((j, c), cv)) in setup.j.iter().zip(&setup.cmat).zip(&setup.cvec).enumerate() {
+            let at = (i / h) * H + i % h;
+            for l in 0..3 {
+                (w.j[l][at], w.c[l][at]) = (j[l], c[l]);
+            }
+            w.cv[at] = *cv;
+        }
+        w
+    }
+}
+
+/// The lanes of one half (`half`) of a block `t` against A's distances `e`: is one surely
+/// separated, is one open (its flag not surely clear; a NaN threshold leaves its lane
+/// open)? Branch-free, vectorised, unrolled.
 #[inline(always)]
-fn scan(q: f64, lo: &[f64], hi: &[f64], e: &[f64]) -> (bool, bool) {
+fn scan(t: &[f64; 4 * H], half: usize, e: &[f64; H]) -> (bool, bool) {
+    let (set, clear) = t[half * 2 * H..][..2 * H].split_at(H);
     let (mut sure, mut open) = (false, false);
-    for ((&l, &h), &ei) in lo.iter().zip(hi).zip(e) {
-        sure |= flag_surely_set(q, h, ei);
-        open |= !flag_surely_clear(q, l, ei);
+    for m in 0..H {
+        sure |= flag_surely_set(set[m], e[m]);
+        open |= !flag_surely_clear(clear[m], e[m]);
     }
     (sure, open)
 }
 
-/// The lane's flag is surely set: `hi + e < -q` in f64 implies `u + e <= -q` (f64's
-/// rounding is monotone and -q is an f64), the flag's condition ([`separated`]).
+/// The lane's flag is surely set: `e < set <= -q - u` gives `u + e < -q`, the flag's
+/// condition `u + e <= -q` ([`separated`]).
 #[inline(always)]
-fn flag_surely_set(q: f64, hi: f64, e: f64) -> bool {
-    hi + e < -q
+fn flag_surely_set(set: f64, e: f64) -> bool {
+    e < set
 }
 
-/// The lane's flag is surely clear: `lo + e > -q` in f64 implies `u + e > -q`, hence
+/// The lane's flag is surely clear: `e > clear >= -q - u` gives `u + e > -q`, hence
 /// `u + e >= 0` (a multiple of q), so the flag's `u + e <= -q` fails.
 #[inline(always)]
-fn flag_surely_clear(q: f64, lo: f64, e: f64) -> bool {
-    lo + e > -q
+fn flag_surely_clear(clear: f64, e: f64) -> bool {
+    e > clear
 }
 
 /// The DOP unit, lane by lane as the pipeline computes it (the reference for the RTL).

@@ -232,22 +232,22 @@ pub fn object_scale(tris: &[Tri], fmt: Format) -> f64 {
     s.clamp(fmt.min_positive_normal(), 2f64.powi(fmt.max_finite().log2().floor() as i32 - 2))
 }
 
-/// Values made when read (a leaf's DOP, a triangle's word), the last ones read held
-/// direct-mapped by index in [`HELD_LINES`] lines: software only (the chip reads the
-/// record), so that a node or triangle met several times in a row is made once. The lines
-/// are allocated at the first read; [`Held::emptied`] hands them to the next query.
+/// Values of one object made when read (a node's DOP, a triangle's word), the last ones
+/// read held direct-mapped by index in [`HELD_LINES`] lines: software only (the chip reads
+/// the record), so that a node or triangle met several times in a row is made once. The
+/// lines are allocated at the first read; [`Held::of`] hands them to the next query, whose
+/// object may be another.
 pub struct Held<T> {
-    /// Per line, the query's generation and the index held, `generation << 32 | n`
-    /// (`u64::MAX`: none; indices are below 2^31), so that emptying the lines for the next
-    /// query is one increment.
+    /// Per line, the object's number and the index held, `object << 32 | n` (`u64::MAX`:
+    /// none; indices are below 2^31).
     tags: Vec<u64>,
     values: Vec<T>,
-    generation: u32,
+    object: u32,
 }
 
 impl<T> Default for Held<T> {
     fn default() -> Self {
-        Held { tags: vec![], values: vec![], generation: 0 }
+        Held { tags: vec![], values: vec![], object: 0 }
     }
 }
 
@@ -286,15 +286,14 @@ impl<T: Copy + Default> Held<T> {
     /// The line of `n` and the tag it holds while `n`'s value is there.
     #[inline]
     fn line(&self, n: u32) -> (usize, u64) {
-        (n as usize % HELD_LINES, (self.generation as u64) << 32 | n as u64)
+        (n as usize % HELD_LINES, (self.object as u64) << 32 | n as u64)
     }
 
-    /// The lines, every one emptied (for the next query).
-    pub fn emptied(mut self) -> Held<T> {
-        self.generation = self.generation.wrapping_add(1);
-        if self.generation == 0 {
-            self.tags.fill(u64::MAX);
-        }
+    /// The lines for the values of the object numbered `object` (its tree's
+    /// [`DopTree::id`]): what they held of it stays (its values do not change), any other
+    /// object's is not found.
+    pub fn of(mut self, object: u32) -> Held<T> {
+        self.object = object;
         self
     }
 }
@@ -378,7 +377,10 @@ impl NodeCache {
                 return true;
             }
         };
-        self.tags[from..].rotate_left(1);
+        // (a one-line cache, the default, has nothing to move)
+        if from + 1 < self.tags.len() {
+            self.tags[from..].rotate_left(1);
+        }
         *self.tags.last_mut().expect("a full or hit cache has lines") = r;
         hit.is_none()
     }
@@ -437,15 +439,19 @@ mod tests {
         assert_eq!(misses(3), [1, 1, 0, 1, 0, 0, 0]);
     }
 
-    /// Hand-derived: a value held is not made again until its line holds another index or
-    /// the lines are emptied for the next query (which may read another object).
+    /// Hand-derived: a value held is not made again until its line holds another index, or
+    /// the lines serve another object; they serve the first object again as they left it.
     #[test]
-    fn held_lines_are_emptied_between_queries() {
-        let mut h = Held::default();
+    fn held_lines_are_per_object() {
+        let mut h = Held::default().of(1);
         assert_eq!((*h.get(5, || 1), *h.get(5, || 2)), (1, 1));
         assert_eq!((*h.get(5 + HELD_LINES as u32, || 3), *h.get(5, || 4)), (3, 4));
-        let mut h = h.emptied();
+        let mut h = h.of(2);
         assert_eq!((*h.get(5, || 6), *h.get(5, || 7)), (6, 6));
+        let mut h = h.of(1);
+        assert_eq!((*h.get(6, || 8), *h.get(5, || 9)), (8, 9));
+        let mut h = h.of(1);
+        assert_eq!(*h.get(6, || 10), 8);
     }
 
     #[test]

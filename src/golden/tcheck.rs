@@ -46,11 +46,12 @@ const UP: Rounding = Rounding::TowardPositive;
 /// every operation rounded with `r`: the one dot product of stages 1 and 2.
 #[inline(always)]
 fn dot(f: Format, r: Rounding, a: [f64; 3], b: [f64; 3], c: Option<f64>) -> f64 {
-    let p = |k: usize| f.mul(a[k], b[k], r);
-    let s01 = f.add(p(0), p(1), r);
+    // (products as plain calls, not a closure: the closure was not inlined)
+    let (p0, p1, p2) = (f.mul(a[0], b[0], r), f.mul(a[1], b[1], r), f.mul(a[2], b[2], r));
+    let s01 = f.add(p0, p1, r);
     match c {
-        None => f.add(s01, p(2), r),
-        Some(c) => f.add(s01, f.add(p(2), c, r), r),
+        None => f.add(s01, p2, r),
+        Some(c) => f.add(s01, f.add(p2, c, r), r),
     }
 }
 

@@ -124,7 +124,8 @@ pub(crate) struct Engine<'a> {
     /// A's triangle words held (the triangle cache), B's (one line).
     held_tri: [TriCache; 2],
     /// A's and B's triangle words last made (software only: a word is made from the f64
-    /// triangle when read, and a leaf meets several of the other object's in a row).
+    /// triangle when read, and a leaf meets several of the other object's in a row), kept
+    /// for the thread's next query of the same objects.
     words: [Held<TriWord>; 2],
     host: &'a Host<'a>,
     pairs: Vec<(u32, u32)>,
@@ -215,6 +216,7 @@ pub fn run(
     mode: Mode,
     traversal: Traversal,
 ) -> QueryResult {
+    let [words_a, words_b] = SPARE_WORDS.take();
     let mut e = Engine {
         a,
         b,
@@ -222,7 +224,7 @@ pub fn run(
         mode,
         held_node: [NodeCache::new(cfg.node_cache), NodeCache::new(cfg.node_cache)],
         held_tri: [TriCache::new(cfg.tri_cache), TriCache::new(1)],
-        words: SPARE_WORDS.take(),
+        words: [words_a.of(a.tree.id()), words_b.of(b.tree.id())],
         host,
         pairs: vec![],
         uncertain: vec![],
@@ -241,7 +243,7 @@ pub fn run(
         Traversal::Fifo => run_d_cntr(&mut e, Order::Fifo),
         Traversal::Lifo => run_d_cntr(&mut e, Order::Lifo),
     }
-    SPARE_WORDS.set(e.words.map(Held::emptied));
+    SPARE_WORDS.set(e.words);
     let mut c = e.counters;
     let [node_bytes, tri_bytes] = e.layout.record_bytes();
     c.memory_bytes = c.node_fetches * node_bytes + c.tri_fetches * tri_bytes;
