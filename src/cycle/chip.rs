@@ -502,9 +502,10 @@ impl Clocked for Chip<'_> {
         if c.grows {
             let r = self.dop.out(now).expect("a growing result is out");
             let (ch, n) = children(r.pair, r.na, r.nb);
-            let lifo = self.order == Order::Lifo;
-            for k in 0..n {
-                self.pend.push_back(ch[if lifo { n - 1 - k } else { k }]);
+            if self.order == Order::Lifo {
+                self.pend.extend(ch[..n].iter().rev());
+            } else {
+                self.pend.extend(&ch[..n]);
             }
         }
         let push = if self.push_root {
