@@ -11,7 +11,9 @@ use crate::format::{Format, Rounding, ScaleConst};
 /// like `g_v` by whether the vertices are exact.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Certificate {
+    /// The format and rounding of the chip's values.
     pub f: Format,
+    pub r: Rounding,
     /// Unit roundoff of the value datapath: 2^-(F+1) to nearest, 2^-F directed.
     pub u: f64,
     /// The host's rounding of the words it writes (M_B, the frame maps, the vertices; to
@@ -42,7 +44,7 @@ impl Certificate {
         thread_local! {
             static KNOWN: std::cell::RefCell<Vec<(Rounding, Certificate)>> = const { std::cell::RefCell::new(Vec::new()) };
         }
-        KNOWN.with_borrow_mut(|known| match known.iter().find(|(kr, c)| *kr == r && c.f == f) {
+        KNOWN.with_borrow_mut(|known| match known.iter().find(|(_, c)| c.r == r && c.f == f) {
             Some((_, c)) => *c,
             None => {
                 let c = Certificate::compute(f, r);
@@ -65,6 +67,7 @@ impl Certificate {
         let (c2, c1) = (2.0 * u + u * u, u + u * u);
         Certificate {
             f,
+            r,
             u,
             u1,
             eta_s: f.min_positive_subnormal() / 2.0,

@@ -10,7 +10,8 @@
 //! three f64 roundings (each at most a factor 1 - 2^-53): by induction over the operations,
 //! an enclosed value is at least the chip's. An enclosure at or above the format's largest
 //! finite value proves nothing (the chip may have overflowed): [`Upper::fits`] says whether
-//! every enclosed value stayed below it.
+//! every enclosed value stayed below it. [`down`] bounds such sums and products from
+//! below instead, so that software can also prove a sign of the chip unknown.
 
 use crate::format::{Format, ScaleConst};
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -106,6 +107,29 @@ impl Upper {
     pub fn fits(&self, x: f64) -> bool {
         x.abs() < self.limit
     }
+}
+
+/// A lower bound of a sum or product of non-negative reals from the f64 result `w` of the
+/// same operation on f64 numbers: the next f64 below `w`, or 0 (docs/ACCURACY.md, "Proving
+/// T.CHECK uncertain"). Round to nearest leaves the exact result above the f64 number just
+/// below its rounded one (else that number would be nearer), underflow and overflow too.
+#[inline(always)]
+pub fn down(w: f64) -> f64 {
+    if w > 0.0 {
+        f64::from_bits(w.to_bits() - 1)
+    } else {
+        0.0
+    }
+}
+
+#[inline(always)]
+pub fn add_down(x: f64, y: f64) -> f64 {
+    down(x + y)
+}
+
+#[inline(always)]
+pub fn mul_down(x: f64, y: f64) -> f64 {
+    down(x * y)
 }
 
 static FORCED: AtomicBool = AtomicBool::new(false);

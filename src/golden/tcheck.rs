@@ -35,7 +35,7 @@
 //! triangle has no M_B: that direction is unknown.
 
 use super::certificate::Certificate;
-use super::enclosure::Upper;
+use super::enclosure::{add_down, down, mul_down, Upper};
 use super::host::Affine;
 use crate::format::{Format, Rounding};
 use super::memory::TriWord;
@@ -145,38 +145,57 @@ pub fn stage1_hi(f: Format, r: Rounding, up: &Upper, leaf: &TriWord, frame: &Aff
 }
 
 /// One mapped vertex as [`decide`] sees it (docs/ACCURACY.md, "Values in f64"): each
-/// coordinate's f64 value `c`, within a proven gap of the chip's; `abs` >= both |c| and the
-/// chip value's magnitude; and enclosures of the certificate's bounds, each widened by what
-/// the f64 values may be off: `ep` >= E + gap (x, y), `rz` >= E'_z + delta, `h` >= H, `g`
-/// >= G + delta, where delta >= gap_z + round_rel |z|.
+/// coordinate's f64 value `c`, within `gap` of the chip's; `abs` >= both |c| and the chip
+/// value's magnitude; and enclosures of the certificate's bounds, each widened by what the
+/// f64 values may be off: `tz` >= E_z + gap_z, `ep` >= E + gap (x, y), `rz` >= E'_z +
+/// delta, `h` >= H, `g` >= G + delta, where `delta` >= gap_z + round_rel |z|.
 #[derive(Clone, Copy, Default)]
-struct VertexHi {
+pub struct VertexHi {
     c: [f64; 3],
+    gap: [f64; 3],
     abs: [f64; 3],
+    tz: f64,
     ep: [f64; 2],
+    delta: f64,
     rz: f64,
     h: f64,
     g: f64,
 }
 
+/// What [`decide`] proved.
+pub enum Decision {
+    /// The chip's verdict: intersecting, separate, or (never from `decide` itself) uncertain.
+    Verdict(Option<bool>),
+    /// The signs proven sure do not decide; [`settle`] may prove the verdict uncertain
+    /// from these vertices.
+    Open([VertexHi; 3]),
+    /// Nothing proven: a value or an enclosure may have overflowed.
+    Unfit,
+}
+
 /// T.CHECK's verdict decided in f64 (docs/ACCURACY.md, "Deciding T.CHECK in f64" and
-/// "Values in f64"): `Some` only where it equals `edges(..).result()` of the same inputs,
-/// `None` where the enclosure cannot tell (the caller then takes the bit-exact path). Every
-/// value the chip computes after stage 1 (the mapped vertices, a, b, r_z, s) is taken in f64
-/// with a proven gap to the chip's, every bound enclosed from above; a sign is sure when
-/// the f64 value lies beyond the bound's enclosure plus the gap (then the chip's value lies
-/// beyond the chip's bound), otherwise taken as unknown. Kleene logic is monotone (an
-/// unknown input that becomes known never changes a decided output), so a decided verdict
-/// is the chip's.
-pub fn decide(cert: &Certificate, up: &Upper, s1: &Stage1Hi, tri: &TriWord) -> Option<bool> {
+/// "Values in f64"): a verdict only where it equals `edges(..).result()` of the same inputs;
+/// else the caller tries [`settle`], then the bit-exact path. Every value the chip computes
+/// after stage 1 (the mapped vertices, a, b, r_z, s) is taken in f64 with a proven gap to
+/// the chip's, every bound enclosed from above; a sign is sure when the f64 value lies
+/// beyond the bound's enclosure plus the gap (then the chip's value lies beyond the chip's
+/// bound), otherwise any. Kleene logic on the sets of results the signs may have
+/// ([`Maybe`]) gives a set that holds the chip's verdict: one member is the chip's. With
+/// `EXACT`, the mapped vertices are the chip's own words (gap 0): dearer, and decides more.
+pub fn decide<const EXACT: bool>(cert: &Certificate, up: &Upper, s1: &Stage1Hi, tri: &TriWord) -> Decision {
     let x = tri.v_exact as usize;
     let pa = tri.v.map(|p| p.map(f64::abs));
-    // Coordinate i of mapped vertex k in f64: its products are exact (format numbers), so
-    // it is within `dot_gap` of the chip's value ("z before the chip's z"). Its magnitude
-    // enclosed with the input errors `err` = A' L1(p).
-    let center = |k: usize, i: usize| {
-        let (m, p) = (&s1.mb[i], tri.v[k]);
-        (m[0] * p[0] + m[1] * p[1]) + (m[2] * p[2] + m[3])
+    // Coordinate i of mapped vertex k and its gap from magnitude m: in f64, its products
+    // are exact (format numbers), so it is within `dot_gap` of the chip's value ("z before
+    // the chip's z"); or the chip's own word. Its magnitude enclosed with the input errors
+    // `err` = A' L1(p).
+    let center = |k: usize, i: usize, m: f64| {
+        let (mb, p) = (&s1.mb[i], tri.v[k]);
+        if EXACT {
+            (dot(cert.f, cert.r, [mb[0], mb[1], mb[2]], p, Some(mb[3])), 0.0)
+        } else {
+            ((mb[0] * p[0] + mb[1] * p[1]) + (mb[2] * p[2] + mb[3]), up.dot_gap(m))
+        }
     };
     let magnitude = |k: usize, i: usize, err: f64| {
         let mag = &s1.mag[i];
@@ -184,63 +203,150 @@ pub fn decide(cert: &Certificate, up: &Upper, s1: &Stage1Hi, tri: &TriWord) -> O
     };
     // z first: a vertex triangle surely on one side of the plane needs nothing else.
     let mut fits = s1.fits;
-    let (mut err, mut mz, mut ez, mut cz, mut gz) = ([0.0; 3], [0.0; 3], [0.0; 3], [0.0; 3], [0.0; 3]);
+    let mut v = [VertexHi::default(); 3];
+    let (mut err, mut mz, mut ez) = ([0.0; 3], [0.0; 3], [0.0; 3]);
     let mut sz = [None; 3];
-    for k in 0..3 {
+    for (k, vk) in v.iter_mut().enumerate() {
         let l1 = up.add(up.add(pa[k][0], pa[k][1]), up.add(pa[k][2], s1.scale));
         err[k] = up.mul(s1.a_err, l1);
         mz[k] = magnitude(k, 2, err[k]);
         ez[k] = up.scale(mz[k], cert.c_e[x]);
-        (cz[k], gz[k]) = (center(k, 2), up.dot_gap(mz[k]));
-        sz[k] = sign(cz[k], up.add(ez[k], gz[k]));
+        (vk.c[2], vk.gap[2]) = center(k, 2, mz[k]);
+        vk.tz = up.add(ez[k], vk.gap[2]);
+        sz[k] = sign(vk.c[2], vk.tz);
         fits &= up.fits(l1) & up.fits(mz[k]) & up.fits(ez[k]);
     }
     if !fits {
-        return None;
+        return Decision::Unfit;
     }
     if sz[0].is_some() && sz[0] == sz[1] && sz[1] == sz[2] {
-        return Some(false);
+        return Decision::Verdict(Some(false));
     }
-    let mut v = [VertexHi::default(); 3];
     for (k, vk) in v.iter_mut().enumerate() {
-        let az = up.add(cz[k].abs(), gz[k]);
-        let delta = up.add(gz[k], up.mul(az, up.round_rel()));
-        vk.c[2] = cz[k];
+        let az = up.add(vk.c[2].abs(), vk.gap[2]);
+        vk.delta = up.add(vk.gap[2], up.mul(az, up.round_rel()));
         vk.abs[2] = az;
-        vk.rz = up.add(up.scale(mz[k], cert.c_z[x]), delta);
+        vk.rz = up.add(up.scale(mz[k], cert.c_z[x]), vk.delta);
         vk.h = up.add(az, 2.0 * ez[k]);
-        vk.g = up.add(up.add(ez[k], up.scale(az, cert.c_s)), delta);
+        vk.g = up.add(up.add(ez[k], up.scale(az, cert.c_s)), vk.delta);
         for i in 0..2 {
             let m = magnitude(k, i, err[k]);
-            let gap = up.dot_gap(m);
-            vk.c[i] = center(k, i);
-            vk.abs[i] = up.add(vk.c[i].abs(), gap);
-            vk.ep[i] = up.add(up.scale(m, cert.c_e[x]), gap);
+            (vk.c[i], vk.gap[i]) = center(k, i, m);
+            vk.abs[i] = up.add(vk.c[i].abs(), vk.gap[i]);
+            vk.ep[i] = up.add(up.scale(m, cert.c_e[x]), vk.gap[i]);
             fits &= up.fits(m) & up.fits(vk.ep[i]);
         }
         fits &= vk.abs.iter().all(|&a| up.value_fits(a)) & up.fits(vk.rz) & up.fits(vk.h) & up.fits(vk.g);
     }
     if !fits {
-        return None;
+        return Decision::Unfit;
     }
-    edges_hi(cert, up, &v, sz)
+    match edges_hi(cert, up, &v, None).map(Maybe::single) {
+        Some(Some(verdict)) => Decision::Verdict(verdict),
+        Some(None) => Decision::Open(v),
+        None => Decision::Unfit,
+    }
+}
+
+/// [`decide`]'s open case taken further (docs/ACCURACY.md, "Proving T.CHECK uncertain"):
+/// with lower bounds of the chip's bounds (stage 1's magnitudes from below: `mag_lo`,
+/// [`mag_lo`]), a sign whose value lies provably within its bound is unknown on the chip.
+/// `Some(None)`: the chip's verdict is uncertain; `None`: not proven (the bit-exact path
+/// decides).
+pub fn settle(cert: &Certificate, up: &Upper, mag_lo: &Affine, tri: &TriWord, v: &[VertexHi; 3]) -> Option<Option<bool>> {
+    let lo = vertices_lo(cert, mag_lo, tri, v);
+    edges_hi(cert, up, v, Some(&lo))?.single()
+}
+
+/// Lower bounds of the chip's words of one mapped vertex: its |x|, |y|, |z| (`abs`); E_x,
+/// E_y, E'_z (`e1`); E_z, G and H.
+#[derive(Clone, Copy)]
+struct VertexLo {
+    abs: [f64; 3],
+    e1: [f64; 3],
+    ez: f64,
+    g: f64,
+    h: f64,
+}
+
+/// The chip's vertex bounds from below: each is an upward-rounded sum or product of
+/// non-negative words (and `FpScale`'s `max(round_up(x c), 2^emin)`), at least the exact
+/// operation on its operands, so the same expression on lower bounds of its operands,
+/// evaluated with [`down`], is at most it; the error term A' L1 is left out (>= 0), and
+/// the chip's |z| is at least |z^| - gap_z.
+fn vertices_lo(cert: &Certificate, mag_lo: &Affine, tri: &TriWord, v: &[VertexHi; 3]) -> [VertexLo; 3] {
+    let x = tri.v_exact as usize;
+    let (ce, cz, cs) = (cert.c_e[x].value(), cert.c_z[x].value(), cert.c_s.value());
+    std::array::from_fn(|k| {
+        let pa = tri.v[k].map(f64::abs);
+        let m = |i: usize| dot_down([mag_lo[i][0], mag_lo[i][1], mag_lo[i][2]], pa, mag_lo[i][3]);
+        let abs = std::array::from_fn(|i| down(v[k].c[i].abs() - v[k].gap[i]));
+        let mz = m(2);
+        let ez = mul_down(mz, ce);
+        let (g, h) = (add_down(ez, mul_down(abs[2], cs)), add_down(abs[2], 2.0 * ez));
+        VertexLo { abs, e1: [mul_down(m(0), ce), mul_down(m(1), ce), mul_down(mz, cz)], ez, g, h }
+    })
+}
+
+/// `(a0 b0 + a1 b1) + (a2 b2 + c)` on non-negative operands, from below.
+#[inline(always)]
+fn dot_down(a: [f64; 3], b: [f64; 3], c: f64) -> f64 {
+    add_down(add_down(mul_down(a[0], b[0]), mul_down(a[1], b[1])), add_down(mul_down(a[2], b[2]), c))
+}
+
+/// Stage 1's magnitude M_b's entries from below: the exact sums of |m_ik| |frame_kj| (and
+/// |m_i3|), which the chip's upward-rounded ones are at least.
+pub fn mag_lo(leaf: &TriWord, frame: &Affine) -> Affine {
+    let mut lo = [[0.0; 4]; 3];
+    for (i, j, row, col, c) in mb_terms(&leaf.m, frame) {
+        lo[i][j] = dot_down(row.map(f64::abs), col.map(f64::abs), c.map_or(0.0, f64::abs));
+    }
+    lo
+}
+
+/// The results the chip's sign of a value may have against its bound B~: sure beyond
+/// `hi` >= B~ + gap, as [`sign`]; else any, or, given `within` = (gap, lo) with gap >=
+/// |x~ - x| and lo <= B~, not surely positive if x + gap <= lo (then x~ <= B~) and not
+/// surely negative if gap - x <= lo. Each sum is taken with `next_up`: at least the exact
+/// one.
+#[inline(always)]
+fn sign_set(x: f64, hi: f64, within: Option<(f64, f64)>) -> Maybe {
+    match (sign(x, hi), within) {
+        (Some(s), _) => Maybe::sure(s),
+        (None, None) => Maybe::ANY,
+        (None, Some((gap, lo))) => {
+            let within = |d: f64| d.next_up() <= lo;
+            let least = if within(gap - x) { Maybe::U } else { Maybe::F };
+            Maybe { lo: least, hi: if within(x + gap) { Maybe::U } else { Maybe::T } }
+        }
+    }
 }
 
 /// [`decide`]'s stages 3-5 on the vertices in f64: per edge, a, b, r_z and s in f64 and an
 /// enclosure of each one's bound plus its gap (the same expression tree as the chip's bound,
-/// on the widened vertex bounds). An edge's signs are taken in the order r_z, a, b, s and
-/// the rest skipped once both directions' conjunctions are surely false (docs/ACCURACY.md,
-/// "Deciding T.CHECK in f64": a sign not taken is an unknown one).
-fn edges_hi(cert: &Certificate, up: &Upper, v: &[VertexHi; 3], sz: [Option<bool>; 3]) -> Option<bool> {
-    let mut verdict = Some(false);
+/// on the widened vertex bounds). An edge's signs are taken in the order P_z, Q_z, r_z, a,
+/// b, s and the rest skipped once both directions' conjunctions are surely false
+/// (docs/ACCURACY.md, "Deciding T.CHECK in f64": any sign then gives the same). With `lo`
+/// ([`settle`]), each sign not sure also gets its gap and a lower bound of the chip's
+/// bound. `None`: a bound may have overflowed. Inlined, so that [`decide`]'s copy has no
+/// `lo` to test.
+#[inline(always)]
+fn edges_hi(cert: &Certificate, up: &Upper, v: &[VertexHi; 3], lo: Option<&[VertexLo; 3]>) -> Option<Maybe> {
+    let mut verdict = Maybe::FALSE;
     for e in 0..3 {
-        let (p, q) = (&v[e], &v[(e + 1) % 3]);
+        let (pi, qi) = (e, (e + 1) % 3);
+        let (p, q) = (&v[pi], &v[qi]);
         let mut edge = Conjunctions::default();
-        if !(edge.take(sz[e], false) & edge.take(sz[(e + 1) % 3], true)) {
+        let z = |k: usize| sign_set(v[k].c[2], v[k].tz, lo.map(|l| (v[k].gap[2], l[k].ez)));
+        if !(edge.take(z(pi), false) & edge.take(z(qi), true)) {
             continue;
         }
         let rz = q.c[2] - p.c[2];
         let rz_bound = up.add(q.rz, p.rz);
+        let rz_lo = lo.map(|l| (up.add(q.delta, p.delta), add_down(l[qi].e1[2], l[pi].e1[2])));
+        if !edge.take(sign_set(rz, rz_bound, rz_lo), true) {
+            continue;
+        }
         let cross = |i: usize| {
             let x = p.c[i] * q.c[2] - q.c[i] * p.c[2];
             let pq = up.add(up.mul(p.ep[i], q.h), up.mul(p.abs[i], q.g));
@@ -248,15 +354,23 @@ fn edges_hi(cert: &Certificate, up: &Upper, v: &[VertexHi; 3], sz: [Option<bool>
             let bound = up.add(up.add(pq, qp), up.gap_abs());
             up.fits(bound).then_some((x, bound))
         };
-        if !edge.take(sign(rz, rz_bound), true) {
-            continue;
-        }
+        // gap_a (b's alike) and the chip's B_a from below
+        let cross_lo = |i: usize| {
+            let l = lo?;
+            let pq = up.add(up.mul(p.gap[i], q.abs[2]), up.mul(p.abs[i], q.delta));
+            let qp = up.add(up.mul(q.gap[i], p.abs[2]), up.mul(q.abs[i], p.delta));
+            let (lp, lq) = (&l[pi], &l[qi]);
+            let b = add_down(add_down(mul_down(lp.e1[i], lq.h), mul_down(lp.abs[i], lq.g)), add_down(mul_down(lq.e1[i], lp.h), mul_down(lq.abs[i], lp.g)));
+            Some((up.add(up.add(pq, qp), up.gap_abs()), b))
+        };
         let (a, a_bound) = cross(0)?;
-        if !edge.take(sign(a, a_bound), true) {
+        let a_lo = cross_lo(0);
+        if !edge.take(sign_set(a, a_bound, a_lo), true) {
             continue;
         }
         let (b, b_bound) = cross(1)?;
-        if !edge.take(sign(b, b_bound), true) {
+        let b_lo = cross_lo(1);
+        if !edge.take(sign_set(b, b_bound, b_lo), true) {
             continue;
         }
         let s = (a + b) - rz;
@@ -266,35 +380,91 @@ fn edges_hi(cert: &Certificate, up: &Upper, v: &[VertexHi; 3], sz: [Option<bool>
         if !up.fits(s_bound) {
             return None;
         }
-        edge.take(sign(s, s_bound), false);
-        verdict = or3([verdict, edge.up, edge.down].into_iter());
-        if verdict == Some(true) {
+        // gap_s = gap_a + gap_b + gap_rz + rr (U_a + U_b + U_rz); B_s >= B_a + B_b + B_rz
+        let s_lo = a_lo.zip(b_lo).zip(rz_lo).map(|(((ga, la), (gb, lb)), (gr, lr))| {
+            let u = up.add(up.add(up.add(a.abs(), ga), up.add(b.abs(), gb)), up.add(rz.abs(), gr));
+            (up.add(up.add(ga, gb), up.add(gr, up.mul(u, up.round_rel()))), add_down(add_down(la, lb), lr))
+        });
+        edge.take(sign_set(s, s_bound, s_lo), false);
+        verdict = verdict.or(edge.up.or(edge.down));
+        if verdict == Maybe::TRUE {
             break;
         }
     }
-    verdict
+    Some(verdict)
+}
+
+/// A set of three-valued results: an interval in Kleene's order false < unknown < true, in
+/// which AND is the minimum, OR the maximum and NOT the reversal. An operation's results
+/// over every choice of members of two intervals fill the interval of its results on
+/// their ends (a value between them is the minimum, or maximum, of itself and an end of
+/// the other interval); so an interval made from intervals that hold the chip's signs holds
+/// the chip's result. Every set of signs made here is an interval.
+#[derive(Clone, Copy, PartialEq, Eq)]
+struct Maybe {
+    lo: u8,
+    hi: u8,
+}
+
+impl Maybe {
+    const F: u8 = 0;
+    const U: u8 = 1;
+    const T: u8 = 2;
+    const TRUE: Maybe = Maybe { lo: Self::T, hi: Self::T };
+    const FALSE: Maybe = Maybe { lo: Self::F, hi: Self::F };
+    const ANY: Maybe = Maybe { lo: Self::F, hi: Self::T };
+
+    fn sure(s: bool) -> Maybe {
+        if s {
+            Self::TRUE
+        } else {
+            Self::FALSE
+        }
+    }
+
+    fn not(self) -> Maybe {
+        Maybe { lo: Self::T - self.hi, hi: Self::T - self.lo }
+    }
+
+    fn and(self, o: Maybe) -> Maybe {
+        Maybe { lo: self.lo.min(o.lo), hi: self.hi.min(o.hi) }
+    }
+
+    fn or(self, o: Maybe) -> Maybe {
+        Maybe { lo: self.lo.max(o.lo), hi: self.hi.max(o.hi) }
+    }
+
+    /// The one member, if there is one (`Some(None)`: surely unknown).
+    fn single(self) -> Option<Option<bool>> {
+        (self.lo == self.hi).then_some(match self.lo {
+            Self::T => Some(true),
+            Self::F => Some(false),
+            _ => None,
+        })
+    }
 }
 
 /// An edge's two conjunctions (stage 5) in Kleene logic over the signs taken so far: P
 /// below and Q above (`up`), the mirror (`down`).
 struct Conjunctions {
-    up: Option<bool>,
-    down: Option<bool>,
+    up: Maybe,
+    down: Maybe,
 }
 
 impl Default for Conjunctions {
     fn default() -> Self {
-        Conjunctions { up: Some(true), down: Some(true) }
+        Conjunctions { up: Maybe::TRUE, down: Maybe::TRUE }
     }
 }
 
 impl Conjunctions {
     /// Takes a sign that `up` wants `want_up` and `down` the opposite; false once both
     /// conjunctions are surely false (the edge surely misses, whatever the other signs).
-    fn take(&mut self, sign: Option<bool>, want_up: bool) -> bool {
-        let and = |acc: Option<bool>, want: bool| and3([acc, sign.map(|s| s == want)].into_iter());
-        (self.up, self.down) = (and(self.up, want_up), and(self.down, !want_up));
-        (self.up, self.down) != (Some(false), Some(false))
+    fn take(&mut self, sign: Maybe, want_up: bool) -> bool {
+        let (pos, neg) = (sign, sign.not());
+        let (u, d) = if want_up { (pos, neg) } else { (neg, pos) };
+        (self.up, self.down) = (self.up.and(u), self.down.and(d));
+        (self.up, self.down) != (Maybe::FALSE, Maybe::FALSE)
     }
 }
 

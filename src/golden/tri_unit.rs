@@ -5,9 +5,20 @@ use super::certificate::Certificate;
 use super::enclosure::{checking, Upper};
 use super::host::HostSetup;
 use super::memory::TriWord;
-use super::tcheck::{decide, edges, edges_in, or3, stage1, stage1_hi, Stage1, Stage1Hi};
+use super::host::Affine;
+use super::tcheck::{decide, edges, edges_in, mag_lo, or3, settle, stage1, stage1_hi, Decision, Stage1, Stage1Hi};
 use crate::format::{Format, Rounding};
 use std::cell::Cell;
+
+/// One direction decided with the enclosures ([`decide`], `EXACT` as there) and, where that
+/// leaves it open, proven uncertain if it can be ([`settle`]); `None`: neither.
+fn attempt<const EXACT: bool>(cert: &Certificate, up: &Upper, s1: &mut Leaf, leaf: &TriWord, frame: &Affine, v: &TriWord) -> Option<Option<bool>> {
+    match decide::<EXACT>(cert, up, &s1.hi, v) {
+        Decision::Verdict(d) => Some(d),
+        Decision::Open(vs) => settle(cert, up, s1.lo.get_or_insert_with(|| Box::new(mag_lo(leaf, frame))), v, &vs),
+        Decision::Unfit => None,
+    }
+}
 
 /// Intersecting (surely), separate (surely), or uncertain.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
@@ -40,7 +51,8 @@ pub fn tri_unit(f: Format, r: Rounding, a: &TriWord, b: &TriWord, setup: &HostSe
 /// TRI_UNIT during one query: the same results as [`tri_unit`] bit for bit (tested, and
 /// checked at every test in check mode, [`checking`]), faster: stage 1 depends on one leaf
 /// and the pose only and is kept per leaf; each direction is decided with the enclosure of
-/// the certificate's bounds ([`decide`]) where it can be, else bit for bit, where an edge
+/// the certificate's bounds ([`decide`]) where it can be, proven uncertain with their lower
+/// bounds ([`settle`]) where that can be, else bit for bit, where an edge
 /// whose ends are surely on one side is not computed further.
 pub struct TriUnit<'a> {
     f: Format,
@@ -53,11 +65,12 @@ pub struct TriUnit<'a> {
     mb_a: StageOneCache,
 }
 
-/// Stage 1 of one leaf (triangle `tri`): enclosed always, bit for bit once the enclosure
-/// failed to decide.
+/// Stage 1 of one leaf (triangle `tri`): enclosed always; its magnitudes from below once
+/// [`settle`] is tried, bit for bit once the enclosures failed to decide.
 struct Leaf {
     tri: u32,
     hi: Stage1Hi,
+    lo: Option<Box<Affine>>,
     exact: Option<Box<Stage1>>,
 }
 
@@ -90,7 +103,7 @@ impl StageOneCache {
         if s == u32::MAX {
             s = self.values.len() as u32;
             self.slot[t as usize] = s;
-            self.values.push(Leaf { tri: t, hi: compute(), exact: None });
+            self.values.push(Leaf { tri: t, hi: compute(), lo: None, exact: None });
         }
         &mut self.values[s as usize]
     }
@@ -137,14 +150,15 @@ impl<'a> TriUnit<'a> {
         let (frame, beta, scale) = setup.tri_frame(ab);
         let cache = if ab { &mut self.mb_b } else { &mut self.mb_a };
         let s1 = cache.get(t, || stage1_hi(f, r, &up, leaf, frame, beta, scale));
-        let fast = decide(&self.cert, &up, &s1.hi, v);
-        if fast.is_some() && !checking() {
-            return fast;
+        // in f64 first, then with the chip's own vertex words
+        let fast = attempt::<false>(&self.cert, &up, s1, leaf, frame, v).or_else(|| attempt::<true>(&self.cert, &up, s1, leaf, frame, v));
+        if let Some(d) = fast.filter(|_| !checking()) {
+            return d;
         }
         let exact = s1.exact.get_or_insert_with(|| Box::new(stage1(f, r, leaf, frame, beta, scale)));
         let want = edges_in(f, r, &self.cert, exact, v, false).result();
-        if fast.is_some() {
-            assert_eq!(fast, want, "check mode: T.CHECK's enclosure decided {fast:?}, the bit-exact path {want:?}: leaf {leaf:?}, triangle {v:?}, {}", if ab { "M_AB" } else { "M_BA" });
+        if let Some(d) = fast {
+            assert_eq!(d, want, "check mode: T.CHECK's enclosure decided {d:?}, the bit-exact path {want:?}: leaf {leaf:?}, triangle {v:?}, {}", if ab { "M_AB" } else { "M_BA" });
         }
         want
     }
