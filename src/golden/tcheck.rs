@@ -600,3 +600,33 @@ pub(super) fn edges_in(f: Format, r: Rounding, cert: &Certificate, s1: &Stage1, 
     }
     t
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// [`Maybe`]'s interval logic against the sets it stands for, member by member with the
+    /// bit-exact path's Kleene logic (`and3`, `or3`).
+    #[test]
+    fn maybe_is_kleene_logic_on_sets() {
+        let code = |x: Option<bool>| match x {
+            Some(false) => Maybe::F,
+            None => Maybe::U,
+            Some(true) => Maybe::T,
+        };
+        let value = |c: u8| [Some(false), None, Some(true)][c as usize];
+        let set = |m: Maybe| (m.lo..=m.hi).fold(0u8, |s, c| s | 1 << c);
+        let intervals: Vec<Maybe> = (0..3).flat_map(|lo| (lo..3).map(move |hi| Maybe { lo, hi })).collect();
+        for &a in &intervals {
+            let not = (a.lo..=a.hi).fold(0, |s, x| s | 1 << code(value(x).map(|b| !b)));
+            assert_eq!(set(a.not()), not);
+            for &b in &intervals {
+                let image = |op: fn([Option<bool>; 2]) -> Option<bool>| {
+                    (a.lo..=a.hi).flat_map(|x| (b.lo..=b.hi).map(move |y| (x, y))).fold(0, |s, (x, y)| s | 1 << code(op([value(x), value(y)])))
+                };
+                assert_eq!(set(a.and(b)), image(|p| and3(p.into_iter())), "{}..{} AND {}..{}", a.lo, a.hi, b.lo, b.hi);
+                assert_eq!(set(a.or(b)), image(|p| or3(p.into_iter())), "{}..{} OR {}..{}", a.lo, a.hi, b.lo, b.hi);
+            }
+        }
+    }
+}

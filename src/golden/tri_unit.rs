@@ -3,9 +3,8 @@
 
 use super::certificate::Certificate;
 use super::enclosure::{checking, Upper};
-use super::host::HostSetup;
+use super::host::{Affine, HostSetup};
 use super::memory::TriWord;
-use super::host::Affine;
 use super::tcheck::{decide, edges, edges_in, mag_lo, or3, settle, stage1, stage1_hi, Decision, Stage1, Stage1Hi};
 use crate::format::{Format, Rounding};
 use std::cell::Cell;
