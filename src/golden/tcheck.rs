@@ -241,7 +241,7 @@ pub fn decide<const EXACT: bool>(cert: &Certificate, up: &Upper, s1: &Stage1Hi, 
     if !fits {
         return Decision::Unfit;
     }
-    match edges_hi(cert, up, &v, None).map(Maybe::single) {
+    match edges_hi(cert, up, &v, sz.map(|z| z.map_or(Maybe::ANY, Maybe::sure)), None).map(Maybe::single) {
         Some(Some(verdict)) => Decision::Verdict(verdict),
         Some(None) => Decision::Open(v),
         None => Decision::Unfit,
@@ -255,7 +255,8 @@ pub fn decide<const EXACT: bool>(cert: &Certificate, up: &Upper, s1: &Stage1Hi, 
 /// decides).
 pub fn settle(cert: &Certificate, up: &Upper, mag_lo: &Affine, tri: &TriWord, v: &[VertexHi; 3]) -> Option<Option<bool>> {
     let lo = vertices_lo(cert, mag_lo, tri, v);
-    edges_hi(cert, up, v, Some(&lo))?.single()
+    let sz = std::array::from_fn(|k| sign_set(v[k].c[2], v[k].tz, Some((v[k].gap[2], lo[k].ez))));
+    edges_hi(cert, up, v, sz, Some(&lo))?.single()
 }
 
 /// Lower bounds of the chip's words of one mapped vertex: its |x|, |y|, |z| (`abs`); E_x,
@@ -331,14 +332,13 @@ fn sign_set(x: f64, hi: f64, within: Option<(f64, f64)>) -> Maybe {
 /// bound. `None`: a bound may have overflowed. Inlined, so that [`decide`]'s copy has no
 /// `lo` to test.
 #[inline(always)]
-fn edges_hi(cert: &Certificate, up: &Upper, v: &[VertexHi; 3], lo: Option<&[VertexLo; 3]>) -> Option<Maybe> {
+fn edges_hi(cert: &Certificate, up: &Upper, v: &[VertexHi; 3], sz: [Maybe; 3], lo: Option<&[VertexLo; 3]>) -> Option<Maybe> {
     let mut verdict = Maybe::FALSE;
     for e in 0..3 {
         let (pi, qi) = (e, (e + 1) % 3);
         let (p, q) = (&v[pi], &v[qi]);
         let mut edge = Conjunctions::default();
-        let z = |k: usize| sign_set(v[k].c[2], v[k].tz, lo.map(|l| (v[k].gap[2], l[k].ez)));
-        if !(edge.take(z(pi), false) & edge.take(z(qi), true)) {
+        if !(edge.take(sz[pi], false) & edge.take(sz[qi], true)) {
             continue;
         }
         let rz = q.c[2] - p.c[2];
