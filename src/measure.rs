@@ -43,6 +43,20 @@ pub fn mean_seconds<T, R>(items: &[T], min_seconds: f64, mut f: impl FnMut(&T) -
     (thread_seconds() - t0) / calls as f64
 }
 
+/// [`mean_seconds`] of each of `fs` over `items`, their rounds interleaved (a round of each
+/// in turn, `rounds` times, each round `min_seconds / rounds` long), the fastest round of each
+/// kept: on a noisy machine the sides of a ratio meet the same noise, and the best round
+/// is the least disturbed.
+pub fn interleaved_best<T, R, const N: usize>(items: &[T], min_seconds: f64, rounds: usize, fs: [&dyn Fn(&T) -> R; N]) -> [f64; N] {
+    let mut best = [f64::INFINITY; N];
+    for _ in 0..rounds.max(1) {
+        for (b, f) in best.iter_mut().zip(&fs) {
+            *b = b.min(mean_seconds(items, min_seconds / rounds.max(1) as f64, f));
+        }
+    }
+    best
+}
+
 /// This thread's CPU time in seconds.
 #[cfg(unix)]
 pub fn thread_seconds() -> f64 {

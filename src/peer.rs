@@ -35,11 +35,27 @@ fn parry_pose(p: &Pose) -> PPose {
 /// The intersecting pairs of `a` and `b` placed by `pose` (exact), counted. AABBs are
 /// loosened by 1e-9 so parry's own f64 rounding cannot drop a touching pair.
 pub fn all_pairs(a: &PeerMesh, b: &PeerMesh, pose: &Pose) -> usize {
+    traverse(a, b, pose, || ()).1
+}
+
+/// The peer's work in [`all_pairs`] at `pose`, counted (not timed): box tests, leaf pairs
+/// tested exactly, intersecting pairs.
+pub fn work(a: &PeerMesh, b: &PeerMesh, pose: &Pose) -> [usize; 3] {
+    let boxes = std::cell::Cell::new(0);
+    let (leaves, hits) = traverse(a, b, pose, || boxes.set(boxes.get() + 1));
+    [boxes.get(), leaves, hits]
+}
+
+/// parry's BVH traversal and the exact test: leaf pairs and hits; `on_box` at each box test.
+#[inline(always)]
+fn traverse(a: &PeerMesh, b: &PeerMesh, pose: &Pose, on_box: impl Fn()) -> (usize, usize) {
     let pos12 = parry_pose(pose);
     let (r, t) = (pose.rotation(), pose.translation());
-    a.mesh
-        .bvh()
-        .leaf_pairs(b.mesh.bvh(), |n1, n2| n1.aabb().loosened(1e-9).intersects(&n2.aabb().transform_by(&pos12)))
-        .filter(|&(i, j)| oracle::tri_tri(&a.tris[i as usize], &b.tris[j as usize].map(|p| r * p + t)))
-        .count()
+    let leaves = a.mesh.bvh().leaf_pairs(b.mesh.bvh(), |n1, n2| {
+        on_box();
+        n1.aabb().loosened(1e-9).intersects(&n2.aabb().transform_by(&pos12))
+    });
+    leaves.fold((0, 0), |(n, hits), (i, j)| {
+        (n + 1, hits + oracle::tri_tri(&a.tris[i as usize], &b.tris[j as usize].map(|p| r * p + t)) as usize)
+    })
 }

@@ -29,7 +29,7 @@ use crate::chip::preset::Preset;
 use crate::chip::timing::{Clock, Folds, Technology};
 use crate::cycle::{self, drive::Reader};
 use crate::chip::wscg03::StackParams;
-use crate::measure::{mean_seconds, parallel_map};
+use crate::measure::{interleaved_best, parallel_map};
 use crate::mesh;
 use crate::pose::Pose;
 use crate::query::{Chip, HostTime};
@@ -281,7 +281,7 @@ struct Object {
 /// Mean microseconds per call of `f` over `items`, one call at a time: the best of three
 /// runs of `seconds / 3` each (other processes on the machine only ever add time).
 fn best_us<T>(items: &[T], seconds: f64, f: impl Fn(&T) -> usize) -> f64 {
-    1e6 * (0..3).map(|_| mean_seconds(items, seconds / 3.0, &f)).fold(f64::INFINITY, f64::min)
+    1e6 * interleaved_best(items, seconds, 3, [&f])[0]
 }
 
 /// The host's share of `chip`'s queries at `poses`, each timed as [`best_us`] for a third of
