@@ -327,7 +327,8 @@ fn sign_set(x: f64, hi: f64, within: Option<(f64, f64)>) -> Maybe {
 /// enclosure of each one's bound plus its gap (the same expression tree as the chip's bound,
 /// on the widened vertex bounds). An edge's signs are taken in the order P_z, Q_z, r_z, a,
 /// b, s and the rest skipped once both directions' conjunctions are surely false
-/// (docs/ACCURACY.md, "Deciding T.CHECK in f64": any sign then gives the same). With `lo`
+/// (docs/ACCURACY.md, "Deciding T.CHECK in f64": any sign then gives the same); the
+/// vertices' z signs `sz` come from the caller, which has them already. With `lo`
 /// ([`settle`]), each sign not sure also gets its gap and a lower bound of the chip's
 /// bound. `None`: a bound may have overflowed. Inlined, so that [`decide`]'s copy has no
 /// `lo` to test.
