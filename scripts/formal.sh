@@ -16,6 +16,7 @@
 #   --mutate  instead runs each hand mutation of MUTANTS below on a copy of the Verilog
 #             (sed, under target/formal/mutants/) against the proof it must break, and
 #             fails unless every mutant makes its proof FAIL.
+# JOBS=N runs N at a time (default: the number of cores).
 # Everything goes under target/formal/ (the SMT2/AIGER files, one log per run).
 set -uo pipefail
 cd "$(dirname "$0")/.."
@@ -130,44 +131,73 @@ fail_detail() { # the first failed assertion / unreached cover in a log, with it
   echo "$l"
 }
 
-passed=0; failed=0
 selected() { [ ${#only[@]} -eq 0 ] && return 0; local o; for o in "${only[@]}"; do [ "$o" = "$1" ] && return 0; done; return 1; }
 
-if [ $mutate = 0 ]; then
-  dir=$out/proofs; mkdir -p "$dir"
+# proof_job <proof line>: one proof, its PASS/FAIL line on stdout
+proof_job() {
+  local name wrapper dut defs engine depth what how t0=$SECONDS dir=$out/proofs
+  IFS='|' read -r name wrapper dut defs engine depth what <<<"$1"
+  case $engine in ind) how="k-induction, k = ${depth%/*}, base case BMC to ${depth#*/}";; bmc|abc) how="BMC to depth $depth ($engine)";; cover) how="cover within $depth steps";; esac
+  if prove "$name" "$wrapper" "$root/$dut" "$defs" "$engine" "$depth" "$dir"; then
+    echo "PASS $name ($how, $((SECONDS - t0)) s): $what"
+  else
+    echo "FAIL $name ($how, $((SECONDS - t0)) s): $(fail_detail "$dir/$name.log") [log: ${dir#$root/}/$name.log]"
+  fi
+}
+
+# mutant_job <mutant line>: the mutant's copy of its Verilog against the proof it must break
+mutant_job() {
+  local mname proof dut script name wrapper pdut defs engine depth what p t0 dir
+  IFS='|' read -r mname proof dut script <<<"$1"
+  dir=$out/mutants/$mname; mkdir -p "$dir"
+  cp "$root/$dut" "$dir/$(basename "$dut")"
+  sed -i "$script" "$dir/$(basename "$dut")"
+  if cmp -s "$root/$dut" "$dir/$(basename "$dut")"; then
+    echo "FAIL mutant $mname: the sed changed nothing"; return
+  fi
   for p in "${PROOFS[@]}"; do
-    IFS='|' read -r name wrapper dut defs engine depth what <<<"$p"
-    selected "$name" || continue
+    IFS='|' read -r name wrapper pdut defs engine depth what <<<"$p"
+    [ "$name" = "$proof" ] || continue
     t0=$SECONDS
-    case $engine in ind) how="k-induction, k = ${depth%/*}, base case BMC to ${depth#*/}";; bmc|abc) how="BMC to depth $depth ($engine)";; cover) how="cover within $depth steps";; esac
-    if prove "$name" "$wrapper" "$root/$dut" "$defs" "$engine" "$depth" "$dir"; then
-      echo "PASS $name ($how, $((SECONDS - t0)) s): $what"; passed=$((passed + 1))
+    if prove "$name" "$wrapper" "$dir/$(basename "$dut")" "$defs" "$engine" "$depth" "$dir"; then
+      echo "FAIL mutant $mname: $name still passes (mutant survived)"
     else
-      echo "FAIL $name ($how, $((SECONDS - t0)) s): $(fail_detail "$dir/$name.log") [log: ${dir#$root/}/$name.log]"; failed=$((failed + 1))
+      echo "PASS mutant $mname: $name fails ($((SECONDS - t0)) s): $(fail_detail "$dir/$name.log")"
     fi
+    return
   done
-else
-  for m in "${MUTANTS[@]}"; do
-    IFS='|' read -r mname proof dut script <<<"$m"
-    selected "$mname" || continue
-    dir=$out/mutants/$mname; mkdir -p "$dir"
-    cp "$root/$dut" "$dir/$(basename "$dut")"
-    sed -i "$script" "$dir/$(basename "$dut")"
-    if cmp -s "$root/$dut" "$dir/$(basename "$dut")"; then
-      echo "FAIL mutant $mname: the sed changed nothing"; failed=$((failed + 1)); continue
-    fi
-    for p in "${PROOFS[@]}"; do
-      IFS='|' read -r name wrapper pdut defs engine depth what <<<"$p"
-      [ "$name" = "$proof" ] || continue
-      t0=$SECONDS
-      if prove "$name" "$wrapper" "$dir/$(basename "$dut")" "$defs" "$engine" "$depth" "$dir"; then
-        echo "FAIL mutant $mname: $name still passes (mutant survived)"; failed=$((failed + 1))
-      else
-        echo "PASS mutant $mname: $name fails ($((SECONDS - t0)) s): $(fail_detail "$dir/$name.log")"; passed=$((passed + 1))
-      fi
+  echo "FAIL mutant $mname: no proof named $proof"
+}
+
+# JOBS=N proofs (or mutants) at a time (default: the number of cores), the slowest proof
+# first (SLOW: its BMC takes 3.5 of the proofs' 6 CPU minutes), each one's line printed in
+# the order of the lists once all are done.
+jobs_max=${JOBS:-$(nproc 2>/dev/null || echo 2)}
+SLOW=tri_cache.cache
+res=$(mktemp -d)
+trap 'rm -rf "$res"' EXIT
+spawn() { # <index in its list> <job function> <line>
+  while [ "$(jobs -rp | wc -l)" -ge "$jobs_max" ]; do wait -n; done
+  "$2" "$3" >"$res/$(printf %03d "$1")" &
+}
+mkdir -p "$out/proofs"
+if [ $mutate = 0 ]; then
+  for first in 1 0; do
+    for i in "${!PROOFS[@]}"; do
+      name=${PROOFS[$i]%%|*}
+      [ "$([ "$name" = "$SLOW" ] && echo 1 || echo 0)" = $first ] && selected "$name" && spawn "$i" proof_job "${PROOFS[$i]}"
     done
   done
+else
+  for i in "${!MUTANTS[@]}"; do selected "${MUTANTS[$i]%%|*}" && spawn "$i" mutant_job "${MUTANTS[$i]}"; done
 fi
+wait
+passed=0; failed=0
+for f in "$res"/*; do
+  [ -e "$f" ] || continue
+  cat "$f"
+  if grep -q '^PASS' "$f"; then passed=$((passed + 1)); else failed=$((failed + 1)); fi
+done
 
 echo "$passed passed, $failed failed"
 [ $failed -eq 0 ]
