@@ -18,6 +18,9 @@ cd "$(dirname "$0")/.."
 synth=1
 if [ "${1:-}" = "--no-synth" ]; then synth=0; shift; fi
 if [ $# -gt 0 ]; then units=("$@"); else units=(); for f in rtl/*.v; do units+=("$(basename "$f" .v)"); done; fi
+# Largest Verilog first within the chips and within the units: the longest builds (TRI_UNIT's
+# Verilator build takes some 200 s, a small unit's a few) start early, the short ones fill in.
+mapfile -t units < <(for u in "${units[@]}"; do echo "$(stat -c %s "rtl/$u.v" 2>/dev/null || echo 0) $u"; done | sort -k1,1nr -k2 | cut -d' ' -f2)
 
 # The pipelined units name their valid ports valid_in / valid_out; units with a ready/valid
 # handshake (TRI_UNIT) in_valid / out_valid, the run scripts' defaults. The warnings that
@@ -57,7 +60,7 @@ run_synth() { # unit (its cells line and stat tables into $out_dir/<unit>.synth.
 
 fail=0
 summary=()
-jobs_list=() # `unit kind`, the chips first (longest), then the units in name order
+jobs_list=() # `unit kind`, the chips first (longest), then the units, each largest first
 for pass in chips units; do
   for u in "${units[@]}"; do
     [[ $u == chip_* ]] && [ $pass = units ] && continue
