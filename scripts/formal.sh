@@ -170,8 +170,8 @@ mutant_job() {
 }
 
 # JOBS=N proofs (or mutants) at a time (default: the number of cores), the slowest proof
-# first (SLOW: its BMC takes 3.5 of the proofs' 6 CPU minutes), each one's line printed in
-# the order of the lists once all are done.
+# first (SLOW: its BMC took 205 of the proofs' 357 CPU seconds, 249 of 429 in another run),
+# each one's line printed in the order of the lists once all are done.
 jobs_max=${JOBS:-$(nproc 2>/dev/null || echo 2)}
 SLOW=tri_cache.cache
 res=$(mktemp -d)
@@ -182,12 +182,11 @@ spawn() { # <index in its list> <job function> <line>
 }
 mkdir -p "$out/proofs"
 if [ $mutate = 0 ]; then
-  for first in 1 0; do
-    for i in "${!PROOFS[@]}"; do
-      name=${PROOFS[$i]%%|*}
-      [ "$([ "$name" = "$SLOW" ] && echo 1 || echo 0)" = $first ] && selected "$name" && spawn "$i" proof_job "${PROOFS[$i]}"
-    done
+  order=()
+  for i in "${!PROOFS[@]}"; do
+    if [ "${PROOFS[$i]%%|*}" = "$SLOW" ]; then order=("$i" "${order[@]}"); else order+=("$i"); fi
   done
+  for i in "${order[@]}"; do selected "${PROOFS[$i]%%|*}" && spawn "$i" proof_job "${PROOFS[$i]}"; done
 else
   for i in "${!MUTANTS[@]}"; do selected "${MUTANTS[$i]%%|*}" && spawn "$i" mutant_job "${MUTANTS[$i]}"; done
 fi
