@@ -112,13 +112,14 @@ impl Chip {
     /// The host's setup as [`Chip::setup`] gives it, the DOP lanes computed when the DOP unit
     /// first needs them ([`DopLanes`]).
     pub fn query(&self, pose: &Pose, mode: Mode, traversal: Traversal) -> QueryResult {
-        let x = self.b.tree.coord_bound();
-        let frames = HostSetup::frames(&self.cfg, pose, x, self.tri_side);
-        let lanes = DopLanes::new(&self.cfg, pose, x);
-        traversal::run(&self.cfg, &self.a, &self.b, &frames, lanes, &self.host(pose), mode, traversal)
+        let (x, host) = (self.b.tree.coord_bound(), self.host(pose));
+        let frames = HostSetup::frames(&self.cfg, &host.rot, &host.t, x, self.tri_side);
+        let lanes = DopLanes::new(&self.cfg, &host.rot, &host.t, x);
+        traversal::run(&self.cfg, &self.a, &self.b, &frames, lanes, &host, mode, traversal)
     }
 
-    /// What the host settles uncertain pairs with at `pose`.
+    /// What the host settles uncertain pairs with at `pose`: the pose's rotation, computed
+    /// once per query.
     pub fn host(&self, pose: &Pose) -> Host<'_> {
         Host { a: self.geometry(0), b: self.geometry(1), rot: pose.rotation(), t: pose.translation() }
     }

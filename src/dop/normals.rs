@@ -30,10 +30,20 @@ pub struct DopNormals {
     /// zero beyond), so that a leaf's supports are computed for all normals at once in a
     /// loop the compiler vectorises ([`DopTree::dop`](super::DopTree::dop)).
     pub half: [[f64; HALF_LANES]; 3],
+    /// The hull triangles' planes {x : plane . x = 1} as columns (x, y, z of triangle t's
+    /// plane at `t`, zero beyond): the ray through a direction b leaves the hull through
+    /// the triangle(s) with the largest plane . b, which the host's cone search computes for
+    /// all at once in a loop the compiler vectorises.
+    pub planes: [[f64; MAX_HULL]; 3],
 }
 
 /// The largest k/2 of [`SUPPORTED_K`] rounded up to even (whole pairs of vector lanes).
 pub const HALF_LANES: usize = (SUPPORTED_K[SUPPORTED_K.len() - 1] / 2 + 1) & !1;
+
+/// The most triangles [`DopNormals::hull`] has for any of [`SUPPORTED_K`] (48, k = 26;
+/// checked when a set is built): the host's cone search keeps one value per triangle on
+/// the stack.
+pub const MAX_HULL: usize = 48;
 
 /// One triangle of the hull of the unit normals.
 #[derive(Debug)]
@@ -41,9 +51,6 @@ pub struct HullTriangle {
     pub j: [usize; 3],
     /// Inverse of the matrix with columns B_j0, B_j1, B_j2: lambda = inv * b.
     pub inv: Matrix3<f64>,
-    /// Its plane {x : plane . x = 1}: the ray through a direction b leaves the hull
-    /// through the triangle(s) with the largest plane . b.
-    pub plane: Vector3<f64>,
 }
 
 impl DopNormals {
@@ -68,21 +75,27 @@ impl DopNormals {
         let to_v = |n: &[i8; 3], s: f64| Vector3::new(n[0] as f64 * s, n[1] as f64 * s, n[2] as f64 * s);
         let b: Vec<Vector3<f64>> =
             half.iter().map(|n| to_v(n, 1.0)).chain(half.iter().map(|n| to_v(n, -1.0))).collect();
-        let hull = convex_hull_triangles(&b)
+        let js = convex_hull_triangles(&b);
+        assert!(js.len() <= MAX_HULL, "k = {k}: {} hull triangles, more than MAX_HULL", js.len());
+        let mut planes = [[0.0; MAX_HULL]; 3];
+        let hull = js
             .into_iter()
-            .map(|j| {
+            .enumerate()
+            .map(|(t, j)| {
                 let m = Matrix3::from_columns(&[b[j[0]], b[j[1]], b[j[2]]]);
                 let u = j.map(|i| b[i].normalize());
                 let n = (u[1] - u[0]).cross(&(u[2] - u[0]));
                 let n = if n.dot(&u[0]) < 0.0 { -n } else { n };
-                HullTriangle { j, inv: m.try_inverse().expect("hull triangles are not flat"), plane: n / n.dot(&u[0]) }
+                let plane = n / n.dot(&u[0]);
+                (0..3).for_each(|c| planes[c][t] = plane[c]);
+                HullTriangle { j, inv: m.try_inverse().expect("hull triangles are not flat") }
             })
             .collect();
         let mut cols = [[0.0; HALF_LANES]; 3];
         for (i, n) in half.iter().enumerate() {
             (0..3).for_each(|c| cols[c][i] = n[c] as f64);
         }
-        DopNormals { k, b, hull, half: cols }
+        DopNormals { k, b, hull, half: cols, planes }
     }
 
     /// Index of the antiparallel normal.

@@ -11,7 +11,7 @@
 //! rounding of B's vertices into A's frame, so that d'_i bounds the f64 geometry the
 //! oracle judges. c_i is then rounded up. In `nearest-even` mode nothing is padded.
 
-use crate::dop::normals::DopNormals;
+use crate::dop::normals::{DopNormals, MAX_HULL};
 use crate::chip::config::{ChipConfig, DopRounding};
 use crate::format::{Format, Rounding};
 use crate::golden::certificate::Certificate;
@@ -70,16 +70,18 @@ impl HostSetup {
 
     /// `b_coord_bound` is X = max |x|_inf over B's root DOP ([`DopTree::coord_bound`](crate::dop::DopTree::coord_bound)).
     pub fn new(cfg: &ChipConfig, pose: &Pose, b_coord_bound: f64, tri: TriSide) -> HostSetup {
-        let mut s = HostSetup::frames(cfg, pose, b_coord_bound, tri);
-        s.set_lanes(&DopLanes::new(cfg, pose, b_coord_bound).all());
+        let (rot, t) = (pose.rotation(), pose.translation());
+        let mut s = HostSetup::frames(cfg, &rot, &t, b_coord_bound, tri);
+        s.set_lanes(&DopLanes::new(cfg, &rot, &t, b_coord_bound).all());
         s
     }
 
     /// TRI_UNIT's part of the setup only, its DOP lanes empty: for a query whose DOP unit
-    /// computes its lanes when it needs them ([`DopLanes`]).
-    pub fn frames(cfg: &ChipConfig, pose: &Pose, b_coord_bound: f64, tri: TriSide) -> HostSetup {
-        let rot = pose.rotation();
-        let t = pose.translation();
+    /// computes its lanes when it needs them ([`DopLanes`]). `rot`, `t`: the pose's
+    /// [`rotation`](Pose::rotation) and [`translation`](Pose::translation), which the caller
+    /// computes once for the whole setup (the rotation's sines and cosines are a tenth of a
+    /// query that ends at the root).
+    pub fn frames(cfg: &ChipConfig, rot: &Matrix3<f64>, t: &Vector3<f64>, b_coord_bound: f64, tri: TriSide) -> HostSetup {
         let t_inf = t.amax();
         let rt = rot.transpose();
         let tab = -(rt * t);
@@ -93,7 +95,7 @@ impl HostSetup {
         // The f64 products and sums: |fl(R^T t) - R^T t| <= 4u |R^T| |t| per entry.
         let tab_err = 4.0 * u * (rt.abs() * t.abs()).max();
         let m_ab = affine(fmt, &rt, &tab);
-        let m_ba = affine(fmt, &rot, &t);
+        let m_ba = affine(fmt, rot, t);
         // The placement bound needs 4 lambda eta <= 1/2 for every leaf of B.
         let eta_ab = if 4.0 * tri.lambda_max_b * eta <= 0.5 { eta } else { f64::INFINITY };
         let [sa, sb] = tri.scale;
@@ -139,11 +141,12 @@ pub struct DopLanes {
 }
 
 impl DopLanes {
-    pub fn new(cfg: &ChipConfig, pose: &Pose, b_coord_bound: f64) -> DopLanes {
+    /// `rot`, `t` as [`HostSetup::frames`] takes them.
+    pub fn new(cfg: &ChipConfig, rot: &Matrix3<f64>, t: &Vector3<f64>, b_coord_bound: f64) -> DopLanes {
         DopLanes {
             normals: DopNormals::get(cfg.k).expect("k validated by the caller"),
-            rt: pose.rotation().transpose(),
-            t: pose.translation(),
+            rt: rot.transpose(),
+            t: *t,
             fmt: cfg.format.dop,
             outward: cfg.dop_rounding == DopRounding::Outward,
             x: b_coord_bound,
@@ -226,15 +229,73 @@ fn affine(fmt: Format, l: &Matrix3<f64>, t: &Vector3<f64>) -> Affine {
 /// The hull triangle whose cone contains `b`: the one the ray through b leaves the hull
 /// of the unit normals by (largest `plane . b`; among coplanar triangles of one face, one
 /// whose lambdas are >= 0), and its lambdas clamped to >= 0 (the clamping residual is padded).
+/// Each `plane . b` is computed once, for all triangles in one vectorised loop (nalgebra's
+/// `dot` order, `(x + y) + z`), and their largest taken with `>` (which skips a NaN as
+/// `f64::max` does, in one instruction): this search is most of a lane pair's setup.
 fn best_cone(n: &DopNormals, b: &Vector3<f64>) -> ([usize; 3], [f64; 3]) {
-    let top = n.hull.iter().map(|t| t.plane.dot(b)).fold(f64::NEG_INFINITY, f64::max);
+    let [px, py, pz] = &n.planes;
+    let dots: [f64; MAX_HULL] = std::array::from_fn(|t| (px[t] * b.x + py[t] * b.y) + pz[t] * b.z);
+    let dots = &dots[..n.hull.len()];
+    let top = dots.iter().fold(f64::NEG_INFINITY, |m, &d| if d > m { d } else { m });
     let (t, l) = n
         .hull
         .iter()
-        .filter(|t| t.plane.dot(b) >= top - 1e-12 * top.abs())
-        .map(|t| (t, t.inv * b))
+        .zip(dots)
+        .filter(|&(_, &d)| d >= top - 1e-12 * top.abs())
+        .map(|(t, _)| (t, t.inv * b))
         .max_by(|x, y| x.1.min().total_cmp(&y.1.min()))
         .expect("the hull is not empty");
     debug_assert!(l.min() >= -1e-12 * b.norm(), "direction {b:?} outside its cone: {l:?}");
     (t.j, [l.x.max(0.0), l.y.max(0.0), l.z.max(0.0)])
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::chip::config::SUPPORTED_K;
+    use rand::{Rng, SeedableRng};
+
+    /// The cone search as it was first written: nalgebra's `dot` per triangle, computed
+    /// again in the filter, and `f64::max`: another implementation of the same rule.
+    fn best_cone_by_dot(n: &DopNormals, b: &Vector3<f64>) -> ([usize; 3], [f64; 3]) {
+        let plane = |t: usize| Vector3::new(n.planes[0][t], n.planes[1][t], n.planes[2][t]);
+        let top = (0..n.hull.len()).map(|t| plane(t).dot(b)).fold(f64::NEG_INFINITY, f64::max);
+        let (t, l) = (0..n.hull.len())
+            .filter(|&t| plane(t).dot(b) >= top - 1e-12 * top.abs())
+            .map(|t| (&n.hull[t], n.hull[t].inv * b))
+            .max_by(|x, y| x.1.min().total_cmp(&y.1.min()))
+            .unwrap();
+        (t.j, [l.x.max(0.0), l.y.max(0.0), l.z.max(0.0)])
+    }
+
+    /// The same cone and lambdas, bit for bit, for every k: on the normals themselves and
+    /// sums of two (where triangles of a face tie), rotated by every multiple of 90 degrees
+    /// about each axis, and on random directions and poses.
+    #[test]
+    fn best_cone_matches_the_search_by_dot() {
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(7);
+        for k in SUPPORTED_K {
+            let n = DopNormals::get(k).unwrap();
+            let mut dirs: Vec<Vector3<f64>> = n.b.iter().flat_map(|x| n.b.iter().map(move |y| x + y)).filter(|d| d.norm() > 0.0).collect();
+            dirs.extend(n.b.iter().copied());
+            for q in 0..4 {
+                for axis in 0..3 {
+                    let mut deg = [0.0; 3];
+                    deg[axis] = 90.0 * q as f64;
+                    let r = Pose { rot_deg: deg, t: [0.0; 3] }.rotation().transpose();
+                    dirs.extend(n.b.iter().map(|b| r * b));
+                }
+            }
+            for _ in 0..2000 {
+                let pose = Pose { rot_deg: std::array::from_fn(|_| rng.random_range(-180.0..180.0)), t: [0.0; 3] };
+                let b = n.b[rng.random_range(0..k)];
+                dirs.push(pose.rotation().transpose() * b);
+                dirs.push(Vector3::new(rng.random_range(-1.0..1.0), rng.random_range(-1.0..1.0), rng.random_range(-1.0..1.0)));
+            }
+            for d in &dirs {
+                let (fast, slow) = (best_cone(n, d), best_cone_by_dot(n, d));
+                assert_eq!((fast.0, fast.1.map(f64::to_bits)), (slow.0, slow.1.map(f64::to_bits)), "k = {k}, direction {d:?}");
+            }
+        }
+    }
 }

@@ -132,7 +132,10 @@ pub(crate) struct Engine<'a> {
     uncertain: Vec<(u32, u32)>,
     live: u64,
     dop_unit: dop_unit::TransformCache<'a>,
-    tri_unit: tri_unit::TriUnit<'a>,
+    /// TRI_UNIT, made at the first leaf pair (a query that ends among inner nodes, at the
+    /// root say, does not pay for its tables and constants), with what it is made from.
+    tri_unit: Option<tri_unit::TriUnit<'a>>,
+    tri_setup: (&'a ChipConfig, &'a HostSetup),
     pub(crate) counters: Counters,
     pub(crate) stop: bool,
 }
@@ -168,7 +171,9 @@ impl<'a> Engine<'a> {
         c.tri_fetches_a += fetch_a;
         c.tri_fetches += fetch_a + self.held_tri[1].fetch(self.b.tri_record(tb)) as u64;
         let (a, b, [words_a, words_b]) = (self.a, self.b, &mut self.words);
-        let res = self.tri_unit.test(ta, words_a.get(ta, || a.tri(ta)), tb, words_b.get(tb, || b.tri(tb)));
+        let (cfg, setup) = self.tri_setup;
+        let tri_unit = self.tri_unit.get_or_insert_with(|| tri_unit::TriUnit::new(cfg.format.tri, cfg.tri_rounding, setup, a.tri_count(), b.tri_count()));
+        let res = tri_unit.test(ta, words_a.get(ta, || a.tri(ta)), tb, words_b.get(tb, || b.tri(tb)));
         let hit = if res.uncertain {
             self.counters.uncertain += 1;
             self.uncertain.push((ta, tb));
@@ -230,7 +235,8 @@ pub fn run(
         uncertain: vec![],
         live: 0,
         dop_unit: dop_unit::TransformCache::lazy(cfg.format.dop, cfg.dop_rounding.op(), setup, lanes, &a.tree, &b.tree),
-        tri_unit: tri_unit::TriUnit::new(cfg.format.tri, cfg.tri_rounding, setup, a.tri_count(), b.tri_count()),
+        tri_unit: None,
+        tri_setup: (cfg, setup),
         counters: Counters::default(),
         stop: false,
     };
