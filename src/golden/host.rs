@@ -79,8 +79,8 @@ impl HostSetup {
     /// TRI_UNIT's part of the setup only, its DOP lanes empty: for a query whose DOP unit
     /// computes its lanes when it needs them ([`DopLanes`]). `rot`, `t`: the pose's
     /// [`rotation`](Pose::rotation) and [`translation`](Pose::translation), which the caller
-    /// computes once for the whole setup (the rotation's sines and cosines are a tenth of a
-    /// query that ends at the root).
+    /// computes once for the whole setup (its sines, cosines and angle reductions are a
+    /// noticeable part of a query that ends at the root).
     pub fn frames(cfg: &ChipConfig, rot: &Matrix3<f64>, t: &Vector3<f64>, b_coord_bound: f64, tri: TriSide) -> HostSetup {
         let t_inf = t.amax();
         let rt = rot.transpose();
@@ -270,7 +270,9 @@ mod tests {
 
     /// The same cone and lambdas, bit for bit, for every k: on the normals themselves and
     /// sums of two (where triangles of a face tie), rotated by every multiple of 90 degrees
-    /// about each axis, and on random directions and poses.
+    /// about each axis, and on random directions and poses. Independently of how either
+    /// search reads the planes, the cone contains the direction: its normals weighted by the
+    /// lambdas give it back.
     #[test]
     fn best_cone_matches_the_search_by_dot() {
         let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(7);
@@ -295,6 +297,8 @@ mod tests {
             for d in &dirs {
                 let (fast, slow) = (best_cone(n, d), best_cone_by_dot(n, d));
                 assert_eq!((fast.0, fast.1.map(f64::to_bits)), (slow.0, slow.1.map(f64::to_bits)), "k = {k}, direction {d:?}");
+                let back: Vector3<f64> = (0..3).map(|l| n.b[fast.0[l]] * fast.1[l]).sum();
+                assert!((back - d).norm() <= 1e-9 * d.norm(), "k = {k}: direction {d:?} not in its cone {:?} ({back:?})", fast.0);
             }
         }
     }
