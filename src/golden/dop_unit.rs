@@ -19,12 +19,22 @@ use std::cell::Cell;
 /// [`dop_overlap`]'s bit for bit (proof: docs/ACCURACY.md, "The DOP unit in f64"; checked
 /// in check mode, [`checking`]); this only saves time.
 pub struct TransformCache<'a> {
+    /// A's DOPs last read (a leaf's is computed from its triangle when read, an inner node's
+    /// widened from its stored format, and an A node meets several of B's in a row), kept
+    /// for the thread's next query of the same object. Beside the rest, so that a test reads
+    /// A's DOP in place while it works on B's side.
+    held: Held<Dop>,
+    b: BSide<'a>,
+}
+
+/// The lanes and B's transformed DOPs: the [`TransformCache`] but A's held DOPs.
+struct BSide<'a> {
     f: Format,
     r: Rounding,
     /// The lanes' words (`j`, `cmat`, `cvec`); [`lazy`](TransformCache::lazy): filled in
     /// once `pending` is done.
     setup: Cow<'a, HostSetup>,
-    /// The same words gathered for [`fill`](TransformCache::fill)'s loop.
+    /// The same words gathered for [`fill`](BSide::fill)'s loop.
     words: LaneWords,
     /// The lanes still to compute, and the mirror pairs computed so far.
     pending: Option<(DopLanes, Vec<[Lane; 2]>)>,
@@ -37,10 +47,6 @@ pub struct TransformCache<'a> {
     memo: bool,
     /// A's and B's DOP trees.
     trees: [&'a DopTree; 2],
-    /// A's DOPs last read (a leaf's is computed from its triangle when read, an inner node's
-    /// widened from its stored format, and an A node meets several of B's in a row), kept
-    /// for the thread's next query of the same object.
-    held: Held<Dop>,
     /// B's DOP last read, and its node (`u32::MAX`: none).
     b_dop: (u32, Dop),
     /// Check mode ([`checking`]), read once.
@@ -55,7 +61,7 @@ impl<'a> TransformCache<'a> {
     fn with(f: Format, r: Rounding, setup: Cow<'a, HostSetup>, lanes: Option<DopLanes>, a: &'a DopTree, b: &'a DopTree) -> Self {
         let k = lanes.as_ref().map_or(setup.j.len(), |l| l.k());
         let p = f.frac_bits() as i32 + 1;
-        TransformCache {
+        let b = BSide {
             f,
             r,
             words: LaneWords::of(&setup),
@@ -67,10 +73,10 @@ impl<'a> TransformCache<'a> {
             rows: Rows::take(b.len()),
             memo: true,
             trees: [a, b],
-            held: SPARE_HELD.take().of(a.id()),
             b_dop: (u32::MAX, Dop::default()),
             check: checking(),
-        }
+        };
+        TransformCache { held: SPARE_HELD.take().of(a.id()), b }
     }
 
     /// With lanes computed when first needed, a mirror pair at a time (`frames`: the setup
@@ -82,13 +88,13 @@ impl<'a> TransformCache<'a> {
 
     /// The DOP's size.
     pub fn k(&self) -> usize {
-        self.k
+        self.b.k
     }
 
     /// Transforms B's DOP anew at every test, as WSCG'03 Algorithm 1 does in software: the
     /// recursive traversal's time then is that algorithm's (the decisions are the same).
     pub fn forget_rows(&mut self) {
-        self.memo = false;
+        self.b.memo = false;
     }
 
     /// The DOP unit: does B's node `nb` overlap A's node `na`? First every lane's interval
@@ -98,22 +104,20 @@ impl<'a> TransformCache<'a> {
     /// [`Held`] lines. In check mode ([`checking`]) the answer is compared with
     /// [`dop_overlap`]'s.
     pub fn overlap(&mut self, nb: u32, na: u32) -> bool {
-        let a = self.trees[0];
-        // The held lines lent out for this test, so that A's DOP is read in place.
-        let mut held = std::mem::take(&mut self.held);
-        let e = held.get_in(na, |line| a.dop_into(na, line));
-        let overlap = !(self.pending.is_some() && self.lazy_separated(nb, e)) && {
-            self.complete();
-            self.bounded(nb, e)
+        let a = self.b.trees[0];
+        let b = &mut self.b;
+        let e = self.held.get_in(na, |line| a.dop_into(na, line));
+        let overlap = !(b.pending.is_some() && b.lazy_separated(nb, e)) && {
+            b.complete();
+            b.bounded(nb, e)
         };
-        if self.check {
-            self.complete();
+        if b.check {
+            b.complete();
             // A's DOP read anew, not the held one: the check covers the held lines too.
-            let (d, e) = (self.trees[1].dop(nb), a.dop(na));
-            let want = dop_overlap(self.f, self.r, &self.setup, &d, &e);
+            let (d, e) = (b.trees[1].dop(nb), a.dop(na));
+            let want = dop_overlap(b.f, b.r, &b.setup, &d, &e);
             assert_eq!(overlap, want, "check mode: the DOP unit's thresholds said overlap = {overlap}, the lanes {want}: d {d:?}, e {e:?}");
         }
-        self.held = held;
         overlap
     }
 
@@ -122,7 +126,7 @@ impl<'a> TransformCache<'a> {
     #[inline]
     pub fn prefetch_a(&self, na: u32) {
         if !self.held.holds(na) {
-            self.trees[0].prefetch(na);
+            self.b.trees[0].prefetch(na);
         }
     }
 
@@ -130,12 +134,15 @@ impl<'a> TransformCache<'a> {
     /// rows or, before its first test, its DOP.
     #[inline]
     pub fn prefetch_b(&self, nb: u32) {
-        match self.rows.slot[nb as usize] {
-            u32::MAX => self.trees[1].prefetch(nb),
-            b => crate::dop::prefetch(self.rows.thresholds.as_ptr().wrapping_add(b as usize)),
+        let b = &self.b;
+        match b.rows.slot[nb as usize] {
+            u32::MAX => b.trees[1].prefetch(nb),
+            n => crate::dop::prefetch(b.rows.thresholds.as_ptr().wrapping_add(n as usize)),
         }
     }
+}
 
+impl BSide<'_> {
     /// Computes pending mirror pairs until a lane is surely separated (true), or all are.
     fn lazy_separated(&mut self, nb: u32, e: &[f64]) -> bool {
         let (h, q, est) = (self.k / 2, self.q, self.estimator());
@@ -175,7 +182,7 @@ impl<'a> TransformCache<'a> {
         }
     }
 
-    /// [`overlap`](Self::overlap) with every lane's words known.
+    /// [`overlap`](TransformCache::overlap) with every lane's words known.
     fn bounded(&mut self, nb: u32, e: &Dop) -> bool {
         let h = self.k / 2;
         let block = self.block(nb);
@@ -251,17 +258,17 @@ impl<'a> TransformCache<'a> {
             (set[i], clear[i]) = est.thresholds(q, [p[0][i], p[1][i], p[2][i]], w.cv[i]);
         }
         // The padding lanes' thresholds never decide: -inf is above no e, below any other.
-        let mut t = [0.0; 4 * H];
-        for half in 0..2 {
-            for m in 0..H {
-                let (s, c) = if m < h { (set[half * H + m], clear[half * H + m]) } else { (f64::NEG_INFINITY, f64::NEG_INFINITY) };
-                (t[half * 2 * H + m], t[half * 2 * H + H + m]) = (s, c);
-            }
-        }
+        // Written in place (a block built on the stack was copied into the Vec).
         let rows = &mut self.rows;
         let block = rows.blocks.len();
         rows.blocks.push(Block { node: nb, known: 0, exact: u32::MAX });
-        rows.thresholds.push(t);
+        rows.thresholds.push([f64::NEG_INFINITY; 4 * H]);
+        let t = &mut rows.thresholds[block];
+        for half in 0..2 {
+            for m in 0..h {
+                (t[half * 2 * H + m], t[half * 2 * H + H + m]) = (set[half * H + m], clear[half * H + m]);
+            }
+        }
         block
     }
 
@@ -343,7 +350,7 @@ impl Rows {
 
 impl Drop for TransformCache<'_> {
     fn drop(&mut self) {
-        let mut rows = std::mem::take(&mut self.rows);
+        let mut rows = std::mem::take(&mut self.b.rows);
         rows.forget();
         if rows.bytes() <= SPARE_BYTES {
             SPARE_ROWS.set(rows);
@@ -380,7 +387,7 @@ impl Estimator {
 /// Lanes per half in [`Rows::thresholds`]: at least k/2 for every k, even.
 const H: usize = HALF_LANES;
 
-/// Lanes in [`LaneWords`] and [`TransformCache::fill`]'s arrays: a half of H, then the
+/// Lanes in [`LaneWords`] and [`BSide::fill`]'s arrays: a half of H, then the
 /// mirrors' half.
 const LANES: usize = 2 * H;
 

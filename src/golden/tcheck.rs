@@ -167,8 +167,8 @@ pub enum Decision {
     /// The chip's verdict: intersecting, separate, or (never from `decide` itself) uncertain.
     Verdict(Option<bool>),
     /// The signs proven sure do not decide; [`settle`] may prove the verdict uncertain
-    /// from these vertices.
-    Open([VertexHi; 3]),
+    /// from the vertices [`decide`] wrote.
+    Open,
     /// Nothing proven: a value or an enclosure may have overflowed.
     Unfit,
 }
@@ -182,7 +182,9 @@ pub enum Decision {
 /// bound), otherwise any. Kleene logic on the sets of results the signs may have
 /// ([`Maybe`]) gives a set that holds the chip's verdict: one member is the chip's. With
 /// `EXACT`, the mapped vertices are the chip's own words (gap 0): dearer, and decides more.
-pub fn decide<const EXACT: bool>(cert: &Certificate, up: &Upper, s1: &Stage1Hi, tri: &TriWord) -> Decision {
+/// The vertices are written into `v` (the caller's, kept between calls: zeroing and
+/// returning them cost 2% of a contact query), every field before it is read.
+pub fn decide<const EXACT: bool>(cert: &Certificate, up: &Upper, s1: &Stage1Hi, tri: &TriWord, v: &mut [VertexHi; 3]) -> Decision {
     let x = tri.v_exact as usize;
     let pa = tri.v.map(|p| p.map(f64::abs));
     // Coordinate i of mapped vertex k and its gap from magnitude m: in f64, its products
@@ -203,7 +205,6 @@ pub fn decide<const EXACT: bool>(cert: &Certificate, up: &Upper, s1: &Stage1Hi, 
     };
     // z first: a vertex triangle surely on one side of the plane needs nothing else.
     let mut fits = s1.fits;
-    let mut v = [VertexHi::default(); 3];
     let (mut err, mut mz, mut ez) = ([0.0; 3], [0.0; 3], [0.0; 3]);
     let mut sz = [None; 3];
     for (k, vk) in v.iter_mut().enumerate() {
@@ -241,9 +242,9 @@ pub fn decide<const EXACT: bool>(cert: &Certificate, up: &Upper, s1: &Stage1Hi, 
     if !fits {
         return Decision::Unfit;
     }
-    match edges_hi(cert, up, &v, sz.map(|z| z.map_or(Maybe::ANY, Maybe::sure)), None).map(Maybe::single) {
+    match edges_hi(cert, up, v, sz.map(|z| z.map_or(Maybe::ANY, Maybe::sure)), None).map(Maybe::single) {
         Some(Some(verdict)) => Decision::Verdict(verdict),
-        Some(None) => Decision::Open(v),
+        Some(None) => Decision::Open,
         None => Decision::Unfit,
     }
 }

@@ -5,16 +5,16 @@ use super::certificate::Certificate;
 use super::enclosure::{checking, Upper};
 use super::host::{Affine, HostSetup};
 use super::memory::TriWord;
-use super::tcheck::{decide, edges, edges_in, mag_lo, or3, settle, stage1, stage1_hi, Decision, Stage1, Stage1Hi};
+use super::tcheck::{decide, edges, edges_in, mag_lo, or3, settle, stage1, stage1_hi, Decision, Stage1, Stage1Hi, VertexHi};
 use crate::format::{Format, Rounding};
 use std::cell::Cell;
 
 /// One direction decided with the enclosures ([`decide`], `EXACT` as there) and, where that
 /// leaves it open, proven uncertain if it can be ([`settle`]); `None`: neither.
-fn attempt<const EXACT: bool>(cert: &Certificate, up: &Upper, s1: &mut Leaf, leaf: &TriWord, frame: &Affine, v: &TriWord) -> Option<Option<bool>> {
-    match decide::<EXACT>(cert, up, &s1.hi, v) {
+fn attempt<const EXACT: bool>(cert: &Certificate, up: &Upper, s1: &mut Leaf, leaf: &TriWord, frame: &Affine, v: &TriWord, vs: &mut [VertexHi; 3]) -> Option<Option<bool>> {
+    match decide::<EXACT>(cert, up, &s1.hi, v, vs) {
         Decision::Verdict(d) => Some(d),
-        Decision::Open(vs) => settle(cert, up, s1.lo.get_or_insert_with(|| Box::new(mag_lo(leaf, frame))), v, &vs),
+        Decision::Open => settle(cert, up, s1.lo.get_or_insert_with(|| Box::new(mag_lo(leaf, frame))), v, vs),
         Decision::Unfit => None,
     }
 }
@@ -62,6 +62,8 @@ pub struct TriUnit<'a> {
     /// Per triangle of B: M_B(b) . M_AB; per triangle of A: M_A(a) . M_BA.
     mb_b: StageOneCache,
     mb_a: StageOneCache,
+    /// [`decide`]'s vertices, written anew by each call.
+    vertices: [VertexHi; 3],
 }
 
 /// Stage 1 of one leaf (triangle `tri`): enclosed always; its magnitudes from below once
@@ -128,7 +130,7 @@ impl<'a> TriUnit<'a> {
     pub fn new(f: Format, r: Rounding, setup: &'a HostSetup, tris_a: usize, tris_b: usize) -> Self {
         let [mb_a, mb_b] = SPARE.take();
         let (cert, up) = (Certificate::new(f, r), Upper::new(f));
-        TriUnit { f, r, cert, up, setup, mb_b: mb_b.sized(tris_b), mb_a: mb_a.sized(tris_a) }
+        TriUnit { f, r, cert, up, setup, mb_b: mb_b.sized(tris_b), mb_a: mb_a.sized(tris_a), vertices: Default::default() }
     }
 
     /// Triangle `ta` of A (word `a`) against `tb` of B (word `b`). A sure hit in the first
@@ -150,7 +152,8 @@ impl<'a> TriUnit<'a> {
         let cache = if ab { &mut self.mb_b } else { &mut self.mb_a };
         let s1 = cache.get(t, || stage1_hi(f, r, &up, leaf, frame, beta, scale));
         // in f64 first, then with the chip's own vertex words
-        let fast = attempt::<false>(&self.cert, &up, s1, leaf, frame, v).or_else(|| attempt::<true>(&self.cert, &up, s1, leaf, frame, v));
+        let vs = &mut self.vertices;
+        let fast = attempt::<false>(&self.cert, &up, s1, leaf, frame, v, vs).or_else(|| attempt::<true>(&self.cert, &up, s1, leaf, frame, v, vs));
         if let Some(d) = fast.filter(|_| !checking()) {
             return d;
         }
