@@ -529,13 +529,7 @@ impl Scene {
 
     /// [`parse`](Self::parse) with the command line's `flags` over the scene's own keys.
     pub fn parse_with(text: &str, name: &str, flags: Flags) -> Result<Scene, String> {
-        let f: File = toml::from_str(text).map_err(|e| {
-            let line = e.span().map(|s| text[..s.start].matches('\n').count() + 1);
-            match line {
-                Some(l) => format!("{name}:{l}: {}", e.message()),
-                None => format!("{name}: {}", e.message()),
-            }
-        })?;
+        let f: File = toml::from_str(text).map_err(|e| toml_error(text, name, &e))?;
         let err = |m: String| format!("{name}: {m}");
         let (preset, architecture, cfg) = chip(f.chip, text, flags.preset).map_err(|e| format!("{name}:{e}"))?;
         f.stack_engine.check().map_err(err)?;
@@ -587,6 +581,20 @@ impl Scene {
     }
 }
 
+
+/// A TOML error with its file and line; a table header (`[pose]`) where the key takes a
+/// list of tables gets what to write instead (serde's own words, "invalid type: map,
+/// expected a sequence", do not say it).
+fn toml_error(text: &str, name: &str, e: &toml::de::Error) -> String {
+    let Some(span) = e.span() else { return format!("{name}: {}", e.message()) };
+    let line = text[..span.start].matches('\n').count() + 1;
+    let header = text[span.start..].lines().next().unwrap_or("").trim();
+    let key = header.strip_prefix('[').and_then(|h| h.strip_suffix(']')).filter(|k| !k.starts_with('['));
+    match key.filter(|_| e.message().contains("expected a sequence")) {
+        Some(k) => format!("{name}:{line}: [{k}] is one table, and {k} takes a list of them: write [[{k}]], one per entry"),
+        None => format!("{name}:{line}: {}", e.message()),
+    }
+}
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -619,6 +627,9 @@ mod tests {
         assert!(e.contains("no pose"), "{e}");
         let e = Scene::parse("[objects]\na = \"x\"\nb = \"y\"\nbogus = 1\n", "s.toml").unwrap_err();
         assert!(e.starts_with("s.toml:4:"), "{e}");
+        // one [pose] table where the key takes a list
+        let e = Scene::parse("[objects]\na = \"x\"\nb = \"y\"\n[pose]\nrot_deg = [0, 0, 0]\nt = [0, 0, 0]\n", "s.toml").unwrap_err();
+        assert!(e.starts_with("s.toml:4:") && e.contains("write [[pose]]"), "{e}");
     }
 
     #[test]
