@@ -258,7 +258,7 @@ impl BSide<'_> {
             (set[i], clear[i]) = est.thresholds(q, [p[0][i], p[1][i], p[2][i]], w.cv[i]);
         }
         // The padding lanes' thresholds never decide: -inf is above no e, below any other.
-        // Written in place (a block built on the stack was copied into the Vec).
+        // Written in place: a block built on the stack is copied into the Vec.
         let rows = &mut self.rows;
         let block = rows.blocks.len();
         rows.blocks.push(Block { node: nb, known: 0, exact: u32::MAX });

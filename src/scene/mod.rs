@@ -581,20 +581,20 @@ impl Scene {
     }
 }
 
-
 /// A TOML error with its file and line; a table header (`[pose]`) where the key takes a
 /// list of tables gets what to write instead (serde's own words, "invalid type: map,
 /// expected a sequence", do not say it).
 fn toml_error(text: &str, name: &str, e: &toml::de::Error) -> String {
     let Some(span) = e.span() else { return format!("{name}: {}", e.message()) };
-    let line = text[..span.start].matches('\n').count() + 1;
-    let header = text[span.start..].lines().next().unwrap_or("").trim();
+    let line = line_of(text, span.start);
+    let header = text[span.start..].lines().next().unwrap_or("").split('#').next().unwrap_or("").trim();
     let key = header.strip_prefix('[').and_then(|h| h.strip_suffix(']')).filter(|k| !k.starts_with('['));
     match key.filter(|_| e.message().contains("expected a sequence")) {
         Some(k) => format!("{name}:{line}: [{k}] is one table, and {k} takes a list of them: write [[{k}]], one per entry"),
         None => format!("{name}:{line}: {}", e.message()),
     }
 }
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -628,7 +628,7 @@ mod tests {
         let e = Scene::parse("[objects]\na = \"x\"\nb = \"y\"\nbogus = 1\n", "s.toml").unwrap_err();
         assert!(e.starts_with("s.toml:4:"), "{e}");
         // one [pose] table where the key takes a list
-        let e = Scene::parse("[objects]\na = \"x\"\nb = \"y\"\n[pose]\nrot_deg = [0, 0, 0]\nt = [0, 0, 0]\n", "s.toml").unwrap_err();
+        let e = Scene::parse("[objects]\na = \"x\"\nb = \"y\"\n[pose] # one\nrot_deg = [0, 0, 0]\nt = [0, 0, 0]\n", "s.toml").unwrap_err();
         assert!(e.starts_with("s.toml:4:") && e.contains("write [[pose]]"), "{e}");
     }
 
