@@ -416,6 +416,9 @@ fn half_block(k: usize) -> usize {
     (k / 2).next_multiple_of(4).min(H)
 }
 
+// Every size half_block gives has its arm in BSide::bounded (with H above 16, 16 would not).
+const _: () = assert!(H <= 16, "a k above 32: give BSide::bounded an arm for 16");
+
 /// Lanes in [`LaneWords`] and [`BSide::fill`]'s arrays: a half of H, then the
 /// mirrors' half.
 const LANES: usize = 2 * H;
