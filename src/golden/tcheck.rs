@@ -183,7 +183,8 @@ pub enum Decision {
 /// ([`Maybe`]) gives a set that holds the chip's verdict: one member is the chip's. With
 /// `EXACT`, the mapped vertices are the chip's own words (gap 0): dearer, and decides more.
 /// The vertices are written into `v`, every field before it is read: the caller's, kept
-/// between calls (zeroing them was 1.3% of a bunny contact query's instructions, callgrind).
+/// between calls (zeroing them was 1.3% of a bunny contact query's instructions: callgrind,
+/// `golden_loop bunny 1.0`).
 pub fn decide<const EXACT: bool>(cert: &Certificate, up: &Upper, s1: &Stage1Hi, tri: &TriWord, v: &mut [VertexHi; 3]) -> Decision {
     let x = tri.v_exact as usize;
     let pa = tri.v.map(|p| p.map(f64::abs));
