@@ -16,6 +16,7 @@ use crate::fold;
 use crate::golden::tri_unit::TriUnit as Values;
 use crate::golden::tri_unit::TriResult;
 use crate::golden::memory::{Held, ObjectImage, TriWord};
+use crate::traversal::{keep_words, spare_words};
 
 /// A verdict at TRI_UNIT's output: the triangle pair (A's, B's) and the result.
 #[derive(Clone, Copy, Debug)]
@@ -41,9 +42,9 @@ pub struct TriUnit<'a> {
     a: &'a ObjectImage,
     b: &'a ObjectImage,
     /// The triangle words used last, as the golden model holds them: made from the f64
-    /// triangle (M_B's inverse) only when not held.
-    words_a: Held<TriWord>,
-    words_b: Held<TriWord>,
+    /// triangle (M_B's inverse) only when not held, also by the thread's query before
+    /// ([`spare_words`]).
+    words: [Held<TriWord>; 2],
     values: Values<'a>,
     /// Pairs taken and not given out.
     open: Delay<TriOut>,
@@ -51,6 +52,12 @@ pub struct TriUnit<'a> {
     interval: u64,
     /// The cycle of the first pair taken, where the folded unit's counter starts.
     first: Option<u64>,
+}
+
+impl Drop for TriUnit<'_> {
+    fn drop(&mut self) {
+        keep_words(std::mem::take(&mut self.words));
+    }
 }
 
 impl<'a> TriUnit<'a> {
@@ -62,7 +69,7 @@ impl<'a> TriUnit<'a> {
             ii => fold::tri_unit_latency(&fold::tri_unit_plan(ii as usize, fold::plan::Binding::Shared)?) as u32,
         };
         let open = Delay::with_capacity(latency, p.tri_fifo as usize);
-        Ok(TriUnit { a, b, words_a: Held::default(), words_b: Held::default(), values, open, interval: p.tri_interval as u64, first: None })
+        Ok(TriUnit { a, b, words: spare_words(a, b), values, open, interval: p.tri_interval as u64, first: None })
     }
 
     /// `in_ready` in cycle `now`: the result FIFO has room for one more pair, and the
@@ -80,8 +87,8 @@ impl<'a> TriUnit<'a> {
     /// Takes the pair of triangles `(ta, tb)` at edge `now`.
     pub fn take(&mut self, now: u64, ta: u32, tb: u32) {
         self.first.get_or_insert(now);
-        let (a, b) = (self.a, self.b);
-        let res = self.values.test(ta, self.words_a.get(ta, || a.tri(ta)), tb, self.words_b.get(tb, || b.tri(tb)));
+        let ((a, b), [wa, wb]) = ((self.a, self.b), &mut self.words);
+        let res = self.values.test(ta, wa.get(ta, || a.tri(ta)), tb, wb.get(tb, || b.tri(tb)));
         self.open.push(now, TriOut { a: ta, b: tb, res });
     }
 

@@ -221,7 +221,7 @@ pub fn run(
     mode: Mode,
     traversal: Traversal,
 ) -> QueryResult {
-    let [words_a, words_b] = SPARE_WORDS.take();
+    let [words_a, words_b] = spare_words(a, b);
     let mut e = Engine {
         a,
         b,
@@ -229,7 +229,7 @@ pub fn run(
         mode,
         held_node: [NodeCache::new(cfg.node_cache), NodeCache::new(cfg.node_cache)],
         held_tri: [TriCache::new(cfg.tri_cache), TriCache::new(1)],
-        words: [words_a.of(a.tree.id()), words_b.of(b.tree.id())],
+        words: [words_a, words_b],
         host,
         pairs: vec![],
         uncertain: vec![],
@@ -249,7 +249,7 @@ pub fn run(
         Traversal::Fifo => run_d_cntr(&mut e, Order::Fifo),
         Traversal::Lifo => run_d_cntr(&mut e, Order::Lifo),
     }
-    SPARE_WORDS.set(e.words);
+    keep_words(e.words);
     let mut c = e.counters;
     let [node_bytes, tri_bytes] = e.layout.record_bytes();
     c.memory_bytes = c.node_fetches * node_bytes + c.tri_fetches * tri_bytes;
@@ -262,6 +262,20 @@ pub fn run(
 thread_local! {
     /// [`Engine::words`]' lines, kept for the thread's next query.
     static SPARE_WORDS: Cell<[Held<TriWord>; 2]> = Cell::default();
+}
+
+/// The thread's triangle-word lines for a query of `a` against `b`, A's and B's: what the
+/// thread's query before made of these objects is held. The golden traversal and the cycle
+/// model's TRI_UNIT take them, and give them back with [`keep_words`] (made anew per chip,
+/// they were two thirds of the cycle model's time on a 447-clock query).
+pub fn spare_words(a: &ObjectImage, b: &ObjectImage) -> [Held<TriWord>; 2] {
+    let [wa, wb] = SPARE_WORDS.take();
+    [wa.of(a.tree.id()), wb.of(b.tree.id())]
+}
+
+/// Keeps the lines of [`spare_words`] for the thread's next query.
+pub fn keep_words(words: [Held<TriWord>; 2]) {
+    SPARE_WORDS.set(words);
 }
 
 /// DATE'05's traversal: every pair of D_CNTR's queue DOP-tested in turn, a leaf pair's
