@@ -169,7 +169,7 @@ fn run(chip: &Chip, pose: &Pose, lifo: bool, mode: Mode, p: Params, reader: Read
     run_query(&mut c, &chip.control_writes(order(lifo), mode, &p), &d, true, |_, p| {
         assert_eq!(p.map(|v| v.len()), Some(PROBES.len()));
         Ok(())
-    }, None)
+    }, false)
     .map_err(|e| e.0)
 }
 

@@ -102,7 +102,7 @@ impl Case {
                     w.cycle(t, &p.unwrap()).map_err(|e| e.to_string())?;
                 }
                 Ok(())
-            }, None)
+            }, false)
             .unwrap_or_else(|e| panic!("{}: {e}", self.name));
             out.push(tr);
         }

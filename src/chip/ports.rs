@@ -61,6 +61,13 @@ pub trait Clocked {
     fn fault(&self) -> Option<String> {
         None
     }
+    /// With the inputs `i` held, skips the clocks in which this level only waits, at most
+    /// `most()` (asked only if it waits), the trace the same as clocking them; returns how
+    /// many (0: clock it). The cycle model skips ([`quiet_until`](crate::cycle::chip::Chip::quiet_until));
+    /// the other levels clock every cycle.
+    fn wait(&mut self, _i: &ChipIn, _most: impl Fn() -> u64) -> u64 {
+        0
+    }
 }
 
 impl<C: Clocked + ?Sized> Clocked for &mut C {
@@ -74,6 +81,10 @@ impl<C: Clocked + ?Sized> Clocked for &mut C {
 
     fn fault(&self) -> Option<String> {
         (**self).fault()
+    }
+
+    fn wait(&mut self, i: &ChipIn, most: impl Fn() -> u64) -> u64 {
+        (**self).wait(i, most)
     }
 }
 

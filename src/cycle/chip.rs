@@ -489,6 +489,14 @@ impl Clocked for Chip<'_> {
         }
     }
 
+    #[inline]
+    fn wait(&mut self, i: &ChipIn, most: impl Fn() -> u64) -> u64 {
+        let Some(t) = self.quiet_until(i) else { return 0 };
+        let n = t.saturating_sub(self.now).min(most());
+        self.skip(n, t, i);
+        n
+    }
+
     fn step(&mut self, i: &ChipIn, probe: bool) -> Option<Vec<u64>> {
         let c = self.logic;
         let (accept, give) = (c.accepts(i), c.gives(i));

@@ -148,18 +148,16 @@ pub struct Drive {
 /// Runs one query: the register `writes` one per clock, `start` (cycle 0), then clocks
 /// until `done`, the memory model serving requests and the host reading results by
 /// `d.reader`. `observe(cycle, probes)` sees every cycle from 0 on with the [`PROBES`]
-/// values if `probe` is set (a VCD, a lockstep check). Without `probe`, stretches in which
-/// the cycle model only waits may be skipped in one step (`skip(chip, inputs, most)`: the
-/// model's [`quiet_until`](super::chip::Chip::quiet_until) and
-/// [`skip`](super::chip::Chip::skip); `most()`, the clocks before the driver has something
-/// to do, asked only if the chip waits: most clocks it does not).
+/// values if `probe` is set (a VCD, a lockstep check). With `skip` and without `probe`,
+/// stretches in which the chip only waits are skipped in one step ([`Clocked::wait`], told
+/// the clocks before the driver has something to do).
 pub fn run_query<C: Clocked>(
     chip: &mut C,
     writes: &[(u32, u32)],
     d: &Drive,
     probe: bool,
     mut observe: impl FnMut(u64, Option<Vec<u64>>) -> Result<(), String>,
-    mut skip: Option<&mut dyn FnMut(&mut C, &ChipIn, &dyn Fn() -> u64) -> u64>,
+    skip: bool,
 ) -> Result<ChipTrace, ChipError> {
     d.memory.check().map_err(ChipError)?;
     let idle = ChipIn { res_ready: true, ..Default::default() };
@@ -203,7 +201,7 @@ pub fn run_query<C: Clocked>(
         }
         // a wait the model may skip: nothing to answer, request or read before `until`
         let read = out.res_valid && i.res_ready;
-        if let Some(skip) = skip.as_deref_mut().filter(|_| !probe && i.mem_resp.is_none() && !read) {
+        if skip && !probe && i.mem_resp.is_none() && !read {
             let most = || {
                 let mut until = mem.next_response().unwrap_or(u64::MAX);
                 if out.mem_req_valid && !ready {
@@ -214,7 +212,7 @@ pub fn run_query<C: Clocked>(
                 }
                 until.saturating_sub(cyc).min(d.max_cycles + 1 - cyc)
             };
-            let n = skip(chip, &i, &most);
+            let n = chip.wait(&i, most);
             if n > 0 {
                 cyc += n;
                 continue;

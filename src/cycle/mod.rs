@@ -31,7 +31,6 @@ pub mod tri_unit;
 pub mod wscg03;
 
 use crate::chip::params::Params;
-use crate::chip::ports::ChipIn;
 use crate::chip::reg::{Mode, Order};
 
 /// A bound on one query's clocks on the cycle model (waits are skipped, so a long memory
@@ -72,15 +71,7 @@ pub fn run_query(
     let writes = chip.control_writes(order, mode, &p);
     let Record { vcd, probes: mut observer, .. } = rec;
     let trace = if vcd.is_none() && observer.is_none() {
-        let mut skip = |c: &mut chip::Chip, i: &ChipIn, most: &dyn Fn() -> u64| match c.quiet_until(i) {
-            Some(t) => {
-                let n = t.saturating_sub(c.now()).min(most());
-                c.skip(n, t, i);
-                n
-            }
-            None => 0,
-        };
-        drive::run_query(&mut c, &writes, &d, false, |_, _| Ok(()), Some(&mut skip))
+        drive::run_query(&mut c, &writes, &d, false, |_, _| Ok(()), true)
     } else {
         let mut w = match vcd {
             Some((path, scopes, window)) => Some((drive::open_vcd(path, scopes, window).map_err(|e| e.0)?, path)),
@@ -95,7 +86,7 @@ pub fn run_query(
                 Some(f) => f(t, &v),
                 None => Ok(()),
             }
-        }, None)
+        }, false)
     }
     .map_err(|e| e.0)?;
     Ok((trace, c.stats))

@@ -346,7 +346,7 @@ pub fn run_query<C: RtlPorts>(
     image: &QueryImage,
     d: &Drive,
 ) -> Result<ChipTrace, ChipError> {
-    crate::cycle::drive::run_query(&mut RtlChip::new(chip, image), &image.writes, d, false, |_, _| Ok(()), None)
+    crate::cycle::drive::run_query(&mut RtlChip::new(chip, image), &image.writes, d, false, |_, _| Ok(()), false)
 }
 
 /// A query of the RTL test set: two meshes, a pose, order, mode and memory timing. The
@@ -573,7 +573,7 @@ pub fn run_query_vcd<C: RtlPorts>(
         d,
         true,
         |t, p| vcd.cycle(t, &p.unwrap_or_default()).map_err(|e| format!("{}: {e}", path.display())),
-        None,
+        false,
     )?;
     Ok(trace)
 }
@@ -671,7 +671,7 @@ pub fn cross_check(
         type Out = Result<ChipTrace, String>;
         fn run<C: RtlPorts>(self, mut rtl: C) -> Self::Out {
             let mut ls = crate::cycle::drive::Lockstep::new(RtlChip::new(&mut rtl, self.image), self.model, ("rust-hdl", "cycle model"));
-            crate::cycle::drive::run_query(&mut ls, &self.image.writes, self.d, true, |_, _| Ok(()), None).map_err(|e| e.0)
+            crate::cycle::drive::run_query(&mut ls, &self.image.writes, self.d, true, |_, _| Ok(()), false).map_err(|e| e.0)
         }
     }
     std::thread::scope(|s| {
