@@ -12,6 +12,10 @@
 //! * the cycle model (`src/cycle`) as `cycle::run_query` runs it in
 //!   every scene (stretches in which no unit changes state skipped in one step: the
 //!   model's speed) and clock by clock (no stretch skipped);
+//! * the golden query of the same pose (`query::Chip::query`, the chip's traversal order):
+//!   the same DOP tests and leaf pairs (checked), their values computed as the cycle model's
+//!   units call them, with no clock: what a cycle model costing nothing above its values
+//!   would take, so its ratio to Verilator bounds the cycle model's;
 //! * Verilator (skipped, with a note, if `verilator` is not on PATH): the hierarchical
 //!   build of `scripts/run-chip.sh` with its C++ at -O1 (the script's default) and at -O3
 //!   (`CHIP_OPT_FAST=-O3` on a copy of the chip's Verilog, so that both builds stay
@@ -27,8 +31,10 @@
 use collision_chip::cycle::chip::Chip;
 use collision_chip::cycle::drive::{run_query as drive_query, Drive};
 use collision_chip::cycle;
+use collision_chip::chip::reg::Order;
 use collision_chip::chip::rtl::QUEUE_BITS;
 use collision_chip::harness::chip_io::{big_stack, drive, queries, run_query, with_chip, ChipQuery, ChipTrace, OnChip, PreparedQuery, QueryImage, RtlPorts};
+use collision_chip::traversal::Traversal;
 use std::path::Path;
 use std::process::Command;
 use std::time::Instant;
@@ -78,14 +84,20 @@ fn query(name: &str) -> (ChipQuery, PreparedQuery) {
 }
 
 /// The cycle model on a query, best of `reps`: (cycles, seconds clock by clock, seconds
-/// as `run_query` runs it).
-fn cycle_model(root: &Path, name: &str, reps: usize) -> (u64, f64, f64) {
+/// as `run_query` runs it, seconds of the golden query of the same pairs).
+fn cycle_model(root: &Path, name: &str, reps: usize) -> (u64, f64, f64, f64) {
     let (q, p) = query(name);
     let want = expect(root, name);
     let params = q.params();
     let setup = p.chip.setup(&q.pose);
-    let (mut by_clock, mut skipping, mut cycles) = (f64::INFINITY, f64::INFINITY, 0);
+    let (mut by_clock, mut skipping, mut golden, mut cycles) = (f64::INFINITY, f64::INFINITY, f64::INFINITY, 0);
+    let traversal = if q.order == Order::Lifo { Traversal::Lifo } else { Traversal::Fifo };
     for _ in 0..reps {
+        // the golden query of the same pose: the DOP tests and leaf pairs the chip makes,
+        // their values computed as the cycle model's units call them, without clocks
+        let t = cpu();
+        let g = p.chip.query(&q.pose, q.mode, traversal);
+        golden = golden.min(cpu() - t);
         // each run's chip dropped before the next is made, as in a scene's sequence of
         // queries: the golden values' per-thread tables are then reused, not allocated anew
         let t = cpu();
@@ -93,7 +105,7 @@ fn cycle_model(root: &Path, name: &str, reps: usize) -> (u64, f64, f64) {
             let mut c = Chip::new(&p.chip.cfg, params, &p.chip.a, &p.chip.b, &setup, true).unwrap();
             let d = Drive { memory: q.timing.into(), word_bits: p.chip.layout.word_bits(), reader: q.reader, words: p.chip.image_span(&params.memory), max_cycles: 10_000_000 };
             let writes = p.chip.control_writes(q.order, q.mode, &params);
-            drive_query(&mut c, &writes, &d, false, |_, _| Ok(()), None).unwrap()
+            drive_query(&mut c, &writes, &d, false, |_, _| Ok(()), false).unwrap()
         };
         by_clock = by_clock.min(cpu() - t);
         assert_eq!(tr.text(), want, "{name}: the cycle model's trace (clock by clock)");
@@ -102,8 +114,10 @@ fn cycle_model(root: &Path, name: &str, reps: usize) -> (u64, f64, f64) {
         let (tr, _) = cycle::run_query(&p.chip, &setup, q.order, q.mode, params, q.reader, 10_000_000, cycle::Record { counters: true, ..Default::default() }).unwrap();
         skipping = skipping.min(cpu() - t);
         assert_eq!(tr.text(), want, "{name}: the cycle model's trace (waits skipped)");
+        let (c, t) = (g.counters, &tr);
+        assert_eq!((c.dop_tests, c.tri_tests), (t.dop_tests, t.tri_tests), "{name}: the golden query tests the chip's pairs");
     }
-    (cycles, by_clock, skipping)
+    (cycles, by_clock, skipping, golden)
 }
 
 fn rust_hdl(root: &Path, name: &str) -> (u64, f64) {
@@ -193,10 +207,11 @@ fn row(sim: &str, q: &str, cycles: u64, s: f64) {
 
 /// One chip's rows and its ratios to Verilator's faster steady state.
 fn bench_chip(root: &Path, b: &Bench) {
-    let (cycles, by_clock, skipping) = cycle_model(root, b.long, 20);
+    let (cycles, by_clock, skipping, golden) = cycle_model(root, b.long, 20);
     println!("\n{}:\n\n| simulator | query | cycles | CPU seconds | clocks/s |\n|---|---|---:|---:|---:|", b.chip);
     row("cycle model (run_query)", b.long, cycles, skipping);
     row("cycle model, clock by clock", b.long, cycles, by_clock);
+    row("golden query of the same pairs (its values, no clocks)", b.long, cycles, golden);
     let mut best: Option<(&str, f64)> = None;
     for opt in ["-O1", "-O3"] {
         match verilator(root, b, opt) {
@@ -216,11 +231,13 @@ fn bench_chip(root: &Path, b: &Bench) {
     }
     let (opt, steady) = best.expect("two levels timed");
     println!(
-        "\n{}: cycle model / Verilator {opt} steady state (the faster level): {:.0}x as run_query runs it, {:.0}x clock by clock, on {}",
+        "\n{}: cycle model / Verilator {opt} steady state (the faster level): {:.0}x as run_query runs it, {:.0}x clock by clock, on {}; \
+         a cycle model costing nothing above its golden values would be {:.0}x (the golden query's time)",
         b.chip,
         steady / skipping,
         steady / by_clock,
-        b.long
+        b.long,
+        steady / golden
     );
 }
 
@@ -229,7 +246,7 @@ fn main() {
     for b in &CHIPS {
         bench_chip(root, b);
     }
-    let (cycles, by_clock, skipping) = cycle_model(root, SHORT, 20);
+    let (cycles, by_clock, skipping, _) = cycle_model(root, SHORT, 20);
     let (_, hdl) = rust_hdl(root, SHORT);
     println!("\nchip_e8m15_k6, short query:\n\n| simulator | query | cycles | CPU seconds | clocks/s |\n|---|---|---:|---:|---:|");
     row("cycle model (run_query)", SHORT, cycles, skipping);
