@@ -14,8 +14,9 @@
 //!   model's speed) and clock by clock (no stretch skipped);
 //! * the golden query of the same pose (`query::Chip::query`, the chip's traversal order):
 //!   the same DOP tests and leaf pairs (checked), their values computed as the cycle model's
-//!   units call them, with no clock: what a cycle model costing nothing above its values
-//!   would take, so its ratio to Verilator bounds the cycle model's;
+//!   units call them, with no clock, and the golden traversal's own bookkeeping (a few
+//!   percent): near what a cycle model whose control cost nothing would take, so its ratio
+//!   to Verilator nearly bounds the cycle model's;
 //! * Verilator (skipped, with a note, if `verilator` is not on PATH): the hierarchical
 //!   build of `scripts/run-chip.sh` with its C++ at -O1 (the script's default) and at -O3
 //!   (`CHIP_OPT_FAST=-O3` on a copy of the chip's Verilog, so that both builds stay
@@ -236,7 +237,7 @@ fn bench_chip(root: &Path, b: &Bench) {
     let (opt, steady) = best.expect("two levels timed");
     println!(
         "\n{}: cycle model / Verilator {opt} steady state (the faster level): {:.0}x as run_query runs it, {:.0}x clock by clock, on {}; \
-         a cycle model costing nothing above its golden values would be {:.0}x (the golden query's time)",
+         the golden query of the same pairs (values and the golden traversal, no clocks) is {:.0}x",
         b.chip,
         steady / skipping,
         steady / by_clock,
