@@ -424,11 +424,6 @@ impl<'a> Chip<'a> {
         ]
     }
 
-    /// The current clock (edges since construction).
-    pub fn now(&self) -> u64 {
-        self.now
-    }
-
     /// With the inputs `i` held, the chip does nothing but wait until this cycle: no
     /// register but the clock changes before it (the next DOP result, leaf pair at the
     /// FIFO's head, TRI_UNIT verdict, the folded TRI_UNIT's next slot for the leaf pair
@@ -458,7 +453,7 @@ impl<'a> Chip<'a> {
     /// only through the times `quiet_until` takes the earliest of, so it is the same until
     /// then and is evaluated anew only if the skip reaches `until` (most skips end earlier,
     /// at a memory response: evaluating it was a skip's largest cost).
-    pub fn skip(&mut self, n: u64, until: u64, i: &ChipIn) {
+    fn skip(&mut self, n: u64, until: u64, i: &ChipIn) {
         self.tally(i, n);
         self.now += n;
         if self.now >= until {
