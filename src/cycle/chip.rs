@@ -438,14 +438,13 @@ impl<'a> Chip<'a> {
         if c.acts || i.start || i.host_we || i.mem_resp.is_some() || c.accepts(i) || c.gives(i) {
             return None;
         }
-        let slot = self.tri.next_slot(self.now).filter(|_| c.tri_in);
-        let dop_slot = self.dop.next_slot(self.now).filter(|_| c.cur);
-        [self.dop.next_out(), self.leaf_fifo.next_out(), self.tri.next_out(), Some(self.next_issue), slot, dop_slot]
-            .into_iter()
-            .flatten()
-            .filter(|&t| t > self.now)
-            .min()
-            .or(Some(u64::MAX))
+        let now = self.now;
+        // a time after the current cycle, else none (u64::MAX)
+        let after = |t: Option<u64>| t.filter(|&t| t > now).unwrap_or(u64::MAX);
+        let slot = self.tri.next_slot(now).filter(|_| c.tri_in);
+        let dop_slot = self.dop.next_slot(now).filter(|_| c.cur);
+        let events = after(self.dop.next_out()).min(after(self.leaf_fifo.next_out())).min(after(self.tri.next_out()));
+        Some(events.min(after(Some(self.next_issue))).min(after(slot)).min(after(dop_slot)))
     }
 
     /// Skips `n` clocks before `until`, [`quiet_until`](Self::quiet_until)'s cycle, with
