@@ -61,13 +61,32 @@ pub trait Clocked {
     fn fault(&self) -> Option<String> {
         None
     }
-    /// With the inputs `i` held, skips the clocks in which this level only waits, at most
-    /// `most()` (asked only if it waits), the trace the same as clocking them; returns how
-    /// many (0: clock it). The cycle model skips ([`quiet_until`](crate::cycle::chip::Chip::quiet_until));
-    /// the other levels clock every cycle.
-    fn wait(&mut self, _i: &ChipIn, _most: impl Fn() -> u64) -> u64 {
-        0
+    /// With the inputs `i` held, skips the clocks in which this level only waits or only
+    /// trades words with `mem` (requests taken, responses arriving, served as the driver
+    /// would), from the driver's cycle `cyc` to cycle `limit` at most; returns how many
+    /// (0: clock it). The cycle model skips
+    /// ([`quiet_until`](crate::cycle::chip::Chip::quiet_until)); the other levels clock
+    /// every cycle.
+    fn wait<M: MemorySide>(&mut self, _i: &ChipIn, _mem: &mut M, _cyc: u64, _limit: u64) -> Result<u64, String> {
+        Ok(0)
     }
+}
+
+/// The memory as the driver serves it, for a level that serves its own memory-only clocks
+/// while it [`wait`](Clocked::wait)s: in a cycle, a response is taken out first, then a
+/// request is taken if the memory is ready.
+pub trait MemorySide {
+    /// A request is taken in cycle `cyc`.
+    fn ready(&self, cyc: u64) -> bool;
+    /// The first cycle a request is taken.
+    fn next_ready(&self) -> u64;
+    /// The response in cycle `cyc`, if one is due, taken out.
+    fn respond(&mut self, cyc: u64) -> bool;
+    /// The cycle the next response is due.
+    fn next_response(&self) -> Option<u64>;
+    /// The chip's request for word `addr` in cycle `cyc` (taken if ready); an error if
+    /// the word is past the memory image.
+    fn request(&mut self, cyc: u64, addr: u32) -> Result<(), String>;
 }
 
 impl<C: Clocked + ?Sized> Clocked for &mut C {
@@ -83,8 +102,8 @@ impl<C: Clocked + ?Sized> Clocked for &mut C {
         (**self).fault()
     }
 
-    fn wait(&mut self, i: &ChipIn, most: impl Fn() -> u64) -> u64 {
-        (**self).wait(i, most)
+    fn wait<M: MemorySide>(&mut self, i: &ChipIn, mem: &mut M, cyc: u64, limit: u64) -> Result<u64, String> {
+        (**self).wait(i, mem, cyc, limit)
     }
 }
 

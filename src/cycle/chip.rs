@@ -14,7 +14,7 @@ use super::tri_unit::{TriOut, TriUnit};
 use crate::chip::config::ChipConfig;
 use crate::chip::layout::{Dst, Entry, Pair, RecordMap};
 use crate::chip::params::Params;
-use crate::chip::ports::{ChipIn, ChipOut, Clocked};
+use crate::chip::ports::{ChipIn, ChipOut, Clocked, MemorySide};
 use crate::chip::reg::{self, Order};
 use crate::chip::rtl::FIFO_WRITE_TO_HEAD;
 use crate::dop::Node;
@@ -234,31 +234,8 @@ impl<'a> Chip<'a> {
         let halt = self.stop || self.q.overflow;
         let go = run && !halt;
         let cur = self.ahead.front();
-        // the pair at the DOP unit's input waits for its words: they come in request order,
-        // its own first
-        let [fa, fb] = cur.map_or([false; 2], |c| c.fetch);
-        let tri_needs = go && self.leaf_valid;
-        // the leaf pair's triangle records (looked up only while a leaf pair waits)
-        let tri_recs = if tri_needs { [self.tri_records[0][self.leaf_tag.0 as usize], self.tri_records[1][self.leaf_tag.1 as usize]] } else { [0; 2] };
-        let words = self.words.len();
-        let need = [
-            go && fa && words == 0,
-            go && fb && words < 1 + fa as usize,
-            tri_needs && !self.held[0].holds(tri_recs[0]),
-            tri_needs && !self.held[1].holds(tri_recs[1]),
-        ];
-        // triangle words first, then the next node word in pair order: the current pair's
-        // only at prefetch 0, any pair's in the buffer else
-        let req = if need[2] || need[3] {
-            [(Dst::TriA, tri_recs[0]), (Dst::TriB, tri_recs[1])].into_iter().find(|&(d, _)| need[d as usize] && self.port.free(d))
-        } else {
-            None
-        };
-        let req = req.or_else(|| {
-            let w = self.to_ask.front().filter(|_| go)?;
-            let mine = self.p.prefetch > 0 || cur.is_some_and(|c| c.seq == w.2);
-            (mine && self.port.free(w.0)).then_some((w.0, w.1))
-        });
+        let (need, tri_recs) = self.need(go, cur);
+        let req = self.request(go, cur, need, tri_recs);
         let in_flight = self.dop.in_flight();
         // the issue spacing, and a folded DOP unit's `in_ready`
         let spaced = self.now >= self.next_issue && self.dop.in_ready(self.now);
@@ -317,6 +294,58 @@ impl<'a> Chip<'a> {
             out,
             finish,
             acts,
+        }
+    }
+
+    /// The words that the pair at the DOP unit's input (`cur`) and the leaf pair wait for:
+    /// A's and B's node words, A's and B's triangle words; and the leaf pair's triangle
+    /// records (looked up only while it waits).
+    #[inline(always)]
+    fn need(&self, go: bool, cur: Option<&Ahead>) -> ([bool; 4], [u32; 2]) {
+        // node words come in request order, the current pair's first
+        let [fa, fb] = cur.map_or([false; 2], |c| c.fetch);
+        let tri_needs = go && self.leaf_valid;
+        let tri_recs = if tri_needs { [self.tri_records[0][self.leaf_tag.0 as usize], self.tri_records[1][self.leaf_tag.1 as usize]] } else { [0; 2] };
+        let words = self.words.len();
+        let need = [
+            go && fa && words == 0,
+            go && fb && words < 1 + fa as usize,
+            tri_needs && !self.held[0].holds(tri_recs[0]),
+            tri_needs && !self.held[1].holds(tri_recs[1]),
+        ];
+        (need, tri_recs)
+    }
+
+    /// The memory request: triangle words first, then the next node word in pair order
+    /// (the current pair's only at prefetch 0, any pair's in the buffer else).
+    #[inline(always)]
+    fn request(&self, go: bool, cur: Option<&Ahead>, need: [bool; 4], tri_recs: [u32; 2]) -> Option<(Dst, u32)> {
+        let req = if need[2] || need[3] {
+            [(Dst::TriA, tri_recs[0]), (Dst::TriB, tri_recs[1])].into_iter().find(|&(d, _)| need[d as usize] && self.port.free(d))
+        } else {
+            None
+        };
+        req.or_else(|| {
+            let w = self.to_ask.front().filter(|_| go)?;
+            let mine = self.p.prefetch > 0 || cur.is_some_and(|c| c.seq == w.2);
+            (mine && self.port.free(w.0)).then_some((w.0, w.1))
+        })
+    }
+
+    /// The logic after a clock in which only the memory port moved, before cycle `until`
+    /// (the chip's next event: the logic's parts that depend on the clock stay as they
+    /// are). The port and the words held are read only by the request, by `need`, and,
+    /// through the port's emptiness, by the end of the query: unless `need` changed or
+    /// the port emptied, the request alone is new (most such clocks).
+    #[inline(always)]
+    fn after_memory(&mut self, until: u64) {
+        let go = self.run && !self.logic.halt;
+        let cur = self.ahead.front();
+        let (need, tri_recs) = self.need(go, cur);
+        if need != self.logic.need || self.port.is_empty() || self.now >= until {
+            self.logic = self.logic();
+        } else {
+            self.logic.req = self.request(go, cur, need, tri_recs);
         }
     }
 
@@ -424,18 +453,18 @@ impl<'a> Chip<'a> {
         ]
     }
 
-    /// With the inputs `i` held, the chip does nothing but wait until this cycle: no
-    /// register but the clock changes before it (the next DOP result, leaf pair at the
-    /// FIFO's head, TRI_UNIT verdict, the folded TRI_UNIT's next slot for the leaf pair
-    /// waiting at its input, the folded DOP unit's for the pair waiting at its input, or the
-    /// end of the issue spacing; `u64::MAX`: nothing
-    /// inside the chip is under way). `None`: it may act in the current cycle. Memory
-    /// responses, `mem_req_ready` and `res_ready` are the driver's to add. Lets the driver
-    /// skip a wait of any length in one step, the trace exact.
+    /// With `res_ready` as in `i`, the chip does nothing but wait until this cycle, but
+    /// for its memory port (requests taken, responses arriving): no other register but the
+    /// clock changes before it (the next DOP result, leaf pair at the FIFO's head, TRI_UNIT
+    /// verdict, the folded TRI_UNIT's next slot for the leaf pair waiting at its input, the
+    /// folded DOP unit's for the pair waiting at its input, or the end of the issue
+    /// spacing; `u64::MAX`: nothing inside the chip is under way). `None`: it may act in
+    /// the current cycle. Lets [`wait`](Clocked::wait) skip to it in one step, the trace
+    /// exact.
     #[inline]
     pub fn quiet_until(&self, i: &ChipIn) -> Option<u64> {
         let c = &self.logic;
-        if c.acts || i.start || i.host_we || i.mem_resp.is_some() || c.accepts(i) || c.gives(i) {
+        if c.acts || c.gives(i) {
             return None;
         }
         let now = self.now;
@@ -445,6 +474,29 @@ impl<'a> Chip<'a> {
         let dop_slot = self.dop.next_slot(now).filter(|_| c.cur);
         let events = after(self.dop.next_out()).min(after(self.leaf_fifo.next_out())).min(after(self.tri.next_out()));
         Some(events.min(after(Some(self.next_issue))).min(after(slot)).min(after(dop_slot)))
+    }
+
+    /// The memory port's edge: the request `taken` (destination, record), a response
+    /// arriving (`resp`: it answers the oldest request).
+    #[inline(always)]
+    fn memory_port(&mut self, taken: Option<(Dst, u32)>, resp: bool) {
+        if let Some((d, id)) = taken {
+            self.port.accept(d, id);
+            self.cnt[if d.is_tri() { 3 } else { 2 }] += 1;
+            if !d.is_tri() {
+                self.to_ask.pop_front();
+            }
+            if let Some(s) = self.stats.as_mut().filter(|_| d == Dst::TriA) {
+                s.tri_fetches_a += 1;
+            }
+        }
+        if resp {
+            match self.port.respond() {
+                Some((d, id)) if d.is_tri() => self.held[d as usize - Dst::TriA as usize].fill(id),
+                Some((_, id)) => self.words.push_back(id),
+                None => {}
+            }
+        }
     }
 
     /// Skips `n` clocks before `until`, [`quiet_until`](Self::quiet_until)'s cycle, with
@@ -483,12 +535,52 @@ impl Clocked for Chip<'_> {
         }
     }
 
-    #[inline]
-    fn wait(&mut self, i: &ChipIn, most: impl Fn() -> u64) -> u64 {
-        let Some(t) = self.quiet_until(i) else { return 0 };
-        let n = t.saturating_sub(self.now).min(most());
-        self.skip(n, t, i);
-        n
+    /// Skips to the chip's next event ([`quiet_until`](Chip::quiet_until)), serving on the
+    /// way the clocks in which only the memory port moves (a request taken, a response
+    /// arriving; in the current cycle, as `i` and the driver served them; later, from `mem`)
+    /// as [`step`](Clocked::step) would: a third to a half of the clocks that change a
+    /// register on a memory-bound query, each far cheaper here than a turn of the driver's
+    /// loop.
+    fn wait<M: MemorySide>(&mut self, i: &ChipIn, mem: &mut M, cyc: u64, limit: u64) -> Result<u64, String> {
+        if i.start || i.host_we {
+            return Ok(0);
+        }
+        let Some(mut until) = self.quiet_until(i) else { return Ok(0) };
+        // the chip's clock runs `base` ahead of the driver's (the host's writes)
+        let (start, base) = (self.now, self.now - cyc);
+        let limit = limit.saturating_add(base);
+        let (mut taken, mut resp) = (self.logic.req.filter(|_| i.mem_req_ready), i.mem_resp.is_some());
+        loop {
+            if taken.is_some() || resp {
+                self.tally(i, 1);
+                self.memory_port(taken, resp);
+                self.now += 1;
+                self.after_memory(until);
+                // the chip's own event next: the driver's turn (a result shown may be read)
+                if self.now >= until {
+                    break;
+                }
+                match self.quiet_until(i) {
+                    Some(t) => until = t,
+                    None => break,
+                }
+            }
+            let req = self.logic.req;
+            let next_resp = mem.next_response().map_or(u64::MAX, |r| (r + base).max(self.now));
+            let next_ready = if req.is_some() { (mem.next_ready() + base).max(self.now) } else { u64::MAX };
+            let t = until.min(limit).min(next_resp).min(next_ready);
+            self.skip(t - self.now, until, i);
+            if t == until || t == limit {
+                break;
+            }
+            let m = t - base;
+            resp = mem.respond(m);
+            taken = req.filter(|_| mem.ready(m));
+            if let Some((d, id)) = taken {
+                mem.request(m, self.addr(d, id))?;
+            }
+        }
+        Ok(self.now - start)
     }
 
     fn step(&mut self, i: &ChipIn, probe: bool) -> Option<Vec<u64>> {
@@ -534,23 +626,7 @@ impl Clocked for Chip<'_> {
             }
         }
         // ---- memory port
-        if let Some((d, id)) = c.req.filter(|_| accept) {
-            self.port.accept(d, id);
-            self.cnt[if d.is_tri() { 3 } else { 2 }] += 1;
-            if !d.is_tri() {
-                self.to_ask.pop_front();
-            }
-            if let Some(s) = self.stats.as_mut().filter(|_| d == Dst::TriA) {
-                s.tri_fetches_a += 1;
-            }
-        }
-        if i.mem_resp.is_some() {
-            match self.port.respond() {
-                Some((d, id)) if d.is_tri() => self.held[d as usize - Dst::TriA as usize].fill(id),
-                Some((_, id)) => self.words.push_back(id),
-                None => {}
-            }
-        }
+        self.memory_port(c.req.filter(|_| accept), i.mem_resp.is_some());
         // ---- issue, DOP results
         if c.issue {
             let cur = self.ahead.pop_front().expect("an issue has a pair");

@@ -5,7 +5,7 @@
 
 use super::memory::{MemCounters, MemModel};
 use crate::chip::memory::Memory;
-use crate::chip::ports::{ChipIn, ChipOut, Clocked};
+use crate::chip::ports::{ChipIn, ChipOut, Clocked, MemorySide};
 use crate::chip::probes::{probe_valid, PROBES};
 use crate::chip::reg::Mode;
 use crate::traversal::QueryResult;
@@ -145,12 +145,50 @@ pub struct Drive {
     pub max_cycles: u64,
 }
 
+/// The driver's memory: the model, and the image's size in words (a request past it is an
+/// error).
+struct Served {
+    model: MemModel,
+    words: u32,
+}
+
+impl MemorySide for Served {
+    #[inline]
+    fn ready(&self, cyc: u64) -> bool {
+        self.model.ready(cyc)
+    }
+
+    #[inline]
+    fn next_ready(&self) -> u64 {
+        self.model.next_ready()
+    }
+
+    #[inline]
+    fn respond(&mut self, cyc: u64) -> bool {
+        self.model.respond(cyc).is_some()
+    }
+
+    #[inline]
+    fn next_response(&self) -> Option<u64> {
+        self.model.next_response()
+    }
+
+    #[inline]
+    fn request(&mut self, cyc: u64, addr: u32) -> Result<(), String> {
+        if addr >= self.words {
+            return Err(format!("cycle {cyc}: memory request at word {addr}, past the image ({} words)", self.words));
+        }
+        self.model.request(cyc, addr);
+        Ok(())
+    }
+}
+
 /// Runs one query: the register `writes` one per clock, `start` (cycle 0), then clocks
 /// until `done`, the memory model serving requests and the host reading results by
 /// `d.reader`. `observe(cycle, probes)` sees every cycle from 0 on with the [`PROBES`]
 /// values if `probe` is set (a VCD, a lockstep check). With `skip` and without `probe`,
-/// stretches in which the chip only waits are skipped in one step ([`Clocked::wait`], told
-/// the clocks before the driver has something to do).
+/// stretches in which the chip only waits or trades words with the memory are skipped in
+/// one step ([`Clocked::wait`], told the cycle by which the driver has a result to read).
 pub fn run_query<C: Clocked>(
     chip: &mut C,
     writes: &[(u32, u32)],
@@ -167,7 +205,7 @@ pub fn run_query<C: Clocked>(
     let p = chip.step(&ChipIn { start: true, ..idle }, probe);
     observe(0, p).map_err(|e| ChipError(format!("cycle 0: {e}")))?;
     fault(chip, 0)?;
-    let mut mem = MemModel::new(d.memory, d.word_bits);
+    let mut mem = Served { model: MemModel::new(d.memory, d.word_bits), words: d.words };
     let mut results = vec![];
     let mut cyc = 1u64;
     while cyc <= d.max_cycles {
@@ -182,37 +220,22 @@ pub fn run_query<C: Clocked>(
                 tri_tests: out.tri_tests,
                 node_fetches: out.node_fetches,
                 tri_fetches: out.tri_fetches,
-                memory: mem.counters,
+                memory: mem.model.counters,
             });
         }
         let ready = mem.ready(cyc);
-        let i = ChipIn { mem_req_ready: ready, mem_resp: mem.respond(cyc), res_ready: d.reader.ready(cyc), ..idle };
+        let i = ChipIn { mem_req_ready: ready, mem_resp: mem.model.respond(cyc), res_ready: d.reader.ready(cyc), ..idle };
         if out.mem_req_valid && ready {
-            if out.mem_req_addr >= d.words {
-                return Err(ChipError(format!(
-                    "cycle {cyc}: memory request at word {}, past the image ({} words)",
-                    out.mem_req_addr, d.words
-                )));
-            }
-            mem.request(cyc, out.mem_req_addr);
+            mem.request(cyc, out.mem_req_addr).map_err(ChipError)?;
         }
         if out.res_valid && i.res_ready {
             results.push((cyc, out.res_tag.0, out.res_tag.1, out.res_uncertain));
         }
-        // a wait the model may skip: nothing to answer, request or read before `until`
+        // a wait the model may skip: no result read in this cycle, nor before `limit`
         let read = out.res_valid && i.res_ready;
-        if skip && !probe && i.mem_resp.is_none() && !read {
-            let most = || {
-                let mut until = mem.next_response().unwrap_or(u64::MAX);
-                if out.mem_req_valid && !ready {
-                    until = until.min(mem.next_ready());
-                }
-                if out.res_valid {
-                    until = until.min(d.reader.next_ready(cyc));
-                }
-                until.saturating_sub(cyc).min(d.max_cycles + 1 - cyc)
-            };
-            let n = chip.wait(&i, most);
+        if skip && !probe && !read {
+            let limit = if out.res_valid { d.reader.next_ready(cyc) } else { u64::MAX }.min(d.max_cycles + 1);
+            let n = chip.wait(&i, &mut mem, cyc, limit).map_err(ChipError)?;
             if n > 0 {
                 cyc += n;
                 continue;
