@@ -503,7 +503,7 @@ impl<'a> Chip<'a> {
     /// the inputs `i`: the same state as `n` steps. The cycle's logic depends on the clock
     /// only through the times `quiet_until` takes the earliest of, so it is the same until
     /// then and is evaluated anew only if the skip reaches `until` (most skips end earlier,
-    /// at a memory response: evaluating it was a skip's largest cost).
+    /// at a memory request or response that `wait` serves: evaluating it was a skip's largest cost).
     fn skip(&mut self, n: u64, until: u64, i: &ChipIn) {
         self.tally(i, n);
         self.now += n;
