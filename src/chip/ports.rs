@@ -61,27 +61,28 @@ pub trait Clocked {
     fn fault(&self) -> Option<String> {
         None
     }
-    /// With the inputs `i` held, skips the clocks in which this level only waits or only
-    /// trades words with `mem` (requests taken, responses arriving, served as the driver
-    /// would), from the driver's cycle `cyc` to cycle `limit` at most; returns how many
-    /// (0: clock it). The cycle model skips
-    /// ([`quiet_until`](crate::cycle::chip::Chip::quiet_until)); the other levels clock
-    /// every cycle.
+    /// Runs this level on its own from the driver's cycle `cyc` (inputs `i`, the memory
+    /// served for it), serving `mem` as the driver would, until the driver is needed (a
+    /// result shown that was not shown at `cyc`, the end of the query) or cycle `limit`;
+    /// returns how many clocks it ran (0: the driver clocks it). The cycle model runs
+    /// ([`Chip::wait`](crate::cycle::chip::Chip), skipping where nothing moves:
+    /// [`quiet_until`](crate::cycle::chip::Chip::quiet_until)); the other levels leave every
+    /// clock to the driver.
     fn wait<M: MemorySide>(&mut self, _i: &ChipIn, _mem: &mut M, _cyc: u64, _limit: u64) -> Result<u64, String> {
         Ok(0)
     }
 }
 
-/// The memory as the driver serves it, for a level that serves its own memory-only clocks
-/// while it [`wait`](Clocked::wait)s: in a cycle, a response is taken out first, then a
+/// The memory as the driver serves it, for a level that serves it itself while it
+/// [`wait`](Clocked::wait)s: in a cycle, a response is taken out first, then a
 /// request is taken if the memory is ready.
 pub trait MemorySide {
     /// A request is taken in cycle `cyc`.
     fn ready(&self, cyc: u64) -> bool;
     /// The first cycle a request is taken.
     fn next_ready(&self) -> u64;
-    /// The response in cycle `cyc`, if one is due, taken out.
-    fn respond(&mut self, cyc: u64) -> bool;
+    /// The response in cycle `cyc` (the word's address), if one is due, taken out.
+    fn respond(&mut self, cyc: u64) -> Option<u32>;
     /// The cycle the next response is due.
     fn next_response(&self) -> Option<u64>;
     /// The chip's request for word `addr` in cycle `cyc` (taken if ready); an error if

@@ -535,52 +535,56 @@ impl Clocked for Chip<'_> {
         }
     }
 
-    /// Skips to the chip's next event ([`quiet_until`](Chip::quiet_until)), serving on the
-    /// way the clocks in which only the memory port moves (a request taken, a response
-    /// arriving; in the current cycle, as `i` and the driver served them; later, from `mem`)
-    /// as [`step`](Clocked::step) would: a third to a half of the clocks that change a
-    /// register on a memory-bound query, each far cheaper here than a turn of the driver's
-    /// loop.
+    /// Runs the chip on its own from the driver's cycle `cyc` (inputs `i`, the memory
+    /// served for it) until the driver has something to do: a result shown that was not
+    /// shown at `cyc` (the host may read it), the end of the query, or `limit`. On the way
+    /// it serves the memory from `mem` as the driver would, clocks the cycles in which the
+    /// chip acts ([`step`](Clocked::step)), serves those in which only its memory port moves
+    /// (a request taken, a response arriving: a third to a half of a memory-bound query's
+    /// clocks) without evaluating the rest of the logic ([`after_memory`](Chip::after_memory)),
+    /// and skips the stretches in which nothing moves in one step
+    /// ([`quiet_until`](Chip::quiet_until)): the driver's turn is paid only at a result.
+    /// A result shown at `cyc` is not read before `limit` (`i.res_ready`, false, holds).
     fn wait<M: MemorySide>(&mut self, i: &ChipIn, mem: &mut M, cyc: u64, limit: u64) -> Result<u64, String> {
         if i.start || i.host_we {
             return Ok(0);
         }
-        let Some(mut until) = self.quiet_until(i) else { return Ok(0) };
         // the chip's clock runs `base` ahead of the driver's (the host's writes)
         let (start, base) = (self.now, self.now - cyc);
         let limit = limit.saturating_add(base);
-        let (mut taken, mut resp) = (self.logic.req.filter(|_| i.mem_req_ready), i.mem_resp.is_some());
+        let shown = self.outputs().res_valid;
+        let mut i = *i;
         loop {
-            if taken.is_some() || resp {
-                self.tally(i, 1);
-                self.memory_port(taken, resp);
-                self.now += 1;
-                self.after_memory(until);
-                // the chip's own event next: the driver's turn (a result shown may be read)
-                if self.now >= until {
-                    break;
+            match self.quiet_until(&i) {
+                None => {
+                    self.step(&i, false);
                 }
-                match self.quiet_until(i) {
-                    Some(t) => until = t,
-                    None => break,
+                Some(until) => {
+                    let taken = self.logic.req.filter(|_| i.mem_req_ready);
+                    if taken.is_some() || i.mem_resp.is_some() {
+                        self.tally(&i, 1);
+                        self.memory_port(taken, i.mem_resp.is_some());
+                        self.now += 1;
+                        self.after_memory(until);
+                    } else {
+                        let next_resp = mem.next_response().map_or(u64::MAX, |r| (r + base).max(self.now + 1));
+                        let next_ready = if self.logic.req.is_some() { (mem.next_ready() + base).max(self.now + 1) } else { u64::MAX };
+                        let t = until.min(limit).min(next_resp).min(next_ready);
+                        self.skip(t - self.now, until, &i);
+                    }
                 }
             }
-            let req = self.logic.req;
-            let next_resp = mem.next_response().map_or(u64::MAX, |r| (r + base).max(self.now));
-            let next_ready = if req.is_some() { (mem.next_ready() + base).max(self.now) } else { u64::MAX };
-            let t = until.min(limit).min(next_resp).min(next_ready);
-            self.skip(t - self.now, until, i);
-            if t == until || t == limit {
-                break;
+            // a new cycle: the driver's turn, or its memory served here
+            if self.done || self.now >= limit || (!shown && self.outputs().res_valid) {
+                return Ok(self.now - start);
             }
-            let m = t - base;
-            resp = mem.respond(m);
-            taken = req.filter(|_| mem.ready(m));
-            if let Some((d, id)) = taken {
+            let m = self.now - base;
+            i.mem_resp = mem.respond(m);
+            i.mem_req_ready = mem.ready(m);
+            if let Some((d, id)) = self.logic.req.filter(|_| i.mem_req_ready) {
                 mem.request(m, self.addr(d, id))?;
             }
         }
-        Ok(self.now - start)
     }
 
     fn step(&mut self, i: &ChipIn, probe: bool) -> Option<Vec<u64>> {

@@ -164,8 +164,8 @@ impl MemorySide for Served {
     }
 
     #[inline]
-    fn respond(&mut self, cyc: u64) -> bool {
-        self.model.respond(cyc).is_some()
+    fn respond(&mut self, cyc: u64) -> Option<u32> {
+        self.model.respond(cyc)
     }
 
     #[inline]
@@ -187,8 +187,8 @@ impl MemorySide for Served {
 /// until `done`, the memory model serving requests and the host reading results by
 /// `d.reader`. `observe(cycle, probes)` sees every cycle from 0 on with the [`PROBES`]
 /// values if `probe` is set (a VCD, a lockstep check). With `skip` and without `probe`,
-/// stretches in which the chip only waits or trades words with the memory are skipped in
-/// one step ([`Clocked::wait`], told the cycle by which the driver has a result to read).
+/// the level runs on its own between the driver's reads of results ([`Clocked::wait`],
+/// told the cycle by which the driver has a result to read).
 pub fn run_query<C: Clocked>(
     chip: &mut C,
     writes: &[(u32, u32)],
@@ -231,7 +231,7 @@ pub fn run_query<C: Clocked>(
         if out.res_valid && i.res_ready {
             results.push((cyc, out.res_tag.0, out.res_tag.1, out.res_uncertain));
         }
-        // a wait the model may skip: no result read in this cycle, nor before `limit`
+        // the level on its own: no result read in this cycle, nor before `limit`
         let read = out.res_valid && i.res_ready;
         if skip && !probe && !read {
             let limit = if out.res_valid { d.reader.next_ready(cyc) } else { u64::MAX }.min(d.max_cycles + 1);
