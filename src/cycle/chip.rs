@@ -336,17 +336,20 @@ impl<'a> Chip<'a> {
     /// (the chip's next event: the logic's parts that depend on the clock stay as they
     /// are). The port and the words held are read only by the request, by `need`, and,
     /// through the port's emptiness, by the end of the query: unless `need` changed or
-    /// the port emptied, the request alone is new (most such clocks).
+    /// the port emptied, the request alone is new (most such clocks). True if the whole
+    /// logic was evaluated anew.
     #[inline(always)]
-    fn after_memory(&mut self, until: u64) {
+    fn after_memory(&mut self, until: u64) -> bool {
         let go = self.run && !self.logic.halt;
         let cur = self.ahead.front();
         let (need, tri_recs) = self.need(go, cur);
-        if need != self.logic.need || self.port.is_empty() || self.now >= until {
+        let anew = need != self.logic.need || self.port.is_empty() || self.now >= until;
+        if anew {
             self.logic = self.logic();
         } else {
             self.logic.req = self.request(go, cur, need, tri_recs);
         }
+        anew
     }
 
     /// The word address of record `id` of `d`.
@@ -554,8 +557,11 @@ impl Clocked for Chip<'_> {
         let limit = limit.saturating_add(base);
         let shown = self.outputs().res_valid;
         let mut i = *i;
+        // the chip's next event, kept while only the request is evaluated anew
+        let mut quiet = None;
         loop {
-            match self.quiet_until(&i) {
+            quiet = quiet.filter(|&u| u > self.now).or_else(|| self.quiet_until(&i));
+            match quiet {
                 None => {
                     self.step(&i, false);
                 }
@@ -565,7 +571,9 @@ impl Clocked for Chip<'_> {
                         self.tally(&i, 1);
                         self.memory_port(taken, i.mem_resp.is_some());
                         self.now += 1;
-                        self.after_memory(until);
+                        if self.after_memory(until) {
+                            quiet = None;
+                        }
                     } else {
                         let next_resp = mem.next_response().map_or(u64::MAX, |r| (r + base).max(self.now + 1));
                         let next_ready = if self.logic.req.is_some() { (mem.next_ready() + base).max(self.now + 1) } else { u64::MAX };
