@@ -3,7 +3,9 @@
 //! (`vectors/chip/<query>.expect`), the ratios measured in one run, on both chips: the
 //! k = 6 e8m15 chip and the papers' k = 24 binary32 chip (`chip_b32_k24`). Every time is
 //! CPU seconds of the simulator (this machine is shared: wall time would count the other
-//! processes' turns), best of several runs:
+//! processes' turns), best of several runs, Verilator's and the cycle model's taken in turns
+//! (four rounds; in each, Verilator once per level and query, then the cycle model five
+//! times per query) so that both sides of a ratio meet the machine's changing speed alike:
 //!
 //! ```sh
 //! cargo bench --bench chip_sim
@@ -21,7 +23,7 @@
 //!   build of `scripts/run-chip.sh` with its C++ at -O1 (the script's default) and at -O3
 //!   (`CHIP_OPT_FAST=-O3` on a copy of the chip's Verilog, so that both builds stay
 //!   cached), each checked on the queries' traces and then timed as a whole process
-//!   (its CPU time as a child process), best of 3. Its start-up (reading the memory image, building the model) is the time of the
+//!   (its CPU time as a child process). Its start-up (reading the memory image, building the model) is the time of the
 //!   root-only query and is subtracted: the steady state is each long query's time less the
 //!   start-up. The ratio is against the faster of the two levels. A first build takes
 //!   minutes per chip and level (stated);
@@ -36,7 +38,7 @@ use collision_chip::chip::reg::{Mode, Order};
 use collision_chip::chip::rtl::QUEUE_BITS;
 use collision_chip::harness::chip_io::{big_stack, drive, queries, run_query, with_chip, ChipQuery, ChipTrace, OnChip, PreparedQuery, QueryImage, RtlPorts};
 use collision_chip::traversal::Traversal;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::time::Instant;
 
@@ -147,9 +149,8 @@ fn rust_hdl(root: &Path, name: &str) -> (u64, f64) {
 }
 
 /// Builds (if not cached) and checks the exported chip `b.chip` with scripts/run-chip.sh,
-/// its C++ at `opt`, then times its binary on the root-only and each long query (best of
-/// 3 each). `Err` (a note) only if verilator is missing.
-fn verilator(root: &Path, b: &Bench, opt: &str) -> Result<(f64, Vec<f64>), String> {
+/// its C++ at `opt`; its binary. `Err` (a note) only if verilator is missing.
+fn verilator(root: &Path, b: &Bench, opt: &str) -> Result<PathBuf, String> {
     if !Command::new("verilator").arg("--version").output().is_ok_and(|o| o.status.success()) {
         return Err("verilator not installed (apt-get install verilator)".into());
     }
@@ -183,27 +184,24 @@ fn verilator(root: &Path, b: &Bench, opt: &str) -> Result<(f64, Vec<f64>), Strin
     let passed = format!("{} passed, 0 failed", b.long.len() + 1);
     assert!(out.status.success() && stdout.contains(&passed), "scripts/run-chip.sh:\n{stdout}{}", String::from_utf8_lossy(&out.stderr));
     println!("Verilator {opt} {}: built (if not yet built) and checked the traces in {:.0} s", b.chip, t.elapsed().as_secs_f64());
-    let bin = root.join(format!("target/verilog/verilator/{name}/obj/Vchip"));
-    let time = |q_name: &str| {
-        let (q, _) = query(q_name);
-        let args = [
-            format!("+mem=vectors/chip/{q_name}.mem"),
-            format!("+host=vectors/chip/{q_name}.host"),
-            format!("+latency={}", q.timing.latency),
-            format!("+interval={}", q.timing.interval),
-            format!("+reader={}", q.reader.period),
-            "+max_cycles=2000000".into(),
-        ];
-        (0..3)
-            .map(|_| {
-                let t = children_cpu();
-                let out = Command::new(&bin).args(&args).current_dir(root).output().unwrap_or_else(|e| panic!("{}: {e}", bin.display()));
-                assert!(out.status.success() && String::from_utf8_lossy(&out.stdout).contains("done "), "{} failed", bin.display());
-                children_cpu() - t
-            })
-            .fold(f64::INFINITY, f64::min)
-    };
-    Ok((time(b.empty), b.long.iter().map(|q| time(q)).collect()))
+    Ok(root.join(format!("target/verilog/verilator/{name}/obj/Vchip")))
+}
+
+/// One run of Verilator's binary `bin` on query `q_name`: its CPU seconds, the whole process.
+fn verilator_run(root: &Path, bin: &Path, q_name: &str) -> f64 {
+    let (q, _) = query(q_name);
+    let args = [
+        format!("+mem=vectors/chip/{q_name}.mem"),
+        format!("+host=vectors/chip/{q_name}.host"),
+        format!("+latency={}", q.timing.latency),
+        format!("+interval={}", q.timing.interval),
+        format!("+reader={}", q.reader.period),
+        "+max_cycles=2000000".into(),
+    ];
+    let t = children_cpu();
+    let out = Command::new(bin).args(&args).current_dir(root).output().unwrap_or_else(|e| panic!("{}: {e}", bin.display()));
+    assert!(out.status.success() && String::from_utf8_lossy(&out.stdout).contains("done "), "{} failed", bin.display());
+    children_cpu() - t
 }
 
 fn rate(cycles: u64, s: f64) -> f64 {
@@ -215,37 +213,49 @@ fn row(sim: &str, q: &str, cycles: u64, s: f64) {
 }
 
 /// One chip's rows and, per long query, its ratios to Verilator's faster steady state.
+/// The simulators are timed in turns (`ROUNDS` rounds: each Verilator level once on every
+/// query, then the cycle model `REPS` times on each), and each keeps its best, so that both
+/// sides of a ratio meet the machine's changing speed alike.
 fn bench_chip(root: &Path, b: &Bench) {
-    let models: Vec<_> = b
-        .long
-        .iter()
-        .map(|q| {
-            let (cycles, by_clock, skipping, golden) = cycle_model(root, q, 20);
-            (cycles, by_clock, skipping, golden.expect("the long queries ask for all pairs"))
-        })
-        .collect();
+    const ROUNDS: usize = 4;
+    const REPS: usize = 5;
+    let levels: Result<Vec<_>, String> = ["-O1", "-O3"].into_iter().map(|opt| verilator(root, b, opt).map(|bin| (opt, bin))).collect();
+    let queries: Vec<&str> = std::iter::once(b.empty).chain(b.long.iter().copied()).collect();
+    let mut models = vec![(0, f64::INFINITY, f64::INFINITY, f64::INFINITY); b.long.len()];
+    let mut verilator_best = vec![vec![f64::INFINITY; queries.len()]; levels.as_ref().map_or(0, Vec::len)];
+    for _ in 0..ROUNDS {
+        for ((_, bin), best) in levels.iter().flatten().zip(&mut verilator_best) {
+            for (q, best) in queries.iter().zip(best) {
+                *best = best.min(verilator_run(root, bin, q));
+            }
+        }
+        for (q, m) in b.long.iter().zip(&mut models) {
+            let (cycles, by_clock, skipping, golden) = cycle_model(root, q, REPS);
+            *m = (cycles, m.1.min(by_clock), m.2.min(skipping), m.3.min(golden.expect("the long queries ask for all pairs")));
+        }
+    }
     println!("\n{}:\n\n| simulator | query | cycles | CPU seconds | clocks/s |\n|---|---|---:|---:|---:|", b.chip);
     for (q, &(cycles, by_clock, skipping, golden)) in b.long.iter().zip(&models) {
         row("cycle model (run_query)", q, cycles, skipping);
         row("cycle model, clock by clock", q, cycles, by_clock);
         row("golden query of the same pairs (its values, no clocks)", q, cycles, golden);
     }
+    let levels = match levels {
+        Ok(levels) => levels,
+        Err(note) => {
+            println!("\nVerilator: {note}; its rows are not measured.");
+            return;
+        }
+    };
     let mut best: Vec<Option<(&str, f64)>> = vec![None; b.long.len()];
-    for opt in ["-O1", "-O3"] {
-        match verilator(root, b, opt) {
-            Ok((empty, long)) => {
-                for (((q, &secs), &(cycles, ..)), best) in b.long.iter().zip(&long).zip(&models).zip(&mut best) {
-                    let steady = secs - empty;
-                    row(&format!("Verilator {opt}, whole process"), q, cycles, secs);
-                    println!("| Verilator {opt}, steady state (less start-up {empty:.3} s) | {q} | {cycles} | {steady:.4} | {:.0} |", rate(cycles, steady));
-                    if best.is_none_or(|(_, s)| steady < s) {
-                        *best = Some((opt, steady));
-                    }
-                }
-            }
-            Err(note) => {
-                println!("\nVerilator: {note}; its rows are not measured.");
-                return;
+    for ((opt, _), times) in levels.iter().zip(&verilator_best) {
+        let empty = times[0];
+        for (((q, &secs), &(cycles, ..)), best) in b.long.iter().zip(&times[1..]).zip(&models).zip(&mut best) {
+            let steady = secs - empty;
+            row(&format!("Verilator {opt}, whole process"), q, cycles, secs);
+            println!("| Verilator {opt}, steady state (less start-up {empty:.3} s) | {q} | {cycles} | {steady:.4} | {:.0} |", rate(cycles, steady));
+            if best.is_none_or(|(_, s)| steady < s) {
+                *best = Some((*opt, steady));
             }
         }
     }
