@@ -329,15 +329,43 @@ fn sign_set(x: f64, hi: f64, within: Option<(f64, f64)>) -> Maybe {
 /// enclosure of each one's bound plus its gap (the same expression tree as the chip's bound,
 /// on the widened vertex bounds). An edge's signs are taken in the order P_z, Q_z, r_z, a,
 /// b, s and the rest skipped once both directions' conjunctions are surely false
-/// (docs/ACCURACY.md, "Deciding T.CHECK in f64": any sign then gives the same); the
+/// (docs/ACCURACY.md, "Deciding T.CHECK in f64": any sign then gives the same). The edges
+/// left are skipped at a sure crossing, and with `lo` once what their z signs let them give
+/// can no longer change the verdict or make it one member ("Proving T.CHECK uncertain",
+/// "Stopping early"); the
 /// vertices' z signs `sz` come from the caller, which has them already. With `lo`
 /// ([`settle`]), each sign not sure also gets its gap and a lower bound of the chip's
 /// bound. `None`: a bound may have overflowed. Inlined, so that [`decide`]'s copy has no
 /// `lo` to test.
 #[inline(always)]
 fn edges_hi(cert: &Certificate, up: &Upper, v: &[VertexHi; 3], sz: [Maybe; 3], lo: Option<&[VertexLo; 3]>) -> Option<Maybe> {
+    // With `lo`, per edge, its conjunctions after the z signs alone: an interval that holds
+    // what the edge gives, whatever its other signs. (`decide` stops at a sure crossing
+    // alone: with the rest, callgrind counted more.)
+    let ends: Option<[Maybe; 3]> = lo.map(|_| {
+        std::array::from_fn(|e| {
+            let mut edge = Conjunctions::default();
+            edge.take(sz[e], false);
+            edge.take(sz[(e + 1) % 3], true);
+            edge.up.or(edge.down)
+        })
+    });
     let mut verdict = Maybe::FALSE;
     for e in 0..3 {
+        // The edges left give at most [rest_lo, rest_hi]: they can no longer change the OR,
+        // or it can no longer have one member (its lower end stays below its upper).
+        if let Some(ends) = &ends {
+            let rest_lo = ends[e..].iter().map(|m| m.lo).max().unwrap_or(Maybe::F);
+            let rest_hi = ends[e..].iter().map(|m| m.hi).max().unwrap_or(Maybe::F);
+            if verdict.lo >= rest_hi {
+                break;
+            }
+            if verdict.hi > verdict.lo.max(rest_lo) {
+                return Some(Maybe { lo: verdict.lo, hi: Maybe::T });
+            }
+        } else if verdict == Maybe::TRUE {
+            break;
+        }
         let (pi, qi) = (e, (e + 1) % 3);
         let (p, q) = (&v[pi], &v[qi]);
         let mut edge = Conjunctions::default();
@@ -390,9 +418,6 @@ fn edges_hi(cert: &Certificate, up: &Upper, v: &[VertexHi; 3], sz: [Maybe; 3], l
         });
         edge.take(sign_set(s, s_bound, s_lo), false);
         verdict = verdict.or(edge.up.or(edge.down));
-        if verdict == Maybe::TRUE {
-            break;
-        }
     }
     Some(verdict)
 }
