@@ -332,11 +332,10 @@ fn sign_set(x: f64, hi: f64, within: Option<(f64, f64)>) -> Maybe {
 /// (docs/ACCURACY.md, "Deciding T.CHECK in f64": any sign then gives the same). The edges
 /// left are skipped at a sure crossing, and with `lo` once what their z signs let them give
 /// can no longer change the verdict or make it one member ("Proving T.CHECK uncertain",
-/// "Stopping early"); the
-/// vertices' z signs `sz` come from the caller, which has them already. With `lo`
-/// ([`settle`]), each sign not sure also gets its gap and a lower bound of the chip's
-/// bound. `None`: a bound may have overflowed. Inlined, so that [`decide`]'s copy has no
-/// `lo` to test.
+/// "Stopping early"). The vertices' z signs `sz` come from the caller, which has them
+/// already. With `lo` ([`settle`]), each sign not sure also gets its gap and a lower bound
+/// of the chip's bound. `None`: a bound may have overflowed. Inlined, so that [`decide`]'s
+/// copy has no `lo` to test.
 #[inline(always)]
 fn edges_hi(cert: &Certificate, up: &Upper, v: &[VertexHi; 3], sz: [Maybe; 3], lo: Option<&[VertexLo; 3]>) -> Option<Maybe> {
     // With `lo`, per edge, its conjunctions after the z signs alone: an interval that holds
