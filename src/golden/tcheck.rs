@@ -343,9 +343,7 @@ fn edges_hi(cert: &Certificate, up: &Upper, v: &[VertexHi; 3], sz: [Maybe; 3], l
     // alone: with the rest, callgrind counted more.)
     let ends: Option<[Maybe; 3]> = lo.map(|_| {
         std::array::from_fn(|e| {
-            let mut edge = Conjunctions::default();
-            edge.take(sz[e], false);
-            edge.take(sz[(e + 1) % 3], true);
+            let edge = Conjunctions::of_z(sz, e);
             edge.up.or(edge.down)
         })
     });
@@ -367,8 +365,8 @@ fn edges_hi(cert: &Certificate, up: &Upper, v: &[VertexHi; 3], sz: [Maybe; 3], l
         }
         let (pi, qi) = (e, (e + 1) % 3);
         let (p, q) = (&v[pi], &v[qi]);
-        let mut edge = Conjunctions::default();
-        if !(edge.take(sz[pi], false) & edge.take(sz[qi], true)) {
+        let mut edge = Conjunctions::of_z(sz, e);
+        if !edge.open() {
             continue;
         }
         let rz = q.c[2] - p.c[2];
@@ -485,13 +483,28 @@ impl Default for Conjunctions {
 }
 
 impl Conjunctions {
-    /// Takes a sign that `up` wants `want_up` and `down` the opposite; false once both
-    /// conjunctions are surely false (the edge surely misses, whatever the other signs).
+    /// Edge `e`'s (P = vertex e, Q = the next) after its z signs alone: P_z, then Q_z.
+    #[inline(always)]
+    fn of_z(sz: [Maybe; 3], e: usize) -> Conjunctions {
+        let mut edge = Conjunctions::default();
+        edge.take(sz[e], false);
+        edge.take(sz[(e + 1) % 3], true);
+        edge
+    }
+
+    /// Whether some conjunction may still hold (else the edge surely misses, whatever the
+    /// other signs).
+    fn open(&self) -> bool {
+        (self.up, self.down) != (Maybe::FALSE, Maybe::FALSE)
+    }
+
+    /// Takes a sign that `up` wants `want_up` and `down` the opposite; [`open`](Self::open)
+    /// after it.
     fn take(&mut self, sign: Maybe, want_up: bool) -> bool {
         let (pos, neg) = (sign, sign.not());
         let (u, d) = if want_up { (pos, neg) } else { (neg, pos) };
         (self.up, self.down) = (self.up.and(u), self.down.and(d));
-        (self.up, self.down) != (Maybe::FALSE, Maybe::FALSE)
+        self.open()
     }
 }
 
