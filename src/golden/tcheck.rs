@@ -253,12 +253,13 @@ pub fn decide<const EXACT: bool>(cert: &Certificate, up: &Upper, s1: &Stage1Hi, 
 /// [`decide`]'s open case taken further (docs/ACCURACY.md, "Proving T.CHECK uncertain"):
 /// with lower bounds of the chip's bounds (stage 1's magnitudes from below: `mag_lo`,
 /// [`mag_lo`]), a sign whose value lies provably within its bound is unknown on the chip.
-/// `Some(None)`: the chip's verdict is uncertain; `None`: not proven (the bit-exact path
-/// decides).
-pub fn settle(cert: &Certificate, up: &Upper, mag_lo: &Affine, tri: &TriWord, v: &[VertexHi; 3]) -> Option<Option<bool>> {
+/// The set of verdicts that holds the chip's (one member: proven); `None`: a bound may have
+/// overflowed. `other`: the other direction's verdict, if proven (TRI_UNIT's result is the
+/// OR of the two: [`edges_hi`] stops once that OR is decided or cannot be).
+pub fn settle(cert: &Certificate, up: &Upper, mag_lo: &Affine, tri: &TriWord, v: &[VertexHi; 3], other: Option<Maybe>) -> Option<Maybe> {
     let lo = vertices_lo(cert, mag_lo, tri, v);
     let sz = std::array::from_fn(|k| sign_set(v[k].c[2], v[k].tz, Some((v[k].gap[2], lo[k].ez))));
-    edges_hi(cert, up, v, sz, Some(&lo))?.single()
+    edges_hi(cert, up, v, sz, Some((&lo, other)))
 }
 
 /// Lower bounds of the chip's words of one mapped vertex: its |x|, |y|, |z| (`abs`); E_x,
@@ -331,13 +332,16 @@ fn sign_set(x: f64, hi: f64, within: Option<(f64, f64)>) -> Maybe {
 /// b, s and the rest skipped once both directions' conjunctions are surely false
 /// (docs/ACCURACY.md, "Deciding T.CHECK in f64": any sign then gives the same). The edges
 /// left are skipped at a sure crossing, and with `lo` once what their z signs let them give
-/// can no longer change the verdict or make it one member ("Proving T.CHECK uncertain",
-/// "Stopping early"). The vertices' z signs `sz` come from the caller, which has them
-/// already. With `lo` ([`settle`]), each sign not sure also gets its gap and a lower bound
-/// of the chip's bound. `None`: a bound may have overflowed. Inlined, so that [`decide`]'s
-/// copy has no `lo` to test.
+/// can no longer change the verdict's OR with the other direction's (`lo`'s second member,
+/// if proven; else false), or make that OR one member ("Proving T.CHECK uncertain",
+/// "Stopping early"; the second rule only with the other direction proven). The vertices'
+/// z signs `sz` come from the caller, which has them already. With `lo` ([`settle`]), each
+/// sign not sure also gets its gap and a lower bound of the chip's bound. The set returned
+/// holds this direction's verdict; `None`: a bound may have overflowed. Inlined, so that
+/// [`decide`]'s copy has no `lo` to test.
 #[inline(always)]
-fn edges_hi(cert: &Certificate, up: &Upper, v: &[VertexHi; 3], sz: [Maybe; 3], lo: Option<&[VertexLo; 3]>) -> Option<Maybe> {
+fn edges_hi(cert: &Certificate, up: &Upper, v: &[VertexHi; 3], sz: [Maybe; 3], lo: Option<(&[VertexLo; 3], Option<Maybe>)>) -> Option<Maybe> {
+    let (lo, other) = (lo.map(|l| l.0), lo.and_then(|l| l.1));
     // With `lo`, per edge, its conjunctions after the z signs alone: an interval that holds
     // what the edge gives, whatever its other signs. (`decide` stops at a sure crossing
     // alone: with the rest, callgrind counted more.)
@@ -354,10 +358,11 @@ fn edges_hi(cert: &Certificate, up: &Upper, v: &[VertexHi; 3], sz: [Maybe; 3], l
         if let Some(ends) = &ends {
             let rest_lo = ends[e..].iter().map(|m| m.lo).max().unwrap_or(Maybe::F);
             let rest_hi = ends[e..].iter().map(|m| m.hi).max().unwrap_or(Maybe::F);
-            if verdict.lo >= rest_hi {
-                break;
+            let or = verdict.or(other.unwrap_or(Maybe::FALSE));
+            if or.lo >= rest_hi {
+                return Some(Maybe { lo: verdict.lo, hi: verdict.hi.max(rest_hi) });
             }
-            if verdict.hi > verdict.lo.max(rest_lo) {
+            if other.is_some() && or.hi > or.lo.max(rest_lo) {
                 return Some(Maybe { lo: verdict.lo, hi: Maybe::T });
             }
         } else if verdict == Maybe::TRUE {
@@ -425,8 +430,8 @@ fn edges_hi(cert: &Certificate, up: &Upper, v: &[VertexHi; 3], sz: [Maybe; 3], l
 /// their ends (a value between them is the minimum, or maximum, of itself and an end of
 /// the other interval); so an interval made from intervals that hold the chip's signs holds
 /// the chip's result. Every set of signs made here is an interval.
-#[derive(Clone, Copy, PartialEq, Eq)]
-struct Maybe {
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Maybe {
     lo: u8,
     hi: u8,
 }
@@ -437,7 +442,7 @@ impl Maybe {
     const T: u8 = 2;
     const TRUE: Maybe = Maybe { lo: Self::T, hi: Self::T };
     const FALSE: Maybe = Maybe { lo: Self::F, hi: Self::F };
-    const ANY: Maybe = Maybe { lo: Self::F, hi: Self::T };
+    pub const ANY: Maybe = Maybe { lo: Self::F, hi: Self::T };
 
     fn sure(s: bool) -> Maybe {
         if s {
@@ -445,6 +450,17 @@ impl Maybe {
         } else {
             Self::FALSE
         }
+    }
+
+    /// The set of one verdict.
+    pub fn of(verdict: Option<bool>) -> Maybe {
+        verdict.map_or(Maybe { lo: Self::U, hi: Self::U }, Self::sure)
+    }
+
+    /// Whether it holds `verdict`.
+    pub fn holds(self, verdict: Option<bool>) -> bool {
+        let c = Self::of(verdict).lo;
+        self.lo <= c && c <= self.hi
     }
 
     fn not(self) -> Maybe {
@@ -455,12 +471,17 @@ impl Maybe {
         Maybe { lo: self.lo.min(o.lo), hi: self.hi.min(o.hi) }
     }
 
-    fn or(self, o: Maybe) -> Maybe {
+    pub fn or(self, o: Maybe) -> Maybe {
         Maybe { lo: self.lo.max(o.lo), hi: self.hi.max(o.hi) }
     }
 
+    /// The verdicts in both sets (both hold the chip's: never empty).
+    pub fn meet(self, o: Maybe) -> Maybe {
+        Maybe { lo: self.lo.max(o.lo), hi: self.hi.min(o.hi) }
+    }
+
     /// The one member, if there is one (`Some(None)`: surely unknown).
-    fn single(self) -> Option<Option<bool>> {
+    pub fn single(self) -> Option<Option<bool>> {
         (self.lo == self.hi).then_some(match self.lo {
             Self::T => Some(true),
             Self::F => Some(false),

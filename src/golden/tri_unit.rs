@@ -5,18 +5,18 @@ use super::certificate::Certificate;
 use super::enclosure::{checking, Upper};
 use super::host::{Affine, HostSetup};
 use super::memory::TriWord;
-use super::tcheck::{decide, edges, edges_in, mag_lo, or3, settle, stage1, stage1_hi, Decision, Stage1, Stage1Hi, VertexHi};
+use super::tcheck::{decide, edges, edges_in, mag_lo, or3, settle, stage1, stage1_hi, Decision, Maybe, Stage1, Stage1Hi, VertexHi};
 use crate::format::{Format, Rounding};
 use std::cell::Cell;
 
-/// One direction decided with the enclosures ([`decide`], `EXACT` as there) and, where that
-/// leaves it open, proven uncertain if it can be ([`settle`]); `None`: neither.
-fn attempt<const EXACT: bool>(cert: &Certificate, up: &Upper, s1: &mut Leaf, leaf: &TriWord, frame: &Affine, v: &TriWord, vs: &mut [VertexHi; 3]) -> Option<Option<bool>> {
-    match decide::<EXACT>(cert, up, &s1.hi, v, vs) {
-        Decision::Verdict(d) => Some(d),
-        Decision::Open => settle(cert, up, s1.lo.get_or_insert_with(|| Box::new(mag_lo(leaf, frame))), v, vs),
-        Decision::Unfit => None,
-    }
+/// TRI_UNIT's tries at one direction, cheapest first: the enclosures in f64 ([`decide`], then
+/// [`settle`] where it leaves the direction open), the same with the chip's own vertex
+/// words, and bit for bit.
+#[derive(Clone, Copy)]
+enum Try {
+    F64,
+    ChipWords,
+    BitExact,
 }
 
 /// Intersecting (surely), separate (surely), or uncertain.
@@ -49,10 +49,11 @@ pub fn tri_unit(f: Format, r: Rounding, a: &TriWord, b: &TriWord, setup: &HostSe
 
 /// TRI_UNIT during one query: the same results as [`tri_unit`] bit for bit (tested, and
 /// checked at every test in check mode, [`checking`]), faster: stage 1 depends on one leaf
-/// and the pose only and is kept per leaf; each direction is decided with the enclosure of
-/// the certificate's bounds ([`decide`]) where it can be, proven uncertain with their lower
-/// bounds ([`settle`]) where that can be, else bit for bit, where an edge
-/// whose ends are surely on one side is not computed further.
+/// and the pose only and is kept per leaf; each direction's set of verdicts is narrowed
+/// with the enclosure of the certificate's bounds ([`decide`]) and their lower bounds
+/// ([`settle`]), first in f64, then with the chip's vertex words, until the two directions'
+/// OR has one member, else bit for bit, where an edge whose ends are surely on one side is
+/// not computed further.
 pub struct TriUnit<'a> {
     f: Format,
     r: Rounding,
@@ -133,35 +134,82 @@ impl<'a> TriUnit<'a> {
         TriUnit { f, r, cert, up, setup, mb_b: mb_b.sized(tris_b), mb_a: mb_a.sized(tris_a), vertices: Default::default() }
     }
 
-    /// Triangle `ta` of A (word `a`) against `tb` of B (word `b`). A sure hit in the first
-    /// direction decides without the second (the result is the same).
+    /// Triangle `ta` of A (word `a`) against `tb` of B (word `b`). Each direction's set of
+    /// verdicts is narrowed in turn, in f64, with the chip's own vertex words, then bit for
+    /// bit, until their OR (the chip's result, [`TriResult::of`]) has one member: a sure
+    /// hit in the first direction decides without the second, and an uncertain one needs
+    /// of the second only that it cannot be a sure hit (docs/ACCURACY.md, "Two directions").
     pub fn test(&mut self, ta: u32, a: &TriWord, tb: u32, b: &TriWord) -> TriResult {
-        let d1 = if b.degenerate { None } else { self.direction(tb, b, a, true) };
-        if d1 == Some(true) {
-            return TriResult { hit: true, uncertain: false };
+        let dirs = [(tb, b, a, true), (ta, a, b, false)];
+        let mut sets = [Maybe::ANY; 2];
+        let result = self.narrowed(&dirs, &mut sets);
+        if checking() {
+            self.check(dirs, sets, result);
         }
-        let d2 = if a.degenerate { None } else { self.direction(ta, a, b, false) };
-        TriResult::of(d1, d2)
+        TriResult::of(result, Some(false))
     }
 
-    /// One T.CHECK: the edges of `v` against the unit triangle of `leaf` (triangle `t` of B
-    /// when `ab`, else of A).
-    fn direction(&mut self, t: u32, leaf: &TriWord, v: &TriWord, ab: bool) -> Option<bool> {
-        let (f, r, up, setup) = (self.f, self.r, self.up, self.setup);
-        let (frame, beta, scale) = setup.tri_frame(ab);
+    /// [`test`](Self::test)'s tries: the OR of the two directions' sets once it has one
+    /// member.
+    fn narrowed(&mut self, dirs: &[(u32, &TriWord, &TriWord, bool); 2], sets: &mut [Maybe; 2]) -> Option<bool> {
+        for attempt in [Try::F64, Try::ChipWords, Try::BitExact] {
+            for k in 0..2 {
+                let (t, leaf, v, ab) = dirs[k];
+                if sets[k].single().is_none() {
+                    // the other direction's verdict, once proven, tells `settle` when to stop
+                    let other = Some(sets[1 - k]).filter(|o| o.single().is_some());
+                    // a degenerate leaf's direction is unknown
+                    let set = if leaf.degenerate { Maybe::of(None) } else { self.narrow(attempt, t, leaf, v, ab, other) };
+                    sets[k] = set.meet(sets[k]);
+                }
+                if let Some(result) = sets[0].or(sets[1]).single() {
+                    return result;
+                }
+            }
+        }
+        unreachable!("bit for bit, both directions have one verdict")
+    }
+
+    /// One direction's set of verdicts after `attempt`: the edges of `v` against the unit
+    /// triangle of `leaf` (triangle `t` of B when `ab`, else of A); every verdict if the
+    /// enclosures prove nothing (a bound may have overflowed). `other`: the other
+    /// direction's verdict, if proven.
+    fn narrow(&mut self, attempt: Try, t: u32, leaf: &TriWord, v: &TriWord, ab: bool, other: Option<Maybe>) -> Maybe {
+        let (f, r) = (self.f, self.r);
+        let (frame, beta, scale) = self.setup.tri_frame(ab);
+        let (s1, cert, up, vs) = self.parts(t, leaf, ab);
+        let decision = match attempt {
+            Try::F64 => decide::<false>(cert, up, &s1.hi, v, vs),
+            Try::ChipWords => decide::<true>(cert, up, &s1.hi, v, vs),
+            Try::BitExact => {
+                let exact = s1.exact.get_or_insert_with(|| Box::new(stage1(f, r, leaf, frame, beta, scale)));
+                return Maybe::of(edges_in(f, r, cert, exact, v, false).result());
+            }
+        };
+        match decision {
+            Decision::Verdict(d) => Maybe::of(d),
+            Decision::Open => settle(cert, up, s1.lo.get_or_insert_with(|| Box::new(mag_lo(leaf, frame))), v, vs, other).unwrap_or(Maybe::ANY),
+            Decision::Unfit => Maybe::ANY,
+        }
+    }
+
+    /// Stage 1 of triangle `t` (word `leaf`: B's when `ab`, else A's), enclosed; the
+    /// certificate, the enclosures, the vertices' scratch.
+    fn parts(&mut self, t: u32, leaf: &TriWord, ab: bool) -> (&mut Leaf, &Certificate, &Upper, &mut [VertexHi; 3]) {
+        let (f, r, up) = (self.f, self.r, &self.up);
+        let (frame, beta, scale) = self.setup.tri_frame(ab);
         let cache = if ab { &mut self.mb_b } else { &mut self.mb_a };
-        let s1 = cache.get(t, || stage1_hi(f, r, &up, leaf, frame, beta, scale));
-        // in f64 first, then with the chip's own vertex words
-        let vs = &mut self.vertices;
-        let fast = attempt::<false>(&self.cert, &up, s1, leaf, frame, v, vs).or_else(|| attempt::<true>(&self.cert, &up, s1, leaf, frame, v, vs));
-        if let Some(d) = fast.filter(|_| !checking()) {
-            return d;
+        (cache.get(t, || stage1_hi(f, r, up, leaf, frame, beta, scale)), &self.cert, up, &mut self.vertices)
+    }
+
+    /// Check mode: each direction's set holds its verdict bit for bit, and the result is the
+    /// bit-exact path's.
+    fn check(&mut self, dirs: [(u32, &TriWord, &TriWord, bool); 2], sets: [Maybe; 2], result: Option<bool>) {
+        let mut want = [None; 2];
+        for (k, &(t, leaf, v, ab)) in dirs.iter().enumerate().filter(|(_, d)| !d.1.degenerate) {
+            want[k] = self.narrow(Try::BitExact, t, leaf, v, ab, None).single().expect("bit for bit: one verdict");
+            assert!(sets[k].holds(want[k]), "check mode: T.CHECK's enclosure gave {:?}, the bit-exact path {:?}: leaf {leaf:?}, triangle {v:?}, {}", sets[k], want[k], if ab { "M_AB" } else { "M_BA" });
         }
-        let exact = s1.exact.get_or_insert_with(|| Box::new(stage1(f, r, leaf, frame, beta, scale)));
-        let want = edges_in(f, r, &self.cert, exact, v, false).result();
-        if let Some(d) = fast {
-            assert_eq!(d, want, "check mode: T.CHECK's enclosure decided {d:?}, the bit-exact path {want:?}: leaf {leaf:?}, triangle {v:?}, {}", if ab { "M_AB" } else { "M_BA" });
-        }
-        want
+        assert_eq!(TriResult::of(result, Some(false)), TriResult::of(want[0], want[1]), "check mode: TRI_UNIT's result");
     }
 }
