@@ -27,8 +27,14 @@ pub struct TriResult {
 }
 
 impl TriResult {
+    /// The pair's result from its two directions' verdicts: their OR.
     fn of(dir1: Option<bool>, dir2: Option<bool>) -> TriResult {
-        match or3([dir1, dir2].into_iter()) {
+        Self::verdict(or3([dir1, dir2].into_iter()))
+    }
+
+    /// The result of the verdict `v` (`None`: uncertain).
+    fn verdict(v: Option<bool>) -> TriResult {
+        match v {
             Some(hit) => TriResult { hit, uncertain: false },
             None => TriResult { hit: false, uncertain: true },
         }
@@ -146,7 +152,7 @@ impl<'a> TriUnit<'a> {
         if checking() {
             self.check(dirs, sets, result);
         }
-        TriResult::of(result, Some(false))
+        TriResult::verdict(result)
     }
 
     /// [`test`](Self::test)'s tries: the OR of the two directions' sets once it has one
@@ -210,6 +216,6 @@ impl<'a> TriUnit<'a> {
             want[k] = self.narrow(Try::BitExact, t, leaf, v, ab, None).single().expect("bit for bit: one verdict");
             assert!(sets[k].holds(want[k]), "check mode: T.CHECK's enclosure gave {:?}, the bit-exact path {:?}: leaf {leaf:?}, triangle {v:?}, {}", sets[k], want[k], if ab { "M_AB" } else { "M_BA" });
         }
-        assert_eq!(TriResult::of(result, Some(false)), TriResult::of(want[0], want[1]), "check mode: TRI_UNIT's result");
+        assert_eq!(result, or3(want.into_iter()), "check mode: TRI_UNIT's verdict");
     }
 }
