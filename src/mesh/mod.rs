@@ -176,7 +176,7 @@ impl Mesh {
             .collect();
         for (i, p) in vertices.iter().enumerate() {
             for c in p.iter() {
-                check_coordinate(*c, &format!("{c:e}")).map_err(|r| {
+                check_coordinate(*c, format_args!("{c:e}")).map_err(|r| {
                     MeshError::new(&self.name, None, format!("scaled into [-1,1]^3, vertex {i}: {r}"))
                 })?;
             }
@@ -255,8 +255,9 @@ pub fn load(path: &Path) -> Result<Mesh, MeshError> {
 }
 
 /// The per-coordinate check of every parser: finite, and in the range the exact oracle is
-/// exact for (`token` is the coordinate as the file writes it).
-pub(crate) fn check_coordinate(c: f64, token: &str) -> Result<(), String> {
+/// exact for (`token` is the coordinate as the file writes it, written out only in an error:
+/// formatting every coordinate was most of a large mesh's checks).
+pub(crate) fn check_coordinate(c: f64, token: impl std::fmt::Display) -> Result<(), String> {
     if !c.is_finite() {
         Err(format!("NaN or infinite coordinate '{token}'"))
     } else if !crate::oracle::in_range(c) {
@@ -283,7 +284,7 @@ fn finish(
     }
     for (i, p) in vertices.iter().enumerate() {
         for c in p.iter() {
-            check_coordinate(*c, &format!("{c:e}"))
+            check_coordinate(*c, format_args!("{c:e}"))
                 .map_err(|r| MeshError::new(file, None, format!("vertex {i}: {r}")))?;
         }
     }

@@ -56,7 +56,7 @@ pub(super) fn parse(file: &str, bytes: &[u8]) -> Result<Parsed, MeshError> {
                         return Err(err(lineno, format!("vertex weight w = {} is 0 or not finite", t[3])));
                     }
                     for c in xyz {
-                        check_coordinate(c / w, &format!("{c} / {w}")).map_err(|r| err(lineno, r))?;
+                        check_coordinate(c / w, format_args!("{c} / {w}")).map_err(|r| err(lineno, r))?;
                     }
                     clean.push(' ');
                     clean.push_str(t[3]);

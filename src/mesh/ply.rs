@@ -101,7 +101,7 @@ impl Builder<'_> {
                         .ok_or_else(|| err(format!("{what}: vertex has no property '{axis}'")))?;
                     xyz[k] = scalar_f64(p)
                         .ok_or_else(|| err(format!("{what}: property '{axis}' is a list")))?;
-                    check_coordinate(xyz[k], &format!("{axis} = {:e}", xyz[k]))
+                    check_coordinate(xyz[k], format_args!("{axis} = {:e}", xyz[k]))
                         .map_err(|r| err(format!("{what}: {r}")))?;
                 }
                 self.vertices.push(Point3::from(xyz));
