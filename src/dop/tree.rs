@@ -288,8 +288,11 @@ impl DopTree {
         self.second.push(0);
         (0..k).for_each(|_| self.dops.push(f64::NEG_INFINITY));
         let axis = split_axis(centroids, idx);
-        idx.sort_unstable_by(|&p, &q| centroids[p as usize][axis].total_cmp(&centroids[q as usize][axis]).then(p.cmp(&q)));
-        let (lo, hi) = idx.split_at_mut(idx.len() / 2);
+        // The lower half by centroid (ties by index: a total order, so the halves are the
+        // same sets as a sort's, in linear time; their order within is the children's to set).
+        let half = idx.len() / 2;
+        idx.select_nth_unstable_by(half, |&p, &q| centroids[p as usize][axis].total_cmp(&centroids[q as usize][axis]).then(p.cmp(&q)));
+        let (lo, hi) = idx.split_at_mut(half);
         let l = self.grow(centroids, lo, level + 1);
         let r = self.grow(centroids, hi, level + 1);
         debug_assert_eq!(l, me + 1, "pre-order");
