@@ -12,7 +12,7 @@
 use super::{check_coordinate, MeshError, Parsed};
 use nalgebra::Point3;
 use ply_rs::parser::Parser;
-use ply_rs::ply::{DefaultElement, ElementDef, Encoding, Property, PropertyType, ScalarType};
+use ply_rs::ply::{ElementDef, Encoding, Property, PropertyAccess, PropertyType, ScalarType};
 use std::io::Cursor;
 
 fn scalar_size(t: &ScalarType) -> u128 {
@@ -74,6 +74,35 @@ fn split_msg(msg: &str) -> (Option<usize>, String) {
     (None, flat)
 }
 
+/// What the loader reads of an element, as ply-rs sets it (`PropertyAccess`): a vertex's
+/// x, y, z, a face's `vertex_indices` or `vertex_index`, the last of each name; any other
+/// property dropped. (ply-rs's own element, a hashed map of every property, was a third of
+/// reading a large ASCII PLY.)
+#[derive(Default)]
+struct Item {
+    xyz: [Option<Property>; 3],
+    indices: Option<Property>,
+    index: Option<Property>,
+}
+
+impl PropertyAccess for Item {
+    fn new() -> Self {
+        Item::default()
+    }
+
+    fn set_property(&mut self, name: String, p: Property) {
+        let slot = match name.as_str() {
+            "x" => &mut self.xyz[0],
+            "y" => &mut self.xyz[1],
+            "z" => &mut self.xyz[2],
+            "vertex_indices" => &mut self.indices,
+            "vertex_index" => &mut self.index,
+            _ => return,
+        };
+        *slot = Some(p);
+    }
+}
+
 /// Accumulates vertices and fan-triangulated faces from parsed elements.
 struct Builder<'a> {
     file: &'a str,
@@ -90,7 +119,7 @@ impl Builder<'_> {
         &mut self,
         name: &str,
         j: usize,
-        e: &DefaultElement,
+        e: &Item,
         line: Option<usize>,
     ) -> Result<(), MeshError> {
         let what = format_args!("{name} {j}");
@@ -99,8 +128,8 @@ impl Builder<'_> {
             "vertex" => {
                 let mut xyz = [0.0; 3];
                 for (k, axis) in ["x", "y", "z"].iter().enumerate() {
-                    let p = e
-                        .get(*axis)
+                    let p = e.xyz[k]
+                        .as_ref()
                         .ok_or_else(|| err(format!("{what}: vertex has no property '{axis}'")))?;
                     xyz[k] = scalar_f64(p)
                         .ok_or_else(|| err(format!("{what}: property '{axis}' is a list")))?;
@@ -111,8 +140,9 @@ impl Builder<'_> {
             }
             "face" => {
                 let p = e
-                    .get("vertex_indices")
-                    .or_else(|| e.get("vertex_index"))
+                    .indices
+                    .as_ref()
+                    .or(e.index.as_ref())
                     .ok_or_else(|| {
                         err(format!(
                             "{what}: face has no list property 'vertex_indices'"
@@ -194,7 +224,7 @@ pub(super) fn parse(file: &str, bytes: &[u8]) -> Result<Parsed, MeshError> {
         ));
     }
 
-    let parser = Parser::<DefaultElement>::new();
+    let parser = Parser::<Item>::new();
     let header = parser.read_header(&mut &bytes[..offset]).map_err(|e| {
         let (line, msg) = split_msg(&e.to_string());
         // Drop the parser generator's long "expected one of …" set.
