@@ -279,9 +279,7 @@ fn load(spec: &str, unit_cube: bool) -> Result<Mesh, String> {
 
 fn query(q: QueryArgs) -> Result<(), String> {
     let cfg = q.chip;
-    let ma = load(&q.a, q.unit_cube)?;
-    // a mesh against itself read once (parsing was most of a large file's setup)
-    let mb = if q.b == q.a { ma.clone() } else { load(&q.b, q.unit_cube)? };
+    let (ma, mb) = mesh::pair(&q.a, &q.b, |spec| load(spec, q.unit_cube))?;
     let (ta, tb) = (ma.triangles_f64(), mb.triangles_f64());
     let chip = Chip::new(&ta, &tb, cfg)?;
     chip.check_pose(&q.pose)?;

@@ -368,6 +368,14 @@ pub fn is_builtin_name(spec: &str) -> bool {
     BUILTIN_NAMES.iter().any(|b| b.split(':').next() == family)
 }
 
+/// The meshes of specs `a` and `b` by `load`: B read only if its spec differs from A's (a
+/// mesh against itself read once: parsing was most of a large file's setup).
+pub fn pair<E>(a: &str, b: &str, load: impl Fn(&str) -> Result<Mesh, E>) -> Result<(Mesh, Mesh), E> {
+    let ma = load(a)?;
+    let mb = if b == a { ma.clone() } else { load(b)? };
+    Ok((ma, mb))
+}
+
 /// A mesh spec from the CLI: an existing file path, or a built-in name.
 ///
 /// An existing file always wins.  Otherwise the spec is tried as a built-in name; if it is not

@@ -84,9 +84,7 @@ impl<'s> Prepared<'s> {
         if let Some(w) = scene.outputs.waveforms.as_ref().filter(|w| w.dir.is_file()) {
             return Err(named(format!("waveforms: {} is a file; give a directory for the VCD files", w.dir.display())));
         }
-        let ma = load(&scene.objects.a).map_err(named)?;
-        // a mesh against itself read once (parsing was most of a large file's setup)
-        let mb = if scene.objects.b == scene.objects.a { ma.clone() } else { load(&scene.objects.b).map_err(named)? };
+        let (ma, mb) = crate::mesh::pair(&scene.objects.a, &scene.objects.b, &load).map_err(named)?;
         let (a, b) = (ma.triangles_f64(), mb.triangles_f64());
         drop((ma, mb));
         let chip = Chip::of(a, b, scene.cfg).map_err(named)?;
