@@ -242,3 +242,29 @@ fn cchip_takes_any_arguments() {
         prop_assert!(code == 0 || (code == 2 && !err.contains("panicked")), "{args:?}: exit {code}\n{err}");
     });
 }
+
+/// A reader that goes away (`cchip ... | head -c 100`) ends `cchip` quietly, by SIGPIPE as
+/// other Unix tools, not with a panic: the JSON of a bunny in contact with itself (about 110
+/// KB with `--oracle`) overfills the pipe, so its write meets the closed end.
+#[test]
+fn cchip_ends_quietly_when_its_reader_goes_away() {
+    use std::io::Read;
+    let args = ["query", "bunny", "bunny", "--pose", "0,0,0,0.01,0,0", "--json", "--oracle"];
+    let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_cchip"))
+        .args(args)
+        .current_dir(root())
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut head = [0u8; 100];
+    child.stdout.take().unwrap().read_exact(&mut head).unwrap();
+    let out = child.wait_with_output().unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    #[cfg(unix)]
+    let by_sigpipe = std::os::unix::process::ExitStatusExt::signal(&out.status) == Some(libc::SIGPIPE);
+    #[cfg(not(unix))]
+    let by_sigpipe = false;
+    assert!(by_sigpipe || out.status.success(), "{args:?} | head -c 100: {:?}\n{err}", out.status);
+    assert!(!err.contains("panicked"), "{err}");
+}

@@ -252,6 +252,12 @@ struct QueryArgs {
 
 
 fn main() -> ExitCode {
+    // Like other Unix tools, end quietly when the reader of the output goes away (`cchip |
+    // head`): Rust ignores SIGPIPE, and `println!` then panics on the broken pipe.
+    #[cfg(unix)]
+    unsafe {
+        libc::signal(libc::SIGPIPE, libc::SIG_DFL);
+    }
     let cli = Cli::parse();
     let res = match cli.cmd {
         Some(Cmd::Query(q)) => query(q),
