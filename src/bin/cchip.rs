@@ -493,6 +493,9 @@ fn run(path: Option<PathBuf>, o: RunOpts) -> Result<(), String> {
             "cycles = the chip's clocks from start to done (cycle model: {} queue entries, {memory});\nchip_us = cycles x the clock period, {};\nsetup_us, settle_us = the host's setup for the pose and its settling of the uncertain pairs with the exact oracle, measured on this machine (wall clock, the fastest of 3, one pose at a time: noisy);\ne2e_us = setup_us + chip_us + settle_us; sw_us = the golden model's query on this machine (one at a time); speedup = sw_us / chip_us; e2e_x = sw_us / e2e_us.",
             p.queue_entries, scene.clock.source()
         );
+        if records.iter().any(|r| r.cycles.as_ref().is_some_and(|c| c.overflow)) {
+            println!("ovf = poses whose pair queue overflowed (listed below): the chip halted with an incomplete answer, so the cycle columns leave them out (-: every pose of the row overflowed).");
+        }
         if scene.architecture == Architecture::Wscg03 {
             println!("\nWSCG'03's chip: where the compare units' clocks went; dop/c, xf/c = DOP tests, transforms per clock; lists = tau, alpha = aligned node pairs per list; clk/list against WSCG'03 Eq. 5's 100 + (alpha - 2) 10; start = clocks from a list's start to its first compare when its pair was not transformed ahead (WSCG'03: 64); spec% = speculative pairs used; interr = interrupts for triangle words; sram = most pointers in the list SRAMs:");
             print!("{}", stack_table(&records));

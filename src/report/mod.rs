@@ -30,7 +30,10 @@ fn groups(records: &[PoseRecord]) -> Vec<(String, Vec<&PoseRecord>)> {
 /// One table row per sweep distance (or one per pose without a sweep): means of the
 /// counters, sums of misses and extra pairs; with `cycles`, the cycle model's mean clocks,
 /// the chip's time at its clock, the host's measured setup and settling, the end-to-end
-/// time, the software's, and its ratio to the chip's and to the end-to-end time.
+/// time, the software's, and its ratio to the chip's and to the end-to-end time. A pose
+/// whose pair queue overflowed halted early with an incomplete answer: its clocks would
+/// make the chip look faster, so the cycle columns leave it out, an `ovf` column counts
+/// such poses, and a row of them only has `-` there.
 pub fn summary_table(records: &[PoseRecord], cycles: bool) -> String {
     let groups = groups(records);
     let with_acc = records.iter().any(|r| r.accuracy.is_some());
@@ -46,6 +49,11 @@ pub fn summary_table(records: &[PoseRecord], cycles: bool) -> String {
     }
     if with_cycles {
         let _ = write!(out, " {:>10} {:>9} {:>9} {:>9} {:>9} {:>9} {:>8} {:>7}", "cycles", "chip_us", "setup_us", "settle_us", "e2e_us", "sw_us", "speedup", "e2e_x");
+    }
+    let overflowed = |r: &PoseRecord| r.cycles.as_ref().is_some_and(|c| c.overflow);
+    let with_ovf = with_cycles && records.iter().any(overflowed);
+    if with_ovf {
+        let _ = write!(out, " {:>4}", "ovf");
     }
     out.push('\n');
     for (key, g) in &groups {
@@ -76,11 +84,18 @@ pub fn summary_table(records: &[PoseRecord], cycles: bool) -> String {
             );
         }
         if with_cycles {
-            let c: Vec<_> = g.iter().filter_map(|r| r.cycles.as_ref()).collect();
-            let m = |f: &dyn Fn(&CycleRecord) -> f64| c.iter().map(|r| f(r)).sum::<f64>() / c.len().max(1) as f64;
+            let c: Vec<_> = g.iter().filter(|r| !overflowed(r)).filter_map(|r| r.cycles.as_ref()).collect();
+            let m = |f: &dyn Fn(&CycleRecord) -> f64| c.iter().map(|r| f(r)).sum::<f64>() / c.len() as f64;
             let (chip, sw, e2e) = (m(&|r| r.chip_us), m(&|r| r.software_us), m(&|r| r.end_to_end_us));
             let (setup, settle) = (m(&|r| r.host_setup_us), m(&|r| r.settle_us));
-            let _ = write!(out, " {:>10.0} {:>9.2} {:>9.2} {:>9.2} {:>9.2} {:>9.1} {:>8.1} {:>7.1}", m(&|r| r.cycles as f64), chip, setup, settle, e2e, sw, sw / chip, sw / e2e);
+            if c.is_empty() {
+                let _ = write!(out, " {:>10} {:>9} {:>9} {:>9} {:>9} {:>9} {:>8} {:>7}", "-", "-", "-", "-", "-", "-", "-", "-");
+            } else {
+                let _ = write!(out, " {:>10.0} {:>9.2} {:>9.2} {:>9.2} {:>9.2} {:>9.1} {:>8.1} {:>7.1}", m(&|r| r.cycles as f64), chip, setup, settle, e2e, sw, sw / chip, sw / e2e);
+            }
+        }
+        if with_ovf {
+            let _ = write!(out, " {:>4}", g.iter().filter(|r| overflowed(r)).count());
         }
         out.push('\n');
     }
@@ -249,5 +264,23 @@ mod tests {
         let row = super::stall_table(&cyc.records).lines().find(|l| l.starts_with("d=0.6")).unwrap().to_string();
         let cols: Vec<&str> = row.split_whitespace().collect();
         assert_eq!(cols[cols.len() - 3..cols.len() - 1], [per(|c| c.dop_tests), per(|c| c.tri_tests)], "{row}");
+    }
+
+    /// A pose whose pair queue overflowed halts early: the summary's cycle columns leave it
+    /// out and count it in `ovf` (a 16-entry FIFO queue overflows in contact, not apart).
+    #[test]
+    fn summary_leaves_overflowed_poses_out_of_the_clocks() {
+        let text = "[objects]\na = \"bunny\"\nb = \"bunny\"\n[query]\ntraversal = \"fifo\"\n[timing]\nqueue_entries = 16\n[sweep]\ndistances = [0.8, 2.2]\norientations = 2\n[outputs]\ncycles = true\n";
+        let s = Scene::parse(text, "test").unwrap();
+        let unit = |spec: &str| crate::mesh::resolve(spec).map_err(|e| e.to_string())?.scaled_into_unit_cube().map_err(|e| e.to_string());
+        let cyc = Prepared::new(&s, unit).unwrap().run(|| ()).unwrap();
+        let table = super::summary_table(&cyc.records, true);
+        let row = |d: &str| table.lines().find(|l| l.starts_with(d)).unwrap().split_whitespace().map(String::from).collect::<Vec<_>>();
+        let (near, far) = (row("d=0.8"), row("d=2.2"));
+        assert_eq!(table.lines().next().unwrap().split_whitespace().last(), Some("ovf"), "{table}");
+        assert_eq!(near[near.len() - 9..], ["-", "-", "-", "-", "-", "-", "-", "-", "2"], "{table}");
+        let clocks: Vec<u64> = cyc.records.iter().filter(|r| r.distance == Some(2.2)).map(|r| r.cycles.as_ref().unwrap().cycles).collect();
+        assert_eq!(far[far.len() - 9], format!("{:.0}", clocks.iter().sum::<u64>() as f64 / 2.0), "{table}");
+        assert_eq!(far.last().map(String::as_str), Some("0"), "{table}");
     }
 }
