@@ -385,3 +385,33 @@ pub fn open_vcd(
     let file = std::io::BufWriter::new(std::fs::File::create(path).map_err(io)?);
     ProbeVcd::new(file, scopes, window).map_err(io)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::chip::config::ChipConfig;
+    use crate::chip::params::Params;
+    use crate::chip::reg::{Mode, Order};
+
+    /// A chip asking for a word past the memory image stops with an error naming the cycle
+    /// and the address, clock by clock (`probe`) and running on its own (`skip`) alike.
+    #[test]
+    fn a_request_past_the_image_is_an_error() {
+        let m = crate::mesh::resolve("sphere:40").unwrap().triangles_f64();
+        let q = crate::query::Chip::new(&m, &m, ChipConfig::default()).unwrap();
+        let setup = q.setup(&crate::pose::Pose::new(0.0, 0.0, 0.0, 0.5, 0.0, 0.0));
+        let p = Params::RTL;
+        let span = q.image_span(&p.memory);
+        let writes = q.control_writes(Order::Lifo, Mode::All, &p);
+        for (words, probe) in [(span, false), (span / 2, false), (span / 2, true)] {
+            let mut c = crate::cycle::chip::Chip::new(&q.cfg, p, &q.a, &q.b, &setup, false).unwrap();
+            let d = Drive { memory: p.memory, word_bits: q.layout.word_bits(), reader: Reader::default(), words, max_cycles: 1 << 30 };
+            let r = run_query(&mut c, &writes, &d, probe, |_, _| Ok(()), !probe);
+            match (words == span, r) {
+                (true, r) => assert!(r.is_ok(), "the whole image: {:?}", r.err()),
+                (false, Ok(_)) => panic!("half the image ({words} of {span} words): no error"),
+                (false, Err(e)) => assert!(e.0.contains(&format!("past the image ({words} words)")), "{}", e.0),
+            }
+        }
+    }
+}
