@@ -190,16 +190,16 @@ const INVOCATIONS: &[&[&str]] = &[
     &["run", "--technology", "paper", "--architecture", "wscg03", "--explain"],
 ];
 
+/// `cchip` started with `args` from the project root, its output to `stdout`, its errors
+/// piped.
+fn spawn_cchip(args: &[impl AsRef<std::ffi::OsStr>], stdout: std::process::Stdio) -> std::process::Child {
+    std::process::Command::new(env!("CARGO_BIN_EXE_cchip")).args(args).current_dir(root()).stdout(stdout).stderr(std::process::Stdio::piped()).spawn().unwrap()
+}
+
 /// `cchip` run with `args` from the project root: its exit code, or an error for a signal or a
 /// run past `limit`.
 fn cchip(args: &[String], limit: std::time::Duration) -> Result<(i32, String), String> {
-    let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_cchip"))
-        .args(args)
-        .current_dir(root())
-        .stdout(std::process::Stdio::null())
-        .stderr(std::process::Stdio::piped())
-        .spawn()
-        .unwrap();
+    let mut child = spawn_cchip(args, std::process::Stdio::null());
     let t0 = std::time::Instant::now();
     while child.try_wait().unwrap().is_none() {
         if t0.elapsed() > limit {
@@ -250,13 +250,7 @@ fn cchip_takes_any_arguments() {
 fn cchip_ends_quietly_when_its_reader_goes_away() {
     use std::io::Read;
     let args = ["query", "bunny", "bunny", "--pose", "0,0,0,0.01,0,0", "--json", "--oracle"];
-    let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_cchip"))
-        .args(args)
-        .current_dir(root())
-        .stdout(std::process::Stdio::piped())
-        .stderr(std::process::Stdio::piped())
-        .spawn()
-        .unwrap();
+    let mut child = spawn_cchip(&args, std::process::Stdio::piped());
     let mut head = [0u8; 100];
     child.stdout.take().unwrap().read_exact(&mut head).unwrap();
     let out = child.wait_with_output().unwrap();
