@@ -494,7 +494,7 @@ fn run(path: Option<PathBuf>, o: RunOpts) -> Result<(), String> {
             p.queue_entries, scene.clock.source()
         );
         if records.iter().any(|r| r.cycles.as_ref().is_some_and(|c| c.overflow)) {
-            println!("ovf = poses whose pair queue overflowed (listed below): the chip halted with an incomplete answer, so the cycle columns leave them out (-: every pose of the row overflowed).");
+            println!("ovf = poses whose pair queue overflowed (listed below): the chip halted with an incomplete answer, so the cycle columns leave them out (-: every pose of the row overflowed) and their misses and extras are that answer's.");
         }
         if scene.architecture == Architecture::Wscg03 {
             println!("\nWSCG'03's chip: where the compare units' clocks went; dop/c, xf/c = DOP tests, transforms per clock; lists = tau, alpha = aligned node pairs per list; clk/list against WSCG'03 Eq. 5's 100 + (alpha - 2) 10; start = clocks from a list's start to its first compare when its pair was not transformed ahead (WSCG'03: 64); spec% = speculative pairs used; interr = interrupts for triangle words; sram = most pointers in the list SRAMs:");

@@ -267,10 +267,11 @@ mod tests {
     }
 
     /// A pose whose pair queue overflowed halts early: the summary's cycle columns leave it
-    /// out and count it in `ovf` (a 16-entry FIFO queue overflows in contact, not apart).
+    /// out and count it in `ovf`, and its misses are the chip's incomplete answer's (a
+    /// 16-entry FIFO queue overflows in contact, not apart).
     #[test]
     fn summary_leaves_overflowed_poses_out_of_the_clocks() {
-        let text = "[objects]\na = \"bunny\"\nb = \"bunny\"\n[query]\ntraversal = \"fifo\"\n[timing]\nqueue_entries = 16\n[sweep]\ndistances = [0.8, 2.2]\norientations = 2\n[outputs]\ncycles = true\n";
+        let text = "[objects]\na = \"bunny\"\nb = \"bunny\"\n[query]\ntraversal = \"fifo\"\n[timing]\nqueue_entries = 16\n[sweep]\ndistances = [0.8, 2.2]\norientations = 2\n[outputs]\ncycles = true\naccuracy = true\n";
         let s = Scene::parse(text, "test").unwrap();
         let unit = |spec: &str| crate::mesh::resolve(spec).map_err(|e| e.to_string())?.scaled_into_unit_cube().map_err(|e| e.to_string());
         let cyc = Prepared::new(&s, unit).unwrap().run(|| ()).unwrap();
@@ -282,5 +283,8 @@ mod tests {
         let clocks: Vec<u64> = cyc.records.iter().filter(|r| r.distance == Some(2.2)).map(|r| r.cycles.as_ref().unwrap().cycles).collect();
         assert_eq!(far[far.len() - 9], format!("{:.0}", clocks.iter().sum::<u64>() as f64 / 2.0), "{table}");
         assert_eq!(far.last().map(String::as_str), Some("0"), "{table}");
+        // misses and extras, before the cycle columns: the chip missed pairs near, none far
+        let near_misses: u64 = near[near.len() - 11].parse().unwrap();
+        assert!(near_misses > 0 && far[far.len() - 11] == "0", "{table}");
     }
 }

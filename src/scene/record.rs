@@ -48,7 +48,9 @@ pub struct CycleRecord {
     /// Pairs the chip reported intersecting, and uncertain (for the host to settle).
     pub hits: usize,
     pub uncertain: usize,
-    /// The uncertain pairs themselves (what the host settles).
+    /// The pairs themselves, sorted (the uncertain ones: what the host settles).
+    #[serde(skip)]
+    pub hit_pairs: Vec<(u32, u32)>,
     #[serde(skip)]
     pub uncertain_pairs: Vec<(u32, u32)>,
     /// DOP tests (node pairs through the DOP unit) and triangle tests (leaf pairs through
@@ -76,6 +78,16 @@ pub struct CycleRecord {
 }
 
 impl CycleRecord {
+    /// The chip's answer once the host has settled its uncertain pairs: its sure hits and
+    /// those uncertain pairs that are in `settled` (sorted: the golden answer of the same
+    /// query, whose uncertain pairs the host settled alike).
+    pub fn answer(&self, settled: &[(u32, u32)]) -> Vec<(u32, u32)> {
+        let kept = self.uncertain_pairs.iter().filter(|p| settled.binary_search(p).is_ok());
+        let mut a: Vec<_> = self.hit_pairs.iter().chain(kept).copied().collect();
+        a.sort_unstable();
+        a
+    }
+
     /// Adds the host's measured share and the end-to-end time it makes.
     pub fn add_host(&mut self, h: crate::query::HostTime) {
         (self.host_setup_us, self.settle_us) = (h.setup_us, h.settle_us);

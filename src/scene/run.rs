@@ -147,11 +147,14 @@ impl<'s> Prepared<'s> {
             false => None,
             true => Some(self.cycles(i, sp, res, software_us, counts)?),
         };
+        // the chip's answer where its queue overflowed (incomplete), else the golden model's
+        // (the cycle model's, checked)
+        let answer = cycles.as_ref().filter(|c| c.overflow).map(|c| c.answer(&res.pairs));
         Ok(PoseRecord {
             pose: sp.pose,
             distance: sp.distance,
             pair_count: res.pairs.len(),
-            accuracy: exact.as_ref().map(|x| Accuracy::of(self.scene.mode, &res.pairs, x)),
+            accuracy: exact.as_ref().map(|x| Accuracy::of(self.scene.mode, answer.as_deref().unwrap_or(&res.pairs), x)),
             exact_pair_count: exact.as_ref().map(Vec::len),
             pairs: self.scene.outputs.pairs.then(|| res.pairs.clone()),
             counters: res.counters,
@@ -272,6 +275,7 @@ fn record(layout: &Layout, trace: &cycle::drive::ChipTrace, period_ns: f64, soft
         software_us,
         hits: hits.len(),
         uncertain: unc.len(),
+        hit_pairs: hits,
         uncertain_pairs: unc,
         dop_tests: trace.dop_tests,
         tri_tests: trace.tri_tests,
