@@ -85,12 +85,12 @@ pub fn summary_table(records: &[PoseRecord], cycles: bool) -> String {
         }
         if with_cycles {
             let c: Vec<_> = g.iter().filter(|r| !overflowed(r)).filter_map(|r| r.cycles.as_ref()).collect();
-            let m = |f: &dyn Fn(&CycleRecord) -> f64| c.iter().map(|r| f(r)).sum::<f64>() / c.len() as f64;
-            let (chip, sw, e2e) = (m(&|r| r.chip_us), m(&|r| r.software_us), m(&|r| r.end_to_end_us));
-            let (setup, settle) = (m(&|r| r.host_setup_us), m(&|r| r.settle_us));
             if c.is_empty() {
                 let _ = write!(out, " {:>10} {:>9} {:>9} {:>9} {:>9} {:>9} {:>8} {:>7}", "-", "-", "-", "-", "-", "-", "-", "-");
             } else {
+                let m = |f: &dyn Fn(&CycleRecord) -> f64| c.iter().map(|r| f(r)).sum::<f64>() / c.len() as f64;
+                let (chip, sw, e2e) = (m(&|r| r.chip_us), m(&|r| r.software_us), m(&|r| r.end_to_end_us));
+                let (setup, settle) = (m(&|r| r.host_setup_us), m(&|r| r.settle_us));
                 let _ = write!(out, " {:>10.0} {:>9.2} {:>9.2} {:>9.2} {:>9.2} {:>9.1} {:>8.1} {:>7.1}", m(&|r| r.cycles as f64), chip, setup, settle, e2e, sw, sw / chip, sw / e2e);
             }
         }

@@ -4,7 +4,7 @@
 
 use crate::pose::Pose;
 use crate::query::Accuracy;
-use crate::traversal::Counters;
+use crate::traversal::{Counters, Host};
 use serde::Serialize;
 
 /// What one pose of a scene produced.
@@ -45,13 +45,11 @@ pub struct CycleRecord {
     /// The golden model's time for the same query on this machine (software), in
     /// microseconds.
     pub software_us: f64,
-    /// Pairs the chip reported intersecting, and uncertain (for the host to settle).
-    pub hits: usize,
-    pub uncertain: usize,
-    /// The pairs themselves, sorted (the uncertain ones: what the host settles).
-    #[serde(skip)]
+    /// Pairs the chip reported intersecting, and uncertain (for the host to settle), sorted;
+    /// the JSON has their counts.
+    #[serde(rename = "hits", serialize_with = "count")]
     pub hit_pairs: Vec<(u32, u32)>,
-    #[serde(skip)]
+    #[serde(rename = "uncertain", serialize_with = "count")]
     pub uncertain_pairs: Vec<(u32, u32)>,
     /// DOP tests (node pairs through the DOP unit) and triangle tests (leaf pairs through
     /// TRI_UNIT) the chip ran: in all-pairs queries the golden model's counts.
@@ -78,11 +76,10 @@ pub struct CycleRecord {
 }
 
 impl CycleRecord {
-    /// The chip's answer once the host has settled its uncertain pairs: its sure hits and
-    /// those uncertain pairs that are in `settled` (sorted: the golden answer of the same
-    /// query, whose uncertain pairs the host settled alike).
-    pub fn answer(&self, settled: &[(u32, u32)]) -> Vec<(u32, u32)> {
-        let kept = self.uncertain_pairs.iter().filter(|p| settled.binary_search(p).is_ok());
+    /// The chip's answer once `host` has settled its uncertain pairs: its sure hits and the
+    /// uncertain pairs that intersect, sorted.
+    pub fn answer(&self, host: &Host) -> Vec<(u32, u32)> {
+        let kept = self.uncertain_pairs.iter().filter(|&&(a, b)| host.settle(a, b));
         let mut a: Vec<_> = self.hit_pairs.iter().chain(kept).copied().collect();
         a.sort_unstable();
         a
@@ -108,3 +105,7 @@ pub struct MemoryRecord {
     pub bank_conflicts: u64,
 }
 
+/// A list of pairs serialized as its length.
+fn count<S: serde::Serializer>(pairs: &[(u32, u32)], s: S) -> Result<S::Ok, S::Error> {
+    s.serialize_u64(pairs.len() as u64)
+}

@@ -149,7 +149,7 @@ impl<'s> Prepared<'s> {
         };
         // the chip's answer where its queue overflowed (incomplete), else the golden model's
         // (the cycle model's, checked)
-        let answer = cycles.as_ref().filter(|c| c.overflow).map(|c| c.answer(&res.pairs));
+        let answer = cycles.as_ref().filter(|c| c.overflow).map(|c| c.answer(&self.chip.host(&sp.pose)));
         Ok(PoseRecord {
             pose: sp.pose,
             distance: sp.distance,
@@ -273,8 +273,6 @@ fn record(layout: &Layout, trace: &cycle::drive::ChipTrace, period_ns: f64, soft
         settle_us: 0.0,
         end_to_end_us: 0.0,
         software_us,
-        hits: hits.len(),
-        uncertain: unc.len(),
         hit_pairs: hits,
         uncertain_pairs: unc,
         dop_tests: trace.dop_tests,
@@ -358,7 +356,7 @@ mod tests {
         for ((p, c), x) in pairs.records.iter().zip(&cyc.records).zip(&all.records) {
             assert_eq!((p.pair_count, p.counters), (x.pair_count, x.counters));
             let (c, x) = (c.cycles.as_ref().unwrap(), x.cycles.as_ref().unwrap());
-            assert_eq!((c.cycles, c.hits, c.uncertain, c.memory.bytes, c.stats), (x.cycles, x.hits, x.uncertain, x.memory.bytes, x.stats));
+            assert_eq!((c.cycles, &c.hit_pairs, &c.uncertain_pairs, c.memory.bytes, c.stats), (x.cycles, &x.hit_pairs, &x.uncertain_pairs, x.memory.bytes, x.stats));
             assert_eq!(x.memory.bytes > 0, c.cycles > 100);
             // all pairs: the chip's tests are the golden traversal's
             assert_eq!((c.dop_tests, c.tri_tests), (p.counters.dop_tests, p.counters.tri_tests));
