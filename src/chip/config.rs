@@ -10,6 +10,10 @@ pub const SUPPORTED_K: [usize; 5] = [6, 14, 18, 24, 26];
 pub const TRI_CACHE_MAX_LINES: u32 = 1024;
 /// Node records held per object at most.
 pub const NODE_CACHE_MAX_LINES: u32 = 256;
+/// T.CHECK's format needs this many exponent bits at least: its certificate's object scale
+/// S (`golden::memory::object_scale`) is a normal power of two (at least 2^emin = 2^(1 - emax))
+/// at most 2^-2 of the format's largest value (2^(emax - 2)), which needs emax >= 2.
+pub const TCHECK_MIN_EXP_BITS: u32 = 3;
 
 /// How the DOP datapath and the host round (DESIGN.md 1.1, 3).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
@@ -170,6 +174,15 @@ impl ChipConfig {
     /// Errors say what a valid k and triangle cache are.
     pub fn check(&self) -> Result<(), String> {
         check_k(self.k)?;
+        if self.format.tri.exp_bits() < TCHECK_MIN_EXP_BITS {
+            return Err(format!(
+                "format {}: T.CHECK's format needs at least {TCHECK_MIN_EXP_BITS} exponent bits (its certificate scales each object by a normal power of two at most a quarter of the format's largest value; docs/ACCURACY.md), not {}: use e{TCHECK_MIN_EXP_BITS}m{} or wider, or a format such as \"{}/binary32\" (DOP/T.CHECK)",
+                self.format,
+                self.format.tri.exp_bits(),
+                self.format.tri.frac_bits(),
+                self.format.dop
+            ));
+        }
         let lines = self.tri_cache;
         if !(lines.is_power_of_two() && lines <= TRI_CACHE_MAX_LINES) {
             return Err(format!("tri_cache must be a power of two from 1 to {TRI_CACHE_MAX_LINES} lines (WSCG'03: 128), not {lines}"));

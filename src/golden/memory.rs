@@ -412,6 +412,29 @@ mod tests {
         assert!(check(0).is_err() && check(96).is_err() && check(2048).is_err());
     }
 
+    /// Every T.CHECK format a configuration accepts has room for an object scale (a 2-bit
+    /// exponent has none: `object_scale` would clamp between 1.0 and 0.5), and the
+    /// configurations that have none are refused with what to write.
+    #[test]
+    fn every_accepted_format_has_an_object_scale() {
+        use crate::chip::config::{ChipConfig, Formats};
+        let tri: Tri = [nalgebra::Point3::new(0.0, 0.0, 0.0), nalgebra::Point3::new(3.0, 0.0, 0.0), nalgebra::Point3::new(0.0, 1e-3, 0.0)];
+        let mut refused = vec![];
+        for (e, m) in (2..=9).flat_map(|e| (1..=24).map(move |m| (e, m))) {
+            let f = Format::new(e, m).unwrap();
+            for format in [Formats::from(f), Formats { dop: Format::BINARY32, tri: f }, Formats { dop: f, tri: Format::BINARY32 }] {
+                match (ChipConfig { format, ..Default::default() }).check() {
+                    Ok(()) => assert!(object_scale(&[tri], format.tri) > 0.0),
+                    Err(e) => refused.push((format.to_string(), e)),
+                }
+            }
+        }
+        assert_eq!(refused.len(), 2 * 24, "{refused:?}");
+        assert!(refused.iter().all(|(f, _)| f.ends_with(|c: char| c.is_ascii_digit()) && f.rsplit('/').next().unwrap().starts_with("e2m")), "{refused:?}");
+        let (_, e) = &refused[0];
+        assert!(e.contains("at least 3 exponent bits") && e.contains("e3m1"), "{e}");
+    }
+
     proptest! {
         /// Another formulation: a use misses iff the last earlier use of a triangle in the
         /// same line (t mod lines) was of another triangle, or there was none.
