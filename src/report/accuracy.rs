@@ -335,7 +335,8 @@ pub fn run(plan: &Plan, load: impl Fn(&str) -> Result<Vec<Tri>, String>, shard: 
 pub fn merge(files: Vec<ShardFile>) -> Result<(Plan, Vec<Row>), String> {
     let first = files.first().ok_or("--merge: no shard files")?;
     let (plan, n) = (first.plan.clone(), first.shard.n);
-    let mut seen = vec![false; n];
+    // the shards seen, as many as files (N comes from a file: nothing sized by it)
+    let mut seen = std::collections::BTreeSet::new();
     let mut rows: Vec<Row> = first.rows.iter().map(|r| Row { sums: Sums::default(), host: HostSums::default(), ..r.clone() }).collect();
     for f in &files {
         if f.plan != plan || f.shard.n != n {
@@ -344,7 +345,7 @@ pub fn merge(files: Vec<ShardFile>) -> Result<(Plan, Vec<Row>), String> {
         if f.shard.k == 0 || f.shard.k > n {
             return Err(format!("--merge: shard {}/{n} is not one of 1..={n}", f.shard.k));
         }
-        if std::mem::replace(&mut seen[f.shard.k - 1], true) {
+        if !seen.insert(f.shard.k) {
             return Err(format!("--merge: shard {}/{n} given twice", f.shard.k));
         }
         let same = |a: &Row, b: &Row| (&a.mesh, a.memory, a.k, a.format, a.dop_rounding, a.folds) == (&b.mesh, b.memory, b.k, b.format, b.dop_rounding, b.folds);
@@ -356,8 +357,9 @@ pub fn merge(files: Vec<ShardFile>) -> Result<(Plan, Vec<Row>), String> {
             row.host += r.host;
         }
     }
-    if let Some(k) = seen.iter().position(|s| !s) {
-        return Err(format!("--merge: shard {}/{n} is missing", k + 1));
+    if seen.len() < n {
+        let missing = (1..=n).find(|k| !seen.contains(k)).expect("fewer seen than N");
+        return Err(format!("--merge: shard {missing}/{n} is missing (a study of {n} shards needs all {n} files; {} given)", files.len()));
     }
     Ok((plan, rows))
 }
@@ -633,6 +635,10 @@ mod tests {
         assert_eq!(table(&plan, &serial, None).unwrap(), table(&plan, &merged, None).unwrap());
         assert!(merge(files[..2].to_vec()).unwrap_err().contains("shard 3/3 is missing"));
         assert!(merge(vec![files[0].clone(), files[0].clone(), files[1].clone()]).unwrap_err().contains("given twice"));
+        // N is the file's: a huge one is a study with shards missing, not an allocation of N
+        let huge = ShardFile { shard: Shard { k: 1, n: usize::MAX }, ..files[0].clone() };
+        let e = merge(vec![huge]).unwrap_err();
+        assert!(e.contains(&format!("shard 2/{} is missing", usize::MAX)), "{e}");
     }
 
     /// A fold changes the clocks only: the folded rows count the unfolded ones' tests and
