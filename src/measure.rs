@@ -74,12 +74,45 @@ pub fn thread_seconds() -> f64 {
     T0.get_or_init(std::time::Instant::now).elapsed().as_secs_f64()
 }
 
+/// The environment variables the library reads; `cchip` checks them before any work and
+/// exits 2 on a bad value.
+pub const MAX_MEMORY_MB: &str = "CCHIP_MAX_MEMORY_MB";
+/// `1`: the fast paths' check mode (`golden::enclosure::checking`); `0` or unset: off.
+pub const CHECK_FAST: &str = "CCHIP_CHECK_FAST";
+
+/// Every environment variable of the library read once: an error names a bad value.
+pub fn check_environment() -> Result<(), String> {
+    max_memory()?;
+    env_flag(CHECK_FAST)?;
+    Ok(())
+}
+
+/// Whether the switch `name` is on: `1` on, `0` or unset off, anything else an error (a
+/// misspelt value is not quietly off).
+pub fn env_flag(name: &str) -> Result<bool, String> {
+    match std::env::var_os(name) {
+        None => Ok(false),
+        Some(v) if v == "1" => Ok(true),
+        Some(v) if v == "0" => Ok(false),
+        Some(v) => Err(format!("{name}={v:?}: give 1 (on) or 0 (off), or unset it")),
+    }
+}
+
+/// `CCHIP_MAX_MEMORY_MB` in bytes, if it is set: a whole number of MiB, within 2^64 bytes.
+fn max_memory() -> Result<Option<u64>, String> {
+    let Some(v) = std::env::var_os(MAX_MEMORY_MB) else { return Ok(None) };
+    let bad = |why: &str| format!("{MAX_MEMORY_MB}={v:?} {why}: give a whole number of MB (e.g. {MAX_MEMORY_MB}=2048), or unset it to use the memory this machine has available");
+    let mb: u64 = v.to_str().and_then(|s| s.trim().parse().ok()).ok_or_else(|| bad("is not a whole number of MB"))?;
+    mb.checked_mul(1 << 20).map(Some).ok_or_else(|| bad("is more than 2^64 bytes"))
+}
+
 /// Bytes this process may still allocate: the smaller of the kernel's `MemAvailable` and the
-/// cgroup's `memory.max` (a container's limit); `CCHIP_MAX_MEMORY_MB` replaces both. `None`
-/// where none of them can be read (then nothing is refused).
-pub fn memory_available() -> Option<u64> {
-    if let Ok(mb) = std::env::var("CCHIP_MAX_MEMORY_MB") {
-        return mb.trim().parse::<u64>().ok().map(|mb| mb << 20);
+/// cgroup's `memory.max` (a container's limit); `CCHIP_MAX_MEMORY_MB` replaces both (an
+/// error if it is not a number of MB). `None` where none of them can be read (then nothing
+/// is refused).
+pub fn memory_available() -> Result<Option<u64>, String> {
+    if let Some(bytes) = max_memory()? {
+        return Ok(Some(bytes));
     }
     let read = |p: &str| std::fs::read_to_string(p).ok();
     let kernel = read("/proc/meminfo").and_then(|m| {
@@ -87,5 +120,5 @@ pub fn memory_available() -> Option<u64> {
         line.split_whitespace().nth(1)?.parse::<u64>().ok().map(|kb| kb << 10)
     });
     let cgroup = read("/sys/fs/cgroup/memory.max").and_then(|s| s.trim().parse::<u64>().ok());
-    [kernel, cgroup].into_iter().flatten().min()
+    Ok([kernel, cgroup].into_iter().flatten().min())
 }

@@ -64,7 +64,7 @@ impl Chip {
         }
         oracle::check_range(&a, "object A")?;
         oracle::check_range(&b, "object B")?;
-        check_memory(a.len(), b.len(), cfg.k, crate::measure::memory_available())?;
+        check_memory(a.len(), b.len(), cfg.k, crate::measure::memory_available()?)?;
         // B the same triangles bit for bit as A (a mesh against itself; a signed zero counts):
         // A's image copied, not built again (the tree's build was most of a large mesh's setup)
         let bits = |t: &Tri| t.map(|p| p.coords.map(f64::to_bits));

@@ -26,6 +26,27 @@ fn too_little_memory_is_refused_before_work() {
     assert!(err.contains("need about") && err.contains("100 MB available") && err.contains("CCHIP_MAX_MEMORY_MB"), "{err}");
 }
 
+/// A value of an environment variable that is not what it takes is an error naming it, not
+/// a limit quietly switched off (or wrapped to 0 MB).
+#[test]
+fn environment_values_are_checked() {
+    let query = |var: &str, value: &str| {
+        let out = Command::new(env!("CARGO_BIN_EXE_cchip")).args(["query", "sphere:12", "sphere:12", "--pose", "0,0,0,0,0,0"]).env(var, value).output().unwrap();
+        (out.status.code(), String::from_utf8_lossy(&out.stderr).into_owned())
+    };
+    for v in ["2MB", "2.0", "-5", "abc", "", "17592186044416"] {
+        let (rc, err) = query("CCHIP_MAX_MEMORY_MB", v);
+        assert_eq!(rc, Some(2), "{v}: {err}");
+        assert!(err.contains(&format!("CCHIP_MAX_MEMORY_MB={v:?}")) && err.contains("whole number of MB"), "{v}: {err}");
+    }
+    assert_eq!(query("CCHIP_MAX_MEMORY_MB", " 64 ").0, Some(0));
+    let (rc, err) = query("CCHIP_MAX_MEMORY_MB", "0");
+    assert!(rc == Some(2) && err.contains("0 MB available"), "{err}");
+    let (rc, err) = query("CCHIP_CHECK_FAST", "true");
+    assert!(rc == Some(2) && err.contains("CCHIP_CHECK_FAST=\"true\": give 1 (on) or 0 (off)"), "{err}");
+    assert_eq!(query("CCHIP_CHECK_FAST", "0").0, Some(0));
+}
+
 #[cfg(target_os = "linux")]
 #[test]
 fn the_estimate_bounds_the_peak() {

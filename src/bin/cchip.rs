@@ -259,7 +259,7 @@ fn main() -> ExitCode {
         libc::signal(libc::SIGPIPE, libc::SIG_DFL);
     }
     let cli = Cli::parse();
-    let res = match cli.cmd {
+    let res = collision_chip::measure::check_environment().and_then(|()| match cli.cmd {
         Some(Cmd::Query(q)) => query(q),
         Some(Cmd::Run { scene, opts }) => run(scene, opts),
         Some(Cmd::Accuracy(a)) => accuracy(a),
@@ -268,7 +268,7 @@ fn main() -> ExitCode {
         Some(Cmd::ExportVerilog { out, area: true }) => report_written(units::write_area_verilog(&out)),
         Some(Cmd::Vectors { out }) => report_written(units::write_vectors(&out)),
         None => run(None, RunOpts::default()),
-    };
+    });
     match res {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {

@@ -136,11 +136,12 @@ static FORCED: AtomicBool = AtomicBool::new(false);
 
 /// Check mode: every decision of a fast path (the DOP unit's f64 estimate, T.CHECK's
 /// enclosure) is compared with the bit-exact path, and a difference panics. On when the
-/// environment variable `CCHIP_CHECK_FAST` is `1`, or after [`force_check`].
+/// environment variable `CCHIP_CHECK_FAST` is `1` (`cchip` refuses a value but 1 or 0 before
+/// any work; elsewhere it panics here), or after [`force_check`].
 #[inline]
 pub fn checking() -> bool {
     static ENV: OnceLock<bool> = OnceLock::new();
-    FORCED.load(Ordering::Relaxed) || *ENV.get_or_init(|| std::env::var("CCHIP_CHECK_FAST").is_ok_and(|v| v == "1"))
+    FORCED.load(Ordering::Relaxed) || *ENV.get_or_init(|| crate::measure::env_flag(crate::measure::CHECK_FAST).unwrap_or_else(|e| panic!("{e}")))
 }
 
 /// Turns check mode on for the rest of the process (tests).
