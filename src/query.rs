@@ -144,28 +144,14 @@ pub struct HostTime {
     pub settle_us: f64,
 }
 
-/// Each host time is the fastest of this many runs (the first pays for cold caches).
-const HOST_REPEATS: usize = 3;
-
 impl Chip {
-    /// Measures the host's setup for `pose` and its settling of `uncertain`.
+    /// Measures the host's setup for `pose` and its settling of `uncertain`, each the
+    /// fastest of [`TIMING_RUNS`](crate::measure::TIMING_RUNS) runs.
     pub fn host_time(&self, pose: &Pose, uncertain: &[(u32, u32)]) -> HostTime {
-        let fastest = |f: &dyn Fn()| {
-            (0..HOST_REPEATS)
-                .map(|_| {
-                    let t0 = std::time::Instant::now();
-                    f();
-                    t0.elapsed().as_secs_f64() * 1e6
-                })
-                .fold(f64::INFINITY, f64::min)
-        };
+        use crate::measure::fastest_us;
         HostTime {
-            setup_us: fastest(&|| {
-                std::hint::black_box(self.setup(std::hint::black_box(pose)));
-            }),
-            settle_us: fastest(&|| {
-                std::hint::black_box(self.settle(std::hint::black_box(pose), uncertain));
-            }),
+            setup_us: fastest_us(|| self.setup(std::hint::black_box(pose))).1,
+            settle_us: fastest_us(|| self.settle(std::hint::black_box(pose), uncertain)).1,
         }
     }
 

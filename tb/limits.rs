@@ -1,6 +1,7 @@
 //! Issue 35, item 4: the memory limit is kept. `cchip run` refuses objects whose setup would
 //! not fit before it builds anything, and its estimate is an upper bound of the peak it
-//! reaches (measured as the child process's maximum resident set).
+//! reaches (measured as the child process's maximum resident set). And bad input, as a new
+//! user gives it, gets a clear error (exit 2) before work, never a panic or an abort.
 
 use std::process::Command;
 
@@ -60,4 +61,61 @@ fn the_estimate_bounds_the_peak() {
     // the process's own baseline (code, the vendored meshes) is not per triangle
     let baseline = 64 << 20;
     assert!(peak <= estimate + baseline, "peak {} MB > estimate {} MB + 64 MB", peak >> 20, estimate >> 20);
+}
+
+fn cchip(args: &[&str], dir: &std::path::Path) -> (Option<i32>, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_cchip")).args(args).current_dir(dir).output().unwrap();
+    (out.status.code(), String::from_utf8_lossy(&out.stderr).into_owned())
+}
+
+/// Inputs that panicked, aborted or ran to an unlabelled answer: each an error naming what
+/// to change.
+#[test]
+fn bad_input_is_refused_with_exit_2() {
+    let dir = tmp().join("bad");
+    std::fs::create_dir_all(&dir).unwrap();
+    for format in ["e2m1", "binary32/e2m3"] {
+        let (rc, err) = cchip(&["query", "sphere:12", "sphere:12", "--pose", "0,0,0,0.5,0,0", "--k", "6", "--format", format], &dir);
+        assert!(rc == Some(2) && err.contains("at least 3 exponent bits"), "{format}: {rc:?} {err}");
+    }
+    let shard = Command::new(env!("CARGO_BIN_EXE_cchip"))
+        .args(["accuracy", "--meshes", "sphere:12", "--k", "6", "--formats", "e8m15", "--distances", "1", "--orientations", "1", "--presets", "rtl", "--shard", "1/18446744073709551615"])
+        .output()
+        .unwrap();
+    assert!(shard.status.success(), "{}", String::from_utf8_lossy(&shard.stderr));
+    std::fs::write(dir.join("f.json"), &shard.stdout).unwrap();
+    let (rc, err) = cchip(&["accuracy", "--merge", "f.json"], &dir);
+    assert!(rc == Some(2) && err.contains("shard 2/18446744073709551615 is missing"), "{rc:?} {err}");
+    let scene = "[objects]\na = \"sphere:12\"\nb = \"sphere:12\"\n[[pose]]\nrot_deg = [0, 0, 0]\nt = [0, 0, 0]\n[outputs]\ncycles = true\n";
+    for (name, extra, want) in [
+        ("clock.toml", "[timing]\nclock_mhz = 1e-307\n", "clock_mhz must be from 0.001 to 100000 MHz"),
+        ("e8m24.toml", "[chip]\nformat = \"e8m24\"\n", "measures none of this configuration's DOP datapath's units"),
+        ("ddr.toml", "[chip]\npreset = \"date05\"\n[memory]\nmodel = \"ddr\"\nlatency = 3\n", "ddr.toml:13: [memory] latency belongs to the ideal memory"),
+    ] {
+        std::fs::write(dir.join(name), format!("{scene}{extra}")).unwrap();
+        for flag in ["--json", "--explain", "--dot"] {
+            let (rc, err) = cchip(&["run", name, flag], &dir);
+            assert!(rc == Some(2) && err.contains(want), "{name} {flag}: {rc:?} {err}");
+        }
+    }
+    // an output directory that cannot be one is refused before the run
+    std::fs::write(dir.join("afile"), "").unwrap();
+    let t0 = std::time::Instant::now();
+    let (rc, err) = cchip(&["figures", "--out", "afile"], &dir);
+    assert!(rc == Some(2) && err.contains("afile: cannot make the output directory") && t0.elapsed().as_secs() < 5, "{rc:?} {err}");
+    let (rc, err) = cchip(&["accuracy", "--meshes", "sphere:12", "--plot", "afile"], &dir);
+    assert!(rc == Some(2) && err.contains("afile: cannot make the output directory"), "{rc:?} {err}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// The help speaks to users: no Rust paths or rustdoc links.
+#[test]
+fn help_has_no_rustdoc() {
+    for sub in [&[][..], &["query"], &["run"], &["accuracy"], &["figures"], &["export-verilog"], &["vectors"]] {
+        let out = Command::new(env!("CARGO_BIN_EXE_cchip")).args(sub).arg("--help").output().unwrap();
+        let help = String::from_utf8_lossy(&out.stdout);
+        for bad in ["[`", "`]", "::"] {
+            assert!(!help.contains(bad), "{sub:?} --help has {bad}:\n{help}");
+        }
+    }
 }

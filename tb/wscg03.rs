@@ -9,6 +9,7 @@ use collision_chip::chip::reg::Mode;
 use collision_chip::chip::rtl::ChipKind;
 use collision_chip::chip::wscg03::StackParams;
 use collision_chip::cycle::wscg03::{run_query, ListRecord};
+use collision_chip::cycle::MAX_CYCLES;
 use collision_chip::format::{Format, Rounding};
 use collision_chip::mesh::soup;
 use collision_chip::pose::Pose;
@@ -72,7 +73,7 @@ proptest! {
         let mode = if first { Mode::First } else { Mode::All };
         let golden = chip.query(&pose, Mode::All, Traversal::List);
         let p = Params { memory, ..Params::RTL };
-        let run = run_query(&chip, &chip.setup(&pose), mode, &p, &sp).unwrap();
+        let run = run_query(&chip, &chip.setup(&pose), mode, &p, &sp, MAX_CYCLES).unwrap();
         let (tr, s) = (&run.trace, &run.stats);
         prop_assert!(tr.check(mode, &golden).is_ok(), "{:?}\n{}", tr.check(mode, &golden), tr.text());
         if !first {
@@ -123,15 +124,19 @@ fn small_lists_follow_the_hand_derived_timeline() {
     let rec = |t0, held, ready, first, next, len| ListRecord { t0, held, ready, first_compare: Some(first), next, len };
 
     let apart = Pose::new(0.0, 0.0, 0.0, 5.0, 0.0, 0.0);
-    let run = run_query(&chip, &chip.setup(&apart), Mode::All, &p, &sp).unwrap();
+    let run = run_query(&chip, &chip.setup(&apart), Mode::All, &p, &sp, MAX_CYCLES).unwrap();
     assert_eq!(run.lists, vec![rec(1, false, 17, 17, 20, 1)]);
     let s = run.stats;
     assert_eq!((s.cycles, s.stall_list, s.stall_transform, s.compare, s.drain), (20, 1, 16, 1, 2));
     assert_eq!((s.transforms, s.spec_pairs, s.spec_used), (3, 1, 0));
     assert_eq!((s.cold_lists, s.cold_start), (1, 16));
+    // the bound on a query's clocks stops WSCG'03's chip as it stops DATE'05's
+    assert!(run_query(&chip, &chip.setup(&apart), Mode::All, &p, &sp, 20).is_ok());
+    let e = run_query(&chip, &chip.setup(&apart), Mode::All, &p, &sp, 19).err().unwrap();
+    assert_eq!(e, "the query did not finish within 19 cycles");
 
     let touching = Pose::new(0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
-    let run = run_query(&chip, &chip.setup(&touching), Mode::All, &p, &sp).unwrap();
+    let run = run_query(&chip, &chip.setup(&touching), Mode::All, &p, &sp, MAX_CYCLES).unwrap();
     assert_eq!(run.lists[..2], [rec(1, false, 17, 17, 20, 1), rec(20, true, 23, 24, run.lists[1].next, 2)]);
     assert_eq!(run.stats.spec_used, 1);
     let golden = chip.query(&touching, Mode::All, Traversal::List);
@@ -148,7 +153,7 @@ fn long_lists_hide_the_transforms() {
     let a = soup(300, 1).triangles_f64();
     let chip = Chip::new(&a, &a, ChipKind::K6E8m15.config()).unwrap();
     let p = Params { memory: Memory::Ideal(MemTiming { latency: 1, interval: 1, bus_bits: None }), ..Params::RTL };
-    let run = run_query(&chip, &chip.setup(&Pose::new(0.0, 0.0, 0.0, 0.0, 0.0, 0.0)), Mode::All, &p, &StackParams::PAPER).unwrap();
+    let run = run_query(&chip, &chip.setup(&Pose::new(0.0, 0.0, 0.0, 0.0, 0.0, 0.0)), Mode::All, &p, &StackParams::PAPER, MAX_CYCLES).unwrap();
     let k = 6;
     let mut checked = 0;
     for w in run.lists.windows(2) {

@@ -3,7 +3,7 @@
 
 use clap::{Args, Parser, Subcommand};
 use collision_chip::chip::preset::Preset;
-use collision_chip::chip::timing::{Folds, Technology};
+use collision_chip::chip::timing::{Folds, PeriodSource, Technology};
 use collision_chip::chip::wscg03::Architecture;
 use collision_chip::chip::config::{ChipConfig, DopRounding, Formats};
 use collision_chip::chip::memory::Memory;
@@ -15,7 +15,7 @@ use collision_chip::harness::units;
 use collision_chip::scene::graph::Plan;
 use collision_chip::scene::run::Prepared;
 use collision_chip::pose::Sweep;
-use collision_chip::scene::{CrossCheck, Flags, Scene, Waveforms, DEFAULT_SCENE};
+use collision_chip::scene::{CrossCheck, Flags, Scene, DEFAULT_SCENE};
 use collision_chip::traversal::{Counters, Traversal};
 use collision_chip::chip::reg::Mode;
 use serde::Serialize;
@@ -180,9 +180,9 @@ struct AccuracyArgs {
     orientations: usize,
     #[arg(long, default_value_t = 1)]
     seed: u64,
-    /// The cycle model's memory bus in bits: a memory word takes ceil(its bits / N) clocks,
-    /// so a narrower format costs fewer clocks (default: the one-clock ideal memory moves a
-    /// word per clock whatever its width).
+    /// The ideal memory's bus in bits (preset rtl's memory; refused with the DDR presets,
+    /// whose buses are their own): a memory word takes ceil(its bits / N) clocks, so a
+    /// narrower format costs fewer clocks (default: a word per clock whatever its width).
     #[arg(long, value_name = "N")]
     bus_bits: Option<u32>,
     /// Memory systems: the chip presets whose memory, port and triangle cache each
@@ -377,6 +377,9 @@ fn progress_bar(len: u64, hidden: bool) -> ProgressBar {
 
 fn accuracy(a: AccuracyArgs) -> Result<(), String> {
     let area = a.area.as_deref().map(accuracy::Area::load).transpose()?;
+    if let Some(dir) = &a.plot {
+        plot::output_dir(dir)?;
+    }
     let (plan, rows) = if a.merge.is_empty() {
         let plan = accuracy::Plan {
             meshes: a.meshes.clone(),
@@ -408,7 +411,6 @@ fn accuracy(a: AccuracyArgs) -> Result<(), String> {
         accuracy::merge(files.collect::<Result<_, String>>()?)?
     };
     if let Some(dir) = &a.plot {
-        std::fs::create_dir_all(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
         for f in accuracy::figures(&rows, area.as_ref()) {
             for p in plot::write_figure(&f, dir)? {
                 eprintln!("wrote {}", p.display());
@@ -419,7 +421,7 @@ fn accuracy(a: AccuracyArgs) -> Result<(), String> {
         println!("{}", serde_json::to_string_pretty(&rows).expect("serialisable"));
     } else {
         print!("{}", accuracy::table(&plan, &rows, area.as_ref())?);
-        println!("\nhost us = the host's setup per pose and its settling of the uncertain pairs with the exact oracle, measured on this machine (wall clock, the fastest of 3, poses on every core: noisy); end to end = host + chip.\nclock periods:\n{}", accuracy::clocks(&rows));
+        println!("\nhost us = the host's setup per pose and its settling of the uncertain pairs with the exact oracle, measured on this machine (wall clock, the fastest of {} runs, poses on every core: noisy); end to end = host + chip.\nclock periods (measured: the configuration's RTL chip's row; estimated: what stands in for it):\n{}", collision_chip::measure::TIMING_RUNS, accuracy::clocks(&rows));
     }
     Ok(())
 }
@@ -439,33 +441,25 @@ fn figures(out: &std::path::Path, quick: bool, preset: Option<Preset>, technolog
 }
 
 fn run(path: Option<PathBuf>, o: RunOpts) -> Result<(), String> {
-    let flags = Flags { preset: o.preset, technology: o.technology };
-    let mut scene = match &path {
+    let flags = Flags { preset: o.preset, technology: o.technology, architecture: o.architecture, waveforms: o.vcd, cross_check: o.rtl.then_some(CrossCheck::Rtl) };
+    let scene = match &path {
         Some(p) => Scene::load_with(p, flags)?,
         None => Scene::parse_with(DEFAULT_SCENE, "built-in default scene", flags)?,
     };
-    if let Some(a) = o.architecture {
-        scene.architecture = a;
-    }
-    if let Some(dir) = o.vcd {
-        scene.outputs.waveforms = Some(Waveforms::all(dir));
-    }
-    if o.rtl {
-        scene.outputs.cross_check = Some(CrossCheck::Rtl);
-    }
     if o.explain || o.dot {
         let plan = Plan::of(&scene);
-        print!("{}", if o.dot { plan.dot() } else { plan.explain(&scene) });
+        print!("{}", if o.dot { plan.dot(&scene) } else { plan.explain(&scene) });
         return Ok(());
     }
     let prepared = Prepared::new(&scene, |spec| load(spec, scene.objects.unit_cube))?;
     let (ta, tb) = (prepared.chip.geometry(0), prepared.chip.geometry(1));
     if !o.json {
         println!(
-            "scene: {}\n  A = {} ({} triangles), B = {} ({} triangles){}\n  chip: k={} format={} dop-rounding={}; {} traversal, {} mode; {} poses\n  clock: {}",
+            "scene: {}\n  A = {} ({} triangles), B = {} ({} triangles){}\n  chip: k={} format={} dop-rounding={}; {} traversal, {} mode; {} poses{}",
             scene.name, scene.objects.a, ta.len(), scene.objects.b, tb.len(),
             if scene.objects.unit_cube { ", both scaled into [-1,1]^3" } else { "" },
-            scene.cfg.k, scene.cfg.format, scene.cfg.dop_rounding, format!("{:?}", scene.traversal).to_lowercase(), format!("{:?}", scene.mode).to_lowercase(), scene.poses.len(), scene.clock.source()
+            scene.cfg.k, scene.cfg.format, scene.cfg.dop_rounding, scene.traversal.name(), format!("{:?}", scene.mode).to_lowercase(), scene.poses.len(),
+            scene.clock.as_ref().map_or(String::new(), |c| format!("\n  clock: {}", c.source()))
         );
     }
     let bar = progress_bar(scene.poses.len() as u64, o.json);
@@ -487,11 +481,15 @@ fn run(path: Option<PathBuf>, o: RunOpts) -> Result<(), String> {
         }
         m => format!("memory {m}"),
     };
-    if out.cycles {
+    if let (true, Some(clock)) = (out.cycles, &scene.clock) {
         let p = &scene.params;
+        let how = match clock.source {
+            PeriodSource::Measured => String::new(),
+            how => format!(" (the period {}: so are chip_us, e2e_us, speedup and e2e_x)", how.name()),
+        };
         println!(
-            "cycles = the chip's clocks from start to done (cycle model: {} queue entries, {memory});\nchip_us = cycles x the clock period, {};\nsetup_us, settle_us = the host's setup for the pose and its settling of the uncertain pairs with the exact oracle, measured on this machine (wall clock, the fastest of 3, one pose at a time: noisy);\ne2e_us = setup_us + chip_us + settle_us; sw_us = the golden model's query on this machine (one at a time); speedup = sw_us / chip_us; e2e_x = sw_us / e2e_us.",
-            p.queue_entries, scene.clock.source()
+            "cycles = the chip's clocks from start to done (cycle model: {} queue entries, {memory});\nchip_us = cycles x the clock period, {};\nsetup_us, settle_us = the host's setup for the pose and its settling of the uncertain pairs with the exact oracle, measured on this machine (wall clock, the fastest of {runs} runs, one pose at a time: noisy);\ne2e_us = setup_us + chip_us + settle_us; sw_us = the golden model's query on this machine (the fastest of {runs} runs, one pose at a time); speedup = sw_us / chip_us; e2e_x = sw_us / e2e_us{how}.",
+            p.queue_entries, clock.source(), runs = collision_chip::measure::TIMING_RUNS
         );
         if records.iter().any(|r| r.cycles.as_ref().is_some_and(|c| c.overflow)) {
             println!("ovf = poses whose pair queue overflowed (listed below): the chip halted with an incomplete answer, so the cycle columns leave them out (-: every pose of the row overflowed) and their misses and extras are that answer's.");

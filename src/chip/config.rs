@@ -127,6 +127,16 @@ pub enum MemLayout {
     Records,
 }
 
+/// The name scenes use (`words`, `records`).
+impl std::fmt::Display for MemLayout {
+    fn fmt(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+        f.write_str(match self {
+            MemLayout::Words => "words",
+            MemLayout::Records => "records",
+        })
+    }
+}
+
 /// A query's chip configuration. Scenes (`[chip]`) and the CLI (`--k`, `--format`, ...) read
 /// it directly, each key optional ([`Default`]: the papers' chip), and
 /// [`check`](ChipConfig::check) it once.
@@ -155,8 +165,8 @@ pub struct ChipConfig {
     /// presets only).
     #[arg(skip = ChipConfig::default().layout)]
     pub layout: MemLayout,
-    /// Node records held per object for the DOP unit, least recently used replaced
-    /// (`golden::memory::NodeCache`); 1: the previous pair's, as in the RTL chips.
+    /// Node records held per object for the DOP unit, least recently used replaced; 1: the
+    /// previous pair's, as in the RTL chips.
     #[arg(long, default_value_t = ChipConfig::default().node_cache)]
     pub node_cache: u32,
 }

@@ -13,20 +13,20 @@ use serde::{Deserialize, Serialize};
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, clap::ValueEnum)]
 #[serde(rename_all = "kebab-case")]
 pub enum Preset {
-    /// DATE'05's chip: k = 24, binary32, DATE'05's 756-bit DDR2 (our timing assumptions,
-    /// `Ddr::DATE05`), the image laid out for the bus (`MemLayout::Records`, 16 node records held per object) and the memory
-    /// port at full speed (an issue every clock, 16 requests in
-    /// flight, 14 pairs prefetched, a credit of 48); the paper's 800 MHz.
+    /// DATE'05's chip: k = 24, binary32, DATE'05's 756-bit DDR2 (its timing our assumption:
+    /// DDR2-800 at 5-5-5), the image laid out for the bus (layout "records", 16 node
+    /// records held per object) and the memory port at full speed (an issue every clock, 16
+    /// requests in flight, 14 pairs prefetched, a credit of 48); the paper's 800 MHz.
     Date05,
-    /// WSCG'03's chip (the Stack Engine, `Architecture::Wscg03`) on its 4-bank DDR SDRAM on a
-    /// 256-bit bus (`Ddr::WSCG03`) at 266 MHz, A's 128-line triangle cache (§4.3), records as
-    /// `date05`, k = 24 binary32; `[chip] architecture = "date05"` runs DATE'05's chip (its
-    /// port as `date05`'s) on the same memory.
+    /// WSCG'03's chip (its Stack Engine: architecture "wscg03") on its 4-bank DDR SDRAM on a
+    /// 256-bit bus at 266 MHz, A's 128-line triangle cache (§4.3), k = 24 binary32; with
+    /// architecture "date05", DATE'05's chip (its port, records and node records as date05's)
+    /// on the same memory.
     Wscg03,
-    /// The RTL chips' reset values, which the checked-in traces use: the `words` layout, one request outstanding,
-    /// issues two clocks apart, a memory word every clock after one clock; 800 MHz. (The
-    /// k = 24 binary32 chip also reads `[chip] layout = "records"` with one node record
-    /// held, on any memory: `harness::chip_io::rtl_order`.)
+    /// The RTL chips' reset values, which the checked-in traces use: the "words" layout, one
+    /// request outstanding, issues two clocks apart, a memory word every clock after one
+    /// clock; 800 MHz. (The k = 24 binary32 chip also reads layout "records" with one node
+    /// record held, on any memory.)
     Rtl,
 }
 

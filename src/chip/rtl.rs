@@ -211,6 +211,29 @@ impl ChipKind {
         ChipKind::built(cfg).find(|k| (k.dop_interval(), k.tri_interval()) == (dop_interval, tri_interval))
     }
 
+    /// Whether this chip holds `cfg`'s memory side: one node record per object, the `words`
+    /// layout (the chips of [`records`](Self::records) also `records`, on any memory: the port
+    /// computes `RecordMap`'s addresses) and at most [`TRI_CACHE_LINES`] lines of A's
+    /// triangle cache; otherwise what to change.
+    pub fn reads(self, cfg: &ChipConfig) -> Result<(), String> {
+        use super::config::MemLayout;
+        if cfg.node_cache != 1 {
+            return Err(format!("the RTL chips hold one node record per object; this configuration has node_cache = {}: set [chip] node_cache = 1", cfg.node_cache));
+        }
+        if cfg.layout == MemLayout::Records && !self.records() {
+            let records: Vec<&str> = ChipKind::ALL.iter().filter(|k| k.records()).map(|k| k.name()).collect();
+            return Err(format!(
+                "{} reads the `words` layout only (of the RTL chips, {} also read `records`); this configuration has layout = \"records\": set [chip] layout = \"words\"",
+                self.name(),
+                records.join(", ")
+            ));
+        }
+        if cfg.tri_cache > TRI_CACHE_LINES as u32 {
+            return Err(format!("the RTL chips' triangle cache has {TRI_CACHE_LINES} lines; this configuration has tri_cache = {}: set [chip] tri_cache to at most {TRI_CACHE_LINES}", cfg.tri_cache));
+        }
+        Ok(())
+    }
+
     /// The chips built for `cfg`'s k, formats and roundings, at any TRI_UNIT interval.
     pub fn built(cfg: &ChipConfig) -> impl Iterator<Item = ChipKind> {
         let base = ChipConfig { tri_cache: 1, layout: super::config::MemLayout::Words, node_cache: 1, ..*cfg };

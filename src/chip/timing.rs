@@ -6,6 +6,8 @@
 
 use super::config::ChipConfig;
 use super::preset::Preset;
+use super::wscg03::Architecture;
+use crate::format::{Format, Rounding};
 use super::rtl::{self, ChipKind};
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
@@ -14,12 +16,12 @@ use std::collections::BTreeMap;
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize, clap::ValueEnum)]
 #[serde(rename_all = "kebab-case")]
 pub enum Technology {
-    /// OSU 0.18 um standard cells, Yosys + OpenSTA, pre-layout: `docs/figures/timing.csv`.
+    /// OSU 0.18 um standard cells, Yosys + OpenSTA, pre-layout: docs/figures/timing.csv.
     #[default]
     Osu018,
-    /// Lattice ECP5 (LFE5U-85F), nextpnr-ecp5: `docs/figures/timing_ecp5.csv`.
+    /// Lattice ECP5 (LFE5U-85F), nextpnr-ecp5: docs/figures/timing_ecp5.csv.
     Ecp5,
-    /// The papers' clock (DATE'05 800 MHz, WSCG'03 266 MHz; [`Preset::clock_mhz`]), assumed.
+    /// The papers' clock (DATE'05 800 MHz, WSCG'03 266 MHz), assumed.
     Paper,
 }
 
@@ -135,12 +137,8 @@ pub fn tri_unit(cfg: &ChipConfig, tri_interval: u32) -> String {
 /// the pair queue, docs/figures/timing_config.csv), so it bounds the folded chip's glue until
 /// the folded chip has a row of its own.
 pub fn units(cfg: &ChipConfig, folds: Folds) -> Vec<String> {
-    let tri_interval = folds.tri;
-    let (d, dr) = (rtl::format_tag(cfg.format.dop), rtl::rounding_tag(cfg.dop_rounding.op()));
-    let (t, tr) = (rtl::format_tag(cfg.format.tri), rtl::rounding_tag(cfg.tri_rounding));
-    let mut u = vec![format!("fp_mul_{d}_{dr}"), format!("fp_add_{d}_{dr}"), format!("doptrf_{d}_{dr}"), dop_unit(cfg, folds.dop)];
-    let tcheck = (tri_interval == 1).then(|| format!("tcheck_{t}_{tr}"));
-    for name in [format!("fp_mul_{t}_{tr}"), format!("fp_add_{t}_{tr}"), format!("fp_scale_{t}")].into_iter().chain(tcheck).chain([tri_unit(cfg, tri_interval)]) {
+    let mut u: Vec<String> = vec![];
+    for name in datapaths(cfg, folds).into_iter().flatten() {
         if !u.contains(&name) {
             u.push(name);
         }
@@ -151,6 +149,16 @@ pub fn units(cfg: &ChipConfig, folds: Folds) -> Vec<String> {
         u.push(chip_name(cfg, folds));
     }
     u
+}
+
+/// The units of the two datapaths of [`units`]: the DOP datapath's and T.CHECK's.
+fn datapaths(cfg: &ChipConfig, folds: Folds) -> [Vec<String>; 2] {
+    let (d, dr) = (rtl::format_tag(cfg.format.dop), rtl::rounding_tag(cfg.dop_rounding.op()));
+    let (t, tr) = (rtl::format_tag(cfg.format.tri), rtl::rounding_tag(cfg.tri_rounding));
+    let dop = vec![format!("fp_mul_{d}_{dr}"), format!("fp_add_{d}_{dr}"), format!("doptrf_{d}_{dr}"), dop_unit(cfg, folds.dop)];
+    let tcheck = (folds.tri == 1).then(|| format!("tcheck_{t}_{tr}"));
+    let tri = [format!("fp_mul_{t}_{tr}"), format!("fp_add_{t}_{tr}"), format!("fp_scale_{t}")].into_iter().chain(tcheck).chain([tri_unit(cfg, folds.tri)]).collect();
+    [dop, tri]
 }
 
 /// A folded unit's unfolded counterpart, whose period stands in for the folded unit's where
@@ -178,21 +186,58 @@ fn chip_name(cfg: &ChipConfig, folds: Folds) -> String {
     }
 }
 
-/// A chip's name for a configuration the RTL does not build (as `rtl_chips!` names them).
+/// A chip's name for a configuration the RTL does not build (as `rtl_chips!` names them; a
+/// rounding other than the RTL chips', outward DOP lanes and T.CHECK to nearest-even, named
+/// too, so that no such configuration takes a built chip's row for its own).
 fn cfg_tag(cfg: &ChipConfig) -> String {
     let (d, t) = (rtl::format_tag(cfg.format.dop), rtl::format_tag(cfg.format.tri));
-    if d == t { format!("{d}_k{}", cfg.k) } else { format!("{d}_{t}_k{}", cfg.k) }
+    let formats = if d == t { format!("{d}_k{}", cfg.k) } else { format!("{d}_{t}_k{}", cfg.k) };
+    let (dr, tr) = (cfg.dop_rounding.op(), cfg.tri_rounding);
+    let dop = if dr == Rounding::TowardPositive { String::new() } else { format!("_dop_{}", rtl::rounding_tag(dr)) };
+    let tri = if tr == Rounding::NearestEven { String::new() } else { format!("_tri_{}", rtl::rounding_tag(tr)) };
+    format!("{formats}{dop}{tri}")
 }
+
+/// How a clock period was obtained (the JSON's `period_source`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum PeriodSource {
+    /// The timing table's row of the configuration's own RTL chip (the slowest of its rows).
+    Measured,
+    /// The configuration's own chip has no row: measured rows stand in for it
+    /// ([`Clock::estimate`] says which, and for what).
+    Estimated,
+    /// Not from a table: the paper's clock or the scene's `clock_mhz`.
+    Assumed,
+}
+
+impl PeriodSource {
+    pub fn name(self) -> &'static str {
+        match self {
+            PeriodSource::Measured => "measured",
+            PeriodSource::Estimated => "estimated",
+            PeriodSource::Assumed => "assumed",
+        }
+    }
+}
+
+/// The formats whose units the timing study measures, narrowest first: a format not
+/// measured is estimated by the first of these at least as wide in exponent and fraction.
+const MEASURED_FORMATS: [Format; 2] = [Format::REDUCED, Format::BINARY32];
 
 /// The clock a report runs at, and where it came from.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Clock {
     pub period_ns: f64,
+    pub source: PeriodSource,
     pub technology: Option<Technology>,
-    /// Measured: the table's file, the slowest measured unit, the units with no row.
+    /// From a table: its file, the row that sets the period, the configuration's units with
+    /// no row.
     pub table: Option<&'static str>,
     pub slowest: Option<String>,
     pub not_measured: Vec<String>,
+    /// Estimated: what stands in for what.
+    pub estimate: Option<String>,
     /// Assumed: why (the scene's `clock_mhz`, the preset's paper clock).
     pub assumed: Option<String>,
 }
@@ -204,11 +249,13 @@ impl Clock {
 
     /// An assumed clock of `mhz`, `why`.
     pub fn assumed(mhz: f64, why: String) -> Clock {
-        Clock { period_ns: 1000.0 / mhz, technology: None, table: None, slowest: None, not_measured: vec![], assumed: Some(why) }
+        let period_ns = 1000.0 / mhz;
+        Clock { period_ns, source: PeriodSource::Assumed, technology: None, table: None, slowest: None, not_measured: vec![], estimate: None, assumed: Some(why) }
     }
 
-    /// The configuration's period in `tech` with its units folded as `folds`: the slowest of its measured [`units`] (or the preset's paper clock). An error
-    /// if the table measured none of them.
+    /// The configuration's period in `tech` with its units folded as `folds` ([`measured`](Self::measured)), or the
+    /// preset's paper clock. An error if the table measures neither datapath's units nor a wider
+    /// format's.
     pub fn of(tech: Technology, cfg: &ChipConfig, folds: Folds, preset: Preset) -> Result<Clock, String> {
         let Some((file, text, what)) = tech.table() else {
             let mut c = Clock::assumed(preset.clock_mhz(), format!("the paper's {} MHz (preset {}), assumed", preset.clock_mhz(), preset.name()));
@@ -216,30 +263,68 @@ impl Clock {
             return Ok(c);
         };
         let table = Table::parse(text, file)?;
-        let mut c = Clock::measured(&table, cfg, folds).ok_or_else(|| {
-            format!("{file} ({what}) measures none of this configuration's units ({}): run scripts/timing-study.sh, or set [timing] technology = \"paper\" or clock_mhz", units(cfg, folds).join(", "))
+        let mut c = Clock::measured(&table, cfg, folds).map_err(|none| {
+            format!("{file} ({what}) measures none of this configuration's {none}, nor of a wider format's: its period would be the other units' alone; run scripts/timing-study.sh, or set [timing] technology = \"paper\" or clock_mhz (assumed)")
         })?;
         (c.technology, c.table) = (Some(tech), Some(file));
         Ok(c)
     }
 
-    /// The slowest of `cfg`'s units that `table` measured, the others named as not measured.
-    pub fn measured(table: &Table, cfg: &ChipConfig, folds: Folds) -> Option<Clock> {
+    /// The slowest of `cfg`'s units that `table` measured, the others named as not measured:
+    /// measured if one of them is the configuration's own RTL chip, else estimated. A
+    /// datapath with no unit measured in its format takes the units of the narrowest measured
+    /// format at least as wide (an upper bound of its own, estimated). Err: the datapath none
+    /// of whose units is measured in any such format.
+    pub fn measured(table: &Table, cfg: &ChipConfig, folds: Folds) -> Result<Clock, String> {
+        let has = |c: &ChipConfig, path: usize| datapaths(c, folds)[path].iter().any(|u| table.periods.contains_key(u) || stand_in(c, folds, u).is_some_and(|s| table.periods.contains_key(&s)));
+        let wider = |f: Format| MEASURED_FORMATS.into_iter().filter(move |w| w.exp_bits() >= f.exp_bits() && w.frac_bits() >= f.frac_bits());
+        let mut run = *cfg;
+        let mut widened = vec![];
+        for (path, name) in [(0, "DOP datapath"), (1, "T.CHECK datapath")] {
+            let own = if path == 0 { cfg.format.dop } else { cfg.format.tri };
+            if has(&run, path) {
+                continue;
+            }
+            let set = |c: &mut ChipConfig, f: Format| if path == 0 { c.format.dop = f } else { c.format.tri = f };
+            let f = wider(own).find(|&f| has(&{ let mut c = run; set(&mut c, f); c }, path));
+            let f = f.ok_or_else(|| format!("{name}'s units ({})", datapaths(cfg, folds)[path].join(", ")))?;
+            set(&mut run, f);
+            widened.push(format!("the {name} in {f} stands in for {own} (not built in RTL; a wider format)"));
+        }
         let (mut slowest, mut not_measured) = (None::<(String, f64)>, vec![]);
-        for u in units(cfg, folds) {
+        for u in units(&run, folds) {
             let own = table.periods.get(&u).map(|&ns| (u.clone(), ns));
             if own.is_none() {
                 not_measured.push(u.clone());
             }
-            let stood = || stand_in(cfg, folds, &u).and_then(|s| table.periods.get(&s).map(|&ns| (format!("{s} (for {u})"), ns)));
+            let stood = || stand_in(&run, folds, &u).and_then(|s| table.periods.get(&s).map(|&ns| (format!("{s} (for {u})"), ns)));
             if let Some((name, ns)) = own.or_else(stood) {
                 if slowest.as_ref().is_none_or(|s| ns > s.1) {
                     slowest = Some((name, ns));
                 }
             }
         }
-        let (unit, ns) = slowest?;
-        Some(Clock { period_ns: ns, technology: None, table: None, slowest: Some(unit), not_measured, assumed: None })
+        let (unit, ns) = slowest.expect("a datapath unit is measured");
+        let chip = ChipKind::of(cfg, folds.dop, folds.tri);
+        let why = match chip.map(|k| (k, k.reads(cfg))) {
+            _ if !widened.is_empty() => widened.join("; "),
+            None => format!("{} is not built in RTL", chip_name(cfg, folds)),
+            Some((k, Err(_))) => format!("{} is built with one node record per object, its layouts and up to {} triangle cache lines; this configuration's memory side differs", k.name(), rtl::TRI_CACHE_LINES),
+            Some((k, Ok(()))) if !table.periods.contains_key(k.name()) => format!("{} has no row", k.name()),
+            Some(_) => String::new(),
+        };
+        let (source, estimate) = if why.is_empty() { (PeriodSource::Measured, None) } else { (PeriodSource::Estimated, Some(format!("{unit} stands in for this configuration's chip: {why}"))) };
+        Ok(Clock { period_ns: ns, source, technology: None, table: None, slowest: Some(unit), not_measured, estimate, assumed: None })
+    }
+
+    /// This clock for WSCG'03's chip, which has no RTL: a table's period, DATE'05's chip of
+    /// the configuration's, stands in (estimated).
+    pub fn for_architecture(mut self, arch: Architecture) -> Clock {
+        if arch == Architecture::Wscg03 && self.source != PeriodSource::Assumed {
+            let date05 = self.estimate.take().unwrap_or_else(|| format!("{}, measured", self.slowest.as_deref().unwrap_or("-")));
+            (self.source, self.estimate) = (PeriodSource::Estimated, Some(format!("WSCG'03's chip has no RTL; DATE'05's chip of this configuration stands in ({date05})")));
+        }
+        self
     }
 
     /// One line: the period and where it came from.
@@ -250,11 +335,11 @@ impl Clock {
         }
         let what = self.technology.and_then(Technology::table).map_or("", |t| t.2);
         let missing = if self.not_measured.is_empty() { "none".into() } else { self.not_measured.join(", ") };
-        format!(
-            "{head}: measured, {what}, {}, slowest unit {}; units not measured: {missing}",
-            self.table.unwrap_or("a timing table"),
-            self.slowest.as_deref().unwrap_or("-")
-        )
+        let how = match &self.estimate {
+            Some(e) => format!("estimated: {e}"),
+            None => format!("measured, slowest unit {}", self.slowest.as_deref().unwrap_or("-")),
+        };
+        format!("{head}: {how} ({what}, {}); units not measured: {missing}", self.table.unwrap_or("a timing table"))
     }
 }
 
@@ -262,7 +347,6 @@ impl Clock {
 mod tests {
     use super::*;
     use crate::chip::config::{DopRounding, Formats};
-    use crate::format::Format;
 
     /// A configuration's period is the largest of its units' in a hand-written table; units of
     /// other formats and roundings do not count; absent ones are named.
@@ -283,17 +367,56 @@ mod tests {
         assert_eq!((c.period_ns, c.slowest.as_deref()), (8.0, Some("fp_add_e8m15_rne")));
         assert!(c.not_measured.contains(&"tcheck_e8m15_rne".to_string()) && c.not_measured.contains(&"chip_e8m15_k6".to_string()));
         assert!(!c.not_measured.iter().any(|u| u.starts_with("fp_mul") || u.starts_with("fp_add")), "{:?}", c.not_measured);
+        assert_eq!(c.source, PeriodSource::Estimated);
+        assert!(c.source().contains("estimated: fp_add_e8m15_rne stands in for this configuration's chip: chip_e8m15_k6 has no row"), "{}", c.source());
         // columns found by name, in any order; Fmax where no period is given
-        let t = Table::parse("fmax_mhz,unit\n125,pair_queue_n4\n", "t.csv").unwrap();
+        let t = Table::parse("fmax_mhz,unit\n125,pair_queue_n4\n200,fp_mul_e8m15_ru\n150,tcheck_e8m15_rne\n", "t.csv").unwrap();
         assert_eq!(Clock::measured(&t, &cfg, Folds::NONE).unwrap().period_ns, 8.0);
         // the FPGA table's `period_ns` where there is no `min_period_ns`: exact, its Fmax rounded
-        let t = Table::parse("unit,fmax_mhz,period_ns\npair_queue_n4,23.1,43.214\n", "t.csv").unwrap();
+        let t = Table::parse("unit,fmax_mhz,period_ns\npair_queue_n4,23.1,43.214\ndop_unit_k6_e8m15_ru,30,33.3\ntri_unit_e8m15_rne,30,33.3\n", "t.csv").unwrap();
         assert_eq!(Clock::measured(&t, &cfg, Folds::NONE).unwrap().period_ns, 43.214);
-        assert!(Clock::measured(&Table::parse("unit,min_period_ns\nfp_mul_b32_ru,3\n", "t").unwrap(), &cfg, Folds::NONE).is_none());
         // the whole chip, where measured, is one of its units: its control and the paths
-        // between units count
-        let t = Table::parse("unit,min_period_ns\nfp_add_e8m15_rne,8\nchip_e8m15_k6,9\n", "t").unwrap();
-        assert_eq!(Clock::measured(&t, &cfg, Folds::NONE).unwrap().slowest.as_deref(), Some("chip_e8m15_k6"));
+        // between units count; its row makes the period measured
+        let t = Table::parse("unit,min_period_ns\nfp_add_e8m15_rne,8\nfp_add_e8m15_ru,7\nchip_e8m15_k6,9\n", "t").unwrap();
+        let c = Clock::measured(&t, &cfg, Folds::NONE).unwrap();
+        assert_eq!((c.slowest.as_deref(), c.source, c.estimate), (Some("chip_e8m15_k6"), PeriodSource::Measured, None));
+        // a rounding the RTL chips are not built with has a chip of its own name, not measured
+        let t2 = Table::parse("unit,min_period_ns\nfp_add_e8m15_rne,8\nchip_e8m15_k6,9\n", "t").unwrap();
+        let ne = Clock::measured(&t2, &ChipConfig { dop_rounding: DopRounding::NearestEven, ..cfg }, Folds::NONE).unwrap();
+        assert_eq!((ne.period_ns, ne.source), (8.0, PeriodSource::Estimated));
+        assert!(ne.not_measured.contains(&"chip_e8m15_k6_dop_rne".to_string()), "{:?}", ne.not_measured);
+        // the RTL chip with another memory side stands in (estimated)
+        let cached = ChipConfig { node_cache: 16, ..cfg };
+        let c = Clock::measured(&t, &cached, Folds::NONE).unwrap();
+        assert_eq!((c.period_ns, c.source), (9.0, PeriodSource::Estimated));
+        assert!(c.source().contains("chip_e8m15_k6 is built with one node record per object"), "{}", c.source());
+    }
+
+    /// A datapath none of whose units is measured does not leave the period to the others
+    /// (the pair queue's 3.4 ns for an e8m24 chip): the narrowest measured format at least as
+    /// wide stands in (estimated), and with none the configuration has no period.
+    #[test]
+    fn an_unmeasured_datapath_is_estimated_by_a_wider_format_or_refused() {
+        let t = Table::parse("unit,min_period_ns\npair_queue_n4,3.4\nfp_mul_b32_ru,3\ntri_unit_b32_rne,7\ntri_unit_e8m15_rne,6\n", "t").unwrap();
+        let cfg = |dop, tri| ChipConfig { k: 6, format: Formats { dop, tri }, ..Default::default() };
+        let b32 = Format::BINARY32;
+        let e = Clock::measured(&t, &cfg(Format::new(8, 24).unwrap(), b32), Folds::NONE).unwrap_err();
+        assert!(e.starts_with("DOP datapath's units (fp_mul_e8m24_ru"), "{e}");
+        assert!(Clock::measured(&t, &cfg(b32, Format::new(8, 24).unwrap()), Folds::NONE).unwrap_err().starts_with("T.CHECK datapath's units"));
+        let e8m10 = Format::new(8, 10).unwrap();
+        let c = Clock::measured(&t, &cfg(e8m10, e8m10), Folds::NONE).unwrap();
+        // the DOP datapath has only binary32 measured, T.CHECK e8m15 (the narrowest)
+        assert_eq!((c.period_ns, c.source, c.slowest.as_deref()), (6.0, PeriodSource::Estimated, Some("tri_unit_e8m15_rne")));
+        let why = c.estimate.unwrap();
+        assert!(why.contains("the DOP datapath in binary32 stands in for e8m10") && why.contains("the T.CHECK datapath in e8m15 stands in for e8m10"), "{why}");
+        // WSCG'03's chip: a table's period is DATE'05's chip's, estimated
+        let osu = Clock::of(Technology::Osu018, &ChipConfig::default(), Folds::NONE, Preset::Rtl).unwrap();
+        assert_eq!(osu.source, PeriodSource::Measured);
+        let w = osu.clone().for_architecture(Architecture::Wscg03);
+        assert_eq!((w.period_ns, w.source), (osu.period_ns, PeriodSource::Estimated));
+        assert!(w.source().contains("WSCG'03's chip has no RTL; DATE'05's chip of this configuration stands in (chip_b32_k24, measured)"), "{}", w.source());
+        let paper = Clock::of(Technology::Paper, &ChipConfig::default(), Folds::NONE, Preset::Wscg03).unwrap();
+        assert_eq!(paper.clone().for_architecture(Architecture::Wscg03), paper);
     }
 
     #[test]
@@ -314,15 +437,17 @@ mod tests {
         }
         assert!(!u.iter().any(|n| n == "tcheck_e8m15_rne" || n == "tri_unit_e8m15_rne"), "{u:?}");
         let t = Table::parse("unit,min_period_ns
+dop_unit_k6_e8m15_ru,5
 tri_unit_e8m15_rne,20
 tri_unit_fold16_e8m15_rne,9
 chip_e8m15_k6,8
 ", "t").unwrap();
         let c = Clock::measured(&t, &cfg, Folds { tri: 16, dop: 1 }).unwrap();
-        assert_eq!((c.period_ns, c.slowest.as_deref()), (9.0, Some("tri_unit_fold16_e8m15_rne")));
+        assert_eq!((c.period_ns, c.slowest.as_deref(), c.source), (9.0, Some("tri_unit_fold16_e8m15_rne"), PeriodSource::Estimated));
+        assert!(c.source().contains("chip_e8m15_k6_fold16 has no row"), "{}", c.source());
         assert!(c.not_measured.contains(&"chip_e8m15_k6_fold16".to_string()), "{:?}", c.not_measured);
         // the folded unit not measured: the unfolded one's period stands in, a lower bound
-        let t = Table::parse("unit,min_period_ns\ntri_unit_e8m15_rne,20\nchip_e8m15_k6,8\n", "t").unwrap();
+        let t = Table::parse("unit,min_period_ns\ndop_unit_k6_e8m15_ru,5\ntri_unit_e8m15_rne,20\nchip_e8m15_k6,8\n", "t").unwrap();
         let c = Clock::measured(&t, &cfg, Folds { tri: 16, dop: 1 }).unwrap();
         assert_eq!((c.period_ns, c.slowest.as_deref()), (20.0, Some("tri_unit_e8m15_rne (for tri_unit_fold16_e8m15_rne)")));
         assert!(c.not_measured.contains(&"tri_unit_fold16_e8m15_rne".to_string()), "{:?}", c.not_measured);

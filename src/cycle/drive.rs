@@ -246,7 +246,12 @@ pub fn run_query<C: Clocked>(
         fault(chip, cyc)?;
         cyc += 1;
     }
-    Err(ChipError(format!("the query did not finish within {} cycles", d.max_cycles)))
+    Err(ChipError(not_finished(d.max_cycles)))
+}
+
+/// The error of a query stopped at `max_cycles` (a bound that catches a hung model).
+pub fn not_finished(max_cycles: u64) -> String {
+    format!("the query did not finish within {max_cycles} cycles")
 }
 
 fn fault<C: Clocked>(chip: &C, cyc: u64) -> Result<(), ChipError> {

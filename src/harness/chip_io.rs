@@ -582,8 +582,13 @@ pub fn run_query_vcd<C: RtlPorts>(
 /// parameters, and in which order; otherwise what to change.
 pub fn rtl_order(cfg: &ChipConfig, traversal: Traversal, p: &Params) -> Result<(ChipKind, Order), String> {
     if ChipKind::built(cfg).next().is_none() {
-        let mut built: Vec<String> = ChipKind::ALL.iter().map(|k| format!("k = {}, format = \"{}\"", k.config().k, k.config().format)).collect();
-        built.dedup();
+        let mut built: Vec<String> = vec![];
+        for k in ChipKind::ALL {
+            let c = format!("k = {}, format = \"{}\"", k.config().k, k.config().format);
+            if !built.contains(&c) {
+                built.push(c);
+            }
+        }
         return Err(format!(
             "the RTL chips are built for {}, all with dop_rounding = \"outward\" and T.CHECK to nearest-even; this scene has k = {}, format {}, dop_rounding {}, tri_rounding {:?}: set [chip] to one of them",
             built.join(" or "), cfg.k, cfg.format, cfg.dop_rounding, cfg.tri_rounding
@@ -598,11 +603,7 @@ pub fn rtl_order(cfg: &ChipConfig, traversal: Traversal, p: &Params) -> Result<(
             ii.join(" or ")
         ));
     };
-    rtl_layout(kind, cfg)?;
-    let lines = chips::TRI_CACHE_LINES;
-    if cfg.tri_cache > lines as u32 {
-        return Err(format!("the RTL chips' triangle cache has {lines} lines; this scene asks for tri_cache = {}: set [chip] tri_cache to at most {lines}", cfg.tri_cache));
-    }
+    kind.reads(cfg)?;
     let rtl = Params {
         memory: p.memory,
         prefetch: p.prefetch,
@@ -627,23 +628,8 @@ pub fn rtl_order(cfg: &ChipConfig, traversal: Traversal, p: &Params) -> Result<(
     }
     match traversal.order() {
         Some(order) => Ok((kind, order)),
-        None => Err(format!("the RTL chip's D_CNTR runs the fifo or lifo traversal, not {traversal:?}: set [query] traversal")),
+        None => Err(format!("the RTL chip's D_CNTR runs the fifo or lifo traversal, not {}: set [query] traversal", traversal.name())),
     }
-}
-
-/// Whether `kind` reads `cfg`'s memory layout: every chip the `words` layout, the chips of
-/// [`ChipKind::records`] also `records` (on any memory: the port computes
-/// [`RecordMap`]'s addresses), all with one node record held per object.
-fn rtl_layout(kind: ChipKind, cfg: &ChipConfig) -> Result<(), String> {
-    let records = cfg.layout == MemLayout::Records;
-    let records_chips: Vec<&str> = ChipKind::ALL.iter().filter(|k| k.records()).map(|k| k.name()).collect();
-    if cfg.node_cache != 1 || (records && !kind.records()) {
-        return Err(format!(
-            "the RTL chips hold one node record per object and read the `words` layout; {} also `records`; this scene has {}, layout = {:?}, node_cache = {}: set [chip] node_cache = 1, and layout = \"words\" (preset = \"rtl\") or the chip {}",
-            records_chips.join(", "), kind.name(), cfg.layout, cfg.node_cache, records_chips.join(", ")
-        ));
-    }
-    Ok(())
 }
 
 /// Runs one pose on the rust-hdl chip in lockstep with the cycle model (on a thread with

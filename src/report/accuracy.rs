@@ -7,7 +7,7 @@
 use crate::chip::config::{ChipConfig, DopRounding, Formats};
 use crate::chip::memory::Memory;
 use crate::chip::preset::Preset;
-use crate::chip::timing::{self, Clock, Folds, Technology};
+use crate::chip::timing::{self, Clock, Folds, PeriodSource, Technology};
 use crate::cycle::{self, drive::Reader};
 use crate::chip::params::Params;
 use crate::dop::tree::Tri;
@@ -51,8 +51,16 @@ impl Plan {
         let mut out = vec![];
         for &preset in &self.presets {
             let mut params = preset.params();
-            if let Memory::Ideal(t) = &mut params.memory {
-                t.bus_bits = self.bus_bits.or(t.bus_bits);
+            match (&mut params.memory, self.bus_bits) {
+                (Memory::Ideal(t), Some(b)) => t.bus_bits = Some(b),
+                (Memory::Ddr(d), Some(b)) => {
+                    return Err(format!(
+                        "--bus-bits {b} sets the ideal memory's bus (preset rtl's memory); preset {}'s memory is DDR SDRAM on a bus of its own ({} bits): leave --bus-bits out, or give --presets rtl",
+                        preset.name(),
+                        d.bus_bits
+                    ))
+                }
+                (_, None) => {}
             }
             params.check()?;
             for &k in &self.ks {
@@ -119,8 +127,9 @@ pub struct Row {
     /// The pair intervals of TRI_UNIT and the DOP unit (1: unfolded).
     #[serde(default)]
     pub folds: Folds,
-    /// The clock period and where it came from ([`Clock::source`]).
+    /// The clock period, whether measured or estimated, and from what ([`Clock::source`]).
     pub period_ns: f64,
+    pub period_source: PeriodSource,
     pub clock: String,
     #[serde(flatten)]
     pub sums: Sums,
@@ -262,7 +271,7 @@ pub fn study(plan: &Plan, index: usize, tris: &[Tri], shard: Shard, progress: im
     for &(preset, cfg, params) in &configs {
         let folds = Folds { tri: params.tri_interval, dop: params.dop_interval };
         let clock = Clock::of(plan.technology, &cfg, folds, preset)?;
-        rows.push(Row { mesh: mesh.clone(), memory: preset, k: cfg.k, format: cfg.format, dop_rounding: cfg.dop_rounding, folds, period_ns: clock.period_ns, clock: clock.source(), sums: Sums::default(), host: HostSums::default() });
+        rows.push(Row { mesh: mesh.clone(), memory: preset, k: cfg.k, format: cfg.format, dop_rounding: cfg.dop_rounding, folds, period_ns: clock.period_ns, period_source: clock.source, clock: clock.source(), sums: Sums::default(), host: HostSums::default() });
         // one image per distinct chip (the presets share some)
         chip_of.push(match chips.iter().position(|c| c.cfg == cfg) {
             Some(i) => i,
@@ -369,7 +378,7 @@ pub fn merge(files: Vec<ShardFile>) -> Result<(Plan, Vec<Row>), String> {
 /// query: the chip's at its period, the host's measured, end to end; um^2 where the timing
 /// table measured both units.
 pub fn table(plan: &Plan, rows: &[Row], area: Option<&Area>) -> Result<String, String> {
-    let mut columns = vec!["mesh", "memory", "k", "format", "DOP rounding", "pair interval: TRI_UNIT / DOP unit", "queries", "exact pairs / query", "DOP tests / query", "triangle tests / query", "DOP false positives", "uncertain", "uncertain: degenerate / on plane / bound", "misses", "extra pairs", "memory KiB / query", "cycles / query", "period ns", "chip us", "host us (measured)", "end to end us", "um^2: DOP unit + TRI_UNIT"];
+    let mut columns = vec!["mesh", "memory", "k", "format", "DOP rounding", "pair interval: TRI_UNIT / DOP unit", "queries", "exact pairs / query", "DOP tests / query", "triangle tests / query", "DOP false positives", "uncertain", "uncertain: degenerate / on plane / bound", "misses", "extra pairs", "memory KiB / query", "cycles / query", "period ns (how)", "chip us", "host us (measured)", "end to end us", "um^2: DOP unit + TRI_UNIT"];
     if area.is_some() {
         columns.push("cells: DOP unit + TRI_UNIT");
     }
@@ -382,7 +391,7 @@ pub fn table(plan: &Plan, rows: &[Row], area: Option<&Area>) -> Result<String, S
         let um2 = timing.as_ref().and_then(|t| t.datapath_area_um2(&cfg, row.folds)).map_or("-".into(), |a| format!("{a:.0}"));
         let _ = write!(
             out,
-            "| {} | {} | {} | {} | {} | {} / {} | {} | {:.1} | {:.0} | {:.1} | {:.1}% | {:.2}% | {} / {} / {} | {} | {} | {:.1} | {:.0} | {:.3} | {:.1} | {:.1} | {:.1} | {um2} |",
+            "| {} | {} | {} | {} | {} | {} / {} | {} | {:.1} | {:.0} | {:.1} | {:.1}% | {:.2}% | {} / {} / {} | {} | {} | {:.1} | {:.0} | {:.3} {} | {:.1} | {:.1} | {:.1} | {um2} |",
             row.mesh,
             row.memory.name(),
             row.k,
@@ -404,6 +413,7 @@ pub fn table(plan: &Plan, rows: &[Row], area: Option<&Area>) -> Result<String, S
             r.memory_bytes as f64 / q / 1024.0,
             r.cycles as f64 / q,
             row.period_ns,
+            row.period_source.name(),
             row.chip_us(),
             row.host_us(),
             row.end_to_end_us(),
@@ -546,7 +556,7 @@ pub fn figures(rows: &[Row], area: Option<&Area>) -> Vec<Figure> {
     };
     let (on_uncertain, on_area) = (front(&uncertain), front(&cells_x));
     let mut table = Table {
-        columns: vec!["memory", "k", "format", "dop_rounding", "queries", "uncertain_share", "cycles_per_query", "period_ns", "chip_us", "host_us", "end_to_end_us", "memory_kib_per_query", "misses", "pareto", "cells", "pareto_area"],
+        columns: vec!["memory", "k", "format", "dop_rounding", "queries", "uncertain_share", "cycles_per_query", "period_ns", "period_source", "chip_us", "host_us", "end_to_end_us", "memory_kib_per_query", "misses", "pareto", "cells", "pareto_area"],
         rows: vec![],
     };
     for (i, c) in cfgs.iter().enumerate() {
@@ -560,6 +570,7 @@ pub fn figures(rows: &[Row], area: Option<&Area>) -> Vec<Figure> {
             Cell::Num(c.sums.uncertain_rate()),
             Cell::Num(c.sums.cycles as f64 / q),
             Cell::Num(c.period_ns),
+            Cell::Text(c.period_source.name().into()),
             Cell::Num(c.chip_us()),
             Cell::Num(c.host_us()),
             Cell::Num(c.end_to_end_us()),
@@ -662,7 +673,13 @@ mod tests {
         assert_eq!((rows[0].folds, rows[1].folds), (Folds::NONE, Folds { tri: 32, dop: 6 }));
         assert_eq!((a.dop_tests, a.tri_tests, a.uncertain), (b.dop_tests, b.tri_tests, b.uncertain));
         assert!(a.tri_tests > 0 && b.cycles > a.cycles, "{} -> {} clocks", a.cycles, b.cycles);
-        let bad = Plan { folds: vec![Folds { tri: 1, dop: 4 }], ..plan };
+        let bad = Plan { folds: vec![Folds { tri: 1, dop: 4 }], ..plan.clone() };
         assert!(run(&bad, load, Shard::ALL, || ()).unwrap_err().contains("k = 6, TRI_UNIT interval 1, DOP interval 4"));
+        // the ideal memory's bus is not a DDR preset's: refused there, not quietly left out
+        let bus = Plan { bus_bits: Some(64), ..plan };
+        let e = bus.configs().unwrap_err();
+        assert!(e.starts_with("--bus-bits 64 sets the ideal memory's bus (preset rtl's memory); preset date05's memory is DDR SDRAM on a bus of its own (756 bits)"), "{e}");
+        let rtl = Plan { presets: vec![Preset::Rtl], ..bus }.configs().unwrap();
+        assert!(rtl.iter().all(|(_, _, p)| p.memory == Memory::Ideal(crate::chip::memory::MemTiming { bus_bits: Some(64), ..Default::default() })));
     }
 }

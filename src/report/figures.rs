@@ -26,7 +26,7 @@
 use crate::chip::config::ChipConfig;
 use crate::chip::params::Params;
 use crate::chip::preset::Preset;
-use crate::chip::timing::{Clock, Folds, Technology};
+use crate::chip::timing::{Clock, Folds, PeriodSource, Technology};
 use crate::cycle::{self, drive::Reader};
 use crate::chip::wscg03::StackParams;
 use crate::measure::{interleaved_best, parallel_map};
@@ -125,13 +125,13 @@ impl ChipRun {
         clocks * self.clock.period_ns / 1000.0
     }
 
-    /// The period in a title: `7.51 ns (133 MHz, OSU 0.18 um: doptrf_b32_ru)`.
+    /// The period in a title: `9.09 ns (110 MHz, measured: chip_b32_k24)`.
     fn period(&self) -> String {
         let c = &self.clock;
-        let from = match (&c.assumed, &c.slowest) {
-            (Some(_), _) => "the paper's clock, assumed".to_string(),
-            (None, Some(u)) => format!("measured, {u}"),
-            (None, None) => "measured".to_string(),
+        let from = match (c.source, &c.slowest) {
+            (PeriodSource::Assumed, _) => "the paper's clock, assumed".to_string(),
+            (how, Some(u)) => format!("{}: {u}", how.name()),
+            (how, None) => how.name().to_string(),
         };
         format!("{:.2} ns ({:.0} MHz, {from})", c.period_ns, c.mhz())
     }
@@ -242,11 +242,12 @@ impl Runs {
 
 /// Runs `plan` and writes every figure into `out` (`<stem>.svg`, `.png`, `.csv`, `.json`,
 /// and `plan.json`). Returns the paths written.
+/// `out` is made first: a path that cannot be a directory is refused before the run.
 pub fn generate(plan: &Plan, out: &Path, bar: &ProgressBar) -> Result<Vec<PathBuf>, String> {
+    super::plot::output_dir(out)?;
     let runs = Runs::of(plan)?;
     let points = measure(plan, &runs, bar)?;
     let figs = figures(&points, &runs);
-    std::fs::create_dir_all(out).map_err(|e| format!("{}: {e}", out.display()))?;
     let mut written = vec![];
     let setup = PlanJson { plan, software: ChipConfig::default(), runs: &runs, parry: cfg!(feature = "parry") };
     write_text(&out.join("plan.json"), &(serde_json::to_string_pretty(&setup).expect("serialisable") + "\n"))?;
@@ -403,7 +404,7 @@ fn count(o: &Object, runs: &Runs, pose: &Pose) -> Result<PoseCounts, String> {
     let (trace, _) = cycle::run_query(chip, &setup, Order::Lifo, Mode::All, *params, Reader::default(), cycle::MAX_CYCLES, Default::default())?;
     trace.check(Mode::All, &all).map_err(|e| format!("DATE'05's chip on preset {}: the cycle model disagrees with the golden model: {e}", runs.wscg.preset.name()))?;
     (c.wscg_cycles, c.wscg_words, c.wscg_entries) = (trace.cycles, trace.node_fetches + trace.tri_fetches, trace.max_depth);
-    let run = cycle::wscg03::run_query(chip, &setup, Mode::All, params, &StackParams::PAPER)?;
+    let run = cycle::wscg03::run_query(chip, &setup, Mode::All, params, &StackParams::PAPER, cycle::MAX_CYCLES)?;
     run.trace.check(Mode::All, &all).map_err(|e| format!("WSCG'03's chip disagrees with the golden model: {e}"))?;
     let (t, s) = (&run.trace, &run.stats);
     (c.stack_cycles, c.stack_words, c.stack_dop_tests) = (t.cycles, t.node_fetches + t.tri_fetches, s.dop_tests);

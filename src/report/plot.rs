@@ -108,6 +108,12 @@ pub fn write_text(p: &Path, text: &str) -> Result<(), String> {
     std::fs::write(p, text).map_err(|e| format!("{}: {e}", p.display()))
 }
 
+/// Makes the directory `out` for figures (and its parents), before the run that fills it:
+/// an error names the path and why (a file there, no permission).
+pub fn output_dir(out: &Path) -> Result<(), String> {
+    std::fs::create_dir_all(out).map_err(|e| format!("{}: cannot make the output directory ({e}): give a directory's path", out.display()))
+}
+
 /// Writes `<stem>.csv`, `.json`, `.svg` and `.png` of `f` into `out` (which must exist);
 /// returns the paths.
 pub fn write_figure(f: &Figure, out: &Path) -> Result<Vec<PathBuf>, String> {

@@ -174,9 +174,10 @@ impl Unit {
             Unit::HostTrees => format!("{}-DOP trees and memory images of A and B ({})", s.cfg.k, s.cfg.format),
             Unit::HostSetup => format!("per pose ({}): B's placement, the DOP unit's C, c and D.KLMSEL, TRI_UNIT's frame maps", s.poses.len()),
             Unit::Golden => format!(
-                "the golden model's {} traversal ({} mode): DOPTRF, T.CHECK, in software, one pose at a time (timed)",
-                format!("{:?}", s.traversal).to_lowercase(),
-                format!("{:?}", s.mode).to_lowercase()
+                "the golden model's {} traversal ({} mode): DOPTRF, T.CHECK, in software, one pose at a time (timed: the fastest of {} runs)",
+                s.traversal.name(),
+                format!("{:?}", s.mode).to_lowercase(),
+                crate::measure::TIMING_RUNS
             ),
             Unit::HostSettle => "exact predicates on the pairs T.CHECK left uncertain".into(),
             Unit::ExactOracle => "every intersecting pair exactly (AABB broad phase, exact predicates on the f64 geometry)".into(),
@@ -203,7 +204,11 @@ impl Unit {
             Unit::RtlChip => format!("the rust-hdl chip{}, in lockstep with the cycle model (every output and probe, every clock)", chip_name(s)),
             Unit::VerilogChip => format!("the exported Verilog{} under Verilator (built once, cached under target/), every port every clock against the cycle model", chip_name(s)),
             Unit::OutPairs => format!("the summary table{}", if o.pairs { " and every pose's pairs" } else { "" }),
-            Unit::OutCycles => format!("clocks per query; the chip's time at {}; the host's setup and settling (measured); end to end; speed-up; stall table", s.clock.source()),
+            Unit::OutCycles => format!(
+                "clocks per query; the chip's time at {}; the software's time and the host's setup and settling (measured, warm: the fastest of {} runs); end to end; speed-up; stall table",
+                s.clock.as_ref().map_or("-".into(), crate::chip::timing::Clock::source),
+                crate::measure::TIMING_RUNS
+            ),
             Unit::OutMemory => "memory words and bytes, words per clock, port busy share".into(),
             Unit::OutWaveforms => "VCD files for GTKWave (scripts/gtkw/chip_e8m15_k6.gtkw)".into(),
             Unit::OutAccuracy => "exact pairs, misses, extras per pose".into(),
@@ -376,15 +381,16 @@ impl Plan {
         out
     }
 
-    /// The pruned graph in Graphviz DOT; skipped units dashed and grey.
-    pub fn dot(&self) -> String {
+    /// The pruned graph of `s` in Graphviz DOT, its units named as in `--explain`; skipped
+    /// units dashed and grey.
+    pub fn dot(&self, s: &Scene) -> String {
         let (g, _) = full_graph();
         let mut out = String::from("digraph scene {\n  rankdir=LR;\n  node [fontname=\"Helvetica\"];\n");
         for u in Unit::ALL {
             let shape = if u.level().is_none() { "note" } else { "box" };
             let level = u.level().map_or(String::new(), |l| format!("\\n{l:?}").to_lowercase());
             let style = if self.runs(u) { "solid" } else { "dashed\", color=\"grey\", fontcolor=\"grey" };
-            let _ = writeln!(out, "  {} [label=\"{}{}\", shape={shape}, style=\"{style}\"];", u.name(), u.name(), level);
+            let _ = writeln!(out, "  {} [label=\"{}{}\", shape={shape}, style=\"{style}\"];", u.name(), u.name_in(s), level);
         }
         for e in g.edge_indices() {
             let (a, b) = g.edge_endpoints(e).expect("an edge");

@@ -109,10 +109,11 @@
 //! ```
 
 pub mod graph;
+mod keys;
 pub mod record;
 pub mod run;
 
-use crate::chip::config::ChipConfig;
+use crate::chip::config::{ChipConfig, MemLayout};
 use crate::chip::memory::{Ddr, MemTiming, Memory};
 use crate::chip::params::Params;
 use crate::chip::preset::Preset;
@@ -183,16 +184,22 @@ fn named_key<T: serde::de::DeserializeOwned>(keys: &mut Keys, key: &str, text: &
         .transpose()
 }
 
-/// `[chip]`: the preset (the scene's, or `flag` over it; none: [`Preset::Rtl`], the RTL's reset
-/// point), the architecture (the scene's, else the preset's) and [`ChipConfig`]'s keys over
-/// its chip.
-fn chip(keys: Option<Keys>, text: &str, flag: Option<Preset>) -> Result<(Preset, Architecture, ChipConfig), String> {
+/// `[chip]`: the preset (the scene's, or `flags`' over it; none: [`Preset::Rtl`], the RTL's
+/// reset point), the architecture (`flags`', else the scene's, else the preset's) and
+/// [`ChipConfig`]'s keys over its chip. WSCG'03's chip reads the `words` layout and holds no
+/// node records, whatever the preset's (the golden model's counters then count what it
+/// reads).
+fn chip(keys: Option<Keys>, text: &str, flags: Flags) -> Result<(Preset, Architecture, ChipConfig), String> {
     let mut keys = keys.unwrap_or_default();
     let arch: Option<Architecture> = named_key(&mut keys, "architecture", text, "\"date05\" or \"wscg03\"")?;
     let named: Option<Preset> = named_key(&mut keys, "preset", text, "\"date05\", \"wscg03\" or \"rtl\"")?;
-    let preset = flag.or(named).unwrap_or(Preset::Rtl);
-    let arch = arch.unwrap_or(preset.architecture());
-    Ok((preset, arch, over(&preset.chip(), keys, text, "[chip]", "")?))
+    let preset = flags.preset.or(named).unwrap_or(Preset::Rtl);
+    let arch = flags.architecture.or(arch).unwrap_or(preset.architecture());
+    let mut cfg = over(&preset.chip(), keys, text, "[chip]", "")?;
+    if arch == Architecture::Wscg03 {
+        (cfg.layout, cfg.node_cache) = (MemLayout::Words, 1);
+    }
+    Ok((preset, arch, cfg))
 }
 
 /// `[timing]`: the chip's [`Params`] (each key optional, the preset's by default; the memory
@@ -218,14 +225,20 @@ fn timing(keys: Option<Keys>, text: &str, preset: Preset) -> Result<(Params, Opt
     Ok((over(&preset.params(), keys, text, "[timing]", "memory")?, technology, clock_mhz))
 }
 
+/// Assumed clocks, in MHz, from 1 kHz to 100 GHz: a chip's time at any other is no number
+/// a report can print (1e-307 MHz: an infinite period).
+const CLOCK_MHZ: std::ops::RangeInclusive<f64> = 1e-3..=1e5;
+
 /// The clock: an assumed `clock_mhz`, else `technology`'s period for the configuration
-/// (default: measured on OSU 0.18 um).
-fn clock(cfg: &ChipConfig, folds: Folds, preset: Preset, technology: Option<Technology>, clock_mhz: Option<f64>) -> Result<Clock, String> {
+/// (default: measured on OSU 0.18 um; estimated for WSCG'03's chip, which has no RTL).
+fn clock(cfg: &ChipConfig, folds: Folds, preset: Preset, arch: Architecture, technology: Option<Technology>, clock_mhz: Option<f64>) -> Result<Clock, String> {
     match (clock_mhz, technology) {
-        (Some(_), Some(_)) => Err("[timing] give clock_mhz (an assumed clock) or technology (a measured period), not both".into()),
-        (Some(mhz), None) if !(mhz.is_finite() && mhz > 0.0) => Err(format!("[timing] clock_mhz must be a positive number of MHz, not {mhz}")),
+        (Some(_), Some(_)) => Err("[timing] give clock_mhz (an assumed clock) or technology (a period from a timing table, or the paper's), not both".into()),
+        (Some(mhz), None) if !CLOCK_MHZ.contains(&mhz) => {
+            Err(format!("[timing] clock_mhz must be from {} to {} MHz, not {mhz}", CLOCK_MHZ.start(), CLOCK_MHZ.end()))
+        }
         (Some(mhz), None) => Ok(Clock::assumed(mhz, format!("the scene's clock_mhz = {mhz}, assumed"))),
-        (None, t) => Clock::of(t.unwrap_or_default(), cfg, folds, preset),
+        (None, t) => Ok(Clock::of(t.unwrap_or_default(), cfg, folds, preset)?.for_architecture(arch)),
     }
 }
 
@@ -248,29 +261,24 @@ struct MemorySection {
 }
 
 impl MemorySection {
-    /// The memory: this section's keys over `preset`'s (the chip preset's memory).
+    /// The memory: this section's keys over `preset`'s (the chip preset's memory; its DDR
+    /// values under `model = "ddr"` too). Keys of the other model are refused before
+    /// ([`keys::Written::unused`]).
     fn memory(&self, preset: Memory) -> Result<Memory, String> {
-        let ddr_keys = [self.banks, self.page_bytes, self.burst, self.hit, self.miss];
         let (preset_model, preset_ideal, preset_ddr) = match preset {
             Memory::Ideal(t) => ("ideal", t, None),
             Memory::Ddr(d) => ("ddr", MemTiming::default(), Some(d)),
         };
         match self.model.as_deref().unwrap_or(preset_model) {
             "ideal" => {
-                if self.preset.is_some() || ddr_keys.iter().any(Option::is_some) {
-                    return Err("[memory] preset, banks, page_bytes, burst, hit and miss belong to model = \"ddr\"; the ideal model takes latency, interval and bus_bits".into());
-                }
-                let d = if self.model.is_some() { MemTiming::default() } else { preset_ideal };
-                Ok(Memory::Ideal(MemTiming { latency: self.latency.unwrap_or(d.latency), interval: self.interval.unwrap_or(d.interval), bus_bits: self.bus_bits }))
+                let d = preset_ideal;
+                Ok(Memory::Ideal(MemTiming { latency: self.latency.unwrap_or(d.latency), interval: self.interval.unwrap_or(d.interval), bus_bits: self.bus_bits.or(d.bus_bits) }))
             }
             "ddr" => {
-                if self.latency.is_some() || self.interval.is_some() {
-                    return Err("[memory] latency and interval belong to the ideal model; a DDR model's timing is its hit and miss costs".into());
-                }
                 let base = (self.preset.as_deref())
                     .map(|p| Ddr::preset(p).ok_or_else(|| format!("[memory] preset \"{p}\" is not known: use \"wscg03\" or \"date05\"")))
                     .transpose()?
-                    .or(preset_ddr.filter(|_| self.model.is_none()));
+                    .or(preset_ddr);
                 // each parameter: the scene's, else the preset's
                 let get = |key: &str, own: Option<u32>, preset: fn(&Ddr) -> u32| {
                     own.or(base.as_ref().map(preset)).ok_or_else(|| {
@@ -436,6 +444,14 @@ pub struct Outputs {
     pub cross_check: Option<CrossCheck>,
 }
 
+impl Outputs {
+    /// Whether an output runs the cycle model (the chip's units are among the ancestors of
+    /// its sink in [`graph::Plan`]; a test keeps the two in step).
+    pub fn run_chip(&self) -> bool {
+        self.cycles || self.memory || self.waveforms.is_some() || self.cross_check.is_some()
+    }
+}
+
 /// TRI_UNIT's timing in the configuration line: its latency, and its interval if folded.
 fn tri_timing(p: &Params) -> String {
     match p.tri_interval {
@@ -469,35 +485,50 @@ pub struct Scene {
     pub outputs: Outputs,
     /// The cycle model's microarchitecture and memory model.
     pub params: Params,
-    /// The chip's clock, for its time per query, and where it came from.
-    pub clock: Clock,
+    /// The chip's clock, for its time per query, and where it came from: only where an
+    /// output runs the cycle model ([`Outputs::run_chip`]).
+    pub clock: Option<Clock>,
 }
 
-/// What the command line puts over a scene's own keys (`cchip run --preset --technology`).
-#[derive(Clone, Copy, Debug, Default)]
+/// What the command line puts over a scene's own keys (`cchip run --preset --technology
+/// --architecture --vcd --rtl`), read with them: a scene is refused for the same reasons
+/// whichever way it is given.
+#[derive(Clone, Debug, Default)]
 pub struct Flags {
     pub preset: Option<Preset>,
     pub technology: Option<Technology>,
+    pub architecture: Option<Architecture>,
+    /// A traversal VCD per pose into this directory (every scope, every cycle).
+    pub waveforms: Option<std::path::PathBuf>,
+    pub cross_check: Option<CrossCheck>,
 }
 
 impl Scene {
-    /// The configuration the scene resolved to: its preset and every value it runs with.
+    /// The configuration the scene resolved to: its preset and every value it runs with
+    /// (WSCG'03's chip: its own units' timing; without an output that runs the chip, no
+    /// clock).
     pub fn configuration(&self) -> String {
         let (c, p, w) = (&self.cfg, &self.params, &self.stack);
-        let timing = match self.architecture {
-            Architecture::Date05 => format!(
-                "timing: queue_entries {}, {}, {}, tri_fifo {}, issue_spacing {}, credit {}, outstanding {}, prefetch {}",
-                p.queue_entries, dop_timing(p), tri_timing(p), p.tri_fifo, p.issue_spacing, p.credit, p.outstanding, p.prefetch
+        let (timing, memory_side) = match self.architecture {
+            Architecture::Date05 => (
+                format!(
+                    "timing: queue_entries {}, {}, {}, tri_fifo {}, issue_spacing {}, credit {}, outstanding {}, prefetch {}",
+                    p.queue_entries, dop_timing(p), tri_timing(p), p.tri_fifo, p.issue_spacing, p.credit, p.outstanding, p.prefetch
+                ),
+                format!("layout {}, node_cache {}", c.layout, c.node_cache),
             ),
-            Architecture::Wscg03 => format!(
-                "stack_engine: sram_latency {}, dotadd_stages {}, data_bus_bits {}, compare_latency {}, word_buffer {}, tri_interval {}, tri_latency {}",
-                w.sram_latency, w.dotadd_stages, w.data_bus_bits, w.compare_latency, w.word_buffer, w.tri_interval, w.tri_latency
+            Architecture::Wscg03 => (
+                format!(
+                    "stack_engine: sram_latency {}, dotadd_stages {}, data_bus_bits {}, compare_latency {}, word_buffer {}, tri_interval {}, tri_latency {}",
+                    w.sram_latency, w.dotadd_stages, w.data_bus_bits, w.compare_latency, w.word_buffer, w.tri_interval, w.tri_latency
+                ),
+                "layout words (a node word per request, no node records held)".to_string(),
             ),
         };
+        let clock = self.clock.as_ref().map_or("none (no output runs the cycle model)".to_string(), Clock::source);
         format!(
-            "configuration (preset {} and the scene's keys):\n  architecture: {}\n  chip: k = {}, format {}, dop_rounding {}, tri_rounding {:?}, tri_cache {}, layout {:?}, node_cache {}\n  {timing}\n  memory: {}\n  clock: {}",
-            self.preset.name(), self.architecture.name(), c.k, c.format, c.dop_rounding, c.tri_rounding, c.tri_cache, c.layout, c.node_cache,
-            p.memory, self.clock.source()
+            "configuration (preset {} and the scene's keys):\n  architecture: {}\n  chip: k = {}, format {}, dop_rounding {}, tri_rounding {:?}, tri_cache {}, {memory_side}\n  {timing}\n  memory: {}\n  clock: {clock}",
+            self.preset.name(), self.architecture.name(), c.k, c.format, c.dop_rounding, c.tri_rounding, c.tri_cache, p.memory
         )
     }
 
@@ -528,10 +559,31 @@ impl Scene {
     }
 
     /// [`parse`](Self::parse) with the command line's `flags` over the scene's own keys.
+    /// Every key the configuration does not use, and every output it cannot give, is
+    /// refused here ([`keys`]), before anything is built.
     pub fn parse_with(text: &str, name: &str, flags: Flags) -> Result<Scene, String> {
         let f: File = toml::from_str(text).map_err(|e| toml_error(text, name, &e))?;
+        let written: keys::Written = toml::from_str(text).map_err(|e| toml_error(text, name, &e))?;
         let err = |m: String| format!("{name}: {m}");
-        let (preset, architecture, cfg) = chip(f.chip, text, flags.preset).map_err(|e| format!("{name}:{e}"))?;
+        let at_line = |m: String| format!("{name}:{m}");
+        let (preset, architecture, cfg) = chip(f.chip, text, flags.clone()).map_err(at_line)?;
+        let outputs = Outputs {
+            pairs: f.outputs.pairs,
+            accuracy: f.outputs.accuracy,
+            cycles: f.outputs.cycles,
+            memory: f.outputs.memory,
+            waveforms: match flags.waveforms {
+                Some(dir) => Some(Waveforms::all(dir)),
+                None => f.outputs.waveforms.map(Waveforms::of).transpose().map_err(err)?,
+            },
+            cross_check: flags.cross_check.or(f.outputs.cross_check),
+        };
+        let (mut params, technology, clock_mhz) = timing(f.timing, text, preset).map_err(at_line)?;
+        let memory = f.memory.memory(preset.params().memory);
+        let ddr = f.memory.model.as_deref().map_or(matches!(preset.params().memory, Memory::Ddr(_)), |m| m == "ddr");
+        let uses = keys::Uses { architecture, chip_runs: outputs.run_chip(), dop_interval: params.dop_interval, tri_interval: params.tri_interval, ddr };
+        written.unused(text, &uses).map_err(at_line)?;
+        params.memory = memory.map_err(err)?;
         f.stack_engine.check().map_err(err)?;
         cfg.check().map_err(|e| err(format!("[chip] {e}")))?;
         let poses = match (&f.sweep, f.pose.is_empty()) {
@@ -543,21 +595,13 @@ impl Scene {
         if let Some(p) = poses.iter().find(|p| !p.pose.rot_deg.iter().chain(&p.pose.t).all(|x| x.is_finite())) {
             return Err(err(format!("pose {} has a non-finite number", p.pose.text())));
         }
-        let (mut params, technology, clock_mhz) = timing(f.timing, text, preset).map_err(|e| format!("{name}:{e}"))?;
-        params.memory = f.memory.memory(preset.params().memory).map_err(err)?;
         params.check().map_err(|e| err(format!("[timing] / [memory]: {e}")))?;
         params.check_dop_interval(cfg.k).map_err(|e| err(format!("[timing] {e}")))?;
-        if architecture == Architecture::Wscg03 && params.tri_interval != 1 {
-            return Err(err("[timing] tri_interval folds DATE'05's TRI_UNIT; WSCG'03's chip takes its Triangle Unit's interval from [stack_engine] tri_interval".into()));
-        }
-        if architecture == Architecture::Wscg03 && params.dop_interval != 1 {
-            return Err(err("[timing] dop_interval folds DATE'05's DOP unit; WSCG'03's DOP Unit has its own timing ([stack_engine])".into()));
-        }
         // the command line's technology replaces the scene's clock
         let (technology, clock_mhz) = if flags.technology.is_some() { (flags.technology, None) } else { (technology, clock_mhz) };
         let folds = Folds { tri: params.tri_interval, dop: params.dop_interval };
-        let clock = clock(&cfg, folds, preset, technology, clock_mhz).map_err(err)?;
-        Ok(Scene {
+        let clock = outputs.run_chip().then(|| clock(&cfg, folds, preset, architecture, technology, clock_mhz)).transpose().map_err(err)?;
+        let scene = Scene {
             name: name.to_string(),
             objects: f.objects,
             preset,
@@ -567,17 +611,12 @@ impl Scene {
             mode: f.query.mode.unwrap_or(Mode::All),
             traversal: f.query.traversal.unwrap_or(Traversal::Lifo),
             poses,
-            outputs: Outputs {
-                pairs: f.outputs.pairs,
-                accuracy: f.outputs.accuracy,
-                cycles: f.outputs.cycles,
-                memory: f.outputs.memory,
-                waveforms: f.outputs.waveforms.map(Waveforms::of).transpose().map_err(err)?,
-                cross_check: f.outputs.cross_check,
-            },
+            outputs,
             params,
             clock,
-        })
+        };
+        keys::runnable(&scene, &written, text).map_err(at_line)?;
+        Ok(scene)
     }
 }
 
@@ -643,13 +682,15 @@ mod tests {
         assert_eq!(s.params, Params { memory: MemTiming { latency: 3, interval: 2, bus_bits: None }.into(), ..Params::RTL });
         let s = Scene::parse(base, "s").unwrap();
         assert!(!s.outputs.cycles);
-        assert_eq!((s.params, s.clock.technology), (Params::RTL, Some(Technology::Osu018)));
-        let s = Scene::parse(&format!("{base}[outputs]\ncross_check = \"rtl\"\n[timing]\ncredit = 4\nclock_mhz = 266\n"), "s").unwrap();
+        assert_eq!((s.params, s.clock), (Params::RTL, None));
+        let s = Scene::parse(&format!("{base}[outputs]\ncycles = true\n"), "s").unwrap();
+        assert_eq!(s.clock.unwrap().technology, Some(Technology::Osu018));
+        let s = Scene::parse(&format!("{base}[outputs]\ncross_check = \"rtl\"\n[chip]\nk = 6\nformat = \"reduced\"\n[timing]\ncredit = 4\nclock_mhz = 266\n"), "s").unwrap();
         assert!(s.outputs.cross_check == Some(CrossCheck::Rtl));
-        assert_eq!((s.params.credit, s.clock.mhz()), (4, 266.0));
-        let e = Scene::parse(&format!("{base}[memory]\nlatency = 0\ninterval = 1\n"), "s").unwrap_err();
+        assert_eq!((s.params.credit, s.clock.unwrap().mhz()), (4, 266.0));
+        let e = Scene::parse(&format!("{base}[outputs]\ncycles = true\n[memory]\nlatency = 0\ninterval = 1\n"), "s").unwrap_err();
         assert!(e.contains("at least 1"), "{e}");
-        let e = Scene::parse(&format!("{base}[timing]\nissue_spacing = 5\n"), "s").unwrap_err();
+        let e = Scene::parse(&format!("{base}[outputs]\ncycles = true\n[timing]\nissue_spacing = 5\n"), "s").unwrap_err();
         assert!(e.contains("issue_spacing"), "{e}");
         let e = Scene::parse(&format!("{base}[outputs]\nwaveforms = {{ dir = \"w\", scopes = [\"dcntr\"] }}\n"), "s").unwrap_err();
         assert!(e.contains("no scope \"dcntr\"; the scopes are host, d_cntr"), "{e}");
@@ -665,6 +706,9 @@ mod tests {
         use crate::chip::rtl::ChipKind;
         let rtl = Scene::parse(include_str!("../../vectors/scenes/rtl_spheres.toml"), "rtl_spheres").unwrap();
         assert_eq!(crate::harness::chip_io::rtl_order(&rtl.cfg, rtl.traversal, &rtl.params), Ok((ChipKind::K6E8m15, Order::Lifo)));
+        // the scene itself is refused where its configuration has no RTL chip
+        let e = Scene::parse(&format!("{base}[outputs]\ncross_check = \"rtl\"\n[chip]\nnode_cache = 16\n"), "s").unwrap_err();
+        assert!(e.starts_with("s:8: [outputs] cross_check: cross_check = \"rtl\" needs an RTL chip of the configuration: the RTL chips hold one node record per object; this configuration has node_cache = 16"), "{e}");
         // the default configuration is the papers' chip
         assert_eq!(crate::harness::chip_io::rtl_order(&ChipConfig::default(), Traversal::Fifo, &rtl.params), Ok((ChipKind::K24B32, Order::Fifo)));
         let e = crate::harness::chip_io::rtl_order(&ChipConfig { k: 14, ..ChipConfig::default() }, Traversal::Lifo, &rtl.params).unwrap_err();
@@ -694,10 +738,10 @@ mod tests {
         assert_eq!(crate::harness::chip_io::rtl_order(&rec, Traversal::Fifo, &rtl.params), Ok((ChipKind::K24B32, Order::Fifo)));
         let ddr = |banks| Params { memory: crate::chip::memory::Memory::Ddr(crate::chip::memory::Ddr { banks, ..crate::chip::memory::Ddr::DATE05 }), ..rtl.params };
         assert!([2, 6, 8].iter().all(|&b| crate::harness::chip_io::rtl_order(&rec, Traversal::Fifo, &ddr(b)).is_ok()));
-        for cfg in [ChipConfig { node_cache: 16, ..rec }, ChipConfig { layout: MemLayout::Records, ..rtl.cfg }] {
-            let e = crate::harness::chip_io::rtl_order(&cfg, Traversal::Fifo, &ddr(8)).unwrap_err();
-            assert!(e.contains("chip_b32_k24 also `records`;"), "{e}");
-        }
+        let e = crate::harness::chip_io::rtl_order(&ChipConfig { node_cache: 16, ..rec }, Traversal::Fifo, &ddr(8)).unwrap_err();
+        assert!(e.contains("this configuration has node_cache = 16: set [chip] node_cache = 1"), "{e}");
+        let e = crate::harness::chip_io::rtl_order(&ChipConfig { layout: MemLayout::Records, ..rtl.cfg }, Traversal::Fifo, &ddr(8)).unwrap_err();
+        assert!(e.contains("chip_e8m15_k6 reads the `words` layout only (of the RTL chips, chip_b32_k24 also read `records`); this configuration has layout = \"records\""), "{e}");
     }
 
     /// `[memory]` picks the ideal model or DDR SDRAM with a preset and overrides; mixed or
@@ -707,26 +751,35 @@ mod tests {
     /// is built with (k = 6 e8m15: dop_interval and tri_interval 1 and 1, 1 and 16, 6 and 32).
     #[test]
     fn tri_interval_key() {
-        let base = "[objects]\na = \"sphere:12\"\nb = \"sphere:12\"\n[[pose]]\nrot_deg=[0,0,0]\nt=[0,0,0]\n";
+        let base = "[objects]\na = \"sphere:12\"\nb = \"sphere:12\"\n[[pose]]\nrot_deg=[0,0,0]\nt=[0,0,0]\n[outputs]\ncycles = true\n";
         let s = Scene::parse(&format!("{base}[chip]\npreset = \"date05\"\n[timing]\ntri_interval = 16\n"), "s").unwrap();
         assert_eq!(s.params, Params { tri_interval: 16, ..Preset::Date05.params() });
         assert!(s.configuration().contains("tri_interval 16 (folded TRI_UNIT"), "{}", s.configuration());
         // the folded TRI_UNIT has a row; the folded chip as a whole has none
-        assert!(s.clock.source().contains("units not measured: chip_b32_k24_fold16"), "{}", s.clock.source());
-        let s8 = Scene::parse(&format!("{base}[chip]\npreset = \"date05\"\n[timing]\ntri_interval = 8\n"), "s").unwrap();
-        assert!(s8.clock.not_measured.contains(&"tri_unit_fold8_b32_rne".to_string()), "{}", s8.clock.source());
+        let clock = s.clock.unwrap();
+        assert!(clock.source().contains("units not measured: chip_b32_k24_fold16"), "{}", clock.source());
+        let s8 = Scene::parse(&format!("{base}[chip]\npreset = \"date05\"\n[timing]\ntri_interval = 8\n"), "s").unwrap().clock.unwrap();
+        assert!(s8.not_measured.contains(&"tri_unit_fold8_b32_rne".to_string()), "{}", s8.source());
         for (keys, want) in [
             ("tri_interval = 3", "tri_interval must be 1 (TRI_UNIT unfolded) or an even number of clocks from 2 to 32"),
             ("tri_interval = 34", "not 34"),
             ("tri_interval = 0", "not 0"),
-            ("tri_interval = 4\ntri_latency = 60", "tri_latency 60 is the unfolded TRI_UNIT's"),
+            ("tri_interval = 4\ntri_latency = 60", "s:11: [timing] tri_latency is the unfolded TRI_UNIT's latency, not used by the folded one (tri_interval 4)"),
+            // a key is refused for being there, whatever its value: the default's too
+            ("tri_interval = 4\ntri_latency = 54", "s:11: [timing] tri_latency is the unfolded TRI_UNIT's latency"),
+            ("dop_interval = 6\ndop_latency = 15", "s:11: [timing] dop_latency is the unfolded DOP unit's latency, not used by the folded one (dop_interval 6), whose latency is its schedule's (20 clocks)"),
+            ("dop_latency = 16\ndop_interval = 6", "s:10: [timing] dop_latency is the unfolded DOP unit's latency"),
             ("dop_interval = 5", "dop_interval 5 does not divide k = "),
         ] {
             let e = Scene::parse(&format!("{base}[timing]\n{keys}\n"), "s").unwrap_err();
             assert!(e.contains(want), "{e}");
         }
         let e = Scene::parse(&format!("{base}[chip]\npreset = \"wscg03\"\n[timing]\ntri_interval = 2\n"), "s").unwrap_err();
-        assert!(e.contains("[stack_engine] tri_interval"), "{e}");
+        assert!(e.contains("[timing] tri_interval is DATE'05's chip's") && e.contains("[stack_engine]"), "{e}");
+        // the command line's architecture over a scene's keys: the same refusal as the preset's
+        let flags = Flags { architecture: Some(Architecture::Wscg03), ..Default::default() };
+        let e = Scene::parse_with(&format!("{base}[timing]\ntri_interval = 2\n"), "s", flags).unwrap_err();
+        assert!(e.starts_with("s:10: [timing] tri_interval is DATE'05's chip's"), "{e}");
         let rtl = Scene::parse(include_str!("../../vectors/scenes/rtl_spheres.toml"), "rtl_spheres").unwrap();
         let order = |dop_interval, tri_interval| crate::harness::chip_io::rtl_order(&rtl.cfg, rtl.traversal, &Params { dop_interval, tri_interval, ..rtl.params });
         let e = order(1, 2).unwrap_err();
@@ -740,7 +793,7 @@ mod tests {
     fn memory_models_and_presets() {
         use crate::chip::memory::Ddr;
         use crate::chip::memory::Memory;
-        let base = "[objects]\na = \"sphere:12\"\nb = \"sphere:12\"\n[[pose]]\nrot_deg=[0,0,0]\nt=[0,0,0]\n[memory]\n";
+        let base = "[objects]\na = \"sphere:12\"\nb = \"sphere:12\"\n[[pose]]\nrot_deg=[0,0,0]\nt=[0,0,0]\n[outputs]\ncycles = true\n[memory]\n";
         let mem = |m: &str| Scene::parse(&format!("{base}{m}"), "s").map(|s| s.params.memory);
         assert_eq!(mem("model = \"ddr\"\npreset = \"wscg03\""), Ok(Memory::Ddr(Ddr::WSCG03)));
         assert_eq!(mem("model = \"ddr\"\npreset = \"date05\"\nbanks = 4"), Ok(Memory::Ddr(Ddr { banks: 4, ..Ddr::DATE05 })));
@@ -751,9 +804,9 @@ mod tests {
             ("model = \"ddr\"", "needs a preset"),
             ("model = \"ddr\"\nbanks = 2\npage_bytes = 1024\nbus_bits = 64\nburst = 4\nhit = 6", "(miss is missing)"),
             ("model = \"ddr\"\npreset = \"ddr4\"", "preset \"ddr4\" is not known"),
-            ("model = \"ddr\"\npreset = \"wscg03\"\nlatency = 3", "belong to the ideal model"),
-            ("preset = \"wscg03\"", "belong to model = \"ddr\""),
-            ("hit = 8", "the ideal model takes latency, interval and bus_bits"),
+            ("model = \"ddr\"\npreset = \"wscg03\"\nlatency = 3", "s:12: [memory] latency belongs to the ideal memory, not used by the DDR model"),
+            ("preset = \"wscg03\"", "s:10: [memory] preset belongs to model = \"ddr\", not used by the ideal memory"),
+            ("hit = 8", "s:10: [memory] hit belongs to model = \"ddr\""),
             ("bus_bits = 0", "bus_bits must be at least 1"),
             ("model = \"sram\"", "model \"sram\" is not known"),
             ("model = \"ddr\"\npreset = \"wscg03\"\nhit = 2", "burst <= hit <= miss"),
@@ -761,9 +814,14 @@ mod tests {
             let e = mem(m).unwrap_err();
             assert!(e.starts_with("s:") && e.contains(want), "{m}: {e}");
         }
-        let s = Scene::parse(&format!("[outputs]\ncycles = true\n{base}model = \"ddr\"\npreset = \"wscg03\""), "s").unwrap();
+        let s = Scene::parse(&format!("{base}model = \"ddr\"\npreset = \"wscg03\""), "s").unwrap();
         let explain = crate::scene::graph::Plan::of(&s).explain(&s);
         assert!(explain.contains("DDR SDRAM: 4 banks, 4096-byte pages, 256-bit bus, bursts of 8, page hit 8 and miss 20 clocks"), "{explain}");
+        // model = "ddr" written on a DDR chip preset keeps the preset's DDR values
+        let on = |preset: &str, m: &str| Scene::parse(&format!("{base}{m}\n[chip]\npreset = \"{preset}\""), "s").map(|s| s.params.memory);
+        assert_eq!(on("date05", "model = \"ddr\""), Ok(Memory::Ddr(Ddr::DATE05)));
+        assert_eq!(on("wscg03", "model = \"ddr\"\nbanks = 2"), Ok(Memory::Ddr(Ddr { banks: 2, ..Ddr::WSCG03 })));
+        assert_eq!(on("wscg03", "model = \"ddr\"\npreset = \"date05\""), Ok(Memory::Ddr(Ddr::DATE05)));
     }
 
     /// A chip preset is the base of `[chip]`, `[timing]`, `[memory]` and the clock; the
@@ -771,38 +829,43 @@ mod tests {
     #[test]
     fn chip_presets_and_their_overrides() {
         use crate::chip::memory::Memory;
-        let base = "[objects]\na = \"sphere:12\"\nb = \"sphere:12\"\n[[pose]]\nrot_deg=[0,0,0]\nt=[0,0,0]\n";
+        let base = "[objects]\na = \"sphere:12\"\nb = \"sphere:12\"\n[[pose]]\nrot_deg=[0,0,0]\nt=[0,0,0]\n[outputs]\ncycles = true\n";
+        let mhz = |s: &Scene| s.clock.as_ref().unwrap().mhz();
         let parse = |t: &str| Scene::parse(&format!("{base}{t}"), "s");
         // no preset: the RTL's reset values, as before presets
         let rtl = parse("").unwrap();
         assert_eq!((rtl.preset, rtl.cfg, rtl.params), (Preset::Rtl, ChipConfig::default(), Params::RTL));
         let d = parse("[chip]\npreset = \"date05\"\n[timing]\ntechnology = \"paper\"").unwrap();
-        assert_eq!((d.cfg.k, d.params.memory, d.clock.mhz()), (24, Memory::Ddr(Ddr::DATE05), 800.0));
+        assert_eq!((d.cfg.k, d.params.memory, mhz(&d)), (24, Memory::Ddr(Ddr::DATE05), 800.0));
         assert_eq!((d.params.issue_spacing, d.params.outstanding, d.params.prefetch, d.params.credit), (1, 16, 14, 48));
         // each key over the preset's value, the rest kept
         let o = parse("[chip]\npreset = \"date05\"\nk = 6\n[timing]\ncredit = 32\nclock_mhz = 400\n[memory]\nbanks = 4").unwrap();
-        assert_eq!((o.cfg.k, o.cfg.format, o.params.credit, o.params.prefetch, o.clock.mhz()), (6, d.cfg.format, 32, 14, 400.0));
+        assert_eq!((o.cfg.k, o.cfg.format, o.params.credit, o.params.prefetch, mhz(&o)), (6, d.cfg.format, 32, 14, 400.0));
         assert_eq!(o.params.memory, Memory::Ddr(Ddr { banks: 4, ..Ddr::DATE05 }));
         // a memory model named replaces the preset's
         let i = parse("[chip]\npreset = \"date05\"\n[memory]\nmodel = \"ideal\"").unwrap();
         assert_eq!(i.params.memory, Memory::Ideal(MemTiming::default()));
         let w = parse("[chip]\npreset = \"wscg03\"\n[timing]\ntechnology = \"paper\"").unwrap();
-        assert_eq!((w.cfg.tri_cache, w.params.memory, w.clock.mhz()), (128, Memory::Ddr(Ddr::WSCG03), 266.0));
+        assert_eq!((w.cfg.tri_cache, w.params.memory, mhz(&w)), (128, Memory::Ddr(Ddr::WSCG03), 266.0));
         // the wscg03 preset runs WSCG'03's chip; a scene's architecture key over any preset
         assert_eq!((w.architecture, d.architecture, rtl.architecture), (Architecture::Wscg03, Architecture::Date05, Architecture::Date05));
-        let a = parse("[chip]\npreset = \"wscg03\"\narchitecture = \"date05\"\n[stack_engine]\nword_buffer = 4").unwrap();
-        assert_eq!((a.architecture, a.cfg.tri_cache, a.stack.word_buffer), (Architecture::Date05, 128, 4));
+        let a = parse("[chip]\npreset = \"wscg03\"\narchitecture = \"date05\"").unwrap();
+        assert_eq!((a.architecture, a.cfg.tri_cache, a.cfg.layout, a.cfg.node_cache), (Architecture::Date05, 128, MemLayout::Records, 16));
+        // WSCG'03's chip reads its own memory side; DATE'05's has no [stack_engine]
+        assert_eq!((w.cfg.layout, w.cfg.node_cache), (MemLayout::Words, 1));
+        let e = parse("[chip]\npreset = \"wscg03\"\narchitecture = \"date05\"\n[stack_engine]\nword_buffer = 4").unwrap_err();
+        assert!(e.starts_with("s:13: [stack_engine] word_buffer is WSCG'03's chip's timing, not used by DATE'05's chip"), "{e}");
         let e = parse("[chip]\narchitecture = \"wscg04\"").unwrap_err();
-        assert!(e.starts_with("s:8:") && e.contains("\"date05\" or \"wscg03\""), "{e}");
-        let e = parse("[stack_engine]\ntri_interval = 0").unwrap_err();
+        assert!(e.starts_with("s:10:") && e.contains("\"date05\" or \"wscg03\""), "{e}");
+        let e = parse("[chip]\narchitecture = \"wscg03\"\n[stack_engine]\ntri_interval = 0").unwrap_err();
         assert!(e.contains("[stack_engine] tri_interval must be at least 1"), "{e}");
         // --preset replaces the scene's preset, not its keys
         let f = Scene::parse_with(&format!("{base}[chip]\npreset = \"date05\"\nk = 6"), "s", Flags { preset: Some(Preset::Rtl), ..Default::default() }).unwrap();
         assert_eq!((f.preset, f.cfg.k, f.params), (Preset::Rtl, 6, Params::RTL));
         let e = parse("[chip]\npreset = \"date06\"").unwrap_err();
-        assert!(e.starts_with("s:8:") && e.contains("\"date05\", \"wscg03\" or \"rtl\""), "{e}");
+        assert!(e.starts_with("s:10:") && e.contains("\"date05\", \"wscg03\" or \"rtl\""), "{e}");
         let e = parse("[chip]\nkk = 6").unwrap_err();
-        assert!(e.starts_with("s:8: [chip]") && e.contains("unknown field `kk`"), "{e}");
+        assert!(e.starts_with("s:10: [chip]") && e.contains("unknown field `kk`"), "{e}");
         assert!(graph::Plan::of(&d).explain(&d).contains("preset date05"));
     }
 
@@ -824,17 +887,30 @@ mod tests {
     /// `technology = "paper"`, an assumed `clock_mhz`; never both; `--technology` over all.
     #[test]
     fn clock_technology() {
-        let base = "[objects]\na = \"sphere:12\"\nb = \"sphere:12\"\n[[pose]]\nrot_deg=[0,0,0]\nt=[0,0,0]\n[chip]\nk = 6\nformat = \"reduced\"\n";
+        let base = "[objects]\na = \"sphere:12\"\nb = \"sphere:12\"\n[[pose]]\nrot_deg=[0,0,0]\nt=[0,0,0]\n[chip]\nk = 6\nformat = \"reduced\"\n[outputs]\ncycles = true\n";
         let parse = |t: &str| Scene::parse(&format!("{base}{t}"), "s");
+        let mhz = |t: &str| parse(t).unwrap().clock.unwrap().mhz();
         let m = parse("").unwrap();
-        assert_eq!(m.clock, Clock::of(Technology::Osu018, &m.cfg, Folds::NONE, Preset::Rtl).unwrap());
-        assert!(m.configuration().contains("measured, OSU 0.18 um, docs/figures/timing.csv, slowest unit"), "{}", m.configuration());
-        assert_eq!(parse("[timing]\ntechnology = \"paper\"").unwrap().clock.mhz(), 800.0);
+        assert_eq!(m.clock, Some(Clock::of(Technology::Osu018, &m.cfg, Folds::NONE, Preset::Rtl).unwrap()));
+        assert!(m.configuration().contains("measured, slowest unit chip_e8m15_k6 (OSU 0.18 um, docs/figures/timing.csv)"), "{}", m.configuration());
+        assert_eq!(mhz("[timing]\ntechnology = \"paper\""), 800.0);
         let e = parse("[timing]\ntechnology = \"paper\"\nclock_mhz = 3").unwrap_err();
         assert!(e.contains("not both"), "{e}");
         let e = parse("[timing]\ntechnology = \"tsmc\"").unwrap_err();
-        assert!(e.starts_with("s:11:") && e.contains("\"osu018\", \"ecp5\" or \"paper\""), "{e}");
+        assert!(e.starts_with("s:13:") && e.contains("\"osu018\", \"ecp5\" or \"paper\""), "{e}");
         let flags = Flags { technology: Some(Technology::Paper), ..Default::default() };
-        assert_eq!(Scene::parse_with(&format!("{base}[timing]\nclock_mhz = 3"), "s", flags).unwrap().clock.mhz(), 800.0);
+        assert_eq!(Scene::parse_with(&format!("{base}[timing]\nclock_mhz = 3"), "s", flags).unwrap().clock.unwrap().mhz(), 800.0);
+        // an assumed clock gives a finite time in microseconds to every query the model runs
+        assert_eq!((mhz("[timing]\nclock_mhz = 0.001"), mhz("[timing]\nclock_mhz = 1e5")), (0.001, 1e5));
+        for bad in ["1e-307", "0.0009", "2e5", "0", "-3", "nan", "inf"] {
+            let e = parse(&format!("[timing]\nclock_mhz = {bad}")).unwrap_err();
+            assert!(e.contains("clock_mhz must be from 0.001 to 100000 MHz"), "{bad}: {e}");
+        }
+        // a datapath with no measured unit and no wider format measured: no period to report
+        let e = Scene::parse(&format!("{base}[chip]\nformat = \"e8m24\"").replace("[chip]\nk = 6\nformat = \"reduced\"\n", ""), "s").unwrap_err();
+        assert!(e.contains("measures none of this configuration's DOP datapath's units (fp_mul_e8m24_ru") && e.contains("clock_mhz"), "{e}");
+        // ... unless no output runs the chip: then there is no clock to refuse
+        let golden = "[objects]\na = \"sphere:12\"\nb = \"sphere:12\"\n[[pose]]\nrot_deg=[0,0,0]\nt=[0,0,0]\n[chip]\nformat = \"e8m24\"\n";
+        assert_eq!(Scene::parse(golden, "s").unwrap().clock, None);
     }
 }

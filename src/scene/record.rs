@@ -2,6 +2,7 @@
 //! oracle's, and the cycle model's clocks and memory traffic (`--json`; the tables of
 //! [`report`](crate::report) read them).
 
+use crate::chip::timing::PeriodSource;
 use crate::pose::Pose;
 use crate::query::Accuracy;
 use crate::traversal::{Counters, Host};
@@ -31,9 +32,12 @@ pub struct PoseRecord {
 pub struct CycleRecord {
     /// Clocks from start to done.
     pub cycles: u64,
-    /// The scene's clock period ([`Scene::clock`](crate::scene::Scene::clock)), in ns.
+    /// The scene's clock period ([`Scene::clock`](crate::scene::Scene::clock)), in ns, and
+    /// whether it is measured, estimated or assumed ([`Clock::source`](crate::chip::timing::Clock::source) says from what).
     pub period_ns: f64,
-    /// The chip's time for the query: cycles x period, in microseconds.
+    pub period_source: PeriodSource,
+    /// The chip's time for the query: cycles x period, in microseconds (as measured as its
+    /// period; so are the speed-ups made of it).
     pub chip_us: f64,
     /// The host's share, measured on this machine (wall clock, noisy): its setup for the
     /// pose, and its settling of the chip's uncertain pairs with the exact oracle, in
@@ -45,6 +49,9 @@ pub struct CycleRecord {
     /// The golden model's time for the same query on this machine (software), in
     /// microseconds.
     pub software_us: f64,
+    /// software_us, host_setup_us and settle_us are each the fastest of this many runs of
+    /// their work, one pose at a time (warm: the first run pays for cold caches).
+    pub timing_runs: usize,
     /// Pairs the chip reported intersecting, and uncertain (for the host to settle), sorted;
     /// the JSON has their counts.
     #[serde(rename = "hits", serialize_with = "count")]

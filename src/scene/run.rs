@@ -6,11 +6,12 @@ use super::{CrossCheck, Scene};
 use crate::pose::ScenePose;
 use crate::cycle::{self, drive::Reader};
 use crate::harness::{chip_io, verilator};
-use crate::measure::parallel_map;
+use crate::measure::{fastest_us, parallel_map, TIMING_RUNS};
 use crate::query::{exact_pairs, Accuracy, Chip};
 use super::record::{CycleRecord, MemoryRecord, PoseRecord};
 use crate::traversal::QueryResult;
 use crate::chip::layout::Layout;
+use crate::chip::timing::Clock;
 use crate::chip::reg::Mode;
 use crate::chip::wscg03::Architecture;
 use crate::traversal::Traversal;
@@ -20,7 +21,8 @@ use serde::Serialize;
 /// outputs).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize)]
 pub struct Activity {
-    /// Golden-model queries (with the host settling their uncertain pairs).
+    /// Poses queried on the golden model (with the host settling their uncertain pairs;
+    /// each timed as the fastest of [`TIMING_RUNS`] runs).
     pub golden_queries: u64,
     /// Exact-oracle queries (all pairs of a pose).
     pub oracle_queries: u64,
@@ -69,21 +71,8 @@ impl<'s> Prepared<'s> {
     pub fn new(scene: &'s Scene, load: impl Fn(&str) -> Result<crate::mesh::Mesh, String>) -> Result<Self, String> {
         let named = |e: String| format!("{}: {e}", scene.name);
         let plan = Plan::of(scene);
-        let wscg03 = scene.architecture == Architecture::Wscg03;
-        if wscg03 && (plan.cross_check.is_some() || scene.outputs.waveforms.is_some()) {
-            return Err(named("WSCG'03's chip ([chip] architecture = \"wscg03\") is an event model with no RTL and no probes: drop cross_check and waveforms, or set architecture = \"date05\"".into()));
-        }
-        if plan.runs(Unit::DCntr) && !wscg03 && scene.traversal.order().is_none() {
-            return Err(named(format!(
-                "cycles, memory, waveforms and cross-checks come from the chip's D_CNTR, which runs the fifo or lifo traversal, not {:?}: set [query] traversal",
-                scene.traversal
-            )));
-        }
-        // the RTL chip a cross-check runs, and its order
+        // the RTL chip a cross-check runs, and its order (the scene is refused without one)
         let rtl = plan.cross_check.map(|_| chip_io::rtl_order(&scene.cfg, scene.traversal, &scene.params)).transpose().map_err(named)?;
-        if let Some(w) = scene.outputs.waveforms.as_ref().filter(|w| w.dir.is_file()) {
-            return Err(named(format!("waveforms: {} is a file; give a directory for the VCD files", w.dir.display())));
-        }
         let (ma, mb) = crate::mesh::pair(&scene.objects.a, &scene.objects.b, &load).map_err(named)?;
         let (a, b) = (ma.triangles_f64(), mb.triangles_f64());
         drop((ma, mb));
@@ -104,7 +93,8 @@ impl<'s> Prepared<'s> {
     }
 
     /// Runs every pose: the golden queries one at a time (their time is the software's on an
-    /// otherwise idle machine), the rest on every core; `progress` after each pose.
+    /// otherwise idle machine, warm: the fastest of [`TIMING_RUNS`] runs of each pose, the
+    /// first a warm-up), the rest on every core; `progress` after each pose.
     pub fn run(&self, progress: impl Fn() + Sync) -> Result<SceneRun, String> {
         let s = self.scene;
         let counts = Counts::default();
@@ -112,10 +102,9 @@ impl<'s> Prepared<'s> {
             .poses
             .iter()
             .map(|sp| {
-                let t0 = std::time::Instant::now();
-                let res = self.chip.query(&sp.pose, s.mode, s.traversal);
+                let timed = fastest_us(|| self.chip.query(&sp.pose, s.mode, s.traversal));
                 counts.add(|a| a.golden_queries += 1);
-                (res, t0.elapsed().as_secs_f64() * 1e6)
+                timed
             })
             .collect();
         let mut records = parallel_map(&s.poses, |i, sp| {
@@ -231,7 +220,7 @@ impl<'s> Prepared<'s> {
                 Some(CrossCheck::Verilog)
             }
         };
-        let mut r = record(&chip.layout, &trace, s.clock.period_ns, software_us);
+        let mut r = record(&chip.layout, &trace, s.clock.as_ref().expect(CLOCKED), software_us);
         (r.stats, r.vcd, r.cross_checked) = (stats, vcd.map(|p| p.display().to_string()), cross_checked.map(|c| c.to_string()));
         Ok(r)
     }
@@ -240,7 +229,7 @@ impl<'s> Prepared<'s> {
     /// traversal (WSCG'03 Algorithm 2), all pairs.
     fn stack_cycles(&self, i: usize, sp: &ScenePose, res: &QueryResult, software_us: f64, counts: &Counts) -> Result<CycleRecord, String> {
         let (s, chip) = (self.scene, &self.chip);
-        let run = cycle::wscg03::run_query(chip, &chip.setup(&sp.pose), s.mode, &s.params, &s.stack).map_err(|e| format!("pose {i}: {e}"))?;
+        let run = cycle::wscg03::run_query(chip, &chip.setup(&sp.pose), s.mode, &s.params, &s.stack, cycle::MAX_CYCLES).map_err(|e| format!("pose {i}: {e}"))?;
         counts.add(|a| {
             a.cycle_runs += 1;
             a.counted_runs += 1;
@@ -255,19 +244,24 @@ impl<'s> Prepared<'s> {
                 return Err(format!("pose {i}: WSCG'03's chip disagrees with the golden list traversal: {e}"));
             }
         }
-        let mut r = record(&cycle::wscg03::layout(&chip.cfg), &run.trace, s.clock.period_ns, software_us);
+        let mut r = record(&cycle::wscg03::layout(&chip.cfg), &run.trace, s.clock.as_ref().expect(CLOCKED), software_us);
         r.wscg03 = Some(run.stats);
         Ok(r)
     }
 }
 
+/// A scene whose outputs run the chip has its clock ([`Scene::clock`]).
+const CLOCKED: &str = "a scene that runs the cycle model has a clock";
+
 /// A cycle-model trace as a record (no stall counts, VCD or cross-check yet).
-fn record(layout: &Layout, trace: &cycle::drive::ChipTrace, period_ns: f64, software_us: f64) -> CycleRecord {
+fn record(layout: &Layout, trace: &cycle::drive::ChipTrace, clock: &Clock, software_us: f64) -> CycleRecord {
     let (hits, unc) = trace.pairs();
     CycleRecord {
         cycles: trace.cycles,
-        period_ns,
-        chip_us: trace.cycles as f64 * period_ns / 1000.0,
+        period_ns: clock.period_ns,
+        period_source: clock.source,
+        chip_us: trace.cycles as f64 * clock.period_ns / 1000.0,
+        timing_runs: TIMING_RUNS,
         // the host's share: Prepared::run measures it after every pose ran
         host_setup_us: 0.0,
         settle_us: 0.0,
@@ -297,8 +291,14 @@ fn record(layout: &Layout, trace: &cycle::drive::ChipTrace, period_ns: f64, soft
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::scene::Flags;
 
     const BASE: &str = "[objects]\na = \"sphere:80\"\nb = \"torus:60\"\n[chip]\nk = 14\n[sweep]\ndistances = [1.2, 0.6]\norientations = 2\n";
+
+    /// BASE with more `[chip]` keys.
+    fn chip(keys: &str) -> String {
+        BASE.replace("k = 14\n", &format!("k = 14\n{keys}\n"))
+    }
 
     fn run(outputs: &str) -> (Plan, SceneRun) {
         let s = Scene::parse(&format!("{BASE}[outputs]\n{outputs}"), "test").unwrap();
@@ -374,11 +374,25 @@ mod tests {
             let c = &p["cycles"];
             let f = |k: &str| c[k].as_f64().unwrap_or_else(|| panic!("no {k} in {c}"));
             let close = |a: f64, b: f64| (a - b).abs() <= 1e-12 * b.abs();
-            assert_eq!(f("period_ns"), s.clock.period_ns);
+            assert_eq!(f("period_ns"), s.clock.as_ref().unwrap().period_ns);
+            assert_eq!((c["period_source"].as_str(), c["timing_runs"].as_u64()), (Some("estimated"), Some(TIMING_RUNS as u64)), "k = 14 has no RTL chip");
             assert!(close(f("chip_us"), f("cycles") * f("period_ns") / 1000.0), "{c}");
             assert!(f("host_setup_us") > 0.0 && f("settle_us") > 0.0, "{c}");
             assert!(close(f("end_to_end_us"), f("host_setup_us") + f("chip_us") + f("settle_us")), "{c}");
         }
+    }
+
+    /// The software's time is warm: six runs of one pose take about the same time, the
+    /// first too (timed once, the first took 6 to 100 times the others: its cold caches and
+    /// first allocations). The fastest of [`TIMING_RUNS`] also keeps other processes out.
+    #[test]
+    fn software_time_is_warm() {
+        let poses = "[[pose]]\nrot_deg = [10, 20, 30]\nt = [1.0, 0.1, 0]\n".repeat(6);
+        let s = Scene::parse(&format!("[objects]\na = \"sphere:200\"\nb = \"torus:160\"\n[outputs]\ncycles = true\n{poses}"), "t").unwrap();
+        let r = Prepared::new(&s, |spec| crate::mesh::resolve(spec).map_err(|e| e.to_string())).unwrap().run(|| ()).unwrap();
+        let us: Vec<f64> = r.records.iter().map(|r| r.cycles.as_ref().unwrap().software_us).collect();
+        let (lo, hi) = us.iter().fold((f64::INFINITY, 0f64), |(lo, hi), &x| (lo.min(x), hi.max(x)));
+        assert!(hi < 3.0 * lo, "{us:?}");
     }
 
     #[test]
@@ -394,10 +408,138 @@ mod tests {
         }
         assert!(explain("cycles = true").contains("stage 6 (clocked together, every clock)\n  d_cntr"));
         assert!(!explain("waveforms = \"w\"").contains("  counters "));
-        let rtl = Plan::of(&Scene::parse(&format!("{BASE}[outputs]\ncross_check = \"rtl\""), "t").unwrap());
-        let ver = Plan::of(&Scene::parse(&format!("{BASE}[outputs]\ncross_check = \"verilog\""), "t").unwrap());
+        let k6 = BASE.replace("k = 14", "k = 6\nformat = \"reduced\"");
+        let rtl = Plan::of(&Scene::parse(&format!("{k6}[outputs]\ncross_check = \"rtl\""), "t").unwrap());
+        let ver = Plan::of(&Scene::parse(&format!("{k6}[outputs]\ncross_check = \"verilog\""), "t").unwrap());
         assert!(rtl.runs(Unit::RtlChip) && !rtl.runs(Unit::VerilogChip) && rtl.runs(Unit::DCntr));
         assert!(ver.runs(Unit::VerilogChip) && !ver.runs(Unit::RtlChip) && !ver.runs(Unit::ExactOracle));
-        assert!(Plan::of(&Scene::parse(BASE, "t").unwrap()).dot().contains("exact_oracle [label=\"exact_oracle\\nfunctional\", shape=box, style=\"dashed\""));
+        let s = Scene::parse(BASE, "t").unwrap();
+        assert!(Plan::of(&s).dot(&s).contains("exact_oracle [label=\"exact_oracle\\nfunctional\", shape=box, style=\"dashed\""));
+        // WSCG'03's chip: both views name its units
+        let w = Scene::parse(&format!("{}[outputs]\ncycles = true", chip("architecture = \"wscg03\"")), "t").unwrap();
+        let (explain, dot) = (Plan::of(&w).explain(&w), Plan::of(&w).dot(&w));
+        for unit in ["stack_engine", "memory_controller", "triangle_unit", "pointer_fifo"] {
+            assert!(explain.contains(&format!("  {unit} ")) && dot.contains(&format!("label=\"{unit}\\ncycle\"")), "{unit}: {explain}\n{dot}");
+        }
+    }
+
+    /// Every key of every section whose use depends on the chip, written on every preset and
+    /// architecture, either is refused (naming its line) or changes what the scene reports:
+    /// the chip's clocks, traffic, stalls, pairs or period, or the golden model's counters.
+    /// Each key tries its values until one changes the resolved configuration (a preset may
+    /// have the first already).
+    #[test]
+    fn every_key_is_used_or_refused() {
+        const KEYS: &[(&str, &str, &[&str])] = &[
+            ("chip", "architecture", &["\"wscg03\"", "\"date05\""]),
+            ("chip", "k", &["6"]),
+            ("chip", "format", &["\"e8m15\""]),
+            ("chip", "dop_rounding", &["\"nearest-even\""]),
+            ("chip", "tri_rounding", &["\"TowardPositive\""]),
+            ("chip", "tri_cache", &["4", "1"]),
+            ("chip", "layout", &["\"records\"", "\"words\""]),
+            ("chip", "node_cache", &["4", "1"]),
+            ("timing", "queue_entries", &["4"]),
+            ("timing", "dop_latency", &["40"]),
+            ("timing", "dop_interval", &["4"]),
+            ("timing", "tri_latency", &["90"]),
+            ("timing", "tri_fifo", &["1"]),
+            ("timing", "tri_interval", &["16"]),
+            ("timing", "issue_spacing", &["1", "2"]),
+            ("timing", "credit", &["2"]),
+            ("timing", "outstanding", &["4", "1"]),
+            ("timing", "prefetch", &["4", "0"]),
+            ("timing", "technology", &["\"paper\""]),
+            ("timing", "clock_mhz", &["50"]),
+            ("memory", "model", &["\"ddr\"", "\"ideal\""]),
+            ("memory", "preset", &["\"wscg03\"", "\"date05\""]),
+            ("memory", "latency", &["9"]),
+            ("memory", "interval", &["3"]),
+            ("memory", "bus_bits", &["16"]),
+            ("memory", "banks", &["1"]),
+            ("memory", "page_bytes", &["64"]),
+            ("memory", "burst", &["1"]),
+            ("memory", "hit", &["16"]),
+            ("memory", "miss", &["90"]),
+            ("stack_engine", "sram_latency", &["9"]),
+            ("stack_engine", "dotadd_stages", &["20"]),
+            ("stack_engine", "data_bus_bits", &["32"]),
+            ("stack_engine", "compare_latency", &["9"]),
+            ("stack_engine", "word_buffer", &["1"]),
+            ("stack_engine", "tri_interval", &["1000"]),
+            ("stack_engine", "tri_latency", &["90"]),
+        ];
+        let scene = |preset: &str, arch: &str, key: Option<(&str, &str, &str)>| {
+            let mut sections = vec![("chip", format!("preset = \"{preset}\"\n{arch}"))];
+            if let Some((section, k, v)) = key {
+                match sections.iter_mut().find(|(s, _)| *s == section) {
+                    Some((_, body)) => body.push_str(&format!("\n{k} = {v}")),
+                    None => sections.push((section, format!("{k} = {v}"))),
+                }
+            }
+            let body: String = sections.iter().map(|(s, b)| format!("[{s}]\n{b}\n")).collect();
+            format!("[objects]\na = \"sphere:80\"\nb = \"torus:60\"\n[[pose]]\nrot_deg = [10, 20, 30]\nt = [0.6, 0.1, 0]\n[outputs]\ncycles = true\nmemory = true\n{body}")
+        };
+        // what a scene reports, its measured times aside
+        let report = |s: &Scene| {
+            let p = Prepared::new(s, |spec| crate::mesh::resolve(spec).map_err(|e| e.to_string())).unwrap();
+            let mut v = serde_json::to_value(p.run(|| ()).unwrap().records).unwrap();
+            for r in v.as_array_mut().unwrap() {
+                for t in ["software_us", "host_setup_us", "settle_us", "end_to_end_us"] {
+                    r["cycles"].as_object_mut().unwrap().remove(t);
+                }
+            }
+            v
+        };
+        let mut used = 0;
+        for preset in ["rtl", "date05", "wscg03"] {
+            for arch in ["", "architecture = \"date05\"", "architecture = \"wscg03\""] {
+                let base = Scene::parse(&scene(preset, arch, None), "s").unwrap();
+                let base_report = report(&base);
+                for &(section, key, values) in KEYS {
+                    if section == "chip" && key == "architecture" && !arch.is_empty() {
+                        continue;
+                    }
+                    let tried = values.iter().map(|v| (v, Scene::parse(&scene(preset, arch, Some((section, key, v))), "s")));
+                    let changed = tried.clone().find(|(_, r)| r.as_ref().map_or(true, |s| s.configuration() != base.configuration()));
+                    let (v, parsed) = changed.unwrap_or_else(|| panic!("{preset} {arch}: [{section}] {key} = {values:?} accepted and resolved to the same configuration"));
+                    match parsed {
+                        Err(e) => assert!(e.contains(&format!("[{section}] {key}")), "{preset} {arch}: {key} = {v}: {e}"),
+                        Ok(s) => {
+                            assert_ne!(report(&s), base_report, "{preset} {arch}: [{section}] {key} = {v} accepted and changed nothing the scene reports");
+                            used += 1;
+                        }
+                    }
+                }
+            }
+        }
+        assert!(used > 60, "{used}");
+        // no output runs the chip: every key that sets it is refused
+        for &(section, key, values) in KEYS.iter().filter(|k| k.0 != "chip" || k.1 == "architecture") {
+            let text = format!("[objects]\na = \"sphere:12\"\nb = \"sphere:12\"\n[[pose]]\nrot_deg = [0, 0, 0]\nt = [0, 0, 0]\n[{section}]\n{key} = {}\n", values[0]);
+            let e = Scene::parse(&text, "s").unwrap_err();
+            assert!(e.starts_with(&format!("s:8: [{section}] {key} sets the chip the cycle model runs")), "{e}");
+        }
+    }
+
+    /// What `run` refuses before it builds anything, the scene refuses: `--explain` and
+    /// `--dot` read the same scene, so they refuse it too (a VCD of WSCG'03's chip, the list
+    /// traversal on D_CNTR, a cross-check of a configuration no RTL chip has).
+    #[test]
+    fn explain_refuses_what_run_refuses() {
+        let refused = |text: String, flags: Flags| Scene::parse_with(&text, "t", flags).unwrap_err();
+        let wscg03 = chip("architecture = \"wscg03\"");
+        let e = refused(format!("{wscg03}[outputs]\nwaveforms = \"w\""), Flags::default());
+        assert!(e.starts_with("t:11: [outputs] waveforms: WSCG'03's chip") && e.contains("no RTL and no probes"), "{e}");
+        let e = refused(wscg03, Flags { waveforms: Some("w".into()), ..Default::default() });
+        assert!(e.starts_with("t: --vcd: WSCG'03's chip"), "{e}");
+        let e = refused(format!("{BASE}[query]\ntraversal = \"list\"\n[outputs]\ncycles = true"), Flags::default());
+        assert!(e.starts_with("t:10: [query] traversal: cycles, memory, waveforms and cross-checks come from DATE'05's D_CNTR") && e.contains("not list:"), "{e}");
+        let e = refused(BASE.into(), Flags { cross_check: Some(CrossCheck::Rtl), ..Default::default() });
+        assert!(e.starts_with("t: --rtl: cross_check = \"rtl\" needs an RTL chip") && e.contains("k = 14"), "{e}");
+        let e = refused(format!("{}[outputs]\ncross_check = \"verilog\"", BASE.replace("k = 14", "k = 6\nformat = \"reduced\"\nnode_cache = 16")), Flags::default());
+        assert!(e.contains("needs an RTL chip of the configuration"), "{e}");
+        // the list traversal without the chip: the golden model alone
+        assert!(Scene::parse_with(&format!("{BASE}[query]\ntraversal = \"list\""), "t", Flags::default()).is_ok());
     }
 }

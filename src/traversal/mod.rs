@@ -43,6 +43,16 @@ pub enum Traversal {
 impl Traversal {
     pub const ALL: [Traversal; 4] = [Traversal::Recursive, Traversal::List, Traversal::Fifo, Traversal::Lifo];
 
+    /// The name scenes and the CLI use (`recursive`, `list`, `fifo`, `lifo`).
+    pub fn name(self) -> &'static str {
+        match self {
+            Traversal::Recursive => "recursive",
+            Traversal::List => "list",
+            Traversal::Fifo => "fifo",
+            Traversal::Lifo => "lifo",
+        }
+    }
+
     /// D_CNTR's order, for the traversals the chip runs.
     pub fn order(self) -> Option<Order> {
         match self {

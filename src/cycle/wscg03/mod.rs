@@ -125,12 +125,15 @@ pub fn layout(cfg: &crate::chip::config::ChipConfig) -> crate::chip::layout::Lay
 
 /// One query on WSCG'03's chip: `chip`'s images, B placed by `setup`, `mode`, the memory
 /// of `p`, the timing `sp`. All pairs or first hit; the host reads every result at once.
+/// An error past `max_cycles` clocks, as DATE'05's chip ([`super::MAX_CYCLES`]; the event
+/// model reaches its end in steps of events, so it is checked there).
 pub fn run_query(
     chip: &crate::query::Chip,
     setup: &HostSetup,
     mode: Mode,
     p: &Params,
     sp: &StackParams,
+    max_cycles: u64,
 ) -> Result<Run, String> {
     sp.check()?;
     p.memory.check()?;
@@ -144,6 +147,9 @@ pub fn run_query(
     let tri = tri_unit::TriUnit::new(&chip.a, &chip.b, verdicts, sp, cfg.tri_cache);
     let mut e = stack_engine::StackEngine::new(&chip.a, &chip.b, sp.sram_latency, sp.word_buffer, mem, dop, tri, mode == Mode::First);
     e.run();
+    if e.stats.cycles > max_cycles {
+        return Err(super::drive::not_finished(max_cycles));
+    }
     let mut s = e.stats;
     (s.transforms, s.spec_pairs, s.spec_used) = (e.dop.transforms, e.dop.spec_pairs, e.dop.spec_used);
     (s.dop_tests, s.dop_overlaps) = (e.dop.tests, e.dop.overlaps);
