@@ -56,14 +56,14 @@ PROOFS=(
 
 # ---- mutants: name | proof it must break | DUT Verilog | sed script (applied to a copy)
 MUTANTS=(
-  "s2_room_off_by_one|pair_queue.bounds|rtl/pair_queue_n4.v|s/s2 = two \& (c0 + 32'h1 < c_cap);/s2 = two \& (c0 + 32'h1 <= c_cap);/"
+  "s2_room_off_by_one|pair_queue.bounds|rtl/pair_queue_n4.v|s/s2 = two \& ((do_pop \& nfull) | spare);/s2 = two \& ((do_pop \& nfull) | nfull);/"
   "full_flag_at_15|pair_queue.bounds|rtl/pair_queue_n4.v|s/full = cnt\$q == c_cap;/full = cnt\$q == c_cap - 5'h1;/"
   "max_count_lags|pair_queue.bounds|rtl/pair_queue_n4.v|s/if (cnt_n > max_r\$q) begin/if (cnt_n > max_r\$q + 5'h1) begin/"
   "overflow_not_sticky|pair_queue.bounds|rtl/pair_queue_n4.v|s/ovf_r\$d = ovf_r\$q;/ovf_r\$d = 1'b0;/"
   "overflow_on_one_push|pair_queue.bounds|rtl/pair_queue_n4.v|s/if ((any \& ~s1) | (two \& ~s2)) begin/if ((any \& ~s1)) begin/"
   "lifo_push2_top_is_push|pair_queue.step|rtl/pair_queue_n4.v|/if (order_lifo\$q) begin/,/else begin/s/top_r\$d = push2_data;/top_r\$d = e1;/"
   "fifo_rd_ptr_stuck|pair_queue.order|rtl/pair_queue_n4.v|s/rd_n = rd_ptr\$q + 32'h1;/rd_n = rd_ptr\$q;/"
-  "no_bypass|pair_queue.order|rtl/pair_queue_n4.v|s/byp\$d = (we_a \& (raddr == wr_ptr\$q)) | (we_b \& (raddr == wr1));/byp\$d = 1'b0;/"
+  "no_bypass|pair_queue.order|rtl/pair_queue_n4.v|s/byp\$d = (we_a \& hit_a) | (we_b \& hit_b);/byp\$d = 1'b0;/"
   "result_hides_uncertain|result_port.port|rtl/chip_e8m15_k6.v|s/keep = out_hit | out_uncertain;/keep = out_hit;/"
   "result_open_no_decrement|result_port.port|rtl/chip_e8m15_k6.v|s/open_r\$d = open_r\$q - 32'h1;/open_r\$d = open_r\$q;/"
   "result_separate_waits|result_port.port|rtl/chip_e8m15_k6.v|s/give = out_valid \& (res_ready | ~keep);/give = out_valid \& res_ready;/"
@@ -88,7 +88,7 @@ build() {
   for d in $defs; do dflags+=" -D$d"; done
   local common="read_verilog $dut; $(prep_of "$name"); read_verilog -formal$dflags $root/scripts/formal/$wrapper; hierarchy -top wrapper; proc; flatten; $(hier_of "$name"); prep -top wrapper"
   if [ "$engine" = abc ]; then
-    yosys -q -l "$dir/$name.yosys.log" -p "$common; memory_map; opt -fast; async2sync; chformal -assume -early; chformal -live -fair -cover -remove; opt_clean; setundef -anyseq; opt -keepdc -fast; delete -output; techmap; opt -fast; dffunmap; aigmap; opt_clean; write_aiger -I -B -zinit -map $dir/$name.aim $dir/$name.aig" >/dev/null 2>&1
+    yosys -q -l "$dir/$name.yosys.log" -p "$common; memory_map; opt -fast; async2sync; chformal -assume -early; chformal -live -fair -cover -remove; opt_clean; setundef -anyseq; opt -keepdc -fast; delete -output; techmap; opt -fast; setundef -anyseq; dffunmap; aigmap; opt_clean; write_aiger -I -B -zinit -map $dir/$name.aim $dir/$name.aig" >/dev/null 2>&1
   else
     yosys -q -l "$dir/$name.yosys.log" -p "$common; async2sync; dffunmap; write_smt2 -wires $dir/$name.smt2" >/dev/null 2>&1
   fi
