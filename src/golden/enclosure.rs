@@ -14,6 +14,7 @@
 //! below instead, so that software can also prove a sign of the chip unknown.
 
 use crate::format::{Format, ScaleConst};
+use std::cell::Cell;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::OnceLock;
 
@@ -146,4 +147,32 @@ pub fn checking() -> bool {
 /// Turns check mode on for the rest of the process (tests).
 pub fn force_check() {
     FORCED.store(true, Ordering::Relaxed);
+}
+
+/// The decisions check mode has compared with the bit-exact path on this thread: DOP tests
+/// and triangle-pair tests (tests read it to see that check mode is on and covers every test).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Checked {
+    pub dop_tests: u64,
+    pub tri_tests: u64,
+}
+
+thread_local! {
+    static CHECKED: Cell<Checked> = const { Cell::new(Checked { dop_tests: 0, tri_tests: 0 }) };
+}
+
+/// The decisions compared on this thread so far.
+pub fn checked() -> Checked {
+    CHECKED.get()
+}
+
+/// Counts one compared decision (`tri`: a triangle pair's, else a DOP test's).
+pub(crate) fn count_checked(tri: bool) {
+    let mut c = CHECKED.get();
+    if tri {
+        c.tri_tests += 1;
+    } else {
+        c.dop_tests += 1;
+    }
+    CHECKED.set(c);
 }
