@@ -176,3 +176,33 @@ pub(crate) fn count_checked(tri: bool) {
     }
     CHECKED.set(c);
 }
+
+/// For the unit tests of check mode's comparisons (`dop_unit`, `tri_unit`).
+#[cfg(test)]
+pub(crate) mod check_tests {
+    use crate::chip::config::ChipConfig;
+    use crate::golden::host::HostSetup;
+    use crate::golden::memory::ObjectImage;
+
+    /// Two 6-triangle soups' images on the default chip, and B's setup under a rotation.
+    pub struct Small {
+        pub cfg: ChipConfig,
+        pub a: ObjectImage,
+        pub b: ObjectImage,
+        pub setup: HostSetup,
+    }
+
+    pub fn small_chip() -> Small {
+        let cfg = ChipConfig::default();
+        let image = |seed| ObjectImage::build(crate::mesh::soup(6, seed).triangles_f64(), &cfg);
+        let (a, b) = (image(1), image(2));
+        let setup = HostSetup::new(&cfg, &crate::pose::Pose::new(10.0, 20.0, 30.0, 0.0, 0.0, 0.0), b.tree.coord_bound(), a.tri_side(&b));
+        Small { cfg, a, b, setup }
+    }
+
+    /// `compare` panics with a check-mode message.
+    pub fn fires(compare: impl FnOnce()) {
+        let msg = std::panic::catch_unwind(std::panic::AssertUnwindSafe(compare)).expect_err("a wrong answer must panic");
+        assert!(msg.downcast_ref::<String>().is_some_and(|m| m.contains("check mode")), "{msg:?}");
+    }
+}
