@@ -1458,7 +1458,7 @@ module top$d_cntr(clock,clear,lifo,push_root,root,go,pf,one,credit_lim,leaf_coun
         r_b1 = side[(32'h53)+:(16)];
         r_hit = dop_valid & dop_overlap;
         child_push = pend_r$q | (r_hit & ~(r_a_leaf & r_b_leaf));
-        room = (ahd_pairs$q - ((issue) & 5'h1f)) <= pf;
+        room = ahd_pairs$q <= pf;
         pop = go & ~queue$empty & room & ~(lifo & child_push);
         queue$pop = pop;
         top = queue$top_data;
@@ -2259,6 +2259,7 @@ module top$d_cntr$queue(clock,clear,lifo,push,push_data,push2,push2_data,pop,emp
     
     // Constant declarations
     localparam  c_cap = 11'b10000000000;
+    localparam  c_last = 10'b1111111111;
     
     // Stub signals
     reg  [10:0] cnt$d;
@@ -2305,12 +2306,19 @@ module top$d_cntr$queue(clock,clear,lifo,push,push_data,push2,push2_data,pop,emp
     reg  bank1$write_clock;
     reg  [66:0] bank1$write_data;
     reg  bank1$write_enable;
+    reg  nonempty$d;
+    wire  nonempty$q;
+    reg  nonempty$clock;
     
     // Local signals
-    reg  nonempty;
     reg  many;
     reg  do_pop;
-    reg  [10:0] c0;
+    reg  nfull;
+    reg  spare;
+    reg  c0_zero;
+    reg  [10:0] cnt_m1;
+    reg  [10:0] cnt_p1;
+    reg  [10:0] cnt_p2;
     reg  [66:0] e1;
     reg  any;
     reg  two;
@@ -2321,6 +2329,12 @@ module top$d_cntr$queue(clock,clear,lifo,push,push_data,push2,push2_data,pop,emp
     reg  [9:0] rd_n;
     reg  [9:0] wr_n;
     reg  [9:0] wr1;
+    reg  [9:0] wr_m1;
+    reg  [9:0] wr_m2;
+    reg  [9:0] rd1;
+    reg  pick;
+    reg  hit_a;
+    reg  hit_b;
     reg  [9:0] raddr;
     reg  we_a;
     reg  we_b;
@@ -2396,10 +2410,16 @@ module top$d_cntr$queue(clock,clear,lifo,push,push_data,push2,push2_data,pop,emp
         .write_data(bank1$write_data),
         .write_enable(bank1$write_enable)
     );
+    top$d_cntr$ent_second nonempty(
+        .d(nonempty$d),
+        .q(nonempty$q),
+        .clock(nonempty$clock)
+    );
     
     // Update code
     always @(*) begin
         cnt$clock = clock;
+        nonempty$clock = clock;
         top_r$clock = clock;
         rd_ptr$clock = clock;
         wr_ptr$clock = clock;
@@ -2410,6 +2430,7 @@ module top$d_cntr$queue(clock,clear,lifo,push,push_data,push2,push2_data,pop,emp
         max_r$clock = clock;
         ovf_r$clock = clock;
         cnt$d = cnt$q;
+        nonempty$d = nonempty$q;
         top_r$d = top_r$q;
         rd_ptr$d = rd_ptr$q;
         wr_ptr$d = wr_ptr$q;
@@ -2423,24 +2444,28 @@ module top$d_cntr$queue(clock,clear,lifo,push,push_data,push2,push2_data,pop,emp
         bank0$write_clock = clock;
         bank1$read_clock = clock;
         bank1$write_clock = clock;
-        empty = cnt$q == 32'h0;
+        empty = ~nonempty$q;
         full = cnt$q == c_cap;
         count = cnt$q;
         max_count = max_r$q;
         overflow = ovf_r$q;
         top_data = top_r$q;
-        nonempty = cnt$q != 32'h0;
         many = cnt$q > 32'h1;
-        do_pop = pop & nonempty;
-        c0 = cnt$q - ((do_pop) & 11'h7ff);
+        do_pop = pop & nonempty$q;
+        nfull = cnt$q != c_cap;
+        cnt_m1 = cnt$q - 32'h1;
+        cnt_p1 = cnt$q + 32'h1;
+        cnt_p2 = cnt$q + 32'h2;
+        spare = cnt_p1 < c_cap;
+        c0_zero = ~nonempty$q | (do_pop & ~many);
         e1 = push2_data;
         if (push) begin
             e1 = push_data;
         end
         any = push | push2;
         two = push & push2;
-        s1 = any & (c0 != c_cap);
-        s2 = two & (c0 + 32'h1 < c_cap);
+        s1 = any & (do_pop | nfull);
+        s2 = two & ((do_pop & nfull) | spare);
         next_entry = bank0$read_data;
         if (rsel$q) begin
             next_entry = bank1$read_data;
@@ -2448,7 +2473,23 @@ module top$d_cntr$queue(clock,clear,lifo,push,push_data,push2,push2_data,pop,emp
         if (byp$q) begin
             next_entry = byp_data$q;
         end
-        cnt_n = c0 + ((s1) & 11'h7ff) + ((s2) & 11'h7ff);
+        cnt_n = cnt$q;
+        if (do_pop) begin
+            if (~s1) begin
+                cnt_n = cnt_m1;
+            end
+            if (s2) begin
+                cnt_n = cnt_p1;
+            end
+        end
+        else begin
+            if (s1) begin
+                cnt_n = cnt_p1;
+            end
+            if (s2) begin
+                cnt_n = cnt_p2;
+            end
+        end
         rd_n = rd_ptr$q;
         wr_n = wr_ptr$q;
         wr1 = wr_ptr$q + 32'h1;
@@ -2478,7 +2519,7 @@ module top$d_cntr$queue(clock,clear,lifo,push,push_data,push2,push2_data,pop,emp
             else begin
                 if (s1) begin
                     top_r$d = e1;
-                    if (nonempty) begin
+                    if (nonempty$q) begin
                         we_a = 1'b1;
                         wdata_a = top_r$q;
                         wr_n = wr_ptr$q + 32'h1;
@@ -2488,7 +2529,7 @@ module top$d_cntr$queue(clock,clear,lifo,push,push_data,push2,push2_data,pop,emp
                     top_r$d = push2_data;
                     we_a = 1'b1;
                     wr_n = wr_ptr$q + 32'h1;
-                    if (nonempty) begin
+                    if (nonempty$q) begin
                         we_b = 1'b1;
                         wr_n = wr_ptr$q + 32'h2;
                     end
@@ -2503,7 +2544,7 @@ module top$d_cntr$queue(clock,clear,lifo,push,push_data,push2,push2_data,pop,emp
                     rd_n = rd_ptr$q + 32'h1;
                 end
             end
-            if (c0 == 32'h0) begin
+            if (c0_zero) begin
                 if (s1) begin
                     top_r$d = e1;
                 end
@@ -2525,6 +2566,7 @@ module top$d_cntr$queue(clock,clear,lifo,push,push_data,push2,push2_data,pop,emp
             end
         end
         cnt$d = cnt_n;
+        nonempty$d = cnt_n != 32'h0;
         if (cnt_n > max_r$q) begin
             max_r$d = cnt_n;
         end
@@ -2533,6 +2575,7 @@ module top$d_cntr$queue(clock,clear,lifo,push,push_data,push2,push2_data,pop,emp
         end
         if (clear) begin
             cnt$d = 32'h0;
+            nonempty$d = 1'b0;
             top_r$d = 32'h0;
             rd_n = 32'h0;
             wr_n = 32'h0;
@@ -2544,9 +2587,41 @@ module top$d_cntr$queue(clock,clear,lifo,push,push_data,push2,push2_data,pop,emp
         end
         rd_ptr$d = rd_n;
         wr_ptr$d = wr_n;
-        raddr = rd_n;
-        if (order_lifo$d) begin
-            raddr = wr_n - 32'h1;
+        rd1 = rd_ptr$q + 32'h1;
+        wr_m1 = wr_ptr$q - 32'h1;
+        wr_m2 = wr_ptr$q - 32'h2;
+        pick = do_pop & many;
+        raddr = rd_ptr$q;
+        if (pick) begin
+            raddr = rd1;
+        end
+        if (order_lifo$q) begin
+            raddr = wr_m1;
+            if (do_pop) begin
+                if (~s1 & many) begin
+                    raddr = wr_m2;
+                end
+                if (s2) begin
+                    raddr = wr_ptr$q;
+                end
+            end
+            else begin
+                if (s1 & nonempty$q) begin
+                    raddr = wr_ptr$q;
+                end
+                if (s2) begin
+                    raddr = wr_ptr$q;
+                    if (nonempty$q) begin
+                        raddr = wr1;
+                    end
+                end
+            end
+        end
+        if (clear) begin
+            raddr = 32'h0;
+            if (lifo) begin
+                raddr = c_last;
+            end
         end
         bank0$write_enable = (we_a & ~wr_ptr$q[32'h0]) | (we_b & wr_ptr$q[32'h0]);
         bank1$write_enable = (we_a & wr_ptr$q[32'h0]) | (we_b & ~wr_ptr$q[32'h0]);
@@ -2565,9 +2640,19 @@ module top$d_cntr$queue(clock,clear,lifo,push,push_data,push2,push2_data,pop,emp
         bank0$read_address = raddr[(32'h1)+:(9)];
         bank1$read_address = raddr[(32'h1)+:(9)];
         rsel$d = raddr[32'h0];
-        byp$d = (we_a & (raddr == wr_ptr$q)) | (we_b & (raddr == wr1));
+        hit_a = rd_ptr$q == wr_ptr$q;
+        hit_b = rd_ptr$q == wr1;
+        if (pick) begin
+            hit_a = rd1 == wr_ptr$q;
+            hit_b = rd_ptr$q == wr_ptr$q;
+        end
+        if (order_lifo$q) begin
+            hit_a = 1'b1;
+            hit_b = 1'b1;
+        end
+        byp$d = (we_a & hit_a) | (we_b & hit_b);
         byp_data$d = wdata_a;
-        if (we_b & (raddr == wr1)) begin
+        if (we_b & hit_b) begin
             byp_data$d = wdata_b;
         end
     end

@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
 # Runs every exported unit rtl/<unit>.v against vectors/<unit>.hex under Icarus Verilog and
-# Verilator (the chips, rtl/chip_*.v: whole queries by scripts/run-chip.sh, under Icarus only
-# the short ones of ICARUS_CHIP_QUERIES, a list of `chip:query`) and synthesizes each with
+# Verilator (the chips, rtl/chip_*.v: whole queries by scripts/run-chip.sh, each also
+# compared on its memory requests; under Icarus only the short ones of ICARUS_CHIP_QUERIES,
+# a list of `chip:query`; under Verilator every query with uninitialised bits zero, then
+# those of X_CHIP_QUERIES once per seed of X_SEEDS with them random, default three seeds
+# drawn at random and printed; a chip with no query in either list fails) and synthesizes each with
 # Yosys (scripts/synth.sh), printing the cells per unit (and failing if
 # docs/figures/area_cells.csv, the area study, disagrees).
 # Exits non-zero on any mismatch, missing vector file, or synthesis failure.
@@ -29,18 +32,38 @@ jobs_max=${JOBS:-$(nproc 2>/dev/null || echo 2)}
 out_dir=$(mktemp -d)
 trap 'rm -rf "$out_dir"' EXIT
 
+# Each chip's queries under Icarus (four-state: an uninitialised bit prints as x; a few
+# clocks per second, so the root query only) and, with random uninitialised bits under
+# Verilator, queries with triangle tests and results (and, on the k = 6 chip, a FIFO
+# traversal that wraps the pair queue's ring of 1,024 entries: the k = 24 chips share its
+# Verilog), each once per seed.
+ICARUS_CHIP_QUERIES=${ICARUS_CHIP_QUERIES-chip_e8m15_k6:apart_lifo_first chip_b32_k24:k24_apart_lifo_first chip_e8m15_b32_k24:k24r_apart_lifo_first chip_e8m15_k6_fold16:fold16_apart_lifo_first chip_e8m15_k6_dop6_tri32:dop6tri32_apart_lifo_first}
+X_CHIP_QUERIES=${X_CHIP_QUERIES-chip_e8m15_k6:big_sphere_fifo_prefetch chip_b32_k24:k24_big_sphere_fifo_cache chip_e8m15_b32_k24:k24r_big_sphere_fifo_prefetch chip_e8m15_k6_fold16:fold16_patch_fifo_all chip_e8m15_k6_dop6_tri32:dop6tri32_patch_fifo_all}
+X_SEEDS=${X_SEEDS:-$((RANDOM + 1)) $((RANDOM + 1)) $((RANDOM + 1))}
+
+chip_queries() { # <chip> <list of chip:query>: the chip's queries in the list
+  local cq
+  for cq in $2; do [ "${cq%%:*}" = "$1" ] && echo "${cq#*:}"; done
+}
+
 run_one() { # unit simulator (its wall time, build and run, into $out_dir/<unit>.<sim>.t)
   local u=$1 sim=$2 ports=() t0=$SECONDS
   trap 'echo $((SECONDS - t0)) >"$out_dir/$u.$sim.t"' RETURN
   if [[ $u == chip_* ]]; then # whole queries (scripts/run-chip.sh); Icarus only the short ones
-    local status=0 qs=()
+    local status=0 qs=() xs=() o=$out_dir/$u.$sim.out
+    mapfile -t xs < <(chip_queries "$u" "$X_CHIP_QUERIES")
     if [ "$sim" = icarus ]; then
-      for cq in ${ICARUS_CHIP_QUERIES-chip_e8m15_k6:apart_lifo_first chip_b32_k24:k24_apart_lifo_first chip_e8m15_b32_k24:k24r_apart_lifo_first chip_e8m15_k6_fold16:fold16_apart_lifo_first chip_e8m15_k6_dop6_tri32:dop6tri32_apart_lifo_first}; do
-        [ "${cq%%:*}" = "$u" ] && qs+=("${cq#*:}")
-      done
-      [ ${#qs[@]} -gt 0 ] || { echo "0 passed, 0 failed (no Icarus query for $u)" >"$out_dir/$u.$sim.out"; echo 0 >"$out_dir/$u.$sim.rc"; return; }
+      mapfile -t qs < <(chip_queries "$u" "$ICARUS_CHIP_QUERIES")
+      [ ${#qs[@]} -gt 0 ] || { echo "no Icarus query for $u in ICARUS_CHIP_QUERIES" >"$o"; echo 1 >"$out_dir/$u.$sim.rc"; return; }
     fi
-    scripts/run-chip.sh --sim "$sim" --chip "rtl/$u.v" "${qs[@]}" >"$out_dir/$u.$sim.out" 2>&1 || status=$?
+    scripts/run-chip.sh --sim "$sim" --chip "rtl/$u.v" --requests "${qs[@]}" >"$o" 2>&1 || status=$?
+    if [ "$sim" = verilator ]; then
+      if [ ${#xs[@]} -eq 0 ]; then echo "no X-randomized query for $u in X_CHIP_QUERIES" >>"$o"; status=1
+      else
+        echo "x seeds: $X_SEEDS" >>"$o"
+        scripts/run-chip.sh --sim verilator --chip "rtl/$u.v" --requests --x-seeds "$X_SEEDS" "${xs[@]}" >>"$o" 2>&1 || status=$?
+      fi
+    fi
     echo "$status" >"$out_dir/$u.$sim.rc"
     return
   fi
@@ -87,11 +110,13 @@ for job in "${jobs_list[@]}"; do
     else summary+=("$u yosys: FAILED ($(tail -n 1 <<<"$out"))"); fail=1; fi
     continue
   fi
-  line=$(grep -E '^[0-9]+ passed, [0-9]+ failed$' <<<"$out" | tail -n 1 || true)
-  if [ "$status" = 0 ] && [[ "$line" =~ ^[0-9]+\ passed,\ 0\ failed$ ]]; then
-    summary+=("$u $kind: $line ($t s)")
+  # a chip under Verilator: its queries, then those with random uninitialised bits
+  line=$(grep -E '^[0-9]+ passed, [0-9]+ failed$' <<<"$out" | paste -sd';' - | sed 's/;/; x-random: /' || true)
+  seeds=$(sed -n 's/^x seeds: //p' <<<"$out")
+  if [ "$status" = 0 ] && [ -n "$line" ] && ! grep -Eq '[1-9][0-9]* failed' <<<"$line" && ! grep -Eq '(^|; x-random: )0 passed' <<<"$line"; then
+    summary+=("$u $kind: $line${seeds:+ (seeds $seeds)} ($t s)")
   else
-    summary+=("$u $kind: FAILED (${line:-$(tail -n 1 <<<"$out")})"); fail=1
+    summary+=("$u $kind: FAILED ($(tail -n 1 <<<"$out"))"); fail=1
   fi
 done
 printf '%s\n' "${summary[@]}"

@@ -15,7 +15,9 @@
 #   (default: every proof; names as printed, e.g. pair_queue.bounds)
 #   --mutate  instead runs each hand mutation of MUTANTS below on a copy of the Verilog
 #             (sed, under target/formal/mutants/) against the proof it must break, and
-#             fails unless every mutant makes its proof FAIL.
+#             fails unless every mutant makes its proof fail with a counterexample from the
+#             initial state (the failed assertion named on its line); a Yosys error, a solver
+#             crash or an induction step failing alone kills no mutant (a control checks it).
 # JOBS=N runs N at a time (default: the number of cores).
 # Everything goes under target/formal/ (the SMT2/AIGER files, one log per run).
 set -uo pipefail
@@ -55,15 +57,17 @@ PROOFS=(
 )
 
 # ---- mutants: name | proof it must break | DUT Verilog | sed script (applied to a copy)
+# A mutant is killed only by a counterexample from the initial state; a control (control_*)
+# breaks the Verilog instead and must fail without one (not counted as a kill).
 MUTANTS=(
-  "s2_room_off_by_one|pair_queue.bounds|rtl/pair_queue_n4.v|s/s2 = two \& (c0 + 32'h1 < c_cap);/s2 = two \& (c0 + 32'h1 <= c_cap);/"
+  "s2_room_off_by_one|pair_queue.bounds|rtl/pair_queue_n4.v|s/s2 = two \& ((do_pop \& nfull) | spare);/s2 = two \& ((do_pop \& nfull) | nfull);/"
   "full_flag_at_15|pair_queue.bounds|rtl/pair_queue_n4.v|s/full = cnt\$q == c_cap;/full = cnt\$q == c_cap - 5'h1;/"
   "max_count_lags|pair_queue.bounds|rtl/pair_queue_n4.v|s/if (cnt_n > max_r\$q) begin/if (cnt_n > max_r\$q + 5'h1) begin/"
   "overflow_not_sticky|pair_queue.bounds|rtl/pair_queue_n4.v|s/ovf_r\$d = ovf_r\$q;/ovf_r\$d = 1'b0;/"
   "overflow_on_one_push|pair_queue.bounds|rtl/pair_queue_n4.v|s/if ((any \& ~s1) | (two \& ~s2)) begin/if ((any \& ~s1)) begin/"
   "lifo_push2_top_is_push|pair_queue.step|rtl/pair_queue_n4.v|/if (order_lifo\$q) begin/,/else begin/s/top_r\$d = push2_data;/top_r\$d = e1;/"
   "fifo_rd_ptr_stuck|pair_queue.order|rtl/pair_queue_n4.v|s/rd_n = rd_ptr\$q + 32'h1;/rd_n = rd_ptr\$q;/"
-  "no_bypass|pair_queue.order|rtl/pair_queue_n4.v|s/byp\$d = (we_a \& (raddr == wr_ptr\$q)) | (we_b \& (raddr == wr1));/byp\$d = 1'b0;/"
+  "no_bypass|pair_queue.order|rtl/pair_queue_n4.v|s/byp\$d = (we_a \& hit_a) | (we_b \& hit_b);/byp\$d = 1'b0;/"
   "result_hides_uncertain|result_port.port|rtl/chip_e8m15_k6.v|s/keep = out_hit | out_uncertain;/keep = out_hit;/"
   "result_open_no_decrement|result_port.port|rtl/chip_e8m15_k6.v|s/open_r\$d = open_r\$q - 32'h1;/open_r\$d = open_r\$q;/"
   "result_separate_waits|result_port.port|rtl/chip_e8m15_k6.v|s/give = out_valid \& (res_ready | ~keep);/give = out_valid \& res_ready;/"
@@ -74,6 +78,7 @@ MUTANTS=(
   "cache_valid_not_cleared|tri_cache.cache|rtl/chip_e8m15_k6.v|/if (clear) begin/,/end/s/valid\$d = 32'h0;/valid\$d = valid\$q;/"
   "cache_hit_ignores_id|tri_cache.cache|rtl/chip_e8m15_k6.v|s/hit = ((valid\$q \& (c_one128 << line)) != 32'h0) \& (held_id == id);/hit = ((valid\$q \& (c_one128 << line)) != 32'h0);/"
   "lifo_pop_no_wr_ptr_dec|pair_queue.order|rtl/pair_queue_n4.v|s/wr_n = wr_ptr\$q - 32'h1;/wr_n = wr_ptr\$q;/"
+  "control_syntax_error|pair_queue.bounds|rtl/pair_queue_n4.v|0,/^endmodule/s//endmodul/"
 )
 
 MP_PREP='hierarchy -top \top$mem_port; rename \top$mem_port mem_port'
@@ -88,40 +93,66 @@ build() {
   for d in $defs; do dflags+=" -D$d"; done
   local common="read_verilog $dut; $(prep_of "$name"); read_verilog -formal$dflags $root/scripts/formal/$wrapper; hierarchy -top wrapper; proc; flatten; $(hier_of "$name"); prep -top wrapper"
   if [ "$engine" = abc ]; then
-    yosys -q -l "$dir/$name.yosys.log" -p "$common; memory_map; opt -fast; async2sync; chformal -assume -early; chformal -live -fair -cover -remove; opt_clean; setundef -anyseq; opt -keepdc -fast; delete -output; techmap; opt -fast; dffunmap; aigmap; opt_clean; write_aiger -I -B -zinit -map $dir/$name.aim $dir/$name.aig" >/dev/null 2>&1
+    yosys -q -l "$dir/$name.yosys.log" -p "$common; memory_map; opt -fast; async2sync; chformal -assume -early; chformal -live -fair -cover -remove; opt_clean; setundef -anyseq; opt -keepdc -fast; delete -output; techmap; opt -fast; setundef -anyseq; dffunmap; aigmap; opt_clean; write_aiger -I -B -zinit -map $dir/$name.aim $dir/$name.aig" >/dev/null 2>&1
   else
     yosys -q -l "$dir/$name.yosys.log" -p "$common; async2sync; dffunmap; write_smt2 -wires $dir/$name.smt2" >/dev/null 2>&1
   fi
 }
 
-# prove <name> <wrapper> <dut.v> <defines> <engine> <depth> <dir>: 0 = proven, 1 = failed
+# prove <name> <wrapper> <dut.v> <defines> <engine> <depth> <dir>: 0 = proven; 1 = failed
+# with a counterexample from the initial state (a failed assertion named in the log, or an
+# unreached cover); 2 = failed without one (a Yosys error, a solver that crashed or gave no
+# status, an induction step that fails while the base case holds). Only 1 kills a mutant.
 prove() {
-  local name=$1 wrapper=$2 dut=$3 defs=$4 engine=$5 depth=$6 dir=$7 log
+  local name=$1 wrapper=$2 dut=$3 defs=$4 engine=$5 depth=$6 dir=$7 log frame
   log=$dir/$name.log
   if ! build "$name" "$wrapper" "$dut" "$defs" "$engine" "$dir"; then
-    echo "yosys failed: $dir/$name.yosys.log" >"$log"; return 1
+    echo "yosys failed: $dir/$name.yosys.log" >"$log"; return 2
   fi
   case $engine in
     ind)   # depth k/b: the base case (BMC to b >= k, deeper than needed so that a broken
            # design fails with a real trace, not only an induction step) then the step
-           yosys-smtbmc -s z3 --unroll --noprogress -t "${depth#*/}" "$dir/$name.smt2" >"$log" 2>&1 \
-             && grep -q "Status: PASSED" "$log" || return 1
-           yosys-smtbmc -s z3 --unroll --noprogress -i -t "${depth%/*}" "$dir/$name.smt2" >>"$log" 2>&1 ;;
-    bmc)   yosys-smtbmc -s z3 --unroll --noprogress -t "$depth" "$dir/$name.smt2" >"$log" 2>&1 ;;
-    cover) yosys-smtbmc -s z3 --unroll --noprogress -c -t "$depth" "$dir/$name.smt2" >"$log" 2>&1 ;;
+           yosys-smtbmc -s z3 --unroll --noprogress -t "${depth#*/}" "$dir/$name.smt2" >"$log" 2>&1
+           smt_status "$log" || return $?
+           # a failed step alone starts from a state that may be unreachable: no counterexample
+           yosys-smtbmc -s z3 --unroll --noprogress -i -t "${depth%/*}" "$dir/$name.smt2" >>"$log" 2>&1
+           smt_status "$log" || return 2 ;;
+    bmc)   yosys-smtbmc -s z3 --unroll --noprogress -t "$depth" "$dir/$name.smt2" >"$log" 2>&1
+           smt_status "$log" ;;
+    cover) yosys-smtbmc -s z3 --unroll --noprogress -c -t "$depth" "$dir/$name.smt2" >"$log" 2>&1
+           smt_status "$log" ;;
     abc)   yosys-abc -c "read_aiger $dir/$name.aig; fold; strash; bmc3 -F $depth -v" >"$log" 2>&1
-           # "No output asserted in N frames." = passed; "Output 0 ... was asserted in frame" = failed
-           grep -q "was asserted in frame" "$log" && return 1
+           # "No output asserted in N frames." = passed; "Output 0 ... was asserted in frame F"
+           # = failed: replayed by yosys-smtbmc to F + 1 steps, which names the assertion
            grep -q "No output asserted in" "$log" && return 0
-           return 1 ;;
+           frame=$(sed -nE 's/.*was asserted in frame ([0-9]+).*/\1/p' "$log" | head -n 1)
+           [ -n "$frame" ] || return 2
+           build "$name" "$wrapper" "$dut" "$defs" bmc "$dir" || { echo "yosys failed (replay): $dir/$name.yosys.log" >>"$log"; return 2; }
+           yosys-smtbmc -s z3 --unroll --noprogress -t $((frame + 1)) "$dir/$name.smt2" >>"$log" 2>&1
+           smt_status "$log"; [ $? = 1 ] && return 1
+           echo "abc's counterexample in frame $frame not reproduced by yosys-smtbmc" >>"$log"; return 2 ;;
   esac
-  # the last status (for ind the induction step's; the base case's is above it)
-  grep "Status:" "$log" | tail -1 | grep -q "Status: PASSED"
 }
 
-fail_detail() { # the first failed assertion / unreached cover in a log, with its source line
+# smt_status <log>: the last yosys-smtbmc run in <log> (its lines since the status line
+# before): 0 = PASSED; 1 = FAILED on a named failed assertion or unreached cover (an induction
+# step's failure is not one); 2 = anything else (a crash, no status)
+smt_status() {
+  local run
+  run=$(awk 'after { buf = ""; after = 0 } { buf = buf $0 "\n"; if (/Status:/) after = 1 } END { printf "%s", buf }' "$1")
+  case $(grep "Status:" <<<"$run" | tail -n 1) in
+    *"Status: PASSED"*) return 0 ;;
+    *"Status: FAILED"*) grep -qE "Assert failed|Unreached cover" <<<"$run" && ! grep -q "Temporal induction failed" <<<"$run" && return 1 ;;
+  esac
+  return 2
+}
+
+fail_detail() { # the failed assertion / unreached cover in a log, with its source line, or why there is none
   local l f n
-  l=$(grep -m1 -E "Assert failed|Unreached cover|was asserted in frame|yosys failed|Temporal induction failed" "$1" | sed 's/^## *[0-9:]* *//')
+  l=$(grep -m1 -E "Assert failed|Unreached cover" "$1" \
+      || grep -m1 -E "yosys failed|not reproduced|was asserted in frame|Temporal induction failed|Traceback|ERROR|Error" "$1" \
+      || echo "no status line from the solver: $1")
+  l=$(sed 's/^## *[0-9:]* *//' <<<"$l")
   # Yosys names an assertion file:L0.C0-L1.C1 (L1 is the assert's own line)
   if [[ $l =~ ([^ :]+\.sv):[0-9]+\.[0-9]+-([0-9]+)\. ]]; then
     f=${BASH_REMATCH[1]}; n=${BASH_REMATCH[2]}
@@ -145,10 +176,13 @@ proof_job() {
   fi
 }
 
-# mutant_job <mutant line>: the mutant's copy of its Verilog against the proof it must break
+# mutant_job <mutant line>: the mutant's copy of its Verilog against the proof it must break,
+# killed only by a counterexample from the initial state (prove's 1); a control (control_*)
+# must fail without one, which shows that such a failure is not counted.
 mutant_job() {
-  local mname proof dut script name wrapper pdut defs engine depth what p t0 dir
+  local mname proof dut script expect=cex name wrapper pdut defs engine depth what p t0 dir status
   IFS='|' read -r mname proof dut script <<<"$1"
+  [[ $mname == control_* ]] && expect=error
   dir=$out/mutants/$mname; mkdir -p "$dir"
   cp "$root/$dut" "$dir/$(basename "$dut")"
   sed -i "$script" "$dir/$(basename "$dut")"
@@ -158,12 +192,16 @@ mutant_job() {
   for p in "${PROOFS[@]}"; do
     IFS='|' read -r name wrapper pdut defs engine depth what <<<"$p"
     [ "$name" = "$proof" ] || continue
-    t0=$SECONDS
-    if prove "$name" "$wrapper" "$dir/$(basename "$dut")" "$defs" "$engine" "$depth" "$dir"; then
-      echo "FAIL mutant $mname: $name still passes (mutant survived)"
-    else
-      echo "PASS mutant $mname: $name fails ($((SECONDS - t0)) s): $(fail_detail "$dir/$name.log")"
-    fi
+    t0=$SECONDS status=0
+    prove "$name" "$wrapper" "$dir/$(basename "$dut")" "$defs" "$engine" "$depth" "$dir" || status=$?
+    local detail; detail=$(fail_detail "$dir/$name.log")
+    case $expect:$status in
+      cex:1)   echo "PASS mutant $mname: killed by a counterexample, $name fails ($((SECONDS - t0)) s): $detail" ;;
+      cex:0)   echo "FAIL mutant $mname: $name still passes (mutant survived)" ;;
+      cex:*)   echo "FAIL mutant $mname: $name fails without a counterexample, which kills nothing: $detail [log: ${dir#$root/}/$name.log]" ;;
+      error:2) echo "PASS control $mname: $name fails without a counterexample, not counted as a kill: $detail" ;;
+      error:*) echo "FAIL control $mname: $name gave status $status, not the error a broken build must give [log: ${dir#$root/}/$name.log]" ;;
+    esac
     return
   done
   echo "FAIL mutant $mname: no proof named $proof"

@@ -4,12 +4,20 @@
 # selftest_kadd8.v: a register file k[0..3] preloaded through load_en/load_addr/load_data, then
 # y$0 = a$0 + k[sel], y$1 = a$1 + k[sel ^ 1], latency 2, valid in/out).
 #
+# The chip flow (scripts/run-chip.sh, verilog/chip_tb.v) on a stand-in chip
+# (scripts/verilog/selftest/selftest_chip.v: one request, one result, and a register read
+# that the Verilog never initialises).
+#
 # Usage: scripts/selftest.sh
 # Runs Icarus and Verilator on the demo vectors (back to back, then with bubbles), checks that
 # a corrupted vector file (a wrong case, a wrong preload value) makes both fail with a non-zero
 # exit, that a unit raising out_valid during the preload phase fails, that malformed preload
 # sections are rejected by prepare.py naming file and line, and synthesizes the units with
-# Yosys. Exits 0 only if every step behaved as expected. Takes well under a minute (Verilator builds).
+# Yosys. Then the chip flow: the stand-in passes its query with that register initialised,
+# and fails it under Icarus (four-state: x) and under Verilator with random uninitialised
+# bits (--x-seeds) while Verilator's zeros hide the flaw; a wrong counter, a wrong memory
+# address and a simulator that exits non-zero after a correct trace each fail too.
+# Exits 0 only if every step behaved as expected. Takes about a minute (Verilator builds).
 
 set -euo pipefail
 SCRIPTS=$(cd "$(dirname "$0")" && pwd)
@@ -27,6 +35,7 @@ iverilog -V 2>/dev/null | head -n 1
 verilator --version
 yosys -V
 
+CHIP=$D/selftest_chip.v
 step() { echo; echo "== $*"; }
 fails=0
 expect_ok() { if "$@"; then :; else echo "selftest: UNEXPECTED FAILURE: $*" >&2; fails=$((fails + 1)); fi; }
@@ -35,9 +44,16 @@ expect_fail() {
     cat "$TMP/neg.log"; echo "selftest: corrupted vectors were NOT caught: $*" >&2; fails=$((fails + 1))
   else
     local rc=$?
-    grep -E 'MISMATCH|SPURIOUS|passed,' "$TMP/neg.log"
+    grep -E 'MISMATCH|SPURIOUS|: FAIL|passed,' "$TMP/neg.log"
     echo "(exit $rc, as expected)"
   fi
+}
+
+# expect_fail_with <text> <command ...>: fails, and its output contains <text> (the reason).
+expect_fail_with() {
+  local want=$1; shift
+  expect_fail "$@"
+  grep -qF -- "$want" "$TMP/neg.log" || { cat "$TMP/neg.log"; echo "selftest: the failure does not say '$want'" >&2; fails=$((fails + 1)); }
 }
 
 # prepare.py must reject a malformed vector file (exit 2) with a message containing $1.
@@ -126,12 +142,47 @@ expect_error "E-nohdr.hex:5: preload line" "$KUNIT" "$TMP/E-nohdr.hex"
 expect_error "preload field 'sel' is also a case field" "$KUNIT" "$TMP/E-both.hex"
 expect_error "preload field 'y\$1' is an output" "$KUNIT" "$TMP/E-out.hex"
 
+# The stand-in chip's query (vectors/chip's file formats, scripts/README.md): a register
+# write, a memory of eight 32-bit words, the trace and request derived by hand in its
+# header; and its variants: the register initialised (the correct chip), a DOP test too
+# many, a request to word 6, and a fatal error at the end of the simulation.
+Q=$TMP/chip
+mkdir -p "$Q"
+echo "selftest_query 1 1 1 selftest_chip" >"$Q/queries.txt"
+echo "00000000001" >"$Q/selftest_query.host"
+for i in 0 1 2 3 4 5 6 7; do printf '%08x\n' $((0x100 + i)); done >"$Q/selftest_query.mem"
+printf 'result 3 1 2 0\ndone 3 overflow 0 max_depth 1 dop_tests 1 tri_tests 0 node_fetches 1 tri_fetches 0\n' >"$Q/selftest_query.expect"
+echo "request 1 5" >"$Q/selftest_query.requests"
+variant() { # <name> <sed script>: the stand-in with its register file initialised, changed
+  mkdir -p "$TMP/$1"
+  sed "s/^    reg \[31:0\] regs \[0:3\];/&\n    initial regs[3] = 32'h0;/; $2" "$CHIP" >"$TMP/$1/selftest_chip.v"
+  cmp -s "$CHIP" "$TMP/$1/selftest_chip.v" && { echo "selftest: variant $1 is the stand-in unchanged" >&2; exit 1; }
+  echo "$TMP/$1/selftest_chip.v"
+}
+# (Verilator's C++ at -O0: the stand-in builds in half the time)
+chip() { CHIP_OPT_FAST=-O0 "$SCRIPTS/run-chip.sh" --vectors "$Q" --requests "$@"; }
+
+step "chip flow, Icarus: the stand-in with its register initialised"
+expect_ok chip --sim icarus --chip "$(variant init "")"
+step "chip flow, Icarus: the stand-in reading its uninitialised register (must fail: x)"
+expect_fail_with "overflow x" chip --sim icarus --chip "$CHIP"
+step "chip flow, Icarus: a DOP test too many (must fail)"
+expect_fail_with "dop_tests 2" chip --sim icarus --chip "$(variant count 's/assign dop_tests = fetched;/assign dop_tests = fetched + 32'"'"'h1;/')"
+step "chip flow, Icarus: a request to the wrong word (must fail)"
+expect_fail_with "memory requests" chip --sim icarus --chip "$(variant addr "s/assign mem_req_addr = 24'd5;/assign mem_req_addr = 24'd6;/")"
+step "chip flow, Icarus: a fatal error after a correct trace (must fail)"
+expect_fail_with "the simulator exited with" chip --sim icarus --chip "$(variant fatal 's/^endmodule/    final $fatal(1, "selftest: fatal at the end");\nendmodule/')"
+step "chip flow, Verilator: the stand-in as is (zeros hide its uninitialised register)"
+expect_ok chip --chip "$CHIP"
+step "chip flow, Verilator with random uninitialised bits (must fail)"
+expect_fail_with "overflow 1" chip --chip "$CHIP" --x-seeds "1 2 3"
+
 step "Yosys synth"
 expect_ok "$SCRIPTS/synth.sh" "$UNIT_FILE" "$KUNIT"
 
 echo
 if [ "$fails" = 0 ]; then
-  echo "selftest: OK (Icarus, Verilator, Yosys; preload; corrupted vectors caught)"
+  echo "selftest: OK (Icarus, Verilator, Yosys; preload; corrupted vectors caught; the chip flow's checks fail where they must)"
 else
   echo "selftest: $fails step(s) FAILED" >&2
   exit 1

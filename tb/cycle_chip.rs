@@ -7,7 +7,9 @@
 //!
 //! `CCHIP_BLESS=1 cargo test --release --test cycle_chip` writes the cycle model's traces
 //! of every query to target/chip-expect/ for `scripts/run-chip.sh --bless`, which copies
-//! each into vectors/chip/ only if Verilator's trace equals it.
+//! each into vectors/chip/ only if Verilator's trace equals it. Every run writes there the
+//! memory requests of each query (`<query>.requests`), which run-chip.sh compares with the
+//! exported Verilog's.
 
 use collision_chip::chip::config::{ChipConfig, DopRounding, Formats};
 use collision_chip::chip::config::MemLayout;
@@ -20,7 +22,7 @@ use collision_chip::cycle;
 use collision_chip::cycle::chip::Chip as CycleChip;
 use collision_chip::cycle::drive::{run_query, ChipTrace, Drive, Reader};
 use collision_chip::format::{Format, Rounding};
-use collision_chip::harness::chip_io::queries;
+use collision_chip::harness::chip_io::{queries, ChipQuery, PreparedQuery};
 use collision_chip::mesh::soup;
 use collision_chip::pose::Pose;
 use collision_chip::query::Chip;
@@ -50,11 +52,31 @@ fn vectors() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("vectors/chip")
 }
 
-/// Every query of the set, small and large: the cycle model's trace is the checked-in one.
+/// The memory requests a query's chip makes that the memory accepts, as the testbench
+/// prints them with `+requests` (`request <cycle> <word address>`), clock by clock.
+fn requests(p: &PreparedQuery, q: &ChipQuery) -> (ChipTrace, String) {
+    let idx = |name: &str| PROBES.iter().position(|p| (p.0, p.1) == ("memory", name)).unwrap();
+    let (valid, ready, addr) = (idx("req_valid"), idx("req_ready"), idx("req_addr"));
+    let mut text = String::new();
+    let mut obs = |t: u64, v: &[u64]| {
+        if t > 0 && v[valid] == 1 && v[ready] == 1 {
+            text += &format!("request {t} {}\n", v[addr]);
+        }
+        Ok(())
+    };
+    let rec = cycle::Record { probes: Some(&mut obs), ..Default::default() };
+    let (tr, _) = cycle::run_query(&p.chip, &p.chip.setup(&q.pose), q.order, q.mode, q.params(), q.reader, MAX_CYCLES, rec).unwrap();
+    (tr, text)
+}
+
+/// Every query of the set, small and large: the cycle model's trace is the checked-in one
+/// (with idle stretches skipped, and clock by clock while its memory requests are written
+/// for run-chip.sh).
 #[test]
 fn every_checked_in_trace() {
     let bless = std::env::var("CCHIP_BLESS").is_ok_and(|v| v == "1");
     let out = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("target/chip-expect");
+    std::fs::create_dir_all(&out).unwrap();
     for q in queries() {
         let p = q.prepare().unwrap();
         let params = q.params();
@@ -62,14 +84,18 @@ fn every_checked_in_trace() {
         let stats = stats.expect("counted");
         println!("{}: {} ({stats:?})", q.name, tr.text().lines().last().unwrap());
         tr.check(q.mode, &p.golden_all).unwrap_or_else(|e| panic!("{}: {e}", q.name));
+        let (clocked, reqs) = requests(&p, &q);
+        assert_eq!(clocked, tr, "{}: clock by clock", q.name);
+        assert_eq!(reqs.lines().count() as u64, tr.node_fetches + tr.tri_fetches, "{}: a request per word fetched", q.name);
         if bless {
-            std::fs::create_dir_all(&out).unwrap();
             std::fs::write(out.join(format!("{}.expect", q.name)), tr.text()).unwrap();
-            continue;
+        } else {
+            let path = vectors().join(format!("{}.expect", q.name));
+            let want = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+            assert_eq!(tr.text(), want, "{}: the cycle model's trace differs from {}", q.name, path.display());
         }
-        let path = vectors().join(format!("{}.expect", q.name));
-        let want = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
-        assert_eq!(tr.text(), want, "{}: the cycle model's trace differs from {}", q.name, path.display());
+        // with the trace it belongs to: the checked-in one, or the one being blessed
+        std::fs::write(out.join(format!("{}.requests", q.name)), reqs).unwrap();
     }
 }
 
@@ -223,8 +249,9 @@ proptest! {
 }
 
 /// The folded DOP unit's rhythm by hand: issues a multiple of ii clocks apart (some exactly
-/// ii), the first result `dop_fold_latency(ii)` clocks after the first issue; the answers
-/// golden's, clock by clock equal to the skipping run.
+/// ii), the first result 15 + ii - 1 clocks after the first issue (DATE'05 §4.1's lane
+/// pipeline "of 15 stages"; the folded unit's last pass enters its lanes ii - 1 clocks after
+/// the first: 16, 17, 20); the answers golden's, clock by clock equal to the skipping run.
 #[test]
 fn folded_dop_unit_takes_a_pair_every_interval() {
     let chip = Chip::new(&collision_chip::mesh::builtin("sphere:200").unwrap().triangles_f64(), &collision_chip::mesh::builtin("torus:200").unwrap().triangles_f64(), CHIP_CONFIG).unwrap();
@@ -232,10 +259,9 @@ fn folded_dop_unit_takes_a_pair_every_interval() {
     let golden = chip.query(&pose, Mode::All, Traversal::Lifo);
     let idx = |unit: &str, name: &str| PROBES.iter().position(|p| (p.0, p.1) == (unit, name)).unwrap();
     let (issue, valid) = (idx("d_cntr", "issue"), idx("dop", "valid_out"));
-    for ii in [2u32, 3, 6] {
+    for (ii, latency) in [(2u32, 16u64), (3, 17), (6, 20)] {
         // one request outstanding would space issues by the memory; prefetch keeps words ready
         let p = Params { dop_interval: ii, prefetch: 8, outstanding: 8, ..Params::RTL };
-        let latency = collision_chip::chip::rtl::dop_fold_latency(ii as usize) as u64;
         let (mut issues, mut first_out) = (vec![], None);
         let mut obs = |t: u64, v: &[u64]| {
             if v[issue] == 1 {
@@ -260,7 +286,12 @@ fn folded_dop_unit_takes_a_pair_every_interval() {
     }
 }
 
-/// The RTL configuration's parameters are the RTL's own constants.
+/// The RTL configuration's parameters are the RTL's own constants, and these values,
+/// literal: DATE'05 §4.1's DOP pipeline "of 15 stages"; TRI_UNIT §4.2's T.CHECK "pipeline
+/// with 52 clock cycles delay" plus the pair register before it and the result FIFO's write
+/// after it, 54; the rest the RTL's choices (docs/ARCHITECTURE.md): a queue of 2^10 entries,
+/// a result FIFO of 256, issues two clocks apart, a credit of 16, one request outstanding,
+/// no prefetch, a memory word one clock after its request.
 #[test]
 fn rtl_point_is_the_rtl() {
     use collision_chip::rtl::{e8m15::TriUnit, b32};
@@ -268,7 +299,20 @@ fn rtl_point_is_the_rtl() {
     let p = Params::RTL;
     assert_eq!((p.dop_latency, p.tri_latency, p.tri_fifo, p.credit), (DOP_LATENCY as u32, TriUnit::LATENCY as u32, TriUnit::FIFO_DEPTH as u32, CREDIT as u32));
     assert_eq!((b32::TriUnit::LATENCY, b32::TriUnit::FIFO_DEPTH), (TriUnit::LATENCY, TriUnit::FIFO_DEPTH));
-    assert_eq!((p.dop_latency, p.tri_latency), (15, 54), "the documented latencies");
+    let literal = Params {
+        queue_entries: 1024,
+        dop_latency: 15,
+        dop_interval: 1,
+        tri_latency: 52 + 2,
+        tri_fifo: 256,
+        tri_interval: 1,
+        issue_spacing: 2,
+        credit: 16,
+        outstanding: 1,
+        prefetch: 0,
+        memory: Memory::Ideal(MemTiming { latency: 1, interval: 1, bus_bits: None }),
+    };
+    assert_eq!(p, literal);
 }
 
 /// A queue too small for the traversal: the query ends with `overflow`, having reported
@@ -400,10 +444,15 @@ fn the_longest_waits_are_skipped() {
     }
 }
 
-/// The folded TRI_UNIT's rhythm (issue 33), derived from `rtl::b32::TriUnitFold`'s rule, not
-/// from the model: its counter runs from the first pair taken, so pairs enter in cycles
-/// t0 + n ii (from ii 4 some exactly ii apart: pairs queue behind the unit on these meshes), and the
-/// first verdict is at the output `fold::tri_unit_latency` clocks after t0. The answer is
+/// The folded TRI_UNIT's rhythm, derived from `rtl::b32::TriUnitFold`'s rule, not from the
+/// model: its counter runs from the first pair taken, so pairs enter in cycles t0 + n ii
+/// (from ii 4 some exactly ii apart: pairs queue behind the unit on these meshes), and the
+/// first verdict is at the output ii/2 + L + 2 clocks after t0: the second direction enters
+/// the shared T.CHECK ii/2 clocks after the first, L is that T.CHECK's latency at II ii/2,
+/// and the result FIFO's write and read registers add 2. L = 58, 61, 85, 89 at II 1, 2, 8,
+/// 16 (the modulo schedules', docs/ARCHITECTURE.md "Folded TRI_UNIT"; the exported Verilog
+/// runs its vectors at 89 for T.CHECK at II 16 and 95 for TRI_UNIT at ii 16 under Icarus and
+/// Verilator, vectors/tcheck_fold16_b32_rne.hex, tri_unit_fold16_b32_rne.hex). The answer is
 /// golden's, and the same with idle stretches skipped as clock by clock.
 #[test]
 fn folded_tri_unit_takes_a_pair_every_interval() {
@@ -412,9 +461,9 @@ fn folded_tri_unit_takes_a_pair_every_interval() {
     let golden = chip.query(&pose, Mode::All, Traversal::Lifo);
     let idx = |name: &str| PROBES.iter().position(|p| (p.0, p.1) == ("tri_unit", name)).unwrap();
     let (take, out_valid) = (idx("take"), idx("out_valid"));
-    for ii in [2u32, 4, 16, 32] {
+    for (ii, t_check) in [(2u32, 58u64), (4, 61), (16, 85), (32, 89)] {
         let p = Params { tri_interval: ii, ..Params::RTL };
-        let latency = collision_chip::fold::tri_unit_latency(&collision_chip::fold::tri_unit_plan(ii as usize, collision_chip::fold::plan::Binding::Shared).unwrap()) as u64;
+        let latency = ii as u64 / 2 + t_check + 2;
         let (mut takes, mut first_out) = (vec![], None);
         let mut obs = |t: u64, v: &[u64]| {
             if v[take] == 1 {

@@ -2,16 +2,22 @@
 //! docs read, and the data obey what must hold whatever the timing (LIFO and FIFO find
 //! the same pairs, as do the list and recursive traversals; Algorithm 1 never transforms
 //! less than Algorithm 2); each chip runs on its preset at its configuration's period, and
-//! its times add up (end to end = host setup + clocks x period + host settling).
+//! its times add up (end to end = host setup + clocks x period + host settling). The
+//! counts are the golden model's, queried here pose by pose, and follow what the papers
+//! report: more pairs, fetches and transforms as the copies close in, LIFO's queue far
+//! smaller than FIFO's (DATE'05 Fig. 7), the first hit no later with LIFO (Fig. 6b).
 
-use collision_chip::chip::config::DopRounding;
+use collision_chip::chip::config::{ChipConfig, DopRounding};
+use collision_chip::chip::reg::Mode;
 use collision_chip::chip::preset::Preset;
-use collision_chip::chip::timing::{Clock, Folds, Technology};
+use collision_chip::chip::timing::{Folds, Technology};
 use collision_chip::format::Format;
 use collision_chip::report::accuracy;
 use collision_chip::report::figures::{generate, Plan};
 use collision_chip::report::plot::Cell;
-use collision_chip::pose::Sweep;
+use collision_chip::pose::{sweep_poses, Sweep};
+use collision_chip::query::Chip;
+use collision_chip::traversal::{Counters, Traversal};
 use std::collections::HashMap;
 
 fn csv(path: &std::path::Path) -> (Vec<String>, Vec<HashMap<String, String>>) {
@@ -24,6 +30,51 @@ fn csv(path: &std::path::Path) -> (Vec<String>, Vec<HashMap<String, String>>) {
 
 fn num(r: &HashMap<String, String>, c: &str) -> f64 {
     r[c].parse().unwrap_or_else(|_| panic!("{c} = {:?} is not a number", r[c]))
+}
+
+/// The measured clock period of the papers' chip (k = 24, binary32: rtl/chip_b32_k24.v,
+/// which holds every unit of its configuration) in the timing study's table.
+fn chip_b32_k24_period_ns() -> f64 {
+    let (cols, rows) = csv(&std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/figures/timing.csv"));
+    assert!(cols.iter().any(|c| c == "min_period_ns"));
+    num(rows.iter().find(|r| r["unit"] == "chip_b32_k24").expect("a row of the chip"), "min_period_ns")
+}
+
+/// A golden query's counts, as the figures' tables give them (means over a distance's poses).
+#[derive(Clone, Copy, Debug, Default)]
+struct Means {
+    pairs: f64,
+    dop_tests: f64,
+    node_fetches: f64,
+    dop_transforms: f64,
+}
+
+/// The golden model's counts on `plan`'s poses, queried here one by one, mean per distance:
+/// [distance][traversal: LIFO, FIFO, list, recursive][mode: all, first].
+fn golden_means(plan: &Plan, cfg: ChipConfig) -> Vec<[[Means; 2]; 4]> {
+    let tris = collision_chip::mesh::resolve(&plan.meshes[0]).unwrap().scaled_into_unit_cube().unwrap().triangles_f64();
+    let chip = Chip::new(&tris, &tris, cfg).unwrap();
+    let poses = sweep_poses(&Sweep { distances: plan.distances.clone(), orientations: plan.orientations, seed: plan.seed }).unwrap();
+    let n = plan.orientations as f64;
+    poses
+        .chunks(plan.orientations)
+        .map(|group| {
+            [Traversal::Lifo, Traversal::Fifo, Traversal::List, Traversal::Recursive].map(|t| {
+                [Mode::All, Mode::First].map(|m| {
+                    let mut s = Means::default();
+                    for sp in group {
+                        let r = chip.query(&sp.pose, m, t);
+                        let c: Counters = r.counters;
+                        s.pairs += r.pairs.len() as f64 / n;
+                        s.dop_tests += c.dop_tests as f64 / n;
+                        s.node_fetches += c.node_fetches as f64 / n;
+                        s.dop_transforms += c.dop_transforms as f64 / n;
+                    }
+                    s
+                })
+            })
+        })
+        .collect()
 }
 
 #[test]
@@ -54,11 +105,24 @@ fn figures_data_hold_what_the_papers_compare() {
     let (cols, fig6) = csv(&out.join("date05_fig6_cycles.csv"));
     assert_eq!(cols, ["mesh", "triangles", "distance", "queries", "order", "mode", "pairs", "cycles", "cycles_max", "period_ns", "chip_us", "words"]);
     // DATE'05's figures on the date05 preset, at its configuration's measured period
-    let period = |p: Preset| Clock::of(Technology::Osu018, &p.chip(), Folds::NONE, p).unwrap().period_ns;
+    let period = chip_b32_k24_period_ns();
     let close = |a: f64, b: f64| (a - b).abs() <= 1e-9 * a.abs().max(b.abs()).max(1.0);
     for r in &fig6 {
-        assert_eq!(num(r, "period_ns"), period(Preset::Date05), "{r:?}");
+        assert_eq!(num(r, "period_ns"), period, "{r:?}");
         assert!(close(num(r, "chip_us"), num(r, "cycles") * num(r, "period_ns") / 1000.0), "{r:?}");
+    }
+    // the counts: the golden model's, pose by pose (the date05 chip's for Figs. 6-7, the
+    // software's for Figs. 9-12)
+    let date = golden_means(&plan, Preset::Date05.chip());
+    let soft = golden_means(&plan, ChipConfig::default());
+    let at = |r: &HashMap<String, String>| plan.distances.iter().position(|&d| d == num(r, "distance")).expect("a distance of the plan");
+    let traversal = |r: &HashMap<String, String>, c: &str| ["lifo", "fifo", "list", "recursive"].iter().position(|t| *t == r[c]).unwrap();
+    let mode = |r: &HashMap<String, String>| ["all", "first"].iter().position(|m| *m == r["mode"]).unwrap();
+    for r in &fig6 {
+        let g = date[at(r)][traversal(r, "order")][mode(r)];
+        assert!(close(num(r, "pairs"), g.pairs), "{r:?}: golden {g:?}");
+        // one DOP test issued per clock at the most
+        assert!(num(r, "cycles") >= g.dop_tests, "{r:?}: golden {g:?}");
     }
     assert_eq!(fig6.len(), 3 * 2 * 2);
     for r in &fig6 {
@@ -71,14 +135,31 @@ fn figures_data_hold_what_the_papers_compare() {
         }
         assert!(num(r, "cycles") > 0.0 && num(r, "cycles") <= num(r, "cycles_max"));
     }
-    // apart: no pairs; at 1.0 the copies penetrate
+    // apart: no pairs; at 1.0 the copies penetrate; more pairs as they close in
     let pairs = |d: &str| num(fig6.iter().find(|r| r["distance"] == d && r["mode"] == "all").unwrap(), "pairs");
     assert_eq!(pairs("2.2"), 0.0);
-    assert!(pairs("1") > 0.0);
+    assert!(pairs("1") > 0.0 && pairs("1") >= pairs("1.4"), "{fig6:?}");
+    let row = |t: &[HashMap<String, String>], d: &str, c: &str, o: &str, m: &str| t.iter().find(|r| r["distance"] == d && r[c] == o && r["mode"] == m).unwrap().clone();
+    // DATE'05 Fig. 6b: LIFO "far superior to FIFO control when finding the first intersecting primitive"
+    for d in ["1.4", "1"] {
+        assert!(num(&row(&fig6, d, "order", "lifo", "first"), "cycles") <= num(&row(&fig6, d, "order", "fifo", "first"), "cycles"), "{fig6:?}");
+    }
 
     let (cols, fig7) = csv(&out.join("date05_fig7_queue.csv"));
     assert_eq!(cols[4..], ["order", "mode", "pairs", "max_entries", "max_entries_max", "queue_bytes"]);
-    assert!(fig7.iter().all(|r| num(r, "max_entries") >= 1.0));
+    for r in &fig7 {
+        assert!(num(r, "max_entries") >= 1.0 && num(r, "max_entries") <= num(r, "max_entries_max"), "{r:?}");
+        assert!(close(num(r, "pairs"), date[at(r)][traversal(r, "order")][mode(r)].pairs), "{r:?}");
+        // an entry: two node pairs of two 16-bit ids and a flip bit each, and a bit for one
+        // pair or two: 2 (16 + 16 + 1) + 1 = 67 bits
+        assert!(close(num(r, "queue_bytes"), num(r, "max_entries") * 67.0 / 8.0), "{r:?}");
+    }
+    // DATE'05 Fig. 7: LIFO "uses still only very few memory, compared to a FIFO"; the
+    // root's pair alone while the copies are apart
+    for d in ["1.4", "1"] {
+        assert!(num(&row(&fig7, d, "order", "lifo", "all"), "max_entries") < num(&row(&fig7, d, "order", "fifo", "all"), "max_entries"), "{fig7:?}");
+    }
+    assert!(fig7.iter().filter(|r| r["distance"] == "2.2").all(|r| num(r, "max_entries") == 1.0), "{fig7:?}");
 
     let (cols, fig8) = csv(&out.join("date05_fig8_speedup.csv"));
     assert_eq!(
@@ -104,6 +185,27 @@ fn figures_data_hold_what_the_papers_compare() {
             assert!(num(rec, "dop_transforms") >= num(r, "dop_transforms"), "{r:?} {rec:?}");
         }
     }
+    // Figs. 9-12 are rows of one table: each the golden software's counts; the first witness
+    // no more work than all pairs; more fetches and transforms as the copies close in
+    let (_, fig9) = csv(&out.join("wscg03_fig9_first_witness.csv"));
+    let (_, fig10) = csv(&out.join("wscg03_fig10_all_pairs.csv"));
+    let (_, fig12) = csv(&out.join("wscg03_fig12_transforms.csv"));
+    assert!(fig9.iter().all(|r| r["mode"] == "first") && fig10.iter().all(|r| r["mode"] == "all"));
+    assert_eq!((fig9.len() + fig10.len(), fig11.len(), fig12.len()), (3 * 4, 3 * 4, 3 * 4));
+    for r in fig9.iter().chain(&fig10).chain(&fig11).chain(&fig12) {
+        let g = soft[at(r)][traversal(r, "traversal")][mode(r)];
+        let got = (num(r, "pairs"), num(r, "node_fetches"), num(r, "dop_transforms"));
+        assert!(close(got.0, g.pairs) && close(got.1, g.node_fetches) && close(got.2, g.dop_transforms), "{r:?}: golden {g:?}");
+        let all = row(&fig12, &r["distance"], "traversal", &r["traversal"], "all");
+        assert!(got.1 <= num(&all, "node_fetches") && got.2 <= num(&all, "dop_transforms"), "{r:?} {all:?}");
+    }
+    for t in ["list", "recursive"] {
+        let series = |c: &str| ["2.2", "1.4", "1"].map(|d| num(&row(&fig12, d, "traversal", t, "all"), c));
+        for c in ["node_fetches", "dop_transforms"] {
+            let v = series(c);
+            assert!(v[0] <= v[1] && v[1] <= v[2], "{t} {c} {v:?}");
+        }
+    }
 
     let (cols, fig13) = csv(&out.join("wscg03_fig13_speedup.csv"));
     assert_eq!(
@@ -117,8 +219,8 @@ fn figures_data_hold_what_the_papers_compare() {
         let eq5 = 100.0 * num(r, "lists") + 10.0 * (num(r, "alpha") - 2.0) * num(r, "lists");
         assert!((eq5 - num(r, "eq5_cycles")).abs() <= 1e-6 * eq5.abs().max(1.0), "{r:?}");
         assert!(num(r, "wscg03_cycles") > 0.0 && num(r, "date05_cycles") > 0.0, "{r:?}");
-        // WSCG'03's figure on the wscg03 preset
-        assert_eq!(num(r, "period_ns"), period(Preset::Wscg03), "{r:?}");
+        // WSCG'03's figure on the wscg03 preset: the same chip, its triangle cache aside
+        assert_eq!(num(r, "period_ns"), period, "{r:?}");
         for m in ["wscg03", "eq5", "date05"] {
             let chip_us = num(r, &format!("{m}_cycles")) * num(r, "period_ns") / 1000.0;
             assert!(close(num(r, &format!("speedup_{m}")), num(r, "software_us") / chip_us), "{m}: {r:?}");
@@ -201,4 +303,44 @@ fn accuracy_pareto_front() {
     let wide: Vec<_> = rows.iter().filter(|r| r.k == 24).collect();
     let growth: Vec<f64> = slow.iter().zip(&wide).map(|(s, w)| s.sums.cycles as f64 / w.sums.cycles as f64).collect();
     assert!(growth[1] > 1.0 && growth[0] > growth[1], "clocks on a 64-bit bus / a word per clock: binary32, e8m10 {growth:?}");
+}
+
+/// `cchip accuracy --shard K/N` prints JSON that `--merge` reads back from the files a user
+/// saves: the merged rows are the serial run's (the host's measured times aside), and a
+/// file that is not a shard's is refused naming it.
+#[test]
+fn accuracy_shards_merge_through_their_files() {
+    let dir = std::env::temp_dir().join(format!("cchip-shards-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let cchip = |args: &[&str]| {
+        let out = std::process::Command::new(env!("CARGO_BIN_EXE_cchip")).arg("accuracy").args(args).output().unwrap();
+        (out.status.code(), String::from_utf8(out.stdout).unwrap(), String::from_utf8_lossy(&out.stderr).into_owned())
+    };
+    let study = ["--meshes", "sphere:40,torus:40", "--distances", "1.0,0.5", "--orientations", "2", "--k", "6", "--formats", "reduced", "--presets", "rtl,wscg03", "--technology", "paper"];
+    let rows = |json: &str| -> Vec<serde_json::Value> {
+        let mut v: Vec<serde_json::Value> = serde_json::from_str(json).unwrap();
+        v.iter_mut().for_each(|r| drop(r.as_object_mut().unwrap().remove("host")));
+        v
+    };
+    let (code, serial, err) = cchip(&[&study[..], &["--json"]].concat());
+    assert_eq!(code, Some(0), "{err}");
+    let serial = rows(&serial);
+    let files: Vec<String> = (1..=3)
+        .map(|k| {
+            let (code, json, err) = cchip(&[&study[..], &["--shard", &format!("{k}/3")]].concat());
+            assert_eq!(code, Some(0), "{err}");
+            let f = dir.join(format!("shard{k}.json"));
+            std::fs::write(&f, json).unwrap();
+            f.display().to_string()
+        })
+        .collect();
+    let (code, merged, err) = cchip(&["--json", "--merge", &files[0], &files[1], &files[2]]);
+    assert_eq!(code, Some(0), "{err}");
+    assert_eq!(rows(&merged), serial);
+    // per mesh, preset and DOP rounding: 2 distances x 2 orientations
+    assert!(serial.len() == 8 && serial.iter().all(|r| r["queries"] == 4), "{serial:?}");
+    std::fs::write(&files[2], "{}").unwrap();
+    let (code, _, err) = cchip(&["--merge", &files[0], &files[1], &files[2]]);
+    assert!(code == Some(2) && err.contains("shard3.json") && err.contains("not a shard's output"), "{code:?} {err}");
+    let _ = std::fs::remove_dir_all(&dir);
 }

@@ -117,3 +117,53 @@ fn presets_lay_out_for_the_bus() {
     let e = Scene::parse(&text.replace("\"words\"", "\"pairs\""), "s").unwrap_err();
     assert!(e.contains("s:6") && e.contains("`words` or `records`"), "{e}");
 }
+
+/// The presets' values, literal, each from the paper or derived here by hand (not from the
+/// constants `preset.rs` is written with).
+#[test]
+fn presets_are_the_papers_values() {
+    use collision_chip::chip::config::{DopRounding, Formats};
+    use collision_chip::chip::memory::{Ddr, MemTiming, Memory};
+    use collision_chip::chip::params::Params;
+    use collision_chip::format::{Format, Rounding};
+    // WSCG'03 §4.3 and §4.5: "four standard 64-bit modules ... for a 256-bit data bus", "a total page size
+    // across all modules of 4KBytes", "four internal banks", node pairs loaded "in a
+    // double-data-rate burst transfer of length eight", "a page miss access to a node pair
+    // to consume 20 clock cycles, a page hit to consume only 8 cycles"; the chip "clocked at
+    // 266MHz"; "a direct mapped cache with 128 lines" for A's triangles.
+    let wscg03 = Ddr { banks: 4, page_bytes: 4096, bus_bits: 256, burst: 8, hit: 8, miss: 20 };
+    assert_eq!(Ddr::WSCG03, wscg03);
+    // DATE'05 §4.1 gives "a 756-bit wide bus from the DDR2-RAM" and an 800 MHz target. The
+    // rest is our assumption, DDR2-800 at 5-5-5 (CL = tRCD = tRP = 5 memory clocks, 12.5 ns)
+    // with the chip at the data rate, two chip clocks per memory clock: 8 banks of 8 KiB
+    // pages, bursts of 4 beats (4 chip clocks); a hit CL + burst = 10 + 4 = 14 clocks, a
+    // miss tRP + tRCD + hit = 10 + 10 + 14 = 34.
+    let date05 = Ddr { banks: 8, page_bytes: 8192, bus_bits: 756, burst: 4, hit: 2 * 5 + 4, miss: 2 * 5 + 2 * 5 + 14 };
+    assert_eq!((date05.hit, date05.miss), (14, 34));
+    assert_eq!(Ddr::DATE05, date05);
+    assert_eq!((Ddr::preset("wscg03"), Ddr::preset("date05"), Ddr::preset("ddr")), (Some(wscg03), Some(date05), None));
+
+    // Both papers' chips: DATE'05's "we chose to use 24-DOPs", of "single-precision
+    // floating-point numbers", the DOP test rounded outward (never a
+    // false "separated"), T.CHECK to nearest; records laid out for the bus, 16 held per object.
+    let papers = ChipConfig {
+        k: 24,
+        format: Formats::from(Format::BINARY32),
+        dop_rounding: DopRounding::Outward,
+        tri_rounding: Rounding::NearestEven,
+        tri_cache: 1,
+        layout: MemLayout::Records,
+        node_cache: 16,
+    };
+    assert_eq!(Preset::Date05.chip(), papers);
+    assert_eq!(Preset::Wscg03.chip(), ChipConfig { tri_cache: 128, ..papers });
+    assert_eq!(Preset::Rtl.chip(), ChipConfig { layout: MemLayout::Words, node_cache: 1, ..papers });
+    // the memory port at full speed: an issue every clock, register 0x126's most requests
+    // outstanding (16) and pairs prefetched (14), a credit of 48; the RTL's reset point
+    // otherwise (tb/cycle_chip.rs: `rtl_point_is_the_rtl`)
+    let full = |memory| Params { issue_spacing: 1, outstanding: 16, prefetch: 14, credit: 48, memory, ..Params::RTL };
+    assert_eq!(Preset::Date05.params(), full(Memory::Ddr(date05)));
+    assert_eq!(Preset::Wscg03.params(), full(Memory::Ddr(wscg03)));
+    assert_eq!(Preset::Rtl.params(), Params { memory: Memory::Ideal(MemTiming { latency: 1, interval: 1, bus_bits: None }), ..Params::RTL });
+    assert_eq!([Preset::Date05, Preset::Wscg03, Preset::Rtl].map(Preset::clock_mhz), [800.0, 266.0, 800.0]);
+}

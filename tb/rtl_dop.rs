@@ -30,7 +30,7 @@ use rust_hdl::prelude::*;
 use std::time::Instant;
 
 mod common;
-use common::{operand, run, run_vcd, settle, Fmt, Pipelined};
+use common::{operand, run, run_vcd, settle, vcd_outputs, vcd_path, Fmt, Pipelined};
 
 const MODES: [Rounding; 2] = [Rounding::NearestEven, Rounding::TowardPositive];
 const LATENCY: usize = 15;
@@ -467,20 +467,16 @@ fn unit_random_values() {
 // ---------------------------------------------------------------------------------------
 // VCD and Verilog.
 
-fn vcd_dir() -> std::path::PathBuf {
-    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("target").join("rtl-vcd");
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
-
 /// rust-hdl names the VCD root `uut`; name it after the block.
 fn write_vcd(name: &str, root: &str, buf: Vec<u8>) {
     let text = String::from_utf8(buf).unwrap().replacen("$scope module uut $end", &format!("$scope module {root} $end"), 1);
-    let path = vcd_dir().join(format!("{name}.vcd"));
+    let path = vcd_path(name);
     std::fs::write(&path, text).unwrap();
     println!("wrote {}", path.display());
 }
 
+/// Short traced runs for GTKWave: a DOPTRF lane and the k = 24 DOP unit, their results the
+/// golden model's, and the VCDs' `s` and `overlap` at each `valid_out` those results.
 #[test]
 fn vcd_traces() {
     big_stack(|| {
@@ -493,7 +489,10 @@ fn vcd_traces() {
             [b(f64::INFINITY), b(1.0), b(1.0), b(0.0), b(1.0), b(1.0), b(0.0), b(0.0)],
             [b(1e-40), b(1e-40), b(1.0), b(1.0), b(1.0), b(0.0), b(0.0), b(-2e-40)],
         ];
-        run_vcd(&mut b32::doptrf_top(Rounding::TowardPositive), &cases, "doptrf_b32", "doptrf");
+        let outs = run_vcd(&mut b32::doptrf_top(Rounding::TowardPositive), &cases, "doptrf_b32", "doptrf");
+        let want: Vec<(u64, bool)> = cases.iter().map(|x| golden_lane(f, Rounding::TowardPositive, x)).collect();
+        assert_eq!(outs, want);
+        assert_eq!(vcd_outputs(&vcd_path("doptrf_b32"), "doptrf", "valid_out", "s"), want.iter().map(|w| w.0).collect::<Vec<_>>(), "doptrf_b32.vcd: s at valid_out");
 
         // the DOP unit (k = 24): a pose, a few node pairs of two small trees
         let cfg = ChipConfig::default();
@@ -501,16 +500,17 @@ fn vcd_traces() {
         let tb = DopTree::build(&soup(4, 2).triangles_f64(), &cfg);
         let setup = HostSetup::new(&cfg, &Pose::new(10.0, 20.0, 30.0, 0.3, 0.1, 0.0), tb.coord_bound(), TriSide::UNUSED);
         let words = setup_words(f, &setup.j, &setup.cmat, &setup.cvec);
-        let pairs: Vec<Pair> = (0..ta.len() as u32)
-            .flat_map(|na| (0..tb.len() as u32).map(move |nb| (na, nb)))
-            .take(12)
+        let nodes: Vec<(u32, u32)> = (0..ta.len() as u32).flat_map(|na| (0..tb.len() as u32).map(move |nb| (na, nb))).take(12).collect();
+        let pairs: Vec<Pair> = nodes
+            .iter()
             .enumerate()
-            .map(|(i, (na, nb))| Pair {
+            .map(|(i, &(na, nb))| Pair {
                 d: tb.dop(nb).iter().map(|&x| f.to_bits(x)).collect(),
                 e: ta.dop(na).iter().map(|&x| f.to_bits(x)).collect(),
                 tag: i as u16,
             })
             .collect();
+        let want: Vec<bool> = nodes.iter().map(|&(na, nb)| dop_unit::dop_overlap(f, Rounding::TowardPositive, &setup, &tb.dop(nb), &ta.dop(na))).collect();
         let mut uut = b32::dop_unit24_top(Rounding::TowardPositive);
         let mut buf = vec![];
         {
@@ -524,9 +524,12 @@ fn vcd_traces() {
                 *v = Some(write_vcd_change(w, u));
                 time += 5;
             };
-            run_unit(&mut uut, &words, &pairs, Some(&mut probe));
+            let (outs, _) = run_unit(&mut uut, &words, &pairs, Some(&mut probe));
+            assert_eq!(outs.iter().map(|o| o.0).collect::<Vec<_>>(), want);
         }
         write_vcd("dop_unit_b32", "dop_unit", buf);
+        let shown: Vec<bool> = vcd_outputs(&vcd_path("dop_unit_b32"), "dop_unit", "valid_out", "overlap").iter().map(|&v| v == 1).collect();
+        assert_eq!(shown, want, "dop_unit_b32.vcd: overlap at valid_out");
     });
 }
 

@@ -13,7 +13,7 @@ use rust_hdl::prelude::*;
 use std::time::Instant;
 
 mod common;
-use common::{operand, run, run_vcd, Fmt, Pipelined};
+use common::{operand, run, run_vcd, vcd_outputs, vcd_path, Fmt, Pipelined};
 
 /// The FP units: inputs (a, b, sub), output y.
 trait Unit: Pipelined<In = (u64, u64, bool), Out = u64> {}
@@ -247,9 +247,15 @@ fn specials_all_units() {
     specials_unit(e8m15::fp_add_top, Format::REDUCED, false);
 }
 
-/// A short traced run per unit (binary32, TowardPositive), for GTKWave.
-fn vcd_unit<U: Unit>(mut uut: U, name: &str, ops: &[(u64, u64, bool)]) {
-    run_vcd(&mut uut, ops, name, name);
+/// A short traced run per unit (TowardPositive), for GTKWave: its results the golden
+/// model's, and the VCD's `y` at each `valid_out` those results.
+fn vcd_unit<U: Unit>(mut uut: U, name: &str, fmt: Format, ops: &[(u64, u64, bool)]) {
+    let outs = run_vcd(&mut uut, ops, name, name);
+    let is_mul = name.starts_with("fp_mul");
+    let op = |sub| if is_mul { Op::Mul } else if sub { Op::Sub } else { Op::Add };
+    let want: Vec<u64> = ops.iter().map(|&(a, b, sub)| golden(fmt, op(sub), Rounding::TowardPositive, a, b)).collect();
+    assert_eq!(outs, want, "{name}");
+    assert_eq!(vcd_outputs(&vcd_path(name), name, "valid_out", "y"), want, "{name}.vcd: y at valid_out");
 }
 
 #[test]
@@ -264,13 +270,13 @@ fn vcd_traces() {
         (0x3f80_0001, 0x3f80_0000, true),
     ];
     let mul_ops: Vec<_> = ops.iter().map(|&(a, b, _)| (a, b, false)).collect();
-    vcd_unit(b32::fp_mul_top(Rounding::TowardPositive), "fp_mul_b32", &mul_ops);
-    vcd_unit(b32::fp_add_top(Rounding::TowardPositive), "fp_add_b32", &ops);
+    vcd_unit(b32::fp_mul_top(Rounding::TowardPositive), "fp_mul_b32", Format::BINARY32, &mul_ops);
+    vcd_unit(b32::fp_add_top(Rounding::TowardPositive), "fp_add_b32", Format::BINARY32, &ops);
     let h = |x: u64| x >> 8; // the e8m15 word is the top 24 bits of the binary32 word
     let ops15: Vec<_> = ops.iter().map(|&(a, b, s)| (h(a), h(b), s)).collect();
     let mul15: Vec<_> = ops15.iter().map(|&(a, b, _)| (a, b, false)).collect();
-    vcd_unit(e8m15::fp_mul_top(Rounding::TowardPositive), "fp_mul_e8m15", &mul15);
-    vcd_unit(e8m15::fp_add_top(Rounding::TowardPositive), "fp_add_e8m15", &ops15);
+    vcd_unit(e8m15::fp_mul_top(Rounding::TowardPositive), "fp_mul_e8m15", Format::REDUCED, &mul15);
+    vcd_unit(e8m15::fp_add_top(Rounding::TowardPositive), "fp_add_e8m15", Format::REDUCED, &ops15);
 }
 
 

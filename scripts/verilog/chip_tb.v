@@ -19,14 +19,21 @@
 // ports (and the memory handshake) of every cycle whose values differ from the last line's:
 //   ports <cycle> busy done overflow max_depth req_valid req_ready req_addr resp_valid
 //         res_valid res_uncertain res_a res_b dop_tests tri_tests node_fetches tri_fetches
-// (src/harness/verilator.rs compares them with the cycle model's, clock by clock). Runs
-// under both Icarus and Verilator.
+// (src/harness/verilator.rs compares them with the cycle model's, clock by clock).
+// +requests also prints each memory request the testbench accepts:
+//   request <cycle> <word address>
+// (scripts/run-chip.sh compares them with the cycle model's). It runs under both Icarus
+// and Verilator.
 // The same driver in Rust: src/cycle/drive.rs (run_query).
 `timescale 1ns / 1ps
 module tb;
   parameter MW = 578;
   localparam DEPTH = 1 << 16;
+`ifdef VERILATOR
+  reg clock = 1;  // falls at time 1, below
+`else
   reg clock = 0;
+`endif
   reg host_we = 0;
   reg [9:0] host_addr = 0;
   reg [31:0] host_data = 0;
@@ -62,7 +69,7 @@ module tb;
   integer open_row [0:63];  // cycle::memory::Ddr::MAX_BANKS
   integer bank_free [0:63];
   reg [1023:0] mem_file, host_file;
-  reg ports, printed;
+  reg ports, printed, requests;
   reg [202:0] port_line, last_line;
 
   task edge_;  // one rising edge, inputs set before it, outputs settled after it
@@ -73,6 +80,13 @@ module tb;
   endtask
 
   initial begin
+`ifdef VERILATOR
+    // A falling edge before the first rising one: Verilator 5.006 applies a hierarchical
+    // block's initial values when it first evaluates the block, which the edge makes it do;
+    // without it, with +verilator+rand+reset+2 the blocks' outputs are random at the first
+    // rising edge and the chip takes them in.
+    #1 clock = 0;
+`endif
     if (!$value$plusargs("mem=%s", mem_file) || !$value$plusargs("host=%s", host_file)) begin
       $display("chip_tb: need +mem=<file> +host=<file>");
       $finish;
@@ -104,6 +118,7 @@ module tb;
     end
     if (!$value$plusargs("max_cycles=%d", max_cycles)) max_cycles = 100000;
     ports = $test$plusargs("ports");
+    requests = $test$plusargs("requests");
     printed = 0;
     for (i = 0; i < 1024; i = i + 1) host[i] = {42{1'b1}};
     $readmemh(mem_file, mem);
@@ -149,6 +164,7 @@ module tb;
         end
         qaddr[qt % 16] = mem_req_addr;
         qt = qt + 1;
+        if (requests) $display("request %0d %0d", cyc, mem_req_addr);
       end
       res_ready = cyc % reader == 0;
       port_line = {busy, done, overflow, max_depth, mem_req_valid, mem_req_ready, mem_req_addr, mem_resp_valid,

@@ -133,9 +133,8 @@ pub fn tri_unit(cfg: &ChipConfig, tri_interval: u32) -> String {
 /// scaler, T.CHECK, TRI_UNIT: §4.2) in T.CHECK's format and rounding, or the folded TRI_UNIT
 /// that takes a pair every `folds.tri` clocks (the DOP unit likewise, `folds.dop`); D_CNTR's pair queue (§4.3); and the whole
 /// chip where the RTL builds this configuration. A folded configuration also counts the
-/// unfolded chip: its slowest path is in the glue the two share (D_CNTR's look-ahead into
-/// the pair queue, docs/figures/timing_config.csv), so it bounds the folded chip's glue until
-/// the folded chip has a row of its own.
+/// unfolded chip: the glue the two share (D_CNTR, the memory port, the caches) bounds the
+/// folded chip's glue until the folded chip has a row of its own.
 pub fn units(cfg: &ChipConfig, folds: Folds) -> Vec<String> {
     let mut u: Vec<String> = vec![];
     for name in datapaths(cfg, folds).into_iter().flatten() {
@@ -184,6 +183,43 @@ fn chip_name(cfg: &ChipConfig, folds: Folds) -> String {
         (None, Folds { dop: 1, tri }) => format!("chip_{}_fold{tri}", cfg_tag(cfg)),
         (None, Folds { dop, tri }) => format!("chip_{}_dop{dop}_tri{tri}", cfg_tag(cfg)),
     }
+}
+
+/// The slowest of `cfg`'s units that `table` measured, the others named as not measured,
+/// and the formats that stood in: a datapath with no unit measured in its format takes the
+/// units of the narrowest measured format at least as wide (an upper bound of its own). Err:
+/// the datapath none of whose units is measured in any such format.
+fn slowest_unit(table: &Table, cfg: &ChipConfig, folds: Folds) -> Result<(String, f64, Vec<String>, Vec<String>), String> {
+    let has = |c: &ChipConfig, path: usize| datapaths(c, folds)[path].iter().any(|u| table.periods.contains_key(u) || stand_in(c, folds, u).is_some_and(|s| table.periods.contains_key(&s)));
+    let wider = |f: Format| MEASURED_FORMATS.into_iter().filter(move |w| w.exp_bits() >= f.exp_bits() && w.frac_bits() >= f.frac_bits());
+    let mut run = *cfg;
+    let mut widened = vec![];
+    for (path, name) in [(0, "DOP datapath"), (1, "T.CHECK datapath")] {
+        let own = if path == 0 { cfg.format.dop } else { cfg.format.tri };
+        if has(&run, path) {
+            continue;
+        }
+        let set = |c: &mut ChipConfig, f: Format| if path == 0 { c.format.dop = f } else { c.format.tri = f };
+        let f = wider(own).find(|&f| has(&{ let mut c = run; set(&mut c, f); c }, path));
+        let f = f.ok_or_else(|| format!("{name}'s units ({})", datapaths(cfg, folds)[path].join(", ")))?;
+        set(&mut run, f);
+        widened.push(format!("the {name} in {f} stands in for {own} (not built in RTL; a wider format)"));
+    }
+    let (mut slowest, mut not_measured) = (None::<(String, f64)>, vec![]);
+    for u in units(&run, folds) {
+        let own = table.periods.get(&u).map(|&ns| (u.clone(), ns));
+        if own.is_none() {
+            not_measured.push(u.clone());
+        }
+        let stood = || stand_in(&run, folds, &u).and_then(|s| table.periods.get(&s).map(|&ns| (format!("{s} (for {u})"), ns)));
+        if let Some((name, ns)) = own.or_else(stood) {
+            if slowest.as_ref().is_none_or(|s| ns > s.1) {
+                slowest = Some((name, ns));
+            }
+        }
+    }
+    let (unit, ns) = slowest.expect("a datapath unit is measured");
+    Ok((unit, ns, not_measured, widened))
 }
 
 /// A chip's name for a configuration the RTL does not build (as `rtl_chips!` names them; a
@@ -270,41 +306,18 @@ impl Clock {
         Ok(c)
     }
 
-    /// The slowest of `cfg`'s units that `table` measured, the others named as not measured:
-    /// measured if one of them is the configuration's own RTL chip, else estimated. A
-    /// datapath with no unit measured in its format takes the units of the narrowest measured
-    /// format at least as wide (an upper bound of its own, estimated). Err: the datapath none
-    /// of whose units is measured in any such format.
+    /// The configuration's chip's period where `table` measured that chip (its units as it
+    /// builds them, the control and the paths between them: the chip as built, whose units a
+    /// lone unit's row only approximates, as the flow maps it apart); else the slowest of
+    /// `cfg`'s units that `table` measured ([`slowest_unit`]). Measured if the row is the
+    /// configuration's own RTL chip, else estimated. Err: the datapath none of whose units is
+    /// measured in its format or a wider one.
     pub fn measured(table: &Table, cfg: &ChipConfig, folds: Folds) -> Result<Clock, String> {
-        let has = |c: &ChipConfig, path: usize| datapaths(c, folds)[path].iter().any(|u| table.periods.contains_key(u) || stand_in(c, folds, u).is_some_and(|s| table.periods.contains_key(&s)));
-        let wider = |f: Format| MEASURED_FORMATS.into_iter().filter(move |w| w.exp_bits() >= f.exp_bits() && w.frac_bits() >= f.frac_bits());
-        let mut run = *cfg;
-        let mut widened = vec![];
-        for (path, name) in [(0, "DOP datapath"), (1, "T.CHECK datapath")] {
-            let own = if path == 0 { cfg.format.dop } else { cfg.format.tri };
-            if has(&run, path) {
-                continue;
-            }
-            let set = |c: &mut ChipConfig, f: Format| if path == 0 { c.format.dop = f } else { c.format.tri = f };
-            let f = wider(own).find(|&f| has(&{ let mut c = run; set(&mut c, f); c }, path));
-            let f = f.ok_or_else(|| format!("{name}'s units ({})", datapaths(cfg, folds)[path].join(", ")))?;
-            set(&mut run, f);
-            widened.push(format!("the {name} in {f} stands in for {own} (not built in RTL; a wider format)"));
-        }
-        let (mut slowest, mut not_measured) = (None::<(String, f64)>, vec![]);
-        for u in units(&run, folds) {
-            let own = table.periods.get(&u).map(|&ns| (u.clone(), ns));
-            if own.is_none() {
-                not_measured.push(u.clone());
-            }
-            let stood = || stand_in(&run, folds, &u).and_then(|s| table.periods.get(&s).map(|&ns| (format!("{s} (for {u})"), ns)));
-            if let Some((name, ns)) = own.or_else(stood) {
-                if slowest.as_ref().is_none_or(|s| ns > s.1) {
-                    slowest = Some((name, ns));
-                }
-            }
-        }
-        let (unit, ns) = slowest.expect("a datapath unit is measured");
+        let chip = chip_name(cfg, folds);
+        let (unit, ns, not_measured, widened) = match table.periods.get(&chip) {
+            Some(&ns) => (chip, ns, vec![], vec![]),
+            None => slowest_unit(table, cfg, folds)?,
+        };
         let chip = ChipKind::of(cfg, folds.dop, folds.tri);
         let why = match chip.map(|k| (k, k.reads(cfg))) {
             _ if !widened.is_empty() => widened.join("; "),
@@ -375,11 +388,15 @@ mod tests {
         // the FPGA table's `period_ns` where there is no `min_period_ns`: exact, its Fmax rounded
         let t = Table::parse("unit,fmax_mhz,period_ns\npair_queue_n4,23.1,43.214\ndop_unit_k6_e8m15_ru,30,33.3\ntri_unit_e8m15_rne,30,33.3\n", "t.csv").unwrap();
         assert_eq!(Clock::measured(&t, &cfg, Folds::NONE).unwrap().period_ns, 43.214);
-        // the whole chip, where measured, is one of its units: its control and the paths
-        // between units count; its row makes the period measured
+        // the whole chip, where measured, is the period, slower or faster than a lone unit
+        // (the chip maps its units as it builds them): its control and the paths between
+        // units count; its row makes the period measured
+        for chip_ns in [9.0, 7.0] {
+            let t = Table::parse(&format!("unit,min_period_ns\nfp_add_e8m15_rne,8\nfp_add_e8m15_ru,7\nchip_e8m15_k6,{chip_ns}\n"), "t").unwrap();
+            let c = Clock::measured(&t, &cfg, Folds::NONE).unwrap();
+            assert_eq!((c.period_ns, c.slowest.as_deref(), c.source, c.estimate), (chip_ns, Some("chip_e8m15_k6"), PeriodSource::Measured, None));
+        }
         let t = Table::parse("unit,min_period_ns\nfp_add_e8m15_rne,8\nfp_add_e8m15_ru,7\nchip_e8m15_k6,9\n", "t").unwrap();
-        let c = Clock::measured(&t, &cfg, Folds::NONE).unwrap();
-        assert_eq!((c.slowest.as_deref(), c.source, c.estimate), (Some("chip_e8m15_k6"), PeriodSource::Measured, None));
         // a rounding the RTL chips are not built with has a chip of its own name, not measured
         let t2 = Table::parse("unit,min_period_ns\nfp_add_e8m15_rne,8\nchip_e8m15_k6,9\n", "t").unwrap();
         let ne = Clock::measured(&t2, &ChipConfig { dop_rounding: DopRounding::NearestEven, ..cfg }, Folds::NONE).unwrap();

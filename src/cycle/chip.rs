@@ -250,9 +250,9 @@ impl<'a> Chip<'a> {
             }
         }
         let child_push = !self.pend.is_empty() || grows;
-        // room in the buffer of prefetch + 2 pairs for an entry's two, once this cycle's
-        // issue has left
-        let room = self.ahead.len() - issue as usize <= self.p.prefetch as usize;
+        // room in the buffer of prefetch + 2 pairs for an entry's two, counted before this
+        // cycle's issue (a register compare: the issue is not on the pop's path)
+        let room = self.ahead.len() <= self.p.prefetch as usize;
         let pop = go && !self.q.empty && room && !(self.order == Order::Lifo && child_push);
         // leaf pairs and TRI_UNIT
         let tri_in = go && self.leaf_valid && !need[2] && !need[3];

@@ -2,7 +2,7 @@
 //! NOR-reduced: B's node overlaps A's unless some lane says "separated".
 
 use super::doptrf::{lane, separated, transformed};
-use super::enclosure::checking;
+use super::enclosure::{checking, count_checked};
 use super::host::{DopLanes, HostSetup, Lane};
 use std::borrow::Cow;
 use super::klmsel::{klmsel, opposite};
@@ -116,11 +116,7 @@ impl<'a> TransformCache<'a> {
             b.bounded(nb, e)
         };
         if b.check {
-            b.complete();
-            // A's DOP read anew, not the held one: the check covers the held lines too.
-            let (d, e) = (b.trees[1].dop(nb), a.dop(na));
-            let want = dop_overlap(b.f, b.r, &b.setup, &d, &e);
-            assert_eq!(overlap, want, "check mode: the DOP unit's thresholds said overlap = {overlap}, the lanes {want}: d {d:?}, e {e:?}");
+            b.check_overlap(nb, na, overlap);
         }
         overlap
     }
@@ -147,6 +143,17 @@ impl<'a> TransformCache<'a> {
 }
 
 impl BSide<'_> {
+    /// Check mode: `overlap`, the answer for B's node `nb` against A's `na`, is
+    /// [`dop_overlap`]'s. A's DOP is read anew, not through the held lines, so that the
+    /// check covers those too.
+    fn check_overlap(&mut self, nb: u32, na: u32, overlap: bool) {
+        self.complete();
+        let (d, e) = (self.trees[1].dop(nb), self.trees[0].dop(na));
+        let want = dop_overlap(self.f, self.r, &self.setup, &d, &e);
+        assert_eq!(overlap, want, "check mode: the DOP unit's thresholds said overlap = {overlap}, the lanes {want}: d {d:?}, e {e:?}");
+        count_checked(false);
+    }
+
     /// Computes pending mirror pairs until a lane is surely separated (true), or all are.
     fn lazy_separated(&mut self, nb: u32, e: &[f64]) -> bool {
         let (h, q, est) = (self.k / 2, self.q, self.estimator());
@@ -489,4 +496,26 @@ pub fn dop_overlap(f: Format, r: Rounding, setup: &HostSetup, d: &[f64], e: &[f6
         let flag = s < 0.0;
         !flag
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::golden::enclosure::check_tests::{fires, small_chip};
+    use crate::golden::enclosure::checked;
+
+    /// Check mode's comparison itself: the lanes' answer passes and is counted, its negation
+    /// panics.
+    #[test]
+    fn check_mode_compares_the_answer() {
+        let chip = small_chip();
+        let setup = &chip.setup;
+        let (f, r) = (chip.cfg.format.dop, chip.cfg.dop_rounding.op());
+        let mut unit = TransformCache::new(f, r, setup, &chip.a.tree, &chip.b.tree);
+        let want = dop_overlap(f, r, setup, &chip.b.tree.dop(0), &chip.a.tree.dop(0));
+        let before = checked().dop_tests;
+        unit.b.check_overlap(0, 0, want);
+        assert_eq!(checked().dop_tests, before + 1);
+        fires(|| unit.b.check_overlap(0, 0, !want));
+    }
 }

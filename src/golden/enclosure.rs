@@ -14,6 +14,7 @@
 //! below instead, so that software can also prove a sign of the chip unknown.
 
 use crate::format::{Format, ScaleConst};
+use std::cell::Cell;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::OnceLock;
 
@@ -147,4 +148,62 @@ pub fn checking() -> bool {
 /// Turns check mode on for the rest of the process (tests).
 pub fn force_check() {
     FORCED.store(true, Ordering::Relaxed);
+}
+
+/// The decisions check mode has compared with the bit-exact path on this thread: DOP tests
+/// and triangle-pair tests (tests read it to see that check mode is on and covers every test).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Checked {
+    pub dop_tests: u64,
+    pub tri_tests: u64,
+}
+
+thread_local! {
+    static CHECKED: Cell<Checked> = const { Cell::new(Checked { dop_tests: 0, tri_tests: 0 }) };
+}
+
+/// The decisions compared on this thread so far.
+pub fn checked() -> Checked {
+    CHECKED.get()
+}
+
+/// Counts one compared decision (`tri`: a triangle pair's, else a DOP test's).
+pub(crate) fn count_checked(tri: bool) {
+    let mut c = CHECKED.get();
+    if tri {
+        c.tri_tests += 1;
+    } else {
+        c.dop_tests += 1;
+    }
+    CHECKED.set(c);
+}
+
+/// For the unit tests of check mode's comparisons (`dop_unit`, `tri_unit`).
+#[cfg(test)]
+pub(crate) mod check_tests {
+    use crate::chip::config::ChipConfig;
+    use crate::golden::host::HostSetup;
+    use crate::golden::memory::ObjectImage;
+
+    /// Two 6-triangle soups' images on the default chip, and B's setup under a rotation.
+    pub struct Small {
+        pub cfg: ChipConfig,
+        pub a: ObjectImage,
+        pub b: ObjectImage,
+        pub setup: HostSetup,
+    }
+
+    pub fn small_chip() -> Small {
+        let cfg = ChipConfig::default();
+        let image = |seed| ObjectImage::build(crate::mesh::soup(6, seed).triangles_f64(), &cfg);
+        let (a, b) = (image(1), image(2));
+        let setup = HostSetup::new(&cfg, &crate::pose::Pose::new(10.0, 20.0, 30.0, 0.0, 0.0, 0.0), b.tree.coord_bound(), a.tri_side(&b));
+        Small { cfg, a, b, setup }
+    }
+
+    /// `compare` panics with a check-mode message.
+    pub fn fires(compare: impl FnOnce()) {
+        let msg = std::panic::catch_unwind(std::panic::AssertUnwindSafe(compare)).expect_err("a wrong answer must panic");
+        assert!(msg.downcast_ref::<String>().is_some_and(|m| m.contains("check mode")), "{msg:?}");
+    }
 }

@@ -2,7 +2,7 @@
 //! U(A), combined in Kleene logic into intersecting, separate or uncertain.
 
 use super::certificate::Certificate;
-use super::enclosure::{checking, Upper};
+use super::enclosure::{checking, count_checked, Upper};
 use super::host::{Affine, HostSetup};
 use super::memory::TriWord;
 use super::tcheck::{decide, edges, edges_in, mag_lo, or3, settle, stage1, stage1_hi, Decision, Maybe, Stage1, Stage1Hi, VertexHi};
@@ -217,5 +217,38 @@ impl<'a> TriUnit<'a> {
             assert!(sets[k].holds(want[k]), "check mode: T.CHECK's enclosure gave {:?}, the bit-exact path {:?}: leaf {leaf:?}, triangle {v:?}, {}", sets[k], want[k], if ab { "M_AB" } else { "M_BA" });
         }
         assert_eq!(result, or3(want.into_iter()), "check mode: TRI_UNIT's verdict");
+        count_checked(true);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::golden::enclosure::check_tests::{fires, small_chip};
+    use crate::golden::enclosure::checked;
+
+    /// Check mode's comparison itself: the bit-exact verdict passes and is counted; a
+    /// direction's set without it, or a wrong result, panics.
+    #[test]
+    fn check_mode_compares_each_direction_and_the_verdict() {
+        let chip = small_chip();
+        let setup = &chip.setup;
+        let (f, r) = (chip.cfg.format.tri, chip.cfg.tri_rounding);
+        let (a, b) = (chip.a.tri(0), chip.b.tri(0));
+        let mut unit = TriUnit::new(f, r, setup, chip.a.tri_count(), chip.b.tri_count());
+        let dirs = [(0, &b, &a, true), (0, &a, &b, false)];
+        let exact = |u: &mut TriUnit, k: usize| {
+            let (t, leaf, v, ab) = dirs[k];
+            u.narrow(Try::BitExact, t, leaf, v, ab, None).single().unwrap()
+        };
+        let want = [exact(&mut unit, 0), exact(&mut unit, 1)];
+        let verdict = or3(want.into_iter());
+        assert_eq!(TriResult::verdict(verdict), tri_unit(f, r, &a, &b, setup));
+        let before = checked().tri_tests;
+        unit.check(dirs, [Maybe::ANY; 2], verdict);
+        assert_eq!(checked().tri_tests, before + 1);
+        let not = |v: Option<bool>| Some(v != Some(true));
+        fires(|| unit.check(dirs, [Maybe::of(not(want[0])), Maybe::ANY], verdict));
+        fires(|| unit.check(dirs, [Maybe::ANY; 2], not(verdict)));
     }
 }

@@ -57,7 +57,9 @@ pub const W: usize = ENTRY_BITS as usize;
 /// its parity one edge later, when a pop may need it; when the same edge writes that
 /// address, the RAM returns the old word and the written word is taken from a bypass
 /// register (`byp`, `byp_data`) instead. So pops and pushes run back to back at one pop
-/// and two pushes per clock, in any mix, with no stall.
+/// and two pushes per clock, in any mix, with no stall. The pop arrives last (D_CNTR's
+/// decision): the read address, bypass and count after the edge are selected among values
+/// made from the registers alone, and `count != 0` is a register (`nonempty`) of its own.
 #[derive(LogicBlock)]
 pub struct PairQueue<const N: usize, const NP1: usize, const NM1: usize> {
     pub clock: Signal<In, Clock>,
@@ -75,6 +77,7 @@ pub struct PairQueue<const N: usize, const NP1: usize, const NM1: usize> {
     pub overflow: Signal<Out, Bit>,
     pub top_data: Signal<Out, Bits<W>>,
     c_cap: Constant<Bits<NP1>>,
+    c_last: Constant<Bits<N>>,
     // state
     cnt: DFF<Bits<NP1>>,
     top_r: DFF<Bits<W>>,
@@ -89,10 +92,16 @@ pub struct PairQueue<const N: usize, const NP1: usize, const NM1: usize> {
     bank0: RAM<Bits<W>, NM1>,
     bank1: RAM<Bits<W>, NM1>,
     // this cycle
-    nonempty: Signal<Local, Bit>,
+    // count != 0, a register of its own: it decides the pop, which arrives last
+    nonempty: DFF<Bit>,
     many: Signal<Local, Bit>,
     do_pop: Signal<Local, Bit>,
-    c0: Signal<Local, Bits<NP1>>,
+    nfull: Signal<Local, Bit>,
+    spare: Signal<Local, Bit>,
+    c0_zero: Signal<Local, Bit>,
+    cnt_m1: Signal<Local, Bits<NP1>>,
+    cnt_p1: Signal<Local, Bits<NP1>>,
+    cnt_p2: Signal<Local, Bits<NP1>>,
     e1: Signal<Local, Bits<W>>,
     any: Signal<Local, Bit>,
     two: Signal<Local, Bit>,
@@ -103,6 +112,12 @@ pub struct PairQueue<const N: usize, const NP1: usize, const NM1: usize> {
     rd_n: Signal<Local, Bits<N>>,
     wr_n: Signal<Local, Bits<N>>,
     wr1: Signal<Local, Bits<N>>,
+    wr_m1: Signal<Local, Bits<N>>,
+    wr_m2: Signal<Local, Bits<N>>,
+    rd1: Signal<Local, Bits<N>>,
+    pick: Signal<Local, Bit>,
+    hit_a: Signal<Local, Bit>,
+    hit_b: Signal<Local, Bit>,
     raddr: Signal<Local, Bits<N>>,
     we_a: Signal<Local, Bit>,
     we_b: Signal<Local, Bit>,
@@ -132,6 +147,7 @@ impl<const N: usize, const NP1: usize, const NM1: usize> Default for PairQueue<N
             overflow: Default::default(),
             top_data: Default::default(),
             c_cap: Constant::new((1u64 << N).into()),
+            c_last: Constant::new(((1u64 << N) - 1).into()),
             cnt: Default::default(),
             top_r: Default::default(),
             rd_ptr: Default::default(),
@@ -147,7 +163,12 @@ impl<const N: usize, const NP1: usize, const NM1: usize> Default for PairQueue<N
             nonempty: Default::default(),
             many: Default::default(),
             do_pop: Default::default(),
-            c0: Default::default(),
+            nfull: Default::default(),
+            spare: Default::default(),
+            c0_zero: Default::default(),
+            cnt_m1: Default::default(),
+            cnt_p1: Default::default(),
+            cnt_p2: Default::default(),
             e1: Default::default(),
             any: Default::default(),
             two: Default::default(),
@@ -158,6 +179,12 @@ impl<const N: usize, const NP1: usize, const NM1: usize> Default for PairQueue<N
             rd_n: Default::default(),
             wr_n: Default::default(),
             wr1: Default::default(),
+            wr_m1: Default::default(),
+            wr_m2: Default::default(),
+            rd1: Default::default(),
+            pick: Default::default(),
+            hit_a: Default::default(),
+            hit_b: Default::default(),
             raddr: Default::default(),
             we_a: Default::default(),
             we_b: Default::default(),
@@ -176,23 +203,32 @@ impl<const N: usize, const NP1: usize, const NM1: usize> Logic for PairQueue<N, 
     #[hdl_gen]
     fn update(&mut self) {
         // every register holds unless assigned below
-        dff_setup!(self, clock, cnt, top_r, rd_ptr, wr_ptr, byp, byp_data, rsel, order_lifo, max_r, ovf_r);
+        dff_setup!(self, clock, cnt, nonempty, top_r, rd_ptr, wr_ptr, byp, byp_data, rsel, order_lifo, max_r, ovf_r);
         self.bank0.read_clock.next = self.clock.val();
         self.bank0.write_clock.next = self.clock.val();
         self.bank1.read_clock.next = self.clock.val();
         self.bank1.write_clock.next = self.clock.val();
         // ---- outputs: registers only
-        self.empty.next = self.cnt.q.val() == 0;
+        self.empty.next = !self.nonempty.q.val();
         self.full.next = self.cnt.q.val() == self.c_cap.val();
         self.count.next = self.cnt.q.val();
         self.max_count.next = self.max_r.q.val();
         self.overflow.next = self.ovf_r.q.val();
         self.top_data.next = self.top_r.q.val();
         // ---- this cycle's operation: the pop, then up to two pushes (e1, then push2_data)
-        self.nonempty.next = self.cnt.q.val() != 0;
         self.many.next = self.cnt.q.val() > 1; // the RAM holds the next entry
-        self.do_pop.next = self.pop.val() & self.nonempty.val();
-        self.c0.next = self.cnt.q.val() - bit_cast::<NP1, 1>(self.do_pop.val().into());
+        self.do_pop.next = self.pop.val() & self.nonempty.q.val();
+        // Everything below that the pop and pushes decide is selected among values made
+        // from the registers alone (counts, pointers, their comparisons), so that the pop,
+        // which arrives last, passes through a few multiplexers only: the queue's read
+        // address was on the path that set the chip's clock.
+        self.nfull.next = self.cnt.q.val() != self.c_cap.val();
+        self.cnt_m1.next = self.cnt.q.val() - 1;
+        self.cnt_p1.next = self.cnt.q.val() + 1;
+        self.cnt_p2.next = self.cnt.q.val() + 2;
+        self.spare.next = self.cnt_p1.val() < self.c_cap.val(); // room for two, if no pop
+        // the count after the pop is 0 (into an empty queue, or one the pop empties)
+        self.c0_zero.next = !self.nonempty.q.val() | (self.do_pop.val() & !self.many.val());
         self.e1.next = self.push2_data.val();
         if self.push.val() {
             self.e1.next = self.push_data.val();
@@ -200,8 +236,8 @@ impl<const N: usize, const NP1: usize, const NM1: usize> Logic for PairQueue<N, 
         self.any.next = self.push.val() | self.push2.val();
         self.two.next = self.push.val() & self.push2.val();
         // stored: the first push if the popped queue has room, the second if it has two
-        self.s1.next = self.any.val() & (self.c0.val() != self.c_cap.val());
-        self.s2.next = self.two.val() & (self.c0.val() + 1 < self.c_cap.val());
+        self.s1.next = self.any.val() & (self.do_pop.val() | self.nfull.val());
+        self.s2.next = self.two.val() & ((self.do_pop.val() & self.nfull.val()) | self.spare.val());
         // the entry after the top: the RAM's registered read (the bank of its parity), or
         // the word written at the edge that read it
         self.next_entry.next = self.bank0.read_data.val();
@@ -211,7 +247,23 @@ impl<const N: usize, const NP1: usize, const NM1: usize> Logic for PairQueue<N, 
         if self.byp.q.val() {
             self.next_entry.next = self.byp_data.q.val();
         }
-        self.cnt_n.next = self.c0.val() + bit_cast::<NP1, 1>(self.s1.val().into()) + bit_cast::<NP1, 1>(self.s2.val().into());
+        // the count after the edge: the pop's -1, the stored pushes' +1 each
+        self.cnt_n.next = self.cnt.q.val();
+        if self.do_pop.val() {
+            if !self.s1.val() {
+                self.cnt_n.next = self.cnt_m1.val();
+            }
+            if self.s2.val() {
+                self.cnt_n.next = self.cnt_p1.val();
+            }
+        } else {
+            if self.s1.val() {
+                self.cnt_n.next = self.cnt_p1.val();
+            }
+            if self.s2.val() {
+                self.cnt_n.next = self.cnt_p2.val();
+            }
+        }
         self.rd_n.next = self.rd_ptr.q.val();
         self.wr_n.next = self.wr_ptr.q.val();
         self.wr1.next = self.wr_ptr.q.val() + 1;
@@ -243,7 +295,7 @@ impl<const N: usize, const NP1: usize, const NM1: usize> Logic for PairQueue<N, 
             } else {
                 if self.s1.val() {
                     self.top_r.d.next = self.e1.val();
-                    if self.nonempty.val() {
+                    if self.nonempty.q.val() {
                         // the old top goes down into the RAM
                         self.we_a.next = true;
                         self.wdata_a.next = self.top_r.q.val();
@@ -254,7 +306,7 @@ impl<const N: usize, const NP1: usize, const NM1: usize> Logic for PairQueue<N, 
                     self.top_r.d.next = self.push2_data.val();
                     self.we_a.next = true;
                     self.wr_n.next = self.wr_ptr.q.val() + 1;
-                    if self.nonempty.val() {
+                    if self.nonempty.q.val() {
                         // the old top at wr_ptr, e1 above it
                         self.we_b.next = true;
                         self.wr_n.next = self.wr_ptr.q.val() + 2;
@@ -270,7 +322,7 @@ impl<const N: usize, const NP1: usize, const NM1: usize> Logic for PairQueue<N, 
                     self.rd_n.next = self.rd_ptr.q.val() + 1;
                 }
             }
-            if self.c0.val() == 0 {
+            if self.c0_zero.val() {
                 // into an empty queue (or one the pop empties): the first becomes the head
                 if self.s1.val() {
                     self.top_r.d.next = self.e1.val();
@@ -292,6 +344,7 @@ impl<const N: usize, const NP1: usize, const NM1: usize> Logic for PairQueue<N, 
             }
         }
         self.cnt.d.next = self.cnt_n.val();
+        self.nonempty.d.next = self.cnt_n.val() != 0;
         if self.cnt_n.val() > self.max_r.q.val() {
             self.max_r.d.next = self.cnt_n.val();
         }
@@ -300,6 +353,7 @@ impl<const N: usize, const NP1: usize, const NM1: usize> Logic for PairQueue<N, 
         }
         if self.clear.val() {
             self.cnt.d.next = 0.into();
+            self.nonempty.d.next = false;
             self.top_r.d.next = 0.into();
             self.rd_n.next = 0.into();
             self.wr_n.next = 0.into();
@@ -312,10 +366,43 @@ impl<const N: usize, const NP1: usize, const NM1: usize> Logic for PairQueue<N, 
         self.rd_ptr.d.next = self.rd_n.val();
         self.wr_ptr.d.next = self.wr_n.val();
         // ---- RAM: port A at wr_ptr, port B at wr_ptr + 1, each in the bank
-        // of its parity; read the next entry of the state after this edge from both banks
-        self.raddr.next = self.rd_n.val();
-        if self.order_lifo.d.val() {
-            self.raddr.next = self.wr_n.val() - 1;
+        // of its parity; read the next entry of the state after this edge from both banks:
+        // FIFO rd_n, LIFO wr_n - 1 (after a clear: 0, or 2^N - 1), as the cases above move
+        // them, from addresses made from the registers alone
+        self.rd1.next = self.rd_ptr.q.val() + 1;
+        self.wr_m1.next = self.wr_ptr.q.val() - 1;
+        self.wr_m2.next = self.wr_ptr.q.val() - 2;
+        self.pick.next = self.do_pop.val() & self.many.val(); // FIFO: rd_n = rd_ptr + 1
+        self.raddr.next = self.rd_ptr.q.val();
+        if self.pick.val() {
+            self.raddr.next = self.rd1.val();
+        }
+        if self.order_lifo.q.val() {
+            self.raddr.next = self.wr_m1.val();
+            if self.do_pop.val() {
+                if !self.s1.val() & self.many.val() {
+                    self.raddr.next = self.wr_m2.val();
+                }
+                if self.s2.val() {
+                    self.raddr.next = self.wr_ptr.q.val();
+                }
+            } else {
+                if self.s1.val() & self.nonempty.q.val() {
+                    self.raddr.next = self.wr_ptr.q.val();
+                }
+                if self.s2.val() {
+                    self.raddr.next = self.wr_ptr.q.val();
+                    if self.nonempty.q.val() {
+                        self.raddr.next = self.wr1.val();
+                    }
+                }
+            }
+        }
+        if self.clear.val() {
+            self.raddr.next = 0.into();
+            if self.lifo.val() {
+                self.raddr.next = self.c_last.val();
+            }
         }
         self.bank0.write_enable.next = (self.we_a.val() & !self.wr_ptr.q.val().get_bit(0))
             | (self.we_b.val() & self.wr_ptr.q.val().get_bit(0));
@@ -335,10 +422,22 @@ impl<const N: usize, const NP1: usize, const NM1: usize> Logic for PairQueue<N, 
         self.bank0.read_address.next = self.raddr.val().get_bits::<NM1>(1);
         self.bank1.read_address.next = self.raddr.val().get_bits::<NM1>(1);
         self.rsel.d.next = self.raddr.val().get_bit(0);
-        self.byp.d.next = (self.we_a.val() & (self.raddr.val() == self.wr_ptr.q.val()))
-            | (self.we_b.val() & (self.raddr.val() == self.wr1.val()));
+        // the bypass: this edge writes the word read (port A: raddr = wr_ptr, B: wr_ptr + 1).
+        // LIFO reads the word port A writes whenever it writes (B only with A: then B's);
+        // FIFO compares rd_n, rd_ptr or rd_ptr + 1, with both write addresses
+        self.hit_a.next = self.rd_ptr.q.val() == self.wr_ptr.q.val();
+        self.hit_b.next = self.rd_ptr.q.val() == self.wr1.val();
+        if self.pick.val() {
+            self.hit_a.next = self.rd1.val() == self.wr_ptr.q.val();
+            self.hit_b.next = self.rd_ptr.q.val() == self.wr_ptr.q.val();
+        }
+        if self.order_lifo.q.val() {
+            self.hit_a.next = true;
+            self.hit_b.next = true;
+        }
+        self.byp.d.next = (self.we_a.val() & self.hit_a.val()) | (self.we_b.val() & self.hit_b.val());
         self.byp_data.d.next = self.wdata_a.val();
-        if self.we_b.val() & (self.raddr.val() == self.wr1.val()) {
+        if self.we_b.val() & self.hit_b.val() {
             self.byp_data.d.next = self.wdata_b.val();
         }
     }
@@ -735,9 +834,10 @@ impl<const N: usize, const NP1: usize, const NM1: usize> Logic for DCntr<N, NP1,
         // in LIFO order not while a child entry is pushed, so that the children are on top
         // when popped, the first child first (depth first as far as the DOP pipeline allows)
         self.child_push.next = self.pend_r.q.val() | (self.r_hit.val() & !(self.r_a_leaf.val() & self.r_b_leaf.val()));
-        // ... while the pair buffer, once this clock's issue has left, holds at most `pf`
-        // pairs (0: the entry is popped as its last pair issues)
-        self.room.next = (self.ahd_pairs.q.val() - bit_cast::<5, 1>(self.issue.val().into())) <= self.pf.val();
+        // ... while the pair buffer holds at most `pf` pairs (0: empty), counted before this
+        // clock's issue, so that the issue's logic is not on the path into the queue's read
+        // address (it set the chip's clock)
+        self.room.next = self.ahd_pairs.q.val() <= self.pf.val();
         self.pop.next = self.go.val() & !self.queue.empty.val() & self.room.val()
             & !(self.lifo.val() & self.child_push.val());
         self.queue.pop.next = self.pop.val();

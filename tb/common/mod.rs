@@ -104,7 +104,14 @@ pub fn run_traced<U: Pipelined>(uut: &mut U, ops: &[U::In], mut after_edge: impl
     outs
 }
 
-/// [`run`] with a VCD of every signal, written to `target/rtl-vcd/<name>.vcd` with the root
+/// The VCD file of run `name`: `target/rtl-vcd/<name>.vcd`.
+pub fn vcd_path(name: &str) -> std::path::PathBuf {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("target").join("rtl-vcd");
+    std::fs::create_dir_all(&dir).unwrap();
+    dir.join(format!("{name}.vcd"))
+}
+
+/// [`run`] with a VCD of every signal, written to [`vcd_path`]`(name)` with the root
 /// scope named `root` (rust-hdl calls it `uut`), for GTKWave.
 pub fn run_vcd<U: Pipelined>(uut: &mut U, ops: &[U::In], name: &str, root: &str) -> Vec<U::Out> {
     use rust_hdl::prelude::{write_vcd_change, write_vcd_dump, write_vcd_header};
@@ -118,10 +125,40 @@ pub fn run_vcd<U: Pipelined>(uut: &mut U, ops: &[U::In], name: &str, root: &str)
         })
     };
     let text = String::from_utf8(buf).unwrap().replacen("$scope module uut $end", &format!("$scope module {root} $end"), 1);
-    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("target").join("rtl-vcd");
-    std::fs::create_dir_all(&dir).unwrap();
-    let path = dir.join(format!("{name}.vcd"));
+    let path = vcd_path(name);
     std::fs::write(&path, text).unwrap();
     println!("wrote {}", path.display());
     outs
+}
+
+/// The values of signal `data` of the VCD's scope `root` after every rising edge (the
+/// testbenches write a timestamp every half cycle: 0, 5, 10, ..., the edges at 5, 15, ...)
+/// at which its signal `valid` is 1: the outputs as a waveform viewer shows them.
+pub fn vcd_outputs(path: &std::path::Path, root: &str, valid: &str, data: &str) -> Vec<u64> {
+    use vcd::{Command, Value};
+    let mut p = vcd::Parser::new(std::io::BufReader::new(std::fs::File::open(path).unwrap()));
+    let header = p.parse_header().unwrap();
+    let code = |name: &str| header.find_var(&[root, name]).unwrap_or_else(|| panic!("{}: no signal {root}.{name}", path.display())).code;
+    let (v, d) = (code(valid), code(data));
+    let bits = |x: &[Value]| x.iter().fold(0u64, |a, b| a << 1 | (*b == Value::V1) as u64);
+    let (mut now, mut is_valid, mut value, mut out) = (None::<u64>, false, 0u64, vec![]);
+    let mut sample = |now: Option<u64>, is_valid: bool, value: u64| {
+        if is_valid && now.is_some_and(|t| t % 10 == 5) {
+            out.push(value);
+        }
+    };
+    for c in p {
+        match c.unwrap() {
+            Command::Timestamp(t) => {
+                sample(now, is_valid, value);
+                now = Some(t);
+            }
+            Command::ChangeScalar(c, x) if c == v => is_valid = x == Value::V1,
+            Command::ChangeScalar(c, x) if c == d => value = (x == Value::V1) as u64,
+            Command::ChangeVector(c, x) if c == d => value = bits(&x),
+            _ => {}
+        }
+    }
+    sample(now, is_valid, value);
+    out
 }
