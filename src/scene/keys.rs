@@ -120,7 +120,7 @@ pub(super) fn runnable(s: &Scene, w: &Written, text: &str) -> Result<(), String>
             (None, None) => None,
         };
         if let Some((at, what)) = wants {
-            return Err(format!("{at}: WSCG'03's chip ([chip] architecture = \"wscg03\") is an event model with no RTL and no probes, so it gives no {what}: drop it, or set architecture = \"date05\""));
+            return Err(format!("{at}: WSCG'03's chip (architecture wscg03) is an event model with no RTL and no probes, so it gives no {what}: drop it, or run DATE'05's chip ([chip] architecture = \"date05\", or --architecture date05)"));
         }
         return Ok(());
     }

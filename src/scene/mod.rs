@@ -235,7 +235,7 @@ fn clock(cfg: &ChipConfig, folds: Folds, preset: Preset, arch: Architecture, tec
     match (clock_mhz, technology) {
         (Some(_), Some(_)) => Err("[timing] give clock_mhz (an assumed clock) or technology (a period from a timing table, or the paper's), not both".into()),
         (Some(mhz), None) if !CLOCK_MHZ.contains(&mhz) => {
-            Err(format!("[timing] clock_mhz must be from {} to {} MHz, not {mhz}", CLOCK_MHZ.start(), CLOCK_MHZ.end()))
+            Err(format!("[timing] clock_mhz must be from {} to {} MHz, not {mhz:?}", CLOCK_MHZ.start(), CLOCK_MHZ.end()))
         }
         (Some(mhz), None) => Ok(Clock::assumed(mhz, format!("the scene's clock_mhz = {mhz}, assumed"))),
         (None, t) => Ok(Clock::of(t.unwrap_or_default(), cfg, folds, preset)?.for_architecture(arch)),
@@ -906,6 +906,8 @@ mod tests {
             let e = parse(&format!("[timing]\nclock_mhz = {bad}")).unwrap_err();
             assert!(e.contains("clock_mhz must be from 0.001 to 100000 MHz"), "{bad}: {e}");
         }
+        // the number as a user reads it, not 307 zeros
+        assert!(parse("[timing]\nclock_mhz = 1e-307").unwrap_err().ends_with("MHz, not 1e-307"));
         // a datapath with no measured unit and no wider format measured: no period to report
         let e = Scene::parse(&format!("{base}[chip]\nformat = \"e8m24\"").replace("[chip]\nk = 6\nformat = \"reduced\"\n", ""), "s").unwrap_err();
         assert!(e.contains("measures none of this configuration's DOP datapath's units (fp_mul_e8m24_ru") && e.contains("clock_mhz"), "{e}");
