@@ -382,19 +382,6 @@ mod tests {
         }
     }
 
-    /// The software's time is warm: six runs of one pose take about the same time, the
-    /// first too (timed once, the first took 6 to 100 times the others: its cold caches and
-    /// first allocations). The fastest of [`TIMING_RUNS`] also keeps other processes out.
-    #[test]
-    fn software_time_is_warm() {
-        let poses = "[[pose]]\nrot_deg = [10, 20, 30]\nt = [1.0, 0.1, 0]\n".repeat(6);
-        let s = Scene::parse(&format!("[objects]\na = \"sphere:200\"\nb = \"torus:160\"\n[outputs]\ncycles = true\n{poses}"), "t").unwrap();
-        let r = Prepared::new(&s, |spec| crate::mesh::resolve(spec).map_err(|e| e.to_string())).unwrap().run(|| ()).unwrap();
-        let us: Vec<f64> = r.records.iter().map(|r| r.cycles.as_ref().unwrap().software_us).collect();
-        let (lo, hi) = us.iter().fold((f64::INFINITY, 0f64), |(lo, hi), &x| (lo.min(x), hi.max(x)));
-        assert!(hi < 3.0 * lo, "{us:?}");
-    }
-
     #[test]
     fn explain_shows_what_each_scene_builds() {
         let explain = |o: &str| {
