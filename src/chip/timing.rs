@@ -1,6 +1,8 @@
-//! The chip's clock period per configuration (issue 32): measured, the slowest of the RTL
-//! units the configuration is built from, as the timing study (`scripts/timing-study.sh`)
-//! measured them; or the papers' clock, assumed. The study's tables are embedded, so the
+//! The chip's clock period per configuration, labelled ([`PeriodSource`]): measured, the
+//! row of the configuration's own RTL chip in the timing study's table
+//! (`scripts/timing-study.sh`); estimated, where that chip has no row, by the slowest of the
+//! RTL units the configuration is built from (a wider format's where its own is not built);
+//! or assumed, the papers' clock or a scene's `clock_mhz`. The study's tables are embedded, so the
 //! binary needs no file; they are read by column name (the study may add columns), and a unit
 //! without a row is "not measured", named beside the period.
 
@@ -238,7 +240,7 @@ fn cfg_tag(cfg: &ChipConfig) -> String {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "kebab-case")]
 pub enum PeriodSource {
-    /// The timing table's row of the configuration's own RTL chip (the slowest of its rows).
+    /// The timing table's row of the configuration's own RTL chip, the chip as built.
     Measured,
     /// The configuration's own chip has no row: measured rows stand in for it
     /// ([`Clock::estimate`] says which, and for what).
@@ -350,7 +352,7 @@ impl Clock {
         let missing = if self.not_measured.is_empty() { "none".into() } else { self.not_measured.join(", ") };
         let how = match &self.estimate {
             Some(e) => format!("estimated: {e}"),
-            None => format!("measured, slowest unit {}", self.slowest.as_deref().unwrap_or("-")),
+            None => format!("measured, the whole chip {}", self.slowest.as_deref().unwrap_or("-")),
         };
         format!("{head}: {how} ({what}, {}); units not measured: {missing}", self.table.unwrap_or("a timing table"))
     }

@@ -27,6 +27,8 @@
 //! layout = "words"            # or "records": sibling nodes in one record, records spread
 //!                             # over DDR banks (date05, wscg03); "words" the RTL chips'
 //! node_cache = 1              # node records held per object, LRU (date05, wscg03: 16)
+//!                             # (layout and node_cache: DATE'05's chip; WSCG'03's asks
+//!                             # for node words and holds no records, and refuses them)
 //!
 //! [query]                     # all optional
 //! mode = "all"                # or "first"
@@ -61,7 +63,10 @@
 //!                             # chip under Verilator (built once, cached under target/),
 //!                             # every port every clock; meshes of a few hundred triangles
 //!
-//! Only what the outputs need is built and run (`graph::Plan`; `cchip run --explain`).
+//! Only what the outputs need is built and run (`graph::Plan`; `cchip run --explain`). A key
+//! the configuration does not use is refused, naming its line and why (`keys`): [timing],
+//! [memory] and [stack_engine] where no output runs the chip, the other memory model's keys,
+//! and those marked above.
 //!
 //! [memory]                    # the memory model (optional; default: the ideal one)
 //! model = "ideal"             # or "ddr" (DDR SDRAM with banks and pages, chip::memory::Ddr);
@@ -74,16 +79,17 @@
 //! # banks = 4, page_bytes = 4096, bus_bits = 256, burst = 8, hit = 8, miss = 20
 //!
 //! [timing]                    # the cycle model's microarchitecture (optional; default:
-//! queue_entries = 1024        # the preset's; the RTL chip's are these values)
+//! queue_entries = 1024        # the preset's; the RTL chip's are these values); DATE'05's
+//!                             # chip: WSCG'03's refuses all but technology and clock_mhz
 //! dop_latency = 15
 //! dop_interval = 1            # clocks between the DOP unit's pairs: 1 (unfolded), or ii
-//!                             # dividing k: k/ii lanes in ii passes, latency 14 + ii (no
-//!                             # dop_latency then)
+//!                             # dividing k: k/ii lanes in ii passes, latency 14 + ii
+//!                             # (dop_latency refused then)
 //! tri_latency = 54
 //! tri_fifo = 256
 //! tri_interval = 1            # clocks between TRI_UNIT's pairs: 1 (unfolded), or 2, 4, .. 32
 //!                             # (even): the folded TRI_UNIT, its latency its schedule's
-//!                             # (no tri_latency then); cross_check only on a pair
+//!                             # (tri_latency refused then); cross_check only on a pair
 //!                             # (dop_interval, tri_interval) an RTL chip has: (1, 1),
 //!                             # (1, 16), (6, 32) (docs/ARCHITECTURE.md, chip list)
 //! issue_spacing = 2           # 1 or 2 clocks between DOP issues
@@ -91,14 +97,16 @@
 //! outstanding = 1             # memory requests in flight (1 to 64; the RTL chip 1 to 16)
 //! prefetch = 0                # node pairs whose words are fetched ahead (0 to 256; RTL 0 to 14)
 //! technology = "osu018"       # the chip's clock for its time per query: the configuration's
-//!                             # measured period, its slowest RTL unit in the timing study
-//!                             # (docs/figures/timing.csv, OSU 0.18 um; the default), or
+//!                             # RTL chip's period in the timing study (measured), else its
+//!                             # slowest unit's (estimated; docs/figures/timing.csv, OSU
+//!                             # 0.18 um; the default), or
 //!                             # "ecp5" (docs/figures/timing_ecp5.csv), or "paper" (the
 //!                             # preset's clock, assumed: DATE'05 800 MHz, WSCG'03 266 MHz);
 //!                             # `cchip run --technology` replaces it
-//! # clock_mhz = 800           # or an assumed clock instead of a technology
+//! # clock_mhz = 800           # or an assumed clock instead of a technology (0.001 to 1e5)
 //!
-//! [stack_engine]              # WSCG'03's chip (chip::wscg03::StackParams; default: these)
+//! [stack_engine]              # WSCG'03's chip (chip::wscg03::StackParams; default: these;
+//!                             # DATE'05's chip refuses them)
 //! sram_latency = 2            # list SRAM read to the Memory Controller
 //! dotadd_stages = 6           # a tumbled DOP is ready k + 6 clocks after its word
 //! data_bus_bits = 256         # an aligned DOP takes ceil(node bits / 256) clocks to compare
@@ -892,7 +900,7 @@ mod tests {
         let mhz = |t: &str| parse(t).unwrap().clock.unwrap().mhz();
         let m = parse("").unwrap();
         assert_eq!(m.clock, Some(Clock::of(Technology::Osu018, &m.cfg, Folds::NONE, Preset::Rtl).unwrap()));
-        assert!(m.configuration().contains("measured, slowest unit chip_e8m15_k6 (OSU 0.18 um, docs/figures/timing.csv)"), "{}", m.configuration());
+        assert!(m.configuration().contains("measured, the whole chip chip_e8m15_k6 (OSU 0.18 um, docs/figures/timing.csv)"), "{}", m.configuration());
         assert_eq!(mhz("[timing]\ntechnology = \"paper\""), 800.0);
         let e = parse("[timing]\ntechnology = \"paper\"\nclock_mhz = 3").unwrap_err();
         assert!(e.contains("not both"), "{e}");
