@@ -130,36 +130,41 @@ pub fn tri_unit(cfg: &ChipConfig, tri_interval: u32) -> String {
 }
 
 /// The RTL units a configuration is built from, by their names in `rtl/` and the timing
-/// tables: the DOP datapath's (FP multiplier and adder, DOPTRF lane, DOP unit of k lanes:
-/// DATE'05 Eq. 10) in the DOP format and rounding; T.CHECK's (its FP units, the certificate's
-/// scaler, T.CHECK, TRI_UNIT: §4.2) in T.CHECK's format and rounding, or the folded TRI_UNIT
-/// that takes a pair every `folds.tri` clocks (the DOP unit likewise, `folds.dop`); D_CNTR's pair queue (§4.3); and the whole
-/// chip where the RTL builds this configuration. A folded configuration also counts the
-/// unfolded chip: the glue the two share (D_CNTR, the memory port, the caches) bounds the
-/// folded chip's glue until the folded chip has a row of its own.
+/// tables ([`chains`], parts first), and the whole chip where the RTL builds this
+/// configuration. A folded configuration also counts the unfolded chip: the glue the two
+/// share (D_CNTR, the memory port, the caches) bounds the folded chip's glue until the folded
+/// chip has a row of its own.
 pub fn units(cfg: &ChipConfig, folds: Folds) -> Vec<String> {
     let mut u: Vec<String> = vec![];
-    for name in datapaths(cfg, folds).into_iter().flatten() {
+    for name in chains(cfg, folds).into_iter().flat_map(|c| c.into_iter().rev().flatten()) {
         if !u.contains(&name) {
             u.push(name);
         }
     }
-    u.push(rtl::PAIR_QUEUE_UNIT.to_string());
-    u.push(chip_name(cfg, Folds::NONE));
     if folds != Folds::NONE {
         u.push(chip_name(cfg, folds));
     }
     u
 }
 
-/// The units of the two datapaths of [`units`]: the DOP datapath's and T.CHECK's.
-fn datapaths(cfg: &ChipConfig, folds: Folds) -> [Vec<String>; 2] {
+/// `cfg`'s units as three chains of blocks, each block before its parts: the DOP datapath
+/// (the unfolded chip where the DOP unit is not folded; DOP unit of k lanes: DATE'05 Eq. 10; DOPTRF lane; FP multiplier and adder) in the DOP
+/// format and rounding, or the folded DOP unit that takes a pair every `folds.dop` clocks;
+/// T.CHECK's (the unfolded chip where TRI_UNIT is not folded; TRI_UNIT, or the folded one at `folds.tri`; T.CHECK; its FP units and the
+/// certificate's scaler: §4.2) in T.CHECK's format and rounding; the glue (the unfolded
+/// chip; D_CNTR's pair queue, §4.3). A block's row, where measured, stands for its parts: it
+/// maps them as it builds them, where a lone part's row only approximates that (a binary32
+/// DOPTRF lane alone 7.507 ns, the DOP unit of 24 of them 6.887).
+fn chains(cfg: &ChipConfig, folds: Folds) -> [Vec<Vec<String>>; 3] {
     let (d, dr) = (rtl::format_tag(cfg.format.dop), rtl::rounding_tag(cfg.dop_rounding.op()));
     let (t, tr) = (rtl::format_tag(cfg.format.tri), rtl::rounding_tag(cfg.tri_rounding));
-    let dop = vec![format!("fp_mul_{d}_{dr}"), format!("fp_add_{d}_{dr}"), format!("doptrf_{d}_{dr}"), dop_unit(cfg, folds.dop)];
-    let tcheck = (folds.tri == 1).then(|| format!("tcheck_{t}_{tr}"));
-    let tri = [format!("fp_mul_{t}_{tr}"), format!("fp_add_{t}_{tr}"), format!("fp_scale_{t}")].into_iter().chain(tcheck).chain([tri_unit(cfg, folds.tri)]).collect();
-    [dop, tri]
+    let chip = || vec![chip_name(cfg, Folds::NONE)];
+    let dop_parts = [vec![dop_unit(cfg, folds.dop)], vec![format!("doptrf_{d}_{dr}")], vec![format!("fp_mul_{d}_{dr}"), format!("fp_add_{d}_{dr}")]];
+    let dop = (folds.dop == 1).then(chip).into_iter().chain(dop_parts).collect();
+    let tcheck = (folds.tri == 1).then(|| vec![format!("tcheck_{t}_{tr}")]);
+    let tri_parts = vec![format!("fp_mul_{t}_{tr}"), format!("fp_add_{t}_{tr}"), format!("fp_scale_{t}")];
+    let tri = (folds.tri == 1).then(chip).into_iter().chain([vec![tri_unit(cfg, folds.tri)]]).chain(tcheck).chain([tri_parts]).collect();
+    [dop, tri, vec![chip(), vec![rtl::PAIR_QUEUE_UNIT.to_string()]]]
 }
 
 /// A folded unit's unfolded counterpart, whose period stands in for the folded unit's where
@@ -176,6 +181,25 @@ fn stand_in(cfg: &ChipConfig, folds: Folds, unit: &str) -> Option<String> {
     }
 }
 
+/// A chain's levels down to its first with a measured row (a folded unit's stand-in counts),
+/// each unit with its row: (the row's name, its period) or None.
+fn largest_measured(table: &Table, cfg: &ChipConfig, folds: Folds, chain: Vec<Vec<String>>) -> Vec<Vec<(String, Option<(String, f64)>)>> {
+    let row = |u: &String| {
+        let own = table.periods.get(u).map(|&ns| (u.clone(), ns));
+        own.or_else(|| stand_in(cfg, folds, u).and_then(|s| table.periods.get(&s).map(|&ns| (format!("{s} (for {u})"), ns))))
+    };
+    let mut levels = vec![];
+    for level in chain {
+        let rows: Vec<_> = level.into_iter().map(|u| { let r = row(&u); (u, r) }).collect();
+        let found = rows.iter().any(|(_, r)| r.is_some());
+        levels.push(rows);
+        if found {
+            break;
+        }
+    }
+    levels
+}
+
 /// The chip's name: the RTL's where it builds `cfg` with `folds`, else as `rtl_chips!`
 /// would name it.
 fn chip_name(cfg: &ChipConfig, folds: Folds) -> String {
@@ -187,12 +211,19 @@ fn chip_name(cfg: &ChipConfig, folds: Folds) -> String {
     }
 }
 
-/// The slowest of `cfg`'s units that `table` measured, the others named as not measured,
-/// and the formats that stood in: a datapath with no unit measured in its format takes the
-/// units of the narrowest measured format at least as wide (an upper bound of its own). Err:
-/// the datapath none of whose units is measured in any such format.
+/// `cfg`'s DOP datapath (`path` 0) or T.CHECK's (1), parts first: its chain's units
+/// ([`chains`]).
+fn datapath(cfg: &ChipConfig, folds: Folds, path: usize) -> Vec<String> {
+    chains(cfg, folds)[path].iter().rev().flatten().cloned().collect()
+}
+
+/// The slowest of its chains' largest measured blocks ([`largest_measured`]), the blocks
+/// above them named as not measured, and the formats that stood in: a datapath with no unit
+/// measured in its format takes the units of the narrowest measured format at least as wide
+/// (an upper bound of its own). Err: the datapath none of whose units is measured in any such
+/// format.
 fn slowest_unit(table: &Table, cfg: &ChipConfig, folds: Folds) -> Result<(String, f64, Vec<String>, Vec<String>), String> {
-    let has = |c: &ChipConfig, path: usize| datapaths(c, folds)[path].iter().any(|u| table.periods.contains_key(u) || stand_in(c, folds, u).is_some_and(|s| table.periods.contains_key(&s)));
+    let has = |c: &ChipConfig, path: usize| datapath(c, folds, path).iter().any(|u| table.periods.contains_key(u) || stand_in(c, folds, u).is_some_and(|s| table.periods.contains_key(&s)));
     let wider = |f: Format| MEASURED_FORMATS.into_iter().filter(move |w| w.exp_bits() >= f.exp_bits() && w.frac_bits() >= f.frac_bits());
     let mut run = *cfg;
     let mut widened = vec![];
@@ -203,19 +234,20 @@ fn slowest_unit(table: &Table, cfg: &ChipConfig, folds: Folds) -> Result<(String
         }
         let set = |c: &mut ChipConfig, f: Format| if path == 0 { c.format.dop = f } else { c.format.tri = f };
         let f = wider(own).find(|&f| has(&{ let mut c = run; set(&mut c, f); c }, path));
-        let f = f.ok_or_else(|| format!("{name}'s units ({})", datapaths(cfg, folds)[path].join(", ")))?;
+        let f = f.ok_or_else(|| format!("{name}'s units ({})", datapath(cfg, folds, path).join(", ")))?;
         set(&mut run, f);
         widened.push(format!("the {name} in {f} stands in for {own} (not built in RTL; a wider format)"));
     }
     let (mut slowest, mut not_measured) = (None::<(String, f64)>, vec![]);
-    for u in units(&run, folds) {
-        let own = table.periods.get(&u).map(|&ns| (u.clone(), ns));
-        if own.is_none() {
-            not_measured.push(u.clone());
-        }
-        let stood = || stand_in(&run, folds, &u).and_then(|s| table.periods.get(&s).map(|&ns| (format!("{s} (for {u})"), ns)));
-        if let Some((name, ns)) = own.or_else(stood) {
-            if slowest.as_ref().is_none_or(|s| ns > s.1) {
+    if folds != Folds::NONE {
+        not_measured.push(chip_name(cfg, folds));
+    }
+    for level in chains(&run, folds).into_iter().flat_map(|c| largest_measured(table, &run, folds, c)) {
+        for (u, row) in level {
+            if !table.periods.contains_key(&u) && !not_measured.contains(&u) {
+                not_measured.push(u);
+            }
+            if let Some((name, ns)) = row.filter(|r| slowest.as_ref().is_none_or(|s| r.1 > s.1)) {
                 slowest = Some((name, ns));
             }
         }
@@ -390,6 +422,11 @@ mod tests {
         // the FPGA table's `period_ns` where there is no `min_period_ns`: exact, its Fmax rounded
         let t = Table::parse("unit,fmax_mhz,period_ns\npair_queue_n4,23.1,43.214\ndop_unit_k6_e8m15_ru,30,33.3\ntri_unit_e8m15_rne,30,33.3\n", "t.csv").unwrap();
         assert_eq!(Clock::measured(&t, &cfg, Folds::NONE).unwrap().period_ns, 43.214);
+        // a block's row stands for its parts': the DOP unit's 6, not its lone lane's 7.5
+        let t = Table::parse("unit,min_period_ns\ndop_unit_k6_e8m15_ru,6\ndoptrf_e8m15_ru,7.5\ntri_unit_e8m15_rne,5\npair_queue_n4,1\n", "t").unwrap();
+        let c = Clock::measured(&t, &cfg, Folds::NONE).unwrap();
+        assert_eq!((c.period_ns, c.slowest.as_deref()), (6.0, Some("dop_unit_k6_e8m15_ru")));
+        assert!(!c.not_measured.iter().any(|u| u.ends_with("_ru") && (u.starts_with("doptrf") || u.starts_with("fp_"))), "{:?}", c.not_measured);
         // the whole chip, where measured, is the period, slower or faster than a lone unit
         // (the chip maps its units as it builds them): its control and the paths between
         // units count; its row makes the period measured
@@ -464,6 +501,9 @@ chip_e8m15_k6,8
         let c = Clock::measured(&t, &cfg, Folds { tri: 16, dop: 1 }).unwrap();
         assert_eq!((c.period_ns, c.slowest.as_deref(), c.source), (9.0, Some("tri_unit_fold16_e8m15_rne"), PeriodSource::Estimated));
         assert!(c.source().contains("chip_e8m15_k6_fold16 has no row"), "{}", c.source());
+        // the unfolded chip stands for the DOP datapath it shares, not a lone lane's row
+        let t = Table::parse("unit,min_period_ns\ntri_unit_fold16_e8m15_rne,9\nchip_e8m15_k6,8\ndoptrf_e8m15_ru,30\n", "t").unwrap();
+        assert_eq!(Clock::measured(&t, &cfg, Folds { tri: 16, dop: 1 }).unwrap().period_ns, 9.0);
         assert!(c.not_measured.contains(&"chip_e8m15_k6_fold16".to_string()), "{:?}", c.not_measured);
         // the folded unit not measured: the unfolded one's period stands in, a lower bound
         let t = Table::parse("unit,min_period_ns\ndop_unit_k6_e8m15_ru,5\ntri_unit_e8m15_rne,20\nchip_e8m15_k6,8\n", "t").unwrap();
