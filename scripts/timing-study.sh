@@ -11,8 +11,10 @@
 #          -script ABC_SCRIPT (Yosys's default mapping, then ABC's `buffer -p; upsize; dnsize`);
 #          opt_clean; stat -liberty LIB (cells, area in um^2); write_verilog -noattr
 #   fanout: scripts/verilog/fanout.py puts a BUFX4 tree on every net with more than FANOUT
-#          (16) cell loads (register outputs, which ABC does not buffer); its buffers are in
-#          the netlist STA times, not in `cells`/`area_um2` (at most 2.3% more cells: fp_mul_b32)
+#          (16) loads (register outputs, which ABC does not buffer); a sub-module's input port
+#          counts the loads it drives inside (at most FANOUT), so nets that cross module
+#          boundaries are repaired in a hierarchical netlist too; its buffers are in the
+#          netlist STA times, not in `cells`/`area_um2` (at most 2.3% more cells: fp_mul_b32)
 #   hier:  as scripts/synth.sh, every module that instantiates others is kept
 #          (`setattr -mod -set keep_hierarchy 1 t:* t:$* %d %m`), so each distinct one (the
 #          DOPTRF lane, an FP adder, T.CHECK, ...) is mapped by ABC once, however often it is
@@ -22,8 +24,8 @@
 #          module boundaries. Above FLATTEN_MAX cells (default 650000; the k = 24 DOP unit's
 #          620k took Yosys 4 GB and 11 minutes) OpenSTA links the hierarchical netlist instead
 #          (`link_design top`, flow `hier`): every path is still timed, across boundaries too,
-#          but a net that leaves its module is not repaired (its driver sees all the loads in
-#          the modules it feeds). ABC does not optimize across a kept boundary.
+#          and fanout.py repairs a net that leaves its module in the module that drives it.
+#          ABC does not optimize across a kept boundary.
 #   bbox:  (--bbox) a chip timed as its glue around black boxes, for the k = 24 chips (3.3-3.6 M
 #          cells) that the hier flow cannot synthesize in the machine's budget.
 #          scripts/verilog/bbox.py walks the chip's instance tree from `top`; a module becomes a
@@ -204,7 +206,7 @@ for f in ${FILES[@]+"${FILES[@]}"}; do
   # hier: the mapped modules flattened into one netlist (no re-mapping), so that the fanout
   # repair below sees the nets that cross module boundaries too
   # (Yosys needs about 6.5 KB per cell for this: up to FLATTEN_MAX cells; a larger unit is timed
-  # hierarchical, flow `hier`, where a net that leaves its module is not repaired)
+  # hierarchical, flow `hier`)
   mapped=$w/netlist_raw.v
   cells=$(grep -E 'Number of cells:' "$w/stat.txt" | tail -n 1 | tr -dc 0-9)
   if [ $flow != flat ] && [ "$cells" -le "$FLATTEN_MAX" ]; then

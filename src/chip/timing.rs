@@ -131,9 +131,8 @@ pub fn tri_unit(cfg: &ChipConfig, tri_interval: u32) -> String {
 /// scaler, T.CHECK, TRI_UNIT: §4.2) in T.CHECK's format and rounding, or the folded TRI_UNIT
 /// that takes a pair every `folds.tri` clocks (the DOP unit likewise, `folds.dop`); D_CNTR's pair queue (§4.3); and the whole
 /// chip where the RTL builds this configuration. A folded configuration also counts the
-/// unfolded chip: its slowest path is in the glue the two share (D_CNTR's look-ahead into
-/// the pair queue, docs/figures/timing_config.csv), so it bounds the folded chip's glue until
-/// the folded chip has a row of its own.
+/// unfolded chip: the glue the two share (D_CNTR, the memory port, the caches) bounds the
+/// folded chip's glue until the folded chip has a row of its own.
 pub fn units(cfg: &ChipConfig, folds: Folds) -> Vec<String> {
     let tri_interval = folds.tri;
     let (d, dr) = (rtl::format_tag(cfg.format.dop), rtl::rounding_tag(cfg.dop_rounding.op()));
@@ -223,8 +222,15 @@ impl Clock {
         Ok(c)
     }
 
-    /// The slowest of `cfg`'s units that `table` measured, the others named as not measured.
+    /// The configuration's chip's period where `table` measured that chip (its units as it
+    /// builds them, the control and the paths between them: the chip as built, whose units a
+    /// lone unit's row only approximates, as the flow maps it apart); else the slowest of
+    /// `cfg`'s units that `table` measured, the others named as not measured.
     pub fn measured(table: &Table, cfg: &ChipConfig, folds: Folds) -> Option<Clock> {
+        let chip = chip_name(cfg, folds);
+        if let Some(&ns) = table.periods.get(&chip) {
+            return Some(Clock { period_ns: ns, technology: None, table: None, slowest: Some(chip), not_measured: vec![], assumed: None });
+        }
         let (mut slowest, mut not_measured) = (None::<(String, f64)>, vec![]);
         for u in units(cfg, folds) {
             let own = table.periods.get(&u).map(|&ns| (u.clone(), ns));
@@ -290,10 +296,14 @@ mod tests {
         let t = Table::parse("unit,fmax_mhz,period_ns\npair_queue_n4,23.1,43.214\n", "t.csv").unwrap();
         assert_eq!(Clock::measured(&t, &cfg, Folds::NONE).unwrap().period_ns, 43.214);
         assert!(Clock::measured(&Table::parse("unit,min_period_ns\nfp_mul_b32_ru,3\n", "t").unwrap(), &cfg, Folds::NONE).is_none());
-        // the whole chip, where measured, is one of its units: its control and the paths
-        // between units count
-        let t = Table::parse("unit,min_period_ns\nfp_add_e8m15_rne,8\nchip_e8m15_k6,9\n", "t").unwrap();
-        assert_eq!(Clock::measured(&t, &cfg, Folds::NONE).unwrap().slowest.as_deref(), Some("chip_e8m15_k6"));
+        // the whole chip, where measured, is the period, slower or faster than a lone unit
+        // (the chip maps its units as it builds them): its control and the paths between
+        // units count
+        for chip_ns in [9.0, 7.0] {
+            let t = Table::parse(&format!("unit,min_period_ns\nfp_add_e8m15_rne,8\nchip_e8m15_k6,{chip_ns}\n"), "t").unwrap();
+            let c = Clock::measured(&t, &cfg, Folds::NONE).unwrap();
+            assert_eq!((c.period_ns, c.slowest.as_deref()), (chip_ns, Some("chip_e8m15_k6")));
+        }
     }
 
     #[test]
