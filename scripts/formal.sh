@@ -50,9 +50,7 @@ PROOFS=(
   "result_port.port|result_port.sv|rtl/chip_e8m15_k6.v|PORT|ind|2/20|open = taken - given (<= 511), give = offered and out_ready, a kept (hit/uncertain) result leaves exactly when the host reads it, shown with its tag and uncertain bit while offered, back-pressure on TRI_UNIT while the host is not ready, a separate result leaves at once unseen, sure_hit"
   "result_port.cover|result_port.sv|rtl/chip_e8m15_k6.v|COVER|cover|8|reachable: back-pressure for two edges, a take and a give at one edge, 3 pairs open, a separate result passing while the host is not ready, an uncertain result read"
   "mem_port.count|mem_port.sv|rtl/chip_e8m15_k6.v|COUNT|ind|2/20|accept = mem_req_valid && mem_req_ready; outstanding (tag_n) = accepted - answered, <= port_out + 1 and <= 16; outstanding flag; accept only with <= port_out outstanding; resp only while one is outstanding (spurious memory responses ignored), and always then"
-  "mem_port.order|mem_port.sv|rtl/chip_e8m15_k6.v|ORDER|ind|1/10|each response routed (resp_dst) to the destination of the oldest unanswered accepted request (a FIFO model in the wrapper, which the tag ring holds); at most one triangle word outstanding per triangle destination, its pending flag set exactly then"
-  "mem_port.words|mem_port.sv|rtl/chip_e8m15_k6.v|WORDS|ind|1/10|node-word FIFOs wa, wb: hold the words answered and not yet taken, at most 16 (D_CNTR's rules), empty flags exact; a tracked word (either side, any value) is the DOP unit's word at the issue that takes it, in answer order, and of the later pairs that share it"
-  "mem_port.ask|mem_port.sv|rtl/chip_e8m15_k6.v|ASK|ind|1/10|ask list: a tracked fetched word of a pop (A0 B0 A1 B1) requested once, in pop order, with its side and record address (map 0), at prefetch 0 only for the current pair, offered whenever at the head and allowed; at most 32 words, no request from an empty list"
+  "mem_port.order|mem_port.sv|rtl/chip_e8m15_k6.v|ORDER|ind|1/4|each response routed (resp_dst) to the destination of the oldest unanswered accepted request (a FIFO model in the wrapper, which the tag ring holds); at most one triangle word outstanding per triangle destination, its pending flag set exactly then"
   "mem_port.cover|mem_port.sv|rtl/chip_e8m15_k6.v|COVER|cover|20|reachable: 16 outstanding, a request and a response at one edge, a spurious memory response ignored, responses to all four destinations"
   "tri_cache.cache|tri_cache.sv|rtl/chip_e8m15_k6.v|CACHE|bmc|5|tracked (any-constant) triangle id, any stale RAM contents, any mask: a hit only after its fill since the last clear, a hit returns its last fill's word (also through the bypass of a fill into the line being read), found while its line holds it"
   "tri_cache.cover|tri_cache.sv|rtl/chip_e8m15_k6.v|COVER|cover|8|reachable: a hit through the bypass, a hit from the RAM, a miss after another id took the line, a miss after a clear, the highest line"
@@ -76,6 +74,8 @@ MUTANTS=(
   "mem_credit_off_by_one|mem_port.count|rtl/chip_e8m15_k6.v|s/port_free = tag_n\$q <= ((port_out) \& 5'h1f);/port_free = tag_n\$q <= ((port_out) \& 5'h1f) + 5'h1;/"
   "mem_resp_unguarded|mem_port.count|rtl/chip_e8m15_k6.v|s/resp = mem_resp_valid \& (tag_n\$q != 32'h0);/resp = mem_resp_valid;/"
   "mem_tag_head_stuck|mem_port.order|rtl/chip_e8m15_k6.v|s/tag_head\$d = tag_head\$q + 32'h1;/tag_head\$d = tag_head\$q;/"
+  "mem_tag_written_at_head|mem_port.order|rtl/chip_e8m15_k6.v|s/tags\$wsel = c_one16 << tag_tail\$q;/tags\$wsel = c_one16 << tag_head\$q;/"
+  "mem_ta_pend_not_cleared|mem_port.order|rtl/chip_e8m15_k6.v|s/ta_pend\$d = 1'b0;/ta_pend\$d = ta_pend\$q;/"
   "cache_no_bypass|tri_cache.cache|rtl/chip_e8m15_k6.v|s/byp\$d = fill \& (fill_line == next_line);/byp\$d = 1'b0;/"
   "cache_valid_not_cleared|tri_cache.cache|rtl/chip_e8m15_k6.v|/if (clear) begin/,/end/s/valid\$d = 32'h0;/valid\$d = valid\$q;/"
   "cache_hit_ignores_id|tri_cache.cache|rtl/chip_e8m15_k6.v|s/hit = ((valid\$q \& (c_one128 << line)) != 32'h0) \& (held_id == id);/hit = ((valid\$q \& (c_one128 << line)) != 32'h0);/"
@@ -84,19 +84,15 @@ MUTANTS=(
 )
 
 MP_PREP='hierarchy -top \top$mem_port; rename \top$mem_port mem_port'
-# the memory port's registers tied to the wrapper's f_* wires (a row i of w bits: f_x[w i +: w])
+# the memory port's registers tied to the wrapper's f_* wires (a row i of w bits: f_x[w i +: w]);
+# -nounset: `connect -set` would otherwise cut a wrapper wire's aliases (the 1-bit f_* that
+# proc used as a mux select are left undriven, then free: a spurious counterexample)
 mp_hier() {
   local r i s=""
-  for r in tag_n tag_head tag_tail ta_pend tb_pend wa_n wa_head wa_tail wb_n wb_head wb_tail \
-      na_word nb_word ask_n ask_head ask_tail seq_head seq_tail; do
-    s+="connect -set f_$r dut.$r\$q; "
-  done
+  for r in tag_n tag_head tag_tail ta_pend tb_pend; do s+="connect -nounset -set f_$r dut.$r\$q; "; done
   for ((i = 0; i < 16; i++)); do
-    s+="connect -set f_tags[$((2 * i + 1)):$((2 * i))] dut.tags.row\$$i\$q; "
-    s+="connect -set f_wa[$((209 * i + 208)):$((209 * i))] dut.wa.row\$$i\$q; "
-    s+="connect -set f_wb[$((209 * i + 208)):$((209 * i))] dut.wb.row\$$i\$q; "
+    s+="connect -nounset -set f_tags[$((2 * i + 1)):$((2 * i))] dut.tags.row\$$i\$q; "
   done
-  for ((i = 0; i < 32; i++)); do s+="connect -set f_ask[$((22 * i + 21)):$((22 * i))] dut.ask_w\$$i\$q; "; done
   echo "$s"
 }
 MP_HIER=$(mp_hier)

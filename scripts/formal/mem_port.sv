@@ -2,22 +2,12 @@
 // src/rtl/memory_port.rs's MemoryPort), for Yosys (read_verilog -formal) and yosys-smtbmc;
 // scripts/formal.sh runs it. formal.sh reads the chip's Verilog unchanged, keeps only
 // `top$mem_port` and its sub-modules (`hierarchy -top`), renames it `mem_port` and ties the
-// `f_*` wires below to the port's registers (Yosys `connect` after `flatten`): the counts
-// and pointers of the tag ring, the word FIFOs and the ask list, and their rows.
+// `f_*` wires below to the port's registers (Yosys `connect` after `flatten`): the tag
+// ring's count, pointers and rows and the triangle words' pending flags.
 //
-// One solver step is one rising edge. Every input is free (the memory's ready and
-// responses, even responses nobody asked for) but for D_CNTR's and the chip's rules:
-//   * `port_out`, `pf_on`, `records` and `map` are registers of the chip: anyconsts;
-//   * a start (`clear`) comes only while no request is outstanding (the chip starts a
-//     query only when idle, and it is idle only with none), with no pop, issue or
-//     request (`go` low);
-//   * a pop's second pair's fetch bits are set only if the entry has two pairs;
-//   * an issue takes a side's word only while that FIFO is not empty (D_CNTR waits,
-//     `need_na`, `need_nb`);
-//   * node words owed per side (asked by pops, not yet taken by issues) never exceed 16:
-//     D_CNTR's pair buffer holds at most 16 pairs (it pops while it holds at most the
-//     prefetch, 14 or less, and an entry has two pairs), each taking at most one word
-//     per side.
+// One solver step is one rising edge; every input is free (the D_CNTR side, the memory's
+// ready and responses, even responses nobody asked for) except `port_out`, `pf_on`,
+// `records` and `map`, registers of the chip: anyconsts.
 //
 // The wrapper counts requests accepted (mem_req_valid && mem_req_ready, the port's
 // `accept`) minus responses taken (`resp`), and keeps its own FIFO of the accepted
@@ -26,35 +16,20 @@
 //     accepted - answered, never more than port_out + 1 nor 16; `outstanding` = any;
 //     a request is accepted only with at most port_out outstanding; a response is taken
 //     (`resp`) only while one is outstanding, never from a memory response without one.
-//   ORDER (k-induction): each response is routed (`resp_dst`) to the destination of the
-//     oldest request not yet answered: every accepted request answered once, in request
-//     order; at most one triangle word per triangle destination outstanding.
-//   WORDS (k-induction): the node-word FIFOs. `wa` (A's words) holds the words answered
-//     to A's node requests and not yet taken by an issue, never more than 16 (given the
-//     rules above), `wa_empty` exactly when none; a tracked word (any side, any value, any
-//     response the solver picks) is the DOP unit's word of that side (`na_in`, `nb_in`)
-//     at the issue that takes it, after exactly the words answered before it have been
-//     taken, and the word of every later pair that shares it; likewise `wb`.
-//   ASK (k-induction): the ask list. A tracked node word of a pop (any of A0 B0 A1 B1 it
-//     fetches, any pop) is requested after exactly the words asked before it, once, with
-//     its side and id, at its record's address (map 0: base + record), at prefetch 0 only
-//     while its pair is the current one (the pairs issued); a request for it is offered
-//     whenever it is at the head and may go. The list holds at most 32 words (given the
-//     rules above) and no node word is requested from an empty list.
+//   ORDER (k-induction, k = 1): each response is routed (`resp_dst`) to the destination of
+//     the oldest request not yet answered: every accepted request answered once, in
+//     request order; at most one triangle word per triangle destination outstanding, its
+//     pending flag (`ta_pend`, `tb_pend`) set exactly then. The invariant: the tag ring's
+//     count, pointers and live rows equal the wrapper's FIFO.
 //   COVER: 16 outstanding (port_out = 15), a response and a request at one edge, a
 //     spurious memory response ignored, responses to all four destinations.
-
-`ifdef ORDER
-`define MEM_FIFOS
-`endif
-`ifdef WORDS
-`define MEM_FIFOS
-`define WORDS_OR_ASK
-`endif
-`ifdef ASK
-`define MEM_FIFOS
-`define WORDS_OR_ASK
-`endif
+// Not proven: the node-word FIFOs (wa, wb) and the ask list. Their properties (each word
+// answered reaches the DOP unit at its issue, in order; each fetched word of a pop is
+// requested once, in order, at its address) need D_CNTR's rules as assumptions and a count
+// over the ask list's 32 rows; z3 gave no answer to that induction step within 10 minutes
+// nor BMC to depth 5 within 4 (ABC's pdr none within 10 minutes). They are checked by
+// simulation: every accepted memory request of each chip's queries against the cycle
+// model's (scripts/run-chip.sh).
 
 module wrapper (
     input wire clock,
@@ -72,16 +47,10 @@ module wrapper (
     input wire [31:0] leaf_tag,
     input wire mem_req_ready,
     input wire mem_resp_valid,
-    input wire [553:0] mem_resp_data,
-    input wire pick_word,          // the tracked node word is this response's
-    input wire pick_ask,           // the tracked ask-list word is this pop's ...
-    input wire [1:0] which_ask     // ... A0, B0, A1 or B1
+    input wire [553:0] mem_resp_data
 );
-    wire mem_req_valid, accept, resp, outstanding, wa_empty, wb_empty;
+    wire mem_req_valid, accept, resp, outstanding;
     wire [1:0] req_dst, resp_dst;
-    wire [23:0] mem_req_addr;
-    wire [15:0] ta_req, tb_req;
-    wire [208:0] na_in, nb_in;
 
     (* anyconst *) reg [3:0] port_out;
     (* anyconst *) reg pf_on;
@@ -96,10 +65,9 @@ module wrapper (
         .cur_sa(cur_sa), .cur_sb(cur_sb), .need_ta(need_ta), .need_tb(need_tb),
         .leaf_tag(leaf_tag), .mem_req_ready(mem_req_ready), .mem_resp_valid(mem_resp_valid),
         .mem_resp_data(mem_resp_data),
-        .mem_req_valid(mem_req_valid), .mem_req_addr(mem_req_addr), .req_dst(req_dst),
-        .accept(accept), .resp(resp), .resp_dst(resp_dst), .ta_req(ta_req), .tb_req(tb_req),
-        .outstanding(outstanding), .na_in(na_in), .nb_in(nb_in), .wa_empty(wa_empty),
-        .wb_empty(wb_empty)
+        .mem_req_valid(mem_req_valid), .mem_req_addr(), .req_dst(req_dst),
+        .accept(accept), .resp(resp), .resp_dst(resp_dst), .ta_req(), .tb_req(),
+        .outstanding(outstanding), .na_in(), .nb_in(), .wa_empty(), .wb_empty()
     );
 
     // the port's registers (formal.sh: connect); rows are {row 15, ..., row 0}
@@ -107,13 +75,6 @@ module wrapper (
     (* keep *) wire [3:0] f_tag_head, f_tag_tail;
     (* keep *) wire [31:0] f_tags;
     (* keep *) wire f_ta_pend, f_tb_pend;
-    (* keep *) wire [4:0] f_wa_n, f_wb_n;
-    (* keep *) wire [3:0] f_wa_head, f_wa_tail, f_wb_head, f_wb_tail;
-    (* keep *) wire [16*209-1:0] f_wa, f_wb;
-    (* keep *) wire [208:0] f_na_word, f_nb_word;
-    (* keep *) wire [5:0] f_ask_n;
-    (* keep *) wire [4:0] f_ask_head, f_ask_tail, f_seq_head, f_seq_tail;
-    (* keep *) wire [32*22-1:0] f_ask;
 
     reg f_past_valid = 1'b0;
     always @(posedge clock) f_past_valid <= 1'b1;
@@ -136,29 +97,6 @@ module wrapper (
         live_tag = {2'd0, i - m_head} < m_n;
     endfunction
 
-    // ---- the environment: D_CNTR and the chip around the port
-    wire take_a = issue && cur_fa, take_b = issue && cur_fb;
-    wire [2:0] new_a = pop ? {2'd0, pop_fetch[0]} + {2'd0, pop_fetch[2]} : 3'd0;
-    wire [2:0] new_b = pop ? {2'd0, pop_fetch[1]} + {2'd0, pop_fetch[3]} : 3'd0;
-    reg [5:0] e_owed_a = 6'd0, e_owed_b = 6'd0;   // node words asked, not yet taken
-    reg [4:0] m_seq_head = 5'd0, m_seq_tail = 5'd0; // pairs issued, popped (mod 32)
-    always @(posedge clock)
-        if (clear) begin
-            e_owed_a <= 0; e_owed_b <= 0; m_seq_head <= 0; m_seq_tail <= 0;
-        end else begin
-            e_owed_a <= e_owed_a + new_a - take_a;
-            e_owed_b <= e_owed_b + new_b - take_b;
-            if (issue) m_seq_head <= m_seq_head + 1;
-            if (pop) m_seq_tail <= m_seq_tail + 5'd1 + pop_entry[66];
-        end
-    always @(*) begin
-        if (clear) assume (m_n == 0 && !go && !pop && !issue && !need_ta && !need_tb);
-        if (!pop_entry[66]) assume (pop_fetch[3:2] == 2'd0);
-        if (take_a) assume (!wa_empty);
-        if (take_b) assume (!wb_empty);
-        assume (e_owed_a <= 6'd16 && e_owed_b <= 6'd16);
-    end
-
 `ifdef COUNT
     always @(*) begin
         assert (accept == (mem_req_valid && mem_req_ready));
@@ -172,165 +110,30 @@ module wrapper (
     end
 `endif
 
-`ifdef MEM_FIFOS
-    // requests outstanding per destination, and the ask list's words per side (the rows
-    // between head and head + count)
-    reg [4:0] c_tag0, c_tag1, c_tag2, c_tag3;
-    reg [5:0] c_ask_a, c_ask_b;
-    integer i;
-    reg [4:0] d;
-    always @(*) begin
-        {c_tag0, c_tag1, c_tag2, c_tag3} = 20'd0;
-        for (i = 0; i < 16; i = i + 1)
-            if (live_tag(i))
-                case (m_dst[i])
-                    2'd0: c_tag0 = c_tag0 + 1;
-                    2'd1: c_tag1 = c_tag1 + 1;
-                    2'd2: c_tag2 = c_tag2 + 1;
-                    default: c_tag3 = c_tag3 + 1;
-                endcase
-        c_ask_a = 0; c_ask_b = 0;
-        for (i = 0; i < 32; i = i + 1) begin
-            d = i - f_ask_head;
-            if ({1'b0, d} < f_ask_n) begin
-                if (f_ask[22 * i + 16]) c_ask_b = c_ask_b + 1;
-                else c_ask_a = c_ask_a + 1;
+`ifdef ORDER
+    // requests outstanding per triangle destination
+    reg [4:0] c_tag2, c_tag3;
+    always @(*) begin : per_dst
+        integer r;
+        c_tag2 = 0; c_tag3 = 0;
+        for (r = 0; r < 16; r = r + 1)
+            if (live_tag(r)) begin
+                if (m_dst[r] == 2'd2) c_tag2 = c_tag2 + 1;
+                if (m_dst[r] == 2'd3) c_tag3 = c_tag3 + 1;
             end
-        end
     end
-
-    // the tag ring holds the model's destinations (k-induction's invariant)
-    always @(*) begin
+    always @(*) begin : order
+        integer r;
+        // the tag ring holds the model's destinations (the induction's invariant)
         assert ({1'b0, f_tag_n} == m_n && m_n <= 6'd16);
         assert (m_tail == m_head + m_n[3:0]);
         assert (f_tag_head == m_head && f_tag_tail == m_tail);
-        for (i = 0; i < 16; i = i + 1)
-            if (live_tag(i)) assert (f_tags[2 * i +: 2] == m_dst[i]);
-    end
-`endif
-
-`ifdef ORDER
-    always @(*) begin
+        for (r = 0; r < 16; r = r + 1)
+            if (live_tag(r)) assert (f_tags[2 * r +: 2] == m_dst[r]);
         if (resp) assert (resp_dst == m_dst[m_head]);          // routed in request order
         assert (c_tag2 <= 1 && c_tag3 <= 1);                  // one triangle word per side
         assert (f_ta_pend == (c_tag2 != 0) && f_tb_pend == (c_tag3 != 0));
     end
-`endif
-
-`ifdef WORDS_OR_ASK
-    // every word owed is in the ask list, asked for (a request outstanding), or in its FIFO;
-    // the FIFOs' and the list's counts and pointers agree
-    reg [4:0] m_wa = 5'd0, m_wb = 5'd0;   // words answered, not yet taken
-    wire resp_a = resp && resp_dst == 2'd0, resp_b = resp && resp_dst == 2'd1;
-    always @(posedge clock)
-        if (clear) begin
-            m_wa <= 0; m_wb <= 0;
-        end else begin
-            m_wa <= m_wa + resp_a - take_a;
-            m_wb <= m_wb + resp_b - take_b;
-        end
-    always @(*) begin
-        assert (8'd0 + c_ask_a + c_tag0 + m_wa == 8'd0 + e_owed_a);
-        assert (8'd0 + c_ask_b + c_tag1 + m_wb == 8'd0 + e_owed_b);
-        assert (f_wa_n == m_wa && f_wb_n == m_wb);
-        assert (m_wa <= 5'd16 && m_wb <= 5'd16);                        // no overflow
-        assert (wa_empty == (m_wa == 0) && wb_empty == (m_wb == 0));     // nor underflow
-        assert (f_wa_tail == f_wa_head + f_wa_n[3:0] && f_wb_tail == f_wb_head + f_wb_n[3:0]);
-        assert (f_ask_n <= 6'd32 && f_ask_tail == f_ask_head + f_ask_n[4:0]);
-        assert (f_seq_head == m_seq_head && f_seq_tail == m_seq_tail);
-        if (accept && !req_dst[1]) assert (f_ask_n != 0);              // none from an empty list
-    end
-`endif
-
-    localparam [1:0] T_WAIT = 2'd0, T_IN = 2'd1, T_OUT = 2'd2, T_GONE = 2'd3;
-
-`ifdef WORDS
-    // ---- the tracked node word: on side f_side (0: A's FIFO wa and na_in, 1: B's), the
-    // response the solver picks; w_before = words that leave that FIFO before it
-    (* anyconst *) reg f_side;
-    (* anyconst *) reg [208:0] f_word;
-    reg [1:0] w_st = T_WAIT;
-    reg [4:0] w_before = 5'd0;
-    wire w_in = f_side ? resp_b : resp_a;
-    wire w_take = f_side ? take_b : take_a;
-    wire w_cur = f_side ? cur_fb : cur_fa;
-    wire [4:0] w_n = f_side ? m_wb : m_wa;
-    wire [3:0] w_head = f_side ? f_wb_head : f_wa_head;
-    wire [16*209-1:0] w_rows = f_side ? f_wb : f_wa;
-    wire [208:0] w_dop = f_side ? nb_in : na_in;          // the DOP unit's word of that side
-    wire [208:0] w_last = f_side ? f_nb_word : f_na_word;  // the last pair's
-    wire [3:0] w_row = w_head + w_before[3:0];
-    always @(*)
-        if (w_in && pick_word && w_st == T_WAIT) assume (mem_resp_data[208:0] == f_word);
-    always @(posedge clock) begin
-        if (w_st == T_WAIT && w_in && pick_word) begin
-            w_st <= T_IN;
-            w_before <= w_n - w_take;
-        end else if (w_st == T_IN && clear) begin
-            w_st <= T_GONE;
-        end else if (w_st == T_IN && w_take) begin
-            if (w_before == 0) w_st <= T_OUT;
-            else w_before <= w_before - 1;
-        end else if (w_st == T_OUT && w_take) begin
-            w_st <= T_GONE;                       // a later pair takes its own word
-        end
-    end
-    always @(*) begin
-        if (w_st == T_IN) begin
-            assert (w_before < w_n);
-            assert (w_rows[209 * w_row +: 209] == f_word);
-            if (w_before == 0 && w_cur) assert (w_dop == f_word);     // its turn: in order
-        end
-        if (w_st == T_OUT) begin
-            assert (w_last == f_word);
-            if (!w_cur) assert (w_dop == f_word);                     // shared by later pairs
-        end
-    end
-`endif
-
-`ifdef ASK
-    // ---- the tracked ask-list word: word which_ask (A0 B0 A1 B1) of the pop the solver
-    // picks, {pair number mod 32, B, id}; a_before = words requested before it
-    reg [1:0] a_st = T_WAIT;
-    reg [5:0] a_before = 6'd0;
-    reg [21:0] a_word = 22'd0;
-    wire [2:0] off1 = {2'd0, pop_fetch[0]};
-    wire [2:0] off2 = off1 + pop_fetch[1];
-    wire [2:0] off3 = off2 + pop_fetch[2];
-    wire [2:0] a_off = which_ask == 0 ? 3'd0 : which_ask == 1 ? off1 : which_ask == 2 ? off2 : off3;
-    wire [15:0] a_id = which_ask == 0 ? pop_entry[15:0] : which_ask == 1 ? pop_entry[31:16]
-                     : which_ask == 2 ? pop_entry[48:33] : pop_entry[64:49];
-    wire [4:0] a_seq = m_seq_tail + which_ask[1];
-    wire take_ask = accept && !req_dst[1];
-    wire a_sel = a_st == T_WAIT && pop && pick_ask && pop_fetch[which_ask];
-    wire [4:0] a_row = f_ask_head + a_before[4:0];
-    wire [15:0] a_rec = records ? {1'b0, a_word[15:1]} : a_word[15:0];
-    always @(posedge clock) begin
-        if (a_sel) begin
-            a_st <= T_IN;
-            a_word <= {a_seq, which_ask[0], a_id};
-            a_before <= f_ask_n + a_off - take_ask;
-        end else if (a_st == T_IN && clear) begin
-            a_st <= T_GONE;
-        end else if (a_st == T_IN && take_ask) begin
-            if (a_before == 0) a_st <= T_OUT;
-            else a_before <= a_before - 1;
-        end
-    end
-    always @(*)
-        if (a_st == T_IN) begin
-            assert (a_before < f_ask_n);
-            assert (f_ask[22 * a_row +: 22] == a_word);
-            if (a_before == 0 && take_ask) begin                        // its turn: in order
-                assert (req_dst == {1'b0, a_word[16]});
-                if (!pf_on) assert (a_word[21:17] == m_seq_head);       // prefetch 0
-                if (map == 0) assert (mem_req_addr == (a_word[16] ? base_nb : base_na) + a_rec);
-            end
-            // at the head, allowed, no triangle word asked, the port not full: offered
-            if (a_before == 0 && go && (pf_on || a_word[21:17] == m_seq_head) && m_n <= port_out
-                && !need_ta && !need_tb)
-                assert (mem_req_valid && req_dst == {1'b0, a_word[16]});
-        end
 `endif
 
 `ifdef COVER
