@@ -51,6 +51,7 @@ PROOFS=(
   "result_port.cover|result_port.sv|rtl/chip_e8m15_k6.v|COVER|cover|8|reachable: back-pressure for two edges, a take and a give at one edge, 3 pairs open, a separate result passing while the host is not ready, an uncertain result read"
   "mem_port.count|mem_port.sv|rtl/chip_e8m15_k6.v|COUNT|ind|2/20|accept = mem_req_valid && mem_req_ready; outstanding (tag_n) = accepted - answered, <= port_out + 1 and <= 16; outstanding flag; accept only with <= port_out outstanding; resp only while one is outstanding (spurious memory responses ignored), and always then"
   "mem_port.order|mem_port.sv|rtl/chip_e8m15_k6.v|ORDER|ind|1/4|each response routed (resp_dst) to the destination of the oldest unanswered accepted request (a FIFO model in the wrapper, which the tag ring holds); at most one triangle word outstanding per triangle destination, its pending flag set exactly then"
+  "mem_port.words|mem_port.sv|rtl/chip_e8m15_k6.v|WORDS|ind|1/6|node-word FIFOs wa, wb under D_CNTR's rules (read only when not empty; never a 17th word, assumed): count = answered - taken (<= 16), empty flags, tail = head + count; a tracked word (either side, any value) is the DOP unit's word at the issue that takes it, after exactly the words answered before it, and of the later pairs that share it"
   "mem_port.cover|mem_port.sv|rtl/chip_e8m15_k6.v|COVER|cover|20|reachable: 16 outstanding, a request and a response at one edge, a spurious memory response ignored, responses to all four destinations"
   "tri_cache.cache|tri_cache.sv|rtl/chip_e8m15_k6.v|CACHE|bmc|5|tracked (any-constant) triangle id, any stale RAM contents, any mask: a hit only after its fill since the last clear, a hit returns its last fill's word (also through the bypass of a fill into the line being read), found while its line holds it"
   "tri_cache.cover|tri_cache.sv|rtl/chip_e8m15_k6.v|COVER|cover|8|reachable: a hit through the bypass, a hit from the RAM, a miss after another id took the line, a miss after a clear, the highest line"
@@ -76,6 +77,8 @@ MUTANTS=(
   "mem_tag_head_stuck|mem_port.order|rtl/chip_e8m15_k6.v|s/tag_head\$d = tag_head\$q + 32'h1;/tag_head\$d = tag_head\$q;/"
   "mem_tag_written_at_head|mem_port.order|rtl/chip_e8m15_k6.v|s/tags\$wsel = c_one16 << tag_tail\$q;/tags\$wsel = c_one16 << tag_head\$q;/"
   "mem_ta_pend_not_cleared|mem_port.order|rtl/chip_e8m15_k6.v|s/ta_pend\$d = 1'b0;/ta_pend\$d = ta_pend\$q;/"
+  "mem_wa_head_stuck|mem_port.words|rtl/chip_e8m15_k6.v|s/wa_head\$d = wa_head\$q + 32'h1;/wa_head\$d = wa_head\$q;/"
+  "mem_na_word_not_latched|mem_port.words|rtl/chip_e8m15_k6.v|s/na_word\$d = wa\$rdata;/na_word\$d = na_word\$q;/"
   "cache_no_bypass|tri_cache.cache|rtl/chip_e8m15_k6.v|s/byp\$d = fill \& (fill_line == next_line);/byp\$d = 1'b0;/"
   "cache_valid_not_cleared|tri_cache.cache|rtl/chip_e8m15_k6.v|/if (clear) begin/,/end/s/valid\$d = 32'h0;/valid\$d = valid\$q;/"
   "cache_hit_ignores_id|tri_cache.cache|rtl/chip_e8m15_k6.v|s/hit = ((valid\$q \& (c_one128 << line)) != 32'h0) \& (held_id == id);/hit = ((valid\$q \& (c_one128 << line)) != 32'h0);/"
@@ -89,9 +92,14 @@ MP_PREP='hierarchy -top \top$mem_port; rename \top$mem_port mem_port'
 # proc used as a mux select are left undriven, then free: a spurious counterexample)
 mp_hier() {
   local r i s=""
-  for r in tag_n tag_head tag_tail ta_pend tb_pend; do s+="connect -nounset -set f_$r dut.$r\$q; "; done
+  for r in tag_n tag_head tag_tail ta_pend tb_pend wa_n wa_head wa_tail wb_n wb_head wb_tail \
+      na_word nb_word; do
+    s+="connect -nounset -set f_$r dut.$r\$q; "
+  done
   for ((i = 0; i < 16; i++)); do
     s+="connect -nounset -set f_tags[$((2 * i + 1)):$((2 * i))] dut.tags.row\$$i\$q; "
+    s+="connect -nounset -set f_wa[$((209 * i + 208)):$((209 * i))] dut.wa.row\$$i\$q; "
+    s+="connect -nounset -set f_wb[$((209 * i + 208)):$((209 * i))] dut.wb.row\$$i\$q; "
   done
   echo "$s"
 }

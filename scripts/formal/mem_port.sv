@@ -3,7 +3,8 @@
 // scripts/formal.sh runs it. formal.sh reads the chip's Verilog unchanged, keeps only
 // `top$mem_port` and its sub-modules (`hierarchy -top`), renames it `mem_port` and ties the
 // `f_*` wires below to the port's registers (Yosys `connect` after `flatten`): the tag
-// ring's count, pointers and rows and the triangle words' pending flags.
+// ring's and the node-word FIFOs' counts, pointers and rows, the triangle words' pending
+// flags and the last pair's words (na_word, nb_word).
 //
 // One solver step is one rising edge; every input is free (the D_CNTR side, the memory's
 // ready and responses, even responses nobody asked for) except `port_out`, `pf_on`,
@@ -23,12 +24,20 @@
 //     count, pointers and live rows equal the wrapper's FIFO.
 //   COVER: 16 outstanding (port_out = 15), a response and a request at one edge, a
 //     spurious memory response ignored, responses to all four destinations.
-// Not proven: the node-word FIFOs (wa, wb) and the ask list. Their properties (each word
-// answered reaches the DOP unit at its issue, in order; each fetched word of a pop is
-// requested once, in order, at its address) need D_CNTR's rules as assumptions and a count
-// over the ask list's 32 rows; z3 gave no answer to that induction step within 10 minutes
-// nor BMC to depth 5 within 4 (ABC's pdr none within 10 minutes). They are checked by
-// simulation: every accepted memory request of each chip's queries against the cycle
+//   WORDS (k-induction, k = 1): the node-word FIFOs under D_CNTR's rules: an issue takes a
+//     side's word only while its FIFO is not empty, and a side is never answered a 17th
+//     word (assumed: D_CNTR owes at most 16 per side). wa (A's words) holds the words
+//     answered to A's node requests and not yet taken, at most 16, `wa_empty` exactly when
+//     none; a tracked word (any side, any value, the response the solver picks) is the DOP
+//     unit's word of that side (`na_in`, `nb_in`) at the issue that takes it, after exactly
+//     the words answered before it, and the word of every later pair that shares it;
+//     likewise wb.
+// Not proven: the ask list (each fetched word of a pop requested once, in order, at its
+// address) and the 16-word rule WORDS assumes. Tying them to the word FIFOs (each side's
+// owed words = its words over the ask list's 32 rows + requested + in its FIFO) made z3 give
+// no answer to the k = 1 induction step within 10 minutes (nor BMC past step 4 within 4;
+// ABC's pdr none within 10 minutes, 2 busy cores). Simulation checks them: each chip's
+// queries under Verilator, every accepted memory request and result against the cycle
 // model's (scripts/run-chip.sh).
 
 module wrapper (
@@ -47,10 +56,12 @@ module wrapper (
     input wire [31:0] leaf_tag,
     input wire mem_req_ready,
     input wire mem_resp_valid,
-    input wire [553:0] mem_resp_data
+    input wire [553:0] mem_resp_data,
+    input wire pick_word           // WORDS: the tracked node word is this response's
 );
-    wire mem_req_valid, accept, resp, outstanding;
+    wire mem_req_valid, accept, resp, outstanding, wa_empty, wb_empty;
     wire [1:0] req_dst, resp_dst;
+    wire [208:0] na_in, nb_in;
 
     (* anyconst *) reg [3:0] port_out;
     (* anyconst *) reg pf_on;
@@ -67,7 +78,8 @@ module wrapper (
         .mem_resp_data(mem_resp_data),
         .mem_req_valid(mem_req_valid), .mem_req_addr(), .req_dst(req_dst),
         .accept(accept), .resp(resp), .resp_dst(resp_dst), .ta_req(), .tb_req(),
-        .outstanding(outstanding), .na_in(), .nb_in(), .wa_empty(), .wb_empty()
+        .outstanding(outstanding), .na_in(na_in), .nb_in(nb_in), .wa_empty(wa_empty),
+        .wb_empty(wb_empty)
     );
 
     // the port's registers (formal.sh: connect); rows are {row 15, ..., row 0}
@@ -75,6 +87,10 @@ module wrapper (
     (* keep *) wire [3:0] f_tag_head, f_tag_tail;
     (* keep *) wire [31:0] f_tags;
     (* keep *) wire f_ta_pend, f_tb_pend;
+    (* keep *) wire [4:0] f_wa_n, f_wb_n;
+    (* keep *) wire [3:0] f_wa_head, f_wa_tail, f_wb_head, f_wb_tail;
+    (* keep *) wire [16*209-1:0] f_wa, f_wb;
+    (* keep *) wire [208:0] f_na_word, f_nb_word;
 
     reg f_past_valid = 1'b0;
     always @(posedge clock) f_past_valid <= 1'b1;
@@ -133,6 +149,73 @@ module wrapper (
         if (resp) assert (resp_dst == m_dst[m_head]);          // routed in request order
         assert (c_tag2 <= 1 && c_tag3 <= 1);                  // one triangle word per side
         assert (f_ta_pend == (c_tag2 != 0) && f_tb_pend == (c_tag3 != 0));
+    end
+`endif
+
+`ifdef WORDS
+    // the node-word FIFOs under D_CNTR's rules: an issue takes a side's word only while that
+    // FIFO is not empty (need_na, need_nb), and a side is never answered a 17th word (D_CNTR
+    // owes at most 16 per side: assumed here, not proven)
+    wire take_a = issue && cur_fa, take_b = issue && cur_fb;
+    wire resp_a = resp && resp_dst == 2'd0, resp_b = resp && resp_dst == 2'd1;
+    reg [4:0] m_wa = 5'd0, m_wb = 5'd0;   // words answered, not yet taken
+    always @(posedge clock)
+        if (clear) begin
+            m_wa <= 0; m_wb <= 0;
+        end else begin
+            m_wa <= m_wa + resp_a - take_a;
+            m_wb <= m_wb + resp_b - take_b;
+        end
+    always @(*) begin
+        if (take_a) assume (!wa_empty);
+        if (take_b) assume (!wb_empty);
+        if (resp_a && !take_a) assume (m_wa != 5'd16);
+        if (resp_b && !take_b) assume (m_wb != 5'd16);
+        assert (f_wa_n == m_wa && f_wb_n == m_wb && m_wa <= 5'd16 && m_wb <= 5'd16);
+        assert (wa_empty == (m_wa == 0) && wb_empty == (m_wb == 0));
+        assert (f_wa_tail == f_wa_head + f_wa_n[3:0] && f_wb_tail == f_wb_head + f_wb_n[3:0]);
+    end
+
+    // the tracked node word: on side f_side (0: A's FIFO wa and na_in, 1: B's), the response
+    // the solver picks (pick_word); w_before = words that leave that FIFO before it
+    localparam [1:0] T_WAIT = 2'd0, T_IN = 2'd1, T_OUT = 2'd2, T_GONE = 2'd3;
+    (* anyconst *) reg f_side;
+    (* anyconst *) reg [208:0] f_word;
+    reg [1:0] w_st = T_WAIT;
+    reg [4:0] w_before = 5'd0;
+    wire w_in = f_side ? resp_b : resp_a;
+    wire w_take = f_side ? take_b : take_a;
+    wire w_cur = f_side ? cur_fb : cur_fa;
+    wire [4:0] w_n = f_side ? m_wb : m_wa;
+    wire [3:0] w_row = (f_side ? f_wb_head : f_wa_head) + w_before[3:0];
+    wire [208:0] w_dop = f_side ? nb_in : na_in;          // the DOP unit's word of that side
+    wire [208:0] w_last = f_side ? f_nb_word : f_na_word;  // the last pair's
+    always @(*)
+        if (w_in && pick_word && w_st == T_WAIT) assume (mem_resp_data[208:0] == f_word);
+    always @(posedge clock)
+        if (w_st == T_WAIT && w_in && pick_word && !clear) begin
+            w_st <= T_IN;
+            w_before <= w_n - w_take;
+        end else if (w_st == T_IN && clear) begin
+            w_st <= T_GONE;
+        end else if (w_st == T_IN && w_take) begin
+            if (w_before == 0) w_st <= T_OUT;
+            else w_before <= w_before - 1;
+        end else if (w_st == T_OUT && w_take) begin
+            w_st <= T_GONE;                       // a later pair takes its own word
+        end
+    always @(*) begin : words
+        integer r;
+        if (w_st == T_IN) begin
+            assert (w_before < w_n);
+            for (r = 0; r < 16; r = r + 1)        // a row per case: no shifter
+                if (w_row == r) assert ((f_side ? f_wb[209 * r +: 209] : f_wa[209 * r +: 209]) == f_word);
+            if (w_before == 0 && w_cur) assert (w_dop == f_word);     // its turn: in order
+        end
+        if (w_st == T_OUT) begin
+            assert (w_last == f_word);
+            if (!w_cur) assert (w_dop == f_word);                     // shared by later pairs
+        end
     end
 `endif
 
