@@ -11,8 +11,10 @@
 # SMT-LIB; without --unroll, z3 4.8.12 hangs on the queue's first step, so every SMT run
 # uses --unroll.)
 #
-# Usage: scripts/formal.sh [--mutate] [proof ...]
-#   (default: every proof; names as printed, e.g. pair_queue.bounds)
+# Usage: scripts/formal.sh [--all] [--mutate] [proof ...]
+#   (default: every proof of PROOFS; names as printed, e.g. pair_queue.bounds)
+#   --all     also the proofs of SLOW_PROOFS (and, with --mutate, their SLOW_MUTANTS): each
+#             takes over a minute of CPU, so CI leaves them out
 #   --mutate  instead runs each hand mutation of MUTANTS below on a copy of the Verilog
 #             (sed, under target/formal/mutants/) against the proof it must break, and
 #             fails unless every mutant makes its proof fail with a counterexample from the
@@ -26,7 +28,8 @@ root=$PWD
 out=$root/target/formal
 mkdir -p "$out"
 
-mutate=0
+mutate=0 all=0
+if [ "${1:-}" = "--all" ]; then all=1; shift; fi
 if [ "${1:-}" = "--mutate" ]; then mutate=1; shift; fi
 only=("$@")
 
@@ -55,6 +58,11 @@ PROOFS=(
   "mem_port.cover|mem_port.sv|rtl/chip_e8m15_k6.v|COVER|cover|20|reachable: 16 outstanding, a request and a response at one edge, a spurious memory response ignored, responses to all four destinations"
   "tri_cache.cache|tri_cache.sv|rtl/chip_e8m15_k6.v|CACHE|bmc|5|tracked (any-constant) triangle id, any stale RAM contents, any mask: a hit only after its fill since the last clear, a hit returns its last fill's word (also through the bypass of a fill into the line being read), found while its line holds it"
   "tri_cache.cover|tri_cache.sv|rtl/chip_e8m15_k6.v|COVER|cover|8|reachable: a hit through the bypass, a hit from the RAM, a miss after another id took the line, a miss after a clear, the highest line"
+)
+
+# proofs run only with --all (over a minute of CPU each)
+SLOW_PROOFS=(
+  "mem_port.ask|mem_port.sv|rtl/chip_e8m15_k6.v|ASK|ind|1/4|ask list (at most 32 words, assumed): a tracked fetched word of a pop (A0 B0 A1 B1) requested once, after exactly the words asked before it, with its side, at its record's address (map 0), at prefetch 0 only for the current pair, offered whenever at the head and allowed; no node request from an empty list"
 )
 
 # ---- mutants: name | proof it must break | DUT Verilog | sed script (applied to a copy)
@@ -86,6 +94,10 @@ MUTANTS=(
   "control_syntax_error|pair_queue.bounds|rtl/pair_queue_n4.v|0,/^endmodule/s//endmodul/"
 )
 
+SLOW_MUTANTS=(
+  "mem_ask_head_stuck|mem_port.ask|rtl/chip_e8m15_k6.v|s/ask_head\$d = ask_head\$q + 32'h1;/ask_head\$d = ask_head\$q;/"
+)
+if [ $all = 1 ]; then PROOFS+=("${SLOW_PROOFS[@]}"); MUTANTS+=("${SLOW_MUTANTS[@]}"); fi
 MP_PREP='hierarchy -top \top$mem_port; rename \top$mem_port mem_port'
 # the memory port's registers tied to the wrapper's f_* wires (a row i of w bits: f_x[w i +: w]);
 # -nounset: `connect -set` would otherwise cut a wrapper wire's aliases (the 1-bit f_* that
@@ -93,7 +105,7 @@ MP_PREP='hierarchy -top \top$mem_port; rename \top$mem_port mem_port'
 mp_hier() {
   local r i s=""
   for r in tag_n tag_head tag_tail ta_pend tb_pend wa_n wa_head wa_tail wb_n wb_head wb_tail \
-      na_word nb_word; do
+      na_word nb_word ask_n ask_head ask_tail seq_head seq_tail; do
     s+="connect -nounset -set f_$r dut.$r\$q; "
   done
   for ((i = 0; i < 16; i++)); do
@@ -101,6 +113,7 @@ mp_hier() {
     s+="connect -nounset -set f_wa[$((209 * i + 208)):$((209 * i))] dut.wa.row\$$i\$q; "
     s+="connect -nounset -set f_wb[$((209 * i + 208)):$((209 * i))] dut.wb.row\$$i\$q; "
   done
+  for ((i = 0; i < 32; i++)); do s+="connect -nounset -set f_ask[$((22 * i + 21)):$((22 * i))] dut.ask_w\$$i\$q; "; done
   echo "$s"
 }
 MP_HIER=$(mp_hier)

@@ -32,13 +32,19 @@
 //     unit's word of that side (`na_in`, `nb_in`) at the issue that takes it, after exactly
 //     the words answered before it, and the word of every later pair that shares it;
 //     likewise wb.
-// Not proven: the ask list (each fetched word of a pop requested once, in order, at its
-// address) and the 16-word rule WORDS assumes. Tying them to the word FIFOs (each side's
-// owed words = its words over the ask list's 32 rows + requested + in its FIFO) made z3 give
-// no answer to the k = 1 induction step within 10 minutes (nor BMC past step 4 within 4;
-// ABC's pdr none within 10 minutes, 2 busy cores). Simulation checks them: each chip's
-// queries under Verilator, every accepted memory request and result against the cycle
-// model's (scripts/run-chip.sh).
+//   ASK (k-induction, k = 1; formal.sh --all, about 2 minutes of CPU): the ask list under
+//     D_CNTR's rule that it never holds more than 32 words (assumed): at most 32, tail =
+//     head + count, the pairs issued and popped counted (seq_head, seq_tail); no node word
+//     requested from an empty list; a tracked fetched word of a pop (A0 B0 A1 B1 of the pop
+//     the solver picks) is requested after exactly the words asked before it, once, with
+//     its side, at its record's address (map 0), at prefetch 0 only while its pair is the
+//     current one, and offered whenever it is at the head and may go.
+// Not proven: the two rules assumed (D_CNTR's). Proving them here would tie the word FIFOs
+// to the ask list (each side's owed words = its words over the ask list's 32 rows +
+// requested + in its FIFO): z3 gave no answer to that k = 1 induction step within 10
+// minutes (nor BMC past step 4 within 4; ABC's pdr none within 10 minutes, 2 busy cores).
+// Simulation checks them: each chip's queries under Verilator, every accepted memory
+// request and result against the cycle model's (scripts/run-chip.sh).
 
 module wrapper (
     input wire clock,
@@ -57,8 +63,11 @@ module wrapper (
     input wire mem_req_ready,
     input wire mem_resp_valid,
     input wire [553:0] mem_resp_data,
-    input wire pick_word           // WORDS: the tracked node word is this response's
+    input wire pick_word,          // WORDS: the tracked node word is this response's
+    input wire pick_ask,           // ASK: the tracked ask-list word is this pop's ...
+    input wire [1:0] which_ask     // ... A0, B0, A1 or B1
 );
+    wire [23:0] mem_req_addr;
     wire mem_req_valid, accept, resp, outstanding, wa_empty, wb_empty;
     wire [1:0] req_dst, resp_dst;
     wire [208:0] na_in, nb_in;
@@ -76,7 +85,7 @@ module wrapper (
         .cur_sa(cur_sa), .cur_sb(cur_sb), .need_ta(need_ta), .need_tb(need_tb),
         .leaf_tag(leaf_tag), .mem_req_ready(mem_req_ready), .mem_resp_valid(mem_resp_valid),
         .mem_resp_data(mem_resp_data),
-        .mem_req_valid(mem_req_valid), .mem_req_addr(), .req_dst(req_dst),
+        .mem_req_valid(mem_req_valid), .mem_req_addr(mem_req_addr), .req_dst(req_dst),
         .accept(accept), .resp(resp), .resp_dst(resp_dst), .ta_req(), .tb_req(),
         .outstanding(outstanding), .na_in(na_in), .nb_in(nb_in), .wa_empty(wa_empty),
         .wb_empty(wb_empty)
@@ -91,6 +100,9 @@ module wrapper (
     (* keep *) wire [3:0] f_wa_head, f_wa_tail, f_wb_head, f_wb_tail;
     (* keep *) wire [16*209-1:0] f_wa, f_wb;
     (* keep *) wire [208:0] f_na_word, f_nb_word;
+    (* keep *) wire [5:0] f_ask_n;
+    (* keep *) wire [4:0] f_ask_head, f_ask_tail, f_seq_head, f_seq_tail;
+    (* keep *) wire [32*22-1:0] f_ask;
 
     reg f_past_valid = 1'b0;
     always @(posedge clock) f_past_valid <= 1'b1;
@@ -215,6 +227,71 @@ module wrapper (
         if (w_st == T_OUT) begin
             assert (w_last == f_word);
             if (!w_cur) assert (w_dop == f_word);                     // shared by later pairs
+        end
+    end
+`endif
+
+`ifdef ASK
+    // the ask list under D_CNTR's rule that it never holds more than 32 words (assumed); the
+    // pairs issued and popped (mod 32), against the port's seq_head and seq_tail
+    wire take_ask = accept && !req_dst[1];
+    wire [5:0] ask_new = {5'd0, pop_fetch[0]} + pop_fetch[1] + pop_fetch[2] + pop_fetch[3];
+    reg [4:0] m_seq_head = 5'd0, m_seq_tail = 5'd0;
+    always @(posedge clock)
+        if (clear) begin
+            m_seq_head <= 0; m_seq_tail <= 0;
+        end else begin
+            if (issue) m_seq_head <= m_seq_head + 1;
+            if (pop) m_seq_tail <= m_seq_tail + 5'd1 + pop_entry[66];
+        end
+    always @(*) begin
+        if (pop) assume ({1'b0, f_ask_n} + ask_new <= 7'd32 + take_ask);
+        assert (f_ask_n <= 6'd32 && f_ask_tail == f_ask_head + f_ask_n[4:0]);
+        assert (f_seq_head == m_seq_head && f_seq_tail == m_seq_tail);
+        if (take_ask) assert (f_ask_n != 0);                  // none from an empty list
+    end
+
+    // the tracked word: word which_ask (A0 B0 A1 B1) of the pop the solver picks, as
+    // {pair number mod 32, B, id}; a_before = words requested before it
+    localparam [1:0] T_WAIT = 2'd0, T_IN = 2'd1, T_OUT = 2'd2;
+    reg [1:0] a_st = T_WAIT;
+    reg [5:0] a_before = 6'd0;
+    reg [21:0] a_word = 22'd0;
+    wire [2:0] off1 = {2'd0, pop_fetch[0]};
+    wire [2:0] off2 = off1 + pop_fetch[1];
+    wire [2:0] off3 = off2 + pop_fetch[2];
+    wire [2:0] a_off = which_ask == 0 ? 3'd0 : which_ask == 1 ? off1 : which_ask == 2 ? off2 : off3;
+    wire [15:0] a_id = which_ask == 0 ? pop_entry[15:0] : which_ask == 1 ? pop_entry[31:16]
+                     : which_ask == 2 ? pop_entry[48:33] : pop_entry[64:49];
+    wire a_sel = a_st == T_WAIT && pop && !clear && pick_ask && pop_fetch[which_ask];
+    wire [4:0] a_row = f_ask_head + a_before[4:0];
+    wire [15:0] a_rec = records ? {1'b0, a_word[15:1]} : a_word[15:0];
+    always @(posedge clock)
+        if (a_sel) begin
+            a_st <= T_IN;
+            a_word <= {m_seq_tail + which_ask[1], which_ask[0], a_id};
+            a_before <= f_ask_n + a_off - take_ask;
+        end else if (a_st == T_IN && clear) begin
+            a_st <= T_OUT;
+        end else if (a_st == T_IN && take_ask) begin
+            if (a_before == 0) a_st <= T_OUT;
+            else a_before <= a_before - 1;
+        end
+    always @(*) begin : ask
+        integer r;
+        if (a_st == T_IN) begin
+            assert (a_before < f_ask_n);
+            for (r = 0; r < 32; r = r + 1)        // a row per case: no shifter
+                if (a_row == r) assert (f_ask[22 * r +: 22] == a_word);
+            if (a_before == 0 && take_ask) begin                        // its turn: in order
+                assert (req_dst == {1'b0, a_word[16]});
+                if (!pf_on) assert (a_word[21:17] == m_seq_head);       // prefetch 0
+                if (map == 0) assert (mem_req_addr == (a_word[16] ? base_nb : base_na) + a_rec);
+            end
+            // at the head, allowed, no triangle word asked, the port not full: offered
+            if (a_before == 0 && go && (pf_on || a_word[21:17] == m_seq_head)
+                && f_tag_n <= {1'b0, port_out} && !need_ta && !need_tb)
+                assert (mem_req_valid && req_dst == {1'b0, a_word[16]});
         end
     end
 `endif
