@@ -99,27 +99,33 @@ SLOW_MUTANTS=(
 )
 if [ $all = 1 ]; then PROOFS+=("${SLOW_PROOFS[@]}"); MUTANTS+=("${SLOW_MUTANTS[@]}"); fi
 MP_PREP='hierarchy -top \top$mem_port; rename \top$mem_port mem_port'
-# the memory port's registers tied to the wrapper's f_* wires (a row i of w bits: f_x[w i +: w]);
-# -nounset: `connect -set` would otherwise cut a wrapper wire's aliases (the 1-bit f_* that
-# proc used as a mux select are left undriven, then free: a spurious counterexample)
+# mp_hier <proof>: the memory port's registers that proof's wrapper reads, tied to its f_*
+# wires (a row i of w bits: f_x[w i +: w]); -nounset: `connect -set` would otherwise cut a
+# wrapper wire's aliases (the 1-bit f_* that proc used as a mux select are left undriven,
+# then free: a spurious counterexample)
 mp_hier() {
-  local r i s=""
-  for r in tag_n tag_head tag_tail ta_pend tb_pend wa_n wa_head wa_tail wb_n wb_head wb_tail \
-      na_word nb_word ask_n ask_head ask_tail seq_head seq_tail; do
-    s+="connect -nounset -set f_$r dut.$r\$q; "
-  done
+  local r i regs="tag_n" s=""
+  case $1 in
+    mem_port.order) regs+=" tag_head tag_tail ta_pend tb_pend" ;;
+    mem_port.words) regs+=" wa_n wa_head wa_tail wb_n wb_head wb_tail na_word nb_word" ;;
+    mem_port.ask)   regs+=" ask_n ask_head ask_tail seq_head seq_tail" ;;
+  esac
+  for r in $regs; do s+="connect -nounset -set f_$r dut.$r\$q; "; done
   for ((i = 0; i < 16; i++)); do
-    s+="connect -nounset -set f_tags[$((2 * i + 1)):$((2 * i))] dut.tags.row\$$i\$q; "
-    s+="connect -nounset -set f_wa[$((209 * i + 208)):$((209 * i))] dut.wa.row\$$i\$q; "
-    s+="connect -nounset -set f_wb[$((209 * i + 208)):$((209 * i))] dut.wb.row\$$i\$q; "
+    case $1 in
+      mem_port.order) s+="connect -nounset -set f_tags[$((2 * i + 1)):$((2 * i))] dut.tags.row\$$i\$q; " ;;
+      mem_port.words) s+="connect -nounset -set f_wa[$((209 * i + 208)):$((209 * i))] dut.wa.row\$$i\$q; "
+                      s+="connect -nounset -set f_wb[$((209 * i + 208)):$((209 * i))] dut.wb.row\$$i\$q; " ;;
+    esac
   done
-  for ((i = 0; i < 32; i++)); do s+="connect -nounset -set f_ask[$((22 * i + 21)):$((22 * i))] dut.ask_w\$$i\$q; "; done
+  if [ "$1" = mem_port.ask ]; then
+    for ((i = 0; i < 32; i++)); do s+="connect -nounset -set f_ask[$((22 * i + 21)):$((22 * i))] dut.ask_w\$$i\$q; "; done
+  fi
   echo "$s"
 }
-MP_HIER=$(mp_hier)
 TC_PREP='hierarchy -top \top$tri_cache; rename \top$tri_cache tri_cache'
 prep_of() { case $1 in pair_queue.*) echo "$PQ_PREP";; result_port.*) echo "$RP_PREP";; mem_port.*) echo "$MP_PREP";; tri_cache.*) echo "$TC_PREP";; esac; }
-hier_of() { case $1 in pair_queue.*) echo "$PQ_HIER";; mem_port.*) echo "$MP_HIER";; esac; }
+hier_of() { case $1 in pair_queue.*) echo "$PQ_HIER";; mem_port.*) mp_hier "$1";; esac; }
 
 # build <name> <wrapper> <dut.v> <defines> <engine> <dir>: writes <dir>/<name>.smt2 or .aig
 build() {

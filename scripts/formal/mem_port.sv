@@ -3,8 +3,9 @@
 // scripts/formal.sh runs it. formal.sh reads the chip's Verilog unchanged, keeps only
 // `top$mem_port` and its sub-modules (`hierarchy -top`), renames it `mem_port` and ties the
 // `f_*` wires below to the port's registers (Yosys `connect` after `flatten`): the tag
-// ring's and the node-word FIFOs' counts, pointers and rows, the triangle words' pending
-// flags and the last pair's words (na_word, nb_word).
+// ring's, the node-word FIFOs' and the ask list's counts, pointers and rows, the pair
+// counters (seq_head, seq_tail), the triangle words' pending flags and the last pair's
+// words (na_word, nb_word).
 //
 // One solver step is one rising edge; every input is free (the D_CNTR side, the memory's
 // ready and responses, even responses nobody asked for) except `port_out`, `pf_on`,
@@ -91,18 +92,26 @@ module wrapper (
         .wb_empty(wb_empty)
     );
 
-    // the port's registers (formal.sh: connect); rows are {row 15, ..., row 0}
+    // the port's registers (formal.sh: connect); rows are {row 15, ..., row 0}. Only a
+    // proof's own: a kept wire keeps its registers in every solver step (the word rows
+    // alone made COUNT's BMC five times slower)
     (* keep *) wire [4:0] f_tag_n;
+`ifdef ORDER
     (* keep *) wire [3:0] f_tag_head, f_tag_tail;
     (* keep *) wire [31:0] f_tags;
     (* keep *) wire f_ta_pend, f_tb_pend;
+`endif
+`ifdef WORDS
     (* keep *) wire [4:0] f_wa_n, f_wb_n;
     (* keep *) wire [3:0] f_wa_head, f_wa_tail, f_wb_head, f_wb_tail;
     (* keep *) wire [16*209-1:0] f_wa, f_wb;
     (* keep *) wire [208:0] f_na_word, f_nb_word;
+`endif
+`ifdef ASK
     (* keep *) wire [5:0] f_ask_n;
     (* keep *) wire [4:0] f_ask_head, f_ask_tail, f_seq_head, f_seq_tail;
     (* keep *) wire [32*22-1:0] f_ask;
+`endif
 
     reg f_past_valid = 1'b0;
     always @(posedge clock) f_past_valid <= 1'b1;
