@@ -11,8 +11,10 @@
 # SMT-LIB; without --unroll, z3 4.8.12 hangs on the queue's first step, so every SMT run
 # uses --unroll.)
 #
-# Usage: scripts/formal.sh [--mutate] [proof ...]
-#   (default: every proof; names as printed, e.g. pair_queue.bounds)
+# Usage: scripts/formal.sh [--all] [--mutate] [proof ...]
+#   (default: every proof of PROOFS; names as printed, e.g. pair_queue.bounds)
+#   --all     also the proofs of SLOW_PROOFS (and, with --mutate, their SLOW_MUTANTS): each
+#             takes over a minute of CPU, so CI leaves them out
 #   --mutate  instead runs each hand mutation of MUTANTS below on a copy of the Verilog
 #             (sed, under target/formal/mutants/) against the proof it must break, and
 #             fails unless every mutant makes its proof fail with a counterexample from the
@@ -26,7 +28,8 @@ root=$PWD
 out=$root/target/formal
 mkdir -p "$out"
 
-mutate=0
+mutate=0 all=0
+if [ "${1:-}" = "--all" ]; then all=1; shift; fi
 if [ "${1:-}" = "--mutate" ]; then mutate=1; shift; fi
 only=("$@")
 
@@ -50,10 +53,16 @@ PROOFS=(
   "result_port.port|result_port.sv|rtl/chip_e8m15_k6.v|PORT|ind|2/20|open = taken - given (<= 511), give = offered and out_ready, a kept (hit/uncertain) result leaves exactly when the host reads it, shown with its tag and uncertain bit while offered, back-pressure on TRI_UNIT while the host is not ready, a separate result leaves at once unseen, sure_hit"
   "result_port.cover|result_port.sv|rtl/chip_e8m15_k6.v|COVER|cover|8|reachable: back-pressure for two edges, a take and a give at one edge, 3 pairs open, a separate result passing while the host is not ready, an uncertain result read"
   "mem_port.count|mem_port.sv|rtl/chip_e8m15_k6.v|COUNT|ind|2/20|accept = mem_req_valid && mem_req_ready; outstanding (tag_n) = accepted - answered, <= port_out + 1 and <= 16; outstanding flag; accept only with <= port_out outstanding; resp only while one is outstanding (spurious memory responses ignored), and always then"
-  "mem_port.order|mem_port.sv|rtl/chip_e8m15_k6.v|ORDER|abc|20|each response routed (resp_dst) to the destination of the oldest unanswered accepted request (a FIFO model in the wrapper)"
+  "mem_port.order|mem_port.sv|rtl/chip_e8m15_k6.v|ORDER|ind|1/4|each response routed (resp_dst) to the destination of the oldest unanswered accepted request (a FIFO model in the wrapper, which the tag ring holds); at most one triangle word outstanding per triangle destination, its pending flag set exactly then"
+  "mem_port.words|mem_port.sv|rtl/chip_e8m15_k6.v|WORDS|ind|1/6|node-word FIFOs wa, wb under D_CNTR's rules (read only when not empty; never a 17th word, assumed): count = answered - taken (<= 16), empty flags, tail = head + count; a tracked word (either side, any value) is the DOP unit's word at the issue that takes it, after exactly the words answered before it, and of the later pairs that share it"
   "mem_port.cover|mem_port.sv|rtl/chip_e8m15_k6.v|COVER|cover|20|reachable: 16 outstanding, a request and a response at one edge, a spurious memory response ignored, responses to all four destinations"
   "tri_cache.cache|tri_cache.sv|rtl/chip_e8m15_k6.v|CACHE|bmc|5|tracked (any-constant) triangle id, any stale RAM contents, any mask: a hit only after its fill since the last clear, a hit returns its last fill's word (also through the bypass of a fill into the line being read), found while its line holds it"
   "tri_cache.cover|tri_cache.sv|rtl/chip_e8m15_k6.v|COVER|cover|8|reachable: a hit through the bypass, a hit from the RAM, a miss after another id took the line, a miss after a clear, the highest line"
+)
+
+# proofs run only with --all (over a minute of CPU each)
+SLOW_PROOFS=(
+  "mem_port.ask|mem_port.sv|rtl/chip_e8m15_k6.v|ASK|ind|1/4|ask list (at most 32 words, assumed): a tracked fetched word of a pop (A0 B0 A1 B1) requested once, after exactly the words asked before it, with its side, at its record's address (map 0), at prefetch 0 only for the current pair, offered whenever at the head and allowed; no node request from an empty list"
 )
 
 # ---- mutants: name | proof it must break | DUT Verilog | sed script (applied to a copy)
@@ -74,6 +83,10 @@ MUTANTS=(
   "mem_credit_off_by_one|mem_port.count|rtl/chip_e8m15_k6.v|s/port_free = tag_n\$q <= ((port_out) \& 5'h1f);/port_free = tag_n\$q <= ((port_out) \& 5'h1f) + 5'h1;/"
   "mem_resp_unguarded|mem_port.count|rtl/chip_e8m15_k6.v|s/resp = mem_resp_valid \& (tag_n\$q != 32'h0);/resp = mem_resp_valid;/"
   "mem_tag_head_stuck|mem_port.order|rtl/chip_e8m15_k6.v|s/tag_head\$d = tag_head\$q + 32'h1;/tag_head\$d = tag_head\$q;/"
+  "mem_tag_written_at_head|mem_port.order|rtl/chip_e8m15_k6.v|s/tags\$wsel = c_one16 << tag_tail\$q;/tags\$wsel = c_one16 << tag_head\$q;/"
+  "mem_ta_pend_not_cleared|mem_port.order|rtl/chip_e8m15_k6.v|s/ta_pend\$d = 1'b0;/ta_pend\$d = ta_pend\$q;/"
+  "mem_wa_head_stuck|mem_port.words|rtl/chip_e8m15_k6.v|s/wa_head\$d = wa_head\$q + 32'h1;/wa_head\$d = wa_head\$q;/"
+  "mem_na_word_not_latched|mem_port.words|rtl/chip_e8m15_k6.v|s/na_word\$d = wa\$rdata;/na_word\$d = na_word\$q;/"
   "cache_no_bypass|tri_cache.cache|rtl/chip_e8m15_k6.v|s/byp\$d = fill \& (fill_line == next_line);/byp\$d = 1'b0;/"
   "cache_valid_not_cleared|tri_cache.cache|rtl/chip_e8m15_k6.v|/if (clear) begin/,/end/s/valid\$d = 32'h0;/valid\$d = valid\$q;/"
   "cache_hit_ignores_id|tri_cache.cache|rtl/chip_e8m15_k6.v|s/hit = ((valid\$q \& (c_one128 << line)) != 32'h0) \& (held_id == id);/hit = ((valid\$q \& (c_one128 << line)) != 32'h0);/"
@@ -81,11 +94,38 @@ MUTANTS=(
   "control_syntax_error|pair_queue.bounds|rtl/pair_queue_n4.v|0,/^endmodule/s//endmodul/"
 )
 
+SLOW_MUTANTS=(
+  "mem_ask_head_stuck|mem_port.ask|rtl/chip_e8m15_k6.v|s/ask_head\$d = ask_head\$q + 32'h1;/ask_head\$d = ask_head\$q;/"
+)
+if [ $all = 1 ]; then PROOFS+=("${SLOW_PROOFS[@]}"); MUTANTS+=("${SLOW_MUTANTS[@]}"); fi
 MP_PREP='hierarchy -top \top$mem_port; rename \top$mem_port mem_port'
-MP_HIER='connect -set f_tag_n dut.tag_n$q'
+# mp_hier <proof>: the memory port's registers that proof's wrapper reads, tied to its f_*
+# wires (a row i of w bits: f_x[w i +: w]); -nounset: `connect -set` would otherwise cut a
+# wrapper wire's aliases (the 1-bit f_* that proc used as a mux select are left undriven,
+# then free: a spurious counterexample)
+mp_hier() {
+  local r i regs="tag_n" s=""
+  case $1 in
+    mem_port.order) regs+=" tag_head tag_tail ta_pend tb_pend" ;;
+    mem_port.words) regs+=" wa_n wa_head wa_tail wb_n wb_head wb_tail na_word nb_word" ;;
+    mem_port.ask)   regs+=" ask_n ask_head ask_tail seq_head seq_tail" ;;
+  esac
+  for r in $regs; do s+="connect -nounset -set f_$r dut.$r\$q; "; done
+  for ((i = 0; i < 16; i++)); do
+    case $1 in
+      mem_port.order) s+="connect -nounset -set f_tags[$((2 * i + 1)):$((2 * i))] dut.tags.row\$$i\$q; " ;;
+      mem_port.words) s+="connect -nounset -set f_wa[$((209 * i + 208)):$((209 * i))] dut.wa.row\$$i\$q; "
+                      s+="connect -nounset -set f_wb[$((209 * i + 208)):$((209 * i))] dut.wb.row\$$i\$q; " ;;
+    esac
+  done
+  if [ "$1" = mem_port.ask ]; then
+    for ((i = 0; i < 32; i++)); do s+="connect -nounset -set f_ask[$((22 * i + 21)):$((22 * i))] dut.ask_w\$$i\$q; "; done
+  fi
+  echo "$s"
+}
 TC_PREP='hierarchy -top \top$tri_cache; rename \top$tri_cache tri_cache'
 prep_of() { case $1 in pair_queue.*) echo "$PQ_PREP";; result_port.*) echo "$RP_PREP";; mem_port.*) echo "$MP_PREP";; tri_cache.*) echo "$TC_PREP";; esac; }
-hier_of() { case $1 in pair_queue.*) echo "$PQ_HIER";; mem_port.*) echo "$MP_HIER";; esac; }
+hier_of() { case $1 in pair_queue.*) echo "$PQ_HIER";; mem_port.*) mp_hier "$1";; esac; }
 
 # build <name> <wrapper> <dut.v> <defines> <engine> <dir>: writes <dir>/<name>.smt2 or .aig
 build() {
