@@ -223,7 +223,7 @@ fn datapath(cfg: &ChipConfig, folds: Folds, path: usize) -> Vec<String> {
 /// (an upper bound of its own). Err: the datapath none of whose units is measured in any such
 /// format.
 fn slowest_unit(table: &Table, cfg: &ChipConfig, folds: Folds) -> Result<(String, f64, Vec<String>, Vec<String>), String> {
-    let has = |c: &ChipConfig, path: usize| datapath(c, folds, path).iter().any(|u| table.periods.contains_key(u) || stand_in(c, folds, u).is_some_and(|s| table.periods.contains_key(&s)));
+    let has = |c: &ChipConfig, path: usize| largest_measured(table, c, folds, chains(c, folds)[path].clone()).last().is_some_and(|l| l.iter().any(|(_, r)| r.is_some()));
     let wider = |f: Format| MEASURED_FORMATS.into_iter().filter(move |w| w.exp_bits() >= f.exp_bits() && w.frac_bits() >= f.frac_bits());
     let mut run = *cfg;
     let mut widened = vec![];
