@@ -31,12 +31,15 @@
 //!   clocks per second: a long query would take an hour; the k = 24 chip, slower still, is
 //!   left out).
 
-use collision_chip::cycle::chip::Chip;
-use collision_chip::cycle::drive::{run_query as drive_query, Drive};
-use collision_chip::cycle;
 use collision_chip::chip::reg::{Mode, Order};
 use collision_chip::chip::rtl::QUEUE_BITS;
-use collision_chip::harness::chip_io::{big_stack, drive, queries, run_query, with_chip, ChipQuery, ChipTrace, OnChip, PreparedQuery, QueryImage, RtlPorts};
+use collision_chip::cycle;
+use collision_chip::cycle::chip::Chip;
+use collision_chip::cycle::drive::{run_query as drive_query, Drive};
+use collision_chip::harness::chip_io::{
+    big_stack, drive, queries, run_query, with_chip, ChipQuery, ChipTrace, OnChip, PreparedQuery,
+    QueryImage, RtlPorts,
+};
 use collision_chip::traversal::Traversal;
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -45,9 +48,15 @@ use std::time::Instant;
 /// CPU seconds of this thread: the cycle model's and rust-hdl's time. The machine may be
 /// shared: CPU time, not wall time, is what each simulator spends on the query.
 fn cpu() -> f64 {
-    let mut t = libc::timespec { tv_sec: 0, tv_nsec: 0 };
+    let mut t = libc::timespec {
+        tv_sec: 0,
+        tv_nsec: 0,
+    };
     // SAFETY: clock_gettime writes the timespec it is given
-    assert_eq!(unsafe { libc::clock_gettime(libc::CLOCK_THREAD_CPUTIME_ID, &mut t) }, 0);
+    assert_eq!(
+        unsafe { libc::clock_gettime(libc::CLOCK_THREAD_CPUTIME_ID, &mut t) },
+        0
+    );
     t.tv_sec as f64 + t.tv_nsec as f64 * 1e-9
 }
 
@@ -75,16 +84,28 @@ struct Bench {
 /// are all uncertain in e8m15 (T.CHECK's dearest values: both tries and the proof of
 /// uncertainty), behind a slow host; and two spheres, 5 of 93 uncertain.
 const CHIPS: [Bench; 2] = [
-    Bench { chip: "chip_e8m15_k6", empty: "apart_lifo_first", long: &["big_patch_lifo_all_slow_host", "big_sphere_lifo_all"] },
-    Bench { chip: "chip_b32_k24", empty: "k24_apart_lifo_first", long: &["k24_big_rec_patch_lifo_all"] },
+    Bench {
+        chip: "chip_e8m15_k6",
+        empty: "apart_lifo_first",
+        long: &["big_patch_lifo_all_slow_host", "big_sphere_lifo_all"],
+    },
+    Bench {
+        chip: "chip_b32_k24",
+        empty: "k24_apart_lifo_first",
+        long: &["k24_big_rec_patch_lifo_all"],
+    },
 ];
 
 fn expect(root: &Path, q: &str) -> String {
-    std::fs::read_to_string(root.join(format!("vectors/chip/{q}.expect"))).expect("the expected trace")
+    std::fs::read_to_string(root.join(format!("vectors/chip/{q}.expect")))
+        .expect("the expected trace")
 }
 
 fn query(name: &str) -> (ChipQuery, PreparedQuery) {
-    let q = queries().into_iter().find(|q| q.name == name).expect("the query is in the set");
+    let q = queries()
+        .into_iter()
+        .find(|q| q.name == name)
+        .expect("the query is in the set");
     let p = q.prepare().unwrap_or_else(|e| panic!("{name}: {e}"));
     (q, p)
 }
@@ -97,8 +118,13 @@ fn cycle_model(root: &Path, name: &str, reps: usize) -> (u64, f64, f64, Option<f
     let want = expect(root, name);
     let params = q.params();
     let setup = p.chip.setup(&q.pose);
-    let (mut by_clock, mut skipping, mut golden, mut cycles) = (f64::INFINITY, f64::INFINITY, f64::INFINITY, 0);
-    let traversal = if q.order == Order::Lifo { Traversal::Lifo } else { Traversal::Fifo };
+    let (mut by_clock, mut skipping, mut golden, mut cycles) =
+        (f64::INFINITY, f64::INFINITY, f64::INFINITY, 0);
+    let traversal = if q.order == Order::Lifo {
+        Traversal::Lifo
+    } else {
+        Traversal::Fifo
+    };
     for _ in 0..reps {
         // the golden query of the same pose: the DOP tests and leaf pairs the chip makes,
         // their values computed as the cycle model's units call them, without clocks
@@ -110,23 +136,59 @@ fn cycle_model(root: &Path, name: &str, reps: usize) -> (u64, f64, f64, Option<f
         let t = cpu();
         let tr = {
             let mut c = Chip::new(&p.chip.cfg, params, &p.chip.a, &p.chip.b, &setup, true).unwrap();
-            let d = Drive { memory: q.timing.into(), word_bits: p.chip.layout.word_bits(), reader: q.reader, words: p.chip.image_span(&params.memory), max_cycles: 10_000_000 };
+            let d = Drive {
+                memory: q.timing.into(),
+                word_bits: p.chip.layout.word_bits(),
+                reader: q.reader,
+                words: p.chip.image_span(&params.memory),
+                max_cycles: 10_000_000,
+            };
             let writes = p.chip.control_writes(q.order, q.mode, &params);
             drive_query(&mut c, &writes, &d, false, |_, _| Ok(()), false).unwrap()
         };
         by_clock = by_clock.min(cpu() - t);
-        assert_eq!(tr.text(), want, "{name}: the cycle model's trace (clock by clock)");
+        assert_eq!(
+            tr.text(),
+            want,
+            "{name}: the cycle model's trace (clock by clock)"
+        );
         cycles = tr.cycles;
         let t = cpu();
-        let (tr, _) = cycle::run_query(&p.chip, &setup, q.order, q.mode, params, q.reader, 10_000_000, cycle::Record { counters: true, ..Default::default() }).unwrap();
+        let (tr, _) = cycle::run_query(
+            &p.chip,
+            &setup,
+            q.order,
+            q.mode,
+            params,
+            q.reader,
+            10_000_000,
+            cycle::Record {
+                counters: true,
+                ..Default::default()
+            },
+        )
+        .unwrap();
         skipping = skipping.min(cpu() - t);
-        assert_eq!(tr.text(), want, "{name}: the cycle model's trace (waits skipped)");
+        assert_eq!(
+            tr.text(),
+            want,
+            "{name}: the cycle model's trace (waits skipped)"
+        );
         if let Some(g) = g {
             let c = g.counters;
-            assert_eq!((c.dop_tests, c.tri_tests), (tr.dop_tests, tr.tri_tests), "{name}: the golden query tests the chip's pairs");
+            assert_eq!(
+                (c.dop_tests, c.tri_tests),
+                (tr.dop_tests, tr.tri_tests),
+                "{name}: the golden query tests the chip's pairs"
+            );
         }
     }
-    (cycles, by_clock, skipping, (q.mode == Mode::All).then_some(golden))
+    (
+        cycles,
+        by_clock,
+        skipping,
+        (q.mode == Mode::All).then_some(golden),
+    )
 }
 
 fn rust_hdl(root: &Path, name: &str) -> (u64, f64) {
@@ -138,12 +200,19 @@ fn rust_hdl(root: &Path, name: &str) -> (u64, f64) {
         fn run<C: RtlPorts>(self, mut chip: C) -> Self::Out {
             let (img, q) = (self.0, self.1);
             let t = cpu();
-            let tr = run_query(&mut chip, &img, &drive(&img, q.timing.into(), q.reader, 1_000_000)).expect("the query finishes");
+            let tr = run_query(
+                &mut chip,
+                &img,
+                &drive(&img, q.timing.into(), q.reader, 1_000_000),
+            )
+            .expect("the query finishes");
             (tr, cpu() - t)
         }
     }
     let kind = q.chip;
-    let (tr, secs) = big_stack(move || with_chip::<QUEUE_BITS, { QUEUE_BITS + 1 }, { QUEUE_BITS - 1 }, _>(kind, Timed(img, q)));
+    let (tr, secs) = big_stack(move || {
+        with_chip::<QUEUE_BITS, { QUEUE_BITS + 1 }, { QUEUE_BITS - 1 }, _>(kind, Timed(img, q))
+    });
     assert_eq!(tr.text(), expect(root, name), "rust-hdl's trace of {name}");
     (tr.cycles, secs)
 }
@@ -151,7 +220,11 @@ fn rust_hdl(root: &Path, name: &str) -> (u64, f64) {
 /// Builds (if not cached) and checks the exported chip `b.chip` with scripts/run-chip.sh,
 /// its C++ at `opt`; its binary. `Err` (a note) only if verilator is missing.
 fn verilator(root: &Path, b: &Bench, opt: &str) -> Result<PathBuf, String> {
-    if !Command::new("verilator").arg("--version").output().is_ok_and(|o| o.status.success()) {
+    if !Command::new("verilator")
+        .arg("--version")
+        .output()
+        .is_ok_and(|o| o.status.success())
+    {
         return Err("verilator not installed (apt-get install verilator)".into());
     }
     let src = root.join(format!("rtl/{}.v", b.chip));
@@ -182,8 +255,16 @@ fn verilator(root: &Path, b: &Bench, opt: &str) -> Result<PathBuf, String> {
         .expect("scripts/run-chip.sh");
     let stdout = String::from_utf8_lossy(&out.stdout);
     let passed = format!("{} passed, 0 failed", b.long.len() + 1);
-    assert!(out.status.success() && stdout.contains(&passed), "scripts/run-chip.sh:\n{stdout}{}", String::from_utf8_lossy(&out.stderr));
-    println!("Verilator {opt} {}: built (if not yet built) and checked the traces in {:.0} s", b.chip, t.elapsed().as_secs_f64());
+    assert!(
+        out.status.success() && stdout.contains(&passed),
+        "scripts/run-chip.sh:\n{stdout}{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    println!(
+        "Verilator {opt} {}: built (if not yet built) and checked the traces in {:.0} s",
+        b.chip,
+        t.elapsed().as_secs_f64()
+    );
     Ok(root.join(format!("target/verilog/verilator/{name}/obj/Vchip")))
 }
 
@@ -199,8 +280,16 @@ fn verilator_run(root: &Path, bin: &Path, q_name: &str) -> f64 {
         "+max_cycles=2000000".into(),
     ];
     let t = children_cpu();
-    let out = Command::new(bin).args(&args).current_dir(root).output().unwrap_or_else(|e| panic!("{}: {e}", bin.display()));
-    assert!(out.status.success() && String::from_utf8_lossy(&out.stdout).contains("done "), "{} failed", bin.display());
+    let out = Command::new(bin)
+        .args(&args)
+        .current_dir(root)
+        .output()
+        .unwrap_or_else(|e| panic!("{}: {e}", bin.display()));
+    assert!(
+        out.status.success() && String::from_utf8_lossy(&out.stdout).contains("done "),
+        "{} failed",
+        bin.display()
+    );
     children_cpu() - t
 }
 
@@ -209,7 +298,10 @@ fn rate(cycles: u64, s: f64) -> f64 {
 }
 
 fn row(sim: &str, q: &str, cycles: u64, s: f64) {
-    println!("| {sim} | {q} | {cycles} | {s:.4} | {:.0} |", rate(cycles, s));
+    println!(
+        "| {sim} | {q} | {cycles} | {s:.4} | {:.0} |",
+        rate(cycles, s)
+    );
 }
 
 /// One chip's rows and, per long query, its ratios to Verilator's faster steady state.
@@ -219,10 +311,16 @@ fn row(sim: &str, q: &str, cycles: u64, s: f64) {
 fn bench_chip(root: &Path, b: &Bench) {
     const ROUNDS: usize = 4;
     const REPS: usize = 5;
-    let levels: Result<Vec<_>, String> = ["-O1", "-O3"].into_iter().map(|opt| verilator(root, b, opt).map(|bin| (opt, bin))).collect();
-    let queries: Vec<&str> = std::iter::once(b.empty).chain(b.long.iter().copied()).collect();
+    let levels: Result<Vec<_>, String> = ["-O1", "-O3"]
+        .into_iter()
+        .map(|opt| verilator(root, b, opt).map(|bin| (opt, bin)))
+        .collect();
+    let queries: Vec<&str> = std::iter::once(b.empty)
+        .chain(b.long.iter().copied())
+        .collect();
     let mut models = vec![(0, f64::INFINITY, f64::INFINITY, f64::INFINITY); b.long.len()];
-    let mut verilator_best = vec![vec![f64::INFINITY; queries.len()]; levels.as_ref().map_or(0, Vec::len)];
+    let mut verilator_best =
+        vec![vec![f64::INFINITY; queries.len()]; levels.as_ref().map_or(0, Vec::len)];
     for _ in 0..ROUNDS {
         for ((_, bin), best) in levels.iter().flatten().zip(&mut verilator_best) {
             for (q, best) in queries.iter().zip(best) {
@@ -231,14 +329,24 @@ fn bench_chip(root: &Path, b: &Bench) {
         }
         for (q, m) in b.long.iter().zip(&mut models) {
             let (cycles, by_clock, skipping, golden) = cycle_model(root, q, REPS);
-            *m = (cycles, m.1.min(by_clock), m.2.min(skipping), m.3.min(golden.expect("the long queries ask for all pairs")));
+            *m = (
+                cycles,
+                m.1.min(by_clock),
+                m.2.min(skipping),
+                m.3.min(golden.expect("the long queries ask for all pairs")),
+            );
         }
     }
     println!("\n{}:\n\n| simulator | query | cycles | CPU seconds | clocks/s |\n|---|---|---:|---:|---:|", b.chip);
     for (q, &(cycles, by_clock, skipping, golden)) in b.long.iter().zip(&models) {
         row("cycle model (run_query)", q, cycles, skipping);
         row("cycle model, clock by clock", q, cycles, by_clock);
-        row("golden query of the same pairs (its values, no clocks)", q, cycles, golden);
+        row(
+            "golden query of the same pairs (its values, no clocks)",
+            q,
+            cycles,
+            golden,
+        );
     }
     let levels = match levels {
         Ok(levels) => levels,
@@ -250,7 +358,9 @@ fn bench_chip(root: &Path, b: &Bench) {
     let mut best: Vec<Option<(&str, f64)>> = vec![None; b.long.len()];
     for ((opt, _), times) in levels.iter().zip(&verilator_best) {
         let empty = times[0];
-        for (((q, &secs), &(cycles, ..)), best) in b.long.iter().zip(&times[1..]).zip(&models).zip(&mut best) {
+        for (((q, &secs), &(cycles, ..)), best) in
+            b.long.iter().zip(&times[1..]).zip(&models).zip(&mut best)
+        {
             let steady = secs - empty;
             row(&format!("Verilator {opt}, whole process"), q, cycles, secs);
             println!("| Verilator {opt}, steady state (less start-up {empty:.3} s) | {q} | {cycles} | {steady:.4} | {:.0} |", rate(cycles, steady));
@@ -283,5 +393,8 @@ fn main() {
     row("cycle model (run_query)", SHORT, cycles, skipping);
     row("cycle model, clock by clock", SHORT, cycles, by_clock);
     row("rust-hdl 0.46", SHORT, cycles, hdl);
-    println!("\ncycle model (run_query) / rust-hdl: {:.0}x clocks/s on {SHORT}", hdl / skipping);
+    println!(
+        "\ncycle model (run_query) / rust-hdl: {:.0}x clocks/s on {SHORT}",
+        hdl / skipping
+    );
 }

@@ -15,15 +15,15 @@
 //! orientations).
 
 use collision_chip::chip::config::ChipConfig;
+use collision_chip::chip::reg::Mode;
 use collision_chip::measure::interleaved_best;
 use collision_chip::mesh;
 use collision_chip::oracle;
 use collision_chip::peer::{self, PeerMesh};
 use collision_chip::pose::Pose;
-use collision_chip::query::{place, Chip};
 use collision_chip::pose::{sweep_poses, Sweep};
+use collision_chip::query::{place, Chip};
 use collision_chip::traversal::Traversal;
-use collision_chip::chip::reg::Mode;
 
 fn main() {
     let quick = std::env::args().any(|a| a == "--quick");
@@ -32,27 +32,41 @@ fn main() {
     println!("| mesh | distance | pairs | golden (us) | parry peer (us) | oracle (us) | parry / golden | golden DOP tests / leaf pairs | peer box tests / leaf pairs |");
     println!("|---|---|---|---|---|---|---|---|---|");
     for name in ["bunny", "dragon-11k"] {
-        let m = mesh::resolve(name).expect("built-in mesh").scaled_into_unit_cube().expect("in range");
+        let m = mesh::resolve(name)
+            .expect("built-in mesh")
+            .scaled_into_unit_cube()
+            .expect("in range");
         let tris = m.triangles_f64();
         let chip = Chip::new(&tris, &tris, ChipConfig::default()).expect("chip");
         let pm = PeerMesh::new(&m);
         for d in distances {
-            let poses: Vec<Pose> = sweep_poses(&Sweep { distances: vec![d], orientations, seed: 1 })
-                .expect("sweep")
-                .iter()
-                .map(|p| p.pose)
-                .collect();
+            let poses: Vec<Pose> = sweep_poses(&Sweep {
+                distances: vec![d],
+                orientations,
+                seed: 1,
+            })
+            .expect("sweep")
+            .iter()
+            .map(|p| p.pose)
+            .collect();
             let per = |x: usize| x as f64 / poses.len() as f64;
             let (mut pairs, mut dop_tests, mut tri_tests) = (0, 0, 0);
             for p in &poses {
                 let r = chip.query(p, Mode::All, Traversal::Lifo);
-                (pairs, dop_tests, tri_tests) = (pairs + r.pairs.len(), dop_tests + r.counters.dop_tests as usize, tri_tests + r.counters.tri_tests as usize);
+                (pairs, dop_tests, tri_tests) = (
+                    pairs + r.pairs.len(),
+                    dop_tests + r.counters.dop_tests as usize,
+                    tri_tests + r.counters.tri_tests as usize,
+                );
             }
             let peer_work = poses.iter().fold([0; 3], |s, p| {
                 let w = peer::work(&pm, &pm, p);
                 [s[0] + w[0], s[1] + w[1], s[2] + w[2]]
             });
-            assert_eq!(peer_work[2], pairs, "the peer and the golden model find the same pairs");
+            assert_eq!(
+                peer_work[2], pairs,
+                "the peer and the golden model find the same pairs"
+            );
             let [golden, peer, exact] = interleaved_best(
                 &poses,
                 1.0,

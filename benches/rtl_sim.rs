@@ -57,13 +57,24 @@ fn main() {
 
 fn bench() {
     let all = units::all();
-    let unit = all.iter().find(|u| u.name == UNIT).unwrap_or_else(|| panic!("no unit {UNIT} in harness::units::all()"));
+    let unit = all
+        .iter()
+        .find(|u| u.name == UNIT)
+        .unwrap_or_else(|| panic!("no unit {UNIT} in harness::units::all()"));
     let text = unit.vectors();
     let v = parse_dop_vectors(&text, b32::WIDTH).unwrap_or_else(|e| panic!("{UNIT} vectors: {e}"));
     assert_eq!((v.k, v.latency), (24, unit.latency as usize));
     let overlaps = v.cases.iter().filter(|c| c.overlap).count();
-    println!("{UNIT}: {} preload cycles, {} cases ({overlaps} overlap), latency {}", v.preload.len(), v.cases.len(), v.latency);
-    assert!(overlaps > 0 && overlaps < v.cases.len(), "the golden vectors should hold both verdicts");
+    println!(
+        "{UNIT}: {} preload cycles, {} cases ({overlaps} overlap), latency {}",
+        v.preload.len(),
+        v.cases.len(),
+        v.latency
+    );
+    assert!(
+        overlaps > 0 && overlaps < v.cases.len(),
+        "the golden vectors should hold both verdicts"
+    );
 
     let mut rows = vec![rust_hdl_row(&v)];
     match verilator_row(unit, &text, &v) {
@@ -73,10 +84,19 @@ fn bench() {
 
     println!("\n| simulator | cycles simulated | seconds | cycles/s |\n|---|---:|---:|---:|");
     for r in &rows {
-        println!("| {} | {} | {:.3} | {:.0} |", r.sim, r.cycles, r.secs, r.rate());
+        println!(
+            "| {} | {} | {:.3} | {:.0} |",
+            r.sim,
+            r.cycles,
+            r.secs,
+            r.rate()
+        );
     }
     if let [hdl, vl] = &rows[..] {
-        println!("\nVerilator / rust-hdl: {:.0}x cycles/s ({UNIT})", vl.rate() / hdl.rate());
+        println!(
+            "\nVerilator / rust-hdl: {:.0}x cycles/s ({UNIT})",
+            vl.rate() / hdl.rate()
+        );
     }
 }
 
@@ -84,7 +104,10 @@ fn bench() {
 fn rust_hdl_row(v: &DopVectors) -> Row {
     let t = Instant::now();
     let mut uut = b32::dop_unit24_top(Rounding::TowardPositive);
-    println!("rust-hdl: DopUnit24 built in {:.2} s", t.elapsed().as_secs_f64());
+    println!(
+        "rust-hdl: DopUnit24 built in {:.2} s",
+        t.elapsed().as_secs_f64()
+    );
     let t = Instant::now();
     let run = run_dop_vectors(&mut uut, v).unwrap_or_else(|e| panic!("rust-hdl {UNIT}: {e}"));
     let secs = t.elapsed().as_secs_f64();
@@ -92,20 +115,42 @@ fn rust_hdl_row(v: &DopVectors) -> Row {
     let bad: Vec<_> = run.mismatches(v).collect();
     for &(i, o) in bad.iter().take(10) {
         let c = &v.cases[i];
-        println!("MISMATCH case {i} (line {}): overlap {} tag_out {:04x} (expected {} {:04x})", c.line, o.overlap as u8, o.tag, c.overlap as u8, c.tag_out);
+        println!(
+            "MISMATCH case {i} (line {}): overlap {} tag_out {:04x} (expected {} {:04x})",
+            c.line, o.overlap as u8, o.tag, c.overlap as u8, c.tag_out
+        );
     }
-    assert!(bad.is_empty(), "rust-hdl {UNIT}: {} of {} cases differ from the golden vectors", bad.len(), v.cases.len());
+    assert!(
+        bad.is_empty(),
+        "rust-hdl {UNIT}: {} of {} cases differ from the golden vectors",
+        bad.len(),
+        v.cases.len()
+    );
     // the compare itself: one flipped expectation must be caught
     let mut wrong = v.clone();
     wrong.cases[7].overlap ^= true;
-    assert_eq!(run.mismatches(&wrong).map(|(i, _)| i).collect::<Vec<_>>(), [7], "mismatches() missed a flipped overlap");
-    println!("rust-hdl: {} cases passed, {} cycles in {secs:.2} s", v.cases.len(), run.cycles);
-    Row { sim: "rust-hdl 0.46 (`simulate`)", cycles: run.cycles, secs }
+    assert_eq!(
+        run.mismatches(&wrong).map(|(i, _)| i).collect::<Vec<_>>(),
+        [7],
+        "mismatches() missed a flipped overlap"
+    );
+    println!(
+        "rust-hdl: {} cases passed, {} cycles in {secs:.2} s",
+        v.cases.len(),
+        run.cycles
+    );
+    Row {
+        sim: "rust-hdl 0.46 (`simulate`)",
+        cycles: run.cycles,
+        secs,
+    }
 }
 
 fn verilator_version() -> Option<String> {
     let out = Command::new("verilator").arg("--version").output().ok()?;
-    out.status.success().then(|| String::from_utf8_lossy(&out.stdout).trim().to_string())
+    out.status
+        .success()
+        .then(|| String::from_utf8_lossy(&out.stdout).trim().to_string())
 }
 
 /// `N passed, M failed` (the testbench's summary line) from a run's stdout.
@@ -121,7 +166,8 @@ fn summary(stdout: &str) -> Option<(usize, usize)> {
 /// `scripts/run-verilator.sh`, then time one more run of the built binary.
 /// `Err` (a note, not a failure) only if verilator is not installed.
 fn verilator_row(unit: &units::Unit, text: &str, v: &DopVectors) -> Result<Row, String> {
-    let version = verilator_version().ok_or("verilator not installed (apt-get install verilator)")?;
+    let version =
+        verilator_version().ok_or("verilator not installed (apt-get install verilator)")?;
     println!("\n{version}");
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     let dir = root.join("target").join("rtl-sim");
@@ -130,7 +176,11 @@ fn verilator_row(unit: &units::Unit, text: &str, v: &DopVectors) -> Result<Row, 
     let t = Instant::now();
     let vpath = dir.join(format!("{UNIT}.v"));
     write_if_changed(&vpath, &unit.verilog());
-    println!("Verilog from .verilog() in {:.1} s: {}", t.elapsed().as_secs_f64(), vpath.display());
+    println!(
+        "Verilog from .verilog() in {:.1} s: {}",
+        t.elapsed().as_secs_f64(),
+        vpath.display()
+    );
 
     // the long file: everything before the first case (headers, latency, preload), then the
     // case lines over and over
@@ -151,7 +201,15 @@ fn verilator_row(unit: &units::Unit, text: &str, v: &DopVectors) -> Result<Row, 
     let out = Command::new(root.join("scripts").join("run-verilator.sh"))
         .arg(&vpath)
         .arg(&hpath)
-        .args(["--name", UNIT, "--in-valid", "valid_in", "--out-valid", "valid_out", "--out"])
+        .args([
+            "--name",
+            UNIT,
+            "--in-valid",
+            "valid_in",
+            "--out-valid",
+            "valid_out",
+            "--out",
+        ])
         .arg(&out_dir)
         .env("VERILATOR_WNO", "-Wno-WIDTH -Wno-UNOPTFLAT")
         .current_dir(root)
@@ -159,22 +217,52 @@ fn verilator_row(unit: &units::Unit, text: &str, v: &DopVectors) -> Result<Row, 
         .expect("scripts/run-verilator.sh");
     let stdout = String::from_utf8_lossy(&out.stdout);
     if !out.status.success() {
-        panic!("scripts/run-verilator.sh failed ({}):\n{stdout}\n{}", out.status, String::from_utf8_lossy(&out.stderr));
+        panic!(
+            "scripts/run-verilator.sh failed ({}):\n{stdout}\n{}",
+            out.status,
+            String::from_utf8_lossy(&out.stderr)
+        );
     }
-    assert_eq!(summary(&stdout), Some((BIG_CASES, 0)), "run-verilator.sh output:\n{stdout}");
-    println!("run-verilator.sh: built and ran in {:.1} s: {BIG_CASES} passed, 0 failed", t.elapsed().as_secs_f64());
+    assert_eq!(
+        summary(&stdout),
+        Some((BIG_CASES, 0)),
+        "run-verilator.sh output:\n{stdout}"
+    );
+    println!(
+        "run-verilator.sh: built and ran in {:.1} s: {BIG_CASES} passed, 0 failed",
+        t.elapsed().as_secs_f64()
+    );
 
     let bin = out_dir.join("obj").join(format!("V{UNIT}"));
     let t = Instant::now();
-    let out = Command::new(&bin).output().unwrap_or_else(|e| panic!("{}: {e}", bin.display()));
+    let out = Command::new(&bin)
+        .output()
+        .unwrap_or_else(|e| panic!("{}: {e}", bin.display()));
     let secs = t.elapsed().as_secs_f64();
     let stdout = String::from_utf8_lossy(&out.stdout);
-    assert!(out.status.success(), "{} failed ({}):\n{stdout}", bin.display(), out.status);
-    assert_eq!(summary(&stdout), Some((BIG_CASES, 0)), "{} output:\n{stdout}", bin.display());
+    assert!(
+        out.status.success(),
+        "{} failed ({}):\n{stdout}",
+        bin.display(),
+        out.status
+    );
+    assert_eq!(
+        summary(&stdout),
+        Some((BIG_CASES, 0)),
+        "{} output:\n{stdout}",
+        bin.display()
+    );
     // the testbench's cycles: one per preload line and case, then latency + 1 to flush
     let cycles = (v.preload.len() + BIG_CASES + v.latency + 1) as u64;
-    println!("Verilator: {} ({BIG_CASES} cases) in {secs:.2} s", bin.display());
-    Ok(Row { sim: "Verilator (`--binary -O3`)", cycles, secs })
+    println!(
+        "Verilator: {} ({BIG_CASES} cases) in {secs:.2} s",
+        bin.display()
+    );
+    Ok(Row {
+        sim: "Verilator (`--binary -O3`)",
+        cycles,
+        secs,
+    })
 }
 
 /// Writes `text` to `path` unless it already holds it (keeps the mtime for Verilator's make).

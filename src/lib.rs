@@ -10,20 +10,20 @@
 //! per unit); `traversal`, `query`, `hard_cases`; [`cycle`] (when things happen); [`rtl`]
 //! (the hardware); [`harness`] (host side, Verilog flows); [`scene`]; [`report`].
 
+pub mod chip;
+pub mod cycle;
+pub mod dop;
+pub mod fold;
 pub mod format;
+pub mod golden;
+pub mod hard_cases;
+pub mod harness;
+pub mod measure;
 pub mod mesh;
 pub mod oracle;
 #[cfg(feature = "parry")]
 pub mod peer;
 pub mod pose;
-pub mod chip;
-pub mod cycle;
-pub mod dop;
-pub mod fold;
-pub mod golden;
-pub mod harness;
-pub mod hard_cases;
-pub mod measure;
 pub mod query;
 pub mod report;
 pub mod rtl;

@@ -6,7 +6,9 @@ use std::hint::black_box;
 /// `f` over `items` on every core, results in the items' order (the output of a parallel
 /// run is the serial run's).
 pub fn parallel_map<T: Sync, R: Send>(items: &[T], f: impl Fn(usize, &T) -> R + Sync) -> Vec<R> {
-    let threads = std::thread::available_parallelism().map_or(1, |n| n.get()).min(items.len().max(1));
+    let threads = std::thread::available_parallelism()
+        .map_or(1, |n| n.get())
+        .min(items.len().max(1));
     let next = std::sync::atomic::AtomicUsize::new(0);
     let mut out: Vec<(usize, R)> = std::thread::scope(|s| {
         let workers: Vec<_> = (0..threads)
@@ -22,7 +24,10 @@ pub fn parallel_map<T: Sync, R: Send>(items: &[T], f: impl Fn(usize, &T) -> R + 
                 })
             })
             .collect();
-        workers.into_iter().flat_map(|w| w.join().expect("a worker thread panicked")).collect()
+        workers
+            .into_iter()
+            .flat_map(|w| w.join().expect("a worker thread panicked"))
+            .collect()
     });
     out.sort_by_key(|(i, _)| *i);
     out.into_iter().map(|(_, r)| r).collect()
@@ -47,7 +52,12 @@ pub fn mean_seconds<T, R>(items: &[T], min_seconds: f64, mut f: impl FnMut(&T) -
 /// in turn, `rounds` times, each round `min_seconds / rounds` long), the fastest round of each
 /// kept: on a noisy machine the sides of a ratio meet the same noise, and the best round
 /// is the least disturbed.
-pub fn interleaved_best<T, R, const N: usize>(items: &[T], min_seconds: f64, rounds: usize, fs: [&dyn Fn(&T) -> R; N]) -> [f64; N] {
+pub fn interleaved_best<T, R, const N: usize>(
+    items: &[T],
+    min_seconds: f64,
+    rounds: usize,
+    fs: [&dyn Fn(&T) -> R; N],
+) -> [f64; N] {
     let mut best = [f64::INFINITY; N];
     for _ in 0..rounds.max(1) {
         for (b, f) in best.iter_mut().zip(&fs) {
@@ -78,7 +88,10 @@ pub fn fastest_us<R>(mut f: impl FnMut() -> R) -> (R, f64) {
 /// This thread's CPU time in seconds.
 #[cfg(unix)]
 pub fn thread_seconds() -> f64 {
-    let mut ts = libc::timespec { tv_sec: 0, tv_nsec: 0 };
+    let mut ts = libc::timespec {
+        tv_sec: 0,
+        tv_nsec: 0,
+    };
     // SAFETY: `ts` is a valid timespec for clock_gettime to write.
     let r = unsafe { libc::clock_gettime(libc::CLOCK_THREAD_CPUTIME_ID, &mut ts) };
     assert_eq!(r, 0, "clock_gettime(CLOCK_THREAD_CPUTIME_ID) failed");
@@ -89,7 +102,9 @@ pub fn thread_seconds() -> f64 {
 #[cfg(not(unix))]
 pub fn thread_seconds() -> f64 {
     static T0: std::sync::OnceLock<std::time::Instant> = std::sync::OnceLock::new();
-    T0.get_or_init(std::time::Instant::now).elapsed().as_secs_f64()
+    T0.get_or_init(std::time::Instant::now)
+        .elapsed()
+        .as_secs_f64()
 }
 
 /// The environment variables the library reads; `cchip` checks them before any work and
@@ -118,10 +133,19 @@ pub fn env_flag(name: &str) -> Result<bool, String> {
 
 /// `CCHIP_MAX_MEMORY_MB` in bytes, if it is set: a whole number of MiB, within 2^64 bytes.
 fn max_memory() -> Result<Option<u64>, String> {
-    let Some(v) = std::env::var_os(MAX_MEMORY_MB) else { return Ok(None) };
-    let bad = |why: &str| format!("{MAX_MEMORY_MB}={v:?} {why}: give a whole number of MB (e.g. {MAX_MEMORY_MB}=2048), or unset it to use the memory this machine has available");
-    let mb: u64 = v.to_str().and_then(|s| s.trim().parse().ok()).ok_or_else(|| bad("is not a whole number of MB"))?;
-    mb.checked_mul(1 << 20).map(Some).ok_or_else(|| bad("is more than 2^64 bytes"))
+    let Some(v) = std::env::var_os(MAX_MEMORY_MB) else {
+        return Ok(None);
+    };
+    let bad = |why: &str| {
+        format!("{MAX_MEMORY_MB}={v:?} {why}: give a whole number of MB (e.g. {MAX_MEMORY_MB}=2048), or unset it to use the memory this machine has available")
+    };
+    let mb: u64 = v
+        .to_str()
+        .and_then(|s| s.trim().parse().ok())
+        .ok_or_else(|| bad("is not a whole number of MB"))?;
+    mb.checked_mul(1 << 20)
+        .map(Some)
+        .ok_or_else(|| bad("is more than 2^64 bytes"))
 }
 
 /// Bytes this process may still allocate: the smaller of the kernel's `MemAvailable` and the
@@ -135,7 +159,11 @@ pub fn memory_available() -> Result<Option<u64>, String> {
     let read = |p: &str| std::fs::read_to_string(p).ok();
     let kernel = read("/proc/meminfo").and_then(|m| {
         let line = m.lines().find(|l| l.starts_with("MemAvailable:"))?;
-        line.split_whitespace().nth(1)?.parse::<u64>().ok().map(|kb| kb << 10)
+        line.split_whitespace()
+            .nth(1)?
+            .parse::<u64>()
+            .ok()
+            .map(|kb| kb << 10)
     });
     let cgroup = read("/sys/fs/cgroup/memory.max").and_then(|s| s.trim().parse::<u64>().ok());
     Ok([kernel, cgroup].into_iter().flatten().min())

@@ -19,15 +19,30 @@ pub struct PeerMesh {
 
 impl PeerMesh {
     pub fn new(m: &Mesh) -> PeerMesh {
-        let vs = m.vertices.iter().map(|p| Vector::new(p.x, p.y, p.z)).collect();
-        PeerMesh { mesh: TriMesh::new(vs, m.triangles.clone()).expect("parry trimesh"), tris: m.triangles_f64() }
+        let vs = m
+            .vertices
+            .iter()
+            .map(|p| Vector::new(p.x, p.y, p.z))
+            .collect();
+        PeerMesh {
+            mesh: TriMesh::new(vs, m.triangles.clone()).expect("parry trimesh"),
+            tris: m.triangles_f64(),
+        }
     }
 }
 
 fn parry_pose(p: &Pose) -> PPose {
     let r = p.rotation();
     let m = DMat3::from_cols_array(&[
-        r[(0, 0)], r[(1, 0)], r[(2, 0)], r[(0, 1)], r[(1, 1)], r[(2, 1)], r[(0, 2)], r[(1, 2)], r[(2, 2)],
+        r[(0, 0)],
+        r[(1, 0)],
+        r[(2, 0)],
+        r[(0, 1)],
+        r[(1, 1)],
+        r[(2, 1)],
+        r[(0, 2)],
+        r[(1, 2)],
+        r[(2, 2)],
     ]);
     PPose::from_parts(Vector::new(p.t[0], p.t[1], p.t[2]), DQuat::from_mat3(&m))
 }
@@ -53,9 +68,15 @@ fn traverse(a: &PeerMesh, b: &PeerMesh, pose: &Pose, on_box: impl Fn()) -> (usiz
     let (r, t) = (pose.rotation(), pose.translation());
     let leaves = a.mesh.bvh().leaf_pairs(b.mesh.bvh(), |n1, n2| {
         on_box();
-        n1.aabb().loosened(1e-9).intersects(&n2.aabb().transform_by(&pos12))
+        n1.aabb()
+            .loosened(1e-9)
+            .intersects(&n2.aabb().transform_by(&pos12))
     });
     leaves.fold((0, 0), |(n, hits), (i, j)| {
-        (n + 1, hits + oracle::tri_tri(&a.tris[i as usize], &b.tris[j as usize].map(|p| r * p + t)) as usize)
+        (
+            n + 1,
+            hits + oracle::tri_tri(&a.tris[i as usize], &b.tris[j as usize].map(|p| r * p + t))
+                as usize,
+        )
     })
 }

@@ -17,13 +17,19 @@ pub struct Pose {
 
 impl Default for Pose {
     fn default() -> Self {
-        Pose { rot_deg: [0.0; 3], t: [0.0; 3] }
+        Pose {
+            rot_deg: [0.0; 3],
+            t: [0.0; 3],
+        }
     }
 }
 
 impl Pose {
     pub fn new(rx: f64, ry: f64, rz: f64, tx: f64, ty: f64, tz: f64) -> Pose {
-        Pose { rot_deg: [rx, ry, rz], t: [tx, ty, tz] }
+        Pose {
+            rot_deg: [rx, ry, rz],
+            t: [tx, ty, tz],
+        }
     }
 
     /// Parses `rx,ry,rz,tx,ty,tz` (degrees, then lengths).
@@ -45,7 +51,12 @@ impl Pose {
 
     /// The pose as `rx,ry,rz,tx,ty,tz`, the form [`Pose::parse`] reads (shortest round trip).
     pub fn text(&self) -> String {
-        let v: Vec<String> = self.rot_deg.iter().chain(&self.t).map(|x| format!("{x:?}")).collect();
+        let v: Vec<String> = self
+            .rot_deg
+            .iter()
+            .chain(&self.t)
+            .map(|x| format!("{x:?}"))
+            .collect();
         v.join(",")
     }
 
@@ -140,11 +151,25 @@ pub fn sweep_poses(s: &Sweep) -> Result<Vec<ScenePose>, String> {
     }
     let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(s.seed);
     let rots: Vec<[f64; 3]> = (0..s.orientations)
-        .map(|_| [rng.random_range(0.0..360.0), rng.random_range(0.0..360.0), rng.random_range(0.0..360.0)])
+        .map(|_| {
+            [
+                rng.random_range(0.0..360.0),
+                rng.random_range(0.0..360.0),
+                rng.random_range(0.0..360.0),
+            ]
+        })
         .collect();
     Ok(s.distances
         .iter()
-        .flat_map(|&d| rots.iter().map(move |&r| ScenePose { pose: Pose { rot_deg: r, t: [d, 0.0, 0.0] }, distance: Some(d) }))
+        .flat_map(|&d| {
+            rots.iter().map(move |&r| ScenePose {
+                pose: Pose {
+                    rot_deg: r,
+                    t: [d, 0.0, 0.0],
+                },
+                distance: Some(d),
+            })
+        })
         .collect())
 }
 
@@ -155,14 +180,20 @@ mod tests {
     #[test]
     fn quarter_turn_about_z_is_exact() {
         let p = Pose::new(0.0, 0.0, 90.0, 1.0, 0.0, 0.0);
-        assert_eq!(p.apply(&Point3::new(1.0, 0.0, 0.0)), Point3::new(1.0, 1.0, 0.0));
+        assert_eq!(
+            p.apply(&Point3::new(1.0, 0.0, 0.0)),
+            Point3::new(1.0, 1.0, 0.0)
+        );
     }
 
     #[test]
     fn order_is_x_then_y_then_z() {
         // Rx(90) sends y to z; then Ry(90) sends z to x.
         let p = Pose::new(90.0, 90.0, 0.0, 0.0, 0.0, 0.0);
-        assert_eq!(p.apply(&Point3::new(0.0, 1.0, 0.0)), Point3::new(1.0, 0.0, 0.0));
+        assert_eq!(
+            p.apply(&Point3::new(0.0, 1.0, 0.0)),
+            Point3::new(1.0, 0.0, 0.0)
+        );
     }
 
     /// Issue 16: -1e-15 degrees was reduced to 360.0 and taken for a quarter-turn multiple,
@@ -173,9 +204,22 @@ mod tests {
         assert!((tiny - Matrix3::identity()).amax() < 1e-16, "{tiny}");
         assert_eq!(tiny[(2, 1)], -(1e-15f64.to_radians()).sin());
         // 1e20 = 2^20 * 5^20 is an f64, and 1e20 mod 360 = 280 (1e20 = 0 mod 40, 1 mod 9).
-        assert_eq!(Pose::new(0.0, 0.0, 1e20, 0.0, 0.0, 0.0).rotation(), Pose::new(0.0, 0.0, 280.0, 0.0, 0.0, 0.0).rotation());
-        for (neg, pos) in [(-90.0, 270.0), (-180.0, 180.0), (-270.0, 90.0), (-360.0, 0.0), (-450.0, 270.0)] {
-            assert_eq!(Pose::new(neg, 0.0, 0.0, 0.0, 0.0, 0.0).rotation(), Pose::new(pos, 0.0, 0.0, 0.0, 0.0, 0.0).rotation(), "{neg}");
+        assert_eq!(
+            Pose::new(0.0, 0.0, 1e20, 0.0, 0.0, 0.0).rotation(),
+            Pose::new(0.0, 0.0, 280.0, 0.0, 0.0, 0.0).rotation()
+        );
+        for (neg, pos) in [
+            (-90.0, 270.0),
+            (-180.0, 180.0),
+            (-270.0, 90.0),
+            (-360.0, 0.0),
+            (-450.0, 270.0),
+        ] {
+            assert_eq!(
+                Pose::new(neg, 0.0, 0.0, 0.0, 0.0, 0.0).rotation(),
+                Pose::new(pos, 0.0, 0.0, 0.0, 0.0, 0.0).rotation(),
+                "{neg}"
+            );
         }
     }
 
@@ -188,14 +232,32 @@ mod tests {
 
     #[test]
     fn sweep_size_is_checked_first() {
-        let e = sweep_poses(&Sweep { distances: vec![1.0, 2.0], orientations: usize::MAX, seed: 1 }).unwrap_err();
+        let e = sweep_poses(&Sweep {
+            distances: vec![1.0, 2.0],
+            orientations: usize::MAX,
+            seed: 1,
+        })
+        .unwrap_err();
         assert!(e.contains("at most 1000000 poses"), "{e}");
-        assert_eq!(sweep_poses(&Sweep { distances: vec![1.0], orientations: MAX_POSES, seed: 1 }).unwrap().len(), MAX_POSES);
+        assert_eq!(
+            sweep_poses(&Sweep {
+                distances: vec![1.0],
+                orientations: MAX_POSES,
+                seed: 1
+            })
+            .unwrap()
+            .len(),
+            MAX_POSES
+        );
     }
 
     #[test]
     fn sweep_is_distances_times_orientations_and_seeded() {
-        let s = Sweep { distances: vec![2.0, 1.0], orientations: 3, seed: 7 };
+        let s = Sweep {
+            distances: vec![2.0, 1.0],
+            orientations: 3,
+            seed: 7,
+        };
         let p = sweep_poses(&s).unwrap();
         assert_eq!(p.len(), 6);
         assert_eq!(p[0].pose.rot_deg, p[3].pose.rot_deg);

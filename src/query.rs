@@ -77,7 +77,13 @@ impl Chip {
             ObjectImage::build(b, &cfg)
         };
         let tri_side = a_image.tri_side(&b_image);
-        Ok(Chip { cfg, a: a_image, b: b_image, layout: Layout::new(&cfg), tri_side })
+        Ok(Chip {
+            cfg,
+            a: a_image,
+            b: b_image,
+            layout: Layout::new(&cfg),
+            tri_side,
+        })
     }
 
     /// The host's f64 geometry of A (`0`) or B (`1`): the triangles the images were built from.
@@ -91,8 +97,16 @@ impl Chip {
         let (r, t, b) = (pose.rotation(), pose.translation(), self.geometry(1));
         // B placed one triangle at a time (a placed copy would be most of B's memory); the
         // prefix up to the first triangle out of range, if any, names it
-        let bad = b.iter().position(|tri| tri.iter().any(|p| (r * p + t).iter().any(|&c| !oracle::in_range(c))));
-        bad.map_or(Ok(()), |i| oracle::check_range(&place(&b[..=i], pose), &format!("object B at pose {}", pose.text())))
+        let bad = b.iter().position(|tri| {
+            tri.iter()
+                .any(|p| (r * p + t).iter().any(|&c| !oracle::in_range(c)))
+        });
+        bad.map_or(Ok(()), |i| {
+            oracle::check_range(
+                &place(&b[..=i], pose),
+                &format!("object B at pose {}", pose.text()),
+            )
+        })
     }
 
     pub fn setup(&self, pose: &Pose) -> HostSetup {
@@ -108,7 +122,12 @@ impl Chip {
     /// Word addresses the memory image spans on `memory` (its records as
     /// [`RecordMap`](crate::chip::layout::RecordMap) places them).
     pub fn image_span(&self, memory: &crate::chip::memory::Memory) -> u32 {
-        let records = [self.a.node_records(), self.b.node_records(), self.a.tri_count() as u32, self.b.tri_count() as u32];
+        let records = [
+            self.a.node_records(),
+            self.b.node_records(),
+            self.a.tri_count() as u32,
+            self.b.tri_count() as u32,
+        ];
         crate::chip::layout::RecordMap::new(&self.layout, memory).extent(records)
     }
 
@@ -125,13 +144,20 @@ impl Chip {
         let (x, host) = (self.b.tree.coord_bound(), self.host(pose));
         let frames = HostSetup::frames(&self.cfg, &host.rot, &host.t, x, self.tri_side);
         let lanes = DopLanes::new(&self.cfg, &host.rot, &host.t, x);
-        traversal::run(&self.cfg, &self.a, &self.b, &frames, lanes, &host, mode, traversal)
+        traversal::run(
+            &self.cfg, &self.a, &self.b, &frames, lanes, &host, mode, traversal,
+        )
     }
 
     /// What the host settles uncertain pairs with at `pose`: the pose's rotation, computed
     /// once per query.
     pub fn host(&self, pose: &Pose) -> Host<'_> {
-        Host { a: self.geometry(0), b: self.geometry(1), rot: pose.rotation(), t: pose.translation() }
+        Host {
+            a: self.geometry(0),
+            b: self.geometry(1),
+            rot: pose.rotation(),
+            t: pose.translation(),
+        }
     }
 }
 
@@ -158,7 +184,10 @@ impl Chip {
     /// The host's settling of `uncertain` at `pose` by the exact oracle: how many intersect.
     pub fn settle(&self, pose: &Pose, uncertain: &[(u32, u32)]) -> usize {
         let host = self.host(pose);
-        uncertain.iter().filter(|&&(a, b)| host.settle(a, b)).count()
+        uncertain
+            .iter()
+            .filter(|&&(a, b)| host.settle(a, b))
+            .count()
     }
 }
 
@@ -184,7 +213,11 @@ fn exact_pairs_by(a: &[Tri], b: &[Tri], pose: &Pose, chunk: usize) -> Vec<(u32, 
     let mut pairs: Vec<(u32, u32)> = b
         .chunks(chunk)
         .zip((0..).step_by(chunk))
-        .flat_map(|(chunk, first)| oracle::intersecting_pairs(a, &place(chunk, pose)).into_iter().map(move |(i, j)| (i, j + first as u32)))
+        .flat_map(|(chunk, first)| {
+            oracle::intersecting_pairs(a, &place(chunk, pose))
+                .into_iter()
+                .map(move |(i, j)| (i, j + first as u32))
+        })
         .collect();
     pairs.sort_unstable();
     pairs
@@ -207,7 +240,10 @@ impl Accuracy {
             Mode::All => Accuracy::compare(chip, exact),
             Mode::First => Accuracy {
                 misses: (chip.is_empty() && !exact.is_empty()) as u64,
-                extras: chip.iter().filter(|p| exact.binary_search(p).is_err()).count() as u64,
+                extras: chip
+                    .iter()
+                    .filter(|p| exact.binary_search(p).is_err())
+                    .count() as u64,
             },
         }
     }
@@ -234,16 +270,34 @@ mod tests {
     #[test]
     fn out_of_range_geometry_is_refused() {
         use nalgebra::Point3;
-        let tri = |s: f64, z: f64| [Point3::new(0.0, 0.0, z), Point3::new(s, 0.0, z), Point3::new(0.0, s, z)];
+        let tri = |s: f64, z: f64| {
+            [
+                Point3::new(0.0, 0.0, z),
+                Point3::new(s, 0.0, z),
+                Point3::new(0.0, s, z),
+            ]
+        };
         let cfg = ChipConfig::default();
-        let e = Chip::new(&[tri(1.0, 0.0)], &[tri(1e-70, 0.0)], cfg).err().unwrap();
-        assert!(e.starts_with("object B, triangle 0: coordinate 1e-70 is out of range"), "{e}");
+        let e = Chip::new(&[tri(1.0, 0.0)], &[tri(1e-70, 0.0)], cfg)
+            .err()
+            .unwrap();
+        assert!(
+            e.starts_with("object B, triangle 0: coordinate 1e-70 is out of range"),
+            "{e}"
+        );
         let chip = Chip::new(&[tri(1.0, 0.0)], &[tri(1.0, 0.0)], cfg).unwrap();
-        chip.check_pose(&Pose::new(30.0, 1e-10, 0.0, 1e60, 0.0, 0.0)).unwrap();
+        chip.check_pose(&Pose::new(30.0, 1e-10, 0.0, 1e60, 0.0, 0.0))
+            .unwrap();
         // A translation beyond 1e60, and a rotation so small that its sine is 1.7e-302.
-        for pose in [Pose::new(0.0, 0.0, 0.0, 2e60, 0.0, 0.0), Pose::new(1e-300, 0.0, 0.0, 0.0, 0.0, 0.0)] {
+        for pose in [
+            Pose::new(0.0, 0.0, 0.0, 2e60, 0.0, 0.0),
+            Pose::new(1e-300, 0.0, 0.0, 0.0, 0.0, 0.0),
+        ] {
             let e = chip.check_pose(&pose).unwrap_err();
-            assert!(e.starts_with("object B at pose ") && e.contains("1e-60 to 1e60"), "{e}");
+            assert!(
+                e.starts_with("object B at pose ") && e.contains("1e-60 to 1e60"),
+                "{e}"
+            );
         }
     }
 
@@ -255,7 +309,11 @@ mod tests {
     fn b_equal_to_a_bit_for_bit_is_a_copy() {
         use nalgebra::Point3;
         let mut a = crate::mesh::soup(30, 1).triangles_f64();
-        a.push([Point3::new(0.0, 0.0, 0.0), Point3::new(1.0, 0.0, 0.0), Point3::new(0.0, 1.0, 0.0)]);
+        a.push([
+            Point3::new(0.0, 0.0, 0.0),
+            Point3::new(1.0, 0.0, 0.0),
+            Point3::new(0.0, 1.0, 0.0),
+        ]);
         let cfg = ChipConfig::default();
         let same = Chip::new(&a, &a, cfg).unwrap();
         assert_eq!(same.a.tree.id(), same.b.tree.id(), "copied");
@@ -277,11 +335,17 @@ mod tests {
     /// [`ORACLE_CHUNK`] is too large for a test's meshes to split.
     #[test]
     fn exact_pairs_by_chunk_equal_the_whole_search() {
-        let (a, b) = (crate::mesh::soup(60, 1).triangles_f64(), crate::mesh::soup(60, 2).triangles_f64());
+        let (a, b) = (
+            crate::mesh::soup(60, 1).triangles_f64(),
+            crate::mesh::soup(60, 2).triangles_f64(),
+        );
         let pose = Pose::new(10.0, 20.0, 30.0, 0.05, 0.0, 0.0);
         let mut whole = oracle::intersecting_pairs(&a, &place(&b, &pose));
         whole.sort_unstable();
-        assert!(whole.len() > 5 && whole.iter().any(|p| p.1 >= 40), "a test with pairs in later chunks: {whole:?}");
+        assert!(
+            whole.len() > 5 && whole.iter().any(|p| p.1 >= 40),
+            "a test with pairs in later chunks: {whole:?}"
+        );
         for chunk in [1, 7, 32, 60, 1000] {
             assert_eq!(exact_pairs_by(&a, &b, &pose, chunk), whole, "chunk {chunk}");
         }
@@ -296,17 +360,48 @@ mod tests {
         check_memory(1 << 20, 1 << 20, 24, Some(need)).unwrap();
         check_memory(1 << 20, 1 << 20, 24, None).unwrap();
         let e = check_memory(1 << 20, 1 << 20, 24, Some(need - 1)).unwrap_err();
-        assert!(e.starts_with("objects of 1048576 and 1048576 triangles at k = 24 need about 768 MB") && e.contains("CCHIP_MAX_MEMORY_MB"), "{e}");
+        assert!(
+            e.starts_with("objects of 1048576 and 1048576 triangles at k = 24 need about 768 MB")
+                && e.contains("CCHIP_MAX_MEMORY_MB"),
+            "{e}"
+        );
     }
 
     #[test]
     fn accuracy_counts_misses_and_extras() {
         let exact = [(0, 1), (2, 2), (5, 0)];
         let chip = [(0, 1), (3, 3), (5, 0), (9, 9)];
-        assert_eq!(Accuracy::of(Mode::All, &chip, &exact), Accuracy { misses: 1, extras: 2 });
-        assert_eq!(Accuracy::of(Mode::All, &[], &exact), Accuracy { misses: 3, extras: 0 });
-        assert_eq!(Accuracy::of(Mode::First, &[(2, 2)], &exact), Accuracy::default());
-        assert_eq!(Accuracy::of(Mode::First, &[], &exact), Accuracy { misses: 1, extras: 0 });
-        assert_eq!(Accuracy::of(Mode::First, &[(1, 1)], &[]), Accuracy { misses: 0, extras: 1 });
+        assert_eq!(
+            Accuracy::of(Mode::All, &chip, &exact),
+            Accuracy {
+                misses: 1,
+                extras: 2
+            }
+        );
+        assert_eq!(
+            Accuracy::of(Mode::All, &[], &exact),
+            Accuracy {
+                misses: 3,
+                extras: 0
+            }
+        );
+        assert_eq!(
+            Accuracy::of(Mode::First, &[(2, 2)], &exact),
+            Accuracy::default()
+        );
+        assert_eq!(
+            Accuracy::of(Mode::First, &[], &exact),
+            Accuracy {
+                misses: 1,
+                extras: 0
+            }
+        );
+        assert_eq!(
+            Accuracy::of(Mode::First, &[(1, 1)], &[]),
+            Accuracy {
+                misses: 0,
+                extras: 1
+            }
+        );
     }
 }

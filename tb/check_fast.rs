@@ -24,13 +24,24 @@ fn checked_query(query: impl FnOnce() -> QueryResult) -> QueryResult {
     let before = checked();
     let r = query();
     let after = checked();
-    let made = (after.dop_tests - before.dop_tests, after.tri_tests - before.tri_tests);
-    assert_eq!(made, (r.counters.dop_tests, r.counters.tri_tests), "decisions compared in check mode against the tests made");
+    let made = (
+        after.dop_tests - before.dop_tests,
+        after.tri_tests - before.tri_tests,
+    );
+    assert_eq!(
+        made,
+        (r.counters.dop_tests, r.counters.tri_tests),
+        "decisions compared in check mode against the tests made"
+    );
     r
 }
 
 fn formats() -> [Format; 3] {
-    [Format::BINARY32, Format::REDUCED, Format::new(5, 4).unwrap()]
+    [
+        Format::BINARY32,
+        Format::REDUCED,
+        Format::new(5, 4).unwrap(),
+    ]
 }
 
 proptest! {
@@ -59,12 +70,40 @@ proptest! {
 
 #[test]
 fn fast_paths_equal_the_bit_exact_path_on_meshes() {
-    let poses = sweep_poses(&Sweep { distances: vec![2.2, 1.4, 1.0, 0.6], orientations: 2, seed: 3 }).unwrap();
+    let poses = sweep_poses(&Sweep {
+        distances: vec![2.2, 1.4, 1.0, 0.6],
+        orientations: 2,
+        seed: 3,
+    })
+    .unwrap();
     for name in ["bunny", "teapot", "dragon-11k"] {
-        let tris = mesh::resolve(name).unwrap().scaled_into_unit_cube().unwrap().triangles_f64();
-        for (format, tri_rounding) in formats().into_iter().flat_map(|f| [(f, Rounding::NearestEven), (f, Rounding::TowardPositive)]) {
-            let chip = Chip::new(&tris, &tris, ChipConfig { format: format.into(), tri_rounding, ..Default::default() }).unwrap();
-            let tri_tests: u64 = poses.iter().map(|sp| checked_query(|| chip.query(&sp.pose, Mode::All, Traversal::Lifo)).counters.tri_tests).sum();
+        let tris = mesh::resolve(name)
+            .unwrap()
+            .scaled_into_unit_cube()
+            .unwrap()
+            .triangles_f64();
+        for (format, tri_rounding) in formats()
+            .into_iter()
+            .flat_map(|f| [(f, Rounding::NearestEven), (f, Rounding::TowardPositive)])
+        {
+            let chip = Chip::new(
+                &tris,
+                &tris,
+                ChipConfig {
+                    format: format.into(),
+                    tri_rounding,
+                    ..Default::default()
+                },
+            )
+            .unwrap();
+            let tri_tests: u64 = poses
+                .iter()
+                .map(|sp| {
+                    checked_query(|| chip.query(&sp.pose, Mode::All, Traversal::Lifo))
+                        .counters
+                        .tri_tests
+                })
+                .sum();
             assert!(tri_tests > 0, "{name}: no triangle pair tested");
         }
     }
@@ -72,12 +111,27 @@ fn fast_paths_equal_the_bit_exact_path_on_meshes() {
 
 #[test]
 fn fast_paths_equal_the_bit_exact_path_on_hard_cases() {
-    let moves = [Pose::new(13.0, -71.0, 33.0, 0.0, 0.0, 0.0), Pose::new(90.0, 0.0, 0.0, 0.0, 0.0, 0.0)];
+    let moves = [
+        Pose::new(13.0, -71.0, 33.0, 0.0, 0.0, 0.0),
+        Pose::new(90.0, 0.0, 0.0, 0.0, 0.0, 0.0),
+    ];
     for case in collision_chip::hard_cases::load_catalogue().unwrap() {
-        let cases = [case.clone(), case.moved_by(&moves[0]), case.moved_by(&moves[1])];
+        let cases = [
+            case.clone(),
+            case.moved_by(&moves[0]),
+            case.moved_by(&moves[1]),
+        ];
         for c in &cases {
             for format in formats() {
-                let chip = Chip::new(&c.a, &c.b, ChipConfig { format: format.into(), ..Default::default() }).unwrap();
+                let chip = Chip::new(
+                    &c.a,
+                    &c.b,
+                    ChipConfig {
+                        format: format.into(),
+                        ..Default::default()
+                    },
+                )
+                .unwrap();
                 for traversal in Traversal::ALL {
                     checked_query(|| chip.query(&c.pose, Mode::All, traversal));
                 }

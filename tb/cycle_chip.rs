@@ -11,8 +11,8 @@
 //! memory requests of each query (`<query>.requests`), which run-chip.sh compares with the
 //! exported Verilog's.
 
-use collision_chip::chip::config::{ChipConfig, DopRounding, Formats};
 use collision_chip::chip::config::MemLayout;
+use collision_chip::chip::config::{ChipConfig, DopRounding, Formats};
 use collision_chip::chip::memory::{Ddr, MemTiming, Memory};
 use collision_chip::chip::params::Params;
 use collision_chip::chip::probes::PROBES;
@@ -45,7 +45,10 @@ const MAX_CYCLES: u64 = 5_000_000;
 
 /// A cycle-model run that counts where the clocks went.
 fn counted() -> cycle::Record<'static> {
-    cycle::Record { counters: true, ..Default::default() }
+    cycle::Record {
+        counters: true,
+        ..Default::default()
+    }
 }
 
 fn vectors() -> PathBuf {
@@ -55,7 +58,12 @@ fn vectors() -> PathBuf {
 /// The memory requests a query's chip makes that the memory accepts, as the testbench
 /// prints them with `+requests` (`request <cycle> <word address>`), clock by clock.
 fn requests(p: &PreparedQuery, q: &ChipQuery) -> (ChipTrace, String) {
-    let idx = |name: &str| PROBES.iter().position(|p| (p.0, p.1) == ("memory", name)).unwrap();
+    let idx = |name: &str| {
+        PROBES
+            .iter()
+            .position(|p| (p.0, p.1) == ("memory", name))
+            .unwrap()
+    };
     let (valid, ready, addr) = (idx("req_valid"), idx("req_ready"), idx("req_addr"));
     let mut text = String::new();
     let mut obs = |t: u64, v: &[u64]| {
@@ -64,8 +72,21 @@ fn requests(p: &PreparedQuery, q: &ChipQuery) -> (ChipTrace, String) {
         }
         Ok(())
     };
-    let rec = cycle::Record { probes: Some(&mut obs), ..Default::default() };
-    let (tr, _) = cycle::run_query(&p.chip, &p.chip.setup(&q.pose), q.order, q.mode, q.params(), q.reader, MAX_CYCLES, rec).unwrap();
+    let rec = cycle::Record {
+        probes: Some(&mut obs),
+        ..Default::default()
+    };
+    let (tr, _) = cycle::run_query(
+        &p.chip,
+        &p.chip.setup(&q.pose),
+        q.order,
+        q.mode,
+        q.params(),
+        q.reader,
+        MAX_CYCLES,
+        rec,
+    )
+    .unwrap();
     (tr, text)
 }
 
@@ -80,19 +101,46 @@ fn every_checked_in_trace() {
     for q in queries() {
         let p = q.prepare().unwrap();
         let params = q.params();
-        let (tr, stats) = cycle::run_query(&p.chip, &p.chip.setup(&q.pose), q.order, q.mode, params, q.reader, MAX_CYCLES, counted()).unwrap();
+        let (tr, stats) = cycle::run_query(
+            &p.chip,
+            &p.chip.setup(&q.pose),
+            q.order,
+            q.mode,
+            params,
+            q.reader,
+            MAX_CYCLES,
+            counted(),
+        )
+        .unwrap();
         let stats = stats.expect("counted");
-        println!("{}: {} ({stats:?})", q.name, tr.text().lines().last().unwrap());
-        tr.check(q.mode, &p.golden_all).unwrap_or_else(|e| panic!("{}: {e}", q.name));
+        println!(
+            "{}: {} ({stats:?})",
+            q.name,
+            tr.text().lines().last().unwrap()
+        );
+        tr.check(q.mode, &p.golden_all)
+            .unwrap_or_else(|e| panic!("{}: {e}", q.name));
         let (clocked, reqs) = requests(&p, &q);
         assert_eq!(clocked, tr, "{}: clock by clock", q.name);
-        assert_eq!(reqs.lines().count() as u64, tr.node_fetches + tr.tri_fetches, "{}: a request per word fetched", q.name);
+        assert_eq!(
+            reqs.lines().count() as u64,
+            tr.node_fetches + tr.tri_fetches,
+            "{}: a request per word fetched",
+            q.name
+        );
         if bless {
             std::fs::write(out.join(format!("{}.expect", q.name)), tr.text()).unwrap();
         } else {
             let path = vectors().join(format!("{}.expect", q.name));
-            let want = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
-            assert_eq!(tr.text(), want, "{}: the cycle model's trace differs from {}", q.name, path.display());
+            let want = std::fs::read_to_string(&path)
+                .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+            assert_eq!(
+                tr.text(),
+                want,
+                "{}: the cycle model's trace differs from {}",
+                q.name,
+                path.display()
+            );
         }
         // with the trace it belongs to: the checked-in one, or the one being blessed
         std::fs::write(out.join(format!("{}.requests", q.name)), reqs).unwrap();
@@ -102,10 +150,16 @@ fn every_checked_in_trace() {
 /// Every expected trace in vectors/chip/ belongs to a query of the set (no stale trace).
 #[test]
 fn no_stale_expected_trace() {
-    let names: Vec<String> = queries().iter().map(|q| format!("{}.expect", q.name)).collect();
+    let names: Vec<String> = queries()
+        .iter()
+        .map(|q| format!("{}.expect", q.name))
+        .collect();
     for e in std::fs::read_dir(vectors()).unwrap() {
         let f = e.unwrap().file_name().into_string().unwrap();
-        assert!(!f.ends_with(".expect") || names.contains(&f), "vectors/chip/{f}: no query of chip_io::queries() has it: delete it");
+        assert!(
+            !f.ends_with(".expect") || names.contains(&f),
+            "vectors/chip/{f}: no query of chip_io::queries() has it: delete it"
+        );
     }
 }
 
@@ -117,35 +171,78 @@ fn no_stale_expected_trace() {
 fn large_queries_cover_what_they_claim() {
     let large: Vec<_> = queries().into_iter().filter(|q| q.large).collect();
     assert!(large.len() >= 4);
-    let (mut back_pressure, mut mixed, mut orders_modes) = (false, false, std::collections::BTreeSet::new());
+    let (mut back_pressure, mut mixed, mut orders_modes) =
+        (false, false, std::collections::BTreeSet::new());
     for q in &large {
         let p = q.prepare().unwrap();
         let params = q.params();
-        let (tr, st) = cycle::run_query(&p.chip, &p.chip.setup(&q.pose), q.order, q.mode, params, q.reader, MAX_CYCLES, counted()).unwrap();
+        let (tr, st) = cycle::run_query(
+            &p.chip,
+            &p.chip.setup(&q.pose),
+            q.order,
+            q.mode,
+            params,
+            q.reader,
+            MAX_CYCLES,
+            counted(),
+        )
+        .unwrap();
         let st = st.expect("counted");
         let rust_hdl_seconds = tr.cycles as f64 / q.chip.rtl_clocks_per_second();
-        assert!(rust_hdl_seconds > 500.0 && tr.cycles <= 200_000, "{}: {} cycles", q.name, tr.cycles);
+        assert!(
+            rust_hdl_seconds > 500.0 && tr.cycles <= 200_000,
+            "{}: {} cycles",
+            q.name,
+            tr.cycles
+        );
         back_pressure |= st.back_pressure > 0 && st.result_wait > 0;
         let (hits, unc) = tr.pairs();
         mixed |= !hits.is_empty() && !unc.is_empty();
         orders_modes.insert((q.order == Order::Lifo, q.mode == Mode::First));
     }
-    assert!(back_pressure, "no large query stalls TRI_UNIT on a slow host");
+    assert!(
+        back_pressure,
+        "no large query stalls TRI_UNIT on a slow host"
+    );
     assert!(mixed, "no large query mixes sure hits with uncertain pairs");
     assert_eq!(orders_modes.len(), 4, "both orders in both modes");
 }
 
 /// A configuration to run: k, the DOP and T.CHECK formats (binary32 or e8m15 each), DOP
 /// rounding, the triangle cache's lines, the memory layout and node records held.
-fn config(k: usize, dop_binary32: bool, tri_binary32: bool, outward: bool, tri_cache: u32, (records, node_cache): (bool, u32)) -> ChipConfig {
-    let f = |b32| if b32 { Format::BINARY32 } else { Format::REDUCED };
+fn config(
+    k: usize,
+    dop_binary32: bool,
+    tri_binary32: bool,
+    outward: bool,
+    tri_cache: u32,
+    (records, node_cache): (bool, u32),
+) -> ChipConfig {
+    let f = |b32| {
+        if b32 {
+            Format::BINARY32
+        } else {
+            Format::REDUCED
+        }
+    };
     ChipConfig {
         k,
-        format: Formats { dop: f(dop_binary32), tri: f(tri_binary32) },
-        dop_rounding: if outward { DopRounding::Outward } else { DopRounding::NearestEven },
+        format: Formats {
+            dop: f(dop_binary32),
+            tri: f(tri_binary32),
+        },
+        dop_rounding: if outward {
+            DopRounding::Outward
+        } else {
+            DopRounding::NearestEven
+        },
         tri_rounding: Rounding::NearestEven,
         tri_cache,
-        layout: if records { MemLayout::Records } else { MemLayout::Words },
+        layout: if records {
+            MemLayout::Records
+        } else {
+            MemLayout::Words
+        },
         node_cache,
     }
 }
@@ -154,48 +251,109 @@ fn config(k: usize, dop_binary32: bool, tri_binary32: bool, outward: bool, tri_c
 /// so that words span bursts and banks conflict).
 fn memory() -> impl Strategy<Value = Memory> {
     prop_oneof![
-        (1u32..=6, 1u32..=3, prop::option::of(16u32..=1024)).prop_map(|(latency, interval, bus_bits)| Memory::Ideal(MemTiming { latency, interval, bus_bits })),
-        (1u32..=8, 6u32..=12, 5u32..=8, 0u32..=3, 0u32..=4, 0u32..=12).prop_map(|(banks, page, bus, burst, hit, miss)| {
-            let burst = 1 << burst;
-            Memory::Ddr(Ddr { banks, page_bytes: 1 << page, bus_bits: 1 << bus, burst, hit: burst + hit, miss: burst + hit + miss })
-        }),
+        (1u32..=6, 1u32..=3, prop::option::of(16u32..=1024)).prop_map(
+            |(latency, interval, bus_bits)| Memory::Ideal(MemTiming {
+                latency,
+                interval,
+                bus_bits
+            })
+        ),
+        (1u32..=8, 6u32..=12, 5u32..=8, 0u32..=3, 0u32..=4, 0u32..=12).prop_map(
+            |(banks, page, bus, burst, hit, miss)| {
+                let burst = 1 << burst;
+                Memory::Ddr(Ddr {
+                    banks,
+                    page_bytes: 1 << page,
+                    bus_bits: 1 << bus,
+                    burst,
+                    hit: burst + hit,
+                    miss: burst + hit + miss,
+                })
+            }
+        ),
     ]
 }
 
 fn params() -> impl Strategy<Value = Params> {
     (
-        (10u32..=14, 1u32..=20, 3u32..=140, 1u32..=64, prop_oneof![3 => Just(1u32), 1 => (1u32..=16).prop_map(|h| 2 * h)]),
-        (1u32..=2, 1u32..=32, 1u32..=16, prop_oneof![Just(0u32), 1u32..=12], memory(), prop_oneof![3 => Just(1u32), 1 => prop::sample::select(vec![2u32, 3, 6])]),
+        (
+            10u32..=14,
+            1u32..=20,
+            3u32..=140,
+            1u32..=64,
+            prop_oneof![3 => Just(1u32), 1 => (1u32..=16).prop_map(|h| 2 * h)],
+        ),
+        (
+            1u32..=2,
+            1u32..=32,
+            1u32..=16,
+            prop_oneof![Just(0u32), 1u32..=12],
+            memory(),
+            prop_oneof![3 => Just(1u32), 1 => prop::sample::select(vec![2u32, 3, 6])],
+        ),
     )
-        .prop_map(|((q, dl, tl, tf, ti), (sp, cr, os, pf, memory, di))| Params {
-            queue_entries: 1 << q,
-            // a folded DOP unit's latency is its own (k = 6: a pair every 2, 3 or 6 clocks)
-            dop_latency: if di == 1 { dl } else { Params::RTL.dop_latency },
-            dop_interval: di,
-            // a folded TRI_UNIT's latency is its schedule's
-            tri_latency: if ti == 1 { tl } else { Params::RTL.tri_latency },
-            tri_fifo: tf,
-            tri_interval: ti,
-            issue_spacing: sp,
-            credit: cr,
-            outstanding: os,
-            prefetch: pf,
-            memory,
-        })
+        .prop_map(
+            |((q, dl, tl, tf, ti), (sp, cr, os, pf, memory, di))| Params {
+                queue_entries: 1 << q,
+                // a folded DOP unit's latency is its own (k = 6: a pair every 2, 3 or 6 clocks)
+                dop_latency: if di == 1 { dl } else { Params::RTL.dop_latency },
+                dop_interval: di,
+                // a folded TRI_UNIT's latency is its schedule's
+                tri_latency: if ti == 1 { tl } else { Params::RTL.tri_latency },
+                tri_fifo: tf,
+                tri_interval: ti,
+                issue_spacing: sp,
+                credit: cr,
+                outstanding: os,
+                prefetch: pf,
+                memory,
+            },
+        )
 }
 
 /// Runs a query on the cycle model, with idle stretches skipped or (`probe`) clock by clock.
-fn run(chip: &Chip, pose: &Pose, lifo: bool, mode: Mode, p: Params, reader: Reader, probe: bool) -> Result<ChipTrace, String> {
+fn run(
+    chip: &Chip,
+    pose: &Pose,
+    lifo: bool,
+    mode: Mode,
+    p: Params,
+    reader: Reader,
+    probe: bool,
+) -> Result<ChipTrace, String> {
     if !probe {
-        return cycle::run_query(chip, &chip.setup(pose), order(lifo), mode, p, reader, MAX_CYCLES, counted()).map(|r| r.0);
+        return cycle::run_query(
+            chip,
+            &chip.setup(pose),
+            order(lifo),
+            mode,
+            p,
+            reader,
+            MAX_CYCLES,
+            counted(),
+        )
+        .map(|r| r.0);
     }
     let setup = chip.setup(pose);
     let mut c = CycleChip::new(&chip.cfg, p, &chip.a, &chip.b, &setup, true)?;
-    let d = Drive { memory: p.memory, word_bits: chip.layout.word_bits(), reader, words: chip.image_span(&p.memory), max_cycles: MAX_CYCLES };
-    run_query(&mut c, &chip.control_writes(order(lifo), mode, &p), &d, true, |_, p| {
-        assert_eq!(p.map(|v| v.len()), Some(PROBES.len()));
-        Ok(())
-    }, false)
+    let d = Drive {
+        memory: p.memory,
+        word_bits: chip.layout.word_bits(),
+        reader,
+        words: chip.image_span(&p.memory),
+        max_cycles: MAX_CYCLES,
+    };
+    run_query(
+        &mut c,
+        &chip.control_writes(order(lifo), mode, &p),
+        &d,
+        true,
+        |_, p| {
+            assert_eq!(p.map(|v| v.len()), Some(PROBES.len()));
+            Ok(())
+        },
+        false,
+    )
     .map_err(|e| e.0)
 }
 
@@ -254,14 +412,33 @@ proptest! {
 /// the first: 16, 17, 20); the answers golden's, clock by clock equal to the skipping run.
 #[test]
 fn folded_dop_unit_takes_a_pair_every_interval() {
-    let chip = Chip::new(&collision_chip::mesh::builtin("sphere:200").unwrap().triangles_f64(), &collision_chip::mesh::builtin("torus:200").unwrap().triangles_f64(), CHIP_CONFIG).unwrap();
+    let chip = Chip::new(
+        &collision_chip::mesh::builtin("sphere:200")
+            .unwrap()
+            .triangles_f64(),
+        &collision_chip::mesh::builtin("torus:200")
+            .unwrap()
+            .triangles_f64(),
+        CHIP_CONFIG,
+    )
+    .unwrap();
     let pose = Pose::new(10.0, 20.0, 30.0, 0.5, 0.0, 0.0);
     let golden = chip.query(&pose, Mode::All, Traversal::Lifo);
-    let idx = |unit: &str, name: &str| PROBES.iter().position(|p| (p.0, p.1) == (unit, name)).unwrap();
+    let idx = |unit: &str, name: &str| {
+        PROBES
+            .iter()
+            .position(|p| (p.0, p.1) == (unit, name))
+            .unwrap()
+    };
     let (issue, valid) = (idx("d_cntr", "issue"), idx("dop", "valid_out"));
     for (ii, latency) in [(2u32, 16u64), (3, 17), (6, 20)] {
         // one request outstanding would space issues by the memory; prefetch keeps words ready
-        let p = Params { dop_interval: ii, prefetch: 8, outstanding: 8, ..Params::RTL };
+        let p = Params {
+            dop_interval: ii,
+            prefetch: 8,
+            outstanding: 8,
+            ..Params::RTL
+        };
         let (mut issues, mut first_out) = (vec![], None);
         let mut obs = |t: u64, v: &[u64]| {
             if v[issue] == 1 {
@@ -272,16 +449,50 @@ fn folded_dop_unit_takes_a_pair_every_interval() {
             }
             Ok(())
         };
-        let rec = cycle::Record { probes: Some(&mut obs), ..Default::default() };
-        let (clocked, _) = cycle::run_query(&chip, &chip.setup(&pose), Order::Lifo, Mode::All, p, Reader::default(), MAX_CYCLES, rec).unwrap();
+        let rec = cycle::Record {
+            probes: Some(&mut obs),
+            ..Default::default()
+        };
+        let (clocked, _) = cycle::run_query(
+            &chip,
+            &chip.setup(&pose),
+            Order::Lifo,
+            Mode::All,
+            p,
+            Reader::default(),
+            MAX_CYCLES,
+            rec,
+        )
+        .unwrap();
         clocked.check(Mode::All, &golden).unwrap();
         assert_eq!(issues.len() as u64, clocked.dop_tests, "ii {ii}");
         let gaps: Vec<u64> = issues.windows(2).map(|w| w[1] - w[0]).collect();
         let odd = issues.windows(2).find(|w| (w[1] - w[0]) % ii as u64 != 0);
-        assert!(odd.is_none(), "ii {ii}: pairs issued in cycles {odd:?}, not a multiple of {ii} apart");
-        assert!(gaps.contains(&(ii as u64)), "ii {ii}: no two pairs back to back");
-        assert_eq!(first_out, Some(issues[0] + latency), "ii {ii}: the first result {latency} clocks after the first pair");
-        let skipped = cycle::run_query(&chip, &chip.setup(&pose), Order::Lifo, Mode::All, p, Reader::default(), MAX_CYCLES, counted()).unwrap().0;
+        assert!(
+            odd.is_none(),
+            "ii {ii}: pairs issued in cycles {odd:?}, not a multiple of {ii} apart"
+        );
+        assert!(
+            gaps.contains(&(ii as u64)),
+            "ii {ii}: no two pairs back to back"
+        );
+        assert_eq!(
+            first_out,
+            Some(issues[0] + latency),
+            "ii {ii}: the first result {latency} clocks after the first pair"
+        );
+        let skipped = cycle::run_query(
+            &chip,
+            &chip.setup(&pose),
+            Order::Lifo,
+            Mode::All,
+            p,
+            Reader::default(),
+            MAX_CYCLES,
+            counted(),
+        )
+        .unwrap()
+        .0;
         assert_eq!(skipped, clocked, "ii {ii}");
     }
 }
@@ -294,11 +505,22 @@ fn folded_dop_unit_takes_a_pair_every_interval() {
 /// no prefetch, a memory word one clock after its request.
 #[test]
 fn rtl_point_is_the_rtl() {
-    use collision_chip::rtl::{e8m15::TriUnit, b32};
     use collision_chip::chip::rtl::{CREDIT, DOP_LATENCY};
+    use collision_chip::rtl::{b32, e8m15::TriUnit};
     let p = Params::RTL;
-    assert_eq!((p.dop_latency, p.tri_latency, p.tri_fifo, p.credit), (DOP_LATENCY as u32, TriUnit::LATENCY as u32, TriUnit::FIFO_DEPTH as u32, CREDIT as u32));
-    assert_eq!((b32::TriUnit::LATENCY, b32::TriUnit::FIFO_DEPTH), (TriUnit::LATENCY, TriUnit::FIFO_DEPTH));
+    assert_eq!(
+        (p.dop_latency, p.tri_latency, p.tri_fifo, p.credit),
+        (
+            DOP_LATENCY as u32,
+            TriUnit::LATENCY as u32,
+            TriUnit::FIFO_DEPTH as u32,
+            CREDIT as u32
+        )
+    );
+    assert_eq!(
+        (b32::TriUnit::LATENCY, b32::TriUnit::FIFO_DEPTH),
+        (TriUnit::LATENCY, TriUnit::FIFO_DEPTH)
+    );
     let literal = Params {
         queue_entries: 1024,
         dop_latency: 15,
@@ -310,7 +532,11 @@ fn rtl_point_is_the_rtl() {
         credit: 16,
         outstanding: 1,
         prefetch: 0,
-        memory: Memory::Ideal(MemTiming { latency: 1, interval: 1, bus_bits: None }),
+        memory: Memory::Ideal(MemTiming {
+            latency: 1,
+            interval: 1,
+            bus_bits: None,
+        }),
     };
     assert_eq!(p, literal);
 }
@@ -319,16 +545,35 @@ fn rtl_point_is_the_rtl() {
 /// only golden pairs, and its trace does not pass for an answer.
 #[test]
 fn a_small_queue_overflows() {
-    let q = queries().into_iter().find(|q| q.name == "sphere_fifo_all").unwrap();
+    let q = queries()
+        .into_iter()
+        .find(|q| q.name == "sphere_fifo_all")
+        .unwrap();
     let p = q.prepare().unwrap();
     for order in [Order::Fifo, Order::Lifo] {
-        let params = Params { queue_entries: 3, ..Params::RTL };
-        let (tr, st) = cycle::run_query(&p.chip, &p.chip.setup(&q.pose), order, Mode::All, params, Reader::default(), MAX_CYCLES, counted()).unwrap();
+        let params = Params {
+            queue_entries: 3,
+            ..Params::RTL
+        };
+        let (tr, st) = cycle::run_query(
+            &p.chip,
+            &p.chip.setup(&q.pose),
+            order,
+            Mode::All,
+            params,
+            Reader::default(),
+            MAX_CYCLES,
+            counted(),
+        )
+        .unwrap();
         let st = st.expect("counted");
         assert!(tr.overflow && tr.max_depth == 3, "{}", tr.text());
         assert!(tr.check(Mode::All, &p.golden_all).is_err());
         let (hits, unc) = tr.pairs();
-        assert!(hits.iter().chain(&unc).all(|x| p.golden_all.pairs.contains(x) || p.golden_all.uncertain.contains(x)));
+        assert!(hits
+            .iter()
+            .chain(&unc)
+            .all(|x| p.golden_all.pairs.contains(x) || p.golden_all.uncertain.contains(x)));
         assert!(st.halted > 0 && tr.dop_tests < p.golden_all.counters.dop_tests);
     }
 }
@@ -336,21 +581,96 @@ fn a_small_queue_overflows() {
 /// Bad parameters are refused before anything runs, naming the parameter.
 #[test]
 fn bad_parameters_are_refused() {
-    let chip = Chip::new(&soup(4, 1).triangles_f64(), &soup(4, 2).triangles_f64(), CHIP_CONFIG).unwrap();
+    let chip = Chip::new(
+        &soup(4, 1).triangles_f64(),
+        &soup(4, 2).triangles_f64(),
+        CHIP_CONFIG,
+    )
+    .unwrap();
     let setup = chip.setup(&Pose::new(0.0, 0.0, 0.0, 0.0, 0.0, 0.0));
     for (p, what) in [
-        (Params { queue_entries: 0, ..Params::RTL }, "queue_entries"),
-        (Params { issue_spacing: 3, ..Params::RTL }, "issue_spacing"),
-        (Params { outstanding: 65, ..Params::RTL }, "outstanding"),
-        (Params { prefetch: 257, ..Params::RTL }, "prefetch"),
-        (Params { tri_interval: 5, ..Params::RTL }, "tri_interval"),
-        (Params { dop_interval: 0, ..Params::RTL }, "dop_interval must be at least 1"),
-        (Params { dop_interval: 4, ..Params::RTL }, "dop_interval 4 does not divide k = 6"),
-        (Params { dop_interval: 2, dop_latency: 9, ..Params::RTL }, "dop_latency 9 is the unfolded"),
-        (Params { memory: MemTiming { latency: 0, ..Default::default() }.into(), ..Params::RTL }, "latency"),
-        (Params { memory: Memory::Ddr(Ddr { burst: 9, ..Ddr::WSCG03 }), ..Params::RTL }, "burst <= hit <= miss"),
+        (
+            Params {
+                queue_entries: 0,
+                ..Params::RTL
+            },
+            "queue_entries",
+        ),
+        (
+            Params {
+                issue_spacing: 3,
+                ..Params::RTL
+            },
+            "issue_spacing",
+        ),
+        (
+            Params {
+                outstanding: 65,
+                ..Params::RTL
+            },
+            "outstanding",
+        ),
+        (
+            Params {
+                prefetch: 257,
+                ..Params::RTL
+            },
+            "prefetch",
+        ),
+        (
+            Params {
+                tri_interval: 5,
+                ..Params::RTL
+            },
+            "tri_interval",
+        ),
+        (
+            Params {
+                dop_interval: 0,
+                ..Params::RTL
+            },
+            "dop_interval must be at least 1",
+        ),
+        (
+            Params {
+                dop_interval: 4,
+                ..Params::RTL
+            },
+            "dop_interval 4 does not divide k = 6",
+        ),
+        (
+            Params {
+                dop_interval: 2,
+                dop_latency: 9,
+                ..Params::RTL
+            },
+            "dop_latency 9 is the unfolded",
+        ),
+        (
+            Params {
+                memory: MemTiming {
+                    latency: 0,
+                    ..Default::default()
+                }
+                .into(),
+                ..Params::RTL
+            },
+            "latency",
+        ),
+        (
+            Params {
+                memory: Memory::Ddr(Ddr {
+                    burst: 9,
+                    ..Ddr::WSCG03
+                }),
+                ..Params::RTL
+            },
+            "burst <= hit <= miss",
+        ),
     ] {
-        let e = CycleChip::new(&CHIP_CONFIG, p, &chip.a, &chip.b, &setup, true).err().expect("refused");
+        let e = CycleChip::new(&CHIP_CONFIG, p, &chip.a, &chip.b, &setup, true)
+            .err()
+            .expect("refused");
         assert!(e.contains(what), "{e}");
     }
 }
@@ -370,21 +690,42 @@ fn bad_parameters_are_refused() {
 fn prefetch_keeps_requests_back_to_back_by_hand() {
     use collision_chip::dop::Node;
     let p3 = |x: f64, y: f64| nalgebra::Point3::new(x, y, 0.0);
-    let tris = vec![[p3(0.0, 0.0), p3(1.0, 0.0), p3(0.0, 1.0)], [p3(2.0, 0.0), p3(3.0, 0.0), p3(2.0, 1.0)]];
+    let tris = vec![
+        [p3(0.0, 0.0), p3(1.0, 0.0), p3(0.0, 1.0)],
+        [p3(2.0, 0.0), p3(3.0, 0.0), p3(2.0, 1.0)],
+    ];
     let chip = Chip::new(&tris, &tris, CHIP_CONFIG).unwrap();
-    assert_eq!(chip.a.tree.node(0), Node::Inner([1, 2]), "the tree this derivation assumes");
+    assert_eq!(
+        chip.a.tree.node(0),
+        Node::Inner([1, 2]),
+        "the tree this derivation assumes"
+    );
     let pose = Pose::new(0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     let base = chip.image_bases();
     let (na, nb) = (base[0], base[1]);
-    let idx = |scope: &str, name: &str| PROBES.iter().position(|p| (p.0, p.1) == (scope, name)).unwrap();
-    let (req, addr, issue) = (idx("memory", "req_valid"), idx("memory", "req_addr"), idx("d_cntr", "issue"));
+    let idx = |scope: &str, name: &str| {
+        PROBES
+            .iter()
+            .position(|p| (p.0, p.1) == (scope, name))
+            .unwrap()
+    };
+    let (req, addr, issue) = (
+        idx("memory", "req_valid"),
+        idx("memory", "req_addr"),
+        idx("d_cntr", "issue"),
+    );
     let timeline = |prefetch: u32| {
         let p = Params {
             dop_latency: 2,
             issue_spacing: 1,
             outstanding: 4,
             prefetch,
-            memory: MemTiming { latency: 3, interval: 1, bus_bits: None }.into(),
+            memory: MemTiming {
+                latency: 3,
+                interval: 1,
+                bus_bits: None,
+            }
+            .into(),
             ..Params::RTL
         };
         let (mut reqs, mut issues) = (vec![], vec![]);
@@ -397,13 +738,34 @@ fn prefetch_keeps_requests_back_to_back_by_hand() {
             }
             Ok(())
         };
-        let rec = cycle::Record { probes: Some(&mut obs), ..Default::default() };
-        let (tr, _) = cycle::run_query(&chip, &chip.setup(&pose), Order::Lifo, Mode::All, p, Reader::default(), MAX_CYCLES, rec).unwrap();
+        let rec = cycle::Record {
+            probes: Some(&mut obs),
+            ..Default::default()
+        };
+        let (tr, _) = cycle::run_query(
+            &chip,
+            &chip.setup(&pose),
+            Order::Lifo,
+            Mode::All,
+            p,
+            Reader::default(),
+            MAX_CYCLES,
+            rec,
+        )
+        .unwrap();
         assert_eq!(tr.dop_tests, 5);
         (reqs, issues)
     };
     let (reqs, issues) = timeline(2);
-    let want = [(3, na), (4, nb), (12, na + 1), (13, nb + 1), (14, nb + 2), (15, na + 2), (16, nb + 1)];
+    let want = [
+        (3, na),
+        (4, nb),
+        (12, na + 1),
+        (13, nb + 1),
+        (14, nb + 2),
+        (15, na + 2),
+        (16, nb + 1),
+    ];
     assert_eq!(reqs, want);
     assert_eq!(issues, [8, 17, 18, 19, 20]);
     // without prefetch: (1,1)'s words A1, B1 in cycles 12, 13 (answered 15, 16), it issues
@@ -419,28 +781,68 @@ fn prefetch_keeps_requests_back_to_back_by_hand() {
 /// with a generous bound so that a regression fails here instead of hanging the suite.
 #[test]
 fn the_longest_waits_are_skipped() {
-    let chip = Chip::new(&collision_chip::mesh::builtin("sphere:200").unwrap().triangles_f64(), &collision_chip::mesh::builtin("torus:200").unwrap().triangles_f64(), CHIP_CONFIG).unwrap();
+    let chip = Chip::new(
+        &collision_chip::mesh::builtin("sphere:200")
+            .unwrap()
+            .triangles_f64(),
+        &collision_chip::mesh::builtin("torus:200")
+            .unwrap()
+            .triangles_f64(),
+        CHIP_CONFIG,
+    )
+    .unwrap();
     let pose = Pose::new(10.0, 20.0, 30.0, 0.5, 0.0, 0.0);
     let golden = chip.query(&pose, Mode::All, Traversal::Lifo);
     let long = u32::MAX;
     let cases = [
-        (MemTiming { latency: long, ..Default::default() }, Reader::default()),
-        (MemTiming { interval: long, ..Default::default() }, Reader::default()),
+        (
+            MemTiming {
+                latency: long,
+                ..Default::default()
+            },
+            Reader::default(),
+        ),
+        (
+            MemTiming {
+                interval: long,
+                ..Default::default()
+            },
+            Reader::default(),
+        ),
         (MemTiming::default(), Reader { period: long }),
     ];
     let (tx, rx) = std::sync::mpsc::channel();
     std::thread::spawn(move || {
         for (timing, reader) in cases {
-            let p = Params { memory: timing.into(), ..Params::RTL };
-            let r = cycle::run_query(&chip, &chip.setup(&pose), Order::Lifo, Mode::All, p, reader, cycle::MAX_CYCLES, counted()).map(|r| r.0);
+            let p = Params {
+                memory: timing.into(),
+                ..Params::RTL
+            };
+            let r = cycle::run_query(
+                &chip,
+                &chip.setup(&pose),
+                Order::Lifo,
+                Mode::All,
+                p,
+                reader,
+                cycle::MAX_CYCLES,
+                counted(),
+            )
+            .map(|r| r.0);
             tx.send((timing, reader, r)).unwrap();
         }
     });
     for _ in 0..3 {
-        let (timing, reader, r) = rx.recv_timeout(std::time::Duration::from_secs(60)).expect("a wait of 2^32 - 1 clocks was walked, not skipped");
+        let (timing, reader, r) = rx
+            .recv_timeout(std::time::Duration::from_secs(60))
+            .expect("a wait of 2^32 - 1 clocks was walked, not skipped");
         let tr = r.unwrap();
         tr.check(Mode::All, &golden).unwrap();
-        assert!(tr.cycles > long as u64, "{timing:?} {reader:?}: {} cycles", tr.cycles);
+        assert!(
+            tr.cycles > long as u64,
+            "{timing:?} {reader:?}: {} cycles",
+            tr.cycles
+        );
     }
 }
 
@@ -456,13 +858,30 @@ fn the_longest_waits_are_skipped() {
 /// golden's, and the same with idle stretches skipped as clock by clock.
 #[test]
 fn folded_tri_unit_takes_a_pair_every_interval() {
-    let chip = Chip::new(&collision_chip::mesh::builtin("sphere:200").unwrap().triangles_f64(), &collision_chip::mesh::builtin("torus:200").unwrap().triangles_f64(), CHIP_CONFIG).unwrap();
+    let chip = Chip::new(
+        &collision_chip::mesh::builtin("sphere:200")
+            .unwrap()
+            .triangles_f64(),
+        &collision_chip::mesh::builtin("torus:200")
+            .unwrap()
+            .triangles_f64(),
+        CHIP_CONFIG,
+    )
+    .unwrap();
     let pose = Pose::new(10.0, 20.0, 30.0, 0.5, 0.0, 0.0);
     let golden = chip.query(&pose, Mode::All, Traversal::Lifo);
-    let idx = |name: &str| PROBES.iter().position(|p| (p.0, p.1) == ("tri_unit", name)).unwrap();
+    let idx = |name: &str| {
+        PROBES
+            .iter()
+            .position(|p| (p.0, p.1) == ("tri_unit", name))
+            .unwrap()
+    };
     let (take, out_valid) = (idx("take"), idx("out_valid"));
     for (ii, t_check) in [(2u32, 58u64), (4, 61), (16, 85), (32, 89)] {
-        let p = Params { tri_interval: ii, ..Params::RTL };
+        let p = Params {
+            tri_interval: ii,
+            ..Params::RTL
+        };
         let latency = ii as u64 / 2 + t_check + 2;
         let (mut takes, mut first_out) = (vec![], None);
         let mut obs = |t: u64, v: &[u64]| {
@@ -474,16 +893,50 @@ fn folded_tri_unit_takes_a_pair_every_interval() {
             }
             Ok(())
         };
-        let rec = cycle::Record { probes: Some(&mut obs), ..Default::default() };
-        let (clocked, _) = cycle::run_query(&chip, &chip.setup(&pose), Order::Lifo, Mode::All, p, Reader::default(), MAX_CYCLES, rec).unwrap();
+        let rec = cycle::Record {
+            probes: Some(&mut obs),
+            ..Default::default()
+        };
+        let (clocked, _) = cycle::run_query(
+            &chip,
+            &chip.setup(&pose),
+            Order::Lifo,
+            Mode::All,
+            p,
+            Reader::default(),
+            MAX_CYCLES,
+            rec,
+        )
+        .unwrap();
         clocked.check(Mode::All, &golden).unwrap();
         assert_eq!(takes.len() as u64, clocked.tri_tests, "ii {ii}");
         let gaps: Vec<u64> = takes.windows(2).map(|w| w[1] - w[0]).collect();
-        assert!(gaps.iter().all(|g| g % ii as u64 == 0), "ii {ii}: pairs taken {takes:?}");
+        assert!(
+            gaps.iter().all(|g| g % ii as u64 == 0),
+            "ii {ii}: pairs taken {takes:?}"
+        );
         // (at ii 2 the triangle words' fetches keep pairs at least 4 clocks apart here)
-        assert!(ii < 4 || gaps.contains(&(ii as u64)), "ii {ii}: no two pairs back to back: {gaps:?}");
-        assert_eq!(first_out, Some(takes[0] + latency), "ii {ii}: the first verdict {latency} clocks after the first pair");
-        let skipped = cycle::run_query(&chip, &chip.setup(&pose), Order::Lifo, Mode::All, p, Reader::default(), MAX_CYCLES, counted()).unwrap().0;
+        assert!(
+            ii < 4 || gaps.contains(&(ii as u64)),
+            "ii {ii}: no two pairs back to back: {gaps:?}"
+        );
+        assert_eq!(
+            first_out,
+            Some(takes[0] + latency),
+            "ii {ii}: the first verdict {latency} clocks after the first pair"
+        );
+        let skipped = cycle::run_query(
+            &chip,
+            &chip.setup(&pose),
+            Order::Lifo,
+            Mode::All,
+            p,
+            Reader::default(),
+            MAX_CYCLES,
+            counted(),
+        )
+        .unwrap()
+        .0;
         assert_eq!(skipped, clocked, "ii {ii}");
     }
 }

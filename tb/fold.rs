@@ -27,9 +27,21 @@ type Dir = (TriWord, [[f64; 4]; 3], [f64; 2], f64, TriWord);
 /// scale, triangle).
 fn directions(f: Format, n: usize, pose: &Pose) -> Vec<Dir> {
     let mut a = collision_chip::mesh::soup(n, 21).triangles_f64();
-    a.push([Point3::new(0.1, 0.2, 0.3), Point3::new(0.3, 0.4, 0.5), Point3::new(0.7, 0.8, 0.9)]);
+    a.push([
+        Point3::new(0.1, 0.2, 0.3),
+        Point3::new(0.3, 0.4, 0.5),
+        Point3::new(0.7, 0.8, 0.9),
+    ]);
     let b = collision_chip::mesh::soup(n, 22).triangles_f64();
-    let chip = Chip::new(&a, &b, ChipConfig { format: f.into(), ..Default::default() }).unwrap();
+    let chip = Chip::new(
+        &a,
+        &b,
+        ChipConfig {
+            format: f.into(),
+            ..Default::default()
+        },
+    )
+    .unwrap();
     let setup: HostSetup = chip.setup(pose);
     let mut out = vec![];
     for ta in chip.a.tris() {
@@ -52,13 +64,41 @@ fn ops_equal_golden_tcheck() {
     for f in [Format::BINARY32, Format::REDUCED] {
         for r in [Rounding::NearestEven, Rounding::TowardPositive] {
             let cert = Certificate::new(f, r);
-            for pose in [Pose::new(23.0, -61.0, 11.0, 0.05, -0.08, 0.03), Pose::new(-140.0, 33.0, 95.0, 0.2, 0.1, -0.1)] {
+            for pose in [
+                Pose::new(23.0, -61.0, 11.0, 0.05, -0.08, 0.03),
+                Pose::new(-140.0, 33.0, 95.0, 0.2, 0.1, -0.1),
+            ] {
                 for (leaf, frame, beta, scale, tri) in directions(f, 10, &pose) {
-                    let t = golden::edges(f, r, &cert, &golden::stage1(f, r, &leaf, &frame, beta, scale), &tri);
-                    let x = Inputs { m: leaf.m, alpha: [leaf.alpha_m, leaf.alpha_f], frame, beta, scale, v: tri.v };
+                    let t = golden::edges(
+                        f,
+                        r,
+                        &cert,
+                        &golden::stage1(f, r, &leaf, &frame, beta, scale),
+                        &tri,
+                    );
+                    let x = Inputs {
+                        m: leaf.m,
+                        alpha: [leaf.alpha_m, leaf.alpha_f],
+                        frame,
+                        beta,
+                        scale,
+                        v: tri.v,
+                    };
                     let o = tcheck(&mut Eval::new(f, r, tri.v_exact), &x);
                     let bits = |v: &[f64]| v.iter().map(|&x| f.to_bits(x)).collect::<Vec<_>>();
-                    let want = [t.v.map(|p| p[2]), t.e_z, t.a, t.b, t.rz, t.s, t.a_bound, t.b_bound, t.rz_bound, t.s_bound].concat();
+                    let want = [
+                        t.v.map(|p| p[2]),
+                        t.e_z,
+                        t.a,
+                        t.b,
+                        t.rz,
+                        t.s,
+                        t.a_bound,
+                        t.b_bound,
+                        t.rz_bound,
+                        t.s_bound,
+                    ]
+                    .concat();
                     assert_eq!(bits(&o.all()), bits(&want), "{f} {r:?} {pose:?}");
                     n += 1;
                 }
@@ -72,7 +112,12 @@ fn ops_equal_golden_tcheck() {
 /// Drives `uut` with one case every `ii` clocks (valid while the counter is 0) and collects
 /// the results, each required `latency` clocks after its case (as the exported testbench
 /// checks).
-fn run_fold(uut: &mut b32::TCheckFold, ii: usize, latency: usize, ins: &[TCheckIn]) -> Vec<TCheckOut> {
+fn run_fold(
+    uut: &mut b32::TCheckFold,
+    ii: usize,
+    latency: usize,
+    ins: &[TCheckIn],
+) -> Vec<TCheckOut> {
     let mut outs = vec![];
     for cyc in 0..ins.len() * ii + latency + 1 {
         let (valid, x) = match (cyc % ii == 0).then(|| ins.get(cyc / ii)).flatten() {
@@ -88,18 +133,25 @@ fn run_fold(uut: &mut b32::TCheckFold, ii: usize, latency: usize, ins: &[TCheckI
             uut.f_2[c].next = x.f[8 + c].into();
         }
         (uut.alpha_m.next, uut.alpha_f.next) = (x.alpha_m.into(), x.alpha_f.into());
-        (uut.beta_m.next, uut.beta_f.next, uut.scale.next) = (x.beta_m.into(), x.beta_f.into(), x.scale.into());
+        (uut.beta_m.next, uut.beta_f.next, uut.scale.next) =
+            (x.beta_m.into(), x.beta_f.into(), x.scale.into());
         for k in 0..3 {
-            (uut.v_x[k].next, uut.v_y[k].next, uut.v_z[k].next) = (x.v[k][0].into(), x.v[k][1].into(), x.v[k][2].into());
+            (uut.v_x[k].next, uut.v_y[k].next, uut.v_z[k].next) =
+                (x.v[k][0].into(), x.v[k][1].into(), x.v[k][2].into());
         }
-        (uut.v_exact.next, uut.tag.next, uut.valid_in.next) = (x.v_exact, ((cyc / ii) as u64).into(), valid);
+        (uut.v_exact.next, uut.tag.next, uut.valid_in.next) =
+            (x.v_exact, ((cyc / ii) as u64).into(), valid);
         for high in [false, true] {
             uut.clock.next = Clock { clk: high };
             assert!(simulate(uut, 1000), "logic did not settle");
         }
         if uut.valid_out.val() {
             let k = outs.len();
-            assert_eq!((cyc + 1, uut.tag_out.val().to_u64()), (k * ii + latency, k as u64), "result {k} at the wrong edge or with the wrong tag");
+            assert_eq!(
+                (cyc + 1, uut.tag_out.val().to_u64()),
+                (k * ii + latency, k as u64),
+                "result {k} at the wrong edge or with the wrong tag"
+            );
             outs.push(TCheckOut {
                 s_x: std::array::from_fn(|e| uut.s_x[e].val().to_u64()),
                 s_b: std::array::from_fn(|e| uut.s_b[e].val().to_u64()),
@@ -121,7 +173,11 @@ fn few_cases(f: Format, r: Rounding) -> Vec<(TCheckIn, TCheckOut)> {
         .map(|(leaf, frame, beta, scale, tri)| direction(f, r, leaf, frame, *beta, *scale, tri))
         .collect();
     let mut pick = vec![];
-    for verdict in [|o: &TCheckOut| o.hit, |o: &TCheckOut| o.miss, |o: &TCheckOut| !o.hit && !o.miss] {
+    for verdict in [
+        |o: &TCheckOut| o.hit,
+        |o: &TCheckOut| o.miss,
+        |o: &TCheckOut| !o.hit && !o.miss,
+    ] {
         pick.extend(all.iter().filter(|(_, o)| verdict(o)).take(3).cloned());
     }
     assert_eq!(pick.len(), 9, "the scene has every verdict");
@@ -137,7 +193,13 @@ fn mismatches(plan: Plan, cases: Vec<(TCheckIn, TCheckOut)>) -> Vec<String> {
             let mut uut = b32::tcheck_fold_top(plan, Rounding::NearestEven);
             let ins: Vec<TCheckIn> = cases.iter().map(|c| c.0).collect();
             let outs = run_fold(&mut uut, ii, latency, &ins);
-            cases.iter().zip(&outs).enumerate().filter(|(_, ((_, w), g))| w != *g).map(|(i, ((_, w), g))| format!("case {i}: golden {w:?}\n  rtl {g:?}")).collect()
+            cases
+                .iter()
+                .zip(&outs)
+                .enumerate()
+                .filter(|(_, ((_, w), g))| w != *g)
+                .map(|(i, ((_, w), g))| format!("case {i}: golden {w:?}\n  rtl {g:?}"))
+                .collect()
         })
         .unwrap()
         .join()
@@ -154,8 +216,16 @@ fn fold16_equals_golden() {
         .collect();
     let n = cases.len();
     eprintln!("{n} directions at II 16");
-    let bad = mismatches(collision_chip::fold::tcheck_plan(16, collision_chip::fold::plan::Binding::Shared).unwrap(), cases);
-    assert!(bad.is_empty(), "{} of {n} differ:\n{}", bad.len(), bad[..bad.len().min(5)].join("\n"));
+    let bad = mismatches(
+        collision_chip::fold::tcheck_plan(16, collision_chip::fold::plan::Binding::Shared).unwrap(),
+        cases,
+    );
+    assert!(
+        bad.is_empty(),
+        "{} of {n} differ:\n{}",
+        bad.len(),
+        bad[..bad.len().min(5)].join("\n")
+    );
 }
 
 /// The same generator at every other II of issue 33 equals the golden model on directions
@@ -163,9 +233,15 @@ fn fold16_equals_golden() {
 #[test]
 fn every_ii_equals_golden() {
     use collision_chip::fold::plan::Binding::{PerReader, Shared};
-    let plans = [1, 2, 4, 8, 32].map(|ii| (ii, Shared)).into_iter().chain([1, 2, 4, 8, 16, 32].map(|ii| (ii, PerReader)));
+    let plans = [1, 2, 4, 8, 32]
+        .map(|ii| (ii, Shared))
+        .into_iter()
+        .chain([1, 2, 4, 8, 16, 32].map(|ii| (ii, PerReader)));
     for (ii, binding) in plans {
-        let bad = mismatches(collision_chip::fold::tcheck_plan(ii, binding).unwrap(), few_cases(Format::BINARY32, Rounding::NearestEven));
+        let bad = mismatches(
+            collision_chip::fold::tcheck_plan(ii, binding).unwrap(),
+            few_cases(Format::BINARY32, Rounding::NearestEven),
+        );
         assert!(bad.is_empty(), "II {ii} {binding:?}: {}", bad.join("\n"));
     }
 }
@@ -174,11 +250,15 @@ fn every_ii_equals_golden() {
 /// register (a stage-1 product reading a neighbouring word).
 #[test]
 fn fold16_broken_mux_is_caught() {
-    let mut plan = collision_chip::fold::tcheck_plan(16, collision_chip::fold::plan::Binding::Shared).unwrap();
+    let mut plan =
+        collision_chip::fold::tcheck_plan(16, collision_chip::fold::plan::Binding::Shared).unwrap();
     let iss = plan.issues[0][0].iter_mut().flatten().next().unwrap();
     iss.a.reg += 1;
     let bad = mismatches(plan, few_cases(Format::BINARY32, Rounding::NearestEven));
-    assert!(!bad.is_empty(), "an operand off by one register went unnoticed");
+    assert!(
+        !bad.is_empty(),
+        "an operand off by one register went unnoticed"
+    );
 }
 
 /// Not a check: writes the folded TRI_UNIT's Verilog at every even II of issue 33 for

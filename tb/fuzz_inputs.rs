@@ -17,15 +17,67 @@ use proptest::prelude::*;
 use std::path::{Path, PathBuf};
 
 const TOKENS: &[&str] = &[
-    "-1", "0", "1", "4294967295", "4294967296", "18446744073709551616", "99999999999999999999999",
-    "nan", "NaN", "inf", "-inf", "1e309", "-1e-320", "1e-400", "0x10", "\n", " ", "\t", "\r\n", "/",
-    "//", "\0", "\u{ff}", "#", "v 1 2 3\n", "f 1 2 3\n", "f -1 -2 -3\n", "vt 0 0\n", "f 1/1/1 2/2/2 3/3/3\n",
-    "solid x\n", "facet normal 0 0 1\n", "outer loop\n", "vertex 1 2 3\n", "endloop\n", "endfacet\n",
-    "endsolid\n", "ply\n", "format ascii 1.0\n", "format binary_little_endian 1.0\n",
-    "format binary_big_endian 1.0\n", "element vertex 1000000000\n", "element face 4294967295\n",
-    "property float x\n", "property list uchar int vertex_indices\n", "property list uint uint vertex_indices\n",
-    "end_header\n", "= ", "[", "]", "{", "}", "\"", "'", "[[pose]]\n", "[sweep]\n", "orientations = 1000000\n",
-    "distances = []\n", "k = 0\n", "latency = 4294967295\n", "queue_entries = 0\n", "tri_cache = 3\n",
+    "-1",
+    "0",
+    "1",
+    "4294967295",
+    "4294967296",
+    "18446744073709551616",
+    "99999999999999999999999",
+    "nan",
+    "NaN",
+    "inf",
+    "-inf",
+    "1e309",
+    "-1e-320",
+    "1e-400",
+    "0x10",
+    "\n",
+    " ",
+    "\t",
+    "\r\n",
+    "/",
+    "//",
+    "\0",
+    "\u{ff}",
+    "#",
+    "v 1 2 3\n",
+    "f 1 2 3\n",
+    "f -1 -2 -3\n",
+    "vt 0 0\n",
+    "f 1/1/1 2/2/2 3/3/3\n",
+    "solid x\n",
+    "facet normal 0 0 1\n",
+    "outer loop\n",
+    "vertex 1 2 3\n",
+    "endloop\n",
+    "endfacet\n",
+    "endsolid\n",
+    "ply\n",
+    "format ascii 1.0\n",
+    "format binary_little_endian 1.0\n",
+    "format binary_big_endian 1.0\n",
+    "element vertex 1000000000\n",
+    "element face 4294967295\n",
+    "property float x\n",
+    "property list uchar int vertex_indices\n",
+    "property list uint uint vertex_indices\n",
+    "end_header\n",
+    "= ",
+    "[",
+    "]",
+    "{",
+    "}",
+    "\"",
+    "'",
+    "[[pose]]\n",
+    "[sweep]\n",
+    "orientations = 1000000\n",
+    "distances = []\n",
+    "k = 0\n",
+    "latency = 4294967295\n",
+    "queue_entries = 0\n",
+    "tri_cache = 3\n",
 ];
 
 /// One edit of a byte string.
@@ -85,10 +137,16 @@ fn root() -> PathBuf {
 fn mesh_seeds() -> Vec<(String, Vec<u8>)> {
     let mut seeds = vec![];
     for dir in ["vectors/bad-meshes", "vectors/meshes"] {
-        let mut entries: Vec<_> = std::fs::read_dir(root().join(dir)).unwrap().flatten().map(|e| e.path()).collect();
+        let mut entries: Vec<_> = std::fs::read_dir(root().join(dir))
+            .unwrap()
+            .flatten()
+            .map(|e| e.path())
+            .collect();
         entries.sort();
         for p in entries.into_iter().filter(|p| p.is_file()) {
-            let ext = p.extension().map_or(String::new(), |e| e.to_string_lossy().into_owned());
+            let ext = p
+                .extension()
+                .map_or(String::new(), |e| e.to_string_lossy().into_owned());
             if !["obj", "stl", "ply"].contains(&ext.as_str()) {
                 continue;
             }
@@ -101,11 +159,18 @@ fn mesh_seeds() -> Vec<(String, Vec<u8>)> {
 }
 
 fn cases() -> u32 {
-    std::env::var("FUZZ_CASES").ok().and_then(|v| v.parse().ok()).unwrap_or(1500)
+    std::env::var("FUZZ_CASES")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(1500)
 }
 
 fn config() -> ProptestConfig {
-    ProptestConfig { cases: cases(), failure_persistence: None, ..ProptestConfig::default() }
+    ProptestConfig {
+        cases: cases(),
+        failure_persistence: None,
+        ..ProptestConfig::default()
+    }
 }
 
 /// A loader's answer for a mutated file: a mesh of finite coordinates, or an error that
@@ -114,7 +179,11 @@ fn check_load(path: &Path) -> Result<(), String> {
     match mesh::load(path) {
         Ok(m) => {
             let tris = m.triangles_f64();
-            if tris.iter().flatten().all(|p| p.coords.iter().all(|x| x.is_finite())) {
+            if tris
+                .iter()
+                .flatten()
+                .all(|p| p.coords.iter().all(|x| x.is_finite()))
+            {
                 Ok(())
             } else {
                 Err("a mesh with a non-finite coordinate was accepted".into())
@@ -123,7 +192,11 @@ fn check_load(path: &Path) -> Result<(), String> {
         Err(e) => {
             let text = e.to_string();
             let name = path.file_name().unwrap().to_string_lossy();
-            if text.contains(&*name) { Ok(()) } else { Err(format!("the error does not name the file: {text}")) }
+            if text.contains(&*name) {
+                Ok(())
+            } else {
+                Err(format!("the error does not name the file: {text}"))
+            }
         }
     }
 }
@@ -149,9 +222,16 @@ fn mesh_loaders_take_any_bytes() {
 #[test]
 fn scene_files_take_any_text() {
     let mut seeds: Vec<Vec<u8>> = vec![];
-    let mut entries: Vec<_> = std::fs::read_dir(root().join("vectors/scenes")).unwrap().flatten().map(|e| e.path()).collect();
+    let mut entries: Vec<_> = std::fs::read_dir(root().join("vectors/scenes"))
+        .unwrap()
+        .flatten()
+        .map(|e| e.path())
+        .collect();
     entries.sort();
-    for p in entries.into_iter().filter(|p| p.extension().is_some_and(|e| e == "toml")) {
+    for p in entries
+        .into_iter()
+        .filter(|p| p.extension().is_some_and(|e| e == "toml"))
+    {
         seeds.push(std::fs::read(p).unwrap());
     }
     proptest!(config(), |(s in 0..seeds.len(), edits in prop::collection::vec(edit(), 1..6))| {
@@ -174,26 +254,113 @@ fn poses_take_any_text() {
 
 /// Arguments that have broken command lines before, spliced into `cchip`'s.
 const ARGS: &[&str] = &[
-    "--k", "0", "25", "-1", "4294967296", "--pose", "nan,0,0,0,0,0", "1e309,0,0,0,0,0", ",,,,,", "0,0,0", "--format",
-    "e0m0", "e99m99", "reduced/binary32", "--preset", "date05", "wscg03", "--json", "--oracle", "sphere:0",
-    "sphere:99999999", "soup:3:x", "--traversal", "list", "recursive", "--mode", "first", "--unit-cube", "--", "-",
-    "", "\u{ff}", "query", "--explain", "--dot", "--help", "--tri-cache", "3", "--node-cache", "0", "--technology",
-    "ecp5", "--architecture", "wscg03", "no/such/file.obj", "vectors/scenes",
+    "--k",
+    "0",
+    "25",
+    "-1",
+    "4294967296",
+    "--pose",
+    "nan,0,0,0,0,0",
+    "1e309,0,0,0,0,0",
+    ",,,,,",
+    "0,0,0",
+    "--format",
+    "e0m0",
+    "e99m99",
+    "reduced/binary32",
+    "--preset",
+    "date05",
+    "wscg03",
+    "--json",
+    "--oracle",
+    "sphere:0",
+    "sphere:99999999",
+    "soup:3:x",
+    "--traversal",
+    "list",
+    "recursive",
+    "--mode",
+    "first",
+    "--unit-cube",
+    "--",
+    "-",
+    "",
+    "\u{ff}",
+    "query",
+    "--explain",
+    "--dot",
+    "--help",
+    "--tri-cache",
+    "3",
+    "--node-cache",
+    "0",
+    "--technology",
+    "ecp5",
+    "--architecture",
+    "wscg03",
+    "no/such/file.obj",
+    "vectors/scenes",
 ];
 
 /// Quick invocations: small queries and scenes explained, not run.
 const INVOCATIONS: &[&[&str]] = &[
-    &["query", "--pose", "10,20,30,0.5,0,0", "sphere:20", "torus:20"],
-    &["query", "--pose", "0,0,0,0,0,0", "--k", "6", "--format", "e8m15", "--mode", "first", "--json", "soup:8", "soup:8:2"],
-    &["query", "--pose", "5,0,0,0.1,0,0", "--oracle", "--traversal", "fifo", "--tri-cache", "4", "teapot", "sphere:40"],
+    &[
+        "query",
+        "--pose",
+        "10,20,30,0.5,0,0",
+        "sphere:20",
+        "torus:20",
+    ],
+    &[
+        "query",
+        "--pose",
+        "0,0,0,0,0,0",
+        "--k",
+        "6",
+        "--format",
+        "e8m15",
+        "--mode",
+        "first",
+        "--json",
+        "soup:8",
+        "soup:8:2",
+    ],
+    &[
+        "query",
+        "--pose",
+        "5,0,0,0.1,0,0",
+        "--oracle",
+        "--traversal",
+        "fifo",
+        "--tri-cache",
+        "4",
+        "teapot",
+        "sphere:40",
+    ],
     &["run", "--preset", "rtl", "--explain"],
-    &["run", "--technology", "paper", "--architecture", "wscg03", "--explain"],
+    &[
+        "run",
+        "--technology",
+        "paper",
+        "--architecture",
+        "wscg03",
+        "--explain",
+    ],
 ];
 
 /// `cchip` started with `args` from the project root, its output to `stdout`, its errors
 /// piped.
-fn spawn_cchip(args: &[impl AsRef<std::ffi::OsStr>], stdout: std::process::Stdio) -> std::process::Child {
-    std::process::Command::new(env!("CARGO_BIN_EXE_cchip")).args(args).current_dir(root()).stdout(stdout).stderr(std::process::Stdio::piped()).spawn().unwrap()
+fn spawn_cchip(
+    args: &[impl AsRef<std::ffi::OsStr>],
+    stdout: std::process::Stdio,
+) -> std::process::Child {
+    std::process::Command::new(env!("CARGO_BIN_EXE_cchip"))
+        .args(args)
+        .current_dir(root())
+        .stdout(stdout)
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap()
 }
 
 /// `cchip` run with `args` from the project root: its exit code, or an error for a signal or a
@@ -210,7 +377,10 @@ fn cchip(args: &[String], limit: std::time::Duration) -> Result<(i32, String), S
     }
     let out = child.wait_with_output().unwrap();
     let err = String::from_utf8_lossy(&out.stderr).into_owned();
-    out.status.code().map(|c| (c, err)).ok_or_else(|| format!("ended by a signal: {:?}", out.status))
+    out.status
+        .code()
+        .map(|c| (c, err))
+        .ok_or_else(|| format!("ended by a signal: {:?}", out.status))
 }
 
 /// `cchip`'s argument parsing and checks (issue 35): mutated quick invocations end with
@@ -218,7 +388,11 @@ fn cchip(args: &[String], limit: std::time::Duration) -> Result<(i32, String), S
 /// `--explain` is appended, so that no mutation starts the default scene's sweep.
 #[test]
 fn cchip_takes_any_arguments() {
-    let config = ProptestConfig { cases: (cases() / 25).max(8), failure_persistence: None, ..ProptestConfig::default() };
+    let config = ProptestConfig {
+        cases: (cases() / 25).max(8),
+        failure_persistence: None,
+        ..ProptestConfig::default()
+    };
     let edit = prop_oneof![
         (any::<usize>(), 0..ARGS.len()).prop_map(|(i, a)| (0u8, i, a)),
         (any::<usize>(), 0..ARGS.len()).prop_map(|(i, a)| (1u8, i, a)),
@@ -249,16 +423,29 @@ fn cchip_takes_any_arguments() {
 #[test]
 fn cchip_ends_quietly_when_its_reader_goes_away() {
     use std::io::Read;
-    let args = ["query", "bunny", "bunny", "--pose", "0,0,0,0.01,0,0", "--json", "--oracle"];
+    let args = [
+        "query",
+        "bunny",
+        "bunny",
+        "--pose",
+        "0,0,0,0.01,0,0",
+        "--json",
+        "--oracle",
+    ];
     let mut child = spawn_cchip(&args, std::process::Stdio::piped());
     let mut head = [0u8; 100];
     child.stdout.take().unwrap().read_exact(&mut head).unwrap();
     let out = child.wait_with_output().unwrap();
     let err = String::from_utf8_lossy(&out.stderr);
     #[cfg(unix)]
-    let by_sigpipe = std::os::unix::process::ExitStatusExt::signal(&out.status) == Some(libc::SIGPIPE);
+    let by_sigpipe =
+        std::os::unix::process::ExitStatusExt::signal(&out.status) == Some(libc::SIGPIPE);
     #[cfg(not(unix))]
     let by_sigpipe = false;
-    assert!(by_sigpipe || out.status.success(), "{args:?} | head -c 100: {:?}\n{err}", out.status);
+    assert!(
+        by_sigpipe || out.status.success(),
+        "{args:?} | head -c 100: {:?}\n{err}",
+        out.status
+    );
     assert!(!err.contains("panicked"), "{err}");
 }

@@ -3,27 +3,30 @@
 
 #![allow(clippy::needless_range_loop)] // lanes are indexed by i in several arrays at once
 
-use collision_chip::chip::config::{ChipConfig, DopRounding, Formats};
 use collision_chip::chip::config::SUPPORTED_K;
+use collision_chip::chip::config::{ChipConfig, DopRounding, Formats};
+use collision_chip::chip::reg::Mode;
 use collision_chip::dop::{DopNormals, DopTree};
-use collision_chip::golden::host::TriSide;
-use collision_chip::golden::host::HostSetup;
 use collision_chip::format::{Format, Rounding};
-use collision_chip::golden::{certificate, dop_unit, doptrf, tcheck, tri_unit};
+use collision_chip::golden::host::HostSetup;
+use collision_chip::golden::host::TriSide;
 use collision_chip::golden::memory::TriWord;
+use collision_chip::golden::{certificate, dop_unit, doptrf, tcheck, tri_unit};
 use collision_chip::mesh;
 use collision_chip::oracle;
 use collision_chip::pose::Pose;
 use collision_chip::query::{place, Chip};
 use collision_chip::traversal::Traversal;
-use collision_chip::chip::reg::Mode;
 use nalgebra::{Matrix3, Point3, Vector3};
 use proptest::prelude::*;
 
 type Tri = [Point3<f64>; 3];
 
 fn pose_strategy(reach: f64) -> impl Strategy<Value = Pose> {
-    (prop::array::uniform3(-180.0..180.0f64), prop::array::uniform3(-reach..reach))
+    (
+        prop::array::uniform3(-180.0..180.0f64),
+        prop::array::uniform3(-reach..reach),
+    )
         .prop_map(|(r, t)| Pose { rot_deg: r, t })
 }
 
@@ -37,9 +40,15 @@ fn adversarial_pose() -> impl Strategy<Value = Pose> {
     };
     prop_oneof![
         pose_strategy(50.0),
-        (prop::array::uniform3(0u8..4), prop::array::uniform3(-1i8..=1), prop::array::uniform3(-1e7..1e7f64)).prop_map(
-            move |(q, d, t)| Pose { rot_deg: [0, 1, 2].map(|i| nudge(90.0 * q[i] as f64, d[i])), t }
-        ),
+        (
+            prop::array::uniform3(0u8..4),
+            prop::array::uniform3(-1i8..=1),
+            prop::array::uniform3(-1e7..1e7f64)
+        )
+            .prop_map(move |(q, d, t)| Pose {
+                rot_deg: [0, 1, 2].map(|i| nudge(90.0 * q[i] as f64, d[i])),
+                t
+            }),
     ]
 }
 
@@ -89,9 +98,20 @@ proptest! {
 
 #[test]
 fn traversals_agree_on_bunny_and_teapot() {
-    let bunny = mesh::resolve("bunny").unwrap().scaled_into_unit_cube().unwrap().triangles_f64();
-    let teapot = mesh::resolve("teapot").unwrap().scaled_into_unit_cube().unwrap().triangles_f64();
-    for pose in [Pose::new(10.0, 20.0, 30.0, 0.3, 0.0, 0.0), Pose::new(-70.0, 5.0, 160.0, 0.9, 0.4, -0.2)] {
+    let bunny = mesh::resolve("bunny")
+        .unwrap()
+        .scaled_into_unit_cube()
+        .unwrap()
+        .triangles_f64();
+    let teapot = mesh::resolve("teapot")
+        .unwrap()
+        .scaled_into_unit_cube()
+        .unwrap()
+        .triangles_f64();
+    for pose in [
+        Pose::new(10.0, 20.0, 30.0, 0.3, 0.0, 0.0),
+        Pose::new(-70.0, 5.0, 160.0, 0.9, 0.4, -0.2),
+    ] {
         assert_traversals_agree(&bunny, &teapot, ChipConfig::default(), &pose);
     }
 }
@@ -114,7 +134,10 @@ fn exact_sum_sign(xs: &[f64]) -> f64 {
         h.push(q);
         e = h;
     }
-    e.iter().rev().find(|&&v| v != 0.0).map_or(0.0, |v| v.signum())
+    e.iter()
+        .rev()
+        .find(|&&v| v != 0.0)
+        .map_or(0.0, |v| v.signum())
 }
 
 /// The vertices of a DOP {x : B_j . x <= d_j}, by intersecting plane triples (f64).
@@ -124,7 +147,11 @@ fn dop_vertices(normals: &DopNormals, d: &[f64]) -> Vec<Vector3<f64>> {
     for i in 0..k {
         for j in i + 1..k {
             for l in j + 1..k {
-                let m = Matrix3::from_rows(&[normals.b[i].transpose(), normals.b[j].transpose(), normals.b[l].transpose()]);
+                let m = Matrix3::from_rows(&[
+                    normals.b[i].transpose(),
+                    normals.b[j].transpose(),
+                    normals.b[l].transpose(),
+                ]);
                 let Some(inv) = m.try_inverse() else { continue };
                 let x = inv * Vector3::new(d[i], d[j], d[l]);
                 let scale = d.iter().fold(1.0f64, |a, v| a.max(v.abs()));
@@ -251,17 +278,44 @@ proptest! {
 fn tcheck_unit_triangle_known_crossings() {
     // B is the unit triangle itself (M_B = identity, exact), A in the same frame.
     let f = Format::BINARY32;
-    let unit = [Point3::new(0.0, 0.0, 0.0), Point3::new(1.0, 0.0, 0.0), Point3::new(0.0, 1.0, 0.0)];
+    let unit = [
+        Point3::new(0.0, 0.0, 0.0),
+        Point3::new(1.0, 0.0, 0.0),
+        Point3::new(0.0, 1.0, 0.0),
+    ];
     let leaf = TriWord::new(&unit, f, 1.0);
-    assert_eq!(leaf.m, [[1.0, 0.0, 0.0, 0.0], [0.0, 1.0, 0.0, 0.0], [0.0, 0.0, 1.0, 0.0]]);
-    let side = TriSide { scale: [1.0, 1.0], lambda_max_b: leaf.lambda };
+    assert_eq!(
+        leaf.m,
+        [
+            [1.0, 0.0, 0.0, 0.0],
+            [0.0, 1.0, 0.0, 0.0],
+            [0.0, 0.0, 1.0, 0.0]
+        ]
+    );
+    let side = TriSide {
+        scale: [1.0, 1.0],
+        lambda_max_b: leaf.lambda,
+    };
     let setup = HostSetup::new(&ChipConfig::default(), &Pose::default(), 1.0, side);
     assert_eq!(setup.m_ab, leaf.m);
-    let mb = tcheck::stage1(f, Rounding::NearestEven, &leaf, &setup.m_ab, setup.beta_ab, 1.0);
+    let mb = tcheck::stage1(
+        f,
+        Rounding::NearestEven,
+        &leaf,
+        &setup.m_ab,
+        setup.beta_ab,
+        1.0,
+    );
     let cert = certificate::Certificate::new(f, Rounding::NearestEven);
     let run = |v: [[f64; 3]; 3]| {
         let tri = v.map(|p| Point3::new(p[0], p[1], p[2]));
-        tcheck::edges(f, Rounding::NearestEven, &cert, &mb, &TriWord::new(&tri, f, 1.0))
+        tcheck::edges(
+            f,
+            Rounding::NearestEven,
+            &cert,
+            &mb,
+            &TriWord::new(&tri, f, 1.0),
+        )
     };
     // Edge V0V1 from (0.25,0.25,-1) to (0.25,0.25,1) pierces U at (0.25,0.25).
     let t = run([[0.25, 0.25, -1.0], [0.25, 0.25, 1.0], [5.0, 5.0, 0.5]]);
@@ -270,41 +324,91 @@ fn tcheck_unit_triangle_known_crossings() {
     assert_eq!((t.a[0], t.b[0], t.rz[0], t.s[0]), (0.5, 0.5, 2.0, -1.0));
     assert!(t.a_bound[0] > 0.0 && t.a_bound[0] < 1e-5);
     // Same edge reversed (Q below): the mirrored criterion.
-    assert_eq!(run([[0.25, 0.25, 1.0], [0.25, 0.25, -1.0], [5.0, 5.0, 0.5]]).crossing[0], Some(true));
+    assert_eq!(
+        run([[0.25, 0.25, 1.0], [0.25, 0.25, -1.0], [5.0, 5.0, 0.5]]).crossing[0],
+        Some(true)
+    );
     // Piercing the plane at (0.75, 0.75): outside U (u + v > 1).
-    assert_eq!(run([[0.75, 0.75, -1.0], [0.75, 0.75, 1.0], [5.0, 5.0, 0.5]]).result(), Some(false));
+    assert_eq!(
+        run([[0.75, 0.75, -1.0], [0.75, 0.75, 1.0], [5.0, 5.0, 0.5]]).result(),
+        Some(false)
+    );
     // Negative u.
-    assert_eq!(run([[-0.1, 0.5, -1.0], [-0.1, 0.5, 1.0], [5.0, 5.0, 0.5]]).result(), Some(false));
+    assert_eq!(
+        run([[-0.1, 0.5, -1.0], [-0.1, 0.5, 1.0], [5.0, 5.0, 0.5]]).result(),
+        Some(false)
+    );
     // Edge entirely above the plane.
-    assert_eq!(run([[0.2, 0.2, 0.5], [0.3, 0.3, 1.0], [5.0, 5.0, 0.5]]).result(), Some(false));
+    assert_eq!(
+        run([[0.2, 0.2, 0.5], [0.3, 0.3, 1.0], [5.0, 5.0, 0.5]]).result(),
+        Some(false)
+    );
     // Through the edge u + v = 1 of U exactly, and through the vertex (0,0): unknown.
-    assert_eq!(run([[0.5, 0.5, -1.0], [0.5, 0.5, 1.0], [5.0, 5.0, 0.5]]).crossing[0], None);
-    assert_eq!(run([[0.0, 0.0, -1.0], [0.0, 0.0, 1.0], [5.0, 5.0, 0.5]]).crossing[0], None);
+    assert_eq!(
+        run([[0.5, 0.5, -1.0], [0.5, 0.5, 1.0], [5.0, 5.0, 0.5]]).crossing[0],
+        None
+    );
+    assert_eq!(
+        run([[0.0, 0.0, -1.0], [0.0, 0.0, 1.0], [5.0, 5.0, 0.5]]).crossing[0],
+        None
+    );
     // A vertex exactly on the plane, inside U: unknown.
-    assert_eq!(run([[0.2, 0.2, 0.0], [0.3, 0.3, 1.0], [5.0, 5.0, 0.5]]).result(), None);
+    assert_eq!(
+        run([[0.2, 0.2, 0.0], [0.3, 0.3, 1.0], [5.0, 5.0, 0.5]]).result(),
+        None
+    );
 }
 
 #[test]
 fn degenerate_and_touching_pairs() {
     let f = Format::BINARY32;
     let cfg = ChipConfig::default();
-    let tri = [Point3::new(0.0, 0.0, 0.0), Point3::new(1.0, 0.0, 0.0), Point3::new(0.0, 1.0, 0.0)];
+    let tri = [
+        Point3::new(0.0, 0.0, 0.0),
+        Point3::new(1.0, 0.0, 0.0),
+        Point3::new(0.0, 1.0, 0.0),
+    ];
     // every word and the setup in one unit of length, S = 4 (>= every coordinate)
     let word = |t: &[Point3<f64>; 3]| TriWord::new(t, f, 4.0);
-    let setup = HostSetup::new(&cfg, &Pose::default(), 2.0, TriSide { scale: [4.0, 4.0], lambda_max_b: word(&tri).lambda });
+    let setup = HostSetup::new(
+        &cfg,
+        &Pose::default(),
+        2.0,
+        TriSide {
+            scale: [4.0, 4.0],
+            lambda_max_b: word(&tri).lambda,
+        },
+    );
     // A segment (zero-area triangle) piercing the triangle: decided through the other direction.
-    let seg = [Point3::new(0.2, 0.2, -1.0), Point3::new(0.2, 0.2, 1.0), Point3::new(0.2, 0.2, 0.0)];
+    let seg = [
+        Point3::new(0.2, 0.2, -1.0),
+        Point3::new(0.2, 0.2, 1.0),
+        Point3::new(0.2, 0.2, 0.0),
+    ];
     let (wt, ws) = (word(&tri), word(&seg));
     assert!(ws.degenerate && !wt.degenerate);
-    let sure_hit = tri_unit::TriResult { hit: true, uncertain: false };
-    assert_eq!(tri_unit::tri_unit(f, Rounding::NearestEven, &wt, &ws, &setup), sure_hit);
-    assert_eq!(tri_unit::tri_unit(f, Rounding::NearestEven, &ws, &wt, &setup), sure_hit);
+    let sure_hit = tri_unit::TriResult {
+        hit: true,
+        uncertain: false,
+    };
+    assert_eq!(
+        tri_unit::tri_unit(f, Rounding::NearestEven, &wt, &ws, &setup),
+        sure_hit
+    );
+    assert_eq!(
+        tri_unit::tri_unit(f, Rounding::NearestEven, &ws, &wt, &setup),
+        sure_hit
+    );
     assert!(oracle::tri_tri(&tri, &seg));
     // A segment that misses: the degenerate direction is unknown, so the pair is uncertain.
     let miss = seg.map(|p| p + Vector3::new(2.0, 0.0, 0.0));
     assert!(tri_unit::tri_unit(f, Rounding::NearestEven, &wt, &word(&miss), &setup).uncertain);
     // Vertex touching the face: uncertain. Coplanar overlap: uncertain.
-    let touch = [Point3::new(0.2, 0.2, 0.0), Point3::new(0.2, 0.2, 1.0), Point3::new(1.0, 1.0, 1.0)];
+    let touch = [
+        Point3::new(0.2, 0.2, 0.0),
+        Point3::new(0.2, 0.2, 1.0),
+        Point3::new(1.0, 1.0, 1.0),
+    ];
     assert!(tri_unit::tri_unit(f, Rounding::NearestEven, &wt, &word(&touch), &setup).uncertain);
     let coplanar = tri.map(|p| p + Vector3::new(0.1, 0.1, 0.0));
     assert!(tri_unit::tri_unit(f, Rounding::NearestEven, &wt, &word(&coplanar), &setup).uncertain);
@@ -377,21 +481,45 @@ fn dop_unit_keeps_and_culls() {
     for k in SUPPORTED_K {
         for format in [Format::BINARY32, Format::REDUCED] {
             for dop_rounding in [DopRounding::Outward, DopRounding::NearestEven] {
-                let cfg = ChipConfig { k, format: format.into(), dop_rounding, ..Default::default() };
+                let cfg = ChipConfig {
+                    k,
+                    format: format.into(),
+                    dop_rounding,
+                    ..Default::default()
+                };
                 let (mut overlaps, mut total) = (0u32, 0u32);
                 for seed in 0..8u64 {
-                    let (ta, tb) = (DopTree::build(&soup(12, seed), &cfg), DopTree::build(&soup(12, seed + 1), &cfg));
-                    let pose = Pose::new(37.0 * seed as f64, 11.0, -23.0, 0.1 * (seed % 4) as f64, 0.2, 0.0);
+                    let (ta, tb) = (
+                        DopTree::build(&soup(12, seed), &cfg),
+                        DopTree::build(&soup(12, seed + 1), &cfg),
+                    );
+                    let pose = Pose::new(
+                        37.0 * seed as f64,
+                        11.0,
+                        -23.0,
+                        0.1 * (seed % 4) as f64,
+                        0.2,
+                        0.0,
+                    );
                     let setup = HostSetup::new(&cfg, &pose, tb.coord_bound(), TriSide::UNUSED);
                     for nb in 0..tb.len() as u32 {
                         for na in 0..ta.len() as u32 {
-                            overlaps += dop_unit::dop_overlap(format, dop_rounding.op(), &setup, &tb.dop(nb), &ta.dop(na)) as u32;
+                            overlaps += dop_unit::dop_overlap(
+                                format,
+                                dop_rounding.op(),
+                                &setup,
+                                &tb.dop(nb),
+                                &ta.dop(na),
+                            ) as u32;
                             total += 1;
                         }
                     }
                 }
                 let share = overlaps as f64 / total as f64;
-                assert!((0.1..0.9).contains(&share), "k={k} {format} {dop_rounding:?}: {overlaps} of {total} DOP tests overlap");
+                assert!(
+                    (0.1..0.9).contains(&share),
+                    "k={k} {format} {dop_rounding:?}: {overlaps} of {total} DOP tests overlap"
+                );
             }
         }
     }
@@ -405,18 +533,43 @@ fn tri_unit_fast_path_equals_reference_on_hard_cases() {
     let cases = collision_chip::hard_cases::load_catalogue().unwrap();
     let mut pairs = 0;
     for case in &cases {
-        let moved = [Pose::new(0.0, 0.0, 0.0, 0.0, 0.0, 0.0), Pose::new(13.0, -71.0, 33.0, 0.0, 0.0, 0.0)]
-            .map(|m| if m.rot_deg == [0.0; 3] { case.pose } else { case.moved_by(&m).pose });
+        let moved = [
+            Pose::new(0.0, 0.0, 0.0, 0.0, 0.0, 0.0),
+            Pose::new(13.0, -71.0, 33.0, 0.0, 0.0, 0.0),
+        ]
+        .map(|m| {
+            if m.rot_deg == [0.0; 3] {
+                case.pose
+            } else {
+                case.moved_by(&m).pose
+            }
+        });
         let tiny = Format::new(5, 4).unwrap();
-        for (pose, format) in moved.iter().flat_map(|p| [(p, Format::BINARY32), (p, Format::REDUCED), (p, tiny)]) {
-            let cfg = ChipConfig { format: format.into(), ..Default::default() };
+        for (pose, format) in moved
+            .iter()
+            .flat_map(|p| [(p, Format::BINARY32), (p, Format::REDUCED), (p, tiny)])
+        {
+            let cfg = ChipConfig {
+                format: format.into(),
+                ..Default::default()
+            };
             let chip = Chip::new(&case.a, &case.b, cfg).unwrap();
-            let (wa, wb, setup) = (chip.a.tris().collect::<Vec<_>>(), chip.b.tris().collect::<Vec<_>>(), chip.setup(pose));
-            let mut unit = tri_unit::TriUnit::new(format, cfg.tri_rounding, &setup, wa.len(), wb.len());
+            let (wa, wb, setup) = (
+                chip.a.tris().collect::<Vec<_>>(),
+                chip.b.tris().collect::<Vec<_>>(),
+                chip.setup(pose),
+            );
+            let mut unit =
+                tri_unit::TriUnit::new(format, cfg.tri_rounding, &setup, wa.len(), wb.len());
             for (i, a) in wa.iter().enumerate() {
                 for (j, b) in wb.iter().enumerate() {
                     let want = tri_unit::tri_unit(format, cfg.tri_rounding, a, b, &setup);
-                    assert_eq!(unit.test(i as u32, a, j as u32, b), want, "{} ({i}, {j}) {format}", case.name);
+                    assert_eq!(
+                        unit.test(i as u32, a, j as u32, b),
+                        want,
+                        "{} ({i}, {j}) {format}",
+                        case.name
+                    );
                     pairs += 1;
                 }
             }
@@ -439,7 +592,9 @@ fn parents(tree: &DopTree) -> Vec<Option<u32>> {
 }
 
 fn leaf_of(tree: &DopTree, tri: u32) -> u32 {
-    tree.nodes().position(|n| n == collision_chip::dop::Node::Leaf(tri)).unwrap() as u32
+    tree.nodes()
+        .position(|n| n == collision_chip::dop::Node::Leaf(tri))
+        .unwrap() as u32
 }
 
 fn path(parent: &[Option<u32>], mut n: u32) -> Vec<u32> {
@@ -465,20 +620,39 @@ fn outward_dop_test_never_culls_a_contact() {
         Pose::new(90f64.next_down(), 0.0, 90.0, -1e7, 0.0, 1e7),
     ];
     let (mut checked, mut nearest_culled) = (0, 0);
-    for case in cases.iter().flat_map(|c| std::iter::once(c.clone()).chain(moves.iter().map(|m| c.moved_by(m)))) {
+    for case in cases
+        .iter()
+        .flat_map(|c| std::iter::once(c.clone()).chain(moves.iter().map(|m| c.moved_by(m))))
+    {
         for (k, format, rounding) in SUPPORTED_K.iter().flat_map(|&k| {
             [Format::BINARY32, Format::REDUCED]
                 .into_iter()
-                .flat_map(move |f| [(k, f, DopRounding::Outward), (k, f, DopRounding::NearestEven)])
+                .flat_map(move |f| {
+                    [
+                        (k, f, DopRounding::Outward),
+                        (k, f, DopRounding::NearestEven),
+                    ]
+                })
         }) {
-            let cfg = ChipConfig { k, format: format.into(), dop_rounding: rounding, ..Default::default() };
+            let cfg = ChipConfig {
+                k,
+                format: format.into(),
+                dop_rounding: rounding,
+                ..Default::default()
+            };
             let chip = Chip::new(&case.a, &case.b, cfg).unwrap();
             let setup = chip.setup(&case.pose);
             let (pa, pb) = (parents(&chip.a.tree), parents(&chip.b.tree));
             for (ta, tb) in oracle::intersecting_pairs(&case.a, &place(&case.b, &case.pose)) {
                 for na in path(&pa, leaf_of(&chip.a.tree, ta)) {
                     for nb in path(&pb, leaf_of(&chip.b.tree, tb)) {
-                        let o = dop_unit::dop_overlap(format, rounding.op(), &setup, &chip.b.tree.dop(nb), &chip.a.tree.dop(na));
+                        let o = dop_unit::dop_overlap(
+                            format,
+                            rounding.op(),
+                            &setup,
+                            &chip.b.tree.dop(nb),
+                            &chip.a.tree.dop(na),
+                        );
                         if rounding == DopRounding::Outward {
                             assert!(o, "{}: k={k} {format}: contact ({ta}, {tb}) culled at nodes ({na}, {nb})", case.name);
                             checked += 1;
@@ -505,30 +679,55 @@ fn outward_dop_test_never_culls_a_contact() {
 /// shares were 0.0033-0.0345 (binary32) and 0.47-0.93 (e8m15), and fail these bounds.
 #[test]
 fn default_query_is_exact_on_vendored_meshes() {
-    let sweep = collision_chip::pose::Sweep { distances: vec![2.2, 1.4, 0.8, 0.2], orientations: 2, seed: 5 };
+    let sweep = collision_chip::pose::Sweep {
+        distances: vec![2.2, 1.4, 0.8, 0.2],
+        orientations: 2,
+        seed: 5,
+    };
     let poses = collision_chip::pose::sweep_poses(&sweep).unwrap();
     // (mesh, format, most uncertain / triangle tests, most overlapping / DOP tests)
     let bounds = [
-        ("bunny", Format::BINARY32, 0.002, 0.5),    // measured 0.0007, 0.368
-        ("bunny", Format::REDUCED, 0.055, 0.5),     // 0.0464, 0.369
-        ("teapot", Format::BINARY32, 0.002, 0.5),   // 0.0006, 0.390
-        ("teapot", Format::REDUCED, 0.035, 0.5),    // 0.0160, 0.390
+        ("bunny", Format::BINARY32, 0.002, 0.5), // measured 0.0007, 0.368
+        ("bunny", Format::REDUCED, 0.055, 0.5),  // 0.0464, 0.369
+        ("teapot", Format::BINARY32, 0.002, 0.5), // 0.0006, 0.390
+        ("teapot", Format::REDUCED, 0.035, 0.5), // 0.0160, 0.390
         ("dragon-11k", Format::BINARY32, 0.002, 0.5), // 0.0002, 0.380
-        ("dragon-11k", Format::REDUCED, 0.09, 0.5),  // 0.0694, 0.380
+        ("dragon-11k", Format::REDUCED, 0.09, 0.5), // 0.0694, 0.380
     ];
     for (name, format, max_uncertain, max_overlaps) in bounds {
-        let tris = mesh::resolve(name).unwrap().scaled_into_unit_cube().unwrap().triangles_f64();
-        let chip = Chip::new(&tris, &tris, ChipConfig { format: format.into(), ..Default::default() }).unwrap();
+        let tris = mesh::resolve(name)
+            .unwrap()
+            .scaled_into_unit_cube()
+            .unwrap()
+            .triangles_f64();
+        let chip = Chip::new(
+            &tris,
+            &tris,
+            ChipConfig {
+                format: format.into(),
+                ..Default::default()
+            },
+        )
+        .unwrap();
         let (mut uncertain, mut tri_tests, mut overlaps, mut dop_tests) = (0, 0, 0, 0);
         for sp in &poses {
             let exact = oracle::intersecting_pairs(&tris, &place(&tris, &sp.pose));
             let r = chip.query(&sp.pose, Mode::All, Traversal::Lifo);
             assert_eq!(r.pairs, exact, "{name} {format} {}", sp.pose.text());
             assert_eq!(r.uncertain.len() as u64, r.counters.uncertain);
-            (uncertain, tri_tests) = (uncertain + r.counters.uncertain, tri_tests + r.counters.tri_tests);
-            (overlaps, dop_tests) = (overlaps + r.counters.dop_overlaps, dop_tests + r.counters.dop_tests);
+            (uncertain, tri_tests) = (
+                uncertain + r.counters.uncertain,
+                tri_tests + r.counters.tri_tests,
+            );
+            (overlaps, dop_tests) = (
+                overlaps + r.counters.dop_overlaps,
+                dop_tests + r.counters.dop_tests,
+            );
         }
-        let (u, o) = (uncertain as f64 / tri_tests as f64, overlaps as f64 / dop_tests as f64);
+        let (u, o) = (
+            uncertain as f64 / tri_tests as f64,
+            overlaps as f64 / dop_tests as f64,
+        );
         eprintln!("{name} {format}: uncertain {uncertain}/{tri_tests} = {u:.4}, DOP overlaps {overlaps}/{dop_tests} = {o:.4}");
         assert!(u <= max_uncertain, "{name} {format}: {uncertain} of {tri_tests} triangle tests uncertain ({u:.4} > {max_uncertain})");
         assert!(o <= max_overlaps, "{name} {format}: {overlaps} of {dop_tests} DOP tests overlap ({o:.4} > {max_overlaps})");
@@ -539,9 +738,20 @@ fn default_query_is_exact_on_vendored_meshes() {
 /// 270 degrees instead of the 770 of 0 degrees.
 #[test]
 fn tiny_negative_angle_is_not_a_quarter_turn() {
-    let tris = mesh::resolve("bunny").unwrap().scaled_into_unit_cube().unwrap().triangles_f64();
+    let tris = mesh::resolve("bunny")
+        .unwrap()
+        .scaled_into_unit_cube()
+        .unwrap()
+        .triangles_f64();
     let chip = Chip::new(&tris, &tris, ChipConfig::default()).unwrap();
-    let pairs = |rx: f64| chip.query(&Pose::new(rx, 0.0, 0.0, 0.3, 0.0, 0.0), Mode::All, Traversal::Lifo).pairs;
+    let pairs = |rx: f64| {
+        chip.query(
+            &Pose::new(rx, 0.0, 0.0, 0.3, 0.0, 0.0),
+            Mode::All,
+            Traversal::Lifo,
+        )
+        .pairs
+    };
     let (zero, tiny) = (pairs(0.0), pairs(-1e-15));
     assert_eq!(zero.len(), 770);
     assert_eq!(tiny, zero);
@@ -556,25 +766,76 @@ fn tiny_negative_angle_is_not_a_quarter_turn() {
 /// and triangle words of 23 * 32 + 2 = 738 bits (93 bytes).
 #[test]
 fn a_dop_format_apart_keeps_each_datapath_its_own() {
-    let tris = mesh::resolve("bunny").unwrap().scaled_into_unit_cube().unwrap().triangles_f64();
-    let chip = |f: &str| Chip::new(&tris, &tris, ChipConfig { format: f.parse::<Formats>().unwrap(), ..Default::default() }).unwrap();
+    let tris = mesh::resolve("bunny")
+        .unwrap()
+        .scaled_into_unit_cube()
+        .unwrap()
+        .triangles_f64();
+    let chip = |f: &str| {
+        Chip::new(
+            &tris,
+            &tris,
+            ChipConfig {
+                format: f.parse::<Formats>().unwrap(),
+                ..Default::default()
+            },
+        )
+        .unwrap()
+    };
     let (split, dop, tri) = (chip("e8m15/binary32"), chip("e8m15"), chip("binary32"));
-    let sweep = collision_chip::pose::Sweep { distances: vec![1.6, 1.0, 0.6], orientations: 2, seed: 3 };
+    let sweep = collision_chip::pose::Sweep {
+        distances: vec![1.6, 1.0, 0.6],
+        orientations: 2,
+        seed: 3,
+    };
     let (mut uncertain, mut dop_uncertain) = (0, 0);
     for sp in collision_chip::pose::sweep_poses(&sweep).unwrap() {
         let pose = &sp.pose;
         let r = split.query(pose, Mode::All, Traversal::Lifo);
         let d = dop.query(pose, Mode::All, Traversal::Lifo);
-        assert_eq!(r.pairs, oracle::intersecting_pairs(&tris, &place(&tris, pose)), "{}", pose.text());
+        assert_eq!(
+            r.pairs,
+            oracle::intersecting_pairs(&tris, &place(&tris, pose)),
+            "{}",
+            pose.text()
+        );
         let (c, g) = (r.counters, d.counters);
-        assert_eq!((c.dop_tests, c.dop_overlaps, c.node_fetches, c.tri_tests, c.tri_fetches), (g.dop_tests, g.dop_overlaps, g.node_fetches, g.tri_tests, g.tri_fetches));
+        assert_eq!(
+            (
+                c.dop_tests,
+                c.dop_overlaps,
+                c.node_fetches,
+                c.tri_tests,
+                c.tri_fetches
+            ),
+            (
+                g.dop_tests,
+                g.dop_overlaps,
+                g.node_fetches,
+                g.tri_tests,
+                g.tri_fetches
+            )
+        );
         assert_eq!(c.memory_bytes, 81 * c.node_fetches + 93 * c.tri_fetches);
         let setup = tri.setup(pose);
         for &(a, b) in &r.uncertain {
-            let v = tri_unit::tri_unit(Format::BINARY32, Rounding::NearestEven, &tri.a.tri(a), &tri.b.tri(b), &setup);
-            assert!(v.uncertain, "({a}, {b}) at {}: binary32 decides it, the split chip does not", pose.text());
+            let v = tri_unit::tri_unit(
+                Format::BINARY32,
+                Rounding::NearestEven,
+                &tri.a.tri(a),
+                &tri.b.tri(b),
+                &setup,
+            );
+            assert!(
+                v.uncertain,
+                "({a}, {b}) at {}: binary32 decides it, the split chip does not",
+                pose.text()
+            );
         }
         (uncertain, dop_uncertain) = (uncertain + c.uncertain, dop_uncertain + g.uncertain);
     }
-    assert!(uncertain * 10 < dop_uncertain, "{uncertain} uncertain pairs against e8m15's {dop_uncertain}");
+    assert!(
+        uncertain * 10 < dop_uncertain,
+        "{uncertain} uncertain pairs against e8m15's {dop_uncertain}"
+    );
 }

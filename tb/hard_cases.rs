@@ -14,12 +14,12 @@
 //! Test names: `oracle_*` judge the oracle, `chip_*` the chip, `tri_unit_*` its verdicts.
 
 use collision_chip::chip::config::ChipConfig;
+use collision_chip::chip::reg::Mode;
 use collision_chip::format::Format;
 use collision_chip::golden::tri_unit::TriUnit;
 use collision_chip::hard_cases::{self as hc, Case, ExactMap, Verdict, FAMILIES, VERDICT_FORMATS};
 use collision_chip::query::Chip;
 use collision_chip::traversal::Traversal;
-use collision_chip::chip::reg::Mode;
 use proptest::prelude::*;
 use proptest::test_runner::Config as PtConfig;
 
@@ -38,7 +38,11 @@ fn chip_failures(case: &Case, expected: &[(u32, u32)]) -> Vec<String> {
     let mut out = Vec::new();
     for (format, fname) in FORMATS {
         for k in KS {
-            let cfg = ChipConfig { k, format: format.into(), ..Default::default() };
+            let cfg = ChipConfig {
+                k,
+                format: format.into(),
+                ..Default::default()
+            };
             let chip = Chip::new(&case.a, &case.b, cfg).unwrap();
             let mut bad = Vec::new();
             for t in Traversal::ALL {
@@ -55,7 +59,11 @@ fn chip_failures(case: &Case, expected: &[(u32, u32)]) -> Vec<String> {
                 }
             }
             if !bad.is_empty() {
-                out.push(format!("{} [{fname} k={k}] expected {expected:?}: {}", case.name, bad.join(", ")));
+                out.push(format!(
+                    "{} [{fname} k={k}] expected {expected:?}: {}",
+                    case.name,
+                    bad.join(", ")
+                ));
             }
         }
     }
@@ -67,7 +75,16 @@ fn traversal_disagreements(case: &Case) -> Vec<String> {
     let mut out = Vec::new();
     for (format, fname) in FORMATS {
         for k in KS {
-            let chip = Chip::new(&case.a, &case.b, ChipConfig { k, format: format.into(), ..Default::default() }).unwrap();
+            let chip = Chip::new(
+                &case.a,
+                &case.b,
+                ChipConfig {
+                    k,
+                    format: format.into(),
+                    ..Default::default()
+                },
+            )
+            .unwrap();
             let base = chip.query(&case.pose, Mode::All, Traversal::Recursive);
             for t in Traversal::ALL {
                 let r = chip.query(&case.pose, Mode::All, t);
@@ -75,7 +92,10 @@ fn traversal_disagreements(case: &Case) -> Vec<String> {
                     || r.counters.dop_tests != base.counters.dop_tests
                     || r.counters.tri_tests != base.counters.tri_tests
                 {
-                    out.push(format!("{} [{fname} k={k}] {t:?}: {:?} vs Recursive {:?}", case.name, r.pairs, base.pairs));
+                    out.push(format!(
+                        "{} [{fname} k={k}] {t:?}: {:?} vs Recursive {:?}",
+                        case.name, r.pairs, base.pairs
+                    ));
                 }
             }
         }
@@ -96,10 +116,26 @@ fn exact_variants(case: &Case) -> Vec<Case> {
         }
     }
     for m in [
-        ExactMap { perm: [1, 2, 0], sign: [1.0, 1.0, 1.0], scale_log2: 0 },
-        ExactMap { perm: [0, 1, 2], sign: [-1.0, 1.0, -1.0], scale_log2: 0 },
-        ExactMap { perm: [2, 1, 0], sign: [1.0, -1.0, 1.0], scale_log2: 5 },
-        ExactMap { perm: [0, 2, 1], sign: [1.0, 1.0, 1.0], scale_log2: -7 },
+        ExactMap {
+            perm: [1, 2, 0],
+            sign: [1.0, 1.0, 1.0],
+            scale_log2: 0,
+        },
+        ExactMap {
+            perm: [0, 1, 2],
+            sign: [-1.0, 1.0, -1.0],
+            scale_log2: 0,
+        },
+        ExactMap {
+            perm: [2, 1, 0],
+            sign: [1.0, -1.0, 1.0],
+            scale_log2: 5,
+        },
+        ExactMap {
+            perm: [0, 2, 1],
+            sign: [1.0, 1.0, 1.0],
+            scale_log2: -7,
+        },
     ] {
         v.push(case.mapped(&m));
     }
@@ -107,7 +143,12 @@ fn exact_variants(case: &Case) -> Vec<Case> {
 }
 
 fn report(what: &str, failures: &[String]) {
-    assert!(failures.is_empty(), "{} {what}:\n{}", failures.len(), failures.join("\n"));
+    assert!(
+        failures.is_empty(),
+        "{} {what}:\n{}",
+        failures.len(),
+        failures.join("\n")
+    );
 }
 
 // ---------------------------------------------------------------------------------------
@@ -122,7 +163,11 @@ fn catalogue_loads_and_covers_every_family() {
         assert!(cases.iter().any(|c| c.family == f), "no case of family {f}");
     }
     for c in &cases {
-        assert!(c.a.len() <= 6 && c.b.len() <= 6, "{}: meshes of at most 6 triangles", c.name);
+        assert!(
+            c.a.len() <= 6 && c.b.len() <= 6,
+            "{}: meshes of at most 6 triangles",
+            c.name
+        );
     }
     let mut names: Vec<&str> = cases.iter().map(|c| c.name.as_str()).collect();
     names.sort_unstable();
@@ -137,7 +182,8 @@ fn oracle_matches_catalogue() {
         .iter()
         .filter_map(|c| {
             let got = c.oracle_pairs();
-            (got != c.expected).then(|| format!("{}: oracle {got:?}, expected {:?}", c.name, c.expected))
+            (got != c.expected)
+                .then(|| format!("{}: oracle {got:?}, expected {:?}", c.name, c.expected))
         })
         .collect();
     report("oracle disagreements with the catalogue", &fails);
@@ -150,7 +196,10 @@ fn oracle_invariances_on_catalogue() {
         for v in exact_variants(&c) {
             let got = v.oracle_pairs();
             if got != v.expected {
-                fails.push(format!("{}: oracle {got:?}, expected {:?}", v.name, v.expected));
+                fails.push(format!(
+                    "{}: oracle {got:?}, expected {:?}",
+                    v.name, v.expected
+                ));
             }
         }
     }
@@ -159,13 +208,22 @@ fn oracle_invariances_on_catalogue() {
 
 #[test]
 fn chip_matches_catalogue_binary32_and_reduced() {
-    let fails: Vec<String> = catalogue().iter().flat_map(|c| chip_failures(c, &c.expected)).collect();
-    report("chip disagreements with the catalogue (case [format k] expected: traversal/mode got)", &fails);
+    let fails: Vec<String> = catalogue()
+        .iter()
+        .flat_map(|c| chip_failures(c, &c.expected))
+        .collect();
+    report(
+        "chip disagreements with the catalogue (case [format k] expected: traversal/mode got)",
+        &fails,
+    );
 }
 
 #[test]
 fn chip_traversals_agree_on_catalogue() {
-    let fails: Vec<String> = catalogue().iter().flat_map(traversal_disagreements).collect();
+    let fails: Vec<String> = catalogue()
+        .iter()
+        .flat_map(traversal_disagreements)
+        .collect();
     report("traversal disagreements", &fails);
 }
 
@@ -183,10 +241,19 @@ fn chip_invariances_on_catalogue() {
 /// TRI_UNIT's verdict on every pair of `case` in `format` as a query gets it: the chip's
 /// triangle words and host setup, the golden `TriUnit` the traversals call.
 fn tri_unit_verdicts(case: &Case, format: Format) -> Vec<((u32, u32), Verdict)> {
-    let cfg = ChipConfig { format: format.into(), ..Default::default() };
+    let cfg = ChipConfig {
+        format: format.into(),
+        ..Default::default()
+    };
     let chip = Chip::new(&case.a, &case.b, cfg).unwrap();
     let setup = chip.setup(&case.pose);
-    let mut unit = TriUnit::new(format, cfg.tri_rounding, &setup, chip.a.tri_count(), chip.b.tri_count());
+    let mut unit = TriUnit::new(
+        format,
+        cfg.tri_rounding,
+        &setup,
+        chip.a.tri_count(),
+        chip.b.tri_count(),
+    );
     let mut out = Vec::new();
     for (i, wa) in chip.a.tris().enumerate() {
         for (j, wb) in chip.b.tris().enumerate() {
@@ -206,7 +273,10 @@ fn verdict_failures(case: &Case) -> Vec<String> {
         for (pair, got) in tri_unit_verdicts(case, format) {
             let hit = case.expected.contains(&pair);
             let Some((want, why)) = case.verdict(pair, format) else {
-                out.push(format!("{} {pair:?} [{format}]: no stated verdict", case.name));
+                out.push(format!(
+                    "{} {pair:?} [{format}]: no stated verdict",
+                    case.name
+                ));
                 continue;
             };
             let what = if got != Verdict::Uncertain && (got == Verdict::Intersecting) != hit {
@@ -218,7 +288,12 @@ fn verdict_failures(case: &Case) -> Vec<String> {
             } else {
                 "decided where derived not to"
             };
-            out.push(format!("{} {pair:?} [{format}]: TRI_UNIT {}, stated {} ({what}); why: {why}", case.name, got.name(), want.name()));
+            out.push(format!(
+                "{} {pair:?} [{format}]: TRI_UNIT {}, stated {} ({what}); why: {why}",
+                case.name,
+                got.name(),
+                want.name()
+            ));
         }
     }
     out
@@ -232,10 +307,18 @@ fn tri_unit_verdicts_match_catalogue() {
     for format in VERDICT_FORMATS {
         let stated: Vec<Verdict> = cases
             .iter()
-            .flat_map(|c| (0..c.a.len() as u32).flat_map(move |i| (0..c.b.len() as u32).map(move |j| (i, j))).map(move |p| c.verdict(p, format).unwrap().0))
+            .flat_map(|c| {
+                (0..c.a.len() as u32)
+                    .flat_map(move |i| (0..c.b.len() as u32).map(move |j| (i, j)))
+                    .map(move |p| c.verdict(p, format).unwrap().0)
+            })
             .collect();
         for v in [Verdict::Intersecting, Verdict::Separate] {
-            assert!(stated.contains(&v), "[{format}] no pair is stated {}", v.name());
+            assert!(
+                stated.contains(&v),
+                "[{format}] no pair is stated {}",
+                v.name()
+            );
         }
     }
     let fails: Vec<String> = cases.iter().flat_map(verdict_failures).collect();
@@ -247,8 +330,15 @@ fn tri_unit_verdicts_match_catalogue() {
 /// decision (`Case::with_vertex_orders`), never gain one or get one wrong.
 #[test]
 fn tri_unit_verdicts_invariant_on_catalogue() {
-    let fails: Vec<String> = catalogue().iter().flat_map(exact_variants).flat_map(|v| verdict_failures(&v)).collect();
-    report("TRI_UNIT verdicts unlike the catalogue's on exact variants", &fails);
+    let fails: Vec<String> = catalogue()
+        .iter()
+        .flat_map(exact_variants)
+        .flat_map(|v| verdict_failures(&v))
+        .collect();
+    report(
+        "TRI_UNIT verdicts unlike the catalogue's on exact variants",
+        &fails,
+    );
 }
 
 // ---------------------------------------------------------------------------------------
@@ -256,7 +346,12 @@ fn tri_unit_verdicts_invariant_on_catalogue() {
 // ---------------------------------------------------------------------------------------
 
 fn cfg(cases: u32) -> PtConfig {
-    PtConfig { cases, failure_persistence: None, max_shrink_iters: 256, ..PtConfig::default() }
+    PtConfig {
+        cases,
+        failure_persistence: None,
+        max_shrink_iters: 256,
+        ..PtConfig::default()
+    }
 }
 
 /// One oracle test (construction == oracle, 256 cases) and one chip test (chip == oracle,
@@ -300,11 +395,22 @@ family_tests! {
 
 fn exact_map() -> impl Strategy<Value = ExactMap> {
     (
-        prop::sample::select(vec![[0, 1, 2], [0, 2, 1], [1, 0, 2], [1, 2, 0], [2, 0, 1], [2, 1, 0]]),
+        prop::sample::select(vec![
+            [0, 1, 2],
+            [0, 2, 1],
+            [1, 0, 2],
+            [1, 2, 0],
+            [2, 0, 1],
+            [2, 1, 0],
+        ]),
         prop::array::uniform3(prop::sample::select(vec![-1.0, 1.0])),
         -6i32..=6,
     )
-        .prop_map(|(perm, sign, scale_log2)| ExactMap { perm, sign, scale_log2 })
+        .prop_map(|(perm, sign, scale_log2)| ExactMap {
+            perm,
+            sign,
+            scale_log2,
+        })
 }
 
 proptest! {
@@ -402,12 +508,22 @@ fn generators_cover_both_answers_and_all_placements() {
         let (mut hit, mut miss, mut far, mut turned, mut scaled) = (0, 0, 0, 0, 0);
         for _ in 0..400 {
             let c = strat.new_tree(&mut runner).unwrap().current();
-            if c.expected.is_empty() { miss += 1 } else { hit += 1 }
+            if c.expected.is_empty() {
+                miss += 1
+            } else {
+                hit += 1
+            }
             far += c.pose.t.iter().any(|x| x.abs() >= 1e6) as u32;
             turned += c.pose.rot_deg.iter().any(|&r| r != 0.0) as u32;
             scaled += !c.name.contains("scale: 1.0,") as u32;
         }
-        assert!(hit > 0 && (miss > 0 || name == "shared-edge"), "{name}: {hit} intersecting, {miss} disjoint");
-        assert!(far > 0 && turned > 0 && scaled > 0, "{name}: {far} far, {turned} turned, {scaled} scaled");
+        assert!(
+            hit > 0 && (miss > 0 || name == "shared-edge"),
+            "{name}: {hit} intersecting, {miss} disjoint"
+        );
+        assert!(
+            far > 0 && turned > 0 && scaled > 0,
+            "{name}: {far} far, {turned} turned, {scaled} scaled"
+        );
     }
 }

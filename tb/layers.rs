@@ -42,8 +42,13 @@ type Tokens = Vec<(String, usize)>; // (token, 1-based line)
 fn strip(src: &str) -> String {
     let c: Vec<char> = src.chars().collect();
     let at = |k: usize, ch: char| c.get(k) == Some(&ch);
-    let id = |k: usize| c.get(k).is_some_and(|ch| ch.is_alphanumeric() || *ch == '_');
-    let find = |from: usize, stop: &dyn Fn(usize) -> bool| (from..c.len()).find(|&k| stop(k)).unwrap_or(c.len());
+    let id = |k: usize| {
+        c.get(k)
+            .is_some_and(|ch| ch.is_alphanumeric() || *ch == '_')
+    };
+    let find = |from: usize, stop: &dyn Fn(usize) -> bool| {
+        (from..c.len()).find(|&k| stop(k)).unwrap_or(c.len())
+    };
     let (mut out, mut i) = (String::with_capacity(src.len()), 0);
     while i < c.len() {
         let hashes = (i + 1..).take_while(|&k| at(k, '#')).count();
@@ -56,15 +61,29 @@ fn strip(src: &str) -> String {
                     (depth, k) = (depth + 1, k + 2);
                 } else if at(k, '*') && at(k + 1, '/') {
                     (depth, k) = (depth - 1, k + 2);
-                    if depth == 0 { break k; }
-                } else if k >= c.len() { break k; } else { k += 1; }
+                    if depth == 0 {
+                        break k;
+                    }
+                } else if k >= c.len() {
+                    break k;
+                } else {
+                    k += 1;
+                }
             }
-        } else if at(i, 'r') && at(i + 1 + hashes, '"') && (i == 0 || !id(i - 1) || (at(i - 1, 'b') && (i < 2 || !id(i - 2)))) {
+        } else if at(i, 'r')
+            && at(i + 1 + hashes, '"')
+            && (i == 0 || !id(i - 1) || (at(i - 1, 'b') && (i < 2 || !id(i - 2))))
+        {
             // r"..", r#".."#, br#".."#: ends at a quote followed by as many hashes
-            find(i + hashes + 2, &|k| at(k, '"') && (1..=hashes).all(|h| at(k + h, '#'))) + hashes + 1
+            find(i + hashes + 2, &|k| {
+                at(k, '"') && (1..=hashes).all(|h| at(k + h, '#'))
+            }) + hashes
+                + 1
         } else if at(i, '"') {
             // ends at a quote after an even number of backslashes
-            find(i + 1, &|k| c[k] == '"' && (i + 1..k).rev().take_while(|&j| c[j] == '\\').count() % 2 == 0) + 1
+            find(i + 1, &|k| {
+                c[k] == '"' && (i + 1..k).rev().take_while(|&j| c[j] == '\\').count() % 2 == 0
+            }) + 1
         } else if at(i, '\'') && (at(i + 1, '\\') || at(i + 2, '\'')) {
             // a char literal: 'x', '"', '\n', '\'', '\u{..}'; a lifetime 'a is left alone
             find(i + if at(i + 1, '\\') { 3 } else { 2 }, &|k| c[k] == '\'') + 1
@@ -74,7 +93,11 @@ fn strip(src: &str) -> String {
             continue;
         };
         let end = end.min(c.len());
-        out.extend(c[i..end].iter().map(|&ch| if ch == '\n' { '\n' } else { ' ' }));
+        out.extend(
+            c[i..end]
+                .iter()
+                .map(|&ch| if ch == '\n' { '\n' } else { ' ' }),
+        );
         i = end;
     }
     out
@@ -83,14 +106,21 @@ fn strip(src: &str) -> String {
 /// Identifiers (with `$crate`), `::`, or single other characters.
 fn tokens(text: &str) -> Tokens {
     let c: Vec<char> = text.chars().collect();
-    let id = |k: usize| c.get(k).is_some_and(|ch| ch.is_alphanumeric() || *ch == '_');
+    let id = |k: usize| {
+        c.get(k)
+            .is_some_and(|ch| ch.is_alphanumeric() || *ch == '_')
+    };
     let (mut out, mut line, mut i) = (Vec::new(), 1, 0);
     while i < c.len() {
         let s = i;
         i = if id(i) || (c[i] == '$' && id(i + 1)) {
             (i + 1..=c.len()).find(|&k| !id(k)).unwrap()
         } else {
-            i + if c[i] == ':' && c.get(i + 1) == Some(&':') { 2 } else { 1 }
+            i + if c[i] == ':' && c.get(i + 1) == Some(&':') {
+                2
+            } else {
+                1
+            }
         };
         if !c[s].is_whitespace() {
             out.push((c[s..i].iter().collect(), line));
@@ -107,7 +137,12 @@ fn is_ident(s: &str) -> bool {
 /// Reads the path or `use` tree at t[i], pushing each full path (prefix + its own segments, with
 /// the line of its last segment): `a::{b, c::{d, e as f}, self}` gives a::b, a::c::d, a::c::e,
 /// a::self. Returns the index after it.
-fn tree(t: &Tokens, mut i: usize, mut segs: Vec<String>, out: &mut Vec<(usize, Vec<String>)>) -> usize {
+fn tree(
+    t: &Tokens,
+    mut i: usize,
+    mut segs: Vec<String>,
+    out: &mut Vec<(usize, Vec<String>)>,
+) -> usize {
     let start = i;
     while let Some((s, line)) = t.get(i) {
         if s == "{" {
@@ -176,11 +211,22 @@ fn refs(text: &str, here: &[String]) -> Vec<(usize, Vec<String>)> {
             _ => {}
         }
         let restriction = i >= 3 && tok(i - 1) == "in" && tok(i - 2) == "(" && tok(i - 3) == "pub";
-        if ["crate", "$crate", "super", "self"].contains(&tok(i)) && tok(i + 1) == "::" && !restriction {
-            let module: Vec<String> = here.iter().cloned().chain(inline.iter().map(|m| m.0.clone())).collect();
+        if ["crate", "$crate", "super", "self"].contains(&tok(i))
+            && tok(i + 1) == "::"
+            && !restriction
+        {
+            let module: Vec<String> = here
+                .iter()
+                .cloned()
+                .chain(inline.iter().map(|m| m.0.clone()))
+                .collect();
             let mut paths = Vec::new();
             i = tree(&t, i, Vec::new(), &mut paths);
-            out.extend(paths.into_iter().map(|(line, p)| (line, resolve(&module, &p))));
+            out.extend(
+                paths
+                    .into_iter()
+                    .map(|(line, p)| (line, resolve(&module, &p))),
+            );
         } else {
             i += 1;
         }
@@ -190,7 +236,11 @@ fn refs(text: &str, here: &[String]) -> Vec<(usize, Vec<String>)> {
 
 /// src/a/b.rs and src/a/b/mod.rs are module a::b; src/lib.rs is the crate root.
 fn module_of(rel: &Path) -> Vec<String> {
-    let mut m: Vec<String> = rel.with_extension("").iter().map(|s| s.to_string_lossy().into_owned()).collect();
+    let mut m: Vec<String> = rel
+        .with_extension("")
+        .iter()
+        .map(|s| s.to_string_lossy().into_owned())
+        .collect();
     if m.last().is_some_and(|s| s == "mod") || m == ["lib"] {
         m.pop();
     }
@@ -216,14 +266,27 @@ fn check(src: &Path, layers: &[&[&str]]) -> Result<(), String> {
     let show = |f: &PathBuf| format!("src/{}", f.strip_prefix(src).unwrap().display());
     let text: Vec<String> = all.iter().map(|f| fs::read_to_string(f).unwrap()).collect();
     let (mut errs, mut long) = (Vec::new(), String::new());
-    for (f, n) in all.iter().zip(&text).map(|(f, t)| (f, t.lines().count())).filter(|&(_, n)| n > MAX_LINES) {
+    for (f, n) in all
+        .iter()
+        .zip(&text)
+        .map(|(f, t)| (f, t.lines().count()))
+        .filter(|&(_, n)| n > MAX_LINES)
+    {
         long += &format!("\n    {} ({n} lines)", show(f));
     }
 
     // The import graph: src/bin/ is a separate crate, so not part of it.
-    let (files, text): (Vec<_>, Vec<_>) = all.into_iter().zip(text).filter(|(f, _)| !f.starts_with(src.join("bin"))).unzip();
-    let mods: Vec<Vec<String>> = files.iter().map(|f| module_of(f.strip_prefix(src).unwrap())).collect();
-    let index: HashMap<&[String], usize> = mods.iter().enumerate().map(|(k, m)| (&m[..], k)).collect();
+    let (files, text): (Vec<_>, Vec<_>) = all
+        .into_iter()
+        .zip(text)
+        .filter(|(f, _)| !f.starts_with(src.join("bin")))
+        .unzip();
+    let mods: Vec<Vec<String>> = files
+        .iter()
+        .map(|f| module_of(f.strip_prefix(src).unwrap()))
+        .collect();
+    let index: HashMap<&[String], usize> =
+        mods.iter().enumerate().map(|(k, m)| (&m[..], k)).collect();
     let mut edges: BTreeMap<(usize, usize), BTreeSet<usize>> = BTreeMap::new(); // (from, to) -> lines
     for (a, t) in text.iter().enumerate() {
         for (line, path) in refs(t, &mods[a]) {
@@ -237,26 +300,46 @@ fn check(src: &Path, layers: &[&[&str]]) -> Result<(), String> {
     let list = |es: &mut dyn Iterator<Item = (&(usize, usize), &BTreeSet<usize>)>| -> String {
         es.map(|((a, b), ls)| {
             let ls: Vec<String> = ls.iter().map(|l| l.to_string()).collect();
-            format!("\n    {} -> {} (line{} {})", show(&files[*a]), show(&files[*b]), if ls.len() > 1 { "s" } else { "" }, ls.join(", "))
+            format!(
+                "\n    {} -> {} (line{} {})",
+                show(&files[*a]),
+                show(&files[*b]),
+                if ls.len() > 1 { "s" } else { "" },
+                ls.join(", ")
+            )
         })
         .collect()
     };
 
     // 2. No upward arrow. A room is the first segment of a module path; the root (lib.rs) has none.
     let room = |k: usize| mods[k].first().map(String::as_str);
-    let layer: HashMap<&str, usize> = layers.iter().enumerate().flat_map(|(l, rs)| rs.iter().map(move |r| (*r, l))).collect();
+    let layer: HashMap<&str, usize> = layers
+        .iter()
+        .enumerate()
+        .flat_map(|(l, rs)| rs.iter().map(move |r| (*r, l)))
+        .collect();
     let rooms: BTreeSet<&str> = (0..files.len()).filter_map(room).collect();
     for r in rooms.iter().filter(|r| !layer.contains_key(*r)) {
-        let f = (0..files.len()).filter(|&k| room(k) == Some(r)).min_by_key(|&k| mods[k].len()).unwrap();
-        errs.push(format!("room `{r}` ({}) is not in LAYERS: add it to LAYERS", show(&files[f])));
+        let f = (0..files.len())
+            .filter(|&k| room(k) == Some(r))
+            .min_by_key(|&k| mods[k].len())
+            .unwrap();
+        errs.push(format!(
+            "room `{r}` ({}) is not in LAYERS: add it to LAYERS",
+            show(&files[f])
+        ));
     }
     let cross = |&(a, b): &(usize, usize)| match (room(a), room(b)) {
         (Some(ra), Some(rb)) if ra != rb => Some((ra, rb)),
         _ => None,
     };
-    let up = list(&mut edges.iter().filter(|(e, _)| cross(e).is_some_and(|(ra, rb)| layer.get(rb) > layer.get(ra) && layer.contains_key(ra))));
+    let up = list(&mut edges.iter().filter(|(e, _)| {
+        cross(e).is_some_and(|(ra, rb)| layer.get(rb) > layer.get(ra) && layer.contains_key(ra))
+    }));
     if !up.is_empty() {
-        errs.push(format!("upward arrows (a room importing a room in a higher layer):{up}"));
+        errs.push(format!(
+            "upward arrows (a room importing a room in a higher layer):{up}"
+        ));
     }
 
     // 1. The room graph has no circle.
@@ -267,7 +350,9 @@ fn check(src: &Path, layers: &[&[&str]]) -> Result<(), String> {
     }
     for scc in tarjan_scc(&rg).into_iter().filter(|s| s.len() > 1) {
         let inside: BTreeSet<&str> = scc.iter().map(|n| rg[*n]).collect();
-        let es = list(&mut edges.iter().filter(|(e, _)| cross(e).is_some_and(|(ra, rb)| inside.contains(ra) && inside.contains(rb))));
+        let es = list(&mut edges.iter().filter(|(e, _)| {
+            cross(e).is_some_and(|(ra, rb)| inside.contains(ra) && inside.contains(rb))
+        }));
         errs.push(format!("circle between rooms {inside:?}:{es}"));
     }
 
@@ -275,17 +360,30 @@ fn check(src: &Path, layers: &[&[&str]]) -> Result<(), String> {
     // (a mod.rs declaring, re-exporting or calling into its children) is left out: the children
     // belong to it, so child -> parent -> child is not a dependency circle. Any other is.
     let down = |&(a, b): &(usize, usize)| mods[b].starts_with(&mods[a]);
-    let fg = DiGraph::<(), ()>::from_edges(edges.keys().filter(|e| !down(e)).map(|&(a, b)| (a as u32, b as u32)));
+    let fg = DiGraph::<(), ()>::from_edges(
+        edges
+            .keys()
+            .filter(|e| !down(e))
+            .map(|&(a, b)| (a as u32, b as u32)),
+    );
     for scc in tarjan_scc(&fg).into_iter().filter(|s| s.len() > 1) {
         let inside: BTreeSet<usize> = scc.iter().map(|n| n.index()).collect();
-        let es = list(&mut edges.iter().filter(|(e, _)| !down(e) && inside.contains(&e.0) && inside.contains(&e.1)));
+        let es = list(
+            &mut edges
+                .iter()
+                .filter(|(e, _)| !down(e) && inside.contains(&e.0) && inside.contains(&e.1)),
+        );
         errs.push(format!("circle between files:{es}"));
     }
     // 4. No file over MAX_LINES (src/bin/ included).
     if !long.is_empty() {
         errs.push(format!("files over {MAX_LINES} lines:{long}"));
     }
-    if errs.is_empty() { Ok(()) } else { Err(errs.join("\n\n")) }
+    if errs.is_empty() {
+        Ok(())
+    } else {
+        Err(errs.join("\n\n"))
+    }
 }
 
 mod parser {
@@ -293,15 +391,33 @@ mod parser {
 
     fn paths(text: &str, here: &[&str]) -> Vec<String> {
         let here: Vec<String> = here.iter().map(|s| s.to_string()).collect();
-        refs(text, &here).into_iter().map(|(_, p)| p.join("::")).collect()
+        refs(text, &here)
+            .into_iter()
+            .map(|(_, p)| p.join("::"))
+            .collect()
     }
 
     #[test]
     fn use_trees_expand() {
-        let got = paths("use crate::a::{b, c::{d, e as f}, self};\nuse crate::g::*;", &["x"]);
+        let got = paths(
+            "use crate::a::{b, c::{d, e as f}, self};\nuse crate::g::*;",
+            &["x"],
+        );
         assert_eq!(got, ["a::b", "a::c::d", "a::c::e", "a", "g"]);
-        assert_eq!(paths("let p = crate::cycle::Params::<T>::RTL; $crate::rtl::m!();", &[]), ["cycle::Params", "rtl::m"]);
-        assert_eq!(paths("pub(crate) fn f() {} pub(in crate::a) fn g() {} mod m;", &[]), Vec::<String>::new());
+        assert_eq!(
+            paths(
+                "let p = crate::cycle::Params::<T>::RTL; $crate::rtl::m!();",
+                &[]
+            ),
+            ["cycle::Params", "rtl::m"]
+        );
+        assert_eq!(
+            paths(
+                "pub(crate) fn f() {} pub(in crate::a) fn g() {} mod m;",
+                &[]
+            ),
+            Vec::<String>::new()
+        );
     }
 
     #[test]
@@ -319,7 +435,10 @@ mod parser {
         assert_eq!(module_of(Path::new("x/y.rs")), ["x", "y"]);
         assert!(module_of(Path::new("lib.rs")).is_empty());
         assert_eq!(paths("use super::y; use self::z;", &["x"]), ["y", "x::z"]); // in src/x/mod.rs
-        assert_eq!(paths("use super::z; use super::super::w;", &["x", "y"]), ["x::z", "w"]); // in src/x/y.rs
+        assert_eq!(
+            paths("use super::z; use super::super::w;", &["x", "y"]),
+            ["x::z", "w"]
+        ); // in src/x/y.rs
     }
 
     #[test]
@@ -353,15 +472,24 @@ mod parser {
     #[test]
     fn circles_upward_arrows_unlisted_rooms_and_long_files_fail() {
         let long = "fn f() {}\n".repeat(MAX_LINES + 1);
-        let src = tree_in("bad", &[
-            ("lib.rs", "pub mod a;\npub mod b;\npub mod c;\n"),
-            ("a.rs", "\nuse crate::b::B;\npub struct A;\n"),
-            ("b.rs", "use crate::a::A;\npub struct B;\n"),
-            ("c.rs", &long),
-        ]);
+        let src = tree_in(
+            "bad",
+            &[
+                ("lib.rs", "pub mod a;\npub mod b;\npub mod c;\n"),
+                ("a.rs", "\nuse crate::b::B;\npub struct A;\n"),
+                ("b.rs", "use crate::a::A;\npub struct B;\n"),
+                ("c.rs", &long),
+            ],
+        );
         let err = check(&src, &[&["a"], &["b"]]).unwrap_err();
-        for want in ["files over 1000 lines:\n    src/c.rs (1001 lines)", "room `c` (src/c.rs) is not in LAYERS: add it to LAYERS",
-                     "upward arrows", "src/a.rs -> src/b.rs (line 2)", "circle between rooms {\"a\", \"b\"}", "circle between files"] {
+        for want in [
+            "files over 1000 lines:\n    src/c.rs (1001 lines)",
+            "room `c` (src/c.rs) is not in LAYERS: add it to LAYERS",
+            "upward arrows",
+            "src/a.rs -> src/b.rs (line 2)",
+            "circle between rooms {\"a\", \"b\"}",
+            "circle between files",
+        ] {
             assert!(err.contains(want), "missing {want:?} in:\n{err}");
         }
     }

@@ -21,10 +21,22 @@ use std::path::Path;
 
 /// The bunnies of the default scene and its poses at distance `d`.
 fn bunnies(layout: MemLayout, d: f64) -> (Chip, Vec<Pose>) {
-    let s = Scene::load(&Path::new(env!("CARGO_MANIFEST_DIR")).join("vectors/scenes/default.toml")).unwrap();
-    let m = mesh::resolve("bunny").unwrap().scaled_into_unit_cube().unwrap().triangles_f64();
+    let s = Scene::load(&Path::new(env!("CARGO_MANIFEST_DIR")).join("vectors/scenes/default.toml"))
+        .unwrap();
+    let m = mesh::resolve("bunny")
+        .unwrap()
+        .scaled_into_unit_cube()
+        .unwrap()
+        .triangles_f64();
     let chip = Chip::new(&m, &m, ChipConfig { layout, ..s.cfg }).unwrap();
-    (chip, s.poses.iter().filter(|p| p.distance == Some(d)).map(|p| p.pose).collect())
+    (
+        chip,
+        s.poses
+            .iter()
+            .filter(|p| p.distance == Some(d))
+            .map(|p| p.pose)
+            .collect(),
+    )
 }
 
 /// Under both layouts and on both papers' memories: the golden answers are the same, the
@@ -32,31 +44,60 @@ fn bunnies(layout: MemLayout, d: f64) -> (Chip, Vec<Pose>) {
 /// golden model's node and triangle record fetches are the cycle model's.
 #[test]
 fn answers_do_not_depend_on_the_layout() {
-    let [(words, poses), (records, _)] = [MemLayout::Words, MemLayout::Records].map(|l| bunnies(l, 1.0));
+    let [(words, poses), (records, _)] =
+        [MemLayout::Words, MemLayout::Records].map(|l| bunnies(l, 1.0));
     for pose in &poses[..2] {
         let golden = words.query(pose, Mode::All, Traversal::Lifo);
         assert!(golden.pairs.len() > 10, "an overlapping pose");
         for chip in [&words, &records] {
             for preset in [Preset::Date05, Preset::Wscg03] {
-                for (order, traversal) in [(Order::Lifo, Traversal::Lifo), (Order::Fifo, Traversal::Fifo)] {
+                for (order, traversal) in [
+                    (Order::Lifo, Traversal::Lifo),
+                    (Order::Fifo, Traversal::Fifo),
+                ] {
                     let g = chip.query(pose, Mode::All, traversal);
                     assert_eq!((&g.pairs, &g.uncertain), (&golden.pairs, &golden.uncertain));
                     let p = preset.params();
                     let rec = cycle::Record::default();
-                    let (tr, _) = cycle::run_query(chip, &chip.setup(pose), order, Mode::All, p, Reader::default(), 1 << 40, rec).unwrap();
+                    let (tr, _) = cycle::run_query(
+                        chip,
+                        &chip.setup(pose),
+                        order,
+                        Mode::All,
+                        p,
+                        Reader::default(),
+                        1 << 40,
+                        rec,
+                    )
+                    .unwrap();
                     let (hits, unc) = tr.pairs();
                     assert_eq!(unc, golden.uncertain);
-                    let mut found: Vec<_> = hits.iter().chain(unc.iter().filter(|u| golden.pairs.contains(u))).copied().collect();
+                    let mut found: Vec<_> = hits
+                        .iter()
+                        .chain(unc.iter().filter(|u| golden.pairs.contains(u)))
+                        .copied()
+                        .collect();
                     found.sort_unstable();
-                    assert_eq!(found, golden.pairs, "{:?} {preset:?} {order:?}", chip.cfg.layout);
+                    assert_eq!(
+                        found, golden.pairs,
+                        "{:?} {preset:?} {order:?}",
+                        chip.cfg.layout
+                    );
                     if order == Order::Fifo {
-                        assert_eq!((tr.node_fetches, tr.tri_fetches), (g.counters.node_fetches, g.counters.tri_fetches));
+                        assert_eq!(
+                            (tr.node_fetches, tr.tri_fetches),
+                            (g.counters.node_fetches, g.counters.tri_fetches)
+                        );
                     }
                 }
             }
         }
         // sibling records: about half the fetches of node words
-        let [w, r] = [&words, &records].map(|c| c.query(pose, Mode::All, Traversal::Lifo).counters.node_fetches);
+        let [w, r] = [&words, &records].map(|c| {
+            c.query(pose, Mode::All, Traversal::Lifo)
+                .counters
+                .node_fetches
+        });
         assert!(r * 10 < w * 6, "{r} node records against {w} node words");
     }
 }
@@ -69,7 +110,12 @@ fn answers_do_not_depend_on_the_layout() {
 #[ignore]
 fn reuse_distance_of_node_records() {
     let at = |name: &str| PROBES.iter().position(|p| p.1 == name).unwrap();
-    let (valid, ready, addr, dst) = (at("req_valid"), at("req_ready"), at("req_addr"), at("req_dst"));
+    let (valid, ready, addr, dst) = (
+        at("req_valid"),
+        at("req_ready"),
+        at("req_addr"),
+        at("req_dst"),
+    );
     let sizes = [2, 4, 8, 16, 32, 64, 256];
     println!("| preset | pose distance | node record fetches | first fetches | served by an LRU cache of {sizes:?} records per side |");
     for preset in [Preset::Date05, Preset::Wscg03] {
@@ -86,7 +132,11 @@ fn reuse_distance_of_node_records() {
                         match s.iter().rposition(|&a| a == v[addr]) {
                             Some(i) => {
                                 let dist = s.len() - 1 - i;
-                                sizes.iter().zip(&mut served).filter(|(&c, _)| dist < c).for_each(|(_, n)| *n += 1);
+                                sizes
+                                    .iter()
+                                    .zip(&mut served)
+                                    .filter(|(&c, _)| dist < c)
+                                    .for_each(|(_, n)| *n += 1);
                                 s.remove(i);
                             }
                             None => first += 1,
@@ -95,11 +145,31 @@ fn reuse_distance_of_node_records() {
                     }
                     Ok(())
                 };
-                let rec = cycle::Record { probes: Some(&mut obs), ..Default::default() };
-                cycle::run_query(&chip, &chip.setup(pose), Order::Lifo, Mode::All, preset.params(), Reader::default(), 1 << 40, rec).unwrap();
+                let rec = cycle::Record {
+                    probes: Some(&mut obs),
+                    ..Default::default()
+                };
+                cycle::run_query(
+                    &chip,
+                    &chip.setup(pose),
+                    Order::Lifo,
+                    Mode::All,
+                    preset.params(),
+                    Reader::default(),
+                    1 << 40,
+                    rec,
+                )
+                .unwrap();
             }
-            let pct: Vec<String> = served.iter().map(|&n| format!("{:.0}%", 100.0 * n as f64 / fetches as f64)).collect();
-            println!("| {} | {d} | {fetches} | {first} | {} |", preset.name(), pct.join(" "));
+            let pct: Vec<String> = served
+                .iter()
+                .map(|&n| format!("{:.0}%", 100.0 * n as f64 / fetches as f64))
+                .collect();
+            println!(
+                "| {} | {d} | {fetches} | {first} | {} |",
+                preset.name(),
+                pct.join(" ")
+            );
         }
     }
 }
@@ -109,13 +179,19 @@ fn reuse_distance_of_node_records() {
 #[test]
 fn presets_lay_out_for_the_bus() {
     let (d, r) = (Preset::Date05.chip(), Preset::Rtl.chip());
-    assert_eq!((d.layout, d.node_cache, Preset::Wscg03.chip().layout), (MemLayout::Records, 16, MemLayout::Records));
+    assert_eq!(
+        (d.layout, d.node_cache, Preset::Wscg03.chip().layout),
+        (MemLayout::Records, 16, MemLayout::Records)
+    );
     assert_eq!((r.layout, r.node_cache), (MemLayout::Words, 1));
     let text = "[objects]\na = \"sphere:8\"\nb = \"sphere:8\"\n[chip]\npreset = \"date05\"\nlayout = \"words\"\n[[pose]]\nrot_deg = [0, 0, 0]\nt = [0, 0, 0]\n";
     let s = Scene::parse(text, "s").unwrap();
     assert_eq!((s.cfg.layout, s.cfg.node_cache), (MemLayout::Words, 16));
     let e = Scene::parse(&text.replace("\"words\"", "\"pairs\""), "s").unwrap_err();
-    assert!(e.contains("s:6") && e.contains("`words` or `records`"), "{e}");
+    assert!(
+        e.contains("s:6") && e.contains("`words` or `records`"),
+        "{e}"
+    );
 }
 
 /// The presets' values, literal, each from the paper or derived here by hand (not from the
@@ -131,17 +207,38 @@ fn presets_are_the_papers_values() {
     // double-data-rate burst transfer of length eight", "a page miss access to a node pair
     // to consume 20 clock cycles, a page hit to consume only 8 cycles"; the chip "clocked at
     // 266MHz"; "a direct mapped cache with 128 lines" for A's triangles.
-    let wscg03 = Ddr { banks: 4, page_bytes: 4096, bus_bits: 256, burst: 8, hit: 8, miss: 20 };
+    let wscg03 = Ddr {
+        banks: 4,
+        page_bytes: 4096,
+        bus_bits: 256,
+        burst: 8,
+        hit: 8,
+        miss: 20,
+    };
     assert_eq!(Ddr::WSCG03, wscg03);
     // DATE'05 §4.1 gives "a 756-bit wide bus from the DDR2-RAM" and an 800 MHz target. The
     // rest is our assumption, DDR2-800 at 5-5-5 (CL = tRCD = tRP = 5 memory clocks, 12.5 ns)
     // with the chip at the data rate, two chip clocks per memory clock: 8 banks of 8 KiB
     // pages, bursts of 4 beats (4 chip clocks); a hit CL + burst = 10 + 4 = 14 clocks, a
     // miss tRP + tRCD + hit = 10 + 10 + 14 = 34.
-    let date05 = Ddr { banks: 8, page_bytes: 8192, bus_bits: 756, burst: 4, hit: 2 * 5 + 4, miss: 2 * 5 + 2 * 5 + 14 };
+    let date05 = Ddr {
+        banks: 8,
+        page_bytes: 8192,
+        bus_bits: 756,
+        burst: 4,
+        hit: 2 * 5 + 4,
+        miss: 2 * 5 + 2 * 5 + 14,
+    };
     assert_eq!((date05.hit, date05.miss), (14, 34));
     assert_eq!(Ddr::DATE05, date05);
-    assert_eq!((Ddr::preset("wscg03"), Ddr::preset("date05"), Ddr::preset("ddr")), (Some(wscg03), Some(date05), None));
+    assert_eq!(
+        (
+            Ddr::preset("wscg03"),
+            Ddr::preset("date05"),
+            Ddr::preset("ddr")
+        ),
+        (Some(wscg03), Some(date05), None)
+    );
 
     // Both papers' chips: DATE'05's "we chose to use 24-DOPs", of "single-precision
     // floating-point numbers", the DOP test rounded outward (never a
@@ -156,14 +253,47 @@ fn presets_are_the_papers_values() {
         node_cache: 16,
     };
     assert_eq!(Preset::Date05.chip(), papers);
-    assert_eq!(Preset::Wscg03.chip(), ChipConfig { tri_cache: 128, ..papers });
-    assert_eq!(Preset::Rtl.chip(), ChipConfig { layout: MemLayout::Words, node_cache: 1, ..papers });
+    assert_eq!(
+        Preset::Wscg03.chip(),
+        ChipConfig {
+            tri_cache: 128,
+            ..papers
+        }
+    );
+    assert_eq!(
+        Preset::Rtl.chip(),
+        ChipConfig {
+            layout: MemLayout::Words,
+            node_cache: 1,
+            ..papers
+        }
+    );
     // the memory port at full speed: an issue every clock, register 0x126's most requests
     // outstanding (16) and pairs prefetched (14), a credit of 48; the RTL's reset point
     // otherwise (tb/cycle_chip.rs: `rtl_point_is_the_rtl`)
-    let full = |memory| Params { issue_spacing: 1, outstanding: 16, prefetch: 14, credit: 48, memory, ..Params::RTL };
+    let full = |memory| Params {
+        issue_spacing: 1,
+        outstanding: 16,
+        prefetch: 14,
+        credit: 48,
+        memory,
+        ..Params::RTL
+    };
     assert_eq!(Preset::Date05.params(), full(Memory::Ddr(date05)));
     assert_eq!(Preset::Wscg03.params(), full(Memory::Ddr(wscg03)));
-    assert_eq!(Preset::Rtl.params(), Params { memory: Memory::Ideal(MemTiming { latency: 1, interval: 1, bus_bits: None }), ..Params::RTL });
-    assert_eq!([Preset::Date05, Preset::Wscg03, Preset::Rtl].map(Preset::clock_mhz), [800.0, 266.0, 800.0]);
+    assert_eq!(
+        Preset::Rtl.params(),
+        Params {
+            memory: Memory::Ideal(MemTiming {
+                latency: 1,
+                interval: 1,
+                bus_bits: None
+            }),
+            ..Params::RTL
+        }
+    );
+    assert_eq!(
+        [Preset::Date05, Preset::Wscg03, Preset::Rtl].map(Preset::clock_mhz),
+        [800.0, 266.0, 800.0]
+    );
 }

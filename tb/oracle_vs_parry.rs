@@ -20,7 +20,10 @@ use parry3d_f64::shape::TriMesh;
 
 /// Triangles of a mesh whose vertices were replaced (e.g. placed by a pose).
 fn tris_with(m: &Mesh, v: &[Point3<f64>]) -> Vec<Tri> {
-    m.triangles.iter().map(|t| t.map(|i| v[i as usize])).collect()
+    m.triangles
+        .iter()
+        .map(|t| t.map(|i| v[i as usize]))
+        .collect()
 }
 
 fn parry_mesh(v: &[Point3<f64>], f: &[[u32; 3]]) -> TriMesh {
@@ -30,12 +33,25 @@ fn parry_mesh(v: &[Point3<f64>], f: &[[u32; 3]]) -> TriMesh {
 
 fn parry_pose(p: &Pose) -> PPose {
     let r = p.rotation();
-    let m = DMat3::from_cols_array(&[r[(0, 0)], r[(1, 0)], r[(2, 0)], r[(0, 1)], r[(1, 1)], r[(2, 1)], r[(0, 2)], r[(1, 2)], r[(2, 2)]]);
+    let m = DMat3::from_cols_array(&[
+        r[(0, 0)],
+        r[(1, 0)],
+        r[(2, 0)],
+        r[(0, 1)],
+        r[(1, 1)],
+        r[(2, 1)],
+        r[(0, 2)],
+        r[(1, 2)],
+        r[(2, 2)],
+    ]);
     PPose::from_parts(Vector::new(p.t[0], p.t[1], p.t[2]), DQuat::from_mat3(&m))
 }
 
 fn scene_size(a: &[Point3<f64>], b: &[Point3<f64>]) -> f64 {
-    a.iter().chain(b).flat_map(|p| [p.x.abs(), p.y.abs(), p.z.abs()]).fold(0.0, f64::max)
+    a.iter()
+        .chain(b)
+        .flat_map(|p| [p.x.abs(), p.y.abs(), p.z.abs()])
+        .fold(0.0, f64::max)
 }
 
 /// Runs all checks for one scene and pose; returns the number of intersecting pairs.
@@ -46,14 +62,27 @@ fn check_scene(name: &str, a: &Mesh, b: &Mesh, pose: &Pose, brute: bool) -> usiz
     let margin = 1e-9 * scene_size(&a.vertices, &vb);
 
     // Parry, identity pose on the same f64 geometry.
-    let (ma, mb) = (parry_mesh(&a.vertices, &a.triangles), parry_mesh(&vb, &b.triangles));
-    let cand: Vec<(u32, u32)> =
-        ma.bvh().leaf_pairs(mb.bvh(), |n1, n2| n1.aabb().loosened(margin).intersects(&n2.aabb())).collect();
-    let mut got: Vec<(u32, u32)> =
-        cand.iter().copied().filter(|&(i, j)| tri_tri(&ta[i as usize], &tb[j as usize])).collect();
+    let (ma, mb) = (
+        parry_mesh(&a.vertices, &a.triangles),
+        parry_mesh(&vb, &b.triangles),
+    );
+    let cand: Vec<(u32, u32)> = ma
+        .bvh()
+        .leaf_pairs(mb.bvh(), |n1, n2| {
+            n1.aabb().loosened(margin).intersects(&n2.aabb())
+        })
+        .collect();
+    let mut got: Vec<(u32, u32)> = cand
+        .iter()
+        .copied()
+        .filter(|&(i, j)| tri_tri(&ta[i as usize], &tb[j as usize]))
+        .collect();
     got.sort_unstable();
     got.dedup();
-    assert_eq!(got, truth, "{name} {pose:?}: parry (identity pose) + tri_tri != intersecting_pairs");
+    assert_eq!(
+        got, truth,
+        "{name} {pose:?}: parry (identity pose) + tri_tri != intersecting_pairs"
+    );
 
     // Parry with the real relative pose on B's own vertices.
     let mb0 = parry_mesh(&b.vertices, &b.triangles);
@@ -61,21 +90,39 @@ fn check_scene(name: &str, a: &Mesh, b: &Mesh, pose: &Pose, brute: bool) -> usiz
     let cand: Vec<(u32, u32)> = ma
         .bvh()
         .leaf_pairs(mb0.bvh(), |n1, n2| {
-            n1.aabb().loosened(margin).intersects(&n2.aabb().transform_by(&pos12).loosened(margin))
+            n1.aabb()
+                .loosened(margin)
+                .intersects(&n2.aabb().transform_by(&pos12).loosened(margin))
         })
         .collect();
     let mut cs = cand.clone();
     cs.sort_unstable();
     cs.dedup();
-    let missing = truth.iter().filter(|p| cs.binary_search(p).is_err()).count();
-    assert_eq!(missing, 0, "{name} {pose:?}: parry (pos12) candidates miss true pairs");
-    let mut got2: Vec<(u32, u32)> =
-        cs.iter().copied().filter(|&(i, j)| tri_tri(&ta[i as usize], &tb[j as usize])).collect();
+    let missing = truth
+        .iter()
+        .filter(|p| cs.binary_search(p).is_err())
+        .count();
+    assert_eq!(
+        missing, 0,
+        "{name} {pose:?}: parry (pos12) candidates miss true pairs"
+    );
+    let mut got2: Vec<(u32, u32)> = cs
+        .iter()
+        .copied()
+        .filter(|&(i, j)| tri_tri(&ta[i as usize], &tb[j as usize]))
+        .collect();
     got2.sort_unstable();
-    assert_eq!(got2, truth, "{name} {pose:?}: parry (pos12) + tri_tri != intersecting_pairs");
+    assert_eq!(
+        got2, truth,
+        "{name} {pose:?}: parry (pos12) + tri_tri != intersecting_pairs"
+    );
 
     if brute {
-        assert_eq!(brute_force_pairs(&ta, &tb), truth, "{name} {pose:?}: brute force disagrees");
+        assert_eq!(
+            brute_force_pairs(&ta, &tb),
+            truth,
+            "{name} {pose:?}: brute force disagrees"
+        );
     }
     eprintln!(
         "{name:>18} {:>5} x {:>5} tris, pose {:?}: {} pairs, parry candidates {}",
@@ -110,12 +157,21 @@ fn oracle_vs_parry_sphere_torus() {
     let n = check_scene("sphere/sphere", &a, &a, &Pose::default(), true);
     assert!(n >= a.len() * 10, "{n} pairs: neighbours must touch");
     // Sphere vs a quarter-turned copy of itself (exact quarter turn, nearly coincident surfaces).
-    check_scene("sphere/sphere90", &a, &a, &Pose::new(0.0, 0.0, 90.0, 0.0, 0.0, 0.0), false);
+    check_scene(
+        "sphere/sphere90",
+        &a,
+        &a,
+        &Pose::new(0.0, 0.0, 90.0, 0.0, 0.0, 0.0),
+        false,
+    );
 }
 
 #[test]
 fn oracle_vs_parry_bunny() {
-    let a = mesh::resolve("bunny").expect("bunny").scaled_into_unit_cube().expect("in range");
+    let a = mesh::resolve("bunny")
+        .expect("bunny")
+        .scaled_into_unit_cube()
+        .expect("in range");
     let poses = [
         Pose::default(), // identical meshes: all neighbour contacts
         Pose::new(0.0, 90.0, 0.0, 0.0, 0.0, 0.0),

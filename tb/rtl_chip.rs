@@ -10,20 +10,22 @@
 //! `CCHIP_BLESS=1 cargo test --release --test rtl_chip` rewrites the expected traces of the
 //! queries it runs, but only from a run in which rust-hdl and the cycle model agreed.
 
-use collision_chip::cycle::chip::Chip as CycleChip;
-use collision_chip::cycle::drive::{run_query, ChipTrace, Drive, Lockstep, Reader};
 use collision_chip::chip::memory::Ddr;
 use collision_chip::chip::memory::Memory;
 use collision_chip::chip::params::Params;
-use collision_chip::golden::host::HostSetup;
-use collision_chip::pose::Pose;
-use collision_chip::query::Chip;
-use collision_chip::cycle::drive::open_vcd;
+use collision_chip::chip::reg::Mode;
 use collision_chip::chip::reg::Order;
 use collision_chip::chip::rtl::ChipKind;
-use collision_chip::harness::chip_io::{drive, queries, with_chip, ChipQuery, OnChip, QueryImage, RtlChip, RtlPorts};
+use collision_chip::cycle::chip::Chip as CycleChip;
+use collision_chip::cycle::drive::open_vcd;
+use collision_chip::cycle::drive::{run_query, ChipTrace, Drive, Lockstep, Reader};
+use collision_chip::golden::host::HostSetup;
+use collision_chip::harness::chip_io::{
+    drive, queries, with_chip, ChipQuery, OnChip, QueryImage, RtlChip, RtlPorts,
+};
+use collision_chip::pose::Pose;
+use collision_chip::query::Chip;
 use collision_chip::traversal::{QueryResult, Traversal};
-use collision_chip::chip::reg::Mode;
 use std::path::PathBuf;
 
 /// Generous: the longest query takes about 2,000 cycles.
@@ -45,17 +47,55 @@ struct Case {
 }
 
 impl Case {
-    fn new(name: &str, chip: Chip, pose: Pose, order: Order, mode: Mode, params: Params, reader: Reader) -> Case {
+    fn new(
+        name: &str,
+        chip: Chip,
+        pose: Pose,
+        order: Order,
+        mode: Mode,
+        params: Params,
+        reader: Reader,
+    ) -> Case {
         let setup = chip.setup(&pose);
-        let kind = ChipKind::of(&chip.cfg, params.dop_interval, params.tri_interval).expect("an RTL chip's configuration");
-        let image = QueryImage::new(kind, &chip.a, &chip.b, &setup, order, mode, &params, &chip.cfg).unwrap();
-        let golden = chip.query(&pose, Mode::All, if order == Order::Lifo { Traversal::Lifo } else { Traversal::Fifo });
-        Case { name: name.into(), chip, setup, image, golden, order, mode, params, reader }
+        let kind = ChipKind::of(&chip.cfg, params.dop_interval, params.tri_interval)
+            .expect("an RTL chip's configuration");
+        let image = QueryImage::new(
+            kind, &chip.a, &chip.b, &setup, order, mode, &params, &chip.cfg,
+        )
+        .unwrap();
+        let golden = chip.query(
+            &pose,
+            Mode::All,
+            if order == Order::Lifo {
+                Traversal::Lifo
+            } else {
+                Traversal::Fifo
+            },
+        );
+        Case {
+            name: name.into(),
+            chip,
+            setup,
+            image,
+            golden,
+            order,
+            mode,
+            params,
+            reader,
+        }
     }
 
     fn of(q: &ChipQuery) -> Case {
         let p = q.prepare().unwrap();
-        Case::new(q.name, p.chip, q.pose, q.order, q.mode, q.params(), q.reader)
+        Case::new(
+            q.name,
+            p.chip,
+            q.pose,
+            q.order,
+            q.mode,
+            q.params(),
+            q.reader,
+        )
     }
 
     fn drive(&self) -> Drive {
@@ -65,7 +105,11 @@ impl Case {
     /// Runs the query `runs` times back to back on one rust-hdl chip (of the image's kind)
     /// of `2^N` queue entries and one cycle model, in lockstep; with `vcd`, the first run's
     /// traversal VCD.
-    fn lockstep<const N: usize, const NP1: usize, const NM1: usize>(&self, runs: usize, vcd: Option<PathBuf>) -> Vec<ChipTrace> {
+    fn lockstep<const N: usize, const NP1: usize, const NM1: usize>(
+        &self,
+        runs: usize,
+        vcd: Option<PathBuf>,
+    ) -> Vec<ChipTrace> {
         std::thread::scope(|s| {
             std::thread::Builder::new()
                 .stack_size(1 << 30)
@@ -79,10 +123,19 @@ impl Case {
                     impl OnChip for Run<'_> {
                         type Out = Vec<ChipTrace>;
                         fn run<C: RtlPorts>(self, chip: C) -> Vec<ChipTrace> {
-                            self.case.run_on(chip, self.queue_entries, self.runs, self.vcd)
+                            self.case
+                                .run_on(chip, self.queue_entries, self.runs, self.vcd)
                         }
                     }
-                    with_chip::<N, NP1, NM1, _>(self.image.kind, Run { case: self, queue_entries: 1 << N, runs, vcd })
+                    with_chip::<N, NP1, NM1, _>(
+                        self.image.kind,
+                        Run {
+                            case: self,
+                            queue_entries: 1 << N,
+                            runs,
+                            vcd,
+                        },
+                    )
                 })
                 .unwrap()
                 .join()
@@ -90,19 +143,50 @@ impl Case {
         })
     }
 
-    fn run_on<C: RtlPorts>(&self, mut rtl: C, queue_entries: u32, runs: usize, vcd: Option<PathBuf>) -> Vec<ChipTrace> {
-        let p = Params { queue_entries, ..self.params };
-        let mut cyc = CycleChip::new(&self.chip.cfg, p, &self.chip.a, &self.chip.b, &self.setup, false).unwrap();
+    fn run_on<C: RtlPorts>(
+        &self,
+        mut rtl: C,
+        queue_entries: u32,
+        runs: usize,
+        vcd: Option<PathBuf>,
+    ) -> Vec<ChipTrace> {
+        let p = Params {
+            queue_entries,
+            ..self.params
+        };
+        let mut cyc = CycleChip::new(
+            &self.chip.cfg,
+            p,
+            &self.chip.a,
+            &self.chip.b,
+            &self.setup,
+            false,
+        )
+        .unwrap();
         let mut out = vec![];
         for run in 0..runs {
-            let mut ls = Lockstep::new(RtlChip::new(&mut rtl, &self.image), &mut cyc, ("rust-hdl", "cycle model"));
-            let mut w = vcd.as_ref().filter(|_| run == 0).map(|p| open_vcd(p, &[], 0..u64::MAX).unwrap());
-            let tr = run_query(&mut ls, &self.image.writes, &self.drive(), true, |t, p| {
-                if let Some(w) = w.as_mut() {
-                    w.cycle(t, &p.unwrap()).map_err(|e| e.to_string())?;
-                }
-                Ok(())
-            }, false)
+            let mut ls = Lockstep::new(
+                RtlChip::new(&mut rtl, &self.image),
+                &mut cyc,
+                ("rust-hdl", "cycle model"),
+            );
+            let mut w = vcd
+                .as_ref()
+                .filter(|_| run == 0)
+                .map(|p| open_vcd(p, &[], 0..u64::MAX).unwrap());
+            let tr = run_query(
+                &mut ls,
+                &self.image.writes,
+                &self.drive(),
+                true,
+                |t, p| {
+                    if let Some(w) = w.as_mut() {
+                        w.cycle(t, &p.unwrap()).map_err(|e| e.to_string())?;
+                    }
+                    Ok(())
+                },
+                false,
+            )
             .unwrap_or_else(|e| panic!("{}: {e}", self.name));
             out.push(tr);
         }
@@ -113,13 +197,22 @@ impl Case {
     fn check(&self, tr: &ChipTrace) {
         let name = &self.name;
         println!("{name}: {}", tr.text().lines().last().unwrap());
-        tr.check(self.mode, &self.golden).unwrap_or_else(|e| panic!("{name}: {e}"));
+        tr.check(self.mode, &self.golden)
+            .unwrap_or_else(|e| panic!("{name}: {e}"));
         if self.mode == Mode::All {
             let g = self.golden.counters;
-            assert_eq!((tr.dop_tests, tr.tri_tests), (g.dop_tests, g.tri_tests), "{name}: tests");
+            assert_eq!(
+                (tr.dop_tests, tr.tri_tests),
+                (g.dop_tests, g.tri_tests),
+                "{name}: tests"
+            );
             if self.order == Order::Fifo {
                 // FIFO order tests pairs in exactly the golden D_CNTR's order
-                assert_eq!((tr.node_fetches, tr.tri_fetches), (g.node_fetches, g.tri_fetches), "{name}: fetches");
+                assert_eq!(
+                    (tr.node_fetches, tr.tri_fetches),
+                    (g.node_fetches, g.tri_fetches),
+                    "{name}: fetches"
+                );
             }
         }
     }
@@ -130,7 +223,9 @@ fn query(name: &str) -> ChipQuery {
 }
 
 fn expect_path(name: &str) -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("vectors/chip").join(format!("{name}.expect"))
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("vectors/chip")
+        .join(format!("{name}.expect"))
 }
 
 /// The lockstep trace equals the checked-in one (the Verilog's reference), or is blessed
@@ -141,9 +236,18 @@ fn compare_with_expect(name: &str, tr: &ChipTrace) {
         std::fs::write(&path, tr.text()).unwrap();
         return;
     }
-    let want = std::fs::read_to_string(&path)
-        .unwrap_or_else(|e| panic!("{}: {e} (write it with CCHIP_BLESS=1 cargo test --release --test rtl_chip)", path.display()));
-    assert_eq!(tr.text(), want, "{name}: the trace differs from {}", path.display());
+    let want = std::fs::read_to_string(&path).unwrap_or_else(|e| {
+        panic!(
+            "{}: {e} (write it with CCHIP_BLESS=1 cargo test --release --test rtl_chip)",
+            path.display()
+        )
+    });
+    assert_eq!(
+        tr.text(),
+        want,
+        "{name}: the trace differs from {}",
+        path.display()
+    );
 }
 
 /// The LIFO first-hit query, traced: target/rtl-vcd/chip_sphere_lifo_first.vcd (open it with
@@ -156,12 +260,17 @@ fn compare_with_expect(name: &str, tr: &ChipTrace) {
 fn sphere_lifo_first() {
     let q = query("sphere_lifo_first");
     let case = Case::of(&q);
-    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("target/rtl-vcd/chip_sphere_lifo_first.vcd");
+    let path =
+        PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("target/rtl-vcd/chip_sphere_lifo_first.vcd");
     let tr = &case.lockstep::<10, 11, 9>(1, Some(path.clone()))[0];
     println!("wrote {}", path.display());
     case.check(tr);
     compare_with_expect(q.name, tr);
-    assert_eq!(vcd_results(&path), tr.results, "the VCD's results differ from the trace");
+    assert_eq!(
+        vcd_results(&path),
+        tr.results,
+        "the VCD's results differ from the trace"
+    );
 }
 
 /// The results a traversal VCD shows: `(cycle, a, b, uncertain)` for every time step
@@ -170,9 +279,21 @@ fn vcd_results(path: &std::path::Path) -> Vec<(u64, u32, u32, bool)> {
     use vcd::{Command, Value};
     let mut p = vcd::Parser::new(std::io::BufReader::new(std::fs::File::open(path).unwrap()));
     let h = p.parse_header().unwrap();
-    let id = |n: &str| h.find_var(&["chip", "results", n]).unwrap_or_else(|| panic!("no chip.results.{n}")).code;
-    let ids = [id("res_valid"), id("res_a"), id("res_b"), id("res_uncertain")];
-    let num = |v: &[Value]| v.iter().fold(0u64, |a, x| a << 1 | (*x == Value::V1) as u64);
+    let id = |n: &str| {
+        h.find_var(&["chip", "results", n])
+            .unwrap_or_else(|| panic!("no chip.results.{n}"))
+            .code
+    };
+    let ids = [
+        id("res_valid"),
+        id("res_a"),
+        id("res_b"),
+        id("res_uncertain"),
+    ];
+    let num = |v: &[Value]| {
+        v.iter()
+            .fold(0u64, |a, x| a << 1 | (*x == Value::V1) as u64)
+    };
     let (mut cur, mut time, mut out) = ([0u64; 4], None, vec![]);
     let mut flush = |t: Option<u64>, cur: &[u64; 4]| {
         if let Some(t) = t {
@@ -236,11 +357,29 @@ fn k24_rec_patch_fifo_all() {
     assert_eq!((q.chip, q.layout), (ChipKind::K24B32, MemLayout::Records));
     let case = Case::of(&q);
     // leaf order is not index order: a chip fetching triangles by index would differ
-    assert!(case.chip.a.tri_records.iter().enumerate().any(|(t, &r)| r != t as u32));
+    assert!(case
+        .chip
+        .a
+        .tri_records
+        .iter()
+        .enumerate()
+        .any(|(t, &r)| r != t as u32));
     let tr = &case.lockstep::<10, 11, 9>(1, None)[0];
     case.check(tr);
-    let words = ChipQuery { layout: MemLayout::Words, ..q.clone() }.prepare().unwrap().golden_all.counters.node_fetches;
-    assert!(tr.tri_tests > 0 && tr.node_fetches < words, "{} record fetches, {words} node words", tr.node_fetches);
+    let words = ChipQuery {
+        layout: MemLayout::Words,
+        ..q.clone()
+    }
+    .prepare()
+    .unwrap()
+    .golden_all
+    .counters
+    .node_fetches;
+    assert!(
+        tr.tri_tests > 0 && tr.node_fetches < words,
+        "{} record fetches, {words} node words",
+        tr.node_fetches
+    );
     compare_with_expect(q.name, tr);
 }
 
@@ -253,11 +392,39 @@ fn k24_rec_patch_fifo_all() {
 fn k24_rec_patch_fifo_ddr_banks() {
     use collision_chip::chip::reg::MAP;
     let q = query("k24_rec_patch_fifo_all");
-    let ddr = Memory::Ddr(Ddr { banks: 8, page_bytes: 512, bus_bits: 1024, burst: 2, hit: 3, miss: 6 });
+    let ddr = Memory::Ddr(Ddr {
+        banks: 8,
+        page_bytes: 512,
+        bus_bits: 1024,
+        burst: 2,
+        hit: 3,
+        miss: 6,
+    });
     let p = q.prepare().unwrap();
-    let case = Case::new("k24_rec_patch_fifo_ddr_banks", p.chip, q.pose, q.order, q.mode, Params { memory: ddr, ..q.params() }, q.reader);
-    let map = case.image.writes.iter().find(|w| w.0 == MAP).expect("the record map written").1;
-    assert_eq!(map, 1 | 2 << 3 | 1 << 12 | 3 << 16, "A's nodes 2 banks, B's 4, a page 2 records, 8 banks");
+    let case = Case::new(
+        "k24_rec_patch_fifo_ddr_banks",
+        p.chip,
+        q.pose,
+        q.order,
+        q.mode,
+        Params {
+            memory: ddr,
+            ..q.params()
+        },
+        q.reader,
+    );
+    let map = case
+        .image
+        .writes
+        .iter()
+        .find(|w| w.0 == MAP)
+        .expect("the record map written")
+        .1;
+    assert_eq!(
+        map,
+        1 | 2 << 3 | 1 << 12 | 3 << 16,
+        "A's nodes 2 banks, B's 4, a page 2 records, 8 banks"
+    );
     let tr = &case.lockstep::<10, 11, 9>(1, None)[0];
     case.check(tr);
 }
@@ -273,8 +440,20 @@ fn sphere_fifo_cache() {
     let case = Case::of(&q);
     let tr = &case.lockstep::<10, 11, 9>(1, None)[0];
     case.check(tr);
-    let one_line = ChipQuery { tri_cache: 1, ..q.clone() }.prepare().unwrap().golden_all.counters.tri_fetches;
-    assert!(tr.tri_fetches < one_line, "{} triangle fetches with 4 lines, {one_line} with one", tr.tri_fetches);
+    let one_line = ChipQuery {
+        tri_cache: 1,
+        ..q.clone()
+    }
+    .prepare()
+    .unwrap()
+    .golden_all
+    .counters
+    .tri_fetches;
+    assert!(
+        tr.tri_fetches < one_line,
+        "{} triangle fetches with 4 lines, {one_line} with one",
+        tr.tri_fetches
+    );
     compare_with_expect(q.name, tr);
 }
 
@@ -302,7 +481,10 @@ fn k24r_patch_fifo_all() {
 #[test]
 fn fold16_patch_fifo_all() {
     let q = query("fold16_patch_fifo_all");
-    assert_eq!((q.chip, q.params().tri_interval), (ChipKind::K6E8m15Fold16, 16));
+    assert_eq!(
+        (q.chip, q.params().tri_interval),
+        (ChipKind::K6E8m15Fold16, 16)
+    );
     let case = Case::of(&q);
     let tr = &case.lockstep::<10, 11, 9>(1, None)[0];
     case.check(tr);
@@ -322,12 +504,20 @@ fn fold16_patch_fifo_all() {
 fn dop6tri32_patch_fifo_all() {
     let q = query("dop6tri32_patch_fifo_all");
     let p = q.params();
-    assert_eq!((q.chip, p.dop_interval, p.tri_interval), (ChipKind::K6E8m15Dop6Tri32, 6, 32));
+    assert_eq!(
+        (q.chip, p.dop_interval, p.tri_interval),
+        (ChipKind::K6E8m15Dop6Tri32, 6, 32)
+    );
     let case = Case::of(&q);
     let tr = &case.lockstep::<10, 11, 9>(1, None)[0];
     case.check(tr);
     // issued every clock, the tests would need fewer clocks than 6 per DOP test
-    assert!(tr.dop_tests > 6 && tr.tri_tests > 4, "{} DOP tests, {} triangle tests", tr.dop_tests, tr.tri_tests);
+    assert!(
+        tr.dop_tests > 6 && tr.tri_tests > 4,
+        "{} DOP tests, {} triangle tests",
+        tr.dop_tests,
+        tr.tri_tests
+    );
     compare_with_expect(q.name, tr);
 }
 
@@ -340,7 +530,10 @@ fn apart_lifo_first() {
     let tr = case.lockstep::<10, 11, 9>(2, None);
     assert_eq!(tr[0], tr[1]);
     assert!(tr[0].results.is_empty());
-    assert_eq!((tr[0].dop_tests, tr[0].node_fetches, tr[0].tri_tests), (1, 2, 0));
+    assert_eq!(
+        (tr[0].dop_tests, tr[0].node_fetches, tr[0].tri_tests),
+        (1, 2, 0)
+    );
     case.check(&tr[0]);
     compare_with_expect("apart_lifo_first", &tr[0]);
 }
@@ -355,9 +548,25 @@ fn a_last_leaf_pair_is_tested() {
     let b = vec![[p(0.2, 0.2, -1.0), p(0.3, 0.2, 1.0), p(0.2, 0.3, 1.0)]];
     let pose = Pose::new(0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     for order in [Order::Fifo, Order::Lifo] {
-        let case = Case::new("one_leaf_pair", Chip::new(&a, &b, ChipKind::K6E8m15.config()).unwrap(), pose, order, Mode::All, Params::RTL, Reader::default());
+        let case = Case::new(
+            "one_leaf_pair",
+            Chip::new(&a, &b, ChipKind::K6E8m15.config()).unwrap(),
+            pose,
+            order,
+            Mode::All,
+            Params::RTL,
+            Reader::default(),
+        );
         let tr = &case.lockstep::<10, 11, 9>(1, None)[0];
-        assert_eq!(tr.results.iter().map(|r| (r.1, r.2, r.3)).collect::<Vec<_>>(), [(0, 0, false)], "{}", tr.text());
+        assert_eq!(
+            tr.results
+                .iter()
+                .map(|r| (r.1, r.2, r.3))
+                .collect::<Vec<_>>(),
+            [(0, 0, false)],
+            "{}",
+            tr.text()
+        );
         case.check(tr);
     }
 }
@@ -373,10 +582,19 @@ fn a_small_queue_overflows_with_an_error_status() {
     println!("{}", tr.text());
     assert!(tr.overflow, "no overflow reported");
     assert_eq!(tr.max_depth, 4);
-    assert_eq!(tr.check(Mode::All, &case.golden), Err("the queue overflowed: the answer is incomplete".into()));
+    assert_eq!(
+        tr.check(Mode::All, &case.golden),
+        Err("the queue overflowed: the answer is incomplete".into())
+    );
     let (hits, unc) = tr.pairs();
-    assert!(hits.iter().chain(&unc).all(|x| case.golden.pairs.contains(x) || case.golden.uncertain.contains(x)));
-    assert!(tr.dop_tests < case.golden.counters.dop_tests / 4, "the traversal went on after the overflow");
+    assert!(hits
+        .iter()
+        .chain(&unc)
+        .all(|x| case.golden.pairs.contains(x) || case.golden.uncertain.contains(x)));
+    assert!(
+        tr.dop_tests < case.golden.counters.dop_tests / 4,
+        "the traversal went on after the overflow"
+    );
 }
 
 /// A random soup pair, pose, order, mode and result reader from a fixed seed, with a small
@@ -391,20 +609,52 @@ fn seeded_random_query() {
     let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(2);
     // small: rust-hdl runs the chip at about 25 clocks per second
     let (na, nb) = (rng.random_range(3..=6), rng.random_range(3..=6));
-    let chip = Chip::new(&soup(na, rng.random()).triangles_f64(), &soup(nb, rng.random()).triangles_f64(), ChipKind::K6E8m15.config()).unwrap();
+    let chip = Chip::new(
+        &soup(na, rng.random()).triangles_f64(),
+        &soup(nb, rng.random()).triangles_f64(),
+        ChipKind::K6E8m15.config(),
+    )
+    .unwrap();
     let r = |rng: &mut rand_chacha::ChaCha8Rng| rng.random_range(0.0..360.0);
     let t = |rng: &mut rand_chacha::ChaCha8Rng| rng.random_range(-0.3..0.3);
-    let pose = Pose::new(r(&mut rng), r(&mut rng), r(&mut rng), t(&mut rng), t(&mut rng), t(&mut rng));
+    let pose = Pose::new(
+        r(&mut rng),
+        r(&mut rng),
+        r(&mut rng),
+        t(&mut rng),
+        t(&mut rng),
+        t(&mut rng),
+    );
     let (lifo, first) = (rng.random::<bool>(), rng.random_range(0..3) == 0);
-    let ddr = Memory::Ddr(Ddr { banks: 2, page_bytes: 256, bus_bits: 64, burst: 2, hit: 2, miss: 5 });
-    let reader = Reader { period: [1, 1, 2, 5][rng.random_range(0..4)] };
+    let ddr = Memory::Ddr(Ddr {
+        banks: 2,
+        page_bytes: 256,
+        bus_bits: 64,
+        burst: 2,
+        hit: 2,
+        miss: 5,
+    });
+    let reader = Reader {
+        period: [1, 1, 2, 5][rng.random_range(0..4)],
+    };
     let mode = if first { Mode::First } else { Mode::All };
     // and the memory port at full speed: 2 pairs prefetched, 3 requests, an issue every
     // clock, a credit of 20
-    let params = Params { memory: ddr, prefetch: 2, outstanding: 3, issue_spacing: 1, credit: 20, ..Params::RTL };
+    let params = Params {
+        memory: ddr,
+        prefetch: 2,
+        outstanding: 3,
+        issue_spacing: 1,
+        credit: 20,
+        ..Params::RTL
+    };
     let order = if lifo { Order::Lifo } else { Order::Fifo };
     let case = Case::new("seed 2", chip, pose, order, mode, params, reader);
-    println!("seed 2: {na} x {nb} triangles, {}, {mode:?}, reader period {}", if lifo { "LIFO" } else { "FIFO" }, reader.period);
+    println!(
+        "seed 2: {na} x {nb} triangles, {}, {mode:?}, reader period {}",
+        if lifo { "LIFO" } else { "FIFO" },
+        reader.period
+    );
     let tr = &case.lockstep::<10, 11, 9>(1, None)[0];
     case.check(tr);
 }

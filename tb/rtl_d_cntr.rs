@@ -54,10 +54,18 @@ impl<const N: usize, const NP1: usize, const NM1: usize> Dut<N, NP1, NM1> {
     fn cycle(&mut self, i: &QueueIn) -> QueueOut {
         self.uut.set_inputs(i);
         settle(&mut self.uut);
-        assert_eq!(self.uut.outputs(), self.last, "outputs moved with the inputs, before the edge: {i:?}");
+        assert_eq!(
+            self.uut.outputs(),
+            self.last,
+            "outputs moved with the inputs, before the edge: {i:?}"
+        );
         self.uut.clock.next = Clock { clk: false };
         settle(&mut self.uut);
-        assert_eq!(self.uut.outputs(), self.last, "outputs moved at the falling edge: {i:?}");
+        assert_eq!(
+            self.uut.outputs(),
+            self.last,
+            "outputs moved at the falling edge: {i:?}"
+        );
         self.uut.clock.next = Clock { clk: true };
         settle(&mut self.uut);
         self.last = self.uut.outputs();
@@ -113,8 +121,8 @@ impl Coverage {
                 self.two_pop[k],
                 self.two_second_lost[k],
             ]
-                .iter()
-                .all(|&n| n > 0)
+            .iter()
+            .all(|&n| n > 0)
         })
     }
 }
@@ -122,7 +130,11 @@ impl Coverage {
 /// Runs `ops` through a fresh RTL queue of 2^N entries and through `model` (one call per
 /// clock, returning its outputs after the edge); the first clock whose outputs differ is
 /// an error. Unless `pop_on_empty`, asserts that no op pops an empty queue.
-fn compare<const N: usize, const NP1: usize, const NM1: usize>(ops: &[QueueIn], mut model: impl FnMut(&QueueIn) -> QueueOut, pop_on_empty: bool) -> Result<Coverage, String> {
+fn compare<const N: usize, const NP1: usize, const NM1: usize>(
+    ops: &[QueueIn],
+    mut model: impl FnMut(&QueueIn) -> QueueOut,
+    pop_on_empty: bool,
+) -> Result<Coverage, String> {
     let mut dut = Dut::<N, NP1, NM1>::new();
     let mut cov = Coverage::default();
     let cap = 1u32 << N;
@@ -130,7 +142,10 @@ fn compare<const N: usize, const NP1: usize, const NM1: usize>(ops: &[QueueIn], 
     for (t, i) in ops.iter().enumerate() {
         let before = dut.last;
         if !pop_on_empty {
-            assert!(!(i.pop && !i.clear && before.empty), "clock {t}: the testbench pops an empty queue");
+            assert!(
+                !(i.pop && !i.clear && before.empty),
+                "clock {t}: the testbench pops an empty queue"
+            );
         }
         let got = dut.cycle(i);
         let want = model(i);
@@ -162,7 +177,9 @@ fn compare<const N: usize, const NP1: usize, const NM1: usize>(ops: &[QueueIn], 
 }
 
 /// [`compare`] against the golden model.
-fn check<const N: usize, const NP1: usize, const NM1: usize>(ops: &[QueueIn]) -> Result<Coverage, String> {
+fn check<const N: usize, const NP1: usize, const NM1: usize>(
+    ops: &[QueueIn],
+) -> Result<Coverage, String> {
     let mut m = QueueModel::new(N as u32);
     compare::<N, NP1, NM1>(ops, |i| m.step(i), false)
 }
@@ -178,7 +195,11 @@ fn order(lifo: bool) -> Order {
 }
 
 fn clear(lifo: bool) -> QueueIn {
-    QueueIn { clear: true, order: order(lifo), ..Default::default() }
+    QueueIn {
+        clear: true,
+        order: order(lifo),
+        ..Default::default()
+    }
 }
 
 /// One clock: push and pop with the given probabilities, a random entry word, a third of
@@ -186,14 +207,29 @@ fn clear(lifo: bool) -> QueueIn {
 /// then ignored).
 fn op(p_push: f64, p_pop: f64) -> impl Strategy<Value = QueueIn> {
     let two = (prop::bool::weighted(1.0 / 3.0), any::<u128>());
-    (prop::bool::weighted(p_push), prop::bool::weighted(p_pop), any::<u128>(), two, prop::bool::weighted(0.004), any::<bool>()).prop_map(
-        |(push, pop, d, (two, d2), clear, lifo)| QueueIn { clear, order: order(lifo), push, pop, push_data: d & MASK, push2: (push && two).then_some(d2 & MASK) },
+    (
+        prop::bool::weighted(p_push),
+        prop::bool::weighted(p_pop),
+        any::<u128>(),
+        two,
+        prop::bool::weighted(0.004),
+        any::<bool>(),
     )
+        .prop_map(|(push, pop, d, (two, d2), clear, lifo)| QueueIn {
+            clear,
+            order: order(lifo),
+            push,
+            pop,
+            push_data: d & MASK,
+            push2: (push && two).then_some(d2 & MASK),
+        })
 }
 
 /// A phase of one mix, long enough to fill or drain a queue of `cap` entries.
 fn phase(cap: usize) -> impl Strategy<Value = Vec<QueueIn>> {
-    let v = move |p_push, p_pop, lo: usize, hi: usize| prop::collection::vec(op(p_push, p_pop), lo..=hi);
+    let v = move |p_push, p_pop, lo: usize, hi: usize| {
+        prop::collection::vec(op(p_push, p_pop), lo..=hi)
+    };
     prop_oneof![
         2 => v(1.0, 0.0, cap, cap + 6),        // fill past full: overflow
         1 => v(0.0, 1.0, cap / 2, cap + 2),    // drain
@@ -221,14 +257,22 @@ fn legalize(n: u32, ops: impl IntoIterator<Item = QueueIn>) -> Vec<QueueIn> {
 
 /// A clear (either order), then `phases` phases.
 fn ops(n: u32, phases: std::ops::Range<usize>) -> impl Strategy<Value = Vec<QueueIn>> {
-    (any::<bool>(), prop::collection::vec(phase(1 << n), phases))
-        .prop_map(move |(l, ph)| legalize(n, std::iter::once(clear(l)).chain(ph.into_iter().flatten())))
+    (any::<bool>(), prop::collection::vec(phase(1 << n), phases)).prop_map(move |(l, ph)| {
+        legalize(n, std::iter::once(clear(l)).chain(ph.into_iter().flatten()))
+    })
 }
 
 /// Samples `k` values of `strat` (deterministic seed).
 fn sample<T: std::fmt::Debug>(strat: impl Strategy<Value = T>, k: usize) -> Vec<T> {
-    let mut runner = TestRunner::new_with_rng(Config::default(), proptest::test_runner::TestRng::deterministic_rng(proptest::test_runner::RngAlgorithm::ChaCha));
-    (0..k).map(|_| strat.new_tree(&mut runner).unwrap().current()).collect()
+    let mut runner = TestRunner::new_with_rng(
+        Config::default(),
+        proptest::test_runner::TestRng::deterministic_rng(
+            proptest::test_runner::RngAlgorithm::ChaCha,
+        ),
+    );
+    (0..k)
+        .map(|_| strat.new_tree(&mut runner).unwrap().current())
+        .collect()
 }
 
 proptest! {
@@ -269,7 +313,10 @@ fn generated_ops_cover_the_corners() {
         cov.add(&check::<8, 9, 7>(&ops).unwrap());
     }
     eprintln!("2^8 entries: {cov:?}");
-    assert!((0..2).all(|k| cov.overflows[k] > 0 && cov.full[k] > 0 && cov.push_pop_one[k] > 0), "{cov:?}");
+    assert!(
+        (0..2).all(|k| cov.overflows[k] > 0 && cov.full[k] > 0 && cov.push_pop_one[k] > 0),
+        "{cov:?}"
+    );
 }
 
 /// The exported vectors' own sequence (the inputs of every line of vectors/pair_queue_n4.hex,
@@ -288,7 +335,11 @@ fn vector_ops_cover_the_corners() {
             let f: Vec<&str> = l.split_whitespace().collect();
             QueueIn {
                 clear: f[0] == "1",
-                order: if f[1] == "1" { Order::Lifo } else { Order::Fifo },
+                order: if f[1] == "1" {
+                    Order::Lifo
+                } else {
+                    Order::Fifo
+                },
                 push: f[2] == "1",
                 push_data: hex(f[3]),
                 push2: (f[4] == "1").then(|| hex(f[5])),
@@ -316,7 +367,16 @@ fn wrong_models_are_caught() {
             over4 |= o.count >= 4;
         }
         let mut m = QueueModel::new(3);
-        let r = compare::<3, 4, 2>(&ops, |i| m.step(&QueueIn { order: Order::Fifo, ..*i }), false);
+        let r = compare::<3, 4, 2>(
+            &ops,
+            |i| {
+                m.step(&QueueIn {
+                    order: Order::Fifo,
+                    ..*i
+                })
+            },
+            false,
+        );
         assert_eq!(r.is_err(), lifo2, "FIFO-only model on {} clocks", ops.len());
         let mut m = QueueModel::new(2);
         let r = compare::<3, 4, 2>(&ops, |i| m.step(i), false);
@@ -324,7 +384,10 @@ fn wrong_models_are_caught() {
         lifo_seqs += lifo2 as usize;
         big_seqs += over4 as usize;
     }
-    assert!(lifo_seqs >= 2 && big_seqs >= 2, "{lifo_seqs} LIFO, {big_seqs} big sequences");
+    assert!(
+        lifo_seqs >= 2 && big_seqs >= 2,
+        "{lifo_seqs} LIFO, {big_seqs} big sequences"
+    );
 }
 
 // ---- directed ------------------------------------------------------------------------
@@ -341,10 +404,22 @@ fn push_pop_on_one_entry() {
             o
         };
         go(clear(lifo));
-        go(QueueIn { push: true, push_data: 0x1_2345_6789_abcd_ef01, ..Default::default() });
-        let o = go(QueueIn { push: true, pop: true, push_data: MASK, ..Default::default() });
+        go(QueueIn {
+            push: true,
+            push_data: 0x1_2345_6789_abcd_ef01,
+            ..Default::default()
+        });
+        let o = go(QueueIn {
+            push: true,
+            pop: true,
+            push_data: MASK,
+            ..Default::default()
+        });
         assert_eq!((o.count, o.top_data, o.max_count), (1, MASK, 1));
-        let o = go(QueueIn { pop: true, ..Default::default() });
+        let o = go(QueueIn {
+            pop: true,
+            ..Default::default()
+        });
         assert!(o.empty && o.top_data == 0 && o.max_count == 1 && !o.overflow);
     }
 }
@@ -355,11 +430,29 @@ fn pop_on_empty_is_ignored() {
     for lifo in [false, true] {
         let ops = [
             clear(lifo),
-            QueueIn { pop: true, ..Default::default() },
-            QueueIn { pop: true, push: true, push_data: 5, ..Default::default() },
-            QueueIn { pop: true, ..Default::default() },
-            QueueIn { pop: true, ..Default::default() },
-            QueueIn { push: true, push_data: 6, ..Default::default() },
+            QueueIn {
+                pop: true,
+                ..Default::default()
+            },
+            QueueIn {
+                pop: true,
+                push: true,
+                push_data: 5,
+                ..Default::default()
+            },
+            QueueIn {
+                pop: true,
+                ..Default::default()
+            },
+            QueueIn {
+                pop: true,
+                ..Default::default()
+            },
+            QueueIn {
+                push: true,
+                push_data: 6,
+                ..Default::default()
+            },
         ];
         let mut m = QueueModel::new(3);
         compare::<3, 4, 2>(&ops, |i| m.step(i), true).unwrap();
@@ -383,8 +476,17 @@ fn two_pushes_in_one_clock() {
             assert_eq!(o, m.step(&i), "{i:x?}");
             o
         };
-        let two = |a: u128, b: u128, pop: bool| QueueIn { push: true, push_data: a, push2: Some(b), pop, ..Default::default() };
-        let pop = QueueIn { pop: true, ..Default::default() };
+        let two = |a: u128, b: u128, pop: bool| QueueIn {
+            push: true,
+            push_data: a,
+            push2: Some(b),
+            pop,
+            ..Default::default()
+        };
+        let pop = QueueIn {
+            pop: true,
+            ..Default::default()
+        };
         go(clear(lifo));
         let o = go(two(1, 2, false));
         assert_eq!((o.count, o.top_data), (2, if lifo { 2 } else { 1 }));
@@ -402,7 +504,11 @@ fn two_pushes_in_one_clock() {
         for _ in 0..8 {
             seq.push(go(pop).top_data);
         }
-        let want: Vec<u128> = if lifo { vec![8, 7, 6, 5, 3, 2, 1, 0] } else { vec![3, 4, 5, 6, 7, 8, 9, 0] };
+        let want: Vec<u128> = if lifo {
+            vec![8, 7, 6, 5, 3, 2, 1, 0]
+        } else {
+            vec![3, 4, 5, 6, 7, 8, 9, 0]
+        };
         assert_eq!(seq, want, "the tops after each pop");
     }
 }
@@ -467,16 +573,36 @@ fn rtl_order(lifo: bool) -> (Vec<String>, u32) {
         o
     };
     go(clear(lifo));
-    let root = Pair { a: 0, b: 0, flip: false };
-    let mut o = go(QueueIn { push: true, push_data: pack(&Entry { pairs: [root, root], len: 1 }), ..Default::default() });
+    let root = Pair {
+        a: 0,
+        b: 0,
+        flip: false,
+    };
+    let mut o = go(QueueIn {
+        push: true,
+        push_data: pack(&Entry {
+            pairs: [root, root],
+            len: 1,
+        }),
+        ..Default::default()
+    });
     let mut seq = vec![];
     while !o.empty {
         let ent = unpack(o.top_data);
         seq.extend(ent.pairs[..ent.len as usize].iter().map(name));
         let ch = child_entries(&ent, lifo);
-        o = go(QueueIn { pop: true, push: !ch.is_empty(), push_data: ch.first().map_or(0, pack), ..Default::default() });
+        o = go(QueueIn {
+            pop: true,
+            push: !ch.is_empty(),
+            push_data: ch.first().map_or(0, pack),
+            ..Default::default()
+        });
         for c in ch.iter().skip(1) {
-            o = go(QueueIn { push: true, push_data: pack(c), ..Default::default() });
+            o = go(QueueIn {
+                push: true,
+                push_data: pack(c),
+                ..Default::default()
+            });
         }
     }
     assert!(!o.overflow);
@@ -486,7 +612,10 @@ fn rtl_order(lifo: bool) -> (Vec<String>, u32) {
 #[test]
 fn papers_fifo_sequence_through_the_rtl_queue() {
     let (seq, max) = rtl_order(false);
-    assert_eq!(seq.join(" "), "A1 B2 B3 C3 C2 D4 D5 E5 E4 E6 E7 D7 D6 F6 F7 G7 G6 G4 G5 F5 F4");
+    assert_eq!(
+        seq.join(" "),
+        "A1 B2 B3 C3 C2 D4 D5 E5 E4 E6 E7 D7 D6 F6 F7 G7 G6 G4 G5 F5 F4"
+    );
     assert_eq!(seq, software_order(false));
     eprintln!("FIFO: max {max} entries");
 }

@@ -17,9 +17,9 @@
 use collision_chip::chip::config::{ChipConfig, DopRounding};
 use collision_chip::chip::rtl::dop_unit_name;
 use collision_chip::dop::DopTree;
-use collision_chip::golden::host::TriSide;
-use collision_chip::golden::host::HostSetup;
 use collision_chip::format::{Format, Rounding};
+use collision_chip::golden::host::HostSetup;
+use collision_chip::golden::host::TriSide;
 use collision_chip::golden::{dop_unit, doptrf};
 use collision_chip::mesh::soup;
 use collision_chip::pose::Pose;
@@ -38,9 +38,13 @@ const LATENCY: usize = 15;
 /// The DOP units are large values (k = 24: about 2 MB, built on the stack): run their
 /// tests in a thread with a big stack.
 fn big_stack(f: impl FnOnce() + Send + 'static) {
-    std::thread::Builder::new().stack_size(512 << 20).spawn(f).unwrap().join().unwrap_or_else(|e| std::panic::resume_unwind(e));
+    std::thread::Builder::new()
+        .stack_size(512 << 20)
+        .spawn(f)
+        .unwrap()
+        .join()
+        .unwrap_or_else(|e| std::panic::resume_unwind(e));
 }
-
 
 // ---------------------------------------------------------------------------------------
 // The lane.
@@ -70,7 +74,10 @@ macro_rules! impl_lane {
                 self.valid_in.next = valid;
             }
             fn out(&self) -> (bool, (u64, bool)) {
-                (self.valid_out.val(), (self.s.val().to_u64(), self.flag.val()))
+                (
+                    self.valid_out.val(),
+                    (self.s.val().to_u64(), self.flag.val()),
+                )
             }
             fn clock(&mut self, high: bool) {
                 self.clock.next = Clock { clk: high };
@@ -81,14 +88,18 @@ macro_rules! impl_lane {
 impl_lane!(b32::Doptrf);
 impl_lane!(e8m15::Doptrf);
 
-
 fn golden_lane(fmt: Format, r: Rounding, x: &LaneIn) -> (u64, bool) {
     let v: Vec<f64> = x.iter().map(|&b| fmt.from_bits(b)).collect();
     let s = doptrf::lane(fmt, r, [v[0], v[1], v[2]], [v[3], v[4], v[5]], v[6], v[7]);
     (fmt.to_bits(s), s < 0.0)
 }
 
-fn check_lane<L: Lane>(uut: &mut L, fmt: Format, r: Rounding, cases: &[LaneIn]) -> Result<(), TestCaseError> {
+fn check_lane<L: Lane>(
+    uut: &mut L,
+    fmt: Format,
+    r: Rounding,
+    cases: &[LaneIn],
+) -> Result<(), TestCaseError> {
     let outs = run(uut, cases);
     let w = fmt.width() as usize / 4;
     for (x, &(s, flag)) in cases.iter().zip(&outs) {
@@ -111,7 +122,6 @@ fn check_lane<L: Lane>(uut: &mut L, fmt: Format, r: Rounding, cases: &[LaneIn]) 
 
 // ---------------------------------------------------------------------------------------
 // Operand generators (bit patterns of a format with `e` exponent and `f` fraction bits).
-
 
 /// A lane case: independent operands, or C >= 0 (as the host sets it) with e chosen near
 /// -u (the flag's boundary: s is zero, a few ulps either side, or a tie).
@@ -149,7 +159,11 @@ const LANE_BATCH: usize = 500;
 fn prop_lane<L: Lane>(make: impl Fn(Rounding) -> L, fmt: Format, name: &str) {
     for r in MODES {
         let strat = prop::collection::vec(lane_case(fmt, r), LANE_BATCH);
-        let mut runner = TestRunner::new(Config { cases: LANE_CASES, failure_persistence: None, ..Config::default() });
+        let mut runner = TestRunner::new(Config {
+            cases: LANE_CASES,
+            failure_persistence: None,
+            ..Config::default()
+        });
         let n = std::cell::Cell::new(0usize);
         let start = Instant::now();
         let res = runner.run(&strat, |cases| {
@@ -162,7 +176,11 @@ fn prop_lane<L: Lane>(make: impl Fn(Rounding) -> L, fmt: Format, name: &str) {
             panic!("{}", e);
         }
         let dt = start.elapsed().as_secs_f64();
-        println!("{name} {fmt} {r:?}: {} lane evaluations ok, {:.0} cycles/s", n.get(), n.get() as f64 / dt);
+        println!(
+            "{name} {fmt} {r:?}: {} lane evaluations ok, {:.0} cycles/s",
+            n.get(),
+            n.get() as f64 / dt
+        );
     }
 }
 
@@ -170,7 +188,16 @@ fn prop_lane<L: Lane>(make: impl Fn(Rounding) -> L, fmt: Format, name: &str) {
 fn specials_lane<L: Lane>(make: impl Fn(Rounding) -> L, fmt: Format) {
     let t = Fmt::of(fmt);
     let one = t.pack(false, t.bias(), 0);
-    let base: LaneIn = [one, t.pack(false, t.bias() + 1, 1), t.pack(true, t.bias(), 3), one, one, one, t.pack(true, t.bias() + 2, 0), one];
+    let base: LaneIn = [
+        one,
+        t.pack(false, t.bias() + 1, 1),
+        t.pack(true, t.bias(), 3),
+        one,
+        one,
+        one,
+        t.pack(true, t.bias() + 2, 0),
+        one,
+    ];
     let mut cases = vec![];
     for pos in 0..8 {
         for &s in &t.specials() {
@@ -208,7 +235,10 @@ fn lane_testbench_detects_mismatch() {
     use proptest::strategy::ValueTree;
     let mut runner = TestRunner::deterministic();
     let r = Rounding::TowardPositive;
-    let cases = prop::collection::vec(lane_case(Format::BINARY32, r), 200).new_tree(&mut runner).unwrap().current();
+    let cases = prop::collection::vec(lane_case(Format::BINARY32, r), 200)
+        .new_tree(&mut runner)
+        .unwrap()
+        .current();
     let mut uut = b32::doptrf_top(Rounding::NearestEven);
     assert!(check_lane(&mut uut, Format::BINARY32, r, &cases).is_err());
 }
@@ -248,7 +278,10 @@ fn setup_words(fmt: Format, j: &[[u8; 3]], cmat: &[[f64; 3]], cvec: &[f64]) -> V
             w.push((a + l as u64, fmt.to_bits(cmat[i][l])));
         }
         w.push((a + 3, fmt.to_bits(cvec[i])));
-        w.push((a + 4, j[i][0] as u64 | (j[i][1] as u64) << 5 | (j[i][2] as u64) << 10));
+        w.push((
+            a + 4,
+            j[i][0] as u64 | (j[i][1] as u64) << 5 | (j[i][2] as u64) << 10,
+        ));
     }
     w
 }
@@ -256,14 +289,23 @@ fn setup_words(fmt: Format, j: &[[u8; 3]], cmat: &[[f64; 3]], cvec: &[f64]) -> V
 /// Idle cycles the writer leaves after taken pair `i`: none for most, a few now and then
 /// (a folded unit's counter runs on meanwhile, and the next pair waits for `in_ready`).
 fn gap(i: usize) -> usize {
-    if i % 7 == 6 { i % 5 } else { 0 }
+    if i % 7 == 6 {
+        i % 5
+    } else {
+        0
+    }
 }
 
 /// Loads the setup, streams `pairs`, flushes; returns (overlap, tag) in order (latency
 /// checked) and the number of cycles of the pair stream. A writer holds each pair with
 /// `valid_in` high until `in_ready` takes it (a folded unit sees the next pair on its ports
 /// during the passes of the one taken), then leaves [`gap`] idle cycles.
-fn run_unit<U: Unit>(uut: &mut U, words: &[(u64, u64)], pairs: &[Pair], mut probe: Option<Probe<U>>) -> (Vec<(bool, u16)>, usize) {
+fn run_unit<U: Unit>(
+    uut: &mut U,
+    words: &[(u64, u64)],
+    pairs: &[Pair],
+    mut probe: Option<Probe<U>>,
+) -> (Vec<(bool, u16)>, usize) {
     let k = U::K;
     let latency = collision_chip::chip::rtl::dop_fold_latency(U::INTERVAL);
     let zero = vec![0u64; k];
@@ -292,7 +334,10 @@ fn run_unit<U: Unit>(uut: &mut U, words: &[(u64, u64)], pairs: &[Pair], mut prob
         let (v, ov, tag) = uut.out();
         if v {
             let i = outs.len();
-            assert!(i < taken.len() && cyc + 1 == taken[i] + latency, "unit output {i} at the wrong edge ({cyc})");
+            assert!(
+                i < taken.len() && cyc + 1 == taken[i] + latency,
+                "unit output {i} at the wrong edge ({cyc})"
+            );
             outs.push((ov, tag));
         }
         if let Some(&t) = taken.get(outs.len()) {
@@ -305,12 +350,22 @@ fn run_unit<U: Unit>(uut: &mut U, words: &[(u64, u64)], pairs: &[Pair], mut prob
 
 /// All node pairs of two soup trees under a pose, against `dop_overlap`. Returns
 /// (pairs, overlaps, cycles/s).
-fn unit_trees<U: Unit>(make: impl Fn(Rounding) -> U, fmt: Format, r: Rounding, n_tris: usize, pose: Pose) -> (usize, usize, f64) {
+fn unit_trees<U: Unit>(
+    make: impl Fn(Rounding) -> U,
+    fmt: Format,
+    r: Rounding,
+    n_tris: usize,
+    pose: Pose,
+) -> (usize, usize, f64) {
     let k = U::K;
     let cfg = ChipConfig {
         k,
         format: fmt.into(),
-        dop_rounding: if r == Rounding::TowardPositive { DopRounding::Outward } else { DopRounding::NearestEven },
+        dop_rounding: if r == Rounding::TowardPositive {
+            DopRounding::Outward
+        } else {
+            DopRounding::NearestEven
+        },
         ..ChipConfig::default()
     };
     let ta = DopTree::build(&soup(n_tris, 1).triangles_f64(), &cfg);
@@ -336,7 +391,11 @@ fn unit_trees<U: Unit>(make: impl Fn(Rounding) -> U, fmt: Format, r: Rounding, n
     let rate = (cycles + words.len()) as f64 / start.elapsed().as_secs_f64();
     for (i, ((ov, tag), p)) in outs.iter().zip(&pairs).enumerate() {
         assert_eq!(*tag, p.tag, "k={k} {fmt} {r:?}: pair {i}: tag");
-        assert_eq!(*ov, want[i], "k={k} {fmt} {r:?}: pair {i}: overlap (rtl {ov}, golden {})", want[i]);
+        assert_eq!(
+            *ov, want[i],
+            "k={k} {fmt} {r:?}: pair {i}: overlap (rtl {ov}, golden {})",
+            want[i]
+        );
     }
     let overlaps = want.iter().filter(|&&o| o).count();
     (pairs.len(), overlaps, rate)
@@ -344,7 +403,10 @@ fn unit_trees<U: Unit>(make: impl Fn(Rounding) -> U, fmt: Format, r: Rounding, n
 
 fn unit_trees_all<U: Unit>(make: impl Fn(Rounding) -> U + Copy, fmt: Format, n_tris: usize) {
     for r in MODES {
-        for pose in [Pose::new(10.0, 20.0, 30.0, 0.3, 0.1, 0.0), Pose::new(-35.0, 80.0, 5.0, 1.2, -0.4, 0.2)] {
+        for pose in [
+            Pose::new(10.0, 20.0, 30.0, 0.3, 0.1, 0.0),
+            Pose::new(-35.0, 80.0, 5.0, 1.2, -0.4, 0.2),
+        ] {
             let (n, ov, rate) = unit_trees(make, fmt, r, n_tris, pose);
             println!("DopUnit k={} interval {} {fmt} {r:?} pose {pose:?}: {n} node pairs ok ({ov} overlap), {rate:.0} cycles/s", U::K, U::INTERVAL);
             assert!(ov > 0 && ov < n, "the pose should give both verdicts");
@@ -404,18 +466,58 @@ fn unit_random<U: Unit>(make: impl Fn(Rounding) -> U, fmt: Format, n_pairs: usiz
     use proptest::strategy::ValueTree;
     let k = U::K;
     let t = Fmt::of(fmt);
-    let mut runner = TestRunner::new_with_rng(Config::default(), proptest::test_runner::TestRng::from_seed(proptest::test_runner::RngAlgorithm::ChaCha, &[seed as u8; 32]));
-    let mut draw = |n: usize| prop::collection::vec(operand(t), n).new_tree(&mut runner).unwrap().current();
+    let mut runner = TestRunner::new_with_rng(
+        Config::default(),
+        proptest::test_runner::TestRng::from_seed(
+            proptest::test_runner::RngAlgorithm::ChaCha,
+            &[seed as u8; 32],
+        ),
+    );
+    let mut draw = |n: usize| {
+        prop::collection::vec(operand(t), n)
+            .new_tree(&mut runner)
+            .unwrap()
+            .current()
+    };
     let sign = 1u64 << (t.e + t.f);
-    for (r, nonneg) in [(MODES[0], false), (MODES[0], true), (MODES[1], false), (MODES[1], true)] {
+    for (r, nonneg) in [
+        (MODES[0], false),
+        (MODES[0], true),
+        (MODES[1], false),
+        (MODES[1], true),
+    ] {
         // C and c of random sign, or non-negative (as the host sets C)
-        let clear = |v: Vec<u64>| if nonneg { v.into_iter().map(|x| x & !sign).collect() } else { v };
+        let clear = |v: Vec<u64>| {
+            if nonneg {
+                v.into_iter().map(|x| x & !sign).collect()
+            } else {
+                v
+            }
+        };
         let cm: Vec<u64> = clear(draw(3 * k));
         let cv: Vec<u64> = clear(draw(k));
-        let cmat: Vec<[f64; 3]> = (0..k).map(|i| [0, 1, 2].map(|l| fmt.from_bits(cm[3 * i + l]))).collect();
+        let cmat: Vec<[f64; 3]> = (0..k)
+            .map(|i| [0, 1, 2].map(|l| fmt.from_bits(cm[3 * i + l])))
+            .collect();
         let cvec: Vec<f64> = cv.iter().map(|&b| fmt.from_bits(b)).collect();
-        let j: Vec<[u8; 3]> = (0..k).map(|i| [0, 1, 2].map(|l| ((cm[3 * i + l] ^ cv[i] >> l) % k as u64) as u8)).collect();
-        let setup = HostSetup { j: j.clone(), cmat: cmat.clone(), cvec: cvec.clone(), ..HostSetup::new(&ChipConfig { k, format: fmt.into(), ..ChipConfig::default() }, &Pose::default(), 1.0, TriSide::UNUSED) };
+        let j: Vec<[u8; 3]> = (0..k)
+            .map(|i| [0, 1, 2].map(|l| ((cm[3 * i + l] ^ cv[i] >> l) % k as u64) as u8))
+            .collect();
+        let setup = HostSetup {
+            j: j.clone(),
+            cmat: cmat.clone(),
+            cvec: cvec.clone(),
+            ..HostSetup::new(
+                &ChipConfig {
+                    k,
+                    format: fmt.into(),
+                    ..ChipConfig::default()
+                },
+                &Pose::default(),
+                1.0,
+                TriSide::UNUSED,
+            )
+        };
         let words = setup_words(fmt, &j, &cmat, &cvec);
         let mut pairs = vec![];
         let mut want = vec![];
@@ -433,7 +535,11 @@ fn unit_random<U: Unit>(make: impl Fn(Rounding) -> U, fmt: Format, n_pairs: usiz
             let df: Vec<f64> = d.iter().map(|&b| fmt.from_bits(b)).collect();
             let ef: Vec<f64> = e.iter().map(|&b| fmt.from_bits(b)).collect();
             want.push(dop_unit::dop_overlap(fmt, r, &setup, &df, &ef));
-            pairs.push(Pair { d, e, tag: p as u16 });
+            pairs.push(Pair {
+                d,
+                e,
+                tag: p as u16,
+            });
         }
         let mut uut = make(r);
         let (outs, _) = run_unit(&mut uut, &words, &pairs, None);
@@ -442,7 +548,10 @@ fn unit_random<U: Unit>(make: impl Fn(Rounding) -> U, fmt: Format, n_pairs: usiz
             assert_eq!(*ov, want[i], "k={k} {fmt} {r:?} random pair {i}: overlap");
         }
         let ov = want.iter().filter(|&&o| o).count();
-        println!("DopUnit k={k} {fmt} {r:?} C, c {}: {n_pairs} random pairs ok ({ov} overlap)", if nonneg { ">= 0" } else { "any sign" });
+        println!(
+            "DopUnit k={k} {fmt} {r:?} C, c {}: {n_pairs} random pairs ok ({ov} overlap)",
+            if nonneg { ">= 0" } else { "any sign" }
+        );
     }
 }
 
@@ -469,7 +578,11 @@ fn unit_random_values() {
 
 /// rust-hdl names the VCD root `uut`; name it after the block.
 fn write_vcd(name: &str, root: &str, buf: Vec<u8>) {
-    let text = String::from_utf8(buf).unwrap().replacen("$scope module uut $end", &format!("$scope module {root} $end"), 1);
+    let text = String::from_utf8(buf).unwrap().replacen(
+        "$scope module uut $end",
+        &format!("$scope module {root} $end"),
+        1,
+    );
     let path = vcd_path(name);
     std::fs::write(&path, text).unwrap();
     println!("wrote {}", path.display());
@@ -484,23 +597,79 @@ fn vcd_traces() {
         let f = Format::BINARY32;
         let b = |x: f64| f.to_bits(x);
         let cases: Vec<LaneIn> = vec![
-            [b(1.0), b(2.0), b(3.0), b(0.5), b(0.25), b(0.125), b(-1.0), b(-0.5)],
-            [b(1.5), b(-2.0), b(0.1), b(0.7), b(0.2), b(0.1), b(0.3), b(-3.0)],
-            [b(f64::INFINITY), b(1.0), b(1.0), b(0.0), b(1.0), b(1.0), b(0.0), b(0.0)],
-            [b(1e-40), b(1e-40), b(1.0), b(1.0), b(1.0), b(0.0), b(0.0), b(-2e-40)],
+            [
+                b(1.0),
+                b(2.0),
+                b(3.0),
+                b(0.5),
+                b(0.25),
+                b(0.125),
+                b(-1.0),
+                b(-0.5),
+            ],
+            [
+                b(1.5),
+                b(-2.0),
+                b(0.1),
+                b(0.7),
+                b(0.2),
+                b(0.1),
+                b(0.3),
+                b(-3.0),
+            ],
+            [
+                b(f64::INFINITY),
+                b(1.0),
+                b(1.0),
+                b(0.0),
+                b(1.0),
+                b(1.0),
+                b(0.0),
+                b(0.0),
+            ],
+            [
+                b(1e-40),
+                b(1e-40),
+                b(1.0),
+                b(1.0),
+                b(1.0),
+                b(0.0),
+                b(0.0),
+                b(-2e-40),
+            ],
         ];
-        let outs = run_vcd(&mut b32::doptrf_top(Rounding::TowardPositive), &cases, "doptrf_b32", "doptrf");
-        let want: Vec<(u64, bool)> = cases.iter().map(|x| golden_lane(f, Rounding::TowardPositive, x)).collect();
+        let outs = run_vcd(
+            &mut b32::doptrf_top(Rounding::TowardPositive),
+            &cases,
+            "doptrf_b32",
+            "doptrf",
+        );
+        let want: Vec<(u64, bool)> = cases
+            .iter()
+            .map(|x| golden_lane(f, Rounding::TowardPositive, x))
+            .collect();
         assert_eq!(outs, want);
-        assert_eq!(vcd_outputs(&vcd_path("doptrf_b32"), "doptrf", "valid_out", "s"), want.iter().map(|w| w.0).collect::<Vec<_>>(), "doptrf_b32.vcd: s at valid_out");
+        assert_eq!(
+            vcd_outputs(&vcd_path("doptrf_b32"), "doptrf", "valid_out", "s"),
+            want.iter().map(|w| w.0).collect::<Vec<_>>(),
+            "doptrf_b32.vcd: s at valid_out"
+        );
 
         // the DOP unit (k = 24): a pose, a few node pairs of two small trees
         let cfg = ChipConfig::default();
         let ta = DopTree::build(&soup(4, 1).triangles_f64(), &cfg);
         let tb = DopTree::build(&soup(4, 2).triangles_f64(), &cfg);
-        let setup = HostSetup::new(&cfg, &Pose::new(10.0, 20.0, 30.0, 0.3, 0.1, 0.0), tb.coord_bound(), TriSide::UNUSED);
+        let setup = HostSetup::new(
+            &cfg,
+            &Pose::new(10.0, 20.0, 30.0, 0.3, 0.1, 0.0),
+            tb.coord_bound(),
+            TriSide::UNUSED,
+        );
         let words = setup_words(f, &setup.j, &setup.cmat, &setup.cvec);
-        let nodes: Vec<(u32, u32)> = (0..ta.len() as u32).flat_map(|na| (0..tb.len() as u32).map(move |nb| (na, nb))).take(12).collect();
+        let nodes: Vec<(u32, u32)> = (0..ta.len() as u32)
+            .flat_map(|na| (0..tb.len() as u32).map(move |nb| (na, nb)))
+            .take(12)
+            .collect();
         let pairs: Vec<Pair> = nodes
             .iter()
             .enumerate()
@@ -510,11 +679,25 @@ fn vcd_traces() {
                 tag: i as u16,
             })
             .collect();
-        let want: Vec<bool> = nodes.iter().map(|&(na, nb)| dop_unit::dop_overlap(f, Rounding::TowardPositive, &setup, &tb.dop(nb), &ta.dop(na))).collect();
+        let want: Vec<bool> = nodes
+            .iter()
+            .map(|&(na, nb)| {
+                dop_unit::dop_overlap(
+                    f,
+                    Rounding::TowardPositive,
+                    &setup,
+                    &tb.dop(nb),
+                    &ta.dop(na),
+                )
+            })
+            .collect();
         let mut uut = b32::dop_unit24_top(Rounding::TowardPositive);
         let mut buf = vec![];
         {
-            let vcd = std::cell::RefCell::new(Some(write_vcd_dump(write_vcd_header(&mut buf, &uut), &uut)));
+            let vcd = std::cell::RefCell::new(Some(write_vcd_dump(
+                write_vcd_header(&mut buf, &uut),
+                &uut,
+            )));
             let mut time = 0u64;
             let mut probe = |u: &b32::DopUnit24| {
                 let mut v = vcd.borrow_mut();
@@ -528,11 +711,18 @@ fn vcd_traces() {
             assert_eq!(outs.iter().map(|o| o.0).collect::<Vec<_>>(), want);
         }
         write_vcd("dop_unit_b32", "dop_unit", buf);
-        let shown: Vec<bool> = vcd_outputs(&vcd_path("dop_unit_b32"), "dop_unit", "valid_out", "overlap").iter().map(|&v| v == 1).collect();
+        let shown: Vec<bool> = vcd_outputs(
+            &vcd_path("dop_unit_b32"),
+            "dop_unit",
+            "valid_out",
+            "overlap",
+        )
+        .iter()
+        .map(|&v| v == 1)
+        .collect();
         assert_eq!(shown, want, "dop_unit_b32.vcd: overlap at valid_out");
     });
 }
-
 
 /// The rust-hdl DOP units run the same golden vector files that Icarus and Verilator run
 /// (`vectors/dop_unit_*.hex`, regenerated from the golden model here), with no mismatch.
@@ -540,21 +730,67 @@ fn vcd_traces() {
 fn dop_units_pass_their_exported_vectors() {
     use collision_chip::harness::{sim, units};
     big_stack(|| {
-        let text = |name: &str| units::all().into_iter().find(|u| u.name == name).expect("exported unit").vectors();
+        let text = |name: &str| {
+            units::all()
+                .into_iter()
+                .find(|u| u.name == name)
+                .expect("exported unit")
+                .vectors()
+        };
         let v6 = sim::parse_dop_vectors(&text("dop_unit_k6_e8m15_ru"), e8m15::WIDTH).unwrap();
-        let run6 = sim::run_dop_vectors(&mut e8m15::dop_unit6_top(Rounding::TowardPositive), &v6).unwrap();
+        let run6 =
+            sim::run_dop_vectors(&mut e8m15::dop_unit6_top(Rounding::TowardPositive), &v6).unwrap();
         assert_eq!(run6.mismatches(&v6).count(), 0);
         let v24 = sim::parse_dop_vectors(&text("dop_unit_k24_b32_ru"), b32::WIDTH).unwrap();
-        let run24 = sim::run_dop_vectors(&mut b32::dop_unit24_top(Rounding::TowardPositive), &v24).unwrap();
+        let run24 =
+            sim::run_dop_vectors(&mut b32::dop_unit24_top(Rounding::TowardPositive), &v24).unwrap();
         assert_eq!(run24.mismatches(&v24).count(), 0);
         assert!(v6.cases.len() > 900 && v24.cases.len() > 200);
         // the folded units: the same pairs, a pair every 2, 3, 6 clocks
-        let fold = |ii: usize| sim::parse_dop_vectors(&text(&dop_unit_name(6, Format::REDUCED, Rounding::TowardPositive, ii as u32)), e8m15::WIDTH).unwrap();
+        let fold = |ii: usize| {
+            sim::parse_dop_vectors(
+                &text(&dop_unit_name(
+                    6,
+                    Format::REDUCED,
+                    Rounding::TowardPositive,
+                    ii as u32,
+                )),
+                e8m15::WIDTH,
+            )
+            .unwrap()
+        };
         let (v2, v3, v6f) = (fold(2), fold(3), fold(6));
         assert_eq!((v2.interval, v2.cases.len()), (2, v6.cases.len()));
-        assert_eq!(sim::run_dop_vectors(&mut e8m15::dop_unit6_fold2_top(Rounding::TowardPositive), &v2).unwrap().mismatches(&v2).count(), 0);
-        assert_eq!(sim::run_dop_vectors(&mut e8m15::dop_unit6_fold3_top(Rounding::TowardPositive), &v3).unwrap().mismatches(&v3).count(), 0);
-        assert_eq!(sim::run_dop_vectors(&mut e8m15::dop_unit6_fold6_top(Rounding::TowardPositive), &v6f).unwrap().mismatches(&v6f).count(), 0);
+        assert_eq!(
+            sim::run_dop_vectors(
+                &mut e8m15::dop_unit6_fold2_top(Rounding::TowardPositive),
+                &v2
+            )
+            .unwrap()
+            .mismatches(&v2)
+            .count(),
+            0
+        );
+        assert_eq!(
+            sim::run_dop_vectors(
+                &mut e8m15::dop_unit6_fold3_top(Rounding::TowardPositive),
+                &v3
+            )
+            .unwrap()
+            .mismatches(&v3)
+            .count(),
+            0
+        );
+        assert_eq!(
+            sim::run_dop_vectors(
+                &mut e8m15::dop_unit6_fold6_top(Rounding::TowardPositive),
+                &v6f
+            )
+            .unwrap()
+            .mismatches(&v6f)
+            .count(),
+            0
+        );
     });
 }
 
@@ -570,7 +806,12 @@ fn dop_unit_fold_verilog() {
     std::fs::create_dir_all(&dir).unwrap();
     for ii in [4, 8, 12, 24] {
         let (f, r) = (Format::BINARY32, Rounding::TowardPositive);
-        let v = std::thread::Builder::new().stack_size(1 << 30).spawn(move || units::dop_unit_fold_verilog(ii, 24, f, r).unwrap()).unwrap().join().unwrap();
+        let v = std::thread::Builder::new()
+            .stack_size(1 << 30)
+            .spawn(move || units::dop_unit_fold_verilog(ii, 24, f, r).unwrap())
+            .unwrap()
+            .join()
+            .unwrap();
         let p = dir.join(format!("{}.v", dop_unit_name(24, f, r, ii as u32)));
         std::fs::write(&p, dedup_modules(&v)).unwrap();
         eprintln!("wrote {}", p.display());

@@ -57,7 +57,6 @@ impl_unit!(e8m15::FpMul, 4, no);
 impl_unit!(b32::FpAdd, 3, yes);
 impl_unit!(e8m15::FpAdd, 3, yes);
 
-
 fn golden(fmt: Format, op: Op, r: Rounding, a: u64, b: u64) -> u64 {
     let (x, y) = (fmt.from_bits(a), fmt.from_bits(b));
     fmt.to_bits(match op {
@@ -113,7 +112,6 @@ fn check<U: Unit>(
 // ---------------------------------------------------------------------------------------
 // Operand generators (bit patterns of a format with `e` exponent and `f` fraction bits).
 
-
 /// Pairs for the multiplier: independent operands, and exponent sums placed at the
 /// overflow and underflow (subnormal) thresholds.
 fn mul_pair(t: Fmt) -> BoxedStrategy<(u64, u64)> {
@@ -167,7 +165,11 @@ fn prop_unit<U: Unit>(make: impl Fn(Rounding) -> U, fmt: Format, is_mul: bool) {
     let t = Fmt::of(fmt);
     for r in MODES {
         let strat = prop::collection::vec(if is_mul { mul_pair(t) } else { add_pair(t) }, BATCH);
-        let mut runner = TestRunner::new(Config { cases: CASES, failure_persistence: None, ..Config::default() });
+        let mut runner = TestRunner::new(Config {
+            cases: CASES,
+            failure_persistence: None,
+            ..Config::default()
+        });
         let ops = std::cell::Cell::new(0usize);
         let cycles = std::cell::Cell::new(0usize);
         let start = Instant::now();
@@ -197,11 +199,20 @@ fn prop_unit<U: Unit>(make: impl Fn(Rounding) -> U, fmt: Format, is_mul: bool) {
 /// Every special / boundary operand against every other, per unit, format and mode.
 fn specials_unit<U: Unit>(make: impl Fn(Rounding) -> U, fmt: Format, is_mul: bool) {
     let sp = Fmt::of(fmt).specials();
-    let pairs: Vec<(u64, u64)> = sp.iter().flat_map(|&a| sp.iter().map(move |&b| (a, b))).collect();
+    let pairs: Vec<(u64, u64)> = sp
+        .iter()
+        .flat_map(|&a| sp.iter().map(move |&b| (a, b)))
+        .collect();
     for r in MODES {
         let mut uut = make(r);
         let n = check(&mut uut, fmt, is_mul, r, &pairs).unwrap_or_else(|e| panic!("{}", e));
-        println!("{} {} {:?}: {} special operations ok", if is_mul { "FpMul" } else { "FpAdd" }, fmt, r, n);
+        println!(
+            "{} {} {:?}: {} special operations ok",
+            if is_mul { "FpMul" } else { "FpAdd" },
+            fmt,
+            r,
+            n
+        );
     }
 }
 
@@ -211,12 +222,32 @@ fn specials_unit<U: Unit>(make: impl Fn(Rounding) -> U, fmt: Format, is_mul: boo
 fn testbench_detects_mismatch() {
     let t = Fmt::of(Format::BINARY32);
     let mut runner = TestRunner::deterministic();
-    let pairs = prop::collection::vec(add_pair(t), 200).new_tree(&mut runner).unwrap().current();
+    let pairs = prop::collection::vec(add_pair(t), 200)
+        .new_tree(&mut runner)
+        .unwrap()
+        .current();
     let mut uut = b32::fp_add_top(Rounding::NearestEven);
-    assert!(check(&mut uut, Format::BINARY32, false, Rounding::TowardPositive, &pairs).is_err());
-    let pairs = prop::collection::vec(mul_pair(t), 200).new_tree(&mut runner).unwrap().current();
+    assert!(check(
+        &mut uut,
+        Format::BINARY32,
+        false,
+        Rounding::TowardPositive,
+        &pairs
+    )
+    .is_err());
+    let pairs = prop::collection::vec(mul_pair(t), 200)
+        .new_tree(&mut runner)
+        .unwrap()
+        .current();
     let mut uut = b32::fp_mul_top(Rounding::NearestEven);
-    assert!(check(&mut uut, Format::BINARY32, true, Rounding::TowardPositive, &pairs).is_err());
+    assert!(check(
+        &mut uut,
+        Format::BINARY32,
+        true,
+        Rounding::TowardPositive,
+        &pairs
+    )
+    .is_err());
 }
 
 #[test]
@@ -252,10 +283,25 @@ fn specials_all_units() {
 fn vcd_unit<U: Unit>(mut uut: U, name: &str, fmt: Format, ops: &[(u64, u64, bool)]) {
     let outs = run_vcd(&mut uut, ops, name, name);
     let is_mul = name.starts_with("fp_mul");
-    let op = |sub| if is_mul { Op::Mul } else if sub { Op::Sub } else { Op::Add };
-    let want: Vec<u64> = ops.iter().map(|&(a, b, sub)| golden(fmt, op(sub), Rounding::TowardPositive, a, b)).collect();
+    let op = |sub| {
+        if is_mul {
+            Op::Mul
+        } else if sub {
+            Op::Sub
+        } else {
+            Op::Add
+        }
+    };
+    let want: Vec<u64> = ops
+        .iter()
+        .map(|&(a, b, sub)| golden(fmt, op(sub), Rounding::TowardPositive, a, b))
+        .collect();
     assert_eq!(outs, want, "{name}");
-    assert_eq!(vcd_outputs(&vcd_path(name), name, "valid_out", "y"), want, "{name}.vcd: y at valid_out");
+    assert_eq!(
+        vcd_outputs(&vcd_path(name), name, "valid_out", "y"),
+        want,
+        "{name}.vcd: y at valid_out"
+    );
 }
 
 #[test]
@@ -270,15 +316,34 @@ fn vcd_traces() {
         (0x3f80_0001, 0x3f80_0000, true),
     ];
     let mul_ops: Vec<_> = ops.iter().map(|&(a, b, _)| (a, b, false)).collect();
-    vcd_unit(b32::fp_mul_top(Rounding::TowardPositive), "fp_mul_b32", Format::BINARY32, &mul_ops);
-    vcd_unit(b32::fp_add_top(Rounding::TowardPositive), "fp_add_b32", Format::BINARY32, &ops);
+    vcd_unit(
+        b32::fp_mul_top(Rounding::TowardPositive),
+        "fp_mul_b32",
+        Format::BINARY32,
+        &mul_ops,
+    );
+    vcd_unit(
+        b32::fp_add_top(Rounding::TowardPositive),
+        "fp_add_b32",
+        Format::BINARY32,
+        &ops,
+    );
     let h = |x: u64| x >> 8; // the e8m15 word is the top 24 bits of the binary32 word
     let ops15: Vec<_> = ops.iter().map(|&(a, b, s)| (h(a), h(b), s)).collect();
     let mul15: Vec<_> = ops15.iter().map(|&(a, b, _)| (a, b, false)).collect();
-    vcd_unit(e8m15::fp_mul_top(Rounding::TowardPositive), "fp_mul_e8m15", Format::REDUCED, &mul15);
-    vcd_unit(e8m15::fp_add_top(Rounding::TowardPositive), "fp_add_e8m15", Format::REDUCED, &ops15);
+    vcd_unit(
+        e8m15::fp_mul_top(Rounding::TowardPositive),
+        "fp_mul_e8m15",
+        Format::REDUCED,
+        &mul15,
+    );
+    vcd_unit(
+        e8m15::fp_add_top(Rounding::TowardPositive),
+        "fp_add_e8m15",
+        Format::REDUCED,
+        &ops15,
+    );
 }
-
 
 /// Runs `ops` (operand, sel) through a constant multiplier one per clock and returns the
 /// mismatches against `golden` (its result for each op), as messages.
@@ -314,9 +379,15 @@ fn scale_mismatches<U: Block>(
 /// pattern, subnormals, values whose product lands near 2^emin), each with both `sel`s.
 fn scale_ops(t: Fmt) -> Vec<(u64, bool)> {
     let mut runner = TestRunner::deterministic();
-    let near_min = (any::<bool>(), 0..(1u64 << t.f), 1u64..40).prop_map(move |(s, f, e)| t.pack(s, e, f));
+    let near_min =
+        (any::<bool>(), 0..(1u64 << t.f), 1u64..40).prop_map(move |(s, f, e)| t.pack(s, e, f));
     let mut xs = t.specials();
-    xs.extend(prop::collection::vec(prop_oneof![operand(t), near_min], 2000).new_tree(&mut runner).unwrap().current());
+    xs.extend(
+        prop::collection::vec(prop_oneof![operand(t), near_min], 2000)
+            .new_tree(&mut runner)
+            .unwrap()
+            .current(),
+    );
     xs.iter().flat_map(|&a| [(a, false), (a, true)]).collect()
 }
 
@@ -327,7 +398,8 @@ macro_rules! scale_test {
         #[test]
         fn $name() {
             let fmt = $fmt;
-            let cert = collision_chip::golden::certificate::Certificate::new(fmt, Rounding::NearestEven);
+            let cert =
+                collision_chip::golden::certificate::Certificate::new(fmt, Rounding::NearestEven);
             let ops = scale_ops(Fmt::of(fmt));
             let pairs = [cert.c_e, cert.c_z, [cert.c_s, cert.c_s]];
             for (i, c) in pairs.iter().enumerate() {
@@ -337,7 +409,9 @@ macro_rules! scale_test {
                 uut.sel.connect();
                 uut.connect_all();
                 let golden = |c: [collision_chip::format::ScaleConst; 2]| {
-                    move |a: u64, sel: bool| fmt.to_bits(fmt.scale_up(fmt.from_bits(a), c[sel as usize]))
+                    move |a: u64, sel: bool| {
+                        fmt.to_bits(fmt.scale_up(fmt.from_bits(a), c[sel as usize]))
+                    }
                 };
                 let mut run = |g: &dyn Fn(u64, bool) -> u64| {
                     scale_mismatches(
@@ -353,12 +427,23 @@ macro_rules! scale_test {
                     )
                 };
                 let bad = run(&golden(*c));
-                assert!(bad.is_empty(), "{fmt} constants {c:?}: {} mismatches, first {:?}", bad.len(), &bad[..bad.len().min(5)]);
+                assert!(
+                    bad.is_empty(),
+                    "{fmt} constants {c:?}: {} mismatches, first {:?}",
+                    bad.len(),
+                    &bad[..bad.len().min(5)]
+                );
                 if c[0] != c[1] {
-                    assert!(!run(&golden([c[1], c[0]])).is_empty(), "pair {i}: a swapped constant went unnoticed");
+                    assert!(
+                        !run(&golden([c[1], c[0]])).is_empty(),
+                        "pair {i}: a swapped constant went unnoticed"
+                    );
                 }
             }
-            println!("FpScale {fmt}: {} operations per constant pair ok", ops.len());
+            println!(
+                "FpScale {fmt}: {} operations per constant pair ok",
+                ops.len()
+            );
         }
     };
 }

@@ -12,9 +12,9 @@
 //! in tb/rtl_chip.rs.
 
 use collision_chip::chip::layout::Dst;
+use collision_chip::chip::rtl::PAIR_BUF;
 use collision_chip::cycle::memory_port::MemPort;
 use collision_chip::rtl::e8m15::{MemoryPort, CHIP_WORD_BITS};
-use collision_chip::chip::rtl::PAIR_BUF;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use rust_hdl::prelude::*;
@@ -30,7 +30,9 @@ type Word = Bits<CHIP_WORD_BITS>;
 fn word(addr: u32) -> Word {
     let mut w = Word::default();
     for i in 0..24 {
-        w = w.replace_bit(i, (addr >> i) & 1 == 1).replace_bit(150 + i, (addr >> i) & 1 == 0);
+        w = w
+            .replace_bit(i, (addr >> i) & 1 == 1)
+            .replace_bit(150 + i, (addr >> i) & 1 == 0);
     }
     w
 }
@@ -42,7 +44,11 @@ fn addr_of<const B: usize>(w: Bits<B>) -> Option<u32> {
     if a == 0 && b == 0 {
         return None;
     }
-    assert_eq!(a ^ b, 0xff_ffff, "a node word that is no memory word: {a:#x} {b:#x}");
+    assert_eq!(
+        a ^ b,
+        0xff_ffff,
+        "a node word that is no memory word: {a:#x} {b:#x}"
+    );
     Some(a)
 }
 
@@ -150,7 +156,10 @@ fn run(seed: u64, cycles: u64, cov: &mut Coverage) {
             && rng.random_bool(0.5);
         let ready = rng.random_bool(0.7);
         let resp = m.mem.front().is_some_and(|&(_, t)| t <= now) && rng.random_bool(0.8);
-        let mut entry: u128 = ids[0] as u128 | (ids[1] as u128) << 16 | (ids[2] as u128) << 33 | (ids[3] as u128) << 49;
+        let mut entry: u128 = ids[0] as u128
+            | (ids[1] as u128) << 16
+            | (ids[2] as u128) << 33
+            | (ids[3] as u128) << 49;
         if n == 2 {
             entry |= 1 << 66;
         }
@@ -167,10 +176,17 @@ fn run(seed: u64, cycles: u64, cov: &mut Coverage) {
         uut.cur_fb.next = fb;
         uut.mem_req_ready.next = ready;
         uut.mem_resp_valid.next = resp;
-        uut.mem_resp_data.next = if resp { word(m.mem[0].0) } else { Word::default() };
+        uut.mem_resp_data.next = if resp {
+            word(m.mem[0].0)
+        } else {
+            Word::default()
+        };
         settle(&mut uut);
         // ---- the model's cycle: MemPort decides who may ask
-        let node = m.to_ask.front().filter(|f| go && (m.pf_on || f.2 % 32 == m.seq_head % 32));
+        let node = m
+            .to_ask
+            .front()
+            .filter(|f| go && (m.pf_on || f.2 % 32 == m.seq_head % 32));
         let req = if need_ta && m.port.free(Dst::TriA) {
             Some((Dst::TriA, leaf.0))
         } else if need_tb && m.port.free(Dst::TriB) {
@@ -181,17 +197,31 @@ fn run(seed: u64, cycles: u64, cov: &mut Coverage) {
         if m.port.len() == max as usize {
             cov.at_max += 1;
         }
-        if (need_ta && !m.port.free(Dst::TriA) && m.port.len() < max as usize) || (need_tb && !m.port.free(Dst::TriB) && m.port.len() < max as usize) {
+        if (need_ta && !m.port.free(Dst::TriA) && m.port.len() < max as usize)
+            || (need_tb && !m.port.free(Dst::TriB) && m.port.len() < max as usize)
+        {
             cov.tri_blocked += 1;
         }
         let addr = |(d, id): (Dst, u32)| (m.base[d as usize] + id) & 0xff_ffff;
-        assert_eq!(uut.mem_req_valid.val(), req.is_some(), "{ctx}: mem_req_valid, model {req:?}");
+        assert_eq!(
+            uut.mem_req_valid.val(),
+            req.is_some(),
+            "{ctx}: mem_req_valid, model {req:?}"
+        );
         if let Some(r) = req {
             assert_eq!(uut.req_dst.val().to_u64(), r.0 as u64, "{ctx}: req_dst");
-            assert_eq!(uut.mem_req_addr.val().to_u64() as u32, addr(r), "{ctx}: mem_req_addr of {r:?}");
+            assert_eq!(
+                uut.mem_req_addr.val().to_u64() as u32,
+                addr(r),
+                "{ctx}: mem_req_addr of {r:?}"
+            );
         }
         assert_eq!(uut.accept.val(), req.is_some() && ready, "{ctx}: accept");
-        assert_eq!(uut.outstanding.val(), !m.port.is_empty(), "{ctx}: outstanding");
+        assert_eq!(
+            uut.outstanding.val(),
+            !m.port.is_empty(),
+            "{ctx}: outstanding"
+        );
         assert_eq!(uut.resp.val(), resp, "{ctx}: resp");
         let answered = if resp { m.port.respond() } else { None };
         if let Some((d, id)) = answered {
@@ -204,12 +234,23 @@ fn run(seed: u64, cycles: u64, cov: &mut Coverage) {
         }
         assert_eq!(uut.wa_empty.val(), m.words[0].is_empty(), "{ctx}: wa_empty");
         assert_eq!(uut.wb_empty.val(), m.words[1].is_empty(), "{ctx}: wb_empty");
-        for (k, (f, got)) in [(fa, uut.na_in.val()), (fb, uut.nb_in.val())].into_iter().enumerate() {
+        for (k, (f, got)) in [(fa, uut.na_in.val()), (fb, uut.nb_in.val())]
+            .into_iter()
+            .enumerate()
+        {
             if f && m.words[k].is_empty() {
                 continue; // the pair waits for its word: na_in / nb_in unused
             }
-            let want = if f { m.words[k].front().copied() } else { m.last[k] };
-            assert_eq!(addr_of(got), want, "{ctx}: the DOP unit's word {k} (fetched: {f})");
+            let want = if f {
+                m.words[k].front().copied()
+            } else {
+                m.last[k]
+            };
+            assert_eq!(
+                addr_of(got),
+                want,
+                "{ctx}: the DOP unit's word {k} (fetched: {f})"
+            );
         }
         // ---- the rising edge
         uut.clock.next = Clock { clk: false };
@@ -218,7 +259,11 @@ fn run(seed: u64, cycles: u64, cov: &mut Coverage) {
         settle(&mut uut);
         if let Some((d, id)) = answered {
             let (a, _) = m.mem.pop_front().unwrap();
-            assert_eq!(a, addr((d, id)), "{ctx}: the memory answers the oldest request");
+            assert_eq!(
+                a,
+                addr((d, id)),
+                "{ctx}: the memory answers the oldest request"
+            );
             cov.responses += 1;
             if !d.is_tri() {
                 m.words[d as usize].push_back(a);
@@ -249,7 +294,9 @@ fn run(seed: u64, cycles: u64, cov: &mut Coverage) {
                         m.to_ask.push_back((d, ids[2 * p + k], m.seq));
                     }
                 }
-                m.ahead.push_back(Ahead { fetch: [fetch[2 * p], fetch[2 * p + 1]] });
+                m.ahead.push_back(Ahead {
+                    fetch: [fetch[2 * p], fetch[2 * p + 1]],
+                });
                 m.seq += 1;
             }
         }
@@ -274,5 +321,12 @@ fn memory_port_matches_the_cycle_models_port_clock_by_clock() {
     // the runs reached what the port does: every destination, full and blocked requests,
     // responses, issues and starts
     assert!(cov.accepts.iter().all(|&a| a > 200), "{cov:?}");
-    assert!(cov.responses > 1000 && cov.issues > 1000 && cov.at_max > 500 && cov.tri_blocked > 100 && cov.clears > 10, "{cov:?}");
+    assert!(
+        cov.responses > 1000
+            && cov.issues > 1000
+            && cov.at_max > 500
+            && cov.tri_blocked > 100
+            && cov.clears > 10,
+        "{cov:?}"
+    );
 }

@@ -54,7 +54,11 @@ fn result_port_shows_hits_and_uncertain_pairs_and_drops_separate_ones() {
             assert_eq!(uut.res_tag.val().to_u64() as u32, tag, "{ctx}: res_tag");
             assert_eq!(uut.res_uncertain.val(), unc, "{ctx}: res_uncertain");
         }
-        assert_eq!(uut.out_ready.val(), ready || !(hit || unc), "{ctx}: out_ready");
+        assert_eq!(
+            uut.out_ready.val(),
+            ready || !(hit || unc),
+            "{ctx}: out_ready"
+        );
         assert_eq!(uut.give.val(), give, "{ctx}: give");
         assert_eq!(uut.sure_hit.val(), valid && hit, "{ctx}: sure_hit");
         assert_eq!(uut.open.val().to_u64(), open, "{ctx}: open");
@@ -70,5 +74,8 @@ fn result_port_shows_hits_and_uncertain_pairs_and_drops_separate_ones() {
         settle(&mut uut);
         open = open + take as u64 - give as u64;
     }
-    assert!(shown.iter().all(|&s| s > 200) && dropped > 200 && held > 200, "{shown:?} {dropped} {held}");
+    assert!(
+        shown.iter().all(|&s| s > 200) && dropped > 200 && held > 200,
+        "{shown:?} {dropped} {held}"
+    );
 }

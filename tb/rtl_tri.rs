@@ -17,13 +17,15 @@
 use collision_chip::chip::config::ChipConfig;
 use collision_chip::dop::tree::Tri;
 use collision_chip::format::{Format, Rounding};
-use collision_chip::hard_cases as hc;
 use collision_chip::golden::memory::TriWord;
-use collision_chip::pose::Pose;
-use collision_chip::query::Chip;
 use collision_chip::golden::tri_unit::tri_unit;
 use collision_chip::golden::tri_unit::TriResult;
-use collision_chip::harness::tri_io::{tri_unit_directions, tri_unit_setup_words, LeafIn, TCheckIn, TCheckOut};
+use collision_chip::hard_cases as hc;
+use collision_chip::harness::tri_io::{
+    tri_unit_directions, tri_unit_setup_words, LeafIn, TCheckIn, TCheckOut,
+};
+use collision_chip::pose::Pose;
+use collision_chip::query::Chip;
 use collision_chip::rtl::{b32, e8m15};
 use nalgebra::Point3;
 use proptest::prelude::*;
@@ -87,17 +89,42 @@ impl_tcheck!(e8m15::TCheck);
 
 /// Runs `f` on a thread with a stack big enough for a T.CHECK (built on the stack).
 fn big_stack<T: Send + 'static>(f: impl FnOnce() -> T + Send + 'static) -> T {
-    std::thread::Builder::new().stack_size(1 << 30).spawn(f).unwrap().join().unwrap()
+    std::thread::Builder::new()
+        .stack_size(1 << 30)
+        .spawn(f)
+        .unwrap()
+        .join()
+        .unwrap()
 }
 
 /// The T.CHECK cases of a triangle pair set: both directions of every pair.
-fn cases(f: Format, r: Rounding, pairs: &[(TriWord, TriWord, collision_chip::golden::host::HostSetup)]) -> Vec<(TCheckIn, TCheckOut)> {
-    pairs.iter().flat_map(|(a, b, s)| tri_unit_directions(f, r, a, b, s)).collect()
+fn cases(
+    f: Format,
+    r: Rounding,
+    pairs: &[(TriWord, TriWord, collision_chip::golden::host::HostSetup)],
+) -> Vec<(TCheckIn, TCheckOut)> {
+    pairs
+        .iter()
+        .flat_map(|(a, b, s)| tri_unit_directions(f, r, a, b, s))
+        .collect()
 }
 
 /// Triangle pairs of a scene: every (a, b) of the two objects under the pose.
-fn scene_pairs(f: Format, a: &[Tri], b: &[Tri], pose: &Pose) -> Vec<(TriWord, TriWord, collision_chip::golden::host::HostSetup)> {
-    let chip = Chip::new(a, b, ChipConfig { format: f.into(), ..Default::default() }).unwrap();
+fn scene_pairs(
+    f: Format,
+    a: &[Tri],
+    b: &[Tri],
+    pose: &Pose,
+) -> Vec<(TriWord, TriWord, collision_chip::golden::host::HostSetup)> {
+    let chip = Chip::new(
+        a,
+        b,
+        ChipConfig {
+            format: f.into(),
+            ..Default::default()
+        },
+    )
+    .unwrap();
     let setup = chip.setup(pose);
     let mut out = vec![];
     for ta in chip.a.tris() {
@@ -110,7 +137,11 @@ fn scene_pairs(f: Format, a: &[Tri], b: &[Tri], pose: &Pose) -> Vec<(TriWord, Tr
 
 /// Runs `cases` through a fresh T.CHECK of the format with `rounding`; returns the
 /// mismatches (described) and the number of cases.
-fn mismatches(f: Format, rounding: Rounding, cases: Vec<(TCheckIn, TCheckOut)>) -> (Vec<String>, usize) {
+fn mismatches(
+    f: Format,
+    rounding: Rounding,
+    cases: Vec<(TCheckIn, TCheckOut)>,
+) -> (Vec<String>, usize) {
     big_stack(move || {
         let ins: Vec<TCheckIn> = cases.iter().map(|c| c.0).collect();
         let outs = if f == Format::BINARY32 {
@@ -125,7 +156,9 @@ fn mismatches(f: Format, rounding: Rounding, cases: Vec<(TCheckIn, TCheckOut)>) 
             .zip(&outs)
             .enumerate()
             .filter(|(_, ((_, want), got))| want != *got)
-            .map(|(i, ((x, want), got))| format!("case {i}: {x:?}\n  golden {want:?}\n  rtl    {got:?}"))
+            .map(|(i, ((x, want), got))| {
+                format!("case {i}: {x:?}\n  golden {want:?}\n  rtl    {got:?}")
+            })
             .collect();
         (bad, cases.len())
     })
@@ -134,7 +167,12 @@ fn mismatches(f: Format, rounding: Rounding, cases: Vec<(TCheckIn, TCheckOut)>) 
 /// Fails with the first mismatches if there are any; `unit` names what was counted.
 fn assert_none(what: &str, unit: &str, (bad, n): (Vec<String>, usize)) {
     assert!(n > 0);
-    assert!(bad.is_empty(), "{what}: {} problems in {n} {unit}; first:\n{}", bad.len(), bad[..bad.len().min(5)].join("\n"));
+    assert!(
+        bad.is_empty(),
+        "{what}: {} problems in {n} {unit}; first:\n{}",
+        bad.len(),
+        bad[..bad.len().min(5)].join("\n")
+    );
     eprintln!("{what}: {n} {unit} equal to the golden model");
 }
 
@@ -148,27 +186,55 @@ fn catalogue_cases(f: Format) -> Vec<(TCheckIn, TCheckOut)> {
 
 #[test]
 fn tcheck_catalogue_binary32() {
-    assert_none("catalogue binary32", "T.CHECKs", mismatches(Format::BINARY32, Rounding::NearestEven, catalogue_cases(Format::BINARY32)));
+    assert_none(
+        "catalogue binary32",
+        "T.CHECKs",
+        mismatches(
+            Format::BINARY32,
+            Rounding::NearestEven,
+            catalogue_cases(Format::BINARY32),
+        ),
+    );
 }
 
 #[test]
 fn tcheck_catalogue_e8m15() {
-    assert_none("catalogue e8m15", "T.CHECKs", mismatches(Format::REDUCED, Rounding::NearestEven, catalogue_cases(Format::REDUCED)));
+    assert_none(
+        "catalogue e8m15",
+        "T.CHECKs",
+        mismatches(
+            Format::REDUCED,
+            Rounding::NearestEven,
+            catalogue_cases(Format::REDUCED),
+        ),
+    );
 }
 
 /// Samples `n` values of `strat` (deterministic seed).
 fn sample<T: std::fmt::Debug>(strat: impl Strategy<Value = T>, n: usize) -> Vec<T> {
-    let mut runner = TestRunner::new_with_rng(Config::default(), proptest::test_runner::TestRng::deterministic_rng(proptest::test_runner::RngAlgorithm::ChaCha));
-    (0..n).map(|_| strat.new_tree(&mut runner).unwrap().current()).collect()
+    let mut runner = TestRunner::new_with_rng(
+        Config::default(),
+        proptest::test_runner::TestRng::deterministic_rng(
+            proptest::test_runner::RngAlgorithm::ChaCha,
+        ),
+    );
+    (0..n)
+        .map(|_| strat.new_tree(&mut runner).unwrap().current())
+        .collect()
 }
 
 fn tri() -> impl Strategy<Value = Tri> {
-    prop::array::uniform3(prop::array::uniform3(-1.0..1.0f64)).prop_map(|t| t.map(|p| Point3::new(p[0], p[1], p[2])))
+    prop::array::uniform3(prop::array::uniform3(-1.0..1.0f64))
+        .prop_map(|t| t.map(|p| Point3::new(p[0], p[1], p[2])))
 }
 
 /// General rotations, translations up to 0.3: triangles of [-1, 1]^3 often cross.
 fn near_pose() -> impl Strategy<Value = Pose> {
-    (prop::array::uniform3(-180.0..180.0f64), prop::array::uniform3(-0.3..0.3f64)).prop_map(|(r, t)| Pose { rot_deg: r, t })
+    (
+        prop::array::uniform3(-180.0..180.0f64),
+        prop::array::uniform3(-0.3..0.3f64),
+    )
+        .prop_map(|(r, t)| Pose { rot_deg: r, t })
 }
 
 /// Generated T.CHECK cases: 24 hard cases of every family (`any_case`, all triangle pairs
@@ -180,7 +246,10 @@ fn generated_cases(f: Format) -> Vec<(TCheckIn, TCheckOut)> {
     for case in sample(any_case(), 24) {
         pairs.extend(scene_pairs(f, &case.a, &case.b, &case.pose));
     }
-    for (a, b, pose) in sample((tri(), tri(), general_pose()), 20).into_iter().chain(sample((tri(), tri(), near_pose()), 40)) {
+    for (a, b, pose) in sample((tri(), tri(), general_pose()), 20)
+        .into_iter()
+        .chain(sample((tri(), tri(), near_pose()), 40))
+    {
         pairs.extend(scene_pairs(f, &[a], &[b], &pose));
     }
     cases(f, Rounding::NearestEven, &pairs)
@@ -190,7 +259,13 @@ fn generated_cases(f: Format) -> Vec<(TCheckIn, TCheckOut)> {
 fn verdicts(cases: &[(TCheckIn, TCheckOut)]) -> [usize; 3] {
     let mut n = [0; 3];
     for (_, o) in cases {
-        n[if o.hit { 0 } else if o.miss { 1 } else { 2 }] += 1;
+        n[if o.hit {
+            0
+        } else if o.miss {
+            1
+        } else {
+            2
+        }] += 1;
     }
     n
 }
@@ -201,7 +276,11 @@ fn tcheck_generated_binary32() {
     let v = verdicts(&cases);
     eprintln!("binary32 verdicts hit/miss/unknown: {v:?}");
     assert!(v.iter().all(|&n| n > 0), "{v:?}");
-    assert_none("generated binary32", "T.CHECKs", mismatches(Format::BINARY32, Rounding::NearestEven, cases));
+    assert_none(
+        "generated binary32",
+        "T.CHECKs",
+        mismatches(Format::BINARY32, Rounding::NearestEven, cases),
+    );
 }
 
 #[test]
@@ -210,15 +289,26 @@ fn tcheck_generated_e8m15() {
     let v = verdicts(&cases);
     eprintln!("e8m15 verdicts hit/miss/unknown: {v:?}");
     assert!(v.iter().all(|&n| n > 0), "{v:?}");
-    assert_none("generated e8m15", "T.CHECKs", mismatches(Format::REDUCED, Rounding::NearestEven, cases));
+    assert_none(
+        "generated e8m15",
+        "T.CHECKs",
+        mismatches(Format::REDUCED, Rounding::NearestEven, cases),
+    );
 }
 
 /// The comparison can fail: a T.CHECK rounding toward +inf differs from the nearest-even
 /// golden model on the catalogue.
 #[test]
 fn tcheck_wrong_rounding_is_caught() {
-    let (bad, n) = mismatches(Format::BINARY32, Rounding::TowardPositive, catalogue_cases(Format::BINARY32));
-    assert!(!bad.is_empty(), "a toward-+inf T.CHECK matched the nearest-even golden model on all {n} cases");
+    let (bad, n) = mismatches(
+        Format::BINARY32,
+        Rounding::TowardPositive,
+        catalogue_cases(Format::BINARY32),
+    );
+    assert!(
+        !bad.is_empty(),
+        "a toward-+inf T.CHECK matched the nearest-even golden model on all {n} cases"
+    );
 }
 
 // ---------------------------------------------------------------------------------------
@@ -291,8 +381,14 @@ macro_rules! impl_tri_unit {
                 self.in_ready.val()
             }
             fn result(&self) -> (bool, (u32, TriResult)) {
-                let r = TriResult { hit: self.out_hit.val(), uncertain: self.out_uncertain.val() };
-                (self.out_valid.val(), (self.out_tag.val().to_u64() as u32, r))
+                let r = TriResult {
+                    hit: self.out_hit.val(),
+                    uncertain: self.out_uncertain.val(),
+                };
+                (
+                    self.out_valid.val(),
+                    (self.out_tag.val().to_u64() as u32, r),
+                )
             }
             fn clock(&mut self, high: bool) {
                 self.clock.next = Clock { clk: high };
@@ -303,8 +399,16 @@ macro_rules! impl_tri_unit {
 
 impl_tri_unit!(b32::TriUnit, |_| b32::TriUnit::LATENCY, |_| 1);
 impl_tri_unit!(e8m15::TriUnit, |_| e8m15::TriUnit::LATENCY, |_| 1);
-impl_tri_unit!(b32::TriUnitFold, b32::TriUnitFold::latency, b32::TriUnitFold::interval);
-impl_tri_unit!(e8m15::TriUnitFold, e8m15::TriUnitFold::latency, e8m15::TriUnitFold::interval);
+impl_tri_unit!(
+    b32::TriUnitFold,
+    b32::TriUnitFold::latency,
+    b32::TriUnitFold::interval
+);
+impl_tri_unit!(
+    e8m15::TriUnitFold,
+    e8m15::TriUnitFold::latency,
+    e8m15::TriUnitFold::interval
+);
 
 /// TRI_UNIT work: setup writes and pairs in the order the host issues them (the frame
 /// registers are read when a pair is taken, so a new pose's setup may follow pairs still
@@ -336,7 +440,8 @@ struct TriRun {
 /// handshakes are sampled before each rising edge.
 fn drive<U: TriUnitSim>(uut: &mut U, job: &TriJob, reader: impl Fn(usize) -> bool) -> TriRun {
     let blank = LeafIn::default();
-    let (mut step, mut tag, mut results, mut first_in, mut first_latency, mut stalled, mut taken) = (0, 0u32, vec![], None, None, false, vec![]);
+    let (mut step, mut tag, mut results, mut first_in, mut first_latency, mut stalled, mut taken) =
+        (0, 0u32, vec![], None, None, false, vec![]);
     let limit = job.steps.len() * 4 * uut.interval() + 4 * uut.latency() + 1000;
     for cycle in 0..limit {
         if results.len() == job.golden.len() && step == job.steps.len() {
@@ -372,12 +477,20 @@ fn drive<U: TriUnitSim>(uut: &mut U, job: &TriJob, reader: impl Fn(usize) -> boo
             settle(uut);
         }
     }
-    TriRun { results, first_latency, stalled, taken }
+    TriRun {
+        results,
+        first_latency,
+        stalled,
+        taken,
+    }
 }
 
 /// The host's steps for triangle pairs: a setup write for every frame register whose value
 /// changes with the pair's pose, then the pair.
-fn tri_job(f: Format, triples: &[(TriWord, TriWord, collision_chip::golden::host::HostSetup)]) -> TriJob {
+fn tri_job(
+    f: Format,
+    triples: &[(TriWord, TriWord, collision_chip::golden::host::HostSetup)],
+) -> TriJob {
     let mut regs = std::collections::HashMap::new();
     let mut job = TriJob::default();
     for (a, b, s) in triples {
@@ -386,7 +499,8 @@ fn tri_job(f: Format, triples: &[(TriWord, TriWord, collision_chip::golden::host
                 job.steps.push(Step::Load(addr, data));
             }
         }
-        job.steps.push(Step::Pair(LeafIn::of(f, a), LeafIn::of(f, b)));
+        job.steps
+            .push(Step::Pair(LeafIn::of(f, a), LeafIn::of(f, b)));
         job.golden.push(tri_unit(f, Rounding::NearestEven, a, b, s));
     }
     job
@@ -411,24 +525,43 @@ fn tri_unit_mismatches(f: Format, job: TriJob) -> (Vec<String>, usize) {
 fn run_mismatches<U: TriUnitSim>(uut: &mut U, job: &TriJob) -> Vec<String> {
     let run = drive(uut, job, |_| true);
     let mut bad = vec![];
-    let want: Vec<(u32, TriResult)> = job.golden.iter().enumerate().map(|(i, &r)| (i as u32, r)).collect();
+    let want: Vec<(u32, TriResult)> = job
+        .golden
+        .iter()
+        .enumerate()
+        .map(|(i, &r)| (i as u32, r))
+        .collect();
     for (i, w) in want.iter().enumerate() {
         if run.results.get(i) != Some(w) {
-            bad.push(format!("pair {i}: golden {w:?}, rtl {:?}", run.results.get(i)));
+            bad.push(format!(
+                "pair {i}: golden {w:?}, rtl {:?}",
+                run.results.get(i)
+            ));
         }
     }
     if run.results.len() != want.len() {
-        bad.push(format!("{} results for {} pairs", run.results.len(), want.len()));
+        bad.push(format!(
+            "{} results for {} pairs",
+            run.results.len(),
+            want.len()
+        ));
     }
     if run.first_latency != Some(uut.latency()) {
-        bad.push(format!("first result {:?} clocks after the first pair, not {}", run.first_latency, uut.latency()));
+        bad.push(format!(
+            "first result {:?} clocks after the first pair, not {}",
+            run.first_latency,
+            uut.latency()
+        ));
     }
     let ii = uut.interval();
     if ii == 1 && run.stalled {
         bad.push("in_ready fell with a reader always ready".into());
     }
     if let Some(w) = run.taken.windows(2).find(|w| (w[1] - w[0]) % ii != 0) {
-        bad.push(format!("pairs taken at cycles {} and {}, not a multiple of {ii} apart", w[0], w[1]));
+        bad.push(format!(
+            "pairs taken at cycles {} and {}, not a multiple of {ii} apart",
+            w[0], w[1]
+        ));
     }
     bad
 }
@@ -438,7 +571,9 @@ fn run_mismatches<U: TriUnitSim>(uut: &mut U, job: &TriJob) -> Vec<String> {
 /// under its own pose (the setup changes between pairs in flight). (rust-hdl runs TRI_UNIT
 /// at about 5 clocks per second; the volume is T.CHECK's above, here and in the exported
 /// Verilog, and the chip's, in the cycle model and under Verilator.)
-fn catalogue_triples(f: Format) -> Vec<(TriWord, TriWord, collision_chip::golden::host::HostSetup)> {
+fn catalogue_triples(
+    f: Format,
+) -> Vec<(TriWord, TriWord, collision_chip::golden::host::HostSetup)> {
     let mut seen = [false; 4];
     let mut out = vec![];
     for case in hc::load_catalogue().unwrap() {
@@ -446,20 +581,37 @@ fn catalogue_triples(f: Format) -> Vec<(TriWord, TriWord, collision_chip::golden
         let mut new = false;
         for (a, b, s) in &triples {
             let r = tri_unit(f, Rounding::NearestEven, a, b, s);
-            let kind = if a.degenerate || b.degenerate { 3 } else if r.uncertain { 2 } else if r.hit { 0 } else { 1 };
+            let kind = if a.degenerate || b.degenerate {
+                3
+            } else if r.uncertain {
+                2
+            } else if r.hit {
+                0
+            } else {
+                1
+            };
             new |= !std::mem::replace(&mut seen[kind], true);
         }
         if new {
             out.extend(triples);
         }
     }
-    assert_eq!(seen, [true; 4], "the catalogue lacks a hit, a miss, an uncertain pair or a degenerate leaf");
+    assert_eq!(
+        seen, [true; 4],
+        "the catalogue lacks a hit, a miss, an uncertain pair or a degenerate leaf"
+    );
     out
 }
 
 /// Triangle pairs of a random soup pair (`na` x `nb` triangles of [-1, 1]^3) under a near pose.
-fn soup_triples(f: Format, na: usize, nb: usize) -> Vec<(TriWord, TriWord, collision_chip::golden::host::HostSetup)> {
-    let tris = sample(prop::collection::vec(tri(), na + nb), 1).pop().unwrap();
+fn soup_triples(
+    f: Format,
+    na: usize,
+    nb: usize,
+) -> Vec<(TriWord, TriWord, collision_chip::golden::host::HostSetup)> {
+    let tris = sample(prop::collection::vec(tri(), na + nb), 1)
+        .pop()
+        .unwrap();
     let pose = sample(near_pose(), 2).pop().unwrap();
     scene_pairs(f, &tris[..na], &tris[na..], &pose)
 }
@@ -472,7 +624,11 @@ fn tri_unit_e8m15() {
     let f = Format::REDUCED;
     let mut triples = catalogue_triples(f);
     triples.extend(soup_triples(f, 3, 4));
-    assert_none("TRI_UNIT e8m15", "pairs", tri_unit_mismatches(f, tri_job(f, &triples)));
+    assert_none(
+        "TRI_UNIT e8m15",
+        "pairs",
+        tri_unit_mismatches(f, tri_job(f, &triples)),
+    );
 }
 
 /// The folded TRI_UNIT (`TriUnitFold`, a pair every 16 clocks, both directions on one T.CHECK
@@ -482,14 +638,22 @@ fn tri_unit_e8m15() {
 /// pairs taken 16 clocks apart (or a multiple: a setup write can make a pair miss its slot).
 #[test]
 fn tri_unit_fold16_binary32() {
-    assert_none("folded TRI_UNIT (II 16) binary32", "pairs", tri_unit_fold16_mismatches(Format::BINARY32));
+    assert_none(
+        "folded TRI_UNIT (II 16) binary32",
+        "pairs",
+        tri_unit_fold16_mismatches(Format::BINARY32),
+    );
 }
 
 /// The same in e8m15 (`rtl::e8m15::TriUnitFold`, the TRI_UNIT of the chip
 /// `chip_e8m15_k6_fold16`): the generator's schedule on e8m15's units, bit for bit golden.
 #[test]
 fn tri_unit_fold16_e8m15() {
-    assert_none("folded TRI_UNIT (II 16) e8m15", "pairs", tri_unit_fold16_mismatches(Format::REDUCED));
+    assert_none(
+        "folded TRI_UNIT (II 16) e8m15",
+        "pairs",
+        tri_unit_fold16_mismatches(Format::REDUCED),
+    );
 }
 
 /// The hard cases and a 4 x 5 soup through the TRI_UNIT folded for a pair every 16 clocks
@@ -500,11 +664,19 @@ fn tri_unit_fold16_mismatches(f: Format) -> (Vec<String>, usize) {
     let job = tri_job(f, &triples);
     let n = job.golden.len();
     let bad = big_stack(move || {
-        let plan = collision_chip::fold::tri_unit_plan(16, collision_chip::fold::plan::Binding::Shared).unwrap();
+        let plan =
+            collision_chip::fold::tri_unit_plan(16, collision_chip::fold::plan::Binding::Shared)
+                .unwrap();
         if f == Format::BINARY32 {
-            run_mismatches(&mut b32::tri_unit_fold_top(plan, Rounding::NearestEven), &job)
+            run_mismatches(
+                &mut b32::tri_unit_fold_top(plan, Rounding::NearestEven),
+                &job,
+            )
         } else {
-            run_mismatches(&mut e8m15::tri_unit_fold_top(plan, Rounding::NearestEven), &job)
+            run_mismatches(
+                &mut e8m15::tri_unit_fold_top(plan, Rounding::NearestEven),
+                &job,
+            )
         }
     });
     (bad, n)
@@ -519,7 +691,12 @@ fn tri_unit_binary32_back_pressure_loses_nothing() {
     let f = Format::BINARY32;
     let mut triples = catalogue_triples(f);
     let soup = soup_triples(f, 10, 10);
-    triples.extend(soup.iter().cloned().cycle().take(b32::TriUnit::FIFO_DEPTH + 20));
+    triples.extend(
+        soup.iter()
+            .cloned()
+            .cycle()
+            .take(b32::TriUnit::FIFO_DEPTH + 20),
+    );
     let job = tri_job(f, &triples);
     let golden = job.golden.clone();
     let run = big_stack(move || {
@@ -527,7 +704,11 @@ fn tri_unit_binary32_back_pressure_loses_nothing() {
         drive(&mut uut, &job, |c| c >= 400 && c % 4 != 0)
     });
     assert!(run.stalled, "the FIFO never filled");
-    let want: Vec<(u32, TriResult)> = golden.iter().enumerate().map(|(i, &r)| (i as u32, r)).collect();
+    let want: Vec<(u32, TriResult)> = golden
+        .iter()
+        .enumerate()
+        .map(|(i, &r)| (i as u32, r))
+        .collect();
     assert_eq!(run.results.len(), want.len(), "results lost");
     assert_eq!(run.results, want);
 }
@@ -536,10 +717,18 @@ fn tri_unit_binary32_back_pressure_loses_nothing() {
 /// target/rtl-vcd/tcheck_b32.vcd, scopes named after the blocks (`tcheck.mb_0$3.p$2.mul`).
 #[test]
 fn tcheck_vcd_trace() {
-    let cases: Vec<(TCheckIn, TCheckOut)> = catalogue_cases(Format::BINARY32).into_iter().take(16).collect();
+    let cases: Vec<(TCheckIn, TCheckOut)> = catalogue_cases(Format::BINARY32)
+        .into_iter()
+        .take(16)
+        .collect();
     let outs = big_stack(move || {
         let ins: Vec<TCheckIn> = cases.iter().map(|c| c.0).collect();
-        let outs = run_vcd(&mut b32::tcheck_top(Rounding::NearestEven), &ins, "tcheck_b32", "tcheck");
+        let outs = run_vcd(
+            &mut b32::tcheck_top(Rounding::NearestEven),
+            &ins,
+            "tcheck_b32",
+            "tcheck",
+        );
         (outs, cases)
     });
     for (got, (_, want)) in outs.0.iter().zip(&outs.1) {

@@ -20,27 +20,59 @@ use proptest::prelude::*;
 
 fn memory() -> impl Strategy<Value = Memory> {
     prop_oneof![
-        (1u32..=6, 1u32..=3, prop::option::of(16u32..=1024)).prop_map(|(latency, interval, bus_bits)| Memory::Ideal(MemTiming { latency, interval, bus_bits })),
+        (1u32..=6, 1u32..=3, prop::option::of(16u32..=1024)).prop_map(
+            |(latency, interval, bus_bits)| Memory::Ideal(MemTiming {
+                latency,
+                interval,
+                bus_bits
+            })
+        ),
         Just(Memory::Ddr(Ddr::WSCG03)),
-        (1u32..=4, 6u32..=12, 5u32..=8, 0u32..=3, 0u32..=4, 0u32..=12).prop_map(|(banks, page, bus, burst, hit, miss)| {
-            let burst = 1 << burst;
-            Memory::Ddr(Ddr { banks, page_bytes: 1 << page, bus_bits: 1 << bus, burst, hit: burst + hit, miss: burst + hit + miss })
-        }),
+        (1u32..=4, 6u32..=12, 5u32..=8, 0u32..=3, 0u32..=4, 0u32..=12).prop_map(
+            |(banks, page, bus, burst, hit, miss)| {
+                let burst = 1 << burst;
+                Memory::Ddr(Ddr {
+                    banks,
+                    page_bytes: 1 << page,
+                    bus_bits: 1 << bus,
+                    burst,
+                    hit: burst + hit,
+                    miss: burst + hit + miss,
+                })
+            }
+        ),
     ]
 }
 
 fn stack_params() -> impl Strategy<Value = StackParams> {
-    (0u32..=4, 0u32..=8, prop::sample::select(vec![64u32, 256, 1024]), 1u32..=4, 1u32..=6, 1u32..=4, 1u32..=60).prop_map(
-        |(sram_latency, dotadd_stages, data_bus_bits, compare_latency, word_buffer, tri_interval, tri_latency)| StackParams {
-            sram_latency,
-            dotadd_stages,
-            data_bus_bits,
-            compare_latency,
-            word_buffer,
-            tri_interval,
-            tri_latency,
-        },
+    (
+        0u32..=4,
+        0u32..=8,
+        prop::sample::select(vec![64u32, 256, 1024]),
+        1u32..=4,
+        1u32..=6,
+        1u32..=4,
+        1u32..=60,
     )
+        .prop_map(
+            |(
+                sram_latency,
+                dotadd_stages,
+                data_bus_bits,
+                compare_latency,
+                word_buffer,
+                tri_interval,
+                tri_latency,
+            )| StackParams {
+                sram_latency,
+                dotadd_stages,
+                data_bus_bits,
+                compare_latency,
+                word_buffer,
+                tri_interval,
+                tri_latency,
+            },
+        )
 }
 
 proptest! {
@@ -92,8 +124,14 @@ proptest! {
 /// Two unit squares, one in the plane z = 0, one in y = 0 through it (two triangles each).
 fn squares() -> (Vec<[Point3<f64>; 3]>, Vec<[Point3<f64>; 3]>) {
     let p = Point3::new;
-    let flat = vec![[p(0., 0., 0.), p(1., 0., 0.), p(1., 1., 0.)], [p(0., 0., 0.), p(1., 1., 0.), p(0., 1., 0.)]];
-    let upright = vec![[p(0., 0.5, -0.5), p(1., 0.5, -0.5), p(1., 0.5, 0.5)], [p(0., 0.5, -0.5), p(1., 0.5, 0.5), p(0., 0.5, 0.5)]];
+    let flat = vec![
+        [p(0., 0., 0.), p(1., 0., 0.), p(1., 1., 0.)],
+        [p(0., 0., 0.), p(1., 1., 0.), p(0., 1., 0.)],
+    ];
+    let upright = vec![
+        [p(0., 0.5, -0.5), p(1., 0.5, -0.5), p(1., 0.5, 0.5)],
+        [p(0., 0.5, -0.5), p(1., 0.5, 0.5), p(0., 0.5, 0.5)],
+    ];
     (upright, flat)
 }
 
@@ -119,25 +157,64 @@ fn squares() -> (Vec<[Point3<f64>; 3]>, Vec<[Point3<f64>; 3]>) {
 fn small_lists_follow_the_hand_derived_timeline() {
     let (a, b) = squares();
     let chip = Chip::new(&a, &b, ChipKind::K6E8m15.config()).unwrap();
-    let p = Params { memory: Memory::Ideal(MemTiming { latency: 1, interval: 1, bus_bits: None }), ..Params::RTL };
+    let p = Params {
+        memory: Memory::Ideal(MemTiming {
+            latency: 1,
+            interval: 1,
+            bus_bits: None,
+        }),
+        ..Params::RTL
+    };
     let sp = StackParams::PAPER;
-    let rec = |t0, held, ready, first, next, len| ListRecord { t0, held, ready, first_compare: Some(first), next, len };
+    let rec = |t0, held, ready, first, next, len| ListRecord {
+        t0,
+        held,
+        ready,
+        first_compare: Some(first),
+        next,
+        len,
+    };
 
     let apart = Pose::new(0.0, 0.0, 0.0, 5.0, 0.0, 0.0);
     let run = run_query(&chip, &chip.setup(&apart), Mode::All, &p, &sp, MAX_CYCLES).unwrap();
     assert_eq!(run.lists, vec![rec(1, false, 17, 17, 20, 1)]);
     let s = run.stats;
-    assert_eq!((s.cycles, s.stall_list, s.stall_transform, s.compare, s.drain), (20, 1, 16, 1, 2));
+    assert_eq!(
+        (
+            s.cycles,
+            s.stall_list,
+            s.stall_transform,
+            s.compare,
+            s.drain
+        ),
+        (20, 1, 16, 1, 2)
+    );
     assert_eq!((s.transforms, s.spec_pairs, s.spec_used), (3, 1, 0));
     assert_eq!((s.cold_lists, s.cold_start), (1, 16));
     // the bound on a query's clocks stops WSCG'03's chip as it stops DATE'05's
     assert!(run_query(&chip, &chip.setup(&apart), Mode::All, &p, &sp, 20).is_ok());
-    let e = run_query(&chip, &chip.setup(&apart), Mode::All, &p, &sp, 19).err().unwrap();
+    let e = run_query(&chip, &chip.setup(&apart), Mode::All, &p, &sp, 19)
+        .err()
+        .unwrap();
     assert_eq!(e, "the query did not finish within 19 cycles");
 
     let touching = Pose::new(0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
-    let run = run_query(&chip, &chip.setup(&touching), Mode::All, &p, &sp, MAX_CYCLES).unwrap();
-    assert_eq!(run.lists[..2], [rec(1, false, 17, 17, 20, 1), rec(20, true, 23, 24, run.lists[1].next, 2)]);
+    let run = run_query(
+        &chip,
+        &chip.setup(&touching),
+        Mode::All,
+        &p,
+        &sp,
+        MAX_CYCLES,
+    )
+    .unwrap();
+    assert_eq!(
+        run.lists[..2],
+        [
+            rec(1, false, 17, 17, 20, 1),
+            rec(20, true, 23, 24, run.lists[1].next, 2)
+        ]
+    );
     assert_eq!(run.stats.spec_used, 1);
     let golden = chip.query(&touching, Mode::All, Traversal::List);
     run.trace.check(Mode::All, &golden).unwrap();
@@ -152,14 +229,32 @@ fn small_lists_follow_the_hand_derived_timeline() {
 fn long_lists_hide_the_transforms() {
     let a = soup(300, 1).triangles_f64();
     let chip = Chip::new(&a, &a, ChipKind::K6E8m15.config()).unwrap();
-    let p = Params { memory: Memory::Ideal(MemTiming { latency: 1, interval: 1, bus_bits: None }), ..Params::RTL };
-    let run = run_query(&chip, &chip.setup(&Pose::new(0.0, 0.0, 0.0, 0.0, 0.0, 0.0)), Mode::All, &p, &StackParams::PAPER, MAX_CYCLES).unwrap();
+    let p = Params {
+        memory: Memory::Ideal(MemTiming {
+            latency: 1,
+            interval: 1,
+            bus_bits: None,
+        }),
+        ..Params::RTL
+    };
+    let run = run_query(
+        &chip,
+        &chip.setup(&Pose::new(0.0, 0.0, 0.0, 0.0, 0.0, 0.0)),
+        Mode::All,
+        &p,
+        &StackParams::PAPER,
+        MAX_CYCLES,
+    )
+    .unwrap();
     let k = 6;
     let mut checked = 0;
     for w in run.lists.windows(2) {
         if w[1].held && w[0].len >= 2 * (k + 6) + 6 {
             assert!(w[1].ready <= w[1].first_compare.unwrap(), "{w:?}");
-            assert!(w[1].ready <= w[1].t0 + StackParams::PAPER.sram_latency as u64 + 2, "the transform is not hidden: {w:?}");
+            assert!(
+                w[1].ready <= w[1].t0 + StackParams::PAPER.sram_latency as u64 + 2,
+                "the transform is not hidden: {w:?}"
+            );
             checked += 1;
         }
     }
@@ -176,16 +271,34 @@ fn a_scene_on_wscg03s_chip_answers_as_the_exact_oracle() {
     let text = "[objects]\na = \"sphere:80\"\nb = \"torus:60\"\n[chip]\npreset = \"wscg03\"\n[sweep]\ndistances = [1.2, 0.6]\norientations = 2\n[outputs]\naccuracy = true\ncycles = true\nmemory = true\n";
     let s = Scene::parse(text, "test").unwrap();
     let explain = Plan::of(&s).explain(&s);
-    assert!(explain.contains("  stack_engine") && explain.contains("  triangle_unit") && !explain.contains("  d_cntr"), "{explain}");
-    let run = Prepared::new(&s, |spec| collision_chip::mesh::resolve(spec).map_err(|e| e.to_string())).unwrap().run(|| ()).unwrap();
+    assert!(
+        explain.contains("  stack_engine")
+            && explain.contains("  triangle_unit")
+            && !explain.contains("  d_cntr"),
+        "{explain}"
+    );
+    let run = Prepared::new(&s, |spec| {
+        collision_chip::mesh::resolve(spec).map_err(|e| e.to_string())
+    })
+    .unwrap()
+    .run(|| ())
+    .unwrap();
     assert!(run.records.iter().any(|r| r.pair_count > 0));
     for r in &run.records {
         let a = r.accuracy.as_ref().unwrap();
         assert_eq!((a.misses, a.extras), (0, 0), "{r:?}");
         let c = r.cycles.as_ref().unwrap();
-        assert!(c.stats.is_none() && c.wscg03.is_some_and(|w| w.cycles == c.cycles && w.lists > 0), "{c:?}");
+        assert!(
+            c.stats.is_none()
+                && c.wscg03
+                    .is_some_and(|w| w.cycles == c.cycles && w.lists > 0),
+            "{c:?}"
+        );
     }
     // refused as the scene is read, so --explain and --dot refuse it as run does
     let e = Scene::parse(&format!("{text}waveforms = \"w\"\n"), "t").unwrap_err();
-    assert!(e.starts_with("t:13: [outputs] waveforms") && e.contains("no RTL and no probes"), "{e}");
+    assert!(
+        e.starts_with("t:13: [outputs] waveforms") && e.contains("no RTL and no probes"),
+        "{e}"
+    );
 }

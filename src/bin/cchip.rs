@@ -2,26 +2,28 @@
 //! collision chip (and, for small meshes, its RTL in rust-hdl).
 
 use clap::{Args, Parser, Subcommand};
-use collision_chip::chip::preset::Preset;
-use collision_chip::chip::timing::{Folds, PeriodSource, Technology};
-use collision_chip::chip::wscg03::Architecture;
 use collision_chip::chip::config::{ChipConfig, DopRounding, Formats};
 use collision_chip::chip::memory::Memory;
+use collision_chip::chip::preset::Preset;
+use collision_chip::chip::reg::Mode;
+use collision_chip::chip::timing::{Folds, PeriodSource, Technology};
+use collision_chip::chip::wscg03::Architecture;
+use collision_chip::harness::units;
 use collision_chip::mesh::{self, Mesh};
 use collision_chip::pose::Pose;
+use collision_chip::pose::Sweep;
 use collision_chip::query::{exact_pairs, Accuracy, Chip};
-use collision_chip::report::{accuracy, figures, memory_table, plot, stack_table, stall_table, summary_table};
-use collision_chip::harness::units;
+use collision_chip::report::{
+    accuracy, figures, memory_table, plot, stack_table, stall_table, summary_table,
+};
 use collision_chip::scene::graph::Plan;
 use collision_chip::scene::run::Prepared;
-use collision_chip::pose::Sweep;
 use collision_chip::scene::{CrossCheck, Flags, Scene, DEFAULT_SCENE};
 use collision_chip::traversal::{Counters, Traversal};
-use collision_chip::chip::reg::Mode;
-use serde::Serialize;
-use std::io::Write;
 use indicatif::{ProgressBar, ProgressStyle};
+use serde::Serialize;
 use std::io::IsTerminal;
+use std::io::Write;
 use std::path::PathBuf;
 use std::process::ExitCode;
 
@@ -36,12 +38,16 @@ the file; polygons are split into fans (v0, vi, vi+1).";
 /// tumbling at five distances, checked against the exact oracle, with the chip's clocks
 /// from the cycle model).
 #[derive(Parser)]
-#[command(name = "cchip", version, after_help = "Examples:\n  \
+#[command(
+    name = "cchip",
+    version,
+    after_help = "Examples:\n  \
 cchip                                         # the default scene\n  \
 cchip run vectors/scenes/default.toml --json  # a scene file, machine-readable\n  \
 cchip run --vcd target/vcd/bunny               # the default scene with a traversal VCD per pose\n  \
 cchip query bunny bunny --pose 10,20,30,0.02,0,0 --oracle --json\n  \
-cchip query teapot sphere:2000 --pose 0,0,0,1,0,0 --traversal fifo --k 14")]
+cchip query teapot sphere:2000 --pose 0,0,0,1,0,0 --traversal fifo --k 14"
+)]
 struct Cli {
     #[command(subcommand)]
     cmd: Option<Cmd>,
@@ -162,7 +168,11 @@ struct AccuracyArgs {
     meshes: Vec<String>,
     /// Number formats, comma separated (binary32, reduced, eEmF; DOP/T.CHECK such as
     /// e8m15/binary32 for a DOP datapath narrower than the triangle test's).
-    #[arg(long, value_delimiter = ',', default_value = "binary32,reduced,e8m10,e8m15/binary32")]
+    #[arg(
+        long,
+        value_delimiter = ',',
+        default_value = "binary32,reduced,e8m10,e8m15/binary32"
+    )]
     formats: Vec<Formats>,
     /// k of the k-DOPs, comma separated (6, 14, 18, 24, 26).
     #[arg(long, value_delimiter = ',', default_value = "24")]
@@ -173,7 +183,12 @@ struct AccuracyArgs {
     #[arg(long, value_name = "DIR")]
     plot: Option<PathBuf>,
     /// Centre distances along x, from apart to deeply penetrating.
-    #[arg(long, value_delimiter = ',', allow_hyphen_values = true, default_value = "2.2,1.6,1.2,0.8,0.4")]
+    #[arg(
+        long,
+        value_delimiter = ',',
+        allow_hyphen_values = true,
+        default_value = "2.2,1.6,1.2,0.8,0.4"
+    )]
     distances: Vec<f64>,
     /// Seeded random orientations per distance.
     #[arg(long, default_value_t = 8)]
@@ -188,7 +203,12 @@ struct AccuracyArgs {
     /// Memory systems: the chip presets whose memory, port and triangle cache each
     /// configuration runs on (rtl: the RTL's reset port on a one-clock memory; date05, wscg03:
     /// the papers' DDR memories, the port at full speed), comma separated.
-    #[arg(long, value_enum, value_delimiter = ',', default_value = "rtl,date05,wscg03")]
+    #[arg(
+        long,
+        value_enum,
+        value_delimiter = ',',
+        default_value = "rtl,date05,wscg03"
+    )]
     presets: Vec<Preset>,
     /// The clock period of each configuration: osu018 (its slowest RTL unit measured on OSU
     /// 0.18 um, docs/figures/timing.csv), ecp5 or paper (the preset's 800 / 266 MHz, assumed).
@@ -250,7 +270,6 @@ struct QueryArgs {
     json: bool,
 }
 
-
 fn main() -> ExitCode {
     // Like other Unix tools, end quietly when the reader of the output goes away (`cchip |
     // head`): Rust ignores SIGPIPE, and `println!` then panics on the broken pipe.
@@ -263,9 +282,16 @@ fn main() -> ExitCode {
         Some(Cmd::Query(q)) => query(q),
         Some(Cmd::Run { scene, opts }) => run(scene, opts),
         Some(Cmd::Accuracy(a)) => accuracy(a),
-        Some(Cmd::Figures { out, quick, preset, technology }) => figures(&out, quick, preset, technology),
+        Some(Cmd::Figures {
+            out,
+            quick,
+            preset,
+            technology,
+        }) => figures(&out, quick, preset, technology),
         Some(Cmd::ExportVerilog { out, area: false }) => report_written(units::write_verilog(&out)),
-        Some(Cmd::ExportVerilog { out, area: true }) => report_written(units::write_area_verilog(&out)),
+        Some(Cmd::ExportVerilog { out, area: true }) => {
+            report_written(units::write_area_verilog(&out))
+        }
         Some(Cmd::Vectors { out }) => report_written(units::write_vectors(&out)),
         None => run(None, RunOpts::default()),
     });
@@ -280,7 +306,11 @@ fn main() -> ExitCode {
 
 fn load(spec: &str, unit_cube: bool) -> Result<Mesh, String> {
     let m = mesh::resolve(spec).map_err(|e| e.to_string())?;
-    if unit_cube { m.scaled_into_unit_cube().map_err(|e| e.to_string()) } else { Ok(m) }
+    if unit_cube {
+        m.scaled_into_unit_cube().map_err(|e| e.to_string())
+    } else {
+        Ok(m)
+    }
 }
 
 fn query(q: QueryArgs) -> Result<(), String> {
@@ -296,19 +326,44 @@ fn query(q: QueryArgs) -> Result<(), String> {
         // Written straight to stdout: a tree of JSON values for millions of (uncertain) pairs
         // took tens of GB.
         let v = QueryJson {
-            a: MeshJson { mesh: &q.a, triangles: ta.len() },
-            b: MeshJson { mesh: &q.b, triangles: tb.len() },
-            pose: q.pose, mode: q.mode, traversal: q.traversal, chip: cfg,
-            pairs: &res.pairs, counters: res.counters,
-            uncertain: res.uncertain.len(), uncertain_pairs: &res.uncertain,
-            exact_pairs: exact.as_deref(), accuracy: acc,
+            a: MeshJson {
+                mesh: &q.a,
+                triangles: ta.len(),
+            },
+            b: MeshJson {
+                mesh: &q.b,
+                triangles: tb.len(),
+            },
+            pose: q.pose,
+            mode: q.mode,
+            traversal: q.traversal,
+            chip: cfg,
+            pairs: &res.pairs,
+            counters: res.counters,
+            uncertain: res.uncertain.len(),
+            uncertain_pairs: &res.uncertain,
+            exact_pairs: exact.as_deref(),
+            accuracy: acc,
         };
         let mut out = std::io::BufWriter::new(std::io::stdout().lock());
-        serde_json::to_writer_pretty(&mut out, &v).map_err(|e| format!("cannot write JSON: {e}"))?;
-        return writeln!(out).and_then(|()| out.flush()).map_err(|e| format!("cannot write JSON: {e}"));
+        serde_json::to_writer_pretty(&mut out, &v)
+            .map_err(|e| format!("cannot write JSON: {e}"))?;
+        return writeln!(out)
+            .and_then(|()| out.flush())
+            .map_err(|e| format!("cannot write JSON: {e}"));
     }
-    println!("A: {} ({} triangles, {} DOP nodes)", q.a, ta.len(), chip.a.tree.len());
-    println!("B: {} ({} triangles, {} DOP nodes)", q.b, tb.len(), chip.b.tree.len());
+    println!(
+        "A: {} ({} triangles, {} DOP nodes)",
+        q.a,
+        ta.len(),
+        chip.a.tree.len()
+    );
+    println!(
+        "B: {} ({} triangles, {} DOP nodes)",
+        q.b,
+        tb.len(),
+        chip.b.tree.len()
+    );
     println!(
         "chip: k={} format={} dop-rounding={}; {:?} traversal, {:?} pairs mode",
         cfg.k, cfg.format, cfg.dop_rounding, q.traversal, q.mode
@@ -330,7 +385,12 @@ fn query(q: QueryArgs) -> Result<(), String> {
         c.dop_tests, c.dop_overlaps, c.dop_transforms, c.tri_tests, c.node_fetches, c.tri_fetches, c.memory_bytes, c.max_queue_depth
     );
     if let (Some(x), Some(a)) = (&exact, acc) {
-        println!("exact oracle: {} pairs; chip misses {} and reports {} extra", x.len(), a.misses, a.extras);
+        println!(
+            "exact oracle: {} pairs; chip misses {} and reports {} extra",
+            x.len(),
+            a.misses,
+            a.extras
+        );
     }
     Ok(())
 }
@@ -360,7 +420,6 @@ struct QueryJson<'a> {
     accuracy: Option<Accuracy>,
 }
 
-
 fn report_written(r: std::io::Result<Vec<String>>) -> Result<(), String> {
     let paths = r.map_err(|e| format!("cannot write: {e}"))?;
     for p in &paths {
@@ -370,8 +429,15 @@ fn report_written(r: std::io::Result<Vec<String>>) -> Result<(), String> {
 }
 
 fn progress_bar(len: u64, hidden: bool) -> ProgressBar {
-    let bar = if hidden || !std::io::stderr().is_terminal() { ProgressBar::hidden() } else { ProgressBar::new(len) };
-    bar.set_style(ProgressStyle::with_template("{bar:40} {pos}/{len} poses {elapsed} (eta {eta}) {msg}").expect("valid template"));
+    let bar = if hidden || !std::io::stderr().is_terminal() {
+        ProgressBar::hidden()
+    } else {
+        ProgressBar::new(len)
+    };
+    bar.set_style(
+        ProgressStyle::with_template("{bar:40} {pos}/{len} poses {elapsed} (eta {eta}) {msg}")
+            .expect("valid template"),
+    );
     bar
 }
 
@@ -387,19 +453,39 @@ fn accuracy(a: AccuracyArgs) -> Result<(), String> {
             ks: a.k.clone(),
             formats: a.formats.clone(),
             roundings: vec![DopRounding::Outward, DopRounding::NearestEven],
-            sweep: Sweep { distances: a.distances.clone(), orientations: a.orientations, seed: a.seed },
+            sweep: Sweep {
+                distances: a.distances.clone(),
+                orientations: a.orientations,
+                seed: a.seed,
+            },
             bus_bits: a.bus_bits,
             technology: a.technology,
-            folds: a.tri_intervals.iter().flat_map(|&tri| a.dop_intervals.iter().map(move |&dop| Folds { tri, dop })).collect(),
+            folds: a
+                .tri_intervals
+                .iter()
+                .flat_map(|&tri| a.dop_intervals.iter().map(move |&dop| Folds { tri, dop }))
+                .collect(),
         };
         let shard = a.shard.unwrap_or(accuracy::Shard::ALL);
-        let items = a.meshes.len().saturating_mul(a.distances.len()).saturating_mul(a.orientations);
+        let items = a
+            .meshes
+            .len()
+            .saturating_mul(a.distances.len())
+            .saturating_mul(a.orientations);
         let bar = progress_bar(items.div_ceil(shard.n) as u64, a.json || a.shard.is_some());
-        let rows = accuracy::run(&plan, |m| Ok(load(m, true)?.triangles_f64()), shard, || bar.inc(1))?;
+        let rows = accuracy::run(
+            &plan,
+            |m| Ok(load(m, true)?.triangles_f64()),
+            shard,
+            || bar.inc(1),
+        )?;
         bar.finish_and_clear();
         if a.shard.is_some() {
             let file = accuracy::ShardFile { plan, shard, rows };
-            println!("{}", serde_json::to_string_pretty(&file).expect("serialisable"));
+            println!(
+                "{}",
+                serde_json::to_string_pretty(&file).expect("serialisable")
+            );
             return Ok(());
         }
         (plan, rows)
@@ -418,7 +504,10 @@ fn accuracy(a: AccuracyArgs) -> Result<(), String> {
         }
     }
     if a.json {
-        println!("{}", serde_json::to_string_pretty(&rows).expect("serialisable"));
+        println!(
+            "{}",
+            serde_json::to_string_pretty(&rows).expect("serialisable")
+        );
     } else {
         print!("{}", accuracy::table(&plan, &rows, area.as_ref())?);
         println!("\nhost us = the host's setup per pose and its settling of the uncertain pairs with the exact oracle, measured on this machine (wall clock, the fastest of {} runs, poses on every core: noisy); end to end = host + chip.\nclock periods (measured: the configuration's RTL chip's row; estimated: what stands in for it):\n{}", collision_chip::measure::TIMING_RUNS, accuracy::clocks(&rows));
@@ -426,10 +515,26 @@ fn accuracy(a: AccuracyArgs) -> Result<(), String> {
     Ok(())
 }
 
-fn figures(out: &std::path::Path, quick: bool, preset: Option<Preset>, technology: Technology) -> Result<(), String> {
-    let plan = figures::Plan { preset, technology, ..if quick { figures::Plan::quick() } else { figures::Plan::full() } };
+fn figures(
+    out: &std::path::Path,
+    quick: bool,
+    preset: Option<Preset>,
+    technology: Technology,
+) -> Result<(), String> {
+    let plan = figures::Plan {
+        preset,
+        technology,
+        ..if quick {
+            figures::Plan::quick()
+        } else {
+            figures::Plan::full()
+        }
+    };
     let bar = progress_bar(0, false);
-    bar.set_style(ProgressStyle::with_template("{bar:40} {pos}/{len} {elapsed} (eta {eta}) {msg}").expect("valid template"));
+    bar.set_style(
+        ProgressStyle::with_template("{bar:40} {pos}/{len} {elapsed} (eta {eta}) {msg}")
+            .expect("valid template"),
+    );
     let t0 = std::time::Instant::now();
     let written = figures::generate(&plan, out, &bar)?;
     bar.finish_and_clear();
@@ -441,14 +546,27 @@ fn figures(out: &std::path::Path, quick: bool, preset: Option<Preset>, technolog
 }
 
 fn run(path: Option<PathBuf>, o: RunOpts) -> Result<(), String> {
-    let flags = Flags { preset: o.preset, technology: o.technology, architecture: o.architecture, waveforms: o.vcd, cross_check: o.rtl.then_some(CrossCheck::Rtl) };
+    let flags = Flags {
+        preset: o.preset,
+        technology: o.technology,
+        architecture: o.architecture,
+        waveforms: o.vcd,
+        cross_check: o.rtl.then_some(CrossCheck::Rtl),
+    };
     let scene = match &path {
         Some(p) => Scene::load_with(p, flags)?,
         None => Scene::parse_with(DEFAULT_SCENE, "built-in default scene", flags)?,
     };
     if o.explain || o.dot {
         let plan = Plan::of(&scene);
-        print!("{}", if o.dot { plan.dot(&scene) } else { plan.explain(&scene) });
+        print!(
+            "{}",
+            if o.dot {
+                plan.dot(&scene)
+            } else {
+                plan.explain(&scene)
+            }
+        );
         return Ok(());
     }
     let prepared = Prepared::new(&scene, |spec| load(spec, scene.objects.unit_cube))?;
@@ -466,7 +584,10 @@ fn run(path: Option<PathBuf>, o: RunOpts) -> Result<(), String> {
     let records = prepared.run(|| bar.inc(1))?.records;
     bar.finish_and_clear();
     if o.json {
-        println!("{}", serde_json::to_string_pretty(&records).expect("serialisable"));
+        println!(
+            "{}",
+            serde_json::to_string_pretty(&records).expect("serialisable")
+        );
         return Ok(());
     }
     let out = &scene.outputs;
@@ -476,7 +597,10 @@ fn run(path: Option<PathBuf>, o: RunOpts) -> Result<(), String> {
     }
     let memory = match scene.params.memory {
         Memory::Ideal(t) => {
-            let bus = t.bus_bits.map(|b| format!(", a bus of {b} bits")).unwrap_or_default();
+            let bus = t
+                .bus_bits
+                .map(|b| format!(", a bus of {b} bits"))
+                .unwrap_or_default();
             format!("memory latency {}, interval {}{bus}", t.latency, t.interval)
         }
         m => format!("memory {m}"),
@@ -485,13 +609,19 @@ fn run(path: Option<PathBuf>, o: RunOpts) -> Result<(), String> {
         let p = &scene.params;
         let how = match clock.source {
             PeriodSource::Measured => String::new(),
-            how => format!(" (the period {}: so are chip_us, e2e_us, speedup and e2e_x)", how.name()),
+            how => format!(
+                " (the period {}: so are chip_us, e2e_us, speedup and e2e_x)",
+                how.name()
+            ),
         };
         println!(
             "cycles = the chip's clocks from start to done (cycle model: {} queue entries, {memory});\nchip_us = cycles x the clock period, {};\nsetup_us, settle_us = the host's setup for the pose and its settling of the uncertain pairs with the exact oracle, measured on this machine (wall clock, the fastest of {runs} runs, one pose at a time: noisy);\ne2e_us = setup_us + chip_us + settle_us; sw_us = the golden model's query on this machine (the fastest of {runs} runs, one pose at a time); speedup = sw_us / chip_us; e2e_x = sw_us / e2e_us{how}.",
             p.queue_entries, clock.source(), runs = collision_chip::measure::TIMING_RUNS
         );
-        if records.iter().any(|r| r.cycles.as_ref().is_some_and(|c| c.overflow)) {
+        if records
+            .iter()
+            .any(|r| r.cycles.as_ref().is_some_and(|c| c.overflow))
+        {
             println!("ovf = poses whose pair queue overflowed (listed below): the chip halted with an incomplete answer, so the cycle columns leave them out (-: every pose of the row overflowed) and their misses and extras are that answer's.");
         }
         if scene.architecture == Architecture::Wscg03 {
@@ -518,7 +648,10 @@ fn run(path: Option<PathBuf>, o: RunOpts) -> Result<(), String> {
             );
         }
     }
-    if let Some(level) = records.iter().find_map(|r| r.cycles.as_ref()?.cross_checked.as_ref()) {
+    if let Some(level) = records
+        .iter()
+        .find_map(|r| r.cycles.as_ref()?.cross_checked.as_ref())
+    {
         println!("every pose ran on the {level} chip beside the cycle model: equal on every compared signal, every clock.");
     }
     Ok(())

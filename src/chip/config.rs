@@ -53,7 +53,9 @@ impl std::str::FromStr for DopRounding {
         match s {
             "outward" => Ok(DopRounding::Outward),
             "nearest-even" | "nearest" => Ok(DopRounding::NearestEven),
-            _ => Err(format!("DOP rounding `{s}` unknown; use `outward` or `nearest-even`")),
+            _ => Err(format!(
+                "DOP rounding `{s}` unknown; use `outward` or `nearest-even`"
+            )),
         }
     }
 }
@@ -90,10 +92,17 @@ impl std::fmt::Display for Formats {
 impl std::str::FromStr for Formats {
     type Err = String;
     fn from_str(s: &str) -> Result<Self, String> {
-        let parse = |x: &str| x.trim().parse::<Format>().map_err(|e| format!("{e} (a format, or DOP format/T.CHECK format such as \"e8m15/binary32\")"));
+        let parse = |x: &str| {
+            x.trim().parse::<Format>().map_err(|e| {
+                format!("{e} (a format, or DOP format/T.CHECK format such as \"e8m15/binary32\")")
+            })
+        };
         match s.split_once('/') {
             None => parse(s).map(Formats::from),
-            Some((d, t)) => Ok(Formats { dop: parse(d)?, tri: parse(t)? }),
+            Some((d, t)) => Ok(Formats {
+                dop: parse(d)?,
+                tri: parse(t)?,
+            }),
         }
     }
 }
@@ -176,7 +185,9 @@ pub fn check_k(k: usize) -> Result<(), String> {
     if SUPPORTED_K.contains(&k) {
         Ok(())
     } else {
-        Err(format!("k = {k} is not supported; choose one of 6, 14, 18, 24, 26"))
+        Err(format!(
+            "k = {k} is not supported; choose one of 6, 14, 18, 24, 26"
+        ))
     }
 }
 
@@ -198,7 +209,10 @@ impl ChipConfig {
             return Err(format!("tri_cache must be a power of two from 1 to {TRI_CACHE_MAX_LINES} lines (WSCG'03: 128), not {lines}"));
         }
         if !(1..=NODE_CACHE_MAX_LINES).contains(&self.node_cache) {
-            return Err(format!("node_cache must be 1 to {NODE_CACHE_MAX_LINES} records per object, not {}", self.node_cache));
+            return Err(format!(
+                "node_cache must be 1 to {NODE_CACHE_MAX_LINES} records per object, not {}",
+                self.node_cache
+            ));
         }
         Ok(())
     }
@@ -228,7 +242,10 @@ mod tests {
         let split: Formats = "e8m15/binary32".parse().unwrap();
         assert_eq!((split.dop, split.tri), (Format::REDUCED, Format::BINARY32));
         assert_eq!(split.to_string(), "e8m15/binary32");
-        assert_eq!("reduced".parse::<Formats>().unwrap(), Formats::from(Format::REDUCED));
+        assert_eq!(
+            "reduced".parse::<Formats>().unwrap(),
+            Formats::from(Format::REDUCED)
+        );
         assert_eq!(Formats::from(Format::REDUCED).to_string(), "e8m15");
         let e = "e8m15/float".parse::<Formats>().unwrap_err();
         assert!(e.contains("float") && e.contains("e8m15/binary32"), "{e}");

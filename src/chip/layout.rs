@@ -53,7 +53,11 @@ pub const fn tri_bits(w: usize) -> usize {
 /// Bits of a memory word: the wider record.
 pub const fn word_bits(k: usize, dop_w: usize, tri_w: usize) -> usize {
     let (n, t) = (node_bits(k, dop_w), tri_bits(tri_w));
-    if n > t { n } else { t }
+    if n > t {
+        n
+    } else {
+        t
+    }
 }
 
 /// Bits of a [`MemLayout::Records`] memory word: a node pair or a triangle word, padded to a
@@ -64,7 +68,9 @@ pub const fn record_bits(k: usize, dop_w: usize, tri_w: usize) -> usize {
 
 const fn padded_record(node: usize, tri: usize) -> usize {
     let n = 2 * node;
-    8 * (if n > tri { n } else { tri }).div_ceil(8).next_power_of_two()
+    8 * (if n > tri { n } else { tri })
+        .div_ceil(8)
+        .next_power_of_two()
 }
 
 /// Word sizes of one configuration, and its layout.
@@ -77,15 +83,24 @@ pub struct Layout {
 
 impl Layout {
     pub fn new(cfg: &ChipConfig) -> Layout {
-        let (dop_w, tri_w) = (cfg.format.dop.width() as usize, cfg.format.tri.width() as usize);
-        Layout { node_bits: node_bits(cfg.k, dop_w) as u32, tri_bits: tri_bits(tri_w) as u32, kind: cfg.layout }
+        let (dop_w, tri_w) = (
+            cfg.format.dop.width() as usize,
+            cfg.format.tri.width() as usize,
+        );
+        Layout {
+            node_bits: node_bits(cfg.k, dop_w) as u32,
+            tri_bits: tri_bits(tri_w) as u32,
+            kind: cfg.layout,
+        }
     }
     /// Bits of a memory word: `words`, the wider of a node word and a triangle word;
     /// `records`, a node pair or a triangle word padded to a power of two bytes.
     pub fn word_bits(&self) -> u32 {
         match self.kind {
             MemLayout::Words => self.node_bits.max(self.tri_bits),
-            MemLayout::Records => padded_record(self.node_bits as usize, self.tri_bits as usize) as u32,
+            MemLayout::Records => {
+                padded_record(self.node_bits as usize, self.tri_bits as usize) as u32
+            }
         }
     }
     pub fn node_bytes(&self) -> u64 {
@@ -120,7 +135,10 @@ pub fn node_records(kind: MemLayout, children: &[Option<[u32; 2]>]) -> Vec<u32> 
 pub fn tri_records(kind: MemLayout, leaves: &[u32]) -> Vec<u32> {
     let mut rec: Vec<u32> = (0..leaves.len() as u32).collect();
     if kind == MemLayout::Records {
-        leaves.iter().zip(0..).for_each(|(&t, i)| rec[t as usize] = i);
+        leaves
+            .iter()
+            .zip(0..)
+            .for_each(|(&t, i)| rec[t as usize] = i);
     }
     rec
 }
@@ -146,7 +164,10 @@ pub fn node_ids(kind: MemLayout, children: &[Option<[u32; 2]>]) -> Vec<u32> {
         return rec;
     }
     let mut id: Vec<u32> = rec.iter().map(|r| 2 * r).collect();
-    children.iter().flatten().for_each(|c| id[c[1] as usize] += 1);
+    children
+        .iter()
+        .flatten()
+        .for_each(|c| id[c[1] as usize] += 1);
     id
 }
 
@@ -177,17 +198,29 @@ pub struct RecordMap {
 
 impl RecordMap {
     /// The image in order: the register's reset value.
-    pub const IN_ORDER: RecordMap = RecordMap { ln: [0; 4], lp: 0, lb: 0 };
+    pub const IN_ORDER: RecordMap = RecordMap {
+        ln: [0; 4],
+        lp: 0,
+        lb: 0,
+    };
 
     pub fn new(layout: &Layout, memory: &Memory) -> RecordMap {
         match (layout.kind, memory) {
             (MemLayout::Records, Memory::Ddr(d)) => {
                 let per_page = d.page_bytes / (layout.word_bits() / 8);
-                if d.banks < 4 || !d.banks.is_power_of_two() || !per_page.is_power_of_two() || per_page >= 1 << 16 {
+                if d.banks < 4
+                    || !d.banks.is_power_of_two()
+                    || !per_page.is_power_of_two()
+                    || per_page >= 1 << 16
+                {
                     return RecordMap::IN_ORDER;
                 }
                 let ln = RecordMap::banks(d.banks).map(|(_, n)| n.trailing_zeros());
-                RecordMap { ln, lp: per_page.trailing_zeros(), lb: d.banks.trailing_zeros() }
+                RecordMap {
+                    ln,
+                    lp: per_page.trailing_zeros(),
+                    lb: d.banks.trailing_zeros(),
+                }
             }
             _ => RecordMap::IN_ORDER,
         }
@@ -220,7 +253,9 @@ impl RecordMap {
     pub fn addr(&self, d: Dst, base: u32, i: u32) -> u32 {
         let (ln, lp) = (self.ln[d as usize], self.lp);
         let mask = |l: u32| (1 << l) - 1;
-        base + ((i >> (ln + lp)) << (self.lb + lp)) + ((i & mask(ln)) << lp) + ((i >> ln) & mask(lp))
+        base + ((i >> (ln + lp)) << (self.lb + lp))
+            + ((i & mask(ln)) << lp)
+            + ((i >> ln) & mask(lp))
     }
 
     /// Whether the regions have banks of their own.
@@ -231,12 +266,22 @@ impl RecordMap {
     /// The [`MAP`](super::reg::MAP) register's word: bits `3 d + 2 .. 3 d` the log2 of
     /// region d's banks, 15:12 of a page's records, 19:16 of the banks.
     pub fn word(&self) -> u32 {
-        self.ln.iter().enumerate().map(|(d, l)| l << (3 * d)).sum::<u32>() | self.lp << 12 | self.lb << 16
+        self.ln
+            .iter()
+            .enumerate()
+            .map(|(d, l)| l << (3 * d))
+            .sum::<u32>()
+            | self.lp << 12
+            | self.lb << 16
     }
 
     /// The map of a [`MAP`](super::reg::MAP) word.
     pub fn of_word(w: u32) -> RecordMap {
-        RecordMap { ln: [0, 1, 2, 3].map(|d| w >> (3 * d) & 7), lp: w >> 12 & 0xf, lb: w >> 16 & 0xf }
+        RecordMap {
+            ln: [0, 1, 2, 3].map(|d| w >> (3 * d) & 7),
+            lp: w >> 12 & 0xf,
+            lb: w >> 16 & 0xf,
+        }
     }
 
     /// Word addresses an image of regions of `records` records (by [`Dst`]) spans.
@@ -245,7 +290,10 @@ impl RecordMap {
             return records.iter().sum();
         }
         let page_row = |d: usize| 1 << (self.ln[d] + self.lp);
-        let rows = (0..4).map(|d| records[d].div_ceil(page_row(d))).max().unwrap_or(0);
+        let rows = (0..4)
+            .map(|d| records[d].div_ceil(page_row(d)))
+            .max()
+            .unwrap_or(0);
         rows << (self.lb + self.lp)
     }
 }
@@ -294,7 +342,10 @@ pub struct Entry {
 /// The entry of the all-zero word: one pair, (0, 0) (what an empty queue shows).
 impl Default for Entry {
     fn default() -> Self {
-        Entry { pairs: [Pair::default(); 2], len: 1 }
+        Entry {
+            pairs: [Pair::default(); 2],
+            len: 1,
+        }
     }
 }
 
@@ -307,26 +358,38 @@ const PAIR_BITS: u32 = 2 * NODE_BITS + 1;
 pub const ENTRY_MASK: u128 = (1 << ENTRY_BITS) - 1;
 
 fn pack_pair(p: &Pair) -> u128 {
-    assert!(p.a < 1 << NODE_BITS && p.b < 1 << NODE_BITS, "node ids of {p:?} do not fit {NODE_BITS} bits");
+    assert!(
+        p.a < 1 << NODE_BITS && p.b < 1 << NODE_BITS,
+        "node ids of {p:?} do not fit {NODE_BITS} bits"
+    );
     p.a as u128 | (p.b as u128) << NODE_BITS | (p.flip as u128) << (2 * NODE_BITS)
 }
 
 fn unpack_pair(w: u128) -> Pair {
     let m = (1u128 << NODE_BITS) - 1;
-    Pair { a: (w & m) as u32, b: (w >> NODE_BITS & m) as u32, flip: w >> (2 * NODE_BITS) & 1 == 1 }
+    Pair {
+        a: (w & m) as u32,
+        b: (w >> NODE_BITS & m) as u32,
+        flip: w >> (2 * NODE_BITS) & 1 == 1,
+    }
 }
 
 /// The entry word of `e` (layout in the module doc). Panics if a node id needs more than
 /// 16 bits or `len` is not 1 or 2.
 pub fn pack(e: &Entry) -> u128 {
     assert!(e.len == 1 || e.len == 2, "entry length {}", e.len);
-    pack_pair(&e.pairs[0]) | pack_pair(&e.pairs[1]) << PAIR_BITS | ((e.len - 1) as u128) << (2 * PAIR_BITS)
+    pack_pair(&e.pairs[0])
+        | pack_pair(&e.pairs[1]) << PAIR_BITS
+        | ((e.len - 1) as u128) << (2 * PAIR_BITS)
 }
 
 /// The entry of a word (bits above 66 ignored); the inverse of [`pack`].
 pub fn unpack(w: u128) -> Entry {
     let m = (1u128 << PAIR_BITS) - 1;
-    Entry { pairs: [unpack_pair(w & m), unpack_pair(w >> PAIR_BITS & m)], len: 1 + (w >> (2 * PAIR_BITS) & 1) as u8 }
+    Entry {
+        pairs: [unpack_pair(w & m), unpack_pair(w >> PAIR_BITS & m)],
+        len: 1 + (w >> (2 * PAIR_BITS) & 1) as u8,
+    }
 }
 
 #[cfg(test)]
@@ -340,7 +403,10 @@ mod tests {
     fn siblings_share_a_record_by_hand() {
         let c = |a: u32, b: u32| Some([a, b]);
         let tree = [c(1, 4), c(2, 3), None, None, c(5, 6), None, None];
-        assert_eq!(node_records(MemLayout::Records, &tree), [0, 1, 2, 2, 1, 3, 3]);
+        assert_eq!(
+            node_records(MemLayout::Records, &tree),
+            [0, 1, 2, 2, 1, 3, 3]
+        );
         assert_eq!(node_records(MemLayout::Words, &tree), [0, 1, 2, 3, 4, 5, 6]);
         assert_eq!(tri_records(MemLayout::Records, &[3, 0, 2, 1]), [1, 3, 2, 0]);
         assert_eq!(node_ids(MemLayout::Records, &tree), [0, 2, 4, 5, 3, 6, 7]);
@@ -353,9 +419,19 @@ mod tests {
     /// 32. Its 8 banks: A's nodes in 0..1, B's in 2..5, A's triangles in 6, B's in 7.
     #[test]
     fn records_are_dealt_round_their_banks_by_hand() {
-        let l = Layout::new(&ChipConfig { layout: MemLayout::Records, ..ChipConfig::default() });
+        let l = Layout::new(&ChipConfig {
+            layout: MemLayout::Records,
+            ..ChipConfig::default()
+        });
         assert_eq!((l.word_bits(), l.record_bytes()), (2048, [256, 256]));
-        assert_eq!(Layout { kind: MemLayout::Words, ..l }.record_bytes(), [105, 93]);
+        assert_eq!(
+            Layout {
+                kind: MemLayout::Words,
+                ..l
+            }
+            .record_bytes(),
+            [105, 93]
+        );
         assert_eq!(RecordMap::banks(8), [(0, 2), (2, 4), (6, 1), (7, 1)]);
         assert_eq!(RecordMap::banks(4), [(0, 1), (1, 1), (2, 1), (3, 1)]);
         assert_eq!(RecordMap::banks(16), [(0, 4), (4, 8), (12, 2), (14, 2)]);
@@ -377,24 +453,61 @@ mod tests {
         assert_eq!(m.extent([96, 10, 33, 5]), 2 * 256);
         // the image in order on an ideal memory, on banks not a power of two, in the words layout
         let ideal = RecordMap::new(&l, &Memory::default());
-        assert_eq!((ideal.addr(Dst::NodeB, 1000, 4), ideal.extent([96, 10, 33, 5])), (1004, 144));
-        let six = Memory::Ddr(super::super::memory::Ddr { banks: 6, ..super::super::memory::Ddr::DATE05 });
+        assert_eq!(
+            (
+                ideal.addr(Dst::NodeB, 1000, 4),
+                ideal.extent([96, 10, 33, 5])
+            ),
+            (1004, 144)
+        );
+        let six = Memory::Ddr(super::super::memory::Ddr {
+            banks: 6,
+            ..super::super::memory::Ddr::DATE05
+        });
         assert_eq!(RecordMap::new(&l, &six), RecordMap::IN_ORDER);
-        assert_eq!(RecordMap::new(&Layout { kind: MemLayout::Words, ..l }, &Memory::Ddr(super::super::memory::Ddr::DATE05)), RecordMap::IN_ORDER);
-        assert_eq!((RecordMap::IN_ORDER.word(), RecordMap::IN_ORDER.bases([1, 2, 3, 4])), (0, [1, 2, 3, 4]));
+        assert_eq!(
+            RecordMap::new(
+                &Layout {
+                    kind: MemLayout::Words,
+                    ..l
+                },
+                &Memory::Ddr(super::super::memory::Ddr::DATE05)
+            ),
+            RecordMap::IN_ORDER
+        );
+        assert_eq!(
+            (
+                RecordMap::IN_ORDER.word(),
+                RecordMap::IN_ORDER.bases([1, 2, 3, 4])
+            ),
+            (0, [1, 2, 3, 4])
+        );
     }
 
     /// Every record of every region has its own word address.
     #[test]
     fn record_addresses_are_distinct() {
-        let l = Layout::new(&ChipConfig { layout: MemLayout::Records, ..ChipConfig::default() });
-        for d in [super::super::memory::Ddr::DATE05, super::super::memory::Ddr::WSCG03] {
+        let l = Layout::new(&ChipConfig {
+            layout: MemLayout::Records,
+            ..ChipConfig::default()
+        });
+        for d in [
+            super::super::memory::Ddr::DATE05,
+            super::super::memory::Ddr::WSCG03,
+        ] {
             let m = RecordMap::new(&l, &Memory::Ddr(d));
             assert!(m.spread());
             let (sizes, base) = ([700, 500, 300, 200], m.bases([0; 4]));
-            let mut all: Vec<u32> = (0..4).flat_map(|r| (0..sizes[r]).map(move |i| (r, i))).map(|(r, i)| {
-                m.addr([Dst::NodeA, Dst::NodeB, Dst::TriA, Dst::TriB][r], base[r], i)
-            }).collect();
+            let mut all: Vec<u32> = (0..4)
+                .flat_map(|r| (0..sizes[r]).map(move |i| (r, i)))
+                .map(|(r, i)| {
+                    m.addr(
+                        [Dst::NodeA, Dst::NodeB, Dst::TriA, Dst::TriB][r],
+                        base[r],
+                        i,
+                    )
+                })
+                .collect();
             assert!(all.iter().all(|&a| a < m.extent(sizes)));
             all.sort_unstable();
             all.dedup();
@@ -405,7 +518,10 @@ mod tests {
     #[test]
     fn pack_round_trips_and_places_the_fields() {
         let p = |a, b, flip| Pair { a, b, flip };
-        let e = Entry { pairs: [p(0x1234, 0xffff, true), p(0, 0xabcd, false)], len: 2 };
+        let e = Entry {
+            pairs: [p(0x1234, 0xffff, true), p(0, 0xabcd, false)],
+            len: 2,
+        };
         let w = pack(&e);
         assert_eq!(w & 0xffff, 0x1234);
         assert_eq!(w >> 16 & 0xffff, 0xffff);
@@ -413,9 +529,18 @@ mod tests {
         assert_eq!(w >> 49 & 0xffff, 0xabcd);
         assert_eq!(w >> 66, 1);
         assert_eq!(unpack(w), e);
-        let root = Entry { pairs: [p(0, 0, false); 2], len: 1 };
+        let root = Entry {
+            pairs: [p(0, 0, false); 2],
+            len: 1,
+        };
         assert_eq!(pack(&root), 0);
         assert_eq!(unpack(pack(&root)), root);
-        assert_eq!(unpack(ENTRY_MASK), Entry { pairs: [p(0xffff, 0xffff, true); 2], len: 2 });
+        assert_eq!(
+            unpack(ENTRY_MASK),
+            Entry {
+                pairs: [p(0xffff, 0xffff, true); 2],
+                len: 2
+            }
+        );
     }
 }

@@ -19,7 +19,11 @@ pub struct MemTiming {
 
 impl Default for MemTiming {
     fn default() -> Self {
-        MemTiming { latency: 1, interval: 1, bus_bits: None }
+        MemTiming {
+            latency: 1,
+            interval: 1,
+            bus_bits: None,
+        }
     }
 }
 
@@ -33,7 +37,9 @@ impl MemTiming {
             ));
         }
         if self.bus_bits == Some(0) {
-            return Err("memory bus_bits must be at least 1 (leave it out for a word per clock)".into());
+            return Err(
+                "memory bus_bits must be at least 1 (leave it out for a word per clock)".into(),
+            );
         }
         Ok(())
     }
@@ -62,12 +68,26 @@ impl Ddr {
     /// WSCG'03 §4.3, §4.5: four 64-bit modules of 133 MHz DDR SDRAM in parallel (a 256-bit
     /// bus), 4 banks, 4 KiB pages across the modules, bursts of 8 (a node pair's 256 bytes),
     /// the chip at the burst rate (266 MHz): a page hit 8 clocks, a page miss 20.
-    pub const WSCG03: Ddr = Ddr { banks: 4, page_bytes: 4096, bus_bits: 256, burst: 8, hit: 8, miss: 20 };
+    pub const WSCG03: Ddr = Ddr {
+        banks: 4,
+        page_bytes: 4096,
+        bus_bits: 256,
+        burst: 8,
+        hit: 8,
+        miss: 20,
+    };
     /// DATE'05 §4.1 gives only the bus: 756 bits of DDR2. The rest is our assumption, DDR2-800
     /// at 5-5-5 with the chip at the data rate (800 MHz, two clocks per memory clock):
     /// 8 banks, 8 KiB pages, bursts of 4, a hit CL + burst = 10 + 4, a miss tRP + tRCD + hit
     /// = 10 + 10 + 14.
-    pub const DATE05: Ddr = Ddr { banks: 8, page_bytes: 8192, bus_bits: 756, burst: 4, hit: 14, miss: 34 };
+    pub const DATE05: Ddr = Ddr {
+        banks: 8,
+        page_bytes: 8192,
+        bus_bits: 756,
+        burst: 4,
+        hit: 14,
+        miss: 34,
+    };
 
     /// Banks at most (scripts/verilog/chip_tb.v keeps this many).
     pub const MAX_BANKS: u32 = 64;
@@ -83,13 +103,22 @@ impl Ddr {
 
     /// Errors name the parameter out of range.
     pub fn check(&self) -> Result<(), String> {
-        for (n, v) in [("banks", self.banks), ("page_bytes", self.page_bytes), ("bus_bits", self.bus_bits), ("burst", self.burst)] {
+        for (n, v) in [
+            ("banks", self.banks),
+            ("page_bytes", self.page_bytes),
+            ("bus_bits", self.bus_bits),
+            ("burst", self.burst),
+        ] {
             if v == 0 {
                 return Err(format!("DDR memory: {n} must be at least 1"));
             }
         }
         if self.banks > Ddr::MAX_BANKS {
-            return Err(format!("DDR memory: at most {} banks (got {})", Ddr::MAX_BANKS, self.banks));
+            return Err(format!(
+                "DDR memory: at most {} banks (got {})",
+                Ddr::MAX_BANKS,
+                self.banks
+            ));
         }
         if self.hit < self.burst || self.miss < self.hit {
             return Err(format!(

@@ -62,13 +62,21 @@ impl Params {
         credit: rtl::CREDIT as u32,
         outstanding: 1,
         prefetch: 0,
-        memory: Memory::Ideal(MemTiming { latency: 1, interval: 1, bus_bits: None }),
+        memory: Memory::Ideal(MemTiming {
+            latency: 1,
+            interval: 1,
+            bus_bits: None,
+        }),
     };
 
     /// RTL chip `kind` after reset: [`RTL`](Self::RTL) with its DOP unit's and TRI_UNIT's
     /// intervals.
     pub const fn of(kind: rtl::ChipKind) -> Params {
-        Params { dop_interval: kind.dop_interval(), tri_interval: kind.tri_interval(), ..Params::RTL }
+        Params {
+            dop_interval: kind.dop_interval(),
+            tri_interval: kind.tri_interval(),
+            ..Params::RTL
+        }
     }
 
     /// Pairs prefetched at most.
@@ -108,9 +116,15 @@ impl Params {
             return Err(format!("chip parameter {n} must be at least 1"));
         }
         if self.tri_latency < rtl::FIFO_WRITE_TO_HEAD + 1 {
-            return Err(format!("tri_latency must be at least {} (the result FIFO's registers)", rtl::FIFO_WRITE_TO_HEAD + 1));
+            return Err(format!(
+                "tri_latency must be at least {} (the result FIFO's registers)",
+                rtl::FIFO_WRITE_TO_HEAD + 1
+            ));
         }
-        if !(self.tri_interval == 1 || (2..=Params::MAX_TRI_INTERVAL).contains(&self.tri_interval) && self.tri_interval % 2 == 0) {
+        if !(self.tri_interval == 1
+            || (2..=Params::MAX_TRI_INTERVAL).contains(&self.tri_interval)
+                && self.tri_interval % 2 == 0)
+        {
             return Err(format!(
                 "tri_interval must be 1 (TRI_UNIT unfolded) or an even number of clocks from 2 to {} (the folded TRI_UNIT runs its two directions on one T.CHECK at tri_interval / 2), not {}",
                 Params::MAX_TRI_INTERVAL, self.tri_interval
@@ -137,10 +151,16 @@ impl Params {
             return Err("issue_spacing must be 1 or 2 clocks".into());
         }
         if !(1..=Params::MAX_OUTSTANDING).contains(&self.outstanding) {
-            return Err(format!("outstanding must be 1 to {} requests", Params::MAX_OUTSTANDING));
+            return Err(format!(
+                "outstanding must be 1 to {} requests",
+                Params::MAX_OUTSTANDING
+            ));
         }
         if self.prefetch > Params::MAX_PREFETCH {
-            return Err(format!("prefetch must be at most {} pairs", Params::MAX_PREFETCH));
+            return Err(format!(
+                "prefetch must be at most {} pairs",
+                Params::MAX_PREFETCH
+            ));
         }
         self.memory.check()
     }
@@ -151,4 +171,3 @@ impl Default for Params {
         Params::RTL
     }
 }
-

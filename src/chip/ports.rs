@@ -68,7 +68,13 @@ pub trait Clocked {
     /// ([`Chip::wait`](crate::cycle::chip::Chip), skipping where nothing moves:
     /// [`quiet_until`](crate::cycle::chip::Chip::quiet_until)); the other levels leave every
     /// clock to the driver.
-    fn wait<M: MemorySide>(&mut self, _i: &ChipIn, _mem: &mut M, _cyc: u64, _limit: u64) -> Result<u64, String> {
+    fn wait<M: MemorySide>(
+        &mut self,
+        _i: &ChipIn,
+        _mem: &mut M,
+        _cyc: u64,
+        _limit: u64,
+    ) -> Result<u64, String> {
         Ok(0)
     }
 }
@@ -103,8 +109,13 @@ impl<C: Clocked + ?Sized> Clocked for &mut C {
         (**self).fault()
     }
 
-    fn wait<M: MemorySide>(&mut self, i: &ChipIn, mem: &mut M, cyc: u64, limit: u64) -> Result<u64, String> {
+    fn wait<M: MemorySide>(
+        &mut self,
+        i: &ChipIn,
+        mem: &mut M,
+        cyc: u64,
+        limit: u64,
+    ) -> Result<u64, String> {
         (**self).wait(i, mem, cyc, limit)
     }
 }
-

@@ -35,13 +35,29 @@ impl Preset {
     /// credit.
     fn full_port(memory: Memory) -> Params {
         let outstanding = rtl::PORT_OUTSTANDING as u32;
-        Params { issue_spacing: 1, outstanding, credit: 48, prefetch: rtl::PORT_PREFETCH as u32, memory, ..Params::RTL }
+        Params {
+            issue_spacing: 1,
+            outstanding,
+            credit: 48,
+            prefetch: rtl::PORT_PREFETCH as u32,
+            memory,
+            ..Params::RTL
+        }
     }
 
     pub fn chip(self) -> ChipConfig {
         match self {
-            Preset::Date05 => ChipConfig { layout: MemLayout::Records, node_cache: 16, ..ChipConfig::default() },
-            Preset::Wscg03 => ChipConfig { tri_cache: 128, layout: MemLayout::Records, node_cache: 16, ..ChipConfig::default() },
+            Preset::Date05 => ChipConfig {
+                layout: MemLayout::Records,
+                node_cache: 16,
+                ..ChipConfig::default()
+            },
+            Preset::Wscg03 => ChipConfig {
+                tri_cache: 128,
+                layout: MemLayout::Records,
+                node_cache: 16,
+                ..ChipConfig::default()
+            },
             Preset::Rtl => ChipConfig::default(),
         }
     }

@@ -72,10 +72,13 @@ pub fn probe_valid(i: usize) -> Option<usize> {
     match (PROBES[i].0, PROBES[i].1) {
         ("d_cntr", "pair_a" | "pair_b") => idx("d_cntr", "entry_valid"),
         ("memory", "req_addr" | "req_dst") => idx("memory", "req_valid"),
-        ("dop", "overlap" | "result_a" | "result_b" | "a_leaf" | "b_leaf") => idx("dop", "valid_out"),
-        ("tri_unit", "out_hit" | "out_uncertain" | "out_a" | "out_b") => idx("tri_unit", "out_valid"),
+        ("dop", "overlap" | "result_a" | "result_b" | "a_leaf" | "b_leaf") => {
+            idx("dop", "valid_out")
+        }
+        ("tri_unit", "out_hit" | "out_uncertain" | "out_a" | "out_b") => {
+            idx("tri_unit", "out_valid")
+        }
         ("results", "res_uncertain" | "res_a" | "res_b") => idx("results", "res_valid"),
         _ => None,
     }
 }
-

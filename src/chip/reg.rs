@@ -54,7 +54,9 @@ pub enum Order {
 
 /// The [`MODE`] word.
 pub fn mode_word(order: Order, mode: Mode, layout: MemLayout) -> u32 {
-    (order == Order::Lifo) as u32 | ((mode == Mode::First) as u32) << 1 | ((layout == MemLayout::Records) as u32) << 2
+    (order == Order::Lifo) as u32
+        | ((mode == Mode::First) as u32) << 1
+        | ((layout == MemLayout::Records) as u32) << 2
 }
 
 /// The fields of a [`MODE`] word.
@@ -66,9 +68,16 @@ pub fn mode_fields(w: u32) -> (Order, Mode) {
 /// The [`PORT`] word of `p`, in the RTL's fields (the cycle model runs larger values from
 /// `p` itself; `harness::chip_io::rtl_order` keeps the RTL's queries within them).
 pub fn port_word(p: &Params) -> u32 {
-    let credit = if p.credit == rtl::CREDIT as u32 { 0 } else { p.credit.min(rtl::CREDIT_MAX as u32) };
+    let credit = if p.credit == rtl::CREDIT as u32 {
+        0
+    } else {
+        p.credit.min(rtl::CREDIT_MAX as u32)
+    };
     let outstanding = p.outstanding.clamp(1, rtl::PORT_OUTSTANDING as u32);
-    p.prefetch.min(0xf) | (outstanding - 1) << 4 | ((p.issue_spacing == 1) as u32) << 8 | credit << 9
+    p.prefetch.min(0xf)
+        | (outstanding - 1) << 4
+        | ((p.issue_spacing == 1) as u32) << 8
+        | credit << 9
 }
 
 /// The register writes that start a query after the setup words: the memory image's
@@ -76,7 +85,13 @@ pub fn port_word(p: &Params) -> u32 {
 /// [`image_bases`](super::layout::image_bases), where `cfg`'s layout puts them on `p`'s
 /// memory: [`RecordMap::bases`](super::layout::RecordMap::bases)), the root, the port, `cfg`'s triangle cache and the
 /// record map if not at their reset values, the mode (with `cfg`'s layout) last.
-pub fn control_writes(image: [u32; 4], order: Order, mode: Mode, p: &Params, cfg: &ChipConfig) -> Vec<(u32, u32)> {
+pub fn control_writes(
+    image: [u32; 4],
+    order: Order,
+    mode: Mode,
+    p: &Params,
+    cfg: &ChipConfig,
+) -> Vec<(u32, u32)> {
     let tri_cache = cfg.tri_cache;
     use super::layout::{Dst, Layout, RecordMap};
     let map = RecordMap::new(&Layout::new(cfg), &p.memory);
@@ -93,7 +108,10 @@ pub fn control_writes(image: [u32; 4], order: Order, mode: Mode, p: &Params, cfg
         w.push((PORT, port));
     }
     if tri_cache > 1 {
-        w.push((TRI_CACHE, (tri_cache - 1).min(rtl::TRI_CACHE_LINES as u32 - 1)));
+        w.push((
+            TRI_CACHE,
+            (tri_cache - 1).min(rtl::TRI_CACHE_LINES as u32 - 1),
+        ));
     }
     if map.spread() {
         w.push((MAP, map.word()));

@@ -71,26 +71,44 @@ pub const PAIR_QUEUE_UNIT: &str = "pair_queue_n4";
 
 /// A format's tag in the RTL's file names: `b32` for binary32, else `eEmF` (`e8m15`).
 pub fn format_tag(fmt: Format) -> String {
-    if fmt == Format::BINARY32 { "b32".into() } else { fmt.to_string() }
+    if fmt == Format::BINARY32 {
+        "b32".into()
+    } else {
+        fmt.to_string()
+    }
 }
 
 /// `fold<ii>_` in a folded unit's name (`ii` clocks between its pairs), nothing unfolded.
 fn fold_tag(ii: u32) -> String {
-    if ii > 1 { format!("fold{ii}_") } else { String::new() }
+    if ii > 1 {
+        format!("fold{ii}_")
+    } else {
+        String::new()
+    }
 }
 
 /// The DOP unit's name in `rtl/`, the area study and the timing tables: k DOPTRF lanes in
 /// `fmt` rounding with `r` (`dop_unit_k<k>_<format>_<rounding>`), or (`ii` > 1) k/ii lanes
 /// taking a pair every `ii` clocks (`dop_unit_fold<ii>_k<k>_...`, `rtl::*::DopUnit<k>Fold<ii>`).
 pub fn dop_unit_name(k: usize, fmt: Format, r: Rounding, ii: u32) -> String {
-    format!("dop_unit_{}k{k}_{}_{}", fold_tag(ii), format_tag(fmt), rounding_tag(r))
+    format!(
+        "dop_unit_{}k{k}_{}_{}",
+        fold_tag(ii),
+        format_tag(fmt),
+        rounding_tag(r)
+    )
 }
 
 /// TRI_UNIT's name there: two T.CHECKs in `fmt` rounding with `r` (`tri_unit_<format>_<rounding>`),
 /// or (`ii` > 1) one folded T.CHECK taking a pair every `ii` clocks (`tri_unit_fold<ii>_...`,
 /// `rtl::*::TriUnitFold`).
 pub fn tri_unit_name(fmt: Format, r: Rounding, ii: u32) -> String {
-    format!("tri_unit_{}{}_{}", fold_tag(ii), format_tag(fmt), rounding_tag(r))
+    format!(
+        "tri_unit_{}{}_{}",
+        fold_tag(ii),
+        format_tag(fmt),
+        rounding_tag(r)
+    )
 }
 
 /// A rounding's tag in the RTL's file names.
@@ -208,7 +226,8 @@ impl ChipKind {
     /// cache and memory layout aside: every chip has [`TRI_CACHE_LINES`] lines, host register
     /// 0x127 picks how many are used; [`records`](Self::records) says which layouts it reads).
     pub fn of(cfg: &ChipConfig, dop_interval: u32, tri_interval: u32) -> Option<ChipKind> {
-        ChipKind::built(cfg).find(|k| (k.dop_interval(), k.tri_interval()) == (dop_interval, tri_interval))
+        ChipKind::built(cfg)
+            .find(|k| (k.dop_interval(), k.tri_interval()) == (dop_interval, tri_interval))
     }
 
     /// Whether this chip holds `cfg`'s memory side: one node record per object, the `words`
@@ -221,7 +240,11 @@ impl ChipKind {
             return Err(format!("the RTL chips hold one node record per object; this configuration has node_cache = {}: set [chip] node_cache = 1", cfg.node_cache));
         }
         if cfg.layout == MemLayout::Records && !self.records() {
-            let records: Vec<&str> = ChipKind::ALL.iter().filter(|k| k.records()).map(|k| k.name()).collect();
+            let records: Vec<&str> = ChipKind::ALL
+                .iter()
+                .filter(|k| k.records())
+                .map(|k| k.name())
+                .collect();
             return Err(format!(
                 "{} reads the `words` layout only (of the RTL chips, {} also read `records`); this configuration has layout = \"records\": set [chip] layout = \"words\"",
                 self.name(),
@@ -236,8 +259,16 @@ impl ChipKind {
 
     /// The chips built for `cfg`'s k, formats and roundings, at any TRI_UNIT interval.
     pub fn built(cfg: &ChipConfig) -> impl Iterator<Item = ChipKind> {
-        let base = ChipConfig { tri_cache: 1, layout: super::config::MemLayout::Words, node_cache: 1, ..*cfg };
-        ChipKind::ALL.iter().copied().filter(move |k| k.config() == base)
+        let base = ChipConfig {
+            tri_cache: 1,
+            layout: super::config::MemLayout::Words,
+            node_cache: 1,
+            ..*cfg
+        };
+        ChipKind::ALL
+            .iter()
+            .copied()
+            .filter(move |k| k.config() == base)
     }
 
     /// Memory word bits: a record ([`record_bits`](super::layout::record_bits)) on a chip

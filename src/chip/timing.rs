@@ -8,9 +8,9 @@
 
 use super::config::ChipConfig;
 use super::preset::Preset;
+use super::rtl::{self, ChipKind};
 use super::wscg03::Architecture;
 use crate::format::{Format, Rounding};
-use super::rtl::{self, ChipKind};
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
 
@@ -31,8 +31,16 @@ impl Technology {
     /// The measured table: (its file, its text, what it measured).
     fn table(self) -> Option<(&'static str, &'static str, &'static str)> {
         match self {
-            Technology::Osu018 => Some(("docs/figures/timing.csv", include_str!("../../docs/figures/timing.csv"), "OSU 0.18 um")),
-            Technology::Ecp5 => Some(("docs/figures/timing_ecp5.csv", include_str!("../../docs/figures/timing_ecp5.csv"), "ECP5 LFE5U-85F")),
+            Technology::Osu018 => Some((
+                "docs/figures/timing.csv",
+                include_str!("../../docs/figures/timing.csv"),
+                "OSU 0.18 um",
+            )),
+            Technology::Ecp5 => Some((
+                "docs/figures/timing_ecp5.csv",
+                include_str!("../../docs/figures/timing_ecp5.csv"),
+                "ECP5 LFE5U-85F",
+            )),
             Technology::Paper => None,
         }
     }
@@ -54,9 +62,15 @@ impl Table {
         let mut r = csv::Reader::from_reader(text.as_bytes());
         let head = r.headers().map_err(|e| format!("{file}:1: {e}"))?.clone();
         let col = |name: &str| head.iter().position(|h| h.trim() == name);
-        let unit = col("unit").ok_or_else(|| format!("{file}:1: no `unit` column (re-run scripts/timing-study.sh)"))?;
+        let unit = col("unit").ok_or_else(|| {
+            format!("{file}:1: no `unit` column (re-run scripts/timing-study.sh)")
+        })?;
         // the ASIC table's period, else the FPGA table's (both exact where Fmax is rounded)
-        let (period, fmax, area) = (col("min_period_ns").or_else(|| col("period_ns")), col("fmax_mhz"), col("area_um2"));
+        let (period, fmax, area) = (
+            col("min_period_ns").or_else(|| col("period_ns")),
+            col("fmax_mhz"),
+            col("area_um2"),
+        );
         if period.is_none() && fmax.is_none() {
             return Err(format!("{file}:1: neither a `min_period_ns` nor a `fmax_mhz` column (re-run scripts/timing-study.sh)"));
         }
@@ -90,13 +104,18 @@ impl Table {
 
     /// The table of `tech` (none for [`Technology::Paper`]).
     pub fn of(tech: Technology) -> Result<Option<Table>, String> {
-        tech.table().map(|(file, text, _)| Table::parse(text, file)).transpose()
+        tech.table()
+            .map(|(file, text, _)| Table::parse(text, file))
+            .transpose()
     }
 
     /// um^2 of the units a configuration changes, its DOP unit and TRI_UNIT, folded as
     /// `folds` (as the area study's cells); `None` unless both are measured.
     pub fn datapath_area_um2(&self, cfg: &ChipConfig, folds: Folds) -> Option<f64> {
-        Some(self.areas.get(&dop_unit(cfg, folds.dop))? + self.areas.get(&tri_unit(cfg, folds.tri))?)
+        Some(
+            self.areas.get(&dop_unit(cfg, folds.dop))?
+                + self.areas.get(&tri_unit(cfg, folds.tri))?,
+        )
     }
 }
 
@@ -136,7 +155,10 @@ pub fn tri_unit(cfg: &ChipConfig, tri_interval: u32) -> String {
 /// chip has a row of its own.
 pub fn units(cfg: &ChipConfig, folds: Folds) -> Vec<String> {
     let mut u: Vec<String> = vec![];
-    for name in chains(cfg, folds).into_iter().flat_map(|c| c.into_iter().rev().flatten()) {
+    for name in chains(cfg, folds)
+        .into_iter()
+        .flat_map(|c| c.into_iter().rev().flatten())
+    {
         if !u.contains(&name) {
             u.push(name);
         }
@@ -156,15 +178,43 @@ pub fn units(cfg: &ChipConfig, folds: Folds) -> Vec<String> {
 /// maps them as it builds them, where a lone part's row only approximates that (a binary32
 /// DOPTRF lane alone 7.507 ns, the DOP unit of 24 of them 6.887).
 fn chains(cfg: &ChipConfig, folds: Folds) -> [Vec<Vec<String>>; 3] {
-    let (d, dr) = (rtl::format_tag(cfg.format.dop), rtl::rounding_tag(cfg.dop_rounding.op()));
-    let (t, tr) = (rtl::format_tag(cfg.format.tri), rtl::rounding_tag(cfg.tri_rounding));
+    let (d, dr) = (
+        rtl::format_tag(cfg.format.dop),
+        rtl::rounding_tag(cfg.dop_rounding.op()),
+    );
+    let (t, tr) = (
+        rtl::format_tag(cfg.format.tri),
+        rtl::rounding_tag(cfg.tri_rounding),
+    );
     let chip = || vec![chip_name(cfg, Folds::NONE)];
-    let dop_parts = [vec![dop_unit(cfg, folds.dop)], vec![format!("doptrf_{d}_{dr}")], vec![format!("fp_mul_{d}_{dr}"), format!("fp_add_{d}_{dr}")]];
-    let dop = (folds.dop == 1).then(chip).into_iter().chain(dop_parts).collect();
+    let dop_parts = [
+        vec![dop_unit(cfg, folds.dop)],
+        vec![format!("doptrf_{d}_{dr}")],
+        vec![format!("fp_mul_{d}_{dr}"), format!("fp_add_{d}_{dr}")],
+    ];
+    let dop = (folds.dop == 1)
+        .then(chip)
+        .into_iter()
+        .chain(dop_parts)
+        .collect();
     let tcheck = (folds.tri == 1).then(|| vec![format!("tcheck_{t}_{tr}")]);
-    let tri_parts = vec![format!("fp_mul_{t}_{tr}"), format!("fp_add_{t}_{tr}"), format!("fp_scale_{t}")];
-    let tri = (folds.tri == 1).then(chip).into_iter().chain([vec![tri_unit(cfg, folds.tri)]]).chain(tcheck).chain([tri_parts]).collect();
-    [dop, tri, vec![chip(), vec![rtl::PAIR_QUEUE_UNIT.to_string()]]]
+    let tri_parts = vec![
+        format!("fp_mul_{t}_{tr}"),
+        format!("fp_add_{t}_{tr}"),
+        format!("fp_scale_{t}"),
+    ];
+    let tri = (folds.tri == 1)
+        .then(chip)
+        .into_iter()
+        .chain([vec![tri_unit(cfg, folds.tri)]])
+        .chain(tcheck)
+        .chain([tri_parts])
+        .collect();
+    [
+        dop,
+        tri,
+        vec![chip(), vec![rtl::PAIR_QUEUE_UNIT.to_string()]],
+    ]
 }
 
 /// A folded unit's unfolded counterpart, whose period stands in for the folded unit's where
@@ -183,14 +233,32 @@ fn stand_in(cfg: &ChipConfig, folds: Folds, unit: &str) -> Option<String> {
 
 /// A chain's levels down to its first with a measured row (a folded unit's stand-in counts),
 /// each unit with its row: (the row's name, its period) or None.
-fn largest_measured(table: &Table, cfg: &ChipConfig, folds: Folds, chain: Vec<Vec<String>>) -> Vec<Vec<(String, Option<(String, f64)>)>> {
+fn largest_measured(
+    table: &Table,
+    cfg: &ChipConfig,
+    folds: Folds,
+    chain: Vec<Vec<String>>,
+) -> Vec<Vec<(String, Option<(String, f64)>)>> {
     let row = |u: &String| {
         let own = table.periods.get(u).map(|&ns| (u.clone(), ns));
-        own.or_else(|| stand_in(cfg, folds, u).and_then(|s| table.periods.get(&s).map(|&ns| (format!("{s} (for {u})"), ns))))
+        own.or_else(|| {
+            stand_in(cfg, folds, u).and_then(|s| {
+                table
+                    .periods
+                    .get(&s)
+                    .map(|&ns| (format!("{s} (for {u})"), ns))
+            })
+        })
     };
     let mut levels = vec![];
     for level in chain {
-        let rows: Vec<_> = level.into_iter().map(|u| { let r = row(&u); (u, r) }).collect();
+        let rows: Vec<_> = level
+            .into_iter()
+            .map(|u| {
+                let r = row(&u);
+                (u, r)
+            })
+            .collect();
         let found = rows.iter().any(|(_, r)| r.is_some());
         levels.push(rows);
         if found {
@@ -214,7 +282,12 @@ fn chip_name(cfg: &ChipConfig, folds: Folds) -> String {
 /// `cfg`'s DOP datapath (`path` 0) or T.CHECK's (1), parts first: its chain's units
 /// ([`chains`]).
 fn datapath(cfg: &ChipConfig, folds: Folds, path: usize) -> Vec<String> {
-    chains(cfg, folds)[path].iter().rev().flatten().cloned().collect()
+    chains(cfg, folds)[path]
+        .iter()
+        .rev()
+        .flatten()
+        .cloned()
+        .collect()
 }
 
 /// The slowest of its chains' largest measured blocks ([`largest_measured`]), the blocks
@@ -222,27 +295,64 @@ fn datapath(cfg: &ChipConfig, folds: Folds, path: usize) -> Vec<String> {
 /// measured in its format takes the units of the narrowest measured format at least as wide
 /// (an upper bound of its own). Err: the datapath none of whose units is measured in any such
 /// format.
-fn slowest_unit(table: &Table, cfg: &ChipConfig, folds: Folds) -> Result<(String, f64, Vec<String>, Vec<String>), String> {
-    let has = |c: &ChipConfig, path: usize| largest_measured(table, c, folds, chains(c, folds)[path].clone()).last().is_some_and(|l| l.iter().any(|(_, r)| r.is_some()));
-    let wider = |f: Format| MEASURED_FORMATS.into_iter().filter(move |w| w.exp_bits() >= f.exp_bits() && w.frac_bits() >= f.frac_bits());
+fn slowest_unit(
+    table: &Table,
+    cfg: &ChipConfig,
+    folds: Folds,
+) -> Result<(String, f64, Vec<String>, Vec<String>), String> {
+    let has = |c: &ChipConfig, path: usize| {
+        largest_measured(table, c, folds, chains(c, folds)[path].clone())
+            .last()
+            .is_some_and(|l| l.iter().any(|(_, r)| r.is_some()))
+    };
+    let wider = |f: Format| {
+        MEASURED_FORMATS
+            .into_iter()
+            .filter(move |w| w.exp_bits() >= f.exp_bits() && w.frac_bits() >= f.frac_bits())
+    };
     let mut run = *cfg;
     let mut widened = vec![];
     for (path, name) in [(0, "DOP datapath"), (1, "T.CHECK datapath")] {
-        let own = if path == 0 { cfg.format.dop } else { cfg.format.tri };
+        let own = if path == 0 {
+            cfg.format.dop
+        } else {
+            cfg.format.tri
+        };
         if has(&run, path) {
             continue;
         }
-        let set = |c: &mut ChipConfig, f: Format| if path == 0 { c.format.dop = f } else { c.format.tri = f };
-        let f = wider(own).find(|&f| has(&{ let mut c = run; set(&mut c, f); c }, path));
-        let f = f.ok_or_else(|| format!("{name}'s units ({})", datapath(cfg, folds, path).join(", ")))?;
+        let set = |c: &mut ChipConfig, f: Format| {
+            if path == 0 {
+                c.format.dop = f
+            } else {
+                c.format.tri = f
+            }
+        };
+        let f = wider(own).find(|&f| {
+            has(
+                &{
+                    let mut c = run;
+                    set(&mut c, f);
+                    c
+                },
+                path,
+            )
+        });
+        let f =
+            f.ok_or_else(|| format!("{name}'s units ({})", datapath(cfg, folds, path).join(", ")))?;
         set(&mut run, f);
-        widened.push(format!("the {name} in {f} stands in for {own} (not built in RTL; a wider format)"));
+        widened.push(format!(
+            "the {name} in {f} stands in for {own} (not built in RTL; a wider format)"
+        ));
     }
     let (mut slowest, mut not_measured) = (None::<(String, f64)>, vec![]);
     if folds != Folds::NONE {
         not_measured.push(chip_name(cfg, folds));
     }
-    for level in chains(&run, folds).into_iter().flat_map(|c| largest_measured(table, &run, folds, c)) {
+    for level in chains(&run, folds)
+        .into_iter()
+        .flat_map(|c| largest_measured(table, &run, folds, c))
+    {
         for (u, row) in level {
             if !table.periods.contains_key(&u) && !not_measured.contains(&u) {
                 not_measured.push(u);
@@ -260,11 +370,26 @@ fn slowest_unit(table: &Table, cfg: &ChipConfig, folds: Folds) -> Result<(String
 /// rounding other than the RTL chips', outward DOP lanes and T.CHECK to nearest-even, named
 /// too, so that no such configuration takes a built chip's row for its own).
 fn cfg_tag(cfg: &ChipConfig) -> String {
-    let (d, t) = (rtl::format_tag(cfg.format.dop), rtl::format_tag(cfg.format.tri));
-    let formats = if d == t { format!("{d}_k{}", cfg.k) } else { format!("{d}_{t}_k{}", cfg.k) };
+    let (d, t) = (
+        rtl::format_tag(cfg.format.dop),
+        rtl::format_tag(cfg.format.tri),
+    );
+    let formats = if d == t {
+        format!("{d}_k{}", cfg.k)
+    } else {
+        format!("{d}_{t}_k{}", cfg.k)
+    };
     let (dr, tr) = (cfg.dop_rounding.op(), cfg.tri_rounding);
-    let dop = if dr == Rounding::TowardPositive { String::new() } else { format!("_dop_{}", rtl::rounding_tag(dr)) };
-    let tri = if tr == Rounding::NearestEven { String::new() } else { format!("_tri_{}", rtl::rounding_tag(tr)) };
+    let dop = if dr == Rounding::TowardPositive {
+        String::new()
+    } else {
+        format!("_dop_{}", rtl::rounding_tag(dr))
+    };
+    let tri = if tr == Rounding::NearestEven {
+        String::new()
+    } else {
+        format!("_tri_{}", rtl::rounding_tag(tr))
+    };
     format!("{formats}{dop}{tri}")
 }
 
@@ -320,15 +445,36 @@ impl Clock {
     /// An assumed clock of `mhz`, `why`.
     pub fn assumed(mhz: f64, why: String) -> Clock {
         let period_ns = 1000.0 / mhz;
-        Clock { period_ns, source: PeriodSource::Assumed, technology: None, table: None, slowest: None, not_measured: vec![], estimate: None, assumed: Some(why) }
+        Clock {
+            period_ns,
+            source: PeriodSource::Assumed,
+            technology: None,
+            table: None,
+            slowest: None,
+            not_measured: vec![],
+            estimate: None,
+            assumed: Some(why),
+        }
     }
 
     /// The configuration's period in `tech` with its units folded as `folds` ([`measured`](Self::measured)), or the
     /// preset's paper clock. An error if the table measures neither datapath's units nor a wider
     /// format's.
-    pub fn of(tech: Technology, cfg: &ChipConfig, folds: Folds, preset: Preset) -> Result<Clock, String> {
+    pub fn of(
+        tech: Technology,
+        cfg: &ChipConfig,
+        folds: Folds,
+        preset: Preset,
+    ) -> Result<Clock, String> {
         let Some((file, text, what)) = tech.table() else {
-            let mut c = Clock::assumed(preset.clock_mhz(), format!("the paper's {} MHz (preset {}), assumed", preset.clock_mhz(), preset.name()));
+            let mut c = Clock::assumed(
+                preset.clock_mhz(),
+                format!(
+                    "the paper's {} MHz (preset {}), assumed",
+                    preset.clock_mhz(),
+                    preset.name()
+                ),
+            );
             c.technology = Some(tech);
             return Ok(c);
         };
@@ -360,15 +506,36 @@ impl Clock {
             Some((k, Ok(()))) if !table.periods.contains_key(k.name()) => format!("{} has no row", k.name()),
             Some(_) => String::new(),
         };
-        let (source, estimate) = if why.is_empty() { (PeriodSource::Measured, None) } else { (PeriodSource::Estimated, Some(format!("{unit} stands in for this configuration's chip: {why}"))) };
-        Ok(Clock { period_ns: ns, source, technology: None, table: None, slowest: Some(unit), not_measured, estimate, assumed: None })
+        let (source, estimate) = if why.is_empty() {
+            (PeriodSource::Measured, None)
+        } else {
+            (
+                PeriodSource::Estimated,
+                Some(format!(
+                    "{unit} stands in for this configuration's chip: {why}"
+                )),
+            )
+        };
+        Ok(Clock {
+            period_ns: ns,
+            source,
+            technology: None,
+            table: None,
+            slowest: Some(unit),
+            not_measured,
+            estimate,
+            assumed: None,
+        })
     }
 
     /// This clock for WSCG'03's chip, which has no RTL: a table's period, DATE'05's chip of
     /// the configuration's, stands in (estimated).
     pub fn for_architecture(mut self, arch: Architecture) -> Clock {
         if arch == Architecture::Wscg03 && self.source != PeriodSource::Assumed {
-            let date05 = self.estimate.take().unwrap_or_else(|| format!("{}, measured", self.slowest.as_deref().unwrap_or("-")));
+            let date05 = self
+                .estimate
+                .take()
+                .unwrap_or_else(|| format!("{}, measured", self.slowest.as_deref().unwrap_or("-")));
             (self.source, self.estimate) = (PeriodSource::Estimated, Some(format!("WSCG'03's chip has no RTL; DATE'05's chip of this configuration stands in ({date05})")));
         }
         self
@@ -380,13 +547,26 @@ impl Clock {
         if let Some(why) = &self.assumed {
             return format!("{head}: {why}");
         }
-        let what = self.technology.and_then(Technology::table).map_or("", |t| t.2);
-        let missing = if self.not_measured.is_empty() { "none".into() } else { self.not_measured.join(", ") };
+        let what = self
+            .technology
+            .and_then(Technology::table)
+            .map_or("", |t| t.2);
+        let missing = if self.not_measured.is_empty() {
+            "none".into()
+        } else {
+            self.not_measured.join(", ")
+        };
         let how = match &self.estimate {
             Some(e) => format!("estimated: {e}"),
-            None => format!("measured, the whole chip {}", self.slowest.as_deref().unwrap_or("-")),
+            None => format!(
+                "measured, the whole chip {}",
+                self.slowest.as_deref().unwrap_or("-")
+            ),
         };
-        format!("{head}: {how} ({what}, {}); units not measured: {missing}", self.table.unwrap_or("a timing table"))
+        format!(
+            "{head}: {how} ({what}, {}); units not measured: {missing}",
+            self.table.unwrap_or("a timing table")
+        )
     }
 }
 
@@ -408,44 +588,112 @@ mod tests {
                     pair_queue_n4,1,4.0,x\n\
                     tcheck_e8m15_rne,1,,x\n";
         let t = Table::parse(text, "t.csv").unwrap();
-        let cfg = ChipConfig { k: 6, format: Formats::from(Format::REDUCED), dop_rounding: DopRounding::Outward, ..Default::default() };
+        let cfg = ChipConfig {
+            k: 6,
+            format: Formats::from(Format::REDUCED),
+            dop_rounding: DopRounding::Outward,
+            ..Default::default()
+        };
         let c = Clock::measured(&t, &cfg, Folds::NONE).unwrap();
         // DOP: mul 6.5, add 7.0 (ru); T.CHECK: add 8.0 (rne); queue 4.0; b32's 30 not ours
-        assert_eq!((c.period_ns, c.slowest.as_deref()), (8.0, Some("fp_add_e8m15_rne")));
-        assert!(c.not_measured.contains(&"tcheck_e8m15_rne".to_string()) && c.not_measured.contains(&"chip_e8m15_k6".to_string()));
-        assert!(!c.not_measured.iter().any(|u| u.starts_with("fp_mul") || u.starts_with("fp_add")), "{:?}", c.not_measured);
+        assert_eq!(
+            (c.period_ns, c.slowest.as_deref()),
+            (8.0, Some("fp_add_e8m15_rne"))
+        );
+        assert!(
+            c.not_measured.contains(&"tcheck_e8m15_rne".to_string())
+                && c.not_measured.contains(&"chip_e8m15_k6".to_string())
+        );
+        assert!(
+            !c.not_measured
+                .iter()
+                .any(|u| u.starts_with("fp_mul") || u.starts_with("fp_add")),
+            "{:?}",
+            c.not_measured
+        );
         assert_eq!(c.source, PeriodSource::Estimated);
         assert!(c.source().contains("estimated: fp_add_e8m15_rne stands in for this configuration's chip: chip_e8m15_k6 has no row"), "{}", c.source());
         // columns found by name, in any order; Fmax where no period is given
-        let t = Table::parse("fmax_mhz,unit\n125,pair_queue_n4\n200,fp_mul_e8m15_ru\n150,tcheck_e8m15_rne\n", "t.csv").unwrap();
-        assert_eq!(Clock::measured(&t, &cfg, Folds::NONE).unwrap().period_ns, 8.0);
+        let t = Table::parse(
+            "fmax_mhz,unit\n125,pair_queue_n4\n200,fp_mul_e8m15_ru\n150,tcheck_e8m15_rne\n",
+            "t.csv",
+        )
+        .unwrap();
+        assert_eq!(
+            Clock::measured(&t, &cfg, Folds::NONE).unwrap().period_ns,
+            8.0
+        );
         // the FPGA table's `period_ns` where there is no `min_period_ns`: exact, its Fmax rounded
         let t = Table::parse("unit,fmax_mhz,period_ns\npair_queue_n4,23.1,43.214\ndop_unit_k6_e8m15_ru,30,33.3\ntri_unit_e8m15_rne,30,33.3\n", "t.csv").unwrap();
-        assert_eq!(Clock::measured(&t, &cfg, Folds::NONE).unwrap().period_ns, 43.214);
+        assert_eq!(
+            Clock::measured(&t, &cfg, Folds::NONE).unwrap().period_ns,
+            43.214
+        );
         // a block's row stands for its parts': the DOP unit's 6, not its lone lane's 7.5
         let t = Table::parse("unit,min_period_ns\ndop_unit_k6_e8m15_ru,6\ndoptrf_e8m15_ru,7.5\ntri_unit_e8m15_rne,5\npair_queue_n4,1\n", "t").unwrap();
         let c = Clock::measured(&t, &cfg, Folds::NONE).unwrap();
-        assert_eq!((c.period_ns, c.slowest.as_deref()), (6.0, Some("dop_unit_k6_e8m15_ru")));
-        assert!(!c.not_measured.iter().any(|u| u.ends_with("_ru") && (u.starts_with("doptrf") || u.starts_with("fp_"))), "{:?}", c.not_measured);
+        assert_eq!(
+            (c.period_ns, c.slowest.as_deref()),
+            (6.0, Some("dop_unit_k6_e8m15_ru"))
+        );
+        assert!(
+            !c.not_measured
+                .iter()
+                .any(|u| u.ends_with("_ru") && (u.starts_with("doptrf") || u.starts_with("fp_"))),
+            "{:?}",
+            c.not_measured
+        );
         // the whole chip, where measured, is the period, slower or faster than a lone unit
         // (the chip maps its units as it builds them): its control and the paths between
         // units count; its row makes the period measured
         for chip_ns in [9.0, 7.0] {
             let t = Table::parse(&format!("unit,min_period_ns\nfp_add_e8m15_rne,8\nfp_add_e8m15_ru,7\nchip_e8m15_k6,{chip_ns}\n"), "t").unwrap();
             let c = Clock::measured(&t, &cfg, Folds::NONE).unwrap();
-            assert_eq!((c.period_ns, c.slowest.as_deref(), c.source, c.estimate), (chip_ns, Some("chip_e8m15_k6"), PeriodSource::Measured, None));
+            assert_eq!(
+                (c.period_ns, c.slowest.as_deref(), c.source, c.estimate),
+                (chip_ns, Some("chip_e8m15_k6"), PeriodSource::Measured, None)
+            );
         }
-        let t = Table::parse("unit,min_period_ns\nfp_add_e8m15_rne,8\nfp_add_e8m15_ru,7\nchip_e8m15_k6,9\n", "t").unwrap();
+        let t = Table::parse(
+            "unit,min_period_ns\nfp_add_e8m15_rne,8\nfp_add_e8m15_ru,7\nchip_e8m15_k6,9\n",
+            "t",
+        )
+        .unwrap();
         // a rounding the RTL chips are not built with has a chip of its own name, not measured
-        let t2 = Table::parse("unit,min_period_ns\nfp_add_e8m15_rne,8\nchip_e8m15_k6,9\n", "t").unwrap();
-        let ne = Clock::measured(&t2, &ChipConfig { dop_rounding: DopRounding::NearestEven, ..cfg }, Folds::NONE).unwrap();
+        let t2 = Table::parse(
+            "unit,min_period_ns\nfp_add_e8m15_rne,8\nchip_e8m15_k6,9\n",
+            "t",
+        )
+        .unwrap();
+        let ne = Clock::measured(
+            &t2,
+            &ChipConfig {
+                dop_rounding: DopRounding::NearestEven,
+                ..cfg
+            },
+            Folds::NONE,
+        )
+        .unwrap();
         assert_eq!((ne.period_ns, ne.source), (8.0, PeriodSource::Estimated));
-        assert!(ne.not_measured.contains(&"chip_e8m15_k6_dop_rne".to_string()), "{:?}", ne.not_measured);
+        assert!(
+            ne.not_measured
+                .contains(&"chip_e8m15_k6_dop_rne".to_string()),
+            "{:?}",
+            ne.not_measured
+        );
         // the RTL chip with another memory side stands in (estimated)
-        let cached = ChipConfig { node_cache: 16, ..cfg };
+        let cached = ChipConfig {
+            node_cache: 16,
+            ..cfg
+        };
         let c = Clock::measured(&t, &cached, Folds::NONE).unwrap();
         assert_eq!((c.period_ns, c.source), (9.0, PeriodSource::Estimated));
-        assert!(c.source().contains("chip_e8m15_k6 is built with one node record per object"), "{}", c.source());
+        assert!(
+            c.source()
+                .contains("chip_e8m15_k6 is built with one node record per object"),
+            "{}",
+            c.source()
+        );
     }
 
     /// A datapath none of whose units is measured does not leave the period to the others
@@ -454,67 +702,175 @@ mod tests {
     #[test]
     fn an_unmeasured_datapath_is_estimated_by_a_wider_format_or_refused() {
         let t = Table::parse("unit,min_period_ns\npair_queue_n4,3.4\nfp_mul_b32_ru,3\ntri_unit_b32_rne,7\ntri_unit_e8m15_rne,6\n", "t").unwrap();
-        let cfg = |dop, tri| ChipConfig { k: 6, format: Formats { dop, tri }, ..Default::default() };
+        let cfg = |dop, tri| ChipConfig {
+            k: 6,
+            format: Formats { dop, tri },
+            ..Default::default()
+        };
         let b32 = Format::BINARY32;
-        let e = Clock::measured(&t, &cfg(Format::new(8, 24).unwrap(), b32), Folds::NONE).unwrap_err();
-        assert!(e.starts_with("DOP datapath's units (fp_mul_e8m24_ru"), "{e}");
-        assert!(Clock::measured(&t, &cfg(b32, Format::new(8, 24).unwrap()), Folds::NONE).unwrap_err().starts_with("T.CHECK datapath's units"));
+        let e =
+            Clock::measured(&t, &cfg(Format::new(8, 24).unwrap(), b32), Folds::NONE).unwrap_err();
+        assert!(
+            e.starts_with("DOP datapath's units (fp_mul_e8m24_ru"),
+            "{e}"
+        );
+        assert!(
+            Clock::measured(&t, &cfg(b32, Format::new(8, 24).unwrap()), Folds::NONE)
+                .unwrap_err()
+                .starts_with("T.CHECK datapath's units")
+        );
         let e8m10 = Format::new(8, 10).unwrap();
         let c = Clock::measured(&t, &cfg(e8m10, e8m10), Folds::NONE).unwrap();
         // the DOP datapath has only binary32 measured, T.CHECK e8m15 (the narrowest)
-        assert_eq!((c.period_ns, c.source, c.slowest.as_deref()), (6.0, PeriodSource::Estimated, Some("tri_unit_e8m15_rne")));
+        assert_eq!(
+            (c.period_ns, c.source, c.slowest.as_deref()),
+            (6.0, PeriodSource::Estimated, Some("tri_unit_e8m15_rne"))
+        );
         let why = c.estimate.unwrap();
-        assert!(why.contains("the DOP datapath in binary32 stands in for e8m10") && why.contains("the T.CHECK datapath in e8m15 stands in for e8m10"), "{why}");
+        assert!(
+            why.contains("the DOP datapath in binary32 stands in for e8m10")
+                && why.contains("the T.CHECK datapath in e8m15 stands in for e8m10"),
+            "{why}"
+        );
         // WSCG'03's chip: a table's period is DATE'05's chip's, estimated
-        let osu = Clock::of(Technology::Osu018, &ChipConfig::default(), Folds::NONE, Preset::Rtl).unwrap();
+        let osu = Clock::of(
+            Technology::Osu018,
+            &ChipConfig::default(),
+            Folds::NONE,
+            Preset::Rtl,
+        )
+        .unwrap();
         assert_eq!(osu.source, PeriodSource::Measured);
         let w = osu.clone().for_architecture(Architecture::Wscg03);
-        assert_eq!((w.period_ns, w.source), (osu.period_ns, PeriodSource::Estimated));
+        assert_eq!(
+            (w.period_ns, w.source),
+            (osu.period_ns, PeriodSource::Estimated)
+        );
         assert!(w.source().contains("WSCG'03's chip has no RTL; DATE'05's chip of this configuration stands in (chip_b32_k24, measured)"), "{}", w.source());
-        let paper = Clock::of(Technology::Paper, &ChipConfig::default(), Folds::NONE, Preset::Wscg03).unwrap();
+        let paper = Clock::of(
+            Technology::Paper,
+            &ChipConfig::default(),
+            Folds::NONE,
+            Preset::Wscg03,
+        )
+        .unwrap();
         assert_eq!(paper.clone().for_architecture(Architecture::Wscg03), paper);
     }
 
     #[test]
     fn bad_tables_name_file_and_line() {
-        assert!(Table::parse("name,min_period_ns\n", "t.csv").unwrap_err().starts_with("t.csv:1:"));
-        assert!(Table::parse("unit,cells\n", "t.csv").unwrap_err().contains("min_period_ns"));
-        assert!(Table::parse("unit,min_period_ns\na,1\nb,-3\n", "t.csv").unwrap_err().starts_with("t.csv:3:"));
+        assert!(Table::parse("name,min_period_ns\n", "t.csv")
+            .unwrap_err()
+            .starts_with("t.csv:1:"));
+        assert!(Table::parse("unit,cells\n", "t.csv")
+            .unwrap_err()
+            .contains("min_period_ns"));
+        assert!(Table::parse("unit,min_period_ns\na,1\nb,-3\n", "t.csv")
+            .unwrap_err()
+            .starts_with("t.csv:3:"));
     }
 
     /// A folded configuration counts the folded TRI_UNIT, not T.CHECK or the unfolded
     /// TRI_UNIT, and both the unfolded chip (its glue) and the folded one.
     #[test]
     fn a_folded_configuration_counts_the_folded_unit_and_both_chips() {
-        let cfg = ChipConfig { k: 6, format: Formats::from(Format::REDUCED), dop_rounding: DopRounding::Outward, ..Default::default() };
+        let cfg = ChipConfig {
+            k: 6,
+            format: Formats::from(Format::REDUCED),
+            dop_rounding: DopRounding::Outward,
+            ..Default::default()
+        };
         let u = units(&cfg, Folds { tri: 16, dop: 1 });
-        for name in ["tri_unit_fold16_e8m15_rne", "chip_e8m15_k6", "chip_e8m15_k6_fold16"] {
+        for name in [
+            "tri_unit_fold16_e8m15_rne",
+            "chip_e8m15_k6",
+            "chip_e8m15_k6_fold16",
+        ] {
             assert!(u.contains(&name.to_string()), "{name} not in {u:?}");
         }
-        assert!(!u.iter().any(|n| n == "tcheck_e8m15_rne" || n == "tri_unit_e8m15_rne"), "{u:?}");
-        let t = Table::parse("unit,min_period_ns
+        assert!(
+            !u.iter()
+                .any(|n| n == "tcheck_e8m15_rne" || n == "tri_unit_e8m15_rne"),
+            "{u:?}"
+        );
+        let t = Table::parse(
+            "unit,min_period_ns
 dop_unit_k6_e8m15_ru,5
 tri_unit_e8m15_rne,20
 tri_unit_fold16_e8m15_rne,9
 chip_e8m15_k6,8
-", "t").unwrap();
+",
+            "t",
+        )
+        .unwrap();
         let c = Clock::measured(&t, &cfg, Folds { tri: 16, dop: 1 }).unwrap();
-        assert_eq!((c.period_ns, c.slowest.as_deref(), c.source), (9.0, Some("tri_unit_fold16_e8m15_rne"), PeriodSource::Estimated));
-        assert!(c.source().contains("chip_e8m15_k6_fold16 has no row"), "{}", c.source());
+        assert_eq!(
+            (c.period_ns, c.slowest.as_deref(), c.source),
+            (
+                9.0,
+                Some("tri_unit_fold16_e8m15_rne"),
+                PeriodSource::Estimated
+            )
+        );
+        assert!(
+            c.source().contains("chip_e8m15_k6_fold16 has no row"),
+            "{}",
+            c.source()
+        );
         // the unfolded chip stands for the DOP datapath it shares, not a lone lane's row
         let t = Table::parse("unit,min_period_ns\ntri_unit_fold16_e8m15_rne,9\nchip_e8m15_k6,8\ndoptrf_e8m15_ru,30\n", "t").unwrap();
-        assert_eq!(Clock::measured(&t, &cfg, Folds { tri: 16, dop: 1 }).unwrap().period_ns, 9.0);
-        assert!(c.not_measured.contains(&"chip_e8m15_k6_fold16".to_string()), "{:?}", c.not_measured);
+        assert_eq!(
+            Clock::measured(&t, &cfg, Folds { tri: 16, dop: 1 })
+                .unwrap()
+                .period_ns,
+            9.0
+        );
+        assert!(
+            c.not_measured.contains(&"chip_e8m15_k6_fold16".to_string()),
+            "{:?}",
+            c.not_measured
+        );
         // the folded unit not measured: the unfolded one's period stands in, a lower bound
-        let t = Table::parse("unit,min_period_ns\ndop_unit_k6_e8m15_ru,5\ntri_unit_e8m15_rne,20\nchip_e8m15_k6,8\n", "t").unwrap();
+        let t = Table::parse(
+            "unit,min_period_ns\ndop_unit_k6_e8m15_ru,5\ntri_unit_e8m15_rne,20\nchip_e8m15_k6,8\n",
+            "t",
+        )
+        .unwrap();
         let c = Clock::measured(&t, &cfg, Folds { tri: 16, dop: 1 }).unwrap();
-        assert_eq!((c.period_ns, c.slowest.as_deref()), (20.0, Some("tri_unit_e8m15_rne (for tri_unit_fold16_e8m15_rne)")));
-        assert!(c.not_measured.contains(&"tri_unit_fold16_e8m15_rne".to_string()), "{:?}", c.not_measured);
-        assert!(units(&cfg, Folds { tri: 1, dop: 6 }).contains(&"dop_unit_fold6_k6_e8m15_ru".to_string()));
-        assert_eq!(units(&cfg, Folds { tri: 8, dop: 1 }).iter().filter(|n| n.starts_with("chip_")).collect::<Vec<_>>(), ["chip_e8m15_k6", "chip_e8m15_k6_fold8"]);
+        assert_eq!(
+            (c.period_ns, c.slowest.as_deref()),
+            (
+                20.0,
+                Some("tri_unit_e8m15_rne (for tri_unit_fold16_e8m15_rne)")
+            )
+        );
+        assert!(
+            c.not_measured
+                .contains(&"tri_unit_fold16_e8m15_rne".to_string()),
+            "{:?}",
+            c.not_measured
+        );
+        assert!(units(&cfg, Folds { tri: 1, dop: 6 })
+            .contains(&"dop_unit_fold6_k6_e8m15_ru".to_string()));
+        assert_eq!(
+            units(&cfg, Folds { tri: 8, dop: 1 })
+                .iter()
+                .filter(|n| n.starts_with("chip_"))
+                .collect::<Vec<_>>(),
+            ["chip_e8m15_k6", "chip_e8m15_k6_fold8"]
+        );
         let both = units(&cfg, Folds { tri: 32, dop: 6 });
-        assert_eq!(both.iter().filter(|n| n.starts_with("chip_")).collect::<Vec<_>>(), ["chip_e8m15_k6", "chip_e8m15_k6_dop6_tri32"]);
-        assert!(both.contains(&"dop_unit_fold6_k6_e8m15_ru".to_string()) && both.contains(&"tri_unit_fold32_e8m15_rne".to_string()), "{both:?}");
+        assert_eq!(
+            both.iter()
+                .filter(|n| n.starts_with("chip_"))
+                .collect::<Vec<_>>(),
+            ["chip_e8m15_k6", "chip_e8m15_k6_dop6_tri32"]
+        );
+        assert!(
+            both.contains(&"dop_unit_fold6_k6_e8m15_ru".to_string())
+                && both.contains(&"tri_unit_fold32_e8m15_rne".to_string()),
+            "{both:?}"
+        );
     }
 
     /// The checked-in tables parse, and the paper clock is the preset's.
@@ -522,9 +878,16 @@ chip_e8m15_k6,8
     fn technologies() {
         let cfg = ChipConfig::default();
         let osu = Clock::of(Technology::Osu018, &cfg, Folds::NONE, Preset::Rtl).unwrap();
-        assert!(osu.source().contains("docs/figures/timing.csv"), "{}", osu.source());
+        assert!(
+            osu.source().contains("docs/figures/timing.csv"),
+            "{}",
+            osu.source()
+        );
         // the routed ECP5 chip's row is its configuration's clock
-        let (k6, folds) = (ChipKind::K6E8m15Dop6Tri32.config(), Folds { dop: 6, tri: 32 });
+        let (k6, folds) = (
+            ChipKind::K6E8m15Dop6Tri32.config(),
+            Folds { dop: 6, tri: 32 },
+        );
         let ecp5 = Clock::of(Technology::Ecp5, &k6, folds, Preset::Rtl).unwrap();
         assert_eq!(ecp5.slowest.as_deref(), Some("chip_e8m15_k6_dop6_tri32"));
         let paper = Clock::of(Technology::Paper, &cfg, Folds::NONE, Preset::Wscg03).unwrap();

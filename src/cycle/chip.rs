@@ -9,7 +9,6 @@ use super::d_cntr::{QueueIn, QueueModel, QueueOut};
 use super::delay::Delay;
 use super::dop_unit::DopUnit;
 use super::memory_port::MemPort;
-use std::collections::VecDeque;
 use super::tri_unit::{TriOut, TriUnit};
 use crate::chip::config::ChipConfig;
 use crate::chip::layout::{Dst, Entry, Pair, RecordMap};
@@ -23,6 +22,7 @@ use crate::golden::host::HostSetup;
 use crate::golden::memory::{NodeCache, ObjectImage, TriCache};
 use crate::golden::{dop_unit, tri_unit};
 use serde::Serialize;
+use std::collections::VecDeque;
 
 /// Where the clocks of a running query went, one cause per cycle for the DOP unit's
 /// input, plus the other units' occupancy.
@@ -182,8 +182,20 @@ impl<'a> Chip<'a> {
         counters: bool,
     ) -> Result<Self, String> {
         p.check()?;
-        let dop_values = dop_unit::TransformCache::new(cfg.format.dop, cfg.dop_rounding.op(), setup, &a.tree, &b.tree);
-        let tri_values = tri_unit::TriUnit::new(cfg.format.tri, cfg.tri_rounding, setup, a.tri_count(), b.tri_count());
+        let dop_values = dop_unit::TransformCache::new(
+            cfg.format.dop,
+            cfg.dop_rounding.op(),
+            setup,
+            &a.tree,
+            &b.tree,
+        );
+        let tri_values = tri_unit::TriUnit::new(
+            cfg.format.tri,
+            cfg.tri_rounding,
+            setup,
+            a.tri_count(),
+            b.tri_count(),
+        );
         let queue = QueueModel::with_capacity(p.queue_entries as usize);
         let mut chip = Chip {
             p,
@@ -202,7 +214,10 @@ impl<'a> Chip<'a> {
             q: queue.outputs(),
             queue,
             ahead: VecDeque::new(),
-            held_nodes: [NodeCache::new(cfg.node_cache), NodeCache::new(cfg.node_cache)],
+            held_nodes: [
+                NodeCache::new(cfg.node_cache),
+                NodeCache::new(cfg.node_cache),
+            ],
             to_ask: VecDeque::new(),
             words: VecDeque::new(),
             seq: 0,
@@ -239,7 +254,12 @@ impl<'a> Chip<'a> {
         let in_flight = self.dop.in_flight();
         // the issue spacing, and a folded DOP unit's `in_ready`
         let spaced = self.now >= self.next_issue && self.dop.in_ready(self.now);
-        let issue = go && cur.is_some() && !need[0] && !need[1] && spaced && in_flight + self.leaf_fifo.len() < self.p.credit as usize;
+        let issue = go
+            && cur.is_some()
+            && !need[0]
+            && !need[1]
+            && spaced
+            && in_flight + self.leaf_fifo.len() < self.p.credit as usize;
         // a DOP result: child entries, or a leaf pair
         let dop_out = self.dop.out(self.now);
         let (mut leaf_in, mut grows) = (None, false);
@@ -257,8 +277,8 @@ impl<'a> Chip<'a> {
         // leaf pairs and TRI_UNIT
         let tri_in = go && self.leaf_valid && !need[2] && !need[3];
         let tri_take = tri_in && self.tri.in_ready(self.now);
-        let leaf_out =
-            self.leaf_fifo.out(self.now).is_some() && (halt || (run && (!self.leaf_valid || tri_take)));
+        let leaf_out = self.leaf_fifo.out(self.now).is_some()
+            && (halt || (run && (!self.leaf_valid || tri_take)));
         let out = self.tri.out(self.now).copied();
         let halt_idle = in_flight == 0
             && self.pend.is_empty()
@@ -305,7 +325,14 @@ impl<'a> Chip<'a> {
         // node words come in request order, the current pair's first
         let [fa, fb] = cur.map_or([false; 2], |c| c.fetch);
         let tri_needs = go && self.leaf_valid;
-        let tri_recs = if tri_needs { [self.tri_records[0][self.leaf_tag.0 as usize], self.tri_records[1][self.leaf_tag.1 as usize]] } else { [0; 2] };
+        let tri_recs = if tri_needs {
+            [
+                self.tri_records[0][self.leaf_tag.0 as usize],
+                self.tri_records[1][self.leaf_tag.1 as usize],
+            ]
+        } else {
+            [0; 2]
+        };
         let words = self.words.len();
         let need = [
             go && fa && words == 0,
@@ -319,9 +346,17 @@ impl<'a> Chip<'a> {
     /// The memory request: triangle words first, then the next node word in pair order
     /// (the current pair's only at prefetch 0, any pair's in the buffer else).
     #[inline(always)]
-    fn request(&self, go: bool, cur: Option<&Ahead>, need: [bool; 4], tri_recs: [u32; 2]) -> Option<(Dst, u32)> {
+    fn request(
+        &self,
+        go: bool,
+        cur: Option<&Ahead>,
+        need: [bool; 4],
+        tri_recs: [u32; 2],
+    ) -> Option<(Dst, u32)> {
         let req = if need[2] || need[3] {
-            [(Dst::TriA, tri_recs[0]), (Dst::TriB, tri_recs[1])].into_iter().find(|&(d, _)| need[d as usize] && self.port.free(d))
+            [(Dst::TriA, tri_recs[0]), (Dst::TriB, tri_recs[1])]
+                .into_iter()
+                .find(|&(d, _)| need[d as usize] && self.port.free(d))
         } else {
             None
         };
@@ -401,7 +436,9 @@ impl<'a> Chip<'a> {
         let cur = self.ahead.front();
         let res = c.out.filter(|o| o.kept());
         let leaf = |n: Option<Node>| b(matches!(n, Some(Node::Leaf(_))));
-        let (req_addr, req_dst) = c.req.map_or((0, 0), |(d, id)| (self.addr(d, id) as u64, d as u64));
+        let (req_addr, req_dst) = c
+            .req
+            .map_or((0, 0), |(d, id)| (self.addr(d, id) as u64, d as u64));
         vec![
             b(i.start),
             b(self.run),
@@ -475,8 +512,15 @@ impl<'a> Chip<'a> {
         let after = |t: Option<u64>| t.filter(|&t| t > now).unwrap_or(u64::MAX);
         let slot = self.tri.next_slot(now).filter(|_| c.tri_in);
         let dop_slot = self.dop.next_slot(now).filter(|_| c.cur);
-        let events = after(self.dop.next_out()).min(after(self.leaf_fifo.next_out())).min(after(self.tri.next_out()));
-        Some(events.min(after(Some(self.next_issue))).min(after(slot)).min(after(dop_slot)))
+        let events = after(self.dop.next_out())
+            .min(after(self.leaf_fifo.next_out()))
+            .min(after(self.tri.next_out()));
+        Some(
+            events
+                .min(after(Some(self.next_issue)))
+                .min(after(slot))
+                .min(after(dop_slot)),
+        )
     }
 
     /// The memory port's edge: the request `taken` (destination, record), a response
@@ -548,7 +592,13 @@ impl Clocked for Chip<'_> {
     /// and skips the stretches in which nothing moves in one step
     /// ([`quiet_until`](Chip::quiet_until)): the driver's turn is paid only at a result.
     /// A result shown at `cyc` is not read before `limit` (`i.res_ready`, false, holds).
-    fn wait<M: MemorySide>(&mut self, i: &ChipIn, mem: &mut M, cyc: u64, limit: u64) -> Result<u64, String> {
+    fn wait<M: MemorySide>(
+        &mut self,
+        i: &ChipIn,
+        mem: &mut M,
+        cyc: u64,
+        limit: u64,
+    ) -> Result<u64, String> {
         if i.start || i.host_we {
             return Ok(0);
         }
@@ -560,7 +610,9 @@ impl Clocked for Chip<'_> {
         // the chip's next event, kept while only the request is evaluated anew
         let mut quiet = None;
         loop {
-            quiet = quiet.filter(|&u| u > self.now).or_else(|| self.quiet_until(&i));
+            quiet = quiet
+                .filter(|&u| u > self.now)
+                .or_else(|| self.quiet_until(&i));
             match quiet {
                 None => {
                     self.step(&i, false);
@@ -575,8 +627,14 @@ impl Clocked for Chip<'_> {
                             quiet = None;
                         }
                     } else {
-                        let next_resp = mem.next_response().map_or(u64::MAX, |r| (r + base).max(self.now + 1));
-                        let next_ready = if self.logic.req.is_some() { (mem.next_ready() + base).max(self.now + 1) } else { u64::MAX };
+                        let next_resp = mem
+                            .next_response()
+                            .map_or(u64::MAX, |r| (r + base).max(self.now + 1));
+                        let next_ready = if self.logic.req.is_some() {
+                            (mem.next_ready() + base).max(self.now + 1)
+                        } else {
+                            u64::MAX
+                        };
                         let t = until.min(limit).min(next_resp).min(next_ready);
                         self.skip(t - self.now, until, &i);
                     }
@@ -615,11 +673,25 @@ impl Clocked for Chip<'_> {
             }
         }
         let push = if self.push_root {
-            Some(Entry { pairs: [Pair { a: self.root & 0xffff, b: self.root >> 16, flip: false }, Pair::default()], len: 1 })
+            Some(Entry {
+                pairs: [
+                    Pair {
+                        a: self.root & 0xffff,
+                        b: self.root >> 16,
+                        flip: false,
+                    },
+                    Pair::default(),
+                ],
+                len: 1,
+            })
         } else {
             self.pend.pop_front()
         };
-        let push2 = if self.p.issue_spacing == 1 { self.pend.pop_front() } else { None };
+        let push2 = if self.p.issue_spacing == 1 {
+            self.pend.pop_front()
+        } else {
+            None
+        };
         let probed = probe.then(|| self.probe(&c, i, push.is_some()));
         // ---- host registers
         if i.host_we {
@@ -645,7 +717,12 @@ impl Clocked for Chip<'_> {
             self.dop.issue(now, cur.pair);
             self.cnt[0] += 1;
             self.next_issue = now + self.p.issue_spacing as u64;
-            for (k, id) in self.pair_records(cur.pair).into_iter().enumerate().filter(|&(k, _)| cur.fetch[k]) {
+            for (k, id) in self
+                .pair_records(cur.pair)
+                .into_iter()
+                .enumerate()
+                .filter(|&(k, _)| cur.fetch[k])
+            {
                 // the word queue is in pair order: the head's words are its own
                 let w = self.words.pop_front();
                 assert_eq!(w, Some(id), "node word {k} of {:?}", cur.pair);
@@ -657,10 +734,18 @@ impl Clocked for Chip<'_> {
             for &pair in &e.pairs[..e.len as usize] {
                 let ids = self.pair_records(pair);
                 let fetch = [0, 1].map(|k| self.held_nodes[k].fetch(ids[k]));
-                for (k, d) in [Dst::NodeA, Dst::NodeB].into_iter().enumerate().filter(|&(k, _)| fetch[k]) {
+                for (k, d) in [Dst::NodeA, Dst::NodeB]
+                    .into_iter()
+                    .enumerate()
+                    .filter(|&(k, _)| fetch[k])
+                {
                     self.to_ask.push_back((d, ids[k], self.seq));
                 }
-                self.ahead.push_back(Ahead { pair, seq: self.seq, fetch });
+                self.ahead.push_back(Ahead {
+                    pair,
+                    seq: self.seq,
+                    fetch,
+                });
                 self.seq += 1;
             }
         }
@@ -668,7 +753,14 @@ impl Clocked for Chip<'_> {
         // only with a first)
         let clear = i.start && !self.run;
         if clear || push.is_some() || c.pop {
-            self.q = self.queue.step(&QueueIn { clear, order: self.order, push: push.is_some(), push_data: push.unwrap_or_default(), push2, pop: c.pop });
+            self.q = self.queue.step(&QueueIn {
+                clear,
+                order: self.order,
+                push: push.is_some(),
+                push_data: push.unwrap_or_default(),
+                push2,
+                pop: c.pop,
+            });
         }
         self.push_root = false;
         // ---- leaf pairs and TRI_UNIT
@@ -678,7 +770,10 @@ impl Clocked for Chip<'_> {
             self.cnt[1] += 1;
         }
         if c.leaf_out {
-            let tag = self.leaf_fifo.pop(now).expect("leaf_out reads a visible head");
+            let tag = self
+                .leaf_fifo
+                .pop(now)
+                .expect("leaf_out reads a visible head");
             if !c.halt {
                 self.leaf_valid = true;
                 self.leaf_tag = tag;

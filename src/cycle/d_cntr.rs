@@ -5,9 +5,9 @@
 //!
 //! The entry and its word are [`chip::layout`](crate::chip::layout)'s.
 
-use std::collections::VecDeque;
 use crate::chip::layout::{Entry, ENTRY_MASK};
 use crate::chip::reg::Order;
+use std::collections::VecDeque;
 
 /// The queue's inputs in one clock cycle (the RTL's ports; `T` the entry: the RTL's
 /// 67-bit word, or an [`Entry`]).
@@ -85,7 +85,13 @@ impl<T: QueueEntry> QueueModel<T> {
     /// A queue of `cap` entries (at least 1).
     pub fn with_capacity(cap: usize) -> Self {
         assert!(cap >= 1, "a queue of no entries");
-        QueueModel { cap, order: Order::Fifo, q: VecDeque::new(), max_count: 0, overflow: false }
+        QueueModel {
+            cap,
+            order: Order::Fifo,
+            q: VecDeque::new(),
+            max_count: 0,
+            overflow: false,
+        }
     }
 
     /// Entries it holds when full.
@@ -100,7 +106,11 @@ impl<T: QueueEntry> QueueModel<T> {
 
     /// The outputs in the current state.
     pub fn outputs(&self) -> QueueOut<T> {
-        let top = if self.order == Order::Lifo { self.q.back() } else { self.q.front() };
+        let top = if self.order == Order::Lifo {
+            self.q.back()
+        } else {
+            self.q.front()
+        };
         QueueOut {
             empty: self.q.is_empty(),
             full: self.q.len() == self.cap,
@@ -156,32 +166,65 @@ mod tests {
 
     #[test]
     fn model_orders_and_overflow() {
-        let (push, pop) = (|d| QueueIn { push: true, push_data: d, ..Default::default() }, QueueIn { pop: true, ..Default::default() });
+        let (push, pop) = (
+            |d| QueueIn {
+                push: true,
+                push_data: d,
+                ..Default::default()
+            },
+            QueueIn {
+                pop: true,
+                ..Default::default()
+            },
+        );
         for order in [Order::Fifo, Order::Lifo] {
             let lifo = order == Order::Lifo;
             let mut m = QueueModel::<u128>::new(1);
-            m.step(&QueueIn { clear: true, order, ..Default::default() });
+            m.step(&QueueIn {
+                clear: true,
+                order,
+                ..Default::default()
+            });
             m.step(&push(1));
             m.step(&push(2));
             let o = m.step(&push(3));
             assert!(o.full && o.overflow && o.count == 2 && o.max_count == 2);
             assert_eq!(o.top_data, if lifo { 2 } else { 1 });
             // push and pop while full: no overflow needed, both happen
-            let o = m.step(&QueueIn { push: true, push_data: 4, pop: true, ..Default::default() });
+            let o = m.step(&QueueIn {
+                push: true,
+                push_data: 4,
+                pop: true,
+                ..Default::default()
+            });
             assert_eq!((o.count, o.top_data), (2, if lifo { 4 } else { 2 }));
             m.step(&pop);
             let o = m.step(&pop);
             assert!(o.empty && o.top_data == 0 && o.overflow && o.max_count == 2);
-            let o = m.step(&QueueIn { clear: true, order, ..Default::default() });
+            let o = m.step(&QueueIn {
+                clear: true,
+                order,
+                ..Default::default()
+            });
             assert!(!o.overflow && o.max_count == 0);
             // two pushes in one clock, the second last in (LIFO: on top); the second
             // overflows a queue with room for one
             m.step(&push(5));
-            let o = m.step(&QueueIn { push2: Some(7), ..push(6) });
+            let o = m.step(&QueueIn {
+                push2: Some(7),
+                ..push(6)
+            });
             assert!(o.full && o.overflow && o.count == 2);
             assert_eq!(o.top_data, if lifo { 6 } else { 5 });
-            m.step(&QueueIn { clear: true, order, ..Default::default() });
-            let o = m.step(&QueueIn { push2: Some(7), ..push(6) });
+            m.step(&QueueIn {
+                clear: true,
+                order,
+                ..Default::default()
+            });
+            let o = m.step(&QueueIn {
+                push2: Some(7),
+                ..push(6)
+            });
             assert_eq!((o.count, o.top_data), (2, if lifo { 7 } else { 6 }));
         }
     }

@@ -26,19 +26,30 @@ impl<T> Delay<T> {
     /// At most `cap` values at once (a FIFO's entries).
     pub fn with_capacity(latency: u32, cap: usize) -> Self {
         assert!(latency >= 1, "a pipeline has at least one register");
-        Delay { latency: latency as u64, cap, items: VecDeque::new() }
+        Delay {
+            latency: latency as u64,
+            cap,
+            items: VecDeque::new(),
+        }
     }
 
     /// Enters `v` at edge `now`. Panics if full: the chip's credits must prevent that (an
     /// RTL FIFO would drop the entry).
     pub fn push(&mut self, now: u64, v: T) {
-        assert!(self.items.len() < self.cap, "a write into a full FIFO of {} entries", self.cap);
+        assert!(
+            self.items.len() < self.cap,
+            "a write into a full FIFO of {} entries",
+            self.cap
+        );
         self.items.push_back((now + self.latency, v));
     }
 
     /// The value at the output in cycle `now`, if any (a FIFO: not `empty`).
     pub fn out(&self, now: u64) -> Option<&T> {
-        self.items.front().filter(|(at, _)| *at <= now).map(|(_, v)| v)
+        self.items
+            .front()
+            .filter(|(at, _)| *at <= now)
+            .map(|(_, v)| v)
     }
 
     /// Takes out the value shown in cycle `now` (at its edge).

@@ -10,11 +10,11 @@
 //! [`dop_fold_latency`](crate::chip::rtl::dop_fold_latency)(ii), the RTL's.
 
 use super::delay::Delay;
+use crate::chip::layout::Pair;
+use crate::chip::params::Params;
 use crate::dop::Node;
 use crate::golden::dop_unit::TransformCache;
 use crate::golden::memory::ObjectImage;
-use crate::chip::layout::Pair;
-use crate::chip::params::Params;
 
 /// A DOP test at the unit's output: its pair, both nodes and the verdict.
 #[derive(Clone, Copy, Debug)]
@@ -39,9 +39,22 @@ pub struct DopUnit<'a> {
 impl<'a> DopUnit<'a> {
     /// The DOP unit with `p`'s interval and latency (the folded unit's for an interval over 1)
     /// for k directions; Err if the interval does not divide k.
-    pub fn new(a: &'a ObjectImage, b: &'a ObjectImage, values: TransformCache<'a>, p: &Params, k: usize) -> Result<Self, String> {
+    pub fn new(
+        a: &'a ObjectImage,
+        b: &'a ObjectImage,
+        values: TransformCache<'a>,
+        p: &Params,
+        k: usize,
+    ) -> Result<Self, String> {
         p.check_dop_interval(k)?;
-        Ok(DopUnit { a, b, values, pipe: Delay::new(p.dop_unit_latency()), interval: p.dop_interval as u64, first: None })
+        Ok(DopUnit {
+            a,
+            b,
+            values,
+            pipe: Delay::new(p.dop_unit_latency()),
+            interval: p.dop_interval as u64,
+            first: None,
+        })
     }
 
     /// `in_ready` in cycle `now`: the folded unit's counter is 0 (always, unfolded).
@@ -52,7 +65,9 @@ impl<'a> DopUnit<'a> {
 
     /// The first cycle after `now` where the folded unit's counter is 0 again, if it runs.
     pub fn next_slot(&self, now: u64) -> Option<u64> {
-        self.first.filter(|_| self.interval > 1).map(|t0| now + self.interval - (now - t0) % self.interval)
+        self.first
+            .filter(|_| self.interval > 1)
+            .map(|t0| now + self.interval - (now - t0) % self.interval)
     }
 
     /// Takes the pair at edge `now`: B's node word as d, A's as e.
@@ -60,7 +75,15 @@ impl<'a> DopUnit<'a> {
         self.first.get_or_insert(now);
         let (na, nb) = (self.a.tree.node(pair.a), self.b.tree.node(pair.b));
         let overlap = self.values.overlap(pair.b, pair.a);
-        self.pipe.push(now, DopResult { pair, na, nb, overlap });
+        self.pipe.push(
+            now,
+            DopResult {
+                pair,
+                na,
+                nb,
+                overlap,
+            },
+        );
     }
 
     /// The result at the output in cycle `now` (`valid_out`).

@@ -78,8 +78,18 @@ impl ChipTrace {
 
     /// The sure hits and the uncertain pairs, each sorted.
     pub fn pairs(&self) -> (Vec<(u32, u32)>, Vec<(u32, u32)>) {
-        let mut hits: Vec<_> = self.results.iter().filter(|r| !r.3).map(|r| (r.1, r.2)).collect();
-        let mut unc: Vec<_> = self.results.iter().filter(|r| r.3).map(|r| (r.1, r.2)).collect();
+        let mut hits: Vec<_> = self
+            .results
+            .iter()
+            .filter(|r| !r.3)
+            .map(|r| (r.1, r.2))
+            .collect();
+        let mut unc: Vec<_> = self
+            .results
+            .iter()
+            .filter(|r| r.3)
+            .map(|r| (r.1, r.2))
+            .collect();
         hits.sort_unstable();
         unc.sort_unstable();
         (hits, unc)
@@ -95,7 +105,12 @@ impl ChipTrace {
     /// incomplete. Returns what differs.
     pub fn check(&self, mode: Mode, all: &QueryResult) -> Result<(), String> {
         let (hits, unc) = self.pairs();
-        let sure: Vec<(u32, u32)> = all.pairs.iter().copied().filter(|p| all.uncertain.binary_search(p).is_err()).collect();
+        let sure: Vec<(u32, u32)> = all
+            .pairs
+            .iter()
+            .copied()
+            .filter(|p| all.uncertain.binary_search(p).is_err())
+            .collect();
         if self.overflow {
             return Err("the queue overflowed: the answer is incomplete".into());
         }
@@ -176,7 +191,10 @@ impl MemorySide for Served {
     #[inline]
     fn request(&mut self, cyc: u64, addr: u32) -> Result<(), String> {
         if addr >= self.words {
-            return Err(format!("cycle {cyc}: memory request at word {addr}, past the image ({} words)", self.words));
+            return Err(format!(
+                "cycle {cyc}: memory request at word {addr}, past the image ({} words)",
+                self.words
+            ));
         }
         self.model.request(cyc, addr);
         Ok(())
@@ -198,14 +216,34 @@ pub fn run_query<C: Clocked>(
     skip: bool,
 ) -> Result<ChipTrace, ChipError> {
     d.memory.check().map_err(ChipError)?;
-    let idle = ChipIn { res_ready: true, ..Default::default() };
+    let idle = ChipIn {
+        res_ready: true,
+        ..Default::default()
+    };
     for &(a, v) in writes {
-        chip.step(&ChipIn { host_we: true, host_addr: a, host_data: v, ..idle }, false);
+        chip.step(
+            &ChipIn {
+                host_we: true,
+                host_addr: a,
+                host_data: v,
+                ..idle
+            },
+            false,
+        );
     }
-    let p = chip.step(&ChipIn { start: true, ..idle }, probe);
+    let p = chip.step(
+        &ChipIn {
+            start: true,
+            ..idle
+        },
+        probe,
+    );
     observe(0, p).map_err(|e| ChipError(format!("cycle 0: {e}")))?;
     fault(chip, 0)?;
-    let mut mem = Served { model: MemModel::new(d.memory, d.word_bits), words: d.words };
+    let mut mem = Served {
+        model: MemModel::new(d.memory, d.word_bits),
+        words: d.words,
+    };
     let mut results = vec![];
     let mut cyc = 1u64;
     while cyc <= d.max_cycles {
@@ -224,7 +262,12 @@ pub fn run_query<C: Clocked>(
             });
         }
         let ready = mem.ready(cyc);
-        let i = ChipIn { mem_req_ready: ready, mem_resp: mem.model.respond(cyc), res_ready: d.reader.ready(cyc), ..idle };
+        let i = ChipIn {
+            mem_req_ready: ready,
+            mem_resp: mem.model.respond(cyc),
+            res_ready: d.reader.ready(cyc),
+            ..idle
+        };
         if out.mem_req_valid && ready {
             mem.request(cyc, out.mem_req_addr).map_err(ChipError)?;
         }
@@ -234,7 +277,12 @@ pub fn run_query<C: Clocked>(
         // the level on its own: no result read in this cycle, nor before `limit`
         let read = out.res_valid && i.res_ready;
         if skip && !probe && !read {
-            let limit = if out.res_valid { d.reader.next_ready(cyc) } else { u64::MAX }.min(d.max_cycles + 1);
+            let limit = if out.res_valid {
+                d.reader.next_ready(cyc)
+            } else {
+                u64::MAX
+            }
+            .min(d.max_cycles + 1);
             let n = chip.wait(&i, &mut mem, cyc, limit).map_err(ChipError)?;
             if n > 0 {
                 cyc += n;
@@ -273,7 +321,12 @@ pub struct Lockstep<A, B> {
 
 impl<A: Clocked, B: Clocked> Lockstep<A, B> {
     pub fn new(a: A, b: B, names: (&'static str, &'static str)) -> Self {
-        Lockstep { a, b, names, diff: None }
+        Lockstep {
+            a,
+            b,
+            names,
+            diff: None,
+        }
     }
 }
 
@@ -285,7 +338,10 @@ impl<A: Clocked, B: Clocked> Clocked for Lockstep<A, B> {
     fn step(&mut self, i: &ChipIn, _probe: bool) -> Option<Vec<u64>> {
         let (oa, ob) = (self.a.outputs().specified(), self.b.outputs().specified());
         if self.diff.is_none() && oa != ob {
-            self.diff = Some(format!("outputs differ: {} {oa:?}, {} {ob:?}", self.names.0, self.names.1));
+            self.diff = Some(format!(
+                "outputs differ: {} {oa:?}, {} {ob:?}",
+                self.names.0, self.names.1
+            ));
         }
         let pa = self.a.step(i, true).expect("probed");
         let pb = self.b.step(i, true).expect("probed");
@@ -345,7 +401,12 @@ impl<W: std::io::Write> ProbeVcd<W> {
         }
         w.upscope()?;
         w.enddefinitions()?;
-        Ok(ProbeVcd { w, ids, last: vec![None; PROBES.len()], window })
+        Ok(ProbeVcd {
+            w,
+            ids,
+            last: vec![None; PROBES.len()],
+            window,
+        })
     }
 
     /// The values of cycle `t`.
@@ -365,8 +426,16 @@ impl<W: std::io::Write> ProbeVcd<W> {
                 stamped = true;
             }
             let width = PROBES[k].2;
-            let bits: Vec<vcd::Value> =
-                (0..width).rev().map(|b| if v >> b & 1 == 1 { vcd::Value::V1 } else { vcd::Value::V0 }).collect();
+            let bits: Vec<vcd::Value> = (0..width)
+                .rev()
+                .map(|b| {
+                    if v >> b & 1 == 1 {
+                        vcd::Value::V1
+                    } else {
+                        vcd::Value::V0
+                    }
+                })
+                .collect();
             self.w.change_vector(id, &bits)?;
         }
         Ok(())
@@ -383,7 +452,10 @@ pub fn open_vcd(
     let io = |e: std::io::Error| ChipError(format!("{}: {e}", path.display()));
     if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
         if dir.is_file() {
-            return Err(ChipError(format!("{}: is a file, not a directory for the VCD files", dir.display())));
+            return Err(ChipError(format!(
+                "{}: is a file, not a directory for the VCD files",
+                dir.display()
+            )));
         }
         std::fs::create_dir_all(dir).map_err(io)?;
     }
@@ -409,13 +481,24 @@ mod tests {
         let span = q.image_span(&p.memory);
         let writes = q.control_writes(Order::Lifo, Mode::All, &p);
         for (words, probe) in [(span, false), (span / 2, false), (span / 2, true)] {
-            let mut c = crate::cycle::chip::Chip::new(&q.cfg, p, &q.a, &q.b, &setup, false).unwrap();
-            let d = Drive { memory: p.memory, word_bits: q.layout.word_bits(), reader: Reader::default(), words, max_cycles: 1 << 30 };
+            let mut c =
+                crate::cycle::chip::Chip::new(&q.cfg, p, &q.a, &q.b, &setup, false).unwrap();
+            let d = Drive {
+                memory: p.memory,
+                word_bits: q.layout.word_bits(),
+                reader: Reader::default(),
+                words,
+                max_cycles: 1 << 30,
+            };
             let r = run_query(&mut c, &writes, &d, probe, |_, _| Ok(()), !probe);
             match (words == span, r) {
                 (true, r) => assert!(r.is_ok(), "the whole image: {:?}", r.err()),
                 (false, Ok(_)) => panic!("half the image ({words} of {span} words): no error"),
-                (false, Err(e)) => assert!(e.0.contains(&format!("past the image ({words} words)")), "{}", e.0),
+                (false, Err(e)) => assert!(
+                    e.0.contains(&format!("past the image ({words} words)")),
+                    "{}",
+                    e.0
+                ),
             }
         }
     }

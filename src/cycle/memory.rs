@@ -3,8 +3,8 @@
 //! memory for every level: the cycle model, the rust-hdl driver and (the same rules in
 //! Verilog) `scripts/verilog/chip_tb.v`.
 
-use std::collections::VecDeque;
 use crate::chip::memory::{Ddr, MemTiming, Memory};
+use std::collections::VecDeque;
 
 /// What the memory did during a query.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize)]
@@ -50,7 +50,12 @@ impl MemModel {
     /// The model of `m` for memory words of `word_bits` bits.
     pub fn new(m: Memory, word_bits: u32) -> Self {
         let (timing, beats, ddr) = match m {
-            Memory::Ideal(t) => (t, t.bus_bits.map_or(1, |b| (word_bits as u64).div_ceil(b as u64).max(1)), None),
+            Memory::Ideal(t) => (
+                t,
+                t.bus_bits
+                    .map_or(1, |b| (word_bits as u64).div_ceil(b as u64).max(1)),
+                None,
+            ),
             Memory::Ddr(d) => {
                 let banks = d.banks as usize;
                 let beat_bits = d.bus_bits as u64 * d.burst as u64;
@@ -65,7 +70,14 @@ impl MemModel {
                 (MemTiming::default(), 1, Some(state))
             }
         };
-        MemModel { timing, beats, ddr, pending: VecDeque::new(), next_accept: 0, counters: MemCounters::default() }
+        MemModel {
+            timing,
+            beats,
+            ddr,
+            pending: VecDeque::new(),
+            next_accept: 0,
+            counters: MemCounters::default(),
+        }
     }
 
     /// `mem_req_ready` in cycle `cyc`.
@@ -138,7 +150,15 @@ mod tests {
 
     #[test]
     fn model_answers_after_latency_and_spaces_requests() {
-        let mut m = MemModel::new(MemTiming { latency: 3, interval: 2, bus_bits: None }.into(), 64);
+        let mut m = MemModel::new(
+            MemTiming {
+                latency: 3,
+                interval: 2,
+                bus_bits: None,
+            }
+            .into(),
+            64,
+        );
         assert!(m.ready(0));
         m.request(1, 7);
         assert!(!m.ready(2) && m.ready(3));
@@ -149,8 +169,18 @@ mod tests {
         assert_eq!(m.respond(5), None);
         assert_eq!(m.respond(6), Some(9));
         assert!(m.is_idle());
-        assert!(MemTiming { latency: 0, ..Default::default() }.check().is_err());
-        assert!(MemTiming { bus_bits: Some(0), ..Default::default() }.check().is_err());
+        assert!(MemTiming {
+            latency: 0,
+            ..Default::default()
+        }
+        .check()
+        .is_err());
+        assert!(MemTiming {
+            bus_bits: Some(0),
+            ..Default::default()
+        }
+        .check()
+        .is_err());
     }
 
     /// A 200-bit word on a 64-bit bus moves in 4 clocks: latency 3 answers a request at 1 in
@@ -158,13 +188,29 @@ mod tests {
     /// although the memory could take one every clock; on a 256-bit bus, as without a width.
     #[test]
     fn a_narrow_bus_moves_a_word_in_several_clocks() {
-        let mut m = MemModel::new(MemTiming { latency: 3, interval: 1, bus_bits: Some(64) }.into(), 200);
+        let mut m = MemModel::new(
+            MemTiming {
+                latency: 3,
+                interval: 1,
+                bus_bits: Some(64),
+            }
+            .into(),
+            200,
+        );
         m.request(1, 7);
         assert!(!m.ready(4) && m.ready(5));
         m.request(5, 8);
         assert_eq!((m.respond(6), m.respond(7)), (None, Some(7)));
         assert_eq!((m.respond(10), m.respond(11)), (None, Some(8)));
-        let mut m = MemModel::new(MemTiming { latency: 3, interval: 1, bus_bits: Some(256) }.into(), 200);
+        let mut m = MemModel::new(
+            MemTiming {
+                latency: 3,
+                interval: 1,
+                bus_bits: Some(256),
+            }
+            .into(),
+            200,
+        );
         m.request(1, 7);
         assert!(m.ready(2));
         assert_eq!((m.respond(3), m.respond(4)), (None, Some(7)));
@@ -190,14 +236,40 @@ mod tests {
             assert_eq!(m.respond(cyc - 1), None);
             assert_eq!(m.respond(cyc), Some(addr));
         }
-        assert_eq!(m.counters, MemCounters { words: 4, page_hits: 1, page_misses: 3, bank_conflicts: 2 });
+        assert_eq!(
+            m.counters,
+            MemCounters {
+                words: 4,
+                page_hits: 1,
+                page_misses: 3,
+                bank_conflicts: 2
+            }
+        );
         // a word of 2 bursts (257 bytes) moves in 16 clocks: a miss costs 20 + 8
         let mut m = MemModel::new(Memory::Ddr(Ddr::WSCG03), 2056);
         m.request(5, 0);
         assert_eq!(m.next_response(), Some(33));
-        assert!(Ddr { hit: 4, ..Ddr::WSCG03 }.check().unwrap_err().contains("burst <= hit <= miss"));
-        assert!(Ddr { banks: 0, ..Ddr::WSCG03 }.check().unwrap_err().contains("banks"));
-        assert!(Ddr { banks: 65, ..Ddr::WSCG03 }.check().unwrap_err().contains("at most 64 banks"));
+        assert!(Ddr {
+            hit: 4,
+            ..Ddr::WSCG03
+        }
+        .check()
+        .unwrap_err()
+        .contains("burst <= hit <= miss"));
+        assert!(Ddr {
+            banks: 0,
+            ..Ddr::WSCG03
+        }
+        .check()
+        .unwrap_err()
+        .contains("banks"));
+        assert!(Ddr {
+            banks: 65,
+            ..Ddr::WSCG03
+        }
+        .check()
+        .unwrap_err()
+        .contains("at most 64 banks"));
         assert_eq!(Ddr::preset("wscg03"), Some(Ddr::WSCG03));
         assert_eq!(Ddr::preset("ddr9"), None);
     }

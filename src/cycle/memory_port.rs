@@ -1,9 +1,9 @@
 //! The chip's memory port in the cycle model: the requests outstanding and where each
 //! response goes ([`rtl::memory_port`](crate::rtl) builds the same port in RTL).
 
-use std::collections::VecDeque;
 use crate::chip::layout::Dst;
 use crate::chip::params::Params;
+use std::collections::VecDeque;
 
 /// The chip's memory port: up to `max` requests outstanding, at most one per triangle
 /// destination (a response replaces its held word; node words queue for their pairs),
@@ -17,14 +17,21 @@ pub struct MemPort {
 
 impl MemPort {
     pub fn new(max: u32) -> Self {
-        assert!((1..=Params::MAX_OUTSTANDING).contains(&max), "1 to {} requests outstanding", Params::MAX_OUTSTANDING);
-        MemPort { max: max as usize, outstanding: VecDeque::new() }
+        assert!(
+            (1..=Params::MAX_OUTSTANDING).contains(&max),
+            "1 to {} requests outstanding",
+            Params::MAX_OUTSTANDING
+        );
+        MemPort {
+            max: max as usize,
+            outstanding: VecDeque::new(),
+        }
     }
-
 
     /// Can a request go out now, and to `d`?
     pub fn free(&self, d: Dst) -> bool {
-        self.outstanding.len() < self.max && !(d.is_tri() && self.outstanding.iter().any(|o| o.0 == d))
+        self.outstanding.len() < self.max
+            && !(d.is_tri() && self.outstanding.iter().any(|o| o.0 == d))
     }
 
     /// An accepted request for the word `id` of `d`.

@@ -67,26 +67,47 @@ pub fn run_query(
     rec: Record,
 ) -> Result<(drive::ChipTrace, Option<chip::Stats>), String> {
     let mut c = chip::Chip::new(&chip.cfg, p, &chip.a, &chip.b, setup, rec.counters)?;
-    let d = drive::Drive { memory: p.memory, word_bits: chip.layout.word_bits(), reader, words: chip.image_span(&p.memory), max_cycles };
+    let d = drive::Drive {
+        memory: p.memory,
+        word_bits: chip.layout.word_bits(),
+        reader,
+        words: chip.image_span(&p.memory),
+        max_cycles,
+    };
     let writes = chip.control_writes(order, mode, &p);
-    let Record { vcd, probes: mut observer, .. } = rec;
+    let Record {
+        vcd,
+        probes: mut observer,
+        ..
+    } = rec;
     let trace = if vcd.is_none() && observer.is_none() {
         drive::run_query(&mut c, &writes, &d, false, |_, _| Ok(()), true)
     } else {
         let mut w = match vcd {
-            Some((path, scopes, window)) => Some((drive::open_vcd(path, scopes, window).map_err(|e| e.0)?, path)),
+            Some((path, scopes, window)) => Some((
+                drive::open_vcd(path, scopes, window).map_err(|e| e.0)?,
+                path,
+            )),
             None => None,
         };
-        drive::run_query(&mut c, &writes, &d, true, |t, v| {
-            let v = v.unwrap_or_default();
-            if let Some((w, path)) = &mut w {
-                w.cycle(t, &v).map_err(|e| format!("{}: {e}", path.display()))?;
-            }
-            match observer.as_deref_mut() {
-                Some(f) => f(t, &v),
-                None => Ok(()),
-            }
-        }, false)
+        drive::run_query(
+            &mut c,
+            &writes,
+            &d,
+            true,
+            |t, v| {
+                let v = v.unwrap_or_default();
+                if let Some((w, path)) = &mut w {
+                    w.cycle(t, &v)
+                        .map_err(|e| format!("{}: {e}", path.display()))?;
+                }
+                match observer.as_deref_mut() {
+                    Some(f) => f(t, &v),
+                    None => Ok(()),
+                }
+            },
+            false,
+        )
     }
     .map_err(|e| e.0)?;
     Ok((trace, c.stats))

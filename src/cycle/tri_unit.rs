@@ -13,9 +13,9 @@
 use super::delay::Delay;
 use crate::chip::params::Params;
 use crate::fold;
-use crate::golden::tri_unit::TriUnit as Values;
-use crate::golden::tri_unit::TriResult;
 use crate::golden::memory::{Held, ObjectImage, TriWord};
+use crate::golden::tri_unit::TriResult;
+use crate::golden::tri_unit::TriUnit as Values;
 use crate::traversal::{keep_words, spare_words};
 
 /// A verdict at TRI_UNIT's output: the triangle pair (A's, B's) and the result.
@@ -63,32 +63,53 @@ impl Drop for TriUnit<'_> {
 impl<'a> TriUnit<'a> {
     /// TRI_UNIT with `p`'s interval, latency (the folded unit's schedule's for an interval
     /// over 1) and FIFO depth.
-    pub fn new(a: &'a ObjectImage, b: &'a ObjectImage, values: Values<'a>, p: &Params) -> Result<Self, String> {
+    pub fn new(
+        a: &'a ObjectImage,
+        b: &'a ObjectImage,
+        values: Values<'a>,
+        p: &Params,
+    ) -> Result<Self, String> {
         let latency = match p.tri_interval {
             1 => p.tri_latency,
-            ii => fold::tri_unit_latency(&fold::tri_unit_plan(ii as usize, fold::plan::Binding::Shared)?) as u32,
+            ii => fold::tri_unit_latency(&fold::tri_unit_plan(
+                ii as usize,
+                fold::plan::Binding::Shared,
+            )?) as u32,
         };
         let open = Delay::with_capacity(latency, p.tri_fifo as usize);
-        Ok(TriUnit { a, b, words: spare_words(a, b), values, open, interval: p.tri_interval as u64, first: None })
+        Ok(TriUnit {
+            a,
+            b,
+            words: spare_words(a, b),
+            values,
+            open,
+            interval: p.tri_interval as u64,
+            first: None,
+        })
     }
 
     /// `in_ready` in cycle `now`: the result FIFO has room for one more pair, and the
     /// folded unit's counter is 0.
     pub fn in_ready(&self, now: u64) -> bool {
         // unfolded without a division: this is asked every clock
-        self.open.has_room() && (self.interval == 1 || self.first.is_none_or(|t0| (now - t0) % self.interval == 0))
+        self.open.has_room()
+            && (self.interval == 1 || self.first.is_none_or(|t0| (now - t0) % self.interval == 0))
     }
 
     /// The first cycle after `now` where the folded unit's counter is 0 again, if it runs.
     pub fn next_slot(&self, now: u64) -> Option<u64> {
-        self.first.filter(|_| self.interval > 1).map(|t0| now + self.interval - (now - t0) % self.interval)
+        self.first
+            .filter(|_| self.interval > 1)
+            .map(|t0| now + self.interval - (now - t0) % self.interval)
     }
 
     /// Takes the pair of triangles `(ta, tb)` at edge `now`.
     pub fn take(&mut self, now: u64, ta: u32, tb: u32) {
         self.first.get_or_insert(now);
         let ((a, b), [wa, wb]) = ((self.a, self.b), &mut self.words);
-        let res = self.values.test(ta, wa.get(ta, || a.tri(ta)), tb, wb.get(tb, || b.tri(tb)));
+        let res = self
+            .values
+            .test(ta, wa.get(ta, || a.tri(ta)), tb, wb.get(tb, || b.tri(tb)));
         self.open.push(now, TriOut { a: ta, b: tb, res });
     }
 

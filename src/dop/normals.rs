@@ -13,7 +13,14 @@ use crate::chip::config::{check_k, SUPPORTED_K};
 
 const AXES: [[i8; 3]; 3] = [[1, 0, 0], [0, 1, 0], [0, 0, 1]];
 const CORNERS4: [[i8; 3]; 4] = [[1, 1, 1], [1, -1, 1], [1, 1, -1], [1, -1, -1]];
-const EDGES6: [[i8; 3]; 6] = [[1, 1, 0], [1, 0, 1], [0, 1, 1], [1, -1, 0], [1, 0, -1], [0, 1, -1]];
+const EDGES6: [[i8; 3]; 6] = [
+    [1, 1, 0],
+    [1, 0, 1],
+    [0, 1, 1],
+    [1, -1, 0],
+    [1, 0, -1],
+    [0, 1, -1],
+];
 /// The three corner diagonals of the 24-DOP (as in FCL): x+y-z, x-y+z, -x+y+z.
 const CORNERS3: [[i8; 3]; 3] = [[1, 1, -1], [1, -1, 1], [-1, 1, 1]];
 
@@ -56,8 +63,13 @@ pub struct HullTriangle {
 impl DopNormals {
     /// The normal set for `k` (one of [`SUPPORTED_K`]), built once per process.
     pub fn get(k: usize) -> Result<&'static DopNormals, String> {
-        static SETS: [OnceLock<DopNormals>; 5] =
-            [OnceLock::new(), OnceLock::new(), OnceLock::new(), OnceLock::new(), OnceLock::new()];
+        static SETS: [OnceLock<DopNormals>; 5] = [
+            OnceLock::new(),
+            OnceLock::new(),
+            OnceLock::new(),
+            OnceLock::new(),
+            OnceLock::new(),
+        ];
         check_k(k)?;
         let slot = SUPPORTED_K.iter().position(|&s| s == k).expect("checked");
         Ok(SETS[slot].get_or_init(|| DopNormals::build(k)))
@@ -72,11 +84,19 @@ impl DopNormals {
             26 => [&AXES[..], &CORNERS4[..], &EDGES6[..]].concat(),
             _ => unreachable!("checked by get()"),
         };
-        let to_v = |n: &[i8; 3], s: f64| Vector3::new(n[0] as f64 * s, n[1] as f64 * s, n[2] as f64 * s);
-        let b: Vec<Vector3<f64>> =
-            half.iter().map(|n| to_v(n, 1.0)).chain(half.iter().map(|n| to_v(n, -1.0))).collect();
+        let to_v =
+            |n: &[i8; 3], s: f64| Vector3::new(n[0] as f64 * s, n[1] as f64 * s, n[2] as f64 * s);
+        let b: Vec<Vector3<f64>> = half
+            .iter()
+            .map(|n| to_v(n, 1.0))
+            .chain(half.iter().map(|n| to_v(n, -1.0)))
+            .collect();
         let js = convex_hull_triangles(&b);
-        assert!(js.len() <= MAX_HULL, "k = {k}: {} hull triangles, more than MAX_HULL", js.len());
+        assert!(
+            js.len() <= MAX_HULL,
+            "k = {k}: {} hull triangles, more than MAX_HULL",
+            js.len()
+        );
         let mut planes = [[0.0; MAX_HULL]; 3];
         let hull = js
             .into_iter()
@@ -88,14 +108,23 @@ impl DopNormals {
                 let n = if n.dot(&u[0]) < 0.0 { -n } else { n };
                 let plane = n / n.dot(&u[0]);
                 (0..3).for_each(|c| planes[c][t] = plane[c]);
-                HullTriangle { j, inv: m.try_inverse().expect("hull triangles are not flat") }
+                HullTriangle {
+                    j,
+                    inv: m.try_inverse().expect("hull triangles are not flat"),
+                }
             })
             .collect();
         let mut cols = [[0.0; HALF_LANES]; 3];
         for (i, n) in half.iter().enumerate() {
             (0..3).for_each(|c| cols[c][i] = n[c] as f64);
         }
-        DopNormals { k, b, hull, half: cols, planes }
+        DopNormals {
+            k,
+            b,
+            hull,
+            half: cols,
+            planes,
+        }
     }
 
     /// Index of the antiparallel normal.
@@ -169,7 +198,10 @@ mod tests {
                 let phi = q as f64 * 2.399963229728653;
                 let r = (1.0 - z * z).sqrt();
                 let d = Vector3::new(r * phi.cos(), r * phi.sin(), z);
-                let covered = s.hull.iter().any(|t| (t.inv * d).iter().all(|&x| x >= -1e-12));
+                let covered = s
+                    .hull
+                    .iter()
+                    .any(|t| (t.inv * d).iter().all(|&x| x >= -1e-12));
                 assert!(covered, "k={k} direction {d:?} in no cone");
             }
         }
@@ -177,6 +209,8 @@ mod tests {
 
     #[test]
     fn unsupported_k_is_an_error() {
-        assert!(DopNormals::get(8).unwrap_err().contains("6, 14, 18, 24, 26"));
+        assert!(DopNormals::get(8)
+            .unwrap_err()
+            .contains("6, 14, 18, 24, 26"));
     }
 }

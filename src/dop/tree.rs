@@ -82,7 +82,10 @@ pub struct Dop {
 
 impl Default for Dop {
     fn default() -> Self {
-        Dop { d: [0.0; 2 * HALF_LANES], k: 0 }
+        Dop {
+            d: [0.0; 2 * HALF_LANES],
+            k: 0,
+        }
     }
 }
 
@@ -179,7 +182,8 @@ impl DopTree {
             let tag = (self.id as u64) << 32 | t as u64;
             let line = (t as usize).wrapping_add(self.id as usize * 0x9e37) % HELD_LEAVES;
             if lines.tags.is_empty() {
-                (lines.tags, lines.values) = (vec![u64::MAX; HELD_LEAVES], vec![0.0; HELD_LEAVES * MAX_K]);
+                (lines.tags, lines.values) =
+                    (vec![u64::MAX; HELD_LEAVES], vec![0.0; HELD_LEAVES * MAX_K]);
             }
             let held = &mut lines.values[line * MAX_K..][..self.k];
             if lines.tags[line] != tag {
@@ -206,7 +210,10 @@ impl DopTree {
     /// never -0 (the padding is >= +0), so the two agree.
     fn leaf_dop(&self, t: &Tri, d: &mut [f64]) {
         let [bx, by, bz] = &self.normals.half;
-        let (mut up, mut down) = ([f64::NEG_INFINITY; HALF_LANES], [f64::NEG_INFINITY; HALF_LANES]);
+        let (mut up, mut down) = (
+            [f64::NEG_INFINITY; HALF_LANES],
+            [f64::NEG_INFINITY; HALF_LANES],
+        );
         for v in t {
             let (x, y, z) = (v.x, v.y, v.z);
             let (ax, ay, az) = (x.abs(), y.abs(), z.abs());
@@ -272,7 +279,9 @@ impl DopTree {
     pub fn coord_bound(&self) -> f64 {
         let d = self.dop(Self::ROOT);
         let h = self.k / 2;
-        (0..3).map(|a| d[a].abs().max(d[a + h].abs())).fold(0.0, f64::max)
+        (0..3)
+            .map(|a| d[a].abs().max(d[a + h].abs()))
+            .fold(0.0, f64::max)
     }
 
     /// Adds the subtree of the triangles `idx` in pre-order; its root's number.
@@ -291,7 +300,11 @@ impl DopTree {
         // The lower half by centroid (ties by index: a total order, so the halves are the
         // same sets as a sort's, in linear time; their order within is the children's to set).
         let half = idx.len() / 2;
-        idx.select_nth_unstable_by(half, |&p, &q| centroids[p as usize][axis].total_cmp(&centroids[q as usize][axis]).then(p.cmp(&q)));
+        idx.select_nth_unstable_by(half, |&p, &q| {
+            centroids[p as usize][axis]
+                .total_cmp(&centroids[q as usize][axis])
+                .then(p.cmp(&q))
+        });
         let (lo, hi) = idx.split_at_mut(half);
         let l = self.grow(centroids, lo, level + 1);
         let r = self.grow(centroids, hi, level + 1);
@@ -312,7 +325,9 @@ fn split_axis(centroids: &[[f64; 3]], idx: &[u32]) -> usize {
             hi[a] = hi[a].max(centroids[i as usize][a]);
         }
     }
-    (0..3).max_by(|&a, &b| (hi[a] - lo[a]).total_cmp(&(hi[b] - lo[b])).then(b.cmp(&a))).unwrap()
+    (0..3)
+        .max_by(|&a, &b| (hi[a] - lo[a]).total_cmp(&(hi[b] - lo[b])).then(b.cmp(&a)))
+        .unwrap()
 }
 
 #[cfg(test)]
@@ -323,7 +338,9 @@ mod tests {
     /// Another formulation of a leaf's distances: each normal on its own, as the tree held
     /// them before leaves were computed when read.
     fn tri_support(t: &Tri, b: &Vector3<f64>) -> f64 {
-        t.iter().map(|v| b.dot(&v.coords) + v.coords.abs().dot(&b.abs()) * f64::EPSILON).fold(f64::NEG_INFINITY, f64::max)
+        t.iter()
+            .map(|v| b.dot(&v.coords) + v.coords.abs().dot(&b.abs()) * f64::EPSILON)
+            .fold(f64::NEG_INFINITY, f64::max)
     }
 
     /// Every leaf of random soups (and a triangle on the axes through the origin, whose
@@ -332,19 +349,42 @@ mod tests {
     #[test]
     fn leaves_are_their_supports_rounded() {
         let mut tris = crate::mesh::soup(40, 3).triangles_f64();
-        tris.push([Point3::origin(), Point3::new(1.0, 0.0, 0.0), Point3::new(0.0, -0.0, 1.0)]);
+        tris.push([
+            Point3::origin(),
+            Point3::new(1.0, 0.0, 0.0),
+            Point3::new(0.0, -0.0, 1.0),
+        ]);
         for k in SUPPORTED_K {
             for dop_rounding in [DopRounding::Outward, DopRounding::NearestEven] {
-                let cfg = ChipConfig { k, dop_rounding, ..ChipConfig::default() };
+                let cfg = ChipConfig {
+                    k,
+                    dop_rounding,
+                    ..ChipConfig::default()
+                };
                 let tree = DopTree::build(&tris, &cfg);
-                let rnd = if dop_rounding == DopRounding::Outward { Rounding::TowardPositive } else { Rounding::NearestEven };
+                let rnd = if dop_rounding == DopRounding::Outward {
+                    Rounding::TowardPositive
+                } else {
+                    Rounding::NearestEven
+                };
                 for n in 0..tree.len() as u32 {
                     let d = tree.dop(n);
                     let want: Vec<f64> = match tree.node(n) {
-                        Node::Leaf(t) => tree.normals.b.iter().map(|b| cfg.format.dop.round(tri_support(&tris[t as usize], b), rnd)).collect(),
-                        Node::Inner([l, r]) => (0..k).map(|j| tree.dop(l)[j].max(tree.dop(r)[j])).collect(),
+                        Node::Leaf(t) => tree
+                            .normals
+                            .b
+                            .iter()
+                            .map(|b| cfg.format.dop.round(tri_support(&tris[t as usize], b), rnd))
+                            .collect(),
+                        Node::Inner([l, r]) => {
+                            (0..k).map(|j| tree.dop(l)[j].max(tree.dop(r)[j])).collect()
+                        }
                     };
-                    assert_eq!(d.iter().map(|x| x.to_bits()).collect::<Vec<_>>(), want.iter().map(|x| x.to_bits()).collect::<Vec<_>>(), "k = {k}, node {n}");
+                    assert_eq!(
+                        d.iter().map(|x| x.to_bits()).collect::<Vec<_>>(),
+                        want.iter().map(|x| x.to_bits()).collect::<Vec<_>>(),
+                        "k = {k}, node {n}"
+                    );
                 }
             }
         }

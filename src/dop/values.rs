@@ -46,7 +46,10 @@ impl Values {
     pub fn read(&self, at: usize, out: &mut [f64]) {
         let n = out.len();
         match self {
-            Values::F32(v) => out.iter_mut().zip(&v[at..at + n]).for_each(|(o, &x)| *o = x as f64),
+            Values::F32(v) => out
+                .iter_mut()
+                .zip(&v[at..at + n])
+                .for_each(|(o, &x)| *o = x as f64),
             Values::F64(v) => out.copy_from_slice(&v[at..at + n]),
         }
     }
@@ -78,14 +81,27 @@ mod tests {
     #[test]
     fn values_come_back_exactly() {
         let f = Format::BINARY32;
-        let xs = [f.max_finite(), f.min_positive_subnormal(), -f.min_positive_normal(), f64::INFINITY, f64::NEG_INFINITY, 0.1f32 as f64];
+        let xs = [
+            f.max_finite(),
+            f.min_positive_subnormal(),
+            -f.min_positive_normal(),
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            0.1f32 as f64,
+        ];
         let mut v = Values::new(f, xs.len());
         xs.iter().for_each(|&x| v.push(x));
         assert!(matches!(v, Values::F32(_)));
-        assert!(xs.iter().enumerate().all(|(i, &x)| v.get(i).to_bits() == x.to_bits()));
+        assert!(xs
+            .iter()
+            .enumerate()
+            .all(|(i, &x)| v.get(i).to_bits() == x.to_bits()));
         let wide = Format::new(9, 23).unwrap();
         let mut w = Values::new(wide, 1);
         w.push(wide.min_positive_subnormal());
-        assert_eq!((matches!(w, Values::F64(_)), w.get(0)), (true, wide.min_positive_subnormal()));
+        assert_eq!(
+            (matches!(w, Values::F64(_)), w.get(0)),
+            (true, wide.min_positive_subnormal())
+        );
     }
 }

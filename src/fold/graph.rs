@@ -29,7 +29,10 @@ impl Class {
 
     /// Index in [`Class::ALL`].
     pub fn index(self) -> usize {
-        Class::ALL.iter().position(|&c| c == self).expect("every class is in ALL")
+        Class::ALL
+            .iter()
+            .position(|&c| c == self)
+            .expect("every class is in ALL")
     }
 }
 
@@ -70,9 +73,21 @@ impl Tracer {
     fn op(&mut self, class: Class, sub: bool, operands: &[Val]) -> Val {
         let n = self.0.add_node(Op::Fp { class, sub });
         for (port, v) in operands.iter().enumerate() {
-            self.0.add_edge(v.node, n, Operand { port, abs: v.abs, dbl: v.dbl });
+            self.0.add_edge(
+                v.node,
+                n,
+                Operand {
+                    port,
+                    abs: v.abs,
+                    dbl: v.dbl,
+                },
+            );
         }
-        Val { node: n, abs: false, dbl: false }
+        Val {
+            node: n,
+            abs: false,
+            dbl: false,
+        }
     }
 }
 
@@ -104,8 +119,14 @@ impl Graph {
     /// input words, then the operations in the golden order.
     pub fn tcheck() -> Graph {
         let mut t = Tracer(DiGraph::new());
-        let nodes: Vec<NodeIndex> = (0..Inputs::<Val>::WORDS).map(|i| t.0.add_node(Op::Input(i))).collect();
-        let inputs = Inputs::from_words(|i| Val { node: nodes[i], abs: false, dbl: false });
+        let nodes: Vec<NodeIndex> = (0..Inputs::<Val>::WORDS)
+            .map(|i| t.0.add_node(Op::Input(i)))
+            .collect();
+        let inputs = Inputs::from_words(|i| Val {
+            node: nodes[i],
+            abs: false,
+            dbl: false,
+        });
         let out = ops::tcheck(&mut t, &inputs);
         let node = |v: Val| {
             assert!(!v.abs && !v.dbl, "an output is a unit's result");
@@ -125,7 +146,11 @@ impl Graph {
 
     /// The operands of `n` by port: (source node, operand).
     pub fn operands(&self, n: NodeIndex) -> Vec<(NodeIndex, Operand)> {
-        let mut v: Vec<_> = self.g.edges_directed(n, Direction::Incoming).map(|e| (petgraph::visit::EdgeRef::source(&e), *e.weight())).collect();
+        let mut v: Vec<_> = self
+            .g
+            .edges_directed(n, Direction::Incoming)
+            .map(|e| (petgraph::visit::EdgeRef::source(&e), *e.weight()))
+            .collect();
         v.sort_by_key(|(_, o)| o.port);
         v
     }
@@ -154,10 +179,25 @@ mod tests {
     #[test]
     fn tcheck_graph_counts() {
         let g = Graph::tcheck();
-        assert_eq!(counts(&g.g), [36 + 27 + 12, 36 + 2 + 3 * 10 + 3 * 8, 27 + 27 + 3 * 5, 27 + 1 + 3 * 17 + 3 * 12, 9, 3, 6]);
+        assert_eq!(
+            counts(&g.g),
+            [
+                36 + 27 + 12,
+                36 + 2 + 3 * 10 + 3 * 8,
+                27 + 27 + 3 * 5,
+                27 + 1 + 3 * 17 + 3 * 12,
+                9,
+                3,
+                6
+            ]
+        );
         assert!(!petgraph::algo::is_cyclic_directed(&g.g));
         for n in g.g.node_indices() {
-            assert!(g.g.edges_directed(n, Direction::Outgoing).count() > 0 || g.outputs.all().contains(&n), "{n:?} unused");
+            assert!(
+                g.g.edges_directed(n, Direction::Outgoing).count() > 0
+                    || g.outputs.all().contains(&n),
+                "{n:?} unused"
+            );
         }
     }
 }

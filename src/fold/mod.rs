@@ -15,7 +15,12 @@ pub mod schedule;
 /// bound to registers by `binding`.
 pub fn tcheck_plan(ii: usize, binding: plan::Binding) -> Result<plan::Plan, String> {
     let g = graph::Graph::tcheck();
-    let s = schedule::schedule(&g.g, &g.outputs.all(), ii, schedule::minimal_units(&g.g, ii))?;
+    let s = schedule::schedule(
+        &g.g,
+        &g.outputs.all(),
+        ii,
+        schedule::minimal_units(&g.g, ii),
+    )?;
     Ok(plan::Plan::new(&g, &s, binding))
 }
 

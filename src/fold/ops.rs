@@ -87,7 +87,19 @@ pub struct Outputs<V> {
 impl<V: Copy> Outputs<V> {
     /// Every output, in a fixed order (per field, per index).
     pub fn all(&self) -> Vec<V> {
-        [self.z, self.e_z, self.a, self.b, self.rz, self.s, self.a_bound, self.b_bound, self.rz_bound, self.s_bound].concat()
+        [
+            self.z,
+            self.e_z,
+            self.a,
+            self.b,
+            self.rz,
+            self.s,
+            self.a_bound,
+            self.b_bound,
+            self.rz_bound,
+            self.s_bound,
+        ]
+        .concat()
     }
 
     /// Every output mapped by `f`.
@@ -144,7 +156,10 @@ pub fn tcheck<A: Arith>(o: &mut A, x: &Inputs<A::V>) -> Outputs<A::V> {
         mb[i][j] = dot(o, Rnd::Value, row, col, c);
         mag[i][j] = dot_mag(o, row, col, c);
     }
-    let (am, af) = (o.mul(x.alpha[0], x.beta[0], up), o.mul(x.alpha[1], x.beta[1], up));
+    let (am, af) = (
+        o.mul(x.alpha[0], x.beta[0], up),
+        o.mul(x.alpha[1], x.beta[1], up),
+    );
     let a_err = o.add(am, af, up);
     let (mut v, mut e1) = ([[x.scale; 3]; 3], [[x.scale; 3]; 3]);
     let (mut e_z, mut g, mut h) = ([x.scale; 3], [x.scale; 3], [x.scale; 3]);
@@ -155,7 +170,13 @@ pub fn tcheck<A: Arith>(o: &mut A, x: &Inputs<A::V>) -> Outputs<A::V> {
         let err = o.mul(a_err, l1, up);
         let mut v_mag = [x.scale; 3];
         for i in 0..3 {
-            v[k][i] = dot(o, Rnd::Value, [mb[i][0], mb[i][1], mb[i][2]], *p, Some(mb[i][3]));
+            v[k][i] = dot(
+                o,
+                Rnd::Value,
+                [mb[i][0], mb[i][1], mb[i][2]],
+                *p,
+                Some(mb[i][3]),
+            );
             let c = o.add(mag[i][3], err, up);
             v_mag[i] = dot_mag(o, [mag[i][0], mag[i][1], mag[i][2]], *p, Some(c));
             e1[k][i] = o.scale(v_mag[i], if i < 2 { Const::Ce } else { Const::Cz });
@@ -166,11 +187,25 @@ pub fn tcheck<A: Arith>(o: &mut A, x: &Inputs<A::V>) -> Outputs<A::V> {
         let (za, e2) = (o.abs(v[k][2]), o.dbl(e_z[k]));
         h[k] = o.add(za, e2, up);
     }
-    let mut out = Outputs { z: [v[0][2], v[1][2], v[2][2]], e_z, a: e_z, b: e_z, rz: e_z, s: e_z, a_bound: e_z, b_bound: e_z, rz_bound: e_z, s_bound: e_z };
+    let mut out = Outputs {
+        z: [v[0][2], v[1][2], v[2][2]],
+        e_z,
+        a: e_z,
+        b: e_z,
+        rz: e_z,
+        s: e_z,
+        a_bound: e_z,
+        b_bound: e_z,
+        rz_bound: e_z,
+        s_bound: e_z,
+    };
     for e in 0..3 {
         let (p, q) = (e, (e + 1) % 3);
         let cross = |o: &mut A, i: usize| {
-            let (t0, t1) = (o.mul(v[p][i], v[q][2], Rnd::Value), o.mul(v[q][i], v[p][2], Rnd::Value));
+            let (t0, t1) = (
+                o.mul(v[p][i], v[q][2], Rnd::Value),
+                o.mul(v[q][i], v[p][2], Rnd::Value),
+            );
             let x = o.sub(t0, t1, Rnd::Value);
             let (pa, qa) = (o.abs(v[p][i]), o.abs(v[q][i]));
             let (t0, t1) = (o.mul(e1[p][i], h[q], up), o.mul(pa, g[q], up));
@@ -209,7 +244,11 @@ impl Eval {
     pub fn new(f: Format, r: Rounding, v_exact: bool) -> Eval {
         let cert = Certificate::new(f, r);
         let x = v_exact as usize;
-        Eval { f, r, c: [cert.c_e[x], cert.c_z[x], cert.c_s] }
+        Eval {
+            f,
+            r,
+            c: [cert.c_e[x], cert.c_z[x], cert.c_s],
+        }
     }
 
     fn rounding(&self, r: Rnd) -> Rounding {

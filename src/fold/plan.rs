@@ -138,22 +138,55 @@ impl Plan {
             };
             let len = (l - ready(n)) / ii + 1;
             chain_of.insert((r, i), words.len());
-            words.push(Chain { first: next, len, slot: ready(n) % ii, src });
+            words.push(Chain {
+                first: next,
+                len,
+                slot: ready(n) % ii,
+                src,
+            });
             next += len;
         }
-        let read = |n: NodeIndex, r: Reader, t: usize, abs: bool, dbl: bool| Read { reg: words[chain_of[&(r, n.index())]].first + (t - ready(n)) / ii, abs, dbl };
+        let read = |n: NodeIndex, r: Reader, t: usize, abs: bool, dbl: bool| Read {
+            reg: words[chain_of[&(r, n.index())]].first + (t - ready(n)) / ii,
+            abs,
+            dbl,
+        };
         // v_exact: read by the c_e and c_z multipliers; valid and tag at the outputs
-        let exact_last = g.g.node_indices().filter(|&n| matches!(g.class(n), Some(Class::Scale(Const::Ce | Const::Cz)))).map(|n| s.start[n.index()]).max().unwrap_or(0);
-        let side = |last: usize| Chain { first: 0, len: last / ii + 1, slot: 0, src: Src::Side };
-        let mut issues: Vec<Vec<Vec<Option<Issue>>>> = s.units.iter().map(|&u| vec![vec![None; ii]; u]).collect();
+        let exact_last =
+            g.g.node_indices()
+                .filter(|&n| matches!(g.class(n), Some(Class::Scale(Const::Ce | Const::Cz))))
+                .map(|n| s.start[n.index()])
+                .max()
+                .unwrap_or(0);
+        let side = |last: usize| Chain {
+            first: 0,
+            len: last / ii + 1,
+            slot: 0,
+            src: Src::Side,
+        };
+        let mut issues: Vec<Vec<Vec<Option<Issue>>>> =
+            s.units.iter().map(|&u| vec![vec![None; ii]; u]).collect();
         for n in g.g.node_indices() {
-            let Op::Fp { class, sub } = g.g[n] else { continue };
+            let Op::Fp { class, sub } = g.g[n] else {
+                continue;
+            };
             let t = s.start[n.index()];
-            let ops: Vec<Read> = g.operands(n).into_iter().map(|(p, o)| read(p, reader(n), t, o.abs, o.dbl)).collect();
+            let ops: Vec<Read> = g
+                .operands(n)
+                .into_iter()
+                .map(|(p, o)| read(p, reader(n), t, o.abs, o.dbl))
+                .collect();
             let sel = matches!(class, Class::Scale(Const::Ce | Const::Cz)).then_some(t / ii);
-            issues[class.index()][s.unit[n.index()]][(t + 1) % ii] = Some(Issue { a: ops[0], b: ops.get(1).copied(), sub, sel });
+            issues[class.index()][s.unit[n.index()]][(t + 1) % ii] = Some(Issue {
+                a: ops[0],
+                b: ops.get(1).copied(),
+                sub,
+                sel,
+            });
         }
-        let outputs = g.outputs.map(|n| read(n, Reader::Outputs, s.out_at, false, false).reg);
+        let outputs = g
+            .outputs
+            .map(|n| read(n, Reader::Outputs, s.out_at, false, false).reg);
         Plan {
             ii,
             binding,
@@ -178,14 +211,35 @@ mod tests {
     /// (docs/ARCHITECTURE.md, "Folded T.CHECK", has the table), under either binding.
     #[test]
     fn tcheck_plans() {
-        for (ii, binding) in [1, 2, 4, 8, 16, 32].into_iter().flat_map(|ii| [(ii, super::Binding::Shared), (ii, super::Binding::PerReader)]) {
+        for (ii, binding) in [1, 2, 4, 8, 16, 32].into_iter().flat_map(|ii| {
+            [
+                (ii, super::Binding::Shared),
+                (ii, super::Binding::PerReader),
+            ]
+        }) {
             let p = crate::fold::tcheck_plan(ii, binding).unwrap();
             let n = p.word_regs();
-            let reads = p.issues.iter().flatten().flatten().flatten().flat_map(|i| [Some(i.a), i.b]).flatten();
-            assert!(reads.map(|r| r.reg).chain(p.outputs.all()).all(|r| r < n), "II {ii}");
+            let reads = p
+                .issues
+                .iter()
+                .flatten()
+                .flatten()
+                .flatten()
+                .flat_map(|i| [Some(i.a), i.b])
+                .flatten();
+            assert!(
+                reads.map(|r| r.reg).chain(p.outputs.all()).all(|r| r < n),
+                "II {ii}"
+            );
             assert!(p.issues.iter().flatten().all(|slots| slots.len() == ii));
-            assert!([p.exact, p.valid, p.tag].iter().all(|c| c.slot < ii) && p.words.iter().all(|c| c.slot < ii && c.len > 0));
-            eprintln!("II {ii} {binding:?}: units {:?}, latency {}, word registers {n}", p.units, p.latency);
+            assert!(
+                [p.exact, p.valid, p.tag].iter().all(|c| c.slot < ii)
+                    && p.words.iter().all(|c| c.slot < ii && c.len > 0)
+            );
+            eprintln!(
+                "II {ii} {binding:?}: units {:?}, latency {}, word registers {n}",
+                p.units, p.latency
+            );
         }
     }
 }

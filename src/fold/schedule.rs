@@ -65,16 +65,25 @@ impl Schedule {
 /// after its operands are ready where a unit of its class is free in that cycle mod `ii`.
 /// Err if `ii` is 0, the graph has a cycle, or a class has more operations than its units
 /// can start in `ii` clocks.
-pub fn schedule(g: &DiGraph<Op, Operand>, outputs: &[NodeIndex], ii: usize, units: Units) -> Result<Schedule, String> {
+pub fn schedule(
+    g: &DiGraph<Op, Operand>,
+    outputs: &[NodeIndex],
+    ii: usize,
+    units: Units,
+) -> Result<Schedule, String> {
     if ii == 0 {
         return Err("the initiation interval must be at least 1".into());
     }
     for (c, (&n, &u)) in Class::ALL.iter().zip(counts(g).iter().zip(&units)) {
         if n > u * ii {
-            return Err(format!("{n} {c:?} operations need at least {} units at II {ii}, not {u}", n.div_ceil(ii)));
+            return Err(format!(
+                "{n} {c:?} operations need at least {} units at II {ii}, not {u}",
+                n.div_ceil(ii)
+            ));
         }
     }
-    let topo = petgraph::algo::toposort(g, None).map_err(|c| format!("the graph has a cycle through {:?}", c.node_id()))?;
+    let topo = petgraph::algo::toposort(g, None)
+        .map_err(|c| format!("the graph has a cycle through {:?}", c.node_id()))?;
     let mut asap = vec![0; g.node_count()];
     for &n in &topo {
         let lat = match g[n] {
@@ -87,12 +96,22 @@ pub fn schedule(g: &DiGraph<Op, Operand>, outputs: &[NodeIndex], ii: usize, unit
     }
     let mut order = topo;
     order.sort_by_key(|n| (asap[n.index()], n.index()));
-    let mut s = Schedule { ii, units, start: vec![0; g.node_count()], unit: vec![0; g.node_count()], out_at: 0 };
+    let mut s = Schedule {
+        ii,
+        units,
+        start: vec![0; g.node_count()],
+        unit: vec![0; g.node_count()],
+        out_at: 0,
+    };
     // busy[class][unit][cycle mod ii]
     let mut busy: Vec<Vec<Vec<bool>>> = units.iter().map(|&u| vec![vec![false; ii]; u]).collect();
     for n in order {
         let Op::Fp { class, .. } = g[n] else { continue };
-        let earliest = g.neighbors_directed(n, Direction::Incoming).map(|p| s.ready(g, p)).max().unwrap_or(0);
+        let earliest = g
+            .neighbors_directed(n, Direction::Incoming)
+            .map(|p| s.ready(g, p))
+            .max()
+            .unwrap_or(0);
         let table = &mut busy[class.index()];
         let (t, u) = (earliest..earliest + ii)
             .find_map(|t| table.iter().position(|b| !b[t % ii]).map(|u| (t, u)))
@@ -113,7 +132,11 @@ pub fn check(g: &DiGraph<Op, Operand>, outputs: &[NodeIndex], s: &Schedule) -> R
     for n in g.node_indices() {
         for p in g.neighbors_directed(n, Direction::Incoming) {
             if s.start[n.index()] < s.ready(g, p) {
-                return Err(format!("{n:?} starts at {} before its operand {p:?} is ready at {}", s.start[n.index()], s.ready(g, p)));
+                return Err(format!(
+                    "{n:?} starts at {} before its operand {p:?} is ready at {}",
+                    s.start[n.index()],
+                    s.ready(g, p)
+                ));
             }
         }
         if let Op::Fp { class, .. } = g[n] {
@@ -127,7 +150,10 @@ pub fn check(g: &DiGraph<Op, Operand>, outputs: &[NodeIndex], s: &Schedule) -> R
         }
     }
     match outputs.iter().find(|&&n| s.ready(g, n) > s.out_at) {
-        Some(n) => Err(format!("output {n:?} ready after the outputs are read at {}", s.out_at)),
+        Some(n) => Err(format!(
+            "output {n:?} ready after the outputs are read at {}",
+            s.out_at
+        )),
         None => Ok(()),
     }
 }
@@ -140,7 +166,10 @@ mod tests {
 
     /// A random DAG: `inputs` input nodes, then operations of random classes whose
     /// operands are random earlier nodes; the last few nodes are the outputs.
-    fn dag(inputs: usize, ops: Vec<(usize, usize, usize)>) -> (DiGraph<Op, Operand>, Vec<NodeIndex>) {
+    fn dag(
+        inputs: usize,
+        ops: Vec<(usize, usize, usize)>,
+    ) -> (DiGraph<Op, Operand>, Vec<NodeIndex>) {
         let mut g = DiGraph::new();
         for i in 0..inputs {
             g.add_node(Op::Input(i));
@@ -149,12 +178,30 @@ mod tests {
             let class = Class::ALL[c % 7];
             let n = g.add_node(Op::Fp { class, sub: false });
             let k = n.index();
-            g.add_edge(NodeIndex::new(a % k), n, Operand { port: 0, abs: false, dbl: false });
+            g.add_edge(
+                NodeIndex::new(a % k),
+                n,
+                Operand {
+                    port: 0,
+                    abs: false,
+                    dbl: false,
+                },
+            );
             if !matches!(class, Class::Scale(_)) {
-                g.add_edge(NodeIndex::new(b % k), n, Operand { port: 1, abs: false, dbl: false });
+                g.add_edge(
+                    NodeIndex::new(b % k),
+                    n,
+                    Operand {
+                        port: 1,
+                        abs: false,
+                        dbl: false,
+                    },
+                );
             }
         }
-        let outs = (g.node_count().saturating_sub(3)..g.node_count()).map(NodeIndex::new).collect();
+        let outs = (g.node_count().saturating_sub(3)..g.node_count())
+            .map(NodeIndex::new)
+            .collect();
         (g, outs)
     }
 
@@ -188,7 +235,10 @@ mod tests {
             let s = schedule(&g.g, &outs, ii, minimal_units(&g.g, ii)).unwrap();
             assert_eq!(check(&g.g, &outs, &s), Ok(()), "II {ii}");
         }
-        assert!(schedule(&g.g, &outs, 16, [1; 7]).is_err(), "75 products do not fit one multiplier at II 16");
+        assert!(
+            schedule(&g.g, &outs, 16, [1; 7]).is_err(),
+            "75 products do not fit one multiplier at II 16"
+        );
     }
 
     /// The check catches a schedule broken by hand: an operation moved one cycle before
@@ -199,14 +249,21 @@ mod tests {
         let outs = g.outputs.all();
         let s = schedule(&g.g, &outs, 16, minimal_units(&g.g, 16)).unwrap();
         let n = g.outputs.s_bound[2];
-        let p = g.g.neighbors_directed(n, Direction::Incoming).max_by_key(|&p| s.ready(&g.g, p)).unwrap();
+        let p =
+            g.g.neighbors_directed(n, Direction::Incoming)
+                .max_by_key(|&p| s.ready(&g.g, p))
+                .unwrap();
         let mut early = s.clone();
         early.start[n.index()] = s.ready(&g.g, p) - 1;
-        assert!(check(&g.g, &outs, &early).unwrap_err().contains("before its operand"));
+        assert!(check(&g.g, &outs, &early)
+            .unwrap_err()
+            .contains("before its operand"));
         let mut twice = s.clone();
         let m = g.outputs.s_bound[1];
         twice.start[n.index()] = s.start[m.index()] + 16 * 4;
         twice.unit[n.index()] = s.unit[m.index()];
-        assert!(check(&g.g, &outs, &twice).unwrap_err().contains("twice in slot"));
+        assert!(check(&g.g, &outs, &twice)
+            .unwrap_err()
+            .contains("twice in slot"));
     }
 }

@@ -143,7 +143,11 @@ pub struct ScaleConst {
 
 impl ScaleConst {
     pub fn value(self) -> f64 {
-        let t = if self.j2 == 0 { 0.0 } else { pow2(-(self.j2 as i32)) };
+        let t = if self.j2 == 0 {
+            0.0
+        } else {
+            pow2(-(self.j2 as i32))
+        };
         pow2(self.k) * (1.0 + pow2(-(self.j as i32)) + t)
     }
 }
@@ -174,9 +178,15 @@ fn exponent64(x: f64) -> i32 {
 
 impl Format {
     /// IEEE binary32: 8 exponent bits, 23 fraction bits (32-bit word).
-    pub const BINARY32: Format = Format { exp_bits: 8, frac_bits: 23 };
+    pub const BINARY32: Format = Format {
+        exp_bits: 8,
+        frac_bits: 23,
+    };
     /// The chip's reduced format: 8 exponent bits, 15 fraction bits (24-bit word).
-    pub const REDUCED: Format = Format { exp_bits: 8, frac_bits: 15 };
+    pub const REDUCED: Format = Format {
+        exp_bits: 8,
+        frac_bits: 15,
+    };
 
     /// Smallest / largest allowed exponent field width.
     pub const EXP_BITS_RANGE: std::ops::RangeInclusive<u32> = 2..=9;
@@ -202,7 +212,10 @@ impl Format {
                  significands is exact in the 53-bit f64 significand)"
             ));
         }
-        Ok(Format { exp_bits, frac_bits })
+        Ok(Format {
+            exp_bits,
+            frac_bits,
+        })
     }
 
     /// Number of exponent bits.
@@ -243,9 +256,7 @@ impl Format {
     #[inline]
     pub fn max_finite(&self) -> f64 {
         let f = self.frac_bits;
-        f64::from_bits(
-            (((self.emax() + 1023) as u64) << 52) | (((1u64 << f) - 1) << (52 - f)),
-        )
+        f64::from_bits((((self.emax() + 1023) as u64) << 52) | (((1u64 << f) - 1) << (52 - f)))
     }
 
     /// Smallest positive normal value `2^emin`.
@@ -301,9 +312,7 @@ impl Format {
         match (r, neg) {
             (Rounding::NearestEven, _) => Mag::Nearest,
             (Rounding::TowardPositive, false) | (Rounding::TowardNegative, true) => Mag::Away,
-            (Rounding::TowardPositive, true) | (Rounding::TowardNegative, false) => {
-                Mag::TowardZero
-            }
+            (Rounding::TowardPositive, true) | (Rounding::TowardNegative, false) => Mag::TowardZero,
         }
     }
 
@@ -343,7 +352,7 @@ impl Format {
         let t = hi.abs() * pow2(frac - e);
         let m = t as i64; // floor(t)
         let fr = t - m as f64; // exact fraction in [0, 1)
-        // lo measured in the direction of |hi| (sign flipped if hi < 0).
+                               // lo measured in the direction of |hi| (sign flipped if hi < 0).
         let lo_m = f64::from_bits(lo.to_bits() ^ (hi.to_bits() & SIGN));
         // The exact scaled magnitude is t + lo_m/q with |lo_m/q| < 2^-28 below the
         // resolution of fr, so lo_m only matters when fr is exactly 0 or 1/2.
@@ -356,8 +365,8 @@ impl Format {
         // (With TwoSum operands lo != 0 needs an exact sum wider than 53 bits, which
         // implies e >= emin + 29 and fr != 1/2: the e > emin test and the lo_m tie
         // break are unreachable for add but keep round2 correct for any hi + lo.)
-        let up_near = ((fr > 0.5)
-            | ((fr == 0.5) & ((lo_m > 0.0) | ((lo_m == 0.0) & (m & 1 == 1))))) as i64;
+        let up_near =
+            ((fr > 0.5) | ((fr == 0.5) & ((lo_m > 0.0) | ((lo_m == 0.0) & (m & 1 == 1))))) as i64;
         let up_away = ((fr > 0.0) | (lo_m > 0.0)) as i64;
         let down = ((fr == 0.0) & (lo_m < 0.0)) as i64;
         let half = ((m == (1i64 << frac)) & (e > emin)) as i64;
@@ -386,15 +395,31 @@ impl Format {
         let fd = f as f64;
         // Step one f32 toward +inf (up) or -inf (down)? Flag arithmetic, no branches:
         // the signs in a sweep are random.
-        let step = if up { (fd < hi) | ((fd == hi) & (lo > 0.0)) } else { (fd > hi) | ((fd == hi) & (lo < 0.0)) };
+        let step = if up {
+            (fd < hi) | ((fd == hi) & (lo > 0.0))
+        } else {
+            (fd > hi) | ((fd == hi) & (lo < 0.0))
+        };
         // Moving away from zero adds one to the magnitude bits, toward zero subtracts one;
         // a zero is first given the sign of the direction of travel.
         let b = f.to_bits();
         let zero = (b << 1) == 0;
-        let b = if zero { if up { 0 } else { 0x8000_0000 } } else { b };
+        let b = if zero {
+            if up {
+                0
+            } else {
+                0x8000_0000
+            }
+        } else {
+            b
+        };
         let away = (b >> 31 == 0) == up;
         let delta = step as u32;
-        let nb = if away { b.wrapping_add(delta) } else { b.wrapping_sub(delta) };
+        let nb = if away {
+            b.wrapping_add(delta)
+        } else {
+            b.wrapping_sub(delta)
+        };
         // A zero that does not move keeps the sign the conversion gave it.
         let nb = if zero & !step { f.to_bits() } else { nb };
         f32::from_bits(nb) as f64
@@ -419,7 +444,11 @@ impl Format {
     #[inline(always)]
     pub fn next_up(&self, x: f64) -> f64 {
         if self.is_binary32() {
-            return if x.is_nan() { f64::NAN } else { (x as f32).next_up() as f64 };
+            return if x.is_nan() {
+                f64::NAN
+            } else {
+                (x as f32).next_up() as f64
+            };
         }
         self.next_up_general(x)
     }
@@ -433,11 +462,19 @@ impl Format {
         }
         if x >= 0.0 {
             let y = x + self.ulp(x);
-            return if y > self.max_finite() { f64::INFINITY } else { y };
+            return if y > self.max_finite() {
+                f64::INFINITY
+            } else {
+                y
+            };
         }
         // Below a power of two above the normal minimum the spacing halves.
         let m = -x;
-        let below = if m.to_bits() << 12 == 0 && m > self.min_positive_normal() { self.ulp(m) / 2.0 } else { self.ulp(m) };
+        let below = if m.to_bits() << 12 == 0 && m > self.min_positive_normal() {
+            self.ulp(m) / 2.0
+        } else {
+            self.ulp(m)
+        };
         -(m - below)
     }
 
@@ -467,8 +504,14 @@ impl Format {
     /// Correctly rounded `a + b`. Operands must be representable.
     #[inline]
     pub fn add(&self, a: f64, b: f64, r: Rounding) -> f64 {
-        debug_assert!(self.is_representable(a), "{a:e} not representable in {self}");
-        debug_assert!(self.is_representable(b), "{b:e} not representable in {self}");
+        debug_assert!(
+            self.is_representable(a),
+            "{a:e} not representable in {self}"
+        );
+        debug_assert!(
+            self.is_representable(b),
+            "{b:e} not representable in {self}"
+        );
         if self.is_binary32() && r == Rounding::NearestEven {
             let s = (a as f32 + b as f32) as f64;
             return if s.is_nan() { f64::NAN } else { s };
@@ -515,8 +558,14 @@ impl Format {
     /// Correctly rounded `a * b`. Operands must be representable.
     #[inline]
     pub fn mul(&self, a: f64, b: f64, r: Rounding) -> f64 {
-        debug_assert!(self.is_representable(a), "{a:e} not representable in {self}");
-        debug_assert!(self.is_representable(b), "{b:e} not representable in {self}");
+        debug_assert!(
+            self.is_representable(a),
+            "{a:e} not representable in {self}"
+        );
+        debug_assert!(
+            self.is_representable(b),
+            "{b:e} not representable in {self}"
+        );
         if self.is_binary32() && r == Rounding::NearestEven {
             let p = (a as f32 * b as f32) as f64;
             return if p.is_nan() { f64::NAN } else { p };
@@ -546,7 +595,10 @@ impl Format {
     /// The smallest [`ScaleConst`] of this format at least `x` (positive, normal in f64;
     /// shifts at most F + 2; of two equal ones, the one without a second shift).
     pub fn scale_const_at_least(&self, x: f64) -> ScaleConst {
-        assert!(x.is_normal() && x > 0.0 && x < 1e300, "scale constant {x:e} out of range");
+        assert!(
+            x.is_normal() && x > 0.0 && x < 1e300,
+            "scale constant {x:e} out of range"
+        );
         let jmax = self.frac_bits + 2;
         let mut best: Option<ScaleConst> = None;
         for k in [exponent64(x), exponent64(x) + 1] {
@@ -559,10 +611,15 @@ impl Format {
                 } else {
                     let e = exponent64(d);
                     let largest = if d == pow2(e) { -e } else { -e - 1 };
-                    if largest <= j as i32 { continue } else { (largest as u32).min(jmax) }
+                    if largest <= j as i32 {
+                        continue;
+                    } else {
+                        (largest as u32).min(jmax)
+                    }
                 };
                 let c = ScaleConst { k, j, j2 };
-                if best.is_none_or(|b| c.value() < b.value() || (c.value() == b.value() && j2 == 0)) {
+                if best.is_none_or(|b| c.value() < b.value() || (c.value() == b.value() && j2 == 0))
+                {
                     best = Some(c);
                 }
             }
@@ -582,7 +639,8 @@ impl Format {
             return a;
         }
         // exact: a has at most F + 1 significant bits, c at most F + 3
-        self.round(a * c.value(), Rounding::TowardPositive).max(self.min_positive_normal())
+        self.round(a * c.value(), Rounding::TowardPositive)
+            .max(self.min_positive_normal())
     }
 
     /// The bit pattern `sign | exp | frac` (fields masked to their widths).
@@ -595,16 +653,38 @@ impl Format {
     /// half), the normal boundary, values around 1, the largest finite values, infinities and
     /// NaNs. The corner cases every datapath test starts from.
     pub fn special_patterns(&self) -> Vec<u64> {
-        let (ones, bias, fm, half) =
-            ((1u64 << self.exp_bits) - 1, self.bias() as u64, (1u64 << self.frac_bits) - 1, 1u64 << (self.frac_bits - 1));
+        let (ones, bias, fm, half) = (
+            (1u64 << self.exp_bits) - 1,
+            self.bias() as u64,
+            (1u64 << self.frac_bits) - 1,
+            1u64 << (self.frac_bits - 1),
+        );
         let fields = [
-            (0, 0), (0, 1), (0, 2), (0, fm), (0, half),
-            (1, 0), (1, 1), (1, fm), (2, 0),
-            (bias, 0), (bias, 1), (bias, fm), (bias - 1, fm),
-            (ones - 1, fm), (ones - 1, 0), (ones - 2, fm),
-            (ones, 0), (ones, half), (ones, 1), (ones, fm),
+            (0, 0),
+            (0, 1),
+            (0, 2),
+            (0, fm),
+            (0, half),
+            (1, 0),
+            (1, 1),
+            (1, fm),
+            (2, 0),
+            (bias, 0),
+            (bias, 1),
+            (bias, fm),
+            (bias - 1, fm),
+            (ones - 1, fm),
+            (ones - 1, 0),
+            (ones - 2, fm),
+            (ones, 0),
+            (ones, half),
+            (ones, 1),
+            (ones, fm),
         ];
-        [false, true].iter().flat_map(|&s| fields.iter().map(move |&(e, f)| self.pack(s, e, f))).collect()
+        [false, true]
+            .iter()
+            .flat_map(|&s| fields.iter().map(move |&(e, f)| self.pack(s, e, f)))
+            .collect()
     }
 
     /// Encodes a representable value as `sign | biased exponent | fraction`
@@ -617,7 +697,10 @@ impl Format {
         if x.is_nan() {
             return (exp_ones << f) | (1u64 << (f - 1));
         }
-        debug_assert!(self.is_representable(x), "{x:e} not representable in {self}");
+        debug_assert!(
+            self.is_representable(x),
+            "{x:e} not representable in {self}"
+        );
         let sign = (x.is_sign_negative() as u64) << (self.exp_bits + f);
         let a = x.abs();
         if a == f64::INFINITY {
@@ -689,7 +772,8 @@ impl FromStr for Format {
         let parse = || -> Option<(u32, u32)> {
             let rest = t.strip_prefix('e')?;
             let (e, m) = rest.split_once('m')?;
-            let digits = |d: &str| !d.is_empty() && d.len() <= 3 && d.bytes().all(|c| c.is_ascii_digit());
+            let digits =
+                |d: &str| !d.is_empty() && d.len() <= 3 && d.bytes().all(|c| c.is_ascii_digit());
             if !digits(e) || !digits(m) {
                 return None;
             }

@@ -34,7 +34,11 @@ semantics! {
     E2M3S = (6, 2);
 }
 
-const MODES: [Rounding; 3] = [Rounding::NearestEven, Rounding::TowardPositive, Rounding::TowardNegative];
+const MODES: [Rounding; 3] = [
+    Rounding::NearestEven,
+    Rounding::TowardPositive,
+    Rounding::TowardNegative,
+];
 
 fn ap_round(r: Rounding) -> Round {
     match r {
@@ -57,14 +61,21 @@ where
     let v: IeeeFloat<S> = Double::from_bits(x.to_bits() as u128)
         .convert_r(Round::NearestTiesToEven, &mut loses)
         .value;
-    assert!(x.is_nan() || !loses, "operand {x:e} not exact in the apfloat format");
+    assert!(
+        x.is_nan() || !loses,
+        "operand {x:e} not exact in the apfloat format"
+    );
     v
 }
 
 /// Compares our result with apfloat's: bits for non-NaN, is-NaN for NaN.
 fn same<S: Semantics>(fmt: Format, mine: f64, theirs: IeeeFloat<S>) -> Result<(), String> {
     if theirs.is_nan() {
-        return if mine.is_nan() { Ok(()) } else { Err(format!("expected NaN, got {mine:e}")) };
+        return if mine.is_nan() {
+            Ok(())
+        } else {
+            Err(format!("expected NaN, got {mine:e}"))
+        };
     }
     if mine.is_nan() {
         return Err(format!("got NaN, expected bits {:#x}", theirs.to_bits()));
@@ -94,8 +105,10 @@ where
     let (x, y) = (to_ap::<S>(a), to_ap::<S>(b));
     for r in MODES {
         let ctx = |e: String| format!("{fmt} {r:?}: {a:e} ± {b:e}: {e}");
-        same(fmt, fmt.add(a, b, r), x.add_r(y, ap_round(r)).value).map_err(|e| ctx(format!("add {e}")))?;
-        same(fmt, fmt.sub(a, b, r), x.sub_r(y, ap_round(r)).value).map_err(|e| ctx(format!("sub {e}")))?;
+        same(fmt, fmt.add(a, b, r), x.add_r(y, ap_round(r)).value)
+            .map_err(|e| ctx(format!("add {e}")))?;
+        same(fmt, fmt.sub(a, b, r), x.sub_r(y, ap_round(r)).value)
+            .map_err(|e| ctx(format!("sub {e}")))?;
         // The general (TwoSum) path must agree too, also where a fast path exists.
         same(fmt, fmt.add_general(a, b, r), x.add_r(y, ap_round(r)).value)
             .map_err(|e| ctx(format!("add_general {e}")))?;
@@ -190,7 +203,8 @@ fn value(fmt: Format, kind: u32, w: u64) -> f64 {
         5 => fmt.from_bits(sign | frac), // subnormal or zero
         6 => {
             // extreme exponent fields: 1, 2, max-2, max-1
-            let ef = [1, 2.min(ones - 1), ones.saturating_sub(2).max(1), ones - 1][pick(4) as usize];
+            let ef =
+                [1, 2.min(ones - 1), ones.saturating_sub(2).max(1), ones - 1][pick(4) as usize];
             fmt.from_bits(sign | (ef << f) | frac)
         }
         _ => {
@@ -215,7 +229,10 @@ fn add_pair(fmt: Format, kind: u32, w1: u64, w2: u64) -> (f64, f64) {
     let f = fmt.frac_bits() as i64;
     let ones = (1i64 << fmt.exp_bits()) - 1;
     match kind % 6 {
-        0 | 1 => (value(fmt, (w1 >> 3) as u32, w1), value(fmt, (w2 >> 3) as u32, w2)),
+        0 | 1 => (
+            value(fmt, (w1 >> 3) as u32, w1),
+            value(fmt, (w2 >> 3) as u32, w2),
+        ),
         2 => {
             // b about half an ulp of a (ties and near-ties), either sign
             let a = finite(fmt, value(fmt, (w1 >> 3) as u32, w1), w1);
@@ -229,7 +246,11 @@ fn add_pair(fmt: Format, kind: u32, w1: u64, w2: u64) -> (f64, f64) {
                 _ => w2 >> 8,
             } & ((1u64 << f) - 1);
             let b = fmt.from_bits(((w2 >> 63) << (fmt.width() - 1)) | (eb << f) | fr);
-            if w2 & 4 == 0 { (a, b) } else { (b, a) }
+            if w2 & 4 == 0 {
+                (a, b)
+            } else {
+                (b, a)
+            }
         }
         3 => {
             // cancellation: b = -(a +- k codes)
@@ -246,15 +267,27 @@ fn add_pair(fmt: Format, kind: u32, w1: u64, w2: u64) -> (f64, f64) {
             let ea = (w1 >> 40) as i64 % (ones + 1);
             let eb = (ea + (w2 >> 40) as i64 % (f + 6) - (f + 6) / 2).clamp(0, ones);
             let m = (1u64 << f) - 1;
-            let a = fmt.from_bits(((w1 >> 63) << (fmt.width() - 1)) | ((ea as u64) << f) | (w1 & m));
-            let b = fmt.from_bits(((w2 >> 63) << (fmt.width() - 1)) | ((eb as u64) << f) | (w2 & m));
+            let a =
+                fmt.from_bits(((w1 >> 63) << (fmt.width() - 1)) | ((ea as u64) << f) | (w1 & m));
+            let b =
+                fmt.from_bits(((w2 >> 63) << (fmt.width() - 1)) | ((eb as u64) << f) | (w2 & m));
             (a, b)
         }
         _ => {
             // sums near overflow: both near max_finite
             let e = fmt.bias() - (w1 % 3) as i32;
-            let a = mk(fmt, w1 >> 63 == 1, e, w1 >> 4 | if w1 & 8 != 0 { u64::MAX } else { 0 });
-            let b = mk(fmt, w2 >> 63 == 1, e - (w2 % (f as u64 + 3)) as i32, w2 >> 4);
+            let a = mk(
+                fmt,
+                w1 >> 63 == 1,
+                e,
+                w1 >> 4 | if w1 & 8 != 0 { u64::MAX } else { 0 },
+            );
+            let b = mk(
+                fmt,
+                w2 >> 63 == 1,
+                e - (w2 % (f as u64 + 3)) as i32,
+                w2 >> 4,
+            );
             (a, b)
         }
     }
@@ -267,7 +300,10 @@ fn mul_pair(fmt: Format, kind: u32, w1: u64, w2: u64) -> (f64, f64) {
     let emin = 1 - emax;
     let (n1, n2) = (w1 >> 63 == 1, w2 >> 63 == 1);
     match kind % 5 {
-        0 | 1 => (value(fmt, (w1 >> 3) as u32, w1), value(fmt, (w2 >> 3) as u32, w2)),
+        0 | 1 => (
+            value(fmt, (w1 >> 3) as u32, w1),
+            value(fmt, (w2 >> 3) as u32, w2),
+        ),
         2 => {
             // ea + eb in [emax - 2, emax + 1]
             let s = emax - 2 + (w1 % 4) as i32;
@@ -286,7 +322,11 @@ fn mul_pair(fmt: Format, kind: u32, w1: u64, w2: u64) -> (f64, f64) {
             // short significands: exact products, ties from few bits
             let sh = f as u32 - ((w1 >> 20) % (f as u64 + 1)) as u32;
             let a = value(fmt, 0, w1 & !((1u64 << sh) - 1));
-            let b = value(fmt, 0, w2 & !((1u64 << sh) - 1) | ((w2 >> 62) << fmt.frac_bits()));
+            let b = value(
+                fmt,
+                0,
+                w2 & !((1u64 << sh) - 1) | ((w2 >> 62) << fmt.frac_bits()),
+            );
             (a, b)
         }
     }
@@ -304,7 +344,11 @@ fn round_input(fmt: Format, kind: u32, w1: u64, w2: u64) -> f64 {
         1 | 2 => {
             // near a format value: +- up to 2 ulps (in f64 bit units), midpoints exact
             let v = finite(fmt, value(fmt, (w1 >> 3) as u32, w1), w1).abs();
-            let v = if v == 0.0 { fmt.min_positive_subnormal() } else { v };
+            let v = if v == 0.0 {
+                fmt.min_positive_subnormal()
+            } else {
+                v
+            };
             let u = fmt.ulp(v);
             let x = match (w2 >> 1) % 4 {
                 0 => v + u * 0.5,
@@ -345,7 +389,11 @@ fn round_input(fmt: Format, kind: u32, w1: u64, w2: u64) -> f64 {
 const CASES: u32 = 20_000;
 
 fn cfg() -> ProptestConfig {
-    ProptestConfig { cases: CASES, failure_persistence: None, ..ProptestConfig::default() }
+    ProptestConfig {
+        cases: CASES,
+        failure_persistence: None,
+        ..ProptestConfig::default()
+    }
 }
 
 macro_rules! apfloat_suite {
@@ -388,9 +436,15 @@ fn semantics_match_named_formats() {
     assert_eq!(fmt_of::<rustc_apfloat::ieee::SingleS>(), Format::BINARY32);
     assert_eq!(fmt_of::<E8M15S>(), Format::REDUCED);
     // apfloat's exponent conventions are the ones documented in the module.
-    assert_eq!(Single::largest().to_bits() as u64, Format::BINARY32.to_bits(Format::BINARY32.max_finite()));
+    assert_eq!(
+        Single::largest().to_bits() as u64,
+        Format::BINARY32.to_bits(Format::BINARY32.max_finite())
+    );
     assert_eq!(Half::SMALLEST.to_bits() as u64, 1);
-    assert_eq!(fmt_of::<rustc_apfloat::ieee::HalfS>().min_positive_subnormal(), 2f64.powi(-24));
+    assert_eq!(
+        fmt_of::<rustc_apfloat::ieee::HalfS>().min_positive_subnormal(),
+        2f64.powi(-24)
+    );
     assert_eq!(fmt_of::<rustc_apfloat::ieee::HalfS>().max_finite(), 65504.0);
 }
 
@@ -438,7 +492,11 @@ where
     let top = (fmt.max_finite() * 2.5 / step) as i64;
     for i in 0..=top {
         let base = i as f64 * step;
-        for x in [base, base + step * 2f64.powi(-30), base - step * 2f64.powi(-30)] {
+        for x in [
+            base,
+            base + step * 2f64.powi(-30),
+            base - step * 2f64.powi(-30),
+        ] {
             check_round::<S>(fmt, x).unwrap();
             check_round::<S>(fmt, -x).unwrap();
         }
@@ -502,7 +560,9 @@ where
     let fmt = fmt_of::<S>();
     for b in 0..1u64 << fmt.width() {
         let mut loses = false;
-        let d: Double = IeeeFloat::<S>::from_bits(b as u128).convert(&mut loses).value;
+        let d: Double = IeeeFloat::<S>::from_bits(b as u128)
+            .convert(&mut loses)
+            .value;
         let x = fmt.from_bits(b);
         if d.is_nan() {
             assert!(x.is_nan());
@@ -591,7 +651,11 @@ fn binary32_nearest_equals_native_f32() {
 #[test]
 fn documented_special_cases() {
     use Rounding::*;
-    for fmt in [Format::BINARY32, Format::REDUCED, Format::new(3, 2).unwrap()] {
+    for fmt in [
+        Format::BINARY32,
+        Format::REDUCED,
+        Format::new(3, 2).unwrap(),
+    ] {
         let max = fmt.max_finite();
         let inf = f64::INFINITY;
         let canonical = fmt.to_bits(f64::NAN);
@@ -640,7 +704,10 @@ fn limits_and_parsing() {
     assert_eq!(Format::REDUCED.width(), 24);
     assert_eq!(Format::REDUCED.bias(), 127);
     assert_eq!(Format::BINARY32.max_finite(), f32::MAX as f64);
-    assert_eq!(Format::BINARY32.min_positive_normal(), f32::MIN_POSITIVE as f64);
+    assert_eq!(
+        Format::BINARY32.min_positive_normal(),
+        f32::MIN_POSITIVE as f64
+    );
     assert_eq!(Format::BINARY32.min_positive_subnormal(), 2f64.powi(-149));
     for (s, f) in [
         ("binary32", Format::BINARY32),
@@ -653,16 +720,39 @@ fn limits_and_parsing() {
     }
     assert_eq!(Format::BINARY32.to_string(), "binary32");
     assert_eq!(Format::REDUCED.to_string(), "e8m15");
-    for bad in ["", "e8", "m15", "e8m", "e8m15x", "f8m15", "e-1m3", "e10m3", "e8m0", "e99999999999m1"] {
+    for bad in [
+        "",
+        "e8",
+        "m15",
+        "e8m",
+        "e8m15x",
+        "f8m15",
+        "e-1m3",
+        "e10m3",
+        "e8m0",
+        "e99999999999m1",
+    ] {
         let err = bad.parse::<Format>().unwrap_err();
-        assert!(err.contains("e8m15") || err.contains("2..=9") || err.contains("1..=24"), "{bad}: {err}");
+        assert!(
+            err.contains("e8m15") || err.contains("2..=9") || err.contains("1..=24"),
+            "{bad}: {err}"
+        );
     }
     let json = serde_json::to_string(&Format::REDUCED).unwrap();
     assert_eq!(json, "\"e8m15\"");
-    assert_eq!(serde_json::from_str::<Format>(&json).unwrap(), Format::REDUCED);
-    assert_eq!(serde_json::from_str::<Format>("\"binary32\"").unwrap(), Format::BINARY32);
+    assert_eq!(
+        serde_json::from_str::<Format>(&json).unwrap(),
+        Format::REDUCED
+    );
+    assert_eq!(
+        serde_json::from_str::<Format>("\"binary32\"").unwrap(),
+        Format::BINARY32
+    );
     assert!(serde_json::from_str::<Format>("\"e12m3\"").is_err());
-    assert_eq!(serde_json::to_string(&Rounding::TowardNegative).unwrap(), "\"TowardNegative\"");
+    assert_eq!(
+        serde_json::to_string(&Rounding::TowardNegative).unwrap(),
+        "\"TowardNegative\""
+    );
 }
 
 // ---------------------------------------------------------------------------
@@ -704,7 +794,14 @@ fn bench_ns_per_op() {
         // normal-range operands of moderate magnitude and random sign (the golden
         // model's typical case); format and mode are opaque to the optimizer.
         let vals: Vec<f64> = (0..4096)
-            .map(|_| mk(fmt, rng.next() & 1 == 1, (rng.next() % 20) as i32 - 10, rng.next()))
+            .map(|_| {
+                mk(
+                    fmt,
+                    rng.next() & 1 == 1,
+                    (rng.next() % 20) as i32 - 10,
+                    rng.next(),
+                )
+            })
             .collect();
         let (f, r) = (black_box(fmt), black_box(r));
         bench_loop(&format!("{fmt} {r:?} add"), &vals, |a, b| f.add(a, b, r));
@@ -745,24 +842,39 @@ fn scale_by_hand() {
     let u = 2f64.powi(-24);
     let c = |k, j, j2| ScaleConst { k, j, j2 };
     // 9u (1 + tiny) lies just above 8u (1 + 2^-3): add the smallest third term, 2^-25
-    assert_eq!(f.scale_const_at_least(9.0 * u * (1.0 + 2f64.powi(-40))), c(-21, 3, 25));
+    assert_eq!(
+        f.scale_const_at_least(9.0 * u * (1.0 + 2f64.powi(-40))),
+        c(-21, 3, 25)
+    );
     // exactly 10u takes two terms; just above 2^-21 the shift caps at F + 2 = 25
     assert_eq!(f.scale_const_at_least(10.0 * u), c(-21, 2, 0));
-    assert_eq!(f.scale_const_at_least(8.0 * u * (1.0 + 2f64.powi(-30))), c(-21, 25, 0));
+    assert_eq!(
+        f.scale_const_at_least(8.0 * u * (1.0 + 2f64.powi(-30))),
+        c(-21, 25, 0)
+    );
     // 11u (1 + tiny) = 8u (1 + 2^-2 + 2^-3 + tiny): three terms cannot hold it; 12u
-    assert_eq!(f.scale_const_at_least(11.0 * u * (1.0 + 2f64.powi(-40))), c(-21, 1, 0));
+    assert_eq!(
+        f.scale_const_at_least(11.0 * u * (1.0 + 2f64.powi(-40))),
+        c(-21, 1, 0)
+    );
     // 0.2 = 2^-3 1.6: 1 + 2^-1 + 2^-3 = 1.625
     assert_eq!(f.scale_const_at_least(0.2), c(-3, 1, 3));
     // exact: 1.5 * 0.1875
     assert_eq!(f.scale_up(-1.5, c(-3, 1, 0)), 0.28125);
     // (1 + 2^-23) 2^-1 (1 + 2^-25) = 2^-1 (1 + 2^-23 + 2^-25 + 2^-48): up to 2^-1 (1 + 2^-22)
-    assert_eq!(f.scale_up(1.0 + 2f64.powi(-23), c(-1, 25, 0)), 0.5 * (1.0 + 2f64.powi(-22)));
+    assert_eq!(
+        f.scale_up(1.0 + 2f64.powi(-23), c(-1, 25, 0)),
+        0.5 * (1.0 + 2f64.powi(-22))
+    );
     // 1.75 2^-2 (1 + 2^-1 + 2^-2) = 1.75 * 1.75 / 4, exact
     assert_eq!(f.scale_up(1.75, c(-2, 1, 2)), 1.75 * 1.75 / 4.0);
     // below 2^emin, and any subnormal: 2^emin; zero, inf and NaN pass
     assert_eq!(f.scale_up(2f64.powi(-126), c(-2, 2, 0)), 2f64.powi(-126));
     assert_eq!(f.scale_up(2f64.powi(-149), c(-2, 2, 0)), 2f64.powi(-126));
-    assert_eq!(f.scale_up(2f64.powi(-120), c(-2, 2, 0)), 2f64.powi(-122) * 1.25);
+    assert_eq!(
+        f.scale_up(2f64.powi(-120), c(-2, 2, 0)),
+        2f64.powi(-122) * 1.25
+    );
     assert_eq!(f.scale_up(0.0, c(-2, 2, 0)), 0.0);
     assert_eq!(f.scale_up(f64::NEG_INFINITY, c(-2, 2, 0)), f64::INFINITY);
     assert!(f.scale_up(f64::NAN, c(-2, 2, 0)).is_nan());
@@ -771,15 +883,26 @@ fn scale_by_hand() {
 /// `scale_const_at_least` against a search over every constant of the shape.
 #[test]
 fn scale_const_is_the_smallest() {
-    for f in [Format::BINARY32, Format::REDUCED, Format::new(5, 4).unwrap()] {
+    for f in [
+        Format::BINARY32,
+        Format::REDUCED,
+        Format::new(5, 4).unwrap(),
+    ] {
         let jmax = f.frac_bits() + 2;
         for i in 0..2000 {
             let x = 2f64.powi(-(i % 40) - 2) * (1.0 + (i as f64 * 0.618034).fract());
             let k = x.log2().floor() as i32;
             let all = (k..=k + 1).flat_map(|k| {
-                (1..=jmax).flat_map(move |j| std::iter::once(0).chain(j + 1..=jmax).map(move |j2| ScaleConst { k, j, j2 }))
+                (1..=jmax).flat_map(move |j| {
+                    std::iter::once(0)
+                        .chain(j + 1..=jmax)
+                        .map(move |j2| ScaleConst { k, j, j2 })
+                })
             });
-            let want = all.filter(|c| c.value() >= x).map(|c| c.value()).fold(f64::INFINITY, f64::min);
+            let want = all
+                .filter(|c| c.value() >= x)
+                .map(|c| c.value())
+                .fold(f64::INFINITY, f64::min);
             let got = f.scale_const_at_least(x);
             assert_eq!(got.value(), want, "{f} x = {x:e}: {got:?}");
         }

@@ -44,14 +44,16 @@ impl Certificate {
         thread_local! {
             static KNOWN: std::cell::RefCell<Vec<(Rounding, Certificate)>> = const { std::cell::RefCell::new(Vec::new()) };
         }
-        KNOWN.with_borrow_mut(|known| match known.iter().find(|(_, c)| c.r == r && c.f == f) {
-            Some((_, c)) => *c,
-            None => {
-                let c = Certificate::compute(f, r);
-                known.push((r, c));
-                c
-            }
-        })
+        KNOWN.with_borrow_mut(
+            |known| match known.iter().find(|(_, c)| c.r == r && c.f == f) {
+                Some((_, c)) => *c,
+                None => {
+                    let c = Certificate::compute(f, r);
+                    known.push((r, c));
+                    c
+                }
+            },
+        )
     }
 
     fn compute(f: Format, r: Rounding) -> Certificate {
@@ -82,6 +84,7 @@ impl Certificate {
     /// A word of the certificate from its f64 value x (computed to within 2^-50 of the
     /// quantity it stands for): x (1 + 2^-40) rounded up in the format.
     pub fn word_up(&self, x: f64) -> f64 {
-        self.f.round(x * (1.0 + 2f64.powi(-40)), Rounding::TowardPositive)
+        self.f
+            .round(x * (1.0 + 2f64.powi(-40)), Rounding::TowardPositive)
     }
 }

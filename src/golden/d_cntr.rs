@@ -15,7 +15,18 @@ use std::collections::VecDeque;
 pub fn children(p: Pair, na: Node, nb: Node) -> ([Entry; 2], usize) {
     let ord = |c: [u32; 2]| if p.flip { [c[1], c[0]] } else { c };
     let entry = |(a0, b0): (u32, u32), (a1, b1): (u32, u32)| Entry {
-        pairs: [Pair { a: a0, b: b0, flip: false }, Pair { a: a1, b: b1, flip: true }],
+        pairs: [
+            Pair {
+                a: a0,
+                b: b0,
+                flip: false,
+            },
+            Pair {
+                a: a1,
+                b: b1,
+                flip: true,
+            },
+        ],
         len: 2,
     };
     match (na, nb) {
@@ -48,8 +59,18 @@ pub struct Queue {
 impl Queue {
     /// The queue at a query's start: the root pair (0, 0).
     pub fn new(order: Order) -> Queue {
-        let root = Pair { a: DopTree::ROOT, b: DopTree::ROOT, flip: false };
-        Queue { order, q: VecDeque::from([Entry { pairs: [root, root], len: 1 }]) }
+        let root = Pair {
+            a: DopTree::ROOT,
+            b: DopTree::ROOT,
+            flip: false,
+        };
+        Queue {
+            order,
+            q: VecDeque::from([Entry {
+                pairs: [root, root],
+                len: 1,
+            }]),
+        }
     }
 
     /// The next entry: the oldest (FIFO) or the newest (LIFO).
@@ -82,7 +103,13 @@ mod tests {
     #[test]
     fn fifo_order_is_the_papers_sequence() {
         // Node ids: letters A..G = 0..6 and digits 1..7 = 0..6, both trees alike.
-        let node = |n: u32| if n < 3 { Node::Inner([2 * n + 1, 2 * n + 2]) } else { Node::Leaf(n) };
+        let node = |n: u32| {
+            if n < 3 {
+                Node::Inner([2 * n + 1, 2 * n + 2])
+            } else {
+                Node::Leaf(n)
+            }
+        };
         let name = |p: &Pair| format!("{}{}", (b'A' + p.a as u8) as char, p.b + 1);
         let mut q = Queue::new(Order::Fifo);
         let mut seq = vec![];

@@ -4,12 +4,12 @@
 use super::doptrf::{lane, separated, transformed};
 use super::enclosure::{checking, count_checked};
 use super::host::{DopLanes, HostSetup, Lane};
-use std::borrow::Cow;
 use super::klmsel::{klmsel, opposite};
 use super::memory::Held;
 use crate::dop::normals::HALF_LANES;
 use crate::dop::{Dop, DopTree};
 use crate::format::{Format, Rounding};
+use std::borrow::Cow;
 use std::cell::Cell;
 
 /// B's transformed DOPs during one query, computed on a node's first test (or at every
@@ -56,11 +56,24 @@ struct BSide<'a> {
 }
 
 impl<'a> TransformCache<'a> {
-    pub fn new(f: Format, r: Rounding, setup: &'a HostSetup, a: &'a DopTree, b: &'a DopTree) -> Self {
+    pub fn new(
+        f: Format,
+        r: Rounding,
+        setup: &'a HostSetup,
+        a: &'a DopTree,
+        b: &'a DopTree,
+    ) -> Self {
         Self::with(f, r, Cow::Borrowed(setup), None, a, b)
     }
 
-    fn with(f: Format, r: Rounding, setup: Cow<'a, HostSetup>, lanes: Option<DopLanes>, a: &'a DopTree, b: &'a DopTree) -> Self {
+    fn with(
+        f: Format,
+        r: Rounding,
+        setup: Cow<'a, HostSetup>,
+        lanes: Option<DopLanes>,
+        a: &'a DopTree,
+        b: &'a DopTree,
+    ) -> Self {
         let k = lanes.as_ref().map_or(setup.j.len(), |l| l.k());
         let p = f.frac_bits() as i32 + 1;
         let hb = half_block(k);
@@ -80,13 +93,23 @@ impl<'a> TransformCache<'a> {
             b_dop: (u32::MAX, Dop::default()),
             check: checking(),
         };
-        TransformCache { held: SPARE_HELD.take().of(a.id()), b }
+        TransformCache {
+            held: SPARE_HELD.take().of(a.id()),
+            b,
+        }
     }
 
     /// With lanes computed when first needed, a mirror pair at a time (`frames`: the setup
     /// without lanes, [`HostSetup::frames`]): the first test computes pairs until a lane is
     /// surely separated, so that a query ending at the root pays for few cone searches.
-    pub fn lazy(f: Format, r: Rounding, frames: &HostSetup, lanes: DopLanes, a: &'a DopTree, b: &'a DopTree) -> Self {
+    pub fn lazy(
+        f: Format,
+        r: Rounding,
+        frames: &HostSetup,
+        lanes: DopLanes,
+        a: &'a DopTree,
+        b: &'a DopTree,
+    ) -> Self {
         Self::with(f, r, Cow::Owned(frames.clone()), Some(lanes), a, b)
     }
 
@@ -137,7 +160,12 @@ impl<'a> TransformCache<'a> {
         let b = &self.b;
         match b.rows.slot[nb as usize] {
             u32::MAX => b.trees[1].prefetch(nb),
-            n => crate::dop::prefetch(b.rows.thresholds.as_ptr().wrapping_add(n as usize * 4 * b.hb)),
+            n => crate::dop::prefetch(
+                b.rows
+                    .thresholds
+                    .as_ptr()
+                    .wrapping_add(n as usize * 4 * b.hb),
+            ),
         }
     }
 }
@@ -158,14 +186,17 @@ impl BSide<'_> {
     fn lazy_separated(&mut self, nb: u32, e: &[f64]) -> bool {
         let (h, q, est) = (self.k / 2, self.q, self.estimator());
         let d = read(self.trees[1], &mut self.b_dop, nb);
-        let Some((lanes, pairs)) = &mut self.pending else { return false };
+        let Some((lanes, pairs)) = &mut self.pending else {
+            return false;
+        };
         while pairs.len() < h {
             let i = pairs.len();
             let p = lanes.pair(i);
             pairs.push(p);
             for (l, ei) in [(p[0], e[i + h]), (p[1], e[i])] {
                 let dj = klmsel(d, l.j);
-                let (set, _) = est.thresholds(q, [dj[0] * l.c[0], dj[1] * l.c[1], dj[2] * l.c[2]], l.cv);
+                let (set, _) =
+                    est.thresholds(q, [dj[0] * l.c[0], dj[1] * l.c[1], dj[2] * l.c[2]], l.cv);
                 if flag_surely_set(set, ei) {
                     return true;
                 }
@@ -187,7 +218,11 @@ impl BSide<'_> {
         if let Some((lanes, mut pairs)) = self.pending.take() {
             let h = self.k / 2;
             pairs.extend((pairs.len()..h).map(|i| lanes.pair(i)));
-            let all: Vec<Lane> = pairs.iter().map(|p| p[0]).chain(pairs.iter().map(|p| p[1])).collect();
+            let all: Vec<Lane> = pairs
+                .iter()
+                .map(|p| p[0])
+                .chain(pairs.iter().map(|p| p[1]))
+                .collect();
             self.setup.to_mut().set_lanes(&all);
             self.words = LaneWords::of(&self.setup, self.hb);
         }
@@ -214,7 +249,10 @@ impl BSide<'_> {
         // padding lanes meet what follows, and never decide). Both halves without a branch
         // between them (which one decides is unpredictable).
         let ep = e.padded();
-        let (s1, o1) = scan::<HB>(&t[..2 * HB], ep[h..h + HB].try_into().expect("h + HB <= 2H"));
+        let (s1, o1) = scan::<HB>(
+            &t[..2 * HB],
+            ep[h..h + HB].try_into().expect("h + HB <= 2H"),
+        );
         let (s2, o2) = scan::<HB>(&t[2 * HB..], ep[..HB].try_into().expect("HB <= 2H"));
         !(s1 | s2) && (!(o1 | o2) || self.exact_lanes(block, nb, e))
     }
@@ -225,7 +263,10 @@ impl BSide<'_> {
         let (k, rows, q) = (self.k, &mut self.rows, self.q);
         for i in 0..k {
             let ei = opposite(e, i);
-            if flag_surely_clear(rows.thresholds[block * 4 * self.hb + clear_at(k / 2, self.hb, i)], ei) {
+            if flag_surely_clear(
+                rows.thresholds[block * 4 * self.hb + clear_at(k / 2, self.hb, i)],
+                ei,
+            ) {
                 continue;
             }
             let b = &mut rows.blocks[block];
@@ -236,7 +277,8 @@ impl BSide<'_> {
             let at = b.exact as usize + i;
             if b.known & (1 << i) == 0 {
                 let di = klmsel(read(self.trees[1], &mut self.b_dop, nb), self.setup.j[i]);
-                rows.exact[at] = transformed(self.f, self.r, di, self.setup.cmat[i], self.setup.cvec[i]);
+                rows.exact[at] =
+                    transformed(self.f, self.r, di, self.setup.cmat[i], self.setup.cvec[i]);
                 b.known |= 1 << i;
             }
             if separated(q, rows.exact[at], ei) {
@@ -291,7 +333,11 @@ impl BSide<'_> {
         }
         let rows = &mut self.rows;
         let block = rows.blocks.len();
-        rows.blocks.push(Block { node: nb, known: 0, exact: u32::MAX });
+        rows.blocks.push(Block {
+            node: nb,
+            known: 0,
+            exact: u32::MAX,
+        });
         for half in [0, HB] {
             rows.thresholds.extend_from_slice(&set[half..half + HB]);
             rows.thresholds.extend_from_slice(&clear[half..half + HB]);
@@ -300,7 +346,11 @@ impl BSide<'_> {
     }
 
     fn estimator(&self) -> Estimator {
-        Estimator { max: self.f.max_finite() / 8.0, rel: self.rel, abs: 11.0 * self.q }
+        Estimator {
+            max: self.f.max_finite() / 8.0,
+            rel: self.rel,
+            abs: 11.0 * self.q,
+        }
     }
 }
 
@@ -372,7 +422,10 @@ impl Rows {
     }
 
     fn bytes(&self) -> usize {
-        4 * self.slot.capacity() + 8 * self.thresholds.capacity() + 8 * self.exact.capacity() + 12 * self.blocks.capacity()
+        4 * self.slot.capacity()
+            + 8 * self.thresholds.capacity()
+            + 8 * self.exact.capacity()
+            + 12 * self.blocks.capacity()
     }
 }
 
@@ -406,7 +459,11 @@ impl Estimator {
     fn thresholds(&self, q: f64, p: [f64; 3], c: f64) -> (f64, f64) {
         let s = p[0].abs() + p[1].abs() + p[2].abs() + c.abs();
         let a = (p[0] + p[1]) + (p[2] + c);
-        let t = if s <= self.max { self.rel * s + self.abs } else { f64::NAN };
+        let t = if s <= self.max {
+            self.rel * s + self.abs
+        } else {
+            f64::NAN
+        };
         let m = -q - a;
         (m - t, m + t)
     }
@@ -448,7 +505,11 @@ struct LaneWords {
 
 impl LaneWords {
     fn of(setup: &HostSetup, hb: usize) -> LaneWords {
-        let mut w = LaneWords { j: [[0; LANES]; 3], c: [[0.0; LANES]; 3], cv: [0.0; LANES] };
+        let mut w = LaneWords {
+            j: [[0; LANES]; 3],
+            c: [[0.0; LANES]; 3],
+            cv: [0.0; LANES],
+        };
         let h = setup.j.len() / 2;
         for (i, ((j, c), cv)) in setup.j.iter().zip(&setup.cmat).zip(&setup.cvec).enumerate() {
             let at = (i / h) * hb + i % h;
@@ -492,7 +553,14 @@ fn flag_surely_clear(clear: f64, e: f64) -> bool {
 /// The DOP unit, lane by lane as the pipeline computes it (the reference for the RTL).
 pub fn dop_overlap(f: Format, r: Rounding, setup: &HostSetup, d: &[f64], e: &[f64]) -> bool {
     (0..d.len()).all(|i| {
-        let s = lane(f, r, klmsel(d, setup.j[i]), setup.cmat[i], setup.cvec[i], opposite(e, i));
+        let s = lane(
+            f,
+            r,
+            klmsel(d, setup.j[i]),
+            setup.cmat[i],
+            setup.cvec[i],
+            opposite(e, i),
+        );
         let flag = s < 0.0;
         !flag
     })

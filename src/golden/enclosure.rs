@@ -142,7 +142,10 @@ static FORCED: AtomicBool = AtomicBool::new(false);
 #[inline]
 pub fn checking() -> bool {
     static ENV: OnceLock<bool> = OnceLock::new();
-    FORCED.load(Ordering::Relaxed) || *ENV.get_or_init(|| crate::measure::env_flag(crate::measure::CHECK_FAST).unwrap_or_else(|e| panic!("{e}")))
+    FORCED.load(Ordering::Relaxed)
+        || *ENV.get_or_init(|| {
+            crate::measure::env_flag(crate::measure::CHECK_FAST).unwrap_or_else(|e| panic!("{e}"))
+        })
 }
 
 /// Turns check mode on for the rest of the process (tests).
@@ -197,13 +200,23 @@ pub(crate) mod check_tests {
         let cfg = ChipConfig::default();
         let image = |seed| ObjectImage::build(crate::mesh::soup(6, seed).triangles_f64(), &cfg);
         let (a, b) = (image(1), image(2));
-        let setup = HostSetup::new(&cfg, &crate::pose::Pose::new(10.0, 20.0, 30.0, 0.0, 0.0, 0.0), b.tree.coord_bound(), a.tri_side(&b));
+        let setup = HostSetup::new(
+            &cfg,
+            &crate::pose::Pose::new(10.0, 20.0, 30.0, 0.0, 0.0, 0.0),
+            b.tree.coord_bound(),
+            a.tri_side(&b),
+        );
         Small { cfg, a, b, setup }
     }
 
     /// `compare` panics with a check-mode message.
     pub fn fires(compare: impl FnOnce()) {
-        let msg = std::panic::catch_unwind(std::panic::AssertUnwindSafe(compare)).expect_err("a wrong answer must panic");
-        assert!(msg.downcast_ref::<String>().is_some_and(|m| m.contains("check mode")), "{msg:?}");
+        let msg = std::panic::catch_unwind(std::panic::AssertUnwindSafe(compare))
+            .expect_err("a wrong answer must panic");
+        assert!(
+            msg.downcast_ref::<String>()
+                .is_some_and(|m| m.contains("check mode")),
+            "{msg:?}"
+        );
     }
 }

@@ -11,8 +11,8 @@
 //! rounding of B's vertices into A's frame, so that d'_i bounds the f64 geometry the
 //! oracle judges. c_i is then rounded up. In `nearest-even` mode nothing is padded.
 
-use crate::dop::normals::{DopNormals, MAX_HULL};
 use crate::chip::config::{ChipConfig, DopRounding};
+use crate::dop::normals::{DopNormals, MAX_HULL};
 use crate::format::{Format, Rounding};
 use crate::golden::certificate::Certificate;
 use crate::pose::Pose;
@@ -57,7 +57,10 @@ pub struct TriSide {
 
 impl TriSide {
     /// For a setup whose T.CHECK words nobody reads (the DOP unit's): unknown lambda.
-    pub const UNUSED: TriSide = TriSide { scale: [1.0, 1.0], lambda_max_b: f64::INFINITY };
+    pub const UNUSED: TriSide = TriSide {
+        scale: [1.0, 1.0],
+        lambda_max_b: f64::INFINITY,
+    };
 }
 
 impl HostSetup {
@@ -65,7 +68,11 @@ impl HostSetup {
     /// the scale of the vertices' object; `ab`: A's edges against U(B) (M_AB, S_A), else B's
     /// against U(A) (M_BA, S_B).
     pub fn tri_frame(&self, ab: bool) -> (&Affine, [f64; 2], f64) {
-        if ab { (&self.m_ab, self.beta_ab, self.scale[0]) } else { (&self.m_ba, self.beta_ba, self.scale[1]) }
+        if ab {
+            (&self.m_ab, self.beta_ab, self.scale[0])
+        } else {
+            (&self.m_ba, self.beta_ba, self.scale[1])
+        }
     }
 
     /// `b_coord_bound` is X = max |x|_inf over B's root DOP ([`DopTree::coord_bound`](crate::dop::DopTree::coord_bound)).
@@ -81,7 +88,13 @@ impl HostSetup {
     /// [`rotation`](Pose::rotation) and [`translation`](Pose::translation), which the caller
     /// computes once for the whole setup (its sines, cosines and angle reductions are a
     /// noticeable part of a query that ends at the root).
-    pub fn frames(cfg: &ChipConfig, rot: &Matrix3<f64>, t: &Vector3<f64>, b_coord_bound: f64, tri: TriSide) -> HostSetup {
+    pub fn frames(
+        cfg: &ChipConfig,
+        rot: &Matrix3<f64>,
+        t: &Vector3<f64>,
+        b_coord_bound: f64,
+        tri: TriSide,
+    ) -> HostSetup {
         let t_inf = t.amax();
         let rt = rot.transpose();
         let tab = -(rt * t);
@@ -97,7 +110,11 @@ impl HostSetup {
         let m_ab = affine(fmt, &rt, &tab);
         let m_ba = affine(fmt, rot, t);
         // The placement bound needs 4 lambda eta <= 1/2 for every leaf of B.
-        let eta_ab = if 4.0 * tri.lambda_max_b * eta <= 0.5 { eta } else { f64::INFINITY };
+        let eta_ab = if 4.0 * tri.lambda_max_b * eta <= 0.5 {
+            eta
+        } else {
+            f64::INFINITY
+        };
         let [sa, sb] = tri.scale;
         HostSetup {
             j: vec![],
@@ -142,7 +159,12 @@ pub struct DopLanes {
 
 impl DopLanes {
     /// `rot`, `t` as [`HostSetup::frames`] takes them.
-    pub fn new(cfg: &ChipConfig, rot: &Matrix3<f64>, t: &Vector3<f64>, b_coord_bound: f64) -> DopLanes {
+    pub fn new(
+        cfg: &ChipConfig,
+        rot: &Matrix3<f64>,
+        t: &Vector3<f64>,
+        b_coord_bound: f64,
+    ) -> DopLanes {
         DopLanes {
             normals: DopNormals::get(cfg.k).expect("k validated by the caller"),
             rt: rot.transpose(),
@@ -160,7 +182,11 @@ impl DopLanes {
     /// Every lane, lane 0 first.
     pub fn all(&self) -> Vec<Lane> {
         let pairs: Vec<[Lane; 2]> = (0..self.k() / 2).map(|i| self.pair(i)).collect();
-        pairs.iter().map(|p| p[0]).chain(pairs.iter().map(|p| p[1])).collect()
+        pairs
+            .iter()
+            .map(|p| p[0])
+            .chain(pairs.iter().map(|p| p[1]))
+            .collect()
     }
 
     /// Lanes i and i + k/2 (i < k/2). The hull is centrally symmetric: -b_i lies in the
@@ -168,7 +194,10 @@ impl DopLanes {
     pub fn pair(&self, i: usize) -> [Lane; 2] {
         let n = self.normals;
         let (tri, lambda) = best_cone(n, &(self.rt * n.b[i]));
-        [self.lane(i, tri, lambda), self.lane(i + self.k() / 2, tri.map(|x| n.opp(x)), lambda)]
+        [
+            self.lane(i, tri, lambda),
+            self.lane(i + self.k() / 2, tri.map(|x| n.opp(x)), lambda),
+        ]
     }
 
     fn lane(&self, i: usize, tri: [usize; 3], lambda: [f64; 3]) -> Lane {
@@ -183,7 +212,10 @@ impl DopLanes {
             let approx: Vector3<f64> = (0..3).map(|l| normals.b[tri[l]] * c3[l]).sum();
             let r = b - approx;
             // f64 error of b (3 products, 2 sums per entry) and of approx, generously.
-            let scale: f64 = b.abs().sum() + (0..3).map(|l| c3[l] * normals.b[tri[l]].abs().sum()).sum::<f64>();
+            let scale: f64 = b.abs().sum()
+                + (0..3)
+                    .map(|l| c3[l] * normals.b[tri[l]].abs().sum())
+                    .sum::<f64>();
             let resid = r.abs().sum() + 8.0 * eps * scale;
             let bi1 = bi.abs().sum();
             let transform_err = bi1 * 2.0 * eps * (3.0 * b_coord_bound + t_inf);
@@ -194,7 +226,11 @@ impl DopLanes {
         } else {
             fmt.round(bt, Rounding::NearestEven)
         };
-        Lane { j: tri.map(|x| x as u8), c: c3, cv: c }
+        Lane {
+            j: tri.map(|x| x as u8),
+            c: c3,
+            cv: c,
+        }
     }
 }
 
@@ -211,7 +247,10 @@ fn betas(fmt: Format, b: &Affine, tr_err: f64, eta: f64, s_l: f64, s_v: f64) -> 
     let b_lin = (0..3).map(|j| col(j, a_lin)).fold(0.0, f64::max);
     let b_tr = col(3, a_tr);
     let bm = (1.0 + u1) * b_lin + (b_tr + s_l) / s_v + 1.0;
-    let bf = (1.0 + u1) * a_lin + (a_tr + 3.0 * a_x * b_lin + eta) / s_v + eta * (1.0 + u1) * b_lin / s_l + eta * b_tr / (s_l * s_v);
+    let bf = (1.0 + u1) * a_lin
+        + (a_tr + 3.0 * a_x * b_lin + eta) / s_v
+        + eta * (1.0 + u1) * b_lin / s_l
+        + eta * b_tr / (s_l * s_v);
     [cert.word_up(bm), cert.word_up(bf)]
 }
 
@@ -236,7 +275,9 @@ fn best_cone(n: &DopNormals, b: &Vector3<f64>) -> ([usize; 3], [f64; 3]) {
     let [px, py, pz] = &n.planes;
     let dots: [f64; MAX_HULL] = std::array::from_fn(|t| (px[t] * b.x + py[t] * b.y) + pz[t] * b.z);
     let dots = &dots[..n.hull.len()];
-    let top = dots.iter().fold(f64::NEG_INFINITY, |m, &d| if d > m { d } else { m });
+    let top = dots
+        .iter()
+        .fold(f64::NEG_INFINITY, |m, &d| if d > m { d } else { m });
     let (t, l) = n
         .hull
         .iter()
@@ -245,7 +286,10 @@ fn best_cone(n: &DopNormals, b: &Vector3<f64>) -> ([usize; 3], [f64; 3]) {
         .map(|(t, _)| (t, t.inv * b))
         .max_by(|x, y| x.1.min().total_cmp(&y.1.min()))
         .expect("the hull is not empty");
-    debug_assert!(l.min() >= -1e-12 * b.norm(), "direction {b:?} outside its cone: {l:?}");
+    debug_assert!(
+        l.min() >= -1e-12 * b.norm(),
+        "direction {b:?} outside its cone: {l:?}"
+    );
     (t.j, [l.x.max(0.0), l.y.max(0.0), l.z.max(0.0)])
 }
 
@@ -259,7 +303,9 @@ mod tests {
     /// again in the filter, and `f64::max`: another implementation of the same rule.
     fn best_cone_by_dot(n: &DopNormals, b: &Vector3<f64>) -> ([usize; 3], [f64; 3]) {
         let plane = |t: usize| Vector3::new(n.planes[0][t], n.planes[1][t], n.planes[2][t]);
-        let top = (0..n.hull.len()).map(|t| plane(t).dot(b)).fold(f64::NEG_INFINITY, f64::max);
+        let top = (0..n.hull.len())
+            .map(|t| plane(t).dot(b))
+            .fold(f64::NEG_INFINITY, f64::max);
         let (t, l) = (0..n.hull.len())
             .filter(|&t| plane(t).dot(b) >= top - 1e-12 * top.abs())
             .map(|t| (&n.hull[t], n.hull[t].inv * b))
@@ -278,27 +324,51 @@ mod tests {
         let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(7);
         for k in SUPPORTED_K {
             let n = DopNormals::get(k).unwrap();
-            let mut dirs: Vec<Vector3<f64>> = n.b.iter().flat_map(|x| n.b.iter().map(move |y| x + y)).filter(|d| d.norm() > 0.0).collect();
+            let mut dirs: Vec<Vector3<f64>> =
+                n.b.iter()
+                    .flat_map(|x| n.b.iter().map(move |y| x + y))
+                    .filter(|d| d.norm() > 0.0)
+                    .collect();
             dirs.extend(n.b.iter().copied());
             for q in 0..4 {
                 for axis in 0..3 {
                     let mut deg = [0.0; 3];
                     deg[axis] = 90.0 * q as f64;
-                    let r = Pose { rot_deg: deg, t: [0.0; 3] }.rotation().transpose();
+                    let r = Pose {
+                        rot_deg: deg,
+                        t: [0.0; 3],
+                    }
+                    .rotation()
+                    .transpose();
                     dirs.extend(n.b.iter().map(|b| r * b));
                 }
             }
             for _ in 0..2000 {
-                let pose = Pose { rot_deg: std::array::from_fn(|_| rng.random_range(-180.0..180.0)), t: [0.0; 3] };
+                let pose = Pose {
+                    rot_deg: std::array::from_fn(|_| rng.random_range(-180.0..180.0)),
+                    t: [0.0; 3],
+                };
                 let b = n.b[rng.random_range(0..k)];
                 dirs.push(pose.rotation().transpose() * b);
-                dirs.push(Vector3::new(rng.random_range(-1.0..1.0), rng.random_range(-1.0..1.0), rng.random_range(-1.0..1.0)));
+                dirs.push(Vector3::new(
+                    rng.random_range(-1.0..1.0),
+                    rng.random_range(-1.0..1.0),
+                    rng.random_range(-1.0..1.0),
+                ));
             }
             for d in &dirs {
                 let (fast, slow) = (best_cone(n, d), best_cone_by_dot(n, d));
-                assert_eq!((fast.0, fast.1.map(f64::to_bits)), (slow.0, slow.1.map(f64::to_bits)), "k = {k}, direction {d:?}");
+                assert_eq!(
+                    (fast.0, fast.1.map(f64::to_bits)),
+                    (slow.0, slow.1.map(f64::to_bits)),
+                    "k = {k}, direction {d:?}"
+                );
                 let back: Vector3<f64> = (0..3).map(|l| n.b[fast.0[l]] * fast.1[l]).sum();
-                assert!((back - d).norm() <= 1e-9 * d.norm(), "k = {k}: direction {d:?} not in its cone {:?} ({back:?})", fast.0);
+                assert!(
+                    (back - d).norm() <= 1e-9 * d.norm(),
+                    "k = {k}: direction {d:?} not in its cone {:?} ({back:?})",
+                    fast.0
+                );
             }
         }
     }

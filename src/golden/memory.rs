@@ -4,11 +4,11 @@
 
 use crate::chip::config::ChipConfig;
 use crate::chip::layout::{node_ids, node_records, tri_records, Layout};
-use crate::golden::host::{Affine, TriSide};
 use crate::dop::tree::{DopTree, Tri};
 use crate::dop::Node;
 use crate::format::{Format, Rounding};
 use crate::golden::certificate::Certificate;
+use crate::golden::host::{Affine, TriSide};
 use nalgebra::{Matrix3, Vector3};
 
 /// The triangle word of one leaf (DATE'05 §4.2: the triangle and its M_B), with the two
@@ -58,7 +58,10 @@ impl TriWord {
         let rn = |x: f64| fmt.round(x, Rounding::NearestEven);
         let cert = Certificate::new(fmt, Rounding::NearestEven);
         let v = t.map(|p| [rn(p.x), rn(p.y), rn(p.z)]);
-        let v_exact = t.iter().zip(&v).all(|(p, q)| p.x == q[0] && p.y == q[1] && p.z == q[2]);
+        let v_exact = t
+            .iter()
+            .zip(&v)
+            .all(|(p, q)| p.x == q[0] && p.y == q[1] && p.z == q[2]);
         let bad = TriWord {
             v,
             m: [[0.0; 4]; 3],
@@ -76,7 +79,9 @@ impl TriWord {
             return bad;
         }
         let e = Matrix3::from_columns(&[e1, e2, n / nn.sqrt()]);
-        let Some(l) = e.try_inverse().filter(|i| i.iter().all(|x| x.is_finite())) else { return bad };
+        let Some(l) = e.try_inverse().filter(|i| i.iter().all(|x| x.is_finite())) else {
+            return bad;
+        };
         let u = 2f64.powi(-53);
         // rho: |fl(L E) - I| plus the rounding of the product and of the differences in E.
         let res = l * e - Matrix3::identity();
@@ -106,8 +111,16 @@ impl TriWord {
         }
         let u1 = cert.u1;
         // Lambda-hat (rows of the linear part) and T-hat (translation) bound |M_B*|.
-        let lam_hat = (0..3).map(|r| (0..3).map(|c| (1.0 + u1) * m[r][c].abs() + a_lin).sum::<f64>()).fold(0.0, f64::max);
-        let t_hat = (0..3).map(|r| (1.0 + u1) * m[r][3].abs() + a_tr).fold(0.0, f64::max);
+        let lam_hat = (0..3)
+            .map(|r| {
+                (0..3)
+                    .map(|c| (1.0 + u1) * m[r][c].abs() + a_lin)
+                    .sum::<f64>()
+            })
+            .fold(0.0, f64::max);
+        let t_hat = (0..3)
+            .map(|r| (1.0 + u1) * m[r][3].abs() + a_tr)
+            .fold(0.0, f64::max);
         let lambda = l_inf + e_lin;
         // Per unit of the frame's beta_m: M_B's own error, and the value datapath's
         // underflow (3 products on x, 3 more per coordinate, each at most the smallest
@@ -157,12 +170,39 @@ impl ObjectImage {
     pub fn build(tris: Vec<Tri>, cfg: &ChipConfig) -> ObjectImage {
         let fmt = cfg.format.tri;
         let scale = object_scale(&tris, fmt);
-        let lambda_max = tris.iter().map(|t| TriWord::new(t, fmt, scale).lambda).fold(0.0, f64::max);
+        let lambda_max = tris
+            .iter()
+            .map(|t| TriWord::new(t, fmt, scale).lambda)
+            .fold(0.0, f64::max);
         let tree = DopTree::of(tris, cfg);
-        let children: Vec<_> = tree.nodes().map(|n| if let Node::Inner(c) = n { Some(c) } else { None }).collect();
-        let leaves: Vec<u32> = tree.nodes().filter_map(|n| if let Node::Leaf(t) = n { Some(t) } else { None }).collect();
-        let (records, ids, tri_records) = (node_records(cfg.layout, &children), node_ids(cfg.layout, &children), tri_records(cfg.layout, &leaves));
-        ObjectImage { tree, scale, tri_format: fmt, lambda_max, records, ids, tri_records }
+        let children: Vec<_> = tree
+            .nodes()
+            .map(|n| {
+                if let Node::Inner(c) = n {
+                    Some(c)
+                } else {
+                    None
+                }
+            })
+            .collect();
+        let leaves: Vec<u32> = tree
+            .nodes()
+            .filter_map(|n| if let Node::Leaf(t) = n { Some(t) } else { None })
+            .collect();
+        let (records, ids, tri_records) = (
+            node_records(cfg.layout, &children),
+            node_ids(cfg.layout, &children),
+            tri_records(cfg.layout, &leaves),
+        );
+        ObjectImage {
+            tree,
+            scale,
+            tri_format: fmt,
+            lambda_max,
+            records,
+            ids,
+            tri_records,
+        }
     }
 
     /// Triangle `t`'s word. Made from the f64 triangle when read, as the host made it
@@ -206,7 +246,10 @@ impl ObjectImage {
     /// What T.CHECK's error words need of A (`self`) and B for
     /// [`HostSetup::new`](crate::golden::host::HostSetup::new).
     pub fn tri_side(&self, b: &ObjectImage) -> TriSide {
-        TriSide { scale: [self.scale, b.scale], lambda_max_b: b.lambda_max }
+        TriSide {
+            scale: [self.scale, b.scale],
+            lambda_max_b: b.lambda_max,
+        }
     }
 
     /// Bytes of this object's image in memory.
@@ -227,9 +270,20 @@ pub fn image_bases(a: &ObjectImage, b: &ObjectImage) -> [u32; 4] {
 /// largest value). The input-error terms are measured against `|x| + |y| + |z| + S`, so
 /// that they scale with the objects (docs/ACCURACY.md).
 pub fn object_scale(tris: &[Tri], fmt: Format) -> f64 {
-    let x = tris.iter().flatten().map(|p| p.coords.amax()).fold(0.0, f64::max);
-    let s = if x > 0.0 { 2f64.powi(x.log2().ceil() as i32) } else { 1.0 };
-    s.clamp(fmt.min_positive_normal(), 2f64.powi(fmt.max_finite().log2().floor() as i32 - 2))
+    let x = tris
+        .iter()
+        .flatten()
+        .map(|p| p.coords.amax())
+        .fold(0.0, f64::max);
+    let s = if x > 0.0 {
+        2f64.powi(x.log2().ceil() as i32)
+    } else {
+        1.0
+    };
+    s.clamp(
+        fmt.min_positive_normal(),
+        2f64.powi(fmt.max_finite().log2().floor() as i32 - 2),
+    )
 }
 
 /// Values of one object made when read (a node's DOP, a triangle's word), the last ones
@@ -247,7 +301,11 @@ pub struct Held<T> {
 
 impl<T> Default for Held<T> {
     fn default() -> Self {
-        Held { tags: vec![], values: vec![], object: 0 }
+        Held {
+            tags: vec![],
+            values: vec![],
+            object: 0,
+        }
     }
 }
 
@@ -286,7 +344,10 @@ impl<T: Copy + Default> Held<T> {
     /// The line of `n` and the tag it holds while `n`'s value is there.
     #[inline]
     fn line(&self, n: u32) -> (usize, u64) {
-        (n as usize % HELD_LINES, (self.object as u64) << 32 | n as u64)
+        (
+            n as usize % HELD_LINES,
+            (self.object as u64) << 32 | n as u64,
+        )
     }
 
     /// The lines for the values of the object numbered `object` (its tree's
@@ -310,7 +371,9 @@ pub struct TriCache {
 impl TriCache {
     /// An empty cache; `lines` must pass [`ChipConfig::check`](crate::chip::config::ChipConfig::check).
     pub fn new(lines: u32) -> TriCache {
-        TriCache { tags: vec![None; lines as usize] }
+        TriCache {
+            tags: vec![None; lines as usize],
+        }
     }
 
     fn line(&self, t: u32) -> usize {
@@ -356,7 +419,10 @@ pub struct NodeCache {
 impl NodeCache {
     /// `lines` from [`ChipConfig::node_cache`](crate::chip::config::ChipConfig::node_cache).
     pub fn new(lines: u32) -> NodeCache {
-        NodeCache { lines: lines as usize, tags: Vec::with_capacity(lines as usize) }
+        NodeCache {
+            lines: lines as usize,
+            tags: Vec::with_capacity(lines as usize),
+        }
     }
 
     /// A use of record `r`: true if it had to be fetched (a miss, which replaces the least
@@ -407,7 +473,13 @@ mod tests {
         assert_eq!(misses(1), [1, 1, 1, 1, 1, 1, 1]);
         assert_eq!(misses(4), [1, 1, 1, 1, 1, 1, 0]);
         assert_eq!(misses(8), [1, 1, 0, 1, 1, 0, 0]);
-        let check = |tri_cache| crate::chip::config::ChipConfig { tri_cache, ..Default::default() }.check();
+        let check = |tri_cache| {
+            crate::chip::config::ChipConfig {
+                tri_cache,
+                ..Default::default()
+            }
+            .check()
+        };
         assert!(check(128).is_ok() && check(1).is_ok());
         assert!(check(0).is_err() && check(96).is_err() && check(2048).is_err());
     }
@@ -418,21 +490,49 @@ mod tests {
     #[test]
     fn every_accepted_format_has_an_object_scale() {
         use crate::chip::config::{ChipConfig, Formats};
-        let tri: Tri = [nalgebra::Point3::new(0.0, 0.0, 0.0), nalgebra::Point3::new(3.0, 0.0, 0.0), nalgebra::Point3::new(0.0, 1e-3, 0.0)];
+        let tri: Tri = [
+            nalgebra::Point3::new(0.0, 0.0, 0.0),
+            nalgebra::Point3::new(3.0, 0.0, 0.0),
+            nalgebra::Point3::new(0.0, 1e-3, 0.0),
+        ];
         let mut refused = vec![];
         for (e, m) in (2..=9).flat_map(|e| (1..=24).map(move |m| (e, m))) {
             let f = Format::new(e, m).unwrap();
-            for format in [Formats::from(f), Formats { dop: Format::BINARY32, tri: f }, Formats { dop: f, tri: Format::BINARY32 }] {
-                match (ChipConfig { format, ..Default::default() }).check() {
+            for format in [
+                Formats::from(f),
+                Formats {
+                    dop: Format::BINARY32,
+                    tri: f,
+                },
+                Formats {
+                    dop: f,
+                    tri: Format::BINARY32,
+                },
+            ] {
+                match (ChipConfig {
+                    format,
+                    ..Default::default()
+                })
+                .check()
+                {
                     Ok(()) => assert!(object_scale(&[tri], format.tri) > 0.0),
                     Err(e) => refused.push((format.to_string(), e)),
                 }
             }
         }
         assert_eq!(refused.len(), 2 * 24, "{refused:?}");
-        assert!(refused.iter().all(|(f, _)| f.ends_with(|c: char| c.is_ascii_digit()) && f.rsplit('/').next().unwrap().starts_with("e2m")), "{refused:?}");
+        assert!(
+            refused
+                .iter()
+                .all(|(f, _)| f.ends_with(|c: char| c.is_ascii_digit())
+                    && f.rsplit('/').next().unwrap().starts_with("e2m")),
+            "{refused:?}"
+        );
         let (_, e) = &refused[0];
-        assert!(e.contains("at least 3 exponent bits") && e.contains("e3m1"), "{e}");
+        assert!(
+            e.contains("at least 3 exponent bits") && e.contains("e3m1"),
+            "{e}"
+        );
     }
 
     proptest! {
@@ -468,7 +568,10 @@ mod tests {
     fn held_lines_are_per_object() {
         let mut h = Held::default().of(1);
         assert_eq!((*h.get(5, || 1), *h.get(5, || 2)), (1, 1));
-        assert_eq!((*h.get(5 + HELD_LINES as u32, || 3), *h.get(5, || 4)), (3, 4));
+        assert_eq!(
+            (*h.get(5 + HELD_LINES as u32, || 3), *h.get(5, || 4)),
+            (3, 4)
+        );
         let mut h = h.of(2);
         assert_eq!((*h.get(5, || 6), *h.get(5, || 7)), (6, 6));
         let mut h = h.of(1);

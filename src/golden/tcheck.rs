@@ -37,8 +37,8 @@
 use super::certificate::Certificate;
 use super::enclosure::{add_down, down, mul_down, Upper};
 use super::host::Affine;
-use crate::format::{Format, Rounding};
 use super::memory::TriWord;
+use crate::format::{Format, Rounding};
 
 const UP: Rounding = Rounding::TowardPositive;
 
@@ -47,7 +47,11 @@ const UP: Rounding = Rounding::TowardPositive;
 #[inline(always)]
 fn dot(f: Format, r: Rounding, a: [f64; 3], b: [f64; 3], c: Option<f64>) -> f64 {
     // (products as plain calls, not a closure: the closure was not inlined)
-    let (p0, p1, p2) = (f.mul(a[0], b[0], r), f.mul(a[1], b[1], r), f.mul(a[2], b[2], r));
+    let (p0, p1, p2) = (
+        f.mul(a[0], b[0], r),
+        f.mul(a[1], b[1], r),
+        f.mul(a[2], b[2], r),
+    );
     let s01 = f.add(p0, p1, r);
     match c {
         None => f.add(s01, p2, r),
@@ -102,22 +106,44 @@ pub struct Stage1 {
 fn mb_terms(m: &Affine, frame: &Affine) -> [(usize, usize, [f64; 3], [f64; 3], Option<f64>); 12] {
     std::array::from_fn(|n| {
         let (i, j) = (n / 4, n % 4);
-        (i, j, [m[i][0], m[i][1], m[i][2]], [frame[0][j], frame[1][j], frame[2][j]], (j == 3).then_some(m[i][3]))
+        (
+            i,
+            j,
+            [m[i][0], m[i][1], m[i][2]],
+            [frame[0][j], frame[1][j], frame[2][j]],
+            (j == 3).then_some(m[i][3]),
+        )
     })
 }
 
 /// Stage 1: M_b = M_B . M_f (Eqs. 11, 12) and its magnitude for the leaf word `leaf` and
 /// a frame map `frame` with its error words `beta` ([`HostSetup::beta_ab`](super::host::HostSetup::beta_ab)), `scale` the
 /// vertices' object's ([`HostSetup::scale`](super::host::HostSetup::scale)).
-pub fn stage1(f: Format, r: Rounding, leaf: &TriWord, frame: &Affine, beta: [f64; 2], scale: f64) -> Stage1 {
+pub fn stage1(
+    f: Format,
+    r: Rounding,
+    leaf: &TriWord,
+    frame: &Affine,
+    beta: [f64; 2],
+    scale: f64,
+) -> Stage1 {
     let mut mb = [[0.0; 4]; 3];
     let mut mag = [[0.0; 4]; 3];
     for (i, j, row, col, c) in mb_terms(&leaf.m, frame) {
         mb[i][j] = dot(f, r, row, col, c);
         mag[i][j] = dot_mag(f, row, col, c);
     }
-    let a_err = f.add(f.mul(leaf.alpha_m, beta[0], UP), f.mul(leaf.alpha_f, beta[1], UP), UP);
-    Stage1 { mb, mag, a_err, scale }
+    let a_err = f.add(
+        f.mul(leaf.alpha_m, beta[0], UP),
+        f.mul(leaf.alpha_f, beta[1], UP),
+        UP,
+    );
+    Stage1 {
+        mb,
+        mag,
+        a_err,
+        scale,
+    }
 }
 
 /// Stage 1 for [`decide`]: M_b as the chip computes it, and upper enclosures ([`Upper`]) of
@@ -133,7 +159,15 @@ pub struct Stage1Hi {
 }
 
 /// [`stage1`] with the magnitudes enclosed instead of rounded.
-pub fn stage1_hi(f: Format, r: Rounding, up: &Upper, leaf: &TriWord, frame: &Affine, beta: [f64; 2], scale: f64) -> Stage1Hi {
+pub fn stage1_hi(
+    f: Format,
+    r: Rounding,
+    up: &Upper,
+    leaf: &TriWord,
+    frame: &Affine,
+    beta: [f64; 2],
+    scale: f64,
+) -> Stage1Hi {
     let (mut mb, mut mag, mut fits) = ([[0.0; 4]; 3], [[0.0; 4]; 3], true);
     for (i, j, row, col, c) in mb_terms(&leaf.m, frame) {
         mb[i][j] = dot(f, r, row, col, c);
@@ -141,7 +175,13 @@ pub fn stage1_hi(f: Format, r: Rounding, up: &Upper, leaf: &TriWord, frame: &Aff
         fits &= up.fits(mb[i][j]) & up.fits(mag[i][j]);
     }
     let a_err = up.add(up.mul(leaf.alpha_m, beta[0]), up.mul(leaf.alpha_f, beta[1]));
-    Stage1Hi { mb, mag, a_err, scale, fits: fits & up.fits(a_err) }
+    Stage1Hi {
+        mb,
+        mag,
+        a_err,
+        scale,
+        fits: fits & up.fits(a_err),
+    }
 }
 
 /// One mapped vertex as [`decide`] sees it (docs/ACCURACY.md, "Values in f64"): each
@@ -185,7 +225,13 @@ pub enum Decision {
 /// The vertices are written into `v`, every field before it is read: the caller's, kept
 /// between calls (zeroing them was 1.3% of a bunny contact query's instructions: callgrind,
 /// `golden_loop bunny 1.0`).
-pub fn decide<const EXACT: bool>(cert: &Certificate, up: &Upper, s1: &Stage1Hi, tri: &TriWord, v: &mut [VertexHi; 3]) -> Decision {
+pub fn decide<const EXACT: bool>(
+    cert: &Certificate,
+    up: &Upper,
+    s1: &Stage1Hi,
+    tri: &TriWord,
+    v: &mut [VertexHi; 3],
+) -> Decision {
     let x = tri.v_exact as usize;
     let pa = tri.v.map(|p| p.map(f64::abs));
     // Coordinate i of mapped vertex k and its gap from magnitude m: in f64, its products
@@ -195,14 +241,25 @@ pub fn decide<const EXACT: bool>(cert: &Certificate, up: &Upper, s1: &Stage1Hi, 
     let center = |k: usize, i: usize, m: f64| {
         let (mb, p) = (&s1.mb[i], tri.v[k]);
         if EXACT {
-            (dot(cert.f, cert.r, [mb[0], mb[1], mb[2]], p, Some(mb[3])), 0.0)
+            (
+                dot(cert.f, cert.r, [mb[0], mb[1], mb[2]], p, Some(mb[3])),
+                0.0,
+            )
         } else {
-            ((mb[0] * p[0] + mb[1] * p[1]) + (mb[2] * p[2] + mb[3]), up.dot_gap(m))
+            (
+                (mb[0] * p[0] + mb[1] * p[1]) + (mb[2] * p[2] + mb[3]),
+                up.dot_gap(m),
+            )
         }
     };
     let magnitude = |k: usize, i: usize, err: f64| {
         let mag = &s1.mag[i];
-        dot_hi(up, [mag[0], mag[1], mag[2]], pa[k], Some(up.add(mag[3], err)))
+        dot_hi(
+            up,
+            [mag[0], mag[1], mag[2]],
+            pa[k],
+            Some(up.add(mag[3], err)),
+        )
     };
     // z first: a vertex triangle surely on one side of the plane needs nothing else.
     let mut fits = s1.fits;
@@ -238,12 +295,23 @@ pub fn decide<const EXACT: bool>(cert: &Certificate, up: &Upper, s1: &Stage1Hi, 
             vk.ep[i] = up.add(up.scale(m, cert.c_e[x]), vk.gap[i]);
             fits &= up.fits(m) & up.fits(vk.ep[i]);
         }
-        fits &= vk.abs.iter().all(|&a| up.value_fits(a)) & up.fits(vk.rz) & up.fits(vk.h) & up.fits(vk.g);
+        fits &= vk.abs.iter().all(|&a| up.value_fits(a))
+            & up.fits(vk.rz)
+            & up.fits(vk.h)
+            & up.fits(vk.g);
     }
     if !fits {
         return Decision::Unfit;
     }
-    match edges_hi(cert, up, v, sz.map(|z| z.map_or(Maybe::ANY, Maybe::sure)), None).map(Maybe::single) {
+    match edges_hi(
+        cert,
+        up,
+        v,
+        sz.map(|z| z.map_or(Maybe::ANY, Maybe::sure)),
+        None,
+    )
+    .map(Maybe::single)
+    {
         Some(Some(verdict)) => Decision::Verdict(verdict),
         Some(None) => Decision::Open,
         None => Decision::Unfit,
@@ -256,7 +324,14 @@ pub fn decide<const EXACT: bool>(cert: &Certificate, up: &Upper, s1: &Stage1Hi, 
 /// The set of verdicts that holds the chip's (one member: proven); `None`: a bound may have
 /// overflowed. `other`: the other direction's verdict, if proven (TRI_UNIT's result is the
 /// OR of the two: [`edges_hi`] stops once that OR is decided or cannot be).
-pub fn settle(cert: &Certificate, up: &Upper, mag_lo: &Affine, tri: &TriWord, v: &[VertexHi; 3], other: Option<Maybe>) -> Option<Maybe> {
+pub fn settle(
+    cert: &Certificate,
+    up: &Upper,
+    mag_lo: &Affine,
+    tri: &TriWord,
+    v: &[VertexHi; 3],
+    other: Option<Maybe>,
+) -> Option<Maybe> {
     let lo = vertices_lo(cert, mag_lo, tri, v);
     let sz = std::array::from_fn(|k| sign_set(v[k].c[2], v[k].tz, Some((v[k].gap[2], lo[k].ez))));
     edges_hi(cert, up, v, sz, Some((&lo, other)))
@@ -278,7 +353,12 @@ struct VertexLo {
 /// operation on its operands, so the same expression on lower bounds of its operands,
 /// evaluated with [`down`], is at most it; the error term A' L1 is left out (>= 0), and
 /// the chip's |z| is at least |z^| - gap_z.
-fn vertices_lo(cert: &Certificate, mag_lo: &Affine, tri: &TriWord, v: &[VertexHi; 3]) -> [VertexLo; 3] {
+fn vertices_lo(
+    cert: &Certificate,
+    mag_lo: &Affine,
+    tri: &TriWord,
+    v: &[VertexHi; 3],
+) -> [VertexLo; 3] {
     let x = tri.v_exact as usize;
     let (ce, cz, cs) = (cert.c_e[x].value(), cert.c_z[x].value(), cert.c_s.value());
     std::array::from_fn(|k| {
@@ -287,15 +367,27 @@ fn vertices_lo(cert: &Certificate, mag_lo: &Affine, tri: &TriWord, v: &[VertexHi
         let abs = std::array::from_fn(|i| down(v[k].c[i].abs() - v[k].gap[i]));
         let mz = m(2);
         let ez = mul_down(mz, ce);
-        let (g, h) = (add_down(ez, mul_down(abs[2], cs)), add_down(abs[2], 2.0 * ez));
-        VertexLo { abs, e1: [mul_down(m(0), ce), mul_down(m(1), ce), mul_down(mz, cz)], ez, g, h }
+        let (g, h) = (
+            add_down(ez, mul_down(abs[2], cs)),
+            add_down(abs[2], 2.0 * ez),
+        );
+        VertexLo {
+            abs,
+            e1: [mul_down(m(0), ce), mul_down(m(1), ce), mul_down(mz, cz)],
+            ez,
+            g,
+            h,
+        }
     })
 }
 
 /// `(a0 b0 + a1 b1) + (a2 b2 + c)` on non-negative operands, from below.
 #[inline(always)]
 fn dot_down(a: [f64; 3], b: [f64; 3], c: f64) -> f64 {
-    add_down(add_down(mul_down(a[0], b[0]), mul_down(a[1], b[1])), add_down(mul_down(a[2], b[2]), c))
+    add_down(
+        add_down(mul_down(a[0], b[0]), mul_down(a[1], b[1])),
+        add_down(mul_down(a[2], b[2]), c),
+    )
 }
 
 /// Stage 1's magnitude M_b's entries from below: the exact sums of |m_ik| |frame_kj| (and
@@ -303,7 +395,11 @@ fn dot_down(a: [f64; 3], b: [f64; 3], c: f64) -> f64 {
 pub fn mag_lo(leaf: &TriWord, frame: &Affine) -> Affine {
     let mut lo = [[0.0; 4]; 3];
     for (i, j, row, col, c) in mb_terms(&leaf.m, frame) {
-        lo[i][j] = dot_down(row.map(f64::abs), col.map(f64::abs), c.map_or(0.0, f64::abs));
+        lo[i][j] = dot_down(
+            row.map(f64::abs),
+            col.map(f64::abs),
+            c.map_or(0.0, f64::abs),
+        );
     }
     lo
 }
@@ -321,7 +417,10 @@ fn sign_set(x: f64, hi: f64, within: Option<(f64, f64)>) -> Maybe {
         (None, Some((gap, lo))) => {
             let within = |d: f64| d.next_up() <= lo;
             let least = if within(gap - x) { Maybe::U } else { Maybe::F };
-            Maybe { lo: least, hi: if within(x + gap) { Maybe::U } else { Maybe::T } }
+            Maybe {
+                lo: least,
+                hi: if within(x + gap) { Maybe::U } else { Maybe::T },
+            }
         }
     }
 }
@@ -340,7 +439,13 @@ fn sign_set(x: f64, hi: f64, within: Option<(f64, f64)>) -> Maybe {
 /// holds this direction's verdict; `None`: a bound may have overflowed. Inlined, so that
 /// [`decide`]'s copy has no `lo` to test.
 #[inline(always)]
-fn edges_hi(cert: &Certificate, up: &Upper, v: &[VertexHi; 3], sz: [Maybe; 3], lo: Option<(&[VertexLo; 3], Option<Maybe>)>) -> Option<Maybe> {
+fn edges_hi(
+    cert: &Certificate,
+    up: &Upper,
+    v: &[VertexHi; 3],
+    sz: [Maybe; 3],
+    lo: Option<(&[VertexLo; 3], Option<Maybe>)>,
+) -> Option<Maybe> {
     let (lo, other) = (lo.map(|l| l.0), lo.and_then(|l| l.1));
     // With `lo`, per edge, its conjunctions after the z signs alone: an interval that holds
     // what the edge gives, whatever its other signs. (`decide` stops at a sure crossing
@@ -360,10 +465,16 @@ fn edges_hi(cert: &Certificate, up: &Upper, v: &[VertexHi; 3], sz: [Maybe; 3], l
             let rest_hi = ends[e..].iter().map(|m| m.hi).max().unwrap_or(Maybe::F);
             let or = verdict.or(other.unwrap_or(Maybe::FALSE));
             if or.lo >= rest_hi {
-                return Some(Maybe { lo: verdict.lo, hi: verdict.hi.max(rest_hi) });
+                return Some(Maybe {
+                    lo: verdict.lo,
+                    hi: verdict.hi.max(rest_hi),
+                });
             }
             if other.is_some() && or.hi > or.lo.max(rest_lo) {
-                return Some(Maybe { lo: verdict.lo, hi: Maybe::T });
+                return Some(Maybe {
+                    lo: verdict.lo,
+                    hi: Maybe::T,
+                });
             }
         } else if verdict == Maybe::TRUE {
             break;
@@ -393,7 +504,10 @@ fn edges_hi(cert: &Certificate, up: &Upper, v: &[VertexHi; 3], sz: [Maybe; 3], l
             let pq = up.add(up.mul(p.gap[i], q.abs[2]), up.mul(p.abs[i], q.delta));
             let qp = up.add(up.mul(q.gap[i], p.abs[2]), up.mul(q.abs[i], p.delta));
             let (lp, lq) = (&l[pi], &l[qi]);
-            let b = add_down(add_down(mul_down(lp.e1[i], lq.h), mul_down(lp.abs[i], lq.g)), add_down(mul_down(lq.e1[i], lp.h), mul_down(lq.abs[i], lp.g)));
+            let b = add_down(
+                add_down(mul_down(lp.e1[i], lq.h), mul_down(lp.abs[i], lq.g)),
+                add_down(mul_down(lq.e1[i], lp.h), mul_down(lq.abs[i], lp.g)),
+            );
             Some((up.add(up.add(pq, qp), up.gap_abs()), b))
         };
         let (a, a_bound) = cross(0)?;
@@ -407,17 +521,29 @@ fn edges_hi(cert: &Certificate, up: &Upper, v: &[VertexHi; 3], sz: [Maybe; 3], l
             continue;
         }
         let s = (a + b) - rz;
-        let s_sum = up.add(up.add(up.add(a.abs(), a_bound), up.add(b.abs(), b_bound)), up.add(rz.abs(), rz_bound));
+        let s_sum = up.add(
+            up.add(up.add(a.abs(), a_bound), up.add(b.abs(), b_bound)),
+            up.add(rz.abs(), rz_bound),
+        );
         let s_round = up.add(up.scale(s_sum, cert.c_s), up.mul(s_sum, up.round_rel()));
         let s_bound = up.add(up.add(a_bound, b_bound), up.add(rz_bound, s_round));
         if !up.fits(s_bound) {
             return None;
         }
         // gap_s = gap_a + gap_b + gap_rz + rr (U_a + U_b + U_rz); B_s >= B_a + B_b + B_rz
-        let s_lo = a_lo.zip(b_lo).zip(rz_lo).map(|(((ga, la), (gb, lb)), (gr, lr))| {
-            let u = up.add(up.add(up.add(a.abs(), ga), up.add(b.abs(), gb)), up.add(rz.abs(), gr));
-            (up.add(up.add(ga, gb), up.add(gr, up.mul(u, up.round_rel()))), add_down(add_down(la, lb), lr))
-        });
+        let s_lo = a_lo
+            .zip(b_lo)
+            .zip(rz_lo)
+            .map(|(((ga, la), (gb, lb)), (gr, lr))| {
+                let u = up.add(
+                    up.add(up.add(a.abs(), ga), up.add(b.abs(), gb)),
+                    up.add(rz.abs(), gr),
+                );
+                (
+                    up.add(up.add(ga, gb), up.add(gr, up.mul(u, up.round_rel()))),
+                    add_down(add_down(la, lb), lr),
+                )
+            });
         edge.take(sign_set(s, s_bound, s_lo), false);
         verdict = verdict.or(edge.up.or(edge.down));
     }
@@ -440,9 +566,18 @@ impl Maybe {
     const F: u8 = 0;
     const U: u8 = 1;
     const T: u8 = 2;
-    const TRUE: Maybe = Maybe { lo: Self::T, hi: Self::T };
-    const FALSE: Maybe = Maybe { lo: Self::F, hi: Self::F };
-    pub const ANY: Maybe = Maybe { lo: Self::F, hi: Self::T };
+    const TRUE: Maybe = Maybe {
+        lo: Self::T,
+        hi: Self::T,
+    };
+    const FALSE: Maybe = Maybe {
+        lo: Self::F,
+        hi: Self::F,
+    };
+    pub const ANY: Maybe = Maybe {
+        lo: Self::F,
+        hi: Self::T,
+    };
 
     fn sure(s: bool) -> Maybe {
         if s {
@@ -454,7 +589,13 @@ impl Maybe {
 
     /// The set of one verdict.
     pub fn of(verdict: Option<bool>) -> Maybe {
-        verdict.map_or(Maybe { lo: Self::U, hi: Self::U }, Self::sure)
+        verdict.map_or(
+            Maybe {
+                lo: Self::U,
+                hi: Self::U,
+            },
+            Self::sure,
+        )
     }
 
     /// Whether it holds `verdict`.
@@ -464,20 +605,32 @@ impl Maybe {
     }
 
     fn not(self) -> Maybe {
-        Maybe { lo: Self::T - self.hi, hi: Self::T - self.lo }
+        Maybe {
+            lo: Self::T - self.hi,
+            hi: Self::T - self.lo,
+        }
     }
 
     fn and(self, o: Maybe) -> Maybe {
-        Maybe { lo: self.lo.min(o.lo), hi: self.hi.min(o.hi) }
+        Maybe {
+            lo: self.lo.min(o.lo),
+            hi: self.hi.min(o.hi),
+        }
     }
 
     pub fn or(self, o: Maybe) -> Maybe {
-        Maybe { lo: self.lo.max(o.lo), hi: self.hi.max(o.hi) }
+        Maybe {
+            lo: self.lo.max(o.lo),
+            hi: self.hi.max(o.hi),
+        }
     }
 
     /// The verdicts in both sets (both hold the chip's: never empty).
     pub fn meet(self, o: Maybe) -> Maybe {
-        Maybe { lo: self.lo.max(o.lo), hi: self.hi.min(o.hi) }
+        Maybe {
+            lo: self.lo.max(o.lo),
+            hi: self.hi.min(o.hi),
+        }
     }
 
     /// The one member, if there is one (`Some(None)`: surely unknown).
@@ -499,7 +652,10 @@ struct Conjunctions {
 
 impl Default for Conjunctions {
     fn default() -> Self {
-        Conjunctions { up: Maybe::TRUE, down: Maybe::TRUE }
+        Conjunctions {
+            up: Maybe::TRUE,
+            down: Maybe::TRUE,
+        }
     }
 }
 
@@ -586,7 +742,14 @@ pub fn edges(f: Format, r: Rounding, cert: &Certificate, s1: &Stage1, tri: &TriW
 /// `complete = false` skips an edge whose ends are surely on one side of the plane (both
 /// conjunctions are surely false, whatever the other signs: the chip's verdict is the same)
 /// and leaves its trace entries at 0.
-pub(super) fn edges_in(f: Format, r: Rounding, cert: &Certificate, s1: &Stage1, tri: &TriWord, complete: bool) -> Trace {
+pub(super) fn edges_in(
+    f: Format,
+    r: Rounding,
+    cert: &Certificate,
+    s1: &Stage1,
+    tri: &TriWord,
+    complete: bool,
+) -> Trace {
     let x = tri.v_exact as usize;
     let (mb, mag) = (&s1.mb, &s1.mag);
     let add = |x: f64, y: f64| f.add(x, y, UP);
@@ -651,8 +814,16 @@ pub(super) fn edges_in(f: Format, r: Rounding, cert: &Certificate, s1: &Stage1, 
         let s_round = f.scale_up(add(add(a.abs(), b.abs()), rz.abs()), cert.c_s);
         let s_bound = add(add(a_bound, b_bound), add(rz_bound, s_round));
         (t.a[e], t.b[e], t.rz[e], t.s[e]) = (a, b, rz, s);
-        (t.a_bound[e], t.b_bound[e], t.rz_bound[e], t.s_bound[e]) = (a_bound, b_bound, rz_bound, s_bound);
-        let signs = [sp, sq, sign(rz, rz_bound), sign(a, a_bound), sign(b, b_bound), sign(s, s_bound)];
+        (t.a_bound[e], t.b_bound[e], t.rz_bound[e], t.s_bound[e]) =
+            (a_bound, b_bound, rz_bound, s_bound);
+        let signs = [
+            sp,
+            sq,
+            sign(rz, rz_bound),
+            sign(a, a_bound),
+            sign(b, b_bound),
+            sign(s, s_bound),
+        ];
         // Wanted signs (true = positive) of Pz, Qz, r_z, a, b, s for P below / Q below.
         let up = [false, true, true, true, true, false];
         let down = [true, false, false, false, false, true];
@@ -677,16 +848,36 @@ mod tests {
         };
         let value = |c: u8| [Some(false), None, Some(true)][c as usize];
         let set = |m: Maybe| (m.lo..=m.hi).fold(0u8, |s, c| s | 1 << c);
-        let intervals: Vec<Maybe> = (0..3).flat_map(|lo| (lo..3).map(move |hi| Maybe { lo, hi })).collect();
+        let intervals: Vec<Maybe> = (0..3)
+            .flat_map(|lo| (lo..3).map(move |hi| Maybe { lo, hi }))
+            .collect();
         for &a in &intervals {
             let not = (a.lo..=a.hi).fold(0, |s, x| s | 1 << code(value(x).map(|b| !b)));
             assert_eq!(set(a.not()), not);
             for &b in &intervals {
                 let image = |op: fn([Option<bool>; 2]) -> Option<bool>| {
-                    (a.lo..=a.hi).flat_map(|x| (b.lo..=b.hi).map(move |y| (x, y))).fold(0, |s, (x, y)| s | 1 << code(op([value(x), value(y)])))
+                    (a.lo..=a.hi)
+                        .flat_map(|x| (b.lo..=b.hi).map(move |y| (x, y)))
+                        .fold(0, |s, (x, y)| s | 1 << code(op([value(x), value(y)])))
                 };
-                assert_eq!(set(a.and(b)), image(|p| and3(p.into_iter())), "{}..{} AND {}..{}", a.lo, a.hi, b.lo, b.hi);
-                assert_eq!(set(a.or(b)), image(|p| or3(p.into_iter())), "{}..{} OR {}..{}", a.lo, a.hi, b.lo, b.hi);
+                assert_eq!(
+                    set(a.and(b)),
+                    image(|p| and3(p.into_iter())),
+                    "{}..{} AND {}..{}",
+                    a.lo,
+                    a.hi,
+                    b.lo,
+                    b.hi
+                );
+                assert_eq!(
+                    set(a.or(b)),
+                    image(|p| or3(p.into_iter())),
+                    "{}..{} OR {}..{}",
+                    a.lo,
+                    a.hi,
+                    b.lo,
+                    b.hi
+                );
             }
         }
     }

@@ -5,7 +5,10 @@ use super::certificate::Certificate;
 use super::enclosure::{checking, count_checked, Upper};
 use super::host::{Affine, HostSetup};
 use super::memory::TriWord;
-use super::tcheck::{decide, edges, edges_in, mag_lo, or3, settle, stage1, stage1_hi, Decision, Maybe, Stage1, Stage1Hi, VertexHi};
+use super::tcheck::{
+    decide, edges, edges_in, mag_lo, or3, settle, stage1, stage1_hi, Decision, Maybe, Stage1,
+    Stage1Hi, VertexHi,
+};
 use crate::format::{Format, Rounding};
 use std::cell::Cell;
 
@@ -35,8 +38,14 @@ impl TriResult {
     /// The result of the verdict `v` (`None`: uncertain).
     fn verdict(v: Option<bool>) -> TriResult {
         match v {
-            Some(hit) => TriResult { hit, uncertain: false },
-            None => TriResult { hit: false, uncertain: true },
+            Some(hit) => TriResult {
+                hit,
+                uncertain: false,
+            },
+            None => TriResult {
+                hit: false,
+                uncertain: true,
+            },
         }
     }
 }
@@ -47,7 +56,8 @@ pub fn tri_unit(f: Format, r: Rounding, a: &TriWord, b: &TriWord, setup: &HostSe
     let cert = Certificate::new(f, r);
     let direction = |leaf: &TriWord, tri: &TriWord, ab: bool| {
         let (frame, beta, scale) = setup.tri_frame(ab);
-        (!leaf.degenerate).then(|| edges(f, r, &cert, &stage1(f, r, leaf, frame, beta, scale), tri).result())
+        (!leaf.degenerate)
+            .then(|| edges(f, r, &cert, &stage1(f, r, leaf, frame, beta, scale), tri).result())
     };
     let (d1, d2) = (direction(b, a, true), direction(a, b, false));
     TriResult::of(d1.flatten(), d2.flatten())
@@ -111,7 +121,12 @@ impl StageOneCache {
         if s == u32::MAX {
             s = self.values.len() as u32;
             self.slot[t as usize] = s;
-            self.values.push(Leaf { tri: t, hi: compute(), lo: None, exact: None });
+            self.values.push(Leaf {
+                tri: t,
+                hi: compute(),
+                lo: None,
+                exact: None,
+            });
         }
         &mut self.values[s as usize]
     }
@@ -129,7 +144,10 @@ impl StageOneCache {
 
 impl Drop for TriUnit<'_> {
     fn drop(&mut self) {
-        SPARE.set([std::mem::take(&mut self.mb_a).emptied(), std::mem::take(&mut self.mb_b).emptied()]);
+        SPARE.set([
+            std::mem::take(&mut self.mb_a).emptied(),
+            std::mem::take(&mut self.mb_b).emptied(),
+        ]);
     }
 }
 
@@ -137,7 +155,16 @@ impl<'a> TriUnit<'a> {
     pub fn new(f: Format, r: Rounding, setup: &'a HostSetup, tris_a: usize, tris_b: usize) -> Self {
         let [mb_a, mb_b] = SPARE.take();
         let (cert, up) = (Certificate::new(f, r), Upper::new(f));
-        TriUnit { f, r, cert, up, setup, mb_b: mb_b.sized(tris_b), mb_a: mb_a.sized(tris_a), vertices: Default::default() }
+        TriUnit {
+            f,
+            r,
+            cert,
+            up,
+            setup,
+            mb_b: mb_b.sized(tris_b),
+            mb_a: mb_a.sized(tris_a),
+            vertices: Default::default(),
+        }
     }
 
     /// Triangle `ta` of A (word `a`) against `tb` of B (word `b`). Each direction's set of
@@ -157,7 +184,11 @@ impl<'a> TriUnit<'a> {
 
     /// [`test`](Self::test)'s tries: the OR of the two directions' sets once it has one
     /// member.
-    fn narrowed(&mut self, dirs: &[(u32, &TriWord, &TriWord, bool); 2], sets: &mut [Maybe; 2]) -> Option<bool> {
+    fn narrowed(
+        &mut self,
+        dirs: &[(u32, &TriWord, &TriWord, bool); 2],
+        sets: &mut [Maybe; 2],
+    ) -> Option<bool> {
         for attempt in [Try::F64, Try::ChipWords, Try::BitExact] {
             for k in 0..2 {
                 let (t, leaf, v, ab) = dirs[k];
@@ -165,7 +196,11 @@ impl<'a> TriUnit<'a> {
                     // the other direction's verdict, once proven, tells `settle` when to stop
                     let other = Some(sets[1 - k]).filter(|o| o.single().is_some());
                     // a degenerate leaf's direction is unknown
-                    let set = if leaf.degenerate { Maybe::of(None) } else { self.narrow(attempt, t, leaf, v, ab, other) };
+                    let set = if leaf.degenerate {
+                        Maybe::of(None)
+                    } else {
+                        self.narrow(attempt, t, leaf, v, ab, other)
+                    };
                     sets[k] = set.meet(sets[k]);
                 }
                 if let Some(result) = sets[0].or(sets[1]).single() {
@@ -180,7 +215,15 @@ impl<'a> TriUnit<'a> {
     /// triangle of `leaf` (triangle `t` of B when `ab`, else of A); every verdict if the
     /// enclosures prove nothing (a bound may have overflowed). `other`: the other
     /// direction's verdict, if proven.
-    fn narrow(&mut self, attempt: Try, t: u32, leaf: &TriWord, v: &TriWord, ab: bool, other: Option<Maybe>) -> Maybe {
+    fn narrow(
+        &mut self,
+        attempt: Try,
+        t: u32,
+        leaf: &TriWord,
+        v: &TriWord,
+        ab: bool,
+        other: Option<Maybe>,
+    ) -> Maybe {
         let (f, r) = (self.f, self.r);
         let (frame, beta, scale) = self.setup.tri_frame(ab);
         let (s1, cert, up, vs) = self.parts(t, leaf, ab);
@@ -188,35 +231,67 @@ impl<'a> TriUnit<'a> {
             Try::F64 => decide::<false>(cert, up, &s1.hi, v, vs),
             Try::ChipWords => decide::<true>(cert, up, &s1.hi, v, vs),
             Try::BitExact => {
-                let exact = s1.exact.get_or_insert_with(|| Box::new(stage1(f, r, leaf, frame, beta, scale)));
+                let exact = s1
+                    .exact
+                    .get_or_insert_with(|| Box::new(stage1(f, r, leaf, frame, beta, scale)));
                 return Maybe::of(edges_in(f, r, cert, exact, v, false).result());
             }
         };
         match decision {
             Decision::Verdict(d) => Maybe::of(d),
-            Decision::Open => settle(cert, up, s1.lo.get_or_insert_with(|| Box::new(mag_lo(leaf, frame))), v, vs, other).unwrap_or(Maybe::ANY),
+            Decision::Open => settle(
+                cert,
+                up,
+                s1.lo.get_or_insert_with(|| Box::new(mag_lo(leaf, frame))),
+                v,
+                vs,
+                other,
+            )
+            .unwrap_or(Maybe::ANY),
             Decision::Unfit => Maybe::ANY,
         }
     }
 
     /// Stage 1 of triangle `t` (word `leaf`: B's when `ab`, else A's), enclosed; the
     /// certificate, the enclosures, the vertices' scratch.
-    fn parts(&mut self, t: u32, leaf: &TriWord, ab: bool) -> (&mut Leaf, &Certificate, &Upper, &mut [VertexHi; 3]) {
+    fn parts(
+        &mut self,
+        t: u32,
+        leaf: &TriWord,
+        ab: bool,
+    ) -> (&mut Leaf, &Certificate, &Upper, &mut [VertexHi; 3]) {
         let (f, r, up) = (self.f, self.r, &self.up);
         let (frame, beta, scale) = self.setup.tri_frame(ab);
         let cache = if ab { &mut self.mb_b } else { &mut self.mb_a };
-        (cache.get(t, || stage1_hi(f, r, up, leaf, frame, beta, scale)), &self.cert, up, &mut self.vertices)
+        (
+            cache.get(t, || stage1_hi(f, r, up, leaf, frame, beta, scale)),
+            &self.cert,
+            up,
+            &mut self.vertices,
+        )
     }
 
     /// Check mode: each direction's set holds its verdict bit for bit, and the result is the
     /// bit-exact path's.
-    fn check(&mut self, dirs: [(u32, &TriWord, &TriWord, bool); 2], sets: [Maybe; 2], result: Option<bool>) {
+    fn check(
+        &mut self,
+        dirs: [(u32, &TriWord, &TriWord, bool); 2],
+        sets: [Maybe; 2],
+        result: Option<bool>,
+    ) {
         let mut want = [None; 2];
         for (k, &(t, leaf, v, ab)) in dirs.iter().enumerate().filter(|(_, d)| !d.1.degenerate) {
-            want[k] = self.narrow(Try::BitExact, t, leaf, v, ab, None).single().expect("bit for bit: one verdict");
+            want[k] = self
+                .narrow(Try::BitExact, t, leaf, v, ab, None)
+                .single()
+                .expect("bit for bit: one verdict");
             assert!(sets[k].holds(want[k]), "check mode: T.CHECK's enclosure gave {:?}, the bit-exact path {:?}: leaf {leaf:?}, triangle {v:?}, {}", sets[k], want[k], if ab { "M_AB" } else { "M_BA" });
         }
-        assert_eq!(result, or3(want.into_iter()), "check mode: TRI_UNIT's verdict");
+        assert_eq!(
+            result,
+            or3(want.into_iter()),
+            "check mode: TRI_UNIT's verdict"
+        );
         count_checked(true);
     }
 }
@@ -239,7 +314,9 @@ mod tests {
         let dirs = [(0, &b, &a, true), (0, &a, &b, false)];
         let exact = |u: &mut TriUnit, k: usize| {
             let (t, leaf, v, ab) = dirs[k];
-            u.narrow(Try::BitExact, t, leaf, v, ab, None).single().unwrap()
+            u.narrow(Try::BitExact, t, leaf, v, ab, None)
+                .single()
+                .unwrap()
         };
         let want = [exact(&mut unit, 0), exact(&mut unit, 1)];
         let verdict = or3(want.into_iter());

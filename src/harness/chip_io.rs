@@ -64,7 +64,12 @@ pub fn verilog(kind: ChipKind) -> String {
 
 /// Runs `f` on a thread with the 1 GiB stack the RTL chips need to be built.
 pub fn big_stack<T: Send + 'static>(f: impl FnOnce() -> T + Send + 'static) -> T {
-    std::thread::Builder::new().stack_size(1 << 30).spawn(f).expect("spawn").join().expect("the RTL thread")
+    std::thread::Builder::new()
+        .stack_size(1 << 30)
+        .spawn(f)
+        .expect("spawn")
+        .join()
+        .expect("the RTL thread")
 }
 
 /// The DOP unit's setup words `(load_addr, load_data)`: lane i's C_i0..2, c_i, and the
@@ -73,8 +78,19 @@ pub fn dop_unit_setup_words(fmt: Format, setup: &HostSetup) -> Vec<(u64, u64)> {
     let mut out = vec![];
     for (i, (cm, j)) in setup.cmat.iter().zip(&setup.j).enumerate() {
         let jw = j[0] as u64 | (j[1] as u64) << 5 | (j[2] as u64) << 10;
-        let fields = [fmt.to_bits(cm[0]), fmt.to_bits(cm[1]), fmt.to_bits(cm[2]), fmt.to_bits(setup.cvec[i]), jw];
-        out.extend(fields.iter().enumerate().map(|(f, &v)| ((8 * i + f) as u64, v)));
+        let fields = [
+            fmt.to_bits(cm[0]),
+            fmt.to_bits(cm[1]),
+            fmt.to_bits(cm[2]),
+            fmt.to_bits(setup.cvec[i]),
+            jw,
+        ];
+        out.extend(
+            fields
+                .iter()
+                .enumerate()
+                .map(|(f, &v)| ((8 * i + f) as u64, v)),
+        );
     }
     out
 }
@@ -92,7 +108,14 @@ fn put(w: &mut Word, at: usize, bits: usize, v: u64) {
 
 /// Node `n`'s word at bit `at` of `w`: children by their ids ([`ObjectImage::ids`]), a
 /// leaf's triangle index and (`records`) its triangle's record.
-fn put_node_word(w: &mut Word, at: usize, kind: ChipKind, layout: MemLayout, obj: &ObjectImage, n: u32) {
+fn put_node_word(
+    w: &mut Word,
+    at: usize,
+    kind: ChipKind,
+    layout: MemLayout,
+    obj: &ObjectImage,
+    n: u32,
+) {
     let (f, k) = (kind.config().format.dop, kind.config().k);
     let w_ = f.width() as usize;
     for (i, &d) in obj.tree.dop(n).iter().enumerate() {
@@ -116,8 +139,19 @@ fn object_words(kind: ChipKind, layout: MemLayout, obj: &ObjectImage) -> [Vec<Wo
     let node_bits = crate::chip::layout::node_bits(kind.config().k, f.dop.width() as usize);
     let mut nodes = vec![vec![0; kind.word_bits().div_ceil(64)]; obj.node_records() as usize];
     for n in 0..obj.tree.len() as u32 {
-        let slot = if layout == MemLayout::Records { obj.ids[n as usize] as usize & 1 } else { 0 };
-        put_node_word(&mut nodes[obj.record(n) as usize], slot * node_bits, kind, layout, obj, n);
+        let slot = if layout == MemLayout::Records {
+            obj.ids[n as usize] as usize & 1
+        } else {
+            0
+        };
+        put_node_word(
+            &mut nodes[obj.record(n) as usize],
+            slot * node_bits,
+            kind,
+            layout,
+            obj,
+            n,
+        );
     }
     let mut tris = vec![vec![]; obj.tri_count()];
     for (t, tri) in obj.tris().enumerate() {
@@ -128,14 +162,26 @@ fn object_words(kind: ChipKind, layout: MemLayout, obj: &ObjectImage) -> [Vec<Wo
 
 /// The memory image of `a` and `b` for `cfg` on `memory`: every record where
 /// [`RecordMap`] puts it, the words between zero.
-fn image_words(kind: ChipKind, a: &ObjectImage, b: &ObjectImage, cfg: &ChipConfig, memory: &Memory) -> Vec<Word> {
+fn image_words(
+    kind: ChipKind,
+    a: &ObjectImage,
+    b: &ObjectImage,
+    cfg: &ChipConfig,
+    memory: &Memory,
+) -> Vec<Word> {
     let map = RecordMap::new(&crate::chip::layout::Layout::new(cfg), memory);
     let [na, ta] = object_words(kind, cfg.layout, a);
     let [nb, tb] = object_words(kind, cfg.layout, b);
     let regions = [na, nb, ta, tb];
     let base = map.bases(crate::golden::memory::image_bases(a, b));
-    let mut words = vec![vec![0; kind.word_bits().div_ceil(64)]; map.extent(regions.each_ref().map(|r| r.len() as u32)) as usize];
-    for (d, region) in [Dst::NodeA, Dst::NodeB, Dst::TriA, Dst::TriB].into_iter().zip(regions) {
+    let mut words = vec![
+        vec![0; kind.word_bits().div_ceil(64)];
+        map.extent(regions.each_ref().map(|r| r.len() as u32)) as usize
+    ];
+    for (d, region) in [Dst::NodeA, Dst::NodeB, Dst::TriA, Dst::TriB]
+        .into_iter()
+        .zip(regions)
+    {
         for (i, w) in (0..).zip(region) {
             words[map.addr(d, base[d as usize], i) as usize] = w;
         }
@@ -146,7 +192,11 @@ fn image_words(kind: ChipKind, a: &ObjectImage, b: &ObjectImage, cfg: &ChipConfi
 fn tri_word(kind: ChipKind, l: &LeafIn) -> Word {
     let w_ = kind.config().format.tri.width() as usize;
     let mut w = vec![0; kind.word_bits().div_ceil(64)];
-    let fields = l.v.iter().flatten().chain(&l.m).chain([&l.alpha_m, &l.alpha_f]);
+    let fields =
+        l.v.iter()
+            .flatten()
+            .chain(&l.m)
+            .chain([&l.alpha_m, &l.alpha_f]);
     for (i, &x) in fields.enumerate() {
         put(&mut w, i * w_, w_, x);
     }
@@ -172,7 +222,16 @@ impl QueryImage {
     /// from `cfg` ([`reg::control_writes`]; `a` and `b` built in `cfg`'s layout).
     /// Errors if a tree has more nodes than the 16-bit node ids of D_CNTR address, or the
     /// image more words than the 24-bit memory address.
-    pub fn new(kind: ChipKind, a: &ObjectImage, b: &ObjectImage, setup: &HostSetup, order: Order, mode: Mode, p: &Params, cfg: &ChipConfig) -> Result<Self, String> {
+    pub fn new(
+        kind: ChipKind,
+        a: &ObjectImage,
+        b: &ObjectImage,
+        setup: &HostSetup,
+        order: Order,
+        mode: Mode,
+        p: &Params,
+        cfg: &ChipConfig,
+    ) -> Result<Self, String> {
         let f = kind.config().format;
         for (name, o) in [("A", a), ("B", b)] {
             if o.tree.len() > 1 << 16 {
@@ -184,12 +243,33 @@ impl QueryImage {
         }
         let memory = image_words(kind, a, b, cfg, &p.memory);
         if memory.len() > 1 << 24 {
-            return Err(format!("memory image of {} words; the RTL chip addresses 2^24", memory.len()));
+            return Err(format!(
+                "memory image of {} words; the RTL chip addresses 2^24",
+                memory.len()
+            ));
         }
-        let mut writes: Vec<(u32, u32)> = dop_unit_setup_words(f.dop, setup).into_iter().map(|(a, d)| (a as u32, d as u32)).collect();
-        writes.extend(tri_unit_setup_words(f.tri, setup).into_iter().map(|(a, d)| (reg::TRI_SETUP + a as u32, d as u32)));
-        writes.extend(reg::control_writes(crate::golden::memory::image_bases(a, b), order, mode, p, cfg));
-        Ok(QueryImage { kind, memory, writes, word_bits: crate::chip::layout::Layout::new(cfg).word_bits() })
+        let mut writes: Vec<(u32, u32)> = dop_unit_setup_words(f.dop, setup)
+            .into_iter()
+            .map(|(a, d)| (a as u32, d as u32))
+            .collect();
+        writes.extend(
+            tri_unit_setup_words(f.tri, setup)
+                .into_iter()
+                .map(|(a, d)| (reg::TRI_SETUP + a as u32, d as u32)),
+        );
+        writes.extend(reg::control_writes(
+            crate::golden::memory::image_bases(a, b),
+            order,
+            mode,
+            p,
+            cfg,
+        ));
+        Ok(QueryImage {
+            kind,
+            memory,
+            writes,
+            word_bits: crate::chip::layout::Layout::new(cfg).word_bits(),
+        })
     }
 
     /// `$readmemh` text: one word per line, most significant digit first.
@@ -205,7 +285,10 @@ impl QueryImage {
 
     /// `$readmemh` text of the register writes: `{addr[10], data[32]}` per line.
     pub fn writes_hex(&self) -> String {
-        self.writes.iter().map(|&(a, d)| format!("{:011x}\n", (a as u64) << 32 | d as u64)).collect()
+        self.writes
+            .iter()
+            .map(|&(a, d)| format!("{:011x}\n", (a as u64) << 32 | d as u64))
+            .collect()
     }
 }
 
@@ -239,7 +322,9 @@ pub trait RtlPorts: Block {
 
 macro_rules! rtl_ports {
     ($fmt:ident, $kind:expr) => {
-        impl<const N: usize, const NP1: usize, const NM1: usize> RtlPorts for crate::rtl::$fmt::CollisionChip<N, NP1, NM1> {
+        impl<const N: usize, const NP1: usize, const NM1: usize> RtlPorts
+            for crate::rtl::$fmt::CollisionChip<N, NP1, NM1>
+        {
             type Word = Bits<{ crate::rtl::$fmt::CHIP_WORD_BITS }>;
             const KIND: ChipKind = $kind;
 
@@ -302,8 +387,16 @@ pub struct RtlChip<'c, C: RtlPorts> {
 
 impl<'c, C: RtlPorts> RtlChip<'c, C> {
     pub fn new(chip: &'c mut C, image: &QueryImage) -> Self {
-        assert_eq!(image.kind, C::KIND, "a memory image of one chip run on another");
-        RtlChip { chip, words: image.memory.iter().map(C::word).collect(), err: None }
+        assert_eq!(
+            image.kind,
+            C::KIND,
+            "a memory image of one chip run on another"
+        );
+        RtlChip {
+            chip,
+            words: image.memory.iter().map(C::word).collect(),
+            err: None,
+        }
     }
 }
 
@@ -336,7 +429,13 @@ impl<C: RtlPorts> Clocked for RtlChip<'_, C> {
 /// How a query of `image` is driven: every result read at once unless `reader` says
 /// otherwise.
 pub fn drive(image: &QueryImage, memory: Memory, reader: Reader, max_cycles: u64) -> Drive {
-    Drive { memory, word_bits: image.word_bits, reader, words: image.memory.len() as u32, max_cycles }
+    Drive {
+        memory,
+        word_bits: image.word_bits,
+        reader,
+        words: image.memory.len() as u32,
+        max_cycles,
+    }
 }
 
 /// Runs one query on the rust-hdl chip (fresh from `chip_top`, or after a finished
@@ -346,7 +445,14 @@ pub fn run_query<C: RtlPorts>(
     image: &QueryImage,
     d: &Drive,
 ) -> Result<ChipTrace, ChipError> {
-    crate::cycle::drive::run_query(&mut RtlChip::new(chip, image), &image.writes, d, false, |_, _| Ok(()), false)
+    crate::cycle::drive::run_query(
+        &mut RtlChip::new(chip, image),
+        &image.writes,
+        d,
+        false,
+        |_, _| Ok(()),
+        false,
+    )
 }
 
 /// A query of the RTL test set: two meshes, a pose, order, mode and memory timing. The
@@ -384,15 +490,25 @@ pub struct ChipQuery {
 /// The triangles of a [`ChipQuery`] mesh spec.
 pub fn query_mesh(spec: &str) -> Result<Vec<crate::dop::tree::Tri>, String> {
     if let Some(n) = spec.strip_prefix("bunny-patch:") {
-        let n: usize = n.parse().map_err(|_| format!("`{spec}`: the patch size is not a number"))?;
-        let tris = crate::mesh::builtin("bunny").map_err(|e| e.to_string())?.triangles_f64();
+        let n: usize = n
+            .parse()
+            .map_err(|_| format!("`{spec}`: the patch size is not a number"))?;
+        let tris = crate::mesh::builtin("bunny")
+            .map_err(|e| e.to_string())?
+            .triangles_f64();
         let c = |t: &crate::dop::tree::Tri| (t[0].coords + t[1].coords + t[2].coords) / 3.0;
         let c0 = c(&tris[0]);
         let mut idx: Vec<usize> = (0..tris.len()).collect();
-        idx.sort_by(|&i, &j| (c(&tris[i]) - c0).norm().total_cmp(&(c(&tris[j]) - c0).norm()));
+        idx.sort_by(|&i, &j| {
+            (c(&tris[i]) - c0)
+                .norm()
+                .total_cmp(&(c(&tris[j]) - c0).norm())
+        });
         return Ok(idx[..n.min(tris.len())].iter().map(|&i| tris[i]).collect());
     }
-    Ok(crate::mesh::builtin(spec).map_err(|e| e.to_string())?.triangles_f64())
+    Ok(crate::mesh::builtin(spec)
+        .map_err(|e| e.to_string())?
+        .triangles_f64())
 }
 
 /// A query ready to run: the golden model's images and all-pairs answer, and the chip's
@@ -417,11 +533,28 @@ impl ChipQuery {
     }
 
     pub fn prepare(&self) -> Result<PreparedQuery, String> {
-        let cfg = ChipConfig { tri_cache: self.tri_cache, layout: self.layout, ..self.chip.config() };
+        let cfg = ChipConfig {
+            tri_cache: self.tri_cache,
+            layout: self.layout,
+            ..self.chip.config()
+        };
         let chip = crate::query::Chip::new(&query_mesh(self.a)?, &query_mesh(self.b)?, cfg)?;
         let golden_all = chip.query(&self.pose, Mode::All, crate::traversal::Traversal::Fifo);
-        let image = QueryImage::new(self.chip, &chip.a, &chip.b, &chip.setup(&self.pose), self.order, self.mode, &self.params(), &cfg)?;
-        Ok(PreparedQuery { chip, golden_all, image })
+        let image = QueryImage::new(
+            self.chip,
+            &chip.a,
+            &chip.b,
+            &chip.setup(&self.pose),
+            self.order,
+            self.mode,
+            &self.params(),
+            &cfg,
+        )?;
+        Ok(PreparedQuery {
+            chip,
+            golden_all,
+            image,
+        })
     }
 }
 
@@ -445,7 +578,11 @@ pub fn queries() -> Vec<ChipQuery> {
         chip: ChipKind::K6E8m15,
         order,
         mode,
-        timing: MemTiming { latency, interval, bus_bits: None },
+        timing: MemTiming {
+            latency,
+            interval,
+            bus_bits: None,
+        },
         reader: Reader::default(),
         prefetch: 0,
         outstanding: 1,
@@ -462,74 +599,572 @@ pub fn queries() -> Vec<ChipQuery> {
     };
     let big_spheres = Pose::new(10.0, 20.0, 30.0, 0.9, 0.1, 0.05);
     vec![
-        q("sphere_fifo_all", "sphere:12", spheres, Fifo, Mode::All, 1, 1),
-        q("sphere_lifo_all", "sphere:12", spheres, Lifo, Mode::All, 3, 2),
-        q("sphere_fifo_first", "sphere:12", spheres, Fifo, Mode::First, 2, 1),
-        q("sphere_lifo_first", "sphere:12", spheres, Lifo, Mode::First, 1, 1),
-        q("bunny_lifo_all", "bunny-patch:12", patch, Lifo, Mode::All, 1, 1),
-        q("bunny_fifo_first", "bunny-patch:12", patch, Fifo, Mode::First, 1, 1),
-        q("apart_lifo_first", "sphere:12", Pose::new(10.0, 20.0, 30.0, 3.0, 0.1, 0.0), Lifo, Mode::First, 1, 1),
+        q(
+            "sphere_fifo_all",
+            "sphere:12",
+            spheres,
+            Fifo,
+            Mode::All,
+            1,
+            1,
+        ),
+        q(
+            "sphere_lifo_all",
+            "sphere:12",
+            spheres,
+            Lifo,
+            Mode::All,
+            3,
+            2,
+        ),
+        q(
+            "sphere_fifo_first",
+            "sphere:12",
+            spheres,
+            Fifo,
+            Mode::First,
+            2,
+            1,
+        ),
+        q(
+            "sphere_lifo_first",
+            "sphere:12",
+            spheres,
+            Lifo,
+            Mode::First,
+            1,
+            1,
+        ),
+        q(
+            "bunny_lifo_all",
+            "bunny-patch:12",
+            patch,
+            Lifo,
+            Mode::All,
+            1,
+            1,
+        ),
+        q(
+            "bunny_fifo_first",
+            "bunny-patch:12",
+            patch,
+            Fifo,
+            Mode::First,
+            1,
+            1,
+        ),
+        q(
+            "apart_lifo_first",
+            "sphere:12",
+            Pose::new(10.0, 20.0, 30.0, 3.0, 0.1, 0.0),
+            Lifo,
+            Mode::First,
+            1,
+            1,
+        ),
         // sure hits and uncertain pairs; the FIFO holds about 1,000 entries at its widest
-        big("big_sphere_fifo_all", "sphere:200", big_spheres, Fifo, Mode::All, 1, 1, 1),
-        big("big_sphere_lifo_all", "sphere:320", big_spheres, Lifo, Mode::All, 4, 2, 1),
+        big(
+            "big_sphere_fifo_all",
+            "sphere:200",
+            big_spheres,
+            Fifo,
+            Mode::All,
+            1,
+            1,
+            1,
+        ),
+        big(
+            "big_sphere_lifo_all",
+            "sphere:320",
+            big_spheres,
+            Lifo,
+            Mode::All,
+            4,
+            2,
+            1,
+        ),
         // the host reads one result in 40 clocks: TRI_UNIT's FIFO fills and the credit
         // stalls the DOP unit
-        big("big_patch_lifo_all_slow_host", "bunny-patch:300", patch, Lifo, Mode::All, 2, 1, 40),
+        big(
+            "big_patch_lifo_all_slow_host",
+            "bunny-patch:300",
+            patch,
+            Lifo,
+            Mode::All,
+            2,
+            1,
+            40,
+        ),
         // in e8m15 the first sure hit comes after 180 uncertain results (a long first-hit query)
-        big("big_patch_fifo_first", "bunny-patch:120", patch, Fifo, Mode::First, 3, 1, 1),
-        big("big_patch_lifo_first", "bunny-patch:300", patch, Lifo, Mode::First, 1, 1, 1),
+        big(
+            "big_patch_fifo_first",
+            "bunny-patch:120",
+            patch,
+            Fifo,
+            Mode::First,
+            3,
+            1,
+            1,
+        ),
+        big(
+            "big_patch_lifo_first",
+            "bunny-patch:300",
+            patch,
+            Lifo,
+            Mode::First,
+            1,
+            1,
+            1,
+        ),
         // the prefetching memory port (register 0x126): node words asked for pairs ahead,
         // several requests outstanding, at a memory latency of 8; an issue every clock
         // (both child entries pushed in one) with a credit of 24 to 48 but in the last
-        ChipQuery { prefetch: 6, outstanding: 8, issue_spacing: 1, credit: 32, ..q("sphere_lifo_prefetch", "sphere:12", spheres, Lifo, Mode::All, 8, 1) },
-        ChipQuery { prefetch: 3, outstanding: 4, issue_spacing: 1, credit: 24, ..q("bunny_fifo_prefetch", "bunny-patch:12", patch, Fifo, Mode::First, 8, 1) },
-        ChipQuery { prefetch: 14, outstanding: 16, issue_spacing: 1, credit: 48, ..big("big_sphere_lifo_prefetch", "sphere:320", big_spheres, Lifo, Mode::All, 8, 1, 1) },
-        ChipQuery { prefetch: 14, outstanding: 16, ..big("big_sphere_fifo_prefetch", "sphere:200", big_spheres, Fifo, Mode::All, 8, 1, 1) },
+        ChipQuery {
+            prefetch: 6,
+            outstanding: 8,
+            issue_spacing: 1,
+            credit: 32,
+            ..q(
+                "sphere_lifo_prefetch",
+                "sphere:12",
+                spheres,
+                Lifo,
+                Mode::All,
+                8,
+                1,
+            )
+        },
+        ChipQuery {
+            prefetch: 3,
+            outstanding: 4,
+            issue_spacing: 1,
+            credit: 24,
+            ..q(
+                "bunny_fifo_prefetch",
+                "bunny-patch:12",
+                patch,
+                Fifo,
+                Mode::First,
+                8,
+                1,
+            )
+        },
+        ChipQuery {
+            prefetch: 14,
+            outstanding: 16,
+            issue_spacing: 1,
+            credit: 48,
+            ..big(
+                "big_sphere_lifo_prefetch",
+                "sphere:320",
+                big_spheres,
+                Lifo,
+                Mode::All,
+                8,
+                1,
+                1,
+            )
+        },
+        ChipQuery {
+            prefetch: 14,
+            outstanding: 16,
+            ..big(
+                "big_sphere_fifo_prefetch",
+                "sphere:200",
+                big_spheres,
+                Fifo,
+                Mode::All,
+                8,
+                1,
+                1,
+            )
+        },
         // A's triangle cache (register 0x127): 4 lines, so that lines are shared and
         // replaced, at full speed (rust-hdl); 128 lines (WSCG'03) on a bunny patch
-        ChipQuery { prefetch: 6, outstanding: 8, issue_spacing: 1, credit: 32, tri_cache: 4, ..q("sphere_fifo_cache", "sphere:12", spheres, Fifo, Mode::All, 8, 1) },
-        ChipQuery { prefetch: 14, outstanding: 16, issue_spacing: 1, credit: 48, tri_cache: 128, ..big("big_patch_lifo_cache", "bunny-patch:300", patch, Lifo, Mode::All, 8, 1, 1) },
+        ChipQuery {
+            prefetch: 6,
+            outstanding: 8,
+            issue_spacing: 1,
+            credit: 32,
+            tri_cache: 4,
+            ..q(
+                "sphere_fifo_cache",
+                "sphere:12",
+                spheres,
+                Fifo,
+                Mode::All,
+                8,
+                1,
+            )
+        },
+        ChipQuery {
+            prefetch: 14,
+            outstanding: 16,
+            issue_spacing: 1,
+            credit: 48,
+            tri_cache: 128,
+            ..big(
+                "big_patch_lifo_cache",
+                "bunny-patch:300",
+                patch,
+                Lifo,
+                Mode::All,
+                8,
+                1,
+                1,
+            )
+        },
         // the papers' chip (k = 24, binary32): the root test only (Icarus), a short
         // first-hit query at full speed (rust-hdl), whole queries at full speed and at the
         // reset point
-        ChipQuery { chip: ChipKind::K24B32, ..q("k24_apart_lifo_first", "sphere:12", Pose::new(10.0, 20.0, 30.0, 3.0, 0.1, 0.0), Lifo, Mode::First, 1, 1) },
-        ChipQuery { chip: ChipKind::K24B32, prefetch: 3, outstanding: 4, issue_spacing: 1, credit: 24, ..q("k24_sphere_lifo_first", "sphere:12", spheres, Lifo, Mode::First, 8, 1) },
-        ChipQuery { chip: ChipKind::K24B32, prefetch: 14, outstanding: 16, issue_spacing: 1, credit: 48, ..big("k24_big_sphere_lifo_prefetch", "sphere:320", big_spheres, Lifo, Mode::All, 8, 1, 1) },
-        ChipQuery { chip: ChipKind::K24B32, prefetch: 14, outstanding: 16, issue_spacing: 1, credit: 63, ..big("k24_big_sphere_fifo_prefetch", "sphere:200", big_spheres, Fifo, Mode::All, 8, 1, 1) },
-        ChipQuery { chip: ChipKind::K24B32, ..big("k24_big_patch_lifo_first", "bunny-patch:300", patch, Lifo, Mode::First, 2, 1, 1) },
-        ChipQuery { chip: ChipKind::K24B32, prefetch: 14, outstanding: 16, issue_spacing: 1, credit: 48, tri_cache: 128, ..big("k24_big_sphere_fifo_cache", "sphere:200", big_spheres, Fifo, Mode::All, 8, 1, 1) },
+        ChipQuery {
+            chip: ChipKind::K24B32,
+            ..q(
+                "k24_apart_lifo_first",
+                "sphere:12",
+                Pose::new(10.0, 20.0, 30.0, 3.0, 0.1, 0.0),
+                Lifo,
+                Mode::First,
+                1,
+                1,
+            )
+        },
+        ChipQuery {
+            chip: ChipKind::K24B32,
+            prefetch: 3,
+            outstanding: 4,
+            issue_spacing: 1,
+            credit: 24,
+            ..q(
+                "k24_sphere_lifo_first",
+                "sphere:12",
+                spheres,
+                Lifo,
+                Mode::First,
+                8,
+                1,
+            )
+        },
+        ChipQuery {
+            chip: ChipKind::K24B32,
+            prefetch: 14,
+            outstanding: 16,
+            issue_spacing: 1,
+            credit: 48,
+            ..big(
+                "k24_big_sphere_lifo_prefetch",
+                "sphere:320",
+                big_spheres,
+                Lifo,
+                Mode::All,
+                8,
+                1,
+                1,
+            )
+        },
+        ChipQuery {
+            chip: ChipKind::K24B32,
+            prefetch: 14,
+            outstanding: 16,
+            issue_spacing: 1,
+            credit: 63,
+            ..big(
+                "k24_big_sphere_fifo_prefetch",
+                "sphere:200",
+                big_spheres,
+                Fifo,
+                Mode::All,
+                8,
+                1,
+                1,
+            )
+        },
+        ChipQuery {
+            chip: ChipKind::K24B32,
+            ..big(
+                "k24_big_patch_lifo_first",
+                "bunny-patch:300",
+                patch,
+                Lifo,
+                Mode::First,
+                2,
+                1,
+                1,
+            )
+        },
+        ChipQuery {
+            chip: ChipKind::K24B32,
+            prefetch: 14,
+            outstanding: 16,
+            issue_spacing: 1,
+            credit: 48,
+            tri_cache: 128,
+            ..big(
+                "k24_big_sphere_fifo_cache",
+                "sphere:200",
+                big_spheres,
+                Fifo,
+                Mode::All,
+                8,
+                1,
+                1,
+            )
+        },
         // the papers' chip reading the records layout (register 0x120 bit 2: sibling nodes in
         // one 2,048-bit record, triangles in leaf order, one record held per object): a
         // bunny patch through a 2-line triangle cache at full speed (rust-hdl), whole
         // queries at full speed through the 128-line cache and at the reset point
-        ChipQuery { chip: ChipKind::K24B32, layout: MemLayout::Records, prefetch: 3, outstanding: 4, issue_spacing: 1, credit: 24, tri_cache: 2, ..q("k24_rec_patch_fifo_all", "bunny-patch:4", patch, Fifo, Mode::All, 8, 1) },
-        ChipQuery { chip: ChipKind::K24B32, layout: MemLayout::Records, prefetch: 14, outstanding: 16, issue_spacing: 1, credit: 48, tri_cache: 128, ..big("k24_big_rec_sphere_fifo_cache", "sphere:200", big_spheres, Fifo, Mode::All, 8, 1, 1) },
-        ChipQuery { chip: ChipKind::K24B32, layout: MemLayout::Records, ..big("k24_big_rec_patch_lifo_all", "bunny-patch:300", patch, Lifo, Mode::All, 2, 1, 1) },
+        ChipQuery {
+            chip: ChipKind::K24B32,
+            layout: MemLayout::Records,
+            prefetch: 3,
+            outstanding: 4,
+            issue_spacing: 1,
+            credit: 24,
+            tri_cache: 2,
+            ..q(
+                "k24_rec_patch_fifo_all",
+                "bunny-patch:4",
+                patch,
+                Fifo,
+                Mode::All,
+                8,
+                1,
+            )
+        },
+        ChipQuery {
+            chip: ChipKind::K24B32,
+            layout: MemLayout::Records,
+            prefetch: 14,
+            outstanding: 16,
+            issue_spacing: 1,
+            credit: 48,
+            tri_cache: 128,
+            ..big(
+                "k24_big_rec_sphere_fifo_cache",
+                "sphere:200",
+                big_spheres,
+                Fifo,
+                Mode::All,
+                8,
+                1,
+                1,
+            )
+        },
+        ChipQuery {
+            chip: ChipKind::K24B32,
+            layout: MemLayout::Records,
+            ..big(
+                "k24_big_rec_patch_lifo_all",
+                "bunny-patch:300",
+                patch,
+                Lifo,
+                Mode::All,
+                2,
+                1,
+                1,
+            )
+        },
         // the papers' chip with an e8m15 DOP unit (k24r: format e8m15/binary32): the root
         // test (Icarus), a few leaf pairs (rust-hdl), whole queries at full speed (the second
         // through the 128-line triangle cache) and at the reset point
-        ChipQuery { chip: ChipKind::K24E8m15B32, ..q("k24r_apart_lifo_first", "sphere:12", Pose::new(10.0, 20.0, 30.0, 3.0, 0.1, 0.0), Lifo, Mode::First, 1, 1) },
-        ChipQuery { chip: ChipKind::K24E8m15B32, prefetch: 3, outstanding: 4, issue_spacing: 1, credit: 24, ..q("k24r_patch_fifo_all", "bunny-patch:4", patch, Fifo, Mode::All, 8, 1) },
-        ChipQuery { chip: ChipKind::K24E8m15B32, prefetch: 14, outstanding: 16, issue_spacing: 1, credit: 63, ..big("k24r_big_sphere_fifo_prefetch", "sphere:200", big_spheres, Fifo, Mode::All, 8, 1, 1) },
-        ChipQuery { chip: ChipKind::K24E8m15B32, prefetch: 14, outstanding: 16, issue_spacing: 1, credit: 48, tri_cache: 128, ..big("k24r_big_sphere_lifo_cache", "sphere:320", big_spheres, Lifo, Mode::All, 8, 1, 1) },
-        ChipQuery { chip: ChipKind::K24E8m15B32, ..big("k24r_big_patch_lifo_first", "bunny-patch:300", patch, Lifo, Mode::First, 2, 1, 1) },
+        ChipQuery {
+            chip: ChipKind::K24E8m15B32,
+            ..q(
+                "k24r_apart_lifo_first",
+                "sphere:12",
+                Pose::new(10.0, 20.0, 30.0, 3.0, 0.1, 0.0),
+                Lifo,
+                Mode::First,
+                1,
+                1,
+            )
+        },
+        ChipQuery {
+            chip: ChipKind::K24E8m15B32,
+            prefetch: 3,
+            outstanding: 4,
+            issue_spacing: 1,
+            credit: 24,
+            ..q(
+                "k24r_patch_fifo_all",
+                "bunny-patch:4",
+                patch,
+                Fifo,
+                Mode::All,
+                8,
+                1,
+            )
+        },
+        ChipQuery {
+            chip: ChipKind::K24E8m15B32,
+            prefetch: 14,
+            outstanding: 16,
+            issue_spacing: 1,
+            credit: 63,
+            ..big(
+                "k24r_big_sphere_fifo_prefetch",
+                "sphere:200",
+                big_spheres,
+                Fifo,
+                Mode::All,
+                8,
+                1,
+                1,
+            )
+        },
+        ChipQuery {
+            chip: ChipKind::K24E8m15B32,
+            prefetch: 14,
+            outstanding: 16,
+            issue_spacing: 1,
+            credit: 48,
+            tri_cache: 128,
+            ..big(
+                "k24r_big_sphere_lifo_cache",
+                "sphere:320",
+                big_spheres,
+                Lifo,
+                Mode::All,
+                8,
+                1,
+                1,
+            )
+        },
+        ChipQuery {
+            chip: ChipKind::K24E8m15B32,
+            ..big(
+                "k24r_big_patch_lifo_first",
+                "bunny-patch:300",
+                patch,
+                Lifo,
+                Mode::First,
+                2,
+                1,
+                1,
+            )
+        },
         // the k = 6 chip with TRI_UNIT folded to a pair every 16 clocks (issue 33): the root
         // test (Icarus), a bunny patch whose leaf pairs wait for the unit's slots at full
         // speed (rust-hdl), whole queries at full speed and at the reset point (Verilator;
         // rust-hdl runs this chip ten times faster than `chip_e8m15_k6`, so they are not
         // `large`, but only the first two run in rust-hdl)
-        ChipQuery { chip: ChipKind::K6E8m15Fold16, ..q("fold16_apart_lifo_first", "sphere:12", Pose::new(10.0, 20.0, 30.0, 3.0, 0.1, 0.0), Lifo, Mode::First, 1, 1) },
-        ChipQuery { chip: ChipKind::K6E8m15Fold16, prefetch: 3, outstanding: 4, issue_spacing: 1, credit: 24, ..q("fold16_patch_fifo_all", "bunny-patch:12", patch, Fifo, Mode::All, 8, 1) },
-        ChipQuery { chip: ChipKind::K6E8m15Fold16, prefetch: 14, outstanding: 16, issue_spacing: 1, credit: 48, ..q("fold16_sphere_lifo_prefetch", "sphere:320", big_spheres, Lifo, Mode::All, 8, 1) },
-        ChipQuery { chip: ChipKind::K6E8m15Fold16, ..q("fold16_patch_lifo_first", "bunny-patch:300", patch, Lifo, Mode::First, 1, 1) },
+        ChipQuery {
+            chip: ChipKind::K6E8m15Fold16,
+            ..q(
+                "fold16_apart_lifo_first",
+                "sphere:12",
+                Pose::new(10.0, 20.0, 30.0, 3.0, 0.1, 0.0),
+                Lifo,
+                Mode::First,
+                1,
+                1,
+            )
+        },
+        ChipQuery {
+            chip: ChipKind::K6E8m15Fold16,
+            prefetch: 3,
+            outstanding: 4,
+            issue_spacing: 1,
+            credit: 24,
+            ..q(
+                "fold16_patch_fifo_all",
+                "bunny-patch:12",
+                patch,
+                Fifo,
+                Mode::All,
+                8,
+                1,
+            )
+        },
+        ChipQuery {
+            chip: ChipKind::K6E8m15Fold16,
+            prefetch: 14,
+            outstanding: 16,
+            issue_spacing: 1,
+            credit: 48,
+            ..q(
+                "fold16_sphere_lifo_prefetch",
+                "sphere:320",
+                big_spheres,
+                Lifo,
+                Mode::All,
+                8,
+                1,
+            )
+        },
+        ChipQuery {
+            chip: ChipKind::K6E8m15Fold16,
+            ..q(
+                "fold16_patch_lifo_first",
+                "bunny-patch:300",
+                patch,
+                Lifo,
+                Mode::First,
+                1,
+                1,
+            )
+        },
         // the k = 6 chip with both units folded, the DOP unit a pair every 6 clocks and
         // TRI_UNIT every 32 (issue 33; the chip for an LFE5U-85F): the root test (Icarus), a
         // bunny patch at full speed whose pairs wait for both units' slots (rust-hdl), whole
         // queries at full speed and at the reset point (Verilator)
-        ChipQuery { chip: ChipKind::K6E8m15Dop6Tri32, ..q("dop6tri32_apart_lifo_first", "sphere:12", Pose::new(10.0, 20.0, 30.0, 3.0, 0.1, 0.0), Lifo, Mode::First, 1, 1) },
-        ChipQuery { chip: ChipKind::K6E8m15Dop6Tri32, prefetch: 3, outstanding: 4, issue_spacing: 1, credit: 24, ..q("dop6tri32_patch_fifo_all", "bunny-patch:12", patch, Fifo, Mode::All, 8, 1) },
-        ChipQuery { chip: ChipKind::K6E8m15Dop6Tri32, prefetch: 14, outstanding: 16, issue_spacing: 1, credit: 48, ..q("dop6tri32_sphere_lifo_prefetch", "sphere:320", big_spheres, Lifo, Mode::All, 8, 1) },
-        ChipQuery { chip: ChipKind::K6E8m15Dop6Tri32, ..q("dop6tri32_patch_lifo_first", "bunny-patch:300", patch, Lifo, Mode::First, 1, 1) },
+        ChipQuery {
+            chip: ChipKind::K6E8m15Dop6Tri32,
+            ..q(
+                "dop6tri32_apart_lifo_first",
+                "sphere:12",
+                Pose::new(10.0, 20.0, 30.0, 3.0, 0.1, 0.0),
+                Lifo,
+                Mode::First,
+                1,
+                1,
+            )
+        },
+        ChipQuery {
+            chip: ChipKind::K6E8m15Dop6Tri32,
+            prefetch: 3,
+            outstanding: 4,
+            issue_spacing: 1,
+            credit: 24,
+            ..q(
+                "dop6tri32_patch_fifo_all",
+                "bunny-patch:12",
+                patch,
+                Fifo,
+                Mode::All,
+                8,
+                1,
+            )
+        },
+        ChipQuery {
+            chip: ChipKind::K6E8m15Dop6Tri32,
+            prefetch: 14,
+            outstanding: 16,
+            issue_spacing: 1,
+            credit: 48,
+            ..q(
+                "dop6tri32_sphere_lifo_prefetch",
+                "sphere:320",
+                big_spheres,
+                Lifo,
+                Mode::All,
+                8,
+                1,
+            )
+        },
+        ChipQuery {
+            chip: ChipKind::K6E8m15Dop6Tri32,
+            ..q(
+                "dop6tri32_patch_lifo_first",
+                "bunny-patch:300",
+                patch,
+                Lifo,
+                Mode::First,
+                1,
+                1,
+            )
+        },
     ]
 }
 
@@ -543,12 +1178,23 @@ pub fn write_vectors(dir: &std::path::Path) -> Result<Vec<String>, String> {
     let mut written = vec![];
     for q in queries() {
         let p = q.prepare()?;
-        for (ext, text) in [("mem", p.image.memory_hex()), ("host", p.image.writes_hex())] {
+        for (ext, text) in [
+            ("mem", p.image.memory_hex()),
+            ("host", p.image.writes_hex()),
+        ] {
             let path = dir.join(format!("{}.{ext}", q.name));
             std::fs::write(&path, text).map_err(|e| format!("{}: {e}", path.display()))?;
             written.push(path.display().to_string());
         }
-        let _ = writeln!(list, "{} {} {} {} {}", q.name, q.timing.latency, q.timing.interval, q.reader.period, q.chip.name());
+        let _ = writeln!(
+            list,
+            "{} {} {} {} {}",
+            q.name,
+            q.timing.latency,
+            q.timing.interval,
+            q.reader.period,
+            q.chip.name()
+        );
     }
     let path = dir.join("queries.txt");
     std::fs::write(&path, list).map_err(|e| format!("{}: {e}", path.display()))?;
@@ -572,7 +1218,10 @@ pub fn run_query_vcd<C: RtlPorts>(
         &image.writes,
         d,
         true,
-        |t, p| vcd.cycle(t, &p.unwrap_or_default()).map_err(|e| format!("{}: {e}", path.display())),
+        |t, p| {
+            vcd.cycle(t, &p.unwrap_or_default())
+                .map_err(|e| format!("{}: {e}", path.display()))
+        },
         false,
     )?;
     Ok(trace)
@@ -580,7 +1229,11 @@ pub fn run_query_vcd<C: RtlPorts>(
 
 /// Which RTL chip runs a query of this configuration, traversal and cycle-model
 /// parameters, and in which order; otherwise what to change.
-pub fn rtl_order(cfg: &ChipConfig, traversal: Traversal, p: &Params) -> Result<(ChipKind, Order), String> {
+pub fn rtl_order(
+    cfg: &ChipConfig,
+    traversal: Traversal,
+    p: &Params,
+) -> Result<(ChipKind, Order), String> {
     if ChipKind::built(cfg).next().is_none() {
         let mut built: Vec<String> = vec![];
         for k in ChipKind::ALL {
@@ -595,7 +1248,16 @@ pub fn rtl_order(cfg: &ChipConfig, traversal: Traversal, p: &Params) -> Result<(
         ));
     }
     let Some(kind) = ChipKind::of(cfg, p.dop_interval, p.tri_interval) else {
-        let ii: Vec<String> = ChipKind::built(cfg).map(|k| format!("{} and {} ({})", k.dop_interval(), k.tri_interval(), k.name())).collect();
+        let ii: Vec<String> = ChipKind::built(cfg)
+            .map(|k| {
+                format!(
+                    "{} and {} ({})",
+                    k.dop_interval(),
+                    k.tri_interval(),
+                    k.name()
+                )
+            })
+            .collect();
         return Err(format!(
             "no RTL chip of this configuration takes a DOP pair every {} clocks and a TRI_UNIT pair every {}: its chips have dop_interval and tri_interval {}: set [timing] dop_interval and tri_interval to one of them, or drop cross_check",
             p.dop_interval,
@@ -619,7 +1281,11 @@ pub fn rtl_order(cfg: &ChipConfig, traversal: Traversal, p: &Params) -> Result<(
             r.queue_entries, r.dop_latency, r.tri_latency, r.tri_fifo
         ));
     }
-    let (pf, out, credit) = (chips::PORT_PREFETCH as u32, chips::PORT_OUTSTANDING as u32, chips::CREDIT_MAX as u32);
+    let (pf, out, credit) = (
+        chips::PORT_PREFETCH as u32,
+        chips::PORT_OUTSTANDING as u32,
+        chips::CREDIT_MAX as u32,
+    );
     if p.prefetch > pf || p.outstanding > out || p.credit > credit {
         return Err(format!(
             "the RTL chip prefetches at most {pf} pairs with at most {out} requests outstanding and a credit of at most {credit} (this scene: prefetch {}, outstanding {}, credit {}): lower them in [timing]",
@@ -628,7 +1294,10 @@ pub fn rtl_order(cfg: &ChipConfig, traversal: Traversal, p: &Params) -> Result<(
     }
     match traversal.order() {
         Some(order) => Ok((kind, order)),
-        None => Err(format!("the RTL chip's D_CNTR runs the fifo or lifo traversal, not {}: set [query] traversal", traversal.name())),
+        None => Err(format!(
+            "the RTL chip's D_CNTR runs the fifo or lifo traversal, not {}: set [query] traversal",
+            traversal.name()
+        )),
     }
 }
 
@@ -656,16 +1325,36 @@ pub fn cross_check(
     impl OnChip for Lockstep<'_> {
         type Out = Result<ChipTrace, String>;
         fn run<C: RtlPorts>(self, mut rtl: C) -> Self::Out {
-            let mut ls = crate::cycle::drive::Lockstep::new(RtlChip::new(&mut rtl, self.image), self.model, ("rust-hdl", "cycle model"));
-            crate::cycle::drive::run_query(&mut ls, &self.image.writes, self.d, true, |_, _| Ok(()), false).map_err(|e| e.0)
+            let mut ls = crate::cycle::drive::Lockstep::new(
+                RtlChip::new(&mut rtl, self.image),
+                self.model,
+                ("rust-hdl", "cycle model"),
+            );
+            crate::cycle::drive::run_query(
+                &mut ls,
+                &self.image.writes,
+                self.d,
+                true,
+                |_, _| Ok(()),
+                false,
+            )
+            .map_err(|e| e.0)
         }
     }
     std::thread::scope(|s| {
         std::thread::Builder::new()
             .stack_size(1 << 30)
             .spawn_scoped(s, || {
-                let model = crate::cycle::chip::Chip::new(&chip.cfg, p, &chip.a, &chip.b, &setup, false)?;
-                with_chip::<QUEUE_BITS, { QUEUE_BITS + 1 }, { QUEUE_BITS - 1 }, _>(kind, Lockstep { model, image: &image, d: &d })
+                let model =
+                    crate::cycle::chip::Chip::new(&chip.cfg, p, &chip.a, &chip.b, &setup, false)?;
+                with_chip::<QUEUE_BITS, { QUEUE_BITS + 1 }, { QUEUE_BITS - 1 }, _>(
+                    kind,
+                    Lockstep {
+                        model,
+                        image: &image,
+                        d: &d,
+                    },
+                )
             })
             .map_err(|e| format!("cannot start the RTL simulation thread: {e}"))?
             .join()
@@ -681,13 +1370,24 @@ mod tests {
     /// a triangle's 24 values and two flags, most significant hex digit first.
     #[test]
     fn memory_words_and_writes() {
-        let q = queries().into_iter().find(|q| q.name == "sphere_fifo_all").unwrap();
+        let q = queries()
+            .into_iter()
+            .find(|q| q.name == "sphere_fifo_all")
+            .unwrap();
         let p = q.prepare().unwrap();
         let a = &p.chip.a;
-        assert_eq!(p.image.memory.len(), 2 * a.tree.len() + 2 * a.tri_count(), "A and B are the same sphere");
+        assert_eq!(
+            p.image.memory.len(),
+            2 * a.tree.len() + 2 * a.tri_count(),
+            "A and B are the same sphere"
+        );
         let f = ChipKind::K6E8m15.config().format.dop;
         let w = &p.image.memory[0];
-        let field = |w: &Word, at: usize, bits: usize| (0..bits).fold(0u64, |v, k| v | (w[(at + k) / 64] >> ((at + k) % 64) & 1) << k);
+        let field = |w: &Word, at: usize, bits: usize| {
+            (0..bits).fold(0u64, |v, k| {
+                v | (w[(at + k) / 64] >> ((at + k) % 64) & 1) << k
+            })
+        };
         // hand-derived widths: 24-bit words, 1 + 6 * 24 + 64 node bits, 23 * 24 + 2 triangle bits
         const W: usize = 24;
         const NODE_BITS: usize = 209;
@@ -700,32 +1400,61 @@ mod tests {
         assert_eq!(ChipKind::K24B32.word_bits(), 2048);
         // e8m15 nodes, binary32 triangles: 1 + 24 * 24 + 64 = 641 node bits, 23 * 32 + 2 = 738
         assert_eq!(ChipKind::K24E8m15B32.word_bits(), 738);
-        assert_eq!(crate::chip::layout::Layout::new(&ChipKind::K24E8m15B32.config()).node_bits, 641);
-        assert!(p.image.memory[..a.tree.len()].iter().all(|w| field(w, NODE_BITS, 64) == 0 && field(w, NODE_BITS + 64, MEM_BITS - NODE_BITS - 64) == 0));
+        assert_eq!(
+            crate::chip::layout::Layout::new(&ChipKind::K24E8m15B32.config()).node_bits,
+            641
+        );
+        assert!(p.image.memory[..a.tree.len()]
+            .iter()
+            .all(|w| field(w, NODE_BITS, 64) == 0
+                && field(w, NODE_BITS + 64, MEM_BITS - NODE_BITS - 64) == 0));
         assert_eq!(field(w, 0, 1), 0, "the root is inner");
         assert_eq!(field(w, 1 + 2 * W, W), f.to_bits(a.tree.dop(0)[2]));
-        let Node::Inner([c0, c1]) = a.tree.node(0) else { panic!() };
-        assert_eq!((field(w, 145, 32), field(w, 177, 32)), (c0 as u64, c1 as u64));
+        let Node::Inner([c0, c1]) = a.tree.node(0) else {
+            panic!()
+        };
+        assert_eq!(
+            (field(w, 145, 32), field(w, 177, 32)),
+            (c0 as u64, c1 as u64)
+        );
         let t = &p.image.memory[a.tree.len() + 3];
         let l = LeafIn::of(f, &a.tri(3));
         assert_eq!(field(t, 4 * W, W), l.v[1][1]);
         assert_eq!(field(t, 9 * W + 5 * W, W), l.m[5]);
         assert_eq!(field(t, 22 * W, W), l.alpha_f);
-        assert_eq!(field(t, 23 * W, 2), l.v_exact as u64 | (l.degenerate as u64) << 1);
+        assert_eq!(
+            field(t, 23 * W, 2),
+            l.v_exact as u64 | (l.degenerate as u64) << 1
+        );
         let hex = p.image.memory_hex();
         let line = hex.lines().nth(a.tree.len() + 3).unwrap();
         assert_eq!(line.len(), 139);
-        assert_eq!(u64::from_str_radix(&line[line.len() - 6..], 16).unwrap(), l.v[0][0]);
+        assert_eq!(
+            u64::from_str_radix(&line[line.len() - 6..], 16).unwrap(),
+            l.v[0][0]
+        );
         assert!(p.image.writes.contains(&(reg::MODE, 0)));
         assert!(p.image.writes_hex().lines().all(|l| l.len() == 11));
     }
 
     #[test]
     fn too_large_a_tree_is_an_error() {
-        let big = crate::mesh::builtin("sphere:40000").unwrap().triangles_f64();
+        let big = crate::mesh::builtin("sphere:40000")
+            .unwrap()
+            .triangles_f64();
         let chip = crate::query::Chip::new(&big, &big[..1], ChipKind::K6E8m15.config()).unwrap();
         let setup = chip.setup(&crate::pose::Pose::new(0.0, 0.0, 0.0, 0.0, 0.0, 0.0));
-        let e = QueryImage::new(ChipKind::K6E8m15, &chip.a, &chip.b, &setup, Order::Lifo, Mode::All, &Params::RTL, &chip.cfg).unwrap_err();
+        let e = QueryImage::new(
+            ChipKind::K6E8m15,
+            &chip.a,
+            &chip.b,
+            &setup,
+            Order::Lifo,
+            Mode::All,
+            &Params::RTL,
+            &chip.cfg,
+        )
+        .unwrap_err();
         assert!(e.contains("16 bits"), "{e}");
     }
 }

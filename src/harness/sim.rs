@@ -175,12 +175,19 @@ pub struct DopRun {
 
 impl DopRun {
     /// The cases whose outputs differ from the expected fields: (case index, got).
-    pub fn mismatches<'a>(&'a self, v: &'a DopVectors) -> impl Iterator<Item = (usize, DopOut)> + 'a {
+    pub fn mismatches<'a>(
+        &'a self,
+        v: &'a DopVectors,
+    ) -> impl Iterator<Item = (usize, DopOut)> + 'a {
         self.outputs
             .iter()
             .zip(&v.cases)
             .enumerate()
-            .filter(|(_, (o, c))| o.overlap != c.overlap || o.tag != c.tag_out || c.in_ready.is_some_and(|r| r != o.in_ready))
+            .filter(|(_, (o, c))| {
+                o.overlap != c.overlap
+                    || o.tag != c.tag_out
+                    || c.in_ready.is_some_and(|r| r != o.in_ready)
+            })
             .map(|(i, (o, _))| (i, *o))
     }
 }
@@ -195,13 +202,23 @@ pub enum SimError {
 }
 
 fn verr(line: usize, msg: impl Into<String>) -> SimError {
-    SimError::Vector { line, msg: msg.into() }
+    SimError::Vector {
+        line,
+        msg: msg.into(),
+    }
 }
 
 fn hex_field(line: usize, name: &str, tok: &str, bits: usize) -> Result<u64, SimError> {
-    let v = u64::from_str_radix(tok, 16).map_err(|_| verr(line, format!("field {name} = {tok:?} is not hex")))?;
+    let v = u64::from_str_radix(tok, 16)
+        .map_err(|_| verr(line, format!("field {name} = {tok:?} is not hex")))?;
     if tok.len() != bits.div_ceil(4) || (bits < 64 && v >> bits != 0) {
-        return Err(verr(line, format!("field {name} = {tok:?}: expected {} hex digits, {bits} bits", bits.div_ceil(4))));
+        return Err(verr(
+            line,
+            format!(
+                "field {name} = {tok:?}: expected {} hex digits, {bits} bits",
+                bits.div_ceil(4)
+            ),
+        ));
     }
     Ok(v)
 }
@@ -234,20 +251,31 @@ pub fn parse_dop_vectors(text: &str, width: usize) -> Result<DopVectors, SimErro
             }
             if let Some(rest) = body.strip_prefix("interval") {
                 if let Some(n) = rest.trim_start().strip_prefix([':', '=']) {
-                    v.interval = n.trim().parse().ok().filter(|&n| n >= 1).ok_or_else(|| verr(no, "bad interval (a whole number of clocks, at least 1)"))?;
+                    v.interval = n.trim().parse().ok().filter(|&n| n >= 1).ok_or_else(|| {
+                        verr(no, "bad interval (a whole number of clocks, at least 1)")
+                    })?;
                     continue;
                 }
             }
             if let Some(rest) = body.strip_prefix("preload:") {
-                let names: Vec<&str> = rest.split([' ', '\t', ',']).filter(|t| !t.is_empty()).collect();
+                let names: Vec<&str> = rest
+                    .split([' ', '\t', ','])
+                    .filter(|t| !t.is_empty())
+                    .collect();
                 if names != ["load_en", "load_addr", "load_data"] {
-                    return Err(verr(no, format!("preload header {names:?}, expected load_en load_addr load_data")));
+                    return Err(verr(
+                        no,
+                        format!("preload header {names:?}, expected load_en load_addr load_data"),
+                    ));
                 }
                 have_preload_header = true;
                 continue;
             }
             if !have_header && v.cases.is_empty() && body.starts_with("d$0") {
-                let names: Vec<&str> = body.split_whitespace().filter(|t| !matches!(*t, "->" | "|" | "=" | ":")).collect();
+                let names: Vec<&str> = body
+                    .split_whitespace()
+                    .filter(|t| !matches!(*t, "->" | "|" | "=" | ":"))
+                    .collect();
                 let k = names.iter().take_while(|n| n.starts_with("d$")).count();
                 let want: Vec<String> = (0..k)
                     .map(|i| format!("d${i}"))
@@ -266,7 +294,10 @@ pub fn parse_dop_vectors(text: &str, width: usize) -> Result<DopVectors, SimErro
         let fields = s.split("//").next().unwrap_or("");
         if let Some(rest) = fields.strip_prefix('@') {
             if !have_preload_header {
-                return Err(verr(no, "preload line (`@ ...`) without a `// preload:` header"));
+                return Err(verr(
+                    no,
+                    "preload line (`@ ...`) without a `// preload:` header",
+                ));
             }
             if !v.cases.is_empty() {
                 return Err(verr(no, "preload line after the first case"));
@@ -283,12 +314,22 @@ pub fn parse_dop_vectors(text: &str, width: usize) -> Result<DopVectors, SimErro
             continue;
         }
         if !have_header {
-            return Err(verr(no, "case before the `// d$0 .. tag overlap tag_out` header"));
+            return Err(verr(
+                no,
+                "case before the `// d$0 .. tag overlap tag_out` header",
+            ));
         }
         let k = v.k;
         let t: Vec<&str> = fields.split_whitespace().collect();
         if t.len() != 2 * k + 3 + ready_column as usize {
-            return Err(verr(no, format!("{} fields, expected {}", t.len(), 2 * k + 3 + ready_column as usize)));
+            return Err(verr(
+                no,
+                format!(
+                    "{} fields, expected {}",
+                    t.len(),
+                    2 * k + 3 + ready_column as usize
+                ),
+            ));
         }
         let word = |i: usize| hex_field(no, if i < k { "d" } else { "e" }, t[i], width);
         v.cases.push(DopCase {
@@ -298,7 +339,11 @@ pub fn parse_dop_vectors(text: &str, width: usize) -> Result<DopVectors, SimErro
             tag: hex_field(no, "tag", t[2 * k], 16)? as u16,
             overlap: hex_field(no, "overlap", t[2 * k + 1], 1)? != 0,
             tag_out: hex_field(no, "tag_out", t[2 * k + 2], 16)? as u16,
-            in_ready: if ready_column { Some(hex_field(no, "in_ready", t[2 * k + 3], 1)? != 0) } else { None },
+            in_ready: if ready_column {
+                Some(hex_field(no, "in_ready", t[2 * k + 3], 1)? != 0)
+            } else {
+                None
+            },
         });
     }
     if !have_header {
@@ -326,14 +371,24 @@ fn cycle<U: DopUnitSim>(uut: &mut U) -> Result<(), SimError> {
 /// does not compare the outputs with the expected fields (see [`DopRun::mismatches`]).
 pub fn run_dop_vectors<U: DopUnitSim>(uut: &mut U, v: &DopVectors) -> Result<DopRun, SimError> {
     if v.k != U::K {
-        return Err(SimError::Unit(format!("vectors for k = {}, unit has k = {}", v.k, U::K)));
+        return Err(SimError::Unit(format!(
+            "vectors for k = {}, unit has k = {}",
+            v.k,
+            U::K
+        )));
     }
     if v.interval != U::INTERVAL {
-        return Err(SimError::Unit(format!("vectors for a pair every {} clocks, the unit takes one every {}", v.interval, U::INTERVAL)));
+        return Err(SimError::Unit(format!(
+            "vectors for a pair every {} clocks, the unit takes one every {}",
+            v.interval,
+            U::INTERVAL
+        )));
     }
     let lat = v.latency;
     if lat == 0 {
-        return Err(SimError::Unit("latency 0: the DOP unit is pipelined".into()));
+        return Err(SimError::Unit(
+            "latency 0: the DOP unit is pipelined".into(),
+        ));
     }
     let zero = vec![0u64; U::K];
     let mut cycles = 0u64;
@@ -343,7 +398,9 @@ pub fn run_dop_vectors<U: DopUnitSim>(uut: &mut U, v: &DopVectors) -> Result<Dop
         cycle(uut)?;
         cycles += 1;
         if uut.out().0 {
-            return Err(SimError::Unit(format!("valid_out high in preload cycle {cycles}")));
+            return Err(SimError::Unit(format!(
+                "valid_out high in preload cycle {cycles}"
+            )));
         }
     }
     uut.set_load(false, 0, 0);
@@ -352,7 +409,12 @@ pub fn run_dop_vectors<U: DopUnitSim>(uut: &mut U, v: &DopVectors) -> Result<Dop
     let ii = v.interval;
     for cyc in 0..n * ii + lat + 1 {
         match v.cases.get(cyc / ii).filter(|_| cyc % ii == 0) {
-            Some(_) if !uut.in_ready() => return Err(SimError::Unit(format!("in_ready low when case {} was driven (cycle {cyc})", cyc / ii))),
+            Some(_) if !uut.in_ready() => {
+                return Err(SimError::Unit(format!(
+                    "in_ready low when case {} was driven (cycle {cyc})",
+                    cyc / ii
+                )))
+            }
             Some(c) => uut.set_pair(&c.d, &c.e, c.tag, true),
             None => uut.set_pair(&zero, &zero, 0, false),
         }
@@ -360,12 +422,28 @@ pub fn run_dop_vectors<U: DopUnitSim>(uut: &mut U, v: &DopVectors) -> Result<Dop
         cycles += 1;
         let (valid, overlap, tag) = uut.out();
         // the case driven in cycle c is out after its `lat`-th rising edge, i.e. in cycle c + lat - 1
-        let due = (cyc + 1).checked_sub(lat).filter(|&t| t % ii == 0).map(|t| t / ii).filter(|&i| i < n);
+        let due = (cyc + 1)
+            .checked_sub(lat)
+            .filter(|&t| t % ii == 0)
+            .map(|t| t / ii)
+            .filter(|&i| i < n);
         match (valid, due) {
-            (true, Some(i)) if i == outputs.len() => outputs.push(DopOut { overlap, tag, in_ready: uut.in_ready() }),
+            (true, Some(i)) if i == outputs.len() => outputs.push(DopOut {
+                overlap,
+                tag,
+                in_ready: uut.in_ready(),
+            }),
             (false, None) => {}
-            (true, _) => return Err(SimError::Unit(format!("spurious valid_out in cycle {cyc} of the case stream"))),
-            (false, Some(i)) => return Err(SimError::Unit(format!("valid_out low when case {i} was due (cycle {cyc})"))),
+            (true, _) => {
+                return Err(SimError::Unit(format!(
+                    "spurious valid_out in cycle {cyc} of the case stream"
+                )))
+            }
+            (false, Some(i)) => {
+                return Err(SimError::Unit(format!(
+                    "valid_out low when case {i} was due (cycle {cyc})"
+                )))
+            }
         }
     }
     Ok(DopRun { outputs, cycles })

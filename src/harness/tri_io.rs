@@ -2,11 +2,11 @@
 //! from the golden memory words and host setup, with the golden results they must give:
 //! one source for the testbenches (`tb/rtl_tri.rs`) and the exported vectors.
 
-use crate::golden::host::{Affine, HostSetup};
 use crate::format::{Format, Rounding};
-use crate::golden::tcheck::{self, Trace};
 use crate::golden::certificate::Certificate;
+use crate::golden::host::{Affine, HostSetup};
 use crate::golden::memory::TriWord;
+use crate::golden::tcheck::{self, Trace};
 
 /// The inputs of one T.CHECK: the leaf whose unit triangle is the target (`m` = its M_B,
 /// row-major 3x4, with its error words `alpha_m`, `alpha_f`), the frame map into that
@@ -46,7 +46,15 @@ fn words(f: Format, m: &Affine) -> [u64; 12] {
 /// `frame` (with error words `beta`) mapping `tri`'s object (of scale `scale`) into
 /// `leaf`'s. Returns the RTL inputs and the golden outputs (golden [`tcheck::stage1`] then
 /// [`tcheck::edges`]).
-pub fn direction(f: Format, r: Rounding, leaf: &TriWord, frame: &Affine, beta: [f64; 2], scale: f64, tri: &TriWord) -> (TCheckIn, TCheckOut) {
+pub fn direction(
+    f: Format,
+    r: Rounding,
+    leaf: &TriWord,
+    frame: &Affine,
+    beta: [f64; 2],
+    scale: f64,
+    tri: &TriWord,
+) -> (TCheckIn, TCheckOut) {
     let input = TCheckIn {
         m: words(f, &leaf.m),
         alpha_m: f.to_bits(leaf.alpha_m),
@@ -58,7 +66,13 @@ pub fn direction(f: Format, r: Rounding, leaf: &TriWord, frame: &Affine, beta: [
         v: tri.v.map(|p| p.map(|x| f.to_bits(x))),
         v_exact: tri.v_exact,
     };
-    let trace = tcheck::edges(f, r, &Certificate::new(f, r), &tcheck::stage1(f, r, leaf, frame, beta, scale), tri);
+    let trace = tcheck::edges(
+        f,
+        r,
+        &Certificate::new(f, r),
+        &tcheck::stage1(f, r, leaf, frame, beta, scale),
+        tri,
+    );
     (input, output(f, &trace))
 }
 
@@ -76,7 +90,13 @@ fn output(f: Format, t: &Trace) -> TCheckOut {
 
 /// Both directions of TRI_UNIT for triangle `a` of A against `b` of B under `setup`:
 /// A's edges against U(B), then B's edges against U(A).
-pub fn tri_unit_directions(f: Format, r: Rounding, a: &TriWord, b: &TriWord, setup: &HostSetup) -> [(TCheckIn, TCheckOut); 2] {
+pub fn tri_unit_directions(
+    f: Format,
+    r: Rounding,
+    a: &TriWord,
+    b: &TriWord,
+    setup: &HostSetup,
+) -> [(TCheckIn, TCheckOut); 2] {
     [(b, a, true), (a, b, false)].map(|(leaf, tri, ab)| {
         let (frame, beta, scale) = setup.tri_frame(ab);
         direction(f, r, leaf, frame, beta, scale, tri)
@@ -136,9 +156,21 @@ fn vector_scene(f: Format, n: usize) -> (Vec<TriWord>, Vec<TriWord>, HostSetup) 
     use crate::pose::Pose;
     use nalgebra::Point3;
     let mut a = crate::mesh::soup(n, 21).triangles_f64();
-    a.push([Point3::new(0.1, 0.2, 0.3), Point3::new(0.3, 0.4, 0.5), Point3::new(0.7, 0.8, 0.9)]);
+    a.push([
+        Point3::new(0.1, 0.2, 0.3),
+        Point3::new(0.3, 0.4, 0.5),
+        Point3::new(0.7, 0.8, 0.9),
+    ]);
     let b = crate::mesh::soup(n, 22).triangles_f64();
-    let chip = crate::query::Chip::new(&a, &b, ChipConfig { format: f.into(), ..Default::default() }).expect("two non-empty soups");
+    let chip = crate::query::Chip::new(
+        &a,
+        &b,
+        ChipConfig {
+            format: f.into(),
+            ..Default::default()
+        },
+    )
+    .expect("two non-empty soups");
     let setup = chip.setup(&Pose::new(23.0, -61.0, 11.0, 0.05, -0.08, 0.03));
     (chip.a.tris().collect(), chip.b.tris().collect(), setup)
 }
@@ -153,20 +185,28 @@ fn port_names(prefix: &str, n: usize) -> Vec<String> {
 
 /// The input names of a leaf's map: `m_0$0 .. m_2$3 alpha_m alpha_f` (prefixed).
 fn leaf_names(pre: &str) -> Vec<String> {
-    let mut v: Vec<String> = (0..3).flat_map(|r| port_names(&format!("{pre}m_{r}"), 4)).collect();
+    let mut v: Vec<String> = (0..3)
+        .flat_map(|r| port_names(&format!("{pre}m_{r}"), 4))
+        .collect();
     v.extend(["alpha_m", "alpha_f"].map(|n| format!("{pre}{n}")));
     v
 }
 
 /// The input names of a triangle's vertices: `v_x$0 .. v_z$2 v_exact` (prefixed).
 fn vertex_names(pre: &str) -> Vec<String> {
-    let mut v: Vec<String> = ["x", "y", "z"].iter().flat_map(|c| port_names(&format!("{pre}v_{c}"), 3)).collect();
+    let mut v: Vec<String> = ["x", "y", "z"]
+        .iter()
+        .flat_map(|c| port_names(&format!("{pre}v_{c}"), 3))
+        .collect();
     v.push(format!("{pre}v_exact"));
     v
 }
 
 fn vertex_words(f: Format, v: &[[u64; 3]; 3]) -> Vec<String> {
-    (0..3).flat_map(|c| (0..3).map(move |k| v[k][c])).map(|w| hexw(f, w)).collect()
+    (0..3)
+        .flat_map(|c| (0..3).map(move |k| v[k][c]))
+        .map(|w| hexw(f, w))
+        .collect()
 }
 
 /// T.CHECK's vectors: both directions of every pair of the vector scene (12
@@ -174,7 +214,13 @@ fn vertex_words(f: Format, v: &[[u64; 3]; 3]) -> Vec<String> {
 /// of every catalogue case, `inputs -> s_x$e s_e$e cross_t$e cross_f$e hit miss tag_out`,
 /// for a T.CHECK of `latency` taking a pair every `interval` clocks (a folded one,
 /// `rtl::b32::TCheckFold`: the testbench then drives a case in cycles 0 mod `interval`).
-pub fn tcheck_vectors(name: &str, f: Format, r: Rounding, latency: usize, interval: usize) -> String {
+pub fn tcheck_vectors(
+    name: &str,
+    f: Format,
+    r: Rounding,
+    latency: usize,
+    interval: usize,
+) -> String {
     use std::fmt::Write;
     let mut names = leaf_names("");
     for row in 0..3 {
@@ -202,7 +248,15 @@ pub fn tcheck_vectors(name: &str, f: Format, r: Rounding, latency: usize, interv
         }
     }
     for case in crate::hard_cases::load_catalogue().expect("the hard-case catalogue loads") {
-        let chip = crate::query::Chip::new(&case.a, &case.b, crate::chip::config::ChipConfig { format: f.into(), ..Default::default() }).expect("catalogue objects are non-empty");
+        let chip = crate::query::Chip::new(
+            &case.a,
+            &case.b,
+            crate::chip::config::ChipConfig {
+                format: f.into(),
+                ..Default::default()
+            },
+        )
+        .expect("catalogue objects are non-empty");
         let setup = chip.setup(&case.pose);
         for ta in chip.a.tris() {
             for tb in chip.b.tris() {
@@ -221,7 +275,12 @@ pub fn tcheck_vectors(name: &str, f: Format, r: Rounding, latency: usize, interv
             w.push((x.v_exact as u8).to_string());
             w.push(format!("{tag:08x}"));
             w.extend(y.s_x.iter().chain(&y.s_b).map(|&v| hexw(f, v)));
-            w.extend(y.cross_t.iter().chain(&y.cross_f).map(|&b| (b as u8).to_string()));
+            w.extend(
+                y.cross_t
+                    .iter()
+                    .chain(&y.cross_f)
+                    .map(|&b| (b as u8).to_string()),
+            );
             w.extend([y.hit, y.miss].map(|b| (b as u8).to_string()));
             w.push(format!("{tag:08x}"));
             let _ = writeln!(out, "{}", w.join(" "));
@@ -238,7 +297,14 @@ pub fn tcheck_vectors(name: &str, f: Format, r: Rounding, latency: usize, interv
 /// pair every `interval` clocks (the folded one, `rtl::b32::TriUnitFold`: the testbench drives
 /// a pair in cycles 0 mod `interval`, and `in_ready` at a result's cycle is its counter's,
 /// `latency` mod `interval`, being 0).
-pub fn tri_unit_vectors(name: &str, f: Format, r: Rounding, latency: usize, interval: usize, n: usize) -> String {
+pub fn tri_unit_vectors(
+    name: &str,
+    f: Format,
+    r: Rounding,
+    latency: usize,
+    interval: usize,
+    n: usize,
+) -> String {
     use std::fmt::Write;
     let (a, b, setup) = vector_scene(f, n);
     let mut names = vec![];
@@ -247,7 +313,17 @@ pub fn tri_unit_vectors(name: &str, f: Format, r: Rounding, latency: usize, inte
         names.extend(vertex_names(pre));
         names.push(format!("{pre}degenerate"));
     }
-    names.extend(["tag", "out_ready", "out_tag", "out_hit", "out_uncertain", "in_ready"].map(String::from));
+    names.extend(
+        [
+            "tag",
+            "out_ready",
+            "out_tag",
+            "out_hit",
+            "out_uncertain",
+            "in_ready",
+        ]
+        .map(String::from),
+    );
     let mut out = String::new();
     let _ = writeln!(out, "// preload: load_en load_addr load_data");
     let _ = writeln!(out, "// {}", names.join(" "));

@@ -49,7 +49,9 @@ type VerilogFn = fn(Rounding) -> String;
 
 /// The file-name tag of a format the RTL is built in (`b32`, `e8m15`).
 fn format_tag(fmt: Format) -> Option<String> {
-    [Format::BINARY32, Format::REDUCED].contains(&fmt).then(|| crate::chip::rtl::format_tag(fmt))
+    [Format::BINARY32, Format::REDUCED]
+        .contains(&fmt)
+        .then(|| crate::chip::rtl::format_tag(fmt))
 }
 
 /// The folded DOP unit's Verilog, where the RTL stamps out this k, interval and format.
@@ -62,7 +64,11 @@ pub fn dop_unit_fold_verilog(ii: usize, k: usize, fmt: Format, r: Rounding) -> O
 
 /// The folded DOP units exported (`rtl::*::DopUnit<k>Fold<ii>`, outward rounding): (ii, k,
 /// format), with the unfolded unit's vectors driven every ii clocks.
-const DOP_FOLDS: [(usize, usize, Format); 3] = [(2, 6, Format::REDUCED), (3, 6, Format::REDUCED), (6, 6, Format::REDUCED)];
+const DOP_FOLDS: [(usize, usize, Format); 3] = [
+    (2, 6, Format::REDUCED),
+    (3, 6, Format::REDUCED),
+    (6, 6, Format::REDUCED),
+];
 
 /// The DOP unit's Verilog, where the RTL builds this k and format.
 fn dop_unit_verilog(k: usize, fmt: Format, r: Rounding) -> Option<String> {
@@ -71,7 +77,6 @@ fn dop_unit_verilog(k: usize, fmt: Format, r: Rounding) -> Option<String> {
         _ => crate::rtl::e8m15::verilog_dop_unit(k, r),
     }
 }
-
 
 /// The folded T.CHECKs and TRI_UNITs exported (binary32, nearest-even; `rtl::b32::TCheckFold`,
 /// `rtl::b32::TriUnitFold`), each at these initiation intervals.
@@ -82,13 +87,17 @@ const FOLDED_II: [usize; 1] = [16];
 fn tcheck_fold_unit(ii: usize) -> Unit {
     let r = Rounding::NearestEven;
     let name = format!("tcheck_fold{ii}_b32_{}", rounding_tag(r));
-    let latency = crate::fold::tcheck_plan(ii, crate::fold::plan::Binding::Shared).expect("T.CHECK schedules at every II").latency;
+    let latency = crate::fold::tcheck_plan(ii, crate::fold::plan::Binding::Shared)
+        .expect("T.CHECK schedules at every II")
+        .latency;
     let n2 = name.clone();
     Unit {
         name,
         latency: latency as u32,
         verilog: Box::new(move || crate::rtl::b32::verilog_tcheck_fold(ii, r)),
-        vectors: Box::new(move || super::tri_io::tcheck_vectors(&n2, Format::BINARY32, r, latency, ii)),
+        vectors: Box::new(move || {
+            super::tri_io::tcheck_vectors(&n2, Format::BINARY32, r, latency, ii)
+        }),
     }
 }
 
@@ -98,13 +107,20 @@ fn tcheck_fold_unit(ii: usize) -> Unit {
 fn tri_unit_fold_unit(ii: usize) -> Unit {
     let r = Rounding::NearestEven;
     let name = tri_unit_name(Format::BINARY32, r, ii as u32);
-    let latency = crate::fold::tri_unit_latency(&crate::fold::tri_unit_plan(ii, crate::fold::plan::Binding::Shared).expect("an exported II folds"));
+    let latency = crate::fold::tri_unit_latency(
+        &crate::fold::tri_unit_plan(ii, crate::fold::plan::Binding::Shared)
+            .expect("an exported II folds"),
+    );
     let n2 = name.clone();
     Unit {
         name,
         latency: latency as u32,
-        verilog: Box::new(move || crate::rtl::b32::verilog_tri_unit_fold(ii, r).expect("an exported II folds")),
-        vectors: Box::new(move || super::tri_io::tri_unit_vectors(&n2, Format::BINARY32, r, latency, ii, 12)),
+        verilog: Box::new(move || {
+            crate::rtl::b32::verilog_tri_unit_fold(ii, r).expect("an exported II folds")
+        }),
+        vectors: Box::new(move || {
+            super::tri_io::tri_unit_vectors(&n2, Format::BINARY32, r, latency, ii, 12)
+        }),
     }
 }
 
@@ -112,34 +128,71 @@ fn tri_unit_fold_unit(ii: usize) -> Unit {
 pub fn all() -> Vec<Unit> {
     let mut units = vec![];
     for (tag, fmt, r, v) in [
-        ("b32", Format::BINARY32, Rounding::TowardPositive, crate::rtl::b32::verilog_doptrf as VerilogFn),
-        ("b32", Format::BINARY32, Rounding::NearestEven, crate::rtl::b32::verilog_doptrf),
-        ("e8m15", Format::REDUCED, Rounding::TowardPositive, crate::rtl::e8m15::verilog_doptrf),
+        (
+            "b32",
+            Format::BINARY32,
+            Rounding::TowardPositive,
+            crate::rtl::b32::verilog_doptrf as VerilogFn,
+        ),
+        (
+            "b32",
+            Format::BINARY32,
+            Rounding::NearestEven,
+            crate::rtl::b32::verilog_doptrf,
+        ),
+        (
+            "e8m15",
+            Format::REDUCED,
+            Rounding::TowardPositive,
+            crate::rtl::e8m15::verilog_doptrf,
+        ),
     ] {
         let name = format!("doptrf_{tag}_{}", rounding_tag(r));
         let n2 = name.clone();
-        units.push(Unit { name, latency: crate::chip::rtl::DOP_LATENCY as u32, verilog: Box::new(move || v(r)), vectors: Box::new(move || lane_vectors(&n2, fmt, r)) });
+        units.push(Unit {
+            name,
+            latency: crate::chip::rtl::DOP_LATENCY as u32,
+            verilog: Box::new(move || v(r)),
+            vectors: Box::new(move || lane_vectors(&n2, fmt, r)),
+        });
     }
     for (k, fmt) in [(6, Format::REDUCED), (24, Format::BINARY32)] {
         let r = Rounding::TowardPositive;
         let name = dop_unit_name(k, fmt, r, 1);
         let n2 = name.clone();
         let verilog = move || dop_unit_verilog(k, fmt, r).expect("the RTL builds this k");
-        units.push(Unit { name, latency: crate::chip::rtl::DOP_LATENCY as u32, verilog: Box::new(verilog), vectors: Box::new(move || dop_unit_vectors(&n2, k, fmt, 1)) });
+        units.push(Unit {
+            name,
+            latency: crate::chip::rtl::DOP_LATENCY as u32,
+            verilog: Box::new(verilog),
+            vectors: Box::new(move || dop_unit_vectors(&n2, k, fmt, 1)),
+        });
     }
     for (ii, k, fmt) in DOP_FOLDS {
         let r = Rounding::TowardPositive;
         let name = dop_unit_name(k, fmt, r, ii as u32);
         let n2 = name.clone();
-        let verilog = move || dop_unit_fold_verilog(ii, k, fmt, r).expect("the RTL stamps out this fold");
+        let verilog =
+            move || dop_unit_fold_verilog(ii, k, fmt, r).expect("the RTL stamps out this fold");
         let latency = crate::chip::rtl::dop_fold_latency(ii) as u32;
-        units.push(Unit { name, latency, verilog: Box::new(verilog), vectors: Box::new(move || dop_unit_vectors(&n2, k, fmt, ii)) });
+        units.push(Unit {
+            name,
+            latency,
+            verilog: Box::new(verilog),
+            vectors: Box::new(move || dop_unit_vectors(&n2, k, fmt, ii)),
+        });
     }
     for r in [Rounding::NearestEven, Rounding::TowardPositive] {
         for (tag, fmt) in [("b32", Format::BINARY32), ("e8m15", Format::REDUCED)] {
             let (vm, va): (VerilogFn, VerilogFn) = match tag {
-                "b32" => (crate::rtl::b32::verilog_fp_mul, crate::rtl::b32::verilog_fp_add),
-                _ => (crate::rtl::e8m15::verilog_fp_mul, crate::rtl::e8m15::verilog_fp_add),
+                "b32" => (
+                    crate::rtl::b32::verilog_fp_mul,
+                    crate::rtl::b32::verilog_fp_add,
+                ),
+                _ => (
+                    crate::rtl::e8m15::verilog_fp_mul,
+                    crate::rtl::e8m15::verilog_fp_add,
+                ),
             };
             let name = format!("fp_mul_{tag}_{}", rounding_tag(r));
             let n2 = name.clone();
@@ -166,21 +219,51 @@ pub fn all() -> Vec<Unit> {
         };
         let name = format!("fp_scale_{tag}");
         let n2 = name.clone();
-        units.push(Unit { name, latency: 4, verilog: Box::new(v), vectors: Box::new(move || fp_scale_vectors(&n2, fmt)) });
+        units.push(Unit {
+            name,
+            latency: 4,
+            verilog: Box::new(v),
+            vectors: Box::new(move || fp_scale_vectors(&n2, fmt)),
+        });
     }
     for (tag, fmt) in [("b32", Format::BINARY32), ("e8m15", Format::REDUCED)] {
         let (vt, vu): (VerilogFn, VerilogFn) = match tag {
-            "b32" => (crate::rtl::b32::verilog_tcheck, crate::rtl::b32::verilog_tri_unit),
-            _ => (crate::rtl::e8m15::verilog_tcheck, crate::rtl::e8m15::verilog_tri_unit),
+            "b32" => (
+                crate::rtl::b32::verilog_tcheck,
+                crate::rtl::b32::verilog_tri_unit,
+            ),
+            _ => (
+                crate::rtl::e8m15::verilog_tcheck,
+                crate::rtl::e8m15::verilog_tri_unit,
+            ),
         };
         let r = Rounding::NearestEven;
         let name = format!("tcheck_{tag}_{}", rounding_tag(r));
         let n2 = name.clone();
         let latency = crate::rtl::b32::TCheck::LATENCY;
-        units.push(Unit { name, latency: latency as u32, verilog: Box::new(move || vt(r)), vectors: Box::new(move || super::tri_io::tcheck_vectors(&n2, fmt, r, latency, 1)) });
+        units.push(Unit {
+            name,
+            latency: latency as u32,
+            verilog: Box::new(move || vt(r)),
+            vectors: Box::new(move || super::tri_io::tcheck_vectors(&n2, fmt, r, latency, 1)),
+        });
         let name = tri_unit_name(fmt, r, 1);
         let n2 = name.clone();
-        units.push(Unit { name, latency: crate::rtl::b32::TriUnit::LATENCY as u32, verilog: Box::new(move || vu(r)), vectors: Box::new(move || super::tri_io::tri_unit_vectors(&n2, fmt, r, crate::rtl::b32::TriUnit::LATENCY, 1, 6)) });
+        units.push(Unit {
+            name,
+            latency: crate::rtl::b32::TriUnit::LATENCY as u32,
+            verilog: Box::new(move || vu(r)),
+            vectors: Box::new(move || {
+                super::tri_io::tri_unit_vectors(
+                    &n2,
+                    fmt,
+                    r,
+                    crate::rtl::b32::TriUnit::LATENCY,
+                    1,
+                    6,
+                )
+            }),
+        });
     }
     for ii in FOLDED_II {
         units.push(tcheck_fold_unit(ii));
@@ -189,10 +272,14 @@ pub fn all() -> Vec<Unit> {
     // D_CNTR's pair queue, 16 entries (format independent): one line per clock
     let name = crate::chip::rtl::PAIR_QUEUE_UNIT.to_string();
     let n2 = name.clone();
-    units.push(Unit { name, latency: 1, verilog: Box::new(crate::rtl::d_cntr::verilog_pair_queue::<4, 5, 3>), vectors: Box::new(move || crate::rtl::d_cntr::pair_queue_vectors(&n2, 4, RANDOM_CASES)) });
+    units.push(Unit {
+        name,
+        latency: 1,
+        verilog: Box::new(crate::rtl::d_cntr::verilog_pair_queue::<4, 5, 3>),
+        vectors: Box::new(move || crate::rtl::d_cntr::pair_queue_vectors(&n2, 4, RANDOM_CASES)),
+    });
     units
 }
-
 
 /// A random operand: any bit pattern, or a value near 1 (many ties and cancellations).
 fn operand(rng: &mut impl Rng, fmt: Format) -> u64 {
@@ -221,9 +308,18 @@ fn fp_vectors(name: &str, fmt: Format, r: Rounding, add: bool, latency: u32) -> 
         if add { "add / sub" } else { "mul" }
     );
     let sp = fmt.special_patterns();
-    let mut cases: Vec<(u64, u64, bool)> = sp.iter().flat_map(|&a| sp.iter().map(move |&b| (a, b, false))).collect();
+    let mut cases: Vec<(u64, u64, bool)> = sp
+        .iter()
+        .flat_map(|&a| sp.iter().map(move |&b| (a, b, false)))
+        .collect();
     let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(0x5eed ^ name.len() as u64);
-    cases.extend((0..RANDOM_CASES).map(|i| (operand(&mut rng, fmt), operand(&mut rng, fmt), add && i % 2 == 1)));
+    cases.extend((0..RANDOM_CASES).map(|i| {
+        (
+            operand(&mut rng, fmt),
+            operand(&mut rng, fmt),
+            add && i % 2 == 1,
+        )
+    }));
     for (a, b, sub) in cases {
         let (x, y) = (fmt.from_bits(a), fmt.from_bits(b));
         let z = match (add, sub) {
@@ -233,7 +329,11 @@ fn fp_vectors(name: &str, fmt: Format, r: Rounding, add: bool, latency: u32) -> 
         };
         let z = fmt.to_bits(z);
         if add {
-            let _ = writeln!(out, "{a:0digits$x} {b:0digits$x} {} {z:0digits$x}", sub as u8);
+            let _ = writeln!(
+                out,
+                "{a:0digits$x} {b:0digits$x} {} {z:0digits$x}",
+                sub as u8
+            );
         } else {
             let _ = writeln!(out, "{a:0digits$x} {b:0digits$x} {z:0digits$x}");
         }
@@ -264,7 +364,11 @@ fn fp_scale_vectors(name: &str, fmt: Format) -> String {
 }
 
 fn hex(fmt: Format, x: f64) -> String {
-    format!("{:0w$x}", fmt.to_bits(x), w = (fmt.width() as usize).div_ceil(4))
+    format!(
+        "{:0w$x}",
+        fmt.to_bits(x),
+        w = (fmt.width() as usize).div_ceil(4)
+    )
 }
 
 /// A random format value: an operand bit pattern, or a small integer (exact cancellations).
@@ -287,7 +391,11 @@ fn lane_vectors(name: &str, fmt: Format, r: Rounding) -> String {
     let _ = writeln!(out, "// {name}: s = ((d0 c0 + d1 c1) + (d2 c2 + c)) + e in {fmt}, rounding {r:?}, flag = s < 0; golden: golden::doptrf::lane");
     let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(0xd0b ^ name.len() as u64);
     for i in 0..RANDOM_CASES {
-        let d = [value(&mut rng, fmt), value(&mut rng, fmt), value(&mut rng, fmt)];
+        let d = [
+            value(&mut rng, fmt),
+            value(&mut rng, fmt),
+            value(&mut rng, fmt),
+        ];
         let cm = [0; 3].map(|_| value(&mut rng, fmt).abs());
         let c = value(&mut rng, fmt);
         let e = if i % 2 == 0 {
@@ -296,13 +404,30 @@ fn lane_vectors(name: &str, fmt: Format, r: Rounding) -> String {
             let u = doptrf::transformed(fmt, r, d, cm, c);
             let mut e = -u;
             for _ in 0..rng.random_range(0..4) {
-                e = if rng.random_range(0..2) == 0 { fmt.next_up(e) } else { -fmt.next_up(-e) };
+                e = if rng.random_range(0..2) == 0 {
+                    fmt.next_up(e)
+                } else {
+                    -fmt.next_up(-e)
+                };
             }
             e
         };
         let s = doptrf::lane(fmt, r, d, cm, c, e);
         let h = |x| hex(fmt, x);
-        let _ = writeln!(out, "{} {} {} {} {} {} {} {} {} {}", h(d[0]), h(d[1]), h(d[2]), h(cm[0]), h(cm[1]), h(cm[2]), h(c), h(e), h(s), (s < 0.0) as u8);
+        let _ = writeln!(
+            out,
+            "{} {} {} {} {} {} {} {} {} {}",
+            h(d[0]),
+            h(d[1]),
+            h(d[2]),
+            h(cm[0]),
+            h(cm[1]),
+            h(cm[2]),
+            h(c),
+            h(e),
+            h(s),
+            (s < 0.0) as u8
+        );
     }
     out
 }
@@ -318,20 +443,41 @@ fn dop_unit_vectors(name: &str, k: usize, fmt: Format, interval: usize) -> Strin
     use crate::dop::DopTree;
     use crate::golden::host::HostSetup;
     use crate::pose::Pose;
-    let cfg = ChipConfig { k, format: fmt.into(), ..Default::default() };
+    let cfg = ChipConfig {
+        k,
+        format: fmt.into(),
+        ..Default::default()
+    };
     let r = cfg.dop_rounding.op();
     let n = if k == 6 { 16 } else { 8 };
     let ta = DopTree::build(&crate::mesh::soup(n, 11).triangles_f64(), &cfg);
     let tb = DopTree::build(&crate::mesh::soup(n, 12).triangles_f64(), &cfg);
     let pose = Pose::new(17.0, -41.0, 73.0, 0.05, -0.1, 0.02);
-    let setup = HostSetup::new(&cfg, &pose, tb.coord_bound(), crate::golden::host::TriSide::UNUSED);
+    let setup = HostSetup::new(
+        &cfg,
+        &pose,
+        tb.coord_bound(),
+        crate::golden::host::TriSide::UNUSED,
+    );
     let w = (fmt.width() as usize).div_ceil(4);
     let mut out = String::new();
     let _ = writeln!(out, "// preload: load_en load_addr load_data");
-    let names: Vec<String> = (0..k).map(|i| format!("d${i}")).chain((0..k).map(|i| format!("e${i}"))).collect();
+    let names: Vec<String> = (0..k)
+        .map(|i| format!("d${i}"))
+        .chain((0..k).map(|i| format!("e${i}")))
+        .collect();
     let latency = crate::chip::rtl::dop_fold_latency(interval);
-    let ready = if interval > 1 { format!(" {}", (latency % interval == 0) as u8) } else { String::new() };
-    let _ = writeln!(out, "// {} tag overlap tag_out{}", names.join(" "), if interval > 1 { " in_ready" } else { "" });
+    let ready = if interval > 1 {
+        format!(" {}", (latency % interval == 0) as u8)
+    } else {
+        String::new()
+    };
+    let _ = writeln!(
+        out,
+        "// {} tag overlap tag_out{}",
+        names.join(" "),
+        if interval > 1 { " in_ready" } else { "" }
+    );
     let _ = writeln!(out, "// latency: {latency}");
     if interval > 1 {
         let _ = writeln!(out, "// interval: {interval}");
@@ -346,7 +492,12 @@ fn dop_unit_vectors(name: &str, k: usize, fmt: Format, interval: usize) -> Strin
             let (d, e) = (tb.dop(nb), ta.dop(na));
             let overlap = crate::golden::dop_unit::dop_overlap(fmt, r, &setup, &d, &e);
             let vals: Vec<String> = d.iter().chain(e.iter()).map(|&x| hex(fmt, x)).collect();
-            let _ = writeln!(out, "{} {tag:04x} {} {tag:04x}{ready}", vals.join(" "), overlap as u8);
+            let _ = writeln!(
+                out,
+                "{} {tag:04x} {} {tag:04x}{ready}",
+                vals.join(" "),
+                overlap as u8
+            );
             tag = tag.wrapping_add(1);
         }
     }
@@ -356,7 +507,12 @@ fn dop_unit_vectors(name: &str, k: usize, fmt: Format, interval: usize) -> Strin
 /// Writes `<dir>/<unit>.v` for every unit and each chip's `<dir>/chip_<format>_k<k>.v`
 /// ([`ChipKind`]); returns the paths written.
 pub fn write_verilog(dir: &Path) -> std::io::Result<Vec<String>> {
-    let mut written = write_all(dir, "v", all().into_iter().map(|u| (u.name, u.verilog)).collect(), verilog_of)?;
+    let mut written = write_all(
+        dir,
+        "v",
+        all().into_iter().map(|u| (u.name, u.verilog)).collect(),
+        verilog_of,
+    )?;
     for &kind in ChipKind::ALL {
         let p = dir.join(format!("{}.v", kind.name()));
         std::fs::write(&p, super::chip_io::verilog(kind))?;
@@ -368,8 +524,14 @@ pub fn write_verilog(dir: &Path) -> std::io::Result<Vec<String>> {
 /// Writes `<dir>/<unit>.hex` for every unit and the chip's query files under `<dir>/chip/`
 /// ([`chip_io::write_vectors`](super::chip_io::write_vectors)); returns the paths written.
 pub fn write_vectors(dir: &Path) -> std::io::Result<Vec<String>> {
-    let mut written = write_all(dir, "hex", all().into_iter().map(|u| (u.name, u.vectors)).collect(), |v| v())?;
-    written.extend(super::chip_io::write_vectors(&dir.join("chip")).map_err(std::io::Error::other)?);
+    let mut written = write_all(
+        dir,
+        "hex",
+        all().into_iter().map(|u| (u.name, u.vectors)).collect(),
+        |v| v(),
+    )?;
+    written
+        .extend(super::chip_io::write_vectors(&dir.join("chip")).map_err(std::io::Error::other)?);
     Ok(written)
 }
 
@@ -382,13 +544,25 @@ fn area_units() -> Vec<(String, Text)> {
     for fmt in [Format::BINARY32, Format::REDUCED] {
         for k in crate::chip::config::SUPPORTED_K {
             for r in [Rounding::TowardPositive, Rounding::NearestEven] {
-                units.push((dop_unit_name(k, fmt, r, 1), Box::new(move || dop_unit_verilog(k, fmt, r).expect("the RTL builds every supported k"))));
+                units.push((
+                    dop_unit_name(k, fmt, r, 1),
+                    Box::new(move || {
+                        dop_unit_verilog(k, fmt, r).expect("the RTL builds every supported k")
+                    }),
+                ));
             }
         }
     }
     for fmt in [Format::BINARY32, Format::REDUCED] {
-        let v: VerilogFn = if fmt == Format::BINARY32 { crate::rtl::b32::verilog_tri_unit } else { crate::rtl::e8m15::verilog_tri_unit };
-        units.push((tri_unit_name(fmt, Rounding::NearestEven, 1), Box::new(move || v(Rounding::NearestEven))));
+        let v: VerilogFn = if fmt == Format::BINARY32 {
+            crate::rtl::b32::verilog_tri_unit
+        } else {
+            crate::rtl::e8m15::verilog_tri_unit
+        };
+        units.push((
+            tri_unit_name(fmt, Rounding::NearestEven, 1),
+            Box::new(move || v(Rounding::NearestEven)),
+        ));
     }
     units.extend(area_fold_units());
     units
@@ -401,12 +575,26 @@ fn area_fold_units() -> Vec<(String, Text)> {
     let mut units: Vec<(String, Text)> = vec![];
     for fmt in [Format::BINARY32, Format::REDUCED] {
         for ii in AREA_TRI_FOLDS {
-            let v = if fmt == Format::BINARY32 { crate::rtl::b32::verilog_tri_unit_fold } else { crate::rtl::e8m15::verilog_tri_unit_fold };
-            units.push((tri_unit_name(fmt, Rounding::NearestEven, ii as u32), Box::new(move || v(ii, Rounding::NearestEven).expect("the fold study's intervals fold"))));
+            let v = if fmt == Format::BINARY32 {
+                crate::rtl::b32::verilog_tri_unit_fold
+            } else {
+                crate::rtl::e8m15::verilog_tri_unit_fold
+            };
+            units.push((
+                tri_unit_name(fmt, Rounding::NearestEven, ii as u32),
+                Box::new(move || {
+                    v(ii, Rounding::NearestEven).expect("the fold study's intervals fold")
+                }),
+            ));
         }
         for &(k, ii) in crate::rtl::b32::DOP_UNIT_FOLDS {
             for r in [Rounding::TowardPositive, Rounding::NearestEven] {
-                units.push((dop_unit_name(k, fmt, r, ii as u32), Box::new(move || dop_unit_fold_verilog(ii, k, fmt, r).expect("the RTL stamps this fold"))));
+                units.push((
+                    dop_unit_name(k, fmt, r, ii as u32),
+                    Box::new(move || {
+                        dop_unit_fold_verilog(ii, k, fmt, r).expect("the RTL stamps this fold")
+                    }),
+                ));
             }
         }
     }
@@ -423,7 +611,12 @@ pub fn write_area_verilog(dir: &Path) -> std::io::Result<Vec<String>> {
 
 /// Writes `<dir>/<name>.<ext>` for each file, in parallel threads with stacks big enough for
 /// the units (T.CHECK and TRI_UNIT are built on the stack, several MB).
-fn write_all(dir: &Path, ext: &str, files: Vec<(String, Text)>, text: fn(&Text) -> String) -> std::io::Result<Vec<String>> {
+fn write_all(
+    dir: &Path,
+    ext: &str,
+    files: Vec<(String, Text)>,
+    text: fn(&Text) -> String,
+) -> std::io::Result<Vec<String>> {
     std::fs::create_dir_all(dir)?;
     let threads = std::thread::available_parallelism().map_or(2, |n| n.get());
     let next = std::sync::atomic::AtomicUsize::new(0);
@@ -434,7 +627,9 @@ fn write_all(dir: &Path, ext: &str, files: Vec<(String, Text)>, text: fn(&Text) 
                 .stack_size(1 << 30)
                 .spawn_scoped(s, || loop {
                     let i = next.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
-                    let Some((name, make)) = files.get(i) else { break };
+                    let Some((name, make)) = files.get(i) else {
+                        break;
+                    };
                     let p = dir.join(format!("{name}.{ext}"));
                     let res = std::fs::write(&p, text(make)).map(|_| p.display().to_string());
                     written.lock().unwrap()[i] = Some(res);
@@ -442,7 +637,12 @@ fn write_all(dir: &Path, ext: &str, files: Vec<(String, Text)>, text: fn(&Text) 
                 .expect("spawn a writer thread");
         }
     });
-    written.into_inner().unwrap().into_iter().map(|r| r.expect("every unit written")).collect()
+    written
+        .into_inner()
+        .unwrap()
+        .into_iter()
+        .map(|r| r.expect("every unit written"))
+        .collect()
 }
 
 #[cfg(test)]
@@ -454,10 +654,22 @@ mod tests {
     /// and its vectors name a latency equal to the unit's.
     #[test]
     fn exported_units_are_integer_logic() {
-        let float = ["real", "shortreal", "$bitstoreal", "$realtobits", "$itor", "$rtoi"];
+        let float = [
+            "real",
+            "shortreal",
+            "$bitstoreal",
+            "$realtobits",
+            "$itor",
+            "$rtoi",
+        ];
         let units = std::thread::Builder::new()
             .stack_size(512 << 20) // the k = 24 DOP unit is built on the stack
-            .spawn(|| all().iter().map(|u| (u.name.clone(), u.latency, u.verilog(), u.vectors())).collect::<Vec<_>>())
+            .spawn(|| {
+                all()
+                    .iter()
+                    .map(|u| (u.name.clone(), u.latency, u.verilog(), u.vectors()))
+                    .collect::<Vec<_>>()
+            })
             .unwrap()
             .join()
             .unwrap();
@@ -475,7 +687,11 @@ mod tests {
             let v = std::fs::read_to_string(&p).unwrap_or_else(|e| panic!("{}: {e}", p.display()));
             assert_eq!(v.matches("module top(").count(), 1, "{}", kind.name());
             for tok in v.split(|c: char| !(c.is_alphanumeric() || c == '_' || c == '$')) {
-                assert!(!float.contains(&tok), "{}: float construct {tok}", kind.name());
+                assert!(
+                    !float.contains(&tok),
+                    "{}: float construct {tok}",
+                    kind.name()
+                );
             }
         }
     }

@@ -40,7 +40,10 @@ pub const PORTS: [(&str, &str); 16] = [
 ];
 
 fn probe_index(p: (&str, &str)) -> usize {
-    PROBES.iter().position(|q| (q.0, q.1) == p).expect("every port is a probe")
+    PROBES
+        .iter()
+        .position(|q| (q.0, q.1) == p)
+        .expect("every port is a probe")
 }
 
 type Ports = [u64; PORTS.len()];
@@ -68,8 +71,17 @@ impl PortLog {
     fn parse(text: &str) -> Result<PortLog, String> {
         let mut log = PortLog::default();
         for line in text.lines().filter(|l| l.starts_with("ports ")) {
-            let v: Vec<u64> = line[6..].split(' ').map(str::parse).collect::<Result<_, _>>().map_err(|e| format!("testbench line {line:?}: {e}"))?;
-            let p: Ports = v.get(1..).and_then(|s| s.try_into().ok()).ok_or_else(|| format!("testbench line {line:?}: expected {} values", PORTS.len() + 1))?;
+            let v: Vec<u64> = line[6..]
+                .split(' ')
+                .map(str::parse)
+                .collect::<Result<_, _>>()
+                .map_err(|e| format!("testbench line {line:?}: {e}"))?;
+            let p: Ports = v.get(1..).and_then(|s| s.try_into().ok()).ok_or_else(|| {
+                format!(
+                    "testbench line {line:?}: expected {} values",
+                    PORTS.len() + 1
+                )
+            })?;
             log.0.push((v[0], p));
         }
         Ok(log)
@@ -80,13 +92,24 @@ impl PortLog {
     pub fn first_difference(&self, other: &PortLog) -> Option<String> {
         let qualifier: Vec<Option<usize>> = PORTS
             .iter()
-            .map(|&p| probe_valid(probe_index(p)).map(|v| PORTS.iter().position(|&q| probe_index(q) == v).expect("qualifiers are ports")))
+            .map(|&p| {
+                probe_valid(probe_index(p)).map(|v| {
+                    PORTS
+                        .iter()
+                        .position(|&q| probe_index(q) == v)
+                        .expect("qualifiers are ports")
+                })
+            })
             .collect();
         let specified = |s: &Ports, k: usize| qualifier[k].is_none_or(|q| s[q] == 1);
         let (mut i, mut j) = (0, 0);
         let (mut a, mut b): (Option<Ports>, Option<Ports>) = (None, None);
         while i < self.0.len() || j < other.0.len() {
-            let t = self.0.get(i).map_or(u64::MAX, |e| e.0).min(other.0.get(j).map_or(u64::MAX, |e| e.0));
+            let t = self
+                .0
+                .get(i)
+                .map_or(u64::MAX, |e| e.0)
+                .min(other.0.get(j).map_or(u64::MAX, |e| e.0));
             if self.0.get(i).is_some_and(|e| e.0 == t) {
                 a = Some(self.0[i].1);
                 i += 1;
@@ -96,11 +119,23 @@ impl PortLog {
                 j += 1;
             }
             let (Some(x), Some(y)) = (a, b) else {
-                return Some(format!("cycle {t}: only the {} shows its ports", if a.is_some() { "cycle model" } else { "Verilog" }));
+                return Some(format!(
+                    "cycle {t}: only the {} shows its ports",
+                    if a.is_some() {
+                        "cycle model"
+                    } else {
+                        "Verilog"
+                    }
+                ));
             };
-            if let Some(k) = (0..PORTS.len()).find(|&k| (specified(&x, k) || specified(&y, k)) && x[k] != y[k]) {
+            if let Some(k) =
+                (0..PORTS.len()).find(|&k| (specified(&x, k) || specified(&y, k)) && x[k] != y[k])
+            {
                 let (scope, name) = PORTS[k];
-                return Some(format!("cycle {t}: signal chip.{scope}.{name}: cycle model {}, Verilog {}", x[k], y[k]));
+                return Some(format!(
+                    "cycle {t}: signal chip.{scope}.{name}: cycle model {}, Verilog {}",
+                    x[k], y[k]
+                ));
             }
         }
         None
@@ -134,7 +169,9 @@ pub fn chip_binary(kind: ChipKind) -> Result<PathBuf, String> {
     let text = chip_io::verilog(kind);
     // rewritten only when it changed, so that the build's inputs keep their times
     if std::fs::read_to_string(&v).ok().as_deref() != Some(&text) {
-        std::fs::create_dir_all(&dir).and_then(|()| std::fs::write(&v, &text)).map_err(|e| format!("{}: {e}", v.display()))?;
+        std::fs::create_dir_all(&dir)
+            .and_then(|()| std::fs::write(&v, &text))
+            .map_err(|e| format!("{}: {e}", v.display()))?;
     }
     let out = std::process::Command::new("bash")
         .arg(&script)
@@ -157,12 +194,23 @@ pub fn chip_binary(kind: ChipKind) -> Result<PathBuf, String> {
 
 /// Where a run's pose files go (removed after a pose agrees).
 pub fn work_dir() -> PathBuf {
-    root().join(format!("target/cchip/verilog-cross-check/{}", std::process::id()))
+    root().join(format!(
+        "target/cchip/verilog-cross-check/{}",
+        std::process::id()
+    ))
 }
 
 /// Runs one pose on the Verilator binary `bin` (files in `dir`) and compares it with the
 /// cycle model's `ports` and `trace`: the first difference names the cycle and the port.
-pub fn cross_check(bin: &Path, dir: &Path, image: &QueryImage, memory: Memory, max_cycles: u64, ports: &PortLog, trace: &ChipTrace) -> Result<(), String> {
+pub fn cross_check(
+    bin: &Path,
+    dir: &Path,
+    image: &QueryImage,
+    memory: Memory,
+    max_cycles: u64,
+    ports: &PortLog,
+    trace: &ChipTrace,
+) -> Result<(), String> {
     let minutes = trace.cycles as f64 / VERILATOR_CLOCKS_PER_SECOND / 60.0;
     if minutes > 30.0 {
         return Err(format!("the Verilog cross-check would take about {minutes:.0} minutes ({} clocks at ~{VERILATOR_CLOCKS_PER_SECOND} clocks/s); use smaller meshes", trace.cycles));
@@ -174,7 +222,10 @@ pub fn cross_check(bin: &Path, dir: &Path, image: &QueryImage, memory: Memory, m
     std::fs::write(&host, image.writes_hex()).map_err(|e| io(&host, e))?;
     let memory_args = match memory {
         Memory::Ideal(t) => {
-            let mut a = vec![format!("+latency={}", t.latency), format!("+interval={}", t.interval)];
+            let mut a = vec![
+                format!("+latency={}", t.latency),
+                format!("+interval={}", t.interval),
+            ];
             a.extend(t.bus_bits.map(|b| format!("+bus_bits={b}")));
             a
         }
@@ -202,13 +253,24 @@ pub fn cross_check(bin: &Path, dir: &Path, image: &QueryImage, memory: Memory, m
         .map_err(|e| format!("cannot run {}: {e}", bin.display()))?;
     let stdout = String::from_utf8_lossy(&out.stdout);
     if !out.status.success() {
-        return Err(format!("{} failed: {}", bin.display(), String::from_utf8_lossy(&out.stderr)));
+        return Err(format!(
+            "{} failed: {}",
+            bin.display(),
+            String::from_utf8_lossy(&out.stderr)
+        ));
     }
     let verilog = PortLog::parse(&stdout)?;
     if let Some(d) = ports.first_difference(&verilog) {
-        return Err(format!("the exported Verilog and the cycle model differ at {d} (files in {})", dir.display()));
+        return Err(format!(
+            "the exported Verilog and the cycle model differ at {d} (files in {})",
+            dir.display()
+        ));
     }
-    let text: String = stdout.lines().filter(|l| l.starts_with("result ") || l.starts_with("done ") || l.starts_with("timeout")).map(|l| format!("{l}\n")).collect();
+    let text: String = stdout
+        .lines()
+        .filter(|l| l.starts_with("result ") || l.starts_with("done ") || l.starts_with("timeout"))
+        .map(|l| format!("{l}\n"))
+        .collect();
     if text != trace.text() {
         return Err(format!("the exported Verilog's trace differs from the cycle model's (files in {}):\n{text}\n{}", dir.display(), trace.text()));
     }
@@ -223,9 +285,20 @@ mod tests {
     #[test]
     fn testbench_agrees() {
         let tb = include_str!("../../scripts/verilog/chip_tb.v");
-        assert!(tb.contains(&format!("localparam DEPTH = 1 << {};", TB_MEMORY_WORDS.trailing_zeros())));
-        let at = tb.find("//   ports <cycle> ").expect("the ports line is documented");
-        let doc: Vec<&str> = tb[at..].lines().take(2).flat_map(|l| l.split_whitespace()).filter(|w| *w != "//").skip(2).collect();
+        assert!(tb.contains(&format!(
+            "localparam DEPTH = 1 << {};",
+            TB_MEMORY_WORDS.trailing_zeros()
+        )));
+        let at = tb
+            .find("//   ports <cycle> ")
+            .expect("the ports line is documented");
+        let doc: Vec<&str> = tb[at..]
+            .lines()
+            .take(2)
+            .flat_map(|l| l.split_whitespace())
+            .filter(|w| *w != "//")
+            .skip(2)
+            .collect();
         assert_eq!(doc, PORTS.iter().map(|p| p.1).collect::<Vec<_>>());
     }
 
@@ -243,12 +316,18 @@ mod tests {
         assert_eq!(a.first_difference(&same), None);
         let mut b = PortLog(a.0.clone());
         b.0[1].1[6] = 8;
-        assert_eq!(a.first_difference(&b).unwrap(), "cycle 3: signal chip.memory.req_addr: cycle model 7, Verilog 8");
+        assert_eq!(
+            a.first_difference(&b).unwrap(),
+            "cycle 3: signal chip.memory.req_addr: cycle model 7, Verilog 8"
+        );
         // an address without a request is nobody's business
         let mut c = PortLog(a.0.clone());
         c.0[0].1[6] = 5;
         assert_eq!(a.first_difference(&c), None);
         let d = PortLog(a.0[..1].to_vec());
-        assert!(a.first_difference(&d).unwrap().starts_with("cycle 3: signal chip.memory.req_valid"));
+        assert!(a
+            .first_difference(&d)
+            .unwrap()
+            .starts_with("cycle 3: signal chip.memory.req_valid"));
     }
 }

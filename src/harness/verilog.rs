@@ -53,7 +53,10 @@ fn is_ident_char(c: char) -> bool {
 }
 
 fn is_ident(s: &str) -> bool {
-    s.chars().next().is_some_and(|c| c.is_ascii_alphabetic() || c == '_') && s.chars().all(is_ident_char)
+    s.chars()
+        .next()
+        .is_some_and(|c| c.is_ascii_alphabetic() || c == '_')
+        && s.chars().all(is_ident_char)
 }
 
 /// Merges the modules of rust-hdl Verilog that are identical up to their own name and the
@@ -72,7 +75,11 @@ pub fn dedup_modules(verilog: &str) -> String {
         if let Some(name) = module_header(lines[i]) {
             let end = format!("endmodule // {name}");
             if let Some(j) = (i + 1..lines.len()).find(|&j| lines[j].trim_end() == end) {
-                modules.push(Module { name, lead: lead_start..i, body: i..j + 1 });
+                modules.push(Module {
+                    name,
+                    lead: lead_start..i,
+                    body: i..j + 1,
+                });
                 i = j + 1;
                 lead_start = i;
                 continue;
@@ -81,7 +88,11 @@ pub fn dedup_modules(verilog: &str) -> String {
         i += 1;
     }
     let trailer = lead_start..lines.len();
-    let index: HashMap<&str, usize> = modules.iter().enumerate().map(|(k, m)| (m.name, k)).collect();
+    let index: HashMap<&str, usize> = modules
+        .iter()
+        .enumerate()
+        .map(|(k, m)| (m.name, k))
+        .collect();
 
     // Class of every module, children first: the key is the module's text with its own name
     // and its children's names replaced by placeholders and class numbers.
@@ -102,9 +113,17 @@ pub fn dedup_modules(verilog: &str) -> String {
                     .filter_map(|l| instance(l).and_then(|(_, kind, _)| index.get(kind).copied()))
             };
             if !children_done {
-                assert!(on_path.insert(m), "dedup_modules: module {} instantiates itself", modules[m].name);
+                assert!(
+                    on_path.insert(m),
+                    "dedup_modules: module {} instantiates itself",
+                    modules[m].name
+                );
                 stack.push((m, true));
-                stack.extend(children().filter(|&c| class[c].is_none()).map(|c| (c, false)));
+                stack.extend(
+                    children()
+                        .filter(|&c| class[c].is_none())
+                        .map(|c| (c, false)),
+                );
                 continue;
             }
             on_path.remove(&m);
@@ -119,7 +138,9 @@ pub fn dedup_modules(verilog: &str) -> String {
                     key.push_str(&l.replacen(modules[m].name, "\0self", 1));
                 } else if k == modules[m].body.len() - 1 {
                     key.push_str("\0end\n");
-                } else if let Some((indent, kind, inst)) = instance(l).filter(|(_, kind, _)| index.contains_key(kind)) {
+                } else if let Some((indent, kind, inst)) =
+                    instance(l).filter(|(_, kind, _)| index.contains_key(kind))
+                {
                     let c = class[index[kind]].expect("children are classed first");
                     key.push_str(&format!("{indent}\0{c} {inst}(\n"));
                 } else {
@@ -134,7 +155,10 @@ pub fn dedup_modules(verilog: &str) -> String {
             class[m] = Some(c);
         }
     }
-    let class: Vec<usize> = class.into_iter().map(|c| c.expect("every module classed")).collect();
+    let class: Vec<usize> = class
+        .into_iter()
+        .map(|c| c.expect("every module classed"))
+        .collect();
 
     // The first module of each class (in file order) stands for it.
     let mut canonical: Vec<Option<usize>> = vec![None; n_classes];
@@ -166,7 +190,10 @@ pub fn dedup_modules(verilog: &str) -> String {
     out.push_str(&lines[trailer].concat());
 
     if !removed.is_empty() {
-        if let Some(t) = out.split(|c: char| !is_ident_char(c)).find(|t| removed.contains(t)) {
+        if let Some(t) = out
+            .split(|c: char| !is_ident_char(c))
+            .find(|t| removed.contains(t))
+        {
             panic!("dedup_modules: removed module {t} is still referred to");
         }
     }
@@ -179,7 +206,11 @@ mod tests {
 
     /// A register module in rust-hdl's style.
     fn dff(name: &str, width: usize) -> String {
-        let w = if width == 1 { String::new() } else { format!("[{}:0] ", width - 1) };
+        let w = if width == 1 {
+            String::new()
+        } else {
+            format!("[{}:0] ", width - 1)
+        };
         format!(
             "\n\nmodule {name}(d,q,clock);\n    \n    // Module arguments\n    input wire  {w}d;\n    output reg  {w}q;\n    \
              input wire  clock;\n    \n    always @(posedge clock) begin\n       q <= d;\n    end\n          \nendmodule // {name}\n"
@@ -207,11 +238,19 @@ mod tests {
             + &dff("top$c", 4);
         let d = dedup_modules(&v);
         assert_eq!(module_names(&d), ["top", "top$a", "top$c"]);
-        assert!(d.contains("    top$a a(\n") && d.contains("    top$a b(\n") && d.contains("    top$c c(\n"));
+        assert!(
+            d.contains("    top$a a(\n")
+                && d.contains("    top$a b(\n")
+                && d.contains("    top$c c(\n")
+        );
         assert!(d.contains(".q(b$q)"), "instance wiring unchanged");
         assert!(!d.contains("top$b"));
         // What is left is rust-hdl's text, minus the removed module and its two blank lines.
-        assert_eq!(d, v.replace(&dff("top$b", 8), "").replace("top$b b(", "top$a b("));
+        assert_eq!(
+            d,
+            v.replace(&dff("top$b", 8), "")
+                .replace("top$b b(", "top$a b(")
+        );
     }
 
     #[test]
@@ -226,7 +265,10 @@ mod tests {
             + &parent("top$r", &[("top$r$x", "x")])
             + &dff("top$r$x", 5);
         let d = dedup_modules(&v);
-        assert_eq!(module_names(&d), ["top", "top$p", "top$p$x", "top$r", "top$r$x"]);
+        assert_eq!(
+            module_names(&d),
+            ["top", "top$p", "top$p$x", "top$r", "top$r$x"]
+        );
         assert!(d.contains("    top$p q(\n") && d.contains("    top$r r(\n"));
         assert_eq!(d.matches("    top$p$x x(\n").count(), 1);
     }
@@ -295,8 +337,16 @@ mod tests {
         assert!(names.len() < module_names(&v).len());
         assert_eq!(names.iter().filter(|&&n| n == "top").count(), 1);
         let defined: HashSet<&str> = names.into_iter().collect();
-        let kinds: Vec<&str> = d.lines().filter_map(instance).map(|(_, kind, _)| kind).collect();
-        assert_eq!(kinds.len(), module_names(&v).len() - 1, "one instance line per original block");
+        let kinds: Vec<&str> = d
+            .lines()
+            .filter_map(instance)
+            .map(|(_, kind, _)| kind)
+            .collect();
+        assert_eq!(
+            kinds.len(),
+            module_names(&v).len() - 1,
+            "one instance line per original block"
+        );
         assert!(kinds.iter().all(|k| defined.contains(k)));
     }
 }

@@ -177,7 +177,11 @@ impl Mesh {
         for (i, p) in vertices.iter().enumerate() {
             for c in p.iter() {
                 check_coordinate(*c, format_args!("{c:e}")).map_err(|r| {
-                    MeshError::new(&self.name, None, format!("scaled into [-1,1]^3, vertex {i}: {r}"))
+                    MeshError::new(
+                        &self.name,
+                        None,
+                        format!("scaled into [-1,1]^3, vertex {i}: {r}"),
+                    )
                 })?;
             }
         }
@@ -370,7 +374,11 @@ pub fn is_builtin_name(spec: &str) -> bool {
 
 /// The meshes of specs `a` and `b` by `load`: B read only if its spec differs from A's (a
 /// mesh against itself read once: parsing was most of a large file's setup).
-pub fn pair<E>(a: &str, b: &str, load: impl Fn(&str) -> Result<Mesh, E>) -> Result<(Mesh, Mesh), E> {
+pub fn pair<E>(
+    a: &str,
+    b: &str,
+    load: impl Fn(&str) -> Result<Mesh, E>,
+) -> Result<(Mesh, Mesh), E> {
     let ma = load(a)?;
     let mb = if b == a { ma.clone() } else { load(b)? };
     Ok((ma, mb))

@@ -53,10 +53,14 @@ pub(super) fn parse(file: &str, bytes: &[u8]) -> Result<Parsed, MeshError> {
                         .parse::<f64>()
                         .map_err(|_| err(lineno, format!("invalid vertex weight '{}'", t[3])))?;
                     if w == 0.0 || !w.is_finite() {
-                        return Err(err(lineno, format!("vertex weight w = {} is 0 or not finite", t[3])));
+                        return Err(err(
+                            lineno,
+                            format!("vertex weight w = {} is 0 or not finite", t[3]),
+                        ));
                     }
                     for c in xyz {
-                        check_coordinate(c / w, format_args!("{c} / {w}")).map_err(|r| err(lineno, r))?;
+                        check_coordinate(c / w, format_args!("{c} / {w}"))
+                            .map_err(|r| err(lineno, r))?;
                     }
                     clean.push(' ');
                     clean.push_str(t[3]);

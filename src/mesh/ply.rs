@@ -139,15 +139,11 @@ impl Builder<'_> {
                 self.vertices.push(Point3::from(xyz));
             }
             "face" => {
-                let p = e
-                    .indices
-                    .as_ref()
-                    .or(e.index.as_ref())
-                    .ok_or_else(|| {
-                        err(format!(
-                            "{what}: face has no list property 'vertex_indices'"
-                        ))
-                    })?;
+                let p = e.indices.as_ref().or(e.index.as_ref()).ok_or_else(|| {
+                    err(format!(
+                        "{what}: face has no list property 'vertex_indices'"
+                    ))
+                })?;
                 let idx = int_list(p).ok_or_else(|| {
                     err(format!(
                         "{what}: 'vertex_indices' is not a list of integers"
@@ -181,7 +177,10 @@ impl Builder<'_> {
 
 /// "header declares 3 'vertex' and 1 'face' elements".
 fn declared(elements: &[(&String, &ElementDef)]) -> String {
-    let counts: Vec<String> = elements.iter().map(|(n, d)| format!("{} '{n}'", d.count)).collect();
+    let counts: Vec<String> = elements
+        .iter()
+        .map(|(n, d)| format!("{} '{n}'", d.count))
+        .collect();
     format!("header declares {} elements", counts.join(" and "))
 }
 
@@ -251,13 +250,15 @@ pub(super) fn parse(file: &str, bytes: &[u8]) -> Result<Parsed, MeshError> {
                     lineno += 1;
                     let raw = match lines.next() {
                         Some(l) if !(l.is_empty() && lines.clone().next().is_none()) => l,
-                        _ => return Err(err(
-                            Some(lineno),
-                            format!(
+                        _ => {
+                            return Err(err(
+                                Some(lineno),
+                                format!(
                                 "truncated ASCII PLY: file ends after {j} of {} '{name}' elements",
                                 def.count
                             ),
-                        )),
+                            ))
+                        }
                     };
                     let text = std::str::from_utf8(raw)
                         .map_err(|_| err(Some(lineno), "invalid UTF-8".into()))?;
@@ -280,7 +281,10 @@ pub(super) fn parse(file: &str, bytes: &[u8]) -> Result<Parsed, MeshError> {
             if let Some(k) = lines.position(|l| !l.trim_ascii().is_empty()) {
                 return Err(err(
                     Some(lineno + k + 1),
-                    format!("data after the {}; correct the counts in the header", declared(&elements)),
+                    format!(
+                        "data after the {}; correct the counts in the header",
+                        declared(&elements)
+                    ),
                 ));
             }
         }

@@ -20,7 +20,9 @@ fn looks_textual(bytes: &[u8]) -> bool {
     let body = head.strip_prefix("\u{feff}".as_bytes()).unwrap_or(head);
     body.len() >= 5
         && body[..5].eq_ignore_ascii_case(b"solid")
-        && head.iter().all(|&b| b >= 0x20 || b"\t\n\r\x0c".contains(&b))
+        && head
+            .iter()
+            .all(|&b| b >= 0x20 || b"\t\n\r\x0c".contains(&b))
 }
 
 pub(super) fn parse(file: &str, bytes: &[u8]) -> Result<Parsed, MeshError> {
@@ -33,7 +35,10 @@ pub(super) fn parse(file: &str, bytes: &[u8]) -> Result<Parsed, MeshError> {
         return ascii(file, bytes);
     }
     // Named in the binary errors, because such a file may have been meant as ASCII.
-    let note = if bytes.get(..5).is_some_and(|b| b.eq_ignore_ascii_case(b"solid")) {
+    let note = if bytes
+        .get(..5)
+        .is_some_and(|b| b.eq_ignore_ascii_case(b"solid"))
+    {
         " (read as binary: it starts with 'solid' but contains non-text bytes)"
     } else {
         ""
@@ -117,8 +122,15 @@ fn ascii(file: &str, bytes: &[u8]) -> Result<Parsed, MeshError> {
     for (i, raw) in bytes.split(|&b| b == b'\n').enumerate() {
         let lineno = i + 1;
         last = lineno;
-        let err = |why: String| MeshError::new(file, Some(lineno), format!("ASCII STL, facet {}: {why}", facet + 1));
-        let text = std::str::from_utf8(raw).map_err(|_| MeshError::new(file, Some(lineno), "invalid UTF-8"))?;
+        let err = |why: String| {
+            MeshError::new(
+                file,
+                Some(lineno),
+                format!("ASCII STL, facet {}: {why}", facet + 1),
+            )
+        };
+        let text = std::str::from_utf8(raw)
+            .map_err(|_| MeshError::new(file, Some(lineno), "invalid UTF-8"))?;
         let t: Vec<&str> = text.split_whitespace().collect();
         let Some(key) = t.first().map(|k| k.to_ascii_lowercase()) else {
             continue;
@@ -141,7 +153,9 @@ fn ascii(file: &str, bytes: &[u8]) -> Result<Parsed, MeshError> {
         let ok = match expected {
             "solid" => key == "solid",
             "facet normal nx ny nz" => {
-                key == "facet" && words(5, Some("normal")) && t[2..].iter().all(|s| s.parse::<f64>().is_ok())
+                key == "facet"
+                    && words(5, Some("normal"))
+                    && t[2..].iter().all(|s| s.parse::<f64>().is_ok())
             }
             "outer loop" => key == "outer" && words(2, Some("loop")),
             "vertex x y z" => key == "vertex" && words(4, None),
@@ -149,7 +163,10 @@ fn ascii(file: &str, bytes: &[u8]) -> Result<Parsed, MeshError> {
             _ => key == "endfacet" && t.len() == 1,
         };
         if !ok {
-            return Err(err(format!("expected '{expected}', found '{}'", t.join(" "))));
+            return Err(err(format!(
+                "expected '{expected}', found '{}'",
+                t.join(" ")
+            )));
         }
         match pos {
             None if expected == "solid" => in_solid = true,
@@ -182,7 +199,10 @@ fn ascii(file: &str, bytes: &[u8]) -> Result<Parsed, MeshError> {
         return Err(MeshError::new(
             file,
             Some(last),
-            format!("ASCII STL, facet {}: unexpected end of file (truncated? no 'endsolid')", facet + 1),
+            format!(
+                "ASCII STL, facet {}: unexpected end of file (truncated? no 'endsolid')",
+                facet + 1
+            ),
         ));
     }
     Ok((vertices, triangles))

@@ -144,18 +144,38 @@ fn scaled_into_unit_cube_fits_and_is_centred() {
         vertices: vec![Point3::new(3.0, 3.0, 3.0)],
         triangles: vec![[0, 0, 0]],
     };
-    assert_eq!(point.scaled_into_unit_cube().unwrap().vertices[0], Point3::origin());
+    assert_eq!(
+        point.scaled_into_unit_cube().unwrap().vertices[0],
+        Point3::origin()
+    );
     // Issue 16: extents at both ends of the range stay finite and in range, and a detail
     // scaled out of the range is refused (it was judged, or clamped, before).
-    let tri = |v: [[f64; 3]; 3]| Mesh { name: "t".into(), vertices: v.map(Point3::from).to_vec(), triangles: vec![[0, 1, 2]] };
+    let tri = |v: [[f64; 3]; 3]| Mesh {
+        name: "t".into(),
+        vertices: v.map(Point3::from).to_vec(),
+        triangles: vec![[0, 1, 2]],
+    };
     for s in [1e60, 1e-60] {
-        let m = tri([[-s, 0.0, 0.0], [s, 0.0, 0.0], [0.0, s, 0.0]]).scaled_into_unit_cube().unwrap();
-        for (v, w) in m.vertices.iter().zip([p(-1.0, -0.5, 0.0), p(1.0, -0.5, 0.0), p(0.0, 0.5, 0.0)]) {
+        let m = tri([[-s, 0.0, 0.0], [s, 0.0, 0.0], [0.0, s, 0.0]])
+            .scaled_into_unit_cube()
+            .unwrap();
+        for (v, w) in
+            m.vertices
+                .iter()
+                .zip([p(-1.0, -0.5, 0.0), p(1.0, -0.5, 0.0), p(0.0, 0.5, 0.0)])
+        {
             assert!((v - w).amax() < 1e-15, "{s}: {v} vs {w}");
         }
     }
-    let e = tri([[0.0, 0.0, 0.0], [1e60, 0.0, 0.0], [0.0, 1.0, 1e-60]]).scaled_into_unit_cube().unwrap_err();
-    assert!(e.reason.starts_with("scaled into [-1,1]^3, vertex 0: coordinate '") && e.reason.contains("out of range"), "{e}");
+    let e = tri([[0.0, 0.0, 0.0], [1e60, 0.0, 0.0], [0.0, 1.0, 1e-60]])
+        .scaled_into_unit_cube()
+        .unwrap_err();
+    assert!(
+        e.reason
+            .starts_with("scaled into [-1,1]^3, vertex 0: coordinate '")
+            && e.reason.contains("out of range"),
+        "{e}"
+    );
 }
 
 #[test]
@@ -323,7 +343,10 @@ fn builtin_names() {
         assert!(e.reason.contains(needle), "{e}");
     }
     assert_eq!(e.file, "rabbit");
-    assert!(builtin("torus:16777216").unwrap_err().reason.contains("not an integer in 1..=2097152"));
+    assert!(builtin("torus:16777216")
+        .unwrap_err()
+        .reason
+        .contains("not an integer in 1..=2097152"));
     for bad in [
         "sphere:0",
         "sphere:x",
@@ -535,18 +558,32 @@ fn text_coordinates_are_read_as_f64() {
     let tri = |o: [f64; 3]| [[o[0], o[1], o[2]], [far, o[1], o[2]], [o[0], 1.0, o[2]]];
     let (a, b) = (tri(lo), tri(hi));
     let obj = {
-        let v: Vec<String> = a.iter().chain(&b).map(|q| format!("v {} {} {}\n", q[0], q[1], q[2])).collect();
+        let v: Vec<String> = a
+            .iter()
+            .chain(&b)
+            .map(|q| format!("v {} {} {}\n", q[0], q[1], q[2]))
+            .collect();
         v.concat() + "f 1 2 3\nf 4 5 6\n"
     };
     let stl = {
         let facet = |t: &[[f64; 3]; 3]| {
-            let v: Vec<String> = t.iter().map(|q| format!("vertex {} {} {}\n", q[0], q[1], q[2])).collect();
-            format!("facet normal 0 0 1\nouter loop\n{}endloop\nendfacet\n", v.concat())
+            let v: Vec<String> = t
+                .iter()
+                .map(|q| format!("vertex {} {} {}\n", q[0], q[1], q[2]))
+                .collect();
+            format!(
+                "facet normal 0 0 1\nouter loop\n{}endloop\nendfacet\n",
+                v.concat()
+            )
         };
         format!("solid gap\n{}{}endsolid gap\n", facet(&a), facet(&b))
     };
     let ply = {
-        let v: Vec<String> = a.iter().chain(&b).map(|q| format!("{} {} {}\n", q[0], q[1], q[2])).collect();
+        let v: Vec<String> = a
+            .iter()
+            .chain(&b)
+            .map(|q| format!("{} {} {}\n", q[0], q[1], q[2]))
+            .collect();
         format!(
             "ply\nformat ascii 1.0\nelement vertex 6\nproperty float x\nproperty float y\n\
              property float z\nelement face 2\nproperty list uchar int vertex_indices\nend_header\n\
@@ -567,7 +604,11 @@ fn text_coordinates_are_read_as_f64() {
 /// Issue 16: a UTF-8 byte-order mark hid the first OBJ vertex and shifted every index.
 #[test]
 fn byte_order_mark_is_skipped() {
-    let m = load_bytes("\u{feff}v 5 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n".as_bytes(), "obj").unwrap();
+    let m = load_bytes(
+        "\u{feff}v 5 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n".as_bytes(),
+        "obj",
+    )
+    .unwrap();
     assert_eq!(m.triangle(0), [p(5., 0., 0.), p(1., 0., 0.), p(0., 1., 0.)]);
     let want = tetra_expected();
     for first in ["\u{feff}solid t", "SOLID T", "\u{feff}Solid"] {
@@ -584,10 +625,17 @@ fn stl_kind_is_reported_as_read() {
     let mut b = binary_stl(b"solid but actually binary");
     b.truncate(b.len() - 10);
     let e = load_bytes(&b, "stl").unwrap_err();
-    assert!(e.reason.contains("truncated binary STL") && e.reason.contains("non-text bytes"), "{e}");
+    assert!(
+        e.reason.contains("truncated binary STL") && e.reason.contains("non-text bytes"),
+        "{e}"
+    );
     // An ASCII file cut inside a facet is a truncated ASCII file.
     let e = load_bytes(b"SOLID x\nfacet normal 0 0 1\nouter loop\n", "stl").unwrap_err();
-    assert!(e.reason.contains("ASCII STL, facet 1: unexpected end of file"), "{e}");
+    assert!(
+        e.reason
+            .contains("ASCII STL, facet 1: unexpected end of file"),
+        "{e}"
+    );
 }
 
 /// Issue 16: PLY elements beyond the header's counts were silently dropped.
@@ -598,7 +646,12 @@ fn ply_data_beyond_the_header_counts_is_an_error() {
     let e = load_bytes(&b, "ply").unwrap_err();
     let lines = ply_bytes("ascii").iter().filter(|&&c| c == b'\n').count();
     assert_eq!(e.line, Some(lines + 1), "{e}");
-    assert!(e.reason.contains("data after the header declares 5 'vertex' and 4 'face' and 2 'extra' elements"), "{e}");
+    assert!(
+        e.reason.contains(
+            "data after the header declares 5 'vertex' and 4 'face' and 2 'extra' elements"
+        ),
+        "{e}"
+    );
     // Trailing blank lines are fine.
     let mut b = ply_bytes("ascii");
     b.extend(b"\n\n");
@@ -606,7 +659,10 @@ fn ply_data_beyond_the_header_counts_is_an_error() {
     let mut b = ply_bytes("binary_little_endian");
     b.extend([0, 0]);
     let e = load_bytes(&b, "ply").unwrap_err();
-    assert!(e.reason.starts_with("2 bytes after the header declares"), "{e}");
+    assert!(
+        e.reason.starts_with("2 bytes after the header declares"),
+        "{e}"
+    );
 }
 
 /// Issue 16: the exact oracle is exact only for magnitudes in [1e-60, 1e60] (module doc of
@@ -615,7 +671,11 @@ fn ply_data_beyond_the_header_counts_is_an_error() {
 fn coordinates_outside_the_oracle_range_are_refused() {
     expect_bad("out-of-range.ply", Some(11), "'z = 1e120' is out of range");
     for tiny in ["1e-61", "-1e-300", "5e-324"] {
-        let e = load_bytes(format!("v 0 0 0\nv 1 0 {tiny}\nv 0 1 0\nf 1 2 3\n").as_bytes(), "obj").unwrap_err();
+        let e = load_bytes(
+            format!("v 0 0 0\nv 1 0 {tiny}\nv 0 1 0\nf 1 2 3\n").as_bytes(),
+            "obj",
+        )
+        .unwrap_err();
         assert_eq!(e.line, Some(2), "{e}");
         assert!(e.reason.contains("out of range"), "{e}");
     }
@@ -647,7 +707,10 @@ fn error_non_finite_coordinates() {
     // 1e300 is finite: it is refused for its range, not called infinite.
     let e = load_bytes(b"v 0 0 0\nv 1 0 0\nv 0 1e300 0\nf 1 2 3\n", "obj").unwrap_err();
     assert_eq!(e.line, Some(3), "{e}");
-    assert!(e.reason.contains("'1e300' is out of range") && e.reason.contains("1e-60 to 1e60"), "{e}");
+    assert!(
+        e.reason.contains("'1e300' is out of range") && e.reason.contains("1e-60 to 1e60"),
+        "{e}"
+    );
     let e = load_bytes(b"v 0 0 0\nv 1 0 0 0\nv 0 1 0\nf 1 2 3\n", "obj").unwrap_err();
     assert_eq!(e.line, Some(2), "{e}");
 }
@@ -836,7 +899,8 @@ fn large_dragons() {
         ("dragon-202k.ply", 202_520, 100_250),
         ("dragon-871k.ply", 871_414, 437_645),
     ] {
-        let m = load(&dir.join(name)).unwrap_or_else(|e| panic!("{e} (run scripts/fetch-dragon.sh first)"));
+        let m = load(&dir.join(name))
+            .unwrap_or_else(|e| panic!("{e} (run scripts/fetch-dragon.sh first)"));
         assert_eq!(m.len(), tris, "{name}");
         assert_eq!(m.vertices.len(), verts, "{name}");
         assert_finite(&m);

@@ -43,7 +43,11 @@ impl Tree {
         let mut items: Vec<Item> = tris
             .iter()
             .enumerate()
-            .map(|(i, t)| Item { bb: tri_box(t), shape: classify(t), idx: i as u32 })
+            .map(|(i, t)| Item {
+                bb: tri_box(t),
+                shape: classify(t),
+                idx: i as u32,
+            })
             .collect();
         let mut nodes = Vec::with_capacity(2 * tris.len() / LEAF_SIZE + 2);
         if !items.is_empty() {
@@ -55,7 +59,13 @@ impl Tree {
     /// Calls `hit(j)` for every tree triangle `j` intersecting `shape` (with box `bb`).
     /// `stack` is a reusable scratch buffer.
     #[inline]
-    pub(crate) fn query(&self, bb: &Box3, shape: &Shape, stack: &mut Vec<u32>, mut hit: impl FnMut(u32)) {
+    pub(crate) fn query(
+        &self,
+        bb: &Box3,
+        shape: &Shape,
+        stack: &mut Vec<u32>,
+        mut hit: impl FnMut(u32),
+    ) {
         if self.nodes.is_empty() {
             return;
         }
@@ -95,7 +105,11 @@ fn build(items: &mut [Item], offset: usize, nodes: &mut Vec<Node>) -> usize {
             ch[i] = ch[i].max(c);
         }
     }
-    nodes.push(Node { bb, start_or_right: offset as u32, count: items.len() as u32 });
+    nodes.push(Node {
+        bb,
+        start_or_right: offset as u32,
+        count: items.len() as u32,
+    });
     if items.len() <= LEAF_SIZE {
         return me;
     }

@@ -23,7 +23,11 @@ fn sign(v: f64) -> i8 {
 
 #[inline(always)]
 fn c3(p: &P) -> Coord3D<f64> {
-    Coord3D { x: p.x, y: p.y, z: p.z }
+    Coord3D {
+        x: p.x,
+        y: p.y,
+        z: p.z,
+    }
 }
 
 /// Exact sign of orient3d(a, b, c, d).
@@ -83,7 +87,9 @@ pub(crate) fn classify(t: &Tri) -> Shape {
     }
     // An axis on which the vertices are not all equal: the line's direction has a non-zero
     // component there, so that coordinate orders the points along the line exactly.
-    let ax = (0..3).find(|&i| !(a[i] == b[i] && b[i] == c[i])).unwrap_or(0);
+    let ax = (0..3)
+        .find(|&i| !(a[i] == b[i] && b[i] == c[i]))
+        .unwrap_or(0);
     let mut lo = a;
     let mut hi = a;
     for p in [b, c] {
@@ -272,7 +278,9 @@ pub(crate) fn shapes_intersect(a: &Shape, b: &Shape) -> bool {
 #[cfg(test)]
 pub(crate) fn shapes_intersect_no_shortcut(a: &Shape, b: &Shape) -> bool {
     match (a, b) {
-        (Shape::Tri(ta, ka, sa), Shape::Tri(tb, kb, sb)) => tri_tri_proper(ta, *ka, *sa, tb, *kb, *sb),
+        (Shape::Tri(ta, ka, sa), Shape::Tri(tb, kb, sb)) => {
+            tri_tri_proper(ta, *ka, *sa, tb, *kb, *sb)
+        }
         _ => shapes_intersect(a, b),
     }
 }

@@ -71,14 +71,17 @@ pub fn in_range(c: f64) -> bool {
 }
 
 /// The supported range as a phrase for error messages.
-pub const RANGE_TEXT: &str = "the exact oracle supports coordinates that are 0 or of magnitude 1e-60 to 1e60";
+pub const RANGE_TEXT: &str =
+    "the exact oracle supports coordinates that are 0 or of magnitude 1e-60 to 1e60";
 
 /// Ok iff every coordinate of `tris` is [`in_range`]; else names `what`, the triangle and
 /// the coordinate.
 pub fn check_range(tris: &[Tri], what: &str) -> Result<(), String> {
     for (i, t) in tris.iter().enumerate() {
         if let Some(c) = t.iter().flat_map(|p| p.iter()).find(|c| !in_range(**c)) {
-            return Err(format!("{what}, triangle {i}: coordinate {c:e} is out of range ({RANGE_TEXT})"));
+            return Err(format!(
+                "{what}, triangle {i}: coordinate {c:e} is out of range ({RANGE_TEXT})"
+            ));
         }
     }
     Ok(())
@@ -95,7 +98,9 @@ pub fn tri_tri(a: &Tri, b: &Tri) -> bool {
 /// T.CHECK decides from is exactly 0 and it must answer "uncertain". A triangle without a
 /// plane (collinear vertices) gives false: it is degenerate, another cause.
 pub fn vertex_on_plane(a: &Tri, b: &Tri) -> bool {
-    let on = |t: &Tri, s: &Tri| !exact::collinear(t) && s.iter().any(|p| exact::o3(&t[0], &t[1], &t[2], p) == 0);
+    let on = |t: &Tri, s: &Tri| {
+        !exact::collinear(t) && s.iter().any(|p| exact::o3(&t[0], &t[1], &t[2], p) == 0)
+    };
     on(a, b) || on(b, a)
 }
 

@@ -10,11 +10,22 @@ fn p(x: f64, y: f64, z: f64) -> Point3<f64> {
     Point3::new(x, y, z)
 }
 fn t(a: [f64; 3], b: [f64; 3], c: [f64; 3]) -> Tri {
-    [p(a[0], a[1], a[2]), p(b[0], b[1], b[2]), p(c[0], c[1], c[2])]
+    [
+        p(a[0], a[1], a[2]),
+        p(b[0], b[1], b[2]),
+        p(c[0], c[1], c[2]),
+    ]
 }
 /// Both orders and all 6 vertex orders of each triangle must give `want`.
 fn check(a: &Tri, b: &Tri, want: bool) {
-    let perms = [[0, 1, 2], [0, 2, 1], [1, 0, 2], [1, 2, 0], [2, 0, 1], [2, 1, 0]];
+    let perms = [
+        [0, 1, 2],
+        [0, 2, 1],
+        [1, 0, 2],
+        [1, 2, 0],
+        [2, 0, 1],
+        [2, 1, 0],
+    ];
     for pa in perms {
         for pb in perms {
             let a2 = [a[pa[0]], a[pa[1]], a[pa[2]]];
@@ -46,24 +57,56 @@ fn a_z1() -> Tri {
 fn oracle_general_crossing() {
     let a = a_z1();
     // B's edge (2,2,0)-(2,2,2) pierces A's interior at (2,2,1).
-    check(&a, &t([2.0, 2.0, 0.0], [2.0, 2.0, 2.0], [4.0, 4.0, 1.5]), true);
+    check(
+        &a,
+        &t([2.0, 2.0, 0.0], [2.0, 2.0, 2.0], [4.0, 4.0, 1.5]),
+        true,
+    );
     // Same B but entirely above / below.
-    check(&a, &t([2.0, 2.0, 1.5], [2.0, 2.0, 2.0], [4.0, 4.0, 1.5]), false);
-    check(&a, &t([2.0, 2.0, 0.0], [2.0, 2.0, 0.5], [4.0, 4.0, 0.5]), false);
+    check(
+        &a,
+        &t([2.0, 2.0, 1.5], [2.0, 2.0, 2.0], [4.0, 4.0, 1.5]),
+        false,
+    );
+    check(
+        &a,
+        &t([2.0, 2.0, 0.0], [2.0, 2.0, 0.5], [4.0, 4.0, 0.5]),
+        false,
+    );
     // B crosses A's plane but only outside A (beyond the hypotenuse).
-    check(&a, &t([4.0, 4.0, 0.0], [4.0, 4.0, 2.0], [6.0, 6.0, 1.0]), false);
+    check(
+        &a,
+        &t([4.0, 4.0, 0.0], [4.0, 4.0, 2.0], [6.0, 6.0, 1.0]),
+        false,
+    );
     // Two triangles crossing each other through both interiors ("X" configuration).
-    check(&a, &t([2.0, 1.5, 0.0], [2.0, 1.5, 3.0], [2.0, 10.0, 1.5]), true);
+    check(
+        &a,
+        &t([2.0, 1.5, 0.0], [2.0, 1.5, 3.0], [2.0, 10.0, 1.5]),
+        true,
+    );
 }
 
 #[test]
 fn oracle_vertex_vertex() {
     let a = a_z1();
     // B touches the plane z = 1 only at its vertex (1,1,1) = A's vertex.
-    check(&a, &t([1.0, 1.0, 1.0], [0.0, 0.0, 2.0], [0.0, 1.0, 3.0]), true);
+    check(
+        &a,
+        &t([1.0, 1.0, 1.0], [0.0, 0.0, 2.0], [0.0, 1.0, 3.0]),
+        true,
+    );
     // One ulp outside in x (x < 1 is outside A), and one ulp above the plane.
-    check(&a, &t([DN1, 1.0, 1.0], [0.0, 0.0, 2.0], [0.0, 1.0, 3.0]), false);
-    check(&a, &t([1.0, 1.0, UP1], [0.0, 0.0, 2.0], [0.0, 1.0, 3.0]), false);
+    check(
+        &a,
+        &t([DN1, 1.0, 1.0], [0.0, 0.0, 2.0], [0.0, 1.0, 3.0]),
+        false,
+    );
+    check(
+        &a,
+        &t([1.0, 1.0, UP1], [0.0, 0.0, 2.0], [0.0, 1.0, 3.0]),
+        false,
+    );
 }
 
 #[test]
@@ -75,7 +118,7 @@ fn oracle_vertex_edge_and_vertex_face() {
     check(&a, &b(DN1, 1.0), false); // one ulp outside the edge
     check(&a, &b(UP1, 1.0), true); // one ulp inside: vertex-face
     check(&a, &b(1.0, UP1), false); // one ulp above
-    // Vertex on the hypotenuse x + y = 6 at (3,3); next_up(3) is outside.
+                                    // Vertex on the hypotenuse x + y = 6 at (3,3); next_up(3) is outside.
     let c = |x: f64| t([x, 3.0, 1.0], [x, 3.0, 2.0], [x + 1.0, 4.0, 3.0]);
     check(&a, &c(3.0), true);
     check(&a, &c(3.0f64.next_up()), false);
@@ -106,11 +149,23 @@ fn oracle_edge_edge() {
 fn oracle_shared_edge_and_vertex() {
     let a = a_z1();
     // Shared edge, B leaving the plane.
-    check(&a, &t([1.0, 1.0, 1.0], [5.0, 1.0, 1.0], [3.0, 0.0, 4.0]), true);
+    check(
+        &a,
+        &t([1.0, 1.0, 1.0], [5.0, 1.0, 1.0], [3.0, 0.0, 4.0]),
+        true,
+    );
     // Shared edge, coplanar on the other side.
-    check(&a, &t([1.0, 1.0, 1.0], [5.0, 1.0, 1.0], [3.0, -2.0, 1.0]), true);
+    check(
+        &a,
+        &t([1.0, 1.0, 1.0], [5.0, 1.0, 1.0], [3.0, -2.0, 1.0]),
+        true,
+    );
     // Coplanar, parallel edge one ulp away.
-    check(&a, &t([1.0, DN1, 1.0], [5.0, DN1, 1.0], [3.0, -2.0, 1.0]), false);
+    check(
+        &a,
+        &t([1.0, DN1, 1.0], [5.0, DN1, 1.0], [3.0, -2.0, 1.0]),
+        false,
+    );
     // Identical triangles.
     check(&a, &a_z1(), true);
 }
@@ -118,29 +173,97 @@ fn oracle_shared_edge_and_vertex() {
 #[test]
 fn oracle_coplanar() {
     let a = a_z1();
-    check(&a, &t([2.0, 2.0, 1.0], [6.0, 2.0, 1.0], [2.0, 6.0, 1.0]), true); // overlap
-    check(&a, &t([2.0, 2.0, 1.0], [3.0, 2.0, 1.0], [2.0, 3.0, 1.0]), true); // B inside A
-    check(&a, &t([0.0, 0.0, 1.0], [9.0, 0.0, 1.0], [0.0, 9.0, 1.0]), true); // A inside B
-    check(&a, &t([4.0, 4.0, 1.0], [6.0, 4.0, 1.0], [4.0, 6.0, 1.0]), false); // disjoint
-    check(&a, &t([3.0, 3.0, 1.0], [6.0, 3.0, 1.0], [3.0, 6.0, 1.0]), true); // vertex on edge
+    check(
+        &a,
+        &t([2.0, 2.0, 1.0], [6.0, 2.0, 1.0], [2.0, 6.0, 1.0]),
+        true,
+    ); // overlap
+    check(
+        &a,
+        &t([2.0, 2.0, 1.0], [3.0, 2.0, 1.0], [2.0, 3.0, 1.0]),
+        true,
+    ); // B inside A
+    check(
+        &a,
+        &t([0.0, 0.0, 1.0], [9.0, 0.0, 1.0], [0.0, 9.0, 1.0]),
+        true,
+    ); // A inside B
+    check(
+        &a,
+        &t([4.0, 4.0, 1.0], [6.0, 4.0, 1.0], [4.0, 6.0, 1.0]),
+        false,
+    ); // disjoint
+    check(
+        &a,
+        &t([3.0, 3.0, 1.0], [6.0, 3.0, 1.0], [3.0, 6.0, 1.0]),
+        true,
+    ); // vertex on edge
     let n3 = 3.0f64.next_up();
-    check(&a, &t([n3, 3.0, 1.0], [6.0, 3.0, 1.0], [n3, 6.0, 1.0]), false);
+    check(
+        &a,
+        &t([n3, 3.0, 1.0], [6.0, 3.0, 1.0], [n3, 6.0, 1.0]),
+        false,
+    );
     // Vertex-vertex coplanar.
-    check(&a, &t([5.0, 1.0, 1.0], [7.0, 0.0, 1.0], [7.0, 2.0, 1.0]), true);
-    check(&a, &t([5.0f64.next_up(), 1.0, 1.0], [7.0, 0.0, 1.0], [7.0, 2.0, 1.0]), false);
+    check(
+        &a,
+        &t([5.0, 1.0, 1.0], [7.0, 0.0, 1.0], [7.0, 2.0, 1.0]),
+        true,
+    );
+    check(
+        &a,
+        &t(
+            [5.0f64.next_up(), 1.0, 1.0],
+            [7.0, 0.0, 1.0],
+            [7.0, 2.0, 1.0],
+        ),
+        false,
+    );
     // Star of David: no vertex inside the other, edges cross.
     let s = t([0.0, 2.0, 1.0], [4.0, 2.0, 1.0], [2.0, -1.0, 1.0]);
-    check(&s, &t([0.0, 0.0, 1.0], [4.0, 0.0, 1.0], [2.0, 3.0, 1.0]), true);
+    check(
+        &s,
+        &t([0.0, 0.0, 1.0], [4.0, 0.0, 1.0], [2.0, 3.0, 1.0]),
+        true,
+    );
     // Tilted common plane x + y + z = 1.
     let tl = t([1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]);
-    check(&tl, &t([0.25, 0.25, 0.5], [1.0, 1.0, -1.0], [2.0, 0.0, -1.0]), true); // vertex inside
-    check(&tl, &t([1.0, 0.0, 0.0], [1.0, 1.0, -1.0], [2.0, 0.0, -1.0]), true); // shared vertex
-    check(&tl, &t([0.5, 0.5, 0.0], [1.0, 1.0, -1.0], [2.0, 0.0, -1.0]), true); // on edge
-    check(&tl, &t([2.0, 0.0, -1.0], [1.0, 1.0, -1.0], [1.0, 2.0, -2.0]), false); // disjoint
-    // Same plane in the vertical orientation x = 2 (normal along x).
+    check(
+        &tl,
+        &t([0.25, 0.25, 0.5], [1.0, 1.0, -1.0], [2.0, 0.0, -1.0]),
+        true,
+    ); // vertex inside
+    check(
+        &tl,
+        &t([1.0, 0.0, 0.0], [1.0, 1.0, -1.0], [2.0, 0.0, -1.0]),
+        true,
+    ); // shared vertex
+    check(
+        &tl,
+        &t([0.5, 0.5, 0.0], [1.0, 1.0, -1.0], [2.0, 0.0, -1.0]),
+        true,
+    ); // on edge
+    check(
+        &tl,
+        &t([2.0, 0.0, -1.0], [1.0, 1.0, -1.0], [1.0, 2.0, -2.0]),
+        false,
+    ); // disjoint
+       // Same plane in the vertical orientation x = 2 (normal along x).
     let v = t([2.0, 0.0, 0.0], [2.0, 4.0, 0.0], [2.0, 0.0, 4.0]);
-    check(&v, &t([2.0, 2.0, 2.0], [2.0, 5.0, 5.0], [2.0, 2.0, 6.0]), true);
-    check(&v, &t([2.0, 2.0f64.next_up(), 2.0], [2.0, 5.0, 5.0], [2.0, 2.0, 6.0]), false);
+    check(
+        &v,
+        &t([2.0, 2.0, 2.0], [2.0, 5.0, 5.0], [2.0, 2.0, 6.0]),
+        true,
+    );
+    check(
+        &v,
+        &t(
+            [2.0, 2.0f64.next_up(), 2.0],
+            [2.0, 5.0, 5.0],
+            [2.0, 2.0, 6.0],
+        ),
+        false,
+    );
 }
 
 #[test]
@@ -157,27 +280,91 @@ fn oracle_near_miss_tilted_plane() {
 fn oracle_degenerate_segment_triangle() {
     let a = a_z1();
     // Vertical collinear "triangles" (middle vertex last) through (2,2).
-    check(&a, &t([2.0, 2.0, 0.0], [2.0, 2.0, 2.0], [2.0, 2.0, 1.5]), true);
-    check(&a, &t([2.0, 2.0, 1.0], [2.0, 2.0, 3.0], [2.0, 2.0, 2.0]), true);
-    check(&a, &t([2.0, 2.0, UP1], [2.0, 2.0, 3.0], [2.0, 2.0, 2.0]), false);
+    check(
+        &a,
+        &t([2.0, 2.0, 0.0], [2.0, 2.0, 2.0], [2.0, 2.0, 1.5]),
+        true,
+    );
+    check(
+        &a,
+        &t([2.0, 2.0, 1.0], [2.0, 2.0, 3.0], [2.0, 2.0, 2.0]),
+        true,
+    );
+    check(
+        &a,
+        &t([2.0, 2.0, UP1], [2.0, 2.0, 3.0], [2.0, 2.0, 2.0]),
+        false,
+    );
     // The middle-vertex choice matters: segment from z=0.5 to z=2 with extra point at 1.5.
-    check(&a, &t([2.0, 2.0, 1.5], [2.0, 2.0, 0.5], [2.0, 2.0, 2.0]), true);
+    check(
+        &a,
+        &t([2.0, 2.0, 1.5], [2.0, 2.0, 0.5], [2.0, 2.0, 2.0]),
+        true,
+    );
     // Repeated vertex.
-    check(&a, &t([2.0, 2.0, 0.0], [2.0, 2.0, 0.0], [2.0, 2.0, 1.0]), true);
-    check(&a, &t([2.0, 2.0, 0.0], [2.0, 2.0, 0.0], [2.0, 2.0, DN1]), false);
+    check(
+        &a,
+        &t([2.0, 2.0, 0.0], [2.0, 2.0, 0.0], [2.0, 2.0, 1.0]),
+        true,
+    );
+    check(
+        &a,
+        &t([2.0, 2.0, 0.0], [2.0, 2.0, 0.0], [2.0, 2.0, DN1]),
+        false,
+    );
     // Coplanar segment crossing A.
-    check(&a, &t([0.0, 3.0, 1.0], [6.0, 3.0, 1.0], [3.0, 3.0, 1.0]), true);
+    check(
+        &a,
+        &t([0.0, 3.0, 1.0], [6.0, 3.0, 1.0], [3.0, 3.0, 1.0]),
+        true,
+    );
     // Coplanar segment outside A (y = 4: A spans x ∈ [1, 2]).
-    check(&a, &t([4.0, 4.0, 1.0], [6.0, 4.0, 1.0], [5.0, 4.0, 1.0]), false);
+    check(
+        &a,
+        &t([4.0, 4.0, 1.0], [6.0, 4.0, 1.0], [5.0, 4.0, 1.0]),
+        false,
+    );
     // Coplanar segment touching A's vertex (1,5) from above.
-    check(&a, &t([1.0, 5.0, 1.0], [1.0, 7.0, 1.0], [1.0, 6.0, 1.0]), true);
-    check(&a, &t([1.0, 5.0f64.next_up(), 1.0], [1.0, 7.0, 1.0], [1.0, 6.0, 1.0]), false);
+    check(
+        &a,
+        &t([1.0, 5.0, 1.0], [1.0, 7.0, 1.0], [1.0, 6.0, 1.0]),
+        true,
+    );
+    check(
+        &a,
+        &t(
+            [1.0, 5.0f64.next_up(), 1.0],
+            [1.0, 7.0, 1.0],
+            [1.0, 6.0, 1.0],
+        ),
+        false,
+    );
     // Diagonal segment touching the edge y = 1 from below at (3,1,1), in 3D.
-    check(&a, &t([3.0, 1.0, 1.0], [2.0, 0.0, 2.0], [2.5, 0.5, 1.5]), true);
-    check(&a, &t([3.0, DN1, 1.0], [2.0, 0.0, 2.0], [2.0, 0.0, 2.0]), false);
+    check(
+        &a,
+        &t([3.0, 1.0, 1.0], [2.0, 0.0, 2.0], [2.5, 0.5, 1.5]),
+        true,
+    );
+    check(
+        &a,
+        &t([3.0, DN1, 1.0], [2.0, 0.0, 2.0], [2.0, 0.0, 2.0]),
+        false,
+    );
     // Segment lying along A's edge (collinear overlap).
-    check(&a, &t([4.0, 1.0, 1.0], [9.0, 1.0, 1.0], [6.0, 1.0, 1.0]), true);
-    check(&a, &t([5.0f64.next_up(), 1.0, 1.0], [9.0, 1.0, 1.0], [6.0, 1.0, 1.0]), false);
+    check(
+        &a,
+        &t([4.0, 1.0, 1.0], [9.0, 1.0, 1.0], [6.0, 1.0, 1.0]),
+        true,
+    );
+    check(
+        &a,
+        &t(
+            [5.0f64.next_up(), 1.0, 1.0],
+            [9.0, 1.0, 1.0],
+            [6.0, 1.0, 1.0],
+        ),
+        false,
+    );
 }
 
 #[test]
@@ -197,27 +384,91 @@ fn oracle_degenerate_point_triangle() {
 #[test]
 fn oracle_degenerate_segment_segment() {
     let s1 = t([0.0, 0.0, 0.0], [2.0, 0.0, 0.0], [1.0, 0.0, 0.0]);
-    check(&s1, &t([1.0, -1.0, 0.0], [1.0, 1.0, 0.0], [1.0, 0.0, 0.0]), true); // cross
+    check(
+        &s1,
+        &t([1.0, -1.0, 0.0], [1.0, 1.0, 0.0], [1.0, 0.0, 0.0]),
+        true,
+    ); // cross
     let h = 2f64.powi(-40);
     check(&s1, &t([1.0, -1.0, h], [1.0, 1.0, h], [1.0, 0.0, h]), false); // skew
-    check(&s1, &t([1.0, -1.0, -1.0], [1.0, 1.0, 1.0], [1.0, 0.5, 0.5]), true); // skew dirs, meet
-    check(&s1, &t([2.0, 0.0, 0.0], [3.0, 0.0, 0.0], [2.5, 0.0, 0.0]), true); // collinear touch
-    check(&s1, &t([2f64.next_up(), 0.0, 0.0], [3.0, 0.0, 0.0], [2.5, 0.0, 0.0]), false);
-    check(&s1, &t([0.0, 1.0, 0.0], [2.0, 1.0, 0.0], [1.0, 1.0, 0.0]), false); // parallel
-    check(&s1, &t([2.0, 0.0, 0.0], [3.0, 1.0, 0.0], [4.0, 2.0, 0.0]), true); // end-to-end, bent
-    check(&s1, &t([2.0, 1.0, 0.0], [3.0, 1.0, 0.0], [3.0, 1.0, 0.0]), false); // coplanar miss
-    // T-junction: endpoint of S2 on the interior of S1.
-    check(&s1, &t([1.5, 0.0, 0.0], [1.5, 0.0, 3.0], [1.5, 0.0, 2.0]), true);
-    check(&s1, &t([1.5, 0.0, h], [1.5, 0.0, 3.0], [1.5, 0.0, 2.0]), false);
+    check(
+        &s1,
+        &t([1.0, -1.0, -1.0], [1.0, 1.0, 1.0], [1.0, 0.5, 0.5]),
+        true,
+    ); // skew dirs, meet
+    check(
+        &s1,
+        &t([2.0, 0.0, 0.0], [3.0, 0.0, 0.0], [2.5, 0.0, 0.0]),
+        true,
+    ); // collinear touch
+    check(
+        &s1,
+        &t([2f64.next_up(), 0.0, 0.0], [3.0, 0.0, 0.0], [2.5, 0.0, 0.0]),
+        false,
+    );
+    check(
+        &s1,
+        &t([0.0, 1.0, 0.0], [2.0, 1.0, 0.0], [1.0, 1.0, 0.0]),
+        false,
+    ); // parallel
+    check(
+        &s1,
+        &t([2.0, 0.0, 0.0], [3.0, 1.0, 0.0], [4.0, 2.0, 0.0]),
+        true,
+    ); // end-to-end, bent
+    check(
+        &s1,
+        &t([2.0, 1.0, 0.0], [3.0, 1.0, 0.0], [3.0, 1.0, 0.0]),
+        false,
+    ); // coplanar miss
+       // T-junction: endpoint of S2 on the interior of S1.
+    check(
+        &s1,
+        &t([1.5, 0.0, 0.0], [1.5, 0.0, 3.0], [1.5, 0.0, 2.0]),
+        true,
+    );
+    check(
+        &s1,
+        &t([1.5, 0.0, h], [1.5, 0.0, 3.0], [1.5, 0.0, 2.0]),
+        false,
+    );
     // Collinear along the (1,1,1) diagonal (no axis-aligned direction).
     let d = t([0.0, 0.0, 0.0], [1.0, 1.0, 1.0], [2.0, 2.0, 2.0]);
-    check(&d, &t([2.0, 2.0, 2.0], [3.0, 3.0, 3.0], [4.0, 4.0, 4.0]), true);
-    check(&d, &t([3.0, 3.0, 3.0], [4.0, 4.0, 4.0], [5.0, 5.0, 5.0]), false);
-    check(&d, &t([0.5, 0.5, 0.5], [4.0, 4.0, 4.0], [5.0, 5.0, 5.0]), true);
+    check(
+        &d,
+        &t([2.0, 2.0, 2.0], [3.0, 3.0, 3.0], [4.0, 4.0, 4.0]),
+        true,
+    );
+    check(
+        &d,
+        &t([3.0, 3.0, 3.0], [4.0, 4.0, 4.0], [5.0, 5.0, 5.0]),
+        false,
+    );
+    check(
+        &d,
+        &t([0.5, 0.5, 0.5], [4.0, 4.0, 4.0], [5.0, 5.0, 5.0]),
+        true,
+    );
     // Crossing in a tilted plane.
-    check(&d, &t([2.0, 0.0, 1.0], [0.0, 2.0, 1.0], [1.0, 1.0, 1.0]), true);
-    check(&d, &t([2.0, 0.0, 1.5], [0.0, 2.0, 0.5], [1.0, 1.0, 1.0]), true);
-    check(&d, &t([2.0, 0.0, 1.5], [0.0, 2.0, 0.5 + h], [1.0, 1.0, 1.0 + h / 2.0]), false);
+    check(
+        &d,
+        &t([2.0, 0.0, 1.0], [0.0, 2.0, 1.0], [1.0, 1.0, 1.0]),
+        true,
+    );
+    check(
+        &d,
+        &t([2.0, 0.0, 1.5], [0.0, 2.0, 0.5], [1.0, 1.0, 1.0]),
+        true,
+    );
+    check(
+        &d,
+        &t(
+            [2.0, 0.0, 1.5],
+            [0.0, 2.0, 0.5 + h],
+            [1.0, 1.0, 1.0 + h / 2.0],
+        ),
+        false,
+    );
 }
 
 #[test]
@@ -238,8 +489,16 @@ fn oracle_degenerate_points() {
 
 #[test]
 fn oracle_pairs_small() {
-    let a = vec![a_z1(), pt(2.0, 2.0, 1.0), t([9.0, 9.0, 9.0], [9.5, 9.0, 9.0], [9.0, 9.5, 9.0])];
-    let b = vec![pt(9.0, 9.0, 9.0), a_z1(), t([3.0, 1.0, 1.0], [3.0, 0.0, 2.0], [2.0, 0.0, 3.0])];
+    let a = vec![
+        a_z1(),
+        pt(2.0, 2.0, 1.0),
+        t([9.0, 9.0, 9.0], [9.5, 9.0, 9.0], [9.0, 9.5, 9.0]),
+    ];
+    let b = vec![
+        pt(9.0, 9.0, 9.0),
+        a_z1(),
+        t([3.0, 1.0, 1.0], [3.0, 0.0, 2.0], [2.0, 0.0, 3.0]),
+    ];
     let want = vec![(0, 1), (0, 2), (1, 1), (2, 0)];
     assert_eq!(intersecting_pairs(&a, &b), want);
     assert_eq!(brute_force_pairs(&a, &b), want);
@@ -262,7 +521,11 @@ mod sat {
         [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
     }
     fn cross(a: I3, b: I3) -> I3 {
-        [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+        [
+            a[1] * b[2] - a[2] * b[1],
+            a[2] * b[0] - a[0] * b[2],
+            a[0] * b[1] - a[1] * b[0],
+        ]
     }
     fn dot(a: I3, b: I3) -> i128 {
         a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
@@ -331,7 +594,10 @@ fn sat_reference_sanity() {
     assert!(!sat::intersect(&a, &[[1, 1, 1], [1, 1, 2], [1, 1, 3]])); // segment above
     assert!(!sat::intersect(&[[0, 0, 0]; 3], &[[1, 0, 0]; 3]));
     assert!(sat::intersect(&[[1, 0, 0]; 3], &[[1, 0, 0]; 3]));
-    assert!(!sat::intersect(&[[0, 0, 0], [2, 0, 0], [1, 0, 0]], &[[0, 1, 0], [2, 1, 0], [1, 1, 0]]));
+    assert!(!sat::intersect(
+        &[[0, 0, 0], [2, 0, 0], [1, 0, 0]],
+        &[[0, 1, 0], [2, 1, 0], [1, 1, 0]]
+    ));
 }
 
 fn small_tri(r: i128) -> impl Strategy<Value = [sat::I3; 3]> {
@@ -340,42 +606,50 @@ fn small_tri(r: i128) -> impl Strategy<Value = [sat::I3; 3]> {
 
 /// Pairs of small-integer triangles biased towards touching / coplanar / degenerate cases.
 fn touchy_pair() -> impl Strategy<Value = ([sat::I3; 3], [sat::I3; 3])> {
-    (small_tri(3), small_tri(3), 0u8..8, 0u8..6, 0u8..8).prop_map(|(a, mut b, share, flat, degen)| {
-        let mut a = a;
-        // Copy some of A's vertices into B (shared vertices / edges / identical).
-        for i in 0..3 {
-            if share & (1 << i) != 0 && (share != 7 || degen == 0) {
-                b[i] = a[(i + degen as usize) % 3];
-            }
-        }
-        // Flatten into a common plane.
-        match flat {
-            0 => {
-                for v in a.iter_mut().chain(b.iter_mut()) {
-                    v[2] = 0;
+    (small_tri(3), small_tri(3), 0u8..8, 0u8..6, 0u8..8).prop_map(
+        |(a, mut b, share, flat, degen)| {
+            let mut a = a;
+            // Copy some of A's vertices into B (shared vertices / edges / identical).
+            for i in 0..3 {
+                if share & (1 << i) != 0 && (share != 7 || degen == 0) {
+                    b[i] = a[(i + degen as usize) % 3];
                 }
             }
-            1 => {
-                for v in a.iter_mut().chain(b.iter_mut()) {
-                    v[2] = v[0] - v[1];
+            // Flatten into a common plane.
+            match flat {
+                0 => {
+                    for v in a.iter_mut().chain(b.iter_mut()) {
+                        v[2] = 0;
+                    }
                 }
-            }
-            2 => {
-                for v in b.iter_mut() {
-                    v[1] = 1;
+                1 => {
+                    for v in a.iter_mut().chain(b.iter_mut()) {
+                        v[2] = v[0] - v[1];
+                    }
                 }
+                2 => {
+                    for v in b.iter_mut() {
+                        v[1] = 1;
+                    }
+                }
+                _ => {}
             }
-            _ => {}
-        }
-        // Degenerate: collinear / point B.
-        match degen {
-            1 => b[2] = [2 * b[1][0] - b[0][0], 2 * b[1][1] - b[0][1], 2 * b[1][2] - b[0][2]],
-            2 => b[1] = b[0],
-            3 => b = [b[0]; 3],
-            _ => {}
-        }
-        (a, b)
-    })
+            // Degenerate: collinear / point B.
+            match degen {
+                1 => {
+                    b[2] = [
+                        2 * b[1][0] - b[0][0],
+                        2 * b[1][1] - b[0][1],
+                        2 * b[1][2] - b[0][2],
+                    ]
+                }
+                2 => b[1] = b[0],
+                3 => b = [b[0]; 3],
+                _ => {}
+            }
+            (a, b)
+        },
+    )
 }
 
 // ------------------------------------------------------------------ exact transforms
@@ -395,10 +669,18 @@ fn exact_map(t: &Tri, perm: [usize; 3], flips: u8, scale_exp: i32) -> Tri {
     })
 }
 
-const PERMS: [[usize; 3]; 6] = [[0, 1, 2], [0, 2, 1], [1, 0, 2], [1, 2, 0], [2, 0, 1], [2, 1, 0]];
+const PERMS: [[usize; 3]; 6] = [
+    [0, 1, 2],
+    [0, 2, 1],
+    [1, 0, 2],
+    [1, 2, 0],
+    [2, 0, 1],
+    [2, 1, 0],
+];
 
 fn float_tri() -> impl Strategy<Value = Tri> {
-    prop::array::uniform3(prop::array::uniform3(-1.0f64..1.0)).prop_map(|v| v.map(|c| p(c[0], c[1], c[2])))
+    prop::array::uniform3(prop::array::uniform3(-1.0f64..1.0))
+        .prop_map(|v| v.map(|c| p(c[0], c[1], c[2])))
 }
 
 /// Float pairs with some exact contacts built in (midpoints, shared vertices, ...).
@@ -480,30 +762,53 @@ proptest! {
 // ------------------------------------------------------------------ broadphase vs brute force
 
 fn int_soup(n: usize) -> impl Strategy<Value = Vec<Tri>> {
-    prop::collection::vec((prop::array::uniform3(-12i32..=12), prop::array::uniform3(prop::array::uniform3(-2i32..=2)), 0u8..6), n)
-        .prop_map(|v| {
-            v.into_iter()
-                .map(|(c, d, kind)| {
-                    let mut tri = d.map(|o| p((c[0] + o[0]) as f64, (c[1] + o[1]) as f64, (c[2] + o[2]) as f64));
-                    match kind {
-                        0 => tri[2] = tri[1],
-                        1 => tri[2] = tri[0] + (tri[1] - tri[0]) * 2.0,
-                        2 => {
-                            for q in tri.iter_mut() {
-                                q.z = (c[2] & !3) as f64;
-                            }
+    prop::collection::vec(
+        (
+            prop::array::uniform3(-12i32..=12),
+            prop::array::uniform3(prop::array::uniform3(-2i32..=2)),
+            0u8..6,
+        ),
+        n,
+    )
+    .prop_map(|v| {
+        v.into_iter()
+            .map(|(c, d, kind)| {
+                let mut tri = d.map(|o| {
+                    p(
+                        (c[0] + o[0]) as f64,
+                        (c[1] + o[1]) as f64,
+                        (c[2] + o[2]) as f64,
+                    )
+                });
+                match kind {
+                    0 => tri[2] = tri[1],
+                    1 => tri[2] = tri[0] + (tri[1] - tri[0]) * 2.0,
+                    2 => {
+                        for q in tri.iter_mut() {
+                            q.z = (c[2] & !3) as f64;
                         }
-                        _ => {}
                     }
-                    tri
-                })
-                .collect()
-        })
+                    _ => {}
+                }
+                tri
+            })
+            .collect()
+    })
 }
 
 fn float_soup(n: usize) -> impl Strategy<Value = Vec<Tri>> {
-    prop::collection::vec((prop::array::uniform3(-4.0f64..4.0), prop::array::uniform3(prop::array::uniform3(-0.6f64..0.6))), n)
-        .prop_map(|v| v.into_iter().map(|(c, d)| d.map(|o| p(c[0] + o[0], c[1] + o[1], c[2] + o[2]))).collect())
+    prop::collection::vec(
+        (
+            prop::array::uniform3(-4.0f64..4.0),
+            prop::array::uniform3(prop::array::uniform3(-0.6f64..0.6)),
+        ),
+        n,
+    )
+    .prop_map(|v| {
+        v.into_iter()
+            .map(|(c, d)| d.map(|o| p(c[0] + o[0], c[1] + o[1], c[2] + o[2])))
+            .collect()
+    })
 }
 
 proptest! {
@@ -533,11 +838,24 @@ fn vertex_on_plane_cases() {
         // coplanar, disjoint
         (t([5.0, 5.0, 0.0], [6.0, 5.0, 0.0], [5.0, 6.0, 0.0]), true),
         // crossing through the interior: no vertex on either plane
-        (t([0.25, 0.25, -1.0], [0.25, 0.25, 1.0], [3.0, 0.25, 1.0]), false),
+        (
+            t([0.25, 0.25, -1.0], [0.25, 0.25, 1.0], [3.0, 0.25, 1.0]),
+            false,
+        ),
         // 2^-60 above the plane: not on it
-        (t([0.25, 0.25, 2f64.powi(-60)], [0.25, 0.75, 1.0], [0.75, 0.25, 1.0]), false),
+        (
+            t(
+                [0.25, 0.25, 2f64.powi(-60)],
+                [0.25, 0.75, 1.0],
+                [0.75, 0.25, 1.0],
+            ),
+            false,
+        ),
         // the first triangle's vertex (0,0,0) lies on the second's plane x = 0
-        (t([0.0, -1.0, -1.0], [0.0, 1.0, -1.0], [0.0, 0.0, 1.0]), true),
+        (
+            t([0.0, -1.0, -1.0], [0.0, 1.0, -1.0], [0.0, 0.0, 1.0]),
+            true,
+        ),
         // a segment (collinear) off the plane: no plane of its own, and no vertex on a's
         (t([0.5, 0.5, 1.0], [0.5, 0.5, 2.0], [0.5, 0.5, 3.0]), false),
     ];

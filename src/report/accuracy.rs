@@ -6,19 +6,19 @@
 
 use crate::chip::config::{ChipConfig, DopRounding, Formats};
 use crate::chip::memory::Memory;
+use crate::chip::params::Params;
 use crate::chip::preset::Preset;
+use crate::chip::reg::{Mode, Order};
 use crate::chip::timing::{self, Clock, Folds, PeriodSource, Technology};
 use crate::cycle::{self, drive::Reader};
-use crate::chip::params::Params;
 use crate::dop::tree::Tri;
-use crate::measure::parallel_map;
 use crate::golden::memory::TriWord;
+use crate::measure::parallel_map;
 use crate::oracle;
+use crate::pose::{sweep_poses, Sweep};
 use crate::query::{exact_pairs, place, Accuracy, Chip};
 use crate::report::plot::{Cell, Figure, Panel, Series, Style, Table, PALETTE};
-use crate::pose::{sweep_poses, Sweep};
 use crate::traversal::Traversal;
-use crate::chip::reg::{Mode, Order};
 use serde::{Deserialize, Serialize};
 use std::fmt::Write;
 
@@ -67,9 +67,30 @@ impl Plan {
                 for &format in &self.formats {
                     for &dop_rounding in &self.roundings {
                         for &f in &self.folds {
-                            let params = Params { tri_interval: f.tri, dop_interval: f.dop, ..params };
-                            params.check().and_then(|_| params.check_dop_interval(k)).map_err(|e| format!("k = {k}, TRI_UNIT interval {}, DOP interval {}: {e}", f.tri, f.dop))?;
-                            out.push((preset, ChipConfig { k, format, dop_rounding, ..preset.chip() }, params));
+                            let params = Params {
+                                tri_interval: f.tri,
+                                dop_interval: f.dop,
+                                ..params
+                            };
+                            params
+                                .check()
+                                .and_then(|_| params.check_dop_interval(k))
+                                .map_err(|e| {
+                                    format!(
+                                        "k = {k}, TRI_UNIT interval {}, DOP interval {}: {e}",
+                                        f.tri, f.dop
+                                    )
+                                })?;
+                            out.push((
+                                preset,
+                                ChipConfig {
+                                    k,
+                                    format,
+                                    dop_rounding,
+                                    ..preset.chip()
+                                },
+                                params,
+                            ));
                         }
                     }
                 }
@@ -100,10 +121,21 @@ impl std::str::FromStr for Shard {
 
     /// `K/N` with 1 <= K <= N.
     fn from_str(s: &str) -> Result<Shard, String> {
-        let bad = || format!("shard {s:?}: give K/N with 1 <= K <= N (e.g. 3/8; SLURM: $SLURM_ARRAY_TASK_ID/N)");
+        let bad = || {
+            format!(
+                "shard {s:?}: give K/N with 1 <= K <= N (e.g. 3/8; SLURM: $SLURM_ARRAY_TASK_ID/N)"
+            )
+        };
         let (k, n) = s.split_once('/').ok_or_else(bad)?;
-        let (k, n) = (k.trim().parse().map_err(|_| bad())?, n.trim().parse().map_err(|_| bad())?);
-        if k == 0 || k > n { Err(bad()) } else { Ok(Shard { k, n }) }
+        let (k, n) = (
+            k.trim().parse().map_err(|_| bad())?,
+            n.trim().parse().map_err(|_| bad())?,
+        );
+        if k == 0 || k > n {
+            Err(bad())
+        } else {
+            Ok(Shard { k, n })
+        }
     }
 }
 
@@ -147,7 +179,12 @@ pub struct HostSums {
 impl Row {
     /// The chip this row ran: its memory preset's with the row's k, formats and DOP rounding.
     pub fn chip(&self) -> ChipConfig {
-        ChipConfig { k: self.k, format: self.format, dop_rounding: self.dop_rounding, ..self.memory.chip() }
+        ChipConfig {
+            k: self.k,
+            format: self.format,
+            dop_rounding: self.dop_rounding,
+            ..self.memory.chip()
+        }
     }
 
     fn per_query(&self, x: f64) -> f64 {
@@ -215,7 +252,11 @@ impl Sums {
     /// Triangle tests whose pair does not intersect: the DOP hierarchy's false positives at
     /// the leaves (the chip's pairs equal the exact ones, so this is tri_tests - pairs).
     pub fn dop_false_positive_rate(&self) -> f64 {
-        ratio(self.tri_tests.saturating_sub(self.exact_pairs - self.misses), self.tri_tests)
+        ratio(
+            self.tri_tests
+                .saturating_sub(self.exact_pairs - self.misses),
+            self.tri_tests,
+        )
     }
 
     pub fn uncertain_rate(&self) -> f64 {
@@ -260,18 +301,44 @@ fn ratio(a: u64, b: u64) -> f64 {
 
 /// Runs `plan`'s configurations on its `index`-th mesh against a copy of itself, the poses of
 /// `shard` on every core; `progress` is called once per pose run.
-pub fn study(plan: &Plan, index: usize, tris: &[Tri], shard: Shard, progress: impl Fn() + Sync) -> Result<Vec<Row>, String> {
+pub fn study(
+    plan: &Plan,
+    index: usize,
+    tris: &[Tri],
+    shard: Shard,
+    progress: impl Fn() + Sync,
+) -> Result<Vec<Row>, String> {
     let mesh = &plan.meshes[index];
     let all = sweep_poses(&plan.sweep)?;
-    let poses: Vec<_> = all.iter().enumerate().filter(|(i, _)| shard.has(index * all.len() + i)).map(|(_, p)| p.clone()).collect();
+    let poses: Vec<_> = all
+        .iter()
+        .enumerate()
+        .filter(|(i, _)| shard.has(index * all.len() + i))
+        .map(|(_, p)| p.clone())
+        .collect();
     let configs = plan.configs()?;
     let mut rows = vec![];
     let mut chips: Vec<Chip> = vec![];
     let mut chip_of = vec![];
     for &(preset, cfg, params) in &configs {
-        let folds = Folds { tri: params.tri_interval, dop: params.dop_interval };
+        let folds = Folds {
+            tri: params.tri_interval,
+            dop: params.dop_interval,
+        };
         let clock = Clock::of(plan.technology, &cfg, folds, preset)?;
-        rows.push(Row { mesh: mesh.clone(), memory: preset, k: cfg.k, format: cfg.format, dop_rounding: cfg.dop_rounding, folds, period_ns: clock.period_ns, period_source: clock.source, clock: clock.source(), sums: Sums::default(), host: HostSums::default() });
+        rows.push(Row {
+            mesh: mesh.clone(),
+            memory: preset,
+            k: cfg.k,
+            format: cfg.format,
+            dop_rounding: cfg.dop_rounding,
+            folds,
+            period_ns: clock.period_ns,
+            period_source: clock.source,
+            clock: clock.source(),
+            sums: Sums::default(),
+            host: HostSums::default(),
+        });
         // one image per distinct chip (the presets share some)
         chip_of.push(match chips.iter().position(|c| c.cfg == cfg) {
             Some(i) => i,
@@ -287,16 +354,40 @@ pub fn study(plan: &Plan, index: usize, tris: &[Tri], shard: Shard, progress: im
     let per_pose = parallel_map(&poses, |_, sp| {
         let exact = exact_pairs(tris, tris, &sp.pose);
         let placed = place(tris, &sp.pose);
-        let golden: Vec<_> = chips.iter().map(|chip| chip.query(&sp.pose, Mode::All, Traversal::Lifo)).collect();
+        let golden: Vec<_> = chips
+            .iter()
+            .map(|chip| chip.query(&sp.pose, Mode::All, Traversal::Lifo))
+            .collect();
         let rows = configs.iter().zip(&chip_of).map(|(&(_, _, params), &c)| {
             let (chip, r) = (&chips[c], &golden[c]);
             let acc = Accuracy::of(Mode::All, &r.pairs, &exact);
-            let (trace, _) = cycle::run_query(chip, &chip.setup(&sp.pose), Order::Lifo, Mode::All, params, Reader::default(), cycle::MAX_CYCLES, Default::default())?;
-            trace.check(Mode::All, r).map_err(|e| format!("{mesh} k={} {} at {}: the cycle model disagrees with the golden model: {e}", chip.cfg.k, chip.cfg.format, sp.pose.text()))?;
+            let (trace, _) = cycle::run_query(
+                chip,
+                &chip.setup(&sp.pose),
+                Order::Lifo,
+                Mode::All,
+                params,
+                Reader::default(),
+                cycle::MAX_CYCLES,
+                Default::default(),
+            )?;
+            trace.check(Mode::All, r).map_err(|e| {
+                format!(
+                    "{mesh} k={} {} at {}: the cycle model disagrees with the golden model: {e}",
+                    chip.cfg.k,
+                    chip.cfg.format,
+                    sp.pose.text()
+                )
+            })?;
             let mut causes = [0u64; 3];
             for &(a, b) in &r.uncertain {
                 let (a, b) = (a as usize, b as usize);
-                causes[Cause::of(&chip.a.tri(a as u32), &chip.b.tri(b as u32), &tris[a], &placed[b]) as usize] += 1;
+                causes[Cause::of(
+                    &chip.a.tri(a as u32),
+                    &chip.b.tri(b as u32),
+                    &tris[a],
+                    &placed[b],
+                ) as usize] += 1;
             }
             let h = chip.host_time(&sp.pose, &r.uncertain);
             Ok((
@@ -314,7 +405,10 @@ pub fn study(plan: &Plan, index: usize, tris: &[Tri], shard: Shard, progress: im
                     extras: acc.extras,
                     cycles: trace.cycles,
                 },
-                HostSums { setup_us: h.setup_us, settle_us: h.settle_us },
+                HostSums {
+                    setup_us: h.setup_us,
+                    settle_us: h.settle_us,
+                },
             ))
         });
         let rows = rows.collect::<Result<Vec<_>, String>>();
@@ -331,7 +425,12 @@ pub fn study(plan: &Plan, index: usize, tris: &[Tri], shard: Shard, progress: im
 }
 
 /// Runs `plan` on `shard`, each mesh's triangles from `load`.
-pub fn run(plan: &Plan, load: impl Fn(&str) -> Result<Vec<Tri>, String>, shard: Shard, progress: impl Fn() + Sync) -> Result<Vec<Row>, String> {
+pub fn run(
+    plan: &Plan,
+    load: impl Fn(&str) -> Result<Vec<Tri>, String>,
+    shard: Shard,
+    progress: impl Fn() + Sync,
+) -> Result<Vec<Row>, String> {
     let mut rows = vec![];
     for (i, m) in plan.meshes.iter().enumerate() {
         rows.extend(study(plan, i, &load(m)?, shard, &progress)?);
@@ -346,20 +445,37 @@ pub fn merge(files: Vec<ShardFile>) -> Result<(Plan, Vec<Row>), String> {
     let (plan, n) = (first.plan.clone(), first.shard.n);
     // the shards seen, as many as files (N comes from a file: nothing sized by it)
     let mut seen = std::collections::BTreeSet::new();
-    let mut rows: Vec<Row> = first.rows.iter().map(|r| Row { sums: Sums::default(), host: HostSums::default(), ..r.clone() }).collect();
+    let mut rows: Vec<Row> = first
+        .rows
+        .iter()
+        .map(|r| Row {
+            sums: Sums::default(),
+            host: HostSums::default(),
+            ..r.clone()
+        })
+        .collect();
     for f in &files {
         if f.plan != plan || f.shard.n != n {
             return Err(format!("--merge: shard {}/{} is of another study (its plan or N differs from shard {}/{}'s)", f.shard.k, f.shard.n, first.shard.k, n));
         }
         if f.shard.k == 0 || f.shard.k > n {
-            return Err(format!("--merge: shard {}/{n} is not one of 1..={n}", f.shard.k));
+            return Err(format!(
+                "--merge: shard {}/{n} is not one of 1..={n}",
+                f.shard.k
+            ));
         }
         if !seen.insert(f.shard.k) {
             return Err(format!("--merge: shard {}/{n} given twice", f.shard.k));
         }
-        let same = |a: &Row, b: &Row| (&a.mesh, a.memory, a.k, a.format, a.dop_rounding, a.folds) == (&b.mesh, b.memory, b.k, b.format, b.dop_rounding, b.folds);
+        let same = |a: &Row, b: &Row| {
+            (&a.mesh, a.memory, a.k, a.format, a.dop_rounding, a.folds)
+                == (&b.mesh, b.memory, b.k, b.format, b.dop_rounding, b.folds)
+        };
         if f.rows.len() != rows.len() || !f.rows.iter().zip(&rows).all(|(a, b)| same(a, b)) {
-            return Err(format!("--merge: shard {}/{n}'s rows are not the study's configurations", f.shard.k));
+            return Err(format!(
+                "--merge: shard {}/{n}'s rows are not the study's configurations",
+                f.shard.k
+            ));
         }
         for (row, r) in rows.iter_mut().zip(&f.rows) {
             row.sums += r.sums;
@@ -367,7 +483,9 @@ pub fn merge(files: Vec<ShardFile>) -> Result<(Plan, Vec<Row>), String> {
         }
     }
     if seen.len() < n {
-        let missing = (1..=n).find(|k| !seen.contains(k)).expect("fewer seen than N");
+        let missing = (1..=n)
+            .find(|k| !seen.contains(k))
+            .expect("fewer seen than N");
         return Err(format!("--merge: shard {missing}/{n} is missing (a study of {n} shards needs all {n} files; {} given)", files.len()));
     }
     Ok((plan, rows))
@@ -378,17 +496,47 @@ pub fn merge(files: Vec<ShardFile>) -> Result<(Plan, Vec<Row>), String> {
 /// query: the chip's at its period, the host's measured, end to end; um^2 where the timing
 /// table measured both units.
 pub fn table(plan: &Plan, rows: &[Row], area: Option<&Area>) -> Result<String, String> {
-    let mut columns = vec!["mesh", "memory", "k", "format", "DOP rounding", "pair interval: TRI_UNIT / DOP unit", "queries", "exact pairs / query", "DOP tests / query", "triangle tests / query", "DOP false positives", "uncertain", "uncertain: degenerate / on plane / bound", "misses", "extra pairs", "memory KiB / query", "cycles / query", "period ns (how)", "chip us", "host us (measured)", "end to end us", "um^2: DOP unit + TRI_UNIT"];
+    let mut columns = vec![
+        "mesh",
+        "memory",
+        "k",
+        "format",
+        "DOP rounding",
+        "pair interval: TRI_UNIT / DOP unit",
+        "queries",
+        "exact pairs / query",
+        "DOP tests / query",
+        "triangle tests / query",
+        "DOP false positives",
+        "uncertain",
+        "uncertain: degenerate / on plane / bound",
+        "misses",
+        "extra pairs",
+        "memory KiB / query",
+        "cycles / query",
+        "period ns (how)",
+        "chip us",
+        "host us (measured)",
+        "end to end us",
+        "um^2: DOP unit + TRI_UNIT",
+    ];
     if area.is_some() {
         columns.push("cells: DOP unit + TRI_UNIT");
     }
     let timing = timing::Table::of(plan.technology)?;
-    let mut out = format!("| {} |\n|{}\n", columns.join(" | "), "---|".repeat(columns.len()));
+    let mut out = format!(
+        "| {} |\n|{}\n",
+        columns.join(" | "),
+        "---|".repeat(columns.len())
+    );
     for row in rows {
         let r = &row.sums;
         let q = r.queries.max(1) as f64;
         let cfg = row.chip();
-        let um2 = timing.as_ref().and_then(|t| t.datapath_area_um2(&cfg, row.folds)).map_or("-".into(), |a| format!("{a:.0}"));
+        let um2 = timing
+            .as_ref()
+            .and_then(|t| t.datapath_area_um2(&cfg, row.folds))
+            .map_or("-".into(), |a| format!("{a:.0}"));
         let _ = write!(
             out,
             "| {} | {} | {} | {} | {} | {} / {} | {} | {:.1} | {:.0} | {:.1} | {:.1}% | {:.2}% | {} / {} / {} | {} | {} | {:.1} | {:.0} | {:.3} {} | {:.1} | {:.1} | {:.1} | {um2} |",
@@ -419,7 +567,11 @@ pub fn table(plan: &Plan, rows: &[Row], area: Option<&Area>) -> Result<String, S
             row.end_to_end_us(),
         );
         if let Some(a) = area {
-            let _ = write!(out, " {} |", a.of(&cfg, row.folds).map_or("-".into(), |c| c.to_string()));
+            let _ = write!(
+                out,
+                " {} |",
+                a.of(&cfg, row.folds).map_or("-".into(), |c| c.to_string())
+            );
         }
         out.push('\n');
     }
@@ -430,8 +582,15 @@ pub fn table(plan: &Plan, rows: &[Row], area: Option<&Area>) -> Result<String, S
 pub fn clocks(rows: &[Row]) -> String {
     let mut seen: Vec<String> = vec![];
     for r in rows {
-        let fold = if r.folds == Folds::NONE { String::new() } else { format!(", pair intervals {} / {}", r.folds.tri, r.folds.dop) };
-        let line = format!("k = {}, {}, {} DOP rounding{fold}: {}", r.k, r.format, r.dop_rounding, r.clock);
+        let fold = if r.folds == Folds::NONE {
+            String::new()
+        } else {
+            format!(", pair intervals {} / {}", r.folds.tri, r.folds.dop)
+        };
+        let line = format!(
+            "k = {}, {}, {} DOP rounding{fold}: {}",
+            r.k, r.format, r.dop_rounding, r.clock
+        );
         if !seen.contains(&line) {
             seen.push(line);
         }
@@ -454,10 +613,17 @@ struct AreaRow {
 impl Area {
     pub fn load(path: &std::path::Path) -> Result<Area, String> {
         let what = "write it with scripts/area-study.sh";
-        let mut r = csv::Reader::from_path(path).map_err(|e| format!("{}: {e} ({what})", path.display()))?;
+        let mut r = csv::Reader::from_path(path)
+            .map_err(|e| format!("{}: {e} ({what})", path.display()))?;
         let mut cells = std::collections::HashMap::new();
         for (i, row) in r.deserialize::<AreaRow>().enumerate() {
-            let row = row.map_err(|e| format!("{}:{}: {e}: each row is `unit,cells` ({what})", path.display(), i + 2))?;
+            let row = row.map_err(|e| {
+                format!(
+                    "{}:{}: {e}: each row is `unit,cells` ({what})",
+                    path.display(),
+                    i + 2
+                )
+            })?;
             cells.insert(row.unit, row.cells);
         }
         Ok(Area { cells })
@@ -468,27 +634,50 @@ impl Area {
     /// ([`timing::units`]' names). D_CNTR, the queue and the memory port are not counted.
     /// `None` where the file has no row for one of them (e8m10: the RTL is not built).
     pub fn of(&self, cfg: &ChipConfig, folds: Folds) -> Option<u64> {
-        Some(self.cells.get(&timing::dop_unit(cfg, folds.dop))? + self.cells.get(&timing::tri_unit(cfg, folds.tri))?)
+        Some(
+            self.cells.get(&timing::dop_unit(cfg, folds.dop))?
+                + self.cells.get(&timing::tri_unit(cfg, folds.tri))?,
+        )
     }
 }
 
 /// Which points are on the Pareto front: present (`Some`), and no other present point is at
 /// least as small in both coordinates and different.
 fn pareto(points: &[Option<(f64, f64)>]) -> Vec<bool> {
-    let beaten = |(x, y): (f64, f64)| points.iter().flatten().any(|&(qx, qy)| qx <= x && qy <= y && (qx, qy) != (x, y));
-    points.iter().map(|p| p.is_some_and(|p| !beaten(p))).collect()
+    let beaten = |(x, y): (f64, f64)| {
+        points
+            .iter()
+            .flatten()
+            .any(|&(qx, qy)| qx <= x && qy <= y && (qx, qy) != (x, y))
+    };
+    points
+        .iter()
+        .map(|p| p.is_some_and(|p| !beaten(p)))
+        .collect()
 }
 
 /// A point's label for its folds: nothing unfolded, else `, ii T/D` (TRI_UNIT's and the DOP
 /// unit's pair intervals).
 fn fold_label(f: Folds) -> String {
-    if f == Folds::NONE { String::new() } else { format!(", ii {}/{}", f.tri, f.dop) }
+    if f == Folds::NONE {
+        String::new()
+    } else {
+        format!(", ii {}/{}", f.tri, f.dop)
+    }
 }
 
 /// One panel of end-to-end time per query against `x` for the configurations `mine` (one
 /// memory system), a point per configuration that has one, grouped by format and rounding,
 /// with the Pareto front (`on`) as a dashed line.
-fn front_panel(title: String, x_label: &'static str, log_x: bool, cfgs: &[Row], mine: &[usize], x: &[Option<f64>], on: &[bool]) -> Panel {
+fn front_panel(
+    title: String,
+    x_label: &'static str,
+    log_x: bool,
+    cfgs: &[Row],
+    mine: &[usize],
+    x: &[Option<f64>],
+    on: &[bool],
+) -> Panel {
     let mut groups: Vec<(Formats, DopRounding)> = vec![];
     for &i in mine {
         if !groups.contains(&(cfgs[i].format, cfgs[i].dop_rounding)) {
@@ -498,10 +687,20 @@ fn front_panel(title: String, x_label: &'static str, log_x: bool, cfgs: &[Row], 
     let point = |i: usize| x[i].map(|x| (x, cfgs[i].end_to_end_us()));
     // a fold study has tens of points per group: only the front's are named
     let folded = mine.iter().any(|&i| cfgs[i].folds != Folds::NONE);
-    let label = |i: usize| if folded && !on[i] { String::new() } else { format!("  k={}{}", cfgs[i].k, fold_label(cfgs[i].folds)) };
+    let label = |i: usize| {
+        if folded && !on[i] {
+            String::new()
+        } else {
+            format!("  k={}{}", cfgs[i].k, fold_label(cfgs[i].folds))
+        }
+    };
     let mut series = vec![];
     for (gi, &(f, r)) in groups.iter().enumerate() {
-        let these: Vec<usize> = mine.iter().copied().filter(|&i| (cfgs[i].format, cfgs[i].dop_rounding) == (f, r) && x[i].is_some()).collect();
+        let these: Vec<usize> = mine
+            .iter()
+            .copied()
+            .filter(|&i| (cfgs[i].format, cfgs[i].dop_rounding) == (f, r) && x[i].is_some())
+            .collect();
         if !these.is_empty() {
             series.push(Series {
                 label: format!("{f}, {r} DOP rounding"),
@@ -512,10 +711,28 @@ fn front_panel(title: String, x_label: &'static str, log_x: bool, cfgs: &[Row], 
             });
         }
     }
-    let mut front: Vec<(f64, f64)> = mine.iter().copied().filter(|&i| on[i]).filter_map(point).collect();
+    let mut front: Vec<(f64, f64)> = mine
+        .iter()
+        .copied()
+        .filter(|&i| on[i])
+        .filter_map(point)
+        .collect();
     front.sort_by(|a, b| a.0.total_cmp(&b.0));
-    series.push(Series { label: "Pareto front (no misses)".into(), color: PALETTE.len() - 1, style: Style::Dashed, points: front, labels: vec![] });
-    Panel { title, x_label, y_label: "end to end per query, us", log_x, log_y: false, series }
+    series.push(Series {
+        label: "Pareto front (no misses)".into(),
+        color: PALETTE.len() - 1,
+        style: Style::Dashed,
+        points: front,
+        labels: vec![],
+    });
+    Panel {
+        title,
+        x_label,
+        y_label: "end to end per query, us",
+        log_x,
+        log_y: false,
+        series,
+    }
 }
 
 /// The configurations over all meshes, one point each: the end-to-end time per query (the
@@ -530,8 +747,24 @@ pub fn figures(rows: &[Row], area: Option<&Area>) -> Vec<Figure> {
     let mut cfgs: Vec<Row> = vec![];
     for r in rows {
         match cfgs.iter_mut().find(|c| key(c) == key(r)) {
-            Some(c) => (c.sums, c.host) = ({ let mut s = c.sums; s += r.sums; s }, { let mut h = c.host; h += r.host; h }),
-            None => cfgs.push(Row { mesh: String::new(), ..r.clone() }),
+            Some(c) => {
+                (c.sums, c.host) = (
+                    {
+                        let mut s = c.sums;
+                        s += r.sums;
+                        s
+                    },
+                    {
+                        let mut h = c.host;
+                        h += r.host;
+                        h
+                    },
+                )
+            }
+            None => cfgs.push(Row {
+                mesh: String::new(),
+                ..r.clone()
+            }),
         }
     }
     let presets: Vec<Preset> = cfgs.iter().map(|c| c.memory).fold(vec![], |mut v, p| {
@@ -540,14 +773,27 @@ pub fn figures(rows: &[Row], area: Option<&Area>) -> Vec<Figure> {
         }
         v
     });
-    let uncertain: Vec<Option<f64>> = cfgs.iter().map(|c| Some(100.0 * c.sums.uncertain_rate())).collect();
-    let cells: Vec<Option<u64>> = cfgs.iter().map(|c| area.and_then(|a| a.of(&c.chip(), c.folds))).collect();
+    let uncertain: Vec<Option<f64>> = cfgs
+        .iter()
+        .map(|c| Some(100.0 * c.sums.uncertain_rate()))
+        .collect();
+    let cells: Vec<Option<u64>> = cfgs
+        .iter()
+        .map(|c| area.and_then(|a| a.of(&c.chip(), c.folds)))
+        .collect();
     let cells_x: Vec<Option<f64>> = cells.iter().map(|c| c.map(|c| c as f64 / 1e6)).collect();
     // the fronts, each among one memory system's configurations
     let front = |x: &[Option<f64>]| -> Vec<bool> {
         let mut on = vec![false; cfgs.len()];
         for &p in &presets {
-            let pts: Vec<Option<(f64, f64)>> = cfgs.iter().zip(x).map(|(c, x)| x.filter(|_| c.sums.misses == 0 && c.memory == p).map(|x| (x, c.end_to_end_us()))).collect();
+            let pts: Vec<Option<(f64, f64)>> = cfgs
+                .iter()
+                .zip(x)
+                .map(|(c, x)| {
+                    x.filter(|_| c.sums.misses == 0 && c.memory == p)
+                        .map(|x| (x, c.end_to_end_us()))
+                })
+                .collect();
             for (o, f) in on.iter_mut().zip(pareto(&pts)) {
                 *o |= f;
             }
@@ -556,7 +802,25 @@ pub fn figures(rows: &[Row], area: Option<&Area>) -> Vec<Figure> {
     };
     let (on_uncertain, on_area) = (front(&uncertain), front(&cells_x));
     let mut table = Table {
-        columns: vec!["memory", "k", "format", "dop_rounding", "queries", "uncertain_share", "cycles_per_query", "period_ns", "period_source", "chip_us", "host_us", "end_to_end_us", "memory_kib_per_query", "misses", "pareto", "cells", "pareto_area"],
+        columns: vec![
+            "memory",
+            "k",
+            "format",
+            "dop_rounding",
+            "queries",
+            "uncertain_share",
+            "cycles_per_query",
+            "period_ns",
+            "period_source",
+            "chip_us",
+            "host_us",
+            "end_to_end_us",
+            "memory_kib_per_query",
+            "misses",
+            "pareto",
+            "cells",
+            "pareto_area",
+        ],
         rows: vec![],
     };
     for (i, c) in cfgs.iter().enumerate() {
@@ -578,24 +842,55 @@ pub fn figures(rows: &[Row], area: Option<&Area>) -> Vec<Figure> {
             Cell::Int(c.sums.misses),
             Cell::Text(on_uncertain[i].to_string()),
             cells[i].map_or(Cell::None, Cell::Int),
-            if cells[i].is_some() { Cell::Text(on_area[i].to_string()) } else { Cell::None },
+            if cells[i].is_some() {
+                Cell::Text(on_area[i].to_string())
+            } else {
+                Cell::None
+            },
         ]);
     }
-    let meshes: Vec<&str> = rows.iter().map(|r| r.mesh.as_str()).fold(vec![], |mut v, m| {
-        if !v.contains(&m) {
-            v.push(m);
-        }
-        v
-    });
-    let mine = |p: Preset| -> Vec<usize> { (0..cfgs.len()).filter(|&i| cfgs[i].memory == p).collect() };
-    let what = |p: Preset| format!("memory {}: one point per configuration (cycle model, LIFO, all pairs; host measured)", p.name());
+    let meshes: Vec<&str> = rows
+        .iter()
+        .map(|r| r.mesh.as_str())
+        .fold(vec![], |mut v, m| {
+            if !v.contains(&m) {
+                v.push(m);
+            }
+            v
+        });
+    let mine =
+        |p: Preset| -> Vec<usize> { (0..cfgs.len()).filter(|&i| cfgs[i].memory == p).collect() };
+    let what = |p: Preset| {
+        format!(
+            "memory {}: one point per configuration (cycle model, LIFO, all pairs; host measured)",
+            p.name()
+        )
+    };
     let folded = cfgs.iter().any(|c| c.folds != Folds::NONE);
     let mut out = vec![];
-    out.extend((!folded).then(|| Figure {
-        stem: "accuracy_cycles_uncertain",
-        title: format!("What accuracy costs: the query's time end to end against the host's share ({})", meshes.join(", ")),
-        panels: presets.iter().map(|&p| front_panel(what(p), "triangle tests left to the host (uncertain), %", true, &cfgs, &mine(p), &uncertain, &on_uncertain)).collect(),
-        table: table.clone(),
+    out.extend((!folded).then(|| {
+        Figure {
+            stem: "accuracy_cycles_uncertain",
+            title: format!(
+                "What accuracy costs: the query's time end to end against the host's share ({})",
+                meshes.join(", ")
+            ),
+            panels: presets
+                .iter()
+                .map(|&p| {
+                    front_panel(
+                        what(p),
+                        "triangle tests left to the host (uncertain), %",
+                        true,
+                        &cfgs,
+                        &mine(p),
+                        &uncertain,
+                        &on_uncertain,
+                    )
+                })
+                .collect(),
+            table: table.clone(),
+        }
     }));
     // with folds (`--tri-intervals`, `--dop-intervals`) the area figure alone (a fold leaves
     // the uncertain share as it is), the cells on a log scale (they span a factor of 30)
@@ -628,28 +923,72 @@ mod tests {
             ks: vec![6],
             formats: vec![Formats::from(crate::format::Format::REDUCED)],
             roundings: vec![DopRounding::Outward],
-            sweep: Sweep { distances: vec![1.0, 0.5], orientations: 2, seed: 1 },
+            sweep: Sweep {
+                distances: vec![1.0, 0.5],
+                orientations: 2,
+                seed: 1,
+            },
             bus_bits: None,
             technology: Technology::Osu018,
             folds: vec![Folds::NONE],
         };
-        let load = |m: &str| crate::mesh::resolve(m).map_err(|e| e.to_string())?.scaled_into_unit_cube().map(|m| m.triangles_f64()).map_err(|e| e.to_string());
-        let unmeasured = |rows: Vec<Row>| -> Vec<Row> { rows.into_iter().map(|r| Row { host: HostSums::default(), ..r }).collect() };
+        let load = |m: &str| {
+            crate::mesh::resolve(m)
+                .map_err(|e| e.to_string())?
+                .scaled_into_unit_cube()
+                .map(|m| m.triangles_f64())
+                .map_err(|e| e.to_string())
+        };
+        let unmeasured = |rows: Vec<Row>| -> Vec<Row> {
+            rows.into_iter()
+                .map(|r| Row {
+                    host: HostSums::default(),
+                    ..r
+                })
+                .collect()
+        };
         let serial = unmeasured(run(&plan, load, Shard::ALL, || ()).unwrap());
-        let shard = |k| ShardFile { plan: plan.clone(), shard: Shard { k, n: 3 }, rows: run(&plan, load, Shard { k, n: 3 }, || ()).unwrap() };
+        let shard = |k| ShardFile {
+            plan: plan.clone(),
+            shard: Shard { k, n: 3 },
+            rows: run(&plan, load, Shard { k, n: 3 }, || ()).unwrap(),
+        };
         let files: Vec<ShardFile> = (1..=3).map(shard).collect();
         let (p, merged) = merge(files.clone()).unwrap();
         let merged = unmeasured(merged);
         assert_eq!(p, plan);
-        assert!(serial.iter().all(|r| r.sums.queries == 4) && serial.iter().any(|r| r.sums.cycles > 0));
-        assert_eq!(serial.iter().map(|r| r.sums).collect::<Vec<_>>(), merged.iter().map(|r| r.sums).collect::<Vec<_>>());
-        assert_eq!(table(&plan, &serial, None).unwrap(), table(&plan, &merged, None).unwrap());
-        assert!(merge(files[..2].to_vec()).unwrap_err().contains("shard 3/3 is missing"));
-        assert!(merge(vec![files[0].clone(), files[0].clone(), files[1].clone()]).unwrap_err().contains("given twice"));
+        assert!(
+            serial.iter().all(|r| r.sums.queries == 4) && serial.iter().any(|r| r.sums.cycles > 0)
+        );
+        assert_eq!(
+            serial.iter().map(|r| r.sums).collect::<Vec<_>>(),
+            merged.iter().map(|r| r.sums).collect::<Vec<_>>()
+        );
+        assert_eq!(
+            table(&plan, &serial, None).unwrap(),
+            table(&plan, &merged, None).unwrap()
+        );
+        assert!(merge(files[..2].to_vec())
+            .unwrap_err()
+            .contains("shard 3/3 is missing"));
+        assert!(
+            merge(vec![files[0].clone(), files[0].clone(), files[1].clone()])
+                .unwrap_err()
+                .contains("given twice")
+        );
         // N is the file's: a huge one is a study with shards missing, not an allocation of N
-        let huge = ShardFile { shard: Shard { k: 1, n: usize::MAX }, ..files[0].clone() };
+        let huge = ShardFile {
+            shard: Shard {
+                k: 1,
+                n: usize::MAX,
+            },
+            ..files[0].clone()
+        };
         let e = merge(vec![huge]).unwrap_err();
-        assert!(e.contains(&format!("shard 2/{} is missing", usize::MAX)), "{e}");
+        assert!(
+            e.contains(&format!("shard 2/{} is missing", usize::MAX)),
+            "{e}"
+        );
     }
 
     /// A fold changes the clocks only: the folded rows count the unfolded ones' tests and
@@ -662,24 +1001,62 @@ mod tests {
             ks: vec![6],
             formats: vec![Formats::from(crate::format::Format::REDUCED)],
             roundings: vec![DopRounding::Outward],
-            sweep: Sweep { distances: vec![0.5], orientations: 2, seed: 1 },
+            sweep: Sweep {
+                distances: vec![0.5],
+                orientations: 2,
+                seed: 1,
+            },
             bus_bits: None,
             technology: Technology::Paper,
             folds: vec![Folds::NONE, Folds { tri: 32, dop: 6 }],
         };
-        let load = |m: &str| crate::mesh::resolve(m).map_err(|e| e.to_string())?.scaled_into_unit_cube().map(|m| m.triangles_f64()).map_err(|e| e.to_string());
+        let load = |m: &str| {
+            crate::mesh::resolve(m)
+                .map_err(|e| e.to_string())?
+                .scaled_into_unit_cube()
+                .map(|m| m.triangles_f64())
+                .map_err(|e| e.to_string())
+        };
         let rows = run(&plan, load, Shard::ALL, || ()).unwrap();
         let (a, b) = (&rows[0].sums, &rows[1].sums);
-        assert_eq!((rows[0].folds, rows[1].folds), (Folds::NONE, Folds { tri: 32, dop: 6 }));
-        assert_eq!((a.dop_tests, a.tri_tests, a.uncertain), (b.dop_tests, b.tri_tests, b.uncertain));
-        assert!(a.tri_tests > 0 && b.cycles > a.cycles, "{} -> {} clocks", a.cycles, b.cycles);
-        let bad = Plan { folds: vec![Folds { tri: 1, dop: 4 }], ..plan.clone() };
-        assert!(run(&bad, load, Shard::ALL, || ()).unwrap_err().contains("k = 6, TRI_UNIT interval 1, DOP interval 4"));
+        assert_eq!(
+            (rows[0].folds, rows[1].folds),
+            (Folds::NONE, Folds { tri: 32, dop: 6 })
+        );
+        assert_eq!(
+            (a.dop_tests, a.tri_tests, a.uncertain),
+            (b.dop_tests, b.tri_tests, b.uncertain)
+        );
+        assert!(
+            a.tri_tests > 0 && b.cycles > a.cycles,
+            "{} -> {} clocks",
+            a.cycles,
+            b.cycles
+        );
+        let bad = Plan {
+            folds: vec![Folds { tri: 1, dop: 4 }],
+            ..plan.clone()
+        };
+        assert!(run(&bad, load, Shard::ALL, || ())
+            .unwrap_err()
+            .contains("k = 6, TRI_UNIT interval 1, DOP interval 4"));
         // the ideal memory's bus is not a DDR preset's: refused there, not quietly left out
-        let bus = Plan { bus_bits: Some(64), ..plan };
+        let bus = Plan {
+            bus_bits: Some(64),
+            ..plan
+        };
         let e = bus.configs().unwrap_err();
         assert!(e.starts_with("--bus-bits 64 sets the ideal memory's bus (preset rtl's memory); preset date05's memory is DDR SDRAM on a bus of its own (756 bits)"), "{e}");
-        let rtl = Plan { presets: vec![Preset::Rtl], ..bus }.configs().unwrap();
-        assert!(rtl.iter().all(|(_, _, p)| p.memory == Memory::Ideal(crate::chip::memory::MemTiming { bus_bits: Some(64), ..Default::default() })));
+        let rtl = Plan {
+            presets: vec![Preset::Rtl],
+            ..bus
+        }
+        .configs()
+        .unwrap();
+        assert!(rtl.iter().all(|(_, _, p)| p.memory
+            == Memory::Ideal(crate::chip::memory::MemTiming {
+                bus_bits: Some(64),
+                ..Default::default()
+            })));
     }
 }

@@ -23,20 +23,20 @@
 //! before anything else runs; the counting work (golden counters, cycle model) then runs on
 //! every core.
 
+use super::plot::{write_figure, write_text, Cell, Figure, Panel, Series, Style, Table};
 use crate::chip::config::ChipConfig;
 use crate::chip::params::Params;
 use crate::chip::preset::Preset;
+use crate::chip::reg::{Mode, Order};
 use crate::chip::timing::{Clock, Folds, PeriodSource, Technology};
-use crate::cycle::{self, drive::Reader};
 use crate::chip::wscg03::StackParams;
+use crate::cycle::{self, drive::Reader};
 use crate::measure::{interleaved_best, parallel_map};
 use crate::mesh;
 use crate::pose::Pose;
-use crate::query::{Chip, HostTime};
 use crate::pose::{sweep_poses, Sweep};
+use crate::query::{Chip, HostTime};
 use crate::traversal::Traversal;
-use super::plot::{write_figure, write_text, Cell, Figure, Panel, Series, Style, Table};
-use crate::chip::reg::{Mode, Order};
 use indicatif::ProgressBar;
 use serde::Serialize;
 use std::path::{Path, PathBuf};
@@ -116,8 +116,17 @@ impl ChipRun {
     pub fn of(preset: Preset, technology: Technology) -> Result<ChipRun, String> {
         let cfg = preset.chip();
         let clock = Clock::of(technology, &cfg, Folds::NONE, preset)?;
-        let params = Params { queue_entries: QUEUE_ENTRIES, ..preset.params() };
-        Ok(ChipRun { preset, cfg, params, clock_source: clock.source(), clock })
+        let params = Params {
+            queue_entries: QUEUE_ENTRIES,
+            ..preset.params()
+        };
+        Ok(ChipRun {
+            preset,
+            cfg,
+            params,
+            clock_source: clock.source(),
+            clock,
+        })
     }
 
     /// Microseconds of `clocks` at this chip's period.
@@ -138,7 +147,12 @@ impl ChipRun {
 
     /// The chip in a title: `preset date05: k = 24, binary32, memory DDR ...`.
     fn name(&self) -> String {
-        format!("preset {}: k = {}, {}", self.preset.name(), self.cfg.k, self.cfg.format)
+        format!(
+            "preset {}: k = {}, {}",
+            self.preset.name(),
+            self.cfg.k,
+            self.cfg.format
+        )
     }
 }
 
@@ -236,7 +250,10 @@ pub struct Runs {
 
 impl Runs {
     pub fn of(plan: &Plan) -> Result<Runs, String> {
-        Ok(Runs { date: ChipRun::of(plan.date_preset(), plan.technology)?, wscg: ChipRun::of(plan.wscg_preset(), plan.technology)? })
+        Ok(Runs {
+            date: ChipRun::of(plan.date_preset(), plan.technology)?,
+            wscg: ChipRun::of(plan.wscg_preset(), plan.technology)?,
+        })
     }
 }
 
@@ -249,8 +266,16 @@ pub fn generate(plan: &Plan, out: &Path, bar: &ProgressBar) -> Result<Vec<PathBu
     let points = measure(plan, &runs, bar)?;
     let figs = figures(&points, &runs);
     let mut written = vec![];
-    let setup = PlanJson { plan, software: ChipConfig::default(), runs: &runs, parry: cfg!(feature = "parry") };
-    write_text(&out.join("plan.json"), &(serde_json::to_string_pretty(&setup).expect("serialisable") + "\n"))?;
+    let setup = PlanJson {
+        plan,
+        software: ChipConfig::default(),
+        runs: &runs,
+        parry: cfg!(feature = "parry"),
+    };
+    write_text(
+        &out.join("plan.json"),
+        &(serde_json::to_string_pretty(&setup).expect("serialisable") + "\n"),
+    )?;
     written.push(out.join("plan.json"));
     for f in &figs {
         written.extend(write_figure(f, out)?);
@@ -290,7 +315,10 @@ fn best_us<T>(items: &[T], seconds: f64, f: impl Fn(&T) -> usize) -> f64 {
 /// the pose's uncertain pairs (those of the all-pairs query).
 fn host_time(chip: &Chip, poses: &[Pose], seconds: f64) -> HostTime {
     let seconds = seconds / 3.0;
-    let items: Vec<(&Pose, Vec<(u32, u32)>)> = poses.iter().map(|p| (p, chip.query(p, Mode::All, Traversal::Lifo).uncertain)).collect();
+    let items: Vec<(&Pose, Vec<(u32, u32)>)> = poses
+        .iter()
+        .map(|p| (p, chip.query(p, Mode::All, Traversal::Lifo).uncertain))
+        .collect();
     HostTime {
         setup_us: best_us(&items, seconds, |(p, _)| chip.setup(p).cvec.len()),
         settle_us: best_us(&items, seconds, |(p, u)| chip.settle(p, u)),
@@ -298,17 +326,26 @@ fn host_time(chip: &Chip, poses: &[Pose], seconds: f64) -> HostTime {
 }
 
 fn measure(plan: &Plan, runs: &Runs, bar: &ProgressBar) -> Result<Vec<Point>, String> {
-    let poses: Vec<Pose> = sweep_poses(&Sweep { distances: plan.distances.clone(), orientations: plan.orientations, seed: plan.seed })?
-        .iter()
-        .map(|p| p.pose)
-        .collect();
+    let poses: Vec<Pose> = sweep_poses(&Sweep {
+        distances: plan.distances.clone(),
+        orientations: plan.orientations,
+        seed: plan.seed,
+    })?
+    .iter()
+    .map(|p| p.pose)
+    .collect();
     // the images on every core (three per mesh)
     let objects: Vec<Object> = parallel_map(&plan.meshes, |_, m| {
-        let mesh = mesh::resolve(m).and_then(|x| x.scaled_into_unit_cube()).map_err(|e| e.to_string())?;
+        let mesh = mesh::resolve(m)
+            .and_then(|x| x.scaled_into_unit_cube())
+            .map_err(|e| e.to_string())?;
         let tris = mesh.triangles_f64();
         let chip = |cfg: ChipConfig| Chip::new(&tris, &tris, cfg).map_err(|e| format!("{m}: {e}"));
         let software = chip(ChipConfig::default())?;
-        poses.iter().try_for_each(|p| software.check_pose(p)).map_err(|e| format!("{m}: {e}"))?;
+        poses
+            .iter()
+            .try_for_each(|p| software.check_pose(p))
+            .map_err(|e| format!("{m}: {e}"))?;
         Ok(Object {
             name: m.clone(),
             software,
@@ -330,11 +367,17 @@ fn measure(plan: &Plan, runs: &Runs, bar: &ProgressBar) -> Result<Vec<Point>, St
     for o in &objects {
         for (di, &distance) in plan.distances.iter().enumerate() {
             let group = &poses[di * n..(di + 1) * n];
-            let time = |t: Traversal, m: Mode| best_us(group, plan.min_seconds, |p| o.software.query(p, m, t).pairs.len());
+            let time = |t: Traversal, m: Mode| {
+                best_us(group, plan.min_seconds, |p| {
+                    o.software.query(p, m, t).pairs.len()
+                })
+            };
             let sw_us = SOFTWARE.map(|t| MODES.map(|m| time(t, m)));
             let golden_us = time(Traversal::Lifo, Mode::All);
             #[cfg(feature = "parry")]
-            let parry_us = Some(best_us(group, plan.min_seconds, |p| crate::peer::all_pairs(&o.peer, &o.peer, p)));
+            let parry_us = Some(best_us(group, plan.min_seconds, |p| {
+                crate::peer::all_pairs(&o.peer, &o.peer, p)
+            }));
             #[cfg(not(feature = "parry"))]
             let parry_us = None;
             points.push(Point {
@@ -350,7 +393,14 @@ fn measure(plan: &Plan, runs: &Runs, bar: &ProgressBar) -> Result<Vec<Point>, St
                     let date = host_time(&o.date, group, plan.min_seconds);
                     // the host's work depends on the arithmetic only: measured once if the same
                     let same = |c: &ChipConfig| (c.k, c.format, c.dop_rounding, c.tri_rounding);
-                    [date, if same(&runs.wscg.cfg) == same(&runs.date.cfg) { date } else { host_time(&o.wscg, group, plan.min_seconds) }]
+                    [
+                        date,
+                        if same(&runs.wscg.cfg) == same(&runs.date.cfg) {
+                            date
+                        } else {
+                            host_time(&o.wscg, group, plan.min_seconds)
+                        },
+                    ]
                 },
             });
             bar.inc(1);
@@ -359,9 +409,12 @@ fn measure(plan: &Plan, runs: &Runs, bar: &ProgressBar) -> Result<Vec<Point>, St
 
     // Counting on every core.
     bar.set_message("golden and cycle model, every core");
-    let items: Vec<(usize, usize)> = (0..objects.len()).flat_map(|o| (0..poses.len()).map(move |p| (o, p))).collect();
+    let items: Vec<(usize, usize)> = (0..objects.len())
+        .flat_map(|o| (0..poses.len()).map(move |p| (o, p)))
+        .collect();
     let counts = parallel_map(&items, |_, &(o, p)| {
-        let r = count(&objects[o], runs, &poses[p]).map_err(|e| format!("{}, pose {}: {e}", objects[o].name, poses[p].text()));
+        let r = count(&objects[o], runs, &poses[p])
+            .map_err(|e| format!("{}, pose {}: {e}", objects[o].name, poses[p].text()));
         bar.inc(1);
         r
     });
@@ -381,8 +434,23 @@ fn count(o: &Object, runs: &Runs, pose: &Pose) -> Result<PoseCounts, String> {
     for (oi, &order) in ORDERS.iter().enumerate() {
         for (mi, &mode) in MODES.iter().enumerate() {
             c.pairs[oi][mi] = chip.query(pose, mode, order).pairs.len();
-            let (trace, _) = cycle::run_query(chip, &setup, order.order().expect("a D_CNTR order"), mode, runs.date.params, Reader::default(), cycle::MAX_CYCLES, Default::default())?;
-            trace.check(mode, &all).map_err(|e| format!("{} {}: the cycle model disagrees with the golden model: {e}", name(order), mode_name(mode)))?;
+            let (trace, _) = cycle::run_query(
+                chip,
+                &setup,
+                order.order().expect("a D_CNTR order"),
+                mode,
+                runs.date.params,
+                Reader::default(),
+                cycle::MAX_CYCLES,
+                Default::default(),
+            )?;
+            trace.check(mode, &all).map_err(|e| {
+                format!(
+                    "{} {}: the cycle model disagrees with the golden model: {e}",
+                    name(order),
+                    mode_name(mode)
+                )
+            })?;
             c.cycles[oi][mi] = trace.cycles;
             c.entries[oi][mi] = trace.max_depth;
             c.words[oi][mi] = trace.node_fetches + trace.tri_fetches;
@@ -400,28 +468,76 @@ fn count(o: &Object, runs: &Runs, pose: &Pose) -> Result<PoseCounts, String> {
         }
     }
     let (chip, params) = (&o.wscg, &runs.wscg.params);
-    let (setup, all) = (chip.setup(pose), chip.query(pose, Mode::All, Traversal::Lifo));
-    let (trace, _) = cycle::run_query(chip, &setup, Order::Lifo, Mode::All, *params, Reader::default(), cycle::MAX_CYCLES, Default::default())?;
-    trace.check(Mode::All, &all).map_err(|e| format!("DATE'05's chip on preset {}: the cycle model disagrees with the golden model: {e}", runs.wscg.preset.name()))?;
-    (c.wscg_cycles, c.wscg_words, c.wscg_entries) = (trace.cycles, trace.node_fetches + trace.tri_fetches, trace.max_depth);
-    let run = cycle::wscg03::run_query(chip, &setup, Mode::All, params, &StackParams::PAPER, cycle::MAX_CYCLES)?;
-    run.trace.check(Mode::All, &all).map_err(|e| format!("WSCG'03's chip disagrees with the golden model: {e}"))?;
+    let (setup, all) = (
+        chip.setup(pose),
+        chip.query(pose, Mode::All, Traversal::Lifo),
+    );
+    let (trace, _) = cycle::run_query(
+        chip,
+        &setup,
+        Order::Lifo,
+        Mode::All,
+        *params,
+        Reader::default(),
+        cycle::MAX_CYCLES,
+        Default::default(),
+    )?;
+    trace.check(Mode::All, &all).map_err(|e| {
+        format!(
+            "DATE'05's chip on preset {}: the cycle model disagrees with the golden model: {e}",
+            runs.wscg.preset.name()
+        )
+    })?;
+    (c.wscg_cycles, c.wscg_words, c.wscg_entries) = (
+        trace.cycles,
+        trace.node_fetches + trace.tri_fetches,
+        trace.max_depth,
+    );
+    let run = cycle::wscg03::run_query(
+        chip,
+        &setup,
+        Mode::All,
+        params,
+        &StackParams::PAPER,
+        cycle::MAX_CYCLES,
+    )?;
+    run.trace
+        .check(Mode::All, &all)
+        .map_err(|e| format!("WSCG'03's chip disagrees with the golden model: {e}"))?;
     let (t, s) = (&run.trace, &run.stats);
-    (c.stack_cycles, c.stack_words, c.stack_dop_tests) = (t.cycles, t.node_fetches + t.tri_fetches, s.dop_tests);
+    (c.stack_cycles, c.stack_words, c.stack_dop_tests) =
+        (t.cycles, t.node_fetches + t.tri_fetches, s.dop_tests);
     (c.stack_transforms, c.stack_pointers) = (s.transforms, s.max_list_words);
     Ok(c)
 }
 
 /// One series per mesh (colour) and variant (its style) over distance.
-fn by_distance(points: &[Point], variants: &[(&str, Style)], y: impl Fn(&Point, usize) -> Option<f64>) -> Vec<Series> {
+fn by_distance(
+    points: &[Point],
+    variants: &[(&str, Style)],
+    y: impl Fn(&Point, usize) -> Option<f64>,
+) -> Vec<Series> {
     let meshes = mesh_order(points);
     let mut out = vec![];
     for (ci, m) in meshes.iter().enumerate() {
         for (vi, &(label, style)) in variants.iter().enumerate() {
-            let pts: Vec<(f64, f64)> = points.iter().filter(|p| &p.mesh == m).filter_map(|p| Some((p.distance, y(p, vi)?))).collect();
+            let pts: Vec<(f64, f64)> = points
+                .iter()
+                .filter(|p| &p.mesh == m)
+                .filter_map(|p| Some((p.distance, y(p, vi)?)))
+                .collect();
             if !pts.is_empty() {
-                let tris = points.iter().find(|p| &p.mesh == m).map_or(0, |p| p.triangles);
-                out.push(Series { label: format!("{m} ({tris} tris) {label}"), color: ci, style, points: pts, labels: vec![] });
+                let tris = points
+                    .iter()
+                    .find(|p| &p.mesh == m)
+                    .map_or(0, |p| p.triangles);
+                out.push(Series {
+                    label: format!("{m} ({tris} tris) {label}"),
+                    color: ci,
+                    style,
+                    points: pts,
+                    labels: vec![],
+                });
             }
         }
     }
@@ -439,13 +555,25 @@ fn mesh_order(points: &[Point]) -> Vec<String> {
 }
 
 fn key(p: &Point) -> [Cell; 4] {
-    [Cell::Text(p.mesh.clone()), Cell::Int(p.triangles as u64), Cell::Num(p.distance), Cell::Int(p.queries as u64)]
+    [
+        Cell::Text(p.mesh.clone()),
+        Cell::Int(p.triangles as u64),
+        Cell::Num(p.distance),
+        Cell::Int(p.queries as u64),
+    ]
 }
 
 const KEY: [&str; 4] = ["mesh", "triangles", "distance", "queries"];
 
 fn panel(title: &str, x_label: &'static str, y_label: &'static str, series: Vec<Series>) -> Panel {
-    Panel { title: title.into(), x_label, y_label, log_x: false, log_y: true, series }
+    Panel {
+        title: title.into(),
+        x_label,
+        y_label,
+        log_x: false,
+        log_y: true,
+        series,
+    }
 }
 
 const DIST: &str = "centre distance (objects in [-1,1]^3)";
@@ -464,14 +592,55 @@ const ORDER_STYLES: [(&str, Style); 2] = [("LIFO", Style::Solid), ("FIFO", Style
 
 /// DATE'05 Figs. 6 and 7: clocks and queue entries, LIFO against FIFO, on `run`'s chip.
 fn date05_queue_figures(points: &[Point], run: &ChipRun) -> Vec<Figure> {
-    let mut t6 = Table { columns: [&KEY[..], &["order", "mode", "pairs", "cycles", "cycles_max", "period_ns", "chip_us", "words"]].concat(), rows: vec![] };
-    let mut t7 = Table { columns: [&KEY[..], &["order", "mode", "pairs", "max_entries", "max_entries_max", "queue_bytes"]].concat(), rows: vec![] };
+    let mut t6 = Table {
+        columns: [
+            &KEY[..],
+            &[
+                "order",
+                "mode",
+                "pairs",
+                "cycles",
+                "cycles_max",
+                "period_ns",
+                "chip_us",
+                "words",
+            ],
+        ]
+        .concat(),
+        rows: vec![],
+    };
+    let mut t7 = Table {
+        columns: [
+            &KEY[..],
+            &[
+                "order",
+                "mode",
+                "pairs",
+                "max_entries",
+                "max_entries_max",
+                "queue_bytes",
+            ],
+        ]
+        .concat(),
+        rows: vec![],
+    };
     for p in points {
         for (oi, &o) in ORDERS.iter().enumerate() {
             for (mi, &m) in MODES.iter().enumerate() {
                 let cycles = p.mean(|c| c.cycles[oi][mi] as f64);
                 let pairs = Cell::Num(p.mean(|c| c.pairs[oi][mi] as f64));
-                let base = |v: Vec<Cell>| [&key(p)[..], &[Cell::Text(name(o).into()), Cell::Text(mode_name(m).into()), pairs.clone()], &v[..]].concat();
+                let base = |v: Vec<Cell>| {
+                    [
+                        &key(p)[..],
+                        &[
+                            Cell::Text(name(o).into()),
+                            Cell::Text(mode_name(m).into()),
+                            pairs.clone(),
+                        ],
+                        &v[..],
+                    ]
+                    .concat()
+                };
                 t6.rows.push(base(vec![
                     Cell::Num(cycles),
                     Cell::Int(p.max(|c| c.cycles[oi][mi])),
@@ -482,31 +651,54 @@ fn date05_queue_figures(points: &[Point], run: &ChipRun) -> Vec<Figure> {
                 let entries = p.mean(|c| c.entries[oi][mi] as f64);
                 // an entry is two node pairs of 16-bit ids and a flip bit each, 67 bits
                 let bytes = entries * crate::chip::layout::ENTRY_BITS as f64 / 8.0;
-                t7.rows.push(base(vec![Cell::Num(entries), Cell::Int(p.max(|c| c.entries[oi][mi])), Cell::Num(bytes)]));
+                t7.rows.push(base(vec![
+                    Cell::Num(entries),
+                    Cell::Int(p.max(|c| c.entries[oi][mi])),
+                    Cell::Num(bytes),
+                ]));
             }
         }
     }
     let fig6 = Figure {
         stem: "date05_fig6_cycles",
-        title: format!("DATE'05 Fig. 6: query time, LIFO vs FIFO (cycle model, {})", run.name()),
+        title: format!(
+            "DATE'05 Fig. 6: query time, LIFO vs FIFO (cycle model, {})",
+            run.name()
+        ),
         panels: MODES
             .iter()
             .enumerate()
             .map(|(mi, &m)| {
-                let title = if m == Mode::All { "all intersecting pairs" } else { "first hit" };
-                panel(title, DIST, "clocks per query", by_distance(points, &ORDER_STYLES, |p, oi| Some(p.mean(|c| c.cycles[oi][mi] as f64))))
+                let title = if m == Mode::All {
+                    "all intersecting pairs"
+                } else {
+                    "first hit"
+                };
+                panel(
+                    title,
+                    DIST,
+                    "clocks per query",
+                    by_distance(points, &ORDER_STYLES, |p, oi| {
+                        Some(p.mean(|c| c.cycles[oi][mi] as f64))
+                    }),
+                )
             })
             .collect(),
         table: t6,
     };
     let fig7 = Figure {
         stem: "date05_fig7_queue",
-        title: format!("DATE'05 Fig. 7: queue memory, LIFO vs FIFO (cycle model, {})", run.name()),
+        title: format!(
+            "DATE'05 Fig. 7: queue memory, LIFO vs FIFO (cycle model, {})",
+            run.name()
+        ),
         panels: vec![panel(
             "most queue entries (two node pairs each) at once, all pairs",
             DIST,
             "queue entries",
-            by_distance(points, &ORDER_STYLES, |p, oi| Some(p.mean(|c| c.entries[oi][0] as f64))),
+            by_distance(points, &ORDER_STYLES, |p, oi| {
+                Some(p.mean(|c| c.entries[oi][0] as f64))
+            }),
         )],
         table: t7,
     };
@@ -523,7 +715,10 @@ struct Times {
 impl Times {
     fn of(p: &Point, run: &ChipRun, host: usize, clocks: f64) -> Times {
         let chip_us = run.us(clocks);
-        Times { chip_us, e2e_us: p.host[host].setup_us + chip_us + p.host[host].settle_us }
+        Times {
+            chip_us,
+            e2e_us: p.host[host].setup_us + chip_us + p.host[host].settle_us,
+        }
     }
 }
 
@@ -537,19 +732,66 @@ fn opt(x: Option<f64>) -> Cell {
 fn date05_fig8(points: &[Point], run: &ChipRun) -> Figure {
     let times = |p: &Point| Times::of(p, run, 0, p.mean(|c| c.cycles[0][0] as f64));
     let mut t8 = Table {
-        columns: [&KEY[..], &["pairs", "cycles", "period_ns", "chip_us", "setup_us", "settle_us", "end_to_end_us", "golden_us", "parry_us", "speedup_golden", "speedup_parry", "e2e_speedup_golden", "e2e_speedup_parry"]].concat(),
+        columns: [
+            &KEY[..],
+            &[
+                "pairs",
+                "cycles",
+                "period_ns",
+                "chip_us",
+                "setup_us",
+                "settle_us",
+                "end_to_end_us",
+                "golden_us",
+                "parry_us",
+                "speedup_golden",
+                "speedup_parry",
+                "e2e_speedup_golden",
+                "e2e_speedup_parry",
+            ],
+        ]
+        .concat(),
         rows: vec![],
     };
     for p in points {
         let t = times(p);
         let h = p.host[0];
-        let nums = [p.mean(|c| c.pairs[0][0] as f64), p.mean(|c| c.cycles[0][0] as f64), run.clock.period_ns, t.chip_us, h.setup_us, h.settle_us, t.e2e_us, p.golden_us];
-        let peers = [opt(p.parry_us), Cell::Num(p.golden_us / t.chip_us), opt(p.parry_us.map(|x| x / t.chip_us)), Cell::Num(p.golden_us / t.e2e_us), opt(p.parry_us.map(|x| x / t.e2e_us))];
-        t8.rows.push([&key(p)[..], &nums.map(Cell::Num)[..], &peers[..]].concat());
+        let nums = [
+            p.mean(|c| c.pairs[0][0] as f64),
+            p.mean(|c| c.cycles[0][0] as f64),
+            run.clock.period_ns,
+            t.chip_us,
+            h.setup_us,
+            h.settle_us,
+            t.e2e_us,
+            p.golden_us,
+        ];
+        let peers = [
+            opt(p.parry_us),
+            Cell::Num(p.golden_us / t.chip_us),
+            opt(p.parry_us.map(|x| x / t.chip_us)),
+            Cell::Num(p.golden_us / t.e2e_us),
+            opt(p.parry_us.map(|x| x / t.e2e_us)),
+        ];
+        t8.rows
+            .push([&key(p)[..], &nums.map(Cell::Num)[..], &peers[..]].concat());
     }
-    let peers = [("over the golden model", Style::Solid), ("over parry3d", Style::Dashed)];
-    let over = |p: &Point, v: usize, us: f64| if v == 0 { Some(p.golden_us / us) } else { p.parry_us.map(|x| x / us) };
-    let time_lines = [("end to end", Style::Solid), ("the chip alone", Style::Dashed), ("the golden model (software)", Style::Points)];
+    let peers = [
+        ("over the golden model", Style::Solid),
+        ("over parry3d", Style::Dashed),
+    ];
+    let over = |p: &Point, v: usize, us: f64| {
+        if v == 0 {
+            Some(p.golden_us / us)
+        } else {
+            p.parry_us.map(|x| x / us)
+        }
+    };
+    let time_lines = [
+        ("end to end", Style::Solid),
+        ("the chip alone", Style::Dashed),
+        ("the golden model (software)", Style::Points),
+    ];
     let time = |p: &Point, v: usize| Some([times(p).e2e_us, times(p).chip_us, p.golden_us][v]);
     let mut distances: Vec<f64> = points.iter().map(|p| p.distance).collect();
     distances.sort_by(f64::total_cmp);
@@ -560,19 +802,58 @@ fn date05_fig8(points: &[Point], run: &ChipRun) -> Figure {
         .step_by(2)
         .enumerate()
         .map(|(ci, &d)| {
-            let mut pts: Vec<(f64, f64)> = points.iter().filter(|p| p.distance == d).map(|p| (p.triangles as f64, p.golden_us / times(p).chip_us)).collect();
+            let mut pts: Vec<(f64, f64)> = points
+                .iter()
+                .filter(|p| p.distance == d)
+                .map(|p| (p.triangles as f64, p.golden_us / times(p).chip_us))
+                .collect();
             pts.sort_by(|a, b| a.0.total_cmp(&b.0));
-            Series { label: format!("d = {d}"), color: ci, style: Style::Solid, points: pts, labels: vec![] }
+            Series {
+                label: format!("d = {d}"),
+                color: ci,
+                style: Style::Solid,
+                points: pts,
+                labels: vec![],
+            }
         })
         .collect();
     Figure {
         stem: "date05_fig8_speedup",
-        title: format!("DATE'05 Fig. 8: the chip ({}) over software on this machine, all pairs", run.name()),
+        title: format!(
+            "DATE'05 Fig. 8: the chip ({}) over software on this machine, all pairs",
+            run.name()
+        ),
         panels: vec![
-            panel(&format!("speed-up of the chip's time (LIFO clocks x {})", run.period()), DIST, "speed-up", by_distance(points, &peers, |p, v| over(p, v, times(p).chip_us))),
-            panel("speed-up end to end (host setup + the chip's time + host settling)", DIST, "speed-up", by_distance(points, &peers, |p, v| over(p, v, times(p).e2e_us))),
-            panel("time per query", DIST, "microseconds per query", by_distance(points, &time_lines, time)),
-            Panel { log_x: true, ..panel("speed-up of the chip's time over the golden model against triangle count", "triangles per object", "speed-up", by_tris) },
+            panel(
+                &format!(
+                    "speed-up of the chip's time (LIFO clocks x {})",
+                    run.period()
+                ),
+                DIST,
+                "speed-up",
+                by_distance(points, &peers, |p, v| over(p, v, times(p).chip_us)),
+            ),
+            panel(
+                "speed-up end to end (host setup + the chip's time + host settling)",
+                DIST,
+                "speed-up",
+                by_distance(points, &peers, |p, v| over(p, v, times(p).e2e_us)),
+            ),
+            panel(
+                "time per query",
+                DIST,
+                "microseconds per query",
+                by_distance(points, &time_lines, time),
+            ),
+            Panel {
+                log_x: true,
+                ..panel(
+                    "speed-up of the chip's time over the golden model against triangle count",
+                    "triangles per object",
+                    "speed-up",
+                    by_tris,
+                )
+            },
         ],
         table: t8,
     }
@@ -580,10 +861,24 @@ fn date05_fig8(points: &[Point], run: &ChipRun) -> Figure {
 
 /// WSCG'03 Figs. 9-12: the golden model's list and recursive traversals.
 fn wscg03_software_figures(points: &[Point]) -> Vec<Figure> {
-    let sw = [("Alg. 2 (list)", Style::Solid), ("Alg. 1 (recursive)", Style::Dashed)];
+    let sw = [
+        ("Alg. 2 (list)", Style::Solid),
+        ("Alg. 1 (recursive)", Style::Dashed),
+    ];
     let mut figs = vec![];
     let mut t9 = Table {
-        columns: [&KEY[..], &["traversal", "mode", "pairs", "software_us", "node_fetches", "dop_transforms"]].concat(),
+        columns: [
+            &KEY[..],
+            &[
+                "traversal",
+                "mode",
+                "pairs",
+                "software_us",
+                "node_fetches",
+                "dop_transforms",
+            ],
+        ]
+        .concat(),
         rows: vec![],
     };
     for p in points {
@@ -606,30 +901,49 @@ fn wscg03_software_figures(points: &[Point]) -> Vec<Figure> {
             }
         }
     }
-    let modes_panels = |y_label: &'static str, f: &dyn Fn(&Point, usize, usize) -> f64| -> Vec<Panel> {
-        MODES
-            .iter()
-            .enumerate()
-            .map(|(mi, &m)| {
-                let title = if m == Mode::All { "all pairs" } else { "first witness" };
-                panel(title, DIST, y_label, by_distance(points, &sw, |p, si| Some(f(p, si, mi))))
-            })
-            .collect()
-    };
+    let modes_panels =
+        |y_label: &'static str, f: &dyn Fn(&Point, usize, usize) -> f64| -> Vec<Panel> {
+            MODES
+                .iter()
+                .enumerate()
+                .map(|(mi, &m)| {
+                    let title = if m == Mode::All {
+                        "all pairs"
+                    } else {
+                        "first witness"
+                    };
+                    panel(
+                        title,
+                        DIST,
+                        y_label,
+                        by_distance(points, &sw, |p, si| Some(f(p, si, mi))),
+                    )
+                })
+                .collect()
+        };
     let rows_of = |mode: Mode| Table {
         columns: t9.columns.clone(),
-        rows: t9.rows.iter().filter(|r| r[5] == Cell::Text(mode_name(mode).into())).cloned().collect(),
+        rows: t9
+            .rows
+            .iter()
+            .filter(|r| r[5] == Cell::Text(mode_name(mode).into()))
+            .cloned()
+            .collect(),
     };
-    let time_panels = modes_panels("microseconds per query (this machine)", &|p, si, mi| p.sw_us[si][mi]);
+    let time_panels = modes_panels("microseconds per query (this machine)", &|p, si, mi| {
+        p.sw_us[si][mi]
+    });
     figs.push(Figure {
         stem: "wscg03_fig9_first_witness",
-        title: "WSCG'03 Fig. 9: software time, first witness (golden model, one query at a time)".into(),
+        title: "WSCG'03 Fig. 9: software time, first witness (golden model, one query at a time)"
+            .into(),
         panels: vec![time_panels[1].clone()],
         table: rows_of(Mode::First),
     });
     figs.push(Figure {
         stem: "wscg03_fig10_all_pairs",
-        title: "WSCG'03 Fig. 10: software time, all pairs (golden model, one query at a time)".into(),
+        title: "WSCG'03 Fig. 10: software time, all pairs (golden model, one query at a time)"
+            .into(),
         panels: vec![time_panels[0].clone()],
         table: rows_of(Mode::All),
     });
@@ -642,7 +956,9 @@ fn wscg03_software_figures(points: &[Point]) -> Vec<Figure> {
     figs.push(Figure {
         stem: "wscg03_fig12_transforms",
         title: "WSCG'03 Fig. 12: DOP transforms of the tumbled object".into(),
-        panels: modes_panels("DOP transforms per query", &|p, si, mi| p.mean(|c| c.sw_transforms[si][mi] as f64)),
+        panels: modes_panels("DOP transforms per query", &|p, si, mi| {
+            p.mean(|c| c.sw_transforms[si][mi] as f64)
+        }),
         table: t9,
     });
 
@@ -662,18 +978,39 @@ fn wscg03_fig13(points: &[Point], run: &ChipRun) -> Figure {
     let mut t13 = Table {
         columns: [
             &KEY[..],
-            &["pairs", "software_us", "parry_us", "wscg03_cycles", "eq5_cycles", "date05_cycles", "lists", "alpha", "wscg03_clocks_per_list", "eq5_clocks_per_list", "period_ns", "setup_us", "settle_us"],
-            &["speedup_wscg03", "speedup_eq5", "speedup_date05", "speedup_parry_wscg03", "speedup_parry_eq5", "speedup_parry_date05", "e2e_us_wscg03", "e2e_us_eq5", "e2e_us_date05"],
+            &[
+                "pairs",
+                "software_us",
+                "parry_us",
+                "wscg03_cycles",
+                "eq5_cycles",
+                "date05_cycles",
+                "lists",
+                "alpha",
+                "wscg03_clocks_per_list",
+                "eq5_clocks_per_list",
+                "period_ns",
+                "setup_us",
+                "settle_us",
+            ],
+            &[
+                "speedup_wscg03",
+                "speedup_eq5",
+                "speedup_date05",
+                "speedup_parry_wscg03",
+                "speedup_parry_eq5",
+                "speedup_parry_date05",
+                "e2e_us_wscg03",
+                "e2e_us_eq5",
+                "e2e_us_date05",
+            ],
         ]
         .concat(),
         rows: vec![],
     };
     for p in points {
         let lists = p.mean(|c| c.lists as f64).max(1.0);
-        let nums = [
-            p.mean(|c| c.sw_pairs[0][0] as f64),
-            p.sw_us[0][0],
-        ];
+        let nums = [p.mean(|c| c.sw_pairs[0][0] as f64), p.sw_us[0][0]];
         let counts = [
             clocks(p, 0),
             clocks(p, 1),
@@ -689,23 +1026,63 @@ fn wscg03_fig13(points: &[Point], run: &ChipRun) -> Figure {
         let golden = [0, 1, 2].map(|v| Cell::Num(p.sw_us[0][0] / times(p, v).chip_us));
         let parry = [0, 1, 2].map(|v| opt(p.parry_us.map(|x| x / times(p, v).chip_us)));
         let e2e = [0, 1, 2].map(|v| Cell::Num(times(p, v).e2e_us));
-        t13.rows.push([&key(p)[..], &nums.map(Cell::Num)[..], &[opt(p.parry_us)], &counts.map(Cell::Num)[..], &golden[..], &parry[..], &e2e[..]].concat());
+        t13.rows.push(
+            [
+                &key(p)[..],
+                &nums.map(Cell::Num)[..],
+                &[opt(p.parry_us)],
+                &counts.map(Cell::Num)[..],
+                &golden[..],
+                &parry[..],
+                &e2e[..],
+            ]
+            .concat(),
+        );
     }
-    let models = [("WSCG'03's chip (cycle model)", Style::Solid), ("Eq. 5", Style::Dashed), ("DATE'05's chip, LIFO (cycle model)", Style::Points)];
+    let models = [
+        ("WSCG'03's chip (cycle model)", Style::Solid),
+        ("Eq. 5", Style::Dashed),
+        ("DATE'05's chip, LIFO (cycle model)", Style::Points),
+    ];
     let mut panels = vec![panel(
-        &format!("speed-up of the chips' time over the golden model's Alg. 2 ({})", run.period()),
+        &format!(
+            "speed-up of the chips' time over the golden model's Alg. 2 ({})",
+            run.period()
+        ),
         DIST,
         "speed-up",
-        by_distance(points, &models, |p, v| Some(p.sw_us[0][0] / times(p, v).chip_us)),
+        by_distance(points, &models, |p, v| {
+            Some(p.sw_us[0][0] / times(p, v).chip_us)
+        }),
     )];
     if points.iter().any(|p| p.parry_us.is_some()) {
-        panels.push(panel("speed-up of the chips' time over parry3d", DIST, "speed-up", by_distance(points, &models, |p, v| p.parry_us.map(|x| x / times(p, v).chip_us))));
+        panels.push(panel(
+            "speed-up of the chips' time over parry3d",
+            DIST,
+            "speed-up",
+            by_distance(points, &models, |p, v| {
+                p.parry_us.map(|x| x / times(p, v).chip_us)
+            }),
+        ));
     }
-    panels.push(panel("end to end (host setup + the chip's time + host settling)", DIST, "microseconds per query", by_distance(points, &models, |p, v| Some(times(p, v).e2e_us))));
-    panels.push(panel("the chips' clocks per query", DIST, "clocks", by_distance(points, &models, |p, v| Some(clocks(p, v)))));
+    panels.push(panel(
+        "end to end (host setup + the chip's time + host settling)",
+        DIST,
+        "microseconds per query",
+        by_distance(points, &models, |p, v| Some(times(p, v).e2e_us)),
+    ));
+    panels.push(panel(
+        "the chips' clocks per query",
+        DIST,
+        "clocks",
+        by_distance(points, &models, |p, v| Some(clocks(p, v))),
+    ));
     Figure {
         stem: "wscg03_fig13_speedup",
-        title: format!("WSCG'03 Fig. 13: the chips over software on this machine, all pairs, {}", run.name()),
+        title: format!(
+            "WSCG'03 Fig. 13: the chips over software on this machine, all pairs, {}",
+            run.name()
+        ),
         panels,
         table: t13,
     }
@@ -716,12 +1093,32 @@ fn wscg03_fig13(points: &[Point], run: &ChipRun) -> Figure {
 /// memory words, and their traversal memory (D_CNTR's queue entries, two node pairs each;
 /// the Stack Engine's aligned pointers in its list SRAMs).
 fn side_by_side(points: &[Point], run: &ChipRun) -> Figure {
-    let chips = [("WSCG'03's chip", Style::Solid), ("DATE'05's chip, LIFO", Style::Dashed)];
+    let chips = [
+        ("WSCG'03's chip", Style::Solid),
+        ("DATE'05's chip, LIFO", Style::Dashed),
+    ];
     let mut t = Table {
-        columns: [&KEY[..], &["wscg03_clocks", "date05_clocks", "wscg03_dop_per_clock", "date05_dop_per_clock", "wscg03_transforms_per_clock", "date05_transforms_per_clock", "wscg03_words", "date05_words", "wscg03_list_pointers", "date05_queue_entries"]].concat(),
+        columns: [
+            &KEY[..],
+            &[
+                "wscg03_clocks",
+                "date05_clocks",
+                "wscg03_dop_per_clock",
+                "date05_dop_per_clock",
+                "wscg03_transforms_per_clock",
+                "date05_transforms_per_clock",
+                "wscg03_words",
+                "date05_words",
+                "wscg03_list_pointers",
+                "date05_queue_entries",
+            ],
+        ]
+        .concat(),
         rows: vec![],
     };
-    let per_clock = |p: &Point, f: fn(&PoseCounts) -> u64, clocks: fn(&PoseCounts) -> u64| p.mean(|c| f(c) as f64) / p.mean(|c| clocks(c) as f64).max(1.0);
+    let per_clock = |p: &Point, f: fn(&PoseCounts) -> u64, clocks: fn(&PoseCounts) -> u64| {
+        p.mean(|c| f(c) as f64) / p.mean(|c| clocks(c) as f64).max(1.0)
+    };
     // all pairs, both chips test the golden traversal's DOP pairs (tb/wscg03.rs,
     // tb/cycle_chip.rs): one count; DATE'05 transforms in every test
     for p in points {
@@ -735,14 +1132,28 @@ fn side_by_side(points: &[Point], run: &ChipRun) -> Figure {
             p.mean(|c| c.stack_words as f64),
             p.mean(|c| c.wscg_words as f64),
         ];
-        let mem = [Cell::Int(p.max(|c| c.stack_pointers)), Cell::Int(p.max(|c| c.wscg_entries))];
-        t.rows.push([&key(p)[..], &nums.map(Cell::Num)[..], &mem[..]].concat());
+        let mem = [
+            Cell::Int(p.max(|c| c.stack_pointers)),
+            Cell::Int(p.max(|c| c.wscg_entries)),
+        ];
+        t.rows
+            .push([&key(p)[..], &nums.map(Cell::Num)[..], &mem[..]].concat());
     }
-    let y = |p: &Point, v: usize| Some(p.mean(|c| if v == 0 { c.stack_cycles } else { c.wscg_cycles } as f64));
+    let y = |p: &Point, v: usize| {
+        Some(p.mean(|c| if v == 0 { c.stack_cycles } else { c.wscg_cycles } as f64))
+    };
     Figure {
         stem: "wscg03_vs_date05",
-        title: format!("WSCG'03's chip and DATE'05's on the same memory, all pairs ({})", run.name()),
-        panels: vec![panel("clocks per query", DIST, "clocks", by_distance(points, &chips, y))],
+        title: format!(
+            "WSCG'03's chip and DATE'05's on the same memory, all pairs ({})",
+            run.name()
+        ),
+        panels: vec![panel(
+            "clocks per query",
+            DIST,
+            "clocks",
+            by_distance(points, &chips, y),
+        )],
         table: t,
     }
 }

@@ -42,13 +42,26 @@ pub fn summary_table(records: &[PoseRecord], cycles: bool) -> String {
     let _ = write!(
         out,
         "{:<28} {:>5} {:>9} {:>10} {:>10} {:>9} {:>9} {:>9} {:>10} {:>7}",
-        "pose", "n", "pairs", "dop_tests", "overlaps", "tri_tests", "uncertain", "fetches", "mem_KiB", "queue"
+        "pose",
+        "n",
+        "pairs",
+        "dop_tests",
+        "overlaps",
+        "tri_tests",
+        "uncertain",
+        "fetches",
+        "mem_KiB",
+        "queue"
     );
     if with_acc {
         let _ = write!(out, " {:>9} {:>7} {:>7}", "exact", "misses", "extras");
     }
     if with_cycles {
-        let _ = write!(out, " {:>10} {:>9} {:>9} {:>9} {:>9} {:>9} {:>8} {:>7}", "cycles", "chip_us", "setup_us", "settle_us", "e2e_us", "sw_us", "speedup", "e2e_x");
+        let _ = write!(
+            out,
+            " {:>10} {:>9} {:>9} {:>9} {:>9} {:>9} {:>8} {:>7}",
+            "cycles", "chip_us", "setup_us", "settle_us", "e2e_us", "sw_us", "speedup", "e2e_x"
+        );
     }
     let overflowed = |r: &PoseRecord| r.cycles.as_ref().is_some_and(|c| c.overflow);
     let with_ovf = with_cycles && records.iter().any(overflowed);
@@ -71,10 +84,18 @@ pub fn summary_table(records: &[PoseRecord], cycles: bool) -> String {
             mean(&|r| r.counters.uncertain as f64),
             mean(&|r| (r.counters.node_fetches + r.counters.tri_fetches) as f64),
             mean(&|r| r.counters.memory_bytes as f64 / 1024.0),
-            g.iter().map(|r| r.counters.max_queue_depth).max().unwrap_or(0) as f64,
+            g.iter()
+                .map(|r| r.counters.max_queue_depth)
+                .max()
+                .unwrap_or(0) as f64,
         );
         if with_acc {
-            let sum = |f: &dyn Fn(&Accuracy) -> u64| g.iter().filter_map(|r| r.accuracy.as_ref()).map(f).sum::<u64>();
+            let sum = |f: &dyn Fn(&Accuracy) -> u64| {
+                g.iter()
+                    .filter_map(|r| r.accuracy.as_ref())
+                    .map(f)
+                    .sum::<u64>()
+            };
             let _ = write!(
                 out,
                 " {:>9.1} {:>7} {:>7}",
@@ -84,14 +105,39 @@ pub fn summary_table(records: &[PoseRecord], cycles: bool) -> String {
             );
         }
         if with_cycles {
-            let c: Vec<_> = g.iter().filter(|r| !overflowed(r)).filter_map(|r| r.cycles.as_ref()).collect();
+            let c: Vec<_> = g
+                .iter()
+                .filter(|r| !overflowed(r))
+                .filter_map(|r| r.cycles.as_ref())
+                .collect();
             if c.is_empty() {
-                let _ = write!(out, " {:>10} {:>9} {:>9} {:>9} {:>9} {:>9} {:>8} {:>7}", "-", "-", "-", "-", "-", "-", "-", "-");
+                let _ = write!(
+                    out,
+                    " {:>10} {:>9} {:>9} {:>9} {:>9} {:>9} {:>8} {:>7}",
+                    "-", "-", "-", "-", "-", "-", "-", "-"
+                );
             } else {
-                let m = |f: &dyn Fn(&CycleRecord) -> f64| c.iter().map(|r| f(r)).sum::<f64>() / c.len() as f64;
-                let (chip, sw, e2e) = (m(&|r| r.chip_us), m(&|r| r.software_us), m(&|r| r.end_to_end_us));
+                let m = |f: &dyn Fn(&CycleRecord) -> f64| {
+                    c.iter().map(|r| f(r)).sum::<f64>() / c.len() as f64
+                };
+                let (chip, sw, e2e) = (
+                    m(&|r| r.chip_us),
+                    m(&|r| r.software_us),
+                    m(&|r| r.end_to_end_us),
+                );
                 let (setup, settle) = (m(&|r| r.host_setup_us), m(&|r| r.settle_us));
-                let _ = write!(out, " {:>10.0} {:>9.2} {:>9.2} {:>9.2} {:>9.2} {:>9.1} {:>8.1} {:>7.1}", m(&|r| r.cycles as f64), chip, setup, settle, e2e, sw, sw / chip, sw / e2e);
+                let _ = write!(
+                    out,
+                    " {:>10.0} {:>9.2} {:>9.2} {:>9.2} {:>9.2} {:>9.1} {:>8.1} {:>7.1}",
+                    m(&|r| r.cycles as f64),
+                    chip,
+                    setup,
+                    settle,
+                    e2e,
+                    sw,
+                    sw / chip,
+                    sw / e2e
+                );
             }
         }
         if with_ovf {
@@ -123,8 +169,12 @@ pub fn stall_table(records: &[PoseRecord]) -> String {
         let sum = |f: &dyn Fn(&Stats) -> u64| st.iter().map(f).sum::<u64>() as f64;
         let cycles = sum(&|r| r.cycles).max(1.0);
         let pc = |f: &dyn Fn(&Stats) -> u64| 100.0 * sum(f) / cycles;
-        let words = c.iter().map(|r| r.memory.node_words + r.memory.tri_words).sum::<u64>() as f64;
-        let per_clock = |f: &dyn Fn(&CycleRecord) -> u64| c.iter().map(|r| f(r)).sum::<u64>() as f64 / cycles;
+        let words = c
+            .iter()
+            .map(|r| r.memory.node_words + r.memory.tri_words)
+            .sum::<u64>() as f64;
+        let per_clock =
+            |f: &dyn Fn(&CycleRecord) -> u64| c.iter().map(|r| f(r)).sum::<u64>() as f64 / cycles;
         let _ = writeln!(
             out,
             "{:<28} {:>6.1} {:>7.1} {:>8.1} {:>7.1} {:>7.1} {:>7.1} {:>7.1} {:>7.1} {:>7.1} {:>7.2} {:>7.1} {:>7.3} {:>7.3} {:>7.3}",
@@ -162,15 +212,21 @@ pub fn stack_table(records: &[PoseRecord]) -> String {
     );
     for (key, g) in groups(records) {
         let c: Vec<&CycleRecord> = g.iter().filter_map(|r| r.cycles.as_ref()).collect();
-        let st: Vec<&crate::cycle::wscg03::Stats> = c.iter().filter_map(|r| r.wscg03.as_ref()).collect();
+        let st: Vec<&crate::cycle::wscg03::Stats> =
+            c.iter().filter_map(|r| r.wscg03.as_ref()).collect();
         if st.is_empty() {
             continue;
         }
-        let sum = |f: &dyn Fn(&crate::cycle::wscg03::Stats) -> u64| st.iter().map(|s| f(s)).sum::<u64>() as f64;
+        let sum = |f: &dyn Fn(&crate::cycle::wscg03::Stats) -> u64| {
+            st.iter().map(|s| f(s)).sum::<u64>() as f64
+        };
         let cycles = sum(&|s| s.cycles).max(1.0);
         let pc = |f: &dyn Fn(&crate::cycle::wscg03::Stats) -> u64| 100.0 * sum(f) / cycles;
         let lists = sum(&|s| s.lists).max(1.0);
-        let words = c.iter().map(|r| r.memory.node_words + r.memory.tri_words).sum::<u64>() as f64;
+        let words = c
+            .iter()
+            .map(|r| r.memory.node_words + r.memory.tri_words)
+            .sum::<u64>() as f64;
         let _ = writeln!(
             out,
             "{:<28} {:>8.1} {:>7.1} {:>10.1} {:>6.1} {:>7.1} {:>7.3} {:>7.3} {:>7.3} {:>7.1} {:>6.2} {:>9.1} {:>9.1} {:>6.1} {:>6.1} {:>8.1} {:>7}",
@@ -209,16 +265,36 @@ pub fn memory_table(records: &[PoseRecord]) -> String {
     let _ = writeln!(
         out,
         "{:<28} {:>10} {:>10} {:>7} {:>10} {:>8} {:>7} {:>8} {:>9} {:>9} {:>9}",
-        "pose", "node_words", "tri_words", "a_hit%", "KiB", "words/c", "busy%", "waiting%", "page_hit", "page_miss", "conflicts"
+        "pose",
+        "node_words",
+        "tri_words",
+        "a_hit%",
+        "KiB",
+        "words/c",
+        "busy%",
+        "waiting%",
+        "page_hit",
+        "page_miss",
+        "conflicts"
     );
     for (key, g) in groups(records) {
         let c: Vec<_> = g.iter().filter_map(|r| r.cycles.as_ref()).collect();
         let n = c.len().max(1) as f64;
         let sum = |f: &dyn Fn(&CycleRecord) -> u64| c.iter().map(|r| f(r)).sum::<u64>() as f64;
         let cycles = sum(&|r| r.cycles).max(1.0);
-        let st = |f: &dyn Fn(&Stats) -> u64| c.iter().filter_map(|r| r.stats.as_ref()).map(f).sum::<u64>() as f64;
+        let st = |f: &dyn Fn(&Stats) -> u64| {
+            c.iter()
+                .filter_map(|r| r.stats.as_ref())
+                .map(f)
+                .sum::<u64>() as f64
+        };
         // A's triangle words fetched (the cache's misses), on either chip
-        let wscg = |f: &dyn Fn(&crate::cycle::wscg03::Stats) -> u64| c.iter().filter_map(|r| r.wscg03.as_ref()).map(f).sum::<u64>() as f64;
+        let wscg = |f: &dyn Fn(&crate::cycle::wscg03::Stats) -> u64| {
+            c.iter()
+                .filter_map(|r| r.wscg03.as_ref())
+                .map(f)
+                .sum::<u64>() as f64
+        };
         let fetches_a = st(&|s| s.tri_fetches_a) + wscg(&|s| s.tri_fetches_a);
         // WSCG'03's Memory Controller keeps no count of clocks with a request outstanding
         let busy = match c.iter().any(|r| r.stats.is_some()) {
@@ -257,13 +333,33 @@ mod tests {
     fn stall_table_tests_per_clock() {
         let text = "[objects]\na = \"sphere:80\"\nb = \"torus:60\"\n[chip]\nk = 14\n[sweep]\ndistances = [1.2, 0.6]\norientations = 2\n[outputs]\ncycles = true\n";
         let s = Scene::parse(text, "test").unwrap();
-        let cyc = Prepared::new(&s, |spec| crate::mesh::resolve(spec).map_err(|e| e.to_string())).unwrap().run(|| ()).unwrap();
-        let d06: Vec<_> = cyc.records.iter().filter(|r| r.distance == Some(0.6)).map(|r| r.cycles.as_ref().unwrap()).collect();
+        let cyc = Prepared::new(&s, |spec| {
+            crate::mesh::resolve(spec).map_err(|e| e.to_string())
+        })
+        .unwrap()
+        .run(|| ())
+        .unwrap();
+        let d06: Vec<_> = cyc
+            .records
+            .iter()
+            .filter(|r| r.distance == Some(0.6))
+            .map(|r| r.cycles.as_ref().unwrap())
+            .collect();
         let clocks = d06.iter().map(|c| c.cycles).sum::<u64>() as f64;
-        let per = |f: fn(&&CycleRecord) -> u64| format!("{:.3}", d06.iter().map(f).sum::<u64>() as f64 / clocks);
-        let row = super::stall_table(&cyc.records).lines().find(|l| l.starts_with("d=0.6")).unwrap().to_string();
+        let per = |f: fn(&&CycleRecord) -> u64| {
+            format!("{:.3}", d06.iter().map(f).sum::<u64>() as f64 / clocks)
+        };
+        let row = super::stall_table(&cyc.records)
+            .lines()
+            .find(|l| l.starts_with("d=0.6"))
+            .unwrap()
+            .to_string();
         let cols: Vec<&str> = row.split_whitespace().collect();
-        assert_eq!(cols[cols.len() - 3..cols.len() - 1], [per(|c| c.dop_tests), per(|c| c.tri_tests)], "{row}");
+        assert_eq!(
+            cols[cols.len() - 3..cols.len() - 1],
+            [per(|c| c.dop_tests), per(|c| c.tri_tests)],
+            "{row}"
+        );
     }
 
     /// A pose whose pair queue overflowed halts early: the summary's cycle columns leave it
@@ -273,15 +369,45 @@ mod tests {
     fn summary_leaves_overflowed_poses_out_of_the_clocks() {
         let text = "[objects]\na = \"bunny\"\nb = \"bunny\"\n[query]\ntraversal = \"fifo\"\n[timing]\nqueue_entries = 16\n[sweep]\ndistances = [0.8, 2.2]\norientations = 2\n[outputs]\ncycles = true\naccuracy = true\n";
         let s = Scene::parse(text, "test").unwrap();
-        let unit = |spec: &str| crate::mesh::resolve(spec).map_err(|e| e.to_string())?.scaled_into_unit_cube().map_err(|e| e.to_string());
+        let unit = |spec: &str| {
+            crate::mesh::resolve(spec)
+                .map_err(|e| e.to_string())?
+                .scaled_into_unit_cube()
+                .map_err(|e| e.to_string())
+        };
         let cyc = Prepared::new(&s, unit).unwrap().run(|| ()).unwrap();
         let table = super::summary_table(&cyc.records, true);
-        let row = |d: &str| table.lines().find(|l| l.starts_with(d)).unwrap().split_whitespace().map(String::from).collect::<Vec<_>>();
+        let row = |d: &str| {
+            table
+                .lines()
+                .find(|l| l.starts_with(d))
+                .unwrap()
+                .split_whitespace()
+                .map(String::from)
+                .collect::<Vec<_>>()
+        };
         let (near, far) = (row("d=0.8"), row("d=2.2"));
-        assert_eq!(table.lines().next().unwrap().split_whitespace().last(), Some("ovf"), "{table}");
-        assert_eq!(near[near.len() - 9..], ["-", "-", "-", "-", "-", "-", "-", "-", "2"], "{table}");
-        let clocks: Vec<u64> = cyc.records.iter().filter(|r| r.distance == Some(2.2)).map(|r| r.cycles.as_ref().unwrap().cycles).collect();
-        assert_eq!(far[far.len() - 9], format!("{:.0}", clocks.iter().sum::<u64>() as f64 / 2.0), "{table}");
+        assert_eq!(
+            table.lines().next().unwrap().split_whitespace().last(),
+            Some("ovf"),
+            "{table}"
+        );
+        assert_eq!(
+            near[near.len() - 9..],
+            ["-", "-", "-", "-", "-", "-", "-", "-", "2"],
+            "{table}"
+        );
+        let clocks: Vec<u64> = cyc
+            .records
+            .iter()
+            .filter(|r| r.distance == Some(2.2))
+            .map(|r| r.cycles.as_ref().unwrap().cycles)
+            .collect();
+        assert_eq!(
+            far[far.len() - 9],
+            format!("{:.0}", clocks.iter().sum::<u64>() as f64 / 2.0),
+            "{table}"
+        );
         assert_eq!(far.last().map(String::as_str), Some("0"), "{table}");
         // misses and extras, before the cycle columns: the chip missed pairs near, none far
         let near_misses: u64 = near[near.len() - 11].parse().unwrap();

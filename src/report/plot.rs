@@ -111,7 +111,12 @@ pub fn write_text(p: &Path, text: &str) -> Result<(), String> {
 /// Makes the directory `out` for figures (and its parents), before the run that fills it:
 /// an error names the path and why (a file there, no permission).
 pub fn output_dir(out: &Path) -> Result<(), String> {
-    std::fs::create_dir_all(out).map_err(|e| format!("{}: cannot make the output directory ({e}): give a directory's path", out.display()))
+    std::fs::create_dir_all(out).map_err(|e| {
+        format!(
+            "{}: cannot make the output directory ({e}): give a directory's path",
+            out.display()
+        )
+    })
 }
 
 /// Writes `<stem>.csv`, `.json`, `.svg` and `.png` of `f` into `out` (which must exist);
@@ -143,7 +148,8 @@ fn register_font() {
     static ONCE: std::sync::Once = std::sync::Once::new();
     ONCE.call_once(|| {
         let bytes: &'static [u8] = include_bytes!("../../assets/fonts/LiberationSans-Regular.ttf");
-        plotters::style::register_font("sans-serif", FontStyle::Normal, bytes).unwrap_or_else(|_| panic!("the embedded font is valid"));
+        plotters::style::register_font("sans-serif", FontStyle::Normal, bytes)
+            .unwrap_or_else(|_| panic!("the embedded font is valid"));
     });
 }
 
@@ -159,7 +165,11 @@ pub fn draw(f: &Figure, path: &Path) -> Result<(), String> {
         return draw_on(SVGBackend::new(path, size).into_drawing_area(), f).map_err(err);
     }
     let mut rgb = vec![0u8; 3 * (size.0 * size.1) as usize];
-    draw_on(BitMapBackend::with_buffer(&mut rgb, size).into_drawing_area(), f).map_err(err)?;
+    draw_on(
+        BitMapBackend::with_buffer(&mut rgb, size).into_drawing_area(),
+        f,
+    )
+    .map_err(err)?;
     write_png(path, size, &rgb).map_err(|e| err(e.to_string()))
 }
 
@@ -192,12 +202,18 @@ fn write_png(path: &Path, (w, h): (u32, u32), rgb: &[u8]) -> Result<(), png::Enc
     }
 }
 
-fn draw_on<DB: DrawingBackend>(root: DrawingArea<DB, plotters::coord::Shift>, f: &Figure) -> Result<(), String> {
+fn draw_on<DB: DrawingBackend>(
+    root: DrawingArea<DB, plotters::coord::Shift>,
+    f: &Figure,
+) -> Result<(), String> {
     let e = |e: DrawingAreaErrorKind<DB::ErrorType>| e.to_string();
     root.fill(&WHITE).map_err(e)?;
     let root = root.titled(&f.title, ("sans-serif", 18)).map_err(e)?;
     for (area, p) in root.split_evenly((f.panels.len(), 1)).iter().zip(&f.panels) {
-        let (xr, yr) = (range(p, |q| q.0, p.log_x, false), range(p, |q| q.1, p.log_y, true));
+        let (xr, yr) = (
+            range(p, |q| q.0, p.log_x, false),
+            range(p, |q| q.1, p.log_y, true),
+        );
         match (p.log_x, p.log_y) {
             (false, false) => chart(area, p, xr, yr),
             (false, true) => chart(area, p, xr, yr.log_scale()),
@@ -223,11 +239,24 @@ fn legend_corner(p: &Panel) -> SeriesLabelPosition {
         .series
         .iter()
         .flat_map(|s| {
-            let n: Vec<(f64, f64)> = s.points.iter().map(|q| (nx(q.0), ny(q.1))).filter(|q| q.0.is_finite() && q.1.is_finite()).collect();
-            let segs: Vec<(f64, f64)> = n.windows(2).flat_map(|w| (1..9).map(move |i| {
-                let f = i as f64 / 9.0;
-                (w[0].0 + f * (w[1].0 - w[0].0), w[0].1 + f * (w[1].1 - w[0].1))
-            })).collect();
+            let n: Vec<(f64, f64)> = s
+                .points
+                .iter()
+                .map(|q| (nx(q.0), ny(q.1)))
+                .filter(|q| q.0.is_finite() && q.1.is_finite())
+                .collect();
+            let segs: Vec<(f64, f64)> = n
+                .windows(2)
+                .flat_map(|w| {
+                    (1..9).map(move |i| {
+                        let f = i as f64 / 9.0;
+                        (
+                            w[0].0 + f * (w[1].0 - w[0].0),
+                            w[0].1 + f * (w[1].1 - w[0].1),
+                        )
+                    })
+                })
+                .collect();
             n.into_iter().chain(segs)
         })
         .collect();
@@ -240,8 +269,13 @@ fn legend_corner(p: &Panel) -> SeriesLabelPosition {
         (SeriesLabelPosition::UpperMiddle, (0.22, 0.78), true),
         (SeriesLabelPosition::LowerMiddle, (0.22, 0.78), false),
     ];
-    let inside = |&(x, y): &(f64, f64), (lo, hi): (f64, f64), upper: bool| x > lo && x < hi && (if upper { y > 0.55 } else { y < 0.45 });
-    let (pos, ..) = places.into_iter().min_by_key(|&(_, span, u)| pts.iter().filter(|q| inside(q, span, u)).count()).expect("six places");
+    let inside = |&(x, y): &(f64, f64), (lo, hi): (f64, f64), upper: bool| {
+        x > lo && x < hi && (if upper { y > 0.55 } else { y < 0.45 })
+    };
+    let (pos, ..) = places
+        .into_iter()
+        .min_by_key(|&(_, span, u)| pts.iter().filter(|q| inside(q, span, u)).count())
+        .expect("six places");
     pos
 }
 
@@ -250,19 +284,35 @@ fn tick(v: &f64) -> String {
     match v.abs() {
         a if a >= 1e5 => format!("{v:.0e}"),
         a if a >= 10.0 => format!("{v:.0}"),
-        _ => format!("{v:.2}").trim_end_matches('0').trim_end_matches('.').to_string(),
+        _ => format!("{v:.2}")
+            .trim_end_matches('0')
+            .trim_end_matches('.')
+            .to_string(),
     }
 }
 
 /// The axis range of a panel's values, with a margin; positive values only on a log axis,
 /// whole decades on a log y axis (plotters labels no value below a log axis's first
 /// power of ten).
-fn range(p: &Panel, v: impl Fn(&(f64, f64)) -> f64, log: bool, decades: bool) -> std::ops::Range<f64> {
-    let vals = p.series.iter().flat_map(|s| s.points.iter().map(&v)).filter(|x| x.is_finite() && (!log || *x > 0.0));
-    let (lo, hi) = vals.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), x| (lo.min(x), hi.max(x)));
+fn range(
+    p: &Panel,
+    v: impl Fn(&(f64, f64)) -> f64,
+    log: bool,
+    decades: bool,
+) -> std::ops::Range<f64> {
+    let vals = p
+        .series
+        .iter()
+        .flat_map(|s| s.points.iter().map(&v))
+        .filter(|x| x.is_finite() && (!log || *x > 0.0));
+    let (lo, hi) = vals.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), x| {
+        (lo.min(x), hi.max(x))
+    });
     match (lo.is_finite(), log) {
         (false, _) => 1.0..10.0,
-        (true, true) if decades => 10f64.powf(lo.log10().floor())..10f64.powf((hi * 1.01).log10().ceil()),
+        (true, true) if decades => {
+            10f64.powf(lo.log10().floor())..10f64.powf((hi * 1.01).log10().ceil())
+        }
         (true, true) => lo / 1.5..hi * 1.5,
         (true, false) => {
             let m = ((hi - lo) * 0.05).max(1e-9);
@@ -303,11 +353,21 @@ where
     for s in &p.series {
         let color = PALETTE[s.color % PALETTE.len()];
         let style = color.stroke_width(2);
-        let pts = s.points.iter().copied().filter(|q| q.0.is_finite() && q.1.is_finite());
+        let pts = s
+            .points
+            .iter()
+            .copied()
+            .filter(|q| q.0.is_finite() && q.1.is_finite());
         let ann = match s.style {
-            Style::Solid => c.draw_series(LineSeries::new(pts.clone(), style)).map_err(e)?,
-            Style::Dashed => c.draw_series(DashedLineSeries::new(pts.clone(), 6, 4, style)).map_err(e)?,
-            Style::Points => c.draw_series(pts.clone().map(|q| Circle::new(q, 5, color.filled()))).map_err(e)?,
+            Style::Solid => c
+                .draw_series(LineSeries::new(pts.clone(), style))
+                .map_err(e)?,
+            Style::Dashed => c
+                .draw_series(DashedLineSeries::new(pts.clone(), 6, 4, style))
+                .map_err(e)?,
+            Style::Points => c
+                .draw_series(pts.clone().map(|q| Circle::new(q, 5, color.filled())))
+                .map_err(e)?,
         };
         // the legend's line: segments 0..a and b..20 (a dashed line is two), markers only a dot
         let (a, b, dot) = match s.style {
@@ -322,8 +382,15 @@ where
                 + Circle::new((10, 0), dot, color.filled())
         });
         let font = ("sans-serif", 11).into_font().color(&color);
-        c.draw_series(s.points.iter().zip(&s.labels).map(|(&q, l)| Text::new(l.clone(), q, font.clone()))).map_err(e)?;
-        c.draw_series(pts.map(|q| Circle::new(q, 3, color.filled()))).map_err(e)?;
+        c.draw_series(
+            s.points
+                .iter()
+                .zip(&s.labels)
+                .map(|(&q, l)| Text::new(l.clone(), q, font.clone())),
+        )
+        .map_err(e)?;
+        c.draw_series(pts.map(|q| Circle::new(q, 3, color.filled())))
+            .map_err(e)?;
     }
     c.configure_series_labels()
         .position(legend_corner(p))

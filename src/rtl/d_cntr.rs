@@ -203,7 +203,10 @@ impl<const N: usize, const NP1: usize, const NM1: usize> Logic for PairQueue<N, 
     #[hdl_gen]
     fn update(&mut self) {
         // every register holds unless assigned below
-        dff_setup!(self, clock, cnt, nonempty, top_r, rd_ptr, wr_ptr, byp, byp_data, rsel, order_lifo, max_r, ovf_r);
+        dff_setup!(
+            self, clock, cnt, nonempty, top_r, rd_ptr, wr_ptr, byp, byp_data, rsel, order_lifo,
+            max_r, ovf_r
+        );
         self.bank0.read_clock.next = self.clock.val();
         self.bank0.write_clock.next = self.clock.val();
         self.bank1.read_clock.next = self.clock.val();
@@ -227,7 +230,7 @@ impl<const N: usize, const NP1: usize, const NM1: usize> Logic for PairQueue<N, 
         self.cnt_p1.next = self.cnt.q.val() + 1;
         self.cnt_p2.next = self.cnt.q.val() + 2;
         self.spare.next = self.cnt_p1.val() < self.c_cap.val(); // room for two, if no pop
-        // the count after the pop is 0 (into an empty queue, or one the pop empties)
+                                                                // the count after the pop is 0 (into an empty queue, or one the pop empties)
         self.c0_zero.next = !self.nonempty.q.val() | (self.do_pop.val() & !self.many.val());
         self.e1.next = self.push2_data.val();
         if self.push.val() {
@@ -435,7 +438,8 @@ impl<const N: usize, const NP1: usize, const NM1: usize> Logic for PairQueue<N, 
             self.hit_a.next = true;
             self.hit_b.next = true;
         }
-        self.byp.d.next = (self.we_a.val() & self.hit_a.val()) | (self.we_b.val() & self.hit_b.val());
+        self.byp.d.next =
+            (self.we_a.val() & self.hit_a.val()) | (self.we_b.val() & self.hit_b.val());
         self.byp_data.d.next = self.wdata_a.val();
         if self.we_b.val() & self.hit_b.val() {
             self.byp_data.d.next = self.wdata_b.val();
@@ -445,7 +449,8 @@ impl<const N: usize, const NP1: usize, const NM1: usize> Logic for PairQueue<N, 
 
 /// A pair queue of `2^N` entries ready to simulate as a top-level block (inputs claimed,
 /// connected).
-pub fn pair_queue_top<const N: usize, const NP1: usize, const NM1: usize>() -> PairQueue<N, NP1, NM1> {
+pub fn pair_queue_top<const N: usize, const NP1: usize, const NM1: usize>() -> PairQueue<N, NP1, NM1>
+{
     top_level!(PairQueue::<N, NP1, NM1>::default(); clock, clear, lifo, push, push_data, push2, push2_data, pop)
 }
 
@@ -490,11 +495,16 @@ pub fn random_ops(rng: &mut impl Rng, n: u32, len: usize) -> Vec<QueueIn> {
     let mut ops = vec![];
     let order = |lifo| if lifo { Order::Lifo } else { Order::Fifo };
     let mut lifo = rng.random_range(0..2) == 1;
-    ops.push(QueueIn { clear: true, order: order(lifo), ..Default::default() });
+    ops.push(QueueIn {
+        clear: true,
+        order: order(lifo),
+        ..Default::default()
+    });
     model.step(&ops[0]);
     while ops.len() < len {
         // (push %, pop %) of a phase: fill past full, drain, balanced, push+pop
-        let (p_push, p_pop) = [(85, 10), (15, 80), (50, 50), (90, 90), (60, 30)][rng.random_range(0..5)];
+        let (p_push, p_pop) =
+            [(85, 10), (15, 80), (50, 50), (90, 90), (60, 30)][rng.random_range(0..5)];
         let phase = rng.random_range(cap / 2..=2 * cap + 4);
         for _ in 0..phase {
             if ops.len() == len {
@@ -514,14 +524,22 @@ pub fn random_ops(rng: &mut impl Rng, n: u32, len: usize) -> Vec<QueueIn> {
             }
             if rng.random_range(0..200) == 0 {
                 lifo = rng.random_range(0..2) == 1;
-                i = QueueIn { clear: true, order: order(lifo), ..i }; // push and pop ignored
+                i = QueueIn {
+                    clear: true,
+                    order: order(lifo),
+                    ..i
+                }; // push and pop ignored
             }
             model.step(&i);
             ops.push(i);
         }
         if rng.random_range(0..3) == 0 {
             lifo = !lifo;
-            let i = QueueIn { clear: true, order: order(lifo), ..Default::default() };
+            let i = QueueIn {
+                clear: true,
+                order: order(lifo),
+                ..Default::default()
+            };
             model.step(&i);
             ops.push(i);
         }
@@ -548,8 +566,19 @@ pub fn pair_queue_vectors(name: &str, n: u32, len: usize) -> String {
         let _ = writeln!(
             out,
             "{:x} {:x} {:x} {:0dw$x} {:x} {:0dw$x} {:x} {:x} {:x} {:0dc$x} {:0dc$x} {:x} {:0dw$x}",
-            i.clear as u8, (i.order == Order::Lifo) as u8, i.push as u8, i.push_data, i.push2.is_some() as u8, i.push2.unwrap_or_default(), i.pop as u8,
-            o.empty as u8, o.full as u8, o.count, o.max_count, o.overflow as u8, o.top_data
+            i.clear as u8,
+            (i.order == Order::Lifo) as u8,
+            i.push as u8,
+            i.push_data,
+            i.push2.is_some() as u8,
+            i.push2.unwrap_or_default(),
+            i.pop as u8,
+            o.empty as u8,
+            o.full as u8,
+            o.count,
+            o.max_count,
+            o.overflow as u8,
+            o.top_data
         );
     }
     out
@@ -741,7 +770,11 @@ impl<const N: usize, const NP1: usize, const NM1: usize> Default for DCntr<N, NP
             pend_r: Default::default(),
             pend_data: Default::default(),
             c_one16: Constant::new(1.into()),
-            c_two: Constant::new(Bits::<W>::default().replace_bit(65, true).replace_bit(66, true)),
+            c_two: Constant::new(
+                Bits::<W>::default()
+                    .replace_bit(65, true)
+                    .replace_bit(66, true),
+            ),
             head_ent: Default::default(),
             head_fetch: Default::default(),
             ent_last: Default::default(),
@@ -800,15 +833,20 @@ impl<const N: usize, const NP1: usize, const NM1: usize> Logic for DCntr<N, NP1,
             self.cur_fb.next = self.head_fetch.val().get_bit(3);
         }
         self.ent_last.next = self.ent_second.q.val() | !self.head_ent.val().get_bit(66);
-        self.need_na.next = self.go.val() & (self.ahd_pairs.q.val() != 0) & self.cur_fa.val() & self.wa_empty.val();
-        self.need_nb.next = self.go.val() & (self.ahd_pairs.q.val() != 0) & self.cur_fb.val() & self.wb_empty.val();
+        self.need_na.next =
+            self.go.val() & (self.ahd_pairs.q.val() != 0) & self.cur_fa.val() & self.wa_empty.val();
+        self.need_nb.next =
+            self.go.val() & (self.ahd_pairs.q.val() != 0) & self.cur_fb.val() & self.wb_empty.val();
         // ---- issue a pair to the DOP unit once both words are held. Issues are at least two
         // clocks apart (so child entries can be pushed one per clock) unless `one` (the
         // queue's second write port takes both in one clock), and every test in flight has
         // a place in the leaf FIFO (the credit).
         self.credit.next = bit_cast::<6, 5>(self.inflight_r.q.val()) + self.leaf_count.val();
-        self.issue.next = self.go.val() & (self.ahd_pairs.q.val() != 0)
-            & !self.need_na.val() & !self.need_nb.val() & !(self.last_issue.q.val() & !self.one.val())
+        self.issue.next = self.go.val()
+            & (self.ahd_pairs.q.val() != 0)
+            & !self.need_na.val()
+            & !self.need_nb.val()
+            & !(self.last_issue.q.val() & !self.one.val())
             & (self.credit.val() < self.credit_lim.val());
         self.last_issue.d.next = self.issue.val();
         // an issue moves to the entry's second pair, or to the next entry
@@ -833,12 +871,15 @@ impl<const N: usize, const NP1: usize, const NM1: usize> Logic for DCntr<N, NP1,
         // ---- pop the next entry when the current one is done (or issues its last pair);
         // in LIFO order not while a child entry is pushed, so that the children are on top
         // when popped, the first child first (depth first as far as the DOP pipeline allows)
-        self.child_push.next = self.pend_r.q.val() | (self.r_hit.val() & !(self.r_a_leaf.val() & self.r_b_leaf.val()));
+        self.child_push.next =
+            self.pend_r.q.val() | (self.r_hit.val() & !(self.r_a_leaf.val() & self.r_b_leaf.val()));
         // ... while the pair buffer holds at most `pf` pairs (0: empty), counted before this
         // clock's issue, so that the issue's logic is not on the path into the queue's read
         // address (it set the chip's clock)
         self.room.next = self.ahd_pairs.q.val() <= self.pf.val();
-        self.pop.next = self.go.val() & !self.queue.empty.val() & self.room.val()
+        self.pop.next = self.go.val()
+            & !self.queue.empty.val()
+            & self.room.val()
             & !(self.lifo.val() & self.child_push.val());
         self.queue.pop.next = self.pop.val();
         // the popped entry's pairs fetch the node words the pair before did not use (one
@@ -852,13 +893,17 @@ impl<const N: usize, const NP1: usize, const NM1: usize> Logic for DCntr<N, NP1,
             self.id_mask.next = 0xfffe.into();
         }
         self.fetch_a0.next = !(self.last_ok.q.val()
-            & ((self.last_a.q.val() & self.id_mask.val()) == (self.top.val().get_bits::<16>(0) & self.id_mask.val())));
+            & ((self.last_a.q.val() & self.id_mask.val())
+                == (self.top.val().get_bits::<16>(0) & self.id_mask.val())));
         self.fetch_b0.next = !(self.last_ok.q.val()
-            & ((self.last_b.q.val() & self.id_mask.val()) == (self.top.val().get_bits::<16>(16) & self.id_mask.val())));
+            & ((self.last_b.q.val() & self.id_mask.val())
+                == (self.top.val().get_bits::<16>(16) & self.id_mask.val())));
         self.fetch_a1.next = self.top_two.val()
-            & ((self.top.val().get_bits::<16>(33) & self.id_mask.val()) != (self.top.val().get_bits::<16>(0) & self.id_mask.val()));
+            & ((self.top.val().get_bits::<16>(33) & self.id_mask.val())
+                != (self.top.val().get_bits::<16>(0) & self.id_mask.val()));
         self.fetch_b1.next = self.top_two.val()
-            & ((self.top.val().get_bits::<16>(49) & self.id_mask.val()) != (self.top.val().get_bits::<16>(16) & self.id_mask.val()));
+            & ((self.top.val().get_bits::<16>(49) & self.id_mask.val())
+                != (self.top.val().get_bits::<16>(16) & self.id_mask.val()));
         self.pop_fetch.next = bit_cast::<4, 1>(self.fetch_a0.val().into())
             | (bit_cast::<4, 1>(self.fetch_b0.val().into()) << 1)
             | (bit_cast::<4, 1>(self.fetch_a1.val().into()) << 2)
@@ -875,8 +920,10 @@ impl<const N: usize, const NP1: usize, const NM1: usize> Logic for DCntr<N, NP1,
         self.ahd_pairs.d.next = self.ahd_pairs.q.val() - bit_cast::<5, 1>(self.issue.val().into());
         if self.pop.val() {
             self.ahd_tail.d.next = self.ahd_tail.q.val() + 1;
-            self.ahd_pairs.d.next = self.ahd_pairs.q.val() - bit_cast::<5, 1>(self.issue.val().into())
-                + 1 + bit_cast::<5, 1>(self.top_two.val().into());
+            self.ahd_pairs.d.next = self.ahd_pairs.q.val()
+                - bit_cast::<5, 1>(self.issue.val().into())
+                + 1
+                + bit_cast::<5, 1>(self.top_two.val().into());
             self.last_ok.d.next = true;
             self.last_a.d.next = self.top.val().get_bits::<16>(0);
             self.last_b.d.next = self.top.val().get_bits::<16>(16);
@@ -915,11 +962,13 @@ impl<const N: usize, const NP1: usize, const NM1: usize> Logic for DCntr<N, NP1,
             self.p1a.next = self.r_a.val();
             self.p1b.next = self.yb.val();
         }
-        self.e0.next = self.c_two.val() | bit_cast::<W, 16>(self.p0a.val())
+        self.e0.next = self.c_two.val()
+            | bit_cast::<W, 16>(self.p0a.val())
             | (bit_cast::<W, 16>(self.p0b.val()) << 16)
             | (bit_cast::<W, 16>(self.p1a.val()) << 33)
             | (bit_cast::<W, 16>(self.p1b.val()) << 49);
-        self.e1.next = self.c_two.val() | bit_cast::<W, 16>(self.xb.val())
+        self.e1.next = self.c_two.val()
+            | bit_cast::<W, 16>(self.xb.val())
             | (bit_cast::<W, 16>(self.r_b1.val()) << 16)
             | (bit_cast::<W, 16>(self.xb.val()) << 33)
             | (bit_cast::<W, 16>(self.r_b0.val()) << 49);
@@ -935,8 +984,10 @@ impl<const N: usize, const NP1: usize, const NM1: usize> Logic for DCntr<N, NP1,
             self.queue.push_data.next = self.pend_data.q.val();
         }
         self.leaf_in.next = self.r_hit.val() & self.r_a_leaf.val() & self.r_b_leaf.val();
-        self.leaf_pair.next = bit_cast::<64, 16>(self.r_a0.val()) | (bit_cast::<64, 16>(self.r_b0.val()) << 16)
-            | (bit_cast::<64, 16>(self.r_a1.val()) << 32) | (bit_cast::<64, 16>(self.r_b1.val()) << 48);
+        self.leaf_pair.next = bit_cast::<64, 16>(self.r_a0.val())
+            | (bit_cast::<64, 16>(self.r_b0.val()) << 16)
+            | (bit_cast::<64, 16>(self.r_a1.val()) << 32)
+            | (bit_cast::<64, 16>(self.r_b1.val()) << 48);
         if self.r_hit.val() & !(self.r_a_leaf.val() & self.r_b_leaf.val()) {
             self.queue.push.next = true;
             if self.r_a_leaf.val() | self.r_b_leaf.val() {

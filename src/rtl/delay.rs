@@ -14,7 +14,12 @@ pub struct Delay<D: Synth, const N: usize> {
 impl<D: Synth, const N: usize> Default for Delay<D, N> {
     fn default() -> Self {
         assert!(N >= 1, "Delay: N >= 1");
-        Self { clock: Default::default(), d: Default::default(), q: Default::default(), line: crate::rtl::reg_ring::array_init() }
+        Self {
+            clock: Default::default(),
+            d: Default::default(),
+            q: Default::default(),
+            line: crate::rtl::reg_ring::array_init(),
+        }
     }
 }
 

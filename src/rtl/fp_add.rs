@@ -162,14 +162,31 @@ macro_rules! fp_add {
         impl Logic for FpAdd {
             #[hdl_gen]
             fn update(&mut self) {
-                dff_setup!(self, clock, s1_valid, s1_nan, s1_inf, s1_inf_sign, s1_zero_sign, s1_sign, s1_eff_sub, s1_exp, s1_big, s1_small);
-                dff_setup!(self, clock, s2_valid, s2_sign, s2_nan, s2_inf, s2_zero, s2_ovf, s2_efield, s2_nm);
+                dff_setup!(
+                    self,
+                    clock,
+                    s1_valid,
+                    s1_nan,
+                    s1_inf,
+                    s1_inf_sign,
+                    s1_zero_sign,
+                    s1_sign,
+                    s1_eff_sub,
+                    s1_exp,
+                    s1_big,
+                    s1_small
+                );
+                dff_setup!(
+                    self, clock, s2_valid, s2_sign, s2_nan, s2_inf, s2_zero, s2_ovf, s2_efield,
+                    s2_nm
+                );
                 dff_setup!(self, clock, s3_valid, s3_y);
                 // ---- stage 1: unpack, order by magnitude, align
                 self.unpack_a.x.next = self.a.val();
                 self.unpack_b.x.next = self.b.val();
                 self.c1_b_sign.next = self.unpack_b.sign.val() ^ self.sub.val();
-                self.c1_swap.next = self.a.val().get_bits::<$WM1>(0) < self.b.val().get_bits::<$WM1>(0);
+                self.c1_swap.next =
+                    self.a.val().get_bits::<$WM1>(0) < self.b.val().get_bits::<$WM1>(0);
                 self.c1_big_sign.next = self.unpack_a.sign.val();
                 self.c1_big_exp.next = self.unpack_a.exp.val();
                 self.c1_big_sig.next = self.unpack_a.sig.val();
@@ -210,10 +227,10 @@ macro_rules! fp_add {
                 self.s1_eff_sub.d.next = self.c1_big_sign.val() ^ self.c1_small_sign.val();
                 self.s1_exp.d.next = self.c1_big_exp.val();
                 self.s1_big.d.next = bit_cast::<$P3, $P>(self.c1_big_sig.val()) << 3;
-                self.s1_small.d.next = self.c1_aligned.val().replace_bit(
-                    0,
-                    self.c1_aligned.val().get_bit(0) | self.c1_lost.val(),
-                );
+                self.s1_small.d.next = self
+                    .c1_aligned
+                    .val()
+                    .replace_bit(0, self.c1_aligned.val().get_bit(0) | self.c1_lost.val());
                 // ---- stage 2: add / subtract, normalise
                 self.c2_sum.next = bit_cast::<$P4, $P3>(self.s1_big.q.val())
                     + bit_cast::<$P4, $P3>(self.s1_small.q.val());

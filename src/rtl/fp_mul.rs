@@ -157,9 +157,18 @@ macro_rules! fp_mul {
         impl Logic for FpMul {
             #[hdl_gen]
             fn update(&mut self) {
-                dff_setup!(self, clock, s1_valid, s1_sign, s1_nan, s1_inf, s1_zero, s1_exp, s1_sig_a, s1_sig_b);
-                dff_setup!(self, clock, s2_valid, s2_sign, s2_nan, s2_inf, s2_zero, s2_exp, s2_hi, s2_sticky);
-                dff_setup!(self, clock, s3_valid, s3_sign, s3_nan, s3_inf, s3_zero, s3_ovf, s3_efield, s3_nm);
+                dff_setup!(
+                    self, clock, s1_valid, s1_sign, s1_nan, s1_inf, s1_zero, s1_exp, s1_sig_a,
+                    s1_sig_b
+                );
+                dff_setup!(
+                    self, clock, s2_valid, s2_sign, s2_nan, s2_inf, s2_zero, s2_exp, s2_hi,
+                    s2_sticky
+                );
+                dff_setup!(
+                    self, clock, s3_valid, s3_sign, s3_nan, s3_inf, s3_zero, s3_ovf, s3_efield,
+                    s3_nm
+                );
                 dff_setup!(self, clock, s4_valid, s4_y);
                 // ---- stage 1: unpack, normalise subnormal significands, exponent sum
                 self.unpack_a.x.next = self.a.val();
@@ -197,10 +206,11 @@ macro_rules! fp_mul {
                 self.c3_top.next = self.s2_hi.q.val().get_bit($P + 1);
                 self.c3_nm.next = (self.s2_hi.q.val() << 1).replace_bit(0, self.s2_sticky.q.val());
                 if self.c3_top.val() {
-                    self.c3_nm.next = self.s2_hi.q.val().replace_bit(
-                        0,
-                        self.s2_hi.q.val().get_bit(0) | self.s2_sticky.q.val(),
-                    );
+                    self.c3_nm.next = self
+                        .s2_hi
+                        .q
+                        .val()
+                        .replace_bit(0, self.s2_hi.q.val().get_bit(0) | self.s2_sticky.q.val());
                 }
                 self.c3_exp.next = self.s2_exp.q.val() + self.c3_top.val();
                 self.c3_shift.next = 0.into();
@@ -226,10 +236,10 @@ macro_rules! fp_mul {
                 self.s3_zero.d.next = self.s2_zero.q.val();
                 self.s3_ovf.d.next = self.c3_exp.val() >= self.c_exp_ovf.val();
                 self.s3_efield.d.next = self.c3_efield.val();
-                self.s3_nm.d.next = self.c3_shifted.val().replace_bit(
-                    0,
-                    self.c3_shifted.val().get_bit(0) | self.c3_lost.val(),
-                );
+                self.s3_nm.d.next = self
+                    .c3_shifted
+                    .val()
+                    .replace_bit(0, self.c3_shifted.val().get_bit(0) | self.c3_lost.val());
                 // ---- stage 4: round and pack
                 self.round.round_up.next = self.round_up.val();
                 self.round.sign.next = self.s3_sign.q.val();

@@ -72,12 +72,17 @@ macro_rules! fp_scale {
             pub fn new(c0: crate::format::ScaleConst, c1: crate::format::ScaleConst) -> Self {
                 let jmax = $F + 2;
                 for c in [c0, c1] {
-                    let ok = c.k < 0 && c.k > -200 && (1..=jmax).contains(&c.j) && (c.j2 == 0 || (c.j + 1..=jmax).contains(&c.j2));
+                    let ok = c.k < 0
+                        && c.k > -200
+                        && (1..=jmax).contains(&c.j)
+                        && (c.j2 == 0 || (c.j + 1..=jmax).contains(&c.j2));
                     assert!(ok, "FpScale: constant {c:?} out of range");
                 }
                 let k = |c: crate::format::ScaleConst| Constant::new(((256 + c.k) as u64).into());
                 let sh = |c: crate::format::ScaleConst| Constant::new(((jmax - c.j) as u64).into());
-                let t = |c: crate::format::ScaleConst| Constant::new(((jmax - c.j2.max(c.j)) as u64).into());
+                let t = |c: crate::format::ScaleConst| {
+                    Constant::new(((jmax - c.j2.max(c.j)) as u64).into())
+                };
                 let w = |x: f64| Constant::new(FORMAT.to_bits(x).into());
                 Self {
                     clock: Default::default(),
@@ -143,7 +148,9 @@ macro_rules! fp_scale {
                 if self.t_en.val() {
                     self.third.next = self.m.val() << self.t_sh.val();
                 }
-                self.sum.next = (self.m.val() << self.c_j.val()) + (self.m.val() << self.lo_sh.val()) + self.third.val();
+                self.sum.next = (self.m.val() << self.c_j.val())
+                    + (self.m.val() << self.lo_sh.val())
+                    + self.third.val();
                 self.eb.next = bit_cast::<10, $E>(self.field.val()) + self.kk.val();
                 // normalise by one bit, keep F + 1 bits, round up on any bit below them
                 self.top.next = self.sum.val().get_bit($S - 1);
@@ -155,7 +162,8 @@ macro_rules! fp_scale {
                 self.lost.next = (self.hi.val() << self.sh.val()) != self.sum.val();
                 self.rnd.next = self.hi.val() + self.lost.val();
                 self.e10.next = self.eb.val() + self.top.val() + self.rnd.val().get_bit($F + 1);
-                self.res.next = (bit_cast::<$W, 10>(self.e10.val() - self.c_ofs.val()) << self.c_f.val())
+                self.res.next = (bit_cast::<$W, 10>(self.e10.val() - self.c_ofs.val())
+                    << self.c_f.val())
                     | bit_cast::<$W, $F>(bit_cast::<$F, $S>(self.rnd.val()));
                 if (self.field.val() == 0) | (self.e10.val() < self.c_norm_min.val()) {
                     self.res.next = self.c_min.val();

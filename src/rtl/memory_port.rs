@@ -253,8 +253,12 @@ macro_rules! memory_port {
             #[hdl_gen]
             fn update(&mut self) {
                 dff_setup!(self, clock, ask_head, ask_tail, ask_n, seq_head, seq_tail);
-                dff_setup!(self, clock, wa_head, wa_tail, wa_n, wb_head, wb_tail, wb_n, na_word, nb_word);
-                dff_setup!(self, clock, tag_head, tag_tail, tag_n, ta_pend, ta_req_r, tb_pend, tb_req_r);
+                dff_setup!(
+                    self, clock, wa_head, wa_tail, wa_n, wb_head, wb_tail, wb_n, na_word, nb_word
+                );
+                dff_setup!(
+                    self, clock, tag_head, tag_tail, tag_n, ta_pend, ta_req_r, tb_pend, tb_req_r
+                );
                 for i in 0..$crate::chip::rtl::ASK_LIST {
                     self.ask_w[i].clock.next = self.clock.val();
                     self.ask_w[i].d.next = self.ask_w[i].q.val();
@@ -293,8 +297,10 @@ macro_rules! memory_port {
                         self.ask_front.next = self.ask_w[i].q.val();
                     }
                 }
-                self.ask_ok.next = self.go.val() & (self.ask_n.q.val() != 0)
-                    & (self.pf_on.val() | (self.ask_front.val().get_bits::<5>(17) == self.seq_head.q.val()));
+                self.ask_ok.next = self.go.val()
+                    & (self.ask_n.q.val() != 0)
+                    & (self.pf_on.val()
+                        | (self.ask_front.val().get_bits::<5>(17) == self.seq_head.q.val()));
                 self.port_free.next = self.tag_n.q.val() <= bit_cast::<5, 4>(self.port_out.val());
                 self.req_dst.next = bit_cast::<2, 1>(self.ask_front.val().get_bits::<1>(16));
                 self.req_id.next = self.ask_front.val().get_bits::<16>(0);
@@ -338,9 +344,12 @@ macro_rules! memory_port {
                 self.map_lp.next = bit_cast::<5, 4>(self.map.val().get_bits::<4>(12));
                 self.map_lb.next = bit_cast::<5, 4>(self.map.val().get_bits::<4>(16));
                 self.req_addr.next = self.req_base.val()
-                    + ((self.req_rec.val() >> (self.map_ln.val() + self.map_lp.val())) << (self.map_lb.val() + self.map_lp.val()))
-                    + ((self.req_rec.val() & ((self.c_one24.val() << self.map_ln.val()) - 1)) << self.map_lp.val())
-                    + ((self.req_rec.val() >> self.map_ln.val()) & ((self.c_one24.val() << self.map_lp.val()) - 1));
+                    + ((self.req_rec.val() >> (self.map_ln.val() + self.map_lp.val()))
+                        << (self.map_lb.val() + self.map_lp.val()))
+                    + ((self.req_rec.val() & ((self.c_one24.val() << self.map_ln.val()) - 1))
+                        << self.map_lp.val())
+                    + ((self.req_rec.val() >> self.map_ln.val())
+                        & ((self.c_one24.val() << self.map_lp.val()) - 1));
                 self.mem_req_valid.next = self.req.val();
                 self.mem_req_addr.next = self.req_addr.val();
                 self.accept.next = self.req.val() & self.mem_req_ready.val();
@@ -411,48 +420,69 @@ macro_rules! memory_port {
                         self.wb_head.d.next = self.wb_head.q.val() + 1;
                     }
                 }
-                self.wa_n.d.next = self.wa_n.q.val() + bit_cast::<5, 1>((self.resp.val() & (self.resp_dst.val() == 0)).into())
+                self.wa_n.d.next = self.wa_n.q.val()
+                    + bit_cast::<5, 1>((self.resp.val() & (self.resp_dst.val() == 0)).into())
                     - bit_cast::<5, 1>((self.issue.val() & self.cur_fa.val()).into());
-                self.wb_n.d.next = self.wb_n.q.val() + bit_cast::<5, 1>((self.resp.val() & (self.resp_dst.val() == 1)).into())
+                self.wb_n.d.next = self.wb_n.q.val()
+                    + bit_cast::<5, 1>((self.resp.val() & (self.resp_dst.val() == 1)).into())
                     - bit_cast::<5, 1>((self.issue.val() & self.cur_fb.val()).into());
                 // ---- a pop: its node words join the ask list in pair order (A0 B0 A1 B1, the
                 // fetched ones), each with its pair's number
                 self.top_two.next = self.pop_entry.val().get_bit(66);
                 if self.pop.val() {
-                    self.seq_tail.d.next = self.seq_tail.q.val() + 1 + bit_cast::<5, 1>(self.top_two.val().into());
+                    self.seq_tail.d.next =
+                        self.seq_tail.q.val() + 1 + bit_cast::<5, 1>(self.top_two.val().into());
                 }
                 self.seq_tail1.next = self.seq_tail.q.val() + 1;
                 self.ask_off1.next = bit_cast::<5, 1>(self.pop_fetch.val().get_bits::<1>(0));
-                self.ask_off2.next = self.ask_off1.val() + bit_cast::<5, 1>(self.pop_fetch.val().get_bits::<1>(1));
-                self.ask_off3.next = self.ask_off2.val() + bit_cast::<5, 1>(self.pop_fetch.val().get_bits::<1>(2));
-                self.ask_new.next = self.ask_off3.val() + bit_cast::<5, 1>(self.pop_fetch.val().get_bits::<1>(3));
+                self.ask_off2.next =
+                    self.ask_off1.val() + bit_cast::<5, 1>(self.pop_fetch.val().get_bits::<1>(1));
+                self.ask_off3.next =
+                    self.ask_off2.val() + bit_cast::<5, 1>(self.pop_fetch.val().get_bits::<1>(2));
+                self.ask_new.next =
+                    self.ask_off3.val() + bit_cast::<5, 1>(self.pop_fetch.val().get_bits::<1>(3));
                 self.put0.next = self.c_one32.val() << self.ask_tail.q.val();
-                self.put1.next = self.c_one32.val() << (self.ask_tail.q.val() + self.ask_off1.val());
-                self.put2.next = self.c_one32.val() << (self.ask_tail.q.val() + self.ask_off2.val());
-                self.put3.next = self.c_one32.val() << (self.ask_tail.q.val() + self.ask_off3.val());
+                self.put1.next =
+                    self.c_one32.val() << (self.ask_tail.q.val() + self.ask_off1.val());
+                self.put2.next =
+                    self.c_one32.val() << (self.ask_tail.q.val() + self.ask_off2.val());
+                self.put3.next =
+                    self.c_one32.val() << (self.ask_tail.q.val() + self.ask_off3.val());
                 for i in 0..$crate::chip::rtl::ASK_LIST {
-                    if self.pop.val() & self.pop_fetch.val().get_bit(0) & self.put0.val().get_bit(i) {
-                        self.ask_w[i].d.next = bit_cast::<22, 16>(self.pop_entry.val().get_bits::<16>(0))
-                            | (bit_cast::<22, 5>(self.seq_tail.q.val()) << 17);
+                    if self.pop.val() & self.pop_fetch.val().get_bit(0) & self.put0.val().get_bit(i)
+                    {
+                        self.ask_w[i].d.next =
+                            bit_cast::<22, 16>(self.pop_entry.val().get_bits::<16>(0))
+                                | (bit_cast::<22, 5>(self.seq_tail.q.val()) << 17);
                     }
-                    if self.pop.val() & self.pop_fetch.val().get_bit(1) & self.put1.val().get_bit(i) {
-                        self.ask_w[i].d.next = bit_cast::<22, 16>(self.pop_entry.val().get_bits::<16>(16))
-                            | (bit_cast::<22, 5>(self.seq_tail.q.val()) << 17) | self.c_ask_b.val();
+                    if self.pop.val() & self.pop_fetch.val().get_bit(1) & self.put1.val().get_bit(i)
+                    {
+                        self.ask_w[i].d.next =
+                            bit_cast::<22, 16>(self.pop_entry.val().get_bits::<16>(16))
+                                | (bit_cast::<22, 5>(self.seq_tail.q.val()) << 17)
+                                | self.c_ask_b.val();
                     }
-                    if self.pop.val() & self.pop_fetch.val().get_bit(2) & self.put2.val().get_bit(i) {
-                        self.ask_w[i].d.next = bit_cast::<22, 16>(self.pop_entry.val().get_bits::<16>(33))
-                            | (bit_cast::<22, 5>(self.seq_tail1.val()) << 17);
+                    if self.pop.val() & self.pop_fetch.val().get_bit(2) & self.put2.val().get_bit(i)
+                    {
+                        self.ask_w[i].d.next =
+                            bit_cast::<22, 16>(self.pop_entry.val().get_bits::<16>(33))
+                                | (bit_cast::<22, 5>(self.seq_tail1.val()) << 17);
                     }
-                    if self.pop.val() & self.pop_fetch.val().get_bit(3) & self.put3.val().get_bit(i) {
-                        self.ask_w[i].d.next = bit_cast::<22, 16>(self.pop_entry.val().get_bits::<16>(49))
-                            | (bit_cast::<22, 5>(self.seq_tail1.val()) << 17) | self.c_ask_b.val();
+                    if self.pop.val() & self.pop_fetch.val().get_bit(3) & self.put3.val().get_bit(i)
+                    {
+                        self.ask_w[i].d.next =
+                            bit_cast::<22, 16>(self.pop_entry.val().get_bits::<16>(49))
+                                | (bit_cast::<22, 5>(self.seq_tail1.val()) << 17)
+                                | self.c_ask_b.val();
                     }
                 }
                 self.ask_take.next = self.accept.val() & !self.req_dst.val().get_bit(1);
-                self.ask_n.d.next = self.ask_n.q.val() - bit_cast::<6, 1>(self.ask_take.val().into());
+                self.ask_n.d.next =
+                    self.ask_n.q.val() - bit_cast::<6, 1>(self.ask_take.val().into());
                 if self.pop.val() {
                     self.ask_tail.d.next = self.ask_tail.q.val() + self.ask_new.val();
-                    self.ask_n.d.next = self.ask_n.q.val() - bit_cast::<6, 1>(self.ask_take.val().into())
+                    self.ask_n.d.next = self.ask_n.q.val()
+                        - bit_cast::<6, 1>(self.ask_take.val().into())
                         + bit_cast::<6, 5>(self.ask_new.val());
                 }
                 // ---- a start: the ask list and the node-word FIFOs empty

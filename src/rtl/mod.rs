@@ -31,7 +31,6 @@
 //! `DFF`s, `sK_x$q` in Verilog / VCD), `cK_*` the combinational signals of stage K, and
 //! sub-blocks by role (`unpack_a`, `norm_a`, `sig_mul`, `round`).
 
-
 /// A block ready to simulate as a top level: its inputs claimed (`connect`), then
 /// `connect_all`.
 macro_rules! top_level {
@@ -122,20 +121,66 @@ macro_rules! fp_format {
 
 /// Units for `binary32` (e8m23).
 pub mod b32 {
-    fp_format!(Format::BINARY32, 32, 31, 8, 23, 24, 26, 27, 28, 48, 50,
-        norm_p(8, 16, 20, 22, 23), norm_p3(11, 19, 23, 25, 26));
+    fp_format!(
+        Format::BINARY32,
+        32,
+        31,
+        8,
+        23,
+        24,
+        26,
+        27,
+        28,
+        48,
+        50,
+        norm_p(8, 16, 20, 22, 23),
+        norm_p3(11, 19, 23, 25, 26)
+    );
     // the papers' chip: node word 1 + 24 * 32 + 64 bits (wider than a triangle word, 23 * 32 + 2)
-    crate::rtl::chip::chip!(24, DopUnit24 = DopUnit24::new, TriUnit = TriUnit::new, 32, 32, 833, 738, 2048, 1666);
+    crate::rtl::chip::chip!(
+        24,
+        DopUnit24 = DopUnit24::new,
+        TriUnit = TriUnit::new,
+        32,
+        32,
+        833,
+        738,
+        2048,
+        1666
+    );
     crate::rtl::tcheck_fold::tcheck_fold!(32, 31, 8, 23);
     crate::rtl::tri_unit_fold::tri_unit_fold!(32);
 }
 
 /// Units for e8m15 (`Format::REDUCED`).
 pub mod e8m15 {
-    fp_format!(Format::REDUCED, 24, 23, 8, 15, 16, 18, 19, 20, 32, 34,
-        norm_p(0, 8, 12, 14, 15), norm_p3(3, 11, 15, 17, 18));
+    fp_format!(
+        Format::REDUCED,
+        24,
+        23,
+        8,
+        15,
+        16,
+        18,
+        19,
+        20,
+        32,
+        34,
+        norm_p(0, 8, 12, 14, 15),
+        norm_p3(3, 11, 15, 17, 18)
+    );
     // node word 1 + 6 * 24 + 64 bits, triangle word 23 * 24 + 2
-    crate::rtl::chip::chip!(6, DopUnit6 = DopUnit6::new, TriUnit = TriUnit::new, 24, 24, 209, 554, 554, 209);
+    crate::rtl::chip::chip!(
+        6,
+        DopUnit6 = DopUnit6::new,
+        TriUnit = TriUnit::new,
+        24,
+        24,
+        209,
+        554,
+        554,
+        209
+    );
     crate::rtl::tcheck_fold::tcheck_fold!(24, 23, 8, 15);
     crate::rtl::tri_unit_fold::tri_unit_fold!(24);
 }
@@ -150,7 +195,17 @@ pub mod e8m15_b32 {
     use crate::format::Rounding;
     use rust_hdl::prelude::*;
     // node word 1 + 24 * 24 + 64 bits, triangle word 23 * 32 + 2 (the wider)
-    crate::rtl::chip::chip!(24, DopUnit24 = DopUnit24::new, TriUnit = TriUnit::new, 24, 32, 641, 738, 738, 641);
+    crate::rtl::chip::chip!(
+        24,
+        DopUnit24 = DopUnit24::new,
+        TriUnit = TriUnit::new,
+        24,
+        32,
+        641,
+        738,
+        738,
+        641
+    );
 }
 
 /// The k = 6 e8m15 chip with its TRI_UNIT folded (issue 33): e8m15's DOP unit and e8m15's
@@ -165,10 +220,24 @@ pub mod e8m15_fold16 {
     /// TRI_UNIT folded to the chip's interval, T.CHECK rounding with `r`.
     fn tri_unit(r: Rounding) -> TriUnitFold {
         let ii = ChipKind::K6E8m15Fold16.tri_interval() as usize;
-        TriUnitFold::new(crate::fold::tri_unit_plan(ii, crate::fold::plan::Binding::Shared).expect("the chip's interval is even"), r)
+        TriUnitFold::new(
+            crate::fold::tri_unit_plan(ii, crate::fold::plan::Binding::Shared)
+                .expect("the chip's interval is even"),
+            r,
+        )
     }
     // node word 1 + 6 * 24 + 64 bits, triangle word 23 * 24 + 2
-    crate::rtl::chip::chip!(6, DopUnit6 = DopUnit6::new, TriUnitFold = tri_unit, 24, 24, 209, 554, 554, 209);
+    crate::rtl::chip::chip!(
+        6,
+        DopUnit6 = DopUnit6::new,
+        TriUnitFold = tri_unit,
+        24,
+        24,
+        209,
+        554,
+        554,
+        209
+    );
 }
 
 /// The k = 6 e8m15 chip with both units folded (issue 33), small enough for an ECP5
@@ -189,7 +258,10 @@ pub mod e8m15_dop6_tri32 {
     /// TRI_UNIT folded to the chip's interval, T.CHECK rounding with `r`, its registers
     /// bound per reader (`Binding::PerReader`: for the FPGA's router).
     fn tri_unit(r: Rounding) -> TriUnitFold {
-        let plan = crate::fold::tri_unit_plan(KIND.tri_interval() as usize, crate::fold::plan::Binding::PerReader);
+        let plan = crate::fold::tri_unit_plan(
+            KIND.tri_interval() as usize,
+            crate::fold::plan::Binding::PerReader,
+        );
         TriUnitFold::new(plan.expect("the chip's interval is even"), r)
     }
     // node word 1 + 6 * 24 + 64 bits, triangle word 23 * 24 + 2
@@ -209,7 +281,14 @@ macro_rules! check_widths {
             let node = layout::node_bits(c.k, c.format.dop.width() as usize);
             assert!($m::CHIP_WORD_BITS == ChipKind::$kind.word_bits());
             assert!($m::TRI_WORD_BITS == layout::tri_bits(c.format.tri.width() as usize));
-            assert!($m::RECORD_BITS == if ChipKind::$kind.records() { 2 * node } else { node });
+            assert!(
+                $m::RECORD_BITS
+                    == if ChipKind::$kind.records() {
+                        2 * node
+                    } else {
+                        node
+                    }
+            );
         };
     };
 }
@@ -218,7 +297,16 @@ check_widths!(b32, K24B32);
 check_widths!(e8m15_b32, K24E8m15B32);
 check_widths!(e8m15_fold16, K6E8m15Fold16);
 check_widths!(e8m15_dop6_tri32, K6E8m15Dop6Tri32);
-const _: () = assert!(b32::TCheck::LATENCY == crate::chip::rtl::TCHECK_LATENCY && e8m15::TCheck::LATENCY == crate::chip::rtl::TCHECK_LATENCY);
-const _: () = assert!(b32::FpMul::LATENCY == crate::chip::rtl::FP_MUL_LATENCY && b32::FpAdd::LATENCY == crate::chip::rtl::FP_ADD_LATENCY);
+const _: () = assert!(
+    b32::TCheck::LATENCY == crate::chip::rtl::TCHECK_LATENCY
+        && e8m15::TCheck::LATENCY == crate::chip::rtl::TCHECK_LATENCY
+);
+const _: () = assert!(
+    b32::FpMul::LATENCY == crate::chip::rtl::FP_MUL_LATENCY
+        && b32::FpAdd::LATENCY == crate::chip::rtl::FP_ADD_LATENCY
+);
 const _: () = assert!(b32::FpScale::LATENCY == crate::chip::rtl::FP_SCALE_LATENCY);
-const _: () = assert!(b32::TriUnit::LATENCY == crate::chip::rtl::TRI_LATENCY && e8m15::TriUnit::LATENCY == crate::chip::rtl::TRI_LATENCY);
+const _: () = assert!(
+    b32::TriUnit::LATENCY == crate::chip::rtl::TRI_LATENCY
+        && e8m15::TriUnit::LATENCY == crate::chip::rtl::TRI_LATENCY
+);

@@ -42,7 +42,12 @@ mod kept {
 
     impl<T: Synth> KeptDff<T> {
         pub fn new(keep: bool) -> Self {
-            Self { d: Default::default(), q: Default::default(), clock: Default::default(), keep: Fixed(std::sync::Arc::new(keep)) }
+            Self {
+                d: Default::default(),
+                q: Default::default(),
+                clock: Default::default(),
+                keep: Fixed(std::sync::Arc::new(keep)),
+            }
         }
     }
 
@@ -57,7 +62,10 @@ mod kept {
         }
         fn hdl(&self) -> Verilog {
             match DFF::<T>::default().hdl() {
-                Verilog::Custom(v) if *self.keep.0 => Verilog::Custom(v.replace("always @(posedge clock)", "(* keep *) always @(posedge clock)")),
+                Verilog::Custom(v) if *self.keep.0 => Verilog::Custom(v.replace(
+                    "always @(posedge clock)",
+                    "(* keep *) always @(posedge clock)",
+                )),
                 v => v,
             }
         }
@@ -72,7 +80,11 @@ pub(crate) fn read_verilog(r: &crate::fold::plan::Read, w: usize, e: usize, f: u
         format!("{{1'b0, {q}[{}:0]}}", w - 2)
     } else if r.dbl {
         let x = format!("{q}[{}:{f}]", w - 2);
-        format!("((({x} != {e}'d0) && ({x} != {e}'d{})) ? {q} + {w}'d{} : {q})", (1u64 << e) - 1, 1u64 << f)
+        format!(
+            "((({x} != {e}'d0) && ({x} != {e}'d{})) ? {q} + {w}'d{} : {q})",
+            (1u64 << e) - 1,
+            1u64 << f
+        )
     } else {
         q
     }
@@ -82,13 +94,23 @@ pub(crate) fn read_verilog(r: &crate::fold::plan::Read, w: usize, e: usize, f: u
 /// the counter, every register's input, every unit's operand multiplexers (a `case` on
 /// the counter), the signs' inputs and the output registers. `units` names the unit
 /// vectors per class (`Class::ALL` order).
-pub(crate) fn body_verilog(p: &crate::fold::plan::Plan, w: usize, ew: usize, f: usize, units: [&str; 7]) -> String {
+pub(crate) fn body_verilog(
+    p: &crate::fold::plan::Plan,
+    w: usize,
+    ew: usize,
+    f: usize,
+    units: [&str; 7],
+) -> String {
     use crate::fold::plan::Src;
     use std::fmt::Write;
     let mut v = String::new();
     let c = "counter$q";
     let _ = writeln!(v, "always @(*) begin\n  run$clock = clock;\n  run$d = run$q | valid_in;\n  counter$clock = clock;");
-    let _ = writeln!(v, "  counter$d = (!(run$q | valid_in) || {c} == 8'd{}) ? 8'd0 : {c} + 8'd1;", p.ii - 1);
+    let _ = writeln!(
+        v,
+        "  counter$d = (!(run$q | valid_in) || {c} == 8'd{}) ? 8'd0 : {c} + 8'd1;",
+        p.ii - 1
+    );
     let inputs = input_names();
     for ch in &p.words {
         for i in 0..ch.len {
@@ -98,12 +120,24 @@ pub(crate) fn body_verilog(p: &crate::fold::plan::Plan, w: usize, ew: usize, f: 
                 (0, Src::Unit(k, u)) => format!("{}${u}$y", units[k]),
                 _ => format!("regs${}$q", r - 1),
             };
-            let _ = writeln!(v, "  regs${r}$clock = clock;\n  regs${r}$d = ({c} == 8'd{}) ? {src} : regs${r}$q;", ch.slot);
+            let _ = writeln!(
+                v,
+                "  regs${r}$clock = clock;\n  regs${r}$d = ({c} == 8'd{}) ? {src} : regs${r}$q;",
+                ch.slot
+            );
         }
     }
-    for (name, ch, port) in [("exact", &p.exact, "v_exact"), ("valid", &p.valid, "valid_in"), ("tags", &p.tag, "tag")] {
+    for (name, ch, port) in [
+        ("exact", &p.exact, "v_exact"),
+        ("valid", &p.valid, "valid_in"),
+        ("tags", &p.tag, "tag"),
+    ] {
         for i in 0..ch.len {
-            let src = if i == 0 { port.to_string() } else { format!("{name}${}$q", i - 1) };
+            let src = if i == 0 {
+                port.to_string()
+            } else {
+                format!("{name}${}$q", i - 1)
+            };
             let _ = writeln!(v, "  {name}${i}$clock = clock;\n  {name}${i}$d = ({c} == 8'd{}) ? {src} : {name}${i}$q;", ch.slot);
         }
     }
@@ -118,7 +152,11 @@ pub(crate) fn body_verilog(p: &crate::fold::plan::Plan, w: usize, ew: usize, f: 
             let _ = writeln!(v, "  case ({c})");
             for (slot, iss) in slots.iter().enumerate() {
                 let Some(iss) = iss else { continue };
-                let _ = write!(v, "    8'd{slot}: begin {n}$a = {};", read_verilog(&iss.a, w, ew, f));
+                let _ = write!(
+                    v,
+                    "    8'd{slot}: begin {n}$a = {};",
+                    read_verilog(&iss.a, w, ew, f)
+                );
                 if let Some(b) = &iss.b {
                     let _ = write!(v, " {n}$b = {};", read_verilog(b, w, ew, f));
                 }
@@ -126,13 +164,23 @@ pub(crate) fn body_verilog(p: &crate::fold::plan::Plan, w: usize, ew: usize, f: 
                     let _ = write!(v, " {n}$sub = 1'b{};", iss.sub as u8);
                 }
                 if scale {
-                    let sel = iss.sel.map_or("1'b0".to_string(), |r| format!("exact${r}$q"));
+                    let sel = iss
+                        .sel
+                        .map_or("1'b0".to_string(), |r| format!("exact${r}$q"));
                     let _ = write!(v, " {n}$sel = {sel};");
                 }
                 let _ = writeln!(v, " end");
             }
             let _ = write!(v, "    default: begin {n}$a = {w}'d0;");
-            let _ = write!(v, "{}", if scale { format!(" {n}$sel = 1'b0;") } else { format!(" {n}$b = {w}'d0;") });
+            let _ = write!(
+                v,
+                "{}",
+                if scale {
+                    format!(" {n}$sel = 1'b0;")
+                } else {
+                    format!(" {n}$b = {w}'d0;")
+                }
+            );
             if k == 2 || k == 3 {
                 let _ = write!(v, " {n}$sub = 1'b0;");
             }
@@ -144,9 +192,21 @@ pub(crate) fn body_verilog(p: &crate::fold::plan::Plan, w: usize, ew: usize, f: 
     let (mut hit, mut miss) = (vec![], vec![]);
     for e in 0..3 {
         let q = (e + 1) % 3;
-        let pairs = [(o.z[e], o.e_z[e]), (o.z[q], o.e_z[q]), (o.rz[e], o.rz_bound[e]), (o.a[e], o.a_bound[e]), (o.b[e], o.b_bound[e]), (o.s[e], o.s_bound[e])];
+        let pairs = [
+            (o.z[e], o.e_z[e]),
+            (o.z[q], o.e_z[q]),
+            (o.rz[e], o.rz_bound[e]),
+            (o.a[e], o.a_bound[e]),
+            (o.b[e], o.b_bound[e]),
+            (o.s[e], o.s_bound[e]),
+        ];
         for (i, (x, b)) in pairs.iter().enumerate() {
-            let _ = writeln!(v, "  signs${}$x = regs${x}$q;\n  signs${}$e = regs${b}$q;", 6 * e + i, 6 * e + i);
+            let _ = writeln!(
+                v,
+                "  signs${}$x = regs${x}$q;\n  signs${}$e = regs${b}$q;",
+                6 * e + i,
+                6 * e + i
+            );
         }
         // signs pz qz rz a b s; bit 0 positive, bit 1 negative
         let s = |i: usize, neg: bool| format!("signs${}$sgn[{}]", 6 * e + i, neg as u8);
@@ -155,18 +215,42 @@ pub(crate) fn body_verilog(p: &crate::fold::plan::Plan, w: usize, ew: usize, f: 
         let down = up.map(|x| !x);
         let ct = format!("(({}) | ({}))", t(up).join(" & "), t(down).join(" & "));
         let cf = format!("(({}) & ({}))", t(down).join(" | "), t(up).join(" | "));
-        let _ = writeln!(v, "  out_s_x${e}$clock = clock;\n  out_s_x${e}$d = {take} ? regs${}$q : out_s_x${e}$q;", o.s[e]);
-        let _ = writeln!(v, "  out_s_b${e}$clock = clock;\n  out_s_b${e}$d = {take} ? regs${}$q : out_s_b${e}$q;", o.s_bound[e]);
+        let _ = writeln!(
+            v,
+            "  out_s_x${e}$clock = clock;\n  out_s_x${e}$d = {take} ? regs${}$q : out_s_x${e}$q;",
+            o.s[e]
+        );
+        let _ = writeln!(
+            v,
+            "  out_s_b${e}$clock = clock;\n  out_s_b${e}$d = {take} ? regs${}$q : out_s_b${e}$q;",
+            o.s_bound[e]
+        );
         let _ = writeln!(v, "  out_cross_t${e}$clock = clock;\n  out_cross_t${e}$d = {take} ? {ct} : out_cross_t${e}$q;");
         let _ = writeln!(v, "  out_cross_f${e}$clock = clock;\n  out_cross_f${e}$d = {take} ? {cf} : out_cross_f${e}$q;");
         hit.push(ct);
         miss.push(cf);
         let _ = writeln!(v, "  s_x${e} = out_s_x${e}$q;\n  s_b${e} = out_s_b${e}$q;\n  cross_t${e} = out_cross_t${e}$q;\n  cross_f${e} = out_cross_f${e}$q;");
     }
-    let _ = writeln!(v, "  out_hit$clock = clock;\n  out_hit$d = {take} ? ({}) : out_hit$q;", hit.join(" | "));
-    let _ = writeln!(v, "  out_miss$clock = clock;\n  out_miss$d = {take} ? ({}) : out_miss$q;", miss.join(" & "));
-    let _ = writeln!(v, "  out_tag$clock = clock;\n  out_tag$d = {take} ? tags${}$q : out_tag$q;", p.side_out);
-    let _ = writeln!(v, "  out_valid$clock = clock;\n  out_valid$d = {take} & valid${}$q;", p.side_out);
+    let _ = writeln!(
+        v,
+        "  out_hit$clock = clock;\n  out_hit$d = {take} ? ({}) : out_hit$q;",
+        hit.join(" | ")
+    );
+    let _ = writeln!(
+        v,
+        "  out_miss$clock = clock;\n  out_miss$d = {take} ? ({}) : out_miss$q;",
+        miss.join(" & ")
+    );
+    let _ = writeln!(
+        v,
+        "  out_tag$clock = clock;\n  out_tag$d = {take} ? tags${}$q : out_tag$q;",
+        p.side_out
+    );
+    let _ = writeln!(
+        v,
+        "  out_valid$clock = clock;\n  out_valid$d = {take} & valid${}$q;",
+        p.side_out
+    );
     let _ = writeln!(v, "  hit = out_hit$q;\n  miss = out_miss$q;\n  tag_out = out_tag$q;\n  valid_out = out_valid$q;\nend");
     v
 }

@@ -64,7 +64,8 @@ macro_rules! tri_cache {
                     self.held_id.next = self.last_id.q.val();
                     self.word.next = self.last_word.q.val();
                 }
-                self.hit.next = ((self.valid.q.val() & (self.c_one128.val() << self.line.val())) != 0)
+                self.hit.next = ((self.valid.q.val() & (self.c_one128.val() << self.line.val()))
+                    != 0)
                     & (self.held_id.val() == self.id.val());
                 self.ids.write_enable.next = self.fill.val();
                 self.ids.write_address.next = self.fill_line.val();
@@ -76,7 +77,8 @@ macro_rules! tri_cache {
                 self.words.read_address.next = self.next_line.val();
                 self.byp.d.next = self.fill.val() & (self.fill_line.val() == self.next_line.val());
                 if self.fill.val() {
-                    self.valid.d.next = self.valid.q.val() | (self.c_one128.val() << self.fill_line.val());
+                    self.valid.d.next =
+                        self.valid.q.val() | (self.c_one128.val() << self.fill_line.val());
                     self.last_id.d.next = self.fill_id.val();
                     self.last_word.d.next = self.fill_word.val();
                 }

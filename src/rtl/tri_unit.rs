@@ -339,10 +339,12 @@ macro_rules! tri_unit {
                 self.d2_f.next = self.tc_ba.miss.val() & !self.degenerate_wait.q.val().get_bit(0);
                 self.result.next = bit_cast::<34, 32>(self.tc_ab.tag_out.val()) << 2;
                 if self.d1_t.val() | self.d2_t.val() {
-                    self.result.next = (bit_cast::<34, 32>(self.tc_ab.tag_out.val()) << 2) | self.c_hit.val();
+                    self.result.next =
+                        (bit_cast::<34, 32>(self.tc_ab.tag_out.val()) << 2) | self.c_hit.val();
                 }
                 if !(self.d1_t.val() | self.d2_t.val()) & !(self.d1_f.val() & self.d2_f.val()) {
-                    self.result.next = (bit_cast::<34, 32>(self.tc_ab.tag_out.val()) << 2) | self.c_uncertain.val();
+                    self.result.next = (bit_cast::<34, 32>(self.tc_ab.tag_out.val()) << 2)
+                        | self.c_uncertain.val();
                 }
                 self.fifo.write.next = self.tc_ab.valid_out.val();
                 self.fifo.data_in.next = self.result.val();

@@ -16,7 +16,11 @@ pub(crate) const FRAME_REGS: usize = 30;
 
 /// The write address of frame register `k`.
 pub(crate) fn frame_addr(k: usize) -> usize {
-    if k < 15 { k } else { k + 1 }
+    if k < 15 {
+        k
+    } else {
+        k + 1
+    }
 }
 
 /// The Verilog source of T.CHECK's input word `i` for direction `ba` (false: A's edges against
@@ -43,29 +47,74 @@ pub(crate) fn body_verilog(half: usize, tc_latency: usize) -> String {
     let give = "(out_ready && !fifo$empty)";
     let phase = format!("({c} == 8'd{half})");
     let mut v = String::new();
-    let _ = writeln!(v, "always @(*) begin\n  in_ready = ({c} == 8'd0) && (count$q != 9'd{full});");
-    let _ = writeln!(v, "  run$clock = clock;\n  run$d = run$q | {take};\n  counter$clock = clock;");
-    let _ = writeln!(v, "  counter$d = (!(run$q | {take}) || {c} == 8'd{}) ? 8'd0 : {c} + 8'd1;", ii - 1);
+    let _ = writeln!(
+        v,
+        "always @(*) begin\n  in_ready = ({c} == 8'd0) && (count$q != 9'd{full});"
+    );
+    let _ = writeln!(
+        v,
+        "  run$clock = clock;\n  run$d = run$q | {take};\n  counter$clock = clock;"
+    );
+    let _ = writeln!(
+        v,
+        "  counter$d = (!(run$q | {take}) || {c} == 8'd{}) ? 8'd0 : {c} + 8'd1;",
+        ii - 1
+    );
     for k in 0..FRAME_REGS {
         let _ = writeln!(v, "  frame${k}$clock = clock;\n  frame${k}$d = (load_en && load_addr == 5'd{}) ? load_data : frame${k}$q;", frame_addr(k));
     }
     for (i, name) in input_names().iter().enumerate() {
-        let _ = writeln!(v, "  held${i}$clock = clock;\n  held${i}$d = ({c} == 8'd0) ? {} : held${i}$q;", word_verilog(true, i));
-        let _ = writeln!(v, "  tc${name} = {phase} ? held${i}$q : {};", word_verilog(false, i));
+        let _ = writeln!(
+            v,
+            "  held${i}$clock = clock;\n  held${i}$d = ({c} == 8'd0) ? {} : held${i}$q;",
+            word_verilog(true, i)
+        );
+        let _ = writeln!(
+            v,
+            "  tc${name} = {phase} ? held${i}$q : {};",
+            word_verilog(false, i)
+        );
     }
-    for (r, src) in [("held_exact", "b_v_exact"), ("held_tag", "tag"), ("held_valid", take.as_str())] {
-        let _ = writeln!(v, "  {r}$clock = clock;\n  {r}$d = ({c} == 8'd0) ? {src} : {r}$q;");
+    for (r, src) in [
+        ("held_exact", "b_v_exact"),
+        ("held_tag", "tag"),
+        ("held_valid", take.as_str()),
+    ] {
+        let _ = writeln!(
+            v,
+            "  {r}$clock = clock;\n  {r}$d = ({c} == 8'd0) ? {src} : {r}$q;"
+        );
     }
-    let _ = writeln!(v, "  tc$clock = clock;\n  tc$v_exact = {phase} ? held_exact$q : a_v_exact;");
-    let _ = writeln!(v, "  tc$tag = {phase} ? held_tag$q : {{30'd0, a_degenerate, b_degenerate}};");
+    let _ = writeln!(
+        v,
+        "  tc$clock = clock;\n  tc$v_exact = {phase} ? held_exact$q : a_v_exact;"
+    );
+    let _ = writeln!(
+        v,
+        "  tc$tag = {phase} ? held_tag$q : {{30'd0, a_degenerate, b_degenerate}};"
+    );
     let _ = writeln!(v, "  tc$valid_in = {phase} ? held_valid$q : {take};");
     let first = format!("(tc$valid_out && {c} == 8'd{})", tc_latency % ii);
-    for (r, val) in [("ab_t", "tc$hit & !tc$tag_out[0]"), ("ab_f", "tc$miss & !tc$tag_out[0]"), ("a_deg", "tc$tag_out[1]")] {
-        let _ = writeln!(v, "  {r}$clock = clock;\n  {r}$d = {first} ? ({val}) : {r}$q;");
+    for (r, val) in [
+        ("ab_t", "tc$hit & !tc$tag_out[0]"),
+        ("ab_f", "tc$miss & !tc$tag_out[0]"),
+        ("a_deg", "tc$tag_out[1]"),
+    ] {
+        let _ = writeln!(
+            v,
+            "  {r}$clock = clock;\n  {r}$d = {first} ? ({val}) : {r}$q;"
+        );
     }
     let hit = "(ab_t$q | (tc$hit & !a_deg$q))";
-    let _ = writeln!(v, "  fifo$clock = clock;\n  fifo$write = tc$valid_out && {c} == 8'd{};", (tc_latency + half) % ii);
-    let _ = writeln!(v, "  fifo$data_in = {{tc$tag_out, {hit}, !{hit} & !(ab_f$q & tc$miss & !a_deg$q)}};");
+    let _ = writeln!(
+        v,
+        "  fifo$clock = clock;\n  fifo$write = tc$valid_out && {c} == 8'd{};",
+        (tc_latency + half) % ii
+    );
+    let _ = writeln!(
+        v,
+        "  fifo$data_in = {{tc$tag_out, {hit}, !{hit} & !(ab_f$q & tc$miss & !a_deg$q)}};"
+    );
     let _ = writeln!(v, "  fifo$read = {give};\n  count$clock = clock;");
     let _ = writeln!(v, "  count$d = ({take} && !{give}) ? count$q + 9'd1 : ({give} && !{take}) ? count$q - 9'd1 : count$q;");
     let _ = writeln!(v, "  out_valid = !fifo$empty;\n  out_tag = fifo$data_out[33:2];\n  out_hit = fifo$data_out[1];\n  out_uncertain = fifo$data_out[0];\nend");

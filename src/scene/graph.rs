@@ -147,10 +147,10 @@ impl Unit {
     pub fn level(self) -> Option<Level> {
         use Unit::*;
         match self {
-            Meshes | HostTrees | HostSetup | Golden | HostSettle | ExactOracle | AccuracyCounter => Some(Level::Functional),
-            DCntr | MemoryPort | MemoryModel | DopUnit | TriUnit | ResultPort | GoldenCheck | Counters | WaveformWriter => {
-                Some(Level::Cycle)
-            }
+            Meshes | HostTrees | HostSetup | Golden | HostSettle | ExactOracle
+            | AccuracyCounter => Some(Level::Functional),
+            DCntr | MemoryPort | MemoryModel | DopUnit | TriUnit | ResultPort | GoldenCheck
+            | Counters | WaveformWriter => Some(Level::Cycle),
             RtlChip => Some(Level::Rtl),
             VerilogChip => Some(Level::Verilog),
             OutPairs | OutCycles | OutMemory | OutWaveforms | OutAccuracy | OutCrossCheck => None,
@@ -159,7 +159,10 @@ impl Unit {
 
     /// What the unit does in `scene` (one line).
     pub fn does(self, s: &Scene) -> String {
-        if let Some(d) = (s.architecture == crate::chip::wscg03::Architecture::Wscg03).then(|| self.does_wscg03(s)).flatten() {
+        if let Some(d) = (s.architecture == crate::chip::wscg03::Architecture::Wscg03)
+            .then(|| self.does_wscg03(s))
+            .flatten()
+        {
             return d;
         }
         let p = &s.params;
@@ -220,7 +223,8 @@ impl Unit {
 /// ` (rtl/<chip>.v)`: the RTL chip a scene's configuration runs on, if one is built for it
 /// (otherwise the run stops with `chip_io::rtl_order`'s error).
 fn chip_name(s: &Scene) -> String {
-    crate::chip::rtl::ChipKind::of(&s.cfg, s.params.dop_interval, s.params.tri_interval).map_or(String::new(), |k| format!(" (rtl/{}.v)", k.name()))
+    crate::chip::rtl::ChipKind::of(&s.cfg, s.params.dop_interval, s.params.tri_interval)
+        .map_or(String::new(), |k| format!(" (rtl/{}.v)", k.name()))
 }
 
 /// The whole graph: every unit, an edge for each flow of data.
@@ -343,7 +347,11 @@ impl Plan {
                 units
             })
             .collect();
-        Plan { kept, stages, cross_check: s.outputs.cross_check }
+        Plan {
+            kept,
+            stages,
+            cross_check: s.outputs.cross_check,
+        }
     }
 
     /// Whether the run builds and runs `u`.
@@ -355,15 +363,29 @@ impl Plan {
     pub fn explain(&self, s: &Scene) -> String {
         let mut out = String::new();
         let asked: Vec<&str> = sinks(s).iter().map(|u| u.name()).collect();
-        let _ = writeln!(out, "scene: {}\noutputs: {}\n{}\n", s.name, asked.join(", "), s.configuration());
+        let _ = writeln!(
+            out,
+            "scene: {}\noutputs: {}\n{}\n",
+            s.name,
+            asked.join(", "),
+            s.configuration()
+        );
         let mut k = 0;
         for stage in &self.stages {
-            let units: Vec<Unit> = stage.iter().copied().filter(|u| u.level().is_some()).collect();
+            let units: Vec<Unit> = stage
+                .iter()
+                .copied()
+                .filter(|u| u.level().is_some())
+                .collect();
             if units.is_empty() {
                 continue;
             }
             k += 1;
-            let together = if units.len() > 1 { " (clocked together, every clock)" } else { "" };
+            let together = if units.len() > 1 {
+                " (clocked together, every clock)"
+            } else {
+                ""
+            };
             let _ = writeln!(out, "stage {k}{together}");
             for u in units {
                 let level = format!("{:?}", u.level().expect("a unit")).to_lowercase();
@@ -371,10 +393,17 @@ impl Plan {
             }
         }
         let _ = writeln!(out, "outputs");
-        for u in Unit::ALL.iter().filter(|u| u.level().is_none() && self.runs(**u)) {
+        for u in Unit::ALL
+            .iter()
+            .filter(|u| u.level().is_none() && self.runs(**u))
+        {
             let _ = writeln!(out, "  {:<17} {}", u.name_in(s), u.does(s));
         }
-        let skipped: Vec<&str> = Unit::ALL.iter().filter(|u| !self.runs(**u)).map(|u| u.name()).collect();
+        let skipped: Vec<&str> = Unit::ALL
+            .iter()
+            .filter(|u| !self.runs(**u))
+            .map(|u| u.name())
+            .collect();
         if !skipped.is_empty() {
             let _ = writeln!(out, "skipped (not built, not run): {}", skipped.join(", "));
         }
@@ -385,18 +414,35 @@ impl Plan {
     /// units dashed and grey.
     pub fn dot(&self, s: &Scene) -> String {
         let (g, _) = full_graph();
-        let mut out = String::from("digraph scene {\n  rankdir=LR;\n  node [fontname=\"Helvetica\"];\n");
+        let mut out =
+            String::from("digraph scene {\n  rankdir=LR;\n  node [fontname=\"Helvetica\"];\n");
         for u in Unit::ALL {
             let shape = if u.level().is_none() { "note" } else { "box" };
-            let level = u.level().map_or(String::new(), |l| format!("\\n{l:?}").to_lowercase());
-            let style = if self.runs(u) { "solid" } else { "dashed\", color=\"grey\", fontcolor=\"grey" };
-            let _ = writeln!(out, "  {} [label=\"{}{}\", shape={shape}, style=\"{style}\"];", u.name(), u.name_in(s), level);
+            let level = u
+                .level()
+                .map_or(String::new(), |l| format!("\\n{l:?}").to_lowercase());
+            let style = if self.runs(u) {
+                "solid"
+            } else {
+                "dashed\", color=\"grey\", fontcolor=\"grey"
+            };
+            let _ = writeln!(
+                out,
+                "  {} [label=\"{}{}\", shape={shape}, style=\"{style}\"];",
+                u.name(),
+                u.name_in(s),
+                level
+            );
         }
         for e in g.edge_indices() {
             let (a, b) = g.edge_endpoints(e).expect("an edge");
             let (a, b) = (g[a], g[b]);
             let on = self.runs(a) && self.runs(b);
-            let style = if on { "" } else { " [style=dashed, color=grey]" };
+            let style = if on {
+                ""
+            } else {
+                " [style=dashed, color=grey]"
+            };
             let _ = writeln!(out, "  {} -> {}{style};", a.name(), b.name());
         }
         out.push_str("}\n");

@@ -55,13 +55,25 @@ impl Written {
     /// The first key (in the file's order) that `uses` does not use: `LINE: [section] key
     /// why`.
     pub fn unused(&self, text: &str, uses: &Uses) -> Result<(), String> {
-        let mut keys: Vec<(usize, &str, &str)> = [("chip", &self.chip), ("timing", &self.timing), ("memory", &self.memory), ("stack_engine", &self.stack_engine)]
-            .into_iter()
-            .flat_map(|(section, keys)| keys.iter().map(move |(k, v)| (v.span().start, section, k.as_str())))
-            .collect();
+        let mut keys: Vec<(usize, &str, &str)> = [
+            ("chip", &self.chip),
+            ("timing", &self.timing),
+            ("memory", &self.memory),
+            ("stack_engine", &self.stack_engine),
+        ]
+        .into_iter()
+        .flat_map(|(section, keys)| {
+            keys.iter()
+                .map(move |(k, v)| (v.span().start, section, k.as_str()))
+        })
+        .collect();
         keys.sort_unstable();
-        match keys.into_iter().find_map(|(at, section, key)| why_unused(uses, section, key).map(|why| (at, section, key, why))) {
-            Some((at, section, key, why)) => Err(format!("{}: [{section}] {key} {why}", line_of(text, at))),
+        match keys.into_iter().find_map(|(at, section, key)| {
+            why_unused(uses, section, key).map(|why| (at, section, key, why))
+        }) {
+            Some((at, section, key, why)) => {
+                Err(format!("{}: [{section}] {key} {why}", line_of(text, at)))
+            }
             None => Ok(()),
         }
     }
@@ -112,7 +124,16 @@ pub(super) fn runnable(s: &Scene, w: &Written, text: &str) -> Result<(), String>
         Some(line) => format!("{line}: [{section}] {key}"),
         None => format!(" {flag}"),
     };
-    let cross = |c: CrossCheck| format!("cross_check = \"{}\"", if c == CrossCheck::Rtl { "rtl" } else { "verilog" });
+    let cross = |c: CrossCheck| {
+        format!(
+            "cross_check = \"{}\"",
+            if c == CrossCheck::Rtl {
+                "rtl"
+            } else {
+                "verilog"
+            }
+        )
+    };
     if s.architecture == Architecture::Wscg03 {
         let wants = match (plan.cross_check, &s.outputs.waveforms) {
             (Some(c), _) => Some((at("outputs", "cross_check", "--rtl"), cross(c))),
@@ -125,7 +146,11 @@ pub(super) fn runnable(s: &Scene, w: &Written, text: &str) -> Result<(), String>
         return Ok(());
     }
     if let Some(w) = s.outputs.waveforms.as_ref().filter(|w| w.dir.is_file()) {
-        return Err(format!("{}: {} is a file; give a directory for the VCD files", at("outputs", "waveforms", "--vcd"), w.dir.display()));
+        return Err(format!(
+            "{}: {} is a file; give a directory for the VCD files",
+            at("outputs", "waveforms", "--vcd"),
+            w.dir.display()
+        ));
     }
     if plan.runs(Unit::DCntr) && s.traversal.order().is_none() {
         return Err(format!(
@@ -135,7 +160,13 @@ pub(super) fn runnable(s: &Scene, w: &Written, text: &str) -> Result<(), String>
         ));
     }
     if let Some(c) = plan.cross_check {
-        crate::harness::chip_io::rtl_order(&s.cfg, s.traversal, &s.params).map_err(|e| format!("{}: {} needs an RTL chip of the configuration: {e}", at("outputs", "cross_check", "--rtl"), cross(c)))?;
+        crate::harness::chip_io::rtl_order(&s.cfg, s.traversal, &s.params).map_err(|e| {
+            format!(
+                "{}: {} needs an RTL chip of the configuration: {e}",
+                at("outputs", "cross_check", "--rtl"),
+                cross(c)
+            )
+        })?;
     }
     Ok(())
 }

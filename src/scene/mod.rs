@@ -125,8 +125,8 @@ use crate::chip::config::{ChipConfig, MemLayout};
 use crate::chip::memory::{Ddr, MemTiming, Memory};
 use crate::chip::params::Params;
 use crate::chip::preset::Preset;
-use crate::chip::timing::{Clock, Folds, Technology};
 use crate::chip::reg::Mode;
+use crate::chip::timing::{Clock, Folds, Technology};
 use crate::chip::wscg03::{Architecture, StackParams};
 use crate::pose::{sweep_poses, Pose, ScenePose, Sweep};
 use crate::traversal::Traversal;
@@ -166,7 +166,13 @@ fn line_of(text: &str, at: usize) -> usize {
 
 /// `value`'s keys with the scene's `keys` over them, as a `T` (a preset's values overridden,
 /// `drop` left out). An error names the line of the first key that makes it fail.
-fn over<T: serde::Serialize + serde::de::DeserializeOwned>(value: &T, keys: Keys, text: &str, section: &str, drop: &str) -> Result<T, String> {
+fn over<T: serde::Serialize + serde::de::DeserializeOwned>(
+    value: &T,
+    keys: Keys,
+    text: &str,
+    section: &str,
+    drop: &str,
+) -> Result<T, String> {
     let mut table = toml::Table::try_from(value).map_err(|e| e.to_string())?;
     table.remove(drop);
     let mut keys: Vec<(String, toml::Spanned<toml::Value>)> = keys.into_iter().collect();
@@ -175,19 +181,26 @@ fn over<T: serde::Serialize + serde::de::DeserializeOwned>(value: &T, keys: Keys
     for (k, v) in keys {
         let line = line_of(text, v.span().start);
         table.insert(k, v.into_inner());
-        t = T::deserialize(table.clone()).map_err(|e| format!("{line}: {section}: {}", e.message()))?;
+        t = T::deserialize(table.clone())
+            .map_err(|e| format!("{line}: {section}: {}", e.message()))?;
     }
     Ok(t)
 }
 
 /// `[chip] key = "name"` taken out of `keys` as a `T`; an unknown name is an error naming
 /// its line and the `known` ones.
-fn named_key<T: serde::de::DeserializeOwned>(keys: &mut Keys, key: &str, text: &str, known: &str) -> Result<Option<T>, String> {
+fn named_key<T: serde::de::DeserializeOwned>(
+    keys: &mut Keys,
+    key: &str,
+    text: &str,
+    known: &str,
+) -> Result<Option<T>, String> {
     keys.remove(key)
         .map(|v| {
             let line = line_of(text, v.span().start);
             let v = v.into_inner();
-            T::deserialize(v.clone()).map_err(|_| format!("{line}: [chip] {key} {v} is not known: use {known}"))
+            T::deserialize(v.clone())
+                .map_err(|_| format!("{line}: [chip] {key} {v} is not known: use {known}"))
         })
         .transpose()
 }
@@ -197,10 +210,20 @@ fn named_key<T: serde::de::DeserializeOwned>(keys: &mut Keys, key: &str, text: &
 /// [`ChipConfig`]'s keys over its chip. WSCG'03's chip reads the `words` layout and holds no
 /// node records, whatever the preset's (the golden model's counters then count what it
 /// reads).
-fn chip(keys: Option<Keys>, text: &str, flags: Flags) -> Result<(Preset, Architecture, ChipConfig), String> {
+fn chip(
+    keys: Option<Keys>,
+    text: &str,
+    flags: Flags,
+) -> Result<(Preset, Architecture, ChipConfig), String> {
     let mut keys = keys.unwrap_or_default();
-    let arch: Option<Architecture> = named_key(&mut keys, "architecture", text, "\"date05\" or \"wscg03\"")?;
-    let named: Option<Preset> = named_key(&mut keys, "preset", text, "\"date05\", \"wscg03\" or \"rtl\"")?;
+    let arch: Option<Architecture> =
+        named_key(&mut keys, "architecture", text, "\"date05\" or \"wscg03\"")?;
+    let named: Option<Preset> = named_key(
+        &mut keys,
+        "preset",
+        text,
+        "\"date05\", \"wscg03\" or \"rtl\"",
+    )?;
     let preset = flags.preset.or(named).unwrap_or(Preset::Rtl);
     let arch = flags.architecture.or(arch).unwrap_or(preset.architecture());
     let mut cfg = over(&preset.chip(), keys, text, "[chip]", "")?;
@@ -212,14 +235,23 @@ fn chip(keys: Option<Keys>, text: &str, flags: Flags) -> Result<(Preset, Archite
 
 /// `[timing]`: the chip's [`Params`] (each key optional, the preset's by default; the memory
 /// is `[memory]`'s), and the clock's `technology` or an assumed `clock_mhz`.
-fn timing(keys: Option<Keys>, text: &str, preset: Preset) -> Result<(Params, Option<Technology>, Option<f64>), String> {
+fn timing(
+    keys: Option<Keys>,
+    text: &str,
+    preset: Preset,
+) -> Result<(Params, Option<Technology>, Option<f64>), String> {
     let mut keys = keys.unwrap_or_default();
     let clock_mhz = match keys.remove("clock_mhz") {
         None => None,
         Some(v) => match v.get_ref() {
             toml::Value::Float(x) => Some(*x),
             toml::Value::Integer(i) => Some(*i as f64),
-            other => return Err(format!("{}: [timing] clock_mhz must be a number of MHz, not {other}", line_of(text, v.span().start))),
+            other => {
+                return Err(format!(
+                    "{}: [timing] clock_mhz must be a number of MHz, not {other}",
+                    line_of(text, v.span().start)
+                ))
+            }
         },
     };
     let technology = match keys.remove("technology") {
@@ -230,7 +262,11 @@ fn timing(keys: Option<Keys>, text: &str, preset: Preset) -> Result<(Params, Opt
             Some(Technology::deserialize(v.clone()).map_err(|_| format!("{line}: [timing] technology {v} is not known: use \"osu018\", \"ecp5\" or \"paper\""))?)
         }
     };
-    Ok((over(&preset.params(), keys, text, "[timing]", "memory")?, technology, clock_mhz))
+    Ok((
+        over(&preset.params(), keys, text, "[timing]", "memory")?,
+        technology,
+        clock_mhz,
+    ))
 }
 
 /// Assumed clocks, in MHz, from 1 kHz to 100 GHz: a chip's time at any other is no number
@@ -239,7 +275,14 @@ const CLOCK_MHZ: std::ops::RangeInclusive<f64> = 1e-3..=1e5;
 
 /// The clock: an assumed `clock_mhz`, else `technology`'s period for the configuration
 /// (default: measured on OSU 0.18 um; estimated for WSCG'03's chip, which has no RTL).
-fn clock(cfg: &ChipConfig, folds: Folds, preset: Preset, arch: Architecture, technology: Option<Technology>, clock_mhz: Option<f64>) -> Result<Clock, String> {
+fn clock(
+    cfg: &ChipConfig,
+    folds: Folds,
+    preset: Preset,
+    arch: Architecture,
+    technology: Option<Technology>,
+    clock_mhz: Option<f64>,
+) -> Result<Clock, String> {
     match (clock_mhz, technology) {
         (Some(_), Some(_)) => Err("[timing] give clock_mhz (an assumed clock) or technology (a period from a timing table, or the paper's), not both".into()),
         (Some(mhz), None) if !CLOCK_MHZ.contains(&mhz) => {
@@ -280,7 +323,11 @@ impl MemorySection {
         match self.model.as_deref().unwrap_or(preset_model) {
             "ideal" => {
                 let d = preset_ideal;
-                Ok(Memory::Ideal(MemTiming { latency: self.latency.unwrap_or(d.latency), interval: self.interval.unwrap_or(d.interval), bus_bits: self.bus_bits.or(d.bus_bits) }))
+                Ok(Memory::Ideal(MemTiming {
+                    latency: self.latency.unwrap_or(d.latency),
+                    interval: self.interval.unwrap_or(d.interval),
+                    bus_bits: self.bus_bits.or(d.bus_bits),
+                }))
             }
             "ddr" => {
                 let base = (self.preset.as_deref())
@@ -302,7 +349,9 @@ impl MemorySection {
                     miss: get("miss", self.miss, |d| d.miss)?,
                 }))
             }
-            m => Err(format!("[memory] model \"{m}\" is not known: use \"ideal\" or \"ddr\"")),
+            m => Err(format!(
+                "[memory] model \"{m}\" is not known: use \"ideal\" or \"ddr\""
+            )),
         }
     }
 }
@@ -338,7 +387,11 @@ pub struct Waveforms {
 impl Waveforms {
     /// Every scope, every cycle.
     pub fn all(dir: std::path::PathBuf) -> Self {
-        Waveforms { dir, scopes: vec![], window: 0..u64::MAX }
+        Waveforms {
+            dir,
+            scopes: vec![],
+            window: 0..u64::MAX,
+        }
     }
 
     /// From the scene's `waveforms`: a directory, or a table `{ dir, scopes, cycles }`.
@@ -355,13 +408,21 @@ impl Waveforms {
                 let scopes = match t.remove("scopes") {
                     None => None,
                     Some(toml::Value::Array(a)) => Some(
-                        a.into_iter().map(|x| x.as_str().map(str::to_string)).collect::<Option<Vec<_>>>().ok_or_else(|| bad("scopes must be names"))?,
+                        a.into_iter()
+                            .map(|x| x.as_str().map(str::to_string))
+                            .collect::<Option<Vec<_>>>()
+                            .ok_or_else(|| bad("scopes must be names"))?,
                     ),
                     Some(_) => return Err(bad("scopes must be a list of names")),
                 };
                 let cycles = match t.remove("cycles") {
                     None => None,
-                    Some(toml::Value::Array(a)) => match a.iter().map(|x| x.as_integer().and_then(|i| u64::try_from(i).ok())).collect::<Option<Vec<_>>>().as_deref() {
+                    Some(toml::Value::Array(a)) => match a
+                        .iter()
+                        .map(|x| x.as_integer().and_then(|i| u64::try_from(i).ok()))
+                        .collect::<Option<Vec<_>>>()
+                        .as_deref()
+                    {
                         Some(&[a, b]) => Some([a, b]),
                         _ => return Err(bad("cycles must be [first, last], two cycle numbers")),
                     },
@@ -378,18 +439,29 @@ impl Waveforms {
         let known = crate::chip::probes::probe_scopes();
         let scopes = scopes.unwrap_or_default();
         if let Some(s) = scopes.iter().find(|s| !known.contains(&s.as_str())) {
-            return Err(format!("[outputs] waveforms: no scope {s:?}; the scopes are {}", known.join(", ")));
+            return Err(format!(
+                "[outputs] waveforms: no scope {s:?}; the scopes are {}",
+                known.join(", ")
+            ));
         }
         let window = match cycles {
             None => 0..u64::MAX,
             Some([a, b]) if a <= b => a..b.saturating_add(1),
             Some([a, b]) => return Err(format!("[outputs] waveforms: cycles = [{a}, {b}] is empty; give [first, last] with first <= last")),
         };
-        Ok(Waveforms { dir, scopes, window })
+        Ok(Waveforms {
+            dir,
+            scopes,
+            window,
+        })
     }
 
     pub fn scopes_text(&self) -> String {
-        if self.scopes.is_empty() { "every scope".into() } else { format!("scopes {}", self.scopes.join(", ")) }
+        if self.scopes.is_empty() {
+            "every scope".into()
+        } else {
+            format!("scopes {}", self.scopes.join(", "))
+        }
     }
 
     pub fn window_text(&self) -> String {
@@ -472,7 +544,10 @@ fn tri_timing(p: &Params) -> String {
 fn dop_timing(p: &Params) -> String {
     match p.dop_interval {
         1 => format!("dop_latency {}", p.dop_latency),
-        ii => format!("dop_interval {ii} (folded DOP unit, latency {})", p.dop_unit_latency()),
+        ii => format!(
+            "dop_interval {ii} (folded DOP unit, latency {})",
+            p.dop_unit_latency()
+        ),
     }
 }
 
@@ -533,7 +608,10 @@ impl Scene {
                 "layout words (a node word per request, no node records held)".to_string(),
             ),
         };
-        let clock = self.clock.as_ref().map_or("none (no output runs the cycle model)".to_string(), Clock::source);
+        let clock = self.clock.as_ref().map_or(
+            "none (no output runs the cycle model)".to_string(),
+            Clock::source,
+        );
         format!(
             "configuration (preset {} and the scene's keys):\n  architecture: {}\n  chip: k = {}, format {}, dop_rounding {}, tri_rounding {:?}, tri_cache {}, {memory_side}\n  {timing}\n  memory: {}\n  clock: {clock}",
             self.preset.name(), self.architecture.name(), c.k, c.format, c.dop_rounding, c.tri_rounding, c.tri_cache, p.memory
@@ -571,7 +649,8 @@ impl Scene {
     /// refused here ([`keys`]), before anything is built.
     pub fn parse_with(text: &str, name: &str, flags: Flags) -> Result<Scene, String> {
         let f: File = toml::from_str(text).map_err(|e| toml_error(text, name, &e))?;
-        let written: keys::Written = toml::from_str(text).map_err(|e| toml_error(text, name, &e))?;
+        let written: keys::Written =
+            toml::from_str(text).map_err(|e| toml_error(text, name, &e))?;
         let err = |m: String| format!("{name}: {m}");
         let at_line = |m: String| format!("{name}:{m}");
         let (preset, architecture, cfg) = chip(f.chip, text, flags.clone()).map_err(at_line)?;
@@ -582,33 +661,90 @@ impl Scene {
             memory: f.outputs.memory,
             waveforms: match flags.waveforms {
                 Some(dir) => Some(Waveforms::all(dir)),
-                None => f.outputs.waveforms.map(Waveforms::of).transpose().map_err(err)?,
+                None => f
+                    .outputs
+                    .waveforms
+                    .map(Waveforms::of)
+                    .transpose()
+                    .map_err(err)?,
             },
             cross_check: flags.cross_check.or(f.outputs.cross_check),
         };
-        let (mut params, technology, clock_mhz) = timing(f.timing, text, preset).map_err(at_line)?;
+        let (mut params, technology, clock_mhz) =
+            timing(f.timing, text, preset).map_err(at_line)?;
         let memory = f.memory.memory(preset.params().memory);
-        let ddr = f.memory.model.as_deref().map_or(matches!(preset.params().memory, Memory::Ddr(_)), |m| m == "ddr");
-        let uses = keys::Uses { architecture, chip_runs: outputs.run_chip(), dop_interval: params.dop_interval, tri_interval: params.tri_interval, ddr };
+        let ddr = f
+            .memory
+            .model
+            .as_deref()
+            .map_or(matches!(preset.params().memory, Memory::Ddr(_)), |m| {
+                m == "ddr"
+            });
+        let uses = keys::Uses {
+            architecture,
+            chip_runs: outputs.run_chip(),
+            dop_interval: params.dop_interval,
+            tri_interval: params.tri_interval,
+            ddr,
+        };
         written.unused(text, &uses).map_err(at_line)?;
         params.memory = memory.map_err(err)?;
         f.stack_engine.check().map_err(err)?;
         cfg.check().map_err(|e| err(format!("[chip] {e}")))?;
         let poses = match (&f.sweep, f.pose.is_empty()) {
-            (Some(_), false) => return Err(err("give either [[pose]] entries or a [sweep], not both".into())),
-            (None, true) => return Err(err("no pose: add a [[pose]] (rot_deg, t) or a [sweep]".into())),
-            (None, false) => f.pose.iter().map(|&pose| ScenePose { pose, distance: None }).collect(),
+            (Some(_), false) => {
+                return Err(err(
+                    "give either [[pose]] entries or a [sweep], not both".into()
+                ))
+            }
+            (None, true) => {
+                return Err(err(
+                    "no pose: add a [[pose]] (rot_deg, t) or a [sweep]".into()
+                ))
+            }
+            (None, false) => f
+                .pose
+                .iter()
+                .map(|&pose| ScenePose {
+                    pose,
+                    distance: None,
+                })
+                .collect(),
             (Some(s), true) => sweep_poses(s).map_err(err)?,
         };
-        if let Some(p) = poses.iter().find(|p| !p.pose.rot_deg.iter().chain(&p.pose.t).all(|x| x.is_finite())) {
-            return Err(err(format!("pose {} has a non-finite number", p.pose.text())));
+        if let Some(p) = poses.iter().find(|p| {
+            !p.pose
+                .rot_deg
+                .iter()
+                .chain(&p.pose.t)
+                .all(|x| x.is_finite())
+        }) {
+            return Err(err(format!(
+                "pose {} has a non-finite number",
+                p.pose.text()
+            )));
         }
-        params.check().map_err(|e| err(format!("[timing] / [memory]: {e}")))?;
-        params.check_dop_interval(cfg.k).map_err(|e| err(format!("[timing] {e}")))?;
+        params
+            .check()
+            .map_err(|e| err(format!("[timing] / [memory]: {e}")))?;
+        params
+            .check_dop_interval(cfg.k)
+            .map_err(|e| err(format!("[timing] {e}")))?;
         // the command line's technology replaces the scene's clock
-        let (technology, clock_mhz) = if flags.technology.is_some() { (flags.technology, None) } else { (technology, clock_mhz) };
-        let folds = Folds { tri: params.tri_interval, dop: params.dop_interval };
-        let clock = outputs.run_chip().then(|| clock(&cfg, folds, preset, architecture, technology, clock_mhz)).transpose().map_err(err)?;
+        let (technology, clock_mhz) = if flags.technology.is_some() {
+            (flags.technology, None)
+        } else {
+            (technology, clock_mhz)
+        };
+        let folds = Folds {
+            tri: params.tri_interval,
+            dop: params.dop_interval,
+        };
+        let clock = outputs
+            .run_chip()
+            .then(|| clock(&cfg, folds, preset, architecture, technology, clock_mhz))
+            .transpose()
+            .map_err(err)?;
         let scene = Scene {
             name: name.to_string(),
             objects: f.objects,
@@ -632,10 +768,22 @@ impl Scene {
 /// list of tables gets what to write instead (serde's own words, "invalid type: map,
 /// expected a sequence", do not say it).
 fn toml_error(text: &str, name: &str, e: &toml::de::Error) -> String {
-    let Some(span) = e.span() else { return format!("{name}: {}", e.message()) };
+    let Some(span) = e.span() else {
+        return format!("{name}: {}", e.message());
+    };
     let line = line_of(text, span.start);
-    let header = text[span.start..].lines().next().unwrap_or("").split('#').next().unwrap_or("").trim();
-    let key = header.strip_prefix('[').and_then(|h| h.strip_suffix(']')).filter(|k| !k.starts_with('['));
+    let header = text[span.start..]
+        .lines()
+        .next()
+        .unwrap_or("")
+        .split('#')
+        .next()
+        .unwrap_or("")
+        .trim();
+    let key = header
+        .strip_prefix('[')
+        .and_then(|h| h.strip_suffix(']'))
+        .filter(|k| !k.starts_with('['));
     match key.filter(|_| e.message().contains("expected a sequence")) {
         Some(k) => format!("{name}:{line}: [{k}] is one table, and {k} takes a list of them: write [[{k}]], one per entry"),
         None => format!("{name}:{line}: {}", e.message()),
@@ -675,8 +823,15 @@ mod tests {
         let e = Scene::parse("[objects]\na = \"x\"\nb = \"y\"\nbogus = 1\n", "s.toml").unwrap_err();
         assert!(e.starts_with("s.toml:4:"), "{e}");
         // one [pose] table where the key takes a list
-        let e = Scene::parse("[objects]\na = \"x\"\nb = \"y\"\n[pose] # one\nrot_deg = [0, 0, 0]\nt = [0, 0, 0]\n", "s.toml").unwrap_err();
-        assert!(e.starts_with("s.toml:4:") && e.contains("write [[pose]]"), "{e}");
+        let e = Scene::parse(
+            "[objects]\na = \"x\"\nb = \"y\"\n[pose] # one\nrot_deg = [0, 0, 0]\nt = [0, 0, 0]\n",
+            "s.toml",
+        )
+        .unwrap_err();
+        assert!(
+            e.starts_with("s.toml:4:") && e.contains("write [[pose]]"),
+            "{e}"
+        );
     }
 
     #[test]
@@ -684,10 +839,25 @@ mod tests {
         use crate::chip::memory::MemTiming;
         use crate::chip::params::Params;
         let base = "[objects]\na = \"sphere:12\"\nb = \"sphere:12\"\n[[pose]]\nrot_deg=[0,0,0]\nt=[0,0,0]\n";
-        let s = Scene::parse(&format!("{base}[outputs]\nwaveforms = \"w\"\n[memory]\nlatency = 3\ninterval = 2\n"), "s").unwrap();
+        let s = Scene::parse(
+            &format!("{base}[outputs]\nwaveforms = \"w\"\n[memory]\nlatency = 3\ninterval = 2\n"),
+            "s",
+        )
+        .unwrap();
         assert_eq!(s.outputs.waveforms, Some(Waveforms::all("w".into())));
         assert!(!s.outputs.cycles, "waveforms alone need no counters");
-        assert_eq!(s.params, Params { memory: MemTiming { latency: 3, interval: 2, bus_bits: None }.into(), ..Params::RTL });
+        assert_eq!(
+            s.params,
+            Params {
+                memory: MemTiming {
+                    latency: 3,
+                    interval: 2,
+                    bus_bits: None
+                }
+                .into(),
+                ..Params::RTL
+            }
+        );
         let s = Scene::parse(base, "s").unwrap();
         assert!(!s.outputs.cycles);
         assert_eq!((s.params, s.clock), (Params::RTL, None));
@@ -696,59 +866,195 @@ mod tests {
         let s = Scene::parse(&format!("{base}[outputs]\ncross_check = \"rtl\"\n[chip]\nk = 6\nformat = \"reduced\"\n[timing]\ncredit = 4\nclock_mhz = 266\n"), "s").unwrap();
         assert!(s.outputs.cross_check == Some(CrossCheck::Rtl));
         assert_eq!((s.params.credit, s.clock.unwrap().mhz()), (4, 266.0));
-        let e = Scene::parse(&format!("{base}[outputs]\ncycles = true\n[memory]\nlatency = 0\ninterval = 1\n"), "s").unwrap_err();
+        let e = Scene::parse(
+            &format!("{base}[outputs]\ncycles = true\n[memory]\nlatency = 0\ninterval = 1\n"),
+            "s",
+        )
+        .unwrap_err();
         assert!(e.contains("at least 1"), "{e}");
-        let e = Scene::parse(&format!("{base}[outputs]\ncycles = true\n[timing]\nissue_spacing = 5\n"), "s").unwrap_err();
+        let e = Scene::parse(
+            &format!("{base}[outputs]\ncycles = true\n[timing]\nissue_spacing = 5\n"),
+            "s",
+        )
+        .unwrap_err();
         assert!(e.contains("issue_spacing"), "{e}");
-        let e = Scene::parse(&format!("{base}[outputs]\nwaveforms = {{ dir = \"w\", scopes = [\"dcntr\"] }}\n"), "s").unwrap_err();
-        assert!(e.contains("no scope \"dcntr\"; the scopes are host, d_cntr"), "{e}");
-        let e = Scene::parse(&format!("{base}[outputs]\nwaveforms = {{ dir = \"w\", cycle = [5, 4] }}\n"), "s").unwrap_err();
+        let e = Scene::parse(
+            &format!("{base}[outputs]\nwaveforms = {{ dir = \"w\", scopes = [\"dcntr\"] }}\n"),
+            "s",
+        )
+        .unwrap_err();
+        assert!(
+            e.contains("no scope \"dcntr\"; the scopes are host, d_cntr"),
+            "{e}"
+        );
+        let e = Scene::parse(
+            &format!("{base}[outputs]\nwaveforms = {{ dir = \"w\", cycle = [5, 4] }}\n"),
+            "s",
+        )
+        .unwrap_err();
         assert!(e.contains("unknown key \"cycle\""), "{e}");
-        let e = Scene::parse(&format!("{base}[outputs]\nwaveforms = {{ dir = \"w\", cycles = [5, 4] }}\n"), "s").unwrap_err();
+        let e = Scene::parse(
+            &format!("{base}[outputs]\nwaveforms = {{ dir = \"w\", cycles = [5, 4] }}\n"),
+            "s",
+        )
+        .unwrap_err();
         assert!(e.contains("is empty"), "{e}");
-        let s = Scene::parse(&format!("{base}[outputs]\nwaveforms = {{ dir = \"w\", cycles = [5, 5] }}\n"), "s").unwrap();
+        let s = Scene::parse(
+            &format!("{base}[outputs]\nwaveforms = {{ dir = \"w\", cycles = [5, 5] }}\n"),
+            "s",
+        )
+        .unwrap();
         assert_eq!(s.outputs.waveforms.unwrap().window, 5..6);
         let e = Scene::parse(&format!("{base}[memory]\nlatncy = 2\n"), "s").unwrap_err();
         assert!(e.starts_with("s:8:"), "{e}");
         use crate::chip::reg::Order;
         use crate::chip::rtl::ChipKind;
-        let rtl = Scene::parse(include_str!("../../vectors/scenes/rtl_spheres.toml"), "rtl_spheres").unwrap();
-        assert_eq!(crate::harness::chip_io::rtl_order(&rtl.cfg, rtl.traversal, &rtl.params), Ok((ChipKind::K6E8m15, Order::Lifo)));
+        let rtl = Scene::parse(
+            include_str!("../../vectors/scenes/rtl_spheres.toml"),
+            "rtl_spheres",
+        )
+        .unwrap();
+        assert_eq!(
+            crate::harness::chip_io::rtl_order(&rtl.cfg, rtl.traversal, &rtl.params),
+            Ok((ChipKind::K6E8m15, Order::Lifo))
+        );
         // the scene itself is refused where its configuration has no RTL chip
-        let e = Scene::parse(&format!("{base}[outputs]\ncross_check = \"rtl\"\n[chip]\nnode_cache = 16\n"), "s").unwrap_err();
+        let e = Scene::parse(
+            &format!("{base}[outputs]\ncross_check = \"rtl\"\n[chip]\nnode_cache = 16\n"),
+            "s",
+        )
+        .unwrap_err();
         assert!(e.starts_with("s:8: [outputs] cross_check: cross_check = \"rtl\" needs an RTL chip of the configuration: the RTL chips hold one node record per object; this configuration has node_cache = 16"), "{e}");
         // the default configuration is the papers' chip
-        assert_eq!(crate::harness::chip_io::rtl_order(&ChipConfig::default(), Traversal::Fifo, &rtl.params), Ok((ChipKind::K24B32, Order::Fifo)));
-        let e = crate::harness::chip_io::rtl_order(&ChipConfig { k: 14, ..ChipConfig::default() }, Traversal::Lifo, &rtl.params).unwrap_err();
+        assert_eq!(
+            crate::harness::chip_io::rtl_order(
+                &ChipConfig::default(),
+                Traversal::Fifo,
+                &rtl.params
+            ),
+            Ok((ChipKind::K24B32, Order::Fifo))
+        );
+        let e = crate::harness::chip_io::rtl_order(
+            &ChipConfig {
+                k: 14,
+                ..ChipConfig::default()
+            },
+            Traversal::Lifo,
+            &rtl.params,
+        )
+        .unwrap_err();
         assert!(e.contains("k = 6, format = \"e8m15\" or k = 24, format = \"binary32\" or k = 24, format = \"e8m15/binary32\"") && e.contains("k = 14"), "{e}");
         // the triangle cache: a power of two; the RTL chips hold one word
         let s = Scene::parse(&format!("{base}[chip]\ntri_cache = 128\n"), "s").unwrap();
         assert_eq!(s.cfg.tri_cache, 128);
         let e = Scene::parse(&format!("{base}[chip]\ntri_cache = 100\n"), "s").unwrap_err();
-        assert!(e.contains("[chip] tri_cache must be a power of two from 1 to 1024 lines"), "{e}");
-        assert!(crate::harness::chip_io::rtl_order(&ChipConfig { tri_cache: 128, ..rtl.cfg }, Traversal::Lifo, &rtl.params).is_ok());
-        let e = crate::harness::chip_io::rtl_order(&ChipConfig { tri_cache: 256, ..rtl.cfg }, Traversal::Lifo, &rtl.params).unwrap_err();
-        assert!(e.contains("tri_cache = 256") && e.contains("at most 128"), "{e}");
-        let e = crate::harness::chip_io::rtl_order(&rtl.cfg, Traversal::List, &rtl.params).unwrap_err();
+        assert!(
+            e.contains("[chip] tri_cache must be a power of two from 1 to 1024 lines"),
+            "{e}"
+        );
+        assert!(crate::harness::chip_io::rtl_order(
+            &ChipConfig {
+                tri_cache: 128,
+                ..rtl.cfg
+            },
+            Traversal::Lifo,
+            &rtl.params
+        )
+        .is_ok());
+        let e = crate::harness::chip_io::rtl_order(
+            &ChipConfig {
+                tri_cache: 256,
+                ..rtl.cfg
+            },
+            Traversal::Lifo,
+            &rtl.params,
+        )
+        .unwrap_err();
+        assert!(
+            e.contains("tri_cache = 256") && e.contains("at most 128"),
+            "{e}"
+        );
+        let e =
+            crate::harness::chip_io::rtl_order(&rtl.cfg, Traversal::List, &rtl.params).unwrap_err();
         assert!(e.contains("fifo or lifo"), "{e}");
-        let e = crate::harness::chip_io::rtl_order(&rtl.cfg, Traversal::Lifo, &Params { tri_fifo: 4, ..rtl.params }).unwrap_err();
+        let e = crate::harness::chip_io::rtl_order(
+            &rtl.cfg,
+            Traversal::Lifo,
+            &Params {
+                tri_fifo: 4,
+                ..rtl.params
+            },
+        )
+        .unwrap_err();
         assert!(e.contains("[timing]"), "{e}");
         // the memory port's register: within its fields, and no further
-        let port = Params { prefetch: 14, outstanding: 16, credit: 63, issue_spacing: 1, ..rtl.params };
-        assert_eq!(crate::harness::chip_io::rtl_order(&rtl.cfg, Traversal::Lifo, &port), Ok((ChipKind::K6E8m15, Order::Lifo)));
-        for p in [Params { prefetch: 15, ..port }, Params { outstanding: 17, ..port }, Params { credit: 64, ..port }] {
+        let port = Params {
+            prefetch: 14,
+            outstanding: 16,
+            credit: 63,
+            issue_spacing: 1,
+            ..rtl.params
+        };
+        assert_eq!(
+            crate::harness::chip_io::rtl_order(&rtl.cfg, Traversal::Lifo, &port),
+            Ok((ChipKind::K6E8m15, Order::Lifo))
+        );
+        for p in [
+            Params {
+                prefetch: 15,
+                ..port
+            },
+            Params {
+                outstanding: 17,
+                ..port
+            },
+            Params { credit: 64, ..port },
+        ] {
             let e = crate::harness::chip_io::rtl_order(&rtl.cfg, Traversal::Lifo, &p).unwrap_err();
             assert!(e.contains("at most 14 pairs with at most 16 requests outstanding and a credit of at most 63"), "{e}");
         }
         // the records layout: the k = 24 binary32 chip, one record held, on any memory
         use crate::chip::config::MemLayout;
-        let rec = ChipConfig { layout: MemLayout::Records, ..ChipConfig::default() };
-        assert_eq!(crate::harness::chip_io::rtl_order(&rec, Traversal::Fifo, &rtl.params), Ok((ChipKind::K24B32, Order::Fifo)));
-        let ddr = |banks| Params { memory: crate::chip::memory::Memory::Ddr(crate::chip::memory::Ddr { banks, ..crate::chip::memory::Ddr::DATE05 }), ..rtl.params };
-        assert!([2, 6, 8].iter().all(|&b| crate::harness::chip_io::rtl_order(&rec, Traversal::Fifo, &ddr(b)).is_ok()));
-        let e = crate::harness::chip_io::rtl_order(&ChipConfig { node_cache: 16, ..rec }, Traversal::Fifo, &ddr(8)).unwrap_err();
-        assert!(e.contains("this configuration has node_cache = 16: set [chip] node_cache = 1"), "{e}");
-        let e = crate::harness::chip_io::rtl_order(&ChipConfig { layout: MemLayout::Records, ..rtl.cfg }, Traversal::Fifo, &ddr(8)).unwrap_err();
+        let rec = ChipConfig {
+            layout: MemLayout::Records,
+            ..ChipConfig::default()
+        };
+        assert_eq!(
+            crate::harness::chip_io::rtl_order(&rec, Traversal::Fifo, &rtl.params),
+            Ok((ChipKind::K24B32, Order::Fifo))
+        );
+        let ddr = |banks| Params {
+            memory: crate::chip::memory::Memory::Ddr(crate::chip::memory::Ddr {
+                banks,
+                ..crate::chip::memory::Ddr::DATE05
+            }),
+            ..rtl.params
+        };
+        assert!([2, 6, 8]
+            .iter()
+            .all(|&b| crate::harness::chip_io::rtl_order(&rec, Traversal::Fifo, &ddr(b)).is_ok()));
+        let e = crate::harness::chip_io::rtl_order(
+            &ChipConfig {
+                node_cache: 16,
+                ..rec
+            },
+            Traversal::Fifo,
+            &ddr(8),
+        )
+        .unwrap_err();
+        assert!(
+            e.contains("this configuration has node_cache = 16: set [chip] node_cache = 1"),
+            "{e}"
+        );
+        let e = crate::harness::chip_io::rtl_order(
+            &ChipConfig {
+                layout: MemLayout::Records,
+                ..rtl.cfg
+            },
+            Traversal::Fifo,
+            &ddr(8),
+        )
+        .unwrap_err();
         assert!(e.contains("chip_e8m15_k6 reads the `words` layout only (of the RTL chips, chip_b32_k24 also read `records`); this configuration has layout = \"records\""), "{e}");
     }
 
@@ -760,14 +1066,46 @@ mod tests {
     #[test]
     fn tri_interval_key() {
         let base = "[objects]\na = \"sphere:12\"\nb = \"sphere:12\"\n[[pose]]\nrot_deg=[0,0,0]\nt=[0,0,0]\n[outputs]\ncycles = true\n";
-        let s = Scene::parse(&format!("{base}[chip]\npreset = \"date05\"\n[timing]\ntri_interval = 16\n"), "s").unwrap();
-        assert_eq!(s.params, Params { tri_interval: 16, ..Preset::Date05.params() });
-        assert!(s.configuration().contains("tri_interval 16 (folded TRI_UNIT"), "{}", s.configuration());
+        let s = Scene::parse(
+            &format!("{base}[chip]\npreset = \"date05\"\n[timing]\ntri_interval = 16\n"),
+            "s",
+        )
+        .unwrap();
+        assert_eq!(
+            s.params,
+            Params {
+                tri_interval: 16,
+                ..Preset::Date05.params()
+            }
+        );
+        assert!(
+            s.configuration()
+                .contains("tri_interval 16 (folded TRI_UNIT"),
+            "{}",
+            s.configuration()
+        );
         // the folded TRI_UNIT has a row; the folded chip as a whole has none
         let clock = s.clock.unwrap();
-        assert!(clock.source().contains("units not measured: chip_b32_k24_fold16"), "{}", clock.source());
-        let s8 = Scene::parse(&format!("{base}[chip]\npreset = \"date05\"\n[timing]\ntri_interval = 8\n"), "s").unwrap().clock.unwrap();
-        assert!(s8.not_measured.contains(&"tri_unit_fold8_b32_rne".to_string()), "{}", s8.source());
+        assert!(
+            clock
+                .source()
+                .contains("units not measured: chip_b32_k24_fold16"),
+            "{}",
+            clock.source()
+        );
+        let s8 = Scene::parse(
+            &format!("{base}[chip]\npreset = \"date05\"\n[timing]\ntri_interval = 8\n"),
+            "s",
+        )
+        .unwrap()
+        .clock
+        .unwrap();
+        assert!(
+            s8.not_measured
+                .contains(&"tri_unit_fold8_b32_rne".to_string()),
+            "{}",
+            s8.source()
+        );
         for (keys, want) in [
             ("tri_interval = 3", "tri_interval must be 1 (TRI_UNIT unfolded) or an even number of clocks from 2 to 32"),
             ("tri_interval = 34", "not 34"),
@@ -782,19 +1120,53 @@ mod tests {
             let e = Scene::parse(&format!("{base}[timing]\n{keys}\n"), "s").unwrap_err();
             assert!(e.contains(want), "{e}");
         }
-        let e = Scene::parse(&format!("{base}[chip]\npreset = \"wscg03\"\n[timing]\ntri_interval = 2\n"), "s").unwrap_err();
-        assert!(e.contains("[timing] tri_interval is DATE'05's chip's") && e.contains("[stack_engine]"), "{e}");
+        let e = Scene::parse(
+            &format!("{base}[chip]\npreset = \"wscg03\"\n[timing]\ntri_interval = 2\n"),
+            "s",
+        )
+        .unwrap_err();
+        assert!(
+            e.contains("[timing] tri_interval is DATE'05's chip's") && e.contains("[stack_engine]"),
+            "{e}"
+        );
         // the command line's architecture over a scene's keys: the same refusal as the preset's
-        let flags = Flags { architecture: Some(Architecture::Wscg03), ..Default::default() };
-        let e = Scene::parse_with(&format!("{base}[timing]\ntri_interval = 2\n"), "s", flags).unwrap_err();
-        assert!(e.starts_with("s:10: [timing] tri_interval is DATE'05's chip's"), "{e}");
-        let rtl = Scene::parse(include_str!("../../vectors/scenes/rtl_spheres.toml"), "rtl_spheres").unwrap();
-        let order = |dop_interval, tri_interval| crate::harness::chip_io::rtl_order(&rtl.cfg, rtl.traversal, &Params { dop_interval, tri_interval, ..rtl.params });
+        let flags = Flags {
+            architecture: Some(Architecture::Wscg03),
+            ..Default::default()
+        };
+        let e = Scene::parse_with(&format!("{base}[timing]\ntri_interval = 2\n"), "s", flags)
+            .unwrap_err();
+        assert!(
+            e.starts_with("s:10: [timing] tri_interval is DATE'05's chip's"),
+            "{e}"
+        );
+        let rtl = Scene::parse(
+            include_str!("../../vectors/scenes/rtl_spheres.toml"),
+            "rtl_spheres",
+        )
+        .unwrap();
+        let order = |dop_interval, tri_interval| {
+            crate::harness::chip_io::rtl_order(
+                &rtl.cfg,
+                rtl.traversal,
+                &Params {
+                    dop_interval,
+                    tri_interval,
+                    ..rtl.params
+                },
+            )
+        };
         let e = order(1, 2).unwrap_err();
         assert!(e.contains("every 2") && e.contains("1 and 1 (chip_e8m15_k6) or 1 and 16 (chip_e8m15_k6_fold16) or 6 and 32 (chip_e8m15_k6_dop6_tri32)"), "{e}");
         assert!(order(6, 16).is_err() && order(6, 1).is_err());
-        assert_eq!(order(1, 16).unwrap().0, crate::chip::rtl::ChipKind::K6E8m15Fold16);
-        assert_eq!(order(6, 32).unwrap().0, crate::chip::rtl::ChipKind::K6E8m15Dop6Tri32);
+        assert_eq!(
+            order(1, 16).unwrap().0,
+            crate::chip::rtl::ChipKind::K6E8m15Fold16
+        );
+        assert_eq!(
+            order(6, 32).unwrap().0,
+            crate::chip::rtl::ChipKind::K6E8m15Dop6Tri32
+        );
     }
 
     #[test]
@@ -803,21 +1175,62 @@ mod tests {
         use crate::chip::memory::Memory;
         let base = "[objects]\na = \"sphere:12\"\nb = \"sphere:12\"\n[[pose]]\nrot_deg=[0,0,0]\nt=[0,0,0]\n[outputs]\ncycles = true\n[memory]\n";
         let mem = |m: &str| Scene::parse(&format!("{base}{m}"), "s").map(|s| s.params.memory);
-        assert_eq!(mem("model = \"ddr\"\npreset = \"wscg03\""), Ok(Memory::Ddr(Ddr::WSCG03)));
-        assert_eq!(mem("model = \"ddr\"\npreset = \"date05\"\nbanks = 4"), Ok(Memory::Ddr(Ddr { banks: 4, ..Ddr::DATE05 })));
+        assert_eq!(
+            mem("model = \"ddr\"\npreset = \"wscg03\""),
+            Ok(Memory::Ddr(Ddr::WSCG03))
+        );
+        assert_eq!(
+            mem("model = \"ddr\"\npreset = \"date05\"\nbanks = 4"),
+            Ok(Memory::Ddr(Ddr {
+                banks: 4,
+                ..Ddr::DATE05
+            }))
+        );
         let own = "model = \"ddr\"\nbanks = 2\npage_bytes = 1024\nbus_bits = 64\nburst = 4\nhit = 6\nmiss = 12";
-        assert_eq!(mem(own), Ok(Memory::Ddr(Ddr { banks: 2, page_bytes: 1024, bus_bits: 64, burst: 4, hit: 6, miss: 12 })));
-        assert_eq!(mem("latency = 8\nbus_bits = 128"), Ok(Memory::Ideal(crate::chip::memory::MemTiming { latency: 8, interval: 1, bus_bits: Some(128) })));
+        assert_eq!(
+            mem(own),
+            Ok(Memory::Ddr(Ddr {
+                banks: 2,
+                page_bytes: 1024,
+                bus_bits: 64,
+                burst: 4,
+                hit: 6,
+                miss: 12
+            }))
+        );
+        assert_eq!(
+            mem("latency = 8\nbus_bits = 128"),
+            Ok(Memory::Ideal(crate::chip::memory::MemTiming {
+                latency: 8,
+                interval: 1,
+                bus_bits: Some(128)
+            }))
+        );
         for (m, want) in [
             ("model = \"ddr\"", "needs a preset"),
-            ("model = \"ddr\"\nbanks = 2\npage_bytes = 1024\nbus_bits = 64\nburst = 4\nhit = 6", "(miss is missing)"),
-            ("model = \"ddr\"\npreset = \"ddr4\"", "preset \"ddr4\" is not known"),
-            ("model = \"ddr\"\npreset = \"wscg03\"\nlatency = 3", "s:12: [memory] latency belongs to the ideal memory, not used by the DDR model"),
-            ("preset = \"wscg03\"", "s:10: [memory] preset belongs to model = \"ddr\", not used by the ideal memory"),
+            (
+                "model = \"ddr\"\nbanks = 2\npage_bytes = 1024\nbus_bits = 64\nburst = 4\nhit = 6",
+                "(miss is missing)",
+            ),
+            (
+                "model = \"ddr\"\npreset = \"ddr4\"",
+                "preset \"ddr4\" is not known",
+            ),
+            (
+                "model = \"ddr\"\npreset = \"wscg03\"\nlatency = 3",
+                "s:12: [memory] latency belongs to the ideal memory, not used by the DDR model",
+            ),
+            (
+                "preset = \"wscg03\"",
+                "s:10: [memory] preset belongs to model = \"ddr\", not used by the ideal memory",
+            ),
             ("hit = 8", "s:10: [memory] hit belongs to model = \"ddr\""),
             ("bus_bits = 0", "bus_bits must be at least 1"),
             ("model = \"sram\"", "model \"sram\" is not known"),
-            ("model = \"ddr\"\npreset = \"wscg03\"\nhit = 2", "burst <= hit <= miss"),
+            (
+                "model = \"ddr\"\npreset = \"wscg03\"\nhit = 2",
+                "burst <= hit <= miss",
+            ),
         ] {
             let e = mem(m).unwrap_err();
             assert!(e.starts_with("s:") && e.contains(want), "{m}: {e}");
@@ -826,10 +1239,25 @@ mod tests {
         let explain = crate::scene::graph::Plan::of(&s).explain(&s);
         assert!(explain.contains("DDR SDRAM: 4 banks, 4096-byte pages, 256-bit bus, bursts of 8, page hit 8 and miss 20 clocks"), "{explain}");
         // model = "ddr" written on a DDR chip preset keeps the preset's DDR values
-        let on = |preset: &str, m: &str| Scene::parse(&format!("{base}{m}\n[chip]\npreset = \"{preset}\""), "s").map(|s| s.params.memory);
-        assert_eq!(on("date05", "model = \"ddr\""), Ok(Memory::Ddr(Ddr::DATE05)));
-        assert_eq!(on("wscg03", "model = \"ddr\"\nbanks = 2"), Ok(Memory::Ddr(Ddr { banks: 2, ..Ddr::WSCG03 })));
-        assert_eq!(on("wscg03", "model = \"ddr\"\npreset = \"date05\""), Ok(Memory::Ddr(Ddr::DATE05)));
+        let on = |preset: &str, m: &str| {
+            Scene::parse(&format!("{base}{m}\n[chip]\npreset = \"{preset}\""), "s")
+                .map(|s| s.params.memory)
+        };
+        assert_eq!(
+            on("date05", "model = \"ddr\""),
+            Ok(Memory::Ddr(Ddr::DATE05))
+        );
+        assert_eq!(
+            on("wscg03", "model = \"ddr\"\nbanks = 2"),
+            Ok(Memory::Ddr(Ddr {
+                banks: 2,
+                ..Ddr::WSCG03
+            }))
+        );
+        assert_eq!(
+            on("wscg03", "model = \"ddr\"\npreset = \"date05\""),
+            Ok(Memory::Ddr(Ddr::DATE05))
+        );
     }
 
     /// A chip preset is the base of `[chip]`, `[timing]`, `[memory]` and the clock; the
@@ -842,38 +1270,106 @@ mod tests {
         let parse = |t: &str| Scene::parse(&format!("{base}{t}"), "s");
         // no preset: the RTL's reset values, as before presets
         let rtl = parse("").unwrap();
-        assert_eq!((rtl.preset, rtl.cfg, rtl.params), (Preset::Rtl, ChipConfig::default(), Params::RTL));
+        assert_eq!(
+            (rtl.preset, rtl.cfg, rtl.params),
+            (Preset::Rtl, ChipConfig::default(), Params::RTL)
+        );
         let d = parse("[chip]\npreset = \"date05\"\n[timing]\ntechnology = \"paper\"").unwrap();
-        assert_eq!((d.cfg.k, d.params.memory, mhz(&d)), (24, Memory::Ddr(Ddr::DATE05), 800.0));
-        assert_eq!((d.params.issue_spacing, d.params.outstanding, d.params.prefetch, d.params.credit), (1, 16, 14, 48));
+        assert_eq!(
+            (d.cfg.k, d.params.memory, mhz(&d)),
+            (24, Memory::Ddr(Ddr::DATE05), 800.0)
+        );
+        assert_eq!(
+            (
+                d.params.issue_spacing,
+                d.params.outstanding,
+                d.params.prefetch,
+                d.params.credit
+            ),
+            (1, 16, 14, 48)
+        );
         // each key over the preset's value, the rest kept
         let o = parse("[chip]\npreset = \"date05\"\nk = 6\n[timing]\ncredit = 32\nclock_mhz = 400\n[memory]\nbanks = 4").unwrap();
-        assert_eq!((o.cfg.k, o.cfg.format, o.params.credit, o.params.prefetch, mhz(&o)), (6, d.cfg.format, 32, 14, 400.0));
-        assert_eq!(o.params.memory, Memory::Ddr(Ddr { banks: 4, ..Ddr::DATE05 }));
+        assert_eq!(
+            (
+                o.cfg.k,
+                o.cfg.format,
+                o.params.credit,
+                o.params.prefetch,
+                mhz(&o)
+            ),
+            (6, d.cfg.format, 32, 14, 400.0)
+        );
+        assert_eq!(
+            o.params.memory,
+            Memory::Ddr(Ddr {
+                banks: 4,
+                ..Ddr::DATE05
+            })
+        );
         // a memory model named replaces the preset's
         let i = parse("[chip]\npreset = \"date05\"\n[memory]\nmodel = \"ideal\"").unwrap();
         assert_eq!(i.params.memory, Memory::Ideal(MemTiming::default()));
         let w = parse("[chip]\npreset = \"wscg03\"\n[timing]\ntechnology = \"paper\"").unwrap();
-        assert_eq!((w.cfg.tri_cache, w.params.memory, mhz(&w)), (128, Memory::Ddr(Ddr::WSCG03), 266.0));
+        assert_eq!(
+            (w.cfg.tri_cache, w.params.memory, mhz(&w)),
+            (128, Memory::Ddr(Ddr::WSCG03), 266.0)
+        );
         // the wscg03 preset runs WSCG'03's chip; a scene's architecture key over any preset
-        assert_eq!((w.architecture, d.architecture, rtl.architecture), (Architecture::Wscg03, Architecture::Date05, Architecture::Date05));
+        assert_eq!(
+            (w.architecture, d.architecture, rtl.architecture),
+            (
+                Architecture::Wscg03,
+                Architecture::Date05,
+                Architecture::Date05
+            )
+        );
         let a = parse("[chip]\npreset = \"wscg03\"\narchitecture = \"date05\"").unwrap();
-        assert_eq!((a.architecture, a.cfg.tri_cache, a.cfg.layout, a.cfg.node_cache), (Architecture::Date05, 128, MemLayout::Records, 16));
+        assert_eq!(
+            (
+                a.architecture,
+                a.cfg.tri_cache,
+                a.cfg.layout,
+                a.cfg.node_cache
+            ),
+            (Architecture::Date05, 128, MemLayout::Records, 16)
+        );
         // WSCG'03's chip reads its own memory side; DATE'05's has no [stack_engine]
         assert_eq!((w.cfg.layout, w.cfg.node_cache), (MemLayout::Words, 1));
         let e = parse("[chip]\npreset = \"wscg03\"\narchitecture = \"date05\"\n[stack_engine]\nword_buffer = 4").unwrap_err();
         assert!(e.starts_with("s:13: [stack_engine] word_buffer is WSCG'03's chip's timing, not used by DATE'05's chip"), "{e}");
         let e = parse("[chip]\narchitecture = \"wscg04\"").unwrap_err();
-        assert!(e.starts_with("s:10:") && e.contains("\"date05\" or \"wscg03\""), "{e}");
-        let e = parse("[chip]\narchitecture = \"wscg03\"\n[stack_engine]\ntri_interval = 0").unwrap_err();
-        assert!(e.contains("[stack_engine] tri_interval must be at least 1"), "{e}");
+        assert!(
+            e.starts_with("s:10:") && e.contains("\"date05\" or \"wscg03\""),
+            "{e}"
+        );
+        let e = parse("[chip]\narchitecture = \"wscg03\"\n[stack_engine]\ntri_interval = 0")
+            .unwrap_err();
+        assert!(
+            e.contains("[stack_engine] tri_interval must be at least 1"),
+            "{e}"
+        );
         // --preset replaces the scene's preset, not its keys
-        let f = Scene::parse_with(&format!("{base}[chip]\npreset = \"date05\"\nk = 6"), "s", Flags { preset: Some(Preset::Rtl), ..Default::default() }).unwrap();
+        let f = Scene::parse_with(
+            &format!("{base}[chip]\npreset = \"date05\"\nk = 6"),
+            "s",
+            Flags {
+                preset: Some(Preset::Rtl),
+                ..Default::default()
+            },
+        )
+        .unwrap();
         assert_eq!((f.preset, f.cfg.k, f.params), (Preset::Rtl, 6, Params::RTL));
         let e = parse("[chip]\npreset = \"date06\"").unwrap_err();
-        assert!(e.starts_with("s:10:") && e.contains("\"date05\", \"wscg03\" or \"rtl\""), "{e}");
+        assert!(
+            e.starts_with("s:10:") && e.contains("\"date05\", \"wscg03\" or \"rtl\""),
+            "{e}"
+        );
         let e = parse("[chip]\nkk = 6").unwrap_err();
-        assert!(e.starts_with("s:10: [chip]") && e.contains("unknown field `kk`"), "{e}");
+        assert!(
+            e.starts_with("s:10: [chip]") && e.contains("unknown field `kk`"),
+            "{e}"
+        );
         assert!(graph::Plan::of(&d).explain(&d).contains("preset date05"));
     }
 
@@ -882,7 +1378,11 @@ mod tests {
     fn mesh_paths_are_relative_to_the_scene() {
         let dir = std::env::temp_dir().join(format!("cchip-scene-test-{}", std::process::id()));
         std::fs::create_dir_all(dir.join("sub")).unwrap();
-        std::fs::write(dir.join("sub/m.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n").unwrap();
+        std::fs::write(
+            dir.join("sub/m.obj"),
+            "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n",
+        )
+        .unwrap();
         let scene = dir.join("s.toml");
         let text = "[objects]\na = \"sub/m.obj\"\nb = \"sphere:12\"\n[[pose]]\nrot_deg=[0,0,0]\nt=[0,0,0]\n";
         std::fs::write(&scene, text).unwrap();
@@ -899,26 +1399,69 @@ mod tests {
         let parse = |t: &str| Scene::parse(&format!("{base}{t}"), "s");
         let mhz = |t: &str| parse(t).unwrap().clock.unwrap().mhz();
         let m = parse("").unwrap();
-        assert_eq!(m.clock, Some(Clock::of(Technology::Osu018, &m.cfg, Folds::NONE, Preset::Rtl).unwrap()));
-        assert!(m.configuration().contains("measured, the whole chip chip_e8m15_k6 (OSU 0.18 um, docs/figures/timing.csv)"), "{}", m.configuration());
+        assert_eq!(
+            m.clock,
+            Some(Clock::of(Technology::Osu018, &m.cfg, Folds::NONE, Preset::Rtl).unwrap())
+        );
+        assert!(
+            m.configuration().contains(
+                "measured, the whole chip chip_e8m15_k6 (OSU 0.18 um, docs/figures/timing.csv)"
+            ),
+            "{}",
+            m.configuration()
+        );
         assert_eq!(mhz("[timing]\ntechnology = \"paper\""), 800.0);
         let e = parse("[timing]\ntechnology = \"paper\"\nclock_mhz = 3").unwrap_err();
         assert!(e.contains("not both"), "{e}");
         let e = parse("[timing]\ntechnology = \"tsmc\"").unwrap_err();
-        assert!(e.starts_with("s:13:") && e.contains("\"osu018\", \"ecp5\" or \"paper\""), "{e}");
-        let flags = Flags { technology: Some(Technology::Paper), ..Default::default() };
-        assert_eq!(Scene::parse_with(&format!("{base}[timing]\nclock_mhz = 3"), "s", flags).unwrap().clock.unwrap().mhz(), 800.0);
+        assert!(
+            e.starts_with("s:13:") && e.contains("\"osu018\", \"ecp5\" or \"paper\""),
+            "{e}"
+        );
+        let flags = Flags {
+            technology: Some(Technology::Paper),
+            ..Default::default()
+        };
+        assert_eq!(
+            Scene::parse_with(&format!("{base}[timing]\nclock_mhz = 3"), "s", flags)
+                .unwrap()
+                .clock
+                .unwrap()
+                .mhz(),
+            800.0
+        );
         // an assumed clock gives a finite time in microseconds to every query the model runs
-        assert_eq!((mhz("[timing]\nclock_mhz = 0.001"), mhz("[timing]\nclock_mhz = 1e5")), (0.001, 1e5));
+        assert_eq!(
+            (
+                mhz("[timing]\nclock_mhz = 0.001"),
+                mhz("[timing]\nclock_mhz = 1e5")
+            ),
+            (0.001, 1e5)
+        );
         for bad in ["1e-307", "0.0009", "2e5", "0", "-3", "nan", "inf"] {
             let e = parse(&format!("[timing]\nclock_mhz = {bad}")).unwrap_err();
-            assert!(e.contains("clock_mhz must be from 0.001 to 100000 MHz"), "{bad}: {e}");
+            assert!(
+                e.contains("clock_mhz must be from 0.001 to 100000 MHz"),
+                "{bad}: {e}"
+            );
         }
         // the number as a user reads it, not 307 zeros
-        assert!(parse("[timing]\nclock_mhz = 1e-307").unwrap_err().ends_with("MHz, not 1e-307"));
+        assert!(parse("[timing]\nclock_mhz = 1e-307")
+            .unwrap_err()
+            .ends_with("MHz, not 1e-307"));
         // a datapath with no measured unit and no wider format measured: no period to report
-        let e = Scene::parse(&format!("{base}[chip]\nformat = \"e8m24\"").replace("[chip]\nk = 6\nformat = \"reduced\"\n", ""), "s").unwrap_err();
-        assert!(e.contains("measures none of this configuration's DOP datapath's units (fp_mul_e8m24_ru") && e.contains("clock_mhz"), "{e}");
+        let e = Scene::parse(
+            &format!("{base}[chip]\nformat = \"e8m24\"")
+                .replace("[chip]\nk = 6\nformat = \"reduced\"\n", ""),
+            "s",
+        )
+        .unwrap_err();
+        assert!(
+            e.contains(
+                "measures none of this configuration's DOP datapath's units (fp_mul_e8m24_ru"
+            ) && e.contains("clock_mhz"),
+            "{e}"
+        );
         // ... unless no output runs the chip: then there is no clock to refuse
         let golden = "[objects]\na = \"sphere:12\"\nb = \"sphere:12\"\n[[pose]]\nrot_deg=[0,0,0]\nt=[0,0,0]\n[chip]\nformat = \"e8m24\"\n";
         assert_eq!(Scene::parse(golden, "s").unwrap().clock, None);

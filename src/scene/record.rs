@@ -86,7 +86,10 @@ impl CycleRecord {
     /// The chip's answer once `host` has settled its uncertain pairs: its sure hits and the
     /// uncertain pairs that intersect, sorted.
     pub fn answer(&self, host: &Host) -> Vec<(u32, u32)> {
-        let kept = self.uncertain_pairs.iter().filter(|&&(a, b)| host.settle(a, b));
+        let kept = self
+            .uncertain_pairs
+            .iter()
+            .filter(|&&(a, b)| host.settle(a, b));
         let mut a: Vec<_> = self.hit_pairs.iter().chain(kept).copied().collect();
         a.sort_unstable();
         a

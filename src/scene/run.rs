@@ -2,18 +2,18 @@
 //! at all; [`Activity`] counts what ran, so that tests can prove it.
 
 use super::graph::{Plan, Unit};
+use super::record::{CycleRecord, MemoryRecord, PoseRecord};
 use super::{CrossCheck, Scene};
-use crate::pose::ScenePose;
+use crate::chip::layout::Layout;
+use crate::chip::reg::Mode;
+use crate::chip::timing::Clock;
+use crate::chip::wscg03::Architecture;
 use crate::cycle::{self, drive::Reader};
 use crate::harness::{chip_io, verilator};
 use crate::measure::{fastest_us, parallel_map, TIMING_RUNS};
+use crate::pose::ScenePose;
 use crate::query::{exact_pairs, Accuracy, Chip};
-use super::record::{CycleRecord, MemoryRecord, PoseRecord};
 use crate::traversal::QueryResult;
-use crate::chip::layout::Layout;
-use crate::chip::timing::Clock;
-use crate::chip::reg::Mode;
-use crate::chip::wscg03::Architecture;
 use crate::traversal::Traversal;
 use serde::Serialize;
 
@@ -68,19 +68,41 @@ pub struct SceneRun {
 impl<'s> Prepared<'s> {
     /// Loads and checks; errors name the scene. `load` reads a mesh spec (scaled into the
     /// unit cube if the scene says so).
-    pub fn new(scene: &'s Scene, load: impl Fn(&str) -> Result<crate::mesh::Mesh, String>) -> Result<Self, String> {
+    pub fn new(
+        scene: &'s Scene,
+        load: impl Fn(&str) -> Result<crate::mesh::Mesh, String>,
+    ) -> Result<Self, String> {
         let named = |e: String| format!("{}: {e}", scene.name);
         let plan = Plan::of(scene);
         // the RTL chip a cross-check runs, and its order (the scene is refused without one)
-        let rtl = plan.cross_check.map(|_| chip_io::rtl_order(&scene.cfg, scene.traversal, &scene.params)).transpose().map_err(named)?;
-        let (ma, mb) = crate::mesh::pair(&scene.objects.a, &scene.objects.b, &load).map_err(named)?;
+        let rtl = plan
+            .cross_check
+            .map(|_| chip_io::rtl_order(&scene.cfg, scene.traversal, &scene.params))
+            .transpose()
+            .map_err(named)?;
+        let (ma, mb) =
+            crate::mesh::pair(&scene.objects.a, &scene.objects.b, &load).map_err(named)?;
         let (a, b) = (ma.triangles_f64(), mb.triangles_f64());
         drop((ma, mb));
         let chip = Chip::of(a, b, scene.cfg).map_err(named)?;
-        scene.poses.iter().try_for_each(|sp| chip.check_pose(&sp.pose)).map_err(named)?;
+        scene
+            .poses
+            .iter()
+            .try_for_each(|sp| chip.check_pose(&sp.pose))
+            .map_err(named)?;
         if let Some((kind, order)) = rtl {
             // the images the RTL reads: node ids and memory words within its widths
-            chip_io::QueryImage::new(kind, &chip.a, &chip.b, &chip.setup(&scene.poses[0].pose), order, scene.mode, &scene.params, &chip.cfg).map_err(named)?;
+            chip_io::QueryImage::new(
+                kind,
+                &chip.a,
+                &chip.b,
+                &chip.setup(&scene.poses[0].pose),
+                order,
+                scene.mode,
+                &scene.params,
+                &chip.cfg,
+            )
+            .map_err(named)?;
         }
         let verilog = match plan.cross_check {
             Some(CrossCheck::Verilog) => {
@@ -89,7 +111,12 @@ impl<'s> Prepared<'s> {
             }
             _ => None,
         };
-        Ok(Prepared { scene, plan, chip, verilog })
+        Ok(Prepared {
+            scene,
+            plan,
+            chip,
+            verilog,
+        })
     }
 
     /// Runs every pose: the golden queries one at a time (their time is the software's on an
@@ -121,12 +148,21 @@ impl<'s> Prepared<'s> {
                 c.add_host(self.chip.host_time(&sp.pose, &c.uncertain_pairs));
             }
         }
-        Ok(SceneRun { records, activity: counts.0.into_inner().expect("a pose's thread panicked") })
+        Ok(SceneRun {
+            records,
+            activity: counts.0.into_inner().expect("a pose's thread panicked"),
+        })
     }
 
     /// One pose after its golden query: the exact oracle and the cycle model (with what
     /// hangs on it) as the plan says.
-    fn pose(&self, i: usize, sp: &ScenePose, golden: &(QueryResult, f64), counts: &Counts) -> Result<PoseRecord, String> {
+    fn pose(
+        &self,
+        i: usize,
+        sp: &ScenePose,
+        golden: &(QueryResult, f64),
+        counts: &Counts,
+    ) -> Result<PoseRecord, String> {
         let (res, software_us) = (&golden.0, golden.1);
         let exact = self.plan.runs(Unit::ExactOracle).then(|| {
             counts.add(|a| a.oracle_queries += 1);
@@ -138,12 +174,17 @@ impl<'s> Prepared<'s> {
         };
         // the chip's answer where its queue overflowed (incomplete), else the golden model's
         // (the cycle model's, checked)
-        let answer = cycles.as_ref().filter(|c| c.overflow).map(|c| c.answer(&self.chip.host(&sp.pose)));
+        let answer = cycles
+            .as_ref()
+            .filter(|c| c.overflow)
+            .map(|c| c.answer(&self.chip.host(&sp.pose)));
         Ok(PoseRecord {
             pose: sp.pose,
             distance: sp.distance,
             pair_count: res.pairs.len(),
-            accuracy: exact.as_ref().map(|x| Accuracy::of(self.scene.mode, answer.as_deref().unwrap_or(&res.pairs), x)),
+            accuracy: exact
+                .as_ref()
+                .map(|x| Accuracy::of(self.scene.mode, answer.as_deref().unwrap_or(&res.pairs), x)),
             exact_pair_count: exact.as_ref().map(Vec::len),
             pairs: self.scene.outputs.pairs.then(|| res.pairs.clone()),
             counters: res.counters,
@@ -151,14 +192,25 @@ impl<'s> Prepared<'s> {
         })
     }
 
-    fn cycles(&self, i: usize, sp: &ScenePose, res: &QueryResult, software_us: f64, counts: &Counts) -> Result<CycleRecord, String> {
+    fn cycles(
+        &self,
+        i: usize,
+        sp: &ScenePose,
+        res: &QueryResult,
+        software_us: f64,
+        counts: &Counts,
+    ) -> Result<CycleRecord, String> {
         if self.scene.architecture == Architecture::Wscg03 {
             return self.stack_cycles(i, sp, res, software_us, counts);
         }
         let (s, plan, chip) = (self.scene, &self.plan, &self.chip);
         let order = s.traversal.order().expect("checked in Prepared::new");
         let setup = chip.setup(&sp.pose);
-        let wave = s.outputs.waveforms.as_ref().filter(|_| plan.runs(Unit::WaveformWriter));
+        let wave = s
+            .outputs
+            .waveforms
+            .as_ref()
+            .filter(|_| plan.runs(Unit::WaveformWriter));
         let vcd = wave.map(|w| w.dir.join(format!("pose{i}.vcd")));
         // the exported Verilog's ports, recorded from the cycle model's probes
         let mut ports = verilator::PortLog::default();
@@ -168,11 +220,26 @@ impl<'s> Prepared<'s> {
         };
         let rec = cycle::Record {
             counters: plan.runs(Unit::Counters),
-            vcd: vcd.as_deref().zip(wave).map(|(p, w)| (p, &w.scopes[..], w.window.clone())),
-            probes: self.verilog.as_ref().map(|_| &mut observe as &mut dyn FnMut(u64, &[u64]) -> Result<(), String>),
+            vcd: vcd
+                .as_deref()
+                .zip(wave)
+                .map(|(p, w)| (p, &w.scopes[..], w.window.clone())),
+            probes: self
+                .verilog
+                .as_ref()
+                .map(|_| &mut observe as &mut dyn FnMut(u64, &[u64]) -> Result<(), String>),
         };
-        let (trace, stats) = cycle::run_query(chip, &setup, order, s.mode, s.params, Reader::default(), cycle::MAX_CYCLES, rec)
-            .map_err(|e| format!("pose {i}: {e}"))?;
+        let (trace, stats) = cycle::run_query(
+            chip,
+            &setup,
+            order,
+            s.mode,
+            s.params,
+            Reader::default(),
+            cycle::MAX_CYCLES,
+            rec,
+        )
+        .map_err(|e| format!("pose {i}: {e}"))?;
         counts.add(|a| {
             a.cycle_runs += 1;
             a.counted_runs += stats.is_some() as u64;
@@ -185,14 +252,27 @@ impl<'s> Prepared<'s> {
                 Mode::First => chip.query(&sp.pose, Mode::All, s.traversal),
             };
             // an overflow is the chip's answer (incomplete, flagged), not a disagreement
-            if let Err(e) = trace.check(s.mode, &golden_all).or_else(|e| if trace.overflow { Ok(()) } else { Err(e) }) {
-                return Err(format!("pose {i}: the cycle model disagrees with the golden model: {e}"));
+            if let Err(e) = trace.check(s.mode, &golden_all).or_else(|e| {
+                if trace.overflow {
+                    Ok(())
+                } else {
+                    Err(e)
+                }
+            }) {
+                return Err(format!(
+                    "pose {i}: the cycle model disagrees with the golden model: {e}"
+                ));
             }
         }
         let cross_checked = match plan.cross_check {
             None => None,
             Some(CrossCheck::Rtl) => {
-                let speed = crate::chip::rtl::ChipKind::of(&chip.cfg, s.params.dop_interval, s.params.tri_interval).map_or(1.0, |k| k.rtl_clocks_per_second());
+                let speed = crate::chip::rtl::ChipKind::of(
+                    &chip.cfg,
+                    s.params.dop_interval,
+                    s.params.tri_interval,
+                )
+                .map_or(1.0, |k| k.rtl_clocks_per_second());
                 let hours = trace.cycles as f64 / speed / 3600.0;
                 if hours > 0.5 {
                     return Err(format!(
@@ -201,35 +281,82 @@ impl<'s> Prepared<'s> {
                         speed
                     ));
                 }
-                let rtl = chip_io::cross_check(chip, &sp.pose, s.mode, s.traversal, s.params, 2 * trace.cycles + 1000)
-                    .map_err(|e| format!("pose {i}: rust-hdl and the cycle model differ: {e}"))?;
+                let rtl = chip_io::cross_check(
+                    chip,
+                    &sp.pose,
+                    s.mode,
+                    s.traversal,
+                    s.params,
+                    2 * trace.cycles + 1000,
+                )
+                .map_err(|e| format!("pose {i}: rust-hdl and the cycle model differ: {e}"))?;
                 counts.add(|a| a.rtl_runs += 1);
                 if rtl != trace {
-                    return Err(format!("pose {i}: rust-hdl's trace differs from the cycle model's:\n{}\n{}", rtl.text(), trace.text()));
+                    return Err(format!(
+                        "pose {i}: rust-hdl's trace differs from the cycle model's:\n{}\n{}",
+                        rtl.text(),
+                        trace.text()
+                    ));
                 }
                 Some(CrossCheck::Rtl)
             }
             Some(CrossCheck::Verilog) => {
                 let bin = self.verilog.as_deref().expect("built in Prepared::new");
-                let (kind, _) = chip_io::rtl_order(&chip.cfg, s.traversal, &s.params).map_err(|e| format!("pose {i}: {e}"))?;
-                let image = chip_io::QueryImage::new(kind, &chip.a, &chip.b, &setup, order, s.mode, &s.params, &chip.cfg).map_err(|e| format!("pose {i}: {e}"))?;
-                let dir = verilator::work_dir().join(format!("pose{i}"));
-                verilator::cross_check(bin, &dir, &image, s.params.memory, 2 * trace.cycles + 1000, &ports, &trace)
+                let (kind, _) = chip_io::rtl_order(&chip.cfg, s.traversal, &s.params)
                     .map_err(|e| format!("pose {i}: {e}"))?;
+                let image = chip_io::QueryImage::new(
+                    kind, &chip.a, &chip.b, &setup, order, s.mode, &s.params, &chip.cfg,
+                )
+                .map_err(|e| format!("pose {i}: {e}"))?;
+                let dir = verilator::work_dir().join(format!("pose{i}"));
+                verilator::cross_check(
+                    bin,
+                    &dir,
+                    &image,
+                    s.params.memory,
+                    2 * trace.cycles + 1000,
+                    &ports,
+                    &trace,
+                )
+                .map_err(|e| format!("pose {i}: {e}"))?;
                 counts.add(|a| a.verilog_runs += 1);
                 Some(CrossCheck::Verilog)
             }
         };
-        let mut r = record(&chip.layout, &trace, s.clock.as_ref().expect(CLOCKED), software_us);
-        (r.stats, r.vcd, r.cross_checked) = (stats, vcd.map(|p| p.display().to_string()), cross_checked.map(|c| c.to_string()));
+        let mut r = record(
+            &chip.layout,
+            &trace,
+            s.clock.as_ref().expect(CLOCKED),
+            software_us,
+        );
+        (r.stats, r.vcd, r.cross_checked) = (
+            stats,
+            vcd.map(|p| p.display().to_string()),
+            cross_checked.map(|c| c.to_string()),
+        );
         Ok(r)
     }
 
     /// One pose on WSCG'03's chip ([`cycle::wscg03`]), checked against the golden list
     /// traversal (WSCG'03 Algorithm 2), all pairs.
-    fn stack_cycles(&self, i: usize, sp: &ScenePose, res: &QueryResult, software_us: f64, counts: &Counts) -> Result<CycleRecord, String> {
+    fn stack_cycles(
+        &self,
+        i: usize,
+        sp: &ScenePose,
+        res: &QueryResult,
+        software_us: f64,
+        counts: &Counts,
+    ) -> Result<CycleRecord, String> {
         let (s, chip) = (self.scene, &self.chip);
-        let run = cycle::wscg03::run_query(chip, &chip.setup(&sp.pose), s.mode, &s.params, &s.stack, cycle::MAX_CYCLES).map_err(|e| format!("pose {i}: {e}"))?;
+        let run = cycle::wscg03::run_query(
+            chip,
+            &chip.setup(&sp.pose),
+            s.mode,
+            &s.params,
+            &s.stack,
+            cycle::MAX_CYCLES,
+        )
+        .map_err(|e| format!("pose {i}: {e}"))?;
         counts.add(|a| {
             a.cycle_runs += 1;
             a.counted_runs += 1;
@@ -241,10 +368,17 @@ impl<'s> Prepared<'s> {
                 _ => chip.query(&sp.pose, Mode::All, Traversal::List),
             };
             if let Err(e) = run.trace.check(s.mode, &golden) {
-                return Err(format!("pose {i}: WSCG'03's chip disagrees with the golden list traversal: {e}"));
+                return Err(format!(
+                    "pose {i}: WSCG'03's chip disagrees with the golden list traversal: {e}"
+                ));
             }
         }
-        let mut r = record(&cycle::wscg03::layout(&chip.cfg), &run.trace, s.clock.as_ref().expect(CLOCKED), software_us);
+        let mut r = record(
+            &cycle::wscg03::layout(&chip.cfg),
+            &run.trace,
+            s.clock.as_ref().expect(CLOCKED),
+            software_us,
+        );
         r.wscg03 = Some(run.stats);
         Ok(r)
     }
@@ -254,7 +388,12 @@ impl<'s> Prepared<'s> {
 const CLOCKED: &str = "a scene that runs the cycle model has a clock";
 
 /// A cycle-model trace as a record (no stall counts, VCD or cross-check yet).
-fn record(layout: &Layout, trace: &cycle::drive::ChipTrace, clock: &Clock, software_us: f64) -> CycleRecord {
+fn record(
+    layout: &Layout,
+    trace: &cycle::drive::ChipTrace,
+    clock: &Clock,
+    software_us: f64,
+) -> CycleRecord {
     let (hits, unc) = trace.pairs();
     CycleRecord {
         cycles: trace.cycles,
@@ -276,7 +415,8 @@ fn record(layout: &Layout, trace: &cycle::drive::ChipTrace, clock: &Clock, softw
         memory: MemoryRecord {
             node_words: trace.node_fetches,
             tri_words: trace.tri_fetches,
-            bytes: trace.node_fetches * layout.record_bytes()[0] + trace.tri_fetches * layout.record_bytes()[1],
+            bytes: trace.node_fetches * layout.record_bytes()[0]
+                + trace.tri_fetches * layout.record_bytes()[1],
             page_hits: trace.memory.page_hits,
             page_misses: trace.memory.page_misses,
             bank_conflicts: trace.memory.bank_conflicts,
@@ -302,7 +442,10 @@ mod tests {
 
     fn run(outputs: &str) -> (Plan, SceneRun) {
         let s = Scene::parse(&format!("{BASE}[outputs]\n{outputs}"), "test").unwrap();
-        let p = Prepared::new(&s, |spec| crate::mesh::resolve(spec).map_err(|e| e.to_string())).unwrap();
+        let p = Prepared::new(&s, |spec| {
+            crate::mesh::resolve(spec).map_err(|e| e.to_string())
+        })
+        .unwrap();
         let r = p.run(|| ()).unwrap();
         (p.plan, r)
     }
@@ -316,32 +459,83 @@ mod tests {
     fn only_what_the_outputs_need_runs() {
         let (plan, pairs) = run("");
         let kept: Vec<Unit> = plan.kept.iter().copied().collect();
-        assert_eq!(kept, [Unit::Meshes, Unit::HostTrees, Unit::HostSetup, Unit::Golden, Unit::HostSettle, Unit::OutPairs]);
-        assert_eq!(pairs.activity, Activity { golden_queries: 4, ..Default::default() });
-        assert!(pairs.records.iter().all(|r| r.cycles.is_none() && r.accuracy.is_none()));
+        assert_eq!(
+            kept,
+            [
+                Unit::Meshes,
+                Unit::HostTrees,
+                Unit::HostSetup,
+                Unit::Golden,
+                Unit::HostSettle,
+                Unit::OutPairs
+            ]
+        );
+        assert_eq!(
+            pairs.activity,
+            Activity {
+                golden_queries: 4,
+                ..Default::default()
+            }
+        );
+        assert!(pairs
+            .records
+            .iter()
+            .all(|r| r.cycles.is_none() && r.accuracy.is_none()));
 
         let (_, acc) = run("accuracy = true");
-        assert_eq!(acc.activity, Activity { golden_queries: 4, oracle_queries: 4, ..Default::default() });
+        assert_eq!(
+            acc.activity,
+            Activity {
+                golden_queries: 4,
+                oracle_queries: 4,
+                ..Default::default()
+            }
+        );
 
         let (_, cyc) = run("cycles = true");
         let a = cyc.activity;
-        assert_eq!((a.oracle_queries, a.cycle_runs, a.counted_runs, a.vcd_files), (0, 4, 4, 0));
+        assert_eq!(
+            (a.oracle_queries, a.cycle_runs, a.counted_runs, a.vcd_files),
+            (0, 4, 4, 0)
+        );
         assert!(a.cycle_clocks > 1000);
 
         let dir = vcd_dir("only");
-        let (wplan, wave) = run(&format!("waveforms = {{ dir = {:?}, scopes = [\"memory\"], cycles = [10, 40] }}", dir.display().to_string()));
-        assert!(!wplan.runs(Unit::Counters) && !wplan.runs(Unit::GoldenCheck) && wplan.runs(Unit::WaveformWriter));
+        let (wplan, wave) = run(&format!(
+            "waveforms = {{ dir = {:?}, scopes = [\"memory\"], cycles = [10, 40] }}",
+            dir.display().to_string()
+        ));
+        assert!(
+            !wplan.runs(Unit::Counters)
+                && !wplan.runs(Unit::GoldenCheck)
+                && wplan.runs(Unit::WaveformWriter)
+        );
         let a = wave.activity;
-        assert_eq!((a.oracle_queries, a.cycle_runs, a.counted_runs, a.vcd_files), (0, 4, 0, 4));
+        assert_eq!(
+            (a.oracle_queries, a.cycle_runs, a.counted_runs, a.vcd_files),
+            (0, 4, 0, 4)
+        );
         let vcd = std::fs::read_to_string(dir.join("pose3.vcd")).unwrap();
         let _ = std::fs::remove_dir_all(&dir);
-        assert!(vcd.contains("$scope module memory $end") && !vcd.contains("$scope module d_cntr $end"), "{vcd}");
-        let times: Vec<u64> = vcd.lines().filter_map(|l| l.strip_prefix('#')?.parse().ok()).collect();
-        assert!(times.first() == Some(&10) && times.iter().all(|t| (10..=40).contains(t)), "{times:?}");
+        assert!(
+            vcd.contains("$scope module memory $end") && !vcd.contains("$scope module d_cntr $end"),
+            "{vcd}"
+        );
+        let times: Vec<u64> = vcd
+            .lines()
+            .filter_map(|l| l.strip_prefix('#')?.parse().ok())
+            .collect();
+        assert!(
+            times.first() == Some(&10) && times.iter().all(|t| (10..=40).contains(t)),
+            "{times:?}"
+        );
 
         let (_, mem) = run("memory = true");
         let a = mem.activity;
-        assert_eq!((a.oracle_queries, a.cycle_runs, a.counted_runs, a.vcd_files), (0, 4, 4, 0));
+        assert_eq!(
+            (a.oracle_queries, a.cycle_runs, a.counted_runs, a.vcd_files),
+            (0, 4, 4, 0)
+        );
     }
 
     /// Asking for more never changes the pairs or the cycles.
@@ -350,16 +544,37 @@ mod tests {
         let (_, pairs) = run("");
         let (_, cyc) = run("cycles = true");
         let dir = vcd_dir("all");
-        let (_, all) = run(&format!("cycles = true\nmemory = true\naccuracy = true\npairs = true\nwaveforms = {:?}", dir.display().to_string()));
+        let (_, all) = run(&format!(
+            "cycles = true\nmemory = true\naccuracy = true\npairs = true\nwaveforms = {:?}",
+            dir.display().to_string()
+        ));
         let _ = std::fs::remove_dir_all(&dir);
         assert_eq!(all.activity.vcd_files, 4);
         for ((p, c), x) in pairs.records.iter().zip(&cyc.records).zip(&all.records) {
             assert_eq!((p.pair_count, p.counters), (x.pair_count, x.counters));
             let (c, x) = (c.cycles.as_ref().unwrap(), x.cycles.as_ref().unwrap());
-            assert_eq!((c.cycles, &c.hit_pairs, &c.uncertain_pairs, c.memory.bytes, c.stats), (x.cycles, &x.hit_pairs, &x.uncertain_pairs, x.memory.bytes, x.stats));
+            assert_eq!(
+                (
+                    c.cycles,
+                    &c.hit_pairs,
+                    &c.uncertain_pairs,
+                    c.memory.bytes,
+                    c.stats
+                ),
+                (
+                    x.cycles,
+                    &x.hit_pairs,
+                    &x.uncertain_pairs,
+                    x.memory.bytes,
+                    x.stats
+                )
+            );
             assert_eq!(x.memory.bytes > 0, c.cycles > 100);
             // all pairs: the chip's tests are the golden traversal's
-            assert_eq!((c.dop_tests, c.tri_tests), (p.counters.dop_tests, p.counters.tri_tests));
+            assert_eq!(
+                (c.dop_tests, c.tri_tests),
+                (p.counters.dop_tests, p.counters.tri_tests)
+            );
         }
     }
 
@@ -368,17 +583,35 @@ mod tests {
     #[test]
     fn json_times_add_up() {
         let s = Scene::parse(&format!("{BASE}[outputs]\ncycles = true"), "test").unwrap();
-        let r = Prepared::new(&s, |spec| crate::mesh::resolve(spec).map_err(|e| e.to_string())).unwrap().run(|| ()).unwrap();
+        let r = Prepared::new(&s, |spec| {
+            crate::mesh::resolve(spec).map_err(|e| e.to_string())
+        })
+        .unwrap()
+        .run(|| ())
+        .unwrap();
         let v = serde_json::to_value(&r.records).unwrap();
         for p in v.as_array().unwrap() {
             let c = &p["cycles"];
             let f = |k: &str| c[k].as_f64().unwrap_or_else(|| panic!("no {k} in {c}"));
             let close = |a: f64, b: f64| (a - b).abs() <= 1e-12 * b.abs();
             assert_eq!(f("period_ns"), s.clock.as_ref().unwrap().period_ns);
-            assert_eq!((c["period_source"].as_str(), c["timing_runs"].as_u64()), (Some("estimated"), Some(TIMING_RUNS as u64)), "k = 14 has no RTL chip");
-            assert!(close(f("chip_us"), f("cycles") * f("period_ns") / 1000.0), "{c}");
+            assert_eq!(
+                (c["period_source"].as_str(), c["timing_runs"].as_u64()),
+                (Some("estimated"), Some(TIMING_RUNS as u64)),
+                "k = 14 has no RTL chip"
+            );
+            assert!(
+                close(f("chip_us"), f("cycles") * f("period_ns") / 1000.0),
+                "{c}"
+            );
             assert!(f("host_setup_us") > 0.0 && f("settle_us") > 0.0, "{c}");
-            assert!(close(f("end_to_end_us"), f("host_setup_us") + f("chip_us") + f("settle_us")), "{c}");
+            assert!(
+                close(
+                    f("end_to_end_us"),
+                    f("host_setup_us") + f("chip_us") + f("settle_us")
+                ),
+                "{c}"
+            );
         }
     }
 
@@ -389,24 +622,57 @@ mod tests {
             Plan::of(&s).explain(&s)
         };
         let pairs = explain("");
-        assert!(pairs.contains("skipped (not built, not run): exact_oracle, accuracy_counter, d_cntr"), "{pairs}");
-        for o in ["cycles = true", "waveforms = \"w\"", "accuracy = true", "memory = true"] {
+        assert!(
+            pairs.contains("skipped (not built, not run): exact_oracle, accuracy_counter, d_cntr"),
+            "{pairs}"
+        );
+        for o in [
+            "cycles = true",
+            "waveforms = \"w\"",
+            "accuracy = true",
+            "memory = true",
+        ] {
             assert_ne!(explain(o), pairs, "{o}");
         }
-        assert!(explain("cycles = true").contains("stage 6 (clocked together, every clock)\n  d_cntr"));
+        assert!(
+            explain("cycles = true").contains("stage 6 (clocked together, every clock)\n  d_cntr")
+        );
         assert!(!explain("waveforms = \"w\"").contains("  counters "));
         let k6 = BASE.replace("k = 14", "k = 6\nformat = \"reduced\"");
-        let rtl = Plan::of(&Scene::parse(&format!("{k6}[outputs]\ncross_check = \"rtl\""), "t").unwrap());
-        let ver = Plan::of(&Scene::parse(&format!("{k6}[outputs]\ncross_check = \"verilog\""), "t").unwrap());
+        let rtl =
+            Plan::of(&Scene::parse(&format!("{k6}[outputs]\ncross_check = \"rtl\""), "t").unwrap());
+        let ver = Plan::of(
+            &Scene::parse(&format!("{k6}[outputs]\ncross_check = \"verilog\""), "t").unwrap(),
+        );
         assert!(rtl.runs(Unit::RtlChip) && !rtl.runs(Unit::VerilogChip) && rtl.runs(Unit::DCntr));
-        assert!(ver.runs(Unit::VerilogChip) && !ver.runs(Unit::RtlChip) && !ver.runs(Unit::ExactOracle));
+        assert!(
+            ver.runs(Unit::VerilogChip) && !ver.runs(Unit::RtlChip) && !ver.runs(Unit::ExactOracle)
+        );
         let s = Scene::parse(BASE, "t").unwrap();
-        assert!(Plan::of(&s).dot(&s).contains("exact_oracle [label=\"exact_oracle\\nfunctional\", shape=box, style=\"dashed\""));
+        assert!(Plan::of(&s).dot(&s).contains(
+            "exact_oracle [label=\"exact_oracle\\nfunctional\", shape=box, style=\"dashed\""
+        ));
         // WSCG'03's chip: both views name its units
-        let w = Scene::parse(&format!("{}[outputs]\ncycles = true", chip("architecture = \"wscg03\"")), "t").unwrap();
+        let w = Scene::parse(
+            &format!(
+                "{}[outputs]\ncycles = true",
+                chip("architecture = \"wscg03\"")
+            ),
+            "t",
+        )
+        .unwrap();
         let (explain, dot) = (Plan::of(&w).explain(&w), Plan::of(&w).dot(&w));
-        for unit in ["stack_engine", "memory_controller", "triangle_unit", "pointer_fifo"] {
-            assert!(explain.contains(&format!("  {unit} ")) && dot.contains(&format!("label=\"{unit}\\ncycle\"")), "{unit}: {explain}\n{dot}");
+        for unit in [
+            "stack_engine",
+            "memory_controller",
+            "triangle_unit",
+            "pointer_fifo",
+        ] {
+            assert!(
+                explain.contains(&format!("  {unit} "))
+                    && dot.contains(&format!("label=\"{unit}\\ncycle\"")),
+                "{unit}: {explain}\n{dot}"
+            );
         }
     }
 
@@ -464,12 +730,18 @@ mod tests {
                     None => sections.push((section, format!("{k} = {v}"))),
                 }
             }
-            let body: String = sections.iter().map(|(s, b)| format!("[{s}]\n{b}\n")).collect();
+            let body: String = sections
+                .iter()
+                .map(|(s, b)| format!("[{s}]\n{b}\n"))
+                .collect();
             format!("[objects]\na = \"sphere:80\"\nb = \"torus:60\"\n[[pose]]\nrot_deg = [10, 20, 30]\nt = [0.6, 0.1, 0]\n[outputs]\ncycles = true\nmemory = true\n{body}")
         };
         // what a scene reports, its measured times aside
         let report = |s: &Scene| {
-            let p = Prepared::new(s, |spec| crate::mesh::resolve(spec).map_err(|e| e.to_string())).unwrap();
+            let p = Prepared::new(s, |spec| {
+                crate::mesh::resolve(spec).map_err(|e| e.to_string())
+            })
+            .unwrap();
             let mut v = serde_json::to_value(p.run(|| ()).unwrap().records).unwrap();
             for r in v.as_array_mut().unwrap() {
                 for t in ["software_us", "host_setup_us", "settle_us", "end_to_end_us"] {
@@ -487,11 +759,22 @@ mod tests {
                     if section == "chip" && key == "architecture" && !arch.is_empty() {
                         continue;
                     }
-                    let tried = values.iter().map(|v| (v, Scene::parse(&scene(preset, arch, Some((section, key, v))), "s")));
-                    let changed = tried.clone().find(|(_, r)| r.as_ref().map_or(true, |s| s.configuration() != base.configuration()));
+                    let tried = values.iter().map(|v| {
+                        (
+                            v,
+                            Scene::parse(&scene(preset, arch, Some((section, key, v))), "s"),
+                        )
+                    });
+                    let changed = tried.clone().find(|(_, r)| {
+                        r.as_ref()
+                            .map_or(true, |s| s.configuration() != base.configuration())
+                    });
                     let (v, parsed) = changed.unwrap_or_else(|| panic!("{preset} {arch}: [{section}] {key} = {values:?} accepted and resolved to the same configuration"));
                     match parsed {
-                        Err(e) => assert!(e.contains(&format!("[{section}] {key}")), "{preset} {arch}: {key} = {v}: {e}"),
+                        Err(e) => assert!(
+                            e.contains(&format!("[{section}] {key}")),
+                            "{preset} {arch}: {key} = {v}: {e}"
+                        ),
                         Ok(s) => {
                             assert_ne!(report(&s), base_report, "{preset} {arch}: [{section}] {key} = {v} accepted and changed nothing the scene reports");
                             used += 1;
@@ -502,10 +785,18 @@ mod tests {
         }
         assert!(used > 60, "{used}");
         // no output runs the chip: every key that sets it is refused
-        for &(section, key, values) in KEYS.iter().filter(|k| k.0 != "chip" || k.1 == "architecture") {
+        for &(section, key, values) in KEYS
+            .iter()
+            .filter(|k| k.0 != "chip" || k.1 == "architecture")
+        {
             let text = format!("[objects]\na = \"sphere:12\"\nb = \"sphere:12\"\n[[pose]]\nrot_deg = [0, 0, 0]\nt = [0, 0, 0]\n[{section}]\n{key} = {}\n", values[0]);
             let e = Scene::parse(&text, "s").unwrap_err();
-            assert!(e.starts_with(&format!("s:8: [{section}] {key} sets the chip the cycle model runs")), "{e}");
+            assert!(
+                e.starts_with(&format!(
+                    "s:8: [{section}] {key} sets the chip the cycle model runs"
+                )),
+                "{e}"
+            );
         }
     }
 
@@ -514,19 +805,57 @@ mod tests {
     /// traversal on D_CNTR, a cross-check of a configuration no RTL chip has).
     #[test]
     fn explain_refuses_what_run_refuses() {
-        let refused = |text: String, flags: Flags| Scene::parse_with(&text, "t", flags).unwrap_err();
+        let refused =
+            |text: String, flags: Flags| Scene::parse_with(&text, "t", flags).unwrap_err();
         let wscg03 = chip("architecture = \"wscg03\"");
-        let e = refused(format!("{wscg03}[outputs]\nwaveforms = \"w\""), Flags::default());
-        assert!(e.starts_with("t:11: [outputs] waveforms: WSCG'03's chip") && e.contains("no RTL and no probes"), "{e}");
-        let e = refused(wscg03, Flags { waveforms: Some("w".into()), ..Default::default() });
+        let e = refused(
+            format!("{wscg03}[outputs]\nwaveforms = \"w\""),
+            Flags::default(),
+        );
+        assert!(
+            e.starts_with("t:11: [outputs] waveforms: WSCG'03's chip")
+                && e.contains("no RTL and no probes"),
+            "{e}"
+        );
+        let e = refused(
+            wscg03,
+            Flags {
+                waveforms: Some("w".into()),
+                ..Default::default()
+            },
+        );
         assert!(e.starts_with("t: --vcd: WSCG'03's chip"), "{e}");
-        let e = refused(format!("{BASE}[query]\ntraversal = \"list\"\n[outputs]\ncycles = true"), Flags::default());
+        let e = refused(
+            format!("{BASE}[query]\ntraversal = \"list\"\n[outputs]\ncycles = true"),
+            Flags::default(),
+        );
         assert!(e.starts_with("t:10: [query] traversal: cycles, memory, waveforms and cross-checks come from DATE'05's D_CNTR") && e.contains("not list:"), "{e}");
-        let e = refused(BASE.into(), Flags { cross_check: Some(CrossCheck::Rtl), ..Default::default() });
-        assert!(e.starts_with("t: --rtl: cross_check = \"rtl\" needs an RTL chip") && e.contains("k = 14"), "{e}");
-        let e = refused(format!("{}[outputs]\ncross_check = \"verilog\"", BASE.replace("k = 14", "k = 6\nformat = \"reduced\"\nnode_cache = 16")), Flags::default());
+        let e = refused(
+            BASE.into(),
+            Flags {
+                cross_check: Some(CrossCheck::Rtl),
+                ..Default::default()
+            },
+        );
+        assert!(
+            e.starts_with("t: --rtl: cross_check = \"rtl\" needs an RTL chip")
+                && e.contains("k = 14"),
+            "{e}"
+        );
+        let e = refused(
+            format!(
+                "{}[outputs]\ncross_check = \"verilog\"",
+                BASE.replace("k = 14", "k = 6\nformat = \"reduced\"\nnode_cache = 16")
+            ),
+            Flags::default(),
+        );
         assert!(e.contains("needs an RTL chip of the configuration"), "{e}");
         // the list traversal without the chip: the golden model alone
-        assert!(Scene::parse_with(&format!("{BASE}[query]\ntraversal = \"list\""), "t", Flags::default()).is_ok());
+        assert!(Scene::parse_with(
+            &format!("{BASE}[query]\ntraversal = \"list\""),
+            "t",
+            Flags::default()
+        )
+        .is_ok());
     }
 }

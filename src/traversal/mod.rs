@@ -21,11 +21,11 @@ use crate::dop::tree::Tri;
 use crate::dop::Node;
 use crate::golden::host::{DopLanes, HostSetup};
 use crate::golden::memory::{Held, NodeCache, ObjectImage, TriCache, TriWord};
-use std::cell::Cell;
 use crate::golden::{d_cntr, dop_unit, tri_unit};
 use crate::oracle;
 use nalgebra::{Matrix3, Vector3};
 use serde::{Deserialize, Serialize};
+use std::cell::Cell;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, clap::ValueEnum)]
 #[serde(rename_all = "kebab-case")]
@@ -41,7 +41,12 @@ pub enum Traversal {
 }
 
 impl Traversal {
-    pub const ALL: [Traversal; 4] = [Traversal::Recursive, Traversal::List, Traversal::Fifo, Traversal::Lifo];
+    pub const ALL: [Traversal; 4] = [
+        Traversal::Recursive,
+        Traversal::List,
+        Traversal::Fifo,
+        Traversal::Lifo,
+    ];
 
     /// The name scenes and the CLI use (`recursive`, `list`, `fifo`, `lifo`).
     pub fn name(self) -> &'static str {
@@ -119,7 +124,10 @@ impl Host<'_> {
     /// geometry (DATE'05 §4.2: the host decides what TRI_UNIT cannot).
     pub fn settle(&self, ta: u32, tb: u32) -> bool {
         let (r, t) = (&self.rot, &self.t);
-        oracle::tri_tri(&self.a[ta as usize], &self.b[tb as usize].map(|p| r * p + t))
+        oracle::tri_tri(
+            &self.a[ta as usize],
+            &self.b[tb as usize].map(|p| r * p + t),
+        )
     }
 }
 
@@ -166,7 +174,8 @@ impl<'a> Engine<'a> {
     fn dop_test(&mut self, na: u32, nb: u32) -> bool {
         let c = &mut self.counters;
         c.dop_tests += 1;
-        c.node_fetches += self.held_node[0].fetch(self.a.record(na)) as u64 + self.held_node[1].fetch(self.b.record(nb)) as u64;
+        c.node_fetches += self.held_node[0].fetch(self.a.record(na)) as u64
+            + self.held_node[1].fetch(self.b.record(nb)) as u64;
         let hit = self.dop_unit.overlap(nb, na);
         c.dop_overlaps += hit as u64;
         hit
@@ -182,8 +191,21 @@ impl<'a> Engine<'a> {
         c.tri_fetches += fetch_a + self.held_tri[1].fetch(self.b.tri_record(tb)) as u64;
         let (a, b, [words_a, words_b]) = (self.a, self.b, &mut self.words);
         let (cfg, setup) = self.tri_setup;
-        let tri_unit = self.tri_unit.get_or_insert_with(|| tri_unit::TriUnit::new(cfg.format.tri, cfg.tri_rounding, setup, a.tri_count(), b.tri_count()));
-        let res = tri_unit.test(ta, words_a.get(ta, || a.tri(ta)), tb, words_b.get(tb, || b.tri(tb)));
+        let tri_unit = self.tri_unit.get_or_insert_with(|| {
+            tri_unit::TriUnit::new(
+                cfg.format.tri,
+                cfg.tri_rounding,
+                setup,
+                a.tri_count(),
+                b.tri_count(),
+            )
+        });
+        let res = tri_unit.test(
+            ta,
+            words_a.get(ta, || a.tri(ta)),
+            tb,
+            words_b.get(tb, || b.tri(tb)),
+        );
         let hit = if res.uncertain {
             self.counters.uncertain += 1;
             self.uncertain.push((ta, tb));
@@ -237,14 +259,24 @@ pub fn run(
         b,
         layout: Layout::new(cfg),
         mode,
-        held_node: [NodeCache::new(cfg.node_cache), NodeCache::new(cfg.node_cache)],
+        held_node: [
+            NodeCache::new(cfg.node_cache),
+            NodeCache::new(cfg.node_cache),
+        ],
         held_tri: [TriCache::new(cfg.tri_cache), TriCache::new(1)],
         words: [words_a, words_b],
         host,
         pairs: vec![],
         uncertain: vec![],
         live: 0,
-        dop_unit: dop_unit::TransformCache::lazy(cfg.format.dop, cfg.dop_rounding.op(), setup, lanes, &a.tree, &b.tree),
+        dop_unit: dop_unit::TransformCache::lazy(
+            cfg.format.dop,
+            cfg.dop_rounding.op(),
+            setup,
+            lanes,
+            &a.tree,
+            &b.tree,
+        ),
         tri_unit: None,
         tri_setup: (cfg, setup),
         counters: Counters::default(),
@@ -266,7 +298,11 @@ pub fn run(
     let (mut pairs, mut uncertain) = (e.pairs, e.uncertain);
     pairs.sort_unstable();
     uncertain.sort_unstable();
-    QueryResult { pairs, uncertain, counters: c }
+    QueryResult {
+        pairs,
+        uncertain,
+        counters: c,
+    }
 }
 
 thread_local! {

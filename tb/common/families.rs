@@ -15,7 +15,11 @@ pub fn placement() -> impl Strategy<Value = Placement> {
         -8i32..=8,
         prop::array::uniform3(0u8..4),
     )
-        .prop_map(|(mag, f, sl, turns)| Placement { offset: f.map(|x| (x * mag).round()), scale: 2f64.powi(sl), turns })
+        .prop_map(|(mag, f, sl, turns)| Placement {
+            offset: f.map(|x| (x * mag).round()),
+            scale: 2f64.powi(sl),
+            turns,
+        })
 }
 
 /// The finest local grid 2^e such that `scale * l + offset` stays exact for local
@@ -28,7 +32,9 @@ pub fn floor_log2(p: &Placement, extent: f64) -> i32 {
 /// A small positive dyadic 1..3 * 2^e with floor <= e <= -9 (1e-9 is about 2^-30).
 pub fn tiny(floor: i32) -> BoxedStrategy<f64> {
     let lo = floor.max(-50);
-    (1u32..4, lo..=(-9).max(lo)).prop_map(|(m, e)| m as f64 * 2f64.powi(e)).boxed()
+    (1u32..4, lo..=(-9).max(lo))
+        .prop_map(|(m, e)| m as f64 * 2f64.powi(e))
+        .boxed()
 }
 
 /// 0 or +-tiny.
@@ -51,7 +57,13 @@ pub fn pv_vertex_edge() -> BoxedStrategy<Case> {
     placement()
         .prop_flat_map(|p| {
             let f = floor_log2(&p, 4.0);
-            let s = prop_oneof![grid(8, 0, 256), Just(0.0), Just(1.0), near_zero(f), near_zero(f).prop_map(|d| 1.0 + d)];
+            let s = prop_oneof![
+                grid(8, 0, 256),
+                Just(0.0),
+                Just(1.0),
+                near_zero(f),
+                near_zero(f).prop_map(|d| 1.0 + d)
+            ];
             (Just(p), 0u8..3, s, prop_oneof![Just(0.0), tiny(f)])
         })
         .prop_map(|(p, e, s, g)| hc::vertex_edge(&p, e, s, g))
@@ -63,8 +75,17 @@ pub fn pv_vertex_face() -> BoxedStrategy<Case> {
         .prop_flat_map(|p| {
             let f = floor_log2(&p, 4.0);
             // touching or hovering anywhere near A, or piercing inside with a margin
-            let touch = (grid(6, -8, 72), grid(6, -8, 72), prop_oneof![Just(0.0), tiny(f)]).prop_map(|(u, v, h)| ([u, v], h));
-            let pierce = (1i32..=30, 1i32..=30, tiny(f.max(-40)).prop_map(|x| -(x.min(1.0 / 256.0))))
+            let touch = (
+                grid(6, -8, 72),
+                grid(6, -8, 72),
+                prop_oneof![Just(0.0), tiny(f)],
+            )
+                .prop_map(|(u, v, h)| ([u, v], h));
+            let pierce = (
+                1i32..=30,
+                1i32..=30,
+                tiny(f.max(-40)).prop_map(|x| -(x.min(1.0 / 256.0))),
+            )
                 .prop_filter("inside with margin", |(i, j, _)| i + j <= 63)
                 .prop_map(|(i, j, h)| ([i as f64 / 64.0, j as f64 / 64.0], h));
             (Just(p), prop_oneof![touch, pierce])
@@ -77,7 +98,11 @@ pub fn pv_edge_edge() -> BoxedStrategy<Case> {
     placement()
         .prop_flat_map(|p| {
             let f = floor_log2(&p, 4.0);
-            let s = prop_oneof![grid(8, 0, 256), near_zero(f), near_zero(f).prop_map(|d| 1.0 + d)];
+            let s = prop_oneof![
+                grid(8, 0, 256),
+                near_zero(f),
+                near_zero(f).prop_map(|d| 1.0 + d)
+            ];
             (Just(p), s, prop_oneof![Just(0.0), tiny(f)])
         })
         .prop_map(|(p, s, g)| hc::edge_edge(&p, s, g))
@@ -88,7 +113,14 @@ pub fn pv_coplanar() -> BoxedStrategy<Case> {
     placement()
         .prop_flat_map(|p| {
             let f = floor_log2(&p, 4.0);
-            (Just(p), -20i32..=20, 0u8..5, near_zero(f), grid(4, -20, 20), any::<bool>())
+            (
+                Just(p),
+                -20i32..=20,
+                0u8..5,
+                near_zero(f),
+                grid(4, -20, 20),
+                any::<bool>(),
+            )
         })
         .prop_map(|(p, k, which, d, free, tilted)| {
             let dx = k as f64 / 16.0;
@@ -107,7 +139,9 @@ pub fn pv_coplanar() -> BoxedStrategy<Case> {
 
 pub fn pv_shared_edge() -> BoxedStrategy<Case> {
     (placement(), prop::array::uniform3(-8i32..=8))
-        .prop_filter("apex off the shared line", |(_, a)| a[2] != 0 || a[0] + a[1] != 4)
+        .prop_filter("apex off the shared line", |(_, a)| {
+            a[2] != 0 || a[0] + a[1] != 4
+        })
         .prop_map(|(p, a)| hc::shared_edge(&p, a.map(|x| x as f64 / 4.0)))
         .boxed()
 }
@@ -117,7 +151,14 @@ pub fn pv_needle() -> BoxedStrategy<Case> {
         .prop_flat_map(|p| {
             let f = floor_log2(&p, 4.0);
             let wmax = 20.min(-f - 2).max(4);
-            (Just(p), grid(6, -4, 68), near_zero(f), any::<bool>(), 4..=wmax, grid(6, -4, 68))
+            (
+                Just(p),
+                grid(6, -4, 68),
+                near_zero(f),
+                any::<bool>(),
+                4..=wmax,
+                grid(6, -4, 68),
+            )
         })
         .prop_map(|(p, v, d, at_edge, w, u)| {
             let u = if at_edge { (1.0 - v) + d } else { u };
@@ -152,7 +193,8 @@ pub fn pv_zero_area() -> BoxedStrategy<Case> {
             let f = floor_log2(&p, 4.0);
             let xy = (grid(4, -4, 20), grid(4, -4, 20));
             let pt = (xy.clone(), near_zero(f)).prop_map(|((x, y), z)| (0u8, [x, y, z, 0.0]));
-            let seg = (xy, near_zero(f), 1i32..4).prop_map(|((x, y), z0, l)| (1u8, [x, y, z0, z0 + l as f64 / 4.0]));
+            let seg = (xy, near_zero(f), 1i32..4)
+                .prop_map(|((x, y), z0, l)| (1u8, [x, y, z0, z0 + l as f64 / 4.0]));
             let segseg = (grid(4, -4, 20), near_zero(f), near_zero(f), 1i32..4)
                 .prop_map(|(s, y0, z, l)| (2u8, [s, y0, y0 + l as f64 / 4.0, z]));
             (Just(p), prop_oneof![pt, seg, segseg])
@@ -184,7 +226,13 @@ pub fn pv_scale_ratio() -> BoxedStrategy<Case> {
         .prop_flat_map(|(p, big, small)| {
             let f = floor_log2(&p, 4.0 * 2f64.powi(big)).max(-small - 20);
             let s = 2f64.powi(-small);
-            let h = prop_oneof![Just(0.0), tiny(f), tiny(f).prop_map(|x| -x), Just(-s), tiny(f).prop_map(move |x| -s - x)];
+            let h = prop_oneof![
+                Just(0.0),
+                tiny(f),
+                tiny(f).prop_map(|x| -x),
+                Just(-s),
+                tiny(f).prop_map(move |x| -s - x)
+            ];
             (Just(p), Just(big), Just(small), h, any::<bool>())
         })
         .prop_map(|(p, big, small, h, swap)| hc::scale_ratio(&p, big, small, h, swap))
@@ -195,7 +243,12 @@ pub fn pv_tetra() -> BoxedStrategy<Case> {
     placement()
         .prop_flat_map(|p| {
             let f = floor_log2(&p, 4.0);
-            (Just(p), grid(4, -2, 18), near_zero(f), prop_oneof![Just(0.0), tiny(f)])
+            (
+                Just(p),
+                grid(4, -2, 18),
+                near_zero(f),
+                prop_oneof![Just(0.0), tiny(f)],
+            )
         })
         .prop_map(|(p, x, d, h)| hc::tetra_on_square(&p, [x, x + d], h))
         .boxed()
@@ -221,7 +274,9 @@ pub fn any_case() -> BoxedStrategy<Case> {
 
 /// Generic rotations (not placement-exact): the answer is the oracle's.
 pub fn general_pose() -> impl Strategy<Value = collision_chip::pose::Pose> {
-    (prop::array::uniform3(-180.0..180.0f64), prop::array::uniform3(-2.0..2.0f64))
+    (
+        prop::array::uniform3(-180.0..180.0f64),
+        prop::array::uniform3(-2.0..2.0f64),
+    )
         .prop_map(|(r, t)| collision_chip::pose::Pose { rot_deg: r, t })
 }
-

@@ -16,7 +16,11 @@ pub struct Fmt {
 
 impl Fmt {
     pub fn of(fmt: Format) -> Fmt {
-        Fmt { fmt, e: fmt.exp_bits(), f: fmt.frac_bits() }
+        Fmt {
+            fmt,
+            e: fmt.exp_bits(),
+            f: fmt.frac_bits(),
+        }
     }
     /// The all-ones exponent field.
     pub fn ones(self) -> u64 {
@@ -41,7 +45,8 @@ pub fn operand(t: Fmt) -> BoxedStrategy<u64> {
     let frac = move || {
         prop_oneof![
             0u64..(1 << t.f),
-            prop::collection::vec(0..t.f, 1..4).prop_map(|v| v.iter().fold(0u64, |a, &i| a | (1 << i))),
+            prop::collection::vec(0..t.f, 1..4)
+                .prop_map(|v| v.iter().fold(0u64, |a, &i| a | (1 << i))),
             (0..t.f).prop_map(move |i| ((1u64 << t.f) - 1) ^ (1 << i)),
         ]
     };
@@ -69,7 +74,10 @@ pub trait Pipelined: rust_hdl::prelude::Block {
 
 /// Half a clock period: settle the combinational logic.
 pub fn settle<B: rust_hdl::prelude::Block>(uut: &mut B) {
-    assert!(rust_hdl::prelude::simulate(uut, 1000), "logic did not settle");
+    assert!(
+        rust_hdl::prelude::simulate(uut, 1000),
+        "logic did not settle"
+    );
 }
 
 /// Drives `ops` one per cycle (valid high), then flushes. Returns the outputs in order and
@@ -81,12 +89,20 @@ pub fn run<U: Pipelined>(uut: &mut U, ops: &[U::In]) -> Vec<U::Out> {
 
 /// [`run`], calling `after_edge(uut, time)` after every clock edge (time in half periods of
 /// 5 units), e.g. to write a VCD.
-pub fn run_traced<U: Pipelined>(uut: &mut U, ops: &[U::In], mut after_edge: impl FnMut(&U, u64)) -> Vec<U::Out> {
+pub fn run_traced<U: Pipelined>(
+    uut: &mut U,
+    ops: &[U::In],
+    mut after_edge: impl FnMut(&U, u64),
+) -> Vec<U::Out> {
     let n = ops.len();
     let mut outs = Vec::with_capacity(n);
     let mut time = 0;
     for cyc in 0..n + U::LATENCY + 1 {
-        let (valid, x) = if cyc < n { (true, ops[cyc]) } else { (false, U::In::default()) };
+        let (valid, x) = if cyc < n {
+            (true, ops[cyc])
+        } else {
+            (false, U::In::default())
+        };
         uut.set(x, valid);
         for high in [false, true] {
             uut.clock(high);
@@ -96,7 +112,12 @@ pub fn run_traced<U: Pipelined>(uut: &mut U, ops: &[U::In], mut after_edge: impl
         }
         let (v, y) = uut.out();
         if v {
-            assert_eq!(cyc + 1, outs.len() + U::LATENCY, "output {} at the wrong edge", outs.len());
+            assert_eq!(
+                cyc + 1,
+                outs.len() + U::LATENCY,
+                "output {} at the wrong edge",
+                outs.len()
+            );
             outs.push(y);
         }
     }
@@ -106,7 +127,9 @@ pub fn run_traced<U: Pipelined>(uut: &mut U, ops: &[U::In], mut after_edge: impl
 
 /// The VCD file of run `name`: `target/rtl-vcd/<name>.vcd`.
 pub fn vcd_path(name: &str) -> std::path::PathBuf {
-    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("target").join("rtl-vcd");
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("target")
+        .join("rtl-vcd");
     std::fs::create_dir_all(&dir).unwrap();
     dir.join(format!("{name}.vcd"))
 }
@@ -124,7 +147,11 @@ pub fn run_vcd<U: Pipelined>(uut: &mut U, ops: &[U::In], name: &str, root: &str)
             vcd = Some(write_vcd_change(v, u));
         })
     };
-    let text = String::from_utf8(buf).unwrap().replacen("$scope module uut $end", &format!("$scope module {root} $end"), 1);
+    let text = String::from_utf8(buf).unwrap().replacen(
+        "$scope module uut $end",
+        &format!("$scope module {root} $end"),
+        1,
+    );
     let path = vcd_path(name);
     std::fs::write(&path, text).unwrap();
     println!("wrote {}", path.display());
@@ -138,9 +165,17 @@ pub fn vcd_outputs(path: &std::path::Path, root: &str, valid: &str, data: &str) 
     use vcd::{Command, Value};
     let mut p = vcd::Parser::new(std::io::BufReader::new(std::fs::File::open(path).unwrap()));
     let header = p.parse_header().unwrap();
-    let code = |name: &str| header.find_var(&[root, name]).unwrap_or_else(|| panic!("{}: no signal {root}.{name}", path.display())).code;
+    let code = |name: &str| {
+        header
+            .find_var(&[root, name])
+            .unwrap_or_else(|| panic!("{}: no signal {root}.{name}", path.display()))
+            .code
+    };
     let (v, d) = (code(valid), code(data));
-    let bits = |x: &[Value]| x.iter().fold(0u64, |a, b| a << 1 | (*b == Value::V1) as u64);
+    let bits = |x: &[Value]| {
+        x.iter()
+            .fold(0u64, |a, b| a << 1 | (*b == Value::V1) as u64)
+    };
     let (mut now, mut is_valid, mut value, mut out) = (None::<u64>, false, 0u64, vec![]);
     let mut sample = |now: Option<u64>, is_valid: bool, value: u64| {
         if is_valid && now.is_some_and(|t| t % 10 == 5) {

@@ -73,7 +73,11 @@ impl<'a> DopUnit<'a> {
     /// If the d' of `group` are in the memory (the current set, or the speculative one,
     /// which becomes current): the clock they are ready.
     pub fn held(&mut self, group: &[u32]) -> Option<u64> {
-        if let Some(c) = self.cur.as_ref().filter(|c| group.iter().all(|x| c.nodes.contains(x))) {
+        if let Some(c) = self
+            .cur
+            .as_ref()
+            .filter(|c| group.iter().all(|x| c.nodes.contains(x)))
+        {
             return Some(c.ready);
         }
         let s = self.spec.take_if(|s| s.nodes == group)?;
@@ -86,7 +90,10 @@ impl<'a> DopUnit<'a> {
     /// Transforms a list's tumbled group into the current set: the clock it is ready.
     pub fn load(&mut self, words: &[(u32, u64)]) -> u64 {
         let ready = self.transform(words);
-        self.cur = Some(Set { nodes: words.iter().map(|w| w.0).collect(), ready });
+        self.cur = Some(Set {
+            nodes: words.iter().map(|w| w.0).collect(),
+            ready,
+        });
         ready
     }
 
@@ -94,7 +101,10 @@ impl<'a> DopUnit<'a> {
     pub fn speculate(&mut self, words: &[(u32, u64)]) {
         let ready = self.transform(words);
         self.spec_pairs += 1;
-        self.spec = Some(Set { nodes: words.iter().map(|w| w.0).collect(), ready });
+        self.spec = Some(Set {
+            nodes: words.iter().map(|w| w.0).collect(),
+            ready,
+        });
     }
 
     /// Is this pair already speculated?

@@ -96,7 +96,12 @@ pub struct MemCtl {
 
 impl MemCtl {
     pub fn new(mem: MemModel, bases: [u32; 4]) -> Self {
-        MemCtl { mem, bases, last: 0, fetches: [0; 2] }
+        MemCtl {
+            mem,
+            bases,
+            last: 0,
+            fetches: [0; 2],
+        }
     }
 
     /// Word `id` of `d`, asked for at clock `t` or later (after the previous request): the
@@ -120,7 +125,10 @@ impl MemCtl {
 /// list, §4.2) from an image of one node or triangle word per record: the `words` layout,
 /// whatever layout `cfg` gives DATE'05's chip.
 pub fn layout(cfg: &crate::chip::config::ChipConfig) -> crate::chip::layout::Layout {
-    crate::chip::layout::Layout::new(&crate::chip::config::ChipConfig { layout: crate::chip::config::MemLayout::Words, ..*cfg })
+    crate::chip::layout::Layout::new(&crate::chip::config::ChipConfig {
+        layout: crate::chip::config::MemLayout::Words,
+        ..*cfg
+    })
 }
 
 /// One query on WSCG'03's chip: `chip`'s images, B placed by `setup`, `mode`, the memory
@@ -139,19 +147,45 @@ pub fn run_query(
     p.memory.check()?;
     let cfg = &chip.cfg;
     let words = layout(cfg);
-    let bases = crate::chip::layout::image_bases(chip.a.tree.len() as u32, chip.a.tri_count() as u32, chip.b.tree.len() as u32);
+    let bases = crate::chip::layout::image_bases(
+        chip.a.tree.len() as u32,
+        chip.a.tri_count() as u32,
+        chip.b.tree.len() as u32,
+    );
     let mem = MemCtl::new(MemModel::new(p.memory, words.word_bits()), bases);
-    let values = gdop::TransformCache::new(cfg.format.dop, cfg.dop_rounding.op(), setup, &chip.a.tree, &chip.b.tree);
+    let values = gdop::TransformCache::new(
+        cfg.format.dop,
+        cfg.dop_rounding.op(),
+        setup,
+        &chip.a.tree,
+        &chip.b.tree,
+    );
     let dop = dop_unit::DopUnit::new(values, sp, chip.layout.node_bits);
-    let verdicts = gtri::TriUnit::new(cfg.format.tri, cfg.tri_rounding, setup, chip.a.tri_count(), chip.b.tri_count());
+    let verdicts = gtri::TriUnit::new(
+        cfg.format.tri,
+        cfg.tri_rounding,
+        setup,
+        chip.a.tri_count(),
+        chip.b.tri_count(),
+    );
     let tri = tri_unit::TriUnit::new(&chip.a, &chip.b, verdicts, sp, cfg.tri_cache);
-    let mut e = stack_engine::StackEngine::new(&chip.a, &chip.b, sp.sram_latency, sp.word_buffer, mem, dop, tri, mode == Mode::First);
+    let mut e = stack_engine::StackEngine::new(
+        &chip.a,
+        &chip.b,
+        sp.sram_latency,
+        sp.word_buffer,
+        mem,
+        dop,
+        tri,
+        mode == Mode::First,
+    );
     e.run();
     if e.stats.cycles > max_cycles {
         return Err(super::drive::not_finished(max_cycles));
     }
     let mut s = e.stats;
-    (s.transforms, s.spec_pairs, s.spec_used) = (e.dop.transforms, e.dop.spec_pairs, e.dop.spec_used);
+    (s.transforms, s.spec_pairs, s.spec_used) =
+        (e.dop.transforms, e.dop.spec_pairs, e.dop.spec_used);
     (s.dop_tests, s.dop_overlaps) = (e.dop.tests, e.dop.overlaps);
     let mut results = e.results;
     results.sort_by_key(|r| r.0);
@@ -166,5 +200,9 @@ pub fn run_query(
         tri_fetches: e.mem.fetches[1],
         memory: e.mem.mem.counters,
     };
-    Ok(Run { trace, stats: s, lists: e.timeline })
+    Ok(Run {
+        trace,
+        stats: s,
+        lists: e.timeline,
+    })
 }

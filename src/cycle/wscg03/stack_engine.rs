@@ -56,7 +56,16 @@ struct ListRun {
 
 impl<'a> StackEngine<'a> {
     #[allow(clippy::too_many_arguments)]
-    pub fn new(a: &'a ObjectImage, b: &'a ObjectImage, sram_latency: u32, word_buffer: u32, mem: MemCtl, dop: DopUnit<'a>, tri: TriUnit<'a>, first: bool) -> Self {
+    pub fn new(
+        a: &'a ObjectImage,
+        b: &'a ObjectImage,
+        sram_latency: u32,
+        word_buffer: u32,
+        mem: MemCtl,
+        dop: DopUnit<'a>,
+        tri: TriUnit<'a>,
+        first: bool,
+    ) -> Self {
         StackEngine {
             a,
             b,
@@ -102,14 +111,28 @@ impl<'a> StackEngine<'a> {
         self.tri.new_group(&leaves);
         let ptr = t0 + self.sram_latency;
         let (ready, held) = self.tumbled(&group, ptr);
-        let mut run = ListRun { t0, ptr, ready, present: vec![], ends: vec![], resume: 0 };
+        let mut run = ListRun {
+            t0,
+            ptr,
+            ready,
+            present: vec![],
+            ends: vec![],
+            resume: 0,
+        };
         let out = self.stream(&group, &list, &mut run);
         let first_compare = run.ends.first().map(|&e| e - self.dop.beats());
         if let Some(c) = first_compare.filter(|_| !held) {
             self.stats.cold_lists += 1;
             self.stats.cold_start += c - t0;
         }
-        self.timeline.push(ListRecord { t0, held, ready, first_compare, next: self.next_list, len: list.len() });
+        self.timeline.push(ListRecord {
+            t0,
+            held,
+            ready,
+            first_compare,
+            next: self.next_list,
+            len: list.len(),
+        });
         self.stats.list_clocks += self.next_list - t0;
         self.live_words += out.iter().map(|l| l.len() as u64).sum::<u64>();
         self.stats.max_list_words = self.stats.max_list_words.max(self.live_words);
@@ -132,12 +155,18 @@ impl<'a> StackEngine<'a> {
     fn tumbled(&mut self, group: &[u32], ptr: u64) -> (u64, bool) {
         let held = self.dop.held(group);
         let ready = held.unwrap_or_else(|| {
-            let words: Vec<(u32, u64)> = group.iter().map(|&x| (x, self.mem.fetch(ptr, Dst::NodeB, x))).collect();
+            let words: Vec<(u32, u64)> = group
+                .iter()
+                .map(|&x| (x, self.mem.fetch(ptr, Dst::NodeB, x)))
+                .collect();
             self.dop.load(&words)
         });
         if let Node::Inner(ch) = self.b.tree.node(group[0]) {
             if !self.dop.speculated(&ch) {
-                let words: Vec<(u32, u64)> = ch.iter().map(|&x| (x, self.mem.fetch(ptr, Dst::NodeB, x))).collect();
+                let words: Vec<(u32, u64)> = ch
+                    .iter()
+                    .map(|&x| (x, self.mem.fetch(ptr, Dst::NodeB, x)))
+                    .collect();
                 self.dop.speculate(&words);
             }
         }
@@ -147,7 +176,11 @@ impl<'a> StackEngine<'a> {
     /// The earliest clock aligned word `j` may be asked for: its pointer read, a place in
     /// the Memory Controller's buffer, no interrupt.
     fn earliest(&self, r: &ListRun, j: usize) -> u64 {
-        let room = if j >= self.word_buffer { r.ends[j - self.word_buffer] } else { 0 };
+        let room = if j >= self.word_buffer {
+            r.ends[j - self.word_buffer]
+        } else {
+            0
+        };
         (r.ptr + j as u64).max(room).max(r.resume)
     }
 
@@ -165,7 +198,10 @@ impl<'a> StackEngine<'a> {
             while r.present.len() <= i {
                 self.ask(r, list);
             }
-            if self.stop_at.is_some_and(|v| self.dop.start(r.present[i], r.ready) > v) {
+            if self
+                .stop_at
+                .is_some_and(|v| self.dop.start(r.present[i], r.ready) > v)
+            {
                 self.halted = true;
                 break;
             }
@@ -176,7 +212,9 @@ impl<'a> StackEngine<'a> {
             let f = self.dop.flags(end);
             last_flags = f;
             // the words asked for before these flags (and an interrupt they cause)
-            while r.present.len() < list.len().min(i + 1 + self.word_buffer) && self.earliest(r, r.present.len()) <= f {
+            while r.present.len() < list.len().min(i + 1 + self.word_buffer)
+                && self.earliest(r, r.present.len()) <= f
+            {
                 self.ask(r, list);
             }
             let na = self.a.tree.node(n);

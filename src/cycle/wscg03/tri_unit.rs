@@ -23,7 +23,13 @@ pub struct TriUnit<'a> {
 }
 
 impl<'a> TriUnit<'a> {
-    pub fn new(a: &'a ObjectImage, b: &'a ObjectImage, values: Values<'a>, p: &StackParams, cache_lines: u32) -> Self {
+    pub fn new(
+        a: &'a ObjectImage,
+        b: &'a ObjectImage,
+        values: Values<'a>,
+        p: &StackParams,
+        cache_lines: u32,
+    ) -> Self {
         TriUnit {
             a,
             b,
@@ -57,7 +63,10 @@ impl<'a> TriUnit<'a> {
         let t = self.when(present);
         self.next_take = t + self.interval;
         self.tests += 1;
-        (t, self.values.test(ta, &self.a.tri(ta), tb, &self.b.tri(tb)))
+        (
+            t,
+            self.values.test(ta, &self.a.tri(ta), tb, &self.b.tri(tb)),
+        )
     }
 
     /// The clock a pair whose words are present from `present` would enter.

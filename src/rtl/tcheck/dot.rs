@@ -42,7 +42,11 @@ macro_rules! dot {
             pub const C_AT: usize = 4;
 
             pub fn new(rounding: Rounding, affine: bool, magnitude: bool) -> Self {
-                let r = if magnitude { Rounding::TowardPositive } else { rounding };
+                let r = if magnitude {
+                    Rounding::TowardPositive
+                } else {
+                    rounding
+                };
                 Self {
                     clock: Default::default(),
                     a0: Default::default(),
@@ -54,7 +58,14 @@ macro_rules! dot {
                     c: Default::default(),
                     y: Default::default(),
                     affine: Constant::new(affine),
-                    mask: Constant::new(if magnitude { ABS_MASK } else { ABS_MASK | (1u64 << $WM1) }.into()),
+                    mask: Constant::new(
+                        if magnitude {
+                            ABS_MASK
+                        } else {
+                            ABS_MASK | (1u64 << $WM1)
+                        }
+                        .into(),
+                    ),
                     p: std::array::from_fn(|_| FpMul::new(r)),
                     s01: FpAdd::new(r),
                     s2c: FpAdd::new(r),

@@ -133,7 +133,10 @@ macro_rules! edge {
         impl Edge {
             pub const LATENCY: usize = 27;
 
-            pub fn new(rounding: Rounding, cert: &$crate::golden::certificate::Certificate) -> Self {
+            pub fn new(
+                rounding: Rounding,
+                cert: &$crate::golden::certificate::Certificate,
+            ) -> Self {
                 let up = Rounding::TowardPositive;
                 Self {
                     clock: Default::default(),
@@ -239,10 +242,21 @@ macro_rules! edge {
             #[hdl_gen]
             fn update(&mut self) {
                 clock!(self, clock, px_qz, qx_pz, py_qz, qy_pz, a, b, rz, rz_wait, ab, s);
-                clock!(self, clock, pf0_wait, qf0_wait, pf1_wait, qf1_wait, p0_wait, q0_wait, p1_wait, q1_wait);
+                clock!(
+                    self, clock, pf0_wait, qf0_wait, pf1_wait, qf1_wait, p0_wait, q0_wait, p1_wait,
+                    q1_wait
+                );
                 clock!(self, clock, ba, bb, brz, brz_wait, rab, rabz, rs, brs, brs_wait, bab, bs);
                 clock!(self, clock, pz_wait, qz_wait, a_wait, b_wait, s_wait);
-                clock!(self, clock, pz_sgn_wait, qz_sgn_wait, rz_sgn_wait, a_sgn_wait, b_sgn_wait);
+                clock!(
+                    self,
+                    clock,
+                    pz_sgn_wait,
+                    qz_sgn_wait,
+                    rz_sgn_wait,
+                    a_sgn_wait,
+                    b_sgn_wait
+                );
                 dff_setup!(self, clock, r_pz, r_qz, r_rz, r_a, r_b, r_s, r_s_x, r_s_b);
                 // ---- values: products, a, b, r_z, then s = (a + b) - r_z
                 self.px_qz.a.next = self.p0.val();
@@ -414,10 +428,30 @@ macro_rules! edge {
                 self.s_n.next = self.r_s.q.val().get_bit(1);
                 // P below, Q above | P above, Q below; a conjunction is surely false as
                 // soon as one sign is surely wrong.
-                self.cross_t.next = (self.pz_n.val() & self.qz_p.val() & self.rz_p.val() & self.a_p.val() & self.b_p.val() & self.s_n.val())
-                    | (self.pz_p.val() & self.qz_n.val() & self.rz_n.val() & self.a_n.val() & self.b_n.val() & self.s_p.val());
-                self.cross_f.next = (self.pz_p.val() | self.qz_n.val() | self.rz_n.val() | self.a_n.val() | self.b_n.val() | self.s_p.val())
-                    & (self.pz_n.val() | self.qz_p.val() | self.rz_p.val() | self.a_p.val() | self.b_p.val() | self.s_n.val());
+                self.cross_t.next = (self.pz_n.val()
+                    & self.qz_p.val()
+                    & self.rz_p.val()
+                    & self.a_p.val()
+                    & self.b_p.val()
+                    & self.s_n.val())
+                    | (self.pz_p.val()
+                        & self.qz_n.val()
+                        & self.rz_n.val()
+                        & self.a_n.val()
+                        & self.b_n.val()
+                        & self.s_p.val());
+                self.cross_f.next = (self.pz_p.val()
+                    | self.qz_n.val()
+                    | self.rz_n.val()
+                    | self.a_n.val()
+                    | self.b_n.val()
+                    | self.s_p.val())
+                    & (self.pz_n.val()
+                        | self.qz_p.val()
+                        | self.rz_p.val()
+                        | self.a_p.val()
+                        | self.b_p.val()
+                        | self.s_n.val());
                 self.s_x.next = self.r_s_x.q.val();
                 self.s_b.next = self.r_s_b.q.val();
             }

@@ -39,8 +39,10 @@ macro_rules! sign {
         impl Logic for Sign {
             #[hdl_gen]
             fn update(&mut self) {
-                self.nan.next = self.x.val().get_bits::<$E>($F).all() & (self.x.val().get_bits::<$F>(0) != 0);
-                self.big.next = bit_cast::<$W, $WM1>(self.x.val().get_bits::<$WM1>(0)) > self.e.val();
+                self.nan.next =
+                    self.x.val().get_bits::<$E>($F).all() & (self.x.val().get_bits::<$F>(0) != 0);
+                self.big.next =
+                    bit_cast::<$W, $WM1>(self.x.val().get_bits::<$WM1>(0)) > self.e.val();
                 self.sgn.next = 0.into();
                 if self.big.val() & !self.nan.val() {
                     self.sgn.next = self.c_pos.val();

@@ -104,7 +104,9 @@ macro_rules! vertex {
                 self.gz.valid_in.next = false;
                 // 2 E_z: one more in the exponent field (0 and infinity stay)
                 self.e2z.next = self.ez.y.val();
-                if (self.ez.y.val().get_bits::<$E>($F) != 0) & !self.ez.y.val().get_bits::<$E>($F).all() {
+                if (self.ez.y.val().get_bits::<$E>($F) != 0)
+                    & !self.ez.y.val().get_bits::<$E>($F).all()
+                {
                     self.e2z.next = self.ez.y.val() + self.c_one.val();
                 }
                 self.z_wait.d.next = self.z.val() & self.mask.val();
