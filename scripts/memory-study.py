@@ -31,14 +31,25 @@ import tempfile
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
-# name, [memory] table, what it stands for, clocks the bus takes per memory word (one burst:
-# a k = 24 binary32 node word or record fits one burst of either DDR)
+# name, [memory] table, what it stands for (a DDR's times in ns; the models count them in
+# the chip's clocks at its period, which the scene's run reports: `memory_clocks`)
 MODELS = [
-    ("ideal, latency 1", 'model = "ideal"\nlatency = 1\ninterval = 1', "a word every clock, one clock after the request", 1),
-    ("ideal, latency 8", 'model = "ideal"\nlatency = 8\ninterval = 1', "a request every clock, the word 8 clocks later", 1),
-    ("DDR wscg03", 'model = "ddr"\npreset = "wscg03"', "WSCG'03: 4 banks, 4 KiB pages, 256-bit bus, hit 8, miss 20", 8),
-    ("DDR date05", 'model = "ddr"\npreset = "date05"', "DATE'05's 756-bit DDR2 bus (banks, pages, timings assumed)", 4),
+    ("ideal, latency 1", 'model = "ideal"\nlatency = 1\ninterval = 1', "a word every clock, one clock after the request"),
+    ("ideal, latency 8", 'model = "ideal"\nlatency = 8\ninterval = 1', "a request every clock, the word 8 clocks later"),
+    ("DDR wscg03", 'model = "ddr"\npreset = "wscg03"', "WSCG'03: 4 banks, 4 KiB pages, 256-bit bus, bursts of 8 beats of 3.75 ns, hit 30 ns, miss 75 ns"),
+    ("DDR date05", 'model = "ddr"\npreset = "date05"', "DATE'05's 756-bit DDR2 bus (DDR2-800 5-5-5 assumed: bursts of 4 beats of 1.25 ns, hit 17.5 ns, miss 42.5 ns)"),
 ]
+
+
+def in_clocks(record):
+    """The memory in the chip's clocks (the run's `memory_clocks`): the clocks the bus takes
+    per memory word (one burst: a k = 24 binary32 node word or record fits one burst of
+    either DDR; the ideal memory here moves a word a clock) and a text."""
+    m = record["memory_clocks"]
+    if "Ddr" in m:
+        d = m["Ddr"]
+        return d["burst_clocks"], f"at {record['period_ns']:.3f} ns: a burst {d['burst_clocks']}, a hit {d['hit']}, a miss {d['miss']} clocks"
+    return 1, f"at {record['period_ns']:.3f} ns"
 
 DEFAULT = os.path.join(ROOT, "vectors", "scenes", "default.toml")
 
@@ -64,10 +75,12 @@ def run(cmd, scene):
     return json.loads(out.stdout)
 
 
-def row(mesh, name, records, bus_clocks):
+def row(mesh, name, records):
+    """The table's row of one mesh and memory, and the memory in the chip's clocks."""
     c = [r["cycles"] for r in records if r.get("cycles") and r["cycles"]["dop_tests"] > 1]
     if not c:
-        return f"| {mesh} | {name} | no overlapping pose |"
+        return f"| {mesh} | {name} | no overlapping pose |", ""
+    bus_clocks, clocks_text = in_clocks(c[0])
     if any("tri_fetches_a" not in x.get("stats", {}) for x in c):
         sys.exit("memory-study.py: this study reads DATE'05's chip's counters, and the scenes ran another "
                  "chip (the wscg03 preset selects WSCG'03's): add architecture = \"date05\" to --chip")
@@ -86,7 +99,8 @@ def row(mesh, name, records, bus_clocks):
         f"{100 * st('stall_memory') / clocks:.1f} | {100 * st('stall_spacing') / clocks:.1f} | "
         f"{100 * (st('stall_credit') + st('back_pressure')) / clocks:.1f} | {mem('bytes') / len(c) / 1024:,.0f} | "
         f"{page_hit} | {mem('page_misses')} | {mem('bank_conflicts')} | {a_hit} | {100 * words * bus_clocks / clocks:.0f}% | "
-        f"{mem('node_words') / len(c):,.0f} | {mem('tri_words') / len(c):,.0f} |"
+        f"{mem('node_words') / len(c):,.0f} | {mem('tri_words') / len(c):,.0f} |",
+        clocks_text,
     )
 
 
@@ -103,17 +117,19 @@ def main():
           "| spacing% | credit+bkpres% | KiB/query | page hits | page misses | bank conflicts | A tri hits | bus busy | node words/query "
           "| tri words/query |")
     print("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+    clocks = {}
     with tempfile.TemporaryDirectory() as tmp:
         for mesh in a.meshes:
-            for name, memory, _, bus_clocks in MODELS:
+            for name, memory, _ in MODELS:
                 path = os.path.join(tmp, f"{mesh}-{name.replace(' ', '').replace(',', '-')}.toml")
                 with open(path, "w") as f:
                     lines = lambda t: "\n".join(x.strip() for x in t.split(","))
                     f.write(scene(mesh, a.orientations, lines(a.timing), memory, lines(a.chip) if a.chip else ""))
-                print(row(mesh, name, run(cmd, path), bus_clocks), flush=True)
+                line, clocks[name] = row(mesh, name, run(cmd, path))
+                print(line, flush=True)
     print()
-    for name, _, what, _ in MODELS:
-        print(f"- {name}: {what}")
+    for name, _, what in MODELS:
+        print(f"- {name}: {what}; {clocks.get(name) or 'no overlapping pose'}")
 
 
 if __name__ == "__main__":

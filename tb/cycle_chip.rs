@@ -258,19 +258,22 @@ fn memory() -> impl Strategy<Value = Memory> {
                 bus_bits
             })
         ),
-        (1u32..=8, 6u32..=12, 5u32..=8, 0u32..=3, 0u32..=4, 0u32..=12).prop_map(
-            |(banks, page, bus, burst, hit, miss)| {
+        (
+            (1u32..=8, 6u32..=12, 5u32..=8, 0u32..=3),
+            (600u32..=4000, 0u32..=5000, 0u32..=15000)
+        )
+            .prop_map(|((banks, page, bus, burst), (beat_ps, hit, miss))| {
                 let burst = 1 << burst;
                 Memory::Ddr(Ddr {
                     banks,
                     page_bytes: 1 << page,
                     bus_bits: 1 << bus,
                     burst,
-                    hit: burst + hit,
-                    miss: burst + hit + miss,
+                    beat_ps,
+                    hit_ps: burst * beat_ps + hit,
+                    miss_ps: burst * beat_ps + hit + miss,
                 })
-            }
-        ),
+            }),
     ]
 }
 
@@ -290,10 +293,11 @@ fn params() -> impl Strategy<Value = Params> {
             prop_oneof![Just(0u32), 1u32..=12],
             memory(),
             prop_oneof![3 => Just(1u32), 1 => prop::sample::select(vec![2u32, 3, 6])],
+            500u64..=10_000,
         ),
     )
         .prop_map(
-            |((q, dl, tl, tf, ti), (sp, cr, os, pf, memory, di))| Params {
+            |((q, dl, tl, tf, ti), (sp, cr, os, pf, memory, di, clock_ps))| Params {
                 queue_entries: 1 << q,
                 // a folded DOP unit's latency is its own (k = 6: a pair every 2, 3 or 6 clocks)
                 dop_latency: if di == 1 { dl } else { Params::RTL.dop_latency },
@@ -307,6 +311,7 @@ fn params() -> impl Strategy<Value = Params> {
                 outstanding: os,
                 prefetch: pf,
                 memory,
+                clock_ps,
             },
         )
 }
@@ -337,7 +342,7 @@ fn run(
     let setup = chip.setup(pose);
     let mut c = CycleChip::new(&chip.cfg, p, &chip.a, &chip.b, &setup, true)?;
     let d = Drive {
-        memory: p.memory,
+        memory: p.memory_clocks()?,
         word_bits: chip.layout.word_bits(),
         reader,
         words: chip.image_span(&p.memory),
@@ -537,6 +542,8 @@ fn rtl_point_is_the_rtl() {
             interval: 1,
             bus_bits: None,
         }),
+        // 800 MHz, the `rtl` preset's assumed clock
+        clock_ps: 1250,
     };
     assert_eq!(p, literal);
 }

@@ -206,30 +206,39 @@ fn presets_are_the_papers_values() {
     // across all modules of 4KBytes", "four internal banks", node pairs loaded "in a
     // double-data-rate burst transfer of length eight", "a page miss access to a node pair
     // to consume 20 clock cycles, a page hit to consume only 8 cycles"; the chip "clocked at
-    // 266MHz"; "a direct mapped cache with 128 lines" for A's triangles.
+    // 266MHz"; "a direct mapped cache with 128 lines" for A's triangles. In ns: 133 MHz
+    // DDR moves a beat every 7.5 / 2 ns; the paper's 8 and 20 clocks of its 266 MHz chip
+    // (the burst rate) are 8 and 20 beats.
     let wscg03 = Ddr {
         banks: 4,
         page_bytes: 4096,
         bus_bits: 256,
         burst: 8,
-        hit: 8,
-        miss: 20,
+        beat_ps: 7500 / 2,
+        hit_ps: 8 * 3750,
+        miss_ps: 20 * 3750,
     };
     assert_eq!(Ddr::WSCG03, wscg03);
+    let clocks = |d: Ddr, ps| {
+        let c = d.at(ps).unwrap();
+        (c.burst_clocks, c.hit, c.miss)
+    };
+    assert_eq!(clocks(wscg03, Preset::Wscg03.clock_ps()), (8, 8, 20));
     // DATE'05 §4.1 gives "a 756-bit wide bus from the DDR2-RAM" and an 800 MHz target. The
     // rest is our assumption, DDR2-800 at 5-5-5 (CL = tRCD = tRP = 5 memory clocks, 12.5 ns)
-    // with the chip at the data rate, two chip clocks per memory clock: 8 banks of 8 KiB
-    // pages, bursts of 4 beats (4 chip clocks); a hit CL + burst = 10 + 4 = 14 clocks, a
-    // miss tRP + tRCD + hit = 10 + 10 + 14 = 34.
+    // a beat every 1.25 ns (800 MT/s): 8 banks of 8 KiB pages, bursts of 4 beats (5 ns); a
+    // hit CL + burst = 12.5 + 5 ns, a miss tRP + tRCD + hit = 12.5 + 12.5 + 17.5 ns. At the
+    // paper's 800 MHz, the data rate: 4, 14 and 34 clocks.
     let date05 = Ddr {
         banks: 8,
         page_bytes: 8192,
         bus_bits: 756,
         burst: 4,
-        hit: 2 * 5 + 4,
-        miss: 2 * 5 + 2 * 5 + 14,
+        beat_ps: 1250,
+        hit_ps: 12_500 + 4 * 1250,
+        miss_ps: 12_500 + 12_500 + 17_500,
     };
-    assert_eq!((date05.hit, date05.miss), (14, 34));
+    assert_eq!(clocks(date05, Preset::Date05.clock_ps()), (4, 14, 34));
     assert_eq!(Ddr::DATE05, date05);
     assert_eq!(
         (
@@ -271,16 +280,18 @@ fn presets_are_the_papers_values() {
     // the memory port at full speed: an issue every clock, register 0x126's most requests
     // outstanding (16) and pairs prefetched (14), a credit of 48; the RTL's reset point
     // otherwise (tb/cycle_chip.rs: `rtl_point_is_the_rtl`)
-    let full = |memory| Params {
+    let full = |memory, clock_ps| Params {
         issue_spacing: 1,
         outstanding: 16,
         prefetch: 14,
         credit: 48,
         memory,
+        clock_ps,
         ..Params::RTL
     };
-    assert_eq!(Preset::Date05.params(), full(Memory::Ddr(date05)));
-    assert_eq!(Preset::Wscg03.params(), full(Memory::Ddr(wscg03)));
+    // the papers' clocks, 1.25 ns and 1 / 266 MHz to the picosecond
+    assert_eq!(Preset::Date05.params(), full(Memory::Ddr(date05), 1250));
+    assert_eq!(Preset::Wscg03.params(), full(Memory::Ddr(wscg03), 3759));
     assert_eq!(
         Preset::Rtl.params(),
         Params {

@@ -99,7 +99,12 @@ impl Case {
     }
 
     fn drive(&self) -> Drive {
-        drive(&self.image, self.params.memory, self.reader, MAX_CYCLES)
+        drive(
+            &self.image,
+            self.params.memory_clocks().unwrap(),
+            self.reader,
+            MAX_CYCLES,
+        )
     }
 
     /// Runs the query `runs` times back to back on one rust-hdl chip (of the image's kind)
@@ -397,8 +402,10 @@ fn k24_rec_patch_fifo_ddr_banks() {
         page_bytes: 512,
         bus_bits: 1024,
         burst: 2,
-        hit: 3,
-        miss: 6,
+        // at the `rtl` preset's 1.25 ns: a burst 2 clocks, a hit 3, a miss 6
+        beat_ps: 1250,
+        hit_ps: 3750,
+        miss_ps: 7500,
     });
     let p = q.prepare().unwrap();
     let case = Case::new(
@@ -631,8 +638,10 @@ fn seeded_random_query() {
         page_bytes: 256,
         bus_bits: 64,
         burst: 2,
-        hit: 2,
-        miss: 5,
+        // at Params::RTL's 1.25 ns: a burst 2 clocks, a hit 2, a miss 5
+        beat_ps: 1250,
+        hit_ps: 2500,
+        miss_ps: 6250,
     });
     let reader = Reader {
         period: [1, 1, 2, 5][rng.random_range(0..4)],

@@ -28,19 +28,22 @@ fn memory() -> impl Strategy<Value = Memory> {
             })
         ),
         Just(Memory::Ddr(Ddr::WSCG03)),
-        (1u32..=4, 6u32..=12, 5u32..=8, 0u32..=3, 0u32..=4, 0u32..=12).prop_map(
-            |(banks, page, bus, burst, hit, miss)| {
+        (
+            (1u32..=4, 6u32..=12, 5u32..=8, 0u32..=3),
+            (600u32..=4000, 0u32..=5000, 0u32..=15000)
+        )
+            .prop_map(|((banks, page, bus, burst), (beat_ps, hit, miss))| {
                 let burst = 1 << burst;
                 Memory::Ddr(Ddr {
                     banks,
                     page_bytes: 1 << page,
                     bus_bits: 1 << bus,
                     burst,
-                    hit: burst + hit,
-                    miss: burst + hit + miss,
+                    beat_ps,
+                    hit_ps: burst * beat_ps + hit,
+                    miss_ps: burst * beat_ps + hit + miss,
                 })
-            }
-        ),
+            }),
     ]
 }
 

@@ -8,8 +8,9 @@
 // edge t is answered in the cycle ending with edge t+L+B-1, B = ceil(W / +bus_bits)
 // clocks on the bus, 1 without +bus_bits; +interval=I:
 // the next request is accepted max(I, B) edges later at the earliest; or, with +ddr,
-// the DDR SDRAM model of cycle::memory::Ddr: +banks +page_bytes +bus_bits +burst +hit
-// +miss, a request accepted in any cycle; docs/ARCHITECTURE.md), reads results
+// the DDR SDRAM model of cycle::memory in the chip's clocks (chip::memory::DdrClocks):
+// +banks +page_bytes +bus_bits +burst (beats a burst) +burst_clocks (clocks a burst holds
+// the bus) +hit +miss, a request accepted in any cycle; docs/ARCHITECTURE.md), reads results
 // with res_ready high in the cycles that are multiples of +reader=P (default 1: every
 // cycle; cycle::drive::Reader), and prints the trace of cycle::drive::ChipTrace::text:
 //   result <cycle> <A's triangle> <B's triangle> <uncertain>
@@ -65,7 +66,7 @@ module tb;
   integer qh, qt, next_accept, cyc, i, latency, interval, reader, max_cycles;
   // DDR SDRAM: per bank the open row (-1: none) and the cycle it is free; the data bus
   integer wbits, wb;  // bits and bytes per word: word address a starts at byte a * wb
-  integer ddr, banks, page_bytes, bus_bits, burst, hit, miss, bursts, page, bank, row, t0, t1, bus_free, beats;
+  integer ddr, banks, page_bytes, bus_bits, burst, burst_clocks, hit, miss, bursts, page, bank, row, t0, t1, bus_free, beats;
   integer open_row [0:63];  // cycle::memory::Ddr::MAX_BANKS
   integer bank_free [0:63];
   reg [1023:0] mem_file, host_file;
@@ -100,8 +101,9 @@ module tb;
     if (ddr) begin
       if (!$value$plusargs("banks=%d", banks) || !$value$plusargs("page_bytes=%d", page_bytes)
           || !$value$plusargs("bus_bits=%d", bus_bits) || !$value$plusargs("burst=%d", burst)
+          || !$value$plusargs("burst_clocks=%d", burst_clocks)
           || !$value$plusargs("hit=%d", hit) || !$value$plusargs("miss=%d", miss) || banks > 64) begin
-        $display("chip_tb: +ddr needs +banks (at most 64) +page_bytes +bus_bits +burst +hit +miss");
+        $display("chip_tb: +ddr needs +banks (at most 64) +page_bytes +bus_bits +burst +burst_clocks +hit +miss");
         $finish;
       end
       bursts = (wbits + bus_bits * burst - 1) / (bus_bits * burst);
@@ -151,8 +153,8 @@ module tb;
           bank = page % banks;
           row = page / banks;
           t0 = cyc > bank_free[bank] ? cyc : bank_free[bank];
-          t1 = t0 + (open_row[bank] == row ? hit : miss) + (bursts - 1) * burst;
-          if (bus_free + bursts * burst > t1) t1 = bus_free + bursts * burst;
+          t1 = t0 + (open_row[bank] == row ? hit : miss) + (bursts - 1) * burst_clocks;
+          if (bus_free + bursts * burst_clocks > t1) t1 = bus_free + bursts * burst_clocks;
           open_row[bank] = row;
           bank_free[bank] = t1;
           bus_free = t1;

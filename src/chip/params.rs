@@ -1,7 +1,7 @@
 //! The timing parameters of the chip's microarchitecture, the cycle model's knobs and the
 //! RTL chip's point among them.
 
-use super::memory::{MemTiming, Memory};
+use super::memory::{MemClocks, MemTiming, Memory};
 use super::rtl;
 use serde::{Deserialize, Serialize};
 
@@ -44,6 +44,12 @@ pub struct Params {
     /// Not read with the others: a scene's `[memory]` is a section of its own.
     #[serde(skip_deserializing)]
     pub memory: Memory,
+    /// The chip's clock period in picoseconds, in whose clocks the models count a DDR
+    /// memory's nanoseconds ([`memory_clocks`](Self::memory_clocks)): the preset's paper
+    /// clock until a scene or the study sets its clock's. Not a scene key: `[timing]`
+    /// `clock_mhz` or `technology` set the clock.
+    #[serde(skip_deserializing)]
+    pub clock_ps: u64,
 }
 
 impl Params {
@@ -67,6 +73,7 @@ impl Params {
             interval: 1,
             bus_bits: None,
         }),
+        clock_ps: 1250,
     };
 
     /// RTL chip `kind` after reset: [`RTL`](Self::RTL) with its DOP unit's and TRI_UNIT's
@@ -162,7 +169,15 @@ impl Params {
                 Params::MAX_PREFETCH
             ));
         }
-        self.memory.check()
+        if self.clock_ps == 0 {
+            return Err("the chip's clock period must be at least 1 ps".into());
+        }
+        self.memory_clocks().map(|_| ())
+    }
+
+    /// The memory in the chip's clocks, at `clock_ps`.
+    pub fn memory_clocks(&self) -> Result<MemClocks, String> {
+        self.memory.at(self.clock_ps)
     }
 }
 

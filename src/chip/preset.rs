@@ -62,11 +62,17 @@ impl Preset {
         }
     }
 
+    /// The preset's timing and memory, the memory counted at the paper's clock
+    /// ([`clock_ps`](Self::clock_ps)) until a scene or the study sets its own.
     pub fn params(self) -> Params {
-        match self {
+        let p = match self {
             Preset::Date05 => Preset::full_port(Memory::Ddr(Ddr::DATE05)),
             Preset::Wscg03 => Preset::full_port(Memory::Ddr(Ddr::WSCG03)),
             Preset::Rtl => Params::RTL,
+        };
+        Params {
+            clock_ps: self.clock_ps(),
+            ..p
         }
     }
 
@@ -84,6 +90,11 @@ impl Preset {
             Preset::Date05 | Preset::Rtl => 800.0,
             Preset::Wscg03 => 266.0,
         }
+    }
+
+    /// The paper's clock period in picoseconds, to the picosecond.
+    pub fn clock_ps(self) -> u64 {
+        (1e6 / self.clock_mhz()).round() as u64
     }
 
     /// The name scenes and the CLI use.

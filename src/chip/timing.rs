@@ -442,6 +442,12 @@ impl Clock {
         1000.0 / self.period_ns
     }
 
+    /// The period to the picosecond: [`Params::clock_ps`](crate::chip::params::Params::clock_ps),
+    /// in whose clocks the models count a DDR memory.
+    pub fn ps(&self) -> u64 {
+        (self.period_ns * 1000.0).round().max(1.0) as u64
+    }
+
     /// An assumed clock of `mhz`, `why`.
     pub fn assumed(mhz: f64, why: String) -> Clock {
         let period_ns = 1000.0 / mhz;

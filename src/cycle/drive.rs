@@ -4,7 +4,7 @@
 //! in lockstep, and the traversal VCD.
 
 use super::memory::{MemCounters, MemModel};
-use crate::chip::memory::Memory;
+use crate::chip::memory::MemClocks;
 use crate::chip::ports::{ChipIn, ChipOut, Clocked, MemorySide};
 use crate::chip::probes::{probe_valid, PROBES};
 use crate::chip::reg::Mode;
@@ -150,7 +150,8 @@ impl std::fmt::Display for ChipError {
 /// How one query is driven.
 #[derive(Clone, Copy, Debug)]
 pub struct Drive {
-    pub memory: Memory,
+    /// The memory in the chip's clocks.
+    pub memory: MemClocks,
     /// Bits per memory word (a DDR access moves whole bursts of the bus).
     pub word_bits: u32,
     pub reader: Reader,
@@ -484,7 +485,7 @@ mod tests {
             let mut c =
                 crate::cycle::chip::Chip::new(&q.cfg, p, &q.a, &q.b, &setup, false).unwrap();
             let d = Drive {
-                memory: p.memory,
+                memory: p.memory_clocks().unwrap(),
                 word_bits: q.layout.word_bits(),
                 reader: Reader::default(),
                 words,

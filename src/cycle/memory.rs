@@ -3,7 +3,7 @@
 //! memory for every level: the cycle model, the rust-hdl driver and (the same rules in
 //! Verilog) `scripts/verilog/chip_tb.v`.
 
-use crate::chip::memory::{Ddr, MemTiming, Memory};
+use crate::chip::memory::{DdrClocks, MemClocks, MemTiming};
 use std::collections::VecDeque;
 
 /// What the memory did during a query.
@@ -21,7 +21,7 @@ pub struct MemCounters {
 /// DDR state: per bank its open row and the cycle it is free; the data bus's free cycle.
 #[derive(Clone, Debug)]
 struct DdrState {
-    d: Ddr,
+    d: DdrClocks,
     word_bytes: u64,
     bursts: u64,
     open: Vec<Option<u64>>,
@@ -30,7 +30,7 @@ struct DdrState {
 }
 
 /// The memory model's state during a query (cycle numbers as in the chip's trace).
-/// Ideal: [`MemTiming`]. DDR ([`Ddr`]): a request is accepted in any cycle and answered
+/// Ideal: [`MemTiming`]. DDR ([`DdrClocks`]): a request is accepted in any cycle and answered
 /// when its word is complete. Responses come in request order.
 #[derive(Clone, Debug)]
 pub struct MemModel {
@@ -48,15 +48,15 @@ pub struct MemModel {
 
 impl MemModel {
     /// The model of `m` for memory words of `word_bits` bits.
-    pub fn new(m: Memory, word_bits: u32) -> Self {
+    pub fn new(m: MemClocks, word_bits: u32) -> Self {
         let (timing, beats, ddr) = match m {
-            Memory::Ideal(t) => (
+            MemClocks::Ideal(t) => (
                 t,
                 t.bus_bits
                     .map_or(1, |b| (word_bits as u64).div_ceil(b as u64).max(1)),
                 None,
             ),
-            Memory::Ddr(d) => {
+            MemClocks::Ddr(d) => {
                 let banks = d.banks as usize;
                 let beat_bits = d.bus_bits as u64 * d.burst as u64;
                 let state = DdrState {
@@ -105,9 +105,10 @@ impl MemModel {
             Some(s) => {
                 let page = addr as u64 * s.word_bytes / s.d.page_bytes as u64;
                 let (bank, row) = ((page % s.d.banks as u64) as usize, page / s.d.banks as u64);
-                let data = s.bursts * s.d.burst as u64;
+                let data = s.bursts * s.d.burst_clocks as u64;
                 let hit = s.open[bank] == Some(row);
-                let cost = if hit { s.d.hit } else { s.d.miss } as u64 + data - s.d.burst as u64;
+                let cost =
+                    if hit { s.d.hit } else { s.d.miss } as u64 + data - s.d.burst_clocks as u64;
                 if s.bank_free[bank] > cyc {
                     self.counters.bank_conflicts += 1;
                 }
@@ -147,6 +148,12 @@ impl MemModel {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::chip::memory::{Ddr, Memory};
+
+    /// WSCG'03's memory at the paper's 266 MHz: 8 clocks a burst and a hit, 20 a miss.
+    fn wscg03() -> MemClocks {
+        Memory::Ddr(Ddr::WSCG03).at(3759).unwrap()
+    }
 
     #[test]
     fn model_answers_after_latency_and_spaces_requests() {
@@ -221,7 +228,7 @@ mod tests {
     /// (bank 0, row 1).
     #[test]
     fn ddr_pages_banks_and_the_bus_by_hand() {
-        let mut m = MemModel::new(Memory::Ddr(Ddr::WSCG03), 2048);
+        let mut m = MemModel::new(wscg03(), 2048);
         // a miss at 0: done at 0 + 20
         m.request(0, 0);
         // page 0 is now open: a hit requested at 1 waits for bank 0 (free at 20): 20 + 8
@@ -246,16 +253,16 @@ mod tests {
             }
         );
         // a word of 2 bursts (257 bytes) moves in 16 clocks: a miss costs 20 + 8
-        let mut m = MemModel::new(Memory::Ddr(Ddr::WSCG03), 2056);
+        let mut m = MemModel::new(wscg03(), 2056);
         m.request(5, 0);
         assert_eq!(m.next_response(), Some(33));
         assert!(Ddr {
-            hit: 4,
+            hit_ps: 29_999,
             ..Ddr::WSCG03
         }
         .check()
         .unwrap_err()
-        .contains("burst <= hit <= miss"));
+        .contains("burst x beat_ns <= hit_ns <= miss_ns"));
         assert!(Ddr {
             banks: 0,
             ..Ddr::WSCG03
@@ -272,5 +279,32 @@ mod tests {
         .contains("at most 64 banks"));
         assert_eq!(Ddr::preset("wscg03"), Some(Ddr::WSCG03));
         assert_eq!(Ddr::preset("ddr9"), None);
+    }
+
+    /// The same DDR2 nanoseconds in the clocks of three chips, by hand: DATE'05's DDR2-800
+    /// (a burst 4 x 1.25 = 5 ns, a hit 17.5 ns, a miss 42.5 ns) at the paper's 1.25 ns is
+    /// 4, 14 and 34 clocks; at half the period twice as many; at 6.944 ns, rounded up,
+    /// ceil(0.72) = 1, ceil(2.52) = 3, ceil(6.12) = 7.
+    #[test]
+    fn a_faster_clock_waits_more_clocks_for_the_same_ddr() {
+        let at = |ps| match Memory::Ddr(Ddr::DATE05).at(ps).unwrap() {
+            MemClocks::Ddr(c) => (c.burst_clocks, c.hit, c.miss),
+            _ => unreachable!(),
+        };
+        assert_eq!(at(1250), (4, 14, 34));
+        assert_eq!(at(625), (8, 28, 68));
+        assert_eq!(at(6944), (1, 3, 7));
+        // a query's first access, a page miss, answered after twice the clocks
+        let first = |ps| {
+            let mut m = MemModel::new(Memory::Ddr(Ddr::DATE05).at(ps).unwrap(), 3024);
+            m.request(0, 0);
+            m.next_response()
+        };
+        assert_eq!((first(1250), first(625)), (Some(34), Some(68)));
+        let slow = Ddr {
+            miss_ps: 2_000_000,
+            ..Ddr::DATE05
+        };
+        assert!(slow.at(2).is_ok() && slow.at(1).unwrap_err().contains("over the"));
     }
 }

@@ -68,7 +68,7 @@ pub fn run_query(
 ) -> Result<(drive::ChipTrace, Option<chip::Stats>), String> {
     let mut c = chip::Chip::new(&chip.cfg, p, &chip.a, &chip.b, setup, rec.counters)?;
     let d = drive::Drive {
-        memory: p.memory,
+        memory: p.memory_clocks()?,
         word_bits: chip.layout.word_bits(),
         reader,
         words: chip.image_span(&p.memory),

@@ -13,7 +13,7 @@ use super::tri_io::{tri_unit_setup_words, LeafIn};
 use crate::chip::config::ChipConfig;
 use crate::chip::config::MemLayout;
 use crate::chip::layout::{Dst, RecordMap};
-use crate::chip::memory::{MemTiming, Memory};
+use crate::chip::memory::{MemClocks, MemTiming, Memory};
 use crate::chip::params::Params;
 use crate::chip::ports::{ChipIn, ChipOut, Clocked};
 use crate::chip::reg::{self, Mode, Order};
@@ -428,7 +428,7 @@ impl<C: RtlPorts> Clocked for RtlChip<'_, C> {
 
 /// How a query of `image` is driven: every result read at once unless `reader` says
 /// otherwise.
-pub fn drive(image: &QueryImage, memory: Memory, reader: Reader, max_cycles: u64) -> Drive {
+pub fn drive(image: &QueryImage, memory: MemClocks, reader: Reader, max_cycles: u64) -> Drive {
     Drive {
         memory,
         word_bits: image.word_bits,
@@ -1272,6 +1272,7 @@ pub fn rtl_order(
         outstanding: p.outstanding,
         issue_spacing: p.issue_spacing,
         credit: p.credit,
+        clock_ps: p.clock_ps,
         ..Params::of(kind)
     };
     if *p != rtl {
@@ -1316,7 +1317,7 @@ pub fn cross_check(
     let (kind, order) = rtl_order(&chip.cfg, traversal, &p)?;
     let setup = chip.setup(pose);
     let image = QueryImage::new(kind, &chip.a, &chip.b, &setup, order, mode, &p, &chip.cfg)?;
-    let d = drive(&image, p.memory, Reader::default(), max_cycles);
+    let d = drive(&image, p.memory_clocks()?, Reader::default(), max_cycles);
     struct Lockstep<'q> {
         model: crate::cycle::chip::Chip<'q>,
         image: &'q QueryImage,

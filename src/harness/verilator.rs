@@ -5,7 +5,7 @@
 //! port whenever one changes) are compared with the cycle model's, clock by clock.
 
 use super::chip_io::{self, QueryImage};
-use crate::chip::memory::Memory;
+use crate::chip::memory::{MemClocks, Memory};
 use crate::chip::probes::{probe_valid, PROBES};
 use crate::chip::rtl::ChipKind;
 use crate::cycle::drive::ChipTrace;
@@ -206,7 +206,7 @@ pub fn cross_check(
     bin: &Path,
     dir: &Path,
     image: &QueryImage,
-    memory: Memory,
+    memory: MemClocks,
     max_cycles: u64,
     ports: &PortLog,
     trace: &ChipTrace,
@@ -221,7 +221,7 @@ pub fn cross_check(
     std::fs::write(&mem, image.memory_hex()).map_err(|e| io(&mem, e))?;
     std::fs::write(&host, image.writes_hex()).map_err(|e| io(&host, e))?;
     let memory_args = match memory {
-        Memory::Ideal(t) => {
+        MemClocks::Ideal(t) => {
             let mut a = vec![
                 format!("+latency={}", t.latency),
                 format!("+interval={}", t.interval),
@@ -229,13 +229,14 @@ pub fn cross_check(
             a.extend(t.bus_bits.map(|b| format!("+bus_bits={b}")));
             a
         }
-        Memory::Ddr(d) => {
+        MemClocks::Ddr(d) => {
             vec![
                 "+ddr".into(),
                 format!("+banks={}", d.banks),
                 format!("+page_bytes={}", d.page_bytes),
                 format!("+bus_bits={}", d.bus_bits),
                 format!("+burst={}", d.burst),
+                format!("+burst_clocks={}", d.burst_clocks),
                 format!("+hit={}", d.hit),
                 format!("+miss={}", d.miss),
             ]

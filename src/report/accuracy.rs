@@ -316,16 +316,20 @@ pub fn study(
         .filter(|(i, _)| shard.has(index * all.len() + i))
         .map(|(_, p)| p.clone())
         .collect();
-    let configs = plan.configs()?;
+    let mut configs = plan.configs()?;
     let mut rows = vec![];
     let mut chips: Vec<Chip> = vec![];
     let mut chip_of = vec![];
-    for &(preset, cfg, params) in &configs {
+    for (preset, cfg, params) in &mut configs {
+        let (preset, cfg) = (*preset, *cfg);
         let folds = Folds {
             tri: params.tri_interval,
             dop: params.dop_interval,
         };
         let clock = Clock::of(plan.technology, &cfg, folds, preset)?;
+        // the memory's nanoseconds in this configuration's clocks
+        params.clock_ps = clock.ps();
+        params.check()?;
         rows.push(Row {
             mesh: mesh.clone(),
             memory: preset,

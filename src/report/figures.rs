@@ -118,6 +118,7 @@ impl ChipRun {
         let clock = Clock::of(technology, &cfg, Folds::NONE, preset)?;
         let params = Params {
             queue_entries: QUEUE_ENTRIES,
+            clock_ps: clock.ps(),
             ..preset.params()
         };
         Ok(ChipRun {

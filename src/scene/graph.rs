@@ -191,7 +191,7 @@ impl Unit {
                 let cache = if s.cfg.tri_cache > 1 { format!(", A's triangle words through a {}-line direct-mapped cache", s.cfg.tri_cache) } else { String::new() };
                 format!("node and triangle word requests, {} outstanding{prefetch}{cache}", p.outstanding)
             }
-            Unit::MemoryModel => p.memory.to_string(),
+            Unit::MemoryModel => p.memory.describe_at(p.clock_ps),
             Unit::DopUnit => match p.dop_interval {
                 1 => format!("DOPTRF transform and compare, {} clocks", p.dop_latency),
                 ii => format!("DOPTRF transform and compare on k/{ii} lanes, a pair every {ii} clocks, {} clocks", p.dop_unit_latency()),

@@ -104,9 +104,9 @@ fn why_unused(u: &Uses, section: &str, key: &str) -> Option<String> {
             u.tri_interval
         ),
         ("memory", "latency" | "interval") if ddr => {
-            "belongs to the ideal memory, not used by the DDR model, whose timing is its hit and miss costs: remove it, or set model = \"ideal\"".into()
+            "belongs to the ideal memory, not used by the DDR model, whose timing is its beat_ns, hit_ns and miss_ns: remove it, or set model = \"ideal\"".into()
         }
-        ("memory", "preset" | "banks" | "page_bytes" | "burst" | "hit" | "miss") if !ddr => {
+        ("memory", "preset" | "banks" | "page_bytes" | "burst" | "beat_ns" | "hit_ns" | "miss_ns" | "hit" | "miss") if !ddr => {
             "belongs to model = \"ddr\", not used by the ideal memory (latency, interval, bus_bits): remove it, or set model = \"ddr\"".into()
         }
         _ => return None,

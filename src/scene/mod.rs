@@ -76,7 +76,9 @@
 //! # bus_bits = 256            # ideal: a word moves in ceil(word bits / bus_bits) clocks
 //! #                           # (default: a word per clock)
 //! # preset = "wscg03"         # ddr: "wscg03" or "date05", then any of these overridden:
-//! # banks = 4, page_bytes = 4096, bus_bits = 256, burst = 8, hit = 8, miss = 20
+//! # banks = 4, page_bytes = 4096, bus_bits = 256, burst = 8 (beats), beat_ns = 3.75,
+//! # hit_ns = 30, miss_ns = 75  # the data sheet's times: the models count them in the
+//! #                           # chip's clocks at its period, rounded up (--explain shows both)
 //!
 //! [timing]                    # the cycle model's microarchitecture (optional; default:
 //! queue_entries = 1024        # the preset's; the RTL chip's are these values); DATE'05's
@@ -171,10 +173,12 @@ fn over<T: serde::Serialize + serde::de::DeserializeOwned>(
     keys: Keys,
     text: &str,
     section: &str,
-    drop: &str,
+    drop: &[&str],
 ) -> Result<T, String> {
     let mut table = toml::Table::try_from(value).map_err(|e| e.to_string())?;
-    table.remove(drop);
+    for d in drop {
+        table.remove(*d);
+    }
     let mut keys: Vec<(String, toml::Spanned<toml::Value>)> = keys.into_iter().collect();
     keys.sort_by_key(|(_, v)| v.span().start);
     let mut t = T::deserialize(table.clone()).map_err(|e| e.message().to_string())?;
@@ -226,7 +230,7 @@ fn chip(
     )?;
     let preset = flags.preset.or(named).unwrap_or(Preset::Rtl);
     let arch = flags.architecture.or(arch).unwrap_or(preset.architecture());
-    let mut cfg = over(&preset.chip(), keys, text, "[chip]", "")?;
+    let mut cfg = over(&preset.chip(), keys, text, "[chip]", &[])?;
     if arch == Architecture::Wscg03 {
         (cfg.layout, cfg.node_cache) = (MemLayout::Words, 1);
     }
@@ -263,7 +267,14 @@ fn timing(
         }
     };
     Ok((
-        over(&preset.params(), keys, text, "[timing]", "memory")?,
+        // the memory is [memory]'s, the clock the scene's ([`clock`])
+        over(
+            &preset.params(),
+            keys,
+            text,
+            "[timing]",
+            &["memory", "clock_ps"],
+        )?,
         technology,
         clock_mhz,
     ))
@@ -307,8 +318,23 @@ struct MemorySection {
     page_bytes: Option<u32>,
     bus_bits: Option<u32>,
     burst: Option<u32>,
-    hit: Option<u32>,
-    miss: Option<u32>,
+    beat_ns: Option<f64>,
+    hit_ns: Option<f64>,
+    miss_ns: Option<f64>,
+    /// In clocks once; refused with what to write instead.
+    hit: Option<toml::Value>,
+    miss: Option<toml::Value>,
+}
+
+/// A DDR time of the scene in ns, in picoseconds: from 1 ps to 1 ms, to the picosecond.
+fn ddr_ps(key: &str, ns: f64) -> Result<u32, String> {
+    let ps = ns * 1000.0;
+    if !(1.0..=1e9).contains(&ps) || (ps - ps.round()).abs() > 1e-6 * ps {
+        return Err(format!(
+            "[memory] {key} = {ns} must be from 0.001 to 1000000 ns, to the picosecond"
+        ));
+    }
+    Ok(ps.round() as u32)
 }
 
 impl MemorySection {
@@ -330,14 +356,21 @@ impl MemorySection {
                 }))
             }
             "ddr" => {
+                if let Some(k) = [("hit", &self.hit), ("miss", &self.miss)]
+                    .iter()
+                    .find_map(|(k, v)| v.as_ref().map(|_| k))
+                {
+                    return Err(format!("[memory] {k} is a number of clocks, which depend on the chip's clock: write {k}_ns, the memory's time in ns (the models count it in the chip's clocks at its period)"));
+                }
                 let base = (self.preset.as_deref())
                     .map(|p| Ddr::preset(p).ok_or_else(|| format!("[memory] preset \"{p}\" is not known: use \"wscg03\" or \"date05\"")))
                     .transpose()?
                     .or(preset_ddr);
+                let ns = |k: &str, v: Option<f64>| v.map(|x| ddr_ps(k, x)).transpose();
                 // each parameter: the scene's, else the preset's
                 let get = |key: &str, own: Option<u32>, preset: fn(&Ddr) -> u32| {
                     own.or(base.as_ref().map(preset)).ok_or_else(|| {
-                        format!("[memory] model = \"ddr\" needs a preset (\"wscg03\", \"date05\") or all of banks, page_bytes, bus_bits, burst, hit, miss ({key} is missing)")
+                        format!("[memory] model = \"ddr\" needs a preset (\"wscg03\", \"date05\") or all of banks, page_bytes, bus_bits, burst, beat_ns, hit_ns, miss_ns ({key} is missing)")
                     })
                 };
                 Ok(Memory::Ddr(Ddr {
@@ -345,8 +378,9 @@ impl MemorySection {
                     page_bytes: get("page_bytes", self.page_bytes, |d| d.page_bytes)?,
                     bus_bits: get("bus_bits", self.bus_bits, |d| d.bus_bits)?,
                     burst: get("burst", self.burst, |d| d.burst)?,
-                    hit: get("hit", self.hit, |d| d.hit)?,
-                    miss: get("miss", self.miss, |d| d.miss)?,
+                    beat_ps: get("beat_ns", ns("beat_ns", self.beat_ns)?, |d| d.beat_ps)?,
+                    hit_ps: get("hit_ns", ns("hit_ns", self.hit_ns)?, |d| d.hit_ps)?,
+                    miss_ps: get("miss_ns", ns("miss_ns", self.miss_ns)?, |d| d.miss_ps)?,
                 }))
             }
             m => Err(format!(
@@ -614,7 +648,7 @@ impl Scene {
         );
         format!(
             "configuration (preset {} and the scene's keys):\n  architecture: {}\n  chip: k = {}, format {}, dop_rounding {}, tri_rounding {:?}, tri_cache {}, {memory_side}\n  {timing}\n  memory: {}\n  clock: {clock}",
-            self.preset.name(), self.architecture.name(), c.k, c.format, c.dop_rounding, c.tri_rounding, c.tri_cache, p.memory
+            self.preset.name(), self.architecture.name(), c.k, c.format, c.dop_rounding, c.tri_rounding, c.tri_cache, p.memory.describe_at(p.clock_ps)
         )
     }
 
@@ -745,6 +779,13 @@ impl Scene {
             .then(|| clock(&cfg, folds, preset, architecture, technology, clock_mhz))
             .transpose()
             .map_err(err)?;
+        // the memory's nanoseconds in the clocks of the chip's own period
+        if let Some(c) = &clock {
+            params.clock_ps = c.ps();
+            params
+                .check()
+                .map_err(|e| err(format!("[memory] at the chip's clock: {e}")))?;
+        }
         let scene = Scene {
             name: name.to_string(),
             objects: f.objects,
@@ -855,6 +896,8 @@ mod tests {
                     bus_bits: None
                 }
                 .into(),
+                // the memory counted at the scene's clock
+                clock_ps: s.clock.as_ref().unwrap().ps(),
                 ..Params::RTL
             }
         );
@@ -1075,6 +1118,7 @@ mod tests {
             s.params,
             Params {
                 tri_interval: 16,
+                clock_ps: s.clock.as_ref().unwrap().ps(),
                 ..Preset::Date05.params()
             }
         );
@@ -1186,7 +1230,7 @@ mod tests {
                 ..Ddr::DATE05
             }))
         );
-        let own = "model = \"ddr\"\nbanks = 2\npage_bytes = 1024\nbus_bits = 64\nburst = 4\nhit = 6\nmiss = 12";
+        let own = "model = \"ddr\"\nbanks = 2\npage_bytes = 1024\nbus_bits = 64\nburst = 4\nbeat_ns = 1.5\nhit_ns = 7.5\nmiss_ns = 15.001";
         assert_eq!(
             mem(own),
             Ok(Memory::Ddr(Ddr {
@@ -1194,8 +1238,9 @@ mod tests {
                 page_bytes: 1024,
                 bus_bits: 64,
                 burst: 4,
-                hit: 6,
-                miss: 12
+                beat_ps: 1500,
+                hit_ps: 7500,
+                miss_ps: 15001
             }))
         );
         assert_eq!(
@@ -1209,8 +1254,8 @@ mod tests {
         for (m, want) in [
             ("model = \"ddr\"", "needs a preset"),
             (
-                "model = \"ddr\"\nbanks = 2\npage_bytes = 1024\nbus_bits = 64\nburst = 4\nhit = 6",
-                "(miss is missing)",
+                "model = \"ddr\"\nbanks = 2\npage_bytes = 1024\nbus_bits = 64\nburst = 4\nbeat_ns = 1\nhit_ns = 6",
+                "(miss_ns is missing)",
             ),
             (
                 "model = \"ddr\"\npreset = \"ddr4\"",
@@ -1224,12 +1269,20 @@ mod tests {
                 "preset = \"wscg03\"",
                 "s:10: [memory] preset belongs to model = \"ddr\", not used by the ideal memory",
             ),
-            ("hit = 8", "s:10: [memory] hit belongs to model = \"ddr\""),
+            ("hit_ns = 8", "s:10: [memory] hit_ns belongs to model = \"ddr\""),
+            (
+                "model = \"ddr\"\npreset = \"wscg03\"\nhit = 8",
+                "hit is a number of clocks, which depend on the chip's clock: write hit_ns",
+            ),
+            (
+                "model = \"ddr\"\npreset = \"wscg03\"\nmiss_ns = 0.0001",
+                "miss_ns = 0.0001 must be from 0.001 to 1000000 ns, to the picosecond",
+            ),
             ("bus_bits = 0", "bus_bits must be at least 1"),
             ("model = \"sram\"", "model \"sram\" is not known"),
             (
-                "model = \"ddr\"\npreset = \"wscg03\"\nhit = 2",
-                "burst <= hit <= miss",
+                "model = \"ddr\"\npreset = \"wscg03\"\nhit_ns = 29.999",
+                "burst x beat_ns <= hit_ns <= miss_ns",
             ),
         ] {
             let e = mem(m).unwrap_err();
@@ -1237,7 +1290,7 @@ mod tests {
         }
         let s = Scene::parse(&format!("{base}model = \"ddr\"\npreset = \"wscg03\""), "s").unwrap();
         let explain = crate::scene::graph::Plan::of(&s).explain(&s);
-        assert!(explain.contains("DDR SDRAM: 4 banks, 4096-byte pages, 256-bit bus, bursts of 8, page hit 8 and miss 20 clocks"), "{explain}");
+        assert!(explain.contains("DDR SDRAM: 4 banks, 4096-byte pages, 256-bit bus, bursts of 8 beats of 3.75 ns, page hit 30 ns and miss 75 ns; at the chip's 6.944 ns clock: a burst 5 clock(s), a page hit 5, a miss 11"), "{explain}");
         // model = "ddr" written on a DDR chip preset keeps the preset's DDR values
         let on = |preset: &str, m: &str| {
             Scene::parse(&format!("{base}{m}\n[chip]\npreset = \"{preset}\""), "s")
@@ -1272,12 +1325,27 @@ mod tests {
         let rtl = parse("").unwrap();
         assert_eq!(
             (rtl.preset, rtl.cfg, rtl.params),
-            (Preset::Rtl, ChipConfig::default(), Params::RTL)
+            (
+                Preset::Rtl,
+                ChipConfig::default(),
+                Params {
+                    clock_ps: rtl.clock.as_ref().unwrap().ps(),
+                    ..Params::RTL
+                }
+            )
         );
         let d = parse("[chip]\npreset = \"date05\"\n[timing]\ntechnology = \"paper\"").unwrap();
         assert_eq!(
             (d.cfg.k, d.params.memory, mhz(&d)),
             (24, Memory::Ddr(Ddr::DATE05), 800.0)
+        );
+        // DDR2's ns at the paper's 1.25 ns: its 14 and 34 clocks
+        assert!(
+            d.configuration().contains(
+                "at the chip's 1.25 ns clock: a burst 4 clock(s), a page hit 14, a miss 34"
+            ),
+            "{}",
+            d.configuration()
         );
         assert_eq!(
             (
@@ -1306,6 +1374,15 @@ mod tests {
                 banks: 4,
                 ..Ddr::DATE05
             })
+        );
+        // the same DDR2 at 400 MHz, twice the paper's period: half its clocks
+        assert_eq!(o.params.clock_ps, 2500);
+        assert!(
+            o.configuration().contains(
+                "at the chip's 2.5 ns clock: a burst 2 clock(s), a page hit 7, a miss 17"
+            ),
+            "{}",
+            o.configuration()
         );
         // a memory model named replaces the preset's
         let i = parse("[chip]\npreset = \"date05\"\n[memory]\nmodel = \"ideal\"").unwrap();
@@ -1359,7 +1436,18 @@ mod tests {
             },
         )
         .unwrap();
-        assert_eq!((f.preset, f.cfg.k, f.params), (Preset::Rtl, 6, Params::RTL));
+        let clock_ps = f.clock.as_ref().unwrap().ps();
+        assert_eq!(
+            (f.preset, f.cfg.k, f.params),
+            (
+                Preset::Rtl,
+                6,
+                Params {
+                    clock_ps,
+                    ..Params::RTL
+                }
+            )
+        );
         let e = parse("[chip]\npreset = \"date06\"").unwrap_err();
         assert!(
             e.starts_with("s:10:") && e.contains("\"date05\", \"wscg03\" or \"rtl\""),

@@ -68,6 +68,9 @@ pub struct CycleRecord {
     pub overflow: bool,
     /// The memory model's traffic.
     pub memory: MemoryRecord,
+    /// The memory in the chip's clocks at `period_ns` (a DDR's nanoseconds rounded up to
+    /// whole clocks: [`Memory::at`](crate::chip::memory::Memory::at)).
+    pub memory_clocks: crate::chip::memory::MemClocks,
     /// Where the clocks went (scenes asking for cycles or memory).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub stats: Option<crate::cycle::chip::Stats>,

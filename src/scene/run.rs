@@ -5,6 +5,7 @@ use super::graph::{Plan, Unit};
 use super::record::{CycleRecord, MemoryRecord, PoseRecord};
 use super::{CrossCheck, Scene};
 use crate::chip::layout::Layout;
+use crate::chip::memory::MemClocks;
 use crate::chip::reg::Mode;
 use crate::chip::timing::Clock;
 use crate::chip::wscg03::Architecture;
@@ -313,7 +314,7 @@ impl<'s> Prepared<'s> {
                     bin,
                     &dir,
                     &image,
-                    s.params.memory,
+                    s.params.memory_clocks()?,
                     2 * trace.cycles + 1000,
                     &ports,
                     &trace,
@@ -327,6 +328,7 @@ impl<'s> Prepared<'s> {
             &chip.layout,
             &trace,
             s.clock.as_ref().expect(CLOCKED),
+            s.params.memory_clocks()?,
             software_us,
         );
         (r.stats, r.vcd, r.cross_checked) = (
@@ -377,6 +379,7 @@ impl<'s> Prepared<'s> {
             &cycle::wscg03::layout(&chip.cfg),
             &run.trace,
             s.clock.as_ref().expect(CLOCKED),
+            s.params.memory_clocks()?,
             software_us,
         );
         r.wscg03 = Some(run.stats);
@@ -392,6 +395,7 @@ fn record(
     layout: &Layout,
     trace: &cycle::drive::ChipTrace,
     clock: &Clock,
+    memory_clocks: MemClocks,
     software_us: f64,
 ) -> CycleRecord {
     let (hits, unc) = trace.pairs();
@@ -421,6 +425,7 @@ fn record(
             page_misses: trace.memory.page_misses,
             bank_conflicts: trace.memory.bank_conflicts,
         },
+        memory_clocks,
         stats: None,
         wscg03: None,
         vcd: None,

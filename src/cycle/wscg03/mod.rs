@@ -144,7 +144,7 @@ pub fn run_query(
     max_cycles: u64,
 ) -> Result<Run, String> {
     sp.check()?;
-    p.memory.check()?;
+    let memory = p.memory_clocks()?;
     let cfg = &chip.cfg;
     let words = layout(cfg);
     let bases = crate::chip::layout::image_bases(
@@ -152,7 +152,7 @@ pub fn run_query(
         chip.a.tri_count() as u32,
         chip.b.tree.len() as u32,
     );
-    let mem = MemCtl::new(MemModel::new(p.memory, words.word_bits()), bases);
+    let mem = MemCtl::new(MemModel::new(memory, words.word_bits()), bases);
     let values = gdop::TransformCache::new(
         cfg.format.dop,
         cfg.dop_rounding.op(),
