@@ -672,7 +672,7 @@ fn bad_parameters_are_refused() {
                 }),
                 ..Params::RTL
             },
-            "burst <= hit <= miss",
+            "burst x beat_ns <= hit_ns <= miss_ns",
         ),
     ] {
         let e = CycleChip::new(&CHIP_CONFIG, p, &chip.a, &chip.b, &setup, true)
