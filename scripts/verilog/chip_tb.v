@@ -9,7 +9,7 @@
 // clocks on the bus, 1 without +bus_bits; +interval=I:
 // the next request is accepted max(I, B) edges later at the earliest; or, with +ddr,
 // the DDR SDRAM model of cycle::memory::Ddr: +banks +page_bytes +bus_bits +burst +hit
-// +miss, a request accepted in any cycle; docs/ARCHITECTURE.md), reads results
+// +miss, a request accepted in any cycle; docs/explanation/architecture.md), reads results
 // with res_ready high in the cycles that are multiples of +reader=P (default 1: every
 // cycle; cycle::drive::Reader), and prints the trace of cycle::drive::ChipTrace::text:
 //   result <cycle> <A's triangle> <B's triangle> <uncertain>

@@ -197,7 +197,7 @@ impl ChipConfig {
         check_k(self.k)?;
         if self.format.tri.exp_bits() < TCHECK_MIN_EXP_BITS {
             return Err(format!(
-                "format {}: T.CHECK's format needs at least {TCHECK_MIN_EXP_BITS} exponent bits (its certificate scales each object by a normal power of two at most a quarter of the format's largest value; docs/ACCURACY.md), not {}: use e{TCHECK_MIN_EXP_BITS}m{} or wider, or a format such as \"{}/binary32\" (DOP/T.CHECK)",
+                "format {}: T.CHECK's format needs at least {TCHECK_MIN_EXP_BITS} exponent bits (its certificate scales each object by a normal power of two at most a quarter of the format's largest value; docs/explanation/accuracy.md), not {}: use e{TCHECK_MIN_EXP_BITS}m{} or wider, or a format such as \"{}/binary32\" (DOP/T.CHECK)",
                 self.format,
                 self.format.tri.exp_bits(),
                 self.format.tri.frac_bits(),

@@ -208,7 +208,7 @@ impl Plan {
 mod tests {
     /// At every II of issue 33 the plan reads only registers that exist, issues at most one
     /// operation per unit and counter value (a table of ii entries), and prints its size
-    /// (docs/ARCHITECTURE.md, "Folded T.CHECK", has the table), under either binding.
+    /// (docs/explanation/architecture.md, "Folded T.CHECK", has the table), under either binding.
     #[test]
     fn tcheck_plans() {
         for (ii, binding) in [1, 2, 4, 8, 16, 32].into_iter().flat_map(|ii| {
