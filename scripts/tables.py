@@ -190,7 +190,7 @@ def headline():
          f"{ecp['fmax_mhz']} MHz, {n(ecp['luts'])} LUT4", "`scripts/fpga.sh --ecp5`", "`timing_ecp5.csv`"],
         ["triangle tests left to the host (k = 24, outward DOPs): binary32 / e8m15",
          f"{pct(unc[('rtl', '24', 'binary32', 'outward')])} / {pct(unc[('rtl', '24', 'e8m15', 'outward')])}",
-         "`cchip accuracy`", "`accuracy_cycles_uncertain.csv`"],
+         "`cchip accuracy --k 6,14,18,24,26 --plot docs/figures`", "`accuracy_cycles_uncertain.csv`"],
     ]
     names = {"big_patch_lifo_all_slow_host": "bunny patch, every pair uncertain",
              "big_sphere_lifo_all": "two spheres", "k24_big_rec_patch_lifo_all": "bunny patch"}

@@ -92,7 +92,7 @@ enum Cmd {
     /// [-1,1]^3) at several distances, with each k, number format (the DOP datapath's apart
     /// from T.CHECK's too) and DOP rounding, compared with the exact oracle and run on the
     /// cycle model for its clocks (poses on every core); with --area, the Yosys cells of
-    /// each configuration's units. Prints the tables of docs/explanation/accuracy.md; --plot draws them.
+    /// each configuration's units. Prints the tables of docs/explanation/accuracy-cost.md; --plot draws them.
     Accuracy(AccuracyArgs),
     /// The papers' figures regenerated (docs/explanation/figures.md): DATE'05 Figs. 6-8 on the `date05`
     /// preset (cycles and queue memory, LIFO vs FIFO; the chip's speed-up, of its time and
@@ -215,7 +215,7 @@ struct AccuracyArgs {
     #[arg(long, value_enum, default_value = "osu018")]
     technology: Technology,
     /// Run only the K-th of N shares of the (mesh, pose) items (1 <= K <= N) and print the
-    /// share's sums as JSON, for --merge (a SLURM array job, GNU parallel: README).
+    /// share's sums as JSON, for --merge (a SLURM array job, GNU parallel: docs/guide/study.md).
     #[arg(long, value_name = "K/N", conflicts_with = "merge")]
     shard: Option<accuracy::Shard>,
     /// Combine the shards' JSON files (all N of one study) into the serial run's output:

@@ -15,7 +15,7 @@ pub const NODE_CACHE_MAX_LINES: u32 = 256;
 /// at most 2^-2 of the format's largest value (2^(emax - 2)), which needs emax >= 2.
 pub const TCHECK_MIN_EXP_BITS: u32 = 3;
 
-/// How the DOP datapath and the host round (DESIGN.md 1.1, 3).
+/// How the DOP datapath and the host round (DATE'05 Eq. 10; docs/explanation/accuracy.md).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[serde(rename_all = "kebab-case")]
 pub enum DopRounding {

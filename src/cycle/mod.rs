@@ -1,4 +1,4 @@
-//! The fast cycle-exact model of the chip (fidelity level "cycle", DESIGN §2): the same
+//! The fast cycle-exact model of the chip (the level "cycle" of docs/introduction.md): the same
 //! microarchitecture as the RTL chip ([`rtl::chip`](crate::rtl)), unit by unit, each unit's
 //! state changing once per clock from the previous clock's registers as
 //! docs/explanation/architecture.md "Cycle semantics" says. Values (DOP overlaps, TRI_UNIT verdicts)

@@ -39,7 +39,7 @@ pub enum Binding {
     /// operand multiplexers select only among registers no other unit reads, which a placer
     /// puts beside it, and what crosses the chip is the units' outputs to the chains' first
     /// registers. Shared chains made every multiplexer reach across the whole register
-    /// file, which nextpnr could not route on the LFE5U-85F (README, "FPGA"). The RTL marks
+    /// file, which nextpnr could not route on the LFE5U-85F (docs/guide/timing-and-fpga.md). The RTL marks
     /// these registers `keep` so that synthesis does not merge the copies back.
     PerReader,
 }

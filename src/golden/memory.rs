@@ -207,7 +207,7 @@ impl ObjectImage {
 
     /// Triangle `t`'s word. Made from the f64 triangle when read, as the host made it
     /// for the memory image: a word per triangle held would be most of a large object's
-    /// memory (README, "Limits").
+    /// memory (docs/reference/limits.md).
     pub fn tri(&self, t: u32) -> TriWord {
         TriWord::new(&self.geometry()[t as usize], self.tri_format, self.scale)
     }
