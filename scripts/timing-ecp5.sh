@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The timing study on an FPGA (issue 32, deliverable 1, FPGA part): each exported unit placed
+# The timing study on an FPGA: each exported unit placed
 # and routed on a Lattice LFE5U-85F (ECP5, 84k LUT4s, 156 18x18 multipliers), Fmax from
 # nextpnr's timing analysis. The sibling of scripts/timing-study.sh (OSU 0.18 um ASIC).
 #
