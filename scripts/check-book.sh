@@ -7,6 +7,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 MDBOOK_VERSION=0.5.4
+export PATH="${CARGO_HOME:-$HOME/.cargo}/bin:$PATH"   # where cargo install puts it
 
 if ! command -v mdbook >/dev/null || [ "$(mdbook --version)" != "mdbook v$MDBOOK_VERSION" ]; then
   # Without the `serve` and `watch` features: no web server or file watcher to build.
