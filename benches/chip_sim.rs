@@ -41,6 +41,10 @@ use collision_chip::harness::chip_io::{
     QueryImage, RtlPorts,
 };
 use collision_chip::traversal::Traversal;
+#[path = "common/record.rs"]
+mod record;
+
+use serde_json::json;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::time::Instant;
@@ -297,10 +301,16 @@ fn rate(cycles: u64, s: f64) -> f64 {
     cycles as f64 / s
 }
 
-fn row(sim: &str, q: &str, cycles: u64, s: f64) {
+/// A table row printed, and as data (`record::row`): the chip, the simulator, the query.
+fn row(chip: &str, sim: &str, q: &str, cycles: u64, s: f64) {
     println!(
         "| {sim} | {q} | {cycles} | {s:.4} | {:.0} |",
         rate(cycles, s)
+    );
+    record::row(
+        "chip_sim",
+        json!({ "chip": chip, "simulator": sim, "query": q, "cycles": cycles, "cpu_s": s,
+                "clocks_per_s": rate(cycles, s).round() }),
     );
 }
 
@@ -339,14 +349,10 @@ fn bench_chip(root: &Path, b: &Bench) {
     }
     println!("\n{}:\n\n| simulator | query | cycles | CPU seconds | clocks/s |\n|---|---|---:|---:|---:|", b.chip);
     for (q, &(cycles, by_clock, skipping, golden)) in b.long.iter().zip(&models) {
-        row("cycle model (run_query)", q, cycles, skipping);
-        row("cycle model, clock by clock", q, cycles, by_clock);
-        row(
-            "golden query of the same pairs (its values, no clocks)",
-            q,
-            cycles,
-            golden,
-        );
+        row(b.chip, "cycle model (run_query)", q, cycles, skipping);
+        row(b.chip, "cycle model, clock by clock", q, cycles, by_clock);
+        // Its values and the golden traversal, no clocks.
+        row(b.chip, "golden query of the same pairs", q, cycles, golden);
     }
     let levels = match levels {
         Ok(levels) => levels,
@@ -358,12 +364,26 @@ fn bench_chip(root: &Path, b: &Bench) {
     let mut best: Vec<Option<(&str, f64)>> = vec![None; b.long.len()];
     for ((opt, _), times) in levels.iter().zip(&verilator_best) {
         let empty = times[0];
+        println!("| (Verilator {opt}'s start-up, the root-only query: {empty:.3} s) | | | | |");
         for (((q, &secs), &(cycles, ..)), best) in
             b.long.iter().zip(&times[1..]).zip(&models).zip(&mut best)
         {
             let steady = secs - empty;
-            row(&format!("Verilator {opt}, whole process"), q, cycles, secs);
-            println!("| Verilator {opt}, steady state (less start-up {empty:.3} s) | {q} | {cycles} | {steady:.4} | {:.0} |", rate(cycles, steady));
+            row(
+                b.chip,
+                &format!("Verilator {opt}, whole process"),
+                q,
+                cycles,
+                secs,
+            );
+            // Less its start-up, the root-only query's time.
+            row(
+                b.chip,
+                &format!("Verilator {opt}, steady state"),
+                q,
+                cycles,
+                steady,
+            );
             if best.is_none_or(|(_, s)| steady < s) {
                 *best = Some((*opt, steady));
             }
@@ -390,9 +410,10 @@ fn main() {
     let (cycles, by_clock, skipping, _) = cycle_model(root, SHORT, 20);
     let (_, hdl) = rust_hdl(root, SHORT);
     println!("\nchip_e8m15_k6, short query:\n\n| simulator | query | cycles | CPU seconds | clocks/s |\n|---|---|---:|---:|---:|");
-    row("cycle model (run_query)", SHORT, cycles, skipping);
-    row("cycle model, clock by clock", SHORT, cycles, by_clock);
-    row("rust-hdl 0.46", SHORT, cycles, hdl);
+    let chip = "chip_e8m15_k6";
+    row(chip, "cycle model (run_query)", SHORT, cycles, skipping);
+    row(chip, "cycle model, clock by clock", SHORT, cycles, by_clock);
+    row(chip, "rust-hdl 0.46", SHORT, cycles, hdl);
     println!(
         "\ncycle model (run_query) / rust-hdl: {:.0}x clocks/s on {SHORT}",
         hdl / skipping

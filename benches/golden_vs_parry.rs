@@ -14,6 +14,9 @@
 //! Run: `cargo bench --features parry --bench golden_vs_parry` (add `-- --quick` for fewer
 //! orientations).
 
+#[path = "common/record.rs"]
+mod record;
+
 use collision_chip::chip::config::ChipConfig;
 use collision_chip::chip::reg::Mode;
 use collision_chip::measure::interleaved_best;
@@ -24,6 +27,7 @@ use collision_chip::pose::Pose;
 use collision_chip::pose::{sweep_poses, Sweep};
 use collision_chip::query::{place, Chip};
 use collision_chip::traversal::Traversal;
+use serde_json::json;
 
 fn main() {
     let quick = std::env::args().any(|a| a == "--quick");
@@ -89,6 +93,14 @@ fn main() {
                 per(tri_tests),
                 per(peer_work[0]),
                 per(peer_work[1]),
+            );
+            record::row(
+                "golden_vs_parry",
+                json!({ "mesh": name, "triangles": tris.len(), "distance": d, "pairs": per(pairs),
+                        "golden_us": golden * 1e6, "parry_us": peer * 1e6, "oracle_us": exact * 1e6,
+                        "dop_tests": per(dop_tests), "leaf_pairs": per(tri_tests),
+                        "box_tests": per(peer_work[0]), "peer_leaf_pairs": per(peer_work[1]),
+                        "orientations": orientations }),
             );
         }
     }

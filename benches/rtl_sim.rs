@@ -21,10 +21,14 @@
 //! Prints a Markdown table (simulator, cycles, seconds, cycles/s) and the ratio
 //! Verilator / rust-hdl.
 
+#[path = "common/record.rs"]
+mod record;
+
 use collision_chip::format::Rounding;
 use collision_chip::harness::sim::{parse_dop_vectors, run_dop_vectors, DopVectors};
 use collision_chip::harness::units;
 use collision_chip::rtl::b32;
+use serde_json::json;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::time::Instant;
@@ -90,6 +94,11 @@ fn bench() {
             r.cycles,
             r.secs,
             r.rate()
+        );
+        record::row(
+            "rtl_sim",
+            json!({ "unit": UNIT, "simulator": r.sim, "cycles": r.cycles, "seconds": r.secs,
+                    "clocks_per_s": r.rate().round() }),
         );
     }
     if let [hdl, vl] = &rows[..] {

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# The area study's Yosys cells (docs/ACCURACY.md, "What accuracy costs in area"): exports the
+# The area study's Yosys cells (docs/explanation/accuracy-cost.md, "In time and area"): exports the
 # DOP unit for every k (6, 14, 18, 24, 26), format (binary32, e8m15) and DOP rounding, and
-# TRI_UNIT per format, each also folded (issue 33: TRI_UNIT at a pair every 2 .. 32 clocks,
+# TRI_UNIT per format, each also folded (TRI_UNIT at a pair every 2 .. 32 clocks,
 # the DOP unit at every k and interval the RTL stamps out) (`cchip export-verilog --area`),
 # synthesizes each with scripts/synth.sh (hierarchical, Yosys' generic gates) and writes one
 # row per unit: `unit,cells`.

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""What area costs in time (issue 33; docs/ACCURACY.md, "What area costs in time"): the default
+"""What area costs in time (docs/explanation/accuracy-cost.md, "What area costs in time"): the default
 sweep (vectors/scenes/default.toml: two bunnies, 40 poses, the date05 preset) on the cycle
 model with TRI_UNIT folded for each pair interval ii ([timing] tri_interval; 1: unfolded), on
 each memory: the preset's (DATE'05's DDR2) and the ideal one (a word every clock, one clock

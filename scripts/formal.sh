@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Formal proofs of the chip's control blocks (issue 35): the pair queue
+# Formal proofs of the chip's control blocks: the pair queue
 # (rtl/pair_queue_n4.v), the result port, the memory port and A's triangle cache (top$result,
 # top$mem_port, top$tri_cache of rtl/chip_e8m15_k6.v); the wrappers in scripts/formal/ around the exported Verilog, unchanged, proven with Yosys and yosys-smtbmc (z3) or, where
 # SMT BMC is too slow, Yosys's ABC (`bmc3`). Prints PASS/FAIL per proof (a group of

@@ -8,7 +8,7 @@
 # Logs and reports in target/fpga/<unit>/. Exits non-zero if a tool fails on a unit that fits.
 #
 # scripts/fpga.sh --ecp5 [--timeout SECONDS] [--placer P] [--no-tmdriv] rtl/<unit>.v ...
-#   A Lattice LFE5U-85F instead (a whole chip fits: README, "FPGA"): the ECP5 flow of
+#   A Lattice LFE5U-85F instead (a whole chip fits: docs/guide/timing-and-fpga.md): the ECP5 flow of
 #   scripts/timing-ecp5.sh (YoWASP Yosys, flat synth_ecp5; nextpnr-ecp5 out of context,
 #   router2), its row into docs/figures/timing_ecp5.csv, and one line per unit: LUT4s,
 #   flip-flops, MULT18X18D, DP16KD block RAMs and Fmax. Default timeout 14400 s per tool

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The chip's throughput under each memory model (docs/ARCHITECTURE.md, "Throughput by memory
+"""The chip's throughput under each memory model (docs/explanation/architecture.md, "Throughput by memory
 model"): DOP tests, triangle tests and memory words per clock, where the clocks went, page
 hits, misses and bank conflicts, the bus's busy share (clocks carrying data / clocks) and the
 node and triangle words (records) per query, on the default sweep of each mesh.
@@ -12,7 +12,7 @@ chip: k = 24, binary32, outward DOP rounding, LIFO, all pairs; `[memory]` set to
 Usage: scripts/memory-study.py [--meshes bunny dragon-11k] [--orientations 8] [--timing TOML]
                                [--chip TOML] [--cchip PATH]
   --timing  the scenes' [timing] table, e.g. 'issue_spacing = 1, outstanding = 16, credit = 48,
-            prefetch = 14' (the memory port at full speed: docs/ARCHITECTURE.md, "With
+            prefetch = 14' (the memory port at full speed: docs/explanation/architecture.md, "With
             prefetch"; default: the RTL's parameters after reset)
   --chip    the scenes' [chip] table (default: preset "rtl", the papers' k = 24 binary32
             chip at the RTL's reset values, which --timing overrides), e.g. the RTL chip's

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The timing study on an FPGA (issue 32, deliverable 1, FPGA part): each exported unit placed
+# The timing study on an FPGA: each exported unit placed
 # and routed on a Lattice LFE5U-85F (ECP5, 84k LUT4s, 156 18x18 multipliers), Fmax from
 # nextpnr's timing analysis. The sibling of scripts/timing-study.sh (OSU 0.18 um ASIC).
 #
@@ -28,7 +28,7 @@
 #   --router   nextpnr's router (default router2: it routed the k = 6 DOP unit in 11 minutes;
 #              router1 left 230,000 arcs of the folded TRI_UNIT unrouted after 90)
 #   --placer   nextpnr's placer (default heap; static: nextpnr's electrostatic placer, which
-#              placed the whole chip routably where heap's placements did not: README, "FPGA")
+#              placed the whole chip routably where heap's placements did not: docs/guide/timing-and-fpga.md)
 #   --no-tmdriv  place without timing (routing still reports the Fmax); the row's `placer`
 #              column records both, e.g. `static,no-tmdriv`
 #   MEM_KB     virtual memory limit per tool run (ulimit -v; default none: YoWASP's WebAssembly

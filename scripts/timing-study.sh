@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The timing study (issue 32, deliverable 1, ASIC part): each exported unit's minimum clock
+# The timing study: each exported unit's minimum clock
 # period and area against the OSU 0.18 um standard cells, pre-layout.
 #
 # Needs: yosys, OpenSTA (`sta`) and the OSU 0.18 liberty

@@ -25,7 +25,7 @@
 //! b = [ [[0.25,0.25,0],[0.25,0.25,1],[1,1,1]] ]   # triangles of B, in B's frame
 //! expected = [[0, 0]]                  # exact intersecting pairs (a, b), sorted, closed triangles
 //!
-//! [verdict]         # TRI_UNIT's verdict on every pair per format, derived by hand (docs/ACCURACY.md)
+//! [verdict]         # TRI_UNIT's verdict on every pair per format, derived by hand (docs/explanation/accuracy.md)
 //! binary32 = "uncertain"                # intersecting, separate, uncertain, or a documented
 //! e8m15 = "uncertain"                   # intersecting-or-uncertain / separate-or-uncertain
 //! why = "B's apex is in A's plane: its height is exactly 0"
@@ -69,7 +69,7 @@ pub const FAMILIES: [&str; 13] = [
 pub const VERDICT_FORMATS: [Format; 2] = [Format::BINARY32, Format::REDUCED];
 
 /// TRI_UNIT's verdict on one pair, as a catalogue file states it: derived by hand from the
-/// geometry (docs/ACCURACY.md, "Expected verdicts"), not taken from the chip. The two
+/// geometry (docs/explanation/accuracy.md, "Expected verdicts"), not taken from the chip. The two
 /// "or uncertain" verdicts are for margins too close to the error bound to call by hand.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize)]
 #[serde(rename_all = "kebab-case")]
@@ -263,7 +263,7 @@ pub fn parse(text: &str, name: &str) -> Result<Case, String> {
         ));
     }
     let Some(vt) = f.verdict else {
-        return Err(err("no [verdict] table: every hard case states TRI_UNIT's verdict on its pairs in binary32 and e8m15, and why (docs/ACCURACY.md)".into()));
+        return Err(err("no [verdict] table: every hard case states TRI_UNIT's verdict on its pairs in binary32 and e8m15, and why (docs/explanation/accuracy.md)".into()));
     };
     let verdicts = pair_verdicts(vt, (f.a.len(), f.b.len()), &expected, &|s, m| {
         format!("{name}:{}: {m}", line(s))
@@ -537,7 +537,7 @@ impl Case {
     /// `VERTEX_ORDERS[ob]`. The same closed sets: the answer must not change. A decided
     /// verdict may become uncertain (unless the order is unchanged): a unit-triangle map
     /// that starts at another vertex has another translation, so its terms change size
-    /// (vv-gap-2e-30 is decided only while B's map starts at its apex, docs/ACCURACY.md).
+    /// (vv-gap-2e-30 is decided only while B's map starts at its apex, docs/explanation/accuracy.md).
     pub fn with_vertex_orders(&self, oa: usize, ob: usize) -> Case {
         let (pa, pb) = (VERTEX_ORDERS[oa], VERTEX_ORDERS[ob]);
         let mut c = self.clone();

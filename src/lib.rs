@@ -4,7 +4,7 @@
 //! (exported as Verilog for Verilator, Icarus, Yosys and FPGA tools), and scenes that run
 //! real meshes through them and report what accuracy costs.
 //!
-//! The modules in layers, each importing only those below (docs/ARCHITECTURE.md, "Source
+//! The modules in layers, each importing only those below (docs/explanation/architecture.md, "Source
 //! map"; `tb/layers.rs` checks it): `format`, `pose`, `measure`, `oracle`, `mesh`; [`chip`],
 //! the contract every level agrees on; `dop` (normals, trees); [`golden`] (values, one file
 //! per unit); `traversal`, `query`, `hard_cases`; [`cycle`] (when things happen); [`rtl`]

@@ -20,7 +20,7 @@ use serde::Serialize;
 /// build's temporaries and the process's own share; and the exact oracle's placed chunk of B
 /// with its search tree ([`ORACLE_CHUNK`]). An upper bound of what `cchip run` peaked at
 /// (`/usr/bin/time -v`, the 871k dragon against itself, cycles and accuracy on): 200 bytes
-/// per triangle per object at k = 6, 261 at k = 24 (README, "Limits").
+/// per triangle per object at k = 6, 261 at k = 24 (docs/reference/limits.md).
 pub fn memory_estimate(a: usize, b: usize, k: usize) -> u64 {
     (a + b) as u64 * (160 + 8 * k as u64) + b.min(ORACLE_CHUNK) as u64 * 256
 }

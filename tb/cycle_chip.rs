@@ -505,7 +505,7 @@ fn folded_dop_unit_takes_a_pair_every_interval() {
 /// The RTL configuration's parameters are the RTL's own constants, and these values,
 /// literal: DATE'05 §4.1's DOP pipeline "of 15 stages"; TRI_UNIT §4.2's T.CHECK "pipeline
 /// with 52 clock cycles delay" plus the pair register before it and the result FIFO's write
-/// after it, 54; the rest the RTL's choices (docs/ARCHITECTURE.md): a queue of 2^10 entries,
+/// after it, 54; the rest the RTL's choices (docs/explanation/architecture.md): a queue of 2^10 entries,
 /// a result FIFO of 256, issues two clocks apart, a credit of 16, one request outstanding,
 /// no prefetch, a memory word one clock after its request.
 #[test]
@@ -859,7 +859,7 @@ fn the_longest_waits_are_skipped() {
 /// first verdict is at the output ii/2 + L + 2 clocks after t0: the second direction enters
 /// the shared T.CHECK ii/2 clocks after the first, L is that T.CHECK's latency at II ii/2,
 /// and the result FIFO's write and read registers add 2. L = 58, 61, 85, 89 at II 1, 2, 8,
-/// 16 (the modulo schedules', docs/ARCHITECTURE.md "Folded TRI_UNIT"; the exported Verilog
+/// 16 (the modulo schedules', docs/explanation/architecture.md "Folded TRI_UNIT"; the exported Verilog
 /// runs its vectors at 89 for T.CHECK at II 16 and 95 for TRI_UNIT at ii 16 under Icarus and
 /// Verilator, vectors/tcheck_fold16_b32_rne.hex, tri_unit_fold16_b32_rne.hex). The answer is
 /// golden's, and the same with idle stretches skipped as clock by clock.

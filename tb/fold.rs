@@ -262,7 +262,7 @@ fn fold16_broken_mux_is_caught() {
 }
 
 /// Not a check: writes the folded TRI_UNIT's Verilog at every even II of issue 33 for
-/// synthesis (the time-against-area rows of docs/ARCHITECTURE.md, "Folded TRI_UNIT"; only
+/// synthesis (the time-against-area rows of docs/explanation/architecture.md, "Folded TRI_UNIT"; only
 /// ii = 16 is exported): `cargo test --release --test fold -- --ignored
 /// tri_unit_fold_verilog`, then `nice scripts/synth.sh target/fold-area/*.v`.
 #[test]

@@ -8,7 +8,7 @@
 //!   (none iff there are none);
 //! - the same invariances for the chip;
 //! - TRI_UNIT's verdict on every catalogue pair (intersecting, separate, uncertain) must be
-//!   the one the file states, derived by hand (docs/ACCURACY.md): the chip's final pairs
+//!   the one the file states, derived by hand (docs/explanation/accuracy.md): the chip's final pairs
 //!   alone cannot tell a TRI_UNIT that decides from one that leaves everything to the host.
 //!
 //! Test names: `oracle_*` judge the oracle, `chip_*` the chip, `tri_unit_*` its verdicts.

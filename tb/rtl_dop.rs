@@ -795,7 +795,7 @@ fn dop_units_pass_their_exported_vectors() {
 }
 
 /// Not a check: writes the folded k = 24 DOP units' Verilog (binary32, outward; none is
-/// exported) for synthesis (docs/ARCHITECTURE.md, "Folded DOP unit"): `cargo test --release
+/// exported) for synthesis (docs/explanation/architecture.md, "Folded DOP unit"): `cargo test --release
 /// --test rtl_dop -- --ignored dop_unit_fold_verilog`, then `nice scripts/synth.sh --target
 /// ecp5 target/fold-area/dop_unit_fold*_k24_b32_ru.v`.
 #[test]

@@ -1,5 +1,5 @@
 //! The result port (`rtl::ResultPort`, TRI_UNIT's read side in the chip) alone, clock by
-//! clock against the rule of docs/ARCHITECTURE.md "Cycle semantics" (Results): TRI_UNIT's
+//! clock against the rule of docs/explanation/architecture.md "Cycle semantics" (Results): TRI_UNIT's
 //! head, if intersecting or uncertain, is shown to the host and leaves when the host reads
 //! it; a separate pair leaves unseen; a sure hit is flagged for first-hit mode; `open`
 //! counts the pairs taken whose results have not left. The cycle model has no unit of its

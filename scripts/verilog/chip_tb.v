@@ -10,7 +10,7 @@
 // the next request is accepted max(I, B) edges later at the earliest; or, with +ddr,
 // the DDR SDRAM model of cycle::memory in the chip's clocks (chip::memory::DdrClocks):
 // +banks +page_bytes +bus_bits +burst (beats a burst) +burst_clocks (clocks a burst holds
-// the bus) +hit +miss, a request accepted in any cycle; docs/ARCHITECTURE.md), reads results
+// the bus) +hit +miss, a request accepted in any cycle; docs/explanation/architecture.md), reads results
 // with res_ready high in the cycles that are multiples of +reader=P (default 1: every
 // cycle; cycle::drive::Reader), and prints the trace of cycle::drive::ChipTrace::text:
 //   result <cycle> <A's triangle> <B's triangle> <uncertain>

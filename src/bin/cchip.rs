@@ -92,9 +92,9 @@ enum Cmd {
     /// [-1,1]^3) at several distances, with each k, number format (the DOP datapath's apart
     /// from T.CHECK's too) and DOP rounding, compared with the exact oracle and run on the
     /// cycle model for its clocks (poses on every core); with --area, the Yosys cells of
-    /// each configuration's units. Prints the tables of docs/ACCURACY.md; --plot draws them.
+    /// each configuration's units. Prints the tables of docs/explanation/accuracy-cost.md; --plot draws them.
     Accuracy(AccuracyArgs),
-    /// The papers' figures regenerated (docs/FIGURES.md): DATE'05 Figs. 6-8 on the `date05`
+    /// The papers' figures regenerated (docs/explanation/figures.md): DATE'05 Figs. 6-8 on the `date05`
     /// preset (cycles and queue memory, LIFO vs FIFO; the chip's speed-up, of its time and
     /// end to end) and WSCG'03 Figs. 9-13 (software time, nodes and DOP transforms of the
     /// list and recursive traversals; on the `wscg03` preset the chips' speed-up beside
@@ -215,7 +215,7 @@ struct AccuracyArgs {
     #[arg(long, value_enum, default_value = "osu018")]
     technology: Technology,
     /// Run only the K-th of N shares of the (mesh, pose) items (1 <= K <= N) and print the
-    /// share's sums as JSON, for --merge (a SLURM array job, GNU parallel: README).
+    /// share's sums as JSON, for --merge (a SLURM array job, GNU parallel: docs/guide/study.md).
     #[arg(long, value_name = "K/N", conflicts_with = "merge")]
     shard: Option<accuracy::Shard>,
     /// Combine the shards' JSON files (all N of one study) into the serial run's output:
@@ -223,7 +223,7 @@ struct AccuracyArgs {
     #[arg(long, value_name = "FILES", num_args = 1..)]
     merge: Vec<PathBuf>,
     /// TRI_UNIT folded: the clocks between the pairs it takes, comma separated (1:
-    /// unfolded; 2 to 32, even: one T.CHECK folded for half of it, docs/ARCHITECTURE.md
+    /// unfolded; 2 to 32, even: one T.CHECK folded for half of it, docs/explanation/architecture.md
     /// "Folded TRI_UNIT"). Each runs with each --dop-intervals: what area costs in time.
     #[arg(long, value_delimiter = ',', default_value = "1")]
     tri_intervals: Vec<u32>,

@@ -15,7 +15,7 @@ pub const NODE_CACHE_MAX_LINES: u32 = 256;
 /// at most 2^-2 of the format's largest value (2^(emax - 2)), which needs emax >= 2.
 pub const TCHECK_MIN_EXP_BITS: u32 = 3;
 
-/// How the DOP datapath and the host round (DESIGN.md 1.1, 3).
+/// How the DOP datapath and the host round (DATE'05 Eq. 10; docs/explanation/accuracy.md).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[serde(rename_all = "kebab-case")]
 pub enum DopRounding {
@@ -197,7 +197,7 @@ impl ChipConfig {
         check_k(self.k)?;
         if self.format.tri.exp_bits() < TCHECK_MIN_EXP_BITS {
             return Err(format!(
-                "format {}: T.CHECK's format needs at least {TCHECK_MIN_EXP_BITS} exponent bits (its certificate scales each object by a normal power of two at most a quarter of the format's largest value; docs/ACCURACY.md), not {}: use e{TCHECK_MIN_EXP_BITS}m{} or wider, or a format such as \"{}/binary32\" (DOP/T.CHECK)",
+                "format {}: T.CHECK's format needs at least {TCHECK_MIN_EXP_BITS} exponent bits (its certificate scales each object by a normal power of two at most a quarter of the format's largest value; docs/explanation/accuracy.md), not {}: use e{TCHECK_MIN_EXP_BITS}m{} or wider, or a format such as \"{}/binary32\" (DOP/T.CHECK)",
                 self.format,
                 self.format.tri.exp_bits(),
                 self.format.tri.frac_bits(),

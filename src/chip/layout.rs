@@ -2,7 +2,7 @@
 //! where each object's records start in the memory image, the memory port's destinations,
 //! and D_CNTR's queue entry.
 //!
-//! Memory words, with W the width of the datapath's format (docs/ARCHITECTURE.md, "DOP tree
+//! Memory words, with W the width of the datapath's format (docs/explanation/architecture.md, "DOP tree
 //! and memory image"):
 //! - node word, `1 + k*W + 64` bits: `is_leaf`, d_0..d_{k-1}, then two 32-bit fields:
 //!   the children's ids ([`node_ids`]; inner node) or triangle index and 0 (leaf;
@@ -230,7 +230,7 @@ impl RecordMap {
     /// banks, as `(first, count)`: A's nodes a quarter, each triangle region an eighth (at
     /// least 1), B's nodes the rest (half from 8 banks on). Node records are most of the
     /// traffic; on DATE'05's 8 banks 2/4/1/1 tests more DOP pairs per clock than 4/2/1/1 or
-    /// 2/2/2/2 (and powers of two let the RTL compute addresses with shifts) (docs/ARCHITECTURE.md, "Two
+    /// 2/2/2/2 (and powers of two let the RTL compute addresses with shifts) (docs/explanation/architecture.md, "Two
     /// layouts": measured with `scripts/memory-study.py`).
     pub fn banks(banks: u32) -> [(u32, u32); 4] {
         let (na, t) = (banks / 4, (banks / 8).max(1));
@@ -300,7 +300,7 @@ impl RecordMap {
 
 /// Where a memory word goes: the node words for the DOP unit (A's, B's) and the triangle
 /// words held for TRI_UNIT (A's, B's). Triangle words are asked for first, A's before B's;
-/// node words in the order of their pairs (docs/ARCHITECTURE.md, "Cycle semantics").
+/// node words in the order of their pairs (docs/explanation/architecture.md, "Cycle semantics").
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 #[repr(u8)]
 pub enum Dst {

@@ -126,7 +126,7 @@ pub fn rounding_tag(r: Rounding) -> &'static str {
 /// between the DOP unit's pairs (1: `DopUnit<k>`; ii dividing k: `DopUnit<k>Fold<ii>`, the
 /// cycle model's `dop_interval`) and between TRI_UNIT's (1: `TriUnit`; an even ii:
 /// `TriUnitFold`, the cycle model's `tri_interval`), and rust-hdl's speed on
-/// it in clocks per second on this project's machine (README, `cargo bench --bench
+/// it in clocks per second on this project's machine (docs/explanation/speed.md, `cargo bench --bench
 /// chip_sim`: for estimates before a run). Every chip has DOP lanes rounding outward,
 /// T.CHECK to nearest-even and a triangle cache of [`TRI_CACHE_LINES`] lines (host register
 /// 0x127 picks how many are used). Calls `$m!` with the rows, so that each layer makes

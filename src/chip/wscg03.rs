@@ -28,7 +28,7 @@ impl Architecture {
 /// data bus (§4.1: 256 bits, so an aligned DOP against the tumbled pair takes 4 clocks at
 /// k = 24, binary32), the Memory Controller's buffer (§4.4: a node pair) and the Triangle
 /// Unit's rate (§4.3: a pair every 3 clocks); the rest is our assumption
-/// (docs/ARCHITECTURE.md, "WSCG'03's chip").
+/// (docs/explanation/architecture.md, "WSCG'03's chip").
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct StackParams {

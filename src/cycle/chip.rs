@@ -1,7 +1,7 @@
 //! The chip in the cycle model: D_CNTR's pair queue and pair buffer, the node words asked
 //! for and arrived, the triangle words held for TRI_UNIT, the memory port, the leaf FIFO and
 //! leaf register, the result port, and the end of a query, register for register as
-//! [`rtl::chip`](crate::rtl) builds them (docs/ARCHITECTURE.md, "Cycle semantics"). Each
+//! [`rtl::chip`](crate::rtl) builds them (docs/explanation/architecture.md, "Cycle semantics"). Each
 //! [`step`](Clocked::step) computes the cycle's logic from the registers and inputs, then
 //! clocks every register once.
 

@@ -98,7 +98,7 @@ impl ChipTrace {
     /// Does this trace answer the query as the golden model does? `all` is the golden
     /// all-pairs result of the same query. All pairs: the chip's sure hits are the golden
     /// pairs that were not uncertain, and its uncertain pairs are the golden uncertain
-    /// ones. First hit (docs/ARCHITECTURE.md, "Cycle semantics", Halt): every pair it
+    /// ones. First hit (docs/explanation/architecture.md, "Cycle semantics", Halt): every pair it
     /// reports is one of those (the sure hit that halted it, and what was in flight), and
     /// it reports a sure hit, or only uncertain pairs, exactly when the golden query has
     /// pairs (the host settles the uncertain ones). An overflow is an error: the answer is

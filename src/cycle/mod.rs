@@ -1,7 +1,7 @@
-//! The fast cycle-exact model of the chip (fidelity level "cycle", DESIGN §2): the same
+//! The fast cycle-exact model of the chip (the level "cycle" of docs/introduction.md): the same
 //! microarchitecture as the RTL chip ([`rtl::chip`](crate::rtl)), unit by unit, each unit's
 //! state changing once per clock from the previous clock's registers as
-//! docs/ARCHITECTURE.md "Cycle semantics" says. Values (DOP overlaps, TRI_UNIT verdicts)
+//! docs/explanation/architecture.md "Cycle semantics" says. Values (DOP overlaps, TRI_UNIT verdicts)
 //! come from [`golden`](crate::golden): this model adds *when* things happen, never a
 //! second copy of the arithmetic (as gem5's timing CPUs call `StaticInst::execute`).
 //!

@@ -23,7 +23,7 @@ pub enum Node {
 
 /// Inner nodes hold their k distances; a leaf's are its triangle's, rounded when read
 /// ([`DopTree::dop`]): a leaf DOP per triangle held would be half of a large object's memory
-/// (README, "Limits"), and reading one costs k supports of three vertices.
+/// (docs/reference/limits.md), and reading one costs k supports of three vertices.
 #[derive(Clone, Debug)]
 pub struct DopTree {
     pub k: usize,

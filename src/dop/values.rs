@@ -1,7 +1,7 @@
 //! Values of one number format, held in the narrowest host float that holds each exactly:
 //! f32 for every format of at most 8 exponent and 23 fraction bits (binary32 and the
 //! reduced formats: their normals and subnormals are all f32s), f64 for the rest. The
-//! host's DOP trees and triangle words are most of a query's memory (README, "Limits");
+//! host's DOP trees and triangle words are most of a query's memory (docs/reference/limits.md);
 //! a value read back is the f64 it was stored as, bit for bit.
 
 use crate::format::Format;

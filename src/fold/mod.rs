@@ -4,7 +4,7 @@
 //! for an initiation interval `ii` ([`schedule`]); the schedule becomes registers,
 //! operand multiplexers and a control counter ([`plan`]) that the RTL
 //! (`rtl::tcheck_fold`) builds. Pure functions: the cycle model can take II and latency
-//! from here too (docs/ARCHITECTURE.md, "Folded T.CHECK").
+//! from here too (docs/explanation/architecture.md, "Folded T.CHECK").
 
 pub mod graph;
 pub mod ops;
@@ -26,7 +26,7 @@ pub fn tcheck_plan(ii: usize, binding: plan::Binding) -> Result<plan::Plan, Stri
 
 /// TRI_UNIT folded for initiation interval `ii` (a pair every `ii` clocks): both directions
 /// on one T.CHECK folded for ii / 2, A's edges against U(B) when the pair is taken, B's
-/// against U(A) ii / 2 clocks later (docs/ARCHITECTURE.md, "Folded TRI_UNIT"). The shared
+/// against U(A) ii / 2 clocks later (docs/explanation/architecture.md, "Folded TRI_UNIT"). The shared
 /// T.CHECK's plan; Err for an odd or zero `ii`.
 pub fn tri_unit_plan(ii: usize, binding: plan::Binding) -> Result<plan::Plan, String> {
     if ii < 2 || ii % 2 == 1 {

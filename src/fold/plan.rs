@@ -39,7 +39,7 @@ pub enum Binding {
     /// operand multiplexers select only among registers no other unit reads, which a placer
     /// puts beside it, and what crosses the chip is the units' outputs to the chains' first
     /// registers. Shared chains made every multiplexer reach across the whole register
-    /// file, which nextpnr could not route on the LFE5U-85F (README, "FPGA"). The RTL marks
+    /// file, which nextpnr could not route on the LFE5U-85F (docs/guide/timing-and-fpga.md). The RTL marks
     /// these registers `keep` so that synthesis does not merge the copies back.
     PerReader,
 }
@@ -208,7 +208,7 @@ impl Plan {
 mod tests {
     /// At every II of issue 33 the plan reads only registers that exist, issues at most one
     /// operation per unit and counter value (a table of ii entries), and prints its size
-    /// (docs/ARCHITECTURE.md, "Folded T.CHECK", has the table), under either binding.
+    /// (docs/explanation/architecture.md, "Folded T.CHECK", has the table), under either binding.
     #[test]
     fn tcheck_plans() {
         for (ii, binding) in [1, 2, 4, 8, 16, 32].into_iter().flat_map(|ii| {

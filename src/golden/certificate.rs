@@ -1,11 +1,11 @@
-//! T.CHECK's certificate constants (docs/ACCURACY.md, "T.CHECK's certificate"): the
+//! T.CHECK's certificate constants (docs/explanation/accuracy.md, "T.CHECK's certificate"): the
 //! error factors of the values T.CHECK computes and the constants the chip multiplies
 //! their magnitudes by. The host's error words (per leaf and per pose) use them too.
 
 use crate::format::{Format, Rounding, ScaleConst};
 
 /// The constants of T.CHECK's certificate for a value format and rounding
-/// (docs/ACCURACY.md, "T.CHECK's certificate"). `g_v` is the mapped vertices' error
+/// (docs/explanation/accuracy.md, "T.CHECK's certificate"). `g_v` is the mapped vertices' error
 /// factor (f64, exact to 2^-50); `c_*` are the constants the chip multiplies magnitudes
 /// by, each the smallest [`ScaleConst`] at least its target (times 1 + 2^-40), indexed
 /// like `g_v` by whether the vertices are exact.

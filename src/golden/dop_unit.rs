@@ -16,7 +16,7 @@ use std::cell::Cell;
 /// test, [`forget_rows`](TransformCache::forget_rows)): per lane two f64 thresholds that
 /// provably enclose -q - u_i, u_i the chip's value ([`transformed`]), and u_i itself only
 /// for the lanes whose flag the thresholds leave open. The decisions equal
-/// [`dop_overlap`]'s bit for bit (proof: docs/ACCURACY.md, "The DOP unit in f64"; checked
+/// [`dop_overlap`]'s bit for bit (proof: docs/explanation/accuracy.md, "The DOP unit in f64"; checked
 /// in check mode, [`checking`]); this only saves time.
 pub struct TransformCache<'a> {
     /// A's DOPs last read (a leaf's is computed from its triangle when read, an inner node's
@@ -440,7 +440,7 @@ impl Drop for TransformCache<'_> {
     }
 }
 
-/// A lane's f64 thresholds of its flag (docs/ACCURACY.md, "The DOP unit in f64").
+/// A lane's f64 thresholds of its flag (docs/explanation/accuracy.md, "The DOP unit in f64").
 #[derive(Clone, Copy)]
 struct Estimator {
     max: f64,

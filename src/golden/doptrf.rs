@@ -2,7 +2,7 @@
 //! its operand selection [`klmsel`](super::klmsel).
 //!
 //! Lane i computes, in this order (the order of the 15-stage pipeline, see
-//! docs/ARCHITECTURE.md):
+//! docs/explanation/architecture.md):
 //! ```text
 //! p0 = d_j0 * C_i0    p1 = d_j1 * C_i1    p2 = d_j2 * C_i2      (3 multipliers)
 //! u0 = p0 + p1        u1 = p2 + c_i                              (2 adders)

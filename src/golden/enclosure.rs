@@ -1,5 +1,5 @@
 //! A proven upper enclosure, in f64, of the chip's upward-rounded arithmetic on non-negative
-//! operands (T.CHECK's certificate, DATE'05 §4.2; docs/ACCURACY.md, "Deciding T.CHECK in
+//! operands (T.CHECK's certificate, DATE'05 §4.2; docs/explanation/accuracy.md, "Deciding T.CHECK in
 //! f64"), so that software decides most signs without rounding every bound bit for bit,
 //! and the switch that checks every such decision against the bit-exact path.
 //!
@@ -50,7 +50,7 @@ impl Upper {
 
     /// 2u + u^2 + 2^-51 (u = 2^-F, exact in f64): per unit of its operands' magnitudes, the
     /// chip's rounding of a product and a sum after it (any mode, above underflow) plus
-    /// f64's rounding of the same two operations (docs/ACCURACY.md, "Values in f64").
+    /// f64's rounding of the same two operations (docs/explanation/accuracy.md, "Values in f64").
     #[inline(always)]
     pub fn round_rel(&self) -> f64 {
         self.round_rel
@@ -65,7 +65,7 @@ impl Upper {
 
     /// Whether `x` (an upper bound of a mapped coordinate's magnitude) is at most
     /// 2^(floor(emax / 2) - 3): then no product of two such values, no difference of two
-    /// products and no s can overflow (docs/ACCURACY.md, "Values in f64").
+    /// products and no s can overflow (docs/explanation/accuracy.md, "Values in f64").
     #[inline(always)]
     pub fn value_fits(&self, x: f64) -> bool {
         x <= self.value_limit
@@ -74,7 +74,7 @@ impl Upper {
     /// An upper bound of the distance between the chip's value of a dot product
     /// `(a0 b0 + a1 b1) + (a2 b2 + c)` (its own rounding, any mode) and the same expression
     /// evaluated in f64, from an enclosure `mag` of `|a0 b0| + |a1 b1| + |a2 b2| + |c|`,
-    /// while the chip does not overflow (docs/ACCURACY.md, "Deciding T.CHECK in f64").
+    /// while the chip does not overflow (docs/explanation/accuracy.md, "Deciding T.CHECK in f64").
     #[inline(always)]
     pub fn dot_gap(&self, mag: f64) -> f64 {
         self.add(self.mul(mag, self.gap_rel), self.gap_abs)
@@ -111,7 +111,7 @@ impl Upper {
 }
 
 /// A lower bound of a sum or product of non-negative reals from the f64 result `w` of the
-/// same operation on f64 numbers: the next f64 below `w`, or 0 (docs/ACCURACY.md, "Proving
+/// same operation on f64 numbers: the next f64 below `w`, or 0 (docs/explanation/accuracy.md, "Proving
 /// T.CHECK uncertain"). Round to nearest leaves the exact result above the f64 number just
 /// below its rounded one (else that number would be nearer), underflow and overflow too.
 #[inline(always)]

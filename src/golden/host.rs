@@ -34,7 +34,7 @@ pub struct HostSetup {
     /// B's frame to A's frame: x_A = R x_B + t.
     pub m_ba: Affine,
     /// The error words of M_AB for T.CHECK's certificate, `[beta_m, beta_f]` (rounded
-    /// up; docs/ACCURACY.md, "T.CHECK's certificate"): M_AB* is the exact [R^T | -R^T t]
+    /// up; docs/explanation/accuracy.md, "T.CHECK's certificate"): M_AB* is the exact [R^T | -R^T t]
     /// of the f64 pose, and beta_f also covers the f64 placement of B's vertices into A's
     /// frame (the geometry the oracle judges), seen in B's frame.
     pub beta_ab: [f64; 2],
@@ -237,7 +237,7 @@ impl DopLanes {
 /// `[beta_m, beta_f]` of a frame map `b` (rounded to nearest from the f64 one, whose
 /// translation is within `tr_err` of the ideal) into the leaf's object (scale `s_l`) from
 /// the vertices' object (scale `s_v`), `eta` the placement move of the leaf's vertices (0
-/// for the direction B vs U(A)), rounded up (docs/ACCURACY.md, "T.CHECK's certificate").
+/// for the direction B vs U(A)), rounded up (docs/explanation/accuracy.md, "T.CHECK's certificate").
 fn betas(fmt: Format, b: &Affine, tr_err: f64, eta: f64, s_l: f64, s_v: f64) -> [f64; 2] {
     let cert = Certificate::new(fmt, Rounding::NearestEven);
     let u1 = cert.u1;

@@ -12,7 +12,7 @@ use crate::golden::host::{Affine, TriSide};
 use nalgebra::{Matrix3, Vector3};
 
 /// The triangle word of one leaf (DATE'05 §4.2: the triangle and its M_B), with the two
-/// error words T.CHECK's certificate needs (docs/ACCURACY.md, "T.CHECK's certificate").
+/// error words T.CHECK's certificate needs (docs/explanation/accuracy.md, "T.CHECK's certificate").
 ///
 /// The ideal map is M_B* = [L* | -L* v0] with L* = [v1 - v0, v2 - v0, n]^-1 in exact
 /// arithmetic on the f64 vertices, n being the host's f64 normal (v1 - v0) x (v2 - v0)
@@ -25,7 +25,7 @@ use nalgebra::{Matrix3, Vector3};
 /// about 1 / (triangle size). With the unit normal, z's row of L is about 1 and z is the
 /// distance from the plane, so the bound of z was some 1 / size times too wide: on
 /// dragon-11k 3.1% of the triangle tests were uncertain at binary32, and 0.04% with n
-/// scaled like the edges (`cargo run --release -- accuracy`, docs/ACCURACY.md).
+/// scaled like the edges (`cargo run --release -- accuracy`, docs/explanation/accuracy.md).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct TriWord {
     /// Vertices in the object's frame, rounded to nearest in the chip format.
@@ -125,7 +125,7 @@ impl TriWord {
         // Per unit of the frame's beta_m: M_B's own error, and the value datapath's
         // underflow (3 products on x, 3 more per coordinate, each at most the smallest
         // subnormal); per unit of beta_f: how M_B magnifies the frame's error and B's
-        // placement (docs/ACCURACY.md). Each term in units of 1 / length, so that scaling
+        // placement (docs/explanation/accuracy.md). Each term in units of 1 / length, so that scaling
         // both objects by 2^s scales these words by 2^-s and the bounds not at all.
         let eta_r = fmt.min_positive_subnormal();
         let alpha_m = a_lin + a_tr / scale + 3.0 * eta_r + 6.0 * eta_r / scale;
@@ -207,7 +207,7 @@ impl ObjectImage {
 
     /// Triangle `t`'s word. Made from the f64 triangle when read, as the host made it
     /// for the memory image: a word per triangle held would be most of a large object's
-    /// memory (README, "Limits").
+    /// memory (docs/reference/limits.md).
     pub fn tri(&self, t: u32) -> TriWord {
         TriWord::new(&self.geometry()[t as usize], self.tri_format, self.scale)
     }
@@ -268,7 +268,7 @@ pub fn image_bases(a: &ObjectImage, b: &ObjectImage) -> [u32; 4] {
 /// An object's scale S for T.CHECK's certificate: the power of two at or above its largest
 /// |coordinate|, kept within the normal range of `fmt` (down to 2^emin, up to 2^-2 of its
 /// largest value). The input-error terms are measured against `|x| + |y| + |z| + S`, so
-/// that they scale with the objects (docs/ACCURACY.md).
+/// that they scale with the objects (docs/explanation/accuracy.md).
 pub fn object_scale(tris: &[Tri], fmt: Format) -> f64 {
     let x = tris
         .iter()

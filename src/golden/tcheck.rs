@@ -7,7 +7,7 @@
 //! bound `(7 + 56 eps) eps` times a permanent), plus input errors that the host folds into
 //! two per-leaf and two per-pose words. A pair is reported intersecting only if some edge
 //! surely crosses, separate only if every edge surely misses, and uncertain otherwise
-//! (docs/ACCURACY.md, "T.CHECK's certificate", derives every constant).
+//! (docs/explanation/accuracy.md, "T.CHECK's certificate", derives every constant).
 //!
 //! T.CHECK maps triangle A's vertices into the space where triangle B is the unit
 //! triangle U = {(u, v, 0) : u, v >= 0, u + v <= 1} and tests A's three edges against U.
@@ -184,7 +184,7 @@ pub fn stage1_hi(
     }
 }
 
-/// One mapped vertex as [`decide`] sees it (docs/ACCURACY.md, "Values in f64"): each
+/// One mapped vertex as [`decide`] sees it (docs/explanation/accuracy.md, "Values in f64"): each
 /// coordinate's f64 value `c`, within `gap` of the chip's; `abs` >= both |c| and the chip
 /// value's magnitude; and enclosures of the certificate's bounds, each widened by what the
 /// f64 values may be off: `tz` >= E_z + gap_z, `ep` >= E + gap (x, y), `rz` >= E'_z +
@@ -213,7 +213,7 @@ pub enum Decision {
     Unfit,
 }
 
-/// T.CHECK's verdict decided in f64 (docs/ACCURACY.md, "Deciding T.CHECK in f64" and
+/// T.CHECK's verdict decided in f64 (docs/explanation/accuracy.md, "Deciding T.CHECK in f64" and
 /// "Values in f64"): a verdict only where it equals `edges(..).result()` of the same inputs;
 /// else the caller tries [`settle`], then the bit-exact path. Every value the chip computes
 /// after stage 1 (the mapped vertices, a, b, r_z, s) is taken in f64 with a proven gap to
@@ -318,7 +318,7 @@ pub fn decide<const EXACT: bool>(
     }
 }
 
-/// [`decide`]'s open case taken further (docs/ACCURACY.md, "Proving T.CHECK uncertain"):
+/// [`decide`]'s open case taken further (docs/explanation/accuracy.md, "Proving T.CHECK uncertain"):
 /// with lower bounds of the chip's bounds (stage 1's magnitudes from below: `mag_lo`,
 /// [`mag_lo`]), a sign whose value lies provably within its bound is unknown on the chip.
 /// The set of verdicts that holds the chip's (one member: proven); `None`: a bound may have
@@ -429,7 +429,7 @@ fn sign_set(x: f64, hi: f64, within: Option<(f64, f64)>) -> Maybe {
 /// enclosure of each one's bound plus its gap (the same expression tree as the chip's bound,
 /// on the widened vertex bounds). An edge's signs are taken in the order P_z, Q_z, r_z, a,
 /// b, s and the rest skipped once both directions' conjunctions are surely false
-/// (docs/ACCURACY.md, "Deciding T.CHECK in f64": any sign then gives the same). The edges
+/// (docs/explanation/accuracy.md, "Deciding T.CHECK in f64": any sign then gives the same). The edges
 /// left are skipped at a sure crossing, and with `lo` once what their z signs let them give
 /// can no longer change the verdict's OR with the other direction's (`lo`'s second member,
 /// if proven; else false), or make that OR one member ("Proving T.CHECK uncertain",

@@ -536,7 +536,7 @@ pub fn write_vectors(dir: &Path) -> std::io::Result<Vec<String>> {
 }
 
 /// The units whose Yosys cells the area study counts (scripts/area-study.sh,
-/// docs/ACCURACY.md): the DOP unit for every k, format and DOP rounding the RTL builds (those
+/// docs/explanation/accuracy.md): the DOP unit for every k, format and DOP rounding the RTL builds (those
 /// in rtl/ are the same Verilog; the others are the same macro at another k or rounding), and
 /// TRI_UNIT per format.
 fn area_units() -> Vec<(String, Text)> {

@@ -495,7 +495,7 @@ pub fn merge(files: Vec<ShardFile>) -> Result<(Plan, Vec<Row>), String> {
     Ok((plan, rows))
 }
 
-/// The Markdown table of docs/ACCURACY.md; with `area`, the cells of each configuration's
+/// The Markdown table of docs/explanation/accuracy.md; with `area`, the cells of each configuration's
 /// DOP unit and TRI_UNIT ("-" where the RTL is not built in its format). The times are per
 /// query: the chip's at its period, the host's measured, end to end; um^2 where the timing
 /// table measured both units.

@@ -1,5 +1,5 @@
 //! `cchip figures`: the papers' figures regenerated on this project's models, each as SVG and
-//! PNG with its data beside it as CSV and JSON (docs/FIGURES.md reads them).
+//! PNG with its data beside it as CSV and JSON (docs/explanation/figures.md reads them).
 //!
 //! Protocol (WSCG'03 §5, DATE'05 §5): each mesh against a copy of itself, both scaled into
 //! [-1,1]^3, B tumbling through seeded orientations at each centre distance along x, from
@@ -59,7 +59,7 @@ pub struct Plan {
 }
 
 impl Plan {
-    /// The figures of docs/FIGURES.md.
+    /// The figures of docs/explanation/figures.md.
     pub fn full() -> Plan {
         Plan {
             meshes: vec!["teapot".into(), "bunny".into(), "dragon-11k".into()],

@@ -1,7 +1,7 @@
 //! The collision chip (DATE'05 Fig. 4): D_CNTR, the memory port, the DOP unit and
 //! TRI_UNIT joined into one block that runs whole queries, stamped out per format by
 //! `chip!`. Host side, memory model and drivers: [`chip_io`](crate::harness::chip_io); cycle
-//! semantics: docs/ARCHITECTURE.md, "Cycle semantics".
+//! semantics: docs/explanation/architecture.md, "Cycle semantics".
 //!
 //! Its sub-blocks: D_CNTR with its pair queue ([`DCntr`](crate::rtl::d_cntr::DCntr),
 //! rtl/d_cntr.rs), the memory port (`MemoryPort`, rtl/memory_port.rs), the DOP unit with the
@@ -78,7 +78,7 @@ macro_rules! chip {
         ///   15:0, B's in 31:16), `res_uncertain` (0: intersecting; 1: the host decides);
         ///   in `res_ready`. Separate pairs are not shown.
         ///
-        /// Structure and timing, clock by clock: docs/ARCHITECTURE.md, "Cycle semantics".
+        /// Structure and timing, clock by clock: docs/explanation/architecture.md, "Cycle semantics".
         #[derive(LogicBlock)]
         pub struct CollisionChip<const N: usize, const NP1: usize, const NM1: usize> {
             pub clock: Signal<In, Clock>,

@@ -593,7 +593,7 @@ const _: () = assert!(W == 67);
 /// unit, and the child entries its results push. Golden: the entry and issue logic of
 /// [`cycle::chip`](crate::cycle::chip) (no unit there of its own: it shares its state with
 /// the memory port and the held words, so it is checked in the chip, tb/rtl_chip.rs);
-/// cycle semantics: docs/ARCHITECTURE.md, "Cycle semantics" (Pop, Issue, DOP result).
+/// cycle semantics: docs/explanation/architecture.md, "Cycle semantics" (Pop, Issue, DOP result).
 ///
 /// Ports:
 ///

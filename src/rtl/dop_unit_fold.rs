@@ -160,7 +160,7 @@ macro_rules! dop_unit_fold {
     // direction p L + l in pass p (kernel indexes are loop variables and literals, evaluated
     // when the Verilog is written).
     (@unit $W:tt, $name:ident, $top:ident, $K:tt, $L:tt, $P:tt, $H:tt) => {
-        /// The DOP unit folded (docs/ARCHITECTURE.md, "Folded DOP unit"): [`DopUnit6`]'s
+        /// The DOP unit folded (docs/explanation/architecture.md, "Folded DOP unit"): [`DopUnit6`]'s
         /// function and ports, bit for bit [`dop_overlap`](crate::golden::dop_unit::dop_overlap),
         /// on fewer DOPTRF lanes, a node pair taken every ii clocks, plus `in_ready`.
         ///

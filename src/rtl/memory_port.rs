@@ -12,7 +12,7 @@ macro_rules! memory_port {
         /// order. Golden: [`cycle::memory_port::MemPort`](crate::cycle::memory_port::MemPort) (the
         /// requests outstanding, whose destinations here are the tag ring `tags`) and the
         /// node-word lists of [`cycle::chip`](crate::cycle::chip) (`to_ask`, `words`); cycle
-        /// semantics: docs/ARCHITECTURE.md, "Cycle semantics" (Node words, Memory requests).
+        /// semantics: docs/explanation/architecture.md, "Cycle semantics" (Node words, Memory requests).
         ///
         /// * The ask list (`ask_w`, [`ASK_LIST`](crate::chip::rtl::ASK_LIST) words `{pair number
         ///   mod 32, B, id}`): a `pop` of D_CNTR appends the node words its pairs fetch

@@ -210,7 +210,7 @@ pub mod e8m15_b32 {
 
 /// The k = 6 e8m15 chip with its TRI_UNIT folded (issue 33): e8m15's DOP unit and e8m15's
 /// `TriUnitFold`, a pair every `ChipKind::K6E8m15Fold16.tri_interval()` = 16 clocks on one
-/// T.CHECK folded for 8 (docs/ARCHITECTURE.md, "Folded TRI_UNIT").
+/// T.CHECK folded for 8 (docs/explanation/architecture.md, "Folded TRI_UNIT").
 pub mod e8m15_fold16 {
     use super::e8m15::{DopUnit6, TriUnitFold};
     use crate::chip::rtl::ChipKind;
@@ -244,7 +244,7 @@ pub mod e8m15_fold16 {
 /// LFE5U-85F: the DOP unit on one DOPTRF lane, a pair every
 /// `ChipKind::K6E8m15Dop6Tri32.dop_interval()` = 6 clocks (`DopUnit6Fold6`, its `in_ready`
 /// gating D_CNTR's issue), and TRI_UNIT a pair every `tri_interval()` = 32 clocks on one
-/// T.CHECK folded for 16 (docs/ARCHITECTURE.md, "A chip on the folded DOP unit").
+/// T.CHECK folded for 16 (docs/explanation/architecture.md, "A chip on the folded DOP unit").
 pub mod e8m15_dop6_tri32 {
     use super::e8m15::{DopFold, FoldedDop, TriUnitFold};
     use crate::chip::rtl::ChipKind;

@@ -286,7 +286,7 @@ macro_rules! tcheck_fold {
             /// T.CHECK folded onto shared units by a [`Plan`](crate::fold::plan::Plan): one
             /// triangle pair every `ii` clocks, taken while the control counter is 0 (it stays 0
             /// until the first pair, then runs: pairs come ii, 2 ii, ... clocks after it), its results at the outputs `latency` clocks
-            /// later with `valid_out` high for one clock (docs/ARCHITECTURE.md, "Folded
+            /// later with `valid_out` high for one clock (docs/explanation/architecture.md, "Folded
             /// T.CHECK"). Bit for bit [`TCheck`]'s values and verdicts. Ports: [`TCheck`]'s.
             TCheckFold {
                 plan: $crate::rtl::tcheck_fold::Fixed<$crate::fold::plan::Plan>,

@@ -127,7 +127,7 @@ macro_rules! tri_unit_fold {
     ($W:tt) => {
         $crate::rtl::tri_unit::tri_unit_ports! {
             $W,
-            /// TRI_UNIT folded (docs/ARCHITECTURE.md, "Folded TRI_UNIT"): [`TriUnit`]'s ports and
+            /// TRI_UNIT folded (docs/explanation/architecture.md, "Folded TRI_UNIT"): [`TriUnit`]'s ports and
             /// verdicts, bit for bit golden [`tri_unit`](crate::golden::tri_unit::tri_unit), with
             /// both directions on one [`TCheckFold`] folded for ii / 2 (its plan,
             /// [`crate::fold::tri_unit_plan`]). A control counter runs 0 .. ii-1 from the first

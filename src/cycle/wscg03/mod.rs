@@ -6,7 +6,7 @@
 //! come from the golden model (the list traversal's overlaps, TRI_UNIT's verdicts): this
 //! model adds only *when*. It is an event model in program order (each unit keeps the
 //! clock it is free; the Memory Controller asks for words in order), not clocked register
-//! by register: there is no RTL of it to match (docs/ARCHITECTURE.md, "WSCG'03's chip").
+//! by register: there is no RTL of it to match (docs/explanation/architecture.md, "WSCG'03's chip").
 
 pub mod dop_unit;
 pub mod stack_engine;

@@ -1,8 +1,8 @@
 //! T.CHECK (DATE'05 §4.2, Eqs. 8, 9, 11-13) with its certificate, stamped out per format
 //! by `tcheck!`: the value datapath of the paper's five macro stages and, beside it, the
 //! magnitudes and error bounds that decide which signs are sure (golden
-//! [`golden::tcheck`](crate::golden::tcheck), docs/ARCHITECTURE.md "T.CHECK in RTL",
-//! docs/ACCURACY.md "T.CHECK's certificate").
+//! [`golden::tcheck`](crate::golden::tcheck), docs/explanation/architecture.md "T.CHECK in RTL",
+//! docs/explanation/accuracy.md "T.CHECK's certificate").
 
 mod dot;
 mod edge;
