@@ -97,7 +97,7 @@ impl Params {
 
     /// The folded DOP unit runs k / `dop_interval` lanes: Err unless the interval divides k.
     pub fn check_dop_interval(&self, k: usize) -> Result<(), String> {
-        if k % self.dop_interval.max(1) as usize != 0 {
+        if !k.is_multiple_of(self.dop_interval.max(1) as usize) {
             return Err(format!("dop_interval {} does not divide k = {k} (the folded DOP unit runs k / dop_interval lanes): pick a divisor of k", self.dop_interval));
         }
         Ok(())
@@ -123,7 +123,7 @@ impl Params {
         }
         if !(self.tri_interval == 1
             || (2..=Params::MAX_TRI_INTERVAL).contains(&self.tri_interval)
-                && self.tri_interval % 2 == 0)
+                && self.tri_interval.is_multiple_of(2))
         {
             return Err(format!(
                 "tri_interval must be 1 (TRI_UNIT unfolded) or an even number of clocks from 2 to {} (the folded TRI_UNIT runs its two directions on one T.CHECK at tri_interval / 2), not {}",

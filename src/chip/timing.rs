@@ -231,14 +231,17 @@ fn stand_in(cfg: &ChipConfig, folds: Folds, unit: &str) -> Option<String> {
     }
 }
 
+/// A unit and its measured row: (the row's name, its period) or None.
+type UnitRow = (String, Option<(String, f64)>);
+
 /// A chain's levels down to its first with a measured row (a folded unit's stand-in counts),
-/// each unit with its row: (the row's name, its period) or None.
+/// each unit with its row.
 fn largest_measured(
     table: &Table,
     cfg: &ChipConfig,
     folds: Folds,
     chain: Vec<Vec<String>>,
-) -> Vec<Vec<(String, Option<(String, f64)>)>> {
+) -> Vec<Vec<UnitRow>> {
     let row = |u: &String| {
         let own = table.periods.get(u).map(|&ns| (u.clone(), ns));
         own.or_else(|| {

@@ -115,6 +115,12 @@ macro_rules! tri_cache {
                 }
             }
         }
+
+        impl Default for TriCache {
+            fn default() -> Self {
+                Self::new()
+            }
+        }
     };
 }
 pub(crate) use tri_cache;
