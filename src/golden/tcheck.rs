@@ -326,7 +326,7 @@ pub fn decide<const EXACT: bool>(
 /// [`mag_lo`]), a sign whose value lies provably within its bound is unknown on the chip.
 /// The set of verdicts that holds the chip's (one member: proven); `None`: a bound may have
 /// overflowed. `other`: the other direction's verdict, if proven (TRI_UNIT's result is the
-/// OR of the two: [`edges_hi`] stops once that OR is decided or cannot be).
+/// OR of the two: `edges_hi` stops once that OR is decided or cannot be).
 pub fn settle(
     cert: &Certificate,
     up: &Upper,

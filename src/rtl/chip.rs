@@ -41,25 +41,21 @@ macro_rules! chip {
         /// Ports (`W` = word width of the DOP unit's or TRI_UNIT's format, `MW` = memory word):
         ///
         /// * host registers: in `host_we`, `host_addr[10]`, `host_data[32]`, written on
-        ///   the rising edge. `0x000 + a`: the DOP unit's setup word `a` (C, c, D.KLMSEL
-        ///   control, the DOP unit's); `0x100 + a`: TRI_UNIT's (frame maps, bounds, eta,
-        ///   [`TriUnit`]); `0x120`: mode, bit 0 LIFO, bit 1 first hit, bit 2 the `records`
-        ///   layout (node ids `2 record + slot`, a node record two node words, a leaf's
-        ///   triangles fetched by their records; only if `RW` is `2 NW`); `0x121`: the root
-        ///   pair, A's node in bits 15:0, B's in 31:16; `0x122 .. 0x125`: the word
-        ///   addresses of A's node 0, B's node 0, A's triangle 0, B's triangle 0; `0x126`:
-        ///   the memory port, bits 3:0 the node pairs prefetched (at most
-        ///   [`PORT_PREFETCH`](crate::chip::rtl::PORT_PREFETCH)), 7:4 the requests outstanding at
-        ///   most, less one, 8 an issue every clock (the queue's second write port takes a
-        ///   result's two child entries at once), 14:9 the credit of DOP tests in flight
-        ///   plus waiting leaf pairs (0: [`CREDIT`](crate::chip::rtl::CREDIT)); reset: 0, one
-        ///   request, no prefetch,
-        ///   issues two clocks apart, credit 16; `0x127`: A's triangle cache, bits 6:0 its
-        ///   lines less one (a power of two up to
-        ///   [`TRI_CACHE_LINES`](crate::chip::rtl::TRI_CACHE_LINES); reset: 0, one line);
-        ///   `0x128`: where the records lie, bits 19:0
-        ///   ([`RecordMap::word`](crate::chip::layout::RecordMap::word); reset: 0, the image
-        ///   in order).
+        ///   the rising edge, at the addresses and with the fields of [`crate::chip::reg`]:
+        ///   `0x000 + a` the DOP unit's setup word `a` (C, c, D.KLMSEL control, the DOP
+        ///   unit's); [`TRI_SETUP`](crate::chip::reg::TRI_SETUP)` + a` TRI_UNIT's (frame
+        ///   maps, bounds, eta, `TriUnit`); then [`MODE`](crate::chip::reg::MODE) (its
+        ///   `records` bit only if `RW` is `2 NW`: node ids `2 record + slot`, a node record
+        ///   two node words, a leaf's triangles fetched by their records),
+        ///   [`ROOT`](crate::chip::reg::ROOT), the image's word addresses
+        ///   [`BASE_NA`](crate::chip::reg::BASE_NA) to [`BASE_TB`](crate::chip::reg::BASE_TB),
+        ///   the memory port [`PORT`](crate::chip::reg::PORT) (prefetch at most
+        ///   [`PORT_PREFETCH`](crate::chip::rtl::PORT_PREFETCH); an issue every clock because
+        ///   the queue's second write port takes a result's two child entries at once; reset:
+        ///   one request, no prefetch, issues two clocks apart, credit 16), A's triangle cache
+        ///   [`TRI_CACHE`](crate::chip::reg::TRI_CACHE) (a power of two up to
+        ///   [`TRI_CACHE_LINES`](crate::chip::rtl::TRI_CACHE_LINES)) and the record map
+        ///   [`MAP`](crate::chip::reg::MAP).
         /// * `start` (in): begins a query with the registers as written (ignored while
         ///   `busy`); `busy`, `done` (high from the query's end to the next start),
         ///   `overflow` (the pair queue was full when a child entry came: the query ended
