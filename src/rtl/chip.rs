@@ -63,7 +63,7 @@ macro_rules! chip {
         ///   counters `dop_tests`, `tri_tests`, `node_fetches`, `tri_fetches`.
         /// * memory: out `mem_req_valid`, `mem_req_addr[24]` (a word address), in
         ///   `mem_req_ready`; in `mem_resp_valid`, `mem_resp_data[MW]`: the words in
-        ///   request order. At most `0x126[7:4] + 1` requests are outstanding and the chip
+        ///   request order. At most [`PORT`](crate::chip::reg::PORT)`[7:4] + 1` requests are outstanding and the chip
         ///   takes every response at the rising edge it is valid (it has room for every word
         ///   it asks for, so the response has no ready).
         ///   Node word: bit 0 leaf, `d_i` at `1 + i W`, then two 32-bit fields (children,
@@ -116,7 +116,7 @@ macro_rules! chip {
             stop: DFF<Bit>,
             halt: Signal<Local, Bit>,
             start_q: Signal<Local, Bit>,
-            // ---- the memory port's limits (host register 0x126)
+            // ---- the memory port's limits (host register reg::PORT)
             port_pf: DFF<Bits<4>>,
             port_out: DFF<Bits<4>>,
             port_one: DFF<Bit>,
@@ -323,7 +323,8 @@ macro_rules! chip {
                 dff_setup!(self, clock, tc_mask, tb_ok, tb_id, tb_word);
                 dff_setup!(self, clock, cnt_dop, cnt_tri, cnt_nf, cnt_tf);
                 clock!(self, clock, d_cntr, mem_port, dop, side, leaf_fifo, tri_cache, tri_unit, result);
-                // ---- host registers and the units' setup ports
+                // ---- host registers and the units' setup ports: the DOP unit's words below
+                // 0x100, TRI_UNIT's from reg::TRI_SETUP (address bits 9:5 = 8)
                 self.dop.load_en.next = self.host_we.val() & (self.host_addr.val().get_bits::<2>(8) == 0);
                 self.dop.load_addr.next = self.host_addr.val().get_bits::<8>(0);
                 self.dop.load_data.next = self.host_data.val().get_bits::<$WD>(0);
@@ -331,35 +332,46 @@ macro_rules! chip {
                 self.tri_unit.load_addr.next = self.host_addr.val().get_bits::<5>(0);
                 self.tri_unit.load_data.next = self.host_data.val().get_bits::<$WT>(0);
                 if self.host_we.val() {
+                    // The addresses of chip::reg, as literals: #[hdl_gen] translates a path
+                    // (reg::MODE) to a Verilog signal name, not to its value.
+                    // reg::MODE
                     if self.host_addr.val() == 0x120 {
                         self.mode_lifo.d.next = self.host_data.val().get_bit(0);
                         self.mode_first.d.next = self.host_data.val().get_bit(1);
                         self.mode_rec.d.next = self.host_data.val().get_bit(2);
                     }
+                    // reg::ROOT
                     if self.host_addr.val() == 0x121 {
                         self.root.d.next = self.host_data.val();
                     }
+                    // reg::BASE_NA
                     if self.host_addr.val() == 0x122 {
                         self.base_na.d.next = self.host_data.val().get_bits::<24>(0);
                     }
+                    // reg::BASE_NB
                     if self.host_addr.val() == 0x123 {
                         self.base_nb.d.next = self.host_data.val().get_bits::<24>(0);
                     }
+                    // reg::BASE_TA
                     if self.host_addr.val() == 0x124 {
                         self.base_ta.d.next = self.host_data.val().get_bits::<24>(0);
                     }
+                    // reg::BASE_TB
                     if self.host_addr.val() == 0x125 {
                         self.base_tb.d.next = self.host_data.val().get_bits::<24>(0);
                     }
+                    // reg::PORT
                     if self.host_addr.val() == 0x126 {
                         self.port_pf.d.next = self.host_data.val().get_bits::<4>(0);
                         self.port_out.d.next = self.host_data.val().get_bits::<4>(4);
                         self.port_one.d.next = self.host_data.val().get_bit(8);
                         self.port_credit.d.next = self.host_data.val().get_bits::<6>(9);
                     }
+                    // reg::TRI_CACHE
                     if self.host_addr.val() == 0x127 {
                         self.tc_mask.d.next = self.host_data.val().get_bits::<7>(0);
                     }
+                    // reg::MAP
                     if self.host_addr.val() == 0x128 {
                         self.map.d.next = self.host_data.val().get_bits::<20>(0);
                     }
