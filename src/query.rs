@@ -18,7 +18,7 @@ use serde::Serialize;
 /// `k` DOP directions: per triangle of either object, the f64 geometry (72), an inner
 /// node's k distances (at most 8 bytes each), the tree's links, node ids and records, the
 /// build's temporaries and the process's own share; and the exact oracle's placed chunk of B
-/// with its search tree ([`ORACLE_CHUNK`]). An upper bound of what `cchip run` peaked at
+/// with its search tree (`ORACLE_CHUNK`). An upper bound of what `cchip run` peaked at
 /// (`/usr/bin/time -v`, the 871k dragon against itself, cycles and accuracy on): 200 bytes
 /// per triangle per object at k = 6, 261 at k = 24 (docs/reference/limits.md).
 pub fn memory_estimate(a: usize, b: usize, k: usize) -> u64 {
@@ -203,7 +203,7 @@ const ORACLE_CHUNK: usize = 1 << 18;
 
 /// The exact answer for B placed by `pose` against A: every intersecting pair of the f64
 /// geometry (the oracle's exact predicates), sorted. B is placed and searched a chunk of
-/// [`ORACLE_CHUNK`] triangles at a time.
+/// `ORACLE_CHUNK` triangles at a time.
 pub fn exact_pairs(a: &[Tri], b: &[Tri], pose: &Pose) -> Vec<(u32, u32)> {
     exact_pairs_by(a, b, pose, ORACLE_CHUNK)
 }

@@ -277,7 +277,7 @@ fn presets_are_the_papers_values() {
             ..papers
         }
     );
-    // the memory port at full speed: an issue every clock, register 0x126's most requests
+    // the memory port at full speed: an issue every clock, register `reg::PORT`'s most requests
     // outstanding (16) and pairs prefetched (14), a credit of 48; the RTL's reset point
     // otherwise (tb/cycle_chip.rs: `rtl_point_is_the_rtl`)
     let full = |memory, clock_ps| Params {

@@ -41,7 +41,7 @@ struct Case {
     golden: QueryResult,
     order: Order,
     mode: Mode,
-    /// The RTL chip's parameters: its memory and memory port (register 0x126).
+    /// The RTL chip's parameters: its memory and memory port (register `reg::PORT`).
     params: Params,
     reader: Reader,
 }
@@ -331,7 +331,7 @@ fn vcd_results(path: &std::path::Path) -> Vec<(u64, u32, u32, bool)> {
 }
 
 /// The papers' chip (k = 24 DOPTRF lanes, binary32 throughout) on a first-hit query with
-/// the memory port at full speed (register 0x126: 3 pairs ahead, 4 requests outstanding, an
+/// the memory port at full speed (register `reg::PORT`: 3 pairs ahead, 4 requests outstanding, an
 /// issue every clock, a credit of 24; a memory latency of 8): node words asked for pairs
 /// before they reach the DOP unit, several in flight, responses into the node-word FIFOs, a
 /// DOP result's two child entries pushed in one clock; every signal equal to the cycle
@@ -348,7 +348,7 @@ fn k24_sphere_lifo_first() {
     compare_with_expect(q.name, tr);
 }
 
-/// The papers' chip reading the `records` layout (register 0x120 bit 2; issue 31): the
+/// The papers' chip reading the `records` layout (register `reg::MODE` bit 2; issue 31): the
 /// two children of a node in one 2,048-bit record (a pair reads its node word from the slot
 /// its id's bit 0 names, and fetches a record only if the pair before used another), a
 /// leaf's triangle fetched by its record (triangles in leaf order) through a 2-line cache;
@@ -389,7 +389,7 @@ fn k24_rec_patch_fifo_all() {
 }
 
 /// The `records` layout on a DDR of 8 banks (2 records a page), its regions in banks of
-/// their own (A's nodes 2, B's 4, the triangles 1 each: register 0x128, the memory port's
+/// their own (A's nodes 2, B's 4, the triangles 1 each: register `reg::MAP`, the memory port's
 /// shifts and masks, `chip::layout::RecordMap`): the same query as
 /// [`k24_rec_patch_fifo_all`], every signal (the request addresses too) equal to the cycle
 /// model's, clock by clock, and the answer the golden model's.
@@ -436,7 +436,7 @@ fn k24_rec_patch_fifo_ddr_banks() {
     case.check(tr);
 }
 
-/// A's triangle cache with 4 lines (register 0x127): triangle words fetched only when
+/// A's triangle cache with 4 lines (register `reg::TRI_CACHE`): triangle words fetched only when
 /// their line holds another, a fill bypassed to the leaf pair that reads its line in the
 /// next clock; in lockstep with the cycle model, and in FIFO order A's and B's fetches are
 /// the golden traversal's (`Case::check`), fewer than with the single word held.

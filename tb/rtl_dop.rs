@@ -274,8 +274,8 @@ fn setup_words(fmt: Format, j: &[[u8; 3]], cmat: &[[f64; 3]], cvec: &[f64]) -> V
     let mut w = vec![];
     for i in 0..j.len() {
         let a = 8 * i as u64;
-        for l in 0..3 {
-            w.push((a + l as u64, fmt.to_bits(cmat[i][l])));
+        for (l, &c) in cmat[i].iter().enumerate() {
+            w.push((a + l as u64, fmt.to_bits(c)));
         }
         w.push((a + 3, fmt.to_bits(cvec[i])));
         w.push((

@@ -419,6 +419,8 @@ struct TriJob {
     golden: Vec<TriResult>,
 }
 
+// most steps are pairs: boxing the large variant would save no memory
+#[allow(clippy::large_enum_variant)]
 #[derive(Clone, Copy)]
 enum Step {
     Load(u64, u64),

@@ -10,6 +10,7 @@ use collision_chip::chip::rtl::ChipKind;
 use collision_chip::chip::wscg03::StackParams;
 use collision_chip::cycle::wscg03::{run_query, ListRecord};
 use collision_chip::cycle::MAX_CYCLES;
+use collision_chip::dop::tree::Tri;
 use collision_chip::format::{Format, Rounding};
 use collision_chip::mesh::soup;
 use collision_chip::pose::Pose;
@@ -125,7 +126,7 @@ proptest! {
 }
 
 /// Two unit squares, one in the plane z = 0, one in y = 0 through it (two triangles each).
-fn squares() -> (Vec<[Point3<f64>; 3]>, Vec<[Point3<f64>; 3]>) {
+fn squares() -> (Vec<Tri>, Vec<Tri>) {
     let p = Point3::new;
     let flat = vec![
         [p(0., 0., 0.), p(1., 0., 0.), p(1., 1., 0.)],

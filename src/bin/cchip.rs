@@ -1,6 +1,10 @@
 //! `cchip`: run collision queries and scenes on the golden model and the cycle model of the
 //! collision chip (and, for small meshes, its RTL in rust-hdl).
 
+// The options' doc comments are clap's --help text, written for a terminal: `[chip]` is a
+// scene's TOML table and `<unit>` a placeholder, not rustdoc links or HTML.
+#![allow(rustdoc::broken_intra_doc_links, rustdoc::invalid_html_tags)]
+
 use clap::{Args, Parser, Subcommand};
 use collision_chip::chip::config::{ChipConfig, DopRounding, Formats};
 use collision_chip::chip::memory::Memory;

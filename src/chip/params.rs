@@ -39,7 +39,7 @@ pub struct Params {
     /// Node pairs popped from the queue ahead of the current entry, whose node words the
     /// port asks for before they reach the DOP unit (a pair buffer of `prefetch + 2` pairs,
     /// their words queued in request order). 0: the port asks only for the current pair's
-    /// words. The RTL chip: 0 to 14 and `outstanding` 1 to 16, in host register 0x126.
+    /// words. The RTL chip: 0 to 14 and `outstanding` 1 to 16, in host register [`PORT`](super::reg::PORT).
     pub prefetch: u32,
     /// Not read with the others: a scene's `[memory]` is a section of its own.
     #[serde(skip_deserializing)]
@@ -56,7 +56,7 @@ impl Params {
     /// The RTL chip (`rtl/chip_e8m15_k6.v`) after reset: 2^10 queue entries, the 15-clock
     /// DOP unit, TRI_UNIT unfolded with its 54 clocks and 256-entry FIFO, issues two clocks apart, a credit
     /// of 16, one request outstanding, no prefetch. `tb/rtl_chip.rs` checks these against
-    /// the RTL; its host register 0x126 sets the last four (`cycle::chip::reg::PORT`).
+    /// the RTL; its host register [`PORT`](super::reg::PORT) sets the last four.
     pub const RTL: Params = Params {
         queue_entries: 1 << rtl::QUEUE_BITS,
         dop_latency: rtl::DOP_LATENCY as u32,
@@ -104,7 +104,7 @@ impl Params {
 
     /// The folded DOP unit runs k / `dop_interval` lanes: Err unless the interval divides k.
     pub fn check_dop_interval(&self, k: usize) -> Result<(), String> {
-        if k % self.dop_interval.max(1) as usize != 0 {
+        if !k.is_multiple_of(self.dop_interval.max(1) as usize) {
             return Err(format!("dop_interval {} does not divide k = {k} (the folded DOP unit runs k / dop_interval lanes): pick a divisor of k", self.dop_interval));
         }
         Ok(())
@@ -130,7 +130,7 @@ impl Params {
         }
         if !(self.tri_interval == 1
             || (2..=Params::MAX_TRI_INTERVAL).contains(&self.tri_interval)
-                && self.tri_interval % 2 == 0)
+                && self.tri_interval.is_multiple_of(2))
         {
             return Err(format!(
                 "tri_interval must be 1 (TRI_UNIT unfolded) or an even number of clocks from 2 to {} (the folded TRI_UNIT runs its two directions on one T.CHECK at tri_interval / 2), not {}",

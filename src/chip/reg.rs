@@ -13,6 +13,7 @@ pub const TRI_SETUP: u32 = 0x100;
 /// the memory layout ([`MemLayout::Records`]; the cycle model takes it from its
 /// configuration).
 pub const MODE: u32 = 0x120;
+/// The root pair: A's node in bits 15:0, B's in 31:16.
 pub const ROOT: u32 = 0x121;
 /// Word addresses of A's nodes, B's nodes, A's triangles, B's triangles (24 bits each).
 pub const BASE_NA: u32 = 0x122;

@@ -38,13 +38,13 @@ pub const QUEUE_BITS: usize = 10;
 /// The chip's leaf FIFO: overlapping leaf pairs waiting for TRI_UNIT.
 pub const LEAF_FIFO: usize = 64;
 /// The credit (DOP tests in flight plus waiting leaf pairs, which keeps the leaf FIFO from
-/// overflowing) after reset (0x126[14:9] = 0), and the most the register's 6 bits give.
+/// overflowing) after reset ([`PORT`](super::reg::PORT)`[14:9]` = 0), and the most the register's 6 bits give.
 pub const CREDIT: usize = 16;
 pub const CREDIT_MAX: usize = 63;
 const _: () = assert!(CREDIT_MAX < LEAF_FIFO);
 
-/// The memory port's limits, set per query in host register 0x126
-/// ([`super::reg::PORT`], which also holds the issue spacing and the credit): node pairs
+/// The memory port's limits, set per query in host register [`super::reg::PORT`]
+/// (which also holds the issue spacing and the credit): node pairs
 /// prefetched at most ([`super::params::Params::prefetch`]; larger values act as this) and
 /// memory requests outstanding at most. The chip's pair buffer holds `PAIR_BUF =
 /// PORT_PREFETCH + 2` pairs (as many entries), each node-word FIFO as many words, the list
@@ -59,7 +59,7 @@ pub const ASK_LIST: usize = 2 * PAIR_BUF;
 // the chip's pointers into these buffers are 4 bits (5 for the ask list)
 const _: () = assert!(PAIR_BUF == 16 && PORT_OUTSTANDING == 16);
 /// A's triangle cache (WSCG'03 §4.3): `TRI_CACHE_LINES` lines of RAM in the chip, of which
-/// host register 0x127 ([`super::reg::TRI_CACHE`]) uses the first `lines` (a power of two;
+/// host register [`TRI_CACHE`](super::reg::TRI_CACHE) uses the first `lines` (a power of two;
 /// reset: one, the single word held).
 pub const TRI_CACHE_BITS: usize = 7;
 pub const TRI_CACHE_LINES: usize = 1 << TRI_CACHE_BITS;
@@ -122,14 +122,14 @@ pub fn rounding_tag(r: Rounding) -> &'static str {
 
 /// The RTL chips, one row each: the kind's name, the exported file's name in `rtl/`, the
 /// module of `crate::rtl` that stamps it out, its configuration, whether it also reads the
-/// `records` layout (host register 0x120 bit 2; its memory word then a record), the clocks
+/// `records` layout (host register [`MODE`](super::reg::MODE) bit 2; its memory word then a record), the clocks
 /// between the DOP unit's pairs (1: `DopUnit<k>`; ii dividing k: `DopUnit<k>Fold<ii>`, the
 /// cycle model's `dop_interval`) and between TRI_UNIT's (1: `TriUnit`; an even ii:
 /// `TriUnitFold`, the cycle model's `tri_interval`), and rust-hdl's speed on
 /// it in clocks per second on this project's machine (docs/explanation/speed.md, `cargo bench --bench
 /// chip_sim`: for estimates before a run). Every chip has DOP lanes rounding outward,
 /// T.CHECK to nearest-even and a triangle cache of [`TRI_CACHE_LINES`] lines (host register
-/// 0x127 picks how many are used). Calls `$m!` with the rows, so that each layer makes
+/// [`TRI_CACHE`](super::reg::TRI_CACHE) picks how many are used). Calls `$m!` with the rows, so that each layer makes
 /// what it needs of one table: the contract [`ChipKind`], the harness its adapters.
 #[macro_export]
 macro_rules! rtl_chips {
@@ -224,7 +224,7 @@ impl ChipKind {
     /// The chip built for `cfg`'s k, formats and roundings with the DOP unit taking a pair
     /// every `dop_interval` clocks and TRI_UNIT every `tri_interval`, if any (its triangle
     /// cache and memory layout aside: every chip has [`TRI_CACHE_LINES`] lines, host register
-    /// 0x127 picks how many are used; [`records`](Self::records) says which layouts it reads).
+    /// [`TRI_CACHE`](super::reg::TRI_CACHE) picks how many are used; [`records`](Self::records) says which layouts it reads).
     pub fn of(cfg: &ChipConfig, dop_interval: u32, tri_interval: u32) -> Option<ChipKind> {
         ChipKind::built(cfg)
             .find(|k| (k.dop_interval(), k.tri_interval()) == (dop_interval, tri_interval))

@@ -149,7 +149,7 @@ pub fn tri_unit(cfg: &ChipConfig, tri_interval: u32) -> String {
 }
 
 /// The RTL units a configuration is built from, by their names in `rtl/` and the timing
-/// tables ([`chains`], parts first), and the whole chip where the RTL builds this
+/// tables (`chains`, parts first), and the whole chip where the RTL builds this
 /// configuration. A folded configuration also counts the unfolded chip: the glue the two
 /// share (D_CNTR, the memory port, the caches) bounds the folded chip's glue until the folded
 /// chip has a row of its own.
@@ -231,14 +231,17 @@ fn stand_in(cfg: &ChipConfig, folds: Folds, unit: &str) -> Option<String> {
     }
 }
 
+/// A unit and its measured row: (the row's name, its period) or None.
+type UnitRow = (String, Option<(String, f64)>);
+
 /// A chain's levels down to its first with a measured row (a folded unit's stand-in counts),
-/// each unit with its row: (the row's name, its period) or None.
+/// each unit with its row.
 fn largest_measured(
     table: &Table,
     cfg: &ChipConfig,
     folds: Folds,
     chain: Vec<Vec<String>>,
-) -> Vec<Vec<(String, Option<(String, f64)>)>> {
+) -> Vec<Vec<UnitRow>> {
     let row = |u: &String| {
         let own = table.periods.get(u).map(|&ns| (u.clone(), ns));
         own.or_else(|| {
@@ -495,7 +498,7 @@ impl Clock {
     /// The configuration's chip's period where `table` measured that chip (its units as it
     /// builds them, the control and the paths between them: the chip as built, whose units a
     /// lone unit's row only approximates, as the flow maps it apart); else the slowest of
-    /// `cfg`'s units that `table` measured ([`slowest_unit`]). Measured if the row is the
+    /// `cfg`'s units that `table` measured (`slowest_unit`). Measured if the row is the
     /// configuration's own RTL chip, else estimated. Err: the datapath none of whose units is
     /// measured in its format or a wider one.
     pub fn measured(table: &Table, cfg: &ChipConfig, folds: Folds) -> Result<Clock, String> {

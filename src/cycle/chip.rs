@@ -588,7 +588,7 @@ impl Clocked for Chip<'_> {
     /// it serves the memory from `mem` as the driver would, clocks the cycles in which the
     /// chip acts ([`step`](Clocked::step)), serves those in which only its memory port moves
     /// (a request taken, a response arriving: a third to a half of a memory-bound query's
-    /// clocks) without evaluating the rest of the logic ([`after_memory`](Chip::after_memory)),
+    /// clocks) without evaluating the rest of the logic (`Chip::after_memory`),
     /// and skips the stretches in which nothing moves in one step
     /// ([`quiet_until`](Chip::quiet_until)): the driver's turn is paid only at a result.
     /// A result shown at `cyc` is not read before `limit` (`i.res_ready`, false, holds).

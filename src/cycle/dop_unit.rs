@@ -60,7 +60,10 @@ impl<'a> DopUnit<'a> {
     /// `in_ready` in cycle `now`: the folded unit's counter is 0 (always, unfolded).
     pub fn in_ready(&self, now: u64) -> bool {
         // unfolded without a division: this is asked every clock
-        self.interval == 1 || self.first.is_none_or(|t0| (now - t0) % self.interval == 0)
+        self.interval == 1
+            || self
+                .first
+                .is_none_or(|t0| (now - t0).is_multiple_of(self.interval))
     }
 
     /// The first cycle after `now` where the folded unit's counter is 0 again, if it runs.

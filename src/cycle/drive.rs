@@ -25,10 +25,13 @@ impl Default for Reader {
     }
 }
 
+/// A result pair: a triangle id of A and one of B.
+pub type TriPair = (u32, u32);
+
 impl Reader {
     pub fn ready(&self, cyc: u64) -> bool {
         // period 1 (every cycle) without a division: this is asked every clock
-        self.period <= 1 || cyc % self.period as u64 == 0
+        self.period <= 1 || cyc.is_multiple_of(self.period as u64)
     }
 
     /// The first cycle from `cyc` on in which the host reads.
@@ -76,8 +79,8 @@ impl ChipTrace {
         s
     }
 
-    /// The sure hits and the uncertain pairs, each sorted.
-    pub fn pairs(&self) -> (Vec<(u32, u32)>, Vec<(u32, u32)>) {
+    /// The sure hits and the uncertain pairs (triangle ids of A and B), each sorted.
+    pub fn pairs(&self) -> (Vec<TriPair>, Vec<TriPair>) {
         let mut hits: Vec<_> = self
             .results
             .iter()

@@ -7,7 +7,7 @@ use std::collections::VecDeque;
 
 /// The chip's memory port: up to `max` requests outstanding, at most one per triangle
 /// destination (a response replaces its held word; node words queue for their pairs),
-/// responses in request order. The RTL chip: `max` from host register 0x126 (1 to 16).
+/// responses in request order. The RTL chip: `max` from host register [`PORT`](crate::chip::reg::PORT) (1 to 16).
 #[derive(Clone, Debug)]
 pub struct MemPort {
     max: usize,

@@ -37,6 +37,9 @@ use crate::chip::reg::{Mode, Order};
 /// latency costs no time; the bound only catches a hung model).
 pub const MAX_CYCLES: u64 = 1 << 50;
 
+/// Called with every cycle's [`PROBES`](crate::chip::probes::PROBES) values; an Err stops the run.
+pub type ProbeObserver<'p> = dyn FnMut(u64, &[u64]) -> Result<(), String> + 'p;
+
 /// What a cycle-model run records besides its trace.
 #[derive(Default)]
 pub struct Record<'p> {
@@ -46,7 +49,7 @@ pub struct Record<'p> {
     /// window of cycles.
     pub vcd: Option<(&'p std::path::Path, &'p [String], std::ops::Range<u64>)>,
     /// Call with every cycle's [`PROBES`](crate::chip::probes::PROBES) values (a cross-check).
-    pub probes: Option<&'p mut dyn FnMut(u64, &[u64]) -> Result<(), String>>,
+    pub probes: Option<&'p mut ProbeObserver<'p>>,
 }
 
 /// One query on the cycle model: `chip`'s images and configuration, B placed by `setup`,
@@ -55,7 +58,6 @@ pub struct Record<'p> {
 /// skipped in one step (the trace is the same); with one, the query runs clock by clock
 /// ([`drive::ProbeVcd`] writes the RTL's signal names: scripts/gtkw/chip_e8m15_k6.gtkw opens
 /// it).
-#[allow(clippy::too_many_arguments)]
 pub fn run_query(
     chip: &crate::query::Chip,
     setup: &crate::golden::host::HostSetup,

@@ -1,4 +1,4 @@
-//! T.CHECK's dataflow graph (petgraph), traced from [`ops::tcheck`](super::ops::tcheck):
+//! T.CHECK's dataflow graph (petgraph), traced from [`ops::tcheck`]:
 //! nodes are the input words and the floating-point operations in the golden order, edges
 //! the operands (with the free sign-clearing and doubling applied on the way in).
 

@@ -51,7 +51,7 @@ pub struct Inputs<V> {
 }
 
 impl<V: Copy> Inputs<V> {
-    /// The number of input words, in the order of [`Inputs::words`].
+    /// The number of input words, in the order of the fields.
     pub const WORDS: usize = 12 + 2 + 12 + 2 + 1 + 9;
 
     /// An input set from its words: `m` row-major, `alpha`, `frame` row-major, `beta`,

@@ -35,7 +35,7 @@ pub enum Binding {
     /// One chain per value, read by every unit that needs it: the fewest registers (the
     /// exported units and the area study).
     Shared,
-    /// One chain per value and [`Reader`] (each unit, and the output registers): a unit's
+    /// One chain per value and `Reader` (each unit, and the output registers): a unit's
     /// operand multiplexers select only among registers no other unit reads, which a placer
     /// puts beside it, and what crosses the chip is the units' outputs to the chains' first
     /// registers. Shared chains made every multiplexer reach across the whole register

@@ -21,8 +21,8 @@ pub struct Certificate {
     /// subnormal) below 2^emin.
     pub u1: f64,
     pub eta_s: f64,
-    /// Mapped vertex coordinates: |V - V*| <= g_v M_V, for vertices the host rounded ([0])
-    /// or exact ones ([1]).
+    /// Mapped vertex coordinates: |V - V*| <= g_v M_V, for vertices the host rounded (`[0]`)
+    /// or exact ones (`[1]`).
     pub g_v: [f64; 2],
     /// E = c_e M >= g_v M: a mapped coordinate's bound (z's).
     pub c_e: [ScaleConst; 2],

@@ -156,11 +156,11 @@ pub struct ObjectImage {
     /// The largest [`TriWord::lambda`] of the object's triangles.
     lambda_max: f64,
     /// The record of each node in the configuration's layout
-    /// ([`node_records`](crate::chip::layout::node_records)).
+    /// ([`node_records`]).
     pub records: Vec<u32>,
-    /// The id the chip knows each node by ([`node_ids`](crate::chip::layout::node_ids)).
+    /// The id the chip knows each node by ([`node_ids`]).
     pub ids: Vec<u32>,
-    /// The record of each triangle ([`tri_records`](crate::chip::layout::tri_records)).
+    /// The record of each triangle ([`tri_records`]).
     pub tri_records: Vec<u32>,
 }
 

@@ -100,10 +100,13 @@ pub struct Stage1 {
     pub scale: f64,
 }
 
-/// The twelve dot products of M_b = M x frame in row order, entry (i, j): row i of M's
-/// 3 x 3 part, column j of the frame, and M's translation `m[i][3]` added in column 3.
+/// One dot product of M_b: entry (i, j), row i of M's 3 x 3 part, column j of the frame, and
+/// M's translation `m[i][3]` in column 3.
+type MbTerm = (usize, usize, [f64; 3], [f64; 3], Option<f64>);
+
+/// The twelve dot products of M_b = M x frame in row order ([`MbTerm`]).
 #[inline(always)]
-fn mb_terms(m: &Affine, frame: &Affine) -> [(usize, usize, [f64; 3], [f64; 3], Option<f64>); 12] {
+fn mb_terms(m: &Affine, frame: &Affine) -> [MbTerm; 12] {
     std::array::from_fn(|n| {
         let (i, j) = (n / 4, n % 4);
         (
@@ -323,7 +326,7 @@ pub fn decide<const EXACT: bool>(
 /// [`mag_lo`]), a sign whose value lies provably within its bound is unknown on the chip.
 /// The set of verdicts that holds the chip's (one member: proven); `None`: a bound may have
 /// overflowed. `other`: the other direction's verdict, if proven (TRI_UNIT's result is the
-/// OR of the two: [`edges_hi`] stops once that OR is decided or cannot be).
+/// OR of the two: `edges_hi` stops once that OR is decided or cannot be).
 pub fn settle(
     cert: &Certificate,
     up: &Upper,

@@ -169,7 +169,7 @@ impl<'a> TriUnit<'a> {
 
     /// Triangle `ta` of A (word `a`) against `tb` of B (word `b`). Each direction's set of
     /// verdicts is narrowed in turn, in f64, with the chip's own vertex words, then bit for
-    /// bit, until their OR (the chip's result, [`TriResult::of`]) has one member: a sure
+    /// bit, until their OR (the chip's result, `TriResult::of`) has one member: a sure
     /// hit in the first direction decides without the second, and an uncertain one needs
     /// of the second only that it cannot be a sure hit (docs/explanation/accuracy.md, "Two directions").
     pub fn test(&mut self, ta: u32, a: &TriWord, tb: u32, b: &TriWord) -> TriResult {

@@ -472,15 +472,15 @@ pub struct ChipQuery {
     pub timing: MemTiming,
     /// How the host reads results.
     pub reader: Reader,
-    /// The memory port (register 0x126): node pairs prefetched, requests outstanding at
+    /// The memory port (register [`PORT`](crate::chip::reg::PORT)): node pairs prefetched, requests outstanding at
     /// most, clocks between DOP issues (1: the queue's second write port), the credit.
     pub prefetch: u32,
     pub outstanding: u32,
     pub issue_spacing: u32,
     pub credit: u32,
-    /// Lines of A's triangle cache (register 0x127; 1: the single word held).
+    /// Lines of A's triangle cache (register [`TRI_CACHE`](crate::chip::reg::TRI_CACHE); 1: the single word held).
     pub tri_cache: u32,
-    /// The memory layout (register 0x120 bit 2; `records` on a chip that reads it).
+    /// The memory layout (register [`MODE`](crate::chip::reg::MODE) bit 2; `records` on a chip that reads it).
     pub layout: MemLayout,
     /// Too long for rust-hdl (more than 500 s at [`ChipKind::rtl_clocks_per_second`]): its
     /// trace comes from the cycle model, and Verilator must reproduce it.
@@ -716,7 +716,7 @@ pub fn queries() -> Vec<ChipQuery> {
             1,
             1,
         ),
-        // the prefetching memory port (register 0x126): node words asked for pairs ahead,
+        // the prefetching memory port (register `reg::PORT`): node words asked for pairs ahead,
         // several requests outstanding, at a memory latency of 8; an issue every clock
         // (both child entries pushed in one) with a credit of 24 to 48 but in the last
         ChipQuery {
@@ -779,7 +779,7 @@ pub fn queries() -> Vec<ChipQuery> {
                 1,
             )
         },
-        // A's triangle cache (register 0x127): 4 lines, so that lines are shared and
+        // A's triangle cache (register `reg::TRI_CACHE`): 4 lines, so that lines are shared and
         // replaced, at full speed (rust-hdl); 128 lines (WSCG'03) on a bunny patch
         ChipQuery {
             prefetch: 6,
@@ -910,7 +910,7 @@ pub fn queries() -> Vec<ChipQuery> {
                 1,
             )
         },
-        // the papers' chip reading the records layout (register 0x120 bit 2: sibling nodes in
+        // the papers' chip reading the records layout (register `reg::MODE` bit 2: sibling nodes in
         // one 2,048-bit record, triangles in leaf order, one record held per object): a
         // bunny patch through a 2-line triangle cache at full speed (rust-hdl), whole
         // queries at full speed through the 128-line cache and at the reset point

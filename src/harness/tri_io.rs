@@ -244,7 +244,7 @@ pub fn tcheck_vectors(
     let (a, b, setup) = vector_scene(f, 12);
     for ta in &a {
         for tb in &b {
-            triples.push((ta.clone(), tb.clone(), setup.clone()));
+            triples.push((*ta, *tb, setup.clone()));
         }
     }
     for case in crate::hard_cases::load_catalogue().expect("the hard-case catalogue loads") {
@@ -353,7 +353,7 @@ pub fn tri_unit_vectors(
             w.push(format!("{tag:08x}"));
             w.push((res.hit as u8).to_string());
             w.push((res.uncertain as u8).to_string());
-            w.push(((latency % interval == 0) as u8).to_string());
+            w.push((latency.is_multiple_of(interval) as u8).to_string());
             let _ = writeln!(out, "{}", w.join(" "));
             tag += 1;
         }

@@ -468,7 +468,7 @@ fn dop_unit_vectors(name: &str, k: usize, fmt: Format, interval: usize) -> Strin
         .collect();
     let latency = crate::chip::rtl::dop_fold_latency(interval);
     let ready = if interval > 1 {
-        format!(" {}", (latency % interval == 0) as u8)
+        format!(" {}", latency.is_multiple_of(interval) as u8)
     } else {
         String::new()
     };

@@ -1,6 +1,6 @@
 //! The exported chip under Verilator as a cross-check level of a scene: the binary is built
 //! on demand by scripts/run-chip.sh (from this build's chip Verilog, cached under
-//! target/verilog/verilator/<chip> while nothing changed), each pose's memory image and
+//! `target/verilog/verilator/<chip>` while nothing changed), each pose's memory image and
 //! register writes go to files, and scripts/verilog/chip_tb.v's `+ports` lines (every output
 //! port whenever one changes) are compared with the cycle model's, clock by clock.
 

@@ -314,7 +314,7 @@ pub fn study(
         .iter()
         .enumerate()
         .filter(|(i, _)| shard.has(index * all.len() + i))
-        .map(|(_, p)| p.clone())
+        .map(|(_, p)| *p)
         .collect();
     let mut configs = plan.configs()?;
     let mut rows = vec![];

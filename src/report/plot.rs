@@ -1,6 +1,7 @@
 //! The reports' figures: a figure's data (a [`Table`] of named columns, written as CSV and
-//! JSON) and its panels, drawn stacked into one SVG or PNG (plotters, the embedded font), the
-//! legend placed where the lines leave room.
+//! JSON) and its panels, drawn stacked into one SVG or PNG (plotters, the embedded font):
+//! titles wrapped to the figure's width, each panel's legend in a column beside its chart
+//! (off the data), point labels placed where they overlap no other label.
 
 use plotters::coord::ranged1d::{AsRangedCoord, ValueFormatter};
 use plotters::prelude::*;
@@ -153,13 +154,70 @@ fn register_font() {
     });
 }
 
+/// The width of a panel's chart; its legend goes to the right of it, off the data.
 const WIDTH: u32 = 900;
 const PANEL_HEIGHT: u32 = 420;
+const TITLE_SIZE: u32 = 18;
+const CAPTION_SIZE: u32 = 16;
+const LEGEND_SIZE: u32 = 12;
+const LABEL_SIZE: u32 = 11;
+/// Pixels around a title's lines and a legend's rows.
+const PAD: u32 = 8;
+
+/// `text`'s width and height in the embedded font at `size` pixels (0 if it cannot tell).
+fn text_size(text: &str, size: u32) -> (u32, u32) {
+    register_font();
+    ("sans-serif", size)
+        .into_font()
+        .box_size(text)
+        .unwrap_or((0, 0))
+}
+
+/// `text` broken at spaces into lines at most `width` pixels wide at `size`, so that a long
+/// title wraps instead of running off the figure.
+fn wrap(text: &str, size: u32, width: u32) -> Vec<String> {
+    let mut lines: Vec<String> = vec![];
+    for word in text.split(' ') {
+        match lines.last_mut() {
+            Some(l) if text_size(&format!("{l} {word}"), size).0 <= width => {
+                l.push(' ');
+                l.push_str(word);
+            }
+            _ => lines.push(word.to_string()),
+        }
+    }
+    lines
+}
+
+/// The height of `text`'s lines wrapped into `width` at `size`, with the padding.
+fn title_height(text: &str, size: u32, width: u32) -> u32 {
+    PAD + wrap(text, size, width).len() as u32 * (size + 6)
+}
+
+/// The legend column's width: the figure's longest series label beside its glyph.
+fn legend_width(f: &Figure) -> u32 {
+    let longest = f
+        .panels
+        .iter()
+        .flat_map(|p| &p.series)
+        .map(|s| text_size(&s.label, LEGEND_SIZE).0)
+        .max()
+        .unwrap_or(0);
+    longest + 3 * PAD + 30
+}
+
+/// Each panel's height: its chart and its caption's lines.
+fn panel_height(p: &Panel) -> u32 {
+    PANEL_HEIGHT + title_height(&p.title, CAPTION_SIZE, WIDTH - 2 * PAD)
+}
 
 /// Writes `f` to `path`, SVG or PNG by its extension.
 pub fn draw(f: &Figure, path: &Path) -> Result<(), String> {
     register_font();
-    let size = (WIDTH, 40 + PANEL_HEIGHT * f.panels.len() as u32);
+    let width = WIDTH + legend_width(f);
+    let height = title_height(&f.title, TITLE_SIZE, width - 2 * PAD)
+        + f.panels.iter().map(panel_height).sum::<u32>();
+    let size = (width, height);
     let err = |e: String| format!("{}: {e}", path.display());
     if path.extension().is_some_and(|e| e == "svg") {
         return draw_on(SVGBackend::new(path, size).into_drawing_area(), f).map_err(err);
@@ -202,81 +260,97 @@ fn write_png(path: &Path, (w, h): (u32, u32), rgb: &[u8]) -> Result<(), png::Enc
     }
 }
 
-fn draw_on<DB: DrawingBackend>(
-    root: DrawingArea<DB, plotters::coord::Shift>,
-    f: &Figure,
-) -> Result<(), String> {
+type Area<DB> = DrawingArea<DB, plotters::coord::Shift>;
+
+/// Draws `text` wrapped and centred at the top of `area`; returns the area below it.
+fn titled<DB: DrawingBackend>(area: &Area<DB>, text: &str, size: u32) -> Result<Area<DB>, String> {
+    let e = |e: DrawingAreaErrorKind<DB::ErrorType>| e.to_string();
+    let width = area.dim_in_pixel().0;
+    let font = ("sans-serif", size).into_font();
+    for (i, line) in wrap(text, size, width - 2 * PAD).iter().enumerate() {
+        let x = (width as i32 - text_size(line, size).0 as i32) / 2;
+        let y = (PAD / 2 + i as u32 * (size + 6)) as i32;
+        area.draw(&Text::new(line.clone(), (x, y), font.clone()))
+            .map_err(e)?;
+    }
+    Ok(area
+        .split_vertically(title_height(text, size, width - 2 * PAD))
+        .1)
+}
+
+fn draw_on<DB: DrawingBackend>(root: Area<DB>, f: &Figure) -> Result<(), String> {
     let e = |e: DrawingAreaErrorKind<DB::ErrorType>| e.to_string();
     root.fill(&WHITE).map_err(e)?;
-    let root = root.titled(&f.title, ("sans-serif", 18)).map_err(e)?;
-    for (area, p) in root.split_evenly((f.panels.len(), 1)).iter().zip(&f.panels) {
+    let mut rest = titled(&root, &f.title, TITLE_SIZE)?;
+    for p in &f.panels {
+        let (panel, below) = rest.split_vertically(panel_height(p));
+        rest = below;
+        let (area, legend_area) = titled(&panel, &p.title, CAPTION_SIZE)?.split_horizontally(WIDTH);
         let (xr, yr) = (
             range(p, |q| q.0, p.log_x, false),
             range(p, |q| q.1, p.log_y, true),
         );
         match (p.log_x, p.log_y) {
-            (false, false) => chart(area, p, xr, yr),
-            (false, true) => chart(area, p, xr, yr.log_scale()),
-            (true, false) => chart(area, p, xr.log_scale(), yr),
-            (true, true) => chart(area, p, xr.log_scale(), yr.log_scale()),
+            (false, false) => chart(&area, p, xr, yr),
+            (false, true) => chart(&area, p, xr, yr.log_scale()),
+            (true, false) => chart(&area, p, xr.log_scale(), yr),
+            (true, true) => chart(&area, p, xr.log_scale(), yr.log_scale()),
         }?;
+        legend(&legend_area, p)?;
     }
     root.present().map_err(e)
 }
 
-/// The corner (or top or bottom middle) of the panel with the fewest data points, for the
-/// legend.
-fn legend_corner(p: &Panel) -> SeriesLabelPosition {
-    let axis = |v: fn(&(f64, f64)) -> f64, log: bool, decades: bool| {
-        let r = range(p, v, log, decades);
-        let t = move |x: f64| if log { x.log10() } else { x };
-        let (lo, hi) = (t(r.start), t(r.end));
-        move |x: f64| (t(x) - lo) / (hi - lo)
+/// Draws a series' glyph in its legend from (x, y) rightwards: a line (a dashed one is two
+/// segments), or a dot for markers only.
+fn glyph<DB: DrawingBackend>(
+    area: &Area<DB>,
+    s: &Series,
+    (x, y): (i32, i32),
+) -> Result<(), String> {
+    let e = |e: DrawingAreaErrorKind<DB::ErrorType>| e.to_string();
+    let color = PALETTE[s.color % PALETTE.len()];
+    // segments 0..a and b..20, and a dot's radius
+    let (a, b, dot) = match s.style {
+        Style::Solid => (8, 8, 0),
+        Style::Dashed => (8, 13, 0),
+        Style::Points => (0, 20, 5),
     };
-    let (nx, ny) = (axis(|q| q.0, p.log_x, false), axis(|q| q.1, p.log_y, true));
-    // the lines' points, and 8 more along each segment
-    let pts: Vec<(f64, f64)> = p
-        .series
-        .iter()
-        .flat_map(|s| {
-            let n: Vec<(f64, f64)> = s
-                .points
-                .iter()
-                .map(|q| (nx(q.0), ny(q.1)))
-                .filter(|q| q.0.is_finite() && q.1.is_finite())
-                .collect();
-            let segs: Vec<(f64, f64)> = n
-                .windows(2)
-                .flat_map(|w| {
-                    (1..9).map(move |i| {
-                        let f = i as f64 / 9.0;
-                        (
-                            w[0].0 + f * (w[1].0 - w[0].0),
-                            w[0].1 + f * (w[1].1 - w[0].1),
-                        )
-                    })
-                })
-                .collect();
-            n.into_iter().chain(segs)
-        })
-        .collect();
-    // (position, its horizontal span, upper)
-    let places = [
-        (SeriesLabelPosition::UpperRight, (0.45, 1.0), true),
-        (SeriesLabelPosition::UpperLeft, (0.0, 0.55), true),
-        (SeriesLabelPosition::LowerRight, (0.45, 1.0), false),
-        (SeriesLabelPosition::LowerLeft, (0.0, 0.55), false),
-        (SeriesLabelPosition::UpperMiddle, (0.22, 0.78), true),
-        (SeriesLabelPosition::LowerMiddle, (0.22, 0.78), false),
-    ];
-    let inside = |&(x, y): &(f64, f64), (lo, hi): (f64, f64), upper: bool| {
-        x > lo && x < hi && (if upper { y > 0.55 } else { y < 0.45 })
-    };
-    let (pos, ..) = places
-        .into_iter()
-        .min_by_key(|&(_, span, u)| pts.iter().filter(|q| inside(q, span, u)).count())
-        .expect("six places");
-    pos
+    area.draw(
+        &(EmptyElement::at((x, y))
+            + PathElement::new(vec![(0, 0), (a, 0)], color.stroke_width(2))
+            + PathElement::new(vec![(b, 0), (20, 0)], color.stroke_width(2))
+            + Circle::new((10, 0), dot, color.filled())),
+    )
+    .map_err(e)
+}
+
+/// The panel's legend in its own column beside the chart (so that it covers no data),
+/// aligned with the chart's top.
+fn legend<DB: DrawingBackend>(area: &Area<DB>, p: &Panel) -> Result<(), String> {
+    let e = |e: DrawingAreaErrorKind<DB::ErrorType>| e.to_string();
+    let row = (LEGEND_SIZE + 6) as i32;
+    let (x0, y0) = (PAD as i32, 12);
+    let w = area.dim_in_pixel().0 as i32 - 2 * PAD as i32;
+    let h = row * p.series.len() as i32 + PAD as i32;
+    area.draw(&Rectangle::new(
+        [(x0, y0), (x0 + w, y0 + h)],
+        BLACK.mix(0.4),
+    ))
+    .map_err(e)?;
+    let font = ("sans-serif", LEGEND_SIZE).into_font();
+    for (i, s) in p.series.iter().enumerate() {
+        let y = y0 + PAD as i32 / 2 + i as i32 * row + row / 2;
+        glyph(area, s, (x0 + PAD as i32, y))?;
+        let text_y = y - text_size(&s.label, LEGEND_SIZE).1 as i32 / 2 - 1;
+        area.draw(&Text::new(
+            s.label.clone(),
+            (x0 + PAD as i32 + 28, text_y),
+            font.clone(),
+        ))
+        .map_err(e)?;
+    }
+    Ok(())
 }
 
 /// An axis label: no trailing zeros, exponent form from 10^5.
@@ -333,7 +407,6 @@ where
 {
     let e = |e: DrawingAreaErrorKind<DB::ErrorType>| e.to_string();
     let mut c = ChartBuilder::on(area)
-        .caption(&p.title, ("sans-serif", 16))
         .margin(12)
         .x_label_area_size(40)
         .y_label_area_size(70)
@@ -358,46 +431,110 @@ where
             .iter()
             .copied()
             .filter(|q| q.0.is_finite() && q.1.is_finite());
-        let ann = match s.style {
-            Style::Solid => c
-                .draw_series(LineSeries::new(pts.clone(), style))
-                .map_err(e)?,
-            Style::Dashed => c
-                .draw_series(DashedLineSeries::new(pts.clone(), 6, 4, style))
-                .map_err(e)?,
-            Style::Points => c
-                .draw_series(pts.clone().map(|q| Circle::new(q, 5, color.filled())))
-                .map_err(e)?,
-        };
-        // the legend's line: segments 0..a and b..20 (a dashed line is two), markers only a dot
-        let (a, b, dot) = match s.style {
-            Style::Solid => (8, 8, 0),
-            Style::Dashed => (8, 13, 0),
-            Style::Points => (0, 20, 5),
-        };
-        ann.label(&s.label).legend(move |(x, y)| {
-            EmptyElement::at((x, y))
-                + PathElement::new(vec![(0, 0), (a, 0)], color.stroke_width(2))
-                + PathElement::new(vec![(b, 0), (20, 0)], color.stroke_width(2))
-                + Circle::new((10, 0), dot, color.filled())
-        });
-        let font = ("sans-serif", 11).into_font().color(&color);
-        c.draw_series(
-            s.points
-                .iter()
-                .zip(&s.labels)
-                .map(|(&q, l)| Text::new(l.clone(), q, font.clone())),
-        )
+        match s.style {
+            Style::Solid => c.draw_series(LineSeries::new(pts.clone(), style)),
+            Style::Dashed => c.draw_series(DashedLineSeries::new(pts.clone(), 6, 4, style)),
+            Style::Points => c.draw_series(pts.clone().map(|q| Circle::new(q, 5, color.filled()))),
+        }
         .map_err(e)?;
         c.draw_series(pts.map(|q| Circle::new(q, 3, color.filled())))
             .map_err(e)?;
     }
-    c.configure_series_labels()
-        .position(legend_corner(p))
-        .label_font(("sans-serif", 12))
-        .background_style(WHITE.mix(0.85))
-        .border_style(BLACK.mix(0.4))
-        .draw()
-        .map_err(e)?;
+    let px = |q: &(f64, f64)| c.backend_coord(q);
+    point_labels(area, p, px, c.plotting_area().get_pixel_range())?;
+    Ok(())
+}
+
+/// A box in pixels: left, top, right, bottom.
+type Boxed = (i32, i32, i32, i32);
+
+fn overlap(a: &Boxed, b: &Boxed) -> bool {
+    a.0 < b.2 && b.0 < a.2 && a.1 < b.3 && b.1 < a.3
+}
+
+/// The pixels a panel's data covers (`px`: a point's pixel): its markers, and its lines
+/// every 3 pixels.
+fn data_boxes(p: &Panel, px: impl Fn(&(f64, f64)) -> (i32, i32)) -> Vec<Boxed> {
+    let mut boxes = vec![];
+    for s in &p.series {
+        let pts: Vec<(i32, i32)> = s
+            .points
+            .iter()
+            .filter(|q| q.0.is_finite() && q.1.is_finite())
+            .map(&px)
+            .collect();
+        boxes.extend(pts.iter().map(|&(x, y)| (x - 5, y - 5, x + 5, y + 5)));
+        if s.style == Style::Points {
+            continue;
+        }
+        for w in pts.windows(2) {
+            let (dx, dy) = (w[1].0 - w[0].0, w[1].1 - w[0].1);
+            let n = (dx.abs().max(dy.abs()) / 3).max(1);
+            boxes.extend((1..n).map(|i| {
+                let (x, y) = (w[0].0 + dx * i / n, w[0].1 + dy * i / n);
+                (x - 1, y - 1, x + 1, y + 1)
+            }));
+        }
+    }
+    boxes
+}
+
+/// Writes the series' point labels beside their points (`px`: a point's pixel): each takes
+/// the first place around its point (right, left, above, below, the corners) that overlaps
+/// no label already placed, stays inside the plot (`plot`: its pixel ranges) and covers the
+/// least data ([`data_boxes`]); a label with no such place is left out (the figure's table
+/// holds it).
+fn point_labels<DB: DrawingBackend>(
+    area: &Area<DB>,
+    p: &Panel,
+    px: impl Fn(&(f64, f64)) -> (i32, i32),
+    plot: (std::ops::Range<i32>, std::ops::Range<i32>),
+) -> Result<(), String> {
+    let e = |e: DrawingAreaErrorKind<DB::ErrorType>| e.to_string();
+    let finite = |q: &&(f64, f64)| q.0.is_finite() && q.1.is_finite();
+    let data = data_boxes(p, &px);
+    let (base_x, base_y) = area.get_base_pixel();
+    let mut placed: Vec<Boxed> = vec![];
+    for s in &p.series {
+        let font = ("sans-serif", LABEL_SIZE)
+            .into_font()
+            .color(&PALETTE[s.color % PALETTE.len()]);
+        for (q, text) in s.points.iter().zip(&s.labels) {
+            let text = text.trim();
+            if text.is_empty() || !finite(&q) {
+                continue;
+            }
+            let (x, y) = px(q);
+            let (w, h) = text_size(text, LABEL_SIZE);
+            let (w, h, r) = (w as i32, h as i32, 7);
+            let places = [
+                (r, -h / 2),
+                (-r - w, -h / 2),
+                (-w / 2, -r - h),
+                (-w / 2, r),
+                (r - 2, -h - 2),
+                (r - 2, 2),
+                (-w - r + 2, -h - 2),
+                (-w - r + 2, 2),
+            ]
+            .map(|(dx, dy)| (x + dx, y + dy, x + dx + w, y + dy + h));
+            let inside = |b: &Boxed| {
+                b.0 >= plot.0.start && b.2 <= plot.0.end && b.1 >= plot.1.start && b.3 <= plot.1.end
+            };
+            let best = places
+                .into_iter()
+                .filter(|b| inside(b) && !placed.iter().any(|o| overlap(b, o)))
+                .min_by_key(|b| data.iter().filter(|m| overlap(b, m)).count());
+            if let Some(b) = best {
+                placed.push(b);
+                area.draw(&Text::new(
+                    text.to_string(),
+                    (b.0 - base_x, b.1 - base_y),
+                    font.clone(),
+                ))
+                .map_err(e)?;
+            }
+        }
+    }
     Ok(())
 }

@@ -41,25 +41,21 @@ macro_rules! chip {
         /// Ports (`W` = word width of the DOP unit's or TRI_UNIT's format, `MW` = memory word):
         ///
         /// * host registers: in `host_we`, `host_addr[10]`, `host_data[32]`, written on
-        ///   the rising edge. `0x000 + a`: the DOP unit's setup word `a` (C, c, D.KLMSEL
-        ///   control, the DOP unit's); `0x100 + a`: TRI_UNIT's (frame maps, bounds, eta,
-        ///   [`TriUnit`]); `0x120`: mode, bit 0 LIFO, bit 1 first hit, bit 2 the `records`
-        ///   layout (node ids `2 record + slot`, a node record two node words, a leaf's
-        ///   triangles fetched by their records; only if `RW` is `2 NW`); `0x121`: the root
-        ///   pair, A's node in bits 15:0, B's in 31:16; `0x122 .. 0x125`: the word
-        ///   addresses of A's node 0, B's node 0, A's triangle 0, B's triangle 0; `0x126`:
-        ///   the memory port, bits 3:0 the node pairs prefetched (at most
-        ///   [`PORT_PREFETCH`](crate::chip::rtl::PORT_PREFETCH)), 7:4 the requests outstanding at
-        ///   most, less one, 8 an issue every clock (the queue's second write port takes a
-        ///   result's two child entries at once), 14:9 the credit of DOP tests in flight
-        ///   plus waiting leaf pairs (0: [`CREDIT`](crate::chip::rtl::CREDIT)); reset: 0, one
-        ///   request, no prefetch,
-        ///   issues two clocks apart, credit 16; `0x127`: A's triangle cache, bits 6:0 its
-        ///   lines less one (a power of two up to
-        ///   [`TRI_CACHE_LINES`](crate::chip::rtl::TRI_CACHE_LINES); reset: 0, one line);
-        ///   `0x128`: where the records lie, bits 19:0
-        ///   ([`RecordMap::word`](crate::chip::layout::RecordMap::word); reset: 0, the image
-        ///   in order).
+        ///   the rising edge, at the addresses and with the fields of [`crate::chip::reg`]:
+        ///   `0x000 + a` the DOP unit's setup word `a` (C, c, D.KLMSEL control, the DOP
+        ///   unit's); [`TRI_SETUP`](crate::chip::reg::TRI_SETUP)` + a` TRI_UNIT's (frame
+        ///   maps, bounds, eta, `TriUnit`); then [`MODE`](crate::chip::reg::MODE) (its
+        ///   `records` bit only if `RW` is `2 NW`: node ids `2 record + slot`, a node record
+        ///   two node words, a leaf's triangles fetched by their records),
+        ///   [`ROOT`](crate::chip::reg::ROOT), the image's word addresses
+        ///   [`BASE_NA`](crate::chip::reg::BASE_NA) to [`BASE_TB`](crate::chip::reg::BASE_TB),
+        ///   the memory port [`PORT`](crate::chip::reg::PORT) (prefetch at most
+        ///   [`PORT_PREFETCH`](crate::chip::rtl::PORT_PREFETCH); an issue every clock because
+        ///   the queue's second write port takes a result's two child entries at once; reset:
+        ///   one request, no prefetch, issues two clocks apart, credit 16), A's triangle cache
+        ///   [`TRI_CACHE`](crate::chip::reg::TRI_CACHE) (a power of two up to
+        ///   [`TRI_CACHE_LINES`](crate::chip::rtl::TRI_CACHE_LINES)) and the record map
+        ///   [`MAP`](crate::chip::reg::MAP).
         /// * `start` (in): begins a query with the registers as written (ignored while
         ///   `busy`); `busy`, `done` (high from the query's end to the next start),
         ///   `overflow` (the pair queue was full when a child entry came: the query ended
@@ -67,7 +63,7 @@ macro_rules! chip {
         ///   counters `dop_tests`, `tri_tests`, `node_fetches`, `tri_fetches`.
         /// * memory: out `mem_req_valid`, `mem_req_addr[24]` (a word address), in
         ///   `mem_req_ready`; in `mem_resp_valid`, `mem_resp_data[MW]`: the words in
-        ///   request order. At most `0x126[7:4] + 1` requests are outstanding and the chip
+        ///   request order. At most [`PORT`](crate::chip::reg::PORT)`[7:4] + 1` requests are outstanding and the chip
         ///   takes every response at the rising edge it is valid (it has room for every word
         ///   it asks for, so the response has no ready).
         ///   Node word: bit 0 leaf, `d_i` at `1 + i W`, then two 32-bit fields (children,
@@ -120,7 +116,7 @@ macro_rules! chip {
             stop: DFF<Bit>,
             halt: Signal<Local, Bit>,
             start_q: Signal<Local, Bit>,
-            // ---- the memory port's limits (host register 0x126)
+            // ---- the memory port's limits (host register reg::PORT)
             port_pf: DFF<Bits<4>>,
             port_out: DFF<Bits<4>>,
             port_one: DFF<Bit>,
@@ -327,7 +323,8 @@ macro_rules! chip {
                 dff_setup!(self, clock, tc_mask, tb_ok, tb_id, tb_word);
                 dff_setup!(self, clock, cnt_dop, cnt_tri, cnt_nf, cnt_tf);
                 clock!(self, clock, d_cntr, mem_port, dop, side, leaf_fifo, tri_cache, tri_unit, result);
-                // ---- host registers and the units' setup ports
+                // ---- host registers and the units' setup ports: the DOP unit's words below
+                // 0x100, TRI_UNIT's from reg::TRI_SETUP (address bits 9:5 = 8)
                 self.dop.load_en.next = self.host_we.val() & (self.host_addr.val().get_bits::<2>(8) == 0);
                 self.dop.load_addr.next = self.host_addr.val().get_bits::<8>(0);
                 self.dop.load_data.next = self.host_data.val().get_bits::<$WD>(0);
@@ -335,35 +332,46 @@ macro_rules! chip {
                 self.tri_unit.load_addr.next = self.host_addr.val().get_bits::<5>(0);
                 self.tri_unit.load_data.next = self.host_data.val().get_bits::<$WT>(0);
                 if self.host_we.val() {
+                    // The addresses of chip::reg, as literals: #[hdl_gen] translates a path
+                    // (reg::MODE) to a Verilog signal name, not to its value.
+                    // reg::MODE
                     if self.host_addr.val() == 0x120 {
                         self.mode_lifo.d.next = self.host_data.val().get_bit(0);
                         self.mode_first.d.next = self.host_data.val().get_bit(1);
                         self.mode_rec.d.next = self.host_data.val().get_bit(2);
                     }
+                    // reg::ROOT
                     if self.host_addr.val() == 0x121 {
                         self.root.d.next = self.host_data.val();
                     }
+                    // reg::BASE_NA
                     if self.host_addr.val() == 0x122 {
                         self.base_na.d.next = self.host_data.val().get_bits::<24>(0);
                     }
+                    // reg::BASE_NB
                     if self.host_addr.val() == 0x123 {
                         self.base_nb.d.next = self.host_data.val().get_bits::<24>(0);
                     }
+                    // reg::BASE_TA
                     if self.host_addr.val() == 0x124 {
                         self.base_ta.d.next = self.host_data.val().get_bits::<24>(0);
                     }
+                    // reg::BASE_TB
                     if self.host_addr.val() == 0x125 {
                         self.base_tb.d.next = self.host_data.val().get_bits::<24>(0);
                     }
+                    // reg::PORT
                     if self.host_addr.val() == 0x126 {
                         self.port_pf.d.next = self.host_data.val().get_bits::<4>(0);
                         self.port_out.d.next = self.host_data.val().get_bits::<4>(4);
                         self.port_one.d.next = self.host_data.val().get_bit(8);
                         self.port_credit.d.next = self.host_data.val().get_bits::<6>(9);
                     }
+                    // reg::TRI_CACHE
                     if self.host_addr.val() == 0x127 {
                         self.tc_mask.d.next = self.host_data.val().get_bits::<7>(0);
                     }
+                    // reg::MAP
                     if self.host_addr.val() == 0x128 {
                         self.map.d.next = self.host_data.val().get_bits::<20>(0);
                     }

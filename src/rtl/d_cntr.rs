@@ -599,7 +599,7 @@ const _: () = assert!(W == 67);
 ///
 /// * query: in `clear` (a start: the queue cleared with `lifo` latched, the pair buffer
 ///   emptied), `lifo`, `push_root`, `root[32]` (the root pair, pushed as a one-pair entry
-///   while `push_root`), `go` (running, not halted), the limits of host register 0x126:
+///   while `push_root`), `go` (running, not halted), the limits of host register [`PORT`](crate::chip::reg::PORT):
 ///   `pf[5]` (pairs prefetched), `one` (an issue every clock), `credit_lim[6]`;
 ///   `leaf_count[6]` (leaf pairs waiting, counted against the credit), `records` (the
 ///   `records` layout: a node id is `2 record + slot`, and a pair shares the pair before's

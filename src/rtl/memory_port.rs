@@ -8,7 +8,7 @@
 /// word, or two on a chip that reads the `records` layout).
 macro_rules! memory_port {
     ($NW:tt, $MW:tt, $RW:tt) => {
-        /// The memory port: up to `0x126[7:4] + 1` requests outstanding, answered in request
+        /// The memory port: up to [`PORT`](crate::chip::reg::PORT)`[7:4] + 1` requests outstanding, answered in request
         /// order. Golden: [`cycle::memory_port::MemPort`](crate::cycle::memory_port::MemPort) (the
         /// requests outstanding, whose destinations here are the tag ring `tags`) and the
         /// node-word lists of [`cycle::chip`](crate::cycle::chip) (`to_ask`, `words`); cycle

@@ -17,7 +17,7 @@ macro_rules! tri_cache {
         /// word are held beside it (`last_id`, `last_word`) and replace it (`byp`).
         ///
         /// Ports: in `clock`, `clear` (a start: no line valid), `mask[7]` (lines used less
-        /// one, host register 0x127), `fill` (A's triangle word `fill_id[16]`,
+        /// one, host register [`TRI_CACHE`](crate::chip::reg::TRI_CACHE)), `fill` (A's triangle word `fill_id[16]`,
         /// `fill_word[TW]` arrives from memory), `id[16]` (the leaf pair's A triangle),
         /// `next_id[16]`; out `hit` (`id`'s word is held), `word[TW]` (it, when `hit`).
         /// Proven in scripts/formal/tri_cache.sv.
@@ -113,6 +113,12 @@ macro_rules! tri_cache {
                     held_id: Default::default(),
                     c_one128: Constant::new(1.into()),
                 }
+            }
+        }
+
+        impl Default for TriCache {
+            fn default() -> Self {
+                Self::new()
             }
         }
     };

@@ -110,8 +110,8 @@ macro_rules! tri_unit {
             /// Ports (words in the format):
             ///
             /// * per query, a write port for the frame maps: in `load_en`, `load_addr[5]`,
-            ///   `load_data[W]`; address `4 i + c` (i < 3, c < 4) writes M_AB[i][c], 12 and 13
-            ///   its error words (beta_m, beta_f), 14 A's scale, `16 + 4 i + c` M_BA[i][c], 28
+            ///   `load_data[W]`; address `4 i + c` (i < 3, c < 4) writes `M_AB[i][c]`, 12 and 13
+            ///   its error words (beta_m, beta_f), 14 A's scale, `16 + 4 i + c` `M_BA[i][c]`, 28
             ///   and 29 its error words, 30 B's scale. Written on the rising edge while
             ///   `load_en` is high.
             /// * per pair (valid/ready): in `a_*`, `b_*` = the two leaves' triangle words

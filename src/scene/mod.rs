@@ -564,7 +564,7 @@ impl Scene {
 
     /// [`parse`](Self::parse) with the command line's `flags` over the scene's own keys.
     /// Every key the configuration does not use, and every output it cannot give, is
-    /// refused here ([`keys`]), before anything is built.
+    /// refused here (`keys`), before anything is built.
     pub fn parse_with(text: &str, name: &str, flags: Flags) -> Result<Scene, String> {
         let f: File = toml::from_str(text).map_err(|e| toml_error(text, name, &e))?;
         let written: keys::Written =

@@ -228,7 +228,7 @@ impl<'s> Prepared<'s> {
             probes: self
                 .verilog
                 .as_ref()
-                .map(|_| &mut observe as &mut dyn FnMut(u64, &[u64]) -> Result<(), String>),
+                .map(|_| &mut observe as &mut cycle::ProbeObserver),
         };
         let (trace, stats) = cycle::run_query(
             chip,

@@ -242,7 +242,6 @@ impl<'a> Engine<'a> {
 
 /// Runs one query on the golden model: `setup` holds TRI_UNIT's part of the host setup
 /// ([`HostSetup::frames`]), and the DOP unit computes its lanes from `lanes` when it needs them.
-#[allow(clippy::too_many_arguments)]
 pub fn run(
     cfg: &ChipConfig,
     a: &ObjectImage,

@@ -98,10 +98,9 @@ pub fn run_traced<U: Pipelined>(
     let mut outs = Vec::with_capacity(n);
     let mut time = 0;
     for cyc in 0..n + U::LATENCY + 1 {
-        let (valid, x) = if cyc < n {
-            (true, ops[cyc])
-        } else {
-            (false, U::In::default())
+        let (valid, x) = match ops.get(cyc) {
+            Some(&x) => (true, x),
+            None => (false, U::In::default()),
         };
         uut.set(x, valid);
         for high in [false, true] {

@@ -55,7 +55,6 @@ struct ListRun {
 }
 
 impl<'a> StackEngine<'a> {
-    #[allow(clippy::too_many_arguments)]
     pub fn new(
         a: &'a ObjectImage,
         b: &'a ObjectImage,

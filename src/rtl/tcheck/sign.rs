@@ -36,6 +36,12 @@ macro_rules! sign {
             }
         }
 
+        impl Default for Sign {
+            fn default() -> Self {
+                Self::new()
+            }
+        }
+
         impl Logic for Sign {
             #[hdl_gen]
             fn update(&mut self) {
