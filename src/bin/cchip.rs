@@ -129,8 +129,9 @@ struct RunOpts {
     #[arg(long)]
     json: bool,
     /// Also run every pose on the RTL chip in rust-hdl, in lockstep with the cycle model
-    /// (scene: cross_check = "rtl"; k = 6, format reduced, about 14 clocks per second, so
-    /// small meshes: e.g. vectors/scenes/rtl_spheres.toml). Any difference is an error
+    /// (scene: cross_check = "rtl"; the exported chips' configurations only: the k = 6
+    /// e8m15 chip runs 21-29 clocks per second in rust-hdl's simulator, docs/explanation/speed.md;
+    /// so small meshes: e.g. vectors/scenes/rtl_spheres.toml). Any difference is an error
     /// naming the pose, the cycle and the signal. For the exported Verilog under Verilator
     /// (meshes of a few hundred triangles), set cross_check = "verilog" in the scene.
     #[arg(long)]
