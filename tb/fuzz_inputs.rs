@@ -2,13 +2,19 @@
 //! poses, fed mutations of the vendored and bad inputs. Each must come back as a value or a
 //! clear error: never a panic, a hang or an allocation the input's size does not justify.
 //!
-//! Stable Rust has no coverage-guided fuzzer here (cargo fuzz needs nightly), so the
-//! mutations are proptest's: bytes flipped, ranges cut, duplicated or truncated, and tokens
-//! that have broken parsers before (huge counts and indices, NaN, overflowing exponents,
-//! NUL bytes, headers inside bodies) spliced in at random places. Every failure proptest
+//! The mutations here are proptest's, blind but run by every `cargo test`: bytes flipped,
+//! ranges cut, duplicated or truncated, and tokens that have broken parsers before (huge
+//! counts and indices, NaN, overflowing exponents, NUL bytes, headers inside bodies) spliced
+//! in at random places. Every failure proptest
 //! finds is shrunk to a minimal input; add it to `vectors/bad-meshes/` (and the mesh error
 //! tests) when it is fixed. `FUZZ_CASES=N` runs N cases per target (default: CI's bounded
 //! run).
+//!
+//! The coverage-guided fuzzer (cargo-afl on stable Rust, `scripts/fuzz.sh`) runs outside
+//! `cargo test`; its corpus and the crashes it found are replayed here.
+
+#[path = "../fuzz/src/lib.rs"]
+mod afl_targets;
 
 use collision_chip::mesh;
 use collision_chip::pose::Pose;
@@ -241,6 +247,34 @@ fn scene_files_take_any_text() {
             prop_assert!(e.starts_with("fuzz.toml"), "{e}");
         }
     });
+}
+
+/// The afl targets' corpus and the crashes afl found (`fuzz/corpus/TARGET/`,
+/// `fuzz/regressions/TARGET/`), each through its target's own function: a value or an error,
+/// within a few seconds. Cheap, and no afl needed (docs/explanation/testing.md, fuzzing).
+#[test]
+fn afl_corpus_and_regressions_replay() {
+    let mut failed = vec![];
+    let mut n = 0;
+    for dir in ["fuzz/corpus", "fuzz/regressions"] {
+        for target in afl_targets::TARGETS {
+            let Ok(files) = std::fs::read_dir(root().join(dir).join(target)) else {
+                continue;
+            };
+            for path in files.flatten().map(|e| e.path()) {
+                let bytes = std::fs::read(&path).unwrap();
+                let t0 = std::time::Instant::now();
+                let run = std::panic::catch_unwind(|| afl_targets::run(target, &bytes));
+                let took = t0.elapsed();
+                if run.is_err() || took > std::time::Duration::from_secs(5) {
+                    failed.push(format!("{} ({took:?})", path.display()));
+                }
+                n += 1;
+            }
+        }
+    }
+    assert!(n >= 10, "only {n} inputs replayed");
+    assert!(failed.is_empty(), "panicked or ran too long: {failed:#?}");
 }
 
 #[test]

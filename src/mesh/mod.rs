@@ -224,14 +224,25 @@ impl std::error::Error for MeshError {}
 
 /// Loads a mesh file, choosing the parser by extension (`.obj`, `.stl`, `.ply`, any case).
 pub fn load(path: &Path) -> Result<Mesh, MeshError> {
-    let file = path.display().to_string();
     // Read first: a missing file is reported as missing, whatever its name.
-    let bytes = std::fs::read(path)
-        .map_err(|e| MeshError::new(&file, None, format!("cannot read file: {e}")))?;
+    let bytes = std::fs::read(path).map_err(|e| {
+        MeshError::new(
+            &path.display().to_string(),
+            None,
+            format!("cannot read file: {e}"),
+        )
+    })?;
+    parse(path, &bytes)
+}
+
+/// A mesh from the `bytes` of the file at `path` (not read: its name picks the parser and
+/// names it in errors), as [`load`] reads it; for the fuzzers, which hand over bytes.
+pub fn parse(path: &Path, bytes: &[u8]) -> Result<Mesh, MeshError> {
+    let file = path.display().to_string();
     let ext = path
         .extension()
         .map(|e| e.to_string_lossy().to_ascii_lowercase());
-    let parse: fn(&str, &[u8]) -> Result<Parsed, MeshError> = match ext.as_deref() {
+    let parser: fn(&str, &[u8]) -> Result<Parsed, MeshError> = match ext.as_deref() {
         Some("obj") => obj::parse,
         Some("stl") => stl::parse,
         Some("ply") => ply::parse,
@@ -250,7 +261,7 @@ pub fn load(path: &Path) -> Result<Mesh, MeshError> {
             ))
         }
     };
-    let (vertices, triangles) = parse(&file, &bytes)?;
+    let (vertices, triangles) = parser(&file, bytes)?;
     let name = path
         .file_stem()
         .map(|s| s.to_string_lossy().into_owned())
