@@ -65,19 +65,17 @@ pub struct Ddr {
     pub miss_ps: u32,
 }
 
-/// A [`Ddr`] in the chip's clocks, the unit of the models that serve the chip (the cycle
-/// model's, the rust-hdl driver's and `scripts/verilog/chip_tb.v`'s `+ddr`): a burst holds
-/// the data bus `burst_clocks` clocks; an access whose bank has its row open costs `hit`
-/// clocks from the request to the word complete, a closed or other row `miss` clocks, each
-/// counting one burst of data; the part before the data (the command part) overlaps with
-/// other banks' transfers, the data bus carries one transfer at a time, in request order.
+/// A [`Ddr`] part's times in the chip's clocks, the unit of the models that serve the chip
+/// (the cycle model's, the rust-hdl driver's and `scripts/verilog/chip_tb.v`'s `+ddr`): a
+/// burst holds the data bus `burst_clocks` clocks; an access whose bank has its row open
+/// costs `hit` clocks from the request to the word complete, a closed or other row `miss`
+/// clocks, each counting one burst of data; the part before the data (the command part)
+/// overlaps with other banks' transfers, the data bus carries one transfer at a time, in
+/// request order.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
 pub struct DdrClocks {
-    pub banks: u32,
-    pub page_bytes: u32,
-    pub bus_bits: u32,
-    /// Beats a burst: its bits are `bus_bits * burst`.
-    pub burst: u32,
+    /// The part: its banks, pages, bus and beats a burst.
+    pub part: Ddr,
     pub burst_clocks: u32,
     pub hit: u32,
     pub miss: u32,
@@ -142,10 +140,7 @@ impl Ddr {
             ));
         }
         Ok(DdrClocks {
-            banks: self.banks,
-            page_bytes: self.page_bytes,
-            bus_bits: self.bus_bits,
-            burst: self.burst,
+            part: *self,
             burst_clocks: clocks(self.burst_ps()) as u32,
             hit: clocks(self.hit_ps as u64) as u32,
             miss: clocks(self.miss_ps as u64) as u32,
@@ -180,6 +175,12 @@ impl Ddr {
         }
         Ok(())
     }
+}
+
+/// Nanoseconds to the picosecond (at least 1 ps): a clock period in the unit the models
+/// count a DDR part's times in.
+pub fn ps(ns: f64) -> u64 {
+    (ns * 1000.0).round().max(1.0) as u64
 }
 
 /// Picoseconds as nanoseconds, without trailing zeros (17500 -> "17.5").
@@ -225,9 +226,7 @@ impl Memory {
             Memory::Ddr(d) => MemClocks::Ddr(d.at(clock_ps)?),
         })
     }
-}
 
-impl Memory {
     /// This memory and, for DDR, its timings in the clocks of a chip whose period is
     /// `clock_ps` (both, as `--explain` prints them).
     pub fn describe_at(&self, clock_ps: u64) -> String {

@@ -94,7 +94,7 @@ impl Preset {
 
     /// The paper's clock period in picoseconds, to the picosecond.
     pub fn clock_ps(self) -> u64 {
-        (1e6 / self.clock_mhz()).round() as u64
+        super::memory::ps(1000.0 / self.clock_mhz())
     }
 
     /// The name scenes and the CLI use.

@@ -448,7 +448,7 @@ impl Clock {
     /// The period to the picosecond: [`Params::clock_ps`](crate::chip::params::Params::clock_ps),
     /// in whose clocks the models count a DDR memory.
     pub fn ps(&self) -> u64 {
-        (self.period_ns * 1000.0).round().max(1.0) as u64
+        super::memory::ps(self.period_ns)
     }
 
     /// An assumed clock of `mhz`, `why`.

@@ -57,8 +57,8 @@ impl MemModel {
                 None,
             ),
             MemClocks::Ddr(d) => {
-                let banks = d.banks as usize;
-                let beat_bits = d.bus_bits as u64 * d.burst as u64;
+                let banks = d.part.banks as usize;
+                let beat_bits = d.part.bus_bits as u64 * d.part.burst as u64;
                 let state = DdrState {
                     d,
                     word_bytes: (word_bits as u64).div_ceil(8),
@@ -103,8 +103,11 @@ impl MemModel {
         let done = match &mut self.ddr {
             None => cyc + self.timing.latency as u64 + self.beats - 1,
             Some(s) => {
-                let page = addr as u64 * s.word_bytes / s.d.page_bytes as u64;
-                let (bank, row) = ((page % s.d.banks as u64) as usize, page / s.d.banks as u64);
+                let page = addr as u64 * s.word_bytes / s.d.part.page_bytes as u64;
+                let (bank, row) = (
+                    (page % s.d.part.banks as u64) as usize,
+                    page / s.d.part.banks as u64,
+                );
                 let data = s.bursts * s.d.burst_clocks as u64;
                 let hit = s.open[bank] == Some(row);
                 let cost =

@@ -232,10 +232,10 @@ pub fn cross_check(
         MemClocks::Ddr(d) => {
             vec![
                 "+ddr".into(),
-                format!("+banks={}", d.banks),
-                format!("+page_bytes={}", d.page_bytes),
-                format!("+bus_bits={}", d.bus_bits),
-                format!("+burst={}", d.burst),
+                format!("+banks={}", d.part.banks),
+                format!("+page_bytes={}", d.part.page_bytes),
+                format!("+bus_bits={}", d.part.bus_bits),
+                format!("+burst={}", d.part.burst),
                 format!("+burst_clocks={}", d.burst_clocks),
                 format!("+hit={}", d.hit),
                 format!("+miss={}", d.miss),

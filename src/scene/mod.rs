@@ -150,15 +150,19 @@ fn timing(
             Some(Technology::deserialize(v.clone()).map_err(|_| format!("{line}: [timing] technology {v} is not known: use \"osu018\", \"ecp5\" or \"paper\""))?)
         }
     };
+    // the memory is [memory]'s; the clock the preset's until the scene's is known ([`clock`])
+    let params = over(
+        &preset.params(),
+        keys,
+        text,
+        "[timing]",
+        &["memory", "clock_ps"],
+    )?;
     Ok((
-        // the memory is [memory]'s, the clock the scene's ([`clock`])
-        over(
-            &preset.params(),
-            keys,
-            text,
-            "[timing]",
-            &["memory", "clock_ps"],
-        )?,
+        Params {
+            clock_ps: preset.clock_ps(),
+            ..params
+        },
         technology,
         clock_mhz,
     ))
@@ -218,7 +222,7 @@ fn ddr_ps(key: &str, ns: f64) -> Result<u32, String> {
             "[memory] {key} = {ns} must be from 0.001 to 1000000 ns, to the picosecond"
         ));
     }
-    Ok(ps.round() as u32)
+    Ok(crate::chip::memory::ps(ns) as u32)
 }
 
 impl MemorySection {
@@ -532,7 +536,7 @@ impl Scene {
         );
         format!(
             "configuration (preset {} and the scene's keys):\n  architecture: {}\n  chip: k = {}, format {}, dop_rounding {}, tri_rounding {:?}, tri_cache {}, {memory_side}\n  {timing}\n  memory: {}\n  clock: {clock}",
-            self.preset.name(), self.architecture.name(), c.k, c.format, c.dop_rounding, c.tri_rounding, c.tri_cache, p.memory.describe_at(p.clock_ps)
+            self.preset.name(), self.architecture.name(), c.k, c.format, c.dop_rounding, c.tri_rounding, c.tri_cache, self.clock.as_ref().map_or(p.memory.to_string(), |_| p.memory.describe_at(p.clock_ps))
         )
     }
 
@@ -788,6 +792,14 @@ mod tests {
         let s = Scene::parse(base, "s").unwrap();
         assert!(!s.outputs.cycles);
         assert_eq!((s.params, s.clock), (Params::RTL, None));
+        // no output runs the chip: the preset's own clock, and the memory in ns alone
+        let w = Scene::parse(&format!("{base}[chip]\npreset = \"wscg03\"\n"), "s").unwrap();
+        assert_eq!((w.clock.is_none(), w.params.clock_ps), (true, 3759));
+        let c = w.configuration();
+        assert!(
+            c.contains("miss 75 ns") && !c.contains("at the chip's"),
+            "{c}"
+        );
         let s = Scene::parse(&format!("{base}[outputs]\ncycles = true\n"), "s").unwrap();
         assert_eq!(s.clock.unwrap().technology, Some(Technology::Osu018));
         let s = Scene::parse(&format!("{base}[outputs]\ncross_check = \"rtl\"\n[chip]\nk = 6\nformat = \"reduced\"\n[timing]\ncredit = 4\nclock_mhz = 266\n"), "s").unwrap();
