@@ -11,8 +11,8 @@
 //! memory requests of each query (`<query>.requests`), which run-chip.sh compares with the
 //! exported Verilog's.
 
-use collision_chip::chip::config::MemLayout;
 use collision_chip::chip::config::{ChipConfig, DopRounding, Formats};
+use collision_chip::chip::config::{DopBits, MemLayout};
 use collision_chip::chip::memory::{Ddr, MemTiming, Memory};
 use collision_chip::chip::params::Params;
 use collision_chip::chip::probes::PROBES;
@@ -209,14 +209,15 @@ fn large_queries_cover_what_they_claim() {
 }
 
 /// A configuration to run: k, the DOP and T.CHECK formats (binary32 or e8m15 each), DOP
-/// rounding, the triangle cache's lines, the memory layout and node records held.
+/// rounding, the triangle cache's lines, the memory layout, node records held and (`records`)
+/// the stored DOP precision (0: full).
 fn config(
     k: usize,
     dop_binary32: bool,
     tri_binary32: bool,
     outward: bool,
     tri_cache: u32,
-    (records, node_cache): (bool, u32),
+    (records, node_cache, dop_bits): (bool, u32, u32),
 ) -> ChipConfig {
     let f = |b32| {
         if b32 {
@@ -244,6 +245,10 @@ fn config(
             MemLayout::Words
         },
         node_cache,
+        dop_bits: match dop_bits {
+            b if b > 0 && records => DopBits::Bits(b),
+            _ => DopBits::Full,
+        },
     }
 }
 
@@ -371,7 +376,8 @@ proptest! {
     /// each level's triangle cache on its own leaf-pair order), the same with idle
     /// stretches skipped as clock by clock, and every running clock is booked to exactly
     /// one cause. A cache with a line for each of A's triangles fetches each at most once.
-    /// Either memory layout, 1 to 16 node records held.
+    /// Either memory layout, 1 to 16 node records held, records in full or at 1 or 8 bits a
+    /// plane (their decode stage on the DOP unit's path).
     #[test]
     fn any_configuration_answers_as_golden(
         k in prop::sample::select(vec![6usize, 14, 18, 24, 26]), dop_b32: bool, tri_b32: bool, outward: bool,
@@ -379,7 +385,7 @@ proptest! {
         na in 4usize..=120, nb in 4usize..=120, sa: u64, sb: u64,
         rot in prop::array::uniform3(0.0f64..360.0), t in prop::array::uniform3(-0.4f64..0.4),
         lifo: bool, first: bool, p in params(), period in 1u32..=12,
-        layout in (any::<bool>(), prop::sample::select(vec![1u32, 1, 3, 16])),
+        layout in (any::<bool>(), prop::sample::select(vec![1u32, 1, 3, 16]), prop::sample::select(vec![0u32, 0, 1, 8])),
     ) {
         let chip = Chip::new(&soup(na, sa).triangles_f64(), &soup(nb, sb).triangles_f64(), config(k, dop_b32, tri_b32, outward, tri_cache, layout)).unwrap();
         let pose = Pose::new(rot[0], rot[1], rot[2], t[0], t[1], t[2]);
@@ -499,6 +505,59 @@ fn folded_dop_unit_takes_a_pair_every_interval() {
         .unwrap()
         .0;
         assert_eq!(skipped, clocked, "ii {ii}");
+    }
+}
+
+/// Stored DOP precision's decode stage by hand: a DOP verdict comes out 15 clocks after its
+/// pair (DATE'05's lane pipeline) from full records and 18 from 8-bit codes, the 3 stages
+/// of the DOP format's adder (`FpAdd`) that subtracts `q 2^e` from the parent's distance;
+/// the answers stay golden's.
+#[test]
+fn the_decode_stage_delays_each_dop_verdict_by_an_adder() {
+    let tris = |m: &str| collision_chip::mesh::builtin(m).unwrap().triangles_f64();
+    let pose = Pose::new(10.0, 20.0, 30.0, 0.5, 0.0, 0.0);
+    let idx = |name: &str| {
+        PROBES
+            .iter()
+            .position(|p| (p.0, p.1) == (if name == "issue" { "d_cntr" } else { "dop" }, name))
+            .unwrap()
+    };
+    let (issue, valid) = (idx("issue"), idx("valid_out"));
+    for (dop_bits, latency) in [(DopBits::Full, 15u64), (DopBits::Bits(8), 18)] {
+        let cfg = ChipConfig {
+            layout: MemLayout::Records,
+            dop_bits,
+            ..CHIP_CONFIG
+        };
+        let chip = Chip::new(&tris("sphere:200"), &tris("torus:200"), cfg).unwrap();
+        let (mut first_issue, mut first_out) = (None, None);
+        let mut obs = |t: u64, v: &[u64]| {
+            if v[issue] == 1 {
+                first_issue.get_or_insert(t);
+            }
+            if v[valid] == 1 {
+                first_out.get_or_insert(t);
+            }
+            Ok(())
+        };
+        let rec = cycle::Record {
+            probes: Some(&mut obs),
+            ..Default::default()
+        };
+        let (tr, _) = cycle::run_query(
+            &chip,
+            &chip.setup(&pose),
+            Order::Lifo,
+            Mode::All,
+            Params::RTL,
+            Reader::default(),
+            MAX_CYCLES,
+            rec,
+        )
+        .unwrap();
+        tr.check(Mode::All, &chip.query(&pose, Mode::All, Traversal::Lifo))
+            .unwrap();
+        assert_eq!(first_out, first_issue.map(|t| t + latency), "{dop_bits}");
     }
 }
 

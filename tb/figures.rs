@@ -7,7 +7,7 @@
 //! report: more pairs, fetches and transforms as the copies close in, LIFO's queue far
 //! smaller than FIFO's (DATE'05 Fig. 7), the first hit no later with LIFO (Fig. 6b).
 
-use collision_chip::chip::config::{ChipConfig, DopRounding};
+use collision_chip::chip::config::{ChipConfig, DopBits, DopRounding};
 use collision_chip::chip::preset::Preset;
 use collision_chip::chip::reg::Mode;
 use collision_chip::chip::timing::{Folds, Technology};
@@ -581,6 +581,7 @@ fn accuracy_pareto_front() {
         bus_bits,
         technology: Technology::Paper,
         folds: vec![Folds::NONE],
+        dop_bits: vec![DopBits::Full],
     };
     let rows = accuracy::study(
         &plan(vec![6, 24], None),

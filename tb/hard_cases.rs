@@ -13,7 +13,7 @@
 //!
 //! Test names: `oracle_*` judge the oracle, `chip_*` the chip, `tri_unit_*` its verdicts.
 
-use collision_chip::chip::config::ChipConfig;
+use collision_chip::chip::config::{ChipConfig, DopBits, MemLayout};
 use collision_chip::chip::reg::Mode;
 use collision_chip::format::Format;
 use collision_chip::golden::tri_unit::TriUnit;
@@ -33,38 +33,57 @@ fn catalogue() -> Vec<Case> {
     hc::load_catalogue().unwrap_or_else(|e| panic!("{e}"))
 }
 
-/// Every way the chip disagrees with `expected` on `case` (empty: none).
-fn chip_failures(case: &Case, expected: &[(u32, u32)]) -> Vec<String> {
-    let mut out = Vec::new();
-    for (format, fname) in FORMATS {
-        for k in KS {
+/// The configurations the chip answers the catalogue in: both formats at k = 6 and 24, and
+/// two with stored DOP precision (the coarsest codes, 1 bit a plane, and 4 bits).
+fn configs() -> Vec<(ChipConfig, String)> {
+    let full = FORMATS.into_iter().flat_map(|(format, fname)| {
+        KS.map(|k| {
             let cfg = ChipConfig {
                 k,
                 format: format.into(),
                 ..Default::default()
             };
-            let chip = Chip::new(&case.a, &case.b, cfg).unwrap();
-            let mut bad = Vec::new();
-            for t in Traversal::ALL {
-                let all = chip.query(&case.pose, Mode::All, t).pairs;
-                if all != expected {
-                    bad.push(format!("{t:?}/all {all:?}"));
-                }
-                let first = chip.query(&case.pose, Mode::First, t).pairs;
-                let ok = first.len() <= 1
-                    && first.is_empty() == expected.is_empty()
-                    && first.iter().all(|p| expected.contains(p));
-                if !ok {
-                    bad.push(format!("{t:?}/first {first:?}"));
-                }
+            (cfg, format!("{fname} k={k}"))
+        })
+    });
+    let stored = [(Format::BINARY32, 24, 1), (Format::REDUCED, 6, 4)].map(|(f, k, b)| {
+        let cfg = ChipConfig {
+            k,
+            format: f.into(),
+            layout: MemLayout::Records,
+            dop_bits: DopBits::Bits(b),
+            ..Default::default()
+        };
+        (cfg, format!("{f} k={k} dop_bits={b}"))
+    });
+    full.chain(stored).collect()
+}
+
+/// Every way the chip disagrees with `expected` on `case` (empty: none).
+fn chip_failures(case: &Case, expected: &[(u32, u32)]) -> Vec<String> {
+    let mut out = Vec::new();
+    for (cfg, name) in configs() {
+        let chip = Chip::new(&case.a, &case.b, cfg).unwrap();
+        let mut bad = Vec::new();
+        for t in Traversal::ALL {
+            let all = chip.query(&case.pose, Mode::All, t).pairs;
+            if all != expected {
+                bad.push(format!("{t:?}/all {all:?}"));
             }
-            if !bad.is_empty() {
-                out.push(format!(
-                    "{} [{fname} k={k}] expected {expected:?}: {}",
-                    case.name,
-                    bad.join(", ")
-                ));
+            let first = chip.query(&case.pose, Mode::First, t).pairs;
+            let ok = first.len() <= 1
+                && first.is_empty() == expected.is_empty()
+                && first.iter().all(|p| expected.contains(p));
+            if !ok {
+                bad.push(format!("{t:?}/first {first:?}"));
             }
+        }
+        if !bad.is_empty() {
+            out.push(format!(
+                "{} [{name}] expected {expected:?}: {}",
+                case.name,
+                bad.join(", ")
+            ));
         }
     }
     out

@@ -198,7 +198,7 @@ fn presets_lay_out_for_the_bus() {
 /// constants `preset.rs` is written with).
 #[test]
 fn presets_are_the_papers_values() {
-    use collision_chip::chip::config::{DopRounding, Formats};
+    use collision_chip::chip::config::{DopBits, DopRounding, Formats};
     use collision_chip::chip::memory::{Ddr, MemTiming, Memory};
     use collision_chip::chip::params::Params;
     use collision_chip::format::{Format, Rounding};
@@ -251,7 +251,8 @@ fn presets_are_the_papers_values() {
 
     // Both papers' chips: DATE'05's "we chose to use 24-DOPs", of "single-precision
     // floating-point numbers", the DOP test rounded outward (never a
-    // false "separated"), T.CHECK to nearest; records laid out for the bus, 16 held per object.
+    // false "separated"), T.CHECK to nearest; records laid out for the bus, 16 held per object,
+    // their DOPs stored in full.
     let papers = ChipConfig {
         k: 24,
         format: Formats::from(Format::BINARY32),
@@ -260,6 +261,7 @@ fn presets_are_the_papers_values() {
         tri_cache: 1,
         layout: MemLayout::Records,
         node_cache: 16,
+        dop_bits: DopBits::Full,
     };
     assert_eq!(Preset::Date05.chip(), papers);
     assert_eq!(

@@ -6,7 +6,7 @@
 #![allow(rustdoc::broken_intra_doc_links, rustdoc::invalid_html_tags)]
 
 use clap::{Args, Parser, Subcommand};
-use collision_chip::chip::config::{ChipConfig, DopRounding, Formats};
+use collision_chip::chip::config::{ChipConfig, DopBits, DopRounding, Formats};
 use collision_chip::chip::memory::Memory;
 use collision_chip::chip::preset::Preset;
 use collision_chip::chip::reg::Mode;
@@ -236,6 +236,11 @@ struct AccuracyArgs {
     /// (1: unfolded; ii dividing k: k / ii DOPTRF lanes in ii passes).
     #[arg(long, value_delimiter = ',', default_value = "1")]
     dop_intervals: Vec<u32>,
+    /// Stored DOP precision, comma separated: full, or bits a plane (1 to 16) of the codes a
+    /// node record stores relative to its parent's DOP and the chip decodes outward (presets
+    /// with the `records` layout: date05, wscg03's memory).
+    #[arg(long, value_delimiter = ',', default_value = "full")]
+    dop_bits: Vec<DopBits>,
     /// Yosys cells per unit (`unit,cells`, as scripts/area-study.sh writes
     /// docs/figures/area_cells.csv): adds each configuration's cells (DOP unit + TRI_UNIT) to
     /// the table and, with --plot, the plot of clocks against cells.
@@ -470,6 +475,7 @@ fn accuracy(a: AccuracyArgs) -> Result<(), String> {
                 .iter()
                 .flat_map(|&tri| a.dop_intervals.iter().map(move |&dop| Folds { tri, dop }))
                 .collect(),
+            dop_bits: a.dop_bits.clone(),
         };
         let shard = a.shard.unwrap_or(accuracy::Shard::ALL);
         let items = a

@@ -146,6 +146,70 @@ impl std::fmt::Display for MemLayout {
     }
 }
 
+/// How node records store the DOPs below the root (a scene's `[chip] dop_bits`): `full`,
+/// each distance a value of the DOP format, or `b`-bit codes relative to the parent's DOP,
+/// which the chip decodes outward ([`dop::stored`](crate::dop::stored); `records` layout).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum DopBits {
+    #[default]
+    Full,
+    Bits(u32),
+}
+
+/// The widest code: half a binary32 significand is already below most gaps' rounding.
+pub const DOP_BITS_MAX: u32 = 16;
+
+/// `full`, or the bits.
+impl std::fmt::Display for DopBits {
+    fn fmt(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+        match self {
+            DopBits::Full => f.write_str("full"),
+            DopBits::Bits(b) => write!(f, "{b}"),
+        }
+    }
+}
+
+impl std::str::FromStr for DopBits {
+    type Err = String;
+    fn from_str(s: &str) -> Result<Self, String> {
+        match s {
+            "full" => Ok(DopBits::Full),
+            _ => match s.parse::<u32>() {
+                Ok(b) if (1..=DOP_BITS_MAX).contains(&b) => Ok(DopBits::Bits(b)),
+                _ => Err(format!(
+                    "dop_bits `{s}` unknown; use \"full\" or bits a plane from 1 to {DOP_BITS_MAX}, such as 8"
+                )),
+            },
+        }
+    }
+}
+
+/// Scenes write `dop_bits = 8` or `dop_bits = "full"`; the JSON says the same.
+impl Serialize for DopBits {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        match self {
+            DopBits::Full => s.serialize_str("full"),
+            DopBits::Bits(b) => s.serialize_u32(*b),
+        }
+    }
+}
+
+impl<'de> Deserialize<'de> for DopBits {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        #[derive(Deserialize)]
+        #[serde(untagged)]
+        enum Written {
+            Bits(i64),
+            Word(String),
+        }
+        let s = match Written::deserialize(d)? {
+            Written::Bits(b) => b.to_string(),
+            Written::Word(w) => w,
+        };
+        s.parse().map_err(serde::de::Error::custom)
+    }
+}
+
 /// A query's chip configuration. Scenes (`[chip]`) and the CLI (`--k`, `--format`, ...) read
 /// it directly, each key optional ([`Default`]: the papers' chip), and
 /// [`check`](ChipConfig::check) it once.
@@ -178,6 +242,10 @@ pub struct ChipConfig {
     /// previous pair's, as in the RTL chips.
     #[arg(long, default_value_t = ChipConfig::default().node_cache)]
     pub node_cache: u32,
+    /// Stored DOP precision of the node records below the root: `full` or bits a plane
+    /// (`records` layout; scenes, presets and the study).
+    #[arg(skip = ChipConfig::default().dop_bits)]
+    pub dop_bits: DopBits,
 }
 
 /// Errors say which k there are.
@@ -208,11 +276,30 @@ impl ChipConfig {
         if !(lines.is_power_of_two() && lines <= TRI_CACHE_MAX_LINES) {
             return Err(format!("tri_cache must be a power of two from 1 to {TRI_CACHE_MAX_LINES} lines (WSCG'03: 128), not {lines}"));
         }
+        self.check_dop_bits()?;
         if !(1..=NODE_CACHE_MAX_LINES).contains(&self.node_cache) {
             return Err(format!(
                 "node_cache must be 1 to {NODE_CACHE_MAX_LINES} records per object, not {}",
                 self.node_cache
             ));
+        }
+        Ok(())
+    }
+}
+
+impl ChipConfig {
+    /// Codes fit the DOP format's significand (so `q 2^e` is one of its values), and a child
+    /// is stored relative to the parent that its record holds: the `records` layout.
+    fn check_dop_bits(&self) -> Result<(), String> {
+        let DopBits::Bits(b) = self.dop_bits else {
+            return Ok(());
+        };
+        let p = self.format.dop.frac_bits() + 1;
+        if b > p {
+            return Err(format!("dop_bits = {b} is wider than the DOP format {}'s {p}-bit significand: use at most {p}, or \"full\"", self.format.dop));
+        }
+        if self.layout != MemLayout::Records {
+            return Err(format!("dop_bits = {b} stores each node relative to its parent's DOP, which only a `records` record holds beside it; this configuration has layout = \"{}\": set [chip] layout = \"records\" (or a preset such as date05), or dop_bits = \"full\"", self.layout));
         }
         Ok(())
     }
@@ -229,6 +316,7 @@ impl Default for ChipConfig {
             tri_cache: 1,
             layout: MemLayout::Words,
             node_cache: 1,
+            dop_bits: DopBits::Full,
         }
     }
 }

@@ -18,6 +18,11 @@
 //! a power of two bytes, and the records of a DDR memory spread over its banks
 //! ([`RecordMap`]): slot 0's node word in bits `0 .. node_bits`, slot 1's from `node_bits`
 //! (a triangle word from bit 0), the chip naming a node `2 record + slot` ([`node_ids`]).
+//! With stored DOP precision (`dop_bits = b`: [`DopBits`], [`dop::stored`](crate::dop::stored);
+//! `records` only) a node word holds `b`-bit codes in place of its distances (`1 + k*b + 64`
+//! bits), and a record holds after its two node words what they share: the parent's k
+//! distances (`k*W` bits) and an exponent per plane ([`exp_field_bits`] each, `e - e_lo`).
+//! The root's record holds its distances in full (its record is the only one with no parent).
 //!
 //! D_CNTR's entry ([`Entry`]) is two node pairs, pushed and popped together; a pair is A's
 //! node, B's node (16 bits each) and the flip bit that orders its children
@@ -37,8 +42,9 @@
 //! stored as it is also when `len` is 1, so `unpack(pack(e)) == e` for every entry.
 //! Node ids are 16 bits: trees of up to 65,536 nodes.
 
-use super::config::{ChipConfig, MemLayout};
+use super::config::{ChipConfig, DopBits, MemLayout};
 use super::memory::Memory;
+use crate::format::Format;
 
 /// Bits of a node word: the leaf bit, k distances of `w` bits, two 32-bit fields.
 pub const fn node_bits(k: usize, w: usize) -> usize {
@@ -63,14 +69,31 @@ pub const fn word_bits(k: usize, dop_w: usize, tri_w: usize) -> usize {
 /// Bits of a [`MemLayout::Records`] memory word: a node pair or a triangle word, padded to a
 /// power of two bytes.
 pub const fn record_bits(k: usize, dop_w: usize, tri_w: usize) -> usize {
-    padded_record(node_bits(k, dop_w), tri_bits(tri_w))
+    padded_record(2 * node_bits(k, dop_w), tri_bits(tri_w))
 }
 
-const fn padded_record(node: usize, tri: usize) -> usize {
-    let n = 2 * node;
+/// The wider of a node pair's `pair` bits and a triangle word's `tri`, padded to a power of
+/// two bytes.
+const fn padded_record(pair: usize, tri: usize) -> usize {
+    let n = pair;
     8 * (if n > tri { n } else { tri })
         .div_ceil(8)
         .next_power_of_two()
+}
+
+/// The exponents a record of `b`-bit codes ([`DopBits`]) may hold, `e_lo ..= e_hi`: from the
+/// DOP format's smallest subnormal (so `q 2^e` is a value of the format) to the largest with
+/// `(2^b - 1) 2^e` at most its largest finite value (so `q 2^e` never overflows; `b` at
+/// most the format's precision).
+pub fn exp_range(fmt: Format, bits: u32) -> (i32, i32) {
+    let emax = fmt.bias();
+    (1 - emax - fmt.frac_bits() as i32, emax + 1 - bits as i32)
+}
+
+/// Bits of a record's exponent field: every exponent of [`exp_range`], stored as `e - e_lo`.
+pub fn exp_field_bits(fmt: Format, bits: u32) -> u32 {
+    let (lo, hi) = exp_range(fmt, bits);
+    ((hi - lo + 1) as u32).next_power_of_two().trailing_zeros()
 }
 
 /// Word sizes of one configuration, and its layout.
@@ -78,29 +101,37 @@ const fn padded_record(node: usize, tri: usize) -> usize {
 pub struct Layout {
     pub node_bits: u32,
     pub tri_bits: u32,
+    /// Bits a `records` record holds once for its two nodes: with stored DOP precision
+    /// ([`DopBits`]), the parent's k distances and an exponent per plane
+    /// ([`dop::stored`](crate::dop::stored)); else 0.
+    pub shared_bits: u32,
     pub kind: MemLayout,
 }
 
 impl Layout {
     pub fn new(cfg: &ChipConfig) -> Layout {
-        let (dop_w, tri_w) = (
-            cfg.format.dop.width() as usize,
-            cfg.format.tri.width() as usize,
-        );
+        let (dop, tri_w) = (cfg.format.dop, cfg.format.tri.width() as usize);
+        let (plane, shared) = match cfg.dop_bits {
+            DopBits::Full => (dop.width(), 0),
+            DopBits::Bits(b) => (b, dop.width() + exp_field_bits(dop, b)),
+        };
         Layout {
-            node_bits: node_bits(cfg.k, dop_w) as u32,
+            node_bits: node_bits(cfg.k, plane as usize) as u32,
             tri_bits: tri_bits(tri_w) as u32,
+            shared_bits: cfg.k as u32 * shared,
             kind: cfg.layout,
         }
     }
     /// Bits of a memory word: `words`, the wider of a node word and a triangle word;
-    /// `records`, a node pair or a triangle word padded to a power of two bytes.
+    /// `records`, a node pair (and what it shares) or a triangle word padded to a power of
+    /// two bytes.
     pub fn word_bits(&self) -> u32 {
         match self.kind {
             MemLayout::Words => self.node_bits.max(self.tri_bits),
-            MemLayout::Records => {
-                padded_record(self.node_bits as usize, self.tri_bits as usize) as u32
-            }
+            MemLayout::Records => padded_record(
+                (2 * self.node_bits + self.shared_bits) as usize,
+                self.tri_bits as usize,
+            ) as u32,
         }
     }
     pub fn node_bytes(&self) -> u64 {

@@ -15,6 +15,21 @@ pub const FP_SCALE_LATENCY: usize = 4;
 /// the NOR add no register).
 pub const DOP_LATENCY: usize = 15;
 
+/// The decode stage of stored DOP precision ([`dop::stored`](crate::dop::stored)) ahead of
+/// D.KLMSEL: per plane, one subtraction `r ⊖ q 2^e` of the DOP format for each node of the
+/// pair, so an adder's pipeline on the unit's path (a design the cycle model times; the RTL
+/// chips read full records and have none).
+pub const DOP_DECODE_LATENCY: usize = FP_ADD_LATENCY;
+
+/// Clocks a configuration's DOP unit adds ahead of its lanes: the decode stage with stored
+/// DOP precision, else none.
+pub fn dop_decode_latency(cfg: &ChipConfig) -> u32 {
+    match cfg.dop_bits {
+        super::config::DopBits::Full => 0,
+        super::config::DopBits::Bits(_) => DOP_DECODE_LATENCY as u32,
+    }
+}
+
 /// The folded DOP unit (`rtl::*::DopUnit<k>Fold<ii>`, a pair every `ii` clocks in `ii` passes
 /// of its lanes): a pair taken in cycle t has its verdict in cycle t + this, the last pass's
 /// lane latency (its pass starts ii - 1 clocks after the first).
@@ -174,6 +189,7 @@ macro_rules! chip_kinds {
                         tri_cache: 1,
                         layout: super::config::MemLayout::Words,
                         node_cache: 1,
+                        dop_bits: super::config::DopBits::Full,
                     },)+
                 }
             }
@@ -239,6 +255,9 @@ impl ChipKind {
         if cfg.node_cache != 1 {
             return Err(format!("the RTL chips hold one node record per object; this configuration has node_cache = {}: set [chip] node_cache = 1", cfg.node_cache));
         }
+        if cfg.dop_bits != super::config::DopBits::Full {
+            return Err(format!("the RTL chips read node records in full, with no decode stage; this configuration has dop_bits = {}: set [chip] dop_bits = \"full\"", cfg.dop_bits));
+        }
         if cfg.layout == MemLayout::Records && !self.records() {
             let records: Vec<&str> = ChipKind::ALL
                 .iter()
@@ -263,6 +282,7 @@ impl ChipKind {
             tri_cache: 1,
             layout: super::config::MemLayout::Words,
             node_cache: 1,
+            dop_bits: super::config::DopBits::Full,
             ..*cfg
         };
         ChipKind::ALL

@@ -6,7 +6,7 @@
 //! binary needs no file; they are read by column name (the study may add columns), and a unit
 //! without a row is "not measured", named beside the period.
 
-use super::config::ChipConfig;
+use super::config::{ChipConfig, DopBits};
 use super::preset::Preset;
 use super::rtl::{self, ChipKind};
 use super::wscg03::Architecture;
@@ -511,6 +511,7 @@ impl Clock {
         let why = match chip.map(|k| (k, k.reads(cfg))) {
             _ if !widened.is_empty() => widened.join("; "),
             None => format!("{} is not built in RTL", chip_name(cfg, folds)),
+            Some((k, Err(_))) if cfg.dop_bits != DopBits::Full => format!("{} reads node records in full; this configuration's decode stage (dop_bits = {}) is not built", k.name(), cfg.dop_bits),
             Some((k, Err(_))) => format!("{} is built with one node record per object, its layouts and up to {} triangle cache lines; this configuration's memory side differs", k.name(), rtl::TRI_CACHE_LINES),
             Some((k, Ok(()))) if !table.periods.contains_key(k.name()) => format!("{} has no row", k.name()),
             Some(_) => String::new(),

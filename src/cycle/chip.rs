@@ -225,7 +225,7 @@ impl<'a> Chip<'a> {
             pend: VecDeque::new(),
             held: [TriCache::new(cfg.tri_cache), TriCache::new(1)],
             port: MemPort::new(p.outstanding),
-            dop: DopUnit::new(a, b, dop_values, &p, cfg.k)?,
+            dop: DopUnit::new(a, b, dop_values, &p, cfg)?,
             leaf_fifo: Delay::with_capacity(FIFO_WRITE_TO_HEAD, p.credit as usize),
             leaf_valid: false,
             leaf_tag: (0, 0),

@@ -1,5 +1,6 @@
 //! The DOP unit (DATE'05 Eq. 10: D.KLMSEL and k DOPTRF lanes, NOR of their flags) as the
-//! cycle model sees it: a pipeline of [`Params::dop_latency`](super::Params) clocks whose
+//! cycle model sees it: a pipeline of [`Params::dop_latency`](super::Params) clocks (and a
+//! decode stage's with stored DOP precision) whose
 //! overlap comes from the golden model ([`TransformCache`]), with the RTL's side delay
 //! line beside it (the pair and both nodes' leaf bits and children, what D_CNTR needs
 //! when the result comes out).
@@ -10,8 +11,10 @@
 //! [`dop_fold_latency`](crate::chip::rtl::dop_fold_latency)(ii), the RTL's.
 
 use super::delay::Delay;
+use crate::chip::config::ChipConfig;
 use crate::chip::layout::Pair;
 use crate::chip::params::Params;
+use crate::chip::rtl::dop_decode_latency;
 use crate::dop::Node;
 use crate::golden::dop_unit::TransformCache;
 use crate::golden::memory::ObjectImage;
@@ -37,21 +40,22 @@ pub struct DopUnit<'a> {
 }
 
 impl<'a> DopUnit<'a> {
-    /// The DOP unit with `p`'s interval and latency (the folded unit's for an interval over 1)
-    /// for k directions; Err if the interval does not divide k.
+    /// The DOP unit with `p`'s interval and latency (the folded unit's for an interval over 1),
+    /// after `cfg`'s decode stage ([`dop_decode_latency`]), for its k directions; Err if the
+    /// interval does not divide k.
     pub fn new(
         a: &'a ObjectImage,
         b: &'a ObjectImage,
         values: TransformCache<'a>,
         p: &Params,
-        k: usize,
+        cfg: &ChipConfig,
     ) -> Result<Self, String> {
-        p.check_dop_interval(k)?;
+        p.check_dop_interval(cfg.k)?;
         Ok(DopUnit {
             a,
             b,
             values,
-            pipe: Delay::new(p.dop_unit_latency()),
+            pipe: Delay::new(p.dop_unit_latency() + dop_decode_latency(cfg)),
             interval: p.dop_interval as u64,
             first: None,
         })

@@ -2,6 +2,7 @@
 //! per-pose setup is [`golden::host`](crate::golden::host)).
 
 pub mod normals;
+pub mod stored;
 pub mod tree;
 pub mod values;
 

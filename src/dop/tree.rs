@@ -4,8 +4,9 @@
 //! the `nearest-even` mode).
 
 use super::normals::{DopNormals, HALF_LANES};
+use super::stored;
 use super::values::Values;
-use crate::chip::config::{ChipConfig, DopRounding, SUPPORTED_K};
+use crate::chip::config::{ChipConfig, DopBits, DopRounding, SUPPORTED_K};
 use crate::format::{Format, Rounding};
 use nalgebra::Point3;
 use std::cell::RefCell;
@@ -45,7 +46,24 @@ pub struct DopTree {
     pub depth: usize,
     /// This tree's number in the process ([`LeafLines`]' tags; a clone has the same leaves).
     id: u32,
+    /// The DOPs the chip decodes, if its records store fewer bits.
+    stored: Option<Stored>,
 }
+
+/// A tree whose node records store `b`-bit codes ([`stored`]): the values the chip's decode
+/// stage gives, which [`DopTree::dop`] reads (the root is stored in full).
+#[derive(Clone, Debug)]
+struct Stored {
+    bits: DopBits,
+    /// The j-th inner node's children's record's exponents at `j*k .. (j+1)*k`.
+    exps: Vec<i16>,
+    /// The j-th inner node's decoded distances (the root's: its own), as `dops`.
+    decoded: Values,
+    /// Each triangle's leaf's parent's rank among the inner nodes ([`NO_PARENT`]: the root).
+    leaf_parent: Vec<u32>,
+}
+
+const NO_PARENT: u32 = u32::MAX;
 
 /// The bit of a leaf in [`DopTree`]'s links (so trees of up to 2^31 nodes).
 const LEAF: u32 = 1 << 31;
@@ -152,9 +170,21 @@ impl DopTree {
             rounding,
             depth: 0,
             id: NEXT_ID.fetch_add(1, Ordering::Relaxed),
+            stored: (cfg.dop_bits != DopBits::Full).then(|| Stored {
+                bits: cfg.dop_bits,
+                exps: Vec::with_capacity((n - 1) * k),
+                decoded: Values::new(cfg.format.dop, (n - 1) * k),
+                leaf_parent: vec![NO_PARENT; n],
+            }),
         };
         let mut idx: Vec<u32> = (0..n as u32).collect();
         tree.grow(&centroids, &mut idx, 1);
+        if let Node::Inner(_) = tree.node(Self::ROOT) {
+            let root = tree.true_dop(Self::ROOT);
+            if let Some(s) = &mut tree.stored {
+                (0..k).for_each(|i| s.decoded.set(i, root[i]));
+            }
+        }
         tree
     }
 
@@ -169,10 +199,27 @@ impl DopTree {
     pub fn dop_into(&self, node: u32, out: &mut Dop) {
         out.k = self.k;
         let d = &mut out.d[..self.k];
+        match (self.links[node as usize], &self.stored) {
+            (l, _) if l & LEAF != 0 => self.leaf_held(l & !LEAF, d),
+            (j, Some(s)) => s.decoded.read(j as usize * self.k, d),
+            (j, None) => self.dops.read(j as usize * self.k, d),
+        }
+    }
+
+    /// The distances the host computed for `node`, before any coding: an inner node's
+    /// stored row, a leaf's rounded supports (not through [`LeafLines`], which hold what
+    /// [`DopTree::dop`] reads).
+    fn true_dop(&self, node: u32) -> Dop {
+        let mut out = Dop {
+            k: self.k,
+            ..Dop::default()
+        };
+        let d = &mut out.d[..self.k];
         match self.links[node as usize] {
-            l if l & LEAF != 0 => self.leaf_held(l & !LEAF, d),
+            l if l & LEAF != 0 => self.leaf_dop(&self.tris[(l & !LEAF) as usize], d),
             j => self.dops.read(j as usize * self.k, d),
         }
+        out
     }
 
     /// Triangle `t`'s leaf distances ([`DopTree::leaf_dop`]) through the thread's
@@ -188,6 +235,7 @@ impl DopTree {
             let held = &mut lines.values[line * MAX_K..][..self.k];
             if lines.tags[line] != tag {
                 self.leaf_dop(&self.tris[t as usize], held);
+                self.decode_leaf(t, held);
                 lines.tags[line] = tag;
             }
             d.copy_from_slice(held);
@@ -230,6 +278,59 @@ impl DopTree {
             d[i] = self.fmt.round(up[i], self.rounding);
             d[i + h] = self.fmt.round(down[i], self.rounding);
         }
+    }
+
+    /// Triangle `t`'s leaf distances `d` as the chip decodes them from its parent's record,
+    /// if the tree's records store codes.
+    fn decode_leaf(&self, t: u32, d: &mut [f64]) {
+        let Some(s) = &self.stored else { return };
+        let j = s.leaf_parent[t as usize];
+        if j != NO_PARENT {
+            self.decode_child(s, j as usize, d);
+        }
+    }
+
+    /// `d`, the distances of a child of the j-th inner node, decoded from their record
+    /// ([`stored::round_trip`]: the parent's stored row and the record's exponents).
+    fn decode_child(&self, s: &Stored, j: usize, d: &mut [f64]) {
+        let k = self.k;
+        let mut r = [0.0; 2 * HALF_LANES];
+        self.dops.read(j * k, &mut r[..k]);
+        stored::round_trip(
+            self.fmt,
+            self.rounding,
+            s.bits,
+            &r[..k],
+            &s.exps[j * k..][..k],
+            d,
+        );
+    }
+
+    /// The j-th inner node's children's record ([`Stored`]): its exponents, each inner
+    /// child's decoded row, each leaf child's parent.
+    fn store_children(&mut self, j: usize, children: [u32; 2], rows: [&Dop; 2]) {
+        let Some(mut s) = self.stored.take() else {
+            return;
+        };
+        let k = self.k;
+        let mut r = [0.0; 2 * HALF_LANES];
+        self.dops.read(j * k, &mut r[..k]);
+        let DopBits::Bits(b) = s.bits else {
+            unreachable!("a tree stores codes only with bits")
+        };
+        let e = stored::record_exps(self.fmt, b, &r[..k], [&rows[0][..], &rows[1][..]]);
+        s.exps[j * k..][..k].copy_from_slice(&e);
+        for (c, row) in children.into_iter().zip(rows) {
+            match self.links[c as usize] {
+                l if l & LEAF != 0 => s.leaf_parent[(l & !LEAF) as usize] = j as u32,
+                jc => {
+                    let mut d = row.d;
+                    self.decode_child(&s, j, &mut d[..k]);
+                    (0..k).for_each(|i| s.decoded.set(jc as usize * k + i, d[i]));
+                }
+            }
+        }
+        self.stored = Some(s);
     }
 
     /// [`prefetch`](super::prefetch) of what [`DopTree::dop`] reads of node `n` (an inner
@@ -296,6 +397,10 @@ impl DopTree {
         self.links.push(j as u32);
         self.second.push(0);
         (0..k).for_each(|_| self.dops.push(f64::NEG_INFINITY));
+        if let Some(s) = &mut self.stored {
+            (0..k).for_each(|_| s.decoded.push(f64::NEG_INFINITY));
+            s.exps.extend(std::iter::repeat_n(0, k));
+        }
         let axis = split_axis(centroids, idx);
         // The lower half by centroid (ties by index: a total order, so the halves are the
         // same sets as a sort's, in linear time; their order within is the children's to set).
@@ -310,8 +415,9 @@ impl DopTree {
         let r = self.grow(centroids, hi, level + 1);
         debug_assert_eq!(l, me + 1, "pre-order");
         self.second[j] = r;
-        let (dl, dr) = (self.dop(l), self.dop(r));
+        let (dl, dr) = (self.true_dop(l), self.true_dop(r));
         (0..k).for_each(|i| self.dops.set(j * k + i, dl[i].max(dr[i])));
+        self.store_children(j, [l, r], [&dl, &dr]);
         me
     }
 }

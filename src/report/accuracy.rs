@@ -4,7 +4,7 @@
 //! measured clock period ([`Clock`]), with the host's share measured: the time end to end.
 //! A study splits into shards (`--shard K/N`) whose rows add up to the serial run's.
 
-use crate::chip::config::{ChipConfig, DopRounding, Formats};
+use crate::chip::config::{ChipConfig, DopBits, DopRounding, Formats};
 use crate::chip::memory::Memory;
 use crate::chip::params::Params;
 use crate::chip::preset::Preset;
@@ -39,10 +39,17 @@ pub struct Plan {
     /// `[Folds::NONE]` (both unfolded) in studies written before folds.
     #[serde(default = "unfolded")]
     pub folds: Vec<Folds>,
+    /// Stored DOP precisions (`[DopBits::Full]` in studies written before them).
+    #[serde(default = "full")]
+    pub dop_bits: Vec<DopBits>,
 }
 
 fn unfolded() -> Vec<Folds> {
     vec![Folds::NONE]
+}
+
+fn full() -> Vec<DopBits> {
+    vec![DopBits::Full]
 }
 
 impl Plan {
@@ -81,16 +88,22 @@ impl Plan {
                                         f.tri, f.dop
                                     )
                                 })?;
-                            out.push((
-                                preset,
-                                ChipConfig {
+                            for &dop_bits in &self.dop_bits {
+                                let cfg = ChipConfig {
                                     k,
                                     format,
                                     dop_rounding,
+                                    dop_bits,
                                     ..preset.chip()
-                                },
-                                params,
-                            ));
+                                };
+                                cfg.check().map_err(|e| {
+                                    format!(
+                                        "--dop-bits {dop_bits} on preset {}: {e}",
+                                        preset.name()
+                                    )
+                                })?;
+                                out.push((preset, cfg, params));
+                            }
                         }
                     }
                 }
@@ -156,6 +169,9 @@ pub struct Row {
     pub k: usize,
     pub format: Formats,
     pub dop_rounding: DopRounding,
+    /// The stored DOP precision (full in rows written before it).
+    #[serde(default)]
+    pub dop_bits: DopBits,
     /// The pair intervals of TRI_UNIT and the DOP unit (1: unfolded).
     #[serde(default)]
     pub folds: Folds,
@@ -177,12 +193,14 @@ pub struct HostSums {
 }
 
 impl Row {
-    /// The chip this row ran: its memory preset's with the row's k, formats and DOP rounding.
+    /// The chip this row ran: its memory preset's with the row's k, formats, DOP rounding
+    /// and stored DOP precision.
     pub fn chip(&self) -> ChipConfig {
         ChipConfig {
             k: self.k,
             format: self.format,
             dop_rounding: self.dop_rounding,
+            dop_bits: self.dop_bits,
             ..self.memory.chip()
         }
     }
@@ -336,6 +354,7 @@ pub fn study(
             k: cfg.k,
             format: cfg.format,
             dop_rounding: cfg.dop_rounding,
+            dop_bits: cfg.dop_bits,
             folds,
             period_ns: clock.period_ns,
             period_source: clock.source,
@@ -472,8 +491,7 @@ pub fn merge(files: Vec<ShardFile>) -> Result<(Plan, Vec<Row>), String> {
             return Err(format!("--merge: shard {}/{n} given twice", f.shard.k));
         }
         let same = |a: &Row, b: &Row| {
-            (&a.mesh, a.memory, a.k, a.format, a.dop_rounding, a.folds)
-                == (&b.mesh, b.memory, b.k, b.format, b.dop_rounding, b.folds)
+            (&a.mesh, a.memory, a.chip(), a.folds) == (&b.mesh, b.memory, b.chip(), b.folds)
         };
         if f.rows.len() != rows.len() || !f.rows.iter().zip(&rows).all(|(a, b)| same(a, b)) {
             return Err(format!(
@@ -506,6 +524,7 @@ pub fn table(plan: &Plan, rows: &[Row], area: Option<&Area>) -> Result<String, S
         "k",
         "format",
         "DOP rounding",
+        "stored DOP bits",
         "pair interval: TRI_UNIT / DOP unit",
         "queries",
         "exact pairs / query",
@@ -543,12 +562,13 @@ pub fn table(plan: &Plan, rows: &[Row], area: Option<&Area>) -> Result<String, S
             .map_or("-".into(), |a| format!("{a:.0}"));
         let _ = write!(
             out,
-            "| {} | {} | {} | {} | {} | {} / {} | {} | {:.1} | {:.0} | {:.1} | {:.1}% | {:.2}% | {} / {} / {} | {} | {} | {:.1} | {:.0} | {:.3} {} | {:.1} | {:.1} | {:.1} | {um2} |",
+            "| {} | {} | {} | {} | {} | {} | {} / {} | {} | {:.1} | {:.0} | {:.1} | {:.1}% | {:.2}% | {} / {} / {} | {} | {} | {:.1} | {:.0} | {:.3} {} | {:.1} | {:.1} | {:.1} | {um2} |",
             row.mesh,
             row.memory.name(),
             row.k,
             row.format,
             row.dop_rounding,
+            row.dop_bits,
             row.folds.tri,
             row.folds.dop,
             r.queries,
@@ -591,8 +611,12 @@ pub fn clocks(rows: &[Row]) -> String {
         } else {
             format!(", pair intervals {} / {}", r.folds.tri, r.folds.dop)
         };
+        let bits = match r.dop_bits {
+            DopBits::Full => String::new(),
+            b => format!(", {b}-bit stored DOPs"),
+        };
         let line = format!(
-            "k = {}, {}, {} DOP rounding{fold}: {}",
+            "k = {}, {}, {} DOP rounding{bits}{fold}: {}",
             r.k, r.format, r.dop_rounding, r.clock
         );
         if !seen.contains(&line) {
@@ -662,6 +686,14 @@ fn pareto(points: &[Option<(f64, f64)>]) -> Vec<bool> {
 
 /// A point's label for its folds: nothing unfolded, else `, ii T/D` (TRI_UNIT's and the DOP
 /// unit's pair intervals).
+/// A point's stored DOP precision, if not full: `, 8 bits`.
+fn bits_label(b: DopBits) -> String {
+    match b {
+        DopBits::Full => String::new(),
+        b => format!(", {b} bits"),
+    }
+}
+
 fn fold_label(f: Folds) -> String {
     if f == Folds::NONE {
         String::new()
@@ -695,7 +727,12 @@ fn front_panel(
         if folded && !on[i] {
             String::new()
         } else {
-            format!("  k={}{}", cfgs[i].k, fold_label(cfgs[i].folds))
+            format!(
+                "  k={}{}{}",
+                cfgs[i].k,
+                bits_label(cfgs[i].dop_bits),
+                fold_label(cfgs[i].folds)
+            )
         }
     };
     let mut series = vec![];
@@ -747,7 +784,7 @@ fn front_panel(
 /// smaller in its x). Both figures carry the same table. A study with folds draws only the
 /// area figure, `fold_cycles_area`: what area costs in time.
 pub fn figures(rows: &[Row], area: Option<&Area>) -> Vec<Figure> {
-    let key = |r: &Row| (r.memory, r.k, r.format, r.dop_rounding, r.folds);
+    let key = |r: &Row| (r.memory, r.chip(), r.folds);
     let mut cfgs: Vec<Row> = vec![];
     for r in rows {
         match cfgs.iter_mut().find(|c| key(c) == key(r)) {
@@ -935,6 +972,7 @@ mod tests {
             bus_bits: None,
             technology: Technology::Osu018,
             folds: vec![Folds::NONE],
+            dop_bits: vec![DopBits::Full],
         };
         let load = |m: &str| {
             crate::mesh::resolve(m)
@@ -1013,6 +1051,7 @@ mod tests {
             bus_bits: None,
             technology: Technology::Paper,
             folds: vec![Folds::NONE, Folds { tri: 32, dop: 6 }],
+            dop_bits: vec![DopBits::Full],
         };
         let load = |m: &str| {
             crate::mesh::resolve(m)
@@ -1062,5 +1101,52 @@ mod tests {
                 bus_bits: Some(64),
                 ..Default::default()
             })));
+    }
+
+    /// Stored DOP precision costs DOP tests and never a pair: at 8 and 2 bits a plane the
+    /// rows find the full records' exact pairs, with no miss and at least their DOP tests; a
+    /// preset whose layout cannot store codes is refused, naming the flag.
+    #[test]
+    fn stored_dops_cost_tests_never_pairs() {
+        let plan = Plan {
+            meshes: vec!["sphere:60".into()],
+            presets: vec![Preset::Date05],
+            ks: vec![6],
+            formats: vec![Formats::from(crate::format::Format::REDUCED)],
+            roundings: vec![DopRounding::Outward],
+            sweep: Sweep {
+                distances: vec![0.5],
+                orientations: 2,
+                seed: 1,
+            },
+            bus_bits: None,
+            technology: Technology::Paper,
+            folds: vec![Folds::NONE],
+            dop_bits: vec![DopBits::Full, DopBits::Bits(8), DopBits::Bits(2)],
+        };
+        let load = |m: &str| {
+            crate::mesh::resolve(m)
+                .map(|m| m.triangles_f64())
+                .map_err(|e| e.to_string())
+        };
+        let rows = run(&plan, load, Shard::ALL, || ()).unwrap();
+        let full = &rows[0].sums;
+        assert_eq!(rows.len(), 3);
+        for r in &rows[1..] {
+            let s = &r.sums;
+            assert_eq!(
+                (s.exact_pairs, s.misses, s.extras),
+                (full.exact_pairs, 0, 0),
+                "{}",
+                r.dop_bits
+            );
+            assert!(s.dop_tests >= full.dop_tests, "{}", r.dop_bits);
+        }
+        let rtl = Plan {
+            presets: vec![Preset::Rtl],
+            ..plan
+        };
+        let e = rtl.configs().unwrap_err();
+        assert!(e.starts_with("--dop-bits 8 on preset rtl: dop_bits = 8 stores each node relative to its parent's DOP"), "{e}");
     }
 }

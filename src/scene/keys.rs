@@ -87,7 +87,7 @@ fn why_unused(u: &Uses, section: &str, key: &str) -> Option<String> {
         ("timing" | "memory" | "stack_engine", _) | ("chip", "architecture") if !u.chip_runs => {
             "sets the chip the cycle model runs, and this scene's outputs run only the golden model: add cycles = true (or memory, waveforms, cross_check) to [outputs], or remove it".into()
         }
-        ("chip", "layout" | "node_cache") if wscg03 => {
+        ("chip", "layout" | "node_cache" | "dop_bits") if wscg03 => {
             "is not used by WSCG'03's chip, which asks for each node word of a list (the `words` layout) and holds no node records: remove it, or set [chip] architecture = \"date05\"".into()
         }
         ("timing", k) if wscg03 && k != "technology" && k != "clock_mhz" => {

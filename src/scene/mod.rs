@@ -7,7 +7,7 @@ mod keys;
 pub mod record;
 pub mod run;
 
-use crate::chip::config::{ChipConfig, MemLayout};
+use crate::chip::config::{ChipConfig, DopBits, MemLayout};
 use crate::chip::memory::{Ddr, MemTiming, Memory};
 use crate::chip::params::Params;
 use crate::chip::preset::Preset;
@@ -116,7 +116,7 @@ fn chip(
     let arch = flags.architecture.or(arch).unwrap_or(preset.architecture());
     let mut cfg = over(&preset.chip(), keys, text, "[chip]", &[])?;
     if arch == Architecture::Wscg03 {
-        (cfg.layout, cfg.node_cache) = (MemLayout::Words, 1);
+        (cfg.layout, cfg.node_cache, cfg.dop_bits) = (MemLayout::Words, 1, DopBits::Full);
     }
     Ok((preset, arch, cfg))
 }
@@ -612,7 +612,17 @@ impl Scene {
         written.unused(text, &uses).map_err(at_line)?;
         params.memory = memory.map_err(err)?;
         f.stack_engine.check().map_err(err)?;
-        cfg.check().map_err(|e| err(format!("[chip] {e}")))?;
+        cfg.check().map_err(|e| {
+            // the key the error is about, where the scene wrote it (else the preset's)
+            let line = ["k", "format", "tri_cache", "node_cache", "dop_bits"]
+                .into_iter()
+                .filter(|k| e.starts_with(&format!("{k} ")))
+                .find_map(|k| written.line(text, "chip", k));
+            match line {
+                Some(l) => at_line(format!("{l}: [chip] {e}")),
+                None => err(format!("[chip] {e}")),
+            }
+        })?;
         let poses = match (&f.sweep, f.pose.is_empty()) {
             (Some(_), false) => {
                 return Err(err(

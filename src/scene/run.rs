@@ -697,6 +697,7 @@ mod tests {
             ("chip", "tri_cache", &["4", "1"]),
             ("chip", "layout", &["\"records\"", "\"words\""]),
             ("chip", "node_cache", &["4", "1"]),
+            ("chip", "dop_bits", &["8", "\"full\""]),
             ("timing", "queue_entries", &["4"]),
             ("timing", "dop_latency", &["40"]),
             ("timing", "dop_interval", &["4"]),
