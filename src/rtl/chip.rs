@@ -4,7 +4,7 @@
 //! semantics: docs/explanation/architecture.md, "Cycle semantics".
 //!
 //! Its sub-blocks: D_CNTR with its pair queue ([`DCntr`](crate::rtl::d_cntr::DCntr),
-//! rtl/d_cntr.rs), the memory port (`MemoryPort`, rtl/memory_port.rs), the DOP unit with the
+//! rtl/d_cntr/), the memory port (`MemoryPort`, rtl/memory_port.rs), the DOP unit with the
 //! side delay line of its pairs, TRI_UNIT and its result port
 //! ([`ResultPort`](crate::rtl::tri_unit::ResultPort), rtl/tri_unit.rs). This file keeps what
 //! joins them: the host registers, the leaf FIFO and register with the triangle words held
