@@ -1,5 +1,5 @@
 //! Hard cases for the triangle test (issue 3): the catalogue `vectors/hard-cases/*.toml`
-//! and generated families (src/hard_cases.rs), judged three ways:
+//! and generated families (src/hard_cases/), judged three ways:
 //! - the exact oracle must give the pairs reasoned out by hand (catalogue) or known by
 //!   construction (generators), and must be invariant under exact changes of the input
 //!   (swapping A and B, vertex orders, axis permutations, sign flips, power-of-two scales);

@@ -1,8 +1,7 @@
 //! Issue 30: "The import graph of src/ has no circle and no upward arrow", and no file in src/
-//! is over 1,500 lines (in rustfmt's default style, which puts a long call's arguments a line
-//! each: applied without changing a token, it made the crate's files 1.05-2.0x as long, so the
-//! 1,000 lines this guard held before are about 1,500 now). Checked by reading the imports out of the source text (every
-//! `crate::`, `$crate::`, `super::` and `self::` path, `use` trees expanded), not by eye.
+//! is over 1,000 lines (in rustfmt's default style) but those in [`LONG_FILES`], until they are
+//! split. Checked by reading the imports out of the source text (every `crate::`, `$crate::`,
+//! `super::` and `self::` path, `use` trees expanded), not by eye.
 
 use petgraph::algo::tarjan_scc;
 use petgraph::graph::DiGraph;
@@ -27,12 +26,18 @@ const LAYERS: &[&[&str]] = &[
     /* 11 */ &["report", "peer"],
 ];
 
-const MAX_LINES: usize = 1500;
+/// Lines a file in src/ may have (src/bin/ included), in rustfmt's default style.
+const MAX_LINES: usize = 1000;
+
+/// The files still over [`MAX_LINES`] (paths under src/), each with the most it may have until
+/// it is split by responsibility or its tests move to a sibling `tests.rs`: 1,500 lines, what
+/// this guard held for every file before. A file back within MAX_LINES must leave the list.
+const LONG_FILES: &[(&str, usize)] = &[("scene/mod.rs", 1500), ("report/accuracy.rs", 1500)];
 
 #[test]
 fn src_is_layered() {
     let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
-    if let Err(e) = check(&src, LAYERS) {
+    if let Err(e) = check(&src, LAYERS, LONG_FILES) {
         panic!("\n{e}");
     }
 }
@@ -260,21 +265,38 @@ fn walk(dir: &Path, out: &mut Vec<PathBuf>) {
     }
 }
 
-/// Checks the tree under `src` against `layers`; Err lists every violation found.
-fn check(src: &Path, layers: &[&[&str]]) -> Result<(), String> {
+/// Checks the tree under `src` against `layers` and its files' lengths against [`MAX_LINES`]
+/// and `long_files` (as [`LONG_FILES`]); Err lists every violation found.
+fn check(src: &Path, layers: &[&[&str]], long_files: &[(&str, usize)]) -> Result<(), String> {
     let mut all = Vec::new();
     walk(src, &mut all);
     all.sort();
     let show = |f: &PathBuf| format!("src/{}", f.strip_prefix(src).unwrap().display());
     let text: Vec<String> = all.iter().map(|f| fs::read_to_string(f).unwrap()).collect();
     let (mut errs, mut long) = (Vec::new(), String::new());
-    for (f, n) in all
+    let lines: BTreeMap<&Path, usize> = all
         .iter()
         .zip(&text)
-        .map(|(f, t)| (f, t.lines().count()))
-        .filter(|&(_, n)| n > MAX_LINES)
-    {
-        long += &format!("\n    {} ({n} lines)", show(f));
+        .map(|(f, t)| (f.strip_prefix(src).unwrap(), t.lines().count()))
+        .collect();
+    let allowed: HashMap<&Path, usize> =
+        long_files.iter().map(|&(f, n)| (Path::new(f), n)).collect();
+    for (&f, &n) in &lines {
+        let max = allowed.get(f).copied().unwrap_or(MAX_LINES);
+        if n > max {
+            long += &format!("\n    src/{} ({n} lines, at most {max})", f.display());
+        }
+    }
+    for &(f, _) in long_files {
+        match lines.get(Path::new(f)) {
+            Some(&n) if n > MAX_LINES => {}
+            Some(n) => errs.push(format!(
+                "src/{f} is {n} lines, within {MAX_LINES}: delete it from LONG_FILES"
+            )),
+            None => errs.push(format!(
+                "LONG_FILES names src/{f}, which does not exist: delete it"
+            )),
+        }
     }
 
     // The import graph: src/bin/ is a separate crate, so not part of it.
@@ -377,9 +399,11 @@ fn check(src: &Path, layers: &[&[&str]]) -> Result<(), String> {
         );
         errs.push(format!("circle between files:{es}"));
     }
-    // 4. No file over MAX_LINES (src/bin/ included).
+    // 4. No file over MAX_LINES (src/bin/ included) but those in `long_files`, within theirs.
     if !long.is_empty() {
-        errs.push(format!("files over {MAX_LINES} lines:{long}"));
+        errs.push(format!(
+            "files too long (split them by responsibility, or move their tests to a sibling tests.rs):{long}"
+        ));
     }
     if errs.is_empty() {
         Ok(())
@@ -468,12 +492,13 @@ mod parser {
             ("b.rs", "use crate::a::{X, x::{self}};\nconst S: &str = \"crate::b\";\n"),
             ("bin/tool.rs", "use crate::b;\n"),
         ]);
-        assert_eq!(check(&src, &[&["a"], &["b"]]), Ok(()));
+        assert_eq!(check(&src, &[&["a"], &["b"]], &[]), Ok(()));
     }
 
     #[test]
     fn circles_upward_arrows_unlisted_rooms_and_long_files_fail() {
         let long = "fn f() {}\n".repeat(MAX_LINES + 1);
+        let longer = "fn f() {}\n".repeat(MAX_LINES + 3);
         let src = tree_in(
             "bad",
             &[
@@ -481,11 +506,26 @@ mod parser {
                 ("a.rs", "\nuse crate::b::B;\npub struct A;\n"),
                 ("b.rs", "use crate::a::A;\npub struct B;\n"),
                 ("c.rs", &long),
+                ("b/ok.rs", &long),
+                ("b/over.rs", &longer),
             ],
         );
-        let err = check(&src, &[&["a"], &["b"]]).unwrap_err();
+        let long_files = [
+            ("b/ok.rs", MAX_LINES + 1),
+            ("b/over.rs", MAX_LINES + 2),
+            ("a.rs", 1500),
+            ("gone.rs", 1500),
+        ];
+        let err = check(&src, &[&["a"], &["b"]], &long_files).unwrap_err();
+        assert!(
+            !err.contains("src/b/ok.rs"),
+            "within its LONG_FILES entry:\n{err}"
+        );
         for want in [
-            "files over 1500 lines:\n    src/c.rs (1501 lines)",
+            "files too long (split them by responsibility, or move their tests to a sibling tests.rs):\n    \
+             src/b/over.rs (1003 lines, at most 1002)\n    src/c.rs (1001 lines, at most 1000)",
+            "src/a.rs is 3 lines, within 1000: delete it from LONG_FILES",
+            "LONG_FILES names src/gone.rs, which does not exist: delete it",
             "room `c` (src/c.rs) is not in LAYERS: add it to LAYERS",
             "upward arrows",
             "src/a.rs -> src/b.rs (line 2)",

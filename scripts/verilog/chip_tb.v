@@ -1,6 +1,6 @@
 // Testbench of an exported collision chip (rtl/chip_*.v, module `top`; parameter MW its
 // memory word bits: 554 for chip_e8m15_k6, 2048 for chip_b32_k24): the host and the memory
-// of src/harness/chip_io.rs, clock for clock. It writes the registers from
+// of src/harness/chip_io/mod.rs, clock for clock. It writes the registers from
 // +host=<file> (one `{addr[10], data[32]}` per line), pulses `start`, serves memory
 // requests from +mem=<file> ($readmemh, one MW-bit word per line) with the memory model
 // (+word_bits=W the bits a word moves on the bus, default MW: the layout's word, which a

@@ -4,6 +4,8 @@
 // The options' doc comments are clap's --help text, written for a terminal: `[chip]` is a
 // scene's TOML table and `<unit>` a placeholder, not rustdoc links or HTML.
 #![allow(rustdoc::broken_intra_doc_links, rustdoc::invalid_html_tags)]
+// No function over 150 lines (clippy.toml), as in the library.
+#![deny(clippy::too_many_lines)]
 
 use clap::{Args, Parser, Subcommand};
 use collision_chip::chip::config::{ChipConfig, DopBits, DopRounding, Formats};

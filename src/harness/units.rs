@@ -126,6 +126,20 @@ fn tri_unit_fold_unit(ii: usize) -> Unit {
 
 /// Every exported unit, in a fixed order.
 pub fn all() -> Vec<Unit> {
+    let mut units = doptrf_units();
+    units.extend(dop_units());
+    units.extend(fp_units());
+    units.extend(tri_units());
+    for ii in FOLDED_II {
+        units.push(tcheck_fold_unit(ii));
+        units.push(tri_unit_fold_unit(ii));
+    }
+    units.push(pair_queue_unit());
+    units
+}
+
+/// The DOPTRF lanes: binary32 in both roundings, e8m15 rounding up.
+fn doptrf_units() -> Vec<Unit> {
     let mut units = vec![];
     for (tag, fmt, r, v) in [
         (
@@ -156,6 +170,12 @@ pub fn all() -> Vec<Unit> {
             vectors: Box::new(move || lane_vectors(&n2, fmt, r)),
         });
     }
+    units
+}
+
+/// The DOP units: k = 6 in e8m15 and k = 24 in binary32, then the folded ones.
+fn dop_units() -> Vec<Unit> {
+    let mut units = vec![];
     for (k, fmt) in [(6, Format::REDUCED), (24, Format::BINARY32)] {
         let r = Rounding::TowardPositive;
         let name = dop_unit_name(k, fmt, r, 1);
@@ -182,6 +202,12 @@ pub fn all() -> Vec<Unit> {
             vectors: Box::new(move || dop_unit_vectors(&n2, k, fmt, ii)),
         });
     }
+    units
+}
+
+/// The FP multipliers and adders in both formats and roundings, then the scalers.
+fn fp_units() -> Vec<Unit> {
+    let mut units = vec![];
     for r in [Rounding::NearestEven, Rounding::TowardPositive] {
         for (tag, fmt) in [("b32", Format::BINARY32), ("e8m15", Format::REDUCED)] {
             let (vm, va): (VerilogFn, VerilogFn) = match tag {
@@ -226,6 +252,12 @@ pub fn all() -> Vec<Unit> {
             vectors: Box::new(move || fp_scale_vectors(&n2, fmt)),
         });
     }
+    units
+}
+
+/// T.CHECK and TRI_UNIT in both formats, rounding to nearest even.
+fn tri_units() -> Vec<Unit> {
+    let mut units = vec![];
     for (tag, fmt) in [("b32", Format::BINARY32), ("e8m15", Format::REDUCED)] {
         let (vt, vu): (VerilogFn, VerilogFn) = match tag {
             "b32" => (
@@ -265,20 +297,19 @@ pub fn all() -> Vec<Unit> {
             }),
         });
     }
-    for ii in FOLDED_II {
-        units.push(tcheck_fold_unit(ii));
-        units.push(tri_unit_fold_unit(ii));
-    }
-    // D_CNTR's pair queue, 16 entries (format independent): one line per clock
+    units
+}
+
+/// D_CNTR's pair queue, 16 entries (format independent): one line per clock.
+fn pair_queue_unit() -> Unit {
     let name = crate::chip::rtl::PAIR_QUEUE_UNIT.to_string();
     let n2 = name.clone();
-    units.push(Unit {
+    Unit {
         name,
         latency: 1,
         verilog: Box::new(crate::rtl::d_cntr::verilog_pair_queue::<4, 5, 3>),
         vectors: Box::new(move || crate::rtl::d_cntr::pair_queue_vectors(&n2, 4, RANDOM_CASES)),
-    });
-    units
+    }
 }
 
 /// A random operand: any bit pattern, or a value near 1 (many ties and cancellations).

@@ -184,10 +184,41 @@ fn declared(elements: &[(&String, &ElementDef)]) -> String {
     format!("header declares {} elements", counts.join(" and "))
 }
 
-pub(super) fn parse(file: &str, bytes: &[u8]) -> Result<Parsed, MeshError> {
-    let err = |line: Option<usize>, reason: String| MeshError::new(file, line, reason);
+/// [`MeshError::new`] for `file`.
+fn errors_in(file: &str) -> impl Fn(Option<usize>, String) -> MeshError + '_ {
+    move |line, reason| MeshError::new(file, line, reason)
+}
 
-    // Locate the header; check the numbers ply-rs would `unwrap`.
+pub(super) fn parse(file: &str, bytes: &[u8]) -> Result<Parsed, MeshError> {
+    let err = errors_in(file);
+    let (offset, header_lines) = header_end(file, bytes)?;
+    let parser = Parser::<Item>::new();
+    let header = parser.read_header(&mut &bytes[..offset]).map_err(|e| {
+        let (line, msg) = split_msg(&e.to_string());
+        // Drop the parser generator's long "expected one of …" set.
+        let msg = msg.split(" Error: ParseError").next().unwrap_or_default();
+        err(line, format!("PLY header: {msg}"))
+    })?;
+    let payload = &bytes[offset..];
+    let n_vertices = header.elements.get("vertex").map_or(0, |e| e.count as u64);
+    let mut b = Builder {
+        file,
+        n_vertices,
+        vertices: Vec::new(),
+        triangles: Vec::new(),
+    };
+    let elements: Vec<(&String, &ElementDef)> = header.elements.iter().collect();
+    match header.encoding {
+        Encoding::Ascii => b.read_ascii(&parser, payload, header_lines, &elements)?,
+        Encoding::BinaryLittleEndian => b.read_binary(&parser, payload, true, &elements)?,
+        Encoding::BinaryBigEndian => b.read_binary(&parser, payload, false, &elements)?,
+    }
+    Ok((b.vertices, b.triangles))
+}
+
+/// The header's end: its bytes and lines. Checks first the numbers ply-rs would `unwrap`.
+fn header_end(file: &str, bytes: &[u8]) -> Result<(usize, usize), MeshError> {
+    let err = errors_in(file);
     let mut offset = 0;
     let mut header_lines = 0;
     let mut found = false;
@@ -222,136 +253,139 @@ pub(super) fn parse(file: &str, bytes: &[u8]) -> Result<Parsed, MeshError> {
             "no 'end_header' line: not a PLY file or truncated header".into(),
         ));
     }
+    Ok((offset, header_lines))
+}
 
-    let parser = Parser::<Item>::new();
-    let header = parser.read_header(&mut &bytes[..offset]).map_err(|e| {
-        let (line, msg) = split_msg(&e.to_string());
-        // Drop the parser generator's long "expected one of …" set.
-        let msg = msg.split(" Error: ParseError").next().unwrap_or_default();
-        err(line, format!("PLY header: {msg}"))
-    })?;
-    let payload = &bytes[offset..];
-    let n_vertices = header.elements.get("vertex").map_or(0, |e| e.count as u64);
-    let mut b = Builder {
-        file,
-        n_vertices,
-        vertices: Vec::new(),
-        triangles: Vec::new(),
-    };
-    let elements: Vec<(&String, &ElementDef)> = header.elements.iter().collect();
-
-    match header.encoding {
-        Encoding::Ascii => {
-            let mut lines = payload.split(|&b| b == b'\n');
-            let mut lineno = header_lines;
-            for &(name, def) in &elements {
-                let def = &decimals_as_f64(def);
-                for j in 0..def.count {
-                    lineno += 1;
-                    let raw = match lines.next() {
-                        Some(l) if !(l.is_empty() && lines.clone().next().is_none()) => l,
-                        _ => {
-                            return Err(err(
-                                Some(lineno),
-                                format!(
+impl Builder<'_> {
+    /// The elements of an ASCII payload, one a line after the header's `header_lines`.
+    fn read_ascii(
+        &mut self,
+        parser: &Parser<Item>,
+        payload: &[u8],
+        header_lines: usize,
+        elements: &[(&String, &ElementDef)],
+    ) -> Result<(), MeshError> {
+        let file = self.file;
+        let err = errors_in(file);
+        let mut lines = payload.split(|&b| b == b'\n');
+        let mut lineno = header_lines;
+        for &(name, def) in elements {
+            let def = &decimals_as_f64(def);
+            for j in 0..def.count {
+                lineno += 1;
+                let raw = match lines.next() {
+                    Some(l) if !(l.is_empty() && lines.clone().next().is_none()) => l,
+                    _ => {
+                        return Err(err(
+                            Some(lineno),
+                            format!(
                                 "truncated ASCII PLY: file ends after {j} of {} '{name}' elements",
                                 def.count
                             ),
-                            ))
-                        }
-                    };
-                    let text = std::str::from_utf8(raw)
-                        .map_err(|_| err(Some(lineno), "invalid UTF-8".into()))?;
-                    let text = text.strip_suffix('\r').unwrap_or(text);
-                    let e = parser.read_ascii_element(text, def).map_err(|e| {
-                        let non_finite = text
-                            .split_whitespace()
-                            .find(|s| s.parse::<f64>().is_ok_and(|f| !f.is_finite()));
-                        match non_finite {
-                            Some(s) => err(Some(lineno), format!("NaN or infinite value '{s}'")),
-                            None => err(
-                                Some(lineno),
-                                format!("{name} {j}: {}", split_msg(&e.to_string()).1),
-                            ),
-                        }
-                    })?;
-                    b.take(name, j, &e, Some(lineno))?;
-                }
-            }
-            if let Some(k) = lines.position(|l| !l.trim_ascii().is_empty()) {
-                return Err(err(
-                    Some(lineno + k + 1),
-                    format!(
-                        "data after the {}; correct the counts in the header",
-                        declared(&elements)
-                    ),
-                ));
+                        ))
+                    }
+                };
+                let text = std::str::from_utf8(raw)
+                    .map_err(|_| err(Some(lineno), "invalid UTF-8".into()))?;
+                let text = text.strip_suffix('\r').unwrap_or(text);
+                let e = parser.read_ascii_element(text, def).map_err(|e| {
+                    let non_finite = text
+                        .split_whitespace()
+                        .find(|s| s.parse::<f64>().is_ok_and(|f| !f.is_finite()));
+                    match non_finite {
+                        Some(s) => err(Some(lineno), format!("NaN or infinite value '{s}'")),
+                        None => err(
+                            Some(lineno),
+                            format!("{name} {j}: {}", split_msg(&e.to_string()).1),
+                        ),
+                    }
+                })?;
+                self.take(name, j, &e, Some(lineno))?;
             }
         }
-        Encoding::BinaryLittleEndian | Encoding::BinaryBigEndian => {
-            let mut need: u128 = 0;
-            for (_, def) in &elements {
-                let size: u128 = def
-                    .properties
-                    .iter()
-                    .map(|(_, p)| match &p.data_type {
-                        PropertyType::Scalar(t) => scalar_size(t),
-                        PropertyType::List(t, _) => scalar_size(t),
-                    })
-                    .sum();
-                need = need.saturating_add(size.saturating_mul(def.count as u128));
-            }
-            if need > payload.len() as u128 {
-                return Err(err(
-                    None,
-                    format!(
-                        "truncated binary PLY: {} (at least {need} bytes) but only {} bytes \
-                         follow the header",
-                        declared(&elements),
-                        payload.len()
-                    ),
-                ));
-            }
-            let little = matches!(header.encoding, Encoding::BinaryLittleEndian);
-            let mut cursor = Cursor::new(payload);
-            for &(name, def) in &elements {
-                if def.properties.is_empty() {
-                    continue; // occupies no bytes
-                }
-                for j in 0..def.count {
-                    let r = if little {
-                        parser.read_little_endian_element(&mut cursor, def)
-                    } else {
-                        parser.read_big_endian_element(&mut cursor, def)
-                    };
-                    let e = r.map_err(|e| {
-                        let left = payload.len().saturating_sub(cursor.position() as usize);
-                        if e.kind() == std::io::ErrorKind::UnexpectedEof
-                            || left < 8
-                            || e.to_string().contains("Couldn't find a list element")
-                        {
-                            err(
-                                None,
-                                format!("truncated binary PLY: file ends inside {name} {j}"),
-                            )
-                        } else {
-                            err(None, format!("{name} {j}: {}", split_msg(&e.to_string()).1))
-                        }
-                    })?;
-                    b.take(name, j, &e, None)?;
-                }
-            }
-            let left = payload.len() as u64 - cursor.position();
-            if left > 0 {
-                return Err(err(
-                    None,
-                    format!(
-                        "{left} bytes after the {}; correct the counts in the header",
-                        declared(&elements)
-                    ),
-                ));
-            }
+        if let Some(k) = lines.position(|l| !l.trim_ascii().is_empty()) {
+            return Err(err(
+                Some(lineno + k + 1),
+                format!(
+                    "data after the {}; correct the counts in the header",
+                    declared(elements)
+                ),
+            ));
         }
+        Ok(())
     }
-    Ok((b.vertices, b.triangles))
+
+    /// The elements of a binary payload (`little` or big endian).
+    fn read_binary(
+        &mut self,
+        parser: &Parser<Item>,
+        payload: &[u8],
+        little: bool,
+        elements: &[(&String, &ElementDef)],
+    ) -> Result<(), MeshError> {
+        let file = self.file;
+        let err = errors_in(file);
+        let mut need: u128 = 0;
+        for (_, def) in elements {
+            let size: u128 = def
+                .properties
+                .iter()
+                .map(|(_, p)| match &p.data_type {
+                    PropertyType::Scalar(t) => scalar_size(t),
+                    PropertyType::List(t, _) => scalar_size(t),
+                })
+                .sum();
+            need = need.saturating_add(size.saturating_mul(def.count as u128));
+        }
+        if need > payload.len() as u128 {
+            return Err(err(
+                None,
+                format!(
+                    "truncated binary PLY: {} (at least {need} bytes) but only {} bytes \
+                     follow the header",
+                    declared(elements),
+                    payload.len()
+                ),
+            ));
+        }
+        let mut cursor = Cursor::new(payload);
+        for &(name, def) in elements {
+            if def.properties.is_empty() {
+                continue; // occupies no bytes
+            }
+            for j in 0..def.count {
+                let r = if little {
+                    parser.read_little_endian_element(&mut cursor, def)
+                } else {
+                    parser.read_big_endian_element(&mut cursor, def)
+                };
+                let e = r.map_err(|e| {
+                    let left = payload.len().saturating_sub(cursor.position() as usize);
+                    if e.kind() == std::io::ErrorKind::UnexpectedEof
+                        || left < 8
+                        || e.to_string().contains("Couldn't find a list element")
+                    {
+                        err(
+                            None,
+                            format!("truncated binary PLY: file ends inside {name} {j}"),
+                        )
+                    } else {
+                        err(None, format!("{name} {j}: {}", split_msg(&e.to_string()).1))
+                    }
+                })?;
+                self.take(name, j, &e, None)?;
+            }
+        }
+        let left = payload.len() as u64 - cursor.position();
+        if left > 0 {
+            return Err(err(
+                None,
+                format!(
+                    "{left} bytes after the {}; correct the counts in the header",
+                    declared(elements)
+                ),
+            ));
+        }
+        Ok(())
+    }
 }

@@ -101,10 +101,23 @@ pub(crate) fn body_verilog(
     f: usize,
     units: [&str; 7],
 ) -> String {
+    let mut v = String::new();
+    registers_verilog(&mut v, p, units);
+    operands_verilog(&mut v, p, w, ew, f, units);
+    outputs_verilog(&mut v, p);
+    v
+}
+
+/// The control counter, which names a pair's slot in every `case` of the body.
+const COUNTER: &str = "counter$q";
+
+/// [`body_verilog`]'s first part: `always @(*) begin`, the run flag, the counter, and the
+/// inputs of the word registers (a unit's result from `units`) and of the side chains
+/// (`v_exact`, `valid_in`, `tag`).
+fn registers_verilog(v: &mut String, p: &crate::fold::plan::Plan, units: [&str; 7]) {
     use crate::fold::plan::Src;
     use std::fmt::Write;
-    let mut v = String::new();
-    let c = "counter$q";
+    let c = COUNTER;
     let _ = writeln!(v, "always @(*) begin\n  run$clock = clock;\n  run$d = run$q | valid_in;\n  counter$clock = clock;");
     let _ = writeln!(
         v,
@@ -141,6 +154,20 @@ pub(crate) fn body_verilog(
             let _ = writeln!(v, "  {name}${i}$clock = clock;\n  {name}${i}$d = ({c} == 8'd{}) ? {src} : {name}${i}$q;", ch.slot);
         }
     }
+}
+
+/// [`body_verilog`]'s operand multiplexers: per unit a `case` on the counter choosing its
+/// operands in each slot it is issued (`units` names the unit vectors per class).
+fn operands_verilog(
+    v: &mut String,
+    p: &crate::fold::plan::Plan,
+    w: usize,
+    ew: usize,
+    f: usize,
+    units: [&str; 7],
+) {
+    use std::fmt::Write;
+    let c = COUNTER;
     for (k, unit) in units.iter().enumerate() {
         for (u, slots) in p.issues[k].iter().enumerate() {
             let n = format!("{unit}${u}");
@@ -187,6 +214,13 @@ pub(crate) fn body_verilog(
             let _ = writeln!(v, " end\n  endcase");
         }
     }
+}
+
+/// [`body_verilog`]'s last part: the signs' inputs, the output registers taken at the
+/// output slot, the outputs, and `end`.
+fn outputs_verilog(v: &mut String, p: &crate::fold::plan::Plan) {
+    use std::fmt::Write;
+    let c = COUNTER;
     let o = &p.outputs;
     let take = format!("({c} == 8'd{})", p.out_slot);
     let (mut hit, mut miss) = (vec![], vec![]);
@@ -252,7 +286,6 @@ pub(crate) fn body_verilog(
         p.side_out
     );
     let _ = writeln!(v, "  hit = out_hit$q;\n  miss = out_miss$q;\n  tag_out = out_tag$q;\n  valid_out = out_valid$q;\nend");
-    v
 }
 
 /// The input word ports in [`Inputs::from_words`](crate::fold::ops::Inputs::from_words)'s

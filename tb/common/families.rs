@@ -1,4 +1,4 @@
-//! Proptest strategies for the hard-case families of src/hard_cases.rs (placements,
+//! Proptest strategies for the hard-case families of src/hard_cases/ (placements,
 //! exact tiny offsets, every family) and general poses, shared by the hard-case and RTL
 //! triangle testbenches.
 #![allow(dead_code)] // each testbench uses its own subset

@@ -6,11 +6,12 @@
 
 use crate::chip::layout::ENTRY_BITS;
 use crate::chip::reg::Order;
-use crate::cycle::d_cntr::{QueueIn, QueueModel, QueueOut};
+use crate::cycle::d_cntr::{QueueIn, QueueOut};
 use crate::rtl::reg_ring::RegRing;
-use rand::{Rng, SeedableRng};
 use rust_hdl::prelude::*;
-use std::fmt::Write;
+
+mod vectors;
+pub use vectors::{pair_queue_vectors, random_ops};
 
 /// Bits of an entry word ([`cycle::d_cntr`](crate::cycle::d_cntr) has the layout).
 pub const W: usize = ENTRY_BITS as usize;
@@ -18,8 +19,8 @@ pub const W: usize = ENTRY_BITS as usize;
 /// D_CNTR's queue of waiting node-pair entries: `2^N` entries of [`W`] = 67 bits, FIFO
 /// (breadth first) or LIFO (depth first) as latched by `clear`; `NP1` must be `N + 1`
 /// (the width of `count`), `NM1` `N - 1` (a RAM bank's address), `N >= 2`. Golden:
-/// [`QueueModel`], equal on every output after every clock. The entry word is opaque here
-/// (layout: [`cycle::d_cntr`](crate::cycle::d_cntr)).
+/// [`QueueModel`](crate::cycle::d_cntr::QueueModel), equal on every output after every clock.
+/// The entry word is opaque here (layout: [`cycle::d_cntr`](crate::cycle::d_cntr)).
 ///
 /// Ports: in `clock`, `clear`, `lifo`, `push`, `push_data[67]`, `push2`, `push2_data[67]`,
 /// `pop`; out `empty`, `full`, `count[NP1]`, `max_count[NP1]`, `overflow`, `top_data[67]`.
@@ -200,6 +201,8 @@ impl<const N: usize, const NP1: usize, const NM1: usize> PairQueue<N, NP1, NM1> 
 }
 
 impl<const N: usize, const NP1: usize, const NM1: usize> Logic for PairQueue<N, NP1, NM1> {
+    // Long: #[hdl_gen] translates one body; split into sub-blocks, rtl/pair_queue_n4.v and the chips' Verilog would change (new names) and their timing rows go stale.
+    #[allow(clippy::too_many_lines)]
     #[hdl_gen]
     fn update(&mut self) {
         // every register holds unless assigned below
@@ -484,106 +487,6 @@ impl<const N: usize, const NP1: usize, const NM1: usize> PairQueue<N, NP1, NM1> 
     }
 }
 
-/// A random operation sequence for a queue of `2^n` entries: phases of push-heavy,
-/// pop-heavy and balanced mixes (push and pop in one cycle included, a third of the pushes
-/// with a second entry on the second write port, a few of those alone), each long enough to
-/// fill or drain the queue, both orders, clears in between and while not empty; never a
-/// pop on an empty queue. Starts with a clear.
-pub fn random_ops(rng: &mut impl Rng, n: u32, len: usize) -> Vec<QueueIn> {
-    let cap = 1usize << n;
-    let mut model = QueueModel::new(n);
-    let mut ops = vec![];
-    let order = |lifo| if lifo { Order::Lifo } else { Order::Fifo };
-    let mut lifo = rng.random_range(0..2) == 1;
-    ops.push(QueueIn {
-        clear: true,
-        order: order(lifo),
-        ..Default::default()
-    });
-    model.step(&ops[0]);
-    while ops.len() < len {
-        // (push %, pop %) of a phase: fill past full, drain, balanced, push+pop
-        let (p_push, p_pop) =
-            [(85, 10), (15, 80), (50, 50), (90, 90), (60, 30)][rng.random_range(0..5)];
-        let phase = rng.random_range(cap / 2..=2 * cap + 4);
-        for _ in 0..phase {
-            if ops.len() == len {
-                break;
-            }
-            let mut i = QueueIn {
-                push: rng.random_range(0..100) < p_push,
-                pop: rng.random_range(0..100) < p_pop && model.outputs().count > 0,
-                push_data: rng.random::<u128>() & ((1 << W) - 1),
-                ..Default::default()
-            };
-            let second = rng.random::<u128>() & ((1 << W) - 1);
-            match rng.random_range(0..30) {
-                0..10 if i.push => i.push2 = Some(second),
-                10 if !i.push => i.push2 = Some(second),
-                _ => {}
-            }
-            if rng.random_range(0..200) == 0 {
-                lifo = rng.random_range(0..2) == 1;
-                i = QueueIn {
-                    clear: true,
-                    order: order(lifo),
-                    ..i
-                }; // push and pop ignored
-            }
-            model.step(&i);
-            ops.push(i);
-        }
-        if rng.random_range(0..3) == 0 {
-            lifo = !lifo;
-            let i = QueueIn {
-                clear: true,
-                order: order(lifo),
-                ..Default::default()
-            };
-            model.step(&i);
-            ops.push(i);
-        }
-    }
-    ops
-}
-
-/// Vectors of the pair queue: one line per clock, the inputs and the outputs after that
-/// clock's rising edge (`// latency: 1`), from [`QueueModel`] on [`random_ops`].
-pub fn pair_queue_vectors(name: &str, n: u32, len: usize) -> String {
-    let digits = |bits: usize| bits.div_ceil(4);
-    let (dw, dc) = (digits(W), digits(n as usize + 1));
-    let mut out = String::new();
-    let _ = writeln!(out, "// clear lifo push push_data push2 push2_data pop empty full count max_count overflow top_data");
-    let _ = writeln!(out, "// latency: 1");
-    let _ = writeln!(
-        out,
-        "// {name}: D_CNTR pair queue, 2^{n} entries of {W} bits; one line per clock: inputs, then the outputs after that clock's rising edge; golden: collision_chip::cycle::d_cntr::QueueModel"
-    );
-    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(0xd_c47 ^ name.len() as u64);
-    let mut model = QueueModel::new(n);
-    for i in random_ops(&mut rng, n, len) {
-        let o = model.step(&i);
-        let _ = writeln!(
-            out,
-            "{:x} {:x} {:x} {:0dw$x} {:x} {:0dw$x} {:x} {:x} {:x} {:0dc$x} {:0dc$x} {:x} {:0dw$x}",
-            i.clear as u8,
-            (i.order == Order::Lifo) as u8,
-            i.push as u8,
-            i.push_data,
-            i.push2.is_some() as u8,
-            i.push2.unwrap_or_default(),
-            i.pop as u8,
-            o.empty as u8,
-            o.full as u8,
-            o.count,
-            o.max_count,
-            o.overflow as u8,
-            o.top_data
-        );
-    }
-    out
-}
-
 // DCntr reads the entry word's fields (`cycle::d_cntr::pack`): node ids at bits 0, 16
 // (pair 0's a, b), 33, 49 (pair 1's), flips at 32, 65, `len - 1` at 66.
 const _: () = assert!(W == 67);
@@ -808,6 +711,8 @@ impl<const N: usize, const NP1: usize, const NM1: usize> Default for DCntr<N, NP
 }
 
 impl<const N: usize, const NP1: usize, const NM1: usize> Logic for DCntr<N, NP1, NM1> {
+    // Long: #[hdl_gen] translates one body; split into sub-blocks, the chips' Verilog would change (new names) and their timing rows go stale.
+    #[allow(clippy::too_many_lines)]
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(self, clock, ahd_head, ahd_tail, ahd_pairs, ent_second, last_ok, last_a, last_b);

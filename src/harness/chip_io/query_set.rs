@@ -1,0 +1,850 @@
+//! The RTL query set: the queries that run on the rust-hdl chips (tb/rtl_chip.rs) and, from
+//! `vectors/chip/`, on their Verilog, and the files that carry them there.
+
+use super::QueryImage;
+use crate::chip::config::{ChipConfig, MemLayout};
+use crate::chip::memory::MemTiming;
+use crate::chip::reg::Mode;
+use crate::chip::reg::Order::{self, Fifo, Lifo};
+use crate::chip::rtl::{self as chips, ChipKind};
+use crate::cycle::drive::Reader;
+use crate::pose::Pose;
+use crate::traversal::QueryResult;
+use std::fmt::Write as _;
+
+/// A query of the RTL test set: two meshes, a pose, order, mode and memory timing. The
+/// same set runs in rust-hdl (tb/rtl_chip.rs) and, from `vectors/chip/`, in Verilog.
+#[derive(Clone, Debug)]
+pub struct ChipQuery {
+    pub name: &'static str,
+    /// Built-in mesh names ([`crate::mesh::builtin`]), or `bunny-patch:N`: the N bunny
+    /// triangles whose centroids are nearest to triangle 0's.
+    pub a: &'static str,
+    pub b: &'static str,
+    pub pose: crate::pose::Pose,
+    /// The chip that runs it.
+    pub chip: ChipKind,
+    pub order: Order,
+    pub mode: Mode,
+    pub timing: MemTiming,
+    /// How the host reads results.
+    pub reader: Reader,
+    /// The memory port (register [`PORT`](crate::chip::reg::PORT)): node pairs prefetched, requests outstanding at
+    /// most, clocks between DOP issues (1: the queue's second write port), the credit.
+    pub prefetch: u32,
+    pub outstanding: u32,
+    pub issue_spacing: u32,
+    pub credit: u32,
+    /// Lines of A's triangle cache (register [`TRI_CACHE`](crate::chip::reg::TRI_CACHE); 1: the single word held).
+    pub tri_cache: u32,
+    /// The memory layout (register [`MODE`](crate::chip::reg::MODE) bit 2; `records` on a chip that reads it).
+    pub layout: MemLayout,
+    /// Too long for rust-hdl (more than 500 s at [`ChipKind::rtl_clocks_per_second`]): its
+    /// trace comes from the cycle model, and Verilator must reproduce it.
+    pub large: bool,
+}
+
+/// The triangles of a [`ChipQuery`] mesh spec.
+pub fn query_mesh(spec: &str) -> Result<Vec<crate::dop::tree::Tri>, String> {
+    if let Some(n) = spec.strip_prefix("bunny-patch:") {
+        let n: usize = n
+            .parse()
+            .map_err(|_| format!("`{spec}`: the patch size is not a number"))?;
+        let tris = crate::mesh::builtin("bunny")
+            .map_err(|e| e.to_string())?
+            .triangles_f64();
+        let c = |t: &crate::dop::tree::Tri| (t[0].coords + t[1].coords + t[2].coords) / 3.0;
+        let c0 = c(&tris[0]);
+        let mut idx: Vec<usize> = (0..tris.len()).collect();
+        idx.sort_by(|&i, &j| {
+            (c(&tris[i]) - c0)
+                .norm()
+                .total_cmp(&(c(&tris[j]) - c0).norm())
+        });
+        return Ok(idx[..n.min(tris.len())].iter().map(|&i| tris[i]).collect());
+    }
+    Ok(crate::mesh::builtin(spec)
+        .map_err(|e| e.to_string())?
+        .triangles_f64())
+}
+
+/// A query ready to run: the golden model's images and all-pairs answer, and the chip's
+/// memory image and register writes.
+pub struct PreparedQuery {
+    pub chip: crate::query::Chip,
+    pub golden_all: QueryResult,
+    pub image: QueryImage,
+}
+
+impl ChipQuery {
+    /// The cycle model's parameters of this query: the RTL chip's, with its memory and port.
+    pub fn params(&self) -> crate::chip::params::Params {
+        crate::chip::params::Params {
+            memory: self.timing.into(),
+            prefetch: self.prefetch,
+            outstanding: self.outstanding,
+            issue_spacing: self.issue_spacing,
+            credit: self.credit,
+            ..crate::chip::params::Params::of(self.chip)
+        }
+    }
+
+    pub fn prepare(&self) -> Result<PreparedQuery, String> {
+        let cfg = ChipConfig {
+            tri_cache: self.tri_cache,
+            layout: self.layout,
+            ..self.chip.config()
+        };
+        let chip = crate::query::Chip::new(&query_mesh(self.a)?, &query_mesh(self.b)?, cfg)?;
+        let golden_all = chip.query(&self.pose, Mode::All, crate::traversal::Traversal::Fifo);
+        let image = QueryImage::new(
+            self.chip,
+            &chip.a,
+            &chip.b,
+            &chip.setup(&self.pose),
+            self.order,
+            self.mode,
+            &self.params(),
+            &cfg,
+        )?;
+        Ok(PreparedQuery {
+            chip,
+            golden_all,
+            image,
+        })
+    }
+}
+
+/// The RTL query set. Small (rust-hdl in lockstep with the cycle model, in `cargo test`):
+/// both orders and modes, three memory timings, procedural spheres and a bunny patch
+/// against a slightly shifted copy of itself (sure hits and many uncertain pairs), and two
+/// spheres apart (the root test only). Large (10^4 to 10^5 cycles; the exported Verilog
+/// under Verilator in CI against the cycle model's traces): a few hundred triangles, both
+/// orders and modes, several memory timings, a host that reads results slowly enough to
+/// stall the traversal, sure hits mixed with uncertain pairs.
+pub fn queries() -> Vec<ChipQuery> {
+    let p = Poses::new();
+    [
+        e8m15_k6(&p),
+        port(&p),
+        tri_cache(&p),
+        k24(&p),
+        k24_records(&p),
+        k24r(&p),
+        fold16(&p),
+        dop6tri32(&p),
+    ]
+    .concat()
+}
+
+/// The poses of the set (B in A's frame): spheres that overlap, a bunny patch against a
+/// slightly shifted copy of itself, and the large queries' spheres.
+struct Poses {
+    spheres: Pose,
+    patch: Pose,
+    big_spheres: Pose,
+}
+
+impl Poses {
+    fn new() -> Self {
+        Poses {
+            spheres: Pose::new(10.0, 20.0, 30.0, 0.8, 0.1, 0.0),
+            patch: Pose::new(0.0, 0.0, 0.0, 0.002, 0.001, 0.0),
+            big_spheres: Pose::new(10.0, 20.0, 30.0, 0.9, 0.1, 0.05),
+        }
+    }
+}
+
+/// A small query of mesh `a` against itself on the k = 6 e8m15 chip, its memory port and
+/// triangle cache at their reset point, the host reading results at full speed.
+fn q(
+    name: &'static str,
+    a: &'static str,
+    pose: Pose,
+    order: Order,
+    mode: Mode,
+    latency: u32,
+    interval: u32,
+) -> ChipQuery {
+    ChipQuery {
+        name,
+        a,
+        b: a,
+        pose,
+        chip: ChipKind::K6E8m15,
+        order,
+        mode,
+        timing: MemTiming {
+            latency,
+            interval,
+            bus_bits: None,
+        },
+        reader: Reader::default(),
+        prefetch: 0,
+        outstanding: 1,
+        issue_spacing: 2,
+        credit: chips::CREDIT as u32,
+        tri_cache: 1,
+        layout: MemLayout::Words,
+        large: false,
+    }
+}
+
+/// [`q`], large, the host reading a result every `period` clocks.
+fn big(
+    name: &'static str,
+    a: &'static str,
+    pose: Pose,
+    order: Order,
+    mode: Mode,
+    latency: u32,
+    interval: u32,
+    period: u32,
+) -> ChipQuery {
+    ChipQuery {
+        reader: Reader { period },
+        large: true,
+        ..q(name, a, pose, order, mode, latency, interval)
+    }
+}
+
+/// The k = 6 e8m15 chip at the reset point of its memory port: spheres, a bunny
+/// patch and spheres apart (rust-hdl), and large queries (Verilator).
+fn e8m15_k6(p: &Poses) -> Vec<ChipQuery> {
+    vec![
+        q(
+            "sphere_fifo_all",
+            "sphere:12",
+            p.spheres,
+            Fifo,
+            Mode::All,
+            1,
+            1,
+        ),
+        q(
+            "sphere_lifo_all",
+            "sphere:12",
+            p.spheres,
+            Lifo,
+            Mode::All,
+            3,
+            2,
+        ),
+        q(
+            "sphere_fifo_first",
+            "sphere:12",
+            p.spheres,
+            Fifo,
+            Mode::First,
+            2,
+            1,
+        ),
+        q(
+            "sphere_lifo_first",
+            "sphere:12",
+            p.spheres,
+            Lifo,
+            Mode::First,
+            1,
+            1,
+        ),
+        q(
+            "bunny_lifo_all",
+            "bunny-patch:12",
+            p.patch,
+            Lifo,
+            Mode::All,
+            1,
+            1,
+        ),
+        q(
+            "bunny_fifo_first",
+            "bunny-patch:12",
+            p.patch,
+            Fifo,
+            Mode::First,
+            1,
+            1,
+        ),
+        q(
+            "apart_lifo_first",
+            "sphere:12",
+            Pose::new(10.0, 20.0, 30.0, 3.0, 0.1, 0.0),
+            Lifo,
+            Mode::First,
+            1,
+            1,
+        ),
+        // sure hits and uncertain pairs; the FIFO holds about 1,000 entries at its widest
+        big(
+            "big_sphere_fifo_all",
+            "sphere:200",
+            p.big_spheres,
+            Fifo,
+            Mode::All,
+            1,
+            1,
+            1,
+        ),
+        big(
+            "big_sphere_lifo_all",
+            "sphere:320",
+            p.big_spheres,
+            Lifo,
+            Mode::All,
+            4,
+            2,
+            1,
+        ),
+        // the host reads one result in 40 clocks: TRI_UNIT's FIFO fills and the credit
+        // stalls the DOP unit
+        big(
+            "big_patch_lifo_all_slow_host",
+            "bunny-patch:300",
+            p.patch,
+            Lifo,
+            Mode::All,
+            2,
+            1,
+            40,
+        ),
+        // in e8m15 the first sure hit comes after 180 uncertain results (a long first-hit query)
+        big(
+            "big_patch_fifo_first",
+            "bunny-patch:120",
+            p.patch,
+            Fifo,
+            Mode::First,
+            3,
+            1,
+            1,
+        ),
+        big(
+            "big_patch_lifo_first",
+            "bunny-patch:300",
+            p.patch,
+            Lifo,
+            Mode::First,
+            1,
+            1,
+            1,
+        ),
+    ]
+}
+
+/// The prefetching memory port (register `reg::PORT`): node words asked for pairs ahead,
+/// several requests outstanding, at a memory latency of 8; an issue every clock (both child
+/// entries pushed in one) with a credit of 24 to 48 but in the last.
+fn port(p: &Poses) -> Vec<ChipQuery> {
+    vec![
+        ChipQuery {
+            prefetch: 6,
+            outstanding: 8,
+            issue_spacing: 1,
+            credit: 32,
+            ..q(
+                "sphere_lifo_prefetch",
+                "sphere:12",
+                p.spheres,
+                Lifo,
+                Mode::All,
+                8,
+                1,
+            )
+        },
+        ChipQuery {
+            prefetch: 3,
+            outstanding: 4,
+            issue_spacing: 1,
+            credit: 24,
+            ..q(
+                "bunny_fifo_prefetch",
+                "bunny-patch:12",
+                p.patch,
+                Fifo,
+                Mode::First,
+                8,
+                1,
+            )
+        },
+        ChipQuery {
+            prefetch: 14,
+            outstanding: 16,
+            issue_spacing: 1,
+            credit: 48,
+            ..big(
+                "big_sphere_lifo_prefetch",
+                "sphere:320",
+                p.big_spheres,
+                Lifo,
+                Mode::All,
+                8,
+                1,
+                1,
+            )
+        },
+        ChipQuery {
+            prefetch: 14,
+            outstanding: 16,
+            ..big(
+                "big_sphere_fifo_prefetch",
+                "sphere:200",
+                p.big_spheres,
+                Fifo,
+                Mode::All,
+                8,
+                1,
+                1,
+            )
+        },
+    ]
+}
+
+/// A's triangle cache (register `reg::TRI_CACHE`): 4 lines, so that lines are shared and
+/// replaced, at full speed (rust-hdl); 128 lines (WSCG'03) on a bunny patch.
+fn tri_cache(p: &Poses) -> Vec<ChipQuery> {
+    vec![
+        ChipQuery {
+            prefetch: 6,
+            outstanding: 8,
+            issue_spacing: 1,
+            credit: 32,
+            tri_cache: 4,
+            ..q(
+                "sphere_fifo_cache",
+                "sphere:12",
+                p.spheres,
+                Fifo,
+                Mode::All,
+                8,
+                1,
+            )
+        },
+        ChipQuery {
+            prefetch: 14,
+            outstanding: 16,
+            issue_spacing: 1,
+            credit: 48,
+            tri_cache: 128,
+            ..big(
+                "big_patch_lifo_cache",
+                "bunny-patch:300",
+                p.patch,
+                Lifo,
+                Mode::All,
+                8,
+                1,
+                1,
+            )
+        },
+    ]
+}
+
+/// The papers' chip (k = 24, binary32): the root test only (Icarus), a short first-hit
+/// query at full speed (rust-hdl), whole queries at full speed and at the reset point.
+fn k24(p: &Poses) -> Vec<ChipQuery> {
+    vec![
+        ChipQuery {
+            chip: ChipKind::K24B32,
+            ..q(
+                "k24_apart_lifo_first",
+                "sphere:12",
+                Pose::new(10.0, 20.0, 30.0, 3.0, 0.1, 0.0),
+                Lifo,
+                Mode::First,
+                1,
+                1,
+            )
+        },
+        ChipQuery {
+            chip: ChipKind::K24B32,
+            prefetch: 3,
+            outstanding: 4,
+            issue_spacing: 1,
+            credit: 24,
+            ..q(
+                "k24_sphere_lifo_first",
+                "sphere:12",
+                p.spheres,
+                Lifo,
+                Mode::First,
+                8,
+                1,
+            )
+        },
+        ChipQuery {
+            chip: ChipKind::K24B32,
+            prefetch: 14,
+            outstanding: 16,
+            issue_spacing: 1,
+            credit: 48,
+            ..big(
+                "k24_big_sphere_lifo_prefetch",
+                "sphere:320",
+                p.big_spheres,
+                Lifo,
+                Mode::All,
+                8,
+                1,
+                1,
+            )
+        },
+        ChipQuery {
+            chip: ChipKind::K24B32,
+            prefetch: 14,
+            outstanding: 16,
+            issue_spacing: 1,
+            credit: 63,
+            ..big(
+                "k24_big_sphere_fifo_prefetch",
+                "sphere:200",
+                p.big_spheres,
+                Fifo,
+                Mode::All,
+                8,
+                1,
+                1,
+            )
+        },
+        ChipQuery {
+            chip: ChipKind::K24B32,
+            ..big(
+                "k24_big_patch_lifo_first",
+                "bunny-patch:300",
+                p.patch,
+                Lifo,
+                Mode::First,
+                2,
+                1,
+                1,
+            )
+        },
+        ChipQuery {
+            chip: ChipKind::K24B32,
+            prefetch: 14,
+            outstanding: 16,
+            issue_spacing: 1,
+            credit: 48,
+            tri_cache: 128,
+            ..big(
+                "k24_big_sphere_fifo_cache",
+                "sphere:200",
+                p.big_spheres,
+                Fifo,
+                Mode::All,
+                8,
+                1,
+                1,
+            )
+        },
+    ]
+}
+
+/// The papers' chip reading the records layout (register `reg::MODE` bit 2: sibling nodes
+/// in one 2,048-bit record, triangles in leaf order, one record held per object): a bunny
+/// patch through a 2-line triangle cache at full speed (rust-hdl), whole queries at full
+/// speed through the 128-line cache and at the reset point.
+fn k24_records(p: &Poses) -> Vec<ChipQuery> {
+    vec![
+        ChipQuery {
+            chip: ChipKind::K24B32,
+            layout: MemLayout::Records,
+            prefetch: 3,
+            outstanding: 4,
+            issue_spacing: 1,
+            credit: 24,
+            tri_cache: 2,
+            ..q(
+                "k24_rec_patch_fifo_all",
+                "bunny-patch:4",
+                p.patch,
+                Fifo,
+                Mode::All,
+                8,
+                1,
+            )
+        },
+        ChipQuery {
+            chip: ChipKind::K24B32,
+            layout: MemLayout::Records,
+            prefetch: 14,
+            outstanding: 16,
+            issue_spacing: 1,
+            credit: 48,
+            tri_cache: 128,
+            ..big(
+                "k24_big_rec_sphere_fifo_cache",
+                "sphere:200",
+                p.big_spheres,
+                Fifo,
+                Mode::All,
+                8,
+                1,
+                1,
+            )
+        },
+        ChipQuery {
+            chip: ChipKind::K24B32,
+            layout: MemLayout::Records,
+            ..big(
+                "k24_big_rec_patch_lifo_all",
+                "bunny-patch:300",
+                p.patch,
+                Lifo,
+                Mode::All,
+                2,
+                1,
+                1,
+            )
+        },
+    ]
+}
+
+/// The papers' chip with an e8m15 DOP unit (k24r: format e8m15/binary32): the root test
+/// (Icarus), a few leaf pairs (rust-hdl), whole queries at full speed (the second through
+/// the 128-line triangle cache) and at the reset point.
+fn k24r(p: &Poses) -> Vec<ChipQuery> {
+    vec![
+        ChipQuery {
+            chip: ChipKind::K24E8m15B32,
+            ..q(
+                "k24r_apart_lifo_first",
+                "sphere:12",
+                Pose::new(10.0, 20.0, 30.0, 3.0, 0.1, 0.0),
+                Lifo,
+                Mode::First,
+                1,
+                1,
+            )
+        },
+        ChipQuery {
+            chip: ChipKind::K24E8m15B32,
+            prefetch: 3,
+            outstanding: 4,
+            issue_spacing: 1,
+            credit: 24,
+            ..q(
+                "k24r_patch_fifo_all",
+                "bunny-patch:4",
+                p.patch,
+                Fifo,
+                Mode::All,
+                8,
+                1,
+            )
+        },
+        ChipQuery {
+            chip: ChipKind::K24E8m15B32,
+            prefetch: 14,
+            outstanding: 16,
+            issue_spacing: 1,
+            credit: 63,
+            ..big(
+                "k24r_big_sphere_fifo_prefetch",
+                "sphere:200",
+                p.big_spheres,
+                Fifo,
+                Mode::All,
+                8,
+                1,
+                1,
+            )
+        },
+        ChipQuery {
+            chip: ChipKind::K24E8m15B32,
+            prefetch: 14,
+            outstanding: 16,
+            issue_spacing: 1,
+            credit: 48,
+            tri_cache: 128,
+            ..big(
+                "k24r_big_sphere_lifo_cache",
+                "sphere:320",
+                p.big_spheres,
+                Lifo,
+                Mode::All,
+                8,
+                1,
+                1,
+            )
+        },
+        ChipQuery {
+            chip: ChipKind::K24E8m15B32,
+            ..big(
+                "k24r_big_patch_lifo_first",
+                "bunny-patch:300",
+                p.patch,
+                Lifo,
+                Mode::First,
+                2,
+                1,
+                1,
+            )
+        },
+    ]
+}
+
+/// The k = 6 chip with TRI_UNIT folded to a pair every 16 clocks: the root test
+/// (Icarus), a bunny patch whose leaf pairs wait for the unit's slots at full speed (rust-hdl),
+/// whole queries at full speed and at the reset point (Verilator; rust-hdl runs this chip ten
+/// times faster than `chip_e8m15_k6`, so they are not `large`, but only the first two run in
+/// rust-hdl).
+fn fold16(p: &Poses) -> Vec<ChipQuery> {
+    vec![
+        ChipQuery {
+            chip: ChipKind::K6E8m15Fold16,
+            ..q(
+                "fold16_apart_lifo_first",
+                "sphere:12",
+                Pose::new(10.0, 20.0, 30.0, 3.0, 0.1, 0.0),
+                Lifo,
+                Mode::First,
+                1,
+                1,
+            )
+        },
+        ChipQuery {
+            chip: ChipKind::K6E8m15Fold16,
+            prefetch: 3,
+            outstanding: 4,
+            issue_spacing: 1,
+            credit: 24,
+            ..q(
+                "fold16_patch_fifo_all",
+                "bunny-patch:12",
+                p.patch,
+                Fifo,
+                Mode::All,
+                8,
+                1,
+            )
+        },
+        ChipQuery {
+            chip: ChipKind::K6E8m15Fold16,
+            prefetch: 14,
+            outstanding: 16,
+            issue_spacing: 1,
+            credit: 48,
+            ..q(
+                "fold16_sphere_lifo_prefetch",
+                "sphere:320",
+                p.big_spheres,
+                Lifo,
+                Mode::All,
+                8,
+                1,
+            )
+        },
+        ChipQuery {
+            chip: ChipKind::K6E8m15Fold16,
+            ..q(
+                "fold16_patch_lifo_first",
+                "bunny-patch:300",
+                p.patch,
+                Lifo,
+                Mode::First,
+                1,
+                1,
+            )
+        },
+    ]
+}
+
+/// The k = 6 chip with both units folded, the DOP unit a pair every 6 clocks and TRI_UNIT every
+/// 32 (the chip for an LFE5U-85F): the root test (Icarus), a bunny patch at full
+/// speed whose pairs wait for both units' slots (rust-hdl), whole queries at full speed and at
+/// the reset point (Verilator).
+fn dop6tri32(p: &Poses) -> Vec<ChipQuery> {
+    vec![
+        ChipQuery {
+            chip: ChipKind::K6E8m15Dop6Tri32,
+            ..q(
+                "dop6tri32_apart_lifo_first",
+                "sphere:12",
+                Pose::new(10.0, 20.0, 30.0, 3.0, 0.1, 0.0),
+                Lifo,
+                Mode::First,
+                1,
+                1,
+            )
+        },
+        ChipQuery {
+            chip: ChipKind::K6E8m15Dop6Tri32,
+            prefetch: 3,
+            outstanding: 4,
+            issue_spacing: 1,
+            credit: 24,
+            ..q(
+                "dop6tri32_patch_fifo_all",
+                "bunny-patch:12",
+                p.patch,
+                Fifo,
+                Mode::All,
+                8,
+                1,
+            )
+        },
+        ChipQuery {
+            chip: ChipKind::K6E8m15Dop6Tri32,
+            prefetch: 14,
+            outstanding: 16,
+            issue_spacing: 1,
+            credit: 48,
+            ..q(
+                "dop6tri32_sphere_lifo_prefetch",
+                "sphere:320",
+                p.big_spheres,
+                Lifo,
+                Mode::All,
+                8,
+                1,
+            )
+        },
+        ChipQuery {
+            chip: ChipKind::K6E8m15Dop6Tri32,
+            ..q(
+                "dop6tri32_patch_lifo_first",
+                "bunny-patch:300",
+                p.patch,
+                Lifo,
+                Mode::First,
+                1,
+                1,
+            )
+        },
+    ]
+}
+
+/// Writes `<dir>/<query>.mem` and `<dir>/<query>.host` for every query of [`queries`] and
+/// `<dir>/queries.txt` (`name latency interval reader-period chip` per line), the inputs of
+/// scripts/run-chip.sh. The expected traces (`<query>.expect`) are the rust-hdl chip's,
+/// written by `CCHIP_BLESS=1 cargo test --release --test rtl_chip`.
+pub fn write_vectors(dir: &std::path::Path) -> Result<Vec<String>, String> {
+    std::fs::create_dir_all(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
+    let mut list = String::new();
+    let mut written = vec![];
+    for q in queries() {
+        let p = q.prepare()?;
+        for (ext, text) in [
+            ("mem", p.image.memory_hex()),
+            ("host", p.image.writes_hex()),
+        ] {
+            let path = dir.join(format!("{}.{ext}", q.name));
+            std::fs::write(&path, text).map_err(|e| format!("{}: {e}", path.display()))?;
+            written.push(path.display().to_string());
+        }
+        let _ = writeln!(
+            list,
+            "{} {} {} {} {}",
+            q.name,
+            q.timing.latency,
+            q.timing.interval,
+            q.reader.period,
+            q.chip.name()
+        );
+    }
+    let path = dir.join("queries.txt");
+    std::fs::write(&path, list).map_err(|e| format!("{}: {e}", path.display()))?;
+    written.push(path.display().to_string());
+    Ok(written)
+}
