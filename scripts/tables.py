@@ -10,7 +10,8 @@ hand. Python's standard library only.
 
 Data: docs/figures/timing.csv, timing_config.csv (scripts/timing-study.sh),
 timing_ecp5.csv (scripts/timing-ecp5.sh, scripts/fpga.sh), area_cells.csv
-(scripts/area-study.sh), accuracy_cycles_uncertain.csv (cchip accuracy --plot) and bench.jsonl
+(scripts/area-study.sh), accuracy_cycles_uncertain.csv (cchip accuracy --plot),
+stored_dops_paper.json and stored_dops_osu018.json (cchip accuracy --dop-bits ... --json) and bench.jsonl
 (the benches' rows: `cargo bench` writes target/bench/<bench>.jsonl, one JSON line per row
 with its date, CPU and commit; a run is published by appending its lines to bench.jsonl).
 """
@@ -209,8 +210,33 @@ def headline():
                "the user guide's Speed chapter has the rows")
 
 
+def stored_dops():
+    """Stored DOP precision on DATE'05's DDR2 at the paper's 800 MHz and at the chip's OSU
+    clock: the deterministic counts of `cchip accuracy --json` (binary32, outward)."""
+    def load(tech):
+        with open(FIG / f"stored_dops_{tech}.json") as f:
+            return {(r["mesh"], str(r["dop_bits"])): r for r in json.load(f)
+                    if r["format"] == "binary32" and r["dop_rounding"] == "outward"}
+    paper, osu = load("paper"), load("osu018")
+    body = []
+    for (mesh, bits), r in paper.items():
+        o, q = osu[(mesh, bits)], r["queries"]
+        body.append([mesh, bits, n(round(r["dop_tests"] / q)), f"{r['memory_bytes'] / q / 1024:.1f}",
+                     n(round(r["cycles"] / q)), f"{r['dop_tests'] / r['cycles']:.3f}",
+                     n(round(o["cycles"] / o["queries"])), f"{o['dop_tests'] / o['cycles']:.3f}"])
+    clock = next(iter(osu.values()))["period_ns"]
+    cmd = ("`cchip accuracy --presets date05 --formats binary32,e8m15 --dop-bits full,16,8,4,2,1 "
+           "--technology paper --json` (and `--technology osu018`), the default sweep")
+    return table(["mesh", "stored DOP bits", "DOP tests / query", "memory KiB / query",
+                  "clocks / query, 800 MHz", "DOP tests / clock, 800 MHz",
+                  "clocks / query, OSU clock", "DOP tests / clock, OSU clock"], body) + "\n\n" + \
+        source(f"{cmd}; the OSU clock {clock:.3f} ns, chip_b32_k24's (estimated for codes: no RTL decode stage); "
+               "`docs/figures/stored_dops_paper.json`, `stored_dops_osu018.json`")
+
+
 TABLES = {"timing": timing, "timing-config": timing_config, "ecp5": ecp5, "area": area,
-          "chip-sim": chip_sim, "golden-vs-parry": golden_vs_parry, "headline": headline}
+          "chip-sim": chip_sim, "golden-vs-parry": golden_vs_parry, "headline": headline,
+          "stored-dops": stored_dops}
 
 
 def files():

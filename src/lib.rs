@@ -34,7 +34,5 @@ pub mod pose;
 pub mod query;
 pub mod report;
 pub mod rtl;
-// Its tests' `cycle_outputs_timing_and_memory` is 223 lines: split with src/scene/mod.rs.
-#[allow(clippy::too_many_lines)]
 pub mod scene;
 pub mod traversal;

@@ -129,7 +129,7 @@ pub enum MemLayout {
     #[default]
     Words,
     /// Laid out for the bus (WSCG'03 §4.3 stores a node pair per 256-byte burst): the root
-    /// alone, then the two children of every inner node in one record ([`sibling_records`](super::layout::sibling_records):
+    /// alone, then the two children of every inner node in one record ([`treelet_records`](super::layout::treelet_records):
     /// D_CNTR tests both children of a pair next to each other); a memory word of a power of
     /// two bytes holds a node pair or one triangle word; on DDR the records are spread over
     /// the banks ([`RecordMap`](super::layout::RecordMap)). The papers' presets'.

@@ -14,7 +14,7 @@
 //! The memory image holds A's node records, A's triangles, B's node records, B's triangles
 //! ([`image_bases`]), in one of two layouts ([`MemLayout`]): `words`, one node word per
 //! record, every record one memory word of the wider kind; `records`, the
-//! two children of an inner node in one record ([`sibling_records`]), every record padded to
+//! two children of an inner node in one record ([`treelet_records`]), every record padded to
 //! a power of two bytes, and the records of a DDR memory spread over its banks
 //! ([`RecordMap`]): slot 0's node word in bits `0 .. node_bits`, slot 1's from `node_bits`
 //! (a triangle word from bit 0), the chip naming a node `2 record + slot` ([`node_ids`]).
@@ -105,7 +105,33 @@ pub struct Layout {
     /// ([`DopBits`]), the parent's k distances and an exponent per plane
     /// ([`dop::stored`](crate::dop::stored)); else 0.
     pub shared_bits: u32,
+    /// Tree levels a `records` record holds ([`record_levels`]): 1, a node pair.
+    pub levels: u32,
     pub kind: MemLayout,
+}
+
+/// The most tree levels a record holds.
+pub const MAX_RECORD_LEVELS: u32 = 3;
+
+/// Node words a record of `levels` levels holds: a node's children, grandchildren, ...
+pub const fn record_nodes(levels: u32) -> u32 {
+    (1 << (levels + 1)) - 2
+}
+
+/// Whether a node at `depth` (the root's 0) is a treelet root: its record holds its
+/// descendants `1 ..= levels` below it.
+pub const fn treelet_root(depth: u32, levels: u32) -> bool {
+    depth.is_multiple_of(levels)
+}
+
+/// Levels a `records` record holds: with stored DOP precision, as many (up to
+/// [`MAX_RECORD_LEVELS`]) as fit in the configuration's record of full precision, so that a
+/// burst that carried a node pair carries a treelet; else 1.
+fn record_levels(full_record: usize, shared: usize, node: usize, tri: usize) -> u32 {
+    (1..=MAX_RECORD_LEVELS)
+        .rev()
+        .find(|&l| padded_record(shared + record_nodes(l) as usize * node, tri) <= full_record)
+        .unwrap_or(1)
 }
 
 impl Layout {
@@ -115,10 +141,16 @@ impl Layout {
             DopBits::Full => (dop.width(), 0),
             DopBits::Bits(b) => (b, dop.width() + exp_field_bits(dop, b)),
         };
+        let (node, shared) = (node_bits(cfg.k, plane as usize), cfg.k * shared as usize);
+        let full = record_bits(cfg.k, dop.width() as usize, tri_w);
         Layout {
-            node_bits: node_bits(cfg.k, plane as usize) as u32,
+            node_bits: node as u32,
             tri_bits: tri_bits(tri_w) as u32,
-            shared_bits: cfg.k as u32 * shared,
+            shared_bits: shared as u32,
+            levels: match cfg.dop_bits {
+                DopBits::Full => 1,
+                DopBits::Bits(_) => record_levels(full, shared, node, tri_bits(tri_w)),
+            },
             kind: cfg.layout,
         }
     }
@@ -129,7 +161,7 @@ impl Layout {
         match self.kind {
             MemLayout::Words => self.node_bits.max(self.tri_bits),
             MemLayout::Records => padded_record(
-                (2 * self.node_bits + self.shared_bits) as usize,
+                (record_nodes(self.levels) * self.node_bits + self.shared_bits) as usize,
                 self.tri_bits as usize,
             ) as u32,
         }
@@ -151,12 +183,11 @@ impl Layout {
 
 /// The record of every node of a tree whose node `n` has the children `children(n)` (none for
 /// a leaf), nodes numbered in pre-order from the root 0. `words`: node n in record n.
-/// `records`: the root in record 0, alone; the children of the j-th inner node (pre-order,
-/// from 0) in record j + 1, the first child in slot 0, the second in slot 1.
-pub fn node_records(kind: MemLayout, children: &[Option<[u32; 2]>]) -> Vec<u32> {
+/// `records` ([`treelet_records`]).
+pub fn node_records(kind: MemLayout, levels: u32, children: &[Option<[u32; 2]>]) -> Vec<u32> {
     match kind {
         MemLayout::Words => (0..children.len() as u32).collect(),
-        MemLayout::Records => sibling_records(children),
+        MemLayout::Records => treelet_records(children, levels).0,
     }
 }
 
@@ -174,32 +205,52 @@ pub fn tri_records(kind: MemLayout, leaves: &[u32]) -> Vec<u32> {
     rec
 }
 
-/// [`MemLayout::Records`]'s record of every node ([`node_records`]).
-pub fn sibling_records(children: &[Option<[u32; 2]>]) -> Vec<u32> {
-    let mut rec = vec![0; children.len()];
-    let inner = children.iter().flatten();
-    for (j, c) in inner.enumerate() {
-        c.iter().for_each(|&n| rec[n as usize] = j as u32 + 1);
+/// [`MemLayout::Records`]'s record and slot of every node: the root in record 0, alone; then
+/// a record per treelet root (an inner node whose depth is a multiple of `levels`:
+/// [`treelet_root`]), in pre-order from 1, holding its descendants 1 to `levels` below it
+/// breadth first: slot `2^d - 2 + path` at depth d below it, `path` the d child choices (0:
+/// first child) read as a binary number. One level: the j-th inner node's children in record
+/// j + 1, slots 0 and 1.
+pub fn treelet_records(children: &[Option<[u32; 2]>], levels: u32) -> (Vec<u32>, Vec<u32>) {
+    let n = children.len();
+    let (mut rec, mut slot) = (vec![0; n], vec![0; n]);
+    let (mut depth, mut path) = (vec![0u32; n], vec![0u32; n]);
+    let mut next = 1;
+    for p in 0..n {
+        let Some(c) = children[p] else { continue };
+        let own = if treelet_root(depth[p], levels) {
+            next += 1;
+            next - 1
+        } else {
+            rec[p]
+        };
+        let below = if treelet_root(depth[p], levels) {
+            0
+        } else {
+            path[p] * 2
+        };
+        let d = depth[p] % levels + 1;
+        for (which, &m) in c.iter().enumerate() {
+            let m = m as usize;
+            (depth[m], path[m]) = (depth[p] + 1, below + which as u32);
+            (rec[m], slot[m]) = (own, (1 << d) - 2 + path[m]);
+        }
     }
-    rec
+    (rec, slot)
 }
 
 /// The id the chip knows each node by (in D_CNTR's entries and the children fields of node
-/// words). `words`: its pre-order number. `records`: `2 record + slot`, the first child of a
-/// record in slot 0, the second in slot 1, the root in record 0, slot 0, so that the RTL
-/// finds a node's record (`id >> 1`) and its half of the record word (`id & 1`) without a
-/// table.
-pub fn node_ids(kind: MemLayout, children: &[Option<[u32; 2]>]) -> Vec<u32> {
-    let rec = node_records(kind, children);
+/// words). `words`: its pre-order number. `records`: `record << s | slot`
+/// ([`treelet_records`]), `s` the bits of a slot (1 for a node pair), the root in record 0,
+/// slot 0, so that the RTL finds a node's record (`id >> 1`) and its half of the record word
+/// (`id & 1`) without a table.
+pub fn node_ids(kind: MemLayout, levels: u32, children: &[Option<[u32; 2]>]) -> Vec<u32> {
     if kind == MemLayout::Words {
-        return rec;
+        return (0..children.len() as u32).collect();
     }
-    let mut id: Vec<u32> = rec.iter().map(|r| 2 * r).collect();
-    children
-        .iter()
-        .flatten()
-        .for_each(|c| id[c[1] as usize] += 1);
-    id
+    let (rec, slot) = treelet_records(children, levels);
+    let s = record_nodes(levels).next_power_of_two().trailing_zeros();
+    rec.iter().zip(&slot).map(|(r, q)| r << s | q).collect()
 }
 
 /// Where a record lies: its word address in memory. `words`, and any layout on an ideal
@@ -435,14 +486,56 @@ mod tests {
         let c = |a: u32, b: u32| Some([a, b]);
         let tree = [c(1, 4), c(2, 3), None, None, c(5, 6), None, None];
         assert_eq!(
-            node_records(MemLayout::Records, &tree),
+            node_records(MemLayout::Records, 1, &tree),
             [0, 1, 2, 2, 1, 3, 3]
         );
-        assert_eq!(node_records(MemLayout::Words, &tree), [0, 1, 2, 3, 4, 5, 6]);
+        assert_eq!(
+            node_records(MemLayout::Words, 1, &tree),
+            [0, 1, 2, 3, 4, 5, 6]
+        );
         assert_eq!(tri_records(MemLayout::Records, &[3, 0, 2, 1]), [1, 3, 2, 0]);
-        assert_eq!(node_ids(MemLayout::Records, &tree), [0, 2, 4, 5, 3, 6, 7]);
-        assert_eq!(node_ids(MemLayout::Words, &tree), [0, 1, 2, 3, 4, 5, 6]);
+        assert_eq!(
+            node_ids(MemLayout::Records, 1, &tree),
+            [0, 2, 4, 5, 3, 6, 7]
+        );
+        assert_eq!(node_ids(MemLayout::Words, 1, &tree), [0, 1, 2, 3, 4, 5, 6]);
         assert_eq!(tri_records(MemLayout::Words, &[3, 0, 2, 1]), [0, 1, 2, 3]);
+    }
+
+    /// Treelets by hand, a full tree of 15 nodes, pre-order 0(1(2(3, 4), 5(6, 7)), 8(9(10, 11),
+    /// 12(13, 14))). Two levels: the root alone; record 1 the root's children 1, 8 (slots 0,
+    /// 1) and grandchildren 2, 5, 9, 12 (slots 2-5); the depth-2 nodes, treelet roots in
+    /// pre-order, their children in records 2-5. Ids: record << 3 | slot. One level: the
+    /// inner nodes 0, 1, 2, 5, 8, 9, 12 hold their children in records 1-7.
+    #[test]
+    fn treelets_by_hand() {
+        let c = |a: u32, b: u32| Some([a, b]);
+        let tree = [
+            c(1, 8),
+            c(2, 5),
+            c(3, 4),
+            None,
+            None,
+            c(6, 7),
+            None,
+            None,
+            c(9, 12),
+            c(10, 11),
+            None,
+            None,
+            c(13, 14),
+            None,
+            None,
+        ];
+        let two = [0, 1, 1, 2, 2, 1, 3, 3, 1, 1, 4, 4, 1, 5, 5];
+        assert_eq!(node_records(MemLayout::Records, 2, &tree), two);
+        assert_eq!(
+            node_ids(MemLayout::Records, 2, &tree),
+            [0, 8, 10, 16, 17, 11, 24, 25, 9, 12, 32, 33, 13, 40, 41]
+        );
+        let one = [0, 1, 2, 3, 3, 2, 4, 4, 1, 5, 6, 6, 5, 7, 7];
+        assert_eq!(node_records(MemLayout::Records, 1, &tree), one);
+        assert_eq!(record_nodes(2), 6);
     }
 
     /// k = 24 binary32: a node pair is 1,666 bits (209 bytes), a record 256 bytes, one burst

@@ -1,16 +1,18 @@
-//! Stored DOP precision ([`DopBits`]): a node record below the root stores its DOP as
-//! `b`-bit integers relative to its parent's, the way GPU ray tracers store child boxes
+//! Stored DOP precision ([`DopBits`]): a node record below the root stores its DOPs as
+//! `b`-bit integers relative to an ancestor's, the way GPU ray tracers store child boxes
 //! (Ylitie, Karras and Laine, HPG 2017) and Raabe et al. store DOPs on their FPGA.
 //!
-//! A record holds two siblings (the `records` layout) and, once for both, the parent's k
-//! distances `r_i` in the DOP format and a power of two `2^e_i` per plane. A child's plane i
-//! is the code `q_i`, an integer in `0 .. 2^b`, and the chip's decode stage gives
+//! A record (the `records` layout) holds a treelet: a node's children, and as many levels
+//! below them as fit ([`Layout::levels`](crate::chip::layout::Layout)); once for all, the
+//! treelet root's k distances `r_i` in the DOP format and a power of two `2^e_i` per plane.
+//! A node's plane i is the code `q_i`, an integer in `0 .. 2^b`, and the chip's decode
+//! stage gives
 //!
 //! `d'_i = r_i ⊖ q_i 2^e_i`,
 //!
 //! one subtraction in the DOP format with the DOP datapath's rounding ([`decode`]). The host
-//! ([`encode`]) picks the largest `q_i` for which `d'_i >= d_i`, the child's stored distance,
-//! so every decoded DOP contains the stored one, which contains the child's triangles
+//! ([`encode`]) picks the largest `q_i` for which `d'_i >= d_i`, the node's stored distance,
+//! so every decoded DOP contains the stored one, which contains the node's triangles
 //! (docs/explanation/accuracy.md, "Stored DOP precision"): a coarser DOP can add overlaps,
 //! never lose one. `q_i = 0` decodes to `r_i >= d_i` exactly, so a code always exists.
 
@@ -74,19 +76,30 @@ pub fn encode(fmt: Format, rnd: Rounding, bits: u32, r: f64, d: f64, e: i32) -> 
     lo
 }
 
-/// One record's exponents: per plane, [`plane_exp`] of its children's widest gap below the
-/// parent `r` (`children`: the children's stored distances).
-pub fn record_exps(fmt: Format, bits: u32, r: &[f64], children: [&[f64]; 2]) -> Vec<i16> {
-    (0..r.len())
-        .map(|i| {
-            let gap = (r[i] - children[0][i]).max(r[i] - children[1][i]);
-            plane_exp(fmt, bits, if gap.is_finite() { gap } else { 0.0 }) as i16
-        })
+/// One record's exponents: per plane, [`plane_exp`] of the widest gap of its nodes below
+/// its reference `r` (`nodes`: their stored distances).
+pub fn record_exps<'a>(
+    fmt: Format,
+    bits: u32,
+    r: &[f64],
+    nodes: impl Iterator<Item = &'a [f64]>,
+) -> Vec<i16> {
+    let mut gap = vec![0.0f64; r.len()];
+    for d in nodes {
+        for i in 0..r.len() {
+            let g = r[i] - d[i];
+            if g.is_finite() {
+                gap[i] = gap[i].max(g);
+            }
+        }
+    }
+    gap.iter()
+        .map(|&g| plane_exp(fmt, bits, g) as i16)
         .collect()
 }
 
-/// A child's decoded distances `out` from its stored ones `d`, its record's reference `r`
-/// and exponents `e`: [`encode`] then [`decode`], plane by plane.
+/// A node's decoded distances from its stored ones `d` (replaced), its record's reference
+/// `r` and exponents `e`: [`encode`] then [`decode`], plane by plane.
 pub fn round_trip(fmt: Format, rnd: Rounding, bits: DopBits, r: &[f64], e: &[i16], d: &mut [f64]) {
     let DopBits::Bits(b) = bits else { return };
     for i in 0..d.len() {
@@ -103,9 +116,9 @@ mod tests {
     const B32: Format = Format::BINARY32;
     const UP: Rounding = Rounding::TowardPositive;
 
-    /// By hand: r = 10 over children at 3 and 9 (gap 7), 4 bits: 15 steps of 2^-1 reach 7.5
-    /// >= 7, of 2^-2 only 3.75, so e = -1; d = 3 is 14 steps (10 - 7 = 3, exact), d = 3.1
-    /// is 13 (3.5: 14 steps would be 3 < 3.1), d = 9 is 2 (9), d = 10 is 0.
+    /// By hand: r = 10 over children at 3 and 9 (gap 7), 4 bits: 15 steps of 2^-1 reach
+    /// 7.5, at least 7, and 15 of 2^-2 only 3.75, so e = -1; d = 3 is 14 steps (10 - 7 = 3,
+    /// exact), d = 3.1 is 13 (3.5: 14 steps would be 3, below 3.1), d = 9 is 2, d = 10 is 0.
     #[test]
     fn codes_by_hand() {
         assert_eq!(plane_exp(B32, 4, 7.0), -1);

@@ -7,6 +7,7 @@ use super::normals::{DopNormals, HALF_LANES};
 use super::stored;
 use super::values::Values;
 use crate::chip::config::{ChipConfig, DopBits, DopRounding, SUPPORTED_K};
+use crate::chip::layout::{treelet_root, Layout};
 use crate::format::{Format, Rounding};
 use nalgebra::Point3;
 use std::cell::RefCell;
@@ -55,15 +56,19 @@ pub struct DopTree {
 #[derive(Clone, Debug)]
 struct Stored {
     bits: DopBits,
-    /// The j-th inner node's children's record's exponents at `j*k .. (j+1)*k`.
+    /// Tree levels a record holds ([`Layout::levels`]): its treelet root's descendants.
+    levels: u32,
+    /// The record of the j-th inner node's treelet, if it is a treelet root
+    /// ([`treelet_root`]): its exponents at `j*k .. (j+1)*k`.
     exps: Vec<i16>,
     /// The j-th inner node's decoded distances (the root's: its own), as `dops`.
     decoded: Values,
-    /// Each triangle's leaf's parent's rank among the inner nodes ([`NO_PARENT`]: the root).
-    leaf_parent: Vec<u32>,
+    /// Each triangle's leaf's treelet root's rank among the inner nodes ([`NO_ROOT`]: the
+    /// leaf is the tree's root).
+    leaf_root: Vec<u32>,
 }
 
-const NO_PARENT: u32 = u32::MAX;
+const NO_ROOT: u32 = u32::MAX;
 
 /// The bit of a leaf in [`DopTree`]'s links (so trees of up to 2^31 nodes).
 const LEAF: u32 = 1 << 31;
@@ -174,7 +179,8 @@ impl DopTree {
                 bits: cfg.dop_bits,
                 exps: Vec::with_capacity((n - 1) * k),
                 decoded: Values::new(cfg.format.dop, (n - 1) * k),
-                leaf_parent: vec![NO_PARENT; n],
+                levels: Layout::new(cfg).levels,
+                leaf_root: vec![NO_ROOT; n],
             }),
         };
         let mut idx: Vec<u32> = (0..n as u32).collect();
@@ -280,19 +286,20 @@ impl DopTree {
         }
     }
 
-    /// Triangle `t`'s leaf distances `d` as the chip decodes them from its parent's record,
-    /// if the tree's records store codes.
+    /// Triangle `t`'s leaf distances `d` as the chip decodes them from its record, if the
+    /// tree's records store codes.
     fn decode_leaf(&self, t: u32, d: &mut [f64]) {
         let Some(s) = &self.stored else { return };
-        let j = s.leaf_parent[t as usize];
-        if j != NO_PARENT {
-            self.decode_child(s, j as usize, d);
+        let j = s.leaf_root[t as usize];
+        if j != NO_ROOT {
+            self.decode_member(s, j as usize, d);
         }
     }
 
-    /// `d`, the distances of a child of the j-th inner node, decoded from their record
-    /// ([`stored::round_trip`]: the parent's stored row and the record's exponents).
-    fn decode_child(&self, s: &Stored, j: usize, d: &mut [f64]) {
+    /// `d`, the distances of a node of the j-th inner node's treelet, decoded from their
+    /// record ([`stored::round_trip`]: the treelet root's stored row and the record's
+    /// exponents).
+    fn decode_member(&self, s: &Stored, j: usize, d: &mut [f64]) {
         let k = self.k;
         let mut r = [0.0; 2 * HALF_LANES];
         self.dops.read(j * k, &mut r[..k]);
@@ -306,26 +313,38 @@ impl DopTree {
         );
     }
 
-    /// The j-th inner node's children's record ([`Stored`]): its exponents, each inner
-    /// child's decoded row, each leaf child's parent.
-    fn store_children(&mut self, j: usize, children: [u32; 2], rows: [&Dop; 2]) {
+    /// The record of the treelet of node `me`, the j-th inner node ([`Stored`]): its
+    /// exponents over all its nodes, each inner node's decoded row, each leaf's root.
+    fn store_treelet(&mut self, j: usize, me: u32) {
         let Some(mut s) = self.stored.take() else {
             return;
         };
-        let k = self.k;
+        let (k, mut members, mut level) = (self.k, vec![], vec![me]);
+        for _ in 0..s.levels {
+            level = level
+                .iter()
+                .filter_map(|&n| match self.node(n) {
+                    Node::Inner(c) => Some(c),
+                    Node::Leaf(_) => None,
+                })
+                .flatten()
+                .collect();
+            members.extend_from_slice(&level);
+        }
+        let rows: Vec<Dop> = members.iter().map(|&n| self.true_dop(n)).collect();
         let mut r = [0.0; 2 * HALF_LANES];
         self.dops.read(j * k, &mut r[..k]);
         let DopBits::Bits(b) = s.bits else {
             unreachable!("a tree stores codes only with bits")
         };
-        let e = stored::record_exps(self.fmt, b, &r[..k], [&rows[0][..], &rows[1][..]]);
+        let e = stored::record_exps(self.fmt, b, &r[..k], rows.iter().map(|d| &d[..]));
         s.exps[j * k..][..k].copy_from_slice(&e);
-        for (c, row) in children.into_iter().zip(rows) {
+        for (&c, row) in members.iter().zip(&rows) {
             match self.links[c as usize] {
-                l if l & LEAF != 0 => s.leaf_parent[(l & !LEAF) as usize] = j as u32,
+                l if l & LEAF != 0 => s.leaf_root[(l & !LEAF) as usize] = j as u32,
                 jc => {
                     let mut d = row.d;
-                    self.decode_child(&s, j, &mut d[..k]);
+                    self.decode_member(&s, j, &mut d[..k]);
                     (0..k).for_each(|i| s.decoded.set(jc as usize * k + i, d[i]));
                 }
             }
@@ -417,7 +436,13 @@ impl DopTree {
         self.second[j] = r;
         let (dl, dr) = (self.true_dop(l), self.true_dop(r));
         (0..k).for_each(|i| self.dops.set(j * k + i, dl[i].max(dr[i])));
-        self.store_children(j, [l, r], [&dl, &dr]);
+        if self
+            .stored
+            .as_ref()
+            .is_some_and(|s| treelet_root(level as u32 - 1, s.levels))
+        {
+            self.store_treelet(j, me);
+        }
         me
     }
 }

@@ -189,9 +189,10 @@ impl ObjectImage {
             .nodes()
             .filter_map(|n| if let Node::Leaf(t) = n { Some(t) } else { None })
             .collect();
+        let levels = Layout::new(cfg).levels;
         let (records, ids, tri_records) = (
-            node_records(cfg.layout, &children),
-            node_ids(cfg.layout, &children),
+            node_records(cfg.layout, levels, &children),
+            node_ids(cfg.layout, levels, &children),
             tri_records(cfg.layout, &leaves),
         );
         ObjectImage {

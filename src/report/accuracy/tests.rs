@@ -1,0 +1,195 @@
+use super::*;
+
+/// Three shards merged give the serial run's rows and table (the host's measured times
+/// aside); a shard missing or given twice is an error.
+#[test]
+fn shards_merge_into_the_serial_run() {
+    let plan = Plan {
+        meshes: vec!["sphere:40".into(), "torus:40".into()],
+        presets: vec![Preset::Rtl, Preset::Wscg03],
+        ks: vec![6],
+        formats: vec![Formats::from(crate::format::Format::REDUCED)],
+        roundings: vec![DopRounding::Outward],
+        sweep: Sweep {
+            distances: vec![1.0, 0.5],
+            orientations: 2,
+            seed: 1,
+        },
+        bus_bits: None,
+        technology: Technology::Osu018,
+        folds: vec![Folds::NONE],
+        dop_bits: vec![DopBits::Full],
+    };
+    let load = |m: &str| {
+        crate::mesh::resolve(m)
+            .map_err(|e| e.to_string())?
+            .scaled_into_unit_cube()
+            .map(|m| m.triangles_f64())
+            .map_err(|e| e.to_string())
+    };
+    let unmeasured = |rows: Vec<Row>| -> Vec<Row> {
+        rows.into_iter()
+            .map(|r| Row {
+                host: HostSums::default(),
+                ..r
+            })
+            .collect()
+    };
+    let serial = unmeasured(run(&plan, load, Shard::ALL, || ()).unwrap());
+    let shard = |k| ShardFile {
+        plan: plan.clone(),
+        shard: Shard { k, n: 3 },
+        rows: run(&plan, load, Shard { k, n: 3 }, || ()).unwrap(),
+    };
+    let files: Vec<ShardFile> = (1..=3).map(shard).collect();
+    let (p, merged) = merge(files.clone()).unwrap();
+    let merged = unmeasured(merged);
+    assert_eq!(p, plan);
+    assert!(serial.iter().all(|r| r.sums.queries == 4) && serial.iter().any(|r| r.sums.cycles > 0));
+    assert_eq!(
+        serial.iter().map(|r| r.sums).collect::<Vec<_>>(),
+        merged.iter().map(|r| r.sums).collect::<Vec<_>>()
+    );
+    assert_eq!(
+        table(&plan, &serial, None).unwrap(),
+        table(&plan, &merged, None).unwrap()
+    );
+    assert!(merge(files[..2].to_vec())
+        .unwrap_err()
+        .contains("shard 3/3 is missing"));
+    assert!(
+        merge(vec![files[0].clone(), files[0].clone(), files[1].clone()])
+            .unwrap_err()
+            .contains("given twice")
+    );
+    // N is the file's: a huge one is a study with shards missing, not an allocation of N
+    let huge = ShardFile {
+        shard: Shard {
+            k: 1,
+            n: usize::MAX,
+        },
+        ..files[0].clone()
+    };
+    let e = merge(vec![huge]).unwrap_err();
+    assert!(
+        e.contains(&format!("shard 2/{} is missing", usize::MAX)),
+        "{e}"
+    );
+}
+
+/// A fold changes the clocks only: the folded rows count the unfolded ones' tests and
+/// pairs, in no fewer clocks; a DOP interval that does not divide k is refused up front.
+#[test]
+fn folds_cost_clocks_and_nothing_else() {
+    let plan = Plan {
+        meshes: vec!["sphere:40".into()],
+        presets: vec![Preset::Date05],
+        ks: vec![6],
+        formats: vec![Formats::from(crate::format::Format::REDUCED)],
+        roundings: vec![DopRounding::Outward],
+        sweep: Sweep {
+            distances: vec![0.5],
+            orientations: 2,
+            seed: 1,
+        },
+        bus_bits: None,
+        technology: Technology::Paper,
+        folds: vec![Folds::NONE, Folds { tri: 32, dop: 6 }],
+        dop_bits: vec![DopBits::Full],
+    };
+    let load = |m: &str| {
+        crate::mesh::resolve(m)
+            .map_err(|e| e.to_string())?
+            .scaled_into_unit_cube()
+            .map(|m| m.triangles_f64())
+            .map_err(|e| e.to_string())
+    };
+    let rows = run(&plan, load, Shard::ALL, || ()).unwrap();
+    let (a, b) = (&rows[0].sums, &rows[1].sums);
+    assert_eq!(
+        (rows[0].folds, rows[1].folds),
+        (Folds::NONE, Folds { tri: 32, dop: 6 })
+    );
+    assert_eq!(
+        (a.dop_tests, a.tri_tests, a.uncertain),
+        (b.dop_tests, b.tri_tests, b.uncertain)
+    );
+    assert!(
+        a.tri_tests > 0 && b.cycles > a.cycles,
+        "{} -> {} clocks",
+        a.cycles,
+        b.cycles
+    );
+    let bad = Plan {
+        folds: vec![Folds { tri: 1, dop: 4 }],
+        ..plan.clone()
+    };
+    assert!(run(&bad, load, Shard::ALL, || ())
+        .unwrap_err()
+        .contains("k = 6, TRI_UNIT interval 1, DOP interval 4"));
+    // the ideal memory's bus is not a DDR preset's: refused there, not quietly left out
+    let bus = Plan {
+        bus_bits: Some(64),
+        ..plan
+    };
+    let e = bus.configs().unwrap_err();
+    assert!(e.starts_with("--bus-bits 64 sets the ideal memory's bus (preset rtl's memory); preset date05's memory is DDR SDRAM on a bus of its own (756 bits)"), "{e}");
+    let rtl = Plan {
+        presets: vec![Preset::Rtl],
+        ..bus
+    }
+    .configs()
+    .unwrap();
+    assert!(rtl.iter().all(|(_, _, p)| p.memory
+        == Memory::Ideal(crate::chip::memory::MemTiming {
+            bus_bits: Some(64),
+            ..Default::default()
+        })));
+}
+
+/// Stored DOP precision costs DOP tests and never a pair: at 8 and 2 bits a plane the
+/// rows find the full records' exact pairs, with no miss and at least their DOP tests; a
+/// preset whose layout cannot store codes is refused, naming the flag.
+#[test]
+fn stored_dops_cost_tests_never_pairs() {
+    let plan = Plan {
+        meshes: vec!["sphere:60".into()],
+        presets: vec![Preset::Date05],
+        ks: vec![6],
+        formats: vec![Formats::from(crate::format::Format::REDUCED)],
+        roundings: vec![DopRounding::Outward],
+        sweep: Sweep {
+            distances: vec![0.5],
+            orientations: 2,
+            seed: 1,
+        },
+        bus_bits: None,
+        technology: Technology::Paper,
+        folds: vec![Folds::NONE],
+        dop_bits: vec![DopBits::Full, DopBits::Bits(8), DopBits::Bits(2)],
+    };
+    let load = |m: &str| {
+        crate::mesh::resolve(m)
+            .map(|m| m.triangles_f64())
+            .map_err(|e| e.to_string())
+    };
+    let rows = run(&plan, load, Shard::ALL, || ()).unwrap();
+    let full = &rows[0].sums;
+    assert_eq!(rows.len(), 3);
+    for r in &rows[1..] {
+        let s = &r.sums;
+        assert_eq!(
+            (s.exact_pairs, s.misses, s.extras),
+            (full.exact_pairs, 0, 0),
+            "{}",
+            r.dop_bits
+        );
+        assert!(s.dop_tests >= full.dop_tests, "{}", r.dop_bits);
+    }
+    let rtl = Plan {
+        presets: vec![Preset::Rtl],
+        ..plan
+    };
+    let e = rtl.configs().unwrap_err();
+    assert!(e.starts_with("--dop-bits 8 on preset rtl: dop_bits = 8 stores each node relative to its parent's DOP"), "{e}");
+}
