@@ -2,7 +2,7 @@
 //! images once, sets up C, c, j and the frame maps per pose, and a traversal runs.
 //! With `oracle`, the exact answer for the same f64 geometry is computed too.
 
-use crate::chip::config::ChipConfig;
+use crate::chip::config::{ChipConfig, DopBits};
 use crate::chip::layout::Layout;
 use crate::chip::params::Params;
 use crate::chip::reg::{self, Mode, Order};
@@ -20,14 +20,23 @@ use serde::Serialize;
 /// build's temporaries and the process's own share; and the exact oracle's placed chunk of B
 /// with its search tree (`ORACLE_CHUNK`). An upper bound of what `cchip run` peaked at
 /// (`/usr/bin/time -v`, the 871k dragon against itself, cycles and accuracy on): 200 bytes
-/// per triangle per object at k = 6, 261 at k = 24 (docs/reference/limits.md).
-pub fn memory_estimate(a: usize, b: usize, k: usize) -> u64 {
-    (a + b) as u64 * (160 + 8 * k as u64) + b.min(ORACLE_CHUNK) as u64 * 256
+/// per triangle per object at k = 6, 261 at k = 24 (docs/reference/limits.md). Stored DOP
+/// precision (`codes`) adds per triangle its inner node's decoded distances (at most 8
+/// bytes each), its record's exponents (2 bytes each) and its leaf's treelet root (4).
+pub fn memory_estimate(a: usize, b: usize, k: usize, codes: bool) -> u64 {
+    let coded = if codes { 10 * k as u64 + 4 } else { 0 };
+    (a + b) as u64 * (160 + 8 * k as u64 + coded) + b.min(ORACLE_CHUNK) as u64 * 256
 }
 
 /// Refuses objects whose setup would not fit in `available` bytes, before anything is built.
-fn check_memory(a: usize, b: usize, k: usize, available: Option<u64>) -> Result<(), String> {
-    let need = memory_estimate(a, b, k);
+fn check_memory(
+    cfg: &ChipConfig,
+    a: usize,
+    b: usize,
+    available: Option<u64>,
+) -> Result<(), String> {
+    let k = cfg.k;
+    let need = memory_estimate(a, b, k, cfg.dop_bits != DopBits::Full);
     match available {
         Some(free) if need > free => Err(format!(
             "objects of {a} and {b} triangles at k = {k} need about {} MB of memory (trees, memory images, triangle words) and this machine has {} MB available: use smaller meshes or a smaller k, or set CCHIP_MAX_MEMORY_MB if more memory is free than /proc/meminfo and the cgroup's limit say",
@@ -64,7 +73,7 @@ impl Chip {
         }
         oracle::check_range(&a, "object A")?;
         oracle::check_range(&b, "object B")?;
-        check_memory(a.len(), b.len(), cfg.k, crate::measure::memory_available()?)?;
+        check_memory(&cfg, a.len(), b.len(), crate::measure::memory_available()?)?;
         // B the same triangles bit for bit as A (a mesh against itself; a signed zero counts):
         // A's image copied, not built again (the tree's build was most of a large mesh's setup)
         let bits = |t: &Tri| t.map(|p| p.coords.map(f64::to_bits));
@@ -355,11 +364,15 @@ mod tests {
     /// what to do.
     #[test]
     fn memory_beyond_the_available_is_refused() {
-        let need = memory_estimate(1 << 20, 1 << 20, 24);
+        let need = memory_estimate(1 << 20, 1 << 20, 24, false);
+        let cfg = ChipConfig::default();
         assert_eq!(need, 2 * (1 << 20) * 352 + (1 << 18) * 256);
-        check_memory(1 << 20, 1 << 20, 24, Some(need)).unwrap();
-        check_memory(1 << 20, 1 << 20, 24, None).unwrap();
-        let e = check_memory(1 << 20, 1 << 20, 24, Some(need - 1)).unwrap_err();
+        // codes: 24 decoded distances (8 bytes), 24 exponents (2) and a root (4) a triangle
+        let coded = memory_estimate(1 << 20, 1 << 20, 24, true);
+        assert_eq!(coded - need, 2 * (1 << 20) * (24 * 10 + 4));
+        check_memory(&cfg, 1 << 20, 1 << 20, Some(need)).unwrap();
+        check_memory(&cfg, 1 << 20, 1 << 20, None).unwrap();
+        let e = check_memory(&cfg, 1 << 20, 1 << 20, Some(need - 1)).unwrap_err();
         assert!(
             e.starts_with("objects of 1048576 and 1048576 triangles at k = 24 need about 768 MB")
                 && e.contains("CCHIP_MAX_MEMORY_MB"),

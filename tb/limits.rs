@@ -93,7 +93,7 @@ fn the_estimate_bounds_the_peak() {
         0
     );
     let peak = ru.ru_maxrss as u64 * 1024; // kB on Linux
-    let estimate = collision_chip::query::memory_estimate(200_000, 200_000, 24);
+    let estimate = collision_chip::query::memory_estimate(200_000, 200_000, 24, false);
     // the process's own baseline (code, the vendored meshes) is not per triangle
     let baseline = 64 << 20;
     assert!(

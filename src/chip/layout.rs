@@ -503,10 +503,11 @@ mod tests {
     }
 
     /// Treelets by hand, a full tree of 15 nodes, pre-order 0(1(2(3, 4), 5(6, 7)), 8(9(10, 11),
-    /// 12(13, 14))). Two levels: the root alone; record 1 the root's children 1, 8 (slots 0,
-    /// 1) and grandchildren 2, 5, 9, 12 (slots 2-5); the depth-2 nodes, treelet roots in
-    /// pre-order, their children in records 2-5. Ids: record << 3 | slot. One level: the
-    /// inner nodes 0, 1, 2, 5, 8, 9, 12 hold their children in records 1-7.
+    /// 12(13, 14))). Two levels: the root alone; record 1 holds the root's children 1 and 8
+    /// (slots 0 and 1) and its grandchildren 2, 5, 9, 12 (slots 2 to 5); the depth-2 nodes are
+    /// treelet roots in pre-order, their children in records 2 to 5; ids are `record << 3 |
+    /// slot`. One level: the inner nodes 0, 1, 2, 5, 8, 9, 12 hold their children in records
+    /// 1 to 7.
     #[test]
     fn treelets_by_hand() {
         let c = |a: u32, b: u32| Some([a, b]);
