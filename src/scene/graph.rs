@@ -192,10 +192,16 @@ impl Unit {
                 format!("node and triangle word requests, {} outstanding{prefetch}{cache}", p.outstanding)
             }
             Unit::MemoryModel => p.memory.describe_at(p.clock_ps),
-            Unit::DopUnit => match p.dop_interval {
-                1 => format!("DOPTRF transform and compare, {} clocks", p.dop_latency),
-                ii => format!("DOPTRF transform and compare on k/{ii} lanes, a pair every {ii} clocks, {} clocks", p.dop_unit_latency()),
-            },
+            Unit::DopUnit => {
+                let decode = match crate::chip::rtl::dop_decode_latency(&s.cfg) {
+                    0 => String::new(),
+                    d => format!(" after the stored DOPs' decode stage, {d} clocks"),
+                };
+                match p.dop_interval {
+                    1 => format!("DOPTRF transform and compare, {} clocks{decode}", p.dop_latency),
+                    ii => format!("DOPTRF transform and compare on k/{ii} lanes, a pair every {ii} clocks, {} clocks{decode}", p.dop_unit_latency()),
+                }
+            }
             Unit::TriUnit => format!("T.CHECK both ways, {} clocks, {}-entry result FIFO", p.tri_latency, p.tri_fifo),
             Unit::ResultPort => "intersecting and uncertain pairs to the host, read every clock".into(),
             Unit::GoldenCheck => "the cycle model's pairs against the golden model's".into(),

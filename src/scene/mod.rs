@@ -8,6 +8,7 @@ pub mod record;
 pub mod run;
 
 use crate::chip::config::{ChipConfig, DopBits, MemLayout};
+use crate::chip::layout::Layout;
 use crate::chip::memory::{Ddr, MemTiming, Memory};
 use crate::chip::params::Params;
 use crate::chip::preset::Preset;
@@ -520,7 +521,16 @@ impl Scene {
                     "timing: queue_entries {}, {}, {}, tri_fifo {}, issue_spacing {}, credit {}, outstanding {}, prefetch {}",
                     p.queue_entries, dop_timing(p), tri_timing(p), p.tri_fifo, p.issue_spacing, p.credit, p.outstanding, p.prefetch
                 ),
-                format!("layout {}, node_cache {}", c.layout, c.node_cache),
+                format!(
+                    "layout {}, node_cache {}, dop_bits {}{}",
+                    c.layout,
+                    c.node_cache,
+                    c.dop_bits,
+                    match c.dop_bits {
+                        DopBits::Full => String::new(),
+                        _ => format!(" ({} tree levels a record)", Layout::new(c).levels),
+                    }
+                ),
             ),
             Architecture::Wscg03 => (
                 format!(
