@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Formal proofs of the chip's control blocks: the pair queue
-# (rtl/pair_queue_n4.v), the result port, the memory port and A's triangle cache (top$result,
-# top$mem_port, top$tri_cache of rtl/chip_e8m15_k6.v); the wrappers in scripts/formal/ around the exported Verilog, unchanged, proven with Yosys and yosys-smtbmc (z3) or, where
+# (rtl/pair_queue_n4.v), the result port, the memory port, A's triangle cache and TRI_UNIT's
+# result FIFO (top$result, top$mem_port, top$tri_cache, top$tri_unit$fifo of
+# rtl/chip_e8m15_k6.v); the wrappers in scripts/formal/ around the exported Verilog, unchanged, proven with Yosys and yosys-smtbmc (z3) or, where
 # SMT BMC is too slow, Yosys's ABC (`bmc3`). Prints PASS/FAIL per proof (a group of
 # properties, listed) and a last line `N passed, M failed`; exits non-zero on a failure.
 #
@@ -58,6 +59,9 @@ PROOFS=(
   "mem_port.cover|mem_port.sv|rtl/chip_e8m15_k6.v|COVER|cover|20|reachable: 16 outstanding, a request and a response at one edge, a spurious memory response ignored, responses to all four destinations"
   "tri_cache.cache|tri_cache.sv|rtl/chip_e8m15_k6.v|CACHE|bmc|5|tracked (any-constant) triangle id, any stale RAM contents, any mask: a hit only after its fill since the last clear, a hit returns its last fill's word (also through the bypass of a fill into the line being read), found while its line holds it"
   "tri_cache.cover|tri_cache.sv|rtl/chip_e8m15_k6.v|COVER|cover|8|reachable: a hit through the bypass, a hit from the RAM, a miss after another id took the line, a miss after a clear, the highest line"
+  "tri_fifo.count|tri_fifo.sv|rtl/chip_e8m15_k6.v|COUNT|ind|1/12|any writes and reads: held = accepted writes - accepted reads (<= 256; a write accepted below 256, a read while one is readable, one edge after its write), addresses that far apart, empty/almost_empty = none readable, full = 256 held, almost_full = 255+ readable, overflow/underflow sticky and raised exactly by a write into a full FIFO/a read of an empty one; under TRI_UNIT's rules (assumed) never raised"
+  "tri_fifo.order|tri_fifo.sv|rtl/chip_e8m15_k6.v|COUNT ORDER|ind|1/8|tracked (any-constant) accepted entry: its RAM row holds it while held, shown on data_out whenever at the head and readable, leaves with exactly one read after exactly the entries accepted before it"
+  "tri_fifo.cover|tri_fifo.sv|rtl/chip_e8m15_k6.v|COVER|cover|8|reachable: a write and a read at one edge, a read while the one entry held is not yet readable, entries after an ignored read of an empty FIFO, an entry read after two ahead of it, 3 readable"
 )
 
 # proofs run only with --all (over a minute of CPU each)
@@ -90,6 +94,12 @@ MUTANTS=(
   "cache_no_bypass|tri_cache.cache|rtl/chip_e8m15_k6.v|s/byp\$d = fill \& (fill_line == next_line);/byp\$d = 1'b0;/"
   "cache_valid_not_cleared|tri_cache.cache|rtl/chip_e8m15_k6.v|/if (clear) begin/,/end/s/valid\$d = 32'h0;/valid\$d = valid\$q;/"
   "cache_hit_ignores_id|tri_cache.cache|rtl/chip_e8m15_k6.v|s/hit = ((valid\$q \& (c_one128 << line)) != 32'h0) \& (held_id == id);/hit = ((valid\$q \& (c_one128 << line)) != 32'h0);/"
+  "tri_fifo_read_when_empty|tri_fifo.count|rtl/chip_e8m15_k6.v|/^module top.tri_unit.fifo.read_logic(/,/^endmodule/s/if (read \& ~is_empty) begin/if (read) begin/"
+  "tri_fifo_underflow_not_sticky|tri_fifo.count|rtl/chip_e8m15_k6.v|/^module top.tri_unit.fifo.read_logic(/,/^endmodule/s/dff_underflow\$d = dff_underflow\$q | (is_empty \& read);/dff_underflow\$d = is_empty \& read;/"
+  "tri_fifo_overflow_on_any_write|tri_fifo.count|rtl/chip_e8m15_k6.v|/^module top.tri_unit.fifo.write_logic(/,/^endmodule/s/dff_overflow\$d = dff_overflow\$q | (is_full \& write);/dff_overflow\$d = dff_overflow\$q | write;/"
+  "tri_fifo_head_not_advanced|tri_fifo.order|rtl/chip_e8m15_k6.v|/^module top.tri_unit.fifo.read_logic(/,/^endmodule/s/ram_read_address = (((read_address\$q + 32'h1) \& fifo_address_mask) \& 8'hff);/ram_read_address = ((read_address\$q \& fifo_address_mask) \& 8'hff);/"
+  "tri_fifo_written_a_row_late|tri_fifo.order|rtl/chip_e8m15_k6.v|/^module top.tri_unit.fifo.write_logic(/,/^endmodule/s/ram_write_address = ((write_address\$q \& fifo_address_mask) \& 8'hff);/ram_write_address = (((write_address\$q + 9'h1) \& fifo_address_mask) \& 8'hff);/"
+  "tri_fifo_entry_changed|tri_fifo.order|rtl/chip_e8m15_k6.v|/^module top.tri_unit.fifo.write_logic(/,/^endmodule/s/ram_write_data = data_in;/ram_write_data = data_in ^ 34'h1;/"
   "lifo_pop_no_wr_ptr_dec|pair_queue.order|rtl/pair_queue_n4.v|s/wr_n = wr_ptr\$q - 32'h1;/wr_n = wr_ptr\$q;/"
   "control_syntax_error|pair_queue.bounds|rtl/pair_queue_n4.v|0,/^endmodule/s//endmodul/"
 )
@@ -124,8 +134,18 @@ mp_hier() {
   echo "$s"
 }
 TC_PREP='hierarchy -top \top$tri_cache; rename \top$tri_cache tri_cache'
-prep_of() { case $1 in pair_queue.*) echo "$PQ_PREP";; result_port.*) echo "$RP_PREP";; mem_port.*) echo "$MP_PREP";; tri_cache.*) echo "$TC_PREP";; esac; }
-hier_of() { case $1 in pair_queue.*) echo "$PQ_HIER";; mem_port.*) mp_hier "$1";; esac; }
+TF_PREP='hierarchy -top \top$tri_unit$fifo; rename \top$tri_unit$fifo tri_fifo'
+# tf_hier <proof>: the result FIFO's addresses tied to the wrapper's f_* wires; for ORDER also
+# the wrapper's read port of f_ram pointed at the FIFO's RAM (its MEMID: one array, two ports)
+tf_hier() {
+  local s="connect -nounset -set f_wr dut.write_logic.write_address\$q; "
+  s+="connect -nounset -set f_wr_late dut.write_logic.dff_write_address_delay\$q; "
+  s+="connect -nounset -set f_rd dut.read_logic.read_address\$q; "
+  [ "$1" = tri_fifo.order ] && s+='setparam -set MEMID "\dut.ram.mem" c:$memrd$\f_ram$*; '
+  echo "$s"
+}
+prep_of() { case $1 in pair_queue.*) echo "$PQ_PREP";; result_port.*) echo "$RP_PREP";; mem_port.*) echo "$MP_PREP";; tri_cache.*) echo "$TC_PREP";; tri_fifo.*) echo "$TF_PREP";; esac; }
+hier_of() { case $1 in pair_queue.*) echo "$PQ_HIER";; mem_port.*) mp_hier "$1";; tri_fifo.*) tf_hier "$1";; esac; }
 
 # build <name> <wrapper> <dut.v> <defines> <engine> <dir>: writes <dir>/<name>.smt2 or .aig
 build() {

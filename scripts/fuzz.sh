@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Coverage-guided fuzzing of the mesh loaders and the scene parser with cargo-afl (stable
-# Rust): fuzz/ builds one program, `cchip-fuzz TARGET`, that runs each input the way `cchip`
+# Coverage-guided fuzzing of the mesh loaders, the scene parser and the accuracy study's
+# merge of shard files with cargo-afl (stable Rust): fuzz/ builds one program, `cchip-fuzz TARGET`, that runs each input the way `cchip`
 # runs the same file (fuzz/src/lib.rs); afl-fuzz runs each target for SECONDS and this script
 # fails if any input made it panic, abort or hang.
 #
@@ -9,12 +9,13 @@
 #   cargo install cargo-afl --locked
 #
 # Usage: scripts/fuzz.sh [--seconds N] [--jobs N] [--build-only] [TARGET ...]
-#   TARGET        mesh_obj, mesh_stl, mesh_ply, scene (default: all four)
+#   TARGET        mesh_obj, mesh_stl, mesh_ply, scene, merge (default: all five)
 #   --seconds N   afl-fuzz time per target (default 60)
 #   --jobs N      targets fuzzed at a time (default 1; each takes a core)
 #   --build-only  build the instrumented program and stop
 # Seeds: fuzz/corpus/TARGET/, fuzz/regressions/TARGET/ and the project's own files of the
-# kind (vectors/bad-meshes/*.EXT, vectors/scenes/*.toml). Everything else goes under
+# kind (vectors/bad-meshes/*.EXT, vectors/scenes/*.toml; merge has its corpus alone: shard
+# files of small studies, NUL between files). Everything else goes under
 # target/afl/ (build, seeds, afl's output: out/TARGET/default/{crashes,hangs,queue}).
 # A crash: reproduce it with `target/afl/release/cchip-fuzz TARGET < FILE`, shrink it with
 # `cargo afl tmin -i FILE -o SMALL -- target/afl/release/cchip-fuzz TARGET`, fix its cause,
@@ -32,11 +33,11 @@ while [ $# -gt 0 ]; do
     --jobs) jobs=$2; shift 2 ;;
     --build-only) build_only=1; shift ;;
     -h|--help) sed -n '2,/^set -euo/{/^set -euo/d;s/^# \{0,1\}//;p}' "$0"; exit 0 ;;
-    mesh_obj|mesh_stl|mesh_ply|scene) targets+=("$1"); shift ;;
+    mesh_obj|mesh_stl|mesh_ply|scene|merge) targets+=("$1"); shift ;;
     *) echo "fuzz.sh: unknown argument '$1' (--help)" >&2; exit 2 ;;
   esac
 done
-[ ${#targets[@]} -gt 0 ] || targets=(mesh_obj mesh_stl mesh_ply scene)
+[ ${#targets[@]} -gt 0 ] || targets=(mesh_obj mesh_stl mesh_ply scene merge)
 
 cargo afl --version >/dev/null 2>&1 || {
   echo "fuzz.sh: cargo-afl not found (cargo install cargo-afl --locked)" >&2; exit 2; }

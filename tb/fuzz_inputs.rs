@@ -277,6 +277,24 @@ fn afl_corpus_and_regressions_replay() {
     assert!(failed.is_empty(), "panicked or ran too long: {failed:#?}");
 }
 
+/// The study's merge inputs afl found crashing (`fuzz/regressions/merge/`) are shard files
+/// no study writes: each is refused with an error that names `--merge`, not merged into a
+/// table. (The replay above catches a panic; a release build's arithmetic that wraps
+/// instead of panicking would pass it and print wrong counts.)
+#[test]
+fn afl_merge_regressions_are_refused() {
+    let dir = root().join("fuzz/regressions/merge");
+    let mut n = 0;
+    for path in std::fs::read_dir(&dir).unwrap().flatten().map(|e| e.path()) {
+        let bytes = std::fs::read(&path).unwrap();
+        match afl_targets::run("merge", &bytes) {
+            Err(e) if e.starts_with("--merge: ") => n += 1,
+            other => panic!("{}: {other:?}", path.display()),
+        }
+    }
+    assert!(n >= 1, "no regression inputs in {}", dir.display());
+}
+
 #[test]
 fn poses_take_any_text() {
     proptest!(config(), |(s in "[-+0-9.,eEnaifNI xX_]{0,48}")| {

@@ -11,19 +11,22 @@ use collision_chip::chip::wscg03::Architecture;
 use collision_chip::mesh;
 use collision_chip::pose::Pose;
 use collision_chip::query::Chip;
+use collision_chip::report::accuracy::{self, ShardFile};
+use collision_chip::report::plot;
 use collision_chip::scene::graph::Plan;
 use collision_chip::scene::run::Prepared;
 use collision_chip::scene::{CrossCheck, Flags, Scene};
 use collision_chip::traversal::Traversal;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 /// The targets, each a directory of `fuzz/corpus/` and `fuzz/regressions/`.
-pub const TARGETS: &[&str] = &["mesh_obj", "mesh_stl", "mesh_ply", "scene"];
+pub const TARGETS: &[&str] = &["mesh_obj", "mesh_stl", "mesh_ply", "scene", "merge"];
 
 /// One input of `target` (one of [`TARGETS`]).
 pub fn run(target: &str, bytes: &[u8]) -> Result<(), String> {
     match target {
         "scene" => scene(bytes),
+        "merge" => merge(bytes),
         t => match t.strip_prefix("mesh_") {
             Some(ext) => mesh(ext, bytes),
             None => panic!("no fuzz target {t}: one of {TARGETS:?}"),
@@ -90,6 +93,36 @@ pub fn scene(bytes: &[u8]) -> Result<(), String> {
     let stand_in = |_: &str| mesh::builtin(STAND_IN).map_err(|e| e.to_string());
     Prepared::new(&s, stand_in)?.run(|| {})?;
     Ok(())
+}
+
+/// `cchip accuracy --merge F1 F2 ... --plot DIR` on `bytes` cut at each NUL byte into the
+/// files (a shard's JSON has none): each read as `--merge` reads it, the shards merged, then
+/// the table, its footnote and each figure's data and SVG (into the temporary directory).
+pub fn merge(bytes: &[u8]) -> Result<(), String> {
+    if bytes.len() > MAX_INPUT {
+        return Ok(());
+    }
+    let files = bytes
+        .split(|&b| b == 0)
+        .enumerate()
+        .map(|(i, b)| {
+            let path = PathBuf::from(format!("shard{i}.json"));
+            // `--merge` reads each file as UTF-8 text
+            let text = std::str::from_utf8(b).map_err(|e| format!("{}: {e}", path.display()))?;
+            ShardFile::parse(text, &path)
+        })
+        .collect::<Result<Vec<_>, String>>()?;
+    let (plan, rows) = accuracy::merge(files)?;
+    accuracy::table(&plan, &rows, None)?;
+    accuracy::clocks(&rows);
+    let svg = std::env::temp_dir().join(format!("cchip-fuzz-merge-{}.svg", std::process::id()));
+    let drawn = accuracy::figures(&rows, None).iter().try_for_each(|f| {
+        f.table.csv();
+        f.table.json();
+        plot::draw(f, &svg)
+    });
+    let _ = std::fs::remove_file(&svg);
+    drawn
 }
 
 /// The objects of a scene's run: a sphere of at least 80 triangles.

@@ -505,7 +505,7 @@ fn accuracy(a: AccuracyArgs) -> Result<(), String> {
     } else {
         let files = a.merge.iter().map(|p| {
             let text = std::fs::read_to_string(p).map_err(|e| format!("{}: {e}", p.display()))?;
-            serde_json::from_str(&text).map_err(|e| format!("{}:{}: not a shard's output ({e}); write shards with cchip accuracy --shard K/N > FILE", p.display(), e.line()))
+            accuracy::ShardFile::parse(&text, p)
         });
         accuracy::merge(files.collect::<Result<_, String>>()?)?
     };

@@ -160,6 +160,19 @@ pub struct ShardFile {
     pub rows: Vec<Row>,
 }
 
+impl ShardFile {
+    /// A shard's output as `--merge` reads it: `text`, the contents of the file `path`.
+    pub fn parse(text: &str, path: &std::path::Path) -> Result<ShardFile, String> {
+        serde_json::from_str(text).map_err(|e| {
+            format!(
+                "{}:{}: not a shard's output ({e}); write shards with cchip accuracy --shard K/N > FILE",
+                path.display(),
+                e.line()
+            )
+        })
+    }
+}
+
 /// One mesh and configuration over all poses of the sweep.
 #[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct Row {
@@ -251,22 +264,33 @@ impl std::ops::AddAssign for HostSums {
 
 impl std::ops::AddAssign for Sums {
     fn add_assign(&mut self, q: Sums) {
-        self.queries += q.queries;
-        self.exact_pairs += q.exact_pairs;
-        self.dop_tests += q.dop_tests;
-        self.tri_tests += q.tri_tests;
-        self.uncertain += q.uncertain;
-        self.uncertain_degenerate += q.uncertain_degenerate;
-        self.uncertain_on_plane += q.uncertain_on_plane;
-        self.uncertain_bound += q.uncertain_bound;
-        self.memory_bytes += q.memory_bytes;
-        self.misses += q.misses;
-        self.extras += q.extras;
-        self.cycles += q.cycles;
+        *self = self
+            .checked_add(q)
+            .expect("a study's counts fit in 64 bits (merge checks a file's)");
     }
 }
 
 impl Sums {
+    /// `self + q`, or `None` where a count would pass 2^64 - 1 (counts read from a file).
+    pub fn checked_add(self, q: Sums) -> Option<Sums> {
+        Some(Sums {
+            queries: self.queries.checked_add(q.queries)?,
+            exact_pairs: self.exact_pairs.checked_add(q.exact_pairs)?,
+            dop_tests: self.dop_tests.checked_add(q.dop_tests)?,
+            tri_tests: self.tri_tests.checked_add(q.tri_tests)?,
+            uncertain: self.uncertain.checked_add(q.uncertain)?,
+            uncertain_degenerate: self
+                .uncertain_degenerate
+                .checked_add(q.uncertain_degenerate)?,
+            uncertain_on_plane: self.uncertain_on_plane.checked_add(q.uncertain_on_plane)?,
+            uncertain_bound: self.uncertain_bound.checked_add(q.uncertain_bound)?,
+            memory_bytes: self.memory_bytes.checked_add(q.memory_bytes)?,
+            misses: self.misses.checked_add(q.misses)?,
+            extras: self.extras.checked_add(q.extras)?,
+            cycles: self.cycles.checked_add(q.cycles)?,
+        })
+    }
+
     /// Triangle tests whose pair does not intersect: the DOP hierarchy's false positives at
     /// the leaves (the chip's pairs equal the exact ones, so this is tri_tests - pairs).
     pub fn dop_false_positive_rate(&self) -> f64 {
@@ -468,6 +492,8 @@ pub fn merge(files: Vec<ShardFile>) -> Result<(Plan, Vec<Row>), String> {
     let (plan, n) = (first.plan.clone(), first.shard.n);
     // the shards seen, as many as files (N comes from a file: nothing sized by it)
     let mut seen = std::collections::BTreeSet::new();
+    // every row of every shard added up: the merged rows' and the figures' sums are parts of it
+    let mut total = Sums::default();
     let mut rows: Vec<Row> = first
         .rows
         .iter()
@@ -499,6 +525,7 @@ pub fn merge(files: Vec<ShardFile>) -> Result<(Plan, Vec<Row>), String> {
                 f.shard.k
             ));
         }
+        check_counts(f, &mut total)?;
         for (row, r) in rows.iter_mut().zip(&f.rows) {
             row.sums += r.sums;
             row.host += r.host;
@@ -511,6 +538,25 @@ pub fn merge(files: Vec<ShardFile>) -> Result<(Plan, Vec<Row>), String> {
         return Err(format!("--merge: shard {missing}/{n} is missing (a study of {n} shards needs all {n} files; {} given)", files.len()));
     }
     Ok((plan, rows))
+}
+
+/// Refuses counts no study writes, on which the sums and the table's rates would overflow:
+/// a row's misses are exact pairs the chip missed, and all rows of all shards together
+/// (`total`, which this adds `f`'s rows to) count fewer than 2^64 of each thing.
+fn check_counts(f: &ShardFile, total: &mut Sums) -> Result<(), String> {
+    let shard = format!("--merge: shard {}/{}", f.shard.k, f.shard.n);
+    for r in &f.rows {
+        if r.sums.misses > r.sums.exact_pairs {
+            return Err(format!(
+                "{shard}, {} k = {} {}: {} misses of {} exact pairs (a miss is an exact pair the chip did not find): not a shard's output",
+                r.mesh, r.k, r.format, r.sums.misses, r.sums.exact_pairs
+            ));
+        }
+        *total = total.checked_add(r.sums).ok_or_else(|| {
+            format!("{shard}: the shards' counts add up past 2^64 - 1: not a study's output")
+        })?;
+    }
+    Ok(())
 }
 
 /// The Markdown table of docs/explanation/accuracy.md; with `area`, the cells of each configuration's

@@ -77,6 +77,35 @@ fn shards_merge_into_the_serial_run() {
     );
 }
 
+/// Counts no study writes are refused, naming the shard, before the merge's sums or the
+/// table's rates overflow on them (afl found both: fuzz/regressions/merge/).
+#[test]
+fn merge_refuses_counts_no_study_writes() {
+    let text = include_str!("../../../fuzz/corpus/merge/one-shard-folds");
+    let file = ShardFile::parse(text, std::path::Path::new("s.json")).unwrap();
+    let (_, rows) = merge(vec![file.clone()]).unwrap();
+    assert!(table(&file.plan, &rows, None).is_ok());
+    let mut missed = file.clone();
+    missed.rows[1].sums.misses = missed.rows[1].sums.exact_pairs + 1;
+    let e = merge(vec![missed]).unwrap_err();
+    assert!(
+        e.starts_with("--merge: shard 1/1, ") && e.contains("misses of"),
+        "{e}"
+    );
+    // each shard's count fits, their sum does not
+    let halves = (1..=2).map(|k| {
+        let mut f = file.clone();
+        f.shard = Shard { k, n: 2 };
+        f.rows[0].sums.cycles = u64::MAX / 2 + 1;
+        f
+    });
+    let e = merge(halves.collect()).unwrap_err();
+    assert!(
+        e.starts_with("--merge: shard 2/2: ") && e.contains("past 2^64"),
+        "{e}"
+    );
+}
+
 /// A fold changes the clocks only: the folded rows count the unfolded ones' tests and
 /// pairs, in no fewer clocks; a DOP interval that does not divide k is refused up front.
 #[test]
