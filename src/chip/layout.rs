@@ -105,7 +105,8 @@ pub struct Layout {
     /// ([`DopBits`]), the parent's k distances and an exponent per plane
     /// ([`dop::stored`](crate::dop::stored)); else 0.
     pub shared_bits: u32,
-    /// Tree levels a `records` record holds ([`record_levels`]): 1, a node pair.
+    /// Tree levels a `records` record holds: as many as fit in the full-precision node pair's
+    /// record with stored DOP precision (up to [`MAX_RECORD_LEVELS`]); 1, a node pair, else.
     pub levels: u32,
     pub kind: MemLayout,
 }
