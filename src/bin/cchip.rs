@@ -239,8 +239,8 @@ struct AccuracyArgs {
     #[arg(long, value_delimiter = ',', default_value = "1")]
     dop_intervals: Vec<u32>,
     /// Stored DOP precision, comma separated: full, or bits a plane (1 to 16) of the codes a
-    /// node record stores relative to its parent's DOP and the chip decodes outward (presets
-    /// with the `records` layout: date05, wscg03's memory).
+    /// node record stores below an ancestor's DOP and the chip decodes outward (presets with
+    /// the `records` layout: date05, wscg03).
     #[arg(long, value_delimiter = ',', default_value = "full")]
     dop_bits: Vec<DopBits>,
     /// Yosys cells per unit (`unit,cells`, as scripts/area-study.sh writes

@@ -147,8 +147,9 @@ impl std::fmt::Display for MemLayout {
 }
 
 /// How node records store the DOPs below the root (a scene's `[chip] dop_bits`): `full`,
-/// each distance a value of the DOP format, or `b`-bit codes relative to the parent's DOP,
-/// which the chip decodes outward ([`dop::stored`](crate::dop::stored); `records` layout).
+/// each distance a value of the DOP format, or `b`-bit codes below the DOP of the node's
+/// treelet root, which the chip decodes outward ([`dop::stored`](crate::dop::stored);
+/// `records` layout).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub enum DopBits {
     #[default]
@@ -156,7 +157,8 @@ pub enum DopBits {
     Bits(u32),
 }
 
-/// The widest code: half a binary32 significand is already below most gaps' rounding.
+/// The widest code, in bits a plane (also at most the DOP format's significand:
+/// [`ChipConfig::check`]).
 pub const DOP_BITS_MAX: u32 = 16;
 
 /// `full`, or the bits.
@@ -288,8 +290,8 @@ impl ChipConfig {
 }
 
 impl ChipConfig {
-    /// Codes fit the DOP format's significand (so `q 2^e` is one of its values), and a child
-    /// is stored relative to the parent that its record holds: the `records` layout.
+    /// Codes fit the DOP format's significand (so `q 2^e` is one of its values), and a node
+    /// is stored below the treelet root whose DOP its record holds: the `records` layout.
     fn check_dop_bits(&self) -> Result<(), String> {
         let DopBits::Bits(b) = self.dop_bits else {
             return Ok(());
@@ -299,7 +301,7 @@ impl ChipConfig {
             return Err(format!("dop_bits = {b} is wider than the DOP format {}'s {p}-bit significand: use at most {p}, or \"full\"", self.format.dop));
         }
         if self.layout != MemLayout::Records {
-            return Err(format!("dop_bits = {b} stores each node relative to its parent's DOP, which only a `records` record holds beside it; this configuration has layout = \"{}\": set [chip] layout = \"records\" (or a preset such as date05), or dop_bits = \"full\"", self.layout));
+            return Err(format!("dop_bits = {b} stores each node below its treelet root's DOP, which only a `records` record holds beside it; this configuration has layout = \"{}\": set [chip] layout = \"records\" (or a preset such as date05), or dop_bits = \"full\"", self.layout));
         }
         Ok(())
     }

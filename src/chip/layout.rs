@@ -20,9 +20,10 @@
 //! (a triangle word from bit 0), the chip naming a node `2 record + slot` ([`node_ids`]).
 //! With stored DOP precision (`dop_bits = b`: [`DopBits`], [`dop::stored`](crate::dop::stored);
 //! `records` only) a node word holds `b`-bit codes in place of its distances (`1 + k*b + 64`
-//! bits), and a record holds after its two node words what they share: the parent's k
-//! distances (`k*W` bits) and an exponent per plane ([`exp_field_bits`] each, `e - e_lo`).
-//! The root's record holds its distances in full (its record is the only one with no parent).
+//! bits); a record holds a treelet, [`Layout::levels`] levels below its treelet root
+//! ([`treelet_records`]: slot s's node word from bit `s * node_bits`), and after its node
+//! words what they share: the treelet root's k distances (`k*W` bits) and an exponent per
+//! plane ([`exp_field_bits`] each, `e - e_lo`). The root's record holds its distances in full.
 //!
 //! D_CNTR's entry ([`Entry`]) is two node pairs, pushed and popped together; a pair is A's
 //! node, B's node (16 bits each) and the flip bit that orders its children
@@ -75,8 +76,7 @@ pub const fn record_bits(k: usize, dop_w: usize, tri_w: usize) -> usize {
 /// The wider of a node pair's `pair` bits and a triangle word's `tri`, padded to a power of
 /// two bytes.
 const fn padded_record(pair: usize, tri: usize) -> usize {
-    let n = pair;
-    8 * (if n > tri { n } else { tri })
+    8 * (if pair > tri { pair } else { tri })
         .div_ceil(8)
         .next_power_of_two()
 }
@@ -101,8 +101,8 @@ pub fn exp_field_bits(fmt: Format, bits: u32) -> u32 {
 pub struct Layout {
     pub node_bits: u32,
     pub tri_bits: u32,
-    /// Bits a `records` record holds once for its two nodes: with stored DOP precision
-    /// ([`DopBits`]), the parent's k distances and an exponent per plane
+    /// Bits a `records` record holds once for its nodes: with stored DOP precision
+    /// ([`DopBits`]), the treelet root's k distances and an exponent per plane
     /// ([`dop::stored`](crate::dop::stored)); else 0.
     pub shared_bits: u32,
     /// Tree levels a `records` record holds: as many as fit in the full-precision node pair's
@@ -243,8 +243,8 @@ pub fn treelet_records(children: &[Option<[u32; 2]>], levels: u32) -> (Vec<u32>,
 /// The id the chip knows each node by (in D_CNTR's entries and the children fields of node
 /// words). `words`: its pre-order number. `records`: `record << s | slot`
 /// ([`treelet_records`]), `s` the bits of a slot (1 for a node pair), the root in record 0,
-/// slot 0, so that the RTL finds a node's record (`id >> 1`) and its half of the record word
-/// (`id & 1`) without a table.
+/// slot 0, so that the RTL finds a node's record (`id >> s`) and its node word in the record
+/// (`id & (2^s - 1)`) without a table.
 pub fn node_ids(kind: MemLayout, levels: u32, children: &[Option<[u32; 2]>]) -> Vec<u32> {
     if kind == MemLayout::Words {
         return (0..children.len() as u32).collect();
@@ -538,6 +538,28 @@ mod tests {
         let one = [0, 1, 2, 3, 3, 2, 4, 4, 1, 5, 6, 6, 5, 7, 7];
         assert_eq!(node_records(MemLayout::Records, 1, &tree), one);
         assert_eq!(record_nodes(2), 6);
+    }
+
+    /// Levels by hand at k = 24 binary32, whose full-precision record is 2,048 bits (a node
+    /// pair of 2 x 833): a record shares 24 x (32 + 9) = 984 bits, and a node word is
+    /// 1 + 24 b + 64. b = 1: 89 bits, three levels 984 + 14 x 89 = 2,230 do not fit, two
+    /// (1,518) do; b = 4: 161, two levels 1,950; b = 8: 257, two levels 2,526 do not fit, one
+    /// 1,498; b = 16: 449, one 1,882. Full: one level, no shared bits.
+    #[test]
+    fn levels_by_hand() {
+        let at = |dop_bits| {
+            let l = Layout::new(&ChipConfig {
+                layout: MemLayout::Records,
+                dop_bits,
+                ..ChipConfig::default()
+            });
+            (l.levels, l.shared_bits, l.node_bits, l.word_bits())
+        };
+        assert_eq!(at(DopBits::Bits(1)), (2, 984, 89, 2048));
+        assert_eq!(at(DopBits::Bits(4)), (2, 984, 161, 2048));
+        assert_eq!(at(DopBits::Bits(8)), (1, 984, 257, 2048));
+        assert_eq!(at(DopBits::Bits(16)), (1, 984, 449, 2048));
+        assert_eq!(at(DopBits::Full), (1, 0, 833, 2048));
     }
 
     /// k = 24 binary32: a node pair is 1,666 bits (209 bytes), a record 256 bytes, one burst

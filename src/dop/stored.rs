@@ -1,4 +1,4 @@
-//! Stored DOP precision ([`DopBits`]): a node record below the root stores its DOPs as
+//! Stored DOP precision ([`DopBits`](crate::chip::config::DopBits)): a node record below the root stores its DOPs as
 //! `b`-bit integers relative to an ancestor's, the way GPU ray tracers store child boxes
 //! (Ylitie, Karras and Laine, HPG 2017) and Raabe et al. store DOPs on their FPGA.
 //!
@@ -16,7 +16,6 @@
 //! (docs/explanation/accuracy.md, "Stored DOP precision"): a coarser DOP can add overlaps,
 //! never lose one. `q_i = 0` decodes to `r_i >= d_i` exactly, so a code always exists.
 
-use crate::chip::config::DopBits;
 use crate::chip::layout::exp_range;
 use crate::format::{Format, Rounding};
 
@@ -31,7 +30,7 @@ pub fn decode(fmt: Format, rnd: Rounding, r: f64, q: u32, e: i32) -> f64 {
 }
 
 /// The exponent of one plane of a record: the smallest of [`exp_range`] whose `b`-bit codes
-/// reach the widest gap `gap = max(r - d)` of the record's two children (or the largest).
+/// reach the widest gap `gap = max(r - d)` of the record's nodes (or the largest).
 pub fn plane_exp(fmt: Format, bits: u32, gap: f64) -> i32 {
     let (lo, hi) = exp_range(fmt, bits);
     let top = ((1u32 << bits) - 1) as f64;
@@ -100,10 +99,9 @@ pub fn record_exps<'a>(
 
 /// A node's decoded distances from its stored ones `d` (replaced), its record's reference
 /// `r` and exponents `e`: [`encode`] then [`decode`], plane by plane.
-pub fn round_trip(fmt: Format, rnd: Rounding, bits: DopBits, r: &[f64], e: &[i16], d: &mut [f64]) {
-    let DopBits::Bits(b) = bits else { return };
+pub fn round_trip(fmt: Format, rnd: Rounding, bits: u32, r: &[f64], e: &[i16], d: &mut [f64]) {
     for i in 0..d.len() {
-        let q = encode(fmt, rnd, b, r[i], d[i], e[i] as i32);
+        let q = encode(fmt, rnd, bits, r[i], d[i], e[i] as i32);
         d[i] = decode(fmt, rnd, r[i], q, e[i] as i32);
     }
 }

@@ -55,13 +55,15 @@ pub struct DopTree {
 /// stage gives, which [`DopTree::dop`] reads (the root is stored in full).
 #[derive(Clone, Debug)]
 struct Stored {
-    bits: DopBits,
+    /// Bits a plane of the codes.
+    bits: u32,
     /// Tree levels a record holds ([`Layout::levels`]): its treelet root's descendants.
     levels: u32,
     /// The record of the j-th inner node's treelet, if it is a treelet root
     /// ([`treelet_root`]): its exponents at `j*k .. (j+1)*k`.
     exps: Vec<i16>,
-    /// The j-th inner node's decoded distances (the root's: its own), as `dops`.
+    /// The j-th inner node's decoded distances, as `dops` (the root's row unused: it is
+    /// stored in full).
     decoded: Values,
     /// Each triangle's leaf's treelet root's rank among the inner nodes ([`NO_ROOT`]: the
     /// leaf is the tree's root).
@@ -175,22 +177,19 @@ impl DopTree {
             rounding,
             depth: 0,
             id: NEXT_ID.fetch_add(1, Ordering::Relaxed),
-            stored: (cfg.dop_bits != DopBits::Full).then(|| Stored {
-                bits: cfg.dop_bits,
-                exps: Vec::with_capacity((n - 1) * k),
-                decoded: Values::new(cfg.format.dop, (n - 1) * k),
-                levels: Layout::new(cfg).levels,
-                leaf_root: vec![NO_ROOT; n],
-            }),
+            stored: match cfg.dop_bits {
+                DopBits::Full => None,
+                DopBits::Bits(bits) => Some(Stored {
+                    bits,
+                    exps: Vec::with_capacity((n - 1) * k),
+                    decoded: Values::new(cfg.format.dop, (n - 1) * k),
+                    levels: Layout::new(cfg).levels,
+                    leaf_root: vec![NO_ROOT; n],
+                }),
+            },
         };
         let mut idx: Vec<u32> = (0..n as u32).collect();
         tree.grow(&centroids, &mut idx, 1);
-        if let Node::Inner(_) = tree.node(Self::ROOT) {
-            let root = tree.true_dop(Self::ROOT);
-            if let Some(s) = &mut tree.stored {
-                (0..k).for_each(|i| s.decoded.set(i, root[i]));
-            }
-        }
         tree
     }
 
@@ -207,8 +206,9 @@ impl DopTree {
         let d = &mut out.d[..self.k];
         match (self.links[node as usize], &self.stored) {
             (l, _) if l & LEAF != 0 => self.leaf_held(l & !LEAF, d),
-            (j, Some(s)) => s.decoded.read(j as usize * self.k, d),
-            (j, None) => self.dops.read(j as usize * self.k, d),
+            // the root (the first inner node) is stored in full
+            (j, Some(s)) if j > 0 => s.decoded.read(j as usize * self.k, d),
+            (j, _) => self.dops.read(j as usize * self.k, d),
         }
     }
 
@@ -334,10 +334,7 @@ impl DopTree {
         let rows: Vec<Dop> = members.iter().map(|&n| self.true_dop(n)).collect();
         let mut r = [0.0; 2 * HALF_LANES];
         self.dops.read(j * k, &mut r[..k]);
-        let DopBits::Bits(b) = s.bits else {
-            unreachable!("a tree stores codes only with bits")
-        };
-        let e = stored::record_exps(self.fmt, b, &r[..k], rows.iter().map(|d| &d[..]));
+        let e = stored::record_exps(self.fmt, s.bits, &r[..k], rows.iter().map(|d| &d[..]));
         s.exps[j * k..][..k].copy_from_slice(&e);
         for (&c, row) in members.iter().zip(&rows) {
             match self.links[c as usize] {

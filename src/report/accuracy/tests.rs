@@ -1,5 +1,35 @@
 use super::*;
 
+/// A mesh scaled into the unit cube, as `cchip accuracy` loads it.
+fn load(m: &str) -> Result<Vec<Tri>, String> {
+    crate::mesh::resolve(m)
+        .map_err(|e| e.to_string())?
+        .scaled_into_unit_cube()
+        .map(|m| m.triangles_f64())
+        .map_err(|e| e.to_string())
+}
+
+/// A study of `mesh` on the `date05` memory at the paper's clock, small: k = 6, e8m15,
+/// outward, one distance in two orientations, unfolded, full records.
+fn small_date05(mesh: &str) -> Plan {
+    Plan {
+        meshes: vec![mesh.into()],
+        presets: vec![Preset::Date05],
+        ks: vec![6],
+        formats: vec![Formats::from(crate::format::Format::REDUCED)],
+        roundings: vec![DopRounding::Outward],
+        sweep: Sweep {
+            distances: vec![0.5],
+            orientations: 2,
+            seed: 1,
+        },
+        bus_bits: None,
+        technology: Technology::Paper,
+        folds: vec![Folds::NONE],
+        dop_bits: vec![DopBits::Full],
+    }
+}
+
 /// Three shards merged give the serial run's rows and table (the host's measured times
 /// aside); a shard missing or given twice is an error.
 #[test]
@@ -19,13 +49,6 @@ fn shards_merge_into_the_serial_run() {
         technology: Technology::Osu018,
         folds: vec![Folds::NONE],
         dop_bits: vec![DopBits::Full],
-    };
-    let load = |m: &str| {
-        crate::mesh::resolve(m)
-            .map_err(|e| e.to_string())?
-            .scaled_into_unit_cube()
-            .map(|m| m.triangles_f64())
-            .map_err(|e| e.to_string())
     };
     let unmeasured = |rows: Vec<Row>| -> Vec<Row> {
         rows.into_iter()
@@ -111,27 +134,8 @@ fn merge_refuses_counts_no_study_writes() {
 #[test]
 fn folds_cost_clocks_and_nothing_else() {
     let plan = Plan {
-        meshes: vec!["sphere:40".into()],
-        presets: vec![Preset::Date05],
-        ks: vec![6],
-        formats: vec![Formats::from(crate::format::Format::REDUCED)],
-        roundings: vec![DopRounding::Outward],
-        sweep: Sweep {
-            distances: vec![0.5],
-            orientations: 2,
-            seed: 1,
-        },
-        bus_bits: None,
-        technology: Technology::Paper,
         folds: vec![Folds::NONE, Folds { tri: 32, dop: 6 }],
-        dop_bits: vec![DopBits::Full],
-    };
-    let load = |m: &str| {
-        crate::mesh::resolve(m)
-            .map_err(|e| e.to_string())?
-            .scaled_into_unit_cube()
-            .map(|m| m.triangles_f64())
-            .map_err(|e| e.to_string())
+        ..small_date05("sphere:40")
     };
     let rows = run(&plan, load, Shard::ALL, || ()).unwrap();
     let (a, b) = (&rows[0].sums, &rows[1].sums);
@@ -182,25 +186,8 @@ fn folds_cost_clocks_and_nothing_else() {
 #[test]
 fn stored_dops_cost_tests_never_pairs() {
     let plan = Plan {
-        meshes: vec!["sphere:60".into()],
-        presets: vec![Preset::Date05],
-        ks: vec![6],
-        formats: vec![Formats::from(crate::format::Format::REDUCED)],
-        roundings: vec![DopRounding::Outward],
-        sweep: Sweep {
-            distances: vec![0.5],
-            orientations: 2,
-            seed: 1,
-        },
-        bus_bits: None,
-        technology: Technology::Paper,
-        folds: vec![Folds::NONE],
         dop_bits: vec![DopBits::Full, DopBits::Bits(8), DopBits::Bits(2)],
-    };
-    let load = |m: &str| {
-        crate::mesh::resolve(m)
-            .map(|m| m.triangles_f64())
-            .map_err(|e| e.to_string())
+        ..small_date05("sphere:60")
     };
     let rows = run(&plan, load, Shard::ALL, || ()).unwrap();
     let full = &rows[0].sums;
@@ -220,5 +207,5 @@ fn stored_dops_cost_tests_never_pairs() {
         ..plan
     };
     let e = rtl.configs().unwrap_err();
-    assert!(e.starts_with("--dop-bits 8 on preset rtl: dop_bits = 8 stores each node relative to its parent's DOP"), "{e}");
+    assert!(e.starts_with("--dop-bits 8 on preset rtl: dop_bits = 8 stores each node below its treelet root's DOP"), "{e}");
 }
