@@ -66,9 +66,10 @@ module tb;
   integer qh, qt, next_accept, cyc, i, latency, interval, reader, max_cycles;
   // DDR SDRAM: per bank the open row (-1: none) and the cycle it is free; the data bus
   integer wbits, wb;  // bits and bytes per word: word address a starts at byte a * wb
-  integer ddr, banks, page_bytes, bus_bits, burst, burst_clocks, hit, miss, bursts, page, bank, row, t0, t1, bus_free, beats;
+  integer ddr, banks, page_bytes, bus_bits, burst, burst_clocks, hit, miss, cost, bursts, page, bank, row, t0, t1, bus_free, beats;
   integer open_row [0:63];  // cycle::memory::Ddr::MAX_BANKS
-  integer bank_free [0:63];
+  integer bank_ready [0:63];  // the bank's next read of its open row
+  integer bank_idle [0:63];   // the end of the bank's last transfer
   reg [1023:0] mem_file, host_file;
   reg ports, printed, requests;
   reg [202:0] port_line, last_line;
@@ -109,7 +110,8 @@ module tb;
       bursts = (wbits + bus_bits * burst - 1) / (bus_bits * burst);
       for (i = 0; i < 64; i = i + 1) begin
         open_row[i] = -1;
-        bank_free[i] = 0;
+        bank_ready[i] = 0;
+        bank_idle[i] = 0;
       end
       bus_free = 0;
       beats = 1;
@@ -152,11 +154,14 @@ module tb;
           page = mem_req_addr * wb / page_bytes;
           bank = page % banks;
           row = page / banks;
-          t0 = cyc > bank_free[bank] ? cyc : bank_free[bank];
-          t1 = t0 + (open_row[bank] == row ? hit : miss) + (bursts - 1) * burst_clocks;
+          cost = open_row[bank] == row ? hit : miss;
+          t0 = open_row[bank] == row ? bank_ready[bank] : bank_idle[bank];
+          if (cyc > t0) t0 = cyc;
+          t1 = t0 + cost + (bursts - 1) * burst_clocks;
           if (bus_free + bursts * burst_clocks > t1) t1 = bus_free + bursts * burst_clocks;
           open_row[bank] = row;
-          bank_free[bank] = t1;
+          bank_ready[bank] = t0 + cost - hit + bursts * burst_clocks;
+          bank_idle[bank] = t1;
           bus_free = t1;
           due[qt % 16] = t1;
           next_accept = cyc + 1;

@@ -69,9 +69,12 @@ pub struct Ddr {
 /// (the cycle model's, the rust-hdl driver's and `scripts/verilog/chip_tb.v`'s `+ddr`): a
 /// burst holds the data bus `burst_clocks` clocks; an access whose bank has its row open
 /// costs `hit` clocks from the request to the word complete, a closed or other row `miss`
-/// clocks, each counting one burst of data; the part before the data (the command part)
-/// overlaps with other banks' transfers, the data bus carries one transfer at a time, in
-/// request order.
+/// clocks, each counting one burst of data. The part before the data (the command part)
+/// overlaps with other banks' transfers and, for reads of a bank's open row, with that
+/// bank's earlier reads: a bank takes the next read of its open row a transfer after the
+/// last (DDR's tCCD: page-mode reads stream at the bus's rate), and closes its row for a
+/// miss only once its last transfer is over. The data bus carries one transfer at a time,
+/// in request order.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
 pub struct DdrClocks {
     /// The part: its banks, pages, bus and beats a burst.

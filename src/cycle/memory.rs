@@ -18,14 +18,16 @@ pub struct MemCounters {
     pub bank_conflicts: u64,
 }
 
-/// DDR state: per bank its open row and the cycle it is free; the data bus's free cycle.
+/// DDR state: per bank its open row, the cycle it takes its next read of that row and the
+/// cycle its last transfer ends; the data bus's free cycle.
 #[derive(Clone, Debug)]
 struct DdrState {
     d: DdrClocks,
     word_bytes: u64,
     bursts: u64,
     open: Vec<Option<u64>>,
-    bank_free: Vec<u64>,
+    bank_ready: Vec<u64>,
+    bank_idle: Vec<u64>,
     bus_free: u64,
 }
 
@@ -64,7 +66,8 @@ impl MemModel {
                     word_bytes: (word_bits as u64).div_ceil(8),
                     bursts: (word_bits as u64).div_ceil(beat_bits).max(1),
                     open: vec![None; banks],
-                    bank_free: vec![0; banks],
+                    bank_ready: vec![0; banks],
+                    bank_idle: vec![0; banks],
                     bus_free: 0,
                 };
                 (MemTiming::default(), 1, Some(state))
@@ -110,9 +113,13 @@ impl MemModel {
                 );
                 let data = s.bursts * s.d.burst_clocks as u64;
                 let hit = s.open[bank] == Some(row);
-                let cost =
-                    if hit { s.d.hit } else { s.d.miss } as u64 + data - s.d.burst_clocks as u64;
-                if s.bank_free[bank] > cyc {
+                let (cost, free) = if hit {
+                    (s.d.hit as u64, s.bank_ready[bank])
+                } else {
+                    (s.d.miss as u64, s.bank_idle[bank])
+                };
+                let start = cyc.max(free);
+                if start > cyc {
                     self.counters.bank_conflicts += 1;
                 }
                 if hit {
@@ -120,10 +127,12 @@ impl MemModel {
                 } else {
                     self.counters.page_misses += 1;
                 }
-                let start = cyc.max(s.bank_free[bank]);
-                let done = (start + cost).max(s.bus_free + data);
+                let done = (start + cost + data - s.d.burst_clocks as u64).max(s.bus_free + data);
                 s.open[bank] = Some(row);
-                s.bank_free[bank] = done;
+                // the read command goes out `cost - hit` after the start (the row opened);
+                // the next read of the row a transfer after it, its CAS latency overlapping
+                s.bank_ready[bank] = start + cost - s.d.hit as u64 + data;
+                s.bank_idle[bank] = done;
                 s.bus_free = done;
                 done
             }
@@ -282,6 +291,38 @@ mod tests {
         .contains("at most 64 banks"));
         assert_eq!(Ddr::preset("wscg03"), Some(Ddr::WSCG03));
         assert_eq!(Ddr::preset("ddr9"), None);
+    }
+
+    /// DATE'05's DDR2 at 800 MHz by hand (a burst 4 clocks, a hit 14, a miss 34; 3024-bit
+    /// words of 378 bytes, one burst each; 8 KiB pages, so words 0..=21 are page 0, bank 0): reads of an
+    /// open row stream a burst apart, their CAS latency overlapping; a row change waits for
+    /// its bank's last transfer.
+    #[test]
+    fn reads_of_an_open_row_stream_at_the_bus_rate() {
+        let mut m = MemModel::new(Memory::Ddr(Ddr::DATE05).at(1250).unwrap(), 3024);
+        // a miss at 0: its read command at 34 - 14 = 20, data done at 34
+        m.request(0, 0);
+        // hits at 1, 2, 3: each read a burst after the last (24, 28, 32), data 4 apart
+        for (cyc, addr) in [(1, 1), (2, 2), (3, 3)] {
+            m.request(cyc, addr);
+        }
+        // word 176 (page 8: bank 0, row 1): a miss after bank 0's last transfer (46): 80
+        m.request(4, 176);
+        // bank 1 (word 22: page 1), a miss at 5: its command part overlaps, 5 + 34 = 39,
+        // but the bus is busy until 80: 84
+        m.request(5, 22);
+        for (cyc, addr) in [(34, 0), (38, 1), (42, 2), (46, 3), (80, 176), (84, 22)] {
+            assert_eq!(m.respond(cyc - 1), None);
+            assert_eq!(m.respond(cyc), Some(addr));
+        }
+        assert_eq!(
+            (
+                m.counters.page_hits,
+                m.counters.page_misses,
+                m.counters.bank_conflicts
+            ),
+            (3, 3, 4)
+        );
     }
 
     /// The same DDR2 nanoseconds in the clocks of three chips, by hand: DATE'05's DDR2-800
