@@ -13,6 +13,7 @@
 
 use collision_chip::chip::config::{ChipConfig, DopRounding, Formats};
 use collision_chip::chip::config::{DopBits, MemLayout};
+use collision_chip::chip::layout::Dst;
 use collision_chip::chip::memory::{Ddr, MemTiming, Memory};
 use collision_chip::chip::params::Params;
 use collision_chip::chip::probes::PROBES;
@@ -216,7 +217,7 @@ fn config(
     dop_binary32: bool,
     tri_binary32: bool,
     outward: bool,
-    tri_cache: u32,
+    (tri_cache, tri_cache_b): (u32, u32),
     (records, node_cache, dop_bits): (bool, u32, u32),
 ) -> ChipConfig {
     let f = |b32| {
@@ -239,6 +240,7 @@ fn config(
         },
         tri_rounding: Rounding::NearestEven,
         tri_cache,
+        tri_cache_b,
         layout: if records {
             MemLayout::Records
         } else {
@@ -299,10 +301,11 @@ fn params() -> impl Strategy<Value = Params> {
             memory(),
             prop_oneof![3 => Just(1u32), 1 => prop::sample::select(vec![2u32, 3, 6])],
             500u64..=10_000,
+            any::<bool>(),
         ),
     )
         .prop_map(
-            |((q, dl, tl, tf, ti), (sp, cr, os, pf, memory, di, clock_ps))| Params {
+            |((q, dl, tl, tf, ti), (sp, cr, os, pf, memory, di, clock_ps, tpf))| Params {
                 queue_entries: 1 << q,
                 // a folded DOP unit's latency is its own (k = 6: a pair every 2, 3 or 6 clocks)
                 dop_latency: if di == 1 { dl } else { Params::RTL.dop_latency },
@@ -315,6 +318,7 @@ fn params() -> impl Strategy<Value = Params> {
                 credit: cr,
                 outstanding: os,
                 prefetch: pf,
+                tri_prefetch: tpf,
                 memory,
                 clock_ps,
             },
@@ -396,18 +400,20 @@ fn run(
 proptest! {
     #![proptest_config(ProptestConfig { cases: 256, failure_persistence: None, .. ProptestConfig::default() })]
 
-    /// Any k, formats (the DOP's apart from T.CHECK's), rounding, triangle cache and
+    /// Any k, formats (the DOP's apart from T.CHECK's), rounding, triangle caches (A's, B's) and
     /// microarchitecture: the cycle model's answer is the golden model's (all pairs: the
     /// same sure hits, uncertain pairs and test counts; FIFO order even the fetch counts,
     /// each level's triangle cache on its own leaf-pair order), the same with idle
     /// stretches skipped as clock by clock, and every running clock is booked to exactly
     /// one cause. A cache with a line for each of A's triangles fetches each at most once.
     /// Either memory layout, 1 to 16 node records held, records in full or at 1 (LIFO), 4
-    /// (FIFO) or 8 bits a plane (their decode stage on the DOP unit's path).
+    /// (FIFO) or 8 bits a plane (their decode stage on the DOP unit's path), triangle words
+    /// asked for at the leaf register or prefetched as leaf pairs enter the leaf FIFO.
     #[test]
     fn any_configuration_answers_as_golden(
         k in prop::sample::select(vec![6usize, 14, 18, 24, 26]), dop_b32: bool, tri_b32: bool, outward: bool,
         tri_cache in prop::sample::select(vec![1u32, 1, 4, 32, 128]),
+        tri_cache_b in prop::sample::select(vec![1u32, 1, 4, 128]),
         na in 4usize..=120, nb in 4usize..=120, sa: u64, sb: u64,
         rot in prop::array::uniform3(0.0f64..360.0), t in prop::array::uniform3(-0.4f64..0.4),
         lifo: bool, first: bool, p in params(), period in 1u32..=12,
@@ -416,7 +422,7 @@ proptest! {
         // 1-bit codes overlap nearly everywhere: breadth first, their pairs outgrow the queue
         // (the chip flags it; not this test's subject), so FIFO runs take 4 bits instead
         let layout = (layout.0, layout.1, if lifo || layout.2 != 1 { layout.2 } else { 4 });
-        let chip = Chip::new(&soup(na, sa).triangles_f64(), &soup(nb, sb).triangles_f64(), config(k, dop_b32, tri_b32, outward, tri_cache, layout)).unwrap();
+        let chip = Chip::new(&soup(na, sa).triangles_f64(), &soup(nb, sb).triangles_f64(), config(k, dop_b32, tri_b32, outward, (tri_cache, tri_cache_b), layout)).unwrap();
         let pose = Pose::new(rot[0], rot[1], rot[2], t[0], t[1], t[2]);
         let mode = if first { Mode::First } else { Mode::All };
         // a DOP interval that does not divide this k: 2 (every supported k is even)
@@ -562,6 +568,55 @@ fn the_decode_stage_delays_each_dop_verdict_by_an_adder() {
     }
 }
 
+/// Triangle words prefetched by hand: without `tri_prefetch` every triangle-word request
+/// goes out while its leaf pair is in the leaf register (the RTL's rule); with it some go
+/// out before (as leaf pairs enter the leaf FIFO), and the fetches and answers stay
+/// golden's.
+#[test]
+fn prefetched_triangle_words_are_asked_for_before_the_leaf_register() {
+    let tris = |m: &str| collision_chip::mesh::builtin(m).unwrap().triangles_f64();
+    let chip = Chip::new(&tris("sphere:200"), &tris("torus:200"), CHIP_CONFIG).unwrap();
+    let pose = Pose::new(10.0, 20.0, 30.0, 0.5, 0.0, 0.0);
+    let golden = chip.query(&pose, Mode::All, Traversal::Lifo);
+    let idx = |unit: &str, name: &str| {
+        PROBES
+            .iter()
+            .position(|p| (p.0, p.1) == (unit, name))
+            .unwrap()
+    };
+    let (valid, ready, dst) = (
+        idx("memory", "req_valid"),
+        idx("memory", "req_ready"),
+        idx("memory", "req_dst"),
+    );
+    let leaf = idx("leaves", "leaf_valid");
+    for tri_prefetch in [false, true] {
+        let p = Params {
+            outstanding: 4,
+            prefetch: 3,
+            tri_prefetch,
+            ..Params::RTL
+        };
+        let (mut early, mut asked) = (0, 0);
+        let mut obs = |_: u64, v: &[u64]| {
+            if v[valid] == 1 && v[ready] == 1 && v[dst] >= Dst::TriA as u64 {
+                asked += 1;
+                early += (v[leaf] == 0) as u64;
+            }
+            Ok(())
+        };
+        let tr = lifo_probed(&chip, &pose, p, &mut obs);
+        tr.check(Mode::All, &golden).unwrap();
+        assert_eq!(tr.tri_fetches, asked);
+        assert!(asked > 10, "{asked} triangle words");
+        assert_eq!(
+            early > 0,
+            tri_prefetch,
+            "{early} of {asked} asked for early"
+        );
+    }
+}
+
 /// The RTL configuration's parameters are the RTL's own constants, and these values,
 /// literal: DATE'05 §4.1's DOP pipeline "of 15 stages"; TRI_UNIT §4.2's T.CHECK "pipeline
 /// with 52 clock cycles delay" plus the pair register before it and the result FIFO's write
@@ -597,6 +652,7 @@ fn rtl_point_is_the_rtl() {
         credit: 16,
         outstanding: 1,
         prefetch: 0,
+        tri_prefetch: false,
         memory: Memory::Ideal(MemTiming {
             latency: 1,
             interval: 1,

@@ -235,6 +235,10 @@ pub struct ChipConfig {
     /// 128); 1: the single word held, as for B's and in the RTL chips' reset state.
     #[arg(long, default_value_t = ChipConfig::default().tri_cache)]
     pub tri_cache: u32,
+    /// Lines of B's triangle cache, direct mapped as A's; 1: the single word held, as in
+    /// the RTL chips (WSCG'03's B side is a two-entry SRAM).
+    #[arg(long, default_value_t = ChipConfig::default().tri_cache_b)]
+    pub tri_cache_b: u32,
     /// The memory image's layout: `words` (a node word per record, the RTL chips') or
     /// `records` (sibling nodes in one record, records spread over DDR banks; scenes and
     /// presets only).
@@ -274,9 +278,13 @@ impl ChipConfig {
                 self.format.dop
             ));
         }
-        let lines = self.tri_cache;
-        if !(lines.is_power_of_two() && lines <= TRI_CACHE_MAX_LINES) {
-            return Err(format!("tri_cache must be a power of two from 1 to {TRI_CACHE_MAX_LINES} lines (WSCG'03: 128), not {lines}"));
+        for (key, lines) in [
+            ("tri_cache", self.tri_cache),
+            ("tri_cache_b", self.tri_cache_b),
+        ] {
+            if !(lines.is_power_of_two() && lines <= TRI_CACHE_MAX_LINES) {
+                return Err(format!("{key} must be a power of two from 1 to {TRI_CACHE_MAX_LINES} lines (WSCG'03: 128), not {lines}"));
+            }
         }
         self.check_dop_bits()?;
         if !(1..=NODE_CACHE_MAX_LINES).contains(&self.node_cache) {
@@ -316,6 +324,7 @@ impl Default for ChipConfig {
             dop_rounding: DopRounding::Outward,
             tri_rounding: Rounding::NearestEven,
             tri_cache: 1,
+            tri_cache_b: 1,
             layout: MemLayout::Words,
             node_cache: 1,
             dop_bits: DopBits::Full,

@@ -41,6 +41,10 @@ pub struct Params {
     /// their words queued in request order). 0: the port asks only for the current pair's
     /// words. The RTL chip: 0 to 14 and `outstanding` 1 to 16, in host register [`PORT`](super::reg::PORT).
     pub prefetch: u32,
+    /// A leaf pair's triangle words asked for as it enters the leaf FIFO (queued in order
+    /// for the leaf register) instead of when it reaches the leaf register. Cycle model only:
+    /// the RTL chips ask at the leaf register.
+    pub tri_prefetch: bool,
     /// Not read with the others: a scene's `[memory]` is a section of its own.
     #[serde(skip_deserializing)]
     pub memory: Memory,
@@ -68,6 +72,7 @@ impl Params {
         credit: rtl::CREDIT as u32,
         outstanding: 1,
         prefetch: 0,
+        tri_prefetch: false,
         memory: Memory::Ideal(MemTiming {
             latency: 1,
             interval: 1,

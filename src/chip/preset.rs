@@ -3,7 +3,7 @@
 //! and overrides any of its keys; `cchip run --preset` overrides the scene's.
 
 use super::config::ChipConfig;
-use super::config::MemLayout;
+use super::config::{DopBits, MemLayout};
 use super::memory::{Ddr, Memory};
 use super::params::Params;
 use super::rtl;
@@ -18,6 +18,13 @@ pub enum Preset {
     /// records held per object) and the memory port at full speed (an issue every clock, 16
     /// requests in flight, 14 pairs prefetched, a credit of 48); the paper's 800 MHz.
     Date05,
+    /// DATE'05's chip for bandwidth, as `date05` (k = 24, binary32, its DDR2, the port at full
+    /// speed, 800 MHz) but for its memory side: node records of 4-bit codes in treelets of
+    /// two levels (`dop_bits = 4`), 64 node records held per object, 128-line triangle caches
+    /// on both sides and a leaf pair's triangle words asked for as it enters the leaf FIFO
+    /// (`tri_prefetch`): the values measured best on DATE'05's DDR2 (docs/explanation/architecture.md,
+    /// "One DOP pair per clock"). Cycle level only: the RTL chips have no decode stage.
+    Date05Treelets,
     /// WSCG'03's chip (its Stack Engine: architecture "wscg03") on its 4-bank DDR SDRAM on a
     /// 256-bit bus at 266 MHz, A's 128-line triangle cache (§4.3), k = 24 binary32; with
     /// architecture "date05", DATE'05's chip (its port, records and node records as date05's)
@@ -52,6 +59,14 @@ impl Preset {
                 node_cache: 16,
                 ..ChipConfig::default()
             },
+            Preset::Date05Treelets => ChipConfig {
+                layout: MemLayout::Records,
+                node_cache: 64,
+                tri_cache: 128,
+                tri_cache_b: 128,
+                dop_bits: DopBits::Bits(4),
+                ..ChipConfig::default()
+            },
             Preset::Wscg03 => ChipConfig {
                 tri_cache: 128,
                 layout: MemLayout::Records,
@@ -67,6 +82,10 @@ impl Preset {
     pub fn params(self) -> Params {
         let p = match self {
             Preset::Date05 => Preset::full_port(Memory::Ddr(Ddr::DATE05)),
+            Preset::Date05Treelets => Params {
+                tri_prefetch: true,
+                ..Preset::full_port(Memory::Ddr(Ddr::DATE05))
+            },
             Preset::Wscg03 => Preset::full_port(Memory::Ddr(Ddr::WSCG03)),
             Preset::Rtl => Params::RTL,
         };
@@ -80,14 +99,14 @@ impl Preset {
     pub fn architecture(self) -> Architecture {
         match self {
             Preset::Wscg03 => Architecture::Wscg03,
-            Preset::Date05 | Preset::Rtl => Architecture::Date05,
+            Preset::Date05 | Preset::Date05Treelets | Preset::Rtl => Architecture::Date05,
         }
     }
 
     /// The papers' clocks (DATE'05's target, WSCG'03's memory clock): assumed, not measured.
     pub fn clock_mhz(self) -> f64 {
         match self {
-            Preset::Date05 | Preset::Rtl => 800.0,
+            Preset::Date05 | Preset::Date05Treelets | Preset::Rtl => 800.0,
             Preset::Wscg03 => 266.0,
         }
     }
@@ -101,6 +120,7 @@ impl Preset {
     pub fn name(self) -> &'static str {
         match self {
             Preset::Date05 => "date05",
+            Preset::Date05Treelets => "date05-treelets",
             Preset::Wscg03 => "wscg03",
             Preset::Rtl => "rtl",
         }

@@ -187,6 +187,7 @@ macro_rules! chip_kinds {
                         dop_rounding: DopRounding::Outward,
                         tri_rounding: Rounding::NearestEven,
                         tri_cache: 1,
+                        tri_cache_b: 1,
                         layout: super::config::MemLayout::Words,
                         node_cache: 1,
                         dop_bits: super::config::DopBits::Full,
@@ -270,6 +271,9 @@ impl ChipKind {
                 records.join(", ")
             ));
         }
+        if cfg.tri_cache_b != 1 {
+            return Err(format!("the RTL chips hold one triangle word of B; this configuration has tri_cache_b = {}: set [chip] tri_cache_b = 1", cfg.tri_cache_b));
+        }
         if cfg.tri_cache > TRI_CACHE_LINES as u32 {
             return Err(format!("the RTL chips' triangle cache has {TRI_CACHE_LINES} lines; this configuration has tri_cache = {}: set [chip] tri_cache to at most {TRI_CACHE_LINES}", cfg.tri_cache));
         }
@@ -280,6 +284,7 @@ impl ChipKind {
     pub fn built(cfg: &ChipConfig) -> impl Iterator<Item = ChipKind> {
         let base = ChipConfig {
             tri_cache: 1,
+            tri_cache_b: 1,
             layout: super::config::MemLayout::Words,
             node_cache: 1,
             dop_bits: super::config::DopBits::Full,

@@ -102,14 +102,25 @@ pub struct Chip<'a> {
     /// Child entries not yet pushed (the RTL's `pend`: one at most; none at issue spacing
     /// 1, where the queue takes two entries a clock).
     pend: VecDeque<Entry>,
-    // ---- triangle words held (A's in the triangle cache, B's: one line) and the memory port
-    held: [TriCache; 2],
+    // ---- triangle words (A's held in the triangle cache, B's: one line) and the memory port
+    /// The triangle words held, A's and B's, as the leaf pairs put into the leaf FIFO left
+    /// them.
+    held_tris: [TriCache; 2],
+    /// Triangle words of the leaf pairs not yet requested, in order: destination, record,
+    /// leaf pair.
+    tri_ask: VecDeque<(Dst, u32, u64)>,
+    /// Triangle words arrived and not yet used, in order: a leaf pair's are at the head
+    /// when it is in the leaf register.
+    tri_words: VecDeque<u32>,
     port: MemPort,
     // ---- units
     dop: DopUnit<'a>,
-    leaf_fifo: Delay<(u32, u32)>,
+    leaf_fifo: Delay<Leaf>,
     leaf_valid: bool,
-    leaf_tag: (u32, u32),
+    /// The leaf register.
+    leaf: Leaf,
+    /// Leaf pairs put into the leaf FIFO since start.
+    leaf_seq: u64,
     tri: TriUnit<'a>,
     // ---- counters: DOP tests, triangle tests, node fetches, triangle fetches
     cnt: [u64; 4],
@@ -127,6 +138,15 @@ pub struct Chip<'a> {
 #[derive(Clone, Copy, Debug)]
 struct Ahead {
     pair: Pair,
+    seq: u64,
+    fetch: [bool; 2],
+}
+
+/// A leaf pair: its triangles, its number since start, and which of its triangle words
+/// come from memory (A's, B's; the others are held).
+#[derive(Clone, Copy, Debug, Default)]
+struct Leaf {
+    tag: (u32, u32),
     seq: u64,
     fetch: [bool; 2],
 }
@@ -223,12 +243,15 @@ impl<'a> Chip<'a> {
             seq: 0,
             next_issue: 0,
             pend: VecDeque::new(),
-            held: [TriCache::new(cfg.tri_cache), TriCache::new(1)],
+            held_tris: [TriCache::new(cfg.tri_cache), TriCache::new(cfg.tri_cache_b)],
+            tri_ask: VecDeque::new(),
+            tri_words: VecDeque::new(),
             port: MemPort::new(p.outstanding),
             dop: DopUnit::new(a, b, dop_values, &p, cfg)?,
             leaf_fifo: Delay::with_capacity(FIFO_WRITE_TO_HEAD, p.credit as usize),
             leaf_valid: false,
-            leaf_tag: (0, 0),
+            leaf: Leaf::default(),
+            leaf_seq: 0,
             tri: TriUnit::new(a, b, tri_values, &p)?,
             cnt: [0; 4],
             now: 0,
@@ -249,8 +272,8 @@ impl<'a> Chip<'a> {
         let halt = self.stop || self.q.overflow;
         let go = run && !halt;
         let cur = self.ahead.front();
-        let (need, tri_recs) = self.need(go, cur);
-        let req = self.request(go, cur, need, tri_recs);
+        let need = self.need(go, cur);
+        let req = self.request(go, cur);
         let in_flight = self.dop.in_flight();
         // the issue spacing, and a folded DOP unit's `in_ready`
         let spaced = self.now >= self.next_issue && self.dop.in_ready(self.now);
@@ -318,53 +341,45 @@ impl<'a> Chip<'a> {
     }
 
     /// The words that the pair at the DOP unit's input (`cur`) and the leaf pair wait for:
-    /// A's and B's node words, A's and B's triangle words; and the leaf pair's triangle
-    /// records (looked up only while it waits).
+    /// A's and B's node words, A's and B's triangle words (each queue in request order,
+    /// the waiting pair's words first).
     #[inline(always)]
-    fn need(&self, go: bool, cur: Option<&Ahead>) -> ([bool; 4], [u32; 2]) {
-        // node words come in request order, the current pair's first
+    fn need(&self, go: bool, cur: Option<&Ahead>) -> [bool; 4] {
         let [fa, fb] = cur.map_or([false; 2], |c| c.fetch);
-        let tri_needs = go && self.leaf_valid;
-        let tri_recs = if tri_needs {
-            [
-                self.tri_records[0][self.leaf_tag.0 as usize],
-                self.tri_records[1][self.leaf_tag.1 as usize],
-            ]
+        let [ta, tb] = if self.leaf_valid {
+            self.leaf.fetch
         } else {
-            [0; 2]
+            [false; 2]
         };
-        let words = self.words.len();
-        let need = [
+        let (words, tris) = (self.words.len(), self.tri_words.len());
+        [
             go && fa && words == 0,
             go && fb && words < 1 + fa as usize,
-            tri_needs && !self.held[0].holds(tri_recs[0]),
-            tri_needs && !self.held[1].holds(tri_recs[1]),
-        ];
-        (need, tri_recs)
+            go && ta && tris == 0,
+            go && tb && tris < 1 + ta as usize,
+        ]
     }
 
-    /// The memory request: triangle words first, then the next node word in pair order
-    /// (the current pair's only at prefetch 0, any pair's in the buffer else).
+    /// The memory request, in each queue's order: the leaf register's triangle words first
+    /// (the leaf pair waits for them), then the next node word (the current pair's only at
+    /// prefetch 0, any pair's in the buffer else), then, with `tri_prefetch`, the triangle
+    /// words of the leaf pairs in the leaf FIFO.
     #[inline(always)]
-    fn request(
-        &self,
-        go: bool,
-        cur: Option<&Ahead>,
-        need: [bool; 4],
-        tri_recs: [u32; 2],
-    ) -> Option<(Dst, u32)> {
-        let req = if need[2] || need[3] {
-            [(Dst::TriA, tri_recs[0]), (Dst::TriB, tri_recs[1])]
-                .into_iter()
-                .find(|&(d, _)| need[d as usize] && self.port.free(d))
-        } else {
-            None
-        };
-        req.or_else(|| {
-            let w = self.to_ask.front().filter(|_| go)?;
-            let mine = self.p.prefetch > 0 || cur.is_some_and(|c| c.seq == w.2);
-            (mine && self.port.free(w.0)).then_some((w.0, w.1))
-        })
+    fn request(&self, go: bool, cur: Option<&Ahead>) -> Option<(Dst, u32)> {
+        if !go {
+            return None;
+        }
+        let tri = self.tri_ask.front();
+        let leaf = tri.filter(|w| self.leaf_valid && self.leaf.seq == w.2);
+        let node = self
+            .to_ask
+            .front()
+            .filter(|w| self.p.prefetch > 0 || cur.is_some_and(|c| c.seq == w.2));
+        let ahead = tri.filter(|_| self.p.tri_prefetch);
+        leaf.or(node)
+            .or(ahead)
+            .filter(|w| self.port.free(w.0))
+            .map(|w| (w.0, w.1))
     }
 
     /// The logic after a clock in which only the memory port moved, before cycle `until`
@@ -377,12 +392,12 @@ impl<'a> Chip<'a> {
     fn after_memory(&mut self, until: u64) -> bool {
         let go = self.run && !self.logic.halt;
         let cur = self.ahead.front();
-        let (need, tri_recs) = self.need(go, cur);
+        let need = self.need(go, cur);
         let anew = need != self.logic.need || self.port.is_empty() || self.now >= until;
         if anew {
             self.logic = self.logic();
         } else {
-            self.logic.req = self.request(go, cur, need, tri_recs);
+            self.logic.req = self.request(go, cur);
         }
         anew
     }
@@ -471,8 +486,8 @@ impl<'a> Chip<'a> {
             b(c.leaf_in.is_some()),
             self.leaf_fifo.len() as u64,
             b(self.leaf_valid),
-            self.leaf_tag.0 as u64,
-            self.leaf_tag.1 as u64,
+            self.leaf.tag.0 as u64,
+            self.leaf.tag.1 as u64,
             b(c.tri_in),
             b(self.tri.in_ready(self.now)),
             b(c.tri_take),
@@ -530,7 +545,9 @@ impl<'a> Chip<'a> {
         if let Some((d, id)) = taken {
             self.port.accept(d, id);
             self.cnt[if d.is_tri() { 3 } else { 2 }] += 1;
-            if !d.is_tri() {
+            if d.is_tri() {
+                self.tri_ask.pop_front();
+            } else {
                 self.to_ask.pop_front();
             }
             if let Some(s) = self.stats.as_mut().filter(|_| d == Dst::TriA) {
@@ -539,10 +556,41 @@ impl<'a> Chip<'a> {
         }
         if resp {
             match self.port.respond() {
-                Some((d, id)) if d.is_tri() => self.held[d as usize - Dst::TriA as usize].fill(id),
+                Some((d, id)) if d.is_tri() => self.tri_words.push_back(id),
                 Some((_, id)) => self.words.push_back(id),
                 None => {}
             }
+        }
+    }
+
+    /// A leaf pair into the leaf FIFO: which of its triangle words are held when it reaches
+    /// the leaf register (the leaf pairs before it fill the caches in the same order), and
+    /// the others asked for.
+    fn push_leaf(&mut self, now: u64, tag: (u32, u32)) {
+        let recs = [
+            self.tri_records[0][tag.0 as usize],
+            self.tri_records[1][tag.1 as usize],
+        ];
+        let fetch = [0, 1].map(|k| self.held_tris[k].fetch(recs[k]));
+        for k in (0..2).filter(|&k| fetch[k]) {
+            let d = [Dst::TriA, Dst::TriB][k];
+            self.tri_ask.push_back((d, recs[k], self.leaf_seq));
+        }
+        let seq = self.leaf_seq;
+        self.leaf_fifo.push(now, Leaf { tag, seq, fetch });
+        self.leaf_seq += 1;
+    }
+
+    /// The leaf register's triangle words fetched are the heads of the word queue.
+    fn take_tri_words(&mut self) {
+        let (ta, tb) = self.leaf.tag;
+        let recs = [
+            self.tri_records[0][ta as usize],
+            self.tri_records[1][tb as usize],
+        ];
+        for k in (0..2).filter(|&k| self.leaf.fetch[k]) {
+            let w = self.tri_words.pop_front();
+            assert_eq!(w, Some(recs[k]), "triangle word {k} of {:?}", self.leaf.tag);
         }
     }
 
@@ -765,22 +813,24 @@ impl Clocked for Chip<'_> {
         self.push_root = false;
         // ---- leaf pairs and TRI_UNIT
         if c.tri_take {
-            self.tri.take(now, self.leaf_tag.0, self.leaf_tag.1);
+            let (ta, tb) = self.leaf.tag;
+            self.tri.take(now, ta, tb);
             self.leaf_valid = false;
             self.cnt[1] += 1;
+            self.take_tri_words();
         }
         if c.leaf_out {
-            let tag = self
+            let leaf = self
                 .leaf_fifo
                 .pop(now)
                 .expect("leaf_out reads a visible head");
             if !c.halt {
                 self.leaf_valid = true;
-                self.leaf_tag = tag;
+                self.leaf = leaf;
             }
         }
         if let Some(tag) = c.leaf_in {
-            self.leaf_fifo.push(now, tag);
+            self.push_leaf(now, tag);
         }
         if give {
             self.tri.give(now);
@@ -803,7 +853,10 @@ impl Clocked for Chip<'_> {
             self.words.clear();
             self.held_nodes.iter_mut().for_each(NodeCache::clear);
             self.leaf_valid = false;
-            self.held.iter_mut().for_each(TriCache::clear);
+            self.leaf_seq = 0;
+            self.tri_ask.clear();
+            self.tri_words.clear();
+            self.held_tris.iter_mut().for_each(TriCache::clear);
             self.cnt = [0; 4];
             self.stats = self.stats.map(|_| Stats::default());
             self.next_issue = 0;

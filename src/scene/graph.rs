@@ -188,8 +188,10 @@ impl Unit {
             Unit::DCntr => format!("the pair queue ({} entries), pair buffer and issue control (every {} clock(s), credit {})", p.queue_entries, p.issue_spacing, p.credit),
             Unit::MemoryPort => {
                 let prefetch = if p.prefetch > 0 { format!(", node words of {} pairs prefetched", p.prefetch) } else { String::new() };
-                let cache = if s.cfg.tri_cache > 1 { format!(", A's triangle words through a {}-line direct-mapped cache", s.cfg.tri_cache) } else { String::new() };
-                format!("node and triangle word requests, {} outstanding{prefetch}{cache}", p.outstanding)
+                let cache = |side: &str, lines: u32| if lines > 1 { format!(", {side}'s triangle words through a {lines}-line direct-mapped cache") } else { String::new() };
+                let (ca, cb) = (cache("A", s.cfg.tri_cache), cache("B", s.cfg.tri_cache_b));
+                let tri = if p.tri_prefetch { ", a leaf pair's triangle words asked for as it enters the leaf FIFO" } else { "" };
+                format!("node and triangle word requests, {} outstanding{prefetch}{ca}{cb}{tri}", p.outstanding)
             }
             Unit::MemoryModel => p.memory.describe_at(p.clock_ps),
             Unit::DopUnit => {

@@ -90,6 +90,9 @@ fn why_unused(u: &Uses, section: &str, key: &str) -> Option<String> {
         ("chip", "layout" | "node_cache" | "dop_bits") if wscg03 => {
             "is not used by WSCG'03's chip, which asks for each node word of a list (the `words` layout) and holds no node records: remove it, or set [chip] architecture = \"date05\"".into()
         }
+        ("chip", "tri_cache_b") if wscg03 => {
+            "is not used by WSCG'03's chip, whose B side holds its triangle words in a two-entry SRAM: remove it, or set [chip] architecture = \"date05\"".into()
+        }
         ("timing", k) if wscg03 && k != "technology" && k != "clock_mhz" => {
             "is DATE'05's chip's (D_CNTR, its DOP unit, TRI_UNIT, the memory port), not used by WSCG'03's chip, whose timing is [stack_engine]'s: remove it, or set [chip] architecture = \"date05\"".into()
         }

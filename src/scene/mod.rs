@@ -111,13 +111,14 @@ fn chip(
         &mut keys,
         "preset",
         text,
-        "\"date05\", \"wscg03\" or \"rtl\"",
+        "\"date05\", \"date05-treelets\", \"wscg03\" or \"rtl\"",
     )?;
     let preset = flags.preset.or(named).unwrap_or(Preset::Rtl);
     let arch = flags.architecture.or(arch).unwrap_or(preset.architecture());
     let mut cfg = over(&preset.chip(), keys, text, "[chip]", &[])?;
     if arch == Architecture::Wscg03 {
-        (cfg.layout, cfg.node_cache, cfg.dop_bits) = (MemLayout::Words, 1, DopBits::Full);
+        (cfg.layout, cfg.node_cache, cfg.dop_bits, cfg.tri_cache_b) =
+            (MemLayout::Words, 1, DopBits::Full, 1);
     }
     Ok((preset, arch, cfg))
 }
@@ -518,11 +519,12 @@ impl Scene {
         let (timing, memory_side) = match self.architecture {
             Architecture::Date05 => (
                 format!(
-                    "timing: queue_entries {}, {}, {}, tri_fifo {}, issue_spacing {}, credit {}, outstanding {}, prefetch {}",
-                    p.queue_entries, dop_timing(p), tri_timing(p), p.tri_fifo, p.issue_spacing, p.credit, p.outstanding, p.prefetch
+                    "timing: queue_entries {}, {}, {}, tri_fifo {}, issue_spacing {}, credit {}, outstanding {}, prefetch {}, tri_prefetch {}",
+                    p.queue_entries, dop_timing(p), tri_timing(p), p.tri_fifo, p.issue_spacing, p.credit, p.outstanding, p.prefetch, p.tri_prefetch
                 ),
                 format!(
-                    "layout {}, node_cache {}, dop_bits {}{}",
+                    "tri_cache_b {}, layout {}, node_cache {}, dop_bits {}{}",
+                    c.tri_cache_b,
                     c.layout,
                     c.node_cache,
                     c.dop_bits,
@@ -624,10 +626,17 @@ impl Scene {
         f.stack_engine.check().map_err(err)?;
         cfg.check().map_err(|e| {
             // the key the error is about, where the scene wrote it (else the preset's)
-            let line = ["k", "format", "tri_cache", "node_cache", "dop_bits"]
-                .into_iter()
-                .filter(|k| e.starts_with(&format!("{k} ")))
-                .find_map(|k| written.line(text, "chip", k));
+            let line = [
+                "k",
+                "format",
+                "tri_cache",
+                "tri_cache_b",
+                "node_cache",
+                "dop_bits",
+            ]
+            .into_iter()
+            .filter(|k| e.starts_with(&format!("{k} ")))
+            .find_map(|k| written.line(text, "chip", k));
             match line {
                 Some(l) => at_line(format!("{l}: [chip] {e}")),
                 None => err(format!("[chip] {e}")),

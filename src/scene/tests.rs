@@ -637,7 +637,8 @@ fn chip_presets_and_their_overrides() {
     );
     let e = parse("[chip]\npreset = \"date06\"").unwrap_err();
     assert!(
-        e.starts_with("s:10:") && e.contains("\"date05\", \"wscg03\" or \"rtl\""),
+        e.starts_with("s:10:")
+            && e.contains("\"date05\", \"date05-treelets\", \"wscg03\" or \"rtl\""),
         "{e}"
     );
     let e = parse("[chip]\nkk = 6").unwrap_err();

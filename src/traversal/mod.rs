@@ -262,7 +262,7 @@ pub fn run(
             NodeCache::new(cfg.node_cache),
             NodeCache::new(cfg.node_cache),
         ],
-        held_tri: [TriCache::new(cfg.tri_cache), TriCache::new(1)],
+        held_tri: [TriCache::new(cfg.tri_cache), TriCache::new(cfg.tri_cache_b)],
         words: [words_a, words_b],
         host,
         pairs: vec![],

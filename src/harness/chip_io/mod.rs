@@ -524,6 +524,9 @@ pub fn rtl_order(
         ));
     };
     kind.reads(cfg)?;
+    if p.tri_prefetch {
+        return Err("the RTL chips ask for a leaf pair's triangle words when it reaches the leaf register; this scene has [timing] tri_prefetch = true: remove it".into());
+    }
     let rtl = Params {
         memory: p.memory,
         prefetch: p.prefetch,
