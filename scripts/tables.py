@@ -212,22 +212,24 @@ def headline():
 
 def stored_dops():
     """Stored DOP precision on DATE'05's DDR2 at the paper's 800 MHz and at the chip's OSU
-    clock: the deterministic counts of `cchip accuracy --json` (binary32, outward)."""
+    clock, on the date05 and date05-treelets presets: the deterministic counts of
+    `cchip accuracy --json` (binary32, outward)."""
     def load(tech):
         with open(FIG / f"stored_dops_{tech}.json") as f:
-            return {(r["mesh"], str(r["dop_bits"])): r for r in json.load(f)
+            return {(r["memory"], r["mesh"], str(r["dop_bits"])): r for r in json.load(f)
                     if r["format"] == "binary32" and r["dop_rounding"] == "outward"}
     paper, osu = load("paper"), load("osu018")
     body = []
-    for (mesh, bits), r in paper.items():
-        o, q = osu[(mesh, bits)], r["queries"]
-        body.append([mesh, bits, n(round(r["dop_tests"] / q)), f"{r['memory_bytes'] / q / 1024:.1f}",
+    for (preset, mesh, bits), r in paper.items():
+        o, q = osu[(preset, mesh, bits)], r["queries"]
+        body.append([preset, mesh, bits, n(round(r["dop_tests"] / q)), f"{r['memory_bytes'] / q / 1024:.1f}",
                      n(round(r["cycles"] / q)), f"{r['dop_tests'] / r['cycles']:.3f}",
                      n(round(o["cycles"] / o["queries"])), f"{o['dop_tests'] / o['cycles']:.3f}"])
     clock = next(iter(osu.values()))["period_ns"]
-    cmd = ("`cchip accuracy --presets date05 --formats binary32,e8m15 --dop-bits full,16,8,4,2,1 "
-           "--technology paper --json` (and `--technology osu018`), the default sweep")
-    return table(["mesh", "stored DOP bits", "DOP tests / query", "memory KiB / query",
+    cmd = ("`cchip accuracy --presets date05,date05-treelets --formats binary32,e8m15 "
+           "--dop-bits full,16,8,4,2,1 --technology paper --json` (and `--technology osu018`), "
+           "the default sweep")
+    return table(["preset", "mesh", "stored DOP bits", "DOP tests / query", "memory KiB / query",
                   "clocks / query, 800 MHz", "DOP tests / clock, 800 MHz",
                   "clocks / query, OSU clock", "DOP tests / clock, OSU clock"], body) + "\n\n" + \
         source(f"{cmd}; the OSU clock {clock:.3f} ns, chip_b32_k24's (estimated for codes: no RTL decode stage); "
