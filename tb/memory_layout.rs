@@ -19,8 +19,9 @@ use collision_chip::scene::Scene;
 use collision_chip::traversal::Traversal;
 use std::path::Path;
 
-/// The bunnies of the default scene and its poses at distance `d`.
-fn bunnies(layout: MemLayout, d: f64) -> (Chip, Vec<Pose>) {
+/// The bunnies of the default scene and its poses at distance `d`, on its chip with `layout`
+/// and `node_cache` records held per object.
+fn bunnies(layout: MemLayout, node_cache: u32, d: f64) -> (Chip, Vec<Pose>) {
     let s = Scene::load(&Path::new(env!("CARGO_MANIFEST_DIR")).join("vectors/scenes/default.toml"))
         .unwrap();
     let m = mesh::resolve("bunny")
@@ -28,7 +29,12 @@ fn bunnies(layout: MemLayout, d: f64) -> (Chip, Vec<Pose>) {
         .scaled_into_unit_cube()
         .unwrap()
         .triangles_f64();
-    let chip = Chip::new(&m, &m, ChipConfig { layout, ..s.cfg }).unwrap();
+    let cfg = ChipConfig {
+        layout,
+        node_cache,
+        ..s.cfg
+    };
+    let chip = Chip::new(&m, &m, cfg).unwrap();
     (
         chip,
         s.poses
@@ -45,7 +51,7 @@ fn bunnies(layout: MemLayout, d: f64) -> (Chip, Vec<Pose>) {
 #[test]
 fn answers_do_not_depend_on_the_layout() {
     let [(words, poses), (records, _)] =
-        [MemLayout::Words, MemLayout::Records].map(|l| bunnies(l, 1.0));
+        [MemLayout::Words, MemLayout::Records].map(|l| bunnies(l, 16, 1.0));
     for pose in &poses[..2] {
         let golden = words.query(pose, Mode::All, Traversal::Lifo);
         assert!(golden.pairs.len() > 10, "an overlapping pose");
@@ -120,7 +126,7 @@ fn reuse_distance_of_node_records() {
     println!("| preset | pose distance | node record fetches | first fetches | served by an LRU cache of {sizes:?} records per side |");
     for preset in [Preset::Date05, Preset::Wscg03] {
         for d in [1.4, 1.0, 0.6] {
-            let (chip, poses) = bunnies(MemLayout::Records, d);
+            let (chip, poses) = bunnies(MemLayout::Records, 1, d);
             let (mut fetches, mut first, mut served) = (0u64, 0u64, [0u64; 7]);
             for pose in &poses {
                 let mut stacks: [Vec<u64>; 2] = Default::default();
@@ -259,6 +265,7 @@ fn presets_are_the_papers_values() {
         dop_rounding: DopRounding::Outward,
         tri_rounding: Rounding::NearestEven,
         tri_cache: 1,
+        tri_cache_b: 1,
         layout: MemLayout::Records,
         node_cache: 16,
         dop_bits: DopBits::Full,
