@@ -22,8 +22,9 @@ pub enum Preset {
     /// speed, 800 MHz) but for its memory side: node records of 4-bit codes in treelets of
     /// two levels (`dop_bits = 4`), 64 node records held per object, 128-line triangle caches
     /// on both sides and a leaf pair's triangle words asked for as it enters the leaf FIFO
-    /// (`tri_prefetch`): the values measured best on DATE'05's DDR2 (docs/explanation/architecture.md,
-    /// "One DOP pair per clock"). Cycle level only: the RTL chips have no decode stage.
+    /// (`tri_prefetch`): the values measured best on DATE'05's DDR2 at 800 MHz
+    /// (docs/explanation/architecture.md, "The chip for bandwidth"). Cycle level only: the RTL
+    /// chips have no decode stage.
     Date05Treelets,
     /// WSCG'03's chip (its Stack Engine: architecture "wscg03") on its 4-bank DDR SDRAM on a
     /// 256-bit bus at 266 MHz, A's 128-line triangle cache (§4.3), k = 24 binary32; with

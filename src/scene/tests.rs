@@ -156,11 +156,20 @@ fn rtl_order_names_what_to_change() {
     assert!(e.starts_with("s:8: [outputs] cross_check: cross_check = \"rtl\" needs an RTL chip of the configuration: the RTL chips hold one node record per object; this configuration has node_cache = 16"), "{e}");
     // ... and so are B's triangle cache and the triangle prefetch, which no RTL chip has
     for (keys, why) in [
-        ("[chip]\ntri_cache_b = 4\n", "the RTL chips hold one triangle word of B; this configuration has tri_cache_b = 4"),
-        ("[timing]\ntri_prefetch = true\n", "the RTL chips ask for a leaf pair's triangle words when it reaches the leaf register"),
+        (
+            "[chip]\ntri_cache_b = 4\n",
+            "the RTL chips hold one triangle word of B; this configuration has tri_cache_b = 4",
+        ),
+        (
+            "[timing]\ntri_prefetch = true\n",
+            "the RTL chips ask for a leaf pair's triangle words when it reaches the leaf register",
+        ),
     ] {
-        let e = Scene::parse(&format!("{base}[outputs]\ncross_check = \"rtl\"\n{keys}"), "s")
-            .unwrap_err();
+        let e = Scene::parse(
+            &format!("{base}[outputs]\ncross_check = \"rtl\"\n{keys}"),
+            "s",
+        )
+        .unwrap_err();
         assert!(e.contains(why), "{e}");
     }
     // the default configuration is the papers' chip
@@ -551,7 +560,8 @@ fn chip_presets_and_their_overrides() {
         (1, 16, 14, 48)
     );
     // the chip for bandwidth: date05's chip, port, memory and clock but for its memory side
-    let t = parse("[chip]\npreset = \"date05-treelets\"\n[timing]\ntechnology = \"paper\"").unwrap();
+    let t =
+        parse("[chip]\npreset = \"date05-treelets\"\n[timing]\ntechnology = \"paper\"").unwrap();
     assert_eq!(
         t.cfg,
         ChipConfig {
