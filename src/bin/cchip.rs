@@ -207,9 +207,10 @@ struct AccuracyArgs {
     /// narrower format costs fewer clocks (default: a word per clock whatever its width).
     #[arg(long, value_name = "N")]
     bus_bits: Option<u32>,
-    /// Memory systems: the chip presets whose memory, port and triangle cache each
+    /// Memory systems: the chip presets whose memory, port, caches and layout each
     /// configuration runs on (rtl: the RTL's reset port on a one-clock memory; date05, wscg03:
-    /// the papers' DDR memories, the port at full speed), comma separated.
+    /// the papers' DDR memories, the port at full speed; date05-treelets: date05 built for
+    /// bandwidth), comma separated.
     #[arg(
         long,
         value_enum,
@@ -240,8 +241,9 @@ struct AccuracyArgs {
     dop_intervals: Vec<u32>,
     /// Stored DOP precision, comma separated: full, or bits a plane (1 to 16) of the codes a
     /// node record stores below an ancestor's DOP and the chip decodes outward (presets with
-    /// the `records` layout: date05, wscg03).
-    #[arg(long, value_delimiter = ',', default_value = "full")]
+    /// the `records` layout: date05, date05-treelets, wscg03). Default: each preset's own
+    /// (4 on date05-treelets, full on the others).
+    #[arg(long, value_delimiter = ',')]
     dop_bits: Vec<DopBits>,
     /// Yosys cells per unit (`unit,cells`, as scripts/area-study.sh writes
     /// docs/figures/area_cells.csv): adds each configuration's cells (DOP unit + TRI_UNIT) to

@@ -39,7 +39,8 @@ pub struct Plan {
     /// `[Folds::NONE]` (both unfolded) in studies written before folds.
     #[serde(default = "unfolded")]
     pub folds: Vec<Folds>,
-    /// Stored DOP precisions (`[DopBits::Full]` in studies written before them).
+    /// Stored DOP precisions; empty: each preset's own (`[DopBits::Full]` in studies written
+    /// before them).
     #[serde(default = "full")]
     pub dop_bits: Vec<DopBits>,
 }
@@ -88,7 +89,13 @@ impl Plan {
                                         f.tri, f.dop
                                     )
                                 })?;
-                            for &dop_bits in &self.dop_bits {
+                            let own = [preset.chip().dop_bits];
+                            let bits = if self.dop_bits.is_empty() {
+                                &own[..]
+                            } else {
+                                &self.dop_bits[..]
+                            };
+                            for &dop_bits in bits {
                                 let cfg = ChipConfig {
                                     k,
                                     format,
@@ -177,7 +184,7 @@ impl ShardFile {
 #[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct Row {
     pub mesh: String,
-    /// The memory system: the chip preset whose memory, port and triangle cache ran.
+    /// The memory system: the chip preset whose memory, port, caches and layout ran.
     pub memory: Preset,
     pub k: usize,
     pub format: Formats,
