@@ -130,6 +130,31 @@ fn cycle_outputs_timing_and_memory() {
     assert!(e.starts_with("s:8:"), "{e}");
 }
 
+/// B's triangle cache and the triangle prefetch, which no RTL chip has, are refused for a
+/// cross-check, naming what to change.
+#[test]
+fn rtl_refuses_the_cycle_models_memory_side() {
+    let base =
+        "[objects]\na = \"sphere:12\"\nb = \"sphere:12\"\n[[pose]]\nrot_deg=[0,0,0]\nt=[0,0,0]\n";
+    for (keys, why) in [
+        (
+            "[chip]\ntri_cache_b = 4\n",
+            "the RTL chips hold one triangle word of B; this configuration has tri_cache_b = 4",
+        ),
+        (
+            "[timing]\ntri_prefetch = true\n",
+            "the RTL chips ask for a leaf pair's triangle words when it reaches the leaf register",
+        ),
+    ] {
+        let e = Scene::parse(
+            &format!("{base}[outputs]\ncross_check = \"rtl\"\n{keys}"),
+            "s",
+        )
+        .unwrap_err();
+        assert!(e.contains(why), "{e}");
+    }
+}
+
 /// Which configurations an RTL chip runs (`rtl_order`), and what the refusals say to change.
 #[test]
 fn rtl_order_names_what_to_change() {
@@ -154,24 +179,6 @@ fn rtl_order_names_what_to_change() {
     )
     .unwrap_err();
     assert!(e.starts_with("s:8: [outputs] cross_check: cross_check = \"rtl\" needs an RTL chip of the configuration: the RTL chips hold one node record per object; this configuration has node_cache = 16"), "{e}");
-    // ... and so are B's triangle cache and the triangle prefetch, which no RTL chip has
-    for (keys, why) in [
-        (
-            "[chip]\ntri_cache_b = 4\n",
-            "the RTL chips hold one triangle word of B; this configuration has tri_cache_b = 4",
-        ),
-        (
-            "[timing]\ntri_prefetch = true\n",
-            "the RTL chips ask for a leaf pair's triangle words when it reaches the leaf register",
-        ),
-    ] {
-        let e = Scene::parse(
-            &format!("{base}[outputs]\ncross_check = \"rtl\"\n{keys}"),
-            "s",
-        )
-        .unwrap_err();
-        assert!(e.contains(why), "{e}");
-    }
     // the default configuration is the papers' chip
     assert_eq!(
         crate::harness::chip_io::rtl_order(&ChipConfig::default(), Traversal::Fifo, &rtl.params),
@@ -517,6 +524,38 @@ fn memory_models_and_presets() {
     );
 }
 
+/// The chip for bandwidth: date05's chip, port, memory and clock but for its memory side.
+#[test]
+fn date05_treelets_is_date05_with_its_memory_side() {
+    let base = "[objects]\na = \"sphere:12\"\nb = \"sphere:12\"\n[[pose]]\nrot_deg=[0,0,0]\nt=[0,0,0]\n[outputs]\ncycles = true\n";
+    let parse = |t: &str| {
+        Scene::parse(
+            &format!("{base}[chip]\npreset = \"{t}\"\n[timing]\ntechnology = \"paper\""),
+            "s",
+        )
+        .unwrap()
+    };
+    let (date05, t) = (parse("date05"), parse("date05-treelets"));
+    assert_eq!(
+        t.cfg,
+        ChipConfig {
+            dop_bits: crate::chip::config::DopBits::Bits(4),
+            node_cache: 64,
+            tri_cache: 128,
+            tri_cache_b: 128,
+            ..date05.cfg
+        }
+    );
+    assert_eq!(
+        t.params,
+        Params {
+            tri_prefetch: true,
+            ..date05.params
+        }
+    );
+    assert_eq!(t.clock.as_ref().unwrap().mhz(), 800.0);
+}
+
 /// A chip preset is the base of `[chip]`, `[timing]`, `[memory]` and the clock; the
 /// scene's keys override each of its values, and `--preset` replaces the scene's.
 #[test]
@@ -559,27 +598,6 @@ fn chip_presets_and_their_overrides() {
         ),
         (1, 16, 14, 48)
     );
-    // the chip for bandwidth: date05's chip, port, memory and clock but for its memory side
-    let t =
-        parse("[chip]\npreset = \"date05-treelets\"\n[timing]\ntechnology = \"paper\"").unwrap();
-    assert_eq!(
-        t.cfg,
-        ChipConfig {
-            dop_bits: crate::chip::config::DopBits::Bits(4),
-            node_cache: 64,
-            tri_cache: 128,
-            tri_cache_b: 128,
-            ..d.cfg
-        }
-    );
-    assert_eq!(
-        t.params,
-        Params {
-            tri_prefetch: true,
-            ..d.params
-        }
-    );
-    assert_eq!(mhz(&t), 800.0);
     // each key over the preset's value, the rest kept
     let o = parse("[chip]\npreset = \"date05\"\nk = 6\n[timing]\ncredit = 32\nclock_mhz = 400\n[memory]\nbanks = 4").unwrap();
     assert_eq!(
