@@ -16,7 +16,7 @@ use collision_chip::chip::config::{DopBits, MemLayout};
 use collision_chip::chip::layout::Dst;
 use collision_chip::chip::memory::{Ddr, MemTiming, Memory};
 use collision_chip::chip::params::Params;
-use collision_chip::chip::probes::PROBES;
+use collision_chip::chip::probes::{probe_index, PROBES};
 use collision_chip::chip::reg::{Mode, Order};
 use collision_chip::chip::rtl::ChipKind;
 use collision_chip::cycle::chip::Chip as CycleChip;
@@ -59,13 +59,11 @@ fn vectors() -> PathBuf {
 /// The memory requests a query's chip makes that the memory accepts, as the testbench
 /// prints them with `+requests` (`request <cycle> <word address>`), clock by clock.
 fn requests(p: &PreparedQuery, q: &ChipQuery) -> (ChipTrace, String) {
-    let idx = |name: &str| {
-        PROBES
-            .iter()
-            .position(|p| (p.0, p.1) == ("memory", name))
-            .unwrap()
-    };
-    let (valid, ready, addr) = (idx("req_valid"), idx("req_ready"), idx("req_addr"));
+    let (valid, ready, addr) = (
+        probe("memory", "req_valid"),
+        probe("memory", "req_ready"),
+        probe("memory", "req_addr"),
+    );
     let mut text = String::new();
     let mut obs = |t: u64, v: &[u64]| {
         if t > 0 && v[valid] == 1 && v[ready] == 1 {
@@ -325,6 +323,19 @@ fn params() -> impl Strategy<Value = Params> {
         )
 }
 
+/// Sphere against torus (200 triangles each) on `cfg`, and a pose where they overlap: the
+/// by-hand tests' query.
+fn sphere_torus(cfg: ChipConfig) -> (Chip, Pose) {
+    let tris = |m: &str| collision_chip::mesh::builtin(m).unwrap().triangles_f64();
+    let chip = Chip::new(&tris("sphere:200"), &tris("torus:200"), cfg).unwrap();
+    (chip, Pose::new(10.0, 20.0, 30.0, 0.5, 0.0, 0.0))
+}
+
+/// The index of probe `scope`.`name` in a clock's values.
+fn probe(scope: &str, name: &str) -> usize {
+    probe_index(scope, name).expect("a probe")
+}
+
 /// A LIFO all-pairs query at `p` on the cycle model, clock by clock, `obs` seeing every
 /// clock's probes.
 fn lifo_probed<'p>(
@@ -458,25 +469,9 @@ proptest! {
 /// the first: 16, 17, 20); the answers golden's, clock by clock equal to the skipping run.
 #[test]
 fn folded_dop_unit_takes_a_pair_every_interval() {
-    let chip = Chip::new(
-        &collision_chip::mesh::builtin("sphere:200")
-            .unwrap()
-            .triangles_f64(),
-        &collision_chip::mesh::builtin("torus:200")
-            .unwrap()
-            .triangles_f64(),
-        CHIP_CONFIG,
-    )
-    .unwrap();
-    let pose = Pose::new(10.0, 20.0, 30.0, 0.5, 0.0, 0.0);
+    let (chip, pose) = sphere_torus(CHIP_CONFIG);
     let golden = chip.query(&pose, Mode::All, Traversal::Lifo);
-    let idx = |unit: &str, name: &str| {
-        PROBES
-            .iter()
-            .position(|p| (p.0, p.1) == (unit, name))
-            .unwrap()
-    };
-    let (issue, valid) = (idx("d_cntr", "issue"), idx("dop", "valid_out"));
+    let (issue, valid) = (probe("d_cntr", "issue"), probe("dop", "valid_out"));
     for (ii, latency) in [(2u32, 16u64), (3, 17), (6, 20)] {
         // one request outstanding would space issues by the memory; prefetch keeps words ready
         let p = Params {
@@ -535,22 +530,14 @@ fn folded_dop_unit_takes_a_pair_every_interval() {
 /// the answers stay golden's.
 #[test]
 fn the_decode_stage_delays_each_dop_verdict_by_an_adder() {
-    let tris = |m: &str| collision_chip::mesh::builtin(m).unwrap().triangles_f64();
-    let pose = Pose::new(10.0, 20.0, 30.0, 0.5, 0.0, 0.0);
-    let idx = |name: &str| {
-        PROBES
-            .iter()
-            .position(|p| (p.0, p.1) == (if name == "issue" { "d_cntr" } else { "dop" }, name))
-            .unwrap()
-    };
-    let (issue, valid) = (idx("issue"), idx("valid_out"));
+    let (issue, valid) = (probe("d_cntr", "issue"), probe("dop", "valid_out"));
     for (dop_bits, latency) in [(DopBits::Full, 15u64), (DopBits::Bits(8), 18)] {
         let cfg = ChipConfig {
             layout: MemLayout::Records,
             dop_bits,
             ..CHIP_CONFIG
         };
-        let chip = Chip::new(&tris("sphere:200"), &tris("torus:200"), cfg).unwrap();
+        let (chip, pose) = sphere_torus(cfg);
         let (mut first_issue, mut first_out) = (None, None);
         let mut obs = |t: u64, v: &[u64]| {
             if v[issue] == 1 {
@@ -574,22 +561,14 @@ fn the_decode_stage_delays_each_dop_verdict_by_an_adder() {
 /// golden's.
 #[test]
 fn prefetched_triangle_words_are_asked_for_before_the_leaf_register() {
-    let tris = |m: &str| collision_chip::mesh::builtin(m).unwrap().triangles_f64();
-    let chip = Chip::new(&tris("sphere:200"), &tris("torus:200"), CHIP_CONFIG).unwrap();
-    let pose = Pose::new(10.0, 20.0, 30.0, 0.5, 0.0, 0.0);
+    let (chip, pose) = sphere_torus(CHIP_CONFIG);
     let golden = chip.query(&pose, Mode::All, Traversal::Lifo);
-    let idx = |unit: &str, name: &str| {
-        PROBES
-            .iter()
-            .position(|p| (p.0, p.1) == (unit, name))
-            .unwrap()
-    };
     let (valid, ready, dst) = (
-        idx("memory", "req_valid"),
-        idx("memory", "req_ready"),
-        idx("memory", "req_dst"),
+        probe("memory", "req_valid"),
+        probe("memory", "req_ready"),
+        probe("memory", "req_dst"),
     );
-    let leaf = idx("leaves", "leaf_valid");
+    let leaf = probe("leaves", "leaf_valid");
     for tri_prefetch in [false, true] {
         let p = Params {
             outstanding: 4,
@@ -826,16 +805,10 @@ fn prefetch_keeps_requests_back_to_back_by_hand() {
     let pose = Pose::new(0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     let base = chip.image_bases();
     let (na, nb) = (base[0], base[1]);
-    let idx = |scope: &str, name: &str| {
-        PROBES
-            .iter()
-            .position(|p| (p.0, p.1) == (scope, name))
-            .unwrap()
-    };
     let (req, addr, issue) = (
-        idx("memory", "req_valid"),
-        idx("memory", "req_addr"),
-        idx("d_cntr", "issue"),
+        probe("memory", "req_valid"),
+        probe("memory", "req_addr"),
+        probe("d_cntr", "issue"),
     );
     let timeline = |prefetch: u32| {
         let p = Params {
@@ -890,17 +863,7 @@ fn prefetch_keeps_requests_back_to_back_by_hand() {
 /// with a generous bound so that a regression fails here instead of hanging the suite.
 #[test]
 fn the_longest_waits_are_skipped() {
-    let chip = Chip::new(
-        &collision_chip::mesh::builtin("sphere:200")
-            .unwrap()
-            .triangles_f64(),
-        &collision_chip::mesh::builtin("torus:200")
-            .unwrap()
-            .triangles_f64(),
-        CHIP_CONFIG,
-    )
-    .unwrap();
-    let pose = Pose::new(10.0, 20.0, 30.0, 0.5, 0.0, 0.0);
+    let (chip, pose) = sphere_torus(CHIP_CONFIG);
     let golden = chip.query(&pose, Mode::All, Traversal::Lifo);
     let long = u32::MAX;
     let cases = [
@@ -967,25 +930,9 @@ fn the_longest_waits_are_skipped() {
 /// golden's, and the same with idle stretches skipped as clock by clock.
 #[test]
 fn folded_tri_unit_takes_a_pair_every_interval() {
-    let chip = Chip::new(
-        &collision_chip::mesh::builtin("sphere:200")
-            .unwrap()
-            .triangles_f64(),
-        &collision_chip::mesh::builtin("torus:200")
-            .unwrap()
-            .triangles_f64(),
-        CHIP_CONFIG,
-    )
-    .unwrap();
-    let pose = Pose::new(10.0, 20.0, 30.0, 0.5, 0.0, 0.0);
+    let (chip, pose) = sphere_torus(CHIP_CONFIG);
     let golden = chip.query(&pose, Mode::All, Traversal::Lifo);
-    let idx = |name: &str| {
-        PROBES
-            .iter()
-            .position(|p| (p.0, p.1) == ("tri_unit", name))
-            .unwrap()
-    };
-    let (take, out_valid) = (idx("take"), idx("out_valid"));
+    let (take, out_valid) = (probe("tri_unit", "take"), probe("tri_unit", "out_valid"));
     for (ii, t_check) in [(2u32, 58u64), (4, 61), (16, 85), (32, 89)] {
         let p = Params {
             tri_interval: ii,

@@ -232,7 +232,7 @@ pub struct ChipConfig {
     #[arg(skip = ChipConfig::default().tri_rounding)]
     pub tri_rounding: Rounding,
     /// Lines of A's triangle cache (WSCG'03 §4.3: direct mapped, a power of two; WSCG'03 has
-    /// 128); 1: the single word held, as for B's and in the RTL chips' reset state.
+    /// 128); 1: the single word held, as in the RTL chips' reset state.
     #[arg(long, default_value_t = ChipConfig::default().tri_cache)]
     pub tri_cache: u32,
     /// Lines of B's triangle cache, direct mapped as A's; 1: the single word held, as in

@@ -57,6 +57,11 @@ pub const PROBES: [(&str, &str, u32); 50] = [
     ("counters", "tri_fetches", 32),
 ];
 
+/// The index in [`PROBES`] of `scope`'s signal `name`.
+pub fn probe_index(scope: &str, name: &str) -> Option<usize> {
+    PROBES.iter().position(|p| (p.0, p.1) == (scope, name))
+}
+
 /// The scopes of [`PROBES`], in order.
 pub fn probe_scopes() -> Vec<&'static str> {
     let mut v: Vec<&str> = PROBES.iter().map(|p| p.0).collect();
@@ -68,7 +73,7 @@ pub fn probe_scopes() -> Vec<&'static str> {
 /// specified (`None`: always specified): the current pair's nodes, a request's address and
 /// destination, a DOP result's fields, TRI_UNIT's output and the result port's fields.
 pub fn probe_valid(i: usize) -> Option<usize> {
-    let idx = |scope: &str, name: &str| PROBES.iter().position(|p| p.0 == scope && p.1 == name);
+    let idx = probe_index;
     match (PROBES[i].0, PROBES[i].1) {
         ("d_cntr", "pair_a" | "pair_b") => idx("d_cntr", "entry_valid"),
         ("memory", "req_addr" | "req_dst") => idx("memory", "req_valid"),

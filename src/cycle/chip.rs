@@ -102,7 +102,7 @@ pub struct Chip<'a> {
     /// Child entries not yet pushed (the RTL's `pend`: one at most; none at issue spacing
     /// 1, where the queue takes two entries a clock).
     pend: VecDeque<Entry>,
-    // ---- triangle words (A's held in the triangle cache, B's: one line) and the memory port
+    // ---- triangle words (held in A's and B's triangle caches) and the memory port
     /// The triangle words held, A's and B's, as the leaf pairs put into the leaf FIFO left
     /// them.
     held_tris: [TriCache; 2],
@@ -412,6 +412,14 @@ impl<'a> Chip<'a> {
         [self.records[0][p.a as usize], self.records[1][p.b as usize]]
     }
 
+    /// The triangle records of a leaf pair's triangles, A's and B's.
+    fn tri_recs(&self, (ta, tb): (u32, u32)) -> [u32; 2] {
+        [
+            self.tri_records[0][ta as usize],
+            self.tri_records[1][tb as usize],
+        ]
+    }
+
     /// Books `n` cycles with the current logic (the same in each) and inputs `i` to [`Stats`].
     #[inline]
     fn tally(&mut self, i: &ChipIn, n: u64) {
@@ -567,10 +575,7 @@ impl<'a> Chip<'a> {
     /// the leaf register (the leaf pairs before it fill the caches in the same order), and
     /// the others asked for.
     fn push_leaf(&mut self, now: u64, tag: (u32, u32)) {
-        let recs = [
-            self.tri_records[0][tag.0 as usize],
-            self.tri_records[1][tag.1 as usize],
-        ];
+        let recs = self.tri_recs(tag);
         let fetch = [0, 1].map(|k| self.held_tris[k].fetch(recs[k]));
         for k in (0..2).filter(|&k| fetch[k]) {
             let d = [Dst::TriA, Dst::TriB][k];
@@ -583,11 +588,7 @@ impl<'a> Chip<'a> {
 
     /// The leaf register's triangle words fetched are the heads of the word queue.
     fn take_tri_words(&mut self) {
-        let (ta, tb) = self.leaf.tag;
-        let recs = [
-            self.tri_records[0][ta as usize],
-            self.tri_records[1][tb as usize],
-        ];
+        let recs = self.tri_recs(self.leaf.tag);
         for k in (0..2).filter(|&k| self.leaf.fetch[k]) {
             let w = self.tri_words.pop_front();
             assert_eq!(w, Some(recs[k]), "triangle word {k} of {:?}", self.leaf.tag);

@@ -360,10 +360,11 @@ impl<T: Copy + Default> Held<T> {
     }
 }
 
-/// WSCG'03 §4.3's triangle cache on the aligned side (object A): direct mapped, triangle
-/// word t in line `t mod lines` with its index as the tag (`lines` a power of two,
-/// [`ChipConfig::tri_cache`]). One line is the single word held that B's side and the RTL
-/// chips have: a word is fetched again only if the previous leaf pair had another triangle.
+/// WSCG'03 §4.3's triangle cache on the aligned side (object A; on B's side the same kind,
+/// [`ChipConfig::tri_cache_b`]): direct mapped, triangle word t in line `t mod lines` with
+/// its index as the tag (`lines` a power of two, [`ChipConfig::tri_cache`]). One line is the
+/// single word held that the RTL chips have on B's side: a word is fetched again only if the
+/// previous leaf pair had another triangle.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct TriCache {
     tags: Vec<Option<u32>>,

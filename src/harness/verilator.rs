@@ -6,7 +6,7 @@
 
 use super::chip_io::{self, QueryImage};
 use crate::chip::memory::{MemClocks, Memory};
-use crate::chip::probes::{probe_valid, PROBES};
+use crate::chip::probes::probe_valid;
 use crate::chip::rtl::ChipKind;
 use crate::cycle::drive::ChipTrace;
 use std::path::{Path, PathBuf};
@@ -19,7 +19,7 @@ pub const TB_MEMORY_WORDS: usize = 1 << 16;
 /// for the k = 6 chip, 2,400 for the k = 24 one on the checked-in queries): for estimates.
 pub const VERILATOR_CLOCKS_PER_SECOND: f64 = 2000.0;
 
-/// The ports chip_tb.v prints on a `ports` line, in order, by their [`PROBES`] names.
+/// The ports chip_tb.v prints on a `ports` line, in order, by their [`PROBES`](crate::chip::probes::PROBES) names.
 pub const PORTS: [(&str, &str); 16] = [
     ("host", "busy"),
     ("host", "done"),
@@ -40,10 +40,7 @@ pub const PORTS: [(&str, &str); 16] = [
 ];
 
 fn probe_index(p: (&str, &str)) -> usize {
-    PROBES
-        .iter()
-        .position(|q| (q.0, q.1) == p)
-        .expect("every port is a probe")
+    crate::chip::probes::probe_index(p.0, p.1).expect("every port is a probe")
 }
 
 type Ports = [u64; PORTS.len()];
@@ -54,7 +51,7 @@ type Ports = [u64; PORTS.len()];
 pub struct PortLog(Vec<(u64, Ports)>);
 
 impl PortLog {
-    /// Records cycle `t` from the cycle model's [`PROBES`] values.
+    /// Records cycle `t` from the cycle model's [`PROBES`](crate::chip::probes::PROBES) values.
     pub fn record(&mut self, t: u64, probes: &[u64]) {
         if t == 0 {
             return;
@@ -281,6 +278,7 @@ pub fn cross_check(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::chip::probes::PROBES;
 
     /// chip_tb.v's memory depth is [`TB_MEMORY_WORDS`], and its `ports` line is [`PORTS`].
     #[test]

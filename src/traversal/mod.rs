@@ -139,7 +139,7 @@ pub(crate) struct Engine<'a> {
     layout: Layout,
     mode: Mode,
     held_node: [NodeCache; 2],
-    /// A's triangle words held (the triangle cache), B's (one line).
+    /// A's and B's triangle words held (their triangle caches).
     held_tri: [TriCache; 2],
     /// A's and B's triangle words last made (software only: a word is made from the f64
     /// triangle when read, and a leaf meets several of the other object's in a row), kept
