@@ -450,3 +450,75 @@ macro_rules! scale_test {
 
 scale_test!(scale_b32, b32, Format::BINARY32);
 scale_test!(scale_e8m15, e8m15, Format::REDUCED);
+
+impl Pipelined for b32::DopDecode {
+    type In = (u64, u32, u32);
+    type Out = u64;
+    const LATENCY: usize = b32::DopDecode::LATENCY;
+    fn set(&mut self, (r, q, ef): (u64, u32, u32), valid: bool) {
+        self.r.next = r.into();
+        self.q.next = (q as u64).into();
+        self.ef.next = (ef as u64).into();
+        self.valid_in.next = valid;
+    }
+    fn out(&self) -> (bool, u64) {
+        (self.valid_out.val(), self.y.val().to_u64())
+    }
+    fn clock(&mut self, high: bool) {
+        self.clock.next = Clock { clk: high };
+    }
+}
+
+/// The decode stage of stored DOPs (`DopDecode`, 4-bit codes in binary32) against
+/// `dop::stored::decode`: every code at every exponent from r = 0 (y is minus the step
+/// itself), then random references; and the comparison sees a step one bit off (the code's
+/// lowest bit flipped, the exponent one higher), as a stage off by one bit would give.
+#[test]
+fn decode_b32_q4() {
+    use collision_chip::chip::layout::exp_range;
+    use collision_chip::dop::stored::decode;
+    let fmt = Format::BINARY32;
+    let bits = b32::DopDecode::CODE_BITS as u32;
+    let (lo, hi) = exp_range(fmt, bits);
+    assert_eq!(
+        b32::DopDecode::EXP_FIELD_BITS as u32,
+        collision_chip::chip::layout::exp_field_bits(fmt, bits),
+        "the stage's exponent field is the layout's"
+    );
+    let (top, efs) = ((1u32 << bits) - 1, (hi - lo) as u32);
+    let mut ops: Vec<(u64, u32, u32)> = (0..=top)
+        .flat_map(|q| (0..=efs).map(move |ef| (0, q, ef)))
+        .collect();
+    let mut runner = TestRunner::deterministic();
+    let rand = prop::collection::vec((operand(Fmt::of(fmt)), 0..=top, 0..=efs), 2000);
+    ops.extend(rand.new_tree(&mut runner).unwrap().current());
+    let rnd = Rounding::TowardPositive;
+    let want = |(r, q, ef): (u64, u32, u32)| {
+        fmt.to_bits(decode(fmt, rnd, fmt.from_bits(r), q, lo + ef as i32))
+    };
+    let mut uut = b32::dop_decode_top(rnd);
+    let got = run(&mut uut, &ops);
+    let bad: Vec<_> = ops
+        .iter()
+        .zip(&got)
+        .filter(|&(&op, &y)| y != want(op))
+        .collect();
+    assert!(
+        bad.is_empty(),
+        "{} mismatches, first {:?}",
+        bad.len(),
+        &bad[..bad.len().min(5)]
+    );
+    for off in [
+        |(r, q, ef)| (r, q ^ 1, ef),
+        |(r, q, ef): (u64, u32, u32)| (r, q, ef + 1),
+    ] {
+        let seen = ops
+            .iter()
+            .zip(&got)
+            .filter(|&(&op, &y)| op.2 < efs && y != want(off(op)))
+            .count();
+        assert!(seen > 1000, "a step one bit off shows in only {seen} cases");
+    }
+    println!("DopDecode binary32, 4-bit codes: {} decodes ok", ops.len());
+}

@@ -135,6 +135,7 @@ pub fn all() -> Vec<Unit> {
         units.push(tri_unit_fold_unit(ii));
     }
     units.push(pair_queue_unit());
+    units.push(dop_decode_unit());
     units
 }
 
@@ -310,6 +311,68 @@ fn pair_queue_unit() -> Unit {
         verilog: Box::new(crate::rtl::d_cntr::verilog_pair_queue::<4, 5, 3>),
         vectors: Box::new(move || crate::rtl::d_cntr::pair_queue_vectors(&n2, 4, RANDOM_CASES)),
     }
+}
+
+/// `dop_decode_b32_q4_ru`: the decode stage of 4-bit stored DOPs in binary32, rounding up
+/// (`rtl::b32::DopDecode`, the DOP lanes' rounding).
+fn dop_decode_unit() -> Unit {
+    let (fmt, r) = (Format::BINARY32, Rounding::TowardPositive);
+    let bits = crate::rtl::b32::DopDecode::CODE_BITS as u32;
+    let name = format!("dop_decode_b32_q{bits}_{}", rounding_tag(r));
+    let n2 = name.clone();
+    Unit {
+        name,
+        latency: crate::chip::rtl::DOP_DECODE_LATENCY as u32,
+        verilog: Box::new(move || crate::rtl::b32::verilog_dop_decode(r)),
+        vectors: Box::new(move || dop_decode_vectors(&n2, fmt, r, bits)),
+    }
+}
+
+/// Vectors `r q ef y` of a decode stage (golden [`decode`](crate::dop::stored::decode)):
+/// every code at every exponent with `r = 0` (`y` is minus the step: each step the stage
+/// makes, normal or subnormal, shows bit for bit), every special `r` with the extreme codes
+/// and exponents, then random `r` (any pattern, or a multiple of the step, so that the
+/// difference cancels or lands on a tie) with random codes and exponents.
+fn dop_decode_vectors(name: &str, fmt: Format, r: Rounding, bits: u32) -> String {
+    use crate::chip::layout::{exp_field_bits, exp_range};
+    use crate::dop::stored::decode;
+    let (lo, hi) = exp_range(fmt, bits);
+    let (top, efs) = ((1u32 << bits) - 1, (hi - lo) as u32);
+    let digits = (fmt.width() as usize).div_ceil(4);
+    let (qd, ed) = (
+        bits.div_ceil(4) as usize,
+        exp_field_bits(fmt, bits).div_ceil(4) as usize,
+    );
+    let mut out = String::new();
+    let _ = writeln!(out, "// r q ef y");
+    let _ = writeln!(out, "// latency: {}", crate::chip::rtl::DOP_DECODE_LATENCY);
+    let _ = writeln!(out, "// {name}: y = r - q 2^(ef {lo}) in {fmt}, rounding {r:?}, q < 2^{bits}, ef <= {efs}; golden: collision_chip::dop::stored::decode");
+    let mut cases: Vec<(u64, u32, u32)> = (0..=top)
+        .flat_map(|q| (0..=efs).map(move |ef| (0, q, ef)))
+        .collect();
+    cases.extend(
+        fmt.special_patterns()
+            .into_iter()
+            .flat_map(|x| [0, 1, top].map(|q| [0, 1, efs / 2, efs].map(|ef| (x, q, ef))))
+            .flatten(),
+    );
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(0x5eed ^ name.len() as u64);
+    cases.extend((0..RANDOM_CASES).map(|i| {
+        let (q, ef) = (rng.random_range(0..=top), rng.random_range(0..=efs));
+        let x = if i % 2 == 0 {
+            operand(&mut rng, fmt)
+        } else {
+            let m = rng.random_range(0..=4 * top) as f64;
+            let e = (lo + ef as i32 + rng.random_range(-2..3)).max(lo);
+            fmt.to_bits(m * 2f64.powi(e))
+        };
+        (x, q, ef)
+    }));
+    for (x, q, ef) in cases {
+        let y = fmt.to_bits(decode(fmt, r, fmt.from_bits(x), q, lo + ef as i32));
+        let _ = writeln!(out, "{x:0digits$x} {q:0qd$x} {ef:0ed$x} {y:0digits$x}");
+    }
+    out
 }
 
 /// A random operand: any bit pattern, or a value near 1 (many ties and cancellations).
@@ -568,8 +631,8 @@ pub fn write_vectors(dir: &Path) -> std::io::Result<Vec<String>> {
 
 /// The units whose Yosys cells the area study counts (scripts/area-study.sh,
 /// docs/explanation/accuracy.md): the DOP unit for every k, format and DOP rounding the RTL builds (those
-/// in rtl/ are the same Verilog; the others are the same macro at another k or rounding), and
-/// TRI_UNIT per format.
+/// in rtl/ are the same Verilog; the others are the same macro at another k or rounding),
+/// TRI_UNIT per format, and the decode stage of stored DOPs (one plane; a chip has 2k).
 fn area_units() -> Vec<(String, Text)> {
     let mut units: Vec<(String, Text)> = vec![];
     for fmt in [Format::BINARY32, Format::REDUCED] {
@@ -596,6 +659,10 @@ fn area_units() -> Vec<(String, Text)> {
         ));
     }
     units.extend(area_fold_units());
+    units.push((
+        dop_decode_unit().name,
+        Box::new(|| crate::rtl::b32::verilog_dop_decode(Rounding::TowardPositive)),
+    ));
     units
 }
 

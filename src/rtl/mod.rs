@@ -46,6 +46,7 @@ mod chip;
 mod common;
 pub mod d_cntr;
 pub mod delay;
+mod dop_decode;
 mod dop_unit;
 mod dop_unit_fold;
 mod doptrf;
@@ -150,6 +151,8 @@ pub mod b32 {
     );
     crate::rtl::tcheck_fold::tcheck_fold!(32, 31, 8, 23);
     crate::rtl::tri_unit_fold::tri_unit_fold!(32);
+    // the decode stage of 4-bit stored DOPs (`date05-treelets`): exponents -149 ..= 124, 9 bits
+    crate::rtl::dop_decode::dop_decode!(32, 23, 4, 9);
 }
 
 /// Units for e8m15 (`Format::REDUCED`).
@@ -306,6 +309,7 @@ const _: () = assert!(
         && b32::FpAdd::LATENCY == crate::chip::rtl::FP_ADD_LATENCY
 );
 const _: () = assert!(b32::FpScale::LATENCY == crate::chip::rtl::FP_SCALE_LATENCY);
+const _: () = assert!(b32::DopDecode::LATENCY == crate::chip::rtl::DOP_DECODE_LATENCY);
 const _: () = assert!(
     b32::TriUnit::LATENCY == crate::chip::rtl::TRI_LATENCY
         && e8m15::TriUnit::LATENCY == crate::chip::rtl::TRI_LATENCY

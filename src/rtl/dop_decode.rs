@@ -1,0 +1,123 @@
+//! The decode stage of stored DOP precision (`DopDecode`), stamped out per format and code
+//! width by `dop_decode!`: one plane of a node word of `b`-bit codes back to a distance,
+//! [`dop::stored::decode`](crate::dop::stored::decode) bit for bit.
+
+/// Stamps out `DopDecode` in the calling module (which must hold the format's `FpAdd`).
+/// Arguments: `W`, `F` (fraction bits), `B` the code's bits (at most `F + 1`), `X` the
+/// exponent field's bits ([`exp_field_bits`](crate::chip::layout::exp_field_bits)).
+macro_rules! dop_decode {
+    ($W:tt, $F:tt, $B:tt, $X:tt) => {
+        /// `y = r ⊖ q 2^e`, `e = e_lo + ef` ([`exp_range`](crate::chip::layout::exp_range)):
+        /// the record's reference distance `r` less the plane's code `q` in steps of `2^e`,
+        /// in the format with the adder's rounding
+        /// ([`dop::stored::decode`](crate::dop::stored::decode)).
+        ///
+        /// `q 2^e` is a value of the format whatever `q` and `ef` (the layout's exponent range:
+        /// at least the smallest subnormal, at most the largest finite over `2^B - 1`), so it is
+        /// made exactly, with no rounding, in front of the adder's first stage: `q` normalised
+        /// by its leading zeros `lz` (a chain of `B - 1` one-bit shifts: `B` is small), then the
+        /// biased exponent `ef + B - lz - F` and the bits below the leading one, or, where that
+        /// exponent would be below 1, the subnormal `q 2^ef` (exponent field 0); `q = 0` is +0,
+        /// so `y = r`. Then `FpAdd` with `sub`: latency 3
+        /// ([`DOP_DECODE_LATENCY`](crate::chip::rtl::DOP_DECODE_LATENCY)), one plane a clock.
+        /// Ports: in `clock`, `r[W]`, `q[B]`, `ef[X]`, `valid_in`; out `y[W]`, `valid_out`.
+        #[derive(LogicBlock)]
+        pub struct DopDecode {
+            pub clock: Signal<In, Clock>,
+            pub r: Signal<In, Bits<$W>>,
+            pub q: Signal<In, Bits<$B>>,
+            pub ef: Signal<In, Bits<$X>>,
+            pub valid_in: Signal<In, Bit>,
+            pub y: Signal<Out, Bits<$W>>,
+            pub valid_out: Signal<Out, Bit>,
+            c_f: Constant<Bits<16>>,
+            c_b: Constant<Bits<16>>,
+            /// `q` after i one-bit normalising shifts, and the shifts taken.
+            norm: [Signal<Local, Bits<$B>>; $B],
+            lz: [Signal<Local, Bits<16>>; $B],
+            expo: Signal<Local, Bits<16>>,
+            frac: Signal<Local, Bits<$F>>,
+            step: Signal<Local, Bits<$W>>,
+            add: FpAdd,
+        }
+
+        impl DopDecode {
+            pub const LATENCY: usize = FpAdd::LATENCY;
+            /// The code's bits.
+            pub const CODE_BITS: usize = $B;
+            /// The exponent field's bits.
+            pub const EXP_FIELD_BITS: usize = $X;
+
+            /// A decode stage subtracting with `rounding` (the DOP lanes').
+            pub fn new(rounding: Rounding) -> Self {
+                Self {
+                    clock: Default::default(),
+                    r: Default::default(),
+                    q: Default::default(),
+                    ef: Default::default(),
+                    valid_in: Default::default(),
+                    y: Default::default(),
+                    valid_out: Default::default(),
+                    c_f: Constant::new(($F as u64).into()),
+                    c_b: Constant::new(($B as u64).into()),
+                    norm: Default::default(),
+                    lz: Default::default(),
+                    expo: Default::default(),
+                    frac: Default::default(),
+                    step: Default::default(),
+                    add: FpAdd::new(rounding),
+                }
+            }
+        }
+
+        impl Logic for DopDecode {
+            #[hdl_gen]
+            fn update(&mut self) {
+                clock!(self, clock, add);
+                self.norm[0].next = self.q.val();
+                self.lz[0].next = 0.into();
+                for i in 1..$B {
+                    self.norm[i].next = self.norm[i - 1].val();
+                    self.lz[i].next = self.lz[i - 1].val();
+                    if !self.norm[i - 1].val().get_bit($B - 1) {
+                        self.norm[i].next = self.norm[i - 1].val() << 1;
+                        self.lz[i].next = self.lz[i - 1].val() + 1;
+                    }
+                }
+                // biased exponent ef + B - lz - F when at least 1, else a subnormal
+                self.expo.next = 0.into();
+                self.frac.next = bit_cast::<$F, $B>(self.q.val()) << self.ef.val();
+                if bit_cast::<16, $X>(self.ef.val()) + self.c_b.val()
+                    > self.c_f.val() + self.lz[$B - 1].val()
+                {
+                    self.expo.next = bit_cast::<16, $X>(self.ef.val()) + self.c_b.val()
+                        - self.lz[$B - 1].val()
+                        - self.c_f.val();
+                    self.frac.next = bit_cast::<$F, $B>(self.norm[$B - 1].val()) << ($F + 1 - $B);
+                }
+                self.step.next = (bit_cast::<$W, 16>(self.expo.val()) << $F)
+                    | bit_cast::<$W, $F>(self.frac.val());
+                if self.q.val() == 0 {
+                    self.step.next = 0.into();
+                }
+                self.add.a.next = self.r.val();
+                self.add.b.next = self.step.val();
+                self.add.sub.next = true;
+                self.add.valid_in.next = self.valid_in.val();
+                self.y.next = self.add.y.val();
+                self.valid_out.next = self.add.valid_out.val();
+            }
+        }
+
+        /// A decode stage ready to simulate as a top-level block (inputs claimed, connected).
+        pub fn dop_decode_top(rounding: Rounding) -> DopDecode {
+            top_level!(DopDecode::new(rounding); clock, r, q, ef, valid_in)
+        }
+
+        /// Verilog of [`dop_decode_top`] (top module `top`).
+        pub fn verilog_dop_decode(rounding: Rounding) -> String {
+            generate_verilog(&dop_decode_top(rounding))
+        }
+    };
+}
+pub(crate) use dop_decode;
