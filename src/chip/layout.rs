@@ -188,7 +188,7 @@ impl Layout {
 pub fn node_records(kind: MemLayout, levels: u32, children: &[Option<[u32; 2]>]) -> Vec<u32> {
     match kind {
         MemLayout::Words => (0..children.len() as u32).collect(),
-        MemLayout::Records => treelet_records(children, levels).0,
+        MemLayout::Records => treelet_records(children, levels).rec,
     }
 }
 
@@ -211,19 +211,20 @@ pub fn tri_records(kind: MemLayout, leaves: &[u32]) -> Vec<u32> {
 /// [`treelet_root`]), in pre-order from 1, holding its descendants 1 to `levels` below it
 /// breadth first: slot `2^d - 2 + path` at depth d below it, `path` the d child choices (0:
 /// first child) read as a binary number. One level: the j-th inner node's children in record
-/// j + 1, slots 0 and 1.
-pub fn treelet_records(children: &[Option<[u32; 2]>], levels: u32) -> (Vec<u32>, Vec<u32>) {
+/// j + 1, slots 0 and 1. Also each node's treelet root, whose record holds it (the root its
+/// own: record 0).
+pub fn treelet_records(children: &[Option<[u32; 2]>], levels: u32) -> Treelets {
     let n = children.len();
-    let (mut rec, mut slot) = (vec![0; n], vec![0; n]);
+    let (mut rec, mut slot, mut root) = (vec![0; n], vec![0; n], vec![0; n]);
     let (mut depth, mut path) = (vec![0u32; n], vec![0u32; n]);
     let mut next = 1;
     for p in 0..n {
         let Some(c) = children[p] else { continue };
-        let own = if treelet_root(depth[p], levels) {
+        let (own, own_root) = if treelet_root(depth[p], levels) {
             next += 1;
-            next - 1
+            (next - 1, p as u32)
         } else {
-            rec[p]
+            (rec[p], root[p])
         };
         let below = if treelet_root(depth[p], levels) {
             0
@@ -234,10 +235,23 @@ pub fn treelet_records(children: &[Option<[u32; 2]>], levels: u32) -> (Vec<u32>,
         for (which, &m) in c.iter().enumerate() {
             let m = m as usize;
             (depth[m], path[m]) = (depth[p] + 1, below + which as u32);
-            (rec[m], slot[m]) = (own, (1 << d) - 2 + path[m]);
+            (rec[m], slot[m], root[m]) = (own, (1 << d) - 2 + path[m], own_root);
         }
     }
-    (rec, slot)
+    Treelets { rec, slot, root }
+}
+
+/// [`treelet_records`]' answer, by node.
+pub struct Treelets {
+    pub rec: Vec<u32>,
+    pub slot: Vec<u32>,
+    pub root: Vec<u32>,
+}
+
+/// Bits of a node id's slot field in the `records` layout: a record of `levels` levels'
+/// node words numbered to the next power of two ([`node_ids`]).
+pub const fn slot_bits(levels: u32) -> u32 {
+    record_nodes(levels).next_power_of_two().trailing_zeros()
 }
 
 /// The id the chip knows each node by (in D_CNTR's entries and the children fields of node
@@ -249,9 +263,9 @@ pub fn node_ids(kind: MemLayout, levels: u32, children: &[Option<[u32; 2]>]) -> 
     if kind == MemLayout::Words {
         return (0..children.len() as u32).collect();
     }
-    let (rec, slot) = treelet_records(children, levels);
-    let s = record_nodes(levels).next_power_of_two().trailing_zeros();
-    rec.iter().zip(&slot).map(|(r, q)| r << s | q).collect()
+    let t = treelet_records(children, levels);
+    let s = slot_bits(levels);
+    t.rec.iter().zip(&t.slot).map(|(r, q)| r << s | q).collect()
 }
 
 /// Where a record lies: its word address in memory. `words`, and any layout on an ideal

@@ -72,6 +72,17 @@ struct Stored {
 
 const NO_ROOT: u32 = u32::MAX;
 
+/// A node's fields in a record of stored DOP precision ([`DopTree::stored_fields`]).
+#[derive(Clone, Debug, PartialEq)]
+pub struct StoredFields {
+    /// The record's reference: its treelet root's k distances.
+    pub r: Vec<f64>,
+    /// The record's exponent per plane.
+    pub e: Vec<i16>,
+    /// The node's code per plane.
+    pub q: Vec<u32>,
+}
+
 /// The bit of a leaf in [`DopTree`]'s links (so trees of up to 2^31 nodes).
 const LEAF: u32 = 1 << 31;
 
@@ -210,6 +221,37 @@ impl DopTree {
             (j, Some(s)) if j > 0 => s.decoded.read(j as usize * self.k, d),
             (j, _) => self.dops.read(j as usize * self.k, d),
         }
+    }
+
+    /// What a record of stored DOP precision holds for node `n`, whose record is its
+    /// treelet root `root`'s ([`treelet_records`](crate::chip::layout::treelet_records); the
+    /// tree's root is its own): the record's shared fields, the root's distances as the host
+    /// stored them and its exponents, and `n`'s codes ([`stored::encode`]); the tree's root
+    /// has codes 0 at the smallest exponent, so that it decodes to its distances in full.
+    /// None in full precision.
+    pub fn stored_fields(&self, n: u32, root: u32) -> Option<StoredFields> {
+        let s = self.stored.as_ref()?;
+        let (k, j) = (self.k, self.links[root as usize]);
+        let r = self.true_dop(root);
+        let e = if n == 0 {
+            let lo = crate::chip::layout::exp_range(self.fmt, s.bits).0;
+            vec![lo as i16; k]
+        } else {
+            assert!(j & LEAF == 0, "a treelet root is an inner node");
+            s.exps[j as usize * k..][..k].to_vec()
+        };
+        let d = self.true_dop(n);
+        let q = (0..k)
+            .map(|i| match n {
+                0 => 0,
+                _ => stored::encode(self.fmt, self.rounding, s.bits, r.d[i], d.d[i], e[i] as i32),
+            })
+            .collect();
+        Some(StoredFields {
+            r: r.d[..k].to_vec(),
+            e,
+            q,
+        })
     }
 
     /// The distances the host computed for `node`, before any coding: an inner node's

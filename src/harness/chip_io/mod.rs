@@ -10,9 +10,10 @@
 //! ([`with_chip`]).
 
 use super::tri_io::{tri_unit_setup_words, LeafIn};
-use crate::chip::config::ChipConfig;
-use crate::chip::config::MemLayout;
-use crate::chip::layout::{Dst, RecordMap};
+use crate::chip::config::{ChipConfig, DopBits, MemLayout};
+use crate::chip::layout::{
+    exp_field_bits, exp_range, record_nodes, slot_bits, treelet_records, Dst, Layout, RecordMap,
+};
 use crate::chip::memory::{MemClocks, Memory};
 use crate::chip::params::Params;
 use crate::chip::ports::{ChipIn, ChipOut, Clocked};
@@ -20,6 +21,7 @@ use crate::chip::reg::{self, Mode, Order};
 use crate::chip::rtl::{self as chips, ChipKind, QUEUE_BITS};
 use crate::cycle::drive::open_vcd;
 pub use crate::cycle::drive::{ChipError, ChipTrace, Drive, Reader};
+use crate::dop::tree::StoredFields;
 use crate::dop::Node;
 use crate::format::Format;
 use crate::golden::host::HostSetup;
@@ -111,53 +113,88 @@ fn put(w: &mut Word, at: usize, bits: usize, v: u64) {
     }
 }
 
-/// Node `n`'s word at bit `at` of `w`: children by their ids ([`ObjectImage::ids`]), a
+/// Node `n`'s word at bit `at` of `w`: its distances (or, `codes`, its codes of
+/// [`Layout::node_bits`]' plane width), children by their ids ([`ObjectImage::ids`]), a
 /// leaf's triangle index and (`records`) its triangle's record.
 fn put_node_word(
     w: &mut Word,
     at: usize,
-    kind: ChipKind,
-    layout: MemLayout,
+    cfg: &ChipConfig,
     obj: &ObjectImage,
     n: u32,
+    codes: Option<&[u32]>,
 ) {
-    let (f, k) = (kind.config().format.dop, kind.config().k);
-    let w_ = f.width() as usize;
-    for (i, &d) in obj.tree.dop(n).iter().enumerate() {
-        put(w, at + 1 + i * w_, w_, f.to_bits(d));
+    let (f, k) = (cfg.format.dop, cfg.k);
+    let plane = match codes {
+        Some(_) => (Layout::new(cfg).node_bits as usize - 65) / k,
+        None => f.width() as usize,
+    };
+    match codes {
+        Some(q) => (0..k).for_each(|i| put(w, at + 1 + i * plane, plane, q[i] as u64)),
+        None => {
+            for (i, &d) in obj.tree.dop(n).iter().enumerate() {
+                put(w, at + 1 + i * plane, plane, f.to_bits(d));
+            }
+        }
     }
     let (leaf, f0, f1) = match obj.tree.node(n) {
         Node::Inner([c0, c1]) => (false, obj.ids[c0 as usize], obj.ids[c1 as usize]),
-        Node::Leaf(t) if layout == MemLayout::Records => (true, t, obj.tri_record(t)),
+        Node::Leaf(t) if cfg.layout == MemLayout::Records => (true, t, obj.tri_record(t)),
         Node::Leaf(t) => (true, t, 0),
     };
     put(w, at, 1, leaf as u64);
-    put(w, at + 1 + k * w_, 32, f0 as u64);
-    put(w, at + 33 + k * w_, 32, f1 as u64);
+    put(w, at + 1 + k * plane, 32, f0 as u64);
+    put(w, at + 33 + k * plane, 32, f1 as u64);
 }
 
-/// An object's node records and its triangle records, in `layout` (`chip::layout`): a
-/// node record holds its nodes' words in their slots (`records`: slot 1 from bit
-/// `node_bits`), a triangle record its triangle's word.
-fn object_words(kind: ChipKind, layout: MemLayout, obj: &ObjectImage) -> [Vec<Word>; 2] {
-    let f = kind.config().format;
-    let node_bits = crate::chip::layout::node_bits(kind.config().k, f.dop.width() as usize);
-    let mut nodes = vec![vec![0; kind.word_bits().div_ceil(64)]; obj.node_records() as usize];
-    for n in 0..obj.tree.len() as u32 {
-        let slot = if layout == MemLayout::Records {
-            obj.ids[n as usize] as usize & 1
-        } else {
-            0
-        };
-        put_node_word(
-            &mut nodes[obj.record(n) as usize],
-            slot * node_bits,
-            kind,
-            layout,
-            obj,
-            n,
-        );
+/// A record's shared fields after its node words (stored DOP precision): the treelet
+/// root's distances, then each plane's exponent as `e - e_lo` ([`crate::chip::layout`]).
+fn put_shared(w: &mut Word, cfg: &ChipConfig, s: &StoredFields) {
+    let (f, k, l) = (cfg.format.dop, cfg.k, Layout::new(cfg));
+    let DopBits::Bits(bits) = cfg.dop_bits else {
+        unreachable!("shared fields come with stored DOP precision")
+    };
+    let (lo, x) = (exp_range(f, bits).0, exp_field_bits(f, bits) as usize);
+    let (at, wd) = (
+        (record_nodes(l.levels) * l.node_bits) as usize,
+        f.width() as usize,
+    );
+    for i in 0..k {
+        put(w, at + i * wd, wd, f.to_bits(s.r[i]));
+        put(w, at + k * wd + i * x, x, (s.e[i] as i32 - lo) as u64);
     }
+}
+
+/// An object's node records and its triangle records, in `cfg`'s layout (`chip::layout`):
+/// a node record holds its nodes' words in their slots (`records`: slot s from bit
+/// `s node_bits`) and, with stored DOP precision, the shared fields; a triangle record its
+/// triangle's word.
+fn object_words(kind: ChipKind, cfg: &ChipConfig, obj: &ObjectImage) -> [Vec<Word>; 2] {
+    let l = Layout::new(cfg);
+    let mut nodes = vec![vec![0; kind.word_bits().div_ceil(64)]; obj.node_records() as usize];
+    let children: Vec<_> = obj
+        .tree
+        .nodes()
+        .map(|n| match n {
+            Node::Inner(c) => Some(c),
+            Node::Leaf(_) => None,
+        })
+        .collect();
+    let roots = treelet_records(&children, l.levels).root;
+    for n in 0..obj.tree.len() as u32 {
+        let slot = match cfg.layout {
+            MemLayout::Records => obj.ids[n as usize] & ((1 << slot_bits(l.levels)) - 1),
+            MemLayout::Words => 0,
+        };
+        let w = &mut nodes[obj.record(n) as usize];
+        let fields = obj.tree.stored_fields(n, roots[n as usize]);
+        if let Some(s) = &fields {
+            put_shared(w, cfg, s);
+        }
+        let at = (slot * l.node_bits) as usize;
+        put_node_word(w, at, cfg, obj, n, fields.as_ref().map(|s| &s.q[..]));
+    }
+    let f = kind.config().format;
     let mut tris = vec![vec![]; obj.tri_count()];
     for (t, tri) in obj.tris().enumerate() {
         tris[obj.tri_record(t as u32) as usize] = tri_word(kind, &LeafIn::of(f.tri, &tri));
@@ -175,8 +212,8 @@ fn image_words(
     memory: &Memory,
 ) -> Vec<Word> {
     let map = RecordMap::new(&crate::chip::layout::Layout::new(cfg), memory);
-    let [na, ta] = object_words(kind, cfg.layout, a);
-    let [nb, tb] = object_words(kind, cfg.layout, b);
+    let [na, ta] = object_words(kind, cfg, a);
+    let [nb, tb] = object_words(kind, cfg, b);
     let regions = [na, nb, ta, tb];
     let base = map.bases(crate::golden::memory::image_bases(a, b));
     let mut words = vec![

@@ -91,3 +91,52 @@ fn too_large_a_tree_is_an_error() {
     .unwrap_err();
     assert!(e.contains("16 bits"), "{e}");
 }
+
+/// Records of stored DOP precision as the host writes them (binary32, k = 24, 4-bit codes,
+/// two levels a record: 6 node words of 1 + 24 * 4 + 64 = 161 bits, then 24 distances of 32
+/// bits and 24 exponents of 9 bits, 1,950 bits in a 2,048-bit word), read back bit by bit and
+/// decoded plane by plane with `dop::stored::decode`: every node's distances are the golden
+/// tree's, its fields its children's ids (or its triangle and record).
+#[test]
+fn coded_records_decode_to_the_golden_distances() {
+    use crate::chip::layout::{exp_range, slot_bits};
+    use crate::dop::stored::decode;
+    let mut cfg = ChipKind::K24B32.config();
+    cfg.layout = MemLayout::Records;
+    cfg.dop_bits = DopBits::Bits(4);
+    let l = Layout::new(&cfg);
+    assert_eq!((l.node_bits, l.levels, l.shared_bits), (161, 2, 24 * 41));
+    let field = |w: &Word, at: usize, bits: usize| {
+        (0..bits).fold(0u64, |v, k| {
+            v | (w[(at + k) / 64] >> ((at + k) % 64) & 1) << k
+        })
+    };
+    let (f, rnd, lo) = (
+        Format::BINARY32,
+        cfg.dop_rounding.op(),
+        exp_range(Format::BINARY32, 4).0,
+    );
+    let tris = crate::mesh::builtin("torus:300").unwrap().triangles_f64();
+    let obj = ObjectImage::build(tris, &cfg);
+    let [nodes, _] = object_words(ChipKind::K24B32, &cfg, &obj);
+    for n in 0..obj.tree.len() as u32 {
+        let w = &nodes[obj.record(n) as usize];
+        let at = 161 * (obj.ids[n as usize] & ((1 << slot_bits(2)) - 1)) as usize;
+        let golden = obj.tree.dop(n);
+        for i in 0..24 {
+            let q = field(w, at + 1 + 4 * i, 4) as u32;
+            let r = f.from_bits(field(w, 6 * 161 + 32 * i, 32));
+            let e = lo + field(w, 6 * 161 + 24 * 32 + 9 * i, 9) as i32;
+            assert_eq!(
+                f.to_bits(decode(f, rnd, r, q, e)),
+                f.to_bits(golden[i]),
+                "node {n}, plane {i}"
+            );
+        }
+        let (leaf, f0) = (field(w, at, 1) == 1, field(w, at + 97, 32) as u32);
+        match obj.tree.node(n) {
+            Node::Inner([c0, _]) => assert!(!leaf && f0 == obj.ids[c0 as usize], "node {n}"),
+            Node::Leaf(t) => assert!(leaf && f0 == t, "node {n}"),
+        }
+    }
+}
