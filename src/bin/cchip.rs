@@ -246,8 +246,9 @@ struct AccuracyArgs {
     #[arg(long, value_delimiter = ',')]
     dop_bits: Vec<DopBits>,
     /// Yosys cells per unit (`unit,cells`, as scripts/area-study.sh writes
-    /// docs/figures/area_cells.csv): adds each configuration's cells (DOP unit + TRI_UNIT) to
-    /// the table and, with --plot, the plot of clocks against cells.
+    /// docs/figures/area_cells.csv): adds each configuration's cells (DOP unit + TRI_UNIT,
+    /// and with stored DOPs 2k decode stages) to the table and, with --plot, the plot of
+    /// clocks against cells.
     #[arg(long, value_name = "FILE")]
     area: Option<PathBuf>,
     /// Print the rows as JSON instead of the table.

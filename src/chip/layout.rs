@@ -23,7 +23,8 @@
 //! bits); a record holds a treelet, [`Layout::levels`] levels below its treelet root
 //! ([`treelet_records`]: slot s's node word from bit `s * node_bits`), and after its node
 //! words what they share: the treelet root's k distances (`k*W` bits) and an exponent per
-//! plane ([`exp_field_bits`] each, `e - e_lo`). The root's record holds its distances in full.
+//! plane ([`exp_field_bits`] each, `e - e_lo`). The root's record holds its distances in full
+//! (as its shared distances, below which its codes are 0).
 //!
 //! D_CNTR's entry ([`Entry`]) is two node pairs, pushed and popped together; a pair is A's
 //! node, B's node (16 bits each) and the flip bit that orders its children

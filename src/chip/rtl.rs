@@ -127,6 +127,12 @@ pub fn tri_unit_name(fmt: Format, r: Rounding, ii: u32) -> String {
 }
 
 /// A rounding's tag in the RTL's file names.
+/// The decode stage's name for `bits`-bit stored DOPs in `fmt` rounding `r`
+/// (`dop_decode_q4_b32_ru`: `rtl::b32::DopDecode`).
+pub fn dop_decode_name(fmt: Format, bits: u32, r: Rounding) -> String {
+    format!("dop_decode_q{bits}_{}_{}", format_tag(fmt), rounding_tag(r))
+}
+
 pub fn rounding_tag(r: Rounding) -> &'static str {
     match r {
         Rounding::NearestEven => "rne",

@@ -109,14 +109,26 @@ impl Table {
             .transpose()
     }
 
-    /// um^2 of the units a configuration changes, its DOP unit and TRI_UNIT, folded as
-    /// `folds` (as the area study's cells); `None` unless both are measured.
+    /// um^2 of the units a configuration changes ([`datapath_units`], as the area study's
+    /// cells); `None` unless each is measured.
     pub fn datapath_area_um2(&self, cfg: &ChipConfig, folds: Folds) -> Option<f64> {
-        Some(
-            self.areas.get(&dop_unit(cfg, folds.dop))?
-                + self.areas.get(&tri_unit(cfg, folds.tri))?,
-        )
+        datapath_units(cfg, folds)
+            .iter()
+            .map(|(u, n)| Some(self.areas.get(u)? * *n as f64))
+            .sum()
     }
+}
+
+/// The units a configuration changes, each with its count: its DOP unit and TRI_UNIT,
+/// folded as `folds`, and with stored DOP precision the decode stage, one per plane of each
+/// node of a pair (2k). D_CNTR, the queue and the memory port are not counted.
+pub fn datapath_units(cfg: &ChipConfig, folds: Folds) -> Vec<(String, u32)> {
+    let mut units = vec![(dop_unit(cfg, folds.dop), 1), (tri_unit(cfg, folds.tri), 1)];
+    if let DopBits::Bits(b) = cfg.dop_bits {
+        let r = cfg.dop_rounding.op();
+        units.push((rtl::dop_decode_name(cfg.format.dop, b, r), 2 * cfg.k as u32));
+    }
+    units
 }
 
 /// `cfg`'s DOP unit's name ([`rtl::dop_unit_name`]), taking a pair every `dop_interval` clocks.
@@ -503,15 +515,36 @@ impl Clock {
     /// measured in its format or a wider one.
     pub fn measured(table: &Table, cfg: &ChipConfig, folds: Folds) -> Result<Clock, String> {
         let chip = chip_name(cfg, folds);
-        let (unit, ns, not_measured, widened) = match table.periods.get(&chip) {
+        let (mut unit, mut ns, not_measured, widened) = match table.periods.get(&chip) {
             Some(&ns) => (chip, ns, vec![], vec![]),
             None => slowest_unit(table, cfg, folds)?,
+        };
+        // the decode stage of stored DOPs, where timed as a unit: the stand-in is no faster
+        let decode = match cfg.dop_bits {
+            DopBits::Bits(b) => Some(rtl::dop_decode_name(
+                cfg.format.dop,
+                b,
+                cfg.dop_rounding.op(),
+            )),
+            DopBits::Full => None,
+        };
+        let decode_ns = decode.as_ref().and_then(|d| table.periods.get(d).copied());
+        if let (Some(d), Some(dns)) = (&decode, decode_ns) {
+            if dns > ns {
+                (unit, ns) = (d.clone(), dns);
+            }
+        }
+        let decode_built = match (decode, decode_ns) {
+            (Some(d), Some(dns)) => {
+                format!("timed as a unit ({d}, {dns:.3} ns); no RTL chip reads these records yet")
+            }
+            _ => "not built".into(),
         };
         let chip = ChipKind::of(cfg, folds.dop, folds.tri);
         let why = match chip.map(|k| (k, k.reads(cfg))) {
             _ if !widened.is_empty() => widened.join("; "),
             None => format!("{} is not built in RTL", chip_name(cfg, folds)),
-            Some((k, Err(_))) if cfg.dop_bits != DopBits::Full => format!("{} reads node records in full; this configuration's decode stage (dop_bits = {}) is not built", k.name(), cfg.dop_bits),
+            Some((k, Err(_))) if cfg.dop_bits != DopBits::Full => format!("{} reads node records in full; this configuration's decode stage (dop_bits = {}) is {decode_built}", k.name(), cfg.dop_bits),
             Some((k, Err(_))) => format!("{} is built with one node record per object, its layouts and up to {} triangle cache lines; this configuration's memory side differs", k.name(), rtl::TRI_CACHE_LINES),
             Some((k, Ok(()))) if !table.periods.contains_key(k.name()) => format!("{} has no row", k.name()),
             Some(_) => String::new(),

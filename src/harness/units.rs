@@ -313,12 +313,12 @@ fn pair_queue_unit() -> Unit {
     }
 }
 
-/// `dop_decode_b32_q4_ru`: the decode stage of 4-bit stored DOPs in binary32, rounding up
+/// `dop_decode_q4_b32_ru`: the decode stage of 4-bit stored DOPs in binary32, rounding up
 /// (`rtl::b32::DopDecode`, the DOP lanes' rounding).
 fn dop_decode_unit() -> Unit {
     let (fmt, r) = (Format::BINARY32, Rounding::TowardPositive);
     let bits = crate::rtl::b32::DopDecode::CODE_BITS as u32;
-    let name = format!("dop_decode_b32_q{bits}_{}", rounding_tag(r));
+    let name = crate::chip::rtl::dop_decode_name(fmt, bits, r);
     let n2 = name.clone();
     Unit {
         name,

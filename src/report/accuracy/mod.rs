@@ -594,10 +594,10 @@ pub fn table(plan: &Plan, rows: &[Row], area: Option<&Area>) -> Result<String, S
         "chip us",
         "host us (measured)",
         "end to end us",
-        "um^2: DOP unit + TRI_UNIT",
+        "um^2: DOP unit + TRI_UNIT (+ decode)",
     ];
     if area.is_some() {
-        columns.push("cells: DOP unit + TRI_UNIT");
+        columns.push("cells: DOP unit + TRI_UNIT (+ decode)");
     }
     let timing = timing::Table::of(plan.technology)?;
     let mut out = format!(
@@ -710,15 +710,14 @@ impl Area {
         Ok(Area { cells })
     }
 
-    /// Cells of the units a configuration changes: its DOP unit (k lanes, the DOP format and
-    /// rounding) and TRI_UNIT (T.CHECK's format and rounding), each folded as `folds`
-    /// ([`timing::units`]' names). D_CNTR, the queue and the memory port are not counted.
-    /// `None` where the file has no row for one of them (e8m10: the RTL is not built).
+    /// Cells of the units a configuration changes ([`timing::datapath_units`]: its DOP unit,
+    /// TRI_UNIT, and the decode stages of stored DOPs). `None` where the file has no row for
+    /// one of them (e8m10, or a stored precision whose decode stage the RTL does not build).
     pub fn of(&self, cfg: &ChipConfig, folds: Folds) -> Option<u64> {
-        Some(
-            self.cells.get(&timing::dop_unit(cfg, folds.dop))?
-                + self.cells.get(&timing::tri_unit(cfg, folds.tri))?,
-        )
+        timing::datapath_units(cfg, folds)
+            .iter()
+            .map(|(u, n)| Some(self.cells.get(u)? * *n as u64))
+            .sum()
     }
 }
 
