@@ -388,6 +388,21 @@ fn k24_rec_patch_fifo_all() {
     compare_with_expect(q.name, tr);
 }
 
+/// The papers' chip reading records of 4-bit stored DOPs (`chip_b32_k24_q4`): node words of
+/// codes, a node's children and grandchildren in one record, the decode stage ahead of the
+/// DOP unit (3 clocks more to each verdict). Every signal equal to the cycle model's, clock
+/// by clock; the answer, tests and record fetches the golden model's.
+#[test]
+fn k24q4_patch_fifo_all() {
+    let q = query("k24q4_patch_fifo_all");
+    assert_eq!(q.chip, ChipKind::K24B32Q4);
+    let case = Case::of(&q);
+    let tr = &case.lockstep::<10, 11, 9>(1, None)[0];
+    case.check(tr);
+    assert!(tr.tri_tests > 0, "the patch meets itself");
+    compare_with_expect(q.name, tr);
+}
+
 /// The `records` layout on a DDR of 8 banks (2 records a page), its regions in banks of
 /// their own (A's nodes 2, B's 4, the triangles 1 each: register `reg::MAP`, the memory port's
 /// shifts and masks, `chip::layout::RecordMap`): the same query as

@@ -86,13 +86,13 @@ const fn padded_record(pair: usize, tri: usize) -> usize {
 /// DOP format's smallest subnormal (so `q 2^e` is a value of the format) to the largest with
 /// `(2^b - 1) 2^e` at most its largest finite value (so `q 2^e` never overflows; `b` at
 /// most the format's precision).
-pub fn exp_range(fmt: Format, bits: u32) -> (i32, i32) {
+pub const fn exp_range(fmt: Format, bits: u32) -> (i32, i32) {
     let emax = fmt.bias();
     (1 - emax - fmt.frac_bits() as i32, emax + 1 - bits as i32)
 }
 
 /// Bits of a record's exponent field: every exponent of [`exp_range`], stored as `e - e_lo`.
-pub fn exp_field_bits(fmt: Format, bits: u32) -> u32 {
+pub const fn exp_field_bits(fmt: Format, bits: u32) -> u32 {
     let (lo, hi) = exp_range(fmt, bits);
     ((hi - lo + 1) as u32).next_power_of_two().trailing_zeros()
 }
@@ -129,15 +129,16 @@ pub const fn treelet_root(depth: u32, levels: u32) -> bool {
 /// Levels a `records` record holds: with stored DOP precision, as many (up to
 /// [`MAX_RECORD_LEVELS`]) as fit in the configuration's record of full precision, so that a
 /// burst that carried a node pair carries a treelet; else 1.
-fn record_levels(full_record: usize, shared: usize, node: usize, tri: usize) -> u32 {
-    (1..=MAX_RECORD_LEVELS)
-        .rev()
-        .find(|&l| padded_record(shared + record_nodes(l) as usize * node, tri) <= full_record)
-        .unwrap_or(1)
+const fn record_levels(full_record: usize, shared: usize, node: usize, tri: usize) -> u32 {
+    let mut l = MAX_RECORD_LEVELS;
+    while l > 1 && padded_record(shared + record_nodes(l) as usize * node, tri) > full_record {
+        l -= 1;
+    }
+    l
 }
 
 impl Layout {
-    pub fn new(cfg: &ChipConfig) -> Layout {
+    pub const fn new(cfg: &ChipConfig) -> Layout {
         let (dop, tri_w) = (cfg.format.dop, cfg.format.tri.width() as usize);
         let (plane, shared) = match cfg.dop_bits {
             DopBits::Full => (dop.width(), 0),

@@ -3,6 +3,7 @@
 //! `8 i + 0..4`), TRI_UNIT's at [`TRI_SETUP`]` + a`; the traversal's from [`MODE`] on.
 
 use super::config::{ChipConfig, MemLayout};
+use super::layout::{slot_bits, Layout};
 use super::params::Params;
 use super::rtl;
 use serde::{Deserialize, Serialize};
@@ -10,8 +11,9 @@ use serde::{Deserialize, Serialize};
 /// TRI_UNIT's setup words (frame maps, bounds, eta).
 pub const TRI_SETUP: u32 = 0x100;
 /// The query: bit 0 the order ([`Order::Lifo`]), bit 1 first hit ([`Mode::First`]), bit 2
-/// the memory layout ([`MemLayout::Records`]; the cycle model takes it from its
-/// configuration).
+/// the memory layout ([`MemLayout::Records`]), bits 5:3 the bits of a node id's slot field
+/// in it ([`slot_bits`](super::layout::slot_bits): 1 for a node pair, 3 for a treelet of
+/// two levels; 0 in `words`). The cycle model takes the layout from its configuration.
 pub const MODE: u32 = 0x120;
 /// The root pair: A's node in bits 15:0, B's in 31:16.
 pub const ROOT: u32 = 0x121;
@@ -54,10 +56,13 @@ pub enum Order {
 }
 
 /// The [`MODE`] word.
-pub fn mode_word(order: Order, mode: Mode, layout: MemLayout) -> u32 {
+pub fn mode_word(order: Order, mode: Mode, layout: &Layout) -> u32 {
+    let records = layout.kind == MemLayout::Records;
+    let slot = if records { slot_bits(layout.levels) } else { 0 };
     (order == Order::Lifo) as u32
         | ((mode == Mode::First) as u32) << 1
-        | ((layout == MemLayout::Records) as u32) << 2
+        | (records as u32) << 2
+        | slot << 3
 }
 
 /// The fields of a [`MODE`] word.
@@ -94,7 +99,7 @@ pub fn control_writes(
     cfg: &ChipConfig,
 ) -> Vec<(u32, u32)> {
     let tri_cache = cfg.tri_cache;
-    use super::layout::{Dst, Layout, RecordMap};
+    use super::layout::{Dst, RecordMap};
     let map = RecordMap::new(&Layout::new(cfg), &p.memory);
     let base = map.bases(image);
     let mut w = vec![
@@ -117,6 +122,6 @@ pub fn control_writes(
     if map.spread() {
         w.push((MAP, map.word()));
     }
-    w.push((MODE, mode_word(order, mode, cfg.layout)));
+    w.push((MODE, mode_word(order, mode, &Layout::new(cfg))));
     w
 }

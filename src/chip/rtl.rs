@@ -170,12 +170,21 @@ macro_rules! rtl_chips {
             /// unit on one DOPTRF lane, a pair every 6 clocks; TRI_UNIT a pair every 32.
             /// (rust-hdl's speed from `dop6tri32_patch_fifo_all` in lockstep: 2,882 clocks in 7.2 s.)
             K6E8m15Dop6Tri32, "chip_e8m15_k6_dop6_tri32", e8m15_dop6_tri32, (6, REDUCED, REDUCED), false, 6, 32, 400.0;
+            /// The papers' chip reading records of 4-bit stored DOPs (`dop_bits = 4`, the
+            /// `records` layout only), its DOP unit behind the decode stage.
+            K24B32Q4, "chip_b32_k24_q4", b32_q4, (24, BINARY32, BINARY32, 4), true, 1, 1, 3.0;
         }
     };
 }
 
 macro_rules! chip_kinds {
-    ($($(#[$doc:meta])* $kind:ident, $name:literal, $module:ident, ($k:literal, $dop:ident, $tri:ident), $records:literal, $dop_ii:literal, $ii:literal, $speed:literal;)+) => {
+    // a chip with stored DOP precision (its code's bits) reads `records` of it; else full
+    // records or words (`records` then says which)
+    (@bits) => { super::config::DopBits::Full };
+    (@bits $b:literal) => { super::config::DopBits::Bits($b) };
+    (@layout) => { super::config::MemLayout::Words };
+    (@layout $b:literal) => { super::config::MemLayout::Records };
+    ($($(#[$doc:meta])* $kind:ident, $name:literal, $module:ident, ($k:literal, $dop:ident, $tri:ident $(, $bits:literal)?), $records:literal, $dop_ii:literal, $ii:literal, $speed:literal;)+) => {
         /// The RTL chips: one `CollisionChip` per configuration, exported to `rtl/<name>.v`.
         #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
         pub enum ChipKind {
@@ -194,9 +203,9 @@ macro_rules! chip_kinds {
                         tri_rounding: Rounding::NearestEven,
                         tri_cache: 1,
                         tri_cache_b: 1,
-                        layout: super::config::MemLayout::Words,
+                        layout: chip_kinds!(@layout $($bits)?),
                         node_cache: 1,
-                        dop_bits: super::config::DopBits::Full,
+                        dop_bits: chip_kinds!(@bits $($bits)?),
                     },)+
                 }
             }
@@ -262,8 +271,13 @@ impl ChipKind {
         if cfg.node_cache != 1 {
             return Err(format!("the RTL chips hold one node record per object; this configuration has node_cache = {}: set [chip] node_cache = 1", cfg.node_cache));
         }
-        if cfg.dop_bits != super::config::DopBits::Full {
-            return Err(format!("the RTL chips read node records in full, with no decode stage; this configuration has dop_bits = {}: set [chip] dop_bits = \"full\"", cfg.dop_bits));
+        if cfg.dop_bits != self.config().dop_bits {
+            let coded: Vec<String> = ChipKind::ALL
+                .iter()
+                .filter(|k| k.config().dop_bits != super::config::DopBits::Full)
+                .map(|k| format!("{} (dop_bits = {})", k.name(), k.config().dop_bits))
+                .collect();
+            return Err(format!("{} reads node records of dop_bits = {} (of the RTL chips, {} read stored DOPs); this configuration has dop_bits = {}: set [chip] dop_bits = \"{}\"", self.name(), self.config().dop_bits, coded.join(", "), cfg.dop_bits, self.config().dop_bits));
         }
         if cfg.layout == MemLayout::Records && !self.records() {
             let records: Vec<&str> = ChipKind::ALL
@@ -286,14 +300,18 @@ impl ChipKind {
         Ok(())
     }
 
-    /// The chips built for `cfg`'s k, formats and roundings, at any TRI_UNIT interval.
+    /// The chips built for `cfg`'s k, formats, roundings and stored DOP precision, at any
+    /// TRI_UNIT interval.
     pub fn built(cfg: &ChipConfig) -> impl Iterator<Item = ChipKind> {
+        use super::config::{DopBits, MemLayout};
         let base = ChipConfig {
             tri_cache: 1,
             tri_cache_b: 1,
-            layout: super::config::MemLayout::Words,
+            layout: match cfg.dop_bits {
+                DopBits::Full => MemLayout::Words,
+                DopBits::Bits(_) => MemLayout::Records,
+            },
             node_cache: 1,
-            dop_bits: super::config::DopBits::Full,
             ..*cfg
         };
         ChipKind::ALL

@@ -220,13 +220,13 @@ impl Format {
 
     /// Number of exponent bits.
     #[inline]
-    pub fn exp_bits(&self) -> u32 {
+    pub const fn exp_bits(&self) -> u32 {
         self.exp_bits
     }
 
     /// Number of stored fraction bits (precision minus the hidden bit).
     #[inline]
-    pub fn frac_bits(&self) -> u32 {
+    pub const fn frac_bits(&self) -> u32 {
         self.frac_bits
     }
 
@@ -238,7 +238,7 @@ impl Format {
 
     /// Exponent bias `2^(exp_bits-1) - 1` (= `emax`).
     #[inline]
-    pub fn bias(&self) -> i32 {
+    pub const fn bias(&self) -> i32 {
         (1i32 << (self.exp_bits - 1)) - 1
     }
 

@@ -16,22 +16,30 @@
 /// `=> in_ready` for a folded DOP unit whose `in_ready` gates D_CNTR's issue; `Tri = tri_new` TRI_UNIT's type and constructor from T.CHECK's
 /// rounding (`TriUnit = TriUnit::new`, or a `TriUnitFold` on its plan: any block with
 /// `TriUnit`'s ports, `tri_unit_ports!`, whose `in_ready` paces the leaf register); `WD` the
-/// DOP format's word width, `WT` T.CHECK's, `NW` node-word bits (`1 + K WD + 64`), `TW`
+/// DOP format's word width, `WT` T.CHECK's, `WN` a node word's bits a plane (`WD`, or with
+/// stored DOP precision the code's), `NW` node-word bits (`1 + K WN + 64`), `TW`
 /// triangle-word bits (`23 WT + 2`), `MW` memory-word bits
-/// ([`crate::chip::rtl::ChipKind::word_bits`]), `RW` the node record's bits (`2 NW` on a
-/// chip that also reads the `records` layout, else `NW`).
+/// ([`crate::chip::rtl::ChipKind::word_bits`]), `RW` the node record's bits (`SLOTS NW`, and
+/// the shared fields with stored DOP precision), `SLOTS` its node words (2 on a chip that also
+/// reads the `records` layout, else 1); then, with stored DOP precision, `coded X, SW`: the
+/// exponent field's bits and the shared fields' (the DOP unit then a `DopUnitCoded24`).
 macro_rules! chip {
-    ($K:tt, $Dop:ident = $dop_new:expr $(=> $dop_ready:ident)?, $Tri:ident = $tri_new:expr, $WD:tt, $WT:tt, $NW:tt, $TW:tt, $MW:tt, $RW:tt) => {
+    ($K:tt, $Dop:ident = $dop_new:expr $(=> $dop_ready:ident)?, $Tri:ident = $tri_new:expr, $WD:tt, $WT:tt, $WN:tt, $NW:tt, $TW:tt, $MW:tt, $RW:tt, $SLOTS:tt $(; coded $X:tt, $SW:tt)?) => {
         declare_sync_fifo!(LeafFifo, Bits<64>, $crate::chip::rtl::LEAF_FIFO, 1);
-        $crate::rtl::memory_port::memory_port!($NW, $MW, $RW);
+        $crate::rtl::memory_port::memory_port!($NW, $MW, $RW, $SLOTS $(, shared $SW)?);
         $crate::rtl::tri_cache::tri_cache!($TW);
 
         /// The chip's memory word bits (`mem_resp_data`).
         pub const CHIP_WORD_BITS: usize = $MW;
         /// The triangle word's bits (the low bits of a memory word; a triangle cache line).
         pub const TRI_WORD_BITS: usize = $TW;
-        /// The node record's bits (the low bits of a memory word): one node word, or two.
+        /// The node record's bits (the low bits of a memory word): one node word, or
+        /// `SLOTS` and their shared fields.
         pub const RECORD_BITS: usize = $RW;
+        /// Node words a record.
+        pub const SLOTS: usize = $SLOTS;
+        /// A node word's bits.
+        pub const NODE_BITS: usize = $NW;
 
         /// The collision chip with a k-DOP: D_CNTR (DATE'05 §4.3) drives the DOP unit (Eq. 10)
         /// over pairs of node words from memory, overlapping leaf pairs go to TRI_UNIT
@@ -103,6 +111,9 @@ macro_rules! chip {
             mode_lifo: DFF<Bit>,
             mode_first: DFF<Bit>,
             mode_rec: DFF<Bit>,
+            mode_slot: DFF<Bits<3>>,
+            id_mask: Signal<Local, Bits<16>>,
+            c_ones16: Constant<Bits<16>>,
             root: DFF<Bits<32>>,
             base_na: DFF<Bits<24>>,
             base_nb: DFF<Bits<24>>,
@@ -197,6 +208,9 @@ macro_rules! chip {
                     mode_lifo: Default::default(),
                     mode_first: Default::default(),
                     mode_rec: Default::default(),
+                    mode_slot: Default::default(),
+                    id_mask: Default::default(),
+                    c_ones16: Constant::new(0xffffu64.into()),
                     root: Default::default(),
                     base_na: Default::default(),
                     base_nb: Default::default(),
@@ -319,7 +333,7 @@ macro_rules! chip {
             #[allow(clippy::too_many_lines)]
             #[hdl_gen]
             fn update(&mut self) {
-                dff_setup!(self, clock, mode_lifo, mode_first, mode_rec, root, base_na, base_nb, base_ta, base_tb, map);
+                dff_setup!(self, clock, mode_lifo, mode_first, mode_rec, mode_slot, root, base_na, base_nb, base_ta, base_tb, map);
                 dff_setup!(self, clock, port_pf, port_out, port_one, port_credit, run, done_r, push_root, stop);
                 dff_setup!(self, clock, leaf_count, leaf_valid, leaf_tag);
                 dff_setup!(self, clock, tc_mask, tb_ok, tb_id, tb_word);
@@ -341,6 +355,7 @@ macro_rules! chip {
                         self.mode_lifo.d.next = self.host_data.val().get_bit(0);
                         self.mode_first.d.next = self.host_data.val().get_bit(1);
                         self.mode_rec.d.next = self.host_data.val().get_bit(2);
+                        self.mode_slot.d.next = self.host_data.val().get_bits::<3>(3);
                     }
                     // reg::ROOT
                     if self.host_addr.val() == 0x121 {
@@ -412,7 +427,9 @@ macro_rules! chip {
                 self.d_cntr.dop_valid.next = self.dop.valid_out.val();
                 self.d_cntr.dop_overlap.next = self.dop.overlap.val();
                 self.d_cntr.side.next = self.side.q.val();
-                self.d_cntr.records.next = self.mode_rec.q.val();
+                // a node id's record: the id without its slot field
+                self.id_mask.next = self.c_ones16.val() << self.mode_slot.q.val();
+                self.d_cntr.id_mask.next = self.id_mask.val();
                 self.push_root.d.next = false;
                 // the leaf pair's triangle words as fetched: by index, or (`records`) record
                 self.tri_ids.next = self.leaf_tag.q.val().get_bits::<32>(0);
@@ -446,9 +463,9 @@ macro_rules! chip {
                 self.mem_port.need_ta.next = self.need_ta.val();
                 self.mem_port.need_tb.next = self.need_tb.val();
                 self.mem_port.leaf_tag.next = self.tri_ids.val();
-                self.mem_port.records.next = self.mode_rec.q.val();
-                self.mem_port.cur_sa.next = self.d_cntr.cur_a.val().get_bit(0);
-                self.mem_port.cur_sb.next = self.d_cntr.cur_b.val().get_bit(0);
+                self.mem_port.slot_bits.next = self.mode_slot.q.val();
+                self.mem_port.cur_sa.next = (self.d_cntr.cur_a.val() & !self.id_mask.val()).get_bits::<3>(0);
+                self.mem_port.cur_sb.next = (self.d_cntr.cur_b.val() & !self.id_mask.val()).get_bits::<3>(0);
                 self.mem_port.mem_req_ready.next = self.mem_req_ready.val();
                 self.mem_port.mem_resp_valid.next = self.mem_resp_valid.val();
                 self.mem_port.mem_resp_data.next = self.mem_resp_data.val();
@@ -475,20 +492,27 @@ macro_rules! chip {
                 // ---- the DOP unit: B's word as d, A's as e; beside it the pair, its leaf
                 // bits and children (side word: a, b, flip, A's leaf bit and fields, B's)
                 for i in 0..$K {
-                    self.dop.d[i].next = self.mem_port.nb_in.val().get_bits::<$WD>(1 + i * $WD);
-                    self.dop.e[i].next = self.mem_port.na_in.val().get_bits::<$WD>(1 + i * $WD);
+                    self.dop.d[i].next = self.mem_port.nb_in.val().get_bits::<$WN>(1 + i * $WN);
+                    self.dop.e[i].next = self.mem_port.na_in.val().get_bits::<$WN>(1 + i * $WN);
                 }
+                // with stored DOP precision, the records' references and exponents
+                $(for i in 0..$K {
+                    self.dop.rd[i].next = self.mem_port.nb_sh.val().get_bits::<$WD>(i * $WD);
+                    self.dop.re[i].next = self.mem_port.na_sh.val().get_bits::<$WD>(i * $WD);
+                    self.dop.efd[i].next = self.mem_port.nb_sh.val().get_bits::<$X>($K * $WD + i * $X);
+                    self.dop.efe[i].next = self.mem_port.na_sh.val().get_bits::<$X>($K * $WD + i * $X);
+                })?
                 self.dop.tag.next = self.d_cntr.cur_a.val();
                 self.dop.valid_in.next = self.d_cntr.issue.val();
                 self.side.d.next = bit_cast::<99, 16>(self.d_cntr.cur_a.val())
                     | (bit_cast::<99, 16>(self.d_cntr.cur_b.val()) << 16)
                     | (bit_cast::<99, 1>(self.d_cntr.cur_flip.val()) << 32)
                     | (bit_cast::<99, 1>(self.mem_port.na_in.val().get_bits::<1>(0)) << 33)
-                    | (bit_cast::<99, 16>(self.mem_port.na_in.val().get_bits::<16>(1 + $K * $WD)) << 34)
-                    | (bit_cast::<99, 16>(self.mem_port.na_in.val().get_bits::<16>(33 + $K * $WD)) << 50)
+                    | (bit_cast::<99, 16>(self.mem_port.na_in.val().get_bits::<16>(1 + $K * $WN)) << 34)
+                    | (bit_cast::<99, 16>(self.mem_port.na_in.val().get_bits::<16>(33 + $K * $WN)) << 50)
                     | (bit_cast::<99, 1>(self.mem_port.nb_in.val().get_bits::<1>(0)) << 66)
-                    | (bit_cast::<99, 16>(self.mem_port.nb_in.val().get_bits::<16>(1 + $K * $WD)) << 67)
-                    | (bit_cast::<99, 16>(self.mem_port.nb_in.val().get_bits::<16>(33 + $K * $WD)) << 83);
+                    | (bit_cast::<99, 16>(self.mem_port.nb_in.val().get_bits::<16>(1 + $K * $WN)) << 67)
+                    | (bit_cast::<99, 16>(self.mem_port.nb_in.val().get_bits::<16>(33 + $K * $WN)) << 83);
                 if self.d_cntr.issue.val() {
                     self.cnt_dop.d.next = self.cnt_dop.q.val() + 1;
                 }

@@ -121,3 +121,101 @@ macro_rules! dop_decode {
     };
 }
 pub(crate) use dop_decode;
+
+/// Stamps out `DopUnitCoded24` in the calling module (which must hold `DopDecode` and
+/// `DopUnit24`). Arguments: `W`, `B` (the code's bits), `X` (the exponent field's).
+macro_rules! dop_unit_coded {
+    ($W:tt, $B:tt, $X:tt) => {
+        /// The k = 24 DOP unit behind the decode stage of stored DOPs: a `DopDecode` per
+        /// plane of each node of the pair (B's `d`, A's `e`) turns the node words' codes
+        /// back into distances ([`dop::stored::decode`](crate::dop::stored::decode)), then
+        /// [`DopUnit24`]. Latency `DopDecode::LATENCY + DopUnit24::LATENCY` (3 + 15); the
+        /// tag and valid bit wait beside the decode stage.
+        ///
+        /// Ports: [`DopUnit24`]'s, with `d[k]`, `e[k]` the codes (`B` bits) and per plane the
+        /// record's reference distances `rd[k]`, `re[k]` (`W`) and exponent fields `efd[k]`,
+        /// `efe[k]` (`X`: `e - e_lo`).
+        #[derive(LogicBlock)]
+        pub struct DopUnitCoded24 {
+            pub clock: Signal<In, Clock>,
+            pub load_en: Signal<In, Bit>,
+            pub load_addr: Signal<In, Bits<8>>,
+            pub load_data: Signal<In, Bits<$W>>,
+            pub d: [Signal<In, Bits<$B>>; 24],
+            pub e: [Signal<In, Bits<$B>>; 24],
+            pub rd: [Signal<In, Bits<$W>>; 24],
+            pub re: [Signal<In, Bits<$W>>; 24],
+            pub efd: [Signal<In, Bits<$X>>; 24],
+            pub efe: [Signal<In, Bits<$X>>; 24],
+            pub tag: Signal<In, Bits<16>>,
+            pub valid_in: Signal<In, Bit>,
+            pub overlap: Signal<Out, Bit>,
+            pub tag_out: Signal<Out, Bits<16>>,
+            pub valid_out: Signal<Out, Bit>,
+            dec_d: [DopDecode; 24],
+            dec_e: [DopDecode; 24],
+            tag_dec: $crate::rtl::delay::Delay<Bits<16>, { DopDecode::LATENCY }>,
+            unit: DopUnit24,
+        }
+
+        impl DopUnitCoded24 {
+            pub const LATENCY: usize = DopDecode::LATENCY + DopUnit24::LATENCY;
+
+            /// Lanes and decode stages rounding with `rounding`.
+            pub fn new(rounding: Rounding) -> Self {
+                Self {
+                    clock: Default::default(),
+                    load_en: Default::default(),
+                    load_addr: Default::default(),
+                    load_data: Default::default(),
+                    d: Default::default(),
+                    e: Default::default(),
+                    rd: Default::default(),
+                    re: Default::default(),
+                    efd: Default::default(),
+                    efe: Default::default(),
+                    tag: Default::default(),
+                    valid_in: Default::default(),
+                    overlap: Default::default(),
+                    tag_out: Default::default(),
+                    valid_out: Default::default(),
+                    dec_d: std::array::from_fn(|_| DopDecode::new(rounding)),
+                    dec_e: std::array::from_fn(|_| DopDecode::new(rounding)),
+                    tag_dec: Default::default(),
+                    unit: DopUnit24::new(rounding),
+                }
+            }
+        }
+
+        impl Logic for DopUnitCoded24 {
+            #[hdl_gen]
+            fn update(&mut self) {
+                clock!(self, clock, tag_dec, unit);
+                for i in 0..24 {
+                    self.dec_d[i].clock.next = self.clock.val();
+                    self.dec_d[i].r.next = self.rd[i].val();
+                    self.dec_d[i].q.next = self.d[i].val();
+                    self.dec_d[i].ef.next = self.efd[i].val();
+                    self.dec_d[i].valid_in.next = self.valid_in.val();
+                    self.dec_e[i].clock.next = self.clock.val();
+                    self.dec_e[i].r.next = self.re[i].val();
+                    self.dec_e[i].q.next = self.e[i].val();
+                    self.dec_e[i].ef.next = self.efe[i].val();
+                    self.dec_e[i].valid_in.next = self.valid_in.val();
+                    self.unit.d[i].next = self.dec_d[i].y.val();
+                    self.unit.e[i].next = self.dec_e[i].y.val();
+                }
+                self.tag_dec.d.next = self.tag.val();
+                self.unit.load_en.next = self.load_en.val();
+                self.unit.load_addr.next = self.load_addr.val();
+                self.unit.load_data.next = self.load_data.val();
+                self.unit.tag.next = self.tag_dec.q.val();
+                self.unit.valid_in.next = self.dec_d[0].valid_out.val();
+                self.overlap.next = self.unit.overlap.val();
+                self.tag_out.next = self.unit.tag_out.val();
+                self.valid_out.next = self.unit.valid_out.val();
+            }
+        }
+    };
+}
+pub(crate) use dop_unit_coded;

@@ -5,9 +5,10 @@
 
 /// Stamps out `MemoryPort` in the calling module. Arguments: `NW` node-word bits, `MW`
 /// memory-word bits (`mem_resp_data`), `RW` node-record bits (its low `RW` bits: one node
-/// word, or two on a chip that reads the `records` layout).
+/// word, or on a chip that reads the `records` layout `SLOTS` node words and, with stored
+/// DOP precision, `SW` bits of shared fields after them), `SLOTS` node words a record.
 macro_rules! memory_port {
-    ($NW:tt, $MW:tt, $RW:tt) => {
+    ($NW:tt, $MW:tt, $RW:tt, $SLOTS:tt $(, shared $SW:tt)?) => {
         /// The memory port: up to [`PORT`](crate::chip::reg::PORT)`[7:4] + 1` requests outstanding, answered in request
         /// order. Golden: [`cycle::memory_port::MemPort`](crate::cycle::memory_port::MemPort) (the
         /// requests outstanding, whose destinations here are the tag ring `tags`) and the
@@ -22,7 +23,7 @@ macro_rules! memory_port {
         /// * Requests, by priority: A's triangle word (`need_ta`, unless one is outstanding),
         ///   B's (`need_tb`), the node word at the head of the ask list; while fewer than
         ///   `port_out + 1` are outstanding and `go`. Addresses: of the record (a node's id,
-        ///   `records`: `id >> 1`; the triangle's `leaf_tag` field, where the chip puts the
+        ///   `records`: `id >> slot_bits`; the triangle's `leaf_tag` field, where the chip puts the
         ///   records in the `records` layout) in the destination's region, whose first word is
         ///   its base, placed by `map` (register [`MAP`](crate::chip::reg::MAP), shifts and
         ///   masks: [`RecordMap::addr`](crate::chip::layout::RecordMap::addr); 0: base plus
@@ -36,7 +37,9 @@ macro_rules! memory_port {
         /// * The DOP unit's words of the current pair (`na_in`, `nb_in`): of the record at the
         ///   FIFO's head if the pair fetches it (`cur_fa`, `cur_fb`), else of the last pair's
         ///   (`na_word`, `nb_word`), the node word in the pair's slot (`cur_sa`, `cur_sb`:
-        ///   `records`; else the record is the word); an `issue` takes the fetched heads.
+        ///   `records`, slot s from bit `s NW`; else 0, the record is the word), and with
+        ///   stored DOP precision the record's shared fields (`na_sh`, `nb_sh`, from bit
+        ///   `SLOTS NW`); an `issue` takes the fetched heads.
         ///   `wa_empty`, `wb_empty`: D_CNTR's pair waits for a word.
         ///
         /// `clear` (a start) empties the ask list and the FIFOs; requests outstanding
@@ -47,7 +50,7 @@ macro_rules! memory_port {
             pub clear: Signal<In, Bit>,
             pub go: Signal<In, Bit>,
             pub pf_on: Signal<In, Bit>,
-            pub records: Signal<In, Bit>,
+            pub slot_bits: Signal<In, Bits<3>>,
             pub port_out: Signal<In, Bits<4>>,
             pub base_na: Signal<In, Bits<24>>,
             pub base_nb: Signal<In, Bits<24>>,
@@ -60,8 +63,8 @@ macro_rules! memory_port {
             pub issue: Signal<In, Bit>,
             pub cur_fa: Signal<In, Bit>,
             pub cur_fb: Signal<In, Bit>,
-            pub cur_sa: Signal<In, Bit>,
-            pub cur_sb: Signal<In, Bit>,
+            pub cur_sa: Signal<In, Bits<3>>,
+            pub cur_sb: Signal<In, Bits<3>>,
             pub need_ta: Signal<In, Bit>,
             pub need_tb: Signal<In, Bit>,
             pub leaf_tag: Signal<In, Bits<32>>,
@@ -79,6 +82,8 @@ macro_rules! memory_port {
             pub outstanding: Signal<Out, Bit>,
             pub na_in: Signal<Out, Bits<$NW>>,
             pub nb_in: Signal<Out, Bits<$NW>>,
+            $(pub na_sh: Signal<Out, Bits<$SW>>,
+            pub nb_sh: Signal<Out, Bits<$SW>>,)?
             pub wa_empty: Signal<Out, Bit>,
             pub wb_empty: Signal<Out, Bit>,
             // ---- node words to ask for, in pair order: {pair number mod 32, B, id}
@@ -118,6 +123,8 @@ macro_rules! memory_port {
             nb_word: DFF<Bits<$RW>>,
             rec_a: Signal<Local, Bits<$RW>>,
             rec_b: Signal<Local, Bits<$RW>>,
+            sa_dec: Signal<Local, Bits<8>>,
+            sb_dec: Signal<Local, Bits<8>>,
             // ---- the destinations of the requests outstanding, in order, and the triangle
             // word asked for per triangle destination (one at a time)
             tags: $crate::rtl::reg_ring::RegRing<2, { $crate::chip::rtl::PORT_OUTSTANDING }>,
@@ -141,6 +148,7 @@ macro_rules! memory_port {
             c_one24: Constant<Bits<24>>,
             c_one16: Constant<Bits<16>>,
             c_one32: Constant<Bits<32>>,
+            c_one8: Constant<Bits<8>>,
         }
 
         impl MemoryPort {
@@ -151,7 +159,7 @@ macro_rules! memory_port {
                     clear: Default::default(),
                     go: Default::default(),
                     pf_on: Default::default(),
-                    records: Default::default(),
+                    slot_bits: Default::default(),
                     port_out: Default::default(),
                     base_na: Default::default(),
                     base_nb: Default::default(),
@@ -183,6 +191,8 @@ macro_rules! memory_port {
                     outstanding: Default::default(),
                     na_in: Default::default(),
                     nb_in: Default::default(),
+                    $(na_sh: <Signal<Out, Bits<$SW>>>::default(),
+                    nb_sh: Default::default(),)?
                     wa_empty: Default::default(),
                     wb_empty: Default::default(),
                     ask_w: array_init(),
@@ -218,6 +228,8 @@ macro_rules! memory_port {
                     nb_word: Default::default(),
                     rec_a: Default::default(),
                     rec_b: Default::default(),
+                    sa_dec: Default::default(),
+                    sb_dec: Default::default(),
                     tags: Default::default(),
                     tag_head: Default::default(),
                     tag_tail: Default::default(),
@@ -239,6 +251,7 @@ macro_rules! memory_port {
                     c_one24: Constant::new(1.into()),
                     c_one16: Constant::new(1.into()),
                     c_one32: Constant::new(1.into()),
+                    c_one8: Constant::new(1.into()),
                 }
             }
         }
@@ -267,8 +280,7 @@ macro_rules! memory_port {
                 }
                 clock!(self, clock, wa, wb, tags);
                 // ---- the current pair's node words: of the records at the FIFO heads, or of
-                // the last pair's, in the pair's slot (slot 1 from bit RW - NW: NW, or 0 on a
-                // chip of one node word per record)
+                // the last pair's, in the pair's slot (slot s from bit s NW)
                 self.wa.rsel.next = self.c_one16.val() << self.wa_head.q.val();
                 self.wb.rsel.next = self.c_one16.val() << self.wb_head.q.val();
                 self.rec_a.next = self.na_word.q.val();
@@ -279,14 +291,20 @@ macro_rules! memory_port {
                 if self.cur_fb.val() {
                     self.rec_b.next = self.wb.rdata.val();
                 }
+                self.sa_dec.next = self.c_one8.val() << self.cur_sa.val();
+                self.sb_dec.next = self.c_one8.val() << self.cur_sb.val();
                 self.na_in.next = self.rec_a.val().get_bits::<$NW>(0);
-                if self.records.val() & self.cur_sa.val() {
-                    self.na_in.next = self.rec_a.val().get_bits::<$NW>($RW - $NW);
-                }
                 self.nb_in.next = self.rec_b.val().get_bits::<$NW>(0);
-                if self.records.val() & self.cur_sb.val() {
-                    self.nb_in.next = self.rec_b.val().get_bits::<$NW>($RW - $NW);
+                for s in 1..$SLOTS {
+                    if self.sa_dec.val().get_bit(s) {
+                        self.na_in.next = self.rec_a.val().get_bits::<$NW>(s * $NW);
+                    }
+                    if self.sb_dec.val().get_bit(s) {
+                        self.nb_in.next = self.rec_b.val().get_bits::<$NW>(s * $NW);
+                    }
                 }
+                $(self.na_sh.next = self.rec_a.val().get_bits::<$SW>($SLOTS * $NW);
+                self.nb_sh.next = self.rec_b.val().get_bits::<$SW>($SLOTS * $NW);)?
                 self.wa_empty.next = self.wa_n.q.val() == 0;
                 self.wb_empty.next = self.wb_n.q.val() == 0;
                 // ---- requests: triangle words first (one outstanding per destination), then
@@ -306,10 +324,7 @@ macro_rules! memory_port {
                 self.port_free.next = self.tag_n.q.val() <= bit_cast::<5, 4>(self.port_out.val());
                 self.req_dst.next = bit_cast::<2, 1>(self.ask_front.val().get_bits::<1>(16));
                 self.req_id.next = self.ask_front.val().get_bits::<16>(0);
-                self.ask_rec.next = self.ask_front.val().get_bits::<16>(0);
-                if self.records.val() {
-                    self.ask_rec.next = bit_cast::<16, 15>(self.ask_front.val().get_bits::<15>(1));
-                }
+                self.ask_rec.next = self.ask_front.val().get_bits::<16>(0) >> self.slot_bits.val();
                 self.req_base.next = self.base_na.val();
                 if self.ask_front.val().get_bit(16) {
                     self.req_base.next = self.base_nb.val();

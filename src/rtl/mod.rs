@@ -144,15 +144,42 @@ pub mod b32 {
         TriUnit = TriUnit::new,
         32,
         32,
+        32,
         833,
         738,
         2048,
-        1666
+        1666,
+        2
     );
     crate::rtl::tcheck_fold::tcheck_fold!(32, 31, 8, 23);
     crate::rtl::tri_unit_fold::tri_unit_fold!(32);
     // the decode stage of 4-bit stored DOPs (`date05-treelets`): exponents -149 ..= 124, 9 bits
     crate::rtl::dop_decode::dop_decode!(32, 23, 4, 9);
+    crate::rtl::dop_decode::dop_unit_coded!(32, 4, 9);
+}
+
+/// The papers' chip reading records of 4-bit stored DOPs (`dop_bits = 4`): binary32, k = 24,
+/// its DOP unit behind the decode stage (`DopUnitCoded24`). A record: two tree levels, 6 node
+/// words of 1 + 24 * 4 + 64 bits, then the treelet root's 24 distances (32 bits) and
+/// exponents (9 bits): 1,950 bits of a 2,048-bit word.
+pub mod b32_q4 {
+    use super::b32::{DopUnitCoded24, TriUnit};
+    use crate::format::Rounding;
+    use rust_hdl::prelude::*;
+    crate::rtl::chip::chip!(
+        24,
+        DopUnitCoded24 = DopUnitCoded24::new,
+        TriUnit = TriUnit::new,
+        32,
+        32,
+        4,
+        161,
+        738,
+        2048,
+        1950,
+        6;
+        coded 9, 984
+    );
 }
 
 /// Units for e8m15 (`Format::REDUCED`).
@@ -179,10 +206,12 @@ pub mod e8m15 {
         TriUnit = TriUnit::new,
         24,
         24,
+        24,
         209,
         554,
         554,
-        209
+        209,
+        1
     );
     crate::rtl::tcheck_fold::tcheck_fold!(24, 23, 8, 15);
     crate::rtl::tri_unit_fold::tri_unit_fold!(24);
@@ -204,10 +233,12 @@ pub mod e8m15_b32 {
         TriUnit = TriUnit::new,
         24,
         32,
+        24,
         641,
         738,
         738,
-        641
+        641,
+        1
     );
 }
 
@@ -236,10 +267,12 @@ pub mod e8m15_fold16 {
         TriUnitFold = tri_unit,
         24,
         24,
+        24,
         209,
         554,
         554,
-        209
+        209,
+        1
     );
 }
 
@@ -268,30 +301,29 @@ pub mod e8m15_dop6_tri32 {
         TriUnitFold::new(plan.expect("the chip's interval is even"), r)
     }
     // node word 1 + 6 * 24 + 64 bits, triangle word 23 * 24 + 2
-    crate::rtl::chip::chip!(6, DopUnit = DopUnit::new => in_ready, TriUnitFold = tri_unit, 24, 24, 209, 554, 554, 209);
+    crate::rtl::chip::chip!(6, DopUnit = DopUnit::new => in_ready, TriUnitFold = tri_unit, 24, 24, 24, 209, 554, 554, 209, 1);
 }
 
 // The contract's widths and latencies (`crate::chip`) are what the blocks are built with: the
 // chip! macros take literals, so each is checked here.
 /// The RTL's widths are the contract's: the memory word (`ChipKind::word_bits`), the
-/// triangle word, and the node record the node-word FIFOs hold (two node words on a chip that
-/// reads the `records` layout).
+/// triangle word, and the node record the node-word FIFOs hold (on a chip that reads the
+/// `records` layout the layout's record: its node words and shared fields).
 macro_rules! check_widths {
     ($m:ident, $kind:ident) => {
         const _: () = {
             use crate::chip::{layout, rtl::ChipKind};
             let c = ChipKind::$kind.config();
-            let node = layout::node_bits(c.k, c.format.dop.width() as usize);
+            let l = layout::Layout::new(&c);
+            let slots = if ChipKind::$kind.records() {
+                layout::record_nodes(l.levels) as usize
+            } else {
+                1
+            };
             assert!($m::CHIP_WORD_BITS == ChipKind::$kind.word_bits());
             assert!($m::TRI_WORD_BITS == layout::tri_bits(c.format.tri.width() as usize));
-            assert!(
-                $m::RECORD_BITS
-                    == if ChipKind::$kind.records() {
-                        2 * node
-                    } else {
-                        node
-                    }
-            );
+            assert!($m::NODE_BITS == l.node_bits as usize && $m::SLOTS == slots);
+            assert!($m::RECORD_BITS == slots * $m::NODE_BITS + l.shared_bits as usize);
         };
     };
 }
@@ -300,6 +332,7 @@ check_widths!(b32, K24B32);
 check_widths!(e8m15_b32, K24E8m15B32);
 check_widths!(e8m15_fold16, K6E8m15Fold16);
 check_widths!(e8m15_dop6_tri32, K6E8m15Dop6Tri32);
+check_widths!(b32_q4, K24B32Q4);
 const _: () = assert!(
     b32::TCheck::LATENCY == crate::chip::rtl::TCHECK_LATENCY
         && e8m15::TCheck::LATENCY == crate::chip::rtl::TCHECK_LATENCY

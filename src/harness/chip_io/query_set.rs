@@ -130,6 +130,7 @@ pub fn queries() -> Vec<ChipQuery> {
         tri_cache(&p),
         k24(&p),
         k24_records(&p),
+        k24_coded(&p),
         k24r(&p),
         fold16(&p),
         dop6tri32(&p),
@@ -528,6 +529,66 @@ fn k24(p: &Poses) -> Vec<ChipQuery> {
             tri_cache: 128,
             ..big(
                 "k24_big_sphere_fifo_cache",
+                "sphere:200",
+                p.big_spheres,
+                Fifo,
+                Mode::All,
+                8,
+                1,
+                1,
+            )
+        },
+    ]
+}
+
+/// The papers' chip reading records of 4-bit stored DOPs (`chip_b32_k24_q4`: a node's
+/// children and grandchildren in one record, register `reg::MODE` bits 5:3 the slot field's
+/// 3 bits, the decode stage ahead of the DOP unit): a bunny patch at full speed (rust-hdl),
+/// a whole query through the 128-line cache (Verilator), spheres apart (the root test:
+/// Icarus).
+fn k24_coded(p: &Poses) -> Vec<ChipQuery> {
+    vec![
+        ChipQuery {
+            chip: ChipKind::K24B32Q4,
+            layout: MemLayout::Records,
+            ..q(
+                "k24q4_apart_lifo_first",
+                "sphere:12",
+                Pose::new(10.0, 20.0, 30.0, 3.0, 0.1, 0.0),
+                Lifo,
+                Mode::First,
+                1,
+                1,
+            )
+        },
+        ChipQuery {
+            chip: ChipKind::K24B32Q4,
+            layout: MemLayout::Records,
+            prefetch: 3,
+            outstanding: 4,
+            issue_spacing: 1,
+            credit: 24,
+            tri_cache: 2,
+            ..q(
+                "k24q4_patch_fifo_all",
+                "bunny-patch:8",
+                p.patch,
+                Fifo,
+                Mode::All,
+                8,
+                1,
+            )
+        },
+        ChipQuery {
+            chip: ChipKind::K24B32Q4,
+            layout: MemLayout::Records,
+            prefetch: 14,
+            outstanding: 16,
+            issue_spacing: 1,
+            credit: 48,
+            tri_cache: 128,
+            ..big(
+                "k24q4_big_sphere_fifo_cache",
                 "sphere:200",
                 p.big_spheres,
                 Fifo,

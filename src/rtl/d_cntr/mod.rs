@@ -504,9 +504,10 @@ const _: () = assert!(W == 67);
 ///   emptied), `lifo`, `push_root`, `root[32]` (the root pair, pushed as a one-pair entry
 ///   while `push_root`), `go` (running, not halted), the limits of host register [`PORT`](crate::chip::reg::PORT):
 ///   `pf[5]` (pairs prefetched), `one` (an issue every clock), `credit_lim[6]`;
-///   `leaf_count[6]` (leaf pairs waiting, counted against the credit), `records` (the
-///   `records` layout: a node id is `2 record + slot`, and a pair shares the pair before's
-///   record, not only its node).
+///   `leaf_count[6]` (leaf pairs waiting, counted against the credit), `id_mask[16]` (the
+///   bits of a node id that name its record: all of them in the `words` layout; in
+///   `records` all but the slot field, `id = record << s | slot`, so that a pair shares the
+///   pair before's record, not only its node).
 /// * the queue's state: out `empty`, `count[NP1]`, `max_count[NP1]`, `overflow`, `push`.
 /// * pop: out `pop`, `pop_entry[67]` (the entry popped), `pop_fetch[4]` (which of its node
 ///   records A0 B0 A1 B1 the memory port must fetch: those the pair before does not share).
@@ -532,7 +533,7 @@ pub struct DCntr<const N: usize, const NP1: usize, const NM1: usize> {
     pub one: Signal<In, Bit>,
     pub credit_lim: Signal<In, Bits<6>>,
     pub leaf_count: Signal<In, Bits<6>>,
-    pub records: Signal<In, Bit>,
+    pub id_mask: Signal<In, Bits<16>>,
     pub wa_empty: Signal<In, Bit>,
     pub wb_empty: Signal<In, Bit>,
     pub dop_valid: Signal<In, Bit>,
@@ -575,7 +576,6 @@ pub struct DCntr<const N: usize, const NP1: usize, const NM1: usize> {
     last_ok: DFF<Bit>,
     last_a: DFF<Bits<16>>,
     last_b: DFF<Bits<16>>,
-    id_mask: Signal<Local, Bits<16>>,
     last_issue: DFF<Bit>,
     inflight_r: DFF<Bits<5>>,
     pend_r: DFF<Bit>,
@@ -626,7 +626,7 @@ impl<const N: usize, const NP1: usize, const NM1: usize> Default for DCntr<N, NP
             one: Default::default(),
             credit_lim: Default::default(),
             leaf_count: Default::default(),
-            records: Default::default(),
+            id_mask: Default::default(),
             wa_empty: Default::default(),
             wb_empty: Default::default(),
             dop_valid: Default::default(),
@@ -667,7 +667,6 @@ impl<const N: usize, const NP1: usize, const NM1: usize> Default for DCntr<N, NP
             last_ok: Default::default(),
             last_a: Default::default(),
             last_b: Default::default(),
-            id_mask: Default::default(),
             last_issue: Default::default(),
             inflight_r: Default::default(),
             pend_r: Default::default(),
@@ -792,11 +791,8 @@ impl<const N: usize, const NP1: usize, const NM1: usize> Logic for DCntr<N, NP1,
         // bits too)
         self.top.next = self.queue.top_data.val();
         self.top_two.next = self.top.val().get_bit(66);
-        // (ids compared without their slot bit in the `records` layout: the record's)
-        self.id_mask.next = 0xffff.into();
-        if self.records.val() {
-            self.id_mask.next = 0xfffe.into();
-        }
+        // (ids compared under `id_mask`, without their slot field in the `records` layout:
+        // the record's)
         self.fetch_a0.next = !(self.last_ok.q.val()
             & ((self.last_a.q.val() & self.id_mask.val())
                 == (self.top.val().get_bits::<16>(0) & self.id_mask.val())));
