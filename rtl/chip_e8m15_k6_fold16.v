@@ -27,6 +27,7 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
     input wire  res_ready;
     
     // Constant declarations
+    localparam  c_ones16 = 16'hffff;
     localparam  c_credit = 6'b10000;
     localparam  c_pf_max = 5'b1110;
     
@@ -40,6 +41,9 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
     reg  mode_rec$d;
     wire  mode_rec$q;
     reg  mode_rec$clock;
+    reg  [2:0] mode_slot$d;
+    wire  [2:0] mode_slot$q;
+    reg  mode_slot$clock;
     reg  [31:0] root$d;
     wire  [31:0] root$q;
     reg  root$clock;
@@ -92,7 +96,7 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
     reg  d_cntr$one;
     reg  [5:0] d_cntr$credit_lim;
     reg  [5:0] d_cntr$leaf_count;
-    reg  d_cntr$records;
+    reg  [15:0] d_cntr$id_mask;
     reg  d_cntr$wa_empty;
     reg  d_cntr$wb_empty;
     reg  d_cntr$dop_valid;
@@ -127,7 +131,7 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
     reg  mem_port$clear;
     reg  mem_port$go;
     reg  mem_port$pf_on;
-    reg  mem_port$records;
+    reg  [2:0] mem_port$slot_bits;
     reg  [3:0] mem_port$port_out;
     reg  [23:0] mem_port$base_na;
     reg  [23:0] mem_port$base_nb;
@@ -140,8 +144,8 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
     reg  mem_port$issue;
     reg  mem_port$cur_fa;
     reg  mem_port$cur_fb;
-    reg  mem_port$cur_sa;
-    reg  mem_port$cur_sb;
+    reg  [2:0] mem_port$cur_sa;
+    reg  [2:0] mem_port$cur_sb;
     reg  mem_port$need_ta;
     reg  mem_port$need_tb;
     reg  [31:0] mem_port$leaf_tag;
@@ -317,6 +321,7 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
     reg  cnt_tf$clock;
     
     // Local signals
+    reg  [15:0] id_mask;
     reg  halt;
     reg  start_q;
     reg  [5:0] credit_lim;
@@ -347,6 +352,11 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         .d(mode_rec$d),
         .q(mode_rec$q),
         .clock(mode_rec$clock)
+    );
+    top$mode_slot mode_slot(
+        .d(mode_slot$d),
+        .q(mode_slot$q),
+        .clock(mode_slot$clock)
     );
     top$cnt_dop root(
         .d(root$d),
@@ -429,7 +439,7 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         .one(d_cntr$one),
         .credit_lim(d_cntr$credit_lim),
         .leaf_count(d_cntr$leaf_count),
-        .records(d_cntr$records),
+        .id_mask(d_cntr$id_mask),
         .wa_empty(d_cntr$wa_empty),
         .wb_empty(d_cntr$wb_empty),
         .dop_valid(d_cntr$dop_valid),
@@ -466,7 +476,7 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         .clear(mem_port$clear),
         .go(mem_port$go),
         .pf_on(mem_port$pf_on),
-        .records(mem_port$records),
+        .slot_bits(mem_port$slot_bits),
         .port_out(mem_port$port_out),
         .base_na(mem_port$base_na),
         .base_nb(mem_port$base_nb),
@@ -695,6 +705,7 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         mode_lifo$clock = clock;
         mode_first$clock = clock;
         mode_rec$clock = clock;
+        mode_slot$clock = clock;
         root$clock = clock;
         base_na$clock = clock;
         base_nb$clock = clock;
@@ -704,6 +715,7 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         mode_lifo$d = mode_lifo$q;
         mode_first$d = mode_first$q;
         mode_rec$d = mode_rec$q;
+        mode_slot$d = mode_slot$q;
         root$d = root$q;
         base_na$d = base_na$q;
         base_nb$d = base_nb$q;
@@ -767,6 +779,7 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
                 mode_lifo$d = host_data[32'h0];
                 mode_first$d = host_data[32'h1];
                 mode_rec$d = host_data[32'h2];
+                mode_slot$d = host_data[(32'h3)+:(3)];
             end
             if (host_addr == 32'h121) begin
                 root$d = host_data;
@@ -821,7 +834,8 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         d_cntr$dop_valid = dop$valid_out;
         d_cntr$dop_overlap = dop$overlap;
         d_cntr$side = side$q;
-        d_cntr$records = mode_rec$q;
+        id_mask = c_ones16 << mode_slot$q;
+        d_cntr$id_mask = id_mask;
         push_root$d = 1'b0;
         tri_ids = leaf_tag$q[(32'h0)+:(32)];
         if (mode_rec$q) begin
@@ -850,9 +864,9 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         mem_port$need_ta = need_ta;
         mem_port$need_tb = need_tb;
         mem_port$leaf_tag = tri_ids;
-        mem_port$records = mode_rec$q;
-        mem_port$cur_sa = d_cntr$cur_a[32'h0];
-        mem_port$cur_sb = d_cntr$cur_b[32'h0];
+        mem_port$slot_bits = mode_slot$q;
+        mem_port$cur_sa = ((d_cntr$cur_a & ~id_mask) & 3'h7);
+        mem_port$cur_sb = ((d_cntr$cur_b & ~id_mask) & 3'h7);
         mem_port$mem_req_ready = mem_req_ready;
         mem_port$mem_resp_valid = mem_resp_valid;
         mem_port$mem_resp_data = mem_resp_data;
@@ -1056,7 +1070,7 @@ module top$cnt_dop(d,q,clock);
 endmodule // top$cnt_dop
 
 
-module top$d_cntr(clock,clear,lifo,push_root,root,go,pf,one,credit_lim,leaf_count,records,wa_empty,wb_empty,dop_valid,dop_overlap,side,empty,count,max_count,overflow,push,pop,pop_entry,pop_fetch,ent_valid,cur_a,cur_b,cur_flip,cur_fa,cur_fb,need_na,need_nb,issue,r_a,r_b,r_a_leaf,r_b_leaf,leaf_in,leaf_pair,inflight,pend);
+module top$d_cntr(clock,clear,lifo,push_root,root,go,pf,one,credit_lim,leaf_count,id_mask,wa_empty,wb_empty,dop_valid,dop_overlap,side,empty,count,max_count,overflow,push,pop,pop_entry,pop_fetch,ent_valid,cur_a,cur_b,cur_flip,cur_fa,cur_fb,need_na,need_nb,issue,r_a,r_b,r_a_leaf,r_b_leaf,leaf_in,leaf_pair,inflight,pend);
     
     // Module arguments
     input wire  clock;
@@ -1069,7 +1083,7 @@ module top$d_cntr(clock,clear,lifo,push_root,root,go,pf,one,credit_lim,leaf_coun
     input wire  one;
     input wire  [5:0] credit_lim;
     input wire  [5:0] leaf_count;
-    input wire  records;
+    input wire  [15:0] id_mask;
     input wire  wa_empty;
     input wire  wb_empty;
     input wire  dop_valid;
@@ -1165,7 +1179,6 @@ module top$d_cntr(clock,clear,lifo,push_root,root,go,pf,one,credit_lim,leaf_coun
     reg  pend_data$clock;
     
     // Local signals
-    reg  [15:0] id_mask;
     reg  [66:0] head_ent;
     reg  [3:0] head_fetch;
     reg  ent_last;
@@ -1355,10 +1368,6 @@ module top$d_cntr(clock,clear,lifo,push_root,root,go,pf,one,credit_lim,leaf_coun
         queue$pop = pop;
         top = queue$top_data;
         top_two = top[32'h42];
-        id_mask = 32'hffff;
-        if (records) begin
-            id_mask = 32'hfffe;
-        end
         fetch_a0 = ~(last_ok$q & ((last_a$q & id_mask) == (top[(32'h0)+:(16)] & id_mask)));
         fetch_b0 = ~(last_ok$q & ((last_b$q & id_mask) == (top[(32'h10)+:(16)] & id_mask)));
         fetch_a1 = top_two & ((top[(32'h21)+:(16)] & id_mask) != (top[(32'h0)+:(16)] & id_mask));
@@ -6118,14 +6127,14 @@ module top$map(d,q,clock);
 endmodule // top$map
 
 
-module top$mem_port(clock,clear,go,pf_on,records,port_out,base_na,base_nb,base_ta,base_tb,map,pop,pop_entry,pop_fetch,issue,cur_fa,cur_fb,cur_sa,cur_sb,need_ta,need_tb,leaf_tag,mem_req_ready,mem_resp_valid,mem_resp_data,mem_req_valid,mem_req_addr,req_dst,accept,resp,resp_dst,ta_req,tb_req,outstanding,na_in,nb_in,wa_empty,wb_empty);
+module top$mem_port(clock,clear,go,pf_on,slot_bits,port_out,base_na,base_nb,base_ta,base_tb,map,pop,pop_entry,pop_fetch,issue,cur_fa,cur_fb,cur_sa,cur_sb,need_ta,need_tb,leaf_tag,mem_req_ready,mem_resp_valid,mem_resp_data,mem_req_valid,mem_req_addr,req_dst,accept,resp,resp_dst,ta_req,tb_req,outstanding,na_in,nb_in,wa_empty,wb_empty);
     
     // Module arguments
     input wire  clock;
     input wire  clear;
     input wire  go;
     input wire  pf_on;
-    input wire  records;
+    input wire  [2:0] slot_bits;
     input wire  [3:0] port_out;
     input wire  [23:0] base_na;
     input wire  [23:0] base_nb;
@@ -6138,8 +6147,8 @@ module top$mem_port(clock,clear,go,pf_on,records,port_out,base_na,base_nb,base_t
     input wire  issue;
     input wire  cur_fa;
     input wire  cur_fb;
-    input wire  cur_sa;
-    input wire  cur_sb;
+    input wire  [2:0] cur_sa;
+    input wire  [2:0] cur_sb;
     input wire  need_ta;
     input wire  need_tb;
     input wire  [31:0] leaf_tag;
@@ -6165,6 +6174,7 @@ module top$mem_port(clock,clear,go,pf_on,records,port_out,base_na,base_nb,base_t
     localparam  c_one24 = 24'h1;
     localparam  c_one16 = 16'h1;
     localparam  c_one32 = 32'h1;
+    localparam  c_one8 = 8'h1;
     
     // Stub signals
     reg  [21:0] ask_w$0$d;
@@ -6356,6 +6366,8 @@ module top$mem_port(clock,clear,go,pf_on,records,port_out,base_na,base_nb,base_t
     reg  [31:0] put3;
     reg  [208:0] rec_a;
     reg  [208:0] rec_b;
+    reg  [7:0] sa_dec;
+    reg  [7:0] sb_dec;
     reg  port_free;
     reg  req;
     reg  [15:0] req_id;
@@ -6769,14 +6781,10 @@ module top$mem_port(clock,clear,go,pf_on,records,port_out,base_na,base_nb,base_t
         if (cur_fb) begin
             rec_b = wb$rdata;
         end
+        sa_dec = c_one8 << cur_sa;
+        sb_dec = c_one8 << cur_sb;
         na_in = rec_a[(32'h0)+:(209)];
-        if (records & cur_sa) begin
-            na_in = rec_a[(32'hd1 - 32'hd1)+:(209)];
-        end
         nb_in = rec_b[(32'h0)+:(209)];
-        if (records & cur_sb) begin
-            nb_in = rec_b[(32'hd1 - 32'hd1)+:(209)];
-        end
         wa_empty = wa_n$q == 32'h0;
         wb_empty = wb_n$q == 32'h0;
         ask_dec = c_one32 << ask_head$q;
@@ -6881,10 +6889,7 @@ module top$mem_port(clock,clear,go,pf_on,records,port_out,base_na,base_nb,base_t
         port_free = tag_n$q <= ((port_out) & 5'h1f);
         req_dst = ((ask_front[(32'h10)+:(1)]) & 2'h3);
         req_id = ask_front[(32'h0)+:(16)];
-        ask_rec = ask_front[(32'h0)+:(16)];
-        if (records) begin
-            ask_rec = ((ask_front[(32'h1)+:(15)]) & 16'hffff);
-        end
+        ask_rec = ask_front[(32'h0)+:(16)] >> slot_bits;
         req_base = base_na;
         if (ask_front[32'h10]) begin
             req_base = base_nb;
@@ -8028,6 +8033,25 @@ module top$mem_port$wa(clock,wsel,wdata,rsel,rdata);
     end
     
 endmodule // top$mem_port$wa
+
+
+module top$mode_slot(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$mode_slot
 
 
 module top$result(clock,take,out_valid,out_hit,out_uncertain,out_tag,res_ready,out_ready,res_valid,res_tag,res_uncertain,give,sure_hit,open);

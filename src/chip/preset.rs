@@ -24,7 +24,8 @@ pub enum Preset {
     /// on both sides and a leaf pair's triangle words asked for as it enters the leaf FIFO
     /// (`tri_prefetch`): the values measured best on DATE'05's DDR2 at 800 MHz
     /// (docs/explanation/architecture.md, "The chip for bandwidth"). Cycle level only: the RTL
-    /// chips have no decode stage.
+    /// chip of 4-bit codes (`chip_b32_k24_q4`) holds one node record per object, one triangle
+    /// word of B and no triangle prefetch.
     Date05Treelets,
     /// WSCG'03's chip (its Stack Engine: architecture "wscg03") on its 4-bank DDR SDRAM on a
     /// 256-bit bus at 266 MHz, A's 128-line triangle cache (§4.3), k = 24 binary32; with

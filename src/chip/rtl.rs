@@ -258,8 +258,16 @@ impl ChipKind {
     /// cache and memory layout aside: every chip has [`TRI_CACHE_LINES`] lines, host register
     /// [`TRI_CACHE`](super::reg::TRI_CACHE) picks how many are used; [`records`](Self::records) says which layouts it reads).
     pub fn of(cfg: &ChipConfig, dop_interval: u32, tri_interval: u32) -> Option<ChipKind> {
-        ChipKind::built(cfg)
-            .find(|k| (k.dop_interval(), k.tri_interval()) == (dop_interval, tri_interval))
+        let mut at = ChipKind::built(cfg)
+            .filter(|k| (k.dop_interval(), k.tri_interval()) == (dop_interval, tri_interval));
+        let first = at.next()?;
+        // the chip of the configuration's stored precision, if one is built
+        Some(
+            std::iter::once(first)
+                .chain(at)
+                .find(|k| k.config().dop_bits == cfg.dop_bits)
+                .unwrap_or(first),
+        )
     }
 
     /// Whether this chip holds `cfg`'s memory side: one node record per object, the `words`
@@ -300,24 +308,22 @@ impl ChipKind {
         Ok(())
     }
 
-    /// The chips built for `cfg`'s k, formats, roundings and stored DOP precision, at any
-    /// TRI_UNIT interval.
+    /// The chips built for `cfg`'s k, formats and roundings, at any TRI_UNIT interval and
+    /// stored DOP precision ([`of`](Self::of) picks `cfg`'s).
     pub fn built(cfg: &ChipConfig) -> impl Iterator<Item = ChipKind> {
-        use super::config::{DopBits, MemLayout};
-        let base = ChipConfig {
+        let base = |c: &ChipConfig| ChipConfig {
             tri_cache: 1,
             tri_cache_b: 1,
-            layout: match cfg.dop_bits {
-                DopBits::Full => MemLayout::Words,
-                DopBits::Bits(_) => MemLayout::Records,
-            },
+            layout: super::config::MemLayout::Words,
             node_cache: 1,
-            ..*cfg
+            dop_bits: super::config::DopBits::Full,
+            ..*c
         };
+        let want = base(cfg);
         ChipKind::ALL
             .iter()
             .copied()
-            .filter(move |k| k.config() == base)
+            .filter(move |k| base(&k.config()) == want)
     }
 
     /// Memory word bits: a record ([`record_bits`](super::layout::record_bits)) on a chip

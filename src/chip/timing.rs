@@ -544,7 +544,7 @@ impl Clock {
         let why = match chip.map(|k| (k, k.reads(cfg))) {
             _ if !widened.is_empty() => widened.join("; "),
             None => format!("{} is not built in RTL", chip_name(cfg, folds)),
-            Some((k, Err(_))) if cfg.dop_bits != DopBits::Full => format!("{} reads node records in full; this configuration's decode stage (dop_bits = {}) is {decode_built}", k.name(), cfg.dop_bits),
+            Some((k, Err(_))) if k.config().dop_bits != cfg.dop_bits => format!("{} reads node records of dop_bits = {}; this configuration's decode stage (dop_bits = {}) is {decode_built}", k.name(), k.config().dop_bits, cfg.dop_bits),
             Some((k, Err(_))) => format!("{} is built with one node record per object, its layouts and up to {} triangle cache lines; this configuration's memory side differs", k.name(), rtl::TRI_CACHE_LINES),
             Some((k, Ok(()))) if !table.periods.contains_key(k.name()) => format!("{} has no row", k.name()),
             Some(_) => String::new(),

@@ -464,8 +464,8 @@ macro_rules! chip {
                 self.mem_port.need_tb.next = self.need_tb.val();
                 self.mem_port.leaf_tag.next = self.tri_ids.val();
                 self.mem_port.slot_bits.next = self.mode_slot.q.val();
-                self.mem_port.cur_sa.next = (self.d_cntr.cur_a.val() & !self.id_mask.val()).get_bits::<3>(0);
-                self.mem_port.cur_sb.next = (self.d_cntr.cur_b.val() & !self.id_mask.val()).get_bits::<3>(0);
+                self.mem_port.cur_sa.next = bit_cast::<3, 16>(self.d_cntr.cur_a.val() & !self.id_mask.val());
+                self.mem_port.cur_sb.next = bit_cast::<3, 16>(self.d_cntr.cur_b.val() & !self.id_mask.val());
                 self.mem_port.mem_req_ready.next = self.mem_req_ready.val();
                 self.mem_port.mem_resp_valid.next = self.mem_resp_valid.val();
                 self.mem_port.mem_resp_data.next = self.mem_resp_data.val();
