@@ -115,8 +115,8 @@ fn run(seed: u64, cycles: u64, cov: &mut Coverage) {
     uut.issue.connect();
     uut.cur_fa.connect();
     uut.cur_fb.connect();
-    // the `words` layout (records, cur_sa, cur_sb low; the `records` layout: tb/rtl_chip.rs)
-    uut.records.connect();
+    // the `words` layout (slot_bits, cur_sa, cur_sb 0; the `records` layout: tb/rtl_chip.rs)
+    uut.slot_bits.connect();
     uut.cur_sa.connect();
     uut.cur_sb.connect();
     uut.need_ta.connect();

@@ -9,7 +9,7 @@
 //
 // One solver step is one rising edge; every input is free (the D_CNTR side, the memory's
 // ready and responses, even responses nobody asked for) except `port_out`, `pf_on`,
-// `records` and `map`, registers of the chip: anyconsts.
+// `slot_bits` and `map`, registers of the chip: anyconsts.
 //
 // The wrapper counts requests accepted (mem_req_valid && mem_req_ready, the port's
 // `accept`) minus responses taken (`resp`), and keeps its own FIFO of the accepted
@@ -58,7 +58,7 @@ module wrapper (
     input wire [3:0] pop_fetch,
     input wire issue,
     input wire cur_fa, input wire cur_fb,
-    input wire cur_sa, input wire cur_sb,
+    input wire [2:0] cur_sa, input wire [2:0] cur_sb,
     input wire need_ta, input wire need_tb,
     input wire [31:0] leaf_tag,
     input wire mem_req_ready,
@@ -75,11 +75,11 @@ module wrapper (
 
     (* anyconst *) reg [3:0] port_out;
     (* anyconst *) reg pf_on;
-    (* anyconst *) reg records;
+    (* anyconst *) reg [2:0] slot_bits;
     (* anyconst *) reg [19:0] map;
 
     mem_port dut (
-        .clock(clock), .clear(clear), .go(go), .pf_on(pf_on), .records(records),
+        .clock(clock), .clear(clear), .go(go), .pf_on(pf_on), .slot_bits(slot_bits),
         .port_out(port_out), .base_na(base_na), .base_nb(base_nb), .base_ta(base_ta),
         .base_tb(base_tb), .map(map), .pop(pop), .pop_entry(pop_entry),
         .pop_fetch(pop_fetch), .issue(issue), .cur_fa(cur_fa), .cur_fb(cur_fb),
@@ -274,7 +274,7 @@ module wrapper (
                      : which_ask == 2 ? pop_entry[48:33] : pop_entry[64:49];
     wire a_sel = a_st == T_WAIT && pop && !clear && pick_ask && pop_fetch[which_ask];
     wire [4:0] a_row = f_ask_head + a_before[4:0];
-    wire [15:0] a_rec = records ? {1'b0, a_word[15:1]} : a_word[15:0];
+    wire [15:0] a_rec = a_word[15:0] >> slot_bits;
     always @(posedge clock)
         if (a_sel) begin
             a_st <= T_IN;

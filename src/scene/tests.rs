@@ -309,7 +309,20 @@ fn rtl_order_names_what_to_change() {
         &ddr(8),
     )
     .unwrap_err();
-    assert!(e.contains("chip_e8m15_k6 reads the `words` layout only (of the RTL chips, chip_b32_k24 also read `records`); this configuration has layout = \"records\""), "{e}");
+    assert!(e.contains("chip_e8m15_k6 reads the `words` layout only (of the RTL chips, chip_b32_k24, chip_b32_k24_q4 also read `records`); this configuration has layout = \"records\""), "{e}");
+    // stored DOP precision: the chip of 4-bit codes runs them, the others name it
+    let coded = |b| ChipConfig {
+        layout: MemLayout::Records,
+        dop_bits: crate::chip::config::DopBits::Bits(b),
+        ..ChipConfig::default()
+    };
+    assert_eq!(
+        crate::harness::chip_io::rtl_order(&coded(4), Traversal::Fifo, &rtl.params),
+        Ok((ChipKind::K24B32Q4, Order::Fifo))
+    );
+    let e =
+        crate::harness::chip_io::rtl_order(&coded(8), Traversal::Fifo, &rtl.params).unwrap_err();
+    assert!(e.contains("chip_b32_k24 reads node records of dop_bits = full (of the RTL chips, chip_b32_k24_q4 (dop_bits = 4) read stored DOPs); this configuration has dop_bits = 8: set [chip] dop_bits = \"full\""), "{e}");
 }
 
 /// `[memory]` picks the ideal model or DDR SDRAM with a preset and overrides; mixed or
