@@ -4403,6 +4403,18 @@ module top$dop$dec_d$0(clock,r,q,ef,valid_in,y,valid_out);
     localparam  c_b = 16'h4;
     
     // Stub signals
+    reg  [31:0] s0_r$d;
+    wire  [31:0] s0_r$q;
+    reg  s0_r$clock;
+    reg  [3:0] s0_q$d;
+    wire  [3:0] s0_q$q;
+    reg  s0_q$clock;
+    reg  [8:0] s0_ef$d;
+    wire  [8:0] s0_ef$q;
+    reg  s0_ef$clock;
+    reg  s0_valid$d;
+    wire  s0_valid$q;
+    reg  s0_valid$clock;
     reg  add$clock;
     reg  [31:0] add$a;
     reg  [31:0] add$b;
@@ -4425,6 +4437,26 @@ module top$dop$dec_d$0(clock,r,q,ef,valid_in,y,valid_out);
     reg  [31:0] step;
     
     // Sub module instances
+    top$cnt_dop s0_r(
+        .d(s0_r$d),
+        .q(s0_r$q),
+        .clock(s0_r$clock)
+    );
+    top$d_cntr$ahd_fetch$row$0 s0_q(
+        .d(s0_q$d),
+        .q(s0_q$q),
+        .clock(s0_q$clock)
+    );
+    top$dop$dec_d$0$s0_ef s0_ef(
+        .d(s0_ef$d),
+        .q(s0_ef$q),
+        .clock(s0_ef$clock)
+    );
+    top$d_cntr$ent_second s0_valid(
+        .d(s0_valid$d),
+        .q(s0_valid$q),
+        .clock(s0_valid$clock)
+    );
     top$dop$dec_d$0$add add(
         .clock(add$clock),
         .a(add$a),
@@ -4438,7 +4470,19 @@ module top$dop$dec_d$0(clock,r,q,ef,valid_in,y,valid_out);
     // Update code
     always @(*) begin
         add$clock = clock;
-        norm$0 = q;
+        s0_r$clock = clock;
+        s0_q$clock = clock;
+        s0_ef$clock = clock;
+        s0_valid$clock = clock;
+        s0_r$d = s0_r$q;
+        s0_q$d = s0_q$q;
+        s0_ef$d = s0_ef$q;
+        s0_valid$d = s0_valid$q;
+        s0_r$d = r;
+        s0_q$d = q;
+        s0_ef$d = ef;
+        s0_valid$d = valid_in;
+        norm$0 = s0_q$q;
         lz$0 = 32'h0;
         norm$1 = norm$0;
         lz$1 = lz$0;
@@ -4459,19 +4503,19 @@ module top$dop$dec_d$0(clock,r,q,ef,valid_in,y,valid_out);
             lz$3 = lz$2 + 32'h1;
         end
         expo = 32'h0;
-        frac = ((q) & 23'h7fffff) << ef;
-        if (((ef) & 16'hffff) + c_b > c_f + lz$3) begin
-            expo = ((ef) & 16'hffff) + c_b - lz$3 - c_f;
+        frac = ((s0_q$q) & 23'h7fffff) << s0_ef$q;
+        if (((s0_ef$q) & 16'hffff) + c_b > c_f + lz$3) begin
+            expo = ((s0_ef$q) & 16'hffff) + c_b - lz$3 - c_f;
             frac = ((norm$3) & 23'h7fffff) << (32'h17 + 32'h1 - 32'h4);
         end
         step = (((expo) & 32'hffffffff) << 32'h17) | ((frac) & 32'hffffffff);
-        if (q == 32'h0) begin
+        if (s0_q$q == 32'h0) begin
             step = 32'h0;
         end
-        add$a = r;
+        add$a = s0_r$q;
         add$b = step;
         add$sub = 1'b1;
-        add$valid_in = valid_in;
+        add$valid_in = s0_valid$q;
         y = add$y;
         valid_out = add$valid_out;
     end
@@ -5098,6 +5142,25 @@ module top$dop$dec_d$0$add$unpack_a(x,sign,exp,sig,is_zero,is_inf,is_nan);
 endmodule // top$dop$dec_d$0$add$unpack_a
 
 
+module top$dop$dec_d$0$s0_ef(d,q,clock);
+    
+    // Module arguments
+    input wire  [8:0] d;
+    output reg  [8:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 9'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$dop$dec_d$0$s0_ef
+
+
 module top$dop$tag_dec(clock,d,q);
     
     // Module arguments
@@ -5115,6 +5178,9 @@ module top$dop$tag_dec(clock,d,q);
     reg  [15:0] line$2$d;
     wire  [15:0] line$2$q;
     reg  line$2$clock;
+    reg  [15:0] line$3$d;
+    wire  [15:0] line$3$q;
+    reg  line$3$clock;
     
     // Sub module instances
     top$d_cntr$last_a line$0(
@@ -5132,6 +5198,11 @@ module top$dop$tag_dec(clock,d,q);
         .q(line$2$q),
         .clock(line$2$clock)
     );
+    top$d_cntr$last_a line$3(
+        .d(line$3$d),
+        .q(line$3$q),
+        .clock(line$3$clock)
+    );
     
     // Update code
     always @(*) begin
@@ -5141,8 +5212,11 @@ module top$dop$tag_dec(clock,d,q);
         line$1$d = d;
         line$2$clock = clock;
         line$2$d = d;
+        line$3$clock = clock;
+        line$3$d = d;
         line$0$d = line$1$q;
         line$1$d = line$2$q;
+        line$2$d = line$3$q;
         q = line$0$q;
     end
     
@@ -17793,7 +17867,7 @@ module top$result(clock,take,out_valid,out_hit,out_uncertain,out_tag,res_ready,o
     reg  keep;
     
     // Sub module instances
-    top$result$open_r open_r(
+    top$dop$dec_d$0$s0_ef open_r(
         .d(open_r$d),
         .q(open_r$q),
         .clock(open_r$clock)
@@ -17820,25 +17894,6 @@ module top$result(clock,take,out_valid,out_hit,out_uncertain,out_tag,res_ready,o
     end
     
 endmodule // top$result
-
-
-module top$result$open_r(d,q,clock);
-    
-    // Module arguments
-    input wire  [8:0] d;
-    output reg  [8:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 9'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$result$open_r
 
 
 module top$side(clock,d,q);
@@ -17903,6 +17958,9 @@ module top$side(clock,d,q);
     reg  [98:0] line$17$d;
     wire  [98:0] line$17$q;
     reg  line$17$clock;
+    reg  [98:0] line$18$d;
+    wire  [98:0] line$18$q;
+    reg  line$18$clock;
     
     // Sub module instances
     top$side$line$0 line$0(
@@ -17995,6 +18053,11 @@ module top$side(clock,d,q);
         .q(line$17$q),
         .clock(line$17$clock)
     );
+    top$side$line$0 line$18(
+        .d(line$18$d),
+        .q(line$18$q),
+        .clock(line$18$clock)
+    );
     
     // Update code
     always @(*) begin
@@ -18034,6 +18097,8 @@ module top$side(clock,d,q);
         line$16$d = d;
         line$17$clock = clock;
         line$17$d = d;
+        line$18$clock = clock;
+        line$18$d = d;
         line$0$d = line$1$q;
         line$1$d = line$2$q;
         line$2$d = line$3$q;
@@ -18051,6 +18116,7 @@ module top$side(clock,d,q);
         line$14$d = line$15$q;
         line$15$d = line$16$q;
         line$16$d = line$17$q;
+        line$17$d = line$18$q;
         q = line$0$q;
     end
     
@@ -18915,7 +18981,7 @@ module top$tri_unit(clock,load_en,load_addr,load_data,a_m_0$0,a_m_0$1,a_m_0$2,a_
         .almost_full(fifo$almost_full),
         .overflow(fifo$overflow)
     );
-    top$result$open_r count(
+    top$dop$dec_d$0$s0_ef count(
         .d(count$d),
         .q(count$q),
         .clock(count$clock)
@@ -19982,7 +20048,7 @@ module top$tri_unit$fifo$read_logic(clock,read,data_out,empty,almost_empty,under
     reg  is_full;
     
     // Sub module instances
-    top$result$open_r read_address(
+    top$dop$dec_d$0$s0_ef read_address(
         .d(read_address$d),
         .q(read_address$q),
         .clock(read_address$clock)
@@ -20063,12 +20129,12 @@ module top$tri_unit$fifo$write_logic(write,data_in,full,almost_full,overflow,clo
     reg  is_full;
     
     // Sub module instances
-    top$result$open_r write_address(
+    top$dop$dec_d$0$s0_ef write_address(
         .d(write_address$d),
         .q(write_address$q),
         .clock(write_address$clock)
     );
-    top$result$open_r dff_write_address_delay(
+    top$dop$dec_d$0$s0_ef dff_write_address_delay(
         .d(dff_write_address_delay$d),
         .q(dff_write_address_delay$q),
         .clock(dff_write_address_delay$clock)

@@ -16,6 +16,18 @@ module top(clock,r,q,ef,valid_in,y,valid_out);
     localparam  c_b = 16'h4;
     
     // Stub signals
+    reg  [31:0] s0_r$d;
+    wire  [31:0] s0_r$q;
+    reg  s0_r$clock;
+    reg  [3:0] s0_q$d;
+    wire  [3:0] s0_q$q;
+    reg  s0_q$clock;
+    reg  [8:0] s0_ef$d;
+    wire  [8:0] s0_ef$q;
+    reg  s0_ef$clock;
+    reg  s0_valid$d;
+    wire  s0_valid$q;
+    reg  s0_valid$clock;
     reg  add$clock;
     reg  [31:0] add$a;
     reg  [31:0] add$b;
@@ -38,6 +50,26 @@ module top(clock,r,q,ef,valid_in,y,valid_out);
     reg  [31:0] step;
     
     // Sub module instances
+    top$add$s3_y s0_r(
+        .d(s0_r$d),
+        .q(s0_r$q),
+        .clock(s0_r$clock)
+    );
+    top$s0_q s0_q(
+        .d(s0_q$d),
+        .q(s0_q$q),
+        .clock(s0_q$clock)
+    );
+    top$s0_ef s0_ef(
+        .d(s0_ef$d),
+        .q(s0_ef$q),
+        .clock(s0_ef$clock)
+    );
+    top$add$s1_eff_sub s0_valid(
+        .d(s0_valid$d),
+        .q(s0_valid$q),
+        .clock(s0_valid$clock)
+    );
     top$add add(
         .clock(add$clock),
         .a(add$a),
@@ -51,7 +83,19 @@ module top(clock,r,q,ef,valid_in,y,valid_out);
     // Update code
     always @(*) begin
         add$clock = clock;
-        norm$0 = q;
+        s0_r$clock = clock;
+        s0_q$clock = clock;
+        s0_ef$clock = clock;
+        s0_valid$clock = clock;
+        s0_r$d = s0_r$q;
+        s0_q$d = s0_q$q;
+        s0_ef$d = s0_ef$q;
+        s0_valid$d = s0_valid$q;
+        s0_r$d = r;
+        s0_q$d = q;
+        s0_ef$d = ef;
+        s0_valid$d = valid_in;
+        norm$0 = s0_q$q;
         lz$0 = 32'h0;
         norm$1 = norm$0;
         lz$1 = lz$0;
@@ -72,19 +116,19 @@ module top(clock,r,q,ef,valid_in,y,valid_out);
             lz$3 = lz$2 + 32'h1;
         end
         expo = 32'h0;
-        frac = ((q) & 23'h7fffff) << ef;
-        if (((ef) & 16'hffff) + c_b > c_f + lz$3) begin
-            expo = ((ef) & 16'hffff) + c_b - lz$3 - c_f;
+        frac = ((s0_q$q) & 23'h7fffff) << s0_ef$q;
+        if (((s0_ef$q) & 16'hffff) + c_b > c_f + lz$3) begin
+            expo = ((s0_ef$q) & 16'hffff) + c_b - lz$3 - c_f;
             frac = ((norm$3) & 23'h7fffff) << (32'h17 + 32'h1 - 32'h4);
         end
         step = (((expo) & 32'hffffffff) << 32'h17) | ((frac) & 32'hffffffff);
-        if (q == 32'h0) begin
+        if (s0_q$q == 32'h0) begin
             step = 32'h0;
         end
-        add$a = r;
+        add$a = s0_r$q;
         add$b = step;
         add$sub = 1'b1;
-        add$valid_in = valid_in;
+        add$valid_in = s0_valid$q;
         y = add$y;
         valid_out = add$valid_out;
     end
@@ -747,3 +791,41 @@ module top$add$unpack_a(x,sign,exp,sig,is_zero,is_inf,is_nan);
     end
     
 endmodule // top$add$unpack_a
+
+
+module top$s0_ef(d,q,clock);
+    
+    // Module arguments
+    input wire  [8:0] d;
+    output reg  [8:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 9'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$s0_ef
+
+
+module top$s0_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [3:0] d;
+    output reg  [3:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 4'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$s0_q

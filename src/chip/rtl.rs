@@ -17,9 +17,9 @@ pub const DOP_LATENCY: usize = 15;
 
 /// The decode stage of stored DOP precision ([`dop::stored`](crate::dop::stored)) ahead of
 /// D.KLMSEL: per plane, one subtraction `r ⊖ q 2^e` of the DOP format for each node of the
-/// pair, so an adder's pipeline on the unit's path (`rtl::b32::DopDecode`, in front of the
-/// DOP unit of `chip_b32_k24_q4`).
-pub const DOP_DECODE_LATENCY: usize = FP_ADD_LATENCY;
+/// pair, an adder's pipeline behind a rank of input registers on the unit's path
+/// (`rtl::b32::DopDecode`, in front of the DOP unit of `chip_b32_k24_q4`).
+pub const DOP_DECODE_LATENCY: usize = 1 + FP_ADD_LATENCY;
 
 /// Clocks a configuration's DOP unit adds ahead of its lanes: the decode stage with stored
 /// DOP precision, else none.

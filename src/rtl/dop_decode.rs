@@ -18,7 +18,9 @@ macro_rules! dop_decode {
         /// by its leading zeros `lz` (a chain of `B - 1` one-bit shifts: `B` is small), then the
         /// biased exponent `ef + B - lz - F` and the bits below the leading one, or, where that
         /// exponent would be below 1, the subnormal `q 2^ef` (exponent field 0); `q = 0` is +0,
-        /// so `y = r`. Then `FpAdd` with `sub`: latency 3
+        /// so `y = r`. The inputs are registered first (`s0_*`: in a chip they come from the
+        /// memory port's record multiplexer, whose path would otherwise run on through the
+        /// step and the adder's alignment), then `FpAdd` with `sub`: latency 4
         /// ([`DOP_DECODE_LATENCY`](crate::chip::rtl::DOP_DECODE_LATENCY)), one plane a clock.
         /// Ports: in `clock`, `r[W]`, `q[B]`, `ef[X]`, `valid_in`; out `y[W]`, `valid_out`.
         #[derive(LogicBlock)]
@@ -30,6 +32,10 @@ macro_rules! dop_decode {
             pub valid_in: Signal<In, Bit>,
             pub y: Signal<Out, Bits<$W>>,
             pub valid_out: Signal<Out, Bit>,
+            s0_r: DFF<Bits<$W>>,
+            s0_q: DFF<Bits<$B>>,
+            s0_ef: DFF<Bits<$X>>,
+            s0_valid: DFF<Bit>,
             c_f: Constant<Bits<16>>,
             c_b: Constant<Bits<16>>,
             /// `q` after i one-bit normalising shifts, and the shifts taken.
@@ -42,7 +48,7 @@ macro_rules! dop_decode {
         }
 
         impl DopDecode {
-            pub const LATENCY: usize = FpAdd::LATENCY;
+            pub const LATENCY: usize = 1 + FpAdd::LATENCY;
             /// The code's bits.
             pub const CODE_BITS: usize = $B;
             /// The exponent field's bits.
@@ -58,6 +64,10 @@ macro_rules! dop_decode {
                     valid_in: Default::default(),
                     y: Default::default(),
                     valid_out: Default::default(),
+                    s0_r: Default::default(),
+                    s0_q: Default::default(),
+                    s0_ef: Default::default(),
+                    s0_valid: Default::default(),
                     c_f: Constant::new(($F as u64).into()),
                     c_b: Constant::new(($B as u64).into()),
                     norm: Default::default(),
@@ -74,7 +84,12 @@ macro_rules! dop_decode {
             #[hdl_gen]
             fn update(&mut self) {
                 clock!(self, clock, add);
-                self.norm[0].next = self.q.val();
+                dff_setup!(self, clock, s0_r, s0_q, s0_ef, s0_valid);
+                self.s0_r.d.next = self.r.val();
+                self.s0_q.d.next = self.q.val();
+                self.s0_ef.d.next = self.ef.val();
+                self.s0_valid.d.next = self.valid_in.val();
+                self.norm[0].next = self.s0_q.q.val();
                 self.lz[0].next = 0.into();
                 for i in 1..$B {
                     self.norm[i].next = self.norm[i - 1].val();
@@ -86,24 +101,24 @@ macro_rules! dop_decode {
                 }
                 // biased exponent ef + B - lz - F when at least 1, else a subnormal
                 self.expo.next = 0.into();
-                self.frac.next = bit_cast::<$F, $B>(self.q.val()) << self.ef.val();
-                if bit_cast::<16, $X>(self.ef.val()) + self.c_b.val()
+                self.frac.next = bit_cast::<$F, $B>(self.s0_q.q.val()) << self.s0_ef.q.val();
+                if bit_cast::<16, $X>(self.s0_ef.q.val()) + self.c_b.val()
                     > self.c_f.val() + self.lz[$B - 1].val()
                 {
-                    self.expo.next = bit_cast::<16, $X>(self.ef.val()) + self.c_b.val()
+                    self.expo.next = bit_cast::<16, $X>(self.s0_ef.q.val()) + self.c_b.val()
                         - self.lz[$B - 1].val()
                         - self.c_f.val();
                     self.frac.next = bit_cast::<$F, $B>(self.norm[$B - 1].val()) << ($F + 1 - $B);
                 }
                 self.step.next = (bit_cast::<$W, 16>(self.expo.val()) << $F)
                     | bit_cast::<$W, $F>(self.frac.val());
-                if self.q.val() == 0 {
+                if self.s0_q.q.val() == 0 {
                     self.step.next = 0.into();
                 }
-                self.add.a.next = self.r.val();
+                self.add.a.next = self.s0_r.q.val();
                 self.add.b.next = self.step.val();
                 self.add.sub.next = true;
-                self.add.valid_in.next = self.valid_in.val();
+                self.add.valid_in.next = self.s0_valid.q.val();
                 self.y.next = self.add.y.val();
                 self.valid_out.next = self.add.valid_out.val();
             }
