@@ -525,13 +525,13 @@ fn folded_dop_unit_takes_a_pair_every_interval() {
 }
 
 /// Stored DOP precision's decode stage by hand: a DOP verdict comes out 15 clocks after its
-/// pair (DATE'05's lane pipeline) from full records and 18 from 8-bit codes, the 3 stages
-/// of the DOP format's adder (`FpAdd`) that subtracts `q 2^e` from the parent's distance;
-/// the answers stay golden's.
+/// pair (DATE'05's lane pipeline) from full records and 19 from 8-bit codes: the decode
+/// stage's input registers, then the 3 stages of the DOP format's adder (`FpAdd`) that
+/// subtracts `q 2^e` from the parent's distance; the answers stay golden's.
 #[test]
 fn the_decode_stage_delays_each_dop_verdict_by_an_adder() {
     let (issue, valid) = (probe("d_cntr", "issue"), probe("dop", "valid_out"));
-    for (dop_bits, latency) in [(DopBits::Full, 15u64), (DopBits::Bits(8), 18)] {
+    for (dop_bits, latency) in [(DopBits::Full, 15u64), (DopBits::Bits(8), 19)] {
         let cfg = ChipConfig {
             layout: MemLayout::Records,
             dop_bits,

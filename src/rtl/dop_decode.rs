@@ -144,7 +144,7 @@ macro_rules! dop_unit_coded {
         /// The k = 24 DOP unit behind the decode stage of stored DOPs: a `DopDecode` per
         /// plane of each node of the pair (B's `d`, A's `e`) turns the node words' codes
         /// back into distances ([`dop::stored::decode`](crate::dop::stored::decode)), then
-        /// [`DopUnit24`]. Latency `DopDecode::LATENCY + DopUnit24::LATENCY` (3 + 15); the
+        /// [`DopUnit24`]. Latency `DopDecode::LATENCY + DopUnit24::LATENCY` (4 + 15); the
         /// tag and valid bit wait beside the decode stage.
         ///
         /// Ports: [`DopUnit24`]'s, with `d[k]`, `e[k]` the codes (`B` bits) and per plane the

@@ -310,7 +310,18 @@ fn rtl_order_names_what_to_change() {
     )
     .unwrap_err();
     assert!(e.contains("chip_e8m15_k6 reads the `words` layout only (of the RTL chips, chip_b32_k24, chip_b32_k24_q4 also read `records`); this configuration has layout = \"records\""), "{e}");
-    // stored DOP precision: the chip of 4-bit codes runs them, the others name it
+}
+
+/// Stored DOP precision: the chip of 4-bit codes runs them, the others name it.
+#[test]
+fn rtl_order_of_stored_dops() {
+    use crate::chip::reg::Order;
+    use crate::chip::rtl::ChipKind;
+    let rtl = Scene::parse(
+        include_str!("../../vectors/scenes/rtl_spheres.toml"),
+        "rtl_spheres",
+    )
+    .unwrap();
     let coded = |b| ChipConfig {
         layout: MemLayout::Records,
         dop_bits: crate::chip::config::DopBits::Bits(b),
