@@ -12,7 +12,7 @@ use serde::{Deserialize, Serialize};
 pub const TRI_SETUP: u32 = 0x100;
 /// The query: bit 0 the order ([`Order::Lifo`]), bit 1 first hit ([`Mode::First`]), bit 2
 /// the memory layout ([`MemLayout::Records`]), bits 5:3 the bits of a node id's slot field
-/// in it ([`slot_bits`](super::layout::slot_bits): 1 for a node pair, 3 for a treelet of
+/// in it ([`slot_bits`]: 1 for a node pair, 3 for a treelet of
 /// two levels; 0 in `words`). The cycle model takes the layout from its configuration.
 pub const MODE: u32 = 0x120;
 /// The root pair: A's node in bits 15:0, B's in 31:16.

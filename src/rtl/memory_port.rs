@@ -262,10 +262,12 @@ macro_rules! memory_port {
             }
         }
 
+        // The slot loop `1..SLOTS` is empty on a chip of one node word a record (no Verilog);
+        // rust-hdl's generated methods repeat it.
+        #[allow(clippy::reversed_empty_ranges)]
         impl Logic for MemoryPort {
             // Long: #[hdl_gen] translates one body; split into sub-blocks, the chips' Verilog would change (new names) and their timing rows go stale.
-            // The slot loop `1..SLOTS` is empty on a chip of one node word a record (no Verilog).
-            #[allow(clippy::too_many_lines, clippy::reversed_empty_ranges)]
+            #[allow(clippy::too_many_lines)]
             #[hdl_gen]
             fn update(&mut self) {
                 dff_setup!(self, clock, ask_head, ask_tail, ask_n, seq_head, seq_tail);
