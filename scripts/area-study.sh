@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
 # The area study's Yosys cells (docs/explanation/accuracy-cost.md, "In time and area"): exports the
-# DOP unit for every k (6, 14, 18, 24, 26), format (binary32, e8m15) and DOP rounding, and
-# TRI_UNIT per format, each also folded (TRI_UNIT at a pair every 2 .. 32 clocks,
+# DOP unit for every k (6, 14, 18, 24, 26), format (binary32, e8m15, e8m10) and DOP rounding, and
+# TRI_UNIT per format, those of binary32 and e8m15 also folded (TRI_UNIT at a pair every 2 .. 32 clocks,
 # the DOP unit at every k and interval the RTL stamps out) (`cchip export-verilog --area`),
 # synthesizes each with scripts/synth.sh (hierarchical, Yosys' generic gates) and writes one
 # row per unit: `unit,cells`.
-# `cchip accuracy --area FILE` reads the file. CI re-synthesizes the four of these units
+# `cchip accuracy --area FILE` reads the file. CI re-synthesizes those of these units
 # that are in rtl/ and fails if their cells differ from the file (then run this again).
 #
 # Usage: scripts/area-study.sh [--jobs N] [--out FILE] [--units PATTERNS]   (default: 2 jobs,

@@ -570,7 +570,7 @@ fn accuracy_pareto_front() {
         seed: 1,
     };
     let formats = vec![Format::BINARY32.into(), "e8m10".parse().unwrap()];
-    // the papers' clock: e8m10 has no RTL unit to take a period from
+    // the papers' clock: no configuration needs a measured period
     let plan = |ks: Vec<usize>, bus_bits| accuracy::Plan {
         meshes: vec!["teapot".into()],
         presets: vec![Preset::Rtl],
@@ -596,7 +596,7 @@ fn accuracy_pareto_front() {
         .iter()
         .all(|r| r.sums.queries == 2 && r.sums.cycles > 0 && r.sums.misses == 0));
     // cells of the units by hand: DOP units 100 (k = 6) and 400 (k = 24), TRI_UNIT 1000;
-    // e8m10 has no RTL, so no cells and no point on the area plot
+    // none for e8m10, so no point of it on the area plot
     let file = std::env::temp_dir().join(format!("cchip-area-{}.csv", std::process::id()));
     std::fs::write(
         &file,

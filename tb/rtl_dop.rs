@@ -23,7 +23,7 @@ use collision_chip::golden::host::TriSide;
 use collision_chip::golden::{dop_unit, doptrf};
 use collision_chip::mesh::soup;
 use collision_chip::pose::Pose;
-use collision_chip::rtl::{b32, e8m15};
+use collision_chip::rtl::{b32, e8m10, e8m15};
 use proptest::prelude::*;
 use proptest::test_runner::{Config, TestRunner};
 use rust_hdl::prelude::*;
@@ -87,6 +87,7 @@ macro_rules! impl_lane {
 }
 impl_lane!(b32::Doptrf);
 impl_lane!(e8m15::Doptrf);
+impl_lane!(e8m10::Doptrf);
 
 fn golden_lane(fmt: Format, r: Rounding, x: &LaneIn) -> (u64, bool) {
     let v: Vec<f64> = x.iter().map(|&b| fmt.from_bits(b)).collect();
@@ -224,9 +225,15 @@ fn lane_e8m15_random() {
 }
 
 #[test]
+fn lane_e8m10_random() {
+    prop_lane(e8m10::doptrf_top, Format::E8M10, "Doptrf");
+}
+
+#[test]
 fn lane_specials() {
     specials_lane(b32::doptrf_top, Format::BINARY32);
     specials_lane(e8m15::doptrf_top, Format::REDUCED);
+    specials_lane(e8m10::doptrf_top, Format::E8M10);
 }
 
 /// The testbench sees a wrong lane: NearestEven checked against TowardPositive fails.

@@ -5,7 +5,7 @@
 //! (Verilog export and its checks: `harness::units`, scripts/check-rtl.sh.)
 
 use collision_chip::format::{Format, Rounding};
-use collision_chip::rtl::{b32, e8m15};
+use collision_chip::rtl::{b32, e8m10, e8m15};
 use proptest::prelude::*;
 use proptest::strategy::ValueTree;
 use proptest::test_runner::{Config, TestRunner};
@@ -54,8 +54,10 @@ macro_rules! impl_unit {
 
 impl_unit!(b32::FpMul, 4, no);
 impl_unit!(e8m15::FpMul, 4, no);
+impl_unit!(e8m10::FpMul, 4, no);
 impl_unit!(b32::FpAdd, 3, yes);
 impl_unit!(e8m15::FpAdd, 3, yes);
+impl_unit!(e8m10::FpAdd, 3, yes);
 
 fn golden(fmt: Format, op: Op, r: Rounding, a: u64, b: u64) -> u64 {
     let (x, y) = (fmt.from_bits(a), fmt.from_bits(b));
@@ -261,6 +263,11 @@ fn mul_e8m15_random() {
 }
 
 #[test]
+fn mul_e8m10_random() {
+    prop_unit(e8m10::fp_mul_top, Format::E8M10, true);
+}
+
+#[test]
 fn add_b32_random() {
     prop_unit(b32::fp_add_top, Format::BINARY32, false);
 }
@@ -271,11 +278,18 @@ fn add_e8m15_random() {
 }
 
 #[test]
+fn add_e8m10_random() {
+    prop_unit(e8m10::fp_add_top, Format::E8M10, false);
+}
+
+#[test]
 fn specials_all_units() {
     specials_unit(b32::fp_mul_top, Format::BINARY32, true);
     specials_unit(e8m15::fp_mul_top, Format::REDUCED, true);
     specials_unit(b32::fp_add_top, Format::BINARY32, false);
     specials_unit(e8m15::fp_add_top, Format::REDUCED, false);
+    specials_unit(e8m10::fp_mul_top, Format::E8M10, true);
+    specials_unit(e8m10::fp_add_top, Format::E8M10, false);
 }
 
 /// A short traced run per unit (TowardPositive), for GTKWave: its results the golden

@@ -26,7 +26,7 @@ use collision_chip::harness::tri_io::{
 };
 use collision_chip::pose::Pose;
 use collision_chip::query::Chip;
-use collision_chip::rtl::{b32, e8m15};
+use collision_chip::rtl::{b32, e8m10, e8m15};
 use nalgebra::Point3;
 use proptest::prelude::*;
 use proptest::strategy::ValueTree;
@@ -86,6 +86,7 @@ macro_rules! impl_tcheck {
 
 impl_tcheck!(b32::TCheck);
 impl_tcheck!(e8m15::TCheck);
+impl_tcheck!(e8m10::TCheck);
 
 /// Runs `f` on a thread with a stack big enough for a T.CHECK (built on the stack).
 fn big_stack<T: Send + 'static>(f: impl FnOnce() -> T + Send + 'static) -> T {
@@ -146,6 +147,9 @@ fn mismatches(
         let ins: Vec<TCheckIn> = cases.iter().map(|c| c.0).collect();
         let outs = if f == Format::BINARY32 {
             let mut uut = b32::tcheck_top(rounding);
+            run(&mut uut, &ins)
+        } else if f == Format::E8M10 {
+            let mut uut = e8m10::tcheck_top(rounding);
             run(&mut uut, &ins)
         } else {
             let mut uut = e8m15::tcheck_top(rounding);
@@ -293,6 +297,19 @@ fn tcheck_generated_e8m15() {
         "generated e8m15",
         "T.CHECKs",
         mismatches(Format::REDUCED, Rounding::NearestEven, cases),
+    );
+}
+
+#[test]
+fn tcheck_catalogue_e8m10() {
+    assert_none(
+        "catalogue e8m10",
+        "T.CHECKs",
+        mismatches(
+            Format::E8M10,
+            Rounding::NearestEven,
+            catalogue_cases(Format::E8M10),
+        ),
     );
 }
 

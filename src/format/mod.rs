@@ -187,6 +187,11 @@ impl Format {
         exp_bits: 8,
         frac_bits: 15,
     };
+    /// The narrowest format the RTL builds: 8 exponent bits, 10 fraction bits (19-bit word).
+    pub const E8M10: Format = Format {
+        exp_bits: 8,
+        frac_bits: 10,
+    };
 
     /// Smallest / largest allowed exponent field width.
     pub const EXP_BITS_RANGE: std::ops::RangeInclusive<u32> = 2..=9;

@@ -47,19 +47,53 @@ fn verilog_of(v: &Text) -> String {
 /// A unit's Verilog for one rounding.
 type VerilogFn = fn(Rounding) -> String;
 
-/// The file-name tag of a format the RTL is built in (`b32`, `e8m15`).
-fn format_tag(fmt: Format) -> Option<String> {
-    [Format::BINARY32, Format::REDUCED]
-        .contains(&fmt)
-        .then(|| crate::chip::rtl::format_tag(fmt))
+/// One format's units as the RTL stamps them out (`fp_format!` in `crate::rtl`): their
+/// Verilog makers.
+struct FormatRtl {
+    fmt: Format,
+    fp_mul: VerilogFn,
+    fp_add: VerilogFn,
+    fp_scale: fn() -> String,
+    doptrf: VerilogFn,
+    tcheck: VerilogFn,
+    tri_unit: VerilogFn,
+    dop_unit: fn(usize, Rounding) -> Option<String>,
+    dop_unit_fold: fn(usize, usize, Rounding) -> Option<String>,
+}
+
+/// Every format the RTL is built in.
+const FORMATS: [FormatRtl; 3] = {
+    macro_rules! format_rtl {
+        ($m:ident) => {
+            FormatRtl {
+                fmt: crate::rtl::$m::FORMAT,
+                fp_mul: crate::rtl::$m::verilog_fp_mul,
+                fp_add: crate::rtl::$m::verilog_fp_add,
+                fp_scale: crate::rtl::$m::verilog_fp_scale,
+                doptrf: crate::rtl::$m::verilog_doptrf,
+                tcheck: crate::rtl::$m::verilog_tcheck,
+                tri_unit: crate::rtl::$m::verilog_tri_unit,
+                dop_unit: crate::rtl::$m::verilog_dop_unit,
+                dop_unit_fold: crate::rtl::$m::verilog_dop_unit_fold,
+            }
+        };
+    }
+    [format_rtl!(b32), format_rtl!(e8m15), format_rtl!(e8m10)]
+};
+
+/// The RTL's units in `fmt`, if it is built in it.
+fn rtl_of(fmt: Format) -> Option<&'static FormatRtl> {
+    FORMATS.iter().find(|f| f.fmt == fmt)
+}
+
+/// The file-name tag of a format (`b32`, `e8m15`).
+fn tag(fmt: Format) -> String {
+    crate::chip::rtl::format_tag(fmt)
 }
 
 /// The folded DOP unit's Verilog, where the RTL stamps out this k, interval and format.
 pub fn dop_unit_fold_verilog(ii: usize, k: usize, fmt: Format, r: Rounding) -> Option<String> {
-    match format_tag(fmt)?.as_str() {
-        "b32" => crate::rtl::b32::verilog_dop_unit_fold(k, ii, r),
-        _ => crate::rtl::e8m15::verilog_dop_unit_fold(k, ii, r),
-    }
+    (rtl_of(fmt)?.dop_unit_fold)(k, ii, r)
 }
 
 /// The folded DOP units exported (`rtl::*::DopUnit<k>Fold<ii>`, outward rounding): (ii, k,
@@ -72,10 +106,7 @@ const DOP_FOLDS: [(usize, usize, Format); 3] = [
 
 /// The DOP unit's Verilog, where the RTL builds this k and format.
 fn dop_unit_verilog(k: usize, fmt: Format, r: Rounding) -> Option<String> {
-    match format_tag(fmt)?.as_str() {
-        "b32" => crate::rtl::b32::verilog_dop_unit(k, r),
-        _ => crate::rtl::e8m15::verilog_dop_unit(k, r),
-    }
+    (rtl_of(fmt)?.dop_unit)(k, r)
 }
 
 /// The folded T.CHECKs and TRI_UNITs exported (binary32, nearest-even; `rtl::b32::TCheckFold`,
@@ -139,31 +170,18 @@ pub fn all() -> Vec<Unit> {
     units
 }
 
-/// The DOPTRF lanes: binary32 in both roundings, e8m15 rounding up.
+/// The DOPTRF lanes: binary32 in both roundings, the narrower formats rounding up.
 fn doptrf_units() -> Vec<Unit> {
     let mut units = vec![];
-    for (tag, fmt, r, v) in [
-        (
-            "b32",
-            Format::BINARY32,
-            Rounding::TowardPositive,
-            crate::rtl::b32::verilog_doptrf as VerilogFn,
-        ),
-        (
-            "b32",
-            Format::BINARY32,
-            Rounding::NearestEven,
-            crate::rtl::b32::verilog_doptrf,
-        ),
-        (
-            "e8m15",
-            Format::REDUCED,
-            Rounding::TowardPositive,
-            crate::rtl::e8m15::verilog_doptrf,
-        ),
+    for (fmt, r) in [
+        (Format::BINARY32, Rounding::TowardPositive),
+        (Format::BINARY32, Rounding::NearestEven),
+        (Format::REDUCED, Rounding::TowardPositive),
+        (Format::E8M10, Rounding::TowardPositive),
     ] {
-        let name = format!("doptrf_{tag}_{}", rounding_tag(r));
+        let name = format!("doptrf_{}_{}", tag(fmt), rounding_tag(r));
         let n2 = name.clone();
+        let v = rtl_of(fmt).expect("the RTL is built in this format").doptrf;
         units.push(Unit {
             name,
             latency: crate::chip::rtl::DOP_LATENCY as u32,
@@ -206,22 +224,13 @@ fn dop_units() -> Vec<Unit> {
     units
 }
 
-/// The FP multipliers and adders in both formats and roundings, then the scalers.
+/// The FP multipliers and adders in every format and both roundings, then the scalers.
 fn fp_units() -> Vec<Unit> {
     let mut units = vec![];
     for r in [Rounding::NearestEven, Rounding::TowardPositive] {
-        for (tag, fmt) in [("b32", Format::BINARY32), ("e8m15", Format::REDUCED)] {
-            let (vm, va): (VerilogFn, VerilogFn) = match tag {
-                "b32" => (
-                    crate::rtl::b32::verilog_fp_mul,
-                    crate::rtl::b32::verilog_fp_add,
-                ),
-                _ => (
-                    crate::rtl::e8m15::verilog_fp_mul,
-                    crate::rtl::e8m15::verilog_fp_add,
-                ),
-            };
-            let name = format!("fp_mul_{tag}_{}", rounding_tag(r));
+        for f in &FORMATS {
+            let (fmt, vm, va) = (f.fmt, f.fp_mul, f.fp_add);
+            let name = format!("fp_mul_{}_{}", tag(fmt), rounding_tag(r));
             let n2 = name.clone();
             units.push(Unit {
                 name,
@@ -229,7 +238,7 @@ fn fp_units() -> Vec<Unit> {
                 verilog: Box::new(move || vm(r)),
                 vectors: Box::new(move || fp_vectors(&n2, fmt, r, false, 4)),
             });
-            let name = format!("fp_add_{tag}_{}", rounding_tag(r));
+            let name = format!("fp_add_{}_{}", tag(fmt), rounding_tag(r));
             let n2 = name.clone();
             units.push(Unit {
                 name,
@@ -239,39 +248,27 @@ fn fp_units() -> Vec<Unit> {
             });
         }
     }
-    for (tag, fmt) in [("b32", Format::BINARY32), ("e8m15", Format::REDUCED)] {
-        let v: fn() -> String = match tag {
-            "b32" => crate::rtl::b32::verilog_fp_scale,
-            _ => crate::rtl::e8m15::verilog_fp_scale,
-        };
-        let name = format!("fp_scale_{tag}");
+    for f in &FORMATS {
+        let fmt = f.fmt;
+        let name = format!("fp_scale_{}", tag(fmt));
         let n2 = name.clone();
         units.push(Unit {
             name,
             latency: 4,
-            verilog: Box::new(v),
+            verilog: Box::new(f.fp_scale),
             vectors: Box::new(move || fp_scale_vectors(&n2, fmt)),
         });
     }
     units
 }
 
-/// T.CHECK and TRI_UNIT in both formats, rounding to nearest even.
+/// T.CHECK and TRI_UNIT in every format, rounding to nearest even.
 fn tri_units() -> Vec<Unit> {
     let mut units = vec![];
-    for (tag, fmt) in [("b32", Format::BINARY32), ("e8m15", Format::REDUCED)] {
-        let (vt, vu): (VerilogFn, VerilogFn) = match tag {
-            "b32" => (
-                crate::rtl::b32::verilog_tcheck,
-                crate::rtl::b32::verilog_tri_unit,
-            ),
-            _ => (
-                crate::rtl::e8m15::verilog_tcheck,
-                crate::rtl::e8m15::verilog_tri_unit,
-            ),
-        };
+    for f in &FORMATS {
+        let (fmt, vt, vu) = (f.fmt, f.tcheck, f.tri_unit);
         let r = Rounding::NearestEven;
-        let name = format!("tcheck_{tag}_{}", rounding_tag(r));
+        let name = format!("tcheck_{}_{}", tag(fmt), rounding_tag(r));
         let n2 = name.clone();
         let latency = crate::rtl::b32::TCheck::LATENCY;
         units.push(Unit {
@@ -630,12 +627,12 @@ pub fn write_vectors(dir: &Path) -> std::io::Result<Vec<String>> {
 }
 
 /// The units whose Yosys cells the area study counts (scripts/area-study.sh,
-/// docs/explanation/accuracy.md): the DOP unit for every k, format and DOP rounding the RTL builds (those
+/// docs/explanation/accuracy-cost.md): the DOP unit for every k, format and DOP rounding the RTL builds (those
 /// in rtl/ are the same Verilog; the others are the same macro at another k or rounding),
 /// TRI_UNIT per format, and the decode stage of stored DOPs (one plane; a chip has 2k).
 fn area_units() -> Vec<(String, Text)> {
     let mut units: Vec<(String, Text)> = vec![];
-    for fmt in [Format::BINARY32, Format::REDUCED] {
+    for fmt in FORMATS.map(|f| f.fmt) {
         for k in crate::chip::config::SUPPORTED_K {
             for r in [Rounding::TowardPositive, Rounding::NearestEven] {
                 units.push((
@@ -647,14 +644,10 @@ fn area_units() -> Vec<(String, Text)> {
             }
         }
     }
-    for fmt in [Format::BINARY32, Format::REDUCED] {
-        let v: VerilogFn = if fmt == Format::BINARY32 {
-            crate::rtl::b32::verilog_tri_unit
-        } else {
-            crate::rtl::e8m15::verilog_tri_unit
-        };
+    for f in &FORMATS {
+        let v = f.tri_unit;
         units.push((
-            tri_unit_name(fmt, Rounding::NearestEven, 1),
+            tri_unit_name(f.fmt, Rounding::NearestEven, 1),
             Box::new(move || v(Rounding::NearestEven)),
         ));
     }

@@ -7,11 +7,11 @@
 /// Arguments (all literal tokens, because stable Rust has no const-generic arithmetic):
 /// `W` word width, `WM1` = W-1, `E` exponent bits, `F` fraction bits, `P` = F+1,
 /// `P2` = P+2, `P3` = P+3, `P4` = P+4, `PP` = 2P, and the normaliser offsets for
-/// widths P and P3 (`N-16`, `N-8`, `N-4`, `N-2`, `N-1`).
+/// widths P and P3 (`N-16`, `N-8`, `N-4`, `N-2`, `N-1`; without `N-16` below 16 bits).
 macro_rules! fp_common {
     ($W:tt, $WM1:tt, $E:tt, $F:tt, $P:tt, $P2:tt, $P3:tt, $P4:tt, $PP:tt,
-     norm_p($p16:tt, $p8:tt, $p4:tt, $p2:tt, $p1:tt),
-     norm_p3($q16:tt, $q8:tt, $q4:tt, $q2:tt, $q1:tt)) => {
+     norm_p($($np:tt),+),
+     norm_p3($($nq:tt),+)) => {
         use rust_hdl::prelude::*;
 
         /// Unpacks one operand (combinational): sign, effective biased exponent
@@ -54,8 +54,8 @@ macro_rules! fp_common {
             }
         }
 
-        $crate::rtl::common::fp_common!(@norm NormP, $P, $p16, $p8, $p4, $p2, $p1);
-        $crate::rtl::common::fp_common!(@norm NormP3, $P3, $q16, $q8, $q4, $q2, $q1);
+        $crate::rtl::common::fp_common!(@norm NormP, $P, $($np),+);
+        $crate::rtl::common::fp_common!(@norm NormP3, $P3, $($nq),+);
 
         /// Significand multiplier (combinational, `P x P -> 2P` bits), reduced to what
         /// rounding needs: the top `P+2` product bits and the OR of the rest.
@@ -237,6 +237,56 @@ macro_rules! fp_common {
                 }
                 self.lz.next = bits::<5>(0)
                     .replace_bit(4, self.z16.val())
+                    .replace_bit(3, self.z8.val())
+                    .replace_bit(2, self.z4.val())
+                    .replace_bit(1, self.z2.val())
+                    .replace_bit(0, self.z1.val());
+            }
+        }
+    };
+
+    (@norm $name:ident, $n:tt, $o8:tt, $o4:tt, $o2:tt, $o1:tt) => {
+        /// Leading-zero normaliser (combinational) of fewer than 16 bits: `y = x << lz`,
+        /// `lz` = leading zeros of `x` (four shift steps 8/4/2/1, `lz` bit 4 zero; `lz` is
+        /// meaningless for `x = 0`).
+        #[derive(LogicBlock, Default)]
+        pub struct $name {
+            pub x: Signal<In, Bits<$n>>,
+            pub y: Signal<Out, Bits<$n>>,
+            pub lz: Signal<Out, Bits<5>>,
+            z8: Signal<Local, Bit>,
+            z4: Signal<Local, Bit>,
+            z2: Signal<Local, Bit>,
+            z1: Signal<Local, Bit>,
+            x8: Signal<Local, Bits<$n>>,
+            x4: Signal<Local, Bits<$n>>,
+            x2: Signal<Local, Bits<$n>>,
+        }
+
+        impl Logic for $name {
+            #[hdl_gen]
+            fn update(&mut self) {
+                self.z8.next = self.x.val().get_bits::<8>($o8) == 0;
+                self.x8.next = self.x.val();
+                if self.z8.val() {
+                    self.x8.next = self.x.val() << 8;
+                }
+                self.z4.next = self.x8.val().get_bits::<4>($o4) == 0;
+                self.x4.next = self.x8.val();
+                if self.z4.val() {
+                    self.x4.next = self.x8.val() << 4;
+                }
+                self.z2.next = self.x4.val().get_bits::<2>($o2) == 0;
+                self.x2.next = self.x4.val();
+                if self.z2.val() {
+                    self.x2.next = self.x4.val() << 2;
+                }
+                self.z1.next = !self.x2.val().get_bit($o1);
+                self.y.next = self.x2.val();
+                if self.z1.val() {
+                    self.y.next = self.x2.val() << 1;
+                }
+                self.lz.next = bits::<5>(0)
                     .replace_bit(3, self.z8.val())
                     .replace_bit(2, self.z4.val())
                     .replace_bit(1, self.z2.val())

@@ -10,6 +10,8 @@
 //! | [`b32`] | `binary32` (e8m23, [`Format::BINARY32`](crate::format::Format::BINARY32)) | [`b32::FpMul`] (latency 4), [`b32::FpAdd`] (latency 3), [`b32::FpScale`] (by a constant, latency 4), [`b32::Doptrf`] (latency 15), [`b32::KlmSel`], [`b32::DopUnit6`] ... [`b32::DopUnit26`] (k = 6, 14, 18, 24, 26; latency 15), the folded [`b32::DopUnit6Fold2`] ... [`b32::DopUnit24Fold24`] (a pair every ii clocks; latency 14 + ii) |
 //! | [`e8m15`] | e8m15 ([`Format::REDUCED`](crate::format::Format::REDUCED)) | the same |
 //! | [`e8m15_b32`] | e8m15 DOP unit, binary32 TRI_UNIT | the k = 24 chip only |
+//! | [`e8m10`] | e8m10 ([`Format::E8M10`](crate::format::Format::E8M10)) | the same, and the k = 24 chip |
+//! | [`e8m15_k24`] | e8m15 DOP unit and TRI_UNIT | the k = 24 chip only |
 //! | [`e8m15_fold16`] | e8m15, TRI_UNIT folded (a pair every 16 clocks) | the k = 6 chip only |
 //! | [`e8m15_dop6_tri32`] | e8m15, the DOP unit folded (a pair every 6 clocks) and TRI_UNIT (every 32) | the k = 6 chip only |
 //!
@@ -217,6 +219,63 @@ pub mod e8m15 {
     crate::rtl::tri_unit_fold::tri_unit_fold!(24);
 }
 
+/// Units for e8m10 ([`Format::E8M10`](crate::format::Format::E8M10)), the narrowest format
+/// of the study: significands of 11 bits, so the normalisers shift in four steps.
+pub mod e8m10 {
+    fp_format!(
+        Format::E8M10,
+        19,
+        18,
+        8,
+        10,
+        11,
+        13,
+        14,
+        15,
+        22,
+        24,
+        norm_p(3, 7, 9, 10),
+        norm_p3(6, 10, 12, 13)
+    );
+    // the papers' chip (k = 24) in e8m10: node word 1 + 24 * 19 + 64 bits (wider than a
+    // triangle word, 23 * 19 + 2)
+    crate::rtl::chip::chip!(
+        24,
+        DopUnit24 = DopUnit24::new,
+        TriUnit = TriUnit::new,
+        19,
+        19,
+        19,
+        521,
+        439,
+        521,
+        521,
+        1
+    );
+}
+
+/// The papers' chip (k = 24) in e8m15 throughout (format `reduced`): e8m15's k = 24 DOP unit
+/// and TRI_UNIT. A node word is 641 bits, a triangle word 554 (25% less than binary32's).
+pub mod e8m15_k24 {
+    use super::e8m15::{DopUnit24, TriUnit};
+    use crate::format::Rounding;
+    use rust_hdl::prelude::*;
+    // node word 1 + 24 * 24 + 64 bits (wider than a triangle word, 23 * 24 + 2)
+    crate::rtl::chip::chip!(
+        24,
+        DopUnit24 = DopUnit24::new,
+        TriUnit = TriUnit::new,
+        24,
+        24,
+        24,
+        641,
+        554,
+        641,
+        641,
+        1
+    );
+}
+
 /// The papers' chip with the DOP datapath in e8m15 and T.CHECK in binary32 (format
 /// `e8m15/binary32`): e8m15's k = 24 DOP unit, binary32's TRI_UNIT. A node word is 641 bits
 /// instead of 833 (23% less node traffic); the DOP test stays conservative (outward
@@ -330,6 +389,8 @@ macro_rules! check_widths {
 check_widths!(e8m15, K6E8m15);
 check_widths!(b32, K24B32);
 check_widths!(e8m15_b32, K24E8m15B32);
+check_widths!(e8m15_k24, K24E8m15);
+check_widths!(e8m10, K24E8m10);
 check_widths!(e8m15_fold16, K6E8m15Fold16);
 check_widths!(e8m15_dop6_tri32, K6E8m15Dop6Tri32);
 check_widths!(b32_q4, K24B32Q4);

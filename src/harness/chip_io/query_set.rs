@@ -132,6 +132,24 @@ pub fn queries() -> Vec<ChipQuery> {
         k24_records(&p),
         k24_coded(&p),
         k24r(&p),
+        k24_narrow(
+            &p,
+            ChipKind::K24E8m15,
+            [
+                "k24e_apart_lifo_first",
+                "k24e_patch_fifo_all",
+                "k24e_big_sphere_lifo_cache",
+            ],
+        ),
+        k24_narrow(
+            &p,
+            ChipKind::K24E8m10,
+            [
+                "k24m10_apart_lifo_first",
+                "k24m10_patch_fifo_all",
+                "k24m10_big_sphere_lifo_cache",
+            ],
+        ),
         fold16(&p),
         dop6tri32(&p),
     ]
@@ -738,6 +756,55 @@ fn k24r(p: &Poses) -> Vec<ChipQuery> {
                 Lifo,
                 Mode::First,
                 2,
+                1,
+                1,
+            )
+        },
+    ]
+}
+
+/// The papers' chip in one narrow format throughout (`chip_e8m15_k24`, k24e: format
+/// reduced; `chip_e8m10_k24`, k24m10: e8m10), queries `names`: the root test (Icarus), a
+/// bunny patch at full speed and a whole query through the 128-line triangle cache
+/// (Verilator; its units, stamped out by one macro per format, are each checked in rust-hdl
+/// against the golden model, and the e8m15 ones run in lockstep in `chip_e8m15_b32_k24` and
+/// `chip_e8m15_k6`).
+fn k24_narrow(p: &Poses, chip: ChipKind, names: [&'static str; 3]) -> Vec<ChipQuery> {
+    vec![
+        ChipQuery {
+            chip,
+            ..q(
+                names[0],
+                "sphere:12",
+                Pose::new(10.0, 20.0, 30.0, 3.0, 0.1, 0.0),
+                Lifo,
+                Mode::First,
+                1,
+                1,
+            )
+        },
+        ChipQuery {
+            chip,
+            prefetch: 3,
+            outstanding: 4,
+            issue_spacing: 1,
+            credit: 24,
+            ..q(names[1], "bunny-patch:4", p.patch, Fifo, Mode::All, 8, 1)
+        },
+        ChipQuery {
+            chip,
+            prefetch: 14,
+            outstanding: 16,
+            issue_spacing: 1,
+            credit: 48,
+            tri_cache: 128,
+            ..big(
+                names[2],
+                "sphere:320",
+                p.big_spheres,
+                Lifo,
+                Mode::All,
+                8,
                 1,
                 1,
             )
