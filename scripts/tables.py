@@ -10,7 +10,7 @@ hand. Python's standard library only.
 
 Data: docs/figures/timing.csv, timing_config.csv (scripts/timing-study.sh),
 timing_ecp5.csv (scripts/timing-ecp5.sh, scripts/fpga.sh), area_cells.csv
-(scripts/area-study.sh), accuracy_cycles_uncertain.csv (cchip accuracy --plot),
+(scripts/area-study.sh), accuracy_cycles_uncertain.csv and accuracy_cycles_area.csv (cchip accuracy --plot),
 stored_dops_paper.json and stored_dops_osu018.json (cchip accuracy --dop-bits ... --json) and bench.jsonl
 (the benches' rows: `cargo bench` writes target/bench/<bench>.jsonl, one JSON line per row
 with its date, CPU and commit; a run is published by appending its lines to bench.jsonl).
@@ -101,10 +101,10 @@ def ecp5():
 
 
 def area():
-    cols = ["b32_rne", "b32_ru", "e8m15_rne", "e8m15_ru"]
+    cols = ["b32_rne", "b32_ru", "e8m15_rne", "e8m15_ru", "e8m10_rne", "e8m10_ru"]
     pivot = OrderedDict()
     for r in rows("area_cells.csv"):
-        m = re.fullmatch(r"(\w+?)_(b32|e8m15)_(rne|ru)", r["unit"])
+        m = re.fullmatch(r"(\w+?)_(b32|e8m15|e8m10)_(rne|ru)", r["unit"])
         if not m:
             sys.exit(f"docs/figures/area_cells.csv: unit {r['unit']!r} is not <block>_<format>_<rounding>")
         pivot.setdefault(m.group(1), {})[f"{m.group(2)}_{m.group(3)}"] = n(r["cells"])
@@ -113,7 +113,7 @@ def area():
         nums = [int(x) for x in re.findall(r"\d+", block)]
         return (block.split("_")[0], block.count("fold"), nums[::-1])
     body = [[f"`{b}`"] + [pivot[b].get(c, "") for c in cols] for b in sorted(pivot, key=key)]
-    return table(["block", "binary32 rne", "binary32 ru", "e8m15 rne", "e8m15 ru"], body) + \
+    return table(["block", "binary32 rne", "binary32 ru", "e8m15 rne", "e8m15 ru", "e8m10 rne", "e8m10 ru"], body) + \
         "\n\n" + source("Yosys `synth` generic cells, hierarchical; `docs/figures/area_cells.csv`, "
                         "measured by `scripts/area-study.sh`")
 
@@ -171,6 +171,8 @@ def headline():
     e = {r["unit"]: r for r in rows("timing_ecp5.csv")}
     unc = {(r["memory"], r["k"], r["format"], r["dop_rounding"]): float(r["uncertain_share"])
            for r in rows("accuracy_cycles_uncertain.csv")}
+    e2e = {(r["memory"], r["k"], r["format"], r["dop_rounding"]): float(r["end_to_end_us"])
+           for r in rows("accuracy_cycles_uncertain.csv")}
     sims = runs(bench("chip_sim"))
     per_query = {}
     for run in sims.values():
@@ -186,6 +188,13 @@ def headline():
     body = [
         ["clock of the papers' chip (k = 24, binary32), OSU 0.18 um, pre-layout",
          f"{chip['min_period_ns']} ns ({chip['fmax_mhz']} MHz)", "`scripts/timing-study.sh`", "`timing.csv`"],
+        ["clock of the k = 24 chip by format: binary32 / e8m15 / e8m10, OSU 0.18 um, pre-layout",
+         " / ".join(f"{t[u]['min_period_ns']} ns" for u in ("chip_b32_k24", "chip_e8m15_k24", "chip_e8m10_k24")),
+         "`scripts/timing-study.sh`", "`timing.csv`"],
+        ["time per query end to end (k = 24, outward DOPs, DATE'05's DDR2, mean of three meshes): "
+         "binary32 / e8m15 / e8m10",
+         " / ".join(f"{e2e[('date05', '24', f, 'outward')]:.1f} us" for f in ("binary32", "e8m15", "e8m10")),
+         "`cchip accuracy --k 6,14,18,24,26 --plot docs/figures`", "`accuracy_cycles_uncertain.csv`"],
         ["clock of the small chip (k = 6, e8m15), OSU 0.18 um, pre-layout",
          f"{fold['min_period_ns']} ns ({fold['fmax_mhz']} MHz)", "`scripts/timing-study.sh`", "`timing.csv`"],
         ["the k = 6 chip with both units folded, placed and routed on an ECP5 LFE5U-85F",
@@ -240,7 +249,23 @@ def stored_dops():
                "`docs/figures/stored_dops_paper.json`, `stored_dops_osu018.json`")
 
 
-TABLES = {"timing": timing, "timing-config": timing_config, "ecp5": ecp5, "area": area,
+def accuracy_sweep():
+    """The k sweep on the `rtl` memory: each configuration's share, clocks, traffic, period and
+    cells, and whether it is on each plot's Pareto front."""
+    yes = lambda v: "yes" if v == "true" else ""
+    pct = lambda v: f"{100 * float(v):.2f}%"
+    body = [[r["k"], r["format"], r["dop_rounding"], pct(r["uncertain_share"]),
+             f"{float(r['cycles_per_query']):.0f}", f"{float(r['memory_kib_per_query']):.1f}", r["misses"],
+             f"{r['period_ns']} {r['period_source']}", n(r["cells"]), yes(r["pareto"]), yes(r["pareto_area"])]
+            for r in rows("accuracy_cycles_area.csv") if r["memory"] == "rtl"]
+    return table(["k", "format (DOP/T.CHECK)", "DOP rounding", "uncertain", "cycles / query",
+                  "memory KiB / query", "misses", "period ns", "cells: DOP unit + TRI_UNIT",
+                  "front: uncertain", "front: cells"], body) + "\n\n" + \
+        source("`cchip accuracy --k 6,14,18,24,26 --area docs/figures/area_cells.csv --plot docs/figures`, "
+               "the `rtl` memory's rows of `docs/figures/accuracy_cycles_area.csv`")
+
+
+TABLES = {"accuracy-sweep": accuracy_sweep, "timing": timing, "timing-config": timing_config, "ecp5": ecp5, "area": area,
           "chip-sim": chip_sim, "golden-vs-parry": golden_vs_parry, "headline": headline,
           "stored-dops": stored_dops}
 
