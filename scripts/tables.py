@@ -11,6 +11,7 @@ hand. Python's standard library only.
 Data: docs/figures/timing.csv, timing_config.csv (scripts/timing-study.sh),
 timing_ecp5.csv (scripts/timing-ecp5.sh, scripts/fpga.sh), area_cells.csv
 (scripts/area-study.sh), accuracy_cycles_uncertain.csv and accuracy_cycles_area.csv (cchip accuracy --plot),
+accuracy_time.json (cchip accuracy --json),
 stored_dops_paper.json and stored_dops_osu018.json (cchip accuracy --dop-bits ... --json) and bench.jsonl
 (the benches' rows: `cargo bench` writes target/bench/<bench>.jsonl, one JSON line per row
 with its date, CPU and commit; a run is published by appending its lines to bench.jsonl).
@@ -265,7 +266,25 @@ def accuracy_sweep():
                "the `rtl` memory's rows of `docs/figures/accuracy_cycles_area.csv`")
 
 
-TABLES = {"accuracy-sweep": accuracy_sweep, "timing": timing, "timing-config": timing_config, "ecp5": ecp5, "area": area,
+def accuracy_time():
+    """The default study in time (k = 24, outward DOP rounding): per mesh and memory system,
+    each format's chip, host and end-to-end microseconds per query."""
+    with open(FIG / "accuracy_time.json") as f:
+        rs = [r for r in json.load(f) if r["dop_rounding"] == "outward"]
+    formats = list(OrderedDict.fromkeys(r["format"] for r in rs))
+    cells = OrderedDict()
+    for r in rs:
+        q = r["queries"]
+        chip = r["cycles"] / q * r["period_ns"] / 1000
+        host = (r["host"]["setup_us"] + r["host"]["settle_us"]) / q
+        cells.setdefault((r["mesh"], r["memory"]), {})[r["format"]] = f"{chip:.1f} / {host:.1f} / {chip + host:.1f}"
+    body = [[mesh, mem] + [c[f] for f in formats] for (mesh, mem), c in cells.items()]
+    return table(["mesh", "memory"] + formats, body) + "\n\n" + \
+        source("`cchip accuracy --json`, the default study, its outward rows; us per query: chip / host / "
+               "end to end; `docs/figures/accuracy_time.json` (host time measured on a 2-core machine: noisy)")
+
+
+TABLES = {"accuracy-sweep": accuracy_sweep, "accuracy-time": accuracy_time, "timing": timing, "timing-config": timing_config, "ecp5": ecp5, "area": area,
           "chip-sim": chip_sim, "golden-vs-parry": golden_vs_parry, "headline": headline,
           "stored-dops": stored_dops}
 
