@@ -284,7 +284,19 @@ def accuracy_time():
                "end to end; `docs/figures/accuracy_time.json` (host time measured on a 2-core machine: noisy)")
 
 
-TABLES = {"accuracy-sweep": accuracy_sweep, "accuracy-time": accuracy_time, "timing": timing, "timing-config": timing_config, "ecp5": ecp5, "area": area,
+def dop_unit_cells():
+    """The unfolded DOP unit's cells by k, format and DOP rounding (the area study's rows)."""
+    cells = {r["unit"]: r["cells"] for r in rows("area_cells.csv")}
+    cols = [(f, r) for f in ("b32", "e8m15", "e8m10") for r in ("ru", "rne")]
+    ks = sorted({int(m.group(1)) for u in cells if (m := re.fullmatch(r"dop_unit_k(\d+)_b32_ru", u))})
+    body = [[k] + [n(cells[f"dop_unit_k{k}_{f}_{r}"]) for f, r in cols] for k in ks]
+    name = {"b32": "binary32", "ru": "outward", "rne": "nearest-even"}
+    return table(["k"] + [f"{name.get(f, f)} {name[r]}" for f, r in cols], body) + "\n\n" + \
+        source("Yosys `synth` generic cells, hierarchical; `docs/figures/area_cells.csv`, "
+               "measured by `scripts/area-study.sh`")
+
+
+TABLES = {"accuracy-sweep": accuracy_sweep, "dop-unit-cells": dop_unit_cells, "accuracy-time": accuracy_time, "timing": timing, "timing-config": timing_config, "ecp5": ecp5, "area": area,
           "chip-sim": chip_sim, "golden-vs-parry": golden_vs_parry, "headline": headline,
           "stored-dops": stored_dops}
 
