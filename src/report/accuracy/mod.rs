@@ -712,7 +712,8 @@ impl Area {
 
     /// Cells of the units a configuration changes ([`timing::datapath_units`]: its DOP unit,
     /// TRI_UNIT, and the decode stages of stored DOPs). `None` where the file has no row for
-    /// one of them (e8m10, or a stored precision whose decode stage the RTL does not build).
+    /// one of them (a format the RTL is not built in, a fold the area study has not synthesized, or a
+    /// stored precision whose decode stage the RTL does not build).
     pub fn of(&self, cfg: &ChipConfig, folds: Folds) -> Option<u64> {
         timing::datapath_units(cfg, folds)
             .iter()
