@@ -4,7 +4,7 @@
 //! and fails if they differ from the checked-in files, then runs every unit against its
 //! vectors under Icarus Verilog and Verilator (`scripts/check-rtl.sh`).
 
-use crate::chip::rtl::{dop_unit_name, rounding_tag, tri_unit_name, ChipKind};
+use crate::chip::rtl::{dop_unit_name, format_tag, rounding_tag, tri_unit_name, ChipKind};
 use crate::format::{Format, Rounding};
 use rand::{Rng, SeedableRng};
 use std::fmt::Write;
@@ -84,11 +84,6 @@ const FORMATS: [FormatRtl; 3] = {
 /// The RTL's units in `fmt`, if it is built in it.
 fn rtl_of(fmt: Format) -> Option<&'static FormatRtl> {
     FORMATS.iter().find(|f| f.fmt == fmt)
-}
-
-/// The file-name tag of a format (`b32`, `e8m15`).
-fn tag(fmt: Format) -> String {
-    crate::chip::rtl::format_tag(fmt)
 }
 
 /// The folded DOP unit's Verilog, where the RTL stamps out this k, interval and format.
@@ -179,7 +174,7 @@ fn doptrf_units() -> Vec<Unit> {
         (Format::REDUCED, Rounding::TowardPositive),
         (Format::E8M10, Rounding::TowardPositive),
     ] {
-        let name = format!("doptrf_{}_{}", tag(fmt), rounding_tag(r));
+        let name = format!("doptrf_{}_{}", format_tag(fmt), rounding_tag(r));
         let n2 = name.clone();
         let v = rtl_of(fmt).expect("the RTL is built in this format").doptrf;
         units.push(Unit {
@@ -230,7 +225,7 @@ fn fp_units() -> Vec<Unit> {
     for r in [Rounding::NearestEven, Rounding::TowardPositive] {
         for f in &FORMATS {
             let (fmt, vm, va) = (f.fmt, f.fp_mul, f.fp_add);
-            let name = format!("fp_mul_{}_{}", tag(fmt), rounding_tag(r));
+            let name = format!("fp_mul_{}_{}", format_tag(fmt), rounding_tag(r));
             let n2 = name.clone();
             units.push(Unit {
                 name,
@@ -238,7 +233,7 @@ fn fp_units() -> Vec<Unit> {
                 verilog: Box::new(move || vm(r)),
                 vectors: Box::new(move || fp_vectors(&n2, fmt, r, false, 4)),
             });
-            let name = format!("fp_add_{}_{}", tag(fmt), rounding_tag(r));
+            let name = format!("fp_add_{}_{}", format_tag(fmt), rounding_tag(r));
             let n2 = name.clone();
             units.push(Unit {
                 name,
@@ -250,7 +245,7 @@ fn fp_units() -> Vec<Unit> {
     }
     for f in &FORMATS {
         let fmt = f.fmt;
-        let name = format!("fp_scale_{}", tag(fmt));
+        let name = format!("fp_scale_{}", format_tag(fmt));
         let n2 = name.clone();
         units.push(Unit {
             name,
@@ -268,7 +263,7 @@ fn tri_units() -> Vec<Unit> {
     for f in &FORMATS {
         let (fmt, vt, vu) = (f.fmt, f.tcheck, f.tri_unit);
         let r = Rounding::NearestEven;
-        let name = format!("tcheck_{}_{}", tag(fmt), rounding_tag(r));
+        let name = format!("tcheck_{}_{}", format_tag(fmt), rounding_tag(r));
         let n2 = name.clone();
         let latency = crate::rtl::b32::TCheck::LATENCY;
         units.push(Unit {

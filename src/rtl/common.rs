@@ -245,6 +245,9 @@ macro_rules! fp_common {
         }
     };
 
+    // The arm above without its 16 step. One arm cannot serve both: `#[hdl_gen]` reads the
+    // body before any macro inside it expands, and stable `macro_rules!` cannot drop the 16
+    // step's fields and statements without changing the other formats' Verilog.
     (@norm $name:ident, $n:tt, $o8:tt, $o4:tt, $o2:tt, $o1:tt) => {
         /// Leading-zero normaliser (combinational) of fewer than 16 bits: `y = x << lz`,
         /// `lz` = leading zeros of `x` (four shift steps 8/4/2/1, `lz` bit 4 zero; `lz` is

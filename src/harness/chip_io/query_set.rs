@@ -132,7 +132,7 @@ pub fn queries() -> Vec<ChipQuery> {
         k24_records(&p),
         k24_coded(&p),
         k24r(&p),
-        k24_narrow(
+        k24_three(
             &p,
             ChipKind::K24E8m15,
             [
@@ -141,7 +141,7 @@ pub fn queries() -> Vec<ChipQuery> {
                 "k24e_big_sphere_lifo_cache",
             ],
         ),
-        k24_narrow(
+        k24_three(
             &p,
             ChipKind::K24E8m10,
             [
@@ -679,41 +679,24 @@ fn k24_records(p: &Poses) -> Vec<ChipQuery> {
     ]
 }
 
-/// The papers' chip with an e8m15 DOP unit (k24r: format e8m15/binary32): the root test
-/// (Icarus), a few leaf pairs (rust-hdl), whole queries at full speed (the second through
-/// the 128-line triangle cache) and at the reset point.
+/// The papers' chip with an e8m15 DOP unit (k24r: format e8m15/binary32): [`k24_three`]'s
+/// queries (its patch in rust-hdl too), a whole query at full speed and one at the reset
+/// point.
 fn k24r(p: &Poses) -> Vec<ChipQuery> {
-    vec![
+    let chip = ChipKind::K24E8m15B32;
+    let mut v = k24_three(
+        p,
+        chip,
+        [
+            "k24r_apart_lifo_first",
+            "k24r_patch_fifo_all",
+            "k24r_big_sphere_lifo_cache",
+        ],
+    );
+    v.insert(
+        2,
         ChipQuery {
-            chip: ChipKind::K24E8m15B32,
-            ..q(
-                "k24r_apart_lifo_first",
-                "sphere:12",
-                Pose::new(10.0, 20.0, 30.0, 3.0, 0.1, 0.0),
-                Lifo,
-                Mode::First,
-                1,
-                1,
-            )
-        },
-        ChipQuery {
-            chip: ChipKind::K24E8m15B32,
-            prefetch: 3,
-            outstanding: 4,
-            issue_spacing: 1,
-            credit: 24,
-            ..q(
-                "k24r_patch_fifo_all",
-                "bunny-patch:4",
-                p.patch,
-                Fifo,
-                Mode::All,
-                8,
-                1,
-            )
-        },
-        ChipQuery {
-            chip: ChipKind::K24E8m15B32,
+            chip,
             prefetch: 14,
             outstanding: 16,
             issue_spacing: 1,
@@ -729,47 +712,30 @@ fn k24r(p: &Poses) -> Vec<ChipQuery> {
                 1,
             )
         },
-        ChipQuery {
-            chip: ChipKind::K24E8m15B32,
-            prefetch: 14,
-            outstanding: 16,
-            issue_spacing: 1,
-            credit: 48,
-            tri_cache: 128,
-            ..big(
-                "k24r_big_sphere_lifo_cache",
-                "sphere:320",
-                p.big_spheres,
-                Lifo,
-                Mode::All,
-                8,
-                1,
-                1,
-            )
-        },
-        ChipQuery {
-            chip: ChipKind::K24E8m15B32,
-            ..big(
-                "k24r_big_patch_lifo_first",
-                "bunny-patch:300",
-                p.patch,
-                Lifo,
-                Mode::First,
-                2,
-                1,
-                1,
-            )
-        },
-    ]
+    );
+    v.push(ChipQuery {
+        chip,
+        ..big(
+            "k24r_big_patch_lifo_first",
+            "bunny-patch:300",
+            p.patch,
+            Lifo,
+            Mode::First,
+            2,
+            1,
+            1,
+        )
+    });
+    v
 }
 
-/// The papers' chip in one narrow format throughout (`chip_e8m15_k24`, k24e: format
-/// reduced; `chip_e8m10_k24`, k24m10: e8m10), queries `names`: the root test (Icarus), a
-/// bunny patch at full speed and a whole query through the 128-line triangle cache
-/// (Verilator; its units, stamped out by one macro per format, are each checked in rust-hdl
-/// against the golden model, and the e8m15 ones run in lockstep in `chip_e8m15_b32_k24` and
+/// Three queries `names` of a k = 24 chip: the root test (Icarus), a bunny patch at full
+/// speed and a whole query through the 128-line triangle cache (Verilator). The whole set of
+/// the chips in one narrow format throughout (`chip_e8m15_k24`, k24e; `chip_e8m10_k24`,
+/// k24m10), whose units, one macro per format, are each checked in rust-hdl against the
+/// golden model (the e8m15 ones also in lockstep in `chip_e8m15_b32_k24` and
 /// `chip_e8m15_k6`).
-fn k24_narrow(p: &Poses, chip: ChipKind, names: [&'static str; 3]) -> Vec<ChipQuery> {
+fn k24_three(p: &Poses, chip: ChipKind, names: [&'static str; 3]) -> Vec<ChipQuery> {
     vec![
         ChipQuery {
             chip,
