@@ -343,18 +343,22 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
     wire  result$give;
     wire  result$sure_hit;
     wire  [8:0] result$open;
-    reg  [31:0] cnt_dop$d;
-    wire  [31:0] cnt_dop$q;
     reg  cnt_dop$clock;
-    reg  [31:0] cnt_tri$d;
-    wire  [31:0] cnt_tri$q;
+    reg  cnt_dop$clear;
+    reg  cnt_dop$inc;
+    wire  [31:0] cnt_dop$count;
     reg  cnt_tri$clock;
-    reg  [31:0] cnt_nf$d;
-    wire  [31:0] cnt_nf$q;
+    reg  cnt_tri$clear;
+    reg  cnt_tri$inc;
+    wire  [31:0] cnt_tri$count;
     reg  cnt_nf$clock;
-    reg  [31:0] cnt_tf$d;
-    wire  [31:0] cnt_tf$q;
+    reg  cnt_nf$clear;
+    reg  cnt_nf$inc;
+    wire  [31:0] cnt_nf$count;
     reg  cnt_tf$clock;
+    reg  cnt_tf$clear;
+    reg  cnt_tf$inc;
+    wire  [31:0] cnt_tf$count;
     
     // Local signals
     reg  [15:0] id_mask;
@@ -374,17 +378,17 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
     reg  halt_idle;
     
     // Sub module instances
-    top$d_cntr$ent_second mode_lifo(
+    top$cnt_dop$pending mode_lifo(
         .d(mode_lifo$d),
         .q(mode_lifo$q),
         .clock(mode_lifo$clock)
     );
-    top$d_cntr$ent_second mode_first(
+    top$cnt_dop$pending mode_first(
         .d(mode_first$d),
         .q(mode_first$q),
         .clock(mode_first$clock)
     );
-    top$d_cntr$ent_second mode_rec(
+    top$cnt_dop$pending mode_rec(
         .d(mode_rec$d),
         .q(mode_rec$q),
         .clock(mode_rec$clock)
@@ -394,7 +398,7 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         .q(mode_slot$q),
         .clock(mode_slot$clock)
     );
-    top$cnt_dop root(
+    top$cnt_dop$total root(
         .d(root$d),
         .q(root$q),
         .clock(root$clock)
@@ -424,22 +428,22 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         .q(map$q),
         .clock(map$clock)
     );
-    top$d_cntr$ent_second run(
+    top$cnt_dop$pending run(
         .d(run$d),
         .q(run$q),
         .clock(run$clock)
     );
-    top$d_cntr$ent_second done_r(
+    top$cnt_dop$pending done_r(
         .d(done_r$d),
         .q(done_r$q),
         .clock(done_r$clock)
     );
-    top$d_cntr$ent_second push_root(
+    top$cnt_dop$pending push_root(
         .d(push_root$d),
         .q(push_root$q),
         .clock(push_root$clock)
     );
-    top$d_cntr$ent_second stop(
+    top$cnt_dop$pending stop(
         .d(stop$d),
         .q(stop$q),
         .clock(stop$clock)
@@ -454,7 +458,7 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         .q(port_out$q),
         .clock(port_out$clock)
     );
-    top$d_cntr$ent_second port_one(
+    top$cnt_dop$pending port_one(
         .d(port_one$d),
         .q(port_one$q),
         .clock(port_one$clock)
@@ -629,7 +633,7 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         .q(leaf_count$q),
         .clock(leaf_count$clock)
     );
-    top$d_cntr$ent_second leaf_valid(
+    top$cnt_dop$pending leaf_valid(
         .d(leaf_valid$d),
         .q(leaf_valid$q),
         .clock(leaf_valid$clock)
@@ -656,7 +660,7 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         .hit(tri_cache$hit),
         .word(tri_cache$word)
     );
-    top$d_cntr$ent_second tb_ok(
+    top$cnt_dop$pending tb_ok(
         .d(tb_ok$d),
         .q(tb_ok$q),
         .clock(tb_ok$clock)
@@ -752,24 +756,28 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         .open(result$open)
     );
     top$cnt_dop cnt_dop(
-        .d(cnt_dop$d),
-        .q(cnt_dop$q),
-        .clock(cnt_dop$clock)
+        .clock(cnt_dop$clock),
+        .clear(cnt_dop$clear),
+        .inc(cnt_dop$inc),
+        .count(cnt_dop$count)
     );
     top$cnt_dop cnt_tri(
-        .d(cnt_tri$d),
-        .q(cnt_tri$q),
-        .clock(cnt_tri$clock)
+        .clock(cnt_tri$clock),
+        .clear(cnt_tri$clear),
+        .inc(cnt_tri$inc),
+        .count(cnt_tri$count)
     );
     top$cnt_dop cnt_nf(
-        .d(cnt_nf$d),
-        .q(cnt_nf$q),
-        .clock(cnt_nf$clock)
+        .clock(cnt_nf$clock),
+        .clear(cnt_nf$clear),
+        .inc(cnt_nf$inc),
+        .count(cnt_nf$count)
     );
     top$cnt_dop cnt_tf(
-        .d(cnt_tf$d),
-        .q(cnt_tf$q),
-        .clock(cnt_tf$clock)
+        .clock(cnt_tf$clock),
+        .clear(cnt_tf$clear),
+        .inc(cnt_tf$inc),
+        .count(cnt_tf$count)
     );
     
     // Update code
@@ -824,14 +832,6 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         tb_ok$d = tb_ok$q;
         tb_id$d = tb_id$q;
         tb_word$d = tb_word$q;
-        cnt_dop$clock = clock;
-        cnt_tri$clock = clock;
-        cnt_nf$clock = clock;
-        cnt_tf$clock = clock;
-        cnt_dop$d = cnt_dop$q;
-        cnt_tri$d = cnt_tri$q;
-        cnt_nf$d = cnt_nf$q;
-        cnt_tf$d = cnt_tf$q;
         d_cntr$clock = clock;
         mem_port$clock = clock;
         dop$clock = clock;
@@ -840,6 +840,10 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         tri_cache$clock = clock;
         tri_unit$clock = clock;
         result$clock = clock;
+        cnt_dop$clock = clock;
+        cnt_tri$clock = clock;
+        cnt_nf$clock = clock;
+        cnt_tf$clock = clock;
         dop$load_en = host_we & (host_addr[(32'h8)+:(2)] == 32'h0);
         dop$load_addr = host_addr[(32'h0)+:(8)];
         dop$load_data = host_data[(32'h0)+:(32)];
@@ -944,14 +948,8 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         mem_port$mem_resp_data = mem_resp_data;
         mem_req_valid = mem_port$mem_req_valid;
         mem_req_addr = mem_port$mem_req_addr;
-        if (mem_port$accept) begin
-            if (mem_port$req_dst[32'h1]) begin
-                cnt_tf$d = cnt_tf$q + 32'h1;
-            end
-            else begin
-                cnt_nf$d = cnt_nf$q + 32'h1;
-            end
-        end
+        cnt_tf$inc = mem_port$accept & mem_port$req_dst[32'h1];
+        cnt_nf$inc = mem_port$accept & ~mem_port$req_dst[32'h1];
         tri_cache$fill = mem_port$resp & (mem_port$resp_dst == 32'h2);
         tri_cache$fill_id = mem_port$ta_req;
         tri_cache$fill_word = mem_resp_data[(32'h0)+:(738)];
@@ -1013,18 +1011,16 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         dop$tag = d_cntr$cur_a;
         dop$valid_in = d_cntr$issue;
         side$d = ((d_cntr$cur_a) & 99'h7ffffffffffffffffffffffff) | (((d_cntr$cur_b) & 99'h7ffffffffffffffffffffffff) << 32'h10) | (((d_cntr$cur_flip) & 99'h7ffffffffffffffffffffffff) << 32'h20) | (((mem_port$na_in[(32'h0)+:(1)]) & 99'h7ffffffffffffffffffffffff) << 32'h21) | (((mem_port$na_in[(32'h1 + 32'h18 * 32'h20)+:(16)]) & 99'h7ffffffffffffffffffffffff) << 32'h22) | (((mem_port$na_in[(32'h21 + 32'h18 * 32'h20)+:(16)]) & 99'h7ffffffffffffffffffffffff) << 32'h32) | (((mem_port$nb_in[(32'h0)+:(1)]) & 99'h7ffffffffffffffffffffffff) << 32'h42) | (((mem_port$nb_in[(32'h1 + 32'h18 * 32'h20)+:(16)]) & 99'h7ffffffffffffffffffffffff) << 32'h43) | (((mem_port$nb_in[(32'h21 + 32'h18 * 32'h20)+:(16)]) & 99'h7ffffffffffffffffffffffff) << 32'h53);
-        if (d_cntr$issue) begin
-            cnt_dop$d = cnt_dop$q + 32'h1;
-        end
+        cnt_dop$inc = d_cntr$issue;
         leaf_fifo$write = d_cntr$leaf_in;
         leaf_fifo$data_in = d_cntr$leaf_pair;
         tri_in = run$q & ~halt & leaf_valid$q & ~need_ta & ~need_tb;
         tri_take = tri_in & tri_unit$in_ready;
+        cnt_tri$inc = tri_take;
         leaf_out = ~leaf_fifo$empty & (halt | (run$q & (~leaf_valid$q | tri_take)));
         leaf_fifo$read = leaf_out;
         if (tri_take) begin
             leaf_valid$d = 1'b0;
-            cnt_tri$d = cnt_tri$q + 32'h1;
         end
         if (leaf_out & ~halt) begin
             leaf_valid$d = 1'b1;
@@ -1122,19 +1118,19 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
             stop$d = 1'b0;
             leaf_valid$d = 1'b0;
             tb_ok$d = 1'b0;
-            cnt_dop$d = 32'h0;
-            cnt_tri$d = 32'h0;
-            cnt_nf$d = 32'h0;
-            cnt_tf$d = 32'h0;
         end
         busy = run$q;
         done = done_r$q;
         overflow = d_cntr$overflow;
         max_depth = d_cntr$max_count;
-        dop_tests = cnt_dop$q;
-        tri_tests = cnt_tri$q;
-        node_fetches = cnt_nf$q;
-        tri_fetches = cnt_tf$q;
+        cnt_dop$clear = start_q;
+        cnt_tri$clear = start_q;
+        cnt_nf$clear = start_q;
+        cnt_tf$clear = start_q;
+        dop_tests = cnt_dop$count;
+        tri_tests = cnt_tri$count;
+        node_fetches = cnt_nf$count;
+        tri_fetches = cnt_tf$count;
     end
     
 endmodule // top
@@ -1159,7 +1155,73 @@ module top$base_na(d,q,clock);
 endmodule // top$base_na
 
 
-module top$cnt_dop(d,q,clock);
+module top$cnt_dop(clock,clear,inc,count);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  clear;
+    input wire  inc;
+    output reg  [31:0] count;
+    
+    // Stub signals
+    reg  [31:0] total$d;
+    wire  [31:0] total$q;
+    reg  total$clock;
+    reg  pending$d;
+    wire  pending$q;
+    reg  pending$clock;
+    
+    // Sub module instances
+    top$cnt_dop$total total(
+        .d(total$d),
+        .q(total$q),
+        .clock(total$clock)
+    );
+    top$cnt_dop$pending pending(
+        .d(pending$d),
+        .q(pending$q),
+        .clock(pending$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        total$clock = clock;
+        total$d = total$q;
+        pending$clock = clock;
+        pending$d = inc;
+        if (pending$q) begin
+            total$d = total$q + 32'h1;
+        end
+        if (clear) begin
+            total$d = 32'h0;
+            pending$d = 1'b0;
+        end
+        count = total$q + ((pending$q) & 32'hffffffff);
+    end
+    
+endmodule // top$cnt_dop
+
+
+module top$cnt_dop$pending(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cnt_dop$pending
+
+
+module top$cnt_dop$total(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -1175,7 +1237,7 @@ module top$cnt_dop(d,q,clock);
        q <= d;
     end
           
-endmodule // top$cnt_dop
+endmodule // top$cnt_dop$total
 
 
 module top$d_cntr(clock,clear,lifo,push_root,root,go,pf,one,credit_lim,leaf_count,id_mask,wa_empty,wb_empty,dop_valid,dop_overlap,side,empty,count,max_count,overflow,push,pop,pop_entry,pop_fetch,ent_valid,cur_a,cur_b,cur_flip,cur_fa,cur_fb,need_na,need_nb,issue,r_a,r_b,r_a_leaf,r_b_leaf,leaf_in,leaf_pair,inflight,pend);
@@ -1362,12 +1424,12 @@ module top$d_cntr(clock,clear,lifo,push_root,root,go,pf,one,credit_lim,leaf_coun
         .q(ahd_pairs$q),
         .clock(ahd_pairs$clock)
     );
-    top$d_cntr$ent_second ent_second(
+    top$cnt_dop$pending ent_second(
         .d(ent_second$d),
         .q(ent_second$q),
         .clock(ent_second$clock)
     );
-    top$d_cntr$ent_second last_ok(
+    top$cnt_dop$pending last_ok(
         .d(last_ok$d),
         .q(last_ok$q),
         .clock(last_ok$clock)
@@ -1382,7 +1444,7 @@ module top$d_cntr(clock,clear,lifo,push_root,root,go,pf,one,credit_lim,leaf_coun
         .q(last_b$q),
         .clock(last_b$clock)
     );
-    top$d_cntr$ent_second last_issue(
+    top$cnt_dop$pending last_issue(
         .d(last_issue$d),
         .q(last_issue$q),
         .clock(last_issue$clock)
@@ -1392,7 +1454,7 @@ module top$d_cntr(clock,clear,lifo,push_root,root,go,pf,one,credit_lim,leaf_coun
         .q(inflight_r$q),
         .clock(inflight_r$clock)
     );
-    top$d_cntr$ent_second pend_r(
+    top$cnt_dop$pending pend_r(
         .d(pend_r$d),
         .q(pend_r$q),
         .clock(pend_r$clock)
@@ -2210,25 +2272,6 @@ module top$d_cntr$ahd_pairs(d,q,clock);
 endmodule // top$d_cntr$ahd_pairs
 
 
-module top$d_cntr$ent_second(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$d_cntr$ent_second
-
-
 module top$d_cntr$last_a(d,q,clock);
     
     // Module arguments
@@ -2371,7 +2414,7 @@ module top$d_cntr$queue(clock,clear,lifo,push,push_data,push2,push2_data,pop,emp
         .q(wr_ptr$q),
         .clock(wr_ptr$clock)
     );
-    top$d_cntr$ent_second byp(
+    top$cnt_dop$pending byp(
         .d(byp$d),
         .q(byp$q),
         .clock(byp$clock)
@@ -2381,12 +2424,12 @@ module top$d_cntr$queue(clock,clear,lifo,push,push_data,push2,push2_data,pop,emp
         .q(byp_data$q),
         .clock(byp_data$clock)
     );
-    top$d_cntr$ent_second rsel(
+    top$cnt_dop$pending rsel(
         .d(rsel$d),
         .q(rsel$q),
         .clock(rsel$clock)
     );
-    top$d_cntr$ent_second order_lifo(
+    top$cnt_dop$pending order_lifo(
         .d(order_lifo$d),
         .q(order_lifo$q),
         .clock(order_lifo$clock)
@@ -2396,7 +2439,7 @@ module top$d_cntr$queue(clock,clear,lifo,push,push_data,push2,push2_data,pop,emp
         .q(max_r$q),
         .clock(max_r$clock)
     );
-    top$d_cntr$ent_second ovf_r(
+    top$cnt_dop$pending ovf_r(
         .d(ovf_r$d),
         .q(ovf_r$q),
         .clock(ovf_r$clock)
@@ -2419,7 +2462,7 @@ module top$d_cntr$queue(clock,clear,lifo,push,push_data,push2,push2_data,pop,emp
         .write_data(bank1$write_data),
         .write_enable(bank1$write_enable)
     );
-    top$d_cntr$ent_second nonempty(
+    top$cnt_dop$pending nonempty(
         .d(nonempty$d),
         .q(nonempty$q),
         .clock(nonempty$clock)
@@ -3860,482 +3903,482 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
     reg  c_any;
     
     // Sub module instances
-    top$cnt_dop cmat_0$0(
+    top$cnt_dop$total cmat_0$0(
         .d(cmat_0$0$d),
         .q(cmat_0$0$q),
         .clock(cmat_0$0$clock)
     );
-    top$cnt_dop cmat_0$1(
+    top$cnt_dop$total cmat_0$1(
         .d(cmat_0$1$d),
         .q(cmat_0$1$q),
         .clock(cmat_0$1$clock)
     );
-    top$cnt_dop cmat_0$2(
+    top$cnt_dop$total cmat_0$2(
         .d(cmat_0$2$d),
         .q(cmat_0$2$q),
         .clock(cmat_0$2$clock)
     );
-    top$cnt_dop cmat_0$3(
+    top$cnt_dop$total cmat_0$3(
         .d(cmat_0$3$d),
         .q(cmat_0$3$q),
         .clock(cmat_0$3$clock)
     );
-    top$cnt_dop cmat_0$4(
+    top$cnt_dop$total cmat_0$4(
         .d(cmat_0$4$d),
         .q(cmat_0$4$q),
         .clock(cmat_0$4$clock)
     );
-    top$cnt_dop cmat_0$5(
+    top$cnt_dop$total cmat_0$5(
         .d(cmat_0$5$d),
         .q(cmat_0$5$q),
         .clock(cmat_0$5$clock)
     );
-    top$cnt_dop cmat_0$6(
+    top$cnt_dop$total cmat_0$6(
         .d(cmat_0$6$d),
         .q(cmat_0$6$q),
         .clock(cmat_0$6$clock)
     );
-    top$cnt_dop cmat_0$7(
+    top$cnt_dop$total cmat_0$7(
         .d(cmat_0$7$d),
         .q(cmat_0$7$q),
         .clock(cmat_0$7$clock)
     );
-    top$cnt_dop cmat_0$8(
+    top$cnt_dop$total cmat_0$8(
         .d(cmat_0$8$d),
         .q(cmat_0$8$q),
         .clock(cmat_0$8$clock)
     );
-    top$cnt_dop cmat_0$9(
+    top$cnt_dop$total cmat_0$9(
         .d(cmat_0$9$d),
         .q(cmat_0$9$q),
         .clock(cmat_0$9$clock)
     );
-    top$cnt_dop cmat_0$10(
+    top$cnt_dop$total cmat_0$10(
         .d(cmat_0$10$d),
         .q(cmat_0$10$q),
         .clock(cmat_0$10$clock)
     );
-    top$cnt_dop cmat_0$11(
+    top$cnt_dop$total cmat_0$11(
         .d(cmat_0$11$d),
         .q(cmat_0$11$q),
         .clock(cmat_0$11$clock)
     );
-    top$cnt_dop cmat_0$12(
+    top$cnt_dop$total cmat_0$12(
         .d(cmat_0$12$d),
         .q(cmat_0$12$q),
         .clock(cmat_0$12$clock)
     );
-    top$cnt_dop cmat_0$13(
+    top$cnt_dop$total cmat_0$13(
         .d(cmat_0$13$d),
         .q(cmat_0$13$q),
         .clock(cmat_0$13$clock)
     );
-    top$cnt_dop cmat_0$14(
+    top$cnt_dop$total cmat_0$14(
         .d(cmat_0$14$d),
         .q(cmat_0$14$q),
         .clock(cmat_0$14$clock)
     );
-    top$cnt_dop cmat_0$15(
+    top$cnt_dop$total cmat_0$15(
         .d(cmat_0$15$d),
         .q(cmat_0$15$q),
         .clock(cmat_0$15$clock)
     );
-    top$cnt_dop cmat_0$16(
+    top$cnt_dop$total cmat_0$16(
         .d(cmat_0$16$d),
         .q(cmat_0$16$q),
         .clock(cmat_0$16$clock)
     );
-    top$cnt_dop cmat_0$17(
+    top$cnt_dop$total cmat_0$17(
         .d(cmat_0$17$d),
         .q(cmat_0$17$q),
         .clock(cmat_0$17$clock)
     );
-    top$cnt_dop cmat_0$18(
+    top$cnt_dop$total cmat_0$18(
         .d(cmat_0$18$d),
         .q(cmat_0$18$q),
         .clock(cmat_0$18$clock)
     );
-    top$cnt_dop cmat_0$19(
+    top$cnt_dop$total cmat_0$19(
         .d(cmat_0$19$d),
         .q(cmat_0$19$q),
         .clock(cmat_0$19$clock)
     );
-    top$cnt_dop cmat_0$20(
+    top$cnt_dop$total cmat_0$20(
         .d(cmat_0$20$d),
         .q(cmat_0$20$q),
         .clock(cmat_0$20$clock)
     );
-    top$cnt_dop cmat_0$21(
+    top$cnt_dop$total cmat_0$21(
         .d(cmat_0$21$d),
         .q(cmat_0$21$q),
         .clock(cmat_0$21$clock)
     );
-    top$cnt_dop cmat_0$22(
+    top$cnt_dop$total cmat_0$22(
         .d(cmat_0$22$d),
         .q(cmat_0$22$q),
         .clock(cmat_0$22$clock)
     );
-    top$cnt_dop cmat_0$23(
+    top$cnt_dop$total cmat_0$23(
         .d(cmat_0$23$d),
         .q(cmat_0$23$q),
         .clock(cmat_0$23$clock)
     );
-    top$cnt_dop cmat_1$0(
+    top$cnt_dop$total cmat_1$0(
         .d(cmat_1$0$d),
         .q(cmat_1$0$q),
         .clock(cmat_1$0$clock)
     );
-    top$cnt_dop cmat_1$1(
+    top$cnt_dop$total cmat_1$1(
         .d(cmat_1$1$d),
         .q(cmat_1$1$q),
         .clock(cmat_1$1$clock)
     );
-    top$cnt_dop cmat_1$2(
+    top$cnt_dop$total cmat_1$2(
         .d(cmat_1$2$d),
         .q(cmat_1$2$q),
         .clock(cmat_1$2$clock)
     );
-    top$cnt_dop cmat_1$3(
+    top$cnt_dop$total cmat_1$3(
         .d(cmat_1$3$d),
         .q(cmat_1$3$q),
         .clock(cmat_1$3$clock)
     );
-    top$cnt_dop cmat_1$4(
+    top$cnt_dop$total cmat_1$4(
         .d(cmat_1$4$d),
         .q(cmat_1$4$q),
         .clock(cmat_1$4$clock)
     );
-    top$cnt_dop cmat_1$5(
+    top$cnt_dop$total cmat_1$5(
         .d(cmat_1$5$d),
         .q(cmat_1$5$q),
         .clock(cmat_1$5$clock)
     );
-    top$cnt_dop cmat_1$6(
+    top$cnt_dop$total cmat_1$6(
         .d(cmat_1$6$d),
         .q(cmat_1$6$q),
         .clock(cmat_1$6$clock)
     );
-    top$cnt_dop cmat_1$7(
+    top$cnt_dop$total cmat_1$7(
         .d(cmat_1$7$d),
         .q(cmat_1$7$q),
         .clock(cmat_1$7$clock)
     );
-    top$cnt_dop cmat_1$8(
+    top$cnt_dop$total cmat_1$8(
         .d(cmat_1$8$d),
         .q(cmat_1$8$q),
         .clock(cmat_1$8$clock)
     );
-    top$cnt_dop cmat_1$9(
+    top$cnt_dop$total cmat_1$9(
         .d(cmat_1$9$d),
         .q(cmat_1$9$q),
         .clock(cmat_1$9$clock)
     );
-    top$cnt_dop cmat_1$10(
+    top$cnt_dop$total cmat_1$10(
         .d(cmat_1$10$d),
         .q(cmat_1$10$q),
         .clock(cmat_1$10$clock)
     );
-    top$cnt_dop cmat_1$11(
+    top$cnt_dop$total cmat_1$11(
         .d(cmat_1$11$d),
         .q(cmat_1$11$q),
         .clock(cmat_1$11$clock)
     );
-    top$cnt_dop cmat_1$12(
+    top$cnt_dop$total cmat_1$12(
         .d(cmat_1$12$d),
         .q(cmat_1$12$q),
         .clock(cmat_1$12$clock)
     );
-    top$cnt_dop cmat_1$13(
+    top$cnt_dop$total cmat_1$13(
         .d(cmat_1$13$d),
         .q(cmat_1$13$q),
         .clock(cmat_1$13$clock)
     );
-    top$cnt_dop cmat_1$14(
+    top$cnt_dop$total cmat_1$14(
         .d(cmat_1$14$d),
         .q(cmat_1$14$q),
         .clock(cmat_1$14$clock)
     );
-    top$cnt_dop cmat_1$15(
+    top$cnt_dop$total cmat_1$15(
         .d(cmat_1$15$d),
         .q(cmat_1$15$q),
         .clock(cmat_1$15$clock)
     );
-    top$cnt_dop cmat_1$16(
+    top$cnt_dop$total cmat_1$16(
         .d(cmat_1$16$d),
         .q(cmat_1$16$q),
         .clock(cmat_1$16$clock)
     );
-    top$cnt_dop cmat_1$17(
+    top$cnt_dop$total cmat_1$17(
         .d(cmat_1$17$d),
         .q(cmat_1$17$q),
         .clock(cmat_1$17$clock)
     );
-    top$cnt_dop cmat_1$18(
+    top$cnt_dop$total cmat_1$18(
         .d(cmat_1$18$d),
         .q(cmat_1$18$q),
         .clock(cmat_1$18$clock)
     );
-    top$cnt_dop cmat_1$19(
+    top$cnt_dop$total cmat_1$19(
         .d(cmat_1$19$d),
         .q(cmat_1$19$q),
         .clock(cmat_1$19$clock)
     );
-    top$cnt_dop cmat_1$20(
+    top$cnt_dop$total cmat_1$20(
         .d(cmat_1$20$d),
         .q(cmat_1$20$q),
         .clock(cmat_1$20$clock)
     );
-    top$cnt_dop cmat_1$21(
+    top$cnt_dop$total cmat_1$21(
         .d(cmat_1$21$d),
         .q(cmat_1$21$q),
         .clock(cmat_1$21$clock)
     );
-    top$cnt_dop cmat_1$22(
+    top$cnt_dop$total cmat_1$22(
         .d(cmat_1$22$d),
         .q(cmat_1$22$q),
         .clock(cmat_1$22$clock)
     );
-    top$cnt_dop cmat_1$23(
+    top$cnt_dop$total cmat_1$23(
         .d(cmat_1$23$d),
         .q(cmat_1$23$q),
         .clock(cmat_1$23$clock)
     );
-    top$cnt_dop cmat_2$0(
+    top$cnt_dop$total cmat_2$0(
         .d(cmat_2$0$d),
         .q(cmat_2$0$q),
         .clock(cmat_2$0$clock)
     );
-    top$cnt_dop cmat_2$1(
+    top$cnt_dop$total cmat_2$1(
         .d(cmat_2$1$d),
         .q(cmat_2$1$q),
         .clock(cmat_2$1$clock)
     );
-    top$cnt_dop cmat_2$2(
+    top$cnt_dop$total cmat_2$2(
         .d(cmat_2$2$d),
         .q(cmat_2$2$q),
         .clock(cmat_2$2$clock)
     );
-    top$cnt_dop cmat_2$3(
+    top$cnt_dop$total cmat_2$3(
         .d(cmat_2$3$d),
         .q(cmat_2$3$q),
         .clock(cmat_2$3$clock)
     );
-    top$cnt_dop cmat_2$4(
+    top$cnt_dop$total cmat_2$4(
         .d(cmat_2$4$d),
         .q(cmat_2$4$q),
         .clock(cmat_2$4$clock)
     );
-    top$cnt_dop cmat_2$5(
+    top$cnt_dop$total cmat_2$5(
         .d(cmat_2$5$d),
         .q(cmat_2$5$q),
         .clock(cmat_2$5$clock)
     );
-    top$cnt_dop cmat_2$6(
+    top$cnt_dop$total cmat_2$6(
         .d(cmat_2$6$d),
         .q(cmat_2$6$q),
         .clock(cmat_2$6$clock)
     );
-    top$cnt_dop cmat_2$7(
+    top$cnt_dop$total cmat_2$7(
         .d(cmat_2$7$d),
         .q(cmat_2$7$q),
         .clock(cmat_2$7$clock)
     );
-    top$cnt_dop cmat_2$8(
+    top$cnt_dop$total cmat_2$8(
         .d(cmat_2$8$d),
         .q(cmat_2$8$q),
         .clock(cmat_2$8$clock)
     );
-    top$cnt_dop cmat_2$9(
+    top$cnt_dop$total cmat_2$9(
         .d(cmat_2$9$d),
         .q(cmat_2$9$q),
         .clock(cmat_2$9$clock)
     );
-    top$cnt_dop cmat_2$10(
+    top$cnt_dop$total cmat_2$10(
         .d(cmat_2$10$d),
         .q(cmat_2$10$q),
         .clock(cmat_2$10$clock)
     );
-    top$cnt_dop cmat_2$11(
+    top$cnt_dop$total cmat_2$11(
         .d(cmat_2$11$d),
         .q(cmat_2$11$q),
         .clock(cmat_2$11$clock)
     );
-    top$cnt_dop cmat_2$12(
+    top$cnt_dop$total cmat_2$12(
         .d(cmat_2$12$d),
         .q(cmat_2$12$q),
         .clock(cmat_2$12$clock)
     );
-    top$cnt_dop cmat_2$13(
+    top$cnt_dop$total cmat_2$13(
         .d(cmat_2$13$d),
         .q(cmat_2$13$q),
         .clock(cmat_2$13$clock)
     );
-    top$cnt_dop cmat_2$14(
+    top$cnt_dop$total cmat_2$14(
         .d(cmat_2$14$d),
         .q(cmat_2$14$q),
         .clock(cmat_2$14$clock)
     );
-    top$cnt_dop cmat_2$15(
+    top$cnt_dop$total cmat_2$15(
         .d(cmat_2$15$d),
         .q(cmat_2$15$q),
         .clock(cmat_2$15$clock)
     );
-    top$cnt_dop cmat_2$16(
+    top$cnt_dop$total cmat_2$16(
         .d(cmat_2$16$d),
         .q(cmat_2$16$q),
         .clock(cmat_2$16$clock)
     );
-    top$cnt_dop cmat_2$17(
+    top$cnt_dop$total cmat_2$17(
         .d(cmat_2$17$d),
         .q(cmat_2$17$q),
         .clock(cmat_2$17$clock)
     );
-    top$cnt_dop cmat_2$18(
+    top$cnt_dop$total cmat_2$18(
         .d(cmat_2$18$d),
         .q(cmat_2$18$q),
         .clock(cmat_2$18$clock)
     );
-    top$cnt_dop cmat_2$19(
+    top$cnt_dop$total cmat_2$19(
         .d(cmat_2$19$d),
         .q(cmat_2$19$q),
         .clock(cmat_2$19$clock)
     );
-    top$cnt_dop cmat_2$20(
+    top$cnt_dop$total cmat_2$20(
         .d(cmat_2$20$d),
         .q(cmat_2$20$q),
         .clock(cmat_2$20$clock)
     );
-    top$cnt_dop cmat_2$21(
+    top$cnt_dop$total cmat_2$21(
         .d(cmat_2$21$d),
         .q(cmat_2$21$q),
         .clock(cmat_2$21$clock)
     );
-    top$cnt_dop cmat_2$22(
+    top$cnt_dop$total cmat_2$22(
         .d(cmat_2$22$d),
         .q(cmat_2$22$q),
         .clock(cmat_2$22$clock)
     );
-    top$cnt_dop cmat_2$23(
+    top$cnt_dop$total cmat_2$23(
         .d(cmat_2$23$d),
         .q(cmat_2$23$q),
         .clock(cmat_2$23$clock)
     );
-    top$cnt_dop cvec$0(
+    top$cnt_dop$total cvec$0(
         .d(cvec$0$d),
         .q(cvec$0$q),
         .clock(cvec$0$clock)
     );
-    top$cnt_dop cvec$1(
+    top$cnt_dop$total cvec$1(
         .d(cvec$1$d),
         .q(cvec$1$q),
         .clock(cvec$1$clock)
     );
-    top$cnt_dop cvec$2(
+    top$cnt_dop$total cvec$2(
         .d(cvec$2$d),
         .q(cvec$2$q),
         .clock(cvec$2$clock)
     );
-    top$cnt_dop cvec$3(
+    top$cnt_dop$total cvec$3(
         .d(cvec$3$d),
         .q(cvec$3$q),
         .clock(cvec$3$clock)
     );
-    top$cnt_dop cvec$4(
+    top$cnt_dop$total cvec$4(
         .d(cvec$4$d),
         .q(cvec$4$q),
         .clock(cvec$4$clock)
     );
-    top$cnt_dop cvec$5(
+    top$cnt_dop$total cvec$5(
         .d(cvec$5$d),
         .q(cvec$5$q),
         .clock(cvec$5$clock)
     );
-    top$cnt_dop cvec$6(
+    top$cnt_dop$total cvec$6(
         .d(cvec$6$d),
         .q(cvec$6$q),
         .clock(cvec$6$clock)
     );
-    top$cnt_dop cvec$7(
+    top$cnt_dop$total cvec$7(
         .d(cvec$7$d),
         .q(cvec$7$q),
         .clock(cvec$7$clock)
     );
-    top$cnt_dop cvec$8(
+    top$cnt_dop$total cvec$8(
         .d(cvec$8$d),
         .q(cvec$8$q),
         .clock(cvec$8$clock)
     );
-    top$cnt_dop cvec$9(
+    top$cnt_dop$total cvec$9(
         .d(cvec$9$d),
         .q(cvec$9$q),
         .clock(cvec$9$clock)
     );
-    top$cnt_dop cvec$10(
+    top$cnt_dop$total cvec$10(
         .d(cvec$10$d),
         .q(cvec$10$q),
         .clock(cvec$10$clock)
     );
-    top$cnt_dop cvec$11(
+    top$cnt_dop$total cvec$11(
         .d(cvec$11$d),
         .q(cvec$11$q),
         .clock(cvec$11$clock)
     );
-    top$cnt_dop cvec$12(
+    top$cnt_dop$total cvec$12(
         .d(cvec$12$d),
         .q(cvec$12$q),
         .clock(cvec$12$clock)
     );
-    top$cnt_dop cvec$13(
+    top$cnt_dop$total cvec$13(
         .d(cvec$13$d),
         .q(cvec$13$q),
         .clock(cvec$13$clock)
     );
-    top$cnt_dop cvec$14(
+    top$cnt_dop$total cvec$14(
         .d(cvec$14$d),
         .q(cvec$14$q),
         .clock(cvec$14$clock)
     );
-    top$cnt_dop cvec$15(
+    top$cnt_dop$total cvec$15(
         .d(cvec$15$d),
         .q(cvec$15$q),
         .clock(cvec$15$clock)
     );
-    top$cnt_dop cvec$16(
+    top$cnt_dop$total cvec$16(
         .d(cvec$16$d),
         .q(cvec$16$q),
         .clock(cvec$16$clock)
     );
-    top$cnt_dop cvec$17(
+    top$cnt_dop$total cvec$17(
         .d(cvec$17$d),
         .q(cvec$17$q),
         .clock(cvec$17$clock)
     );
-    top$cnt_dop cvec$18(
+    top$cnt_dop$total cvec$18(
         .d(cvec$18$d),
         .q(cvec$18$q),
         .clock(cvec$18$clock)
     );
-    top$cnt_dop cvec$19(
+    top$cnt_dop$total cvec$19(
         .d(cvec$19$d),
         .q(cvec$19$q),
         .clock(cvec$19$clock)
     );
-    top$cnt_dop cvec$20(
+    top$cnt_dop$total cvec$20(
         .d(cvec$20$d),
         .q(cvec$20$q),
         .clock(cvec$20$clock)
     );
-    top$cnt_dop cvec$21(
+    top$cnt_dop$total cvec$21(
         .d(cvec$21$d),
         .q(cvec$21$q),
         .clock(cvec$21$clock)
     );
-    top$cnt_dop cvec$22(
+    top$cnt_dop$total cvec$22(
         .d(cvec$22$d),
         .q(cvec$22$q),
         .clock(cvec$22$clock)
     );
-    top$cnt_dop cvec$23(
+    top$cnt_dop$total cvec$23(
         .d(cvec$23$d),
         .q(cvec$23$q),
         .clock(cvec$23$clock)
@@ -6714,47 +6757,47 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
     reg  c15_nan;
     
     // Sub module instances
-    top$d_cntr$ent_second s1_valid(
+    top$cnt_dop$pending s1_valid(
         .d(s1_valid$d),
         .q(s1_valid$q),
         .clock(s1_valid$clock)
     );
-    top$cnt_dop s1_d0(
+    top$cnt_dop$total s1_d0(
         .d(s1_d0$d),
         .q(s1_d0$q),
         .clock(s1_d0$clock)
     );
-    top$cnt_dop s1_d1(
+    top$cnt_dop$total s1_d1(
         .d(s1_d1$d),
         .q(s1_d1$q),
         .clock(s1_d1$clock)
     );
-    top$cnt_dop s1_d2(
+    top$cnt_dop$total s1_d2(
         .d(s1_d2$d),
         .q(s1_d2$q),
         .clock(s1_d2$clock)
     );
-    top$cnt_dop s1_c0(
+    top$cnt_dop$total s1_c0(
         .d(s1_c0$d),
         .q(s1_c0$q),
         .clock(s1_c0$clock)
     );
-    top$cnt_dop s1_c1(
+    top$cnt_dop$total s1_c1(
         .d(s1_c1$d),
         .q(s1_c1$q),
         .clock(s1_c1$clock)
     );
-    top$cnt_dop s1_c2(
+    top$cnt_dop$total s1_c2(
         .d(s1_c2$d),
         .q(s1_c2$q),
         .clock(s1_c2$clock)
     );
-    top$cnt_dop s1_c(
+    top$cnt_dop$total s1_c(
         .d(s1_c$d),
         .q(s1_c$q),
         .clock(s1_c$clock)
     );
-    top$cnt_dop s1_e(
+    top$cnt_dop$total s1_e(
         .d(s1_e$d),
         .q(s1_e$q),
         .clock(s1_e$clock)
@@ -6783,22 +6826,22 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
         .y(mul_2$y),
         .valid_out(mul_2$valid_out)
     );
-    top$cnt_dop c_2(
+    top$cnt_dop$total c_2(
         .d(c_2$d),
         .q(c_2$q),
         .clock(c_2$clock)
     );
-    top$cnt_dop c_3(
+    top$cnt_dop$total c_3(
         .d(c_3$d),
         .q(c_3$q),
         .clock(c_3$clock)
     );
-    top$cnt_dop c_4(
+    top$cnt_dop$total c_4(
         .d(c_4$d),
         .q(c_4$q),
         .clock(c_4$clock)
     );
-    top$cnt_dop c_5(
+    top$cnt_dop$total c_5(
         .d(c_5$d),
         .q(c_5$q),
         .clock(c_5$clock)
@@ -6839,67 +6882,67 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
         .y(add_3$y),
         .valid_out(add_3$valid_out)
     );
-    top$cnt_dop e_2(
+    top$cnt_dop$total e_2(
         .d(e_2$d),
         .q(e_2$q),
         .clock(e_2$clock)
     );
-    top$cnt_dop e_3(
+    top$cnt_dop$total e_3(
         .d(e_3$d),
         .q(e_3$q),
         .clock(e_3$clock)
     );
-    top$cnt_dop e_4(
+    top$cnt_dop$total e_4(
         .d(e_4$d),
         .q(e_4$q),
         .clock(e_4$clock)
     );
-    top$cnt_dop e_5(
+    top$cnt_dop$total e_5(
         .d(e_5$d),
         .q(e_5$q),
         .clock(e_5$clock)
     );
-    top$cnt_dop e_6(
+    top$cnt_dop$total e_6(
         .d(e_6$d),
         .q(e_6$q),
         .clock(e_6$clock)
     );
-    top$cnt_dop e_7(
+    top$cnt_dop$total e_7(
         .d(e_7$d),
         .q(e_7$q),
         .clock(e_7$clock)
     );
-    top$cnt_dop e_8(
+    top$cnt_dop$total e_8(
         .d(e_8$d),
         .q(e_8$q),
         .clock(e_8$clock)
     );
-    top$cnt_dop e_9(
+    top$cnt_dop$total e_9(
         .d(e_9$d),
         .q(e_9$q),
         .clock(e_9$clock)
     );
-    top$cnt_dop e_10(
+    top$cnt_dop$total e_10(
         .d(e_10$d),
         .q(e_10$q),
         .clock(e_10$clock)
     );
-    top$cnt_dop e_11(
+    top$cnt_dop$total e_11(
         .d(e_11$d),
         .q(e_11$q),
         .clock(e_11$clock)
     );
-    top$d_cntr$ent_second s15_valid(
+    top$cnt_dop$pending s15_valid(
         .d(s15_valid$d),
         .q(s15_valid$q),
         .clock(s15_valid$clock)
     );
-    top$cnt_dop s15_s(
+    top$cnt_dop$total s15_s(
         .d(s15_s$d),
         .q(s15_s$q),
         .clock(s15_s$clock)
     );
-    top$d_cntr$ent_second s15_flag(
+    top$cnt_dop$pending s15_flag(
         .d(s15_flag$d),
         .q(s15_flag$q),
         .clock(s15_flag$clock)
@@ -7179,37 +7222,37 @@ module top$dop$doptrf$0$add_0(clock,a,b,sub,valid_in,y,valid_out);
         .is_inf(unpack_b$is_inf),
         .is_nan(unpack_b$is_nan)
     );
-    top$d_cntr$ent_second s1_valid(
+    top$cnt_dop$pending s1_valid(
         .d(s1_valid$d),
         .q(s1_valid$q),
         .clock(s1_valid$clock)
     );
-    top$d_cntr$ent_second s1_nan(
+    top$cnt_dop$pending s1_nan(
         .d(s1_nan$d),
         .q(s1_nan$q),
         .clock(s1_nan$clock)
     );
-    top$d_cntr$ent_second s1_inf(
+    top$cnt_dop$pending s1_inf(
         .d(s1_inf$d),
         .q(s1_inf$q),
         .clock(s1_inf$clock)
     );
-    top$d_cntr$ent_second s1_inf_sign(
+    top$cnt_dop$pending s1_inf_sign(
         .d(s1_inf_sign$d),
         .q(s1_inf_sign$q),
         .clock(s1_inf_sign$clock)
     );
-    top$d_cntr$ent_second s1_zero_sign(
+    top$cnt_dop$pending s1_zero_sign(
         .d(s1_zero_sign$d),
         .q(s1_zero_sign$q),
         .clock(s1_zero_sign$clock)
     );
-    top$d_cntr$ent_second s1_sign(
+    top$cnt_dop$pending s1_sign(
         .d(s1_sign$d),
         .q(s1_sign$q),
         .clock(s1_sign$clock)
     );
-    top$d_cntr$ent_second s1_eff_sub(
+    top$cnt_dop$pending s1_eff_sub(
         .d(s1_eff_sub$d),
         .q(s1_eff_sub$q),
         .clock(s1_eff_sub$clock)
@@ -7234,32 +7277,32 @@ module top$dop$doptrf$0$add_0(clock,a,b,sub,valid_in,y,valid_out);
         .y(norm$y),
         .lz(norm$lz)
     );
-    top$d_cntr$ent_second s2_valid(
+    top$cnt_dop$pending s2_valid(
         .d(s2_valid$d),
         .q(s2_valid$q),
         .clock(s2_valid$clock)
     );
-    top$d_cntr$ent_second s2_sign(
+    top$cnt_dop$pending s2_sign(
         .d(s2_sign$d),
         .q(s2_sign$q),
         .clock(s2_sign$clock)
     );
-    top$d_cntr$ent_second s2_nan(
+    top$cnt_dop$pending s2_nan(
         .d(s2_nan$d),
         .q(s2_nan$q),
         .clock(s2_nan$clock)
     );
-    top$d_cntr$ent_second s2_inf(
+    top$cnt_dop$pending s2_inf(
         .d(s2_inf$d),
         .q(s2_inf$q),
         .clock(s2_inf$clock)
     );
-    top$d_cntr$ent_second s2_zero(
+    top$cnt_dop$pending s2_zero(
         .d(s2_zero$d),
         .q(s2_zero$q),
         .clock(s2_zero$clock)
     );
-    top$d_cntr$ent_second s2_ovf(
+    top$cnt_dop$pending s2_ovf(
         .d(s2_ovf$d),
         .q(s2_ovf$q),
         .clock(s2_ovf$clock)
@@ -7285,12 +7328,12 @@ module top$dop$doptrf$0$add_0(clock,a,b,sub,valid_in,y,valid_out);
         .nm(round$nm),
         .y(round$y)
     );
-    top$d_cntr$ent_second s3_valid(
+    top$cnt_dop$pending s3_valid(
         .d(s3_valid$d),
         .q(s3_valid$q),
         .clock(s3_valid$clock)
     );
-    top$cnt_dop s3_y(
+    top$cnt_dop$total s3_y(
         .d(s3_y$d),
         .q(s3_y$q),
         .clock(s3_y$clock)
@@ -7820,27 +7863,27 @@ module top$dop$doptrf$0$mul_0(clock,a,b,valid_in,y,valid_out);
         .y(norm_b$y),
         .lz(norm_b$lz)
     );
-    top$d_cntr$ent_second s1_valid(
+    top$cnt_dop$pending s1_valid(
         .d(s1_valid$d),
         .q(s1_valid$q),
         .clock(s1_valid$clock)
     );
-    top$d_cntr$ent_second s1_sign(
+    top$cnt_dop$pending s1_sign(
         .d(s1_sign$d),
         .q(s1_sign$q),
         .clock(s1_sign$clock)
     );
-    top$d_cntr$ent_second s1_nan(
+    top$cnt_dop$pending s1_nan(
         .d(s1_nan$d),
         .q(s1_nan$q),
         .clock(s1_nan$clock)
     );
-    top$d_cntr$ent_second s1_inf(
+    top$cnt_dop$pending s1_inf(
         .d(s1_inf$d),
         .q(s1_inf$q),
         .clock(s1_inf$clock)
     );
-    top$d_cntr$ent_second s1_zero(
+    top$cnt_dop$pending s1_zero(
         .d(s1_zero$d),
         .q(s1_zero$q),
         .clock(s1_zero$clock)
@@ -7866,27 +7909,27 @@ module top$dop$doptrf$0$mul_0(clock,a,b,valid_in,y,valid_out);
         .hi(sig_mul$hi),
         .sticky(sig_mul$sticky)
     );
-    top$d_cntr$ent_second s2_valid(
+    top$cnt_dop$pending s2_valid(
         .d(s2_valid$d),
         .q(s2_valid$q),
         .clock(s2_valid$clock)
     );
-    top$d_cntr$ent_second s2_sign(
+    top$cnt_dop$pending s2_sign(
         .d(s2_sign$d),
         .q(s2_sign$q),
         .clock(s2_sign$clock)
     );
-    top$d_cntr$ent_second s2_nan(
+    top$cnt_dop$pending s2_nan(
         .d(s2_nan$d),
         .q(s2_nan$q),
         .clock(s2_nan$clock)
     );
-    top$d_cntr$ent_second s2_inf(
+    top$cnt_dop$pending s2_inf(
         .d(s2_inf$d),
         .q(s2_inf$q),
         .clock(s2_inf$clock)
     );
-    top$d_cntr$ent_second s2_zero(
+    top$cnt_dop$pending s2_zero(
         .d(s2_zero$d),
         .q(s2_zero$q),
         .clock(s2_zero$clock)
@@ -7901,37 +7944,37 @@ module top$dop$doptrf$0$mul_0(clock,a,b,valid_in,y,valid_out);
         .q(s2_hi$q),
         .clock(s2_hi$clock)
     );
-    top$d_cntr$ent_second s2_sticky(
+    top$cnt_dop$pending s2_sticky(
         .d(s2_sticky$d),
         .q(s2_sticky$q),
         .clock(s2_sticky$clock)
     );
-    top$d_cntr$ent_second s3_valid(
+    top$cnt_dop$pending s3_valid(
         .d(s3_valid$d),
         .q(s3_valid$q),
         .clock(s3_valid$clock)
     );
-    top$d_cntr$ent_second s3_sign(
+    top$cnt_dop$pending s3_sign(
         .d(s3_sign$d),
         .q(s3_sign$q),
         .clock(s3_sign$clock)
     );
-    top$d_cntr$ent_second s3_nan(
+    top$cnt_dop$pending s3_nan(
         .d(s3_nan$d),
         .q(s3_nan$q),
         .clock(s3_nan$clock)
     );
-    top$d_cntr$ent_second s3_inf(
+    top$cnt_dop$pending s3_inf(
         .d(s3_inf$d),
         .q(s3_inf$q),
         .clock(s3_inf$clock)
     );
-    top$d_cntr$ent_second s3_zero(
+    top$cnt_dop$pending s3_zero(
         .d(s3_zero$d),
         .q(s3_zero$q),
         .clock(s3_zero$clock)
     );
-    top$d_cntr$ent_second s3_ovf(
+    top$cnt_dop$pending s3_ovf(
         .d(s3_ovf$d),
         .q(s3_ovf$q),
         .clock(s3_ovf$clock)
@@ -7957,12 +8000,12 @@ module top$dop$doptrf$0$mul_0(clock,a,b,valid_in,y,valid_out);
         .nm(round$nm),
         .y(round$y)
     );
-    top$d_cntr$ent_second s4_valid(
+    top$cnt_dop$pending s4_valid(
         .d(s4_valid$d),
         .q(s4_valid$q),
         .clock(s4_valid$clock)
     );
-    top$cnt_dop s4_y(
+    top$cnt_dop$total s4_y(
         .d(s4_y$d),
         .q(s4_y$q),
         .clock(s4_y$clock)
@@ -13825,7 +13868,7 @@ module top$leaf_fifo$read_logic(clock,read,data_out,empty,almost_empty,underflow
         .q(read_address$q),
         .clock(read_address$clock)
     );
-    top$d_cntr$ent_second dff_underflow(
+    top$cnt_dop$pending dff_underflow(
         .d(dff_underflow$d),
         .q(dff_underflow$q),
         .clock(dff_underflow$clock)
@@ -13930,7 +13973,7 @@ module top$leaf_fifo$write_logic(write,data_in,full,almost_full,overflow,clock,r
         .q(dff_write_address_delay$q),
         .clock(dff_write_address_delay$clock)
     );
-    top$d_cntr$ent_second dff_overflow(
+    top$cnt_dop$pending dff_overflow(
         .d(dff_overflow$d),
         .q(dff_overflow$q),
         .clock(dff_overflow$clock)
@@ -14525,7 +14568,7 @@ module top$mem_port(clock,clear,go,pf_on,slot_bits,port_out,base_na,base_nb,base
         .q(tag_n$q),
         .clock(tag_n$clock)
     );
-    top$d_cntr$ent_second ta_pend(
+    top$cnt_dop$pending ta_pend(
         .d(ta_pend$d),
         .q(ta_pend$q),
         .clock(ta_pend$clock)
@@ -14535,7 +14578,7 @@ module top$mem_port(clock,clear,go,pf_on,slot_bits,port_out,base_na,base_nb,base
         .q(ta_req_r$q),
         .clock(ta_req_r$clock)
     );
-    top$d_cntr$ent_second tb_pend(
+    top$cnt_dop$pending tb_pend(
         .d(tb_pend$d),
         .q(tb_pend$q),
         .clock(tb_pend$clock)
@@ -16315,7 +16358,7 @@ module top$tri_cache(clock,clear,mask,fill,fill_id,fill_word,id,next_id,hit,word
         .write_data(words$write_data),
         .write_enable(words$write_enable)
     );
-    top$d_cntr$ent_second byp(
+    top$cnt_dop$pending byp(
         .d(byp$d),
         .q(byp$q),
         .clock(byp$clock)
@@ -16772,152 +16815,152 @@ module top$tri_unit(clock,load_en,load_addr,load_data,a_m_0$0,a_m_0$1,a_m_0$2,a_
     reg  give;
     
     // Sub module instances
-    top$cnt_dop ab_0$0(
+    top$cnt_dop$total ab_0$0(
         .d(ab_0$0$d),
         .q(ab_0$0$q),
         .clock(ab_0$0$clock)
     );
-    top$cnt_dop ab_0$1(
+    top$cnt_dop$total ab_0$1(
         .d(ab_0$1$d),
         .q(ab_0$1$q),
         .clock(ab_0$1$clock)
     );
-    top$cnt_dop ab_0$2(
+    top$cnt_dop$total ab_0$2(
         .d(ab_0$2$d),
         .q(ab_0$2$q),
         .clock(ab_0$2$clock)
     );
-    top$cnt_dop ab_0$3(
+    top$cnt_dop$total ab_0$3(
         .d(ab_0$3$d),
         .q(ab_0$3$q),
         .clock(ab_0$3$clock)
     );
-    top$cnt_dop ab_1$0(
+    top$cnt_dop$total ab_1$0(
         .d(ab_1$0$d),
         .q(ab_1$0$q),
         .clock(ab_1$0$clock)
     );
-    top$cnt_dop ab_1$1(
+    top$cnt_dop$total ab_1$1(
         .d(ab_1$1$d),
         .q(ab_1$1$q),
         .clock(ab_1$1$clock)
     );
-    top$cnt_dop ab_1$2(
+    top$cnt_dop$total ab_1$2(
         .d(ab_1$2$d),
         .q(ab_1$2$q),
         .clock(ab_1$2$clock)
     );
-    top$cnt_dop ab_1$3(
+    top$cnt_dop$total ab_1$3(
         .d(ab_1$3$d),
         .q(ab_1$3$q),
         .clock(ab_1$3$clock)
     );
-    top$cnt_dop ab_2$0(
+    top$cnt_dop$total ab_2$0(
         .d(ab_2$0$d),
         .q(ab_2$0$q),
         .clock(ab_2$0$clock)
     );
-    top$cnt_dop ab_2$1(
+    top$cnt_dop$total ab_2$1(
         .d(ab_2$1$d),
         .q(ab_2$1$q),
         .clock(ab_2$1$clock)
     );
-    top$cnt_dop ab_2$2(
+    top$cnt_dop$total ab_2$2(
         .d(ab_2$2$d),
         .q(ab_2$2$q),
         .clock(ab_2$2$clock)
     );
-    top$cnt_dop ab_2$3(
+    top$cnt_dop$total ab_2$3(
         .d(ab_2$3$d),
         .q(ab_2$3$q),
         .clock(ab_2$3$clock)
     );
-    top$cnt_dop ab_bm(
+    top$cnt_dop$total ab_bm(
         .d(ab_bm$d),
         .q(ab_bm$q),
         .clock(ab_bm$clock)
     );
-    top$cnt_dop ab_bf(
+    top$cnt_dop$total ab_bf(
         .d(ab_bf$d),
         .q(ab_bf$q),
         .clock(ab_bf$clock)
     );
-    top$cnt_dop ab_s(
+    top$cnt_dop$total ab_s(
         .d(ab_s$d),
         .q(ab_s$q),
         .clock(ab_s$clock)
     );
-    top$cnt_dop ba_0$0(
+    top$cnt_dop$total ba_0$0(
         .d(ba_0$0$d),
         .q(ba_0$0$q),
         .clock(ba_0$0$clock)
     );
-    top$cnt_dop ba_0$1(
+    top$cnt_dop$total ba_0$1(
         .d(ba_0$1$d),
         .q(ba_0$1$q),
         .clock(ba_0$1$clock)
     );
-    top$cnt_dop ba_0$2(
+    top$cnt_dop$total ba_0$2(
         .d(ba_0$2$d),
         .q(ba_0$2$q),
         .clock(ba_0$2$clock)
     );
-    top$cnt_dop ba_0$3(
+    top$cnt_dop$total ba_0$3(
         .d(ba_0$3$d),
         .q(ba_0$3$q),
         .clock(ba_0$3$clock)
     );
-    top$cnt_dop ba_1$0(
+    top$cnt_dop$total ba_1$0(
         .d(ba_1$0$d),
         .q(ba_1$0$q),
         .clock(ba_1$0$clock)
     );
-    top$cnt_dop ba_1$1(
+    top$cnt_dop$total ba_1$1(
         .d(ba_1$1$d),
         .q(ba_1$1$q),
         .clock(ba_1$1$clock)
     );
-    top$cnt_dop ba_1$2(
+    top$cnt_dop$total ba_1$2(
         .d(ba_1$2$d),
         .q(ba_1$2$q),
         .clock(ba_1$2$clock)
     );
-    top$cnt_dop ba_1$3(
+    top$cnt_dop$total ba_1$3(
         .d(ba_1$3$d),
         .q(ba_1$3$q),
         .clock(ba_1$3$clock)
     );
-    top$cnt_dop ba_2$0(
+    top$cnt_dop$total ba_2$0(
         .d(ba_2$0$d),
         .q(ba_2$0$q),
         .clock(ba_2$0$clock)
     );
-    top$cnt_dop ba_2$1(
+    top$cnt_dop$total ba_2$1(
         .d(ba_2$1$d),
         .q(ba_2$1$q),
         .clock(ba_2$1$clock)
     );
-    top$cnt_dop ba_2$2(
+    top$cnt_dop$total ba_2$2(
         .d(ba_2$2$d),
         .q(ba_2$2$q),
         .clock(ba_2$2$clock)
     );
-    top$cnt_dop ba_2$3(
+    top$cnt_dop$total ba_2$3(
         .d(ba_2$3$d),
         .q(ba_2$3$q),
         .clock(ba_2$3$clock)
     );
-    top$cnt_dop ba_bm(
+    top$cnt_dop$total ba_bm(
         .d(ba_bm$d),
         .q(ba_bm$q),
         .clock(ba_bm$clock)
     );
-    top$cnt_dop ba_bf(
+    top$cnt_dop$total ba_bf(
         .d(ba_bf$d),
         .q(ba_bf$q),
         .clock(ba_bf$clock)
     );
-    top$cnt_dop ba_s(
+    top$cnt_dop$total ba_s(
         .d(ba_s$d),
         .q(ba_s$q),
         .clock(ba_s$clock)
@@ -18132,7 +18175,7 @@ module top$tri_unit$fifo$read_logic(clock,read,data_out,empty,almost_empty,under
         .q(read_address$q),
         .clock(read_address$clock)
     );
-    top$d_cntr$ent_second dff_underflow(
+    top$cnt_dop$pending dff_underflow(
         .d(dff_underflow$d),
         .q(dff_underflow$q),
         .clock(dff_underflow$clock)
@@ -18218,7 +18261,7 @@ module top$tri_unit$fifo$write_logic(write,data_in,full,almost_full,overflow,clo
         .q(dff_write_address_delay$q),
         .clock(dff_write_address_delay$clock)
     );
-    top$d_cntr$ent_second dff_overflow(
+    top$cnt_dop$pending dff_overflow(
         .d(dff_overflow$d),
         .q(dff_overflow$q),
         .clock(dff_overflow$clock)
@@ -19387,207 +19430,207 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
     reg  miss_all;
     
     // Sub module instances
-    top$cnt_dop in_m_0$0(
+    top$cnt_dop$total in_m_0$0(
         .d(in_m_0$0$d),
         .q(in_m_0$0$q),
         .clock(in_m_0$0$clock)
     );
-    top$cnt_dop in_m_0$1(
+    top$cnt_dop$total in_m_0$1(
         .d(in_m_0$1$d),
         .q(in_m_0$1$q),
         .clock(in_m_0$1$clock)
     );
-    top$cnt_dop in_m_0$2(
+    top$cnt_dop$total in_m_0$2(
         .d(in_m_0$2$d),
         .q(in_m_0$2$q),
         .clock(in_m_0$2$clock)
     );
-    top$cnt_dop in_m_0$3(
+    top$cnt_dop$total in_m_0$3(
         .d(in_m_0$3$d),
         .q(in_m_0$3$q),
         .clock(in_m_0$3$clock)
     );
-    top$cnt_dop in_m_1$0(
+    top$cnt_dop$total in_m_1$0(
         .d(in_m_1$0$d),
         .q(in_m_1$0$q),
         .clock(in_m_1$0$clock)
     );
-    top$cnt_dop in_m_1$1(
+    top$cnt_dop$total in_m_1$1(
         .d(in_m_1$1$d),
         .q(in_m_1$1$q),
         .clock(in_m_1$1$clock)
     );
-    top$cnt_dop in_m_1$2(
+    top$cnt_dop$total in_m_1$2(
         .d(in_m_1$2$d),
         .q(in_m_1$2$q),
         .clock(in_m_1$2$clock)
     );
-    top$cnt_dop in_m_1$3(
+    top$cnt_dop$total in_m_1$3(
         .d(in_m_1$3$d),
         .q(in_m_1$3$q),
         .clock(in_m_1$3$clock)
     );
-    top$cnt_dop in_m_2$0(
+    top$cnt_dop$total in_m_2$0(
         .d(in_m_2$0$d),
         .q(in_m_2$0$q),
         .clock(in_m_2$0$clock)
     );
-    top$cnt_dop in_m_2$1(
+    top$cnt_dop$total in_m_2$1(
         .d(in_m_2$1$d),
         .q(in_m_2$1$q),
         .clock(in_m_2$1$clock)
     );
-    top$cnt_dop in_m_2$2(
+    top$cnt_dop$total in_m_2$2(
         .d(in_m_2$2$d),
         .q(in_m_2$2$q),
         .clock(in_m_2$2$clock)
     );
-    top$cnt_dop in_m_2$3(
+    top$cnt_dop$total in_m_2$3(
         .d(in_m_2$3$d),
         .q(in_m_2$3$q),
         .clock(in_m_2$3$clock)
     );
-    top$cnt_dop in_alpha_m(
+    top$cnt_dop$total in_alpha_m(
         .d(in_alpha_m$d),
         .q(in_alpha_m$q),
         .clock(in_alpha_m$clock)
     );
-    top$cnt_dop in_alpha_f(
+    top$cnt_dop$total in_alpha_f(
         .d(in_alpha_f$d),
         .q(in_alpha_f$q),
         .clock(in_alpha_f$clock)
     );
-    top$cnt_dop in_f_0$0(
+    top$cnt_dop$total in_f_0$0(
         .d(in_f_0$0$d),
         .q(in_f_0$0$q),
         .clock(in_f_0$0$clock)
     );
-    top$cnt_dop in_f_0$1(
+    top$cnt_dop$total in_f_0$1(
         .d(in_f_0$1$d),
         .q(in_f_0$1$q),
         .clock(in_f_0$1$clock)
     );
-    top$cnt_dop in_f_0$2(
+    top$cnt_dop$total in_f_0$2(
         .d(in_f_0$2$d),
         .q(in_f_0$2$q),
         .clock(in_f_0$2$clock)
     );
-    top$cnt_dop in_f_0$3(
+    top$cnt_dop$total in_f_0$3(
         .d(in_f_0$3$d),
         .q(in_f_0$3$q),
         .clock(in_f_0$3$clock)
     );
-    top$cnt_dop in_f_1$0(
+    top$cnt_dop$total in_f_1$0(
         .d(in_f_1$0$d),
         .q(in_f_1$0$q),
         .clock(in_f_1$0$clock)
     );
-    top$cnt_dop in_f_1$1(
+    top$cnt_dop$total in_f_1$1(
         .d(in_f_1$1$d),
         .q(in_f_1$1$q),
         .clock(in_f_1$1$clock)
     );
-    top$cnt_dop in_f_1$2(
+    top$cnt_dop$total in_f_1$2(
         .d(in_f_1$2$d),
         .q(in_f_1$2$q),
         .clock(in_f_1$2$clock)
     );
-    top$cnt_dop in_f_1$3(
+    top$cnt_dop$total in_f_1$3(
         .d(in_f_1$3$d),
         .q(in_f_1$3$q),
         .clock(in_f_1$3$clock)
     );
-    top$cnt_dop in_f_2$0(
+    top$cnt_dop$total in_f_2$0(
         .d(in_f_2$0$d),
         .q(in_f_2$0$q),
         .clock(in_f_2$0$clock)
     );
-    top$cnt_dop in_f_2$1(
+    top$cnt_dop$total in_f_2$1(
         .d(in_f_2$1$d),
         .q(in_f_2$1$q),
         .clock(in_f_2$1$clock)
     );
-    top$cnt_dop in_f_2$2(
+    top$cnt_dop$total in_f_2$2(
         .d(in_f_2$2$d),
         .q(in_f_2$2$q),
         .clock(in_f_2$2$clock)
     );
-    top$cnt_dop in_f_2$3(
+    top$cnt_dop$total in_f_2$3(
         .d(in_f_2$3$d),
         .q(in_f_2$3$q),
         .clock(in_f_2$3$clock)
     );
-    top$cnt_dop in_beta_m(
+    top$cnt_dop$total in_beta_m(
         .d(in_beta_m$d),
         .q(in_beta_m$q),
         .clock(in_beta_m$clock)
     );
-    top$cnt_dop in_beta_f(
+    top$cnt_dop$total in_beta_f(
         .d(in_beta_f$d),
         .q(in_beta_f$q),
         .clock(in_beta_f$clock)
     );
-    top$cnt_dop in_scale(
+    top$cnt_dop$total in_scale(
         .d(in_scale$d),
         .q(in_scale$q),
         .clock(in_scale$clock)
     );
-    top$cnt_dop in_v_x$0(
+    top$cnt_dop$total in_v_x$0(
         .d(in_v_x$0$d),
         .q(in_v_x$0$q),
         .clock(in_v_x$0$clock)
     );
-    top$cnt_dop in_v_x$1(
+    top$cnt_dop$total in_v_x$1(
         .d(in_v_x$1$d),
         .q(in_v_x$1$q),
         .clock(in_v_x$1$clock)
     );
-    top$cnt_dop in_v_x$2(
+    top$cnt_dop$total in_v_x$2(
         .d(in_v_x$2$d),
         .q(in_v_x$2$q),
         .clock(in_v_x$2$clock)
     );
-    top$cnt_dop in_v_y$0(
+    top$cnt_dop$total in_v_y$0(
         .d(in_v_y$0$d),
         .q(in_v_y$0$q),
         .clock(in_v_y$0$clock)
     );
-    top$cnt_dop in_v_y$1(
+    top$cnt_dop$total in_v_y$1(
         .d(in_v_y$1$d),
         .q(in_v_y$1$q),
         .clock(in_v_y$1$clock)
     );
-    top$cnt_dop in_v_y$2(
+    top$cnt_dop$total in_v_y$2(
         .d(in_v_y$2$d),
         .q(in_v_y$2$q),
         .clock(in_v_y$2$clock)
     );
-    top$cnt_dop in_v_z$0(
+    top$cnt_dop$total in_v_z$0(
         .d(in_v_z$0$d),
         .q(in_v_z$0$q),
         .clock(in_v_z$0$clock)
     );
-    top$cnt_dop in_v_z$1(
+    top$cnt_dop$total in_v_z$1(
         .d(in_v_z$1$d),
         .q(in_v_z$1$q),
         .clock(in_v_z$1$clock)
     );
-    top$cnt_dop in_v_z$2(
+    top$cnt_dop$total in_v_z$2(
         .d(in_v_z$2$d),
         .q(in_v_z$2$q),
         .clock(in_v_z$2$clock)
     );
-    top$d_cntr$ent_second in_v_exact(
+    top$cnt_dop$pending in_v_exact(
         .d(in_v_exact$d),
         .q(in_v_exact$q),
         .clock(in_v_exact$clock)
     );
-    top$cnt_dop in_tag(
+    top$cnt_dop$total in_tag(
         .d(in_tag$d),
         .q(in_tag$q),
         .clock(in_tag$clock)
     );
-    top$d_cntr$ent_second in_valid(
+    top$cnt_dop$pending in_valid(
         .d(in_valid$d),
         .q(in_valid$q),
         .clock(in_valid$clock)
@@ -20021,122 +20064,122 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
         .y(err$2$y),
         .valid_out(err$2$valid_out)
     );
-    top$cnt_dop mbr_0$0(
+    top$cnt_dop$total mbr_0$0(
         .d(mbr_0$0$d),
         .q(mbr_0$0$q),
         .clock(mbr_0$0$clock)
     );
-    top$cnt_dop mbr_0$1(
+    top$cnt_dop$total mbr_0$1(
         .d(mbr_0$1$d),
         .q(mbr_0$1$q),
         .clock(mbr_0$1$clock)
     );
-    top$cnt_dop mbr_0$2(
+    top$cnt_dop$total mbr_0$2(
         .d(mbr_0$2$d),
         .q(mbr_0$2$q),
         .clock(mbr_0$2$clock)
     );
-    top$cnt_dop mbr_0$3(
+    top$cnt_dop$total mbr_0$3(
         .d(mbr_0$3$d),
         .q(mbr_0$3$q),
         .clock(mbr_0$3$clock)
     );
-    top$cnt_dop mbr_1$0(
+    top$cnt_dop$total mbr_1$0(
         .d(mbr_1$0$d),
         .q(mbr_1$0$q),
         .clock(mbr_1$0$clock)
     );
-    top$cnt_dop mbr_1$1(
+    top$cnt_dop$total mbr_1$1(
         .d(mbr_1$1$d),
         .q(mbr_1$1$q),
         .clock(mbr_1$1$clock)
     );
-    top$cnt_dop mbr_1$2(
+    top$cnt_dop$total mbr_1$2(
         .d(mbr_1$2$d),
         .q(mbr_1$2$q),
         .clock(mbr_1$2$clock)
     );
-    top$cnt_dop mbr_1$3(
+    top$cnt_dop$total mbr_1$3(
         .d(mbr_1$3$d),
         .q(mbr_1$3$q),
         .clock(mbr_1$3$clock)
     );
-    top$cnt_dop mbr_2$0(
+    top$cnt_dop$total mbr_2$0(
         .d(mbr_2$0$d),
         .q(mbr_2$0$q),
         .clock(mbr_2$0$clock)
     );
-    top$cnt_dop mbr_2$1(
+    top$cnt_dop$total mbr_2$1(
         .d(mbr_2$1$d),
         .q(mbr_2$1$q),
         .clock(mbr_2$1$clock)
     );
-    top$cnt_dop mbr_2$2(
+    top$cnt_dop$total mbr_2$2(
         .d(mbr_2$2$d),
         .q(mbr_2$2$q),
         .clock(mbr_2$2$clock)
     );
-    top$cnt_dop mbr_2$3(
+    top$cnt_dop$total mbr_2$3(
         .d(mbr_2$3$d),
         .q(mbr_2$3$q),
         .clock(mbr_2$3$clock)
     );
-    top$cnt_dop mgr_0$0(
+    top$cnt_dop$total mgr_0$0(
         .d(mgr_0$0$d),
         .q(mgr_0$0$q),
         .clock(mgr_0$0$clock)
     );
-    top$cnt_dop mgr_0$1(
+    top$cnt_dop$total mgr_0$1(
         .d(mgr_0$1$d),
         .q(mgr_0$1$q),
         .clock(mgr_0$1$clock)
     );
-    top$cnt_dop mgr_0$2(
+    top$cnt_dop$total mgr_0$2(
         .d(mgr_0$2$d),
         .q(mgr_0$2$q),
         .clock(mgr_0$2$clock)
     );
-    top$cnt_dop mgr_0$3(
+    top$cnt_dop$total mgr_0$3(
         .d(mgr_0$3$d),
         .q(mgr_0$3$q),
         .clock(mgr_0$3$clock)
     );
-    top$cnt_dop mgr_1$0(
+    top$cnt_dop$total mgr_1$0(
         .d(mgr_1$0$d),
         .q(mgr_1$0$q),
         .clock(mgr_1$0$clock)
     );
-    top$cnt_dop mgr_1$1(
+    top$cnt_dop$total mgr_1$1(
         .d(mgr_1$1$d),
         .q(mgr_1$1$q),
         .clock(mgr_1$1$clock)
     );
-    top$cnt_dop mgr_1$2(
+    top$cnt_dop$total mgr_1$2(
         .d(mgr_1$2$d),
         .q(mgr_1$2$q),
         .clock(mgr_1$2$clock)
     );
-    top$cnt_dop mgr_1$3(
+    top$cnt_dop$total mgr_1$3(
         .d(mgr_1$3$d),
         .q(mgr_1$3$q),
         .clock(mgr_1$3$clock)
     );
-    top$cnt_dop mgr_2$0(
+    top$cnt_dop$total mgr_2$0(
         .d(mgr_2$0$d),
         .q(mgr_2$0$q),
         .clock(mgr_2$0$clock)
     );
-    top$cnt_dop mgr_2$1(
+    top$cnt_dop$total mgr_2$1(
         .d(mgr_2$1$d),
         .q(mgr_2$1$q),
         .clock(mgr_2$1$clock)
     );
-    top$cnt_dop mgr_2$2(
+    top$cnt_dop$total mgr_2$2(
         .d(mgr_2$2$d),
         .q(mgr_2$2$q),
         .clock(mgr_2$2$clock)
     );
-    top$cnt_dop mgr_2$3(
+    top$cnt_dop$total mgr_2$3(
         .d(mgr_2$3$d),
         .q(mgr_2$3$q),
         .clock(mgr_2$3$clock)
@@ -20495,92 +20538,92 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
         .c(vm_2$2$c),
         .y(vm_2$2$y)
     );
-    top$cnt_dop vtr_0$0(
+    top$cnt_dop$total vtr_0$0(
         .d(vtr_0$0$d),
         .q(vtr_0$0$q),
         .clock(vtr_0$0$clock)
     );
-    top$cnt_dop vtr_0$1(
+    top$cnt_dop$total vtr_0$1(
         .d(vtr_0$1$d),
         .q(vtr_0$1$q),
         .clock(vtr_0$1$clock)
     );
-    top$cnt_dop vtr_0$2(
+    top$cnt_dop$total vtr_0$2(
         .d(vtr_0$2$d),
         .q(vtr_0$2$q),
         .clock(vtr_0$2$clock)
     );
-    top$cnt_dop vtr_1$0(
+    top$cnt_dop$total vtr_1$0(
         .d(vtr_1$0$d),
         .q(vtr_1$0$q),
         .clock(vtr_1$0$clock)
     );
-    top$cnt_dop vtr_1$1(
+    top$cnt_dop$total vtr_1$1(
         .d(vtr_1$1$d),
         .q(vtr_1$1$q),
         .clock(vtr_1$1$clock)
     );
-    top$cnt_dop vtr_1$2(
+    top$cnt_dop$total vtr_1$2(
         .d(vtr_1$2$d),
         .q(vtr_1$2$q),
         .clock(vtr_1$2$clock)
     );
-    top$cnt_dop vtr_2$0(
+    top$cnt_dop$total vtr_2$0(
         .d(vtr_2$0$d),
         .q(vtr_2$0$q),
         .clock(vtr_2$0$clock)
     );
-    top$cnt_dop vtr_2$1(
+    top$cnt_dop$total vtr_2$1(
         .d(vtr_2$1$d),
         .q(vtr_2$1$q),
         .clock(vtr_2$1$clock)
     );
-    top$cnt_dop vtr_2$2(
+    top$cnt_dop$total vtr_2$2(
         .d(vtr_2$2$d),
         .q(vtr_2$2$q),
         .clock(vtr_2$2$clock)
     );
-    top$cnt_dop vmr_0$0(
+    top$cnt_dop$total vmr_0$0(
         .d(vmr_0$0$d),
         .q(vmr_0$0$q),
         .clock(vmr_0$0$clock)
     );
-    top$cnt_dop vmr_0$1(
+    top$cnt_dop$total vmr_0$1(
         .d(vmr_0$1$d),
         .q(vmr_0$1$q),
         .clock(vmr_0$1$clock)
     );
-    top$cnt_dop vmr_0$2(
+    top$cnt_dop$total vmr_0$2(
         .d(vmr_0$2$d),
         .q(vmr_0$2$q),
         .clock(vmr_0$2$clock)
     );
-    top$cnt_dop vmr_1$0(
+    top$cnt_dop$total vmr_1$0(
         .d(vmr_1$0$d),
         .q(vmr_1$0$q),
         .clock(vmr_1$0$clock)
     );
-    top$cnt_dop vmr_1$1(
+    top$cnt_dop$total vmr_1$1(
         .d(vmr_1$1$d),
         .q(vmr_1$1$q),
         .clock(vmr_1$1$clock)
     );
-    top$cnt_dop vmr_1$2(
+    top$cnt_dop$total vmr_1$2(
         .d(vmr_1$2$d),
         .q(vmr_1$2$q),
         .clock(vmr_1$2$clock)
     );
-    top$cnt_dop vmr_2$0(
+    top$cnt_dop$total vmr_2$0(
         .d(vmr_2$0$d),
         .q(vmr_2$0$q),
         .clock(vmr_2$0$clock)
     );
-    top$cnt_dop vmr_2$1(
+    top$cnt_dop$total vmr_2$1(
         .d(vmr_2$1$d),
         .q(vmr_2$1$q),
         .clock(vmr_2$1$clock)
     );
-    top$cnt_dop vmr_2$2(
+    top$cnt_dop$total vmr_2$2(
         .d(vmr_2$2$d),
         .q(vmr_2$2$q),
         .clock(vmr_2$2$clock)
@@ -20717,142 +20760,142 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
         .d(valid_wait$d),
         .q(valid_wait$q)
     );
-    top$d_cntr$ent_second v_cross_t$0(
+    top$cnt_dop$pending v_cross_t$0(
         .d(v_cross_t$0$d),
         .q(v_cross_t$0$q),
         .clock(v_cross_t$0$clock)
     );
-    top$d_cntr$ent_second v_cross_t$1(
+    top$cnt_dop$pending v_cross_t$1(
         .d(v_cross_t$1$d),
         .q(v_cross_t$1$q),
         .clock(v_cross_t$1$clock)
     );
-    top$d_cntr$ent_second v_cross_t$2(
+    top$cnt_dop$pending v_cross_t$2(
         .d(v_cross_t$2$d),
         .q(v_cross_t$2$q),
         .clock(v_cross_t$2$clock)
     );
-    top$d_cntr$ent_second v_cross_f$0(
+    top$cnt_dop$pending v_cross_f$0(
         .d(v_cross_f$0$d),
         .q(v_cross_f$0$q),
         .clock(v_cross_f$0$clock)
     );
-    top$d_cntr$ent_second v_cross_f$1(
+    top$cnt_dop$pending v_cross_f$1(
         .d(v_cross_f$1$d),
         .q(v_cross_f$1$q),
         .clock(v_cross_f$1$clock)
     );
-    top$d_cntr$ent_second v_cross_f$2(
+    top$cnt_dop$pending v_cross_f$2(
         .d(v_cross_f$2$d),
         .q(v_cross_f$2$q),
         .clock(v_cross_f$2$clock)
     );
-    top$cnt_dop v_s_x$0(
+    top$cnt_dop$total v_s_x$0(
         .d(v_s_x$0$d),
         .q(v_s_x$0$q),
         .clock(v_s_x$0$clock)
     );
-    top$cnt_dop v_s_x$1(
+    top$cnt_dop$total v_s_x$1(
         .d(v_s_x$1$d),
         .q(v_s_x$1$q),
         .clock(v_s_x$1$clock)
     );
-    top$cnt_dop v_s_x$2(
+    top$cnt_dop$total v_s_x$2(
         .d(v_s_x$2$d),
         .q(v_s_x$2$q),
         .clock(v_s_x$2$clock)
     );
-    top$cnt_dop v_s_b$0(
+    top$cnt_dop$total v_s_b$0(
         .d(v_s_b$0$d),
         .q(v_s_b$0$q),
         .clock(v_s_b$0$clock)
     );
-    top$cnt_dop v_s_b$1(
+    top$cnt_dop$total v_s_b$1(
         .d(v_s_b$1$d),
         .q(v_s_b$1$q),
         .clock(v_s_b$1$clock)
     );
-    top$cnt_dop v_s_b$2(
+    top$cnt_dop$total v_s_b$2(
         .d(v_s_b$2$d),
         .q(v_s_b$2$q),
         .clock(v_s_b$2$clock)
     );
-    top$cnt_dop out_s_x$0(
+    top$cnt_dop$total out_s_x$0(
         .d(out_s_x$0$d),
         .q(out_s_x$0$q),
         .clock(out_s_x$0$clock)
     );
-    top$cnt_dop out_s_x$1(
+    top$cnt_dop$total out_s_x$1(
         .d(out_s_x$1$d),
         .q(out_s_x$1$q),
         .clock(out_s_x$1$clock)
     );
-    top$cnt_dop out_s_x$2(
+    top$cnt_dop$total out_s_x$2(
         .d(out_s_x$2$d),
         .q(out_s_x$2$q),
         .clock(out_s_x$2$clock)
     );
-    top$cnt_dop out_s_b$0(
+    top$cnt_dop$total out_s_b$0(
         .d(out_s_b$0$d),
         .q(out_s_b$0$q),
         .clock(out_s_b$0$clock)
     );
-    top$cnt_dop out_s_b$1(
+    top$cnt_dop$total out_s_b$1(
         .d(out_s_b$1$d),
         .q(out_s_b$1$q),
         .clock(out_s_b$1$clock)
     );
-    top$cnt_dop out_s_b$2(
+    top$cnt_dop$total out_s_b$2(
         .d(out_s_b$2$d),
         .q(out_s_b$2$q),
         .clock(out_s_b$2$clock)
     );
-    top$d_cntr$ent_second out_cross_t$0(
+    top$cnt_dop$pending out_cross_t$0(
         .d(out_cross_t$0$d),
         .q(out_cross_t$0$q),
         .clock(out_cross_t$0$clock)
     );
-    top$d_cntr$ent_second out_cross_t$1(
+    top$cnt_dop$pending out_cross_t$1(
         .d(out_cross_t$1$d),
         .q(out_cross_t$1$q),
         .clock(out_cross_t$1$clock)
     );
-    top$d_cntr$ent_second out_cross_t$2(
+    top$cnt_dop$pending out_cross_t$2(
         .d(out_cross_t$2$d),
         .q(out_cross_t$2$q),
         .clock(out_cross_t$2$clock)
     );
-    top$d_cntr$ent_second out_cross_f$0(
+    top$cnt_dop$pending out_cross_f$0(
         .d(out_cross_f$0$d),
         .q(out_cross_f$0$q),
         .clock(out_cross_f$0$clock)
     );
-    top$d_cntr$ent_second out_cross_f$1(
+    top$cnt_dop$pending out_cross_f$1(
         .d(out_cross_f$1$d),
         .q(out_cross_f$1$q),
         .clock(out_cross_f$1$clock)
     );
-    top$d_cntr$ent_second out_cross_f$2(
+    top$cnt_dop$pending out_cross_f$2(
         .d(out_cross_f$2$d),
         .q(out_cross_f$2$q),
         .clock(out_cross_f$2$clock)
     );
-    top$d_cntr$ent_second out_hit(
+    top$cnt_dop$pending out_hit(
         .d(out_hit$d),
         .q(out_hit$q),
         .clock(out_hit$clock)
     );
-    top$d_cntr$ent_second out_miss(
+    top$cnt_dop$pending out_miss(
         .d(out_miss$d),
         .q(out_miss$q),
         .clock(out_miss$clock)
     );
-    top$cnt_dop out_tag(
+    top$cnt_dop$total out_tag(
         .d(out_tag$d),
         .q(out_tag$q),
         .clock(out_tag$clock)
     );
-    top$d_cntr$ent_second out_valid(
+    top$cnt_dop$pending out_valid(
         .d(out_valid$d),
         .q(out_valid$q),
         .clock(out_valid$clock)
@@ -21724,7 +21767,7 @@ module top$tri_unit$tc_ab$aerr_wait(clock,d,q);
     reg  line$0$clock;
     
     // Sub module instances
-    top$cnt_dop line$0(
+    top$cnt_dop$total line$0(
         .d(line$0$d),
         .q(line$0$q),
         .clock(line$0$clock)
@@ -21762,22 +21805,22 @@ module top$tri_unit$tc_ab$c3_0(clock,d,q);
     reg  line$3$clock;
     
     // Sub module instances
-    top$cnt_dop line$0(
+    top$cnt_dop$total line$0(
         .d(line$0$d),
         .q(line$0$q),
         .clock(line$0$clock)
     );
-    top$cnt_dop line$1(
+    top$cnt_dop$total line$1(
         .d(line$1$d),
         .q(line$1$q),
         .clock(line$1$clock)
     );
-    top$cnt_dop line$2(
+    top$cnt_dop$total line$2(
         .d(line$2$d),
         .q(line$2$q),
         .clock(line$2$clock)
     );
-    top$cnt_dop line$3(
+    top$cnt_dop$total line$3(
         .d(line$3$d),
         .q(line$3$q),
         .clock(line$3$clock)
@@ -22601,12 +22644,12 @@ module top$tri_unit$tc_ab$edges$0(clock,p0,p1,p2,q0,q1,q2,pe,qe,pg,qg,pf0,pf1,pf
         .q(r_s$q),
         .clock(r_s$clock)
     );
-    top$cnt_dop r_s_x(
+    top$cnt_dop$total r_s_x(
         .d(r_s_x$d),
         .q(r_s_x$q),
         .clock(r_s_x$clock)
     );
-    top$cnt_dop r_s_b(
+    top$cnt_dop$total r_s_b(
         .d(r_s_b$d),
         .q(r_s_b$q),
         .clock(r_s_b$clock)
@@ -23007,37 +23050,37 @@ module top$tri_unit$tc_ab$edges$0$a(clock,a,b,sub,valid_in,y,valid_out);
         .is_inf(unpack_b$is_inf),
         .is_nan(unpack_b$is_nan)
     );
-    top$d_cntr$ent_second s1_valid(
+    top$cnt_dop$pending s1_valid(
         .d(s1_valid$d),
         .q(s1_valid$q),
         .clock(s1_valid$clock)
     );
-    top$d_cntr$ent_second s1_nan(
+    top$cnt_dop$pending s1_nan(
         .d(s1_nan$d),
         .q(s1_nan$q),
         .clock(s1_nan$clock)
     );
-    top$d_cntr$ent_second s1_inf(
+    top$cnt_dop$pending s1_inf(
         .d(s1_inf$d),
         .q(s1_inf$q),
         .clock(s1_inf$clock)
     );
-    top$d_cntr$ent_second s1_inf_sign(
+    top$cnt_dop$pending s1_inf_sign(
         .d(s1_inf_sign$d),
         .q(s1_inf_sign$q),
         .clock(s1_inf_sign$clock)
     );
-    top$d_cntr$ent_second s1_zero_sign(
+    top$cnt_dop$pending s1_zero_sign(
         .d(s1_zero_sign$d),
         .q(s1_zero_sign$q),
         .clock(s1_zero_sign$clock)
     );
-    top$d_cntr$ent_second s1_sign(
+    top$cnt_dop$pending s1_sign(
         .d(s1_sign$d),
         .q(s1_sign$q),
         .clock(s1_sign$clock)
     );
-    top$d_cntr$ent_second s1_eff_sub(
+    top$cnt_dop$pending s1_eff_sub(
         .d(s1_eff_sub$d),
         .q(s1_eff_sub$q),
         .clock(s1_eff_sub$clock)
@@ -23062,32 +23105,32 @@ module top$tri_unit$tc_ab$edges$0$a(clock,a,b,sub,valid_in,y,valid_out);
         .y(norm$y),
         .lz(norm$lz)
     );
-    top$d_cntr$ent_second s2_valid(
+    top$cnt_dop$pending s2_valid(
         .d(s2_valid$d),
         .q(s2_valid$q),
         .clock(s2_valid$clock)
     );
-    top$d_cntr$ent_second s2_sign(
+    top$cnt_dop$pending s2_sign(
         .d(s2_sign$d),
         .q(s2_sign$q),
         .clock(s2_sign$clock)
     );
-    top$d_cntr$ent_second s2_nan(
+    top$cnt_dop$pending s2_nan(
         .d(s2_nan$d),
         .q(s2_nan$q),
         .clock(s2_nan$clock)
     );
-    top$d_cntr$ent_second s2_inf(
+    top$cnt_dop$pending s2_inf(
         .d(s2_inf$d),
         .q(s2_inf$q),
         .clock(s2_inf$clock)
     );
-    top$d_cntr$ent_second s2_zero(
+    top$cnt_dop$pending s2_zero(
         .d(s2_zero$d),
         .q(s2_zero$q),
         .clock(s2_zero$clock)
     );
-    top$d_cntr$ent_second s2_ovf(
+    top$cnt_dop$pending s2_ovf(
         .d(s2_ovf$d),
         .q(s2_ovf$q),
         .clock(s2_ovf$clock)
@@ -23113,12 +23156,12 @@ module top$tri_unit$tc_ab$edges$0$a(clock,a,b,sub,valid_in,y,valid_out);
         .nm(round$nm),
         .y(round$y)
     );
-    top$d_cntr$ent_second s3_valid(
+    top$cnt_dop$pending s3_valid(
         .d(s3_valid$d),
         .q(s3_valid$q),
         .clock(s3_valid$clock)
     );
-    top$cnt_dop s3_y(
+    top$cnt_dop$total s3_y(
         .d(s3_y$d),
         .q(s3_y$q),
         .clock(s3_y$clock)
@@ -23395,67 +23438,67 @@ module top$tri_unit$tc_ab$edges$0$a_wait(clock,d,q);
     reg  line$12$clock;
     
     // Sub module instances
-    top$cnt_dop line$0(
+    top$cnt_dop$total line$0(
         .d(line$0$d),
         .q(line$0$q),
         .clock(line$0$clock)
     );
-    top$cnt_dop line$1(
+    top$cnt_dop$total line$1(
         .d(line$1$d),
         .q(line$1$q),
         .clock(line$1$clock)
     );
-    top$cnt_dop line$2(
+    top$cnt_dop$total line$2(
         .d(line$2$d),
         .q(line$2$q),
         .clock(line$2$clock)
     );
-    top$cnt_dop line$3(
+    top$cnt_dop$total line$3(
         .d(line$3$d),
         .q(line$3$q),
         .clock(line$3$clock)
     );
-    top$cnt_dop line$4(
+    top$cnt_dop$total line$4(
         .d(line$4$d),
         .q(line$4$q),
         .clock(line$4$clock)
     );
-    top$cnt_dop line$5(
+    top$cnt_dop$total line$5(
         .d(line$5$d),
         .q(line$5$q),
         .clock(line$5$clock)
     );
-    top$cnt_dop line$6(
+    top$cnt_dop$total line$6(
         .d(line$6$d),
         .q(line$6$q),
         .clock(line$6$clock)
     );
-    top$cnt_dop line$7(
+    top$cnt_dop$total line$7(
         .d(line$7$d),
         .q(line$7$q),
         .clock(line$7$clock)
     );
-    top$cnt_dop line$8(
+    top$cnt_dop$total line$8(
         .d(line$8$d),
         .q(line$8$q),
         .clock(line$8$clock)
     );
-    top$cnt_dop line$9(
+    top$cnt_dop$total line$9(
         .d(line$9$d),
         .q(line$9$q),
         .clock(line$9$clock)
     );
-    top$cnt_dop line$10(
+    top$cnt_dop$total line$10(
         .d(line$10$d),
         .q(line$10$q),
         .clock(line$10$clock)
     );
-    top$cnt_dop line$11(
+    top$cnt_dop$total line$11(
         .d(line$11$d),
         .q(line$11$q),
         .clock(line$11$clock)
     );
-    top$cnt_dop line$12(
+    top$cnt_dop$total line$12(
         .d(line$12$d),
         .q(line$12$q),
         .clock(line$12$clock)
@@ -23526,17 +23569,17 @@ module top$tri_unit$tc_ab$edges$0$brs_wait(clock,d,q);
     reg  line$2$clock;
     
     // Sub module instances
-    top$cnt_dop line$0(
+    top$cnt_dop$total line$0(
         .d(line$0$d),
         .q(line$0$q),
         .clock(line$0$clock)
     );
-    top$cnt_dop line$1(
+    top$cnt_dop$total line$1(
         .d(line$1$d),
         .q(line$1$q),
         .clock(line$1$clock)
     );
-    top$cnt_dop line$2(
+    top$cnt_dop$total line$2(
         .d(line$2$d),
         .q(line$2$q),
         .clock(line$2$clock)
@@ -23589,37 +23632,37 @@ module top$tri_unit$tc_ab$edges$0$brz_wait(clock,d,q);
     reg  line$6$clock;
     
     // Sub module instances
-    top$cnt_dop line$0(
+    top$cnt_dop$total line$0(
         .d(line$0$d),
         .q(line$0$q),
         .clock(line$0$clock)
     );
-    top$cnt_dop line$1(
+    top$cnt_dop$total line$1(
         .d(line$1$d),
         .q(line$1$q),
         .clock(line$1$clock)
     );
-    top$cnt_dop line$2(
+    top$cnt_dop$total line$2(
         .d(line$2$d),
         .q(line$2$q),
         .clock(line$2$clock)
     );
-    top$cnt_dop line$3(
+    top$cnt_dop$total line$3(
         .d(line$3$d),
         .q(line$3$q),
         .clock(line$3$clock)
     );
-    top$cnt_dop line$4(
+    top$cnt_dop$total line$4(
         .d(line$4$d),
         .q(line$4$q),
         .clock(line$4$clock)
     );
-    top$cnt_dop line$5(
+    top$cnt_dop$total line$5(
         .d(line$5$d),
         .q(line$5$q),
         .clock(line$5$clock)
     );
-    top$cnt_dop line$6(
+    top$cnt_dop$total line$6(
         .d(line$6$d),
         .q(line$6$q),
         .clock(line$6$clock)
@@ -23825,27 +23868,27 @@ module top$tri_unit$tc_ab$edges$0$px_qz(clock,a,b,valid_in,y,valid_out);
         .y(norm_b$y),
         .lz(norm_b$lz)
     );
-    top$d_cntr$ent_second s1_valid(
+    top$cnt_dop$pending s1_valid(
         .d(s1_valid$d),
         .q(s1_valid$q),
         .clock(s1_valid$clock)
     );
-    top$d_cntr$ent_second s1_sign(
+    top$cnt_dop$pending s1_sign(
         .d(s1_sign$d),
         .q(s1_sign$q),
         .clock(s1_sign$clock)
     );
-    top$d_cntr$ent_second s1_nan(
+    top$cnt_dop$pending s1_nan(
         .d(s1_nan$d),
         .q(s1_nan$q),
         .clock(s1_nan$clock)
     );
-    top$d_cntr$ent_second s1_inf(
+    top$cnt_dop$pending s1_inf(
         .d(s1_inf$d),
         .q(s1_inf$q),
         .clock(s1_inf$clock)
     );
-    top$d_cntr$ent_second s1_zero(
+    top$cnt_dop$pending s1_zero(
         .d(s1_zero$d),
         .q(s1_zero$q),
         .clock(s1_zero$clock)
@@ -23871,27 +23914,27 @@ module top$tri_unit$tc_ab$edges$0$px_qz(clock,a,b,valid_in,y,valid_out);
         .hi(sig_mul$hi),
         .sticky(sig_mul$sticky)
     );
-    top$d_cntr$ent_second s2_valid(
+    top$cnt_dop$pending s2_valid(
         .d(s2_valid$d),
         .q(s2_valid$q),
         .clock(s2_valid$clock)
     );
-    top$d_cntr$ent_second s2_sign(
+    top$cnt_dop$pending s2_sign(
         .d(s2_sign$d),
         .q(s2_sign$q),
         .clock(s2_sign$clock)
     );
-    top$d_cntr$ent_second s2_nan(
+    top$cnt_dop$pending s2_nan(
         .d(s2_nan$d),
         .q(s2_nan$q),
         .clock(s2_nan$clock)
     );
-    top$d_cntr$ent_second s2_inf(
+    top$cnt_dop$pending s2_inf(
         .d(s2_inf$d),
         .q(s2_inf$q),
         .clock(s2_inf$clock)
     );
-    top$d_cntr$ent_second s2_zero(
+    top$cnt_dop$pending s2_zero(
         .d(s2_zero$d),
         .q(s2_zero$q),
         .clock(s2_zero$clock)
@@ -23906,37 +23949,37 @@ module top$tri_unit$tc_ab$edges$0$px_qz(clock,a,b,valid_in,y,valid_out);
         .q(s2_hi$q),
         .clock(s2_hi$clock)
     );
-    top$d_cntr$ent_second s2_sticky(
+    top$cnt_dop$pending s2_sticky(
         .d(s2_sticky$d),
         .q(s2_sticky$q),
         .clock(s2_sticky$clock)
     );
-    top$d_cntr$ent_second s3_valid(
+    top$cnt_dop$pending s3_valid(
         .d(s3_valid$d),
         .q(s3_valid$q),
         .clock(s3_valid$clock)
     );
-    top$d_cntr$ent_second s3_sign(
+    top$cnt_dop$pending s3_sign(
         .d(s3_sign$d),
         .q(s3_sign$q),
         .clock(s3_sign$clock)
     );
-    top$d_cntr$ent_second s3_nan(
+    top$cnt_dop$pending s3_nan(
         .d(s3_nan$d),
         .q(s3_nan$q),
         .clock(s3_nan$clock)
     );
-    top$d_cntr$ent_second s3_inf(
+    top$cnt_dop$pending s3_inf(
         .d(s3_inf$d),
         .q(s3_inf$q),
         .clock(s3_inf$clock)
     );
-    top$d_cntr$ent_second s3_zero(
+    top$cnt_dop$pending s3_zero(
         .d(s3_zero$d),
         .q(s3_zero$q),
         .clock(s3_zero$clock)
     );
-    top$d_cntr$ent_second s3_ovf(
+    top$cnt_dop$pending s3_ovf(
         .d(s3_ovf$d),
         .q(s3_ovf$q),
         .clock(s3_ovf$clock)
@@ -23962,12 +24005,12 @@ module top$tri_unit$tc_ab$edges$0$px_qz(clock,a,b,valid_in,y,valid_out);
         .nm(round$nm),
         .y(round$y)
     );
-    top$d_cntr$ent_second s4_valid(
+    top$cnt_dop$pending s4_valid(
         .d(s4_valid$d),
         .q(s4_valid$q),
         .clock(s4_valid$clock)
     );
-    top$cnt_dop s4_y(
+    top$cnt_dop$total s4_y(
         .d(s4_y$d),
         .q(s4_y$q),
         .clock(s4_y$clock)
@@ -24765,112 +24808,112 @@ module top$tri_unit$tc_ab$exact_wait(clock,d,q);
     reg  line$21$clock;
     
     // Sub module instances
-    top$d_cntr$ent_second line$0(
+    top$cnt_dop$pending line$0(
         .d(line$0$d),
         .q(line$0$q),
         .clock(line$0$clock)
     );
-    top$d_cntr$ent_second line$1(
+    top$cnt_dop$pending line$1(
         .d(line$1$d),
         .q(line$1$q),
         .clock(line$1$clock)
     );
-    top$d_cntr$ent_second line$2(
+    top$cnt_dop$pending line$2(
         .d(line$2$d),
         .q(line$2$q),
         .clock(line$2$clock)
     );
-    top$d_cntr$ent_second line$3(
+    top$cnt_dop$pending line$3(
         .d(line$3$d),
         .q(line$3$q),
         .clock(line$3$clock)
     );
-    top$d_cntr$ent_second line$4(
+    top$cnt_dop$pending line$4(
         .d(line$4$d),
         .q(line$4$q),
         .clock(line$4$clock)
     );
-    top$d_cntr$ent_second line$5(
+    top$cnt_dop$pending line$5(
         .d(line$5$d),
         .q(line$5$q),
         .clock(line$5$clock)
     );
-    top$d_cntr$ent_second line$6(
+    top$cnt_dop$pending line$6(
         .d(line$6$d),
         .q(line$6$q),
         .clock(line$6$clock)
     );
-    top$d_cntr$ent_second line$7(
+    top$cnt_dop$pending line$7(
         .d(line$7$d),
         .q(line$7$q),
         .clock(line$7$clock)
     );
-    top$d_cntr$ent_second line$8(
+    top$cnt_dop$pending line$8(
         .d(line$8$d),
         .q(line$8$q),
         .clock(line$8$clock)
     );
-    top$d_cntr$ent_second line$9(
+    top$cnt_dop$pending line$9(
         .d(line$9$d),
         .q(line$9$q),
         .clock(line$9$clock)
     );
-    top$d_cntr$ent_second line$10(
+    top$cnt_dop$pending line$10(
         .d(line$10$d),
         .q(line$10$q),
         .clock(line$10$clock)
     );
-    top$d_cntr$ent_second line$11(
+    top$cnt_dop$pending line$11(
         .d(line$11$d),
         .q(line$11$q),
         .clock(line$11$clock)
     );
-    top$d_cntr$ent_second line$12(
+    top$cnt_dop$pending line$12(
         .d(line$12$d),
         .q(line$12$q),
         .clock(line$12$clock)
     );
-    top$d_cntr$ent_second line$13(
+    top$cnt_dop$pending line$13(
         .d(line$13$d),
         .q(line$13$q),
         .clock(line$13$clock)
     );
-    top$d_cntr$ent_second line$14(
+    top$cnt_dop$pending line$14(
         .d(line$14$d),
         .q(line$14$q),
         .clock(line$14$clock)
     );
-    top$d_cntr$ent_second line$15(
+    top$cnt_dop$pending line$15(
         .d(line$15$d),
         .q(line$15$q),
         .clock(line$15$clock)
     );
-    top$d_cntr$ent_second line$16(
+    top$cnt_dop$pending line$16(
         .d(line$16$d),
         .q(line$16$q),
         .clock(line$16$clock)
     );
-    top$d_cntr$ent_second line$17(
+    top$cnt_dop$pending line$17(
         .d(line$17$d),
         .q(line$17$q),
         .clock(line$17$clock)
     );
-    top$d_cntr$ent_second line$18(
+    top$cnt_dop$pending line$18(
         .d(line$18$d),
         .q(line$18$q),
         .clock(line$18$clock)
     );
-    top$d_cntr$ent_second line$19(
+    top$cnt_dop$pending line$19(
         .d(line$19$d),
         .q(line$19$q),
         .clock(line$19$clock)
     );
-    top$d_cntr$ent_second line$20(
+    top$cnt_dop$pending line$20(
         .d(line$20$d),
         .q(line$20$q),
         .clock(line$20$clock)
     );
-    top$d_cntr$ent_second line$21(
+    top$cnt_dop$pending line$21(
         .d(line$21$d),
         .q(line$21$q),
         .clock(line$21$clock)
@@ -24965,12 +25008,12 @@ module top$tri_unit$tc_ab$l1_wait$0(clock,d,q);
     reg  line$1$clock;
     
     // Sub module instances
-    top$cnt_dop line$0(
+    top$cnt_dop$total line$0(
         .d(line$0$d),
         .q(line$0$q),
         .clock(line$0$clock)
     );
-    top$cnt_dop line$1(
+    top$cnt_dop$total line$1(
         .d(line$1$d),
         .q(line$1$q),
         .clock(line$1$clock)
@@ -25785,252 +25828,252 @@ module top$tri_unit$tc_ab$tag_wait(clock,d,q);
     reg  line$49$clock;
     
     // Sub module instances
-    top$cnt_dop line$0(
+    top$cnt_dop$total line$0(
         .d(line$0$d),
         .q(line$0$q),
         .clock(line$0$clock)
     );
-    top$cnt_dop line$1(
+    top$cnt_dop$total line$1(
         .d(line$1$d),
         .q(line$1$q),
         .clock(line$1$clock)
     );
-    top$cnt_dop line$2(
+    top$cnt_dop$total line$2(
         .d(line$2$d),
         .q(line$2$q),
         .clock(line$2$clock)
     );
-    top$cnt_dop line$3(
+    top$cnt_dop$total line$3(
         .d(line$3$d),
         .q(line$3$q),
         .clock(line$3$clock)
     );
-    top$cnt_dop line$4(
+    top$cnt_dop$total line$4(
         .d(line$4$d),
         .q(line$4$q),
         .clock(line$4$clock)
     );
-    top$cnt_dop line$5(
+    top$cnt_dop$total line$5(
         .d(line$5$d),
         .q(line$5$q),
         .clock(line$5$clock)
     );
-    top$cnt_dop line$6(
+    top$cnt_dop$total line$6(
         .d(line$6$d),
         .q(line$6$q),
         .clock(line$6$clock)
     );
-    top$cnt_dop line$7(
+    top$cnt_dop$total line$7(
         .d(line$7$d),
         .q(line$7$q),
         .clock(line$7$clock)
     );
-    top$cnt_dop line$8(
+    top$cnt_dop$total line$8(
         .d(line$8$d),
         .q(line$8$q),
         .clock(line$8$clock)
     );
-    top$cnt_dop line$9(
+    top$cnt_dop$total line$9(
         .d(line$9$d),
         .q(line$9$q),
         .clock(line$9$clock)
     );
-    top$cnt_dop line$10(
+    top$cnt_dop$total line$10(
         .d(line$10$d),
         .q(line$10$q),
         .clock(line$10$clock)
     );
-    top$cnt_dop line$11(
+    top$cnt_dop$total line$11(
         .d(line$11$d),
         .q(line$11$q),
         .clock(line$11$clock)
     );
-    top$cnt_dop line$12(
+    top$cnt_dop$total line$12(
         .d(line$12$d),
         .q(line$12$q),
         .clock(line$12$clock)
     );
-    top$cnt_dop line$13(
+    top$cnt_dop$total line$13(
         .d(line$13$d),
         .q(line$13$q),
         .clock(line$13$clock)
     );
-    top$cnt_dop line$14(
+    top$cnt_dop$total line$14(
         .d(line$14$d),
         .q(line$14$q),
         .clock(line$14$clock)
     );
-    top$cnt_dop line$15(
+    top$cnt_dop$total line$15(
         .d(line$15$d),
         .q(line$15$q),
         .clock(line$15$clock)
     );
-    top$cnt_dop line$16(
+    top$cnt_dop$total line$16(
         .d(line$16$d),
         .q(line$16$q),
         .clock(line$16$clock)
     );
-    top$cnt_dop line$17(
+    top$cnt_dop$total line$17(
         .d(line$17$d),
         .q(line$17$q),
         .clock(line$17$clock)
     );
-    top$cnt_dop line$18(
+    top$cnt_dop$total line$18(
         .d(line$18$d),
         .q(line$18$q),
         .clock(line$18$clock)
     );
-    top$cnt_dop line$19(
+    top$cnt_dop$total line$19(
         .d(line$19$d),
         .q(line$19$q),
         .clock(line$19$clock)
     );
-    top$cnt_dop line$20(
+    top$cnt_dop$total line$20(
         .d(line$20$d),
         .q(line$20$q),
         .clock(line$20$clock)
     );
-    top$cnt_dop line$21(
+    top$cnt_dop$total line$21(
         .d(line$21$d),
         .q(line$21$q),
         .clock(line$21$clock)
     );
-    top$cnt_dop line$22(
+    top$cnt_dop$total line$22(
         .d(line$22$d),
         .q(line$22$q),
         .clock(line$22$clock)
     );
-    top$cnt_dop line$23(
+    top$cnt_dop$total line$23(
         .d(line$23$d),
         .q(line$23$q),
         .clock(line$23$clock)
     );
-    top$cnt_dop line$24(
+    top$cnt_dop$total line$24(
         .d(line$24$d),
         .q(line$24$q),
         .clock(line$24$clock)
     );
-    top$cnt_dop line$25(
+    top$cnt_dop$total line$25(
         .d(line$25$d),
         .q(line$25$q),
         .clock(line$25$clock)
     );
-    top$cnt_dop line$26(
+    top$cnt_dop$total line$26(
         .d(line$26$d),
         .q(line$26$q),
         .clock(line$26$clock)
     );
-    top$cnt_dop line$27(
+    top$cnt_dop$total line$27(
         .d(line$27$d),
         .q(line$27$q),
         .clock(line$27$clock)
     );
-    top$cnt_dop line$28(
+    top$cnt_dop$total line$28(
         .d(line$28$d),
         .q(line$28$q),
         .clock(line$28$clock)
     );
-    top$cnt_dop line$29(
+    top$cnt_dop$total line$29(
         .d(line$29$d),
         .q(line$29$q),
         .clock(line$29$clock)
     );
-    top$cnt_dop line$30(
+    top$cnt_dop$total line$30(
         .d(line$30$d),
         .q(line$30$q),
         .clock(line$30$clock)
     );
-    top$cnt_dop line$31(
+    top$cnt_dop$total line$31(
         .d(line$31$d),
         .q(line$31$q),
         .clock(line$31$clock)
     );
-    top$cnt_dop line$32(
+    top$cnt_dop$total line$32(
         .d(line$32$d),
         .q(line$32$q),
         .clock(line$32$clock)
     );
-    top$cnt_dop line$33(
+    top$cnt_dop$total line$33(
         .d(line$33$d),
         .q(line$33$q),
         .clock(line$33$clock)
     );
-    top$cnt_dop line$34(
+    top$cnt_dop$total line$34(
         .d(line$34$d),
         .q(line$34$q),
         .clock(line$34$clock)
     );
-    top$cnt_dop line$35(
+    top$cnt_dop$total line$35(
         .d(line$35$d),
         .q(line$35$q),
         .clock(line$35$clock)
     );
-    top$cnt_dop line$36(
+    top$cnt_dop$total line$36(
         .d(line$36$d),
         .q(line$36$q),
         .clock(line$36$clock)
     );
-    top$cnt_dop line$37(
+    top$cnt_dop$total line$37(
         .d(line$37$d),
         .q(line$37$q),
         .clock(line$37$clock)
     );
-    top$cnt_dop line$38(
+    top$cnt_dop$total line$38(
         .d(line$38$d),
         .q(line$38$q),
         .clock(line$38$clock)
     );
-    top$cnt_dop line$39(
+    top$cnt_dop$total line$39(
         .d(line$39$d),
         .q(line$39$q),
         .clock(line$39$clock)
     );
-    top$cnt_dop line$40(
+    top$cnt_dop$total line$40(
         .d(line$40$d),
         .q(line$40$q),
         .clock(line$40$clock)
     );
-    top$cnt_dop line$41(
+    top$cnt_dop$total line$41(
         .d(line$41$d),
         .q(line$41$q),
         .clock(line$41$clock)
     );
-    top$cnt_dop line$42(
+    top$cnt_dop$total line$42(
         .d(line$42$d),
         .q(line$42$q),
         .clock(line$42$clock)
     );
-    top$cnt_dop line$43(
+    top$cnt_dop$total line$43(
         .d(line$43$d),
         .q(line$43$q),
         .clock(line$43$clock)
     );
-    top$cnt_dop line$44(
+    top$cnt_dop$total line$44(
         .d(line$44$d),
         .q(line$44$q),
         .clock(line$44$clock)
     );
-    top$cnt_dop line$45(
+    top$cnt_dop$total line$45(
         .d(line$45$d),
         .q(line$45$q),
         .clock(line$45$clock)
     );
-    top$cnt_dop line$46(
+    top$cnt_dop$total line$46(
         .d(line$46$d),
         .q(line$46$q),
         .clock(line$46$clock)
     );
-    top$cnt_dop line$47(
+    top$cnt_dop$total line$47(
         .d(line$47$d),
         .q(line$47$q),
         .clock(line$47$clock)
     );
-    top$cnt_dop line$48(
+    top$cnt_dop$total line$48(
         .d(line$48$d),
         .q(line$48$q),
         .clock(line$48$clock)
     );
-    top$cnt_dop line$49(
+    top$cnt_dop$total line$49(
         .d(line$49$d),
         .q(line$49$q),
         .clock(line$49$clock)
@@ -26236,57 +26279,57 @@ module top$tri_unit$tc_ab$v_x_wait$0(clock,d,q);
     reg  line$10$clock;
     
     // Sub module instances
-    top$cnt_dop line$0(
+    top$cnt_dop$total line$0(
         .d(line$0$d),
         .q(line$0$q),
         .clock(line$0$clock)
     );
-    top$cnt_dop line$1(
+    top$cnt_dop$total line$1(
         .d(line$1$d),
         .q(line$1$q),
         .clock(line$1$clock)
     );
-    top$cnt_dop line$2(
+    top$cnt_dop$total line$2(
         .d(line$2$d),
         .q(line$2$q),
         .clock(line$2$clock)
     );
-    top$cnt_dop line$3(
+    top$cnt_dop$total line$3(
         .d(line$3$d),
         .q(line$3$q),
         .clock(line$3$clock)
     );
-    top$cnt_dop line$4(
+    top$cnt_dop$total line$4(
         .d(line$4$d),
         .q(line$4$q),
         .clock(line$4$clock)
     );
-    top$cnt_dop line$5(
+    top$cnt_dop$total line$5(
         .d(line$5$d),
         .q(line$5$q),
         .clock(line$5$clock)
     );
-    top$cnt_dop line$6(
+    top$cnt_dop$total line$6(
         .d(line$6$d),
         .q(line$6$q),
         .clock(line$6$clock)
     );
-    top$cnt_dop line$7(
+    top$cnt_dop$total line$7(
         .d(line$7$d),
         .q(line$7$q),
         .clock(line$7$clock)
     );
-    top$cnt_dop line$8(
+    top$cnt_dop$total line$8(
         .d(line$8$d),
         .q(line$8$q),
         .clock(line$8$clock)
     );
-    top$cnt_dop line$9(
+    top$cnt_dop$total line$9(
         .d(line$9$d),
         .q(line$9$q),
         .clock(line$9$clock)
     );
-    top$cnt_dop line$10(
+    top$cnt_dop$total line$10(
         .d(line$10$d),
         .q(line$10$q),
         .clock(line$10$clock)
@@ -26492,252 +26535,252 @@ module top$tri_unit$tc_ab$valid_wait(clock,d,q);
     reg  line$49$clock;
     
     // Sub module instances
-    top$d_cntr$ent_second line$0(
+    top$cnt_dop$pending line$0(
         .d(line$0$d),
         .q(line$0$q),
         .clock(line$0$clock)
     );
-    top$d_cntr$ent_second line$1(
+    top$cnt_dop$pending line$1(
         .d(line$1$d),
         .q(line$1$q),
         .clock(line$1$clock)
     );
-    top$d_cntr$ent_second line$2(
+    top$cnt_dop$pending line$2(
         .d(line$2$d),
         .q(line$2$q),
         .clock(line$2$clock)
     );
-    top$d_cntr$ent_second line$3(
+    top$cnt_dop$pending line$3(
         .d(line$3$d),
         .q(line$3$q),
         .clock(line$3$clock)
     );
-    top$d_cntr$ent_second line$4(
+    top$cnt_dop$pending line$4(
         .d(line$4$d),
         .q(line$4$q),
         .clock(line$4$clock)
     );
-    top$d_cntr$ent_second line$5(
+    top$cnt_dop$pending line$5(
         .d(line$5$d),
         .q(line$5$q),
         .clock(line$5$clock)
     );
-    top$d_cntr$ent_second line$6(
+    top$cnt_dop$pending line$6(
         .d(line$6$d),
         .q(line$6$q),
         .clock(line$6$clock)
     );
-    top$d_cntr$ent_second line$7(
+    top$cnt_dop$pending line$7(
         .d(line$7$d),
         .q(line$7$q),
         .clock(line$7$clock)
     );
-    top$d_cntr$ent_second line$8(
+    top$cnt_dop$pending line$8(
         .d(line$8$d),
         .q(line$8$q),
         .clock(line$8$clock)
     );
-    top$d_cntr$ent_second line$9(
+    top$cnt_dop$pending line$9(
         .d(line$9$d),
         .q(line$9$q),
         .clock(line$9$clock)
     );
-    top$d_cntr$ent_second line$10(
+    top$cnt_dop$pending line$10(
         .d(line$10$d),
         .q(line$10$q),
         .clock(line$10$clock)
     );
-    top$d_cntr$ent_second line$11(
+    top$cnt_dop$pending line$11(
         .d(line$11$d),
         .q(line$11$q),
         .clock(line$11$clock)
     );
-    top$d_cntr$ent_second line$12(
+    top$cnt_dop$pending line$12(
         .d(line$12$d),
         .q(line$12$q),
         .clock(line$12$clock)
     );
-    top$d_cntr$ent_second line$13(
+    top$cnt_dop$pending line$13(
         .d(line$13$d),
         .q(line$13$q),
         .clock(line$13$clock)
     );
-    top$d_cntr$ent_second line$14(
+    top$cnt_dop$pending line$14(
         .d(line$14$d),
         .q(line$14$q),
         .clock(line$14$clock)
     );
-    top$d_cntr$ent_second line$15(
+    top$cnt_dop$pending line$15(
         .d(line$15$d),
         .q(line$15$q),
         .clock(line$15$clock)
     );
-    top$d_cntr$ent_second line$16(
+    top$cnt_dop$pending line$16(
         .d(line$16$d),
         .q(line$16$q),
         .clock(line$16$clock)
     );
-    top$d_cntr$ent_second line$17(
+    top$cnt_dop$pending line$17(
         .d(line$17$d),
         .q(line$17$q),
         .clock(line$17$clock)
     );
-    top$d_cntr$ent_second line$18(
+    top$cnt_dop$pending line$18(
         .d(line$18$d),
         .q(line$18$q),
         .clock(line$18$clock)
     );
-    top$d_cntr$ent_second line$19(
+    top$cnt_dop$pending line$19(
         .d(line$19$d),
         .q(line$19$q),
         .clock(line$19$clock)
     );
-    top$d_cntr$ent_second line$20(
+    top$cnt_dop$pending line$20(
         .d(line$20$d),
         .q(line$20$q),
         .clock(line$20$clock)
     );
-    top$d_cntr$ent_second line$21(
+    top$cnt_dop$pending line$21(
         .d(line$21$d),
         .q(line$21$q),
         .clock(line$21$clock)
     );
-    top$d_cntr$ent_second line$22(
+    top$cnt_dop$pending line$22(
         .d(line$22$d),
         .q(line$22$q),
         .clock(line$22$clock)
     );
-    top$d_cntr$ent_second line$23(
+    top$cnt_dop$pending line$23(
         .d(line$23$d),
         .q(line$23$q),
         .clock(line$23$clock)
     );
-    top$d_cntr$ent_second line$24(
+    top$cnt_dop$pending line$24(
         .d(line$24$d),
         .q(line$24$q),
         .clock(line$24$clock)
     );
-    top$d_cntr$ent_second line$25(
+    top$cnt_dop$pending line$25(
         .d(line$25$d),
         .q(line$25$q),
         .clock(line$25$clock)
     );
-    top$d_cntr$ent_second line$26(
+    top$cnt_dop$pending line$26(
         .d(line$26$d),
         .q(line$26$q),
         .clock(line$26$clock)
     );
-    top$d_cntr$ent_second line$27(
+    top$cnt_dop$pending line$27(
         .d(line$27$d),
         .q(line$27$q),
         .clock(line$27$clock)
     );
-    top$d_cntr$ent_second line$28(
+    top$cnt_dop$pending line$28(
         .d(line$28$d),
         .q(line$28$q),
         .clock(line$28$clock)
     );
-    top$d_cntr$ent_second line$29(
+    top$cnt_dop$pending line$29(
         .d(line$29$d),
         .q(line$29$q),
         .clock(line$29$clock)
     );
-    top$d_cntr$ent_second line$30(
+    top$cnt_dop$pending line$30(
         .d(line$30$d),
         .q(line$30$q),
         .clock(line$30$clock)
     );
-    top$d_cntr$ent_second line$31(
+    top$cnt_dop$pending line$31(
         .d(line$31$d),
         .q(line$31$q),
         .clock(line$31$clock)
     );
-    top$d_cntr$ent_second line$32(
+    top$cnt_dop$pending line$32(
         .d(line$32$d),
         .q(line$32$q),
         .clock(line$32$clock)
     );
-    top$d_cntr$ent_second line$33(
+    top$cnt_dop$pending line$33(
         .d(line$33$d),
         .q(line$33$q),
         .clock(line$33$clock)
     );
-    top$d_cntr$ent_second line$34(
+    top$cnt_dop$pending line$34(
         .d(line$34$d),
         .q(line$34$q),
         .clock(line$34$clock)
     );
-    top$d_cntr$ent_second line$35(
+    top$cnt_dop$pending line$35(
         .d(line$35$d),
         .q(line$35$q),
         .clock(line$35$clock)
     );
-    top$d_cntr$ent_second line$36(
+    top$cnt_dop$pending line$36(
         .d(line$36$d),
         .q(line$36$q),
         .clock(line$36$clock)
     );
-    top$d_cntr$ent_second line$37(
+    top$cnt_dop$pending line$37(
         .d(line$37$d),
         .q(line$37$q),
         .clock(line$37$clock)
     );
-    top$d_cntr$ent_second line$38(
+    top$cnt_dop$pending line$38(
         .d(line$38$d),
         .q(line$38$q),
         .clock(line$38$clock)
     );
-    top$d_cntr$ent_second line$39(
+    top$cnt_dop$pending line$39(
         .d(line$39$d),
         .q(line$39$q),
         .clock(line$39$clock)
     );
-    top$d_cntr$ent_second line$40(
+    top$cnt_dop$pending line$40(
         .d(line$40$d),
         .q(line$40$q),
         .clock(line$40$clock)
     );
-    top$d_cntr$ent_second line$41(
+    top$cnt_dop$pending line$41(
         .d(line$41$d),
         .q(line$41$q),
         .clock(line$41$clock)
     );
-    top$d_cntr$ent_second line$42(
+    top$cnt_dop$pending line$42(
         .d(line$42$d),
         .q(line$42$q),
         .clock(line$42$clock)
     );
-    top$d_cntr$ent_second line$43(
+    top$cnt_dop$pending line$43(
         .d(line$43$d),
         .q(line$43$q),
         .clock(line$43$clock)
     );
-    top$d_cntr$ent_second line$44(
+    top$cnt_dop$pending line$44(
         .d(line$44$d),
         .q(line$44$q),
         .clock(line$44$clock)
     );
-    top$d_cntr$ent_second line$45(
+    top$cnt_dop$pending line$45(
         .d(line$45$d),
         .q(line$45$q),
         .clock(line$45$clock)
     );
-    top$d_cntr$ent_second line$46(
+    top$cnt_dop$pending line$46(
         .d(line$46$d),
         .q(line$46$q),
         .clock(line$46$clock)
     );
-    top$d_cntr$ent_second line$47(
+    top$cnt_dop$pending line$47(
         .d(line$47$d),
         .q(line$47$q),
         .clock(line$47$clock)
     );
-    top$d_cntr$ent_second line$48(
+    top$cnt_dop$pending line$48(
         .d(line$48$d),
         .q(line$48$q),
         .clock(line$48$clock)
     );
-    top$d_cntr$ent_second line$49(
+    top$cnt_dop$pending line$49(
         .d(line$49$d),
         .q(line$49$q),
         .clock(line$49$clock)

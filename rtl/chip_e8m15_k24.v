@@ -343,18 +343,22 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
     wire  result$give;
     wire  result$sure_hit;
     wire  [8:0] result$open;
-    reg  [31:0] cnt_dop$d;
-    wire  [31:0] cnt_dop$q;
     reg  cnt_dop$clock;
-    reg  [31:0] cnt_tri$d;
-    wire  [31:0] cnt_tri$q;
+    reg  cnt_dop$clear;
+    reg  cnt_dop$inc;
+    wire  [31:0] cnt_dop$count;
     reg  cnt_tri$clock;
-    reg  [31:0] cnt_nf$d;
-    wire  [31:0] cnt_nf$q;
+    reg  cnt_tri$clear;
+    reg  cnt_tri$inc;
+    wire  [31:0] cnt_tri$count;
     reg  cnt_nf$clock;
-    reg  [31:0] cnt_tf$d;
-    wire  [31:0] cnt_tf$q;
+    reg  cnt_nf$clear;
+    reg  cnt_nf$inc;
+    wire  [31:0] cnt_nf$count;
     reg  cnt_tf$clock;
+    reg  cnt_tf$clear;
+    reg  cnt_tf$inc;
+    wire  [31:0] cnt_tf$count;
     
     // Local signals
     reg  [15:0] id_mask;
@@ -374,17 +378,17 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
     reg  halt_idle;
     
     // Sub module instances
-    top$d_cntr$ent_second mode_lifo(
+    top$cnt_dop$pending mode_lifo(
         .d(mode_lifo$d),
         .q(mode_lifo$q),
         .clock(mode_lifo$clock)
     );
-    top$d_cntr$ent_second mode_first(
+    top$cnt_dop$pending mode_first(
         .d(mode_first$d),
         .q(mode_first$q),
         .clock(mode_first$clock)
     );
-    top$d_cntr$ent_second mode_rec(
+    top$cnt_dop$pending mode_rec(
         .d(mode_rec$d),
         .q(mode_rec$q),
         .clock(mode_rec$clock)
@@ -394,7 +398,7 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         .q(mode_slot$q),
         .clock(mode_slot$clock)
     );
-    top$cnt_dop root(
+    top$cnt_dop$total root(
         .d(root$d),
         .q(root$q),
         .clock(root$clock)
@@ -424,22 +428,22 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         .q(map$q),
         .clock(map$clock)
     );
-    top$d_cntr$ent_second run(
+    top$cnt_dop$pending run(
         .d(run$d),
         .q(run$q),
         .clock(run$clock)
     );
-    top$d_cntr$ent_second done_r(
+    top$cnt_dop$pending done_r(
         .d(done_r$d),
         .q(done_r$q),
         .clock(done_r$clock)
     );
-    top$d_cntr$ent_second push_root(
+    top$cnt_dop$pending push_root(
         .d(push_root$d),
         .q(push_root$q),
         .clock(push_root$clock)
     );
-    top$d_cntr$ent_second stop(
+    top$cnt_dop$pending stop(
         .d(stop$d),
         .q(stop$q),
         .clock(stop$clock)
@@ -454,7 +458,7 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         .q(port_out$q),
         .clock(port_out$clock)
     );
-    top$d_cntr$ent_second port_one(
+    top$cnt_dop$pending port_one(
         .d(port_one$d),
         .q(port_one$q),
         .clock(port_one$clock)
@@ -629,7 +633,7 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         .q(leaf_count$q),
         .clock(leaf_count$clock)
     );
-    top$d_cntr$ent_second leaf_valid(
+    top$cnt_dop$pending leaf_valid(
         .d(leaf_valid$d),
         .q(leaf_valid$q),
         .clock(leaf_valid$clock)
@@ -656,7 +660,7 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         .hit(tri_cache$hit),
         .word(tri_cache$word)
     );
-    top$d_cntr$ent_second tb_ok(
+    top$cnt_dop$pending tb_ok(
         .d(tb_ok$d),
         .q(tb_ok$q),
         .clock(tb_ok$clock)
@@ -752,24 +756,28 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         .open(result$open)
     );
     top$cnt_dop cnt_dop(
-        .d(cnt_dop$d),
-        .q(cnt_dop$q),
-        .clock(cnt_dop$clock)
+        .clock(cnt_dop$clock),
+        .clear(cnt_dop$clear),
+        .inc(cnt_dop$inc),
+        .count(cnt_dop$count)
     );
     top$cnt_dop cnt_tri(
-        .d(cnt_tri$d),
-        .q(cnt_tri$q),
-        .clock(cnt_tri$clock)
+        .clock(cnt_tri$clock),
+        .clear(cnt_tri$clear),
+        .inc(cnt_tri$inc),
+        .count(cnt_tri$count)
     );
     top$cnt_dop cnt_nf(
-        .d(cnt_nf$d),
-        .q(cnt_nf$q),
-        .clock(cnt_nf$clock)
+        .clock(cnt_nf$clock),
+        .clear(cnt_nf$clear),
+        .inc(cnt_nf$inc),
+        .count(cnt_nf$count)
     );
     top$cnt_dop cnt_tf(
-        .d(cnt_tf$d),
-        .q(cnt_tf$q),
-        .clock(cnt_tf$clock)
+        .clock(cnt_tf$clock),
+        .clear(cnt_tf$clear),
+        .inc(cnt_tf$inc),
+        .count(cnt_tf$count)
     );
     
     // Update code
@@ -824,14 +832,6 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         tb_ok$d = tb_ok$q;
         tb_id$d = tb_id$q;
         tb_word$d = tb_word$q;
-        cnt_dop$clock = clock;
-        cnt_tri$clock = clock;
-        cnt_nf$clock = clock;
-        cnt_tf$clock = clock;
-        cnt_dop$d = cnt_dop$q;
-        cnt_tri$d = cnt_tri$q;
-        cnt_nf$d = cnt_nf$q;
-        cnt_tf$d = cnt_tf$q;
         d_cntr$clock = clock;
         mem_port$clock = clock;
         dop$clock = clock;
@@ -840,6 +840,10 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         tri_cache$clock = clock;
         tri_unit$clock = clock;
         result$clock = clock;
+        cnt_dop$clock = clock;
+        cnt_tri$clock = clock;
+        cnt_nf$clock = clock;
+        cnt_tf$clock = clock;
         dop$load_en = host_we & (host_addr[(32'h8)+:(2)] == 32'h0);
         dop$load_addr = host_addr[(32'h0)+:(8)];
         dop$load_data = host_data[(32'h0)+:(24)];
@@ -944,14 +948,8 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         mem_port$mem_resp_data = mem_resp_data;
         mem_req_valid = mem_port$mem_req_valid;
         mem_req_addr = mem_port$mem_req_addr;
-        if (mem_port$accept) begin
-            if (mem_port$req_dst[32'h1]) begin
-                cnt_tf$d = cnt_tf$q + 32'h1;
-            end
-            else begin
-                cnt_nf$d = cnt_nf$q + 32'h1;
-            end
-        end
+        cnt_tf$inc = mem_port$accept & mem_port$req_dst[32'h1];
+        cnt_nf$inc = mem_port$accept & ~mem_port$req_dst[32'h1];
         tri_cache$fill = mem_port$resp & (mem_port$resp_dst == 32'h2);
         tri_cache$fill_id = mem_port$ta_req;
         tri_cache$fill_word = mem_resp_data[(32'h0)+:(554)];
@@ -1013,18 +1011,16 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         dop$tag = d_cntr$cur_a;
         dop$valid_in = d_cntr$issue;
         side$d = ((d_cntr$cur_a) & 99'h7ffffffffffffffffffffffff) | (((d_cntr$cur_b) & 99'h7ffffffffffffffffffffffff) << 32'h10) | (((d_cntr$cur_flip) & 99'h7ffffffffffffffffffffffff) << 32'h20) | (((mem_port$na_in[(32'h0)+:(1)]) & 99'h7ffffffffffffffffffffffff) << 32'h21) | (((mem_port$na_in[(32'h1 + 32'h18 * 32'h18)+:(16)]) & 99'h7ffffffffffffffffffffffff) << 32'h22) | (((mem_port$na_in[(32'h21 + 32'h18 * 32'h18)+:(16)]) & 99'h7ffffffffffffffffffffffff) << 32'h32) | (((mem_port$nb_in[(32'h0)+:(1)]) & 99'h7ffffffffffffffffffffffff) << 32'h42) | (((mem_port$nb_in[(32'h1 + 32'h18 * 32'h18)+:(16)]) & 99'h7ffffffffffffffffffffffff) << 32'h43) | (((mem_port$nb_in[(32'h21 + 32'h18 * 32'h18)+:(16)]) & 99'h7ffffffffffffffffffffffff) << 32'h53);
-        if (d_cntr$issue) begin
-            cnt_dop$d = cnt_dop$q + 32'h1;
-        end
+        cnt_dop$inc = d_cntr$issue;
         leaf_fifo$write = d_cntr$leaf_in;
         leaf_fifo$data_in = d_cntr$leaf_pair;
         tri_in = run$q & ~halt & leaf_valid$q & ~need_ta & ~need_tb;
         tri_take = tri_in & tri_unit$in_ready;
+        cnt_tri$inc = tri_take;
         leaf_out = ~leaf_fifo$empty & (halt | (run$q & (~leaf_valid$q | tri_take)));
         leaf_fifo$read = leaf_out;
         if (tri_take) begin
             leaf_valid$d = 1'b0;
-            cnt_tri$d = cnt_tri$q + 32'h1;
         end
         if (leaf_out & ~halt) begin
             leaf_valid$d = 1'b1;
@@ -1122,19 +1118,19 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
             stop$d = 1'b0;
             leaf_valid$d = 1'b0;
             tb_ok$d = 1'b0;
-            cnt_dop$d = 32'h0;
-            cnt_tri$d = 32'h0;
-            cnt_nf$d = 32'h0;
-            cnt_tf$d = 32'h0;
         end
         busy = run$q;
         done = done_r$q;
         overflow = d_cntr$overflow;
         max_depth = d_cntr$max_count;
-        dop_tests = cnt_dop$q;
-        tri_tests = cnt_tri$q;
-        node_fetches = cnt_nf$q;
-        tri_fetches = cnt_tf$q;
+        cnt_dop$clear = start_q;
+        cnt_tri$clear = start_q;
+        cnt_nf$clear = start_q;
+        cnt_tf$clear = start_q;
+        dop_tests = cnt_dop$count;
+        tri_tests = cnt_tri$count;
+        node_fetches = cnt_nf$count;
+        tri_fetches = cnt_tf$count;
     end
     
 endmodule // top
@@ -1159,7 +1155,73 @@ module top$base_na(d,q,clock);
 endmodule // top$base_na
 
 
-module top$cnt_dop(d,q,clock);
+module top$cnt_dop(clock,clear,inc,count);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  clear;
+    input wire  inc;
+    output reg  [31:0] count;
+    
+    // Stub signals
+    reg  [31:0] total$d;
+    wire  [31:0] total$q;
+    reg  total$clock;
+    reg  pending$d;
+    wire  pending$q;
+    reg  pending$clock;
+    
+    // Sub module instances
+    top$cnt_dop$total total(
+        .d(total$d),
+        .q(total$q),
+        .clock(total$clock)
+    );
+    top$cnt_dop$pending pending(
+        .d(pending$d),
+        .q(pending$q),
+        .clock(pending$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        total$clock = clock;
+        total$d = total$q;
+        pending$clock = clock;
+        pending$d = inc;
+        if (pending$q) begin
+            total$d = total$q + 32'h1;
+        end
+        if (clear) begin
+            total$d = 32'h0;
+            pending$d = 1'b0;
+        end
+        count = total$q + ((pending$q) & 32'hffffffff);
+    end
+    
+endmodule // top$cnt_dop
+
+
+module top$cnt_dop$pending(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cnt_dop$pending
+
+
+module top$cnt_dop$total(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -1175,7 +1237,7 @@ module top$cnt_dop(d,q,clock);
        q <= d;
     end
           
-endmodule // top$cnt_dop
+endmodule // top$cnt_dop$total
 
 
 module top$d_cntr(clock,clear,lifo,push_root,root,go,pf,one,credit_lim,leaf_count,id_mask,wa_empty,wb_empty,dop_valid,dop_overlap,side,empty,count,max_count,overflow,push,pop,pop_entry,pop_fetch,ent_valid,cur_a,cur_b,cur_flip,cur_fa,cur_fb,need_na,need_nb,issue,r_a,r_b,r_a_leaf,r_b_leaf,leaf_in,leaf_pair,inflight,pend);
@@ -1362,12 +1424,12 @@ module top$d_cntr(clock,clear,lifo,push_root,root,go,pf,one,credit_lim,leaf_coun
         .q(ahd_pairs$q),
         .clock(ahd_pairs$clock)
     );
-    top$d_cntr$ent_second ent_second(
+    top$cnt_dop$pending ent_second(
         .d(ent_second$d),
         .q(ent_second$q),
         .clock(ent_second$clock)
     );
-    top$d_cntr$ent_second last_ok(
+    top$cnt_dop$pending last_ok(
         .d(last_ok$d),
         .q(last_ok$q),
         .clock(last_ok$clock)
@@ -1382,7 +1444,7 @@ module top$d_cntr(clock,clear,lifo,push_root,root,go,pf,one,credit_lim,leaf_coun
         .q(last_b$q),
         .clock(last_b$clock)
     );
-    top$d_cntr$ent_second last_issue(
+    top$cnt_dop$pending last_issue(
         .d(last_issue$d),
         .q(last_issue$q),
         .clock(last_issue$clock)
@@ -1392,7 +1454,7 @@ module top$d_cntr(clock,clear,lifo,push_root,root,go,pf,one,credit_lim,leaf_coun
         .q(inflight_r$q),
         .clock(inflight_r$clock)
     );
-    top$d_cntr$ent_second pend_r(
+    top$cnt_dop$pending pend_r(
         .d(pend_r$d),
         .q(pend_r$q),
         .clock(pend_r$clock)
@@ -2210,25 +2272,6 @@ module top$d_cntr$ahd_pairs(d,q,clock);
 endmodule // top$d_cntr$ahd_pairs
 
 
-module top$d_cntr$ent_second(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$d_cntr$ent_second
-
-
 module top$d_cntr$last_a(d,q,clock);
     
     // Module arguments
@@ -2371,7 +2414,7 @@ module top$d_cntr$queue(clock,clear,lifo,push,push_data,push2,push2_data,pop,emp
         .q(wr_ptr$q),
         .clock(wr_ptr$clock)
     );
-    top$d_cntr$ent_second byp(
+    top$cnt_dop$pending byp(
         .d(byp$d),
         .q(byp$q),
         .clock(byp$clock)
@@ -2381,12 +2424,12 @@ module top$d_cntr$queue(clock,clear,lifo,push,push_data,push2,push2_data,pop,emp
         .q(byp_data$q),
         .clock(byp_data$clock)
     );
-    top$d_cntr$ent_second rsel(
+    top$cnt_dop$pending rsel(
         .d(rsel$d),
         .q(rsel$q),
         .clock(rsel$clock)
     );
-    top$d_cntr$ent_second order_lifo(
+    top$cnt_dop$pending order_lifo(
         .d(order_lifo$d),
         .q(order_lifo$q),
         .clock(order_lifo$clock)
@@ -2396,7 +2439,7 @@ module top$d_cntr$queue(clock,clear,lifo,push,push_data,push2,push2_data,pop,emp
         .q(max_r$q),
         .clock(max_r$clock)
     );
-    top$d_cntr$ent_second ovf_r(
+    top$cnt_dop$pending ovf_r(
         .d(ovf_r$d),
         .q(ovf_r$q),
         .clock(ovf_r$clock)
@@ -2419,7 +2462,7 @@ module top$d_cntr$queue(clock,clear,lifo,push,push_data,push2,push2_data,pop,emp
         .write_data(bank1$write_data),
         .write_enable(bank1$write_enable)
     );
-    top$d_cntr$ent_second nonempty(
+    top$cnt_dop$pending nonempty(
         .d(nonempty$d),
         .q(nonempty$q),
         .clock(nonempty$clock)
@@ -6714,7 +6757,7 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
     reg  c15_nan;
     
     // Sub module instances
-    top$d_cntr$ent_second s1_valid(
+    top$cnt_dop$pending s1_valid(
         .d(s1_valid$d),
         .q(s1_valid$q),
         .clock(s1_valid$clock)
@@ -6889,7 +6932,7 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
         .q(e_11$q),
         .clock(e_11$clock)
     );
-    top$d_cntr$ent_second s15_valid(
+    top$cnt_dop$pending s15_valid(
         .d(s15_valid$d),
         .q(s15_valid$q),
         .clock(s15_valid$clock)
@@ -6899,7 +6942,7 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
         .q(s15_s$q),
         .clock(s15_s$clock)
     );
-    top$d_cntr$ent_second s15_flag(
+    top$cnt_dop$pending s15_flag(
         .d(s15_flag$d),
         .q(s15_flag$q),
         .clock(s15_flag$clock)
@@ -7179,37 +7222,37 @@ module top$dop$doptrf$0$add_0(clock,a,b,sub,valid_in,y,valid_out);
         .is_inf(unpack_b$is_inf),
         .is_nan(unpack_b$is_nan)
     );
-    top$d_cntr$ent_second s1_valid(
+    top$cnt_dop$pending s1_valid(
         .d(s1_valid$d),
         .q(s1_valid$q),
         .clock(s1_valid$clock)
     );
-    top$d_cntr$ent_second s1_nan(
+    top$cnt_dop$pending s1_nan(
         .d(s1_nan$d),
         .q(s1_nan$q),
         .clock(s1_nan$clock)
     );
-    top$d_cntr$ent_second s1_inf(
+    top$cnt_dop$pending s1_inf(
         .d(s1_inf$d),
         .q(s1_inf$q),
         .clock(s1_inf$clock)
     );
-    top$d_cntr$ent_second s1_inf_sign(
+    top$cnt_dop$pending s1_inf_sign(
         .d(s1_inf_sign$d),
         .q(s1_inf_sign$q),
         .clock(s1_inf_sign$clock)
     );
-    top$d_cntr$ent_second s1_zero_sign(
+    top$cnt_dop$pending s1_zero_sign(
         .d(s1_zero_sign$d),
         .q(s1_zero_sign$q),
         .clock(s1_zero_sign$clock)
     );
-    top$d_cntr$ent_second s1_sign(
+    top$cnt_dop$pending s1_sign(
         .d(s1_sign$d),
         .q(s1_sign$q),
         .clock(s1_sign$clock)
     );
-    top$d_cntr$ent_second s1_eff_sub(
+    top$cnt_dop$pending s1_eff_sub(
         .d(s1_eff_sub$d),
         .q(s1_eff_sub$q),
         .clock(s1_eff_sub$clock)
@@ -7234,32 +7277,32 @@ module top$dop$doptrf$0$add_0(clock,a,b,sub,valid_in,y,valid_out);
         .y(norm$y),
         .lz(norm$lz)
     );
-    top$d_cntr$ent_second s2_valid(
+    top$cnt_dop$pending s2_valid(
         .d(s2_valid$d),
         .q(s2_valid$q),
         .clock(s2_valid$clock)
     );
-    top$d_cntr$ent_second s2_sign(
+    top$cnt_dop$pending s2_sign(
         .d(s2_sign$d),
         .q(s2_sign$q),
         .clock(s2_sign$clock)
     );
-    top$d_cntr$ent_second s2_nan(
+    top$cnt_dop$pending s2_nan(
         .d(s2_nan$d),
         .q(s2_nan$q),
         .clock(s2_nan$clock)
     );
-    top$d_cntr$ent_second s2_inf(
+    top$cnt_dop$pending s2_inf(
         .d(s2_inf$d),
         .q(s2_inf$q),
         .clock(s2_inf$clock)
     );
-    top$d_cntr$ent_second s2_zero(
+    top$cnt_dop$pending s2_zero(
         .d(s2_zero$d),
         .q(s2_zero$q),
         .clock(s2_zero$clock)
     );
-    top$d_cntr$ent_second s2_ovf(
+    top$cnt_dop$pending s2_ovf(
         .d(s2_ovf$d),
         .q(s2_ovf$q),
         .clock(s2_ovf$clock)
@@ -7285,7 +7328,7 @@ module top$dop$doptrf$0$add_0(clock,a,b,sub,valid_in,y,valid_out);
         .nm(round$nm),
         .y(round$y)
     );
-    top$d_cntr$ent_second s3_valid(
+    top$cnt_dop$pending s3_valid(
         .d(s3_valid$d),
         .q(s3_valid$q),
         .clock(s3_valid$clock)
@@ -7820,27 +7863,27 @@ module top$dop$doptrf$0$mul_0(clock,a,b,valid_in,y,valid_out);
         .y(norm_b$y),
         .lz(norm_b$lz)
     );
-    top$d_cntr$ent_second s1_valid(
+    top$cnt_dop$pending s1_valid(
         .d(s1_valid$d),
         .q(s1_valid$q),
         .clock(s1_valid$clock)
     );
-    top$d_cntr$ent_second s1_sign(
+    top$cnt_dop$pending s1_sign(
         .d(s1_sign$d),
         .q(s1_sign$q),
         .clock(s1_sign$clock)
     );
-    top$d_cntr$ent_second s1_nan(
+    top$cnt_dop$pending s1_nan(
         .d(s1_nan$d),
         .q(s1_nan$q),
         .clock(s1_nan$clock)
     );
-    top$d_cntr$ent_second s1_inf(
+    top$cnt_dop$pending s1_inf(
         .d(s1_inf$d),
         .q(s1_inf$q),
         .clock(s1_inf$clock)
     );
-    top$d_cntr$ent_second s1_zero(
+    top$cnt_dop$pending s1_zero(
         .d(s1_zero$d),
         .q(s1_zero$q),
         .clock(s1_zero$clock)
@@ -7866,27 +7909,27 @@ module top$dop$doptrf$0$mul_0(clock,a,b,valid_in,y,valid_out);
         .hi(sig_mul$hi),
         .sticky(sig_mul$sticky)
     );
-    top$d_cntr$ent_second s2_valid(
+    top$cnt_dop$pending s2_valid(
         .d(s2_valid$d),
         .q(s2_valid$q),
         .clock(s2_valid$clock)
     );
-    top$d_cntr$ent_second s2_sign(
+    top$cnt_dop$pending s2_sign(
         .d(s2_sign$d),
         .q(s2_sign$q),
         .clock(s2_sign$clock)
     );
-    top$d_cntr$ent_second s2_nan(
+    top$cnt_dop$pending s2_nan(
         .d(s2_nan$d),
         .q(s2_nan$q),
         .clock(s2_nan$clock)
     );
-    top$d_cntr$ent_second s2_inf(
+    top$cnt_dop$pending s2_inf(
         .d(s2_inf$d),
         .q(s2_inf$q),
         .clock(s2_inf$clock)
     );
-    top$d_cntr$ent_second s2_zero(
+    top$cnt_dop$pending s2_zero(
         .d(s2_zero$d),
         .q(s2_zero$q),
         .clock(s2_zero$clock)
@@ -7901,37 +7944,37 @@ module top$dop$doptrf$0$mul_0(clock,a,b,valid_in,y,valid_out);
         .q(s2_hi$q),
         .clock(s2_hi$clock)
     );
-    top$d_cntr$ent_second s2_sticky(
+    top$cnt_dop$pending s2_sticky(
         .d(s2_sticky$d),
         .q(s2_sticky$q),
         .clock(s2_sticky$clock)
     );
-    top$d_cntr$ent_second s3_valid(
+    top$cnt_dop$pending s3_valid(
         .d(s3_valid$d),
         .q(s3_valid$q),
         .clock(s3_valid$clock)
     );
-    top$d_cntr$ent_second s3_sign(
+    top$cnt_dop$pending s3_sign(
         .d(s3_sign$d),
         .q(s3_sign$q),
         .clock(s3_sign$clock)
     );
-    top$d_cntr$ent_second s3_nan(
+    top$cnt_dop$pending s3_nan(
         .d(s3_nan$d),
         .q(s3_nan$q),
         .clock(s3_nan$clock)
     );
-    top$d_cntr$ent_second s3_inf(
+    top$cnt_dop$pending s3_inf(
         .d(s3_inf$d),
         .q(s3_inf$q),
         .clock(s3_inf$clock)
     );
-    top$d_cntr$ent_second s3_zero(
+    top$cnt_dop$pending s3_zero(
         .d(s3_zero$d),
         .q(s3_zero$q),
         .clock(s3_zero$clock)
     );
-    top$d_cntr$ent_second s3_ovf(
+    top$cnt_dop$pending s3_ovf(
         .d(s3_ovf$d),
         .q(s3_ovf$q),
         .clock(s3_ovf$clock)
@@ -7957,7 +8000,7 @@ module top$dop$doptrf$0$mul_0(clock,a,b,valid_in,y,valid_out);
         .nm(round$nm),
         .y(round$y)
     );
-    top$d_cntr$ent_second s4_valid(
+    top$cnt_dop$pending s4_valid(
         .d(s4_valid$d),
         .q(s4_valid$q),
         .clock(s4_valid$clock)
@@ -13825,7 +13868,7 @@ module top$leaf_fifo$read_logic(clock,read,data_out,empty,almost_empty,underflow
         .q(read_address$q),
         .clock(read_address$clock)
     );
-    top$d_cntr$ent_second dff_underflow(
+    top$cnt_dop$pending dff_underflow(
         .d(dff_underflow$d),
         .q(dff_underflow$q),
         .clock(dff_underflow$clock)
@@ -13930,7 +13973,7 @@ module top$leaf_fifo$write_logic(write,data_in,full,almost_full,overflow,clock,r
         .q(dff_write_address_delay$q),
         .clock(dff_write_address_delay$clock)
     );
-    top$d_cntr$ent_second dff_overflow(
+    top$cnt_dop$pending dff_overflow(
         .d(dff_overflow$d),
         .q(dff_overflow$q),
         .clock(dff_overflow$clock)
@@ -14525,7 +14568,7 @@ module top$mem_port(clock,clear,go,pf_on,slot_bits,port_out,base_na,base_nb,base
         .q(tag_n$q),
         .clock(tag_n$clock)
     );
-    top$d_cntr$ent_second ta_pend(
+    top$cnt_dop$pending ta_pend(
         .d(ta_pend$d),
         .q(ta_pend$q),
         .clock(ta_pend$clock)
@@ -14535,7 +14578,7 @@ module top$mem_port(clock,clear,go,pf_on,slot_bits,port_out,base_na,base_nb,base
         .q(ta_req_r$q),
         .clock(ta_req_r$clock)
     );
-    top$d_cntr$ent_second tb_pend(
+    top$cnt_dop$pending tb_pend(
         .d(tb_pend$d),
         .q(tb_pend$q),
         .clock(tb_pend$clock)
@@ -16309,7 +16352,7 @@ module top$tri_cache(clock,clear,mask,fill,fill_id,fill_word,id,next_id,hit,word
         .write_data(words$write_data),
         .write_enable(words$write_enable)
     );
-    top$d_cntr$ent_second byp(
+    top$cnt_dop$pending byp(
         .d(byp$d),
         .q(byp$q),
         .clock(byp$clock)
@@ -18126,7 +18169,7 @@ module top$tri_unit$fifo$read_logic(clock,read,data_out,empty,almost_empty,under
         .q(read_address$q),
         .clock(read_address$clock)
     );
-    top$d_cntr$ent_second dff_underflow(
+    top$cnt_dop$pending dff_underflow(
         .d(dff_underflow$d),
         .q(dff_underflow$q),
         .clock(dff_underflow$clock)
@@ -18212,7 +18255,7 @@ module top$tri_unit$fifo$write_logic(write,data_in,full,almost_full,overflow,clo
         .q(dff_write_address_delay$q),
         .clock(dff_write_address_delay$clock)
     );
-    top$d_cntr$ent_second dff_overflow(
+    top$cnt_dop$pending dff_overflow(
         .d(dff_overflow$d),
         .q(dff_overflow$q),
         .clock(dff_overflow$clock)
@@ -19571,17 +19614,17 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
         .q(in_v_z$2$q),
         .clock(in_v_z$2$clock)
     );
-    top$d_cntr$ent_second in_v_exact(
+    top$cnt_dop$pending in_v_exact(
         .d(in_v_exact$d),
         .q(in_v_exact$q),
         .clock(in_v_exact$clock)
     );
-    top$cnt_dop in_tag(
+    top$cnt_dop$total in_tag(
         .d(in_tag$d),
         .q(in_tag$q),
         .clock(in_tag$clock)
     );
-    top$d_cntr$ent_second in_valid(
+    top$cnt_dop$pending in_valid(
         .d(in_valid$d),
         .q(in_valid$q),
         .clock(in_valid$clock)
@@ -20711,32 +20754,32 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
         .d(valid_wait$d),
         .q(valid_wait$q)
     );
-    top$d_cntr$ent_second v_cross_t$0(
+    top$cnt_dop$pending v_cross_t$0(
         .d(v_cross_t$0$d),
         .q(v_cross_t$0$q),
         .clock(v_cross_t$0$clock)
     );
-    top$d_cntr$ent_second v_cross_t$1(
+    top$cnt_dop$pending v_cross_t$1(
         .d(v_cross_t$1$d),
         .q(v_cross_t$1$q),
         .clock(v_cross_t$1$clock)
     );
-    top$d_cntr$ent_second v_cross_t$2(
+    top$cnt_dop$pending v_cross_t$2(
         .d(v_cross_t$2$d),
         .q(v_cross_t$2$q),
         .clock(v_cross_t$2$clock)
     );
-    top$d_cntr$ent_second v_cross_f$0(
+    top$cnt_dop$pending v_cross_f$0(
         .d(v_cross_f$0$d),
         .q(v_cross_f$0$q),
         .clock(v_cross_f$0$clock)
     );
-    top$d_cntr$ent_second v_cross_f$1(
+    top$cnt_dop$pending v_cross_f$1(
         .d(v_cross_f$1$d),
         .q(v_cross_f$1$q),
         .clock(v_cross_f$1$clock)
     );
-    top$d_cntr$ent_second v_cross_f$2(
+    top$cnt_dop$pending v_cross_f$2(
         .d(v_cross_f$2$d),
         .q(v_cross_f$2$q),
         .clock(v_cross_f$2$clock)
@@ -20801,52 +20844,52 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
         .q(out_s_b$2$q),
         .clock(out_s_b$2$clock)
     );
-    top$d_cntr$ent_second out_cross_t$0(
+    top$cnt_dop$pending out_cross_t$0(
         .d(out_cross_t$0$d),
         .q(out_cross_t$0$q),
         .clock(out_cross_t$0$clock)
     );
-    top$d_cntr$ent_second out_cross_t$1(
+    top$cnt_dop$pending out_cross_t$1(
         .d(out_cross_t$1$d),
         .q(out_cross_t$1$q),
         .clock(out_cross_t$1$clock)
     );
-    top$d_cntr$ent_second out_cross_t$2(
+    top$cnt_dop$pending out_cross_t$2(
         .d(out_cross_t$2$d),
         .q(out_cross_t$2$q),
         .clock(out_cross_t$2$clock)
     );
-    top$d_cntr$ent_second out_cross_f$0(
+    top$cnt_dop$pending out_cross_f$0(
         .d(out_cross_f$0$d),
         .q(out_cross_f$0$q),
         .clock(out_cross_f$0$clock)
     );
-    top$d_cntr$ent_second out_cross_f$1(
+    top$cnt_dop$pending out_cross_f$1(
         .d(out_cross_f$1$d),
         .q(out_cross_f$1$q),
         .clock(out_cross_f$1$clock)
     );
-    top$d_cntr$ent_second out_cross_f$2(
+    top$cnt_dop$pending out_cross_f$2(
         .d(out_cross_f$2$d),
         .q(out_cross_f$2$q),
         .clock(out_cross_f$2$clock)
     );
-    top$d_cntr$ent_second out_hit(
+    top$cnt_dop$pending out_hit(
         .d(out_hit$d),
         .q(out_hit$q),
         .clock(out_hit$clock)
     );
-    top$d_cntr$ent_second out_miss(
+    top$cnt_dop$pending out_miss(
         .d(out_miss$d),
         .q(out_miss$q),
         .clock(out_miss$clock)
     );
-    top$cnt_dop out_tag(
+    top$cnt_dop$total out_tag(
         .d(out_tag$d),
         .q(out_tag$q),
         .clock(out_tag$clock)
     );
-    top$d_cntr$ent_second out_valid(
+    top$cnt_dop$pending out_valid(
         .d(out_valid$d),
         .q(out_valid$q),
         .clock(out_valid$clock)
@@ -23001,37 +23044,37 @@ module top$tri_unit$tc_ab$edges$0$a(clock,a,b,sub,valid_in,y,valid_out);
         .is_inf(unpack_b$is_inf),
         .is_nan(unpack_b$is_nan)
     );
-    top$d_cntr$ent_second s1_valid(
+    top$cnt_dop$pending s1_valid(
         .d(s1_valid$d),
         .q(s1_valid$q),
         .clock(s1_valid$clock)
     );
-    top$d_cntr$ent_second s1_nan(
+    top$cnt_dop$pending s1_nan(
         .d(s1_nan$d),
         .q(s1_nan$q),
         .clock(s1_nan$clock)
     );
-    top$d_cntr$ent_second s1_inf(
+    top$cnt_dop$pending s1_inf(
         .d(s1_inf$d),
         .q(s1_inf$q),
         .clock(s1_inf$clock)
     );
-    top$d_cntr$ent_second s1_inf_sign(
+    top$cnt_dop$pending s1_inf_sign(
         .d(s1_inf_sign$d),
         .q(s1_inf_sign$q),
         .clock(s1_inf_sign$clock)
     );
-    top$d_cntr$ent_second s1_zero_sign(
+    top$cnt_dop$pending s1_zero_sign(
         .d(s1_zero_sign$d),
         .q(s1_zero_sign$q),
         .clock(s1_zero_sign$clock)
     );
-    top$d_cntr$ent_second s1_sign(
+    top$cnt_dop$pending s1_sign(
         .d(s1_sign$d),
         .q(s1_sign$q),
         .clock(s1_sign$clock)
     );
-    top$d_cntr$ent_second s1_eff_sub(
+    top$cnt_dop$pending s1_eff_sub(
         .d(s1_eff_sub$d),
         .q(s1_eff_sub$q),
         .clock(s1_eff_sub$clock)
@@ -23056,32 +23099,32 @@ module top$tri_unit$tc_ab$edges$0$a(clock,a,b,sub,valid_in,y,valid_out);
         .y(norm$y),
         .lz(norm$lz)
     );
-    top$d_cntr$ent_second s2_valid(
+    top$cnt_dop$pending s2_valid(
         .d(s2_valid$d),
         .q(s2_valid$q),
         .clock(s2_valid$clock)
     );
-    top$d_cntr$ent_second s2_sign(
+    top$cnt_dop$pending s2_sign(
         .d(s2_sign$d),
         .q(s2_sign$q),
         .clock(s2_sign$clock)
     );
-    top$d_cntr$ent_second s2_nan(
+    top$cnt_dop$pending s2_nan(
         .d(s2_nan$d),
         .q(s2_nan$q),
         .clock(s2_nan$clock)
     );
-    top$d_cntr$ent_second s2_inf(
+    top$cnt_dop$pending s2_inf(
         .d(s2_inf$d),
         .q(s2_inf$q),
         .clock(s2_inf$clock)
     );
-    top$d_cntr$ent_second s2_zero(
+    top$cnt_dop$pending s2_zero(
         .d(s2_zero$d),
         .q(s2_zero$q),
         .clock(s2_zero$clock)
     );
-    top$d_cntr$ent_second s2_ovf(
+    top$cnt_dop$pending s2_ovf(
         .d(s2_ovf$d),
         .q(s2_ovf$q),
         .clock(s2_ovf$clock)
@@ -23107,7 +23150,7 @@ module top$tri_unit$tc_ab$edges$0$a(clock,a,b,sub,valid_in,y,valid_out);
         .nm(round$nm),
         .y(round$y)
     );
-    top$d_cntr$ent_second s3_valid(
+    top$cnt_dop$pending s3_valid(
         .d(s3_valid$d),
         .q(s3_valid$q),
         .clock(s3_valid$clock)
@@ -23819,27 +23862,27 @@ module top$tri_unit$tc_ab$edges$0$px_qz(clock,a,b,valid_in,y,valid_out);
         .y(norm_b$y),
         .lz(norm_b$lz)
     );
-    top$d_cntr$ent_second s1_valid(
+    top$cnt_dop$pending s1_valid(
         .d(s1_valid$d),
         .q(s1_valid$q),
         .clock(s1_valid$clock)
     );
-    top$d_cntr$ent_second s1_sign(
+    top$cnt_dop$pending s1_sign(
         .d(s1_sign$d),
         .q(s1_sign$q),
         .clock(s1_sign$clock)
     );
-    top$d_cntr$ent_second s1_nan(
+    top$cnt_dop$pending s1_nan(
         .d(s1_nan$d),
         .q(s1_nan$q),
         .clock(s1_nan$clock)
     );
-    top$d_cntr$ent_second s1_inf(
+    top$cnt_dop$pending s1_inf(
         .d(s1_inf$d),
         .q(s1_inf$q),
         .clock(s1_inf$clock)
     );
-    top$d_cntr$ent_second s1_zero(
+    top$cnt_dop$pending s1_zero(
         .d(s1_zero$d),
         .q(s1_zero$q),
         .clock(s1_zero$clock)
@@ -23865,27 +23908,27 @@ module top$tri_unit$tc_ab$edges$0$px_qz(clock,a,b,valid_in,y,valid_out);
         .hi(sig_mul$hi),
         .sticky(sig_mul$sticky)
     );
-    top$d_cntr$ent_second s2_valid(
+    top$cnt_dop$pending s2_valid(
         .d(s2_valid$d),
         .q(s2_valid$q),
         .clock(s2_valid$clock)
     );
-    top$d_cntr$ent_second s2_sign(
+    top$cnt_dop$pending s2_sign(
         .d(s2_sign$d),
         .q(s2_sign$q),
         .clock(s2_sign$clock)
     );
-    top$d_cntr$ent_second s2_nan(
+    top$cnt_dop$pending s2_nan(
         .d(s2_nan$d),
         .q(s2_nan$q),
         .clock(s2_nan$clock)
     );
-    top$d_cntr$ent_second s2_inf(
+    top$cnt_dop$pending s2_inf(
         .d(s2_inf$d),
         .q(s2_inf$q),
         .clock(s2_inf$clock)
     );
-    top$d_cntr$ent_second s2_zero(
+    top$cnt_dop$pending s2_zero(
         .d(s2_zero$d),
         .q(s2_zero$q),
         .clock(s2_zero$clock)
@@ -23900,37 +23943,37 @@ module top$tri_unit$tc_ab$edges$0$px_qz(clock,a,b,valid_in,y,valid_out);
         .q(s2_hi$q),
         .clock(s2_hi$clock)
     );
-    top$d_cntr$ent_second s2_sticky(
+    top$cnt_dop$pending s2_sticky(
         .d(s2_sticky$d),
         .q(s2_sticky$q),
         .clock(s2_sticky$clock)
     );
-    top$d_cntr$ent_second s3_valid(
+    top$cnt_dop$pending s3_valid(
         .d(s3_valid$d),
         .q(s3_valid$q),
         .clock(s3_valid$clock)
     );
-    top$d_cntr$ent_second s3_sign(
+    top$cnt_dop$pending s3_sign(
         .d(s3_sign$d),
         .q(s3_sign$q),
         .clock(s3_sign$clock)
     );
-    top$d_cntr$ent_second s3_nan(
+    top$cnt_dop$pending s3_nan(
         .d(s3_nan$d),
         .q(s3_nan$q),
         .clock(s3_nan$clock)
     );
-    top$d_cntr$ent_second s3_inf(
+    top$cnt_dop$pending s3_inf(
         .d(s3_inf$d),
         .q(s3_inf$q),
         .clock(s3_inf$clock)
     );
-    top$d_cntr$ent_second s3_zero(
+    top$cnt_dop$pending s3_zero(
         .d(s3_zero$d),
         .q(s3_zero$q),
         .clock(s3_zero$clock)
     );
-    top$d_cntr$ent_second s3_ovf(
+    top$cnt_dop$pending s3_ovf(
         .d(s3_ovf$d),
         .q(s3_ovf$q),
         .clock(s3_ovf$clock)
@@ -23956,7 +23999,7 @@ module top$tri_unit$tc_ab$edges$0$px_qz(clock,a,b,valid_in,y,valid_out);
         .nm(round$nm),
         .y(round$y)
     );
-    top$d_cntr$ent_second s4_valid(
+    top$cnt_dop$pending s4_valid(
         .d(s4_valid$d),
         .q(s4_valid$q),
         .clock(s4_valid$clock)
@@ -24759,112 +24802,112 @@ module top$tri_unit$tc_ab$exact_wait(clock,d,q);
     reg  line$21$clock;
     
     // Sub module instances
-    top$d_cntr$ent_second line$0(
+    top$cnt_dop$pending line$0(
         .d(line$0$d),
         .q(line$0$q),
         .clock(line$0$clock)
     );
-    top$d_cntr$ent_second line$1(
+    top$cnt_dop$pending line$1(
         .d(line$1$d),
         .q(line$1$q),
         .clock(line$1$clock)
     );
-    top$d_cntr$ent_second line$2(
+    top$cnt_dop$pending line$2(
         .d(line$2$d),
         .q(line$2$q),
         .clock(line$2$clock)
     );
-    top$d_cntr$ent_second line$3(
+    top$cnt_dop$pending line$3(
         .d(line$3$d),
         .q(line$3$q),
         .clock(line$3$clock)
     );
-    top$d_cntr$ent_second line$4(
+    top$cnt_dop$pending line$4(
         .d(line$4$d),
         .q(line$4$q),
         .clock(line$4$clock)
     );
-    top$d_cntr$ent_second line$5(
+    top$cnt_dop$pending line$5(
         .d(line$5$d),
         .q(line$5$q),
         .clock(line$5$clock)
     );
-    top$d_cntr$ent_second line$6(
+    top$cnt_dop$pending line$6(
         .d(line$6$d),
         .q(line$6$q),
         .clock(line$6$clock)
     );
-    top$d_cntr$ent_second line$7(
+    top$cnt_dop$pending line$7(
         .d(line$7$d),
         .q(line$7$q),
         .clock(line$7$clock)
     );
-    top$d_cntr$ent_second line$8(
+    top$cnt_dop$pending line$8(
         .d(line$8$d),
         .q(line$8$q),
         .clock(line$8$clock)
     );
-    top$d_cntr$ent_second line$9(
+    top$cnt_dop$pending line$9(
         .d(line$9$d),
         .q(line$9$q),
         .clock(line$9$clock)
     );
-    top$d_cntr$ent_second line$10(
+    top$cnt_dop$pending line$10(
         .d(line$10$d),
         .q(line$10$q),
         .clock(line$10$clock)
     );
-    top$d_cntr$ent_second line$11(
+    top$cnt_dop$pending line$11(
         .d(line$11$d),
         .q(line$11$q),
         .clock(line$11$clock)
     );
-    top$d_cntr$ent_second line$12(
+    top$cnt_dop$pending line$12(
         .d(line$12$d),
         .q(line$12$q),
         .clock(line$12$clock)
     );
-    top$d_cntr$ent_second line$13(
+    top$cnt_dop$pending line$13(
         .d(line$13$d),
         .q(line$13$q),
         .clock(line$13$clock)
     );
-    top$d_cntr$ent_second line$14(
+    top$cnt_dop$pending line$14(
         .d(line$14$d),
         .q(line$14$q),
         .clock(line$14$clock)
     );
-    top$d_cntr$ent_second line$15(
+    top$cnt_dop$pending line$15(
         .d(line$15$d),
         .q(line$15$q),
         .clock(line$15$clock)
     );
-    top$d_cntr$ent_second line$16(
+    top$cnt_dop$pending line$16(
         .d(line$16$d),
         .q(line$16$q),
         .clock(line$16$clock)
     );
-    top$d_cntr$ent_second line$17(
+    top$cnt_dop$pending line$17(
         .d(line$17$d),
         .q(line$17$q),
         .clock(line$17$clock)
     );
-    top$d_cntr$ent_second line$18(
+    top$cnt_dop$pending line$18(
         .d(line$18$d),
         .q(line$18$q),
         .clock(line$18$clock)
     );
-    top$d_cntr$ent_second line$19(
+    top$cnt_dop$pending line$19(
         .d(line$19$d),
         .q(line$19$q),
         .clock(line$19$clock)
     );
-    top$d_cntr$ent_second line$20(
+    top$cnt_dop$pending line$20(
         .d(line$20$d),
         .q(line$20$q),
         .clock(line$20$clock)
     );
-    top$d_cntr$ent_second line$21(
+    top$cnt_dop$pending line$21(
         .d(line$21$d),
         .q(line$21$q),
         .clock(line$21$clock)
@@ -25779,252 +25822,252 @@ module top$tri_unit$tc_ab$tag_wait(clock,d,q);
     reg  line$49$clock;
     
     // Sub module instances
-    top$cnt_dop line$0(
+    top$cnt_dop$total line$0(
         .d(line$0$d),
         .q(line$0$q),
         .clock(line$0$clock)
     );
-    top$cnt_dop line$1(
+    top$cnt_dop$total line$1(
         .d(line$1$d),
         .q(line$1$q),
         .clock(line$1$clock)
     );
-    top$cnt_dop line$2(
+    top$cnt_dop$total line$2(
         .d(line$2$d),
         .q(line$2$q),
         .clock(line$2$clock)
     );
-    top$cnt_dop line$3(
+    top$cnt_dop$total line$3(
         .d(line$3$d),
         .q(line$3$q),
         .clock(line$3$clock)
     );
-    top$cnt_dop line$4(
+    top$cnt_dop$total line$4(
         .d(line$4$d),
         .q(line$4$q),
         .clock(line$4$clock)
     );
-    top$cnt_dop line$5(
+    top$cnt_dop$total line$5(
         .d(line$5$d),
         .q(line$5$q),
         .clock(line$5$clock)
     );
-    top$cnt_dop line$6(
+    top$cnt_dop$total line$6(
         .d(line$6$d),
         .q(line$6$q),
         .clock(line$6$clock)
     );
-    top$cnt_dop line$7(
+    top$cnt_dop$total line$7(
         .d(line$7$d),
         .q(line$7$q),
         .clock(line$7$clock)
     );
-    top$cnt_dop line$8(
+    top$cnt_dop$total line$8(
         .d(line$8$d),
         .q(line$8$q),
         .clock(line$8$clock)
     );
-    top$cnt_dop line$9(
+    top$cnt_dop$total line$9(
         .d(line$9$d),
         .q(line$9$q),
         .clock(line$9$clock)
     );
-    top$cnt_dop line$10(
+    top$cnt_dop$total line$10(
         .d(line$10$d),
         .q(line$10$q),
         .clock(line$10$clock)
     );
-    top$cnt_dop line$11(
+    top$cnt_dop$total line$11(
         .d(line$11$d),
         .q(line$11$q),
         .clock(line$11$clock)
     );
-    top$cnt_dop line$12(
+    top$cnt_dop$total line$12(
         .d(line$12$d),
         .q(line$12$q),
         .clock(line$12$clock)
     );
-    top$cnt_dop line$13(
+    top$cnt_dop$total line$13(
         .d(line$13$d),
         .q(line$13$q),
         .clock(line$13$clock)
     );
-    top$cnt_dop line$14(
+    top$cnt_dop$total line$14(
         .d(line$14$d),
         .q(line$14$q),
         .clock(line$14$clock)
     );
-    top$cnt_dop line$15(
+    top$cnt_dop$total line$15(
         .d(line$15$d),
         .q(line$15$q),
         .clock(line$15$clock)
     );
-    top$cnt_dop line$16(
+    top$cnt_dop$total line$16(
         .d(line$16$d),
         .q(line$16$q),
         .clock(line$16$clock)
     );
-    top$cnt_dop line$17(
+    top$cnt_dop$total line$17(
         .d(line$17$d),
         .q(line$17$q),
         .clock(line$17$clock)
     );
-    top$cnt_dop line$18(
+    top$cnt_dop$total line$18(
         .d(line$18$d),
         .q(line$18$q),
         .clock(line$18$clock)
     );
-    top$cnt_dop line$19(
+    top$cnt_dop$total line$19(
         .d(line$19$d),
         .q(line$19$q),
         .clock(line$19$clock)
     );
-    top$cnt_dop line$20(
+    top$cnt_dop$total line$20(
         .d(line$20$d),
         .q(line$20$q),
         .clock(line$20$clock)
     );
-    top$cnt_dop line$21(
+    top$cnt_dop$total line$21(
         .d(line$21$d),
         .q(line$21$q),
         .clock(line$21$clock)
     );
-    top$cnt_dop line$22(
+    top$cnt_dop$total line$22(
         .d(line$22$d),
         .q(line$22$q),
         .clock(line$22$clock)
     );
-    top$cnt_dop line$23(
+    top$cnt_dop$total line$23(
         .d(line$23$d),
         .q(line$23$q),
         .clock(line$23$clock)
     );
-    top$cnt_dop line$24(
+    top$cnt_dop$total line$24(
         .d(line$24$d),
         .q(line$24$q),
         .clock(line$24$clock)
     );
-    top$cnt_dop line$25(
+    top$cnt_dop$total line$25(
         .d(line$25$d),
         .q(line$25$q),
         .clock(line$25$clock)
     );
-    top$cnt_dop line$26(
+    top$cnt_dop$total line$26(
         .d(line$26$d),
         .q(line$26$q),
         .clock(line$26$clock)
     );
-    top$cnt_dop line$27(
+    top$cnt_dop$total line$27(
         .d(line$27$d),
         .q(line$27$q),
         .clock(line$27$clock)
     );
-    top$cnt_dop line$28(
+    top$cnt_dop$total line$28(
         .d(line$28$d),
         .q(line$28$q),
         .clock(line$28$clock)
     );
-    top$cnt_dop line$29(
+    top$cnt_dop$total line$29(
         .d(line$29$d),
         .q(line$29$q),
         .clock(line$29$clock)
     );
-    top$cnt_dop line$30(
+    top$cnt_dop$total line$30(
         .d(line$30$d),
         .q(line$30$q),
         .clock(line$30$clock)
     );
-    top$cnt_dop line$31(
+    top$cnt_dop$total line$31(
         .d(line$31$d),
         .q(line$31$q),
         .clock(line$31$clock)
     );
-    top$cnt_dop line$32(
+    top$cnt_dop$total line$32(
         .d(line$32$d),
         .q(line$32$q),
         .clock(line$32$clock)
     );
-    top$cnt_dop line$33(
+    top$cnt_dop$total line$33(
         .d(line$33$d),
         .q(line$33$q),
         .clock(line$33$clock)
     );
-    top$cnt_dop line$34(
+    top$cnt_dop$total line$34(
         .d(line$34$d),
         .q(line$34$q),
         .clock(line$34$clock)
     );
-    top$cnt_dop line$35(
+    top$cnt_dop$total line$35(
         .d(line$35$d),
         .q(line$35$q),
         .clock(line$35$clock)
     );
-    top$cnt_dop line$36(
+    top$cnt_dop$total line$36(
         .d(line$36$d),
         .q(line$36$q),
         .clock(line$36$clock)
     );
-    top$cnt_dop line$37(
+    top$cnt_dop$total line$37(
         .d(line$37$d),
         .q(line$37$q),
         .clock(line$37$clock)
     );
-    top$cnt_dop line$38(
+    top$cnt_dop$total line$38(
         .d(line$38$d),
         .q(line$38$q),
         .clock(line$38$clock)
     );
-    top$cnt_dop line$39(
+    top$cnt_dop$total line$39(
         .d(line$39$d),
         .q(line$39$q),
         .clock(line$39$clock)
     );
-    top$cnt_dop line$40(
+    top$cnt_dop$total line$40(
         .d(line$40$d),
         .q(line$40$q),
         .clock(line$40$clock)
     );
-    top$cnt_dop line$41(
+    top$cnt_dop$total line$41(
         .d(line$41$d),
         .q(line$41$q),
         .clock(line$41$clock)
     );
-    top$cnt_dop line$42(
+    top$cnt_dop$total line$42(
         .d(line$42$d),
         .q(line$42$q),
         .clock(line$42$clock)
     );
-    top$cnt_dop line$43(
+    top$cnt_dop$total line$43(
         .d(line$43$d),
         .q(line$43$q),
         .clock(line$43$clock)
     );
-    top$cnt_dop line$44(
+    top$cnt_dop$total line$44(
         .d(line$44$d),
         .q(line$44$q),
         .clock(line$44$clock)
     );
-    top$cnt_dop line$45(
+    top$cnt_dop$total line$45(
         .d(line$45$d),
         .q(line$45$q),
         .clock(line$45$clock)
     );
-    top$cnt_dop line$46(
+    top$cnt_dop$total line$46(
         .d(line$46$d),
         .q(line$46$q),
         .clock(line$46$clock)
     );
-    top$cnt_dop line$47(
+    top$cnt_dop$total line$47(
         .d(line$47$d),
         .q(line$47$q),
         .clock(line$47$clock)
     );
-    top$cnt_dop line$48(
+    top$cnt_dop$total line$48(
         .d(line$48$d),
         .q(line$48$q),
         .clock(line$48$clock)
     );
-    top$cnt_dop line$49(
+    top$cnt_dop$total line$49(
         .d(line$49$d),
         .q(line$49$q),
         .clock(line$49$clock)
@@ -26486,252 +26529,252 @@ module top$tri_unit$tc_ab$valid_wait(clock,d,q);
     reg  line$49$clock;
     
     // Sub module instances
-    top$d_cntr$ent_second line$0(
+    top$cnt_dop$pending line$0(
         .d(line$0$d),
         .q(line$0$q),
         .clock(line$0$clock)
     );
-    top$d_cntr$ent_second line$1(
+    top$cnt_dop$pending line$1(
         .d(line$1$d),
         .q(line$1$q),
         .clock(line$1$clock)
     );
-    top$d_cntr$ent_second line$2(
+    top$cnt_dop$pending line$2(
         .d(line$2$d),
         .q(line$2$q),
         .clock(line$2$clock)
     );
-    top$d_cntr$ent_second line$3(
+    top$cnt_dop$pending line$3(
         .d(line$3$d),
         .q(line$3$q),
         .clock(line$3$clock)
     );
-    top$d_cntr$ent_second line$4(
+    top$cnt_dop$pending line$4(
         .d(line$4$d),
         .q(line$4$q),
         .clock(line$4$clock)
     );
-    top$d_cntr$ent_second line$5(
+    top$cnt_dop$pending line$5(
         .d(line$5$d),
         .q(line$5$q),
         .clock(line$5$clock)
     );
-    top$d_cntr$ent_second line$6(
+    top$cnt_dop$pending line$6(
         .d(line$6$d),
         .q(line$6$q),
         .clock(line$6$clock)
     );
-    top$d_cntr$ent_second line$7(
+    top$cnt_dop$pending line$7(
         .d(line$7$d),
         .q(line$7$q),
         .clock(line$7$clock)
     );
-    top$d_cntr$ent_second line$8(
+    top$cnt_dop$pending line$8(
         .d(line$8$d),
         .q(line$8$q),
         .clock(line$8$clock)
     );
-    top$d_cntr$ent_second line$9(
+    top$cnt_dop$pending line$9(
         .d(line$9$d),
         .q(line$9$q),
         .clock(line$9$clock)
     );
-    top$d_cntr$ent_second line$10(
+    top$cnt_dop$pending line$10(
         .d(line$10$d),
         .q(line$10$q),
         .clock(line$10$clock)
     );
-    top$d_cntr$ent_second line$11(
+    top$cnt_dop$pending line$11(
         .d(line$11$d),
         .q(line$11$q),
         .clock(line$11$clock)
     );
-    top$d_cntr$ent_second line$12(
+    top$cnt_dop$pending line$12(
         .d(line$12$d),
         .q(line$12$q),
         .clock(line$12$clock)
     );
-    top$d_cntr$ent_second line$13(
+    top$cnt_dop$pending line$13(
         .d(line$13$d),
         .q(line$13$q),
         .clock(line$13$clock)
     );
-    top$d_cntr$ent_second line$14(
+    top$cnt_dop$pending line$14(
         .d(line$14$d),
         .q(line$14$q),
         .clock(line$14$clock)
     );
-    top$d_cntr$ent_second line$15(
+    top$cnt_dop$pending line$15(
         .d(line$15$d),
         .q(line$15$q),
         .clock(line$15$clock)
     );
-    top$d_cntr$ent_second line$16(
+    top$cnt_dop$pending line$16(
         .d(line$16$d),
         .q(line$16$q),
         .clock(line$16$clock)
     );
-    top$d_cntr$ent_second line$17(
+    top$cnt_dop$pending line$17(
         .d(line$17$d),
         .q(line$17$q),
         .clock(line$17$clock)
     );
-    top$d_cntr$ent_second line$18(
+    top$cnt_dop$pending line$18(
         .d(line$18$d),
         .q(line$18$q),
         .clock(line$18$clock)
     );
-    top$d_cntr$ent_second line$19(
+    top$cnt_dop$pending line$19(
         .d(line$19$d),
         .q(line$19$q),
         .clock(line$19$clock)
     );
-    top$d_cntr$ent_second line$20(
+    top$cnt_dop$pending line$20(
         .d(line$20$d),
         .q(line$20$q),
         .clock(line$20$clock)
     );
-    top$d_cntr$ent_second line$21(
+    top$cnt_dop$pending line$21(
         .d(line$21$d),
         .q(line$21$q),
         .clock(line$21$clock)
     );
-    top$d_cntr$ent_second line$22(
+    top$cnt_dop$pending line$22(
         .d(line$22$d),
         .q(line$22$q),
         .clock(line$22$clock)
     );
-    top$d_cntr$ent_second line$23(
+    top$cnt_dop$pending line$23(
         .d(line$23$d),
         .q(line$23$q),
         .clock(line$23$clock)
     );
-    top$d_cntr$ent_second line$24(
+    top$cnt_dop$pending line$24(
         .d(line$24$d),
         .q(line$24$q),
         .clock(line$24$clock)
     );
-    top$d_cntr$ent_second line$25(
+    top$cnt_dop$pending line$25(
         .d(line$25$d),
         .q(line$25$q),
         .clock(line$25$clock)
     );
-    top$d_cntr$ent_second line$26(
+    top$cnt_dop$pending line$26(
         .d(line$26$d),
         .q(line$26$q),
         .clock(line$26$clock)
     );
-    top$d_cntr$ent_second line$27(
+    top$cnt_dop$pending line$27(
         .d(line$27$d),
         .q(line$27$q),
         .clock(line$27$clock)
     );
-    top$d_cntr$ent_second line$28(
+    top$cnt_dop$pending line$28(
         .d(line$28$d),
         .q(line$28$q),
         .clock(line$28$clock)
     );
-    top$d_cntr$ent_second line$29(
+    top$cnt_dop$pending line$29(
         .d(line$29$d),
         .q(line$29$q),
         .clock(line$29$clock)
     );
-    top$d_cntr$ent_second line$30(
+    top$cnt_dop$pending line$30(
         .d(line$30$d),
         .q(line$30$q),
         .clock(line$30$clock)
     );
-    top$d_cntr$ent_second line$31(
+    top$cnt_dop$pending line$31(
         .d(line$31$d),
         .q(line$31$q),
         .clock(line$31$clock)
     );
-    top$d_cntr$ent_second line$32(
+    top$cnt_dop$pending line$32(
         .d(line$32$d),
         .q(line$32$q),
         .clock(line$32$clock)
     );
-    top$d_cntr$ent_second line$33(
+    top$cnt_dop$pending line$33(
         .d(line$33$d),
         .q(line$33$q),
         .clock(line$33$clock)
     );
-    top$d_cntr$ent_second line$34(
+    top$cnt_dop$pending line$34(
         .d(line$34$d),
         .q(line$34$q),
         .clock(line$34$clock)
     );
-    top$d_cntr$ent_second line$35(
+    top$cnt_dop$pending line$35(
         .d(line$35$d),
         .q(line$35$q),
         .clock(line$35$clock)
     );
-    top$d_cntr$ent_second line$36(
+    top$cnt_dop$pending line$36(
         .d(line$36$d),
         .q(line$36$q),
         .clock(line$36$clock)
     );
-    top$d_cntr$ent_second line$37(
+    top$cnt_dop$pending line$37(
         .d(line$37$d),
         .q(line$37$q),
         .clock(line$37$clock)
     );
-    top$d_cntr$ent_second line$38(
+    top$cnt_dop$pending line$38(
         .d(line$38$d),
         .q(line$38$q),
         .clock(line$38$clock)
     );
-    top$d_cntr$ent_second line$39(
+    top$cnt_dop$pending line$39(
         .d(line$39$d),
         .q(line$39$q),
         .clock(line$39$clock)
     );
-    top$d_cntr$ent_second line$40(
+    top$cnt_dop$pending line$40(
         .d(line$40$d),
         .q(line$40$q),
         .clock(line$40$clock)
     );
-    top$d_cntr$ent_second line$41(
+    top$cnt_dop$pending line$41(
         .d(line$41$d),
         .q(line$41$q),
         .clock(line$41$clock)
     );
-    top$d_cntr$ent_second line$42(
+    top$cnt_dop$pending line$42(
         .d(line$42$d),
         .q(line$42$q),
         .clock(line$42$clock)
     );
-    top$d_cntr$ent_second line$43(
+    top$cnt_dop$pending line$43(
         .d(line$43$d),
         .q(line$43$q),
         .clock(line$43$clock)
     );
-    top$d_cntr$ent_second line$44(
+    top$cnt_dop$pending line$44(
         .d(line$44$d),
         .q(line$44$q),
         .clock(line$44$clock)
     );
-    top$d_cntr$ent_second line$45(
+    top$cnt_dop$pending line$45(
         .d(line$45$d),
         .q(line$45$q),
         .clock(line$45$clock)
     );
-    top$d_cntr$ent_second line$46(
+    top$cnt_dop$pending line$46(
         .d(line$46$d),
         .q(line$46$q),
         .clock(line$46$clock)
     );
-    top$d_cntr$ent_second line$47(
+    top$cnt_dop$pending line$47(
         .d(line$47$d),
         .q(line$47$q),
         .clock(line$47$clock)
     );
-    top$d_cntr$ent_second line$48(
+    top$cnt_dop$pending line$48(
         .d(line$48$d),
         .q(line$48$q),
         .clock(line$48$clock)
     );
-    top$d_cntr$ent_second line$49(
+    top$cnt_dop$pending line$49(
         .d(line$49$d),
         .q(line$49$q),
         .clock(line$49$clock)

@@ -307,18 +307,22 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
     wire  result$give;
     wire  result$sure_hit;
     wire  [8:0] result$open;
-    reg  [31:0] cnt_dop$d;
-    wire  [31:0] cnt_dop$q;
     reg  cnt_dop$clock;
-    reg  [31:0] cnt_tri$d;
-    wire  [31:0] cnt_tri$q;
+    reg  cnt_dop$clear;
+    reg  cnt_dop$inc;
+    wire  [31:0] cnt_dop$count;
     reg  cnt_tri$clock;
-    reg  [31:0] cnt_nf$d;
-    wire  [31:0] cnt_nf$q;
+    reg  cnt_tri$clear;
+    reg  cnt_tri$inc;
+    wire  [31:0] cnt_tri$count;
     reg  cnt_nf$clock;
-    reg  [31:0] cnt_tf$d;
-    wire  [31:0] cnt_tf$q;
+    reg  cnt_nf$clear;
+    reg  cnt_nf$inc;
+    wire  [31:0] cnt_nf$count;
     reg  cnt_tf$clock;
+    reg  cnt_tf$clear;
+    reg  cnt_tf$inc;
+    wire  [31:0] cnt_tf$count;
     
     // Local signals
     reg  [15:0] id_mask;
@@ -338,17 +342,17 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
     reg  halt_idle;
     
     // Sub module instances
-    top$d_cntr$ent_second mode_lifo(
+    top$cnt_dop$pending mode_lifo(
         .d(mode_lifo$d),
         .q(mode_lifo$q),
         .clock(mode_lifo$clock)
     );
-    top$d_cntr$ent_second mode_first(
+    top$cnt_dop$pending mode_first(
         .d(mode_first$d),
         .q(mode_first$q),
         .clock(mode_first$clock)
     );
-    top$d_cntr$ent_second mode_rec(
+    top$cnt_dop$pending mode_rec(
         .d(mode_rec$d),
         .q(mode_rec$q),
         .clock(mode_rec$clock)
@@ -358,7 +362,7 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         .q(mode_slot$q),
         .clock(mode_slot$clock)
     );
-    top$cnt_dop root(
+    top$cnt_dop$total root(
         .d(root$d),
         .q(root$q),
         .clock(root$clock)
@@ -388,22 +392,22 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         .q(map$q),
         .clock(map$clock)
     );
-    top$d_cntr$ent_second run(
+    top$cnt_dop$pending run(
         .d(run$d),
         .q(run$q),
         .clock(run$clock)
     );
-    top$d_cntr$ent_second done_r(
+    top$cnt_dop$pending done_r(
         .d(done_r$d),
         .q(done_r$q),
         .clock(done_r$clock)
     );
-    top$d_cntr$ent_second push_root(
+    top$cnt_dop$pending push_root(
         .d(push_root$d),
         .q(push_root$q),
         .clock(push_root$clock)
     );
-    top$d_cntr$ent_second stop(
+    top$cnt_dop$pending stop(
         .d(stop$d),
         .q(stop$q),
         .clock(stop$clock)
@@ -418,7 +422,7 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         .q(port_out$q),
         .clock(port_out$clock)
     );
-    top$d_cntr$ent_second port_one(
+    top$cnt_dop$pending port_one(
         .d(port_one$d),
         .q(port_one$q),
         .clock(port_one$clock)
@@ -557,7 +561,7 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         .q(leaf_count$q),
         .clock(leaf_count$clock)
     );
-    top$d_cntr$ent_second leaf_valid(
+    top$cnt_dop$pending leaf_valid(
         .d(leaf_valid$d),
         .q(leaf_valid$q),
         .clock(leaf_valid$clock)
@@ -584,7 +588,7 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         .hit(tri_cache$hit),
         .word(tri_cache$word)
     );
-    top$d_cntr$ent_second tb_ok(
+    top$cnt_dop$pending tb_ok(
         .d(tb_ok$d),
         .q(tb_ok$q),
         .clock(tb_ok$clock)
@@ -680,24 +684,28 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         .open(result$open)
     );
     top$cnt_dop cnt_dop(
-        .d(cnt_dop$d),
-        .q(cnt_dop$q),
-        .clock(cnt_dop$clock)
+        .clock(cnt_dop$clock),
+        .clear(cnt_dop$clear),
+        .inc(cnt_dop$inc),
+        .count(cnt_dop$count)
     );
     top$cnt_dop cnt_tri(
-        .d(cnt_tri$d),
-        .q(cnt_tri$q),
-        .clock(cnt_tri$clock)
+        .clock(cnt_tri$clock),
+        .clear(cnt_tri$clear),
+        .inc(cnt_tri$inc),
+        .count(cnt_tri$count)
     );
     top$cnt_dop cnt_nf(
-        .d(cnt_nf$d),
-        .q(cnt_nf$q),
-        .clock(cnt_nf$clock)
+        .clock(cnt_nf$clock),
+        .clear(cnt_nf$clear),
+        .inc(cnt_nf$inc),
+        .count(cnt_nf$count)
     );
     top$cnt_dop cnt_tf(
-        .d(cnt_tf$d),
-        .q(cnt_tf$q),
-        .clock(cnt_tf$clock)
+        .clock(cnt_tf$clock),
+        .clear(cnt_tf$clear),
+        .inc(cnt_tf$inc),
+        .count(cnt_tf$count)
     );
     
     // Update code
@@ -752,14 +760,6 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         tb_ok$d = tb_ok$q;
         tb_id$d = tb_id$q;
         tb_word$d = tb_word$q;
-        cnt_dop$clock = clock;
-        cnt_tri$clock = clock;
-        cnt_nf$clock = clock;
-        cnt_tf$clock = clock;
-        cnt_dop$d = cnt_dop$q;
-        cnt_tri$d = cnt_tri$q;
-        cnt_nf$d = cnt_nf$q;
-        cnt_tf$d = cnt_tf$q;
         d_cntr$clock = clock;
         mem_port$clock = clock;
         dop$clock = clock;
@@ -768,6 +768,10 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         tri_cache$clock = clock;
         tri_unit$clock = clock;
         result$clock = clock;
+        cnt_dop$clock = clock;
+        cnt_tri$clock = clock;
+        cnt_nf$clock = clock;
+        cnt_tf$clock = clock;
         dop$load_en = host_we & (host_addr[(32'h8)+:(2)] == 32'h0);
         dop$load_addr = host_addr[(32'h0)+:(8)];
         dop$load_data = host_data[(32'h0)+:(24)];
@@ -872,14 +876,8 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         mem_port$mem_resp_data = mem_resp_data;
         mem_req_valid = mem_port$mem_req_valid;
         mem_req_addr = mem_port$mem_req_addr;
-        if (mem_port$accept) begin
-            if (mem_port$req_dst[32'h1]) begin
-                cnt_tf$d = cnt_tf$q + 32'h1;
-            end
-            else begin
-                cnt_nf$d = cnt_nf$q + 32'h1;
-            end
-        end
+        cnt_tf$inc = mem_port$accept & mem_port$req_dst[32'h1];
+        cnt_nf$inc = mem_port$accept & ~mem_port$req_dst[32'h1];
         tri_cache$fill = mem_port$resp & (mem_port$resp_dst == 32'h2);
         tri_cache$fill_id = mem_port$ta_req;
         tri_cache$fill_word = mem_resp_data[(32'h0)+:(554)];
@@ -905,18 +903,16 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
         dop$tag = d_cntr$cur_a;
         dop$valid_in = d_cntr$issue;
         side$d = ((d_cntr$cur_a) & 99'h7ffffffffffffffffffffffff) | (((d_cntr$cur_b) & 99'h7ffffffffffffffffffffffff) << 32'h10) | (((d_cntr$cur_flip) & 99'h7ffffffffffffffffffffffff) << 32'h20) | (((mem_port$na_in[(32'h0)+:(1)]) & 99'h7ffffffffffffffffffffffff) << 32'h21) | (((mem_port$na_in[(32'h1 + 32'h6 * 32'h18)+:(16)]) & 99'h7ffffffffffffffffffffffff) << 32'h22) | (((mem_port$na_in[(32'h21 + 32'h6 * 32'h18)+:(16)]) & 99'h7ffffffffffffffffffffffff) << 32'h32) | (((mem_port$nb_in[(32'h0)+:(1)]) & 99'h7ffffffffffffffffffffffff) << 32'h42) | (((mem_port$nb_in[(32'h1 + 32'h6 * 32'h18)+:(16)]) & 99'h7ffffffffffffffffffffffff) << 32'h43) | (((mem_port$nb_in[(32'h21 + 32'h6 * 32'h18)+:(16)]) & 99'h7ffffffffffffffffffffffff) << 32'h53);
-        if (d_cntr$issue) begin
-            cnt_dop$d = cnt_dop$q + 32'h1;
-        end
+        cnt_dop$inc = d_cntr$issue;
         leaf_fifo$write = d_cntr$leaf_in;
         leaf_fifo$data_in = d_cntr$leaf_pair;
         tri_in = run$q & ~halt & leaf_valid$q & ~need_ta & ~need_tb;
         tri_take = tri_in & tri_unit$in_ready;
+        cnt_tri$inc = tri_take;
         leaf_out = ~leaf_fifo$empty & (halt | (run$q & (~leaf_valid$q | tri_take)));
         leaf_fifo$read = leaf_out;
         if (tri_take) begin
             leaf_valid$d = 1'b0;
-            cnt_tri$d = cnt_tri$q + 32'h1;
         end
         if (leaf_out & ~halt) begin
             leaf_valid$d = 1'b1;
@@ -1014,19 +1010,19 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
             stop$d = 1'b0;
             leaf_valid$d = 1'b0;
             tb_ok$d = 1'b0;
-            cnt_dop$d = 32'h0;
-            cnt_tri$d = 32'h0;
-            cnt_nf$d = 32'h0;
-            cnt_tf$d = 32'h0;
         end
         busy = run$q;
         done = done_r$q;
         overflow = d_cntr$overflow;
         max_depth = d_cntr$max_count;
-        dop_tests = cnt_dop$q;
-        tri_tests = cnt_tri$q;
-        node_fetches = cnt_nf$q;
-        tri_fetches = cnt_tf$q;
+        cnt_dop$clear = start_q;
+        cnt_tri$clear = start_q;
+        cnt_nf$clear = start_q;
+        cnt_tf$clear = start_q;
+        dop_tests = cnt_dop$count;
+        tri_tests = cnt_tri$count;
+        node_fetches = cnt_nf$count;
+        tri_fetches = cnt_tf$count;
     end
     
 endmodule // top
@@ -1051,7 +1047,73 @@ module top$base_na(d,q,clock);
 endmodule // top$base_na
 
 
-module top$cnt_dop(d,q,clock);
+module top$cnt_dop(clock,clear,inc,count);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  clear;
+    input wire  inc;
+    output reg  [31:0] count;
+    
+    // Stub signals
+    reg  [31:0] total$d;
+    wire  [31:0] total$q;
+    reg  total$clock;
+    reg  pending$d;
+    wire  pending$q;
+    reg  pending$clock;
+    
+    // Sub module instances
+    top$cnt_dop$total total(
+        .d(total$d),
+        .q(total$q),
+        .clock(total$clock)
+    );
+    top$cnt_dop$pending pending(
+        .d(pending$d),
+        .q(pending$q),
+        .clock(pending$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        total$clock = clock;
+        total$d = total$q;
+        pending$clock = clock;
+        pending$d = inc;
+        if (pending$q) begin
+            total$d = total$q + 32'h1;
+        end
+        if (clear) begin
+            total$d = 32'h0;
+            pending$d = 1'b0;
+        end
+        count = total$q + ((pending$q) & 32'hffffffff);
+    end
+    
+endmodule // top$cnt_dop
+
+
+module top$cnt_dop$pending(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cnt_dop$pending
+
+
+module top$cnt_dop$total(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -1067,7 +1129,7 @@ module top$cnt_dop(d,q,clock);
        q <= d;
     end
           
-endmodule // top$cnt_dop
+endmodule // top$cnt_dop$total
 
 
 module top$d_cntr(clock,clear,lifo,push_root,root,go,pf,one,credit_lim,leaf_count,id_mask,wa_empty,wb_empty,dop_valid,dop_overlap,side,empty,count,max_count,overflow,push,pop,pop_entry,pop_fetch,ent_valid,cur_a,cur_b,cur_flip,cur_fa,cur_fb,need_na,need_nb,issue,r_a,r_b,r_a_leaf,r_b_leaf,leaf_in,leaf_pair,inflight,pend);
@@ -1254,12 +1316,12 @@ module top$d_cntr(clock,clear,lifo,push_root,root,go,pf,one,credit_lim,leaf_coun
         .q(ahd_pairs$q),
         .clock(ahd_pairs$clock)
     );
-    top$d_cntr$ent_second ent_second(
+    top$cnt_dop$pending ent_second(
         .d(ent_second$d),
         .q(ent_second$q),
         .clock(ent_second$clock)
     );
-    top$d_cntr$ent_second last_ok(
+    top$cnt_dop$pending last_ok(
         .d(last_ok$d),
         .q(last_ok$q),
         .clock(last_ok$clock)
@@ -1274,7 +1336,7 @@ module top$d_cntr(clock,clear,lifo,push_root,root,go,pf,one,credit_lim,leaf_coun
         .q(last_b$q),
         .clock(last_b$clock)
     );
-    top$d_cntr$ent_second last_issue(
+    top$cnt_dop$pending last_issue(
         .d(last_issue$d),
         .q(last_issue$q),
         .clock(last_issue$clock)
@@ -1284,7 +1346,7 @@ module top$d_cntr(clock,clear,lifo,push_root,root,go,pf,one,credit_lim,leaf_coun
         .q(inflight_r$q),
         .clock(inflight_r$clock)
     );
-    top$d_cntr$ent_second pend_r(
+    top$cnt_dop$pending pend_r(
         .d(pend_r$d),
         .q(pend_r$q),
         .clock(pend_r$clock)
@@ -2102,25 +2164,6 @@ module top$d_cntr$ahd_pairs(d,q,clock);
 endmodule // top$d_cntr$ahd_pairs
 
 
-module top$d_cntr$ent_second(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$d_cntr$ent_second
-
-
 module top$d_cntr$last_a(d,q,clock);
     
     // Module arguments
@@ -2263,7 +2306,7 @@ module top$d_cntr$queue(clock,clear,lifo,push,push_data,push2,push2_data,pop,emp
         .q(wr_ptr$q),
         .clock(wr_ptr$clock)
     );
-    top$d_cntr$ent_second byp(
+    top$cnt_dop$pending byp(
         .d(byp$d),
         .q(byp$q),
         .clock(byp$clock)
@@ -2273,12 +2316,12 @@ module top$d_cntr$queue(clock,clear,lifo,push,push_data,push2,push2_data,pop,emp
         .q(byp_data$q),
         .clock(byp_data$clock)
     );
-    top$d_cntr$ent_second rsel(
+    top$cnt_dop$pending rsel(
         .d(rsel$d),
         .q(rsel$q),
         .clock(rsel$clock)
     );
-    top$d_cntr$ent_second order_lifo(
+    top$cnt_dop$pending order_lifo(
         .d(order_lifo$d),
         .q(order_lifo$q),
         .clock(order_lifo$clock)
@@ -2288,7 +2331,7 @@ module top$d_cntr$queue(clock,clear,lifo,push,push_data,push2,push2_data,pop,emp
         .q(max_r$q),
         .clock(max_r$clock)
     );
-    top$d_cntr$ent_second ovf_r(
+    top$cnt_dop$pending ovf_r(
         .d(ovf_r$d),
         .q(ovf_r$q),
         .clock(ovf_r$clock)
@@ -2311,7 +2354,7 @@ module top$d_cntr$queue(clock,clear,lifo,push,push_data,push2,push2_data,pop,emp
         .write_data(bank1$write_data),
         .write_enable(bank1$write_enable)
     );
-    top$d_cntr$ent_second nonempty(
+    top$cnt_dop$pending nonempty(
         .d(nonempty$d),
         .q(nonempty$q),
         .clock(nonempty$clock)
@@ -3888,7 +3931,7 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
     reg  c15_nan;
     
     // Sub module instances
-    top$d_cntr$ent_second s1_valid(
+    top$cnt_dop$pending s1_valid(
         .d(s1_valid$d),
         .q(s1_valid$q),
         .clock(s1_valid$clock)
@@ -4063,7 +4106,7 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
         .q(e_11$q),
         .clock(e_11$clock)
     );
-    top$d_cntr$ent_second s15_valid(
+    top$cnt_dop$pending s15_valid(
         .d(s15_valid$d),
         .q(s15_valid$q),
         .clock(s15_valid$clock)
@@ -4073,7 +4116,7 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
         .q(s15_s$q),
         .clock(s15_s$clock)
     );
-    top$d_cntr$ent_second s15_flag(
+    top$cnt_dop$pending s15_flag(
         .d(s15_flag$d),
         .q(s15_flag$q),
         .clock(s15_flag$clock)
@@ -4353,37 +4396,37 @@ module top$dop$doptrf$0$add_0(clock,a,b,sub,valid_in,y,valid_out);
         .is_inf(unpack_b$is_inf),
         .is_nan(unpack_b$is_nan)
     );
-    top$d_cntr$ent_second s1_valid(
+    top$cnt_dop$pending s1_valid(
         .d(s1_valid$d),
         .q(s1_valid$q),
         .clock(s1_valid$clock)
     );
-    top$d_cntr$ent_second s1_nan(
+    top$cnt_dop$pending s1_nan(
         .d(s1_nan$d),
         .q(s1_nan$q),
         .clock(s1_nan$clock)
     );
-    top$d_cntr$ent_second s1_inf(
+    top$cnt_dop$pending s1_inf(
         .d(s1_inf$d),
         .q(s1_inf$q),
         .clock(s1_inf$clock)
     );
-    top$d_cntr$ent_second s1_inf_sign(
+    top$cnt_dop$pending s1_inf_sign(
         .d(s1_inf_sign$d),
         .q(s1_inf_sign$q),
         .clock(s1_inf_sign$clock)
     );
-    top$d_cntr$ent_second s1_zero_sign(
+    top$cnt_dop$pending s1_zero_sign(
         .d(s1_zero_sign$d),
         .q(s1_zero_sign$q),
         .clock(s1_zero_sign$clock)
     );
-    top$d_cntr$ent_second s1_sign(
+    top$cnt_dop$pending s1_sign(
         .d(s1_sign$d),
         .q(s1_sign$q),
         .clock(s1_sign$clock)
     );
-    top$d_cntr$ent_second s1_eff_sub(
+    top$cnt_dop$pending s1_eff_sub(
         .d(s1_eff_sub$d),
         .q(s1_eff_sub$q),
         .clock(s1_eff_sub$clock)
@@ -4408,32 +4451,32 @@ module top$dop$doptrf$0$add_0(clock,a,b,sub,valid_in,y,valid_out);
         .y(norm$y),
         .lz(norm$lz)
     );
-    top$d_cntr$ent_second s2_valid(
+    top$cnt_dop$pending s2_valid(
         .d(s2_valid$d),
         .q(s2_valid$q),
         .clock(s2_valid$clock)
     );
-    top$d_cntr$ent_second s2_sign(
+    top$cnt_dop$pending s2_sign(
         .d(s2_sign$d),
         .q(s2_sign$q),
         .clock(s2_sign$clock)
     );
-    top$d_cntr$ent_second s2_nan(
+    top$cnt_dop$pending s2_nan(
         .d(s2_nan$d),
         .q(s2_nan$q),
         .clock(s2_nan$clock)
     );
-    top$d_cntr$ent_second s2_inf(
+    top$cnt_dop$pending s2_inf(
         .d(s2_inf$d),
         .q(s2_inf$q),
         .clock(s2_inf$clock)
     );
-    top$d_cntr$ent_second s2_zero(
+    top$cnt_dop$pending s2_zero(
         .d(s2_zero$d),
         .q(s2_zero$q),
         .clock(s2_zero$clock)
     );
-    top$d_cntr$ent_second s2_ovf(
+    top$cnt_dop$pending s2_ovf(
         .d(s2_ovf$d),
         .q(s2_ovf$q),
         .clock(s2_ovf$clock)
@@ -4459,7 +4502,7 @@ module top$dop$doptrf$0$add_0(clock,a,b,sub,valid_in,y,valid_out);
         .nm(round$nm),
         .y(round$y)
     );
-    top$d_cntr$ent_second s3_valid(
+    top$cnt_dop$pending s3_valid(
         .d(s3_valid$d),
         .q(s3_valid$q),
         .clock(s3_valid$clock)
@@ -4994,27 +5037,27 @@ module top$dop$doptrf$0$mul_0(clock,a,b,valid_in,y,valid_out);
         .y(norm_b$y),
         .lz(norm_b$lz)
     );
-    top$d_cntr$ent_second s1_valid(
+    top$cnt_dop$pending s1_valid(
         .d(s1_valid$d),
         .q(s1_valid$q),
         .clock(s1_valid$clock)
     );
-    top$d_cntr$ent_second s1_sign(
+    top$cnt_dop$pending s1_sign(
         .d(s1_sign$d),
         .q(s1_sign$q),
         .clock(s1_sign$clock)
     );
-    top$d_cntr$ent_second s1_nan(
+    top$cnt_dop$pending s1_nan(
         .d(s1_nan$d),
         .q(s1_nan$q),
         .clock(s1_nan$clock)
     );
-    top$d_cntr$ent_second s1_inf(
+    top$cnt_dop$pending s1_inf(
         .d(s1_inf$d),
         .q(s1_inf$q),
         .clock(s1_inf$clock)
     );
-    top$d_cntr$ent_second s1_zero(
+    top$cnt_dop$pending s1_zero(
         .d(s1_zero$d),
         .q(s1_zero$q),
         .clock(s1_zero$clock)
@@ -5040,27 +5083,27 @@ module top$dop$doptrf$0$mul_0(clock,a,b,valid_in,y,valid_out);
         .hi(sig_mul$hi),
         .sticky(sig_mul$sticky)
     );
-    top$d_cntr$ent_second s2_valid(
+    top$cnt_dop$pending s2_valid(
         .d(s2_valid$d),
         .q(s2_valid$q),
         .clock(s2_valid$clock)
     );
-    top$d_cntr$ent_second s2_sign(
+    top$cnt_dop$pending s2_sign(
         .d(s2_sign$d),
         .q(s2_sign$q),
         .clock(s2_sign$clock)
     );
-    top$d_cntr$ent_second s2_nan(
+    top$cnt_dop$pending s2_nan(
         .d(s2_nan$d),
         .q(s2_nan$q),
         .clock(s2_nan$clock)
     );
-    top$d_cntr$ent_second s2_inf(
+    top$cnt_dop$pending s2_inf(
         .d(s2_inf$d),
         .q(s2_inf$q),
         .clock(s2_inf$clock)
     );
-    top$d_cntr$ent_second s2_zero(
+    top$cnt_dop$pending s2_zero(
         .d(s2_zero$d),
         .q(s2_zero$q),
         .clock(s2_zero$clock)
@@ -5075,37 +5118,37 @@ module top$dop$doptrf$0$mul_0(clock,a,b,valid_in,y,valid_out);
         .q(s2_hi$q),
         .clock(s2_hi$clock)
     );
-    top$d_cntr$ent_second s2_sticky(
+    top$cnt_dop$pending s2_sticky(
         .d(s2_sticky$d),
         .q(s2_sticky$q),
         .clock(s2_sticky$clock)
     );
-    top$d_cntr$ent_second s3_valid(
+    top$cnt_dop$pending s3_valid(
         .d(s3_valid$d),
         .q(s3_valid$q),
         .clock(s3_valid$clock)
     );
-    top$d_cntr$ent_second s3_sign(
+    top$cnt_dop$pending s3_sign(
         .d(s3_sign$d),
         .q(s3_sign$q),
         .clock(s3_sign$clock)
     );
-    top$d_cntr$ent_second s3_nan(
+    top$cnt_dop$pending s3_nan(
         .d(s3_nan$d),
         .q(s3_nan$q),
         .clock(s3_nan$clock)
     );
-    top$d_cntr$ent_second s3_inf(
+    top$cnt_dop$pending s3_inf(
         .d(s3_inf$d),
         .q(s3_inf$q),
         .clock(s3_inf$clock)
     );
-    top$d_cntr$ent_second s3_zero(
+    top$cnt_dop$pending s3_zero(
         .d(s3_zero$d),
         .q(s3_zero$q),
         .clock(s3_zero$clock)
     );
-    top$d_cntr$ent_second s3_ovf(
+    top$cnt_dop$pending s3_ovf(
         .d(s3_ovf$d),
         .q(s3_ovf$q),
         .clock(s3_ovf$clock)
@@ -5131,7 +5174,7 @@ module top$dop$doptrf$0$mul_0(clock,a,b,valid_in,y,valid_out);
         .nm(round$nm),
         .y(round$y)
     );
-    top$d_cntr$ent_second s4_valid(
+    top$cnt_dop$pending s4_valid(
         .d(s4_valid$d),
         .q(s4_valid$q),
         .clock(s4_valid$clock)
@@ -5941,7 +5984,7 @@ module top$leaf_fifo$read_logic(clock,read,data_out,empty,almost_empty,underflow
         .q(read_address$q),
         .clock(read_address$clock)
     );
-    top$d_cntr$ent_second dff_underflow(
+    top$cnt_dop$pending dff_underflow(
         .d(dff_underflow$d),
         .q(dff_underflow$q),
         .clock(dff_underflow$clock)
@@ -6046,7 +6089,7 @@ module top$leaf_fifo$write_logic(write,data_in,full,almost_full,overflow,clock,r
         .q(dff_write_address_delay$q),
         .clock(dff_write_address_delay$clock)
     );
-    top$d_cntr$ent_second dff_overflow(
+    top$cnt_dop$pending dff_overflow(
         .d(dff_overflow$d),
         .q(dff_overflow$q),
         .clock(dff_overflow$clock)
@@ -6641,7 +6684,7 @@ module top$mem_port(clock,clear,go,pf_on,slot_bits,port_out,base_na,base_nb,base
         .q(tag_n$q),
         .clock(tag_n$clock)
     );
-    top$d_cntr$ent_second ta_pend(
+    top$cnt_dop$pending ta_pend(
         .d(ta_pend$d),
         .q(ta_pend$q),
         .clock(ta_pend$clock)
@@ -6651,7 +6694,7 @@ module top$mem_port(clock,clear,go,pf_on,slot_bits,port_out,base_na,base_nb,base
         .q(ta_req_r$q),
         .clock(ta_req_r$clock)
     );
-    top$d_cntr$ent_second tb_pend(
+    top$cnt_dop$pending tb_pend(
         .d(tb_pend$d),
         .q(tb_pend$q),
         .clock(tb_pend$clock)
@@ -8425,7 +8468,7 @@ module top$tri_cache(clock,clear,mask,fill,fill_id,fill_word,id,next_id,hit,word
         .write_data(words$write_data),
         .write_enable(words$write_enable)
     );
-    top$d_cntr$ent_second byp(
+    top$cnt_dop$pending byp(
         .d(byp$d),
         .q(byp$q),
         .clock(byp$clock)
@@ -8933,7 +8976,7 @@ module top$tri_unit(clock,load_en,load_addr,load_data,a_m_0$0,a_m_0$1,a_m_0$2,a_
     reg  count$clock;
     
     // Sub module instances
-    top$d_cntr$ent_second run(
+    top$cnt_dop$pending run(
         .d(run$d),
         .q(run$q),
         .clock(run$clock)
@@ -9283,17 +9326,17 @@ module top$tri_unit(clock,load_en,load_addr,load_data,a_m_0$0,a_m_0$1,a_m_0$2,a_
         .q(held$37$q),
         .clock(held$37$clock)
     );
-    top$d_cntr$ent_second held_exact(
+    top$cnt_dop$pending held_exact(
         .d(held_exact$d),
         .q(held_exact$q),
         .clock(held_exact$clock)
     );
-    top$cnt_dop held_tag(
+    top$cnt_dop$total held_tag(
         .d(held_tag$d),
         .q(held_tag$q),
         .clock(held_tag$clock)
     );
-    top$d_cntr$ent_second held_valid(
+    top$cnt_dop$pending held_valid(
         .d(held_valid$d),
         .q(held_valid$q),
         .clock(held_valid$clock)
@@ -9358,17 +9401,17 @@ module top$tri_unit(clock,load_en,load_addr,load_data,a_m_0$0,a_m_0$1,a_m_0$2,a_
         .tag_out(tc$tag_out),
         .valid_out(tc$valid_out)
     );
-    top$d_cntr$ent_second ab_t(
+    top$cnt_dop$pending ab_t(
         .d(ab_t$d),
         .q(ab_t$q),
         .clock(ab_t$clock)
     );
-    top$d_cntr$ent_second ab_f(
+    top$cnt_dop$pending ab_f(
         .d(ab_f$d),
         .q(ab_f$q),
         .clock(ab_f$clock)
     );
-    top$d_cntr$ent_second a_deg(
+    top$cnt_dop$pending a_deg(
         .d(a_deg$d),
         .q(a_deg$q),
         .clock(a_deg$clock)
@@ -9788,7 +9831,7 @@ module top$tri_unit$fifo$read_logic(clock,read,data_out,empty,almost_empty,under
         .q(read_address$q),
         .clock(read_address$clock)
     );
-    top$d_cntr$ent_second dff_underflow(
+    top$cnt_dop$pending dff_underflow(
         .d(dff_underflow$d),
         .q(dff_underflow$q),
         .clock(dff_underflow$clock)
@@ -9874,7 +9917,7 @@ module top$tri_unit$fifo$write_logic(write,data_in,full,almost_full,overflow,clo
         .q(dff_write_address_delay$q),
         .clock(dff_write_address_delay$clock)
     );
-    top$d_cntr$ent_second dff_overflow(
+    top$cnt_dop$pending dff_overflow(
         .d(dff_overflow$d),
         .q(dff_overflow$q),
         .clock(dff_overflow$clock)
@@ -12149,7 +12192,7 @@ module top$tri_unit$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2
     reg  out_valid$clock;
     
     // Sub module instances
-    top$d_cntr$ent_second run(
+    top$cnt_dop$pending run(
         .d(run$d),
         .q(run$q),
         .clock(run$clock)
@@ -14929,137 +14972,137 @@ module top$tri_unit$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2
         .q(regs$553$q),
         .clock(regs$553$clock)
     );
-    top$d_cntr$ent_second exact$0(
+    top$cnt_dop$pending exact$0(
         .d(exact$0$d),
         .q(exact$0$q),
         .clock(exact$0$clock)
     );
-    top$d_cntr$ent_second exact$1(
+    top$cnt_dop$pending exact$1(
         .d(exact$1$d),
         .q(exact$1$q),
         .clock(exact$1$clock)
     );
-    top$d_cntr$ent_second exact$2(
+    top$cnt_dop$pending exact$2(
         .d(exact$2$d),
         .q(exact$2$q),
         .clock(exact$2$clock)
     );
-    top$d_cntr$ent_second exact$3(
+    top$cnt_dop$pending exact$3(
         .d(exact$3$d),
         .q(exact$3$q),
         .clock(exact$3$clock)
     );
-    top$d_cntr$ent_second exact$4(
+    top$cnt_dop$pending exact$4(
         .d(exact$4$d),
         .q(exact$4$q),
         .clock(exact$4$clock)
     );
-    top$d_cntr$ent_second valid$0(
+    top$cnt_dop$pending valid$0(
         .d(valid$0$d),
         .q(valid$0$q),
         .clock(valid$0$clock)
     );
-    top$d_cntr$ent_second valid$1(
+    top$cnt_dop$pending valid$1(
         .d(valid$1$d),
         .q(valid$1$q),
         .clock(valid$1$clock)
     );
-    top$d_cntr$ent_second valid$2(
+    top$cnt_dop$pending valid$2(
         .d(valid$2$d),
         .q(valid$2$q),
         .clock(valid$2$clock)
     );
-    top$d_cntr$ent_second valid$3(
+    top$cnt_dop$pending valid$3(
         .d(valid$3$d),
         .q(valid$3$q),
         .clock(valid$3$clock)
     );
-    top$d_cntr$ent_second valid$4(
+    top$cnt_dop$pending valid$4(
         .d(valid$4$d),
         .q(valid$4$q),
         .clock(valid$4$clock)
     );
-    top$d_cntr$ent_second valid$5(
+    top$cnt_dop$pending valid$5(
         .d(valid$5$d),
         .q(valid$5$q),
         .clock(valid$5$clock)
     );
-    top$d_cntr$ent_second valid$6(
+    top$cnt_dop$pending valid$6(
         .d(valid$6$d),
         .q(valid$6$q),
         .clock(valid$6$clock)
     );
-    top$d_cntr$ent_second valid$7(
+    top$cnt_dop$pending valid$7(
         .d(valid$7$d),
         .q(valid$7$q),
         .clock(valid$7$clock)
     );
-    top$d_cntr$ent_second valid$8(
+    top$cnt_dop$pending valid$8(
         .d(valid$8$d),
         .q(valid$8$q),
         .clock(valid$8$clock)
     );
-    top$d_cntr$ent_second valid$9(
+    top$cnt_dop$pending valid$9(
         .d(valid$9$d),
         .q(valid$9$q),
         .clock(valid$9$clock)
     );
-    top$d_cntr$ent_second valid$10(
+    top$cnt_dop$pending valid$10(
         .d(valid$10$d),
         .q(valid$10$q),
         .clock(valid$10$clock)
     );
-    top$cnt_dop tags$0(
+    top$cnt_dop$total tags$0(
         .d(tags$0$d),
         .q(tags$0$q),
         .clock(tags$0$clock)
     );
-    top$cnt_dop tags$1(
+    top$cnt_dop$total tags$1(
         .d(tags$1$d),
         .q(tags$1$q),
         .clock(tags$1$clock)
     );
-    top$cnt_dop tags$2(
+    top$cnt_dop$total tags$2(
         .d(tags$2$d),
         .q(tags$2$q),
         .clock(tags$2$clock)
     );
-    top$cnt_dop tags$3(
+    top$cnt_dop$total tags$3(
         .d(tags$3$d),
         .q(tags$3$q),
         .clock(tags$3$clock)
     );
-    top$cnt_dop tags$4(
+    top$cnt_dop$total tags$4(
         .d(tags$4$d),
         .q(tags$4$q),
         .clock(tags$4$clock)
     );
-    top$cnt_dop tags$5(
+    top$cnt_dop$total tags$5(
         .d(tags$5$d),
         .q(tags$5$q),
         .clock(tags$5$clock)
     );
-    top$cnt_dop tags$6(
+    top$cnt_dop$total tags$6(
         .d(tags$6$d),
         .q(tags$6$q),
         .clock(tags$6$clock)
     );
-    top$cnt_dop tags$7(
+    top$cnt_dop$total tags$7(
         .d(tags$7$d),
         .q(tags$7$q),
         .clock(tags$7$clock)
     );
-    top$cnt_dop tags$8(
+    top$cnt_dop$total tags$8(
         .d(tags$8$d),
         .q(tags$8$q),
         .clock(tags$8$clock)
     );
-    top$cnt_dop tags$9(
+    top$cnt_dop$total tags$9(
         .d(tags$9$d),
         .q(tags$9$q),
         .clock(tags$9$clock)
     );
-    top$cnt_dop tags$10(
+    top$cnt_dop$total tags$10(
         .d(tags$10$d),
         .q(tags$10$q),
         .clock(tags$10$clock)
@@ -15600,52 +15643,52 @@ module top$tri_unit$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2
         .q(out_s_b$2$q),
         .clock(out_s_b$2$clock)
     );
-    top$d_cntr$ent_second out_cross_t$0(
+    top$cnt_dop$pending out_cross_t$0(
         .d(out_cross_t$0$d),
         .q(out_cross_t$0$q),
         .clock(out_cross_t$0$clock)
     );
-    top$d_cntr$ent_second out_cross_t$1(
+    top$cnt_dop$pending out_cross_t$1(
         .d(out_cross_t$1$d),
         .q(out_cross_t$1$q),
         .clock(out_cross_t$1$clock)
     );
-    top$d_cntr$ent_second out_cross_t$2(
+    top$cnt_dop$pending out_cross_t$2(
         .d(out_cross_t$2$d),
         .q(out_cross_t$2$q),
         .clock(out_cross_t$2$clock)
     );
-    top$d_cntr$ent_second out_cross_f$0(
+    top$cnt_dop$pending out_cross_f$0(
         .d(out_cross_f$0$d),
         .q(out_cross_f$0$q),
         .clock(out_cross_f$0$clock)
     );
-    top$d_cntr$ent_second out_cross_f$1(
+    top$cnt_dop$pending out_cross_f$1(
         .d(out_cross_f$1$d),
         .q(out_cross_f$1$q),
         .clock(out_cross_f$1$clock)
     );
-    top$d_cntr$ent_second out_cross_f$2(
+    top$cnt_dop$pending out_cross_f$2(
         .d(out_cross_f$2$d),
         .q(out_cross_f$2$q),
         .clock(out_cross_f$2$clock)
     );
-    top$d_cntr$ent_second out_hit(
+    top$cnt_dop$pending out_hit(
         .d(out_hit$d),
         .q(out_hit$q),
         .clock(out_hit$clock)
     );
-    top$d_cntr$ent_second out_miss(
+    top$cnt_dop$pending out_miss(
         .d(out_miss$d),
         .q(out_miss$q),
         .clock(out_miss$clock)
     );
-    top$cnt_dop out_tag(
+    top$cnt_dop$total out_tag(
         .d(out_tag$d),
         .q(out_tag$q),
         .clock(out_tag$clock)
     );
-    top$d_cntr$ent_second out_valid(
+    top$cnt_dop$pending out_valid(
         .d(out_valid$d),
         .q(out_valid$q),
         .clock(out_valid$clock)
@@ -17672,37 +17715,37 @@ module top$tri_unit$tc$add_v$0(clock,a,b,sub,valid_in,y,valid_out);
         .is_inf(unpack_b$is_inf),
         .is_nan(unpack_b$is_nan)
     );
-    top$d_cntr$ent_second s1_valid(
+    top$cnt_dop$pending s1_valid(
         .d(s1_valid$d),
         .q(s1_valid$q),
         .clock(s1_valid$clock)
     );
-    top$d_cntr$ent_second s1_nan(
+    top$cnt_dop$pending s1_nan(
         .d(s1_nan$d),
         .q(s1_nan$q),
         .clock(s1_nan$clock)
     );
-    top$d_cntr$ent_second s1_inf(
+    top$cnt_dop$pending s1_inf(
         .d(s1_inf$d),
         .q(s1_inf$q),
         .clock(s1_inf$clock)
     );
-    top$d_cntr$ent_second s1_inf_sign(
+    top$cnt_dop$pending s1_inf_sign(
         .d(s1_inf_sign$d),
         .q(s1_inf_sign$q),
         .clock(s1_inf_sign$clock)
     );
-    top$d_cntr$ent_second s1_zero_sign(
+    top$cnt_dop$pending s1_zero_sign(
         .d(s1_zero_sign$d),
         .q(s1_zero_sign$q),
         .clock(s1_zero_sign$clock)
     );
-    top$d_cntr$ent_second s1_sign(
+    top$cnt_dop$pending s1_sign(
         .d(s1_sign$d),
         .q(s1_sign$q),
         .clock(s1_sign$clock)
     );
-    top$d_cntr$ent_second s1_eff_sub(
+    top$cnt_dop$pending s1_eff_sub(
         .d(s1_eff_sub$d),
         .q(s1_eff_sub$q),
         .clock(s1_eff_sub$clock)
@@ -17727,32 +17770,32 @@ module top$tri_unit$tc$add_v$0(clock,a,b,sub,valid_in,y,valid_out);
         .y(norm$y),
         .lz(norm$lz)
     );
-    top$d_cntr$ent_second s2_valid(
+    top$cnt_dop$pending s2_valid(
         .d(s2_valid$d),
         .q(s2_valid$q),
         .clock(s2_valid$clock)
     );
-    top$d_cntr$ent_second s2_sign(
+    top$cnt_dop$pending s2_sign(
         .d(s2_sign$d),
         .q(s2_sign$q),
         .clock(s2_sign$clock)
     );
-    top$d_cntr$ent_second s2_nan(
+    top$cnt_dop$pending s2_nan(
         .d(s2_nan$d),
         .q(s2_nan$q),
         .clock(s2_nan$clock)
     );
-    top$d_cntr$ent_second s2_inf(
+    top$cnt_dop$pending s2_inf(
         .d(s2_inf$d),
         .q(s2_inf$q),
         .clock(s2_inf$clock)
     );
-    top$d_cntr$ent_second s2_zero(
+    top$cnt_dop$pending s2_zero(
         .d(s2_zero$d),
         .q(s2_zero$q),
         .clock(s2_zero$clock)
     );
-    top$d_cntr$ent_second s2_ovf(
+    top$cnt_dop$pending s2_ovf(
         .d(s2_ovf$d),
         .q(s2_ovf$q),
         .clock(s2_ovf$clock)
@@ -17778,7 +17821,7 @@ module top$tri_unit$tc$add_v$0(clock,a,b,sub,valid_in,y,valid_out);
         .nm(round$nm),
         .y(round$y)
     );
-    top$d_cntr$ent_second s3_valid(
+    top$cnt_dop$pending s3_valid(
         .d(s3_valid$d),
         .q(s3_valid$q),
         .clock(s3_valid$clock)
@@ -18099,27 +18142,27 @@ module top$tri_unit$tc$mul_v$0(clock,a,b,valid_in,y,valid_out);
         .y(norm_b$y),
         .lz(norm_b$lz)
     );
-    top$d_cntr$ent_second s1_valid(
+    top$cnt_dop$pending s1_valid(
         .d(s1_valid$d),
         .q(s1_valid$q),
         .clock(s1_valid$clock)
     );
-    top$d_cntr$ent_second s1_sign(
+    top$cnt_dop$pending s1_sign(
         .d(s1_sign$d),
         .q(s1_sign$q),
         .clock(s1_sign$clock)
     );
-    top$d_cntr$ent_second s1_nan(
+    top$cnt_dop$pending s1_nan(
         .d(s1_nan$d),
         .q(s1_nan$q),
         .clock(s1_nan$clock)
     );
-    top$d_cntr$ent_second s1_inf(
+    top$cnt_dop$pending s1_inf(
         .d(s1_inf$d),
         .q(s1_inf$q),
         .clock(s1_inf$clock)
     );
-    top$d_cntr$ent_second s1_zero(
+    top$cnt_dop$pending s1_zero(
         .d(s1_zero$d),
         .q(s1_zero$q),
         .clock(s1_zero$clock)
@@ -18145,27 +18188,27 @@ module top$tri_unit$tc$mul_v$0(clock,a,b,valid_in,y,valid_out);
         .hi(sig_mul$hi),
         .sticky(sig_mul$sticky)
     );
-    top$d_cntr$ent_second s2_valid(
+    top$cnt_dop$pending s2_valid(
         .d(s2_valid$d),
         .q(s2_valid$q),
         .clock(s2_valid$clock)
     );
-    top$d_cntr$ent_second s2_sign(
+    top$cnt_dop$pending s2_sign(
         .d(s2_sign$d),
         .q(s2_sign$q),
         .clock(s2_sign$clock)
     );
-    top$d_cntr$ent_second s2_nan(
+    top$cnt_dop$pending s2_nan(
         .d(s2_nan$d),
         .q(s2_nan$q),
         .clock(s2_nan$clock)
     );
-    top$d_cntr$ent_second s2_inf(
+    top$cnt_dop$pending s2_inf(
         .d(s2_inf$d),
         .q(s2_inf$q),
         .clock(s2_inf$clock)
     );
-    top$d_cntr$ent_second s2_zero(
+    top$cnt_dop$pending s2_zero(
         .d(s2_zero$d),
         .q(s2_zero$q),
         .clock(s2_zero$clock)
@@ -18180,37 +18223,37 @@ module top$tri_unit$tc$mul_v$0(clock,a,b,valid_in,y,valid_out);
         .q(s2_hi$q),
         .clock(s2_hi$clock)
     );
-    top$d_cntr$ent_second s2_sticky(
+    top$cnt_dop$pending s2_sticky(
         .d(s2_sticky$d),
         .q(s2_sticky$q),
         .clock(s2_sticky$clock)
     );
-    top$d_cntr$ent_second s3_valid(
+    top$cnt_dop$pending s3_valid(
         .d(s3_valid$d),
         .q(s3_valid$q),
         .clock(s3_valid$clock)
     );
-    top$d_cntr$ent_second s3_sign(
+    top$cnt_dop$pending s3_sign(
         .d(s3_sign$d),
         .q(s3_sign$q),
         .clock(s3_sign$clock)
     );
-    top$d_cntr$ent_second s3_nan(
+    top$cnt_dop$pending s3_nan(
         .d(s3_nan$d),
         .q(s3_nan$q),
         .clock(s3_nan$clock)
     );
-    top$d_cntr$ent_second s3_inf(
+    top$cnt_dop$pending s3_inf(
         .d(s3_inf$d),
         .q(s3_inf$q),
         .clock(s3_inf$clock)
     );
-    top$d_cntr$ent_second s3_zero(
+    top$cnt_dop$pending s3_zero(
         .d(s3_zero$d),
         .q(s3_zero$q),
         .clock(s3_zero$clock)
     );
-    top$d_cntr$ent_second s3_ovf(
+    top$cnt_dop$pending s3_ovf(
         .d(s3_ovf$d),
         .q(s3_ovf$q),
         .clock(s3_ovf$clock)
@@ -18236,7 +18279,7 @@ module top$tri_unit$tc$mul_v$0(clock,a,b,valid_in,y,valid_out);
         .nm(round$nm),
         .y(round$y)
     );
-    top$d_cntr$ent_second s4_valid(
+    top$cnt_dop$pending s4_valid(
         .d(s4_valid$d),
         .q(s4_valid$q),
         .clock(s4_valid$clock)

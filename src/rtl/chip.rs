@@ -8,7 +8,7 @@
 //! side delay line of its pairs, TRI_UNIT and its result port
 //! ([`ResultPort`](crate::rtl::tri_unit::ResultPort), rtl/tri_unit.rs). This file keeps what
 //! joins them: the host registers, the leaf FIFO and register with the triangle words held
-//! (A's in its triangle cache, `TriCache`, rtl/tri_cache.rs), the counters and the end of a query.
+//! (A's in its triangle cache, `TriCache`, rtl/tri_cache.rs), the event counters (`EventCounter`, rtl/event_counter.rs) and the end of a query.
 
 /// Stamps out `CollisionChip<N, NP1, NM1>` in the calling module. Arguments: `K` the DOP's
 /// k; `Dop = dop_new` its unit's type (its `LATENCY` sets the side delay line) and
@@ -170,10 +170,11 @@ macro_rules! chip {
             // ---- end of query
             all_idle: Signal<Local, Bit>,
             halt_idle: Signal<Local, Bit>,
-            cnt_dop: DFF<Bits<32>>,
-            cnt_tri: DFF<Bits<32>>,
-            cnt_nf: DFF<Bits<32>>,
-            cnt_tf: DFF<Bits<32>>,
+            // the event counters behind reg::DOP_TESTS ... reg::TRI_FETCHES
+            cnt_dop: $crate::rtl::event_counter::EventCounter,
+            cnt_tri: $crate::rtl::event_counter::EventCounter,
+            cnt_nf: $crate::rtl::event_counter::EventCounter,
+            cnt_tf: $crate::rtl::event_counter::EventCounter,
         }
 
         impl<const N: usize, const NP1: usize, const NM1: usize> CollisionChip<N, NP1, NM1> {
@@ -320,10 +321,10 @@ macro_rules! chip {
                     b(self.res_uncertain.val()),
                     self.res_tag.val().to_u64() & 0xffff,
                     self.res_tag.val().to_u64() >> 16,
-                    self.cnt_dop.q.val().to_u64(),
-                    self.cnt_tri.q.val().to_u64(),
-                    self.cnt_nf.q.val().to_u64(),
-                    self.cnt_tf.q.val().to_u64(),
+                    self.cnt_dop.count.val().to_u64(),
+                    self.cnt_tri.count.val().to_u64(),
+                    self.cnt_nf.count.val().to_u64(),
+                    self.cnt_tf.count.val().to_u64(),
                 ]
             }
         }
@@ -337,8 +338,8 @@ macro_rules! chip {
                 dff_setup!(self, clock, port_pf, port_out, port_one, port_credit, run, done_r, push_root, stop);
                 dff_setup!(self, clock, leaf_count, leaf_valid, leaf_tag);
                 dff_setup!(self, clock, tc_mask, tb_ok, tb_id, tb_word);
-                dff_setup!(self, clock, cnt_dop, cnt_tri, cnt_nf, cnt_tf);
                 clock!(self, clock, d_cntr, mem_port, dop, side, leaf_fifo, tri_cache, tri_unit, result);
+                clock!(self, clock, cnt_dop, cnt_tri, cnt_nf, cnt_tf);
                 // ---- host registers and the units' setup ports: the DOP unit's words below
                 // 0x100, TRI_UNIT's from reg::TRI_SETUP (address bits 9:5 = 8)
                 self.dop.load_en.next = self.host_we.val() & (self.host_addr.val().get_bits::<2>(8) == 0);
@@ -471,13 +472,8 @@ macro_rules! chip {
                 self.mem_port.mem_resp_data.next = self.mem_resp_data.val();
                 self.mem_req_valid.next = self.mem_port.mem_req_valid.val();
                 self.mem_req_addr.next = self.mem_port.mem_req_addr.val();
-                if self.mem_port.accept.val() {
-                    if self.mem_port.req_dst.val().get_bit(1) {
-                        self.cnt_tf.d.next = self.cnt_tf.q.val() + 1;
-                    } else {
-                        self.cnt_nf.d.next = self.cnt_nf.q.val() + 1;
-                    }
-                }
+                self.cnt_tf.inc.next = self.mem_port.accept.val() & self.mem_port.req_dst.val().get_bit(1);
+                self.cnt_nf.inc.next = self.mem_port.accept.val() & !self.mem_port.req_dst.val().get_bit(1);
                 // a triangle word: A's fills its cache line, B's replaces the held one
                 self.tri_cache.fill.next = self.mem_port.resp.val() & (self.mem_port.resp_dst.val() == 2);
                 self.tri_cache.fill_id.next = self.mem_port.ta_req.val();
@@ -513,22 +509,20 @@ macro_rules! chip {
                     | (bit_cast::<99, 1>(self.mem_port.nb_in.val().get_bits::<1>(0)) << 66)
                     | (bit_cast::<99, 16>(self.mem_port.nb_in.val().get_bits::<16>(1 + $K * $WN)) << 67)
                     | (bit_cast::<99, 16>(self.mem_port.nb_in.val().get_bits::<16>(33 + $K * $WN)) << 83);
-                if self.d_cntr.issue.val() {
-                    self.cnt_dop.d.next = self.cnt_dop.q.val() + 1;
-                }
+                self.cnt_dop.inc.next = self.d_cntr.issue.val();
                 // ---- leaf pairs: FIFO, then one at a time its triangle words, then TRI_UNIT
                 self.leaf_fifo.write.next = self.d_cntr.leaf_in.val();
                 self.leaf_fifo.data_in.next = self.d_cntr.leaf_pair.val();
                 self.tri_in.next = self.run.q.val() & !self.halt.val() & self.leaf_valid.q.val()
                     & !self.need_ta.val() & !self.need_tb.val();
                 self.tri_take.next = self.tri_in.val() & self.tri_unit.in_ready.val();
+                self.cnt_tri.inc.next = self.tri_take.val();
                 // after a halt, waiting leaf pairs are dropped
                 self.leaf_out.next = !self.leaf_fifo.empty.val()
                     & (self.halt.val() | (self.run.q.val() & (!self.leaf_valid.q.val() | self.tri_take.val())));
                 self.leaf_fifo.read.next = self.leaf_out.val();
                 if self.tri_take.val() {
                     self.leaf_valid.d.next = false;
-                    self.cnt_tri.d.next = self.cnt_tri.q.val() + 1;
                 }
                 if self.leaf_out.val() & !self.halt.val() {
                     self.leaf_valid.d.next = true;
@@ -609,19 +603,19 @@ macro_rules! chip {
                     self.stop.d.next = false;
                     self.leaf_valid.d.next = false;
                     self.tb_ok.d.next = false;
-                    self.cnt_dop.d.next = 0.into();
-                    self.cnt_tri.d.next = 0.into();
-                    self.cnt_nf.d.next = 0.into();
-                    self.cnt_tf.d.next = 0.into();
                 }
                 self.busy.next = self.run.q.val();
                 self.done.next = self.done_r.q.val();
                 self.overflow.next = self.d_cntr.overflow.val();
                 self.max_depth.next = self.d_cntr.max_count.val();
-                self.dop_tests.next = self.cnt_dop.q.val();
-                self.tri_tests.next = self.cnt_tri.q.val();
-                self.node_fetches.next = self.cnt_nf.q.val();
-                self.tri_fetches.next = self.cnt_tf.q.val();
+                self.cnt_dop.clear.next = self.start_q.val();
+                self.cnt_tri.clear.next = self.start_q.val();
+                self.cnt_nf.clear.next = self.start_q.val();
+                self.cnt_tf.clear.next = self.start_q.val();
+                self.dop_tests.next = self.cnt_dop.count.val();
+                self.tri_tests.next = self.cnt_tri.count.val();
+                self.node_fetches.next = self.cnt_nf.count.val();
+                self.tri_fetches.next = self.cnt_tf.count.val();
             }
         }
 

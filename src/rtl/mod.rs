@@ -48,6 +48,7 @@ mod chip;
 mod common;
 pub mod d_cntr;
 pub mod delay;
+mod event_counter;
 mod dop_decode;
 mod dop_unit;
 mod dop_unit_fold;
