@@ -14,14 +14,14 @@ pub struct Params {
     /// Clocks from a DOP test's issue to its result (the unfolded DOP unit's; a folded one's
     /// is [`rtl::dop_fold_latency`]).
     pub dop_latency: u32,
-    /// Clocks between pairs the DOP unit takes (issue 33): 1, the unfolded unit (k lanes), or
+    /// Clocks between pairs the DOP unit takes: 1, the unfolded unit (k lanes), or
     /// ii dividing k, the folded one (`rtl::*::DopUnit<k>Fold<ii>`: k/ii lanes in ii passes, a
     /// pair taken only when its counter, running from the first pair taken, is 0).
     pub dop_interval: u32,
     /// Clocks from a pair entering TRI_UNIT to its verdict at the output (the unfolded
     /// TRI_UNIT's; a folded one's is its schedule's, `fold::tri_unit_latency`).
     pub tri_latency: u32,
-    /// Clocks between pairs TRI_UNIT takes (issue 33): 1, the unfolded TRI_UNIT (a pair
+    /// Clocks between pairs TRI_UNIT takes: 1, the unfolded TRI_UNIT (a pair
     /// every clock), or an even 2 to 32, the folded TRI_UNIT (`TriUnitFold`: both
     /// directions on one T.CHECK folded for `tri_interval` / 2, a pair taken only when its
     /// control counter, running from the first pair taken, is 0).
@@ -95,7 +95,7 @@ impl Params {
     pub const MAX_PREFETCH: u32 = 256;
     /// Memory requests outstanding at most.
     pub const MAX_OUTSTANDING: u32 = 64;
-    /// The longest folded TRI_UNIT's pair interval (issue 33's folds: 2 to 32).
+    /// The longest folded TRI_UNIT's pair interval (the folds built: 2 to 32).
     pub const MAX_TRI_INTERVAL: u32 = 32;
 
     /// The DOP unit's latency: `dop_latency` unfolded, the folded unit's (the RTL's

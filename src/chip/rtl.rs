@@ -168,11 +168,11 @@ macro_rules! rtl_chips {
             /// The papers' chip (k = 24) in e8m10 throughout, the study's narrowest format.
             /// (Not run in rust-hdl: its speed assumed to be `chip_e8m15_b32_k24`'s.)
             K24E8m10, "chip_e8m10_k24", e8m10, (24, E8M10, E8M10), false, 1, 1, 4.0;
-            /// k = 6 in e8m15 with TRI_UNIT folded: a pair every 16 clocks (issue 33).
+            /// k = 6 in e8m15 with TRI_UNIT folded: a pair every 16 clocks.
             /// (rust-hdl's speed from `fold16_patch_fifo_all` in lockstep, tb/rtl_chip.rs: 1,498
             /// clocks in 10.4 s; the folded TRI_UNIT simulates far faster than two T.CHECKs.)
             K6E8m15Fold16, "chip_e8m15_k6_fold16", e8m15_fold16, (6, REDUCED, REDUCED), false, 1, 16, 140.0;
-            /// k = 6 in e8m15 with both units folded (issue 33), for an ECP5 LFE5U-85F: the DOP
+            /// k = 6 in e8m15 with both units folded, for an ECP5 LFE5U-85F: the DOP
             /// unit on one DOPTRF lane, a pair every 6 clocks; TRI_UNIT a pair every 32.
             /// (rust-hdl's speed from `dop6tri32_patch_fifo_all` in lockstep: 2,882 clocks in 7.2 s.)
             K6E8m15Dop6Tri32, "chip_e8m15_k6_dop6_tri32", e8m15_dop6_tri32, (6, REDUCED, REDUCED), false, 6, 32, 400.0;

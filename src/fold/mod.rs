@@ -1,4 +1,4 @@
-//! Folded units (issue 33): a unit's operations, written once in the golden order
+//! Folded units: a unit's operations, written once in the golden order
 //! ([`ops`]), form a dataflow graph ([`graph`]); a modulo scheduler maps it onto a given
 //! number of shared multipliers, adders and constant multipliers under their latencies
 //! for an initiation interval `ii` ([`schedule`]); the schedule becomes registers,

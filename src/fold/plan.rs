@@ -206,7 +206,7 @@ impl Plan {
 
 #[cfg(test)]
 mod tests {
-    /// At every II of issue 33 the plan reads only registers that exist, issues at most one
+    /// At every II the folds use (2 to 32) the plan reads only registers that exist, issues at most one
     /// operation per unit and counter value (a table of ii entries), and prints its size
     /// (docs/explanation/architecture.md, "Folded T.CHECK", has the table), under either binding.
     #[test]

@@ -226,7 +226,7 @@ mod tests {
         }
     }
 
-    /// T.CHECK's graph schedules validly on the fewest units at every II of issue 33.
+    /// T.CHECK's graph schedules validly on the fewest units at every II the folds use.
     #[test]
     fn tcheck_schedules_at_every_ii() {
         let g = Graph::tcheck();

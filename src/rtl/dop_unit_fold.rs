@@ -1,4 +1,4 @@
-//! The folded DOP unit (issue 33): the DOP unit's function and ports on L DOPTRF lanes, each
+//! The folded DOP unit: the DOP unit's function and ports on L DOPTRF lanes, each
 //! doing k/L of the k directions in successive clocks, a pair taken every k/L clocks; stamped
 //! out per format by `dop_unit_fold!` for the (k, L) pairs listed there.
 

@@ -15,7 +15,7 @@
 //! | [`e8m15_fold16`] | e8m15, TRI_UNIT folded (a pair every 16 clocks) | the k = 6 chip only |
 //! | [`e8m15_dop6_tri32`] | e8m15, the DOP unit folded (a pair every 6 clocks) and TRI_UNIT (every 32) | the k = 6 chip only |
 //!
-//! [`b32`] and [`e8m15`] also hold the folded units of issue 33, built from `crate::fold`'s
+//! [`b32`] and [`e8m15`] also hold the folded units, built from `crate::fold`'s
 //! plans: `TCheckFold` and `TriUnitFold` (both directions on one `TCheckFold`).
 //!
 //! Each unit takes one operation per clock with a `valid` bit travelling alongside and
@@ -302,7 +302,7 @@ pub mod e8m15_b32 {
     );
 }
 
-/// The k = 6 e8m15 chip with its TRI_UNIT folded (issue 33): e8m15's DOP unit and e8m15's
+/// The k = 6 e8m15 chip with its TRI_UNIT folded: e8m15's DOP unit and e8m15's
 /// `TriUnitFold`, a pair every `ChipKind::K6E8m15Fold16.tri_interval()` = 16 clocks on one
 /// T.CHECK folded for 8 (docs/explanation/architecture.md, "Folded TRI_UNIT").
 pub mod e8m15_fold16 {
@@ -336,7 +336,7 @@ pub mod e8m15_fold16 {
     );
 }
 
-/// The k = 6 e8m15 chip with both units folded (issue 33), small enough for an ECP5
+/// The k = 6 e8m15 chip with both units folded, small enough for an ECP5
 /// LFE5U-85F: the DOP unit on one DOPTRF lane, a pair every
 /// `ChipKind::K6E8m15Dop6Tri32.dop_interval()` = 6 clocks (`DopUnit6Fold6`, its `in_ready`
 /// gating D_CNTR's issue), and TRI_UNIT a pair every `tri_interval()` = 32 clocks on one

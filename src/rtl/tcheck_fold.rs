@@ -1,4 +1,4 @@
-//! Folded T.CHECK (issue 33): T.CHECK's operations on a few shared FP units, one triangle
+//! Folded T.CHECK: T.CHECK's operations on a few shared FP units, one triangle
 //! pair every `ii` clocks, built from a [`Plan`](crate::fold::plan::Plan) (the modulo
 //! schedule of T.CHECK's dataflow graph, `crate::fold`). The same plan drives the
 //! simulation (`update`, an interpreter of the plan's tables) and the Verilog (a custom

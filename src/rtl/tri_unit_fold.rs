@@ -1,4 +1,4 @@
-//! Folded TRI_UNIT (DATE'05 §4.2, issue 33): TRI_UNIT's function and ports with both
+//! Folded TRI_UNIT (DATE'05 §4.2): TRI_UNIT's function and ports with both
 //! directions on one folded T.CHECK (`TCheckFold`), a pair taken every `ii` clocks. As in
 //! `TCheckFold`, the simulation (`update`) and the Verilog (a custom module body, [`body_verilog`])
 //! are two readings of the same wiring, checked separately (rust-hdl in tb/rtl_tri.rs, the

@@ -35,7 +35,7 @@ pub struct Plan {
     /// The ideal memory's bus (the `rtl` preset): a word moves in ceil(bits / bus_bits) clocks.
     pub bus_bits: Option<u32>,
     pub technology: Technology,
-    /// TRI_UNIT's and the DOP unit's pair intervals (issue 33: what area costs in time);
+    /// TRI_UNIT's and the DOP unit's pair intervals (what area costs in time);
     /// `[Folds::NONE]` (both unfolded) in studies written before folds.
     #[serde(default = "unfolded")]
     pub folds: Vec<Folds>,
@@ -653,6 +653,22 @@ pub fn table(plan: &Plan, rows: &[Row], area: Option<&Area>) -> Result<String, S
         out.push('\n');
     }
     Ok(out)
+}
+
+/// The rows as JSON (`cchip accuracy --json`); with `area`, each with its `cells` (as the
+/// table's column: null where a unit has no row), for tables made from the data.
+pub fn json(rows: &[Row], area: Option<&Area>) -> String {
+    let out: Vec<serde_json::Value> = rows
+        .iter()
+        .map(|row| {
+            let mut v = serde_json::to_value(row).expect("serialisable");
+            if let (Some(a), Some(o)) = (area, v.as_object_mut()) {
+                o.insert("cells".into(), a.of(&row.chip(), row.folds).into());
+            }
+            v
+        })
+        .collect();
+    serde_json::to_string_pretty(&out).expect("serialisable")
 }
 
 /// Each distinct clock of the rows, once: the table's footnote.
