@@ -251,7 +251,7 @@ struct AccuracyArgs {
     /// clocks against cells.
     #[arg(long, value_name = "FILE")]
     area: Option<PathBuf>,
-    /// Print the rows as JSON instead of the table.
+    /// Print the rows as JSON instead of the table (with --area, each with its `cells`).
     #[arg(long)]
     json: bool,
 }
@@ -520,10 +520,7 @@ fn accuracy(a: AccuracyArgs) -> Result<(), String> {
         }
     }
     if a.json {
-        println!(
-            "{}",
-            serde_json::to_string_pretty(&rows).expect("serialisable")
-        );
+        println!("{}", accuracy::json(&rows, area.as_ref()));
     } else {
         print!("{}", accuracy::table(&plan, &rows, area.as_ref())?);
         println!("\nhost us = the host's setup per pose and its settling of the uncertain pairs with the exact oracle, measured on this machine (wall clock, the fastest of {} runs, poses on every core: noisy); end to end = host + chip.\nclock periods (measured: the configuration's RTL chip's row; estimated: what stands in for it):\n{}", collision_chip::measure::TIMING_RUNS, accuracy::clocks(&rows));
