@@ -4,6 +4,8 @@
 # exported. The exported units without a row in docs/figures/timing.csv are listed (not an
 # error: the large ones take the study tens of minutes each; the ECP5 table,
 # docs/figures/timing_ecp5.csv, has rows only for the units it measures).
+# Also: every chip's row in timing.csv is set by a datapath unit (its slow stage in the DOP unit
+# or TRI_UNIT), so that a format or a rounding, not the control, sets a chip's clock.
 # Usage: scripts/check-timing-fresh.sh [TABLE ...]   (default: the two tables; what CI runs)
 set -euo pipefail
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
@@ -28,6 +30,12 @@ for table in sys.argv[1:]:
         elif r['rtl_sha256'] != rtl[u]:
             bad.append(f'{table}:{line}: {u}: measured on another rtl/{u}.v (sha256 {r["rtl_sha256"][:12]}.., '
                        f'now {rtl[u][:12]}..)')
+        # a chip's clock is its datapath's: the slow stage in its DOP unit or TRI_UNIT, not
+        # in the glue (D_CNTR, the memory port, the counters), whose paths are cut to be shorter
+        stage = r.get('slow_stage', '')
+        if table.endswith('/timing.csv') and u.startswith('chip_') and not stage.startswith(('tri_unit', 'dop')):
+            bad.append(f'{table}:{line}: {u}: its period is set by {stage}, not by its DOP unit or TRI_UNIT: '
+                       f'cut that glue path (docs/explanation/architecture.md, "Clock period")')
     missing = sorted(set(rtl) - seen)
     if missing and table.endswith('/timing.csv'):
         print(f'{table}: not measured (no row): {" ".join(missing)}')
