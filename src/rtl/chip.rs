@@ -170,7 +170,7 @@ macro_rules! chip {
             // ---- end of query
             all_idle: Signal<Local, Bit>,
             halt_idle: Signal<Local, Bit>,
-            // the event counters behind reg::DOP_TESTS ... reg::TRI_FETCHES
+            // the event counters behind the ports dop_tests ... tri_fetches
             cnt_dop: $crate::rtl::event_counter::EventCounter,
             cnt_tri: $crate::rtl::event_counter::EventCounter,
             cnt_nf: $crate::rtl::event_counter::EventCounter,

@@ -1,5 +1,5 @@
-//! The chip's 32-bit event counters (DOP tests, T.CHECKs, node and triangle fetches:
-//! `reg::DOP_TESTS` ... `reg::TRI_FETCHES`), with the event registered before it is added.
+//! The chip's 32-bit event counters (its ports `dop_tests`, `tri_tests`, `node_fetches`,
+//! `tri_fetches`), with the event registered before it is added.
 
 use rust_hdl::prelude::*;
 
