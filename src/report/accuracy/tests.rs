@@ -209,3 +209,23 @@ fn stored_dops_cost_tests_never_pairs() {
     let e = rtl.configs().unwrap_err();
     assert!(e.starts_with("--dop-bits 8 on preset rtl: dop_bits = 8 stores each node below its treelet root's DOP"), "{e}");
 }
+
+/// `--json` with `--area` gives each row the cells of the table's column; without, none.
+#[test]
+fn json_rows_carry_their_cells() {
+    let rows = run(&small_date05("sphere:40"), load, Shard::ALL, || ()).unwrap();
+    let units = timing::datapath_units(&rows[0].chip(), rows[0].folds);
+    let csv: String = units
+        .iter()
+        .enumerate()
+        .map(|(i, (u, _))| format!("{u},{}\n", 10 * (i + 1)))
+        .collect();
+    let path = std::env::temp_dir().join(format!("cchip-area-{}.csv", std::process::id()));
+    std::fs::write(&path, format!("unit,cells\n{csv}")).unwrap();
+    let area = Area::load(&path).unwrap();
+    std::fs::remove_file(&path).ok();
+    let with: serde_json::Value = serde_json::from_str(&json(&rows, Some(&area))).unwrap();
+    assert_eq!(with[0]["cells"], 30, "{units:?}");
+    let without: serde_json::Value = serde_json::from_str(&json(&rows, None)).unwrap();
+    assert!(without[0].get("cells").is_none());
+}
