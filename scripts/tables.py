@@ -11,7 +11,7 @@ hand. Python's standard library only.
 Data: docs/figures/timing.csv, timing_config.csv (scripts/timing-study.sh),
 timing_ecp5.csv (scripts/timing-ecp5.sh, scripts/fpga.sh), area_cells.csv
 (scripts/area-study.sh), accuracy_cycles_uncertain.csv and accuracy_cycles_area.csv (cchip accuracy --plot),
-accuracy_time.json (cchip accuracy --json),
+accuracy_time.json, fold_k24.json and fold_k6.json (cchip accuracy --json),
 stored_dops_paper.json and stored_dops_osu018.json (cchip accuracy --dop-bits ... --json) and bench.jsonl
 (the benches' rows: `cargo bench` writes target/bench/<bench>.jsonl, one JSON line per row
 with its date, CPU and commit; a run is published by appending its lines to bench.jsonl).
@@ -296,7 +296,28 @@ def dop_unit_cells():
                "measured by `scripts/area-study.sh`")
 
 
-TABLES = {"accuracy-sweep": accuracy_sweep, "dop-unit-cells": dop_unit_cells, "accuracy-time": accuracy_time, "timing": timing, "timing-config": timing_config, "ecp5": ecp5, "area": area,
+def fold_sweep():
+    """Both units folded (the bunny on `date05`, outward DOP rounding): per k, format and DOP
+    unit interval, each TRI_UNIT interval's cells / clocks / time per query (period)."""
+    rs = []
+    for k in (24, 6):
+        with open(FIG / f"fold_k{k}.json") as f:
+            rs += [r for r in json.load(f) if r["dop_rounding"] == "outward"]
+    tris = sorted({r["folds"]["tri"] for r in rs})
+    cells = OrderedDict()
+    for r in rs:
+        q = r["queries"]
+        us = r["cycles"] / q * r["period_ns"] / 1000 + (r["host"]["setup_us"] + r["host"]["settle_us"]) / q
+        mc = "-" if r.get("cells") is None else f"{r['cells'] / 1e6:.2f}M"
+        cells.setdefault((r["k"], r["format"], r["folds"]["dop"]), {})[r["folds"]["tri"]] = \
+            f"{mc} / {r['cycles'] / q / 1000:.1f}k / {us:.0f} us ({r['period_ns']:.2f})"
+    body = [[k, fmt, dop] + [c.get(t, "") for t in tris] for (k, fmt, dop), c in cells.items()]
+    return table(["k", "format", "DOP unit ii"] + [f"TRI_UNIT ii = {t}" for t in tris], body) + "\n\n" + \
+        source("the two `cchip accuracy $common ... --json` runs above, `docs/figures/fold_k24.json` and "
+               "`fold_k6.json`; each cell: cells / clocks per query / end-to-end time per query (period ns)")
+
+
+TABLES = {"accuracy-sweep": accuracy_sweep, "fold-sweep": fold_sweep, "dop-unit-cells": dop_unit_cells, "accuracy-time": accuracy_time, "timing": timing, "timing-config": timing_config, "ecp5": ecp5, "area": area,
           "chip-sim": chip_sim, "golden-vs-parry": golden_vs_parry, "headline": headline,
           "stored-dops": stored_dops}
 
