@@ -494,6 +494,26 @@ fn k24r_patch_fifo_all() {
     compare_with_expect(q.name, tr);
 }
 
+/// The papers' chip in one narrow format throughout, e8m15 and e8m10 (641- and 521-bit node
+/// words, each unit in that format): a bunny patch at full speed in lockstep with the cycle
+/// model, whose verdicts are the golden model's in that format, and the trace the checked-in
+/// one (which Verilator reproduces in CI).
+#[test]
+fn k24_narrow_patch_fifo_all() {
+    for (name, chip) in [
+        ("k24e_patch_fifo_all", ChipKind::K24E8m15),
+        ("k24m10_patch_fifo_all", ChipKind::K24E8m10),
+    ] {
+        let q = query(name);
+        assert_eq!(q.chip, chip);
+        let case = Case::of(&q);
+        let tr = &case.lockstep::<10, 11, 9>(1, None)[0];
+        case.check(tr);
+        assert!(tr.tri_tests > 0, "{name} tests triangles");
+        compare_with_expect(q.name, tr);
+    }
+}
+
 /// The k = 6 chip with TRI_UNIT folded (`TriUnitFold`, a pair every 16 clocks; issue 33) on a
 /// bunny patch at full speed: leaf pairs wait in the leaf register for the unit's slots
 /// (`in_ready` high one clock in 16 from the first pair), every signal equal to the cycle

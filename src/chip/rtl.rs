@@ -162,11 +162,11 @@ macro_rules! rtl_chips {
             K24B32, "chip_b32_k24", b32, (24, BINARY32, BINARY32), true, 1, 1, 4.0;
             /// The papers' chip with its DOP datapath in e8m15 (format `e8m15/binary32`).
             K24E8m15B32, "chip_e8m15_b32_k24", e8m15_b32, (24, REDUCED, BINARY32), false, 1, 1, 4.0;
-            /// The papers' chip (k = 24) in e8m15 throughout (format `reduced`). (Not run in
-            /// rust-hdl: its speed assumed to be `chip_e8m15_b32_k24`'s.)
+            /// The papers' chip (k = 24) in e8m15 throughout (format `reduced`). (rust-hdl's
+            /// speed assumed to be `chip_e8m15_b32_k24`'s.)
             K24E8m15, "chip_e8m15_k24", e8m15_k24, (24, REDUCED, REDUCED), false, 1, 1, 4.0;
             /// The papers' chip (k = 24) in e8m10 throughout, the study's narrowest format.
-            /// (Not run in rust-hdl: its speed assumed to be `chip_e8m15_b32_k24`'s.)
+            /// (rust-hdl's speed assumed to be `chip_e8m15_b32_k24`'s.)
             K24E8m10, "chip_e8m10_k24", e8m10, (24, E8M10, E8M10), false, 1, 1, 4.0;
             /// k = 6 in e8m15 with TRI_UNIT folded: a pair every 16 clocks.
             /// (rust-hdl's speed from `fold16_patch_fifo_all` in lockstep, tb/rtl_chip.rs: 1,498
