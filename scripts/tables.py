@@ -266,6 +266,12 @@ def accuracy_sweep():
                "the `rtl` memory's rows of `docs/figures/accuracy_cycles_area.csv`")
 
 
+def per_query_us(r):
+    """A study row's chip and host microseconds per query (the chip's clocks at its period)."""
+    q = r["queries"]
+    return r["cycles"] / q * r["period_ns"] / 1000, (r["host"]["setup_us"] + r["host"]["settle_us"]) / q
+
+
 def accuracy_time():
     """The default study in time (k = 24, outward DOP rounding): per mesh and memory system,
     each format's chip, host and end-to-end microseconds per query."""
@@ -274,9 +280,7 @@ def accuracy_time():
     formats = list(OrderedDict.fromkeys(r["format"] for r in rs))
     cells = OrderedDict()
     for r in rs:
-        q = r["queries"]
-        chip = r["cycles"] / q * r["period_ns"] / 1000
-        host = (r["host"]["setup_us"] + r["host"]["settle_us"]) / q
+        chip, host = per_query_us(r)
         cells.setdefault((r["mesh"], r["memory"]), {})[r["format"]] = f"{chip:.1f} / {host:.1f} / {chip + host:.1f}"
     body = [[mesh, mem] + [c[f] for f in formats] for (mesh, mem), c in cells.items()]
     return table(["mesh", "memory"] + formats, body) + "\n\n" + \
@@ -306,11 +310,10 @@ def fold_sweep():
     tris = sorted({r["folds"]["tri"] for r in rs})
     cells = OrderedDict()
     for r in rs:
-        q = r["queries"]
-        us = r["cycles"] / q * r["period_ns"] / 1000 + (r["host"]["setup_us"] + r["host"]["settle_us"]) / q
+        us = sum(per_query_us(r))
         mc = "-" if r.get("cells") is None else f"{r['cells'] / 1e6:.2f}M"
         cells.setdefault((r["k"], r["format"], r["folds"]["dop"]), {})[r["folds"]["tri"]] = \
-            f"{mc} / {r['cycles'] / q / 1000:.1f}k / {us:.0f} us ({r['period_ns']:.2f})"
+            f"{mc} / {r['cycles'] / r['queries'] / 1000:.1f}k / {us:.0f} us ({r['period_ns']:.2f})"
     body = [[k, fmt, dop] + [c.get(t, "") for t in tris] for (k, fmt, dop), c in cells.items()]
     return table(["k", "format", "DOP unit ii"] + [f"TRI_UNIT ii = {t}" for t in tris], body) + "\n\n" + \
         source("the two `cchip accuracy $common ... --json` runs above, `docs/figures/fold_k24.json` and "
