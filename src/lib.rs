@@ -13,8 +13,8 @@
 // A query's entry points take the host's inputs as the papers name them (two images, B's
 // setup, order, mode, timing, configuration): a struct bundling them would only rename them.
 #![allow(clippy::too_many_arguments)]
-// No function over 150 lines (clippy.toml): a longer one is split into named helpers. Each
-// rust-hdl `update` allowed to be longer says why where it is.
+// No function over 150 lines (clippy.toml): a longer one is split into named helpers, a long
+// rust-hdl kernel into named parts (`rtl::kernel`).
 #![deny(clippy::too_many_lines)]
 
 pub mod chip;

@@ -196,7 +196,7 @@ mod tests {
         );
     }
 
-    /// Issue 16: -1e-15 degrees was reduced to 360.0 and taken for a quarter-turn multiple,
+    /// -1e-15 degrees was reduced to 360.0 and taken for a quarter-turn multiple,
     /// giving the rotation of 270 degrees.
     #[test]
     fn tiny_and_huge_angles_are_reduced_exactly() {

@@ -275,7 +275,7 @@ impl Accuracy {
 mod tests {
     use super::*;
 
-    /// Issue 16: geometry outside the oracle's exact range is refused, not judged.
+    /// Geometry outside the oracle's exact range is refused, not judged.
     #[test]
     fn out_of_range_geometry_is_refused() {
         use nalgebra::Point3;
@@ -360,7 +360,7 @@ mod tests {
         }
     }
 
-    /// Issue 35: the estimate is checked against what is available, and the refusal says
+    /// The estimate is checked against what is available, and the refusal says
     /// what to do.
     #[test]
     fn memory_beyond_the_available_is_refused() {

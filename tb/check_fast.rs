@@ -1,4 +1,4 @@
-//! Check mode (issue 36): the golden model's fast paths (the DOP unit's f64 estimate,
+//! Check mode: the golden model's fast paths (the DOP unit's f64 estimate,
 //! T.CHECK decided with the enclosure of its certificate, docs/explanation/accuracy.md) run beside the
 //! bit-exact path, and every decision is compared (a difference panics inside the query).
 //! Run on random soups, the vendored meshes and the hard-case catalogue, in binary32, the

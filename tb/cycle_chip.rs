@@ -857,7 +857,7 @@ fn prefetch_keeps_requests_back_to_back_by_hand() {
     assert_eq!(issues[..3], [8, 17, 22]);
 }
 
-/// A wait costs no time, however long (issue 35): memory latency, memory interval and the
+/// A wait costs no time, however long: memory latency, memory interval and the
 /// host's reading period at 2^32 - 1 clocks each are skipped in one step, on two
 /// 210-triangle meshes (the scene that walked its waits clock by clock). Run on a thread
 /// with a generous bound so that a regression fails here instead of hanging the suite.

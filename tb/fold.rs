@@ -1,4 +1,4 @@
-//! The folded T.CHECK (issue 33): its one description of T.CHECK's operations
+//! The folded T.CHECK: its one description of T.CHECK's operations
 //! (`fold::ops::tcheck`) in f64 against the golden `golden::tcheck::{stage1, edges}` bit for
 //! bit, and the folded RTL (`rtl::b32::TCheckFold`, built from the modulo schedule at II 16)
 //! against the golden model in rust-hdl; a plan broken by hand (an operand multiplexer off
@@ -228,7 +228,7 @@ fn fold16_equals_golden() {
     );
 }
 
-/// The same generator at every other II of issue 33 equals the golden model on directions
+/// The same generator at every other II of the fold study equals the golden model on directions
 /// of every verdict, and so does each II with its registers bound per reader.
 #[test]
 fn every_ii_equals_golden() {
@@ -261,7 +261,7 @@ fn fold16_broken_mux_is_caught() {
     );
 }
 
-/// Not a check: writes the folded TRI_UNIT's Verilog at every even II of issue 33 for
+/// Not a check: writes the folded TRI_UNIT's Verilog at every even II of the fold study for
 /// synthesis (the time-against-area rows of docs/explanation/architecture.md, "Folded TRI_UNIT"; only
 /// ii = 16 is exported): `cargo test --release --test fold -- --ignored
 /// tri_unit_fold_verilog`, then `nice scripts/synth.sh target/fold-area/*.v`.

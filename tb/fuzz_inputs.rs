@@ -1,4 +1,4 @@
-//! Inputs nobody thought of (issue 35): the mesh loaders (OBJ, STL, PLY), scene files and
+//! Inputs nobody thought of: the mesh loaders (OBJ, STL, PLY), scene files and
 //! poses, fed mutations of the vendored and bad inputs. Each must come back as a value or a
 //! clear error: never a panic, a hang or an allocation the input's size does not justify.
 //!
@@ -435,7 +435,7 @@ fn cchip(args: &[String], limit: std::time::Duration) -> Result<(i32, String), S
         .ok_or_else(|| format!("ended by a signal: {:?}", out.status))
 }
 
-/// `cchip`'s argument parsing and checks (issue 35): mutated quick invocations end with
+/// `cchip`'s argument parsing and checks: mutated quick invocations end with
 /// success or a clear error (exit code 2, no panic), never a hang. A `run` stays explained:
 /// `--explain` is appended, so that no mutation starts the default scene's sweep.
 #[test]

@@ -473,7 +473,7 @@ proptest! {
 }
 
 /// The DOP unit keeps some node pairs and culls others: the comparison with the reference
-/// above would also pass if both always answered the same (issue 16: its check
+/// above would also pass if both always answered the same (its check once
 /// `overlaps < total || overlaps == total` always held).  Per k, format and rounding, over
 /// fixed poses of two 12-triangle soups (about 0.5 apart), both answers are common.
 #[test]
@@ -673,9 +673,9 @@ fn outward_dop_test_never_culls_a_contact() {
 /// Equality alone would also hold for a TRI_UNIT that always answered "uncertain" (the host
 /// settles those with the same oracle) or a DOP test that never culled, so the shares of
 /// uncertain triangle tests and of overlapping DOP tests are bounded per mesh and format
-/// (bounds about 1.5 times the shares measured when they were set, issue 16, and for binary32
+/// (bounds about 1.5 times the shares measured when they were set, and for binary32
 /// at least 0.002: a handful of pairs; below 1). The uncertain bounds were tightened when T.CHECK's
-/// unit-triangle map got a normal as long as the edges (issue 13): with the unit normal the
+/// unit-triangle map got a normal as long as the edges: with the unit normal the
 /// shares were 0.0033-0.0345 (binary32) and 0.47-0.93 (e8m15), and fail these bounds.
 #[test]
 fn default_query_is_exact_on_vendored_meshes() {
@@ -734,7 +734,7 @@ fn default_query_is_exact_on_vendored_meshes() {
     }
 }
 
-/// Issue 16: `query bunny bunny --unit-cube --pose=-1e-15,0,0,0.3,0,0` gave the 370 pairs of
+/// `query bunny bunny --unit-cube --pose=-1e-15,0,0,0.3,0,0` gave the 370 pairs of
 /// 270 degrees instead of the 770 of 0 degrees.
 #[test]
 fn tiny_negative_angle_is_not_a_quarter_turn() {

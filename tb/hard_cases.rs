@@ -1,4 +1,4 @@
-//! Hard cases for the triangle test (issue 3): the catalogue `vectors/hard-cases/*.toml`
+//! Hard cases for the triangle test: the catalogue `vectors/hard-cases/*.toml`
 //! and generated families (src/hard_cases/), judged three ways:
 //! - the exact oracle must give the pairs reasoned out by hand (catalogue) or known by
 //!   construction (generators), and must be invariant under exact changes of the input

@@ -1,4 +1,4 @@
-//! Issue 30: "The import graph of src/ has no circle and no upward arrow", and no file in src/
+//! "The import graph of src/ has no circle and no upward arrow", and no file in src/
 //! is over 1,000 lines (in rustfmt's default style) but those in [`LONG_FILES`], until they are
 //! split. Checked by reading the imports out of the source text (every `crate::`, `$crate::`,
 //! `super::` and `self::` path, `use` trees expanded), not by eye.

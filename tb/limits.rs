@@ -1,4 +1,4 @@
-//! Issue 35, item 4: the memory limit is kept. `cchip run` refuses objects whose setup would
+//! The memory limit is kept. `cchip run` refuses objects whose setup would
 //! not fit before it builds anything, and its estimate is an upper bound of the peak it
 //! reaches (measured as the child process's maximum resident set). And bad input, as a new
 //! user gives it, gets a clear error (exit 2) before work, never a panic or an abort. And the

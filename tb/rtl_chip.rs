@@ -348,7 +348,7 @@ fn k24_sphere_lifo_first() {
     compare_with_expect(q.name, tr);
 }
 
-/// The papers' chip reading the `records` layout (register `reg::MODE` bit 2; issue 31): the
+/// The papers' chip reading the `records` layout (register `reg::MODE` bit 2): the
 /// two children of a node in one 2,048-bit record (a pair reads its node word from the slot
 /// its id's bit 0 names, and fetches a record only if the pair before used another), a
 /// leaf's triangle fetched by its record (triangles in leaf order) through a 2-line cache;
@@ -479,7 +479,7 @@ fn sphere_fifo_cache() {
     compare_with_expect(q.name, tr);
 }
 
-/// The papers' chip with its DOP unit in e8m15 and TRI_UNIT in binary32 (issue 14 item 1):
+/// The papers' chip with its DOP unit in e8m15 and TRI_UNIT in binary32:
 /// 641-bit node words in 738-bit memory words, each unit fed its own format's fields; in
 /// lockstep with the cycle model, whose DOP and T.CHECK verdicts are the golden model's in
 /// those formats.
@@ -514,7 +514,7 @@ fn k24_narrow_patch_fifo_all() {
     }
 }
 
-/// The k = 6 chip with TRI_UNIT folded (`TriUnitFold`, a pair every 16 clocks; issue 33) on a
+/// The k = 6 chip with TRI_UNIT folded (`TriUnitFold`, a pair every 16 clocks) on a
 /// bunny patch at full speed: leaf pairs wait in the leaf register for the unit's slots
 /// (`in_ready` high one clock in 16 from the first pair), every signal equal to the cycle
 /// model's (`[timing] tri_interval = 16`, its latency `fold::tri_unit_latency`) clock by
@@ -535,7 +535,7 @@ fn fold16_patch_fifo_all() {
     compare_with_expect(q.name, tr);
 }
 
-/// The k = 6 chip with both units folded (issue 33): the DOP unit on one lane
+/// The k = 6 chip with both units folded: the DOP unit on one lane
 /// (`DopUnit6Fold6`, a pair every 6 clocks, latency 20) and TRI_UNIT a pair every 32 clocks,
 /// on a bunny patch at full speed: D_CNTR's pairs wait with both node words held for the DOP
 /// unit's `in_ready` (high one clock in 6 from the first pair taken since reset), every

@@ -742,21 +742,8 @@ impl Clocked for Chip<'_> {
             None
         };
         let probed = probe.then(|| self.probe(&c, i, push.is_some()));
-        // ---- host registers
         if i.host_we {
-            match i.host_addr {
-                reg::MODE => {
-                    let (order, mode) = reg::mode_fields(i.host_data);
-                    (self.order, self.first) = (order, mode == reg::Mode::First);
-                }
-                reg::ROOT => self.root = i.host_data,
-                reg::BASE_NA..=reg::BASE_TB => {
-                    // registers in the order NA, NB, TA, TB = Dst order
-                    self.base[(i.host_addr - reg::BASE_NA) as usize] = i.host_data & 0xff_ffff;
-                }
-                reg::MAP => self.map = RecordMap::of_word(i.host_data),
-                _ => {} // the DOP unit's and TRI_UNIT's setup: the golden HostSetup
-            }
+            self.host_write(i.host_addr, i.host_data);
         }
         // ---- memory port
         self.memory_port(c.req.filter(|_| accept), i.mem_resp.is_some());
@@ -779,24 +766,7 @@ impl Clocked for Chip<'_> {
         }
         self.dop.retire(now);
         if c.pop {
-            let e = self.q.top_data;
-            for &pair in &e.pairs[..e.len as usize] {
-                let ids = self.pair_records(pair);
-                let fetch = [0, 1].map(|k| self.held_nodes[k].fetch(ids[k]));
-                for (k, d) in [Dst::NodeA, Dst::NodeB]
-                    .into_iter()
-                    .enumerate()
-                    .filter(|&(k, _)| fetch[k])
-                {
-                    self.to_ask.push_back((d, ids[k], self.seq));
-                }
-                self.ahead.push_back(Ahead {
-                    pair,
-                    seq: self.seq,
-                    fetch,
-                });
-                self.seq += 1;
-            }
+            self.pop_ahead();
         }
         // a clock with no clear, push or pop leaves the queue as it is (a second push comes
         // only with a first)
@@ -845,25 +815,73 @@ impl Clocked for Chip<'_> {
             self.done = true;
         }
         if i.start && !self.run {
-            self.run = true;
-            self.done = false;
-            self.push_root = true;
-            self.stop = false;
-            self.ahead.clear();
-            self.to_ask.clear();
-            self.words.clear();
-            self.held_nodes.iter_mut().for_each(NodeCache::clear);
-            self.leaf_valid = false;
-            self.leaf_seq = 0;
-            self.tri_ask.clear();
-            self.tri_words.clear();
-            self.held_tris.iter_mut().for_each(TriCache::clear);
-            self.cnt = [0; 4];
-            self.stats = self.stats.map(|_| Stats::default());
-            self.next_issue = 0;
+            self.start();
         }
         self.now += 1;
         self.logic = self.logic();
         probed
+    }
+}
+
+impl Chip<'_> {
+    /// A host write to one of the chip's registers (`chip::reg`).
+    fn host_write(&mut self, addr: u32, data: u32) {
+        match addr {
+            reg::MODE => {
+                let (order, mode) = reg::mode_fields(data);
+                (self.order, self.first) = (order, mode == reg::Mode::First);
+            }
+            reg::ROOT => self.root = data,
+            reg::BASE_NA..=reg::BASE_TB => {
+                // registers in the order NA, NB, TA, TB = Dst order
+                self.base[(addr - reg::BASE_NA) as usize] = data & 0xff_ffff;
+            }
+            reg::MAP => self.map = RecordMap::of_word(data),
+            _ => {} // the DOP unit's and TRI_UNIT's setup: the golden HostSetup
+        }
+    }
+
+    /// A pop: the top entry's pairs join the pair buffer, and the node words they fetch
+    /// (those the held records do not hold) join the ask list, in pair order.
+    fn pop_ahead(&mut self) {
+        let e = self.q.top_data;
+        for &pair in &e.pairs[..e.len as usize] {
+            let ids = self.pair_records(pair);
+            let fetch = [0, 1].map(|k| self.held_nodes[k].fetch(ids[k]));
+            for (k, d) in [Dst::NodeA, Dst::NodeB]
+                .into_iter()
+                .enumerate()
+                .filter(|&(k, _)| fetch[k])
+            {
+                self.to_ask.push_back((d, ids[k], self.seq));
+            }
+            self.ahead.push_back(Ahead {
+                pair,
+                seq: self.seq,
+                fetch,
+            });
+            self.seq += 1;
+        }
+    }
+
+    /// A start: the query runs from the root pair, with every buffer, cache and counter
+    /// empty.
+    fn start(&mut self) {
+        self.run = true;
+        self.done = false;
+        self.push_root = true;
+        self.stop = false;
+        self.ahead.clear();
+        self.to_ask.clear();
+        self.words.clear();
+        self.held_nodes.iter_mut().for_each(NodeCache::clear);
+        self.leaf_valid = false;
+        self.leaf_seq = 0;
+        self.tri_ask.clear();
+        self.tri_words.clear();
+        self.held_tris.iter_mut().for_each(TriCache::clear);
+        self.cnt = [0; 4];
+        self.stats = self.stats.map(|_| Stats::default());
+        self.next_issue = 0;
     }
 }

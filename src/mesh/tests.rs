@@ -148,7 +148,7 @@ fn scaled_into_unit_cube_fits_and_is_centred() {
         point.scaled_into_unit_cube().unwrap().vertices[0],
         Point3::origin()
     );
-    // Issue 16: extents at both ends of the range stay finite and in range, and a detail
+    // Extents at both ends of the range stay finite and in range, and a detail
     // scaled out of the range is refused (it was judged, or clamped, before).
     let tri = |v: [[f64; 3]; 3]| Mesh {
         name: "t".into(),
@@ -548,7 +548,7 @@ fn all_formats_give_the_same_triangles_in_face_order() {
     assert!(obj.name.starts_with("cchip-mesh-test-"));
 }
 
-/// Issue 16: decimals are read as the nearest f64 (they were read as f32).  A gap of 2^-40
+/// Decimals are read as the nearest f64 (they were read as f32).  A gap of 2^-40
 /// above z = 1 stays a gap, and 1e6 + 0.1 keeps its 0.1 (as f32 it moved by 0.025).
 #[test]
 fn text_coordinates_are_read_as_f64() {
@@ -601,7 +601,7 @@ fn text_coordinates_are_read_as_f64() {
     }
 }
 
-/// Issue 16: a UTF-8 byte-order mark hid the first OBJ vertex and shifted every index.
+/// A UTF-8 byte-order mark hid the first OBJ vertex and shifted every index.
 #[test]
 fn byte_order_mark_is_skipped() {
     let m = load_bytes(
@@ -638,7 +638,7 @@ fn stl_kind_is_reported_as_read() {
     );
 }
 
-/// Issue 16: PLY elements beyond the header's counts were silently dropped.
+/// PLY elements beyond the header's counts were silently dropped.
 #[test]
 fn ply_data_beyond_the_header_counts_is_an_error() {
     let mut b = ply_bytes("ascii");
@@ -665,7 +665,7 @@ fn ply_data_beyond_the_header_counts_is_an_error() {
     );
 }
 
-/// Issue 16: the exact oracle is exact only for magnitudes in [1e-60, 1e60] (module doc of
+/// The exact oracle is exact only for magnitudes in [1e-60, 1e60] (module doc of
 /// `oracle`); PLY doubles near 1e120 gave false intersections.
 #[test]
 fn coordinates_outside_the_oracle_range_are_refused() {

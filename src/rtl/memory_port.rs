@@ -262,12 +262,15 @@ macro_rules! memory_port {
             }
         }
 
+        $crate::rtl::kernel::kernel!([] MemoryPort: Words, Requests, Responses, Asks);
+
+        /// The current pair's node words, from the records at the heads of the word FIFOs.
+        struct Words;
+
         // The slot loop `1..SLOTS` is empty on a chip of one node word a record (no Verilog);
         // rust-hdl's generated methods repeat it.
         #[allow(clippy::reversed_empty_ranges)]
-        impl Logic for MemoryPort {
-            // Long: #[hdl_gen] translates one body; split into sub-blocks, the chips' Verilog would change (new names) and their timing rows go stale.
-            #[allow(clippy::too_many_lines)]
+        impl $crate::rtl::kernel::Kernel<Words> for MemoryPort {
             #[hdl_gen]
             fn update(&mut self) {
                 dff_setup!(self, clock, ask_head, ask_tail, ask_n, seq_head, seq_tail);
@@ -311,6 +314,16 @@ macro_rules! memory_port {
                 self.wa_empty.next = self.wa_n.q.val() == 0;
                 self.wb_empty.next = self.wb_n.q.val() == 0;
                 // ---- requests: triangle words first (one outstanding per destination), then
+            }
+        }
+
+        /// The next request to memory (triangle words first, then the ask list's node words) and
+        /// the tag ring that matches each response to its request.
+        struct Requests;
+
+        impl $crate::rtl::kernel::Kernel<Requests> for MemoryPort {
+            #[hdl_gen]
+            fn update(&mut self) {
                 // the node word at the head of the ask list (at prefetch 0 only the current
                 // pair's), while fewer than port_out + 1 are outstanding
                 self.ask_dec.next = self.c_one32.val() << self.ask_head.q.val();
@@ -403,6 +416,15 @@ macro_rules! memory_port {
                     self.tag_n.d.next = self.tag_n.q.val() - 1;
                 }
                 // ---- a response: node words into their FIFO (a triangle word is the chip's)
+            }
+        }
+
+        /// A response's node word into its FIFO, and an issue taking the pair's words out.
+        struct Responses;
+
+        impl $crate::rtl::kernel::Kernel<Responses> for MemoryPort {
+            #[hdl_gen]
+            fn update(&mut self) {
                 self.wa.wsel.next = 0.into();
                 if self.resp.val() & (self.resp_dst.val() == 0) {
                     self.wa.wsel.next = self.c_one16.val() << self.wa_tail.q.val();
@@ -447,6 +469,15 @@ macro_rules! memory_port {
                     + bit_cast::<5, 1>((self.resp.val() & (self.resp_dst.val() == 1)).into())
                     - bit_cast::<5, 1>((self.issue.val() & self.cur_fb.val()).into());
                 // ---- a pop: its node words join the ask list in pair order (A0 B0 A1 B1, the
+            }
+        }
+
+        /// A pop's node words joining the ask list, and the start.
+        struct Asks;
+
+        impl $crate::rtl::kernel::Kernel<Asks> for MemoryPort {
+            #[hdl_gen]
+            fn update(&mut self) {
                 // fetched ones), each with its pair's number
                 self.top_two.next = self.pop_entry.val().get_bit(66);
                 if self.pop.val() {

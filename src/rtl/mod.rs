@@ -56,6 +56,7 @@ mod event_counter;
 mod fp_add;
 mod fp_mul;
 mod fp_scale;
+mod kernel;
 mod klmsel;
 mod memory_port;
 mod reg_ring;

@@ -236,6 +236,20 @@ fn rtl_order_names_what_to_change() {
     )
     .unwrap_err();
     assert!(e.contains("[timing]"), "{e}");
+}
+
+/// The RTL chips' memory port register and memory layouts: what they take, and what the
+/// refusals say to change.
+#[test]
+fn rtl_order_of_port_and_layout() {
+    use crate::chip::params::Params;
+    use crate::chip::reg::Order;
+    use crate::chip::rtl::ChipKind;
+    let rtl = Scene::parse(
+        include_str!("../../vectors/scenes/rtl_spheres.toml"),
+        "rtl_spheres",
+    )
+    .unwrap();
     // the memory port's register: within its fields, and no further
     let port = Params {
         prefetch: 14,
@@ -730,7 +744,7 @@ fn chip_presets_and_their_overrides() {
     assert!(graph::Plan::of(&d).explain(&d).contains("preset date05"));
 }
 
-/// Issue 16: mesh paths were resolved against the current directory.
+/// Mesh paths were resolved against the current directory.
 #[test]
 fn mesh_paths_are_relative_to_the_scene() {
     let dir = std::env::temp_dir().join(format!("cchip-scene-test-{}", std::process::id()));

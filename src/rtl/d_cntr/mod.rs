@@ -7,6 +7,7 @@
 use crate::chip::layout::ENTRY_BITS;
 use crate::chip::reg::Order;
 use crate::cycle::d_cntr::{QueueIn, QueueOut};
+use crate::rtl::kernel::kernel;
 use crate::rtl::reg_ring::RegRing;
 use rust_hdl::prelude::*;
 
@@ -200,9 +201,14 @@ impl<const N: usize, const NP1: usize, const NM1: usize> PairQueue<N, NP1, NM1> 
     pub const CAPACITY: usize = 1 << N;
 }
 
-impl<const N: usize, const NP1: usize, const NM1: usize> Logic for PairQueue<N, NP1, NM1> {
-    // Long: #[hdl_gen] translates one body; split into sub-blocks, rtl/pair_queue_n4.v and the chips' Verilog would change (new names) and their timing rows go stale.
-    #[allow(clippy::too_many_lines)]
+kernel!([const N: usize, const NP1: usize, const NM1: usize] PairQueue<N, NP1, NM1>: Operation, Moves, RamPorts);
+
+/// The pair queue's outputs, this clock's pop and pushes, and the count after the edge.
+struct Operation;
+
+impl<const N: usize, const NP1: usize, const NM1: usize> crate::rtl::kernel::Kernel<Operation>
+    for PairQueue<N, NP1, NM1>
+{
     #[hdl_gen]
     fn update(&mut self) {
         // every register holds unless assigned below
@@ -278,6 +284,18 @@ impl<const N: usize, const NP1: usize, const NM1: usize> Logic for PairQueue<N, 
         self.we_b.next = false;
         self.wdata_a.next = self.e1.val();
         self.wdata_b.next = self.push2_data.val();
+    }
+}
+
+/// Where the entries go: the new top, the RAM writes and the pointers, by order (LIFO or
+/// FIFO), and the clear.
+struct Moves;
+
+impl<const N: usize, const NP1: usize, const NM1: usize> crate::rtl::kernel::Kernel<Moves>
+    for PairQueue<N, NP1, NM1>
+{
+    #[hdl_gen]
+    fn update(&mut self) {
         if self.order_lifo.q.val() {
             self.wdata_b.next = self.e1.val();
             // LIFO: RAM[0 .. wr_ptr - 1] below the top; the last stored push is the new top
@@ -371,6 +389,18 @@ impl<const N: usize, const NP1: usize, const NM1: usize> Logic for PairQueue<N, 
         }
         self.rd_ptr.d.next = self.rd_n.val();
         self.wr_ptr.d.next = self.wr_n.val();
+    }
+}
+
+/// The two banks' ports and the next entry's read address, with the bypass of a word
+/// written at the edge that reads it.
+struct RamPorts;
+
+impl<const N: usize, const NP1: usize, const NM1: usize> crate::rtl::kernel::Kernel<RamPorts>
+    for PairQueue<N, NP1, NM1>
+{
+    #[hdl_gen]
+    fn update(&mut self) {
         // ---- RAM: port A at wr_ptr, port B at wr_ptr + 1, each in the bank
         // of its parity; read the next entry of the state after this edge from both banks:
         // FIFO rd_n, LIFO wr_n - 1 (after a clear: 0, or 2^N - 1), as the cases above move
@@ -709,9 +739,15 @@ impl<const N: usize, const NP1: usize, const NM1: usize> Default for DCntr<N, NP
     }
 }
 
-impl<const N: usize, const NP1: usize, const NM1: usize> Logic for DCntr<N, NP1, NM1> {
-    // Long: #[hdl_gen] translates one body; split into sub-blocks, the chips' Verilog would change (new names) and their timing rows go stale.
-    #[allow(clippy::too_many_lines)]
+kernel!([const N: usize, const NP1: usize, const NM1: usize] DCntr<N, NP1, NM1>: Issue, Pop, Children);
+
+/// The pair buffer's head entry, its current pair's node words, and the issue of that pair
+/// to the DOP unit.
+struct Issue;
+
+impl<const N: usize, const NP1: usize, const NM1: usize> crate::rtl::kernel::Kernel<Issue>
+    for DCntr<N, NP1, NM1>
+{
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(self, clock, ahd_head, ahd_tail, ahd_pairs, ent_second, last_ok, last_a, last_b);
@@ -761,6 +797,18 @@ impl<const N: usize, const NP1: usize, const NM1: usize> Logic for DCntr<N, NP1,
                 self.ahd_head.d.next = self.ahd_head.q.val() + 1;
             }
         }
+    }
+}
+
+/// A DOP result taken apart, and the pop of the next entry into the pair buffer with the
+/// node words its pairs fetch.
+struct Pop;
+
+impl<const N: usize, const NP1: usize, const NM1: usize> crate::rtl::kernel::Kernel<Pop>
+    for DCntr<N, NP1, NM1>
+{
+    #[hdl_gen]
+    fn update(&mut self) {
         // ---- a DOP result: child entries (DOP-sharing order), or a leaf pair
         self.r_a.next = self.side.val().get_bits::<16>(0);
         self.r_b.next = self.side.val().get_bits::<16>(16);
@@ -833,6 +881,18 @@ impl<const N: usize, const NP1: usize, const NM1: usize> Logic for DCntr<N, NP1,
                 self.last_b.d.next = self.top.val().get_bits::<16>(49);
             }
         }
+    }
+}
+
+/// A hit's child entries (or leaf pair) pushed, the tests in flight counted, the start, and
+/// the outputs.
+struct Children;
+
+impl<const N: usize, const NP1: usize, const NM1: usize> crate::rtl::kernel::Kernel<Children>
+    for DCntr<N, NP1, NM1>
+{
+    #[hdl_gen]
+    fn update(&mut self) {
         // (xa, xb): A's children, (ya, yb): B's, in the pair's flip order
         self.xa.next = self.r_a0.val();
         self.xb.next = self.r_a1.val();

@@ -238,9 +238,12 @@ macro_rules! edge {
             }
         }
 
-        impl Logic for Edge {
-            // Long: #[hdl_gen] translates one body; split into sub-blocks, T.CHECK's, TRI_UNIT's and the unfolded chips' Verilog would change (new names) and their timing rows go stale.
-            #[allow(clippy::too_many_lines)]
+        $crate::rtl::kernel::kernel!([] Edge: Values, Bounds, Signs);
+
+        /// The edge's values: the products, a, b, r_z and s = (a + b) - r_z.
+        struct Values;
+
+        impl $crate::rtl::kernel::Kernel<Values> for Edge {
             #[hdl_gen]
             fn update(&mut self) {
                 clock!(self, clock, px_qz, qx_pz, py_qz, qy_pz, a, b, rz, rz_wait, ab, s);
@@ -294,6 +297,15 @@ macro_rules! edge {
                 self.s.b.next = self.rz_wait.q.val();
                 self.s.sub.next = true;
                 self.s.valid_in.next = false;
+            }
+        }
+
+        /// The error bounds of a, b, r_z and s.
+        struct Bounds;
+
+        impl $crate::rtl::kernel::Kernel<Bounds> for Edge {
+            #[hdl_gen]
+            fn update(&mut self) {
                 // ---- bounds of a and b: (E_P H_Qz + |P| G_Qz) + (E_Q H_Pz + |Q| G_Pz)
                 self.pf0_wait.d.next = self.pf0.val();
                 self.qf0_wait.d.next = self.qf0.val();
@@ -384,6 +396,15 @@ macro_rules! edge {
                 self.bs.b.next = self.brs_wait.q.val();
                 self.bs.sub.next = false;
                 self.bs.valid_in.next = false;
+            }
+        }
+
+        /// The signs, surely right or uncertain, and the edge's verdict.
+        struct Signs;
+
+        impl $crate::rtl::kernel::Kernel<Signs> for Edge {
+            #[hdl_gen]
+            fn update(&mut self) {
                 // ---- signs as value and bound are ready, waiting for s's
                 self.pz_wait.d.next = self.p2.val();
                 self.qz_wait.d.next = self.q2.val();

@@ -345,9 +345,12 @@ macro_rules! tcheck {
             }
         }
 
-        impl Logic for TCheck {
-            // Long: #[hdl_gen] translates one body; split into sub-blocks, T.CHECK's, TRI_UNIT's and the unfolded chips' Verilog would change (new names) and their timing rows go stale.
-            #[allow(clippy::too_many_lines)]
+        $crate::rtl::kernel::kernel!([] TCheck: Inputs, Vertices, Edges);
+
+        /// Clock 1's input register and stage 1, B's frame in A's: Mb = M_A^-1 M_B.
+        struct Inputs;
+
+        impl $crate::rtl::kernel::Kernel<Inputs> for TCheck {
             #[hdl_gen]
             fn update(&mut self) {
                 dff_setup!(self, clock, in_alpha_m, in_alpha_f, in_beta_m, in_beta_f, in_scale, in_v_exact, in_tag, in_valid);
@@ -413,6 +416,16 @@ macro_rules! tcheck {
                     self.$mgr[j].d.next = self.$mg[j].y.val();
                 }
                 )*
+            }
+        }
+
+        /// The input errors and stage 2: B's vertices in A's frame, with their error bounds and
+        /// certificate terms.
+        struct Vertices;
+
+        impl $crate::rtl::kernel::Kernel<Vertices> for TCheck {
+            #[hdl_gen]
+            fn update(&mut self) {
                 // ---- the input errors: A' = alpha_m beta_m + alpha_f beta_f, and per vertex
                 // L1 = (|x| + |y|) + (|z| + S), err = A' L1, all rounded upward
                 self.am.a.next = self.in_alpha_m.q.val();
@@ -499,6 +512,15 @@ macro_rules! tcheck {
                     self.verts[k].m1.next = self.vmr_1[k].q.val();
                     self.verts[k].m2.next = self.vmr_2[k].q.val();
                 }
+            }
+        }
+
+        /// Stages 3-5, the three edges, and the verdict.
+        struct Edges;
+
+        impl $crate::rtl::kernel::Kernel<Edges> for TCheck {
+            #[hdl_gen]
+            fn update(&mut self) {
                 // ---- stages 3-5: edges V0V1, V1V2, V2V0
                 self.edges[0].p0.next = self.vtr_0[0].q.val();
                 self.edges[0].p1.next = self.vtr_1[0].q.val();
