@@ -40,7 +40,7 @@ pub enum Preset {
 }
 
 impl Preset {
-    /// The memory port at full speed: what the RTL's register 0x126 allows at most but the
+    /// The memory port at full speed: what the RTL's register `reg::PORT` allows at most but the
     /// credit.
     fn full_port(memory: Memory) -> Params {
         let outstanding = rtl::PORT_OUTSTANDING as u32;

@@ -8,32 +8,53 @@ use super::params::Params;
 use super::rtl;
 use serde::{Deserialize, Serialize};
 
-/// TRI_UNIT's setup words (frame maps, bounds, eta).
-pub const TRI_SETUP: u32 = 0x100;
-/// The query: bit 0 the order ([`Order::Lifo`]), bit 1 first hit ([`Mode::First`]), bit 2
-/// the memory layout ([`MemLayout::Records`]), bits 5:3 the bits of a node id's slot field
-/// in it ([`slot_bits`]: 1 for a node pair, 3 for a treelet of
-/// two levels; 0 in `words`). The cycle model takes the layout from its configuration.
-pub const MODE: u32 = 0x120;
-/// The root pair: A's node in bits 15:0, B's in 31:16.
-pub const ROOT: u32 = 0x121;
-/// Word addresses of A's nodes, B's nodes, A's triangles, B's triangles (24 bits each).
-pub const BASE_NA: u32 = 0x122;
-pub const BASE_NB: u32 = 0x123;
-pub const BASE_TA: u32 = 0x124;
-pub const BASE_TB: u32 = 0x125;
-/// The memory port: bits 3:0 the pairs prefetched, 7:4 the requests outstanding at most,
-/// less one; bit 8 an issue every clock (issue spacing 1); bits 14:9 the credit (0:
-/// [`rtl::CREDIT`]). Zero after reset: the RTL's default point ([`Params::RTL`]). The cycle
-/// model takes these from its [`Params`]; [`control_writes`] writes them for the RTL.
-pub const PORT: u32 = 0x126;
-/// A's triangle cache: bits 6:0 its lines less one (`ChipConfig::tri_cache`, at most
-/// [`rtl::TRI_CACHE_LINES`] in the RTL). Zero after reset: one line.
-pub const TRI_CACHE: u32 = 0x127;
-/// Where the records lie ([`RecordMap::word`](super::layout::RecordMap::word)): the log2 of
-/// each region's banks, of a page's records and of the banks. Zero after reset: the image
-/// in order, record `i` of a region at its base plus `i`.
-pub const MAP: u32 = 0x128;
+/// The register map, written once: `register_map!([m] { args })` expands to `m! { args`
+/// and each register as `NAME = address;` with its doc `}`. It defines the constants
+/// below, and gives the RTL chip's kernel the addresses as literal tokens
+/// (`crate::rtl::chip`'s `host_kernel!`: `#[hdl_gen]` translates a path such as
+/// `reg::MODE` into a Verilog signal's name, not into its value).
+macro_rules! register_map {
+    ([$($m:tt)*] { $($args:tt)* }) => {
+        $($m)*! { $($args)*
+            /// TRI_UNIT's setup words (frame maps, bounds, eta).
+            TRI_SETUP = 0x100;
+            /// The query: bit 0 the order ([`Order::Lifo`]), bit 1 first hit ([`Mode::First`]), bit
+            /// 2 the memory layout ([`MemLayout::Records`]), bits 5:3 the bits of a node id's slot
+            /// field in it ([`slot_bits`]: 1 for a node pair, 3 for a treelet of two levels; 0 in
+            /// `words`). The cycle model takes the layout from its configuration.
+            MODE = 0x120;
+            /// The root pair: A's node in bits 15:0, B's in 31:16.
+            ROOT = 0x121;
+            /// Word addresses of A's nodes, B's nodes, A's triangles, B's triangles (24 bits each).
+            BASE_NA = 0x122;
+            BASE_NB = 0x123;
+            BASE_TA = 0x124;
+            BASE_TB = 0x125;
+            /// The memory port: bits 3:0 the pairs prefetched, 7:4 the requests outstanding at
+            /// most, less one; bit 8 an issue every clock (issue spacing 1); bits 14:9 the credit
+            /// (0: [`rtl::CREDIT`]). Zero after reset: the RTL's default point ([`Params::RTL`]).
+            /// The cycle model takes these from its [`Params`]; [`control_writes`] writes them for
+            /// the RTL.
+            PORT = 0x126;
+            /// A's triangle cache: bits 6:0 its lines less one (`ChipConfig::tri_cache`, at most
+            /// [`rtl::TRI_CACHE_LINES`] in the RTL). Zero after reset: one line.
+            TRI_CACHE = 0x127;
+            /// Where the records lie ([`RecordMap::word`](super::layout::RecordMap::word)): the
+            /// log2 of each region's banks, of a page's records and of the banks. Zero after reset:
+            /// the image in order, record `i` of a region at its base plus `i`.
+            MAP = 0x128;
+        }
+    };
+}
+pub(crate) use register_map;
+
+/// `pub const NAME: u32 = address;` for each register of the map.
+macro_rules! constants {
+    ($($(#[$doc:meta])* $name:ident = $addr:literal;)*) => {
+        $($(#[$doc])* pub const $name: u32 = $addr;)*
+    };
+}
+register_map!([constants] {});
 
 /// What a query looks for.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, clap::ValueEnum)]

@@ -10,6 +10,115 @@
 //! joins them: the host registers, the leaf FIFO and register with the triangle words held
 //! (A's in its triangle cache, `TriCache`, rtl/tri_cache.rs), the event counters (`EventCounter`, rtl/event_counter.rs) and the end of a query.
 
+/// The chip kernel's part `Host` (in `chip!`), given the DOP and T.CHECK word widths and
+/// then, from [`register_map!`](crate::chip::reg::register_map), the host registers'
+/// addresses as literals.
+macro_rules! host_kernel {
+    ($WD:tt, $WT:tt;
+     $(#[$tri_setup_doc:meta])* TRI_SETUP = $tri_setup:tt;
+     $(#[$mode_doc:meta])* MODE = $mode:tt;
+     $(#[$root_doc:meta])* ROOT = $root:tt;
+     $(#[$base_na_doc:meta])* BASE_NA = $base_na:tt;
+     $(#[$base_nb_doc:meta])* BASE_NB = $base_nb:tt;
+     $(#[$base_ta_doc:meta])* BASE_TA = $base_ta:tt;
+     $(#[$base_tb_doc:meta])* BASE_TB = $base_tb:tt;
+     $(#[$port_doc:meta])* PORT = $port:tt;
+     $(#[$tri_cache_doc:meta])* TRI_CACHE = $tri_cache:tt;
+     $(#[$map_doc:meta])* MAP = $map:tt;) => {
+        /// The host registers (chip::reg), the units' setup ports, and run or halt.
+        struct Host;
+
+        impl<const N: usize, const NP1: usize, const NM1: usize> $crate::rtl::kernel::Kernel<Host>
+            for CollisionChip<N, NP1, NM1>
+        {
+            #[hdl_gen]
+            fn update(&mut self) {
+                dff_setup!(
+                    self, clock, mode_lifo, mode_first, mode_rec, mode_slot, root, base_na,
+                    base_nb, base_ta, base_tb, map
+                );
+                dff_setup!(
+                    self,
+                    clock,
+                    port_pf,
+                    port_out,
+                    port_one,
+                    port_credit,
+                    run,
+                    done_r,
+                    push_root,
+                    stop
+                );
+                dff_setup!(self, clock, leaf_count, leaf_valid, leaf_tag);
+                dff_setup!(self, clock, tc_mask, tb_ok, tb_id, tb_word);
+                clock!(
+                    self, clock, d_cntr, mem_port, dop, side, leaf_fifo, tri_cache, tri_unit,
+                    result
+                );
+                clock!(self, clock, cnt_dop, cnt_tri, cnt_nf, cnt_tf);
+                // ---- host registers and the units' setup ports: the DOP unit's words below
+                // 0x100, TRI_UNIT's from reg::TRI_SETUP (address bits 9:5 = 8)
+                self.dop.load_en.next =
+                    self.host_we.val() & (self.host_addr.val().get_bits::<2>(8) == 0);
+                self.dop.load_addr.next = self.host_addr.val().get_bits::<8>(0);
+                self.dop.load_data.next = self.host_data.val().get_bits::<$WD>(0);
+                self.tri_unit.load_en.next =
+                    self.host_we.val() & (self.host_addr.val().get_bits::<5>(5) == 8);
+                self.tri_unit.load_addr.next = self.host_addr.val().get_bits::<5>(0);
+                self.tri_unit.load_data.next = self.host_data.val().get_bits::<$WT>(0);
+                if self.host_we.val() {
+                    if self.host_addr.val() == $mode {
+                        self.mode_lifo.d.next = self.host_data.val().get_bit(0);
+                        self.mode_first.d.next = self.host_data.val().get_bit(1);
+                        self.mode_rec.d.next = self.host_data.val().get_bit(2);
+                        self.mode_slot.d.next = self.host_data.val().get_bits::<3>(3);
+                    }
+                    if self.host_addr.val() == $root {
+                        self.root.d.next = self.host_data.val();
+                    }
+                    if self.host_addr.val() == $base_na {
+                        self.base_na.d.next = self.host_data.val().get_bits::<24>(0);
+                    }
+                    if self.host_addr.val() == $base_nb {
+                        self.base_nb.d.next = self.host_data.val().get_bits::<24>(0);
+                    }
+                    if self.host_addr.val() == $base_ta {
+                        self.base_ta.d.next = self.host_data.val().get_bits::<24>(0);
+                    }
+                    if self.host_addr.val() == $base_tb {
+                        self.base_tb.d.next = self.host_data.val().get_bits::<24>(0);
+                    }
+                    if self.host_addr.val() == $port {
+                        self.port_pf.d.next = self.host_data.val().get_bits::<4>(0);
+                        self.port_out.d.next = self.host_data.val().get_bits::<4>(4);
+                        self.port_one.d.next = self.host_data.val().get_bit(8);
+                        self.port_credit.d.next = self.host_data.val().get_bits::<6>(9);
+                    }
+                    if self.host_addr.val() == $tri_cache {
+                        self.tc_mask.d.next = self.host_data.val().get_bits::<7>(0);
+                    }
+                    if self.host_addr.val() == $map {
+                        self.map.d.next = self.host_data.val().get_bits::<20>(0);
+                    }
+                }
+                self.pf.next = bit_cast::<5, 4>(self.port_pf.q.val());
+                if bit_cast::<5, 4>(self.port_pf.q.val()) > self.c_pf_max.val() {
+                    self.pf.next = self.c_pf_max.val();
+                }
+                self.credit_lim.next = self.port_credit.q.val();
+                if self.port_credit.q.val() == 0 {
+                    self.credit_lim.next = self.c_credit.val();
+                }
+                // A first hit or an overflow stops the traversal; what is in flight drains.
+                self.halt.next = self.stop.q.val() | self.d_cntr.overflow.val();
+                self.go.next = self.run.q.val() & !self.halt.val();
+                self.start_q.next = self.start.val() & !self.run.q.val();
+            }
+        }
+    };
+}
+pub(crate) use host_kernel;
+
 /// Stamps out `CollisionChip<N, NP1, NM1>` in the calling module. Arguments: `K` the DOP's
 /// k; `Dop = dop_new` its unit's type (its `LATENCY` sets the side delay line) and
 /// constructor from the DOP rounding (`DopUnit6 = DopUnit6::new` for k = 6), followed by
@@ -329,83 +438,17 @@ macro_rules! chip {
             }
         }
 
-        impl<const N: usize, const NP1: usize, const NM1: usize> Logic for CollisionChip<N, NP1, NM1> {
-            // Long: #[hdl_gen] translates one body; split into sub-blocks, the chips' Verilog would change (new names) and their timing rows go stale.
-            #[allow(clippy::too_many_lines)]
+        $crate::rtl::kernel::kernel!([const N: usize, const NP1: usize, const NM1: usize] CollisionChip<N, NP1, NM1>: Host, Fetch, Datapath, Results);
+
+        $crate::chip::reg::register_map!([$crate::rtl::chip::host_kernel] { $WD, $WT; });
+
+        /// D_CNTR's ports, the leaf pair's triangle words, and the memory port that fetches the
+        /// node and triangle words.
+        struct Fetch;
+
+        impl<const N: usize, const NP1: usize, const NM1: usize> $crate::rtl::kernel::Kernel<Fetch> for CollisionChip<N, NP1, NM1> {
             #[hdl_gen]
             fn update(&mut self) {
-                dff_setup!(self, clock, mode_lifo, mode_first, mode_rec, mode_slot, root, base_na, base_nb, base_ta, base_tb, map);
-                dff_setup!(self, clock, port_pf, port_out, port_one, port_credit, run, done_r, push_root, stop);
-                dff_setup!(self, clock, leaf_count, leaf_valid, leaf_tag);
-                dff_setup!(self, clock, tc_mask, tb_ok, tb_id, tb_word);
-                clock!(self, clock, d_cntr, mem_port, dop, side, leaf_fifo, tri_cache, tri_unit, result);
-                clock!(self, clock, cnt_dop, cnt_tri, cnt_nf, cnt_tf);
-                // ---- host registers and the units' setup ports: the DOP unit's words below
-                // 0x100, TRI_UNIT's from reg::TRI_SETUP (address bits 9:5 = 8)
-                self.dop.load_en.next = self.host_we.val() & (self.host_addr.val().get_bits::<2>(8) == 0);
-                self.dop.load_addr.next = self.host_addr.val().get_bits::<8>(0);
-                self.dop.load_data.next = self.host_data.val().get_bits::<$WD>(0);
-                self.tri_unit.load_en.next = self.host_we.val() & (self.host_addr.val().get_bits::<5>(5) == 8);
-                self.tri_unit.load_addr.next = self.host_addr.val().get_bits::<5>(0);
-                self.tri_unit.load_data.next = self.host_data.val().get_bits::<$WT>(0);
-                if self.host_we.val() {
-                    // The addresses of chip::reg, as literals: #[hdl_gen] translates a path
-                    // (reg::MODE) to a Verilog signal name, not to its value.
-                    // reg::MODE
-                    if self.host_addr.val() == 0x120 {
-                        self.mode_lifo.d.next = self.host_data.val().get_bit(0);
-                        self.mode_first.d.next = self.host_data.val().get_bit(1);
-                        self.mode_rec.d.next = self.host_data.val().get_bit(2);
-                        self.mode_slot.d.next = self.host_data.val().get_bits::<3>(3);
-                    }
-                    // reg::ROOT
-                    if self.host_addr.val() == 0x121 {
-                        self.root.d.next = self.host_data.val();
-                    }
-                    // reg::BASE_NA
-                    if self.host_addr.val() == 0x122 {
-                        self.base_na.d.next = self.host_data.val().get_bits::<24>(0);
-                    }
-                    // reg::BASE_NB
-                    if self.host_addr.val() == 0x123 {
-                        self.base_nb.d.next = self.host_data.val().get_bits::<24>(0);
-                    }
-                    // reg::BASE_TA
-                    if self.host_addr.val() == 0x124 {
-                        self.base_ta.d.next = self.host_data.val().get_bits::<24>(0);
-                    }
-                    // reg::BASE_TB
-                    if self.host_addr.val() == 0x125 {
-                        self.base_tb.d.next = self.host_data.val().get_bits::<24>(0);
-                    }
-                    // reg::PORT
-                    if self.host_addr.val() == 0x126 {
-                        self.port_pf.d.next = self.host_data.val().get_bits::<4>(0);
-                        self.port_out.d.next = self.host_data.val().get_bits::<4>(4);
-                        self.port_one.d.next = self.host_data.val().get_bit(8);
-                        self.port_credit.d.next = self.host_data.val().get_bits::<6>(9);
-                    }
-                    // reg::TRI_CACHE
-                    if self.host_addr.val() == 0x127 {
-                        self.tc_mask.d.next = self.host_data.val().get_bits::<7>(0);
-                    }
-                    // reg::MAP
-                    if self.host_addr.val() == 0x128 {
-                        self.map.d.next = self.host_data.val().get_bits::<20>(0);
-                    }
-                }
-                self.pf.next = bit_cast::<5, 4>(self.port_pf.q.val());
-                if bit_cast::<5, 4>(self.port_pf.q.val()) > self.c_pf_max.val() {
-                    self.pf.next = self.c_pf_max.val();
-                }
-                self.credit_lim.next = self.port_credit.q.val();
-                if self.port_credit.q.val() == 0 {
-                    self.credit_lim.next = self.c_credit.val();
-                }
-                // A first hit or an overflow stops the traversal; what is in flight drains.
-                self.halt.next = self.stop.q.val() | self.d_cntr.overflow.val();
-                self.go.next = self.run.q.val() & !self.halt.val();
-                self.start_q.next = self.start.val() & !self.run.q.val();
                 // ---- D_CNTR: pops entries into its pair buffer, issues their pairs once the
                 // memory port holds their node words, pushes the children of DOP results
                 self.d_cntr.clear.next = self.start_q.val();
@@ -485,6 +528,16 @@ macro_rules! chip {
                         self.tb_word.d.next = self.mem_resp_data.val().get_bits::<$TW>(0);
                     }
                 }
+            }
+        }
+
+        /// The DOP unit fed from the node words, and the leaf pairs through their FIFO and the
+        /// triangle words into TRI_UNIT.
+        struct Datapath;
+
+        impl<const N: usize, const NP1: usize, const NM1: usize> $crate::rtl::kernel::Kernel<Datapath> for CollisionChip<N, NP1, NM1> {
+            #[hdl_gen]
+            fn update(&mut self) {
                 // ---- the DOP unit: B's word as d, A's as e; beside it the pair, its leaf
                 // bits and children (side word: a, b, flip, A's leaf bit and fields, B's)
                 for i in 0..$K {
@@ -570,6 +623,15 @@ macro_rules! chip {
                 self.tri_unit.b_degenerate.next = self.tb_word.q.val().get_bit(23 * $WT + 1);
                 self.tri_unit.tag.next = self.leaf_tag.q.val().get_bits::<32>(0);
                 self.tri_unit.in_valid.next = self.tri_in.val();
+            }
+        }
+
+        /// The result port, the end of a query, and the counters' ports.
+        struct Results;
+
+        impl<const N: usize, const NP1: usize, const NM1: usize> $crate::rtl::kernel::Kernel<Results> for CollisionChip<N, NP1, NM1> {
+            #[hdl_gen]
+            fn update(&mut self) {
                 // ---- results: the result port shows the host the pairs it must see
                 self.result.take.next = self.tri_take.val();
                 self.result.out_valid.next = self.tri_unit.out_valid.val();
