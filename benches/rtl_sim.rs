@@ -1,4 +1,4 @@
-//! Simulated clock cycles per second of the k = 24 binary32 DOP unit (`dop_unit_k24_b32_ru`)
+//! Simulated clock cycles per second of the k = 24 binary32 DOP unit (`dop_unit_k24_b32`)
 //! in rust-hdl's simulator and in Verilator, on the same golden vectors, as a ratio.
 //!
 //! ```sh
@@ -24,7 +24,6 @@
 #[path = "common/record.rs"]
 mod record;
 
-use collision_chip::format::Rounding;
 use collision_chip::harness::sim::{parse_dop_vectors, run_dop_vectors, DopVectors};
 use collision_chip::harness::units;
 use collision_chip::rtl::b32;
@@ -33,7 +32,7 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::time::Instant;
 
-const UNIT: &str = "dop_unit_k24_b32_ru";
+const UNIT: &str = "dop_unit_k24_b32";
 /// Cases of the long vector file for Verilator.
 const BIG_CASES: usize = 100_000;
 
@@ -112,7 +111,7 @@ fn bench() {
 /// The golden vectors through rust-hdl's simulator, checked and timed.
 fn rust_hdl_row(v: &DopVectors) -> Row {
     let t = Instant::now();
-    let mut uut = b32::dop_unit24_top(Rounding::TowardPositive);
+    let mut uut = b32::dop_unit24_top();
     println!(
         "rust-hdl: DopUnit24 built in {:.2} s",
         t.elapsed().as_secs_f64()

@@ -2840,537 +2840,203 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
     output reg  [15:0] tag_out;
     output reg  valid_out;
     
-    // Constant declarations
-    localparam  idx$0 = 5'b0;
-    localparam  idx$1 = 5'b1;
-    localparam  idx$2 = 5'b10;
-    localparam  idx$3 = 5'b11;
-    localparam  idx$4 = 5'b100;
-    localparam  idx$5 = 5'b101;
-    localparam  idx$6 = 5'b110;
-    localparam  idx$7 = 5'b111;
-    localparam  idx$8 = 5'b1000;
-    localparam  idx$9 = 5'b1001;
-    localparam  idx$10 = 5'b1010;
-    localparam  idx$11 = 5'b1011;
-    localparam  idx$12 = 5'b1100;
-    localparam  idx$13 = 5'b1101;
-    localparam  idx$14 = 5'b1110;
-    localparam  idx$15 = 5'b1111;
-    localparam  idx$16 = 5'b10000;
-    localparam  idx$17 = 5'b10001;
-    localparam  idx$18 = 5'b10010;
-    localparam  idx$19 = 5'b10011;
-    localparam  idx$20 = 5'b10100;
-    localparam  idx$21 = 5'b10101;
-    localparam  idx$22 = 5'b10110;
-    localparam  idx$23 = 5'b10111;
-    
     // Stub signals
-    reg  [31:0] cmat_0$0$d;
-    wire  [31:0] cmat_0$0$q;
-    reg  cmat_0$0$clock;
-    reg  [31:0] cmat_0$1$d;
-    wire  [31:0] cmat_0$1$q;
-    reg  cmat_0$1$clock;
-    reg  [31:0] cmat_0$2$d;
-    wire  [31:0] cmat_0$2$q;
-    reg  cmat_0$2$clock;
-    reg  [31:0] cmat_0$3$d;
-    wire  [31:0] cmat_0$3$q;
-    reg  cmat_0$3$clock;
-    reg  [31:0] cmat_0$4$d;
-    wire  [31:0] cmat_0$4$q;
-    reg  cmat_0$4$clock;
-    reg  [31:0] cmat_0$5$d;
-    wire  [31:0] cmat_0$5$q;
-    reg  cmat_0$5$clock;
-    reg  [31:0] cmat_0$6$d;
-    wire  [31:0] cmat_0$6$q;
-    reg  cmat_0$6$clock;
-    reg  [31:0] cmat_0$7$d;
-    wire  [31:0] cmat_0$7$q;
-    reg  cmat_0$7$clock;
-    reg  [31:0] cmat_0$8$d;
-    wire  [31:0] cmat_0$8$q;
-    reg  cmat_0$8$clock;
-    reg  [31:0] cmat_0$9$d;
-    wire  [31:0] cmat_0$9$q;
-    reg  cmat_0$9$clock;
-    reg  [31:0] cmat_0$10$d;
-    wire  [31:0] cmat_0$10$q;
-    reg  cmat_0$10$clock;
-    reg  [31:0] cmat_0$11$d;
-    wire  [31:0] cmat_0$11$q;
-    reg  cmat_0$11$clock;
-    reg  [31:0] cmat_0$12$d;
-    wire  [31:0] cmat_0$12$q;
-    reg  cmat_0$12$clock;
-    reg  [31:0] cmat_0$13$d;
-    wire  [31:0] cmat_0$13$q;
-    reg  cmat_0$13$clock;
-    reg  [31:0] cmat_0$14$d;
-    wire  [31:0] cmat_0$14$q;
-    reg  cmat_0$14$clock;
-    reg  [31:0] cmat_0$15$d;
-    wire  [31:0] cmat_0$15$q;
-    reg  cmat_0$15$clock;
-    reg  [31:0] cmat_0$16$d;
-    wire  [31:0] cmat_0$16$q;
-    reg  cmat_0$16$clock;
-    reg  [31:0] cmat_0$17$d;
-    wire  [31:0] cmat_0$17$q;
-    reg  cmat_0$17$clock;
-    reg  [31:0] cmat_0$18$d;
-    wire  [31:0] cmat_0$18$q;
-    reg  cmat_0$18$clock;
-    reg  [31:0] cmat_0$19$d;
-    wire  [31:0] cmat_0$19$q;
-    reg  cmat_0$19$clock;
-    reg  [31:0] cmat_0$20$d;
-    wire  [31:0] cmat_0$20$q;
-    reg  cmat_0$20$clock;
-    reg  [31:0] cmat_0$21$d;
-    wire  [31:0] cmat_0$21$q;
-    reg  cmat_0$21$clock;
-    reg  [31:0] cmat_0$22$d;
-    wire  [31:0] cmat_0$22$q;
-    reg  cmat_0$22$clock;
-    reg  [31:0] cmat_0$23$d;
-    wire  [31:0] cmat_0$23$q;
-    reg  cmat_0$23$clock;
-    reg  [31:0] cmat_1$0$d;
-    wire  [31:0] cmat_1$0$q;
-    reg  cmat_1$0$clock;
-    reg  [31:0] cmat_1$1$d;
-    wire  [31:0] cmat_1$1$q;
-    reg  cmat_1$1$clock;
-    reg  [31:0] cmat_1$2$d;
-    wire  [31:0] cmat_1$2$q;
-    reg  cmat_1$2$clock;
-    reg  [31:0] cmat_1$3$d;
-    wire  [31:0] cmat_1$3$q;
-    reg  cmat_1$3$clock;
-    reg  [31:0] cmat_1$4$d;
-    wire  [31:0] cmat_1$4$q;
-    reg  cmat_1$4$clock;
-    reg  [31:0] cmat_1$5$d;
-    wire  [31:0] cmat_1$5$q;
-    reg  cmat_1$5$clock;
-    reg  [31:0] cmat_1$6$d;
-    wire  [31:0] cmat_1$6$q;
-    reg  cmat_1$6$clock;
-    reg  [31:0] cmat_1$7$d;
-    wire  [31:0] cmat_1$7$q;
-    reg  cmat_1$7$clock;
-    reg  [31:0] cmat_1$8$d;
-    wire  [31:0] cmat_1$8$q;
-    reg  cmat_1$8$clock;
-    reg  [31:0] cmat_1$9$d;
-    wire  [31:0] cmat_1$9$q;
-    reg  cmat_1$9$clock;
-    reg  [31:0] cmat_1$10$d;
-    wire  [31:0] cmat_1$10$q;
-    reg  cmat_1$10$clock;
-    reg  [31:0] cmat_1$11$d;
-    wire  [31:0] cmat_1$11$q;
-    reg  cmat_1$11$clock;
-    reg  [31:0] cmat_1$12$d;
-    wire  [31:0] cmat_1$12$q;
-    reg  cmat_1$12$clock;
-    reg  [31:0] cmat_1$13$d;
-    wire  [31:0] cmat_1$13$q;
-    reg  cmat_1$13$clock;
-    reg  [31:0] cmat_1$14$d;
-    wire  [31:0] cmat_1$14$q;
-    reg  cmat_1$14$clock;
-    reg  [31:0] cmat_1$15$d;
-    wire  [31:0] cmat_1$15$q;
-    reg  cmat_1$15$clock;
-    reg  [31:0] cmat_1$16$d;
-    wire  [31:0] cmat_1$16$q;
-    reg  cmat_1$16$clock;
-    reg  [31:0] cmat_1$17$d;
-    wire  [31:0] cmat_1$17$q;
-    reg  cmat_1$17$clock;
-    reg  [31:0] cmat_1$18$d;
-    wire  [31:0] cmat_1$18$q;
-    reg  cmat_1$18$clock;
-    reg  [31:0] cmat_1$19$d;
-    wire  [31:0] cmat_1$19$q;
-    reg  cmat_1$19$clock;
-    reg  [31:0] cmat_1$20$d;
-    wire  [31:0] cmat_1$20$q;
-    reg  cmat_1$20$clock;
-    reg  [31:0] cmat_1$21$d;
-    wire  [31:0] cmat_1$21$q;
-    reg  cmat_1$21$clock;
-    reg  [31:0] cmat_1$22$d;
-    wire  [31:0] cmat_1$22$q;
-    reg  cmat_1$22$clock;
-    reg  [31:0] cmat_1$23$d;
-    wire  [31:0] cmat_1$23$q;
-    reg  cmat_1$23$clock;
-    reg  [31:0] cmat_2$0$d;
-    wire  [31:0] cmat_2$0$q;
-    reg  cmat_2$0$clock;
-    reg  [31:0] cmat_2$1$d;
-    wire  [31:0] cmat_2$1$q;
-    reg  cmat_2$1$clock;
-    reg  [31:0] cmat_2$2$d;
-    wire  [31:0] cmat_2$2$q;
-    reg  cmat_2$2$clock;
-    reg  [31:0] cmat_2$3$d;
-    wire  [31:0] cmat_2$3$q;
-    reg  cmat_2$3$clock;
-    reg  [31:0] cmat_2$4$d;
-    wire  [31:0] cmat_2$4$q;
-    reg  cmat_2$4$clock;
-    reg  [31:0] cmat_2$5$d;
-    wire  [31:0] cmat_2$5$q;
-    reg  cmat_2$5$clock;
-    reg  [31:0] cmat_2$6$d;
-    wire  [31:0] cmat_2$6$q;
-    reg  cmat_2$6$clock;
-    reg  [31:0] cmat_2$7$d;
-    wire  [31:0] cmat_2$7$q;
-    reg  cmat_2$7$clock;
-    reg  [31:0] cmat_2$8$d;
-    wire  [31:0] cmat_2$8$q;
-    reg  cmat_2$8$clock;
-    reg  [31:0] cmat_2$9$d;
-    wire  [31:0] cmat_2$9$q;
-    reg  cmat_2$9$clock;
-    reg  [31:0] cmat_2$10$d;
-    wire  [31:0] cmat_2$10$q;
-    reg  cmat_2$10$clock;
-    reg  [31:0] cmat_2$11$d;
-    wire  [31:0] cmat_2$11$q;
-    reg  cmat_2$11$clock;
-    reg  [31:0] cmat_2$12$d;
-    wire  [31:0] cmat_2$12$q;
-    reg  cmat_2$12$clock;
-    reg  [31:0] cmat_2$13$d;
-    wire  [31:0] cmat_2$13$q;
-    reg  cmat_2$13$clock;
-    reg  [31:0] cmat_2$14$d;
-    wire  [31:0] cmat_2$14$q;
-    reg  cmat_2$14$clock;
-    reg  [31:0] cmat_2$15$d;
-    wire  [31:0] cmat_2$15$q;
-    reg  cmat_2$15$clock;
-    reg  [31:0] cmat_2$16$d;
-    wire  [31:0] cmat_2$16$q;
-    reg  cmat_2$16$clock;
-    reg  [31:0] cmat_2$17$d;
-    wire  [31:0] cmat_2$17$q;
-    reg  cmat_2$17$clock;
-    reg  [31:0] cmat_2$18$d;
-    wire  [31:0] cmat_2$18$q;
-    reg  cmat_2$18$clock;
-    reg  [31:0] cmat_2$19$d;
-    wire  [31:0] cmat_2$19$q;
-    reg  cmat_2$19$clock;
-    reg  [31:0] cmat_2$20$d;
-    wire  [31:0] cmat_2$20$q;
-    reg  cmat_2$20$clock;
-    reg  [31:0] cmat_2$21$d;
-    wire  [31:0] cmat_2$21$q;
-    reg  cmat_2$21$clock;
-    reg  [31:0] cmat_2$22$d;
-    wire  [31:0] cmat_2$22$q;
-    reg  cmat_2$22$clock;
-    reg  [31:0] cmat_2$23$d;
-    wire  [31:0] cmat_2$23$q;
-    reg  cmat_2$23$clock;
-    reg  [31:0] cvec$0$d;
-    wire  [31:0] cvec$0$q;
-    reg  cvec$0$clock;
-    reg  [31:0] cvec$1$d;
-    wire  [31:0] cvec$1$q;
-    reg  cvec$1$clock;
-    reg  [31:0] cvec$2$d;
-    wire  [31:0] cvec$2$q;
-    reg  cvec$2$clock;
-    reg  [31:0] cvec$3$d;
-    wire  [31:0] cvec$3$q;
-    reg  cvec$3$clock;
-    reg  [31:0] cvec$4$d;
-    wire  [31:0] cvec$4$q;
-    reg  cvec$4$clock;
-    reg  [31:0] cvec$5$d;
-    wire  [31:0] cvec$5$q;
-    reg  cvec$5$clock;
-    reg  [31:0] cvec$6$d;
-    wire  [31:0] cvec$6$q;
-    reg  cvec$6$clock;
-    reg  [31:0] cvec$7$d;
-    wire  [31:0] cvec$7$q;
-    reg  cvec$7$clock;
-    reg  [31:0] cvec$8$d;
-    wire  [31:0] cvec$8$q;
-    reg  cvec$8$clock;
-    reg  [31:0] cvec$9$d;
-    wire  [31:0] cvec$9$q;
-    reg  cvec$9$clock;
-    reg  [31:0] cvec$10$d;
-    wire  [31:0] cvec$10$q;
-    reg  cvec$10$clock;
-    reg  [31:0] cvec$11$d;
-    wire  [31:0] cvec$11$q;
-    reg  cvec$11$clock;
-    reg  [31:0] cvec$12$d;
-    wire  [31:0] cvec$12$q;
-    reg  cvec$12$clock;
-    reg  [31:0] cvec$13$d;
-    wire  [31:0] cvec$13$q;
-    reg  cvec$13$clock;
-    reg  [31:0] cvec$14$d;
-    wire  [31:0] cvec$14$q;
-    reg  cvec$14$clock;
-    reg  [31:0] cvec$15$d;
-    wire  [31:0] cvec$15$q;
-    reg  cvec$15$clock;
-    reg  [31:0] cvec$16$d;
-    wire  [31:0] cvec$16$q;
-    reg  cvec$16$clock;
-    reg  [31:0] cvec$17$d;
-    wire  [31:0] cvec$17$q;
-    reg  cvec$17$clock;
-    reg  [31:0] cvec$18$d;
-    wire  [31:0] cvec$18$q;
-    reg  cvec$18$clock;
-    reg  [31:0] cvec$19$d;
-    wire  [31:0] cvec$19$q;
-    reg  cvec$19$clock;
-    reg  [31:0] cvec$20$d;
-    wire  [31:0] cvec$20$q;
-    reg  cvec$20$clock;
-    reg  [31:0] cvec$21$d;
-    wire  [31:0] cvec$21$q;
-    reg  cvec$21$clock;
-    reg  [31:0] cvec$22$d;
-    wire  [31:0] cvec$22$q;
-    reg  cvec$22$clock;
-    reg  [31:0] cvec$23$d;
-    wire  [31:0] cvec$23$q;
-    reg  cvec$23$clock;
-    reg  [4:0] jsel_0$0$d;
-    wire  [4:0] jsel_0$0$q;
-    reg  jsel_0$0$clock;
-    reg  [4:0] jsel_0$1$d;
-    wire  [4:0] jsel_0$1$q;
-    reg  jsel_0$1$clock;
-    reg  [4:0] jsel_0$2$d;
-    wire  [4:0] jsel_0$2$q;
-    reg  jsel_0$2$clock;
-    reg  [4:0] jsel_0$3$d;
-    wire  [4:0] jsel_0$3$q;
-    reg  jsel_0$3$clock;
-    reg  [4:0] jsel_0$4$d;
-    wire  [4:0] jsel_0$4$q;
-    reg  jsel_0$4$clock;
-    reg  [4:0] jsel_0$5$d;
-    wire  [4:0] jsel_0$5$q;
-    reg  jsel_0$5$clock;
-    reg  [4:0] jsel_0$6$d;
-    wire  [4:0] jsel_0$6$q;
-    reg  jsel_0$6$clock;
-    reg  [4:0] jsel_0$7$d;
-    wire  [4:0] jsel_0$7$q;
-    reg  jsel_0$7$clock;
-    reg  [4:0] jsel_0$8$d;
-    wire  [4:0] jsel_0$8$q;
-    reg  jsel_0$8$clock;
-    reg  [4:0] jsel_0$9$d;
-    wire  [4:0] jsel_0$9$q;
-    reg  jsel_0$9$clock;
-    reg  [4:0] jsel_0$10$d;
-    wire  [4:0] jsel_0$10$q;
-    reg  jsel_0$10$clock;
-    reg  [4:0] jsel_0$11$d;
-    wire  [4:0] jsel_0$11$q;
-    reg  jsel_0$11$clock;
-    reg  [4:0] jsel_0$12$d;
-    wire  [4:0] jsel_0$12$q;
-    reg  jsel_0$12$clock;
-    reg  [4:0] jsel_0$13$d;
-    wire  [4:0] jsel_0$13$q;
-    reg  jsel_0$13$clock;
-    reg  [4:0] jsel_0$14$d;
-    wire  [4:0] jsel_0$14$q;
-    reg  jsel_0$14$clock;
-    reg  [4:0] jsel_0$15$d;
-    wire  [4:0] jsel_0$15$q;
-    reg  jsel_0$15$clock;
-    reg  [4:0] jsel_0$16$d;
-    wire  [4:0] jsel_0$16$q;
-    reg  jsel_0$16$clock;
-    reg  [4:0] jsel_0$17$d;
-    wire  [4:0] jsel_0$17$q;
-    reg  jsel_0$17$clock;
-    reg  [4:0] jsel_0$18$d;
-    wire  [4:0] jsel_0$18$q;
-    reg  jsel_0$18$clock;
-    reg  [4:0] jsel_0$19$d;
-    wire  [4:0] jsel_0$19$q;
-    reg  jsel_0$19$clock;
-    reg  [4:0] jsel_0$20$d;
-    wire  [4:0] jsel_0$20$q;
-    reg  jsel_0$20$clock;
-    reg  [4:0] jsel_0$21$d;
-    wire  [4:0] jsel_0$21$q;
-    reg  jsel_0$21$clock;
-    reg  [4:0] jsel_0$22$d;
-    wire  [4:0] jsel_0$22$q;
-    reg  jsel_0$22$clock;
-    reg  [4:0] jsel_0$23$d;
-    wire  [4:0] jsel_0$23$q;
-    reg  jsel_0$23$clock;
-    reg  [4:0] jsel_1$0$d;
-    wire  [4:0] jsel_1$0$q;
-    reg  jsel_1$0$clock;
-    reg  [4:0] jsel_1$1$d;
-    wire  [4:0] jsel_1$1$q;
-    reg  jsel_1$1$clock;
-    reg  [4:0] jsel_1$2$d;
-    wire  [4:0] jsel_1$2$q;
-    reg  jsel_1$2$clock;
-    reg  [4:0] jsel_1$3$d;
-    wire  [4:0] jsel_1$3$q;
-    reg  jsel_1$3$clock;
-    reg  [4:0] jsel_1$4$d;
-    wire  [4:0] jsel_1$4$q;
-    reg  jsel_1$4$clock;
-    reg  [4:0] jsel_1$5$d;
-    wire  [4:0] jsel_1$5$q;
-    reg  jsel_1$5$clock;
-    reg  [4:0] jsel_1$6$d;
-    wire  [4:0] jsel_1$6$q;
-    reg  jsel_1$6$clock;
-    reg  [4:0] jsel_1$7$d;
-    wire  [4:0] jsel_1$7$q;
-    reg  jsel_1$7$clock;
-    reg  [4:0] jsel_1$8$d;
-    wire  [4:0] jsel_1$8$q;
-    reg  jsel_1$8$clock;
-    reg  [4:0] jsel_1$9$d;
-    wire  [4:0] jsel_1$9$q;
-    reg  jsel_1$9$clock;
-    reg  [4:0] jsel_1$10$d;
-    wire  [4:0] jsel_1$10$q;
-    reg  jsel_1$10$clock;
-    reg  [4:0] jsel_1$11$d;
-    wire  [4:0] jsel_1$11$q;
-    reg  jsel_1$11$clock;
-    reg  [4:0] jsel_1$12$d;
-    wire  [4:0] jsel_1$12$q;
-    reg  jsel_1$12$clock;
-    reg  [4:0] jsel_1$13$d;
-    wire  [4:0] jsel_1$13$q;
-    reg  jsel_1$13$clock;
-    reg  [4:0] jsel_1$14$d;
-    wire  [4:0] jsel_1$14$q;
-    reg  jsel_1$14$clock;
-    reg  [4:0] jsel_1$15$d;
-    wire  [4:0] jsel_1$15$q;
-    reg  jsel_1$15$clock;
-    reg  [4:0] jsel_1$16$d;
-    wire  [4:0] jsel_1$16$q;
-    reg  jsel_1$16$clock;
-    reg  [4:0] jsel_1$17$d;
-    wire  [4:0] jsel_1$17$q;
-    reg  jsel_1$17$clock;
-    reg  [4:0] jsel_1$18$d;
-    wire  [4:0] jsel_1$18$q;
-    reg  jsel_1$18$clock;
-    reg  [4:0] jsel_1$19$d;
-    wire  [4:0] jsel_1$19$q;
-    reg  jsel_1$19$clock;
-    reg  [4:0] jsel_1$20$d;
-    wire  [4:0] jsel_1$20$q;
-    reg  jsel_1$20$clock;
-    reg  [4:0] jsel_1$21$d;
-    wire  [4:0] jsel_1$21$q;
-    reg  jsel_1$21$clock;
-    reg  [4:0] jsel_1$22$d;
-    wire  [4:0] jsel_1$22$q;
-    reg  jsel_1$22$clock;
-    reg  [4:0] jsel_1$23$d;
-    wire  [4:0] jsel_1$23$q;
-    reg  jsel_1$23$clock;
-    reg  [4:0] jsel_2$0$d;
-    wire  [4:0] jsel_2$0$q;
-    reg  jsel_2$0$clock;
-    reg  [4:0] jsel_2$1$d;
-    wire  [4:0] jsel_2$1$q;
-    reg  jsel_2$1$clock;
-    reg  [4:0] jsel_2$2$d;
-    wire  [4:0] jsel_2$2$q;
-    reg  jsel_2$2$clock;
-    reg  [4:0] jsel_2$3$d;
-    wire  [4:0] jsel_2$3$q;
-    reg  jsel_2$3$clock;
-    reg  [4:0] jsel_2$4$d;
-    wire  [4:0] jsel_2$4$q;
-    reg  jsel_2$4$clock;
-    reg  [4:0] jsel_2$5$d;
-    wire  [4:0] jsel_2$5$q;
-    reg  jsel_2$5$clock;
-    reg  [4:0] jsel_2$6$d;
-    wire  [4:0] jsel_2$6$q;
-    reg  jsel_2$6$clock;
-    reg  [4:0] jsel_2$7$d;
-    wire  [4:0] jsel_2$7$q;
-    reg  jsel_2$7$clock;
-    reg  [4:0] jsel_2$8$d;
-    wire  [4:0] jsel_2$8$q;
-    reg  jsel_2$8$clock;
-    reg  [4:0] jsel_2$9$d;
-    wire  [4:0] jsel_2$9$q;
-    reg  jsel_2$9$clock;
-    reg  [4:0] jsel_2$10$d;
-    wire  [4:0] jsel_2$10$q;
-    reg  jsel_2$10$clock;
-    reg  [4:0] jsel_2$11$d;
-    wire  [4:0] jsel_2$11$q;
-    reg  jsel_2$11$clock;
-    reg  [4:0] jsel_2$12$d;
-    wire  [4:0] jsel_2$12$q;
-    reg  jsel_2$12$clock;
-    reg  [4:0] jsel_2$13$d;
-    wire  [4:0] jsel_2$13$q;
-    reg  jsel_2$13$clock;
-    reg  [4:0] jsel_2$14$d;
-    wire  [4:0] jsel_2$14$q;
-    reg  jsel_2$14$clock;
-    reg  [4:0] jsel_2$15$d;
-    wire  [4:0] jsel_2$15$q;
-    reg  jsel_2$15$clock;
-    reg  [4:0] jsel_2$16$d;
-    wire  [4:0] jsel_2$16$q;
-    reg  jsel_2$16$clock;
-    reg  [4:0] jsel_2$17$d;
-    wire  [4:0] jsel_2$17$q;
-    reg  jsel_2$17$clock;
-    reg  [4:0] jsel_2$18$d;
-    wire  [4:0] jsel_2$18$q;
-    reg  jsel_2$18$clock;
-    reg  [4:0] jsel_2$19$d;
-    wire  [4:0] jsel_2$19$q;
-    reg  jsel_2$19$clock;
-    reg  [4:0] jsel_2$20$d;
-    wire  [4:0] jsel_2$20$q;
-    reg  jsel_2$20$clock;
-    reg  [4:0] jsel_2$21$d;
-    wire  [4:0] jsel_2$21$q;
-    reg  jsel_2$21$clock;
-    reg  [4:0] jsel_2$22$d;
-    wire  [4:0] jsel_2$22$q;
-    reg  jsel_2$22$clock;
-    reg  [4:0] jsel_2$23$d;
-    wire  [4:0] jsel_2$23$q;
-    reg  jsel_2$23$clock;
+    reg  setup$clock;
+    reg  setup$load_en;
+    reg  [7:0] setup$load_addr;
+    reg  [31:0] setup$load_data;
+    wire  [31:0] setup$c0$0;
+    wire  [31:0] setup$c0$1;
+    wire  [31:0] setup$c0$2;
+    wire  [31:0] setup$c0$3;
+    wire  [31:0] setup$c0$4;
+    wire  [31:0] setup$c0$5;
+    wire  [31:0] setup$c0$6;
+    wire  [31:0] setup$c0$7;
+    wire  [31:0] setup$c0$8;
+    wire  [31:0] setup$c0$9;
+    wire  [31:0] setup$c0$10;
+    wire  [31:0] setup$c0$11;
+    wire  [31:0] setup$c0$12;
+    wire  [31:0] setup$c0$13;
+    wire  [31:0] setup$c0$14;
+    wire  [31:0] setup$c0$15;
+    wire  [31:0] setup$c0$16;
+    wire  [31:0] setup$c0$17;
+    wire  [31:0] setup$c0$18;
+    wire  [31:0] setup$c0$19;
+    wire  [31:0] setup$c0$20;
+    wire  [31:0] setup$c0$21;
+    wire  [31:0] setup$c0$22;
+    wire  [31:0] setup$c0$23;
+    wire  [31:0] setup$c1$0;
+    wire  [31:0] setup$c1$1;
+    wire  [31:0] setup$c1$2;
+    wire  [31:0] setup$c1$3;
+    wire  [31:0] setup$c1$4;
+    wire  [31:0] setup$c1$5;
+    wire  [31:0] setup$c1$6;
+    wire  [31:0] setup$c1$7;
+    wire  [31:0] setup$c1$8;
+    wire  [31:0] setup$c1$9;
+    wire  [31:0] setup$c1$10;
+    wire  [31:0] setup$c1$11;
+    wire  [31:0] setup$c1$12;
+    wire  [31:0] setup$c1$13;
+    wire  [31:0] setup$c1$14;
+    wire  [31:0] setup$c1$15;
+    wire  [31:0] setup$c1$16;
+    wire  [31:0] setup$c1$17;
+    wire  [31:0] setup$c1$18;
+    wire  [31:0] setup$c1$19;
+    wire  [31:0] setup$c1$20;
+    wire  [31:0] setup$c1$21;
+    wire  [31:0] setup$c1$22;
+    wire  [31:0] setup$c1$23;
+    wire  [31:0] setup$c2$0;
+    wire  [31:0] setup$c2$1;
+    wire  [31:0] setup$c2$2;
+    wire  [31:0] setup$c2$3;
+    wire  [31:0] setup$c2$4;
+    wire  [31:0] setup$c2$5;
+    wire  [31:0] setup$c2$6;
+    wire  [31:0] setup$c2$7;
+    wire  [31:0] setup$c2$8;
+    wire  [31:0] setup$c2$9;
+    wire  [31:0] setup$c2$10;
+    wire  [31:0] setup$c2$11;
+    wire  [31:0] setup$c2$12;
+    wire  [31:0] setup$c2$13;
+    wire  [31:0] setup$c2$14;
+    wire  [31:0] setup$c2$15;
+    wire  [31:0] setup$c2$16;
+    wire  [31:0] setup$c2$17;
+    wire  [31:0] setup$c2$18;
+    wire  [31:0] setup$c2$19;
+    wire  [31:0] setup$c2$20;
+    wire  [31:0] setup$c2$21;
+    wire  [31:0] setup$c2$22;
+    wire  [31:0] setup$c2$23;
+    wire  [31:0] setup$c$0;
+    wire  [31:0] setup$c$1;
+    wire  [31:0] setup$c$2;
+    wire  [31:0] setup$c$3;
+    wire  [31:0] setup$c$4;
+    wire  [31:0] setup$c$5;
+    wire  [31:0] setup$c$6;
+    wire  [31:0] setup$c$7;
+    wire  [31:0] setup$c$8;
+    wire  [31:0] setup$c$9;
+    wire  [31:0] setup$c$10;
+    wire  [31:0] setup$c$11;
+    wire  [31:0] setup$c$12;
+    wire  [31:0] setup$c$13;
+    wire  [31:0] setup$c$14;
+    wire  [31:0] setup$c$15;
+    wire  [31:0] setup$c$16;
+    wire  [31:0] setup$c$17;
+    wire  [31:0] setup$c$18;
+    wire  [31:0] setup$c$19;
+    wire  [31:0] setup$c$20;
+    wire  [31:0] setup$c$21;
+    wire  [31:0] setup$c$22;
+    wire  [31:0] setup$c$23;
+    wire  [4:0] setup$j0$0;
+    wire  [4:0] setup$j0$1;
+    wire  [4:0] setup$j0$2;
+    wire  [4:0] setup$j0$3;
+    wire  [4:0] setup$j0$4;
+    wire  [4:0] setup$j0$5;
+    wire  [4:0] setup$j0$6;
+    wire  [4:0] setup$j0$7;
+    wire  [4:0] setup$j0$8;
+    wire  [4:0] setup$j0$9;
+    wire  [4:0] setup$j0$10;
+    wire  [4:0] setup$j0$11;
+    wire  [4:0] setup$j0$12;
+    wire  [4:0] setup$j0$13;
+    wire  [4:0] setup$j0$14;
+    wire  [4:0] setup$j0$15;
+    wire  [4:0] setup$j0$16;
+    wire  [4:0] setup$j0$17;
+    wire  [4:0] setup$j0$18;
+    wire  [4:0] setup$j0$19;
+    wire  [4:0] setup$j0$20;
+    wire  [4:0] setup$j0$21;
+    wire  [4:0] setup$j0$22;
+    wire  [4:0] setup$j0$23;
+    wire  [4:0] setup$j1$0;
+    wire  [4:0] setup$j1$1;
+    wire  [4:0] setup$j1$2;
+    wire  [4:0] setup$j1$3;
+    wire  [4:0] setup$j1$4;
+    wire  [4:0] setup$j1$5;
+    wire  [4:0] setup$j1$6;
+    wire  [4:0] setup$j1$7;
+    wire  [4:0] setup$j1$8;
+    wire  [4:0] setup$j1$9;
+    wire  [4:0] setup$j1$10;
+    wire  [4:0] setup$j1$11;
+    wire  [4:0] setup$j1$12;
+    wire  [4:0] setup$j1$13;
+    wire  [4:0] setup$j1$14;
+    wire  [4:0] setup$j1$15;
+    wire  [4:0] setup$j1$16;
+    wire  [4:0] setup$j1$17;
+    wire  [4:0] setup$j1$18;
+    wire  [4:0] setup$j1$19;
+    wire  [4:0] setup$j1$20;
+    wire  [4:0] setup$j1$21;
+    wire  [4:0] setup$j1$22;
+    wire  [4:0] setup$j1$23;
+    wire  [4:0] setup$j2$0;
+    wire  [4:0] setup$j2$1;
+    wire  [4:0] setup$j2$2;
+    wire  [4:0] setup$j2$3;
+    wire  [4:0] setup$j2$4;
+    wire  [4:0] setup$j2$5;
+    wire  [4:0] setup$j2$6;
+    wire  [4:0] setup$j2$7;
+    wire  [4:0] setup$j2$8;
+    wire  [4:0] setup$j2$9;
+    wire  [4:0] setup$j2$10;
+    wire  [4:0] setup$j2$11;
+    wire  [4:0] setup$j2$12;
+    wire  [4:0] setup$j2$13;
+    wire  [4:0] setup$j2$14;
+    wire  [4:0] setup$j2$15;
+    wire  [4:0] setup$j2$16;
+    wire  [4:0] setup$j2$17;
+    wire  [4:0] setup$j2$18;
+    wire  [4:0] setup$j2$19;
+    wire  [4:0] setup$j2$20;
+    wire  [4:0] setup$j2$21;
+    wire  [4:0] setup$j2$22;
+    wire  [4:0] setup$j2$23;
+    wire  setup$round_up$0;
+    wire  setup$round_up$1;
+    wire  setup$round_up$2;
+    wire  setup$round_up$3;
+    wire  setup$round_up$4;
+    wire  setup$round_up$5;
+    wire  setup$round_up$6;
+    wire  setup$round_up$7;
+    wire  setup$round_up$8;
+    wire  setup$round_up$9;
+    wire  setup$round_up$10;
+    wire  setup$round_up$11;
+    wire  setup$round_up$12;
+    wire  setup$round_up$13;
+    wire  setup$round_up$14;
+    wire  setup$round_up$15;
+    wire  setup$round_up$16;
+    wire  setup$round_up$17;
+    wire  setup$round_up$18;
+    wire  setup$round_up$19;
+    wire  setup$round_up$20;
+    wire  setup$round_up$21;
+    wire  setup$round_up$22;
+    wire  setup$round_up$23;
     reg  [31:0] klmsel$d$0;
     reg  [31:0] klmsel$d$1;
     reg  [31:0] klmsel$d$2;
@@ -3549,6 +3215,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
     reg  [31:0] doptrf$0$c;
     reg  [31:0] doptrf$0$e;
     reg  doptrf$0$valid_in;
+    reg  doptrf$0$round_up;
     wire  [31:0] doptrf$0$s;
     wire  doptrf$0$flag;
     wire  doptrf$0$valid_out;
@@ -3562,6 +3229,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
     reg  [31:0] doptrf$1$c;
     reg  [31:0] doptrf$1$e;
     reg  doptrf$1$valid_in;
+    reg  doptrf$1$round_up;
     wire  [31:0] doptrf$1$s;
     wire  doptrf$1$flag;
     wire  doptrf$1$valid_out;
@@ -3575,6 +3243,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
     reg  [31:0] doptrf$2$c;
     reg  [31:0] doptrf$2$e;
     reg  doptrf$2$valid_in;
+    reg  doptrf$2$round_up;
     wire  [31:0] doptrf$2$s;
     wire  doptrf$2$flag;
     wire  doptrf$2$valid_out;
@@ -3588,6 +3257,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
     reg  [31:0] doptrf$3$c;
     reg  [31:0] doptrf$3$e;
     reg  doptrf$3$valid_in;
+    reg  doptrf$3$round_up;
     wire  [31:0] doptrf$3$s;
     wire  doptrf$3$flag;
     wire  doptrf$3$valid_out;
@@ -3601,6 +3271,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
     reg  [31:0] doptrf$4$c;
     reg  [31:0] doptrf$4$e;
     reg  doptrf$4$valid_in;
+    reg  doptrf$4$round_up;
     wire  [31:0] doptrf$4$s;
     wire  doptrf$4$flag;
     wire  doptrf$4$valid_out;
@@ -3614,6 +3285,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
     reg  [31:0] doptrf$5$c;
     reg  [31:0] doptrf$5$e;
     reg  doptrf$5$valid_in;
+    reg  doptrf$5$round_up;
     wire  [31:0] doptrf$5$s;
     wire  doptrf$5$flag;
     wire  doptrf$5$valid_out;
@@ -3627,6 +3299,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
     reg  [31:0] doptrf$6$c;
     reg  [31:0] doptrf$6$e;
     reg  doptrf$6$valid_in;
+    reg  doptrf$6$round_up;
     wire  [31:0] doptrf$6$s;
     wire  doptrf$6$flag;
     wire  doptrf$6$valid_out;
@@ -3640,6 +3313,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
     reg  [31:0] doptrf$7$c;
     reg  [31:0] doptrf$7$e;
     reg  doptrf$7$valid_in;
+    reg  doptrf$7$round_up;
     wire  [31:0] doptrf$7$s;
     wire  doptrf$7$flag;
     wire  doptrf$7$valid_out;
@@ -3653,6 +3327,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
     reg  [31:0] doptrf$8$c;
     reg  [31:0] doptrf$8$e;
     reg  doptrf$8$valid_in;
+    reg  doptrf$8$round_up;
     wire  [31:0] doptrf$8$s;
     wire  doptrf$8$flag;
     wire  doptrf$8$valid_out;
@@ -3666,6 +3341,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
     reg  [31:0] doptrf$9$c;
     reg  [31:0] doptrf$9$e;
     reg  doptrf$9$valid_in;
+    reg  doptrf$9$round_up;
     wire  [31:0] doptrf$9$s;
     wire  doptrf$9$flag;
     wire  doptrf$9$valid_out;
@@ -3679,6 +3355,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
     reg  [31:0] doptrf$10$c;
     reg  [31:0] doptrf$10$e;
     reg  doptrf$10$valid_in;
+    reg  doptrf$10$round_up;
     wire  [31:0] doptrf$10$s;
     wire  doptrf$10$flag;
     wire  doptrf$10$valid_out;
@@ -3692,6 +3369,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
     reg  [31:0] doptrf$11$c;
     reg  [31:0] doptrf$11$e;
     reg  doptrf$11$valid_in;
+    reg  doptrf$11$round_up;
     wire  [31:0] doptrf$11$s;
     wire  doptrf$11$flag;
     wire  doptrf$11$valid_out;
@@ -3705,6 +3383,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
     reg  [31:0] doptrf$12$c;
     reg  [31:0] doptrf$12$e;
     reg  doptrf$12$valid_in;
+    reg  doptrf$12$round_up;
     wire  [31:0] doptrf$12$s;
     wire  doptrf$12$flag;
     wire  doptrf$12$valid_out;
@@ -3718,6 +3397,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
     reg  [31:0] doptrf$13$c;
     reg  [31:0] doptrf$13$e;
     reg  doptrf$13$valid_in;
+    reg  doptrf$13$round_up;
     wire  [31:0] doptrf$13$s;
     wire  doptrf$13$flag;
     wire  doptrf$13$valid_out;
@@ -3731,6 +3411,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
     reg  [31:0] doptrf$14$c;
     reg  [31:0] doptrf$14$e;
     reg  doptrf$14$valid_in;
+    reg  doptrf$14$round_up;
     wire  [31:0] doptrf$14$s;
     wire  doptrf$14$flag;
     wire  doptrf$14$valid_out;
@@ -3744,6 +3425,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
     reg  [31:0] doptrf$15$c;
     reg  [31:0] doptrf$15$e;
     reg  doptrf$15$valid_in;
+    reg  doptrf$15$round_up;
     wire  [31:0] doptrf$15$s;
     wire  doptrf$15$flag;
     wire  doptrf$15$valid_out;
@@ -3757,6 +3439,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
     reg  [31:0] doptrf$16$c;
     reg  [31:0] doptrf$16$e;
     reg  doptrf$16$valid_in;
+    reg  doptrf$16$round_up;
     wire  [31:0] doptrf$16$s;
     wire  doptrf$16$flag;
     wire  doptrf$16$valid_out;
@@ -3770,6 +3453,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
     reg  [31:0] doptrf$17$c;
     reg  [31:0] doptrf$17$e;
     reg  doptrf$17$valid_in;
+    reg  doptrf$17$round_up;
     wire  [31:0] doptrf$17$s;
     wire  doptrf$17$flag;
     wire  doptrf$17$valid_out;
@@ -3783,6 +3467,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
     reg  [31:0] doptrf$18$c;
     reg  [31:0] doptrf$18$e;
     reg  doptrf$18$valid_in;
+    reg  doptrf$18$round_up;
     wire  [31:0] doptrf$18$s;
     wire  doptrf$18$flag;
     wire  doptrf$18$valid_out;
@@ -3796,6 +3481,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
     reg  [31:0] doptrf$19$c;
     reg  [31:0] doptrf$19$e;
     reg  doptrf$19$valid_in;
+    reg  doptrf$19$round_up;
     wire  [31:0] doptrf$19$s;
     wire  doptrf$19$flag;
     wire  doptrf$19$valid_out;
@@ -3809,6 +3495,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
     reg  [31:0] doptrf$20$c;
     reg  [31:0] doptrf$20$e;
     reg  doptrf$20$valid_in;
+    reg  doptrf$20$round_up;
     wire  [31:0] doptrf$20$s;
     wire  doptrf$20$flag;
     wire  doptrf$20$valid_out;
@@ -3822,6 +3509,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
     reg  [31:0] doptrf$21$c;
     reg  [31:0] doptrf$21$e;
     reg  doptrf$21$valid_in;
+    reg  doptrf$21$round_up;
     wire  [31:0] doptrf$21$s;
     wire  doptrf$21$flag;
     wire  doptrf$21$valid_out;
@@ -3835,6 +3523,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
     reg  [31:0] doptrf$22$c;
     reg  [31:0] doptrf$22$e;
     reg  doptrf$22$valid_in;
+    reg  doptrf$22$round_up;
     wire  [31:0] doptrf$22$s;
     wire  doptrf$22$flag;
     wire  doptrf$22$valid_out;
@@ -3848,6 +3537,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
     reg  [31:0] doptrf$23$c;
     reg  [31:0] doptrf$23$e;
     reg  doptrf$23$valid_in;
+    reg  doptrf$23$round_up;
     wire  [31:0] doptrf$23$s;
     wire  doptrf$23$flag;
     wire  doptrf$23$valid_out;
@@ -3898,850 +3588,206 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
     reg  tag_15$clock;
     
     // Local signals
-    reg  [4:0] c_load_lane;
-    reg  [2:0] c_load_field;
     reg  c_any;
     
     // Sub module instances
-    top$cnt_dop$total cmat_0$0(
-        .d(cmat_0$0$d),
-        .q(cmat_0$0$q),
-        .clock(cmat_0$0$clock)
-    );
-    top$cnt_dop$total cmat_0$1(
-        .d(cmat_0$1$d),
-        .q(cmat_0$1$q),
-        .clock(cmat_0$1$clock)
-    );
-    top$cnt_dop$total cmat_0$2(
-        .d(cmat_0$2$d),
-        .q(cmat_0$2$q),
-        .clock(cmat_0$2$clock)
-    );
-    top$cnt_dop$total cmat_0$3(
-        .d(cmat_0$3$d),
-        .q(cmat_0$3$q),
-        .clock(cmat_0$3$clock)
-    );
-    top$cnt_dop$total cmat_0$4(
-        .d(cmat_0$4$d),
-        .q(cmat_0$4$q),
-        .clock(cmat_0$4$clock)
-    );
-    top$cnt_dop$total cmat_0$5(
-        .d(cmat_0$5$d),
-        .q(cmat_0$5$q),
-        .clock(cmat_0$5$clock)
-    );
-    top$cnt_dop$total cmat_0$6(
-        .d(cmat_0$6$d),
-        .q(cmat_0$6$q),
-        .clock(cmat_0$6$clock)
-    );
-    top$cnt_dop$total cmat_0$7(
-        .d(cmat_0$7$d),
-        .q(cmat_0$7$q),
-        .clock(cmat_0$7$clock)
-    );
-    top$cnt_dop$total cmat_0$8(
-        .d(cmat_0$8$d),
-        .q(cmat_0$8$q),
-        .clock(cmat_0$8$clock)
-    );
-    top$cnt_dop$total cmat_0$9(
-        .d(cmat_0$9$d),
-        .q(cmat_0$9$q),
-        .clock(cmat_0$9$clock)
-    );
-    top$cnt_dop$total cmat_0$10(
-        .d(cmat_0$10$d),
-        .q(cmat_0$10$q),
-        .clock(cmat_0$10$clock)
-    );
-    top$cnt_dop$total cmat_0$11(
-        .d(cmat_0$11$d),
-        .q(cmat_0$11$q),
-        .clock(cmat_0$11$clock)
-    );
-    top$cnt_dop$total cmat_0$12(
-        .d(cmat_0$12$d),
-        .q(cmat_0$12$q),
-        .clock(cmat_0$12$clock)
-    );
-    top$cnt_dop$total cmat_0$13(
-        .d(cmat_0$13$d),
-        .q(cmat_0$13$q),
-        .clock(cmat_0$13$clock)
-    );
-    top$cnt_dop$total cmat_0$14(
-        .d(cmat_0$14$d),
-        .q(cmat_0$14$q),
-        .clock(cmat_0$14$clock)
-    );
-    top$cnt_dop$total cmat_0$15(
-        .d(cmat_0$15$d),
-        .q(cmat_0$15$q),
-        .clock(cmat_0$15$clock)
-    );
-    top$cnt_dop$total cmat_0$16(
-        .d(cmat_0$16$d),
-        .q(cmat_0$16$q),
-        .clock(cmat_0$16$clock)
-    );
-    top$cnt_dop$total cmat_0$17(
-        .d(cmat_0$17$d),
-        .q(cmat_0$17$q),
-        .clock(cmat_0$17$clock)
-    );
-    top$cnt_dop$total cmat_0$18(
-        .d(cmat_0$18$d),
-        .q(cmat_0$18$q),
-        .clock(cmat_0$18$clock)
-    );
-    top$cnt_dop$total cmat_0$19(
-        .d(cmat_0$19$d),
-        .q(cmat_0$19$q),
-        .clock(cmat_0$19$clock)
-    );
-    top$cnt_dop$total cmat_0$20(
-        .d(cmat_0$20$d),
-        .q(cmat_0$20$q),
-        .clock(cmat_0$20$clock)
-    );
-    top$cnt_dop$total cmat_0$21(
-        .d(cmat_0$21$d),
-        .q(cmat_0$21$q),
-        .clock(cmat_0$21$clock)
-    );
-    top$cnt_dop$total cmat_0$22(
-        .d(cmat_0$22$d),
-        .q(cmat_0$22$q),
-        .clock(cmat_0$22$clock)
-    );
-    top$cnt_dop$total cmat_0$23(
-        .d(cmat_0$23$d),
-        .q(cmat_0$23$q),
-        .clock(cmat_0$23$clock)
-    );
-    top$cnt_dop$total cmat_1$0(
-        .d(cmat_1$0$d),
-        .q(cmat_1$0$q),
-        .clock(cmat_1$0$clock)
-    );
-    top$cnt_dop$total cmat_1$1(
-        .d(cmat_1$1$d),
-        .q(cmat_1$1$q),
-        .clock(cmat_1$1$clock)
-    );
-    top$cnt_dop$total cmat_1$2(
-        .d(cmat_1$2$d),
-        .q(cmat_1$2$q),
-        .clock(cmat_1$2$clock)
-    );
-    top$cnt_dop$total cmat_1$3(
-        .d(cmat_1$3$d),
-        .q(cmat_1$3$q),
-        .clock(cmat_1$3$clock)
-    );
-    top$cnt_dop$total cmat_1$4(
-        .d(cmat_1$4$d),
-        .q(cmat_1$4$q),
-        .clock(cmat_1$4$clock)
-    );
-    top$cnt_dop$total cmat_1$5(
-        .d(cmat_1$5$d),
-        .q(cmat_1$5$q),
-        .clock(cmat_1$5$clock)
-    );
-    top$cnt_dop$total cmat_1$6(
-        .d(cmat_1$6$d),
-        .q(cmat_1$6$q),
-        .clock(cmat_1$6$clock)
-    );
-    top$cnt_dop$total cmat_1$7(
-        .d(cmat_1$7$d),
-        .q(cmat_1$7$q),
-        .clock(cmat_1$7$clock)
-    );
-    top$cnt_dop$total cmat_1$8(
-        .d(cmat_1$8$d),
-        .q(cmat_1$8$q),
-        .clock(cmat_1$8$clock)
-    );
-    top$cnt_dop$total cmat_1$9(
-        .d(cmat_1$9$d),
-        .q(cmat_1$9$q),
-        .clock(cmat_1$9$clock)
-    );
-    top$cnt_dop$total cmat_1$10(
-        .d(cmat_1$10$d),
-        .q(cmat_1$10$q),
-        .clock(cmat_1$10$clock)
-    );
-    top$cnt_dop$total cmat_1$11(
-        .d(cmat_1$11$d),
-        .q(cmat_1$11$q),
-        .clock(cmat_1$11$clock)
-    );
-    top$cnt_dop$total cmat_1$12(
-        .d(cmat_1$12$d),
-        .q(cmat_1$12$q),
-        .clock(cmat_1$12$clock)
-    );
-    top$cnt_dop$total cmat_1$13(
-        .d(cmat_1$13$d),
-        .q(cmat_1$13$q),
-        .clock(cmat_1$13$clock)
-    );
-    top$cnt_dop$total cmat_1$14(
-        .d(cmat_1$14$d),
-        .q(cmat_1$14$q),
-        .clock(cmat_1$14$clock)
-    );
-    top$cnt_dop$total cmat_1$15(
-        .d(cmat_1$15$d),
-        .q(cmat_1$15$q),
-        .clock(cmat_1$15$clock)
-    );
-    top$cnt_dop$total cmat_1$16(
-        .d(cmat_1$16$d),
-        .q(cmat_1$16$q),
-        .clock(cmat_1$16$clock)
-    );
-    top$cnt_dop$total cmat_1$17(
-        .d(cmat_1$17$d),
-        .q(cmat_1$17$q),
-        .clock(cmat_1$17$clock)
-    );
-    top$cnt_dop$total cmat_1$18(
-        .d(cmat_1$18$d),
-        .q(cmat_1$18$q),
-        .clock(cmat_1$18$clock)
-    );
-    top$cnt_dop$total cmat_1$19(
-        .d(cmat_1$19$d),
-        .q(cmat_1$19$q),
-        .clock(cmat_1$19$clock)
-    );
-    top$cnt_dop$total cmat_1$20(
-        .d(cmat_1$20$d),
-        .q(cmat_1$20$q),
-        .clock(cmat_1$20$clock)
-    );
-    top$cnt_dop$total cmat_1$21(
-        .d(cmat_1$21$d),
-        .q(cmat_1$21$q),
-        .clock(cmat_1$21$clock)
-    );
-    top$cnt_dop$total cmat_1$22(
-        .d(cmat_1$22$d),
-        .q(cmat_1$22$q),
-        .clock(cmat_1$22$clock)
-    );
-    top$cnt_dop$total cmat_1$23(
-        .d(cmat_1$23$d),
-        .q(cmat_1$23$q),
-        .clock(cmat_1$23$clock)
-    );
-    top$cnt_dop$total cmat_2$0(
-        .d(cmat_2$0$d),
-        .q(cmat_2$0$q),
-        .clock(cmat_2$0$clock)
-    );
-    top$cnt_dop$total cmat_2$1(
-        .d(cmat_2$1$d),
-        .q(cmat_2$1$q),
-        .clock(cmat_2$1$clock)
-    );
-    top$cnt_dop$total cmat_2$2(
-        .d(cmat_2$2$d),
-        .q(cmat_2$2$q),
-        .clock(cmat_2$2$clock)
-    );
-    top$cnt_dop$total cmat_2$3(
-        .d(cmat_2$3$d),
-        .q(cmat_2$3$q),
-        .clock(cmat_2$3$clock)
-    );
-    top$cnt_dop$total cmat_2$4(
-        .d(cmat_2$4$d),
-        .q(cmat_2$4$q),
-        .clock(cmat_2$4$clock)
-    );
-    top$cnt_dop$total cmat_2$5(
-        .d(cmat_2$5$d),
-        .q(cmat_2$5$q),
-        .clock(cmat_2$5$clock)
-    );
-    top$cnt_dop$total cmat_2$6(
-        .d(cmat_2$6$d),
-        .q(cmat_2$6$q),
-        .clock(cmat_2$6$clock)
-    );
-    top$cnt_dop$total cmat_2$7(
-        .d(cmat_2$7$d),
-        .q(cmat_2$7$q),
-        .clock(cmat_2$7$clock)
-    );
-    top$cnt_dop$total cmat_2$8(
-        .d(cmat_2$8$d),
-        .q(cmat_2$8$q),
-        .clock(cmat_2$8$clock)
-    );
-    top$cnt_dop$total cmat_2$9(
-        .d(cmat_2$9$d),
-        .q(cmat_2$9$q),
-        .clock(cmat_2$9$clock)
-    );
-    top$cnt_dop$total cmat_2$10(
-        .d(cmat_2$10$d),
-        .q(cmat_2$10$q),
-        .clock(cmat_2$10$clock)
-    );
-    top$cnt_dop$total cmat_2$11(
-        .d(cmat_2$11$d),
-        .q(cmat_2$11$q),
-        .clock(cmat_2$11$clock)
-    );
-    top$cnt_dop$total cmat_2$12(
-        .d(cmat_2$12$d),
-        .q(cmat_2$12$q),
-        .clock(cmat_2$12$clock)
-    );
-    top$cnt_dop$total cmat_2$13(
-        .d(cmat_2$13$d),
-        .q(cmat_2$13$q),
-        .clock(cmat_2$13$clock)
-    );
-    top$cnt_dop$total cmat_2$14(
-        .d(cmat_2$14$d),
-        .q(cmat_2$14$q),
-        .clock(cmat_2$14$clock)
-    );
-    top$cnt_dop$total cmat_2$15(
-        .d(cmat_2$15$d),
-        .q(cmat_2$15$q),
-        .clock(cmat_2$15$clock)
-    );
-    top$cnt_dop$total cmat_2$16(
-        .d(cmat_2$16$d),
-        .q(cmat_2$16$q),
-        .clock(cmat_2$16$clock)
-    );
-    top$cnt_dop$total cmat_2$17(
-        .d(cmat_2$17$d),
-        .q(cmat_2$17$q),
-        .clock(cmat_2$17$clock)
-    );
-    top$cnt_dop$total cmat_2$18(
-        .d(cmat_2$18$d),
-        .q(cmat_2$18$q),
-        .clock(cmat_2$18$clock)
-    );
-    top$cnt_dop$total cmat_2$19(
-        .d(cmat_2$19$d),
-        .q(cmat_2$19$q),
-        .clock(cmat_2$19$clock)
-    );
-    top$cnt_dop$total cmat_2$20(
-        .d(cmat_2$20$d),
-        .q(cmat_2$20$q),
-        .clock(cmat_2$20$clock)
-    );
-    top$cnt_dop$total cmat_2$21(
-        .d(cmat_2$21$d),
-        .q(cmat_2$21$q),
-        .clock(cmat_2$21$clock)
-    );
-    top$cnt_dop$total cmat_2$22(
-        .d(cmat_2$22$d),
-        .q(cmat_2$22$q),
-        .clock(cmat_2$22$clock)
-    );
-    top$cnt_dop$total cmat_2$23(
-        .d(cmat_2$23$d),
-        .q(cmat_2$23$q),
-        .clock(cmat_2$23$clock)
-    );
-    top$cnt_dop$total cvec$0(
-        .d(cvec$0$d),
-        .q(cvec$0$q),
-        .clock(cvec$0$clock)
-    );
-    top$cnt_dop$total cvec$1(
-        .d(cvec$1$d),
-        .q(cvec$1$q),
-        .clock(cvec$1$clock)
-    );
-    top$cnt_dop$total cvec$2(
-        .d(cvec$2$d),
-        .q(cvec$2$q),
-        .clock(cvec$2$clock)
-    );
-    top$cnt_dop$total cvec$3(
-        .d(cvec$3$d),
-        .q(cvec$3$q),
-        .clock(cvec$3$clock)
-    );
-    top$cnt_dop$total cvec$4(
-        .d(cvec$4$d),
-        .q(cvec$4$q),
-        .clock(cvec$4$clock)
-    );
-    top$cnt_dop$total cvec$5(
-        .d(cvec$5$d),
-        .q(cvec$5$q),
-        .clock(cvec$5$clock)
-    );
-    top$cnt_dop$total cvec$6(
-        .d(cvec$6$d),
-        .q(cvec$6$q),
-        .clock(cvec$6$clock)
-    );
-    top$cnt_dop$total cvec$7(
-        .d(cvec$7$d),
-        .q(cvec$7$q),
-        .clock(cvec$7$clock)
-    );
-    top$cnt_dop$total cvec$8(
-        .d(cvec$8$d),
-        .q(cvec$8$q),
-        .clock(cvec$8$clock)
-    );
-    top$cnt_dop$total cvec$9(
-        .d(cvec$9$d),
-        .q(cvec$9$q),
-        .clock(cvec$9$clock)
-    );
-    top$cnt_dop$total cvec$10(
-        .d(cvec$10$d),
-        .q(cvec$10$q),
-        .clock(cvec$10$clock)
-    );
-    top$cnt_dop$total cvec$11(
-        .d(cvec$11$d),
-        .q(cvec$11$q),
-        .clock(cvec$11$clock)
-    );
-    top$cnt_dop$total cvec$12(
-        .d(cvec$12$d),
-        .q(cvec$12$q),
-        .clock(cvec$12$clock)
-    );
-    top$cnt_dop$total cvec$13(
-        .d(cvec$13$d),
-        .q(cvec$13$q),
-        .clock(cvec$13$clock)
-    );
-    top$cnt_dop$total cvec$14(
-        .d(cvec$14$d),
-        .q(cvec$14$q),
-        .clock(cvec$14$clock)
-    );
-    top$cnt_dop$total cvec$15(
-        .d(cvec$15$d),
-        .q(cvec$15$q),
-        .clock(cvec$15$clock)
-    );
-    top$cnt_dop$total cvec$16(
-        .d(cvec$16$d),
-        .q(cvec$16$q),
-        .clock(cvec$16$clock)
-    );
-    top$cnt_dop$total cvec$17(
-        .d(cvec$17$d),
-        .q(cvec$17$q),
-        .clock(cvec$17$clock)
-    );
-    top$cnt_dop$total cvec$18(
-        .d(cvec$18$d),
-        .q(cvec$18$q),
-        .clock(cvec$18$clock)
-    );
-    top$cnt_dop$total cvec$19(
-        .d(cvec$19$d),
-        .q(cvec$19$q),
-        .clock(cvec$19$clock)
-    );
-    top$cnt_dop$total cvec$20(
-        .d(cvec$20$d),
-        .q(cvec$20$q),
-        .clock(cvec$20$clock)
-    );
-    top$cnt_dop$total cvec$21(
-        .d(cvec$21$d),
-        .q(cvec$21$q),
-        .clock(cvec$21$clock)
-    );
-    top$cnt_dop$total cvec$22(
-        .d(cvec$22$d),
-        .q(cvec$22$q),
-        .clock(cvec$22$clock)
-    );
-    top$cnt_dop$total cvec$23(
-        .d(cvec$23$d),
-        .q(cvec$23$q),
-        .clock(cvec$23$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_0$0(
-        .d(jsel_0$0$d),
-        .q(jsel_0$0$q),
-        .clock(jsel_0$0$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_0$1(
-        .d(jsel_0$1$d),
-        .q(jsel_0$1$q),
-        .clock(jsel_0$1$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_0$2(
-        .d(jsel_0$2$d),
-        .q(jsel_0$2$q),
-        .clock(jsel_0$2$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_0$3(
-        .d(jsel_0$3$d),
-        .q(jsel_0$3$q),
-        .clock(jsel_0$3$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_0$4(
-        .d(jsel_0$4$d),
-        .q(jsel_0$4$q),
-        .clock(jsel_0$4$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_0$5(
-        .d(jsel_0$5$d),
-        .q(jsel_0$5$q),
-        .clock(jsel_0$5$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_0$6(
-        .d(jsel_0$6$d),
-        .q(jsel_0$6$q),
-        .clock(jsel_0$6$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_0$7(
-        .d(jsel_0$7$d),
-        .q(jsel_0$7$q),
-        .clock(jsel_0$7$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_0$8(
-        .d(jsel_0$8$d),
-        .q(jsel_0$8$q),
-        .clock(jsel_0$8$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_0$9(
-        .d(jsel_0$9$d),
-        .q(jsel_0$9$q),
-        .clock(jsel_0$9$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_0$10(
-        .d(jsel_0$10$d),
-        .q(jsel_0$10$q),
-        .clock(jsel_0$10$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_0$11(
-        .d(jsel_0$11$d),
-        .q(jsel_0$11$q),
-        .clock(jsel_0$11$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_0$12(
-        .d(jsel_0$12$d),
-        .q(jsel_0$12$q),
-        .clock(jsel_0$12$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_0$13(
-        .d(jsel_0$13$d),
-        .q(jsel_0$13$q),
-        .clock(jsel_0$13$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_0$14(
-        .d(jsel_0$14$d),
-        .q(jsel_0$14$q),
-        .clock(jsel_0$14$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_0$15(
-        .d(jsel_0$15$d),
-        .q(jsel_0$15$q),
-        .clock(jsel_0$15$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_0$16(
-        .d(jsel_0$16$d),
-        .q(jsel_0$16$q),
-        .clock(jsel_0$16$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_0$17(
-        .d(jsel_0$17$d),
-        .q(jsel_0$17$q),
-        .clock(jsel_0$17$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_0$18(
-        .d(jsel_0$18$d),
-        .q(jsel_0$18$q),
-        .clock(jsel_0$18$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_0$19(
-        .d(jsel_0$19$d),
-        .q(jsel_0$19$q),
-        .clock(jsel_0$19$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_0$20(
-        .d(jsel_0$20$d),
-        .q(jsel_0$20$q),
-        .clock(jsel_0$20$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_0$21(
-        .d(jsel_0$21$d),
-        .q(jsel_0$21$q),
-        .clock(jsel_0$21$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_0$22(
-        .d(jsel_0$22$d),
-        .q(jsel_0$22$q),
-        .clock(jsel_0$22$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_0$23(
-        .d(jsel_0$23$d),
-        .q(jsel_0$23$q),
-        .clock(jsel_0$23$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_1$0(
-        .d(jsel_1$0$d),
-        .q(jsel_1$0$q),
-        .clock(jsel_1$0$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_1$1(
-        .d(jsel_1$1$d),
-        .q(jsel_1$1$q),
-        .clock(jsel_1$1$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_1$2(
-        .d(jsel_1$2$d),
-        .q(jsel_1$2$q),
-        .clock(jsel_1$2$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_1$3(
-        .d(jsel_1$3$d),
-        .q(jsel_1$3$q),
-        .clock(jsel_1$3$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_1$4(
-        .d(jsel_1$4$d),
-        .q(jsel_1$4$q),
-        .clock(jsel_1$4$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_1$5(
-        .d(jsel_1$5$d),
-        .q(jsel_1$5$q),
-        .clock(jsel_1$5$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_1$6(
-        .d(jsel_1$6$d),
-        .q(jsel_1$6$q),
-        .clock(jsel_1$6$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_1$7(
-        .d(jsel_1$7$d),
-        .q(jsel_1$7$q),
-        .clock(jsel_1$7$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_1$8(
-        .d(jsel_1$8$d),
-        .q(jsel_1$8$q),
-        .clock(jsel_1$8$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_1$9(
-        .d(jsel_1$9$d),
-        .q(jsel_1$9$q),
-        .clock(jsel_1$9$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_1$10(
-        .d(jsel_1$10$d),
-        .q(jsel_1$10$q),
-        .clock(jsel_1$10$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_1$11(
-        .d(jsel_1$11$d),
-        .q(jsel_1$11$q),
-        .clock(jsel_1$11$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_1$12(
-        .d(jsel_1$12$d),
-        .q(jsel_1$12$q),
-        .clock(jsel_1$12$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_1$13(
-        .d(jsel_1$13$d),
-        .q(jsel_1$13$q),
-        .clock(jsel_1$13$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_1$14(
-        .d(jsel_1$14$d),
-        .q(jsel_1$14$q),
-        .clock(jsel_1$14$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_1$15(
-        .d(jsel_1$15$d),
-        .q(jsel_1$15$q),
-        .clock(jsel_1$15$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_1$16(
-        .d(jsel_1$16$d),
-        .q(jsel_1$16$q),
-        .clock(jsel_1$16$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_1$17(
-        .d(jsel_1$17$d),
-        .q(jsel_1$17$q),
-        .clock(jsel_1$17$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_1$18(
-        .d(jsel_1$18$d),
-        .q(jsel_1$18$q),
-        .clock(jsel_1$18$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_1$19(
-        .d(jsel_1$19$d),
-        .q(jsel_1$19$q),
-        .clock(jsel_1$19$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_1$20(
-        .d(jsel_1$20$d),
-        .q(jsel_1$20$q),
-        .clock(jsel_1$20$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_1$21(
-        .d(jsel_1$21$d),
-        .q(jsel_1$21$q),
-        .clock(jsel_1$21$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_1$22(
-        .d(jsel_1$22$d),
-        .q(jsel_1$22$q),
-        .clock(jsel_1$22$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_1$23(
-        .d(jsel_1$23$d),
-        .q(jsel_1$23$q),
-        .clock(jsel_1$23$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_2$0(
-        .d(jsel_2$0$d),
-        .q(jsel_2$0$q),
-        .clock(jsel_2$0$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_2$1(
-        .d(jsel_2$1$d),
-        .q(jsel_2$1$q),
-        .clock(jsel_2$1$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_2$2(
-        .d(jsel_2$2$d),
-        .q(jsel_2$2$q),
-        .clock(jsel_2$2$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_2$3(
-        .d(jsel_2$3$d),
-        .q(jsel_2$3$q),
-        .clock(jsel_2$3$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_2$4(
-        .d(jsel_2$4$d),
-        .q(jsel_2$4$q),
-        .clock(jsel_2$4$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_2$5(
-        .d(jsel_2$5$d),
-        .q(jsel_2$5$q),
-        .clock(jsel_2$5$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_2$6(
-        .d(jsel_2$6$d),
-        .q(jsel_2$6$q),
-        .clock(jsel_2$6$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_2$7(
-        .d(jsel_2$7$d),
-        .q(jsel_2$7$q),
-        .clock(jsel_2$7$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_2$8(
-        .d(jsel_2$8$d),
-        .q(jsel_2$8$q),
-        .clock(jsel_2$8$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_2$9(
-        .d(jsel_2$9$d),
-        .q(jsel_2$9$q),
-        .clock(jsel_2$9$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_2$10(
-        .d(jsel_2$10$d),
-        .q(jsel_2$10$q),
-        .clock(jsel_2$10$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_2$11(
-        .d(jsel_2$11$d),
-        .q(jsel_2$11$q),
-        .clock(jsel_2$11$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_2$12(
-        .d(jsel_2$12$d),
-        .q(jsel_2$12$q),
-        .clock(jsel_2$12$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_2$13(
-        .d(jsel_2$13$d),
-        .q(jsel_2$13$q),
-        .clock(jsel_2$13$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_2$14(
-        .d(jsel_2$14$d),
-        .q(jsel_2$14$q),
-        .clock(jsel_2$14$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_2$15(
-        .d(jsel_2$15$d),
-        .q(jsel_2$15$q),
-        .clock(jsel_2$15$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_2$16(
-        .d(jsel_2$16$d),
-        .q(jsel_2$16$q),
-        .clock(jsel_2$16$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_2$17(
-        .d(jsel_2$17$d),
-        .q(jsel_2$17$q),
-        .clock(jsel_2$17$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_2$18(
-        .d(jsel_2$18$d),
-        .q(jsel_2$18$q),
-        .clock(jsel_2$18$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_2$19(
-        .d(jsel_2$19$d),
-        .q(jsel_2$19$q),
-        .clock(jsel_2$19$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_2$20(
-        .d(jsel_2$20$d),
-        .q(jsel_2$20$q),
-        .clock(jsel_2$20$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_2$21(
-        .d(jsel_2$21$d),
-        .q(jsel_2$21$q),
-        .clock(jsel_2$21$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_2$22(
-        .d(jsel_2$22$d),
-        .q(jsel_2$22$q),
-        .clock(jsel_2$22$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_2$23(
-        .d(jsel_2$23$d),
-        .q(jsel_2$23$q),
-        .clock(jsel_2$23$clock)
+    top$dop$setup setup(
+        .clock(setup$clock),
+        .load_en(setup$load_en),
+        .load_addr(setup$load_addr),
+        .load_data(setup$load_data),
+        .c0$0(setup$c0$0),
+        .c0$1(setup$c0$1),
+        .c0$2(setup$c0$2),
+        .c0$3(setup$c0$3),
+        .c0$4(setup$c0$4),
+        .c0$5(setup$c0$5),
+        .c0$6(setup$c0$6),
+        .c0$7(setup$c0$7),
+        .c0$8(setup$c0$8),
+        .c0$9(setup$c0$9),
+        .c0$10(setup$c0$10),
+        .c0$11(setup$c0$11),
+        .c0$12(setup$c0$12),
+        .c0$13(setup$c0$13),
+        .c0$14(setup$c0$14),
+        .c0$15(setup$c0$15),
+        .c0$16(setup$c0$16),
+        .c0$17(setup$c0$17),
+        .c0$18(setup$c0$18),
+        .c0$19(setup$c0$19),
+        .c0$20(setup$c0$20),
+        .c0$21(setup$c0$21),
+        .c0$22(setup$c0$22),
+        .c0$23(setup$c0$23),
+        .c1$0(setup$c1$0),
+        .c1$1(setup$c1$1),
+        .c1$2(setup$c1$2),
+        .c1$3(setup$c1$3),
+        .c1$4(setup$c1$4),
+        .c1$5(setup$c1$5),
+        .c1$6(setup$c1$6),
+        .c1$7(setup$c1$7),
+        .c1$8(setup$c1$8),
+        .c1$9(setup$c1$9),
+        .c1$10(setup$c1$10),
+        .c1$11(setup$c1$11),
+        .c1$12(setup$c1$12),
+        .c1$13(setup$c1$13),
+        .c1$14(setup$c1$14),
+        .c1$15(setup$c1$15),
+        .c1$16(setup$c1$16),
+        .c1$17(setup$c1$17),
+        .c1$18(setup$c1$18),
+        .c1$19(setup$c1$19),
+        .c1$20(setup$c1$20),
+        .c1$21(setup$c1$21),
+        .c1$22(setup$c1$22),
+        .c1$23(setup$c1$23),
+        .c2$0(setup$c2$0),
+        .c2$1(setup$c2$1),
+        .c2$2(setup$c2$2),
+        .c2$3(setup$c2$3),
+        .c2$4(setup$c2$4),
+        .c2$5(setup$c2$5),
+        .c2$6(setup$c2$6),
+        .c2$7(setup$c2$7),
+        .c2$8(setup$c2$8),
+        .c2$9(setup$c2$9),
+        .c2$10(setup$c2$10),
+        .c2$11(setup$c2$11),
+        .c2$12(setup$c2$12),
+        .c2$13(setup$c2$13),
+        .c2$14(setup$c2$14),
+        .c2$15(setup$c2$15),
+        .c2$16(setup$c2$16),
+        .c2$17(setup$c2$17),
+        .c2$18(setup$c2$18),
+        .c2$19(setup$c2$19),
+        .c2$20(setup$c2$20),
+        .c2$21(setup$c2$21),
+        .c2$22(setup$c2$22),
+        .c2$23(setup$c2$23),
+        .c$0(setup$c$0),
+        .c$1(setup$c$1),
+        .c$2(setup$c$2),
+        .c$3(setup$c$3),
+        .c$4(setup$c$4),
+        .c$5(setup$c$5),
+        .c$6(setup$c$6),
+        .c$7(setup$c$7),
+        .c$8(setup$c$8),
+        .c$9(setup$c$9),
+        .c$10(setup$c$10),
+        .c$11(setup$c$11),
+        .c$12(setup$c$12),
+        .c$13(setup$c$13),
+        .c$14(setup$c$14),
+        .c$15(setup$c$15),
+        .c$16(setup$c$16),
+        .c$17(setup$c$17),
+        .c$18(setup$c$18),
+        .c$19(setup$c$19),
+        .c$20(setup$c$20),
+        .c$21(setup$c$21),
+        .c$22(setup$c$22),
+        .c$23(setup$c$23),
+        .j0$0(setup$j0$0),
+        .j0$1(setup$j0$1),
+        .j0$2(setup$j0$2),
+        .j0$3(setup$j0$3),
+        .j0$4(setup$j0$4),
+        .j0$5(setup$j0$5),
+        .j0$6(setup$j0$6),
+        .j0$7(setup$j0$7),
+        .j0$8(setup$j0$8),
+        .j0$9(setup$j0$9),
+        .j0$10(setup$j0$10),
+        .j0$11(setup$j0$11),
+        .j0$12(setup$j0$12),
+        .j0$13(setup$j0$13),
+        .j0$14(setup$j0$14),
+        .j0$15(setup$j0$15),
+        .j0$16(setup$j0$16),
+        .j0$17(setup$j0$17),
+        .j0$18(setup$j0$18),
+        .j0$19(setup$j0$19),
+        .j0$20(setup$j0$20),
+        .j0$21(setup$j0$21),
+        .j0$22(setup$j0$22),
+        .j0$23(setup$j0$23),
+        .j1$0(setup$j1$0),
+        .j1$1(setup$j1$1),
+        .j1$2(setup$j1$2),
+        .j1$3(setup$j1$3),
+        .j1$4(setup$j1$4),
+        .j1$5(setup$j1$5),
+        .j1$6(setup$j1$6),
+        .j1$7(setup$j1$7),
+        .j1$8(setup$j1$8),
+        .j1$9(setup$j1$9),
+        .j1$10(setup$j1$10),
+        .j1$11(setup$j1$11),
+        .j1$12(setup$j1$12),
+        .j1$13(setup$j1$13),
+        .j1$14(setup$j1$14),
+        .j1$15(setup$j1$15),
+        .j1$16(setup$j1$16),
+        .j1$17(setup$j1$17),
+        .j1$18(setup$j1$18),
+        .j1$19(setup$j1$19),
+        .j1$20(setup$j1$20),
+        .j1$21(setup$j1$21),
+        .j1$22(setup$j1$22),
+        .j1$23(setup$j1$23),
+        .j2$0(setup$j2$0),
+        .j2$1(setup$j2$1),
+        .j2$2(setup$j2$2),
+        .j2$3(setup$j2$3),
+        .j2$4(setup$j2$4),
+        .j2$5(setup$j2$5),
+        .j2$6(setup$j2$6),
+        .j2$7(setup$j2$7),
+        .j2$8(setup$j2$8),
+        .j2$9(setup$j2$9),
+        .j2$10(setup$j2$10),
+        .j2$11(setup$j2$11),
+        .j2$12(setup$j2$12),
+        .j2$13(setup$j2$13),
+        .j2$14(setup$j2$14),
+        .j2$15(setup$j2$15),
+        .j2$16(setup$j2$16),
+        .j2$17(setup$j2$17),
+        .j2$18(setup$j2$18),
+        .j2$19(setup$j2$19),
+        .j2$20(setup$j2$20),
+        .j2$21(setup$j2$21),
+        .j2$22(setup$j2$22),
+        .j2$23(setup$j2$23),
+        .round_up$0(setup$round_up$0),
+        .round_up$1(setup$round_up$1),
+        .round_up$2(setup$round_up$2),
+        .round_up$3(setup$round_up$3),
+        .round_up$4(setup$round_up$4),
+        .round_up$5(setup$round_up$5),
+        .round_up$6(setup$round_up$6),
+        .round_up$7(setup$round_up$7),
+        .round_up$8(setup$round_up$8),
+        .round_up$9(setup$round_up$9),
+        .round_up$10(setup$round_up$10),
+        .round_up$11(setup$round_up$11),
+        .round_up$12(setup$round_up$12),
+        .round_up$13(setup$round_up$13),
+        .round_up$14(setup$round_up$14),
+        .round_up$15(setup$round_up$15),
+        .round_up$16(setup$round_up$16),
+        .round_up$17(setup$round_up$17),
+        .round_up$18(setup$round_up$18),
+        .round_up$19(setup$round_up$19),
+        .round_up$20(setup$round_up$20),
+        .round_up$21(setup$round_up$21),
+        .round_up$22(setup$round_up$22),
+        .round_up$23(setup$round_up$23)
     );
     top$dop$klmsel klmsel(
         .d$0(klmsel$d$0),
@@ -4924,6 +3970,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
         .c(doptrf$0$c),
         .e(doptrf$0$e),
         .valid_in(doptrf$0$valid_in),
+        .round_up(doptrf$0$round_up),
         .s(doptrf$0$s),
         .flag(doptrf$0$flag),
         .valid_out(doptrf$0$valid_out)
@@ -4939,6 +3986,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
         .c(doptrf$1$c),
         .e(doptrf$1$e),
         .valid_in(doptrf$1$valid_in),
+        .round_up(doptrf$1$round_up),
         .s(doptrf$1$s),
         .flag(doptrf$1$flag),
         .valid_out(doptrf$1$valid_out)
@@ -4954,6 +4002,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
         .c(doptrf$2$c),
         .e(doptrf$2$e),
         .valid_in(doptrf$2$valid_in),
+        .round_up(doptrf$2$round_up),
         .s(doptrf$2$s),
         .flag(doptrf$2$flag),
         .valid_out(doptrf$2$valid_out)
@@ -4969,6 +4018,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
         .c(doptrf$3$c),
         .e(doptrf$3$e),
         .valid_in(doptrf$3$valid_in),
+        .round_up(doptrf$3$round_up),
         .s(doptrf$3$s),
         .flag(doptrf$3$flag),
         .valid_out(doptrf$3$valid_out)
@@ -4984,6 +4034,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
         .c(doptrf$4$c),
         .e(doptrf$4$e),
         .valid_in(doptrf$4$valid_in),
+        .round_up(doptrf$4$round_up),
         .s(doptrf$4$s),
         .flag(doptrf$4$flag),
         .valid_out(doptrf$4$valid_out)
@@ -4999,6 +4050,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
         .c(doptrf$5$c),
         .e(doptrf$5$e),
         .valid_in(doptrf$5$valid_in),
+        .round_up(doptrf$5$round_up),
         .s(doptrf$5$s),
         .flag(doptrf$5$flag),
         .valid_out(doptrf$5$valid_out)
@@ -5014,6 +4066,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
         .c(doptrf$6$c),
         .e(doptrf$6$e),
         .valid_in(doptrf$6$valid_in),
+        .round_up(doptrf$6$round_up),
         .s(doptrf$6$s),
         .flag(doptrf$6$flag),
         .valid_out(doptrf$6$valid_out)
@@ -5029,6 +4082,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
         .c(doptrf$7$c),
         .e(doptrf$7$e),
         .valid_in(doptrf$7$valid_in),
+        .round_up(doptrf$7$round_up),
         .s(doptrf$7$s),
         .flag(doptrf$7$flag),
         .valid_out(doptrf$7$valid_out)
@@ -5044,6 +4098,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
         .c(doptrf$8$c),
         .e(doptrf$8$e),
         .valid_in(doptrf$8$valid_in),
+        .round_up(doptrf$8$round_up),
         .s(doptrf$8$s),
         .flag(doptrf$8$flag),
         .valid_out(doptrf$8$valid_out)
@@ -5059,6 +4114,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
         .c(doptrf$9$c),
         .e(doptrf$9$e),
         .valid_in(doptrf$9$valid_in),
+        .round_up(doptrf$9$round_up),
         .s(doptrf$9$s),
         .flag(doptrf$9$flag),
         .valid_out(doptrf$9$valid_out)
@@ -5074,6 +4130,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
         .c(doptrf$10$c),
         .e(doptrf$10$e),
         .valid_in(doptrf$10$valid_in),
+        .round_up(doptrf$10$round_up),
         .s(doptrf$10$s),
         .flag(doptrf$10$flag),
         .valid_out(doptrf$10$valid_out)
@@ -5089,6 +4146,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
         .c(doptrf$11$c),
         .e(doptrf$11$e),
         .valid_in(doptrf$11$valid_in),
+        .round_up(doptrf$11$round_up),
         .s(doptrf$11$s),
         .flag(doptrf$11$flag),
         .valid_out(doptrf$11$valid_out)
@@ -5104,6 +4162,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
         .c(doptrf$12$c),
         .e(doptrf$12$e),
         .valid_in(doptrf$12$valid_in),
+        .round_up(doptrf$12$round_up),
         .s(doptrf$12$s),
         .flag(doptrf$12$flag),
         .valid_out(doptrf$12$valid_out)
@@ -5119,6 +4178,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
         .c(doptrf$13$c),
         .e(doptrf$13$e),
         .valid_in(doptrf$13$valid_in),
+        .round_up(doptrf$13$round_up),
         .s(doptrf$13$s),
         .flag(doptrf$13$flag),
         .valid_out(doptrf$13$valid_out)
@@ -5134,6 +4194,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
         .c(doptrf$14$c),
         .e(doptrf$14$e),
         .valid_in(doptrf$14$valid_in),
+        .round_up(doptrf$14$round_up),
         .s(doptrf$14$s),
         .flag(doptrf$14$flag),
         .valid_out(doptrf$14$valid_out)
@@ -5149,6 +4210,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
         .c(doptrf$15$c),
         .e(doptrf$15$e),
         .valid_in(doptrf$15$valid_in),
+        .round_up(doptrf$15$round_up),
         .s(doptrf$15$s),
         .flag(doptrf$15$flag),
         .valid_out(doptrf$15$valid_out)
@@ -5164,6 +4226,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
         .c(doptrf$16$c),
         .e(doptrf$16$e),
         .valid_in(doptrf$16$valid_in),
+        .round_up(doptrf$16$round_up),
         .s(doptrf$16$s),
         .flag(doptrf$16$flag),
         .valid_out(doptrf$16$valid_out)
@@ -5179,6 +4242,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
         .c(doptrf$17$c),
         .e(doptrf$17$e),
         .valid_in(doptrf$17$valid_in),
+        .round_up(doptrf$17$round_up),
         .s(doptrf$17$s),
         .flag(doptrf$17$flag),
         .valid_out(doptrf$17$valid_out)
@@ -5194,6 +4258,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
         .c(doptrf$18$c),
         .e(doptrf$18$e),
         .valid_in(doptrf$18$valid_in),
+        .round_up(doptrf$18$round_up),
         .s(doptrf$18$s),
         .flag(doptrf$18$flag),
         .valid_out(doptrf$18$valid_out)
@@ -5209,6 +4274,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
         .c(doptrf$19$c),
         .e(doptrf$19$e),
         .valid_in(doptrf$19$valid_in),
+        .round_up(doptrf$19$round_up),
         .s(doptrf$19$s),
         .flag(doptrf$19$flag),
         .valid_out(doptrf$19$valid_out)
@@ -5224,6 +4290,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
         .c(doptrf$20$c),
         .e(doptrf$20$e),
         .valid_in(doptrf$20$valid_in),
+        .round_up(doptrf$20$round_up),
         .s(doptrf$20$s),
         .flag(doptrf$20$flag),
         .valid_out(doptrf$20$valid_out)
@@ -5239,6 +4306,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
         .c(doptrf$21$c),
         .e(doptrf$21$e),
         .valid_in(doptrf$21$valid_in),
+        .round_up(doptrf$21$round_up),
         .s(doptrf$21$s),
         .flag(doptrf$21$flag),
         .valid_out(doptrf$21$valid_out)
@@ -5254,6 +4322,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
         .c(doptrf$22$c),
         .e(doptrf$22$e),
         .valid_in(doptrf$22$valid_in),
+        .round_up(doptrf$22$round_up),
         .s(doptrf$22$s),
         .flag(doptrf$22$flag),
         .valid_out(doptrf$22$valid_out)
@@ -5269,6 +4338,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
         .c(doptrf$23$c),
         .e(doptrf$23$e),
         .valid_in(doptrf$23$valid_in),
+        .round_up(doptrf$23$round_up),
         .s(doptrf$23$s),
         .flag(doptrf$23$flag),
         .valid_out(doptrf$23$valid_out)
@@ -5381,1111 +4451,345 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
         tag_13$d = tag_13$q;
         tag_14$d = tag_14$q;
         tag_15$d = tag_15$q;
-        c_load_lane = load_addr[(32'h3)+:(5)];
-        c_load_field = load_addr[(32'h0)+:(3)];
-        cmat_0$0$clock = clock;
-        cmat_1$0$clock = clock;
-        cmat_2$0$clock = clock;
-        cvec$0$clock = clock;
-        jsel_0$0$clock = clock;
-        jsel_1$0$clock = clock;
-        jsel_2$0$clock = clock;
+        setup$clock = clock;
+        setup$load_en = load_en;
+        setup$load_addr = load_addr;
+        setup$load_data = load_data;
         doptrf$0$clock = clock;
-        cmat_0$0$d = cmat_0$0$q;
-        cmat_1$0$d = cmat_1$0$q;
-        cmat_2$0$d = cmat_2$0$q;
-        cvec$0$d = cvec$0$q;
-        jsel_0$0$d = jsel_0$0$q;
-        jsel_1$0$d = jsel_1$0$q;
-        jsel_2$0$d = jsel_2$0$q;
-        if (load_en & (c_load_lane == idx$0)) begin
-            if (c_load_field == 32'h0) begin
-                cmat_0$0$d = load_data;
-            end
-            if (c_load_field == 32'h1) begin
-                cmat_1$0$d = load_data;
-            end
-            if (c_load_field == 32'h2) begin
-                cmat_2$0$d = load_data;
-            end
-            if (c_load_field == 32'h3) begin
-                cvec$0$d = load_data;
-            end
-            if (c_load_field == 32'h4) begin
-                jsel_0$0$d = load_data[(32'h0)+:(5)];
-                jsel_1$0$d = load_data[(32'h5)+:(5)];
-                jsel_2$0$d = load_data[(32'ha)+:(5)];
-            end
-        end
         klmsel$d$0 = d$0;
-        klmsel$j0$0 = jsel_0$0$q;
-        klmsel$j1$0 = jsel_1$0$q;
-        klmsel$j2$0 = jsel_2$0$q;
+        klmsel$j0$0 = setup$j0$0;
+        klmsel$j1$0 = setup$j1$0;
+        klmsel$j2$0 = setup$j2$0;
         doptrf$0$d0 = klmsel$y0$0;
         doptrf$0$d1 = klmsel$y1$0;
         doptrf$0$d2 = klmsel$y2$0;
-        doptrf$0$c0 = cmat_0$0$q;
-        doptrf$0$c1 = cmat_1$0$q;
-        doptrf$0$c2 = cmat_2$0$q;
-        doptrf$0$c = cvec$0$q;
+        doptrf$0$c0 = setup$c0$0;
+        doptrf$0$c1 = setup$c1$0;
+        doptrf$0$c2 = setup$c2$0;
+        doptrf$0$c = setup$c$0;
+        doptrf$0$round_up = setup$round_up$0;
         doptrf$0$valid_in = valid_in;
-        cmat_0$1$clock = clock;
-        cmat_1$1$clock = clock;
-        cmat_2$1$clock = clock;
-        cvec$1$clock = clock;
-        jsel_0$1$clock = clock;
-        jsel_1$1$clock = clock;
-        jsel_2$1$clock = clock;
         doptrf$1$clock = clock;
-        cmat_0$1$d = cmat_0$1$q;
-        cmat_1$1$d = cmat_1$1$q;
-        cmat_2$1$d = cmat_2$1$q;
-        cvec$1$d = cvec$1$q;
-        jsel_0$1$d = jsel_0$1$q;
-        jsel_1$1$d = jsel_1$1$q;
-        jsel_2$1$d = jsel_2$1$q;
-        if (load_en & (c_load_lane == idx$1)) begin
-            if (c_load_field == 32'h0) begin
-                cmat_0$1$d = load_data;
-            end
-            if (c_load_field == 32'h1) begin
-                cmat_1$1$d = load_data;
-            end
-            if (c_load_field == 32'h2) begin
-                cmat_2$1$d = load_data;
-            end
-            if (c_load_field == 32'h3) begin
-                cvec$1$d = load_data;
-            end
-            if (c_load_field == 32'h4) begin
-                jsel_0$1$d = load_data[(32'h0)+:(5)];
-                jsel_1$1$d = load_data[(32'h5)+:(5)];
-                jsel_2$1$d = load_data[(32'ha)+:(5)];
-            end
-        end
         klmsel$d$1 = d$1;
-        klmsel$j0$1 = jsel_0$1$q;
-        klmsel$j1$1 = jsel_1$1$q;
-        klmsel$j2$1 = jsel_2$1$q;
+        klmsel$j0$1 = setup$j0$1;
+        klmsel$j1$1 = setup$j1$1;
+        klmsel$j2$1 = setup$j2$1;
         doptrf$1$d0 = klmsel$y0$1;
         doptrf$1$d1 = klmsel$y1$1;
         doptrf$1$d2 = klmsel$y2$1;
-        doptrf$1$c0 = cmat_0$1$q;
-        doptrf$1$c1 = cmat_1$1$q;
-        doptrf$1$c2 = cmat_2$1$q;
-        doptrf$1$c = cvec$1$q;
+        doptrf$1$c0 = setup$c0$1;
+        doptrf$1$c1 = setup$c1$1;
+        doptrf$1$c2 = setup$c2$1;
+        doptrf$1$c = setup$c$1;
+        doptrf$1$round_up = setup$round_up$1;
         doptrf$1$valid_in = valid_in;
-        cmat_0$2$clock = clock;
-        cmat_1$2$clock = clock;
-        cmat_2$2$clock = clock;
-        cvec$2$clock = clock;
-        jsel_0$2$clock = clock;
-        jsel_1$2$clock = clock;
-        jsel_2$2$clock = clock;
         doptrf$2$clock = clock;
-        cmat_0$2$d = cmat_0$2$q;
-        cmat_1$2$d = cmat_1$2$q;
-        cmat_2$2$d = cmat_2$2$q;
-        cvec$2$d = cvec$2$q;
-        jsel_0$2$d = jsel_0$2$q;
-        jsel_1$2$d = jsel_1$2$q;
-        jsel_2$2$d = jsel_2$2$q;
-        if (load_en & (c_load_lane == idx$2)) begin
-            if (c_load_field == 32'h0) begin
-                cmat_0$2$d = load_data;
-            end
-            if (c_load_field == 32'h1) begin
-                cmat_1$2$d = load_data;
-            end
-            if (c_load_field == 32'h2) begin
-                cmat_2$2$d = load_data;
-            end
-            if (c_load_field == 32'h3) begin
-                cvec$2$d = load_data;
-            end
-            if (c_load_field == 32'h4) begin
-                jsel_0$2$d = load_data[(32'h0)+:(5)];
-                jsel_1$2$d = load_data[(32'h5)+:(5)];
-                jsel_2$2$d = load_data[(32'ha)+:(5)];
-            end
-        end
         klmsel$d$2 = d$2;
-        klmsel$j0$2 = jsel_0$2$q;
-        klmsel$j1$2 = jsel_1$2$q;
-        klmsel$j2$2 = jsel_2$2$q;
+        klmsel$j0$2 = setup$j0$2;
+        klmsel$j1$2 = setup$j1$2;
+        klmsel$j2$2 = setup$j2$2;
         doptrf$2$d0 = klmsel$y0$2;
         doptrf$2$d1 = klmsel$y1$2;
         doptrf$2$d2 = klmsel$y2$2;
-        doptrf$2$c0 = cmat_0$2$q;
-        doptrf$2$c1 = cmat_1$2$q;
-        doptrf$2$c2 = cmat_2$2$q;
-        doptrf$2$c = cvec$2$q;
+        doptrf$2$c0 = setup$c0$2;
+        doptrf$2$c1 = setup$c1$2;
+        doptrf$2$c2 = setup$c2$2;
+        doptrf$2$c = setup$c$2;
+        doptrf$2$round_up = setup$round_up$2;
         doptrf$2$valid_in = valid_in;
-        cmat_0$3$clock = clock;
-        cmat_1$3$clock = clock;
-        cmat_2$3$clock = clock;
-        cvec$3$clock = clock;
-        jsel_0$3$clock = clock;
-        jsel_1$3$clock = clock;
-        jsel_2$3$clock = clock;
         doptrf$3$clock = clock;
-        cmat_0$3$d = cmat_0$3$q;
-        cmat_1$3$d = cmat_1$3$q;
-        cmat_2$3$d = cmat_2$3$q;
-        cvec$3$d = cvec$3$q;
-        jsel_0$3$d = jsel_0$3$q;
-        jsel_1$3$d = jsel_1$3$q;
-        jsel_2$3$d = jsel_2$3$q;
-        if (load_en & (c_load_lane == idx$3)) begin
-            if (c_load_field == 32'h0) begin
-                cmat_0$3$d = load_data;
-            end
-            if (c_load_field == 32'h1) begin
-                cmat_1$3$d = load_data;
-            end
-            if (c_load_field == 32'h2) begin
-                cmat_2$3$d = load_data;
-            end
-            if (c_load_field == 32'h3) begin
-                cvec$3$d = load_data;
-            end
-            if (c_load_field == 32'h4) begin
-                jsel_0$3$d = load_data[(32'h0)+:(5)];
-                jsel_1$3$d = load_data[(32'h5)+:(5)];
-                jsel_2$3$d = load_data[(32'ha)+:(5)];
-            end
-        end
         klmsel$d$3 = d$3;
-        klmsel$j0$3 = jsel_0$3$q;
-        klmsel$j1$3 = jsel_1$3$q;
-        klmsel$j2$3 = jsel_2$3$q;
+        klmsel$j0$3 = setup$j0$3;
+        klmsel$j1$3 = setup$j1$3;
+        klmsel$j2$3 = setup$j2$3;
         doptrf$3$d0 = klmsel$y0$3;
         doptrf$3$d1 = klmsel$y1$3;
         doptrf$3$d2 = klmsel$y2$3;
-        doptrf$3$c0 = cmat_0$3$q;
-        doptrf$3$c1 = cmat_1$3$q;
-        doptrf$3$c2 = cmat_2$3$q;
-        doptrf$3$c = cvec$3$q;
+        doptrf$3$c0 = setup$c0$3;
+        doptrf$3$c1 = setup$c1$3;
+        doptrf$3$c2 = setup$c2$3;
+        doptrf$3$c = setup$c$3;
+        doptrf$3$round_up = setup$round_up$3;
         doptrf$3$valid_in = valid_in;
-        cmat_0$4$clock = clock;
-        cmat_1$4$clock = clock;
-        cmat_2$4$clock = clock;
-        cvec$4$clock = clock;
-        jsel_0$4$clock = clock;
-        jsel_1$4$clock = clock;
-        jsel_2$4$clock = clock;
         doptrf$4$clock = clock;
-        cmat_0$4$d = cmat_0$4$q;
-        cmat_1$4$d = cmat_1$4$q;
-        cmat_2$4$d = cmat_2$4$q;
-        cvec$4$d = cvec$4$q;
-        jsel_0$4$d = jsel_0$4$q;
-        jsel_1$4$d = jsel_1$4$q;
-        jsel_2$4$d = jsel_2$4$q;
-        if (load_en & (c_load_lane == idx$4)) begin
-            if (c_load_field == 32'h0) begin
-                cmat_0$4$d = load_data;
-            end
-            if (c_load_field == 32'h1) begin
-                cmat_1$4$d = load_data;
-            end
-            if (c_load_field == 32'h2) begin
-                cmat_2$4$d = load_data;
-            end
-            if (c_load_field == 32'h3) begin
-                cvec$4$d = load_data;
-            end
-            if (c_load_field == 32'h4) begin
-                jsel_0$4$d = load_data[(32'h0)+:(5)];
-                jsel_1$4$d = load_data[(32'h5)+:(5)];
-                jsel_2$4$d = load_data[(32'ha)+:(5)];
-            end
-        end
         klmsel$d$4 = d$4;
-        klmsel$j0$4 = jsel_0$4$q;
-        klmsel$j1$4 = jsel_1$4$q;
-        klmsel$j2$4 = jsel_2$4$q;
+        klmsel$j0$4 = setup$j0$4;
+        klmsel$j1$4 = setup$j1$4;
+        klmsel$j2$4 = setup$j2$4;
         doptrf$4$d0 = klmsel$y0$4;
         doptrf$4$d1 = klmsel$y1$4;
         doptrf$4$d2 = klmsel$y2$4;
-        doptrf$4$c0 = cmat_0$4$q;
-        doptrf$4$c1 = cmat_1$4$q;
-        doptrf$4$c2 = cmat_2$4$q;
-        doptrf$4$c = cvec$4$q;
+        doptrf$4$c0 = setup$c0$4;
+        doptrf$4$c1 = setup$c1$4;
+        doptrf$4$c2 = setup$c2$4;
+        doptrf$4$c = setup$c$4;
+        doptrf$4$round_up = setup$round_up$4;
         doptrf$4$valid_in = valid_in;
-        cmat_0$5$clock = clock;
-        cmat_1$5$clock = clock;
-        cmat_2$5$clock = clock;
-        cvec$5$clock = clock;
-        jsel_0$5$clock = clock;
-        jsel_1$5$clock = clock;
-        jsel_2$5$clock = clock;
         doptrf$5$clock = clock;
-        cmat_0$5$d = cmat_0$5$q;
-        cmat_1$5$d = cmat_1$5$q;
-        cmat_2$5$d = cmat_2$5$q;
-        cvec$5$d = cvec$5$q;
-        jsel_0$5$d = jsel_0$5$q;
-        jsel_1$5$d = jsel_1$5$q;
-        jsel_2$5$d = jsel_2$5$q;
-        if (load_en & (c_load_lane == idx$5)) begin
-            if (c_load_field == 32'h0) begin
-                cmat_0$5$d = load_data;
-            end
-            if (c_load_field == 32'h1) begin
-                cmat_1$5$d = load_data;
-            end
-            if (c_load_field == 32'h2) begin
-                cmat_2$5$d = load_data;
-            end
-            if (c_load_field == 32'h3) begin
-                cvec$5$d = load_data;
-            end
-            if (c_load_field == 32'h4) begin
-                jsel_0$5$d = load_data[(32'h0)+:(5)];
-                jsel_1$5$d = load_data[(32'h5)+:(5)];
-                jsel_2$5$d = load_data[(32'ha)+:(5)];
-            end
-        end
         klmsel$d$5 = d$5;
-        klmsel$j0$5 = jsel_0$5$q;
-        klmsel$j1$5 = jsel_1$5$q;
-        klmsel$j2$5 = jsel_2$5$q;
+        klmsel$j0$5 = setup$j0$5;
+        klmsel$j1$5 = setup$j1$5;
+        klmsel$j2$5 = setup$j2$5;
         doptrf$5$d0 = klmsel$y0$5;
         doptrf$5$d1 = klmsel$y1$5;
         doptrf$5$d2 = klmsel$y2$5;
-        doptrf$5$c0 = cmat_0$5$q;
-        doptrf$5$c1 = cmat_1$5$q;
-        doptrf$5$c2 = cmat_2$5$q;
-        doptrf$5$c = cvec$5$q;
+        doptrf$5$c0 = setup$c0$5;
+        doptrf$5$c1 = setup$c1$5;
+        doptrf$5$c2 = setup$c2$5;
+        doptrf$5$c = setup$c$5;
+        doptrf$5$round_up = setup$round_up$5;
         doptrf$5$valid_in = valid_in;
-        cmat_0$6$clock = clock;
-        cmat_1$6$clock = clock;
-        cmat_2$6$clock = clock;
-        cvec$6$clock = clock;
-        jsel_0$6$clock = clock;
-        jsel_1$6$clock = clock;
-        jsel_2$6$clock = clock;
         doptrf$6$clock = clock;
-        cmat_0$6$d = cmat_0$6$q;
-        cmat_1$6$d = cmat_1$6$q;
-        cmat_2$6$d = cmat_2$6$q;
-        cvec$6$d = cvec$6$q;
-        jsel_0$6$d = jsel_0$6$q;
-        jsel_1$6$d = jsel_1$6$q;
-        jsel_2$6$d = jsel_2$6$q;
-        if (load_en & (c_load_lane == idx$6)) begin
-            if (c_load_field == 32'h0) begin
-                cmat_0$6$d = load_data;
-            end
-            if (c_load_field == 32'h1) begin
-                cmat_1$6$d = load_data;
-            end
-            if (c_load_field == 32'h2) begin
-                cmat_2$6$d = load_data;
-            end
-            if (c_load_field == 32'h3) begin
-                cvec$6$d = load_data;
-            end
-            if (c_load_field == 32'h4) begin
-                jsel_0$6$d = load_data[(32'h0)+:(5)];
-                jsel_1$6$d = load_data[(32'h5)+:(5)];
-                jsel_2$6$d = load_data[(32'ha)+:(5)];
-            end
-        end
         klmsel$d$6 = d$6;
-        klmsel$j0$6 = jsel_0$6$q;
-        klmsel$j1$6 = jsel_1$6$q;
-        klmsel$j2$6 = jsel_2$6$q;
+        klmsel$j0$6 = setup$j0$6;
+        klmsel$j1$6 = setup$j1$6;
+        klmsel$j2$6 = setup$j2$6;
         doptrf$6$d0 = klmsel$y0$6;
         doptrf$6$d1 = klmsel$y1$6;
         doptrf$6$d2 = klmsel$y2$6;
-        doptrf$6$c0 = cmat_0$6$q;
-        doptrf$6$c1 = cmat_1$6$q;
-        doptrf$6$c2 = cmat_2$6$q;
-        doptrf$6$c = cvec$6$q;
+        doptrf$6$c0 = setup$c0$6;
+        doptrf$6$c1 = setup$c1$6;
+        doptrf$6$c2 = setup$c2$6;
+        doptrf$6$c = setup$c$6;
+        doptrf$6$round_up = setup$round_up$6;
         doptrf$6$valid_in = valid_in;
-        cmat_0$7$clock = clock;
-        cmat_1$7$clock = clock;
-        cmat_2$7$clock = clock;
-        cvec$7$clock = clock;
-        jsel_0$7$clock = clock;
-        jsel_1$7$clock = clock;
-        jsel_2$7$clock = clock;
         doptrf$7$clock = clock;
-        cmat_0$7$d = cmat_0$7$q;
-        cmat_1$7$d = cmat_1$7$q;
-        cmat_2$7$d = cmat_2$7$q;
-        cvec$7$d = cvec$7$q;
-        jsel_0$7$d = jsel_0$7$q;
-        jsel_1$7$d = jsel_1$7$q;
-        jsel_2$7$d = jsel_2$7$q;
-        if (load_en & (c_load_lane == idx$7)) begin
-            if (c_load_field == 32'h0) begin
-                cmat_0$7$d = load_data;
-            end
-            if (c_load_field == 32'h1) begin
-                cmat_1$7$d = load_data;
-            end
-            if (c_load_field == 32'h2) begin
-                cmat_2$7$d = load_data;
-            end
-            if (c_load_field == 32'h3) begin
-                cvec$7$d = load_data;
-            end
-            if (c_load_field == 32'h4) begin
-                jsel_0$7$d = load_data[(32'h0)+:(5)];
-                jsel_1$7$d = load_data[(32'h5)+:(5)];
-                jsel_2$7$d = load_data[(32'ha)+:(5)];
-            end
-        end
         klmsel$d$7 = d$7;
-        klmsel$j0$7 = jsel_0$7$q;
-        klmsel$j1$7 = jsel_1$7$q;
-        klmsel$j2$7 = jsel_2$7$q;
+        klmsel$j0$7 = setup$j0$7;
+        klmsel$j1$7 = setup$j1$7;
+        klmsel$j2$7 = setup$j2$7;
         doptrf$7$d0 = klmsel$y0$7;
         doptrf$7$d1 = klmsel$y1$7;
         doptrf$7$d2 = klmsel$y2$7;
-        doptrf$7$c0 = cmat_0$7$q;
-        doptrf$7$c1 = cmat_1$7$q;
-        doptrf$7$c2 = cmat_2$7$q;
-        doptrf$7$c = cvec$7$q;
+        doptrf$7$c0 = setup$c0$7;
+        doptrf$7$c1 = setup$c1$7;
+        doptrf$7$c2 = setup$c2$7;
+        doptrf$7$c = setup$c$7;
+        doptrf$7$round_up = setup$round_up$7;
         doptrf$7$valid_in = valid_in;
-        cmat_0$8$clock = clock;
-        cmat_1$8$clock = clock;
-        cmat_2$8$clock = clock;
-        cvec$8$clock = clock;
-        jsel_0$8$clock = clock;
-        jsel_1$8$clock = clock;
-        jsel_2$8$clock = clock;
         doptrf$8$clock = clock;
-        cmat_0$8$d = cmat_0$8$q;
-        cmat_1$8$d = cmat_1$8$q;
-        cmat_2$8$d = cmat_2$8$q;
-        cvec$8$d = cvec$8$q;
-        jsel_0$8$d = jsel_0$8$q;
-        jsel_1$8$d = jsel_1$8$q;
-        jsel_2$8$d = jsel_2$8$q;
-        if (load_en & (c_load_lane == idx$8)) begin
-            if (c_load_field == 32'h0) begin
-                cmat_0$8$d = load_data;
-            end
-            if (c_load_field == 32'h1) begin
-                cmat_1$8$d = load_data;
-            end
-            if (c_load_field == 32'h2) begin
-                cmat_2$8$d = load_data;
-            end
-            if (c_load_field == 32'h3) begin
-                cvec$8$d = load_data;
-            end
-            if (c_load_field == 32'h4) begin
-                jsel_0$8$d = load_data[(32'h0)+:(5)];
-                jsel_1$8$d = load_data[(32'h5)+:(5)];
-                jsel_2$8$d = load_data[(32'ha)+:(5)];
-            end
-        end
         klmsel$d$8 = d$8;
-        klmsel$j0$8 = jsel_0$8$q;
-        klmsel$j1$8 = jsel_1$8$q;
-        klmsel$j2$8 = jsel_2$8$q;
+        klmsel$j0$8 = setup$j0$8;
+        klmsel$j1$8 = setup$j1$8;
+        klmsel$j2$8 = setup$j2$8;
         doptrf$8$d0 = klmsel$y0$8;
         doptrf$8$d1 = klmsel$y1$8;
         doptrf$8$d2 = klmsel$y2$8;
-        doptrf$8$c0 = cmat_0$8$q;
-        doptrf$8$c1 = cmat_1$8$q;
-        doptrf$8$c2 = cmat_2$8$q;
-        doptrf$8$c = cvec$8$q;
+        doptrf$8$c0 = setup$c0$8;
+        doptrf$8$c1 = setup$c1$8;
+        doptrf$8$c2 = setup$c2$8;
+        doptrf$8$c = setup$c$8;
+        doptrf$8$round_up = setup$round_up$8;
         doptrf$8$valid_in = valid_in;
-        cmat_0$9$clock = clock;
-        cmat_1$9$clock = clock;
-        cmat_2$9$clock = clock;
-        cvec$9$clock = clock;
-        jsel_0$9$clock = clock;
-        jsel_1$9$clock = clock;
-        jsel_2$9$clock = clock;
         doptrf$9$clock = clock;
-        cmat_0$9$d = cmat_0$9$q;
-        cmat_1$9$d = cmat_1$9$q;
-        cmat_2$9$d = cmat_2$9$q;
-        cvec$9$d = cvec$9$q;
-        jsel_0$9$d = jsel_0$9$q;
-        jsel_1$9$d = jsel_1$9$q;
-        jsel_2$9$d = jsel_2$9$q;
-        if (load_en & (c_load_lane == idx$9)) begin
-            if (c_load_field == 32'h0) begin
-                cmat_0$9$d = load_data;
-            end
-            if (c_load_field == 32'h1) begin
-                cmat_1$9$d = load_data;
-            end
-            if (c_load_field == 32'h2) begin
-                cmat_2$9$d = load_data;
-            end
-            if (c_load_field == 32'h3) begin
-                cvec$9$d = load_data;
-            end
-            if (c_load_field == 32'h4) begin
-                jsel_0$9$d = load_data[(32'h0)+:(5)];
-                jsel_1$9$d = load_data[(32'h5)+:(5)];
-                jsel_2$9$d = load_data[(32'ha)+:(5)];
-            end
-        end
         klmsel$d$9 = d$9;
-        klmsel$j0$9 = jsel_0$9$q;
-        klmsel$j1$9 = jsel_1$9$q;
-        klmsel$j2$9 = jsel_2$9$q;
+        klmsel$j0$9 = setup$j0$9;
+        klmsel$j1$9 = setup$j1$9;
+        klmsel$j2$9 = setup$j2$9;
         doptrf$9$d0 = klmsel$y0$9;
         doptrf$9$d1 = klmsel$y1$9;
         doptrf$9$d2 = klmsel$y2$9;
-        doptrf$9$c0 = cmat_0$9$q;
-        doptrf$9$c1 = cmat_1$9$q;
-        doptrf$9$c2 = cmat_2$9$q;
-        doptrf$9$c = cvec$9$q;
+        doptrf$9$c0 = setup$c0$9;
+        doptrf$9$c1 = setup$c1$9;
+        doptrf$9$c2 = setup$c2$9;
+        doptrf$9$c = setup$c$9;
+        doptrf$9$round_up = setup$round_up$9;
         doptrf$9$valid_in = valid_in;
-        cmat_0$10$clock = clock;
-        cmat_1$10$clock = clock;
-        cmat_2$10$clock = clock;
-        cvec$10$clock = clock;
-        jsel_0$10$clock = clock;
-        jsel_1$10$clock = clock;
-        jsel_2$10$clock = clock;
         doptrf$10$clock = clock;
-        cmat_0$10$d = cmat_0$10$q;
-        cmat_1$10$d = cmat_1$10$q;
-        cmat_2$10$d = cmat_2$10$q;
-        cvec$10$d = cvec$10$q;
-        jsel_0$10$d = jsel_0$10$q;
-        jsel_1$10$d = jsel_1$10$q;
-        jsel_2$10$d = jsel_2$10$q;
-        if (load_en & (c_load_lane == idx$10)) begin
-            if (c_load_field == 32'h0) begin
-                cmat_0$10$d = load_data;
-            end
-            if (c_load_field == 32'h1) begin
-                cmat_1$10$d = load_data;
-            end
-            if (c_load_field == 32'h2) begin
-                cmat_2$10$d = load_data;
-            end
-            if (c_load_field == 32'h3) begin
-                cvec$10$d = load_data;
-            end
-            if (c_load_field == 32'h4) begin
-                jsel_0$10$d = load_data[(32'h0)+:(5)];
-                jsel_1$10$d = load_data[(32'h5)+:(5)];
-                jsel_2$10$d = load_data[(32'ha)+:(5)];
-            end
-        end
         klmsel$d$10 = d$10;
-        klmsel$j0$10 = jsel_0$10$q;
-        klmsel$j1$10 = jsel_1$10$q;
-        klmsel$j2$10 = jsel_2$10$q;
+        klmsel$j0$10 = setup$j0$10;
+        klmsel$j1$10 = setup$j1$10;
+        klmsel$j2$10 = setup$j2$10;
         doptrf$10$d0 = klmsel$y0$10;
         doptrf$10$d1 = klmsel$y1$10;
         doptrf$10$d2 = klmsel$y2$10;
-        doptrf$10$c0 = cmat_0$10$q;
-        doptrf$10$c1 = cmat_1$10$q;
-        doptrf$10$c2 = cmat_2$10$q;
-        doptrf$10$c = cvec$10$q;
+        doptrf$10$c0 = setup$c0$10;
+        doptrf$10$c1 = setup$c1$10;
+        doptrf$10$c2 = setup$c2$10;
+        doptrf$10$c = setup$c$10;
+        doptrf$10$round_up = setup$round_up$10;
         doptrf$10$valid_in = valid_in;
-        cmat_0$11$clock = clock;
-        cmat_1$11$clock = clock;
-        cmat_2$11$clock = clock;
-        cvec$11$clock = clock;
-        jsel_0$11$clock = clock;
-        jsel_1$11$clock = clock;
-        jsel_2$11$clock = clock;
         doptrf$11$clock = clock;
-        cmat_0$11$d = cmat_0$11$q;
-        cmat_1$11$d = cmat_1$11$q;
-        cmat_2$11$d = cmat_2$11$q;
-        cvec$11$d = cvec$11$q;
-        jsel_0$11$d = jsel_0$11$q;
-        jsel_1$11$d = jsel_1$11$q;
-        jsel_2$11$d = jsel_2$11$q;
-        if (load_en & (c_load_lane == idx$11)) begin
-            if (c_load_field == 32'h0) begin
-                cmat_0$11$d = load_data;
-            end
-            if (c_load_field == 32'h1) begin
-                cmat_1$11$d = load_data;
-            end
-            if (c_load_field == 32'h2) begin
-                cmat_2$11$d = load_data;
-            end
-            if (c_load_field == 32'h3) begin
-                cvec$11$d = load_data;
-            end
-            if (c_load_field == 32'h4) begin
-                jsel_0$11$d = load_data[(32'h0)+:(5)];
-                jsel_1$11$d = load_data[(32'h5)+:(5)];
-                jsel_2$11$d = load_data[(32'ha)+:(5)];
-            end
-        end
         klmsel$d$11 = d$11;
-        klmsel$j0$11 = jsel_0$11$q;
-        klmsel$j1$11 = jsel_1$11$q;
-        klmsel$j2$11 = jsel_2$11$q;
+        klmsel$j0$11 = setup$j0$11;
+        klmsel$j1$11 = setup$j1$11;
+        klmsel$j2$11 = setup$j2$11;
         doptrf$11$d0 = klmsel$y0$11;
         doptrf$11$d1 = klmsel$y1$11;
         doptrf$11$d2 = klmsel$y2$11;
-        doptrf$11$c0 = cmat_0$11$q;
-        doptrf$11$c1 = cmat_1$11$q;
-        doptrf$11$c2 = cmat_2$11$q;
-        doptrf$11$c = cvec$11$q;
+        doptrf$11$c0 = setup$c0$11;
+        doptrf$11$c1 = setup$c1$11;
+        doptrf$11$c2 = setup$c2$11;
+        doptrf$11$c = setup$c$11;
+        doptrf$11$round_up = setup$round_up$11;
         doptrf$11$valid_in = valid_in;
-        cmat_0$12$clock = clock;
-        cmat_1$12$clock = clock;
-        cmat_2$12$clock = clock;
-        cvec$12$clock = clock;
-        jsel_0$12$clock = clock;
-        jsel_1$12$clock = clock;
-        jsel_2$12$clock = clock;
         doptrf$12$clock = clock;
-        cmat_0$12$d = cmat_0$12$q;
-        cmat_1$12$d = cmat_1$12$q;
-        cmat_2$12$d = cmat_2$12$q;
-        cvec$12$d = cvec$12$q;
-        jsel_0$12$d = jsel_0$12$q;
-        jsel_1$12$d = jsel_1$12$q;
-        jsel_2$12$d = jsel_2$12$q;
-        if (load_en & (c_load_lane == idx$12)) begin
-            if (c_load_field == 32'h0) begin
-                cmat_0$12$d = load_data;
-            end
-            if (c_load_field == 32'h1) begin
-                cmat_1$12$d = load_data;
-            end
-            if (c_load_field == 32'h2) begin
-                cmat_2$12$d = load_data;
-            end
-            if (c_load_field == 32'h3) begin
-                cvec$12$d = load_data;
-            end
-            if (c_load_field == 32'h4) begin
-                jsel_0$12$d = load_data[(32'h0)+:(5)];
-                jsel_1$12$d = load_data[(32'h5)+:(5)];
-                jsel_2$12$d = load_data[(32'ha)+:(5)];
-            end
-        end
         klmsel$d$12 = d$12;
-        klmsel$j0$12 = jsel_0$12$q;
-        klmsel$j1$12 = jsel_1$12$q;
-        klmsel$j2$12 = jsel_2$12$q;
+        klmsel$j0$12 = setup$j0$12;
+        klmsel$j1$12 = setup$j1$12;
+        klmsel$j2$12 = setup$j2$12;
         doptrf$12$d0 = klmsel$y0$12;
         doptrf$12$d1 = klmsel$y1$12;
         doptrf$12$d2 = klmsel$y2$12;
-        doptrf$12$c0 = cmat_0$12$q;
-        doptrf$12$c1 = cmat_1$12$q;
-        doptrf$12$c2 = cmat_2$12$q;
-        doptrf$12$c = cvec$12$q;
+        doptrf$12$c0 = setup$c0$12;
+        doptrf$12$c1 = setup$c1$12;
+        doptrf$12$c2 = setup$c2$12;
+        doptrf$12$c = setup$c$12;
+        doptrf$12$round_up = setup$round_up$12;
         doptrf$12$valid_in = valid_in;
-        cmat_0$13$clock = clock;
-        cmat_1$13$clock = clock;
-        cmat_2$13$clock = clock;
-        cvec$13$clock = clock;
-        jsel_0$13$clock = clock;
-        jsel_1$13$clock = clock;
-        jsel_2$13$clock = clock;
         doptrf$13$clock = clock;
-        cmat_0$13$d = cmat_0$13$q;
-        cmat_1$13$d = cmat_1$13$q;
-        cmat_2$13$d = cmat_2$13$q;
-        cvec$13$d = cvec$13$q;
-        jsel_0$13$d = jsel_0$13$q;
-        jsel_1$13$d = jsel_1$13$q;
-        jsel_2$13$d = jsel_2$13$q;
-        if (load_en & (c_load_lane == idx$13)) begin
-            if (c_load_field == 32'h0) begin
-                cmat_0$13$d = load_data;
-            end
-            if (c_load_field == 32'h1) begin
-                cmat_1$13$d = load_data;
-            end
-            if (c_load_field == 32'h2) begin
-                cmat_2$13$d = load_data;
-            end
-            if (c_load_field == 32'h3) begin
-                cvec$13$d = load_data;
-            end
-            if (c_load_field == 32'h4) begin
-                jsel_0$13$d = load_data[(32'h0)+:(5)];
-                jsel_1$13$d = load_data[(32'h5)+:(5)];
-                jsel_2$13$d = load_data[(32'ha)+:(5)];
-            end
-        end
         klmsel$d$13 = d$13;
-        klmsel$j0$13 = jsel_0$13$q;
-        klmsel$j1$13 = jsel_1$13$q;
-        klmsel$j2$13 = jsel_2$13$q;
+        klmsel$j0$13 = setup$j0$13;
+        klmsel$j1$13 = setup$j1$13;
+        klmsel$j2$13 = setup$j2$13;
         doptrf$13$d0 = klmsel$y0$13;
         doptrf$13$d1 = klmsel$y1$13;
         doptrf$13$d2 = klmsel$y2$13;
-        doptrf$13$c0 = cmat_0$13$q;
-        doptrf$13$c1 = cmat_1$13$q;
-        doptrf$13$c2 = cmat_2$13$q;
-        doptrf$13$c = cvec$13$q;
+        doptrf$13$c0 = setup$c0$13;
+        doptrf$13$c1 = setup$c1$13;
+        doptrf$13$c2 = setup$c2$13;
+        doptrf$13$c = setup$c$13;
+        doptrf$13$round_up = setup$round_up$13;
         doptrf$13$valid_in = valid_in;
-        cmat_0$14$clock = clock;
-        cmat_1$14$clock = clock;
-        cmat_2$14$clock = clock;
-        cvec$14$clock = clock;
-        jsel_0$14$clock = clock;
-        jsel_1$14$clock = clock;
-        jsel_2$14$clock = clock;
         doptrf$14$clock = clock;
-        cmat_0$14$d = cmat_0$14$q;
-        cmat_1$14$d = cmat_1$14$q;
-        cmat_2$14$d = cmat_2$14$q;
-        cvec$14$d = cvec$14$q;
-        jsel_0$14$d = jsel_0$14$q;
-        jsel_1$14$d = jsel_1$14$q;
-        jsel_2$14$d = jsel_2$14$q;
-        if (load_en & (c_load_lane == idx$14)) begin
-            if (c_load_field == 32'h0) begin
-                cmat_0$14$d = load_data;
-            end
-            if (c_load_field == 32'h1) begin
-                cmat_1$14$d = load_data;
-            end
-            if (c_load_field == 32'h2) begin
-                cmat_2$14$d = load_data;
-            end
-            if (c_load_field == 32'h3) begin
-                cvec$14$d = load_data;
-            end
-            if (c_load_field == 32'h4) begin
-                jsel_0$14$d = load_data[(32'h0)+:(5)];
-                jsel_1$14$d = load_data[(32'h5)+:(5)];
-                jsel_2$14$d = load_data[(32'ha)+:(5)];
-            end
-        end
         klmsel$d$14 = d$14;
-        klmsel$j0$14 = jsel_0$14$q;
-        klmsel$j1$14 = jsel_1$14$q;
-        klmsel$j2$14 = jsel_2$14$q;
+        klmsel$j0$14 = setup$j0$14;
+        klmsel$j1$14 = setup$j1$14;
+        klmsel$j2$14 = setup$j2$14;
         doptrf$14$d0 = klmsel$y0$14;
         doptrf$14$d1 = klmsel$y1$14;
         doptrf$14$d2 = klmsel$y2$14;
-        doptrf$14$c0 = cmat_0$14$q;
-        doptrf$14$c1 = cmat_1$14$q;
-        doptrf$14$c2 = cmat_2$14$q;
-        doptrf$14$c = cvec$14$q;
+        doptrf$14$c0 = setup$c0$14;
+        doptrf$14$c1 = setup$c1$14;
+        doptrf$14$c2 = setup$c2$14;
+        doptrf$14$c = setup$c$14;
+        doptrf$14$round_up = setup$round_up$14;
         doptrf$14$valid_in = valid_in;
-        cmat_0$15$clock = clock;
-        cmat_1$15$clock = clock;
-        cmat_2$15$clock = clock;
-        cvec$15$clock = clock;
-        jsel_0$15$clock = clock;
-        jsel_1$15$clock = clock;
-        jsel_2$15$clock = clock;
         doptrf$15$clock = clock;
-        cmat_0$15$d = cmat_0$15$q;
-        cmat_1$15$d = cmat_1$15$q;
-        cmat_2$15$d = cmat_2$15$q;
-        cvec$15$d = cvec$15$q;
-        jsel_0$15$d = jsel_0$15$q;
-        jsel_1$15$d = jsel_1$15$q;
-        jsel_2$15$d = jsel_2$15$q;
-        if (load_en & (c_load_lane == idx$15)) begin
-            if (c_load_field == 32'h0) begin
-                cmat_0$15$d = load_data;
-            end
-            if (c_load_field == 32'h1) begin
-                cmat_1$15$d = load_data;
-            end
-            if (c_load_field == 32'h2) begin
-                cmat_2$15$d = load_data;
-            end
-            if (c_load_field == 32'h3) begin
-                cvec$15$d = load_data;
-            end
-            if (c_load_field == 32'h4) begin
-                jsel_0$15$d = load_data[(32'h0)+:(5)];
-                jsel_1$15$d = load_data[(32'h5)+:(5)];
-                jsel_2$15$d = load_data[(32'ha)+:(5)];
-            end
-        end
         klmsel$d$15 = d$15;
-        klmsel$j0$15 = jsel_0$15$q;
-        klmsel$j1$15 = jsel_1$15$q;
-        klmsel$j2$15 = jsel_2$15$q;
+        klmsel$j0$15 = setup$j0$15;
+        klmsel$j1$15 = setup$j1$15;
+        klmsel$j2$15 = setup$j2$15;
         doptrf$15$d0 = klmsel$y0$15;
         doptrf$15$d1 = klmsel$y1$15;
         doptrf$15$d2 = klmsel$y2$15;
-        doptrf$15$c0 = cmat_0$15$q;
-        doptrf$15$c1 = cmat_1$15$q;
-        doptrf$15$c2 = cmat_2$15$q;
-        doptrf$15$c = cvec$15$q;
+        doptrf$15$c0 = setup$c0$15;
+        doptrf$15$c1 = setup$c1$15;
+        doptrf$15$c2 = setup$c2$15;
+        doptrf$15$c = setup$c$15;
+        doptrf$15$round_up = setup$round_up$15;
         doptrf$15$valid_in = valid_in;
-        cmat_0$16$clock = clock;
-        cmat_1$16$clock = clock;
-        cmat_2$16$clock = clock;
-        cvec$16$clock = clock;
-        jsel_0$16$clock = clock;
-        jsel_1$16$clock = clock;
-        jsel_2$16$clock = clock;
         doptrf$16$clock = clock;
-        cmat_0$16$d = cmat_0$16$q;
-        cmat_1$16$d = cmat_1$16$q;
-        cmat_2$16$d = cmat_2$16$q;
-        cvec$16$d = cvec$16$q;
-        jsel_0$16$d = jsel_0$16$q;
-        jsel_1$16$d = jsel_1$16$q;
-        jsel_2$16$d = jsel_2$16$q;
-        if (load_en & (c_load_lane == idx$16)) begin
-            if (c_load_field == 32'h0) begin
-                cmat_0$16$d = load_data;
-            end
-            if (c_load_field == 32'h1) begin
-                cmat_1$16$d = load_data;
-            end
-            if (c_load_field == 32'h2) begin
-                cmat_2$16$d = load_data;
-            end
-            if (c_load_field == 32'h3) begin
-                cvec$16$d = load_data;
-            end
-            if (c_load_field == 32'h4) begin
-                jsel_0$16$d = load_data[(32'h0)+:(5)];
-                jsel_1$16$d = load_data[(32'h5)+:(5)];
-                jsel_2$16$d = load_data[(32'ha)+:(5)];
-            end
-        end
         klmsel$d$16 = d$16;
-        klmsel$j0$16 = jsel_0$16$q;
-        klmsel$j1$16 = jsel_1$16$q;
-        klmsel$j2$16 = jsel_2$16$q;
+        klmsel$j0$16 = setup$j0$16;
+        klmsel$j1$16 = setup$j1$16;
+        klmsel$j2$16 = setup$j2$16;
         doptrf$16$d0 = klmsel$y0$16;
         doptrf$16$d1 = klmsel$y1$16;
         doptrf$16$d2 = klmsel$y2$16;
-        doptrf$16$c0 = cmat_0$16$q;
-        doptrf$16$c1 = cmat_1$16$q;
-        doptrf$16$c2 = cmat_2$16$q;
-        doptrf$16$c = cvec$16$q;
+        doptrf$16$c0 = setup$c0$16;
+        doptrf$16$c1 = setup$c1$16;
+        doptrf$16$c2 = setup$c2$16;
+        doptrf$16$c = setup$c$16;
+        doptrf$16$round_up = setup$round_up$16;
         doptrf$16$valid_in = valid_in;
-        cmat_0$17$clock = clock;
-        cmat_1$17$clock = clock;
-        cmat_2$17$clock = clock;
-        cvec$17$clock = clock;
-        jsel_0$17$clock = clock;
-        jsel_1$17$clock = clock;
-        jsel_2$17$clock = clock;
         doptrf$17$clock = clock;
-        cmat_0$17$d = cmat_0$17$q;
-        cmat_1$17$d = cmat_1$17$q;
-        cmat_2$17$d = cmat_2$17$q;
-        cvec$17$d = cvec$17$q;
-        jsel_0$17$d = jsel_0$17$q;
-        jsel_1$17$d = jsel_1$17$q;
-        jsel_2$17$d = jsel_2$17$q;
-        if (load_en & (c_load_lane == idx$17)) begin
-            if (c_load_field == 32'h0) begin
-                cmat_0$17$d = load_data;
-            end
-            if (c_load_field == 32'h1) begin
-                cmat_1$17$d = load_data;
-            end
-            if (c_load_field == 32'h2) begin
-                cmat_2$17$d = load_data;
-            end
-            if (c_load_field == 32'h3) begin
-                cvec$17$d = load_data;
-            end
-            if (c_load_field == 32'h4) begin
-                jsel_0$17$d = load_data[(32'h0)+:(5)];
-                jsel_1$17$d = load_data[(32'h5)+:(5)];
-                jsel_2$17$d = load_data[(32'ha)+:(5)];
-            end
-        end
         klmsel$d$17 = d$17;
-        klmsel$j0$17 = jsel_0$17$q;
-        klmsel$j1$17 = jsel_1$17$q;
-        klmsel$j2$17 = jsel_2$17$q;
+        klmsel$j0$17 = setup$j0$17;
+        klmsel$j1$17 = setup$j1$17;
+        klmsel$j2$17 = setup$j2$17;
         doptrf$17$d0 = klmsel$y0$17;
         doptrf$17$d1 = klmsel$y1$17;
         doptrf$17$d2 = klmsel$y2$17;
-        doptrf$17$c0 = cmat_0$17$q;
-        doptrf$17$c1 = cmat_1$17$q;
-        doptrf$17$c2 = cmat_2$17$q;
-        doptrf$17$c = cvec$17$q;
+        doptrf$17$c0 = setup$c0$17;
+        doptrf$17$c1 = setup$c1$17;
+        doptrf$17$c2 = setup$c2$17;
+        doptrf$17$c = setup$c$17;
+        doptrf$17$round_up = setup$round_up$17;
         doptrf$17$valid_in = valid_in;
-        cmat_0$18$clock = clock;
-        cmat_1$18$clock = clock;
-        cmat_2$18$clock = clock;
-        cvec$18$clock = clock;
-        jsel_0$18$clock = clock;
-        jsel_1$18$clock = clock;
-        jsel_2$18$clock = clock;
         doptrf$18$clock = clock;
-        cmat_0$18$d = cmat_0$18$q;
-        cmat_1$18$d = cmat_1$18$q;
-        cmat_2$18$d = cmat_2$18$q;
-        cvec$18$d = cvec$18$q;
-        jsel_0$18$d = jsel_0$18$q;
-        jsel_1$18$d = jsel_1$18$q;
-        jsel_2$18$d = jsel_2$18$q;
-        if (load_en & (c_load_lane == idx$18)) begin
-            if (c_load_field == 32'h0) begin
-                cmat_0$18$d = load_data;
-            end
-            if (c_load_field == 32'h1) begin
-                cmat_1$18$d = load_data;
-            end
-            if (c_load_field == 32'h2) begin
-                cmat_2$18$d = load_data;
-            end
-            if (c_load_field == 32'h3) begin
-                cvec$18$d = load_data;
-            end
-            if (c_load_field == 32'h4) begin
-                jsel_0$18$d = load_data[(32'h0)+:(5)];
-                jsel_1$18$d = load_data[(32'h5)+:(5)];
-                jsel_2$18$d = load_data[(32'ha)+:(5)];
-            end
-        end
         klmsel$d$18 = d$18;
-        klmsel$j0$18 = jsel_0$18$q;
-        klmsel$j1$18 = jsel_1$18$q;
-        klmsel$j2$18 = jsel_2$18$q;
+        klmsel$j0$18 = setup$j0$18;
+        klmsel$j1$18 = setup$j1$18;
+        klmsel$j2$18 = setup$j2$18;
         doptrf$18$d0 = klmsel$y0$18;
         doptrf$18$d1 = klmsel$y1$18;
         doptrf$18$d2 = klmsel$y2$18;
-        doptrf$18$c0 = cmat_0$18$q;
-        doptrf$18$c1 = cmat_1$18$q;
-        doptrf$18$c2 = cmat_2$18$q;
-        doptrf$18$c = cvec$18$q;
+        doptrf$18$c0 = setup$c0$18;
+        doptrf$18$c1 = setup$c1$18;
+        doptrf$18$c2 = setup$c2$18;
+        doptrf$18$c = setup$c$18;
+        doptrf$18$round_up = setup$round_up$18;
         doptrf$18$valid_in = valid_in;
-        cmat_0$19$clock = clock;
-        cmat_1$19$clock = clock;
-        cmat_2$19$clock = clock;
-        cvec$19$clock = clock;
-        jsel_0$19$clock = clock;
-        jsel_1$19$clock = clock;
-        jsel_2$19$clock = clock;
         doptrf$19$clock = clock;
-        cmat_0$19$d = cmat_0$19$q;
-        cmat_1$19$d = cmat_1$19$q;
-        cmat_2$19$d = cmat_2$19$q;
-        cvec$19$d = cvec$19$q;
-        jsel_0$19$d = jsel_0$19$q;
-        jsel_1$19$d = jsel_1$19$q;
-        jsel_2$19$d = jsel_2$19$q;
-        if (load_en & (c_load_lane == idx$19)) begin
-            if (c_load_field == 32'h0) begin
-                cmat_0$19$d = load_data;
-            end
-            if (c_load_field == 32'h1) begin
-                cmat_1$19$d = load_data;
-            end
-            if (c_load_field == 32'h2) begin
-                cmat_2$19$d = load_data;
-            end
-            if (c_load_field == 32'h3) begin
-                cvec$19$d = load_data;
-            end
-            if (c_load_field == 32'h4) begin
-                jsel_0$19$d = load_data[(32'h0)+:(5)];
-                jsel_1$19$d = load_data[(32'h5)+:(5)];
-                jsel_2$19$d = load_data[(32'ha)+:(5)];
-            end
-        end
         klmsel$d$19 = d$19;
-        klmsel$j0$19 = jsel_0$19$q;
-        klmsel$j1$19 = jsel_1$19$q;
-        klmsel$j2$19 = jsel_2$19$q;
+        klmsel$j0$19 = setup$j0$19;
+        klmsel$j1$19 = setup$j1$19;
+        klmsel$j2$19 = setup$j2$19;
         doptrf$19$d0 = klmsel$y0$19;
         doptrf$19$d1 = klmsel$y1$19;
         doptrf$19$d2 = klmsel$y2$19;
-        doptrf$19$c0 = cmat_0$19$q;
-        doptrf$19$c1 = cmat_1$19$q;
-        doptrf$19$c2 = cmat_2$19$q;
-        doptrf$19$c = cvec$19$q;
+        doptrf$19$c0 = setup$c0$19;
+        doptrf$19$c1 = setup$c1$19;
+        doptrf$19$c2 = setup$c2$19;
+        doptrf$19$c = setup$c$19;
+        doptrf$19$round_up = setup$round_up$19;
         doptrf$19$valid_in = valid_in;
-        cmat_0$20$clock = clock;
-        cmat_1$20$clock = clock;
-        cmat_2$20$clock = clock;
-        cvec$20$clock = clock;
-        jsel_0$20$clock = clock;
-        jsel_1$20$clock = clock;
-        jsel_2$20$clock = clock;
         doptrf$20$clock = clock;
-        cmat_0$20$d = cmat_0$20$q;
-        cmat_1$20$d = cmat_1$20$q;
-        cmat_2$20$d = cmat_2$20$q;
-        cvec$20$d = cvec$20$q;
-        jsel_0$20$d = jsel_0$20$q;
-        jsel_1$20$d = jsel_1$20$q;
-        jsel_2$20$d = jsel_2$20$q;
-        if (load_en & (c_load_lane == idx$20)) begin
-            if (c_load_field == 32'h0) begin
-                cmat_0$20$d = load_data;
-            end
-            if (c_load_field == 32'h1) begin
-                cmat_1$20$d = load_data;
-            end
-            if (c_load_field == 32'h2) begin
-                cmat_2$20$d = load_data;
-            end
-            if (c_load_field == 32'h3) begin
-                cvec$20$d = load_data;
-            end
-            if (c_load_field == 32'h4) begin
-                jsel_0$20$d = load_data[(32'h0)+:(5)];
-                jsel_1$20$d = load_data[(32'h5)+:(5)];
-                jsel_2$20$d = load_data[(32'ha)+:(5)];
-            end
-        end
         klmsel$d$20 = d$20;
-        klmsel$j0$20 = jsel_0$20$q;
-        klmsel$j1$20 = jsel_1$20$q;
-        klmsel$j2$20 = jsel_2$20$q;
+        klmsel$j0$20 = setup$j0$20;
+        klmsel$j1$20 = setup$j1$20;
+        klmsel$j2$20 = setup$j2$20;
         doptrf$20$d0 = klmsel$y0$20;
         doptrf$20$d1 = klmsel$y1$20;
         doptrf$20$d2 = klmsel$y2$20;
-        doptrf$20$c0 = cmat_0$20$q;
-        doptrf$20$c1 = cmat_1$20$q;
-        doptrf$20$c2 = cmat_2$20$q;
-        doptrf$20$c = cvec$20$q;
+        doptrf$20$c0 = setup$c0$20;
+        doptrf$20$c1 = setup$c1$20;
+        doptrf$20$c2 = setup$c2$20;
+        doptrf$20$c = setup$c$20;
+        doptrf$20$round_up = setup$round_up$20;
         doptrf$20$valid_in = valid_in;
-        cmat_0$21$clock = clock;
-        cmat_1$21$clock = clock;
-        cmat_2$21$clock = clock;
-        cvec$21$clock = clock;
-        jsel_0$21$clock = clock;
-        jsel_1$21$clock = clock;
-        jsel_2$21$clock = clock;
         doptrf$21$clock = clock;
-        cmat_0$21$d = cmat_0$21$q;
-        cmat_1$21$d = cmat_1$21$q;
-        cmat_2$21$d = cmat_2$21$q;
-        cvec$21$d = cvec$21$q;
-        jsel_0$21$d = jsel_0$21$q;
-        jsel_1$21$d = jsel_1$21$q;
-        jsel_2$21$d = jsel_2$21$q;
-        if (load_en & (c_load_lane == idx$21)) begin
-            if (c_load_field == 32'h0) begin
-                cmat_0$21$d = load_data;
-            end
-            if (c_load_field == 32'h1) begin
-                cmat_1$21$d = load_data;
-            end
-            if (c_load_field == 32'h2) begin
-                cmat_2$21$d = load_data;
-            end
-            if (c_load_field == 32'h3) begin
-                cvec$21$d = load_data;
-            end
-            if (c_load_field == 32'h4) begin
-                jsel_0$21$d = load_data[(32'h0)+:(5)];
-                jsel_1$21$d = load_data[(32'h5)+:(5)];
-                jsel_2$21$d = load_data[(32'ha)+:(5)];
-            end
-        end
         klmsel$d$21 = d$21;
-        klmsel$j0$21 = jsel_0$21$q;
-        klmsel$j1$21 = jsel_1$21$q;
-        klmsel$j2$21 = jsel_2$21$q;
+        klmsel$j0$21 = setup$j0$21;
+        klmsel$j1$21 = setup$j1$21;
+        klmsel$j2$21 = setup$j2$21;
         doptrf$21$d0 = klmsel$y0$21;
         doptrf$21$d1 = klmsel$y1$21;
         doptrf$21$d2 = klmsel$y2$21;
-        doptrf$21$c0 = cmat_0$21$q;
-        doptrf$21$c1 = cmat_1$21$q;
-        doptrf$21$c2 = cmat_2$21$q;
-        doptrf$21$c = cvec$21$q;
+        doptrf$21$c0 = setup$c0$21;
+        doptrf$21$c1 = setup$c1$21;
+        doptrf$21$c2 = setup$c2$21;
+        doptrf$21$c = setup$c$21;
+        doptrf$21$round_up = setup$round_up$21;
         doptrf$21$valid_in = valid_in;
-        cmat_0$22$clock = clock;
-        cmat_1$22$clock = clock;
-        cmat_2$22$clock = clock;
-        cvec$22$clock = clock;
-        jsel_0$22$clock = clock;
-        jsel_1$22$clock = clock;
-        jsel_2$22$clock = clock;
         doptrf$22$clock = clock;
-        cmat_0$22$d = cmat_0$22$q;
-        cmat_1$22$d = cmat_1$22$q;
-        cmat_2$22$d = cmat_2$22$q;
-        cvec$22$d = cvec$22$q;
-        jsel_0$22$d = jsel_0$22$q;
-        jsel_1$22$d = jsel_1$22$q;
-        jsel_2$22$d = jsel_2$22$q;
-        if (load_en & (c_load_lane == idx$22)) begin
-            if (c_load_field == 32'h0) begin
-                cmat_0$22$d = load_data;
-            end
-            if (c_load_field == 32'h1) begin
-                cmat_1$22$d = load_data;
-            end
-            if (c_load_field == 32'h2) begin
-                cmat_2$22$d = load_data;
-            end
-            if (c_load_field == 32'h3) begin
-                cvec$22$d = load_data;
-            end
-            if (c_load_field == 32'h4) begin
-                jsel_0$22$d = load_data[(32'h0)+:(5)];
-                jsel_1$22$d = load_data[(32'h5)+:(5)];
-                jsel_2$22$d = load_data[(32'ha)+:(5)];
-            end
-        end
         klmsel$d$22 = d$22;
-        klmsel$j0$22 = jsel_0$22$q;
-        klmsel$j1$22 = jsel_1$22$q;
-        klmsel$j2$22 = jsel_2$22$q;
+        klmsel$j0$22 = setup$j0$22;
+        klmsel$j1$22 = setup$j1$22;
+        klmsel$j2$22 = setup$j2$22;
         doptrf$22$d0 = klmsel$y0$22;
         doptrf$22$d1 = klmsel$y1$22;
         doptrf$22$d2 = klmsel$y2$22;
-        doptrf$22$c0 = cmat_0$22$q;
-        doptrf$22$c1 = cmat_1$22$q;
-        doptrf$22$c2 = cmat_2$22$q;
-        doptrf$22$c = cvec$22$q;
+        doptrf$22$c0 = setup$c0$22;
+        doptrf$22$c1 = setup$c1$22;
+        doptrf$22$c2 = setup$c2$22;
+        doptrf$22$c = setup$c$22;
+        doptrf$22$round_up = setup$round_up$22;
         doptrf$22$valid_in = valid_in;
-        cmat_0$23$clock = clock;
-        cmat_1$23$clock = clock;
-        cmat_2$23$clock = clock;
-        cvec$23$clock = clock;
-        jsel_0$23$clock = clock;
-        jsel_1$23$clock = clock;
-        jsel_2$23$clock = clock;
         doptrf$23$clock = clock;
-        cmat_0$23$d = cmat_0$23$q;
-        cmat_1$23$d = cmat_1$23$q;
-        cmat_2$23$d = cmat_2$23$q;
-        cvec$23$d = cvec$23$q;
-        jsel_0$23$d = jsel_0$23$q;
-        jsel_1$23$d = jsel_1$23$q;
-        jsel_2$23$d = jsel_2$23$q;
-        if (load_en & (c_load_lane == idx$23)) begin
-            if (c_load_field == 32'h0) begin
-                cmat_0$23$d = load_data;
-            end
-            if (c_load_field == 32'h1) begin
-                cmat_1$23$d = load_data;
-            end
-            if (c_load_field == 32'h2) begin
-                cmat_2$23$d = load_data;
-            end
-            if (c_load_field == 32'h3) begin
-                cvec$23$d = load_data;
-            end
-            if (c_load_field == 32'h4) begin
-                jsel_0$23$d = load_data[(32'h0)+:(5)];
-                jsel_1$23$d = load_data[(32'h5)+:(5)];
-                jsel_2$23$d = load_data[(32'ha)+:(5)];
-            end
-        end
         klmsel$d$23 = d$23;
-        klmsel$j0$23 = jsel_0$23$q;
-        klmsel$j1$23 = jsel_1$23$q;
-        klmsel$j2$23 = jsel_2$23$q;
+        klmsel$j0$23 = setup$j0$23;
+        klmsel$j1$23 = setup$j1$23;
+        klmsel$j2$23 = setup$j2$23;
         doptrf$23$d0 = klmsel$y0$23;
         doptrf$23$d1 = klmsel$y1$23;
         doptrf$23$d2 = klmsel$y2$23;
-        doptrf$23$c0 = cmat_0$23$q;
-        doptrf$23$c1 = cmat_1$23$q;
-        doptrf$23$c2 = cmat_2$23$q;
-        doptrf$23$c = cvec$23$q;
+        doptrf$23$c0 = setup$c0$23;
+        doptrf$23$c1 = setup$c1$23;
+        doptrf$23$c2 = setup$c2$23;
+        doptrf$23$c = setup$c$23;
+        doptrf$23$round_up = setup$round_up$23;
         doptrf$23$valid_in = valid_in;
         doptrf$0$e = e$12;
         doptrf$1$e = e$13;
@@ -6607,7 +4911,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
 endmodule // top$dop
 
 
-module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
+module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,round_up,s,flag,valid_out);
     
     // Module arguments
     input wire  clock;
@@ -6620,6 +4924,7 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
     input wire  [31:0] c;
     input wire  [31:0] e;
     input wire  valid_in;
+    input wire  round_up;
     output reg  [31:0] s;
     output reg  flag;
     output reg  valid_out;
@@ -6652,24 +4957,42 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
     reg  [31:0] s1_e$d;
     wire  [31:0] s1_e$q;
     reg  s1_e$clock;
+    reg  s1_round$d;
+    wire  s1_round$q;
+    reg  s1_round$clock;
+    reg  r_mul$clock;
+    reg  r_mul$d;
+    wire  r_mul$q;
+    reg  r_sum$clock;
+    reg  r_sum$d;
+    wire  r_sum$q;
+    reg  r_u$clock;
+    reg  r_u$d;
+    wire  r_u$q;
+    reg  r_s$clock;
+    reg  r_s$d;
+    wire  r_s$q;
     reg  mul_0$clock;
     reg  [31:0] mul_0$a;
     reg  [31:0] mul_0$b;
     reg  mul_0$valid_in;
     wire  [31:0] mul_0$y;
     wire  mul_0$valid_out;
+    reg  mul_0$round_up;
     reg  mul_1$clock;
     reg  [31:0] mul_1$a;
     reg  [31:0] mul_1$b;
     reg  mul_1$valid_in;
     wire  [31:0] mul_1$y;
     wire  mul_1$valid_out;
+    reg  mul_1$round_up;
     reg  mul_2$clock;
     reg  [31:0] mul_2$a;
     reg  [31:0] mul_2$b;
     reg  mul_2$valid_in;
     wire  [31:0] mul_2$y;
     wire  mul_2$valid_out;
+    reg  mul_2$round_up;
     reg  [31:0] c_2$d;
     wire  [31:0] c_2$q;
     reg  c_2$clock;
@@ -6689,6 +5012,7 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
     reg  add_0$valid_in;
     wire  [31:0] add_0$y;
     wire  add_0$valid_out;
+    reg  add_0$round_up;
     reg  add_1$clock;
     reg  [31:0] add_1$a;
     reg  [31:0] add_1$b;
@@ -6696,6 +5020,7 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
     reg  add_1$valid_in;
     wire  [31:0] add_1$y;
     wire  add_1$valid_out;
+    reg  add_1$round_up;
     reg  add_2$clock;
     reg  [31:0] add_2$a;
     reg  [31:0] add_2$b;
@@ -6703,6 +5028,7 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
     reg  add_2$valid_in;
     wire  [31:0] add_2$y;
     wire  add_2$valid_out;
+    reg  add_2$round_up;
     reg  add_3$clock;
     reg  [31:0] add_3$a;
     reg  [31:0] add_3$b;
@@ -6710,6 +5036,7 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
     reg  add_3$valid_in;
     wire  [31:0] add_3$y;
     wire  add_3$valid_out;
+    reg  add_3$round_up;
     reg  [31:0] e_2$d;
     wire  [31:0] e_2$q;
     reg  e_2$clock;
@@ -6802,13 +5129,39 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
         .q(s1_e$q),
         .clock(s1_e$clock)
     );
+    top$cnt_dop$pending s1_round(
+        .d(s1_round$d),
+        .q(s1_round$q),
+        .clock(s1_round$clock)
+    );
+    top$dop$doptrf$0$r_mul r_mul(
+        .clock(r_mul$clock),
+        .d(r_mul$d),
+        .q(r_mul$q)
+    );
+    top$dop$doptrf$0$r_mul r_sum(
+        .clock(r_sum$clock),
+        .d(r_sum$d),
+        .q(r_sum$q)
+    );
+    top$dop$doptrf$0$r_mul r_u(
+        .clock(r_u$clock),
+        .d(r_u$d),
+        .q(r_u$q)
+    );
+    top$dop$doptrf$0$r_mul r_s(
+        .clock(r_s$clock),
+        .d(r_s$d),
+        .q(r_s$q)
+    );
     top$dop$doptrf$0$mul_0 mul_0(
         .clock(mul_0$clock),
         .a(mul_0$a),
         .b(mul_0$b),
         .valid_in(mul_0$valid_in),
         .y(mul_0$y),
-        .valid_out(mul_0$valid_out)
+        .valid_out(mul_0$valid_out),
+        .round_up(mul_0$round_up)
     );
     top$dop$doptrf$0$mul_0 mul_1(
         .clock(mul_1$clock),
@@ -6816,7 +5169,8 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
         .b(mul_1$b),
         .valid_in(mul_1$valid_in),
         .y(mul_1$y),
-        .valid_out(mul_1$valid_out)
+        .valid_out(mul_1$valid_out),
+        .round_up(mul_1$round_up)
     );
     top$dop$doptrf$0$mul_0 mul_2(
         .clock(mul_2$clock),
@@ -6824,7 +5178,8 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
         .b(mul_2$b),
         .valid_in(mul_2$valid_in),
         .y(mul_2$y),
-        .valid_out(mul_2$valid_out)
+        .valid_out(mul_2$valid_out),
+        .round_up(mul_2$round_up)
     );
     top$cnt_dop$total c_2(
         .d(c_2$d),
@@ -6853,7 +5208,8 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
         .sub(add_0$sub),
         .valid_in(add_0$valid_in),
         .y(add_0$y),
-        .valid_out(add_0$valid_out)
+        .valid_out(add_0$valid_out),
+        .round_up(add_0$round_up)
     );
     top$dop$doptrf$0$add_0 add_1(
         .clock(add_1$clock),
@@ -6862,7 +5218,8 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
         .sub(add_1$sub),
         .valid_in(add_1$valid_in),
         .y(add_1$y),
-        .valid_out(add_1$valid_out)
+        .valid_out(add_1$valid_out),
+        .round_up(add_1$round_up)
     );
     top$dop$doptrf$0$add_0 add_2(
         .clock(add_2$clock),
@@ -6871,7 +5228,8 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
         .sub(add_2$sub),
         .valid_in(add_2$valid_in),
         .y(add_2$y),
-        .valid_out(add_2$valid_out)
+        .valid_out(add_2$valid_out),
+        .round_up(add_2$round_up)
     );
     top$dop$doptrf$0$add_0 add_3(
         .clock(add_3$clock),
@@ -6880,7 +5238,8 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
         .sub(add_3$sub),
         .valid_in(add_3$valid_in),
         .y(add_3$y),
-        .valid_out(add_3$valid_out)
+        .valid_out(add_3$valid_out),
+        .round_up(add_3$round_up)
     );
     top$cnt_dop$total e_2(
         .d(e_2$d),
@@ -6959,6 +5318,7 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
         s1_c2$clock = clock;
         s1_c$clock = clock;
         s1_e$clock = clock;
+        s1_round$clock = clock;
         s1_valid$d = s1_valid$q;
         s1_d0$d = s1_d0$q;
         s1_d1$d = s1_d1$q;
@@ -6968,6 +5328,11 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
         s1_c2$d = s1_c2$q;
         s1_c$d = s1_c$q;
         s1_e$d = s1_e$q;
+        s1_round$d = s1_round$q;
+        r_mul$clock = clock;
+        r_sum$clock = clock;
+        r_u$clock = clock;
+        r_s$clock = clock;
         c_2$clock = clock;
         c_3$clock = clock;
         c_4$clock = clock;
@@ -7009,6 +5374,13 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
         add_1$clock = clock;
         add_2$clock = clock;
         add_3$clock = clock;
+        mul_0$round_up = r_mul$q;
+        mul_1$round_up = r_mul$q;
+        mul_2$round_up = r_mul$q;
+        add_0$round_up = r_sum$q;
+        add_1$round_up = r_sum$q;
+        add_2$round_up = r_u$q;
+        add_3$round_up = r_s$q;
         s1_valid$d = valid_in;
         s1_d0$d = d0;
         s1_d1$d = d1;
@@ -7018,6 +5390,11 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
         s1_c2$d = c2;
         s1_c$d = c;
         s1_e$d = e;
+        s1_round$d = round_up;
+        r_mul$d = s1_round$q;
+        r_sum$d = r_mul$q;
+        r_u$d = r_sum$q;
+        r_s$d = r_u$q;
         mul_0$a = s1_d0$q;
         mul_0$b = s1_c0$q;
         mul_0$valid_in = s1_valid$q;
@@ -7072,7 +5449,7 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
 endmodule // top$dop$doptrf$0
 
 
-module top$dop$doptrf$0$add_0(clock,a,b,sub,valid_in,y,valid_out);
+module top$dop$doptrf$0$add_0(clock,a,b,sub,valid_in,y,valid_out,round_up);
     
     // Module arguments
     input wire  clock;
@@ -7082,9 +5459,9 @@ module top$dop$doptrf$0$add_0(clock,a,b,sub,valid_in,y,valid_out);
     input wire  valid_in;
     output reg  [31:0] y;
     output reg  valid_out;
+    input wire  round_up;
     
     // Constant declarations
-    localparam  round_up = 1'b1;
     localparam  c_align_cap = 8'h1b;
     localparam  c_exp_ones = 10'b11111111;
     
@@ -7691,7 +6068,7 @@ module top$dop$doptrf$0$add_0$unpack_a(x,sign,exp,sig,is_zero,is_inf,is_nan);
 endmodule // top$dop$doptrf$0$add_0$unpack_a
 
 
-module top$dop$doptrf$0$mul_0(clock,a,b,valid_in,y,valid_out);
+module top$dop$doptrf$0$mul_0(clock,a,b,valid_in,y,valid_out,round_up);
     
     // Module arguments
     input wire  clock;
@@ -7700,9 +6077,9 @@ module top$dop$doptrf$0$mul_0(clock,a,b,valid_in,y,valid_out);
     input wire  valid_in;
     output reg  [31:0] y;
     output reg  valid_out;
+    input wire  round_up;
     
     // Constant declarations
-    localparam  round_up = 1'b1;
     localparam  c_exp_adj = 10'b10000001;
     localparam  c_exp_ofs = 10'b100000000;
     localparam  c_exp_norm_min = 10'b100000001;
@@ -8201,6 +6578,57 @@ module top$dop$doptrf$0$mul_0$sig_mul(a,b,hi,sticky);
         sticky = |prod[21:0];
     end
 endmodule // top$dop$doptrf$0$mul_0$sig_mul
+
+
+module top$dop$doptrf$0$r_mul(clock,d,q);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+    
+    // Stub signals
+    reg  line$0$d;
+    wire  line$0$q;
+    reg  line$0$clock;
+    reg  line$1$d;
+    wire  line$1$q;
+    reg  line$1$clock;
+    reg  line$2$d;
+    wire  line$2$q;
+    reg  line$2$clock;
+    
+    // Sub module instances
+    top$cnt_dop$pending line$0(
+        .d(line$0$d),
+        .q(line$0$q),
+        .clock(line$0$clock)
+    );
+    top$cnt_dop$pending line$1(
+        .d(line$1$d),
+        .q(line$1$q),
+        .clock(line$1$clock)
+    );
+    top$cnt_dop$pending line$2(
+        .d(line$2$d),
+        .q(line$2$q),
+        .clock(line$2$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line$0$clock = clock;
+        line$0$d = d;
+        line$1$clock = clock;
+        line$1$d = d;
+        line$2$clock = clock;
+        line$2$d = d;
+        line$0$d = line$1$q;
+        line$1$d = line$2$q;
+        q = line$0$q;
+    end
+    
+endmodule // top$dop$doptrf$0$r_mul
 
 
 module top$dop$klmsel(d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7,d$8,d$9,d$10,d$11,d$12,d$13,d$14,d$15,d$16,d$17,d$18,d$19,d$20,d$21,d$22,d$23,j0$0,j0$1,j0$2,j0$3,j0$4,j0$5,j0$6,j0$7,j0$8,j0$9,j0$10,j0$11,j0$12,j0$13,j0$14,j0$15,j0$16,j0$17,j0$18,j0$19,j0$20,j0$21,j0$22,j0$23,j1$0,j1$1,j1$2,j1$3,j1$4,j1$5,j1$6,j1$7,j1$8,j1$9,j1$10,j1$11,j1$12,j1$13,j1$14,j1$15,j1$16,j1$17,j1$18,j1$19,j1$20,j1$21,j1$22,j1$23,j2$0,j2$1,j2$2,j2$3,j2$4,j2$5,j2$6,j2$7,j2$8,j2$9,j2$10,j2$11,j2$12,j2$13,j2$14,j2$15,j2$16,j2$17,j2$18,j2$19,j2$20,j2$21,j2$22,j2$23,y0$0,y0$1,y0$2,y0$3,y0$4,y0$5,y0$6,y0$7,y0$8,y0$9,y0$10,y0$11,y0$12,y0$13,y0$14,y0$15,y0$16,y0$17,y0$18,y0$19,y0$20,y0$21,y0$22,y0$23,y1$0,y1$1,y1$2,y1$3,y1$4,y1$5,y1$6,y1$7,y1$8,y1$9,y1$10,y1$11,y1$12,y1$13,y1$14,y1$15,y1$16,y1$17,y1$18,y1$19,y1$20,y1$21,y1$22,y1$23,y2$0,y2$1,y2$2,y2$3,y2$4,y2$5,y2$6,y2$7,y2$8,y2$9,y2$10,y2$11,y2$12,y2$13,y2$14,y2$15,y2$16,y2$17,y2$18,y2$19,y2$20,y2$21,y2$22,y2$23);
@@ -13662,6 +12090,2841 @@ module top$dop$klmsel(d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7,d$8,d$9,d$10,d$11,d$12,d$1
     end
     
 endmodule // top$dop$klmsel
+
+
+module top$dop$setup(clock,load_en,load_addr,load_data,c0$0,c0$1,c0$2,c0$3,c0$4,c0$5,c0$6,c0$7,c0$8,c0$9,c0$10,c0$11,c0$12,c0$13,c0$14,c0$15,c0$16,c0$17,c0$18,c0$19,c0$20,c0$21,c0$22,c0$23,c1$0,c1$1,c1$2,c1$3,c1$4,c1$5,c1$6,c1$7,c1$8,c1$9,c1$10,c1$11,c1$12,c1$13,c1$14,c1$15,c1$16,c1$17,c1$18,c1$19,c1$20,c1$21,c1$22,c1$23,c2$0,c2$1,c2$2,c2$3,c2$4,c2$5,c2$6,c2$7,c2$8,c2$9,c2$10,c2$11,c2$12,c2$13,c2$14,c2$15,c2$16,c2$17,c2$18,c2$19,c2$20,c2$21,c2$22,c2$23,c$0,c$1,c$2,c$3,c$4,c$5,c$6,c$7,c$8,c$9,c$10,c$11,c$12,c$13,c$14,c$15,c$16,c$17,c$18,c$19,c$20,c$21,c$22,c$23,j0$0,j0$1,j0$2,j0$3,j0$4,j0$5,j0$6,j0$7,j0$8,j0$9,j0$10,j0$11,j0$12,j0$13,j0$14,j0$15,j0$16,j0$17,j0$18,j0$19,j0$20,j0$21,j0$22,j0$23,j1$0,j1$1,j1$2,j1$3,j1$4,j1$5,j1$6,j1$7,j1$8,j1$9,j1$10,j1$11,j1$12,j1$13,j1$14,j1$15,j1$16,j1$17,j1$18,j1$19,j1$20,j1$21,j1$22,j1$23,j2$0,j2$1,j2$2,j2$3,j2$4,j2$5,j2$6,j2$7,j2$8,j2$9,j2$10,j2$11,j2$12,j2$13,j2$14,j2$15,j2$16,j2$17,j2$18,j2$19,j2$20,j2$21,j2$22,j2$23,round_up$0,round_up$1,round_up$2,round_up$3,round_up$4,round_up$5,round_up$6,round_up$7,round_up$8,round_up$9,round_up$10,round_up$11,round_up$12,round_up$13,round_up$14,round_up$15,round_up$16,round_up$17,round_up$18,round_up$19,round_up$20,round_up$21,round_up$22,round_up$23);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  load_en;
+    input wire  [7:0] load_addr;
+    input wire  [31:0] load_data;
+    output reg  [31:0] c0$0;
+    output reg  [31:0] c0$1;
+    output reg  [31:0] c0$2;
+    output reg  [31:0] c0$3;
+    output reg  [31:0] c0$4;
+    output reg  [31:0] c0$5;
+    output reg  [31:0] c0$6;
+    output reg  [31:0] c0$7;
+    output reg  [31:0] c0$8;
+    output reg  [31:0] c0$9;
+    output reg  [31:0] c0$10;
+    output reg  [31:0] c0$11;
+    output reg  [31:0] c0$12;
+    output reg  [31:0] c0$13;
+    output reg  [31:0] c0$14;
+    output reg  [31:0] c0$15;
+    output reg  [31:0] c0$16;
+    output reg  [31:0] c0$17;
+    output reg  [31:0] c0$18;
+    output reg  [31:0] c0$19;
+    output reg  [31:0] c0$20;
+    output reg  [31:0] c0$21;
+    output reg  [31:0] c0$22;
+    output reg  [31:0] c0$23;
+    output reg  [31:0] c1$0;
+    output reg  [31:0] c1$1;
+    output reg  [31:0] c1$2;
+    output reg  [31:0] c1$3;
+    output reg  [31:0] c1$4;
+    output reg  [31:0] c1$5;
+    output reg  [31:0] c1$6;
+    output reg  [31:0] c1$7;
+    output reg  [31:0] c1$8;
+    output reg  [31:0] c1$9;
+    output reg  [31:0] c1$10;
+    output reg  [31:0] c1$11;
+    output reg  [31:0] c1$12;
+    output reg  [31:0] c1$13;
+    output reg  [31:0] c1$14;
+    output reg  [31:0] c1$15;
+    output reg  [31:0] c1$16;
+    output reg  [31:0] c1$17;
+    output reg  [31:0] c1$18;
+    output reg  [31:0] c1$19;
+    output reg  [31:0] c1$20;
+    output reg  [31:0] c1$21;
+    output reg  [31:0] c1$22;
+    output reg  [31:0] c1$23;
+    output reg  [31:0] c2$0;
+    output reg  [31:0] c2$1;
+    output reg  [31:0] c2$2;
+    output reg  [31:0] c2$3;
+    output reg  [31:0] c2$4;
+    output reg  [31:0] c2$5;
+    output reg  [31:0] c2$6;
+    output reg  [31:0] c2$7;
+    output reg  [31:0] c2$8;
+    output reg  [31:0] c2$9;
+    output reg  [31:0] c2$10;
+    output reg  [31:0] c2$11;
+    output reg  [31:0] c2$12;
+    output reg  [31:0] c2$13;
+    output reg  [31:0] c2$14;
+    output reg  [31:0] c2$15;
+    output reg  [31:0] c2$16;
+    output reg  [31:0] c2$17;
+    output reg  [31:0] c2$18;
+    output reg  [31:0] c2$19;
+    output reg  [31:0] c2$20;
+    output reg  [31:0] c2$21;
+    output reg  [31:0] c2$22;
+    output reg  [31:0] c2$23;
+    output reg  [31:0] c$0;
+    output reg  [31:0] c$1;
+    output reg  [31:0] c$2;
+    output reg  [31:0] c$3;
+    output reg  [31:0] c$4;
+    output reg  [31:0] c$5;
+    output reg  [31:0] c$6;
+    output reg  [31:0] c$7;
+    output reg  [31:0] c$8;
+    output reg  [31:0] c$9;
+    output reg  [31:0] c$10;
+    output reg  [31:0] c$11;
+    output reg  [31:0] c$12;
+    output reg  [31:0] c$13;
+    output reg  [31:0] c$14;
+    output reg  [31:0] c$15;
+    output reg  [31:0] c$16;
+    output reg  [31:0] c$17;
+    output reg  [31:0] c$18;
+    output reg  [31:0] c$19;
+    output reg  [31:0] c$20;
+    output reg  [31:0] c$21;
+    output reg  [31:0] c$22;
+    output reg  [31:0] c$23;
+    output reg  [4:0] j0$0;
+    output reg  [4:0] j0$1;
+    output reg  [4:0] j0$2;
+    output reg  [4:0] j0$3;
+    output reg  [4:0] j0$4;
+    output reg  [4:0] j0$5;
+    output reg  [4:0] j0$6;
+    output reg  [4:0] j0$7;
+    output reg  [4:0] j0$8;
+    output reg  [4:0] j0$9;
+    output reg  [4:0] j0$10;
+    output reg  [4:0] j0$11;
+    output reg  [4:0] j0$12;
+    output reg  [4:0] j0$13;
+    output reg  [4:0] j0$14;
+    output reg  [4:0] j0$15;
+    output reg  [4:0] j0$16;
+    output reg  [4:0] j0$17;
+    output reg  [4:0] j0$18;
+    output reg  [4:0] j0$19;
+    output reg  [4:0] j0$20;
+    output reg  [4:0] j0$21;
+    output reg  [4:0] j0$22;
+    output reg  [4:0] j0$23;
+    output reg  [4:0] j1$0;
+    output reg  [4:0] j1$1;
+    output reg  [4:0] j1$2;
+    output reg  [4:0] j1$3;
+    output reg  [4:0] j1$4;
+    output reg  [4:0] j1$5;
+    output reg  [4:0] j1$6;
+    output reg  [4:0] j1$7;
+    output reg  [4:0] j1$8;
+    output reg  [4:0] j1$9;
+    output reg  [4:0] j1$10;
+    output reg  [4:0] j1$11;
+    output reg  [4:0] j1$12;
+    output reg  [4:0] j1$13;
+    output reg  [4:0] j1$14;
+    output reg  [4:0] j1$15;
+    output reg  [4:0] j1$16;
+    output reg  [4:0] j1$17;
+    output reg  [4:0] j1$18;
+    output reg  [4:0] j1$19;
+    output reg  [4:0] j1$20;
+    output reg  [4:0] j1$21;
+    output reg  [4:0] j1$22;
+    output reg  [4:0] j1$23;
+    output reg  [4:0] j2$0;
+    output reg  [4:0] j2$1;
+    output reg  [4:0] j2$2;
+    output reg  [4:0] j2$3;
+    output reg  [4:0] j2$4;
+    output reg  [4:0] j2$5;
+    output reg  [4:0] j2$6;
+    output reg  [4:0] j2$7;
+    output reg  [4:0] j2$8;
+    output reg  [4:0] j2$9;
+    output reg  [4:0] j2$10;
+    output reg  [4:0] j2$11;
+    output reg  [4:0] j2$12;
+    output reg  [4:0] j2$13;
+    output reg  [4:0] j2$14;
+    output reg  [4:0] j2$15;
+    output reg  [4:0] j2$16;
+    output reg  [4:0] j2$17;
+    output reg  [4:0] j2$18;
+    output reg  [4:0] j2$19;
+    output reg  [4:0] j2$20;
+    output reg  [4:0] j2$21;
+    output reg  [4:0] j2$22;
+    output reg  [4:0] j2$23;
+    output reg  round_up$0;
+    output reg  round_up$1;
+    output reg  round_up$2;
+    output reg  round_up$3;
+    output reg  round_up$4;
+    output reg  round_up$5;
+    output reg  round_up$6;
+    output reg  round_up$7;
+    output reg  round_up$8;
+    output reg  round_up$9;
+    output reg  round_up$10;
+    output reg  round_up$11;
+    output reg  round_up$12;
+    output reg  round_up$13;
+    output reg  round_up$14;
+    output reg  round_up$15;
+    output reg  round_up$16;
+    output reg  round_up$17;
+    output reg  round_up$18;
+    output reg  round_up$19;
+    output reg  round_up$20;
+    output reg  round_up$21;
+    output reg  round_up$22;
+    output reg  round_up$23;
+    
+    // Constant declarations
+    localparam  idx$0 = 5'b0;
+    localparam  idx$1 = 5'b1;
+    localparam  idx$2 = 5'b10;
+    localparam  idx$3 = 5'b11;
+    localparam  idx$4 = 5'b100;
+    localparam  idx$5 = 5'b101;
+    localparam  idx$6 = 5'b110;
+    localparam  idx$7 = 5'b111;
+    localparam  idx$8 = 5'b1000;
+    localparam  idx$9 = 5'b1001;
+    localparam  idx$10 = 5'b1010;
+    localparam  idx$11 = 5'b1011;
+    localparam  idx$12 = 5'b1100;
+    localparam  idx$13 = 5'b1101;
+    localparam  idx$14 = 5'b1110;
+    localparam  idx$15 = 5'b1111;
+    localparam  idx$16 = 5'b10000;
+    localparam  idx$17 = 5'b10001;
+    localparam  idx$18 = 5'b10010;
+    localparam  idx$19 = 5'b10011;
+    localparam  idx$20 = 5'b10100;
+    localparam  idx$21 = 5'b10101;
+    localparam  idx$22 = 5'b10110;
+    localparam  idx$23 = 5'b10111;
+    
+    // Stub signals
+    reg  [31:0] cmat_0$0$d;
+    wire  [31:0] cmat_0$0$q;
+    reg  cmat_0$0$clock;
+    reg  [31:0] cmat_0$1$d;
+    wire  [31:0] cmat_0$1$q;
+    reg  cmat_0$1$clock;
+    reg  [31:0] cmat_0$2$d;
+    wire  [31:0] cmat_0$2$q;
+    reg  cmat_0$2$clock;
+    reg  [31:0] cmat_0$3$d;
+    wire  [31:0] cmat_0$3$q;
+    reg  cmat_0$3$clock;
+    reg  [31:0] cmat_0$4$d;
+    wire  [31:0] cmat_0$4$q;
+    reg  cmat_0$4$clock;
+    reg  [31:0] cmat_0$5$d;
+    wire  [31:0] cmat_0$5$q;
+    reg  cmat_0$5$clock;
+    reg  [31:0] cmat_0$6$d;
+    wire  [31:0] cmat_0$6$q;
+    reg  cmat_0$6$clock;
+    reg  [31:0] cmat_0$7$d;
+    wire  [31:0] cmat_0$7$q;
+    reg  cmat_0$7$clock;
+    reg  [31:0] cmat_0$8$d;
+    wire  [31:0] cmat_0$8$q;
+    reg  cmat_0$8$clock;
+    reg  [31:0] cmat_0$9$d;
+    wire  [31:0] cmat_0$9$q;
+    reg  cmat_0$9$clock;
+    reg  [31:0] cmat_0$10$d;
+    wire  [31:0] cmat_0$10$q;
+    reg  cmat_0$10$clock;
+    reg  [31:0] cmat_0$11$d;
+    wire  [31:0] cmat_0$11$q;
+    reg  cmat_0$11$clock;
+    reg  [31:0] cmat_0$12$d;
+    wire  [31:0] cmat_0$12$q;
+    reg  cmat_0$12$clock;
+    reg  [31:0] cmat_0$13$d;
+    wire  [31:0] cmat_0$13$q;
+    reg  cmat_0$13$clock;
+    reg  [31:0] cmat_0$14$d;
+    wire  [31:0] cmat_0$14$q;
+    reg  cmat_0$14$clock;
+    reg  [31:0] cmat_0$15$d;
+    wire  [31:0] cmat_0$15$q;
+    reg  cmat_0$15$clock;
+    reg  [31:0] cmat_0$16$d;
+    wire  [31:0] cmat_0$16$q;
+    reg  cmat_0$16$clock;
+    reg  [31:0] cmat_0$17$d;
+    wire  [31:0] cmat_0$17$q;
+    reg  cmat_0$17$clock;
+    reg  [31:0] cmat_0$18$d;
+    wire  [31:0] cmat_0$18$q;
+    reg  cmat_0$18$clock;
+    reg  [31:0] cmat_0$19$d;
+    wire  [31:0] cmat_0$19$q;
+    reg  cmat_0$19$clock;
+    reg  [31:0] cmat_0$20$d;
+    wire  [31:0] cmat_0$20$q;
+    reg  cmat_0$20$clock;
+    reg  [31:0] cmat_0$21$d;
+    wire  [31:0] cmat_0$21$q;
+    reg  cmat_0$21$clock;
+    reg  [31:0] cmat_0$22$d;
+    wire  [31:0] cmat_0$22$q;
+    reg  cmat_0$22$clock;
+    reg  [31:0] cmat_0$23$d;
+    wire  [31:0] cmat_0$23$q;
+    reg  cmat_0$23$clock;
+    reg  [31:0] cmat_1$0$d;
+    wire  [31:0] cmat_1$0$q;
+    reg  cmat_1$0$clock;
+    reg  [31:0] cmat_1$1$d;
+    wire  [31:0] cmat_1$1$q;
+    reg  cmat_1$1$clock;
+    reg  [31:0] cmat_1$2$d;
+    wire  [31:0] cmat_1$2$q;
+    reg  cmat_1$2$clock;
+    reg  [31:0] cmat_1$3$d;
+    wire  [31:0] cmat_1$3$q;
+    reg  cmat_1$3$clock;
+    reg  [31:0] cmat_1$4$d;
+    wire  [31:0] cmat_1$4$q;
+    reg  cmat_1$4$clock;
+    reg  [31:0] cmat_1$5$d;
+    wire  [31:0] cmat_1$5$q;
+    reg  cmat_1$5$clock;
+    reg  [31:0] cmat_1$6$d;
+    wire  [31:0] cmat_1$6$q;
+    reg  cmat_1$6$clock;
+    reg  [31:0] cmat_1$7$d;
+    wire  [31:0] cmat_1$7$q;
+    reg  cmat_1$7$clock;
+    reg  [31:0] cmat_1$8$d;
+    wire  [31:0] cmat_1$8$q;
+    reg  cmat_1$8$clock;
+    reg  [31:0] cmat_1$9$d;
+    wire  [31:0] cmat_1$9$q;
+    reg  cmat_1$9$clock;
+    reg  [31:0] cmat_1$10$d;
+    wire  [31:0] cmat_1$10$q;
+    reg  cmat_1$10$clock;
+    reg  [31:0] cmat_1$11$d;
+    wire  [31:0] cmat_1$11$q;
+    reg  cmat_1$11$clock;
+    reg  [31:0] cmat_1$12$d;
+    wire  [31:0] cmat_1$12$q;
+    reg  cmat_1$12$clock;
+    reg  [31:0] cmat_1$13$d;
+    wire  [31:0] cmat_1$13$q;
+    reg  cmat_1$13$clock;
+    reg  [31:0] cmat_1$14$d;
+    wire  [31:0] cmat_1$14$q;
+    reg  cmat_1$14$clock;
+    reg  [31:0] cmat_1$15$d;
+    wire  [31:0] cmat_1$15$q;
+    reg  cmat_1$15$clock;
+    reg  [31:0] cmat_1$16$d;
+    wire  [31:0] cmat_1$16$q;
+    reg  cmat_1$16$clock;
+    reg  [31:0] cmat_1$17$d;
+    wire  [31:0] cmat_1$17$q;
+    reg  cmat_1$17$clock;
+    reg  [31:0] cmat_1$18$d;
+    wire  [31:0] cmat_1$18$q;
+    reg  cmat_1$18$clock;
+    reg  [31:0] cmat_1$19$d;
+    wire  [31:0] cmat_1$19$q;
+    reg  cmat_1$19$clock;
+    reg  [31:0] cmat_1$20$d;
+    wire  [31:0] cmat_1$20$q;
+    reg  cmat_1$20$clock;
+    reg  [31:0] cmat_1$21$d;
+    wire  [31:0] cmat_1$21$q;
+    reg  cmat_1$21$clock;
+    reg  [31:0] cmat_1$22$d;
+    wire  [31:0] cmat_1$22$q;
+    reg  cmat_1$22$clock;
+    reg  [31:0] cmat_1$23$d;
+    wire  [31:0] cmat_1$23$q;
+    reg  cmat_1$23$clock;
+    reg  [31:0] cmat_2$0$d;
+    wire  [31:0] cmat_2$0$q;
+    reg  cmat_2$0$clock;
+    reg  [31:0] cmat_2$1$d;
+    wire  [31:0] cmat_2$1$q;
+    reg  cmat_2$1$clock;
+    reg  [31:0] cmat_2$2$d;
+    wire  [31:0] cmat_2$2$q;
+    reg  cmat_2$2$clock;
+    reg  [31:0] cmat_2$3$d;
+    wire  [31:0] cmat_2$3$q;
+    reg  cmat_2$3$clock;
+    reg  [31:0] cmat_2$4$d;
+    wire  [31:0] cmat_2$4$q;
+    reg  cmat_2$4$clock;
+    reg  [31:0] cmat_2$5$d;
+    wire  [31:0] cmat_2$5$q;
+    reg  cmat_2$5$clock;
+    reg  [31:0] cmat_2$6$d;
+    wire  [31:0] cmat_2$6$q;
+    reg  cmat_2$6$clock;
+    reg  [31:0] cmat_2$7$d;
+    wire  [31:0] cmat_2$7$q;
+    reg  cmat_2$7$clock;
+    reg  [31:0] cmat_2$8$d;
+    wire  [31:0] cmat_2$8$q;
+    reg  cmat_2$8$clock;
+    reg  [31:0] cmat_2$9$d;
+    wire  [31:0] cmat_2$9$q;
+    reg  cmat_2$9$clock;
+    reg  [31:0] cmat_2$10$d;
+    wire  [31:0] cmat_2$10$q;
+    reg  cmat_2$10$clock;
+    reg  [31:0] cmat_2$11$d;
+    wire  [31:0] cmat_2$11$q;
+    reg  cmat_2$11$clock;
+    reg  [31:0] cmat_2$12$d;
+    wire  [31:0] cmat_2$12$q;
+    reg  cmat_2$12$clock;
+    reg  [31:0] cmat_2$13$d;
+    wire  [31:0] cmat_2$13$q;
+    reg  cmat_2$13$clock;
+    reg  [31:0] cmat_2$14$d;
+    wire  [31:0] cmat_2$14$q;
+    reg  cmat_2$14$clock;
+    reg  [31:0] cmat_2$15$d;
+    wire  [31:0] cmat_2$15$q;
+    reg  cmat_2$15$clock;
+    reg  [31:0] cmat_2$16$d;
+    wire  [31:0] cmat_2$16$q;
+    reg  cmat_2$16$clock;
+    reg  [31:0] cmat_2$17$d;
+    wire  [31:0] cmat_2$17$q;
+    reg  cmat_2$17$clock;
+    reg  [31:0] cmat_2$18$d;
+    wire  [31:0] cmat_2$18$q;
+    reg  cmat_2$18$clock;
+    reg  [31:0] cmat_2$19$d;
+    wire  [31:0] cmat_2$19$q;
+    reg  cmat_2$19$clock;
+    reg  [31:0] cmat_2$20$d;
+    wire  [31:0] cmat_2$20$q;
+    reg  cmat_2$20$clock;
+    reg  [31:0] cmat_2$21$d;
+    wire  [31:0] cmat_2$21$q;
+    reg  cmat_2$21$clock;
+    reg  [31:0] cmat_2$22$d;
+    wire  [31:0] cmat_2$22$q;
+    reg  cmat_2$22$clock;
+    reg  [31:0] cmat_2$23$d;
+    wire  [31:0] cmat_2$23$q;
+    reg  cmat_2$23$clock;
+    reg  [31:0] cvec$0$d;
+    wire  [31:0] cvec$0$q;
+    reg  cvec$0$clock;
+    reg  [31:0] cvec$1$d;
+    wire  [31:0] cvec$1$q;
+    reg  cvec$1$clock;
+    reg  [31:0] cvec$2$d;
+    wire  [31:0] cvec$2$q;
+    reg  cvec$2$clock;
+    reg  [31:0] cvec$3$d;
+    wire  [31:0] cvec$3$q;
+    reg  cvec$3$clock;
+    reg  [31:0] cvec$4$d;
+    wire  [31:0] cvec$4$q;
+    reg  cvec$4$clock;
+    reg  [31:0] cvec$5$d;
+    wire  [31:0] cvec$5$q;
+    reg  cvec$5$clock;
+    reg  [31:0] cvec$6$d;
+    wire  [31:0] cvec$6$q;
+    reg  cvec$6$clock;
+    reg  [31:0] cvec$7$d;
+    wire  [31:0] cvec$7$q;
+    reg  cvec$7$clock;
+    reg  [31:0] cvec$8$d;
+    wire  [31:0] cvec$8$q;
+    reg  cvec$8$clock;
+    reg  [31:0] cvec$9$d;
+    wire  [31:0] cvec$9$q;
+    reg  cvec$9$clock;
+    reg  [31:0] cvec$10$d;
+    wire  [31:0] cvec$10$q;
+    reg  cvec$10$clock;
+    reg  [31:0] cvec$11$d;
+    wire  [31:0] cvec$11$q;
+    reg  cvec$11$clock;
+    reg  [31:0] cvec$12$d;
+    wire  [31:0] cvec$12$q;
+    reg  cvec$12$clock;
+    reg  [31:0] cvec$13$d;
+    wire  [31:0] cvec$13$q;
+    reg  cvec$13$clock;
+    reg  [31:0] cvec$14$d;
+    wire  [31:0] cvec$14$q;
+    reg  cvec$14$clock;
+    reg  [31:0] cvec$15$d;
+    wire  [31:0] cvec$15$q;
+    reg  cvec$15$clock;
+    reg  [31:0] cvec$16$d;
+    wire  [31:0] cvec$16$q;
+    reg  cvec$16$clock;
+    reg  [31:0] cvec$17$d;
+    wire  [31:0] cvec$17$q;
+    reg  cvec$17$clock;
+    reg  [31:0] cvec$18$d;
+    wire  [31:0] cvec$18$q;
+    reg  cvec$18$clock;
+    reg  [31:0] cvec$19$d;
+    wire  [31:0] cvec$19$q;
+    reg  cvec$19$clock;
+    reg  [31:0] cvec$20$d;
+    wire  [31:0] cvec$20$q;
+    reg  cvec$20$clock;
+    reg  [31:0] cvec$21$d;
+    wire  [31:0] cvec$21$q;
+    reg  cvec$21$clock;
+    reg  [31:0] cvec$22$d;
+    wire  [31:0] cvec$22$q;
+    reg  cvec$22$clock;
+    reg  [31:0] cvec$23$d;
+    wire  [31:0] cvec$23$q;
+    reg  cvec$23$clock;
+    reg  [4:0] jsel_0$0$d;
+    wire  [4:0] jsel_0$0$q;
+    reg  jsel_0$0$clock;
+    reg  [4:0] jsel_0$1$d;
+    wire  [4:0] jsel_0$1$q;
+    reg  jsel_0$1$clock;
+    reg  [4:0] jsel_0$2$d;
+    wire  [4:0] jsel_0$2$q;
+    reg  jsel_0$2$clock;
+    reg  [4:0] jsel_0$3$d;
+    wire  [4:0] jsel_0$3$q;
+    reg  jsel_0$3$clock;
+    reg  [4:0] jsel_0$4$d;
+    wire  [4:0] jsel_0$4$q;
+    reg  jsel_0$4$clock;
+    reg  [4:0] jsel_0$5$d;
+    wire  [4:0] jsel_0$5$q;
+    reg  jsel_0$5$clock;
+    reg  [4:0] jsel_0$6$d;
+    wire  [4:0] jsel_0$6$q;
+    reg  jsel_0$6$clock;
+    reg  [4:0] jsel_0$7$d;
+    wire  [4:0] jsel_0$7$q;
+    reg  jsel_0$7$clock;
+    reg  [4:0] jsel_0$8$d;
+    wire  [4:0] jsel_0$8$q;
+    reg  jsel_0$8$clock;
+    reg  [4:0] jsel_0$9$d;
+    wire  [4:0] jsel_0$9$q;
+    reg  jsel_0$9$clock;
+    reg  [4:0] jsel_0$10$d;
+    wire  [4:0] jsel_0$10$q;
+    reg  jsel_0$10$clock;
+    reg  [4:0] jsel_0$11$d;
+    wire  [4:0] jsel_0$11$q;
+    reg  jsel_0$11$clock;
+    reg  [4:0] jsel_0$12$d;
+    wire  [4:0] jsel_0$12$q;
+    reg  jsel_0$12$clock;
+    reg  [4:0] jsel_0$13$d;
+    wire  [4:0] jsel_0$13$q;
+    reg  jsel_0$13$clock;
+    reg  [4:0] jsel_0$14$d;
+    wire  [4:0] jsel_0$14$q;
+    reg  jsel_0$14$clock;
+    reg  [4:0] jsel_0$15$d;
+    wire  [4:0] jsel_0$15$q;
+    reg  jsel_0$15$clock;
+    reg  [4:0] jsel_0$16$d;
+    wire  [4:0] jsel_0$16$q;
+    reg  jsel_0$16$clock;
+    reg  [4:0] jsel_0$17$d;
+    wire  [4:0] jsel_0$17$q;
+    reg  jsel_0$17$clock;
+    reg  [4:0] jsel_0$18$d;
+    wire  [4:0] jsel_0$18$q;
+    reg  jsel_0$18$clock;
+    reg  [4:0] jsel_0$19$d;
+    wire  [4:0] jsel_0$19$q;
+    reg  jsel_0$19$clock;
+    reg  [4:0] jsel_0$20$d;
+    wire  [4:0] jsel_0$20$q;
+    reg  jsel_0$20$clock;
+    reg  [4:0] jsel_0$21$d;
+    wire  [4:0] jsel_0$21$q;
+    reg  jsel_0$21$clock;
+    reg  [4:0] jsel_0$22$d;
+    wire  [4:0] jsel_0$22$q;
+    reg  jsel_0$22$clock;
+    reg  [4:0] jsel_0$23$d;
+    wire  [4:0] jsel_0$23$q;
+    reg  jsel_0$23$clock;
+    reg  [4:0] jsel_1$0$d;
+    wire  [4:0] jsel_1$0$q;
+    reg  jsel_1$0$clock;
+    reg  [4:0] jsel_1$1$d;
+    wire  [4:0] jsel_1$1$q;
+    reg  jsel_1$1$clock;
+    reg  [4:0] jsel_1$2$d;
+    wire  [4:0] jsel_1$2$q;
+    reg  jsel_1$2$clock;
+    reg  [4:0] jsel_1$3$d;
+    wire  [4:0] jsel_1$3$q;
+    reg  jsel_1$3$clock;
+    reg  [4:0] jsel_1$4$d;
+    wire  [4:0] jsel_1$4$q;
+    reg  jsel_1$4$clock;
+    reg  [4:0] jsel_1$5$d;
+    wire  [4:0] jsel_1$5$q;
+    reg  jsel_1$5$clock;
+    reg  [4:0] jsel_1$6$d;
+    wire  [4:0] jsel_1$6$q;
+    reg  jsel_1$6$clock;
+    reg  [4:0] jsel_1$7$d;
+    wire  [4:0] jsel_1$7$q;
+    reg  jsel_1$7$clock;
+    reg  [4:0] jsel_1$8$d;
+    wire  [4:0] jsel_1$8$q;
+    reg  jsel_1$8$clock;
+    reg  [4:0] jsel_1$9$d;
+    wire  [4:0] jsel_1$9$q;
+    reg  jsel_1$9$clock;
+    reg  [4:0] jsel_1$10$d;
+    wire  [4:0] jsel_1$10$q;
+    reg  jsel_1$10$clock;
+    reg  [4:0] jsel_1$11$d;
+    wire  [4:0] jsel_1$11$q;
+    reg  jsel_1$11$clock;
+    reg  [4:0] jsel_1$12$d;
+    wire  [4:0] jsel_1$12$q;
+    reg  jsel_1$12$clock;
+    reg  [4:0] jsel_1$13$d;
+    wire  [4:0] jsel_1$13$q;
+    reg  jsel_1$13$clock;
+    reg  [4:0] jsel_1$14$d;
+    wire  [4:0] jsel_1$14$q;
+    reg  jsel_1$14$clock;
+    reg  [4:0] jsel_1$15$d;
+    wire  [4:0] jsel_1$15$q;
+    reg  jsel_1$15$clock;
+    reg  [4:0] jsel_1$16$d;
+    wire  [4:0] jsel_1$16$q;
+    reg  jsel_1$16$clock;
+    reg  [4:0] jsel_1$17$d;
+    wire  [4:0] jsel_1$17$q;
+    reg  jsel_1$17$clock;
+    reg  [4:0] jsel_1$18$d;
+    wire  [4:0] jsel_1$18$q;
+    reg  jsel_1$18$clock;
+    reg  [4:0] jsel_1$19$d;
+    wire  [4:0] jsel_1$19$q;
+    reg  jsel_1$19$clock;
+    reg  [4:0] jsel_1$20$d;
+    wire  [4:0] jsel_1$20$q;
+    reg  jsel_1$20$clock;
+    reg  [4:0] jsel_1$21$d;
+    wire  [4:0] jsel_1$21$q;
+    reg  jsel_1$21$clock;
+    reg  [4:0] jsel_1$22$d;
+    wire  [4:0] jsel_1$22$q;
+    reg  jsel_1$22$clock;
+    reg  [4:0] jsel_1$23$d;
+    wire  [4:0] jsel_1$23$q;
+    reg  jsel_1$23$clock;
+    reg  [4:0] jsel_2$0$d;
+    wire  [4:0] jsel_2$0$q;
+    reg  jsel_2$0$clock;
+    reg  [4:0] jsel_2$1$d;
+    wire  [4:0] jsel_2$1$q;
+    reg  jsel_2$1$clock;
+    reg  [4:0] jsel_2$2$d;
+    wire  [4:0] jsel_2$2$q;
+    reg  jsel_2$2$clock;
+    reg  [4:0] jsel_2$3$d;
+    wire  [4:0] jsel_2$3$q;
+    reg  jsel_2$3$clock;
+    reg  [4:0] jsel_2$4$d;
+    wire  [4:0] jsel_2$4$q;
+    reg  jsel_2$4$clock;
+    reg  [4:0] jsel_2$5$d;
+    wire  [4:0] jsel_2$5$q;
+    reg  jsel_2$5$clock;
+    reg  [4:0] jsel_2$6$d;
+    wire  [4:0] jsel_2$6$q;
+    reg  jsel_2$6$clock;
+    reg  [4:0] jsel_2$7$d;
+    wire  [4:0] jsel_2$7$q;
+    reg  jsel_2$7$clock;
+    reg  [4:0] jsel_2$8$d;
+    wire  [4:0] jsel_2$8$q;
+    reg  jsel_2$8$clock;
+    reg  [4:0] jsel_2$9$d;
+    wire  [4:0] jsel_2$9$q;
+    reg  jsel_2$9$clock;
+    reg  [4:0] jsel_2$10$d;
+    wire  [4:0] jsel_2$10$q;
+    reg  jsel_2$10$clock;
+    reg  [4:0] jsel_2$11$d;
+    wire  [4:0] jsel_2$11$q;
+    reg  jsel_2$11$clock;
+    reg  [4:0] jsel_2$12$d;
+    wire  [4:0] jsel_2$12$q;
+    reg  jsel_2$12$clock;
+    reg  [4:0] jsel_2$13$d;
+    wire  [4:0] jsel_2$13$q;
+    reg  jsel_2$13$clock;
+    reg  [4:0] jsel_2$14$d;
+    wire  [4:0] jsel_2$14$q;
+    reg  jsel_2$14$clock;
+    reg  [4:0] jsel_2$15$d;
+    wire  [4:0] jsel_2$15$q;
+    reg  jsel_2$15$clock;
+    reg  [4:0] jsel_2$16$d;
+    wire  [4:0] jsel_2$16$q;
+    reg  jsel_2$16$clock;
+    reg  [4:0] jsel_2$17$d;
+    wire  [4:0] jsel_2$17$q;
+    reg  jsel_2$17$clock;
+    reg  [4:0] jsel_2$18$d;
+    wire  [4:0] jsel_2$18$q;
+    reg  jsel_2$18$clock;
+    reg  [4:0] jsel_2$19$d;
+    wire  [4:0] jsel_2$19$q;
+    reg  jsel_2$19$clock;
+    reg  [4:0] jsel_2$20$d;
+    wire  [4:0] jsel_2$20$q;
+    reg  jsel_2$20$clock;
+    reg  [4:0] jsel_2$21$d;
+    wire  [4:0] jsel_2$21$q;
+    reg  jsel_2$21$clock;
+    reg  [4:0] jsel_2$22$d;
+    wire  [4:0] jsel_2$22$q;
+    reg  jsel_2$22$clock;
+    reg  [4:0] jsel_2$23$d;
+    wire  [4:0] jsel_2$23$q;
+    reg  jsel_2$23$clock;
+    reg  rnd$0$d;
+    wire  rnd$0$q;
+    reg  rnd$0$clock;
+    reg  rnd$1$d;
+    wire  rnd$1$q;
+    reg  rnd$1$clock;
+    reg  rnd$2$d;
+    wire  rnd$2$q;
+    reg  rnd$2$clock;
+    reg  rnd$3$d;
+    wire  rnd$3$q;
+    reg  rnd$3$clock;
+    reg  rnd$4$d;
+    wire  rnd$4$q;
+    reg  rnd$4$clock;
+    reg  rnd$5$d;
+    wire  rnd$5$q;
+    reg  rnd$5$clock;
+    reg  rnd$6$d;
+    wire  rnd$6$q;
+    reg  rnd$6$clock;
+    reg  rnd$7$d;
+    wire  rnd$7$q;
+    reg  rnd$7$clock;
+    reg  rnd$8$d;
+    wire  rnd$8$q;
+    reg  rnd$8$clock;
+    reg  rnd$9$d;
+    wire  rnd$9$q;
+    reg  rnd$9$clock;
+    reg  rnd$10$d;
+    wire  rnd$10$q;
+    reg  rnd$10$clock;
+    reg  rnd$11$d;
+    wire  rnd$11$q;
+    reg  rnd$11$clock;
+    reg  rnd$12$d;
+    wire  rnd$12$q;
+    reg  rnd$12$clock;
+    reg  rnd$13$d;
+    wire  rnd$13$q;
+    reg  rnd$13$clock;
+    reg  rnd$14$d;
+    wire  rnd$14$q;
+    reg  rnd$14$clock;
+    reg  rnd$15$d;
+    wire  rnd$15$q;
+    reg  rnd$15$clock;
+    reg  rnd$16$d;
+    wire  rnd$16$q;
+    reg  rnd$16$clock;
+    reg  rnd$17$d;
+    wire  rnd$17$q;
+    reg  rnd$17$clock;
+    reg  rnd$18$d;
+    wire  rnd$18$q;
+    reg  rnd$18$clock;
+    reg  rnd$19$d;
+    wire  rnd$19$q;
+    reg  rnd$19$clock;
+    reg  rnd$20$d;
+    wire  rnd$20$q;
+    reg  rnd$20$clock;
+    reg  rnd$21$d;
+    wire  rnd$21$q;
+    reg  rnd$21$clock;
+    reg  rnd$22$d;
+    wire  rnd$22$q;
+    reg  rnd$22$clock;
+    reg  rnd$23$d;
+    wire  rnd$23$q;
+    reg  rnd$23$clock;
+    
+    // Local signals
+    reg  [4:0] c_lane;
+    reg  [2:0] c_field;
+    
+    // Sub module instances
+    top$cnt_dop$total cmat_0$0(
+        .d(cmat_0$0$d),
+        .q(cmat_0$0$q),
+        .clock(cmat_0$0$clock)
+    );
+    top$cnt_dop$total cmat_0$1(
+        .d(cmat_0$1$d),
+        .q(cmat_0$1$q),
+        .clock(cmat_0$1$clock)
+    );
+    top$cnt_dop$total cmat_0$2(
+        .d(cmat_0$2$d),
+        .q(cmat_0$2$q),
+        .clock(cmat_0$2$clock)
+    );
+    top$cnt_dop$total cmat_0$3(
+        .d(cmat_0$3$d),
+        .q(cmat_0$3$q),
+        .clock(cmat_0$3$clock)
+    );
+    top$cnt_dop$total cmat_0$4(
+        .d(cmat_0$4$d),
+        .q(cmat_0$4$q),
+        .clock(cmat_0$4$clock)
+    );
+    top$cnt_dop$total cmat_0$5(
+        .d(cmat_0$5$d),
+        .q(cmat_0$5$q),
+        .clock(cmat_0$5$clock)
+    );
+    top$cnt_dop$total cmat_0$6(
+        .d(cmat_0$6$d),
+        .q(cmat_0$6$q),
+        .clock(cmat_0$6$clock)
+    );
+    top$cnt_dop$total cmat_0$7(
+        .d(cmat_0$7$d),
+        .q(cmat_0$7$q),
+        .clock(cmat_0$7$clock)
+    );
+    top$cnt_dop$total cmat_0$8(
+        .d(cmat_0$8$d),
+        .q(cmat_0$8$q),
+        .clock(cmat_0$8$clock)
+    );
+    top$cnt_dop$total cmat_0$9(
+        .d(cmat_0$9$d),
+        .q(cmat_0$9$q),
+        .clock(cmat_0$9$clock)
+    );
+    top$cnt_dop$total cmat_0$10(
+        .d(cmat_0$10$d),
+        .q(cmat_0$10$q),
+        .clock(cmat_0$10$clock)
+    );
+    top$cnt_dop$total cmat_0$11(
+        .d(cmat_0$11$d),
+        .q(cmat_0$11$q),
+        .clock(cmat_0$11$clock)
+    );
+    top$cnt_dop$total cmat_0$12(
+        .d(cmat_0$12$d),
+        .q(cmat_0$12$q),
+        .clock(cmat_0$12$clock)
+    );
+    top$cnt_dop$total cmat_0$13(
+        .d(cmat_0$13$d),
+        .q(cmat_0$13$q),
+        .clock(cmat_0$13$clock)
+    );
+    top$cnt_dop$total cmat_0$14(
+        .d(cmat_0$14$d),
+        .q(cmat_0$14$q),
+        .clock(cmat_0$14$clock)
+    );
+    top$cnt_dop$total cmat_0$15(
+        .d(cmat_0$15$d),
+        .q(cmat_0$15$q),
+        .clock(cmat_0$15$clock)
+    );
+    top$cnt_dop$total cmat_0$16(
+        .d(cmat_0$16$d),
+        .q(cmat_0$16$q),
+        .clock(cmat_0$16$clock)
+    );
+    top$cnt_dop$total cmat_0$17(
+        .d(cmat_0$17$d),
+        .q(cmat_0$17$q),
+        .clock(cmat_0$17$clock)
+    );
+    top$cnt_dop$total cmat_0$18(
+        .d(cmat_0$18$d),
+        .q(cmat_0$18$q),
+        .clock(cmat_0$18$clock)
+    );
+    top$cnt_dop$total cmat_0$19(
+        .d(cmat_0$19$d),
+        .q(cmat_0$19$q),
+        .clock(cmat_0$19$clock)
+    );
+    top$cnt_dop$total cmat_0$20(
+        .d(cmat_0$20$d),
+        .q(cmat_0$20$q),
+        .clock(cmat_0$20$clock)
+    );
+    top$cnt_dop$total cmat_0$21(
+        .d(cmat_0$21$d),
+        .q(cmat_0$21$q),
+        .clock(cmat_0$21$clock)
+    );
+    top$cnt_dop$total cmat_0$22(
+        .d(cmat_0$22$d),
+        .q(cmat_0$22$q),
+        .clock(cmat_0$22$clock)
+    );
+    top$cnt_dop$total cmat_0$23(
+        .d(cmat_0$23$d),
+        .q(cmat_0$23$q),
+        .clock(cmat_0$23$clock)
+    );
+    top$cnt_dop$total cmat_1$0(
+        .d(cmat_1$0$d),
+        .q(cmat_1$0$q),
+        .clock(cmat_1$0$clock)
+    );
+    top$cnt_dop$total cmat_1$1(
+        .d(cmat_1$1$d),
+        .q(cmat_1$1$q),
+        .clock(cmat_1$1$clock)
+    );
+    top$cnt_dop$total cmat_1$2(
+        .d(cmat_1$2$d),
+        .q(cmat_1$2$q),
+        .clock(cmat_1$2$clock)
+    );
+    top$cnt_dop$total cmat_1$3(
+        .d(cmat_1$3$d),
+        .q(cmat_1$3$q),
+        .clock(cmat_1$3$clock)
+    );
+    top$cnt_dop$total cmat_1$4(
+        .d(cmat_1$4$d),
+        .q(cmat_1$4$q),
+        .clock(cmat_1$4$clock)
+    );
+    top$cnt_dop$total cmat_1$5(
+        .d(cmat_1$5$d),
+        .q(cmat_1$5$q),
+        .clock(cmat_1$5$clock)
+    );
+    top$cnt_dop$total cmat_1$6(
+        .d(cmat_1$6$d),
+        .q(cmat_1$6$q),
+        .clock(cmat_1$6$clock)
+    );
+    top$cnt_dop$total cmat_1$7(
+        .d(cmat_1$7$d),
+        .q(cmat_1$7$q),
+        .clock(cmat_1$7$clock)
+    );
+    top$cnt_dop$total cmat_1$8(
+        .d(cmat_1$8$d),
+        .q(cmat_1$8$q),
+        .clock(cmat_1$8$clock)
+    );
+    top$cnt_dop$total cmat_1$9(
+        .d(cmat_1$9$d),
+        .q(cmat_1$9$q),
+        .clock(cmat_1$9$clock)
+    );
+    top$cnt_dop$total cmat_1$10(
+        .d(cmat_1$10$d),
+        .q(cmat_1$10$q),
+        .clock(cmat_1$10$clock)
+    );
+    top$cnt_dop$total cmat_1$11(
+        .d(cmat_1$11$d),
+        .q(cmat_1$11$q),
+        .clock(cmat_1$11$clock)
+    );
+    top$cnt_dop$total cmat_1$12(
+        .d(cmat_1$12$d),
+        .q(cmat_1$12$q),
+        .clock(cmat_1$12$clock)
+    );
+    top$cnt_dop$total cmat_1$13(
+        .d(cmat_1$13$d),
+        .q(cmat_1$13$q),
+        .clock(cmat_1$13$clock)
+    );
+    top$cnt_dop$total cmat_1$14(
+        .d(cmat_1$14$d),
+        .q(cmat_1$14$q),
+        .clock(cmat_1$14$clock)
+    );
+    top$cnt_dop$total cmat_1$15(
+        .d(cmat_1$15$d),
+        .q(cmat_1$15$q),
+        .clock(cmat_1$15$clock)
+    );
+    top$cnt_dop$total cmat_1$16(
+        .d(cmat_1$16$d),
+        .q(cmat_1$16$q),
+        .clock(cmat_1$16$clock)
+    );
+    top$cnt_dop$total cmat_1$17(
+        .d(cmat_1$17$d),
+        .q(cmat_1$17$q),
+        .clock(cmat_1$17$clock)
+    );
+    top$cnt_dop$total cmat_1$18(
+        .d(cmat_1$18$d),
+        .q(cmat_1$18$q),
+        .clock(cmat_1$18$clock)
+    );
+    top$cnt_dop$total cmat_1$19(
+        .d(cmat_1$19$d),
+        .q(cmat_1$19$q),
+        .clock(cmat_1$19$clock)
+    );
+    top$cnt_dop$total cmat_1$20(
+        .d(cmat_1$20$d),
+        .q(cmat_1$20$q),
+        .clock(cmat_1$20$clock)
+    );
+    top$cnt_dop$total cmat_1$21(
+        .d(cmat_1$21$d),
+        .q(cmat_1$21$q),
+        .clock(cmat_1$21$clock)
+    );
+    top$cnt_dop$total cmat_1$22(
+        .d(cmat_1$22$d),
+        .q(cmat_1$22$q),
+        .clock(cmat_1$22$clock)
+    );
+    top$cnt_dop$total cmat_1$23(
+        .d(cmat_1$23$d),
+        .q(cmat_1$23$q),
+        .clock(cmat_1$23$clock)
+    );
+    top$cnt_dop$total cmat_2$0(
+        .d(cmat_2$0$d),
+        .q(cmat_2$0$q),
+        .clock(cmat_2$0$clock)
+    );
+    top$cnt_dop$total cmat_2$1(
+        .d(cmat_2$1$d),
+        .q(cmat_2$1$q),
+        .clock(cmat_2$1$clock)
+    );
+    top$cnt_dop$total cmat_2$2(
+        .d(cmat_2$2$d),
+        .q(cmat_2$2$q),
+        .clock(cmat_2$2$clock)
+    );
+    top$cnt_dop$total cmat_2$3(
+        .d(cmat_2$3$d),
+        .q(cmat_2$3$q),
+        .clock(cmat_2$3$clock)
+    );
+    top$cnt_dop$total cmat_2$4(
+        .d(cmat_2$4$d),
+        .q(cmat_2$4$q),
+        .clock(cmat_2$4$clock)
+    );
+    top$cnt_dop$total cmat_2$5(
+        .d(cmat_2$5$d),
+        .q(cmat_2$5$q),
+        .clock(cmat_2$5$clock)
+    );
+    top$cnt_dop$total cmat_2$6(
+        .d(cmat_2$6$d),
+        .q(cmat_2$6$q),
+        .clock(cmat_2$6$clock)
+    );
+    top$cnt_dop$total cmat_2$7(
+        .d(cmat_2$7$d),
+        .q(cmat_2$7$q),
+        .clock(cmat_2$7$clock)
+    );
+    top$cnt_dop$total cmat_2$8(
+        .d(cmat_2$8$d),
+        .q(cmat_2$8$q),
+        .clock(cmat_2$8$clock)
+    );
+    top$cnt_dop$total cmat_2$9(
+        .d(cmat_2$9$d),
+        .q(cmat_2$9$q),
+        .clock(cmat_2$9$clock)
+    );
+    top$cnt_dop$total cmat_2$10(
+        .d(cmat_2$10$d),
+        .q(cmat_2$10$q),
+        .clock(cmat_2$10$clock)
+    );
+    top$cnt_dop$total cmat_2$11(
+        .d(cmat_2$11$d),
+        .q(cmat_2$11$q),
+        .clock(cmat_2$11$clock)
+    );
+    top$cnt_dop$total cmat_2$12(
+        .d(cmat_2$12$d),
+        .q(cmat_2$12$q),
+        .clock(cmat_2$12$clock)
+    );
+    top$cnt_dop$total cmat_2$13(
+        .d(cmat_2$13$d),
+        .q(cmat_2$13$q),
+        .clock(cmat_2$13$clock)
+    );
+    top$cnt_dop$total cmat_2$14(
+        .d(cmat_2$14$d),
+        .q(cmat_2$14$q),
+        .clock(cmat_2$14$clock)
+    );
+    top$cnt_dop$total cmat_2$15(
+        .d(cmat_2$15$d),
+        .q(cmat_2$15$q),
+        .clock(cmat_2$15$clock)
+    );
+    top$cnt_dop$total cmat_2$16(
+        .d(cmat_2$16$d),
+        .q(cmat_2$16$q),
+        .clock(cmat_2$16$clock)
+    );
+    top$cnt_dop$total cmat_2$17(
+        .d(cmat_2$17$d),
+        .q(cmat_2$17$q),
+        .clock(cmat_2$17$clock)
+    );
+    top$cnt_dop$total cmat_2$18(
+        .d(cmat_2$18$d),
+        .q(cmat_2$18$q),
+        .clock(cmat_2$18$clock)
+    );
+    top$cnt_dop$total cmat_2$19(
+        .d(cmat_2$19$d),
+        .q(cmat_2$19$q),
+        .clock(cmat_2$19$clock)
+    );
+    top$cnt_dop$total cmat_2$20(
+        .d(cmat_2$20$d),
+        .q(cmat_2$20$q),
+        .clock(cmat_2$20$clock)
+    );
+    top$cnt_dop$total cmat_2$21(
+        .d(cmat_2$21$d),
+        .q(cmat_2$21$q),
+        .clock(cmat_2$21$clock)
+    );
+    top$cnt_dop$total cmat_2$22(
+        .d(cmat_2$22$d),
+        .q(cmat_2$22$q),
+        .clock(cmat_2$22$clock)
+    );
+    top$cnt_dop$total cmat_2$23(
+        .d(cmat_2$23$d),
+        .q(cmat_2$23$q),
+        .clock(cmat_2$23$clock)
+    );
+    top$cnt_dop$total cvec$0(
+        .d(cvec$0$d),
+        .q(cvec$0$q),
+        .clock(cvec$0$clock)
+    );
+    top$cnt_dop$total cvec$1(
+        .d(cvec$1$d),
+        .q(cvec$1$q),
+        .clock(cvec$1$clock)
+    );
+    top$cnt_dop$total cvec$2(
+        .d(cvec$2$d),
+        .q(cvec$2$q),
+        .clock(cvec$2$clock)
+    );
+    top$cnt_dop$total cvec$3(
+        .d(cvec$3$d),
+        .q(cvec$3$q),
+        .clock(cvec$3$clock)
+    );
+    top$cnt_dop$total cvec$4(
+        .d(cvec$4$d),
+        .q(cvec$4$q),
+        .clock(cvec$4$clock)
+    );
+    top$cnt_dop$total cvec$5(
+        .d(cvec$5$d),
+        .q(cvec$5$q),
+        .clock(cvec$5$clock)
+    );
+    top$cnt_dop$total cvec$6(
+        .d(cvec$6$d),
+        .q(cvec$6$q),
+        .clock(cvec$6$clock)
+    );
+    top$cnt_dop$total cvec$7(
+        .d(cvec$7$d),
+        .q(cvec$7$q),
+        .clock(cvec$7$clock)
+    );
+    top$cnt_dop$total cvec$8(
+        .d(cvec$8$d),
+        .q(cvec$8$q),
+        .clock(cvec$8$clock)
+    );
+    top$cnt_dop$total cvec$9(
+        .d(cvec$9$d),
+        .q(cvec$9$q),
+        .clock(cvec$9$clock)
+    );
+    top$cnt_dop$total cvec$10(
+        .d(cvec$10$d),
+        .q(cvec$10$q),
+        .clock(cvec$10$clock)
+    );
+    top$cnt_dop$total cvec$11(
+        .d(cvec$11$d),
+        .q(cvec$11$q),
+        .clock(cvec$11$clock)
+    );
+    top$cnt_dop$total cvec$12(
+        .d(cvec$12$d),
+        .q(cvec$12$q),
+        .clock(cvec$12$clock)
+    );
+    top$cnt_dop$total cvec$13(
+        .d(cvec$13$d),
+        .q(cvec$13$q),
+        .clock(cvec$13$clock)
+    );
+    top$cnt_dop$total cvec$14(
+        .d(cvec$14$d),
+        .q(cvec$14$q),
+        .clock(cvec$14$clock)
+    );
+    top$cnt_dop$total cvec$15(
+        .d(cvec$15$d),
+        .q(cvec$15$q),
+        .clock(cvec$15$clock)
+    );
+    top$cnt_dop$total cvec$16(
+        .d(cvec$16$d),
+        .q(cvec$16$q),
+        .clock(cvec$16$clock)
+    );
+    top$cnt_dop$total cvec$17(
+        .d(cvec$17$d),
+        .q(cvec$17$q),
+        .clock(cvec$17$clock)
+    );
+    top$cnt_dop$total cvec$18(
+        .d(cvec$18$d),
+        .q(cvec$18$q),
+        .clock(cvec$18$clock)
+    );
+    top$cnt_dop$total cvec$19(
+        .d(cvec$19$d),
+        .q(cvec$19$q),
+        .clock(cvec$19$clock)
+    );
+    top$cnt_dop$total cvec$20(
+        .d(cvec$20$d),
+        .q(cvec$20$q),
+        .clock(cvec$20$clock)
+    );
+    top$cnt_dop$total cvec$21(
+        .d(cvec$21$d),
+        .q(cvec$21$q),
+        .clock(cvec$21$clock)
+    );
+    top$cnt_dop$total cvec$22(
+        .d(cvec$22$d),
+        .q(cvec$22$q),
+        .clock(cvec$22$clock)
+    );
+    top$cnt_dop$total cvec$23(
+        .d(cvec$23$d),
+        .q(cvec$23$q),
+        .clock(cvec$23$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_0$0(
+        .d(jsel_0$0$d),
+        .q(jsel_0$0$q),
+        .clock(jsel_0$0$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_0$1(
+        .d(jsel_0$1$d),
+        .q(jsel_0$1$q),
+        .clock(jsel_0$1$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_0$2(
+        .d(jsel_0$2$d),
+        .q(jsel_0$2$q),
+        .clock(jsel_0$2$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_0$3(
+        .d(jsel_0$3$d),
+        .q(jsel_0$3$q),
+        .clock(jsel_0$3$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_0$4(
+        .d(jsel_0$4$d),
+        .q(jsel_0$4$q),
+        .clock(jsel_0$4$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_0$5(
+        .d(jsel_0$5$d),
+        .q(jsel_0$5$q),
+        .clock(jsel_0$5$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_0$6(
+        .d(jsel_0$6$d),
+        .q(jsel_0$6$q),
+        .clock(jsel_0$6$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_0$7(
+        .d(jsel_0$7$d),
+        .q(jsel_0$7$q),
+        .clock(jsel_0$7$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_0$8(
+        .d(jsel_0$8$d),
+        .q(jsel_0$8$q),
+        .clock(jsel_0$8$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_0$9(
+        .d(jsel_0$9$d),
+        .q(jsel_0$9$q),
+        .clock(jsel_0$9$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_0$10(
+        .d(jsel_0$10$d),
+        .q(jsel_0$10$q),
+        .clock(jsel_0$10$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_0$11(
+        .d(jsel_0$11$d),
+        .q(jsel_0$11$q),
+        .clock(jsel_0$11$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_0$12(
+        .d(jsel_0$12$d),
+        .q(jsel_0$12$q),
+        .clock(jsel_0$12$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_0$13(
+        .d(jsel_0$13$d),
+        .q(jsel_0$13$q),
+        .clock(jsel_0$13$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_0$14(
+        .d(jsel_0$14$d),
+        .q(jsel_0$14$q),
+        .clock(jsel_0$14$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_0$15(
+        .d(jsel_0$15$d),
+        .q(jsel_0$15$q),
+        .clock(jsel_0$15$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_0$16(
+        .d(jsel_0$16$d),
+        .q(jsel_0$16$q),
+        .clock(jsel_0$16$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_0$17(
+        .d(jsel_0$17$d),
+        .q(jsel_0$17$q),
+        .clock(jsel_0$17$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_0$18(
+        .d(jsel_0$18$d),
+        .q(jsel_0$18$q),
+        .clock(jsel_0$18$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_0$19(
+        .d(jsel_0$19$d),
+        .q(jsel_0$19$q),
+        .clock(jsel_0$19$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_0$20(
+        .d(jsel_0$20$d),
+        .q(jsel_0$20$q),
+        .clock(jsel_0$20$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_0$21(
+        .d(jsel_0$21$d),
+        .q(jsel_0$21$q),
+        .clock(jsel_0$21$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_0$22(
+        .d(jsel_0$22$d),
+        .q(jsel_0$22$q),
+        .clock(jsel_0$22$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_0$23(
+        .d(jsel_0$23$d),
+        .q(jsel_0$23$q),
+        .clock(jsel_0$23$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_1$0(
+        .d(jsel_1$0$d),
+        .q(jsel_1$0$q),
+        .clock(jsel_1$0$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_1$1(
+        .d(jsel_1$1$d),
+        .q(jsel_1$1$q),
+        .clock(jsel_1$1$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_1$2(
+        .d(jsel_1$2$d),
+        .q(jsel_1$2$q),
+        .clock(jsel_1$2$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_1$3(
+        .d(jsel_1$3$d),
+        .q(jsel_1$3$q),
+        .clock(jsel_1$3$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_1$4(
+        .d(jsel_1$4$d),
+        .q(jsel_1$4$q),
+        .clock(jsel_1$4$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_1$5(
+        .d(jsel_1$5$d),
+        .q(jsel_1$5$q),
+        .clock(jsel_1$5$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_1$6(
+        .d(jsel_1$6$d),
+        .q(jsel_1$6$q),
+        .clock(jsel_1$6$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_1$7(
+        .d(jsel_1$7$d),
+        .q(jsel_1$7$q),
+        .clock(jsel_1$7$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_1$8(
+        .d(jsel_1$8$d),
+        .q(jsel_1$8$q),
+        .clock(jsel_1$8$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_1$9(
+        .d(jsel_1$9$d),
+        .q(jsel_1$9$q),
+        .clock(jsel_1$9$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_1$10(
+        .d(jsel_1$10$d),
+        .q(jsel_1$10$q),
+        .clock(jsel_1$10$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_1$11(
+        .d(jsel_1$11$d),
+        .q(jsel_1$11$q),
+        .clock(jsel_1$11$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_1$12(
+        .d(jsel_1$12$d),
+        .q(jsel_1$12$q),
+        .clock(jsel_1$12$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_1$13(
+        .d(jsel_1$13$d),
+        .q(jsel_1$13$q),
+        .clock(jsel_1$13$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_1$14(
+        .d(jsel_1$14$d),
+        .q(jsel_1$14$q),
+        .clock(jsel_1$14$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_1$15(
+        .d(jsel_1$15$d),
+        .q(jsel_1$15$q),
+        .clock(jsel_1$15$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_1$16(
+        .d(jsel_1$16$d),
+        .q(jsel_1$16$q),
+        .clock(jsel_1$16$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_1$17(
+        .d(jsel_1$17$d),
+        .q(jsel_1$17$q),
+        .clock(jsel_1$17$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_1$18(
+        .d(jsel_1$18$d),
+        .q(jsel_1$18$q),
+        .clock(jsel_1$18$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_1$19(
+        .d(jsel_1$19$d),
+        .q(jsel_1$19$q),
+        .clock(jsel_1$19$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_1$20(
+        .d(jsel_1$20$d),
+        .q(jsel_1$20$q),
+        .clock(jsel_1$20$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_1$21(
+        .d(jsel_1$21$d),
+        .q(jsel_1$21$q),
+        .clock(jsel_1$21$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_1$22(
+        .d(jsel_1$22$d),
+        .q(jsel_1$22$q),
+        .clock(jsel_1$22$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_1$23(
+        .d(jsel_1$23$d),
+        .q(jsel_1$23$q),
+        .clock(jsel_1$23$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_2$0(
+        .d(jsel_2$0$d),
+        .q(jsel_2$0$q),
+        .clock(jsel_2$0$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_2$1(
+        .d(jsel_2$1$d),
+        .q(jsel_2$1$q),
+        .clock(jsel_2$1$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_2$2(
+        .d(jsel_2$2$d),
+        .q(jsel_2$2$q),
+        .clock(jsel_2$2$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_2$3(
+        .d(jsel_2$3$d),
+        .q(jsel_2$3$q),
+        .clock(jsel_2$3$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_2$4(
+        .d(jsel_2$4$d),
+        .q(jsel_2$4$q),
+        .clock(jsel_2$4$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_2$5(
+        .d(jsel_2$5$d),
+        .q(jsel_2$5$q),
+        .clock(jsel_2$5$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_2$6(
+        .d(jsel_2$6$d),
+        .q(jsel_2$6$q),
+        .clock(jsel_2$6$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_2$7(
+        .d(jsel_2$7$d),
+        .q(jsel_2$7$q),
+        .clock(jsel_2$7$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_2$8(
+        .d(jsel_2$8$d),
+        .q(jsel_2$8$q),
+        .clock(jsel_2$8$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_2$9(
+        .d(jsel_2$9$d),
+        .q(jsel_2$9$q),
+        .clock(jsel_2$9$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_2$10(
+        .d(jsel_2$10$d),
+        .q(jsel_2$10$q),
+        .clock(jsel_2$10$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_2$11(
+        .d(jsel_2$11$d),
+        .q(jsel_2$11$q),
+        .clock(jsel_2$11$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_2$12(
+        .d(jsel_2$12$d),
+        .q(jsel_2$12$q),
+        .clock(jsel_2$12$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_2$13(
+        .d(jsel_2$13$d),
+        .q(jsel_2$13$q),
+        .clock(jsel_2$13$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_2$14(
+        .d(jsel_2$14$d),
+        .q(jsel_2$14$q),
+        .clock(jsel_2$14$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_2$15(
+        .d(jsel_2$15$d),
+        .q(jsel_2$15$q),
+        .clock(jsel_2$15$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_2$16(
+        .d(jsel_2$16$d),
+        .q(jsel_2$16$q),
+        .clock(jsel_2$16$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_2$17(
+        .d(jsel_2$17$d),
+        .q(jsel_2$17$q),
+        .clock(jsel_2$17$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_2$18(
+        .d(jsel_2$18$d),
+        .q(jsel_2$18$q),
+        .clock(jsel_2$18$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_2$19(
+        .d(jsel_2$19$d),
+        .q(jsel_2$19$q),
+        .clock(jsel_2$19$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_2$20(
+        .d(jsel_2$20$d),
+        .q(jsel_2$20$q),
+        .clock(jsel_2$20$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_2$21(
+        .d(jsel_2$21$d),
+        .q(jsel_2$21$q),
+        .clock(jsel_2$21$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_2$22(
+        .d(jsel_2$22$d),
+        .q(jsel_2$22$q),
+        .clock(jsel_2$22$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_2$23(
+        .d(jsel_2$23$d),
+        .q(jsel_2$23$q),
+        .clock(jsel_2$23$clock)
+    );
+    top$cnt_dop$pending rnd$0(
+        .d(rnd$0$d),
+        .q(rnd$0$q),
+        .clock(rnd$0$clock)
+    );
+    top$cnt_dop$pending rnd$1(
+        .d(rnd$1$d),
+        .q(rnd$1$q),
+        .clock(rnd$1$clock)
+    );
+    top$cnt_dop$pending rnd$2(
+        .d(rnd$2$d),
+        .q(rnd$2$q),
+        .clock(rnd$2$clock)
+    );
+    top$cnt_dop$pending rnd$3(
+        .d(rnd$3$d),
+        .q(rnd$3$q),
+        .clock(rnd$3$clock)
+    );
+    top$cnt_dop$pending rnd$4(
+        .d(rnd$4$d),
+        .q(rnd$4$q),
+        .clock(rnd$4$clock)
+    );
+    top$cnt_dop$pending rnd$5(
+        .d(rnd$5$d),
+        .q(rnd$5$q),
+        .clock(rnd$5$clock)
+    );
+    top$cnt_dop$pending rnd$6(
+        .d(rnd$6$d),
+        .q(rnd$6$q),
+        .clock(rnd$6$clock)
+    );
+    top$cnt_dop$pending rnd$7(
+        .d(rnd$7$d),
+        .q(rnd$7$q),
+        .clock(rnd$7$clock)
+    );
+    top$cnt_dop$pending rnd$8(
+        .d(rnd$8$d),
+        .q(rnd$8$q),
+        .clock(rnd$8$clock)
+    );
+    top$cnt_dop$pending rnd$9(
+        .d(rnd$9$d),
+        .q(rnd$9$q),
+        .clock(rnd$9$clock)
+    );
+    top$cnt_dop$pending rnd$10(
+        .d(rnd$10$d),
+        .q(rnd$10$q),
+        .clock(rnd$10$clock)
+    );
+    top$cnt_dop$pending rnd$11(
+        .d(rnd$11$d),
+        .q(rnd$11$q),
+        .clock(rnd$11$clock)
+    );
+    top$cnt_dop$pending rnd$12(
+        .d(rnd$12$d),
+        .q(rnd$12$q),
+        .clock(rnd$12$clock)
+    );
+    top$cnt_dop$pending rnd$13(
+        .d(rnd$13$d),
+        .q(rnd$13$q),
+        .clock(rnd$13$clock)
+    );
+    top$cnt_dop$pending rnd$14(
+        .d(rnd$14$d),
+        .q(rnd$14$q),
+        .clock(rnd$14$clock)
+    );
+    top$cnt_dop$pending rnd$15(
+        .d(rnd$15$d),
+        .q(rnd$15$q),
+        .clock(rnd$15$clock)
+    );
+    top$cnt_dop$pending rnd$16(
+        .d(rnd$16$d),
+        .q(rnd$16$q),
+        .clock(rnd$16$clock)
+    );
+    top$cnt_dop$pending rnd$17(
+        .d(rnd$17$d),
+        .q(rnd$17$q),
+        .clock(rnd$17$clock)
+    );
+    top$cnt_dop$pending rnd$18(
+        .d(rnd$18$d),
+        .q(rnd$18$q),
+        .clock(rnd$18$clock)
+    );
+    top$cnt_dop$pending rnd$19(
+        .d(rnd$19$d),
+        .q(rnd$19$q),
+        .clock(rnd$19$clock)
+    );
+    top$cnt_dop$pending rnd$20(
+        .d(rnd$20$d),
+        .q(rnd$20$q),
+        .clock(rnd$20$clock)
+    );
+    top$cnt_dop$pending rnd$21(
+        .d(rnd$21$d),
+        .q(rnd$21$q),
+        .clock(rnd$21$clock)
+    );
+    top$cnt_dop$pending rnd$22(
+        .d(rnd$22$d),
+        .q(rnd$22$q),
+        .clock(rnd$22$clock)
+    );
+    top$cnt_dop$pending rnd$23(
+        .d(rnd$23$d),
+        .q(rnd$23$q),
+        .clock(rnd$23$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        c_lane = load_addr[(32'h3)+:(5)];
+        c_field = load_addr[(32'h0)+:(3)];
+        cmat_0$0$clock = clock;
+        cmat_1$0$clock = clock;
+        cmat_2$0$clock = clock;
+        cvec$0$clock = clock;
+        jsel_0$0$clock = clock;
+        jsel_1$0$clock = clock;
+        jsel_2$0$clock = clock;
+        rnd$0$clock = clock;
+        cmat_0$0$d = cmat_0$0$q;
+        cmat_1$0$d = cmat_1$0$q;
+        cmat_2$0$d = cmat_2$0$q;
+        cvec$0$d = cvec$0$q;
+        jsel_0$0$d = jsel_0$0$q;
+        jsel_1$0$d = jsel_1$0$q;
+        jsel_2$0$d = jsel_2$0$q;
+        rnd$0$d = rnd$0$q;
+        if (load_en & (c_lane == idx$0)) begin
+            if (c_field == 32'h0) begin
+                cmat_0$0$d = load_data;
+            end
+            if (c_field == 32'h1) begin
+                cmat_1$0$d = load_data;
+            end
+            if (c_field == 32'h2) begin
+                cmat_2$0$d = load_data;
+            end
+            if (c_field == 32'h3) begin
+                cvec$0$d = load_data;
+            end
+            if (c_field == 32'h4) begin
+                jsel_0$0$d = load_data[(32'h0)+:(5)];
+                jsel_1$0$d = load_data[(32'h5)+:(5)];
+                jsel_2$0$d = load_data[(32'ha)+:(5)];
+                rnd$0$d = load_data[32'hf];
+            end
+        end
+        c0$0 = cmat_0$0$q;
+        c1$0 = cmat_1$0$q;
+        c2$0 = cmat_2$0$q;
+        c$0 = cvec$0$q;
+        j0$0 = jsel_0$0$q;
+        j1$0 = jsel_1$0$q;
+        j2$0 = jsel_2$0$q;
+        round_up$0 = rnd$0$q;
+        cmat_0$1$clock = clock;
+        cmat_1$1$clock = clock;
+        cmat_2$1$clock = clock;
+        cvec$1$clock = clock;
+        jsel_0$1$clock = clock;
+        jsel_1$1$clock = clock;
+        jsel_2$1$clock = clock;
+        rnd$1$clock = clock;
+        cmat_0$1$d = cmat_0$1$q;
+        cmat_1$1$d = cmat_1$1$q;
+        cmat_2$1$d = cmat_2$1$q;
+        cvec$1$d = cvec$1$q;
+        jsel_0$1$d = jsel_0$1$q;
+        jsel_1$1$d = jsel_1$1$q;
+        jsel_2$1$d = jsel_2$1$q;
+        rnd$1$d = rnd$1$q;
+        if (load_en & (c_lane == idx$1)) begin
+            if (c_field == 32'h0) begin
+                cmat_0$1$d = load_data;
+            end
+            if (c_field == 32'h1) begin
+                cmat_1$1$d = load_data;
+            end
+            if (c_field == 32'h2) begin
+                cmat_2$1$d = load_data;
+            end
+            if (c_field == 32'h3) begin
+                cvec$1$d = load_data;
+            end
+            if (c_field == 32'h4) begin
+                jsel_0$1$d = load_data[(32'h0)+:(5)];
+                jsel_1$1$d = load_data[(32'h5)+:(5)];
+                jsel_2$1$d = load_data[(32'ha)+:(5)];
+                rnd$1$d = load_data[32'hf];
+            end
+        end
+        c0$1 = cmat_0$1$q;
+        c1$1 = cmat_1$1$q;
+        c2$1 = cmat_2$1$q;
+        c$1 = cvec$1$q;
+        j0$1 = jsel_0$1$q;
+        j1$1 = jsel_1$1$q;
+        j2$1 = jsel_2$1$q;
+        round_up$1 = rnd$1$q;
+        cmat_0$2$clock = clock;
+        cmat_1$2$clock = clock;
+        cmat_2$2$clock = clock;
+        cvec$2$clock = clock;
+        jsel_0$2$clock = clock;
+        jsel_1$2$clock = clock;
+        jsel_2$2$clock = clock;
+        rnd$2$clock = clock;
+        cmat_0$2$d = cmat_0$2$q;
+        cmat_1$2$d = cmat_1$2$q;
+        cmat_2$2$d = cmat_2$2$q;
+        cvec$2$d = cvec$2$q;
+        jsel_0$2$d = jsel_0$2$q;
+        jsel_1$2$d = jsel_1$2$q;
+        jsel_2$2$d = jsel_2$2$q;
+        rnd$2$d = rnd$2$q;
+        if (load_en & (c_lane == idx$2)) begin
+            if (c_field == 32'h0) begin
+                cmat_0$2$d = load_data;
+            end
+            if (c_field == 32'h1) begin
+                cmat_1$2$d = load_data;
+            end
+            if (c_field == 32'h2) begin
+                cmat_2$2$d = load_data;
+            end
+            if (c_field == 32'h3) begin
+                cvec$2$d = load_data;
+            end
+            if (c_field == 32'h4) begin
+                jsel_0$2$d = load_data[(32'h0)+:(5)];
+                jsel_1$2$d = load_data[(32'h5)+:(5)];
+                jsel_2$2$d = load_data[(32'ha)+:(5)];
+                rnd$2$d = load_data[32'hf];
+            end
+        end
+        c0$2 = cmat_0$2$q;
+        c1$2 = cmat_1$2$q;
+        c2$2 = cmat_2$2$q;
+        c$2 = cvec$2$q;
+        j0$2 = jsel_0$2$q;
+        j1$2 = jsel_1$2$q;
+        j2$2 = jsel_2$2$q;
+        round_up$2 = rnd$2$q;
+        cmat_0$3$clock = clock;
+        cmat_1$3$clock = clock;
+        cmat_2$3$clock = clock;
+        cvec$3$clock = clock;
+        jsel_0$3$clock = clock;
+        jsel_1$3$clock = clock;
+        jsel_2$3$clock = clock;
+        rnd$3$clock = clock;
+        cmat_0$3$d = cmat_0$3$q;
+        cmat_1$3$d = cmat_1$3$q;
+        cmat_2$3$d = cmat_2$3$q;
+        cvec$3$d = cvec$3$q;
+        jsel_0$3$d = jsel_0$3$q;
+        jsel_1$3$d = jsel_1$3$q;
+        jsel_2$3$d = jsel_2$3$q;
+        rnd$3$d = rnd$3$q;
+        if (load_en & (c_lane == idx$3)) begin
+            if (c_field == 32'h0) begin
+                cmat_0$3$d = load_data;
+            end
+            if (c_field == 32'h1) begin
+                cmat_1$3$d = load_data;
+            end
+            if (c_field == 32'h2) begin
+                cmat_2$3$d = load_data;
+            end
+            if (c_field == 32'h3) begin
+                cvec$3$d = load_data;
+            end
+            if (c_field == 32'h4) begin
+                jsel_0$3$d = load_data[(32'h0)+:(5)];
+                jsel_1$3$d = load_data[(32'h5)+:(5)];
+                jsel_2$3$d = load_data[(32'ha)+:(5)];
+                rnd$3$d = load_data[32'hf];
+            end
+        end
+        c0$3 = cmat_0$3$q;
+        c1$3 = cmat_1$3$q;
+        c2$3 = cmat_2$3$q;
+        c$3 = cvec$3$q;
+        j0$3 = jsel_0$3$q;
+        j1$3 = jsel_1$3$q;
+        j2$3 = jsel_2$3$q;
+        round_up$3 = rnd$3$q;
+        cmat_0$4$clock = clock;
+        cmat_1$4$clock = clock;
+        cmat_2$4$clock = clock;
+        cvec$4$clock = clock;
+        jsel_0$4$clock = clock;
+        jsel_1$4$clock = clock;
+        jsel_2$4$clock = clock;
+        rnd$4$clock = clock;
+        cmat_0$4$d = cmat_0$4$q;
+        cmat_1$4$d = cmat_1$4$q;
+        cmat_2$4$d = cmat_2$4$q;
+        cvec$4$d = cvec$4$q;
+        jsel_0$4$d = jsel_0$4$q;
+        jsel_1$4$d = jsel_1$4$q;
+        jsel_2$4$d = jsel_2$4$q;
+        rnd$4$d = rnd$4$q;
+        if (load_en & (c_lane == idx$4)) begin
+            if (c_field == 32'h0) begin
+                cmat_0$4$d = load_data;
+            end
+            if (c_field == 32'h1) begin
+                cmat_1$4$d = load_data;
+            end
+            if (c_field == 32'h2) begin
+                cmat_2$4$d = load_data;
+            end
+            if (c_field == 32'h3) begin
+                cvec$4$d = load_data;
+            end
+            if (c_field == 32'h4) begin
+                jsel_0$4$d = load_data[(32'h0)+:(5)];
+                jsel_1$4$d = load_data[(32'h5)+:(5)];
+                jsel_2$4$d = load_data[(32'ha)+:(5)];
+                rnd$4$d = load_data[32'hf];
+            end
+        end
+        c0$4 = cmat_0$4$q;
+        c1$4 = cmat_1$4$q;
+        c2$4 = cmat_2$4$q;
+        c$4 = cvec$4$q;
+        j0$4 = jsel_0$4$q;
+        j1$4 = jsel_1$4$q;
+        j2$4 = jsel_2$4$q;
+        round_up$4 = rnd$4$q;
+        cmat_0$5$clock = clock;
+        cmat_1$5$clock = clock;
+        cmat_2$5$clock = clock;
+        cvec$5$clock = clock;
+        jsel_0$5$clock = clock;
+        jsel_1$5$clock = clock;
+        jsel_2$5$clock = clock;
+        rnd$5$clock = clock;
+        cmat_0$5$d = cmat_0$5$q;
+        cmat_1$5$d = cmat_1$5$q;
+        cmat_2$5$d = cmat_2$5$q;
+        cvec$5$d = cvec$5$q;
+        jsel_0$5$d = jsel_0$5$q;
+        jsel_1$5$d = jsel_1$5$q;
+        jsel_2$5$d = jsel_2$5$q;
+        rnd$5$d = rnd$5$q;
+        if (load_en & (c_lane == idx$5)) begin
+            if (c_field == 32'h0) begin
+                cmat_0$5$d = load_data;
+            end
+            if (c_field == 32'h1) begin
+                cmat_1$5$d = load_data;
+            end
+            if (c_field == 32'h2) begin
+                cmat_2$5$d = load_data;
+            end
+            if (c_field == 32'h3) begin
+                cvec$5$d = load_data;
+            end
+            if (c_field == 32'h4) begin
+                jsel_0$5$d = load_data[(32'h0)+:(5)];
+                jsel_1$5$d = load_data[(32'h5)+:(5)];
+                jsel_2$5$d = load_data[(32'ha)+:(5)];
+                rnd$5$d = load_data[32'hf];
+            end
+        end
+        c0$5 = cmat_0$5$q;
+        c1$5 = cmat_1$5$q;
+        c2$5 = cmat_2$5$q;
+        c$5 = cvec$5$q;
+        j0$5 = jsel_0$5$q;
+        j1$5 = jsel_1$5$q;
+        j2$5 = jsel_2$5$q;
+        round_up$5 = rnd$5$q;
+        cmat_0$6$clock = clock;
+        cmat_1$6$clock = clock;
+        cmat_2$6$clock = clock;
+        cvec$6$clock = clock;
+        jsel_0$6$clock = clock;
+        jsel_1$6$clock = clock;
+        jsel_2$6$clock = clock;
+        rnd$6$clock = clock;
+        cmat_0$6$d = cmat_0$6$q;
+        cmat_1$6$d = cmat_1$6$q;
+        cmat_2$6$d = cmat_2$6$q;
+        cvec$6$d = cvec$6$q;
+        jsel_0$6$d = jsel_0$6$q;
+        jsel_1$6$d = jsel_1$6$q;
+        jsel_2$6$d = jsel_2$6$q;
+        rnd$6$d = rnd$6$q;
+        if (load_en & (c_lane == idx$6)) begin
+            if (c_field == 32'h0) begin
+                cmat_0$6$d = load_data;
+            end
+            if (c_field == 32'h1) begin
+                cmat_1$6$d = load_data;
+            end
+            if (c_field == 32'h2) begin
+                cmat_2$6$d = load_data;
+            end
+            if (c_field == 32'h3) begin
+                cvec$6$d = load_data;
+            end
+            if (c_field == 32'h4) begin
+                jsel_0$6$d = load_data[(32'h0)+:(5)];
+                jsel_1$6$d = load_data[(32'h5)+:(5)];
+                jsel_2$6$d = load_data[(32'ha)+:(5)];
+                rnd$6$d = load_data[32'hf];
+            end
+        end
+        c0$6 = cmat_0$6$q;
+        c1$6 = cmat_1$6$q;
+        c2$6 = cmat_2$6$q;
+        c$6 = cvec$6$q;
+        j0$6 = jsel_0$6$q;
+        j1$6 = jsel_1$6$q;
+        j2$6 = jsel_2$6$q;
+        round_up$6 = rnd$6$q;
+        cmat_0$7$clock = clock;
+        cmat_1$7$clock = clock;
+        cmat_2$7$clock = clock;
+        cvec$7$clock = clock;
+        jsel_0$7$clock = clock;
+        jsel_1$7$clock = clock;
+        jsel_2$7$clock = clock;
+        rnd$7$clock = clock;
+        cmat_0$7$d = cmat_0$7$q;
+        cmat_1$7$d = cmat_1$7$q;
+        cmat_2$7$d = cmat_2$7$q;
+        cvec$7$d = cvec$7$q;
+        jsel_0$7$d = jsel_0$7$q;
+        jsel_1$7$d = jsel_1$7$q;
+        jsel_2$7$d = jsel_2$7$q;
+        rnd$7$d = rnd$7$q;
+        if (load_en & (c_lane == idx$7)) begin
+            if (c_field == 32'h0) begin
+                cmat_0$7$d = load_data;
+            end
+            if (c_field == 32'h1) begin
+                cmat_1$7$d = load_data;
+            end
+            if (c_field == 32'h2) begin
+                cmat_2$7$d = load_data;
+            end
+            if (c_field == 32'h3) begin
+                cvec$7$d = load_data;
+            end
+            if (c_field == 32'h4) begin
+                jsel_0$7$d = load_data[(32'h0)+:(5)];
+                jsel_1$7$d = load_data[(32'h5)+:(5)];
+                jsel_2$7$d = load_data[(32'ha)+:(5)];
+                rnd$7$d = load_data[32'hf];
+            end
+        end
+        c0$7 = cmat_0$7$q;
+        c1$7 = cmat_1$7$q;
+        c2$7 = cmat_2$7$q;
+        c$7 = cvec$7$q;
+        j0$7 = jsel_0$7$q;
+        j1$7 = jsel_1$7$q;
+        j2$7 = jsel_2$7$q;
+        round_up$7 = rnd$7$q;
+        cmat_0$8$clock = clock;
+        cmat_1$8$clock = clock;
+        cmat_2$8$clock = clock;
+        cvec$8$clock = clock;
+        jsel_0$8$clock = clock;
+        jsel_1$8$clock = clock;
+        jsel_2$8$clock = clock;
+        rnd$8$clock = clock;
+        cmat_0$8$d = cmat_0$8$q;
+        cmat_1$8$d = cmat_1$8$q;
+        cmat_2$8$d = cmat_2$8$q;
+        cvec$8$d = cvec$8$q;
+        jsel_0$8$d = jsel_0$8$q;
+        jsel_1$8$d = jsel_1$8$q;
+        jsel_2$8$d = jsel_2$8$q;
+        rnd$8$d = rnd$8$q;
+        if (load_en & (c_lane == idx$8)) begin
+            if (c_field == 32'h0) begin
+                cmat_0$8$d = load_data;
+            end
+            if (c_field == 32'h1) begin
+                cmat_1$8$d = load_data;
+            end
+            if (c_field == 32'h2) begin
+                cmat_2$8$d = load_data;
+            end
+            if (c_field == 32'h3) begin
+                cvec$8$d = load_data;
+            end
+            if (c_field == 32'h4) begin
+                jsel_0$8$d = load_data[(32'h0)+:(5)];
+                jsel_1$8$d = load_data[(32'h5)+:(5)];
+                jsel_2$8$d = load_data[(32'ha)+:(5)];
+                rnd$8$d = load_data[32'hf];
+            end
+        end
+        c0$8 = cmat_0$8$q;
+        c1$8 = cmat_1$8$q;
+        c2$8 = cmat_2$8$q;
+        c$8 = cvec$8$q;
+        j0$8 = jsel_0$8$q;
+        j1$8 = jsel_1$8$q;
+        j2$8 = jsel_2$8$q;
+        round_up$8 = rnd$8$q;
+        cmat_0$9$clock = clock;
+        cmat_1$9$clock = clock;
+        cmat_2$9$clock = clock;
+        cvec$9$clock = clock;
+        jsel_0$9$clock = clock;
+        jsel_1$9$clock = clock;
+        jsel_2$9$clock = clock;
+        rnd$9$clock = clock;
+        cmat_0$9$d = cmat_0$9$q;
+        cmat_1$9$d = cmat_1$9$q;
+        cmat_2$9$d = cmat_2$9$q;
+        cvec$9$d = cvec$9$q;
+        jsel_0$9$d = jsel_0$9$q;
+        jsel_1$9$d = jsel_1$9$q;
+        jsel_2$9$d = jsel_2$9$q;
+        rnd$9$d = rnd$9$q;
+        if (load_en & (c_lane == idx$9)) begin
+            if (c_field == 32'h0) begin
+                cmat_0$9$d = load_data;
+            end
+            if (c_field == 32'h1) begin
+                cmat_1$9$d = load_data;
+            end
+            if (c_field == 32'h2) begin
+                cmat_2$9$d = load_data;
+            end
+            if (c_field == 32'h3) begin
+                cvec$9$d = load_data;
+            end
+            if (c_field == 32'h4) begin
+                jsel_0$9$d = load_data[(32'h0)+:(5)];
+                jsel_1$9$d = load_data[(32'h5)+:(5)];
+                jsel_2$9$d = load_data[(32'ha)+:(5)];
+                rnd$9$d = load_data[32'hf];
+            end
+        end
+        c0$9 = cmat_0$9$q;
+        c1$9 = cmat_1$9$q;
+        c2$9 = cmat_2$9$q;
+        c$9 = cvec$9$q;
+        j0$9 = jsel_0$9$q;
+        j1$9 = jsel_1$9$q;
+        j2$9 = jsel_2$9$q;
+        round_up$9 = rnd$9$q;
+        cmat_0$10$clock = clock;
+        cmat_1$10$clock = clock;
+        cmat_2$10$clock = clock;
+        cvec$10$clock = clock;
+        jsel_0$10$clock = clock;
+        jsel_1$10$clock = clock;
+        jsel_2$10$clock = clock;
+        rnd$10$clock = clock;
+        cmat_0$10$d = cmat_0$10$q;
+        cmat_1$10$d = cmat_1$10$q;
+        cmat_2$10$d = cmat_2$10$q;
+        cvec$10$d = cvec$10$q;
+        jsel_0$10$d = jsel_0$10$q;
+        jsel_1$10$d = jsel_1$10$q;
+        jsel_2$10$d = jsel_2$10$q;
+        rnd$10$d = rnd$10$q;
+        if (load_en & (c_lane == idx$10)) begin
+            if (c_field == 32'h0) begin
+                cmat_0$10$d = load_data;
+            end
+            if (c_field == 32'h1) begin
+                cmat_1$10$d = load_data;
+            end
+            if (c_field == 32'h2) begin
+                cmat_2$10$d = load_data;
+            end
+            if (c_field == 32'h3) begin
+                cvec$10$d = load_data;
+            end
+            if (c_field == 32'h4) begin
+                jsel_0$10$d = load_data[(32'h0)+:(5)];
+                jsel_1$10$d = load_data[(32'h5)+:(5)];
+                jsel_2$10$d = load_data[(32'ha)+:(5)];
+                rnd$10$d = load_data[32'hf];
+            end
+        end
+        c0$10 = cmat_0$10$q;
+        c1$10 = cmat_1$10$q;
+        c2$10 = cmat_2$10$q;
+        c$10 = cvec$10$q;
+        j0$10 = jsel_0$10$q;
+        j1$10 = jsel_1$10$q;
+        j2$10 = jsel_2$10$q;
+        round_up$10 = rnd$10$q;
+        cmat_0$11$clock = clock;
+        cmat_1$11$clock = clock;
+        cmat_2$11$clock = clock;
+        cvec$11$clock = clock;
+        jsel_0$11$clock = clock;
+        jsel_1$11$clock = clock;
+        jsel_2$11$clock = clock;
+        rnd$11$clock = clock;
+        cmat_0$11$d = cmat_0$11$q;
+        cmat_1$11$d = cmat_1$11$q;
+        cmat_2$11$d = cmat_2$11$q;
+        cvec$11$d = cvec$11$q;
+        jsel_0$11$d = jsel_0$11$q;
+        jsel_1$11$d = jsel_1$11$q;
+        jsel_2$11$d = jsel_2$11$q;
+        rnd$11$d = rnd$11$q;
+        if (load_en & (c_lane == idx$11)) begin
+            if (c_field == 32'h0) begin
+                cmat_0$11$d = load_data;
+            end
+            if (c_field == 32'h1) begin
+                cmat_1$11$d = load_data;
+            end
+            if (c_field == 32'h2) begin
+                cmat_2$11$d = load_data;
+            end
+            if (c_field == 32'h3) begin
+                cvec$11$d = load_data;
+            end
+            if (c_field == 32'h4) begin
+                jsel_0$11$d = load_data[(32'h0)+:(5)];
+                jsel_1$11$d = load_data[(32'h5)+:(5)];
+                jsel_2$11$d = load_data[(32'ha)+:(5)];
+                rnd$11$d = load_data[32'hf];
+            end
+        end
+        c0$11 = cmat_0$11$q;
+        c1$11 = cmat_1$11$q;
+        c2$11 = cmat_2$11$q;
+        c$11 = cvec$11$q;
+        j0$11 = jsel_0$11$q;
+        j1$11 = jsel_1$11$q;
+        j2$11 = jsel_2$11$q;
+        round_up$11 = rnd$11$q;
+        cmat_0$12$clock = clock;
+        cmat_1$12$clock = clock;
+        cmat_2$12$clock = clock;
+        cvec$12$clock = clock;
+        jsel_0$12$clock = clock;
+        jsel_1$12$clock = clock;
+        jsel_2$12$clock = clock;
+        rnd$12$clock = clock;
+        cmat_0$12$d = cmat_0$12$q;
+        cmat_1$12$d = cmat_1$12$q;
+        cmat_2$12$d = cmat_2$12$q;
+        cvec$12$d = cvec$12$q;
+        jsel_0$12$d = jsel_0$12$q;
+        jsel_1$12$d = jsel_1$12$q;
+        jsel_2$12$d = jsel_2$12$q;
+        rnd$12$d = rnd$12$q;
+        if (load_en & (c_lane == idx$12)) begin
+            if (c_field == 32'h0) begin
+                cmat_0$12$d = load_data;
+            end
+            if (c_field == 32'h1) begin
+                cmat_1$12$d = load_data;
+            end
+            if (c_field == 32'h2) begin
+                cmat_2$12$d = load_data;
+            end
+            if (c_field == 32'h3) begin
+                cvec$12$d = load_data;
+            end
+            if (c_field == 32'h4) begin
+                jsel_0$12$d = load_data[(32'h0)+:(5)];
+                jsel_1$12$d = load_data[(32'h5)+:(5)];
+                jsel_2$12$d = load_data[(32'ha)+:(5)];
+                rnd$12$d = load_data[32'hf];
+            end
+        end
+        c0$12 = cmat_0$12$q;
+        c1$12 = cmat_1$12$q;
+        c2$12 = cmat_2$12$q;
+        c$12 = cvec$12$q;
+        j0$12 = jsel_0$12$q;
+        j1$12 = jsel_1$12$q;
+        j2$12 = jsel_2$12$q;
+        round_up$12 = rnd$12$q;
+        cmat_0$13$clock = clock;
+        cmat_1$13$clock = clock;
+        cmat_2$13$clock = clock;
+        cvec$13$clock = clock;
+        jsel_0$13$clock = clock;
+        jsel_1$13$clock = clock;
+        jsel_2$13$clock = clock;
+        rnd$13$clock = clock;
+        cmat_0$13$d = cmat_0$13$q;
+        cmat_1$13$d = cmat_1$13$q;
+        cmat_2$13$d = cmat_2$13$q;
+        cvec$13$d = cvec$13$q;
+        jsel_0$13$d = jsel_0$13$q;
+        jsel_1$13$d = jsel_1$13$q;
+        jsel_2$13$d = jsel_2$13$q;
+        rnd$13$d = rnd$13$q;
+        if (load_en & (c_lane == idx$13)) begin
+            if (c_field == 32'h0) begin
+                cmat_0$13$d = load_data;
+            end
+            if (c_field == 32'h1) begin
+                cmat_1$13$d = load_data;
+            end
+            if (c_field == 32'h2) begin
+                cmat_2$13$d = load_data;
+            end
+            if (c_field == 32'h3) begin
+                cvec$13$d = load_data;
+            end
+            if (c_field == 32'h4) begin
+                jsel_0$13$d = load_data[(32'h0)+:(5)];
+                jsel_1$13$d = load_data[(32'h5)+:(5)];
+                jsel_2$13$d = load_data[(32'ha)+:(5)];
+                rnd$13$d = load_data[32'hf];
+            end
+        end
+        c0$13 = cmat_0$13$q;
+        c1$13 = cmat_1$13$q;
+        c2$13 = cmat_2$13$q;
+        c$13 = cvec$13$q;
+        j0$13 = jsel_0$13$q;
+        j1$13 = jsel_1$13$q;
+        j2$13 = jsel_2$13$q;
+        round_up$13 = rnd$13$q;
+        cmat_0$14$clock = clock;
+        cmat_1$14$clock = clock;
+        cmat_2$14$clock = clock;
+        cvec$14$clock = clock;
+        jsel_0$14$clock = clock;
+        jsel_1$14$clock = clock;
+        jsel_2$14$clock = clock;
+        rnd$14$clock = clock;
+        cmat_0$14$d = cmat_0$14$q;
+        cmat_1$14$d = cmat_1$14$q;
+        cmat_2$14$d = cmat_2$14$q;
+        cvec$14$d = cvec$14$q;
+        jsel_0$14$d = jsel_0$14$q;
+        jsel_1$14$d = jsel_1$14$q;
+        jsel_2$14$d = jsel_2$14$q;
+        rnd$14$d = rnd$14$q;
+        if (load_en & (c_lane == idx$14)) begin
+            if (c_field == 32'h0) begin
+                cmat_0$14$d = load_data;
+            end
+            if (c_field == 32'h1) begin
+                cmat_1$14$d = load_data;
+            end
+            if (c_field == 32'h2) begin
+                cmat_2$14$d = load_data;
+            end
+            if (c_field == 32'h3) begin
+                cvec$14$d = load_data;
+            end
+            if (c_field == 32'h4) begin
+                jsel_0$14$d = load_data[(32'h0)+:(5)];
+                jsel_1$14$d = load_data[(32'h5)+:(5)];
+                jsel_2$14$d = load_data[(32'ha)+:(5)];
+                rnd$14$d = load_data[32'hf];
+            end
+        end
+        c0$14 = cmat_0$14$q;
+        c1$14 = cmat_1$14$q;
+        c2$14 = cmat_2$14$q;
+        c$14 = cvec$14$q;
+        j0$14 = jsel_0$14$q;
+        j1$14 = jsel_1$14$q;
+        j2$14 = jsel_2$14$q;
+        round_up$14 = rnd$14$q;
+        cmat_0$15$clock = clock;
+        cmat_1$15$clock = clock;
+        cmat_2$15$clock = clock;
+        cvec$15$clock = clock;
+        jsel_0$15$clock = clock;
+        jsel_1$15$clock = clock;
+        jsel_2$15$clock = clock;
+        rnd$15$clock = clock;
+        cmat_0$15$d = cmat_0$15$q;
+        cmat_1$15$d = cmat_1$15$q;
+        cmat_2$15$d = cmat_2$15$q;
+        cvec$15$d = cvec$15$q;
+        jsel_0$15$d = jsel_0$15$q;
+        jsel_1$15$d = jsel_1$15$q;
+        jsel_2$15$d = jsel_2$15$q;
+        rnd$15$d = rnd$15$q;
+        if (load_en & (c_lane == idx$15)) begin
+            if (c_field == 32'h0) begin
+                cmat_0$15$d = load_data;
+            end
+            if (c_field == 32'h1) begin
+                cmat_1$15$d = load_data;
+            end
+            if (c_field == 32'h2) begin
+                cmat_2$15$d = load_data;
+            end
+            if (c_field == 32'h3) begin
+                cvec$15$d = load_data;
+            end
+            if (c_field == 32'h4) begin
+                jsel_0$15$d = load_data[(32'h0)+:(5)];
+                jsel_1$15$d = load_data[(32'h5)+:(5)];
+                jsel_2$15$d = load_data[(32'ha)+:(5)];
+                rnd$15$d = load_data[32'hf];
+            end
+        end
+        c0$15 = cmat_0$15$q;
+        c1$15 = cmat_1$15$q;
+        c2$15 = cmat_2$15$q;
+        c$15 = cvec$15$q;
+        j0$15 = jsel_0$15$q;
+        j1$15 = jsel_1$15$q;
+        j2$15 = jsel_2$15$q;
+        round_up$15 = rnd$15$q;
+        cmat_0$16$clock = clock;
+        cmat_1$16$clock = clock;
+        cmat_2$16$clock = clock;
+        cvec$16$clock = clock;
+        jsel_0$16$clock = clock;
+        jsel_1$16$clock = clock;
+        jsel_2$16$clock = clock;
+        rnd$16$clock = clock;
+        cmat_0$16$d = cmat_0$16$q;
+        cmat_1$16$d = cmat_1$16$q;
+        cmat_2$16$d = cmat_2$16$q;
+        cvec$16$d = cvec$16$q;
+        jsel_0$16$d = jsel_0$16$q;
+        jsel_1$16$d = jsel_1$16$q;
+        jsel_2$16$d = jsel_2$16$q;
+        rnd$16$d = rnd$16$q;
+        if (load_en & (c_lane == idx$16)) begin
+            if (c_field == 32'h0) begin
+                cmat_0$16$d = load_data;
+            end
+            if (c_field == 32'h1) begin
+                cmat_1$16$d = load_data;
+            end
+            if (c_field == 32'h2) begin
+                cmat_2$16$d = load_data;
+            end
+            if (c_field == 32'h3) begin
+                cvec$16$d = load_data;
+            end
+            if (c_field == 32'h4) begin
+                jsel_0$16$d = load_data[(32'h0)+:(5)];
+                jsel_1$16$d = load_data[(32'h5)+:(5)];
+                jsel_2$16$d = load_data[(32'ha)+:(5)];
+                rnd$16$d = load_data[32'hf];
+            end
+        end
+        c0$16 = cmat_0$16$q;
+        c1$16 = cmat_1$16$q;
+        c2$16 = cmat_2$16$q;
+        c$16 = cvec$16$q;
+        j0$16 = jsel_0$16$q;
+        j1$16 = jsel_1$16$q;
+        j2$16 = jsel_2$16$q;
+        round_up$16 = rnd$16$q;
+        cmat_0$17$clock = clock;
+        cmat_1$17$clock = clock;
+        cmat_2$17$clock = clock;
+        cvec$17$clock = clock;
+        jsel_0$17$clock = clock;
+        jsel_1$17$clock = clock;
+        jsel_2$17$clock = clock;
+        rnd$17$clock = clock;
+        cmat_0$17$d = cmat_0$17$q;
+        cmat_1$17$d = cmat_1$17$q;
+        cmat_2$17$d = cmat_2$17$q;
+        cvec$17$d = cvec$17$q;
+        jsel_0$17$d = jsel_0$17$q;
+        jsel_1$17$d = jsel_1$17$q;
+        jsel_2$17$d = jsel_2$17$q;
+        rnd$17$d = rnd$17$q;
+        if (load_en & (c_lane == idx$17)) begin
+            if (c_field == 32'h0) begin
+                cmat_0$17$d = load_data;
+            end
+            if (c_field == 32'h1) begin
+                cmat_1$17$d = load_data;
+            end
+            if (c_field == 32'h2) begin
+                cmat_2$17$d = load_data;
+            end
+            if (c_field == 32'h3) begin
+                cvec$17$d = load_data;
+            end
+            if (c_field == 32'h4) begin
+                jsel_0$17$d = load_data[(32'h0)+:(5)];
+                jsel_1$17$d = load_data[(32'h5)+:(5)];
+                jsel_2$17$d = load_data[(32'ha)+:(5)];
+                rnd$17$d = load_data[32'hf];
+            end
+        end
+        c0$17 = cmat_0$17$q;
+        c1$17 = cmat_1$17$q;
+        c2$17 = cmat_2$17$q;
+        c$17 = cvec$17$q;
+        j0$17 = jsel_0$17$q;
+        j1$17 = jsel_1$17$q;
+        j2$17 = jsel_2$17$q;
+        round_up$17 = rnd$17$q;
+        cmat_0$18$clock = clock;
+        cmat_1$18$clock = clock;
+        cmat_2$18$clock = clock;
+        cvec$18$clock = clock;
+        jsel_0$18$clock = clock;
+        jsel_1$18$clock = clock;
+        jsel_2$18$clock = clock;
+        rnd$18$clock = clock;
+        cmat_0$18$d = cmat_0$18$q;
+        cmat_1$18$d = cmat_1$18$q;
+        cmat_2$18$d = cmat_2$18$q;
+        cvec$18$d = cvec$18$q;
+        jsel_0$18$d = jsel_0$18$q;
+        jsel_1$18$d = jsel_1$18$q;
+        jsel_2$18$d = jsel_2$18$q;
+        rnd$18$d = rnd$18$q;
+        if (load_en & (c_lane == idx$18)) begin
+            if (c_field == 32'h0) begin
+                cmat_0$18$d = load_data;
+            end
+            if (c_field == 32'h1) begin
+                cmat_1$18$d = load_data;
+            end
+            if (c_field == 32'h2) begin
+                cmat_2$18$d = load_data;
+            end
+            if (c_field == 32'h3) begin
+                cvec$18$d = load_data;
+            end
+            if (c_field == 32'h4) begin
+                jsel_0$18$d = load_data[(32'h0)+:(5)];
+                jsel_1$18$d = load_data[(32'h5)+:(5)];
+                jsel_2$18$d = load_data[(32'ha)+:(5)];
+                rnd$18$d = load_data[32'hf];
+            end
+        end
+        c0$18 = cmat_0$18$q;
+        c1$18 = cmat_1$18$q;
+        c2$18 = cmat_2$18$q;
+        c$18 = cvec$18$q;
+        j0$18 = jsel_0$18$q;
+        j1$18 = jsel_1$18$q;
+        j2$18 = jsel_2$18$q;
+        round_up$18 = rnd$18$q;
+        cmat_0$19$clock = clock;
+        cmat_1$19$clock = clock;
+        cmat_2$19$clock = clock;
+        cvec$19$clock = clock;
+        jsel_0$19$clock = clock;
+        jsel_1$19$clock = clock;
+        jsel_2$19$clock = clock;
+        rnd$19$clock = clock;
+        cmat_0$19$d = cmat_0$19$q;
+        cmat_1$19$d = cmat_1$19$q;
+        cmat_2$19$d = cmat_2$19$q;
+        cvec$19$d = cvec$19$q;
+        jsel_0$19$d = jsel_0$19$q;
+        jsel_1$19$d = jsel_1$19$q;
+        jsel_2$19$d = jsel_2$19$q;
+        rnd$19$d = rnd$19$q;
+        if (load_en & (c_lane == idx$19)) begin
+            if (c_field == 32'h0) begin
+                cmat_0$19$d = load_data;
+            end
+            if (c_field == 32'h1) begin
+                cmat_1$19$d = load_data;
+            end
+            if (c_field == 32'h2) begin
+                cmat_2$19$d = load_data;
+            end
+            if (c_field == 32'h3) begin
+                cvec$19$d = load_data;
+            end
+            if (c_field == 32'h4) begin
+                jsel_0$19$d = load_data[(32'h0)+:(5)];
+                jsel_1$19$d = load_data[(32'h5)+:(5)];
+                jsel_2$19$d = load_data[(32'ha)+:(5)];
+                rnd$19$d = load_data[32'hf];
+            end
+        end
+        c0$19 = cmat_0$19$q;
+        c1$19 = cmat_1$19$q;
+        c2$19 = cmat_2$19$q;
+        c$19 = cvec$19$q;
+        j0$19 = jsel_0$19$q;
+        j1$19 = jsel_1$19$q;
+        j2$19 = jsel_2$19$q;
+        round_up$19 = rnd$19$q;
+        cmat_0$20$clock = clock;
+        cmat_1$20$clock = clock;
+        cmat_2$20$clock = clock;
+        cvec$20$clock = clock;
+        jsel_0$20$clock = clock;
+        jsel_1$20$clock = clock;
+        jsel_2$20$clock = clock;
+        rnd$20$clock = clock;
+        cmat_0$20$d = cmat_0$20$q;
+        cmat_1$20$d = cmat_1$20$q;
+        cmat_2$20$d = cmat_2$20$q;
+        cvec$20$d = cvec$20$q;
+        jsel_0$20$d = jsel_0$20$q;
+        jsel_1$20$d = jsel_1$20$q;
+        jsel_2$20$d = jsel_2$20$q;
+        rnd$20$d = rnd$20$q;
+        if (load_en & (c_lane == idx$20)) begin
+            if (c_field == 32'h0) begin
+                cmat_0$20$d = load_data;
+            end
+            if (c_field == 32'h1) begin
+                cmat_1$20$d = load_data;
+            end
+            if (c_field == 32'h2) begin
+                cmat_2$20$d = load_data;
+            end
+            if (c_field == 32'h3) begin
+                cvec$20$d = load_data;
+            end
+            if (c_field == 32'h4) begin
+                jsel_0$20$d = load_data[(32'h0)+:(5)];
+                jsel_1$20$d = load_data[(32'h5)+:(5)];
+                jsel_2$20$d = load_data[(32'ha)+:(5)];
+                rnd$20$d = load_data[32'hf];
+            end
+        end
+        c0$20 = cmat_0$20$q;
+        c1$20 = cmat_1$20$q;
+        c2$20 = cmat_2$20$q;
+        c$20 = cvec$20$q;
+        j0$20 = jsel_0$20$q;
+        j1$20 = jsel_1$20$q;
+        j2$20 = jsel_2$20$q;
+        round_up$20 = rnd$20$q;
+        cmat_0$21$clock = clock;
+        cmat_1$21$clock = clock;
+        cmat_2$21$clock = clock;
+        cvec$21$clock = clock;
+        jsel_0$21$clock = clock;
+        jsel_1$21$clock = clock;
+        jsel_2$21$clock = clock;
+        rnd$21$clock = clock;
+        cmat_0$21$d = cmat_0$21$q;
+        cmat_1$21$d = cmat_1$21$q;
+        cmat_2$21$d = cmat_2$21$q;
+        cvec$21$d = cvec$21$q;
+        jsel_0$21$d = jsel_0$21$q;
+        jsel_1$21$d = jsel_1$21$q;
+        jsel_2$21$d = jsel_2$21$q;
+        rnd$21$d = rnd$21$q;
+        if (load_en & (c_lane == idx$21)) begin
+            if (c_field == 32'h0) begin
+                cmat_0$21$d = load_data;
+            end
+            if (c_field == 32'h1) begin
+                cmat_1$21$d = load_data;
+            end
+            if (c_field == 32'h2) begin
+                cmat_2$21$d = load_data;
+            end
+            if (c_field == 32'h3) begin
+                cvec$21$d = load_data;
+            end
+            if (c_field == 32'h4) begin
+                jsel_0$21$d = load_data[(32'h0)+:(5)];
+                jsel_1$21$d = load_data[(32'h5)+:(5)];
+                jsel_2$21$d = load_data[(32'ha)+:(5)];
+                rnd$21$d = load_data[32'hf];
+            end
+        end
+        c0$21 = cmat_0$21$q;
+        c1$21 = cmat_1$21$q;
+        c2$21 = cmat_2$21$q;
+        c$21 = cvec$21$q;
+        j0$21 = jsel_0$21$q;
+        j1$21 = jsel_1$21$q;
+        j2$21 = jsel_2$21$q;
+        round_up$21 = rnd$21$q;
+        cmat_0$22$clock = clock;
+        cmat_1$22$clock = clock;
+        cmat_2$22$clock = clock;
+        cvec$22$clock = clock;
+        jsel_0$22$clock = clock;
+        jsel_1$22$clock = clock;
+        jsel_2$22$clock = clock;
+        rnd$22$clock = clock;
+        cmat_0$22$d = cmat_0$22$q;
+        cmat_1$22$d = cmat_1$22$q;
+        cmat_2$22$d = cmat_2$22$q;
+        cvec$22$d = cvec$22$q;
+        jsel_0$22$d = jsel_0$22$q;
+        jsel_1$22$d = jsel_1$22$q;
+        jsel_2$22$d = jsel_2$22$q;
+        rnd$22$d = rnd$22$q;
+        if (load_en & (c_lane == idx$22)) begin
+            if (c_field == 32'h0) begin
+                cmat_0$22$d = load_data;
+            end
+            if (c_field == 32'h1) begin
+                cmat_1$22$d = load_data;
+            end
+            if (c_field == 32'h2) begin
+                cmat_2$22$d = load_data;
+            end
+            if (c_field == 32'h3) begin
+                cvec$22$d = load_data;
+            end
+            if (c_field == 32'h4) begin
+                jsel_0$22$d = load_data[(32'h0)+:(5)];
+                jsel_1$22$d = load_data[(32'h5)+:(5)];
+                jsel_2$22$d = load_data[(32'ha)+:(5)];
+                rnd$22$d = load_data[32'hf];
+            end
+        end
+        c0$22 = cmat_0$22$q;
+        c1$22 = cmat_1$22$q;
+        c2$22 = cmat_2$22$q;
+        c$22 = cvec$22$q;
+        j0$22 = jsel_0$22$q;
+        j1$22 = jsel_1$22$q;
+        j2$22 = jsel_2$22$q;
+        round_up$22 = rnd$22$q;
+        cmat_0$23$clock = clock;
+        cmat_1$23$clock = clock;
+        cmat_2$23$clock = clock;
+        cvec$23$clock = clock;
+        jsel_0$23$clock = clock;
+        jsel_1$23$clock = clock;
+        jsel_2$23$clock = clock;
+        rnd$23$clock = clock;
+        cmat_0$23$d = cmat_0$23$q;
+        cmat_1$23$d = cmat_1$23$q;
+        cmat_2$23$d = cmat_2$23$q;
+        cvec$23$d = cvec$23$q;
+        jsel_0$23$d = jsel_0$23$q;
+        jsel_1$23$d = jsel_1$23$q;
+        jsel_2$23$d = jsel_2$23$q;
+        rnd$23$d = rnd$23$q;
+        if (load_en & (c_lane == idx$23)) begin
+            if (c_field == 32'h0) begin
+                cmat_0$23$d = load_data;
+            end
+            if (c_field == 32'h1) begin
+                cmat_1$23$d = load_data;
+            end
+            if (c_field == 32'h2) begin
+                cmat_2$23$d = load_data;
+            end
+            if (c_field == 32'h3) begin
+                cvec$23$d = load_data;
+            end
+            if (c_field == 32'h4) begin
+                jsel_0$23$d = load_data[(32'h0)+:(5)];
+                jsel_1$23$d = load_data[(32'h5)+:(5)];
+                jsel_2$23$d = load_data[(32'ha)+:(5)];
+                rnd$23$d = load_data[32'hf];
+            end
+        end
+        c0$23 = cmat_0$23$q;
+        c1$23 = cmat_1$23$q;
+        c2$23 = cmat_2$23$q;
+        c$23 = cvec$23$q;
+        j0$23 = jsel_0$23$q;
+        j1$23 = jsel_1$23$q;
+        j2$23 = jsel_2$23$q;
+        round_up$23 = rnd$23$q;
+    end
+    
+endmodule // top$dop$setup
 
 
 module top$leaf_count(d,q,clock);
@@ -19914,7 +21177,7 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
         .d(c3_2$d),
         .q(c3_2$q)
     );
-    top$dop$doptrf$0$mul_0 am(
+    top$tri_unit$tc_ab$af am(
         .clock(am$clock),
         .a(am$a),
         .b(am$b),
@@ -19922,7 +21185,7 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
         .y(am$y),
         .valid_out(am$valid_out)
     );
-    top$dop$doptrf$0$mul_0 af(
+    top$tri_unit$tc_ab$af af(
         .clock(af$clock),
         .a(af$a),
         .b(af$b),
@@ -19930,7 +21193,7 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
         .y(af$y),
         .valid_out(af$valid_out)
     );
-    top$dop$doptrf$0$add_0 aerr(
+    top$tri_unit$tc_ab$aerr aerr(
         .clock(aerr$clock),
         .a(aerr$a),
         .b(aerr$b),
@@ -19944,7 +21207,7 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
         .d(aerr_wait$d),
         .q(aerr_wait$q)
     );
-    top$dop$doptrf$0$add_0 la$0(
+    top$tri_unit$tc_ab$aerr la$0(
         .clock(la$0$clock),
         .a(la$0$a),
         .b(la$0$b),
@@ -19953,7 +21216,7 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
         .y(la$0$y),
         .valid_out(la$0$valid_out)
     );
-    top$dop$doptrf$0$add_0 la$1(
+    top$tri_unit$tc_ab$aerr la$1(
         .clock(la$1$clock),
         .a(la$1$a),
         .b(la$1$b),
@@ -19962,7 +21225,7 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
         .y(la$1$y),
         .valid_out(la$1$valid_out)
     );
-    top$dop$doptrf$0$add_0 la$2(
+    top$tri_unit$tc_ab$aerr la$2(
         .clock(la$2$clock),
         .a(la$2$a),
         .b(la$2$b),
@@ -19971,7 +21234,7 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
         .y(la$2$y),
         .valid_out(la$2$valid_out)
     );
-    top$dop$doptrf$0$add_0 lb$0(
+    top$tri_unit$tc_ab$aerr lb$0(
         .clock(lb$0$clock),
         .a(lb$0$a),
         .b(lb$0$b),
@@ -19980,7 +21243,7 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
         .y(lb$0$y),
         .valid_out(lb$0$valid_out)
     );
-    top$dop$doptrf$0$add_0 lb$1(
+    top$tri_unit$tc_ab$aerr lb$1(
         .clock(lb$1$clock),
         .a(lb$1$a),
         .b(lb$1$b),
@@ -19989,7 +21252,7 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
         .y(lb$1$y),
         .valid_out(lb$1$valid_out)
     );
-    top$dop$doptrf$0$add_0 lb$2(
+    top$tri_unit$tc_ab$aerr lb$2(
         .clock(lb$2$clock),
         .a(lb$2$a),
         .b(lb$2$b),
@@ -19998,7 +21261,7 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
         .y(lb$2$y),
         .valid_out(lb$2$valid_out)
     );
-    top$dop$doptrf$0$add_0 l1$0(
+    top$tri_unit$tc_ab$aerr l1$0(
         .clock(l1$0$clock),
         .a(l1$0$a),
         .b(l1$0$b),
@@ -20007,7 +21270,7 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
         .y(l1$0$y),
         .valid_out(l1$0$valid_out)
     );
-    top$dop$doptrf$0$add_0 l1$1(
+    top$tri_unit$tc_ab$aerr l1$1(
         .clock(l1$1$clock),
         .a(l1$1$a),
         .b(l1$1$b),
@@ -20016,7 +21279,7 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
         .y(l1$1$y),
         .valid_out(l1$1$valid_out)
     );
-    top$dop$doptrf$0$add_0 l1$2(
+    top$tri_unit$tc_ab$aerr l1$2(
         .clock(l1$2$clock),
         .a(l1$2$a),
         .b(l1$2$b),
@@ -20040,7 +21303,7 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
         .d(l1_wait$2$d),
         .q(l1_wait$2$q)
     );
-    top$dop$doptrf$0$mul_0 err$0(
+    top$tri_unit$tc_ab$af err$0(
         .clock(err$0$clock),
         .a(err$0$a),
         .b(err$0$b),
@@ -20048,7 +21311,7 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
         .y(err$0$y),
         .valid_out(err$0$valid_out)
     );
-    top$dop$doptrf$0$mul_0 err$1(
+    top$tri_unit$tc_ab$af err$1(
         .clock(err$1$clock),
         .a(err$1$a),
         .b(err$1$b),
@@ -20056,7 +21319,7 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
         .y(err$1$y),
         .valid_out(err$1$valid_out)
     );
-    top$dop$doptrf$0$mul_0 err$2(
+    top$tri_unit$tc_ab$af err$2(
         .clock(err$2$clock),
         .a(err$2$a),
         .b(err$2$b),
@@ -20199,7 +21462,7 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
         .d(mg3_2$d),
         .q(mg3_2$q)
     );
-    top$dop$doptrf$0$add_0 m3_0$0(
+    top$tri_unit$tc_ab$aerr m3_0$0(
         .clock(m3_0$0$clock),
         .a(m3_0$0$a),
         .b(m3_0$0$b),
@@ -20208,7 +21471,7 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
         .y(m3_0$0$y),
         .valid_out(m3_0$0$valid_out)
     );
-    top$dop$doptrf$0$add_0 m3_0$1(
+    top$tri_unit$tc_ab$aerr m3_0$1(
         .clock(m3_0$1$clock),
         .a(m3_0$1$a),
         .b(m3_0$1$b),
@@ -20217,7 +21480,7 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
         .y(m3_0$1$y),
         .valid_out(m3_0$1$valid_out)
     );
-    top$dop$doptrf$0$add_0 m3_0$2(
+    top$tri_unit$tc_ab$aerr m3_0$2(
         .clock(m3_0$2$clock),
         .a(m3_0$2$a),
         .b(m3_0$2$b),
@@ -20226,7 +21489,7 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
         .y(m3_0$2$y),
         .valid_out(m3_0$2$valid_out)
     );
-    top$dop$doptrf$0$add_0 m3_1$0(
+    top$tri_unit$tc_ab$aerr m3_1$0(
         .clock(m3_1$0$clock),
         .a(m3_1$0$a),
         .b(m3_1$0$b),
@@ -20235,7 +21498,7 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
         .y(m3_1$0$y),
         .valid_out(m3_1$0$valid_out)
     );
-    top$dop$doptrf$0$add_0 m3_1$1(
+    top$tri_unit$tc_ab$aerr m3_1$1(
         .clock(m3_1$1$clock),
         .a(m3_1$1$a),
         .b(m3_1$1$b),
@@ -20244,7 +21507,7 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
         .y(m3_1$1$y),
         .valid_out(m3_1$1$valid_out)
     );
-    top$dop$doptrf$0$add_0 m3_1$2(
+    top$tri_unit$tc_ab$aerr m3_1$2(
         .clock(m3_1$2$clock),
         .a(m3_1$2$a),
         .b(m3_1$2$b),
@@ -20253,7 +21516,7 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
         .y(m3_1$2$y),
         .valid_out(m3_1$2$valid_out)
     );
-    top$dop$doptrf$0$add_0 m3_2$0(
+    top$tri_unit$tc_ab$aerr m3_2$0(
         .clock(m3_2$0$clock),
         .a(m3_2$0$a),
         .b(m3_2$0$b),
@@ -20262,7 +21525,7 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
         .y(m3_2$0$y),
         .valid_out(m3_2$0$valid_out)
     );
-    top$dop$doptrf$0$add_0 m3_2$1(
+    top$tri_unit$tc_ab$aerr m3_2$1(
         .clock(m3_2$1$clock),
         .a(m3_2$1$a),
         .b(m3_2$1$b),
@@ -20271,7 +21534,7 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
         .y(m3_2$1$y),
         .valid_out(m3_2$1$valid_out)
     );
-    top$dop$doptrf$0$add_0 m3_2$2(
+    top$tri_unit$tc_ab$aerr m3_2$2(
         .clock(m3_2$2$clock),
         .a(m3_2$2$a),
         .b(m3_2$2$b),
@@ -21754,6 +23017,411 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
 endmodule // top$tri_unit$tc_ab
 
 
+module top$tri_unit$tc_ab$aerr(clock,a,b,sub,valid_in,y,valid_out);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] a;
+    input wire  [31:0] b;
+    input wire  sub;
+    input wire  valid_in;
+    output reg  [31:0] y;
+    output reg  valid_out;
+    
+    // Constant declarations
+    localparam  round_up = 1'b1;
+    localparam  c_align_cap = 8'h1b;
+    localparam  c_exp_ones = 10'b11111111;
+    
+    // Stub signals
+    reg  [31:0] unpack_a$x;
+    wire  unpack_a$sign;
+    wire  [7:0] unpack_a$exp;
+    wire  [23:0] unpack_a$sig;
+    wire  unpack_a$is_zero;
+    wire  unpack_a$is_inf;
+    wire  unpack_a$is_nan;
+    reg  [31:0] unpack_b$x;
+    wire  unpack_b$sign;
+    wire  [7:0] unpack_b$exp;
+    wire  [23:0] unpack_b$sig;
+    wire  unpack_b$is_zero;
+    wire  unpack_b$is_inf;
+    wire  unpack_b$is_nan;
+    reg  s1_valid$d;
+    wire  s1_valid$q;
+    reg  s1_valid$clock;
+    reg  s1_nan$d;
+    wire  s1_nan$q;
+    reg  s1_nan$clock;
+    reg  s1_inf$d;
+    wire  s1_inf$q;
+    reg  s1_inf$clock;
+    reg  s1_inf_sign$d;
+    wire  s1_inf_sign$q;
+    reg  s1_inf_sign$clock;
+    reg  s1_zero_sign$d;
+    wire  s1_zero_sign$q;
+    reg  s1_zero_sign$clock;
+    reg  s1_sign$d;
+    wire  s1_sign$q;
+    reg  s1_sign$clock;
+    reg  s1_eff_sub$d;
+    wire  s1_eff_sub$q;
+    reg  s1_eff_sub$clock;
+    reg  [7:0] s1_exp$d;
+    wire  [7:0] s1_exp$q;
+    reg  s1_exp$clock;
+    reg  [26:0] s1_big$d;
+    wire  [26:0] s1_big$q;
+    reg  s1_big$clock;
+    reg  [26:0] s1_small$d;
+    wire  [26:0] s1_small$q;
+    reg  s1_small$clock;
+    reg  [26:0] norm$x;
+    wire  [26:0] norm$y;
+    wire  [4:0] norm$lz;
+    reg  s2_valid$d;
+    wire  s2_valid$q;
+    reg  s2_valid$clock;
+    reg  s2_sign$d;
+    wire  s2_sign$q;
+    reg  s2_sign$clock;
+    reg  s2_nan$d;
+    wire  s2_nan$q;
+    reg  s2_nan$clock;
+    reg  s2_inf$d;
+    wire  s2_inf$q;
+    reg  s2_inf$clock;
+    reg  s2_zero$d;
+    wire  s2_zero$q;
+    reg  s2_zero$clock;
+    reg  s2_ovf$d;
+    wire  s2_ovf$q;
+    reg  s2_ovf$clock;
+    reg  [7:0] s2_efield$d;
+    wire  [7:0] s2_efield$q;
+    reg  s2_efield$clock;
+    reg  [25:0] s2_nm$d;
+    wire  [25:0] s2_nm$q;
+    reg  s2_nm$clock;
+    reg  round$round_up;
+    reg  round$sign;
+    reg  round$nan;
+    reg  round$inf;
+    reg  round$zero;
+    reg  round$ovf;
+    reg  [7:0] round$efield;
+    reg  [25:0] round$nm;
+    wire  [31:0] round$y;
+    reg  s3_valid$d;
+    wire  s3_valid$q;
+    reg  s3_valid$clock;
+    reg  [31:0] s3_y$d;
+    wire  [31:0] s3_y$q;
+    reg  s3_y$clock;
+    
+    // Local signals
+    reg  c1_b_sign;
+    reg  c1_swap;
+    reg  c1_big_sign;
+    reg  [7:0] c1_big_exp;
+    reg  [23:0] c1_big_sig;
+    reg  c1_small_sign;
+    reg  [7:0] c1_small_exp;
+    reg  [23:0] c1_small_sig;
+    reg  [7:0] c1_diff;
+    reg  [7:0] c1_shift;
+    reg  [26:0] c1_small_ext;
+    reg  [26:0] c1_aligned;
+    reg  [26:0] c1_back;
+    reg  c1_lost;
+    reg  c1_inf_sign;
+    reg  [27:0] c2_sum;
+    reg  c2_carry;
+    reg  c2_zero;
+    reg  [7:0] c2_limit;
+    reg  [7:0] c2_lz;
+    reg  [7:0] c2_shift;
+    reg  [26:0] c2_shifted;
+    reg  [9:0] c2_exp;
+    reg  [25:0] c2_nm;
+    reg  c2_sign;
+    
+    // Sub module instances
+    top$dop$doptrf$0$add_0$unpack_a unpack_a(
+        .x(unpack_a$x),
+        .sign(unpack_a$sign),
+        .exp(unpack_a$exp),
+        .sig(unpack_a$sig),
+        .is_zero(unpack_a$is_zero),
+        .is_inf(unpack_a$is_inf),
+        .is_nan(unpack_a$is_nan)
+    );
+    top$dop$doptrf$0$add_0$unpack_a unpack_b(
+        .x(unpack_b$x),
+        .sign(unpack_b$sign),
+        .exp(unpack_b$exp),
+        .sig(unpack_b$sig),
+        .is_zero(unpack_b$is_zero),
+        .is_inf(unpack_b$is_inf),
+        .is_nan(unpack_b$is_nan)
+    );
+    top$cnt_dop$pending s1_valid(
+        .d(s1_valid$d),
+        .q(s1_valid$q),
+        .clock(s1_valid$clock)
+    );
+    top$cnt_dop$pending s1_nan(
+        .d(s1_nan$d),
+        .q(s1_nan$q),
+        .clock(s1_nan$clock)
+    );
+    top$cnt_dop$pending s1_inf(
+        .d(s1_inf$d),
+        .q(s1_inf$q),
+        .clock(s1_inf$clock)
+    );
+    top$cnt_dop$pending s1_inf_sign(
+        .d(s1_inf_sign$d),
+        .q(s1_inf_sign$q),
+        .clock(s1_inf_sign$clock)
+    );
+    top$cnt_dop$pending s1_zero_sign(
+        .d(s1_zero_sign$d),
+        .q(s1_zero_sign$q),
+        .clock(s1_zero_sign$clock)
+    );
+    top$cnt_dop$pending s1_sign(
+        .d(s1_sign$d),
+        .q(s1_sign$q),
+        .clock(s1_sign$clock)
+    );
+    top$cnt_dop$pending s1_eff_sub(
+        .d(s1_eff_sub$d),
+        .q(s1_eff_sub$q),
+        .clock(s1_eff_sub$clock)
+    );
+    top$dop$doptrf$0$add_0$s1_exp s1_exp(
+        .d(s1_exp$d),
+        .q(s1_exp$q),
+        .clock(s1_exp$clock)
+    );
+    top$dop$doptrf$0$add_0$s1_big s1_big(
+        .d(s1_big$d),
+        .q(s1_big$q),
+        .clock(s1_big$clock)
+    );
+    top$dop$doptrf$0$add_0$s1_big s1_small(
+        .d(s1_small$d),
+        .q(s1_small$q),
+        .clock(s1_small$clock)
+    );
+    top$dop$doptrf$0$add_0$norm norm(
+        .x(norm$x),
+        .y(norm$y),
+        .lz(norm$lz)
+    );
+    top$cnt_dop$pending s2_valid(
+        .d(s2_valid$d),
+        .q(s2_valid$q),
+        .clock(s2_valid$clock)
+    );
+    top$cnt_dop$pending s2_sign(
+        .d(s2_sign$d),
+        .q(s2_sign$q),
+        .clock(s2_sign$clock)
+    );
+    top$cnt_dop$pending s2_nan(
+        .d(s2_nan$d),
+        .q(s2_nan$q),
+        .clock(s2_nan$clock)
+    );
+    top$cnt_dop$pending s2_inf(
+        .d(s2_inf$d),
+        .q(s2_inf$q),
+        .clock(s2_inf$clock)
+    );
+    top$cnt_dop$pending s2_zero(
+        .d(s2_zero$d),
+        .q(s2_zero$q),
+        .clock(s2_zero$clock)
+    );
+    top$cnt_dop$pending s2_ovf(
+        .d(s2_ovf$d),
+        .q(s2_ovf$q),
+        .clock(s2_ovf$clock)
+    );
+    top$dop$doptrf$0$add_0$s1_exp s2_efield(
+        .d(s2_efield$d),
+        .q(s2_efield$q),
+        .clock(s2_efield$clock)
+    );
+    top$dop$doptrf$0$add_0$s2_nm s2_nm(
+        .d(s2_nm$d),
+        .q(s2_nm$q),
+        .clock(s2_nm$clock)
+    );
+    top$dop$doptrf$0$add_0$round round(
+        .round_up(round$round_up),
+        .sign(round$sign),
+        .nan(round$nan),
+        .inf(round$inf),
+        .zero(round$zero),
+        .ovf(round$ovf),
+        .efield(round$efield),
+        .nm(round$nm),
+        .y(round$y)
+    );
+    top$cnt_dop$pending s3_valid(
+        .d(s3_valid$d),
+        .q(s3_valid$q),
+        .clock(s3_valid$clock)
+    );
+    top$cnt_dop$total s3_y(
+        .d(s3_y$d),
+        .q(s3_y$q),
+        .clock(s3_y$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        s1_valid$clock = clock;
+        s1_nan$clock = clock;
+        s1_inf$clock = clock;
+        s1_inf_sign$clock = clock;
+        s1_zero_sign$clock = clock;
+        s1_sign$clock = clock;
+        s1_eff_sub$clock = clock;
+        s1_exp$clock = clock;
+        s1_big$clock = clock;
+        s1_small$clock = clock;
+        s1_valid$d = s1_valid$q;
+        s1_nan$d = s1_nan$q;
+        s1_inf$d = s1_inf$q;
+        s1_inf_sign$d = s1_inf_sign$q;
+        s1_zero_sign$d = s1_zero_sign$q;
+        s1_sign$d = s1_sign$q;
+        s1_eff_sub$d = s1_eff_sub$q;
+        s1_exp$d = s1_exp$q;
+        s1_big$d = s1_big$q;
+        s1_small$d = s1_small$q;
+        s2_valid$clock = clock;
+        s2_sign$clock = clock;
+        s2_nan$clock = clock;
+        s2_inf$clock = clock;
+        s2_zero$clock = clock;
+        s2_ovf$clock = clock;
+        s2_efield$clock = clock;
+        s2_nm$clock = clock;
+        s2_valid$d = s2_valid$q;
+        s2_sign$d = s2_sign$q;
+        s2_nan$d = s2_nan$q;
+        s2_inf$d = s2_inf$q;
+        s2_zero$d = s2_zero$q;
+        s2_ovf$d = s2_ovf$q;
+        s2_efield$d = s2_efield$q;
+        s2_nm$d = s2_nm$q;
+        s3_valid$clock = clock;
+        s3_y$clock = clock;
+        s3_valid$d = s3_valid$q;
+        s3_y$d = s3_y$q;
+        unpack_a$x = a;
+        unpack_b$x = b;
+        c1_b_sign = unpack_b$sign ^ sub;
+        c1_swap = a[(32'h0)+:(31)] < b[(32'h0)+:(31)];
+        c1_big_sign = unpack_a$sign;
+        c1_big_exp = unpack_a$exp;
+        c1_big_sig = unpack_a$sig;
+        c1_small_sign = c1_b_sign;
+        c1_small_exp = unpack_b$exp;
+        c1_small_sig = unpack_b$sig;
+        if (c1_swap) begin
+            c1_big_sign = c1_b_sign;
+            c1_big_exp = unpack_b$exp;
+            c1_big_sig = unpack_b$sig;
+            c1_small_sign = unpack_a$sign;
+            c1_small_exp = unpack_a$exp;
+            c1_small_sig = unpack_a$sig;
+        end
+        c1_diff = c1_big_exp - c1_small_exp;
+        c1_shift = c1_diff;
+        if (c1_diff > c_align_cap) begin
+            c1_shift = c_align_cap;
+        end
+        c1_small_ext = ((c1_small_sig) & 27'h7ffffff) << 32'h3;
+        c1_aligned = c1_small_ext >> c1_shift;
+        c1_back = c1_aligned << c1_shift;
+        c1_lost = c1_back != c1_small_ext;
+        c1_inf_sign = c1_b_sign;
+        if (unpack_a$is_inf) begin
+            c1_inf_sign = unpack_a$sign;
+        end
+        s1_valid$d = valid_in;
+        s1_nan$d = unpack_a$is_nan | unpack_b$is_nan | (unpack_a$is_inf & unpack_b$is_inf & (unpack_a$sign ^ c1_b_sign));
+        s1_inf$d = unpack_a$is_inf | unpack_b$is_inf;
+        s1_inf_sign$d = c1_inf_sign;
+        s1_zero_sign$d = unpack_a$sign & c1_b_sign;
+        s1_sign$d = c1_big_sign;
+        s1_eff_sub$d = c1_big_sign ^ c1_small_sign;
+        s1_exp$d = c1_big_exp;
+        s1_big$d = ((c1_big_sig) & 27'h7ffffff) << 32'h3;
+        s1_small$d = (c1_aligned & ~(1 << (32'h0)) | ((c1_aligned[32'h0] | c1_lost) << (32'h0)));
+        c2_sum = ((s1_big$q) & 28'hfffffff) + ((s1_small$q) & 28'hfffffff);
+        if (s1_eff_sub$q) begin
+            c2_sum = ((s1_big$q) & 28'hfffffff) - ((s1_small$q) & 28'hfffffff);
+        end
+        c2_carry = c2_sum[32'h1b];
+        c2_zero = c2_sum == 32'h0;
+        norm$x = c2_sum[(32'h0)+:(27)];
+        c2_limit = s1_exp$q - 32'h1;
+        c2_lz = ((norm$lz) & 8'hff);
+        c2_shift = c2_lz;
+        if (c2_lz > c2_limit) begin
+            c2_shift = c2_limit;
+        end
+        c2_shifted = c2_sum[(32'h0)+:(27)] << c2_shift;
+        c2_exp = ((s1_exp$q) & 10'h3ff) - ((c2_shift) & 10'h3ff);
+        c2_nm = (((c2_shifted >> 32'h1) & 26'h3ffffff) & ~(1 << (32'h0)) | ((c2_shifted[32'h1] | c2_shifted[32'h0]) << (32'h0)));
+        if (c2_carry) begin
+            c2_exp = ((s1_exp$q) & 10'h3ff) + 32'h1;
+            c2_nm = (((c2_sum >> 32'h2) & 26'h3ffffff) & ~(1 << (32'h0)) | ((c2_sum[32'h2] | c2_sum[32'h1] | c2_sum[32'h0]) << (32'h0)));
+        end
+        c2_sign = s1_sign$q;
+        if (c2_zero) begin
+            c2_sign = s1_zero_sign$q;
+        end
+        if (s1_inf$q) begin
+            c2_sign = s1_inf_sign$q;
+        end
+        s2_valid$d = s1_valid$q;
+        s2_sign$d = c2_sign;
+        s2_nan$d = s1_nan$q;
+        s2_inf$d = s1_inf$q;
+        s2_zero$d = c2_zero;
+        s2_ovf$d = c2_exp >= c_exp_ones;
+        s2_efield$d = 32'h0;
+        if (c2_nm[32'h18 + 32'h1]) begin
+            s2_efield$d = ((c2_exp) & 8'hff);
+        end
+        s2_nm$d = c2_nm;
+        round$round_up = round_up;
+        round$sign = s2_sign$q;
+        round$nan = s2_nan$q;
+        round$inf = s2_inf$q;
+        round$zero = s2_zero$q;
+        round$ovf = s2_ovf$q;
+        round$efield = s2_efield$q;
+        round$nm = s2_nm$q;
+        s3_valid$d = s2_valid$q;
+        s3_y$d = round$y;
+        y = s3_y$q;
+        valid_out = s3_valid$q;
+    end
+    
+endmodule // top$tri_unit$tc_ab$aerr
+
+
 module top$tri_unit$tc_ab$aerr_wait(clock,d,q);
     
     // Module arguments
@@ -21781,6 +23449,449 @@ module top$tri_unit$tc_ab$aerr_wait(clock,d,q);
     end
     
 endmodule // top$tri_unit$tc_ab$aerr_wait
+
+
+module top$tri_unit$tc_ab$af(clock,a,b,valid_in,y,valid_out);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] a;
+    input wire  [31:0] b;
+    input wire  valid_in;
+    output reg  [31:0] y;
+    output reg  valid_out;
+    
+    // Constant declarations
+    localparam  round_up = 1'b1;
+    localparam  c_exp_adj = 10'b10000001;
+    localparam  c_exp_ofs = 10'b100000000;
+    localparam  c_exp_norm_min = 10'b100000001;
+    localparam  c_exp_ovf = 10'b111111111;
+    localparam  c_shift_cap = 10'b11010;
+    
+    // Stub signals
+    reg  [31:0] unpack_a$x;
+    wire  unpack_a$sign;
+    wire  [7:0] unpack_a$exp;
+    wire  [23:0] unpack_a$sig;
+    wire  unpack_a$is_zero;
+    wire  unpack_a$is_inf;
+    wire  unpack_a$is_nan;
+    reg  [31:0] unpack_b$x;
+    wire  unpack_b$sign;
+    wire  [7:0] unpack_b$exp;
+    wire  [23:0] unpack_b$sig;
+    wire  unpack_b$is_zero;
+    wire  unpack_b$is_inf;
+    wire  unpack_b$is_nan;
+    reg  [23:0] norm_a$x;
+    wire  [23:0] norm_a$y;
+    wire  [4:0] norm_a$lz;
+    reg  [23:0] norm_b$x;
+    wire  [23:0] norm_b$y;
+    wire  [4:0] norm_b$lz;
+    reg  s1_valid$d;
+    wire  s1_valid$q;
+    reg  s1_valid$clock;
+    reg  s1_sign$d;
+    wire  s1_sign$q;
+    reg  s1_sign$clock;
+    reg  s1_nan$d;
+    wire  s1_nan$q;
+    reg  s1_nan$clock;
+    reg  s1_inf$d;
+    wire  s1_inf$q;
+    reg  s1_inf$clock;
+    reg  s1_zero$d;
+    wire  s1_zero$q;
+    reg  s1_zero$clock;
+    reg  [9:0] s1_exp$d;
+    wire  [9:0] s1_exp$q;
+    reg  s1_exp$clock;
+    reg  [23:0] s1_sig_a$d;
+    wire  [23:0] s1_sig_a$q;
+    reg  s1_sig_a$clock;
+    reg  [23:0] s1_sig_b$d;
+    wire  [23:0] s1_sig_b$q;
+    reg  s1_sig_b$clock;
+    reg  [23:0] sig_mul$a;
+    reg  [23:0] sig_mul$b;
+    wire  [25:0] sig_mul$hi;
+    wire  sig_mul$sticky;
+    reg  s2_valid$d;
+    wire  s2_valid$q;
+    reg  s2_valid$clock;
+    reg  s2_sign$d;
+    wire  s2_sign$q;
+    reg  s2_sign$clock;
+    reg  s2_nan$d;
+    wire  s2_nan$q;
+    reg  s2_nan$clock;
+    reg  s2_inf$d;
+    wire  s2_inf$q;
+    reg  s2_inf$clock;
+    reg  s2_zero$d;
+    wire  s2_zero$q;
+    reg  s2_zero$clock;
+    reg  [9:0] s2_exp$d;
+    wire  [9:0] s2_exp$q;
+    reg  s2_exp$clock;
+    reg  [25:0] s2_hi$d;
+    wire  [25:0] s2_hi$q;
+    reg  s2_hi$clock;
+    reg  s2_sticky$d;
+    wire  s2_sticky$q;
+    reg  s2_sticky$clock;
+    reg  s3_valid$d;
+    wire  s3_valid$q;
+    reg  s3_valid$clock;
+    reg  s3_sign$d;
+    wire  s3_sign$q;
+    reg  s3_sign$clock;
+    reg  s3_nan$d;
+    wire  s3_nan$q;
+    reg  s3_nan$clock;
+    reg  s3_inf$d;
+    wire  s3_inf$q;
+    reg  s3_inf$clock;
+    reg  s3_zero$d;
+    wire  s3_zero$q;
+    reg  s3_zero$clock;
+    reg  s3_ovf$d;
+    wire  s3_ovf$q;
+    reg  s3_ovf$clock;
+    reg  [7:0] s3_efield$d;
+    wire  [7:0] s3_efield$q;
+    reg  s3_efield$clock;
+    reg  [25:0] s3_nm$d;
+    wire  [25:0] s3_nm$q;
+    reg  s3_nm$clock;
+    reg  round$round_up;
+    reg  round$sign;
+    reg  round$nan;
+    reg  round$inf;
+    reg  round$zero;
+    reg  round$ovf;
+    reg  [7:0] round$efield;
+    reg  [25:0] round$nm;
+    wire  [31:0] round$y;
+    reg  s4_valid$d;
+    wire  s4_valid$q;
+    reg  s4_valid$clock;
+    reg  [31:0] s4_y$d;
+    wire  [31:0] s4_y$q;
+    reg  s4_y$clock;
+    
+    // Local signals
+    reg  [9:0] c1_exp;
+    reg  c3_top;
+    reg  [25:0] c3_nm;
+    reg  [9:0] c3_exp;
+    reg  [9:0] c3_shift;
+    reg  [9:0] c3_shift_cap;
+    reg  [25:0] c3_shifted;
+    reg  [25:0] c3_back;
+    reg  c3_lost;
+    reg  [7:0] c3_efield;
+    
+    // Sub module instances
+    top$dop$doptrf$0$add_0$unpack_a unpack_a(
+        .x(unpack_a$x),
+        .sign(unpack_a$sign),
+        .exp(unpack_a$exp),
+        .sig(unpack_a$sig),
+        .is_zero(unpack_a$is_zero),
+        .is_inf(unpack_a$is_inf),
+        .is_nan(unpack_a$is_nan)
+    );
+    top$dop$doptrf$0$add_0$unpack_a unpack_b(
+        .x(unpack_b$x),
+        .sign(unpack_b$sign),
+        .exp(unpack_b$exp),
+        .sig(unpack_b$sig),
+        .is_zero(unpack_b$is_zero),
+        .is_inf(unpack_b$is_inf),
+        .is_nan(unpack_b$is_nan)
+    );
+    top$dop$doptrf$0$mul_0$norm_a norm_a(
+        .x(norm_a$x),
+        .y(norm_a$y),
+        .lz(norm_a$lz)
+    );
+    top$dop$doptrf$0$mul_0$norm_a norm_b(
+        .x(norm_b$x),
+        .y(norm_b$y),
+        .lz(norm_b$lz)
+    );
+    top$cnt_dop$pending s1_valid(
+        .d(s1_valid$d),
+        .q(s1_valid$q),
+        .clock(s1_valid$clock)
+    );
+    top$cnt_dop$pending s1_sign(
+        .d(s1_sign$d),
+        .q(s1_sign$q),
+        .clock(s1_sign$clock)
+    );
+    top$cnt_dop$pending s1_nan(
+        .d(s1_nan$d),
+        .q(s1_nan$q),
+        .clock(s1_nan$clock)
+    );
+    top$cnt_dop$pending s1_inf(
+        .d(s1_inf$d),
+        .q(s1_inf$q),
+        .clock(s1_inf$clock)
+    );
+    top$cnt_dop$pending s1_zero(
+        .d(s1_zero$d),
+        .q(s1_zero$q),
+        .clock(s1_zero$clock)
+    );
+    top$d_cntr$queue$rd_ptr s1_exp(
+        .d(s1_exp$d),
+        .q(s1_exp$q),
+        .clock(s1_exp$clock)
+    );
+    top$base_na s1_sig_a(
+        .d(s1_sig_a$d),
+        .q(s1_sig_a$q),
+        .clock(s1_sig_a$clock)
+    );
+    top$base_na s1_sig_b(
+        .d(s1_sig_b$d),
+        .q(s1_sig_b$q),
+        .clock(s1_sig_b$clock)
+    );
+    top$dop$doptrf$0$mul_0$sig_mul sig_mul(
+        .a(sig_mul$a),
+        .b(sig_mul$b),
+        .hi(sig_mul$hi),
+        .sticky(sig_mul$sticky)
+    );
+    top$cnt_dop$pending s2_valid(
+        .d(s2_valid$d),
+        .q(s2_valid$q),
+        .clock(s2_valid$clock)
+    );
+    top$cnt_dop$pending s2_sign(
+        .d(s2_sign$d),
+        .q(s2_sign$q),
+        .clock(s2_sign$clock)
+    );
+    top$cnt_dop$pending s2_nan(
+        .d(s2_nan$d),
+        .q(s2_nan$q),
+        .clock(s2_nan$clock)
+    );
+    top$cnt_dop$pending s2_inf(
+        .d(s2_inf$d),
+        .q(s2_inf$q),
+        .clock(s2_inf$clock)
+    );
+    top$cnt_dop$pending s2_zero(
+        .d(s2_zero$d),
+        .q(s2_zero$q),
+        .clock(s2_zero$clock)
+    );
+    top$d_cntr$queue$rd_ptr s2_exp(
+        .d(s2_exp$d),
+        .q(s2_exp$q),
+        .clock(s2_exp$clock)
+    );
+    top$dop$doptrf$0$add_0$s2_nm s2_hi(
+        .d(s2_hi$d),
+        .q(s2_hi$q),
+        .clock(s2_hi$clock)
+    );
+    top$cnt_dop$pending s2_sticky(
+        .d(s2_sticky$d),
+        .q(s2_sticky$q),
+        .clock(s2_sticky$clock)
+    );
+    top$cnt_dop$pending s3_valid(
+        .d(s3_valid$d),
+        .q(s3_valid$q),
+        .clock(s3_valid$clock)
+    );
+    top$cnt_dop$pending s3_sign(
+        .d(s3_sign$d),
+        .q(s3_sign$q),
+        .clock(s3_sign$clock)
+    );
+    top$cnt_dop$pending s3_nan(
+        .d(s3_nan$d),
+        .q(s3_nan$q),
+        .clock(s3_nan$clock)
+    );
+    top$cnt_dop$pending s3_inf(
+        .d(s3_inf$d),
+        .q(s3_inf$q),
+        .clock(s3_inf$clock)
+    );
+    top$cnt_dop$pending s3_zero(
+        .d(s3_zero$d),
+        .q(s3_zero$q),
+        .clock(s3_zero$clock)
+    );
+    top$cnt_dop$pending s3_ovf(
+        .d(s3_ovf$d),
+        .q(s3_ovf$q),
+        .clock(s3_ovf$clock)
+    );
+    top$dop$doptrf$0$add_0$s1_exp s3_efield(
+        .d(s3_efield$d),
+        .q(s3_efield$q),
+        .clock(s3_efield$clock)
+    );
+    top$dop$doptrf$0$add_0$s2_nm s3_nm(
+        .d(s3_nm$d),
+        .q(s3_nm$q),
+        .clock(s3_nm$clock)
+    );
+    top$dop$doptrf$0$add_0$round round(
+        .round_up(round$round_up),
+        .sign(round$sign),
+        .nan(round$nan),
+        .inf(round$inf),
+        .zero(round$zero),
+        .ovf(round$ovf),
+        .efield(round$efield),
+        .nm(round$nm),
+        .y(round$y)
+    );
+    top$cnt_dop$pending s4_valid(
+        .d(s4_valid$d),
+        .q(s4_valid$q),
+        .clock(s4_valid$clock)
+    );
+    top$cnt_dop$total s4_y(
+        .d(s4_y$d),
+        .q(s4_y$q),
+        .clock(s4_y$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        s1_valid$clock = clock;
+        s1_sign$clock = clock;
+        s1_nan$clock = clock;
+        s1_inf$clock = clock;
+        s1_zero$clock = clock;
+        s1_exp$clock = clock;
+        s1_sig_a$clock = clock;
+        s1_sig_b$clock = clock;
+        s1_valid$d = s1_valid$q;
+        s1_sign$d = s1_sign$q;
+        s1_nan$d = s1_nan$q;
+        s1_inf$d = s1_inf$q;
+        s1_zero$d = s1_zero$q;
+        s1_exp$d = s1_exp$q;
+        s1_sig_a$d = s1_sig_a$q;
+        s1_sig_b$d = s1_sig_b$q;
+        s2_valid$clock = clock;
+        s2_sign$clock = clock;
+        s2_nan$clock = clock;
+        s2_inf$clock = clock;
+        s2_zero$clock = clock;
+        s2_exp$clock = clock;
+        s2_hi$clock = clock;
+        s2_sticky$clock = clock;
+        s2_valid$d = s2_valid$q;
+        s2_sign$d = s2_sign$q;
+        s2_nan$d = s2_nan$q;
+        s2_inf$d = s2_inf$q;
+        s2_zero$d = s2_zero$q;
+        s2_exp$d = s2_exp$q;
+        s2_hi$d = s2_hi$q;
+        s2_sticky$d = s2_sticky$q;
+        s3_valid$clock = clock;
+        s3_sign$clock = clock;
+        s3_nan$clock = clock;
+        s3_inf$clock = clock;
+        s3_zero$clock = clock;
+        s3_ovf$clock = clock;
+        s3_efield$clock = clock;
+        s3_nm$clock = clock;
+        s3_valid$d = s3_valid$q;
+        s3_sign$d = s3_sign$q;
+        s3_nan$d = s3_nan$q;
+        s3_inf$d = s3_inf$q;
+        s3_zero$d = s3_zero$q;
+        s3_ovf$d = s3_ovf$q;
+        s3_efield$d = s3_efield$q;
+        s3_nm$d = s3_nm$q;
+        s4_valid$clock = clock;
+        s4_y$clock = clock;
+        s4_valid$d = s4_valid$q;
+        s4_y$d = s4_y$q;
+        unpack_a$x = a;
+        unpack_b$x = b;
+        norm_a$x = unpack_a$sig;
+        norm_b$x = unpack_b$sig;
+        c1_exp = ((unpack_a$exp) & 10'h3ff) + ((unpack_b$exp) & 10'h3ff) - ((norm_a$lz) & 10'h3ff) - ((norm_b$lz) & 10'h3ff) + c_exp_adj;
+        s1_valid$d = valid_in;
+        s1_sign$d = unpack_a$sign ^ unpack_b$sign;
+        s1_nan$d = unpack_a$is_nan | unpack_b$is_nan | (unpack_a$is_inf & unpack_b$is_zero) | (unpack_a$is_zero & unpack_b$is_inf);
+        s1_inf$d = unpack_a$is_inf | unpack_b$is_inf;
+        s1_zero$d = unpack_a$is_zero | unpack_b$is_zero;
+        s1_exp$d = c1_exp;
+        s1_sig_a$d = norm_a$y;
+        s1_sig_b$d = norm_b$y;
+        sig_mul$a = s1_sig_a$q;
+        sig_mul$b = s1_sig_b$q;
+        s2_valid$d = s1_valid$q;
+        s2_sign$d = s1_sign$q;
+        s2_nan$d = s1_nan$q;
+        s2_inf$d = s1_inf$q;
+        s2_zero$d = s1_zero$q;
+        s2_exp$d = s1_exp$q;
+        s2_hi$d = sig_mul$hi;
+        s2_sticky$d = sig_mul$sticky;
+        c3_top = s2_hi$q[32'h18 + 32'h1];
+        c3_nm = ((s2_hi$q << 32'h1) & ~(1 << (32'h0)) | ((s2_sticky$q) << (32'h0)));
+        if (c3_top) begin
+            c3_nm = (s2_hi$q & ~(1 << (32'h0)) | ((s2_hi$q[32'h0] | s2_sticky$q) << (32'h0)));
+        end
+        c3_exp = s2_exp$q + c3_top;
+        c3_shift = 32'h0;
+        if (c3_exp < c_exp_norm_min) begin
+            c3_shift = c_exp_norm_min - c3_exp;
+        end
+        c3_shift_cap = c3_shift;
+        if (c3_shift > c_shift_cap) begin
+            c3_shift_cap = c_shift_cap;
+        end
+        c3_shifted = c3_nm >> c3_shift_cap;
+        c3_back = c3_shifted << c3_shift_cap;
+        c3_lost = c3_back != c3_nm;
+        c3_efield = 32'h0;
+        if (c3_shift == 32'h0) begin
+            c3_efield = ((c3_exp - c_exp_ofs) & 8'hff);
+        end
+        s3_valid$d = s2_valid$q;
+        s3_sign$d = s2_sign$q;
+        s3_nan$d = s2_nan$q;
+        s3_inf$d = s2_inf$q;
+        s3_zero$d = s2_zero$q;
+        s3_ovf$d = c3_exp >= c_exp_ovf;
+        s3_efield$d = c3_efield;
+        s3_nm$d = (c3_shifted & ~(1 << (32'h0)) | ((c3_shifted[32'h0] | c3_lost) << (32'h0)));
+        round$round_up = round_up;
+        round$sign = s3_sign$q;
+        round$nan = s3_nan$q;
+        round$inf = s3_inf$q;
+        round$zero = s3_zero$q;
+        round$ovf = s3_ovf$q;
+        round$efield = s3_efield$q;
+        round$nm = s3_nm$q;
+        s4_valid$d = s3_valid$q;
+        s4_y$d = round$y;
+        y = s4_y$q;
+        valid_out = s4_valid$q;
+    end
+    
+endmodule // top$tri_unit$tc_ab$af
 
 
 module top$tri_unit$tc_ab$c3_0(clock,d,q);
@@ -22326,7 +24437,7 @@ module top$tri_unit$tc_ab$edges$0(clock,p0,p1,p2,q0,q1,q2,pe,qe,pg,qg,pf0,pf1,pf
         .d(q1_wait$d),
         .q(q1_wait$q)
     );
-    top$dop$doptrf$0$mul_0 ta$0(
+    top$tri_unit$tc_ab$af ta$0(
         .clock(ta$0$clock),
         .a(ta$0$a),
         .b(ta$0$b),
@@ -22334,7 +24445,7 @@ module top$tri_unit$tc_ab$edges$0(clock,p0,p1,p2,q0,q1,q2,pe,qe,pg,qg,pf0,pf1,pf
         .y(ta$0$y),
         .valid_out(ta$0$valid_out)
     );
-    top$dop$doptrf$0$mul_0 ta$1(
+    top$tri_unit$tc_ab$af ta$1(
         .clock(ta$1$clock),
         .a(ta$1$a),
         .b(ta$1$b),
@@ -22342,7 +24453,7 @@ module top$tri_unit$tc_ab$edges$0(clock,p0,p1,p2,q0,q1,q2,pe,qe,pg,qg,pf0,pf1,pf
         .y(ta$1$y),
         .valid_out(ta$1$valid_out)
     );
-    top$dop$doptrf$0$mul_0 ta$2(
+    top$tri_unit$tc_ab$af ta$2(
         .clock(ta$2$clock),
         .a(ta$2$a),
         .b(ta$2$b),
@@ -22350,7 +24461,7 @@ module top$tri_unit$tc_ab$edges$0(clock,p0,p1,p2,q0,q1,q2,pe,qe,pg,qg,pf0,pf1,pf
         .y(ta$2$y),
         .valid_out(ta$2$valid_out)
     );
-    top$dop$doptrf$0$mul_0 ta$3(
+    top$tri_unit$tc_ab$af ta$3(
         .clock(ta$3$clock),
         .a(ta$3$a),
         .b(ta$3$b),
@@ -22358,7 +24469,7 @@ module top$tri_unit$tc_ab$edges$0(clock,p0,p1,p2,q0,q1,q2,pe,qe,pg,qg,pf0,pf1,pf
         .y(ta$3$y),
         .valid_out(ta$3$valid_out)
     );
-    top$dop$doptrf$0$mul_0 tb$0(
+    top$tri_unit$tc_ab$af tb$0(
         .clock(tb$0$clock),
         .a(tb$0$a),
         .b(tb$0$b),
@@ -22366,7 +24477,7 @@ module top$tri_unit$tc_ab$edges$0(clock,p0,p1,p2,q0,q1,q2,pe,qe,pg,qg,pf0,pf1,pf
         .y(tb$0$y),
         .valid_out(tb$0$valid_out)
     );
-    top$dop$doptrf$0$mul_0 tb$1(
+    top$tri_unit$tc_ab$af tb$1(
         .clock(tb$1$clock),
         .a(tb$1$a),
         .b(tb$1$b),
@@ -22374,7 +24485,7 @@ module top$tri_unit$tc_ab$edges$0(clock,p0,p1,p2,q0,q1,q2,pe,qe,pg,qg,pf0,pf1,pf
         .y(tb$1$y),
         .valid_out(tb$1$valid_out)
     );
-    top$dop$doptrf$0$mul_0 tb$2(
+    top$tri_unit$tc_ab$af tb$2(
         .clock(tb$2$clock),
         .a(tb$2$a),
         .b(tb$2$b),
@@ -22382,7 +24493,7 @@ module top$tri_unit$tc_ab$edges$0(clock,p0,p1,p2,q0,q1,q2,pe,qe,pg,qg,pf0,pf1,pf
         .y(tb$2$y),
         .valid_out(tb$2$valid_out)
     );
-    top$dop$doptrf$0$mul_0 tb$3(
+    top$tri_unit$tc_ab$af tb$3(
         .clock(tb$3$clock),
         .a(tb$3$a),
         .b(tb$3$b),
@@ -22410,7 +24521,7 @@ module top$tri_unit$tc_ab$edges$0(clock,p0,p1,p2,q0,q1,q2,pe,qe,pg,qg,pf0,pf1,pf
         .d(tb_wait$1$d),
         .q(tb_wait$1$q)
     );
-    top$dop$doptrf$0$add_0 sa$0(
+    top$tri_unit$tc_ab$aerr sa$0(
         .clock(sa$0$clock),
         .a(sa$0$a),
         .b(sa$0$b),
@@ -22419,7 +24530,7 @@ module top$tri_unit$tc_ab$edges$0(clock,p0,p1,p2,q0,q1,q2,pe,qe,pg,qg,pf0,pf1,pf
         .y(sa$0$y),
         .valid_out(sa$0$valid_out)
     );
-    top$dop$doptrf$0$add_0 sa$1(
+    top$tri_unit$tc_ab$aerr sa$1(
         .clock(sa$1$clock),
         .a(sa$1$a),
         .b(sa$1$b),
@@ -22428,7 +24539,7 @@ module top$tri_unit$tc_ab$edges$0(clock,p0,p1,p2,q0,q1,q2,pe,qe,pg,qg,pf0,pf1,pf
         .y(sa$1$y),
         .valid_out(sa$1$valid_out)
     );
-    top$dop$doptrf$0$add_0 sb$0(
+    top$tri_unit$tc_ab$aerr sb$0(
         .clock(sb$0$clock),
         .a(sb$0$a),
         .b(sb$0$b),
@@ -22437,7 +24548,7 @@ module top$tri_unit$tc_ab$edges$0(clock,p0,p1,p2,q0,q1,q2,pe,qe,pg,qg,pf0,pf1,pf
         .y(sb$0$y),
         .valid_out(sb$0$valid_out)
     );
-    top$dop$doptrf$0$add_0 sb$1(
+    top$tri_unit$tc_ab$aerr sb$1(
         .clock(sb$1$clock),
         .a(sb$1$a),
         .b(sb$1$b),
@@ -22446,7 +24557,7 @@ module top$tri_unit$tc_ab$edges$0(clock,p0,p1,p2,q0,q1,q2,pe,qe,pg,qg,pf0,pf1,pf
         .y(sb$1$y),
         .valid_out(sb$1$valid_out)
     );
-    top$dop$doptrf$0$add_0 ba(
+    top$tri_unit$tc_ab$aerr ba(
         .clock(ba$clock),
         .a(ba$a),
         .b(ba$b),
@@ -22455,7 +24566,7 @@ module top$tri_unit$tc_ab$edges$0(clock,p0,p1,p2,q0,q1,q2,pe,qe,pg,qg,pf0,pf1,pf
         .y(ba$y),
         .valid_out(ba$valid_out)
     );
-    top$dop$doptrf$0$add_0 bb(
+    top$tri_unit$tc_ab$aerr bb(
         .clock(bb$clock),
         .a(bb$a),
         .b(bb$b),
@@ -22464,7 +24575,7 @@ module top$tri_unit$tc_ab$edges$0(clock,p0,p1,p2,q0,q1,q2,pe,qe,pg,qg,pf0,pf1,pf
         .y(bb$y),
         .valid_out(bb$valid_out)
     );
-    top$dop$doptrf$0$add_0 brz(
+    top$tri_unit$tc_ab$aerr brz(
         .clock(brz$clock),
         .a(brz$a),
         .b(brz$b),
@@ -22478,7 +24589,7 @@ module top$tri_unit$tc_ab$edges$0(clock,p0,p1,p2,q0,q1,q2,pe,qe,pg,qg,pf0,pf1,pf
         .d(brz_wait$d),
         .q(brz_wait$q)
     );
-    top$dop$doptrf$0$add_0 rab(
+    top$tri_unit$tc_ab$aerr rab(
         .clock(rab$clock),
         .a(rab$a),
         .b(rab$b),
@@ -22487,7 +24598,7 @@ module top$tri_unit$tc_ab$edges$0(clock,p0,p1,p2,q0,q1,q2,pe,qe,pg,qg,pf0,pf1,pf
         .y(rab$y),
         .valid_out(rab$valid_out)
     );
-    top$dop$doptrf$0$add_0 rabz(
+    top$tri_unit$tc_ab$aerr rabz(
         .clock(rabz$clock),
         .a(rabz$a),
         .b(rabz$b),
@@ -22502,7 +24613,7 @@ module top$tri_unit$tc_ab$edges$0(clock,p0,p1,p2,q0,q1,q2,pe,qe,pg,qg,pf0,pf1,pf
         .sel(rs$sel),
         .y(rs$y)
     );
-    top$dop$doptrf$0$add_0 brs(
+    top$tri_unit$tc_ab$aerr brs(
         .clock(brs$clock),
         .a(brs$a),
         .b(brs$b),
@@ -22516,7 +24627,7 @@ module top$tri_unit$tc_ab$edges$0(clock,p0,p1,p2,q0,q1,q2,pe,qe,pg,qg,pf0,pf1,pf
         .d(brs_wait$d),
         .q(brs_wait$q)
     );
-    top$dop$doptrf$0$add_0 bab(
+    top$tri_unit$tc_ab$aerr bab(
         .clock(bab$clock),
         .a(bab$a),
         .b(bab$b),
@@ -22525,7 +24636,7 @@ module top$tri_unit$tc_ab$edges$0(clock,p0,p1,p2,q0,q1,q2,pe,qe,pg,qg,pf0,pf1,pf
         .y(bab$y),
         .valid_out(bab$valid_out)
     );
-    top$dop$doptrf$0$add_0 bs(
+    top$tri_unit$tc_ab$aerr bs(
         .clock(bs$clock),
         .a(bs$a),
         .b(bs$b),
@@ -25412,7 +27523,7 @@ module top$tri_unit$tc_ab$mg_0$0(clock,a0,a1,a2,b0,b1,b2,c,y);
     wire  [31:0] p2_wait$q;
     
     // Sub module instances
-    top$dop$doptrf$0$mul_0 p$0(
+    top$tri_unit$tc_ab$af p$0(
         .clock(p$0$clock),
         .a(p$0$a),
         .b(p$0$b),
@@ -25420,7 +27531,7 @@ module top$tri_unit$tc_ab$mg_0$0(clock,a0,a1,a2,b0,b1,b2,c,y);
         .y(p$0$y),
         .valid_out(p$0$valid_out)
     );
-    top$dop$doptrf$0$mul_0 p$1(
+    top$tri_unit$tc_ab$af p$1(
         .clock(p$1$clock),
         .a(p$1$a),
         .b(p$1$b),
@@ -25428,7 +27539,7 @@ module top$tri_unit$tc_ab$mg_0$0(clock,a0,a1,a2,b0,b1,b2,c,y);
         .y(p$1$y),
         .valid_out(p$1$valid_out)
     );
-    top$dop$doptrf$0$mul_0 p$2(
+    top$tri_unit$tc_ab$af p$2(
         .clock(p$2$clock),
         .a(p$2$a),
         .b(p$2$b),
@@ -25436,7 +27547,7 @@ module top$tri_unit$tc_ab$mg_0$0(clock,a0,a1,a2,b0,b1,b2,c,y);
         .y(p$2$y),
         .valid_out(p$2$valid_out)
     );
-    top$dop$doptrf$0$add_0 s01(
+    top$tri_unit$tc_ab$aerr s01(
         .clock(s01$clock),
         .a(s01$a),
         .b(s01$b),
@@ -25445,7 +27556,7 @@ module top$tri_unit$tc_ab$mg_0$0(clock,a0,a1,a2,b0,b1,b2,c,y);
         .y(s01$y),
         .valid_out(s01$valid_out)
     );
-    top$dop$doptrf$0$add_0 s2c(
+    top$tri_unit$tc_ab$aerr s2c(
         .clock(s2c$clock),
         .a(s2c$a),
         .b(s2c$b),
@@ -25454,7 +27565,7 @@ module top$tri_unit$tc_ab$mg_0$0(clock,a0,a1,a2,b0,b1,b2,c,y);
         .y(s2c$y),
         .valid_out(s2c$valid_out)
     );
-    top$dop$doptrf$0$add_0 s(
+    top$tri_unit$tc_ab$aerr s(
         .clock(s$clock),
         .a(s$a),
         .b(s$b),
@@ -25571,7 +27682,7 @@ module top$tri_unit$tc_ab$mg_0$3(clock,a0,a1,a2,b0,b1,b2,c,y);
     wire  [31:0] p2_wait$q;
     
     // Sub module instances
-    top$dop$doptrf$0$mul_0 p$0(
+    top$tri_unit$tc_ab$af p$0(
         .clock(p$0$clock),
         .a(p$0$a),
         .b(p$0$b),
@@ -25579,7 +27690,7 @@ module top$tri_unit$tc_ab$mg_0$3(clock,a0,a1,a2,b0,b1,b2,c,y);
         .y(p$0$y),
         .valid_out(p$0$valid_out)
     );
-    top$dop$doptrf$0$mul_0 p$1(
+    top$tri_unit$tc_ab$af p$1(
         .clock(p$1$clock),
         .a(p$1$a),
         .b(p$1$b),
@@ -25587,7 +27698,7 @@ module top$tri_unit$tc_ab$mg_0$3(clock,a0,a1,a2,b0,b1,b2,c,y);
         .y(p$1$y),
         .valid_out(p$1$valid_out)
     );
-    top$dop$doptrf$0$mul_0 p$2(
+    top$tri_unit$tc_ab$af p$2(
         .clock(p$2$clock),
         .a(p$2$a),
         .b(p$2$b),
@@ -25595,7 +27706,7 @@ module top$tri_unit$tc_ab$mg_0$3(clock,a0,a1,a2,b0,b1,b2,c,y);
         .y(p$2$y),
         .valid_out(p$2$valid_out)
     );
-    top$dop$doptrf$0$add_0 s01(
+    top$tri_unit$tc_ab$aerr s01(
         .clock(s01$clock),
         .a(s01$a),
         .b(s01$b),
@@ -25604,7 +27715,7 @@ module top$tri_unit$tc_ab$mg_0$3(clock,a0,a1,a2,b0,b1,b2,c,y);
         .y(s01$y),
         .valid_out(s01$valid_out)
     );
-    top$dop$doptrf$0$add_0 s2c(
+    top$tri_unit$tc_ab$aerr s2c(
         .clock(s2c$clock),
         .a(s2c$a),
         .b(s2c$b),
@@ -25613,7 +27724,7 @@ module top$tri_unit$tc_ab$mg_0$3(clock,a0,a1,a2,b0,b1,b2,c,y);
         .y(s2c$y),
         .valid_out(s2c$valid_out)
     );
-    top$dop$doptrf$0$add_0 s(
+    top$tri_unit$tc_ab$aerr s(
         .clock(s$clock),
         .a(s$a),
         .b(s$b),
@@ -27048,7 +29159,7 @@ module top$tri_unit$tc_ab$verts$0(clock,z,m0,m1,m2,exact,e,g,f0,f1,f2,h);
         .sel(cz$sel),
         .y(cz$y)
     );
-    top$dop$doptrf$0$add_0 gz(
+    top$tri_unit$tc_ab$aerr gz(
         .clock(gz$clock),
         .a(gz$a),
         .b(gz$b),
@@ -27057,7 +29168,7 @@ module top$tri_unit$tc_ab$verts$0(clock,z,m0,m1,m2,exact,e,g,f0,f1,f2,h);
         .y(gz$y),
         .valid_out(gz$valid_out)
     );
-    top$dop$doptrf$0$add_0 hz(
+    top$tri_unit$tc_ab$aerr hz(
         .clock(hz$clock),
         .a(hz$a),
         .b(hz$b),

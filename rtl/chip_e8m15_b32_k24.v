@@ -20,7 +20,7 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
     output reg  [23:0] mem_req_addr;
     input wire  mem_req_ready;
     input wire  mem_resp_valid;
-    input wire  [737:0] mem_resp_data;
+    input wire  [2047:0] mem_resp_data;
     output reg  res_valid;
     output reg  [31:0] res_tag;
     output reg  res_uncertain;
@@ -151,7 +151,7 @@ module top(clock,host_we,host_addr,host_data,start,busy,done,overflow,max_depth,
     reg  [31:0] mem_port$leaf_tag;
     reg  mem_port$mem_req_ready;
     reg  mem_port$mem_resp_valid;
-    reg  [737:0] mem_port$mem_resp_data;
+    reg  [2047:0] mem_port$mem_resp_data;
     wire  mem_port$mem_req_valid;
     wire  [23:0] mem_port$mem_req_addr;
     wire  [1:0] mem_port$req_dst;
@@ -2840,537 +2840,203 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
     output reg  [15:0] tag_out;
     output reg  valid_out;
     
-    // Constant declarations
-    localparam  idx$0 = 5'b0;
-    localparam  idx$1 = 5'b1;
-    localparam  idx$2 = 5'b10;
-    localparam  idx$3 = 5'b11;
-    localparam  idx$4 = 5'b100;
-    localparam  idx$5 = 5'b101;
-    localparam  idx$6 = 5'b110;
-    localparam  idx$7 = 5'b111;
-    localparam  idx$8 = 5'b1000;
-    localparam  idx$9 = 5'b1001;
-    localparam  idx$10 = 5'b1010;
-    localparam  idx$11 = 5'b1011;
-    localparam  idx$12 = 5'b1100;
-    localparam  idx$13 = 5'b1101;
-    localparam  idx$14 = 5'b1110;
-    localparam  idx$15 = 5'b1111;
-    localparam  idx$16 = 5'b10000;
-    localparam  idx$17 = 5'b10001;
-    localparam  idx$18 = 5'b10010;
-    localparam  idx$19 = 5'b10011;
-    localparam  idx$20 = 5'b10100;
-    localparam  idx$21 = 5'b10101;
-    localparam  idx$22 = 5'b10110;
-    localparam  idx$23 = 5'b10111;
-    
     // Stub signals
-    reg  [23:0] cmat_0$0$d;
-    wire  [23:0] cmat_0$0$q;
-    reg  cmat_0$0$clock;
-    reg  [23:0] cmat_0$1$d;
-    wire  [23:0] cmat_0$1$q;
-    reg  cmat_0$1$clock;
-    reg  [23:0] cmat_0$2$d;
-    wire  [23:0] cmat_0$2$q;
-    reg  cmat_0$2$clock;
-    reg  [23:0] cmat_0$3$d;
-    wire  [23:0] cmat_0$3$q;
-    reg  cmat_0$3$clock;
-    reg  [23:0] cmat_0$4$d;
-    wire  [23:0] cmat_0$4$q;
-    reg  cmat_0$4$clock;
-    reg  [23:0] cmat_0$5$d;
-    wire  [23:0] cmat_0$5$q;
-    reg  cmat_0$5$clock;
-    reg  [23:0] cmat_0$6$d;
-    wire  [23:0] cmat_0$6$q;
-    reg  cmat_0$6$clock;
-    reg  [23:0] cmat_0$7$d;
-    wire  [23:0] cmat_0$7$q;
-    reg  cmat_0$7$clock;
-    reg  [23:0] cmat_0$8$d;
-    wire  [23:0] cmat_0$8$q;
-    reg  cmat_0$8$clock;
-    reg  [23:0] cmat_0$9$d;
-    wire  [23:0] cmat_0$9$q;
-    reg  cmat_0$9$clock;
-    reg  [23:0] cmat_0$10$d;
-    wire  [23:0] cmat_0$10$q;
-    reg  cmat_0$10$clock;
-    reg  [23:0] cmat_0$11$d;
-    wire  [23:0] cmat_0$11$q;
-    reg  cmat_0$11$clock;
-    reg  [23:0] cmat_0$12$d;
-    wire  [23:0] cmat_0$12$q;
-    reg  cmat_0$12$clock;
-    reg  [23:0] cmat_0$13$d;
-    wire  [23:0] cmat_0$13$q;
-    reg  cmat_0$13$clock;
-    reg  [23:0] cmat_0$14$d;
-    wire  [23:0] cmat_0$14$q;
-    reg  cmat_0$14$clock;
-    reg  [23:0] cmat_0$15$d;
-    wire  [23:0] cmat_0$15$q;
-    reg  cmat_0$15$clock;
-    reg  [23:0] cmat_0$16$d;
-    wire  [23:0] cmat_0$16$q;
-    reg  cmat_0$16$clock;
-    reg  [23:0] cmat_0$17$d;
-    wire  [23:0] cmat_0$17$q;
-    reg  cmat_0$17$clock;
-    reg  [23:0] cmat_0$18$d;
-    wire  [23:0] cmat_0$18$q;
-    reg  cmat_0$18$clock;
-    reg  [23:0] cmat_0$19$d;
-    wire  [23:0] cmat_0$19$q;
-    reg  cmat_0$19$clock;
-    reg  [23:0] cmat_0$20$d;
-    wire  [23:0] cmat_0$20$q;
-    reg  cmat_0$20$clock;
-    reg  [23:0] cmat_0$21$d;
-    wire  [23:0] cmat_0$21$q;
-    reg  cmat_0$21$clock;
-    reg  [23:0] cmat_0$22$d;
-    wire  [23:0] cmat_0$22$q;
-    reg  cmat_0$22$clock;
-    reg  [23:0] cmat_0$23$d;
-    wire  [23:0] cmat_0$23$q;
-    reg  cmat_0$23$clock;
-    reg  [23:0] cmat_1$0$d;
-    wire  [23:0] cmat_1$0$q;
-    reg  cmat_1$0$clock;
-    reg  [23:0] cmat_1$1$d;
-    wire  [23:0] cmat_1$1$q;
-    reg  cmat_1$1$clock;
-    reg  [23:0] cmat_1$2$d;
-    wire  [23:0] cmat_1$2$q;
-    reg  cmat_1$2$clock;
-    reg  [23:0] cmat_1$3$d;
-    wire  [23:0] cmat_1$3$q;
-    reg  cmat_1$3$clock;
-    reg  [23:0] cmat_1$4$d;
-    wire  [23:0] cmat_1$4$q;
-    reg  cmat_1$4$clock;
-    reg  [23:0] cmat_1$5$d;
-    wire  [23:0] cmat_1$5$q;
-    reg  cmat_1$5$clock;
-    reg  [23:0] cmat_1$6$d;
-    wire  [23:0] cmat_1$6$q;
-    reg  cmat_1$6$clock;
-    reg  [23:0] cmat_1$7$d;
-    wire  [23:0] cmat_1$7$q;
-    reg  cmat_1$7$clock;
-    reg  [23:0] cmat_1$8$d;
-    wire  [23:0] cmat_1$8$q;
-    reg  cmat_1$8$clock;
-    reg  [23:0] cmat_1$9$d;
-    wire  [23:0] cmat_1$9$q;
-    reg  cmat_1$9$clock;
-    reg  [23:0] cmat_1$10$d;
-    wire  [23:0] cmat_1$10$q;
-    reg  cmat_1$10$clock;
-    reg  [23:0] cmat_1$11$d;
-    wire  [23:0] cmat_1$11$q;
-    reg  cmat_1$11$clock;
-    reg  [23:0] cmat_1$12$d;
-    wire  [23:0] cmat_1$12$q;
-    reg  cmat_1$12$clock;
-    reg  [23:0] cmat_1$13$d;
-    wire  [23:0] cmat_1$13$q;
-    reg  cmat_1$13$clock;
-    reg  [23:0] cmat_1$14$d;
-    wire  [23:0] cmat_1$14$q;
-    reg  cmat_1$14$clock;
-    reg  [23:0] cmat_1$15$d;
-    wire  [23:0] cmat_1$15$q;
-    reg  cmat_1$15$clock;
-    reg  [23:0] cmat_1$16$d;
-    wire  [23:0] cmat_1$16$q;
-    reg  cmat_1$16$clock;
-    reg  [23:0] cmat_1$17$d;
-    wire  [23:0] cmat_1$17$q;
-    reg  cmat_1$17$clock;
-    reg  [23:0] cmat_1$18$d;
-    wire  [23:0] cmat_1$18$q;
-    reg  cmat_1$18$clock;
-    reg  [23:0] cmat_1$19$d;
-    wire  [23:0] cmat_1$19$q;
-    reg  cmat_1$19$clock;
-    reg  [23:0] cmat_1$20$d;
-    wire  [23:0] cmat_1$20$q;
-    reg  cmat_1$20$clock;
-    reg  [23:0] cmat_1$21$d;
-    wire  [23:0] cmat_1$21$q;
-    reg  cmat_1$21$clock;
-    reg  [23:0] cmat_1$22$d;
-    wire  [23:0] cmat_1$22$q;
-    reg  cmat_1$22$clock;
-    reg  [23:0] cmat_1$23$d;
-    wire  [23:0] cmat_1$23$q;
-    reg  cmat_1$23$clock;
-    reg  [23:0] cmat_2$0$d;
-    wire  [23:0] cmat_2$0$q;
-    reg  cmat_2$0$clock;
-    reg  [23:0] cmat_2$1$d;
-    wire  [23:0] cmat_2$1$q;
-    reg  cmat_2$1$clock;
-    reg  [23:0] cmat_2$2$d;
-    wire  [23:0] cmat_2$2$q;
-    reg  cmat_2$2$clock;
-    reg  [23:0] cmat_2$3$d;
-    wire  [23:0] cmat_2$3$q;
-    reg  cmat_2$3$clock;
-    reg  [23:0] cmat_2$4$d;
-    wire  [23:0] cmat_2$4$q;
-    reg  cmat_2$4$clock;
-    reg  [23:0] cmat_2$5$d;
-    wire  [23:0] cmat_2$5$q;
-    reg  cmat_2$5$clock;
-    reg  [23:0] cmat_2$6$d;
-    wire  [23:0] cmat_2$6$q;
-    reg  cmat_2$6$clock;
-    reg  [23:0] cmat_2$7$d;
-    wire  [23:0] cmat_2$7$q;
-    reg  cmat_2$7$clock;
-    reg  [23:0] cmat_2$8$d;
-    wire  [23:0] cmat_2$8$q;
-    reg  cmat_2$8$clock;
-    reg  [23:0] cmat_2$9$d;
-    wire  [23:0] cmat_2$9$q;
-    reg  cmat_2$9$clock;
-    reg  [23:0] cmat_2$10$d;
-    wire  [23:0] cmat_2$10$q;
-    reg  cmat_2$10$clock;
-    reg  [23:0] cmat_2$11$d;
-    wire  [23:0] cmat_2$11$q;
-    reg  cmat_2$11$clock;
-    reg  [23:0] cmat_2$12$d;
-    wire  [23:0] cmat_2$12$q;
-    reg  cmat_2$12$clock;
-    reg  [23:0] cmat_2$13$d;
-    wire  [23:0] cmat_2$13$q;
-    reg  cmat_2$13$clock;
-    reg  [23:0] cmat_2$14$d;
-    wire  [23:0] cmat_2$14$q;
-    reg  cmat_2$14$clock;
-    reg  [23:0] cmat_2$15$d;
-    wire  [23:0] cmat_2$15$q;
-    reg  cmat_2$15$clock;
-    reg  [23:0] cmat_2$16$d;
-    wire  [23:0] cmat_2$16$q;
-    reg  cmat_2$16$clock;
-    reg  [23:0] cmat_2$17$d;
-    wire  [23:0] cmat_2$17$q;
-    reg  cmat_2$17$clock;
-    reg  [23:0] cmat_2$18$d;
-    wire  [23:0] cmat_2$18$q;
-    reg  cmat_2$18$clock;
-    reg  [23:0] cmat_2$19$d;
-    wire  [23:0] cmat_2$19$q;
-    reg  cmat_2$19$clock;
-    reg  [23:0] cmat_2$20$d;
-    wire  [23:0] cmat_2$20$q;
-    reg  cmat_2$20$clock;
-    reg  [23:0] cmat_2$21$d;
-    wire  [23:0] cmat_2$21$q;
-    reg  cmat_2$21$clock;
-    reg  [23:0] cmat_2$22$d;
-    wire  [23:0] cmat_2$22$q;
-    reg  cmat_2$22$clock;
-    reg  [23:0] cmat_2$23$d;
-    wire  [23:0] cmat_2$23$q;
-    reg  cmat_2$23$clock;
-    reg  [23:0] cvec$0$d;
-    wire  [23:0] cvec$0$q;
-    reg  cvec$0$clock;
-    reg  [23:0] cvec$1$d;
-    wire  [23:0] cvec$1$q;
-    reg  cvec$1$clock;
-    reg  [23:0] cvec$2$d;
-    wire  [23:0] cvec$2$q;
-    reg  cvec$2$clock;
-    reg  [23:0] cvec$3$d;
-    wire  [23:0] cvec$3$q;
-    reg  cvec$3$clock;
-    reg  [23:0] cvec$4$d;
-    wire  [23:0] cvec$4$q;
-    reg  cvec$4$clock;
-    reg  [23:0] cvec$5$d;
-    wire  [23:0] cvec$5$q;
-    reg  cvec$5$clock;
-    reg  [23:0] cvec$6$d;
-    wire  [23:0] cvec$6$q;
-    reg  cvec$6$clock;
-    reg  [23:0] cvec$7$d;
-    wire  [23:0] cvec$7$q;
-    reg  cvec$7$clock;
-    reg  [23:0] cvec$8$d;
-    wire  [23:0] cvec$8$q;
-    reg  cvec$8$clock;
-    reg  [23:0] cvec$9$d;
-    wire  [23:0] cvec$9$q;
-    reg  cvec$9$clock;
-    reg  [23:0] cvec$10$d;
-    wire  [23:0] cvec$10$q;
-    reg  cvec$10$clock;
-    reg  [23:0] cvec$11$d;
-    wire  [23:0] cvec$11$q;
-    reg  cvec$11$clock;
-    reg  [23:0] cvec$12$d;
-    wire  [23:0] cvec$12$q;
-    reg  cvec$12$clock;
-    reg  [23:0] cvec$13$d;
-    wire  [23:0] cvec$13$q;
-    reg  cvec$13$clock;
-    reg  [23:0] cvec$14$d;
-    wire  [23:0] cvec$14$q;
-    reg  cvec$14$clock;
-    reg  [23:0] cvec$15$d;
-    wire  [23:0] cvec$15$q;
-    reg  cvec$15$clock;
-    reg  [23:0] cvec$16$d;
-    wire  [23:0] cvec$16$q;
-    reg  cvec$16$clock;
-    reg  [23:0] cvec$17$d;
-    wire  [23:0] cvec$17$q;
-    reg  cvec$17$clock;
-    reg  [23:0] cvec$18$d;
-    wire  [23:0] cvec$18$q;
-    reg  cvec$18$clock;
-    reg  [23:0] cvec$19$d;
-    wire  [23:0] cvec$19$q;
-    reg  cvec$19$clock;
-    reg  [23:0] cvec$20$d;
-    wire  [23:0] cvec$20$q;
-    reg  cvec$20$clock;
-    reg  [23:0] cvec$21$d;
-    wire  [23:0] cvec$21$q;
-    reg  cvec$21$clock;
-    reg  [23:0] cvec$22$d;
-    wire  [23:0] cvec$22$q;
-    reg  cvec$22$clock;
-    reg  [23:0] cvec$23$d;
-    wire  [23:0] cvec$23$q;
-    reg  cvec$23$clock;
-    reg  [4:0] jsel_0$0$d;
-    wire  [4:0] jsel_0$0$q;
-    reg  jsel_0$0$clock;
-    reg  [4:0] jsel_0$1$d;
-    wire  [4:0] jsel_0$1$q;
-    reg  jsel_0$1$clock;
-    reg  [4:0] jsel_0$2$d;
-    wire  [4:0] jsel_0$2$q;
-    reg  jsel_0$2$clock;
-    reg  [4:0] jsel_0$3$d;
-    wire  [4:0] jsel_0$3$q;
-    reg  jsel_0$3$clock;
-    reg  [4:0] jsel_0$4$d;
-    wire  [4:0] jsel_0$4$q;
-    reg  jsel_0$4$clock;
-    reg  [4:0] jsel_0$5$d;
-    wire  [4:0] jsel_0$5$q;
-    reg  jsel_0$5$clock;
-    reg  [4:0] jsel_0$6$d;
-    wire  [4:0] jsel_0$6$q;
-    reg  jsel_0$6$clock;
-    reg  [4:0] jsel_0$7$d;
-    wire  [4:0] jsel_0$7$q;
-    reg  jsel_0$7$clock;
-    reg  [4:0] jsel_0$8$d;
-    wire  [4:0] jsel_0$8$q;
-    reg  jsel_0$8$clock;
-    reg  [4:0] jsel_0$9$d;
-    wire  [4:0] jsel_0$9$q;
-    reg  jsel_0$9$clock;
-    reg  [4:0] jsel_0$10$d;
-    wire  [4:0] jsel_0$10$q;
-    reg  jsel_0$10$clock;
-    reg  [4:0] jsel_0$11$d;
-    wire  [4:0] jsel_0$11$q;
-    reg  jsel_0$11$clock;
-    reg  [4:0] jsel_0$12$d;
-    wire  [4:0] jsel_0$12$q;
-    reg  jsel_0$12$clock;
-    reg  [4:0] jsel_0$13$d;
-    wire  [4:0] jsel_0$13$q;
-    reg  jsel_0$13$clock;
-    reg  [4:0] jsel_0$14$d;
-    wire  [4:0] jsel_0$14$q;
-    reg  jsel_0$14$clock;
-    reg  [4:0] jsel_0$15$d;
-    wire  [4:0] jsel_0$15$q;
-    reg  jsel_0$15$clock;
-    reg  [4:0] jsel_0$16$d;
-    wire  [4:0] jsel_0$16$q;
-    reg  jsel_0$16$clock;
-    reg  [4:0] jsel_0$17$d;
-    wire  [4:0] jsel_0$17$q;
-    reg  jsel_0$17$clock;
-    reg  [4:0] jsel_0$18$d;
-    wire  [4:0] jsel_0$18$q;
-    reg  jsel_0$18$clock;
-    reg  [4:0] jsel_0$19$d;
-    wire  [4:0] jsel_0$19$q;
-    reg  jsel_0$19$clock;
-    reg  [4:0] jsel_0$20$d;
-    wire  [4:0] jsel_0$20$q;
-    reg  jsel_0$20$clock;
-    reg  [4:0] jsel_0$21$d;
-    wire  [4:0] jsel_0$21$q;
-    reg  jsel_0$21$clock;
-    reg  [4:0] jsel_0$22$d;
-    wire  [4:0] jsel_0$22$q;
-    reg  jsel_0$22$clock;
-    reg  [4:0] jsel_0$23$d;
-    wire  [4:0] jsel_0$23$q;
-    reg  jsel_0$23$clock;
-    reg  [4:0] jsel_1$0$d;
-    wire  [4:0] jsel_1$0$q;
-    reg  jsel_1$0$clock;
-    reg  [4:0] jsel_1$1$d;
-    wire  [4:0] jsel_1$1$q;
-    reg  jsel_1$1$clock;
-    reg  [4:0] jsel_1$2$d;
-    wire  [4:0] jsel_1$2$q;
-    reg  jsel_1$2$clock;
-    reg  [4:0] jsel_1$3$d;
-    wire  [4:0] jsel_1$3$q;
-    reg  jsel_1$3$clock;
-    reg  [4:0] jsel_1$4$d;
-    wire  [4:0] jsel_1$4$q;
-    reg  jsel_1$4$clock;
-    reg  [4:0] jsel_1$5$d;
-    wire  [4:0] jsel_1$5$q;
-    reg  jsel_1$5$clock;
-    reg  [4:0] jsel_1$6$d;
-    wire  [4:0] jsel_1$6$q;
-    reg  jsel_1$6$clock;
-    reg  [4:0] jsel_1$7$d;
-    wire  [4:0] jsel_1$7$q;
-    reg  jsel_1$7$clock;
-    reg  [4:0] jsel_1$8$d;
-    wire  [4:0] jsel_1$8$q;
-    reg  jsel_1$8$clock;
-    reg  [4:0] jsel_1$9$d;
-    wire  [4:0] jsel_1$9$q;
-    reg  jsel_1$9$clock;
-    reg  [4:0] jsel_1$10$d;
-    wire  [4:0] jsel_1$10$q;
-    reg  jsel_1$10$clock;
-    reg  [4:0] jsel_1$11$d;
-    wire  [4:0] jsel_1$11$q;
-    reg  jsel_1$11$clock;
-    reg  [4:0] jsel_1$12$d;
-    wire  [4:0] jsel_1$12$q;
-    reg  jsel_1$12$clock;
-    reg  [4:0] jsel_1$13$d;
-    wire  [4:0] jsel_1$13$q;
-    reg  jsel_1$13$clock;
-    reg  [4:0] jsel_1$14$d;
-    wire  [4:0] jsel_1$14$q;
-    reg  jsel_1$14$clock;
-    reg  [4:0] jsel_1$15$d;
-    wire  [4:0] jsel_1$15$q;
-    reg  jsel_1$15$clock;
-    reg  [4:0] jsel_1$16$d;
-    wire  [4:0] jsel_1$16$q;
-    reg  jsel_1$16$clock;
-    reg  [4:0] jsel_1$17$d;
-    wire  [4:0] jsel_1$17$q;
-    reg  jsel_1$17$clock;
-    reg  [4:0] jsel_1$18$d;
-    wire  [4:0] jsel_1$18$q;
-    reg  jsel_1$18$clock;
-    reg  [4:0] jsel_1$19$d;
-    wire  [4:0] jsel_1$19$q;
-    reg  jsel_1$19$clock;
-    reg  [4:0] jsel_1$20$d;
-    wire  [4:0] jsel_1$20$q;
-    reg  jsel_1$20$clock;
-    reg  [4:0] jsel_1$21$d;
-    wire  [4:0] jsel_1$21$q;
-    reg  jsel_1$21$clock;
-    reg  [4:0] jsel_1$22$d;
-    wire  [4:0] jsel_1$22$q;
-    reg  jsel_1$22$clock;
-    reg  [4:0] jsel_1$23$d;
-    wire  [4:0] jsel_1$23$q;
-    reg  jsel_1$23$clock;
-    reg  [4:0] jsel_2$0$d;
-    wire  [4:0] jsel_2$0$q;
-    reg  jsel_2$0$clock;
-    reg  [4:0] jsel_2$1$d;
-    wire  [4:0] jsel_2$1$q;
-    reg  jsel_2$1$clock;
-    reg  [4:0] jsel_2$2$d;
-    wire  [4:0] jsel_2$2$q;
-    reg  jsel_2$2$clock;
-    reg  [4:0] jsel_2$3$d;
-    wire  [4:0] jsel_2$3$q;
-    reg  jsel_2$3$clock;
-    reg  [4:0] jsel_2$4$d;
-    wire  [4:0] jsel_2$4$q;
-    reg  jsel_2$4$clock;
-    reg  [4:0] jsel_2$5$d;
-    wire  [4:0] jsel_2$5$q;
-    reg  jsel_2$5$clock;
-    reg  [4:0] jsel_2$6$d;
-    wire  [4:0] jsel_2$6$q;
-    reg  jsel_2$6$clock;
-    reg  [4:0] jsel_2$7$d;
-    wire  [4:0] jsel_2$7$q;
-    reg  jsel_2$7$clock;
-    reg  [4:0] jsel_2$8$d;
-    wire  [4:0] jsel_2$8$q;
-    reg  jsel_2$8$clock;
-    reg  [4:0] jsel_2$9$d;
-    wire  [4:0] jsel_2$9$q;
-    reg  jsel_2$9$clock;
-    reg  [4:0] jsel_2$10$d;
-    wire  [4:0] jsel_2$10$q;
-    reg  jsel_2$10$clock;
-    reg  [4:0] jsel_2$11$d;
-    wire  [4:0] jsel_2$11$q;
-    reg  jsel_2$11$clock;
-    reg  [4:0] jsel_2$12$d;
-    wire  [4:0] jsel_2$12$q;
-    reg  jsel_2$12$clock;
-    reg  [4:0] jsel_2$13$d;
-    wire  [4:0] jsel_2$13$q;
-    reg  jsel_2$13$clock;
-    reg  [4:0] jsel_2$14$d;
-    wire  [4:0] jsel_2$14$q;
-    reg  jsel_2$14$clock;
-    reg  [4:0] jsel_2$15$d;
-    wire  [4:0] jsel_2$15$q;
-    reg  jsel_2$15$clock;
-    reg  [4:0] jsel_2$16$d;
-    wire  [4:0] jsel_2$16$q;
-    reg  jsel_2$16$clock;
-    reg  [4:0] jsel_2$17$d;
-    wire  [4:0] jsel_2$17$q;
-    reg  jsel_2$17$clock;
-    reg  [4:0] jsel_2$18$d;
-    wire  [4:0] jsel_2$18$q;
-    reg  jsel_2$18$clock;
-    reg  [4:0] jsel_2$19$d;
-    wire  [4:0] jsel_2$19$q;
-    reg  jsel_2$19$clock;
-    reg  [4:0] jsel_2$20$d;
-    wire  [4:0] jsel_2$20$q;
-    reg  jsel_2$20$clock;
-    reg  [4:0] jsel_2$21$d;
-    wire  [4:0] jsel_2$21$q;
-    reg  jsel_2$21$clock;
-    reg  [4:0] jsel_2$22$d;
-    wire  [4:0] jsel_2$22$q;
-    reg  jsel_2$22$clock;
-    reg  [4:0] jsel_2$23$d;
-    wire  [4:0] jsel_2$23$q;
-    reg  jsel_2$23$clock;
+    reg  setup$clock;
+    reg  setup$load_en;
+    reg  [7:0] setup$load_addr;
+    reg  [23:0] setup$load_data;
+    wire  [23:0] setup$c0$0;
+    wire  [23:0] setup$c0$1;
+    wire  [23:0] setup$c0$2;
+    wire  [23:0] setup$c0$3;
+    wire  [23:0] setup$c0$4;
+    wire  [23:0] setup$c0$5;
+    wire  [23:0] setup$c0$6;
+    wire  [23:0] setup$c0$7;
+    wire  [23:0] setup$c0$8;
+    wire  [23:0] setup$c0$9;
+    wire  [23:0] setup$c0$10;
+    wire  [23:0] setup$c0$11;
+    wire  [23:0] setup$c0$12;
+    wire  [23:0] setup$c0$13;
+    wire  [23:0] setup$c0$14;
+    wire  [23:0] setup$c0$15;
+    wire  [23:0] setup$c0$16;
+    wire  [23:0] setup$c0$17;
+    wire  [23:0] setup$c0$18;
+    wire  [23:0] setup$c0$19;
+    wire  [23:0] setup$c0$20;
+    wire  [23:0] setup$c0$21;
+    wire  [23:0] setup$c0$22;
+    wire  [23:0] setup$c0$23;
+    wire  [23:0] setup$c1$0;
+    wire  [23:0] setup$c1$1;
+    wire  [23:0] setup$c1$2;
+    wire  [23:0] setup$c1$3;
+    wire  [23:0] setup$c1$4;
+    wire  [23:0] setup$c1$5;
+    wire  [23:0] setup$c1$6;
+    wire  [23:0] setup$c1$7;
+    wire  [23:0] setup$c1$8;
+    wire  [23:0] setup$c1$9;
+    wire  [23:0] setup$c1$10;
+    wire  [23:0] setup$c1$11;
+    wire  [23:0] setup$c1$12;
+    wire  [23:0] setup$c1$13;
+    wire  [23:0] setup$c1$14;
+    wire  [23:0] setup$c1$15;
+    wire  [23:0] setup$c1$16;
+    wire  [23:0] setup$c1$17;
+    wire  [23:0] setup$c1$18;
+    wire  [23:0] setup$c1$19;
+    wire  [23:0] setup$c1$20;
+    wire  [23:0] setup$c1$21;
+    wire  [23:0] setup$c1$22;
+    wire  [23:0] setup$c1$23;
+    wire  [23:0] setup$c2$0;
+    wire  [23:0] setup$c2$1;
+    wire  [23:0] setup$c2$2;
+    wire  [23:0] setup$c2$3;
+    wire  [23:0] setup$c2$4;
+    wire  [23:0] setup$c2$5;
+    wire  [23:0] setup$c2$6;
+    wire  [23:0] setup$c2$7;
+    wire  [23:0] setup$c2$8;
+    wire  [23:0] setup$c2$9;
+    wire  [23:0] setup$c2$10;
+    wire  [23:0] setup$c2$11;
+    wire  [23:0] setup$c2$12;
+    wire  [23:0] setup$c2$13;
+    wire  [23:0] setup$c2$14;
+    wire  [23:0] setup$c2$15;
+    wire  [23:0] setup$c2$16;
+    wire  [23:0] setup$c2$17;
+    wire  [23:0] setup$c2$18;
+    wire  [23:0] setup$c2$19;
+    wire  [23:0] setup$c2$20;
+    wire  [23:0] setup$c2$21;
+    wire  [23:0] setup$c2$22;
+    wire  [23:0] setup$c2$23;
+    wire  [23:0] setup$c$0;
+    wire  [23:0] setup$c$1;
+    wire  [23:0] setup$c$2;
+    wire  [23:0] setup$c$3;
+    wire  [23:0] setup$c$4;
+    wire  [23:0] setup$c$5;
+    wire  [23:0] setup$c$6;
+    wire  [23:0] setup$c$7;
+    wire  [23:0] setup$c$8;
+    wire  [23:0] setup$c$9;
+    wire  [23:0] setup$c$10;
+    wire  [23:0] setup$c$11;
+    wire  [23:0] setup$c$12;
+    wire  [23:0] setup$c$13;
+    wire  [23:0] setup$c$14;
+    wire  [23:0] setup$c$15;
+    wire  [23:0] setup$c$16;
+    wire  [23:0] setup$c$17;
+    wire  [23:0] setup$c$18;
+    wire  [23:0] setup$c$19;
+    wire  [23:0] setup$c$20;
+    wire  [23:0] setup$c$21;
+    wire  [23:0] setup$c$22;
+    wire  [23:0] setup$c$23;
+    wire  [4:0] setup$j0$0;
+    wire  [4:0] setup$j0$1;
+    wire  [4:0] setup$j0$2;
+    wire  [4:0] setup$j0$3;
+    wire  [4:0] setup$j0$4;
+    wire  [4:0] setup$j0$5;
+    wire  [4:0] setup$j0$6;
+    wire  [4:0] setup$j0$7;
+    wire  [4:0] setup$j0$8;
+    wire  [4:0] setup$j0$9;
+    wire  [4:0] setup$j0$10;
+    wire  [4:0] setup$j0$11;
+    wire  [4:0] setup$j0$12;
+    wire  [4:0] setup$j0$13;
+    wire  [4:0] setup$j0$14;
+    wire  [4:0] setup$j0$15;
+    wire  [4:0] setup$j0$16;
+    wire  [4:0] setup$j0$17;
+    wire  [4:0] setup$j0$18;
+    wire  [4:0] setup$j0$19;
+    wire  [4:0] setup$j0$20;
+    wire  [4:0] setup$j0$21;
+    wire  [4:0] setup$j0$22;
+    wire  [4:0] setup$j0$23;
+    wire  [4:0] setup$j1$0;
+    wire  [4:0] setup$j1$1;
+    wire  [4:0] setup$j1$2;
+    wire  [4:0] setup$j1$3;
+    wire  [4:0] setup$j1$4;
+    wire  [4:0] setup$j1$5;
+    wire  [4:0] setup$j1$6;
+    wire  [4:0] setup$j1$7;
+    wire  [4:0] setup$j1$8;
+    wire  [4:0] setup$j1$9;
+    wire  [4:0] setup$j1$10;
+    wire  [4:0] setup$j1$11;
+    wire  [4:0] setup$j1$12;
+    wire  [4:0] setup$j1$13;
+    wire  [4:0] setup$j1$14;
+    wire  [4:0] setup$j1$15;
+    wire  [4:0] setup$j1$16;
+    wire  [4:0] setup$j1$17;
+    wire  [4:0] setup$j1$18;
+    wire  [4:0] setup$j1$19;
+    wire  [4:0] setup$j1$20;
+    wire  [4:0] setup$j1$21;
+    wire  [4:0] setup$j1$22;
+    wire  [4:0] setup$j1$23;
+    wire  [4:0] setup$j2$0;
+    wire  [4:0] setup$j2$1;
+    wire  [4:0] setup$j2$2;
+    wire  [4:0] setup$j2$3;
+    wire  [4:0] setup$j2$4;
+    wire  [4:0] setup$j2$5;
+    wire  [4:0] setup$j2$6;
+    wire  [4:0] setup$j2$7;
+    wire  [4:0] setup$j2$8;
+    wire  [4:0] setup$j2$9;
+    wire  [4:0] setup$j2$10;
+    wire  [4:0] setup$j2$11;
+    wire  [4:0] setup$j2$12;
+    wire  [4:0] setup$j2$13;
+    wire  [4:0] setup$j2$14;
+    wire  [4:0] setup$j2$15;
+    wire  [4:0] setup$j2$16;
+    wire  [4:0] setup$j2$17;
+    wire  [4:0] setup$j2$18;
+    wire  [4:0] setup$j2$19;
+    wire  [4:0] setup$j2$20;
+    wire  [4:0] setup$j2$21;
+    wire  [4:0] setup$j2$22;
+    wire  [4:0] setup$j2$23;
+    wire  setup$round_up$0;
+    wire  setup$round_up$1;
+    wire  setup$round_up$2;
+    wire  setup$round_up$3;
+    wire  setup$round_up$4;
+    wire  setup$round_up$5;
+    wire  setup$round_up$6;
+    wire  setup$round_up$7;
+    wire  setup$round_up$8;
+    wire  setup$round_up$9;
+    wire  setup$round_up$10;
+    wire  setup$round_up$11;
+    wire  setup$round_up$12;
+    wire  setup$round_up$13;
+    wire  setup$round_up$14;
+    wire  setup$round_up$15;
+    wire  setup$round_up$16;
+    wire  setup$round_up$17;
+    wire  setup$round_up$18;
+    wire  setup$round_up$19;
+    wire  setup$round_up$20;
+    wire  setup$round_up$21;
+    wire  setup$round_up$22;
+    wire  setup$round_up$23;
     reg  [23:0] klmsel$d$0;
     reg  [23:0] klmsel$d$1;
     reg  [23:0] klmsel$d$2;
@@ -3549,6 +3215,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
     reg  [23:0] doptrf$0$c;
     reg  [23:0] doptrf$0$e;
     reg  doptrf$0$valid_in;
+    reg  doptrf$0$round_up;
     wire  [23:0] doptrf$0$s;
     wire  doptrf$0$flag;
     wire  doptrf$0$valid_out;
@@ -3562,6 +3229,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
     reg  [23:0] doptrf$1$c;
     reg  [23:0] doptrf$1$e;
     reg  doptrf$1$valid_in;
+    reg  doptrf$1$round_up;
     wire  [23:0] doptrf$1$s;
     wire  doptrf$1$flag;
     wire  doptrf$1$valid_out;
@@ -3575,6 +3243,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
     reg  [23:0] doptrf$2$c;
     reg  [23:0] doptrf$2$e;
     reg  doptrf$2$valid_in;
+    reg  doptrf$2$round_up;
     wire  [23:0] doptrf$2$s;
     wire  doptrf$2$flag;
     wire  doptrf$2$valid_out;
@@ -3588,6 +3257,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
     reg  [23:0] doptrf$3$c;
     reg  [23:0] doptrf$3$e;
     reg  doptrf$3$valid_in;
+    reg  doptrf$3$round_up;
     wire  [23:0] doptrf$3$s;
     wire  doptrf$3$flag;
     wire  doptrf$3$valid_out;
@@ -3601,6 +3271,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
     reg  [23:0] doptrf$4$c;
     reg  [23:0] doptrf$4$e;
     reg  doptrf$4$valid_in;
+    reg  doptrf$4$round_up;
     wire  [23:0] doptrf$4$s;
     wire  doptrf$4$flag;
     wire  doptrf$4$valid_out;
@@ -3614,6 +3285,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
     reg  [23:0] doptrf$5$c;
     reg  [23:0] doptrf$5$e;
     reg  doptrf$5$valid_in;
+    reg  doptrf$5$round_up;
     wire  [23:0] doptrf$5$s;
     wire  doptrf$5$flag;
     wire  doptrf$5$valid_out;
@@ -3627,6 +3299,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
     reg  [23:0] doptrf$6$c;
     reg  [23:0] doptrf$6$e;
     reg  doptrf$6$valid_in;
+    reg  doptrf$6$round_up;
     wire  [23:0] doptrf$6$s;
     wire  doptrf$6$flag;
     wire  doptrf$6$valid_out;
@@ -3640,6 +3313,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
     reg  [23:0] doptrf$7$c;
     reg  [23:0] doptrf$7$e;
     reg  doptrf$7$valid_in;
+    reg  doptrf$7$round_up;
     wire  [23:0] doptrf$7$s;
     wire  doptrf$7$flag;
     wire  doptrf$7$valid_out;
@@ -3653,6 +3327,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
     reg  [23:0] doptrf$8$c;
     reg  [23:0] doptrf$8$e;
     reg  doptrf$8$valid_in;
+    reg  doptrf$8$round_up;
     wire  [23:0] doptrf$8$s;
     wire  doptrf$8$flag;
     wire  doptrf$8$valid_out;
@@ -3666,6 +3341,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
     reg  [23:0] doptrf$9$c;
     reg  [23:0] doptrf$9$e;
     reg  doptrf$9$valid_in;
+    reg  doptrf$9$round_up;
     wire  [23:0] doptrf$9$s;
     wire  doptrf$9$flag;
     wire  doptrf$9$valid_out;
@@ -3679,6 +3355,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
     reg  [23:0] doptrf$10$c;
     reg  [23:0] doptrf$10$e;
     reg  doptrf$10$valid_in;
+    reg  doptrf$10$round_up;
     wire  [23:0] doptrf$10$s;
     wire  doptrf$10$flag;
     wire  doptrf$10$valid_out;
@@ -3692,6 +3369,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
     reg  [23:0] doptrf$11$c;
     reg  [23:0] doptrf$11$e;
     reg  doptrf$11$valid_in;
+    reg  doptrf$11$round_up;
     wire  [23:0] doptrf$11$s;
     wire  doptrf$11$flag;
     wire  doptrf$11$valid_out;
@@ -3705,6 +3383,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
     reg  [23:0] doptrf$12$c;
     reg  [23:0] doptrf$12$e;
     reg  doptrf$12$valid_in;
+    reg  doptrf$12$round_up;
     wire  [23:0] doptrf$12$s;
     wire  doptrf$12$flag;
     wire  doptrf$12$valid_out;
@@ -3718,6 +3397,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
     reg  [23:0] doptrf$13$c;
     reg  [23:0] doptrf$13$e;
     reg  doptrf$13$valid_in;
+    reg  doptrf$13$round_up;
     wire  [23:0] doptrf$13$s;
     wire  doptrf$13$flag;
     wire  doptrf$13$valid_out;
@@ -3731,6 +3411,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
     reg  [23:0] doptrf$14$c;
     reg  [23:0] doptrf$14$e;
     reg  doptrf$14$valid_in;
+    reg  doptrf$14$round_up;
     wire  [23:0] doptrf$14$s;
     wire  doptrf$14$flag;
     wire  doptrf$14$valid_out;
@@ -3744,6 +3425,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
     reg  [23:0] doptrf$15$c;
     reg  [23:0] doptrf$15$e;
     reg  doptrf$15$valid_in;
+    reg  doptrf$15$round_up;
     wire  [23:0] doptrf$15$s;
     wire  doptrf$15$flag;
     wire  doptrf$15$valid_out;
@@ -3757,6 +3439,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
     reg  [23:0] doptrf$16$c;
     reg  [23:0] doptrf$16$e;
     reg  doptrf$16$valid_in;
+    reg  doptrf$16$round_up;
     wire  [23:0] doptrf$16$s;
     wire  doptrf$16$flag;
     wire  doptrf$16$valid_out;
@@ -3770,6 +3453,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
     reg  [23:0] doptrf$17$c;
     reg  [23:0] doptrf$17$e;
     reg  doptrf$17$valid_in;
+    reg  doptrf$17$round_up;
     wire  [23:0] doptrf$17$s;
     wire  doptrf$17$flag;
     wire  doptrf$17$valid_out;
@@ -3783,6 +3467,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
     reg  [23:0] doptrf$18$c;
     reg  [23:0] doptrf$18$e;
     reg  doptrf$18$valid_in;
+    reg  doptrf$18$round_up;
     wire  [23:0] doptrf$18$s;
     wire  doptrf$18$flag;
     wire  doptrf$18$valid_out;
@@ -3796,6 +3481,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
     reg  [23:0] doptrf$19$c;
     reg  [23:0] doptrf$19$e;
     reg  doptrf$19$valid_in;
+    reg  doptrf$19$round_up;
     wire  [23:0] doptrf$19$s;
     wire  doptrf$19$flag;
     wire  doptrf$19$valid_out;
@@ -3809,6 +3495,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
     reg  [23:0] doptrf$20$c;
     reg  [23:0] doptrf$20$e;
     reg  doptrf$20$valid_in;
+    reg  doptrf$20$round_up;
     wire  [23:0] doptrf$20$s;
     wire  doptrf$20$flag;
     wire  doptrf$20$valid_out;
@@ -3822,6 +3509,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
     reg  [23:0] doptrf$21$c;
     reg  [23:0] doptrf$21$e;
     reg  doptrf$21$valid_in;
+    reg  doptrf$21$round_up;
     wire  [23:0] doptrf$21$s;
     wire  doptrf$21$flag;
     wire  doptrf$21$valid_out;
@@ -3835,6 +3523,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
     reg  [23:0] doptrf$22$c;
     reg  [23:0] doptrf$22$e;
     reg  doptrf$22$valid_in;
+    reg  doptrf$22$round_up;
     wire  [23:0] doptrf$22$s;
     wire  doptrf$22$flag;
     wire  doptrf$22$valid_out;
@@ -3848,6 +3537,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
     reg  [23:0] doptrf$23$c;
     reg  [23:0] doptrf$23$e;
     reg  doptrf$23$valid_in;
+    reg  doptrf$23$round_up;
     wire  [23:0] doptrf$23$s;
     wire  doptrf$23$flag;
     wire  doptrf$23$valid_out;
@@ -3898,850 +3588,206 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
     reg  tag_15$clock;
     
     // Local signals
-    reg  [4:0] c_load_lane;
-    reg  [2:0] c_load_field;
     reg  c_any;
     
     // Sub module instances
-    top$base_na cmat_0$0(
-        .d(cmat_0$0$d),
-        .q(cmat_0$0$q),
-        .clock(cmat_0$0$clock)
-    );
-    top$base_na cmat_0$1(
-        .d(cmat_0$1$d),
-        .q(cmat_0$1$q),
-        .clock(cmat_0$1$clock)
-    );
-    top$base_na cmat_0$2(
-        .d(cmat_0$2$d),
-        .q(cmat_0$2$q),
-        .clock(cmat_0$2$clock)
-    );
-    top$base_na cmat_0$3(
-        .d(cmat_0$3$d),
-        .q(cmat_0$3$q),
-        .clock(cmat_0$3$clock)
-    );
-    top$base_na cmat_0$4(
-        .d(cmat_0$4$d),
-        .q(cmat_0$4$q),
-        .clock(cmat_0$4$clock)
-    );
-    top$base_na cmat_0$5(
-        .d(cmat_0$5$d),
-        .q(cmat_0$5$q),
-        .clock(cmat_0$5$clock)
-    );
-    top$base_na cmat_0$6(
-        .d(cmat_0$6$d),
-        .q(cmat_0$6$q),
-        .clock(cmat_0$6$clock)
-    );
-    top$base_na cmat_0$7(
-        .d(cmat_0$7$d),
-        .q(cmat_0$7$q),
-        .clock(cmat_0$7$clock)
-    );
-    top$base_na cmat_0$8(
-        .d(cmat_0$8$d),
-        .q(cmat_0$8$q),
-        .clock(cmat_0$8$clock)
-    );
-    top$base_na cmat_0$9(
-        .d(cmat_0$9$d),
-        .q(cmat_0$9$q),
-        .clock(cmat_0$9$clock)
-    );
-    top$base_na cmat_0$10(
-        .d(cmat_0$10$d),
-        .q(cmat_0$10$q),
-        .clock(cmat_0$10$clock)
-    );
-    top$base_na cmat_0$11(
-        .d(cmat_0$11$d),
-        .q(cmat_0$11$q),
-        .clock(cmat_0$11$clock)
-    );
-    top$base_na cmat_0$12(
-        .d(cmat_0$12$d),
-        .q(cmat_0$12$q),
-        .clock(cmat_0$12$clock)
-    );
-    top$base_na cmat_0$13(
-        .d(cmat_0$13$d),
-        .q(cmat_0$13$q),
-        .clock(cmat_0$13$clock)
-    );
-    top$base_na cmat_0$14(
-        .d(cmat_0$14$d),
-        .q(cmat_0$14$q),
-        .clock(cmat_0$14$clock)
-    );
-    top$base_na cmat_0$15(
-        .d(cmat_0$15$d),
-        .q(cmat_0$15$q),
-        .clock(cmat_0$15$clock)
-    );
-    top$base_na cmat_0$16(
-        .d(cmat_0$16$d),
-        .q(cmat_0$16$q),
-        .clock(cmat_0$16$clock)
-    );
-    top$base_na cmat_0$17(
-        .d(cmat_0$17$d),
-        .q(cmat_0$17$q),
-        .clock(cmat_0$17$clock)
-    );
-    top$base_na cmat_0$18(
-        .d(cmat_0$18$d),
-        .q(cmat_0$18$q),
-        .clock(cmat_0$18$clock)
-    );
-    top$base_na cmat_0$19(
-        .d(cmat_0$19$d),
-        .q(cmat_0$19$q),
-        .clock(cmat_0$19$clock)
-    );
-    top$base_na cmat_0$20(
-        .d(cmat_0$20$d),
-        .q(cmat_0$20$q),
-        .clock(cmat_0$20$clock)
-    );
-    top$base_na cmat_0$21(
-        .d(cmat_0$21$d),
-        .q(cmat_0$21$q),
-        .clock(cmat_0$21$clock)
-    );
-    top$base_na cmat_0$22(
-        .d(cmat_0$22$d),
-        .q(cmat_0$22$q),
-        .clock(cmat_0$22$clock)
-    );
-    top$base_na cmat_0$23(
-        .d(cmat_0$23$d),
-        .q(cmat_0$23$q),
-        .clock(cmat_0$23$clock)
-    );
-    top$base_na cmat_1$0(
-        .d(cmat_1$0$d),
-        .q(cmat_1$0$q),
-        .clock(cmat_1$0$clock)
-    );
-    top$base_na cmat_1$1(
-        .d(cmat_1$1$d),
-        .q(cmat_1$1$q),
-        .clock(cmat_1$1$clock)
-    );
-    top$base_na cmat_1$2(
-        .d(cmat_1$2$d),
-        .q(cmat_1$2$q),
-        .clock(cmat_1$2$clock)
-    );
-    top$base_na cmat_1$3(
-        .d(cmat_1$3$d),
-        .q(cmat_1$3$q),
-        .clock(cmat_1$3$clock)
-    );
-    top$base_na cmat_1$4(
-        .d(cmat_1$4$d),
-        .q(cmat_1$4$q),
-        .clock(cmat_1$4$clock)
-    );
-    top$base_na cmat_1$5(
-        .d(cmat_1$5$d),
-        .q(cmat_1$5$q),
-        .clock(cmat_1$5$clock)
-    );
-    top$base_na cmat_1$6(
-        .d(cmat_1$6$d),
-        .q(cmat_1$6$q),
-        .clock(cmat_1$6$clock)
-    );
-    top$base_na cmat_1$7(
-        .d(cmat_1$7$d),
-        .q(cmat_1$7$q),
-        .clock(cmat_1$7$clock)
-    );
-    top$base_na cmat_1$8(
-        .d(cmat_1$8$d),
-        .q(cmat_1$8$q),
-        .clock(cmat_1$8$clock)
-    );
-    top$base_na cmat_1$9(
-        .d(cmat_1$9$d),
-        .q(cmat_1$9$q),
-        .clock(cmat_1$9$clock)
-    );
-    top$base_na cmat_1$10(
-        .d(cmat_1$10$d),
-        .q(cmat_1$10$q),
-        .clock(cmat_1$10$clock)
-    );
-    top$base_na cmat_1$11(
-        .d(cmat_1$11$d),
-        .q(cmat_1$11$q),
-        .clock(cmat_1$11$clock)
-    );
-    top$base_na cmat_1$12(
-        .d(cmat_1$12$d),
-        .q(cmat_1$12$q),
-        .clock(cmat_1$12$clock)
-    );
-    top$base_na cmat_1$13(
-        .d(cmat_1$13$d),
-        .q(cmat_1$13$q),
-        .clock(cmat_1$13$clock)
-    );
-    top$base_na cmat_1$14(
-        .d(cmat_1$14$d),
-        .q(cmat_1$14$q),
-        .clock(cmat_1$14$clock)
-    );
-    top$base_na cmat_1$15(
-        .d(cmat_1$15$d),
-        .q(cmat_1$15$q),
-        .clock(cmat_1$15$clock)
-    );
-    top$base_na cmat_1$16(
-        .d(cmat_1$16$d),
-        .q(cmat_1$16$q),
-        .clock(cmat_1$16$clock)
-    );
-    top$base_na cmat_1$17(
-        .d(cmat_1$17$d),
-        .q(cmat_1$17$q),
-        .clock(cmat_1$17$clock)
-    );
-    top$base_na cmat_1$18(
-        .d(cmat_1$18$d),
-        .q(cmat_1$18$q),
-        .clock(cmat_1$18$clock)
-    );
-    top$base_na cmat_1$19(
-        .d(cmat_1$19$d),
-        .q(cmat_1$19$q),
-        .clock(cmat_1$19$clock)
-    );
-    top$base_na cmat_1$20(
-        .d(cmat_1$20$d),
-        .q(cmat_1$20$q),
-        .clock(cmat_1$20$clock)
-    );
-    top$base_na cmat_1$21(
-        .d(cmat_1$21$d),
-        .q(cmat_1$21$q),
-        .clock(cmat_1$21$clock)
-    );
-    top$base_na cmat_1$22(
-        .d(cmat_1$22$d),
-        .q(cmat_1$22$q),
-        .clock(cmat_1$22$clock)
-    );
-    top$base_na cmat_1$23(
-        .d(cmat_1$23$d),
-        .q(cmat_1$23$q),
-        .clock(cmat_1$23$clock)
-    );
-    top$base_na cmat_2$0(
-        .d(cmat_2$0$d),
-        .q(cmat_2$0$q),
-        .clock(cmat_2$0$clock)
-    );
-    top$base_na cmat_2$1(
-        .d(cmat_2$1$d),
-        .q(cmat_2$1$q),
-        .clock(cmat_2$1$clock)
-    );
-    top$base_na cmat_2$2(
-        .d(cmat_2$2$d),
-        .q(cmat_2$2$q),
-        .clock(cmat_2$2$clock)
-    );
-    top$base_na cmat_2$3(
-        .d(cmat_2$3$d),
-        .q(cmat_2$3$q),
-        .clock(cmat_2$3$clock)
-    );
-    top$base_na cmat_2$4(
-        .d(cmat_2$4$d),
-        .q(cmat_2$4$q),
-        .clock(cmat_2$4$clock)
-    );
-    top$base_na cmat_2$5(
-        .d(cmat_2$5$d),
-        .q(cmat_2$5$q),
-        .clock(cmat_2$5$clock)
-    );
-    top$base_na cmat_2$6(
-        .d(cmat_2$6$d),
-        .q(cmat_2$6$q),
-        .clock(cmat_2$6$clock)
-    );
-    top$base_na cmat_2$7(
-        .d(cmat_2$7$d),
-        .q(cmat_2$7$q),
-        .clock(cmat_2$7$clock)
-    );
-    top$base_na cmat_2$8(
-        .d(cmat_2$8$d),
-        .q(cmat_2$8$q),
-        .clock(cmat_2$8$clock)
-    );
-    top$base_na cmat_2$9(
-        .d(cmat_2$9$d),
-        .q(cmat_2$9$q),
-        .clock(cmat_2$9$clock)
-    );
-    top$base_na cmat_2$10(
-        .d(cmat_2$10$d),
-        .q(cmat_2$10$q),
-        .clock(cmat_2$10$clock)
-    );
-    top$base_na cmat_2$11(
-        .d(cmat_2$11$d),
-        .q(cmat_2$11$q),
-        .clock(cmat_2$11$clock)
-    );
-    top$base_na cmat_2$12(
-        .d(cmat_2$12$d),
-        .q(cmat_2$12$q),
-        .clock(cmat_2$12$clock)
-    );
-    top$base_na cmat_2$13(
-        .d(cmat_2$13$d),
-        .q(cmat_2$13$q),
-        .clock(cmat_2$13$clock)
-    );
-    top$base_na cmat_2$14(
-        .d(cmat_2$14$d),
-        .q(cmat_2$14$q),
-        .clock(cmat_2$14$clock)
-    );
-    top$base_na cmat_2$15(
-        .d(cmat_2$15$d),
-        .q(cmat_2$15$q),
-        .clock(cmat_2$15$clock)
-    );
-    top$base_na cmat_2$16(
-        .d(cmat_2$16$d),
-        .q(cmat_2$16$q),
-        .clock(cmat_2$16$clock)
-    );
-    top$base_na cmat_2$17(
-        .d(cmat_2$17$d),
-        .q(cmat_2$17$q),
-        .clock(cmat_2$17$clock)
-    );
-    top$base_na cmat_2$18(
-        .d(cmat_2$18$d),
-        .q(cmat_2$18$q),
-        .clock(cmat_2$18$clock)
-    );
-    top$base_na cmat_2$19(
-        .d(cmat_2$19$d),
-        .q(cmat_2$19$q),
-        .clock(cmat_2$19$clock)
-    );
-    top$base_na cmat_2$20(
-        .d(cmat_2$20$d),
-        .q(cmat_2$20$q),
-        .clock(cmat_2$20$clock)
-    );
-    top$base_na cmat_2$21(
-        .d(cmat_2$21$d),
-        .q(cmat_2$21$q),
-        .clock(cmat_2$21$clock)
-    );
-    top$base_na cmat_2$22(
-        .d(cmat_2$22$d),
-        .q(cmat_2$22$q),
-        .clock(cmat_2$22$clock)
-    );
-    top$base_na cmat_2$23(
-        .d(cmat_2$23$d),
-        .q(cmat_2$23$q),
-        .clock(cmat_2$23$clock)
-    );
-    top$base_na cvec$0(
-        .d(cvec$0$d),
-        .q(cvec$0$q),
-        .clock(cvec$0$clock)
-    );
-    top$base_na cvec$1(
-        .d(cvec$1$d),
-        .q(cvec$1$q),
-        .clock(cvec$1$clock)
-    );
-    top$base_na cvec$2(
-        .d(cvec$2$d),
-        .q(cvec$2$q),
-        .clock(cvec$2$clock)
-    );
-    top$base_na cvec$3(
-        .d(cvec$3$d),
-        .q(cvec$3$q),
-        .clock(cvec$3$clock)
-    );
-    top$base_na cvec$4(
-        .d(cvec$4$d),
-        .q(cvec$4$q),
-        .clock(cvec$4$clock)
-    );
-    top$base_na cvec$5(
-        .d(cvec$5$d),
-        .q(cvec$5$q),
-        .clock(cvec$5$clock)
-    );
-    top$base_na cvec$6(
-        .d(cvec$6$d),
-        .q(cvec$6$q),
-        .clock(cvec$6$clock)
-    );
-    top$base_na cvec$7(
-        .d(cvec$7$d),
-        .q(cvec$7$q),
-        .clock(cvec$7$clock)
-    );
-    top$base_na cvec$8(
-        .d(cvec$8$d),
-        .q(cvec$8$q),
-        .clock(cvec$8$clock)
-    );
-    top$base_na cvec$9(
-        .d(cvec$9$d),
-        .q(cvec$9$q),
-        .clock(cvec$9$clock)
-    );
-    top$base_na cvec$10(
-        .d(cvec$10$d),
-        .q(cvec$10$q),
-        .clock(cvec$10$clock)
-    );
-    top$base_na cvec$11(
-        .d(cvec$11$d),
-        .q(cvec$11$q),
-        .clock(cvec$11$clock)
-    );
-    top$base_na cvec$12(
-        .d(cvec$12$d),
-        .q(cvec$12$q),
-        .clock(cvec$12$clock)
-    );
-    top$base_na cvec$13(
-        .d(cvec$13$d),
-        .q(cvec$13$q),
-        .clock(cvec$13$clock)
-    );
-    top$base_na cvec$14(
-        .d(cvec$14$d),
-        .q(cvec$14$q),
-        .clock(cvec$14$clock)
-    );
-    top$base_na cvec$15(
-        .d(cvec$15$d),
-        .q(cvec$15$q),
-        .clock(cvec$15$clock)
-    );
-    top$base_na cvec$16(
-        .d(cvec$16$d),
-        .q(cvec$16$q),
-        .clock(cvec$16$clock)
-    );
-    top$base_na cvec$17(
-        .d(cvec$17$d),
-        .q(cvec$17$q),
-        .clock(cvec$17$clock)
-    );
-    top$base_na cvec$18(
-        .d(cvec$18$d),
-        .q(cvec$18$q),
-        .clock(cvec$18$clock)
-    );
-    top$base_na cvec$19(
-        .d(cvec$19$d),
-        .q(cvec$19$q),
-        .clock(cvec$19$clock)
-    );
-    top$base_na cvec$20(
-        .d(cvec$20$d),
-        .q(cvec$20$q),
-        .clock(cvec$20$clock)
-    );
-    top$base_na cvec$21(
-        .d(cvec$21$d),
-        .q(cvec$21$q),
-        .clock(cvec$21$clock)
-    );
-    top$base_na cvec$22(
-        .d(cvec$22$d),
-        .q(cvec$22$q),
-        .clock(cvec$22$clock)
-    );
-    top$base_na cvec$23(
-        .d(cvec$23$d),
-        .q(cvec$23$q),
-        .clock(cvec$23$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_0$0(
-        .d(jsel_0$0$d),
-        .q(jsel_0$0$q),
-        .clock(jsel_0$0$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_0$1(
-        .d(jsel_0$1$d),
-        .q(jsel_0$1$q),
-        .clock(jsel_0$1$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_0$2(
-        .d(jsel_0$2$d),
-        .q(jsel_0$2$q),
-        .clock(jsel_0$2$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_0$3(
-        .d(jsel_0$3$d),
-        .q(jsel_0$3$q),
-        .clock(jsel_0$3$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_0$4(
-        .d(jsel_0$4$d),
-        .q(jsel_0$4$q),
-        .clock(jsel_0$4$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_0$5(
-        .d(jsel_0$5$d),
-        .q(jsel_0$5$q),
-        .clock(jsel_0$5$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_0$6(
-        .d(jsel_0$6$d),
-        .q(jsel_0$6$q),
-        .clock(jsel_0$6$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_0$7(
-        .d(jsel_0$7$d),
-        .q(jsel_0$7$q),
-        .clock(jsel_0$7$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_0$8(
-        .d(jsel_0$8$d),
-        .q(jsel_0$8$q),
-        .clock(jsel_0$8$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_0$9(
-        .d(jsel_0$9$d),
-        .q(jsel_0$9$q),
-        .clock(jsel_0$9$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_0$10(
-        .d(jsel_0$10$d),
-        .q(jsel_0$10$q),
-        .clock(jsel_0$10$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_0$11(
-        .d(jsel_0$11$d),
-        .q(jsel_0$11$q),
-        .clock(jsel_0$11$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_0$12(
-        .d(jsel_0$12$d),
-        .q(jsel_0$12$q),
-        .clock(jsel_0$12$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_0$13(
-        .d(jsel_0$13$d),
-        .q(jsel_0$13$q),
-        .clock(jsel_0$13$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_0$14(
-        .d(jsel_0$14$d),
-        .q(jsel_0$14$q),
-        .clock(jsel_0$14$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_0$15(
-        .d(jsel_0$15$d),
-        .q(jsel_0$15$q),
-        .clock(jsel_0$15$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_0$16(
-        .d(jsel_0$16$d),
-        .q(jsel_0$16$q),
-        .clock(jsel_0$16$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_0$17(
-        .d(jsel_0$17$d),
-        .q(jsel_0$17$q),
-        .clock(jsel_0$17$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_0$18(
-        .d(jsel_0$18$d),
-        .q(jsel_0$18$q),
-        .clock(jsel_0$18$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_0$19(
-        .d(jsel_0$19$d),
-        .q(jsel_0$19$q),
-        .clock(jsel_0$19$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_0$20(
-        .d(jsel_0$20$d),
-        .q(jsel_0$20$q),
-        .clock(jsel_0$20$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_0$21(
-        .d(jsel_0$21$d),
-        .q(jsel_0$21$q),
-        .clock(jsel_0$21$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_0$22(
-        .d(jsel_0$22$d),
-        .q(jsel_0$22$q),
-        .clock(jsel_0$22$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_0$23(
-        .d(jsel_0$23$d),
-        .q(jsel_0$23$q),
-        .clock(jsel_0$23$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_1$0(
-        .d(jsel_1$0$d),
-        .q(jsel_1$0$q),
-        .clock(jsel_1$0$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_1$1(
-        .d(jsel_1$1$d),
-        .q(jsel_1$1$q),
-        .clock(jsel_1$1$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_1$2(
-        .d(jsel_1$2$d),
-        .q(jsel_1$2$q),
-        .clock(jsel_1$2$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_1$3(
-        .d(jsel_1$3$d),
-        .q(jsel_1$3$q),
-        .clock(jsel_1$3$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_1$4(
-        .d(jsel_1$4$d),
-        .q(jsel_1$4$q),
-        .clock(jsel_1$4$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_1$5(
-        .d(jsel_1$5$d),
-        .q(jsel_1$5$q),
-        .clock(jsel_1$5$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_1$6(
-        .d(jsel_1$6$d),
-        .q(jsel_1$6$q),
-        .clock(jsel_1$6$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_1$7(
-        .d(jsel_1$7$d),
-        .q(jsel_1$7$q),
-        .clock(jsel_1$7$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_1$8(
-        .d(jsel_1$8$d),
-        .q(jsel_1$8$q),
-        .clock(jsel_1$8$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_1$9(
-        .d(jsel_1$9$d),
-        .q(jsel_1$9$q),
-        .clock(jsel_1$9$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_1$10(
-        .d(jsel_1$10$d),
-        .q(jsel_1$10$q),
-        .clock(jsel_1$10$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_1$11(
-        .d(jsel_1$11$d),
-        .q(jsel_1$11$q),
-        .clock(jsel_1$11$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_1$12(
-        .d(jsel_1$12$d),
-        .q(jsel_1$12$q),
-        .clock(jsel_1$12$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_1$13(
-        .d(jsel_1$13$d),
-        .q(jsel_1$13$q),
-        .clock(jsel_1$13$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_1$14(
-        .d(jsel_1$14$d),
-        .q(jsel_1$14$q),
-        .clock(jsel_1$14$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_1$15(
-        .d(jsel_1$15$d),
-        .q(jsel_1$15$q),
-        .clock(jsel_1$15$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_1$16(
-        .d(jsel_1$16$d),
-        .q(jsel_1$16$q),
-        .clock(jsel_1$16$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_1$17(
-        .d(jsel_1$17$d),
-        .q(jsel_1$17$q),
-        .clock(jsel_1$17$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_1$18(
-        .d(jsel_1$18$d),
-        .q(jsel_1$18$q),
-        .clock(jsel_1$18$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_1$19(
-        .d(jsel_1$19$d),
-        .q(jsel_1$19$q),
-        .clock(jsel_1$19$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_1$20(
-        .d(jsel_1$20$d),
-        .q(jsel_1$20$q),
-        .clock(jsel_1$20$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_1$21(
-        .d(jsel_1$21$d),
-        .q(jsel_1$21$q),
-        .clock(jsel_1$21$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_1$22(
-        .d(jsel_1$22$d),
-        .q(jsel_1$22$q),
-        .clock(jsel_1$22$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_1$23(
-        .d(jsel_1$23$d),
-        .q(jsel_1$23$q),
-        .clock(jsel_1$23$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_2$0(
-        .d(jsel_2$0$d),
-        .q(jsel_2$0$q),
-        .clock(jsel_2$0$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_2$1(
-        .d(jsel_2$1$d),
-        .q(jsel_2$1$q),
-        .clock(jsel_2$1$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_2$2(
-        .d(jsel_2$2$d),
-        .q(jsel_2$2$q),
-        .clock(jsel_2$2$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_2$3(
-        .d(jsel_2$3$d),
-        .q(jsel_2$3$q),
-        .clock(jsel_2$3$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_2$4(
-        .d(jsel_2$4$d),
-        .q(jsel_2$4$q),
-        .clock(jsel_2$4$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_2$5(
-        .d(jsel_2$5$d),
-        .q(jsel_2$5$q),
-        .clock(jsel_2$5$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_2$6(
-        .d(jsel_2$6$d),
-        .q(jsel_2$6$q),
-        .clock(jsel_2$6$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_2$7(
-        .d(jsel_2$7$d),
-        .q(jsel_2$7$q),
-        .clock(jsel_2$7$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_2$8(
-        .d(jsel_2$8$d),
-        .q(jsel_2$8$q),
-        .clock(jsel_2$8$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_2$9(
-        .d(jsel_2$9$d),
-        .q(jsel_2$9$q),
-        .clock(jsel_2$9$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_2$10(
-        .d(jsel_2$10$d),
-        .q(jsel_2$10$q),
-        .clock(jsel_2$10$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_2$11(
-        .d(jsel_2$11$d),
-        .q(jsel_2$11$q),
-        .clock(jsel_2$11$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_2$12(
-        .d(jsel_2$12$d),
-        .q(jsel_2$12$q),
-        .clock(jsel_2$12$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_2$13(
-        .d(jsel_2$13$d),
-        .q(jsel_2$13$q),
-        .clock(jsel_2$13$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_2$14(
-        .d(jsel_2$14$d),
-        .q(jsel_2$14$q),
-        .clock(jsel_2$14$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_2$15(
-        .d(jsel_2$15$d),
-        .q(jsel_2$15$q),
-        .clock(jsel_2$15$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_2$16(
-        .d(jsel_2$16$d),
-        .q(jsel_2$16$q),
-        .clock(jsel_2$16$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_2$17(
-        .d(jsel_2$17$d),
-        .q(jsel_2$17$q),
-        .clock(jsel_2$17$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_2$18(
-        .d(jsel_2$18$d),
-        .q(jsel_2$18$q),
-        .clock(jsel_2$18$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_2$19(
-        .d(jsel_2$19$d),
-        .q(jsel_2$19$q),
-        .clock(jsel_2$19$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_2$20(
-        .d(jsel_2$20$d),
-        .q(jsel_2$20$q),
-        .clock(jsel_2$20$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_2$21(
-        .d(jsel_2$21$d),
-        .q(jsel_2$21$q),
-        .clock(jsel_2$21$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_2$22(
-        .d(jsel_2$22$d),
-        .q(jsel_2$22$q),
-        .clock(jsel_2$22$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_2$23(
-        .d(jsel_2$23$d),
-        .q(jsel_2$23$q),
-        .clock(jsel_2$23$clock)
+    top$dop$setup setup(
+        .clock(setup$clock),
+        .load_en(setup$load_en),
+        .load_addr(setup$load_addr),
+        .load_data(setup$load_data),
+        .c0$0(setup$c0$0),
+        .c0$1(setup$c0$1),
+        .c0$2(setup$c0$2),
+        .c0$3(setup$c0$3),
+        .c0$4(setup$c0$4),
+        .c0$5(setup$c0$5),
+        .c0$6(setup$c0$6),
+        .c0$7(setup$c0$7),
+        .c0$8(setup$c0$8),
+        .c0$9(setup$c0$9),
+        .c0$10(setup$c0$10),
+        .c0$11(setup$c0$11),
+        .c0$12(setup$c0$12),
+        .c0$13(setup$c0$13),
+        .c0$14(setup$c0$14),
+        .c0$15(setup$c0$15),
+        .c0$16(setup$c0$16),
+        .c0$17(setup$c0$17),
+        .c0$18(setup$c0$18),
+        .c0$19(setup$c0$19),
+        .c0$20(setup$c0$20),
+        .c0$21(setup$c0$21),
+        .c0$22(setup$c0$22),
+        .c0$23(setup$c0$23),
+        .c1$0(setup$c1$0),
+        .c1$1(setup$c1$1),
+        .c1$2(setup$c1$2),
+        .c1$3(setup$c1$3),
+        .c1$4(setup$c1$4),
+        .c1$5(setup$c1$5),
+        .c1$6(setup$c1$6),
+        .c1$7(setup$c1$7),
+        .c1$8(setup$c1$8),
+        .c1$9(setup$c1$9),
+        .c1$10(setup$c1$10),
+        .c1$11(setup$c1$11),
+        .c1$12(setup$c1$12),
+        .c1$13(setup$c1$13),
+        .c1$14(setup$c1$14),
+        .c1$15(setup$c1$15),
+        .c1$16(setup$c1$16),
+        .c1$17(setup$c1$17),
+        .c1$18(setup$c1$18),
+        .c1$19(setup$c1$19),
+        .c1$20(setup$c1$20),
+        .c1$21(setup$c1$21),
+        .c1$22(setup$c1$22),
+        .c1$23(setup$c1$23),
+        .c2$0(setup$c2$0),
+        .c2$1(setup$c2$1),
+        .c2$2(setup$c2$2),
+        .c2$3(setup$c2$3),
+        .c2$4(setup$c2$4),
+        .c2$5(setup$c2$5),
+        .c2$6(setup$c2$6),
+        .c2$7(setup$c2$7),
+        .c2$8(setup$c2$8),
+        .c2$9(setup$c2$9),
+        .c2$10(setup$c2$10),
+        .c2$11(setup$c2$11),
+        .c2$12(setup$c2$12),
+        .c2$13(setup$c2$13),
+        .c2$14(setup$c2$14),
+        .c2$15(setup$c2$15),
+        .c2$16(setup$c2$16),
+        .c2$17(setup$c2$17),
+        .c2$18(setup$c2$18),
+        .c2$19(setup$c2$19),
+        .c2$20(setup$c2$20),
+        .c2$21(setup$c2$21),
+        .c2$22(setup$c2$22),
+        .c2$23(setup$c2$23),
+        .c$0(setup$c$0),
+        .c$1(setup$c$1),
+        .c$2(setup$c$2),
+        .c$3(setup$c$3),
+        .c$4(setup$c$4),
+        .c$5(setup$c$5),
+        .c$6(setup$c$6),
+        .c$7(setup$c$7),
+        .c$8(setup$c$8),
+        .c$9(setup$c$9),
+        .c$10(setup$c$10),
+        .c$11(setup$c$11),
+        .c$12(setup$c$12),
+        .c$13(setup$c$13),
+        .c$14(setup$c$14),
+        .c$15(setup$c$15),
+        .c$16(setup$c$16),
+        .c$17(setup$c$17),
+        .c$18(setup$c$18),
+        .c$19(setup$c$19),
+        .c$20(setup$c$20),
+        .c$21(setup$c$21),
+        .c$22(setup$c$22),
+        .c$23(setup$c$23),
+        .j0$0(setup$j0$0),
+        .j0$1(setup$j0$1),
+        .j0$2(setup$j0$2),
+        .j0$3(setup$j0$3),
+        .j0$4(setup$j0$4),
+        .j0$5(setup$j0$5),
+        .j0$6(setup$j0$6),
+        .j0$7(setup$j0$7),
+        .j0$8(setup$j0$8),
+        .j0$9(setup$j0$9),
+        .j0$10(setup$j0$10),
+        .j0$11(setup$j0$11),
+        .j0$12(setup$j0$12),
+        .j0$13(setup$j0$13),
+        .j0$14(setup$j0$14),
+        .j0$15(setup$j0$15),
+        .j0$16(setup$j0$16),
+        .j0$17(setup$j0$17),
+        .j0$18(setup$j0$18),
+        .j0$19(setup$j0$19),
+        .j0$20(setup$j0$20),
+        .j0$21(setup$j0$21),
+        .j0$22(setup$j0$22),
+        .j0$23(setup$j0$23),
+        .j1$0(setup$j1$0),
+        .j1$1(setup$j1$1),
+        .j1$2(setup$j1$2),
+        .j1$3(setup$j1$3),
+        .j1$4(setup$j1$4),
+        .j1$5(setup$j1$5),
+        .j1$6(setup$j1$6),
+        .j1$7(setup$j1$7),
+        .j1$8(setup$j1$8),
+        .j1$9(setup$j1$9),
+        .j1$10(setup$j1$10),
+        .j1$11(setup$j1$11),
+        .j1$12(setup$j1$12),
+        .j1$13(setup$j1$13),
+        .j1$14(setup$j1$14),
+        .j1$15(setup$j1$15),
+        .j1$16(setup$j1$16),
+        .j1$17(setup$j1$17),
+        .j1$18(setup$j1$18),
+        .j1$19(setup$j1$19),
+        .j1$20(setup$j1$20),
+        .j1$21(setup$j1$21),
+        .j1$22(setup$j1$22),
+        .j1$23(setup$j1$23),
+        .j2$0(setup$j2$0),
+        .j2$1(setup$j2$1),
+        .j2$2(setup$j2$2),
+        .j2$3(setup$j2$3),
+        .j2$4(setup$j2$4),
+        .j2$5(setup$j2$5),
+        .j2$6(setup$j2$6),
+        .j2$7(setup$j2$7),
+        .j2$8(setup$j2$8),
+        .j2$9(setup$j2$9),
+        .j2$10(setup$j2$10),
+        .j2$11(setup$j2$11),
+        .j2$12(setup$j2$12),
+        .j2$13(setup$j2$13),
+        .j2$14(setup$j2$14),
+        .j2$15(setup$j2$15),
+        .j2$16(setup$j2$16),
+        .j2$17(setup$j2$17),
+        .j2$18(setup$j2$18),
+        .j2$19(setup$j2$19),
+        .j2$20(setup$j2$20),
+        .j2$21(setup$j2$21),
+        .j2$22(setup$j2$22),
+        .j2$23(setup$j2$23),
+        .round_up$0(setup$round_up$0),
+        .round_up$1(setup$round_up$1),
+        .round_up$2(setup$round_up$2),
+        .round_up$3(setup$round_up$3),
+        .round_up$4(setup$round_up$4),
+        .round_up$5(setup$round_up$5),
+        .round_up$6(setup$round_up$6),
+        .round_up$7(setup$round_up$7),
+        .round_up$8(setup$round_up$8),
+        .round_up$9(setup$round_up$9),
+        .round_up$10(setup$round_up$10),
+        .round_up$11(setup$round_up$11),
+        .round_up$12(setup$round_up$12),
+        .round_up$13(setup$round_up$13),
+        .round_up$14(setup$round_up$14),
+        .round_up$15(setup$round_up$15),
+        .round_up$16(setup$round_up$16),
+        .round_up$17(setup$round_up$17),
+        .round_up$18(setup$round_up$18),
+        .round_up$19(setup$round_up$19),
+        .round_up$20(setup$round_up$20),
+        .round_up$21(setup$round_up$21),
+        .round_up$22(setup$round_up$22),
+        .round_up$23(setup$round_up$23)
     );
     top$dop$klmsel klmsel(
         .d$0(klmsel$d$0),
@@ -4924,6 +3970,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
         .c(doptrf$0$c),
         .e(doptrf$0$e),
         .valid_in(doptrf$0$valid_in),
+        .round_up(doptrf$0$round_up),
         .s(doptrf$0$s),
         .flag(doptrf$0$flag),
         .valid_out(doptrf$0$valid_out)
@@ -4939,6 +3986,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
         .c(doptrf$1$c),
         .e(doptrf$1$e),
         .valid_in(doptrf$1$valid_in),
+        .round_up(doptrf$1$round_up),
         .s(doptrf$1$s),
         .flag(doptrf$1$flag),
         .valid_out(doptrf$1$valid_out)
@@ -4954,6 +4002,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
         .c(doptrf$2$c),
         .e(doptrf$2$e),
         .valid_in(doptrf$2$valid_in),
+        .round_up(doptrf$2$round_up),
         .s(doptrf$2$s),
         .flag(doptrf$2$flag),
         .valid_out(doptrf$2$valid_out)
@@ -4969,6 +4018,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
         .c(doptrf$3$c),
         .e(doptrf$3$e),
         .valid_in(doptrf$3$valid_in),
+        .round_up(doptrf$3$round_up),
         .s(doptrf$3$s),
         .flag(doptrf$3$flag),
         .valid_out(doptrf$3$valid_out)
@@ -4984,6 +4034,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
         .c(doptrf$4$c),
         .e(doptrf$4$e),
         .valid_in(doptrf$4$valid_in),
+        .round_up(doptrf$4$round_up),
         .s(doptrf$4$s),
         .flag(doptrf$4$flag),
         .valid_out(doptrf$4$valid_out)
@@ -4999,6 +4050,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
         .c(doptrf$5$c),
         .e(doptrf$5$e),
         .valid_in(doptrf$5$valid_in),
+        .round_up(doptrf$5$round_up),
         .s(doptrf$5$s),
         .flag(doptrf$5$flag),
         .valid_out(doptrf$5$valid_out)
@@ -5014,6 +4066,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
         .c(doptrf$6$c),
         .e(doptrf$6$e),
         .valid_in(doptrf$6$valid_in),
+        .round_up(doptrf$6$round_up),
         .s(doptrf$6$s),
         .flag(doptrf$6$flag),
         .valid_out(doptrf$6$valid_out)
@@ -5029,6 +4082,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
         .c(doptrf$7$c),
         .e(doptrf$7$e),
         .valid_in(doptrf$7$valid_in),
+        .round_up(doptrf$7$round_up),
         .s(doptrf$7$s),
         .flag(doptrf$7$flag),
         .valid_out(doptrf$7$valid_out)
@@ -5044,6 +4098,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
         .c(doptrf$8$c),
         .e(doptrf$8$e),
         .valid_in(doptrf$8$valid_in),
+        .round_up(doptrf$8$round_up),
         .s(doptrf$8$s),
         .flag(doptrf$8$flag),
         .valid_out(doptrf$8$valid_out)
@@ -5059,6 +4114,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
         .c(doptrf$9$c),
         .e(doptrf$9$e),
         .valid_in(doptrf$9$valid_in),
+        .round_up(doptrf$9$round_up),
         .s(doptrf$9$s),
         .flag(doptrf$9$flag),
         .valid_out(doptrf$9$valid_out)
@@ -5074,6 +4130,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
         .c(doptrf$10$c),
         .e(doptrf$10$e),
         .valid_in(doptrf$10$valid_in),
+        .round_up(doptrf$10$round_up),
         .s(doptrf$10$s),
         .flag(doptrf$10$flag),
         .valid_out(doptrf$10$valid_out)
@@ -5089,6 +4146,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
         .c(doptrf$11$c),
         .e(doptrf$11$e),
         .valid_in(doptrf$11$valid_in),
+        .round_up(doptrf$11$round_up),
         .s(doptrf$11$s),
         .flag(doptrf$11$flag),
         .valid_out(doptrf$11$valid_out)
@@ -5104,6 +4162,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
         .c(doptrf$12$c),
         .e(doptrf$12$e),
         .valid_in(doptrf$12$valid_in),
+        .round_up(doptrf$12$round_up),
         .s(doptrf$12$s),
         .flag(doptrf$12$flag),
         .valid_out(doptrf$12$valid_out)
@@ -5119,6 +4178,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
         .c(doptrf$13$c),
         .e(doptrf$13$e),
         .valid_in(doptrf$13$valid_in),
+        .round_up(doptrf$13$round_up),
         .s(doptrf$13$s),
         .flag(doptrf$13$flag),
         .valid_out(doptrf$13$valid_out)
@@ -5134,6 +4194,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
         .c(doptrf$14$c),
         .e(doptrf$14$e),
         .valid_in(doptrf$14$valid_in),
+        .round_up(doptrf$14$round_up),
         .s(doptrf$14$s),
         .flag(doptrf$14$flag),
         .valid_out(doptrf$14$valid_out)
@@ -5149,6 +4210,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
         .c(doptrf$15$c),
         .e(doptrf$15$e),
         .valid_in(doptrf$15$valid_in),
+        .round_up(doptrf$15$round_up),
         .s(doptrf$15$s),
         .flag(doptrf$15$flag),
         .valid_out(doptrf$15$valid_out)
@@ -5164,6 +4226,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
         .c(doptrf$16$c),
         .e(doptrf$16$e),
         .valid_in(doptrf$16$valid_in),
+        .round_up(doptrf$16$round_up),
         .s(doptrf$16$s),
         .flag(doptrf$16$flag),
         .valid_out(doptrf$16$valid_out)
@@ -5179,6 +4242,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
         .c(doptrf$17$c),
         .e(doptrf$17$e),
         .valid_in(doptrf$17$valid_in),
+        .round_up(doptrf$17$round_up),
         .s(doptrf$17$s),
         .flag(doptrf$17$flag),
         .valid_out(doptrf$17$valid_out)
@@ -5194,6 +4258,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
         .c(doptrf$18$c),
         .e(doptrf$18$e),
         .valid_in(doptrf$18$valid_in),
+        .round_up(doptrf$18$round_up),
         .s(doptrf$18$s),
         .flag(doptrf$18$flag),
         .valid_out(doptrf$18$valid_out)
@@ -5209,6 +4274,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
         .c(doptrf$19$c),
         .e(doptrf$19$e),
         .valid_in(doptrf$19$valid_in),
+        .round_up(doptrf$19$round_up),
         .s(doptrf$19$s),
         .flag(doptrf$19$flag),
         .valid_out(doptrf$19$valid_out)
@@ -5224,6 +4290,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
         .c(doptrf$20$c),
         .e(doptrf$20$e),
         .valid_in(doptrf$20$valid_in),
+        .round_up(doptrf$20$round_up),
         .s(doptrf$20$s),
         .flag(doptrf$20$flag),
         .valid_out(doptrf$20$valid_out)
@@ -5239,6 +4306,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
         .c(doptrf$21$c),
         .e(doptrf$21$e),
         .valid_in(doptrf$21$valid_in),
+        .round_up(doptrf$21$round_up),
         .s(doptrf$21$s),
         .flag(doptrf$21$flag),
         .valid_out(doptrf$21$valid_out)
@@ -5254,6 +4322,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
         .c(doptrf$22$c),
         .e(doptrf$22$e),
         .valid_in(doptrf$22$valid_in),
+        .round_up(doptrf$22$round_up),
         .s(doptrf$22$s),
         .flag(doptrf$22$flag),
         .valid_out(doptrf$22$valid_out)
@@ -5269,6 +4338,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
         .c(doptrf$23$c),
         .e(doptrf$23$e),
         .valid_in(doptrf$23$valid_in),
+        .round_up(doptrf$23$round_up),
         .s(doptrf$23$s),
         .flag(doptrf$23$flag),
         .valid_out(doptrf$23$valid_out)
@@ -5381,1111 +4451,345 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
         tag_13$d = tag_13$q;
         tag_14$d = tag_14$q;
         tag_15$d = tag_15$q;
-        c_load_lane = load_addr[(32'h3)+:(5)];
-        c_load_field = load_addr[(32'h0)+:(3)];
-        cmat_0$0$clock = clock;
-        cmat_1$0$clock = clock;
-        cmat_2$0$clock = clock;
-        cvec$0$clock = clock;
-        jsel_0$0$clock = clock;
-        jsel_1$0$clock = clock;
-        jsel_2$0$clock = clock;
+        setup$clock = clock;
+        setup$load_en = load_en;
+        setup$load_addr = load_addr;
+        setup$load_data = load_data;
         doptrf$0$clock = clock;
-        cmat_0$0$d = cmat_0$0$q;
-        cmat_1$0$d = cmat_1$0$q;
-        cmat_2$0$d = cmat_2$0$q;
-        cvec$0$d = cvec$0$q;
-        jsel_0$0$d = jsel_0$0$q;
-        jsel_1$0$d = jsel_1$0$q;
-        jsel_2$0$d = jsel_2$0$q;
-        if (load_en & (c_load_lane == idx$0)) begin
-            if (c_load_field == 32'h0) begin
-                cmat_0$0$d = load_data;
-            end
-            if (c_load_field == 32'h1) begin
-                cmat_1$0$d = load_data;
-            end
-            if (c_load_field == 32'h2) begin
-                cmat_2$0$d = load_data;
-            end
-            if (c_load_field == 32'h3) begin
-                cvec$0$d = load_data;
-            end
-            if (c_load_field == 32'h4) begin
-                jsel_0$0$d = load_data[(32'h0)+:(5)];
-                jsel_1$0$d = load_data[(32'h5)+:(5)];
-                jsel_2$0$d = load_data[(32'ha)+:(5)];
-            end
-        end
         klmsel$d$0 = d$0;
-        klmsel$j0$0 = jsel_0$0$q;
-        klmsel$j1$0 = jsel_1$0$q;
-        klmsel$j2$0 = jsel_2$0$q;
+        klmsel$j0$0 = setup$j0$0;
+        klmsel$j1$0 = setup$j1$0;
+        klmsel$j2$0 = setup$j2$0;
         doptrf$0$d0 = klmsel$y0$0;
         doptrf$0$d1 = klmsel$y1$0;
         doptrf$0$d2 = klmsel$y2$0;
-        doptrf$0$c0 = cmat_0$0$q;
-        doptrf$0$c1 = cmat_1$0$q;
-        doptrf$0$c2 = cmat_2$0$q;
-        doptrf$0$c = cvec$0$q;
+        doptrf$0$c0 = setup$c0$0;
+        doptrf$0$c1 = setup$c1$0;
+        doptrf$0$c2 = setup$c2$0;
+        doptrf$0$c = setup$c$0;
+        doptrf$0$round_up = setup$round_up$0;
         doptrf$0$valid_in = valid_in;
-        cmat_0$1$clock = clock;
-        cmat_1$1$clock = clock;
-        cmat_2$1$clock = clock;
-        cvec$1$clock = clock;
-        jsel_0$1$clock = clock;
-        jsel_1$1$clock = clock;
-        jsel_2$1$clock = clock;
         doptrf$1$clock = clock;
-        cmat_0$1$d = cmat_0$1$q;
-        cmat_1$1$d = cmat_1$1$q;
-        cmat_2$1$d = cmat_2$1$q;
-        cvec$1$d = cvec$1$q;
-        jsel_0$1$d = jsel_0$1$q;
-        jsel_1$1$d = jsel_1$1$q;
-        jsel_2$1$d = jsel_2$1$q;
-        if (load_en & (c_load_lane == idx$1)) begin
-            if (c_load_field == 32'h0) begin
-                cmat_0$1$d = load_data;
-            end
-            if (c_load_field == 32'h1) begin
-                cmat_1$1$d = load_data;
-            end
-            if (c_load_field == 32'h2) begin
-                cmat_2$1$d = load_data;
-            end
-            if (c_load_field == 32'h3) begin
-                cvec$1$d = load_data;
-            end
-            if (c_load_field == 32'h4) begin
-                jsel_0$1$d = load_data[(32'h0)+:(5)];
-                jsel_1$1$d = load_data[(32'h5)+:(5)];
-                jsel_2$1$d = load_data[(32'ha)+:(5)];
-            end
-        end
         klmsel$d$1 = d$1;
-        klmsel$j0$1 = jsel_0$1$q;
-        klmsel$j1$1 = jsel_1$1$q;
-        klmsel$j2$1 = jsel_2$1$q;
+        klmsel$j0$1 = setup$j0$1;
+        klmsel$j1$1 = setup$j1$1;
+        klmsel$j2$1 = setup$j2$1;
         doptrf$1$d0 = klmsel$y0$1;
         doptrf$1$d1 = klmsel$y1$1;
         doptrf$1$d2 = klmsel$y2$1;
-        doptrf$1$c0 = cmat_0$1$q;
-        doptrf$1$c1 = cmat_1$1$q;
-        doptrf$1$c2 = cmat_2$1$q;
-        doptrf$1$c = cvec$1$q;
+        doptrf$1$c0 = setup$c0$1;
+        doptrf$1$c1 = setup$c1$1;
+        doptrf$1$c2 = setup$c2$1;
+        doptrf$1$c = setup$c$1;
+        doptrf$1$round_up = setup$round_up$1;
         doptrf$1$valid_in = valid_in;
-        cmat_0$2$clock = clock;
-        cmat_1$2$clock = clock;
-        cmat_2$2$clock = clock;
-        cvec$2$clock = clock;
-        jsel_0$2$clock = clock;
-        jsel_1$2$clock = clock;
-        jsel_2$2$clock = clock;
         doptrf$2$clock = clock;
-        cmat_0$2$d = cmat_0$2$q;
-        cmat_1$2$d = cmat_1$2$q;
-        cmat_2$2$d = cmat_2$2$q;
-        cvec$2$d = cvec$2$q;
-        jsel_0$2$d = jsel_0$2$q;
-        jsel_1$2$d = jsel_1$2$q;
-        jsel_2$2$d = jsel_2$2$q;
-        if (load_en & (c_load_lane == idx$2)) begin
-            if (c_load_field == 32'h0) begin
-                cmat_0$2$d = load_data;
-            end
-            if (c_load_field == 32'h1) begin
-                cmat_1$2$d = load_data;
-            end
-            if (c_load_field == 32'h2) begin
-                cmat_2$2$d = load_data;
-            end
-            if (c_load_field == 32'h3) begin
-                cvec$2$d = load_data;
-            end
-            if (c_load_field == 32'h4) begin
-                jsel_0$2$d = load_data[(32'h0)+:(5)];
-                jsel_1$2$d = load_data[(32'h5)+:(5)];
-                jsel_2$2$d = load_data[(32'ha)+:(5)];
-            end
-        end
         klmsel$d$2 = d$2;
-        klmsel$j0$2 = jsel_0$2$q;
-        klmsel$j1$2 = jsel_1$2$q;
-        klmsel$j2$2 = jsel_2$2$q;
+        klmsel$j0$2 = setup$j0$2;
+        klmsel$j1$2 = setup$j1$2;
+        klmsel$j2$2 = setup$j2$2;
         doptrf$2$d0 = klmsel$y0$2;
         doptrf$2$d1 = klmsel$y1$2;
         doptrf$2$d2 = klmsel$y2$2;
-        doptrf$2$c0 = cmat_0$2$q;
-        doptrf$2$c1 = cmat_1$2$q;
-        doptrf$2$c2 = cmat_2$2$q;
-        doptrf$2$c = cvec$2$q;
+        doptrf$2$c0 = setup$c0$2;
+        doptrf$2$c1 = setup$c1$2;
+        doptrf$2$c2 = setup$c2$2;
+        doptrf$2$c = setup$c$2;
+        doptrf$2$round_up = setup$round_up$2;
         doptrf$2$valid_in = valid_in;
-        cmat_0$3$clock = clock;
-        cmat_1$3$clock = clock;
-        cmat_2$3$clock = clock;
-        cvec$3$clock = clock;
-        jsel_0$3$clock = clock;
-        jsel_1$3$clock = clock;
-        jsel_2$3$clock = clock;
         doptrf$3$clock = clock;
-        cmat_0$3$d = cmat_0$3$q;
-        cmat_1$3$d = cmat_1$3$q;
-        cmat_2$3$d = cmat_2$3$q;
-        cvec$3$d = cvec$3$q;
-        jsel_0$3$d = jsel_0$3$q;
-        jsel_1$3$d = jsel_1$3$q;
-        jsel_2$3$d = jsel_2$3$q;
-        if (load_en & (c_load_lane == idx$3)) begin
-            if (c_load_field == 32'h0) begin
-                cmat_0$3$d = load_data;
-            end
-            if (c_load_field == 32'h1) begin
-                cmat_1$3$d = load_data;
-            end
-            if (c_load_field == 32'h2) begin
-                cmat_2$3$d = load_data;
-            end
-            if (c_load_field == 32'h3) begin
-                cvec$3$d = load_data;
-            end
-            if (c_load_field == 32'h4) begin
-                jsel_0$3$d = load_data[(32'h0)+:(5)];
-                jsel_1$3$d = load_data[(32'h5)+:(5)];
-                jsel_2$3$d = load_data[(32'ha)+:(5)];
-            end
-        end
         klmsel$d$3 = d$3;
-        klmsel$j0$3 = jsel_0$3$q;
-        klmsel$j1$3 = jsel_1$3$q;
-        klmsel$j2$3 = jsel_2$3$q;
+        klmsel$j0$3 = setup$j0$3;
+        klmsel$j1$3 = setup$j1$3;
+        klmsel$j2$3 = setup$j2$3;
         doptrf$3$d0 = klmsel$y0$3;
         doptrf$3$d1 = klmsel$y1$3;
         doptrf$3$d2 = klmsel$y2$3;
-        doptrf$3$c0 = cmat_0$3$q;
-        doptrf$3$c1 = cmat_1$3$q;
-        doptrf$3$c2 = cmat_2$3$q;
-        doptrf$3$c = cvec$3$q;
+        doptrf$3$c0 = setup$c0$3;
+        doptrf$3$c1 = setup$c1$3;
+        doptrf$3$c2 = setup$c2$3;
+        doptrf$3$c = setup$c$3;
+        doptrf$3$round_up = setup$round_up$3;
         doptrf$3$valid_in = valid_in;
-        cmat_0$4$clock = clock;
-        cmat_1$4$clock = clock;
-        cmat_2$4$clock = clock;
-        cvec$4$clock = clock;
-        jsel_0$4$clock = clock;
-        jsel_1$4$clock = clock;
-        jsel_2$4$clock = clock;
         doptrf$4$clock = clock;
-        cmat_0$4$d = cmat_0$4$q;
-        cmat_1$4$d = cmat_1$4$q;
-        cmat_2$4$d = cmat_2$4$q;
-        cvec$4$d = cvec$4$q;
-        jsel_0$4$d = jsel_0$4$q;
-        jsel_1$4$d = jsel_1$4$q;
-        jsel_2$4$d = jsel_2$4$q;
-        if (load_en & (c_load_lane == idx$4)) begin
-            if (c_load_field == 32'h0) begin
-                cmat_0$4$d = load_data;
-            end
-            if (c_load_field == 32'h1) begin
-                cmat_1$4$d = load_data;
-            end
-            if (c_load_field == 32'h2) begin
-                cmat_2$4$d = load_data;
-            end
-            if (c_load_field == 32'h3) begin
-                cvec$4$d = load_data;
-            end
-            if (c_load_field == 32'h4) begin
-                jsel_0$4$d = load_data[(32'h0)+:(5)];
-                jsel_1$4$d = load_data[(32'h5)+:(5)];
-                jsel_2$4$d = load_data[(32'ha)+:(5)];
-            end
-        end
         klmsel$d$4 = d$4;
-        klmsel$j0$4 = jsel_0$4$q;
-        klmsel$j1$4 = jsel_1$4$q;
-        klmsel$j2$4 = jsel_2$4$q;
+        klmsel$j0$4 = setup$j0$4;
+        klmsel$j1$4 = setup$j1$4;
+        klmsel$j2$4 = setup$j2$4;
         doptrf$4$d0 = klmsel$y0$4;
         doptrf$4$d1 = klmsel$y1$4;
         doptrf$4$d2 = klmsel$y2$4;
-        doptrf$4$c0 = cmat_0$4$q;
-        doptrf$4$c1 = cmat_1$4$q;
-        doptrf$4$c2 = cmat_2$4$q;
-        doptrf$4$c = cvec$4$q;
+        doptrf$4$c0 = setup$c0$4;
+        doptrf$4$c1 = setup$c1$4;
+        doptrf$4$c2 = setup$c2$4;
+        doptrf$4$c = setup$c$4;
+        doptrf$4$round_up = setup$round_up$4;
         doptrf$4$valid_in = valid_in;
-        cmat_0$5$clock = clock;
-        cmat_1$5$clock = clock;
-        cmat_2$5$clock = clock;
-        cvec$5$clock = clock;
-        jsel_0$5$clock = clock;
-        jsel_1$5$clock = clock;
-        jsel_2$5$clock = clock;
         doptrf$5$clock = clock;
-        cmat_0$5$d = cmat_0$5$q;
-        cmat_1$5$d = cmat_1$5$q;
-        cmat_2$5$d = cmat_2$5$q;
-        cvec$5$d = cvec$5$q;
-        jsel_0$5$d = jsel_0$5$q;
-        jsel_1$5$d = jsel_1$5$q;
-        jsel_2$5$d = jsel_2$5$q;
-        if (load_en & (c_load_lane == idx$5)) begin
-            if (c_load_field == 32'h0) begin
-                cmat_0$5$d = load_data;
-            end
-            if (c_load_field == 32'h1) begin
-                cmat_1$5$d = load_data;
-            end
-            if (c_load_field == 32'h2) begin
-                cmat_2$5$d = load_data;
-            end
-            if (c_load_field == 32'h3) begin
-                cvec$5$d = load_data;
-            end
-            if (c_load_field == 32'h4) begin
-                jsel_0$5$d = load_data[(32'h0)+:(5)];
-                jsel_1$5$d = load_data[(32'h5)+:(5)];
-                jsel_2$5$d = load_data[(32'ha)+:(5)];
-            end
-        end
         klmsel$d$5 = d$5;
-        klmsel$j0$5 = jsel_0$5$q;
-        klmsel$j1$5 = jsel_1$5$q;
-        klmsel$j2$5 = jsel_2$5$q;
+        klmsel$j0$5 = setup$j0$5;
+        klmsel$j1$5 = setup$j1$5;
+        klmsel$j2$5 = setup$j2$5;
         doptrf$5$d0 = klmsel$y0$5;
         doptrf$5$d1 = klmsel$y1$5;
         doptrf$5$d2 = klmsel$y2$5;
-        doptrf$5$c0 = cmat_0$5$q;
-        doptrf$5$c1 = cmat_1$5$q;
-        doptrf$5$c2 = cmat_2$5$q;
-        doptrf$5$c = cvec$5$q;
+        doptrf$5$c0 = setup$c0$5;
+        doptrf$5$c1 = setup$c1$5;
+        doptrf$5$c2 = setup$c2$5;
+        doptrf$5$c = setup$c$5;
+        doptrf$5$round_up = setup$round_up$5;
         doptrf$5$valid_in = valid_in;
-        cmat_0$6$clock = clock;
-        cmat_1$6$clock = clock;
-        cmat_2$6$clock = clock;
-        cvec$6$clock = clock;
-        jsel_0$6$clock = clock;
-        jsel_1$6$clock = clock;
-        jsel_2$6$clock = clock;
         doptrf$6$clock = clock;
-        cmat_0$6$d = cmat_0$6$q;
-        cmat_1$6$d = cmat_1$6$q;
-        cmat_2$6$d = cmat_2$6$q;
-        cvec$6$d = cvec$6$q;
-        jsel_0$6$d = jsel_0$6$q;
-        jsel_1$6$d = jsel_1$6$q;
-        jsel_2$6$d = jsel_2$6$q;
-        if (load_en & (c_load_lane == idx$6)) begin
-            if (c_load_field == 32'h0) begin
-                cmat_0$6$d = load_data;
-            end
-            if (c_load_field == 32'h1) begin
-                cmat_1$6$d = load_data;
-            end
-            if (c_load_field == 32'h2) begin
-                cmat_2$6$d = load_data;
-            end
-            if (c_load_field == 32'h3) begin
-                cvec$6$d = load_data;
-            end
-            if (c_load_field == 32'h4) begin
-                jsel_0$6$d = load_data[(32'h0)+:(5)];
-                jsel_1$6$d = load_data[(32'h5)+:(5)];
-                jsel_2$6$d = load_data[(32'ha)+:(5)];
-            end
-        end
         klmsel$d$6 = d$6;
-        klmsel$j0$6 = jsel_0$6$q;
-        klmsel$j1$6 = jsel_1$6$q;
-        klmsel$j2$6 = jsel_2$6$q;
+        klmsel$j0$6 = setup$j0$6;
+        klmsel$j1$6 = setup$j1$6;
+        klmsel$j2$6 = setup$j2$6;
         doptrf$6$d0 = klmsel$y0$6;
         doptrf$6$d1 = klmsel$y1$6;
         doptrf$6$d2 = klmsel$y2$6;
-        doptrf$6$c0 = cmat_0$6$q;
-        doptrf$6$c1 = cmat_1$6$q;
-        doptrf$6$c2 = cmat_2$6$q;
-        doptrf$6$c = cvec$6$q;
+        doptrf$6$c0 = setup$c0$6;
+        doptrf$6$c1 = setup$c1$6;
+        doptrf$6$c2 = setup$c2$6;
+        doptrf$6$c = setup$c$6;
+        doptrf$6$round_up = setup$round_up$6;
         doptrf$6$valid_in = valid_in;
-        cmat_0$7$clock = clock;
-        cmat_1$7$clock = clock;
-        cmat_2$7$clock = clock;
-        cvec$7$clock = clock;
-        jsel_0$7$clock = clock;
-        jsel_1$7$clock = clock;
-        jsel_2$7$clock = clock;
         doptrf$7$clock = clock;
-        cmat_0$7$d = cmat_0$7$q;
-        cmat_1$7$d = cmat_1$7$q;
-        cmat_2$7$d = cmat_2$7$q;
-        cvec$7$d = cvec$7$q;
-        jsel_0$7$d = jsel_0$7$q;
-        jsel_1$7$d = jsel_1$7$q;
-        jsel_2$7$d = jsel_2$7$q;
-        if (load_en & (c_load_lane == idx$7)) begin
-            if (c_load_field == 32'h0) begin
-                cmat_0$7$d = load_data;
-            end
-            if (c_load_field == 32'h1) begin
-                cmat_1$7$d = load_data;
-            end
-            if (c_load_field == 32'h2) begin
-                cmat_2$7$d = load_data;
-            end
-            if (c_load_field == 32'h3) begin
-                cvec$7$d = load_data;
-            end
-            if (c_load_field == 32'h4) begin
-                jsel_0$7$d = load_data[(32'h0)+:(5)];
-                jsel_1$7$d = load_data[(32'h5)+:(5)];
-                jsel_2$7$d = load_data[(32'ha)+:(5)];
-            end
-        end
         klmsel$d$7 = d$7;
-        klmsel$j0$7 = jsel_0$7$q;
-        klmsel$j1$7 = jsel_1$7$q;
-        klmsel$j2$7 = jsel_2$7$q;
+        klmsel$j0$7 = setup$j0$7;
+        klmsel$j1$7 = setup$j1$7;
+        klmsel$j2$7 = setup$j2$7;
         doptrf$7$d0 = klmsel$y0$7;
         doptrf$7$d1 = klmsel$y1$7;
         doptrf$7$d2 = klmsel$y2$7;
-        doptrf$7$c0 = cmat_0$7$q;
-        doptrf$7$c1 = cmat_1$7$q;
-        doptrf$7$c2 = cmat_2$7$q;
-        doptrf$7$c = cvec$7$q;
+        doptrf$7$c0 = setup$c0$7;
+        doptrf$7$c1 = setup$c1$7;
+        doptrf$7$c2 = setup$c2$7;
+        doptrf$7$c = setup$c$7;
+        doptrf$7$round_up = setup$round_up$7;
         doptrf$7$valid_in = valid_in;
-        cmat_0$8$clock = clock;
-        cmat_1$8$clock = clock;
-        cmat_2$8$clock = clock;
-        cvec$8$clock = clock;
-        jsel_0$8$clock = clock;
-        jsel_1$8$clock = clock;
-        jsel_2$8$clock = clock;
         doptrf$8$clock = clock;
-        cmat_0$8$d = cmat_0$8$q;
-        cmat_1$8$d = cmat_1$8$q;
-        cmat_2$8$d = cmat_2$8$q;
-        cvec$8$d = cvec$8$q;
-        jsel_0$8$d = jsel_0$8$q;
-        jsel_1$8$d = jsel_1$8$q;
-        jsel_2$8$d = jsel_2$8$q;
-        if (load_en & (c_load_lane == idx$8)) begin
-            if (c_load_field == 32'h0) begin
-                cmat_0$8$d = load_data;
-            end
-            if (c_load_field == 32'h1) begin
-                cmat_1$8$d = load_data;
-            end
-            if (c_load_field == 32'h2) begin
-                cmat_2$8$d = load_data;
-            end
-            if (c_load_field == 32'h3) begin
-                cvec$8$d = load_data;
-            end
-            if (c_load_field == 32'h4) begin
-                jsel_0$8$d = load_data[(32'h0)+:(5)];
-                jsel_1$8$d = load_data[(32'h5)+:(5)];
-                jsel_2$8$d = load_data[(32'ha)+:(5)];
-            end
-        end
         klmsel$d$8 = d$8;
-        klmsel$j0$8 = jsel_0$8$q;
-        klmsel$j1$8 = jsel_1$8$q;
-        klmsel$j2$8 = jsel_2$8$q;
+        klmsel$j0$8 = setup$j0$8;
+        klmsel$j1$8 = setup$j1$8;
+        klmsel$j2$8 = setup$j2$8;
         doptrf$8$d0 = klmsel$y0$8;
         doptrf$8$d1 = klmsel$y1$8;
         doptrf$8$d2 = klmsel$y2$8;
-        doptrf$8$c0 = cmat_0$8$q;
-        doptrf$8$c1 = cmat_1$8$q;
-        doptrf$8$c2 = cmat_2$8$q;
-        doptrf$8$c = cvec$8$q;
+        doptrf$8$c0 = setup$c0$8;
+        doptrf$8$c1 = setup$c1$8;
+        doptrf$8$c2 = setup$c2$8;
+        doptrf$8$c = setup$c$8;
+        doptrf$8$round_up = setup$round_up$8;
         doptrf$8$valid_in = valid_in;
-        cmat_0$9$clock = clock;
-        cmat_1$9$clock = clock;
-        cmat_2$9$clock = clock;
-        cvec$9$clock = clock;
-        jsel_0$9$clock = clock;
-        jsel_1$9$clock = clock;
-        jsel_2$9$clock = clock;
         doptrf$9$clock = clock;
-        cmat_0$9$d = cmat_0$9$q;
-        cmat_1$9$d = cmat_1$9$q;
-        cmat_2$9$d = cmat_2$9$q;
-        cvec$9$d = cvec$9$q;
-        jsel_0$9$d = jsel_0$9$q;
-        jsel_1$9$d = jsel_1$9$q;
-        jsel_2$9$d = jsel_2$9$q;
-        if (load_en & (c_load_lane == idx$9)) begin
-            if (c_load_field == 32'h0) begin
-                cmat_0$9$d = load_data;
-            end
-            if (c_load_field == 32'h1) begin
-                cmat_1$9$d = load_data;
-            end
-            if (c_load_field == 32'h2) begin
-                cmat_2$9$d = load_data;
-            end
-            if (c_load_field == 32'h3) begin
-                cvec$9$d = load_data;
-            end
-            if (c_load_field == 32'h4) begin
-                jsel_0$9$d = load_data[(32'h0)+:(5)];
-                jsel_1$9$d = load_data[(32'h5)+:(5)];
-                jsel_2$9$d = load_data[(32'ha)+:(5)];
-            end
-        end
         klmsel$d$9 = d$9;
-        klmsel$j0$9 = jsel_0$9$q;
-        klmsel$j1$9 = jsel_1$9$q;
-        klmsel$j2$9 = jsel_2$9$q;
+        klmsel$j0$9 = setup$j0$9;
+        klmsel$j1$9 = setup$j1$9;
+        klmsel$j2$9 = setup$j2$9;
         doptrf$9$d0 = klmsel$y0$9;
         doptrf$9$d1 = klmsel$y1$9;
         doptrf$9$d2 = klmsel$y2$9;
-        doptrf$9$c0 = cmat_0$9$q;
-        doptrf$9$c1 = cmat_1$9$q;
-        doptrf$9$c2 = cmat_2$9$q;
-        doptrf$9$c = cvec$9$q;
+        doptrf$9$c0 = setup$c0$9;
+        doptrf$9$c1 = setup$c1$9;
+        doptrf$9$c2 = setup$c2$9;
+        doptrf$9$c = setup$c$9;
+        doptrf$9$round_up = setup$round_up$9;
         doptrf$9$valid_in = valid_in;
-        cmat_0$10$clock = clock;
-        cmat_1$10$clock = clock;
-        cmat_2$10$clock = clock;
-        cvec$10$clock = clock;
-        jsel_0$10$clock = clock;
-        jsel_1$10$clock = clock;
-        jsel_2$10$clock = clock;
         doptrf$10$clock = clock;
-        cmat_0$10$d = cmat_0$10$q;
-        cmat_1$10$d = cmat_1$10$q;
-        cmat_2$10$d = cmat_2$10$q;
-        cvec$10$d = cvec$10$q;
-        jsel_0$10$d = jsel_0$10$q;
-        jsel_1$10$d = jsel_1$10$q;
-        jsel_2$10$d = jsel_2$10$q;
-        if (load_en & (c_load_lane == idx$10)) begin
-            if (c_load_field == 32'h0) begin
-                cmat_0$10$d = load_data;
-            end
-            if (c_load_field == 32'h1) begin
-                cmat_1$10$d = load_data;
-            end
-            if (c_load_field == 32'h2) begin
-                cmat_2$10$d = load_data;
-            end
-            if (c_load_field == 32'h3) begin
-                cvec$10$d = load_data;
-            end
-            if (c_load_field == 32'h4) begin
-                jsel_0$10$d = load_data[(32'h0)+:(5)];
-                jsel_1$10$d = load_data[(32'h5)+:(5)];
-                jsel_2$10$d = load_data[(32'ha)+:(5)];
-            end
-        end
         klmsel$d$10 = d$10;
-        klmsel$j0$10 = jsel_0$10$q;
-        klmsel$j1$10 = jsel_1$10$q;
-        klmsel$j2$10 = jsel_2$10$q;
+        klmsel$j0$10 = setup$j0$10;
+        klmsel$j1$10 = setup$j1$10;
+        klmsel$j2$10 = setup$j2$10;
         doptrf$10$d0 = klmsel$y0$10;
         doptrf$10$d1 = klmsel$y1$10;
         doptrf$10$d2 = klmsel$y2$10;
-        doptrf$10$c0 = cmat_0$10$q;
-        doptrf$10$c1 = cmat_1$10$q;
-        doptrf$10$c2 = cmat_2$10$q;
-        doptrf$10$c = cvec$10$q;
+        doptrf$10$c0 = setup$c0$10;
+        doptrf$10$c1 = setup$c1$10;
+        doptrf$10$c2 = setup$c2$10;
+        doptrf$10$c = setup$c$10;
+        doptrf$10$round_up = setup$round_up$10;
         doptrf$10$valid_in = valid_in;
-        cmat_0$11$clock = clock;
-        cmat_1$11$clock = clock;
-        cmat_2$11$clock = clock;
-        cvec$11$clock = clock;
-        jsel_0$11$clock = clock;
-        jsel_1$11$clock = clock;
-        jsel_2$11$clock = clock;
         doptrf$11$clock = clock;
-        cmat_0$11$d = cmat_0$11$q;
-        cmat_1$11$d = cmat_1$11$q;
-        cmat_2$11$d = cmat_2$11$q;
-        cvec$11$d = cvec$11$q;
-        jsel_0$11$d = jsel_0$11$q;
-        jsel_1$11$d = jsel_1$11$q;
-        jsel_2$11$d = jsel_2$11$q;
-        if (load_en & (c_load_lane == idx$11)) begin
-            if (c_load_field == 32'h0) begin
-                cmat_0$11$d = load_data;
-            end
-            if (c_load_field == 32'h1) begin
-                cmat_1$11$d = load_data;
-            end
-            if (c_load_field == 32'h2) begin
-                cmat_2$11$d = load_data;
-            end
-            if (c_load_field == 32'h3) begin
-                cvec$11$d = load_data;
-            end
-            if (c_load_field == 32'h4) begin
-                jsel_0$11$d = load_data[(32'h0)+:(5)];
-                jsel_1$11$d = load_data[(32'h5)+:(5)];
-                jsel_2$11$d = load_data[(32'ha)+:(5)];
-            end
-        end
         klmsel$d$11 = d$11;
-        klmsel$j0$11 = jsel_0$11$q;
-        klmsel$j1$11 = jsel_1$11$q;
-        klmsel$j2$11 = jsel_2$11$q;
+        klmsel$j0$11 = setup$j0$11;
+        klmsel$j1$11 = setup$j1$11;
+        klmsel$j2$11 = setup$j2$11;
         doptrf$11$d0 = klmsel$y0$11;
         doptrf$11$d1 = klmsel$y1$11;
         doptrf$11$d2 = klmsel$y2$11;
-        doptrf$11$c0 = cmat_0$11$q;
-        doptrf$11$c1 = cmat_1$11$q;
-        doptrf$11$c2 = cmat_2$11$q;
-        doptrf$11$c = cvec$11$q;
+        doptrf$11$c0 = setup$c0$11;
+        doptrf$11$c1 = setup$c1$11;
+        doptrf$11$c2 = setup$c2$11;
+        doptrf$11$c = setup$c$11;
+        doptrf$11$round_up = setup$round_up$11;
         doptrf$11$valid_in = valid_in;
-        cmat_0$12$clock = clock;
-        cmat_1$12$clock = clock;
-        cmat_2$12$clock = clock;
-        cvec$12$clock = clock;
-        jsel_0$12$clock = clock;
-        jsel_1$12$clock = clock;
-        jsel_2$12$clock = clock;
         doptrf$12$clock = clock;
-        cmat_0$12$d = cmat_0$12$q;
-        cmat_1$12$d = cmat_1$12$q;
-        cmat_2$12$d = cmat_2$12$q;
-        cvec$12$d = cvec$12$q;
-        jsel_0$12$d = jsel_0$12$q;
-        jsel_1$12$d = jsel_1$12$q;
-        jsel_2$12$d = jsel_2$12$q;
-        if (load_en & (c_load_lane == idx$12)) begin
-            if (c_load_field == 32'h0) begin
-                cmat_0$12$d = load_data;
-            end
-            if (c_load_field == 32'h1) begin
-                cmat_1$12$d = load_data;
-            end
-            if (c_load_field == 32'h2) begin
-                cmat_2$12$d = load_data;
-            end
-            if (c_load_field == 32'h3) begin
-                cvec$12$d = load_data;
-            end
-            if (c_load_field == 32'h4) begin
-                jsel_0$12$d = load_data[(32'h0)+:(5)];
-                jsel_1$12$d = load_data[(32'h5)+:(5)];
-                jsel_2$12$d = load_data[(32'ha)+:(5)];
-            end
-        end
         klmsel$d$12 = d$12;
-        klmsel$j0$12 = jsel_0$12$q;
-        klmsel$j1$12 = jsel_1$12$q;
-        klmsel$j2$12 = jsel_2$12$q;
+        klmsel$j0$12 = setup$j0$12;
+        klmsel$j1$12 = setup$j1$12;
+        klmsel$j2$12 = setup$j2$12;
         doptrf$12$d0 = klmsel$y0$12;
         doptrf$12$d1 = klmsel$y1$12;
         doptrf$12$d2 = klmsel$y2$12;
-        doptrf$12$c0 = cmat_0$12$q;
-        doptrf$12$c1 = cmat_1$12$q;
-        doptrf$12$c2 = cmat_2$12$q;
-        doptrf$12$c = cvec$12$q;
+        doptrf$12$c0 = setup$c0$12;
+        doptrf$12$c1 = setup$c1$12;
+        doptrf$12$c2 = setup$c2$12;
+        doptrf$12$c = setup$c$12;
+        doptrf$12$round_up = setup$round_up$12;
         doptrf$12$valid_in = valid_in;
-        cmat_0$13$clock = clock;
-        cmat_1$13$clock = clock;
-        cmat_2$13$clock = clock;
-        cvec$13$clock = clock;
-        jsel_0$13$clock = clock;
-        jsel_1$13$clock = clock;
-        jsel_2$13$clock = clock;
         doptrf$13$clock = clock;
-        cmat_0$13$d = cmat_0$13$q;
-        cmat_1$13$d = cmat_1$13$q;
-        cmat_2$13$d = cmat_2$13$q;
-        cvec$13$d = cvec$13$q;
-        jsel_0$13$d = jsel_0$13$q;
-        jsel_1$13$d = jsel_1$13$q;
-        jsel_2$13$d = jsel_2$13$q;
-        if (load_en & (c_load_lane == idx$13)) begin
-            if (c_load_field == 32'h0) begin
-                cmat_0$13$d = load_data;
-            end
-            if (c_load_field == 32'h1) begin
-                cmat_1$13$d = load_data;
-            end
-            if (c_load_field == 32'h2) begin
-                cmat_2$13$d = load_data;
-            end
-            if (c_load_field == 32'h3) begin
-                cvec$13$d = load_data;
-            end
-            if (c_load_field == 32'h4) begin
-                jsel_0$13$d = load_data[(32'h0)+:(5)];
-                jsel_1$13$d = load_data[(32'h5)+:(5)];
-                jsel_2$13$d = load_data[(32'ha)+:(5)];
-            end
-        end
         klmsel$d$13 = d$13;
-        klmsel$j0$13 = jsel_0$13$q;
-        klmsel$j1$13 = jsel_1$13$q;
-        klmsel$j2$13 = jsel_2$13$q;
+        klmsel$j0$13 = setup$j0$13;
+        klmsel$j1$13 = setup$j1$13;
+        klmsel$j2$13 = setup$j2$13;
         doptrf$13$d0 = klmsel$y0$13;
         doptrf$13$d1 = klmsel$y1$13;
         doptrf$13$d2 = klmsel$y2$13;
-        doptrf$13$c0 = cmat_0$13$q;
-        doptrf$13$c1 = cmat_1$13$q;
-        doptrf$13$c2 = cmat_2$13$q;
-        doptrf$13$c = cvec$13$q;
+        doptrf$13$c0 = setup$c0$13;
+        doptrf$13$c1 = setup$c1$13;
+        doptrf$13$c2 = setup$c2$13;
+        doptrf$13$c = setup$c$13;
+        doptrf$13$round_up = setup$round_up$13;
         doptrf$13$valid_in = valid_in;
-        cmat_0$14$clock = clock;
-        cmat_1$14$clock = clock;
-        cmat_2$14$clock = clock;
-        cvec$14$clock = clock;
-        jsel_0$14$clock = clock;
-        jsel_1$14$clock = clock;
-        jsel_2$14$clock = clock;
         doptrf$14$clock = clock;
-        cmat_0$14$d = cmat_0$14$q;
-        cmat_1$14$d = cmat_1$14$q;
-        cmat_2$14$d = cmat_2$14$q;
-        cvec$14$d = cvec$14$q;
-        jsel_0$14$d = jsel_0$14$q;
-        jsel_1$14$d = jsel_1$14$q;
-        jsel_2$14$d = jsel_2$14$q;
-        if (load_en & (c_load_lane == idx$14)) begin
-            if (c_load_field == 32'h0) begin
-                cmat_0$14$d = load_data;
-            end
-            if (c_load_field == 32'h1) begin
-                cmat_1$14$d = load_data;
-            end
-            if (c_load_field == 32'h2) begin
-                cmat_2$14$d = load_data;
-            end
-            if (c_load_field == 32'h3) begin
-                cvec$14$d = load_data;
-            end
-            if (c_load_field == 32'h4) begin
-                jsel_0$14$d = load_data[(32'h0)+:(5)];
-                jsel_1$14$d = load_data[(32'h5)+:(5)];
-                jsel_2$14$d = load_data[(32'ha)+:(5)];
-            end
-        end
         klmsel$d$14 = d$14;
-        klmsel$j0$14 = jsel_0$14$q;
-        klmsel$j1$14 = jsel_1$14$q;
-        klmsel$j2$14 = jsel_2$14$q;
+        klmsel$j0$14 = setup$j0$14;
+        klmsel$j1$14 = setup$j1$14;
+        klmsel$j2$14 = setup$j2$14;
         doptrf$14$d0 = klmsel$y0$14;
         doptrf$14$d1 = klmsel$y1$14;
         doptrf$14$d2 = klmsel$y2$14;
-        doptrf$14$c0 = cmat_0$14$q;
-        doptrf$14$c1 = cmat_1$14$q;
-        doptrf$14$c2 = cmat_2$14$q;
-        doptrf$14$c = cvec$14$q;
+        doptrf$14$c0 = setup$c0$14;
+        doptrf$14$c1 = setup$c1$14;
+        doptrf$14$c2 = setup$c2$14;
+        doptrf$14$c = setup$c$14;
+        doptrf$14$round_up = setup$round_up$14;
         doptrf$14$valid_in = valid_in;
-        cmat_0$15$clock = clock;
-        cmat_1$15$clock = clock;
-        cmat_2$15$clock = clock;
-        cvec$15$clock = clock;
-        jsel_0$15$clock = clock;
-        jsel_1$15$clock = clock;
-        jsel_2$15$clock = clock;
         doptrf$15$clock = clock;
-        cmat_0$15$d = cmat_0$15$q;
-        cmat_1$15$d = cmat_1$15$q;
-        cmat_2$15$d = cmat_2$15$q;
-        cvec$15$d = cvec$15$q;
-        jsel_0$15$d = jsel_0$15$q;
-        jsel_1$15$d = jsel_1$15$q;
-        jsel_2$15$d = jsel_2$15$q;
-        if (load_en & (c_load_lane == idx$15)) begin
-            if (c_load_field == 32'h0) begin
-                cmat_0$15$d = load_data;
-            end
-            if (c_load_field == 32'h1) begin
-                cmat_1$15$d = load_data;
-            end
-            if (c_load_field == 32'h2) begin
-                cmat_2$15$d = load_data;
-            end
-            if (c_load_field == 32'h3) begin
-                cvec$15$d = load_data;
-            end
-            if (c_load_field == 32'h4) begin
-                jsel_0$15$d = load_data[(32'h0)+:(5)];
-                jsel_1$15$d = load_data[(32'h5)+:(5)];
-                jsel_2$15$d = load_data[(32'ha)+:(5)];
-            end
-        end
         klmsel$d$15 = d$15;
-        klmsel$j0$15 = jsel_0$15$q;
-        klmsel$j1$15 = jsel_1$15$q;
-        klmsel$j2$15 = jsel_2$15$q;
+        klmsel$j0$15 = setup$j0$15;
+        klmsel$j1$15 = setup$j1$15;
+        klmsel$j2$15 = setup$j2$15;
         doptrf$15$d0 = klmsel$y0$15;
         doptrf$15$d1 = klmsel$y1$15;
         doptrf$15$d2 = klmsel$y2$15;
-        doptrf$15$c0 = cmat_0$15$q;
-        doptrf$15$c1 = cmat_1$15$q;
-        doptrf$15$c2 = cmat_2$15$q;
-        doptrf$15$c = cvec$15$q;
+        doptrf$15$c0 = setup$c0$15;
+        doptrf$15$c1 = setup$c1$15;
+        doptrf$15$c2 = setup$c2$15;
+        doptrf$15$c = setup$c$15;
+        doptrf$15$round_up = setup$round_up$15;
         doptrf$15$valid_in = valid_in;
-        cmat_0$16$clock = clock;
-        cmat_1$16$clock = clock;
-        cmat_2$16$clock = clock;
-        cvec$16$clock = clock;
-        jsel_0$16$clock = clock;
-        jsel_1$16$clock = clock;
-        jsel_2$16$clock = clock;
         doptrf$16$clock = clock;
-        cmat_0$16$d = cmat_0$16$q;
-        cmat_1$16$d = cmat_1$16$q;
-        cmat_2$16$d = cmat_2$16$q;
-        cvec$16$d = cvec$16$q;
-        jsel_0$16$d = jsel_0$16$q;
-        jsel_1$16$d = jsel_1$16$q;
-        jsel_2$16$d = jsel_2$16$q;
-        if (load_en & (c_load_lane == idx$16)) begin
-            if (c_load_field == 32'h0) begin
-                cmat_0$16$d = load_data;
-            end
-            if (c_load_field == 32'h1) begin
-                cmat_1$16$d = load_data;
-            end
-            if (c_load_field == 32'h2) begin
-                cmat_2$16$d = load_data;
-            end
-            if (c_load_field == 32'h3) begin
-                cvec$16$d = load_data;
-            end
-            if (c_load_field == 32'h4) begin
-                jsel_0$16$d = load_data[(32'h0)+:(5)];
-                jsel_1$16$d = load_data[(32'h5)+:(5)];
-                jsel_2$16$d = load_data[(32'ha)+:(5)];
-            end
-        end
         klmsel$d$16 = d$16;
-        klmsel$j0$16 = jsel_0$16$q;
-        klmsel$j1$16 = jsel_1$16$q;
-        klmsel$j2$16 = jsel_2$16$q;
+        klmsel$j0$16 = setup$j0$16;
+        klmsel$j1$16 = setup$j1$16;
+        klmsel$j2$16 = setup$j2$16;
         doptrf$16$d0 = klmsel$y0$16;
         doptrf$16$d1 = klmsel$y1$16;
         doptrf$16$d2 = klmsel$y2$16;
-        doptrf$16$c0 = cmat_0$16$q;
-        doptrf$16$c1 = cmat_1$16$q;
-        doptrf$16$c2 = cmat_2$16$q;
-        doptrf$16$c = cvec$16$q;
+        doptrf$16$c0 = setup$c0$16;
+        doptrf$16$c1 = setup$c1$16;
+        doptrf$16$c2 = setup$c2$16;
+        doptrf$16$c = setup$c$16;
+        doptrf$16$round_up = setup$round_up$16;
         doptrf$16$valid_in = valid_in;
-        cmat_0$17$clock = clock;
-        cmat_1$17$clock = clock;
-        cmat_2$17$clock = clock;
-        cvec$17$clock = clock;
-        jsel_0$17$clock = clock;
-        jsel_1$17$clock = clock;
-        jsel_2$17$clock = clock;
         doptrf$17$clock = clock;
-        cmat_0$17$d = cmat_0$17$q;
-        cmat_1$17$d = cmat_1$17$q;
-        cmat_2$17$d = cmat_2$17$q;
-        cvec$17$d = cvec$17$q;
-        jsel_0$17$d = jsel_0$17$q;
-        jsel_1$17$d = jsel_1$17$q;
-        jsel_2$17$d = jsel_2$17$q;
-        if (load_en & (c_load_lane == idx$17)) begin
-            if (c_load_field == 32'h0) begin
-                cmat_0$17$d = load_data;
-            end
-            if (c_load_field == 32'h1) begin
-                cmat_1$17$d = load_data;
-            end
-            if (c_load_field == 32'h2) begin
-                cmat_2$17$d = load_data;
-            end
-            if (c_load_field == 32'h3) begin
-                cvec$17$d = load_data;
-            end
-            if (c_load_field == 32'h4) begin
-                jsel_0$17$d = load_data[(32'h0)+:(5)];
-                jsel_1$17$d = load_data[(32'h5)+:(5)];
-                jsel_2$17$d = load_data[(32'ha)+:(5)];
-            end
-        end
         klmsel$d$17 = d$17;
-        klmsel$j0$17 = jsel_0$17$q;
-        klmsel$j1$17 = jsel_1$17$q;
-        klmsel$j2$17 = jsel_2$17$q;
+        klmsel$j0$17 = setup$j0$17;
+        klmsel$j1$17 = setup$j1$17;
+        klmsel$j2$17 = setup$j2$17;
         doptrf$17$d0 = klmsel$y0$17;
         doptrf$17$d1 = klmsel$y1$17;
         doptrf$17$d2 = klmsel$y2$17;
-        doptrf$17$c0 = cmat_0$17$q;
-        doptrf$17$c1 = cmat_1$17$q;
-        doptrf$17$c2 = cmat_2$17$q;
-        doptrf$17$c = cvec$17$q;
+        doptrf$17$c0 = setup$c0$17;
+        doptrf$17$c1 = setup$c1$17;
+        doptrf$17$c2 = setup$c2$17;
+        doptrf$17$c = setup$c$17;
+        doptrf$17$round_up = setup$round_up$17;
         doptrf$17$valid_in = valid_in;
-        cmat_0$18$clock = clock;
-        cmat_1$18$clock = clock;
-        cmat_2$18$clock = clock;
-        cvec$18$clock = clock;
-        jsel_0$18$clock = clock;
-        jsel_1$18$clock = clock;
-        jsel_2$18$clock = clock;
         doptrf$18$clock = clock;
-        cmat_0$18$d = cmat_0$18$q;
-        cmat_1$18$d = cmat_1$18$q;
-        cmat_2$18$d = cmat_2$18$q;
-        cvec$18$d = cvec$18$q;
-        jsel_0$18$d = jsel_0$18$q;
-        jsel_1$18$d = jsel_1$18$q;
-        jsel_2$18$d = jsel_2$18$q;
-        if (load_en & (c_load_lane == idx$18)) begin
-            if (c_load_field == 32'h0) begin
-                cmat_0$18$d = load_data;
-            end
-            if (c_load_field == 32'h1) begin
-                cmat_1$18$d = load_data;
-            end
-            if (c_load_field == 32'h2) begin
-                cmat_2$18$d = load_data;
-            end
-            if (c_load_field == 32'h3) begin
-                cvec$18$d = load_data;
-            end
-            if (c_load_field == 32'h4) begin
-                jsel_0$18$d = load_data[(32'h0)+:(5)];
-                jsel_1$18$d = load_data[(32'h5)+:(5)];
-                jsel_2$18$d = load_data[(32'ha)+:(5)];
-            end
-        end
         klmsel$d$18 = d$18;
-        klmsel$j0$18 = jsel_0$18$q;
-        klmsel$j1$18 = jsel_1$18$q;
-        klmsel$j2$18 = jsel_2$18$q;
+        klmsel$j0$18 = setup$j0$18;
+        klmsel$j1$18 = setup$j1$18;
+        klmsel$j2$18 = setup$j2$18;
         doptrf$18$d0 = klmsel$y0$18;
         doptrf$18$d1 = klmsel$y1$18;
         doptrf$18$d2 = klmsel$y2$18;
-        doptrf$18$c0 = cmat_0$18$q;
-        doptrf$18$c1 = cmat_1$18$q;
-        doptrf$18$c2 = cmat_2$18$q;
-        doptrf$18$c = cvec$18$q;
+        doptrf$18$c0 = setup$c0$18;
+        doptrf$18$c1 = setup$c1$18;
+        doptrf$18$c2 = setup$c2$18;
+        doptrf$18$c = setup$c$18;
+        doptrf$18$round_up = setup$round_up$18;
         doptrf$18$valid_in = valid_in;
-        cmat_0$19$clock = clock;
-        cmat_1$19$clock = clock;
-        cmat_2$19$clock = clock;
-        cvec$19$clock = clock;
-        jsel_0$19$clock = clock;
-        jsel_1$19$clock = clock;
-        jsel_2$19$clock = clock;
         doptrf$19$clock = clock;
-        cmat_0$19$d = cmat_0$19$q;
-        cmat_1$19$d = cmat_1$19$q;
-        cmat_2$19$d = cmat_2$19$q;
-        cvec$19$d = cvec$19$q;
-        jsel_0$19$d = jsel_0$19$q;
-        jsel_1$19$d = jsel_1$19$q;
-        jsel_2$19$d = jsel_2$19$q;
-        if (load_en & (c_load_lane == idx$19)) begin
-            if (c_load_field == 32'h0) begin
-                cmat_0$19$d = load_data;
-            end
-            if (c_load_field == 32'h1) begin
-                cmat_1$19$d = load_data;
-            end
-            if (c_load_field == 32'h2) begin
-                cmat_2$19$d = load_data;
-            end
-            if (c_load_field == 32'h3) begin
-                cvec$19$d = load_data;
-            end
-            if (c_load_field == 32'h4) begin
-                jsel_0$19$d = load_data[(32'h0)+:(5)];
-                jsel_1$19$d = load_data[(32'h5)+:(5)];
-                jsel_2$19$d = load_data[(32'ha)+:(5)];
-            end
-        end
         klmsel$d$19 = d$19;
-        klmsel$j0$19 = jsel_0$19$q;
-        klmsel$j1$19 = jsel_1$19$q;
-        klmsel$j2$19 = jsel_2$19$q;
+        klmsel$j0$19 = setup$j0$19;
+        klmsel$j1$19 = setup$j1$19;
+        klmsel$j2$19 = setup$j2$19;
         doptrf$19$d0 = klmsel$y0$19;
         doptrf$19$d1 = klmsel$y1$19;
         doptrf$19$d2 = klmsel$y2$19;
-        doptrf$19$c0 = cmat_0$19$q;
-        doptrf$19$c1 = cmat_1$19$q;
-        doptrf$19$c2 = cmat_2$19$q;
-        doptrf$19$c = cvec$19$q;
+        doptrf$19$c0 = setup$c0$19;
+        doptrf$19$c1 = setup$c1$19;
+        doptrf$19$c2 = setup$c2$19;
+        doptrf$19$c = setup$c$19;
+        doptrf$19$round_up = setup$round_up$19;
         doptrf$19$valid_in = valid_in;
-        cmat_0$20$clock = clock;
-        cmat_1$20$clock = clock;
-        cmat_2$20$clock = clock;
-        cvec$20$clock = clock;
-        jsel_0$20$clock = clock;
-        jsel_1$20$clock = clock;
-        jsel_2$20$clock = clock;
         doptrf$20$clock = clock;
-        cmat_0$20$d = cmat_0$20$q;
-        cmat_1$20$d = cmat_1$20$q;
-        cmat_2$20$d = cmat_2$20$q;
-        cvec$20$d = cvec$20$q;
-        jsel_0$20$d = jsel_0$20$q;
-        jsel_1$20$d = jsel_1$20$q;
-        jsel_2$20$d = jsel_2$20$q;
-        if (load_en & (c_load_lane == idx$20)) begin
-            if (c_load_field == 32'h0) begin
-                cmat_0$20$d = load_data;
-            end
-            if (c_load_field == 32'h1) begin
-                cmat_1$20$d = load_data;
-            end
-            if (c_load_field == 32'h2) begin
-                cmat_2$20$d = load_data;
-            end
-            if (c_load_field == 32'h3) begin
-                cvec$20$d = load_data;
-            end
-            if (c_load_field == 32'h4) begin
-                jsel_0$20$d = load_data[(32'h0)+:(5)];
-                jsel_1$20$d = load_data[(32'h5)+:(5)];
-                jsel_2$20$d = load_data[(32'ha)+:(5)];
-            end
-        end
         klmsel$d$20 = d$20;
-        klmsel$j0$20 = jsel_0$20$q;
-        klmsel$j1$20 = jsel_1$20$q;
-        klmsel$j2$20 = jsel_2$20$q;
+        klmsel$j0$20 = setup$j0$20;
+        klmsel$j1$20 = setup$j1$20;
+        klmsel$j2$20 = setup$j2$20;
         doptrf$20$d0 = klmsel$y0$20;
         doptrf$20$d1 = klmsel$y1$20;
         doptrf$20$d2 = klmsel$y2$20;
-        doptrf$20$c0 = cmat_0$20$q;
-        doptrf$20$c1 = cmat_1$20$q;
-        doptrf$20$c2 = cmat_2$20$q;
-        doptrf$20$c = cvec$20$q;
+        doptrf$20$c0 = setup$c0$20;
+        doptrf$20$c1 = setup$c1$20;
+        doptrf$20$c2 = setup$c2$20;
+        doptrf$20$c = setup$c$20;
+        doptrf$20$round_up = setup$round_up$20;
         doptrf$20$valid_in = valid_in;
-        cmat_0$21$clock = clock;
-        cmat_1$21$clock = clock;
-        cmat_2$21$clock = clock;
-        cvec$21$clock = clock;
-        jsel_0$21$clock = clock;
-        jsel_1$21$clock = clock;
-        jsel_2$21$clock = clock;
         doptrf$21$clock = clock;
-        cmat_0$21$d = cmat_0$21$q;
-        cmat_1$21$d = cmat_1$21$q;
-        cmat_2$21$d = cmat_2$21$q;
-        cvec$21$d = cvec$21$q;
-        jsel_0$21$d = jsel_0$21$q;
-        jsel_1$21$d = jsel_1$21$q;
-        jsel_2$21$d = jsel_2$21$q;
-        if (load_en & (c_load_lane == idx$21)) begin
-            if (c_load_field == 32'h0) begin
-                cmat_0$21$d = load_data;
-            end
-            if (c_load_field == 32'h1) begin
-                cmat_1$21$d = load_data;
-            end
-            if (c_load_field == 32'h2) begin
-                cmat_2$21$d = load_data;
-            end
-            if (c_load_field == 32'h3) begin
-                cvec$21$d = load_data;
-            end
-            if (c_load_field == 32'h4) begin
-                jsel_0$21$d = load_data[(32'h0)+:(5)];
-                jsel_1$21$d = load_data[(32'h5)+:(5)];
-                jsel_2$21$d = load_data[(32'ha)+:(5)];
-            end
-        end
         klmsel$d$21 = d$21;
-        klmsel$j0$21 = jsel_0$21$q;
-        klmsel$j1$21 = jsel_1$21$q;
-        klmsel$j2$21 = jsel_2$21$q;
+        klmsel$j0$21 = setup$j0$21;
+        klmsel$j1$21 = setup$j1$21;
+        klmsel$j2$21 = setup$j2$21;
         doptrf$21$d0 = klmsel$y0$21;
         doptrf$21$d1 = klmsel$y1$21;
         doptrf$21$d2 = klmsel$y2$21;
-        doptrf$21$c0 = cmat_0$21$q;
-        doptrf$21$c1 = cmat_1$21$q;
-        doptrf$21$c2 = cmat_2$21$q;
-        doptrf$21$c = cvec$21$q;
+        doptrf$21$c0 = setup$c0$21;
+        doptrf$21$c1 = setup$c1$21;
+        doptrf$21$c2 = setup$c2$21;
+        doptrf$21$c = setup$c$21;
+        doptrf$21$round_up = setup$round_up$21;
         doptrf$21$valid_in = valid_in;
-        cmat_0$22$clock = clock;
-        cmat_1$22$clock = clock;
-        cmat_2$22$clock = clock;
-        cvec$22$clock = clock;
-        jsel_0$22$clock = clock;
-        jsel_1$22$clock = clock;
-        jsel_2$22$clock = clock;
         doptrf$22$clock = clock;
-        cmat_0$22$d = cmat_0$22$q;
-        cmat_1$22$d = cmat_1$22$q;
-        cmat_2$22$d = cmat_2$22$q;
-        cvec$22$d = cvec$22$q;
-        jsel_0$22$d = jsel_0$22$q;
-        jsel_1$22$d = jsel_1$22$q;
-        jsel_2$22$d = jsel_2$22$q;
-        if (load_en & (c_load_lane == idx$22)) begin
-            if (c_load_field == 32'h0) begin
-                cmat_0$22$d = load_data;
-            end
-            if (c_load_field == 32'h1) begin
-                cmat_1$22$d = load_data;
-            end
-            if (c_load_field == 32'h2) begin
-                cmat_2$22$d = load_data;
-            end
-            if (c_load_field == 32'h3) begin
-                cvec$22$d = load_data;
-            end
-            if (c_load_field == 32'h4) begin
-                jsel_0$22$d = load_data[(32'h0)+:(5)];
-                jsel_1$22$d = load_data[(32'h5)+:(5)];
-                jsel_2$22$d = load_data[(32'ha)+:(5)];
-            end
-        end
         klmsel$d$22 = d$22;
-        klmsel$j0$22 = jsel_0$22$q;
-        klmsel$j1$22 = jsel_1$22$q;
-        klmsel$j2$22 = jsel_2$22$q;
+        klmsel$j0$22 = setup$j0$22;
+        klmsel$j1$22 = setup$j1$22;
+        klmsel$j2$22 = setup$j2$22;
         doptrf$22$d0 = klmsel$y0$22;
         doptrf$22$d1 = klmsel$y1$22;
         doptrf$22$d2 = klmsel$y2$22;
-        doptrf$22$c0 = cmat_0$22$q;
-        doptrf$22$c1 = cmat_1$22$q;
-        doptrf$22$c2 = cmat_2$22$q;
-        doptrf$22$c = cvec$22$q;
+        doptrf$22$c0 = setup$c0$22;
+        doptrf$22$c1 = setup$c1$22;
+        doptrf$22$c2 = setup$c2$22;
+        doptrf$22$c = setup$c$22;
+        doptrf$22$round_up = setup$round_up$22;
         doptrf$22$valid_in = valid_in;
-        cmat_0$23$clock = clock;
-        cmat_1$23$clock = clock;
-        cmat_2$23$clock = clock;
-        cvec$23$clock = clock;
-        jsel_0$23$clock = clock;
-        jsel_1$23$clock = clock;
-        jsel_2$23$clock = clock;
         doptrf$23$clock = clock;
-        cmat_0$23$d = cmat_0$23$q;
-        cmat_1$23$d = cmat_1$23$q;
-        cmat_2$23$d = cmat_2$23$q;
-        cvec$23$d = cvec$23$q;
-        jsel_0$23$d = jsel_0$23$q;
-        jsel_1$23$d = jsel_1$23$q;
-        jsel_2$23$d = jsel_2$23$q;
-        if (load_en & (c_load_lane == idx$23)) begin
-            if (c_load_field == 32'h0) begin
-                cmat_0$23$d = load_data;
-            end
-            if (c_load_field == 32'h1) begin
-                cmat_1$23$d = load_data;
-            end
-            if (c_load_field == 32'h2) begin
-                cmat_2$23$d = load_data;
-            end
-            if (c_load_field == 32'h3) begin
-                cvec$23$d = load_data;
-            end
-            if (c_load_field == 32'h4) begin
-                jsel_0$23$d = load_data[(32'h0)+:(5)];
-                jsel_1$23$d = load_data[(32'h5)+:(5)];
-                jsel_2$23$d = load_data[(32'ha)+:(5)];
-            end
-        end
         klmsel$d$23 = d$23;
-        klmsel$j0$23 = jsel_0$23$q;
-        klmsel$j1$23 = jsel_1$23$q;
-        klmsel$j2$23 = jsel_2$23$q;
+        klmsel$j0$23 = setup$j0$23;
+        klmsel$j1$23 = setup$j1$23;
+        klmsel$j2$23 = setup$j2$23;
         doptrf$23$d0 = klmsel$y0$23;
         doptrf$23$d1 = klmsel$y1$23;
         doptrf$23$d2 = klmsel$y2$23;
-        doptrf$23$c0 = cmat_0$23$q;
-        doptrf$23$c1 = cmat_1$23$q;
-        doptrf$23$c2 = cmat_2$23$q;
-        doptrf$23$c = cvec$23$q;
+        doptrf$23$c0 = setup$c0$23;
+        doptrf$23$c1 = setup$c1$23;
+        doptrf$23$c2 = setup$c2$23;
+        doptrf$23$c = setup$c$23;
+        doptrf$23$round_up = setup$round_up$23;
         doptrf$23$valid_in = valid_in;
         doptrf$0$e = e$12;
         doptrf$1$e = e$13;
@@ -6607,7 +4911,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7
 endmodule // top$dop
 
 
-module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
+module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,round_up,s,flag,valid_out);
     
     // Module arguments
     input wire  clock;
@@ -6620,6 +4924,7 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
     input wire  [23:0] c;
     input wire  [23:0] e;
     input wire  valid_in;
+    input wire  round_up;
     output reg  [23:0] s;
     output reg  flag;
     output reg  valid_out;
@@ -6652,24 +4957,42 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
     reg  [23:0] s1_e$d;
     wire  [23:0] s1_e$q;
     reg  s1_e$clock;
+    reg  s1_round$d;
+    wire  s1_round$q;
+    reg  s1_round$clock;
+    reg  r_mul$clock;
+    reg  r_mul$d;
+    wire  r_mul$q;
+    reg  r_sum$clock;
+    reg  r_sum$d;
+    wire  r_sum$q;
+    reg  r_u$clock;
+    reg  r_u$d;
+    wire  r_u$q;
+    reg  r_s$clock;
+    reg  r_s$d;
+    wire  r_s$q;
     reg  mul_0$clock;
     reg  [23:0] mul_0$a;
     reg  [23:0] mul_0$b;
     reg  mul_0$valid_in;
     wire  [23:0] mul_0$y;
     wire  mul_0$valid_out;
+    reg  mul_0$round_up;
     reg  mul_1$clock;
     reg  [23:0] mul_1$a;
     reg  [23:0] mul_1$b;
     reg  mul_1$valid_in;
     wire  [23:0] mul_1$y;
     wire  mul_1$valid_out;
+    reg  mul_1$round_up;
     reg  mul_2$clock;
     reg  [23:0] mul_2$a;
     reg  [23:0] mul_2$b;
     reg  mul_2$valid_in;
     wire  [23:0] mul_2$y;
     wire  mul_2$valid_out;
+    reg  mul_2$round_up;
     reg  [23:0] c_2$d;
     wire  [23:0] c_2$q;
     reg  c_2$clock;
@@ -6689,6 +5012,7 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
     reg  add_0$valid_in;
     wire  [23:0] add_0$y;
     wire  add_0$valid_out;
+    reg  add_0$round_up;
     reg  add_1$clock;
     reg  [23:0] add_1$a;
     reg  [23:0] add_1$b;
@@ -6696,6 +5020,7 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
     reg  add_1$valid_in;
     wire  [23:0] add_1$y;
     wire  add_1$valid_out;
+    reg  add_1$round_up;
     reg  add_2$clock;
     reg  [23:0] add_2$a;
     reg  [23:0] add_2$b;
@@ -6703,6 +5028,7 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
     reg  add_2$valid_in;
     wire  [23:0] add_2$y;
     wire  add_2$valid_out;
+    reg  add_2$round_up;
     reg  add_3$clock;
     reg  [23:0] add_3$a;
     reg  [23:0] add_3$b;
@@ -6710,6 +5036,7 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
     reg  add_3$valid_in;
     wire  [23:0] add_3$y;
     wire  add_3$valid_out;
+    reg  add_3$round_up;
     reg  [23:0] e_2$d;
     wire  [23:0] e_2$q;
     reg  e_2$clock;
@@ -6802,13 +5129,39 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
         .q(s1_e$q),
         .clock(s1_e$clock)
     );
+    top$cnt_dop$pending s1_round(
+        .d(s1_round$d),
+        .q(s1_round$q),
+        .clock(s1_round$clock)
+    );
+    top$dop$doptrf$0$r_mul r_mul(
+        .clock(r_mul$clock),
+        .d(r_mul$d),
+        .q(r_mul$q)
+    );
+    top$dop$doptrf$0$r_mul r_sum(
+        .clock(r_sum$clock),
+        .d(r_sum$d),
+        .q(r_sum$q)
+    );
+    top$dop$doptrf$0$r_mul r_u(
+        .clock(r_u$clock),
+        .d(r_u$d),
+        .q(r_u$q)
+    );
+    top$dop$doptrf$0$r_mul r_s(
+        .clock(r_s$clock),
+        .d(r_s$d),
+        .q(r_s$q)
+    );
     top$dop$doptrf$0$mul_0 mul_0(
         .clock(mul_0$clock),
         .a(mul_0$a),
         .b(mul_0$b),
         .valid_in(mul_0$valid_in),
         .y(mul_0$y),
-        .valid_out(mul_0$valid_out)
+        .valid_out(mul_0$valid_out),
+        .round_up(mul_0$round_up)
     );
     top$dop$doptrf$0$mul_0 mul_1(
         .clock(mul_1$clock),
@@ -6816,7 +5169,8 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
         .b(mul_1$b),
         .valid_in(mul_1$valid_in),
         .y(mul_1$y),
-        .valid_out(mul_1$valid_out)
+        .valid_out(mul_1$valid_out),
+        .round_up(mul_1$round_up)
     );
     top$dop$doptrf$0$mul_0 mul_2(
         .clock(mul_2$clock),
@@ -6824,7 +5178,8 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
         .b(mul_2$b),
         .valid_in(mul_2$valid_in),
         .y(mul_2$y),
-        .valid_out(mul_2$valid_out)
+        .valid_out(mul_2$valid_out),
+        .round_up(mul_2$round_up)
     );
     top$base_na c_2(
         .d(c_2$d),
@@ -6853,7 +5208,8 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
         .sub(add_0$sub),
         .valid_in(add_0$valid_in),
         .y(add_0$y),
-        .valid_out(add_0$valid_out)
+        .valid_out(add_0$valid_out),
+        .round_up(add_0$round_up)
     );
     top$dop$doptrf$0$add_0 add_1(
         .clock(add_1$clock),
@@ -6862,7 +5218,8 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
         .sub(add_1$sub),
         .valid_in(add_1$valid_in),
         .y(add_1$y),
-        .valid_out(add_1$valid_out)
+        .valid_out(add_1$valid_out),
+        .round_up(add_1$round_up)
     );
     top$dop$doptrf$0$add_0 add_2(
         .clock(add_2$clock),
@@ -6871,7 +5228,8 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
         .sub(add_2$sub),
         .valid_in(add_2$valid_in),
         .y(add_2$y),
-        .valid_out(add_2$valid_out)
+        .valid_out(add_2$valid_out),
+        .round_up(add_2$round_up)
     );
     top$dop$doptrf$0$add_0 add_3(
         .clock(add_3$clock),
@@ -6880,7 +5238,8 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
         .sub(add_3$sub),
         .valid_in(add_3$valid_in),
         .y(add_3$y),
-        .valid_out(add_3$valid_out)
+        .valid_out(add_3$valid_out),
+        .round_up(add_3$round_up)
     );
     top$base_na e_2(
         .d(e_2$d),
@@ -6959,6 +5318,7 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
         s1_c2$clock = clock;
         s1_c$clock = clock;
         s1_e$clock = clock;
+        s1_round$clock = clock;
         s1_valid$d = s1_valid$q;
         s1_d0$d = s1_d0$q;
         s1_d1$d = s1_d1$q;
@@ -6968,6 +5328,11 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
         s1_c2$d = s1_c2$q;
         s1_c$d = s1_c$q;
         s1_e$d = s1_e$q;
+        s1_round$d = s1_round$q;
+        r_mul$clock = clock;
+        r_sum$clock = clock;
+        r_u$clock = clock;
+        r_s$clock = clock;
         c_2$clock = clock;
         c_3$clock = clock;
         c_4$clock = clock;
@@ -7009,6 +5374,13 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
         add_1$clock = clock;
         add_2$clock = clock;
         add_3$clock = clock;
+        mul_0$round_up = r_mul$q;
+        mul_1$round_up = r_mul$q;
+        mul_2$round_up = r_mul$q;
+        add_0$round_up = r_sum$q;
+        add_1$round_up = r_sum$q;
+        add_2$round_up = r_u$q;
+        add_3$round_up = r_s$q;
         s1_valid$d = valid_in;
         s1_d0$d = d0;
         s1_d1$d = d1;
@@ -7018,6 +5390,11 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
         s1_c2$d = c2;
         s1_c$d = c;
         s1_e$d = e;
+        s1_round$d = round_up;
+        r_mul$d = s1_round$q;
+        r_sum$d = r_mul$q;
+        r_u$d = r_sum$q;
+        r_s$d = r_u$q;
         mul_0$a = s1_d0$q;
         mul_0$b = s1_c0$q;
         mul_0$valid_in = s1_valid$q;
@@ -7072,7 +5449,7 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
 endmodule // top$dop$doptrf$0
 
 
-module top$dop$doptrf$0$add_0(clock,a,b,sub,valid_in,y,valid_out);
+module top$dop$doptrf$0$add_0(clock,a,b,sub,valid_in,y,valid_out,round_up);
     
     // Module arguments
     input wire  clock;
@@ -7082,9 +5459,9 @@ module top$dop$doptrf$0$add_0(clock,a,b,sub,valid_in,y,valid_out);
     input wire  valid_in;
     output reg  [23:0] y;
     output reg  valid_out;
+    input wire  round_up;
     
     // Constant declarations
-    localparam  round_up = 1'b1;
     localparam  c_align_cap = 8'h13;
     localparam  c_exp_ones = 10'b11111111;
     
@@ -7691,7 +6068,7 @@ module top$dop$doptrf$0$add_0$unpack_a(x,sign,exp,sig,is_zero,is_inf,is_nan);
 endmodule // top$dop$doptrf$0$add_0$unpack_a
 
 
-module top$dop$doptrf$0$mul_0(clock,a,b,valid_in,y,valid_out);
+module top$dop$doptrf$0$mul_0(clock,a,b,valid_in,y,valid_out,round_up);
     
     // Module arguments
     input wire  clock;
@@ -7700,9 +6077,9 @@ module top$dop$doptrf$0$mul_0(clock,a,b,valid_in,y,valid_out);
     input wire  valid_in;
     output reg  [23:0] y;
     output reg  valid_out;
+    input wire  round_up;
     
     // Constant declarations
-    localparam  round_up = 1'b1;
     localparam  c_exp_adj = 10'b10000001;
     localparam  c_exp_ofs = 10'b100000000;
     localparam  c_exp_norm_min = 10'b100000001;
@@ -8201,6 +6578,57 @@ module top$dop$doptrf$0$mul_0$sig_mul(a,b,hi,sticky);
         sticky = |prod[13:0];
     end
 endmodule // top$dop$doptrf$0$mul_0$sig_mul
+
+
+module top$dop$doptrf$0$r_mul(clock,d,q);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+    
+    // Stub signals
+    reg  line$0$d;
+    wire  line$0$q;
+    reg  line$0$clock;
+    reg  line$1$d;
+    wire  line$1$q;
+    reg  line$1$clock;
+    reg  line$2$d;
+    wire  line$2$q;
+    reg  line$2$clock;
+    
+    // Sub module instances
+    top$cnt_dop$pending line$0(
+        .d(line$0$d),
+        .q(line$0$q),
+        .clock(line$0$clock)
+    );
+    top$cnt_dop$pending line$1(
+        .d(line$1$d),
+        .q(line$1$q),
+        .clock(line$1$clock)
+    );
+    top$cnt_dop$pending line$2(
+        .d(line$2$d),
+        .q(line$2$q),
+        .clock(line$2$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line$0$clock = clock;
+        line$0$d = d;
+        line$1$clock = clock;
+        line$1$d = d;
+        line$2$clock = clock;
+        line$2$d = d;
+        line$0$d = line$1$q;
+        line$1$d = line$2$q;
+        q = line$0$q;
+    end
+    
+endmodule // top$dop$doptrf$0$r_mul
 
 
 module top$dop$klmsel(d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7,d$8,d$9,d$10,d$11,d$12,d$13,d$14,d$15,d$16,d$17,d$18,d$19,d$20,d$21,d$22,d$23,j0$0,j0$1,j0$2,j0$3,j0$4,j0$5,j0$6,j0$7,j0$8,j0$9,j0$10,j0$11,j0$12,j0$13,j0$14,j0$15,j0$16,j0$17,j0$18,j0$19,j0$20,j0$21,j0$22,j0$23,j1$0,j1$1,j1$2,j1$3,j1$4,j1$5,j1$6,j1$7,j1$8,j1$9,j1$10,j1$11,j1$12,j1$13,j1$14,j1$15,j1$16,j1$17,j1$18,j1$19,j1$20,j1$21,j1$22,j1$23,j2$0,j2$1,j2$2,j2$3,j2$4,j2$5,j2$6,j2$7,j2$8,j2$9,j2$10,j2$11,j2$12,j2$13,j2$14,j2$15,j2$16,j2$17,j2$18,j2$19,j2$20,j2$21,j2$22,j2$23,y0$0,y0$1,y0$2,y0$3,y0$4,y0$5,y0$6,y0$7,y0$8,y0$9,y0$10,y0$11,y0$12,y0$13,y0$14,y0$15,y0$16,y0$17,y0$18,y0$19,y0$20,y0$21,y0$22,y0$23,y1$0,y1$1,y1$2,y1$3,y1$4,y1$5,y1$6,y1$7,y1$8,y1$9,y1$10,y1$11,y1$12,y1$13,y1$14,y1$15,y1$16,y1$17,y1$18,y1$19,y1$20,y1$21,y1$22,y1$23,y2$0,y2$1,y2$2,y2$3,y2$4,y2$5,y2$6,y2$7,y2$8,y2$9,y2$10,y2$11,y2$12,y2$13,y2$14,y2$15,y2$16,y2$17,y2$18,y2$19,y2$20,y2$21,y2$22,y2$23);
@@ -13664,6 +12092,2841 @@ module top$dop$klmsel(d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7,d$8,d$9,d$10,d$11,d$12,d$1
 endmodule // top$dop$klmsel
 
 
+module top$dop$setup(clock,load_en,load_addr,load_data,c0$0,c0$1,c0$2,c0$3,c0$4,c0$5,c0$6,c0$7,c0$8,c0$9,c0$10,c0$11,c0$12,c0$13,c0$14,c0$15,c0$16,c0$17,c0$18,c0$19,c0$20,c0$21,c0$22,c0$23,c1$0,c1$1,c1$2,c1$3,c1$4,c1$5,c1$6,c1$7,c1$8,c1$9,c1$10,c1$11,c1$12,c1$13,c1$14,c1$15,c1$16,c1$17,c1$18,c1$19,c1$20,c1$21,c1$22,c1$23,c2$0,c2$1,c2$2,c2$3,c2$4,c2$5,c2$6,c2$7,c2$8,c2$9,c2$10,c2$11,c2$12,c2$13,c2$14,c2$15,c2$16,c2$17,c2$18,c2$19,c2$20,c2$21,c2$22,c2$23,c$0,c$1,c$2,c$3,c$4,c$5,c$6,c$7,c$8,c$9,c$10,c$11,c$12,c$13,c$14,c$15,c$16,c$17,c$18,c$19,c$20,c$21,c$22,c$23,j0$0,j0$1,j0$2,j0$3,j0$4,j0$5,j0$6,j0$7,j0$8,j0$9,j0$10,j0$11,j0$12,j0$13,j0$14,j0$15,j0$16,j0$17,j0$18,j0$19,j0$20,j0$21,j0$22,j0$23,j1$0,j1$1,j1$2,j1$3,j1$4,j1$5,j1$6,j1$7,j1$8,j1$9,j1$10,j1$11,j1$12,j1$13,j1$14,j1$15,j1$16,j1$17,j1$18,j1$19,j1$20,j1$21,j1$22,j1$23,j2$0,j2$1,j2$2,j2$3,j2$4,j2$5,j2$6,j2$7,j2$8,j2$9,j2$10,j2$11,j2$12,j2$13,j2$14,j2$15,j2$16,j2$17,j2$18,j2$19,j2$20,j2$21,j2$22,j2$23,round_up$0,round_up$1,round_up$2,round_up$3,round_up$4,round_up$5,round_up$6,round_up$7,round_up$8,round_up$9,round_up$10,round_up$11,round_up$12,round_up$13,round_up$14,round_up$15,round_up$16,round_up$17,round_up$18,round_up$19,round_up$20,round_up$21,round_up$22,round_up$23);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  load_en;
+    input wire  [7:0] load_addr;
+    input wire  [23:0] load_data;
+    output reg  [23:0] c0$0;
+    output reg  [23:0] c0$1;
+    output reg  [23:0] c0$2;
+    output reg  [23:0] c0$3;
+    output reg  [23:0] c0$4;
+    output reg  [23:0] c0$5;
+    output reg  [23:0] c0$6;
+    output reg  [23:0] c0$7;
+    output reg  [23:0] c0$8;
+    output reg  [23:0] c0$9;
+    output reg  [23:0] c0$10;
+    output reg  [23:0] c0$11;
+    output reg  [23:0] c0$12;
+    output reg  [23:0] c0$13;
+    output reg  [23:0] c0$14;
+    output reg  [23:0] c0$15;
+    output reg  [23:0] c0$16;
+    output reg  [23:0] c0$17;
+    output reg  [23:0] c0$18;
+    output reg  [23:0] c0$19;
+    output reg  [23:0] c0$20;
+    output reg  [23:0] c0$21;
+    output reg  [23:0] c0$22;
+    output reg  [23:0] c0$23;
+    output reg  [23:0] c1$0;
+    output reg  [23:0] c1$1;
+    output reg  [23:0] c1$2;
+    output reg  [23:0] c1$3;
+    output reg  [23:0] c1$4;
+    output reg  [23:0] c1$5;
+    output reg  [23:0] c1$6;
+    output reg  [23:0] c1$7;
+    output reg  [23:0] c1$8;
+    output reg  [23:0] c1$9;
+    output reg  [23:0] c1$10;
+    output reg  [23:0] c1$11;
+    output reg  [23:0] c1$12;
+    output reg  [23:0] c1$13;
+    output reg  [23:0] c1$14;
+    output reg  [23:0] c1$15;
+    output reg  [23:0] c1$16;
+    output reg  [23:0] c1$17;
+    output reg  [23:0] c1$18;
+    output reg  [23:0] c1$19;
+    output reg  [23:0] c1$20;
+    output reg  [23:0] c1$21;
+    output reg  [23:0] c1$22;
+    output reg  [23:0] c1$23;
+    output reg  [23:0] c2$0;
+    output reg  [23:0] c2$1;
+    output reg  [23:0] c2$2;
+    output reg  [23:0] c2$3;
+    output reg  [23:0] c2$4;
+    output reg  [23:0] c2$5;
+    output reg  [23:0] c2$6;
+    output reg  [23:0] c2$7;
+    output reg  [23:0] c2$8;
+    output reg  [23:0] c2$9;
+    output reg  [23:0] c2$10;
+    output reg  [23:0] c2$11;
+    output reg  [23:0] c2$12;
+    output reg  [23:0] c2$13;
+    output reg  [23:0] c2$14;
+    output reg  [23:0] c2$15;
+    output reg  [23:0] c2$16;
+    output reg  [23:0] c2$17;
+    output reg  [23:0] c2$18;
+    output reg  [23:0] c2$19;
+    output reg  [23:0] c2$20;
+    output reg  [23:0] c2$21;
+    output reg  [23:0] c2$22;
+    output reg  [23:0] c2$23;
+    output reg  [23:0] c$0;
+    output reg  [23:0] c$1;
+    output reg  [23:0] c$2;
+    output reg  [23:0] c$3;
+    output reg  [23:0] c$4;
+    output reg  [23:0] c$5;
+    output reg  [23:0] c$6;
+    output reg  [23:0] c$7;
+    output reg  [23:0] c$8;
+    output reg  [23:0] c$9;
+    output reg  [23:0] c$10;
+    output reg  [23:0] c$11;
+    output reg  [23:0] c$12;
+    output reg  [23:0] c$13;
+    output reg  [23:0] c$14;
+    output reg  [23:0] c$15;
+    output reg  [23:0] c$16;
+    output reg  [23:0] c$17;
+    output reg  [23:0] c$18;
+    output reg  [23:0] c$19;
+    output reg  [23:0] c$20;
+    output reg  [23:0] c$21;
+    output reg  [23:0] c$22;
+    output reg  [23:0] c$23;
+    output reg  [4:0] j0$0;
+    output reg  [4:0] j0$1;
+    output reg  [4:0] j0$2;
+    output reg  [4:0] j0$3;
+    output reg  [4:0] j0$4;
+    output reg  [4:0] j0$5;
+    output reg  [4:0] j0$6;
+    output reg  [4:0] j0$7;
+    output reg  [4:0] j0$8;
+    output reg  [4:0] j0$9;
+    output reg  [4:0] j0$10;
+    output reg  [4:0] j0$11;
+    output reg  [4:0] j0$12;
+    output reg  [4:0] j0$13;
+    output reg  [4:0] j0$14;
+    output reg  [4:0] j0$15;
+    output reg  [4:0] j0$16;
+    output reg  [4:0] j0$17;
+    output reg  [4:0] j0$18;
+    output reg  [4:0] j0$19;
+    output reg  [4:0] j0$20;
+    output reg  [4:0] j0$21;
+    output reg  [4:0] j0$22;
+    output reg  [4:0] j0$23;
+    output reg  [4:0] j1$0;
+    output reg  [4:0] j1$1;
+    output reg  [4:0] j1$2;
+    output reg  [4:0] j1$3;
+    output reg  [4:0] j1$4;
+    output reg  [4:0] j1$5;
+    output reg  [4:0] j1$6;
+    output reg  [4:0] j1$7;
+    output reg  [4:0] j1$8;
+    output reg  [4:0] j1$9;
+    output reg  [4:0] j1$10;
+    output reg  [4:0] j1$11;
+    output reg  [4:0] j1$12;
+    output reg  [4:0] j1$13;
+    output reg  [4:0] j1$14;
+    output reg  [4:0] j1$15;
+    output reg  [4:0] j1$16;
+    output reg  [4:0] j1$17;
+    output reg  [4:0] j1$18;
+    output reg  [4:0] j1$19;
+    output reg  [4:0] j1$20;
+    output reg  [4:0] j1$21;
+    output reg  [4:0] j1$22;
+    output reg  [4:0] j1$23;
+    output reg  [4:0] j2$0;
+    output reg  [4:0] j2$1;
+    output reg  [4:0] j2$2;
+    output reg  [4:0] j2$3;
+    output reg  [4:0] j2$4;
+    output reg  [4:0] j2$5;
+    output reg  [4:0] j2$6;
+    output reg  [4:0] j2$7;
+    output reg  [4:0] j2$8;
+    output reg  [4:0] j2$9;
+    output reg  [4:0] j2$10;
+    output reg  [4:0] j2$11;
+    output reg  [4:0] j2$12;
+    output reg  [4:0] j2$13;
+    output reg  [4:0] j2$14;
+    output reg  [4:0] j2$15;
+    output reg  [4:0] j2$16;
+    output reg  [4:0] j2$17;
+    output reg  [4:0] j2$18;
+    output reg  [4:0] j2$19;
+    output reg  [4:0] j2$20;
+    output reg  [4:0] j2$21;
+    output reg  [4:0] j2$22;
+    output reg  [4:0] j2$23;
+    output reg  round_up$0;
+    output reg  round_up$1;
+    output reg  round_up$2;
+    output reg  round_up$3;
+    output reg  round_up$4;
+    output reg  round_up$5;
+    output reg  round_up$6;
+    output reg  round_up$7;
+    output reg  round_up$8;
+    output reg  round_up$9;
+    output reg  round_up$10;
+    output reg  round_up$11;
+    output reg  round_up$12;
+    output reg  round_up$13;
+    output reg  round_up$14;
+    output reg  round_up$15;
+    output reg  round_up$16;
+    output reg  round_up$17;
+    output reg  round_up$18;
+    output reg  round_up$19;
+    output reg  round_up$20;
+    output reg  round_up$21;
+    output reg  round_up$22;
+    output reg  round_up$23;
+    
+    // Constant declarations
+    localparam  idx$0 = 5'b0;
+    localparam  idx$1 = 5'b1;
+    localparam  idx$2 = 5'b10;
+    localparam  idx$3 = 5'b11;
+    localparam  idx$4 = 5'b100;
+    localparam  idx$5 = 5'b101;
+    localparam  idx$6 = 5'b110;
+    localparam  idx$7 = 5'b111;
+    localparam  idx$8 = 5'b1000;
+    localparam  idx$9 = 5'b1001;
+    localparam  idx$10 = 5'b1010;
+    localparam  idx$11 = 5'b1011;
+    localparam  idx$12 = 5'b1100;
+    localparam  idx$13 = 5'b1101;
+    localparam  idx$14 = 5'b1110;
+    localparam  idx$15 = 5'b1111;
+    localparam  idx$16 = 5'b10000;
+    localparam  idx$17 = 5'b10001;
+    localparam  idx$18 = 5'b10010;
+    localparam  idx$19 = 5'b10011;
+    localparam  idx$20 = 5'b10100;
+    localparam  idx$21 = 5'b10101;
+    localparam  idx$22 = 5'b10110;
+    localparam  idx$23 = 5'b10111;
+    
+    // Stub signals
+    reg  [23:0] cmat_0$0$d;
+    wire  [23:0] cmat_0$0$q;
+    reg  cmat_0$0$clock;
+    reg  [23:0] cmat_0$1$d;
+    wire  [23:0] cmat_0$1$q;
+    reg  cmat_0$1$clock;
+    reg  [23:0] cmat_0$2$d;
+    wire  [23:0] cmat_0$2$q;
+    reg  cmat_0$2$clock;
+    reg  [23:0] cmat_0$3$d;
+    wire  [23:0] cmat_0$3$q;
+    reg  cmat_0$3$clock;
+    reg  [23:0] cmat_0$4$d;
+    wire  [23:0] cmat_0$4$q;
+    reg  cmat_0$4$clock;
+    reg  [23:0] cmat_0$5$d;
+    wire  [23:0] cmat_0$5$q;
+    reg  cmat_0$5$clock;
+    reg  [23:0] cmat_0$6$d;
+    wire  [23:0] cmat_0$6$q;
+    reg  cmat_0$6$clock;
+    reg  [23:0] cmat_0$7$d;
+    wire  [23:0] cmat_0$7$q;
+    reg  cmat_0$7$clock;
+    reg  [23:0] cmat_0$8$d;
+    wire  [23:0] cmat_0$8$q;
+    reg  cmat_0$8$clock;
+    reg  [23:0] cmat_0$9$d;
+    wire  [23:0] cmat_0$9$q;
+    reg  cmat_0$9$clock;
+    reg  [23:0] cmat_0$10$d;
+    wire  [23:0] cmat_0$10$q;
+    reg  cmat_0$10$clock;
+    reg  [23:0] cmat_0$11$d;
+    wire  [23:0] cmat_0$11$q;
+    reg  cmat_0$11$clock;
+    reg  [23:0] cmat_0$12$d;
+    wire  [23:0] cmat_0$12$q;
+    reg  cmat_0$12$clock;
+    reg  [23:0] cmat_0$13$d;
+    wire  [23:0] cmat_0$13$q;
+    reg  cmat_0$13$clock;
+    reg  [23:0] cmat_0$14$d;
+    wire  [23:0] cmat_0$14$q;
+    reg  cmat_0$14$clock;
+    reg  [23:0] cmat_0$15$d;
+    wire  [23:0] cmat_0$15$q;
+    reg  cmat_0$15$clock;
+    reg  [23:0] cmat_0$16$d;
+    wire  [23:0] cmat_0$16$q;
+    reg  cmat_0$16$clock;
+    reg  [23:0] cmat_0$17$d;
+    wire  [23:0] cmat_0$17$q;
+    reg  cmat_0$17$clock;
+    reg  [23:0] cmat_0$18$d;
+    wire  [23:0] cmat_0$18$q;
+    reg  cmat_0$18$clock;
+    reg  [23:0] cmat_0$19$d;
+    wire  [23:0] cmat_0$19$q;
+    reg  cmat_0$19$clock;
+    reg  [23:0] cmat_0$20$d;
+    wire  [23:0] cmat_0$20$q;
+    reg  cmat_0$20$clock;
+    reg  [23:0] cmat_0$21$d;
+    wire  [23:0] cmat_0$21$q;
+    reg  cmat_0$21$clock;
+    reg  [23:0] cmat_0$22$d;
+    wire  [23:0] cmat_0$22$q;
+    reg  cmat_0$22$clock;
+    reg  [23:0] cmat_0$23$d;
+    wire  [23:0] cmat_0$23$q;
+    reg  cmat_0$23$clock;
+    reg  [23:0] cmat_1$0$d;
+    wire  [23:0] cmat_1$0$q;
+    reg  cmat_1$0$clock;
+    reg  [23:0] cmat_1$1$d;
+    wire  [23:0] cmat_1$1$q;
+    reg  cmat_1$1$clock;
+    reg  [23:0] cmat_1$2$d;
+    wire  [23:0] cmat_1$2$q;
+    reg  cmat_1$2$clock;
+    reg  [23:0] cmat_1$3$d;
+    wire  [23:0] cmat_1$3$q;
+    reg  cmat_1$3$clock;
+    reg  [23:0] cmat_1$4$d;
+    wire  [23:0] cmat_1$4$q;
+    reg  cmat_1$4$clock;
+    reg  [23:0] cmat_1$5$d;
+    wire  [23:0] cmat_1$5$q;
+    reg  cmat_1$5$clock;
+    reg  [23:0] cmat_1$6$d;
+    wire  [23:0] cmat_1$6$q;
+    reg  cmat_1$6$clock;
+    reg  [23:0] cmat_1$7$d;
+    wire  [23:0] cmat_1$7$q;
+    reg  cmat_1$7$clock;
+    reg  [23:0] cmat_1$8$d;
+    wire  [23:0] cmat_1$8$q;
+    reg  cmat_1$8$clock;
+    reg  [23:0] cmat_1$9$d;
+    wire  [23:0] cmat_1$9$q;
+    reg  cmat_1$9$clock;
+    reg  [23:0] cmat_1$10$d;
+    wire  [23:0] cmat_1$10$q;
+    reg  cmat_1$10$clock;
+    reg  [23:0] cmat_1$11$d;
+    wire  [23:0] cmat_1$11$q;
+    reg  cmat_1$11$clock;
+    reg  [23:0] cmat_1$12$d;
+    wire  [23:0] cmat_1$12$q;
+    reg  cmat_1$12$clock;
+    reg  [23:0] cmat_1$13$d;
+    wire  [23:0] cmat_1$13$q;
+    reg  cmat_1$13$clock;
+    reg  [23:0] cmat_1$14$d;
+    wire  [23:0] cmat_1$14$q;
+    reg  cmat_1$14$clock;
+    reg  [23:0] cmat_1$15$d;
+    wire  [23:0] cmat_1$15$q;
+    reg  cmat_1$15$clock;
+    reg  [23:0] cmat_1$16$d;
+    wire  [23:0] cmat_1$16$q;
+    reg  cmat_1$16$clock;
+    reg  [23:0] cmat_1$17$d;
+    wire  [23:0] cmat_1$17$q;
+    reg  cmat_1$17$clock;
+    reg  [23:0] cmat_1$18$d;
+    wire  [23:0] cmat_1$18$q;
+    reg  cmat_1$18$clock;
+    reg  [23:0] cmat_1$19$d;
+    wire  [23:0] cmat_1$19$q;
+    reg  cmat_1$19$clock;
+    reg  [23:0] cmat_1$20$d;
+    wire  [23:0] cmat_1$20$q;
+    reg  cmat_1$20$clock;
+    reg  [23:0] cmat_1$21$d;
+    wire  [23:0] cmat_1$21$q;
+    reg  cmat_1$21$clock;
+    reg  [23:0] cmat_1$22$d;
+    wire  [23:0] cmat_1$22$q;
+    reg  cmat_1$22$clock;
+    reg  [23:0] cmat_1$23$d;
+    wire  [23:0] cmat_1$23$q;
+    reg  cmat_1$23$clock;
+    reg  [23:0] cmat_2$0$d;
+    wire  [23:0] cmat_2$0$q;
+    reg  cmat_2$0$clock;
+    reg  [23:0] cmat_2$1$d;
+    wire  [23:0] cmat_2$1$q;
+    reg  cmat_2$1$clock;
+    reg  [23:0] cmat_2$2$d;
+    wire  [23:0] cmat_2$2$q;
+    reg  cmat_2$2$clock;
+    reg  [23:0] cmat_2$3$d;
+    wire  [23:0] cmat_2$3$q;
+    reg  cmat_2$3$clock;
+    reg  [23:0] cmat_2$4$d;
+    wire  [23:0] cmat_2$4$q;
+    reg  cmat_2$4$clock;
+    reg  [23:0] cmat_2$5$d;
+    wire  [23:0] cmat_2$5$q;
+    reg  cmat_2$5$clock;
+    reg  [23:0] cmat_2$6$d;
+    wire  [23:0] cmat_2$6$q;
+    reg  cmat_2$6$clock;
+    reg  [23:0] cmat_2$7$d;
+    wire  [23:0] cmat_2$7$q;
+    reg  cmat_2$7$clock;
+    reg  [23:0] cmat_2$8$d;
+    wire  [23:0] cmat_2$8$q;
+    reg  cmat_2$8$clock;
+    reg  [23:0] cmat_2$9$d;
+    wire  [23:0] cmat_2$9$q;
+    reg  cmat_2$9$clock;
+    reg  [23:0] cmat_2$10$d;
+    wire  [23:0] cmat_2$10$q;
+    reg  cmat_2$10$clock;
+    reg  [23:0] cmat_2$11$d;
+    wire  [23:0] cmat_2$11$q;
+    reg  cmat_2$11$clock;
+    reg  [23:0] cmat_2$12$d;
+    wire  [23:0] cmat_2$12$q;
+    reg  cmat_2$12$clock;
+    reg  [23:0] cmat_2$13$d;
+    wire  [23:0] cmat_2$13$q;
+    reg  cmat_2$13$clock;
+    reg  [23:0] cmat_2$14$d;
+    wire  [23:0] cmat_2$14$q;
+    reg  cmat_2$14$clock;
+    reg  [23:0] cmat_2$15$d;
+    wire  [23:0] cmat_2$15$q;
+    reg  cmat_2$15$clock;
+    reg  [23:0] cmat_2$16$d;
+    wire  [23:0] cmat_2$16$q;
+    reg  cmat_2$16$clock;
+    reg  [23:0] cmat_2$17$d;
+    wire  [23:0] cmat_2$17$q;
+    reg  cmat_2$17$clock;
+    reg  [23:0] cmat_2$18$d;
+    wire  [23:0] cmat_2$18$q;
+    reg  cmat_2$18$clock;
+    reg  [23:0] cmat_2$19$d;
+    wire  [23:0] cmat_2$19$q;
+    reg  cmat_2$19$clock;
+    reg  [23:0] cmat_2$20$d;
+    wire  [23:0] cmat_2$20$q;
+    reg  cmat_2$20$clock;
+    reg  [23:0] cmat_2$21$d;
+    wire  [23:0] cmat_2$21$q;
+    reg  cmat_2$21$clock;
+    reg  [23:0] cmat_2$22$d;
+    wire  [23:0] cmat_2$22$q;
+    reg  cmat_2$22$clock;
+    reg  [23:0] cmat_2$23$d;
+    wire  [23:0] cmat_2$23$q;
+    reg  cmat_2$23$clock;
+    reg  [23:0] cvec$0$d;
+    wire  [23:0] cvec$0$q;
+    reg  cvec$0$clock;
+    reg  [23:0] cvec$1$d;
+    wire  [23:0] cvec$1$q;
+    reg  cvec$1$clock;
+    reg  [23:0] cvec$2$d;
+    wire  [23:0] cvec$2$q;
+    reg  cvec$2$clock;
+    reg  [23:0] cvec$3$d;
+    wire  [23:0] cvec$3$q;
+    reg  cvec$3$clock;
+    reg  [23:0] cvec$4$d;
+    wire  [23:0] cvec$4$q;
+    reg  cvec$4$clock;
+    reg  [23:0] cvec$5$d;
+    wire  [23:0] cvec$5$q;
+    reg  cvec$5$clock;
+    reg  [23:0] cvec$6$d;
+    wire  [23:0] cvec$6$q;
+    reg  cvec$6$clock;
+    reg  [23:0] cvec$7$d;
+    wire  [23:0] cvec$7$q;
+    reg  cvec$7$clock;
+    reg  [23:0] cvec$8$d;
+    wire  [23:0] cvec$8$q;
+    reg  cvec$8$clock;
+    reg  [23:0] cvec$9$d;
+    wire  [23:0] cvec$9$q;
+    reg  cvec$9$clock;
+    reg  [23:0] cvec$10$d;
+    wire  [23:0] cvec$10$q;
+    reg  cvec$10$clock;
+    reg  [23:0] cvec$11$d;
+    wire  [23:0] cvec$11$q;
+    reg  cvec$11$clock;
+    reg  [23:0] cvec$12$d;
+    wire  [23:0] cvec$12$q;
+    reg  cvec$12$clock;
+    reg  [23:0] cvec$13$d;
+    wire  [23:0] cvec$13$q;
+    reg  cvec$13$clock;
+    reg  [23:0] cvec$14$d;
+    wire  [23:0] cvec$14$q;
+    reg  cvec$14$clock;
+    reg  [23:0] cvec$15$d;
+    wire  [23:0] cvec$15$q;
+    reg  cvec$15$clock;
+    reg  [23:0] cvec$16$d;
+    wire  [23:0] cvec$16$q;
+    reg  cvec$16$clock;
+    reg  [23:0] cvec$17$d;
+    wire  [23:0] cvec$17$q;
+    reg  cvec$17$clock;
+    reg  [23:0] cvec$18$d;
+    wire  [23:0] cvec$18$q;
+    reg  cvec$18$clock;
+    reg  [23:0] cvec$19$d;
+    wire  [23:0] cvec$19$q;
+    reg  cvec$19$clock;
+    reg  [23:0] cvec$20$d;
+    wire  [23:0] cvec$20$q;
+    reg  cvec$20$clock;
+    reg  [23:0] cvec$21$d;
+    wire  [23:0] cvec$21$q;
+    reg  cvec$21$clock;
+    reg  [23:0] cvec$22$d;
+    wire  [23:0] cvec$22$q;
+    reg  cvec$22$clock;
+    reg  [23:0] cvec$23$d;
+    wire  [23:0] cvec$23$q;
+    reg  cvec$23$clock;
+    reg  [4:0] jsel_0$0$d;
+    wire  [4:0] jsel_0$0$q;
+    reg  jsel_0$0$clock;
+    reg  [4:0] jsel_0$1$d;
+    wire  [4:0] jsel_0$1$q;
+    reg  jsel_0$1$clock;
+    reg  [4:0] jsel_0$2$d;
+    wire  [4:0] jsel_0$2$q;
+    reg  jsel_0$2$clock;
+    reg  [4:0] jsel_0$3$d;
+    wire  [4:0] jsel_0$3$q;
+    reg  jsel_0$3$clock;
+    reg  [4:0] jsel_0$4$d;
+    wire  [4:0] jsel_0$4$q;
+    reg  jsel_0$4$clock;
+    reg  [4:0] jsel_0$5$d;
+    wire  [4:0] jsel_0$5$q;
+    reg  jsel_0$5$clock;
+    reg  [4:0] jsel_0$6$d;
+    wire  [4:0] jsel_0$6$q;
+    reg  jsel_0$6$clock;
+    reg  [4:0] jsel_0$7$d;
+    wire  [4:0] jsel_0$7$q;
+    reg  jsel_0$7$clock;
+    reg  [4:0] jsel_0$8$d;
+    wire  [4:0] jsel_0$8$q;
+    reg  jsel_0$8$clock;
+    reg  [4:0] jsel_0$9$d;
+    wire  [4:0] jsel_0$9$q;
+    reg  jsel_0$9$clock;
+    reg  [4:0] jsel_0$10$d;
+    wire  [4:0] jsel_0$10$q;
+    reg  jsel_0$10$clock;
+    reg  [4:0] jsel_0$11$d;
+    wire  [4:0] jsel_0$11$q;
+    reg  jsel_0$11$clock;
+    reg  [4:0] jsel_0$12$d;
+    wire  [4:0] jsel_0$12$q;
+    reg  jsel_0$12$clock;
+    reg  [4:0] jsel_0$13$d;
+    wire  [4:0] jsel_0$13$q;
+    reg  jsel_0$13$clock;
+    reg  [4:0] jsel_0$14$d;
+    wire  [4:0] jsel_0$14$q;
+    reg  jsel_0$14$clock;
+    reg  [4:0] jsel_0$15$d;
+    wire  [4:0] jsel_0$15$q;
+    reg  jsel_0$15$clock;
+    reg  [4:0] jsel_0$16$d;
+    wire  [4:0] jsel_0$16$q;
+    reg  jsel_0$16$clock;
+    reg  [4:0] jsel_0$17$d;
+    wire  [4:0] jsel_0$17$q;
+    reg  jsel_0$17$clock;
+    reg  [4:0] jsel_0$18$d;
+    wire  [4:0] jsel_0$18$q;
+    reg  jsel_0$18$clock;
+    reg  [4:0] jsel_0$19$d;
+    wire  [4:0] jsel_0$19$q;
+    reg  jsel_0$19$clock;
+    reg  [4:0] jsel_0$20$d;
+    wire  [4:0] jsel_0$20$q;
+    reg  jsel_0$20$clock;
+    reg  [4:0] jsel_0$21$d;
+    wire  [4:0] jsel_0$21$q;
+    reg  jsel_0$21$clock;
+    reg  [4:0] jsel_0$22$d;
+    wire  [4:0] jsel_0$22$q;
+    reg  jsel_0$22$clock;
+    reg  [4:0] jsel_0$23$d;
+    wire  [4:0] jsel_0$23$q;
+    reg  jsel_0$23$clock;
+    reg  [4:0] jsel_1$0$d;
+    wire  [4:0] jsel_1$0$q;
+    reg  jsel_1$0$clock;
+    reg  [4:0] jsel_1$1$d;
+    wire  [4:0] jsel_1$1$q;
+    reg  jsel_1$1$clock;
+    reg  [4:0] jsel_1$2$d;
+    wire  [4:0] jsel_1$2$q;
+    reg  jsel_1$2$clock;
+    reg  [4:0] jsel_1$3$d;
+    wire  [4:0] jsel_1$3$q;
+    reg  jsel_1$3$clock;
+    reg  [4:0] jsel_1$4$d;
+    wire  [4:0] jsel_1$4$q;
+    reg  jsel_1$4$clock;
+    reg  [4:0] jsel_1$5$d;
+    wire  [4:0] jsel_1$5$q;
+    reg  jsel_1$5$clock;
+    reg  [4:0] jsel_1$6$d;
+    wire  [4:0] jsel_1$6$q;
+    reg  jsel_1$6$clock;
+    reg  [4:0] jsel_1$7$d;
+    wire  [4:0] jsel_1$7$q;
+    reg  jsel_1$7$clock;
+    reg  [4:0] jsel_1$8$d;
+    wire  [4:0] jsel_1$8$q;
+    reg  jsel_1$8$clock;
+    reg  [4:0] jsel_1$9$d;
+    wire  [4:0] jsel_1$9$q;
+    reg  jsel_1$9$clock;
+    reg  [4:0] jsel_1$10$d;
+    wire  [4:0] jsel_1$10$q;
+    reg  jsel_1$10$clock;
+    reg  [4:0] jsel_1$11$d;
+    wire  [4:0] jsel_1$11$q;
+    reg  jsel_1$11$clock;
+    reg  [4:0] jsel_1$12$d;
+    wire  [4:0] jsel_1$12$q;
+    reg  jsel_1$12$clock;
+    reg  [4:0] jsel_1$13$d;
+    wire  [4:0] jsel_1$13$q;
+    reg  jsel_1$13$clock;
+    reg  [4:0] jsel_1$14$d;
+    wire  [4:0] jsel_1$14$q;
+    reg  jsel_1$14$clock;
+    reg  [4:0] jsel_1$15$d;
+    wire  [4:0] jsel_1$15$q;
+    reg  jsel_1$15$clock;
+    reg  [4:0] jsel_1$16$d;
+    wire  [4:0] jsel_1$16$q;
+    reg  jsel_1$16$clock;
+    reg  [4:0] jsel_1$17$d;
+    wire  [4:0] jsel_1$17$q;
+    reg  jsel_1$17$clock;
+    reg  [4:0] jsel_1$18$d;
+    wire  [4:0] jsel_1$18$q;
+    reg  jsel_1$18$clock;
+    reg  [4:0] jsel_1$19$d;
+    wire  [4:0] jsel_1$19$q;
+    reg  jsel_1$19$clock;
+    reg  [4:0] jsel_1$20$d;
+    wire  [4:0] jsel_1$20$q;
+    reg  jsel_1$20$clock;
+    reg  [4:0] jsel_1$21$d;
+    wire  [4:0] jsel_1$21$q;
+    reg  jsel_1$21$clock;
+    reg  [4:0] jsel_1$22$d;
+    wire  [4:0] jsel_1$22$q;
+    reg  jsel_1$22$clock;
+    reg  [4:0] jsel_1$23$d;
+    wire  [4:0] jsel_1$23$q;
+    reg  jsel_1$23$clock;
+    reg  [4:0] jsel_2$0$d;
+    wire  [4:0] jsel_2$0$q;
+    reg  jsel_2$0$clock;
+    reg  [4:0] jsel_2$1$d;
+    wire  [4:0] jsel_2$1$q;
+    reg  jsel_2$1$clock;
+    reg  [4:0] jsel_2$2$d;
+    wire  [4:0] jsel_2$2$q;
+    reg  jsel_2$2$clock;
+    reg  [4:0] jsel_2$3$d;
+    wire  [4:0] jsel_2$3$q;
+    reg  jsel_2$3$clock;
+    reg  [4:0] jsel_2$4$d;
+    wire  [4:0] jsel_2$4$q;
+    reg  jsel_2$4$clock;
+    reg  [4:0] jsel_2$5$d;
+    wire  [4:0] jsel_2$5$q;
+    reg  jsel_2$5$clock;
+    reg  [4:0] jsel_2$6$d;
+    wire  [4:0] jsel_2$6$q;
+    reg  jsel_2$6$clock;
+    reg  [4:0] jsel_2$7$d;
+    wire  [4:0] jsel_2$7$q;
+    reg  jsel_2$7$clock;
+    reg  [4:0] jsel_2$8$d;
+    wire  [4:0] jsel_2$8$q;
+    reg  jsel_2$8$clock;
+    reg  [4:0] jsel_2$9$d;
+    wire  [4:0] jsel_2$9$q;
+    reg  jsel_2$9$clock;
+    reg  [4:0] jsel_2$10$d;
+    wire  [4:0] jsel_2$10$q;
+    reg  jsel_2$10$clock;
+    reg  [4:0] jsel_2$11$d;
+    wire  [4:0] jsel_2$11$q;
+    reg  jsel_2$11$clock;
+    reg  [4:0] jsel_2$12$d;
+    wire  [4:0] jsel_2$12$q;
+    reg  jsel_2$12$clock;
+    reg  [4:0] jsel_2$13$d;
+    wire  [4:0] jsel_2$13$q;
+    reg  jsel_2$13$clock;
+    reg  [4:0] jsel_2$14$d;
+    wire  [4:0] jsel_2$14$q;
+    reg  jsel_2$14$clock;
+    reg  [4:0] jsel_2$15$d;
+    wire  [4:0] jsel_2$15$q;
+    reg  jsel_2$15$clock;
+    reg  [4:0] jsel_2$16$d;
+    wire  [4:0] jsel_2$16$q;
+    reg  jsel_2$16$clock;
+    reg  [4:0] jsel_2$17$d;
+    wire  [4:0] jsel_2$17$q;
+    reg  jsel_2$17$clock;
+    reg  [4:0] jsel_2$18$d;
+    wire  [4:0] jsel_2$18$q;
+    reg  jsel_2$18$clock;
+    reg  [4:0] jsel_2$19$d;
+    wire  [4:0] jsel_2$19$q;
+    reg  jsel_2$19$clock;
+    reg  [4:0] jsel_2$20$d;
+    wire  [4:0] jsel_2$20$q;
+    reg  jsel_2$20$clock;
+    reg  [4:0] jsel_2$21$d;
+    wire  [4:0] jsel_2$21$q;
+    reg  jsel_2$21$clock;
+    reg  [4:0] jsel_2$22$d;
+    wire  [4:0] jsel_2$22$q;
+    reg  jsel_2$22$clock;
+    reg  [4:0] jsel_2$23$d;
+    wire  [4:0] jsel_2$23$q;
+    reg  jsel_2$23$clock;
+    reg  rnd$0$d;
+    wire  rnd$0$q;
+    reg  rnd$0$clock;
+    reg  rnd$1$d;
+    wire  rnd$1$q;
+    reg  rnd$1$clock;
+    reg  rnd$2$d;
+    wire  rnd$2$q;
+    reg  rnd$2$clock;
+    reg  rnd$3$d;
+    wire  rnd$3$q;
+    reg  rnd$3$clock;
+    reg  rnd$4$d;
+    wire  rnd$4$q;
+    reg  rnd$4$clock;
+    reg  rnd$5$d;
+    wire  rnd$5$q;
+    reg  rnd$5$clock;
+    reg  rnd$6$d;
+    wire  rnd$6$q;
+    reg  rnd$6$clock;
+    reg  rnd$7$d;
+    wire  rnd$7$q;
+    reg  rnd$7$clock;
+    reg  rnd$8$d;
+    wire  rnd$8$q;
+    reg  rnd$8$clock;
+    reg  rnd$9$d;
+    wire  rnd$9$q;
+    reg  rnd$9$clock;
+    reg  rnd$10$d;
+    wire  rnd$10$q;
+    reg  rnd$10$clock;
+    reg  rnd$11$d;
+    wire  rnd$11$q;
+    reg  rnd$11$clock;
+    reg  rnd$12$d;
+    wire  rnd$12$q;
+    reg  rnd$12$clock;
+    reg  rnd$13$d;
+    wire  rnd$13$q;
+    reg  rnd$13$clock;
+    reg  rnd$14$d;
+    wire  rnd$14$q;
+    reg  rnd$14$clock;
+    reg  rnd$15$d;
+    wire  rnd$15$q;
+    reg  rnd$15$clock;
+    reg  rnd$16$d;
+    wire  rnd$16$q;
+    reg  rnd$16$clock;
+    reg  rnd$17$d;
+    wire  rnd$17$q;
+    reg  rnd$17$clock;
+    reg  rnd$18$d;
+    wire  rnd$18$q;
+    reg  rnd$18$clock;
+    reg  rnd$19$d;
+    wire  rnd$19$q;
+    reg  rnd$19$clock;
+    reg  rnd$20$d;
+    wire  rnd$20$q;
+    reg  rnd$20$clock;
+    reg  rnd$21$d;
+    wire  rnd$21$q;
+    reg  rnd$21$clock;
+    reg  rnd$22$d;
+    wire  rnd$22$q;
+    reg  rnd$22$clock;
+    reg  rnd$23$d;
+    wire  rnd$23$q;
+    reg  rnd$23$clock;
+    
+    // Local signals
+    reg  [4:0] c_lane;
+    reg  [2:0] c_field;
+    
+    // Sub module instances
+    top$base_na cmat_0$0(
+        .d(cmat_0$0$d),
+        .q(cmat_0$0$q),
+        .clock(cmat_0$0$clock)
+    );
+    top$base_na cmat_0$1(
+        .d(cmat_0$1$d),
+        .q(cmat_0$1$q),
+        .clock(cmat_0$1$clock)
+    );
+    top$base_na cmat_0$2(
+        .d(cmat_0$2$d),
+        .q(cmat_0$2$q),
+        .clock(cmat_0$2$clock)
+    );
+    top$base_na cmat_0$3(
+        .d(cmat_0$3$d),
+        .q(cmat_0$3$q),
+        .clock(cmat_0$3$clock)
+    );
+    top$base_na cmat_0$4(
+        .d(cmat_0$4$d),
+        .q(cmat_0$4$q),
+        .clock(cmat_0$4$clock)
+    );
+    top$base_na cmat_0$5(
+        .d(cmat_0$5$d),
+        .q(cmat_0$5$q),
+        .clock(cmat_0$5$clock)
+    );
+    top$base_na cmat_0$6(
+        .d(cmat_0$6$d),
+        .q(cmat_0$6$q),
+        .clock(cmat_0$6$clock)
+    );
+    top$base_na cmat_0$7(
+        .d(cmat_0$7$d),
+        .q(cmat_0$7$q),
+        .clock(cmat_0$7$clock)
+    );
+    top$base_na cmat_0$8(
+        .d(cmat_0$8$d),
+        .q(cmat_0$8$q),
+        .clock(cmat_0$8$clock)
+    );
+    top$base_na cmat_0$9(
+        .d(cmat_0$9$d),
+        .q(cmat_0$9$q),
+        .clock(cmat_0$9$clock)
+    );
+    top$base_na cmat_0$10(
+        .d(cmat_0$10$d),
+        .q(cmat_0$10$q),
+        .clock(cmat_0$10$clock)
+    );
+    top$base_na cmat_0$11(
+        .d(cmat_0$11$d),
+        .q(cmat_0$11$q),
+        .clock(cmat_0$11$clock)
+    );
+    top$base_na cmat_0$12(
+        .d(cmat_0$12$d),
+        .q(cmat_0$12$q),
+        .clock(cmat_0$12$clock)
+    );
+    top$base_na cmat_0$13(
+        .d(cmat_0$13$d),
+        .q(cmat_0$13$q),
+        .clock(cmat_0$13$clock)
+    );
+    top$base_na cmat_0$14(
+        .d(cmat_0$14$d),
+        .q(cmat_0$14$q),
+        .clock(cmat_0$14$clock)
+    );
+    top$base_na cmat_0$15(
+        .d(cmat_0$15$d),
+        .q(cmat_0$15$q),
+        .clock(cmat_0$15$clock)
+    );
+    top$base_na cmat_0$16(
+        .d(cmat_0$16$d),
+        .q(cmat_0$16$q),
+        .clock(cmat_0$16$clock)
+    );
+    top$base_na cmat_0$17(
+        .d(cmat_0$17$d),
+        .q(cmat_0$17$q),
+        .clock(cmat_0$17$clock)
+    );
+    top$base_na cmat_0$18(
+        .d(cmat_0$18$d),
+        .q(cmat_0$18$q),
+        .clock(cmat_0$18$clock)
+    );
+    top$base_na cmat_0$19(
+        .d(cmat_0$19$d),
+        .q(cmat_0$19$q),
+        .clock(cmat_0$19$clock)
+    );
+    top$base_na cmat_0$20(
+        .d(cmat_0$20$d),
+        .q(cmat_0$20$q),
+        .clock(cmat_0$20$clock)
+    );
+    top$base_na cmat_0$21(
+        .d(cmat_0$21$d),
+        .q(cmat_0$21$q),
+        .clock(cmat_0$21$clock)
+    );
+    top$base_na cmat_0$22(
+        .d(cmat_0$22$d),
+        .q(cmat_0$22$q),
+        .clock(cmat_0$22$clock)
+    );
+    top$base_na cmat_0$23(
+        .d(cmat_0$23$d),
+        .q(cmat_0$23$q),
+        .clock(cmat_0$23$clock)
+    );
+    top$base_na cmat_1$0(
+        .d(cmat_1$0$d),
+        .q(cmat_1$0$q),
+        .clock(cmat_1$0$clock)
+    );
+    top$base_na cmat_1$1(
+        .d(cmat_1$1$d),
+        .q(cmat_1$1$q),
+        .clock(cmat_1$1$clock)
+    );
+    top$base_na cmat_1$2(
+        .d(cmat_1$2$d),
+        .q(cmat_1$2$q),
+        .clock(cmat_1$2$clock)
+    );
+    top$base_na cmat_1$3(
+        .d(cmat_1$3$d),
+        .q(cmat_1$3$q),
+        .clock(cmat_1$3$clock)
+    );
+    top$base_na cmat_1$4(
+        .d(cmat_1$4$d),
+        .q(cmat_1$4$q),
+        .clock(cmat_1$4$clock)
+    );
+    top$base_na cmat_1$5(
+        .d(cmat_1$5$d),
+        .q(cmat_1$5$q),
+        .clock(cmat_1$5$clock)
+    );
+    top$base_na cmat_1$6(
+        .d(cmat_1$6$d),
+        .q(cmat_1$6$q),
+        .clock(cmat_1$6$clock)
+    );
+    top$base_na cmat_1$7(
+        .d(cmat_1$7$d),
+        .q(cmat_1$7$q),
+        .clock(cmat_1$7$clock)
+    );
+    top$base_na cmat_1$8(
+        .d(cmat_1$8$d),
+        .q(cmat_1$8$q),
+        .clock(cmat_1$8$clock)
+    );
+    top$base_na cmat_1$9(
+        .d(cmat_1$9$d),
+        .q(cmat_1$9$q),
+        .clock(cmat_1$9$clock)
+    );
+    top$base_na cmat_1$10(
+        .d(cmat_1$10$d),
+        .q(cmat_1$10$q),
+        .clock(cmat_1$10$clock)
+    );
+    top$base_na cmat_1$11(
+        .d(cmat_1$11$d),
+        .q(cmat_1$11$q),
+        .clock(cmat_1$11$clock)
+    );
+    top$base_na cmat_1$12(
+        .d(cmat_1$12$d),
+        .q(cmat_1$12$q),
+        .clock(cmat_1$12$clock)
+    );
+    top$base_na cmat_1$13(
+        .d(cmat_1$13$d),
+        .q(cmat_1$13$q),
+        .clock(cmat_1$13$clock)
+    );
+    top$base_na cmat_1$14(
+        .d(cmat_1$14$d),
+        .q(cmat_1$14$q),
+        .clock(cmat_1$14$clock)
+    );
+    top$base_na cmat_1$15(
+        .d(cmat_1$15$d),
+        .q(cmat_1$15$q),
+        .clock(cmat_1$15$clock)
+    );
+    top$base_na cmat_1$16(
+        .d(cmat_1$16$d),
+        .q(cmat_1$16$q),
+        .clock(cmat_1$16$clock)
+    );
+    top$base_na cmat_1$17(
+        .d(cmat_1$17$d),
+        .q(cmat_1$17$q),
+        .clock(cmat_1$17$clock)
+    );
+    top$base_na cmat_1$18(
+        .d(cmat_1$18$d),
+        .q(cmat_1$18$q),
+        .clock(cmat_1$18$clock)
+    );
+    top$base_na cmat_1$19(
+        .d(cmat_1$19$d),
+        .q(cmat_1$19$q),
+        .clock(cmat_1$19$clock)
+    );
+    top$base_na cmat_1$20(
+        .d(cmat_1$20$d),
+        .q(cmat_1$20$q),
+        .clock(cmat_1$20$clock)
+    );
+    top$base_na cmat_1$21(
+        .d(cmat_1$21$d),
+        .q(cmat_1$21$q),
+        .clock(cmat_1$21$clock)
+    );
+    top$base_na cmat_1$22(
+        .d(cmat_1$22$d),
+        .q(cmat_1$22$q),
+        .clock(cmat_1$22$clock)
+    );
+    top$base_na cmat_1$23(
+        .d(cmat_1$23$d),
+        .q(cmat_1$23$q),
+        .clock(cmat_1$23$clock)
+    );
+    top$base_na cmat_2$0(
+        .d(cmat_2$0$d),
+        .q(cmat_2$0$q),
+        .clock(cmat_2$0$clock)
+    );
+    top$base_na cmat_2$1(
+        .d(cmat_2$1$d),
+        .q(cmat_2$1$q),
+        .clock(cmat_2$1$clock)
+    );
+    top$base_na cmat_2$2(
+        .d(cmat_2$2$d),
+        .q(cmat_2$2$q),
+        .clock(cmat_2$2$clock)
+    );
+    top$base_na cmat_2$3(
+        .d(cmat_2$3$d),
+        .q(cmat_2$3$q),
+        .clock(cmat_2$3$clock)
+    );
+    top$base_na cmat_2$4(
+        .d(cmat_2$4$d),
+        .q(cmat_2$4$q),
+        .clock(cmat_2$4$clock)
+    );
+    top$base_na cmat_2$5(
+        .d(cmat_2$5$d),
+        .q(cmat_2$5$q),
+        .clock(cmat_2$5$clock)
+    );
+    top$base_na cmat_2$6(
+        .d(cmat_2$6$d),
+        .q(cmat_2$6$q),
+        .clock(cmat_2$6$clock)
+    );
+    top$base_na cmat_2$7(
+        .d(cmat_2$7$d),
+        .q(cmat_2$7$q),
+        .clock(cmat_2$7$clock)
+    );
+    top$base_na cmat_2$8(
+        .d(cmat_2$8$d),
+        .q(cmat_2$8$q),
+        .clock(cmat_2$8$clock)
+    );
+    top$base_na cmat_2$9(
+        .d(cmat_2$9$d),
+        .q(cmat_2$9$q),
+        .clock(cmat_2$9$clock)
+    );
+    top$base_na cmat_2$10(
+        .d(cmat_2$10$d),
+        .q(cmat_2$10$q),
+        .clock(cmat_2$10$clock)
+    );
+    top$base_na cmat_2$11(
+        .d(cmat_2$11$d),
+        .q(cmat_2$11$q),
+        .clock(cmat_2$11$clock)
+    );
+    top$base_na cmat_2$12(
+        .d(cmat_2$12$d),
+        .q(cmat_2$12$q),
+        .clock(cmat_2$12$clock)
+    );
+    top$base_na cmat_2$13(
+        .d(cmat_2$13$d),
+        .q(cmat_2$13$q),
+        .clock(cmat_2$13$clock)
+    );
+    top$base_na cmat_2$14(
+        .d(cmat_2$14$d),
+        .q(cmat_2$14$q),
+        .clock(cmat_2$14$clock)
+    );
+    top$base_na cmat_2$15(
+        .d(cmat_2$15$d),
+        .q(cmat_2$15$q),
+        .clock(cmat_2$15$clock)
+    );
+    top$base_na cmat_2$16(
+        .d(cmat_2$16$d),
+        .q(cmat_2$16$q),
+        .clock(cmat_2$16$clock)
+    );
+    top$base_na cmat_2$17(
+        .d(cmat_2$17$d),
+        .q(cmat_2$17$q),
+        .clock(cmat_2$17$clock)
+    );
+    top$base_na cmat_2$18(
+        .d(cmat_2$18$d),
+        .q(cmat_2$18$q),
+        .clock(cmat_2$18$clock)
+    );
+    top$base_na cmat_2$19(
+        .d(cmat_2$19$d),
+        .q(cmat_2$19$q),
+        .clock(cmat_2$19$clock)
+    );
+    top$base_na cmat_2$20(
+        .d(cmat_2$20$d),
+        .q(cmat_2$20$q),
+        .clock(cmat_2$20$clock)
+    );
+    top$base_na cmat_2$21(
+        .d(cmat_2$21$d),
+        .q(cmat_2$21$q),
+        .clock(cmat_2$21$clock)
+    );
+    top$base_na cmat_2$22(
+        .d(cmat_2$22$d),
+        .q(cmat_2$22$q),
+        .clock(cmat_2$22$clock)
+    );
+    top$base_na cmat_2$23(
+        .d(cmat_2$23$d),
+        .q(cmat_2$23$q),
+        .clock(cmat_2$23$clock)
+    );
+    top$base_na cvec$0(
+        .d(cvec$0$d),
+        .q(cvec$0$q),
+        .clock(cvec$0$clock)
+    );
+    top$base_na cvec$1(
+        .d(cvec$1$d),
+        .q(cvec$1$q),
+        .clock(cvec$1$clock)
+    );
+    top$base_na cvec$2(
+        .d(cvec$2$d),
+        .q(cvec$2$q),
+        .clock(cvec$2$clock)
+    );
+    top$base_na cvec$3(
+        .d(cvec$3$d),
+        .q(cvec$3$q),
+        .clock(cvec$3$clock)
+    );
+    top$base_na cvec$4(
+        .d(cvec$4$d),
+        .q(cvec$4$q),
+        .clock(cvec$4$clock)
+    );
+    top$base_na cvec$5(
+        .d(cvec$5$d),
+        .q(cvec$5$q),
+        .clock(cvec$5$clock)
+    );
+    top$base_na cvec$6(
+        .d(cvec$6$d),
+        .q(cvec$6$q),
+        .clock(cvec$6$clock)
+    );
+    top$base_na cvec$7(
+        .d(cvec$7$d),
+        .q(cvec$7$q),
+        .clock(cvec$7$clock)
+    );
+    top$base_na cvec$8(
+        .d(cvec$8$d),
+        .q(cvec$8$q),
+        .clock(cvec$8$clock)
+    );
+    top$base_na cvec$9(
+        .d(cvec$9$d),
+        .q(cvec$9$q),
+        .clock(cvec$9$clock)
+    );
+    top$base_na cvec$10(
+        .d(cvec$10$d),
+        .q(cvec$10$q),
+        .clock(cvec$10$clock)
+    );
+    top$base_na cvec$11(
+        .d(cvec$11$d),
+        .q(cvec$11$q),
+        .clock(cvec$11$clock)
+    );
+    top$base_na cvec$12(
+        .d(cvec$12$d),
+        .q(cvec$12$q),
+        .clock(cvec$12$clock)
+    );
+    top$base_na cvec$13(
+        .d(cvec$13$d),
+        .q(cvec$13$q),
+        .clock(cvec$13$clock)
+    );
+    top$base_na cvec$14(
+        .d(cvec$14$d),
+        .q(cvec$14$q),
+        .clock(cvec$14$clock)
+    );
+    top$base_na cvec$15(
+        .d(cvec$15$d),
+        .q(cvec$15$q),
+        .clock(cvec$15$clock)
+    );
+    top$base_na cvec$16(
+        .d(cvec$16$d),
+        .q(cvec$16$q),
+        .clock(cvec$16$clock)
+    );
+    top$base_na cvec$17(
+        .d(cvec$17$d),
+        .q(cvec$17$q),
+        .clock(cvec$17$clock)
+    );
+    top$base_na cvec$18(
+        .d(cvec$18$d),
+        .q(cvec$18$q),
+        .clock(cvec$18$clock)
+    );
+    top$base_na cvec$19(
+        .d(cvec$19$d),
+        .q(cvec$19$q),
+        .clock(cvec$19$clock)
+    );
+    top$base_na cvec$20(
+        .d(cvec$20$d),
+        .q(cvec$20$q),
+        .clock(cvec$20$clock)
+    );
+    top$base_na cvec$21(
+        .d(cvec$21$d),
+        .q(cvec$21$q),
+        .clock(cvec$21$clock)
+    );
+    top$base_na cvec$22(
+        .d(cvec$22$d),
+        .q(cvec$22$q),
+        .clock(cvec$22$clock)
+    );
+    top$base_na cvec$23(
+        .d(cvec$23$d),
+        .q(cvec$23$q),
+        .clock(cvec$23$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_0$0(
+        .d(jsel_0$0$d),
+        .q(jsel_0$0$q),
+        .clock(jsel_0$0$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_0$1(
+        .d(jsel_0$1$d),
+        .q(jsel_0$1$q),
+        .clock(jsel_0$1$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_0$2(
+        .d(jsel_0$2$d),
+        .q(jsel_0$2$q),
+        .clock(jsel_0$2$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_0$3(
+        .d(jsel_0$3$d),
+        .q(jsel_0$3$q),
+        .clock(jsel_0$3$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_0$4(
+        .d(jsel_0$4$d),
+        .q(jsel_0$4$q),
+        .clock(jsel_0$4$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_0$5(
+        .d(jsel_0$5$d),
+        .q(jsel_0$5$q),
+        .clock(jsel_0$5$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_0$6(
+        .d(jsel_0$6$d),
+        .q(jsel_0$6$q),
+        .clock(jsel_0$6$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_0$7(
+        .d(jsel_0$7$d),
+        .q(jsel_0$7$q),
+        .clock(jsel_0$7$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_0$8(
+        .d(jsel_0$8$d),
+        .q(jsel_0$8$q),
+        .clock(jsel_0$8$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_0$9(
+        .d(jsel_0$9$d),
+        .q(jsel_0$9$q),
+        .clock(jsel_0$9$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_0$10(
+        .d(jsel_0$10$d),
+        .q(jsel_0$10$q),
+        .clock(jsel_0$10$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_0$11(
+        .d(jsel_0$11$d),
+        .q(jsel_0$11$q),
+        .clock(jsel_0$11$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_0$12(
+        .d(jsel_0$12$d),
+        .q(jsel_0$12$q),
+        .clock(jsel_0$12$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_0$13(
+        .d(jsel_0$13$d),
+        .q(jsel_0$13$q),
+        .clock(jsel_0$13$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_0$14(
+        .d(jsel_0$14$d),
+        .q(jsel_0$14$q),
+        .clock(jsel_0$14$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_0$15(
+        .d(jsel_0$15$d),
+        .q(jsel_0$15$q),
+        .clock(jsel_0$15$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_0$16(
+        .d(jsel_0$16$d),
+        .q(jsel_0$16$q),
+        .clock(jsel_0$16$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_0$17(
+        .d(jsel_0$17$d),
+        .q(jsel_0$17$q),
+        .clock(jsel_0$17$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_0$18(
+        .d(jsel_0$18$d),
+        .q(jsel_0$18$q),
+        .clock(jsel_0$18$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_0$19(
+        .d(jsel_0$19$d),
+        .q(jsel_0$19$q),
+        .clock(jsel_0$19$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_0$20(
+        .d(jsel_0$20$d),
+        .q(jsel_0$20$q),
+        .clock(jsel_0$20$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_0$21(
+        .d(jsel_0$21$d),
+        .q(jsel_0$21$q),
+        .clock(jsel_0$21$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_0$22(
+        .d(jsel_0$22$d),
+        .q(jsel_0$22$q),
+        .clock(jsel_0$22$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_0$23(
+        .d(jsel_0$23$d),
+        .q(jsel_0$23$q),
+        .clock(jsel_0$23$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_1$0(
+        .d(jsel_1$0$d),
+        .q(jsel_1$0$q),
+        .clock(jsel_1$0$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_1$1(
+        .d(jsel_1$1$d),
+        .q(jsel_1$1$q),
+        .clock(jsel_1$1$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_1$2(
+        .d(jsel_1$2$d),
+        .q(jsel_1$2$q),
+        .clock(jsel_1$2$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_1$3(
+        .d(jsel_1$3$d),
+        .q(jsel_1$3$q),
+        .clock(jsel_1$3$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_1$4(
+        .d(jsel_1$4$d),
+        .q(jsel_1$4$q),
+        .clock(jsel_1$4$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_1$5(
+        .d(jsel_1$5$d),
+        .q(jsel_1$5$q),
+        .clock(jsel_1$5$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_1$6(
+        .d(jsel_1$6$d),
+        .q(jsel_1$6$q),
+        .clock(jsel_1$6$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_1$7(
+        .d(jsel_1$7$d),
+        .q(jsel_1$7$q),
+        .clock(jsel_1$7$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_1$8(
+        .d(jsel_1$8$d),
+        .q(jsel_1$8$q),
+        .clock(jsel_1$8$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_1$9(
+        .d(jsel_1$9$d),
+        .q(jsel_1$9$q),
+        .clock(jsel_1$9$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_1$10(
+        .d(jsel_1$10$d),
+        .q(jsel_1$10$q),
+        .clock(jsel_1$10$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_1$11(
+        .d(jsel_1$11$d),
+        .q(jsel_1$11$q),
+        .clock(jsel_1$11$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_1$12(
+        .d(jsel_1$12$d),
+        .q(jsel_1$12$q),
+        .clock(jsel_1$12$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_1$13(
+        .d(jsel_1$13$d),
+        .q(jsel_1$13$q),
+        .clock(jsel_1$13$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_1$14(
+        .d(jsel_1$14$d),
+        .q(jsel_1$14$q),
+        .clock(jsel_1$14$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_1$15(
+        .d(jsel_1$15$d),
+        .q(jsel_1$15$q),
+        .clock(jsel_1$15$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_1$16(
+        .d(jsel_1$16$d),
+        .q(jsel_1$16$q),
+        .clock(jsel_1$16$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_1$17(
+        .d(jsel_1$17$d),
+        .q(jsel_1$17$q),
+        .clock(jsel_1$17$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_1$18(
+        .d(jsel_1$18$d),
+        .q(jsel_1$18$q),
+        .clock(jsel_1$18$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_1$19(
+        .d(jsel_1$19$d),
+        .q(jsel_1$19$q),
+        .clock(jsel_1$19$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_1$20(
+        .d(jsel_1$20$d),
+        .q(jsel_1$20$q),
+        .clock(jsel_1$20$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_1$21(
+        .d(jsel_1$21$d),
+        .q(jsel_1$21$q),
+        .clock(jsel_1$21$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_1$22(
+        .d(jsel_1$22$d),
+        .q(jsel_1$22$q),
+        .clock(jsel_1$22$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_1$23(
+        .d(jsel_1$23$d),
+        .q(jsel_1$23$q),
+        .clock(jsel_1$23$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_2$0(
+        .d(jsel_2$0$d),
+        .q(jsel_2$0$q),
+        .clock(jsel_2$0$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_2$1(
+        .d(jsel_2$1$d),
+        .q(jsel_2$1$q),
+        .clock(jsel_2$1$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_2$2(
+        .d(jsel_2$2$d),
+        .q(jsel_2$2$q),
+        .clock(jsel_2$2$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_2$3(
+        .d(jsel_2$3$d),
+        .q(jsel_2$3$q),
+        .clock(jsel_2$3$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_2$4(
+        .d(jsel_2$4$d),
+        .q(jsel_2$4$q),
+        .clock(jsel_2$4$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_2$5(
+        .d(jsel_2$5$d),
+        .q(jsel_2$5$q),
+        .clock(jsel_2$5$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_2$6(
+        .d(jsel_2$6$d),
+        .q(jsel_2$6$q),
+        .clock(jsel_2$6$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_2$7(
+        .d(jsel_2$7$d),
+        .q(jsel_2$7$q),
+        .clock(jsel_2$7$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_2$8(
+        .d(jsel_2$8$d),
+        .q(jsel_2$8$q),
+        .clock(jsel_2$8$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_2$9(
+        .d(jsel_2$9$d),
+        .q(jsel_2$9$q),
+        .clock(jsel_2$9$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_2$10(
+        .d(jsel_2$10$d),
+        .q(jsel_2$10$q),
+        .clock(jsel_2$10$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_2$11(
+        .d(jsel_2$11$d),
+        .q(jsel_2$11$q),
+        .clock(jsel_2$11$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_2$12(
+        .d(jsel_2$12$d),
+        .q(jsel_2$12$q),
+        .clock(jsel_2$12$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_2$13(
+        .d(jsel_2$13$d),
+        .q(jsel_2$13$q),
+        .clock(jsel_2$13$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_2$14(
+        .d(jsel_2$14$d),
+        .q(jsel_2$14$q),
+        .clock(jsel_2$14$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_2$15(
+        .d(jsel_2$15$d),
+        .q(jsel_2$15$q),
+        .clock(jsel_2$15$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_2$16(
+        .d(jsel_2$16$d),
+        .q(jsel_2$16$q),
+        .clock(jsel_2$16$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_2$17(
+        .d(jsel_2$17$d),
+        .q(jsel_2$17$q),
+        .clock(jsel_2$17$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_2$18(
+        .d(jsel_2$18$d),
+        .q(jsel_2$18$q),
+        .clock(jsel_2$18$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_2$19(
+        .d(jsel_2$19$d),
+        .q(jsel_2$19$q),
+        .clock(jsel_2$19$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_2$20(
+        .d(jsel_2$20$d),
+        .q(jsel_2$20$q),
+        .clock(jsel_2$20$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_2$21(
+        .d(jsel_2$21$d),
+        .q(jsel_2$21$q),
+        .clock(jsel_2$21$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_2$22(
+        .d(jsel_2$22$d),
+        .q(jsel_2$22$q),
+        .clock(jsel_2$22$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_2$23(
+        .d(jsel_2$23$d),
+        .q(jsel_2$23$q),
+        .clock(jsel_2$23$clock)
+    );
+    top$cnt_dop$pending rnd$0(
+        .d(rnd$0$d),
+        .q(rnd$0$q),
+        .clock(rnd$0$clock)
+    );
+    top$cnt_dop$pending rnd$1(
+        .d(rnd$1$d),
+        .q(rnd$1$q),
+        .clock(rnd$1$clock)
+    );
+    top$cnt_dop$pending rnd$2(
+        .d(rnd$2$d),
+        .q(rnd$2$q),
+        .clock(rnd$2$clock)
+    );
+    top$cnt_dop$pending rnd$3(
+        .d(rnd$3$d),
+        .q(rnd$3$q),
+        .clock(rnd$3$clock)
+    );
+    top$cnt_dop$pending rnd$4(
+        .d(rnd$4$d),
+        .q(rnd$4$q),
+        .clock(rnd$4$clock)
+    );
+    top$cnt_dop$pending rnd$5(
+        .d(rnd$5$d),
+        .q(rnd$5$q),
+        .clock(rnd$5$clock)
+    );
+    top$cnt_dop$pending rnd$6(
+        .d(rnd$6$d),
+        .q(rnd$6$q),
+        .clock(rnd$6$clock)
+    );
+    top$cnt_dop$pending rnd$7(
+        .d(rnd$7$d),
+        .q(rnd$7$q),
+        .clock(rnd$7$clock)
+    );
+    top$cnt_dop$pending rnd$8(
+        .d(rnd$8$d),
+        .q(rnd$8$q),
+        .clock(rnd$8$clock)
+    );
+    top$cnt_dop$pending rnd$9(
+        .d(rnd$9$d),
+        .q(rnd$9$q),
+        .clock(rnd$9$clock)
+    );
+    top$cnt_dop$pending rnd$10(
+        .d(rnd$10$d),
+        .q(rnd$10$q),
+        .clock(rnd$10$clock)
+    );
+    top$cnt_dop$pending rnd$11(
+        .d(rnd$11$d),
+        .q(rnd$11$q),
+        .clock(rnd$11$clock)
+    );
+    top$cnt_dop$pending rnd$12(
+        .d(rnd$12$d),
+        .q(rnd$12$q),
+        .clock(rnd$12$clock)
+    );
+    top$cnt_dop$pending rnd$13(
+        .d(rnd$13$d),
+        .q(rnd$13$q),
+        .clock(rnd$13$clock)
+    );
+    top$cnt_dop$pending rnd$14(
+        .d(rnd$14$d),
+        .q(rnd$14$q),
+        .clock(rnd$14$clock)
+    );
+    top$cnt_dop$pending rnd$15(
+        .d(rnd$15$d),
+        .q(rnd$15$q),
+        .clock(rnd$15$clock)
+    );
+    top$cnt_dop$pending rnd$16(
+        .d(rnd$16$d),
+        .q(rnd$16$q),
+        .clock(rnd$16$clock)
+    );
+    top$cnt_dop$pending rnd$17(
+        .d(rnd$17$d),
+        .q(rnd$17$q),
+        .clock(rnd$17$clock)
+    );
+    top$cnt_dop$pending rnd$18(
+        .d(rnd$18$d),
+        .q(rnd$18$q),
+        .clock(rnd$18$clock)
+    );
+    top$cnt_dop$pending rnd$19(
+        .d(rnd$19$d),
+        .q(rnd$19$q),
+        .clock(rnd$19$clock)
+    );
+    top$cnt_dop$pending rnd$20(
+        .d(rnd$20$d),
+        .q(rnd$20$q),
+        .clock(rnd$20$clock)
+    );
+    top$cnt_dop$pending rnd$21(
+        .d(rnd$21$d),
+        .q(rnd$21$q),
+        .clock(rnd$21$clock)
+    );
+    top$cnt_dop$pending rnd$22(
+        .d(rnd$22$d),
+        .q(rnd$22$q),
+        .clock(rnd$22$clock)
+    );
+    top$cnt_dop$pending rnd$23(
+        .d(rnd$23$d),
+        .q(rnd$23$q),
+        .clock(rnd$23$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        c_lane = load_addr[(32'h3)+:(5)];
+        c_field = load_addr[(32'h0)+:(3)];
+        cmat_0$0$clock = clock;
+        cmat_1$0$clock = clock;
+        cmat_2$0$clock = clock;
+        cvec$0$clock = clock;
+        jsel_0$0$clock = clock;
+        jsel_1$0$clock = clock;
+        jsel_2$0$clock = clock;
+        rnd$0$clock = clock;
+        cmat_0$0$d = cmat_0$0$q;
+        cmat_1$0$d = cmat_1$0$q;
+        cmat_2$0$d = cmat_2$0$q;
+        cvec$0$d = cvec$0$q;
+        jsel_0$0$d = jsel_0$0$q;
+        jsel_1$0$d = jsel_1$0$q;
+        jsel_2$0$d = jsel_2$0$q;
+        rnd$0$d = rnd$0$q;
+        if (load_en & (c_lane == idx$0)) begin
+            if (c_field == 32'h0) begin
+                cmat_0$0$d = load_data;
+            end
+            if (c_field == 32'h1) begin
+                cmat_1$0$d = load_data;
+            end
+            if (c_field == 32'h2) begin
+                cmat_2$0$d = load_data;
+            end
+            if (c_field == 32'h3) begin
+                cvec$0$d = load_data;
+            end
+            if (c_field == 32'h4) begin
+                jsel_0$0$d = load_data[(32'h0)+:(5)];
+                jsel_1$0$d = load_data[(32'h5)+:(5)];
+                jsel_2$0$d = load_data[(32'ha)+:(5)];
+                rnd$0$d = load_data[32'hf];
+            end
+        end
+        c0$0 = cmat_0$0$q;
+        c1$0 = cmat_1$0$q;
+        c2$0 = cmat_2$0$q;
+        c$0 = cvec$0$q;
+        j0$0 = jsel_0$0$q;
+        j1$0 = jsel_1$0$q;
+        j2$0 = jsel_2$0$q;
+        round_up$0 = rnd$0$q;
+        cmat_0$1$clock = clock;
+        cmat_1$1$clock = clock;
+        cmat_2$1$clock = clock;
+        cvec$1$clock = clock;
+        jsel_0$1$clock = clock;
+        jsel_1$1$clock = clock;
+        jsel_2$1$clock = clock;
+        rnd$1$clock = clock;
+        cmat_0$1$d = cmat_0$1$q;
+        cmat_1$1$d = cmat_1$1$q;
+        cmat_2$1$d = cmat_2$1$q;
+        cvec$1$d = cvec$1$q;
+        jsel_0$1$d = jsel_0$1$q;
+        jsel_1$1$d = jsel_1$1$q;
+        jsel_2$1$d = jsel_2$1$q;
+        rnd$1$d = rnd$1$q;
+        if (load_en & (c_lane == idx$1)) begin
+            if (c_field == 32'h0) begin
+                cmat_0$1$d = load_data;
+            end
+            if (c_field == 32'h1) begin
+                cmat_1$1$d = load_data;
+            end
+            if (c_field == 32'h2) begin
+                cmat_2$1$d = load_data;
+            end
+            if (c_field == 32'h3) begin
+                cvec$1$d = load_data;
+            end
+            if (c_field == 32'h4) begin
+                jsel_0$1$d = load_data[(32'h0)+:(5)];
+                jsel_1$1$d = load_data[(32'h5)+:(5)];
+                jsel_2$1$d = load_data[(32'ha)+:(5)];
+                rnd$1$d = load_data[32'hf];
+            end
+        end
+        c0$1 = cmat_0$1$q;
+        c1$1 = cmat_1$1$q;
+        c2$1 = cmat_2$1$q;
+        c$1 = cvec$1$q;
+        j0$1 = jsel_0$1$q;
+        j1$1 = jsel_1$1$q;
+        j2$1 = jsel_2$1$q;
+        round_up$1 = rnd$1$q;
+        cmat_0$2$clock = clock;
+        cmat_1$2$clock = clock;
+        cmat_2$2$clock = clock;
+        cvec$2$clock = clock;
+        jsel_0$2$clock = clock;
+        jsel_1$2$clock = clock;
+        jsel_2$2$clock = clock;
+        rnd$2$clock = clock;
+        cmat_0$2$d = cmat_0$2$q;
+        cmat_1$2$d = cmat_1$2$q;
+        cmat_2$2$d = cmat_2$2$q;
+        cvec$2$d = cvec$2$q;
+        jsel_0$2$d = jsel_0$2$q;
+        jsel_1$2$d = jsel_1$2$q;
+        jsel_2$2$d = jsel_2$2$q;
+        rnd$2$d = rnd$2$q;
+        if (load_en & (c_lane == idx$2)) begin
+            if (c_field == 32'h0) begin
+                cmat_0$2$d = load_data;
+            end
+            if (c_field == 32'h1) begin
+                cmat_1$2$d = load_data;
+            end
+            if (c_field == 32'h2) begin
+                cmat_2$2$d = load_data;
+            end
+            if (c_field == 32'h3) begin
+                cvec$2$d = load_data;
+            end
+            if (c_field == 32'h4) begin
+                jsel_0$2$d = load_data[(32'h0)+:(5)];
+                jsel_1$2$d = load_data[(32'h5)+:(5)];
+                jsel_2$2$d = load_data[(32'ha)+:(5)];
+                rnd$2$d = load_data[32'hf];
+            end
+        end
+        c0$2 = cmat_0$2$q;
+        c1$2 = cmat_1$2$q;
+        c2$2 = cmat_2$2$q;
+        c$2 = cvec$2$q;
+        j0$2 = jsel_0$2$q;
+        j1$2 = jsel_1$2$q;
+        j2$2 = jsel_2$2$q;
+        round_up$2 = rnd$2$q;
+        cmat_0$3$clock = clock;
+        cmat_1$3$clock = clock;
+        cmat_2$3$clock = clock;
+        cvec$3$clock = clock;
+        jsel_0$3$clock = clock;
+        jsel_1$3$clock = clock;
+        jsel_2$3$clock = clock;
+        rnd$3$clock = clock;
+        cmat_0$3$d = cmat_0$3$q;
+        cmat_1$3$d = cmat_1$3$q;
+        cmat_2$3$d = cmat_2$3$q;
+        cvec$3$d = cvec$3$q;
+        jsel_0$3$d = jsel_0$3$q;
+        jsel_1$3$d = jsel_1$3$q;
+        jsel_2$3$d = jsel_2$3$q;
+        rnd$3$d = rnd$3$q;
+        if (load_en & (c_lane == idx$3)) begin
+            if (c_field == 32'h0) begin
+                cmat_0$3$d = load_data;
+            end
+            if (c_field == 32'h1) begin
+                cmat_1$3$d = load_data;
+            end
+            if (c_field == 32'h2) begin
+                cmat_2$3$d = load_data;
+            end
+            if (c_field == 32'h3) begin
+                cvec$3$d = load_data;
+            end
+            if (c_field == 32'h4) begin
+                jsel_0$3$d = load_data[(32'h0)+:(5)];
+                jsel_1$3$d = load_data[(32'h5)+:(5)];
+                jsel_2$3$d = load_data[(32'ha)+:(5)];
+                rnd$3$d = load_data[32'hf];
+            end
+        end
+        c0$3 = cmat_0$3$q;
+        c1$3 = cmat_1$3$q;
+        c2$3 = cmat_2$3$q;
+        c$3 = cvec$3$q;
+        j0$3 = jsel_0$3$q;
+        j1$3 = jsel_1$3$q;
+        j2$3 = jsel_2$3$q;
+        round_up$3 = rnd$3$q;
+        cmat_0$4$clock = clock;
+        cmat_1$4$clock = clock;
+        cmat_2$4$clock = clock;
+        cvec$4$clock = clock;
+        jsel_0$4$clock = clock;
+        jsel_1$4$clock = clock;
+        jsel_2$4$clock = clock;
+        rnd$4$clock = clock;
+        cmat_0$4$d = cmat_0$4$q;
+        cmat_1$4$d = cmat_1$4$q;
+        cmat_2$4$d = cmat_2$4$q;
+        cvec$4$d = cvec$4$q;
+        jsel_0$4$d = jsel_0$4$q;
+        jsel_1$4$d = jsel_1$4$q;
+        jsel_2$4$d = jsel_2$4$q;
+        rnd$4$d = rnd$4$q;
+        if (load_en & (c_lane == idx$4)) begin
+            if (c_field == 32'h0) begin
+                cmat_0$4$d = load_data;
+            end
+            if (c_field == 32'h1) begin
+                cmat_1$4$d = load_data;
+            end
+            if (c_field == 32'h2) begin
+                cmat_2$4$d = load_data;
+            end
+            if (c_field == 32'h3) begin
+                cvec$4$d = load_data;
+            end
+            if (c_field == 32'h4) begin
+                jsel_0$4$d = load_data[(32'h0)+:(5)];
+                jsel_1$4$d = load_data[(32'h5)+:(5)];
+                jsel_2$4$d = load_data[(32'ha)+:(5)];
+                rnd$4$d = load_data[32'hf];
+            end
+        end
+        c0$4 = cmat_0$4$q;
+        c1$4 = cmat_1$4$q;
+        c2$4 = cmat_2$4$q;
+        c$4 = cvec$4$q;
+        j0$4 = jsel_0$4$q;
+        j1$4 = jsel_1$4$q;
+        j2$4 = jsel_2$4$q;
+        round_up$4 = rnd$4$q;
+        cmat_0$5$clock = clock;
+        cmat_1$5$clock = clock;
+        cmat_2$5$clock = clock;
+        cvec$5$clock = clock;
+        jsel_0$5$clock = clock;
+        jsel_1$5$clock = clock;
+        jsel_2$5$clock = clock;
+        rnd$5$clock = clock;
+        cmat_0$5$d = cmat_0$5$q;
+        cmat_1$5$d = cmat_1$5$q;
+        cmat_2$5$d = cmat_2$5$q;
+        cvec$5$d = cvec$5$q;
+        jsel_0$5$d = jsel_0$5$q;
+        jsel_1$5$d = jsel_1$5$q;
+        jsel_2$5$d = jsel_2$5$q;
+        rnd$5$d = rnd$5$q;
+        if (load_en & (c_lane == idx$5)) begin
+            if (c_field == 32'h0) begin
+                cmat_0$5$d = load_data;
+            end
+            if (c_field == 32'h1) begin
+                cmat_1$5$d = load_data;
+            end
+            if (c_field == 32'h2) begin
+                cmat_2$5$d = load_data;
+            end
+            if (c_field == 32'h3) begin
+                cvec$5$d = load_data;
+            end
+            if (c_field == 32'h4) begin
+                jsel_0$5$d = load_data[(32'h0)+:(5)];
+                jsel_1$5$d = load_data[(32'h5)+:(5)];
+                jsel_2$5$d = load_data[(32'ha)+:(5)];
+                rnd$5$d = load_data[32'hf];
+            end
+        end
+        c0$5 = cmat_0$5$q;
+        c1$5 = cmat_1$5$q;
+        c2$5 = cmat_2$5$q;
+        c$5 = cvec$5$q;
+        j0$5 = jsel_0$5$q;
+        j1$5 = jsel_1$5$q;
+        j2$5 = jsel_2$5$q;
+        round_up$5 = rnd$5$q;
+        cmat_0$6$clock = clock;
+        cmat_1$6$clock = clock;
+        cmat_2$6$clock = clock;
+        cvec$6$clock = clock;
+        jsel_0$6$clock = clock;
+        jsel_1$6$clock = clock;
+        jsel_2$6$clock = clock;
+        rnd$6$clock = clock;
+        cmat_0$6$d = cmat_0$6$q;
+        cmat_1$6$d = cmat_1$6$q;
+        cmat_2$6$d = cmat_2$6$q;
+        cvec$6$d = cvec$6$q;
+        jsel_0$6$d = jsel_0$6$q;
+        jsel_1$6$d = jsel_1$6$q;
+        jsel_2$6$d = jsel_2$6$q;
+        rnd$6$d = rnd$6$q;
+        if (load_en & (c_lane == idx$6)) begin
+            if (c_field == 32'h0) begin
+                cmat_0$6$d = load_data;
+            end
+            if (c_field == 32'h1) begin
+                cmat_1$6$d = load_data;
+            end
+            if (c_field == 32'h2) begin
+                cmat_2$6$d = load_data;
+            end
+            if (c_field == 32'h3) begin
+                cvec$6$d = load_data;
+            end
+            if (c_field == 32'h4) begin
+                jsel_0$6$d = load_data[(32'h0)+:(5)];
+                jsel_1$6$d = load_data[(32'h5)+:(5)];
+                jsel_2$6$d = load_data[(32'ha)+:(5)];
+                rnd$6$d = load_data[32'hf];
+            end
+        end
+        c0$6 = cmat_0$6$q;
+        c1$6 = cmat_1$6$q;
+        c2$6 = cmat_2$6$q;
+        c$6 = cvec$6$q;
+        j0$6 = jsel_0$6$q;
+        j1$6 = jsel_1$6$q;
+        j2$6 = jsel_2$6$q;
+        round_up$6 = rnd$6$q;
+        cmat_0$7$clock = clock;
+        cmat_1$7$clock = clock;
+        cmat_2$7$clock = clock;
+        cvec$7$clock = clock;
+        jsel_0$7$clock = clock;
+        jsel_1$7$clock = clock;
+        jsel_2$7$clock = clock;
+        rnd$7$clock = clock;
+        cmat_0$7$d = cmat_0$7$q;
+        cmat_1$7$d = cmat_1$7$q;
+        cmat_2$7$d = cmat_2$7$q;
+        cvec$7$d = cvec$7$q;
+        jsel_0$7$d = jsel_0$7$q;
+        jsel_1$7$d = jsel_1$7$q;
+        jsel_2$7$d = jsel_2$7$q;
+        rnd$7$d = rnd$7$q;
+        if (load_en & (c_lane == idx$7)) begin
+            if (c_field == 32'h0) begin
+                cmat_0$7$d = load_data;
+            end
+            if (c_field == 32'h1) begin
+                cmat_1$7$d = load_data;
+            end
+            if (c_field == 32'h2) begin
+                cmat_2$7$d = load_data;
+            end
+            if (c_field == 32'h3) begin
+                cvec$7$d = load_data;
+            end
+            if (c_field == 32'h4) begin
+                jsel_0$7$d = load_data[(32'h0)+:(5)];
+                jsel_1$7$d = load_data[(32'h5)+:(5)];
+                jsel_2$7$d = load_data[(32'ha)+:(5)];
+                rnd$7$d = load_data[32'hf];
+            end
+        end
+        c0$7 = cmat_0$7$q;
+        c1$7 = cmat_1$7$q;
+        c2$7 = cmat_2$7$q;
+        c$7 = cvec$7$q;
+        j0$7 = jsel_0$7$q;
+        j1$7 = jsel_1$7$q;
+        j2$7 = jsel_2$7$q;
+        round_up$7 = rnd$7$q;
+        cmat_0$8$clock = clock;
+        cmat_1$8$clock = clock;
+        cmat_2$8$clock = clock;
+        cvec$8$clock = clock;
+        jsel_0$8$clock = clock;
+        jsel_1$8$clock = clock;
+        jsel_2$8$clock = clock;
+        rnd$8$clock = clock;
+        cmat_0$8$d = cmat_0$8$q;
+        cmat_1$8$d = cmat_1$8$q;
+        cmat_2$8$d = cmat_2$8$q;
+        cvec$8$d = cvec$8$q;
+        jsel_0$8$d = jsel_0$8$q;
+        jsel_1$8$d = jsel_1$8$q;
+        jsel_2$8$d = jsel_2$8$q;
+        rnd$8$d = rnd$8$q;
+        if (load_en & (c_lane == idx$8)) begin
+            if (c_field == 32'h0) begin
+                cmat_0$8$d = load_data;
+            end
+            if (c_field == 32'h1) begin
+                cmat_1$8$d = load_data;
+            end
+            if (c_field == 32'h2) begin
+                cmat_2$8$d = load_data;
+            end
+            if (c_field == 32'h3) begin
+                cvec$8$d = load_data;
+            end
+            if (c_field == 32'h4) begin
+                jsel_0$8$d = load_data[(32'h0)+:(5)];
+                jsel_1$8$d = load_data[(32'h5)+:(5)];
+                jsel_2$8$d = load_data[(32'ha)+:(5)];
+                rnd$8$d = load_data[32'hf];
+            end
+        end
+        c0$8 = cmat_0$8$q;
+        c1$8 = cmat_1$8$q;
+        c2$8 = cmat_2$8$q;
+        c$8 = cvec$8$q;
+        j0$8 = jsel_0$8$q;
+        j1$8 = jsel_1$8$q;
+        j2$8 = jsel_2$8$q;
+        round_up$8 = rnd$8$q;
+        cmat_0$9$clock = clock;
+        cmat_1$9$clock = clock;
+        cmat_2$9$clock = clock;
+        cvec$9$clock = clock;
+        jsel_0$9$clock = clock;
+        jsel_1$9$clock = clock;
+        jsel_2$9$clock = clock;
+        rnd$9$clock = clock;
+        cmat_0$9$d = cmat_0$9$q;
+        cmat_1$9$d = cmat_1$9$q;
+        cmat_2$9$d = cmat_2$9$q;
+        cvec$9$d = cvec$9$q;
+        jsel_0$9$d = jsel_0$9$q;
+        jsel_1$9$d = jsel_1$9$q;
+        jsel_2$9$d = jsel_2$9$q;
+        rnd$9$d = rnd$9$q;
+        if (load_en & (c_lane == idx$9)) begin
+            if (c_field == 32'h0) begin
+                cmat_0$9$d = load_data;
+            end
+            if (c_field == 32'h1) begin
+                cmat_1$9$d = load_data;
+            end
+            if (c_field == 32'h2) begin
+                cmat_2$9$d = load_data;
+            end
+            if (c_field == 32'h3) begin
+                cvec$9$d = load_data;
+            end
+            if (c_field == 32'h4) begin
+                jsel_0$9$d = load_data[(32'h0)+:(5)];
+                jsel_1$9$d = load_data[(32'h5)+:(5)];
+                jsel_2$9$d = load_data[(32'ha)+:(5)];
+                rnd$9$d = load_data[32'hf];
+            end
+        end
+        c0$9 = cmat_0$9$q;
+        c1$9 = cmat_1$9$q;
+        c2$9 = cmat_2$9$q;
+        c$9 = cvec$9$q;
+        j0$9 = jsel_0$9$q;
+        j1$9 = jsel_1$9$q;
+        j2$9 = jsel_2$9$q;
+        round_up$9 = rnd$9$q;
+        cmat_0$10$clock = clock;
+        cmat_1$10$clock = clock;
+        cmat_2$10$clock = clock;
+        cvec$10$clock = clock;
+        jsel_0$10$clock = clock;
+        jsel_1$10$clock = clock;
+        jsel_2$10$clock = clock;
+        rnd$10$clock = clock;
+        cmat_0$10$d = cmat_0$10$q;
+        cmat_1$10$d = cmat_1$10$q;
+        cmat_2$10$d = cmat_2$10$q;
+        cvec$10$d = cvec$10$q;
+        jsel_0$10$d = jsel_0$10$q;
+        jsel_1$10$d = jsel_1$10$q;
+        jsel_2$10$d = jsel_2$10$q;
+        rnd$10$d = rnd$10$q;
+        if (load_en & (c_lane == idx$10)) begin
+            if (c_field == 32'h0) begin
+                cmat_0$10$d = load_data;
+            end
+            if (c_field == 32'h1) begin
+                cmat_1$10$d = load_data;
+            end
+            if (c_field == 32'h2) begin
+                cmat_2$10$d = load_data;
+            end
+            if (c_field == 32'h3) begin
+                cvec$10$d = load_data;
+            end
+            if (c_field == 32'h4) begin
+                jsel_0$10$d = load_data[(32'h0)+:(5)];
+                jsel_1$10$d = load_data[(32'h5)+:(5)];
+                jsel_2$10$d = load_data[(32'ha)+:(5)];
+                rnd$10$d = load_data[32'hf];
+            end
+        end
+        c0$10 = cmat_0$10$q;
+        c1$10 = cmat_1$10$q;
+        c2$10 = cmat_2$10$q;
+        c$10 = cvec$10$q;
+        j0$10 = jsel_0$10$q;
+        j1$10 = jsel_1$10$q;
+        j2$10 = jsel_2$10$q;
+        round_up$10 = rnd$10$q;
+        cmat_0$11$clock = clock;
+        cmat_1$11$clock = clock;
+        cmat_2$11$clock = clock;
+        cvec$11$clock = clock;
+        jsel_0$11$clock = clock;
+        jsel_1$11$clock = clock;
+        jsel_2$11$clock = clock;
+        rnd$11$clock = clock;
+        cmat_0$11$d = cmat_0$11$q;
+        cmat_1$11$d = cmat_1$11$q;
+        cmat_2$11$d = cmat_2$11$q;
+        cvec$11$d = cvec$11$q;
+        jsel_0$11$d = jsel_0$11$q;
+        jsel_1$11$d = jsel_1$11$q;
+        jsel_2$11$d = jsel_2$11$q;
+        rnd$11$d = rnd$11$q;
+        if (load_en & (c_lane == idx$11)) begin
+            if (c_field == 32'h0) begin
+                cmat_0$11$d = load_data;
+            end
+            if (c_field == 32'h1) begin
+                cmat_1$11$d = load_data;
+            end
+            if (c_field == 32'h2) begin
+                cmat_2$11$d = load_data;
+            end
+            if (c_field == 32'h3) begin
+                cvec$11$d = load_data;
+            end
+            if (c_field == 32'h4) begin
+                jsel_0$11$d = load_data[(32'h0)+:(5)];
+                jsel_1$11$d = load_data[(32'h5)+:(5)];
+                jsel_2$11$d = load_data[(32'ha)+:(5)];
+                rnd$11$d = load_data[32'hf];
+            end
+        end
+        c0$11 = cmat_0$11$q;
+        c1$11 = cmat_1$11$q;
+        c2$11 = cmat_2$11$q;
+        c$11 = cvec$11$q;
+        j0$11 = jsel_0$11$q;
+        j1$11 = jsel_1$11$q;
+        j2$11 = jsel_2$11$q;
+        round_up$11 = rnd$11$q;
+        cmat_0$12$clock = clock;
+        cmat_1$12$clock = clock;
+        cmat_2$12$clock = clock;
+        cvec$12$clock = clock;
+        jsel_0$12$clock = clock;
+        jsel_1$12$clock = clock;
+        jsel_2$12$clock = clock;
+        rnd$12$clock = clock;
+        cmat_0$12$d = cmat_0$12$q;
+        cmat_1$12$d = cmat_1$12$q;
+        cmat_2$12$d = cmat_2$12$q;
+        cvec$12$d = cvec$12$q;
+        jsel_0$12$d = jsel_0$12$q;
+        jsel_1$12$d = jsel_1$12$q;
+        jsel_2$12$d = jsel_2$12$q;
+        rnd$12$d = rnd$12$q;
+        if (load_en & (c_lane == idx$12)) begin
+            if (c_field == 32'h0) begin
+                cmat_0$12$d = load_data;
+            end
+            if (c_field == 32'h1) begin
+                cmat_1$12$d = load_data;
+            end
+            if (c_field == 32'h2) begin
+                cmat_2$12$d = load_data;
+            end
+            if (c_field == 32'h3) begin
+                cvec$12$d = load_data;
+            end
+            if (c_field == 32'h4) begin
+                jsel_0$12$d = load_data[(32'h0)+:(5)];
+                jsel_1$12$d = load_data[(32'h5)+:(5)];
+                jsel_2$12$d = load_data[(32'ha)+:(5)];
+                rnd$12$d = load_data[32'hf];
+            end
+        end
+        c0$12 = cmat_0$12$q;
+        c1$12 = cmat_1$12$q;
+        c2$12 = cmat_2$12$q;
+        c$12 = cvec$12$q;
+        j0$12 = jsel_0$12$q;
+        j1$12 = jsel_1$12$q;
+        j2$12 = jsel_2$12$q;
+        round_up$12 = rnd$12$q;
+        cmat_0$13$clock = clock;
+        cmat_1$13$clock = clock;
+        cmat_2$13$clock = clock;
+        cvec$13$clock = clock;
+        jsel_0$13$clock = clock;
+        jsel_1$13$clock = clock;
+        jsel_2$13$clock = clock;
+        rnd$13$clock = clock;
+        cmat_0$13$d = cmat_0$13$q;
+        cmat_1$13$d = cmat_1$13$q;
+        cmat_2$13$d = cmat_2$13$q;
+        cvec$13$d = cvec$13$q;
+        jsel_0$13$d = jsel_0$13$q;
+        jsel_1$13$d = jsel_1$13$q;
+        jsel_2$13$d = jsel_2$13$q;
+        rnd$13$d = rnd$13$q;
+        if (load_en & (c_lane == idx$13)) begin
+            if (c_field == 32'h0) begin
+                cmat_0$13$d = load_data;
+            end
+            if (c_field == 32'h1) begin
+                cmat_1$13$d = load_data;
+            end
+            if (c_field == 32'h2) begin
+                cmat_2$13$d = load_data;
+            end
+            if (c_field == 32'h3) begin
+                cvec$13$d = load_data;
+            end
+            if (c_field == 32'h4) begin
+                jsel_0$13$d = load_data[(32'h0)+:(5)];
+                jsel_1$13$d = load_data[(32'h5)+:(5)];
+                jsel_2$13$d = load_data[(32'ha)+:(5)];
+                rnd$13$d = load_data[32'hf];
+            end
+        end
+        c0$13 = cmat_0$13$q;
+        c1$13 = cmat_1$13$q;
+        c2$13 = cmat_2$13$q;
+        c$13 = cvec$13$q;
+        j0$13 = jsel_0$13$q;
+        j1$13 = jsel_1$13$q;
+        j2$13 = jsel_2$13$q;
+        round_up$13 = rnd$13$q;
+        cmat_0$14$clock = clock;
+        cmat_1$14$clock = clock;
+        cmat_2$14$clock = clock;
+        cvec$14$clock = clock;
+        jsel_0$14$clock = clock;
+        jsel_1$14$clock = clock;
+        jsel_2$14$clock = clock;
+        rnd$14$clock = clock;
+        cmat_0$14$d = cmat_0$14$q;
+        cmat_1$14$d = cmat_1$14$q;
+        cmat_2$14$d = cmat_2$14$q;
+        cvec$14$d = cvec$14$q;
+        jsel_0$14$d = jsel_0$14$q;
+        jsel_1$14$d = jsel_1$14$q;
+        jsel_2$14$d = jsel_2$14$q;
+        rnd$14$d = rnd$14$q;
+        if (load_en & (c_lane == idx$14)) begin
+            if (c_field == 32'h0) begin
+                cmat_0$14$d = load_data;
+            end
+            if (c_field == 32'h1) begin
+                cmat_1$14$d = load_data;
+            end
+            if (c_field == 32'h2) begin
+                cmat_2$14$d = load_data;
+            end
+            if (c_field == 32'h3) begin
+                cvec$14$d = load_data;
+            end
+            if (c_field == 32'h4) begin
+                jsel_0$14$d = load_data[(32'h0)+:(5)];
+                jsel_1$14$d = load_data[(32'h5)+:(5)];
+                jsel_2$14$d = load_data[(32'ha)+:(5)];
+                rnd$14$d = load_data[32'hf];
+            end
+        end
+        c0$14 = cmat_0$14$q;
+        c1$14 = cmat_1$14$q;
+        c2$14 = cmat_2$14$q;
+        c$14 = cvec$14$q;
+        j0$14 = jsel_0$14$q;
+        j1$14 = jsel_1$14$q;
+        j2$14 = jsel_2$14$q;
+        round_up$14 = rnd$14$q;
+        cmat_0$15$clock = clock;
+        cmat_1$15$clock = clock;
+        cmat_2$15$clock = clock;
+        cvec$15$clock = clock;
+        jsel_0$15$clock = clock;
+        jsel_1$15$clock = clock;
+        jsel_2$15$clock = clock;
+        rnd$15$clock = clock;
+        cmat_0$15$d = cmat_0$15$q;
+        cmat_1$15$d = cmat_1$15$q;
+        cmat_2$15$d = cmat_2$15$q;
+        cvec$15$d = cvec$15$q;
+        jsel_0$15$d = jsel_0$15$q;
+        jsel_1$15$d = jsel_1$15$q;
+        jsel_2$15$d = jsel_2$15$q;
+        rnd$15$d = rnd$15$q;
+        if (load_en & (c_lane == idx$15)) begin
+            if (c_field == 32'h0) begin
+                cmat_0$15$d = load_data;
+            end
+            if (c_field == 32'h1) begin
+                cmat_1$15$d = load_data;
+            end
+            if (c_field == 32'h2) begin
+                cmat_2$15$d = load_data;
+            end
+            if (c_field == 32'h3) begin
+                cvec$15$d = load_data;
+            end
+            if (c_field == 32'h4) begin
+                jsel_0$15$d = load_data[(32'h0)+:(5)];
+                jsel_1$15$d = load_data[(32'h5)+:(5)];
+                jsel_2$15$d = load_data[(32'ha)+:(5)];
+                rnd$15$d = load_data[32'hf];
+            end
+        end
+        c0$15 = cmat_0$15$q;
+        c1$15 = cmat_1$15$q;
+        c2$15 = cmat_2$15$q;
+        c$15 = cvec$15$q;
+        j0$15 = jsel_0$15$q;
+        j1$15 = jsel_1$15$q;
+        j2$15 = jsel_2$15$q;
+        round_up$15 = rnd$15$q;
+        cmat_0$16$clock = clock;
+        cmat_1$16$clock = clock;
+        cmat_2$16$clock = clock;
+        cvec$16$clock = clock;
+        jsel_0$16$clock = clock;
+        jsel_1$16$clock = clock;
+        jsel_2$16$clock = clock;
+        rnd$16$clock = clock;
+        cmat_0$16$d = cmat_0$16$q;
+        cmat_1$16$d = cmat_1$16$q;
+        cmat_2$16$d = cmat_2$16$q;
+        cvec$16$d = cvec$16$q;
+        jsel_0$16$d = jsel_0$16$q;
+        jsel_1$16$d = jsel_1$16$q;
+        jsel_2$16$d = jsel_2$16$q;
+        rnd$16$d = rnd$16$q;
+        if (load_en & (c_lane == idx$16)) begin
+            if (c_field == 32'h0) begin
+                cmat_0$16$d = load_data;
+            end
+            if (c_field == 32'h1) begin
+                cmat_1$16$d = load_data;
+            end
+            if (c_field == 32'h2) begin
+                cmat_2$16$d = load_data;
+            end
+            if (c_field == 32'h3) begin
+                cvec$16$d = load_data;
+            end
+            if (c_field == 32'h4) begin
+                jsel_0$16$d = load_data[(32'h0)+:(5)];
+                jsel_1$16$d = load_data[(32'h5)+:(5)];
+                jsel_2$16$d = load_data[(32'ha)+:(5)];
+                rnd$16$d = load_data[32'hf];
+            end
+        end
+        c0$16 = cmat_0$16$q;
+        c1$16 = cmat_1$16$q;
+        c2$16 = cmat_2$16$q;
+        c$16 = cvec$16$q;
+        j0$16 = jsel_0$16$q;
+        j1$16 = jsel_1$16$q;
+        j2$16 = jsel_2$16$q;
+        round_up$16 = rnd$16$q;
+        cmat_0$17$clock = clock;
+        cmat_1$17$clock = clock;
+        cmat_2$17$clock = clock;
+        cvec$17$clock = clock;
+        jsel_0$17$clock = clock;
+        jsel_1$17$clock = clock;
+        jsel_2$17$clock = clock;
+        rnd$17$clock = clock;
+        cmat_0$17$d = cmat_0$17$q;
+        cmat_1$17$d = cmat_1$17$q;
+        cmat_2$17$d = cmat_2$17$q;
+        cvec$17$d = cvec$17$q;
+        jsel_0$17$d = jsel_0$17$q;
+        jsel_1$17$d = jsel_1$17$q;
+        jsel_2$17$d = jsel_2$17$q;
+        rnd$17$d = rnd$17$q;
+        if (load_en & (c_lane == idx$17)) begin
+            if (c_field == 32'h0) begin
+                cmat_0$17$d = load_data;
+            end
+            if (c_field == 32'h1) begin
+                cmat_1$17$d = load_data;
+            end
+            if (c_field == 32'h2) begin
+                cmat_2$17$d = load_data;
+            end
+            if (c_field == 32'h3) begin
+                cvec$17$d = load_data;
+            end
+            if (c_field == 32'h4) begin
+                jsel_0$17$d = load_data[(32'h0)+:(5)];
+                jsel_1$17$d = load_data[(32'h5)+:(5)];
+                jsel_2$17$d = load_data[(32'ha)+:(5)];
+                rnd$17$d = load_data[32'hf];
+            end
+        end
+        c0$17 = cmat_0$17$q;
+        c1$17 = cmat_1$17$q;
+        c2$17 = cmat_2$17$q;
+        c$17 = cvec$17$q;
+        j0$17 = jsel_0$17$q;
+        j1$17 = jsel_1$17$q;
+        j2$17 = jsel_2$17$q;
+        round_up$17 = rnd$17$q;
+        cmat_0$18$clock = clock;
+        cmat_1$18$clock = clock;
+        cmat_2$18$clock = clock;
+        cvec$18$clock = clock;
+        jsel_0$18$clock = clock;
+        jsel_1$18$clock = clock;
+        jsel_2$18$clock = clock;
+        rnd$18$clock = clock;
+        cmat_0$18$d = cmat_0$18$q;
+        cmat_1$18$d = cmat_1$18$q;
+        cmat_2$18$d = cmat_2$18$q;
+        cvec$18$d = cvec$18$q;
+        jsel_0$18$d = jsel_0$18$q;
+        jsel_1$18$d = jsel_1$18$q;
+        jsel_2$18$d = jsel_2$18$q;
+        rnd$18$d = rnd$18$q;
+        if (load_en & (c_lane == idx$18)) begin
+            if (c_field == 32'h0) begin
+                cmat_0$18$d = load_data;
+            end
+            if (c_field == 32'h1) begin
+                cmat_1$18$d = load_data;
+            end
+            if (c_field == 32'h2) begin
+                cmat_2$18$d = load_data;
+            end
+            if (c_field == 32'h3) begin
+                cvec$18$d = load_data;
+            end
+            if (c_field == 32'h4) begin
+                jsel_0$18$d = load_data[(32'h0)+:(5)];
+                jsel_1$18$d = load_data[(32'h5)+:(5)];
+                jsel_2$18$d = load_data[(32'ha)+:(5)];
+                rnd$18$d = load_data[32'hf];
+            end
+        end
+        c0$18 = cmat_0$18$q;
+        c1$18 = cmat_1$18$q;
+        c2$18 = cmat_2$18$q;
+        c$18 = cvec$18$q;
+        j0$18 = jsel_0$18$q;
+        j1$18 = jsel_1$18$q;
+        j2$18 = jsel_2$18$q;
+        round_up$18 = rnd$18$q;
+        cmat_0$19$clock = clock;
+        cmat_1$19$clock = clock;
+        cmat_2$19$clock = clock;
+        cvec$19$clock = clock;
+        jsel_0$19$clock = clock;
+        jsel_1$19$clock = clock;
+        jsel_2$19$clock = clock;
+        rnd$19$clock = clock;
+        cmat_0$19$d = cmat_0$19$q;
+        cmat_1$19$d = cmat_1$19$q;
+        cmat_2$19$d = cmat_2$19$q;
+        cvec$19$d = cvec$19$q;
+        jsel_0$19$d = jsel_0$19$q;
+        jsel_1$19$d = jsel_1$19$q;
+        jsel_2$19$d = jsel_2$19$q;
+        rnd$19$d = rnd$19$q;
+        if (load_en & (c_lane == idx$19)) begin
+            if (c_field == 32'h0) begin
+                cmat_0$19$d = load_data;
+            end
+            if (c_field == 32'h1) begin
+                cmat_1$19$d = load_data;
+            end
+            if (c_field == 32'h2) begin
+                cmat_2$19$d = load_data;
+            end
+            if (c_field == 32'h3) begin
+                cvec$19$d = load_data;
+            end
+            if (c_field == 32'h4) begin
+                jsel_0$19$d = load_data[(32'h0)+:(5)];
+                jsel_1$19$d = load_data[(32'h5)+:(5)];
+                jsel_2$19$d = load_data[(32'ha)+:(5)];
+                rnd$19$d = load_data[32'hf];
+            end
+        end
+        c0$19 = cmat_0$19$q;
+        c1$19 = cmat_1$19$q;
+        c2$19 = cmat_2$19$q;
+        c$19 = cvec$19$q;
+        j0$19 = jsel_0$19$q;
+        j1$19 = jsel_1$19$q;
+        j2$19 = jsel_2$19$q;
+        round_up$19 = rnd$19$q;
+        cmat_0$20$clock = clock;
+        cmat_1$20$clock = clock;
+        cmat_2$20$clock = clock;
+        cvec$20$clock = clock;
+        jsel_0$20$clock = clock;
+        jsel_1$20$clock = clock;
+        jsel_2$20$clock = clock;
+        rnd$20$clock = clock;
+        cmat_0$20$d = cmat_0$20$q;
+        cmat_1$20$d = cmat_1$20$q;
+        cmat_2$20$d = cmat_2$20$q;
+        cvec$20$d = cvec$20$q;
+        jsel_0$20$d = jsel_0$20$q;
+        jsel_1$20$d = jsel_1$20$q;
+        jsel_2$20$d = jsel_2$20$q;
+        rnd$20$d = rnd$20$q;
+        if (load_en & (c_lane == idx$20)) begin
+            if (c_field == 32'h0) begin
+                cmat_0$20$d = load_data;
+            end
+            if (c_field == 32'h1) begin
+                cmat_1$20$d = load_data;
+            end
+            if (c_field == 32'h2) begin
+                cmat_2$20$d = load_data;
+            end
+            if (c_field == 32'h3) begin
+                cvec$20$d = load_data;
+            end
+            if (c_field == 32'h4) begin
+                jsel_0$20$d = load_data[(32'h0)+:(5)];
+                jsel_1$20$d = load_data[(32'h5)+:(5)];
+                jsel_2$20$d = load_data[(32'ha)+:(5)];
+                rnd$20$d = load_data[32'hf];
+            end
+        end
+        c0$20 = cmat_0$20$q;
+        c1$20 = cmat_1$20$q;
+        c2$20 = cmat_2$20$q;
+        c$20 = cvec$20$q;
+        j0$20 = jsel_0$20$q;
+        j1$20 = jsel_1$20$q;
+        j2$20 = jsel_2$20$q;
+        round_up$20 = rnd$20$q;
+        cmat_0$21$clock = clock;
+        cmat_1$21$clock = clock;
+        cmat_2$21$clock = clock;
+        cvec$21$clock = clock;
+        jsel_0$21$clock = clock;
+        jsel_1$21$clock = clock;
+        jsel_2$21$clock = clock;
+        rnd$21$clock = clock;
+        cmat_0$21$d = cmat_0$21$q;
+        cmat_1$21$d = cmat_1$21$q;
+        cmat_2$21$d = cmat_2$21$q;
+        cvec$21$d = cvec$21$q;
+        jsel_0$21$d = jsel_0$21$q;
+        jsel_1$21$d = jsel_1$21$q;
+        jsel_2$21$d = jsel_2$21$q;
+        rnd$21$d = rnd$21$q;
+        if (load_en & (c_lane == idx$21)) begin
+            if (c_field == 32'h0) begin
+                cmat_0$21$d = load_data;
+            end
+            if (c_field == 32'h1) begin
+                cmat_1$21$d = load_data;
+            end
+            if (c_field == 32'h2) begin
+                cmat_2$21$d = load_data;
+            end
+            if (c_field == 32'h3) begin
+                cvec$21$d = load_data;
+            end
+            if (c_field == 32'h4) begin
+                jsel_0$21$d = load_data[(32'h0)+:(5)];
+                jsel_1$21$d = load_data[(32'h5)+:(5)];
+                jsel_2$21$d = load_data[(32'ha)+:(5)];
+                rnd$21$d = load_data[32'hf];
+            end
+        end
+        c0$21 = cmat_0$21$q;
+        c1$21 = cmat_1$21$q;
+        c2$21 = cmat_2$21$q;
+        c$21 = cvec$21$q;
+        j0$21 = jsel_0$21$q;
+        j1$21 = jsel_1$21$q;
+        j2$21 = jsel_2$21$q;
+        round_up$21 = rnd$21$q;
+        cmat_0$22$clock = clock;
+        cmat_1$22$clock = clock;
+        cmat_2$22$clock = clock;
+        cvec$22$clock = clock;
+        jsel_0$22$clock = clock;
+        jsel_1$22$clock = clock;
+        jsel_2$22$clock = clock;
+        rnd$22$clock = clock;
+        cmat_0$22$d = cmat_0$22$q;
+        cmat_1$22$d = cmat_1$22$q;
+        cmat_2$22$d = cmat_2$22$q;
+        cvec$22$d = cvec$22$q;
+        jsel_0$22$d = jsel_0$22$q;
+        jsel_1$22$d = jsel_1$22$q;
+        jsel_2$22$d = jsel_2$22$q;
+        rnd$22$d = rnd$22$q;
+        if (load_en & (c_lane == idx$22)) begin
+            if (c_field == 32'h0) begin
+                cmat_0$22$d = load_data;
+            end
+            if (c_field == 32'h1) begin
+                cmat_1$22$d = load_data;
+            end
+            if (c_field == 32'h2) begin
+                cmat_2$22$d = load_data;
+            end
+            if (c_field == 32'h3) begin
+                cvec$22$d = load_data;
+            end
+            if (c_field == 32'h4) begin
+                jsel_0$22$d = load_data[(32'h0)+:(5)];
+                jsel_1$22$d = load_data[(32'h5)+:(5)];
+                jsel_2$22$d = load_data[(32'ha)+:(5)];
+                rnd$22$d = load_data[32'hf];
+            end
+        end
+        c0$22 = cmat_0$22$q;
+        c1$22 = cmat_1$22$q;
+        c2$22 = cmat_2$22$q;
+        c$22 = cvec$22$q;
+        j0$22 = jsel_0$22$q;
+        j1$22 = jsel_1$22$q;
+        j2$22 = jsel_2$22$q;
+        round_up$22 = rnd$22$q;
+        cmat_0$23$clock = clock;
+        cmat_1$23$clock = clock;
+        cmat_2$23$clock = clock;
+        cvec$23$clock = clock;
+        jsel_0$23$clock = clock;
+        jsel_1$23$clock = clock;
+        jsel_2$23$clock = clock;
+        rnd$23$clock = clock;
+        cmat_0$23$d = cmat_0$23$q;
+        cmat_1$23$d = cmat_1$23$q;
+        cmat_2$23$d = cmat_2$23$q;
+        cvec$23$d = cvec$23$q;
+        jsel_0$23$d = jsel_0$23$q;
+        jsel_1$23$d = jsel_1$23$q;
+        jsel_2$23$d = jsel_2$23$q;
+        rnd$23$d = rnd$23$q;
+        if (load_en & (c_lane == idx$23)) begin
+            if (c_field == 32'h0) begin
+                cmat_0$23$d = load_data;
+            end
+            if (c_field == 32'h1) begin
+                cmat_1$23$d = load_data;
+            end
+            if (c_field == 32'h2) begin
+                cmat_2$23$d = load_data;
+            end
+            if (c_field == 32'h3) begin
+                cvec$23$d = load_data;
+            end
+            if (c_field == 32'h4) begin
+                jsel_0$23$d = load_data[(32'h0)+:(5)];
+                jsel_1$23$d = load_data[(32'h5)+:(5)];
+                jsel_2$23$d = load_data[(32'ha)+:(5)];
+                rnd$23$d = load_data[32'hf];
+            end
+        end
+        c0$23 = cmat_0$23$q;
+        c1$23 = cmat_1$23$q;
+        c2$23 = cmat_2$23$q;
+        c$23 = cvec$23$q;
+        j0$23 = jsel_0$23$q;
+        j1$23 = jsel_1$23$q;
+        j2$23 = jsel_2$23$q;
+        round_up$23 = rnd$23$q;
+    end
+    
+endmodule // top$dop$setup
+
+
 module top$leaf_count(d,q,clock);
     
     // Module arguments
@@ -14081,7 +15344,7 @@ module top$mem_port(clock,clear,go,pf_on,slot_bits,port_out,base_na,base_nb,base
     input wire  [31:0] leaf_tag;
     input wire  mem_req_ready;
     input wire  mem_resp_valid;
-    input wire  [737:0] mem_resp_data;
+    input wire  [2047:0] mem_resp_data;
     output reg  mem_req_valid;
     output reg  [23:0] mem_req_addr;
     output reg  [1:0] req_dst;
@@ -14217,9 +15480,9 @@ module top$mem_port(clock,clear,go,pf_on,slot_bits,port_out,base_na,base_nb,base
     reg  seq_tail$clock;
     reg  wa$clock;
     reg  [15:0] wa$wsel;
-    reg  [640:0] wa$wdata;
+    reg  [1281:0] wa$wdata;
     reg  [15:0] wa$rsel;
-    wire  [640:0] wa$rdata;
+    wire  [1281:0] wa$rdata;
     reg  [3:0] wa_head$d;
     wire  [3:0] wa_head$q;
     reg  wa_head$clock;
@@ -14231,9 +15494,9 @@ module top$mem_port(clock,clear,go,pf_on,slot_bits,port_out,base_na,base_nb,base
     reg  wa_n$clock;
     reg  wb$clock;
     reg  [15:0] wb$wsel;
-    reg  [640:0] wb$wdata;
+    reg  [1281:0] wb$wdata;
     reg  [15:0] wb$rsel;
-    wire  [640:0] wb$rdata;
+    wire  [1281:0] wb$rdata;
     reg  [3:0] wb_head$d;
     wire  [3:0] wb_head$q;
     reg  wb_head$clock;
@@ -14243,11 +15506,11 @@ module top$mem_port(clock,clear,go,pf_on,slot_bits,port_out,base_na,base_nb,base
     reg  [4:0] wb_n$d;
     wire  [4:0] wb_n$q;
     reg  wb_n$clock;
-    reg  [640:0] na_word$d;
-    wire  [640:0] na_word$q;
+    reg  [1281:0] na_word$d;
+    wire  [1281:0] na_word$q;
     reg  na_word$clock;
-    reg  [640:0] nb_word$d;
-    wire  [640:0] nb_word$q;
+    reg  [1281:0] nb_word$d;
+    wire  [1281:0] nb_word$q;
     reg  nb_word$clock;
     reg  tags$clock;
     reg  [15:0] tags$wsel;
@@ -14291,8 +15554,8 @@ module top$mem_port(clock,clear,go,pf_on,slot_bits,port_out,base_na,base_nb,base
     reg  [31:0] put1;
     reg  [31:0] put2;
     reg  [31:0] put3;
-    reg  [640:0] rec_a;
-    reg  [640:0] rec_b;
+    reg  [1281:0] rec_a;
+    reg  [1281:0] rec_b;
     reg  [7:0] sa_dec;
     reg  [7:0] sb_dec;
     reg  port_free;
@@ -14712,6 +15975,12 @@ module top$mem_port(clock,clear,go,pf_on,slot_bits,port_out,base_na,base_nb,base
         sb_dec = c_one8 << cur_sb;
         na_in = rec_a[(32'h0)+:(641)];
         nb_in = rec_b[(32'h0)+:(641)];
+        if (sa_dec[1]) begin
+            na_in = rec_a[(1 * 32'h281)+:(641)];
+        end
+        if (sb_dec[1]) begin
+            nb_in = rec_b[(1 * 32'h281)+:(641)];
+        end
         wa_empty = wa_n$q == 32'h0;
         wb_empty = wb_n$q == 32'h0;
         ask_dec = c_one32 << ask_head$q;
@@ -14885,12 +16154,12 @@ module top$mem_port(clock,clear,go,pf_on,slot_bits,port_out,base_na,base_nb,base
         if (resp & (resp_dst == 32'h0)) begin
             wa$wsel = c_one16 << wa_tail$q;
         end
-        wa$wdata = mem_resp_data[(32'h0)+:(641)];
+        wa$wdata = mem_resp_data[(32'h0)+:(1282)];
         wb$wsel = 32'h0;
         if (resp & (resp_dst == 32'h1)) begin
             wb$wsel = c_one16 << wb_tail$q;
         end
-        wb$wdata = mem_resp_data[(32'h0)+:(641)];
+        wb$wdata = mem_resp_data[(32'h0)+:(1282)];
         if (resp) begin
             tag_head$d = tag_head$q + 32'h1;
             if (resp_dst == 32'h0) begin
@@ -15365,13 +16634,13 @@ endmodule // top$mem_port$ask_w$0
 module top$mem_port$na_word(d,q,clock);
     
     // Module arguments
-    input wire  [640:0] d;
-    output reg  [640:0] q;
+    input wire  [1281:0] d;
+    output reg  [1281:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 641'h0;
+       q = 1282'h0;
     end
     
     always @(posedge clock) begin
@@ -15686,62 +16955,62 @@ module top$mem_port$wa(clock,wsel,wdata,rsel,rdata);
     // Module arguments
     input wire  clock;
     input wire  [15:0] wsel;
-    input wire  [640:0] wdata;
+    input wire  [1281:0] wdata;
     input wire  [15:0] rsel;
-    output reg  [640:0] rdata;
+    output reg  [1281:0] rdata;
     
     // Stub signals
-    reg  [640:0] row$0$d;
-    wire  [640:0] row$0$q;
+    reg  [1281:0] row$0$d;
+    wire  [1281:0] row$0$q;
     reg  row$0$clock;
-    reg  [640:0] row$1$d;
-    wire  [640:0] row$1$q;
+    reg  [1281:0] row$1$d;
+    wire  [1281:0] row$1$q;
     reg  row$1$clock;
-    reg  [640:0] row$2$d;
-    wire  [640:0] row$2$q;
+    reg  [1281:0] row$2$d;
+    wire  [1281:0] row$2$q;
     reg  row$2$clock;
-    reg  [640:0] row$3$d;
-    wire  [640:0] row$3$q;
+    reg  [1281:0] row$3$d;
+    wire  [1281:0] row$3$q;
     reg  row$3$clock;
-    reg  [640:0] row$4$d;
-    wire  [640:0] row$4$q;
+    reg  [1281:0] row$4$d;
+    wire  [1281:0] row$4$q;
     reg  row$4$clock;
-    reg  [640:0] row$5$d;
-    wire  [640:0] row$5$q;
+    reg  [1281:0] row$5$d;
+    wire  [1281:0] row$5$q;
     reg  row$5$clock;
-    reg  [640:0] row$6$d;
-    wire  [640:0] row$6$q;
+    reg  [1281:0] row$6$d;
+    wire  [1281:0] row$6$q;
     reg  row$6$clock;
-    reg  [640:0] row$7$d;
-    wire  [640:0] row$7$q;
+    reg  [1281:0] row$7$d;
+    wire  [1281:0] row$7$q;
     reg  row$7$clock;
-    reg  [640:0] row$8$d;
-    wire  [640:0] row$8$q;
+    reg  [1281:0] row$8$d;
+    wire  [1281:0] row$8$q;
     reg  row$8$clock;
-    reg  [640:0] row$9$d;
-    wire  [640:0] row$9$q;
+    reg  [1281:0] row$9$d;
+    wire  [1281:0] row$9$q;
     reg  row$9$clock;
-    reg  [640:0] row$10$d;
-    wire  [640:0] row$10$q;
+    reg  [1281:0] row$10$d;
+    wire  [1281:0] row$10$q;
     reg  row$10$clock;
-    reg  [640:0] row$11$d;
-    wire  [640:0] row$11$q;
+    reg  [1281:0] row$11$d;
+    wire  [1281:0] row$11$q;
     reg  row$11$clock;
-    reg  [640:0] row$12$d;
-    wire  [640:0] row$12$q;
+    reg  [1281:0] row$12$d;
+    wire  [1281:0] row$12$q;
     reg  row$12$clock;
-    reg  [640:0] row$13$d;
-    wire  [640:0] row$13$q;
+    reg  [1281:0] row$13$d;
+    wire  [1281:0] row$13$q;
     reg  row$13$clock;
-    reg  [640:0] row$14$d;
-    wire  [640:0] row$14$q;
+    reg  [1281:0] row$14$d;
+    wire  [1281:0] row$14$q;
     reg  row$14$clock;
-    reg  [640:0] row$15$d;
-    wire  [640:0] row$15$q;
+    reg  [1281:0] row$15$d;
+    wire  [1281:0] row$15$q;
     reg  row$15$clock;
     
     // Local signals
-    reg  [640:0] picked;
+    reg  [1281:0] picked;
     
     // Sub module instances
     top$mem_port$na_word row$0(

@@ -2696,141 +2696,59 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,e$0,e$1
     output reg  [15:0] tag_out;
     output reg  valid_out;
     
-    // Constant declarations
-    localparam  idx$0 = 5'b0;
-    localparam  idx$1 = 5'b1;
-    localparam  idx$2 = 5'b10;
-    localparam  idx$3 = 5'b11;
-    localparam  idx$4 = 5'b100;
-    localparam  idx$5 = 5'b101;
-    
     // Stub signals
-    reg  [23:0] cmat_0$0$d;
-    wire  [23:0] cmat_0$0$q;
-    reg  cmat_0$0$clock;
-    reg  [23:0] cmat_0$1$d;
-    wire  [23:0] cmat_0$1$q;
-    reg  cmat_0$1$clock;
-    reg  [23:0] cmat_0$2$d;
-    wire  [23:0] cmat_0$2$q;
-    reg  cmat_0$2$clock;
-    reg  [23:0] cmat_0$3$d;
-    wire  [23:0] cmat_0$3$q;
-    reg  cmat_0$3$clock;
-    reg  [23:0] cmat_0$4$d;
-    wire  [23:0] cmat_0$4$q;
-    reg  cmat_0$4$clock;
-    reg  [23:0] cmat_0$5$d;
-    wire  [23:0] cmat_0$5$q;
-    reg  cmat_0$5$clock;
-    reg  [23:0] cmat_1$0$d;
-    wire  [23:0] cmat_1$0$q;
-    reg  cmat_1$0$clock;
-    reg  [23:0] cmat_1$1$d;
-    wire  [23:0] cmat_1$1$q;
-    reg  cmat_1$1$clock;
-    reg  [23:0] cmat_1$2$d;
-    wire  [23:0] cmat_1$2$q;
-    reg  cmat_1$2$clock;
-    reg  [23:0] cmat_1$3$d;
-    wire  [23:0] cmat_1$3$q;
-    reg  cmat_1$3$clock;
-    reg  [23:0] cmat_1$4$d;
-    wire  [23:0] cmat_1$4$q;
-    reg  cmat_1$4$clock;
-    reg  [23:0] cmat_1$5$d;
-    wire  [23:0] cmat_1$5$q;
-    reg  cmat_1$5$clock;
-    reg  [23:0] cmat_2$0$d;
-    wire  [23:0] cmat_2$0$q;
-    reg  cmat_2$0$clock;
-    reg  [23:0] cmat_2$1$d;
-    wire  [23:0] cmat_2$1$q;
-    reg  cmat_2$1$clock;
-    reg  [23:0] cmat_2$2$d;
-    wire  [23:0] cmat_2$2$q;
-    reg  cmat_2$2$clock;
-    reg  [23:0] cmat_2$3$d;
-    wire  [23:0] cmat_2$3$q;
-    reg  cmat_2$3$clock;
-    reg  [23:0] cmat_2$4$d;
-    wire  [23:0] cmat_2$4$q;
-    reg  cmat_2$4$clock;
-    reg  [23:0] cmat_2$5$d;
-    wire  [23:0] cmat_2$5$q;
-    reg  cmat_2$5$clock;
-    reg  [23:0] cvec$0$d;
-    wire  [23:0] cvec$0$q;
-    reg  cvec$0$clock;
-    reg  [23:0] cvec$1$d;
-    wire  [23:0] cvec$1$q;
-    reg  cvec$1$clock;
-    reg  [23:0] cvec$2$d;
-    wire  [23:0] cvec$2$q;
-    reg  cvec$2$clock;
-    reg  [23:0] cvec$3$d;
-    wire  [23:0] cvec$3$q;
-    reg  cvec$3$clock;
-    reg  [23:0] cvec$4$d;
-    wire  [23:0] cvec$4$q;
-    reg  cvec$4$clock;
-    reg  [23:0] cvec$5$d;
-    wire  [23:0] cvec$5$q;
-    reg  cvec$5$clock;
-    reg  [4:0] jsel_0$0$d;
-    wire  [4:0] jsel_0$0$q;
-    reg  jsel_0$0$clock;
-    reg  [4:0] jsel_0$1$d;
-    wire  [4:0] jsel_0$1$q;
-    reg  jsel_0$1$clock;
-    reg  [4:0] jsel_0$2$d;
-    wire  [4:0] jsel_0$2$q;
-    reg  jsel_0$2$clock;
-    reg  [4:0] jsel_0$3$d;
-    wire  [4:0] jsel_0$3$q;
-    reg  jsel_0$3$clock;
-    reg  [4:0] jsel_0$4$d;
-    wire  [4:0] jsel_0$4$q;
-    reg  jsel_0$4$clock;
-    reg  [4:0] jsel_0$5$d;
-    wire  [4:0] jsel_0$5$q;
-    reg  jsel_0$5$clock;
-    reg  [4:0] jsel_1$0$d;
-    wire  [4:0] jsel_1$0$q;
-    reg  jsel_1$0$clock;
-    reg  [4:0] jsel_1$1$d;
-    wire  [4:0] jsel_1$1$q;
-    reg  jsel_1$1$clock;
-    reg  [4:0] jsel_1$2$d;
-    wire  [4:0] jsel_1$2$q;
-    reg  jsel_1$2$clock;
-    reg  [4:0] jsel_1$3$d;
-    wire  [4:0] jsel_1$3$q;
-    reg  jsel_1$3$clock;
-    reg  [4:0] jsel_1$4$d;
-    wire  [4:0] jsel_1$4$q;
-    reg  jsel_1$4$clock;
-    reg  [4:0] jsel_1$5$d;
-    wire  [4:0] jsel_1$5$q;
-    reg  jsel_1$5$clock;
-    reg  [4:0] jsel_2$0$d;
-    wire  [4:0] jsel_2$0$q;
-    reg  jsel_2$0$clock;
-    reg  [4:0] jsel_2$1$d;
-    wire  [4:0] jsel_2$1$q;
-    reg  jsel_2$1$clock;
-    reg  [4:0] jsel_2$2$d;
-    wire  [4:0] jsel_2$2$q;
-    reg  jsel_2$2$clock;
-    reg  [4:0] jsel_2$3$d;
-    wire  [4:0] jsel_2$3$q;
-    reg  jsel_2$3$clock;
-    reg  [4:0] jsel_2$4$d;
-    wire  [4:0] jsel_2$4$q;
-    reg  jsel_2$4$clock;
-    reg  [4:0] jsel_2$5$d;
-    wire  [4:0] jsel_2$5$q;
-    reg  jsel_2$5$clock;
+    reg  setup$clock;
+    reg  setup$load_en;
+    reg  [7:0] setup$load_addr;
+    reg  [23:0] setup$load_data;
+    wire  [23:0] setup$c0$0;
+    wire  [23:0] setup$c0$1;
+    wire  [23:0] setup$c0$2;
+    wire  [23:0] setup$c0$3;
+    wire  [23:0] setup$c0$4;
+    wire  [23:0] setup$c0$5;
+    wire  [23:0] setup$c1$0;
+    wire  [23:0] setup$c1$1;
+    wire  [23:0] setup$c1$2;
+    wire  [23:0] setup$c1$3;
+    wire  [23:0] setup$c1$4;
+    wire  [23:0] setup$c1$5;
+    wire  [23:0] setup$c2$0;
+    wire  [23:0] setup$c2$1;
+    wire  [23:0] setup$c2$2;
+    wire  [23:0] setup$c2$3;
+    wire  [23:0] setup$c2$4;
+    wire  [23:0] setup$c2$5;
+    wire  [23:0] setup$c$0;
+    wire  [23:0] setup$c$1;
+    wire  [23:0] setup$c$2;
+    wire  [23:0] setup$c$3;
+    wire  [23:0] setup$c$4;
+    wire  [23:0] setup$c$5;
+    wire  [4:0] setup$j0$0;
+    wire  [4:0] setup$j0$1;
+    wire  [4:0] setup$j0$2;
+    wire  [4:0] setup$j0$3;
+    wire  [4:0] setup$j0$4;
+    wire  [4:0] setup$j0$5;
+    wire  [4:0] setup$j1$0;
+    wire  [4:0] setup$j1$1;
+    wire  [4:0] setup$j1$2;
+    wire  [4:0] setup$j1$3;
+    wire  [4:0] setup$j1$4;
+    wire  [4:0] setup$j1$5;
+    wire  [4:0] setup$j2$0;
+    wire  [4:0] setup$j2$1;
+    wire  [4:0] setup$j2$2;
+    wire  [4:0] setup$j2$3;
+    wire  [4:0] setup$j2$4;
+    wire  [4:0] setup$j2$5;
+    wire  setup$round_up$0;
+    wire  setup$round_up$1;
+    wire  setup$round_up$2;
+    wire  setup$round_up$3;
+    wire  setup$round_up$4;
+    wire  setup$round_up$5;
     reg  [23:0] klmsel$d$0;
     reg  [23:0] klmsel$d$1;
     reg  [23:0] klmsel$d$2;
@@ -2883,6 +2801,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,e$0,e$1
     reg  [23:0] doptrf$0$c;
     reg  [23:0] doptrf$0$e;
     reg  doptrf$0$valid_in;
+    reg  doptrf$0$round_up;
     wire  [23:0] doptrf$0$s;
     wire  doptrf$0$flag;
     wire  doptrf$0$valid_out;
@@ -2896,6 +2815,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,e$0,e$1
     reg  [23:0] doptrf$1$c;
     reg  [23:0] doptrf$1$e;
     reg  doptrf$1$valid_in;
+    reg  doptrf$1$round_up;
     wire  [23:0] doptrf$1$s;
     wire  doptrf$1$flag;
     wire  doptrf$1$valid_out;
@@ -2909,6 +2829,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,e$0,e$1
     reg  [23:0] doptrf$2$c;
     reg  [23:0] doptrf$2$e;
     reg  doptrf$2$valid_in;
+    reg  doptrf$2$round_up;
     wire  [23:0] doptrf$2$s;
     wire  doptrf$2$flag;
     wire  doptrf$2$valid_out;
@@ -2922,6 +2843,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,e$0,e$1
     reg  [23:0] doptrf$3$c;
     reg  [23:0] doptrf$3$e;
     reg  doptrf$3$valid_in;
+    reg  doptrf$3$round_up;
     wire  [23:0] doptrf$3$s;
     wire  doptrf$3$flag;
     wire  doptrf$3$valid_out;
@@ -2935,6 +2857,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,e$0,e$1
     reg  [23:0] doptrf$4$c;
     reg  [23:0] doptrf$4$e;
     reg  doptrf$4$valid_in;
+    reg  doptrf$4$round_up;
     wire  [23:0] doptrf$4$s;
     wire  doptrf$4$flag;
     wire  doptrf$4$valid_out;
@@ -2948,6 +2871,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,e$0,e$1
     reg  [23:0] doptrf$5$c;
     reg  [23:0] doptrf$5$e;
     reg  doptrf$5$valid_in;
+    reg  doptrf$5$round_up;
     wire  [23:0] doptrf$5$s;
     wire  doptrf$5$flag;
     wire  doptrf$5$valid_out;
@@ -2998,220 +2922,62 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,e$0,e$1
     reg  tag_15$clock;
     
     // Local signals
-    reg  [4:0] c_load_lane;
-    reg  [2:0] c_load_field;
     reg  c_any;
     
     // Sub module instances
-    top$base_na cmat_0$0(
-        .d(cmat_0$0$d),
-        .q(cmat_0$0$q),
-        .clock(cmat_0$0$clock)
-    );
-    top$base_na cmat_0$1(
-        .d(cmat_0$1$d),
-        .q(cmat_0$1$q),
-        .clock(cmat_0$1$clock)
-    );
-    top$base_na cmat_0$2(
-        .d(cmat_0$2$d),
-        .q(cmat_0$2$q),
-        .clock(cmat_0$2$clock)
-    );
-    top$base_na cmat_0$3(
-        .d(cmat_0$3$d),
-        .q(cmat_0$3$q),
-        .clock(cmat_0$3$clock)
-    );
-    top$base_na cmat_0$4(
-        .d(cmat_0$4$d),
-        .q(cmat_0$4$q),
-        .clock(cmat_0$4$clock)
-    );
-    top$base_na cmat_0$5(
-        .d(cmat_0$5$d),
-        .q(cmat_0$5$q),
-        .clock(cmat_0$5$clock)
-    );
-    top$base_na cmat_1$0(
-        .d(cmat_1$0$d),
-        .q(cmat_1$0$q),
-        .clock(cmat_1$0$clock)
-    );
-    top$base_na cmat_1$1(
-        .d(cmat_1$1$d),
-        .q(cmat_1$1$q),
-        .clock(cmat_1$1$clock)
-    );
-    top$base_na cmat_1$2(
-        .d(cmat_1$2$d),
-        .q(cmat_1$2$q),
-        .clock(cmat_1$2$clock)
-    );
-    top$base_na cmat_1$3(
-        .d(cmat_1$3$d),
-        .q(cmat_1$3$q),
-        .clock(cmat_1$3$clock)
-    );
-    top$base_na cmat_1$4(
-        .d(cmat_1$4$d),
-        .q(cmat_1$4$q),
-        .clock(cmat_1$4$clock)
-    );
-    top$base_na cmat_1$5(
-        .d(cmat_1$5$d),
-        .q(cmat_1$5$q),
-        .clock(cmat_1$5$clock)
-    );
-    top$base_na cmat_2$0(
-        .d(cmat_2$0$d),
-        .q(cmat_2$0$q),
-        .clock(cmat_2$0$clock)
-    );
-    top$base_na cmat_2$1(
-        .d(cmat_2$1$d),
-        .q(cmat_2$1$q),
-        .clock(cmat_2$1$clock)
-    );
-    top$base_na cmat_2$2(
-        .d(cmat_2$2$d),
-        .q(cmat_2$2$q),
-        .clock(cmat_2$2$clock)
-    );
-    top$base_na cmat_2$3(
-        .d(cmat_2$3$d),
-        .q(cmat_2$3$q),
-        .clock(cmat_2$3$clock)
-    );
-    top$base_na cmat_2$4(
-        .d(cmat_2$4$d),
-        .q(cmat_2$4$q),
-        .clock(cmat_2$4$clock)
-    );
-    top$base_na cmat_2$5(
-        .d(cmat_2$5$d),
-        .q(cmat_2$5$q),
-        .clock(cmat_2$5$clock)
-    );
-    top$base_na cvec$0(
-        .d(cvec$0$d),
-        .q(cvec$0$q),
-        .clock(cvec$0$clock)
-    );
-    top$base_na cvec$1(
-        .d(cvec$1$d),
-        .q(cvec$1$q),
-        .clock(cvec$1$clock)
-    );
-    top$base_na cvec$2(
-        .d(cvec$2$d),
-        .q(cvec$2$q),
-        .clock(cvec$2$clock)
-    );
-    top$base_na cvec$3(
-        .d(cvec$3$d),
-        .q(cvec$3$q),
-        .clock(cvec$3$clock)
-    );
-    top$base_na cvec$4(
-        .d(cvec$4$d),
-        .q(cvec$4$q),
-        .clock(cvec$4$clock)
-    );
-    top$base_na cvec$5(
-        .d(cvec$5$d),
-        .q(cvec$5$q),
-        .clock(cvec$5$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_0$0(
-        .d(jsel_0$0$d),
-        .q(jsel_0$0$q),
-        .clock(jsel_0$0$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_0$1(
-        .d(jsel_0$1$d),
-        .q(jsel_0$1$q),
-        .clock(jsel_0$1$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_0$2(
-        .d(jsel_0$2$d),
-        .q(jsel_0$2$q),
-        .clock(jsel_0$2$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_0$3(
-        .d(jsel_0$3$d),
-        .q(jsel_0$3$q),
-        .clock(jsel_0$3$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_0$4(
-        .d(jsel_0$4$d),
-        .q(jsel_0$4$q),
-        .clock(jsel_0$4$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_0$5(
-        .d(jsel_0$5$d),
-        .q(jsel_0$5$q),
-        .clock(jsel_0$5$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_1$0(
-        .d(jsel_1$0$d),
-        .q(jsel_1$0$q),
-        .clock(jsel_1$0$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_1$1(
-        .d(jsel_1$1$d),
-        .q(jsel_1$1$q),
-        .clock(jsel_1$1$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_1$2(
-        .d(jsel_1$2$d),
-        .q(jsel_1$2$q),
-        .clock(jsel_1$2$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_1$3(
-        .d(jsel_1$3$d),
-        .q(jsel_1$3$q),
-        .clock(jsel_1$3$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_1$4(
-        .d(jsel_1$4$d),
-        .q(jsel_1$4$q),
-        .clock(jsel_1$4$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_1$5(
-        .d(jsel_1$5$d),
-        .q(jsel_1$5$q),
-        .clock(jsel_1$5$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_2$0(
-        .d(jsel_2$0$d),
-        .q(jsel_2$0$q),
-        .clock(jsel_2$0$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_2$1(
-        .d(jsel_2$1$d),
-        .q(jsel_2$1$q),
-        .clock(jsel_2$1$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_2$2(
-        .d(jsel_2$2$d),
-        .q(jsel_2$2$q),
-        .clock(jsel_2$2$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_2$3(
-        .d(jsel_2$3$d),
-        .q(jsel_2$3$q),
-        .clock(jsel_2$3$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_2$4(
-        .d(jsel_2$4$d),
-        .q(jsel_2$4$q),
-        .clock(jsel_2$4$clock)
-    );
-    top$d_cntr$ahd_pairs jsel_2$5(
-        .d(jsel_2$5$d),
-        .q(jsel_2$5$q),
-        .clock(jsel_2$5$clock)
+    top$dop$setup setup(
+        .clock(setup$clock),
+        .load_en(setup$load_en),
+        .load_addr(setup$load_addr),
+        .load_data(setup$load_data),
+        .c0$0(setup$c0$0),
+        .c0$1(setup$c0$1),
+        .c0$2(setup$c0$2),
+        .c0$3(setup$c0$3),
+        .c0$4(setup$c0$4),
+        .c0$5(setup$c0$5),
+        .c1$0(setup$c1$0),
+        .c1$1(setup$c1$1),
+        .c1$2(setup$c1$2),
+        .c1$3(setup$c1$3),
+        .c1$4(setup$c1$4),
+        .c1$5(setup$c1$5),
+        .c2$0(setup$c2$0),
+        .c2$1(setup$c2$1),
+        .c2$2(setup$c2$2),
+        .c2$3(setup$c2$3),
+        .c2$4(setup$c2$4),
+        .c2$5(setup$c2$5),
+        .c$0(setup$c$0),
+        .c$1(setup$c$1),
+        .c$2(setup$c$2),
+        .c$3(setup$c$3),
+        .c$4(setup$c$4),
+        .c$5(setup$c$5),
+        .j0$0(setup$j0$0),
+        .j0$1(setup$j0$1),
+        .j0$2(setup$j0$2),
+        .j0$3(setup$j0$3),
+        .j0$4(setup$j0$4),
+        .j0$5(setup$j0$5),
+        .j1$0(setup$j1$0),
+        .j1$1(setup$j1$1),
+        .j1$2(setup$j1$2),
+        .j1$3(setup$j1$3),
+        .j1$4(setup$j1$4),
+        .j1$5(setup$j1$5),
+        .j2$0(setup$j2$0),
+        .j2$1(setup$j2$1),
+        .j2$2(setup$j2$2),
+        .j2$3(setup$j2$3),
+        .j2$4(setup$j2$4),
+        .j2$5(setup$j2$5),
+        .round_up$0(setup$round_up$0),
+        .round_up$1(setup$round_up$1),
+        .round_up$2(setup$round_up$2),
+        .round_up$3(setup$round_up$3),
+        .round_up$4(setup$round_up$4),
+        .round_up$5(setup$round_up$5)
     );
     top$dop$klmsel klmsel(
         .d$0(klmsel$d$0),
@@ -3268,6 +3034,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,e$0,e$1
         .c(doptrf$0$c),
         .e(doptrf$0$e),
         .valid_in(doptrf$0$valid_in),
+        .round_up(doptrf$0$round_up),
         .s(doptrf$0$s),
         .flag(doptrf$0$flag),
         .valid_out(doptrf$0$valid_out)
@@ -3283,6 +3050,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,e$0,e$1
         .c(doptrf$1$c),
         .e(doptrf$1$e),
         .valid_in(doptrf$1$valid_in),
+        .round_up(doptrf$1$round_up),
         .s(doptrf$1$s),
         .flag(doptrf$1$flag),
         .valid_out(doptrf$1$valid_out)
@@ -3298,6 +3066,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,e$0,e$1
         .c(doptrf$2$c),
         .e(doptrf$2$e),
         .valid_in(doptrf$2$valid_in),
+        .round_up(doptrf$2$round_up),
         .s(doptrf$2$s),
         .flag(doptrf$2$flag),
         .valid_out(doptrf$2$valid_out)
@@ -3313,6 +3082,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,e$0,e$1
         .c(doptrf$3$c),
         .e(doptrf$3$e),
         .valid_in(doptrf$3$valid_in),
+        .round_up(doptrf$3$round_up),
         .s(doptrf$3$s),
         .flag(doptrf$3$flag),
         .valid_out(doptrf$3$valid_out)
@@ -3328,6 +3098,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,e$0,e$1
         .c(doptrf$4$c),
         .e(doptrf$4$e),
         .valid_in(doptrf$4$valid_in),
+        .round_up(doptrf$4$round_up),
         .s(doptrf$4$s),
         .flag(doptrf$4$flag),
         .valid_out(doptrf$4$valid_out)
@@ -3343,6 +3114,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,e$0,e$1
         .c(doptrf$5$c),
         .e(doptrf$5$e),
         .valid_in(doptrf$5$valid_in),
+        .round_up(doptrf$5$round_up),
         .s(doptrf$5$s),
         .flag(doptrf$5$flag),
         .valid_out(doptrf$5$valid_out)
@@ -3455,283 +3227,93 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,e$0,e$1
         tag_13$d = tag_13$q;
         tag_14$d = tag_14$q;
         tag_15$d = tag_15$q;
-        c_load_lane = load_addr[(32'h3)+:(5)];
-        c_load_field = load_addr[(32'h0)+:(3)];
-        cmat_0$0$clock = clock;
-        cmat_1$0$clock = clock;
-        cmat_2$0$clock = clock;
-        cvec$0$clock = clock;
-        jsel_0$0$clock = clock;
-        jsel_1$0$clock = clock;
-        jsel_2$0$clock = clock;
+        setup$clock = clock;
+        setup$load_en = load_en;
+        setup$load_addr = load_addr;
+        setup$load_data = load_data;
         doptrf$0$clock = clock;
-        cmat_0$0$d = cmat_0$0$q;
-        cmat_1$0$d = cmat_1$0$q;
-        cmat_2$0$d = cmat_2$0$q;
-        cvec$0$d = cvec$0$q;
-        jsel_0$0$d = jsel_0$0$q;
-        jsel_1$0$d = jsel_1$0$q;
-        jsel_2$0$d = jsel_2$0$q;
-        if (load_en & (c_load_lane == idx$0)) begin
-            if (c_load_field == 32'h0) begin
-                cmat_0$0$d = load_data;
-            end
-            if (c_load_field == 32'h1) begin
-                cmat_1$0$d = load_data;
-            end
-            if (c_load_field == 32'h2) begin
-                cmat_2$0$d = load_data;
-            end
-            if (c_load_field == 32'h3) begin
-                cvec$0$d = load_data;
-            end
-            if (c_load_field == 32'h4) begin
-                jsel_0$0$d = load_data[(32'h0)+:(5)];
-                jsel_1$0$d = load_data[(32'h5)+:(5)];
-                jsel_2$0$d = load_data[(32'ha)+:(5)];
-            end
-        end
         klmsel$d$0 = d$0;
-        klmsel$j0$0 = jsel_0$0$q;
-        klmsel$j1$0 = jsel_1$0$q;
-        klmsel$j2$0 = jsel_2$0$q;
+        klmsel$j0$0 = setup$j0$0;
+        klmsel$j1$0 = setup$j1$0;
+        klmsel$j2$0 = setup$j2$0;
         doptrf$0$d0 = klmsel$y0$0;
         doptrf$0$d1 = klmsel$y1$0;
         doptrf$0$d2 = klmsel$y2$0;
-        doptrf$0$c0 = cmat_0$0$q;
-        doptrf$0$c1 = cmat_1$0$q;
-        doptrf$0$c2 = cmat_2$0$q;
-        doptrf$0$c = cvec$0$q;
+        doptrf$0$c0 = setup$c0$0;
+        doptrf$0$c1 = setup$c1$0;
+        doptrf$0$c2 = setup$c2$0;
+        doptrf$0$c = setup$c$0;
+        doptrf$0$round_up = setup$round_up$0;
         doptrf$0$valid_in = valid_in;
-        cmat_0$1$clock = clock;
-        cmat_1$1$clock = clock;
-        cmat_2$1$clock = clock;
-        cvec$1$clock = clock;
-        jsel_0$1$clock = clock;
-        jsel_1$1$clock = clock;
-        jsel_2$1$clock = clock;
         doptrf$1$clock = clock;
-        cmat_0$1$d = cmat_0$1$q;
-        cmat_1$1$d = cmat_1$1$q;
-        cmat_2$1$d = cmat_2$1$q;
-        cvec$1$d = cvec$1$q;
-        jsel_0$1$d = jsel_0$1$q;
-        jsel_1$1$d = jsel_1$1$q;
-        jsel_2$1$d = jsel_2$1$q;
-        if (load_en & (c_load_lane == idx$1)) begin
-            if (c_load_field == 32'h0) begin
-                cmat_0$1$d = load_data;
-            end
-            if (c_load_field == 32'h1) begin
-                cmat_1$1$d = load_data;
-            end
-            if (c_load_field == 32'h2) begin
-                cmat_2$1$d = load_data;
-            end
-            if (c_load_field == 32'h3) begin
-                cvec$1$d = load_data;
-            end
-            if (c_load_field == 32'h4) begin
-                jsel_0$1$d = load_data[(32'h0)+:(5)];
-                jsel_1$1$d = load_data[(32'h5)+:(5)];
-                jsel_2$1$d = load_data[(32'ha)+:(5)];
-            end
-        end
         klmsel$d$1 = d$1;
-        klmsel$j0$1 = jsel_0$1$q;
-        klmsel$j1$1 = jsel_1$1$q;
-        klmsel$j2$1 = jsel_2$1$q;
+        klmsel$j0$1 = setup$j0$1;
+        klmsel$j1$1 = setup$j1$1;
+        klmsel$j2$1 = setup$j2$1;
         doptrf$1$d0 = klmsel$y0$1;
         doptrf$1$d1 = klmsel$y1$1;
         doptrf$1$d2 = klmsel$y2$1;
-        doptrf$1$c0 = cmat_0$1$q;
-        doptrf$1$c1 = cmat_1$1$q;
-        doptrf$1$c2 = cmat_2$1$q;
-        doptrf$1$c = cvec$1$q;
+        doptrf$1$c0 = setup$c0$1;
+        doptrf$1$c1 = setup$c1$1;
+        doptrf$1$c2 = setup$c2$1;
+        doptrf$1$c = setup$c$1;
+        doptrf$1$round_up = setup$round_up$1;
         doptrf$1$valid_in = valid_in;
-        cmat_0$2$clock = clock;
-        cmat_1$2$clock = clock;
-        cmat_2$2$clock = clock;
-        cvec$2$clock = clock;
-        jsel_0$2$clock = clock;
-        jsel_1$2$clock = clock;
-        jsel_2$2$clock = clock;
         doptrf$2$clock = clock;
-        cmat_0$2$d = cmat_0$2$q;
-        cmat_1$2$d = cmat_1$2$q;
-        cmat_2$2$d = cmat_2$2$q;
-        cvec$2$d = cvec$2$q;
-        jsel_0$2$d = jsel_0$2$q;
-        jsel_1$2$d = jsel_1$2$q;
-        jsel_2$2$d = jsel_2$2$q;
-        if (load_en & (c_load_lane == idx$2)) begin
-            if (c_load_field == 32'h0) begin
-                cmat_0$2$d = load_data;
-            end
-            if (c_load_field == 32'h1) begin
-                cmat_1$2$d = load_data;
-            end
-            if (c_load_field == 32'h2) begin
-                cmat_2$2$d = load_data;
-            end
-            if (c_load_field == 32'h3) begin
-                cvec$2$d = load_data;
-            end
-            if (c_load_field == 32'h4) begin
-                jsel_0$2$d = load_data[(32'h0)+:(5)];
-                jsel_1$2$d = load_data[(32'h5)+:(5)];
-                jsel_2$2$d = load_data[(32'ha)+:(5)];
-            end
-        end
         klmsel$d$2 = d$2;
-        klmsel$j0$2 = jsel_0$2$q;
-        klmsel$j1$2 = jsel_1$2$q;
-        klmsel$j2$2 = jsel_2$2$q;
+        klmsel$j0$2 = setup$j0$2;
+        klmsel$j1$2 = setup$j1$2;
+        klmsel$j2$2 = setup$j2$2;
         doptrf$2$d0 = klmsel$y0$2;
         doptrf$2$d1 = klmsel$y1$2;
         doptrf$2$d2 = klmsel$y2$2;
-        doptrf$2$c0 = cmat_0$2$q;
-        doptrf$2$c1 = cmat_1$2$q;
-        doptrf$2$c2 = cmat_2$2$q;
-        doptrf$2$c = cvec$2$q;
+        doptrf$2$c0 = setup$c0$2;
+        doptrf$2$c1 = setup$c1$2;
+        doptrf$2$c2 = setup$c2$2;
+        doptrf$2$c = setup$c$2;
+        doptrf$2$round_up = setup$round_up$2;
         doptrf$2$valid_in = valid_in;
-        cmat_0$3$clock = clock;
-        cmat_1$3$clock = clock;
-        cmat_2$3$clock = clock;
-        cvec$3$clock = clock;
-        jsel_0$3$clock = clock;
-        jsel_1$3$clock = clock;
-        jsel_2$3$clock = clock;
         doptrf$3$clock = clock;
-        cmat_0$3$d = cmat_0$3$q;
-        cmat_1$3$d = cmat_1$3$q;
-        cmat_2$3$d = cmat_2$3$q;
-        cvec$3$d = cvec$3$q;
-        jsel_0$3$d = jsel_0$3$q;
-        jsel_1$3$d = jsel_1$3$q;
-        jsel_2$3$d = jsel_2$3$q;
-        if (load_en & (c_load_lane == idx$3)) begin
-            if (c_load_field == 32'h0) begin
-                cmat_0$3$d = load_data;
-            end
-            if (c_load_field == 32'h1) begin
-                cmat_1$3$d = load_data;
-            end
-            if (c_load_field == 32'h2) begin
-                cmat_2$3$d = load_data;
-            end
-            if (c_load_field == 32'h3) begin
-                cvec$3$d = load_data;
-            end
-            if (c_load_field == 32'h4) begin
-                jsel_0$3$d = load_data[(32'h0)+:(5)];
-                jsel_1$3$d = load_data[(32'h5)+:(5)];
-                jsel_2$3$d = load_data[(32'ha)+:(5)];
-            end
-        end
         klmsel$d$3 = d$3;
-        klmsel$j0$3 = jsel_0$3$q;
-        klmsel$j1$3 = jsel_1$3$q;
-        klmsel$j2$3 = jsel_2$3$q;
+        klmsel$j0$3 = setup$j0$3;
+        klmsel$j1$3 = setup$j1$3;
+        klmsel$j2$3 = setup$j2$3;
         doptrf$3$d0 = klmsel$y0$3;
         doptrf$3$d1 = klmsel$y1$3;
         doptrf$3$d2 = klmsel$y2$3;
-        doptrf$3$c0 = cmat_0$3$q;
-        doptrf$3$c1 = cmat_1$3$q;
-        doptrf$3$c2 = cmat_2$3$q;
-        doptrf$3$c = cvec$3$q;
+        doptrf$3$c0 = setup$c0$3;
+        doptrf$3$c1 = setup$c1$3;
+        doptrf$3$c2 = setup$c2$3;
+        doptrf$3$c = setup$c$3;
+        doptrf$3$round_up = setup$round_up$3;
         doptrf$3$valid_in = valid_in;
-        cmat_0$4$clock = clock;
-        cmat_1$4$clock = clock;
-        cmat_2$4$clock = clock;
-        cvec$4$clock = clock;
-        jsel_0$4$clock = clock;
-        jsel_1$4$clock = clock;
-        jsel_2$4$clock = clock;
         doptrf$4$clock = clock;
-        cmat_0$4$d = cmat_0$4$q;
-        cmat_1$4$d = cmat_1$4$q;
-        cmat_2$4$d = cmat_2$4$q;
-        cvec$4$d = cvec$4$q;
-        jsel_0$4$d = jsel_0$4$q;
-        jsel_1$4$d = jsel_1$4$q;
-        jsel_2$4$d = jsel_2$4$q;
-        if (load_en & (c_load_lane == idx$4)) begin
-            if (c_load_field == 32'h0) begin
-                cmat_0$4$d = load_data;
-            end
-            if (c_load_field == 32'h1) begin
-                cmat_1$4$d = load_data;
-            end
-            if (c_load_field == 32'h2) begin
-                cmat_2$4$d = load_data;
-            end
-            if (c_load_field == 32'h3) begin
-                cvec$4$d = load_data;
-            end
-            if (c_load_field == 32'h4) begin
-                jsel_0$4$d = load_data[(32'h0)+:(5)];
-                jsel_1$4$d = load_data[(32'h5)+:(5)];
-                jsel_2$4$d = load_data[(32'ha)+:(5)];
-            end
-        end
         klmsel$d$4 = d$4;
-        klmsel$j0$4 = jsel_0$4$q;
-        klmsel$j1$4 = jsel_1$4$q;
-        klmsel$j2$4 = jsel_2$4$q;
+        klmsel$j0$4 = setup$j0$4;
+        klmsel$j1$4 = setup$j1$4;
+        klmsel$j2$4 = setup$j2$4;
         doptrf$4$d0 = klmsel$y0$4;
         doptrf$4$d1 = klmsel$y1$4;
         doptrf$4$d2 = klmsel$y2$4;
-        doptrf$4$c0 = cmat_0$4$q;
-        doptrf$4$c1 = cmat_1$4$q;
-        doptrf$4$c2 = cmat_2$4$q;
-        doptrf$4$c = cvec$4$q;
+        doptrf$4$c0 = setup$c0$4;
+        doptrf$4$c1 = setup$c1$4;
+        doptrf$4$c2 = setup$c2$4;
+        doptrf$4$c = setup$c$4;
+        doptrf$4$round_up = setup$round_up$4;
         doptrf$4$valid_in = valid_in;
-        cmat_0$5$clock = clock;
-        cmat_1$5$clock = clock;
-        cmat_2$5$clock = clock;
-        cvec$5$clock = clock;
-        jsel_0$5$clock = clock;
-        jsel_1$5$clock = clock;
-        jsel_2$5$clock = clock;
         doptrf$5$clock = clock;
-        cmat_0$5$d = cmat_0$5$q;
-        cmat_1$5$d = cmat_1$5$q;
-        cmat_2$5$d = cmat_2$5$q;
-        cvec$5$d = cvec$5$q;
-        jsel_0$5$d = jsel_0$5$q;
-        jsel_1$5$d = jsel_1$5$q;
-        jsel_2$5$d = jsel_2$5$q;
-        if (load_en & (c_load_lane == idx$5)) begin
-            if (c_load_field == 32'h0) begin
-                cmat_0$5$d = load_data;
-            end
-            if (c_load_field == 32'h1) begin
-                cmat_1$5$d = load_data;
-            end
-            if (c_load_field == 32'h2) begin
-                cmat_2$5$d = load_data;
-            end
-            if (c_load_field == 32'h3) begin
-                cvec$5$d = load_data;
-            end
-            if (c_load_field == 32'h4) begin
-                jsel_0$5$d = load_data[(32'h0)+:(5)];
-                jsel_1$5$d = load_data[(32'h5)+:(5)];
-                jsel_2$5$d = load_data[(32'ha)+:(5)];
-            end
-        end
         klmsel$d$5 = d$5;
-        klmsel$j0$5 = jsel_0$5$q;
-        klmsel$j1$5 = jsel_1$5$q;
-        klmsel$j2$5 = jsel_2$5$q;
+        klmsel$j0$5 = setup$j0$5;
+        klmsel$j1$5 = setup$j1$5;
+        klmsel$j2$5 = setup$j2$5;
         doptrf$5$d0 = klmsel$y0$5;
         doptrf$5$d1 = klmsel$y1$5;
         doptrf$5$d2 = klmsel$y2$5;
-        doptrf$5$c0 = cmat_0$5$q;
-        doptrf$5$c1 = cmat_1$5$q;
-        doptrf$5$c2 = cmat_2$5$q;
-        doptrf$5$c = cvec$5$q;
+        doptrf$5$c0 = setup$c0$5;
+        doptrf$5$c1 = setup$c1$5;
+        doptrf$5$c2 = setup$c2$5;
+        doptrf$5$c = setup$c$5;
+        doptrf$5$round_up = setup$round_up$5;
         doptrf$5$valid_in = valid_in;
         doptrf$0$e = e$3;
         doptrf$1$e = e$4;
@@ -3781,7 +3363,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,e$0,e$1
 endmodule // top$dop
 
 
-module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
+module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,round_up,s,flag,valid_out);
     
     // Module arguments
     input wire  clock;
@@ -3794,6 +3376,7 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
     input wire  [23:0] c;
     input wire  [23:0] e;
     input wire  valid_in;
+    input wire  round_up;
     output reg  [23:0] s;
     output reg  flag;
     output reg  valid_out;
@@ -3826,24 +3409,42 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
     reg  [23:0] s1_e$d;
     wire  [23:0] s1_e$q;
     reg  s1_e$clock;
+    reg  s1_round$d;
+    wire  s1_round$q;
+    reg  s1_round$clock;
+    reg  r_mul$clock;
+    reg  r_mul$d;
+    wire  r_mul$q;
+    reg  r_sum$clock;
+    reg  r_sum$d;
+    wire  r_sum$q;
+    reg  r_u$clock;
+    reg  r_u$d;
+    wire  r_u$q;
+    reg  r_s$clock;
+    reg  r_s$d;
+    wire  r_s$q;
     reg  mul_0$clock;
     reg  [23:0] mul_0$a;
     reg  [23:0] mul_0$b;
     reg  mul_0$valid_in;
     wire  [23:0] mul_0$y;
     wire  mul_0$valid_out;
+    reg  mul_0$round_up;
     reg  mul_1$clock;
     reg  [23:0] mul_1$a;
     reg  [23:0] mul_1$b;
     reg  mul_1$valid_in;
     wire  [23:0] mul_1$y;
     wire  mul_1$valid_out;
+    reg  mul_1$round_up;
     reg  mul_2$clock;
     reg  [23:0] mul_2$a;
     reg  [23:0] mul_2$b;
     reg  mul_2$valid_in;
     wire  [23:0] mul_2$y;
     wire  mul_2$valid_out;
+    reg  mul_2$round_up;
     reg  [23:0] c_2$d;
     wire  [23:0] c_2$q;
     reg  c_2$clock;
@@ -3863,6 +3464,7 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
     reg  add_0$valid_in;
     wire  [23:0] add_0$y;
     wire  add_0$valid_out;
+    reg  add_0$round_up;
     reg  add_1$clock;
     reg  [23:0] add_1$a;
     reg  [23:0] add_1$b;
@@ -3870,6 +3472,7 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
     reg  add_1$valid_in;
     wire  [23:0] add_1$y;
     wire  add_1$valid_out;
+    reg  add_1$round_up;
     reg  add_2$clock;
     reg  [23:0] add_2$a;
     reg  [23:0] add_2$b;
@@ -3877,6 +3480,7 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
     reg  add_2$valid_in;
     wire  [23:0] add_2$y;
     wire  add_2$valid_out;
+    reg  add_2$round_up;
     reg  add_3$clock;
     reg  [23:0] add_3$a;
     reg  [23:0] add_3$b;
@@ -3884,6 +3488,7 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
     reg  add_3$valid_in;
     wire  [23:0] add_3$y;
     wire  add_3$valid_out;
+    reg  add_3$round_up;
     reg  [23:0] e_2$d;
     wire  [23:0] e_2$q;
     reg  e_2$clock;
@@ -3976,13 +3581,39 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
         .q(s1_e$q),
         .clock(s1_e$clock)
     );
+    top$cnt_dop$pending s1_round(
+        .d(s1_round$d),
+        .q(s1_round$q),
+        .clock(s1_round$clock)
+    );
+    top$dop$doptrf$0$r_mul r_mul(
+        .clock(r_mul$clock),
+        .d(r_mul$d),
+        .q(r_mul$q)
+    );
+    top$dop$doptrf$0$r_mul r_sum(
+        .clock(r_sum$clock),
+        .d(r_sum$d),
+        .q(r_sum$q)
+    );
+    top$dop$doptrf$0$r_mul r_u(
+        .clock(r_u$clock),
+        .d(r_u$d),
+        .q(r_u$q)
+    );
+    top$dop$doptrf$0$r_mul r_s(
+        .clock(r_s$clock),
+        .d(r_s$d),
+        .q(r_s$q)
+    );
     top$dop$doptrf$0$mul_0 mul_0(
         .clock(mul_0$clock),
         .a(mul_0$a),
         .b(mul_0$b),
         .valid_in(mul_0$valid_in),
         .y(mul_0$y),
-        .valid_out(mul_0$valid_out)
+        .valid_out(mul_0$valid_out),
+        .round_up(mul_0$round_up)
     );
     top$dop$doptrf$0$mul_0 mul_1(
         .clock(mul_1$clock),
@@ -3990,7 +3621,8 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
         .b(mul_1$b),
         .valid_in(mul_1$valid_in),
         .y(mul_1$y),
-        .valid_out(mul_1$valid_out)
+        .valid_out(mul_1$valid_out),
+        .round_up(mul_1$round_up)
     );
     top$dop$doptrf$0$mul_0 mul_2(
         .clock(mul_2$clock),
@@ -3998,7 +3630,8 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
         .b(mul_2$b),
         .valid_in(mul_2$valid_in),
         .y(mul_2$y),
-        .valid_out(mul_2$valid_out)
+        .valid_out(mul_2$valid_out),
+        .round_up(mul_2$round_up)
     );
     top$base_na c_2(
         .d(c_2$d),
@@ -4027,7 +3660,8 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
         .sub(add_0$sub),
         .valid_in(add_0$valid_in),
         .y(add_0$y),
-        .valid_out(add_0$valid_out)
+        .valid_out(add_0$valid_out),
+        .round_up(add_0$round_up)
     );
     top$dop$doptrf$0$add_0 add_1(
         .clock(add_1$clock),
@@ -4036,7 +3670,8 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
         .sub(add_1$sub),
         .valid_in(add_1$valid_in),
         .y(add_1$y),
-        .valid_out(add_1$valid_out)
+        .valid_out(add_1$valid_out),
+        .round_up(add_1$round_up)
     );
     top$dop$doptrf$0$add_0 add_2(
         .clock(add_2$clock),
@@ -4045,7 +3680,8 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
         .sub(add_2$sub),
         .valid_in(add_2$valid_in),
         .y(add_2$y),
-        .valid_out(add_2$valid_out)
+        .valid_out(add_2$valid_out),
+        .round_up(add_2$round_up)
     );
     top$dop$doptrf$0$add_0 add_3(
         .clock(add_3$clock),
@@ -4054,7 +3690,8 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
         .sub(add_3$sub),
         .valid_in(add_3$valid_in),
         .y(add_3$y),
-        .valid_out(add_3$valid_out)
+        .valid_out(add_3$valid_out),
+        .round_up(add_3$round_up)
     );
     top$base_na e_2(
         .d(e_2$d),
@@ -4133,6 +3770,7 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
         s1_c2$clock = clock;
         s1_c$clock = clock;
         s1_e$clock = clock;
+        s1_round$clock = clock;
         s1_valid$d = s1_valid$q;
         s1_d0$d = s1_d0$q;
         s1_d1$d = s1_d1$q;
@@ -4142,6 +3780,11 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
         s1_c2$d = s1_c2$q;
         s1_c$d = s1_c$q;
         s1_e$d = s1_e$q;
+        s1_round$d = s1_round$q;
+        r_mul$clock = clock;
+        r_sum$clock = clock;
+        r_u$clock = clock;
+        r_s$clock = clock;
         c_2$clock = clock;
         c_3$clock = clock;
         c_4$clock = clock;
@@ -4183,6 +3826,13 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
         add_1$clock = clock;
         add_2$clock = clock;
         add_3$clock = clock;
+        mul_0$round_up = r_mul$q;
+        mul_1$round_up = r_mul$q;
+        mul_2$round_up = r_mul$q;
+        add_0$round_up = r_sum$q;
+        add_1$round_up = r_sum$q;
+        add_2$round_up = r_u$q;
+        add_3$round_up = r_s$q;
         s1_valid$d = valid_in;
         s1_d0$d = d0;
         s1_d1$d = d1;
@@ -4192,6 +3842,11 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
         s1_c2$d = c2;
         s1_c$d = c;
         s1_e$d = e;
+        s1_round$d = round_up;
+        r_mul$d = s1_round$q;
+        r_sum$d = r_mul$q;
+        r_u$d = r_sum$q;
+        r_s$d = r_u$q;
         mul_0$a = s1_d0$q;
         mul_0$b = s1_c0$q;
         mul_0$valid_in = s1_valid$q;
@@ -4246,7 +3901,7 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
 endmodule // top$dop$doptrf$0
 
 
-module top$dop$doptrf$0$add_0(clock,a,b,sub,valid_in,y,valid_out);
+module top$dop$doptrf$0$add_0(clock,a,b,sub,valid_in,y,valid_out,round_up);
     
     // Module arguments
     input wire  clock;
@@ -4256,9 +3911,9 @@ module top$dop$doptrf$0$add_0(clock,a,b,sub,valid_in,y,valid_out);
     input wire  valid_in;
     output reg  [23:0] y;
     output reg  valid_out;
+    input wire  round_up;
     
     // Constant declarations
-    localparam  round_up = 1'b1;
     localparam  c_align_cap = 8'h13;
     localparam  c_exp_ones = 10'b11111111;
     
@@ -4865,7 +4520,7 @@ module top$dop$doptrf$0$add_0$unpack_a(x,sign,exp,sig,is_zero,is_inf,is_nan);
 endmodule // top$dop$doptrf$0$add_0$unpack_a
 
 
-module top$dop$doptrf$0$mul_0(clock,a,b,valid_in,y,valid_out);
+module top$dop$doptrf$0$mul_0(clock,a,b,valid_in,y,valid_out,round_up);
     
     // Module arguments
     input wire  clock;
@@ -4874,9 +4529,9 @@ module top$dop$doptrf$0$mul_0(clock,a,b,valid_in,y,valid_out);
     input wire  valid_in;
     output reg  [23:0] y;
     output reg  valid_out;
+    input wire  round_up;
     
     // Constant declarations
-    localparam  round_up = 1'b1;
     localparam  c_exp_adj = 10'b10000001;
     localparam  c_exp_ofs = 10'b100000000;
     localparam  c_exp_norm_min = 10'b100000001;
@@ -5377,6 +5032,57 @@ module top$dop$doptrf$0$mul_0$sig_mul(a,b,hi,sticky);
 endmodule // top$dop$doptrf$0$mul_0$sig_mul
 
 
+module top$dop$doptrf$0$r_mul(clock,d,q);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+    
+    // Stub signals
+    reg  line$0$d;
+    wire  line$0$q;
+    reg  line$0$clock;
+    reg  line$1$d;
+    wire  line$1$q;
+    reg  line$1$clock;
+    reg  line$2$d;
+    wire  line$2$q;
+    reg  line$2$clock;
+    
+    // Sub module instances
+    top$cnt_dop$pending line$0(
+        .d(line$0$d),
+        .q(line$0$q),
+        .clock(line$0$clock)
+    );
+    top$cnt_dop$pending line$1(
+        .d(line$1$d),
+        .q(line$1$q),
+        .clock(line$1$clock)
+    );
+    top$cnt_dop$pending line$2(
+        .d(line$2$d),
+        .q(line$2$q),
+        .clock(line$2$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line$0$clock = clock;
+        line$0$d = d;
+        line$1$clock = clock;
+        line$1$d = d;
+        line$2$clock = clock;
+        line$2$d = d;
+        line$0$d = line$1$q;
+        line$1$d = line$2$q;
+        q = line$0$q;
+    end
+    
+endmodule // top$dop$doptrf$0$r_mul
+
+
 module top$dop$klmsel(d$0,d$1,d$2,d$3,d$4,d$5,j0$0,j0$1,j0$2,j0$3,j0$4,j0$5,j1$0,j1$1,j1$2,j1$3,j1$4,j1$5,j2$0,j2$1,j2$2,j2$3,j2$4,j2$5,y0$0,y0$1,y0$2,y0$3,y0$4,y0$5,y1$0,y1$1,y1$2,y1$3,y1$4,y1$5,y2$0,y2$1,y2$2,y2$3,y2$4,y2$5);
     
     // Module arguments
@@ -5778,6 +5484,735 @@ module top$dop$klmsel(d$0,d$1,d$2,d$3,d$4,d$5,j0$0,j0$1,j0$2,j0$3,j0$4,j0$5,j1$0
     end
     
 endmodule // top$dop$klmsel
+
+
+module top$dop$setup(clock,load_en,load_addr,load_data,c0$0,c0$1,c0$2,c0$3,c0$4,c0$5,c1$0,c1$1,c1$2,c1$3,c1$4,c1$5,c2$0,c2$1,c2$2,c2$3,c2$4,c2$5,c$0,c$1,c$2,c$3,c$4,c$5,j0$0,j0$1,j0$2,j0$3,j0$4,j0$5,j1$0,j1$1,j1$2,j1$3,j1$4,j1$5,j2$0,j2$1,j2$2,j2$3,j2$4,j2$5,round_up$0,round_up$1,round_up$2,round_up$3,round_up$4,round_up$5);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  load_en;
+    input wire  [7:0] load_addr;
+    input wire  [23:0] load_data;
+    output reg  [23:0] c0$0;
+    output reg  [23:0] c0$1;
+    output reg  [23:0] c0$2;
+    output reg  [23:0] c0$3;
+    output reg  [23:0] c0$4;
+    output reg  [23:0] c0$5;
+    output reg  [23:0] c1$0;
+    output reg  [23:0] c1$1;
+    output reg  [23:0] c1$2;
+    output reg  [23:0] c1$3;
+    output reg  [23:0] c1$4;
+    output reg  [23:0] c1$5;
+    output reg  [23:0] c2$0;
+    output reg  [23:0] c2$1;
+    output reg  [23:0] c2$2;
+    output reg  [23:0] c2$3;
+    output reg  [23:0] c2$4;
+    output reg  [23:0] c2$5;
+    output reg  [23:0] c$0;
+    output reg  [23:0] c$1;
+    output reg  [23:0] c$2;
+    output reg  [23:0] c$3;
+    output reg  [23:0] c$4;
+    output reg  [23:0] c$5;
+    output reg  [4:0] j0$0;
+    output reg  [4:0] j0$1;
+    output reg  [4:0] j0$2;
+    output reg  [4:0] j0$3;
+    output reg  [4:0] j0$4;
+    output reg  [4:0] j0$5;
+    output reg  [4:0] j1$0;
+    output reg  [4:0] j1$1;
+    output reg  [4:0] j1$2;
+    output reg  [4:0] j1$3;
+    output reg  [4:0] j1$4;
+    output reg  [4:0] j1$5;
+    output reg  [4:0] j2$0;
+    output reg  [4:0] j2$1;
+    output reg  [4:0] j2$2;
+    output reg  [4:0] j2$3;
+    output reg  [4:0] j2$4;
+    output reg  [4:0] j2$5;
+    output reg  round_up$0;
+    output reg  round_up$1;
+    output reg  round_up$2;
+    output reg  round_up$3;
+    output reg  round_up$4;
+    output reg  round_up$5;
+    
+    // Constant declarations
+    localparam  idx$0 = 5'b0;
+    localparam  idx$1 = 5'b1;
+    localparam  idx$2 = 5'b10;
+    localparam  idx$3 = 5'b11;
+    localparam  idx$4 = 5'b100;
+    localparam  idx$5 = 5'b101;
+    
+    // Stub signals
+    reg  [23:0] cmat_0$0$d;
+    wire  [23:0] cmat_0$0$q;
+    reg  cmat_0$0$clock;
+    reg  [23:0] cmat_0$1$d;
+    wire  [23:0] cmat_0$1$q;
+    reg  cmat_0$1$clock;
+    reg  [23:0] cmat_0$2$d;
+    wire  [23:0] cmat_0$2$q;
+    reg  cmat_0$2$clock;
+    reg  [23:0] cmat_0$3$d;
+    wire  [23:0] cmat_0$3$q;
+    reg  cmat_0$3$clock;
+    reg  [23:0] cmat_0$4$d;
+    wire  [23:0] cmat_0$4$q;
+    reg  cmat_0$4$clock;
+    reg  [23:0] cmat_0$5$d;
+    wire  [23:0] cmat_0$5$q;
+    reg  cmat_0$5$clock;
+    reg  [23:0] cmat_1$0$d;
+    wire  [23:0] cmat_1$0$q;
+    reg  cmat_1$0$clock;
+    reg  [23:0] cmat_1$1$d;
+    wire  [23:0] cmat_1$1$q;
+    reg  cmat_1$1$clock;
+    reg  [23:0] cmat_1$2$d;
+    wire  [23:0] cmat_1$2$q;
+    reg  cmat_1$2$clock;
+    reg  [23:0] cmat_1$3$d;
+    wire  [23:0] cmat_1$3$q;
+    reg  cmat_1$3$clock;
+    reg  [23:0] cmat_1$4$d;
+    wire  [23:0] cmat_1$4$q;
+    reg  cmat_1$4$clock;
+    reg  [23:0] cmat_1$5$d;
+    wire  [23:0] cmat_1$5$q;
+    reg  cmat_1$5$clock;
+    reg  [23:0] cmat_2$0$d;
+    wire  [23:0] cmat_2$0$q;
+    reg  cmat_2$0$clock;
+    reg  [23:0] cmat_2$1$d;
+    wire  [23:0] cmat_2$1$q;
+    reg  cmat_2$1$clock;
+    reg  [23:0] cmat_2$2$d;
+    wire  [23:0] cmat_2$2$q;
+    reg  cmat_2$2$clock;
+    reg  [23:0] cmat_2$3$d;
+    wire  [23:0] cmat_2$3$q;
+    reg  cmat_2$3$clock;
+    reg  [23:0] cmat_2$4$d;
+    wire  [23:0] cmat_2$4$q;
+    reg  cmat_2$4$clock;
+    reg  [23:0] cmat_2$5$d;
+    wire  [23:0] cmat_2$5$q;
+    reg  cmat_2$5$clock;
+    reg  [23:0] cvec$0$d;
+    wire  [23:0] cvec$0$q;
+    reg  cvec$0$clock;
+    reg  [23:0] cvec$1$d;
+    wire  [23:0] cvec$1$q;
+    reg  cvec$1$clock;
+    reg  [23:0] cvec$2$d;
+    wire  [23:0] cvec$2$q;
+    reg  cvec$2$clock;
+    reg  [23:0] cvec$3$d;
+    wire  [23:0] cvec$3$q;
+    reg  cvec$3$clock;
+    reg  [23:0] cvec$4$d;
+    wire  [23:0] cvec$4$q;
+    reg  cvec$4$clock;
+    reg  [23:0] cvec$5$d;
+    wire  [23:0] cvec$5$q;
+    reg  cvec$5$clock;
+    reg  [4:0] jsel_0$0$d;
+    wire  [4:0] jsel_0$0$q;
+    reg  jsel_0$0$clock;
+    reg  [4:0] jsel_0$1$d;
+    wire  [4:0] jsel_0$1$q;
+    reg  jsel_0$1$clock;
+    reg  [4:0] jsel_0$2$d;
+    wire  [4:0] jsel_0$2$q;
+    reg  jsel_0$2$clock;
+    reg  [4:0] jsel_0$3$d;
+    wire  [4:0] jsel_0$3$q;
+    reg  jsel_0$3$clock;
+    reg  [4:0] jsel_0$4$d;
+    wire  [4:0] jsel_0$4$q;
+    reg  jsel_0$4$clock;
+    reg  [4:0] jsel_0$5$d;
+    wire  [4:0] jsel_0$5$q;
+    reg  jsel_0$5$clock;
+    reg  [4:0] jsel_1$0$d;
+    wire  [4:0] jsel_1$0$q;
+    reg  jsel_1$0$clock;
+    reg  [4:0] jsel_1$1$d;
+    wire  [4:0] jsel_1$1$q;
+    reg  jsel_1$1$clock;
+    reg  [4:0] jsel_1$2$d;
+    wire  [4:0] jsel_1$2$q;
+    reg  jsel_1$2$clock;
+    reg  [4:0] jsel_1$3$d;
+    wire  [4:0] jsel_1$3$q;
+    reg  jsel_1$3$clock;
+    reg  [4:0] jsel_1$4$d;
+    wire  [4:0] jsel_1$4$q;
+    reg  jsel_1$4$clock;
+    reg  [4:0] jsel_1$5$d;
+    wire  [4:0] jsel_1$5$q;
+    reg  jsel_1$5$clock;
+    reg  [4:0] jsel_2$0$d;
+    wire  [4:0] jsel_2$0$q;
+    reg  jsel_2$0$clock;
+    reg  [4:0] jsel_2$1$d;
+    wire  [4:0] jsel_2$1$q;
+    reg  jsel_2$1$clock;
+    reg  [4:0] jsel_2$2$d;
+    wire  [4:0] jsel_2$2$q;
+    reg  jsel_2$2$clock;
+    reg  [4:0] jsel_2$3$d;
+    wire  [4:0] jsel_2$3$q;
+    reg  jsel_2$3$clock;
+    reg  [4:0] jsel_2$4$d;
+    wire  [4:0] jsel_2$4$q;
+    reg  jsel_2$4$clock;
+    reg  [4:0] jsel_2$5$d;
+    wire  [4:0] jsel_2$5$q;
+    reg  jsel_2$5$clock;
+    reg  rnd$0$d;
+    wire  rnd$0$q;
+    reg  rnd$0$clock;
+    reg  rnd$1$d;
+    wire  rnd$1$q;
+    reg  rnd$1$clock;
+    reg  rnd$2$d;
+    wire  rnd$2$q;
+    reg  rnd$2$clock;
+    reg  rnd$3$d;
+    wire  rnd$3$q;
+    reg  rnd$3$clock;
+    reg  rnd$4$d;
+    wire  rnd$4$q;
+    reg  rnd$4$clock;
+    reg  rnd$5$d;
+    wire  rnd$5$q;
+    reg  rnd$5$clock;
+    
+    // Local signals
+    reg  [4:0] c_lane;
+    reg  [2:0] c_field;
+    
+    // Sub module instances
+    top$base_na cmat_0$0(
+        .d(cmat_0$0$d),
+        .q(cmat_0$0$q),
+        .clock(cmat_0$0$clock)
+    );
+    top$base_na cmat_0$1(
+        .d(cmat_0$1$d),
+        .q(cmat_0$1$q),
+        .clock(cmat_0$1$clock)
+    );
+    top$base_na cmat_0$2(
+        .d(cmat_0$2$d),
+        .q(cmat_0$2$q),
+        .clock(cmat_0$2$clock)
+    );
+    top$base_na cmat_0$3(
+        .d(cmat_0$3$d),
+        .q(cmat_0$3$q),
+        .clock(cmat_0$3$clock)
+    );
+    top$base_na cmat_0$4(
+        .d(cmat_0$4$d),
+        .q(cmat_0$4$q),
+        .clock(cmat_0$4$clock)
+    );
+    top$base_na cmat_0$5(
+        .d(cmat_0$5$d),
+        .q(cmat_0$5$q),
+        .clock(cmat_0$5$clock)
+    );
+    top$base_na cmat_1$0(
+        .d(cmat_1$0$d),
+        .q(cmat_1$0$q),
+        .clock(cmat_1$0$clock)
+    );
+    top$base_na cmat_1$1(
+        .d(cmat_1$1$d),
+        .q(cmat_1$1$q),
+        .clock(cmat_1$1$clock)
+    );
+    top$base_na cmat_1$2(
+        .d(cmat_1$2$d),
+        .q(cmat_1$2$q),
+        .clock(cmat_1$2$clock)
+    );
+    top$base_na cmat_1$3(
+        .d(cmat_1$3$d),
+        .q(cmat_1$3$q),
+        .clock(cmat_1$3$clock)
+    );
+    top$base_na cmat_1$4(
+        .d(cmat_1$4$d),
+        .q(cmat_1$4$q),
+        .clock(cmat_1$4$clock)
+    );
+    top$base_na cmat_1$5(
+        .d(cmat_1$5$d),
+        .q(cmat_1$5$q),
+        .clock(cmat_1$5$clock)
+    );
+    top$base_na cmat_2$0(
+        .d(cmat_2$0$d),
+        .q(cmat_2$0$q),
+        .clock(cmat_2$0$clock)
+    );
+    top$base_na cmat_2$1(
+        .d(cmat_2$1$d),
+        .q(cmat_2$1$q),
+        .clock(cmat_2$1$clock)
+    );
+    top$base_na cmat_2$2(
+        .d(cmat_2$2$d),
+        .q(cmat_2$2$q),
+        .clock(cmat_2$2$clock)
+    );
+    top$base_na cmat_2$3(
+        .d(cmat_2$3$d),
+        .q(cmat_2$3$q),
+        .clock(cmat_2$3$clock)
+    );
+    top$base_na cmat_2$4(
+        .d(cmat_2$4$d),
+        .q(cmat_2$4$q),
+        .clock(cmat_2$4$clock)
+    );
+    top$base_na cmat_2$5(
+        .d(cmat_2$5$d),
+        .q(cmat_2$5$q),
+        .clock(cmat_2$5$clock)
+    );
+    top$base_na cvec$0(
+        .d(cvec$0$d),
+        .q(cvec$0$q),
+        .clock(cvec$0$clock)
+    );
+    top$base_na cvec$1(
+        .d(cvec$1$d),
+        .q(cvec$1$q),
+        .clock(cvec$1$clock)
+    );
+    top$base_na cvec$2(
+        .d(cvec$2$d),
+        .q(cvec$2$q),
+        .clock(cvec$2$clock)
+    );
+    top$base_na cvec$3(
+        .d(cvec$3$d),
+        .q(cvec$3$q),
+        .clock(cvec$3$clock)
+    );
+    top$base_na cvec$4(
+        .d(cvec$4$d),
+        .q(cvec$4$q),
+        .clock(cvec$4$clock)
+    );
+    top$base_na cvec$5(
+        .d(cvec$5$d),
+        .q(cvec$5$q),
+        .clock(cvec$5$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_0$0(
+        .d(jsel_0$0$d),
+        .q(jsel_0$0$q),
+        .clock(jsel_0$0$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_0$1(
+        .d(jsel_0$1$d),
+        .q(jsel_0$1$q),
+        .clock(jsel_0$1$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_0$2(
+        .d(jsel_0$2$d),
+        .q(jsel_0$2$q),
+        .clock(jsel_0$2$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_0$3(
+        .d(jsel_0$3$d),
+        .q(jsel_0$3$q),
+        .clock(jsel_0$3$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_0$4(
+        .d(jsel_0$4$d),
+        .q(jsel_0$4$q),
+        .clock(jsel_0$4$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_0$5(
+        .d(jsel_0$5$d),
+        .q(jsel_0$5$q),
+        .clock(jsel_0$5$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_1$0(
+        .d(jsel_1$0$d),
+        .q(jsel_1$0$q),
+        .clock(jsel_1$0$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_1$1(
+        .d(jsel_1$1$d),
+        .q(jsel_1$1$q),
+        .clock(jsel_1$1$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_1$2(
+        .d(jsel_1$2$d),
+        .q(jsel_1$2$q),
+        .clock(jsel_1$2$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_1$3(
+        .d(jsel_1$3$d),
+        .q(jsel_1$3$q),
+        .clock(jsel_1$3$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_1$4(
+        .d(jsel_1$4$d),
+        .q(jsel_1$4$q),
+        .clock(jsel_1$4$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_1$5(
+        .d(jsel_1$5$d),
+        .q(jsel_1$5$q),
+        .clock(jsel_1$5$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_2$0(
+        .d(jsel_2$0$d),
+        .q(jsel_2$0$q),
+        .clock(jsel_2$0$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_2$1(
+        .d(jsel_2$1$d),
+        .q(jsel_2$1$q),
+        .clock(jsel_2$1$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_2$2(
+        .d(jsel_2$2$d),
+        .q(jsel_2$2$q),
+        .clock(jsel_2$2$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_2$3(
+        .d(jsel_2$3$d),
+        .q(jsel_2$3$q),
+        .clock(jsel_2$3$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_2$4(
+        .d(jsel_2$4$d),
+        .q(jsel_2$4$q),
+        .clock(jsel_2$4$clock)
+    );
+    top$d_cntr$ahd_pairs jsel_2$5(
+        .d(jsel_2$5$d),
+        .q(jsel_2$5$q),
+        .clock(jsel_2$5$clock)
+    );
+    top$cnt_dop$pending rnd$0(
+        .d(rnd$0$d),
+        .q(rnd$0$q),
+        .clock(rnd$0$clock)
+    );
+    top$cnt_dop$pending rnd$1(
+        .d(rnd$1$d),
+        .q(rnd$1$q),
+        .clock(rnd$1$clock)
+    );
+    top$cnt_dop$pending rnd$2(
+        .d(rnd$2$d),
+        .q(rnd$2$q),
+        .clock(rnd$2$clock)
+    );
+    top$cnt_dop$pending rnd$3(
+        .d(rnd$3$d),
+        .q(rnd$3$q),
+        .clock(rnd$3$clock)
+    );
+    top$cnt_dop$pending rnd$4(
+        .d(rnd$4$d),
+        .q(rnd$4$q),
+        .clock(rnd$4$clock)
+    );
+    top$cnt_dop$pending rnd$5(
+        .d(rnd$5$d),
+        .q(rnd$5$q),
+        .clock(rnd$5$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        c_lane = load_addr[(32'h3)+:(5)];
+        c_field = load_addr[(32'h0)+:(3)];
+        cmat_0$0$clock = clock;
+        cmat_1$0$clock = clock;
+        cmat_2$0$clock = clock;
+        cvec$0$clock = clock;
+        jsel_0$0$clock = clock;
+        jsel_1$0$clock = clock;
+        jsel_2$0$clock = clock;
+        rnd$0$clock = clock;
+        cmat_0$0$d = cmat_0$0$q;
+        cmat_1$0$d = cmat_1$0$q;
+        cmat_2$0$d = cmat_2$0$q;
+        cvec$0$d = cvec$0$q;
+        jsel_0$0$d = jsel_0$0$q;
+        jsel_1$0$d = jsel_1$0$q;
+        jsel_2$0$d = jsel_2$0$q;
+        rnd$0$d = rnd$0$q;
+        if (load_en & (c_lane == idx$0)) begin
+            if (c_field == 32'h0) begin
+                cmat_0$0$d = load_data;
+            end
+            if (c_field == 32'h1) begin
+                cmat_1$0$d = load_data;
+            end
+            if (c_field == 32'h2) begin
+                cmat_2$0$d = load_data;
+            end
+            if (c_field == 32'h3) begin
+                cvec$0$d = load_data;
+            end
+            if (c_field == 32'h4) begin
+                jsel_0$0$d = load_data[(32'h0)+:(5)];
+                jsel_1$0$d = load_data[(32'h5)+:(5)];
+                jsel_2$0$d = load_data[(32'ha)+:(5)];
+                rnd$0$d = load_data[32'hf];
+            end
+        end
+        c0$0 = cmat_0$0$q;
+        c1$0 = cmat_1$0$q;
+        c2$0 = cmat_2$0$q;
+        c$0 = cvec$0$q;
+        j0$0 = jsel_0$0$q;
+        j1$0 = jsel_1$0$q;
+        j2$0 = jsel_2$0$q;
+        round_up$0 = rnd$0$q;
+        cmat_0$1$clock = clock;
+        cmat_1$1$clock = clock;
+        cmat_2$1$clock = clock;
+        cvec$1$clock = clock;
+        jsel_0$1$clock = clock;
+        jsel_1$1$clock = clock;
+        jsel_2$1$clock = clock;
+        rnd$1$clock = clock;
+        cmat_0$1$d = cmat_0$1$q;
+        cmat_1$1$d = cmat_1$1$q;
+        cmat_2$1$d = cmat_2$1$q;
+        cvec$1$d = cvec$1$q;
+        jsel_0$1$d = jsel_0$1$q;
+        jsel_1$1$d = jsel_1$1$q;
+        jsel_2$1$d = jsel_2$1$q;
+        rnd$1$d = rnd$1$q;
+        if (load_en & (c_lane == idx$1)) begin
+            if (c_field == 32'h0) begin
+                cmat_0$1$d = load_data;
+            end
+            if (c_field == 32'h1) begin
+                cmat_1$1$d = load_data;
+            end
+            if (c_field == 32'h2) begin
+                cmat_2$1$d = load_data;
+            end
+            if (c_field == 32'h3) begin
+                cvec$1$d = load_data;
+            end
+            if (c_field == 32'h4) begin
+                jsel_0$1$d = load_data[(32'h0)+:(5)];
+                jsel_1$1$d = load_data[(32'h5)+:(5)];
+                jsel_2$1$d = load_data[(32'ha)+:(5)];
+                rnd$1$d = load_data[32'hf];
+            end
+        end
+        c0$1 = cmat_0$1$q;
+        c1$1 = cmat_1$1$q;
+        c2$1 = cmat_2$1$q;
+        c$1 = cvec$1$q;
+        j0$1 = jsel_0$1$q;
+        j1$1 = jsel_1$1$q;
+        j2$1 = jsel_2$1$q;
+        round_up$1 = rnd$1$q;
+        cmat_0$2$clock = clock;
+        cmat_1$2$clock = clock;
+        cmat_2$2$clock = clock;
+        cvec$2$clock = clock;
+        jsel_0$2$clock = clock;
+        jsel_1$2$clock = clock;
+        jsel_2$2$clock = clock;
+        rnd$2$clock = clock;
+        cmat_0$2$d = cmat_0$2$q;
+        cmat_1$2$d = cmat_1$2$q;
+        cmat_2$2$d = cmat_2$2$q;
+        cvec$2$d = cvec$2$q;
+        jsel_0$2$d = jsel_0$2$q;
+        jsel_1$2$d = jsel_1$2$q;
+        jsel_2$2$d = jsel_2$2$q;
+        rnd$2$d = rnd$2$q;
+        if (load_en & (c_lane == idx$2)) begin
+            if (c_field == 32'h0) begin
+                cmat_0$2$d = load_data;
+            end
+            if (c_field == 32'h1) begin
+                cmat_1$2$d = load_data;
+            end
+            if (c_field == 32'h2) begin
+                cmat_2$2$d = load_data;
+            end
+            if (c_field == 32'h3) begin
+                cvec$2$d = load_data;
+            end
+            if (c_field == 32'h4) begin
+                jsel_0$2$d = load_data[(32'h0)+:(5)];
+                jsel_1$2$d = load_data[(32'h5)+:(5)];
+                jsel_2$2$d = load_data[(32'ha)+:(5)];
+                rnd$2$d = load_data[32'hf];
+            end
+        end
+        c0$2 = cmat_0$2$q;
+        c1$2 = cmat_1$2$q;
+        c2$2 = cmat_2$2$q;
+        c$2 = cvec$2$q;
+        j0$2 = jsel_0$2$q;
+        j1$2 = jsel_1$2$q;
+        j2$2 = jsel_2$2$q;
+        round_up$2 = rnd$2$q;
+        cmat_0$3$clock = clock;
+        cmat_1$3$clock = clock;
+        cmat_2$3$clock = clock;
+        cvec$3$clock = clock;
+        jsel_0$3$clock = clock;
+        jsel_1$3$clock = clock;
+        jsel_2$3$clock = clock;
+        rnd$3$clock = clock;
+        cmat_0$3$d = cmat_0$3$q;
+        cmat_1$3$d = cmat_1$3$q;
+        cmat_2$3$d = cmat_2$3$q;
+        cvec$3$d = cvec$3$q;
+        jsel_0$3$d = jsel_0$3$q;
+        jsel_1$3$d = jsel_1$3$q;
+        jsel_2$3$d = jsel_2$3$q;
+        rnd$3$d = rnd$3$q;
+        if (load_en & (c_lane == idx$3)) begin
+            if (c_field == 32'h0) begin
+                cmat_0$3$d = load_data;
+            end
+            if (c_field == 32'h1) begin
+                cmat_1$3$d = load_data;
+            end
+            if (c_field == 32'h2) begin
+                cmat_2$3$d = load_data;
+            end
+            if (c_field == 32'h3) begin
+                cvec$3$d = load_data;
+            end
+            if (c_field == 32'h4) begin
+                jsel_0$3$d = load_data[(32'h0)+:(5)];
+                jsel_1$3$d = load_data[(32'h5)+:(5)];
+                jsel_2$3$d = load_data[(32'ha)+:(5)];
+                rnd$3$d = load_data[32'hf];
+            end
+        end
+        c0$3 = cmat_0$3$q;
+        c1$3 = cmat_1$3$q;
+        c2$3 = cmat_2$3$q;
+        c$3 = cvec$3$q;
+        j0$3 = jsel_0$3$q;
+        j1$3 = jsel_1$3$q;
+        j2$3 = jsel_2$3$q;
+        round_up$3 = rnd$3$q;
+        cmat_0$4$clock = clock;
+        cmat_1$4$clock = clock;
+        cmat_2$4$clock = clock;
+        cvec$4$clock = clock;
+        jsel_0$4$clock = clock;
+        jsel_1$4$clock = clock;
+        jsel_2$4$clock = clock;
+        rnd$4$clock = clock;
+        cmat_0$4$d = cmat_0$4$q;
+        cmat_1$4$d = cmat_1$4$q;
+        cmat_2$4$d = cmat_2$4$q;
+        cvec$4$d = cvec$4$q;
+        jsel_0$4$d = jsel_0$4$q;
+        jsel_1$4$d = jsel_1$4$q;
+        jsel_2$4$d = jsel_2$4$q;
+        rnd$4$d = rnd$4$q;
+        if (load_en & (c_lane == idx$4)) begin
+            if (c_field == 32'h0) begin
+                cmat_0$4$d = load_data;
+            end
+            if (c_field == 32'h1) begin
+                cmat_1$4$d = load_data;
+            end
+            if (c_field == 32'h2) begin
+                cmat_2$4$d = load_data;
+            end
+            if (c_field == 32'h3) begin
+                cvec$4$d = load_data;
+            end
+            if (c_field == 32'h4) begin
+                jsel_0$4$d = load_data[(32'h0)+:(5)];
+                jsel_1$4$d = load_data[(32'h5)+:(5)];
+                jsel_2$4$d = load_data[(32'ha)+:(5)];
+                rnd$4$d = load_data[32'hf];
+            end
+        end
+        c0$4 = cmat_0$4$q;
+        c1$4 = cmat_1$4$q;
+        c2$4 = cmat_2$4$q;
+        c$4 = cvec$4$q;
+        j0$4 = jsel_0$4$q;
+        j1$4 = jsel_1$4$q;
+        j2$4 = jsel_2$4$q;
+        round_up$4 = rnd$4$q;
+        cmat_0$5$clock = clock;
+        cmat_1$5$clock = clock;
+        cmat_2$5$clock = clock;
+        cvec$5$clock = clock;
+        jsel_0$5$clock = clock;
+        jsel_1$5$clock = clock;
+        jsel_2$5$clock = clock;
+        rnd$5$clock = clock;
+        cmat_0$5$d = cmat_0$5$q;
+        cmat_1$5$d = cmat_1$5$q;
+        cmat_2$5$d = cmat_2$5$q;
+        cvec$5$d = cvec$5$q;
+        jsel_0$5$d = jsel_0$5$q;
+        jsel_1$5$d = jsel_1$5$q;
+        jsel_2$5$d = jsel_2$5$q;
+        rnd$5$d = rnd$5$q;
+        if (load_en & (c_lane == idx$5)) begin
+            if (c_field == 32'h0) begin
+                cmat_0$5$d = load_data;
+            end
+            if (c_field == 32'h1) begin
+                cmat_1$5$d = load_data;
+            end
+            if (c_field == 32'h2) begin
+                cmat_2$5$d = load_data;
+            end
+            if (c_field == 32'h3) begin
+                cvec$5$d = load_data;
+            end
+            if (c_field == 32'h4) begin
+                jsel_0$5$d = load_data[(32'h0)+:(5)];
+                jsel_1$5$d = load_data[(32'h5)+:(5)];
+                jsel_2$5$d = load_data[(32'ha)+:(5)];
+                rnd$5$d = load_data[32'hf];
+            end
+        end
+        c0$5 = cmat_0$5$q;
+        c1$5 = cmat_1$5$q;
+        c2$5 = cmat_2$5$q;
+        c$5 = cvec$5$q;
+        j0$5 = jsel_0$5$q;
+        j1$5 = jsel_1$5$q;
+        j2$5 = jsel_2$5$q;
+        round_up$5 = rnd$5$q;
+    end
+    
+endmodule // top$dop$setup
 
 
 module top$leaf_count(d,q,clock);
@@ -12024,7 +12459,7 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
         .d(c3_2$d),
         .q(c3_2$q)
     );
-    top$dop$doptrf$0$mul_0 am(
+    top$tri_unit$tc_ab$af am(
         .clock(am$clock),
         .a(am$a),
         .b(am$b),
@@ -12032,7 +12467,7 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
         .y(am$y),
         .valid_out(am$valid_out)
     );
-    top$dop$doptrf$0$mul_0 af(
+    top$tri_unit$tc_ab$af af(
         .clock(af$clock),
         .a(af$a),
         .b(af$b),
@@ -12040,7 +12475,7 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
         .y(af$y),
         .valid_out(af$valid_out)
     );
-    top$dop$doptrf$0$add_0 aerr(
+    top$tri_unit$tc_ab$aerr aerr(
         .clock(aerr$clock),
         .a(aerr$a),
         .b(aerr$b),
@@ -12054,7 +12489,7 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
         .d(aerr_wait$d),
         .q(aerr_wait$q)
     );
-    top$dop$doptrf$0$add_0 la$0(
+    top$tri_unit$tc_ab$aerr la$0(
         .clock(la$0$clock),
         .a(la$0$a),
         .b(la$0$b),
@@ -12063,7 +12498,7 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
         .y(la$0$y),
         .valid_out(la$0$valid_out)
     );
-    top$dop$doptrf$0$add_0 la$1(
+    top$tri_unit$tc_ab$aerr la$1(
         .clock(la$1$clock),
         .a(la$1$a),
         .b(la$1$b),
@@ -12072,7 +12507,7 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
         .y(la$1$y),
         .valid_out(la$1$valid_out)
     );
-    top$dop$doptrf$0$add_0 la$2(
+    top$tri_unit$tc_ab$aerr la$2(
         .clock(la$2$clock),
         .a(la$2$a),
         .b(la$2$b),
@@ -12081,7 +12516,7 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
         .y(la$2$y),
         .valid_out(la$2$valid_out)
     );
-    top$dop$doptrf$0$add_0 lb$0(
+    top$tri_unit$tc_ab$aerr lb$0(
         .clock(lb$0$clock),
         .a(lb$0$a),
         .b(lb$0$b),
@@ -12090,7 +12525,7 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
         .y(lb$0$y),
         .valid_out(lb$0$valid_out)
     );
-    top$dop$doptrf$0$add_0 lb$1(
+    top$tri_unit$tc_ab$aerr lb$1(
         .clock(lb$1$clock),
         .a(lb$1$a),
         .b(lb$1$b),
@@ -12099,7 +12534,7 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
         .y(lb$1$y),
         .valid_out(lb$1$valid_out)
     );
-    top$dop$doptrf$0$add_0 lb$2(
+    top$tri_unit$tc_ab$aerr lb$2(
         .clock(lb$2$clock),
         .a(lb$2$a),
         .b(lb$2$b),
@@ -12108,7 +12543,7 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
         .y(lb$2$y),
         .valid_out(lb$2$valid_out)
     );
-    top$dop$doptrf$0$add_0 l1$0(
+    top$tri_unit$tc_ab$aerr l1$0(
         .clock(l1$0$clock),
         .a(l1$0$a),
         .b(l1$0$b),
@@ -12117,7 +12552,7 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
         .y(l1$0$y),
         .valid_out(l1$0$valid_out)
     );
-    top$dop$doptrf$0$add_0 l1$1(
+    top$tri_unit$tc_ab$aerr l1$1(
         .clock(l1$1$clock),
         .a(l1$1$a),
         .b(l1$1$b),
@@ -12126,7 +12561,7 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
         .y(l1$1$y),
         .valid_out(l1$1$valid_out)
     );
-    top$dop$doptrf$0$add_0 l1$2(
+    top$tri_unit$tc_ab$aerr l1$2(
         .clock(l1$2$clock),
         .a(l1$2$a),
         .b(l1$2$b),
@@ -12150,7 +12585,7 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
         .d(l1_wait$2$d),
         .q(l1_wait$2$q)
     );
-    top$dop$doptrf$0$mul_0 err$0(
+    top$tri_unit$tc_ab$af err$0(
         .clock(err$0$clock),
         .a(err$0$a),
         .b(err$0$b),
@@ -12158,7 +12593,7 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
         .y(err$0$y),
         .valid_out(err$0$valid_out)
     );
-    top$dop$doptrf$0$mul_0 err$1(
+    top$tri_unit$tc_ab$af err$1(
         .clock(err$1$clock),
         .a(err$1$a),
         .b(err$1$b),
@@ -12166,7 +12601,7 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
         .y(err$1$y),
         .valid_out(err$1$valid_out)
     );
-    top$dop$doptrf$0$mul_0 err$2(
+    top$tri_unit$tc_ab$af err$2(
         .clock(err$2$clock),
         .a(err$2$a),
         .b(err$2$b),
@@ -12309,7 +12744,7 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
         .d(mg3_2$d),
         .q(mg3_2$q)
     );
-    top$dop$doptrf$0$add_0 m3_0$0(
+    top$tri_unit$tc_ab$aerr m3_0$0(
         .clock(m3_0$0$clock),
         .a(m3_0$0$a),
         .b(m3_0$0$b),
@@ -12318,7 +12753,7 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
         .y(m3_0$0$y),
         .valid_out(m3_0$0$valid_out)
     );
-    top$dop$doptrf$0$add_0 m3_0$1(
+    top$tri_unit$tc_ab$aerr m3_0$1(
         .clock(m3_0$1$clock),
         .a(m3_0$1$a),
         .b(m3_0$1$b),
@@ -12327,7 +12762,7 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
         .y(m3_0$1$y),
         .valid_out(m3_0$1$valid_out)
     );
-    top$dop$doptrf$0$add_0 m3_0$2(
+    top$tri_unit$tc_ab$aerr m3_0$2(
         .clock(m3_0$2$clock),
         .a(m3_0$2$a),
         .b(m3_0$2$b),
@@ -12336,7 +12771,7 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
         .y(m3_0$2$y),
         .valid_out(m3_0$2$valid_out)
     );
-    top$dop$doptrf$0$add_0 m3_1$0(
+    top$tri_unit$tc_ab$aerr m3_1$0(
         .clock(m3_1$0$clock),
         .a(m3_1$0$a),
         .b(m3_1$0$b),
@@ -12345,7 +12780,7 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
         .y(m3_1$0$y),
         .valid_out(m3_1$0$valid_out)
     );
-    top$dop$doptrf$0$add_0 m3_1$1(
+    top$tri_unit$tc_ab$aerr m3_1$1(
         .clock(m3_1$1$clock),
         .a(m3_1$1$a),
         .b(m3_1$1$b),
@@ -12354,7 +12789,7 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
         .y(m3_1$1$y),
         .valid_out(m3_1$1$valid_out)
     );
-    top$dop$doptrf$0$add_0 m3_1$2(
+    top$tri_unit$tc_ab$aerr m3_1$2(
         .clock(m3_1$2$clock),
         .a(m3_1$2$a),
         .b(m3_1$2$b),
@@ -12363,7 +12798,7 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
         .y(m3_1$2$y),
         .valid_out(m3_1$2$valid_out)
     );
-    top$dop$doptrf$0$add_0 m3_2$0(
+    top$tri_unit$tc_ab$aerr m3_2$0(
         .clock(m3_2$0$clock),
         .a(m3_2$0$a),
         .b(m3_2$0$b),
@@ -12372,7 +12807,7 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
         .y(m3_2$0$y),
         .valid_out(m3_2$0$valid_out)
     );
-    top$dop$doptrf$0$add_0 m3_2$1(
+    top$tri_unit$tc_ab$aerr m3_2$1(
         .clock(m3_2$1$clock),
         .a(m3_2$1$a),
         .b(m3_2$1$b),
@@ -12381,7 +12816,7 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
         .y(m3_2$1$y),
         .valid_out(m3_2$1$valid_out)
     );
-    top$dop$doptrf$0$add_0 m3_2$2(
+    top$tri_unit$tc_ab$aerr m3_2$2(
         .clock(m3_2$2$clock),
         .a(m3_2$2$a),
         .b(m3_2$2$b),
@@ -13864,6 +14299,411 @@ module top$tri_unit$tc_ab(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,
 endmodule // top$tri_unit$tc_ab
 
 
+module top$tri_unit$tc_ab$aerr(clock,a,b,sub,valid_in,y,valid_out);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [23:0] a;
+    input wire  [23:0] b;
+    input wire  sub;
+    input wire  valid_in;
+    output reg  [23:0] y;
+    output reg  valid_out;
+    
+    // Constant declarations
+    localparam  round_up = 1'b1;
+    localparam  c_align_cap = 8'h13;
+    localparam  c_exp_ones = 10'b11111111;
+    
+    // Stub signals
+    reg  [23:0] unpack_a$x;
+    wire  unpack_a$sign;
+    wire  [7:0] unpack_a$exp;
+    wire  [15:0] unpack_a$sig;
+    wire  unpack_a$is_zero;
+    wire  unpack_a$is_inf;
+    wire  unpack_a$is_nan;
+    reg  [23:0] unpack_b$x;
+    wire  unpack_b$sign;
+    wire  [7:0] unpack_b$exp;
+    wire  [15:0] unpack_b$sig;
+    wire  unpack_b$is_zero;
+    wire  unpack_b$is_inf;
+    wire  unpack_b$is_nan;
+    reg  s1_valid$d;
+    wire  s1_valid$q;
+    reg  s1_valid$clock;
+    reg  s1_nan$d;
+    wire  s1_nan$q;
+    reg  s1_nan$clock;
+    reg  s1_inf$d;
+    wire  s1_inf$q;
+    reg  s1_inf$clock;
+    reg  s1_inf_sign$d;
+    wire  s1_inf_sign$q;
+    reg  s1_inf_sign$clock;
+    reg  s1_zero_sign$d;
+    wire  s1_zero_sign$q;
+    reg  s1_zero_sign$clock;
+    reg  s1_sign$d;
+    wire  s1_sign$q;
+    reg  s1_sign$clock;
+    reg  s1_eff_sub$d;
+    wire  s1_eff_sub$q;
+    reg  s1_eff_sub$clock;
+    reg  [7:0] s1_exp$d;
+    wire  [7:0] s1_exp$q;
+    reg  s1_exp$clock;
+    reg  [18:0] s1_big$d;
+    wire  [18:0] s1_big$q;
+    reg  s1_big$clock;
+    reg  [18:0] s1_small$d;
+    wire  [18:0] s1_small$q;
+    reg  s1_small$clock;
+    reg  [18:0] norm$x;
+    wire  [18:0] norm$y;
+    wire  [4:0] norm$lz;
+    reg  s2_valid$d;
+    wire  s2_valid$q;
+    reg  s2_valid$clock;
+    reg  s2_sign$d;
+    wire  s2_sign$q;
+    reg  s2_sign$clock;
+    reg  s2_nan$d;
+    wire  s2_nan$q;
+    reg  s2_nan$clock;
+    reg  s2_inf$d;
+    wire  s2_inf$q;
+    reg  s2_inf$clock;
+    reg  s2_zero$d;
+    wire  s2_zero$q;
+    reg  s2_zero$clock;
+    reg  s2_ovf$d;
+    wire  s2_ovf$q;
+    reg  s2_ovf$clock;
+    reg  [7:0] s2_efield$d;
+    wire  [7:0] s2_efield$q;
+    reg  s2_efield$clock;
+    reg  [17:0] s2_nm$d;
+    wire  [17:0] s2_nm$q;
+    reg  s2_nm$clock;
+    reg  round$round_up;
+    reg  round$sign;
+    reg  round$nan;
+    reg  round$inf;
+    reg  round$zero;
+    reg  round$ovf;
+    reg  [7:0] round$efield;
+    reg  [17:0] round$nm;
+    wire  [23:0] round$y;
+    reg  s3_valid$d;
+    wire  s3_valid$q;
+    reg  s3_valid$clock;
+    reg  [23:0] s3_y$d;
+    wire  [23:0] s3_y$q;
+    reg  s3_y$clock;
+    
+    // Local signals
+    reg  c1_b_sign;
+    reg  c1_swap;
+    reg  c1_big_sign;
+    reg  [7:0] c1_big_exp;
+    reg  [15:0] c1_big_sig;
+    reg  c1_small_sign;
+    reg  [7:0] c1_small_exp;
+    reg  [15:0] c1_small_sig;
+    reg  [7:0] c1_diff;
+    reg  [7:0] c1_shift;
+    reg  [18:0] c1_small_ext;
+    reg  [18:0] c1_aligned;
+    reg  [18:0] c1_back;
+    reg  c1_lost;
+    reg  c1_inf_sign;
+    reg  [19:0] c2_sum;
+    reg  c2_carry;
+    reg  c2_zero;
+    reg  [7:0] c2_limit;
+    reg  [7:0] c2_lz;
+    reg  [7:0] c2_shift;
+    reg  [18:0] c2_shifted;
+    reg  [9:0] c2_exp;
+    reg  [17:0] c2_nm;
+    reg  c2_sign;
+    
+    // Sub module instances
+    top$dop$doptrf$0$add_0$unpack_a unpack_a(
+        .x(unpack_a$x),
+        .sign(unpack_a$sign),
+        .exp(unpack_a$exp),
+        .sig(unpack_a$sig),
+        .is_zero(unpack_a$is_zero),
+        .is_inf(unpack_a$is_inf),
+        .is_nan(unpack_a$is_nan)
+    );
+    top$dop$doptrf$0$add_0$unpack_a unpack_b(
+        .x(unpack_b$x),
+        .sign(unpack_b$sign),
+        .exp(unpack_b$exp),
+        .sig(unpack_b$sig),
+        .is_zero(unpack_b$is_zero),
+        .is_inf(unpack_b$is_inf),
+        .is_nan(unpack_b$is_nan)
+    );
+    top$cnt_dop$pending s1_valid(
+        .d(s1_valid$d),
+        .q(s1_valid$q),
+        .clock(s1_valid$clock)
+    );
+    top$cnt_dop$pending s1_nan(
+        .d(s1_nan$d),
+        .q(s1_nan$q),
+        .clock(s1_nan$clock)
+    );
+    top$cnt_dop$pending s1_inf(
+        .d(s1_inf$d),
+        .q(s1_inf$q),
+        .clock(s1_inf$clock)
+    );
+    top$cnt_dop$pending s1_inf_sign(
+        .d(s1_inf_sign$d),
+        .q(s1_inf_sign$q),
+        .clock(s1_inf_sign$clock)
+    );
+    top$cnt_dop$pending s1_zero_sign(
+        .d(s1_zero_sign$d),
+        .q(s1_zero_sign$q),
+        .clock(s1_zero_sign$clock)
+    );
+    top$cnt_dop$pending s1_sign(
+        .d(s1_sign$d),
+        .q(s1_sign$q),
+        .clock(s1_sign$clock)
+    );
+    top$cnt_dop$pending s1_eff_sub(
+        .d(s1_eff_sub$d),
+        .q(s1_eff_sub$q),
+        .clock(s1_eff_sub$clock)
+    );
+    top$dop$doptrf$0$add_0$s1_exp s1_exp(
+        .d(s1_exp$d),
+        .q(s1_exp$q),
+        .clock(s1_exp$clock)
+    );
+    top$dop$doptrf$0$add_0$s1_big s1_big(
+        .d(s1_big$d),
+        .q(s1_big$q),
+        .clock(s1_big$clock)
+    );
+    top$dop$doptrf$0$add_0$s1_big s1_small(
+        .d(s1_small$d),
+        .q(s1_small$q),
+        .clock(s1_small$clock)
+    );
+    top$dop$doptrf$0$add_0$norm norm(
+        .x(norm$x),
+        .y(norm$y),
+        .lz(norm$lz)
+    );
+    top$cnt_dop$pending s2_valid(
+        .d(s2_valid$d),
+        .q(s2_valid$q),
+        .clock(s2_valid$clock)
+    );
+    top$cnt_dop$pending s2_sign(
+        .d(s2_sign$d),
+        .q(s2_sign$q),
+        .clock(s2_sign$clock)
+    );
+    top$cnt_dop$pending s2_nan(
+        .d(s2_nan$d),
+        .q(s2_nan$q),
+        .clock(s2_nan$clock)
+    );
+    top$cnt_dop$pending s2_inf(
+        .d(s2_inf$d),
+        .q(s2_inf$q),
+        .clock(s2_inf$clock)
+    );
+    top$cnt_dop$pending s2_zero(
+        .d(s2_zero$d),
+        .q(s2_zero$q),
+        .clock(s2_zero$clock)
+    );
+    top$cnt_dop$pending s2_ovf(
+        .d(s2_ovf$d),
+        .q(s2_ovf$q),
+        .clock(s2_ovf$clock)
+    );
+    top$dop$doptrf$0$add_0$s1_exp s2_efield(
+        .d(s2_efield$d),
+        .q(s2_efield$q),
+        .clock(s2_efield$clock)
+    );
+    top$dop$doptrf$0$add_0$s2_nm s2_nm(
+        .d(s2_nm$d),
+        .q(s2_nm$q),
+        .clock(s2_nm$clock)
+    );
+    top$dop$doptrf$0$add_0$round round(
+        .round_up(round$round_up),
+        .sign(round$sign),
+        .nan(round$nan),
+        .inf(round$inf),
+        .zero(round$zero),
+        .ovf(round$ovf),
+        .efield(round$efield),
+        .nm(round$nm),
+        .y(round$y)
+    );
+    top$cnt_dop$pending s3_valid(
+        .d(s3_valid$d),
+        .q(s3_valid$q),
+        .clock(s3_valid$clock)
+    );
+    top$base_na s3_y(
+        .d(s3_y$d),
+        .q(s3_y$q),
+        .clock(s3_y$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        s1_valid$clock = clock;
+        s1_nan$clock = clock;
+        s1_inf$clock = clock;
+        s1_inf_sign$clock = clock;
+        s1_zero_sign$clock = clock;
+        s1_sign$clock = clock;
+        s1_eff_sub$clock = clock;
+        s1_exp$clock = clock;
+        s1_big$clock = clock;
+        s1_small$clock = clock;
+        s1_valid$d = s1_valid$q;
+        s1_nan$d = s1_nan$q;
+        s1_inf$d = s1_inf$q;
+        s1_inf_sign$d = s1_inf_sign$q;
+        s1_zero_sign$d = s1_zero_sign$q;
+        s1_sign$d = s1_sign$q;
+        s1_eff_sub$d = s1_eff_sub$q;
+        s1_exp$d = s1_exp$q;
+        s1_big$d = s1_big$q;
+        s1_small$d = s1_small$q;
+        s2_valid$clock = clock;
+        s2_sign$clock = clock;
+        s2_nan$clock = clock;
+        s2_inf$clock = clock;
+        s2_zero$clock = clock;
+        s2_ovf$clock = clock;
+        s2_efield$clock = clock;
+        s2_nm$clock = clock;
+        s2_valid$d = s2_valid$q;
+        s2_sign$d = s2_sign$q;
+        s2_nan$d = s2_nan$q;
+        s2_inf$d = s2_inf$q;
+        s2_zero$d = s2_zero$q;
+        s2_ovf$d = s2_ovf$q;
+        s2_efield$d = s2_efield$q;
+        s2_nm$d = s2_nm$q;
+        s3_valid$clock = clock;
+        s3_y$clock = clock;
+        s3_valid$d = s3_valid$q;
+        s3_y$d = s3_y$q;
+        unpack_a$x = a;
+        unpack_b$x = b;
+        c1_b_sign = unpack_b$sign ^ sub;
+        c1_swap = a[(32'h0)+:(23)] < b[(32'h0)+:(23)];
+        c1_big_sign = unpack_a$sign;
+        c1_big_exp = unpack_a$exp;
+        c1_big_sig = unpack_a$sig;
+        c1_small_sign = c1_b_sign;
+        c1_small_exp = unpack_b$exp;
+        c1_small_sig = unpack_b$sig;
+        if (c1_swap) begin
+            c1_big_sign = c1_b_sign;
+            c1_big_exp = unpack_b$exp;
+            c1_big_sig = unpack_b$sig;
+            c1_small_sign = unpack_a$sign;
+            c1_small_exp = unpack_a$exp;
+            c1_small_sig = unpack_a$sig;
+        end
+        c1_diff = c1_big_exp - c1_small_exp;
+        c1_shift = c1_diff;
+        if (c1_diff > c_align_cap) begin
+            c1_shift = c_align_cap;
+        end
+        c1_small_ext = ((c1_small_sig) & 19'h7ffff) << 32'h3;
+        c1_aligned = c1_small_ext >> c1_shift;
+        c1_back = c1_aligned << c1_shift;
+        c1_lost = c1_back != c1_small_ext;
+        c1_inf_sign = c1_b_sign;
+        if (unpack_a$is_inf) begin
+            c1_inf_sign = unpack_a$sign;
+        end
+        s1_valid$d = valid_in;
+        s1_nan$d = unpack_a$is_nan | unpack_b$is_nan | (unpack_a$is_inf & unpack_b$is_inf & (unpack_a$sign ^ c1_b_sign));
+        s1_inf$d = unpack_a$is_inf | unpack_b$is_inf;
+        s1_inf_sign$d = c1_inf_sign;
+        s1_zero_sign$d = unpack_a$sign & c1_b_sign;
+        s1_sign$d = c1_big_sign;
+        s1_eff_sub$d = c1_big_sign ^ c1_small_sign;
+        s1_exp$d = c1_big_exp;
+        s1_big$d = ((c1_big_sig) & 19'h7ffff) << 32'h3;
+        s1_small$d = (c1_aligned & ~(1 << (32'h0)) | ((c1_aligned[32'h0] | c1_lost) << (32'h0)));
+        c2_sum = ((s1_big$q) & 20'hfffff) + ((s1_small$q) & 20'hfffff);
+        if (s1_eff_sub$q) begin
+            c2_sum = ((s1_big$q) & 20'hfffff) - ((s1_small$q) & 20'hfffff);
+        end
+        c2_carry = c2_sum[32'h13];
+        c2_zero = c2_sum == 32'h0;
+        norm$x = c2_sum[(32'h0)+:(19)];
+        c2_limit = s1_exp$q - 32'h1;
+        c2_lz = ((norm$lz) & 8'hff);
+        c2_shift = c2_lz;
+        if (c2_lz > c2_limit) begin
+            c2_shift = c2_limit;
+        end
+        c2_shifted = c2_sum[(32'h0)+:(19)] << c2_shift;
+        c2_exp = ((s1_exp$q) & 10'h3ff) - ((c2_shift) & 10'h3ff);
+        c2_nm = (((c2_shifted >> 32'h1) & 18'h3ffff) & ~(1 << (32'h0)) | ((c2_shifted[32'h1] | c2_shifted[32'h0]) << (32'h0)));
+        if (c2_carry) begin
+            c2_exp = ((s1_exp$q) & 10'h3ff) + 32'h1;
+            c2_nm = (((c2_sum >> 32'h2) & 18'h3ffff) & ~(1 << (32'h0)) | ((c2_sum[32'h2] | c2_sum[32'h1] | c2_sum[32'h0]) << (32'h0)));
+        end
+        c2_sign = s1_sign$q;
+        if (c2_zero) begin
+            c2_sign = s1_zero_sign$q;
+        end
+        if (s1_inf$q) begin
+            c2_sign = s1_inf_sign$q;
+        end
+        s2_valid$d = s1_valid$q;
+        s2_sign$d = c2_sign;
+        s2_nan$d = s1_nan$q;
+        s2_inf$d = s1_inf$q;
+        s2_zero$d = c2_zero;
+        s2_ovf$d = c2_exp >= c_exp_ones;
+        s2_efield$d = 32'h0;
+        if (c2_nm[32'h10 + 32'h1]) begin
+            s2_efield$d = ((c2_exp) & 8'hff);
+        end
+        s2_nm$d = c2_nm;
+        round$round_up = round_up;
+        round$sign = s2_sign$q;
+        round$nan = s2_nan$q;
+        round$inf = s2_inf$q;
+        round$zero = s2_zero$q;
+        round$ovf = s2_ovf$q;
+        round$efield = s2_efield$q;
+        round$nm = s2_nm$q;
+        s3_valid$d = s2_valid$q;
+        s3_y$d = round$y;
+        y = s3_y$q;
+        valid_out = s3_valid$q;
+    end
+    
+endmodule // top$tri_unit$tc_ab$aerr
+
+
 module top$tri_unit$tc_ab$aerr_wait(clock,d,q);
     
     // Module arguments
@@ -13891,6 +14731,449 @@ module top$tri_unit$tc_ab$aerr_wait(clock,d,q);
     end
     
 endmodule // top$tri_unit$tc_ab$aerr_wait
+
+
+module top$tri_unit$tc_ab$af(clock,a,b,valid_in,y,valid_out);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [23:0] a;
+    input wire  [23:0] b;
+    input wire  valid_in;
+    output reg  [23:0] y;
+    output reg  valid_out;
+    
+    // Constant declarations
+    localparam  round_up = 1'b1;
+    localparam  c_exp_adj = 10'b10000001;
+    localparam  c_exp_ofs = 10'b100000000;
+    localparam  c_exp_norm_min = 10'b100000001;
+    localparam  c_exp_ovf = 10'b111111111;
+    localparam  c_shift_cap = 10'b10010;
+    
+    // Stub signals
+    reg  [23:0] unpack_a$x;
+    wire  unpack_a$sign;
+    wire  [7:0] unpack_a$exp;
+    wire  [15:0] unpack_a$sig;
+    wire  unpack_a$is_zero;
+    wire  unpack_a$is_inf;
+    wire  unpack_a$is_nan;
+    reg  [23:0] unpack_b$x;
+    wire  unpack_b$sign;
+    wire  [7:0] unpack_b$exp;
+    wire  [15:0] unpack_b$sig;
+    wire  unpack_b$is_zero;
+    wire  unpack_b$is_inf;
+    wire  unpack_b$is_nan;
+    reg  [15:0] norm_a$x;
+    wire  [15:0] norm_a$y;
+    wire  [4:0] norm_a$lz;
+    reg  [15:0] norm_b$x;
+    wire  [15:0] norm_b$y;
+    wire  [4:0] norm_b$lz;
+    reg  s1_valid$d;
+    wire  s1_valid$q;
+    reg  s1_valid$clock;
+    reg  s1_sign$d;
+    wire  s1_sign$q;
+    reg  s1_sign$clock;
+    reg  s1_nan$d;
+    wire  s1_nan$q;
+    reg  s1_nan$clock;
+    reg  s1_inf$d;
+    wire  s1_inf$q;
+    reg  s1_inf$clock;
+    reg  s1_zero$d;
+    wire  s1_zero$q;
+    reg  s1_zero$clock;
+    reg  [9:0] s1_exp$d;
+    wire  [9:0] s1_exp$q;
+    reg  s1_exp$clock;
+    reg  [15:0] s1_sig_a$d;
+    wire  [15:0] s1_sig_a$q;
+    reg  s1_sig_a$clock;
+    reg  [15:0] s1_sig_b$d;
+    wire  [15:0] s1_sig_b$q;
+    reg  s1_sig_b$clock;
+    reg  [15:0] sig_mul$a;
+    reg  [15:0] sig_mul$b;
+    wire  [17:0] sig_mul$hi;
+    wire  sig_mul$sticky;
+    reg  s2_valid$d;
+    wire  s2_valid$q;
+    reg  s2_valid$clock;
+    reg  s2_sign$d;
+    wire  s2_sign$q;
+    reg  s2_sign$clock;
+    reg  s2_nan$d;
+    wire  s2_nan$q;
+    reg  s2_nan$clock;
+    reg  s2_inf$d;
+    wire  s2_inf$q;
+    reg  s2_inf$clock;
+    reg  s2_zero$d;
+    wire  s2_zero$q;
+    reg  s2_zero$clock;
+    reg  [9:0] s2_exp$d;
+    wire  [9:0] s2_exp$q;
+    reg  s2_exp$clock;
+    reg  [17:0] s2_hi$d;
+    wire  [17:0] s2_hi$q;
+    reg  s2_hi$clock;
+    reg  s2_sticky$d;
+    wire  s2_sticky$q;
+    reg  s2_sticky$clock;
+    reg  s3_valid$d;
+    wire  s3_valid$q;
+    reg  s3_valid$clock;
+    reg  s3_sign$d;
+    wire  s3_sign$q;
+    reg  s3_sign$clock;
+    reg  s3_nan$d;
+    wire  s3_nan$q;
+    reg  s3_nan$clock;
+    reg  s3_inf$d;
+    wire  s3_inf$q;
+    reg  s3_inf$clock;
+    reg  s3_zero$d;
+    wire  s3_zero$q;
+    reg  s3_zero$clock;
+    reg  s3_ovf$d;
+    wire  s3_ovf$q;
+    reg  s3_ovf$clock;
+    reg  [7:0] s3_efield$d;
+    wire  [7:0] s3_efield$q;
+    reg  s3_efield$clock;
+    reg  [17:0] s3_nm$d;
+    wire  [17:0] s3_nm$q;
+    reg  s3_nm$clock;
+    reg  round$round_up;
+    reg  round$sign;
+    reg  round$nan;
+    reg  round$inf;
+    reg  round$zero;
+    reg  round$ovf;
+    reg  [7:0] round$efield;
+    reg  [17:0] round$nm;
+    wire  [23:0] round$y;
+    reg  s4_valid$d;
+    wire  s4_valid$q;
+    reg  s4_valid$clock;
+    reg  [23:0] s4_y$d;
+    wire  [23:0] s4_y$q;
+    reg  s4_y$clock;
+    
+    // Local signals
+    reg  [9:0] c1_exp;
+    reg  c3_top;
+    reg  [17:0] c3_nm;
+    reg  [9:0] c3_exp;
+    reg  [9:0] c3_shift;
+    reg  [9:0] c3_shift_cap;
+    reg  [17:0] c3_shifted;
+    reg  [17:0] c3_back;
+    reg  c3_lost;
+    reg  [7:0] c3_efield;
+    
+    // Sub module instances
+    top$dop$doptrf$0$add_0$unpack_a unpack_a(
+        .x(unpack_a$x),
+        .sign(unpack_a$sign),
+        .exp(unpack_a$exp),
+        .sig(unpack_a$sig),
+        .is_zero(unpack_a$is_zero),
+        .is_inf(unpack_a$is_inf),
+        .is_nan(unpack_a$is_nan)
+    );
+    top$dop$doptrf$0$add_0$unpack_a unpack_b(
+        .x(unpack_b$x),
+        .sign(unpack_b$sign),
+        .exp(unpack_b$exp),
+        .sig(unpack_b$sig),
+        .is_zero(unpack_b$is_zero),
+        .is_inf(unpack_b$is_inf),
+        .is_nan(unpack_b$is_nan)
+    );
+    top$dop$doptrf$0$mul_0$norm_a norm_a(
+        .x(norm_a$x),
+        .y(norm_a$y),
+        .lz(norm_a$lz)
+    );
+    top$dop$doptrf$0$mul_0$norm_a norm_b(
+        .x(norm_b$x),
+        .y(norm_b$y),
+        .lz(norm_b$lz)
+    );
+    top$cnt_dop$pending s1_valid(
+        .d(s1_valid$d),
+        .q(s1_valid$q),
+        .clock(s1_valid$clock)
+    );
+    top$cnt_dop$pending s1_sign(
+        .d(s1_sign$d),
+        .q(s1_sign$q),
+        .clock(s1_sign$clock)
+    );
+    top$cnt_dop$pending s1_nan(
+        .d(s1_nan$d),
+        .q(s1_nan$q),
+        .clock(s1_nan$clock)
+    );
+    top$cnt_dop$pending s1_inf(
+        .d(s1_inf$d),
+        .q(s1_inf$q),
+        .clock(s1_inf$clock)
+    );
+    top$cnt_dop$pending s1_zero(
+        .d(s1_zero$d),
+        .q(s1_zero$q),
+        .clock(s1_zero$clock)
+    );
+    top$d_cntr$queue$rd_ptr s1_exp(
+        .d(s1_exp$d),
+        .q(s1_exp$q),
+        .clock(s1_exp$clock)
+    );
+    top$d_cntr$last_a s1_sig_a(
+        .d(s1_sig_a$d),
+        .q(s1_sig_a$q),
+        .clock(s1_sig_a$clock)
+    );
+    top$d_cntr$last_a s1_sig_b(
+        .d(s1_sig_b$d),
+        .q(s1_sig_b$q),
+        .clock(s1_sig_b$clock)
+    );
+    top$dop$doptrf$0$mul_0$sig_mul sig_mul(
+        .a(sig_mul$a),
+        .b(sig_mul$b),
+        .hi(sig_mul$hi),
+        .sticky(sig_mul$sticky)
+    );
+    top$cnt_dop$pending s2_valid(
+        .d(s2_valid$d),
+        .q(s2_valid$q),
+        .clock(s2_valid$clock)
+    );
+    top$cnt_dop$pending s2_sign(
+        .d(s2_sign$d),
+        .q(s2_sign$q),
+        .clock(s2_sign$clock)
+    );
+    top$cnt_dop$pending s2_nan(
+        .d(s2_nan$d),
+        .q(s2_nan$q),
+        .clock(s2_nan$clock)
+    );
+    top$cnt_dop$pending s2_inf(
+        .d(s2_inf$d),
+        .q(s2_inf$q),
+        .clock(s2_inf$clock)
+    );
+    top$cnt_dop$pending s2_zero(
+        .d(s2_zero$d),
+        .q(s2_zero$q),
+        .clock(s2_zero$clock)
+    );
+    top$d_cntr$queue$rd_ptr s2_exp(
+        .d(s2_exp$d),
+        .q(s2_exp$q),
+        .clock(s2_exp$clock)
+    );
+    top$dop$doptrf$0$add_0$s2_nm s2_hi(
+        .d(s2_hi$d),
+        .q(s2_hi$q),
+        .clock(s2_hi$clock)
+    );
+    top$cnt_dop$pending s2_sticky(
+        .d(s2_sticky$d),
+        .q(s2_sticky$q),
+        .clock(s2_sticky$clock)
+    );
+    top$cnt_dop$pending s3_valid(
+        .d(s3_valid$d),
+        .q(s3_valid$q),
+        .clock(s3_valid$clock)
+    );
+    top$cnt_dop$pending s3_sign(
+        .d(s3_sign$d),
+        .q(s3_sign$q),
+        .clock(s3_sign$clock)
+    );
+    top$cnt_dop$pending s3_nan(
+        .d(s3_nan$d),
+        .q(s3_nan$q),
+        .clock(s3_nan$clock)
+    );
+    top$cnt_dop$pending s3_inf(
+        .d(s3_inf$d),
+        .q(s3_inf$q),
+        .clock(s3_inf$clock)
+    );
+    top$cnt_dop$pending s3_zero(
+        .d(s3_zero$d),
+        .q(s3_zero$q),
+        .clock(s3_zero$clock)
+    );
+    top$cnt_dop$pending s3_ovf(
+        .d(s3_ovf$d),
+        .q(s3_ovf$q),
+        .clock(s3_ovf$clock)
+    );
+    top$dop$doptrf$0$add_0$s1_exp s3_efield(
+        .d(s3_efield$d),
+        .q(s3_efield$q),
+        .clock(s3_efield$clock)
+    );
+    top$dop$doptrf$0$add_0$s2_nm s3_nm(
+        .d(s3_nm$d),
+        .q(s3_nm$q),
+        .clock(s3_nm$clock)
+    );
+    top$dop$doptrf$0$add_0$round round(
+        .round_up(round$round_up),
+        .sign(round$sign),
+        .nan(round$nan),
+        .inf(round$inf),
+        .zero(round$zero),
+        .ovf(round$ovf),
+        .efield(round$efield),
+        .nm(round$nm),
+        .y(round$y)
+    );
+    top$cnt_dop$pending s4_valid(
+        .d(s4_valid$d),
+        .q(s4_valid$q),
+        .clock(s4_valid$clock)
+    );
+    top$base_na s4_y(
+        .d(s4_y$d),
+        .q(s4_y$q),
+        .clock(s4_y$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        s1_valid$clock = clock;
+        s1_sign$clock = clock;
+        s1_nan$clock = clock;
+        s1_inf$clock = clock;
+        s1_zero$clock = clock;
+        s1_exp$clock = clock;
+        s1_sig_a$clock = clock;
+        s1_sig_b$clock = clock;
+        s1_valid$d = s1_valid$q;
+        s1_sign$d = s1_sign$q;
+        s1_nan$d = s1_nan$q;
+        s1_inf$d = s1_inf$q;
+        s1_zero$d = s1_zero$q;
+        s1_exp$d = s1_exp$q;
+        s1_sig_a$d = s1_sig_a$q;
+        s1_sig_b$d = s1_sig_b$q;
+        s2_valid$clock = clock;
+        s2_sign$clock = clock;
+        s2_nan$clock = clock;
+        s2_inf$clock = clock;
+        s2_zero$clock = clock;
+        s2_exp$clock = clock;
+        s2_hi$clock = clock;
+        s2_sticky$clock = clock;
+        s2_valid$d = s2_valid$q;
+        s2_sign$d = s2_sign$q;
+        s2_nan$d = s2_nan$q;
+        s2_inf$d = s2_inf$q;
+        s2_zero$d = s2_zero$q;
+        s2_exp$d = s2_exp$q;
+        s2_hi$d = s2_hi$q;
+        s2_sticky$d = s2_sticky$q;
+        s3_valid$clock = clock;
+        s3_sign$clock = clock;
+        s3_nan$clock = clock;
+        s3_inf$clock = clock;
+        s3_zero$clock = clock;
+        s3_ovf$clock = clock;
+        s3_efield$clock = clock;
+        s3_nm$clock = clock;
+        s3_valid$d = s3_valid$q;
+        s3_sign$d = s3_sign$q;
+        s3_nan$d = s3_nan$q;
+        s3_inf$d = s3_inf$q;
+        s3_zero$d = s3_zero$q;
+        s3_ovf$d = s3_ovf$q;
+        s3_efield$d = s3_efield$q;
+        s3_nm$d = s3_nm$q;
+        s4_valid$clock = clock;
+        s4_y$clock = clock;
+        s4_valid$d = s4_valid$q;
+        s4_y$d = s4_y$q;
+        unpack_a$x = a;
+        unpack_b$x = b;
+        norm_a$x = unpack_a$sig;
+        norm_b$x = unpack_b$sig;
+        c1_exp = ((unpack_a$exp) & 10'h3ff) + ((unpack_b$exp) & 10'h3ff) - ((norm_a$lz) & 10'h3ff) - ((norm_b$lz) & 10'h3ff) + c_exp_adj;
+        s1_valid$d = valid_in;
+        s1_sign$d = unpack_a$sign ^ unpack_b$sign;
+        s1_nan$d = unpack_a$is_nan | unpack_b$is_nan | (unpack_a$is_inf & unpack_b$is_zero) | (unpack_a$is_zero & unpack_b$is_inf);
+        s1_inf$d = unpack_a$is_inf | unpack_b$is_inf;
+        s1_zero$d = unpack_a$is_zero | unpack_b$is_zero;
+        s1_exp$d = c1_exp;
+        s1_sig_a$d = norm_a$y;
+        s1_sig_b$d = norm_b$y;
+        sig_mul$a = s1_sig_a$q;
+        sig_mul$b = s1_sig_b$q;
+        s2_valid$d = s1_valid$q;
+        s2_sign$d = s1_sign$q;
+        s2_nan$d = s1_nan$q;
+        s2_inf$d = s1_inf$q;
+        s2_zero$d = s1_zero$q;
+        s2_exp$d = s1_exp$q;
+        s2_hi$d = sig_mul$hi;
+        s2_sticky$d = sig_mul$sticky;
+        c3_top = s2_hi$q[32'h10 + 32'h1];
+        c3_nm = ((s2_hi$q << 32'h1) & ~(1 << (32'h0)) | ((s2_sticky$q) << (32'h0)));
+        if (c3_top) begin
+            c3_nm = (s2_hi$q & ~(1 << (32'h0)) | ((s2_hi$q[32'h0] | s2_sticky$q) << (32'h0)));
+        end
+        c3_exp = s2_exp$q + c3_top;
+        c3_shift = 32'h0;
+        if (c3_exp < c_exp_norm_min) begin
+            c3_shift = c_exp_norm_min - c3_exp;
+        end
+        c3_shift_cap = c3_shift;
+        if (c3_shift > c_shift_cap) begin
+            c3_shift_cap = c_shift_cap;
+        end
+        c3_shifted = c3_nm >> c3_shift_cap;
+        c3_back = c3_shifted << c3_shift_cap;
+        c3_lost = c3_back != c3_nm;
+        c3_efield = 32'h0;
+        if (c3_shift == 32'h0) begin
+            c3_efield = ((c3_exp - c_exp_ofs) & 8'hff);
+        end
+        s3_valid$d = s2_valid$q;
+        s3_sign$d = s2_sign$q;
+        s3_nan$d = s2_nan$q;
+        s3_inf$d = s2_inf$q;
+        s3_zero$d = s2_zero$q;
+        s3_ovf$d = c3_exp >= c_exp_ovf;
+        s3_efield$d = c3_efield;
+        s3_nm$d = (c3_shifted & ~(1 << (32'h0)) | ((c3_shifted[32'h0] | c3_lost) << (32'h0)));
+        round$round_up = round_up;
+        round$sign = s3_sign$q;
+        round$nan = s3_nan$q;
+        round$inf = s3_inf$q;
+        round$zero = s3_zero$q;
+        round$ovf = s3_ovf$q;
+        round$efield = s3_efield$q;
+        round$nm = s3_nm$q;
+        s4_valid$d = s3_valid$q;
+        s4_y$d = round$y;
+        y = s4_y$q;
+        valid_out = s4_valid$q;
+    end
+    
+endmodule // top$tri_unit$tc_ab$af
 
 
 module top$tri_unit$tc_ab$c3_0(clock,d,q);
@@ -14436,7 +15719,7 @@ module top$tri_unit$tc_ab$edges$0(clock,p0,p1,p2,q0,q1,q2,pe,qe,pg,qg,pf0,pf1,pf
         .d(q1_wait$d),
         .q(q1_wait$q)
     );
-    top$dop$doptrf$0$mul_0 ta$0(
+    top$tri_unit$tc_ab$af ta$0(
         .clock(ta$0$clock),
         .a(ta$0$a),
         .b(ta$0$b),
@@ -14444,7 +15727,7 @@ module top$tri_unit$tc_ab$edges$0(clock,p0,p1,p2,q0,q1,q2,pe,qe,pg,qg,pf0,pf1,pf
         .y(ta$0$y),
         .valid_out(ta$0$valid_out)
     );
-    top$dop$doptrf$0$mul_0 ta$1(
+    top$tri_unit$tc_ab$af ta$1(
         .clock(ta$1$clock),
         .a(ta$1$a),
         .b(ta$1$b),
@@ -14452,7 +15735,7 @@ module top$tri_unit$tc_ab$edges$0(clock,p0,p1,p2,q0,q1,q2,pe,qe,pg,qg,pf0,pf1,pf
         .y(ta$1$y),
         .valid_out(ta$1$valid_out)
     );
-    top$dop$doptrf$0$mul_0 ta$2(
+    top$tri_unit$tc_ab$af ta$2(
         .clock(ta$2$clock),
         .a(ta$2$a),
         .b(ta$2$b),
@@ -14460,7 +15743,7 @@ module top$tri_unit$tc_ab$edges$0(clock,p0,p1,p2,q0,q1,q2,pe,qe,pg,qg,pf0,pf1,pf
         .y(ta$2$y),
         .valid_out(ta$2$valid_out)
     );
-    top$dop$doptrf$0$mul_0 ta$3(
+    top$tri_unit$tc_ab$af ta$3(
         .clock(ta$3$clock),
         .a(ta$3$a),
         .b(ta$3$b),
@@ -14468,7 +15751,7 @@ module top$tri_unit$tc_ab$edges$0(clock,p0,p1,p2,q0,q1,q2,pe,qe,pg,qg,pf0,pf1,pf
         .y(ta$3$y),
         .valid_out(ta$3$valid_out)
     );
-    top$dop$doptrf$0$mul_0 tb$0(
+    top$tri_unit$tc_ab$af tb$0(
         .clock(tb$0$clock),
         .a(tb$0$a),
         .b(tb$0$b),
@@ -14476,7 +15759,7 @@ module top$tri_unit$tc_ab$edges$0(clock,p0,p1,p2,q0,q1,q2,pe,qe,pg,qg,pf0,pf1,pf
         .y(tb$0$y),
         .valid_out(tb$0$valid_out)
     );
-    top$dop$doptrf$0$mul_0 tb$1(
+    top$tri_unit$tc_ab$af tb$1(
         .clock(tb$1$clock),
         .a(tb$1$a),
         .b(tb$1$b),
@@ -14484,7 +15767,7 @@ module top$tri_unit$tc_ab$edges$0(clock,p0,p1,p2,q0,q1,q2,pe,qe,pg,qg,pf0,pf1,pf
         .y(tb$1$y),
         .valid_out(tb$1$valid_out)
     );
-    top$dop$doptrf$0$mul_0 tb$2(
+    top$tri_unit$tc_ab$af tb$2(
         .clock(tb$2$clock),
         .a(tb$2$a),
         .b(tb$2$b),
@@ -14492,7 +15775,7 @@ module top$tri_unit$tc_ab$edges$0(clock,p0,p1,p2,q0,q1,q2,pe,qe,pg,qg,pf0,pf1,pf
         .y(tb$2$y),
         .valid_out(tb$2$valid_out)
     );
-    top$dop$doptrf$0$mul_0 tb$3(
+    top$tri_unit$tc_ab$af tb$3(
         .clock(tb$3$clock),
         .a(tb$3$a),
         .b(tb$3$b),
@@ -14520,7 +15803,7 @@ module top$tri_unit$tc_ab$edges$0(clock,p0,p1,p2,q0,q1,q2,pe,qe,pg,qg,pf0,pf1,pf
         .d(tb_wait$1$d),
         .q(tb_wait$1$q)
     );
-    top$dop$doptrf$0$add_0 sa$0(
+    top$tri_unit$tc_ab$aerr sa$0(
         .clock(sa$0$clock),
         .a(sa$0$a),
         .b(sa$0$b),
@@ -14529,7 +15812,7 @@ module top$tri_unit$tc_ab$edges$0(clock,p0,p1,p2,q0,q1,q2,pe,qe,pg,qg,pf0,pf1,pf
         .y(sa$0$y),
         .valid_out(sa$0$valid_out)
     );
-    top$dop$doptrf$0$add_0 sa$1(
+    top$tri_unit$tc_ab$aerr sa$1(
         .clock(sa$1$clock),
         .a(sa$1$a),
         .b(sa$1$b),
@@ -14538,7 +15821,7 @@ module top$tri_unit$tc_ab$edges$0(clock,p0,p1,p2,q0,q1,q2,pe,qe,pg,qg,pf0,pf1,pf
         .y(sa$1$y),
         .valid_out(sa$1$valid_out)
     );
-    top$dop$doptrf$0$add_0 sb$0(
+    top$tri_unit$tc_ab$aerr sb$0(
         .clock(sb$0$clock),
         .a(sb$0$a),
         .b(sb$0$b),
@@ -14547,7 +15830,7 @@ module top$tri_unit$tc_ab$edges$0(clock,p0,p1,p2,q0,q1,q2,pe,qe,pg,qg,pf0,pf1,pf
         .y(sb$0$y),
         .valid_out(sb$0$valid_out)
     );
-    top$dop$doptrf$0$add_0 sb$1(
+    top$tri_unit$tc_ab$aerr sb$1(
         .clock(sb$1$clock),
         .a(sb$1$a),
         .b(sb$1$b),
@@ -14556,7 +15839,7 @@ module top$tri_unit$tc_ab$edges$0(clock,p0,p1,p2,q0,q1,q2,pe,qe,pg,qg,pf0,pf1,pf
         .y(sb$1$y),
         .valid_out(sb$1$valid_out)
     );
-    top$dop$doptrf$0$add_0 ba(
+    top$tri_unit$tc_ab$aerr ba(
         .clock(ba$clock),
         .a(ba$a),
         .b(ba$b),
@@ -14565,7 +15848,7 @@ module top$tri_unit$tc_ab$edges$0(clock,p0,p1,p2,q0,q1,q2,pe,qe,pg,qg,pf0,pf1,pf
         .y(ba$y),
         .valid_out(ba$valid_out)
     );
-    top$dop$doptrf$0$add_0 bb(
+    top$tri_unit$tc_ab$aerr bb(
         .clock(bb$clock),
         .a(bb$a),
         .b(bb$b),
@@ -14574,7 +15857,7 @@ module top$tri_unit$tc_ab$edges$0(clock,p0,p1,p2,q0,q1,q2,pe,qe,pg,qg,pf0,pf1,pf
         .y(bb$y),
         .valid_out(bb$valid_out)
     );
-    top$dop$doptrf$0$add_0 brz(
+    top$tri_unit$tc_ab$aerr brz(
         .clock(brz$clock),
         .a(brz$a),
         .b(brz$b),
@@ -14588,7 +15871,7 @@ module top$tri_unit$tc_ab$edges$0(clock,p0,p1,p2,q0,q1,q2,pe,qe,pg,qg,pf0,pf1,pf
         .d(brz_wait$d),
         .q(brz_wait$q)
     );
-    top$dop$doptrf$0$add_0 rab(
+    top$tri_unit$tc_ab$aerr rab(
         .clock(rab$clock),
         .a(rab$a),
         .b(rab$b),
@@ -14597,7 +15880,7 @@ module top$tri_unit$tc_ab$edges$0(clock,p0,p1,p2,q0,q1,q2,pe,qe,pg,qg,pf0,pf1,pf
         .y(rab$y),
         .valid_out(rab$valid_out)
     );
-    top$dop$doptrf$0$add_0 rabz(
+    top$tri_unit$tc_ab$aerr rabz(
         .clock(rabz$clock),
         .a(rabz$a),
         .b(rabz$b),
@@ -14612,7 +15895,7 @@ module top$tri_unit$tc_ab$edges$0(clock,p0,p1,p2,q0,q1,q2,pe,qe,pg,qg,pf0,pf1,pf
         .sel(rs$sel),
         .y(rs$y)
     );
-    top$dop$doptrf$0$add_0 brs(
+    top$tri_unit$tc_ab$aerr brs(
         .clock(brs$clock),
         .a(brs$a),
         .b(brs$b),
@@ -14626,7 +15909,7 @@ module top$tri_unit$tc_ab$edges$0(clock,p0,p1,p2,q0,q1,q2,pe,qe,pg,qg,pf0,pf1,pf
         .d(brs_wait$d),
         .q(brs_wait$q)
     );
-    top$dop$doptrf$0$add_0 bab(
+    top$tri_unit$tc_ab$aerr bab(
         .clock(bab$clock),
         .a(bab$a),
         .b(bab$b),
@@ -14635,7 +15918,7 @@ module top$tri_unit$tc_ab$edges$0(clock,p0,p1,p2,q0,q1,q2,pe,qe,pg,qg,pf0,pf1,pf
         .y(bab$y),
         .valid_out(bab$valid_out)
     );
-    top$dop$doptrf$0$add_0 bs(
+    top$tri_unit$tc_ab$aerr bs(
         .clock(bs$clock),
         .a(bs$a),
         .b(bs$b),
@@ -17522,7 +18805,7 @@ module top$tri_unit$tc_ab$mg_0$0(clock,a0,a1,a2,b0,b1,b2,c,y);
     wire  [23:0] p2_wait$q;
     
     // Sub module instances
-    top$dop$doptrf$0$mul_0 p$0(
+    top$tri_unit$tc_ab$af p$0(
         .clock(p$0$clock),
         .a(p$0$a),
         .b(p$0$b),
@@ -17530,7 +18813,7 @@ module top$tri_unit$tc_ab$mg_0$0(clock,a0,a1,a2,b0,b1,b2,c,y);
         .y(p$0$y),
         .valid_out(p$0$valid_out)
     );
-    top$dop$doptrf$0$mul_0 p$1(
+    top$tri_unit$tc_ab$af p$1(
         .clock(p$1$clock),
         .a(p$1$a),
         .b(p$1$b),
@@ -17538,7 +18821,7 @@ module top$tri_unit$tc_ab$mg_0$0(clock,a0,a1,a2,b0,b1,b2,c,y);
         .y(p$1$y),
         .valid_out(p$1$valid_out)
     );
-    top$dop$doptrf$0$mul_0 p$2(
+    top$tri_unit$tc_ab$af p$2(
         .clock(p$2$clock),
         .a(p$2$a),
         .b(p$2$b),
@@ -17546,7 +18829,7 @@ module top$tri_unit$tc_ab$mg_0$0(clock,a0,a1,a2,b0,b1,b2,c,y);
         .y(p$2$y),
         .valid_out(p$2$valid_out)
     );
-    top$dop$doptrf$0$add_0 s01(
+    top$tri_unit$tc_ab$aerr s01(
         .clock(s01$clock),
         .a(s01$a),
         .b(s01$b),
@@ -17555,7 +18838,7 @@ module top$tri_unit$tc_ab$mg_0$0(clock,a0,a1,a2,b0,b1,b2,c,y);
         .y(s01$y),
         .valid_out(s01$valid_out)
     );
-    top$dop$doptrf$0$add_0 s2c(
+    top$tri_unit$tc_ab$aerr s2c(
         .clock(s2c$clock),
         .a(s2c$a),
         .b(s2c$b),
@@ -17564,7 +18847,7 @@ module top$tri_unit$tc_ab$mg_0$0(clock,a0,a1,a2,b0,b1,b2,c,y);
         .y(s2c$y),
         .valid_out(s2c$valid_out)
     );
-    top$dop$doptrf$0$add_0 s(
+    top$tri_unit$tc_ab$aerr s(
         .clock(s$clock),
         .a(s$a),
         .b(s$b),
@@ -17681,7 +18964,7 @@ module top$tri_unit$tc_ab$mg_0$3(clock,a0,a1,a2,b0,b1,b2,c,y);
     wire  [23:0] p2_wait$q;
     
     // Sub module instances
-    top$dop$doptrf$0$mul_0 p$0(
+    top$tri_unit$tc_ab$af p$0(
         .clock(p$0$clock),
         .a(p$0$a),
         .b(p$0$b),
@@ -17689,7 +18972,7 @@ module top$tri_unit$tc_ab$mg_0$3(clock,a0,a1,a2,b0,b1,b2,c,y);
         .y(p$0$y),
         .valid_out(p$0$valid_out)
     );
-    top$dop$doptrf$0$mul_0 p$1(
+    top$tri_unit$tc_ab$af p$1(
         .clock(p$1$clock),
         .a(p$1$a),
         .b(p$1$b),
@@ -17697,7 +18980,7 @@ module top$tri_unit$tc_ab$mg_0$3(clock,a0,a1,a2,b0,b1,b2,c,y);
         .y(p$1$y),
         .valid_out(p$1$valid_out)
     );
-    top$dop$doptrf$0$mul_0 p$2(
+    top$tri_unit$tc_ab$af p$2(
         .clock(p$2$clock),
         .a(p$2$a),
         .b(p$2$b),
@@ -17705,7 +18988,7 @@ module top$tri_unit$tc_ab$mg_0$3(clock,a0,a1,a2,b0,b1,b2,c,y);
         .y(p$2$y),
         .valid_out(p$2$valid_out)
     );
-    top$dop$doptrf$0$add_0 s01(
+    top$tri_unit$tc_ab$aerr s01(
         .clock(s01$clock),
         .a(s01$a),
         .b(s01$b),
@@ -17714,7 +18997,7 @@ module top$tri_unit$tc_ab$mg_0$3(clock,a0,a1,a2,b0,b1,b2,c,y);
         .y(s01$y),
         .valid_out(s01$valid_out)
     );
-    top$dop$doptrf$0$add_0 s2c(
+    top$tri_unit$tc_ab$aerr s2c(
         .clock(s2c$clock),
         .a(s2c$a),
         .b(s2c$b),
@@ -17723,7 +19006,7 @@ module top$tri_unit$tc_ab$mg_0$3(clock,a0,a1,a2,b0,b1,b2,c,y);
         .y(s2c$y),
         .valid_out(s2c$valid_out)
     );
-    top$dop$doptrf$0$add_0 s(
+    top$tri_unit$tc_ab$aerr s(
         .clock(s$clock),
         .a(s$a),
         .b(s$b),
@@ -19158,7 +20441,7 @@ module top$tri_unit$tc_ab$verts$0(clock,z,m0,m1,m2,exact,e,g,f0,f1,f2,h);
         .sel(cz$sel),
         .y(cz$y)
     );
-    top$dop$doptrf$0$add_0 gz(
+    top$tri_unit$tc_ab$aerr gz(
         .clock(gz$clock),
         .a(gz$a),
         .b(gz$b),
@@ -19167,7 +20450,7 @@ module top$tri_unit$tc_ab$verts$0(clock,z,m0,m1,m2,exact,e,g,f0,f1,f2,h);
         .y(gz$y),
         .valid_out(gz$valid_out)
     );
-    top$dop$doptrf$0$add_0 hz(
+    top$tri_unit$tc_ab$aerr hz(
         .clock(hz$clock),
         .a(hz$a),
         .b(hz$b),

@@ -2766,6 +2766,12 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,e$0,e$1
     wire  [4:0] setup$j2$3;
     wire  [4:0] setup$j2$4;
     wire  [4:0] setup$j2$5;
+    wire  setup$round_up$0;
+    wire  setup$round_up$1;
+    wire  setup$round_up$2;
+    wire  setup$round_up$3;
+    wire  setup$round_up$4;
+    wire  setup$round_up$5;
     reg  [23:0] held_d$0$d;
     wire  [23:0] held_d$0$q;
     reg  held_d$0$clock;
@@ -2830,6 +2836,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,e$0,e$1
     reg  [23:0] doptrf$0$c;
     reg  [23:0] doptrf$0$e;
     reg  doptrf$0$valid_in;
+    reg  doptrf$0$round_up;
     wire  [23:0] doptrf$0$s;
     wire  doptrf$0$flag;
     wire  doptrf$0$valid_out;
@@ -2906,7 +2913,13 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,e$0,e$1
         .j2$2(setup$j2$2),
         .j2$3(setup$j2$3),
         .j2$4(setup$j2$4),
-        .j2$5(setup$j2$5)
+        .j2$5(setup$j2$5),
+        .round_up$0(setup$round_up$0),
+        .round_up$1(setup$round_up$1),
+        .round_up$2(setup$round_up$2),
+        .round_up$3(setup$round_up$3),
+        .round_up$4(setup$round_up$4),
+        .round_up$5(setup$round_up$5)
     );
     top$base_na held_d$0(
         .d(held_d$0$d),
@@ -3003,6 +3016,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,e$0,e$1
         .c(doptrf$0$c),
         .e(doptrf$0$e),
         .valid_in(doptrf$0$valid_in),
+        .round_up(doptrf$0$round_up),
         .s(doptrf$0$s),
         .flag(doptrf$0$flag),
         .valid_out(doptrf$0$valid_out)
@@ -3122,6 +3136,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,e$0,e$1
             klmsel$d$5 = held_d$5$q;
         end
         doptrf$0$clock = clock;
+        doptrf$0$round_up = setup$round_up$0;
         doptrf$0$valid_in = held_valid$q;
         if (c_zero) begin
             doptrf$0$valid_in = c_take;
@@ -3207,7 +3222,7 @@ module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,e$0,e$1
 endmodule // top$dop
 
 
-module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
+module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,round_up,s,flag,valid_out);
     
     // Module arguments
     input wire  clock;
@@ -3220,6 +3235,7 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
     input wire  [23:0] c;
     input wire  [23:0] e;
     input wire  valid_in;
+    input wire  round_up;
     output reg  [23:0] s;
     output reg  flag;
     output reg  valid_out;
@@ -3252,24 +3268,42 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
     reg  [23:0] s1_e$d;
     wire  [23:0] s1_e$q;
     reg  s1_e$clock;
+    reg  s1_round$d;
+    wire  s1_round$q;
+    reg  s1_round$clock;
+    reg  r_mul$clock;
+    reg  r_mul$d;
+    wire  r_mul$q;
+    reg  r_sum$clock;
+    reg  r_sum$d;
+    wire  r_sum$q;
+    reg  r_u$clock;
+    reg  r_u$d;
+    wire  r_u$q;
+    reg  r_s$clock;
+    reg  r_s$d;
+    wire  r_s$q;
     reg  mul_0$clock;
     reg  [23:0] mul_0$a;
     reg  [23:0] mul_0$b;
     reg  mul_0$valid_in;
     wire  [23:0] mul_0$y;
     wire  mul_0$valid_out;
+    reg  mul_0$round_up;
     reg  mul_1$clock;
     reg  [23:0] mul_1$a;
     reg  [23:0] mul_1$b;
     reg  mul_1$valid_in;
     wire  [23:0] mul_1$y;
     wire  mul_1$valid_out;
+    reg  mul_1$round_up;
     reg  mul_2$clock;
     reg  [23:0] mul_2$a;
     reg  [23:0] mul_2$b;
     reg  mul_2$valid_in;
     wire  [23:0] mul_2$y;
     wire  mul_2$valid_out;
+    reg  mul_2$round_up;
     reg  [23:0] c_2$d;
     wire  [23:0] c_2$q;
     reg  c_2$clock;
@@ -3289,6 +3323,7 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
     reg  add_0$valid_in;
     wire  [23:0] add_0$y;
     wire  add_0$valid_out;
+    reg  add_0$round_up;
     reg  add_1$clock;
     reg  [23:0] add_1$a;
     reg  [23:0] add_1$b;
@@ -3296,6 +3331,7 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
     reg  add_1$valid_in;
     wire  [23:0] add_1$y;
     wire  add_1$valid_out;
+    reg  add_1$round_up;
     reg  add_2$clock;
     reg  [23:0] add_2$a;
     reg  [23:0] add_2$b;
@@ -3303,6 +3339,7 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
     reg  add_2$valid_in;
     wire  [23:0] add_2$y;
     wire  add_2$valid_out;
+    reg  add_2$round_up;
     reg  add_3$clock;
     reg  [23:0] add_3$a;
     reg  [23:0] add_3$b;
@@ -3310,6 +3347,7 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
     reg  add_3$valid_in;
     wire  [23:0] add_3$y;
     wire  add_3$valid_out;
+    reg  add_3$round_up;
     reg  [23:0] e_2$d;
     wire  [23:0] e_2$q;
     reg  e_2$clock;
@@ -3402,13 +3440,39 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
         .q(s1_e$q),
         .clock(s1_e$clock)
     );
+    top$cnt_dop$pending s1_round(
+        .d(s1_round$d),
+        .q(s1_round$q),
+        .clock(s1_round$clock)
+    );
+    top$dop$doptrf$0$r_mul r_mul(
+        .clock(r_mul$clock),
+        .d(r_mul$d),
+        .q(r_mul$q)
+    );
+    top$dop$doptrf$0$r_mul r_sum(
+        .clock(r_sum$clock),
+        .d(r_sum$d),
+        .q(r_sum$q)
+    );
+    top$dop$doptrf$0$r_mul r_u(
+        .clock(r_u$clock),
+        .d(r_u$d),
+        .q(r_u$q)
+    );
+    top$dop$doptrf$0$r_mul r_s(
+        .clock(r_s$clock),
+        .d(r_s$d),
+        .q(r_s$q)
+    );
     top$dop$doptrf$0$mul_0 mul_0(
         .clock(mul_0$clock),
         .a(mul_0$a),
         .b(mul_0$b),
         .valid_in(mul_0$valid_in),
         .y(mul_0$y),
-        .valid_out(mul_0$valid_out)
+        .valid_out(mul_0$valid_out),
+        .round_up(mul_0$round_up)
     );
     top$dop$doptrf$0$mul_0 mul_1(
         .clock(mul_1$clock),
@@ -3416,7 +3480,8 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
         .b(mul_1$b),
         .valid_in(mul_1$valid_in),
         .y(mul_1$y),
-        .valid_out(mul_1$valid_out)
+        .valid_out(mul_1$valid_out),
+        .round_up(mul_1$round_up)
     );
     top$dop$doptrf$0$mul_0 mul_2(
         .clock(mul_2$clock),
@@ -3424,7 +3489,8 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
         .b(mul_2$b),
         .valid_in(mul_2$valid_in),
         .y(mul_2$y),
-        .valid_out(mul_2$valid_out)
+        .valid_out(mul_2$valid_out),
+        .round_up(mul_2$round_up)
     );
     top$base_na c_2(
         .d(c_2$d),
@@ -3453,7 +3519,8 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
         .sub(add_0$sub),
         .valid_in(add_0$valid_in),
         .y(add_0$y),
-        .valid_out(add_0$valid_out)
+        .valid_out(add_0$valid_out),
+        .round_up(add_0$round_up)
     );
     top$dop$doptrf$0$add_0 add_1(
         .clock(add_1$clock),
@@ -3462,7 +3529,8 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
         .sub(add_1$sub),
         .valid_in(add_1$valid_in),
         .y(add_1$y),
-        .valid_out(add_1$valid_out)
+        .valid_out(add_1$valid_out),
+        .round_up(add_1$round_up)
     );
     top$dop$doptrf$0$add_0 add_2(
         .clock(add_2$clock),
@@ -3471,7 +3539,8 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
         .sub(add_2$sub),
         .valid_in(add_2$valid_in),
         .y(add_2$y),
-        .valid_out(add_2$valid_out)
+        .valid_out(add_2$valid_out),
+        .round_up(add_2$round_up)
     );
     top$dop$doptrf$0$add_0 add_3(
         .clock(add_3$clock),
@@ -3480,7 +3549,8 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
         .sub(add_3$sub),
         .valid_in(add_3$valid_in),
         .y(add_3$y),
-        .valid_out(add_3$valid_out)
+        .valid_out(add_3$valid_out),
+        .round_up(add_3$round_up)
     );
     top$base_na e_2(
         .d(e_2$d),
@@ -3559,6 +3629,7 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
         s1_c2$clock = clock;
         s1_c$clock = clock;
         s1_e$clock = clock;
+        s1_round$clock = clock;
         s1_valid$d = s1_valid$q;
         s1_d0$d = s1_d0$q;
         s1_d1$d = s1_d1$q;
@@ -3568,6 +3639,11 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
         s1_c2$d = s1_c2$q;
         s1_c$d = s1_c$q;
         s1_e$d = s1_e$q;
+        s1_round$d = s1_round$q;
+        r_mul$clock = clock;
+        r_sum$clock = clock;
+        r_u$clock = clock;
+        r_s$clock = clock;
         c_2$clock = clock;
         c_3$clock = clock;
         c_4$clock = clock;
@@ -3609,6 +3685,13 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
         add_1$clock = clock;
         add_2$clock = clock;
         add_3$clock = clock;
+        mul_0$round_up = r_mul$q;
+        mul_1$round_up = r_mul$q;
+        mul_2$round_up = r_mul$q;
+        add_0$round_up = r_sum$q;
+        add_1$round_up = r_sum$q;
+        add_2$round_up = r_u$q;
+        add_3$round_up = r_s$q;
         s1_valid$d = valid_in;
         s1_d0$d = d0;
         s1_d1$d = d1;
@@ -3618,6 +3701,11 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
         s1_c2$d = c2;
         s1_c$d = c;
         s1_e$d = e;
+        s1_round$d = round_up;
+        r_mul$d = s1_round$q;
+        r_sum$d = r_mul$q;
+        r_u$d = r_sum$q;
+        r_s$d = r_u$q;
         mul_0$a = s1_d0$q;
         mul_0$b = s1_c0$q;
         mul_0$valid_in = s1_valid$q;
@@ -3672,7 +3760,7 @@ module top$dop$doptrf$0(clock,d0,d1,d2,c0,c1,c2,c,e,valid_in,s,flag,valid_out);
 endmodule // top$dop$doptrf$0
 
 
-module top$dop$doptrf$0$add_0(clock,a,b,sub,valid_in,y,valid_out);
+module top$dop$doptrf$0$add_0(clock,a,b,sub,valid_in,y,valid_out,round_up);
     
     // Module arguments
     input wire  clock;
@@ -3682,9 +3770,9 @@ module top$dop$doptrf$0$add_0(clock,a,b,sub,valid_in,y,valid_out);
     input wire  valid_in;
     output reg  [23:0] y;
     output reg  valid_out;
+    input wire  round_up;
     
     // Constant declarations
-    localparam  round_up = 1'b1;
     localparam  c_align_cap = 8'h13;
     localparam  c_exp_ones = 10'b11111111;
     
@@ -4291,7 +4379,7 @@ module top$dop$doptrf$0$add_0$unpack_a(x,sign,exp,sig,is_zero,is_inf,is_nan);
 endmodule // top$dop$doptrf$0$add_0$unpack_a
 
 
-module top$dop$doptrf$0$mul_0(clock,a,b,valid_in,y,valid_out);
+module top$dop$doptrf$0$mul_0(clock,a,b,valid_in,y,valid_out,round_up);
     
     // Module arguments
     input wire  clock;
@@ -4300,9 +4388,9 @@ module top$dop$doptrf$0$mul_0(clock,a,b,valid_in,y,valid_out);
     input wire  valid_in;
     output reg  [23:0] y;
     output reg  valid_out;
+    input wire  round_up;
     
     // Constant declarations
-    localparam  round_up = 1'b1;
     localparam  c_exp_adj = 10'b10000001;
     localparam  c_exp_ofs = 10'b100000000;
     localparam  c_exp_norm_min = 10'b100000001;
@@ -4803,6 +4891,57 @@ module top$dop$doptrf$0$mul_0$sig_mul(a,b,hi,sticky);
 endmodule // top$dop$doptrf$0$mul_0$sig_mul
 
 
+module top$dop$doptrf$0$r_mul(clock,d,q);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+    
+    // Stub signals
+    reg  line$0$d;
+    wire  line$0$q;
+    reg  line$0$clock;
+    reg  line$1$d;
+    wire  line$1$q;
+    reg  line$1$clock;
+    reg  line$2$d;
+    wire  line$2$q;
+    reg  line$2$clock;
+    
+    // Sub module instances
+    top$cnt_dop$pending line$0(
+        .d(line$0$d),
+        .q(line$0$q),
+        .clock(line$0$clock)
+    );
+    top$cnt_dop$pending line$1(
+        .d(line$1$d),
+        .q(line$1$q),
+        .clock(line$1$clock)
+    );
+    top$cnt_dop$pending line$2(
+        .d(line$2$d),
+        .q(line$2$q),
+        .clock(line$2$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line$0$clock = clock;
+        line$0$d = d;
+        line$1$clock = clock;
+        line$1$d = d;
+        line$2$clock = clock;
+        line$2$d = d;
+        line$0$d = line$1$q;
+        line$1$d = line$2$q;
+        q = line$0$q;
+    end
+    
+endmodule // top$dop$doptrf$0$r_mul
+
+
 module top$dop$klmsel(d$0,d$1,d$2,d$3,d$4,d$5,j0$0,j1$0,j2$0,y0$0,y1$0,y2$0);
     
     // Module arguments
@@ -4891,7 +5030,7 @@ module top$dop$klmsel(d$0,d$1,d$2,d$3,d$4,d$5,j0$0,j1$0,j2$0,y0$0,y1$0,y2$0);
 endmodule // top$dop$klmsel
 
 
-module top$dop$setup(clock,load_en,load_addr,load_data,c0$0,c0$1,c0$2,c0$3,c0$4,c0$5,c1$0,c1$1,c1$2,c1$3,c1$4,c1$5,c2$0,c2$1,c2$2,c2$3,c2$4,c2$5,c$0,c$1,c$2,c$3,c$4,c$5,j0$0,j0$1,j0$2,j0$3,j0$4,j0$5,j1$0,j1$1,j1$2,j1$3,j1$4,j1$5,j2$0,j2$1,j2$2,j2$3,j2$4,j2$5);
+module top$dop$setup(clock,load_en,load_addr,load_data,c0$0,c0$1,c0$2,c0$3,c0$4,c0$5,c1$0,c1$1,c1$2,c1$3,c1$4,c1$5,c2$0,c2$1,c2$2,c2$3,c2$4,c2$5,c$0,c$1,c$2,c$3,c$4,c$5,j0$0,j0$1,j0$2,j0$3,j0$4,j0$5,j1$0,j1$1,j1$2,j1$3,j1$4,j1$5,j2$0,j2$1,j2$2,j2$3,j2$4,j2$5,round_up$0,round_up$1,round_up$2,round_up$3,round_up$4,round_up$5);
     
     // Module arguments
     input wire  clock;
@@ -4940,6 +5079,12 @@ module top$dop$setup(clock,load_en,load_addr,load_data,c0$0,c0$1,c0$2,c0$3,c0$4,
     output reg  [4:0] j2$3;
     output reg  [4:0] j2$4;
     output reg  [4:0] j2$5;
+    output reg  round_up$0;
+    output reg  round_up$1;
+    output reg  round_up$2;
+    output reg  round_up$3;
+    output reg  round_up$4;
+    output reg  round_up$5;
     
     // Constant declarations
     localparam  idx$0 = 5'b0;
@@ -5076,6 +5221,24 @@ module top$dop$setup(clock,load_en,load_addr,load_data,c0$0,c0$1,c0$2,c0$3,c0$4,
     reg  [4:0] jsel_2$5$d;
     wire  [4:0] jsel_2$5$q;
     reg  jsel_2$5$clock;
+    reg  rnd$0$d;
+    wire  rnd$0$q;
+    reg  rnd$0$clock;
+    reg  rnd$1$d;
+    wire  rnd$1$q;
+    reg  rnd$1$clock;
+    reg  rnd$2$d;
+    wire  rnd$2$q;
+    reg  rnd$2$clock;
+    reg  rnd$3$d;
+    wire  rnd$3$q;
+    reg  rnd$3$clock;
+    reg  rnd$4$d;
+    wire  rnd$4$q;
+    reg  rnd$4$clock;
+    reg  rnd$5$d;
+    wire  rnd$5$q;
+    reg  rnd$5$clock;
     
     // Local signals
     reg  [4:0] c_lane;
@@ -5292,6 +5455,36 @@ module top$dop$setup(clock,load_en,load_addr,load_data,c0$0,c0$1,c0$2,c0$3,c0$4,
         .q(jsel_2$5$q),
         .clock(jsel_2$5$clock)
     );
+    top$cnt_dop$pending rnd$0(
+        .d(rnd$0$d),
+        .q(rnd$0$q),
+        .clock(rnd$0$clock)
+    );
+    top$cnt_dop$pending rnd$1(
+        .d(rnd$1$d),
+        .q(rnd$1$q),
+        .clock(rnd$1$clock)
+    );
+    top$cnt_dop$pending rnd$2(
+        .d(rnd$2$d),
+        .q(rnd$2$q),
+        .clock(rnd$2$clock)
+    );
+    top$cnt_dop$pending rnd$3(
+        .d(rnd$3$d),
+        .q(rnd$3$q),
+        .clock(rnd$3$clock)
+    );
+    top$cnt_dop$pending rnd$4(
+        .d(rnd$4$d),
+        .q(rnd$4$q),
+        .clock(rnd$4$clock)
+    );
+    top$cnt_dop$pending rnd$5(
+        .d(rnd$5$d),
+        .q(rnd$5$q),
+        .clock(rnd$5$clock)
+    );
     
     // Update code
     always @(*) begin
@@ -5304,6 +5497,7 @@ module top$dop$setup(clock,load_en,load_addr,load_data,c0$0,c0$1,c0$2,c0$3,c0$4,
         jsel_0$0$clock = clock;
         jsel_1$0$clock = clock;
         jsel_2$0$clock = clock;
+        rnd$0$clock = clock;
         cmat_0$0$d = cmat_0$0$q;
         cmat_1$0$d = cmat_1$0$q;
         cmat_2$0$d = cmat_2$0$q;
@@ -5311,6 +5505,7 @@ module top$dop$setup(clock,load_en,load_addr,load_data,c0$0,c0$1,c0$2,c0$3,c0$4,
         jsel_0$0$d = jsel_0$0$q;
         jsel_1$0$d = jsel_1$0$q;
         jsel_2$0$d = jsel_2$0$q;
+        rnd$0$d = rnd$0$q;
         if (load_en & (c_lane == idx$0)) begin
             if (c_field == 32'h0) begin
                 cmat_0$0$d = load_data;
@@ -5328,6 +5523,7 @@ module top$dop$setup(clock,load_en,load_addr,load_data,c0$0,c0$1,c0$2,c0$3,c0$4,
                 jsel_0$0$d = load_data[(32'h0)+:(5)];
                 jsel_1$0$d = load_data[(32'h5)+:(5)];
                 jsel_2$0$d = load_data[(32'ha)+:(5)];
+                rnd$0$d = load_data[32'hf];
             end
         end
         c0$0 = cmat_0$0$q;
@@ -5337,6 +5533,7 @@ module top$dop$setup(clock,load_en,load_addr,load_data,c0$0,c0$1,c0$2,c0$3,c0$4,
         j0$0 = jsel_0$0$q;
         j1$0 = jsel_1$0$q;
         j2$0 = jsel_2$0$q;
+        round_up$0 = rnd$0$q;
         cmat_0$1$clock = clock;
         cmat_1$1$clock = clock;
         cmat_2$1$clock = clock;
@@ -5344,6 +5541,7 @@ module top$dop$setup(clock,load_en,load_addr,load_data,c0$0,c0$1,c0$2,c0$3,c0$4,
         jsel_0$1$clock = clock;
         jsel_1$1$clock = clock;
         jsel_2$1$clock = clock;
+        rnd$1$clock = clock;
         cmat_0$1$d = cmat_0$1$q;
         cmat_1$1$d = cmat_1$1$q;
         cmat_2$1$d = cmat_2$1$q;
@@ -5351,6 +5549,7 @@ module top$dop$setup(clock,load_en,load_addr,load_data,c0$0,c0$1,c0$2,c0$3,c0$4,
         jsel_0$1$d = jsel_0$1$q;
         jsel_1$1$d = jsel_1$1$q;
         jsel_2$1$d = jsel_2$1$q;
+        rnd$1$d = rnd$1$q;
         if (load_en & (c_lane == idx$1)) begin
             if (c_field == 32'h0) begin
                 cmat_0$1$d = load_data;
@@ -5368,6 +5567,7 @@ module top$dop$setup(clock,load_en,load_addr,load_data,c0$0,c0$1,c0$2,c0$3,c0$4,
                 jsel_0$1$d = load_data[(32'h0)+:(5)];
                 jsel_1$1$d = load_data[(32'h5)+:(5)];
                 jsel_2$1$d = load_data[(32'ha)+:(5)];
+                rnd$1$d = load_data[32'hf];
             end
         end
         c0$1 = cmat_0$1$q;
@@ -5377,6 +5577,7 @@ module top$dop$setup(clock,load_en,load_addr,load_data,c0$0,c0$1,c0$2,c0$3,c0$4,
         j0$1 = jsel_0$1$q;
         j1$1 = jsel_1$1$q;
         j2$1 = jsel_2$1$q;
+        round_up$1 = rnd$1$q;
         cmat_0$2$clock = clock;
         cmat_1$2$clock = clock;
         cmat_2$2$clock = clock;
@@ -5384,6 +5585,7 @@ module top$dop$setup(clock,load_en,load_addr,load_data,c0$0,c0$1,c0$2,c0$3,c0$4,
         jsel_0$2$clock = clock;
         jsel_1$2$clock = clock;
         jsel_2$2$clock = clock;
+        rnd$2$clock = clock;
         cmat_0$2$d = cmat_0$2$q;
         cmat_1$2$d = cmat_1$2$q;
         cmat_2$2$d = cmat_2$2$q;
@@ -5391,6 +5593,7 @@ module top$dop$setup(clock,load_en,load_addr,load_data,c0$0,c0$1,c0$2,c0$3,c0$4,
         jsel_0$2$d = jsel_0$2$q;
         jsel_1$2$d = jsel_1$2$q;
         jsel_2$2$d = jsel_2$2$q;
+        rnd$2$d = rnd$2$q;
         if (load_en & (c_lane == idx$2)) begin
             if (c_field == 32'h0) begin
                 cmat_0$2$d = load_data;
@@ -5408,6 +5611,7 @@ module top$dop$setup(clock,load_en,load_addr,load_data,c0$0,c0$1,c0$2,c0$3,c0$4,
                 jsel_0$2$d = load_data[(32'h0)+:(5)];
                 jsel_1$2$d = load_data[(32'h5)+:(5)];
                 jsel_2$2$d = load_data[(32'ha)+:(5)];
+                rnd$2$d = load_data[32'hf];
             end
         end
         c0$2 = cmat_0$2$q;
@@ -5417,6 +5621,7 @@ module top$dop$setup(clock,load_en,load_addr,load_data,c0$0,c0$1,c0$2,c0$3,c0$4,
         j0$2 = jsel_0$2$q;
         j1$2 = jsel_1$2$q;
         j2$2 = jsel_2$2$q;
+        round_up$2 = rnd$2$q;
         cmat_0$3$clock = clock;
         cmat_1$3$clock = clock;
         cmat_2$3$clock = clock;
@@ -5424,6 +5629,7 @@ module top$dop$setup(clock,load_en,load_addr,load_data,c0$0,c0$1,c0$2,c0$3,c0$4,
         jsel_0$3$clock = clock;
         jsel_1$3$clock = clock;
         jsel_2$3$clock = clock;
+        rnd$3$clock = clock;
         cmat_0$3$d = cmat_0$3$q;
         cmat_1$3$d = cmat_1$3$q;
         cmat_2$3$d = cmat_2$3$q;
@@ -5431,6 +5637,7 @@ module top$dop$setup(clock,load_en,load_addr,load_data,c0$0,c0$1,c0$2,c0$3,c0$4,
         jsel_0$3$d = jsel_0$3$q;
         jsel_1$3$d = jsel_1$3$q;
         jsel_2$3$d = jsel_2$3$q;
+        rnd$3$d = rnd$3$q;
         if (load_en & (c_lane == idx$3)) begin
             if (c_field == 32'h0) begin
                 cmat_0$3$d = load_data;
@@ -5448,6 +5655,7 @@ module top$dop$setup(clock,load_en,load_addr,load_data,c0$0,c0$1,c0$2,c0$3,c0$4,
                 jsel_0$3$d = load_data[(32'h0)+:(5)];
                 jsel_1$3$d = load_data[(32'h5)+:(5)];
                 jsel_2$3$d = load_data[(32'ha)+:(5)];
+                rnd$3$d = load_data[32'hf];
             end
         end
         c0$3 = cmat_0$3$q;
@@ -5457,6 +5665,7 @@ module top$dop$setup(clock,load_en,load_addr,load_data,c0$0,c0$1,c0$2,c0$3,c0$4,
         j0$3 = jsel_0$3$q;
         j1$3 = jsel_1$3$q;
         j2$3 = jsel_2$3$q;
+        round_up$3 = rnd$3$q;
         cmat_0$4$clock = clock;
         cmat_1$4$clock = clock;
         cmat_2$4$clock = clock;
@@ -5464,6 +5673,7 @@ module top$dop$setup(clock,load_en,load_addr,load_data,c0$0,c0$1,c0$2,c0$3,c0$4,
         jsel_0$4$clock = clock;
         jsel_1$4$clock = clock;
         jsel_2$4$clock = clock;
+        rnd$4$clock = clock;
         cmat_0$4$d = cmat_0$4$q;
         cmat_1$4$d = cmat_1$4$q;
         cmat_2$4$d = cmat_2$4$q;
@@ -5471,6 +5681,7 @@ module top$dop$setup(clock,load_en,load_addr,load_data,c0$0,c0$1,c0$2,c0$3,c0$4,
         jsel_0$4$d = jsel_0$4$q;
         jsel_1$4$d = jsel_1$4$q;
         jsel_2$4$d = jsel_2$4$q;
+        rnd$4$d = rnd$4$q;
         if (load_en & (c_lane == idx$4)) begin
             if (c_field == 32'h0) begin
                 cmat_0$4$d = load_data;
@@ -5488,6 +5699,7 @@ module top$dop$setup(clock,load_en,load_addr,load_data,c0$0,c0$1,c0$2,c0$3,c0$4,
                 jsel_0$4$d = load_data[(32'h0)+:(5)];
                 jsel_1$4$d = load_data[(32'h5)+:(5)];
                 jsel_2$4$d = load_data[(32'ha)+:(5)];
+                rnd$4$d = load_data[32'hf];
             end
         end
         c0$4 = cmat_0$4$q;
@@ -5497,6 +5709,7 @@ module top$dop$setup(clock,load_en,load_addr,load_data,c0$0,c0$1,c0$2,c0$3,c0$4,
         j0$4 = jsel_0$4$q;
         j1$4 = jsel_1$4$q;
         j2$4 = jsel_2$4$q;
+        round_up$4 = rnd$4$q;
         cmat_0$5$clock = clock;
         cmat_1$5$clock = clock;
         cmat_2$5$clock = clock;
@@ -5504,6 +5717,7 @@ module top$dop$setup(clock,load_en,load_addr,load_data,c0$0,c0$1,c0$2,c0$3,c0$4,
         jsel_0$5$clock = clock;
         jsel_1$5$clock = clock;
         jsel_2$5$clock = clock;
+        rnd$5$clock = clock;
         cmat_0$5$d = cmat_0$5$q;
         cmat_1$5$d = cmat_1$5$q;
         cmat_2$5$d = cmat_2$5$q;
@@ -5511,6 +5725,7 @@ module top$dop$setup(clock,load_en,load_addr,load_data,c0$0,c0$1,c0$2,c0$3,c0$4,
         jsel_0$5$d = jsel_0$5$q;
         jsel_1$5$d = jsel_1$5$q;
         jsel_2$5$d = jsel_2$5$q;
+        rnd$5$d = rnd$5$q;
         if (load_en & (c_lane == idx$5)) begin
             if (c_field == 32'h0) begin
                 cmat_0$5$d = load_data;
@@ -5528,6 +5743,7 @@ module top$dop$setup(clock,load_en,load_addr,load_data,c0$0,c0$1,c0$2,c0$3,c0$4,
                 jsel_0$5$d = load_data[(32'h0)+:(5)];
                 jsel_1$5$d = load_data[(32'h5)+:(5)];
                 jsel_2$5$d = load_data[(32'ha)+:(5)];
+                rnd$5$d = load_data[32'hf];
             end
         end
         c0$5 = cmat_0$5$q;
@@ -5537,6 +5753,7 @@ module top$dop$setup(clock,load_en,load_addr,load_data,c0$0,c0$1,c0$2,c0$3,c0$4,
         j0$5 = jsel_0$5$q;
         j1$5 = jsel_1$5$q;
         j2$5 = jsel_2$5$q;
+        round_up$5 = rnd$5$q;
     end
     
 endmodule // top$dop$setup
@@ -16584,7 +16801,7 @@ module top$tri_unit$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2
         .y(mul_v$4$y),
         .valid_out(mul_v$4$valid_out)
     );
-    top$dop$doptrf$0$mul_0 mul_up$0(
+    top$tri_unit$tc$mul_up$0 mul_up$0(
         .clock(mul_up$0$clock),
         .a(mul_up$0$a),
         .b(mul_up$0$b),
@@ -16592,7 +16809,7 @@ module top$tri_unit$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2
         .y(mul_up$0$y),
         .valid_out(mul_up$0$valid_out)
     );
-    top$dop$doptrf$0$mul_0 mul_up$1(
+    top$tri_unit$tc$mul_up$0 mul_up$1(
         .clock(mul_up$1$clock),
         .a(mul_up$1$a),
         .b(mul_up$1$b),
@@ -16600,7 +16817,7 @@ module top$tri_unit$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2
         .y(mul_up$1$y),
         .valid_out(mul_up$1$valid_out)
     );
-    top$dop$doptrf$0$mul_0 mul_up$2(
+    top$tri_unit$tc$mul_up$0 mul_up$2(
         .clock(mul_up$2$clock),
         .a(mul_up$2$a),
         .b(mul_up$2$b),
@@ -16608,7 +16825,7 @@ module top$tri_unit$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2
         .y(mul_up$2$y),
         .valid_out(mul_up$2$valid_out)
     );
-    top$dop$doptrf$0$mul_0 mul_up$3(
+    top$tri_unit$tc$mul_up$0 mul_up$3(
         .clock(mul_up$3$clock),
         .a(mul_up$3$a),
         .b(mul_up$3$b),
@@ -16616,7 +16833,7 @@ module top$tri_unit$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2
         .y(mul_up$3$y),
         .valid_out(mul_up$3$valid_out)
     );
-    top$dop$doptrf$0$mul_0 mul_up$4(
+    top$tri_unit$tc$mul_up$0 mul_up$4(
         .clock(mul_up$4$clock),
         .a(mul_up$4$a),
         .b(mul_up$4$b),
@@ -16624,7 +16841,7 @@ module top$tri_unit$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2
         .y(mul_up$4$y),
         .valid_out(mul_up$4$valid_out)
     );
-    top$dop$doptrf$0$mul_0 mul_up$5(
+    top$tri_unit$tc$mul_up$0 mul_up$5(
         .clock(mul_up$5$clock),
         .a(mul_up$5$a),
         .b(mul_up$5$b),
@@ -16677,7 +16894,7 @@ module top$tri_unit$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2
         .y(add_v$4$y),
         .valid_out(add_v$4$valid_out)
     );
-    top$dop$doptrf$0$add_0 add_up$0(
+    top$tri_unit$tc$add_up$0 add_up$0(
         .clock(add_up$0$clock),
         .a(add_up$0$a),
         .b(add_up$0$b),
@@ -16686,7 +16903,7 @@ module top$tri_unit$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2
         .y(add_up$0$y),
         .valid_out(add_up$0$valid_out)
     );
-    top$dop$doptrf$0$add_0 add_up$1(
+    top$tri_unit$tc$add_up$0 add_up$1(
         .clock(add_up$1$clock),
         .a(add_up$1$a),
         .b(add_up$1$b),
@@ -16695,7 +16912,7 @@ module top$tri_unit$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2
         .y(add_up$1$y),
         .valid_out(add_up$1$valid_out)
     );
-    top$dop$doptrf$0$add_0 add_up$2(
+    top$tri_unit$tc$add_up$0 add_up$2(
         .clock(add_up$2$clock),
         .a(add_up$2$a),
         .b(add_up$2$b),
@@ -16704,7 +16921,7 @@ module top$tri_unit$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2
         .y(add_up$2$y),
         .valid_out(add_up$2$valid_out)
     );
-    top$dop$doptrf$0$add_0 add_up$3(
+    top$tri_unit$tc$add_up$0 add_up$3(
         .clock(add_up$3$clock),
         .a(add_up$3$a),
         .b(add_up$3$b),
@@ -16713,7 +16930,7 @@ module top$tri_unit$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2
         .y(add_up$3$y),
         .valid_out(add_up$3$valid_out)
     );
-    top$dop$doptrf$0$add_0 add_up$4(
+    top$tri_unit$tc$add_up$0 add_up$4(
         .clock(add_up$4$clock),
         .a(add_up$4$a),
         .b(add_up$4$b),
@@ -16722,7 +16939,7 @@ module top$tri_unit$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2
         .y(add_up$4$y),
         .valid_out(add_up$4$valid_out)
     );
-    top$dop$doptrf$0$add_0 add_up$5(
+    top$tri_unit$tc$add_up$0 add_up$5(
         .clock(add_up$5$clock),
         .a(add_up$5$a),
         .b(add_up$5$b),
@@ -16731,7 +16948,7 @@ module top$tri_unit$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2
         .y(add_up$5$y),
         .valid_out(add_up$5$valid_out)
     );
-    top$dop$doptrf$0$add_0 add_up$6(
+    top$tri_unit$tc$add_up$0 add_up$6(
         .clock(add_up$6$clock),
         .a(add_up$6$a),
         .b(add_up$6$b),
@@ -16740,7 +16957,7 @@ module top$tri_unit$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2
         .y(add_up$6$y),
         .valid_out(add_up$6$valid_out)
     );
-    top$dop$doptrf$0$add_0 add_up$7(
+    top$tri_unit$tc$add_up$0 add_up$7(
         .clock(add_up$7$clock),
         .a(add_up$7$a),
         .b(add_up$7$b),
@@ -19091,6 +19308,411 @@ module top$tri_unit$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2
 endmodule // top$tri_unit$tc
 
 
+module top$tri_unit$tc$add_up$0(clock,a,b,sub,valid_in,y,valid_out);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [23:0] a;
+    input wire  [23:0] b;
+    input wire  sub;
+    input wire  valid_in;
+    output reg  [23:0] y;
+    output reg  valid_out;
+    
+    // Constant declarations
+    localparam  round_up = 1'b1;
+    localparam  c_align_cap = 8'h13;
+    localparam  c_exp_ones = 10'b11111111;
+    
+    // Stub signals
+    reg  [23:0] unpack_a$x;
+    wire  unpack_a$sign;
+    wire  [7:0] unpack_a$exp;
+    wire  [15:0] unpack_a$sig;
+    wire  unpack_a$is_zero;
+    wire  unpack_a$is_inf;
+    wire  unpack_a$is_nan;
+    reg  [23:0] unpack_b$x;
+    wire  unpack_b$sign;
+    wire  [7:0] unpack_b$exp;
+    wire  [15:0] unpack_b$sig;
+    wire  unpack_b$is_zero;
+    wire  unpack_b$is_inf;
+    wire  unpack_b$is_nan;
+    reg  s1_valid$d;
+    wire  s1_valid$q;
+    reg  s1_valid$clock;
+    reg  s1_nan$d;
+    wire  s1_nan$q;
+    reg  s1_nan$clock;
+    reg  s1_inf$d;
+    wire  s1_inf$q;
+    reg  s1_inf$clock;
+    reg  s1_inf_sign$d;
+    wire  s1_inf_sign$q;
+    reg  s1_inf_sign$clock;
+    reg  s1_zero_sign$d;
+    wire  s1_zero_sign$q;
+    reg  s1_zero_sign$clock;
+    reg  s1_sign$d;
+    wire  s1_sign$q;
+    reg  s1_sign$clock;
+    reg  s1_eff_sub$d;
+    wire  s1_eff_sub$q;
+    reg  s1_eff_sub$clock;
+    reg  [7:0] s1_exp$d;
+    wire  [7:0] s1_exp$q;
+    reg  s1_exp$clock;
+    reg  [18:0] s1_big$d;
+    wire  [18:0] s1_big$q;
+    reg  s1_big$clock;
+    reg  [18:0] s1_small$d;
+    wire  [18:0] s1_small$q;
+    reg  s1_small$clock;
+    reg  [18:0] norm$x;
+    wire  [18:0] norm$y;
+    wire  [4:0] norm$lz;
+    reg  s2_valid$d;
+    wire  s2_valid$q;
+    reg  s2_valid$clock;
+    reg  s2_sign$d;
+    wire  s2_sign$q;
+    reg  s2_sign$clock;
+    reg  s2_nan$d;
+    wire  s2_nan$q;
+    reg  s2_nan$clock;
+    reg  s2_inf$d;
+    wire  s2_inf$q;
+    reg  s2_inf$clock;
+    reg  s2_zero$d;
+    wire  s2_zero$q;
+    reg  s2_zero$clock;
+    reg  s2_ovf$d;
+    wire  s2_ovf$q;
+    reg  s2_ovf$clock;
+    reg  [7:0] s2_efield$d;
+    wire  [7:0] s2_efield$q;
+    reg  s2_efield$clock;
+    reg  [17:0] s2_nm$d;
+    wire  [17:0] s2_nm$q;
+    reg  s2_nm$clock;
+    reg  round$round_up;
+    reg  round$sign;
+    reg  round$nan;
+    reg  round$inf;
+    reg  round$zero;
+    reg  round$ovf;
+    reg  [7:0] round$efield;
+    reg  [17:0] round$nm;
+    wire  [23:0] round$y;
+    reg  s3_valid$d;
+    wire  s3_valid$q;
+    reg  s3_valid$clock;
+    reg  [23:0] s3_y$d;
+    wire  [23:0] s3_y$q;
+    reg  s3_y$clock;
+    
+    // Local signals
+    reg  c1_b_sign;
+    reg  c1_swap;
+    reg  c1_big_sign;
+    reg  [7:0] c1_big_exp;
+    reg  [15:0] c1_big_sig;
+    reg  c1_small_sign;
+    reg  [7:0] c1_small_exp;
+    reg  [15:0] c1_small_sig;
+    reg  [7:0] c1_diff;
+    reg  [7:0] c1_shift;
+    reg  [18:0] c1_small_ext;
+    reg  [18:0] c1_aligned;
+    reg  [18:0] c1_back;
+    reg  c1_lost;
+    reg  c1_inf_sign;
+    reg  [19:0] c2_sum;
+    reg  c2_carry;
+    reg  c2_zero;
+    reg  [7:0] c2_limit;
+    reg  [7:0] c2_lz;
+    reg  [7:0] c2_shift;
+    reg  [18:0] c2_shifted;
+    reg  [9:0] c2_exp;
+    reg  [17:0] c2_nm;
+    reg  c2_sign;
+    
+    // Sub module instances
+    top$dop$doptrf$0$add_0$unpack_a unpack_a(
+        .x(unpack_a$x),
+        .sign(unpack_a$sign),
+        .exp(unpack_a$exp),
+        .sig(unpack_a$sig),
+        .is_zero(unpack_a$is_zero),
+        .is_inf(unpack_a$is_inf),
+        .is_nan(unpack_a$is_nan)
+    );
+    top$dop$doptrf$0$add_0$unpack_a unpack_b(
+        .x(unpack_b$x),
+        .sign(unpack_b$sign),
+        .exp(unpack_b$exp),
+        .sig(unpack_b$sig),
+        .is_zero(unpack_b$is_zero),
+        .is_inf(unpack_b$is_inf),
+        .is_nan(unpack_b$is_nan)
+    );
+    top$cnt_dop$pending s1_valid(
+        .d(s1_valid$d),
+        .q(s1_valid$q),
+        .clock(s1_valid$clock)
+    );
+    top$cnt_dop$pending s1_nan(
+        .d(s1_nan$d),
+        .q(s1_nan$q),
+        .clock(s1_nan$clock)
+    );
+    top$cnt_dop$pending s1_inf(
+        .d(s1_inf$d),
+        .q(s1_inf$q),
+        .clock(s1_inf$clock)
+    );
+    top$cnt_dop$pending s1_inf_sign(
+        .d(s1_inf_sign$d),
+        .q(s1_inf_sign$q),
+        .clock(s1_inf_sign$clock)
+    );
+    top$cnt_dop$pending s1_zero_sign(
+        .d(s1_zero_sign$d),
+        .q(s1_zero_sign$q),
+        .clock(s1_zero_sign$clock)
+    );
+    top$cnt_dop$pending s1_sign(
+        .d(s1_sign$d),
+        .q(s1_sign$q),
+        .clock(s1_sign$clock)
+    );
+    top$cnt_dop$pending s1_eff_sub(
+        .d(s1_eff_sub$d),
+        .q(s1_eff_sub$q),
+        .clock(s1_eff_sub$clock)
+    );
+    top$dop$doptrf$0$add_0$s1_exp s1_exp(
+        .d(s1_exp$d),
+        .q(s1_exp$q),
+        .clock(s1_exp$clock)
+    );
+    top$dop$doptrf$0$add_0$s1_big s1_big(
+        .d(s1_big$d),
+        .q(s1_big$q),
+        .clock(s1_big$clock)
+    );
+    top$dop$doptrf$0$add_0$s1_big s1_small(
+        .d(s1_small$d),
+        .q(s1_small$q),
+        .clock(s1_small$clock)
+    );
+    top$dop$doptrf$0$add_0$norm norm(
+        .x(norm$x),
+        .y(norm$y),
+        .lz(norm$lz)
+    );
+    top$cnt_dop$pending s2_valid(
+        .d(s2_valid$d),
+        .q(s2_valid$q),
+        .clock(s2_valid$clock)
+    );
+    top$cnt_dop$pending s2_sign(
+        .d(s2_sign$d),
+        .q(s2_sign$q),
+        .clock(s2_sign$clock)
+    );
+    top$cnt_dop$pending s2_nan(
+        .d(s2_nan$d),
+        .q(s2_nan$q),
+        .clock(s2_nan$clock)
+    );
+    top$cnt_dop$pending s2_inf(
+        .d(s2_inf$d),
+        .q(s2_inf$q),
+        .clock(s2_inf$clock)
+    );
+    top$cnt_dop$pending s2_zero(
+        .d(s2_zero$d),
+        .q(s2_zero$q),
+        .clock(s2_zero$clock)
+    );
+    top$cnt_dop$pending s2_ovf(
+        .d(s2_ovf$d),
+        .q(s2_ovf$q),
+        .clock(s2_ovf$clock)
+    );
+    top$dop$doptrf$0$add_0$s1_exp s2_efield(
+        .d(s2_efield$d),
+        .q(s2_efield$q),
+        .clock(s2_efield$clock)
+    );
+    top$dop$doptrf$0$add_0$s2_nm s2_nm(
+        .d(s2_nm$d),
+        .q(s2_nm$q),
+        .clock(s2_nm$clock)
+    );
+    top$dop$doptrf$0$add_0$round round(
+        .round_up(round$round_up),
+        .sign(round$sign),
+        .nan(round$nan),
+        .inf(round$inf),
+        .zero(round$zero),
+        .ovf(round$ovf),
+        .efield(round$efield),
+        .nm(round$nm),
+        .y(round$y)
+    );
+    top$cnt_dop$pending s3_valid(
+        .d(s3_valid$d),
+        .q(s3_valid$q),
+        .clock(s3_valid$clock)
+    );
+    top$base_na s3_y(
+        .d(s3_y$d),
+        .q(s3_y$q),
+        .clock(s3_y$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        s1_valid$clock = clock;
+        s1_nan$clock = clock;
+        s1_inf$clock = clock;
+        s1_inf_sign$clock = clock;
+        s1_zero_sign$clock = clock;
+        s1_sign$clock = clock;
+        s1_eff_sub$clock = clock;
+        s1_exp$clock = clock;
+        s1_big$clock = clock;
+        s1_small$clock = clock;
+        s1_valid$d = s1_valid$q;
+        s1_nan$d = s1_nan$q;
+        s1_inf$d = s1_inf$q;
+        s1_inf_sign$d = s1_inf_sign$q;
+        s1_zero_sign$d = s1_zero_sign$q;
+        s1_sign$d = s1_sign$q;
+        s1_eff_sub$d = s1_eff_sub$q;
+        s1_exp$d = s1_exp$q;
+        s1_big$d = s1_big$q;
+        s1_small$d = s1_small$q;
+        s2_valid$clock = clock;
+        s2_sign$clock = clock;
+        s2_nan$clock = clock;
+        s2_inf$clock = clock;
+        s2_zero$clock = clock;
+        s2_ovf$clock = clock;
+        s2_efield$clock = clock;
+        s2_nm$clock = clock;
+        s2_valid$d = s2_valid$q;
+        s2_sign$d = s2_sign$q;
+        s2_nan$d = s2_nan$q;
+        s2_inf$d = s2_inf$q;
+        s2_zero$d = s2_zero$q;
+        s2_ovf$d = s2_ovf$q;
+        s2_efield$d = s2_efield$q;
+        s2_nm$d = s2_nm$q;
+        s3_valid$clock = clock;
+        s3_y$clock = clock;
+        s3_valid$d = s3_valid$q;
+        s3_y$d = s3_y$q;
+        unpack_a$x = a;
+        unpack_b$x = b;
+        c1_b_sign = unpack_b$sign ^ sub;
+        c1_swap = a[(32'h0)+:(23)] < b[(32'h0)+:(23)];
+        c1_big_sign = unpack_a$sign;
+        c1_big_exp = unpack_a$exp;
+        c1_big_sig = unpack_a$sig;
+        c1_small_sign = c1_b_sign;
+        c1_small_exp = unpack_b$exp;
+        c1_small_sig = unpack_b$sig;
+        if (c1_swap) begin
+            c1_big_sign = c1_b_sign;
+            c1_big_exp = unpack_b$exp;
+            c1_big_sig = unpack_b$sig;
+            c1_small_sign = unpack_a$sign;
+            c1_small_exp = unpack_a$exp;
+            c1_small_sig = unpack_a$sig;
+        end
+        c1_diff = c1_big_exp - c1_small_exp;
+        c1_shift = c1_diff;
+        if (c1_diff > c_align_cap) begin
+            c1_shift = c_align_cap;
+        end
+        c1_small_ext = ((c1_small_sig) & 19'h7ffff) << 32'h3;
+        c1_aligned = c1_small_ext >> c1_shift;
+        c1_back = c1_aligned << c1_shift;
+        c1_lost = c1_back != c1_small_ext;
+        c1_inf_sign = c1_b_sign;
+        if (unpack_a$is_inf) begin
+            c1_inf_sign = unpack_a$sign;
+        end
+        s1_valid$d = valid_in;
+        s1_nan$d = unpack_a$is_nan | unpack_b$is_nan | (unpack_a$is_inf & unpack_b$is_inf & (unpack_a$sign ^ c1_b_sign));
+        s1_inf$d = unpack_a$is_inf | unpack_b$is_inf;
+        s1_inf_sign$d = c1_inf_sign;
+        s1_zero_sign$d = unpack_a$sign & c1_b_sign;
+        s1_sign$d = c1_big_sign;
+        s1_eff_sub$d = c1_big_sign ^ c1_small_sign;
+        s1_exp$d = c1_big_exp;
+        s1_big$d = ((c1_big_sig) & 19'h7ffff) << 32'h3;
+        s1_small$d = (c1_aligned & ~(1 << (32'h0)) | ((c1_aligned[32'h0] | c1_lost) << (32'h0)));
+        c2_sum = ((s1_big$q) & 20'hfffff) + ((s1_small$q) & 20'hfffff);
+        if (s1_eff_sub$q) begin
+            c2_sum = ((s1_big$q) & 20'hfffff) - ((s1_small$q) & 20'hfffff);
+        end
+        c2_carry = c2_sum[32'h13];
+        c2_zero = c2_sum == 32'h0;
+        norm$x = c2_sum[(32'h0)+:(19)];
+        c2_limit = s1_exp$q - 32'h1;
+        c2_lz = ((norm$lz) & 8'hff);
+        c2_shift = c2_lz;
+        if (c2_lz > c2_limit) begin
+            c2_shift = c2_limit;
+        end
+        c2_shifted = c2_sum[(32'h0)+:(19)] << c2_shift;
+        c2_exp = ((s1_exp$q) & 10'h3ff) - ((c2_shift) & 10'h3ff);
+        c2_nm = (((c2_shifted >> 32'h1) & 18'h3ffff) & ~(1 << (32'h0)) | ((c2_shifted[32'h1] | c2_shifted[32'h0]) << (32'h0)));
+        if (c2_carry) begin
+            c2_exp = ((s1_exp$q) & 10'h3ff) + 32'h1;
+            c2_nm = (((c2_sum >> 32'h2) & 18'h3ffff) & ~(1 << (32'h0)) | ((c2_sum[32'h2] | c2_sum[32'h1] | c2_sum[32'h0]) << (32'h0)));
+        end
+        c2_sign = s1_sign$q;
+        if (c2_zero) begin
+            c2_sign = s1_zero_sign$q;
+        end
+        if (s1_inf$q) begin
+            c2_sign = s1_inf_sign$q;
+        end
+        s2_valid$d = s1_valid$q;
+        s2_sign$d = c2_sign;
+        s2_nan$d = s1_nan$q;
+        s2_inf$d = s1_inf$q;
+        s2_zero$d = c2_zero;
+        s2_ovf$d = c2_exp >= c_exp_ones;
+        s2_efield$d = 32'h0;
+        if (c2_nm[32'h10 + 32'h1]) begin
+            s2_efield$d = ((c2_exp) & 8'hff);
+        end
+        s2_nm$d = c2_nm;
+        round$round_up = round_up;
+        round$sign = s2_sign$q;
+        round$nan = s2_nan$q;
+        round$inf = s2_inf$q;
+        round$zero = s2_zero$q;
+        round$ovf = s2_ovf$q;
+        round$efield = s2_efield$q;
+        round$nm = s2_nm$q;
+        s3_valid$d = s2_valid$q;
+        s3_y$d = round$y;
+        y = s3_y$q;
+        valid_out = s3_valid$q;
+    end
+    
+endmodule // top$tri_unit$tc$add_up$0
+
+
 module top$tri_unit$tc$add_v$0(clock,a,b,sub,valid_in,y,valid_out);
     
     // Module arguments
@@ -19494,6 +20116,449 @@ module top$tri_unit$tc$add_v$0(clock,a,b,sub,valid_in,y,valid_out);
     end
     
 endmodule // top$tri_unit$tc$add_v$0
+
+
+module top$tri_unit$tc$mul_up$0(clock,a,b,valid_in,y,valid_out);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [23:0] a;
+    input wire  [23:0] b;
+    input wire  valid_in;
+    output reg  [23:0] y;
+    output reg  valid_out;
+    
+    // Constant declarations
+    localparam  round_up = 1'b1;
+    localparam  c_exp_adj = 10'b10000001;
+    localparam  c_exp_ofs = 10'b100000000;
+    localparam  c_exp_norm_min = 10'b100000001;
+    localparam  c_exp_ovf = 10'b111111111;
+    localparam  c_shift_cap = 10'b10010;
+    
+    // Stub signals
+    reg  [23:0] unpack_a$x;
+    wire  unpack_a$sign;
+    wire  [7:0] unpack_a$exp;
+    wire  [15:0] unpack_a$sig;
+    wire  unpack_a$is_zero;
+    wire  unpack_a$is_inf;
+    wire  unpack_a$is_nan;
+    reg  [23:0] unpack_b$x;
+    wire  unpack_b$sign;
+    wire  [7:0] unpack_b$exp;
+    wire  [15:0] unpack_b$sig;
+    wire  unpack_b$is_zero;
+    wire  unpack_b$is_inf;
+    wire  unpack_b$is_nan;
+    reg  [15:0] norm_a$x;
+    wire  [15:0] norm_a$y;
+    wire  [4:0] norm_a$lz;
+    reg  [15:0] norm_b$x;
+    wire  [15:0] norm_b$y;
+    wire  [4:0] norm_b$lz;
+    reg  s1_valid$d;
+    wire  s1_valid$q;
+    reg  s1_valid$clock;
+    reg  s1_sign$d;
+    wire  s1_sign$q;
+    reg  s1_sign$clock;
+    reg  s1_nan$d;
+    wire  s1_nan$q;
+    reg  s1_nan$clock;
+    reg  s1_inf$d;
+    wire  s1_inf$q;
+    reg  s1_inf$clock;
+    reg  s1_zero$d;
+    wire  s1_zero$q;
+    reg  s1_zero$clock;
+    reg  [9:0] s1_exp$d;
+    wire  [9:0] s1_exp$q;
+    reg  s1_exp$clock;
+    reg  [15:0] s1_sig_a$d;
+    wire  [15:0] s1_sig_a$q;
+    reg  s1_sig_a$clock;
+    reg  [15:0] s1_sig_b$d;
+    wire  [15:0] s1_sig_b$q;
+    reg  s1_sig_b$clock;
+    reg  [15:0] sig_mul$a;
+    reg  [15:0] sig_mul$b;
+    wire  [17:0] sig_mul$hi;
+    wire  sig_mul$sticky;
+    reg  s2_valid$d;
+    wire  s2_valid$q;
+    reg  s2_valid$clock;
+    reg  s2_sign$d;
+    wire  s2_sign$q;
+    reg  s2_sign$clock;
+    reg  s2_nan$d;
+    wire  s2_nan$q;
+    reg  s2_nan$clock;
+    reg  s2_inf$d;
+    wire  s2_inf$q;
+    reg  s2_inf$clock;
+    reg  s2_zero$d;
+    wire  s2_zero$q;
+    reg  s2_zero$clock;
+    reg  [9:0] s2_exp$d;
+    wire  [9:0] s2_exp$q;
+    reg  s2_exp$clock;
+    reg  [17:0] s2_hi$d;
+    wire  [17:0] s2_hi$q;
+    reg  s2_hi$clock;
+    reg  s2_sticky$d;
+    wire  s2_sticky$q;
+    reg  s2_sticky$clock;
+    reg  s3_valid$d;
+    wire  s3_valid$q;
+    reg  s3_valid$clock;
+    reg  s3_sign$d;
+    wire  s3_sign$q;
+    reg  s3_sign$clock;
+    reg  s3_nan$d;
+    wire  s3_nan$q;
+    reg  s3_nan$clock;
+    reg  s3_inf$d;
+    wire  s3_inf$q;
+    reg  s3_inf$clock;
+    reg  s3_zero$d;
+    wire  s3_zero$q;
+    reg  s3_zero$clock;
+    reg  s3_ovf$d;
+    wire  s3_ovf$q;
+    reg  s3_ovf$clock;
+    reg  [7:0] s3_efield$d;
+    wire  [7:0] s3_efield$q;
+    reg  s3_efield$clock;
+    reg  [17:0] s3_nm$d;
+    wire  [17:0] s3_nm$q;
+    reg  s3_nm$clock;
+    reg  round$round_up;
+    reg  round$sign;
+    reg  round$nan;
+    reg  round$inf;
+    reg  round$zero;
+    reg  round$ovf;
+    reg  [7:0] round$efield;
+    reg  [17:0] round$nm;
+    wire  [23:0] round$y;
+    reg  s4_valid$d;
+    wire  s4_valid$q;
+    reg  s4_valid$clock;
+    reg  [23:0] s4_y$d;
+    wire  [23:0] s4_y$q;
+    reg  s4_y$clock;
+    
+    // Local signals
+    reg  [9:0] c1_exp;
+    reg  c3_top;
+    reg  [17:0] c3_nm;
+    reg  [9:0] c3_exp;
+    reg  [9:0] c3_shift;
+    reg  [9:0] c3_shift_cap;
+    reg  [17:0] c3_shifted;
+    reg  [17:0] c3_back;
+    reg  c3_lost;
+    reg  [7:0] c3_efield;
+    
+    // Sub module instances
+    top$dop$doptrf$0$add_0$unpack_a unpack_a(
+        .x(unpack_a$x),
+        .sign(unpack_a$sign),
+        .exp(unpack_a$exp),
+        .sig(unpack_a$sig),
+        .is_zero(unpack_a$is_zero),
+        .is_inf(unpack_a$is_inf),
+        .is_nan(unpack_a$is_nan)
+    );
+    top$dop$doptrf$0$add_0$unpack_a unpack_b(
+        .x(unpack_b$x),
+        .sign(unpack_b$sign),
+        .exp(unpack_b$exp),
+        .sig(unpack_b$sig),
+        .is_zero(unpack_b$is_zero),
+        .is_inf(unpack_b$is_inf),
+        .is_nan(unpack_b$is_nan)
+    );
+    top$dop$doptrf$0$mul_0$norm_a norm_a(
+        .x(norm_a$x),
+        .y(norm_a$y),
+        .lz(norm_a$lz)
+    );
+    top$dop$doptrf$0$mul_0$norm_a norm_b(
+        .x(norm_b$x),
+        .y(norm_b$y),
+        .lz(norm_b$lz)
+    );
+    top$cnt_dop$pending s1_valid(
+        .d(s1_valid$d),
+        .q(s1_valid$q),
+        .clock(s1_valid$clock)
+    );
+    top$cnt_dop$pending s1_sign(
+        .d(s1_sign$d),
+        .q(s1_sign$q),
+        .clock(s1_sign$clock)
+    );
+    top$cnt_dop$pending s1_nan(
+        .d(s1_nan$d),
+        .q(s1_nan$q),
+        .clock(s1_nan$clock)
+    );
+    top$cnt_dop$pending s1_inf(
+        .d(s1_inf$d),
+        .q(s1_inf$q),
+        .clock(s1_inf$clock)
+    );
+    top$cnt_dop$pending s1_zero(
+        .d(s1_zero$d),
+        .q(s1_zero$q),
+        .clock(s1_zero$clock)
+    );
+    top$d_cntr$queue$rd_ptr s1_exp(
+        .d(s1_exp$d),
+        .q(s1_exp$q),
+        .clock(s1_exp$clock)
+    );
+    top$d_cntr$last_a s1_sig_a(
+        .d(s1_sig_a$d),
+        .q(s1_sig_a$q),
+        .clock(s1_sig_a$clock)
+    );
+    top$d_cntr$last_a s1_sig_b(
+        .d(s1_sig_b$d),
+        .q(s1_sig_b$q),
+        .clock(s1_sig_b$clock)
+    );
+    top$dop$doptrf$0$mul_0$sig_mul sig_mul(
+        .a(sig_mul$a),
+        .b(sig_mul$b),
+        .hi(sig_mul$hi),
+        .sticky(sig_mul$sticky)
+    );
+    top$cnt_dop$pending s2_valid(
+        .d(s2_valid$d),
+        .q(s2_valid$q),
+        .clock(s2_valid$clock)
+    );
+    top$cnt_dop$pending s2_sign(
+        .d(s2_sign$d),
+        .q(s2_sign$q),
+        .clock(s2_sign$clock)
+    );
+    top$cnt_dop$pending s2_nan(
+        .d(s2_nan$d),
+        .q(s2_nan$q),
+        .clock(s2_nan$clock)
+    );
+    top$cnt_dop$pending s2_inf(
+        .d(s2_inf$d),
+        .q(s2_inf$q),
+        .clock(s2_inf$clock)
+    );
+    top$cnt_dop$pending s2_zero(
+        .d(s2_zero$d),
+        .q(s2_zero$q),
+        .clock(s2_zero$clock)
+    );
+    top$d_cntr$queue$rd_ptr s2_exp(
+        .d(s2_exp$d),
+        .q(s2_exp$q),
+        .clock(s2_exp$clock)
+    );
+    top$dop$doptrf$0$add_0$s2_nm s2_hi(
+        .d(s2_hi$d),
+        .q(s2_hi$q),
+        .clock(s2_hi$clock)
+    );
+    top$cnt_dop$pending s2_sticky(
+        .d(s2_sticky$d),
+        .q(s2_sticky$q),
+        .clock(s2_sticky$clock)
+    );
+    top$cnt_dop$pending s3_valid(
+        .d(s3_valid$d),
+        .q(s3_valid$q),
+        .clock(s3_valid$clock)
+    );
+    top$cnt_dop$pending s3_sign(
+        .d(s3_sign$d),
+        .q(s3_sign$q),
+        .clock(s3_sign$clock)
+    );
+    top$cnt_dop$pending s3_nan(
+        .d(s3_nan$d),
+        .q(s3_nan$q),
+        .clock(s3_nan$clock)
+    );
+    top$cnt_dop$pending s3_inf(
+        .d(s3_inf$d),
+        .q(s3_inf$q),
+        .clock(s3_inf$clock)
+    );
+    top$cnt_dop$pending s3_zero(
+        .d(s3_zero$d),
+        .q(s3_zero$q),
+        .clock(s3_zero$clock)
+    );
+    top$cnt_dop$pending s3_ovf(
+        .d(s3_ovf$d),
+        .q(s3_ovf$q),
+        .clock(s3_ovf$clock)
+    );
+    top$dop$doptrf$0$add_0$s1_exp s3_efield(
+        .d(s3_efield$d),
+        .q(s3_efield$q),
+        .clock(s3_efield$clock)
+    );
+    top$dop$doptrf$0$add_0$s2_nm s3_nm(
+        .d(s3_nm$d),
+        .q(s3_nm$q),
+        .clock(s3_nm$clock)
+    );
+    top$dop$doptrf$0$add_0$round round(
+        .round_up(round$round_up),
+        .sign(round$sign),
+        .nan(round$nan),
+        .inf(round$inf),
+        .zero(round$zero),
+        .ovf(round$ovf),
+        .efield(round$efield),
+        .nm(round$nm),
+        .y(round$y)
+    );
+    top$cnt_dop$pending s4_valid(
+        .d(s4_valid$d),
+        .q(s4_valid$q),
+        .clock(s4_valid$clock)
+    );
+    top$base_na s4_y(
+        .d(s4_y$d),
+        .q(s4_y$q),
+        .clock(s4_y$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        s1_valid$clock = clock;
+        s1_sign$clock = clock;
+        s1_nan$clock = clock;
+        s1_inf$clock = clock;
+        s1_zero$clock = clock;
+        s1_exp$clock = clock;
+        s1_sig_a$clock = clock;
+        s1_sig_b$clock = clock;
+        s1_valid$d = s1_valid$q;
+        s1_sign$d = s1_sign$q;
+        s1_nan$d = s1_nan$q;
+        s1_inf$d = s1_inf$q;
+        s1_zero$d = s1_zero$q;
+        s1_exp$d = s1_exp$q;
+        s1_sig_a$d = s1_sig_a$q;
+        s1_sig_b$d = s1_sig_b$q;
+        s2_valid$clock = clock;
+        s2_sign$clock = clock;
+        s2_nan$clock = clock;
+        s2_inf$clock = clock;
+        s2_zero$clock = clock;
+        s2_exp$clock = clock;
+        s2_hi$clock = clock;
+        s2_sticky$clock = clock;
+        s2_valid$d = s2_valid$q;
+        s2_sign$d = s2_sign$q;
+        s2_nan$d = s2_nan$q;
+        s2_inf$d = s2_inf$q;
+        s2_zero$d = s2_zero$q;
+        s2_exp$d = s2_exp$q;
+        s2_hi$d = s2_hi$q;
+        s2_sticky$d = s2_sticky$q;
+        s3_valid$clock = clock;
+        s3_sign$clock = clock;
+        s3_nan$clock = clock;
+        s3_inf$clock = clock;
+        s3_zero$clock = clock;
+        s3_ovf$clock = clock;
+        s3_efield$clock = clock;
+        s3_nm$clock = clock;
+        s3_valid$d = s3_valid$q;
+        s3_sign$d = s3_sign$q;
+        s3_nan$d = s3_nan$q;
+        s3_inf$d = s3_inf$q;
+        s3_zero$d = s3_zero$q;
+        s3_ovf$d = s3_ovf$q;
+        s3_efield$d = s3_efield$q;
+        s3_nm$d = s3_nm$q;
+        s4_valid$clock = clock;
+        s4_y$clock = clock;
+        s4_valid$d = s4_valid$q;
+        s4_y$d = s4_y$q;
+        unpack_a$x = a;
+        unpack_b$x = b;
+        norm_a$x = unpack_a$sig;
+        norm_b$x = unpack_b$sig;
+        c1_exp = ((unpack_a$exp) & 10'h3ff) + ((unpack_b$exp) & 10'h3ff) - ((norm_a$lz) & 10'h3ff) - ((norm_b$lz) & 10'h3ff) + c_exp_adj;
+        s1_valid$d = valid_in;
+        s1_sign$d = unpack_a$sign ^ unpack_b$sign;
+        s1_nan$d = unpack_a$is_nan | unpack_b$is_nan | (unpack_a$is_inf & unpack_b$is_zero) | (unpack_a$is_zero & unpack_b$is_inf);
+        s1_inf$d = unpack_a$is_inf | unpack_b$is_inf;
+        s1_zero$d = unpack_a$is_zero | unpack_b$is_zero;
+        s1_exp$d = c1_exp;
+        s1_sig_a$d = norm_a$y;
+        s1_sig_b$d = norm_b$y;
+        sig_mul$a = s1_sig_a$q;
+        sig_mul$b = s1_sig_b$q;
+        s2_valid$d = s1_valid$q;
+        s2_sign$d = s1_sign$q;
+        s2_nan$d = s1_nan$q;
+        s2_inf$d = s1_inf$q;
+        s2_zero$d = s1_zero$q;
+        s2_exp$d = s1_exp$q;
+        s2_hi$d = sig_mul$hi;
+        s2_sticky$d = sig_mul$sticky;
+        c3_top = s2_hi$q[32'h10 + 32'h1];
+        c3_nm = ((s2_hi$q << 32'h1) & ~(1 << (32'h0)) | ((s2_sticky$q) << (32'h0)));
+        if (c3_top) begin
+            c3_nm = (s2_hi$q & ~(1 << (32'h0)) | ((s2_hi$q[32'h0] | s2_sticky$q) << (32'h0)));
+        end
+        c3_exp = s2_exp$q + c3_top;
+        c3_shift = 32'h0;
+        if (c3_exp < c_exp_norm_min) begin
+            c3_shift = c_exp_norm_min - c3_exp;
+        end
+        c3_shift_cap = c3_shift;
+        if (c3_shift > c_shift_cap) begin
+            c3_shift_cap = c_shift_cap;
+        end
+        c3_shifted = c3_nm >> c3_shift_cap;
+        c3_back = c3_shifted << c3_shift_cap;
+        c3_lost = c3_back != c3_nm;
+        c3_efield = 32'h0;
+        if (c3_shift == 32'h0) begin
+            c3_efield = ((c3_exp - c_exp_ofs) & 8'hff);
+        end
+        s3_valid$d = s2_valid$q;
+        s3_sign$d = s2_sign$q;
+        s3_nan$d = s2_nan$q;
+        s3_inf$d = s2_inf$q;
+        s3_zero$d = s2_zero$q;
+        s3_ovf$d = c3_exp >= c_exp_ovf;
+        s3_efield$d = c3_efield;
+        s3_nm$d = (c3_shifted & ~(1 << (32'h0)) | ((c3_shifted[32'h0] | c3_lost) << (32'h0)));
+        round$round_up = round_up;
+        round$sign = s3_sign$q;
+        round$nan = s3_nan$q;
+        round$inf = s3_inf$q;
+        round$zero = s3_zero$q;
+        round$ovf = s3_ovf$q;
+        round$efield = s3_efield$q;
+        round$nm = s3_nm$q;
+        s4_valid$d = s3_valid$q;
+        s4_y$d = round$y;
+        y = s4_y$q;
+        valid_out = s4_valid$q;
+    end
+    
+endmodule // top$tri_unit$tc$mul_up$0
 
 
 module top$tri_unit$tc$mul_v$0(clock,a,b,valid_in,y,valid_out);

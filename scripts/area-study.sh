@@ -30,7 +30,8 @@ rm -rf "$dir"
 (cd "$ROOT" && cargo run --release --locked -q -- export-verilog --area --out "$dir" >/dev/null)
 # The units selected by --units (all by default).
 files=()
-for pat in $UNITS; do
+set -f; pats=($UNITS); set +f   # the patterns as words, not globbed against the current directory
+for pat in "${pats[@]}"; do
   for f in "$dir"/$pat.v; do [ -f "$f" ] && files+=("$f"); done
 done
 [ ${#files[@]} -gt 0 ] || { echo "area-study.sh: no unit of the study matches '$UNITS' (see $dir)" >&2; exit 2; }

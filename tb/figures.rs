@@ -582,6 +582,7 @@ fn accuracy_pareto_front() {
         technology: Technology::Paper,
         folds: vec![Folds::NONE],
         dop_bits: vec![DopBits::Full],
+        node_cache: accuracy::NodeCache::Preset,
     };
     let rows = accuracy::study(
         &plan(vec![6, 24], None),
@@ -600,7 +601,7 @@ fn accuracy_pareto_front() {
     let file = std::env::temp_dir().join(format!("cchip-area-{}.csv", std::process::id()));
     std::fs::write(
         &file,
-        "unit,cells\ndop_unit_k6_b32_ru,100\ndop_unit_k24_b32_ru,400\ntri_unit_b32_rne,1000\n",
+        "unit,cells\ndop_unit_k6_b32,100\ndop_unit_k24_b32,400\ntri_unit_b32_rne,1000\n",
     )
     .unwrap();
     let area = accuracy::Area::load(&file).unwrap();

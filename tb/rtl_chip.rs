@@ -480,12 +480,12 @@ fn sphere_fifo_cache() {
 }
 
 /// The papers' chip with its DOP unit in e8m15 and TRI_UNIT in binary32:
-/// 641-bit node words in 738-bit memory words, each unit fed its own format's fields; in
-/// lockstep with the cycle model, whose DOP and T.CHECK verdicts are the golden model's in
-/// those formats.
+/// 641-bit node words in 2,048-bit memory words, each unit fed its own format's fields, the
+/// DOP lanes rounding to nearest-even; in lockstep with the cycle model, whose DOP and
+/// T.CHECK verdicts are the golden model's in those formats and roundings.
 #[test]
-fn k24r_patch_fifo_all() {
-    let q = query("k24r_patch_fifo_all");
+fn k24r_rne_patch_fifo_all() {
+    let q = query("k24r_rne_patch_fifo_all");
     assert_eq!(q.chip, ChipKind::K24E8m15B32);
     let case = Case::of(&q);
     let tr = &case.lockstep::<10, 11, 9>(1, None)[0];
@@ -495,14 +495,15 @@ fn k24r_patch_fifo_all() {
 }
 
 /// The papers' chip in one narrow format throughout, e8m15 and e8m10 (641- and 521-bit node
-/// words, each unit in that format): a bunny patch at full speed in lockstep with the cycle
-/// model, whose verdicts are the golden model's in that format, and the trace the checked-in
-/// one (which Verilator reproduces in CI).
+/// words, each unit in that format), the DOP lanes rounding to nearest-even: a bunny patch
+/// at full speed in lockstep with the cycle model, whose verdicts are the golden model's in
+/// that format and rounding, and the trace the checked-in one (which Verilator reproduces in
+/// CI).
 #[test]
-fn k24_narrow_patch_fifo_all() {
+fn k24_narrow_rne_patch_fifo_all() {
     for (name, chip) in [
-        ("k24e_patch_fifo_all", ChipKind::K24E8m15),
-        ("k24m10_patch_fifo_all", ChipKind::K24E8m10),
+        ("k24e_rne_patch_fifo_all", ChipKind::K24E8m15),
+        ("k24m10_rne_patch_fifo_all", ChipKind::K24E8m10),
     ] {
         let q = query(name);
         assert_eq!(q.chip, chip);

@@ -49,8 +49,9 @@ fn big_stack(f: impl FnOnce() + Send + 'static) {
 // ---------------------------------------------------------------------------------------
 // The lane.
 
-/// One lane evaluation: d0 d1 d2, c0 c1 c2, c, e as bit patterns.
-type LaneIn = [u64; 8];
+/// One lane evaluation: d0 d1 d2, c0 c1 c2, c, e as bit patterns, and `round_up` (1:
+/// TowardPositive, 0: NearestEven).
+type LaneIn = [u64; 9];
 
 /// A lane: inputs `LaneIn`, outputs (s, flag).
 trait Lane: Pipelined<In = LaneIn, Out = (u64, bool)> {}
@@ -71,6 +72,7 @@ macro_rules! impl_lane {
                 self.c2.next = x[5].into();
                 self.c.next = x[6].into();
                 self.e.next = x[7].into();
+                self.round_up.next = x[8] == 1;
                 self.valid_in.next = valid;
             }
             fn out(&self) -> (bool, (u64, bool)) {
@@ -89,27 +91,28 @@ impl_lane!(b32::Doptrf);
 impl_lane!(e8m15::Doptrf);
 impl_lane!(e8m10::Doptrf);
 
-fn golden_lane(fmt: Format, r: Rounding, x: &LaneIn) -> (u64, bool) {
-    let v: Vec<f64> = x.iter().map(|&b| fmt.from_bits(b)).collect();
+/// A case's rounding (its `round_up`).
+fn rounding(x: &LaneIn) -> Rounding {
+    MODES[x[8] as usize]
+}
+
+fn golden_lane(fmt: Format, x: &LaneIn) -> (u64, bool) {
+    let r = rounding(x);
+    let v: Vec<f64> = x[..8].iter().map(|&b| fmt.from_bits(b)).collect();
     let s = doptrf::lane(fmt, r, [v[0], v[1], v[2]], [v[3], v[4], v[5]], v[6], v[7]);
     (fmt.to_bits(s), s < 0.0)
 }
 
-fn check_lane<L: Lane>(
-    uut: &mut L,
-    fmt: Format,
-    r: Rounding,
-    cases: &[LaneIn],
-) -> Result<(), TestCaseError> {
+fn check_lane<L: Lane>(uut: &mut L, fmt: Format, cases: &[LaneIn]) -> Result<(), TestCaseError> {
     let outs = run(uut, cases);
     let w = fmt.width() as usize / 4;
     for (x, &(s, flag)) in cases.iter().zip(&outs) {
-        let (gs, gf) = golden_lane(fmt, r, x);
+        let (gs, gf) = golden_lane(fmt, x);
         prop_assert!(
             s == gs && flag == gf,
             "{} {:?}: in {:0w$x?}: rtl s={:0w$x} flag={}, golden s={:0w$x} flag={}",
             fmt,
-            r,
+            rounding(x),
             x,
             s,
             flag,
@@ -124,13 +127,15 @@ fn check_lane<L: Lane>(
 // ---------------------------------------------------------------------------------------
 // Operand generators (bit patterns of a format with `e` exponent and `f` fraction bits).
 
-/// A lane case: independent operands, or C >= 0 (as the host sets it) with e chosen near
-/// -u (the flag's boundary: s is zero, a few ulps either side, or a tie).
+/// A lane case in rounding `r`: independent operands, or C >= 0 (as the host sets it) with e
+/// chosen near -u (the flag's boundary: s is zero, a few ulps either side, or a tie).
 fn lane_case(fmt: Format, r: Rounding) -> BoxedStrategy<LaneIn> {
     let t = Fmt::of(fmt);
     let pos = move |x: u64| x & ((1u64 << (t.e + t.f)) - 1);
+    let up = (r == Rounding::TowardPositive) as u64;
+    let with_r = move |x: [u64; 8]| std::array::from_fn(|i| if i < 8 { x[i] } else { up });
     prop_oneof![
-        1 => prop::array::uniform8(operand(t)),
+        1 => prop::array::uniform8(operand(t)).prop_map(with_r),
         2 => (prop::array::uniform8(operand(t)), any::<bool>(), -3i64..4)
             .prop_map(move |(mut x, cpos, delta)| {
                 if cpos {
@@ -148,7 +153,7 @@ fn lane_case(fmt: Format, r: Rounding) -> BoxedStrategy<LaneIn> {
                         x[7] = (nb as u64 & (1u64 << (t.e + t.f))) | mag as u64;
                     }
                 }
-                x
+                with_r(x)
             }),
     ]
     .boxed()
@@ -157,9 +162,12 @@ fn lane_case(fmt: Format, r: Rounding) -> BoxedStrategy<LaneIn> {
 const LANE_CASES: u32 = 4;
 const LANE_BATCH: usize = 500;
 
-fn prop_lane<L: Lane>(make: impl Fn(Rounding) -> L, fmt: Format, name: &str) {
-    for r in MODES {
-        let strat = prop::collection::vec(lane_case(fmt, r), LANE_BATCH);
+/// Batches of cases in both roundings, mixed case by case (the rounding travels with its
+/// case through the lane's stages).
+fn prop_lane<L: Lane>(make: impl Fn() -> L, fmt: Format, name: &str) {
+    {
+        let both = prop_oneof![lane_case(fmt, MODES[0]), lane_case(fmt, MODES[1])];
+        let strat = prop::collection::vec(both, LANE_BATCH);
         let mut runner = TestRunner::new(Config {
             cases: LANE_CASES,
             failure_persistence: None,
@@ -168,8 +176,8 @@ fn prop_lane<L: Lane>(make: impl Fn(Rounding) -> L, fmt: Format, name: &str) {
         let n = std::cell::Cell::new(0usize);
         let start = Instant::now();
         let res = runner.run(&strat, |cases| {
-            let mut uut = make(r);
-            check_lane(&mut uut, fmt, r, &cases)?;
+            let mut uut = make();
+            check_lane(&mut uut, fmt, &cases)?;
             n.set(n.get() + cases.len());
             Ok(())
         });
@@ -178,7 +186,7 @@ fn prop_lane<L: Lane>(make: impl Fn(Rounding) -> L, fmt: Format, name: &str) {
         }
         let dt = start.elapsed().as_secs_f64();
         println!(
-            "{name} {fmt} {r:?}: {} lane evaluations ok, {:.0} cycles/s",
+            "{name} {fmt}: {} lane evaluations ok, {:.0} cycles/s",
             n.get(),
             n.get() as f64 / dt
         );
@@ -186,7 +194,7 @@ fn prop_lane<L: Lane>(make: impl Fn(Rounding) -> L, fmt: Format, name: &str) {
 }
 
 /// Every special operand in every position, the other operands moderate.
-fn specials_lane<L: Lane>(make: impl Fn(Rounding) -> L, fmt: Format) {
+fn specials_lane<L: Lane>(make: impl Fn() -> L, fmt: Format) {
     let t = Fmt::of(fmt);
     let one = t.pack(false, t.bias(), 0);
     let base: LaneIn = [
@@ -198,6 +206,7 @@ fn specials_lane<L: Lane>(make: impl Fn(Rounding) -> L, fmt: Format) {
         one,
         t.pack(true, t.bias() + 2, 0),
         one,
+        0,
     ];
     let mut cases = vec![];
     for pos in 0..8 {
@@ -207,10 +216,18 @@ fn specials_lane<L: Lane>(make: impl Fn(Rounding) -> L, fmt: Format) {
             cases.push(x);
         }
     }
-    for r in MODES {
-        let mut uut = make(r);
-        check_lane(&mut uut, fmt, r, &cases).unwrap_or_else(|e| panic!("{}", e));
-        println!("Doptrf {fmt} {r:?}: {} special cases ok", cases.len());
+    for up in [0, 1] {
+        let cases: Vec<LaneIn> = cases
+            .iter()
+            .map(|x| std::array::from_fn(|i| if i < 8 { x[i] } else { up }))
+            .collect();
+        let mut uut = make();
+        check_lane(&mut uut, fmt, &cases).unwrap_or_else(|e| panic!("{}", e));
+        println!(
+            "Doptrf {fmt} {:?}: {} special cases ok",
+            MODES[up as usize],
+            cases.len()
+        );
     }
 }
 
@@ -236,18 +253,23 @@ fn lane_specials() {
     specials_lane(e8m10::doptrf_top, Format::E8M10);
 }
 
-/// The testbench sees a wrong lane: NearestEven checked against TowardPositive fails.
+/// The testbench sees a wrong lane: cases checked in the other rounding than they ran fail.
 #[test]
 fn lane_testbench_detects_mismatch() {
     use proptest::strategy::ValueTree;
     let mut runner = TestRunner::deterministic();
-    let r = Rounding::TowardPositive;
-    let cases = prop::collection::vec(lane_case(Format::BINARY32, r), 200)
+    let cases = prop::collection::vec(lane_case(Format::BINARY32, Rounding::TowardPositive), 200)
         .new_tree(&mut runner)
         .unwrap()
         .current();
-    let mut uut = b32::doptrf_top(Rounding::NearestEven);
-    assert!(check_lane(&mut uut, Format::BINARY32, r, &cases).is_err());
+    let outs = run(&mut b32::doptrf_top(), &cases);
+    let flipped = cases.iter().map(|x| {
+        golden_lane(
+            Format::BINARY32,
+            &[x[0], x[1], x[2], x[3], x[4], x[5], x[6], x[7], 1 - x[8]],
+        )
+    });
+    assert!(outs.iter().zip(flipped).any(|(o, g)| *o != g));
 }
 
 // ---------------------------------------------------------------------------------------
@@ -277,7 +299,14 @@ fn cycle<U: Unit>(uut: &mut U, probe: &mut Option<Probe<U>>) {
 }
 
 /// The host setup's words for the write port: (address, data) per lane and field.
-fn setup_words(fmt: Format, j: &[[u8; 3]], cmat: &[[f64; 3]], cvec: &[f64]) -> Vec<(u64, u64)> {
+fn setup_words(
+    fmt: Format,
+    r: Rounding,
+    j: &[[u8; 3]],
+    cmat: &[[f64; 3]],
+    cvec: &[f64],
+) -> Vec<(u64, u64)> {
+    let up = (r == Rounding::TowardPositive) as u64;
     let mut w = vec![];
     for i in 0..j.len() {
         let a = 8 * i as u64;
@@ -287,7 +316,7 @@ fn setup_words(fmt: Format, j: &[[u8; 3]], cmat: &[[f64; 3]], cvec: &[f64]) -> V
         w.push((a + 3, fmt.to_bits(cvec[i])));
         w.push((
             a + 4,
-            j[i][0] as u64 | (j[i][1] as u64) << 5 | (j[i][2] as u64) << 10,
+            j[i][0] as u64 | (j[i][1] as u64) << 5 | (j[i][2] as u64) << 10 | up << 15,
         ));
     }
     w
@@ -358,7 +387,7 @@ fn run_unit<U: Unit>(
 /// All node pairs of two soup trees under a pose, against `dop_overlap`. Returns
 /// (pairs, overlaps, cycles/s).
 fn unit_trees<U: Unit>(
-    make: impl Fn(Rounding) -> U,
+    make: impl Fn() -> U,
     fmt: Format,
     r: Rounding,
     n_tris: usize,
@@ -378,7 +407,7 @@ fn unit_trees<U: Unit>(
     let ta = DopTree::build(&soup(n_tris, 1).triangles_f64(), &cfg);
     let tb = DopTree::build(&soup(n_tris, 2).triangles_f64(), &cfg);
     let setup = HostSetup::new(&cfg, &pose, tb.coord_bound(), TriSide::UNUSED);
-    let words = setup_words(fmt, &setup.j, &setup.cmat, &setup.cvec);
+    let words = setup_words(fmt, r, &setup.j, &setup.cmat, &setup.cvec);
     let mut pairs = vec![];
     let mut want = vec![];
     for na in 0..ta.len() as u32 {
@@ -392,7 +421,7 @@ fn unit_trees<U: Unit>(
             want.push(dop_unit::dop_overlap(fmt, r, &setup, &d, &e));
         }
     }
-    let mut uut = make(r);
+    let mut uut = make();
     let start = Instant::now();
     let (outs, cycles) = run_unit(&mut uut, &words, &pairs, None);
     let rate = (cycles + words.len()) as f64 / start.elapsed().as_secs_f64();
@@ -408,7 +437,7 @@ fn unit_trees<U: Unit>(
     (pairs.len(), overlaps, rate)
 }
 
-fn unit_trees_all<U: Unit>(make: impl Fn(Rounding) -> U + Copy, fmt: Format, n_tris: usize) {
+fn unit_trees_all<U: Unit>(make: impl Fn() -> U + Copy, fmt: Format, n_tris: usize) {
     for r in MODES {
         for pose in [
             Pose::new(10.0, 20.0, 30.0, 0.3, 0.1, 0.0),
@@ -469,7 +498,7 @@ fn fold_k24() {
 }
 
 /// Random format values everywhere (C of either sign, specials) and random MUX controls.
-fn unit_random<U: Unit>(make: impl Fn(Rounding) -> U, fmt: Format, n_pairs: usize, seed: u64) {
+fn unit_random<U: Unit>(make: impl Fn() -> U, fmt: Format, n_pairs: usize, seed: u64) {
     use proptest::strategy::ValueTree;
     let k = U::K;
     let t = Fmt::of(fmt);
@@ -525,7 +554,7 @@ fn unit_random<U: Unit>(make: impl Fn(Rounding) -> U, fmt: Format, n_pairs: usiz
                 TriSide::UNUSED,
             )
         };
-        let words = setup_words(fmt, &j, &cmat, &cvec);
+        let words = setup_words(fmt, r, &j, &cmat, &cvec);
         let mut pairs = vec![];
         let mut want = vec![];
         for p in 0..n_pairs {
@@ -548,7 +577,7 @@ fn unit_random<U: Unit>(make: impl Fn(Rounding) -> U, fmt: Format, n_pairs: usiz
                 tag: p as u16,
             });
         }
-        let mut uut = make(r);
+        let mut uut = make();
         let (outs, _) = run_unit(&mut uut, &words, &pairs, None);
         for (i, (ov, tag)) in outs.iter().enumerate() {
             assert_eq!(*tag, i as u16);
@@ -600,7 +629,7 @@ fn write_vcd(name: &str, root: &str, buf: Vec<u8>) {
 #[test]
 fn vcd_traces() {
     big_stack(|| {
-        // the lane: a few binary32 cases, outward rounding
+        // the lane: a few binary32 cases, rounding up and to nearest by turns
         let f = Format::BINARY32;
         let b = |x: f64| f.to_bits(x);
         let cases: Vec<LaneIn> = vec![
@@ -613,6 +642,7 @@ fn vcd_traces() {
                 b(0.125),
                 b(-1.0),
                 b(-0.5),
+                1,
             ],
             [
                 b(1.5),
@@ -623,6 +653,7 @@ fn vcd_traces() {
                 b(0.1),
                 b(0.3),
                 b(-3.0),
+                0,
             ],
             [
                 b(f64::INFINITY),
@@ -633,6 +664,7 @@ fn vcd_traces() {
                 b(1.0),
                 b(0.0),
                 b(0.0),
+                1,
             ],
             [
                 b(1e-40),
@@ -643,18 +675,11 @@ fn vcd_traces() {
                 b(0.0),
                 b(0.0),
                 b(-2e-40),
+                0,
             ],
         ];
-        let outs = run_vcd(
-            &mut b32::doptrf_top(Rounding::TowardPositive),
-            &cases,
-            "doptrf_b32",
-            "doptrf",
-        );
-        let want: Vec<(u64, bool)> = cases
-            .iter()
-            .map(|x| golden_lane(f, Rounding::TowardPositive, x))
-            .collect();
+        let outs = run_vcd(&mut b32::doptrf_top(), &cases, "doptrf_b32", "doptrf");
+        let want: Vec<(u64, bool)> = cases.iter().map(|x| golden_lane(f, x)).collect();
         assert_eq!(outs, want);
         assert_eq!(
             vcd_outputs(&vcd_path("doptrf_b32"), "doptrf", "valid_out", "s"),
@@ -672,7 +697,13 @@ fn vcd_traces() {
             tb.coord_bound(),
             TriSide::UNUSED,
         );
-        let words = setup_words(f, &setup.j, &setup.cmat, &setup.cvec);
+        let words = setup_words(
+            f,
+            Rounding::TowardPositive,
+            &setup.j,
+            &setup.cmat,
+            &setup.cvec,
+        );
         let nodes: Vec<(u32, u32)> = (0..ta.len() as u32)
             .flat_map(|na| (0..tb.len() as u32).map(move |nb| (na, nb)))
             .take(12)
@@ -698,7 +729,7 @@ fn vcd_traces() {
                 )
             })
             .collect();
-        let mut uut = b32::dop_unit24_top(Rounding::TowardPositive);
+        let mut uut = b32::dop_unit24_top();
         let mut buf = vec![];
         {
             let vcd = std::cell::RefCell::new(Some(write_vcd_dump(
@@ -744,24 +775,17 @@ fn dop_units_pass_their_exported_vectors() {
                 .expect("exported unit")
                 .vectors()
         };
-        let v6 = sim::parse_dop_vectors(&text("dop_unit_k6_e8m15_ru"), e8m15::WIDTH).unwrap();
-        let run6 =
-            sim::run_dop_vectors(&mut e8m15::dop_unit6_top(Rounding::TowardPositive), &v6).unwrap();
+        let v6 = sim::parse_dop_vectors(&text("dop_unit_k6_e8m15"), e8m15::WIDTH).unwrap();
+        let run6 = sim::run_dop_vectors(&mut e8m15::dop_unit6_top(), &v6).unwrap();
         assert_eq!(run6.mismatches(&v6).count(), 0);
-        let v24 = sim::parse_dop_vectors(&text("dop_unit_k24_b32_ru"), b32::WIDTH).unwrap();
-        let run24 =
-            sim::run_dop_vectors(&mut b32::dop_unit24_top(Rounding::TowardPositive), &v24).unwrap();
+        let v24 = sim::parse_dop_vectors(&text("dop_unit_k24_b32"), b32::WIDTH).unwrap();
+        let run24 = sim::run_dop_vectors(&mut b32::dop_unit24_top(), &v24).unwrap();
         assert_eq!(run24.mismatches(&v24).count(), 0);
         assert!(v6.cases.len() > 900 && v24.cases.len() > 200);
         // the folded units: the same pairs, a pair every 2, 3, 6 clocks
         let fold = |ii: usize| {
             sim::parse_dop_vectors(
-                &text(&dop_unit_name(
-                    6,
-                    Format::REDUCED,
-                    Rounding::TowardPositive,
-                    ii as u32,
-                )),
+                &text(&dop_unit_name(6, Format::REDUCED, ii as u32)),
                 e8m15::WIDTH,
             )
             .unwrap()
@@ -769,42 +793,33 @@ fn dop_units_pass_their_exported_vectors() {
         let (v2, v3, v6f) = (fold(2), fold(3), fold(6));
         assert_eq!((v2.interval, v2.cases.len()), (2, v6.cases.len()));
         assert_eq!(
-            sim::run_dop_vectors(
-                &mut e8m15::dop_unit6_fold2_top(Rounding::TowardPositive),
-                &v2
-            )
-            .unwrap()
-            .mismatches(&v2)
-            .count(),
+            sim::run_dop_vectors(&mut e8m15::dop_unit6_fold2_top(), &v2)
+                .unwrap()
+                .mismatches(&v2)
+                .count(),
             0
         );
         assert_eq!(
-            sim::run_dop_vectors(
-                &mut e8m15::dop_unit6_fold3_top(Rounding::TowardPositive),
-                &v3
-            )
-            .unwrap()
-            .mismatches(&v3)
-            .count(),
+            sim::run_dop_vectors(&mut e8m15::dop_unit6_fold3_top(), &v3)
+                .unwrap()
+                .mismatches(&v3)
+                .count(),
             0
         );
         assert_eq!(
-            sim::run_dop_vectors(
-                &mut e8m15::dop_unit6_fold6_top(Rounding::TowardPositive),
-                &v6f
-            )
-            .unwrap()
-            .mismatches(&v6f)
-            .count(),
+            sim::run_dop_vectors(&mut e8m15::dop_unit6_fold6_top(), &v6f)
+                .unwrap()
+                .mismatches(&v6f)
+                .count(),
             0
         );
     });
 }
 
-/// Not a check: writes the folded k = 24 DOP units' Verilog (binary32, outward; none is
+/// Not a check: writes the folded k = 24 DOP units' Verilog (binary32; none is
 /// exported) for synthesis (docs/explanation/architecture.md, "Folded DOP unit"): `cargo test --release
 /// --test rtl_dop -- --ignored dop_unit_fold_verilog`, then `nice scripts/synth.sh --target
-/// ecp5 target/fold-area/dop_unit_fold*_k24_b32_ru.v`.
+/// ecp5 target/fold-area/dop_unit_fold*_k24_b32.v`.
 #[test]
 #[ignore]
 fn dop_unit_fold_verilog() {
@@ -812,14 +827,14 @@ fn dop_unit_fold_verilog() {
     let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("target/fold-area");
     std::fs::create_dir_all(&dir).unwrap();
     for ii in [4, 8, 12, 24] {
-        let (f, r) = (Format::BINARY32, Rounding::TowardPositive);
+        let f = Format::BINARY32;
         let v = std::thread::Builder::new()
             .stack_size(1 << 30)
-            .spawn(move || units::dop_unit_fold_verilog(ii, 24, f, r).unwrap())
+            .spawn(move || units::dop_unit_fold_verilog(ii, 24, f).unwrap())
             .unwrap()
             .join()
             .unwrap();
-        let p = dir.join(format!("{}.v", dop_unit_name(24, f, r, ii as u32)));
+        let p = dir.join(format!("{}.v", dop_unit_name(24, f, ii as u32)));
         std::fs::write(&p, dedup_modules(&v)).unwrap();
         eprintln!("wrote {}", p.display());
     }

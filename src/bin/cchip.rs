@@ -245,6 +245,12 @@ struct AccuracyArgs {
     /// (4 on date05-treelets, full on the others).
     #[arg(long, value_delimiter = ',')]
     dop_bits: Vec<DopBits>,
+    /// Node records held per object on every preset: 1, the RTL chips' (each configuration
+    /// then runs on a chip that is built, at its measured period); more, the cycle model's
+    /// LRU cache of them, whose chip is not built (its period estimated); or `preset`, each
+    /// preset's own (16 on date05 and wscg03, 64 on date05-treelets).
+    #[arg(long, value_name = "N|preset", default_value = "1")]
+    node_cache: accuracy::NodeCache,
     /// Yosys cells per unit (`unit,cells`, as scripts/area-study.sh writes
     /// docs/figures/area_cells.csv): adds each configuration's cells (DOP unit + TRI_UNIT,
     /// and with stored DOPs 2k decode stages) to the table and, with --plot, the plot of
@@ -481,6 +487,7 @@ fn accuracy(a: AccuracyArgs) -> Result<(), String> {
                 .flat_map(|&tri| a.dop_intervals.iter().map(move |&dop| Folds { tri, dop }))
                 .collect(),
             dop_bits: a.dop_bits.clone(),
+            node_cache: a.node_cache,
         };
         let shard = a.shard.unwrap_or(accuracy::Shard::ALL);
         let items = a

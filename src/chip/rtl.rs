@@ -103,15 +103,10 @@ fn fold_tag(ii: u32) -> String {
 }
 
 /// The DOP unit's name in `rtl/`, the area study and the timing tables: k DOPTRF lanes in
-/// `fmt` rounding with `r` (`dop_unit_k<k>_<format>_<rounding>`), or (`ii` > 1) k/ii lanes
+/// `fmt` (`dop_unit_k<k>_<format>`; their rounding is a setup word's), or (`ii` > 1) k/ii lanes
 /// taking a pair every `ii` clocks (`dop_unit_fold<ii>_k<k>_...`, `rtl::*::DopUnit<k>Fold<ii>`).
-pub fn dop_unit_name(k: usize, fmt: Format, r: Rounding, ii: u32) -> String {
-    format!(
-        "dop_unit_{}k{k}_{}_{}",
-        fold_tag(ii),
-        format_tag(fmt),
-        rounding_tag(r)
-    )
+pub fn dop_unit_name(k: usize, fmt: Format, ii: u32) -> String {
+    format!("dop_unit_{}k{k}_{}", fold_tag(ii), format_tag(fmt))
 }
 
 /// TRI_UNIT's name there: two T.CHECKs in `fmt` rounding with `r` (`tri_unit_<format>_<rounding>`),
@@ -126,13 +121,13 @@ pub fn tri_unit_name(fmt: Format, r: Rounding, ii: u32) -> String {
     )
 }
 
-/// A rounding's tag in the RTL's file names.
-/// The decode stage's name for `bits`-bit stored DOPs in `fmt` rounding `r`
-/// (`dop_decode_q4_b32_ru`: `rtl::b32::DopDecode`).
-pub fn dop_decode_name(fmt: Format, bits: u32, r: Rounding) -> String {
-    format!("dop_decode_q{bits}_{}_{}", format_tag(fmt), rounding_tag(r))
+/// The decode stage's name for `bits`-bit stored DOPs in `fmt` (`dop_decode_q4_b32`:
+/// `rtl::b32::DopDecode`; its rounding an input, the DOP lanes').
+pub fn dop_decode_name(fmt: Format, bits: u32) -> String {
+    format!("dop_decode_q{bits}_{}", format_tag(fmt))
 }
 
+/// A rounding's tag in the RTL's file names.
 pub fn rounding_tag(r: Rounding) -> &'static str {
     match r {
         Rounding::NearestEven => "rne",
@@ -148,8 +143,9 @@ pub fn rounding_tag(r: Rounding) -> &'static str {
 /// cycle model's `dop_interval`) and between TRI_UNIT's (1: `TriUnit`; an even ii:
 /// `TriUnitFold`, the cycle model's `tri_interval`), and rust-hdl's speed on
 /// it in clocks per second on this project's machine (docs/explanation/speed.md, `cargo bench --bench
-/// chip_sim`: for estimates before a run). Every chip has DOP lanes rounding outward,
-/// T.CHECK to nearest-even and a triangle cache of [`TRI_CACHE_LINES`] lines (host register
+/// chip_sim`: for estimates before a run). Every chip's DOP lanes round as the host's setup
+/// words say (`dop_rounding`: outward or nearest-even; [`config`](ChipKind::config) says
+/// outward), T.CHECK to nearest-even, and every chip has a triangle cache of [`TRI_CACHE_LINES`] lines (host register
 /// [`TRI_CACHE`](super::reg::TRI_CACHE) picks how many are used). Calls `$m!` with the rows, so that each layer makes
 /// what it needs of one table: the contract [`ChipKind`], the harness its adapters.
 #[macro_export]
@@ -161,10 +157,10 @@ macro_rules! rtl_chips {
             /// The papers' chip (DATE'05 §4): k = 24 in binary32.
             K24B32, "chip_b32_k24", b32, (24, BINARY32, BINARY32), true, 1, 1, 4.0;
             /// The papers' chip with its DOP datapath in e8m15 (format `e8m15/binary32`).
-            K24E8m15B32, "chip_e8m15_b32_k24", e8m15_b32, (24, REDUCED, BINARY32), false, 1, 1, 4.0;
+            K24E8m15B32, "chip_e8m15_b32_k24", e8m15_b32, (24, REDUCED, BINARY32), true, 1, 1, 4.0;
             /// The papers' chip (k = 24) in e8m15 throughout (format `reduced`). (rust-hdl's
             /// speed assumed to be `chip_e8m15_b32_k24`'s.)
-            K24E8m15, "chip_e8m15_k24", e8m15_k24, (24, REDUCED, REDUCED), false, 1, 1, 4.0;
+            K24E8m15, "chip_e8m15_k24", e8m15_k24, (24, REDUCED, REDUCED), true, 1, 1, 4.0;
             /// The papers' chip (k = 24) in e8m10 throughout, the study's narrowest format.
             /// (rust-hdl's speed assumed to be `chip_e8m15_b32_k24`'s.)
             K24E8m10, "chip_e8m10_k24", e8m10, (24, E8M10, E8M10), false, 1, 1, 4.0;
@@ -323,6 +319,8 @@ impl ChipKind {
             layout: super::config::MemLayout::Words,
             node_cache: 1,
             dop_bits: super::config::DopBits::Full,
+            // either DOP rounding: the host's setup words set the lanes'
+            dop_rounding: super::config::DopRounding::Outward,
             ..*c
         };
         let want = base(cfg);

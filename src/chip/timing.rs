@@ -125,15 +125,14 @@ impl Table {
 pub fn datapath_units(cfg: &ChipConfig, folds: Folds) -> Vec<(String, u32)> {
     let mut units = vec![(dop_unit(cfg, folds.dop), 1), (tri_unit(cfg, folds.tri), 1)];
     if let DopBits::Bits(b) = cfg.dop_bits {
-        let r = cfg.dop_rounding.op();
-        units.push((rtl::dop_decode_name(cfg.format.dop, b, r), 2 * cfg.k as u32));
+        units.push((rtl::dop_decode_name(cfg.format.dop, b), 2 * cfg.k as u32));
     }
     units
 }
 
 /// `cfg`'s DOP unit's name ([`rtl::dop_unit_name`]), taking a pair every `dop_interval` clocks.
 pub fn dop_unit(cfg: &ChipConfig, dop_interval: u32) -> String {
-    rtl::dop_unit_name(cfg.k, cfg.format.dop, cfg.dop_rounding.op(), dop_interval)
+    rtl::dop_unit_name(cfg.k, cfg.format.dop, dop_interval)
 }
 
 /// The clocks between the pairs a folded unit takes (1: unfolded): the cycle model's
@@ -201,7 +200,7 @@ fn chains(cfg: &ChipConfig, folds: Folds) -> [Vec<Vec<String>>; 3] {
     let chip = || vec![chip_name(cfg, Folds::NONE)];
     let dop_parts = [
         vec![dop_unit(cfg, folds.dop)],
-        vec![format!("doptrf_{d}_{dr}")],
+        vec![format!("doptrf_{d}")],
         vec![format!("fp_mul_{d}_{dr}"), format!("fp_add_{d}_{dr}")],
     ];
     let dop = (folds.dop == 1)
@@ -391,8 +390,8 @@ fn slowest_unit(
 }
 
 /// A chip's name for a configuration the RTL does not build (as `rtl_chips!` names them; a
-/// rounding other than the RTL chips', outward DOP lanes and T.CHECK to nearest-even, named
-/// too, so that no such configuration takes a built chip's row for its own).
+/// T.CHECK rounding other than the RTL chips' nearest-even named too, so that no such
+/// configuration takes a built chip's row for its own; the DOP lanes round either way).
 fn cfg_tag(cfg: &ChipConfig) -> String {
     let (d, t) = (
         rtl::format_tag(cfg.format.dop),
@@ -403,18 +402,12 @@ fn cfg_tag(cfg: &ChipConfig) -> String {
     } else {
         format!("{d}_{t}_k{}", cfg.k)
     };
-    let (dr, tr) = (cfg.dop_rounding.op(), cfg.tri_rounding);
-    let dop = if dr == Rounding::TowardPositive {
+    let tri = if cfg.tri_rounding == Rounding::NearestEven {
         String::new()
     } else {
-        format!("_dop_{}", rtl::rounding_tag(dr))
+        format!("_tri_{}", rtl::rounding_tag(cfg.tri_rounding))
     };
-    let tri = if tr == Rounding::NearestEven {
-        String::new()
-    } else {
-        format!("_tri_{}", rtl::rounding_tag(tr))
-    };
-    format!("{formats}{dop}{tri}")
+    format!("{formats}{tri}")
 }
 
 /// How a clock period was obtained (the JSON's `period_source`).
@@ -533,7 +526,7 @@ impl Clock {
             _ if !widened.is_empty() => widened.join("; "),
             None => format!("{} is not built in RTL", chip_name(cfg, folds)),
             Some((k, Err(_))) if k.config().dop_bits != cfg.dop_bits => format!("{} reads node records of dop_bits = {}; this configuration's decode stage (dop_bits = {}) is not built", k.name(), k.config().dop_bits, cfg.dop_bits),
-            Some((k, Err(_))) => format!("{} is built with one node record per object, its layouts and up to {} triangle cache lines; this configuration's memory side differs", k.name(), rtl::TRI_CACHE_LINES),
+            Some((_, Err(e))) => e,
             Some((k, Ok(()))) if !table.periods.contains_key(k.name()) => format!("{} has no row", k.name()),
             Some(_) => String::new(),
         };
@@ -615,7 +608,7 @@ mod tests {
                     fp_add_e8m15_ru,1,7.0,x\n\
                     fp_mul_e8m15_rne,1,5.0,x\n\
                     fp_add_e8m15_rne,1,8.0,x\n\
-                    doptrf_b32_ru,1,30.0,x\n\
+                    doptrf_b32,1,30.0,x\n\
                     pair_queue_n4,1,4.0,x\n\
                     tcheck_e8m15_rne,1,,x\n";
         let t = Table::parse(text, "t.csv").unwrap();
@@ -655,22 +648,22 @@ mod tests {
             8.0
         );
         // the FPGA table's `period_ns` where there is no `min_period_ns`: exact, its Fmax rounded
-        let t = Table::parse("unit,fmax_mhz,period_ns\npair_queue_n4,23.1,43.214\ndop_unit_k6_e8m15_ru,30,33.3\ntri_unit_e8m15_rne,30,33.3\n", "t.csv").unwrap();
+        let t = Table::parse("unit,fmax_mhz,period_ns\npair_queue_n4,23.1,43.214\ndop_unit_k6_e8m15,30,33.3\ntri_unit_e8m15_rne,30,33.3\n", "t.csv").unwrap();
         assert_eq!(
             Clock::measured(&t, &cfg, Folds::NONE).unwrap().period_ns,
             43.214
         );
         // a block's row stands for its parts': the DOP unit's 6, not its lone lane's 7.5
-        let t = Table::parse("unit,min_period_ns\ndop_unit_k6_e8m15_ru,6\ndoptrf_e8m15_ru,7.5\ntri_unit_e8m15_rne,5\npair_queue_n4,1\n", "t").unwrap();
+        let t = Table::parse("unit,min_period_ns\ndop_unit_k6_e8m15,6\ndoptrf_e8m15,7.5\ntri_unit_e8m15_rne,5\npair_queue_n4,1\n", "t").unwrap();
         let c = Clock::measured(&t, &cfg, Folds::NONE).unwrap();
         assert_eq!(
             (c.period_ns, c.slowest.as_deref()),
-            (6.0, Some("dop_unit_k6_e8m15_ru"))
+            (6.0, Some("dop_unit_k6_e8m15"))
         );
         assert!(
             !c.not_measured
                 .iter()
-                .any(|u| u.ends_with("_ru") && (u.starts_with("doptrf") || u.starts_with("fp_"))),
+                .any(|u| u.starts_with("doptrf") || (u.ends_with("_ru") && u.starts_with("fp_"))),
             "{:?}",
             c.not_measured
         );
@@ -690,27 +683,30 @@ mod tests {
             "t",
         )
         .unwrap();
-        // a rounding the RTL chips are not built with has a chip of its own name, not measured
+        // the DOP lanes round either way (a setup word): nearest-even runs on the built chip
         let t2 = Table::parse(
-            "unit,min_period_ns\nfp_add_e8m15_rne,8\nchip_e8m15_k6,9\n",
+            "unit,min_period_ns\nfp_add_e8m15_ru,8\nchip_e8m15_k6,9\n",
             "t",
         )
         .unwrap();
-        let ne = Clock::measured(
-            &t2,
-            &ChipConfig {
-                dop_rounding: DopRounding::NearestEven,
-                ..cfg
-            },
-            Folds::NONE,
-        )
-        .unwrap();
-        assert_eq!((ne.period_ns, ne.source), (8.0, PeriodSource::Estimated));
+        let ne = ChipConfig {
+            dop_rounding: DopRounding::NearestEven,
+            ..cfg
+        };
+        let c = Clock::measured(&t2, &ne, Folds::NONE).unwrap();
+        assert_eq!((c.period_ns, c.source), (9.0, PeriodSource::Measured));
+        // a T.CHECK rounding the RTL chips are not built with has a chip of its own name,
+        // not measured
+        let tri_up = ChipConfig {
+            tri_rounding: Rounding::TowardPositive,
+            ..cfg
+        };
+        let c = Clock::measured(&t2, &tri_up, Folds::NONE).unwrap();
+        assert_eq!((c.period_ns, c.source), (8.0, PeriodSource::Estimated));
         assert!(
-            ne.not_measured
-                .contains(&"chip_e8m15_k6_dop_rne".to_string()),
+            c.not_measured.contains(&"chip_e8m15_k6_tri_ru".to_string()),
             "{:?}",
-            ne.not_measured
+            c.not_measured
         );
         // the RTL chip with another memory side stands in (estimated)
         let cached = ChipConfig {
@@ -721,7 +717,7 @@ mod tests {
         assert_eq!((c.period_ns, c.source), (9.0, PeriodSource::Estimated));
         assert!(
             c.source()
-                .contains("chip_e8m15_k6 is built with one node record per object"),
+                .contains("the RTL chips hold one node record per object; this configuration has node_cache = 16"),
             "{}",
             c.source()
         );
@@ -826,7 +822,7 @@ mod tests {
         );
         let t = Table::parse(
             "unit,min_period_ns
-dop_unit_k6_e8m15_ru,5
+dop_unit_k6_e8m15,5
 tri_unit_e8m15_rne,20
 tri_unit_fold16_e8m15_rne,9
 chip_e8m15_k6,8
@@ -849,7 +845,11 @@ chip_e8m15_k6,8
             c.source()
         );
         // the unfolded chip stands for the DOP datapath it shares, not a lone lane's row
-        let t = Table::parse("unit,min_period_ns\ntri_unit_fold16_e8m15_rne,9\nchip_e8m15_k6,8\ndoptrf_e8m15_ru,30\n", "t").unwrap();
+        let t = Table::parse(
+            "unit,min_period_ns\ntri_unit_fold16_e8m15_rne,9\nchip_e8m15_k6,8\ndoptrf_e8m15,30\n",
+            "t",
+        )
+        .unwrap();
         assert_eq!(
             Clock::measured(&t, &cfg, Folds { tri: 16, dop: 1 })
                 .unwrap()
@@ -863,7 +863,7 @@ chip_e8m15_k6,8
         );
         // the folded unit not measured: the unfolded one's period stands in, a lower bound
         let t = Table::parse(
-            "unit,min_period_ns\ndop_unit_k6_e8m15_ru,5\ntri_unit_e8m15_rne,20\nchip_e8m15_k6,8\n",
+            "unit,min_period_ns\ndop_unit_k6_e8m15,5\ntri_unit_e8m15_rne,20\nchip_e8m15_k6,8\n",
             "t",
         )
         .unwrap();
@@ -884,7 +884,7 @@ chip_e8m15_k6,8
         // ... unless a timed chip is built on that fold: its row stands in (the DOP unit at
         // ii = 2 with TRI_UNIT at 16: chip_e8m15_k6_fold16's row, TRI_UNIT at 16 in a chip)
         let t = Table::parse(
-            "unit,min_period_ns\ndop_unit_fold2_k6_e8m15_ru,5\ntri_unit_e8m15_rne,6\nchip_e8m15_k6,8\nchip_e8m15_k6_fold16,11\n",
+            "unit,min_period_ns\ndop_unit_fold2_k6_e8m15,5\ntri_unit_e8m15_rne,6\nchip_e8m15_k6,8\nchip_e8m15_k6_fold16,11\n",
             "t",
         )
         .unwrap();
@@ -896,8 +896,9 @@ chip_e8m15_k6,8
                 Some("chip_e8m15_k6_fold16 (for tri_unit_fold16_e8m15_rne)")
             )
         );
-        assert!(units(&cfg, Folds { tri: 1, dop: 6 })
-            .contains(&"dop_unit_fold6_k6_e8m15_ru".to_string()));
+        assert!(
+            units(&cfg, Folds { tri: 1, dop: 6 }).contains(&"dop_unit_fold6_k6_e8m15".to_string())
+        );
         assert_eq!(
             units(&cfg, Folds { tri: 8, dop: 1 })
                 .iter()
@@ -913,7 +914,7 @@ chip_e8m15_k6,8
             ["chip_e8m15_k6", "chip_e8m15_k6_dop6_tri32"]
         );
         assert!(
-            both.contains(&"dop_unit_fold6_k6_e8m15_ru".to_string())
+            both.contains(&"dop_unit_fold6_k6_e8m15".to_string())
                 && both.contains(&"tri_unit_fold32_e8m15_rne".to_string()),
             "{both:?}"
         );

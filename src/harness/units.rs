@@ -54,11 +54,11 @@ struct FormatRtl {
     fp_mul: VerilogFn,
     fp_add: VerilogFn,
     fp_scale: fn() -> String,
-    doptrf: VerilogFn,
+    doptrf: fn() -> String,
     tcheck: VerilogFn,
     tri_unit: VerilogFn,
-    dop_unit: fn(usize, Rounding) -> Option<String>,
-    dop_unit_fold: fn(usize, usize, Rounding) -> Option<String>,
+    dop_unit: fn(usize) -> Option<String>,
+    dop_unit_fold: fn(usize, usize) -> Option<String>,
 }
 
 /// Every format the RTL is built in.
@@ -87,11 +87,11 @@ fn rtl_of(fmt: Format) -> Option<&'static FormatRtl> {
 }
 
 /// The folded DOP unit's Verilog, where the RTL stamps out this k, interval and format.
-pub fn dop_unit_fold_verilog(ii: usize, k: usize, fmt: Format, r: Rounding) -> Option<String> {
-    (rtl_of(fmt)?.dop_unit_fold)(k, ii, r)
+pub fn dop_unit_fold_verilog(ii: usize, k: usize, fmt: Format) -> Option<String> {
+    (rtl_of(fmt)?.dop_unit_fold)(k, ii)
 }
 
-/// The folded DOP units exported (`rtl::*::DopUnit<k>Fold<ii>`, outward rounding): (ii, k,
+/// The folded DOP units exported (`rtl::*::DopUnit<k>Fold<ii>`): (ii, k,
 /// format), with the unfolded unit's vectors driven every ii clocks.
 const DOP_FOLDS: [(usize, usize, Format); 3] = [
     (2, 6, Format::REDUCED),
@@ -100,8 +100,8 @@ const DOP_FOLDS: [(usize, usize, Format); 3] = [
 ];
 
 /// The DOP unit's Verilog, where the RTL builds this k and format.
-fn dop_unit_verilog(k: usize, fmt: Format, r: Rounding) -> Option<String> {
-    (rtl_of(fmt)?.dop_unit)(k, r)
+fn dop_unit_verilog(k: usize, fmt: Format) -> Option<String> {
+    (rtl_of(fmt)?.dop_unit)(k)
 }
 
 /// The folded T.CHECKs and TRI_UNITs exported (binary32, nearest-even; `rtl::b32::TCheckFold`,
@@ -165,36 +165,31 @@ pub fn all() -> Vec<Unit> {
     units
 }
 
-/// The DOPTRF lanes: binary32 in both roundings, the narrower formats rounding up.
+/// The DOPTRF lanes, one per format (their rounding an input).
 fn doptrf_units() -> Vec<Unit> {
-    let mut units = vec![];
-    for (fmt, r) in [
-        (Format::BINARY32, Rounding::TowardPositive),
-        (Format::BINARY32, Rounding::NearestEven),
-        (Format::REDUCED, Rounding::TowardPositive),
-        (Format::E8M10, Rounding::TowardPositive),
-    ] {
-        let name = format!("doptrf_{}_{}", format_tag(fmt), rounding_tag(r));
-        let n2 = name.clone();
-        let v = rtl_of(fmt).expect("the RTL is built in this format").doptrf;
-        units.push(Unit {
-            name,
-            latency: crate::chip::rtl::DOP_LATENCY as u32,
-            verilog: Box::new(move || v(r)),
-            vectors: Box::new(move || lane_vectors(&n2, fmt, r)),
-        });
-    }
-    units
+    FORMATS
+        .iter()
+        .map(|f| {
+            let (fmt, v) = (f.fmt, f.doptrf);
+            let name = format!("doptrf_{}", format_tag(fmt));
+            let n2 = name.clone();
+            Unit {
+                name,
+                latency: crate::chip::rtl::DOP_LATENCY as u32,
+                verilog: Box::new(v),
+                vectors: Box::new(move || lane_vectors(&n2, fmt)),
+            }
+        })
+        .collect()
 }
 
 /// The DOP units: k = 6 in e8m15 and k = 24 in binary32, then the folded ones.
 fn dop_units() -> Vec<Unit> {
     let mut units = vec![];
     for (k, fmt) in [(6, Format::REDUCED), (24, Format::BINARY32)] {
-        let r = Rounding::TowardPositive;
-        let name = dop_unit_name(k, fmt, r, 1);
+        let name = dop_unit_name(k, fmt, 1);
         let n2 = name.clone();
-        let verilog = move || dop_unit_verilog(k, fmt, r).expect("the RTL builds this k");
+        let verilog = move || dop_unit_verilog(k, fmt).expect("the RTL builds this k");
         units.push(Unit {
             name,
             latency: crate::chip::rtl::DOP_LATENCY as u32,
@@ -203,11 +198,10 @@ fn dop_units() -> Vec<Unit> {
         });
     }
     for (ii, k, fmt) in DOP_FOLDS {
-        let r = Rounding::TowardPositive;
-        let name = dop_unit_name(k, fmt, r, ii as u32);
+        let name = dop_unit_name(k, fmt, ii as u32);
         let n2 = name.clone();
         let verilog =
-            move || dop_unit_fold_verilog(ii, k, fmt, r).expect("the RTL stamps out this fold");
+            move || dop_unit_fold_verilog(ii, k, fmt).expect("the RTL stamps out this fold");
         let latency = crate::chip::rtl::dop_fold_latency(ii) as u32;
         units.push(Unit {
             name,
@@ -305,27 +299,38 @@ fn pair_queue_unit() -> Unit {
     }
 }
 
-/// `dop_decode_q4_b32_ru`: the decode stage of 4-bit stored DOPs in binary32, rounding up
-/// (`rtl::b32::DopDecode`, the DOP lanes' rounding).
+/// `dop_decode_q4_b32`: the decode stage of 4-bit stored DOPs in binary32
+/// (`rtl::b32::DopDecode`; its rounding an input, the DOP lanes').
 fn dop_decode_unit() -> Unit {
-    let (fmt, r) = (Format::BINARY32, Rounding::TowardPositive);
+    let fmt = Format::BINARY32;
     let bits = crate::rtl::b32::DopDecode::CODE_BITS as u32;
-    let name = crate::chip::rtl::dop_decode_name(fmt, bits, r);
+    let name = crate::chip::rtl::dop_decode_name(fmt, bits);
     let n2 = name.clone();
     Unit {
         name,
         latency: crate::chip::rtl::DOP_DECODE_LATENCY as u32,
-        verilog: Box::new(move || crate::rtl::b32::verilog_dop_decode(r)),
-        vectors: Box::new(move || dop_decode_vectors(&n2, fmt, r, bits)),
+        verilog: Box::new(crate::rtl::b32::verilog_dop_decode),
+        vectors: Box::new(move || dop_decode_vectors(&n2, fmt, bits)),
     }
 }
 
-/// Vectors `r q ef y` of a decode stage (golden [`decode`](crate::dop::stored::decode)):
+/// The two roundings of a modal unit's `round_up` column in a random order: each case
+/// runs in both, and a rounding that met the wrong case in the pipeline shows.
+fn both_roundings(rng: &mut impl Rng) -> [Rounding; 2] {
+    let r = [Rounding::TowardPositive, Rounding::NearestEven];
+    if rng.random_range(0..2) == 0 {
+        r
+    } else {
+        [r[1], r[0]]
+    }
+}
+
+/// Vectors `round_up r q ef y` of a decode stage (golden [`decode`](crate::dop::stored::decode)), each case in both roundings ([`both_roundings`]):
 /// every code at every exponent with `r = 0` (`y` is minus the step: each step the stage
 /// makes, normal or subnormal, shows bit for bit), every special `r` with the extreme codes
 /// and exponents, then random `r` (any pattern, or a multiple of the step, so that the
 /// difference cancels or lands on a tie) with random codes and exponents.
-fn dop_decode_vectors(name: &str, fmt: Format, r: Rounding, bits: u32) -> String {
+fn dop_decode_vectors(name: &str, fmt: Format, bits: u32) -> String {
     use crate::chip::layout::{exp_field_bits, exp_range};
     use crate::dop::stored::decode;
     let (lo, hi) = exp_range(fmt, bits);
@@ -336,9 +341,9 @@ fn dop_decode_vectors(name: &str, fmt: Format, r: Rounding, bits: u32) -> String
         exp_field_bits(fmt, bits).div_ceil(4) as usize,
     );
     let mut out = String::new();
-    let _ = writeln!(out, "// r q ef y");
+    let _ = writeln!(out, "// round_up r q ef y");
     let _ = writeln!(out, "// latency: {}", crate::chip::rtl::DOP_DECODE_LATENCY);
-    let _ = writeln!(out, "// {name}: y = r - q 2^(ef {lo}) in {fmt}, rounding {r:?}, q < 2^{bits}, ef <= {efs}; golden: collision_chip::dop::stored::decode");
+    let _ = writeln!(out, "// {name}: y = r - q 2^(ef {lo}) in {fmt}, round_up 1: TowardPositive, 0: NearestEven, q < 2^{bits}, ef <= {efs}; golden: collision_chip::dop::stored::decode");
     let mut cases: Vec<(u64, u32, u32)> = (0..=top)
         .flat_map(|q| (0..=efs).map(move |ef| (0, q, ef)))
         .collect();
@@ -361,8 +366,11 @@ fn dop_decode_vectors(name: &str, fmt: Format, r: Rounding, bits: u32) -> String
         (x, q, ef)
     }));
     for (x, q, ef) in cases {
-        let y = fmt.to_bits(decode(fmt, r, fmt.from_bits(x), q, lo + ef as i32));
-        let _ = writeln!(out, "{x:0digits$x} {q:0qd$x} {ef:0ed$x} {y:0digits$x}");
+        for r in both_roundings(&mut rng) {
+            let y = fmt.to_bits(decode(fmt, r, fmt.from_bits(x), q, lo + ef as i32));
+            let up = (r == Rounding::TowardPositive) as u8;
+            let _ = writeln!(out, "{up} {x:0digits$x} {q:0qd$x} {ef:0ed$x} {y:0digits$x}");
+        }
     }
     out
 }
@@ -466,15 +474,16 @@ fn value(rng: &mut impl Rng, fmt: Format) -> f64 {
     }
 }
 
-/// Vectors of one DOPTRF lane: `d0 d1 d2 c0 c1 c2 c e s flag` (golden::doptrf::lane), with
-/// C >= 0 as the host sets it, and half of the cases with e = -u +- a few ulps so that s lands
-/// on zero, a tie or the sign boundary.
-fn lane_vectors(name: &str, fmt: Format, r: Rounding) -> String {
+/// Vectors of one DOPTRF lane: `round_up d0 d1 d2 c0 c1 c2 c e s flag`
+/// (golden::doptrf::lane), each case in both roundings ([`both_roundings`]), with C >= 0 as
+/// the host sets it, and half of the cases with e = -u +- a few ulps (of the first rounding's
+/// u) so that s lands on zero, a tie or the sign boundary.
+fn lane_vectors(name: &str, fmt: Format) -> String {
     use crate::golden::doptrf;
     let mut out = String::new();
-    let _ = writeln!(out, "// d0 d1 d2 c0 c1 c2 c e s flag");
+    let _ = writeln!(out, "// round_up d0 d1 d2 c0 c1 c2 c e s flag");
     let _ = writeln!(out, "// latency: 15");
-    let _ = writeln!(out, "// {name}: s = ((d0 c0 + d1 c1) + (d2 c2 + c)) + e in {fmt}, rounding {r:?}, flag = s < 0; golden: golden::doptrf::lane");
+    let _ = writeln!(out, "// {name}: s = ((d0 c0 + d1 c1) + (d2 c2 + c)) + e in {fmt}, round_up 1: TowardPositive, 0: NearestEven, flag = s < 0; golden: golden::doptrf::lane");
     let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(0xd0b ^ name.len() as u64);
     for i in 0..RANDOM_CASES {
         let d = [
@@ -484,10 +493,11 @@ fn lane_vectors(name: &str, fmt: Format, r: Rounding) -> String {
         ];
         let cm = [0; 3].map(|_| value(&mut rng, fmt).abs());
         let c = value(&mut rng, fmt);
+        let rs = both_roundings(&mut rng);
         let e = if i % 2 == 0 {
             value(&mut rng, fmt)
         } else {
-            let u = doptrf::transformed(fmt, r, d, cm, c);
+            let u = doptrf::transformed(fmt, rs[0], d, cm, c);
             let mut e = -u;
             for _ in 0..rng.random_range(0..4) {
                 e = if rng.random_range(0..2) == 0 {
@@ -498,22 +508,25 @@ fn lane_vectors(name: &str, fmt: Format, r: Rounding) -> String {
             }
             e
         };
-        let s = doptrf::lane(fmt, r, d, cm, c, e);
-        let h = |x| hex(fmt, x);
-        let _ = writeln!(
-            out,
-            "{} {} {} {} {} {} {} {} {} {}",
-            h(d[0]),
-            h(d[1]),
-            h(d[2]),
-            h(cm[0]),
-            h(cm[1]),
-            h(cm[2]),
-            h(c),
-            h(e),
-            h(s),
-            (s < 0.0) as u8
-        );
+        for r in rs {
+            let s = doptrf::lane(fmt, r, d, cm, c, e);
+            let h = |x| hex(fmt, x);
+            let _ = writeln!(
+                out,
+                "{} {} {} {} {} {} {} {} {} {} {}",
+                (r == Rounding::TowardPositive) as u8,
+                h(d[0]),
+                h(d[1]),
+                h(d[2]),
+                h(cm[0]),
+                h(cm[1]),
+                h(cm[2]),
+                h(c),
+                h(e),
+                h(s),
+                (s < 0.0) as u8
+            );
+        }
     }
     out
 }
@@ -569,7 +582,7 @@ fn dop_unit_vectors(name: &str, k: usize, fmt: Format, interval: usize) -> Strin
         let _ = writeln!(out, "// interval: {interval}");
     }
     let _ = writeln!(out, "// {name}: k = {k}, {fmt}, outward; all node pairs of two DOP trees of 'soup' meshes under one pose; golden: golden::dop_unit::dop_overlap");
-    for (a, v) in super::chip_io::dop_unit_setup_words(fmt, &setup) {
+    for (a, v) in super::chip_io::dop_unit_setup_words(fmt, r, &setup) {
         let _ = writeln!(out, "@ 1 {a:02x} {v:0w$x}");
     }
     let mut tag = 0u16;
@@ -622,21 +635,20 @@ pub fn write_vectors(dir: &Path) -> std::io::Result<Vec<String>> {
 }
 
 /// The units whose Yosys cells the area study counts (scripts/area-study.sh,
-/// docs/explanation/accuracy-cost.md): the DOP unit for every k, format and DOP rounding the RTL builds (those
-/// in rtl/ are the same Verilog; the others are the same macro at another k or rounding),
+/// docs/explanation/accuracy-cost.md): the DOP unit for every k and format the RTL builds (those
+/// in rtl/ are the same Verilog; the others are the same macro at another k; either DOP
+/// rounding is a setup word's),
 /// TRI_UNIT per format, and the decode stage of stored DOPs (one plane; a chip has 2k).
 fn area_units() -> Vec<(String, Text)> {
     let mut units: Vec<(String, Text)> = vec![];
     for fmt in FORMATS.map(|f| f.fmt) {
         for k in crate::chip::config::SUPPORTED_K {
-            for r in [Rounding::TowardPositive, Rounding::NearestEven] {
-                units.push((
-                    dop_unit_name(k, fmt, r, 1),
-                    Box::new(move || {
-                        dop_unit_verilog(k, fmt, r).expect("the RTL builds every supported k")
-                    }),
-                ));
-            }
+            units.push((
+                dop_unit_name(k, fmt, 1),
+                Box::new(move || {
+                    dop_unit_verilog(k, fmt).expect("the RTL builds every supported k")
+                }),
+            ));
         }
     }
     for f in &FORMATS {
@@ -649,14 +661,14 @@ fn area_units() -> Vec<(String, Text)> {
     units.extend(area_fold_units());
     units.push((
         dop_decode_unit().name,
-        Box::new(|| crate::rtl::b32::verilog_dop_decode(Rounding::TowardPositive)),
+        Box::new(crate::rtl::b32::verilog_dop_decode),
     ));
     units
 }
 
 /// TRI_UNIT folded at every interval of the fold study (`AREA_TRI_FOLDS`) and the DOP unit
 /// folded at every (k, interval) the RTL stamps out (`rtl::*::DOP_UNIT_FOLDS`), in both
-/// formats and DOP roundings.
+/// formats.
 fn area_fold_units() -> Vec<(String, Text)> {
     let mut units: Vec<(String, Text)> = vec![];
     for fmt in [Format::BINARY32, Format::REDUCED] {
@@ -674,14 +686,12 @@ fn area_fold_units() -> Vec<(String, Text)> {
             ));
         }
         for &(k, ii) in crate::rtl::b32::DOP_UNIT_FOLDS {
-            for r in [Rounding::TowardPositive, Rounding::NearestEven] {
-                units.push((
-                    dop_unit_name(k, fmt, r, ii as u32),
-                    Box::new(move || {
-                        dop_unit_fold_verilog(ii, k, fmt, r).expect("the RTL stamps this fold")
-                    }),
-                ));
-            }
+            units.push((
+                dop_unit_name(k, fmt, ii as u32),
+                Box::new(move || {
+                    dop_unit_fold_verilog(ii, k, fmt).expect("the RTL stamps this fold")
+                }),
+            ));
         }
     }
     units

@@ -121,7 +121,7 @@ pub(crate) use host_kernel;
 
 /// Stamps out `CollisionChip<N, NP1, NM1>` in the calling module. Arguments: `K` the DOP's
 /// k; `Dop = dop_new` its unit's type (its `LATENCY` sets the side delay line) and
-/// constructor from the DOP rounding (`DopUnit6 = DopUnit6::new` for k = 6), followed by
+/// constructor (`DopUnit6 = DopUnit6::new` for k = 6; its rounding is a setup word's), followed by
 /// `=> in_ready` for a folded DOP unit whose `in_ready` gates D_CNTR's issue; `Tri = tri_new` TRI_UNIT's type and constructor from T.CHECK's
 /// rounding (`TriUnit = TriUnit::new`, or a `TriUnitFold` on its plan: any block with
 /// `TriUnit`'s ports, `tri_unit_ports!`, whose `in_ready` paces the leaf register); `WD` the
@@ -290,8 +290,8 @@ macro_rules! chip {
             /// Queue entries.
             pub const CAPACITY: usize = 1 << N;
 
-            /// DOP lanes round with `dop`, T.CHECK with `tri`.
-            pub fn new(dop: Rounding, tri: Rounding) -> Self {
+            /// T.CHECK rounds with `tri` (the DOP lanes as the host's setup words say).
+            pub fn new(tri: Rounding) -> Self {
                 Self {
                     clock: Default::default(),
                     host_we: Default::default(),
@@ -344,7 +344,7 @@ macro_rules! chip {
                     go: Default::default(),
                     d_cntr: Default::default(),
                     mem_port: MemoryPort::new(),
-                    dop: ($dop_new)(dop),
+                    dop: ($dop_new)(),
                     side: Default::default(),
                     leaf_fifo: Default::default(),
                     leaf_count: Default::default(),
@@ -683,8 +683,8 @@ macro_rules! chip {
 
         /// A chip ready to simulate as a top-level block (inputs claimed, connected).
         /// Large (TRI_UNIT): build it on a thread with a big stack.
-        pub fn chip_top<const N: usize, const NP1: usize, const NM1: usize>(dop: Rounding, tri: Rounding) -> CollisionChip<N, NP1, NM1> {
-            top_level!(CollisionChip::<N, NP1, NM1>::new(dop, tri); clock, host_we, host_addr, host_data, start,
+        pub fn chip_top<const N: usize, const NP1: usize, const NM1: usize>(tri: Rounding) -> CollisionChip<N, NP1, NM1> {
+            top_level!(CollisionChip::<N, NP1, NM1>::new(tri); clock, host_we, host_addr, host_data, start,
                 mem_req_ready, mem_resp_valid, mem_resp_data, res_ready)
         }
     };

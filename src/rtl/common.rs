@@ -299,3 +299,33 @@ macro_rules! fp_common {
     };
 }
 pub(crate) use fp_common;
+
+/// Where a floating-point unit's rounding comes from, `round_up` (1: TowardPositive, 0:
+/// NearestEven): a constant fixed at construction (`Constant<Bit>`: the exported FP units,
+/// T.CHECK's) or an input (`Signal<In, Bit>`: the DOP lanes', whose rounding the host sets
+/// per query with the setup words).
+pub trait RoundUp: rust_hdl::prelude::Block {
+    fn val(&self) -> bool;
+}
+
+impl RoundUp for rust_hdl::prelude::Constant<bool> {
+    fn val(&self) -> bool {
+        rust_hdl::prelude::Constant::val(self)
+    }
+}
+
+impl RoundUp for rust_hdl::prelude::Signal<rust_hdl::prelude::In, bool> {
+    fn val(&self) -> bool {
+        rust_hdl::prelude::Signal::<rust_hdl::prelude::In, bool>::val(self)
+    }
+}
+
+/// `round_up` for `rounding` in the unit `unit` (which implements the two roundings).
+pub fn round_up(rounding: crate::format::Rounding, unit: &str) -> bool {
+    use crate::format::Rounding;
+    match rounding {
+        Rounding::NearestEven => false,
+        Rounding::TowardPositive => true,
+        Rounding::TowardNegative => panic!("{unit}: TowardNegative is not implemented"),
+    }
+}

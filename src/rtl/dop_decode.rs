@@ -9,8 +9,9 @@ macro_rules! dop_decode {
     ($W:tt, $F:tt, $B:tt, $X:tt) => {
         /// `y = r ⊖ q 2^e`, `e = e_lo + ef` ([`exp_range`](crate::chip::layout::exp_range)):
         /// the record's reference distance `r` less the plane's code `q` in steps of `2^e`,
-        /// in the format with the adder's rounding
-        /// ([`dop::stored::decode`](crate::dop::stored::decode)).
+        /// in the format, rounded as `round_up` says (1: TowardPositive, 0: NearestEven: the DOP
+        /// lanes' rounding; taken with the operands, it meets the adder's round stage through
+        /// `r_add`) ([`dop::stored::decode`](crate::dop::stored::decode)).
         ///
         /// `q 2^e` is a value of the format whatever `q` and `ef` (the layout's exponent range:
         /// at least the smallest subnormal, at most the largest finite over `2^B - 1`), so it is
@@ -22,7 +23,8 @@ macro_rules! dop_decode {
         /// memory port's record multiplexer, whose path would otherwise run on through the
         /// step and the adder's alignment), then `FpAdd` with `sub`: latency 4
         /// ([`DOP_DECODE_LATENCY`](crate::chip::rtl::DOP_DECODE_LATENCY)), one plane a clock.
-        /// Ports: in `clock`, `r[W]`, `q[B]`, `ef[X]`, `valid_in`; out `y[W]`, `valid_out`.
+        /// Ports: in `clock`, `r[W]`, `q[B]`, `ef[X]`, `valid_in`, `round_up`; out `y[W]`,
+        /// `valid_out`.
         #[derive(LogicBlock)]
         pub struct DopDecode {
             pub clock: Signal<In, Clock>,
@@ -30,12 +32,15 @@ macro_rules! dop_decode {
             pub q: Signal<In, Bits<$B>>,
             pub ef: Signal<In, Bits<$X>>,
             pub valid_in: Signal<In, Bit>,
+            pub round_up: Signal<In, Bit>,
             pub y: Signal<Out, Bits<$W>>,
             pub valid_out: Signal<Out, Bit>,
             s0_r: DFF<Bits<$W>>,
             s0_q: DFF<Bits<$B>>,
             s0_ef: DFF<Bits<$X>>,
             s0_valid: DFF<Bit>,
+            s0_round: DFF<Bit>,
+            r_add: $crate::rtl::delay::Delay<Bit, 2>,
             c_f: Constant<Bits<16>>,
             c_b: Constant<Bits<16>>,
             /// `q` after i one-bit normalising shifts, and the shifts taken.
@@ -44,7 +49,7 @@ macro_rules! dop_decode {
             expo: Signal<Local, Bits<16>>,
             frac: Signal<Local, Bits<$F>>,
             step: Signal<Local, Bits<$W>>,
-            add: FpAdd,
+            add: FpAddModal,
         }
 
         impl DopDecode {
@@ -54,20 +59,22 @@ macro_rules! dop_decode {
             /// The exponent field's bits.
             pub const EXP_FIELD_BITS: usize = $X;
 
-            /// A decode stage subtracting with `rounding` (the DOP lanes').
-            pub fn new(rounding: Rounding) -> Self {
+            pub fn new() -> Self {
                 Self {
                     clock: Default::default(),
                     r: Default::default(),
                     q: Default::default(),
                     ef: Default::default(),
                     valid_in: Default::default(),
+                    round_up: Default::default(),
                     y: Default::default(),
                     valid_out: Default::default(),
                     s0_r: Default::default(),
                     s0_q: Default::default(),
                     s0_ef: Default::default(),
                     s0_valid: Default::default(),
+                    s0_round: Default::default(),
+                    r_add: Default::default(),
                     c_f: Constant::new(($F as u64).into()),
                     c_b: Constant::new(($B as u64).into()),
                     norm: Default::default(),
@@ -75,16 +82,25 @@ macro_rules! dop_decode {
                     expo: Default::default(),
                     frac: Default::default(),
                     step: Default::default(),
-                    add: FpAdd::new(rounding),
+                    add: Default::default(),
                 }
+            }
+        }
+
+        impl Default for DopDecode {
+            fn default() -> Self {
+                Self::new()
             }
         }
 
         impl Logic for DopDecode {
             #[hdl_gen]
             fn update(&mut self) {
-                clock!(self, clock, add);
-                dff_setup!(self, clock, s0_r, s0_q, s0_ef, s0_valid);
+                clock!(self, clock, add, r_add);
+                dff_setup!(self, clock, s0_r, s0_q, s0_ef, s0_valid, s0_round);
+                self.s0_round.d.next = self.round_up.val();
+                self.r_add.d.next = self.s0_round.q.val();
+                self.add.round_up.next = self.r_add.q.val();
                 self.s0_r.d.next = self.r.val();
                 self.s0_q.d.next = self.q.val();
                 self.s0_ef.d.next = self.ef.val();
@@ -125,13 +141,13 @@ macro_rules! dop_decode {
         }
 
         /// A decode stage ready to simulate as a top-level block (inputs claimed, connected).
-        pub fn dop_decode_top(rounding: Rounding) -> DopDecode {
-            top_level!(DopDecode::new(rounding); clock, r, q, ef, valid_in)
+        pub fn dop_decode_top() -> DopDecode {
+            top_level!(DopDecode::new(); clock, r, q, ef, valid_in, round_up)
         }
 
         /// Verilog of [`dop_decode_top`] (top module `top`).
-        pub fn verilog_dop_decode(rounding: Rounding) -> String {
-            generate_verilog(&dop_decode_top(rounding))
+        pub fn verilog_dop_decode() -> String {
+            generate_verilog(&dop_decode_top())
         }
     };
 }
@@ -149,7 +165,8 @@ macro_rules! dop_unit_coded {
         ///
         /// Ports: [`DopUnit24`]'s, with `d[k]`, `e[k]` the codes (`B` bits) and per plane the
         /// record's reference distances `rd[k]`, `re[k]` (`W`) and exponent fields `efd[k]`,
-        /// `efe[k]` (`X`: `e - e_lo`).
+        /// `efe[k]` (`X`: `e - e_lo`). Plane i's decode stages round as lane i does: `rnd[i]`
+        /// holds bit 15 of lane i's setup field 4, written with it.
         #[derive(LogicBlock)]
         pub struct DopUnitCoded24 {
             pub clock: Signal<In, Clock>,
@@ -167,6 +184,8 @@ macro_rules! dop_unit_coded {
             pub overlap: Signal<Out, Bit>,
             pub tag_out: Signal<Out, Bits<16>>,
             pub valid_out: Signal<Out, Bit>,
+            at_rnd: [Constant<Bits<8>>; 24],
+            rnd: [DFF<Bit>; 24],
             dec_d: [DopDecode; 24],
             dec_e: [DopDecode; 24],
             tag_dec: $crate::rtl::delay::Delay<Bits<16>, { DopDecode::LATENCY }>,
@@ -176,8 +195,7 @@ macro_rules! dop_unit_coded {
         impl DopUnitCoded24 {
             pub const LATENCY: usize = DopDecode::LATENCY + DopUnit24::LATENCY;
 
-            /// Lanes and decode stages rounding with `rounding`.
-            pub fn new(rounding: Rounding) -> Self {
+            pub fn new() -> Self {
                 Self {
                     clock: Default::default(),
                     load_en: Default::default(),
@@ -194,11 +212,19 @@ macro_rules! dop_unit_coded {
                     overlap: Default::default(),
                     tag_out: Default::default(),
                     valid_out: Default::default(),
-                    dec_d: std::array::from_fn(|_| DopDecode::new(rounding)),
-                    dec_e: std::array::from_fn(|_| DopDecode::new(rounding)),
+                    at_rnd: std::array::from_fn(|i| Constant::new(((8 * i + 4) as u64).into())),
+                    rnd: $crate::rtl::reg_ring::array_init(),
+                    dec_d: std::array::from_fn(|_| DopDecode::new()),
+                    dec_e: std::array::from_fn(|_| DopDecode::new()),
                     tag_dec: Default::default(),
-                    unit: DopUnit24::new(rounding),
+                    unit: DopUnit24::new(),
                 }
+            }
+        }
+
+        impl Default for DopUnitCoded24 {
+            fn default() -> Self {
+                Self::new()
             }
         }
 
@@ -207,6 +233,13 @@ macro_rules! dop_unit_coded {
             fn update(&mut self) {
                 clock!(self, clock, tag_dec, unit);
                 for i in 0..24 {
+                    self.rnd[i].clock.next = self.clock.val();
+                    self.rnd[i].d.next = self.rnd[i].q.val();
+                    if self.load_en.val() & (self.load_addr.val() == self.at_rnd[i].val()) {
+                        self.rnd[i].d.next = self.load_data.val().get_bit(15);
+                    }
+                    self.dec_d[i].round_up.next = self.rnd[i].q.val();
+                    self.dec_e[i].round_up.next = self.rnd[i].q.val();
                     self.dec_d[i].clock.next = self.clock.val();
                     self.dec_d[i].r.next = self.rd[i].val();
                     self.dec_d[i].q.next = self.d[i].val();

@@ -2,123 +2,12 @@
 //! doing k/L of the k directions in successive clocks, a pair taken every k/L clocks; stamped
 //! out per format by `dop_unit_fold!` for the (k, L) pairs listed there.
 
-/// Stamps out `DopSetup<K>` and the folded DOP units `DopUnit<k>Fold<ii>` (k directions, a pair
+/// Stamps out the folded DOP units `DopUnit<k>Fold<ii>` (k directions, a pair
 /// every ii = k/L clocks on L lanes) in the calling module, which must also hold that format's
-/// `Doptrf` and `KlmSel<K, N>`, with their constructors and Verilog export. Argument: `W` word
+/// `Doptrf`, `KlmSel<K, N>` and `DopSetup<K>`, with their constructors and Verilog export. Argument: `W` word
 /// width.
 macro_rules! dop_unit_fold {
     ($W:tt) => {
-        /// The DOP unit's per-query registers (DATE'05 Eq. 10's C, c and D.KLMSEL's controls j,
-        /// one set per direction i), written through the host's setup port as the unfolded
-        /// [`DopUnit6`]'s inline registers are: in `load_en`, `load_addr[8]`, `load_data[W]`;
-        /// `load_addr = 8 i + f` writes direction i's field f (0, 1, 2: `C_i0..2`; 3: `c_i`; 4:
-        /// `j_i0 | j_i1 << 5 | j_i2 << 10`) at the rising edge. Out `c0[K] c1[K] c2[K] c[K]`,
-        /// `j0[K] j1[K] j2[K]`, the registers' contents.
-        #[derive(LogicBlock)]
-        pub struct DopSetup<const K: usize> {
-            pub clock: Signal<In, Clock>,
-            pub load_en: Signal<In, Bit>,
-            pub load_addr: Signal<In, Bits<8>>,
-            pub load_data: Signal<In, Bits<$W>>,
-            pub c0: [Signal<Out, Bits<$W>>; K],
-            pub c1: [Signal<Out, Bits<$W>>; K],
-            pub c2: [Signal<Out, Bits<$W>>; K],
-            pub c: [Signal<Out, Bits<$W>>; K],
-            pub j0: [Signal<Out, Bits<5>>; K],
-            pub j1: [Signal<Out, Bits<5>>; K],
-            pub j2: [Signal<Out, Bits<5>>; K],
-            idx: [Constant<Bits<5>>; K],
-            c_lane: Signal<Local, Bits<5>>,
-            c_field: Signal<Local, Bits<3>>,
-            cmat_0: [DFF<Bits<$W>>; K],
-            cmat_1: [DFF<Bits<$W>>; K],
-            cmat_2: [DFF<Bits<$W>>; K],
-            cvec: [DFF<Bits<$W>>; K],
-            jsel_0: [DFF<Bits<5>>; K],
-            jsel_1: [DFF<Bits<5>>; K],
-            jsel_2: [DFF<Bits<5>>; K],
-        }
-
-        impl<const K: usize> Default for DopSetup<K> {
-            fn default() -> Self {
-                use $crate::rtl::reg_ring::array_init;
-                assert!(K <= 32, "DopSetup: k > 32 needs wider addresses");
-                Self {
-                    clock: Default::default(),
-                    load_en: Default::default(),
-                    load_addr: Default::default(),
-                    load_data: Default::default(),
-                    c0: array_init(),
-                    c1: array_init(),
-                    c2: array_init(),
-                    c: array_init(),
-                    j0: array_init(),
-                    j1: array_init(),
-                    j2: array_init(),
-                    idx: std::array::from_fn(|a| Constant::new((a as u64).into())),
-                    c_lane: Default::default(),
-                    c_field: Default::default(),
-                    cmat_0: array_init(),
-                    cmat_1: array_init(),
-                    cmat_2: array_init(),
-                    cvec: array_init(),
-                    jsel_0: array_init(),
-                    jsel_1: array_init(),
-                    jsel_2: array_init(),
-                }
-            }
-        }
-
-        impl<const K: usize> Logic for DopSetup<K> {
-            #[hdl_gen]
-            fn update(&mut self) {
-                self.c_lane.next = self.load_addr.val().get_bits::<5>(3);
-                self.c_field.next = self.load_addr.val().get_bits::<3>(0);
-                for i in 0..K {
-                    self.cmat_0[i].clock.next = self.clock.val();
-                    self.cmat_1[i].clock.next = self.clock.val();
-                    self.cmat_2[i].clock.next = self.clock.val();
-                    self.cvec[i].clock.next = self.clock.val();
-                    self.jsel_0[i].clock.next = self.clock.val();
-                    self.jsel_1[i].clock.next = self.clock.val();
-                    self.jsel_2[i].clock.next = self.clock.val();
-                    self.cmat_0[i].d.next = self.cmat_0[i].q.val();
-                    self.cmat_1[i].d.next = self.cmat_1[i].q.val();
-                    self.cmat_2[i].d.next = self.cmat_2[i].q.val();
-                    self.cvec[i].d.next = self.cvec[i].q.val();
-                    self.jsel_0[i].d.next = self.jsel_0[i].q.val();
-                    self.jsel_1[i].d.next = self.jsel_1[i].q.val();
-                    self.jsel_2[i].d.next = self.jsel_2[i].q.val();
-                    if self.load_en.val() & (self.c_lane.val() == self.idx[i].val()) {
-                        if self.c_field.val() == 0 {
-                            self.cmat_0[i].d.next = self.load_data.val();
-                        }
-                        if self.c_field.val() == 1 {
-                            self.cmat_1[i].d.next = self.load_data.val();
-                        }
-                        if self.c_field.val() == 2 {
-                            self.cmat_2[i].d.next = self.load_data.val();
-                        }
-                        if self.c_field.val() == 3 {
-                            self.cvec[i].d.next = self.load_data.val();
-                        }
-                        if self.c_field.val() == 4 {
-                            self.jsel_0[i].d.next = self.load_data.val().get_bits::<5>(0);
-                            self.jsel_1[i].d.next = self.load_data.val().get_bits::<5>(5);
-                            self.jsel_2[i].d.next = self.load_data.val().get_bits::<5>(10);
-                        }
-                    }
-                    self.c0[i].next = self.cmat_0[i].q.val();
-                    self.c1[i].next = self.cmat_1[i].q.val();
-                    self.c2[i].next = self.cmat_2[i].q.val();
-                    self.c[i].next = self.cvec[i].q.val();
-                    self.j0[i].next = self.jsel_0[i].q.val();
-                    self.j1[i].next = self.jsel_1[i].q.val();
-                    self.j2[i].next = self.jsel_2[i].q.val();
-                }
-            }
-        }
-
         /// The folded DOP unit of `K` directions taking a pair every `II` clocks, by its
         /// numbers: `<DopFold<6, 6> as FoldedDop>::Unit` is [`DopUnit6Fold6`], so that a chip
         /// picks its DOP unit from its `ChipKind`'s `dop_interval`.
@@ -149,9 +38,9 @@ macro_rules! dop_unit_fold {
 
         /// Verilog of the DOP unit for k directions folded to a pair every `ii` clocks (top
         /// module `top`); `None` for a (k, ii) not in [`DOP_UNIT_FOLDS`].
-        pub fn verilog_dop_unit_fold(k: usize, ii: usize, rounding: Rounding) -> Option<String> {
+        pub fn verilog_dop_unit_fold(k: usize, ii: usize) -> Option<String> {
             Some(match (k, ii) {
-                $(($K, $P) => generate_verilog(&$top(rounding)),)+
+                $(($K, $P) => generate_verilog(&$top()),)+
                 _ => return None,
             })
         }
@@ -233,8 +122,7 @@ macro_rules! dop_unit_fold {
             /// Clocks from a pair taken to its verdict.
             pub const LATENCY: usize = $crate::chip::rtl::dop_fold_latency($P);
 
-            /// A unit whose lanes round with `rounding` (NearestEven or TowardPositive).
-            pub fn new(rounding: Rounding) -> Self {
+            pub fn new() -> Self {
                 use $crate::rtl::reg_ring::array_init;
                 const _: () = assert!($K == $L * $P && $H * 2 == $K);
                 let at = |c: usize| Constant::new((c as u64).into());
@@ -269,12 +157,18 @@ macro_rules! dop_unit_fold {
                     c_j0: array_init(),
                     c_j1: array_init(),
                     c_j2: array_init(),
-                    doptrf: std::array::from_fn(|_| Doptrf::new(rounding)),
+                    doptrf: array_init(),
                     tag_line: Default::default(),
                     acc: Default::default(),
                     c_any: Default::default(),
                     c_first: Default::default(),
                 }
+            }
+        }
+
+        impl Default for $name {
+            fn default() -> Self {
+                Self::new()
             }
         }
 
@@ -319,6 +213,7 @@ macro_rules! dop_unit_fold {
                 // ---- lane l, pass p: direction p L + l (pass 0 the default)
                 for l in 0..$L {
                     self.doptrf[l].clock.next = self.clock.val();
+                    self.doptrf[l].round_up.next = self.setup.round_up[l].val();
                     self.doptrf[l].valid_in.next = self.held_valid.q.val();
                     if self.c_zero.val() {
                         self.doptrf[l].valid_in.next = self.c_take.val();
@@ -369,8 +264,8 @@ macro_rules! dop_unit_fold {
         }
 
         /// A folded DOP unit ready to simulate as a top-level block (inputs claimed, connected).
-        pub fn $top(rounding: Rounding) -> $name {
-            let mut uut = $name::new(rounding);
+        pub fn $top() -> $name {
+            let mut uut = $name::new();
             uut.clock.connect();
             uut.load_en.connect();
             uut.load_addr.connect();

@@ -6,11 +6,14 @@
 macro_rules! doptrf {
     ($W:tt, $WM1:tt, $E:tt, $F:tt) => {
         /// One DOPTRF lane: `s = ((d0 C0 + d1 C1) + (d2 C2 + c)) + e` and `flag = s < 0`,
-        /// every operation rounded in the mode fixed at construction, bit for bit the
-        /// golden [`lane`](crate::golden::doptrf::lane) (same order of operations).
+        /// every operation rounded as `round_up` says (1: TowardPositive, 0: NearestEven),
+        /// bit for bit the golden [`lane`](crate::golden::doptrf::lane) (same order of
+        /// operations). `round_up` is taken with the operands and travels beside them
+        /// (`s1_round`, then `r_mul`, `r_sum`, `r_u`, `r_s`: three clocks each) to each
+        /// unit's round stage, which reads it there (`FpMulModal`, `FpAddModal`).
         ///
         /// Ports: in `clock`, `d0 d1 d2` (the routed distances of B's DOP, from D.KLMSEL),
-        /// `c0 c1 c2` (row i of C), `c` (c_i), `e` (e_opp(i), A's DOP), `valid_in`;
+        /// `c0 c1 c2` (row i of C), `c` (c_i), `e` (e_opp(i), A's DOP), `valid_in`, `round_up`;
         /// out `s`, `flag` (sign set, not zero, not NaN; so -inf is < 0), `valid_out`.
         ///
         /// One lane evaluation per clock; latency 15 (inputs presented before rising
@@ -26,7 +29,7 @@ macro_rules! doptrf {
         /// | 15 | sign test, output register | `s15_*` = outputs |
         ///
         /// The valid bit travels with `mul_0` and the adders of the `u0` path.
-        #[derive(LogicBlock)]
+        #[derive(LogicBlock, Default)]
         pub struct Doptrf {
             pub clock: Signal<In, Clock>,
             pub d0: Signal<In, Bits<$W>>,
@@ -38,6 +41,7 @@ macro_rules! doptrf {
             pub c: Signal<In, Bits<$W>>,
             pub e: Signal<In, Bits<$W>>,
             pub valid_in: Signal<In, Bit>,
+            pub round_up: Signal<In, Bit>,
             pub s: Signal<Out, Bits<$W>>,
             pub flag: Signal<Out, Bit>,
             pub valid_out: Signal<Out, Bit>,
@@ -51,19 +55,25 @@ macro_rules! doptrf {
             s1_c2: DFF<Bits<$W>>,
             s1_c: DFF<Bits<$W>>,
             s1_e: DFF<Bits<$W>>,
+            s1_round: DFF<Bit>,
+            // the rounding at the multipliers' round stage (stage 5) and the adders' (8, 11, 14)
+            r_mul: $crate::rtl::delay::Delay<Bit, 3>,
+            r_sum: $crate::rtl::delay::Delay<Bit, 3>,
+            r_u: $crate::rtl::delay::Delay<Bit, 3>,
+            r_s: $crate::rtl::delay::Delay<Bit, 3>,
             // stages 2-5: products; c waits for p2
-            mul_0: FpMul,
-            mul_1: FpMul,
-            mul_2: FpMul,
+            mul_0: FpMulModal,
+            mul_1: FpMulModal,
+            mul_2: FpMulModal,
             c_2: DFF<Bits<$W>>,
             c_3: DFF<Bits<$W>>,
             c_4: DFF<Bits<$W>>,
             c_5: DFF<Bits<$W>>,
             // stages 6-14: sums; e waits for u
-            add_0: FpAdd,
-            add_1: FpAdd,
-            add_2: FpAdd,
-            add_3: FpAdd,
+            add_0: FpAddModal,
+            add_1: FpAddModal,
+            add_2: FpAddModal,
+            add_3: FpAddModal,
             e_2: DFF<Bits<$W>>,
             e_3: DFF<Bits<$W>>,
             e_4: DFF<Bits<$W>>,
@@ -84,69 +94,11 @@ macro_rules! doptrf {
             s15_flag: DFF<Bit>,
         }
 
-        impl Doptrf {
-            /// A lane rounding every operation with `rounding` (NearestEven or
-            /// TowardPositive).
-            pub fn new(rounding: Rounding) -> Self {
-                Self {
-                    clock: Default::default(),
-                    d0: Default::default(),
-                    d1: Default::default(),
-                    d2: Default::default(),
-                    c0: Default::default(),
-                    c1: Default::default(),
-                    c2: Default::default(),
-                    c: Default::default(),
-                    e: Default::default(),
-                    valid_in: Default::default(),
-                    s: Default::default(),
-                    flag: Default::default(),
-                    valid_out: Default::default(),
-                    s1_valid: Default::default(),
-                    s1_d0: Default::default(),
-                    s1_d1: Default::default(),
-                    s1_d2: Default::default(),
-                    s1_c0: Default::default(),
-                    s1_c1: Default::default(),
-                    s1_c2: Default::default(),
-                    s1_c: Default::default(),
-                    s1_e: Default::default(),
-                    mul_0: FpMul::new(rounding),
-                    mul_1: FpMul::new(rounding),
-                    mul_2: FpMul::new(rounding),
-                    c_2: Default::default(),
-                    c_3: Default::default(),
-                    c_4: Default::default(),
-                    c_5: Default::default(),
-                    add_0: FpAdd::new(rounding),
-                    add_1: FpAdd::new(rounding),
-                    add_2: FpAdd::new(rounding),
-                    add_3: FpAdd::new(rounding),
-                    e_2: Default::default(),
-                    e_3: Default::default(),
-                    e_4: Default::default(),
-                    e_5: Default::default(),
-                    e_6: Default::default(),
-                    e_7: Default::default(),
-                    e_8: Default::default(),
-                    e_9: Default::default(),
-                    e_10: Default::default(),
-                    e_11: Default::default(),
-                    c15_exp: Default::default(),
-                    c15_frac: Default::default(),
-                    c15_mag: Default::default(),
-                    c15_nan: Default::default(),
-                    s15_valid: Default::default(),
-                    s15_s: Default::default(),
-                    s15_flag: Default::default(),
-                }
-            }
-        }
-
         impl Logic for Doptrf {
             #[hdl_gen]
             fn update(&mut self) {
-                dff_setup!(self, clock, s1_valid, s1_d0, s1_d1, s1_d2, s1_c0, s1_c1, s1_c2, s1_c, s1_e);
+                dff_setup!(self, clock, s1_valid, s1_d0, s1_d1, s1_d2, s1_c0, s1_c1, s1_c2, s1_c, s1_e, s1_round);
+                clock!(self, clock, r_mul, r_sum, r_u, r_s);
                 dff_setup!(self, clock, c_2, c_3, c_4, c_5);
                 dff_setup!(self, clock, e_2, e_3, e_4, e_5, e_6, e_7, e_8, e_9, e_10, e_11);
                 dff_setup!(self, clock, s15_valid, s15_s, s15_flag);
@@ -157,6 +109,13 @@ macro_rules! doptrf {
                 self.add_1.clock.next = self.clock.val();
                 self.add_2.clock.next = self.clock.val();
                 self.add_3.clock.next = self.clock.val();
+                self.mul_0.round_up.next = self.r_mul.q.val();
+                self.mul_1.round_up.next = self.r_mul.q.val();
+                self.mul_2.round_up.next = self.r_mul.q.val();
+                self.add_0.round_up.next = self.r_sum.q.val();
+                self.add_1.round_up.next = self.r_sum.q.val();
+                self.add_2.round_up.next = self.r_u.q.val();
+                self.add_3.round_up.next = self.r_s.q.val();
                 // ---- stage 1: input register
                 self.s1_valid.d.next = self.valid_in.val();
                 self.s1_d0.d.next = self.d0.val();
@@ -167,6 +126,11 @@ macro_rules! doptrf {
                 self.s1_c2.d.next = self.c2.val();
                 self.s1_c.d.next = self.c.val();
                 self.s1_e.d.next = self.e.val();
+                self.s1_round.d.next = self.round_up.val();
+                self.r_mul.d.next = self.s1_round.q.val();
+                self.r_sum.d.next = self.r_mul.q.val();
+                self.r_u.d.next = self.r_sum.q.val();
+                self.r_s.d.next = self.r_u.q.val();
                 // ---- stages 2-5: p_l = d_l * C_l
                 self.mul_0.a.next = self.s1_d0.q.val();
                 self.mul_0.b.next = self.s1_c0.q.val();
@@ -227,13 +191,13 @@ macro_rules! doptrf {
         }
 
         /// A lane ready to simulate as a top-level block (inputs claimed, connected).
-        pub fn doptrf_top(rounding: Rounding) -> Doptrf {
-            top_level!(Doptrf::new(rounding); clock, d0, d1, d2, c0, c1, c2, c, e, valid_in)
+        pub fn doptrf_top() -> Doptrf {
+            top_level!(Doptrf::default(); clock, d0, d1, d2, c0, c1, c2, c, e, valid_in, round_up)
         }
 
         /// Verilog of one DOPTRF lane (top module `top`).
-        pub fn verilog_doptrf(rounding: Rounding) -> String {
-            generate_verilog(&doptrf_top(rounding))
+        pub fn verilog_doptrf() -> String {
+            generate_verilog(&doptrf_top())
         }
     };
 }

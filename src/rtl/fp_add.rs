@@ -6,7 +6,10 @@ macro_rules! fp_add {
     ($W:tt, $WM1:tt, $E:tt, $F:tt, $P:tt, $P2:tt, $P3:tt, $P4:tt) => {
         /// Pipelined adder implementing [`Format::add`](crate::format::Format::add)
         /// (`sub` = 0) and [`Format::sub`](crate::format::Format::sub) (`sub` = 1, the
-        /// sign of `b` is flipped) bit for bit, one rounding mode per instance.
+        /// sign of `b` is flipped) bit for bit, rounding as `round_up` says (1:
+        /// TowardPositive, 0: NearestEven): a constant fixed at construction (`FpAdd::new`),
+        /// or an input that the round stage (3) reads (`FpAddModal`, the DOP lanes', which
+        /// give each operation's rounding there).
         ///
         /// One operation per clock; latency 3 (three register ranks): operands presented
         /// on `a`, `b`, `sub`, `valid_in` before rising edge 1 give `y`, `valid_out`
@@ -18,7 +21,7 @@ macro_rules! fp_add {
         /// | 2 | add / subtract (`P+4` bits), normalise: right by one on carry, else left by the leading zeros but at most down to `emin` (gradual underflow); exact-zero sign | `s2_*` |
         /// | 3 | round (NearestEven or TowardPositive) and pack, specials (`round`) | `s3_*` = outputs |
         #[derive(LogicBlock)]
-        pub struct FpAdd {
+        pub struct FpAdd<R: $crate::rtl::common::RoundUp = Constant<Bit>> {
             pub clock: Signal<In, Clock>,
             pub a: Signal<In, Bits<$W>>,
             pub b: Signal<In, Bits<$W>>,
@@ -27,7 +30,7 @@ macro_rules! fp_add {
             pub y: Signal<Out, Bits<$W>>,
             pub valid_out: Signal<Out, Bit>,
             // configuration and constants
-            round_up: Constant<Bit>,
+            pub round_up: R,
             c_align_cap: Constant<Bits<$E>>,
             c_exp_ones: Constant<Bits<10>>,
             // stage 1
@@ -89,12 +92,25 @@ macro_rules! fp_add {
 
             /// An adder rounding with `rounding` (NearestEven or TowardPositive).
             pub fn new(rounding: Rounding) -> Self {
+                Self::with(Constant::new($crate::rtl::common::round_up(
+                    rounding, "FpAdd",
+                )))
+            }
+        }
+
+        /// FpAdd whose rounding is an input, `round_up` (the DOP lanes').
+        pub type FpAddModal = FpAdd<Signal<In, Bit>>;
+
+        /// An adder rounding as its input `round_up` says.
+        impl Default for FpAddModal {
+            fn default() -> Self {
+                Self::with(Default::default())
+            }
+        }
+
+        impl<R: $crate::rtl::common::RoundUp> FpAdd<R> {
+            fn with(round_up: R) -> Self {
                 let ones: u64 = (1u64 << $E) - 1;
-                let round_up = match rounding {
-                    Rounding::NearestEven => false,
-                    Rounding::TowardPositive => true,
-                    Rounding::TowardNegative => panic!("FpAdd: TowardNegative is not implemented"),
-                };
                 Self {
                     clock: Default::default(),
                     a: Default::default(),
@@ -103,7 +119,7 @@ macro_rules! fp_add {
                     valid_in: Default::default(),
                     y: Default::default(),
                     valid_out: Default::default(),
-                    round_up: Constant::new(round_up),
+                    round_up,
                     c_align_cap: Constant::new(($P3 as u64).into()),
                     c_exp_ones: Constant::new(ones.into()),
                     unpack_a: Default::default(),
@@ -159,7 +175,7 @@ macro_rules! fp_add {
             }
         }
 
-        impl Logic for FpAdd {
+        impl<R: $crate::rtl::common::RoundUp> Logic for FpAdd<R> {
             #[hdl_gen]
             fn update(&mut self) {
                 dff_setup!(

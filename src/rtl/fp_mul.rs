@@ -5,7 +5,9 @@
 macro_rules! fp_mul {
     ($W:tt, $E:tt, $F:tt, $P:tt, $P2:tt) => {
         /// Pipelined multiplier implementing [`Format::mul`](crate::format::Format::mul)
-        /// bit for bit (one rounding mode per instance, fixed at construction).
+        /// bit for bit, rounding as `round_up` says (1: TowardPositive, 0: NearestEven): a
+        /// constant fixed at construction (`FpMul::new`), or an input that the round stage
+        /// (4) reads (`FpMulModal`, the DOP lanes', which give each operation's rounding there).
         ///
         /// One operation per clock; latency 4 (four register ranks): operands presented
         /// on `a`, `b`, `valid_in` before rising edge 1 give `y`, `valid_out` right after
@@ -21,7 +23,7 @@ macro_rules! fp_mul {
         /// Exponents inside the pipeline are 10-bit with an offset of 256 (biased
         /// exponent `e` is held as `e + 256`), so products of subnormals stay positive.
         #[derive(LogicBlock)]
-        pub struct FpMul {
+        pub struct FpMul<R: $crate::rtl::common::RoundUp = Constant<Bit>> {
             pub clock: Signal<In, Clock>,
             pub a: Signal<In, Bits<$W>>,
             pub b: Signal<In, Bits<$W>>,
@@ -29,7 +31,7 @@ macro_rules! fp_mul {
             pub y: Signal<Out, Bits<$W>>,
             pub valid_out: Signal<Out, Bit>,
             // configuration and constants
-            round_up: Constant<Bit>,
+            pub round_up: R,
             c_exp_adj: Constant<Bits<10>>,
             c_exp_ofs: Constant<Bits<10>>,
             c_exp_norm_min: Constant<Bits<10>>,
@@ -88,13 +90,26 @@ macro_rules! fp_mul {
 
             /// A multiplier rounding with `rounding` (NearestEven or TowardPositive).
             pub fn new(rounding: Rounding) -> Self {
+                Self::with(Constant::new($crate::rtl::common::round_up(
+                    rounding, "FpMul",
+                )))
+            }
+        }
+
+        /// FpMul whose rounding is an input, `round_up` (the DOP lanes').
+        pub type FpMulModal = FpMul<Signal<In, Bit>>;
+
+        /// A multiplier rounding as its input `round_up` says.
+        impl Default for FpMulModal {
+            fn default() -> Self {
+                Self::with(Default::default())
+            }
+        }
+
+        impl<R: $crate::rtl::common::RoundUp> FpMul<R> {
+            fn with(round_up: R) -> Self {
                 let bias: u64 = (1u64 << ($E - 1)) - 1;
                 let ones: u64 = (1u64 << $E) - 1;
-                let round_up = match rounding {
-                    Rounding::NearestEven => false,
-                    Rounding::TowardPositive => true,
-                    Rounding::TowardNegative => panic!("FpMul: TowardNegative is not implemented"),
-                };
                 Self {
                     clock: Default::default(),
                     a: Default::default(),
@@ -102,7 +117,7 @@ macro_rules! fp_mul {
                     valid_in: Default::default(),
                     y: Default::default(),
                     valid_out: Default::default(),
-                    round_up: Constant::new(round_up),
+                    round_up,
                     c_exp_adj: Constant::new((256 - bias).into()),
                     c_exp_ofs: Constant::new(256u64.into()),
                     c_exp_norm_min: Constant::new(257u64.into()),
@@ -154,7 +169,7 @@ macro_rules! fp_mul {
             }
         }
 
-        impl Logic for FpMul {
+        impl<R: $crate::rtl::common::RoundUp> Logic for FpMul<R> {
             #[hdl_gen]
             fn update(&mut self) {
                 dff_setup!(

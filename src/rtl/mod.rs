@@ -19,9 +19,10 @@
 //! plans: `TCheckFold` and `TriUnitFold` (both directions on one `TCheckFold`).
 //!
 //! Each unit takes one operation per clock with a `valid` bit travelling alongside and
-//! is bit-exact with the golden [`Format`](crate::format::Format) operations in the
-//! rounding mode fixed at construction (NearestEven or TowardPositive), including
-//! subnormals, infinities, canonical NaN, IEEE overflow and zero signs.
+//! is bit-exact with the golden [`Format`](crate::format::Format) operations in its
+//! rounding (NearestEven or TowardPositive: fixed at construction, or in the DOP lanes an
+//! input that travels with each operation, [`RoundUp`]), including subnormals, infinities,
+//! canonical NaN, IEEE overflow and zero signs.
 //!
 //! Ports (`W` = 32 for `b32`, 24 for `e8m15`):
 //!
@@ -46,6 +47,7 @@ macro_rules! top_level {
 
 mod chip;
 mod common;
+pub use common::{round_up, RoundUp};
 pub mod d_cntr;
 pub mod delay;
 mod dop_decode;
@@ -240,7 +242,8 @@ pub mod e8m10 {
         norm_p3(6, 10, 12, 13)
     );
     // the papers' chip (k = 24) in e8m10: node word 1 + 24 * 19 + 64 bits (wider than a
-    // triangle word, 23 * 19 + 2)
+    // triangle word, 23 * 19 + 2); the `words` layout only (with records, D_CNTR's look-ahead
+    // into the queue, 5.65 ns, would set its clock above TRI_UNIT's 5.47)
     crate::rtl::chip::chip!(
         24,
         DopUnit24 = DopUnit24::new,
@@ -262,7 +265,8 @@ pub mod e8m15_k24 {
     use super::e8m15::{DopUnit24, TriUnit};
     use crate::format::Rounding;
     use rust_hdl::prelude::*;
-    // node word 1 + 24 * 24 + 64 bits (wider than a triangle word, 23 * 24 + 2)
+    // node word 1 + 24 * 24 + 64 bits (wider than a triangle word, 23 * 24 + 2); a memory
+    // word holds a record of two (the `records` layout), 2,048 bits
     crate::rtl::chip::chip!(
         24,
         DopUnit24 = DopUnit24::new,
@@ -272,9 +276,9 @@ pub mod e8m15_k24 {
         24,
         641,
         554,
-        641,
-        641,
-        1
+        2048,
+        1282,
+        2
     );
 }
 
@@ -287,7 +291,8 @@ pub mod e8m15_b32 {
     use super::e8m15::DopUnit24;
     use crate::format::Rounding;
     use rust_hdl::prelude::*;
-    // node word 1 + 24 * 24 + 64 bits, triangle word 23 * 32 + 2 (the wider)
+    // node word 1 + 24 * 24 + 64 bits, triangle word 23 * 32 + 2; a memory word holds a
+    // record of two node words, 2,048 bits
     crate::rtl::chip::chip!(
         24,
         DopUnit24 = DopUnit24::new,
@@ -297,9 +302,9 @@ pub mod e8m15_b32 {
         24,
         641,
         738,
-        738,
-        641,
-        1
+        2048,
+        1282,
+        2
     );
 }
 

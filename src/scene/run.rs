@@ -811,6 +811,15 @@ mod tests {
                             e.contains(&format!("[{section}] {key}")),
                             "{preset} {arch}: {key} = {v}: {e}"
                         ),
+                        // a rounding moves a verdict only at a boundary, which this pose
+                        // does not reach, and where the slowest unit's period does not move
+                        // with it (both DOP roundings run on one chip; T.CHECK rounding up
+                        // has no chip, and the DOP unit's 7.135 ns sets its estimate as the
+                        // chip's) the report is the same: its use is the configuration's
+                        Ok(s) if key.ends_with("_rounding") => {
+                            assert_ne!(s.configuration(), base.configuration());
+                            used += 1;
+                        }
                         Ok(s) => {
                             assert_ne!(report(&s), base_report, "{preset} {arch}: [{section}] {key} = {v} accepted and changed nothing the scene reports");
                             used += 1;

@@ -323,7 +323,7 @@ fn rtl_order_of_port_and_layout() {
         &ddr(8),
     )
     .unwrap_err();
-    assert!(e.contains("chip_e8m15_k6 reads the `words` layout only (of the RTL chips, chip_b32_k24, chip_b32_k24_q4 also read `records`); this configuration has layout = \"records\""), "{e}");
+    assert!(e.contains("chip_e8m15_k6 reads the `words` layout only (of the RTL chips, chip_b32_k24, chip_e8m15_b32_k24, chip_e8m15_k24, chip_b32_k24_q4 also read `records`); this configuration has layout = \"records\""), "{e}");
 }
 
 /// Stored DOP precision: the chip of 4-bit codes runs them, the others name it.
@@ -539,7 +539,7 @@ fn memory_models_and_presets() {
     }
     let s = Scene::parse(&format!("{base}model = \"ddr\"\npreset = \"wscg03\""), "s").unwrap();
     let explain = crate::scene::graph::Plan::of(&s).explain(&s);
-    assert!(explain.contains("DDR SDRAM: 4 banks, 4096-byte pages, 256-bit bus, bursts of 8 beats of 3.75 ns, page hit 30 ns and miss 75 ns; at the chip's 6.944 ns clock: a burst 5 clock(s), a page hit 5, a miss 11"), "{explain}");
+    assert!(explain.contains("DDR SDRAM: 4 banks, 4096-byte pages, 256-bit bus, bursts of 8 beats of 3.75 ns, page hit 30 ns and miss 75 ns; at the chip's 7.135 ns clock: a burst 5 clock(s), a page hit 5, a miss 11"), "{explain}");
     // model = "ddr" written on a DDR chip preset keeps the preset's DDR values
     let on = |preset: &str, m: &str| {
         Scene::parse(&format!("{base}{m}\n[chip]\npreset = \"{preset}\""), "s")

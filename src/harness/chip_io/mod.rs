@@ -23,7 +23,7 @@ use crate::cycle::drive::open_vcd;
 pub use crate::cycle::drive::{ChipError, ChipTrace, Drive, Reader};
 use crate::dop::tree::StoredFields;
 use crate::dop::Node;
-use crate::format::Format;
+use crate::format::{Format, Rounding};
 use crate::golden::host::HostSetup;
 use crate::golden::memory::ObjectImage;
 use crate::traversal::Traversal;
@@ -49,7 +49,7 @@ macro_rules! dispatch {
         pub fn with_chip<const N: usize, const NP1: usize, const NM1: usize, F: OnChip>(kind: ChipKind, f: F) -> F::Out {
             let c = kind.config();
             match kind {
-                $(ChipKind::$kind => f.run(crate::rtl::$module::chip_top::<N, NP1, NM1>(c.dop_rounding.op(), c.tri_rounding)),)+
+                $(ChipKind::$kind => f.run(crate::rtl::$module::chip_top::<N, NP1, NM1>(c.tri_rounding)),)+
             }
         }
         $(rtl_ports!($module, ChipKind::$kind);)+
@@ -80,11 +80,13 @@ pub fn big_stack<T: Send + 'static>(f: impl FnOnce() -> T + Send + 'static) -> T
 }
 
 /// The DOP unit's setup words `(load_addr, load_data)`: lane i's C_i0..2, c_i, and the
-/// D.KLMSEL control `j_i0 | j_i1 << 5 | j_i2 << 10` at `8 i + 0..4`.
-pub fn dop_unit_setup_words(fmt: Format, setup: &HostSetup) -> Vec<(u64, u64)> {
+/// D.KLMSEL control and the lane's rounding `j_i0 | j_i1 << 5 | j_i2 << 10 | round_up << 15`
+/// (`rounding`: 1 TowardPositive, 0 NearestEven) at `8 i + 0..4`.
+pub fn dop_unit_setup_words(fmt: Format, rounding: Rounding, setup: &HostSetup) -> Vec<(u64, u64)> {
+    let up = crate::rtl::round_up(rounding, "the DOP unit") as u64;
     let mut out = vec![];
     for (i, (cm, j)) in setup.cmat.iter().zip(&setup.j).enumerate() {
-        let jw = j[0] as u64 | (j[1] as u64) << 5 | (j[2] as u64) << 10;
+        let jw = j[0] as u64 | (j[1] as u64) << 5 | (j[2] as u64) << 10 | up << 15;
         let fields = [
             fmt.to_bits(cm[0]),
             fmt.to_bits(cm[1]),
@@ -290,7 +292,7 @@ impl QueryImage {
                 memory.len()
             ));
         }
-        let mut writes: Vec<(u32, u32)> = dop_unit_setup_words(f.dop, setup)
+        let mut writes: Vec<(u32, u32)> = dop_unit_setup_words(f.dop, cfg.dop_rounding.op(), setup)
             .into_iter()
             .map(|(a, d)| (a as u32, d as u32))
             .collect();
@@ -538,8 +540,8 @@ pub fn rtl_order(
             }
         }
         return Err(format!(
-            "the RTL chips are built for {}, all with dop_rounding = \"outward\" and T.CHECK to nearest-even; this scene has k = {}, format {}, dop_rounding {}, tri_rounding {:?}: set [chip] to one of them",
-            built.join(" or "), cfg.k, cfg.format, cfg.dop_rounding, cfg.tri_rounding
+            "the RTL chips are built for {}, all with T.CHECK to nearest-even (the DOP lanes round either way); this scene has k = {}, format {}, tri_rounding {:?}: set [chip] to one of them",
+            built.join(" or "), cfg.k, cfg.format, cfg.tri_rounding
         ));
     }
     let Some(kind) = ChipKind::of(cfg, p.dop_interval, p.tri_interval) else {

@@ -2,7 +2,7 @@
 //! `vectors/chip/`, on their Verilog, and the files that carry them there.
 
 use super::QueryImage;
-use crate::chip::config::{ChipConfig, MemLayout};
+use crate::chip::config::{ChipConfig, DopRounding, MemLayout};
 use crate::chip::memory::MemTiming;
 use crate::chip::reg::Mode;
 use crate::chip::reg::Order::{self, Fifo, Lifo};
@@ -39,6 +39,8 @@ pub struct ChipQuery {
     pub tri_cache: u32,
     /// The memory layout (register [`MODE`](crate::chip::reg::MODE) bit 2; `records` on a chip that reads it).
     pub layout: MemLayout,
+    /// The DOP lanes' rounding (bit 15 of their setup words; outward unless the name says `rne`).
+    pub dop_rounding: DopRounding,
     /// Too long for rust-hdl (more than 500 s at [`ChipKind::rtl_clocks_per_second`]): its
     /// trace comes from the cycle model, and Verilator must reproduce it.
     pub large: bool,
@@ -93,6 +95,7 @@ impl ChipQuery {
         let cfg = ChipConfig {
             tri_cache: self.tri_cache,
             layout: self.layout,
+            dop_rounding: self.dop_rounding,
             ..self.chip.config()
         };
         let chip = crate::query::Chip::new(&query_mesh(self.a)?, &query_mesh(self.b)?, cfg)?;
@@ -137,8 +140,8 @@ pub fn queries() -> Vec<ChipQuery> {
             ChipKind::K24E8m15,
             [
                 "k24e_apart_lifo_first",
-                "k24e_patch_fifo_all",
-                "k24e_big_sphere_lifo_cache",
+                "k24e_rne_patch_fifo_all",
+                "k24e_big_rec_sphere_lifo_cache",
             ],
         ),
         k24_three(
@@ -146,7 +149,7 @@ pub fn queries() -> Vec<ChipQuery> {
             ChipKind::K24E8m10,
             [
                 "k24m10_apart_lifo_first",
-                "k24m10_patch_fifo_all",
+                "k24m10_rne_patch_fifo_all",
                 "k24m10_big_sphere_lifo_cache",
             ],
         ),
@@ -205,6 +208,7 @@ fn q(
         credit: chips::CREDIT as u32,
         tri_cache: 1,
         layout: MemLayout::Words,
+        dop_rounding: DopRounding::Outward,
         large: false,
     }
 }
@@ -689,8 +693,8 @@ fn k24r(p: &Poses) -> Vec<ChipQuery> {
         chip,
         [
             "k24r_apart_lifo_first",
-            "k24r_patch_fifo_all",
-            "k24r_big_sphere_lifo_cache",
+            "k24r_rne_patch_fifo_all",
+            "k24r_big_rec_sphere_lifo_cache",
         ],
     );
     v.insert(
@@ -730,7 +734,8 @@ fn k24r(p: &Poses) -> Vec<ChipQuery> {
 }
 
 /// Three queries `names` of a k = 24 chip: the root test (Icarus), a bunny patch at full
-/// speed and a whole query through the 128-line triangle cache (Verilator). The whole set of
+/// speed with the DOP lanes rounding to nearest-even and a whole query (in the `records`
+/// layout where the chip reads it) through the 128-line triangle cache (Verilator). The whole set of
 /// the chips in one narrow format throughout (`chip_e8m15_k24`, k24e; `chip_e8m10_k24`,
 /// k24m10), whose units, one macro per format, are each checked in rust-hdl against the
 /// golden model (the e8m15 ones also in lockstep in `chip_e8m15_b32_k24` and
@@ -755,6 +760,7 @@ fn k24_three(p: &Poses, chip: ChipKind, names: [&'static str; 3]) -> Vec<ChipQue
             outstanding: 4,
             issue_spacing: 1,
             credit: 24,
+            dop_rounding: DopRounding::NearestEven,
             ..q(names[1], "bunny-patch:4", p.patch, Fifo, Mode::All, 8, 1)
         },
         ChipQuery {
@@ -764,6 +770,11 @@ fn k24_three(p: &Poses, chip: ChipKind, names: [&'static str; 3]) -> Vec<ChipQue
             issue_spacing: 1,
             credit: 48,
             tri_cache: 128,
+            layout: if chip.records() {
+                MemLayout::Records
+            } else {
+                MemLayout::Words
+            },
             ..big(
                 names[2],
                 "sphere:320",

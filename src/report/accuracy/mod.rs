@@ -43,6 +43,45 @@ pub struct Plan {
     /// before them).
     #[serde(default = "full")]
     pub dop_bits: Vec<DopBits>,
+    /// Node records held per object on every preset (`--node-cache`); each preset's own in
+    /// studies written before it.
+    #[serde(default)]
+    pub node_cache: NodeCache,
+}
+
+/// The node records a study's chips hold per object (`ChipConfig::node_cache`): each
+/// preset's own (16 on date05 and wscg03, 64 on date05-treelets), or `Held(n)` on every
+/// preset. The RTL chips hold one (`cchip accuracy`'s default): with more, a configuration's
+/// chip is not built and its period is estimated.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum NodeCache {
+    #[default]
+    Preset,
+    Held(u32),
+}
+
+impl std::str::FromStr for NodeCache {
+    type Err = String;
+    fn from_str(s: &str) -> Result<Self, String> {
+        match s {
+            "preset" => Ok(NodeCache::Preset),
+            n => match n.parse() {
+                Ok(l) if (1..=crate::chip::config::NODE_CACHE_MAX_LINES).contains(&l) => Ok(NodeCache::Held(l)),
+                _ => Err(format!("`{n}`: give node records held per object, 1 (the RTL chips') to {}, or `preset` for each preset's own", crate::chip::config::NODE_CACHE_MAX_LINES)),
+            },
+        }
+    }
+}
+
+impl NodeCache {
+    /// The records held on `preset`.
+    pub fn on(self, preset: Preset) -> u32 {
+        match self {
+            NodeCache::Preset => preset.chip().node_cache,
+            NodeCache::Held(n) => n,
+        }
+    }
 }
 
 fn unfolded() -> Vec<Folds> {
@@ -101,6 +140,7 @@ impl Plan {
                                     format,
                                     dop_rounding,
                                     dop_bits,
+                                    node_cache: self.node_cache.on(preset),
                                     ..preset.chip()
                                 };
                                 cfg.check().map_err(|e| {
@@ -195,6 +235,9 @@ pub struct Row {
     /// The pair intervals of TRI_UNIT and the DOP unit (1: unfolded).
     #[serde(default)]
     pub folds: Folds,
+    /// Node records held per object (the memory preset's own in rows written before it).
+    #[serde(default)]
+    pub node_cache: Option<u32>,
     /// The clock period, whether measured or estimated, and from what ([`Clock::source`]).
     pub period_ns: f64,
     pub period_source: PeriodSource,
@@ -213,15 +256,26 @@ pub struct HostSums {
 }
 
 impl Row {
-    /// The chip this row ran: its memory preset's with the row's k, formats, DOP rounding
-    /// and stored DOP precision.
+    /// The chip this row ran: its memory preset's with the row's k, formats, DOP rounding,
+    /// stored DOP precision and node records held.
     pub fn chip(&self) -> ChipConfig {
+        let preset = self.memory.chip();
         ChipConfig {
             k: self.k,
             format: self.format,
             dop_rounding: self.dop_rounding,
             dop_bits: self.dop_bits,
-            ..self.memory.chip()
+            node_cache: self.node_cache.unwrap_or(preset.node_cache),
+            ..preset
+        }
+    }
+
+    /// The memory column: the preset, and the node records held where not its own.
+    fn memory_name(&self) -> String {
+        let own = self.memory.chip().node_cache;
+        match self.node_cache {
+            Some(n) if n != own => format!("{}, {n} held", self.memory.name()),
+            _ => self.memory.name().to_string(),
         }
     }
 
@@ -387,6 +441,7 @@ pub fn study(
             dop_rounding: cfg.dop_rounding,
             dop_bits: cfg.dop_bits,
             folds,
+            node_cache: Some(cfg.node_cache),
             period_ns: clock.period_ns,
             period_source: clock.source,
             clock: clock.source(),
@@ -617,7 +672,7 @@ pub fn table(plan: &Plan, rows: &[Row], area: Option<&Area>) -> Result<String, S
             out,
             "| {} | {} | {} | {} | {} | {} | {} / {} | {} | {:.1} | {:.0} | {:.1} | {:.1}% | {:.2}% | {} / {} / {} | {} | {} | {:.1} | {:.0} | {:.3} {} | {:.1} | {:.1} | {:.1} | {um2} |",
             row.mesh,
-            row.memory.name(),
+            row.memory_name(),
             row.k,
             row.format,
             row.dop_rounding,

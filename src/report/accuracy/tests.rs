@@ -27,6 +27,7 @@ fn small_date05(mesh: &str) -> Plan {
         technology: Technology::Paper,
         folds: vec![Folds::NONE],
         dop_bits: vec![DopBits::Full],
+        node_cache: NodeCache::Preset,
     }
 }
 
@@ -49,6 +50,7 @@ fn shards_merge_into_the_serial_run() {
         technology: Technology::Osu018,
         folds: vec![Folds::NONE],
         dop_bits: vec![DopBits::Full],
+        node_cache: NodeCache::Preset,
     };
     let unmeasured = |rows: Vec<Row>| -> Vec<Row> {
         rows.into_iter()
@@ -228,4 +230,62 @@ fn json_rows_carry_their_cells() {
     assert_eq!(with[0]["cells"], 30, "{units:?}");
     let without: serde_json::Value = serde_json::from_str(&json(&rows, None)).unwrap();
     assert!(without[0].get("cells").is_none());
+}
+
+/// The study's default configurations (k = 24 in its four formats, both DOP roundings, on the
+/// three memory presets with one node record held, `cchip accuracy`'s defaults) each run on
+/// a chip that is built, at that chip's measured period, but e8m10 on the DDR presets: its
+/// chip reads the `words` layout only (with records D_CNTR's look-ahead would set its clock),
+/// so those rows say estimated, and why.
+#[test]
+fn the_default_study_runs_on_measured_chips() {
+    let plan = Plan {
+        presets: vec![Preset::Rtl, Preset::Date05, Preset::Wscg03],
+        ks: vec![24],
+        formats: ["binary32", "reduced", "e8m10", "e8m15/binary32"]
+            .map(|f| f.parse().unwrap())
+            .to_vec(),
+        roundings: vec![DopRounding::Outward, DopRounding::NearestEven],
+        technology: Technology::Osu018,
+        node_cache: NodeCache::Held(1),
+        ..small_date05("sphere:40")
+    };
+    let configs = plan.configs().unwrap();
+    assert_eq!(configs.len(), 24);
+    for (preset, cfg, p) in configs {
+        let folds = Folds {
+            tri: p.tri_interval,
+            dop: p.dop_interval,
+        };
+        let c = Clock::of(plan.technology, &cfg, folds, preset).unwrap();
+        let words_only = cfg.format.dop == crate::format::Format::E8M10 && preset != Preset::Rtl;
+        if words_only {
+            assert!(
+                c.source()
+                    .contains("chip_e8m10_k24 reads the `words` layout only"),
+                "{}",
+                c.source()
+            );
+            continue;
+        }
+        assert_eq!(
+            c.source,
+            PeriodSource::Measured,
+            "{} k = {} {} {}: {}",
+            preset.name(),
+            cfg.k,
+            cfg.format,
+            cfg.dop_rounding,
+            c.source()
+        );
+    }
+    // with the presets' own 16 records held, the chip is not built: estimated
+    let own = Plan {
+        node_cache: NodeCache::Preset,
+        ..plan.clone()
+    };
+    let (preset, cfg, _) = own.configs().unwrap()[8];
+    assert_eq!(preset, Preset::Date05);
+    let c = Clock::of(own.technology, &cfg, Folds::NONE, preset).unwrap();
+    assert_eq!(c.source, PeriodSource::Estimated, "{}", c.source());
 }
