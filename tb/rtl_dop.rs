@@ -21,6 +21,7 @@ use collision_chip::format::{Format, Rounding};
 use collision_chip::golden::host::HostSetup;
 use collision_chip::golden::host::TriSide;
 use collision_chip::golden::{dop_unit, doptrf};
+use collision_chip::harness::chip_io::{dop_setup_words, dop_unit_setup_words};
 use collision_chip::mesh::soup;
 use collision_chip::pose::Pose;
 use collision_chip::rtl::{b32, e8m10, e8m15};
@@ -298,30 +299,6 @@ fn cycle<U: Unit>(uut: &mut U, probe: &mut Option<Probe<U>>) {
     }
 }
 
-/// The host setup's words for the write port: (address, data) per lane and field.
-fn setup_words(
-    fmt: Format,
-    r: Rounding,
-    j: &[[u8; 3]],
-    cmat: &[[f64; 3]],
-    cvec: &[f64],
-) -> Vec<(u64, u64)> {
-    let up = (r == Rounding::TowardPositive) as u64;
-    let mut w = vec![];
-    for i in 0..j.len() {
-        let a = 8 * i as u64;
-        for (l, &c) in cmat[i].iter().enumerate() {
-            w.push((a + l as u64, fmt.to_bits(c)));
-        }
-        w.push((a + 3, fmt.to_bits(cvec[i])));
-        w.push((
-            a + 4,
-            j[i][0] as u64 | (j[i][1] as u64) << 5 | (j[i][2] as u64) << 10 | up << 15,
-        ));
-    }
-    w
-}
-
 /// Idle cycles the writer leaves after taken pair `i`: none for most, a few now and then
 /// (a folded unit's counter runs on meanwhile, and the next pair waits for `in_ready`).
 fn gap(i: usize) -> usize {
@@ -407,7 +384,7 @@ fn unit_trees<U: Unit>(
     let ta = DopTree::build(&soup(n_tris, 1).triangles_f64(), &cfg);
     let tb = DopTree::build(&soup(n_tris, 2).triangles_f64(), &cfg);
     let setup = HostSetup::new(&cfg, &pose, tb.coord_bound(), TriSide::UNUSED);
-    let words = setup_words(fmt, r, &setup.j, &setup.cmat, &setup.cvec);
+    let words = dop_unit_setup_words(fmt, r, &setup);
     let mut pairs = vec![];
     let mut want = vec![];
     for na in 0..ta.len() as u32 {
@@ -554,7 +531,7 @@ fn unit_random<U: Unit>(make: impl Fn() -> U, fmt: Format, n_pairs: usize, seed:
                 TriSide::UNUSED,
             )
         };
-        let words = setup_words(fmt, r, &j, &cmat, &cvec);
+        let words = dop_setup_words(fmt, r, &j, &cmat, &cvec);
         let mut pairs = vec![];
         let mut want = vec![];
         for p in 0..n_pairs {
@@ -697,13 +674,7 @@ fn vcd_traces() {
             tb.coord_bound(),
             TriSide::UNUSED,
         );
-        let words = setup_words(
-            f,
-            Rounding::TowardPositive,
-            &setup.j,
-            &setup.cmat,
-            &setup.cvec,
-        );
+        let words = dop_unit_setup_words(f, Rounding::TowardPositive, &setup);
         let nodes: Vec<(u32, u32)> = (0..ta.len() as u32)
             .flat_map(|na| (0..tb.len() as u32).map(move |nb| (na, nb)))
             .take(12)

@@ -186,8 +186,8 @@ pub fn units(cfg: &ChipConfig, folds: Folds) -> Vec<String> {
 /// T.CHECK's (the unfolded chip where TRI_UNIT is not folded; TRI_UNIT, or the folded one at `folds.tri`; T.CHECK; its FP units and the
 /// certificate's scaler: §4.2) in T.CHECK's format and rounding; the glue (the unfolded
 /// chip; D_CNTR's pair queue, §4.3). A block's row, where measured, stands for its parts: it
-/// maps them as it builds them, where a lone part's row only approximates that (a binary32
-/// DOPTRF lane alone 7.507 ns, the DOP unit of 24 of them 6.887).
+/// maps them as it builds them, where a lone part's row only approximates that (ABC maps a
+/// lane alone and 24 of them in a DOP unit a few percent apart, either way).
 fn chains(cfg: &ChipConfig, folds: Folds) -> [Vec<Vec<String>>; 3] {
     let (d, dr) = (
         rtl::format_tag(cfg.format.dop),

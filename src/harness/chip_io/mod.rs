@@ -79,19 +79,31 @@ pub fn big_stack<T: Send + 'static>(f: impl FnOnce() -> T + Send + 'static) -> T
         .expect("the RTL thread")
 }
 
+/// The DOP unit's setup words `(load_addr, load_data)` for `setup`'s lanes
+/// ([`dop_setup_words`]).
+pub fn dop_unit_setup_words(fmt: Format, rounding: Rounding, setup: &HostSetup) -> Vec<(u64, u64)> {
+    dop_setup_words(fmt, rounding, &setup.j, &setup.cmat, &setup.cvec)
+}
+
 /// The DOP unit's setup words `(load_addr, load_data)`: lane i's C_i0..2, c_i, and the
 /// D.KLMSEL control and the lane's rounding `j_i0 | j_i1 << 5 | j_i2 << 10 | round_up << 15`
 /// (`rounding`: 1 TowardPositive, 0 NearestEven) at `8 i + 0..4`.
-pub fn dop_unit_setup_words(fmt: Format, rounding: Rounding, setup: &HostSetup) -> Vec<(u64, u64)> {
+pub fn dop_setup_words(
+    fmt: Format,
+    rounding: Rounding,
+    j: &[[u8; 3]],
+    cmat: &[[f64; 3]],
+    cvec: &[f64],
+) -> Vec<(u64, u64)> {
     let up = crate::rtl::round_up(rounding, "the DOP unit") as u64;
     let mut out = vec![];
-    for (i, (cm, j)) in setup.cmat.iter().zip(&setup.j).enumerate() {
+    for (i, (cm, j)) in cmat.iter().zip(j).enumerate() {
         let jw = j[0] as u64 | (j[1] as u64) << 5 | (j[2] as u64) << 10 | up << 15;
         let fields = [
             fmt.to_bits(cm[0]),
             fmt.to_bits(cm[1]),
             fmt.to_bits(cm[2]),
-            fmt.to_bits(setup.cvec[i]),
+            fmt.to_bits(cvec[i]),
             jw,
         ];
         out.extend(
