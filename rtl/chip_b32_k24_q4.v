@@ -2604,6 +2604,8 @@ module top$d_cntr$queue(clock,clear,lifo,push,push_data,push2,push2_data,pop,emp
     // Constant declarations
     localparam  c_cap = 11'b10000000000;
     localparam  c_last = 10'b1111111111;
+    localparam  c_one = 10'b1;
+    localparam  c_m2 = 10'b1111111110;
     
     // Stub signals
     reg  [10:0] cnt$d;
@@ -2653,6 +2655,27 @@ module top$d_cntr$queue(clock,clear,lifo,push,push_data,push2,push2_data,pop,emp
     reg  nonempty$d;
     wire  nonempty$q;
     reg  nonempty$clock;
+    reg  many_r$d;
+    wire  many_r$q;
+    reg  many_r$clock;
+    reg  full_r$d;
+    wire  full_r$q;
+    reg  full_r$clock;
+    reg  tight_r$d;
+    wire  tight_r$q;
+    reg  tight_r$clock;
+    reg  [9:0] rd1_x$d;
+    wire  [9:0] rd1_x$q;
+    reg  rd1_x$clock;
+    reg  [9:0] wr1_x$d;
+    wire  [9:0] wr1_x$q;
+    reg  wr1_x$clock;
+    reg  [9:0] wr_m1_n$d;
+    wire  [9:0] wr_m1_n$q;
+    reg  wr_m1_n$clock;
+    reg  [9:0] wr_m2_x$d;
+    wire  [9:0] wr_m2_x$q;
+    reg  wr_m2_x$clock;
     
     // Local signals
     reg  many;
@@ -2696,12 +2719,12 @@ module top$d_cntr$queue(clock,clear,lifo,push,push_data,push2,push2_data,pop,emp
         .q(top_r$q),
         .clock(top_r$clock)
     );
-    top$d_cntr$queue$rd_ptr rd_ptr(
+    top$d_cntr$queue$rd1_x rd_ptr(
         .d(rd_ptr$d),
         .q(rd_ptr$q),
         .clock(rd_ptr$clock)
     );
-    top$d_cntr$queue$rd_ptr wr_ptr(
+    top$d_cntr$queue$rd1_x wr_ptr(
         .d(wr_ptr$d),
         .q(wr_ptr$q),
         .clock(wr_ptr$clock)
@@ -2759,6 +2782,41 @@ module top$d_cntr$queue(clock,clear,lifo,push,push_data,push2,push2_data,pop,emp
         .q(nonempty$q),
         .clock(nonempty$clock)
     );
+    top$cnt_dop$pending many_r(
+        .d(many_r$d),
+        .q(many_r$q),
+        .clock(many_r$clock)
+    );
+    top$cnt_dop$pending full_r(
+        .d(full_r$d),
+        .q(full_r$q),
+        .clock(full_r$clock)
+    );
+    top$cnt_dop$pending tight_r(
+        .d(tight_r$d),
+        .q(tight_r$q),
+        .clock(tight_r$clock)
+    );
+    top$d_cntr$queue$rd1_x rd1_x(
+        .d(rd1_x$d),
+        .q(rd1_x$q),
+        .clock(rd1_x$clock)
+    );
+    top$d_cntr$queue$rd1_x wr1_x(
+        .d(wr1_x$d),
+        .q(wr1_x$q),
+        .clock(wr1_x$clock)
+    );
+    top$d_cntr$queue$rd1_x wr_m1_n(
+        .d(wr_m1_n$d),
+        .q(wr_m1_n$q),
+        .clock(wr_m1_n$clock)
+    );
+    top$d_cntr$queue$rd1_x wr_m2_x(
+        .d(wr_m2_x$d),
+        .q(wr_m2_x$q),
+        .clock(wr_m2_x$clock)
+    );
     
     // Update code
     always @(*) begin
@@ -2784,6 +2842,20 @@ module top$d_cntr$queue(clock,clear,lifo,push,push_data,push2,push2_data,pop,emp
         order_lifo$d = order_lifo$q;
         max_r$d = max_r$q;
         ovf_r$d = ovf_r$q;
+        many_r$clock = clock;
+        full_r$clock = clock;
+        tight_r$clock = clock;
+        rd1_x$clock = clock;
+        wr1_x$clock = clock;
+        wr_m1_n$clock = clock;
+        wr_m2_x$clock = clock;
+        many_r$d = many_r$q;
+        full_r$d = full_r$q;
+        tight_r$d = tight_r$q;
+        rd1_x$d = rd1_x$q;
+        wr1_x$d = wr1_x$q;
+        wr_m1_n$d = wr_m1_n$q;
+        wr_m2_x$d = wr_m2_x$q;
         bank0$read_clock = clock;
         bank0$write_clock = clock;
         bank1$read_clock = clock;
@@ -2794,13 +2866,13 @@ module top$d_cntr$queue(clock,clear,lifo,push,push_data,push2,push2_data,pop,emp
         max_count = max_r$q;
         overflow = ovf_r$q;
         top_data = top_r$q;
-        many = cnt$q > 32'h1;
+        many = many_r$q;
         do_pop = pop & nonempty$q;
-        nfull = cnt$q != c_cap;
+        nfull = ~full_r$q;
+        spare = ~tight_r$q;
         cnt_m1 = cnt$q - 32'h1;
         cnt_p1 = cnt$q + 32'h1;
         cnt_p2 = cnt$q + 32'h2;
-        spare = cnt_p1 < c_cap;
         c0_zero = ~nonempty$q | (do_pop & ~many);
         e1 = push2_data;
         if (push) begin
@@ -2836,7 +2908,7 @@ module top$d_cntr$queue(clock,clear,lifo,push,push_data,push2,push2_data,pop,emp
         end
         rd_n = rd_ptr$q;
         wr_n = wr_ptr$q;
-        wr1 = wr_ptr$q + 32'h1;
+        wr1 = wr1_x$q ^ c_one;
         we_a = 1'b0;
         we_b = 1'b0;
         wdata_a = e1;
@@ -2909,17 +2981,11 @@ module top$d_cntr$queue(clock,clear,lifo,push,push_data,push2,push2_data,pop,emp
                 end
             end
         end
-        cnt$d = cnt_n;
-        nonempty$d = cnt_n != 32'h0;
-        if (cnt_n > max_r$q) begin
-            max_r$d = cnt_n;
-        end
         if ((any & ~s1) | (two & ~s2)) begin
             ovf_r$d = 1'b1;
         end
         if (clear) begin
-            cnt$d = 32'h0;
-            nonempty$d = 1'b0;
+            cnt_n = 32'h0;
             top_r$d = 32'h0;
             rd_n = 32'h0;
             wr_n = 32'h0;
@@ -2929,11 +2995,23 @@ module top$d_cntr$queue(clock,clear,lifo,push,push_data,push2,push2_data,pop,emp
             max_r$d = 32'h0;
             ovf_r$d = 1'b0;
         end
+        cnt$d = cnt_n;
+        nonempty$d = cnt_n != 32'h0;
+        if (cnt_n > max_r$q) begin
+            max_r$d = cnt_n;
+        end
+        many_r$d = cnt_n > 32'h1;
+        full_r$d = cnt_n == c_cap;
+        tight_r$d = cnt_n >= c_cap - 32'h1;
         rd_ptr$d = rd_n;
         wr_ptr$d = wr_n;
-        rd1 = rd_ptr$q + 32'h1;
-        wr_m1 = wr_ptr$q - 32'h1;
-        wr_m2 = wr_ptr$q - 32'h2;
+        rd1_x$d = (rd_n + 32'h1) ^ c_one;
+        wr1_x$d = (wr_n + 32'h1) ^ c_one;
+        wr_m1_n$d = ~(wr_n - 32'h1);
+        wr_m2_x$d = (wr_n - 32'h2) ^ c_m2;
+        rd1 = rd1_x$q ^ c_one;
+        wr_m1 = ~wr_m1_n$q;
+        wr_m2 = wr_m2_x$q ^ c_m2;
         pick = do_pop & many;
         raddr = rd_ptr$q;
         if (pick) begin
@@ -3052,7 +3130,7 @@ module top$d_cntr$queue$cnt(d,q,clock);
 endmodule // top$d_cntr$queue$cnt
 
 
-module top$d_cntr$queue$rd_ptr(d,q,clock);
+module top$d_cntr$queue$rd1_x(d,q,clock);
     
     // Module arguments
     input wire  [9:0] d;
@@ -3068,7 +3146,7 @@ module top$d_cntr$queue$rd_ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$d_cntr$queue$rd_ptr
+endmodule // top$d_cntr$queue$rd1_x
 
 
 module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7,d$8,d$9,d$10,d$11,d$12,d$13,d$14,d$15,d$16,d$17,d$18,d$19,d$20,d$21,d$22,d$23,e$0,e$1,e$2,e$3,e$4,e$5,e$6,e$7,e$8,e$9,e$10,e$11,e$12,e$13,e$14,e$15,e$16,e$17,e$18,e$19,e$20,e$21,e$22,e$23,rd$0,rd$1,rd$2,rd$3,rd$4,rd$5,rd$6,rd$7,rd$8,rd$9,rd$10,rd$11,rd$12,rd$13,rd$14,rd$15,rd$16,rd$17,rd$18,rd$19,rd$20,rd$21,rd$22,rd$23,re$0,re$1,re$2,re$3,re$4,re$5,re$6,re$7,re$8,re$9,re$10,re$11,re$12,re$13,re$14,re$15,re$16,re$17,re$18,re$19,re$20,re$21,re$22,re$23,efd$0,efd$1,efd$2,efd$3,efd$4,efd$5,efd$6,efd$7,efd$8,efd$9,efd$10,efd$11,efd$12,efd$13,efd$14,efd$15,efd$16,efd$17,efd$18,efd$19,efd$20,efd$21,efd$22,efd$23,efe$0,efe$1,efe$2,efe$3,efe$4,efe$5,efe$6,efe$7,efe$8,efe$9,efe$10,efe$11,efe$12,efe$13,efe$14,efe$15,efe$16,efe$17,efe$18,efe$19,efe$20,efe$21,efe$22,efe$23,tag,valid_in,overlap,tag_out,valid_out);
@@ -8680,7 +8758,7 @@ module top$dop$unit$doptrf$0$mul_0(clock,a,b,valid_in,y,valid_out,round_up);
         .q(s1_zero$q),
         .clock(s1_zero$clock)
     );
-    top$d_cntr$queue$rd_ptr s1_exp(
+    top$d_cntr$queue$rd1_x s1_exp(
         .d(s1_exp$d),
         .q(s1_exp$q),
         .clock(s1_exp$clock)
@@ -8726,7 +8804,7 @@ module top$dop$unit$doptrf$0$mul_0(clock,a,b,valid_in,y,valid_out,round_up);
         .q(s2_zero$q),
         .clock(s2_zero$clock)
     );
-    top$d_cntr$queue$rd_ptr s2_exp(
+    top$d_cntr$queue$rd1_x s2_exp(
         .d(s2_exp$d),
         .q(s2_exp$q),
         .clock(s2_exp$clock)
@@ -26116,7 +26194,7 @@ module top$tri_unit$tc_ab$af(clock,a,b,valid_in,y,valid_out);
         .q(s1_zero$q),
         .clock(s1_zero$clock)
     );
-    top$d_cntr$queue$rd_ptr s1_exp(
+    top$d_cntr$queue$rd1_x s1_exp(
         .d(s1_exp$d),
         .q(s1_exp$q),
         .clock(s1_exp$clock)
@@ -26162,7 +26240,7 @@ module top$tri_unit$tc_ab$af(clock,a,b,valid_in,y,valid_out);
         .q(s2_zero$q),
         .clock(s2_zero$clock)
     );
-    top$d_cntr$queue$rd_ptr s2_exp(
+    top$d_cntr$queue$rd1_x s2_exp(
         .d(s2_exp$d),
         .q(s2_exp$q),
         .clock(s2_exp$clock)
@@ -28472,7 +28550,7 @@ module top$tri_unit$tc_ab$edges$0$px_qz(clock,a,b,valid_in,y,valid_out);
         .q(s1_zero$q),
         .clock(s1_zero$clock)
     );
-    top$d_cntr$queue$rd_ptr s1_exp(
+    top$d_cntr$queue$rd1_x s1_exp(
         .d(s1_exp$d),
         .q(s1_exp$q),
         .clock(s1_exp$clock)
@@ -28518,7 +28596,7 @@ module top$tri_unit$tc_ab$edges$0$px_qz(clock,a,b,valid_in,y,valid_out);
         .q(s2_zero$q),
         .clock(s2_zero$clock)
     );
-    top$d_cntr$queue$rd_ptr s2_exp(
+    top$d_cntr$queue$rd1_x s2_exp(
         .d(s2_exp$d),
         .q(s2_exp$q),
         .clock(s2_exp$clock)

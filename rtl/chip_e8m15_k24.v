@@ -2312,6 +2312,8 @@ module top$d_cntr$queue(clock,clear,lifo,push,push_data,push2,push2_data,pop,emp
     // Constant declarations
     localparam  c_cap = 11'b10000000000;
     localparam  c_last = 10'b1111111111;
+    localparam  c_one = 10'b1;
+    localparam  c_m2 = 10'b1111111110;
     
     // Stub signals
     reg  [10:0] cnt$d;
@@ -2361,6 +2363,27 @@ module top$d_cntr$queue(clock,clear,lifo,push,push_data,push2,push2_data,pop,emp
     reg  nonempty$d;
     wire  nonempty$q;
     reg  nonempty$clock;
+    reg  many_r$d;
+    wire  many_r$q;
+    reg  many_r$clock;
+    reg  full_r$d;
+    wire  full_r$q;
+    reg  full_r$clock;
+    reg  tight_r$d;
+    wire  tight_r$q;
+    reg  tight_r$clock;
+    reg  [9:0] rd1_x$d;
+    wire  [9:0] rd1_x$q;
+    reg  rd1_x$clock;
+    reg  [9:0] wr1_x$d;
+    wire  [9:0] wr1_x$q;
+    reg  wr1_x$clock;
+    reg  [9:0] wr_m1_n$d;
+    wire  [9:0] wr_m1_n$q;
+    reg  wr_m1_n$clock;
+    reg  [9:0] wr_m2_x$d;
+    wire  [9:0] wr_m2_x$q;
+    reg  wr_m2_x$clock;
     
     // Local signals
     reg  many;
@@ -2404,12 +2427,12 @@ module top$d_cntr$queue(clock,clear,lifo,push,push_data,push2,push2_data,pop,emp
         .q(top_r$q),
         .clock(top_r$clock)
     );
-    top$d_cntr$queue$rd_ptr rd_ptr(
+    top$d_cntr$queue$rd1_x rd_ptr(
         .d(rd_ptr$d),
         .q(rd_ptr$q),
         .clock(rd_ptr$clock)
     );
-    top$d_cntr$queue$rd_ptr wr_ptr(
+    top$d_cntr$queue$rd1_x wr_ptr(
         .d(wr_ptr$d),
         .q(wr_ptr$q),
         .clock(wr_ptr$clock)
@@ -2467,6 +2490,41 @@ module top$d_cntr$queue(clock,clear,lifo,push,push_data,push2,push2_data,pop,emp
         .q(nonempty$q),
         .clock(nonempty$clock)
     );
+    top$cnt_dop$pending many_r(
+        .d(many_r$d),
+        .q(many_r$q),
+        .clock(many_r$clock)
+    );
+    top$cnt_dop$pending full_r(
+        .d(full_r$d),
+        .q(full_r$q),
+        .clock(full_r$clock)
+    );
+    top$cnt_dop$pending tight_r(
+        .d(tight_r$d),
+        .q(tight_r$q),
+        .clock(tight_r$clock)
+    );
+    top$d_cntr$queue$rd1_x rd1_x(
+        .d(rd1_x$d),
+        .q(rd1_x$q),
+        .clock(rd1_x$clock)
+    );
+    top$d_cntr$queue$rd1_x wr1_x(
+        .d(wr1_x$d),
+        .q(wr1_x$q),
+        .clock(wr1_x$clock)
+    );
+    top$d_cntr$queue$rd1_x wr_m1_n(
+        .d(wr_m1_n$d),
+        .q(wr_m1_n$q),
+        .clock(wr_m1_n$clock)
+    );
+    top$d_cntr$queue$rd1_x wr_m2_x(
+        .d(wr_m2_x$d),
+        .q(wr_m2_x$q),
+        .clock(wr_m2_x$clock)
+    );
     
     // Update code
     always @(*) begin
@@ -2492,6 +2550,20 @@ module top$d_cntr$queue(clock,clear,lifo,push,push_data,push2,push2_data,pop,emp
         order_lifo$d = order_lifo$q;
         max_r$d = max_r$q;
         ovf_r$d = ovf_r$q;
+        many_r$clock = clock;
+        full_r$clock = clock;
+        tight_r$clock = clock;
+        rd1_x$clock = clock;
+        wr1_x$clock = clock;
+        wr_m1_n$clock = clock;
+        wr_m2_x$clock = clock;
+        many_r$d = many_r$q;
+        full_r$d = full_r$q;
+        tight_r$d = tight_r$q;
+        rd1_x$d = rd1_x$q;
+        wr1_x$d = wr1_x$q;
+        wr_m1_n$d = wr_m1_n$q;
+        wr_m2_x$d = wr_m2_x$q;
         bank0$read_clock = clock;
         bank0$write_clock = clock;
         bank1$read_clock = clock;
@@ -2502,13 +2574,13 @@ module top$d_cntr$queue(clock,clear,lifo,push,push_data,push2,push2_data,pop,emp
         max_count = max_r$q;
         overflow = ovf_r$q;
         top_data = top_r$q;
-        many = cnt$q > 32'h1;
+        many = many_r$q;
         do_pop = pop & nonempty$q;
-        nfull = cnt$q != c_cap;
+        nfull = ~full_r$q;
+        spare = ~tight_r$q;
         cnt_m1 = cnt$q - 32'h1;
         cnt_p1 = cnt$q + 32'h1;
         cnt_p2 = cnt$q + 32'h2;
-        spare = cnt_p1 < c_cap;
         c0_zero = ~nonempty$q | (do_pop & ~many);
         e1 = push2_data;
         if (push) begin
@@ -2544,7 +2616,7 @@ module top$d_cntr$queue(clock,clear,lifo,push,push_data,push2,push2_data,pop,emp
         end
         rd_n = rd_ptr$q;
         wr_n = wr_ptr$q;
-        wr1 = wr_ptr$q + 32'h1;
+        wr1 = wr1_x$q ^ c_one;
         we_a = 1'b0;
         we_b = 1'b0;
         wdata_a = e1;
@@ -2617,17 +2689,11 @@ module top$d_cntr$queue(clock,clear,lifo,push,push_data,push2,push2_data,pop,emp
                 end
             end
         end
-        cnt$d = cnt_n;
-        nonempty$d = cnt_n != 32'h0;
-        if (cnt_n > max_r$q) begin
-            max_r$d = cnt_n;
-        end
         if ((any & ~s1) | (two & ~s2)) begin
             ovf_r$d = 1'b1;
         end
         if (clear) begin
-            cnt$d = 32'h0;
-            nonempty$d = 1'b0;
+            cnt_n = 32'h0;
             top_r$d = 32'h0;
             rd_n = 32'h0;
             wr_n = 32'h0;
@@ -2637,11 +2703,23 @@ module top$d_cntr$queue(clock,clear,lifo,push,push_data,push2,push2_data,pop,emp
             max_r$d = 32'h0;
             ovf_r$d = 1'b0;
         end
+        cnt$d = cnt_n;
+        nonempty$d = cnt_n != 32'h0;
+        if (cnt_n > max_r$q) begin
+            max_r$d = cnt_n;
+        end
+        many_r$d = cnt_n > 32'h1;
+        full_r$d = cnt_n == c_cap;
+        tight_r$d = cnt_n >= c_cap - 32'h1;
         rd_ptr$d = rd_n;
         wr_ptr$d = wr_n;
-        rd1 = rd_ptr$q + 32'h1;
-        wr_m1 = wr_ptr$q - 32'h1;
-        wr_m2 = wr_ptr$q - 32'h2;
+        rd1_x$d = (rd_n + 32'h1) ^ c_one;
+        wr1_x$d = (wr_n + 32'h1) ^ c_one;
+        wr_m1_n$d = ~(wr_n - 32'h1);
+        wr_m2_x$d = (wr_n - 32'h2) ^ c_m2;
+        rd1 = rd1_x$q ^ c_one;
+        wr_m1 = ~wr_m1_n$q;
+        wr_m2 = wr_m2_x$q ^ c_m2;
         pick = do_pop & many;
         raddr = rd_ptr$q;
         if (pick) begin
@@ -2760,7 +2838,7 @@ module top$d_cntr$queue$cnt(d,q,clock);
 endmodule // top$d_cntr$queue$cnt
 
 
-module top$d_cntr$queue$rd_ptr(d,q,clock);
+module top$d_cntr$queue$rd1_x(d,q,clock);
     
     // Module arguments
     input wire  [9:0] d;
@@ -2776,7 +2854,7 @@ module top$d_cntr$queue$rd_ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$d_cntr$queue$rd_ptr
+endmodule // top$d_cntr$queue$rd1_x
 
 
 module top$dop(clock,load_en,load_addr,load_data,d$0,d$1,d$2,d$3,d$4,d$5,d$6,d$7,d$8,d$9,d$10,d$11,d$12,d$13,d$14,d$15,d$16,d$17,d$18,d$19,d$20,d$21,d$22,d$23,e$0,e$1,e$2,e$3,e$4,e$5,e$6,e$7,e$8,e$9,e$10,e$11,e$12,e$13,e$14,e$15,e$16,e$17,e$18,e$19,e$20,e$21,e$22,e$23,tag,valid_in,overlap,tag_out,valid_out);
@@ -6265,7 +6343,7 @@ module top$dop$doptrf$0$mul_0(clock,a,b,valid_in,y,valid_out,round_up);
         .q(s1_zero$q),
         .clock(s1_zero$clock)
     );
-    top$d_cntr$queue$rd_ptr s1_exp(
+    top$d_cntr$queue$rd1_x s1_exp(
         .d(s1_exp$d),
         .q(s1_exp$q),
         .clock(s1_exp$clock)
@@ -6311,7 +6389,7 @@ module top$dop$doptrf$0$mul_0(clock,a,b,valid_in,y,valid_out,round_up);
         .q(s2_zero$q),
         .clock(s2_zero$clock)
     );
-    top$d_cntr$queue$rd_ptr s2_exp(
+    top$d_cntr$queue$rd1_x s2_exp(
         .d(s2_exp$d),
         .q(s2_exp$q),
         .clock(s2_exp$clock)
@@ -23648,7 +23726,7 @@ module top$tri_unit$tc_ab$af(clock,a,b,valid_in,y,valid_out);
         .q(s1_zero$q),
         .clock(s1_zero$clock)
     );
-    top$d_cntr$queue$rd_ptr s1_exp(
+    top$d_cntr$queue$rd1_x s1_exp(
         .d(s1_exp$d),
         .q(s1_exp$q),
         .clock(s1_exp$clock)
@@ -23694,7 +23772,7 @@ module top$tri_unit$tc_ab$af(clock,a,b,valid_in,y,valid_out);
         .q(s2_zero$q),
         .clock(s2_zero$clock)
     );
-    top$d_cntr$queue$rd_ptr s2_exp(
+    top$d_cntr$queue$rd1_x s2_exp(
         .d(s2_exp$d),
         .q(s2_exp$q),
         .clock(s2_exp$clock)
@@ -26004,7 +26082,7 @@ module top$tri_unit$tc_ab$edges$0$px_qz(clock,a,b,valid_in,y,valid_out);
         .q(s1_zero$q),
         .clock(s1_zero$clock)
     );
-    top$d_cntr$queue$rd_ptr s1_exp(
+    top$d_cntr$queue$rd1_x s1_exp(
         .d(s1_exp$d),
         .q(s1_exp$q),
         .clock(s1_exp$clock)
@@ -26050,7 +26128,7 @@ module top$tri_unit$tc_ab$edges$0$px_qz(clock,a,b,valid_in,y,valid_out);
         .q(s2_zero$q),
         .clock(s2_zero$clock)
     );
-    top$d_cntr$queue$rd_ptr s2_exp(
+    top$d_cntr$queue$rd1_x s2_exp(
         .d(s2_exp$d),
         .q(s2_exp$q),
         .clock(s2_exp$clock)

@@ -21,6 +21,8 @@ module top(clock,clear,lifo,push,push_data,push2,push2_data,pop,empty,full,count
     // Constant declarations
     localparam  c_cap = 5'b10000;
     localparam  c_last = 4'hf;
+    localparam  c_one = 4'h1;
+    localparam  c_m2 = 4'he;
     
     // Stub signals
     reg  [4:0] cnt$d;
@@ -70,6 +72,27 @@ module top(clock,clear,lifo,push,push_data,push2,push2_data,pop,empty,full,count
     reg  nonempty$d;
     wire  nonempty$q;
     reg  nonempty$clock;
+    reg  many_r$d;
+    wire  many_r$q;
+    reg  many_r$clock;
+    reg  full_r$d;
+    wire  full_r$q;
+    reg  full_r$clock;
+    reg  tight_r$d;
+    wire  tight_r$q;
+    reg  tight_r$clock;
+    reg  [3:0] rd1_x$d;
+    wire  [3:0] rd1_x$q;
+    reg  rd1_x$clock;
+    reg  [3:0] wr1_x$d;
+    wire  [3:0] wr1_x$q;
+    reg  wr1_x$clock;
+    reg  [3:0] wr_m1_n$d;
+    wire  [3:0] wr_m1_n$q;
+    reg  wr_m1_n$clock;
+    reg  [3:0] wr_m2_x$d;
+    wire  [3:0] wr_m2_x$q;
+    reg  wr_m2_x$clock;
     
     // Local signals
     reg  many;
@@ -113,12 +136,12 @@ module top(clock,clear,lifo,push,push_data,push2,push2_data,pop,empty,full,count
         .q(top_r$q),
         .clock(top_r$clock)
     );
-    top$rd_ptr rd_ptr(
+    top$rd1_x rd_ptr(
         .d(rd_ptr$d),
         .q(rd_ptr$q),
         .clock(rd_ptr$clock)
     );
-    top$rd_ptr wr_ptr(
+    top$rd1_x wr_ptr(
         .d(wr_ptr$d),
         .q(wr_ptr$q),
         .clock(wr_ptr$clock)
@@ -176,6 +199,41 @@ module top(clock,clear,lifo,push,push_data,push2,push2_data,pop,empty,full,count
         .q(nonempty$q),
         .clock(nonempty$clock)
     );
+    top$byp many_r(
+        .d(many_r$d),
+        .q(many_r$q),
+        .clock(many_r$clock)
+    );
+    top$byp full_r(
+        .d(full_r$d),
+        .q(full_r$q),
+        .clock(full_r$clock)
+    );
+    top$byp tight_r(
+        .d(tight_r$d),
+        .q(tight_r$q),
+        .clock(tight_r$clock)
+    );
+    top$rd1_x rd1_x(
+        .d(rd1_x$d),
+        .q(rd1_x$q),
+        .clock(rd1_x$clock)
+    );
+    top$rd1_x wr1_x(
+        .d(wr1_x$d),
+        .q(wr1_x$q),
+        .clock(wr1_x$clock)
+    );
+    top$rd1_x wr_m1_n(
+        .d(wr_m1_n$d),
+        .q(wr_m1_n$q),
+        .clock(wr_m1_n$clock)
+    );
+    top$rd1_x wr_m2_x(
+        .d(wr_m2_x$d),
+        .q(wr_m2_x$q),
+        .clock(wr_m2_x$clock)
+    );
     
     // Update code
     always @(*) begin
@@ -201,6 +259,20 @@ module top(clock,clear,lifo,push,push_data,push2,push2_data,pop,empty,full,count
         order_lifo$d = order_lifo$q;
         max_r$d = max_r$q;
         ovf_r$d = ovf_r$q;
+        many_r$clock = clock;
+        full_r$clock = clock;
+        tight_r$clock = clock;
+        rd1_x$clock = clock;
+        wr1_x$clock = clock;
+        wr_m1_n$clock = clock;
+        wr_m2_x$clock = clock;
+        many_r$d = many_r$q;
+        full_r$d = full_r$q;
+        tight_r$d = tight_r$q;
+        rd1_x$d = rd1_x$q;
+        wr1_x$d = wr1_x$q;
+        wr_m1_n$d = wr_m1_n$q;
+        wr_m2_x$d = wr_m2_x$q;
         bank0$read_clock = clock;
         bank0$write_clock = clock;
         bank1$read_clock = clock;
@@ -211,13 +283,13 @@ module top(clock,clear,lifo,push,push_data,push2,push2_data,pop,empty,full,count
         max_count = max_r$q;
         overflow = ovf_r$q;
         top_data = top_r$q;
-        many = cnt$q > 32'h1;
+        many = many_r$q;
         do_pop = pop & nonempty$q;
-        nfull = cnt$q != c_cap;
+        nfull = ~full_r$q;
+        spare = ~tight_r$q;
         cnt_m1 = cnt$q - 32'h1;
         cnt_p1 = cnt$q + 32'h1;
         cnt_p2 = cnt$q + 32'h2;
-        spare = cnt_p1 < c_cap;
         c0_zero = ~nonempty$q | (do_pop & ~many);
         e1 = push2_data;
         if (push) begin
@@ -253,7 +325,7 @@ module top(clock,clear,lifo,push,push_data,push2,push2_data,pop,empty,full,count
         end
         rd_n = rd_ptr$q;
         wr_n = wr_ptr$q;
-        wr1 = wr_ptr$q + 32'h1;
+        wr1 = wr1_x$q ^ c_one;
         we_a = 1'b0;
         we_b = 1'b0;
         wdata_a = e1;
@@ -326,17 +398,11 @@ module top(clock,clear,lifo,push,push_data,push2,push2_data,pop,empty,full,count
                 end
             end
         end
-        cnt$d = cnt_n;
-        nonempty$d = cnt_n != 32'h0;
-        if (cnt_n > max_r$q) begin
-            max_r$d = cnt_n;
-        end
         if ((any & ~s1) | (two & ~s2)) begin
             ovf_r$d = 1'b1;
         end
         if (clear) begin
-            cnt$d = 32'h0;
-            nonempty$d = 1'b0;
+            cnt_n = 32'h0;
             top_r$d = 32'h0;
             rd_n = 32'h0;
             wr_n = 32'h0;
@@ -346,11 +412,23 @@ module top(clock,clear,lifo,push,push_data,push2,push2_data,pop,empty,full,count
             max_r$d = 32'h0;
             ovf_r$d = 1'b0;
         end
+        cnt$d = cnt_n;
+        nonempty$d = cnt_n != 32'h0;
+        if (cnt_n > max_r$q) begin
+            max_r$d = cnt_n;
+        end
+        many_r$d = cnt_n > 32'h1;
+        full_r$d = cnt_n == c_cap;
+        tight_r$d = cnt_n >= c_cap - 32'h1;
         rd_ptr$d = rd_n;
         wr_ptr$d = wr_n;
-        rd1 = rd_ptr$q + 32'h1;
-        wr_m1 = wr_ptr$q - 32'h1;
-        wr_m2 = wr_ptr$q - 32'h2;
+        rd1_x$d = (rd_n + 32'h1) ^ c_one;
+        wr1_x$d = (wr_n + 32'h1) ^ c_one;
+        wr_m1_n$d = ~(wr_n - 32'h1);
+        wr_m2_x$d = (wr_n - 32'h2) ^ c_m2;
+        rd1 = rd1_x$q ^ c_one;
+        wr_m1 = ~wr_m1_n$q;
+        wr_m2 = wr_m2_x$q ^ c_m2;
         pick = do_pop & many;
         raddr = rd_ptr$q;
         if (pick) begin
@@ -507,7 +585,7 @@ module top$cnt(d,q,clock);
 endmodule // top$cnt
 
 
-module top$rd_ptr(d,q,clock);
+module top$rd1_x(d,q,clock);
     
     // Module arguments
     input wire  [3:0] d;
@@ -523,4 +601,4 @@ module top$rd_ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$rd_ptr
+endmodule // top$rd1_x

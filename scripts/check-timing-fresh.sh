@@ -4,8 +4,7 @@
 # exported, and every exported unit has a row in docs/figures/timing.csv (the ECP5 table,
 # docs/figures/timing_ecp5.csv, has rows only for the units it measures).
 # Also: every chip's row in timing.csv is set by a datapath unit (its slow stage in the DOP unit
-# or TRI_UNIT), so that a format or a rounding, not the control, sets a chip's clock; a glue
-# path within 5% of the slowest datapath unit is printed as a note.
+# or TRI_UNIT), so that a format or a rounding, not the control, sets a chip's clock.
 # Usage: scripts/check-timing-fresh.sh [TABLE ...]   (default: the two tables; what CI runs)
 set -euo pipefail
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
@@ -31,20 +30,11 @@ for table in sys.argv[1:]:
             bad.append(f'{table}:{line}: {u}: measured on another rtl/{u}.v (sha256 {r["rtl_sha256"][:12]}.., '
                        f'now {rtl[u][:12]}..)')
         # a chip's clock is its datapath's: the slow stage in its DOP unit or TRI_UNIT, not
-        # in the glue (D_CNTR, the memory port, the counters), whose paths are cut to be
-        # shorter; a glue path within 5% of the slowest black box's own period is named, not
-        # failed (the bbox flow's `stage_ns` lists the black boxes first)
+        # in the glue (D_CNTR, the memory port, the counters), whose paths are cut to be shorter
         stage = r.get('slow_stage', '')
         if table.endswith('/timing.csv') and u.startswith('chip_') and not stage.startswith(('tri_unit', 'dop')):
-            boxes = [float(x.rsplit(':', 1)[1]) for x in r.get('stage_ns', '').split() if '(' in x.split(':')[0]]
-            datapath = max(boxes, default=0.0)
-            period = float(r['min_period_ns'])
-            if datapath and period <= 1.05 * datapath:
-                print(f'note: {u}: its period {period:.3f} ns is set by {stage}, '
-                      f'{100 * (period / datapath - 1):.1f}% above its slowest datapath unit ({datapath:.2f} ns)')
-            else:
-                bad.append(f'{table}:{line}: {u}: its period is set by {stage}, not by its DOP unit or TRI_UNIT: '
-                           f'cut that glue path (docs/explanation/architecture.md, "Clock period")')
+            bad.append(f'{table}:{line}: {u}: its period is set by {stage}, not by its DOP unit or TRI_UNIT: '
+                       f'cut that glue path (docs/explanation/architecture.md, "Clock period")')
     missing = sorted(set(rtl) - seen)
     if missing and table.endswith('/timing.csv'):
         bad.append(f'{table}: not measured (no row): {" ".join(missing)}')

@@ -163,7 +163,7 @@ macro_rules! rtl_chips {
             K24E8m15, "chip_e8m15_k24", e8m15_k24, (24, REDUCED, REDUCED), true, 1, 1, 4.0;
             /// The papers' chip (k = 24) in e8m10 throughout, the study's narrowest format.
             /// (rust-hdl's speed assumed to be `chip_e8m15_b32_k24`'s.)
-            K24E8m10, "chip_e8m10_k24", e8m10, (24, E8M10, E8M10), false, 1, 1, 4.0;
+            K24E8m10, "chip_e8m10_k24", e8m10, (24, E8M10, E8M10), true, 1, 1, 4.0;
             /// k = 6 in e8m15 with TRI_UNIT folded: a pair every 16 clocks.
             /// (rust-hdl's speed from `fold16_patch_fifo_all` in lockstep, tb/rtl_chip.rs: 1,498
             /// clocks in 10.4 s; the folded TRI_UNIT simulates far faster than two T.CHECKs.)

@@ -242,8 +242,8 @@ pub mod e8m10 {
         norm_p3(6, 10, 12, 13)
     );
     // the papers' chip (k = 24) in e8m10: node word 1 + 24 * 19 + 64 bits (wider than a
-    // triangle word, 23 * 19 + 2); the `words` layout only (with records, D_CNTR's look-ahead
-    // into the queue, 5.65 ns, would set its clock above TRI_UNIT's 5.47)
+    // triangle word, 23 * 19 + 2); a memory word holds a record of two (the `records`
+    // layout), 1,042 bits padded to 2,048
     crate::rtl::chip::chip!(
         24,
         DopUnit24 = DopUnit24::new,
@@ -253,9 +253,9 @@ pub mod e8m10 {
         19,
         521,
         439,
-        521,
-        521,
-        1
+        2048,
+        1042,
+        2
     );
 }
 

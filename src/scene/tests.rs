@@ -323,7 +323,7 @@ fn rtl_order_of_port_and_layout() {
         &ddr(8),
     )
     .unwrap_err();
-    assert!(e.contains("chip_e8m15_k6 reads the `words` layout only (of the RTL chips, chip_b32_k24, chip_e8m15_b32_k24, chip_e8m15_k24, chip_b32_k24_q4 also read `records`); this configuration has layout = \"records\""), "{e}");
+    assert!(e.contains("chip_e8m15_k6 reads the `words` layout only (of the RTL chips, chip_b32_k24, chip_e8m15_b32_k24, chip_e8m15_k24, chip_e8m10_k24, chip_b32_k24_q4 also read `records`); this configuration has layout = \"records\""), "{e}");
 }
 
 /// Stored DOP precision: the chip of 4-bit codes runs them, the others name it.

@@ -150,7 +150,7 @@ pub fn queries() -> Vec<ChipQuery> {
             [
                 "k24m10_apart_lifo_first",
                 "k24m10_rne_patch_fifo_all",
-                "k24m10_big_sphere_lifo_cache",
+                "k24m10_big_rec_sphere_lifo_cache",
             ],
         ),
         fold16(&p),

@@ -234,9 +234,7 @@ fn json_rows_carry_their_cells() {
 
 /// The study's default configurations (k = 24 in its four formats, both DOP roundings, on the
 /// three memory presets with one node record held, `cchip accuracy`'s defaults) each run on
-/// a chip that is built, at that chip's measured period, but e8m10 on the DDR presets: its
-/// chip reads the `words` layout only (with records D_CNTR's look-ahead would set its clock),
-/// so those rows say estimated, and why.
+/// a chip that is built, at that chip's measured period.
 #[test]
 fn the_default_study_runs_on_measured_chips() {
     let plan = Plan {
@@ -258,16 +256,6 @@ fn the_default_study_runs_on_measured_chips() {
             dop: p.dop_interval,
         };
         let c = Clock::of(plan.technology, &cfg, folds, preset).unwrap();
-        let words_only = cfg.format.dop == crate::format::Format::E8M10 && preset != Preset::Rtl;
-        if words_only {
-            assert!(
-                c.source()
-                    .contains("chip_e8m10_k24 reads the `words` layout only"),
-                "{}",
-                c.source()
-            );
-            continue;
-        }
         assert_eq!(
             c.source,
             PeriodSource::Measured,

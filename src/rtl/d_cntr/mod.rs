@@ -60,8 +60,10 @@ pub const W: usize = ENTRY_BITS as usize;
 /// address, the RAM returns the old word and the written word is taken from a bypass
 /// register (`byp`, `byp_data`) instead. So pops and pushes run back to back at one pop
 /// and two pushes per clock, in any mix, with no stall. The pop arrives last (D_CNTR's
-/// decision): the read address, bypass and count after the edge are selected among values
-/// made from the registers alone, and `count != 0` is a register (`nonempty`) of its own.
+/// decision): the read address, bypass and count after the edge are selected among registers.
+/// So the count's flags (`count != 0`, `> 1`, `== 2^N`, `>= 2^N - 1`) and the pointers'
+/// neighbours (`rd_ptr + 1`, `wr_ptr + 1`, `wr_ptr - 1`, `wr_ptr - 2`) are registers of their
+/// own, written with the count and the pointers.
 #[derive(LogicBlock)]
 pub struct PairQueue<const N: usize, const NP1: usize, const NM1: usize> {
     pub clock: Signal<In, Clock>,
@@ -80,6 +82,8 @@ pub struct PairQueue<const N: usize, const NP1: usize, const NM1: usize> {
     pub top_data: Signal<Out, Bits<W>>,
     c_cap: Constant<Bits<NP1>>,
     c_last: Constant<Bits<N>>,
+    c_one: Constant<Bits<N>>,
+    c_m2: Constant<Bits<N>>,
     // state
     cnt: DFF<Bits<NP1>>,
     top_r: DFF<Bits<W>>,
@@ -96,6 +100,15 @@ pub struct PairQueue<const N: usize, const NP1: usize, const NM1: usize> {
     // this cycle
     // count != 0, a register of its own: it decides the pop, which arrives last
     nonempty: DFF<Bit>,
+    // and so is all that the read address is chosen by: the count's flags and the pointers'
+    // neighbours, each held in an encoding whose reset value (0) is an empty queue's
+    many_r: DFF<Bit>,
+    full_r: DFF<Bit>,
+    tight_r: DFF<Bit>,
+    rd1_x: DFF<Bits<N>>,
+    wr1_x: DFF<Bits<N>>,
+    wr_m1_n: DFF<Bits<N>>,
+    wr_m2_x: DFF<Bits<N>>,
     many: Signal<Local, Bit>,
     do_pop: Signal<Local, Bit>,
     nfull: Signal<Local, Bit>,
@@ -150,6 +163,8 @@ impl<const N: usize, const NP1: usize, const NM1: usize> Default for PairQueue<N
             top_data: Default::default(),
             c_cap: Constant::new((1u64 << N).into()),
             c_last: Constant::new(((1u64 << N) - 1).into()),
+            c_one: Constant::new(1.into()),
+            c_m2: Constant::new(((1u64 << N) - 2).into()),
             cnt: Default::default(),
             top_r: Default::default(),
             rd_ptr: Default::default(),
@@ -163,6 +178,13 @@ impl<const N: usize, const NP1: usize, const NM1: usize> Default for PairQueue<N
             bank0: Default::default(),
             bank1: Default::default(),
             nonempty: Default::default(),
+            many_r: Default::default(),
+            full_r: Default::default(),
+            tight_r: Default::default(),
+            rd1_x: Default::default(),
+            wr1_x: Default::default(),
+            wr_m1_n: Default::default(),
+            wr_m2_x: Default::default(),
             many: Default::default(),
             do_pop: Default::default(),
             nfull: Default::default(),
@@ -216,6 +238,7 @@ impl<const N: usize, const NP1: usize, const NM1: usize> crate::rtl::kernel::Ker
             self, clock, cnt, nonempty, top_r, rd_ptr, wr_ptr, byp, byp_data, rsel, order_lifo,
             max_r, ovf_r
         );
+        dff_setup!(self, clock, many_r, full_r, tight_r, rd1_x, wr1_x, wr_m1_n, wr_m2_x);
         self.bank0.read_clock.next = self.clock.val();
         self.bank0.write_clock.next = self.clock.val();
         self.bank1.read_clock.next = self.clock.val();
@@ -228,18 +251,18 @@ impl<const N: usize, const NP1: usize, const NM1: usize> crate::rtl::kernel::Ker
         self.overflow.next = self.ovf_r.q.val();
         self.top_data.next = self.top_r.q.val();
         // ---- this cycle's operation: the pop, then up to two pushes (e1, then push2_data)
-        self.many.next = self.cnt.q.val() > 1; // the RAM holds the next entry
+        self.many.next = self.many_r.q.val(); // count > 1: the RAM holds the next entry
         self.do_pop.next = self.pop.val() & self.nonempty.q.val();
-        // Everything below that the pop and pushes decide is selected among values made
-        // from the registers alone (counts, pointers, their comparisons), so that the pop,
-        // which arrives last, passes through a few multiplexers only: the queue's read
-        // address was on the path that set the chip's clock.
-        self.nfull.next = self.cnt.q.val() != self.c_cap.val();
+        // Everything below that the pop and pushes decide is selected among registers
+        // (the count's flags, the pointers and their neighbours), so that the pop, which
+        // arrives last, passes through a few multiplexers only: the queue's read address
+        // was on the path that set the chip's clock.
+        self.nfull.next = !self.full_r.q.val(); // count != 2^N
+        self.spare.next = !self.tight_r.q.val(); // count + 1 < 2^N: room for two, if no pop
         self.cnt_m1.next = self.cnt.q.val() - 1;
         self.cnt_p1.next = self.cnt.q.val() + 1;
         self.cnt_p2.next = self.cnt.q.val() + 2;
-        self.spare.next = self.cnt_p1.val() < self.c_cap.val(); // room for two, if no pop
-                                                                // the count after the pop is 0 (into an empty queue, or one the pop empties)
+        // the count after the pop is 0 (into an empty queue, or one the pop empties)
         self.c0_zero.next = !self.nonempty.q.val() | (self.do_pop.val() & !self.many.val());
         self.e1.next = self.push2_data.val();
         if self.push.val() {
@@ -278,7 +301,7 @@ impl<const N: usize, const NP1: usize, const NM1: usize> crate::rtl::kernel::Ker
         }
         self.rd_n.next = self.rd_ptr.q.val();
         self.wr_n.next = self.wr_ptr.q.val();
-        self.wr1.next = self.wr_ptr.q.val() + 1;
+        self.wr1.next = self.wr1_x.q.val() ^ self.c_one.val(); // wr_ptr + 1
         // port A writes wr_ptr, port B wr_ptr + 1 (only with A)
         self.we_a.next = false;
         self.we_b.next = false;
@@ -367,17 +390,11 @@ impl<const N: usize, const NP1: usize, const NM1: usize> crate::rtl::kernel::Ker
                 }
             }
         }
-        self.cnt.d.next = self.cnt_n.val();
-        self.nonempty.d.next = self.cnt_n.val() != 0;
-        if self.cnt_n.val() > self.max_r.q.val() {
-            self.max_r.d.next = self.cnt_n.val();
-        }
         if (self.any.val() & !self.s1.val()) | (self.two.val() & !self.s2.val()) {
             self.ovf_r.d.next = true;
         }
         if self.clear.val() {
-            self.cnt.d.next = 0.into();
-            self.nonempty.d.next = false;
+            self.cnt_n.next = 0.into();
             self.top_r.d.next = 0.into();
             self.rd_n.next = 0.into();
             self.wr_n.next = 0.into();
@@ -387,8 +404,21 @@ impl<const N: usize, const NP1: usize, const NM1: usize> crate::rtl::kernel::Ker
             self.max_r.d.next = 0.into();
             self.ovf_r.d.next = false;
         }
+        // the state after the edge (a clear's count 0 leaves max_count cleared)
+        self.cnt.d.next = self.cnt_n.val();
+        self.nonempty.d.next = self.cnt_n.val() != 0;
+        if self.cnt_n.val() > self.max_r.q.val() {
+            self.max_r.d.next = self.cnt_n.val();
+        }
+        self.many_r.d.next = self.cnt_n.val() > 1;
+        self.full_r.d.next = self.cnt_n.val() == self.c_cap.val();
+        self.tight_r.d.next = self.cnt_n.val() >= self.c_cap.val() - 1;
         self.rd_ptr.d.next = self.rd_n.val();
         self.wr_ptr.d.next = self.wr_n.val();
+        self.rd1_x.d.next = (self.rd_n.val() + 1) ^ self.c_one.val();
+        self.wr1_x.d.next = (self.wr_n.val() + 1) ^ self.c_one.val();
+        self.wr_m1_n.d.next = !(self.wr_n.val() - 1);
+        self.wr_m2_x.d.next = (self.wr_n.val() - 2) ^ self.c_m2.val();
     }
 }
 
@@ -405,9 +435,9 @@ impl<const N: usize, const NP1: usize, const NM1: usize> crate::rtl::kernel::Ker
         // of its parity; read the next entry of the state after this edge from both banks:
         // FIFO rd_n, LIFO wr_n - 1 (after a clear: 0, or 2^N - 1), as the cases above move
         // them, from addresses made from the registers alone
-        self.rd1.next = self.rd_ptr.q.val() + 1;
-        self.wr_m1.next = self.wr_ptr.q.val() - 1;
-        self.wr_m2.next = self.wr_ptr.q.val() - 2;
+        self.rd1.next = self.rd1_x.q.val() ^ self.c_one.val();
+        self.wr_m1.next = !self.wr_m1_n.q.val();
+        self.wr_m2.next = self.wr_m2_x.q.val() ^ self.c_m2.val();
         self.pick.next = self.do_pop.val() & self.many.val(); // FIFO: rd_n = rd_ptr + 1
         self.raddr.next = self.rd_ptr.q.val();
         if self.pick.val() {
