@@ -301,8 +301,8 @@ impl<const N: usize, const NP1: usize, const NM1: usize> crate::rtl::kernel::Ker
         }
         self.rd_n.next = self.rd_ptr.q.val();
         self.wr_n.next = self.wr_ptr.q.val();
-        self.wr1.next = self.wr1_x.q.val() ^ self.c_one.val(); // wr_ptr + 1
-        // port A writes wr_ptr, port B wr_ptr + 1 (only with A)
+        // wr_ptr + 1; port A writes wr_ptr, port B wr_ptr + 1 (only with A)
+        self.wr1.next = self.wr1_x.q.val() ^ self.c_one.val();
         self.we_a.next = false;
         self.we_b.next = false;
         self.wdata_a.next = self.e1.val();
