@@ -102,19 +102,21 @@ def ecp5():
 
 
 def area():
-    cols = ["b32_rne", "b32_ru", "e8m15_rne", "e8m15_ru", "e8m10_rne", "e8m10_ru"]
+    """The area study's blocks by format: the DOP units (either rounding: a setup word) and
+    TRI_UNITs (T.CHECK to nearest-even)."""
+    cols = ["b32", "e8m15", "e8m10"]
     pivot = OrderedDict()
     for r in rows("area_cells.csv"):
-        m = re.fullmatch(r"(\w+?)_(b32|e8m15|e8m10)_(rne|ru)", r["unit"])
+        m = re.fullmatch(r"(\w+?)_(b32|e8m15|e8m10)(?:_rne)?", r["unit"])
         if not m:
-            sys.exit(f"docs/figures/area_cells.csv: unit {r['unit']!r} is not <block>_<format>_<rounding>")
-        pivot.setdefault(m.group(1), {})[f"{m.group(2)}_{m.group(3)}"] = n(r["cells"])
+            sys.exit(f"docs/figures/area_cells.csv: unit {r['unit']!r} is not <block>_<format>[_rne]")
+        pivot.setdefault(m.group(1), {})[m.group(2)] = n(r["cells"])
 
     def key(block):
         nums = [int(x) for x in re.findall(r"\d+", block)]
         return (block.split("_")[0], block.count("fold"), nums[::-1])
     body = [[f"`{b}`"] + [pivot[b].get(c, "") for c in cols] for b in sorted(pivot, key=key)]
-    return table(["block", "binary32 rne", "binary32 ru", "e8m15 rne", "e8m15 ru", "e8m10 rne", "e8m10 ru"], body) + \
+    return table(["block", "binary32", "e8m15", "e8m10"], body) + \
         "\n\n" + source("Yosys `synth` generic cells, hierarchical; `docs/figures/area_cells.csv`, "
                         "measured by `scripts/area-study.sh`")
 
@@ -289,13 +291,13 @@ def accuracy_time():
 
 
 def dop_unit_cells():
-    """The unfolded DOP unit's cells by k, format and DOP rounding (the area study's rows)."""
+    """The unfolded DOP unit's cells by k and format (the area study's rows)."""
     cells = {r["unit"]: r["cells"] for r in rows("area_cells.csv")}
-    cols = [(f, r) for f in ("b32", "e8m15", "e8m10") for r in ("ru", "rne")]
-    ks = sorted({int(m.group(1)) for u in cells if (m := re.fullmatch(r"dop_unit_k(\d+)_b32_ru", u))})
-    body = [[k] + [n(cells[f"dop_unit_k{k}_{f}_{r}"]) for f, r in cols] for k in ks]
-    name = {"b32": "binary32", "ru": "outward", "rne": "nearest-even"}
-    return table(["k"] + [f"{name.get(f, f)} {name[r]}" for f, r in cols], body) + "\n\n" + \
+    fmts = ("b32", "e8m15", "e8m10")
+    ks = sorted({int(m.group(1)) for u in cells if (m := re.fullmatch(r"dop_unit_k(\d+)_b32", u))})
+    body = [[k] + [n(cells[f"dop_unit_k{k}_{f}"]) for f in fmts] for k in ks]
+    name = {"b32": "binary32"}
+    return table(["k"] + [name.get(f, f) for f in fmts], body) + "\n\n" + \
         source("Yosys `synth` generic cells, hierarchical; `docs/figures/area_cells.csv`, "
                "measured by `scripts/area-study.sh`")
 
