@@ -240,15 +240,18 @@ def stored_dops():
                      n(round(o["cycles"] / o["queries"])), f"{o['dop_tests'] / o['cycles']:.3f}"])
     clock = next(iter(osu.values()))["period_ns"]
     coded = sorted({r["period_ns"] for r in osu.values() if r["period_ns"] != clock})
+    measured = sum(": measured" in r["clock"] for r in osu.values())
     cmd = ("`cchip accuracy --presets date05,date05-treelets --formats binary32,e8m15 "
            "--dop-bits full,16,8,4,2,1 --technology paper --json` (and `--technology osu018`), "
            "the default sweep")
     return table(["preset", "mesh", "stored DOP bits", "DOP tests / query", "memory KiB / query",
                   "clocks / query, 800 MHz", "DOP tests / clock, 800 MHz",
                   "clocks / query, OSU clock", "DOP tests / clock, OSU clock"], body) + "\n\n" + \
-        source(f"{cmd}; the OSU clock {clock:.3f} ns, chip_b32_k24's; for codes "
-               f"{', '.join(f'{c:.3f}' for c in coded) or 'the same'} ns, chip_b32_k24_q4's (set by its decode stage; estimated, "
-               "its memory side the RTL's, one node record per object); "
+        source(f"{cmd}; the OSU clock {clock:.3f} ns, chip_b32_k24's"
+               + (f"; for codes {', '.join(f'{c:.3f}' for c in coded)} ns, chip_b32_k24_q4's" if coded
+                  else ", and chip_b32_k24_q4's for codes")
+               + f" (measured on {measured} of the {len(osu)} rows: full DOPs and 4-bit codes on date05; the "
+               "others' chips are not built, their memory side or code width not the RTL's); "
                "`docs/figures/stored_dops_paper.json`, `stored_dops_osu018.json`")
 
 

@@ -7,7 +7,7 @@
 // `wrapper` is free in every step, and the initial state is the registers' initial
 // values (an empty FIFO, as after a clear), the RAM banks' contents arbitrary.
 //
-// The wrapper holds a reference model of the spec (src/rtl/d_cntr/mod.rs, PairQueue's doc;
+// The wrapper holds a reference model of the spec (src/rtl/d_cntr/pair_queue.rs, PairQueue's doc;
 // golden src/cycle/d_cntr.rs, QueueModel): the count, max_count and overflow, the order
 // latched by clear, and one tracked entry (the "any-constant entry": the value f_data is
 // an anyconst, pushed at most once, in a step the solver picks) with the number of entries
