@@ -58,6 +58,12 @@ impl_unit!(e8m10::FpMul, 4, no);
 impl_unit!(b32::FpAdd, 3, yes);
 impl_unit!(e8m15::FpAdd, 3, yes);
 impl_unit!(e8m10::FpAdd, 3, yes);
+impl_unit!(b32::FpMulFpga, 6, no);
+impl_unit!(e8m15::FpMulFpga, 6, no);
+impl_unit!(e8m10::FpMulFpga, 6, no);
+impl_unit!(b32::FpAddFpga, 6, yes);
+impl_unit!(e8m15::FpAddFpga, 6, yes);
+impl_unit!(e8m10::FpAddFpga, 6, yes);
 
 fn golden(fmt: Format, op: Op, r: Rounding, a: u64, b: u64) -> u64 {
     let (x, y) = (fmt.from_bits(a), fmt.from_bits(b));
@@ -280,6 +286,27 @@ fn add_e8m15_random() {
 #[test]
 fn add_e8m10_random() {
     prop_unit(e8m10::fp_add_top, Format::E8M10, false);
+}
+
+/// The units at FPGA depth: the same values, six clocks each.
+#[test]
+fn fpga_depth_random() {
+    prop_unit(b32::fp_mul_fpga_top, Format::BINARY32, true);
+    prop_unit(b32::fp_add_fpga_top, Format::BINARY32, false);
+    prop_unit(e8m15::fp_mul_fpga_top, Format::REDUCED, true);
+    prop_unit(e8m15::fp_add_fpga_top, Format::REDUCED, false);
+    prop_unit(e8m10::fp_mul_fpga_top, Format::E8M10, true);
+    prop_unit(e8m10::fp_add_fpga_top, Format::E8M10, false);
+}
+
+#[test]
+fn fpga_depth_specials() {
+    specials_unit(b32::fp_mul_fpga_top, Format::BINARY32, true);
+    specials_unit(b32::fp_add_fpga_top, Format::BINARY32, false);
+    specials_unit(e8m15::fp_mul_fpga_top, Format::REDUCED, true);
+    specials_unit(e8m15::fp_add_fpga_top, Format::REDUCED, false);
+    specials_unit(e8m10::fp_mul_fpga_top, Format::E8M10, true);
+    specials_unit(e8m10::fp_add_fpga_top, Format::E8M10, false);
 }
 
 #[test]

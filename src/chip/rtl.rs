@@ -11,6 +11,46 @@ use crate::format::{Format, Rounding};
 pub const FP_MUL_LATENCY: usize = 4;
 pub const FP_ADD_LATENCY: usize = 3;
 pub const FP_SCALE_LATENCY: usize = 4;
+
+/// How deep the floating-point units are cut, per target. The values are the same bit for
+/// bit at every depth; only the latencies differ.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Depth {
+    /// For standard cells (OSU 0.18 um: a stage of 5-7 ns): `FpMul`, `FpAdd`.
+    Asic,
+    /// For an FPGA (ECP5: a stage of a few LUT levels and one carry chain, where a LUT level
+    /// and its routing cost about 1 ns): `FpMulFpga`, `FpAddFpga`.
+    Fpga,
+}
+
+impl Depth {
+    /// Both depths.
+    pub const ALL: [Depth; 2] = [Depth::Asic, Depth::Fpga];
+
+    /// The multiplier's latency in clocks.
+    pub const fn fp_mul_latency(self) -> usize {
+        match self {
+            Depth::Asic => FP_MUL_LATENCY,
+            Depth::Fpga => 6,
+        }
+    }
+
+    /// The adder's latency in clocks.
+    pub const fn fp_add_latency(self) -> usize {
+        match self {
+            Depth::Asic => FP_ADD_LATENCY,
+            Depth::Fpga => 6,
+        }
+    }
+
+    /// What an exported unit's name carries after its operation (`fp_add_fpga_b32_rne`).
+    pub fn tag(self) -> &'static str {
+        match self {
+            Depth::Asic => "",
+            Depth::Fpga => "_fpga",
+        }
+    }
+}
 /// Clocks from a DOP test's issue to its result: the DOPTRF lane's pipeline (D.KLMSEL and
 /// the NOR add no register).
 pub const DOP_LATENCY: usize = 15;

@@ -53,6 +53,8 @@ struct FormatRtl {
     fmt: Format,
     fp_mul: VerilogFn,
     fp_add: VerilogFn,
+    fp_mul_fpga: VerilogFn,
+    fp_add_fpga: VerilogFn,
     fp_scale: fn() -> String,
     doptrf: fn() -> String,
     tcheck: VerilogFn,
@@ -69,6 +71,8 @@ const FORMATS: [FormatRtl; 3] = {
                 fmt: crate::rtl::$m::FORMAT,
                 fp_mul: crate::rtl::$m::verilog_fp_mul,
                 fp_add: crate::rtl::$m::verilog_fp_add,
+                fp_mul_fpga: crate::rtl::$m::verilog_fp_mul_fpga,
+                fp_add_fpga: crate::rtl::$m::verilog_fp_add_fpga,
                 fp_scale: crate::rtl::$m::verilog_fp_scale,
                 doptrf: crate::rtl::$m::verilog_doptrf,
                 tcheck: crate::rtl::$m::verilog_tcheck,
@@ -213,28 +217,34 @@ fn dop_units() -> Vec<Unit> {
     units
 }
 
-/// The FP multipliers and adders in every format and both roundings, then the scalers.
+/// The FP multipliers and adders in every format and both roundings, at both depths
+/// (`fp_mul_b32_rne`, `fp_mul_fpga_b32_rne`), then the scalers.
 fn fp_units() -> Vec<Unit> {
+    use crate::chip::rtl::Depth;
     let mut units = vec![];
-    for r in [Rounding::NearestEven, Rounding::TowardPositive] {
-        for f in &FORMATS {
-            let (fmt, vm, va) = (f.fmt, f.fp_mul, f.fp_add);
-            let name = format!("fp_mul_{}_{}", format_tag(fmt), rounding_tag(r));
-            let n2 = name.clone();
-            units.push(Unit {
-                name,
-                latency: 4,
-                verilog: Box::new(move || vm(r)),
-                vectors: Box::new(move || fp_vectors(&n2, fmt, r, false, 4)),
-            });
-            let name = format!("fp_add_{}_{}", format_tag(fmt), rounding_tag(r));
-            let n2 = name.clone();
-            units.push(Unit {
-                name,
-                latency: 3,
-                verilog: Box::new(move || va(r)),
-                vectors: Box::new(move || fp_vectors(&n2, fmt, r, true, 3)),
-            });
+    for depth in Depth::ALL {
+        for r in [Rounding::NearestEven, Rounding::TowardPositive] {
+            for f in &FORMATS {
+                let fmt = f.fmt;
+                let (vm, va) = match depth {
+                    Depth::Asic => (f.fp_mul, f.fp_add),
+                    Depth::Fpga => (f.fp_mul_fpga, f.fp_add_fpga),
+                };
+                let (tags, d) = ((format_tag(fmt), rounding_tag(r)), depth.tag());
+                for (op, add, latency, v) in [
+                    ("mul", false, depth.fp_mul_latency() as u32, vm),
+                    ("add", true, depth.fp_add_latency() as u32, va),
+                ] {
+                    let name = format!("fp_{op}{d}_{}_{}", tags.0, tags.1);
+                    let n2 = name.clone();
+                    units.push(Unit {
+                        name,
+                        latency,
+                        verilog: Box::new(move || v(r)),
+                        vectors: Box::new(move || fp_vectors(&n2, fmt, r, add, latency)),
+                    });
+                }
+            }
         }
     }
     for f in &FORMATS {

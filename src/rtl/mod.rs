@@ -56,10 +56,14 @@ mod dop_unit_fold;
 mod doptrf;
 mod event_counter;
 mod fp_add;
+mod fp_add_fpga;
 mod fp_mul;
+mod fp_mul_fpga;
 mod fp_scale;
 mod kernel;
 mod klmsel;
+mod lzc;
+pub use lzc::Lzc;
 mod memory_port;
 mod reg_ring;
 mod tcheck;
@@ -73,12 +77,14 @@ pub use tri_unit::ResultPort;
 /// Stamps out one format's units plus constructors and Verilog export.
 macro_rules! fp_format {
     ($fmt:expr, $W:tt, $WM1:tt, $E:tt, $F:tt, $P:tt, $P2:tt, $P3:tt, $P4:tt, $PP:tt, $S:tt,
-     norm_p($($np:tt),*), norm_p3($($nq:tt),*)) => {
+     norm_p($($np:tt),*), norm_p3($($nq:tt),*), mul_split($PM2:tt, $H:tt, $HH:tt, $H2:tt)) => {
         use crate::format::{Format, Rounding};
 
         $crate::rtl::common::fp_common!($W, $WM1, $E, $F, $P, $P2, $P3, $P4, $PP, norm_p($($np),*), norm_p3($($nq),*));
         $crate::rtl::fp_mul::fp_mul!($W, $E, $F, $P, $P2);
         $crate::rtl::fp_add::fp_add!($W, $WM1, $E, $F, $P, $P2, $P3, $P4);
+        $crate::rtl::fp_mul_fpga::fp_mul_fpga!($W, $E, $F, $P, $P2, $PP, $PM2, $H, $HH, $H2);
+        $crate::rtl::fp_add_fpga::fp_add_fpga!($W, $WM1, $E, $F, $P, $P2, $P3, $P4);
         $crate::rtl::fp_scale::fp_scale!($W, $E, $F, $S);
         $crate::rtl::doptrf::doptrf!($W, $WM1, $E, $F);
         $crate::rtl::klmsel::klmsel!($W);
@@ -123,6 +129,26 @@ macro_rules! fp_format {
         pub fn verilog_fp_add(rounding: Rounding) -> String {
             generate_verilog(&fp_add_top(rounding))
         }
+
+        /// The multiplier at FPGA depth ready to simulate as a top-level block.
+        pub fn fp_mul_fpga_top(rounding: Rounding) -> FpMulFpga {
+            top_level!(FpMulFpga::new(rounding); clock, a, b, valid_in)
+        }
+
+        /// The adder at FPGA depth ready to simulate as a top-level block.
+        pub fn fp_add_fpga_top(rounding: Rounding) -> FpAddFpga {
+            top_level!(FpAddFpga::new(rounding); clock, a, b, sub, valid_in)
+        }
+
+        /// Verilog of the multiplier at FPGA depth (top module `top`).
+        pub fn verilog_fp_mul_fpga(rounding: Rounding) -> String {
+            generate_verilog(&fp_mul_fpga_top(rounding))
+        }
+
+        /// Verilog of the adder at FPGA depth (top module `top`).
+        pub fn verilog_fp_add_fpga(rounding: Rounding) -> String {
+            generate_verilog(&fp_add_fpga_top(rounding))
+        }
     };
 }
 
@@ -141,7 +167,8 @@ pub mod b32 {
         48,
         50,
         norm_p(8, 16, 20, 22, 23),
-        norm_p3(11, 19, 23, 25, 26)
+        norm_p3(11, 19, 23, 25, 26),
+        mul_split(22, 12, 12, 24)
     );
     // the papers' chip: node word 1 + 24 * 32 + 64 bits (wider than a triangle word, 23 * 32 + 2)
     crate::rtl::chip::chip!(
@@ -203,7 +230,8 @@ pub mod e8m15 {
         32,
         34,
         norm_p(0, 8, 12, 14, 15),
-        norm_p3(3, 11, 15, 17, 18)
+        norm_p3(3, 11, 15, 17, 18),
+        mul_split(14, 8, 8, 16)
     );
     // node word 1 + 6 * 24 + 64 bits, triangle word 23 * 24 + 2
     crate::rtl::chip::chip!(
@@ -239,7 +267,8 @@ pub mod e8m10 {
         22,
         24,
         norm_p(3, 7, 9, 10),
-        norm_p3(6, 10, 12, 13)
+        norm_p3(6, 10, 12, 13),
+        mul_split(9, 6, 5, 12)
     );
     // the papers' chip (k = 24) in e8m10: node word 1 + 24 * 19 + 64 bits (wider than a
     // triangle word, 23 * 19 + 2); a memory word holds a record of two (the `records`
@@ -408,6 +437,10 @@ const _: () = assert!(
 const _: () = assert!(
     b32::FpMul::LATENCY == crate::chip::rtl::FP_MUL_LATENCY
         && b32::FpAdd::LATENCY == crate::chip::rtl::FP_ADD_LATENCY
+);
+const _: () = assert!(
+    b32::FpMulFpga::LATENCY == crate::chip::rtl::Depth::Fpga.fp_mul_latency()
+        && b32::FpAddFpga::LATENCY == crate::chip::rtl::Depth::Fpga.fp_add_latency()
 );
 const _: () = assert!(b32::FpScale::LATENCY == crate::chip::rtl::FP_SCALE_LATENCY);
 const _: () = assert!(b32::DopDecode::LATENCY == crate::chip::rtl::DOP_DECODE_LATENCY);
