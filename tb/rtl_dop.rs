@@ -63,7 +63,7 @@ macro_rules! impl_lane {
         impl Pipelined for $t {
             type In = LaneIn;
             type Out = (u64, bool);
-            const LATENCY: usize = LATENCY;
+            const LATENCY: usize = <$t>::LATENCY;
             fn set(&mut self, x: LaneIn, valid: bool) {
                 self.d0.next = x[0].into();
                 self.d1.next = x[1].into();
@@ -91,6 +91,9 @@ macro_rules! impl_lane {
 impl_lane!(b32::Doptrf);
 impl_lane!(e8m15::Doptrf);
 impl_lane!(e8m10::Doptrf);
+impl_lane!(b32::DoptrfFpga);
+impl_lane!(e8m15::DoptrfFpga);
+impl_lane!(e8m10::DoptrfFpga);
 
 /// A case's rounding (its `round_up`).
 fn rounding(x: &LaneIn) -> Rounding {
@@ -247,6 +250,17 @@ fn lane_e8m10_random() {
     prop_lane(e8m10::doptrf_top, Format::E8M10, "Doptrf");
 }
 
+/// The lanes at FPGA depth: the same values, 26 clocks.
+#[test]
+fn lane_fpga_depth() {
+    prop_lane(b32::doptrf_fpga_top, Format::BINARY32, "DoptrfFpga");
+    prop_lane(e8m15::doptrf_fpga_top, Format::REDUCED, "DoptrfFpga");
+    prop_lane(e8m10::doptrf_fpga_top, Format::E8M10, "DoptrfFpga");
+    specials_lane(b32::doptrf_fpga_top, Format::BINARY32);
+    specials_lane(e8m15::doptrf_fpga_top, Format::REDUCED);
+    specials_lane(e8m10::doptrf_fpga_top, Format::E8M10);
+}
+
 #[test]
 fn lane_specials() {
     specials_lane(b32::doptrf_top, Format::BINARY32);
@@ -320,7 +334,7 @@ fn run_unit<U: Unit>(
     mut probe: Option<Probe<U>>,
 ) -> (Vec<(bool, u16)>, usize) {
     let k = U::K;
-    let latency = collision_chip::chip::rtl::dop_fold_latency(U::INTERVAL);
+    let latency = U::LATENCY;
     let zero = vec![0u64; k];
     for &(a, d) in words {
         uut.set_load(true, a, d);
@@ -457,6 +471,7 @@ fn fold_k6_trees() {
         unit_trees_all(e8m15::dop_unit6_fold2_top, Format::REDUCED, 16);
         unit_trees_all(e8m15::dop_unit6_fold3_top, Format::REDUCED, 16);
         unit_trees_all(e8m15::dop_unit6_fold6_top, Format::REDUCED, 16);
+        unit_trees_all(e8m15::dop_unit6_fold6_fpga_top, Format::REDUCED, 16);
         unit_trees_all(b32::dop_unit6_fold3_top, Format::BINARY32, 8);
     });
 }

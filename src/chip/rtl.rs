@@ -43,6 +43,18 @@ impl Depth {
         }
     }
 
+    /// The DOPTRF lane's latency: its input register, a product, three sums in a tree of
+    /// two levels and then `+ e`, its sign test.
+    pub const fn lane_latency(self) -> usize {
+        1 + self.fp_mul_latency() + 3 * self.fp_add_latency() + 1
+    }
+
+    /// The folded DOP unit's latency at a pair every `ii` clocks: its last pass's lanes
+    /// ([`dop_fold_latency`]).
+    pub const fn dop_fold_latency(self, ii: usize) -> usize {
+        self.lane_latency() + ii - 1
+    }
+
     /// What an exported unit's name carries after its operation (`fp_add_fpga_b32_rne`).
     pub fn tag(self) -> &'static str {
         match self {
@@ -74,7 +86,7 @@ pub fn dop_decode_latency(cfg: &ChipConfig) -> u32 {
 /// of its lanes): a pair taken in cycle t has its verdict in cycle t + this, the last pass's
 /// lane latency (its pass starts ii - 1 clocks after the first).
 pub const fn dop_fold_latency(ii: usize) -> usize {
-    DOP_LATENCY + ii - 1
+    Depth::Asic.dop_fold_latency(ii)
 }
 /// T.CHECK's pipeline: a pair in, its verdict 52 clocks later (DATE'05's budget).
 pub const TCHECK_LATENCY: usize = 52;

@@ -42,6 +42,8 @@ pub trait DopUnitSim: Block {
     const WIDTH: usize;
     /// Clocks between pairs taken (1 unless folded).
     const INTERVAL: usize = 1;
+    /// Clocks from a pair taken to its verdict.
+    const LATENCY: usize;
     /// Drives the setup write port (`load_en`, `load_addr`, `load_data`).
     fn set_load(&mut self, en: bool, addr: u64, data: u64);
     /// Drives one node pair (`d[K]`, `e[K]` as bit patterns, `tag`) and `valid_in`.
@@ -73,6 +75,7 @@ macro_rules! impl_dop_unit_sim {
         impl DopUnitSim for $t {
             const K: usize = $k;
             const WIDTH: usize = $w;
+            const LATENCY: usize = <$t>::LATENCY;
             $($extra)*
             fn set_load(&mut self, en: bool, addr: u64, data: u64) {
                 self.load_en.next = en;
@@ -110,6 +113,7 @@ impl_dop_unit_sim!(b32::DopUnit6Fold6, 6, b32::WIDTH, fold);
 impl_dop_unit_sim!(e8m15::DopUnit6Fold2, 6, e8m15::WIDTH, fold);
 impl_dop_unit_sim!(e8m15::DopUnit6Fold3, 6, e8m15::WIDTH, fold);
 impl_dop_unit_sim!(e8m15::DopUnit6Fold6, 6, e8m15::WIDTH, fold);
+impl_dop_unit_sim!(e8m15::DopUnit6Fold6Fpga, 6, e8m15::WIDTH, fold);
 impl_dop_unit_sim!(b32::DopUnit24Fold4, 24, b32::WIDTH, fold);
 impl_dop_unit_sim!(b32::DopUnit24Fold6, 24, b32::WIDTH, fold);
 impl_dop_unit_sim!(b32::DopUnit24Fold8, 24, b32::WIDTH, fold);

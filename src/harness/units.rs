@@ -57,6 +57,7 @@ struct FormatRtl {
     fp_add_fpga: VerilogFn,
     fp_scale: fn() -> String,
     doptrf: fn() -> String,
+    doptrf_fpga: fn() -> String,
     tcheck: VerilogFn,
     tri_unit: VerilogFn,
     dop_unit: fn(usize) -> Option<String>,
@@ -75,6 +76,7 @@ const FORMATS: [FormatRtl; 3] = {
                 fp_add_fpga: crate::rtl::$m::verilog_fp_add_fpga,
                 fp_scale: crate::rtl::$m::verilog_fp_scale,
                 doptrf: crate::rtl::$m::verilog_doptrf,
+                doptrf_fpga: crate::rtl::$m::verilog_doptrf_fpga,
                 tcheck: crate::rtl::$m::verilog_tcheck,
                 tri_unit: crate::rtl::$m::verilog_tri_unit,
                 dop_unit: crate::rtl::$m::verilog_dop_unit,
@@ -169,22 +171,30 @@ pub fn all() -> Vec<Unit> {
     units
 }
 
-/// The DOPTRF lanes, one per format (their rounding an input).
+/// The DOPTRF lanes, one per format and depth (their rounding an input): `doptrf_b32`,
+/// `doptrf_fpga_b32`.
 fn doptrf_units() -> Vec<Unit> {
-    FORMATS
-        .iter()
-        .map(|f| {
-            let (fmt, v) = (f.fmt, f.doptrf);
-            let name = format!("doptrf_{}", format_tag(fmt));
+    use crate::chip::rtl::Depth;
+    let mut units = vec![];
+    for depth in Depth::ALL {
+        for f in &FORMATS {
+            let fmt = f.fmt;
+            let v = match depth {
+                Depth::Asic => f.doptrf,
+                Depth::Fpga => f.doptrf_fpga,
+            };
+            let name = format!("doptrf{}_{}", depth.tag(), format_tag(fmt));
             let n2 = name.clone();
-            Unit {
+            let latency = depth.lane_latency() as u32;
+            units.push(Unit {
                 name,
-                latency: crate::chip::rtl::DOP_LATENCY as u32,
+                latency,
                 verilog: Box::new(v),
-                vectors: Box::new(move || lane_vectors(&n2, fmt)),
-            }
-        })
-        .collect()
+                vectors: Box::new(move || lane_vectors(&n2, fmt, latency)),
+            });
+        }
+    }
+    units
 }
 
 /// The DOP units: k = 6 in e8m15 and k = 24 in binary32, then the folded ones.
@@ -198,7 +208,7 @@ fn dop_units() -> Vec<Unit> {
             name,
             latency: crate::chip::rtl::DOP_LATENCY as u32,
             verilog: Box::new(verilog),
-            vectors: Box::new(move || dop_unit_vectors(&n2, k, fmt, 1)),
+            vectors: Box::new(move || dop_unit_vectors(&n2, k, fmt, 1, crate::chip::rtl::DOP_LATENCY)),
         });
     }
     for (ii, k, fmt) in DOP_FOLDS {
@@ -206,14 +216,25 @@ fn dop_units() -> Vec<Unit> {
         let n2 = name.clone();
         let verilog =
             move || dop_unit_fold_verilog(ii, k, fmt).expect("the RTL stamps out this fold");
-        let latency = crate::chip::rtl::dop_fold_latency(ii) as u32;
+        let latency = crate::chip::rtl::dop_fold_latency(ii);
         units.push(Unit {
             name,
-            latency,
+            latency: latency as u32,
             verilog: Box::new(verilog),
-            vectors: Box::new(move || dop_unit_vectors(&n2, k, fmt, ii)),
+            vectors: Box::new(move || dop_unit_vectors(&n2, k, fmt, ii, latency)),
         });
     }
+    // the FPGA chip's: k = 6 in e8m15, one lane at FPGA depth
+    let (ii, k, fmt) = (6, 6, Format::REDUCED);
+    let name = format!("dop_unit_fpga_{}", &dop_unit_name(k, fmt, ii as u32)["dop_unit_".len()..]);
+    let n2 = name.clone();
+    let latency = crate::chip::rtl::Depth::Fpga.dop_fold_latency(ii);
+    units.push(Unit {
+        name,
+        latency: latency as u32,
+        verilog: Box::new(crate::rtl::e8m15::verilog_dop_unit6_fold6_fpga),
+        vectors: Box::new(move || dop_unit_vectors(&n2, k, fmt, ii, latency)),
+    });
     units
 }
 
@@ -488,11 +509,11 @@ fn value(rng: &mut impl Rng, fmt: Format) -> f64 {
 /// (golden::doptrf::lane), each case in both roundings ([`both_roundings`]), with C >= 0 as
 /// the host sets it, and half of the cases with e = -u +- a few ulps (of the first rounding's
 /// u) so that s lands on zero, a tie or the sign boundary.
-fn lane_vectors(name: &str, fmt: Format) -> String {
+fn lane_vectors(name: &str, fmt: Format, latency: u32) -> String {
     use crate::golden::doptrf;
     let mut out = String::new();
     let _ = writeln!(out, "// round_up d0 d1 d2 c0 c1 c2 c e s flag");
-    let _ = writeln!(out, "// latency: 15");
+    let _ = writeln!(out, "// latency: {latency}");
     let _ = writeln!(out, "// {name}: s = ((d0 c0 + d1 c1) + (d2 c2 + c)) + e in {fmt}, round_up 1: TowardPositive, 0: NearestEven, flag = s < 0; golden: golden::doptrf::lane");
     let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(0xd0b ^ name.len() as u64);
     for i in 0..RANDOM_CASES {
@@ -544,10 +565,10 @@ fn lane_vectors(name: &str, fmt: Format) -> String {
 /// Vectors of the DOP unit: a preload of the host setup (lane i's field f at address 8i + f:
 /// C_i0..2, c_i, j packed as j0 | j1 << 5 | j2 << 10), then every node pair of two small DOP
 /// trees, `d$0.. e$0.. tag -> overlap tag_out` (golden::dop_unit::dop_overlap), for a unit
-/// taking a pair every `interval` clocks (a folded one: the testbench drives a pair in cycles
-/// 0 mod `interval`, and a last column `in_ready` at a result's cycle is its counter's,
-/// latency mod `interval`, being 0).
-fn dop_unit_vectors(name: &str, k: usize, fmt: Format, interval: usize) -> String {
+/// taking a pair every `interval` clocks with `latency` (a folded one: the testbench drives a
+/// pair in cycles 0 mod `interval`, and a last column `in_ready` at a result's cycle is its
+/// counter's, latency mod `interval`, being 0).
+fn dop_unit_vectors(name: &str, k: usize, fmt: Format, interval: usize, latency: usize) -> String {
     use crate::chip::config::ChipConfig;
     use crate::dop::DopTree;
     use crate::golden::host::HostSetup;
@@ -575,7 +596,6 @@ fn dop_unit_vectors(name: &str, k: usize, fmt: Format, interval: usize) -> Strin
         .map(|i| format!("d${i}"))
         .chain((0..k).map(|i| format!("e${i}")))
         .collect();
-    let latency = crate::chip::rtl::dop_fold_latency(interval);
     let ready = if interval > 1 {
         format!(" {}", latency.is_multiple_of(interval) as u8)
     } else {

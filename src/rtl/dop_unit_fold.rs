@@ -28,10 +28,21 @@ macro_rules! dop_unit_fold {
             (DopUnit24Fold12, dop_unit24_fold12_top, 24, 2, 12, 12)
             (DopUnit24Fold24, dop_unit24_fold24_top, 24, 1, 24, 12)
         );
+        // The FPGA chip's: one lane at FPGA depth.
+        $crate::rtl::dop_unit_fold::dop_unit_fold!(@unit $W, DopUnit6Fold6Fpga,
+            dop_unit6_fold6_fpga_top, 6, 1, 6, 3, DoptrfFpga);
+
+        /// Verilog of [`DopUnit6Fold6Fpga`] (top module `top`).
+        pub fn verilog_dop_unit6_fold6_fpga() -> String {
+            generate_verilog(&dop_unit6_fold6_fpga_top())
+        }
     };
     // The units of one list, the (k, ii) they are stamped out for and their Verilog by (k, ii).
     (@units $W:tt; $(($name:ident, $top:ident, $K:tt, $L:tt, $P:tt, $H:tt))+) => {
-        $($crate::rtl::dop_unit_fold::dop_unit_fold!(@unit $W, $name, $top, $K, $L, $P, $H);)+
+        $($crate::rtl::dop_unit_fold::dop_unit_fold!(@unit $W, $name, $top, $K, $L, $P, $H, Doptrf);)+
+        $(impl FoldedDop for DopFold<$K, $P> {
+            type Unit = $name;
+        })+
 
         /// The (k, ii) of every folded DOP unit stamped out here.
         pub const DOP_UNIT_FOLDS: &[(usize, usize)] = &[$(($K, $P)),+];
@@ -45,10 +56,10 @@ macro_rules! dop_unit_fold {
             })
         }
     };
-    // One unit: `$K` directions on `$L` lanes in `$P` = K/L passes; `$H` = K/2. Lane l does
-    // direction p L + l in pass p (kernel indexes are loop variables and literals, evaluated
-    // when the Verilog is written).
-    (@unit $W:tt, $name:ident, $top:ident, $K:tt, $L:tt, $P:tt, $H:tt) => {
+    // One unit: `$K` directions on `$L` lanes (of type `$Lane`) in `$P` = K/L passes; `$H` =
+    // K/2. Lane l does direction p L + l in pass p (kernel indexes are loop variables and
+    // literals, evaluated when the Verilog is written).
+    (@unit $W:tt, $name:ident, $top:ident, $K:tt, $L:tt, $P:tt, $H:tt, $Lane:ident) => {
         /// The DOP unit folded (docs/explanation/architecture.md, "Folded DOP unit"): [`DopUnit6`]'s
         /// function and ports, bit for bit [`dop_overlap`](crate::golden::dop_unit::dop_overlap),
         /// on fewer DOPTRF lanes, a node pair taken every ii clocks, plus `in_ready`.
@@ -62,11 +73,11 @@ macro_rules! dop_unit_fold {
         /// (with its tag and valid bit). The setup registers are read at every pass: the host
         /// writes them between queries, not while a pair is in its passes.
         ///
-        /// The lanes' flags of pass p come out at counter (15 + p) mod ii; passes 0 .. ii-2
-        /// are ORed into `acc`, and with the last pass's flags give `overlap` (their NOR,
-        /// combinational, as in the unfolded unit), `tag_out` and `valid_out` in the cycle
-        /// [`dop_fold_latency`](crate::chip::rtl::dop_fold_latency)(ii) = 14 + ii clocks after
-        /// the pair was taken.
+        /// The lanes' flags of pass p come out at counter (λ + p) mod ii, λ the lanes' latency
+        /// (15; 26 at FPGA depth); passes 0 .. ii-2 are ORed into `acc`, and with the last
+        /// pass's flags give `overlap` (their NOR, combinational, as in the unfolded unit),
+        /// `tag_out` and `valid_out` in the cycle λ - 1 + ii clocks after the pair was taken
+        /// ([`dop_fold_latency`](crate::chip::rtl::dop_fold_latency)(ii) at ASIC depth).
         #[derive(LogicBlock)]
         pub struct $name {
             pub clock: Signal<In, Clock>,
@@ -104,29 +115,25 @@ macro_rules! dop_unit_fold {
             c_j0: [Signal<Local, Bits<5>>; $L],
             c_j1: [Signal<Local, Bits<5>>; $L],
             c_j2: [Signal<Local, Bits<5>>; $L],
-            doptrf: [Doptrf; $L],
-            tag_line: $crate::rtl::delay::Delay<Bits<16>, 15>,
+            doptrf: [$Lane; $L],
+            tag_line: $crate::rtl::delay::Delay<Bits<16>, { $Lane::LATENCY }>,
             // the flags of the pair's passes so far
             acc: DFF<Bit>,
             c_any: Signal<Local, Bit>,
             c_first: Signal<Local, Bit>,
         }
 
-        impl FoldedDop for DopFold<$K, $P> {
-            type Unit = $name;
-        }
-
         impl $name {
             /// Clocks between pairs taken.
             pub const INTERVAL: usize = $P;
             /// Clocks from a pair taken to its verdict.
-            pub const LATENCY: usize = $crate::chip::rtl::dop_fold_latency($P);
+            pub const LATENCY: usize = $Lane::LATENCY + $P - 1;
 
             pub fn new() -> Self {
                 use $crate::rtl::reg_ring::array_init;
                 const _: () = assert!($K == $L * $P && $H * 2 == $K);
                 let at = |c: usize| Constant::new((c as u64).into());
-                let dop = $crate::chip::rtl::DOP_LATENCY;
+                let dop = $Lane::LATENCY;
                 Self {
                     clock: Default::default(),
                     load_en: Default::default(),
@@ -143,7 +150,7 @@ macro_rules! dop_unit_fold {
                     idx: std::array::from_fn(at),
                     last_pass: at($P - 1),
                     first_out: at(dop % $P),
-                    last_out: at(($crate::chip::rtl::dop_fold_latency($P)) % $P),
+                    last_out: at(Self::LATENCY % $P),
                     run: Default::default(),
                     counter: Default::default(),
                     c_zero: Default::default(),

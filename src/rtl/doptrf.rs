@@ -1,36 +1,63 @@
 //! The DOPTRF lane (DATE'05 Eq. 10), stamped out per format by `doptrf!`.
 
-/// Stamps out `Doptrf` (one lane) in the calling module, which must also hold that
-/// format's `FpMul` and `FpAdd`. Arguments: `W` word width, `WM1` = W-1, `E` exponent
-/// bits, `F` fraction bits.
+/// Stamps out the DOPTRF lane in the calling module at both depths: `Doptrf` on `FpMulModal`
+/// and `FpAddModal` (latency 15) and `DoptrfFpga` on `FpMulFpgaModal` and `FpAddFpgaModal`
+/// (latency 26), which the module must also hold. Arguments: `W` word width, `WM1` = W-1,
+/// `E` exponent bits, `F` fraction bits.
 macro_rules! doptrf {
     ($W:tt, $WM1:tt, $E:tt, $F:tt) => {
+        $crate::rtl::doptrf::doptrf!(@lane $W, $WM1, $E, $F; Doptrf, doptrf_top, verilog_doptrf,
+            FpMulModal, FpAddModal, 15, 3, 3;
+            c(c_2; (c_3 c_2) (c_4 c_3) (c_5 c_4); c_5);
+            e(e_2; (e_3 e_2) (e_4 e_3) (e_5 e_4) (e_6 e_5) (e_7 e_6) (e_8 e_7) (e_9 e_8)
+                (e_10 e_9) (e_11 e_10); e_11);
+            out(s15_valid, s15_s, s15_flag));
+        $crate::rtl::doptrf::doptrf!(@lane $W, $WM1, $E, $F; DoptrfFpga, doptrf_fpga_top,
+            verilog_doptrf_fpga, FpMulFpgaModal, FpAddFpgaModal, 26, 5, 6;
+            c(c_2; (c_3 c_2) (c_4 c_3) (c_5 c_4) (c_6 c_5) (c_7 c_6); c_7);
+            e(e_2; (e_3 e_2) (e_4 e_3) (e_5 e_4) (e_6 e_5) (e_7 e_6) (e_8 e_7) (e_9 e_8)
+                (e_10 e_9) (e_11 e_10) (e_12 e_11) (e_13 e_12) (e_14 e_13) (e_15 e_14)
+                (e_16 e_15) (e_17 e_16) (e_18 e_17) (e_19 e_18); e_19);
+            out(s26_valid, s26_s, s26_flag));
+    };
+    // One lane: its name, top-level builder and Verilog export; its multiplier and adder
+    // types; its latency `LAT` = 1 + M + 3A + 1; the rounding's delay to the multipliers'
+    // round stage (M - 1) and from one round stage to the next (A); the chains that hold
+    // `c` (M registers) and `e` (M + 2A) for the sums, each as its first register, the
+    // (register, the one before it) links and its last register; the output registers.
+    (@lane $W:tt, $WM1:tt, $E:tt, $F:tt; $name:ident, $top:ident, $verilog:ident,
+     $Mul:ident, $Add:ident, $LAT:tt, $RM:tt, $RA:tt;
+     c($c0:ident; $(($cn:ident $cp:ident))+; $cl:ident);
+     e($e0:ident; $(($en:ident $ep:ident))+; $el:ident);
+     out($ov:ident, $os:ident, $of:ident)) => {
         /// One DOPTRF lane: `s = ((d0 C0 + d1 C1) + (d2 C2 + c)) + e` and `flag = s < 0`,
         /// every operation rounded as `round_up` says (1: TowardPositive, 0: NearestEven),
         /// bit for bit the golden [`lane`](crate::golden::doptrf::lane) (same order of
         /// operations). `round_up` is taken with the operands and travels beside them
-        /// (`s1_round`, then `r_mul`, `r_sum`, `r_u`, `r_s`: three clocks each) to each
-        /// unit's round stage, which reads it there (`FpMulModal`, `FpAddModal`).
+        /// (`s1_round`, then `r_mul`, `r_sum`, `r_u`, `r_s`) to each unit's round stage, which
+        /// reads it there (the units' `Modal` types).
         ///
         /// Ports: in `clock`, `d0 d1 d2` (the routed distances of B's DOP, from D.KLMSEL),
         /// `c0 c1 c2` (row i of C), `c` (c_i), `e` (e_opp(i), A's DOP), `valid_in`, `round_up`;
         /// out `s`, `flag` (sign set, not zero, not NaN; so -inf is < 0), `valid_out`.
         ///
-        /// One lane evaluation per clock; latency 15 (inputs presented before rising
-        /// edge 1 give `s`, `flag`, `valid_out` right after edge 15). Stage budget:
+        /// One lane evaluation per clock; latency `LATENCY` (15 for `Doptrf`, 26 for
+        /// `DoptrfFpga`: inputs presented before rising edge 1 give `s`, `flag`, `valid_out`
+        /// right after edge `LATENCY`). Stage budget, with M and A the multiplier's and the
+        /// adder's latencies (4 and 3, at FPGA depth 6 and 6):
         ///
         /// | stage(s) | logic | registers |
         /// |---|---|---|
         /// | 1 | input register | `s1_*` |
-        /// | 2-5 | `p_l = d_l C_l`, three multipliers (`mul_0..2`, latency 4); `c` delayed | `c_2..c_5` |
-        /// | 6-8 | `u0 = p0 + p1` (`add_0`), `u1 = p2 + c` (`add_1`), latency 3 | |
-        /// | 9-11 | `u = u0 + u1` (`add_2`) | |
-        /// | 12-14 | `s = u + e` (`add_3`); `e` delayed through stages 2-11 to meet it | `e_2..e_11` |
-        /// | 15 | sign test, output register | `s15_*` = outputs |
+        /// | 2 .. M+1 | `p_l = d_l C_l`, three multipliers (`mul_0..2`); `c` delayed | `c_2..` |
+        /// | next A | `u0 = p0 + p1` (`add_0`), `u1 = p2 + c` (`add_1`) | |
+        /// | next A | `u = u0 + u1` (`add_2`) | |
+        /// | next A | `s = u + e` (`add_3`); `e` delayed through stages 2 .. M+2A+1 to meet it | `e_2..` |
+        /// | last | sign test, output register | `s15_*` (`s26_*`) = outputs |
         ///
         /// The valid bit travels with `mul_0` and the adders of the `u0` path.
         #[derive(LogicBlock, Default)]
-        pub struct Doptrf {
+        pub struct $name {
             pub clock: Signal<In, Clock>,
             pub d0: Signal<In, Bits<$W>>,
             pub d1: Signal<In, Bits<$W>>,
@@ -56,52 +83,46 @@ macro_rules! doptrf {
             s1_c: DFF<Bits<$W>>,
             s1_e: DFF<Bits<$W>>,
             s1_round: DFF<Bit>,
-            // the rounding at the multipliers' round stage (stage 5) and the adders' (8, 11, 14)
-            r_mul: $crate::rtl::delay::Delay<Bit, 3>,
-            r_sum: $crate::rtl::delay::Delay<Bit, 3>,
-            r_u: $crate::rtl::delay::Delay<Bit, 3>,
-            r_s: $crate::rtl::delay::Delay<Bit, 3>,
-            // stages 2-5: products; c waits for p2
-            mul_0: FpMulModal,
-            mul_1: FpMulModal,
-            mul_2: FpMulModal,
-            c_2: DFF<Bits<$W>>,
-            c_3: DFF<Bits<$W>>,
-            c_4: DFF<Bits<$W>>,
-            c_5: DFF<Bits<$W>>,
-            // stages 6-14: sums; e waits for u
-            add_0: FpAddModal,
-            add_1: FpAddModal,
-            add_2: FpAddModal,
-            add_3: FpAddModal,
-            e_2: DFF<Bits<$W>>,
-            e_3: DFF<Bits<$W>>,
-            e_4: DFF<Bits<$W>>,
-            e_5: DFF<Bits<$W>>,
-            e_6: DFF<Bits<$W>>,
-            e_7: DFF<Bits<$W>>,
-            e_8: DFF<Bits<$W>>,
-            e_9: DFF<Bits<$W>>,
-            e_10: DFF<Bits<$W>>,
-            e_11: DFF<Bits<$W>>,
-            // stage 15: sign test
+            // the rounding at the multipliers' round stage and the adders'
+            r_mul: $crate::rtl::delay::Delay<Bit, $RM>,
+            r_sum: $crate::rtl::delay::Delay<Bit, $RA>,
+            r_u: $crate::rtl::delay::Delay<Bit, $RA>,
+            r_s: $crate::rtl::delay::Delay<Bit, $RA>,
+            // the products; c waits for p2
+            mul_0: $Mul,
+            mul_1: $Mul,
+            mul_2: $Mul,
+            $c0: DFF<Bits<$W>>,
+            $($cn: DFF<Bits<$W>>,)+
+            // the sums; e waits for u
+            add_0: $Add,
+            add_1: $Add,
+            add_2: $Add,
+            add_3: $Add,
+            $e0: DFF<Bits<$W>>,
+            $($en: DFF<Bits<$W>>,)+
+            // the last stage: sign test
             c15_exp: Signal<Local, Bits<$E>>,
             c15_frac: Signal<Local, Bits<$F>>,
             c15_mag: Signal<Local, Bits<$WM1>>,
             c15_nan: Signal<Local, Bit>,
-            s15_valid: DFF<Bit>,
-            s15_s: DFF<Bits<$W>>,
-            s15_flag: DFF<Bit>,
+            $ov: DFF<Bit>,
+            $os: DFF<Bits<$W>>,
+            $of: DFF<Bit>,
         }
 
-        impl Logic for Doptrf {
+        impl $name {
+            pub const LATENCY: usize = $LAT;
+        }
+
+        impl Logic for $name {
             #[hdl_gen]
             fn update(&mut self) {
                 dff_setup!(self, clock, s1_valid, s1_d0, s1_d1, s1_d2, s1_c0, s1_c1, s1_c2, s1_c, s1_e, s1_round);
                 clock!(self, clock, r_mul, r_sum, r_u, r_s);
-                dff_setup!(self, clock, c_2, c_3, c_4, c_5);
-                dff_setup!(self, clock, e_2, e_3, e_4, e_5, e_6, e_7, e_8, e_9, e_10, e_11);
-                dff_setup!(self, clock, s15_valid, s15_s, s15_flag);
+                dff_setup!(self, clock, $c0, $($cn),+);
+                dff_setup!(self, clock, $e0, $($en),+);
+                dff_setup!(self, clock, $ov, $os, $of);
                 self.mul_0.clock.next = self.clock.val();
                 self.mul_1.clock.next = self.clock.val();
                 self.mul_2.clock.next = self.clock.val();
@@ -131,7 +152,7 @@ macro_rules! doptrf {
                 self.r_sum.d.next = self.r_mul.q.val();
                 self.r_u.d.next = self.r_sum.q.val();
                 self.r_s.d.next = self.r_u.q.val();
-                // ---- stages 2-5: p_l = d_l * C_l
+                // ---- p_l = d_l * C_l
                 self.mul_0.a.next = self.s1_d0.q.val();
                 self.mul_0.b.next = self.s1_c0.q.val();
                 self.mul_0.valid_in.next = self.s1_valid.q.val();
@@ -141,63 +162,53 @@ macro_rules! doptrf {
                 self.mul_2.a.next = self.s1_d2.q.val();
                 self.mul_2.b.next = self.s1_c2.q.val();
                 self.mul_2.valid_in.next = self.s1_valid.q.val();
-                self.c_2.d.next = self.s1_c.q.val();
-                self.c_3.d.next = self.c_2.q.val();
-                self.c_4.d.next = self.c_3.q.val();
-                self.c_5.d.next = self.c_4.q.val();
-                // ---- stages 6-8: u0 = p0 + p1, u1 = p2 + c
+                self.$c0.d.next = self.s1_c.q.val();
+                $(self.$cn.d.next = self.$cp.q.val();)+
+                // ---- u0 = p0 + p1, u1 = p2 + c
                 self.add_0.a.next = self.mul_0.y.val();
                 self.add_0.b.next = self.mul_1.y.val();
                 self.add_0.sub.next = false;
                 self.add_0.valid_in.next = self.mul_0.valid_out.val();
                 self.add_1.a.next = self.mul_2.y.val();
-                self.add_1.b.next = self.c_5.q.val();
+                self.add_1.b.next = self.$cl.q.val();
                 self.add_1.sub.next = false;
                 self.add_1.valid_in.next = self.mul_0.valid_out.val();
-                // ---- stages 9-11: u = u0 + u1
+                // ---- u = u0 + u1
                 self.add_2.a.next = self.add_0.y.val();
                 self.add_2.b.next = self.add_1.y.val();
                 self.add_2.sub.next = false;
                 self.add_2.valid_in.next = self.add_0.valid_out.val();
-                // ---- stages 12-14: s = u + e
-                self.e_2.d.next = self.s1_e.q.val();
-                self.e_3.d.next = self.e_2.q.val();
-                self.e_4.d.next = self.e_3.q.val();
-                self.e_5.d.next = self.e_4.q.val();
-                self.e_6.d.next = self.e_5.q.val();
-                self.e_7.d.next = self.e_6.q.val();
-                self.e_8.d.next = self.e_7.q.val();
-                self.e_9.d.next = self.e_8.q.val();
-                self.e_10.d.next = self.e_9.q.val();
-                self.e_11.d.next = self.e_10.q.val();
+                // ---- s = u + e
+                self.$e0.d.next = self.s1_e.q.val();
+                $(self.$en.d.next = self.$ep.q.val();)+
                 self.add_3.a.next = self.add_2.y.val();
-                self.add_3.b.next = self.e_11.q.val();
+                self.add_3.b.next = self.$el.q.val();
                 self.add_3.sub.next = false;
                 self.add_3.valid_in.next = self.add_2.valid_out.val();
-                // ---- stage 15: flag = s < 0 (sign set, not zero, not NaN)
+                // ---- the last stage: flag = s < 0 (sign set, not zero, not NaN)
                 self.c15_exp.next = self.add_3.y.val().get_bits::<$E>($F);
                 self.c15_frac.next = self.add_3.y.val().get_bits::<$F>(0);
                 self.c15_mag.next = self.add_3.y.val().get_bits::<$WM1>(0);
                 self.c15_nan.next = self.c15_exp.val().all() & (self.c15_frac.val() != 0);
-                self.s15_valid.d.next = self.add_3.valid_out.val();
-                self.s15_s.d.next = self.add_3.y.val();
-                self.s15_flag.d.next = self.add_3.y.val().get_bit($WM1)
+                self.$ov.d.next = self.add_3.valid_out.val();
+                self.$os.d.next = self.add_3.y.val();
+                self.$of.d.next = self.add_3.y.val().get_bit($WM1)
                     & (self.c15_mag.val() != 0)
                     & !self.c15_nan.val();
-                self.s.next = self.s15_s.q.val();
-                self.flag.next = self.s15_flag.q.val();
-                self.valid_out.next = self.s15_valid.q.val();
+                self.s.next = self.$os.q.val();
+                self.flag.next = self.$of.q.val();
+                self.valid_out.next = self.$ov.q.val();
             }
         }
 
         /// A lane ready to simulate as a top-level block (inputs claimed, connected).
-        pub fn doptrf_top() -> Doptrf {
-            top_level!(Doptrf::default(); clock, d0, d1, d2, c0, c1, c2, c, e, valid_in, round_up)
+        pub fn $top() -> $name {
+            top_level!($name::default(); clock, d0, d1, d2, c0, c1, c2, c, e, valid_in, round_up)
         }
 
         /// Verilog of one DOPTRF lane (top module `top`).
-        pub fn verilog_doptrf() -> String {
-            generate_verilog(&doptrf_top())
+        pub fn $verilog() -> String {
+            generate_verilog(&$top())
         }
     };
 }

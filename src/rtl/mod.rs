@@ -442,6 +442,15 @@ const _: () = assert!(
     b32::FpMulFpga::LATENCY == crate::chip::rtl::Depth::Fpga.fp_mul_latency()
         && b32::FpAddFpga::LATENCY == crate::chip::rtl::Depth::Fpga.fp_add_latency()
 );
+const _: () = assert!(
+    b32::Doptrf::LATENCY == crate::chip::rtl::DOP_LATENCY
+        && b32::DoptrfFpga::LATENCY == crate::chip::rtl::Depth::Fpga.lane_latency()
+        && crate::chip::rtl::Depth::Asic.lane_latency() == crate::chip::rtl::DOP_LATENCY
+);
+const _: () = assert!(
+    e8m15::DopUnit6Fold6::LATENCY == crate::chip::rtl::Depth::Asic.dop_fold_latency(6)
+        && e8m15::DopUnit6Fold6Fpga::LATENCY == crate::chip::rtl::Depth::Fpga.dop_fold_latency(6)
+);
 const _: () = assert!(b32::FpScale::LATENCY == crate::chip::rtl::FP_SCALE_LATENCY);
 const _: () = assert!(b32::DopDecode::LATENCY == crate::chip::rtl::DOP_DECODE_LATENCY);
 const _: () = assert!(
