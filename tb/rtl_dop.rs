@@ -34,7 +34,6 @@ mod common;
 use common::{operand, run, run_vcd, settle, vcd_outputs, vcd_path, Fmt, Pipelined};
 
 const MODES: [Rounding; 2] = [Rounding::NearestEven, Rounding::TowardPositive];
-const LATENCY: usize = 15;
 
 /// The DOP units are large values (k = 24: about 2 MB, built on the stack): run their
 /// tests in a thread with a big stack.

@@ -208,7 +208,9 @@ fn dop_units() -> Vec<Unit> {
             name,
             latency: crate::chip::rtl::DOP_LATENCY as u32,
             verilog: Box::new(verilog),
-            vectors: Box::new(move || dop_unit_vectors(&n2, k, fmt, 1, crate::chip::rtl::DOP_LATENCY)),
+            vectors: Box::new(move || {
+                dop_unit_vectors(&n2, k, fmt, 1, crate::chip::rtl::DOP_LATENCY)
+            }),
         });
     }
     for (ii, k, fmt) in DOP_FOLDS {
@@ -226,7 +228,10 @@ fn dop_units() -> Vec<Unit> {
     }
     // the FPGA chip's: k = 6 in e8m15, one lane at FPGA depth
     let (ii, k, fmt) = (6, 6, Format::REDUCED);
-    let name = format!("dop_unit_fpga_{}", &dop_unit_name(k, fmt, ii as u32)["dop_unit_".len()..]);
+    let name = format!(
+        "dop_unit_fpga_{}",
+        &dop_unit_name(k, fmt, ii as u32)["dop_unit_".len()..]
+    );
     let n2 = name.clone();
     let latency = crate::chip::rtl::Depth::Fpga.dop_fold_latency(ii);
     units.push(Unit {

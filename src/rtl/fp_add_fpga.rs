@@ -222,7 +222,12 @@ macro_rules! fp_add_fpga {
             }
         }
 
-        impl<R: $crate::rtl::common::RoundUp> Logic for FpAddFpga<R> {
+        /// `FpAddFpga`'s kernel in two parts (`kernel!`): stages 1-3, then 4-6.
+        struct FpAddFpgaFront;
+        struct FpAddFpgaBack;
+        $crate::rtl::kernel::kernel!([R: $crate::rtl::common::RoundUp] FpAddFpga<R>: FpAddFpgaFront, FpAddFpgaBack);
+
+        impl<R: $crate::rtl::common::RoundUp> $crate::rtl::kernel::Kernel<FpAddFpgaFront> for FpAddFpga<R> {
             #[hdl_gen]
             fn update(&mut self) {
                 dff_setup!(self, clock, s1_valid, s1_nan, s1_inf, s1_inf_sign, s1_zero_sign, s1_sign, s1_eff_sub, s1_exp, s1_big, s1_small, s1_shift);
@@ -310,6 +315,12 @@ macro_rules! fp_add_fpga {
                 // so that stage 4's count stops there and the exponent at emin
                 self.c3_limit.next = self.s2_exp.q.val() - 1;
                 self.s3_marker.d.next = self.c_top.val() >> self.c3_limit.val();
+            }
+        }
+
+        impl<R: $crate::rtl::common::RoundUp> $crate::rtl::kernel::Kernel<FpAddFpgaBack> for FpAddFpga<R> {
+            #[hdl_gen]
+            fn update(&mut self) {
                 // ---- stage 4: leading zeros, capped at emin by the marker; the result's sign
                 self.lzc.x.next = self.s3_sum.q.val().get_bits::<$P3>(0) | self.s3_marker.q.val();
                 self.c4_zero.next = self.s3_sum.q.val() == 0;

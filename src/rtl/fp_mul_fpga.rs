@@ -235,11 +235,26 @@ macro_rules! fp_mul_fpga {
         impl<R: $crate::rtl::common::RoundUp> Logic for FpMulFpga<R> {
             #[hdl_gen]
             fn update(&mut self) {
-                dff_setup!(self, clock, s1_valid, s1_sign, s1_nan, s1_inf, s1_zero, s1_exp_a, s1_exp_b, s1_sig_a, s1_sig_b, s1_lz_a, s1_lz_b);
-                dff_setup!(self, clock, s2_valid, s2_sign, s2_nan, s2_inf, s2_zero, s2_exp, s2_sig_a, s2_sig_b);
-                dff_setup!(self, clock, s3_valid, s3_sign, s3_nan, s3_inf, s3_zero, s3_ll, s3_lh, s3_hl, s3_hh, s3_lt0, s3_lt1, s3_u0, s3_u1, s3_ovf0, s3_ovf1, s3_efield0, s3_efield1);
-                dff_setup!(self, clock, s4_valid, s4_sign, s4_nan, s4_inf, s4_zero, s4_nm, s4_cap, s4_ovf, s4_efield);
-                dff_setup!(self, clock, s5_valid, s5_sign, s5_nan, s5_inf, s5_zero, s5_ovf, s5_efield, s5_nm);
+                dff_setup!(
+                    self, clock, s1_valid, s1_sign, s1_nan, s1_inf, s1_zero, s1_exp_a, s1_exp_b,
+                    s1_sig_a, s1_sig_b, s1_lz_a, s1_lz_b
+                );
+                dff_setup!(
+                    self, clock, s2_valid, s2_sign, s2_nan, s2_inf, s2_zero, s2_exp, s2_sig_a,
+                    s2_sig_b
+                );
+                dff_setup!(
+                    self, clock, s3_valid, s3_sign, s3_nan, s3_inf, s3_zero, s3_ll, s3_lh, s3_hl,
+                    s3_hh, s3_lt0, s3_lt1, s3_u0, s3_u1, s3_ovf0, s3_ovf1, s3_efield0, s3_efield1
+                );
+                dff_setup!(
+                    self, clock, s4_valid, s4_sign, s4_nan, s4_inf, s4_zero, s4_nm, s4_cap, s4_ovf,
+                    s4_efield
+                );
+                dff_setup!(
+                    self, clock, s5_valid, s5_sign, s5_nan, s5_inf, s5_zero, s5_ovf, s5_efield,
+                    s5_nm
+                );
                 dff_setup!(self, clock, s6_valid, s6_y);
                 // ---- stage 1: unpack, leading zeros
                 self.unpack_a.x.next = self.a.val();
@@ -291,7 +306,8 @@ macro_rules! fp_mul_fpga {
                 self.s3_ovf1.d.next = self.c3_e1.val() >= self.c_exp_ovf.val();
                 self.s3_efield0.d.next =
                     bit_cast::<$E, 10>(self.s2_exp.q.val() - self.c_exp_ofs.val());
-                self.s3_efield1.d.next = bit_cast::<$E, 10>(self.c3_e1.val() - self.c_exp_ofs.val());
+                self.s3_efield1.d.next =
+                    bit_cast::<$E, 10>(self.c3_e1.val() - self.c_exp_ofs.val());
                 self.s3_valid.d.next = self.s2_valid.q.val();
                 self.s3_sign.d.next = self.s2_sign.q.val();
                 self.s3_nan.d.next = self.s2_nan.q.val();
