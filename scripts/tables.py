@@ -101,6 +101,22 @@ def ecp5():
                         "measured by `scripts/timing-ecp5.sh` (the chip: `scripts/fpga.sh --ecp5`)")
 
 
+def fpga_depth():
+    """Each unit at FPGA depth on the ECP5 beside its ASIC-depth twin (the same name without
+    `_fpga`), and the FP units' range at both depths."""
+    fmax = {r["unit"]: r["fmax_mhz"] for r in rows("timing_ecp5.csv") if r["fmax_mhz"]}
+    body = [[f"`{u}`", f"`{u.replace('_fpga', '')}`" if u.replace("_fpga", "") in fmax else "-",
+             fmax.get(u.replace("_fpga", ""), ""), fmax[u],
+             f"{float(fmax[u]) / float(fmax[u.replace('_fpga', '')]):.2f}x" if u.replace("_fpga", "") in fmax else ""]
+            for u in sorted(fmax) if "_fpga" in u]
+    fp = lambda deep: [float(f) for u, f in fmax.items() if u.startswith("fp_") and ("_fpga" in u) == deep
+                       and not u.startswith("fp_scale")]
+    span = lambda xs: f"{min(xs):.1f}-{max(xs):.1f} MHz"
+    return table(["unit at FPGA depth", "at ASIC depth", "Fmax, ASIC depth (MHz)", "Fmax, FPGA depth (MHz)", "ratio"], body) + \
+        "\n\n" + source(f"Lattice LFE5U-85F, seed 1; `docs/figures/timing_ecp5.csv`, measured by `scripts/timing-ecp5.sh`. "
+                        f"The FP multipliers and adders: {span(fp(False))} at ASIC depth, {span(fp(True))} at FPGA depth")
+
+
 def area():
     """The area study's blocks by format: the DOP units (either rounding: a setup word) and
     TRI_UNITs (T.CHECK to nearest-even)."""
@@ -325,7 +341,7 @@ def fold_sweep():
                "`fold_k6.json`; each cell: cells / clocks per query / end-to-end time per query (period ns)")
 
 
-TABLES = {"accuracy-sweep": accuracy_sweep, "fold-sweep": fold_sweep, "dop-unit-cells": dop_unit_cells, "accuracy-time": accuracy_time, "timing": timing, "timing-config": timing_config, "ecp5": ecp5, "area": area,
+TABLES = {"accuracy-sweep": accuracy_sweep, "fold-sweep": fold_sweep, "dop-unit-cells": dop_unit_cells, "accuracy-time": accuracy_time, "timing": timing, "timing-config": timing_config, "ecp5": ecp5, "fpga-depth": fpga_depth, "area": area,
           "chip-sim": chip_sim, "golden-vs-parry": golden_vs_parry, "headline": headline,
           "stored-dops": stored_dops}
 

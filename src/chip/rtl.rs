@@ -158,7 +158,17 @@ fn fold_tag(ii: u32) -> String {
 /// `fmt` (`dop_unit_k<k>_<format>`; their rounding is a setup word's), or (`ii` > 1) k/ii lanes
 /// taking a pair every `ii` clocks (`dop_unit_fold<ii>_k<k>_...`, `rtl::*::DopUnit<k>Fold<ii>`).
 pub fn dop_unit_name(k: usize, fmt: Format, ii: u32) -> String {
-    format!("dop_unit_{}k{k}_{}", fold_tag(ii), format_tag(fmt))
+    dop_unit_name_at(Depth::Asic, k, fmt, ii)
+}
+
+/// [`dop_unit_name`] at `depth` (`dop_unit_fpga_fold6_k6_e8m15`).
+pub fn dop_unit_name_at(depth: Depth, k: usize, fmt: Format, ii: u32) -> String {
+    format!(
+        "dop_unit{}_{}k{k}_{}",
+        depth.tag(),
+        fold_tag(ii),
+        format_tag(fmt)
+    )
 }
 
 /// TRI_UNIT's name there: two T.CHECKs in `fmt` rounding with `r` (`tri_unit_<format>_<rounding>`),

@@ -228,12 +228,10 @@ fn dop_units() -> Vec<Unit> {
     }
     // the FPGA chip's: k = 6 in e8m15, one lane at FPGA depth
     let (ii, k, fmt) = (6, 6, Format::REDUCED);
-    let name = format!(
-        "dop_unit_fpga_{}",
-        &dop_unit_name(k, fmt, ii as u32)["dop_unit_".len()..]
-    );
+    let depth = crate::chip::rtl::Depth::Fpga;
+    let name = crate::chip::rtl::dop_unit_name_at(depth, k, fmt, ii as u32);
     let n2 = name.clone();
-    let latency = crate::chip::rtl::Depth::Fpga.dop_fold_latency(ii);
+    let latency = depth.dop_fold_latency(ii);
     units.push(Unit {
         name,
         latency: latency as u32,

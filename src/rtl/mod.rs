@@ -444,7 +444,11 @@ const _: () = assert!(
 );
 const _: () = assert!(
     b32::Doptrf::LATENCY == crate::chip::rtl::DOP_LATENCY
+        && e8m15::Doptrf::LATENCY == crate::chip::rtl::DOP_LATENCY
+        && e8m10::Doptrf::LATENCY == crate::chip::rtl::DOP_LATENCY
         && b32::DoptrfFpga::LATENCY == crate::chip::rtl::Depth::Fpga.lane_latency()
+        && e8m15::DoptrfFpga::LATENCY == crate::chip::rtl::Depth::Fpga.lane_latency()
+        && e8m10::DoptrfFpga::LATENCY == crate::chip::rtl::Depth::Fpga.lane_latency()
         && crate::chip::rtl::Depth::Asic.lane_latency() == crate::chip::rtl::DOP_LATENCY
 );
 const _: () = assert!(
