@@ -217,7 +217,12 @@ fn fold16_equals_golden() {
     let n = cases.len();
     eprintln!("{n} directions at II 16");
     let bad = mismatches(
-        collision_chip::fold::tcheck_plan(16, collision_chip::fold::plan::Binding::Shared).unwrap(),
+        collision_chip::fold::tcheck_plan(
+            16,
+            collision_chip::fold::plan::Binding::Shared,
+            collision_chip::chip::rtl::Depth::Asic,
+        )
+        .unwrap(),
         cases,
     );
     assert!(
@@ -239,7 +244,8 @@ fn every_ii_equals_golden() {
         .chain([1, 2, 4, 8, 16, 32].map(|ii| (ii, PerReader)));
     for (ii, binding) in plans {
         let bad = mismatches(
-            collision_chip::fold::tcheck_plan(ii, binding).unwrap(),
+            collision_chip::fold::tcheck_plan(ii, binding, collision_chip::chip::rtl::Depth::Asic)
+                .unwrap(),
             few_cases(Format::BINARY32, Rounding::NearestEven),
         );
         assert!(bad.is_empty(), "II {ii} {binding:?}: {}", bad.join("\n"));
@@ -250,8 +256,12 @@ fn every_ii_equals_golden() {
 /// register (a stage-1 product reading a neighbouring word).
 #[test]
 fn fold16_broken_mux_is_caught() {
-    let mut plan =
-        collision_chip::fold::tcheck_plan(16, collision_chip::fold::plan::Binding::Shared).unwrap();
+    let mut plan = collision_chip::fold::tcheck_plan(
+        16,
+        collision_chip::fold::plan::Binding::Shared,
+        collision_chip::chip::rtl::Depth::Asic,
+    )
+    .unwrap();
     let iss = plan.issues[0][0].iter_mut().flatten().next().unwrap();
     iss.a.reg += 1;
     let bad = mismatches(plan, few_cases(Format::BINARY32, Rounding::NearestEven));

@@ -15,7 +15,9 @@
 //! `TriUnit::LATENCY`.
 
 use collision_chip::chip::config::ChipConfig;
+use collision_chip::chip::rtl::Depth;
 use collision_chip::dop::tree::Tri;
+use collision_chip::fold::plan::Binding;
 use collision_chip::format::{Format, Rounding};
 use collision_chip::golden::memory::TriWord;
 use collision_chip::golden::tri_unit::tri_unit;
@@ -426,6 +428,11 @@ impl_tri_unit!(
     e8m15::TriUnitFold::latency,
     e8m15::TriUnitFold::interval
 );
+impl_tri_unit!(
+    e8m15::TriUnitFoldFpga,
+    e8m15::TriUnitFoldFpga::latency,
+    e8m15::TriUnitFoldFpga::interval
+);
 
 /// TRI_UNIT work: setup writes and pairs in the order the host issues them (the frame
 /// registers are read when a pair is taken, so a new pose's setup may follow pairs still
@@ -678,14 +685,10 @@ fn tri_unit_fold16_e8m15() {
 /// The hard cases and a 4 x 5 soup through the TRI_UNIT folded for a pair every 16 clocks
 /// in `f`: the mismatches and the number of pairs.
 fn tri_unit_fold16_mismatches(f: Format) -> (Vec<String>, usize) {
-    let mut triples = catalogue_triples(f);
-    triples.extend(soup_triples(f, 4, 5));
-    let job = tri_job(f, &triples);
+    let plan = collision_chip::fold::tri_unit_plan(16, Binding::Shared, Depth::Asic).unwrap();
+    let job = tri_job(f, &fold_triples(f));
     let n = job.golden.len();
     let bad = big_stack(move || {
-        let plan =
-            collision_chip::fold::tri_unit_plan(16, collision_chip::fold::plan::Binding::Shared)
-                .unwrap();
         if f == Format::BINARY32 {
             run_mismatches(
                 &mut b32::tri_unit_fold_top(plan, Rounding::NearestEven),
@@ -699,6 +702,36 @@ fn tri_unit_fold16_mismatches(f: Format) -> (Vec<String>, usize) {
         }
     });
     (bad, n)
+}
+
+/// The hard cases and a 4 x 5 soup: the folded TRI_UNIT's test set.
+fn fold_triples(f: Format) -> Vec<(TriWord, TriWord, collision_chip::golden::host::HostSetup)> {
+    let mut triples = catalogue_triples(f);
+    triples.extend(soup_triples(f, 4, 5));
+    triples
+}
+
+/// The FPGA chip's TRI_UNIT (`rtl::e8m15::TriUnitFoldFpga`: a pair every 32 clocks, T.CHECK
+/// at FPGA depth with its operands registered and its registers per reader) on the same
+/// set: every verdict and pair id the golden model's, the first result `latency()` clocks
+/// after the first pair.
+#[test]
+fn tri_unit_fold32_e8m15_fpga() {
+    let f = Format::REDUCED;
+    let plan = collision_chip::fold::tri_unit_plan(32, Binding::PerReader, Depth::Fpga).unwrap();
+    let job = tri_job(f, &fold_triples(f));
+    let n = job.golden.len();
+    let bad = big_stack(move || {
+        run_mismatches(
+            &mut e8m15::tri_unit_fold_fpga_top(plan, Rounding::NearestEven),
+            &job,
+        )
+    });
+    assert_none(
+        "folded TRI_UNIT (II 32) e8m15 at FPGA depth",
+        "pairs",
+        (bad, n),
+    );
 }
 
 /// TRI_UNIT in binary32 under back pressure: the hard cases, then more soup pairs than the

@@ -55,6 +55,16 @@ impl Depth {
         self.lane_latency() + ii - 1
     }
 
+    /// Registers between a folded unit's operand multiplexers and its FP units: none for
+    /// standard cells; one at FPGA depth, where a multiplexer of 16 registers and the decode
+    /// of its select would fill a stage of their own (`rtl::tcheck_fold`).
+    pub const fn operand_registers(self) -> usize {
+        match self {
+            Depth::Asic => 0,
+            Depth::Fpga => 1,
+        }
+    }
+
     /// What an exported unit's name carries after its operation (`fp_add_fpga_b32_rne`).
     pub fn tag(self) -> &'static str {
         match self {
@@ -175,8 +185,14 @@ pub fn dop_unit_name_at(depth: Depth, k: usize, fmt: Format, ii: u32) -> String 
 /// or (`ii` > 1) one folded T.CHECK taking a pair every `ii` clocks (`tri_unit_fold<ii>_...`,
 /// `rtl::*::TriUnitFold`).
 pub fn tri_unit_name(fmt: Format, r: Rounding, ii: u32) -> String {
+    tri_unit_name_at(Depth::Asic, fmt, r, ii)
+}
+
+/// [`tri_unit_name`] at `depth` (`tri_unit_fpga_fold32_e8m15_rne`).
+pub fn tri_unit_name_at(depth: Depth, fmt: Format, r: Rounding, ii: u32) -> String {
     format!(
-        "tri_unit_{}{}_{}",
+        "tri_unit{}_{}{}_{}",
+        depth.tag(),
         fold_tag(ii),
         format_tag(fmt),
         rounding_tag(r)

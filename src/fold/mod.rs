@@ -6,20 +6,23 @@
 //! (`rtl::tcheck_fold`) builds. Pure functions: the cycle model can take II and latency
 //! from here too (docs/explanation/architecture.md, "Folded T.CHECK").
 
+use crate::chip::rtl::Depth;
+
 pub mod graph;
 pub mod ops;
 pub mod plan;
 pub mod schedule;
 
-/// T.CHECK folded for initiation interval `ii` on the fewest units that allow it, values
-/// bound to registers by `binding`.
-pub fn tcheck_plan(ii: usize, binding: plan::Binding) -> Result<plan::Plan, String> {
+/// T.CHECK folded for initiation interval `ii` on the fewest units that allow it at
+/// `depth`, values bound to registers by `binding`.
+pub fn tcheck_plan(ii: usize, binding: plan::Binding, depth: Depth) -> Result<plan::Plan, String> {
     let g = graph::Graph::tcheck();
     let s = schedule::schedule(
         &g.g,
         &g.outputs.all(),
         ii,
         schedule::minimal_units(&g.g, ii),
+        depth,
     )?;
     Ok(plan::Plan::new(&g, &s, binding))
 }
@@ -28,11 +31,15 @@ pub fn tcheck_plan(ii: usize, binding: plan::Binding) -> Result<plan::Plan, Stri
 /// on one T.CHECK folded for ii / 2, A's edges against U(B) when the pair is taken, B's
 /// against U(A) ii / 2 clocks later (docs/explanation/architecture.md, "Folded TRI_UNIT"). The shared
 /// T.CHECK's plan; Err for an odd or zero `ii`.
-pub fn tri_unit_plan(ii: usize, binding: plan::Binding) -> Result<plan::Plan, String> {
+pub fn tri_unit_plan(
+    ii: usize,
+    binding: plan::Binding,
+    depth: Depth,
+) -> Result<plan::Plan, String> {
     if ii < 2 || ii % 2 == 1 {
         return Err(format!("a folded TRI_UNIT runs its two directions on one T.CHECK at II ii / 2, so ii must be even and at least 2, not {ii}"));
     }
-    tcheck_plan(ii / 2, binding)
+    tcheck_plan(ii / 2, binding, depth)
 }
 
 /// The folded TRI_UNIT's latency from its shared T.CHECK's plan `p`: a pair taken at edge t

@@ -89,6 +89,8 @@ pub struct Issue {
 pub struct Plan {
     pub ii: usize,
     pub binding: Binding,
+    /// The FP units' depth, and with it the operand registers (`Depth::operand_registers`).
+    pub depth: crate::chip::rtl::Depth,
     pub latency: usize,
     pub units: [usize; 7],
     pub words: Vec<Chain>,
@@ -103,6 +105,23 @@ pub struct Plan {
 }
 
 impl Plan {
+    /// Registers between the operand multiplexers and the units: 0, or 1 at FPGA depth,
+    /// where each unit also counts on copies of the counter of its own (the RTL's `cnt`: one
+    /// for its operands' `case`, one for its results' chains, 2 `flat` and 2 `flat` + 1).
+    pub fn operand_regs(&self) -> usize {
+        self.depth.operand_registers()
+    }
+
+    /// Unit `u` of class `k` numbered over all units ([`Class::ALL`]'s order).
+    pub fn flat(&self, k: usize, u: usize) -> usize {
+        self.units[..k].iter().sum::<usize>() + u
+    }
+
+    /// Units in all.
+    pub fn unit_count(&self) -> usize {
+        self.units.iter().sum()
+    }
+
     /// Word registers in all.
     pub fn word_regs(&self) -> usize {
         self.words.iter().map(|c| c.len).sum()
@@ -190,6 +209,7 @@ impl Plan {
         Plan {
             ii,
             binding,
+            depth: s.depth,
             latency: s.latency(),
             units: s.units,
             words,
@@ -208,16 +228,18 @@ impl Plan {
 mod tests {
     /// At every II the folds use (2 to 32) the plan reads only registers that exist, issues at most one
     /// operation per unit and counter value (a table of ii entries), and prints its size
-    /// (docs/explanation/architecture.md, "Folded T.CHECK", has the table), under either binding.
+    /// (docs/explanation/architecture.md, "Folded T.CHECK", has the table), under either
+    /// binding and at either depth.
     #[test]
     fn tcheck_plans() {
-        for (ii, binding) in [1, 2, 4, 8, 16, 32].into_iter().flat_map(|ii| {
-            [
-                (ii, super::Binding::Shared),
-                (ii, super::Binding::PerReader),
-            ]
-        }) {
-            let p = crate::fold::tcheck_plan(ii, binding).unwrap();
+        use crate::chip::rtl::Depth;
+        let bindings = [super::Binding::Shared, super::Binding::PerReader];
+        for (ii, binding, depth) in [1, 2, 4, 8, 16, 32]
+            .into_iter()
+            .flat_map(|ii| bindings.map(|b| (ii, b)))
+            .flat_map(|(ii, b)| Depth::ALL.map(|d| (ii, b, d)))
+        {
+            let p = crate::fold::tcheck_plan(ii, binding, depth).unwrap();
             let n = p.word_regs();
             let reads = p
                 .issues
@@ -229,7 +251,7 @@ mod tests {
                 .flatten();
             assert!(
                 reads.map(|r| r.reg).chain(p.outputs.all()).all(|r| r < n),
-                "II {ii}"
+                "II {ii} {depth:?}"
             );
             assert!(p.issues.iter().flatten().all(|slots| slots.len() == ii));
             assert!(
@@ -237,7 +259,7 @@ mod tests {
                     && p.words.iter().all(|c| c.slot < ii && c.len > 0)
             );
             eprintln!(
-                "II {ii} {binding:?}: units {:?}, latency {}, word registers {n}",
+                "II {ii} {binding:?} {depth:?}: units {:?}, latency {}, word registers {n}",
                 p.units, p.latency
             );
         }

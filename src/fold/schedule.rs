@@ -9,18 +9,21 @@
 //! and in a register from cycle t + L + 1 ([`Schedule::ready`]).
 
 use super::graph::{counts, Class, Op, Operand};
-use crate::chip::rtl::{FP_ADD_LATENCY, FP_MUL_LATENCY, FP_SCALE_LATENCY};
+use crate::chip::rtl::{Depth, FP_SCALE_LATENCY};
 use petgraph::graph::{DiGraph, NodeIndex};
 use petgraph::Direction;
 
-/// A unit's pipeline latency: `FpMul`, `FpAdd`, `FpScale` (the RTL checks its units
-/// against these).
-pub fn latency(c: Class) -> usize {
-    match c {
-        Class::Mul(_) => FP_MUL_LATENCY,
-        Class::Add(_) => FP_ADD_LATENCY,
+/// A unit's latency from its operands' selection to its result at `depth`: the
+/// multiplier's, the adder's or `FpScale`'s pipeline (the RTL checks its units against
+/// these), at FPGA depth behind a register that holds the selected operands (the operand
+/// multiplexers registered, `rtl::tcheck_fold`).
+pub fn latency(c: Class, depth: Depth) -> usize {
+    let unit = match c {
+        Class::Mul(_) => depth.fp_mul_latency(),
+        Class::Add(_) => depth.fp_add_latency(),
         Class::Scale(_) => FP_SCALE_LATENCY,
-    }
+    };
+    unit + depth.operand_registers()
 }
 
 /// Units per class ([`Class::ALL`]'s order).
@@ -36,6 +39,7 @@ pub fn minimal_units(g: &DiGraph<Op, Operand>, ii: usize) -> Units {
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Schedule {
     pub ii: usize,
+    pub depth: Depth,
     pub units: Units,
     pub start: Vec<usize>,
     pub unit: Vec<usize>,
@@ -47,7 +51,7 @@ impl Schedule {
     pub fn ready(&self, g: &DiGraph<Op, Operand>, n: NodeIndex) -> usize {
         match g[n] {
             Op::Input(_) => 0,
-            Op::Fp { class, .. } => self.start[n.index()] + latency(class) + 1,
+            Op::Fp { class, .. } => self.start[n.index()] + latency(class, self.depth) + 1,
         }
     }
 
@@ -59,7 +63,7 @@ impl Schedule {
     }
 }
 
-/// Schedules `g` for initiation interval `ii` on `units` (per class), the outputs read
+/// Schedules `g` for initiation interval `ii` on `units` (per class) at `depth`, the outputs read
 /// when all of `outputs` are ready. Operations are placed in order of their earliest
 /// possible start (unlimited units; ties by node index), each in the first cycle at or
 /// after its operands are ready where a unit of its class is free in that cycle mod `ii`.
@@ -70,6 +74,7 @@ pub fn schedule(
     outputs: &[NodeIndex],
     ii: usize,
     units: Units,
+    depth: Depth,
 ) -> Result<Schedule, String> {
     if ii == 0 {
         return Err("the initiation interval must be at least 1".into());
@@ -88,7 +93,7 @@ pub fn schedule(
     for &n in &topo {
         let lat = match g[n] {
             Op::Input(_) => 0,
-            Op::Fp { class, .. } => latency(class) + 1,
+            Op::Fp { class, .. } => latency(class, depth) + 1,
         };
         for s in g.neighbors_directed(n, Direction::Outgoing) {
             asap[s.index()] = asap[s.index()].max(asap[n.index()] + lat);
@@ -98,6 +103,7 @@ pub fn schedule(
     order.sort_by_key(|n| (asap[n.index()], n.index()));
     let mut s = Schedule {
         ii,
+        depth,
         units,
         start: vec![0; g.node_count()],
         unit: vec![0; g.node_count()],
@@ -215,28 +221,33 @@ mod tests {
             ops in prop::collection::vec((0usize..7, 0usize..1000, 0usize..1000), 1..80),
             ii in prop::sample::select(vec![1usize, 2, 3, 4, 8, 16, 32]),
             spare in prop::array::uniform7(0usize..3),
+            depth in prop::sample::select(Depth::ALL.to_vec()),
         ) {
             let (g, outs) = dag(inputs, ops);
             let mut units = minimal_units(&g, ii);
             for (u, s) in units.iter_mut().zip(spare) {
                 *u += s;
             }
-            let s = schedule(&g, &outs, ii, units).unwrap();
+            let s = schedule(&g, &outs, ii, units, depth).unwrap();
             prop_assert_eq!(check(&g, &outs, &s), Ok(()));
         }
     }
 
-    /// T.CHECK's graph schedules validly on the fewest units at every II the folds use.
+    /// T.CHECK's graph schedules validly on the fewest units at every II the folds use,
+    /// at either depth.
     #[test]
     fn tcheck_schedules_at_every_ii() {
         let g = Graph::tcheck();
         let outs = g.outputs.all();
-        for ii in [1, 2, 4, 8, 16, 32] {
-            let s = schedule(&g.g, &outs, ii, minimal_units(&g.g, ii)).unwrap();
-            assert_eq!(check(&g.g, &outs, &s), Ok(()), "II {ii}");
+        for (ii, depth) in [1, 2, 4, 8, 16, 32]
+            .into_iter()
+            .flat_map(|ii| Depth::ALL.map(|d| (ii, d)))
+        {
+            let s = schedule(&g.g, &outs, ii, minimal_units(&g.g, ii), depth).unwrap();
+            assert_eq!(check(&g.g, &outs, &s), Ok(()), "II {ii} {depth:?}");
         }
         assert!(
-            schedule(&g.g, &outs, 16, [1; 7]).is_err(),
+            schedule(&g.g, &outs, 16, [1; 7], Depth::Asic).is_err(),
             "75 products do not fit one multiplier at II 16"
         );
     }
@@ -247,7 +258,7 @@ mod tests {
     fn check_catches_broken_schedules() {
         let g = Graph::tcheck();
         let outs = g.outputs.all();
-        let s = schedule(&g.g, &outs, 16, minimal_units(&g.g, 16)).unwrap();
+        let s = schedule(&g.g, &outs, 16, minimal_units(&g.g, 16), Depth::Asic).unwrap();
         let n = g.outputs.s_bound[2];
         let p =
             g.g.neighbors_directed(n, Direction::Incoming)

@@ -4,7 +4,8 @@
 //! and fails if they differ from the checked-in files, then runs every unit against its
 //! vectors under Icarus Verilog and Verilator (`scripts/check-rtl.sh`).
 
-use crate::chip::rtl::{dop_unit_name, format_tag, rounding_tag, tri_unit_name, ChipKind};
+use crate::chip::rtl::{dop_unit_name, format_tag, rounding_tag, tri_unit_name, ChipKind, Depth};
+use crate::fold::plan::Binding;
 use crate::format::{Format, Rounding};
 use rand::{Rng, SeedableRng};
 use std::fmt::Write;
@@ -119,9 +120,13 @@ const FOLDED_II: [usize; 1] = [16];
 fn tcheck_fold_unit(ii: usize) -> Unit {
     let r = Rounding::NearestEven;
     let name = format!("tcheck_fold{ii}_b32_{}", rounding_tag(r));
-    let latency = crate::fold::tcheck_plan(ii, crate::fold::plan::Binding::Shared)
-        .expect("T.CHECK schedules at every II")
-        .latency;
+    let latency = crate::fold::tcheck_plan(
+        ii,
+        crate::fold::plan::Binding::Shared,
+        crate::chip::rtl::Depth::Asic,
+    )
+    .expect("T.CHECK schedules at every II")
+    .latency;
     let n2 = name.clone();
     Unit {
         name,
@@ -137,22 +142,36 @@ fn tcheck_fold_unit(ii: usize) -> Unit {
 /// (`rtl::b32::TriUnitFold`), with TRI_UNIT's vectors driven every `ii` clocks, on 12-triangle
 /// soups (156 pairs: a verdict per pair checks less than T.CHECK's values).
 fn tri_unit_fold_unit(ii: usize) -> Unit {
+    let verilog = move |r| crate::rtl::b32::verilog_tri_unit_fold(ii, r);
+    tri_unit_fold_at(Depth::Asic, Binding::Shared, Format::BINARY32, ii, verilog)
+}
+
+/// `tri_unit_fpga_fold32_e8m15_rne`: the FPGA chip's TRI_UNIT (`rtl::e8m15::TriUnitFoldFpga`,
+/// registers per reader), with the same vectors.
+fn tri_unit_fold_fpga_unit() -> Unit {
+    let ii = 32;
+    let verilog = move |r| crate::rtl::e8m15::verilog_tri_unit_fold_fpga(ii, r);
+    tri_unit_fold_at(Depth::Fpga, Binding::PerReader, Format::REDUCED, ii, verilog)
+}
+
+/// A folded TRI_UNIT in `fmt` at `depth`, nearest-even, its Verilog from `verilog`.
+fn tri_unit_fold_at(
+    depth: Depth,
+    binding: Binding,
+    fmt: Format,
+    ii: usize,
+    verilog: impl Fn(Rounding) -> Result<String, String> + Send + Sync + 'static,
+) -> Unit {
     let r = Rounding::NearestEven;
-    let name = tri_unit_name(Format::BINARY32, r, ii as u32);
-    let latency = crate::fold::tri_unit_latency(
-        &crate::fold::tri_unit_plan(ii, crate::fold::plan::Binding::Shared)
-            .expect("an exported II folds"),
-    );
+    let name = crate::chip::rtl::tri_unit_name_at(depth, fmt, r, ii as u32);
+    let plan = crate::fold::tri_unit_plan(ii, binding, depth).expect("an exported II folds");
+    let latency = crate::fold::tri_unit_latency(&plan);
     let n2 = name.clone();
     Unit {
         name,
         latency: latency as u32,
-        verilog: Box::new(move || {
-            crate::rtl::b32::verilog_tri_unit_fold(ii, r).expect("an exported II folds")
-        }),
-        vectors: Box::new(move || {
-            super::tri_io::tri_unit_vectors(&n2, Format::BINARY32, r, latency, ii, 12)
-        }),
+        verilog: Box::new(move || verilog(r).expect("an exported II folds")),
+        vectors: Box::new(move || super::tri_io::tri_unit_vectors(&n2, fmt, r, latency, ii, 12)),
     }
 }
 
@@ -166,6 +185,7 @@ pub fn all() -> Vec<Unit> {
         units.push(tcheck_fold_unit(ii));
         units.push(tri_unit_fold_unit(ii));
     }
+    units.push(tri_unit_fold_fpga_unit());
     units.push(pair_queue_unit());
     units.push(dop_decode_unit());
     units

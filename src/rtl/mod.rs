@@ -249,6 +249,8 @@ pub mod e8m15 {
     );
     crate::rtl::tcheck_fold::tcheck_fold!(24, 23, 8, 15);
     crate::rtl::tri_unit_fold::tri_unit_fold!(24);
+    crate::rtl::tcheck_fold::tcheck_fold!(fpga 24, 23, 8, 15);
+    crate::rtl::tri_unit_fold::tri_unit_fold!(fpga 24);
 }
 
 /// Units for e8m10 ([`Format::E8M10`](crate::format::Format::E8M10)), the narrowest format
@@ -350,8 +352,12 @@ pub mod e8m15_fold16 {
     fn tri_unit(r: Rounding) -> TriUnitFold {
         let ii = ChipKind::K6E8m15Fold16.tri_interval() as usize;
         TriUnitFold::new(
-            crate::fold::tri_unit_plan(ii, crate::fold::plan::Binding::Shared)
-                .expect("the chip's interval is even"),
+            crate::fold::tri_unit_plan(
+                ii,
+                crate::fold::plan::Binding::Shared,
+                crate::chip::rtl::Depth::Asic,
+            )
+            .expect("the chip's interval is even"),
             r,
         )
     }
@@ -392,6 +398,7 @@ pub mod e8m15_dop6_tri32 {
         let plan = crate::fold::tri_unit_plan(
             KIND.tri_interval() as usize,
             crate::fold::plan::Binding::PerReader,
+            crate::chip::rtl::Depth::Asic,
         );
         TriUnitFold::new(plan.expect("the chip's interval is even"), r)
     }

@@ -124,8 +124,16 @@ fn registers_verilog(v: &mut String, p: &crate::fold::plan::Plan, units: [&str; 
         "  counter$d = (!(run$q | valid_in) || {c} == 8'd{}) ? 8'd0 : {c} + 8'd1;",
         p.ii - 1
     );
+    for i in 0..2 * p.unit_count() * p.operand_regs() {
+        let _ = writeln!(v, "  cnt${i}$clock = clock;\n  cnt${i}$d = counter$d;");
+    }
     let inputs = input_names();
     for ch in &p.words {
+        // a unit's result chains count on its own copy of the counter, if it has one
+        let en = match ch.src {
+            Src::Unit(k, u) if p.operand_regs() > 0 => format!("cnt${}$q", 2 * p.flat(k, u) + 1),
+            _ => c.to_string(),
+        };
         for i in 0..ch.len {
             let r = ch.first + i;
             let src = match (i, ch.src) {
@@ -135,7 +143,7 @@ fn registers_verilog(v: &mut String, p: &crate::fold::plan::Plan, units: [&str; 
             };
             let _ = writeln!(
                 v,
-                "  regs${r}$clock = clock;\n  regs${r}$d = ({c} == 8'd{}) ? {src} : regs${r}$q;",
+                "  regs${r}$clock = clock;\n  regs${r}$d = ({en} == 8'd{}) ? {src} : regs${r}$q;",
                 ch.slot
             );
         }
@@ -157,7 +165,9 @@ fn registers_verilog(v: &mut String, p: &crate::fold::plan::Plan, units: [&str; 
 }
 
 /// [`body_verilog`]'s operand multiplexers: per unit a `case` on the counter choosing its
-/// operands in each slot it is issued (`units` names the unit vectors per class).
+/// operands in each slot it is issued (`units` names the unit vectors per class). With
+/// operand registers the `case` sets them, on the unit's own copy of the counter, and they
+/// drive the unit.
 fn operands_verilog(
     v: &mut String,
     p: &crate::fold::plan::Plan,
@@ -167,53 +177,103 @@ fn operands_verilog(
     units: [&str; 7],
 ) {
     use std::fmt::Write;
-    let c = COUNTER;
     for (k, unit) in units.iter().enumerate() {
         for (u, slots) in p.issues[k].iter().enumerate() {
-            let n = format!("{unit}${u}");
+            let unit_port = format!("{unit}${u}");
             let scale = k >= 4;
-            let _ = writeln!(v, "  {n}$clock = clock;");
+            let _ = writeln!(v, "  {unit_port}$clock = clock;");
             if !scale {
-                let _ = writeln!(v, "  {n}$valid_in = 1'b0;");
+                let _ = writeln!(v, "  {unit_port}$valid_in = 1'b0;");
             }
+            let c = match p.operand_regs() {
+                0 => COUNTER.to_string(),
+                _ => operand_registers_verilog(v, p, k, u, &unit_port),
+            };
+            let n = |port: &str| operand_target(p, k, u, &unit_port, port);
             let _ = writeln!(v, "  case ({c})");
             for (slot, iss) in slots.iter().enumerate() {
                 let Some(iss) = iss else { continue };
                 let _ = write!(
                     v,
-                    "    8'd{slot}: begin {n}$a = {};",
+                    "    8'd{slot}: begin {} = {};",
+                    n("a"),
                     read_verilog(&iss.a, w, ew, f)
                 );
                 if let Some(b) = &iss.b {
-                    let _ = write!(v, " {n}$b = {};", read_verilog(b, w, ew, f));
+                    let _ = write!(v, " {} = {};", n("b"), read_verilog(b, w, ew, f));
                 }
                 if k == 2 || k == 3 {
-                    let _ = write!(v, " {n}$sub = 1'b{};", iss.sub as u8);
+                    let _ = write!(v, " {} = 1'b{};", n("sub"), iss.sub as u8);
                 }
                 if scale {
                     let sel = iss
                         .sel
                         .map_or("1'b0".to_string(), |r| format!("exact${r}$q"));
-                    let _ = write!(v, " {n}$sel = {sel};");
+                    let _ = write!(v, " {} = {sel};", n("sel"));
                 }
                 let _ = writeln!(v, " end");
             }
-            let _ = write!(v, "    default: begin {n}$a = {w}'d0;");
+            let _ = write!(v, "    default: begin {} = {w}'d0;", n("a"));
             let _ = write!(
                 v,
                 "{}",
                 if scale {
-                    format!(" {n}$sel = 1'b0;")
+                    format!(" {} = 1'b0;", n("sel"))
                 } else {
-                    format!(" {n}$b = {w}'d0;")
+                    format!(" {} = {w}'d0;", n("b"))
                 }
             );
             if k == 2 || k == 3 {
-                let _ = write!(v, " {n}$sub = 1'b0;");
+                let _ = write!(v, " {} = 1'b0;", n("sub"));
             }
             let _ = writeln!(v, " end\n  endcase");
         }
     }
+}
+
+/// Where the `case` of unit `u` of class `k` (port prefix `unit`) puts operand `port`
+/// (`a`, `b`, `sub`, `sel`): the unit's port, or with operand registers the register's input
+/// (`op_sub$1$d`: the registers of each port numbered over the units that have it).
+fn operand_target(
+    p: &crate::fold::plan::Plan,
+    k: usize,
+    u: usize,
+    unit: &str,
+    port: &str,
+) -> String {
+    if p.operand_regs() == 0 {
+        return format!("{unit}${port}");
+    }
+    let g = p.flat(k, u);
+    let i = match port {
+        "sub" => g - p.units[0] - p.units[1],
+        "sel" => g - p.units[..4].iter().sum::<usize>(),
+        _ => g,
+    };
+    format!("op_{port}${i}$d")
+}
+
+/// The operand registers of unit `u` of class `k` (port prefix `unit`): their clocks and the
+/// unit's ports from them; returns the unit's copy of the counter its `case` selects on.
+fn operand_registers_verilog(
+    v: &mut String,
+    p: &crate::fold::plan::Plan,
+    k: usize,
+    u: usize,
+    unit: &str,
+) -> String {
+    use std::fmt::Write;
+    let ports: &[&str] = match k {
+        0 | 1 => &["a", "b"],
+        2 | 3 => &["a", "b", "sub"],
+        _ => &["a", "sel"],
+    };
+    for port in ports {
+        let r = operand_target(p, k, u, unit, port);
+        let r = r.trim_end_matches("$d");
+        let _ = writeln!(v, "  {r}$clock = clock;\n  {unit}${port} = {r}$q;");
+    }
+    format!("cnt${}$q", 2 * p.flat(k, u))
 }
 
 /// [`body_verilog`]'s last part: the signs' inputs, the output registers taken at the
@@ -307,21 +367,30 @@ pub(crate) fn input_names() -> Vec<String> {
 }
 
 /// Stamps out `TCheckFold` in the calling module (after `tcheck!`: it uses `Sign`, `FpMul`,
-/// `FpAdd`, `FpScale`, `FORMAT`). Arguments: `W`, `WM1` = W-1, `E`, `F`.
+/// `FpAdd`, `FpScale`, `FORMAT`), or with `fpga` first `TCheckFoldFpga`, the same on
+/// `FpMulFpga` and `FpAddFpga` (for a plan at FPGA depth). Arguments: `W`, `WM1` = W-1, `E`,
+/// `F`.
 macro_rules! tcheck_fold {
     ($W:tt, $WM1:tt, $E:tt, $F:tt) => {
-        $crate::rtl::tcheck_fold::tcheck_fold!(@block $W, $WM1, $E, $F);
-        $crate::rtl::tcheck_fold::tcheck_fold!(@logic $W, $WM1, $E, $F);
+        $crate::rtl::tcheck_fold::tcheck_fold!(@block TCheckFold, FpMul, FpAdd, $W, $WM1, $E, $F);
+        $crate::rtl::tcheck_fold::tcheck_fold!(@logic TCheckFold, $W, $WM1, $E, $F);
+        $crate::rtl::tcheck_fold::tcheck_fold!(@top $W);
     };
-    (@block $W:tt, $WM1:tt, $E:tt, $F:tt) => {
+    (fpga $W:tt, $WM1:tt, $E:tt, $F:tt) => {
+        $crate::rtl::tcheck_fold::tcheck_fold!(@block TCheckFoldFpga, FpMulFpga, FpAddFpga, $W, $WM1, $E, $F);
+        $crate::rtl::tcheck_fold::tcheck_fold!(@logic TCheckFoldFpga, $W, $WM1, $E, $F);
+    };
+    (@block $Name:ident, $Mul:ident, $Add:ident, $W:tt, $WM1:tt, $E:tt, $F:tt) => {
         $crate::rtl::tcheck::tcheck_ports! {
             $W,
             /// T.CHECK folded onto shared units by a [`Plan`](crate::fold::plan::Plan): one
             /// triangle pair every `ii` clocks, taken while the control counter is 0 (it stays 0
             /// until the first pair, then runs: pairs come ii, 2 ii, ... clocks after it), its results at the outputs `latency` clocks
             /// later with `valid_out` high for one clock (docs/explanation/architecture.md, "Folded
-            /// T.CHECK"). Bit for bit [`TCheck`]'s values and verdicts. Ports: [`TCheck`]'s.
-            TCheckFold {
+            /// T.CHECK"). Bit for bit [`TCheck`]'s values and verdicts. Ports: [`TCheck`]'s. At FPGA depth
+            /// (`TCheckFoldFpga`, a plan of `Depth::Fpga`) its operands are registered, each unit
+            /// selecting them on its own copy of the counter.
+            $Name {
                 plan: $crate::rtl::tcheck_fold::Fixed<$crate::fold::plan::Plan>,
                 // the counter starts with the first pair (`run`), then runs freely
                 run: DFF<Bit>,
@@ -330,11 +399,19 @@ macro_rules! tcheck_fold {
                 exact: Vec<DFF<Bit>>,
                 valid: Vec<DFF<Bit>>,
                 tags: Vec<DFF<Bits<32>>>,
+                // at FPGA depth (`Plan::operand_regs`), else none: per unit two copies of the
+                // counter and its operand registers (`b` of the multipliers and adders, `sub` of
+                // the adders, `sel` of the constant multipliers, each numbered over those units)
+                cnt: Vec<$crate::rtl::tcheck_fold::KeptDff<Bits<8>>>,
+                op_a: Vec<DFF<Bits<$W>>>,
+                op_b: Vec<DFF<Bits<$W>>>,
+                op_sub: Vec<DFF<Bit>>,
+                op_sel: Vec<DFF<Bit>>,
                 // the units per class (Class::ALL order)
-                mul_v: Vec<FpMul>,
-                mul_up: Vec<FpMul>,
-                add_v: Vec<FpAdd>,
-                add_up: Vec<FpAdd>,
+                mul_v: Vec<$Mul>,
+                mul_up: Vec<$Mul>,
+                add_v: Vec<$Add>,
+                add_up: Vec<$Add>,
                 scale_e: Vec<FpScale>,
                 scale_z: Vec<FpScale>,
                 scale_s: Vec<FpScale>,
@@ -343,26 +420,36 @@ macro_rules! tcheck_fold {
             }
         }
 
-        impl TCheckFold {
+        impl $Name {
             /// The unit vectors' names per class (the Verilog's instance prefixes).
             const UNITS: [&'static str; 7] = ["mul_v", "mul_up", "add_v", "add_up", "scale_e", "scale_z", "scale_s"];
 
             /// A folded T.CHECK built from `plan`, its value datapath rounding with `rounding`.
             pub fn new(plan: $crate::fold::plan::Plan, rounding: Rounding) -> Self {
+                assert!(
+                    plan.depth.fp_mul_latency() == $Mul::LATENCY && plan.depth.fp_add_latency() == $Add::LATENCY,
+                    "a plan at {:?} depth builds on that depth's units", plan.depth
+                );
                 let cert = $crate::golden::certificate::Certificate::new(FORMAT, rounding);
                 let up = Rounding::TowardPositive;
                 let u = plan.units;
+                let regs = |n: usize| if plan.operand_regs() > 0 { n } else { 0 };
                 $crate::rtl::tcheck::tcheck_new! { Self {
                     run: Default::default(),
                     counter: Default::default(),
+                    cnt: (0..regs(2 * plan.unit_count())).map(|_| $crate::rtl::tcheck_fold::KeptDff::new(true)).collect(),
+                    op_a: (0..regs(plan.unit_count())).map(|_| Default::default()).collect(),
+                    op_b: (0..regs(u[..4].iter().sum())).map(|_| Default::default()).collect(),
+                    op_sub: (0..regs(u[2] + u[3])).map(|_| Default::default()).collect(),
+                    op_sel: (0..regs(u[4] + u[5] + u[6])).map(|_| Default::default()).collect(),
                     regs: (0..plan.word_regs()).map(|_| $crate::rtl::tcheck_fold::KeptDff::new(plan.binding == $crate::fold::plan::Binding::PerReader)).collect(),
                     exact: (0..plan.exact.len).map(|_| Default::default()).collect(),
                     valid: (0..plan.valid.len).map(|_| Default::default()).collect(),
                     tags: (0..plan.tag.len).map(|_| Default::default()).collect(),
-                    mul_v: (0..u[0]).map(|_| FpMul::new(rounding)).collect(),
-                    mul_up: (0..u[1]).map(|_| FpMul::new(up)).collect(),
-                    add_v: (0..u[2]).map(|_| FpAdd::new(rounding)).collect(),
-                    add_up: (0..u[3]).map(|_| FpAdd::new(up)).collect(),
+                    mul_v: (0..u[0]).map(|_| $Mul::new(rounding)).collect(),
+                    mul_up: (0..u[1]).map(|_| $Mul::new(up)).collect(),
+                    add_v: (0..u[2]).map(|_| $Add::new(rounding)).collect(),
+                    add_up: (0..u[3]).map(|_| $Add::new(up)).collect(),
                     scale_e: (0..u[4]).map(|_| FpScale::new(cert.c_e[0], cert.c_e[1])).collect(),
                     scale_z: (0..u[5]).map(|_| FpScale::new(cert.c_z[0], cert.c_z[1])).collect(),
                     scale_s: (0..u[6]).map(|_| FpScale::new(cert.c_s, cert.c_s)).collect(),
@@ -449,6 +536,36 @@ macro_rules! tcheck_fold {
                 }
             }
 
+            /// Issues to unit `u` of class `k` its operands, `sub` and `sel`: straight to the
+            /// unit, or into its operand registers and the unit from them.
+            fn issue_registered(&mut self, k: usize, u: usize, a: u64, b: u64, sub: bool, sel: bool) {
+                if self.plan.0.operand_regs() == 0 {
+                    return self.issue(k, u, a, b, sub, sel);
+                }
+                let clock = self.clock.val();
+                let g = self.plan.0.flat(k, u);
+                let r = &mut self.op_a[g];
+                (r.clock.next, r.d.next) = (clock, a.into());
+                let a = r.q.val().to_u64();
+                let (mut b2, mut sub2, mut sel2) = (0, false, false);
+                if k < 4 {
+                    let r = &mut self.op_b[g];
+                    (r.clock.next, r.d.next) = (clock, b.into());
+                    b2 = r.q.val().to_u64();
+                }
+                if k == 2 || k == 3 {
+                    let r = &mut self.op_sub[g - self.plan.0.units[0] - self.plan.0.units[1]];
+                    (r.clock.next, r.d.next) = (clock, sub);
+                    sub2 = r.q.val();
+                }
+                if k >= 4 {
+                    let r = &mut self.op_sel[g - self.plan.0.units[..4].iter().sum::<usize>()];
+                    (r.clock.next, r.d.next) = (clock, sel);
+                    sel2 = r.q.val();
+                }
+                self.issue(k, u, a, b2, sub2, sel2)
+            }
+
             /// Drives unit `u` of class `k`: operands, `sub`, `sel`.
             fn issue(&mut self, k: usize, u: usize, a: u64, b: u64, sub: bool, sel: bool) {
                 let clock = self.clock.val();
@@ -479,8 +596,8 @@ macro_rules! tcheck_fold {
             }
         }
     };
-    (@logic $W:tt, $WM1:tt, $E:tt, $F:tt) => {
-        impl Logic for TCheckFold {
+    (@logic $Name:ident, $W:tt, $WM1:tt, $E:tt, $F:tt) => {
+        impl Logic for $Name {
             fn update(&mut self) {
                 use $crate::fold::plan::Src;
                 let p = self.plan.0.clone();
@@ -490,6 +607,9 @@ macro_rules! tcheck_fold {
                 (self.run.clock.next, self.run.d.next) = (clock, run);
                 self.counter.clock.next = clock;
                 self.counter.d.next = (if run { ((c + 1) % p.ii) as u64 } else { 0 }).into();
+                for r in &mut self.cnt {
+                    (r.clock.next, r.d.next) = (clock, self.counter.d.next);
+                }
                 for ch in &p.words {
                     for i in 0..ch.len {
                         let r = ch.first + i;
@@ -523,7 +643,7 @@ macro_rules! tcheck_fold {
                             Some(iss) => (self.read(&iss.a), iss.b.map_or(0, |b| self.read(&b)), iss.sub, iss.sel.is_some_and(|r| self.exact[r].q.val())),
                             None => (0, 0, false, false),
                         };
-                        self.issue(k, u, a, b, sub, sel);
+                        self.issue_registered(k, u, a, b, sub, sel);
                     }
                 }
                 let o = &p.outputs;
@@ -571,6 +691,15 @@ macro_rules! tcheck_fold {
                 (self.run.clock.connect(), self.run.d.connect());
                 self.counter.clock.connect();
                 self.counter.d.connect();
+                for r in &mut self.cnt {
+                    (r.clock.connect(), r.d.connect());
+                }
+                for r in self.op_a.iter_mut().chain(&mut self.op_b) {
+                    (r.clock.connect(), r.d.connect());
+                }
+                for r in self.op_sub.iter_mut().chain(&mut self.op_sel) {
+                    (r.clock.connect(), r.d.connect());
+                }
                 for r in &mut self.regs {
                     (r.clock.connect(), r.d.connect());
                 }
@@ -612,7 +741,8 @@ macro_rules! tcheck_fold {
                 Verilog::Custom(self.body())
             }
         }
-
+    };
+    (@top $W:tt) => {
         /// A folded T.CHECK built from `plan` ([`crate::fold::tcheck_plan`]), ready to
         /// simulate as a top-level block (inputs claimed, connected).
         pub fn tcheck_fold_top(plan: $crate::fold::plan::Plan, rounding: Rounding) -> TCheckFold {
@@ -635,7 +765,7 @@ macro_rules! tcheck_fold {
 
         /// Verilog of the folded T.CHECK (top module `top`).
         pub fn verilog_tcheck_fold(ii: usize, rounding: Rounding) -> String {
-            let plan = $crate::fold::tcheck_plan(ii, $crate::fold::plan::Binding::Shared).expect("T.CHECK schedules at every II >= 1");
+            let plan = $crate::fold::tcheck_plan(ii, $crate::fold::plan::Binding::Shared, $crate::chip::rtl::Depth::Asic).expect("T.CHECK schedules at every II >= 1");
             generate_verilog(&tcheck_fold_top(plan, rounding))
         }
     };

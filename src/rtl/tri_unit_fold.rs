@@ -122,9 +122,27 @@ pub(crate) fn body_verilog(half: usize, tc_latency: usize) -> String {
 }
 
 /// Stamps out `TriUnitFold` in the calling module (after `tri_unit!` and `tcheck_fold!`: it
-/// uses `TCheckFold`, `TriFifo`, `TRI_FIFO_BITS`). Arguments: `W` word width.
+/// uses `TCheckFold`, `TriFifo`, `TRI_FIFO_BITS`), or with `fpga` first `TriUnitFoldFpga`
+/// on `TCheckFoldFpga` (for a plan at FPGA depth). Argument: `W` word width.
 macro_rules! tri_unit_fold {
     ($W:tt) => {
+        $crate::rtl::tri_unit_fold::tri_unit_fold!(@unit TriUnitFold, TCheckFold, tri_unit_fold_top, $W);
+        /// Verilog of the TRI_UNIT folded for a pair every `ii` clocks (top module `top`); Err
+        /// for an `ii` it cannot be folded to ([`crate::fold::tri_unit_plan`]).
+        pub fn verilog_tri_unit_fold(ii: usize, rounding: Rounding) -> Result<String, String> {
+            Ok(generate_verilog(&tri_unit_fold_top($crate::fold::tri_unit_plan(ii, $crate::fold::plan::Binding::Shared, $crate::chip::rtl::Depth::Asic)?, rounding)))
+        }
+    };
+    (fpga $W:tt) => {
+        $crate::rtl::tri_unit_fold::tri_unit_fold!(@unit TriUnitFoldFpga, TCheckFoldFpga, tri_unit_fold_fpga_top, $W);
+        /// Verilog of the TRI_UNIT folded for a pair every `ii` clocks at FPGA depth, its
+        /// registers per reader (top module `top`); Err for an `ii` it cannot be folded to.
+        pub fn verilog_tri_unit_fold_fpga(ii: usize, rounding: Rounding) -> Result<String, String> {
+            let plan = $crate::fold::tri_unit_plan(ii, $crate::fold::plan::Binding::PerReader, $crate::chip::rtl::Depth::Fpga)?;
+            Ok(generate_verilog(&tri_unit_fold_fpga_top(plan, rounding)))
+        }
+    };
+    (@unit $Name:ident, $TCheck:ident, $top:ident, $W:tt) => {
         $crate::rtl::tri_unit::tri_unit_ports! {
             $W,
             /// TRI_UNIT folded (docs/explanation/architecture.md, "Folded TRI_UNIT"): [`TriUnit`]'s ports and
@@ -140,7 +158,7 @@ macro_rules! tri_unit_fold {
             /// for the second's, and their Kleene OR enters the result FIFO
             /// ([`crate::fold::tri_unit_latency`] after the pair, with the FIFO's two registers).
             /// The frame registers are read when the pair is taken, as in [`TriUnit`].
-            TriUnitFold {
+            $Name {
                 // the counter starts with the first pair (`run`), then runs freely
                 run: DFF<Bit>,
                 counter: DFF<Bits<8>>,
@@ -151,7 +169,7 @@ macro_rules! tri_unit_fold {
                 held_exact: DFF<Bit>,
                 held_tag: DFF<Bits<32>>,
                 held_valid: DFF<Bit>,
-                tc: TCheckFold,
+                tc: $TCheck,
                 // the first direction's verdict (masked by B's degenerate flag) and A's flag
                 ab_t: DFF<Bit>,
                 ab_f: DFF<Bit>,
@@ -162,7 +180,7 @@ macro_rules! tri_unit_fold {
             }
         }
 
-        impl TriUnitFold {
+        impl $Name {
             /// Result FIFO entries: pairs taken and not yet read out.
             pub const FIFO_DEPTH: usize = 1 << TRI_FIFO_BITS;
 
@@ -177,7 +195,7 @@ macro_rules! tri_unit_fold {
                     held_exact: Default::default(),
                     held_tag: Default::default(),
                     held_valid: Default::default(),
-                    tc: TCheckFold::new(plan, rounding),
+                    tc: $TCheck::new(plan, rounding),
                     ab_t: Default::default(),
                     ab_f: Default::default(),
                     a_deg: Default::default(),
@@ -222,7 +240,7 @@ macro_rules! tri_unit_fold {
             }
         }
 
-        impl Logic for TriUnitFold {
+        impl Logic for $Name {
             fn update(&mut self) {
                 use $crate::rtl::tri_unit_fold::{frame_addr, WORDS};
                 let (half, tc_latency) = (self.tc.plan.0.ii, self.tc.plan.0.latency);
@@ -308,14 +326,8 @@ macro_rules! tri_unit_fold {
 
         /// A folded TRI_UNIT on a T.CHECK built from `plan` ([`crate::fold::tri_unit_plan`]),
         /// ready to simulate as a top-level block (inputs claimed, connected).
-        pub fn tri_unit_fold_top(plan: $crate::fold::plan::Plan, rounding: Rounding) -> TriUnitFold {
-            $crate::rtl::tri_unit::tri_unit_top_level!(TriUnitFold::new(plan, rounding))
-        }
-
-        /// Verilog of the TRI_UNIT folded for a pair every `ii` clocks (top module `top`); Err
-        /// for an `ii` it cannot be folded to ([`crate::fold::tri_unit_plan`]).
-        pub fn verilog_tri_unit_fold(ii: usize, rounding: Rounding) -> Result<String, String> {
-            Ok(generate_verilog(&tri_unit_fold_top($crate::fold::tri_unit_plan(ii, $crate::fold::plan::Binding::Shared)?, rounding)))
+        pub fn $top(plan: $crate::fold::plan::Plan, rounding: Rounding) -> $Name {
+            $crate::rtl::tri_unit::tri_unit_top_level!($Name::new(plan, rounding))
         }
     };
 }
