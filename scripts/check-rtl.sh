@@ -37,8 +37,8 @@ trap 'rm -rf "$out_dir"' EXIT
 # Verilator, queries with triangle tests and results (and, on the k = 6 chip, a FIFO
 # traversal that wraps the pair queue's ring of 1,024 entries: the k = 24 chips share its
 # Verilog), each once per seed.
-ICARUS_CHIP_QUERIES=${ICARUS_CHIP_QUERIES-chip_e8m15_k6:apart_lifo_first chip_b32_k24:k24_apart_lifo_first chip_e8m15_b32_k24:k24r_apart_lifo_first chip_e8m15_k24:k24e_apart_lifo_first chip_e8m10_k24:k24m10_apart_lifo_first chip_e8m15_k6_fold16:fold16_apart_lifo_first chip_e8m15_k6_dop6_tri32:dop6tri32_apart_lifo_first chip_b32_k24_q4:k24q4_apart_lifo_first}
-X_CHIP_QUERIES=${X_CHIP_QUERIES-chip_e8m15_k6:big_sphere_fifo_prefetch chip_b32_k24:k24_big_sphere_fifo_cache chip_e8m15_b32_k24:k24r_big_sphere_fifo_prefetch chip_e8m15_k24:k24e_rne_patch_fifo_all chip_e8m10_k24:k24m10_rne_patch_fifo_all chip_e8m15_k6_fold16:fold16_patch_fifo_all chip_e8m15_k6_dop6_tri32:dop6tri32_patch_fifo_all chip_b32_k24_q4:k24q4_big_sphere_fifo_cache}
+ICARUS_CHIP_QUERIES=${ICARUS_CHIP_QUERIES-chip_e8m15_k6:apart_lifo_first chip_b32_k24:k24_apart_lifo_first chip_e8m15_b32_k24:k24r_apart_lifo_first chip_e8m15_k24:k24e_apart_lifo_first chip_e8m10_k24:k24m10_apart_lifo_first chip_e8m15_k6_fold16:fold16_apart_lifo_first chip_e8m15_k6_dop6_tri32:dop6tri32_apart_lifo_first chip_e8m15_k6_dop6_tri32_fpga:dop6tri32fpga_apart_lifo_first chip_b32_k24_q4:k24q4_apart_lifo_first}
+X_CHIP_QUERIES=${X_CHIP_QUERIES-chip_e8m15_k6:big_sphere_fifo_prefetch chip_b32_k24:k24_big_sphere_fifo_cache chip_e8m15_b32_k24:k24r_big_sphere_fifo_prefetch chip_e8m15_k24:k24e_rne_patch_fifo_all chip_e8m10_k24:k24m10_rne_patch_fifo_all chip_e8m15_k6_fold16:fold16_patch_fifo_all chip_e8m15_k6_dop6_tri32:dop6tri32_patch_fifo_all chip_e8m15_k6_dop6_tri32_fpga:dop6tri32fpga_patch_fifo_all chip_b32_k24_q4:k24q4_big_sphere_fifo_cache}
 X_SEEDS=${X_SEEDS:-$((RANDOM + 1)) $((RANDOM + 1)) $((RANDOM + 1))}
 
 chip_queries() { # <chip> <list of chip:query>: the chip's queries in the list

@@ -18,7 +18,7 @@ use collision_chip::chip::memory::{Ddr, MemTiming, Memory};
 use collision_chip::chip::params::Params;
 use collision_chip::chip::probes::{probe_index, PROBES};
 use collision_chip::chip::reg::{Mode, Order};
-use collision_chip::chip::rtl::ChipKind;
+use collision_chip::chip::rtl::{ChipKind, Depth};
 use collision_chip::cycle::chip::Chip as CycleChip;
 use collision_chip::cycle::drive::{run_query, ChipTrace, Drive, Reader};
 use collision_chip::cycle::{self, ProbeObserver};
@@ -290,6 +290,7 @@ fn params() -> impl Strategy<Value = Params> {
             3u32..=140,
             1u32..=64,
             prop_oneof![3 => Just(1u32), 1 => (1u32..=16).prop_map(|h| 2 * h)],
+            any::<bool>(),
         ),
         (
             1u32..=2,
@@ -303,22 +304,35 @@ fn params() -> impl Strategy<Value = Params> {
         ),
     )
         .prop_map(
-            |((q, dl, tl, tf, ti), (sp, cr, os, pf, memory, di, clock_ps, tpf))| Params {
-                queue_entries: 1 << q,
-                // a folded DOP unit's latency is its own (k = 6: a pair every 2, 3 or 6 clocks)
-                dop_latency: if di == 1 { dl } else { Params::RTL.dop_latency },
-                dop_interval: di,
-                // a folded TRI_UNIT's latency is its schedule's
-                tri_latency: if ti == 1 { tl } else { Params::RTL.tri_latency },
-                tri_fifo: tf,
-                tri_interval: ti,
-                issue_spacing: sp,
-                credit: cr,
-                outstanding: os,
-                prefetch: pf,
-                tri_prefetch: tpf,
-                memory,
-                clock_ps,
+            |((q, dl, tl, tf, ti, fpga), (sp, cr, os, pf, memory, di, clock_ps, tpf))| {
+                // FPGA depth folds TRI_UNIT; its DOP unit's latency is its lanes'
+                let depth = if fpga && ti > 1 {
+                    Depth::Fpga
+                } else {
+                    Depth::Asic
+                };
+                Params {
+                    queue_entries: 1 << q,
+                    // a folded DOP unit's latency is its own (k = 6: a pair every 2, 3 or 6 clocks)
+                    dop_latency: if di == 1 && depth == Depth::Asic {
+                        dl
+                    } else {
+                        Params::RTL.dop_latency
+                    },
+                    dop_interval: di,
+                    depth,
+                    // a folded TRI_UNIT's latency is its schedule's
+                    tri_latency: if ti == 1 { tl } else { Params::RTL.tri_latency },
+                    tri_fifo: tf,
+                    tri_interval: ti,
+                    issue_spacing: sp,
+                    credit: cr,
+                    outstanding: os,
+                    prefetch: pf,
+                    tri_prefetch: tpf,
+                    memory,
+                    clock_ps,
+                }
             },
         )
 }
@@ -627,6 +641,7 @@ fn rtl_point_is_the_rtl() {
         tri_latency: 52 + 2,
         tri_fifo: 256,
         tri_interval: 1,
+        depth: Depth::Asic,
         issue_spacing: 2,
         credit: 16,
         outstanding: 1,

@@ -15,7 +15,7 @@ use collision_chip::chip::memory::Memory;
 use collision_chip::chip::params::Params;
 use collision_chip::chip::reg::Mode;
 use collision_chip::chip::reg::Order;
-use collision_chip::chip::rtl::ChipKind;
+use collision_chip::chip::rtl::{ChipKind, Depth};
 use collision_chip::cycle::chip::Chip as CycleChip;
 use collision_chip::cycle::drive::open_vcd;
 use collision_chip::cycle::drive::{run_query, ChipTrace, Drive, Lockstep, Reader};
@@ -57,8 +57,13 @@ impl Case {
         reader: Reader,
     ) -> Case {
         let setup = chip.setup(&pose);
-        let kind = ChipKind::of(&chip.cfg, params.dop_interval, params.tri_interval)
-            .expect("an RTL chip's configuration");
+        let kind = ChipKind::of(
+            &chip.cfg,
+            params.dop_interval,
+            params.tri_interval,
+            params.depth,
+        )
+        .expect("an RTL chip's configuration");
         let image = QueryImage::new(
             kind, &chip.a, &chip.b, &setup, order, mode, &params, &chip.cfg,
         )
@@ -561,6 +566,25 @@ fn dop6tri32_patch_fifo_all() {
         tr.dop_tests,
         tr.tri_tests
     );
+    compare_with_expect(q.name, tr);
+}
+
+/// The same chip at FPGA depth (`chip_e8m15_k6_dop6_tri32_fpga`: the DOP unit's lane of
+/// six-stage FP units, latency 31; TRI_UNIT's T.CHECK at FPGA depth with its operands
+/// registered) on the same patch: every signal equal to the cycle model's at `[timing] depth =
+/// "fpga"` clock by clock, the answer the golden model's, the trace the checked-in one.
+#[test]
+fn dop6tri32fpga_patch_fifo_all() {
+    let q = query("dop6tri32fpga_patch_fifo_all");
+    let p = q.params();
+    assert_eq!(
+        (q.chip, p.dop_interval, p.tri_interval, p.depth),
+        (ChipKind::K6E8m15Dop6Tri32Fpga, 6, 32, Depth::Fpga)
+    );
+    let case = Case::of(&q);
+    let tr = &case.lockstep::<10, 11, 9>(1, None)[0];
+    case.check(tr);
+    assert!(tr.dop_tests > 6 && tr.tri_tests > 4);
     compare_with_expect(q.name, tr);
 }
 

@@ -239,6 +239,12 @@ struct AccuracyArgs {
     /// (1: unfolded; ii dividing k: k / ii DOPTRF lanes in ii passes).
     #[arg(long, value_delimiter = ',', default_value = "1")]
     dop_intervals: Vec<u32>,
+    /// How deep the FP units are cut, comma separated: asic (the standard cells' pipelines)
+    /// or fpga (six stages each, T.CHECK's operands registered: more clocks on dependent
+    /// paths, a shorter period on an FPGA). fpga needs folded TRI_UNITs (--tri-intervals 2 to
+    /// 32). Each runs with each interval.
+    #[arg(long, value_delimiter = ',', default_value = "asic")]
+    depths: Vec<collision_chip::chip::rtl::Depth>,
     /// Stored DOP precision, comma separated: full, or bits a plane (1 to 16) of the codes a
     /// node record stores below an ancestor's DOP and the chip decodes outward (presets with
     /// the `records` layout: date05, date05-treelets, wscg03). Default: each preset's own
@@ -484,7 +490,8 @@ fn accuracy(a: AccuracyArgs) -> Result<(), String> {
             folds: a
                 .tri_intervals
                 .iter()
-                .flat_map(|&tri| a.dop_intervals.iter().map(move |&dop| Folds { tri, dop }))
+                .flat_map(|&tri| a.dop_intervals.iter().map(move |&dop| (tri, dop)))
+                .flat_map(|(tri, dop)| a.depths.iter().map(move |&depth| Folds { tri, dop, depth }))
                 .collect(),
             dop_bits: a.dop_bits.clone(),
             node_cache: a.node_cache,

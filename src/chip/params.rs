@@ -26,6 +26,10 @@ pub struct Params {
     /// directions on one T.CHECK folded for `tri_interval` / 2, a pair taken only when its
     /// control counter, running from the first pair taken, is 0).
     pub tri_interval: u32,
+    /// How deep the FP units are cut (`asic`: the standard-cell pipelines; `fpga`: six stages
+    /// each, and T.CHECK's operands registered): the folded units' latencies follow. At FPGA
+    /// depth TRI_UNIT is folded (`tri_interval` 2 to 32).
+    pub depth: rtl::Depth,
     /// TRI_UNIT's result FIFO: pairs taken and not yet given out.
     pub tri_fifo: u32,
     /// Clocks between two DOP issues at the least (the RTL: 2, so that the two child
@@ -68,6 +72,7 @@ impl Params {
         tri_latency: rtl::TRI_LATENCY as u32,
         tri_fifo: rtl::TRI_FIFO as u32,
         tri_interval: 1,
+        depth: rtl::Depth::Asic,
         issue_spacing: 2,
         credit: rtl::CREDIT as u32,
         outstanding: 1,
@@ -82,11 +87,12 @@ impl Params {
     };
 
     /// RTL chip `kind` after reset: [`RTL`](Self::RTL) with its DOP unit's and TRI_UNIT's
-    /// intervals.
+    /// intervals and its depth.
     pub const fn of(kind: rtl::ChipKind) -> Params {
         Params {
             dop_interval: kind.dop_interval(),
             tri_interval: kind.tri_interval(),
+            depth: kind.depth(),
             ..Params::RTL
         }
     }
@@ -98,12 +104,14 @@ impl Params {
     /// The longest folded TRI_UNIT's pair interval (the folds built: 2 to 32).
     pub const MAX_TRI_INTERVAL: u32 = 32;
 
-    /// The DOP unit's latency: `dop_latency` unfolded, the folded unit's (the RTL's
-    /// [`rtl::dop_fold_latency`]) at a `dop_interval` over 1.
+    /// The DOP unit's latency: `dop_latency` unfolded (at FPGA depth the lane's), the folded
+    /// unit's (the RTL's [`Depth::dop_fold_latency`](rtl::Depth::dop_fold_latency)) at a
+    /// `dop_interval` over 1.
     pub fn dop_unit_latency(&self) -> u32 {
-        match self.dop_interval {
-            1 => self.dop_latency,
-            ii => rtl::dop_fold_latency(ii as usize) as u32,
+        match (self.dop_interval, self.depth) {
+            (1, rtl::Depth::Asic) => self.dop_latency,
+            (1, d) => d.lane_latency() as u32,
+            (ii, d) => d.dop_fold_latency(ii as usize) as u32,
         }
     }
 
@@ -148,6 +156,16 @@ impl Params {
                 self.tri_latency, self.tri_interval
             ));
         }
+        if self.depth == rtl::Depth::Fpga && self.tri_interval == 1 {
+            return Err("at depth = \"fpga\" TRI_UNIT is the folded one: set tri_interval to an even number of clocks from 2 to 32, or depth = \"asic\"".into());
+        }
+        if self.depth != rtl::Depth::Asic && self.dop_latency != rtl::DOP_LATENCY as u32 {
+            return Err(format!(
+                "dop_latency {} is the unfolded DOP unit's at ASIC depth; at depth = \"fpga\" the DOP unit's latency is its lanes' ({} clocks unfolded): remove dop_latency, or set depth = \"asic\"",
+                self.dop_latency,
+                self.depth.lane_latency()
+            ));
+        }
         if self.dop_interval == 0 {
             return Err("dop_interval must be at least 1 (1: the DOP unit unfolded)".into());
         }
@@ -156,7 +174,7 @@ impl Params {
                 "dop_latency {} is the unfolded DOP unit's; a folded one (dop_interval {}) has latency {}: remove dop_latency, or set dop_interval = 1",
                 self.dop_latency,
                 self.dop_interval,
-                rtl::dop_fold_latency(self.dop_interval as usize)
+                self.depth.dop_fold_latency(self.dop_interval as usize)
             ));
         }
         if !(1..=2).contains(&self.issue_spacing) {

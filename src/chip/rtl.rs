@@ -14,9 +14,22 @@ pub const FP_SCALE_LATENCY: usize = 4;
 
 /// How deep the floating-point units are cut, per target. The values are the same bit for
 /// bit at every depth; only the latencies differ.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(
+    Clone,
+    Copy,
+    Debug,
+    Default,
+    PartialEq,
+    Eq,
+    Hash,
+    serde::Serialize,
+    serde::Deserialize,
+    clap::ValueEnum,
+)]
+#[serde(rename_all = "lowercase")]
 pub enum Depth {
     /// For standard cells (OSU 0.18 um: a stage of 5-7 ns): `FpMul`, `FpAdd`.
+    #[default]
     Asic,
     /// For an FPGA (ECP5: a stage of a few LUT levels and one carry chain, where a LUT level
     /// and its routing cost about 1 ns): `FpMulFpga`, `FpAddFpga`.
@@ -24,6 +37,11 @@ pub enum Depth {
 }
 
 impl Depth {
+    /// Whether this is the standard cells' depth (the default).
+    pub fn is_asic(&self) -> bool {
+        *self == Depth::Asic
+    }
+
     /// Both depths.
     pub const ALL: [Depth; 2] = [Depth::Asic, Depth::Fpga];
 
@@ -62,6 +80,14 @@ impl Depth {
         match self {
             Depth::Asic => 0,
             Depth::Fpga => 1,
+        }
+    }
+
+    /// Its name in scenes and on the command line (`[timing] depth`, `--depths`).
+    pub fn name(self) -> &'static str {
+        match self {
+            Depth::Asic => "asic",
+            Depth::Fpga => "fpga",
         }
     }
 
@@ -219,7 +245,7 @@ pub fn rounding_tag(r: Rounding) -> &'static str {
 /// `records` layout (host register [`MODE`](super::reg::MODE) bit 2; its memory word then a record), the clocks
 /// between the DOP unit's pairs (1: `DopUnit<k>`; ii dividing k: `DopUnit<k>Fold<ii>`, the
 /// cycle model's `dop_interval`) and between TRI_UNIT's (1: `TriUnit`; an even ii:
-/// `TriUnitFold`, the cycle model's `tri_interval`), and rust-hdl's speed on
+/// `TriUnitFold`, the cycle model's `tri_interval`), the FP units' [`Depth`], and rust-hdl's speed on
 /// it in clocks per second on this project's machine (docs/explanation/speed.md, `cargo bench --bench
 /// chip_sim`: for estimates before a run). Every chip's DOP lanes round as the host's setup
 /// words say (`dop_rounding`: outward or nearest-even; [`config`](ChipKind::config) says
@@ -231,28 +257,32 @@ macro_rules! rtl_chips {
     ($m:ident) => {
         $m! {
             /// k = 6 in e8m15: small and fast to simulate.
-            K6E8m15, "chip_e8m15_k6", e8m15, (6, REDUCED, REDUCED), false, 1, 1, 14.0;
+            K6E8m15, "chip_e8m15_k6", e8m15, (6, REDUCED, REDUCED), false, 1, 1, Asic, 14.0;
             /// The papers' chip (DATE'05 §4): k = 24 in binary32.
-            K24B32, "chip_b32_k24", b32, (24, BINARY32, BINARY32), true, 1, 1, 4.0;
+            K24B32, "chip_b32_k24", b32, (24, BINARY32, BINARY32), true, 1, 1, Asic, 4.0;
             /// The papers' chip with its DOP datapath in e8m15 (format `e8m15/binary32`).
-            K24E8m15B32, "chip_e8m15_b32_k24", e8m15_b32, (24, REDUCED, BINARY32), true, 1, 1, 4.0;
+            K24E8m15B32, "chip_e8m15_b32_k24", e8m15_b32, (24, REDUCED, BINARY32), true, 1, 1, Asic, 4.0;
             /// The papers' chip (k = 24) in e8m15 throughout (format `reduced`). (rust-hdl's
             /// speed assumed to be `chip_e8m15_b32_k24`'s.)
-            K24E8m15, "chip_e8m15_k24", e8m15_k24, (24, REDUCED, REDUCED), true, 1, 1, 4.0;
+            K24E8m15, "chip_e8m15_k24", e8m15_k24, (24, REDUCED, REDUCED), true, 1, 1, Asic, 4.0;
             /// The papers' chip (k = 24) in e8m10 throughout, the study's narrowest format.
             /// (rust-hdl's speed assumed to be `chip_e8m15_b32_k24`'s.)
-            K24E8m10, "chip_e8m10_k24", e8m10, (24, E8M10, E8M10), true, 1, 1, 4.0;
+            K24E8m10, "chip_e8m10_k24", e8m10, (24, E8M10, E8M10), true, 1, 1, Asic, 4.0;
             /// k = 6 in e8m15 with TRI_UNIT folded: a pair every 16 clocks.
             /// (rust-hdl's speed from `fold16_patch_fifo_all` in lockstep, tb/rtl_chip.rs: 1,498
             /// clocks in 10.4 s; the folded TRI_UNIT simulates far faster than two T.CHECKs.)
-            K6E8m15Fold16, "chip_e8m15_k6_fold16", e8m15_fold16, (6, REDUCED, REDUCED), false, 1, 16, 140.0;
+            K6E8m15Fold16, "chip_e8m15_k6_fold16", e8m15_fold16, (6, REDUCED, REDUCED), false, 1, 16, Asic, 140.0;
             /// k = 6 in e8m15 with both units folded, for an ECP5 LFE5U-85F: the DOP
             /// unit on one DOPTRF lane, a pair every 6 clocks; TRI_UNIT a pair every 32.
             /// (rust-hdl's speed from `dop6tri32_patch_fifo_all` in lockstep: 2,882 clocks in 7.2 s.)
-            K6E8m15Dop6Tri32, "chip_e8m15_k6_dop6_tri32", e8m15_dop6_tri32, (6, REDUCED, REDUCED), false, 6, 32, 400.0;
+            K6E8m15Dop6Tri32, "chip_e8m15_k6_dop6_tri32", e8m15_dop6_tri32, (6, REDUCED, REDUCED), false, 6, 32, Asic, 400.0;
+            /// The same at FPGA depth (`Depth::Fpga`): FP units of six stages, T.CHECK's operands
+            /// registered, each of its units on its own copy of the schedule counter.
+            /// (rust-hdl's speed assumed to be `chip_e8m15_k6_dop6_tri32`'s.)
+            K6E8m15Dop6Tri32Fpga, "chip_e8m15_k6_dop6_tri32_fpga", e8m15_dop6_tri32_fpga, (6, REDUCED, REDUCED), false, 6, 32, Fpga, 400.0;
             /// The papers' chip reading records of 4-bit stored DOPs (`dop_bits = 4`, the
             /// `records` layout only), its DOP unit behind the decode stage.
-            K24B32Q4, "chip_b32_k24_q4", b32_q4, (24, BINARY32, BINARY32, 4), true, 1, 1, 3.0;
+            K24B32Q4, "chip_b32_k24_q4", b32_q4, (24, BINARY32, BINARY32, 4), true, 1, 1, Asic, 3.0;
         }
     };
 }
@@ -264,7 +294,7 @@ macro_rules! chip_kinds {
     (@bits $b:literal) => { super::config::DopBits::Bits($b) };
     (@layout) => { super::config::MemLayout::Words };
     (@layout $b:literal) => { super::config::MemLayout::Records };
-    ($($(#[$doc:meta])* $kind:ident, $name:literal, $module:ident, ($k:literal, $dop:ident, $tri:ident $(, $bits:literal)?), $records:literal, $dop_ii:literal, $ii:literal, $speed:literal;)+) => {
+    ($($(#[$doc:meta])* $kind:ident, $name:literal, $module:ident, ($k:literal, $dop:ident, $tri:ident $(, $bits:literal)?), $records:literal, $dop_ii:literal, $ii:literal, $depth:ident, $speed:literal;)+) => {
         /// The RTL chips: one `CollisionChip` per configuration, exported to `rtl/<name>.v`.
         #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
         pub enum ChipKind {
@@ -321,6 +351,13 @@ macro_rules! chip_kinds {
                 }
             }
 
+            /// How deep its FP units are cut (the cycle model's [`depth`](super::params::Params::depth)).
+            pub const fn depth(self) -> Depth {
+                match self {
+                    $(ChipKind::$kind => Depth::$depth,)+
+                }
+            }
+
             /// rust-hdl's clocks per second on this chip, for estimates before a run.
             pub const fn rtl_clocks_per_second(self) -> f64 {
                 match self {
@@ -334,12 +371,18 @@ rtl_chips!(chip_kinds);
 
 impl ChipKind {
     /// The chip built for `cfg`'s k, formats and roundings with the DOP unit taking a pair
-    /// every `dop_interval` clocks and TRI_UNIT every `tri_interval`, if any (its triangle
+    /// every `dop_interval` clocks and TRI_UNIT every `tri_interval`, its FP units at `depth`, if any (its triangle
     /// cache and memory layout aside: every chip has [`TRI_CACHE_LINES`] lines, host register
     /// [`TRI_CACHE`](super::reg::TRI_CACHE) picks how many are used; [`records`](Self::records) says which layouts it reads).
-    pub fn of(cfg: &ChipConfig, dop_interval: u32, tri_interval: u32) -> Option<ChipKind> {
-        let mut at = ChipKind::built(cfg)
-            .filter(|k| (k.dop_interval(), k.tri_interval()) == (dop_interval, tri_interval));
+    pub fn of(
+        cfg: &ChipConfig,
+        dop_interval: u32,
+        tri_interval: u32,
+        depth: Depth,
+    ) -> Option<ChipKind> {
+        let mut at = ChipKind::built(cfg).filter(|k| {
+            (k.dop_interval(), k.tri_interval(), k.depth()) == (dop_interval, tri_interval, depth)
+        });
         let first = at.next()?;
         // the chip of the configuration's stored precision, if one is built
         Some(

@@ -8,7 +8,7 @@
 
 use super::config::{ChipConfig, DopBits};
 use super::preset::Preset;
-use super::rtl::{self, ChipKind};
+use super::rtl::{self, ChipKind, Depth};
 use super::wscg03::Architecture;
 use crate::format::{Format, Rounding};
 use serde::{Deserialize, Serialize};
@@ -123,16 +123,17 @@ impl Table {
 /// folded as `folds`, and with stored DOP precision the decode stage, one per plane of each
 /// node of a pair (2k). D_CNTR, the queue and the memory port are not counted.
 pub fn datapath_units(cfg: &ChipConfig, folds: Folds) -> Vec<(String, u32)> {
-    let mut units = vec![(dop_unit(cfg, folds.dop), 1), (tri_unit(cfg, folds.tri), 1)];
+    let mut units = vec![(dop_unit(cfg, folds), 1), (tri_unit(cfg, folds), 1)];
     if let DopBits::Bits(b) = cfg.dop_bits {
         units.push((rtl::dop_decode_name(cfg.format.dop, b), 2 * cfg.k as u32));
     }
     units
 }
 
-/// `cfg`'s DOP unit's name ([`rtl::dop_unit_name`]), taking a pair every `dop_interval` clocks.
-pub fn dop_unit(cfg: &ChipConfig, dop_interval: u32) -> String {
-    rtl::dop_unit_name(cfg.k, cfg.format.dop, dop_interval)
+/// `cfg`'s DOP unit's name ([`rtl::dop_unit_name_at`]), taking a pair every `folds.dop`
+/// clocks at `folds.depth`.
+pub fn dop_unit(cfg: &ChipConfig, folds: Folds) -> String {
+    rtl::dop_unit_name_at(folds.depth, cfg.k, cfg.format.dop, folds.dop)
 }
 
 /// The clocks between the pairs a folded unit takes (1: unfolded): the cycle model's
@@ -141,11 +142,36 @@ pub fn dop_unit(cfg: &ChipConfig, dop_interval: u32) -> String {
 pub struct Folds {
     pub tri: u32,
     pub dop: u32,
+    /// The FP units' depth (written only when it is not the default, `asic`).
+    #[serde(default, skip_serializing_if = "Depth::is_asic")]
+    pub depth: Depth,
 }
 
 impl Folds {
     /// Both units unfolded.
-    pub const NONE: Folds = Folds { tri: 1, dop: 1 };
+    pub const NONE: Folds = Folds {
+        tri: 1,
+        dop: 1,
+        depth: Depth::Asic,
+    };
+
+    /// `tri` and `dop` at ASIC depth.
+    pub const fn asic(tri: u32, dop: u32) -> Folds {
+        Folds {
+            tri,
+            dop,
+            depth: Depth::Asic,
+        }
+    }
+
+    /// The folds and depth of the cycle model's `p`.
+    pub fn of(p: &super::params::Params) -> Folds {
+        Folds {
+            tri: p.tri_interval,
+            dop: p.dop_interval,
+            depth: p.depth,
+        }
+    }
 }
 
 impl Default for Folds {
@@ -154,9 +180,10 @@ impl Default for Folds {
     }
 }
 
-/// `cfg`'s TRI_UNIT's name ([`rtl::tri_unit_name`]), taking a pair every `tri_interval` clocks.
-pub fn tri_unit(cfg: &ChipConfig, tri_interval: u32) -> String {
-    rtl::tri_unit_name(cfg.format.tri, cfg.tri_rounding, tri_interval)
+/// `cfg`'s TRI_UNIT's name ([`rtl::tri_unit_name_at`]), taking a pair every `folds.tri`
+/// clocks at `folds.depth`.
+pub fn tri_unit(cfg: &ChipConfig, folds: Folds) -> String {
+    rtl::tri_unit_name_at(folds.depth, cfg.format.tri, cfg.tri_rounding, folds.tri)
 }
 
 /// The RTL units a configuration is built from, by their names in `rtl/` and the timing
@@ -198,10 +225,14 @@ fn chains(cfg: &ChipConfig, folds: Folds) -> [Vec<Vec<String>>; 3] {
         rtl::rounding_tag(cfg.tri_rounding),
     );
     let chip = || vec![chip_name(cfg, Folds::NONE)];
+    let at = folds.depth.tag();
     let dop_parts = [
-        vec![dop_unit(cfg, folds.dop)],
-        vec![format!("doptrf_{d}")],
-        vec![format!("fp_mul_{d}_{dr}"), format!("fp_add_{d}_{dr}")],
+        vec![dop_unit(cfg, folds)],
+        vec![format!("doptrf{at}_{d}")],
+        vec![
+            format!("fp_mul{at}_{d}_{dr}"),
+            format!("fp_add{at}_{d}_{dr}"),
+        ],
     ];
     let dop = (folds.dop == 1)
         .then(chip)
@@ -210,14 +241,14 @@ fn chains(cfg: &ChipConfig, folds: Folds) -> [Vec<Vec<String>>; 3] {
         .collect();
     let tcheck = (folds.tri == 1).then(|| vec![format!("tcheck_{t}_{tr}")]);
     let tri_parts = vec![
-        format!("fp_mul_{t}_{tr}"),
-        format!("fp_add_{t}_{tr}"),
+        format!("fp_mul{at}_{t}_{tr}"),
+        format!("fp_add{at}_{t}_{tr}"),
         format!("fp_scale_{t}"),
     ];
     let tri = (folds.tri == 1)
         .then(chip)
         .into_iter()
-        .chain([vec![tri_unit(cfg, folds.tri)]])
+        .chain([vec![tri_unit(cfg, folds)]])
         .chain(tcheck)
         .chain([tri_parts])
         .collect();
@@ -236,17 +267,18 @@ fn chains(cfg: &ChipConfig, folds: Folds) -> [Vec<Vec<String>>; 3] {
 /// unfolded). A fold then never looks faster for want of a measurement where a chip measured it.
 fn stand_in(table: &Table, cfg: &ChipConfig, folds: Folds, unit: &str) -> Option<String> {
     let (tri, dop) = (
-        folds.tri > 1 && unit == tri_unit(cfg, folds.tri),
-        folds.dop > 1 && unit == dop_unit(cfg, folds.dop),
+        folds.tri > 1 && unit == tri_unit(cfg, folds),
+        folds.dop > 1 && unit == dop_unit(cfg, folds),
     );
     let chip = ChipKind::built(cfg).find(|k| {
         ((tri && k.tri_interval() == folds.tri) || (dop && k.dop_interval() == folds.dop))
+            && k.depth() == folds.depth
             && table.periods.contains_key(k.name())
     });
     match chip {
         Some(k) => Some(k.name().to_string()),
-        None if tri => Some(tri_unit(cfg, 1)),
-        None if dop => Some(dop_unit(cfg, 1)),
+        None if tri => Some(tri_unit(cfg, Folds::NONE)),
+        None if dop => Some(dop_unit(cfg, Folds::NONE)),
         None => None,
     }
 }
@@ -294,11 +326,12 @@ fn largest_measured(
 /// The chip's name: the RTL's where it builds `cfg` with `folds`, else as `rtl_chips!`
 /// would name it.
 fn chip_name(cfg: &ChipConfig, folds: Folds) -> String {
-    match (ChipKind::of(cfg, folds.dop, folds.tri), folds) {
+    let tag = folds.depth.tag();
+    match (ChipKind::of(cfg, folds.dop, folds.tri, folds.depth), folds) {
         (Some(kind), _) => kind.name().to_string(),
-        (None, Folds { dop: 1, tri: 1 }) => format!("chip_{}", cfg_tag(cfg)),
-        (None, Folds { dop: 1, tri }) => format!("chip_{}_fold{tri}", cfg_tag(cfg)),
-        (None, Folds { dop, tri }) => format!("chip_{}_dop{dop}_tri{tri}", cfg_tag(cfg)),
+        (None, Folds { dop: 1, tri: 1, .. }) => format!("chip_{}{tag}", cfg_tag(cfg)),
+        (None, Folds { dop: 1, tri, .. }) => format!("chip_{}_fold{tri}{tag}", cfg_tag(cfg)),
+        (None, Folds { dop, tri, .. }) => format!("chip_{}_dop{dop}_tri{tri}{tag}", cfg_tag(cfg)),
     }
 }
 
@@ -521,7 +554,7 @@ impl Clock {
             Some(&ns) => (chip, ns, vec![], vec![]),
             None => slowest_unit(table, cfg, folds)?,
         };
-        let chip = ChipKind::of(cfg, folds.dop, folds.tri);
+        let chip = ChipKind::of(cfg, folds.dop, folds.tri, folds.depth);
         let why = match chip.map(|k| (k, k.reads(cfg))) {
             _ if !widened.is_empty() => widened.join("; "),
             None => format!("{} is not built in RTL", chip_name(cfg, folds)),
@@ -807,7 +840,7 @@ mod tests {
             dop_rounding: DopRounding::Outward,
             ..Default::default()
         };
-        let u = units(&cfg, Folds { tri: 16, dop: 1 });
+        let u = units(&cfg, Folds::asic(16, 1));
         for name in [
             "tri_unit_fold16_e8m15_rne",
             "chip_e8m15_k6",
@@ -830,7 +863,7 @@ chip_e8m15_k6,8
             "t",
         )
         .unwrap();
-        let c = Clock::measured(&t, &cfg, Folds { tri: 16, dop: 1 }).unwrap();
+        let c = Clock::measured(&t, &cfg, Folds::asic(16, 1)).unwrap();
         assert_eq!(
             (c.period_ns, c.slowest.as_deref(), c.source),
             (
@@ -851,7 +884,7 @@ chip_e8m15_k6,8
         )
         .unwrap();
         assert_eq!(
-            Clock::measured(&t, &cfg, Folds { tri: 16, dop: 1 })
+            Clock::measured(&t, &cfg, Folds::asic(16, 1))
                 .unwrap()
                 .period_ns,
             9.0
@@ -867,7 +900,7 @@ chip_e8m15_k6,8
             "t",
         )
         .unwrap();
-        let c = Clock::measured(&t, &cfg, Folds { tri: 16, dop: 1 }).unwrap();
+        let c = Clock::measured(&t, &cfg, Folds::asic(16, 1)).unwrap();
         assert_eq!(
             (c.period_ns, c.slowest.as_deref()),
             (
@@ -888,7 +921,7 @@ chip_e8m15_k6,8
             "t",
         )
         .unwrap();
-        let c = Clock::measured(&t, &cfg, Folds { tri: 16, dop: 2 }).unwrap();
+        let c = Clock::measured(&t, &cfg, Folds::asic(16, 2)).unwrap();
         assert_eq!(
             (c.period_ns, c.slowest.as_deref()),
             (
@@ -896,17 +929,15 @@ chip_e8m15_k6,8
                 Some("chip_e8m15_k6_fold16 (for tri_unit_fold16_e8m15_rne)")
             )
         );
-        assert!(
-            units(&cfg, Folds { tri: 1, dop: 6 }).contains(&"dop_unit_fold6_k6_e8m15".to_string())
-        );
+        assert!(units(&cfg, Folds::asic(1, 6)).contains(&"dop_unit_fold6_k6_e8m15".to_string()));
         assert_eq!(
-            units(&cfg, Folds { tri: 8, dop: 1 })
+            units(&cfg, Folds::asic(8, 1))
                 .iter()
                 .filter(|n| n.starts_with("chip_"))
                 .collect::<Vec<_>>(),
             ["chip_e8m15_k6", "chip_e8m15_k6_fold8"]
         );
-        let both = units(&cfg, Folds { tri: 32, dop: 6 });
+        let both = units(&cfg, Folds::asic(32, 6));
         assert_eq!(
             both.iter()
                 .filter(|n| n.starts_with("chip_"))
@@ -932,10 +963,7 @@ chip_e8m15_k6,8
         );
         // the ECP5 table clocks the ECP5 chip's configuration from a measured row (the
         // chip's own once it is placed on the current Verilog again)
-        let (k6, folds) = (
-            ChipKind::K6E8m15Dop6Tri32.config(),
-            Folds { dop: 6, tri: 32 },
-        );
+        let (k6, folds) = (ChipKind::K6E8m15Dop6Tri32.config(), Folds::asic(32, 6));
         let ecp5 = Clock::of(Technology::Ecp5, &k6, folds, Preset::Rtl).unwrap();
         assert!(
             ecp5.slowest.is_some() && ecp5.source().contains("docs/figures/timing_ecp5.csv"),

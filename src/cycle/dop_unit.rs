@@ -8,7 +8,8 @@
 //! Folded (`dop_interval` ii > 1, `rtl::*::DopUnit<k>Fold<ii>`'s rhythm): its counter runs
 //! 0 .. ii-1 from the first pair taken since reset and never stops, and `in_ready` is high
 //! only while it is 0, so pairs are taken in cycles t0 + n ii; the latency is
-//! [`dop_fold_latency`](crate::chip::rtl::dop_fold_latency)(ii), the RTL's.
+//! [`Depth::dop_fold_latency`](crate::chip::rtl::Depth::dop_fold_latency)(ii) at the
+//! parameters' depth, the RTL's.
 
 use super::delay::Delay;
 use crate::chip::config::ChipConfig;

@@ -74,7 +74,7 @@ impl<'a> TriUnit<'a> {
             ii => fold::tri_unit_latency(&fold::tri_unit_plan(
                 ii as usize,
                 fold::plan::Binding::Shared,
-                crate::chip::rtl::Depth::Asic,
+                p.depth,
             )?) as u32,
         };
         let open = Delay::with_capacity(latency, p.tri_fifo as usize);

@@ -151,7 +151,13 @@ fn tri_unit_fold_unit(ii: usize) -> Unit {
 fn tri_unit_fold_fpga_unit() -> Unit {
     let ii = 32;
     let verilog = move |r| crate::rtl::e8m15::verilog_tri_unit_fold_fpga(ii, r);
-    tri_unit_fold_at(Depth::Fpga, Binding::PerReader, Format::REDUCED, ii, verilog)
+    tri_unit_fold_at(
+        Depth::Fpga,
+        Binding::PerReader,
+        Format::REDUCED,
+        ii,
+        verilog,
+    )
 }
 
 /// A folded TRI_UNIT in `fmt` at `depth`, nearest-even, its Verilog from `verilog`.

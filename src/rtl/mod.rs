@@ -406,6 +406,31 @@ pub mod e8m15_dop6_tri32 {
     crate::rtl::chip::chip!(6, DopUnit = DopUnit::new => in_ready, TriUnitFold = tri_unit, 24, 24, 24, 209, 554, 554, 209, 1);
 }
 
+/// The FPGA chip: `e8m15_dop6_tri32` at FPGA depth (`Depth::Fpga`), for an ECP5 LFE5U-85F:
+/// the DOP unit on one DOPTRF lane of `FpMulFpga` and `FpAddFpga` (`DopUnit6Fold6Fpga`),
+/// TRI_UNIT on one T.CHECK folded for 16 at FPGA depth (`TriUnitFoldFpga`: its operands
+/// registered, each unit on its own copy of the counter, its registers per reader).
+pub mod e8m15_dop6_tri32_fpga {
+    use super::e8m15::{DopUnit6Fold6Fpga, TriUnitFoldFpga};
+    use crate::chip::rtl::ChipKind;
+    use crate::format::Rounding;
+    use rust_hdl::prelude::*;
+
+    const KIND: ChipKind = ChipKind::K6E8m15Dop6Tri32Fpga;
+
+    /// TRI_UNIT folded to the chip's interval at its depth, T.CHECK rounding with `r`.
+    fn tri_unit(r: Rounding) -> TriUnitFoldFpga {
+        let plan = crate::fold::tri_unit_plan(
+            KIND.tri_interval() as usize,
+            crate::fold::plan::Binding::PerReader,
+            KIND.depth(),
+        );
+        TriUnitFoldFpga::new(plan.expect("the chip's interval is even"), r)
+    }
+    // node word 1 + 6 * 24 + 64 bits, triangle word 23 * 24 + 2
+    crate::rtl::chip::chip!(6, DopUnit6Fold6Fpga = DopUnit6Fold6Fpga::new => in_ready, TriUnitFoldFpga = tri_unit, 24, 24, 24, 209, 554, 554, 209, 1);
+}
+
 // The contract's widths and latencies (`crate::chip`) are what the blocks are built with: the
 // chip! macros take literals, so each is checked here.
 /// The RTL's widths are the contract's: the memory word (`ChipKind::word_bits`), the
@@ -436,6 +461,7 @@ check_widths!(e8m15_k24, K24E8m15);
 check_widths!(e8m10, K24E8m10);
 check_widths!(e8m15_fold16, K6E8m15Fold16);
 check_widths!(e8m15_dop6_tri32, K6E8m15Dop6Tri32);
+check_widths!(e8m15_dop6_tri32_fpga, K6E8m15Dop6Tri32Fpga);
 check_widths!(b32_q4, K24B32Q4);
 const _: () = assert!(
     b32::TCheck::LATENCY == crate::chip::rtl::TCHECK_LATENCY
@@ -462,6 +488,14 @@ const _: () = assert!(
     e8m15::DopUnit6Fold6::LATENCY == crate::chip::rtl::Depth::Asic.dop_fold_latency(6)
         && e8m15::DopUnit6Fold6Fpga::LATENCY == crate::chip::rtl::Depth::Fpga.dop_fold_latency(6)
 );
+const _: () = {
+    use crate::chip::rtl::ChipKind;
+    let fpga = ChipKind::K6E8m15Dop6Tri32Fpga;
+    assert!(
+        e8m15::DopUnit6Fold6Fpga::LATENCY
+            == fpga.depth().dop_fold_latency(fpga.dop_interval() as usize)
+    );
+};
 const _: () = assert!(b32::FpScale::LATENCY == crate::chip::rtl::FP_SCALE_LATENCY);
 const _: () = assert!(b32::DopDecode::LATENCY == crate::chip::rtl::DOP_DECODE_LATENCY);
 const _: () = assert!(

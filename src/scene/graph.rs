@@ -231,8 +231,13 @@ impl Unit {
 /// ` (rtl/<chip>.v)`: the RTL chip a scene's configuration runs on, if one is built for it
 /// (otherwise the run stops with `chip_io::rtl_order`'s error).
 fn chip_name(s: &Scene) -> String {
-    crate::chip::rtl::ChipKind::of(&s.cfg, s.params.dop_interval, s.params.tri_interval)
-        .map_or(String::new(), |k| format!(" (rtl/{}.v)", k.name()))
+    crate::chip::rtl::ChipKind::of(
+        &s.cfg,
+        s.params.dop_interval,
+        s.params.tri_interval,
+        s.params.depth,
+    )
+    .map_or(String::new(), |k| format!(" (rtl/{}.v)", k.name()))
 }
 
 /// The whole graph: every unit, an edge for each flow of data.

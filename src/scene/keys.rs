@@ -34,6 +34,7 @@ pub(super) struct Uses {
     pub chip_runs: bool,
     pub dop_interval: u32,
     pub tri_interval: u32,
+    pub depth: rtl::Depth,
     /// The memory model is DDR SDRAM (else the ideal one).
     pub ddr: bool,
 }
@@ -100,7 +101,7 @@ fn why_unused(u: &Uses, section: &str, key: &str) -> Option<String> {
         ("timing", "dop_latency") if u.dop_interval > 1 => format!(
             "is the unfolded DOP unit's latency, not used by the folded one (dop_interval {}), whose latency is its schedule's ({} clocks): remove dop_latency, or set dop_interval = 1",
             u.dop_interval,
-            rtl::dop_fold_latency(u.dop_interval as usize)
+            u.depth.dop_fold_latency(u.dop_interval as usize)
         ),
         ("timing", "tri_latency") if u.tri_interval > 1 => format!(
             "is the unfolded TRI_UNIT's latency, not used by the folded one (tri_interval {}), whose latency is its schedule's: remove tri_latency, or set tri_interval = 1",

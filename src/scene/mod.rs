@@ -460,7 +460,13 @@ impl Outputs {
 fn tri_timing(p: &Params) -> String {
     match p.tri_interval {
         1 => format!("tri_latency {}", p.tri_latency),
-        ii => format!("tri_interval {ii} (folded TRI_UNIT, its schedule's latency)"),
+        ii => format!(
+            "tri_interval {ii} (folded TRI_UNIT, its schedule's latency{})",
+            match p.depth {
+                crate::chip::rtl::Depth::Asic => String::new(),
+                d => format!(", FP units at depth = \"{}\"", d.name()),
+            }
+        ),
     }
 }
 
@@ -618,6 +624,7 @@ impl Scene {
             architecture,
             chip_runs: outputs.run_chip(),
             dop_interval: params.dop_interval,
+            depth: params.depth,
             tri_interval: params.tri_interval,
             ddr,
         };
@@ -687,10 +694,7 @@ impl Scene {
         } else {
             (technology, clock_mhz)
         };
-        let folds = Folds {
-            tri: params.tri_interval,
-            dop: params.dop_interval,
-        };
+        let folds = Folds::of(&params);
         let clock = outputs
             .run_chip()
             .then(|| clock(&cfg, folds, preset, architecture, technology, clock_mhz))

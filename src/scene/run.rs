@@ -272,6 +272,7 @@ impl<'s> Prepared<'s> {
                     &chip.cfg,
                     s.params.dop_interval,
                     s.params.tri_interval,
+                    s.params.depth,
                 )
                 .map_or(1.0, |k| k.rtl_clocks_per_second());
                 let hours = trace.cycles as f64 / speed / 3600.0;

@@ -42,7 +42,7 @@ pub trait OnChip {
 }
 
 macro_rules! dispatch {
-    ($($(#[$doc:meta])* $kind:ident, $name:literal, $module:ident, $cfg:tt, $records:literal, $dop_ii:literal, $ii:literal, $speed:literal;)+) => {
+    ($($(#[$doc:meta])* $kind:ident, $name:literal, $module:ident, $cfg:tt, $records:literal, $dop_ii:literal, $ii:literal, $depth:ident, $speed:literal;)+) => {
         /// Builds `kind`'s rust-hdl chip with `2^N` queue entries (`NP1 = N + 1`, `NM1 = N -
         /// 1`), ready to simulate, and hands it to `f` (call on a thread with a big stack:
         /// TRI_UNIT and the k = 24 DOP unit are large).
@@ -556,7 +556,7 @@ pub fn rtl_order(
             built.join(" or "), cfg.k, cfg.format, cfg.tri_rounding
         ));
     }
-    let Some(kind) = ChipKind::of(cfg, p.dop_interval, p.tri_interval) else {
+    let Some(kind) = ChipKind::of(cfg, p.dop_interval, p.tri_interval, p.depth) else {
         let ii: Vec<String> = ChipKind::built(cfg)
             .map(|k| {
                 format!(

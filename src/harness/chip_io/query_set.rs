@@ -856,15 +856,35 @@ fn fold16(p: &Poses) -> Vec<ChipQuery> {
 }
 
 /// The k = 6 chip with both units folded, the DOP unit a pair every 6 clocks and TRI_UNIT every
-/// 32 (the chip for an LFE5U-85F): the root test (Icarus), a bunny patch at full
+/// 32 (the chip for an LFE5U-85F), at ASIC depth (`dop6tri32_*`) and FPGA depth
+/// (`dop6tri32fpga_*`): the root test (Icarus), a bunny patch at full
 /// speed whose pairs wait for both units' slots (rust-hdl), whole queries at full speed and at
 /// the reset point (Verilator).
 fn dop6tri32(p: &Poses) -> Vec<ChipQuery> {
+    let asic = [
+        "dop6tri32_apart_lifo_first",
+        "dop6tri32_patch_fifo_all",
+        "dop6tri32_sphere_lifo_prefetch",
+        "dop6tri32_patch_lifo_first",
+    ];
+    let fpga = [
+        "dop6tri32fpga_apart_lifo_first",
+        "dop6tri32fpga_patch_fifo_all",
+        "dop6tri32fpga_sphere_lifo_prefetch",
+        "dop6tri32fpga_patch_lifo_first",
+    ];
+    let mut qs = dop6tri32_on(p, ChipKind::K6E8m15Dop6Tri32, asic);
+    qs.extend(dop6tri32_on(p, ChipKind::K6E8m15Dop6Tri32Fpga, fpga));
+    qs
+}
+
+/// [`dop6tri32`]'s queries on `chip`, named `names`.
+fn dop6tri32_on(p: &Poses, chip: ChipKind, names: [&'static str; 4]) -> Vec<ChipQuery> {
     vec![
         ChipQuery {
-            chip: ChipKind::K6E8m15Dop6Tri32,
+            chip,
             ..q(
-                "dop6tri32_apart_lifo_first",
+                names[0],
                 "sphere:12",
                 Pose::new(10.0, 20.0, 30.0, 3.0, 0.1, 0.0),
                 Lifo,
@@ -874,41 +894,25 @@ fn dop6tri32(p: &Poses) -> Vec<ChipQuery> {
             )
         },
         ChipQuery {
-            chip: ChipKind::K6E8m15Dop6Tri32,
+            chip,
             prefetch: 3,
             outstanding: 4,
             issue_spacing: 1,
             credit: 24,
-            ..q(
-                "dop6tri32_patch_fifo_all",
-                "bunny-patch:12",
-                p.patch,
-                Fifo,
-                Mode::All,
-                8,
-                1,
-            )
+            ..q(names[1], "bunny-patch:12", p.patch, Fifo, Mode::All, 8, 1)
         },
         ChipQuery {
-            chip: ChipKind::K6E8m15Dop6Tri32,
+            chip,
             prefetch: 14,
             outstanding: 16,
             issue_spacing: 1,
             credit: 48,
-            ..q(
-                "dop6tri32_sphere_lifo_prefetch",
-                "sphere:320",
-                p.big_spheres,
-                Lifo,
-                Mode::All,
-                8,
-                1,
-            )
+            ..q(names[2], "sphere:320", p.big_spheres, Lifo, Mode::All, 8, 1)
         },
         ChipQuery {
-            chip: ChipKind::K6E8m15Dop6Tri32,
+            chip,
             ..q(
-                "dop6tri32_patch_lifo_first",
+                names[3],
                 "bunny-patch:300",
                 p.patch,
                 Lifo,

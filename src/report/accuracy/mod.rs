@@ -117,6 +117,7 @@ impl Plan {
                             let params = Params {
                                 tri_interval: f.tri,
                                 dop_interval: f.dop,
+                                depth: f.depth,
                                 ..params
                             };
                             params
@@ -425,10 +426,7 @@ pub fn study(
     let mut chip_of = vec![];
     for (preset, cfg, params) in &mut configs {
         let (preset, cfg) = (*preset, *cfg);
-        let folds = Folds {
-            tri: params.tri_interval,
-            dop: params.dop_interval,
-        };
+        let folds = Folds::of(params);
         let clock = Clock::of(plan.technology, &cfg, folds, preset)?;
         // the memory's nanoseconds in this configuration's clocks
         params.clock_ps = clock.ps();

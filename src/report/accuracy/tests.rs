@@ -136,14 +136,14 @@ fn merge_refuses_counts_no_study_writes() {
 #[test]
 fn folds_cost_clocks_and_nothing_else() {
     let plan = Plan {
-        folds: vec![Folds::NONE, Folds { tri: 32, dop: 6 }],
+        folds: vec![Folds::NONE, Folds::asic(32, 6)],
         ..small_date05("sphere:40")
     };
     let rows = run(&plan, load, Shard::ALL, || ()).unwrap();
     let (a, b) = (&rows[0].sums, &rows[1].sums);
     assert_eq!(
         (rows[0].folds, rows[1].folds),
-        (Folds::NONE, Folds { tri: 32, dop: 6 })
+        (Folds::NONE, Folds::asic(32, 6))
     );
     assert_eq!(
         (a.dop_tests, a.tri_tests, a.uncertain),
@@ -156,7 +156,7 @@ fn folds_cost_clocks_and_nothing_else() {
         b.cycles
     );
     let bad = Plan {
-        folds: vec![Folds { tri: 1, dop: 4 }],
+        folds: vec![Folds::asic(1, 4)],
         ..plan.clone()
     };
     assert!(run(&bad, load, Shard::ALL, || ())
@@ -251,10 +251,7 @@ fn the_default_study_runs_on_measured_chips() {
     let configs = plan.configs().unwrap();
     assert_eq!(configs.len(), 24);
     for (preset, cfg, p) in configs {
-        let folds = Folds {
-            tri: p.tri_interval,
-            dop: p.dop_interval,
-        };
+        let folds = Folds::of(&p);
         let c = Clock::of(plan.technology, &cfg, folds, preset).unwrap();
         assert_eq!(
             c.source,
