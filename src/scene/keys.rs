@@ -103,6 +103,13 @@ fn why_unused(u: &Uses, section: &str, key: &str) -> Option<String> {
             u.dop_interval,
             u.depth.dop_fold_latency(u.dop_interval as usize)
         ),
+        ("timing", "depth") if u.depth == rtl::Depth::Fpga && u.tri_interval == 1 => {
+            "= \"fpga\" cuts T.CHECK's units for the folded TRI_UNIT, not used by the unfolded one (tri_interval 1): set tri_interval to an even number of clocks from 2 to 32, or remove depth".into()
+        }
+        ("timing", "dop_latency") if u.depth == rtl::Depth::Fpga => format!(
+            "is the DOP unit's latency at ASIC depth, not used at depth = \"fpga\", where its latency is its lanes' ({} clocks unfolded): remove dop_latency, or depth",
+            u.depth.lane_latency()
+        ),
         ("timing", "tri_latency") if u.tri_interval > 1 => format!(
             "is the unfolded TRI_UNIT's latency, not used by the folded one (tri_interval {}), whose latency is its schedule's: remove tri_latency, or set tri_interval = 1",
             u.tri_interval

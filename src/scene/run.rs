@@ -701,6 +701,7 @@ mod tests {
         ("timing", "tri_latency", &["90"]),
         ("timing", "tri_fifo", &["1"]),
         ("timing", "tri_interval", &["16"]),
+        ("timing", "depth", &["\"fpga\""]),
         ("timing", "issue_spacing", &["1", "2"]),
         ("timing", "credit", &["2"]),
         ("timing", "outstanding", &["4", "1"]),

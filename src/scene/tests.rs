@@ -1,4 +1,5 @@
 use super::*;
+use crate::chip::rtl::Depth;
 
 #[test]
 fn default_scene_parses() {
@@ -460,6 +461,48 @@ fn tri_interval_key() {
         order(6, 32).unwrap().0,
         crate::chip::rtl::ChipKind::K6E8m15Dop6Tri32
     );
+    let fpga = crate::harness::chip_io::rtl_order(
+        &rtl.cfg,
+        rtl.traversal,
+        &Params {
+            dop_interval: 6,
+            tri_interval: 32,
+            depth: Depth::Fpga,
+            ..rtl.params
+        },
+    );
+    assert_eq!(
+        fpga.unwrap().0,
+        crate::chip::rtl::ChipKind::K6E8m15Dop6Tri32Fpga
+    );
+    assert!(e.contains("6 and 32 at depth = \"fpga\" (chip_e8m15_k6_dop6_tri32_fpga)"), "{e}");
+}
+
+/// `[timing] depth`: "fpga" gives the folded units their FPGA-depth latencies (the
+/// configuration line says so), needs a folded TRI_UNIT and refuses dop_latency.
+#[test]
+fn depth_key() {
+    let base = "[objects]\na = \"sphere:12\"\nb = \"sphere:12\"\n[[pose]]\nrot_deg=[0,0,0]\nt=[0,0,0]\n[outputs]\ncycles = true\n[chip]\npreset = \"rtl\"\n[timing]\n";
+    let s = Scene::parse(
+        &format!("{base}dop_interval = 6\ntri_interval = 32\ndepth = \"fpga\"\n"),
+        "s",
+    )
+    .unwrap();
+    assert_eq!(s.params.depth, Depth::Fpga);
+    assert_eq!(s.params.dop_unit_latency(), 31);
+    assert!(
+        s.configuration().contains("depth = \"fpga\""),
+        "{}",
+        s.configuration()
+    );
+    for (keys, want) in [
+        ("depth = \"fpga\"", "s:12: [timing] depth = \"fpga\" cuts T.CHECK's units for the folded TRI_UNIT"),
+        ("tri_interval = 32\ndepth = \"fpga\"\ndop_latency = 15", "s:14: [timing] dop_latency is the DOP unit's latency at ASIC depth"),
+        ("depth = \"deep\"", "unknown variant `deep`"),
+    ] {
+        let e = Scene::parse(&format!("{base}{keys}\n"), "s").unwrap_err();
+        assert!(e.contains(want), "{keys}: {e}");
+    }
 }
 
 #[test]

@@ -18,7 +18,7 @@ use crate::chip::memory::{MemClocks, Memory};
 use crate::chip::params::Params;
 use crate::chip::ports::{ChipIn, ChipOut, Clocked};
 use crate::chip::reg::{self, Mode, Order};
-use crate::chip::rtl::{self as chips, ChipKind, QUEUE_BITS};
+use crate::chip::rtl::{self as chips, ChipKind, Depth, QUEUE_BITS};
 use crate::cycle::drive::open_vcd;
 pub use crate::cycle::drive::{ChipError, ChipTrace, Drive, Reader};
 use crate::dop::tree::StoredFields;
@@ -559,8 +559,12 @@ pub fn rtl_order(
     let Some(kind) = ChipKind::of(cfg, p.dop_interval, p.tri_interval, p.depth) else {
         let ii: Vec<String> = ChipKind::built(cfg)
             .map(|k| {
+                let depth = match k.depth() {
+                    Depth::Asic => String::new(),
+                    d => format!(" at depth = \"{}\"", d.name()),
+                };
                 format!(
-                    "{} and {} ({})",
+                    "{} and {}{depth} ({})",
                     k.dop_interval(),
                     k.tri_interval(),
                     k.name()
@@ -568,9 +572,10 @@ pub fn rtl_order(
             })
             .collect();
         return Err(format!(
-            "no RTL chip of this configuration takes a DOP pair every {} clocks and a TRI_UNIT pair every {}: its chips have dop_interval and tri_interval {}: set [timing] dop_interval and tri_interval to one of them, or drop cross_check",
+            "no RTL chip of this configuration takes a DOP pair every {} clocks and a TRI_UNIT pair every {} at depth = \"{}\": its chips have dop_interval and tri_interval {}: set [timing] dop_interval, tri_interval and depth to one of them, or drop cross_check",
             p.dop_interval,
             p.tri_interval,
+            p.depth.name(),
             ii.join(" or ")
         ));
     };
