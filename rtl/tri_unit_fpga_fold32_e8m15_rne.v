@@ -286,6 +286,135 @@ module top(clock,load_en,load_addr,load_data,a_m_0$0,a_m_0$1,a_m_0$2,a_m_0$3,a_m
     reg  held_valid$d;
     wire  held_valid$q;
     reg  held_valid$clock;
+    reg  [23:0] tin$0$d;
+    wire  [23:0] tin$0$q;
+    reg  tin$0$clock;
+    reg  [23:0] tin$1$d;
+    wire  [23:0] tin$1$q;
+    reg  tin$1$clock;
+    reg  [23:0] tin$2$d;
+    wire  [23:0] tin$2$q;
+    reg  tin$2$clock;
+    reg  [23:0] tin$3$d;
+    wire  [23:0] tin$3$q;
+    reg  tin$3$clock;
+    reg  [23:0] tin$4$d;
+    wire  [23:0] tin$4$q;
+    reg  tin$4$clock;
+    reg  [23:0] tin$5$d;
+    wire  [23:0] tin$5$q;
+    reg  tin$5$clock;
+    reg  [23:0] tin$6$d;
+    wire  [23:0] tin$6$q;
+    reg  tin$6$clock;
+    reg  [23:0] tin$7$d;
+    wire  [23:0] tin$7$q;
+    reg  tin$7$clock;
+    reg  [23:0] tin$8$d;
+    wire  [23:0] tin$8$q;
+    reg  tin$8$clock;
+    reg  [23:0] tin$9$d;
+    wire  [23:0] tin$9$q;
+    reg  tin$9$clock;
+    reg  [23:0] tin$10$d;
+    wire  [23:0] tin$10$q;
+    reg  tin$10$clock;
+    reg  [23:0] tin$11$d;
+    wire  [23:0] tin$11$q;
+    reg  tin$11$clock;
+    reg  [23:0] tin$12$d;
+    wire  [23:0] tin$12$q;
+    reg  tin$12$clock;
+    reg  [23:0] tin$13$d;
+    wire  [23:0] tin$13$q;
+    reg  tin$13$clock;
+    reg  [23:0] tin$14$d;
+    wire  [23:0] tin$14$q;
+    reg  tin$14$clock;
+    reg  [23:0] tin$15$d;
+    wire  [23:0] tin$15$q;
+    reg  tin$15$clock;
+    reg  [23:0] tin$16$d;
+    wire  [23:0] tin$16$q;
+    reg  tin$16$clock;
+    reg  [23:0] tin$17$d;
+    wire  [23:0] tin$17$q;
+    reg  tin$17$clock;
+    reg  [23:0] tin$18$d;
+    wire  [23:0] tin$18$q;
+    reg  tin$18$clock;
+    reg  [23:0] tin$19$d;
+    wire  [23:0] tin$19$q;
+    reg  tin$19$clock;
+    reg  [23:0] tin$20$d;
+    wire  [23:0] tin$20$q;
+    reg  tin$20$clock;
+    reg  [23:0] tin$21$d;
+    wire  [23:0] tin$21$q;
+    reg  tin$21$clock;
+    reg  [23:0] tin$22$d;
+    wire  [23:0] tin$22$q;
+    reg  tin$22$clock;
+    reg  [23:0] tin$23$d;
+    wire  [23:0] tin$23$q;
+    reg  tin$23$clock;
+    reg  [23:0] tin$24$d;
+    wire  [23:0] tin$24$q;
+    reg  tin$24$clock;
+    reg  [23:0] tin$25$d;
+    wire  [23:0] tin$25$q;
+    reg  tin$25$clock;
+    reg  [23:0] tin$26$d;
+    wire  [23:0] tin$26$q;
+    reg  tin$26$clock;
+    reg  [23:0] tin$27$d;
+    wire  [23:0] tin$27$q;
+    reg  tin$27$clock;
+    reg  [23:0] tin$28$d;
+    wire  [23:0] tin$28$q;
+    reg  tin$28$clock;
+    reg  [23:0] tin$29$d;
+    wire  [23:0] tin$29$q;
+    reg  tin$29$clock;
+    reg  [23:0] tin$30$d;
+    wire  [23:0] tin$30$q;
+    reg  tin$30$clock;
+    reg  [23:0] tin$31$d;
+    wire  [23:0] tin$31$q;
+    reg  tin$31$clock;
+    reg  [23:0] tin$32$d;
+    wire  [23:0] tin$32$q;
+    reg  tin$32$clock;
+    reg  [23:0] tin$33$d;
+    wire  [23:0] tin$33$q;
+    reg  tin$33$clock;
+    reg  [23:0] tin$34$d;
+    wire  [23:0] tin$34$q;
+    reg  tin$34$clock;
+    reg  [23:0] tin$35$d;
+    wire  [23:0] tin$35$q;
+    reg  tin$35$clock;
+    reg  [23:0] tin$36$d;
+    wire  [23:0] tin$36$q;
+    reg  tin$36$clock;
+    reg  [23:0] tin$37$d;
+    wire  [23:0] tin$37$q;
+    reg  tin$37$clock;
+    reg  tin_bits$0$d;
+    wire  tin_bits$0$q;
+    reg  tin_bits$0$clock;
+    reg  tin_bits$1$d;
+    wire  tin_bits$1$q;
+    reg  tin_bits$1$clock;
+    reg  [31:0] tin_tag$0$d;
+    wire  [31:0] tin_tag$0$q;
+    reg  tin_tag$0$clock;
+    reg  flags$0$d;
+    wire  flags$0$q;
+    reg  flags$0$clock;
+    reg  flags$1$d;
+    wire  flags$1$q;
+    reg  flags$1$clock;
     reg  tc$clock;
     reg  [23:0] tc$m_0$0;
     reg  [23:0] tc$m_0$1;
@@ -734,6 +863,221 @@ module top(clock,load_en,load_addr,load_data,a_m_0$0,a_m_0$1,a_m_0$2,a_m_0$3,a_m
         .q(held_valid$q),
         .clock(held_valid$clock)
     );
+    top$frame$0 tin$0(
+        .d(tin$0$d),
+        .q(tin$0$q),
+        .clock(tin$0$clock)
+    );
+    top$frame$0 tin$1(
+        .d(tin$1$d),
+        .q(tin$1$q),
+        .clock(tin$1$clock)
+    );
+    top$frame$0 tin$2(
+        .d(tin$2$d),
+        .q(tin$2$q),
+        .clock(tin$2$clock)
+    );
+    top$frame$0 tin$3(
+        .d(tin$3$d),
+        .q(tin$3$q),
+        .clock(tin$3$clock)
+    );
+    top$frame$0 tin$4(
+        .d(tin$4$d),
+        .q(tin$4$q),
+        .clock(tin$4$clock)
+    );
+    top$frame$0 tin$5(
+        .d(tin$5$d),
+        .q(tin$5$q),
+        .clock(tin$5$clock)
+    );
+    top$frame$0 tin$6(
+        .d(tin$6$d),
+        .q(tin$6$q),
+        .clock(tin$6$clock)
+    );
+    top$frame$0 tin$7(
+        .d(tin$7$d),
+        .q(tin$7$q),
+        .clock(tin$7$clock)
+    );
+    top$frame$0 tin$8(
+        .d(tin$8$d),
+        .q(tin$8$q),
+        .clock(tin$8$clock)
+    );
+    top$frame$0 tin$9(
+        .d(tin$9$d),
+        .q(tin$9$q),
+        .clock(tin$9$clock)
+    );
+    top$frame$0 tin$10(
+        .d(tin$10$d),
+        .q(tin$10$q),
+        .clock(tin$10$clock)
+    );
+    top$frame$0 tin$11(
+        .d(tin$11$d),
+        .q(tin$11$q),
+        .clock(tin$11$clock)
+    );
+    top$frame$0 tin$12(
+        .d(tin$12$d),
+        .q(tin$12$q),
+        .clock(tin$12$clock)
+    );
+    top$frame$0 tin$13(
+        .d(tin$13$d),
+        .q(tin$13$q),
+        .clock(tin$13$clock)
+    );
+    top$frame$0 tin$14(
+        .d(tin$14$d),
+        .q(tin$14$q),
+        .clock(tin$14$clock)
+    );
+    top$frame$0 tin$15(
+        .d(tin$15$d),
+        .q(tin$15$q),
+        .clock(tin$15$clock)
+    );
+    top$frame$0 tin$16(
+        .d(tin$16$d),
+        .q(tin$16$q),
+        .clock(tin$16$clock)
+    );
+    top$frame$0 tin$17(
+        .d(tin$17$d),
+        .q(tin$17$q),
+        .clock(tin$17$clock)
+    );
+    top$frame$0 tin$18(
+        .d(tin$18$d),
+        .q(tin$18$q),
+        .clock(tin$18$clock)
+    );
+    top$frame$0 tin$19(
+        .d(tin$19$d),
+        .q(tin$19$q),
+        .clock(tin$19$clock)
+    );
+    top$frame$0 tin$20(
+        .d(tin$20$d),
+        .q(tin$20$q),
+        .clock(tin$20$clock)
+    );
+    top$frame$0 tin$21(
+        .d(tin$21$d),
+        .q(tin$21$q),
+        .clock(tin$21$clock)
+    );
+    top$frame$0 tin$22(
+        .d(tin$22$d),
+        .q(tin$22$q),
+        .clock(tin$22$clock)
+    );
+    top$frame$0 tin$23(
+        .d(tin$23$d),
+        .q(tin$23$q),
+        .clock(tin$23$clock)
+    );
+    top$frame$0 tin$24(
+        .d(tin$24$d),
+        .q(tin$24$q),
+        .clock(tin$24$clock)
+    );
+    top$frame$0 tin$25(
+        .d(tin$25$d),
+        .q(tin$25$q),
+        .clock(tin$25$clock)
+    );
+    top$frame$0 tin$26(
+        .d(tin$26$d),
+        .q(tin$26$q),
+        .clock(tin$26$clock)
+    );
+    top$frame$0 tin$27(
+        .d(tin$27$d),
+        .q(tin$27$q),
+        .clock(tin$27$clock)
+    );
+    top$frame$0 tin$28(
+        .d(tin$28$d),
+        .q(tin$28$q),
+        .clock(tin$28$clock)
+    );
+    top$frame$0 tin$29(
+        .d(tin$29$d),
+        .q(tin$29$q),
+        .clock(tin$29$clock)
+    );
+    top$frame$0 tin$30(
+        .d(tin$30$d),
+        .q(tin$30$q),
+        .clock(tin$30$clock)
+    );
+    top$frame$0 tin$31(
+        .d(tin$31$d),
+        .q(tin$31$q),
+        .clock(tin$31$clock)
+    );
+    top$frame$0 tin$32(
+        .d(tin$32$d),
+        .q(tin$32$q),
+        .clock(tin$32$clock)
+    );
+    top$frame$0 tin$33(
+        .d(tin$33$d),
+        .q(tin$33$q),
+        .clock(tin$33$clock)
+    );
+    top$frame$0 tin$34(
+        .d(tin$34$d),
+        .q(tin$34$q),
+        .clock(tin$34$clock)
+    );
+    top$frame$0 tin$35(
+        .d(tin$35$d),
+        .q(tin$35$q),
+        .clock(tin$35$clock)
+    );
+    top$frame$0 tin$36(
+        .d(tin$36$d),
+        .q(tin$36$q),
+        .clock(tin$36$clock)
+    );
+    top$frame$0 tin$37(
+        .d(tin$37$d),
+        .q(tin$37$q),
+        .clock(tin$37$clock)
+    );
+    top$a_deg tin_bits$0(
+        .d(tin_bits$0$d),
+        .q(tin_bits$0$q),
+        .clock(tin_bits$0$clock)
+    );
+    top$a_deg tin_bits$1(
+        .d(tin_bits$1$d),
+        .q(tin_bits$1$q),
+        .clock(tin_bits$1$clock)
+    );
+    top$held_tag tin_tag$0(
+        .d(tin_tag$0$d),
+        .q(tin_tag$0$q),
+        .clock(tin_tag$0$clock)
+    );
+    top$a_deg flags$0(
+        .d(flags$0$d),
+        .q(flags$0$q),
+        .clock(flags$0$clock)
+    );
+    top$a_deg flags$1(
+        .d(flags$1$d),
+        .q(flags$1$q),
+        .clock(flags$1$clock)
+    );
     top$tc tc(
         .clock(tc$clock),
         .m_0$0(tc$m_0$0),
@@ -835,6 +1179,10 @@ module top(clock,load_en,load_addr,load_data,a_m_0$0,a_m_0$1,a_m_0$2,a_m_0$3,a_m
       run$d = run$q | (in_valid && counter$q == 8'd0 && count$q != 9'd256);
       counter$clock = clock;
       counter$d = (!(run$q | (in_valid && counter$q == 8'd0 && count$q != 9'd256)) || counter$q == 8'd31) ? 8'd0 : counter$q + 8'd1;
+      flags$0$clock = clock;
+      flags$0$d = counter$d != 8'd0;
+      flags$1$clock = clock;
+      flags$1$d = counter$d == 8'd16;
       frame$0$clock = clock;
       frame$0$d = (load_en && load_addr == 5'd0) ? load_data : frame$0$q;
       frame$1$clock = clock;
@@ -896,137 +1244,219 @@ module top(clock,load_en,load_addr,load_data,a_m_0$0,a_m_0$1,a_m_0$2,a_m_0$3,a_m
       frame$29$clock = clock;
       frame$29$d = (load_en && load_addr == 5'd30) ? load_data : frame$29$q;
       held$0$clock = clock;
-      held$0$d = (counter$q == 8'd0) ? a_m_0$0 : held$0$q;
-      tc$m_0$0 = (counter$q == 8'd16) ? held$0$q : b_m_0$0;
+      held$0$d = !flags$0$q ? a_m_0$0 : held$0$q;
+      tin$0$clock = clock;
+      tin$0$d = flags$1$q ? held$0$q : b_m_0$0;
+      tc$m_0$0 = tin$0$q;
       held$1$clock = clock;
-      held$1$d = (counter$q == 8'd0) ? a_m_0$1 : held$1$q;
-      tc$m_0$1 = (counter$q == 8'd16) ? held$1$q : b_m_0$1;
+      held$1$d = !flags$0$q ? a_m_0$1 : held$1$q;
+      tin$1$clock = clock;
+      tin$1$d = flags$1$q ? held$1$q : b_m_0$1;
+      tc$m_0$1 = tin$1$q;
       held$2$clock = clock;
-      held$2$d = (counter$q == 8'd0) ? a_m_0$2 : held$2$q;
-      tc$m_0$2 = (counter$q == 8'd16) ? held$2$q : b_m_0$2;
+      held$2$d = !flags$0$q ? a_m_0$2 : held$2$q;
+      tin$2$clock = clock;
+      tin$2$d = flags$1$q ? held$2$q : b_m_0$2;
+      tc$m_0$2 = tin$2$q;
       held$3$clock = clock;
-      held$3$d = (counter$q == 8'd0) ? a_m_0$3 : held$3$q;
-      tc$m_0$3 = (counter$q == 8'd16) ? held$3$q : b_m_0$3;
+      held$3$d = !flags$0$q ? a_m_0$3 : held$3$q;
+      tin$3$clock = clock;
+      tin$3$d = flags$1$q ? held$3$q : b_m_0$3;
+      tc$m_0$3 = tin$3$q;
       held$4$clock = clock;
-      held$4$d = (counter$q == 8'd0) ? a_m_1$0 : held$4$q;
-      tc$m_1$0 = (counter$q == 8'd16) ? held$4$q : b_m_1$0;
+      held$4$d = !flags$0$q ? a_m_1$0 : held$4$q;
+      tin$4$clock = clock;
+      tin$4$d = flags$1$q ? held$4$q : b_m_1$0;
+      tc$m_1$0 = tin$4$q;
       held$5$clock = clock;
-      held$5$d = (counter$q == 8'd0) ? a_m_1$1 : held$5$q;
-      tc$m_1$1 = (counter$q == 8'd16) ? held$5$q : b_m_1$1;
+      held$5$d = !flags$0$q ? a_m_1$1 : held$5$q;
+      tin$5$clock = clock;
+      tin$5$d = flags$1$q ? held$5$q : b_m_1$1;
+      tc$m_1$1 = tin$5$q;
       held$6$clock = clock;
-      held$6$d = (counter$q == 8'd0) ? a_m_1$2 : held$6$q;
-      tc$m_1$2 = (counter$q == 8'd16) ? held$6$q : b_m_1$2;
+      held$6$d = !flags$0$q ? a_m_1$2 : held$6$q;
+      tin$6$clock = clock;
+      tin$6$d = flags$1$q ? held$6$q : b_m_1$2;
+      tc$m_1$2 = tin$6$q;
       held$7$clock = clock;
-      held$7$d = (counter$q == 8'd0) ? a_m_1$3 : held$7$q;
-      tc$m_1$3 = (counter$q == 8'd16) ? held$7$q : b_m_1$3;
+      held$7$d = !flags$0$q ? a_m_1$3 : held$7$q;
+      tin$7$clock = clock;
+      tin$7$d = flags$1$q ? held$7$q : b_m_1$3;
+      tc$m_1$3 = tin$7$q;
       held$8$clock = clock;
-      held$8$d = (counter$q == 8'd0) ? a_m_2$0 : held$8$q;
-      tc$m_2$0 = (counter$q == 8'd16) ? held$8$q : b_m_2$0;
+      held$8$d = !flags$0$q ? a_m_2$0 : held$8$q;
+      tin$8$clock = clock;
+      tin$8$d = flags$1$q ? held$8$q : b_m_2$0;
+      tc$m_2$0 = tin$8$q;
       held$9$clock = clock;
-      held$9$d = (counter$q == 8'd0) ? a_m_2$1 : held$9$q;
-      tc$m_2$1 = (counter$q == 8'd16) ? held$9$q : b_m_2$1;
+      held$9$d = !flags$0$q ? a_m_2$1 : held$9$q;
+      tin$9$clock = clock;
+      tin$9$d = flags$1$q ? held$9$q : b_m_2$1;
+      tc$m_2$1 = tin$9$q;
       held$10$clock = clock;
-      held$10$d = (counter$q == 8'd0) ? a_m_2$2 : held$10$q;
-      tc$m_2$2 = (counter$q == 8'd16) ? held$10$q : b_m_2$2;
+      held$10$d = !flags$0$q ? a_m_2$2 : held$10$q;
+      tin$10$clock = clock;
+      tin$10$d = flags$1$q ? held$10$q : b_m_2$2;
+      tc$m_2$2 = tin$10$q;
       held$11$clock = clock;
-      held$11$d = (counter$q == 8'd0) ? a_m_2$3 : held$11$q;
-      tc$m_2$3 = (counter$q == 8'd16) ? held$11$q : b_m_2$3;
+      held$11$d = !flags$0$q ? a_m_2$3 : held$11$q;
+      tin$11$clock = clock;
+      tin$11$d = flags$1$q ? held$11$q : b_m_2$3;
+      tc$m_2$3 = tin$11$q;
       held$12$clock = clock;
-      held$12$d = (counter$q == 8'd0) ? a_alpha_m : held$12$q;
-      tc$alpha_m = (counter$q == 8'd16) ? held$12$q : b_alpha_m;
+      held$12$d = !flags$0$q ? a_alpha_m : held$12$q;
+      tin$12$clock = clock;
+      tin$12$d = flags$1$q ? held$12$q : b_alpha_m;
+      tc$alpha_m = tin$12$q;
       held$13$clock = clock;
-      held$13$d = (counter$q == 8'd0) ? a_alpha_f : held$13$q;
-      tc$alpha_f = (counter$q == 8'd16) ? held$13$q : b_alpha_f;
+      held$13$d = !flags$0$q ? a_alpha_f : held$13$q;
+      tin$13$clock = clock;
+      tin$13$d = flags$1$q ? held$13$q : b_alpha_f;
+      tc$alpha_f = tin$13$q;
       held$14$clock = clock;
-      held$14$d = (counter$q == 8'd0) ? frame$15$q : held$14$q;
-      tc$f_0$0 = (counter$q == 8'd16) ? held$14$q : frame$0$q;
+      held$14$d = !flags$0$q ? frame$15$q : held$14$q;
+      tin$14$clock = clock;
+      tin$14$d = flags$1$q ? held$14$q : frame$0$q;
+      tc$f_0$0 = tin$14$q;
       held$15$clock = clock;
-      held$15$d = (counter$q == 8'd0) ? frame$16$q : held$15$q;
-      tc$f_0$1 = (counter$q == 8'd16) ? held$15$q : frame$1$q;
+      held$15$d = !flags$0$q ? frame$16$q : held$15$q;
+      tin$15$clock = clock;
+      tin$15$d = flags$1$q ? held$15$q : frame$1$q;
+      tc$f_0$1 = tin$15$q;
       held$16$clock = clock;
-      held$16$d = (counter$q == 8'd0) ? frame$17$q : held$16$q;
-      tc$f_0$2 = (counter$q == 8'd16) ? held$16$q : frame$2$q;
+      held$16$d = !flags$0$q ? frame$17$q : held$16$q;
+      tin$16$clock = clock;
+      tin$16$d = flags$1$q ? held$16$q : frame$2$q;
+      tc$f_0$2 = tin$16$q;
       held$17$clock = clock;
-      held$17$d = (counter$q == 8'd0) ? frame$18$q : held$17$q;
-      tc$f_0$3 = (counter$q == 8'd16) ? held$17$q : frame$3$q;
+      held$17$d = !flags$0$q ? frame$18$q : held$17$q;
+      tin$17$clock = clock;
+      tin$17$d = flags$1$q ? held$17$q : frame$3$q;
+      tc$f_0$3 = tin$17$q;
       held$18$clock = clock;
-      held$18$d = (counter$q == 8'd0) ? frame$19$q : held$18$q;
-      tc$f_1$0 = (counter$q == 8'd16) ? held$18$q : frame$4$q;
+      held$18$d = !flags$0$q ? frame$19$q : held$18$q;
+      tin$18$clock = clock;
+      tin$18$d = flags$1$q ? held$18$q : frame$4$q;
+      tc$f_1$0 = tin$18$q;
       held$19$clock = clock;
-      held$19$d = (counter$q == 8'd0) ? frame$20$q : held$19$q;
-      tc$f_1$1 = (counter$q == 8'd16) ? held$19$q : frame$5$q;
+      held$19$d = !flags$0$q ? frame$20$q : held$19$q;
+      tin$19$clock = clock;
+      tin$19$d = flags$1$q ? held$19$q : frame$5$q;
+      tc$f_1$1 = tin$19$q;
       held$20$clock = clock;
-      held$20$d = (counter$q == 8'd0) ? frame$21$q : held$20$q;
-      tc$f_1$2 = (counter$q == 8'd16) ? held$20$q : frame$6$q;
+      held$20$d = !flags$0$q ? frame$21$q : held$20$q;
+      tin$20$clock = clock;
+      tin$20$d = flags$1$q ? held$20$q : frame$6$q;
+      tc$f_1$2 = tin$20$q;
       held$21$clock = clock;
-      held$21$d = (counter$q == 8'd0) ? frame$22$q : held$21$q;
-      tc$f_1$3 = (counter$q == 8'd16) ? held$21$q : frame$7$q;
+      held$21$d = !flags$0$q ? frame$22$q : held$21$q;
+      tin$21$clock = clock;
+      tin$21$d = flags$1$q ? held$21$q : frame$7$q;
+      tc$f_1$3 = tin$21$q;
       held$22$clock = clock;
-      held$22$d = (counter$q == 8'd0) ? frame$23$q : held$22$q;
-      tc$f_2$0 = (counter$q == 8'd16) ? held$22$q : frame$8$q;
+      held$22$d = !flags$0$q ? frame$23$q : held$22$q;
+      tin$22$clock = clock;
+      tin$22$d = flags$1$q ? held$22$q : frame$8$q;
+      tc$f_2$0 = tin$22$q;
       held$23$clock = clock;
-      held$23$d = (counter$q == 8'd0) ? frame$24$q : held$23$q;
-      tc$f_2$1 = (counter$q == 8'd16) ? held$23$q : frame$9$q;
+      held$23$d = !flags$0$q ? frame$24$q : held$23$q;
+      tin$23$clock = clock;
+      tin$23$d = flags$1$q ? held$23$q : frame$9$q;
+      tc$f_2$1 = tin$23$q;
       held$24$clock = clock;
-      held$24$d = (counter$q == 8'd0) ? frame$25$q : held$24$q;
-      tc$f_2$2 = (counter$q == 8'd16) ? held$24$q : frame$10$q;
+      held$24$d = !flags$0$q ? frame$25$q : held$24$q;
+      tin$24$clock = clock;
+      tin$24$d = flags$1$q ? held$24$q : frame$10$q;
+      tc$f_2$2 = tin$24$q;
       held$25$clock = clock;
-      held$25$d = (counter$q == 8'd0) ? frame$26$q : held$25$q;
-      tc$f_2$3 = (counter$q == 8'd16) ? held$25$q : frame$11$q;
+      held$25$d = !flags$0$q ? frame$26$q : held$25$q;
+      tin$25$clock = clock;
+      tin$25$d = flags$1$q ? held$25$q : frame$11$q;
+      tc$f_2$3 = tin$25$q;
       held$26$clock = clock;
-      held$26$d = (counter$q == 8'd0) ? frame$27$q : held$26$q;
-      tc$beta_m = (counter$q == 8'd16) ? held$26$q : frame$12$q;
+      held$26$d = !flags$0$q ? frame$27$q : held$26$q;
+      tin$26$clock = clock;
+      tin$26$d = flags$1$q ? held$26$q : frame$12$q;
+      tc$beta_m = tin$26$q;
       held$27$clock = clock;
-      held$27$d = (counter$q == 8'd0) ? frame$28$q : held$27$q;
-      tc$beta_f = (counter$q == 8'd16) ? held$27$q : frame$13$q;
+      held$27$d = !flags$0$q ? frame$28$q : held$27$q;
+      tin$27$clock = clock;
+      tin$27$d = flags$1$q ? held$27$q : frame$13$q;
+      tc$beta_f = tin$27$q;
       held$28$clock = clock;
-      held$28$d = (counter$q == 8'd0) ? frame$29$q : held$28$q;
-      tc$scale = (counter$q == 8'd16) ? held$28$q : frame$14$q;
+      held$28$d = !flags$0$q ? frame$29$q : held$28$q;
+      tin$28$clock = clock;
+      tin$28$d = flags$1$q ? held$28$q : frame$14$q;
+      tc$scale = tin$28$q;
       held$29$clock = clock;
-      held$29$d = (counter$q == 8'd0) ? b_v_x$0 : held$29$q;
-      tc$v_x$0 = (counter$q == 8'd16) ? held$29$q : a_v_x$0;
+      held$29$d = !flags$0$q ? b_v_x$0 : held$29$q;
+      tin$29$clock = clock;
+      tin$29$d = flags$1$q ? held$29$q : a_v_x$0;
+      tc$v_x$0 = tin$29$q;
       held$30$clock = clock;
-      held$30$d = (counter$q == 8'd0) ? b_v_y$0 : held$30$q;
-      tc$v_y$0 = (counter$q == 8'd16) ? held$30$q : a_v_y$0;
+      held$30$d = !flags$0$q ? b_v_y$0 : held$30$q;
+      tin$30$clock = clock;
+      tin$30$d = flags$1$q ? held$30$q : a_v_y$0;
+      tc$v_y$0 = tin$30$q;
       held$31$clock = clock;
-      held$31$d = (counter$q == 8'd0) ? b_v_z$0 : held$31$q;
-      tc$v_z$0 = (counter$q == 8'd16) ? held$31$q : a_v_z$0;
+      held$31$d = !flags$0$q ? b_v_z$0 : held$31$q;
+      tin$31$clock = clock;
+      tin$31$d = flags$1$q ? held$31$q : a_v_z$0;
+      tc$v_z$0 = tin$31$q;
       held$32$clock = clock;
-      held$32$d = (counter$q == 8'd0) ? b_v_x$1 : held$32$q;
-      tc$v_x$1 = (counter$q == 8'd16) ? held$32$q : a_v_x$1;
+      held$32$d = !flags$0$q ? b_v_x$1 : held$32$q;
+      tin$32$clock = clock;
+      tin$32$d = flags$1$q ? held$32$q : a_v_x$1;
+      tc$v_x$1 = tin$32$q;
       held$33$clock = clock;
-      held$33$d = (counter$q == 8'd0) ? b_v_y$1 : held$33$q;
-      tc$v_y$1 = (counter$q == 8'd16) ? held$33$q : a_v_y$1;
+      held$33$d = !flags$0$q ? b_v_y$1 : held$33$q;
+      tin$33$clock = clock;
+      tin$33$d = flags$1$q ? held$33$q : a_v_y$1;
+      tc$v_y$1 = tin$33$q;
       held$34$clock = clock;
-      held$34$d = (counter$q == 8'd0) ? b_v_z$1 : held$34$q;
-      tc$v_z$1 = (counter$q == 8'd16) ? held$34$q : a_v_z$1;
+      held$34$d = !flags$0$q ? b_v_z$1 : held$34$q;
+      tin$34$clock = clock;
+      tin$34$d = flags$1$q ? held$34$q : a_v_z$1;
+      tc$v_z$1 = tin$34$q;
       held$35$clock = clock;
-      held$35$d = (counter$q == 8'd0) ? b_v_x$2 : held$35$q;
-      tc$v_x$2 = (counter$q == 8'd16) ? held$35$q : a_v_x$2;
+      held$35$d = !flags$0$q ? b_v_x$2 : held$35$q;
+      tin$35$clock = clock;
+      tin$35$d = flags$1$q ? held$35$q : a_v_x$2;
+      tc$v_x$2 = tin$35$q;
       held$36$clock = clock;
-      held$36$d = (counter$q == 8'd0) ? b_v_y$2 : held$36$q;
-      tc$v_y$2 = (counter$q == 8'd16) ? held$36$q : a_v_y$2;
+      held$36$d = !flags$0$q ? b_v_y$2 : held$36$q;
+      tin$36$clock = clock;
+      tin$36$d = flags$1$q ? held$36$q : a_v_y$2;
+      tc$v_y$2 = tin$36$q;
       held$37$clock = clock;
-      held$37$d = (counter$q == 8'd0) ? b_v_z$2 : held$37$q;
-      tc$v_z$2 = (counter$q == 8'd16) ? held$37$q : a_v_z$2;
+      held$37$d = !flags$0$q ? b_v_z$2 : held$37$q;
+      tin$37$clock = clock;
+      tin$37$d = flags$1$q ? held$37$q : a_v_z$2;
+      tc$v_z$2 = tin$37$q;
       held_exact$clock = clock;
-      held_exact$d = (counter$q == 8'd0) ? b_v_exact : held_exact$q;
+      held_exact$d = !flags$0$q ? b_v_exact : held_exact$q;
       held_tag$clock = clock;
-      held_tag$d = (counter$q == 8'd0) ? tag : held_tag$q;
+      held_tag$d = !flags$0$q ? tag : held_tag$q;
       held_valid$clock = clock;
-      held_valid$d = (counter$q == 8'd0) ? (in_valid && counter$q == 8'd0 && count$q != 9'd256) : held_valid$q;
+      held_valid$d = !flags$0$q ? (in_valid && counter$q == 8'd0 && count$q != 9'd256) : held_valid$q;
       tc$clock = clock;
-      tc$v_exact = (counter$q == 8'd16) ? held_exact$q : a_v_exact;
-      tc$tag = (counter$q == 8'd16) ? held_tag$q : {30'd0, a_degenerate, b_degenerate};
-      tc$valid_in = (counter$q == 8'd16) ? held_valid$q : (in_valid && counter$q == 8'd0 && count$q != 9'd256);
+      tin_bits$0$clock = clock;
+      tin_bits$0$d = flags$1$q ? held_exact$q : a_v_exact;
+      tc$v_exact = tin_bits$0$q;
+      tin_tag$0$clock = clock;
+      tin_tag$0$d = flags$1$q ? held_tag$q : {30'd0, a_degenerate, b_degenerate};
+      tc$tag = tin_tag$0$q;
+      tin_bits$1$clock = clock;
+      tin_bits$1$d = flags$1$q ? held_valid$q : (in_valid && counter$q == 8'd0 && count$q != 9'd256);
+      tc$valid_in = tin_bits$1$q;
       ab_t$clock = clock;
-      ab_t$d = (tc$valid_out && counter$q == 8'd20) ? (tc$hit & !tc$tag_out[0]) : ab_t$q;
+      ab_t$d = (tc$valid_out && counter$q == 8'd21) ? (tc$hit & !tc$tag_out[0]) : ab_t$q;
       ab_f$clock = clock;
-      ab_f$d = (tc$valid_out && counter$q == 8'd20) ? (tc$miss & !tc$tag_out[0]) : ab_f$q;
+      ab_f$d = (tc$valid_out && counter$q == 8'd21) ? (tc$miss & !tc$tag_out[0]) : ab_f$q;
       a_deg$clock = clock;
-      a_deg$d = (tc$valid_out && counter$q == 8'd20) ? (tc$tag_out[1]) : a_deg$q;
+      a_deg$d = (tc$valid_out && counter$q == 8'd21) ? (tc$tag_out[1]) : a_deg$q;
       fifo$clock = clock;
-      fifo$write = tc$valid_out && counter$q == 8'd4;
+      fifo$write = tc$valid_out && counter$q == 8'd5;
       fifo$data_in = {tc$tag_out, (ab_t$q | (tc$hit & !a_deg$q)), !(ab_t$q | (tc$hit & !a_deg$q)) & !(ab_f$q & tc$miss & !a_deg$q)};
       fifo$read = (out_ready && !fifo$empty);
       count$clock = clock;
@@ -4205,6 +4635,120 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
     reg  [7:0] cnt$53$d;
     wire  [7:0] cnt$53$q;
     reg  cnt$53$clock;
+    reg  [7:0] cnt$54$d;
+    wire  [7:0] cnt$54$q;
+    reg  cnt$54$clock;
+    reg  [7:0] cnt$55$d;
+    wire  [7:0] cnt$55$q;
+    reg  cnt$55$clock;
+    reg  [7:0] cnt$56$d;
+    wire  [7:0] cnt$56$q;
+    reg  cnt$56$clock;
+    reg  [7:0] cnt$57$d;
+    wire  [7:0] cnt$57$q;
+    reg  cnt$57$clock;
+    reg  [7:0] cnt$58$d;
+    wire  [7:0] cnt$58$q;
+    reg  cnt$58$clock;
+    reg  [7:0] cnt$59$d;
+    wire  [7:0] cnt$59$q;
+    reg  cnt$59$clock;
+    reg  [7:0] cnt$60$d;
+    wire  [7:0] cnt$60$q;
+    reg  cnt$60$clock;
+    reg  [7:0] cnt$61$d;
+    wire  [7:0] cnt$61$q;
+    reg  cnt$61$clock;
+    reg  [7:0] cnt$62$d;
+    wire  [7:0] cnt$62$q;
+    reg  cnt$62$clock;
+    reg  [7:0] cnt$63$d;
+    wire  [7:0] cnt$63$q;
+    reg  cnt$63$clock;
+    reg  [7:0] cnt$64$d;
+    wire  [7:0] cnt$64$q;
+    reg  cnt$64$clock;
+    reg  [7:0] cnt$65$d;
+    wire  [7:0] cnt$65$q;
+    reg  cnt$65$clock;
+    reg  [7:0] cnt$66$d;
+    wire  [7:0] cnt$66$q;
+    reg  cnt$66$clock;
+    reg  [7:0] cnt$67$d;
+    wire  [7:0] cnt$67$q;
+    reg  cnt$67$clock;
+    reg  [7:0] cnt$68$d;
+    wire  [7:0] cnt$68$q;
+    reg  cnt$68$clock;
+    reg  [7:0] cnt$69$d;
+    wire  [7:0] cnt$69$q;
+    reg  cnt$69$clock;
+    reg  [7:0] cnt$70$d;
+    wire  [7:0] cnt$70$q;
+    reg  cnt$70$clock;
+    reg  [7:0] cnt$71$d;
+    wire  [7:0] cnt$71$q;
+    reg  cnt$71$clock;
+    reg  [7:0] cnt$72$d;
+    wire  [7:0] cnt$72$q;
+    reg  cnt$72$clock;
+    reg  [7:0] cnt$73$d;
+    wire  [7:0] cnt$73$q;
+    reg  cnt$73$clock;
+    reg  [7:0] cnt$74$d;
+    wire  [7:0] cnt$74$q;
+    reg  cnt$74$clock;
+    reg  [7:0] cnt$75$d;
+    wire  [7:0] cnt$75$q;
+    reg  cnt$75$clock;
+    reg  [7:0] cnt$76$d;
+    wire  [7:0] cnt$76$q;
+    reg  cnt$76$clock;
+    reg  [7:0] cnt$77$d;
+    wire  [7:0] cnt$77$q;
+    reg  cnt$77$clock;
+    reg  [7:0] cnt$78$d;
+    wire  [7:0] cnt$78$q;
+    reg  cnt$78$clock;
+    reg  [7:0] cnt$79$d;
+    wire  [7:0] cnt$79$q;
+    reg  cnt$79$clock;
+    reg  [7:0] cnt$80$d;
+    wire  [7:0] cnt$80$q;
+    reg  cnt$80$clock;
+    reg  [7:0] cnt$81$d;
+    wire  [7:0] cnt$81$q;
+    reg  cnt$81$clock;
+    reg  [7:0] cnt$82$d;
+    wire  [7:0] cnt$82$q;
+    reg  cnt$82$clock;
+    reg  [7:0] cnt$83$d;
+    wire  [7:0] cnt$83$q;
+    reg  cnt$83$clock;
+    reg  [7:0] cnt$84$d;
+    wire  [7:0] cnt$84$q;
+    reg  cnt$84$clock;
+    reg  [7:0] cnt$85$d;
+    wire  [7:0] cnt$85$q;
+    reg  cnt$85$clock;
+    reg  [7:0] cnt$86$d;
+    wire  [7:0] cnt$86$q;
+    reg  cnt$86$clock;
+    reg  [7:0] cnt$87$d;
+    wire  [7:0] cnt$87$q;
+    reg  cnt$87$clock;
+    reg  [7:0] cnt$88$d;
+    wire  [7:0] cnt$88$q;
+    reg  cnt$88$clock;
+    reg  [7:0] cnt$89$d;
+    wire  [7:0] cnt$89$q;
+    reg  cnt$89$clock;
+    reg  [7:0] cnt$90$d;
+    wire  [7:0] cnt$90$q;
+    reg  cnt$90$clock;
+    reg  [7:0] cnt$91$d;
+    wire  [7:0] cnt$91$q;
+    reg  cnt$91$clock;
     reg  [23:0] op_a$0$d;
     wire  [23:0] op_a$0$q;
     reg  op_a$0$clock;
@@ -9169,6 +9713,196 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
         .q(cnt$53$q),
         .clock(cnt$53$clock)
     );
+    top$tc$cnt$0 cnt$54(
+        .d(cnt$54$d),
+        .q(cnt$54$q),
+        .clock(cnt$54$clock)
+    );
+    top$tc$cnt$0 cnt$55(
+        .d(cnt$55$d),
+        .q(cnt$55$q),
+        .clock(cnt$55$clock)
+    );
+    top$tc$cnt$0 cnt$56(
+        .d(cnt$56$d),
+        .q(cnt$56$q),
+        .clock(cnt$56$clock)
+    );
+    top$tc$cnt$0 cnt$57(
+        .d(cnt$57$d),
+        .q(cnt$57$q),
+        .clock(cnt$57$clock)
+    );
+    top$tc$cnt$0 cnt$58(
+        .d(cnt$58$d),
+        .q(cnt$58$q),
+        .clock(cnt$58$clock)
+    );
+    top$tc$cnt$0 cnt$59(
+        .d(cnt$59$d),
+        .q(cnt$59$q),
+        .clock(cnt$59$clock)
+    );
+    top$tc$cnt$0 cnt$60(
+        .d(cnt$60$d),
+        .q(cnt$60$q),
+        .clock(cnt$60$clock)
+    );
+    top$tc$cnt$0 cnt$61(
+        .d(cnt$61$d),
+        .q(cnt$61$q),
+        .clock(cnt$61$clock)
+    );
+    top$tc$cnt$0 cnt$62(
+        .d(cnt$62$d),
+        .q(cnt$62$q),
+        .clock(cnt$62$clock)
+    );
+    top$tc$cnt$0 cnt$63(
+        .d(cnt$63$d),
+        .q(cnt$63$q),
+        .clock(cnt$63$clock)
+    );
+    top$tc$cnt$0 cnt$64(
+        .d(cnt$64$d),
+        .q(cnt$64$q),
+        .clock(cnt$64$clock)
+    );
+    top$tc$cnt$0 cnt$65(
+        .d(cnt$65$d),
+        .q(cnt$65$q),
+        .clock(cnt$65$clock)
+    );
+    top$tc$cnt$0 cnt$66(
+        .d(cnt$66$d),
+        .q(cnt$66$q),
+        .clock(cnt$66$clock)
+    );
+    top$tc$cnt$0 cnt$67(
+        .d(cnt$67$d),
+        .q(cnt$67$q),
+        .clock(cnt$67$clock)
+    );
+    top$tc$cnt$0 cnt$68(
+        .d(cnt$68$d),
+        .q(cnt$68$q),
+        .clock(cnt$68$clock)
+    );
+    top$tc$cnt$0 cnt$69(
+        .d(cnt$69$d),
+        .q(cnt$69$q),
+        .clock(cnt$69$clock)
+    );
+    top$tc$cnt$0 cnt$70(
+        .d(cnt$70$d),
+        .q(cnt$70$q),
+        .clock(cnt$70$clock)
+    );
+    top$tc$cnt$0 cnt$71(
+        .d(cnt$71$d),
+        .q(cnt$71$q),
+        .clock(cnt$71$clock)
+    );
+    top$tc$cnt$0 cnt$72(
+        .d(cnt$72$d),
+        .q(cnt$72$q),
+        .clock(cnt$72$clock)
+    );
+    top$tc$cnt$0 cnt$73(
+        .d(cnt$73$d),
+        .q(cnt$73$q),
+        .clock(cnt$73$clock)
+    );
+    top$tc$cnt$0 cnt$74(
+        .d(cnt$74$d),
+        .q(cnt$74$q),
+        .clock(cnt$74$clock)
+    );
+    top$tc$cnt$0 cnt$75(
+        .d(cnt$75$d),
+        .q(cnt$75$q),
+        .clock(cnt$75$clock)
+    );
+    top$tc$cnt$0 cnt$76(
+        .d(cnt$76$d),
+        .q(cnt$76$q),
+        .clock(cnt$76$clock)
+    );
+    top$tc$cnt$0 cnt$77(
+        .d(cnt$77$d),
+        .q(cnt$77$q),
+        .clock(cnt$77$clock)
+    );
+    top$tc$cnt$0 cnt$78(
+        .d(cnt$78$d),
+        .q(cnt$78$q),
+        .clock(cnt$78$clock)
+    );
+    top$tc$cnt$0 cnt$79(
+        .d(cnt$79$d),
+        .q(cnt$79$q),
+        .clock(cnt$79$clock)
+    );
+    top$tc$cnt$0 cnt$80(
+        .d(cnt$80$d),
+        .q(cnt$80$q),
+        .clock(cnt$80$clock)
+    );
+    top$tc$cnt$0 cnt$81(
+        .d(cnt$81$d),
+        .q(cnt$81$q),
+        .clock(cnt$81$clock)
+    );
+    top$tc$cnt$0 cnt$82(
+        .d(cnt$82$d),
+        .q(cnt$82$q),
+        .clock(cnt$82$clock)
+    );
+    top$tc$cnt$0 cnt$83(
+        .d(cnt$83$d),
+        .q(cnt$83$q),
+        .clock(cnt$83$clock)
+    );
+    top$tc$cnt$0 cnt$84(
+        .d(cnt$84$d),
+        .q(cnt$84$q),
+        .clock(cnt$84$clock)
+    );
+    top$tc$cnt$0 cnt$85(
+        .d(cnt$85$d),
+        .q(cnt$85$q),
+        .clock(cnt$85$clock)
+    );
+    top$tc$cnt$0 cnt$86(
+        .d(cnt$86$d),
+        .q(cnt$86$q),
+        .clock(cnt$86$clock)
+    );
+    top$tc$cnt$0 cnt$87(
+        .d(cnt$87$d),
+        .q(cnt$87$q),
+        .clock(cnt$87$clock)
+    );
+    top$tc$cnt$0 cnt$88(
+        .d(cnt$88$d),
+        .q(cnt$88$q),
+        .clock(cnt$88$clock)
+    );
+    top$tc$cnt$0 cnt$89(
+        .d(cnt$89$d),
+        .q(cnt$89$q),
+        .clock(cnt$89$clock)
+    );
+    top$tc$cnt$0 cnt$90(
+        .d(cnt$90$d),
+        .q(cnt$90$q),
+        .clock(cnt$90$clock)
+    );
+    top$tc$cnt$0 cnt$91(
+        .d(cnt$91$d),
+        .q(cnt$91$q),
+        .clock(cnt$91$clock)
+    );
     top$frame$0 op_a$0(
         .d(op_a$0$d),
         .q(op_a$0$q),
@@ -10012,54 +10746,130 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
       cnt$52$d = counter$d;
       cnt$53$clock = clock;
       cnt$53$d = counter$d;
+      cnt$54$clock = clock;
+      cnt$54$d = counter$d;
+      cnt$55$clock = clock;
+      cnt$55$d = counter$d;
+      cnt$56$clock = clock;
+      cnt$56$d = counter$d;
+      cnt$57$clock = clock;
+      cnt$57$d = counter$d;
+      cnt$58$clock = clock;
+      cnt$58$d = counter$d;
+      cnt$59$clock = clock;
+      cnt$59$d = counter$d;
+      cnt$60$clock = clock;
+      cnt$60$d = counter$d;
+      cnt$61$clock = clock;
+      cnt$61$d = counter$d;
+      cnt$62$clock = clock;
+      cnt$62$d = counter$d;
+      cnt$63$clock = clock;
+      cnt$63$d = counter$d;
+      cnt$64$clock = clock;
+      cnt$64$d = counter$d;
+      cnt$65$clock = clock;
+      cnt$65$d = counter$d;
+      cnt$66$clock = clock;
+      cnt$66$d = counter$d;
+      cnt$67$clock = clock;
+      cnt$67$d = counter$d;
+      cnt$68$clock = clock;
+      cnt$68$d = counter$d;
+      cnt$69$clock = clock;
+      cnt$69$d = counter$d;
+      cnt$70$clock = clock;
+      cnt$70$d = counter$d;
+      cnt$71$clock = clock;
+      cnt$71$d = counter$d;
+      cnt$72$clock = clock;
+      cnt$72$d = counter$d;
+      cnt$73$clock = clock;
+      cnt$73$d = counter$d;
+      cnt$74$clock = clock;
+      cnt$74$d = counter$d;
+      cnt$75$clock = clock;
+      cnt$75$d = counter$d;
+      cnt$76$clock = clock;
+      cnt$76$d = counter$d;
+      cnt$77$clock = clock;
+      cnt$77$d = counter$d;
+      cnt$78$clock = clock;
+      cnt$78$d = counter$d;
+      cnt$79$clock = clock;
+      cnt$79$d = counter$d;
+      cnt$80$clock = clock;
+      cnt$80$d = counter$d;
+      cnt$81$clock = clock;
+      cnt$81$d = counter$d;
+      cnt$82$clock = clock;
+      cnt$82$d = counter$d;
+      cnt$83$clock = clock;
+      cnt$83$d = counter$d;
+      cnt$84$clock = clock;
+      cnt$84$d = counter$d;
+      cnt$85$clock = clock;
+      cnt$85$d = counter$d;
+      cnt$86$clock = clock;
+      cnt$86$d = counter$d;
+      cnt$87$clock = clock;
+      cnt$87$d = counter$d;
+      cnt$88$clock = clock;
+      cnt$88$d = counter$d;
+      cnt$89$clock = clock;
+      cnt$89$d = counter$d;
+      cnt$90$clock = clock;
+      cnt$90$d = counter$d;
+      cnt$91$clock = clock;
+      cnt$91$d = counter$d;
       regs$0$clock = clock;
-      regs$0$d = (counter$q == 8'd0) ? m_0$0 : regs$0$q;
+      regs$0$d = (cnt$54$q == 8'd0) ? m_0$0 : regs$0$q;
       regs$1$clock = clock;
-      regs$1$d = (counter$q == 8'd0) ? m_0$1 : regs$1$q;
+      regs$1$d = (cnt$55$q == 8'd0) ? m_0$1 : regs$1$q;
       regs$2$clock = clock;
-      regs$2$d = (counter$q == 8'd0) ? m_0$2 : regs$2$q;
+      regs$2$d = (cnt$56$q == 8'd0) ? m_0$2 : regs$2$q;
       regs$3$clock = clock;
-      regs$3$d = (counter$q == 8'd0) ? m_1$0 : regs$3$q;
+      regs$3$d = (cnt$58$q == 8'd0) ? m_1$0 : regs$3$q;
       regs$4$clock = clock;
-      regs$4$d = (counter$q == 8'd0) ? m_1$2 : regs$4$q;
+      regs$4$d = (cnt$60$q == 8'd0) ? m_1$2 : regs$4$q;
       regs$5$clock = clock;
-      regs$5$d = (counter$q == 8'd0) ? m_2$0 : regs$5$q;
+      regs$5$d = (cnt$62$q == 8'd0) ? m_2$0 : regs$5$q;
       regs$6$clock = clock;
-      regs$6$d = (counter$q == 8'd0) ? m_2$1 : regs$6$q;
+      regs$6$d = (cnt$63$q == 8'd0) ? m_2$1 : regs$6$q;
       regs$7$clock = clock;
-      regs$7$d = (counter$q == 8'd0) ? m_2$2 : regs$7$q;
+      regs$7$d = (cnt$64$q == 8'd0) ? m_2$2 : regs$7$q;
       regs$8$clock = clock;
-      regs$8$d = (counter$q == 8'd0) ? f_0$0 : regs$8$q;
+      regs$8$d = (cnt$68$q == 8'd0) ? f_0$0 : regs$8$q;
       regs$9$clock = clock;
-      regs$9$d = (counter$q == 8'd0) ? f_0$1 : regs$9$q;
+      regs$9$d = (cnt$69$q == 8'd0) ? f_0$1 : regs$9$q;
       regs$10$clock = clock;
-      regs$10$d = (counter$q == 8'd0) ? f_0$2 : regs$10$q;
+      regs$10$d = (cnt$70$q == 8'd0) ? f_0$2 : regs$10$q;
       regs$11$clock = clock;
-      regs$11$d = (counter$q == 8'd0) ? f_1$0 : regs$11$q;
+      regs$11$d = (cnt$72$q == 8'd0) ? f_1$0 : regs$11$q;
       regs$12$clock = clock;
-      regs$12$d = (counter$q == 8'd0) ? f_1$3 : regs$12$q;
+      regs$12$d = (cnt$75$q == 8'd0) ? f_1$3 : regs$12$q;
       regs$13$clock = clock;
-      regs$13$d = (counter$q == 8'd0) ? f_2$1 : regs$13$q;
+      regs$13$d = (cnt$77$q == 8'd0) ? f_2$1 : regs$13$q;
       regs$14$clock = clock;
-      regs$14$d = (counter$q == 8'd0) ? f_2$2 : regs$14$q;
+      regs$14$d = (cnt$78$q == 8'd0) ? f_2$2 : regs$14$q;
       regs$15$clock = clock;
-      regs$15$d = (counter$q == 8'd0) ? f_2$3 : regs$15$q;
+      regs$15$d = (cnt$79$q == 8'd0) ? f_2$3 : regs$15$q;
       regs$16$clock = clock;
-      regs$16$d = (counter$q == 8'd0) ? v_x$0 : regs$16$q;
+      regs$16$d = (cnt$83$q == 8'd0) ? v_x$0 : regs$16$q;
       regs$17$clock = clock;
-      regs$17$d = (counter$q == 8'd0) ? regs$16$q : regs$17$q;
+      regs$17$d = (cnt$83$q == 8'd0) ? regs$16$q : regs$17$q;
       regs$18$clock = clock;
-      regs$18$d = (counter$q == 8'd0) ? v_y$0 : regs$18$q;
+      regs$18$d = (cnt$84$q == 8'd0) ? v_y$0 : regs$18$q;
       regs$19$clock = clock;
-      regs$19$d = (counter$q == 8'd0) ? regs$18$q : regs$19$q;
+      regs$19$d = (cnt$84$q == 8'd0) ? regs$18$q : regs$19$q;
       regs$20$clock = clock;
-      regs$20$d = (counter$q == 8'd0) ? v_z$0 : regs$20$q;
+      regs$20$d = (cnt$85$q == 8'd0) ? v_z$0 : regs$20$q;
       regs$21$clock = clock;
-      regs$21$d = (counter$q == 8'd0) ? regs$20$q : regs$21$q;
+      regs$21$d = (cnt$85$q == 8'd0) ? regs$20$q : regs$21$q;
       regs$22$clock = clock;
-      regs$22$d = (counter$q == 8'd0) ? v_z$2 : regs$22$q;
+      regs$22$d = (cnt$91$q == 8'd0) ? v_z$2 : regs$22$q;
       regs$23$clock = clock;
-      regs$23$d = (counter$q == 8'd0) ? regs$22$q : regs$23$q;
+      regs$23$d = (cnt$91$q == 8'd0) ? regs$22$q : regs$23$q;
       regs$24$clock = clock;
       regs$24$d = (cnt$23$q == 8'd8) ? add_v$0$y : regs$24$q;
       regs$25$clock = clock;
@@ -10075,49 +10885,49 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
       regs$30$clock = clock;
       regs$30$d = (cnt$23$q == 8'd14) ? add_v$0$y : regs$30$q;
       regs$31$clock = clock;
-      regs$31$d = (counter$q == 8'd0) ? m_0$0 : regs$31$q;
+      regs$31$d = (cnt$54$q == 8'd0) ? m_0$0 : regs$31$q;
       regs$32$clock = clock;
-      regs$32$d = (counter$q == 8'd0) ? m_0$1 : regs$32$q;
+      regs$32$d = (cnt$55$q == 8'd0) ? m_0$1 : regs$32$q;
       regs$33$clock = clock;
-      regs$33$d = (counter$q == 8'd0) ? m_0$2 : regs$33$q;
+      regs$33$d = (cnt$56$q == 8'd0) ? m_0$2 : regs$33$q;
       regs$34$clock = clock;
-      regs$34$d = (counter$q == 8'd0) ? m_1$0 : regs$34$q;
+      regs$34$d = (cnt$58$q == 8'd0) ? m_1$0 : regs$34$q;
       regs$35$clock = clock;
-      regs$35$d = (counter$q == 8'd0) ? m_1$1 : regs$35$q;
+      regs$35$d = (cnt$59$q == 8'd0) ? m_1$1 : regs$35$q;
       regs$36$clock = clock;
-      regs$36$d = (counter$q == 8'd0) ? m_2$1 : regs$36$q;
+      regs$36$d = (cnt$63$q == 8'd0) ? m_2$1 : regs$36$q;
       regs$37$clock = clock;
-      regs$37$d = (counter$q == 8'd0) ? m_2$2 : regs$37$q;
+      regs$37$d = (cnt$64$q == 8'd0) ? m_2$2 : regs$37$q;
       regs$38$clock = clock;
-      regs$38$d = (counter$q == 8'd0) ? f_0$2 : regs$38$q;
+      regs$38$d = (cnt$70$q == 8'd0) ? f_0$2 : regs$38$q;
       regs$39$clock = clock;
-      regs$39$d = (counter$q == 8'd0) ? f_0$3 : regs$39$q;
+      regs$39$d = (cnt$71$q == 8'd0) ? f_0$3 : regs$39$q;
       regs$40$clock = clock;
-      regs$40$d = (counter$q == 8'd0) ? f_1$0 : regs$40$q;
+      regs$40$d = (cnt$72$q == 8'd0) ? f_1$0 : regs$40$q;
       regs$41$clock = clock;
-      regs$41$d = (counter$q == 8'd0) ? f_1$1 : regs$41$q;
+      regs$41$d = (cnt$73$q == 8'd0) ? f_1$1 : regs$41$q;
       regs$42$clock = clock;
-      regs$42$d = (counter$q == 8'd0) ? f_1$2 : regs$42$q;
+      regs$42$d = (cnt$74$q == 8'd0) ? f_1$2 : regs$42$q;
       regs$43$clock = clock;
-      regs$43$d = (counter$q == 8'd0) ? f_2$0 : regs$43$q;
+      regs$43$d = (cnt$76$q == 8'd0) ? f_2$0 : regs$43$q;
       regs$44$clock = clock;
-      regs$44$d = (counter$q == 8'd0) ? f_2$3 : regs$44$q;
+      regs$44$d = (cnt$79$q == 8'd0) ? f_2$3 : regs$44$q;
       regs$45$clock = clock;
-      regs$45$d = (counter$q == 8'd0) ? v_y$0 : regs$45$q;
+      regs$45$d = (cnt$84$q == 8'd0) ? v_y$0 : regs$45$q;
       regs$46$clock = clock;
-      regs$46$d = (counter$q == 8'd0) ? regs$45$q : regs$46$q;
+      regs$46$d = (cnt$84$q == 8'd0) ? regs$45$q : regs$46$q;
       regs$47$clock = clock;
-      regs$47$d = (counter$q == 8'd0) ? v_z$0 : regs$47$q;
+      regs$47$d = (cnt$85$q == 8'd0) ? v_z$0 : regs$47$q;
       regs$48$clock = clock;
-      regs$48$d = (counter$q == 8'd0) ? regs$47$q : regs$48$q;
+      regs$48$d = (cnt$85$q == 8'd0) ? regs$47$q : regs$48$q;
       regs$49$clock = clock;
-      regs$49$d = (counter$q == 8'd0) ? v_x$1 : regs$49$q;
+      regs$49$d = (cnt$86$q == 8'd0) ? v_x$1 : regs$49$q;
       regs$50$clock = clock;
-      regs$50$d = (counter$q == 8'd0) ? regs$49$q : regs$50$q;
+      regs$50$d = (cnt$86$q == 8'd0) ? regs$49$q : regs$50$q;
       regs$51$clock = clock;
-      regs$51$d = (counter$q == 8'd0) ? v_z$1 : regs$51$q;
+      regs$51$d = (cnt$88$q == 8'd0) ? v_z$1 : regs$51$q;
       regs$52$clock = clock;
-      regs$52$d = (counter$q == 8'd0) ? regs$51$q : regs$52$q;
+      regs$52$d = (cnt$88$q == 8'd0) ? regs$51$q : regs$52$q;
       regs$53$clock = clock;
       regs$53$d = (cnt$25$q == 8'd8) ? add_v$1$y : regs$53$q;
       regs$54$clock = clock;
@@ -10137,49 +10947,49 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
       regs$61$clock = clock;
       regs$61$d = (cnt$29$q == 8'd4) ? add_v$3$y : regs$61$q;
       regs$62$clock = clock;
-      regs$62$d = (counter$q == 8'd0) ? m_0$1 : regs$62$q;
+      regs$62$d = (cnt$55$q == 8'd0) ? m_0$1 : regs$62$q;
       regs$63$clock = clock;
-      regs$63$d = (counter$q == 8'd0) ? m_0$2 : regs$63$q;
+      regs$63$d = (cnt$56$q == 8'd0) ? m_0$2 : regs$63$q;
       regs$64$clock = clock;
-      regs$64$d = (counter$q == 8'd0) ? m_1$0 : regs$64$q;
+      regs$64$d = (cnt$58$q == 8'd0) ? m_1$0 : regs$64$q;
       regs$65$clock = clock;
-      regs$65$d = (counter$q == 8'd0) ? m_1$1 : regs$65$q;
+      regs$65$d = (cnt$59$q == 8'd0) ? m_1$1 : regs$65$q;
       regs$66$clock = clock;
-      regs$66$d = (counter$q == 8'd0) ? m_1$2 : regs$66$q;
+      regs$66$d = (cnt$60$q == 8'd0) ? m_1$2 : regs$66$q;
       regs$67$clock = clock;
-      regs$67$d = (counter$q == 8'd0) ? m_2$0 : regs$67$q;
+      regs$67$d = (cnt$62$q == 8'd0) ? m_2$0 : regs$67$q;
       regs$68$clock = clock;
-      regs$68$d = (counter$q == 8'd0) ? m_2$2 : regs$68$q;
+      regs$68$d = (cnt$64$q == 8'd0) ? m_2$2 : regs$68$q;
       regs$69$clock = clock;
-      regs$69$d = (counter$q == 8'd0) ? f_0$0 : regs$69$q;
+      regs$69$d = (cnt$68$q == 8'd0) ? f_0$0 : regs$69$q;
       regs$70$clock = clock;
-      regs$70$d = (counter$q == 8'd0) ? f_0$1 : regs$70$q;
+      regs$70$d = (cnt$69$q == 8'd0) ? f_0$1 : regs$70$q;
       regs$71$clock = clock;
-      regs$71$d = (counter$q == 8'd0) ? f_1$2 : regs$71$q;
+      regs$71$d = (cnt$74$q == 8'd0) ? f_1$2 : regs$71$q;
       regs$72$clock = clock;
-      regs$72$d = (counter$q == 8'd0) ? f_1$3 : regs$72$q;
+      regs$72$d = (cnt$75$q == 8'd0) ? f_1$3 : regs$72$q;
       regs$73$clock = clock;
-      regs$73$d = (counter$q == 8'd0) ? f_2$0 : regs$73$q;
+      regs$73$d = (cnt$76$q == 8'd0) ? f_2$0 : regs$73$q;
       regs$74$clock = clock;
-      regs$74$d = (counter$q == 8'd0) ? f_2$1 : regs$74$q;
+      regs$74$d = (cnt$77$q == 8'd0) ? f_2$1 : regs$74$q;
       regs$75$clock = clock;
-      regs$75$d = (counter$q == 8'd0) ? f_2$2 : regs$75$q;
+      regs$75$d = (cnt$78$q == 8'd0) ? f_2$2 : regs$75$q;
       regs$76$clock = clock;
-      regs$76$d = (counter$q == 8'd0) ? v_x$1 : regs$76$q;
+      regs$76$d = (cnt$86$q == 8'd0) ? v_x$1 : regs$76$q;
       regs$77$clock = clock;
-      regs$77$d = (counter$q == 8'd0) ? regs$76$q : regs$77$q;
+      regs$77$d = (cnt$86$q == 8'd0) ? regs$76$q : regs$77$q;
       regs$78$clock = clock;
-      regs$78$d = (counter$q == 8'd0) ? v_y$1 : regs$78$q;
+      regs$78$d = (cnt$87$q == 8'd0) ? v_y$1 : regs$78$q;
       regs$79$clock = clock;
-      regs$79$d = (counter$q == 8'd0) ? regs$78$q : regs$79$q;
+      regs$79$d = (cnt$87$q == 8'd0) ? regs$78$q : regs$79$q;
       regs$80$clock = clock;
-      regs$80$d = (counter$q == 8'd0) ? v_x$2 : regs$80$q;
+      regs$80$d = (cnt$89$q == 8'd0) ? v_x$2 : regs$80$q;
       regs$81$clock = clock;
-      regs$81$d = (counter$q == 8'd0) ? regs$80$q : regs$81$q;
+      regs$81$d = (cnt$89$q == 8'd0) ? regs$80$q : regs$81$q;
       regs$82$clock = clock;
-      regs$82$d = (counter$q == 8'd0) ? v_y$2 : regs$82$q;
+      regs$82$d = (cnt$90$q == 8'd0) ? v_y$2 : regs$82$q;
       regs$83$clock = clock;
-      regs$83$d = (counter$q == 8'd0) ? regs$82$q : regs$83$q;
+      regs$83$d = (cnt$90$q == 8'd0) ? regs$82$q : regs$83$q;
       regs$84$clock = clock;
       regs$84$d = (cnt$23$q == 8'd8) ? add_v$0$y : regs$84$q;
       regs$85$clock = clock;
@@ -10199,45 +11009,45 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
       regs$92$clock = clock;
       regs$92$d = (cnt$29$q == 8'd1) ? add_v$3$y : regs$92$q;
       regs$93$clock = clock;
-      regs$93$d = (counter$q == 8'd0) ? m_0$0 : regs$93$q;
+      regs$93$d = (cnt$54$q == 8'd0) ? m_0$0 : regs$93$q;
       regs$94$clock = clock;
-      regs$94$d = (counter$q == 8'd0) ? m_0$2 : regs$94$q;
+      regs$94$d = (cnt$56$q == 8'd0) ? m_0$2 : regs$94$q;
       regs$95$clock = clock;
-      regs$95$d = (counter$q == 8'd0) ? m_1$0 : regs$95$q;
+      regs$95$d = (cnt$58$q == 8'd0) ? m_1$0 : regs$95$q;
       regs$96$clock = clock;
-      regs$96$d = (counter$q == 8'd0) ? m_1$1 : regs$96$q;
+      regs$96$d = (cnt$59$q == 8'd0) ? m_1$1 : regs$96$q;
       regs$97$clock = clock;
-      regs$97$d = (counter$q == 8'd0) ? m_1$2 : regs$97$q;
+      regs$97$d = (cnt$60$q == 8'd0) ? m_1$2 : regs$97$q;
       regs$98$clock = clock;
-      regs$98$d = (counter$q == 8'd0) ? m_2$0 : regs$98$q;
+      regs$98$d = (cnt$62$q == 8'd0) ? m_2$0 : regs$98$q;
       regs$99$clock = clock;
-      regs$99$d = (counter$q == 8'd0) ? m_2$1 : regs$99$q;
+      regs$99$d = (cnt$63$q == 8'd0) ? m_2$1 : regs$99$q;
       regs$100$clock = clock;
-      regs$100$d = (counter$q == 8'd0) ? f_0$1 : regs$100$q;
+      regs$100$d = (cnt$69$q == 8'd0) ? f_0$1 : regs$100$q;
       regs$101$clock = clock;
-      regs$101$d = (counter$q == 8'd0) ? f_0$2 : regs$101$q;
+      regs$101$d = (cnt$70$q == 8'd0) ? f_0$2 : regs$101$q;
       regs$102$clock = clock;
-      regs$102$d = (counter$q == 8'd0) ? f_0$3 : regs$102$q;
+      regs$102$d = (cnt$71$q == 8'd0) ? f_0$3 : regs$102$q;
       regs$103$clock = clock;
-      regs$103$d = (counter$q == 8'd0) ? f_1$0 : regs$103$q;
+      regs$103$d = (cnt$72$q == 8'd0) ? f_1$0 : regs$103$q;
       regs$104$clock = clock;
-      regs$104$d = (counter$q == 8'd0) ? f_1$1 : regs$104$q;
+      regs$104$d = (cnt$73$q == 8'd0) ? f_1$1 : regs$104$q;
       regs$105$clock = clock;
-      regs$105$d = (counter$q == 8'd0) ? f_2$2 : regs$105$q;
+      regs$105$d = (cnt$78$q == 8'd0) ? f_2$2 : regs$105$q;
       regs$106$clock = clock;
-      regs$106$d = (counter$q == 8'd0) ? f_2$3 : regs$106$q;
+      regs$106$d = (cnt$79$q == 8'd0) ? f_2$3 : regs$106$q;
       regs$107$clock = clock;
-      regs$107$d = (counter$q == 8'd0) ? v_y$1 : regs$107$q;
+      regs$107$d = (cnt$87$q == 8'd0) ? v_y$1 : regs$107$q;
       regs$108$clock = clock;
-      regs$108$d = (counter$q == 8'd0) ? regs$107$q : regs$108$q;
+      regs$108$d = (cnt$87$q == 8'd0) ? regs$107$q : regs$108$q;
       regs$109$clock = clock;
-      regs$109$d = (counter$q == 8'd0) ? v_z$1 : regs$109$q;
+      regs$109$d = (cnt$88$q == 8'd0) ? v_z$1 : regs$109$q;
       regs$110$clock = clock;
-      regs$110$d = (counter$q == 8'd0) ? regs$109$q : regs$110$q;
+      regs$110$d = (cnt$88$q == 8'd0) ? regs$109$q : regs$110$q;
       regs$111$clock = clock;
-      regs$111$d = (counter$q == 8'd0) ? v_z$2 : regs$111$q;
+      regs$111$d = (cnt$91$q == 8'd0) ? v_z$2 : regs$111$q;
       regs$112$clock = clock;
-      regs$112$d = (counter$q == 8'd0) ? regs$111$q : regs$112$q;
+      regs$112$d = (cnt$91$q == 8'd0) ? regs$111$q : regs$112$q;
       regs$113$clock = clock;
       regs$113$d = (cnt$25$q == 8'd8) ? add_v$1$y : regs$113$q;
       regs$114$clock = clock;
@@ -10259,41 +11069,41 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
       regs$122$clock = clock;
       regs$122$d = (cnt$31$q == 8'd6) ? add_v$4$y : regs$122$q;
       regs$123$clock = clock;
-      regs$123$d = (counter$q == 8'd0) ? m_0$0 : regs$123$q;
+      regs$123$d = (cnt$54$q == 8'd0) ? m_0$0 : regs$123$q;
       regs$124$clock = clock;
-      regs$124$d = (counter$q == 8'd0) ? m_0$1 : regs$124$q;
+      regs$124$d = (cnt$55$q == 8'd0) ? m_0$1 : regs$124$q;
       regs$125$clock = clock;
-      regs$125$d = (counter$q == 8'd0) ? m_1$1 : regs$125$q;
+      regs$125$d = (cnt$59$q == 8'd0) ? m_1$1 : regs$125$q;
       regs$126$clock = clock;
-      regs$126$d = (counter$q == 8'd0) ? m_1$2 : regs$126$q;
+      regs$126$d = (cnt$60$q == 8'd0) ? m_1$2 : regs$126$q;
       regs$127$clock = clock;
-      regs$127$d = (counter$q == 8'd0) ? m_2$0 : regs$127$q;
+      regs$127$d = (cnt$62$q == 8'd0) ? m_2$0 : regs$127$q;
       regs$128$clock = clock;
-      regs$128$d = (counter$q == 8'd0) ? m_2$1 : regs$128$q;
+      regs$128$d = (cnt$63$q == 8'd0) ? m_2$1 : regs$128$q;
       regs$129$clock = clock;
-      regs$129$d = (counter$q == 8'd0) ? m_2$2 : regs$129$q;
+      regs$129$d = (cnt$64$q == 8'd0) ? m_2$2 : regs$129$q;
       regs$130$clock = clock;
-      regs$130$d = (counter$q == 8'd0) ? f_0$0 : regs$130$q;
+      regs$130$d = (cnt$68$q == 8'd0) ? f_0$0 : regs$130$q;
       regs$131$clock = clock;
-      regs$131$d = (counter$q == 8'd0) ? f_0$3 : regs$131$q;
+      regs$131$d = (cnt$71$q == 8'd0) ? f_0$3 : regs$131$q;
       regs$132$clock = clock;
-      regs$132$d = (counter$q == 8'd0) ? f_1$1 : regs$132$q;
+      regs$132$d = (cnt$73$q == 8'd0) ? f_1$1 : regs$132$q;
       regs$133$clock = clock;
-      regs$133$d = (counter$q == 8'd0) ? f_1$2 : regs$133$q;
+      regs$133$d = (cnt$74$q == 8'd0) ? f_1$2 : regs$133$q;
       regs$134$clock = clock;
-      regs$134$d = (counter$q == 8'd0) ? f_1$3 : regs$134$q;
+      regs$134$d = (cnt$75$q == 8'd0) ? f_1$3 : regs$134$q;
       regs$135$clock = clock;
-      regs$135$d = (counter$q == 8'd0) ? f_2$0 : regs$135$q;
+      regs$135$d = (cnt$76$q == 8'd0) ? f_2$0 : regs$135$q;
       regs$136$clock = clock;
-      regs$136$d = (counter$q == 8'd0) ? f_2$1 : regs$136$q;
+      regs$136$d = (cnt$77$q == 8'd0) ? f_2$1 : regs$136$q;
       regs$137$clock = clock;
-      regs$137$d = (counter$q == 8'd0) ? v_x$2 : regs$137$q;
+      regs$137$d = (cnt$89$q == 8'd0) ? v_x$2 : regs$137$q;
       regs$138$clock = clock;
-      regs$138$d = (counter$q == 8'd0) ? regs$137$q : regs$138$q;
+      regs$138$d = (cnt$89$q == 8'd0) ? regs$137$q : regs$138$q;
       regs$139$clock = clock;
-      regs$139$d = (counter$q == 8'd0) ? v_y$2 : regs$139$q;
+      regs$139$d = (cnt$90$q == 8'd0) ? v_y$2 : regs$139$q;
       regs$140$clock = clock;
-      regs$140$d = (counter$q == 8'd0) ? regs$139$q : regs$140$q;
+      regs$140$d = (cnt$90$q == 8'd0) ? regs$139$q : regs$140$q;
       regs$141$clock = clock;
       regs$141$d = (cnt$23$q == 8'd8) ? add_v$0$y : regs$141$q;
       regs$142$clock = clock;
@@ -10313,27 +11123,27 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
       regs$149$clock = clock;
       regs$149$d = (cnt$31$q == 8'd6) ? add_v$4$y : regs$149$q;
       regs$150$clock = clock;
-      regs$150$d = (counter$q == 8'd0) ? m_0$0 : regs$150$q;
+      regs$150$d = (cnt$54$q == 8'd0) ? m_0$0 : regs$150$q;
       regs$151$clock = clock;
-      regs$151$d = (counter$q == 8'd0) ? m_1$0 : regs$151$q;
+      regs$151$d = (cnt$58$q == 8'd0) ? m_1$0 : regs$151$q;
       regs$152$clock = clock;
-      regs$152$d = (counter$q == 8'd0) ? m_2$0 : regs$152$q;
+      regs$152$d = (cnt$62$q == 8'd0) ? m_2$0 : regs$152$q;
       regs$153$clock = clock;
-      regs$153$d = (counter$q == 8'd0) ? alpha_m : regs$153$q;
+      regs$153$d = (cnt$66$q == 8'd0) ? alpha_m : regs$153$q;
       regs$154$clock = clock;
-      regs$154$d = (counter$q == 8'd0) ? f_0$0 : regs$154$q;
+      regs$154$d = (cnt$68$q == 8'd0) ? f_0$0 : regs$154$q;
       regs$155$clock = clock;
-      regs$155$d = (counter$q == 8'd0) ? f_0$2 : regs$155$q;
+      regs$155$d = (cnt$70$q == 8'd0) ? f_0$2 : regs$155$q;
       regs$156$clock = clock;
-      regs$156$d = (counter$q == 8'd0) ? beta_m : regs$156$q;
+      regs$156$d = (cnt$80$q == 8'd0) ? beta_m : regs$156$q;
       regs$157$clock = clock;
-      regs$157$d = (counter$q == 8'd0) ? v_x$0 : regs$157$q;
+      regs$157$d = (cnt$83$q == 8'd0) ? v_x$0 : regs$157$q;
       regs$158$clock = clock;
-      regs$158$d = (counter$q == 8'd0) ? regs$157$q : regs$158$q;
+      regs$158$d = (cnt$83$q == 8'd0) ? regs$157$q : regs$158$q;
       regs$159$clock = clock;
-      regs$159$d = (counter$q == 8'd0) ? v_z$0 : regs$159$q;
+      regs$159$d = (cnt$85$q == 8'd0) ? v_z$0 : regs$159$q;
       regs$160$clock = clock;
-      regs$160$d = (counter$q == 8'd0) ? regs$159$q : regs$160$q;
+      regs$160$d = (cnt$85$q == 8'd0) ? regs$159$q : regs$160$q;
       regs$161$clock = clock;
       regs$161$d = (cnt$45$q == 8'd8) ? add_up$6$y : regs$161$q;
       regs$162$clock = clock;
@@ -10361,27 +11171,27 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
       regs$173$clock = clock;
       regs$173$d = (cnt$39$q == 8'd13) ? add_up$3$y : regs$173$q;
       regs$174$clock = clock;
-      regs$174$d = (counter$q == 8'd0) ? m_0$1 : regs$174$q;
+      regs$174$d = (cnt$55$q == 8'd0) ? m_0$1 : regs$174$q;
       regs$175$clock = clock;
-      regs$175$d = (counter$q == 8'd0) ? m_1$1 : regs$175$q;
+      regs$175$d = (cnt$59$q == 8'd0) ? m_1$1 : regs$175$q;
       regs$176$clock = clock;
-      regs$176$d = (counter$q == 8'd0) ? m_2$1 : regs$176$q;
+      regs$176$d = (cnt$63$q == 8'd0) ? m_2$1 : regs$176$q;
       regs$177$clock = clock;
-      regs$177$d = (counter$q == 8'd0) ? alpha_f : regs$177$q;
+      regs$177$d = (cnt$67$q == 8'd0) ? alpha_f : regs$177$q;
       regs$178$clock = clock;
-      regs$178$d = (counter$q == 8'd0) ? f_1$0 : regs$178$q;
+      regs$178$d = (cnt$72$q == 8'd0) ? f_1$0 : regs$178$q;
       regs$179$clock = clock;
-      regs$179$d = (counter$q == 8'd0) ? f_1$2 : regs$179$q;
+      regs$179$d = (cnt$74$q == 8'd0) ? f_1$2 : regs$179$q;
       regs$180$clock = clock;
-      regs$180$d = (counter$q == 8'd0) ? beta_f : regs$180$q;
+      regs$180$d = (cnt$81$q == 8'd0) ? beta_f : regs$180$q;
       regs$181$clock = clock;
-      regs$181$d = (counter$q == 8'd0) ? v_y$0 : regs$181$q;
+      regs$181$d = (cnt$84$q == 8'd0) ? v_y$0 : regs$181$q;
       regs$182$clock = clock;
-      regs$182$d = (counter$q == 8'd0) ? regs$181$q : regs$182$q;
+      regs$182$d = (cnt$84$q == 8'd0) ? regs$181$q : regs$182$q;
       regs$183$clock = clock;
-      regs$183$d = (counter$q == 8'd0) ? v_z$1 : regs$183$q;
+      regs$183$d = (cnt$88$q == 8'd0) ? v_z$1 : regs$183$q;
       regs$184$clock = clock;
-      regs$184$d = (counter$q == 8'd0) ? regs$183$q : regs$184$q;
+      regs$184$d = (cnt$88$q == 8'd0) ? regs$183$q : regs$184$q;
       regs$185$clock = clock;
       regs$185$d = (cnt$47$q == 8'd8) ? add_up$7$y : regs$185$q;
       regs$186$clock = clock;
@@ -10409,23 +11219,23 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
       regs$197$clock = clock;
       regs$197$d = (cnt$37$q == 8'd13) ? add_up$2$y : regs$197$q;
       regs$198$clock = clock;
-      regs$198$d = (counter$q == 8'd0) ? m_0$2 : regs$198$q;
+      regs$198$d = (cnt$56$q == 8'd0) ? m_0$2 : regs$198$q;
       regs$199$clock = clock;
-      regs$199$d = (counter$q == 8'd0) ? m_1$2 : regs$199$q;
+      regs$199$d = (cnt$60$q == 8'd0) ? m_1$2 : regs$199$q;
       regs$200$clock = clock;
-      regs$200$d = (counter$q == 8'd0) ? m_2$2 : regs$200$q;
+      regs$200$d = (cnt$64$q == 8'd0) ? m_2$2 : regs$200$q;
       regs$201$clock = clock;
-      regs$201$d = (counter$q == 8'd0) ? f_2$0 : regs$201$q;
+      regs$201$d = (cnt$76$q == 8'd0) ? f_2$0 : regs$201$q;
       regs$202$clock = clock;
-      regs$202$d = (counter$q == 8'd0) ? f_2$2 : regs$202$q;
+      regs$202$d = (cnt$78$q == 8'd0) ? f_2$2 : regs$202$q;
       regs$203$clock = clock;
-      regs$203$d = (counter$q == 8'd0) ? v_x$1 : regs$203$q;
+      regs$203$d = (cnt$86$q == 8'd0) ? v_x$1 : regs$203$q;
       regs$204$clock = clock;
-      regs$204$d = (counter$q == 8'd0) ? regs$203$q : regs$204$q;
+      regs$204$d = (cnt$86$q == 8'd0) ? regs$203$q : regs$204$q;
       regs$205$clock = clock;
-      regs$205$d = (counter$q == 8'd0) ? v_z$2 : regs$205$q;
+      regs$205$d = (cnt$91$q == 8'd0) ? v_z$2 : regs$205$q;
       regs$206$clock = clock;
-      regs$206$d = (counter$q == 8'd0) ? regs$205$q : regs$206$q;
+      regs$206$d = (cnt$91$q == 8'd0) ? regs$205$q : regs$206$q;
       regs$207$clock = clock;
       regs$207$d = (cnt$45$q == 8'd8) ? add_up$6$y : regs$207$q;
       regs$208$clock = clock;
@@ -10459,19 +11269,19 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
       regs$222$clock = clock;
       regs$222$d = (cnt$39$q == 8'd13) ? add_up$3$y : regs$222$q;
       regs$223$clock = clock;
-      regs$223$d = (counter$q == 8'd0) ? m_0$0 : regs$223$q;
+      regs$223$d = (cnt$54$q == 8'd0) ? m_0$0 : regs$223$q;
       regs$224$clock = clock;
-      regs$224$d = (counter$q == 8'd0) ? m_1$0 : regs$224$q;
+      regs$224$d = (cnt$58$q == 8'd0) ? m_1$0 : regs$224$q;
       regs$225$clock = clock;
-      regs$225$d = (counter$q == 8'd0) ? m_2$0 : regs$225$q;
+      regs$225$d = (cnt$62$q == 8'd0) ? m_2$0 : regs$225$q;
       regs$226$clock = clock;
-      regs$226$d = (counter$q == 8'd0) ? f_0$1 : regs$226$q;
+      regs$226$d = (cnt$69$q == 8'd0) ? f_0$1 : regs$226$q;
       regs$227$clock = clock;
-      regs$227$d = (counter$q == 8'd0) ? f_0$3 : regs$227$q;
+      regs$227$d = (cnt$71$q == 8'd0) ? f_0$3 : regs$227$q;
       regs$228$clock = clock;
-      regs$228$d = (counter$q == 8'd0) ? v_y$1 : regs$228$q;
+      regs$228$d = (cnt$87$q == 8'd0) ? v_y$1 : regs$228$q;
       regs$229$clock = clock;
-      regs$229$d = (counter$q == 8'd0) ? regs$228$q : regs$229$q;
+      regs$229$d = (cnt$87$q == 8'd0) ? regs$228$q : regs$229$q;
       regs$230$clock = clock;
       regs$230$d = (cnt$47$q == 8'd8) ? add_up$7$y : regs$230$q;
       regs$231$clock = clock;
@@ -10507,19 +11317,19 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
       regs$246$clock = clock;
       regs$246$d = (cnt$39$q == 8'd13) ? add_up$3$y : regs$246$q;
       regs$247$clock = clock;
-      regs$247$d = (counter$q == 8'd0) ? m_0$1 : regs$247$q;
+      regs$247$d = (cnt$55$q == 8'd0) ? m_0$1 : regs$247$q;
       regs$248$clock = clock;
-      regs$248$d = (counter$q == 8'd0) ? m_1$1 : regs$248$q;
+      regs$248$d = (cnt$59$q == 8'd0) ? m_1$1 : regs$248$q;
       regs$249$clock = clock;
-      regs$249$d = (counter$q == 8'd0) ? m_2$1 : regs$249$q;
+      regs$249$d = (cnt$63$q == 8'd0) ? m_2$1 : regs$249$q;
       regs$250$clock = clock;
-      regs$250$d = (counter$q == 8'd0) ? f_1$1 : regs$250$q;
+      regs$250$d = (cnt$73$q == 8'd0) ? f_1$1 : regs$250$q;
       regs$251$clock = clock;
-      regs$251$d = (counter$q == 8'd0) ? f_1$3 : regs$251$q;
+      regs$251$d = (cnt$75$q == 8'd0) ? f_1$3 : regs$251$q;
       regs$252$clock = clock;
-      regs$252$d = (counter$q == 8'd0) ? v_x$2 : regs$252$q;
+      regs$252$d = (cnt$89$q == 8'd0) ? v_x$2 : regs$252$q;
       regs$253$clock = clock;
-      regs$253$d = (counter$q == 8'd0) ? regs$252$q : regs$253$q;
+      regs$253$d = (cnt$89$q == 8'd0) ? regs$252$q : regs$253$q;
       regs$254$clock = clock;
       regs$254$d = (cnt$45$q == 8'd8) ? add_up$6$y : regs$254$q;
       regs$255$clock = clock;
@@ -10553,19 +11363,19 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
       regs$269$clock = clock;
       regs$269$d = (cnt$37$q == 8'd13) ? add_up$2$y : regs$269$q;
       regs$270$clock = clock;
-      regs$270$d = (counter$q == 8'd0) ? m_0$2 : regs$270$q;
+      regs$270$d = (cnt$56$q == 8'd0) ? m_0$2 : regs$270$q;
       regs$271$clock = clock;
-      regs$271$d = (counter$q == 8'd0) ? m_1$2 : regs$271$q;
+      regs$271$d = (cnt$60$q == 8'd0) ? m_1$2 : regs$271$q;
       regs$272$clock = clock;
-      regs$272$d = (counter$q == 8'd0) ? m_2$2 : regs$272$q;
+      regs$272$d = (cnt$64$q == 8'd0) ? m_2$2 : regs$272$q;
       regs$273$clock = clock;
-      regs$273$d = (counter$q == 8'd0) ? f_2$1 : regs$273$q;
+      regs$273$d = (cnt$77$q == 8'd0) ? f_2$1 : regs$273$q;
       regs$274$clock = clock;
-      regs$274$d = (counter$q == 8'd0) ? f_2$3 : regs$274$q;
+      regs$274$d = (cnt$79$q == 8'd0) ? f_2$3 : regs$274$q;
       regs$275$clock = clock;
-      regs$275$d = (counter$q == 8'd0) ? v_y$2 : regs$275$q;
+      regs$275$d = (cnt$90$q == 8'd0) ? v_y$2 : regs$275$q;
       regs$276$clock = clock;
-      regs$276$d = (counter$q == 8'd0) ? regs$275$q : regs$276$q;
+      regs$276$d = (cnt$90$q == 8'd0) ? regs$275$q : regs$276$q;
       regs$277$clock = clock;
       regs$277$d = (cnt$47$q == 8'd8) ? add_up$7$y : regs$277$q;
       regs$278$clock = clock;
@@ -10595,7 +11405,7 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
       regs$290$clock = clock;
       regs$290$d = (cnt$39$q == 8'd13) ? add_up$3$y : regs$290$q;
       regs$291$clock = clock;
-      regs$291$d = (counter$q == 8'd0) ? m_2$3 : regs$291$q;
+      regs$291$d = (cnt$65$q == 8'd0) ? m_2$3 : regs$291$q;
       regs$292$clock = clock;
       regs$292$d = (cnt$1$q == 8'd8) ? mul_v$0$y : regs$292$q;
       regs$293$clock = clock;
@@ -10659,9 +11469,9 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
       regs$322$clock = clock;
       regs$322$d = (cnt$23$q == 8'd7) ? add_v$0$y : regs$322$q;
       regs$323$clock = clock;
-      regs$323$d = (counter$q == 8'd0) ? m_0$3 : regs$323$q;
+      regs$323$d = (cnt$57$q == 8'd0) ? m_0$3 : regs$323$q;
       regs$324$clock = clock;
-      regs$324$d = (counter$q == 8'd0) ? m_1$3 : regs$324$q;
+      regs$324$d = (cnt$61$q == 8'd0) ? m_1$3 : regs$324$q;
       regs$325$clock = clock;
       regs$325$d = (cnt$7$q == 8'd8) ? mul_v$3$y : regs$325$q;
       regs$326$clock = clock;
@@ -10875,9 +11685,9 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
       regs$430$clock = clock;
       regs$430$d = (cnt$29$q == 8'd7) ? add_v$3$y : regs$430$q;
       regs$431$clock = clock;
-      regs$431$d = (counter$q == 8'd0) ? v_x$0 : regs$431$q;
+      regs$431$d = (cnt$83$q == 8'd0) ? v_x$0 : regs$431$q;
       regs$432$clock = clock;
-      regs$432$d = (counter$q == 8'd0) ? v_y$0 : regs$432$q;
+      regs$432$d = (cnt$84$q == 8'd0) ? v_y$0 : regs$432$q;
       regs$433$clock = clock;
       regs$433$d = (cnt$11$q == 8'd8) ? mul_up$0$y : regs$433$q;
       regs$434$clock = clock;
@@ -10939,9 +11749,9 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
       regs$462$clock = clock;
       regs$462$d = (cnt$15$q == 8'd3) ? mul_up$2$y : regs$462$q;
       regs$463$clock = clock;
-      regs$463$d = (counter$q == 8'd0) ? scale : regs$463$q;
+      regs$463$d = (cnt$82$q == 8'd0) ? scale : regs$463$q;
       regs$464$clock = clock;
-      regs$464$d = (counter$q == 8'd0) ? v_z$0 : regs$464$q;
+      regs$464$d = (cnt$85$q == 8'd0) ? v_z$0 : regs$464$q;
       regs$465$clock = clock;
       regs$465$d = (cnt$17$q == 8'd8) ? mul_up$3$y : regs$465$q;
       regs$466$clock = clock;
@@ -11003,15 +11813,15 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
       regs$494$clock = clock;
       regs$494$d = (cnt$15$q == 8'd5) ? mul_up$2$y : regs$494$q;
       regs$495$clock = clock;
-      regs$495$d = (counter$q == 8'd0) ? m_0$3 : regs$495$q;
+      regs$495$d = (cnt$57$q == 8'd0) ? m_0$3 : regs$495$q;
       regs$496$clock = clock;
-      regs$496$d = (counter$q == 8'd0) ? m_1$3 : regs$496$q;
+      regs$496$d = (cnt$61$q == 8'd0) ? m_1$3 : regs$496$q;
       regs$497$clock = clock;
-      regs$497$d = (counter$q == 8'd0) ? m_2$3 : regs$497$q;
+      regs$497$d = (cnt$65$q == 8'd0) ? m_2$3 : regs$497$q;
       regs$498$clock = clock;
-      regs$498$d = (counter$q == 8'd0) ? v_x$1 : regs$498$q;
+      regs$498$d = (cnt$86$q == 8'd0) ? v_x$1 : regs$498$q;
       regs$499$clock = clock;
-      regs$499$d = (counter$q == 8'd0) ? v_y$1 : regs$499$q;
+      regs$499$d = (cnt$87$q == 8'd0) ? v_y$1 : regs$499$q;
       regs$500$clock = clock;
       regs$500$d = (cnt$21$q == 8'd9) ? mul_up$5$y : regs$500$q;
       regs$501$clock = clock;
@@ -11069,9 +11879,9 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
       regs$527$clock = clock;
       regs$527$d = (cnt$53$q == 8'd9) ? scale_s$0$y : regs$527$q;
       regs$528$clock = clock;
-      regs$528$d = (counter$q == 8'd0) ? scale : regs$528$q;
+      regs$528$d = (cnt$82$q == 8'd0) ? scale : regs$528$q;
       regs$529$clock = clock;
-      regs$529$d = (counter$q == 8'd0) ? v_z$1 : regs$529$q;
+      regs$529$d = (cnt$88$q == 8'd0) ? v_z$1 : regs$529$q;
       regs$530$clock = clock;
       regs$530$d = (cnt$35$q == 8'd13) ? add_up$1$y : regs$530$q;
       regs$531$clock = clock;
@@ -11139,9 +11949,9 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
       regs$562$clock = clock;
       regs$562$d = (cnt$45$q == 8'd11) ? add_up$6$y : regs$562$q;
       regs$563$clock = clock;
-      regs$563$d = (counter$q == 8'd0) ? v_x$2 : regs$563$q;
+      regs$563$d = (cnt$89$q == 8'd0) ? v_x$2 : regs$563$q;
       regs$564$clock = clock;
-      regs$564$d = (counter$q == 8'd0) ? v_y$2 : regs$564$q;
+      regs$564$d = (cnt$90$q == 8'd0) ? v_y$2 : regs$564$q;
       regs$565$clock = clock;
       regs$565$d = (cnt$35$q == 8'd9) ? add_up$1$y : regs$565$q;
       regs$566$clock = clock;
@@ -11199,9 +12009,9 @@ module top$tc(clock,m_0$0,m_0$1,m_0$2,m_0$3,m_1$0,m_1$1,m_1$2,m_1$3,m_2$0,m_2$1,
       regs$592$clock = clock;
       regs$592$d = (cnt$47$q == 8'd12) ? add_up$7$y : regs$592$q;
       regs$593$clock = clock;
-      regs$593$d = (counter$q == 8'd0) ? scale : regs$593$q;
+      regs$593$d = (cnt$82$q == 8'd0) ? scale : regs$593$q;
       regs$594$clock = clock;
-      regs$594$d = (counter$q == 8'd0) ? v_z$2 : regs$594$q;
+      regs$594$d = (cnt$91$q == 8'd0) ? v_z$2 : regs$594$q;
       regs$595$clock = clock;
       regs$595$d = (cnt$35$q == 8'd11) ? add_up$1$y : regs$595$q;
       regs$596$clock = clock;

@@ -174,6 +174,17 @@ impl Folds {
     }
 }
 
+/// `T / D`: TRI_UNIT's and the DOP unit's pair intervals, then `(fpga)` at FPGA depth.
+impl std::fmt::Display for Folds {
+    fn fmt(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+        write!(f, "{} / {}", self.tri, self.dop)?;
+        match self.depth {
+            Depth::Asic => Ok(()),
+            d => write!(f, " ({})", d.name()),
+        }
+    }
+}
+
 impl Default for Folds {
     fn default() -> Folds {
         Folds::NONE

@@ -43,9 +43,10 @@ pub fn tri_unit_plan(
 }
 
 /// The folded TRI_UNIT's latency from its shared T.CHECK's plan `p`: a pair taken at edge t
-/// has its second direction in the T.CHECK at t + p.ii, its result at the result FIFO's
-/// write port p.latency clocks later and at the output two clocks after (the FIFO's write
-/// and read registers, as in `TriUnit`).
+/// has its second direction in the T.CHECK at t + p.ii (at FPGA depth a clock later, behind
+/// the T.CHECK's input registers), its result at the result FIFO's write port p.latency
+/// clocks later and at the output two clocks after (the FIFO's write and read registers, as
+/// in `TriUnit`).
 pub fn tri_unit_latency(p: &plan::Plan) -> usize {
-    p.ii + p.latency + 2
+    p.ii + p.operand_regs() + p.latency + 2
 }

@@ -106,10 +106,29 @@ pub struct Plan {
 
 impl Plan {
     /// Registers between the operand multiplexers and the units: 0, or 1 at FPGA depth,
-    /// where each unit also counts on copies of the counter of its own (the RTL's `cnt`: one
-    /// for its operands' `case`, one for its results' chains, 2 `flat` and 2 `flat` + 1).
+    /// where the counter's decode is also spread over copies of it ([`counter_copy`](Self::counter_copy)).
     pub fn operand_regs(&self) -> usize {
         self.depth.operand_registers()
+    }
+
+    /// Copies of the control counter at FPGA depth (none at ASIC depth): per unit one for its
+    /// operands' `case` (2 `flat`) and one for its results' chains (2 `flat` + 1), then one
+    /// per input word for its chains.
+    pub fn counter_copies(&self) -> usize {
+        match self.operand_regs() {
+            0 => 0,
+            _ => 2 * self.unit_count() + super::ops::Inputs::<u64>::WORDS,
+        }
+    }
+
+    /// The copy of the counter that enables the chains of `src`, if there are copies and
+    /// `src` has one (a unit's results, an input word).
+    pub fn counter_copy(&self, src: Src) -> Option<usize> {
+        match (self.counter_copies(), src) {
+            (0, _) | (_, Src::Side) => None,
+            (_, Src::Unit(k, u)) => Some(2 * self.flat(k, u) + 1),
+            (_, Src::Input(n)) => Some(2 * self.unit_count() + n),
+        }
     }
 
     /// Unit `u` of class `k` numbered over all units ([`Class::ALL`]'s order).

@@ -124,16 +124,15 @@ fn registers_verilog(v: &mut String, p: &crate::fold::plan::Plan, units: [&str; 
         "  counter$d = (!(run$q | valid_in) || {c} == 8'd{}) ? 8'd0 : {c} + 8'd1;",
         p.ii - 1
     );
-    for i in 0..2 * p.unit_count() * p.operand_regs() {
+    for i in 0..p.counter_copies() {
         let _ = writeln!(v, "  cnt${i}$clock = clock;\n  cnt${i}$d = counter$d;");
     }
     let inputs = input_names();
     for ch in &p.words {
-        // a unit's result chains count on its own copy of the counter, if it has one
-        let en = match ch.src {
-            Src::Unit(k, u) if p.operand_regs() > 0 => format!("cnt${}$q", 2 * p.flat(k, u) + 1),
-            _ => c.to_string(),
-        };
+        // a unit's result chains and an input word's count on their own copy of the counter
+        let en = p
+            .counter_copy(ch.src)
+            .map_or(c.to_string(), |i| format!("cnt${i}$q"));
         for i in 0..ch.len {
             let r = ch.first + i;
             let src = match (i, ch.src) {
@@ -399,9 +398,10 @@ macro_rules! tcheck_fold {
                 exact: Vec<DFF<Bit>>,
                 valid: Vec<DFF<Bit>>,
                 tags: Vec<DFF<Bits<32>>>,
-                // at FPGA depth (`Plan::operand_regs`), else none: per unit two copies of the
-                // counter and its operand registers (`b` of the multipliers and adders, `sub` of
-                // the adders, `sel` of the constant multipliers, each numbered over those units)
+                // at FPGA depth (`Plan::operand_regs`), else none: copies of the counter
+                // (`Plan::counter_copies`) and each unit's operand registers (`b` of the
+                // multipliers and adders, `sub` of the adders, `sel` of the constant
+                // multipliers, each numbered over those units)
                 cnt: Vec<$crate::rtl::tcheck_fold::KeptDff<Bits<8>>>,
                 op_a: Vec<DFF<Bits<$W>>>,
                 op_b: Vec<DFF<Bits<$W>>>,
@@ -437,7 +437,7 @@ macro_rules! tcheck_fold {
                 $crate::rtl::tcheck::tcheck_new! { Self {
                     run: Default::default(),
                     counter: Default::default(),
-                    cnt: (0..regs(2 * plan.unit_count())).map(|_| $crate::rtl::tcheck_fold::KeptDff::new(true)).collect(),
+                    cnt: (0..plan.counter_copies()).map(|_| $crate::rtl::tcheck_fold::KeptDff::new(true)).collect(),
                     op_a: (0..regs(plan.unit_count())).map(|_| Default::default()).collect(),
                     op_b: (0..regs(u[..4].iter().sum())).map(|_| Default::default()).collect(),
                     op_sub: (0..regs(u[2] + u[3])).map(|_| Default::default()).collect(),

@@ -37,15 +37,28 @@ fn word_verilog(ba: bool, i: usize) -> String {
 /// The module body of a folded TRI_UNIT whose T.CHECK is folded for `half` (the pair
 /// interval is 2 half) with latency `tc_latency`: the counter, the frame registers, the held
 /// second direction, the T.CHECK's inputs, the first direction's verdict register, the
-/// result FIFO's ports and its count (the logic `update` simulates).
-pub(crate) fn body_verilog(half: usize, tc_latency: usize) -> String {
+/// result FIFO's ports and its count (the logic `update` simulates). With `staged` (at FPGA
+/// depth) the T.CHECK's inputs are registered (`tin`, `tin_bits`: `v_exact`, `valid_in`;
+/// `tin_tag`), and the counter's two decodes that select them and enable the held direction
+/// are registered flags (`flags`: counter not 0, counter at `half`), taken from its next value.
+pub(crate) fn body_verilog(half: usize, tc_latency: usize, staged: bool) -> String {
     use std::fmt::Write;
     let ii = 2 * half;
     let full = 1usize << crate::chip::rtl::TRI_FIFO_BITS;
     let c = "counter$q";
     let take = format!("(in_valid && {c} == 8'd0 && count$q != 9'd{full})");
     let give = "(out_ready && !fifo$empty)";
-    let phase = format!("({c} == 8'd{half})");
+    let (at0, phase) = match staged {
+        false => (format!("({c} == 8'd0)"), format!("({c} == 8'd{half})")),
+        true => ("!flags$0$q".to_string(), "flags$1$q".to_string()),
+    };
+    // a T.CHECK input: the port itself, or a register's input and the port from it
+    let tc_in = |v: &mut String, port: &str, reg: &str, value: String| {
+        let _ = match staged {
+            false => writeln!(v, "  tc${port} = {value};"),
+            true => writeln!(v, "  {reg}$clock = clock;\n  {reg}$d = {value};\n  tc${port} = {reg}$q;"),
+        };
+    };
     let mut v = String::new();
     let _ = writeln!(
         v,
@@ -60,40 +73,36 @@ pub(crate) fn body_verilog(half: usize, tc_latency: usize) -> String {
         "  counter$d = (!(run$q | {take}) || {c} == 8'd{}) ? 8'd0 : {c} + 8'd1;",
         ii - 1
     );
+    if staged {
+        let _ = writeln!(v, "  flags$0$clock = clock;\n  flags$0$d = counter$d != 8'd0;\n  flags$1$clock = clock;\n  flags$1$d = counter$d == 8'd{half};");
+    }
     for k in 0..FRAME_REGS {
         let _ = writeln!(v, "  frame${k}$clock = clock;\n  frame${k}$d = (load_en && load_addr == 5'd{}) ? load_data : frame${k}$q;", frame_addr(k));
     }
     for (i, name) in input_names().iter().enumerate() {
         let _ = writeln!(
             v,
-            "  held${i}$clock = clock;\n  held${i}$d = ({c} == 8'd0) ? {} : held${i}$q;",
+            "  held${i}$clock = clock;\n  held${i}$d = {at0} ? {} : held${i}$q;",
             word_verilog(true, i)
         );
-        let _ = writeln!(
-            v,
-            "  tc${name} = {phase} ? held${i}$q : {};",
-            word_verilog(false, i)
-        );
+        let value = format!("{phase} ? held${i}$q : {}", word_verilog(false, i));
+        tc_in(&mut v, name, &format!("tin${i}"), value);
     }
     for (r, src) in [
         ("held_exact", "b_v_exact"),
         ("held_tag", "tag"),
         ("held_valid", take.as_str()),
     ] {
-        let _ = writeln!(
-            v,
-            "  {r}$clock = clock;\n  {r}$d = ({c} == 8'd0) ? {src} : {r}$q;"
-        );
+        let _ = writeln!(v, "  {r}$clock = clock;\n  {r}$d = {at0} ? {src} : {r}$q;");
     }
-    let _ = writeln!(
-        v,
-        "  tc$clock = clock;\n  tc$v_exact = {phase} ? held_exact$q : a_v_exact;"
-    );
-    let _ = writeln!(
-        v,
-        "  tc$tag = {phase} ? held_tag$q : {{30'd0, a_degenerate, b_degenerate}};"
-    );
-    let _ = writeln!(v, "  tc$valid_in = {phase} ? held_valid$q : {take};");
+    let _ = writeln!(v, "  tc$clock = clock;");
+    let exact = format!("{phase} ? held_exact$q : a_v_exact");
+    tc_in(&mut v, "v_exact", "tin_bits$0", exact);
+    let tag = format!("{phase} ? held_tag$q : {{30'd0, a_degenerate, b_degenerate}}");
+    tc_in(&mut v, "tag", "tin_tag$0", tag);
+    tc_in(&mut v, "valid_in", "tin_bits$1", format!("{phase} ? held_valid$q : {take}"));
+    // the verdicts come a clock later behind the input registers
+    let tc_latency = tc_latency + staged as usize;
     let first = format!("(tc$valid_out && {c} == 8'd{})", tc_latency % ii);
     for (r, val) in [
         ("ab_t", "tc$hit & !tc$tag_out[0]"),
@@ -169,6 +178,13 @@ macro_rules! tri_unit_fold {
                 held_exact: DFF<Bit>,
                 held_tag: DFF<Bits<32>>,
                 held_valid: DFF<Bit>,
+                // at FPGA depth (`Plan::operand_regs`), else none: the T.CHECK's inputs
+                // registered (`tin_bits`: `v_exact`, `valid_in`) and the counter's decodes as
+                // flags (not 0; at ii / 2)
+                tin: Vec<DFF<Bits<$W>>>,
+                tin_bits: Vec<DFF<Bit>>,
+                tin_tag: Vec<DFF<Bits<32>>>,
+                flags: Vec<DFF<Bit>>,
                 tc: $TCheck,
                 // the first direction's verdict (masked by B's degenerate flag) and A's flag
                 ab_t: DFF<Bit>,
@@ -187,6 +203,7 @@ macro_rules! tri_unit_fold {
             /// A folded TRI_UNIT on a T.CHECK built from `plan` ([`crate::fold::tri_unit_plan`]),
             /// its value datapath rounding with `rounding`.
             pub fn new(plan: $crate::fold::plan::Plan, rounding: Rounding) -> Self {
+                let staged = plan.operand_regs();
                 $crate::rtl::tri_unit::tri_unit_new! { Self {
                     run: Default::default(),
                     counter: Default::default(),
@@ -195,6 +212,10 @@ macro_rules! tri_unit_fold {
                     held_exact: Default::default(),
                     held_tag: Default::default(),
                     held_valid: Default::default(),
+                    tin: (0..staged * $crate::rtl::tri_unit_fold::WORDS).map(|_| Default::default()).collect(),
+                    tin_bits: (0..2 * staged).map(|_| Default::default()).collect(),
+                    tin_tag: (0..staged).map(|_| Default::default()).collect(),
+                    flags: (0..2 * staged).map(|_| Default::default()).collect(),
                     tc: $TCheck::new(plan, rounding),
                     ab_t: Default::default(),
                     ab_f: Default::default(),
@@ -253,7 +274,12 @@ macro_rules! tri_unit_fold {
                 let run = self.run.q.val() | take;
                 (self.run.clock.next, self.run.d.next) = (clock, run);
                 self.counter.clock.next = clock;
-                self.counter.d.next = (if run { ((c + 1) % ii) as u64 } else { 0 }).into();
+                let next = if run { (c + 1) % ii } else { 0 };
+                self.counter.d.next = (next as u64).into();
+                let staged = !self.flags.is_empty();
+                for (r, v) in self.flags.iter_mut().zip([next != 0, next == half]) {
+                    (r.clock.next, r.d.next) = (clock, v);
+                }
                 // ---- per-query registers: hold, or load through the write port
                 let (en, addr, data) = (self.load_en.val(), self.load_addr.val().to_u64() as usize, self.load_data.val());
                 for (k, r) in self.frame.iter_mut().enumerate() {
@@ -266,7 +292,14 @@ macro_rules! tri_unit_fold {
                     let (ba, ab) = (self.word(true, i), self.word(false, i));
                     let q = self.held[i].q.val();
                     (self.held[i].clock.next, self.held[i].d.next) = (clock, if c0 { ba.into() } else { q });
-                    self.tc.input_mut(i).next = if phase { q } else { ab.into() };
+                    let v = if phase { q } else { ab.into() };
+                    self.tc.input_mut(i).next = match self.tin.get_mut(i) {
+                        Some(r) => {
+                            (r.clock.next, r.d.next) = (clock, v);
+                            r.q.val()
+                        }
+                        None => v,
+                    };
                 }
                 let (ex, tg, vl) = (self.held_exact.q.val(), self.held_tag.q.val(), self.held_valid.q.val());
                 (self.held_exact.clock.next, self.held_exact.d.next) = (clock, if c0 { self.b_v_exact.val() } else { ex });
@@ -274,7 +307,19 @@ macro_rules! tri_unit_fold {
                 (self.held_valid.clock.next, self.held_valid.d.next) = (clock, if c0 { take } else { vl });
                 let deg = (self.a_degenerate.val() as u64) << 1 | self.b_degenerate.val() as u64;
                 self.tc.clock.next = clock;
-                (self.tc.v_exact.next, self.tc.tag.next, self.tc.valid_in.next) = if phase { (ex, tg, vl) } else { (self.a_v_exact.val(), deg.into(), take) };
+                let (ex, tg, vl) = if phase { (ex, tg, vl) } else { (self.a_v_exact.val(), deg.into(), take) };
+                (self.tc.v_exact.next, self.tc.tag.next, self.tc.valid_in.next) = match staged {
+                    false => (ex, tg, vl),
+                    true => {
+                        for (r, d) in self.tin_bits.iter_mut().zip([ex, vl]) {
+                            (r.clock.next, r.d.next) = (clock, d);
+                        }
+                        (self.tin_tag[0].clock.next, self.tin_tag[0].d.next) = (clock, tg);
+                        (self.tin_bits[0].q.val(), self.tin_tag[0].q.val(), self.tin_bits[1].q.val())
+                    }
+                };
+                // the verdicts come a clock later behind the input registers
+                let tc_latency = tc_latency + staged as usize;
                 // ---- verdict: Kleene OR of the directions (a degenerate leaf: unknown)
                 let (vo, hit, miss, tag) = (self.tc.valid_out.val(), self.tc.hit.val(), self.tc.miss.val(), self.tc.tag_out.val());
                 let first = vo && c == tc_latency % ii;
@@ -305,7 +350,13 @@ macro_rules! tri_unit_fold {
                 for r in [&mut self.run, &mut self.held_exact, &mut self.held_valid, &mut self.ab_t, &mut self.ab_f, &mut self.a_deg] {
                     (r.clock.connect(), r.d.connect());
                 }
-                for r in self.frame.iter_mut().chain(&mut self.held) {
+                for r in self.frame.iter_mut().chain(&mut self.held).chain(&mut self.tin) {
+                    (r.clock.connect(), r.d.connect());
+                }
+                for r in self.tin_bits.iter_mut().chain(&mut self.flags) {
+                    (r.clock.connect(), r.d.connect());
+                }
+                for r in &mut self.tin_tag {
                     (r.clock.connect(), r.d.connect());
                 }
                 (self.counter.clock.connect(), self.counter.d.connect());
@@ -320,7 +371,8 @@ macro_rules! tri_unit_fold {
             }
 
             fn hdl(&self) -> Verilog {
-                Verilog::Custom($crate::rtl::tri_unit_fold::body_verilog(self.tc.plan.0.ii, self.tc.plan.0.latency))
+                let p = &self.tc.plan.0;
+                Verilog::Custom($crate::rtl::tri_unit_fold::body_verilog(p.ii, p.latency, p.operand_regs() > 0))
             }
         }
 

@@ -668,15 +668,14 @@ pub fn table(plan: &Plan, rows: &[Row], area: Option<&Area>) -> Result<String, S
             .map_or("-".into(), |a| format!("{a:.0}"));
         let _ = write!(
             out,
-            "| {} | {} | {} | {} | {} | {} | {} / {} | {} | {:.1} | {:.0} | {:.1} | {:.1}% | {:.2}% | {} / {} / {} | {} | {} | {:.1} | {:.0} | {:.3} {} | {:.1} | {:.1} | {:.1} | {um2} |",
+            "| {} | {} | {} | {} | {} | {} | {} | {} | {:.1} | {:.0} | {:.1} | {:.1}% | {:.2}% | {} / {} / {} | {} | {} | {:.1} | {:.0} | {:.3} {} | {:.1} | {:.1} | {:.1} | {um2} |",
             row.mesh,
             row.memory_name(),
             row.k,
             row.format,
             row.dop_rounding,
             row.dop_bits,
-            row.folds.tri,
-            row.folds.dop,
+            row.folds,
             r.queries,
             r.exact_pairs as f64 / q,
             r.dop_tests as f64 / q,
@@ -731,7 +730,7 @@ pub fn clocks(rows: &[Row]) -> String {
         let fold = if r.folds == Folds::NONE {
             String::new()
         } else {
-            format!(", pair intervals {} / {}", r.folds.tri, r.folds.dop)
+            format!(", pair intervals {}", r.folds)
         };
         let bits = match r.dop_bits {
             DopBits::Full => String::new(),
