@@ -7,7 +7,7 @@
 # Usage: scripts/fpga.sh rtl/<unit>.v ...    (needs `apt-get install -y yosys nextpnr-ice40`)
 # Logs and reports in target/fpga/<unit>/. Exits non-zero if a tool fails on a unit that fits.
 #
-# scripts/fpga.sh --ecp5 [--timeout SECONDS] [--placer P] [--no-tmdriv] rtl/<unit>.v ...
+# scripts/fpga.sh --ecp5 [--timeout SECONDS] [--placer P] [--no-tmdriv] [--seed N] rtl/<unit>.v ...
 #   A Lattice LFE5U-85F instead (a whole chip fits: docs/guide/timing-and-fpga.md): the ECP5 flow of
 #   scripts/timing-ecp5.sh (YoWASP Yosys, flat synth_ecp5; nextpnr-ecp5 out of context,
 #   router2), its row into docs/figures/timing_ecp5.csv, and one line per unit: LUT4s,
@@ -27,6 +27,7 @@ if [ "${1:-}" = --ecp5 ]; then
       --timeout) timeout=$2; shift 2 ;;
       --placer) place[1]=$2; shift 2 ;;
       --no-tmdriv) place+=(--no-tmdriv); shift ;;
+      --seed) place+=(--seed "$2"); shift 2 ;;
       *) break ;;
     esac
   done

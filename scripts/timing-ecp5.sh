@@ -7,7 +7,7 @@
 #   YOSYS=yosys NEXTPNR=nextpnr-ecp5)
 # Per unit rtl/<unit>.v (top module `top`):
 #   yosys:   read_verilog; synth_ecp5 -top top -json (flat; multipliers into MULT18X18D)
-#   nextpnr: --85k --out-of-context --freq 100 --seed 1 --timing-allow-fail --router router2
+#   nextpnr: --85k --out-of-context --freq 100 --seed 1 (--seed) --timing-allow-fail --router router2
 #            --placer heap --report (--placer, --no-tmdriv: below)
 #            (out of context: no I/O buffers, so a unit is not limited by the package's pins;
 #            its ports are the boundary, as for the ASIC numbers)
@@ -19,7 +19,7 @@
 # Work files: target/timing-ecp5/<unit>/ (yosys.log, <unit>.json, nextpnr.log, report.json).
 #
 # Usage: scripts/timing-ecp5.sh [--units PATTERNS] [--out FILE] [--timeout SECONDS] [--router R]
-#                               [--placer P] [--no-tmdriv]
+#                               [--placer P] [--no-tmdriv] [--seed N]
 #   --units    space-separated shell globs on the unit name (default
 #              'fp_* doptrf_* dop_unit_k6_* pair_queue_* tcheck_e8m15_*'); bigger units run
 #              out of the device or the time
@@ -29,6 +29,8 @@
 #              router1 left 230,000 arcs of the folded TRI_UNIT unrouted after 90)
 #   --placer   nextpnr's placer (default heap; static: nextpnr's electrostatic placer, which
 #              placed the whole chip routably where heap's placements did not: docs/guide/timing-and-fpga.md)
+#   --seed     nextpnr's seed (default 1); another is recorded in the row's `placer` column
+#              (`static,seed2`)
 #   --no-tmdriv  place without timing (routing still reports the Fmax); the row's `placer`
 #              column records both, e.g. `static,no-tmdriv`
 #   MEM_KB     virtual memory limit per tool run (ulimit -v; default none: YoWASP's WebAssembly
@@ -46,6 +48,7 @@ TIMEOUT=1200
 ROUTER=router2
 PLACER=heap
 TMDRIV=()
+SEED=1
 while [ $# -gt 0 ]; do
   case $1 in
     --units) UNITS=$2; shift 2 ;;
@@ -54,6 +57,7 @@ while [ $# -gt 0 ]; do
     --router) ROUTER=$2; shift 2 ;;
     --placer) PLACER=$2; shift 2 ;;
     --no-tmdriv) TMDRIV=(--no-tmdriv); shift ;;
+    --seed) SEED=$2; shift 2 ;;
     -h|--help) sed -n '2,/^$/p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 2 ;;
     *) echo "timing-ecp5.sh: unknown argument $1 (see --help)" >&2; exit 2 ;;
   esac
@@ -76,7 +80,7 @@ for pat in $UNITS; do
     t0=$(date +%s); st=ok
     cp "$f" "$w/"   # YoWASP's tools see the working directory only: relative paths
     rc=0; (cd "$w" && run "$YOSYS" -q -l yosys.log -p "read_verilog $unit.v; synth_ecp5 -top top -json $unit.json") >/dev/null 2>&1 || rc=$?
-    [ $rc -eq 0 ] && { (cd "$w" && run "$NEXTPNR" --85k --out-of-context --freq 100 --seed 1 --timing-allow-fail \
+    [ $rc -eq 0 ] && { (cd "$w" && run "$NEXTPNR" --85k --out-of-context --freq 100 --seed "$SEED" --timing-allow-fail \
         --router "$ROUTER" --placer "$PLACER" "${TMDRIV[@]}" --json "$unit.json" --report report.json) >"$w/nextpnr.log" 2>&1 || rc=$?; }
     if [ $rc -eq 124 ]; then st=timeout
     elif [ $rc -ne 0 ] && grep -qiE "Unable to (place|find a placement)|exceeds|too many|not enough" "$w/nextpnr.log" 2>/dev/null; then st=no_fit
@@ -84,6 +88,7 @@ for pat in $UNITS; do
     [ $st = ok ] || [ $st = no_fit ] || status=1
     sha=$(sha256sum "$f" | cut -d' ' -f1)
     placer=$PLACER${TMDRIV:+,no-tmdriv}
+    [ "$SEED" = 1 ] || placer=$placer,seed$SEED
     "$PY" - "$unit" "$w/report.json" "$st" "$(( $(date +%s) - t0 ))" "$sha" "$placer" >> "$NEW" <<'PY'
 import json, os, re, sys
 unit, report, st, secs, sha, placer = sys.argv[1:7]
