@@ -56,7 +56,10 @@ pub(crate) fn body_verilog(half: usize, tc_latency: usize, staged: bool) -> Stri
     let tc_in = |v: &mut String, port: &str, reg: &str, value: String| {
         let _ = match staged {
             false => writeln!(v, "  tc${port} = {value};"),
-            true => writeln!(v, "  {reg}$clock = clock;\n  {reg}$d = {value};\n  tc${port} = {reg}$q;"),
+            true => writeln!(
+                v,
+                "  {reg}$clock = clock;\n  {reg}$d = {value};\n  tc${port} = {reg}$q;"
+            ),
         };
     };
     let mut v = String::new();
@@ -100,7 +103,12 @@ pub(crate) fn body_verilog(half: usize, tc_latency: usize, staged: bool) -> Stri
     tc_in(&mut v, "v_exact", "tin_bits$0", exact);
     let tag = format!("{phase} ? held_tag$q : {{30'd0, a_degenerate, b_degenerate}}");
     tc_in(&mut v, "tag", "tin_tag$0", tag);
-    tc_in(&mut v, "valid_in", "tin_bits$1", format!("{phase} ? held_valid$q : {take}"));
+    tc_in(
+        &mut v,
+        "valid_in",
+        "tin_bits$1",
+        format!("{phase} ? held_valid$q : {take}"),
+    );
     // the verdicts come a clock later behind the input registers
     let tc_latency = tc_latency + staged as usize;
     let first = format!("(tc$valid_out && {c} == 8'd{})", tc_latency % ii);

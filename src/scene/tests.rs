@@ -475,7 +475,10 @@ fn tri_interval_key() {
         fpga.unwrap().0,
         crate::chip::rtl::ChipKind::K6E8m15Dop6Tri32Fpga
     );
-    assert!(e.contains("6 and 32 at depth = \"fpga\" (chip_e8m15_k6_dop6_tri32_fpga)"), "{e}");
+    assert!(
+        e.contains("6 and 32 at depth = \"fpga\" (chip_e8m15_k6_dop6_tri32_fpga)"),
+        "{e}"
+    );
 }
 
 /// `[timing] depth`: "fpga" gives the folded units their FPGA-depth latencies (the
@@ -496,8 +499,14 @@ fn depth_key() {
         s.configuration()
     );
     for (keys, want) in [
-        ("depth = \"fpga\"", "s:12: [timing] depth = \"fpga\" cuts T.CHECK's units for the folded TRI_UNIT"),
-        ("tri_interval = 32\ndepth = \"fpga\"\ndop_latency = 15", "s:14: [timing] dop_latency is the DOP unit's latency at ASIC depth"),
+        (
+            "depth = \"fpga\"",
+            "s:12: [timing] depth = \"fpga\" cuts T.CHECK's units for the folded TRI_UNIT",
+        ),
+        (
+            "tri_interval = 32\ndepth = \"fpga\"\ndop_latency = 15",
+            "s:14: [timing] dop_latency is the DOP unit's latency at ASIC depth",
+        ),
         ("depth = \"deep\"", "unknown variant `deep`"),
     ] {
         let e = Scene::parse(&format!("{base}{keys}\n"), "s").unwrap_err();

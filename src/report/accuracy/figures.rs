@@ -32,7 +32,12 @@ fn fold_label(f: Folds) -> String {
     if f == Folds::NONE {
         String::new()
     } else {
-        format!(", ii {}/{}{}", f.tri, f.dop, f.depth.tag().replace('_', " "))
+        format!(
+            ", ii {}/{}{}",
+            f.tri,
+            f.dop,
+            f.depth.tag().replace('_', " ")
+        )
     }
 }
 
