@@ -11,7 +11,7 @@ hand. Python's standard library only.
 Data: docs/figures/timing.csv, timing_config.csv (scripts/timing-study.sh),
 timing_ecp5.csv (scripts/timing-ecp5.sh, scripts/fpga.sh), area_cells.csv
 (scripts/area-study.sh), accuracy_cycles_uncertain.csv and accuracy_cycles_area.csv (cchip accuracy --plot),
-accuracy_time.json, fold_k24.json and fold_k6.json (cchip accuracy --json),
+accuracy_time.json, fold_k24.json, fold_k6.json, depth_osu018.json and depth_ecp5.json (cchip accuracy --json),
 stored_dops_paper.json and stored_dops_osu018.json (cchip accuracy --dop-bits ... --json) and bench.jsonl
 (the benches' rows: `cargo bench` writes target/bench/<bench>.jsonl, one JSON line per row
 with its date, CPU and commit; a run is published by appending its lines to bench.jsonl).
@@ -309,6 +309,24 @@ def accuracy_time():
                "end to end; `docs/figures/accuracy_time.json` (host time measured on a 2-core machine: noisy)")
 
 
+def depth_study():
+    """The FPGA chip's depths on both targets (outward DOP rounding): per mesh, target and depth,
+    clocks, period and chip microseconds per query."""
+    body = []
+    for tech, name in (("osu018", "OSU 0.18 um"), ("ecp5", "ECP5")):
+        with open(FIG / f"depth_{tech}.json") as f:
+            for r in json.load(f):
+                if r["dop_rounding"] != "outward":
+                    continue
+                chip, _ = per_query_us(r)
+                body.append([r["mesh"], name, r["folds"].get("depth", "asic"), n(round(r["cycles"] / r["queries"])),
+                             f"{r['period_ns']:.3f} ({r['period_source']})", f"{chip:,.1f}"])
+    return table(["mesh", "target", "depth", "cycles / query", "period (ns)", "chip us / query"], body) + "\n\n" + \
+        source("`cchip accuracy --meshes bunny,dragon-11k --presets date05 --formats e8m15 --k 6 --dop-intervals 6 "
+               "--tri-intervals 32 --depths asic,fpga --technology osu018 --json` (then `ecp5`); "
+               "`docs/figures/depth_osu018.json`, `depth_ecp5.json`")
+
+
 def dop_unit_cells():
     """The unfolded DOP unit's cells by k and format (the area study's rows)."""
     cells = {r["unit"]: r["cells"] for r in rows("area_cells.csv")}
@@ -341,7 +359,7 @@ def fold_sweep():
                "`fold_k6.json`; each cell: cells / clocks per query / end-to-end time per query (period ns)")
 
 
-TABLES = {"accuracy-sweep": accuracy_sweep, "fold-sweep": fold_sweep, "dop-unit-cells": dop_unit_cells, "accuracy-time": accuracy_time, "timing": timing, "timing-config": timing_config, "ecp5": ecp5, "fpga-depth": fpga_depth, "area": area,
+TABLES = {"accuracy-sweep": accuracy_sweep, "fold-sweep": fold_sweep, "dop-unit-cells": dop_unit_cells, "accuracy-time": accuracy_time, "timing": timing, "timing-config": timing_config, "ecp5": ecp5, "fpga-depth": fpga_depth, "depth-study": depth_study, "area": area,
           "chip-sim": chip_sim, "golden-vs-parry": golden_vs_parry, "headline": headline,
           "stored-dops": stored_dops}
 

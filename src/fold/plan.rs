@@ -131,6 +131,41 @@ impl Plan {
         }
     }
 
+    /// The operand registers of a unit of class `k` at FPGA depth: `a` and `b` of a
+    /// multiplier, those and `sub` of an adder, `a` and `sel` of a constant multiplier.
+    pub fn operand_ports(k: usize) -> &'static [&'static str] {
+        match k {
+            0 | 1 => &["a", "b"],
+            2 | 3 => &["a", "b", "sub"],
+            _ => &["a", "sel"],
+        }
+    }
+
+    /// Operand `port`'s register of unit `u` of class `k`, the registers of each port numbered
+    /// over the units that have it (classes in [`Class::ALL`]'s order: multipliers, adders,
+    /// constant multipliers).
+    pub fn operand_reg(&self, k: usize, u: usize, port: &str) -> usize {
+        let g = self.flat(k, u);
+        match port {
+            "sub" => g - self.units[..2].iter().sum::<usize>(),
+            "sel" => g - self.units[..4].iter().sum::<usize>(),
+            _ => g,
+        }
+    }
+
+    /// Operand `port`'s registers in all: none at ASIC depth.
+    pub fn operand_reg_count(&self, port: &str) -> usize {
+        (0..7)
+            .filter(|&k| Plan::operand_ports(k).contains(&port))
+            .map(|k| self.units[k] * self.operand_regs())
+            .sum()
+    }
+
+    /// The copy of the counter on which unit `u` of class `k` selects its operands.
+    pub fn operand_counter_copy(&self, k: usize, u: usize) -> usize {
+        2 * self.flat(k, u)
+    }
+
     /// Unit `u` of class `k` numbered over all units ([`Class::ALL`]'s order).
     pub fn flat(&self, k: usize, u: usize) -> usize {
         self.units[..k].iter().sum::<usize>() + u

@@ -240,16 +240,10 @@ fn operand_target(
     unit: &str,
     port: &str,
 ) -> String {
-    if p.operand_regs() == 0 {
-        return format!("{unit}${port}");
+    match p.operand_regs() {
+        0 => format!("{unit}${port}"),
+        _ => format!("op_{port}${}$d", p.operand_reg(k, u, port)),
     }
-    let g = p.flat(k, u);
-    let i = match port {
-        "sub" => g - p.units[0] - p.units[1],
-        "sel" => g - p.units[..4].iter().sum::<usize>(),
-        _ => g,
-    };
-    format!("op_{port}${i}$d")
 }
 
 /// The operand registers of unit `u` of class `k` (port prefix `unit`): their clocks and the
@@ -262,17 +256,11 @@ fn operand_registers_verilog(
     unit: &str,
 ) -> String {
     use std::fmt::Write;
-    let ports: &[&str] = match k {
-        0 | 1 => &["a", "b"],
-        2 | 3 => &["a", "b", "sub"],
-        _ => &["a", "sel"],
-    };
-    for port in ports {
-        let r = operand_target(p, k, u, unit, port);
-        let r = r.trim_end_matches("$d");
+    for port in crate::fold::plan::Plan::operand_ports(k) {
+        let r = format!("op_{port}${}", p.operand_reg(k, u, port));
         let _ = writeln!(v, "  {r}$clock = clock;\n  {unit}${port} = {r}$q;");
     }
-    format!("cnt${}$q", 2 * p.flat(k, u))
+    format!("cnt${}$q", p.operand_counter_copy(k, u))
 }
 
 /// [`body_verilog`]'s last part: the signs' inputs, the output registers taken at the
@@ -433,15 +421,14 @@ macro_rules! tcheck_fold {
                 let cert = $crate::golden::certificate::Certificate::new(FORMAT, rounding);
                 let up = Rounding::TowardPositive;
                 let u = plan.units;
-                let regs = |n: usize| if plan.operand_regs() > 0 { n } else { 0 };
                 $crate::rtl::tcheck::tcheck_new! { Self {
                     run: Default::default(),
                     counter: Default::default(),
                     cnt: (0..plan.counter_copies()).map(|_| $crate::rtl::tcheck_fold::KeptDff::new(true)).collect(),
-                    op_a: (0..regs(plan.unit_count())).map(|_| Default::default()).collect(),
-                    op_b: (0..regs(u[..4].iter().sum())).map(|_| Default::default()).collect(),
-                    op_sub: (0..regs(u[2] + u[3])).map(|_| Default::default()).collect(),
-                    op_sel: (0..regs(u[4] + u[5] + u[6])).map(|_| Default::default()).collect(),
+                    op_a: (0..plan.operand_reg_count("a")).map(|_| Default::default()).collect(),
+                    op_b: (0..plan.operand_reg_count("b")).map(|_| Default::default()).collect(),
+                    op_sub: (0..plan.operand_reg_count("sub")).map(|_| Default::default()).collect(),
+                    op_sel: (0..plan.operand_reg_count("sel")).map(|_| Default::default()).collect(),
                     regs: (0..plan.word_regs()).map(|_| $crate::rtl::tcheck_fold::KeptDff::new(plan.binding == $crate::fold::plan::Binding::PerReader)).collect(),
                     exact: (0..plan.exact.len).map(|_| Default::default()).collect(),
                     valid: (0..plan.valid.len).map(|_| Default::default()).collect(),
@@ -543,27 +530,29 @@ macro_rules! tcheck_fold {
                     return self.issue(k, u, a, b, sub, sel);
                 }
                 let clock = self.clock.val();
-                let g = self.plan.0.flat(k, u);
-                let r = &mut self.op_a[g];
+                let i = self.plan.0.operand_reg(k, u, "a");
+                let r = &mut self.op_a[i];
                 (r.clock.next, r.d.next) = (clock, a.into());
-                let a = r.q.val().to_u64();
-                let (mut b2, mut sub2, mut sel2) = (0, false, false);
+                let (a2, mut b2, mut sub2, mut sel2) = (r.q.val().to_u64(), 0, false, false);
                 if k < 4 {
-                    let r = &mut self.op_b[g];
+                    let i = self.plan.0.operand_reg(k, u, "b");
+                    let r = &mut self.op_b[i];
                     (r.clock.next, r.d.next) = (clock, b.into());
                     b2 = r.q.val().to_u64();
                 }
                 if k == 2 || k == 3 {
-                    let r = &mut self.op_sub[g - self.plan.0.units[0] - self.plan.0.units[1]];
+                    let i = self.plan.0.operand_reg(k, u, "sub");
+                    let r = &mut self.op_sub[i];
                     (r.clock.next, r.d.next) = (clock, sub);
                     sub2 = r.q.val();
                 }
                 if k >= 4 {
-                    let r = &mut self.op_sel[g - self.plan.0.units[..4].iter().sum::<usize>()];
+                    let i = self.plan.0.operand_reg(k, u, "sel");
+                    let r = &mut self.op_sel[i];
                     (r.clock.next, r.d.next) = (clock, sel);
                     sel2 = r.q.val();
                 }
-                self.issue(k, u, a, b2, sub2, sel2)
+                self.issue(k, u, a2, b2, sub2, sel2)
             }
 
             /// Drives unit `u` of class `k`: operands, `sub`, `sel`.
