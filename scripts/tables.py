@@ -110,7 +110,7 @@ def fpga_depth():
              f"{float(fmax[u]) / float(fmax[u.replace('_fpga', '')]):.2f}x" if u.replace("_fpga", "") in fmax else ""]
             for u in sorted(fmax) if "_fpga" in u]
     fp = lambda deep: [float(f) for u, f in fmax.items() if u.startswith("fp_") and ("_fpga" in u) == deep
-                       and not u.startswith("fp_scale")]
+                       and not u.startswith(("fp_scale", "fp_cmp"))]
     span = lambda xs: f"{min(xs):.1f}-{max(xs):.1f} MHz"
     return table(["unit at FPGA depth", "at ASIC depth", "Fmax, ASIC depth (MHz)", "Fmax, FPGA depth (MHz)", "ratio"], body) + \
         "\n\n" + source(f"Lattice LFE5U-85F, seed 1; `docs/figures/timing_ecp5.csv`, measured by `scripts/timing-ecp5.sh`. "

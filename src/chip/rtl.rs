@@ -11,6 +11,11 @@ use crate::format::{Format, Rounding};
 pub const FP_MUL_LATENCY: usize = 4;
 pub const FP_ADD_LATENCY: usize = 3;
 pub const FP_SCALE_LATENCY: usize = 4;
+/// WSCG'03's compare unit, `FpCmp` (`a + b < 0` by a comparison: its output register).
+pub const FP_CMP_LATENCY: usize = 1;
+/// WSCG'03's compare bank (`rtl::b32::CompareBank`): the compare units, then the flags ORed
+/// over a DOP's bundles; a bundle's verdicts so far two clocks after it.
+pub const COMPARE_BANK_LATENCY: usize = FP_CMP_LATENCY + 1;
 
 /// How deep the floating-point units are cut, per target. The values are the same bit for
 /// bit at every depth; only the latencies differ.

@@ -27,8 +27,8 @@ impl Architecture {
 /// WSCG'03's timing. The paper gives the DOTADD pipeline (§5.2: 6 stages), the on-chip
 /// data bus (§4.1: 256 bits, so an aligned DOP against the tumbled pair takes 4 clocks at
 /// k = 24, binary32), the Memory Controller's buffer (§4.4: a node pair) and the Triangle
-/// Unit's rate (§4.3: a pair every 3 clocks); the rest is our assumption
-/// (docs/explanation/architecture.md, "WSCG'03's chip").
+/// Unit's rate (§4.3: a pair every 3 clocks); the RTL's compare bank gives the compare
+/// latency; the rest is our assumption (docs/explanation/architecture.md, "WSCG'03's chip").
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct StackParams {
@@ -41,8 +41,9 @@ pub struct StackParams {
     /// The DOP Unit's data bus (§4.1: 256 bits): an aligned node word streams through the
     /// 16 compare units in `ceil(node bits / data_bus_bits)` clocks.
     pub data_bus_bits: u32,
-    /// Clocks from an aligned DOP's last bundle to its overlap flags at the Stack Engine
-    /// (assumed: 2, the compare units and the NOR).
+    /// Clocks from an aligned DOP's last bundle to its overlap flags at the Stack Engine: the
+    /// RTL's compare bank's ([`COMPARE_BANK_LATENCY`](super::rtl::COMPARE_BANK_LATENCY), 2:
+    /// the compare units' register, then the flags').
     pub compare_latency: u32,
     /// Node words the Memory Controller asks for ahead of the compare units (§4.4: a node
     /// pair, 2 of our words).
@@ -67,7 +68,7 @@ impl StackParams {
         sram_latency: 2,
         dotadd_stages: 6,
         data_bus_bits: 256,
-        compare_latency: 2,
+        compare_latency: super::rtl::COMPARE_BANK_LATENCY as u32,
         word_buffer: 2,
         tri_interval: 3,
         tri_latency: 24,

@@ -550,6 +550,22 @@ fn flag_surely_clear(clear: f64, e: f64) -> bool {
     e > clear
 }
 
+/// WSCG'03's DOP Unit (§4.1, Fig. 5) compares an aligned DOP `e`, in bundles of `n`
+/// coefficients as the data bus brings them, with a tumbled DOP's transformed distances `dp`
+/// (d'_i = [`transformed`], one per lane), held in its d' memory in the order of `e`: bundle
+/// `b` pairs e_g with d'_opp(g) for g in b n .. b n + n (fewer in the last bundle), so that
+/// each compare unit decides one lane's flag ([`separated`]). The pairs `(d', e)` per bundle;
+/// NOR over every flag of every bundle is [`dop_overlap`]'s verdict (tb/rtl_dop.rs).
+pub fn compare_bundles(dp: &[f64], e: &[f64], n: usize) -> Vec<Vec<(f64, f64)>> {
+    let k = e.len();
+    (0..k)
+        .map(|g| (dp[crate::golden::klmsel::opposite_lane(k, g)], e[g]))
+        .collect::<Vec<_>>()
+        .chunks(n)
+        .map(|c| c.to_vec())
+        .collect()
+}
+
 /// The DOP unit, lane by lane as the pipeline computes it (the reference for the RTL).
 pub fn dop_overlap(f: Format, r: Rounding, setup: &HostSetup, d: &[f64], e: &[f64]) -> bool {
     (0..d.len()).all(|i| {

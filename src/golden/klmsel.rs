@@ -9,6 +9,17 @@ pub fn klmsel(d: &[f64], j: [u8; 3]) -> [f64; 3] {
 
 /// A's distance `e_opp(i)` along the normal opposite B_i (normal i + k/2, mod k).
 pub fn opposite(e: &[f64], i: usize) -> f64 {
-    let h = e.len() / 2;
-    e[if i < h { i + h } else { i - h }]
+    e[opposite_lane(e.len(), i)]
+}
+
+/// The normal opposite normal `i` of `k`: i + k/2, mod k. Its own inverse, so A's distance
+/// `e_g` meets lane `opposite_lane(k, g)`'s d' (WSCG'03's d' memory holds them in this order,
+/// [`compare_bundles`](super::dop_unit::compare_bundles)).
+pub fn opposite_lane(k: usize, i: usize) -> usize {
+    let h = k / 2;
+    if i < h {
+        i + h
+    } else {
+        i - h
+    }
 }

@@ -57,6 +57,7 @@ struct FormatRtl {
     fp_mul_fpga: VerilogFn,
     fp_add_fpga: VerilogFn,
     fp_scale: fn() -> String,
+    fp_cmp: fn() -> String,
     doptrf: fn() -> String,
     doptrf_fpga: fn() -> String,
     tcheck: VerilogFn,
@@ -76,6 +77,7 @@ const FORMATS: [FormatRtl; 3] = {
                 fp_mul_fpga: crate::rtl::$m::verilog_fp_mul_fpga,
                 fp_add_fpga: crate::rtl::$m::verilog_fp_add_fpga,
                 fp_scale: crate::rtl::$m::verilog_fp_scale,
+                fp_cmp: crate::rtl::$m::verilog_fp_cmp,
                 doptrf: crate::rtl::$m::verilog_doptrf,
                 doptrf_fpga: crate::rtl::$m::verilog_doptrf_fpga,
                 tcheck: crate::rtl::$m::verilog_tcheck,
@@ -194,6 +196,7 @@ pub fn all() -> Vec<Unit> {
     units.push(tri_unit_fold_fpga_unit());
     units.push(pair_queue_unit());
     units.push(dop_decode_unit());
+    units.push(compare_bank_unit());
     units
 }
 
@@ -268,7 +271,7 @@ fn dop_units() -> Vec<Unit> {
 }
 
 /// The FP multipliers and adders in every format and both roundings, at both depths
-/// (`fp_mul_b32_rne`, `fp_mul_fpga_b32_rne`), then the scalers.
+/// (`fp_mul_b32_rne`, `fp_mul_fpga_b32_rne`), then the scalers and WSCG'03's compare units.
 fn fp_units() -> Vec<Unit> {
     use crate::chip::rtl::Depth;
     let mut units = vec![];
@@ -306,6 +309,14 @@ fn fp_units() -> Vec<Unit> {
             latency: 4,
             verilog: Box::new(f.fp_scale),
             vectors: Box::new(move || fp_scale_vectors(&n2, fmt)),
+        });
+        let name = format!("fp_cmp_{}", format_tag(fmt));
+        let n2 = name.clone();
+        units.push(Unit {
+            name,
+            latency: crate::chip::rtl::FP_CMP_LATENCY as u32,
+            verilog: Box::new(f.fp_cmp),
+            vectors: Box::new(move || fp_cmp_vectors(&n2, fmt)),
         });
     }
     units
@@ -372,6 +383,99 @@ fn dop_decode_unit() -> Unit {
         verilog: Box::new(crate::rtl::b32::verilog_dop_decode),
         vectors: Box::new(move || dop_decode_vectors(&n2, fmt, bits)),
     }
+}
+
+/// `compare_bank_b32`: WSCG'03's bank of 16 compare units (`rtl::b32::CompareBank`).
+fn compare_bank_unit() -> Unit {
+    Unit {
+        name: "compare_bank_b32".into(),
+        latency: crate::chip::rtl::COMPARE_BANK_LATENCY as u32,
+        verilog: Box::new(crate::rtl::b32::verilog_compare_bank),
+        vectors: Box::new(compare_bank_vectors),
+    }
+}
+
+/// Vectors `first lanes e dl dr overlap_l overlap_r` of the compare bank, a bundle per line:
+/// DOPs of k = 24, 26, 6 and 14 (three, four, one and two bundles; the lanes past k masked
+/// by `lanes` and filled with -1, which would flag). Half of them random format values; in
+/// the other half the right sibling's d' equal the left's but for a few lanes, and each of
+/// A's distances meets minus one sibling's d' (either's, per DOP) up to two ulps above (no flag) or, at one lane in k on
+/// average, one ulp below (a flag), so that both verdicts come out. After each bundle: the
+/// verdicts so far, NOR of `golden::doptrf::separated` over the DOP's bundles
+/// (`golden::dop_unit::compare_bundles`).
+fn compare_bank_vectors() -> String {
+    use crate::golden::dop_unit::compare_bundles;
+    use crate::golden::doptrf::separated;
+    use crate::golden::klmsel::opposite_lane;
+    let fmt = Format::BINARY32;
+    let q = fmt.min_positive_subnormal();
+    let mut out = String::new();
+    let _ = writeln!(out, "// first lanes e dl dr overlap_l overlap_r");
+    let _ = writeln!(
+        out,
+        "// latency: {}",
+        crate::chip::rtl::COMPARE_BANK_LATENCY
+    );
+    let _ = writeln!(out, "// compare_bank_b32: per bundle of 8 lanes (lane t in bits 32 t..), overlap = no lane so far has d' + e < 0; golden: golden::doptrf::separated, golden::dop_unit::compare_bundles");
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(0xc0b);
+    let word = |xs: &[(f64, f64)], side: usize| -> String {
+        (0..8)
+            .rev()
+            .map(|t| {
+                xs.get(t)
+                    .map_or(fmt.to_bits(-1.0), |p| fmt.to_bits([p.0, p.1][side]))
+            })
+            .map(|x| format!("{x:08x}"))
+            .collect()
+    };
+    for n in 0..RANDOM_CASES / 4 {
+        let k = [24, 26, 6, 14][n % 4];
+        let draw = |rng: &mut rand_chacha::ChaCha8Rng| -> Vec<f64> {
+            (0..k).map(|_| fmt.from_bits(operand(rng, fmt))).collect()
+        };
+        let dl = draw(&mut rng);
+        let (mut dr, mut e) = (draw(&mut rng), draw(&mut rng));
+        if n % 2 == 1 {
+            for (i, x) in dr.iter_mut().enumerate() {
+                if rng.random_range(0..k) != 0 {
+                    *x = dl[i];
+                }
+            }
+            let base = if rng.random() { dl.clone() } else { dr.clone() };
+            for (g, x) in e.iter_mut().enumerate() {
+                let mut y = -base[opposite_lane(k, g)];
+                if rng.random_range(0..k) == 0 {
+                    y = -fmt.next_up(-y);
+                } else {
+                    for _ in 0..rng.random_range(0..3) {
+                        y = fmt.next_up(y);
+                    }
+                }
+                if !y.is_nan() {
+                    *x = y;
+                }
+            }
+        }
+        let (bl, br) = (compare_bundles(&dl, &e, 8), compare_bundles(&dr, &e, 8));
+        let mut sep = [false; 2];
+        for (b, (l, r)) in bl.iter().zip(&br).enumerate() {
+            for (s, bundle) in [l, r].iter().enumerate() {
+                sep[s] |= bundle.iter().any(|&(d, e)| separated(q, d, e));
+            }
+            let lanes = (1u32 << l.len()) - 1;
+            let _ = writeln!(
+                out,
+                "{} {lanes:02x} {} {} {} {} {}",
+                (b == 0) as u8,
+                word(l, 1),
+                word(l, 0),
+                word(r, 0),
+                !sep[0] as u8,
+                !sep[1] as u8
+            );
+        }
+    }
+    out
 }
 
 /// The two roundings of a modal unit's `round_up` column in a random order: each case
@@ -513,6 +617,45 @@ fn fp_scale_vectors(name: &str, fmt: Format) -> String {
             let y = fmt.to_bits(fmt.scale_up(fmt.from_bits(a), c[sel as usize]));
             let _ = writeln!(out, "{a:0digits$x} {} {y:0digits$x}", sel as u8);
         }
+    }
+    out
+}
+
+/// Vectors `a b flag` of WSCG'03's compare unit `fp_cmp_<format>` (`rtl::*::fp_cmp_top`):
+/// every pair of special patterns, [`RANDOM_CASES`] random pairs, and as many with `b` a
+/// few ulps from `-a`, where the sum's sign turns.
+fn fp_cmp_vectors(name: &str, fmt: Format) -> String {
+    use crate::golden::doptrf::separated;
+    let digits = (fmt.width() as usize).div_ceil(4);
+    let q = fmt.min_positive_subnormal();
+    let mut out = String::new();
+    let _ = writeln!(out, "// a b flag");
+    let _ = writeln!(out, "// latency: {}", crate::chip::rtl::FP_CMP_LATENCY);
+    let _ = writeln!(out, "// {name}: flag = a + b < 0 (exactly) in {fmt}; golden: collision_chip::golden::doptrf::separated");
+    let sp = fmt.special_patterns();
+    let mut cases: Vec<(u64, u64)> = sp
+        .iter()
+        .flat_map(|&a| sp.iter().map(move |&b| (a, b)))
+        .collect();
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(0xc3b ^ name.len() as u64);
+    for _ in 0..RANDOM_CASES {
+        let a = operand(&mut rng, fmt);
+        cases.push((a, operand(&mut rng, fmt)));
+        let mut b = -fmt.from_bits(a);
+        for _ in 0..rng.random_range(0..3) {
+            b = if rng.random() {
+                fmt.next_up(b)
+            } else {
+                -fmt.next_up(-b)
+            };
+        }
+        if !b.is_nan() {
+            cases.push((a, fmt.to_bits(b)));
+        }
+    }
+    for (a, b) in cases {
+        let flag = separated(q, fmt.from_bits(a), fmt.from_bits(b));
+        let _ = writeln!(out, "{a:0digits$x} {b:0digits$x} {}", flag as u8);
     }
     out
 }

@@ -7,7 +7,7 @@
 //!
 //! | module | format | units |
 //! |---|---|---|
-//! | [`b32`] | `binary32` (e8m23, [`Format::BINARY32`](crate::format::Format::BINARY32)) | [`b32::FpMul`] (latency 4), [`b32::FpAdd`] (latency 3), [`b32::FpScale`] (by a constant, latency 4), [`b32::Doptrf`] (latency 15), [`b32::KlmSel`], [`b32::DopUnit6`] ... [`b32::DopUnit26`] (k = 6, 14, 18, 24, 26; latency 15), the folded [`b32::DopUnit6Fold2`] ... [`b32::DopUnit24Fold24`] (a pair every ii clocks; latency 14 + ii) |
+//! | [`b32`] | `binary32` (e8m23, [`Format::BINARY32`](crate::format::Format::BINARY32)) | [`b32::FpMul`] (latency 4), [`b32::FpAdd`] (latency 3), [`b32::FpScale`] (by a constant, latency 4), [`b32::FpCmp`] (WSCG'03's compare unit, latency 1), [`b32::Doptrf`] (latency 15), [`b32::KlmSel`], [`b32::DopUnit6`] ... [`b32::DopUnit26`] (k = 6, 14, 18, 24, 26; latency 15), the folded [`b32::DopUnit6Fold2`] ... [`b32::DopUnit24Fold24`] (a pair every ii clocks; latency 14 + ii) |
 //! | [`e8m15`] | e8m15 ([`Format::REDUCED`](crate::format::Format::REDUCED)) | the same |
 //! | [`e8m15_b32`] | e8m15 DOP unit, binary32 TRI_UNIT | the k = 24 chip only |
 //! | [`e8m10`] | e8m10 ([`Format::E8M10`](crate::format::Format::E8M10)) | the same, and the k = 24 chip |
@@ -57,6 +57,7 @@ mod doptrf;
 mod event_counter;
 mod fp_add;
 mod fp_add_fpga;
+mod fp_cmp;
 mod fp_mul;
 mod fp_mul_fpga;
 mod fp_scale;
@@ -71,6 +72,7 @@ mod tcheck_fold;
 mod tri_cache;
 mod tri_unit;
 mod tri_unit_fold;
+pub mod wscg03;
 /// The result port, TRI_UNIT's read side in the chip (format-free: not stamped per format).
 pub use tri_unit::ResultPort;
 
@@ -86,6 +88,7 @@ macro_rules! fp_format {
         $crate::rtl::fp_mul_fpga::fp_mul_fpga!($W, $E, $F, $P, $P2, $PP, $PM2, $H, $HH, $H2);
         $crate::rtl::fp_add_fpga::fp_add_fpga!($W, $WM1, $E, $F, $P, $P2, $P3, $P4);
         $crate::rtl::fp_scale::fp_scale!($W, $E, $F, $S);
+        $crate::rtl::fp_cmp::fp_cmp!($W, $WM1, $E, $F);
         $crate::rtl::doptrf::doptrf!($W, $WM1, $E, $F);
         $crate::rtl::klmsel::klmsel!($W);
         $crate::rtl::dop_unit::dop_unit!($W);
@@ -118,6 +121,16 @@ macro_rules! fp_format {
         /// Verilog of [`fp_scale_top`] (top module `top`).
         pub fn verilog_fp_scale() -> String {
             generate_verilog(&fp_scale_top())
+        }
+
+        /// A compare unit ready to simulate as a top-level block (inputs claimed, connected).
+        pub fn fp_cmp_top() -> FpCmp {
+            top_level!(FpCmp::new(); clock, a, b, valid_in)
+        }
+
+        /// Verilog of [`fp_cmp_top`] (top module `top`).
+        pub fn verilog_fp_cmp() -> String {
+            generate_verilog(&fp_cmp_top())
         }
 
         /// Verilog of the multiplier (top module `top`).
@@ -186,6 +199,10 @@ pub mod b32 {
     );
     crate::rtl::tcheck_fold::tcheck_fold!(32, 31, 8, 23);
     crate::rtl::tri_unit_fold::tri_unit_fold!(32);
+    // WSCG'03's chip is binary32 (its 256-bit bus: bundles of eight coefficients)
+    crate::rtl::wscg03::dop_unit::compare_bank!(32, 256;
+        (cmp_l0 cmp_r0 0 0) (cmp_l1 cmp_r1 1 32) (cmp_l2 cmp_r2 2 64) (cmp_l3 cmp_r3 3 96)
+        (cmp_l4 cmp_r4 4 128) (cmp_l5 cmp_r5 5 160) (cmp_l6 cmp_r6 6 192) (cmp_l7 cmp_r7 7 224));
     // the decode stage of 4-bit stored DOPs (`date05-treelets`): exponents -149 ..= 124, 9 bits
     crate::rtl::dop_decode::dop_decode!(32, 23, 4, 9);
     crate::rtl::dop_decode::dop_unit_coded!(32, 4, 9);
@@ -497,6 +514,8 @@ const _: () = {
     );
 };
 const _: () = assert!(b32::FpScale::LATENCY == crate::chip::rtl::FP_SCALE_LATENCY);
+const _: () = assert!(b32::FpCmp::LATENCY == crate::chip::rtl::FP_CMP_LATENCY);
+const _: () = assert!(b32::CompareBank::LATENCY == crate::chip::rtl::COMPARE_BANK_LATENCY);
 const _: () = assert!(b32::DopDecode::LATENCY == crate::chip::rtl::DOP_DECODE_LATENCY);
 const _: () = assert!(
     b32::TriUnit::LATENCY == crate::chip::rtl::TRI_LATENCY
