@@ -837,10 +837,7 @@ type Bundles = [Vec<Vec<(f64, f64)>>; 2];
 /// `(left, right)` list of `(d', e)` pairs (masked lanes -1, which would flag), an idle
 /// clock after every third DOP; returns the
 /// verdicts after each DOP's last bundle.
-fn run_compare_bank(
-    uut: &mut b32::CompareBank,
-    dops: &[Bundles],
-) -> Vec<[bool; 2]> {
+fn run_compare_bank(uut: &mut b32::CompareBank, dops: &[Bundles]) -> Vec<[bool; 2]> {
     let fmt = Format::BINARY32;
     let word = |xs: &[(f64, f64)], side: usize| {
         let mut w = Bits::<256>::default();
@@ -993,4 +990,102 @@ fn compare_bank_b32_dop_overlap() {
         "CompareBank b32: {total} DOPs against both siblings ok ({overlaps} of {} overlap)",
         2 * total
     );
+}
+
+// ---------------------------------------------------------------------------------------
+// WSCG'03's DOP Unit: the DOTADD unit.
+
+macro_rules! impl_dotadd {
+    ($($m:ident),*) => {$(
+        impl Pipelined for $m::Dotadd {
+            type In = LaneIn;
+            type Out = u64;
+            const LATENCY: usize = $m::Dotadd::LATENCY;
+            fn set(&mut self, x: LaneIn, valid: bool) {
+                self.d0.next = x[0].into();
+                self.d1.next = x[1].into();
+                self.d2.next = x[2].into();
+                self.c0.next = x[3].into();
+                self.c1.next = x[4].into();
+                self.c2.next = x[5].into();
+                self.c.next = x[6].into();
+                self.round_up.next = x[8] == 1;
+                self.valid_in.next = valid;
+            }
+            fn out(&self) -> (bool, u64) {
+                (self.valid_out.val(), self.u.val().to_u64())
+            }
+            fn clock(&mut self, high: bool) {
+                self.clock.next = Clock { clk: high };
+            }
+        }
+    )*};
+}
+impl_dotadd!(b32, e8m15, e8m10);
+
+/// The DOTADD unit (`Dotadd`) against the golden `transformed`, bit for bit, in every format:
+/// the lane's random cases in both roundings (`lane_case`: its `e` unused) and every special
+/// pattern in every operand, one per clock, latency checked on `valid_out`. And the test
+/// sees a unit that would round every operation to nearest even.
+#[test]
+fn dotadd_all_formats() {
+    fn check<U: Pipelined<In = LaneIn, Out = u64>>(mut uut: U, fmt: Format) {
+        use proptest::strategy::ValueTree;
+        let t = Fmt::of(fmt);
+        let both = prop_oneof![lane_case(fmt, MODES[0]), lane_case(fmt, MODES[1])];
+        let mut cases = prop::collection::vec(both, 2000)
+            .new_tree(&mut TestRunner::deterministic())
+            .unwrap()
+            .current();
+        let one = t.pack(false, t.bias(), 0);
+        for (pos, s) in (0..7).flat_map(|p| t.specials().into_iter().map(move |s| (p, s))) {
+            let mut x = [
+                one,
+                one,
+                t.pack(true, t.bias(), 3),
+                one,
+                one,
+                one,
+                one,
+                0,
+                pos as u64 % 2,
+            ];
+            x[pos] = s;
+            cases.push(x);
+        }
+        let golden = |x: &LaneIn, r: Rounding| {
+            let v: Vec<f64> = x[..7].iter().map(|&b| fmt.from_bits(b)).collect();
+            fmt.to_bits(doptrf::transformed(
+                fmt,
+                r,
+                [v[0], v[1], v[2]],
+                [v[3], v[4], v[5]],
+                v[6],
+            ))
+        };
+        let got = run(&mut uut, &cases);
+        let bad: Vec<_> = cases
+            .iter()
+            .zip(&got)
+            .filter(|&(x, &u)| u != golden(x, rounding(x)))
+            .collect();
+        assert!(
+            bad.is_empty(),
+            "{fmt}: {} mismatches, first {:x?}",
+            bad.len(),
+            &bad[..bad.len().min(3)]
+        );
+        let nearest = cases
+            .iter()
+            .zip(&got)
+            .any(|(x, &u)| u != golden(x, Rounding::NearestEven));
+        assert!(
+            nearest,
+            "{fmt}: a unit rounding to nearest even only went unnoticed"
+        );
+        println!("Dotadd {fmt}: {} transforms ok", cases.len());
+    }
+    check(b32::dotadd_top(), Format::BINARY32);
+    check(e8m15::dotadd_top(), Format::REDUCED);
+    check(e8m10::dotadd_top(), Format::E8M10);
 }

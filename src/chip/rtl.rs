@@ -13,6 +13,9 @@ pub const FP_ADD_LATENCY: usize = 3;
 pub const FP_SCALE_LATENCY: usize = 4;
 /// WSCG'03's compare unit, `FpCmp` (`a + b < 0` by a comparison: its output register).
 pub const FP_CMP_LATENCY: usize = 1;
+/// WSCG'03's DOTADD unit (`rtl::*::Dotadd`): the DOPTRF lane's stages up to its transformed
+/// distance u, input register + `FpMul` + two `FpAdd`s + output register.
+pub const DOTADD_LATENCY: usize = 1 + FP_MUL_LATENCY + 2 * FP_ADD_LATENCY + 1;
 /// WSCG'03's compare bank (`rtl::b32::CompareBank`): the compare units, then the flags ORed
 /// over a DOP's bundles; a bundle's verdicts so far two clocks after it.
 pub const COMPARE_BANK_LATENCY: usize = FP_CMP_LATENCY + 1;

@@ -60,6 +60,7 @@ struct FormatRtl {
     fp_cmp: fn() -> String,
     doptrf: fn() -> String,
     doptrf_fpga: fn() -> String,
+    dotadd: fn() -> String,
     tcheck: VerilogFn,
     tri_unit: VerilogFn,
     dop_unit: fn(usize) -> Option<String>,
@@ -80,6 +81,7 @@ const FORMATS: [FormatRtl; 3] = {
                 fp_cmp: crate::rtl::$m::verilog_fp_cmp,
                 doptrf: crate::rtl::$m::verilog_doptrf,
                 doptrf_fpga: crate::rtl::$m::verilog_doptrf_fpga,
+                dotadd: crate::rtl::$m::verilog_dotadd,
                 tcheck: crate::rtl::$m::verilog_tcheck,
                 tri_unit: crate::rtl::$m::verilog_tri_unit,
                 dop_unit: crate::rtl::$m::verilog_dop_unit,
@@ -201,7 +203,7 @@ pub fn all() -> Vec<Unit> {
 }
 
 /// The DOPTRF lanes, one per format and depth (their rounding an input): `doptrf_b32`,
-/// `doptrf_fpga_b32`.
+/// `doptrf_fpga_b32`; then WSCG'03's DOTADD units, `dotadd_b32`.
 fn doptrf_units() -> Vec<Unit> {
     use crate::chip::rtl::Depth;
     let mut units = vec![];
@@ -219,9 +221,21 @@ fn doptrf_units() -> Vec<Unit> {
                 name,
                 latency,
                 verilog: Box::new(v),
-                vectors: Box::new(move || lane_vectors(&n2, fmt, latency)),
+                vectors: Box::new(move || lane_vectors(&n2, fmt, latency, false)),
             });
         }
+    }
+    for f in &FORMATS {
+        let fmt = f.fmt;
+        let name = format!("dotadd_{}", format_tag(fmt));
+        let n2 = name.clone();
+        let latency = crate::chip::rtl::DOTADD_LATENCY as u32;
+        units.push(Unit {
+            name,
+            latency,
+            verilog: Box::new(f.dotadd),
+            vectors: Box::new(move || lane_vectors(&n2, fmt, latency, true)),
+        });
     }
     units
 }
@@ -680,13 +694,20 @@ fn value(rng: &mut impl Rng, fmt: Format) -> f64 {
 /// Vectors of one DOPTRF lane: `round_up d0 d1 d2 c0 c1 c2 c e s flag`
 /// (golden::doptrf::lane), each case in both roundings ([`both_roundings`]), with C >= 0 as
 /// the host sets it, and half of the cases with e = -u +- a few ulps (of the first rounding's
-/// u) so that s lands on zero, a tie or the sign boundary.
-fn lane_vectors(name: &str, fmt: Format, latency: u32) -> String {
+/// u) so that s lands on zero, a tie or the sign boundary. With `dot`, those of the DOTADD
+/// unit on the same cases: `round_up d0 d1 d2 c0 c1 c2 c u` (golden::doptrf::transformed).
+fn lane_vectors(name: &str, fmt: Format, latency: u32, dot: bool) -> String {
     use crate::golden::doptrf;
     let mut out = String::new();
-    let _ = writeln!(out, "// round_up d0 d1 d2 c0 c1 c2 c e s flag");
-    let _ = writeln!(out, "// latency: {latency}");
-    let _ = writeln!(out, "// {name}: s = ((d0 c0 + d1 c1) + (d2 c2 + c)) + e in {fmt}, round_up 1: TowardPositive, 0: NearestEven, flag = s < 0; golden: golden::doptrf::lane");
+    if dot {
+        let _ = writeln!(out, "// round_up d0 d1 d2 c0 c1 c2 c u");
+        let _ = writeln!(out, "// latency: {latency}");
+        let _ = writeln!(out, "// {name}: u = (d0 c0 + d1 c1) + (d2 c2 + c) in {fmt}, round_up 1: TowardPositive, 0: NearestEven; golden: golden::doptrf::transformed");
+    } else {
+        let _ = writeln!(out, "// round_up d0 d1 d2 c0 c1 c2 c e s flag");
+        let _ = writeln!(out, "// latency: {latency}");
+        let _ = writeln!(out, "// {name}: s = ((d0 c0 + d1 c1) + (d2 c2 + c)) + e in {fmt}, round_up 1: TowardPositive, 0: NearestEven, flag = s < 0; golden: golden::doptrf::lane");
+    }
     let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(0xd0b ^ name.len() as u64);
     for i in 0..RANDOM_CASES {
         let d = [
@@ -712,8 +733,20 @@ fn lane_vectors(name: &str, fmt: Format, latency: u32) -> String {
             e
         };
         for r in rs {
-            let s = doptrf::lane(fmt, r, d, cm, c, e);
             let h = |x| hex(fmt, x);
+            if dot {
+                let u = doptrf::transformed(fmt, r, d, cm, c);
+                let (rb, ds, cs) = ((r == Rounding::TowardPositive) as u8, d.map(h), cm.map(h));
+                let _ = writeln!(
+                    out,
+                    "{rb} {} {} {}",
+                    ds.join(" "),
+                    cs.join(" "),
+                    h(c) + " " + &h(u)
+                );
+                continue;
+            }
+            let s = doptrf::lane(fmt, r, d, cm, c, e);
             let _ = writeln!(
                 out,
                 "{} {} {} {} {} {} {} {} {} {} {}",

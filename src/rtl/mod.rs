@@ -7,7 +7,7 @@
 //!
 //! | module | format | units |
 //! |---|---|---|
-//! | [`b32`] | `binary32` (e8m23, [`Format::BINARY32`](crate::format::Format::BINARY32)) | [`b32::FpMul`] (latency 4), [`b32::FpAdd`] (latency 3), [`b32::FpScale`] (by a constant, latency 4), [`b32::FpCmp`] (WSCG'03's compare unit, latency 1), [`b32::Doptrf`] (latency 15), [`b32::KlmSel`], [`b32::DopUnit6`] ... [`b32::DopUnit26`] (k = 6, 14, 18, 24, 26; latency 15), the folded [`b32::DopUnit6Fold2`] ... [`b32::DopUnit24Fold24`] (a pair every ii clocks; latency 14 + ii) |
+//! | [`b32`] | `binary32` (e8m23, [`Format::BINARY32`](crate::format::Format::BINARY32)) | [`b32::FpMul`] (latency 4), [`b32::FpAdd`] (latency 3), [`b32::FpScale`] (by a constant, latency 4), [`b32::FpCmp`] (WSCG'03's compare unit, latency 1), [`b32::Doptrf`] (latency 15), [`b32::Dotadd`] (WSCG'03's DOTADD unit, latency 12), [`b32::KlmSel`], [`b32::DopUnit6`] ... [`b32::DopUnit26`] (k = 6, 14, 18, 24, 26; latency 15), the folded [`b32::DopUnit6Fold2`] ... [`b32::DopUnit24Fold24`] (a pair every ii clocks; latency 14 + ii); in binary32 only, WSCG'03's compare bank [`b32::CompareBank`] (latency 2) |
 //! | [`e8m15`] | e8m15 ([`Format::REDUCED`](crate::format::Format::REDUCED)) | the same |
 //! | [`e8m15_b32`] | e8m15 DOP unit, binary32 TRI_UNIT | the k = 24 chip only |
 //! | [`e8m10`] | e8m10 ([`Format::E8M10`](crate::format::Format::E8M10)) | the same, and the k = 24 chip |
@@ -515,6 +515,7 @@ const _: () = {
 };
 const _: () = assert!(b32::FpScale::LATENCY == crate::chip::rtl::FP_SCALE_LATENCY);
 const _: () = assert!(b32::FpCmp::LATENCY == crate::chip::rtl::FP_CMP_LATENCY);
+const _: () = assert!(b32::Dotadd::LATENCY == crate::chip::rtl::DOTADD_LATENCY);
 const _: () = assert!(b32::CompareBank::LATENCY == crate::chip::rtl::COMPARE_BANK_LATENCY);
 const _: () = assert!(b32::DopDecode::LATENCY == crate::chip::rtl::DOP_DECODE_LATENCY);
 const _: () = assert!(
