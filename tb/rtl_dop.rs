@@ -1089,3 +1089,113 @@ fn dotadd_all_formats() {
     check(e8m15::dotadd_top(), Format::REDUCED);
     check(e8m10::dotadd_top(), Format::E8M10);
 }
+
+// ---------------------------------------------------------------------------------------
+// WSCG'03's DOP Unit: the d' memory.
+
+/// Writes the d' of `dops` (left, right; one lane per clock in lane order, as the DOTADD
+/// units make them) into sets 0, 1, 0, ... of the d' memory (`b32::DprimeMemory`) of `k`
+/// directions; after each DOP's writes reads back its set's entries, then the other set's;
+/// returns them per DOP (left and right, eight slots of bit patterns each).
+fn dprime_run(k: usize, dops: &[[Vec<f64>; 2]]) -> Vec<Vec<[[u64; 8]; 2]>> {
+    let fmt = Format::BINARY32;
+    let mut uut = b32::dprime_memory_top(k);
+    let entries = k.div_ceil(8);
+    let clock = |uut: &mut b32::DprimeMemory| {
+        for high in [false, true] {
+            uut.clock.next = Clock { clk: high };
+            settle(uut);
+        }
+    };
+    let slots = |w: Bits<256>| -> [u64; 8] {
+        std::array::from_fn(|t| (0..32).fold(0, |a, i| a | (w.get_bit(32 * t + i) as u64) << i))
+    };
+    let mut out = vec![];
+    for (n, [l, r]) in dops.iter().enumerate() {
+        let set = (n % 2) as u64;
+        for i in 0..k {
+            uut.wr_valid.next = true;
+            uut.wr_set.next = set.into();
+            uut.wr_lane.next = (i as u64).into();
+            uut.wr_l.next = fmt.to_bits(l[i]).into();
+            uut.wr_r.next = fmt.to_bits(r[i]).into();
+            clock(&mut uut);
+        }
+        uut.wr_valid.next = false;
+        let mut read = vec![];
+        // an entry is on the outputs right after the edge that took its address; this
+        // set's entries, then the other set's
+        for (sel, e) in [set, 1 - set]
+            .into_iter()
+            .flat_map(|s| (0..entries).map(move |e| (s, e)))
+        {
+            uut.rd_set.next = sel.into();
+            uut.rd_entry.next = (e as u64).into();
+            clock(&mut uut);
+            read.push([slots(uut.dl.val()), slots(uut.dr.val())]);
+        }
+        out.push(read);
+    }
+    out
+}
+
+/// The d' memory holds each sibling's d' in the order of A's distances: its entries, read
+/// back after the DOTADD units' lane order, are `compare_bundles`' d' (k = 6, 14, 24, 26;
+/// four DOPs each, in alternate sets, so that a write into one set must leave the other).
+/// And the test sees a memory that stored lane i at position i.
+#[test]
+fn dprime_memory_b32_order() {
+    use collision_chip::golden::dop_unit::compare_bundles;
+    use proptest::strategy::ValueTree;
+    let fmt = Format::BINARY32;
+    let t = Fmt::of(fmt);
+    let mut runner = TestRunner::deterministic();
+    for k in [6, 14, 24, 26] {
+        let mut draw = || -> Vec<f64> {
+            prop::collection::vec(operand(t), k)
+                .new_tree(&mut runner)
+                .unwrap()
+                .current()
+                .into_iter()
+                .map(|b| fmt.from_bits(b))
+                .collect()
+        };
+        let dops: Vec<[Vec<f64>; 2]> = (0..4).map(|_| [draw(), draw()]).collect();
+        let got = dprime_run(k, &dops);
+        let e = vec![0.0; k];
+        let entries = |dp: &[f64]| -> Vec<Vec<u64>> {
+            compare_bundles(dp, &e, 8)
+                .iter()
+                .map(|b| b.iter().map(|&(d, _)| fmt.to_bits(d)).collect())
+                .collect()
+        };
+        let m = k.div_ceil(8);
+        for (n, (dop, read)) in dops.iter().zip(&got).enumerate() {
+            for s in 0..2 {
+                let want = entries(&dop[s]);
+                let have = |read: &[[[u64; 8]; 2]]| -> Vec<Vec<u64>> {
+                    read.iter()
+                        .zip(&want)
+                        .map(|(r, w)| r[s][..w.len()].to_vec())
+                        .collect()
+                };
+                // the other set still holds the DOP before
+                if n > 0 {
+                    let before = entries(&dops[n - 1][s]);
+                    let other: Vec<Vec<u64>> = read[m..]
+                        .iter()
+                        .zip(&before)
+                        .map(|(r, w)| r[s][..w.len()].to_vec())
+                        .collect();
+                    assert_eq!(other, before, "k = {k}, DOP {n}, side {s}: the other set");
+                }
+                let have = have(&read[..m]);
+                assert_eq!(have, want, "k = {k}, DOP {n}, side {s}");
+                let flat: Vec<u64> = dop[s].iter().map(|&d| fmt.to_bits(d)).collect();
+                let in_order: Vec<Vec<u64>> = flat.chunks(8).map(|c| c.to_vec()).collect();
+                assert_ne!(have, in_order, "k = {k}: lane i at position i would pass");
+            }
+        }
+    }
+    println!("DprimeMemory b32: d' of k = 6, 14, 24, 26 in the compare units' order");
+}

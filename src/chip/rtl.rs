@@ -19,6 +19,9 @@ pub const DOTADD_LATENCY: usize = 1 + FP_MUL_LATENCY + 2 * FP_ADD_LATENCY + 1;
 /// WSCG'03's compare bank (`rtl::b32::CompareBank`): the compare units, then the flags ORed
 /// over a DOP's bundles; a bundle's verdicts so far two clocks after it.
 pub const COMPARE_BANK_LATENCY: usize = FP_CMP_LATENCY + 1;
+/// WSCG'03's d' memory (`rtl::b32::DprimeMemory`): a read address to its entry (synchronous
+/// RAMs).
+pub const DPRIME_READ_LATENCY: usize = 1;
 
 /// How deep the floating-point units are cut, per target. The values are the same bit for
 /// bit at every depth; only the latencies differ.

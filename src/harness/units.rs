@@ -201,6 +201,7 @@ pub fn all() -> Vec<Unit> {
     units.push(pair_queue_unit());
     units.push(dop_decode_unit());
     units.push(wscg03::compare_bank_unit());
+    units.push(wscg03::dprime_memory_unit());
     units
 }
 

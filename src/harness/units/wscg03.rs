@@ -97,3 +97,59 @@ fn compare_bank_vectors() -> String {
     }
     out
 }
+
+/// `dprime_memory_k24_b32`: WSCG'03's d' memory for k = 24 (`rtl::b32::DprimeMemory`).
+pub(super) fn dprime_memory_unit() -> Unit {
+    Unit {
+        name: "dprime_memory_k24_b32".into(),
+        latency: crate::chip::rtl::DPRIME_READ_LATENCY as u32,
+        verilog: Box::new(|| crate::rtl::b32::verilog_dprime_memory(24)),
+        vectors: Box::new(|| dprime_memory_vectors(24)),
+    }
+}
+
+/// Vectors of the d' memory of `k` directions: a preload of the write port, three DOPs'
+/// random d' (left and right) in the DOTADD units' lane order into sets 0, 1 and 0 again,
+/// then `rd_set rd_entry dl dr` for every entry of both sets: the last DOP of each set in
+/// the order of A's distances (`golden::dop_unit::compare_bundles`; slots past k are never
+/// written and not read: k = 24 fills three entries).
+fn dprime_memory_vectors(k: usize) -> String {
+    use crate::golden::dop_unit::compare_bundles;
+    let fmt = Format::BINARY32;
+    let mut out = String::new();
+    let _ = writeln!(out, "// preload: wr_valid wr_set wr_lane wr_l wr_r");
+    let _ = writeln!(out, "// rd_set rd_entry dl dr");
+    let _ = writeln!(out, "// latency: {}", crate::chip::rtl::DPRIME_READ_LATENCY);
+    let _ = writeln!(out, "// dprime_memory_k{k}_b32: lane i's d' stored at opp(i), read an entry of 8 per clock; golden: golden::dop_unit::compare_bundles");
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(0xd9);
+    let mut sets: [Vec<Vec<f64>>; 2] = [vec![], vec![]];
+    for set in [0, 1, 0] {
+        let dop: Vec<Vec<f64>> = (0..2)
+            .map(|_| {
+                (0..k)
+                    .map(|_| fmt.from_bits(operand(&mut rng, fmt)))
+                    .collect()
+            })
+            .collect();
+        for (i, (l, r)) in dop[0].iter().zip(&dop[1]).enumerate() {
+            let (l, r) = (fmt.to_bits(*l), fmt.to_bits(*r));
+            let _ = writeln!(out, "@ 1 {set} {i:02x} {l:08x} {r:08x}");
+        }
+        sets[set] = dop;
+    }
+    let e = vec![0.0; k];
+    for (set, dop) in sets.iter().enumerate() {
+        let bundles = [0, 1].map(|s| compare_bundles(&dop[s], &e, 8));
+        for (entry, (bl, br)) in bundles[0].iter().zip(&bundles[1]).enumerate() {
+            let word = |s: usize| -> String {
+                [bl, br][s]
+                    .iter()
+                    .rev()
+                    .map(|&(d, _)| format!("{:08x}", fmt.to_bits(d)))
+                    .collect()
+            };
+            let _ = writeln!(out, "{set} {entry} {} {}", word(0), word(1));
+        }
+    }
+    out
+}
