@@ -196,8 +196,8 @@ fn prop_lane<L: Lane>(make: impl Fn() -> L, fmt: Format, name: &str) {
     }
 }
 
-/// Every special operand in every position, the other operands moderate.
-fn specials_lane<L: Lane>(make: impl Fn() -> L, fmt: Format) {
+/// Every special operand in every position (`round_up` 0), the other operands moderate.
+fn special_cases(fmt: Format) -> Vec<LaneIn> {
     let t = Fmt::of(fmt);
     let one = t.pack(false, t.bias(), 0);
     let base: LaneIn = [
@@ -219,6 +219,12 @@ fn specials_lane<L: Lane>(make: impl Fn() -> L, fmt: Format) {
             cases.push(x);
         }
     }
+    cases
+}
+
+/// [`special_cases`] in both roundings.
+fn specials_lane<L: Lane>(make: impl Fn() -> L, fmt: Format) {
+    let cases = special_cases(fmt);
     for up in [0, 1] {
         let cases: Vec<LaneIn> = cases
             .iter()
@@ -489,6 +495,30 @@ fn fold_k24() {
 }
 
 /// Random format values everywhere (C of either sign, specials) and random MUX controls.
+/// A host setup of `k` lanes with C and c from the bit patterns `cm` (3k) and `cv` (k), and
+/// correspondences drawn from the same bits (any normal of the k).
+fn random_setup(fmt: Format, k: usize, cm: &[u64], cv: &[u64]) -> HostSetup {
+    HostSetup {
+        j: (0..k)
+            .map(|i| [0, 1, 2].map(|l| ((cm[3 * i + l] ^ cv[i] >> l) % k as u64) as u8))
+            .collect(),
+        cmat: (0..k)
+            .map(|i| [0, 1, 2].map(|l| fmt.from_bits(cm[3 * i + l])))
+            .collect(),
+        cvec: cv.iter().map(|&b| fmt.from_bits(b)).collect(),
+        ..HostSetup::new(
+            &ChipConfig {
+                k,
+                format: fmt.into(),
+                ..ChipConfig::default()
+            },
+            &Pose::default(),
+            1.0,
+            TriSide::UNUSED,
+        )
+    }
+}
+
 fn unit_random<U: Unit>(make: impl Fn() -> U, fmt: Format, n_pairs: usize, seed: u64) {
     use proptest::strategy::ValueTree;
     let k = U::K;
@@ -521,31 +551,8 @@ fn unit_random<U: Unit>(make: impl Fn() -> U, fmt: Format, n_pairs: usize, seed:
                 v
             }
         };
-        let cm: Vec<u64> = clear(draw(3 * k));
-        let cv: Vec<u64> = clear(draw(k));
-        let cmat: Vec<[f64; 3]> = (0..k)
-            .map(|i| [0, 1, 2].map(|l| fmt.from_bits(cm[3 * i + l])))
-            .collect();
-        let cvec: Vec<f64> = cv.iter().map(|&b| fmt.from_bits(b)).collect();
-        let j: Vec<[u8; 3]> = (0..k)
-            .map(|i| [0, 1, 2].map(|l| ((cm[3 * i + l] ^ cv[i] >> l) % k as u64) as u8))
-            .collect();
-        let setup = HostSetup {
-            j: j.clone(),
-            cmat: cmat.clone(),
-            cvec: cvec.clone(),
-            ..HostSetup::new(
-                &ChipConfig {
-                    k,
-                    format: fmt.into(),
-                    ..ChipConfig::default()
-                },
-                &Pose::default(),
-                1.0,
-                TriSide::UNUSED,
-            )
-        };
-        let words = dop_setup_words(fmt, r, &j, &cmat, &cvec);
+        let setup = random_setup(fmt, k, &clear(draw(3 * k)), &clear(draw(k)));
+        let words = dop_setup_words(fmt, r, &setup.j, &setup.cmat, &setup.cvec);
         let mut pairs = vec![];
         let mut want = vec![];
         for p in 0..n_pairs {
@@ -835,8 +842,7 @@ type Bundles = [Vec<Vec<(f64, f64)>>; 2];
 
 /// Drives WSCG'03's compare bank (`b32::CompareBank`) with the bundles of each
 /// `(left, right)` list of `(d', e)` pairs (masked lanes -1, which would flag), an idle
-/// clock after every third DOP; returns the
-/// verdicts after each DOP's last bundle.
+/// clock after every third DOP; returns the verdicts after each DOP's last bundle.
 fn run_compare_bank(uut: &mut b32::CompareBank, dops: &[Bundles]) -> Vec<[bool; 2]> {
     let fmt = Format::BINARY32;
     let word = |xs: &[(f64, f64)], side: usize| {
@@ -916,30 +922,9 @@ fn compare_bank_b32_dop_overlap() {
         .into_iter()
         .flat_map(|k| MODES.map(|r| (k, r)))
     {
-        let cm: Vec<u64> = draw(3 * k).into_iter().map(|x| x & !sign).collect();
-        let cv: Vec<u64> = draw(k).into_iter().map(|x| x & !sign).collect();
-        let cmat: Vec<[f64; 3]> = (0..k)
-            .map(|i| [0, 1, 2].map(|l| fmt.from_bits(cm[3 * i + l])))
-            .collect();
-        let cvec: Vec<f64> = cv.iter().map(|&b| fmt.from_bits(b)).collect();
-        let j: Vec<[u8; 3]> = (0..k)
-            .map(|i| [0, 1, 2].map(|l| ((cm[3 * i + l] ^ cv[i] >> l) % k as u64) as u8))
-            .collect();
-        let setup = HostSetup {
-            j: j.clone(),
-            cmat: cmat.clone(),
-            cvec: cvec.clone(),
-            ..HostSetup::new(
-                &ChipConfig {
-                    k,
-                    format: fmt.into(),
-                    ..ChipConfig::default()
-                },
-                &Pose::default(),
-                1.0,
-                TriSide::UNUSED,
-            )
-        };
+        let nonneg = |v: Vec<u64>| -> Vec<u64> { v.into_iter().map(|x| x & !sign).collect() };
+        let setup = random_setup(fmt, k, &nonneg(draw(3 * k)), &nonneg(draw(k)));
+        let (j, cmat, cvec) = (&setup.j, &setup.cmat, &setup.cvec);
         let mut dops = vec![];
         let mut want = vec![];
         for p in 0..60 {
@@ -1024,34 +1009,23 @@ macro_rules! impl_dotadd {
 impl_dotadd!(b32, e8m15, e8m10);
 
 /// The DOTADD unit (`Dotadd`) against the golden `transformed`, bit for bit, in every format:
-/// the lane's random cases in both roundings (`lane_case`: its `e` unused) and every special
-/// pattern in every operand, one per clock, latency checked on `valid_out`. And the test
+/// the lane's random cases in both roundings (`lane_case`: its `e` unused) and its special
+/// cases (`special_cases`) in both, one per clock, latency checked on `valid_out`. And the test
 /// sees a unit that would round every operation to nearest even.
 #[test]
 fn dotadd_all_formats() {
     fn check<U: Pipelined<In = LaneIn, Out = u64>>(mut uut: U, fmt: Format) {
         use proptest::strategy::ValueTree;
-        let t = Fmt::of(fmt);
         let both = prop_oneof![lane_case(fmt, MODES[0]), lane_case(fmt, MODES[1])];
         let mut cases = prop::collection::vec(both, 2000)
             .new_tree(&mut TestRunner::deterministic())
             .unwrap()
             .current();
-        let one = t.pack(false, t.bias(), 0);
-        for (pos, s) in (0..7).flat_map(|p| t.specials().into_iter().map(move |s| (p, s))) {
-            let mut x = [
-                one,
-                one,
-                t.pack(true, t.bias(), 3),
-                one,
-                one,
-                one,
-                one,
-                0,
-                pos as u64 % 2,
-            ];
-            x[pos] = s;
-            cases.push(x);
+        for up in [0, 1] {
+            cases.extend(special_cases(fmt).into_iter().map(|mut x| {
+                x[8] = up;
+                x
+            }));
         }
         let golden = |x: &LaneIn, r: Rounding| {
             let v: Vec<f64> = x[..7].iter().map(|&b| fmt.from_bits(b)).collect();

@@ -609,7 +609,7 @@ fn cmp_ops(t: Fmt) -> Vec<(u64, u64)> {
         let b = match near {
             0 if !x.is_nan() => fmt.to_bits(x),
             1 if !x.is_nan() => fmt.to_bits(fmt.next_up(x)),
-            2 if !x.is_nan() => fmt.to_bits(-fmt.next_up(-x)),
+            2 if !x.is_nan() => fmt.to_bits(fmt.next_down(x)),
             _ => b,
         };
         ops.push((a, b));

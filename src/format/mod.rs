@@ -458,6 +458,11 @@ impl Format {
         self.next_up_general(x)
     }
 
+    /// The next value of the format below `x` (IEEE nextDown): `-next_up(-x)`.
+    pub fn next_down(&self, x: f64) -> f64 {
+        -self.next_up(-x)
+    }
+
     fn next_up_general(&self, x: f64) -> f64 {
         if x.is_nan() || x == f64::INFINITY {
             return x;

@@ -565,14 +565,7 @@ fn fp_cmp_vectors(name: &str, fmt: Format) -> String {
     for _ in 0..RANDOM_CASES {
         let a = operand(&mut rng, fmt);
         cases.push((a, operand(&mut rng, fmt)));
-        let mut b = -fmt.from_bits(a);
-        for _ in 0..rng.random_range(0..3) {
-            b = if rng.random() {
-                fmt.next_up(b)
-            } else {
-                -fmt.next_up(-b)
-            };
-        }
+        let b = ulps_away(&mut rng, fmt, -fmt.from_bits(a), 2);
         if !b.is_nan() {
             cases.push((a, fmt.to_bits(b)));
         }
@@ -582,6 +575,19 @@ fn fp_cmp_vectors(name: &str, fmt: Format) -> String {
         let _ = writeln!(out, "{a:0digits$x} {b:0digits$x} {}", flag as u8);
     }
     out
+}
+
+/// `x` moved by up to `steps` ulps of the format, each step up or down at random: where a
+/// sum with `-x` turns sign, is zero or ties.
+fn ulps_away(rng: &mut impl Rng, fmt: Format, mut x: f64, steps: u32) -> f64 {
+    for _ in 0..rng.random_range(0..steps + 1) {
+        x = if rng.random_range(0..2) == 0 {
+            fmt.next_up(x)
+        } else {
+            fmt.next_down(x)
+        };
+    }
+    x
 }
 
 fn hex(fmt: Format, x: f64) -> String {
@@ -631,16 +637,7 @@ fn lane_vectors(name: &str, fmt: Format, latency: u32, dot: bool) -> String {
         let e = if i % 2 == 0 {
             value(&mut rng, fmt)
         } else {
-            let u = doptrf::transformed(fmt, rs[0], d, cm, c);
-            let mut e = -u;
-            for _ in 0..rng.random_range(0..4) {
-                e = if rng.random_range(0..2) == 0 {
-                    fmt.next_up(e)
-                } else {
-                    -fmt.next_up(-e)
-                };
-            }
-            e
+            ulps_away(&mut rng, fmt, -doptrf::transformed(fmt, rs[0], d, cm, c), 3)
         };
         for r in rs {
             let h = |x| hex(fmt, x);

@@ -71,7 +71,9 @@ macro_rules! doptrf {
     // register. Then either the DOPTRF lane's tail, `e(...)`: A's distance's port, input
     // register, rounding delay and adder; its chain (M + 2A registers); the output registers,
     // ports and the sign test's signals (LAT = 1 + M + 3A + 1); or the DOTADD unit's, `dot(...)`:
-    // the output registers and port (LAT = 1 + M + 2A + 1).
+    // the output registers and port (LAT = 1 + M + 2A + 1). The tail's names are arguments
+    // so that each optional field and statement holds a metavariable of its group (what
+    // `$(...)?` repeats on); they are the same names for every lane.
     (@lane $(#[$doc:meta])* $name:ident, $top:ident, $verilog:ident; $W:tt, $WM1:tt, $E:tt, $F:tt;
      $Mul:ident, $Add:ident, $LAT:tt, $RM:tt, $RA:tt;
      c($c0:ident; $(($cn:ident $cp:ident))+; $cl:ident);

@@ -19,8 +19,9 @@ pub(super) fn compare_bank_unit() -> Unit {
 /// DOPs of k = 24, 26, 6 and 14 (three, four, one and two bundles; the lanes past k masked
 /// by `lanes` and filled with -1, which would flag). Half of them random format values; in
 /// the other half the right sibling's d' equal the left's but for a few lanes, and each of
-/// A's distances meets minus one sibling's d' (either's, per DOP) up to two ulps above (no flag) or, at one lane in k on
-/// average, one ulp below (a flag), so that both verdicts come out. After each bundle: the
+/// A's distances meets minus one sibling's d' (either's, per DOP) up to two ulps above (no
+/// flag) or, at one lane in k on average, one ulp below (a flag), so that both verdicts
+/// come out. After each bundle: the
 /// verdicts so far, NOR of `golden::doptrf::separated` over the DOP's bundles
 /// (`golden::dop_unit::compare_bundles`).
 fn compare_bank_vectors() -> String {
@@ -61,11 +62,11 @@ fn compare_bank_vectors() -> String {
                     *x = dl[i];
                 }
             }
-            let base = if rng.random() { dl.clone() } else { dr.clone() };
+            let base = if rng.random() { &dl } else { &dr };
             for (g, x) in e.iter_mut().enumerate() {
                 let mut y = -base[opposite_lane(k, g)];
                 if rng.random_range(0..k) == 0 {
-                    y = -fmt.next_up(-y);
+                    y = fmt.next_down(y);
                 } else {
                     for _ in 0..rng.random_range(0..3) {
                         y = fmt.next_up(y);
