@@ -1173,3 +1173,125 @@ fn dprime_memory_b32_order() {
     }
     println!("DprimeMemory b32: d' of k = 6, 14, 24, 26 in the compare units' order");
 }
+
+// ---------------------------------------------------------------------------------------
+// WSCG'03's DOP Unit: the whole unit, against its clocked model and the golden verdicts.
+
+/// One clock of WSCG'03's DOP Unit.
+fn clock_wscg03<const K: usize>(uut: &mut b32::Wscg03DopUnit<K>) {
+    for high in [false, true] {
+        uut.clock.next = Clock { clk: high };
+        settle(uut);
+    }
+}
+
+/// Runs `traffic` on the RTL: its MMM loaded through the setup port, then every clock's
+/// inputs; checks every output after every clock against the clocked model's. Returns the
+/// verdicts after each aligned DOP's last bundle.
+fn run_wscg03_dop_unit<const K: usize>(
+    traffic: &collision_chip::harness::wscg03_io::DopTraffic,
+) -> Vec<[bool; 2]> {
+    use collision_chip::harness::wscg03_io::{outputs, set_inputs, FORMAT};
+    let mut uut = b32::wscg03_dop_unit_top::<K>();
+    for (a, d) in dop_unit_setup_words(FORMAT, traffic.rounding, &traffic.setup) {
+        set_inputs(&mut uut, &Default::default());
+        uut.load_en.next = true;
+        uut.load_addr.next = a.into();
+        uut.load_data.next = d.into();
+        clock_wscg03(&mut uut);
+    }
+    let mut verdicts = vec![];
+    for (c, (inp, want)) in traffic.clocks.iter().zip(&traffic.outs).enumerate() {
+        set_inputs(&mut uut, inp);
+        clock_wscg03(&mut uut);
+        let got = outputs(&uut);
+        assert_eq!(got, *want, "k = {K}: clock {c} after the MMM");
+        if got.flags_valid {
+            verdicts.push(got.overlap);
+        }
+    }
+    traffic
+        .dops
+        .iter()
+        .filter_map(|d| verdicts.get(d.last_bundle).copied())
+        .collect()
+}
+
+/// WSCG'03's DOP Unit (`b32::Wscg03DopUnit`) equals its clocked model
+/// (`cycle::wscg03::dop_unit::ClockedDopUnit`) on every port every clock, under traffic as
+/// the Stack Engine makes it (`harness::wscg03_io::dop_unit_traffic`: loads into one set while
+/// the other set's d' meet aligned DOPs, a tumbled leaf alone now and then, idle clocks) for
+/// k = 6, 14, 24 and 26 in both roundings; after each aligned DOP's last bundle the verdicts
+/// are `dop_overlap`'s for the left and the right sibling. And a set's d' are in the memory
+/// `wscg03_transform_clocks(k)` clocks after its last bundle.
+#[test]
+fn wscg03_dop_unit_b32_lockstep() {
+    use collision_chip::chip::rtl::wscg03_transform_clocks;
+    use collision_chip::cycle::wscg03::dop_unit::{ClockIn, TumbledBundle};
+    use collision_chip::harness::wscg03_io::{dop_unit_traffic, FORMAT};
+    fn check<const K: usize>(seed: u64) -> (usize, usize) {
+        let (mut dops, mut overlaps) = (0, 0);
+        for r in MODES {
+            let traffic = dop_unit_traffic(K, r, seed, 1500);
+            let got = run_wscg03_dop_unit::<K>(&traffic);
+            let want: Vec<[bool; 2]> = traffic
+                .dops
+                .iter()
+                .take(got.len())
+                .map(|d| {
+                    d.d.clone()
+                        .map(|side| dop_unit::dop_overlap(FORMAT, r, &traffic.setup, &side, &d.e))
+                })
+                .collect();
+            assert_eq!(got, want, "k = {K} {r:?}: verdicts");
+            assert!(
+                got.len() + 3 >= traffic.dops.len() && got.len() > 40,
+                "k = {K}: {} of {} aligned DOPs",
+                got.len(),
+                traffic.dops.len()
+            );
+            dops += got.len();
+            overlaps += got.iter().flatten().filter(|&&o| o).count();
+        }
+        // one pair from reset: busy from its first bundle to its transform's last write
+        let mut traffic = dop_unit_traffic(K, MODES[0], seed, 0);
+        let m = K.div_ceil(8);
+        let mut load: Vec<ClockIn> = (0..2 * m)
+            .map(|b| ClockIn {
+                t: Some(TumbledBundle {
+                    set: 0,
+                    side: b / m,
+                    entry: b % m,
+                    last: b + 1 == 2 * m,
+                    data: [1.0; 8],
+                }),
+                a: None,
+            })
+            .collect();
+        load.resize(2 * m + wscg03_transform_clocks(K) + 2, ClockIn::default());
+        let mut model = collision_chip::cycle::wscg03::dop_unit::ClockedDopUnit::new(
+            FORMAT,
+            MODES[0],
+            &traffic.setup,
+        );
+        traffic.outs = load.iter().map(|c| model.step(c)).collect();
+        traffic.clocks = load;
+        run_wscg03_dop_unit::<K>(&traffic);
+        // outs[c] is the state in clock c + 1; the last bundle is in clock 2 m - 1
+        let free = traffic.outs.iter().rposition(|o| o.busy[0]).unwrap() + 2;
+        assert_eq!(free - (2 * m - 1), wscg03_transform_clocks(K), "k = {K}");
+        (dops, overlaps)
+    }
+    big_stack(|| {
+        let runs = [
+            check::<6>(1),
+            check::<14>(2),
+            check::<24>(3),
+            check::<26>(4),
+        ];
+        let dops: usize = runs.iter().map(|r| r.0).sum();
+        let overlaps: usize = runs.iter().map(|r| r.1).sum();
+        assert!(overlaps > dops / 4 && overlaps < 2 * dops - dops / 4);
+        println!("Wscg03DopUnit b32: {dops} aligned DOPs against both siblings, every clock as the model ({overlaps} of {} overlap)", 2 * dops);
+    });
+}

@@ -22,6 +22,17 @@ pub const COMPARE_BANK_LATENCY: usize = FP_CMP_LATENCY + 1;
 /// WSCG'03's d' memory (`rtl::b32::DprimeMemory`): a read address to its entry (synchronous
 /// RAMs).
 pub const DPRIME_READ_LATENCY: usize = 1;
+/// WSCG'03's DOP Unit (`rtl::b32::Wscg03DopUnit`): an aligned DOP's bundle to its verdicts so
+/// far, the d' memory's read, then the compare bank.
+pub const WSCG03_COMPARE_LATENCY: usize = DPRIME_READ_LATENCY + COMPARE_BANK_LATENCY;
+
+/// WSCG'03's DOP Unit: clocks from a tumbled pair's last bundle to the first clock its `k`
+/// pairs of d' are all in the d' memory (its set no longer busy), when the address generator
+/// is free: the generator's counter (1), the MMM's read (1), the DOTADD units, a lane a
+/// clock, the d' memory's write (1).
+pub const fn wscg03_transform_clocks(k: usize) -> usize {
+    1 + 1 + DOTADD_LATENCY + (k - 1) + 1
+}
 
 /// How deep the floating-point units are cut, per target. The values are the same bit for
 /// bit at every depth; only the latencies differ.

@@ -11,3 +11,4 @@ pub mod tri_io;
 pub mod units;
 pub mod verilator;
 pub mod verilog;
+pub mod wscg03_io;

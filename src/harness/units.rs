@@ -202,6 +202,7 @@ pub fn all() -> Vec<Unit> {
     units.push(dop_decode_unit());
     units.push(wscg03::compare_bank_unit());
     units.push(wscg03::dprime_memory_unit());
+    units.push(wscg03::wscg03_dop_unit_unit());
     units
 }
 
@@ -464,7 +465,7 @@ fn dop_decode_vectors(name: &str, fmt: Format, bits: u32) -> String {
 }
 
 /// A random operand: any bit pattern, or a value near 1 (many ties and cancellations).
-fn operand(rng: &mut impl Rng, fmt: Format) -> u64 {
+pub(crate) fn operand(rng: &mut impl Rng, fmt: Format) -> u64 {
     let w = fmt.width();
     match rng.random_range(0..4) {
         0 | 1 => rng.random_range(0..(1u64 << w)),

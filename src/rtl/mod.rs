@@ -7,7 +7,7 @@
 //!
 //! | module | format | units |
 //! |---|---|---|
-//! | [`b32`] | `binary32` (e8m23, [`Format::BINARY32`](crate::format::Format::BINARY32)) | [`b32::FpMul`] (latency 4), [`b32::FpAdd`] (latency 3), [`b32::FpScale`] (by a constant, latency 4), [`b32::FpCmp`] (WSCG'03's compare unit, latency 1), [`b32::Doptrf`] (latency 15), [`b32::Dotadd`] (WSCG'03's DOTADD unit, latency 12), [`b32::KlmSel`], [`b32::DopUnit6`] ... [`b32::DopUnit26`] (k = 6, 14, 18, 24, 26; latency 15), the folded [`b32::DopUnit6Fold2`] ... [`b32::DopUnit24Fold24`] (a pair every ii clocks; latency 14 + ii); in binary32 only, WSCG'03's compare bank [`b32::CompareBank`] (latency 2) and d' memory [`b32::DprimeMemory`] |
+//! | [`b32`] | `binary32` (e8m23, [`Format::BINARY32`](crate::format::Format::BINARY32)) | [`b32::FpMul`] (latency 4), [`b32::FpAdd`] (latency 3), [`b32::FpScale`] (by a constant, latency 4), [`b32::FpCmp`] (WSCG'03's compare unit, latency 1), [`b32::Doptrf`] (latency 15), [`b32::Dotadd`] (WSCG'03's DOTADD unit, latency 12), [`b32::KlmSel`], [`b32::DopUnit6`] ... [`b32::DopUnit26`] (k = 6, 14, 18, 24, 26; latency 15), the folded [`b32::DopUnit6Fold2`] ... [`b32::DopUnit24Fold24`] (a pair every ii clocks; latency 14 + ii); in binary32 only, WSCG'03's compare bank [`b32::CompareBank`] (latency 2), d' memory [`b32::DprimeMemory`] and DOP Unit [`b32::Wscg03DopUnit`] |
 //! | [`e8m15`] | e8m15 ([`Format::REDUCED`](crate::format::Format::REDUCED)) | the same |
 //! | [`e8m15_b32`] | e8m15 DOP unit, binary32 TRI_UNIT | the k = 24 chip only |
 //! | [`e8m10`] | e8m10 ([`Format::E8M10`](crate::format::Format::E8M10)) | the same, and the k = 24 chip |
@@ -206,6 +206,8 @@ pub mod b32 {
     crate::rtl::wscg03::dop_unit::dprime_memory!(32, 256;
         (ram_l0 ram_r0 0 0) (ram_l1 ram_r1 1 32) (ram_l2 ram_r2 2 64) (ram_l3 ram_r3 3 96)
         (ram_l4 ram_r4 4 128) (ram_l5 ram_r5 5 160) (ram_l6 ram_r6 6 192) (ram_l7 ram_r7 7 224));
+    crate::rtl::wscg03::dop_unit::wscg03_dop_unit!(32, 256;
+        (0 0) (1 32) (2 64) (3 96) (4 128) (5 160) (6 192) (7 224));
     // the decode stage of 4-bit stored DOPs (`date05-treelets`): exponents -149 ..= 124, 9 bits
     crate::rtl::dop_decode::dop_decode!(32, 23, 4, 9);
     crate::rtl::dop_decode::dop_unit_coded!(32, 4, 9);

@@ -6,7 +6,9 @@
 //! come from the golden model (the list traversal's overlaps, TRI_UNIT's verdicts): this
 //! model adds only *when*. It is an event model in program order (each unit keeps the
 //! clock it is free; the Memory Controller asks for words in order), not clocked register
-//! by register: there is no RTL of it to match (docs/explanation/architecture.md, "WSCG'03's chip").
+//! by register: of its units only the DOP Unit is RTL so far, clocked here as
+//! [`ClockedDopUnit`](dop_unit::ClockedDopUnit), which the event model does not use yet
+//! (docs/explanation/architecture.md, "WSCG'03's chip").
 
 pub mod dop_unit;
 pub mod stack_engine;

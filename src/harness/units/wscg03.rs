@@ -27,7 +27,6 @@ pub(super) fn compare_bank_unit() -> Unit {
 fn compare_bank_vectors() -> String {
     use crate::golden::dop_unit::compare_bundles;
     use crate::golden::doptrf::separated;
-    use crate::golden::klmsel::opposite_lane;
     let fmt = Format::BINARY32;
     let q = fmt.min_positive_subnormal();
     let mut out = String::new();
@@ -63,19 +62,7 @@ fn compare_bank_vectors() -> String {
                 }
             }
             let base = if rng.random() { &dl } else { &dr };
-            for (g, x) in e.iter_mut().enumerate() {
-                let mut y = -base[opposite_lane(k, g)];
-                if rng.random_range(0..k) == 0 {
-                    y = fmt.next_down(y);
-                } else {
-                    for _ in 0..rng.random_range(0..3) {
-                        y = fmt.next_up(y);
-                    }
-                }
-                if !y.is_nan() {
-                    *x = y;
-                }
-            }
+            crate::harness::wscg03_io::near_flags(&mut rng, fmt, base, &mut e);
         }
         let (bl, br) = (compare_bundles(&dl, &e, 8), compare_bundles(&dr, &e, 8));
         let mut sep = [false; 2];
@@ -151,6 +138,57 @@ fn dprime_memory_vectors(k: usize) -> String {
             };
             let _ = writeln!(out, "{set} {entry} {} {}", word(0), word(1));
         }
+    }
+    out
+}
+
+/// `wscg03_dop_unit_k24_b32`: WSCG'03's DOP Unit for k = 24 (`rtl::b32::Wscg03DopUnit`).
+pub(super) fn wscg03_dop_unit_unit() -> Unit {
+    Unit {
+        name: "wscg03_dop_unit_k24_b32".into(),
+        latency: 1,
+        verilog: Box::new(crate::rtl::b32::verilog_wscg03_dop_unit24),
+        vectors: Box::new(|| wscg03_dop_unit_vectors(24)),
+    }
+}
+
+/// Vectors of WSCG'03's DOP Unit of `k` directions, a clock per line: a preload of its MMM
+/// (a random host setup, every lane rounding upward), then 1,500 clocks of
+/// `harness::wscg03_io::dop_unit_traffic` (loads into one d' set while aligned DOPs meet the
+/// other's d', with idle clocks), each line its inputs and the outputs after its rising edge,
+/// the clocked model's (`cycle::wscg03::dop_unit::ClockedDopUnit`), which the rust-hdl unit
+/// equals every clock (tb/rtl_dop.rs).
+fn wscg03_dop_unit_vectors(k: usize) -> String {
+    use crate::harness::wscg03_io::{dop_unit_traffic, FORMAT};
+    let r = crate::format::Rounding::TowardPositive;
+    let traffic = dop_unit_traffic(k, r, 0xd0, 1500);
+    let bus = |xs: &[f64; 8]| -> String {
+        xs.iter()
+            .rev()
+            .map(|&x| format!("{:08x}", FORMAT.to_bits(x)))
+            .collect()
+    };
+    let mut out = String::new();
+    let _ = writeln!(out, "// preload: load_en load_addr load_data");
+    let _ = writeln!(out, "// t_valid t_set t_side t_entry t_last t_data a_valid a_first a_lanes a_set a_entry e busy overlap_l overlap_r flags_valid");
+    let _ = writeln!(out, "// latency: 1");
+    let _ = writeln!(out, "// wscg03_dop_unit_k{k}_b32: WSCG'03's DOP Unit, one line per clock: inputs, then the outputs after that clock's rising edge; golden: cycle::wscg03::dop_unit::ClockedDopUnit (golden::doptrf::transformed, separated)");
+    for (a, d) in crate::harness::chip_io::dop_unit_setup_words(FORMAT, r, &traffic.setup) {
+        let _ = writeln!(out, "@ 1 {a:02x} {d:08x}");
+    }
+    let zero = "0".repeat(64);
+    for (c, o) in traffic.clocks.iter().zip(&traffic.outs) {
+        let t = c.t.as_ref().map_or(format!("0 0 0 0 0 {zero}"), |t| {
+            let (set, side, entry, last) = (t.set, t.side, t.entry, t.last as u8);
+            format!("1 {set} {side} {entry} {last} {}", bus(&t.data))
+        });
+        let a = c.a.as_ref().map_or(format!("0 0 00 0 0 {zero}"), |a| {
+            let (first, lanes, set, entry) = (a.first as u8, a.lanes, a.set, a.entry);
+            format!("1 {first} {lanes:02x} {set} {entry} {}", bus(&a.e))
+        });
+        let busy = o.busy[0] as u8 | (o.busy[1] as u8) << 1;
+        let [l, r] = o.overlap.map(|v| v as u8);
+        let _ = writeln!(out, "{t} {a} {busy} {l} {r} {}", o.flags_valid as u8);
     }
     out
 }

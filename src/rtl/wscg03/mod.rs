@@ -1,5 +1,5 @@
 //! WSCG'03's CollisionChip (§4, Fig. 4) in RTL, unit by unit; the cycle model's event model
-//! of the whole chip is [`cycle::wscg03`](crate::cycle::wscg03). So far: the DOP Unit's
-//! compare bank ([`dop_unit`]).
+//! of the whole chip is [`cycle::wscg03`](crate::cycle::wscg03). So far: the DOP Unit
+//! ([`dop_unit`]: `Wscg03DopUnit`, its compare bank and d' memory).
 
 pub mod dop_unit;

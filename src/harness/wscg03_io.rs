@@ -1,0 +1,301 @@
+//! WSCG'03's DOP Unit driven as its Stack Engine would drive it ([`dop_unit_traffic`]): a
+//! random host setup in its MMM, tumbled sibling pairs loaded into either d' set while the
+//! other set's d' meet aligned DOPs, bundle by bundle with idle clocks between, and what the
+//! clocked model ([`ClockedDopUnit`]) answers every clock; the RTL's ports as the model's
+//! ([`set_inputs`], [`outputs`]).
+
+use crate::chip::config::ChipConfig;
+use crate::cycle::wscg03::dop_unit::{
+    AlignedBundle, ClockIn, ClockOut, ClockedDopUnit, TumbledBundle,
+};
+use crate::format::{Format, Rounding};
+use crate::golden::host::{HostSetup, TriSide};
+use crate::golden::klmsel::opposite_lane;
+use crate::rtl::b32::Wscg03DopUnit;
+use rand::{Rng, SeedableRng};
+use rust_hdl::prelude::*;
+use std::collections::VecDeque;
+
+/// WSCG'03's chip is binary32: eight distances on its 256-bit bus.
+pub const FORMAT: Format = Format::BINARY32;
+
+/// An aligned DOP compared: against which set, A's distances, the two tumbled siblings' DOPs
+/// whose d' that set held, and the index (among all aligned bundles driven) of its last
+/// bundle, whose verdicts are [`dop_overlap`](crate::golden::dop_unit::dop_overlap)'s.
+pub struct AlignedDop {
+    pub set: usize,
+    pub e: Vec<f64>,
+    pub d: [Vec<f64>; 2],
+    pub last_bundle: usize,
+}
+
+/// A run of the DOP Unit: its setup (every lane rounding `rounding`), each clock's inputs and
+/// the clocked model's outputs after it, the aligned DOPs.
+pub struct DopTraffic {
+    pub setup: HostSetup,
+    pub rounding: Rounding,
+    pub clocks: Vec<ClockIn>,
+    pub outs: Vec<ClockOut>,
+    pub dops: Vec<AlignedDop>,
+}
+
+/// A host setup of `k` lanes with random non-negative C and c (as the host sets C) and
+/// random correspondences.
+fn random_setup(rng: &mut impl Rng, k: usize) -> HostSetup {
+    let fmt = FORMAT;
+    let mut nonneg = || fmt.from_bits(super::units::operand(rng, fmt)).abs();
+    let cmat = (0..k).map(|_| [nonneg(), nonneg(), nonneg()]).collect();
+    let cvec = (0..k).map(|_| nonneg()).collect();
+    let j = (0..k)
+        .map(|_| [0; 3].map(|_| rng.random_range(0..k) as u8))
+        .collect();
+    let cfg = ChipConfig {
+        k,
+        format: fmt.into(),
+        ..ChipConfig::default()
+    };
+    HostSetup {
+        j,
+        cmat,
+        cvec,
+        ..HostSetup::new(&cfg, &crate::pose::Pose::default(), 1.0, TriSide::UNUSED)
+    }
+}
+
+/// Sets `e` so that each e_g meets minus the d' it is compared with, `dp[opp(g)]`, up to two
+/// ulps above (no flag) or, at one lane in k on average, one ulp below (a flag): both
+/// verdicts come out, decided in the last ulp.
+pub(crate) fn near_flags(rng: &mut impl Rng, fmt: Format, dp: &[f64], e: &mut [f64]) {
+    let k = e.len();
+    for (g, x) in e.iter_mut().enumerate() {
+        let mut y = -dp[opposite_lane(k, g)];
+        if rng.random_range(0..k) == 0 {
+            y = fmt.next_down(y);
+        } else {
+            for _ in 0..rng.random_range(0..3) {
+                y = fmt.next_up(y);
+            }
+        }
+        if !y.is_nan() {
+            *x = y;
+        }
+    }
+}
+
+/// The d' of DOP `d` under `setup`, every lane rounding `r`.
+fn transform(setup: &HostSetup, r: Rounding, d: &[f64]) -> Vec<f64> {
+    (0..d.len())
+        .map(|i| {
+            let sel = crate::golden::klmsel::klmsel(d, setup.j[i]);
+            crate::golden::doptrf::transformed(FORMAT, r, sel, setup.cmat[i], setup.cvec[i])
+        })
+        .collect()
+}
+
+/// A tumbled DOP of `k` random distances, non-negative (a DOP that can overlap) two times
+/// in three.
+fn random_dop(rng: &mut impl Rng, k: usize) -> Vec<f64> {
+    let nonneg = rng.random_range(0..3) != 2;
+    (0..k)
+        .map(|_| FORMAT.from_bits(super::units::operand(rng, FORMAT)))
+        .map(|x| if nonneg { x.abs() } else { x })
+        .collect()
+}
+
+/// A DOP's bundles of eight (zeros past its end).
+fn bundles(d: &[f64]) -> Vec<[f64; 8]> {
+    d.chunks(8)
+        .map(|c| std::array::from_fn(|t| c.get(t).copied().unwrap_or(0.0)))
+        .collect()
+}
+
+/// The driver's picture: which DOPs each set's input registers hold, and the load and the
+/// aligned DOP in progress.
+struct Driver {
+    k: usize,
+    held: [Option<[Vec<f64>; 2]>; 2],
+    load: Option<(usize, VecDeque<TumbledBundle>)>,
+    compare: Option<(usize, VecDeque<AlignedBundle>)>,
+    bundles_driven: usize,
+}
+
+impl Driver {
+    /// Starts loading set `s`: a new left DOP and, unless the set holds a pair and the
+    /// group is a tumbled leaf alone (one time in five), a new right one.
+    fn start_load(&mut self, rng: &mut impl Rng, s: usize) {
+        let left = random_dop(rng, self.k);
+        let alone = self.held[s].is_some() && rng.random_range(0..5) == 0;
+        let right = match &self.held[s] {
+            Some([_, r]) if alone => r.clone(),
+            _ => random_dop(rng, self.k),
+        };
+        let mut queue = VecDeque::new();
+        let sides: &[(usize, &Vec<f64>)] = if alone {
+            &[(0, &left)]
+        } else {
+            &[(0, &left), (1, &right)]
+        };
+        for &(side, d) in sides {
+            for (entry, data) in bundles(d).into_iter().enumerate() {
+                queue.push_back(TumbledBundle {
+                    set: s,
+                    side,
+                    entry,
+                    last: false,
+                    data,
+                });
+            }
+        }
+        queue.back_mut().expect("k > 0").last = true;
+        self.held[s] = Some([left, right]);
+        self.load = Some((s, queue));
+    }
+
+    /// Starts an aligned DOP against set `s`: random distances, or (two times in three) each
+    /// a few ulps from a flag of one sibling's d'.
+    fn start_compare(
+        &mut self,
+        rng: &mut impl Rng,
+        s: usize,
+        setup: &HostSetup,
+        r: Rounding,
+        dops: &mut Vec<AlignedDop>,
+    ) {
+        let fmt = FORMAT;
+        let k = self.k;
+        let d = self.held[s].clone().expect("a loaded set");
+        let mut e: Vec<f64> = (0..k)
+            .map(|_| fmt.from_bits(super::units::operand(rng, fmt)))
+            .collect();
+        if rng.random_range(0..3) != 0 {
+            let base = &d[rng.random_range(0..2)];
+            near_flags(rng, fmt, &transform(setup, r, base), &mut e);
+        }
+        let b = bundles(&e);
+        let n = b.len();
+        let queue = b
+            .into_iter()
+            .enumerate()
+            .map(|(entry, e)| AlignedBundle {
+                set: s,
+                entry,
+                first: entry == 0,
+                lanes: ((1u32 << (k - 8 * entry).min(8)) - 1) as u8,
+                e,
+            })
+            .collect();
+        dops.push(AlignedDop {
+            set: s,
+            e,
+            d,
+            last_bundle: self.bundles_driven + n - 1,
+        });
+        self.compare = Some((s, queue));
+    }
+
+    /// The next bundle of the load or the aligned DOP in progress (or none this clock: the
+    /// memory is late).
+    fn next<T>(rng: &mut impl Rng, job: &mut Option<(usize, VecDeque<T>)>, p: f64) -> Option<T> {
+        let (_, q) = job.as_mut()?;
+        let b = rng.random_bool(p).then(|| q.pop_front()).flatten();
+        if q.is_empty() {
+            *job = None;
+        }
+        b
+    }
+}
+
+/// `clocks` clocks of the DOP Unit of `k` directions, every lane rounding `r`, drawn from
+/// `seed`: loads start now and then into a set that is neither busy nor being compared
+/// with; aligned DOPs start against a loaded set that is neither busy nor being loaded;
+/// both run concurrently, a bundle on most clocks. The driver reads the model's `busy`.
+pub fn dop_unit_traffic(k: usize, r: Rounding, seed: u64, clocks: usize) -> DopTraffic {
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
+    let setup = random_setup(&mut rng, k);
+    let mut model = ClockedDopUnit::new(FORMAT, r, &setup);
+    let mut drv = Driver {
+        k,
+        held: [None, None],
+        load: None,
+        compare: None,
+        bundles_driven: 0,
+    };
+    let (mut ins, mut outs, mut dops) = (vec![], vec![], vec![]);
+    let mut busy = [false; 2];
+    for _ in 0..clocks {
+        if drv.load.is_none() && rng.random_bool(0.1) {
+            let comparing = drv.compare.as_ref().map(|c| c.0);
+            let free: Vec<usize> = (0..2)
+                .filter(|&s| !busy[s] && comparing != Some(s))
+                .collect();
+            if let Some(&s) = free.get(rng.random_range(0..free.len().max(1))) {
+                drv.start_load(&mut rng, s);
+            }
+        }
+        let t = Driver::next(&mut rng, &mut drv.load, 0.8);
+        if drv.compare.is_none() && rng.random_bool(0.5) {
+            let loading = drv.load.as_ref().map(|l| l.0).or(t.as_ref().map(|t| t.set));
+            let ready: Vec<usize> = (0..2)
+                .filter(|&s| drv.held[s].is_some() && !busy[s] && loading != Some(s))
+                .collect();
+            if let Some(&s) = ready.get(rng.random_range(0..ready.len().max(1))) {
+                drv.start_compare(&mut rng, s, &setup, r, &mut dops);
+            }
+        }
+        let a = Driver::next(&mut rng, &mut drv.compare, 0.85);
+        drv.bundles_driven += a.is_some() as usize;
+        let inp = ClockIn { t, a };
+        let out = model.step(&inp);
+        busy = out.busy;
+        ins.push(inp);
+        outs.push(out);
+    }
+    drop(model);
+    DopTraffic {
+        setup,
+        rounding: r,
+        clocks: ins,
+        outs,
+        dops,
+    }
+}
+
+/// Eight format values as a 256-bit bus word (slot t in bits 32 t ..).
+fn bus(xs: &[f64; 8]) -> Bits<256> {
+    let mut w = Bits::<256>::default();
+    for (t, &x) in xs.iter().enumerate() {
+        w.set_bits::<32>(32 * t, FORMAT.to_bits(x).into());
+    }
+    w
+}
+
+/// Drives one clock's inputs (the MMM's port idle).
+pub fn set_inputs<const K: usize>(uut: &mut Wscg03DopUnit<K>, inp: &ClockIn) {
+    uut.load_en.next = false;
+    uut.t_valid.next = inp.t.is_some();
+    if let Some(t) = &inp.t {
+        uut.t_set.next = (t.set as u64).into();
+        uut.t_side.next = t.side == 1;
+        uut.t_entry.next = (t.entry as u64).into();
+        uut.t_last.next = t.last;
+        uut.t_data.next = bus(&t.data);
+    }
+    uut.a_valid.next = inp.a.is_some();
+    if let Some(a) = &inp.a {
+        uut.a_set.next = (a.set as u64).into();
+        uut.a_entry.next = (a.entry as u64).into();
+        uut.a_first.next = a.first;
+        uut.a_lanes.next = (a.lanes as u64).into();
+        uut.e.next = bus(&a.e);
+    }
+}
+
+/// The outputs as the model's.
+pub fn outputs<const K: usize>(uut: &Wscg03DopUnit<K>) -> ClockOut {
+    let busy = uut.busy.val();
+    ClockOut {
+        busy: [busy.get_bit(0), busy.get_bit(1)],
+        overlap: [uut.overlap_l.val(), uut.overlap_r.val()],
+        flags_valid: uut.flags_valid.val(),
+    }
+}
