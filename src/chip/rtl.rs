@@ -26,6 +26,13 @@ pub const DPRIME_READ_LATENCY: usize = 1;
 /// far, the d' memory's read, then the compare bank.
 pub const WSCG03_COMPARE_LATENCY: usize = DPRIME_READ_LATENCY + COMPARE_BANK_LATENCY;
 
+/// WSCG'03's Stack Engine's list SRAMs (`rtl::wscg03::stack_engine::ListStack`): address
+/// bits of each (left, right): 4,096 node pointers.
+pub const LIST_SRAM_BITS: usize = 12;
+/// The Stack Engine's levels (its level register, 5 bits): level 0 holds the root's list
+/// (the host's), so lists reach level 31 and trees 30 levels below B's root.
+pub const LIST_LEVELS: usize = 32;
+
 /// WSCG'03's DOP Unit: clocks from a tumbled pair's last bundle to the first clock its `k`
 /// pairs of d' are all in the d' memory (its set no longer busy), when the address generator
 /// is free: the generator's counter (1), the MMM's read (1), the DOTADD units, a lane a

@@ -203,6 +203,7 @@ pub fn all() -> Vec<Unit> {
     units.push(wscg03::compare_bank_unit());
     units.push(wscg03::dprime_memory_unit());
     units.push(wscg03::wscg03_dop_unit_unit());
+    units.push(wscg03::list_stack_unit());
     units
 }
 

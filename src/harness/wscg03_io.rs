@@ -299,3 +299,229 @@ pub fn outputs<const K: usize>(uut: &Wscg03DopUnit<K>) -> ClockOut {
         flags_valid: uut.flags_valid.val(),
     }
 }
+
+use crate::cycle::wscg03::stack_engine::{ListCmd, ListOut, ListStack};
+use crate::dop::{DopTree, Node};
+
+/// A query's run of the Stack Engine's lists: each clock's command and the clocked model's
+/// outputs after it, and the lists in the order they were read.
+pub struct ListTraffic {
+    pub cmds: Vec<ListCmd>,
+    pub outs: Vec<ListOut>,
+    pub lists: Vec<Vec<u32>>,
+}
+
+/// What a tumbled node's list is tested against one level down: its children, or a leaf
+/// itself (Algorithm 2's overloaded call).
+fn expand(t: &DopTree, x: u32) -> Vec<u32> {
+    match t.node(x) {
+        Node::Inner(ch) => ch.to_vec(),
+        Node::Leaf(_) => vec![x],
+    }
+}
+
+/// What an overlap of aligned node `n` with tumbled node `x` appends to x's list: n's
+/// children, or n itself (a leaf against an inner node), or nothing (a leaf pair: the
+/// Triangle Unit's).
+fn appended(a: &DopTree, b: &DopTree, n: u32, x: u32) -> Vec<u32> {
+    match (a.node(n), b.node(x)) {
+        (Node::Inner(ch), _) => ch.to_vec(),
+        (Node::Leaf(_), Node::Inner(_)) => vec![n],
+        (Node::Leaf(_), Node::Leaf(_)) => vec![],
+    }
+}
+
+/// The Stack Engine's lists (the clocked [`ListStack`], SRAMs of 2^`sram_bits` pointers)
+/// driven as its sequencer would on
+/// the query of trees `a` (aligned) and `b` (tumbled) with DOP verdicts `overlap(n, x)`:
+/// the root's pointer onto level 1, then per list its pointers read one a clock while
+/// earlier ones' appends (one a clock) are pending, each read pointer tested against the
+/// list's tumbled group (the group one level up's member `branch`, expanded), the list done
+/// when every append has gone; idle while the lists step up. At most `max_clocks` clocks.
+pub fn list_traffic(
+    sram_bits: usize,
+    a: &DopTree,
+    b: &DopTree,
+    overlap: &mut dyn FnMut(u32, u32) -> bool,
+    max_clocks: usize,
+) -> ListTraffic {
+    let mut model = ListStack::new(sram_bits);
+    let root = DopTree::ROOT;
+    // the tumbled group per level (level 0's one member stands for the root's list)
+    let mut groups: Vec<Vec<u32>> = vec![vec![root]];
+    let mut pending: VecDeque<(usize, u16)> = VecDeque::from([(0, root as u16)]);
+    let (mut cmds, mut outs, mut lists): (_, _, Vec<Vec<u32>>) = (vec![], vec![], vec![]);
+    let (mut out, mut reads_out, mut started) = (ListOut::default(), 0u16, false);
+    while cmds.len() < max_clocks && !out.done {
+        if let Some(n) = out.rd {
+            let group = &groups[out.level];
+            if let Some(l) = lists.last_mut() {
+                l.push(n as u32);
+            }
+            for (m, &x) in group.iter().enumerate() {
+                if overlap(n as u32, x) {
+                    pending.extend(
+                        appended(a, b, n as u32, x)
+                            .into_iter()
+                            .map(|p| (m, p as u16)),
+                    );
+                }
+            }
+            reads_out -= 1;
+        }
+        let mut cmd = ListCmd {
+            append: pending.pop_front(),
+            ..ListCmd::default()
+        };
+        if !out.busy && started {
+            cmd.read = out.remaining > reads_out && pending.len() < 4;
+            reads_out += cmd.read as u16;
+        }
+        // the list is done: every pointer read, tested and its appends gone
+        let list_done = out.remaining == 0 && reads_out == 0 && cmd.append.is_none();
+        if !out.busy && list_done && (started || cmds.len() == 1) {
+            cmd.next_list = true;
+        }
+        let before = (out.level, out.branch, out.busy);
+        out = model.step(&cmd);
+        cmds.push(cmd);
+        outs.push(out);
+        let entered = (out.level, out.branch, out.busy) != before || (cmd.next_list && !out.busy);
+        if entered && !out.busy && !out.done && out.level > 0 {
+            let parent = if out.level == 1 {
+                root
+            } else {
+                groups[out.level - 1][out.branch]
+            };
+            let g = if out.level == 1 {
+                vec![root]
+            } else {
+                expand(b, parent)
+            };
+            groups.truncate(out.level);
+            groups.push(g);
+            lists.push(vec![]);
+            started = true;
+        }
+    }
+    ListTraffic { cmds, outs, lists }
+}
+
+/// Drives one clock's command into the RTL lists.
+pub fn set_list_inputs<const A: usize>(
+    uut: &mut crate::rtl::wscg03::stack_engine::ListStack<A>,
+    c: &ListCmd,
+) {
+    uut.clear.next = c.clear;
+    uut.append.next = c.append.is_some();
+    let (side, ptr) = c.append.unwrap_or((0, 0));
+    uut.wr_side.next = side == 1;
+    uut.wr_ptr.next = (ptr as u64).into();
+    uut.read.next = c.read;
+    uut.next_list.next = c.next_list;
+}
+
+/// The RTL lists' outputs as the model's.
+pub fn list_outputs<const A: usize>(
+    uut: &crate::rtl::wscg03::stack_engine::ListStack<A>,
+) -> ListOut {
+    ListOut {
+        level: uut.level.val().index(),
+        branch: uut.branch.val() as usize,
+        remaining: uut.remaining.val().index() as u16,
+        busy: uut.busy.val(),
+        done: uut.done.val(),
+        rd: uut.rd_valid.val().then(|| uut.rd_ptr.val().index() as u16),
+        overflow: uut.overflow.val(),
+    }
+}
+
+/// SRAM address bits of the exported lists (`list_stack_a8`) and their tests.
+pub const LIST_TEST_BITS: usize = 8;
+
+/// The commands that test the Stack Engine's lists (SRAMs of 2^[`LIST_TEST_BITS`]
+/// pointers): whole queries of two soups (20 and 120 triangles, DOP verdicts of the
+/// default chip), each followed by a `clear`; 260 appends onto level 1's left list (past
+/// the SRAM: overflow), down and 20 reads, a `clear`; one
+/// pointer a level down past the last level (overflow), then idle clocks while the lists
+/// step up to done.
+pub fn list_commands() -> Vec<ListCmd> {
+    use crate::golden::dop_unit::TransformCache;
+    use crate::pose::Pose;
+    let mut cmds = vec![];
+    let clear = ListCmd {
+        clear: true,
+        ..ListCmd::default()
+    };
+    for (n, seed, pose) in [
+        (20, 1, Pose::new(10.0, 20.0, 30.0, 0.1, 0.0, 0.0)),
+        (120, 3, Pose::new(-35.0, 80.0, 5.0, 0.2, -0.1, 0.05)),
+    ] {
+        let soup = |s| crate::mesh::soup(n, s).triangles_f64();
+        let chip = crate::query::Chip::new(&soup(seed), &soup(seed + 1), ChipConfig::default())
+            .expect("a soup is a valid object");
+        let setup = chip.setup(&pose);
+        let (a, b, cfg) = (&chip.a.tree, &chip.b.tree, &chip.cfg);
+        let mut cache = TransformCache::new(cfg.format.dop, cfg.dop_rounding.op(), &setup, a, b);
+        cmds.extend(
+            list_traffic(
+                LIST_TEST_BITS,
+                a,
+                b,
+                &mut |n, x| cache.overlap(x, n),
+                1 << 20,
+            )
+            .cmds,
+        );
+        cmds.push(clear);
+    }
+    let cmd = |append: Option<(usize, u16)>, read: bool, next_list: bool| ListCmd {
+        append,
+        read,
+        next_list,
+        ..ListCmd::default()
+    };
+    cmds.extend((0..(1u16 << LIST_TEST_BITS) + 4).map(|p| cmd(Some((0, p)), false, false)));
+    cmds.push(cmd(None, false, true));
+    cmds.extend((0..20).map(|_| cmd(None, true, false)));
+    cmds.push(clear);
+    for p in 0..34u16 {
+        cmds.push(cmd(Some(((p % 2) as usize, p)), false, false));
+        cmds.push(cmd(None, true, true));
+    }
+    cmds.extend((0..70).map(|_| ListCmd::default()));
+    cmds
+}
+
+/// Vectors of the Stack Engine's lists, a clock per line: [`list_commands`] and the
+/// clocked model's outputs after each clock's rising edge.
+pub fn list_stack_vectors() -> String {
+    use std::fmt::Write;
+    let mut model = ListStack::new(LIST_TEST_BITS);
+    let mut out = String::new();
+    let _ = writeln!(out, "// clear append wr_side wr_ptr read next_list level branch remaining busy done rd_valid rd_ptr overflow");
+    let _ = writeln!(out, "// latency: 1");
+    let _ = writeln!(out, "// list_stack_a8: WSCG'03's Stack Engine's lists, one line per clock: inputs, then the outputs after that clock's rising edge; golden: cycle::wscg03::stack_engine::ListStack");
+    for c in list_commands() {
+        let o = model.step(&c);
+        let (side, ptr) = c.append.unwrap_or((0, 0));
+        let b = |x: bool| x as u8;
+        let _ = writeln!(
+            out,
+            "{} {} {side} {ptr:04x} {} {} {:02x} {} {:04x} {} {} {} {:04x} {}",
+            b(c.clear),
+            b(c.append.is_some()),
+            b(c.read),
+            b(c.next_list),
+            o.level,
+            o.branch,
+            o.remaining,
+            b(o.busy),
+            b(o.done),
+            b(o.rd.is_some()),
+            o.rd.unwrap_or(0),
+            b(o.overflow)
+        );
+    }
+    out
+}

@@ -284,3 +284,174 @@ fn leaf(o: &ObjectImage, x: u32) -> Option<u32> {
         Node::Inner(_) => None,
     }
 }
+
+/// One clock's command to the Stack Engine's lists ([`ListStack`]): `clear` (a new query),
+/// or any of `append` (a node pointer onto the left (0) or right (1) list of the next
+/// level), `read` (the current list's next pointer, if it has one) and `next_list` (the
+/// current list is done); all three are ignored while the lists step up or are done.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct ListCmd {
+    pub clear: bool,
+    pub append: Option<(usize, u16)>,
+    pub read: bool,
+    pub next_list: bool,
+}
+
+/// The lists' outputs after a clock's rising edge: the current list (its level, branch
+/// and the pointers not yet read), `busy` while stepping up, `done` when the traversal has
+/// no list left, a pointer read the clock before, `overflow` (sticky until `clear`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct ListOut {
+    pub level: usize,
+    pub branch: usize,
+    pub remaining: u16,
+    pub busy: bool,
+    pub done: bool,
+    pub rd: Option<u16>,
+    pub overflow: bool,
+}
+
+/// WSCG'03's Stack Engine's lists (§4.2), clocked register by register as the RTL
+/// (`rtl::wscg03::stack_engine::ListStack`): two SRAMs (the left and the right lists), the
+/// level register λ, a branch bit per level and marker registers per level and side (a
+/// list's start and length). Reads refer to λ (its branch's SRAM), appends to λ + 1, whose
+/// lists start where level λ's end (`start[λ+1] = start[λ] + len[λ]`, per side): lists
+/// are written contiguously, and the live ones never overlap.
+///
+/// `next_list` recurses one level down, into the left list if it is not empty, else the right;
+/// if both are empty the lists step up (`busy`), one level a clock: at a level whose branch
+/// is left and whose right list is not empty, into that right list; at level 0, done.
+/// Level 0 is the host's: the root's pointer is appended to level 1, then `next_list`.
+pub struct ListStack {
+    /// Each SRAM's pointers.
+    cap: usize,
+    sram: [Vec<u16>; 2],
+    start: [[u16; LIST_LEVELS]; 2],
+    len: [[u16; LIST_LEVELS]; 2],
+    branch: [bool; LIST_LEVELS],
+    level: usize,
+    pos: u16,
+    up: bool,
+    done: bool,
+    overflow: bool,
+    rd: Option<u16>,
+}
+
+use crate::chip::rtl::LIST_LEVELS;
+
+impl ListStack {
+    /// After a `clear`, with SRAMs of 2^`sram_bits` pointers (the chip's:
+    /// [`LIST_SRAM_BITS`](crate::chip::rtl::LIST_SRAM_BITS)).
+    pub fn new(sram_bits: usize) -> Self {
+        let cap = 1 << sram_bits;
+        ListStack {
+            cap,
+            sram: [vec![0; cap], vec![0; cap]],
+            start: [[0; LIST_LEVELS]; 2],
+            len: [[0; LIST_LEVELS]; 2],
+            branch: [false; LIST_LEVELS],
+            level: 0,
+            pos: 0,
+            up: false,
+            done: false,
+            overflow: false,
+            rd: None,
+        }
+    }
+
+    /// One clock: `cmd` before the rising edge, the outputs after it. Every decision reads
+    /// the state before the edge, as the RTL's registers do.
+    pub fn step(&mut self, cmd: &ListCmd) -> ListOut {
+        if cmd.clear {
+            let sram = std::mem::take(&mut self.sram);
+            *self = ListStack {
+                sram,
+                ..ListStack::new(0)
+            };
+            self.cap = self.sram[0].len();
+            return self.out();
+        }
+        let (lv, b) = (self.level, self.branch[self.level] as usize);
+        let idle = !self.up && !self.done;
+        self.rd = None;
+        if cmd.read && idle && self.remaining() > 0 {
+            self.rd = Some(self.sram[b][(self.start[b][lv] + self.pos) as usize]);
+            self.pos += 1;
+        }
+        // an append goes after the list of level λ + 1 as it was before the edge
+        let append = cmd.append.filter(|_| idle).map(|(s, p)| {
+            let at = self.start[s]
+                .get(lv + 1)
+                .map(|&st| st + self.len[s][lv + 1]);
+            (s, p, at.filter(|&a| (a as usize) < self.cap))
+        });
+        if cmd.next_list && idle {
+            self.descend();
+        } else if self.up {
+            self.step_up();
+        }
+        match append {
+            Some((s, p, Some(a))) => {
+                self.sram[s][a as usize] = p;
+                self.len[s][lv + 1] += 1;
+            }
+            Some((_, _, None)) => self.overflow = true,
+            None => {}
+        }
+        self.out()
+    }
+
+    /// Into level λ + 1's left list, else its right one, else step up.
+    fn descend(&mut self) {
+        let l1 = self.level + 1;
+        let side = (0..2).find(|&s| l1 < LIST_LEVELS && self.len[s][l1] > 0);
+        match side {
+            Some(s) => {
+                (self.level, self.branch[l1], self.pos) = (l1, s == 1, 0);
+                self.open(l1 + 1);
+            }
+            None => self.up = true,
+        }
+    }
+
+    /// One level of stepping up: the right list of this level if it is due, else done at
+    /// level 0, else the level above.
+    fn step_up(&mut self) {
+        let j = self.level;
+        if !self.branch[j] && self.len[1][j] > 0 {
+            (self.branch[j], self.pos, self.up) = (true, 0, false);
+            self.open(j + 1);
+        } else if j == 0 {
+            (self.done, self.up) = (true, false);
+        } else {
+            self.level = j - 1;
+        }
+    }
+
+    /// Level `l`'s lists emptied, starting where level l - 1's end.
+    fn open(&mut self, l: usize) {
+        if l < LIST_LEVELS {
+            for s in 0..2 {
+                self.start[s][l] = self.start[s][l - 1] + self.len[s][l - 1];
+                self.len[s][l] = 0;
+            }
+        }
+    }
+
+    fn remaining(&self) -> u16 {
+        let b = self.branch[self.level] as usize;
+        self.len[b][self.level] - self.pos
+    }
+
+    fn out(&self) -> ListOut {
+        ListOut {
+            level: self.level,
+            branch: self.branch[self.level] as usize,
+            remaining: self.remaining(),
+            busy: self.up,
+            done: self.done,
+            rd: self.rd,
+            overflow: self.overflow,
+        }
+    }
+}

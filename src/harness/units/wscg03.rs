@@ -192,3 +192,14 @@ fn wscg03_dop_unit_vectors(k: usize) -> String {
     }
     out
 }
+
+/// `list_stack_a8`: WSCG'03's Stack Engine's lists with SRAMs of 256 pointers
+/// (`rtl::wscg03::stack_engine::ListStack<8>`).
+pub(super) fn list_stack_unit() -> Unit {
+    Unit {
+        name: "list_stack_a8".into(),
+        latency: 1,
+        verilog: Box::new(crate::rtl::wscg03::stack_engine::verilog_list_stack8),
+        vectors: Box::new(crate::harness::wscg03_io::list_stack_vectors),
+    }
+}

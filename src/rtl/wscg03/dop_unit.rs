@@ -267,7 +267,7 @@ macro_rules! wscg03_dop_unit {
         /// - **The address generator** cycles i = 0 .. k-1 through the MMM, a direction a clock
         ///   (`gen_cnt`); D.KLMSEL routes d_j0..2 of each sibling to its **DOTADD unit**
         ///   (`dot_l`, `dot_r`), which writes d'_i, both siblings' at once, into the **d'
-        ///   memory** (`dprime`), set `t_set`, at lane i. A set is `busy` from its first bundle
+        ///   memory** (`dprime`), the pair's set, at lane i. A set is `busy` from its first bundle
         ///   to its last write: [`wscg03_transform_clocks`](crate::chip::rtl::wscg03_transform_clocks)(k)
         ///   clocks after `t_last` if the generator was free. A set must not be loaded while busy.
         /// - **The compare side**: an aligned DOP's bundle (`a_valid`, `a_first`, `a_lanes`, `e`)

@@ -1,5 +1,7 @@
 //! WSCG'03's CollisionChip (§4, Fig. 4) in RTL, unit by unit; the cycle model's event model
 //! of the whole chip is [`cycle::wscg03`](crate::cycle::wscg03). So far: the DOP Unit
-//! ([`dop_unit`]: `Wscg03DopUnit`, its compare bank and d' memory).
+//! ([`dop_unit`]: `Wscg03DopUnit`, its compare bank and d' memory) and the Stack Engine's
+//! lists ([`stack_engine`]).
 
 pub mod dop_unit;
+pub mod stack_engine;
