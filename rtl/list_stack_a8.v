@@ -589,6 +589,7 @@ module top(clock,clear,append,wr_side,wr_ptr,read,next_list,level,branch,remaini
     reg  c_read;
     reg  [15:0] c_waddr;
     reg  c_wok;
+    reg  c_next;
     reg  c_desc;
     reg  c_desc_b;
     reg  c_u_right;
@@ -1931,7 +1932,8 @@ module top(clock,clear,append,wr_side,wr_ptr,read,next_list,level,branch,remaini
         pos$d = pos$q;
         up$d = up$q;
         done_r$d = done_r$q;
-        c_desc = next_list & c_idle & (lvl$q != 32'h1f) & ((c_nl_l != 32'h0) | (c_nl_r != 32'h0));
+        c_next = next_list & c_idle & ~append;
+        c_desc = c_next & (lvl$q != 32'h1f) & ((c_nl_l != 32'h0) | (c_nl_r != 32'h0));
         c_desc_b = c_nl_l == 32'h0;
         c_u_right = up$q & ~c_b & (c_cl_r != 32'h0);
         c_u_zero = lvl$q == 32'h0;
@@ -1956,8 +1958,9 @@ module top(clock,clear,append,wr_side,wr_ptr,read,next_list,level,branch,remaini
         if (up$q & ~c_u_right & ~c_u_zero) begin
             lvl$d = lvl$q - 32'h1;
         end
-        if (next_list & c_idle & ~c_desc) begin
+        if (c_next & ~c_desc) begin
             up$d = 1'b1;
+            pos$d = 32'h0;
         end
         if (up$q & (c_u_right | c_u_zero)) begin
             up$d = 1'b0;
@@ -3157,7 +3160,10 @@ module top(clock,clear,append,wr_side,wr_ptr,read,next_list,level,branch,remaini
         end
         level = lvl$q;
         branch = c_b;
-        remaining = c_rem;
+        remaining = 32'h0;
+        if (c_idle) begin
+            remaining = c_rem;
+        end
         busy = up$q;
         done = done_r$q;
         rd_valid = rd_v$q;

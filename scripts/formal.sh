@@ -61,11 +61,13 @@ PROOFS=(
   "tri_cache.cover|tri_cache.sv|rtl/chip_e8m15_k6.v|COVER|cover|8|reachable: a hit through the bypass, a hit from the RAM, a miss after another id took the line, a miss after a clear, the highest line"
   "tri_fifo.count|tri_fifo.sv|rtl/chip_e8m15_k6.v|COUNT|ind|1/12|any writes and reads: held = accepted writes - accepted reads (<= 256; a write accepted below 256, a read while one is readable, one edge after its write), addresses that far apart, empty/almost_empty = none readable, full = 256 held, almost_full = 255+ readable, overflow/underflow sticky and raised exactly by a write into a full FIFO/a read of an empty one; under TRI_UNIT's rules (assumed) never raised"
   "tri_fifo.order|tri_fifo.sv|rtl/chip_e8m15_k6.v|COUNT ORDER|ind|1/8|tracked (any-constant) accepted entry: its RAM row holds it while held, shown on data_out whenever at the head and readable, leaves with exactly one read after exactly the entries accepted before it"
+  "list_stack.chain|list_stack.sv|rtl/list_stack_a8.v|CHAIN|ind|2/4|WSCG'03's Stack Engine's lists: start_s[j+1] = start_s[j] + len_s[j] for every level j <= λ and side (contiguous, the live lists never overlap), start_s[0] = 0, every list within its SRAM for j <= λ + 1, the read position within the current list, remaining = its pointers not read (0 while busy or done), overflow sticky until clear, clear empties"
   "tri_fifo.cover|tri_fifo.sv|rtl/chip_e8m15_k6.v|COVER|cover|8|reachable: a write and a read at one edge, a read while the one entry held is not yet readable, entries after an ignored read of an empty FIFO, an entry read after two ahead of it, 3 readable"
 )
 
 # proofs run only with --all (over a minute of CPU each)
 SLOW_PROOFS=(
+  "list_stack.cover|list_stack.sv|rtl/list_stack_a8.v|COVER|cover|7|reachable: level 3, a right list read after stepping up, done after a descent, a list of 2 read to its end"
   "mem_port.ask|mem_port.sv|rtl/chip_e8m15_k6.v|ASK|ind|1/4|ask list (at most 32 words, assumed): a tracked fetched word of a pop (A0 B0 A1 B1) requested once, after exactly the words asked before it, with its side, at its record's address (map 0), at prefetch 0 only for the current pair, offered whenever at the head and allowed; no node request from an empty list"
 )
 
@@ -101,6 +103,8 @@ MUTANTS=(
   "tri_fifo_written_a_row_late|tri_fifo.order|rtl/chip_e8m15_k6.v|/^module top.tri_unit.fifo.write_logic(/,/^endmodule/s/ram_write_address = ((write_address\$q \& fifo_address_mask) \& 8'hff);/ram_write_address = (((write_address\$q + 9'h1) \& fifo_address_mask) \& 8'hff);/"
   "tri_fifo_entry_changed|tri_fifo.order|rtl/chip_e8m15_k6.v|/^module top.tri_unit.fifo.write_logic(/,/^endmodule/s/ram_write_data = data_in;/ram_write_data = data_in ^ 34'h1;/"
   "lifo_pop_no_wr_ptr_dec|pair_queue.order|rtl/pair_queue_n4.v|s/wr_n = wr_ptr\$q - 32'h1;/wr_n = wr_ptr\$q;/"
+  "list_open_without_len|list_stack.chain|rtl/list_stack_a8.v|s/c_open_l = c_ns_l + c_nl_l;/c_open_l = c_ns_l;/"
+  "list_read_past_end|list_stack.chain|rtl/list_stack_a8.v|s/c_read = read \& c_idle \& (c_rem != 32'h0);/c_read = read \& c_idle;/"
   "control_syntax_error|pair_queue.bounds|rtl/pair_queue_n4.v|0,/^endmodule/s//endmodul/"
 )
 
@@ -135,6 +139,20 @@ mp_hier() {
 }
 TC_PREP='hierarchy -top \top$tri_cache; rename \top$tri_cache tri_cache'
 TF_PREP='hierarchy -top \top$tri_unit$fifo; rename \top$tri_unit$fifo tri_fifo'
+LS_PREP='rename top list_stack'
+# ls_hier: the lists' level, position, step state, branch bits and markers tied to the
+# wrapper's f_* wires (level j's 16-bit marker in f_x[16 j +: 16])
+ls_hier() {
+  local j s="connect -nounset -set f_lvl dut.lvl\$q; connect -nounset -set f_pos dut.pos\$q; "
+  s+="connect -nounset -set f_up dut.up\$q; connect -nounset -set f_done dut.done_r\$q; "
+  for ((j = 0; j < 32; j++)); do
+    s+="connect -nounset -set f_br[$j] dut.br\$$j\$q; "
+    for m in start_l start_r len_l len_r; do
+      s+="connect -nounset -set f_$m[$((16 * j + 15)):$((16 * j))] dut.$m\$$j\$q; "
+    done
+  done
+  echo "$s"
+}
 # tf_hier <proof>: the result FIFO's addresses tied to the wrapper's f_* wires; for ORDER also
 # the wrapper's read port of f_ram pointed at the FIFO's RAM (its MEMID: one array, two ports)
 tf_hier() {
@@ -144,8 +162,8 @@ tf_hier() {
   [ "$1" = tri_fifo.order ] && s+='setparam -set MEMID "\dut.ram.mem" c:$memrd$\f_ram$*; '
   echo "$s"
 }
-prep_of() { case $1 in pair_queue.*) echo "$PQ_PREP";; result_port.*) echo "$RP_PREP";; mem_port.*) echo "$MP_PREP";; tri_cache.*) echo "$TC_PREP";; tri_fifo.*) echo "$TF_PREP";; esac; }
-hier_of() { case $1 in pair_queue.*) echo "$PQ_HIER";; mem_port.*) mp_hier "$1";; tri_fifo.*) tf_hier "$1";; esac; }
+prep_of() { case $1 in list_stack.*) echo "$LS_PREP";; pair_queue.*) echo "$PQ_PREP";; result_port.*) echo "$RP_PREP";; mem_port.*) echo "$MP_PREP";; tri_cache.*) echo "$TC_PREP";; tri_fifo.*) echo "$TF_PREP";; esac; }
+hier_of() { case $1 in list_stack.chain) ls_hier;; pair_queue.*) echo "$PQ_HIER";; mem_port.*) mp_hier "$1";; tri_fifo.*) tf_hier "$1";; esac; }
 
 # build <name> <wrapper> <dut.v> <defines> <engine> <dir>: writes <dir>/<name>.smt2 or .aig
 build() {

@@ -288,7 +288,8 @@ fn leaf(o: &ObjectImage, x: u32) -> Option<u32> {
 /// One clock's command to the Stack Engine's lists ([`ListStack`]): `clear` (a new query),
 /// or any of `append` (a node pointer onto the left (0) or right (1) list of the next
 /// level), `read` (the current list's next pointer, if it has one) and `next_list` (the
-/// current list is done); all three are ignored while the lists step up or are done.
+/// current list is done; ignored with an append, which would go onto the list it enters);
+/// all three are ignored while the lists step up or are done.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct ListCmd {
     pub clear: bool,
@@ -385,7 +386,7 @@ impl ListStack {
                 .map(|&st| st + self.len[s][lv + 1]);
             (s, p, at.filter(|&a| (a as usize) < self.cap))
         });
-        if cmd.next_list && idle {
+        if cmd.next_list && idle && cmd.append.is_none() {
             self.descend();
         } else if self.up {
             self.step_up();
@@ -410,7 +411,7 @@ impl ListStack {
                 (self.level, self.branch[l1], self.pos) = (l1, s == 1, 0);
                 self.open(l1 + 1);
             }
-            None => self.up = true,
+            None => (self.up, self.pos) = (true, 0),
         }
     }
 
@@ -438,9 +439,13 @@ impl ListStack {
         }
     }
 
+    /// The current list's pointers not yet read (none while stepping up or done).
     fn remaining(&self) -> u16 {
         let b = self.branch[self.level] as usize;
-        self.len[b][self.level] - self.pos
+        match self.up || self.done {
+            true => 0,
+            false => self.len[b][self.level] - self.pos,
+        }
     }
 
     fn out(&self) -> ListOut {

@@ -20,12 +20,14 @@ const _: () = assert!(LIST_LEVELS == 32);
 /// on `rd_ptr` with `rd_valid` the clock after: the SRAM's synchronous read) and `next_list`
 /// (the current list is done: one level down, into its left list if not empty, else its
 /// right one; if both are empty, `busy` while stepping up one level a clock, into a
-/// level's right list if its branch was left and the list is not empty, `done` at level 0).
+/// level's right list if its branch was left and the list is not empty, `done` at level 0;
+/// ignored with an `append`, which would go onto the list it enters).
 /// The three are ignored while `busy` or `done`. Level 0 is the host's: the root's pointer
 /// is appended onto level 1, then `next`.
 ///
 /// Ports: in `clock`, `clear`, `append`, `wr_side`, `wr_ptr[16]`, `read`, `next_list`; out
-/// `level[5]`, `branch`, `remaining[16]` (the current list's pointers not yet read),
+/// `level[5]`, `branch`, `remaining[16]` (the current list's pointers not yet read; 0
+/// while busy or done),
 /// `busy`, `done`, `rd_valid`, `rd_ptr[16]` (0 unless valid), `overflow`.
 #[derive(LogicBlock)]
 pub struct ListStack<const A: usize> {
@@ -79,6 +81,7 @@ pub struct ListStack<const A: usize> {
     c_waddr: Signal<Local, Bits<16>>,
     c_wok: Signal<Local, Bit>,
     // the step: down, or up into a right list; the level whose lists it opens
+    c_next: Signal<Local, Bit>,
     c_desc: Signal<Local, Bit>,
     c_desc_b: Signal<Local, Bit>,
     c_u_right: Signal<Local, Bit>,
@@ -141,6 +144,7 @@ impl<const A: usize> Default for ListStack<A> {
             c_read: Default::default(),
             c_waddr: Default::default(),
             c_wok: Default::default(),
+            c_next: Default::default(),
             c_desc: Default::default(),
             c_desc_b: Default::default(),
             c_u_right: Default::default(),
@@ -239,8 +243,8 @@ impl<const A: usize> crate::rtl::kernel::Kernel<ListStep> for ListStack<A> {
     fn update(&mut self) {
         dff_setup!(self, clock, lvl, pos, up, done_r);
         // down into λ + 1's left list, else its right one; else up
-        self.c_desc.next = self.next_list.val()
-            & self.c_idle.val()
+        self.c_next.next = self.next_list.val() & self.c_idle.val() & !self.append.val();
+        self.c_desc.next = self.c_next.val()
             & (self.lvl.q.val() != 31)
             & ((self.c_nl_l.val() != 0) | (self.c_nl_r.val() != 0));
         self.c_desc_b.next = self.c_nl_l.val() == 0;
@@ -269,8 +273,9 @@ impl<const A: usize> crate::rtl::kernel::Kernel<ListStep> for ListStack<A> {
         if self.up.q.val() & !self.c_u_right.val() & !self.c_u_zero.val() {
             self.lvl.d.next = self.lvl.q.val() - 1;
         }
-        if self.next_list.val() & self.c_idle.val() & !self.c_desc.val() {
+        if self.c_next.val() & !self.c_desc.val() {
             self.up.d.next = true;
+            self.pos.d.next = 0.into();
         }
         if self.up.q.val() & (self.c_u_right.val() | self.c_u_zero.val()) {
             self.up.d.next = false;
@@ -325,7 +330,10 @@ impl<const A: usize> crate::rtl::kernel::Kernel<ListStep> for ListStack<A> {
         }
         self.level.next = self.lvl.q.val();
         self.branch.next = self.c_b.val();
-        self.remaining.next = self.c_rem.val();
+        self.remaining.next = 0.into();
+        if self.c_idle.val() {
+            self.remaining.next = self.c_rem.val();
+        }
         self.busy.next = self.up.q.val();
         self.done.next = self.done_r.q.val();
         self.rd_valid.next = self.rd_v.q.val();
