@@ -905,7 +905,6 @@ fn run_compare_bank(uut: &mut b32::CompareBank, dops: &[Bundles]) -> Vec<[bool; 
 #[test]
 fn compare_bank_b32_dop_overlap() {
     use collision_chip::golden::dop_unit::compare_bundles;
-    use collision_chip::golden::klmsel::klmsel;
     use proptest::strategy::ValueTree;
     let fmt = Format::BINARY32;
     let t = Fmt::of(fmt);
@@ -924,7 +923,6 @@ fn compare_bank_b32_dop_overlap() {
     {
         let nonneg = |v: Vec<u64>| -> Vec<u64> { v.into_iter().map(|x| x & !sign).collect() };
         let setup = random_setup(fmt, k, &nonneg(draw(3 * k)), &nonneg(draw(k)));
-        let (j, cmat, cvec) = (&setup.j, &setup.cmat, &setup.cvec);
         let mut dops = vec![];
         let mut want = vec![];
         for p in 0..60 {
@@ -938,7 +936,7 @@ fn compare_bank_b32_dop_overlap() {
             let (dl, dr, e) = (dop(p % 3 != 2), dop(p % 3 == 0), dop(p % 3 != 2));
             let dp = |d: &[f64]| -> Vec<f64> {
                 (0..k)
-                    .map(|i| doptrf::transformed(fmt, r, klmsel(d, j[i]), cmat[i], cvec[i]))
+                    .map(|i| dop_unit::dprime(fmt, r, &setup, d, i))
                     .collect()
             };
             dops.push([

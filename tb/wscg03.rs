@@ -376,6 +376,7 @@ fn soup_query(
 /// overlap. (By hand: lists that took the right list first failed it.)
 #[test]
 fn stack_engine_lists_follow_the_recursion() {
+    use collision_chip::chip::rtl::LIST_SRAM_BITS;
     use collision_chip::golden::dop_unit::TransformCache;
     use collision_chip::harness::wscg03_io::list_traffic;
     let (mut lists, mut clocks) = (0, 0);
@@ -390,7 +391,7 @@ fn stack_engine_lists_follow_the_recursion() {
         let mut cache = TransformCache::new(cfg.format.dop, cfg.dop_rounding.op(), &setup, a, b);
         let mut overlap = |n: u32, x: u32| cache.overlap(x, n);
         let want = recursion_lists(a, b, &mut overlap);
-        let tr = list_traffic(12, a, b, &mut overlap, 1 << 20);
+        let tr = list_traffic(LIST_SRAM_BITS, a, b, &mut overlap, 1 << 20);
         let last = tr.outs.last().unwrap();
         assert!(last.done && !last.overflow, "{n} triangles: {last:?}");
         assert_eq!(tr.lists, want, "{n} triangles");

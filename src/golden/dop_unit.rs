@@ -566,6 +566,12 @@ pub fn compare_bundles(dp: &[f64], e: &[f64], n: usize) -> Vec<Vec<(f64, f64)>> 
         .collect()
 }
 
+/// d'_i of B's DOP `d`: D.KLMSEL's distances of lane `i` through its transform
+/// ([`transformed`]), what WSCG'03's DOTADD unit writes for lane i.
+pub fn dprime(f: Format, r: Rounding, setup: &HostSetup, d: &[f64], i: usize) -> f64 {
+    transformed(f, r, klmsel(d, setup.j[i]), setup.cmat[i], setup.cvec[i])
+}
+
 /// The DOP unit, lane by lane as the pipeline computes it (the reference for the RTL).
 pub fn dop_overlap(f: Format, r: Rounding, setup: &HostSetup, d: &[f64], e: &[f64]) -> bool {
     (0..d.len()).all(|i| {

@@ -82,16 +82,6 @@ pub(crate) fn near_flags(rng: &mut impl Rng, fmt: Format, dp: &[f64], e: &mut [f
     }
 }
 
-/// The d' of DOP `d` under `setup`, every lane rounding `r`.
-fn transform(setup: &HostSetup, r: Rounding, d: &[f64]) -> Vec<f64> {
-    (0..d.len())
-        .map(|i| {
-            let sel = crate::golden::klmsel::klmsel(d, setup.j[i]);
-            crate::golden::doptrf::transformed(FORMAT, r, sel, setup.cmat[i], setup.cvec[i])
-        })
-        .collect()
-}
-
 /// A tumbled DOP of `k` random distances, non-negative (a DOP that can overlap) two times
 /// in three.
 fn random_dop(rng: &mut impl Rng, k: usize) -> Vec<f64> {
@@ -169,7 +159,10 @@ impl Driver {
             .collect();
         if rng.random_range(0..3) != 0 {
             let base = &d[rng.random_range(0..2)];
-            near_flags(rng, fmt, &transform(setup, r, base), &mut e);
+            let dp: Vec<f64> = (0..k)
+                .map(|i| crate::golden::dop_unit::dprime(fmt, r, setup, base, i))
+                .collect();
+            near_flags(rng, fmt, &dp, &mut e);
         }
         let b = bundles(&e);
         let n = b.len();
@@ -250,7 +243,6 @@ pub fn dop_unit_traffic(k: usize, r: Rounding, seed: u64, clocks: usize) -> DopT
         ins.push(inp);
         outs.push(out);
     }
-    drop(model);
     DopTraffic {
         setup,
         rounding: r,
@@ -386,7 +378,7 @@ pub fn list_traffic(
         out = model.step(&cmd);
         cmds.push(cmd);
         outs.push(out);
-        let entered = (out.level, out.branch, out.busy) != before || (cmd.next_list && !out.busy);
+        let entered = (out.level, out.branch, out.busy) != before;
         if entered && !out.busy && !out.done && out.level > 0 {
             let parent = if out.level == 1 {
                 root

@@ -305,9 +305,8 @@ impl<'a> ClockedDopUnit<'a> {
 
     /// d'_lane of a sibling of an input register set: D.KLMSEL and the DOTADD unit.
     fn dprime_of(&self, set: usize, side: usize, lane: usize) -> f64 {
-        let s = self.setup;
-        let d = crate::golden::klmsel::klmsel(&self.tin[set][side], s.j[lane]);
-        crate::golden::doptrf::transformed(self.fmt, self.rounding, d, s.cmat[lane], s.cvec[lane])
+        let d = &self.tin[set][side];
+        crate::golden::dop_unit::dprime(self.fmt, self.rounding, self.setup, d, lane)
     }
 
     /// The address generator at the edge: the pending set (set 0 first) or the pair

@@ -324,8 +324,6 @@ pub struct ListOut {
 /// is left and whose right list is not empty, into that right list; at level 0, done.
 /// Level 0 is the host's: the root's pointer is appended to level 1, then `next_list`.
 pub struct ListStack {
-    /// Each SRAM's pointers.
-    cap: usize,
     sram: [Vec<u16>; 2],
     start: [[u16; LIST_LEVELS]; 2],
     len: [[u16; LIST_LEVELS]; 2],
@@ -345,9 +343,13 @@ impl ListStack {
     /// [`LIST_SRAM_BITS`](crate::chip::rtl::LIST_SRAM_BITS)).
     pub fn new(sram_bits: usize) -> Self {
         let cap = 1 << sram_bits;
+        ListStack::with(&mut [vec![0; cap], vec![0; cap]])
+    }
+
+    /// After a `clear`, with these SRAMs (taken).
+    fn with(sram: &mut [Vec<u16>; 2]) -> Self {
         ListStack {
-            cap,
-            sram: [vec![0; cap], vec![0; cap]],
+            sram: std::mem::take(sram),
             start: [[0; LIST_LEVELS]; 2],
             len: [[0; LIST_LEVELS]; 2],
             branch: [false; LIST_LEVELS],
@@ -364,12 +366,7 @@ impl ListStack {
     /// the state before the edge, as the RTL's registers do.
     pub fn step(&mut self, cmd: &ListCmd) -> ListOut {
         if cmd.clear {
-            let sram = std::mem::take(&mut self.sram);
-            *self = ListStack {
-                sram,
-                ..ListStack::new(0)
-            };
-            self.cap = self.sram[0].len();
+            *self = ListStack::with(&mut self.sram);
             return self.out();
         }
         let (lv, b) = (self.level, self.branch[self.level] as usize);
@@ -384,7 +381,7 @@ impl ListStack {
             let at = self.start[s]
                 .get(lv + 1)
                 .map(|&st| st + self.len[s][lv + 1]);
-            (s, p, at.filter(|&a| (a as usize) < self.cap))
+            (s, p, at.filter(|&a| (a as usize) < self.sram[s].len()))
         });
         if cmd.next_list && idle && cmd.append.is_none() {
             self.descend();

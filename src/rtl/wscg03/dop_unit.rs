@@ -356,8 +356,6 @@ macro_rules! wscg03_dop_unit {
         }
 
         impl<const K: usize> Wscg03DopUnit<K> {
-            pub const COMPARE_LATENCY: usize = $crate::chip::rtl::WSCG03_COMPARE_LATENCY;
-
             /// The DOP Unit of `K` directions (even, at most 32).
             pub fn new() -> Self {
                 use $crate::rtl::reg_ring::array_init;
