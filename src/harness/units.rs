@@ -204,6 +204,7 @@ pub fn all() -> Vec<Unit> {
     units.push(wscg03::dprime_memory_unit());
     units.push(wscg03::wscg03_dop_unit_unit());
     units.push(wscg03::list_stack_unit());
+    units.push(wscg03::tri_input_unit());
     units
 }
 

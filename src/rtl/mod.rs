@@ -208,6 +208,8 @@ pub mod b32 {
         (ram_l4 ram_r4 4 128) (ram_l5 ram_r5 5 160) (ram_l6 ram_r6 6 192) (ram_l7 ram_r7 7 224));
     crate::rtl::wscg03::dop_unit::wscg03_dop_unit!(32, 256;
         (0 0) (1 32) (2 64) (3 96) (4 128) (5 160) (6 192) (7 224));
+    // WSCG'03's Triangle Unit's input stage, on the chip's triangle cache (`TriCache`)
+    crate::rtl::wscg03::tri_unit::tri_input!(738);
     // the decode stage of 4-bit stored DOPs (`date05-treelets`): exponents -149 ..= 124, 9 bits
     crate::rtl::dop_decode::dop_decode!(32, 23, 4, 9);
     crate::rtl::dop_decode::dop_unit_coded!(32, 4, 9);

@@ -4,6 +4,8 @@
 //! cache (`[chip] tri_cache`, [`TriCache`]) and the tumbled pair's in a two-entry SRAM,
 //! loaded at a list's first overlapping leaves. Verdicts are the golden TRI_UNIT's (the
 //! same T.CHECKs as DATE'05's chip, so the host settles the same uncertain pairs).
+//! [`ClockedTriInput`] is the input stage clocked register by register as the RTL builds
+//! it; the event model does not use it yet.
 
 use crate::chip::wscg03::StackParams;
 use crate::golden::memory::{ObjectImage, TriCache};
@@ -77,5 +79,124 @@ impl<'a> TriUnit<'a> {
     /// The clock a pair taken at `t` shows its verdict.
     pub fn verdict(&self, t: u64) -> u64 {
         t + self.latency
+    }
+}
+
+/// A leaf pair offered to the Triangle Unit's input stage: the ids of A's and B's triangle
+/// words, the tag the host sees, B's side in the tumbled pair (the entry its word fills).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct LeafPair {
+    pub ids: [u16; 2],
+    pub tag: u32,
+    pub side: usize,
+}
+
+/// One clock's inputs to [`ClockedTriInput`]: `clear`, A's cache lines less one (`mask`),
+/// `halt`, a leaf pair offered, a triangle word arriving (`(b, id)`: B's if `b`), TRI_UNIT's
+/// `in_ready`.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct TriInputIn {
+    pub clear: bool,
+    pub mask: u8,
+    pub halt: bool,
+    pub leaf: Option<LeafPair>,
+    pub fill: Option<(bool, u16)>,
+    pub tri_ready: bool,
+}
+
+/// [`ClockedTriInput`]'s outputs in a clock (before its rising edge): whether a leaf pair
+/// is taken, which words the leaf pair lacks and its ids, the pair register (its words
+/// named by their ids: `None`, never loaded, is all zeros), `busy`.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct TriInputOut {
+    pub leaf_ready: bool,
+    pub need: [bool; 2],
+    pub ids: [u16; 2],
+    pub pair_valid: bool,
+    pub pair_tag: u32,
+    pub words: [Option<u16>; 2],
+    pub busy: bool,
+}
+
+/// WSCG'03's Triangle Unit's input stage (§4.3), clocked register by register as the RTL
+/// (`rtl::b32::TriInput`): the leaf register, A's direct-mapped triangle cache (line `id &
+/// mask`, tagged with the id; as the RTL's `TriCache`, a hit is the line's valid bit now and
+/// the id read from the line at the last edge, under the last clock's mask), B's two entries
+/// (filled at the leaf's side, either matches),
+/// the pair register TRI_UNIT reads. The words are named by their ids: a word in memory is a
+/// function of its id. The outputs are the RTL's in the same clock (some read `halt` and
+/// `tri_ready`), then [`step`](Self::step) clocks the edge.
+pub struct ClockedTriInput {
+    /// A's cache: each line's valid bit and id (a start clears the valid bits only).
+    lines: Vec<(bool, u16)>,
+    /// The mask of the last clock, with which the RTL read the line it compares now.
+    mask_q: u8,
+    b: [(bool, u16); 2],
+    leaf_v: bool,
+    leaf: LeafPair,
+    pair_v: bool,
+    pair_tag: u32,
+    pair_words: [Option<u16>; 2],
+}
+
+impl Default for ClockedTriInput {
+    fn default() -> Self {
+        ClockedTriInput {
+            lines: vec![(false, 0); crate::chip::rtl::TRI_CACHE_LINES],
+            mask_q: 0,
+            b: [(false, 0); 2],
+            leaf_v: false,
+            leaf: LeafPair::default(),
+            pair_v: false,
+            pair_tag: 0,
+            pair_words: [None; 2],
+        }
+    }
+}
+
+impl ClockedTriInput {
+    /// One clock: the outputs under `i`, then the rising edge.
+    pub fn step(&mut self, i: &TriInputIn) -> TriInputOut {
+        let line = |id: u16, mask: u8| (id & mask as u16 & 0x7f) as usize;
+        let [ta, tb] = self.leaf.ids;
+        let live = self.leaf_v && !i.halt;
+        // the valid bit of ta's line now, the id read from its line at the last edge
+        let hit_a = self.lines[line(ta, i.mask)].0 && self.lines[line(ta, self.mask_q)].1 == ta;
+        let hit_b = self.b.map(|(ok, id)| ok && id == tb);
+        let held = hit_a && (hit_b[0] || hit_b[1]);
+        let go = live && held && (!self.pair_v || i.tri_ready);
+        let leaf_ready = !i.halt && (!self.leaf_v || go);
+        let out = TriInputOut {
+            leaf_ready,
+            need: [live && !hit_a, live && !hit_b[0] && !hit_b[1]],
+            ids: self.leaf.ids,
+            pair_valid: self.pair_v && !i.halt,
+            pair_tag: self.pair_tag,
+            words: self.pair_words,
+            busy: self.leaf_v || self.pair_v,
+        };
+        match i.fill {
+            Some((false, id)) => self.lines[line(id, i.mask)] = (true, id),
+            Some((true, id)) => self.b[self.leaf.side] = (true, id),
+            None => {}
+        }
+        self.pair_v &= !i.tri_ready;
+        if go {
+            self.leaf_v = false;
+            (self.pair_v, self.pair_tag, self.pair_words) =
+                (true, self.leaf.tag, [Some(ta), Some(tb)]);
+        }
+        if let Some(l) = i.leaf.filter(|_| leaf_ready) {
+            (self.leaf_v, self.leaf) = (true, l);
+        }
+        if i.halt || i.clear {
+            (self.leaf_v, self.pair_v) = (false, false);
+        }
+        self.mask_q = i.mask;
+        if i.clear {
+            self.lines.iter_mut().for_each(|l| l.0 = false);
+            self.b.iter_mut().for_each(|e| e.0 = false);
+        }
+        out
     }
 }

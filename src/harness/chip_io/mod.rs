@@ -348,7 +348,7 @@ impl QueryImage {
     }
 }
 
-fn bits<const B: usize>(w: &Word) -> Bits<B> {
+pub(crate) fn bits<const B: usize>(w: &Word) -> Bits<B> {
     let mut x = Bits::<B>::default();
     for (i, &l) in w.iter().enumerate() {
         if (i + 1) * 64 <= B {

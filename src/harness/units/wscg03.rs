@@ -203,3 +203,13 @@ pub(super) fn list_stack_unit() -> Unit {
         vectors: Box::new(crate::harness::wscg03_io::list_stack_vectors),
     }
 }
+
+/// `tri_input_b32`: WSCG'03's Triangle Unit's input stage (`rtl::b32::TriInput`).
+pub(super) fn tri_input_unit() -> Unit {
+    Unit {
+        name: "tri_input_b32".into(),
+        latency: 0,
+        verilog: Box::new(crate::rtl::b32::verilog_tri_input),
+        vectors: Box::new(crate::harness::wscg03_io::tri_unit::tri_input_vectors),
+    }
+}

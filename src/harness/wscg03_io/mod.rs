@@ -2,7 +2,10 @@
 //! random host setup in its MMM, tumbled sibling pairs loaded into either d' set while the
 //! other set's d' meet aligned DOPs, bundle by bundle with idle clocks between, and what the
 //! clocked model ([`ClockedDopUnit`]) answers every clock; the RTL's ports as the model's
-//! ([`set_inputs`], [`outputs`]).
+//! ([`set_inputs`], [`outputs`]); the Stack Engine's lists driven as its sequencer would
+//! drive them ([`list_traffic`]); the Triangle Unit's input stage ([`tri_unit`]).
+
+pub mod tri_unit;
 
 use crate::chip::config::ChipConfig;
 use crate::cycle::wscg03::dop_unit::{
