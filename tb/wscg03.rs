@@ -491,3 +491,79 @@ fn triangle_unit_input_stage_rtl_lockstep() {
     }
     println!("TriInput RTL: {} clocks as the model", tr.ins.len());
 }
+
+/// WSCG'03's chip clocked register by register (`cycle::wscg03::clocked`: the sequencer
+/// around the lists, the Memory Controller reading a node pair per burst, the clocked DOP
+/// Unit, Triangle Unit input stage and TRI_UNIT) answers as the golden list traversal in
+/// all-pairs and first-hit mode, with as many DOP tests and lists, on soups of 1 to 300
+/// triangles under poses that overlap and that do not, and on the teapot against itself.
+/// (By hand: a list's group taken from the left member one level up, whatever its branch,
+/// failed it on the soups of 20 and 30.)
+#[test]
+fn clocked_chip_answers_as_the_golden_list_traversal() {
+    use collision_chip::cycle::wscg03::clocked;
+    let mut queries = 0;
+    for (n, m, seed, pose) in [
+        (1, 1, 1, Pose::new(0.0, 0.0, 0.0, 0.0, 0.0, 0.0)),
+        (20, 30, 1, Pose::new(10.0, 20.0, 30.0, 0.1, 0.0, 0.0)),
+        (120, 80, 3, Pose::new(-35.0, 80.0, 5.0, 0.2, -0.1, 0.05)),
+        (300, 300, 5, Pose::new(0.0, 0.0, 0.0, 0.0, 0.0, 0.0)),
+        (60, 200, 7, Pose::new(90.0, 0.0, 45.0, 0.3, 0.3, 0.3)),
+        (100, 100, 9, Pose::new(0.0, 0.0, 0.0, 3.0, 0.0, 0.0)),
+    ] {
+        let (chip, setup) = soup_query(n, m, seed, pose);
+        let golden = chip.query(&pose, Mode::All, Traversal::List);
+        for first in [false, true] {
+            let mode = if first { Mode::First } else { Mode::All };
+            let run = clocked::run(&chip, &setup, first, &Params::RTL, MAX_CYCLES).unwrap();
+            let tr = &run.trace;
+            assert!(
+                tr.check(mode, &golden).is_ok(),
+                "{n}/{m} {mode:?}: {:?}",
+                tr.check(mode, &golden)
+            );
+            if !first {
+                let g = golden.counters;
+                assert_eq!(
+                    (tr.dop_tests, tr.tri_tests, run.lists),
+                    (g.dop_tests, g.tri_tests, g.lists),
+                    "{n}/{m}"
+                );
+            }
+            println!("{n}/{m} {mode:?}: {} clocks, {} results, {} lists, {} node records, {} triangle words", tr.cycles, tr.results.len(), run.lists, tr.node_fetches, tr.tri_fetches);
+            queries += 1;
+        }
+    }
+    // a vendored mesh against itself
+    let mesh = |s: &str| collision_chip::mesh::resolve(s).unwrap().triangles_f64();
+    let chip = Chip::new(
+        &mesh("vectors/meshes/teapot.obj"),
+        &mesh("vectors/meshes/teapot.obj"),
+        ChipConfig::default(),
+    )
+    .unwrap();
+    for pose in [
+        Pose::new(10.0, 20.0, 30.0, 0.05, 0.0, 0.0),
+        Pose::new(0.0, 90.0, 0.0, 0.0, 0.2, 0.0),
+    ] {
+        let setup = chip.setup(&pose);
+        let golden = chip.query(&pose, Mode::All, Traversal::List);
+        for first in [false, true] {
+            let mode = if first { Mode::First } else { Mode::All };
+            let run = clocked::run(&chip, &setup, first, &Params::RTL, MAX_CYCLES).unwrap();
+            assert!(
+                run.trace.check(mode, &golden).is_ok(),
+                "teapot/teapot {mode:?}: {:?}",
+                run.trace.check(mode, &golden)
+            );
+            println!(
+                "teapot/teapot {mode:?}: {} clocks, {} results, {} lists",
+                run.trace.cycles,
+                run.trace.results.len(),
+                run.lists
+            );
+            queries += 1;
+        }
+    }
+    assert_eq!(queries, 16);
+}

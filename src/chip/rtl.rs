@@ -32,6 +32,11 @@ pub const LIST_SRAM_BITS: usize = 12;
 /// The Stack Engine's levels (its level register, 5 bits): level 0 holds the root's list
 /// (the host's), so lists reach level 31 and trees 30 levels below B's root.
 pub const LIST_LEVELS: usize = 32;
+/// WSCG'03's Memory Controller (§4.4: an input register of a node pair): node records held
+/// or asked for beyond the one it streams into the DOP Unit.
+pub const MC_RECORDS: usize = 2;
+/// WSCG'03's Memory Controller: the asks (tumbled loads, aligned DOPs) its list holds.
+pub const MC_ASKS: usize = 8;
 
 /// WSCG'03's DOP Unit: clocks from a tumbled pair's last bundle to the first clock its `k`
 /// pairs of d' are all in the d' memory (its set no longer busy), when the address generator

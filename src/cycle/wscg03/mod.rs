@@ -12,6 +12,7 @@
 //! [`ClockedTriInput`](tri_unit::ClockedTriInput), which the event model does not use yet
 //! (docs/explanation/architecture.md, "WSCG'03's chip").
 
+pub mod clocked;
 pub mod dop_unit;
 pub mod stack_engine;
 pub mod tri_unit;

@@ -155,6 +155,11 @@ impl Default for ClockedTriInput {
 }
 
 impl ClockedTriInput {
+    /// A leaf pair or a pair held (`busy`).
+    pub fn busy(&self) -> bool {
+        self.leaf_v || self.pair_v
+    }
+
     /// One clock: the outputs under `i`, then the rising edge.
     pub fn step(&mut self, i: &TriInputIn) -> TriInputOut {
         let line = |id: u16, mask: u8| (id & mask as u16 & 0x7f) as usize;
