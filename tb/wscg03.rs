@@ -86,7 +86,8 @@ proptest! {
     /// the golden list traversal's sure hits and uncertain pairs (first hit: pairs of it,
     /// and a hit exactly when it has one), and in all-pairs mode tests the same DOP pairs,
     /// overlaps, triangle pairs, lists and aligned node pairs (Eq. 5's tau and alpha); every
-    /// clock is booked to one cause; a list's d' are never ready before its start.
+    /// clock is booked to one cause; a list's d' are never ready before its start. The chip
+    /// clocked register by register (`cycle::wscg03::clocked`) answers the same.
     #[test]
     fn answers_as_the_golden_list_traversal(
         k in prop::sample::select(vec![6usize, 14, 18, 24, 26]), dop_b32: bool, tri_b32: bool, outward: bool,
@@ -112,6 +113,9 @@ proptest! {
         let run = run_query(&chip, &chip.setup(&pose), mode, &p, &sp, MAX_CYCLES).unwrap();
         let (tr, s) = (&run.trace, &run.stats);
         prop_assert!(tr.check(mode, &golden).is_ok(), "{:?}\n{}", tr.check(mode, &golden), tr.text());
+        // the chip clocked register by register answers the same
+        let clocked = collision_chip::cycle::wscg03::clocked::run(&chip, &chip.setup(&pose), first, &p, MAX_CYCLES).unwrap();
+        prop_assert!(clocked.trace.check(mode, &golden).is_ok(), "clocked: {:?}", clocked.trace.check(mode, &golden));
         if !first {
             let g = golden.counters;
             prop_assert_eq!((s.dop_tests, s.dop_overlaps, tr.tri_tests), (g.dop_tests, g.dop_overlaps, g.tri_tests));
