@@ -2,7 +2,7 @@
 //! ([`tri_input_traffic`]): leaf pairs of a tumbled pair's two leaves against A's triangles,
 //! the words it lacks fetched after a random latency, TRI_UNIT taking pairs now and then,
 //! halts and starts; what the clocked model ([`ClockedTriInput`]) answers every clock; the
-//! RTL's ports as the model's ([`set_tri_inputs`], [`tri_outputs`]).
+//! RTL's ports as the model's ([`set_tri_inputs`], [`tri_outputs_match`]).
 
 use crate::cycle::wscg03::tri_unit::{ClockedTriInput, LeafPair, TriInputIn, TriInputOut};
 use crate::rtl::b32::TriInput;
