@@ -269,8 +269,16 @@ impl<'a> ClockedDopUnit<'a> {
         }
     }
 
-    /// One clock: `inp` before the rising edge; the outputs after it.
+    /// One clock: `inp` before the rising edge; the outputs after it. An aligned bundle
+    /// against a busy set would meet d' of two pairs (the RTL does not check): a panic.
     pub fn step(&mut self, inp: &ClockIn) -> ClockOut {
+        if let Some(a) = &inp.a {
+            assert!(
+                !self.busy[a.set],
+                "an aligned bundle against busy d' set {}",
+                a.set
+            );
+        }
         let written = self.dotadd.pop_front().flatten();
         let entering = self.s1.map(|(set, lane, last)| Write {
             set,
