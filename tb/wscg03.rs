@@ -560,11 +560,17 @@ fn clocked_chip_answers_as_the_golden_list_traversal() {
                 "teapot/teapot {mode:?}: {:?}",
                 run.trace.check(mode, &golden)
             );
+            // beside it, the event model's clocks and node fetches (a node word a request)
+            let sp = StackParams::default();
+            let ev = run_query(&chip, &setup, mode, &Params::RTL, &sp, MAX_CYCLES).unwrap();
             println!(
-                "teapot/teapot {mode:?}: {} clocks, {} results, {} lists",
+                "teapot/teapot {mode:?}: {} clocks, {} results, {} lists, {} node records; event model {} clocks, {} node words",
                 run.trace.cycles,
                 run.trace.results.len(),
-                run.lists
+                run.lists,
+                run.trace.node_fetches,
+                ev.trace.cycles,
+                ev.trace.node_fetches
             );
             queries += 1;
         }
