@@ -16,7 +16,7 @@
 //! every pointer is read, compared and its actions done: `next_list`.
 
 use super::dop_unit::{AlignedBundle, ClockIn, ClockOut, ClockedDopUnit, TumbledBundle};
-use super::stack_engine::{ListCmd, ListOut, ListStack};
+use super::stack_engine::{appended, expand, ListCmd, ListOut, ListStack};
 use super::tri_unit::{ClockedTriInput, LeafPair, TriInputIn, TriInputOut};
 use crate::chip::layout::Dst;
 use crate::cycle::memory::MemModel;
@@ -28,21 +28,17 @@ use std::collections::VecDeque;
 use crate::chip::rtl::{MC_ASKS, MC_RECORDS};
 
 /// What the Memory Controller is asked for, in order.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq, Eq)]
 enum Ask {
-    /// A tumbled group's DOPs (`n` members) into d' set `set`.
-    Load {
-        set: usize,
-        group: [u32; 2],
-        n: usize,
-    },
+    /// A tumbled group's DOPs (a sibling pair, or a leaf alone) into d' set `set`.
+    Load { set: usize, group: Vec<u32> },
     /// An aligned node against d' set `set`.
     Aligned { set: usize, node: u32 },
 }
 
 /// An ask and its record: `Some(address)` fetched, `None` the one streamed before it (a
 /// sibling of the aligned node before); whether it was requested.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Debug)]
 struct Entry {
     ask: Ask,
     addr: Option<u32>,
@@ -117,10 +113,10 @@ impl Controller {
     }
 
     fn push(&mut self, ask: Ask, img: &Images) {
-        let addr = match ask {
+        let addr = match &ask {
             Ask::Load { group, .. } => Some(img.record(Dst::NodeB, group[0])),
             Ask::Aligned { node, .. } => {
-                let r = img.record(Dst::NodeA, node);
+                let r = img.record(Dst::NodeA, *node);
                 let new = self.last_aligned != Some(r);
                 self.last_aligned = Some(r);
                 new.then_some(r)
@@ -157,7 +153,11 @@ impl Controller {
             }
         }
         let e = self.asks.iter().find(|e| !e.requested)?;
-        (self.records + self.node_inflight < MC_RECORDS).then(|| (Dst::NodeA, 0, e.addr.unwrap()))
+        let dst = match e.ask {
+            Ask::Load { .. } => Dst::NodeB,
+            Ask::Aligned { .. } => Dst::NodeA,
+        };
+        (self.records + self.node_inflight < MC_RECORDS).then(|| (dst, 0, e.addr.unwrap()))
     }
 
     fn accept(&mut self, dst: Dst, id: u32) {
@@ -201,14 +201,14 @@ impl Controller {
         if self.beat == 0 && busy[set] {
             return None;
         }
-        Some(match e.ask {
-            Ask::Load { set, group, n } => {
+        Some(match &e.ask {
+            Ask::Load { group, .. } => {
                 let (side, entry) = (self.beat / bs, self.beat % bs);
                 let t = TumbledBundle {
                     set,
                     side,
                     entry,
-                    last: self.beat + 1 == n * bs,
+                    last: self.beat + 1 == group.len() * bs,
                     data: bundle(&img.dop(true, group[side]), entry),
                 };
                 (
@@ -219,7 +219,7 @@ impl Controller {
                     None,
                 )
             }
-            Ask::Aligned { set, node } => {
+            &Ask::Aligned { node, .. } => {
                 let lanes = (img.k - 8 * self.beat).min(8);
                 let a = AlignedBundle {
                     set,
@@ -246,8 +246,8 @@ impl Controller {
         if self.beat == 0 && e.addr.is_some() {
             self.records -= 1;
         }
-        let n = match e.ask {
-            Ask::Load { n, .. } => n,
+        let n = match &e.ask {
+            Ask::Load { group, .. } => group.len(),
             Ask::Aligned { .. } => 1,
         };
         self.beat += 1;
@@ -268,12 +268,12 @@ enum Action {
 /// The Stack Engine's sequencer's registers.
 struct Sequencer {
     /// The tumbled group per level.
-    groups: Vec<([u32; 2], usize)>,
+    groups: Vec<Vec<u32>>,
     /// The current list has its group (its set chosen, loads asked for).
     entered: bool,
     cur: usize,
     /// The group each d' set holds or is being loaded with.
-    holds: [Option<([u32; 2], usize)>; 2],
+    holds: [Option<Vec<u32>>; 2],
     /// Aligned nodes read and not yet flagged; the aligned bundles compared, in order, each
     /// the node whose last bundle it is.
     inflight: usize,
@@ -311,13 +311,14 @@ struct Chip<'a> {
 
 /// Each node's record in the `records` layout of one level (a node pair a record).
 fn records(t: &DopTree) -> Vec<u32> {
-    let ch: Vec<Option<[u32; 2]>> = (0..t.len() as u32)
-        .map(|n| match t.node(n) {
+    let ch: Vec<Option<[u32; 2]>> = t
+        .nodes()
+        .map(|n| match n {
             Node::Inner(c) => Some(c),
             Node::Leaf(_) => None,
         })
         .collect();
-    crate::chip::layout::treelet_records(&ch, 1).rec
+    crate::chip::layout::node_records(crate::chip::config::MemLayout::Records, 1, &ch)
 }
 
 impl<'a> Chip<'a> {
@@ -361,10 +362,10 @@ impl<'a> Chip<'a> {
             mc: Controller::new(p.outstanding as usize),
             // level 0 is the host's: the root's pointer onto level 1, then the next list
             sq: Sequencer {
-                groups: vec![([root, root], 1); crate::chip::rtl::LIST_LEVELS],
+                groups: vec![vec![root]; crate::chip::rtl::LIST_LEVELS],
                 entered: true,
                 cur: 0,
-                holds: [None; 2],
+                holds: [None, None],
                 inflight: 0,
                 compared: VecDeque::new(),
                 actions: VecDeque::from([Action::Append(0, root)]),
@@ -454,11 +455,11 @@ impl<'a> Chip<'a> {
         let Some(n) = flagged.and_then(|n| n.expect("flags without an aligned bundle")) else {
             return;
         };
-        let (g, m) = self.sq.groups[self.ls.level];
-        self.out.dop_tests += m as u64;
-        for (side, &x) in g[..m].iter().enumerate() {
+        let (a, b) = (&self.img.a.tree, &self.img.b.tree);
+        let g = &self.sq.groups[self.ls.level];
+        self.out.dop_tests += g.len() as u64;
+        for (side, &x) in g.iter().enumerate() {
             if self.dout.overlap[side] {
-                let (a, b) = (&self.img.a.tree, &self.img.b.tree);
                 self.sq.actions.extend(actions(a, b, n, x, side));
             }
         }
@@ -540,16 +541,18 @@ pub fn run(
 }
 
 /// What an overlap of aligned node `n` with the tumbled member `x` (on side `side`) does:
-/// append n's children, or n itself (a leaf against an inner node), or a leaf pair.
+/// the appends onto x's new list, or a leaf pair.
 fn actions(a: &DopTree, b: &DopTree, n: u32, x: u32, side: usize) -> Vec<Action> {
     match (a.node(n), b.node(x)) {
-        (Node::Inner(ch), _) => ch.iter().map(|&c| Action::Append(side, c)).collect(),
-        (Node::Leaf(_), Node::Inner(_)) => vec![Action::Append(side, n)],
         (Node::Leaf(ta), Node::Leaf(tb)) => vec![Action::Leaf(LeafPair {
             ids: [ta as u16, tb as u16],
             tag: ta | tb << 16,
             side,
         })],
+        _ => appended(a, b, n, x)
+            .into_iter()
+            .map(|p| Action::Append(side, p))
+            .collect(),
     }
 }
 
@@ -557,44 +560,38 @@ fn actions(a: &DopTree, b: &DopTree, n: u32, x: u32, side: usize) -> Vec<Action>
 /// the last list did not use), the speculative load of its left member's children.
 fn enter(sq: &mut Sequencer, mc: &mut Controller, img: &Images, level: usize, branch: usize) {
     let b = &img.b.tree;
-    let g = if level == 1 {
-        ([DopTree::ROOT; 2], 1)
-    } else {
-        let (pg, _) = sq.groups[level - 1];
-        expand(b, pg[branch])
+    let g = match level {
+        1 => vec![DopTree::ROOT],
+        _ => expand(b, sq.groups[level - 1][branch]),
     };
-    sq.groups[level] = g;
+    sq.groups[level] = g.clone();
     sq.entered = true;
-    match (0..2).find(|&s| sq.holds[s] == Some(g)) {
+    match (0..2).find(|&s| sq.holds[s].as_ref() == Some(&g)) {
         Some(s) => sq.cur = s,
         None => {
             sq.cur = 1 - sq.cur;
-            sq.holds[sq.cur] = Some(g);
-            let (set, group, n) = (sq.cur, g.0, g.1);
-            mc.push(Ask::Load { set, group, n }, img);
-        }
-    }
-    if let Node::Inner(_) = b.node(g.0[0]) {
-        let s = expand(b, g.0[0]);
-        let other = 1 - sq.cur;
-        if sq.holds[other] != Some(s) {
-            sq.holds[other] = Some(s);
+            sq.holds[sq.cur] = Some(g.clone());
             mc.push(
                 Ask::Load {
-                    set: other,
-                    group: s.0,
-                    n: s.1,
+                    set: sq.cur,
+                    group: g.clone(),
                 },
                 img,
             );
         }
     }
-}
-
-/// The group one level down from tumbled node `x`: its children, or `x` alone (a leaf).
-fn expand(b: &DopTree, x: u32) -> ([u32; 2], usize) {
-    match b.node(x) {
-        Node::Inner(ch) => (ch, 2),
-        Node::Leaf(_) => ([x, x], 1),
+    if let Node::Inner(_) = b.node(g[0]) {
+        let s = expand(b, g[0]);
+        let other = 1 - sq.cur;
+        if sq.holds[other].as_ref() != Some(&s) {
+            sq.holds[other] = Some(s.clone());
+            mc.push(
+                Ask::Load {
+                    set: other,
+                    group: s,
+                },
+                img,
+            );
+        }
     }
 }

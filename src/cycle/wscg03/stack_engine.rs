@@ -140,11 +140,7 @@ impl<'a> StackEngine<'a> {
             if l.is_empty() {
                 continue;
             }
-            let g = match self.b.tree.node(x) {
-                Node::Inner(ch) => ch.to_vec(),
-                Node::Leaf(_) => vec![x],
-            };
-            self.list(g, l, level + 1);
+            self.list(expand(&self.b.tree, x), l, level + 1);
         }
     }
 
@@ -216,15 +212,13 @@ impl<'a> StackEngine<'a> {
             {
                 self.ask(r, list);
             }
-            let na = self.a.tree.node(n);
             for (m, &x) in group.iter().enumerate() {
                 if !self.dop.overlap(n, x) {
                     continue;
                 }
-                match (na, self.b.tree.node(x)) {
+                match (self.a.tree.node(n), self.b.tree.node(x)) {
                     (Node::Leaf(ta), Node::Leaf(tb)) => self.leaf_pair(f, ta, tb, r),
-                    (Node::Inner(ch), _) => out[m].extend(ch),
-                    (Node::Leaf(_), Node::Inner(_)) => out[m].push(n),
+                    _ => out[m].extend(appended(&self.a.tree, &self.b.tree, n, x)),
                 }
             }
         }
@@ -275,6 +269,26 @@ impl<'a> StackEngine<'a> {
             s.stall_memory += gap;
         }
         s.compare += end - start;
+    }
+}
+
+/// What a tumbled node's list is tested against one level down: its children, or the node
+/// alone if it is a leaf (Algorithm 2's overloaded call).
+pub fn expand(b: &DopTree, x: u32) -> Vec<u32> {
+    match b.node(x) {
+        Node::Inner(ch) => ch.to_vec(),
+        Node::Leaf(_) => vec![x],
+    }
+}
+
+/// What an overlap of aligned node `n` with tumbled node `x` appends to x's new list: n's
+/// children, or n itself (a leaf against an inner node), or nothing (a leaf pair: the
+/// Triangle Unit's).
+pub fn appended(a: &DopTree, b: &DopTree, n: u32, x: u32) -> Vec<u32> {
+    match (a.node(n), b.node(x)) {
+        (Node::Inner(ch), _) => ch.to_vec(),
+        (Node::Leaf(_), Node::Inner(_)) => vec![n],
+        (Node::Leaf(_), Node::Leaf(_)) => vec![],
     }
 }
 

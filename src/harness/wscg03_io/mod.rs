@@ -295,8 +295,8 @@ pub fn outputs<const K: usize>(uut: &Wscg03DopUnit<K>) -> ClockOut {
     }
 }
 
-use crate::cycle::wscg03::stack_engine::{ListCmd, ListOut, ListStack};
-use crate::dop::{DopTree, Node};
+use crate::cycle::wscg03::stack_engine::{appended, expand, ListCmd, ListOut, ListStack};
+use crate::dop::DopTree;
 
 /// A query's run of the Stack Engine's lists: each clock's command and the clocked model's
 /// outputs after it, and the lists in the order they were read.
@@ -304,26 +304,6 @@ pub struct ListTraffic {
     pub cmds: Vec<ListCmd>,
     pub outs: Vec<ListOut>,
     pub lists: Vec<Vec<u32>>,
-}
-
-/// What a tumbled node's list is tested against one level down: its children, or a leaf
-/// itself (Algorithm 2's overloaded call).
-fn expand(t: &DopTree, x: u32) -> Vec<u32> {
-    match t.node(x) {
-        Node::Inner(ch) => ch.to_vec(),
-        Node::Leaf(_) => vec![x],
-    }
-}
-
-/// What an overlap of aligned node `n` with tumbled node `x` appends to x's list: n's
-/// children, or n itself (a leaf against an inner node), or nothing (a leaf pair: the
-/// Triangle Unit's).
-fn appended(a: &DopTree, b: &DopTree, n: u32, x: u32) -> Vec<u32> {
-    match (a.node(n), b.node(x)) {
-        (Node::Inner(ch), _) => ch.to_vec(),
-        (Node::Leaf(_), Node::Inner(_)) => vec![n],
-        (Node::Leaf(_), Node::Leaf(_)) => vec![],
-    }
 }
 
 /// The Stack Engine's lists (the clocked [`ListStack`], SRAMs of 2^`sram_bits` pointers)
