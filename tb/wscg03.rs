@@ -441,7 +441,9 @@ fn stack_engine_lists_rtl_lockstep() {
 /// WSCG'03's Triangle Unit's input stage (`cycle::wscg03::tri_unit::ClockedTriInput`),
 /// driven as the chip drives it (`harness::wscg03_io::tri_unit::tri_input_traffic`): every
 /// pair TRI_UNIT takes carries the words of its leaf pair's ids, in the order offered; only a
-/// halt or a start drops one; A's cache and B's two entries save most fetches.
+/// halt or a start drops one; A's cache and B's two entries save most fetches. The model
+/// names words by id, so the words' bits are checked in the RTL lockstep below (against
+/// `tri_word`); here, which pair, in what order, and that none is lost.
 /// (By hand: B's word taken from entry 1 whatever the entry that matched failed it.)
 #[test]
 fn triangle_unit_input_stage_keeps_pairs_and_words() {
