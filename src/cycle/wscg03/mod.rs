@@ -14,6 +14,7 @@
 
 pub mod clocked;
 pub mod dop_unit;
+pub mod memory_controller;
 pub mod stack_engine;
 pub mod tri_unit;
 
