@@ -321,3 +321,74 @@ impl<'a> MemoryController<'a> {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Two records of k = 8 distances: the root alone, then its children (ids 2 and 3).
+    fn image() -> Images {
+        let word = |id: u32, d: f64| NodeWord {
+            dop: vec![d; 8],
+            fields: Fields {
+                id,
+                leaf: id > 0,
+                f: [id + 10, id + 20],
+            },
+        };
+        let rec = |a: u32| [word(a, a as f64), word(a + 1, a as f64 + 1.0)];
+        Images {
+            records: [vec![rec(0), rec(2)], vec![rec(0), rec(2)]],
+            bases: [100, 200, 300, 400],
+            k: 8,
+        }
+    }
+
+    /// Two aligned siblings share one fetch, stream from its record the clock after it
+    /// arrives, with their fields on their (only) bundles; a triangle word goes first
+    /// (hand-derived clock by clock).
+    #[test]
+    fn siblings_share_a_record_and_triangle_words_go_first() {
+        let img = image();
+        let mut mc = MemoryController::new(&img, 4);
+        let aligned = |id| Some(Ask::Aligned { set: 0, id });
+        let ready = McIn {
+            mem_ready: true,
+            ..Default::default()
+        };
+        let o0 = mc.step(&McIn {
+            push: aligned(2),
+            ..ready
+        });
+        assert_eq!(o0.req, None);
+        let o1 = mc.step(&McIn {
+            push: aligned(3),
+            ..ready
+        });
+        assert_eq!(o1.req, Some(101), "A's node region, record 1");
+        let o2 = mc.step(&McIn {
+            resp: true,
+            ..ready
+        });
+        assert!((o2.req, o2.fill, o2.dop_in.a.is_some()) == (None, None, false));
+        let o3 = mc.step(&McIn {
+            need: [true, false],
+            ids: [7, 0],
+            ..ready
+        });
+        assert_eq!(o3.req, Some(307), "A's triangle region, record 7");
+        assert_eq!(o3.dop_in.a.as_ref().map(|a| a.e[0]), Some(2.0));
+        assert_eq!(o3.aligned.map(|f| f.f), Some([12, 22]));
+        let o4 = mc.step(&McIn {
+            resp: true,
+            ..ready
+        });
+        assert_eq!(o4.fill, Some((false, 7)));
+        assert_eq!(o4.dop_in.a.as_ref().map(|a| a.e[0]), Some(3.0));
+        assert_eq!(o4.aligned.map(|f| f.id), Some(3));
+        assert_eq!(
+            (mc.node_fetches, mc.tri_fetches, mc.room()),
+            (1, 1, MC_ASKS)
+        );
+    }
+}
