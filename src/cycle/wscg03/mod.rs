@@ -9,8 +9,9 @@
 //! by register: of its units only the DOP Unit, the Stack Engine's lists and the Triangle
 //! Unit's input stage are RTL so far, clocked here as
 //! [`ClockedDopUnit`](dop_unit::ClockedDopUnit), [`ListStack`](stack_engine::ListStack) and
-//! [`ClockedTriInput`](tri_unit::ClockedTriInput), which the event model does not use yet
-//! (docs/explanation/architecture.md, "WSCG'03's chip").
+//! [`ClockedTriInput`](tri_unit::ClockedTriInput), which the event model does not use yet;
+//! [`clocked`] runs the chip on them and on the Memory Controller clocked register by
+//! register ([`memory_controller`]) (docs/explanation/architecture.md, "WSCG'03's chip").
 
 pub mod clocked;
 pub mod dop_unit;
