@@ -210,6 +210,8 @@ pub mod b32 {
         (0 0) (1 32) (2 64) (3 96) (4 128) (5 160) (6 192) (7 224));
     // WSCG'03's Triangle Unit's input stage, on the chip's triangle cache (`TriCache`)
     crate::rtl::wscg03::tri_unit::tri_input!(738);
+    // WSCG'03's Memory Controller: records of two node words of 1 + 24 * 32 + 64 bits
+    crate::rtl::wscg03::memory_controller::memory_controller!(2048, 833, 738, 769);
     // the decode stage of 4-bit stored DOPs (`date05-treelets`): exponents -149 ..= 124, 9 bits
     crate::rtl::dop_decode::dop_decode!(32, 23, 4, 9);
     crate::rtl::dop_decode::dop_unit_coded!(32, 4, 9);

@@ -100,6 +100,8 @@ struct Chip<'a> {
     mask: u8,
     out: crate::cycle::drive::ChipTrace,
     n_lists: u64,
+    /// The Memory Controller's inputs, each clock, if asked for.
+    mc_log: Option<Vec<McIn>>,
 }
 
 /// An object's node records in the `records` layout of one level (a node pair a record),
@@ -142,7 +144,7 @@ fn records(o: &ObjectImage) -> Vec<Record> {
 }
 
 /// The memory of `chip`'s query: A's and B's node records, the regions' first words.
-fn images(chip: &crate::query::Chip) -> Images {
+pub fn images(chip: &crate::query::Chip) -> Images {
     let (ra, rb) = (records(&chip.a), records(&chip.b));
     let (na, nb) = (ra.len() as u32, rb.len() as u32);
     Images {
@@ -210,6 +212,7 @@ impl<'a> Chip<'a> {
                 memory: Default::default(),
             },
             n_lists: 0,
+            mc_log: None,
         })
     }
 
@@ -258,7 +261,7 @@ impl<'a> Chip<'a> {
     /// set).
     fn memory(&mut self, now: u64, to: &TriInputOut, resp: bool, push: Option<Ask>) -> ClockIn {
         let mem_ready = self.mem.ready(now);
-        let o = self.mc.step(&McIn {
+        let i = McIn {
             halt: self.sq.halted,
             push,
             need: to.need,
@@ -266,7 +269,11 @@ impl<'a> Chip<'a> {
             mem_ready,
             resp,
             busy: self.dout.busy,
-        });
+        };
+        if let Some(log) = &mut self.mc_log {
+            log.push(i);
+        }
+        let o = self.mc.step(&i);
         if let Some(addr) = o.req.filter(|_| mem_ready) {
             self.mem.request(now, addr);
         }
@@ -388,19 +395,43 @@ pub fn run(
 ) -> Result<ClockedRun, String> {
     let img = images(chip);
     let mut c = Chip::new(chip, &img, setup, first, p)?;
-    for now in 0..max_cycles {
-        if c.finished() {
-            let o = &mut c.out;
-            (o.cycles, o.node_fetches, o.tri_fetches) = (now, c.mc.node_fetches, c.mc.tri_fetches);
-            o.memory = c.mem.counters;
-            return Ok(ClockedRun {
-                trace: c.out,
-                lists: c.n_lists,
-            });
+    c.run(max_cycles)?;
+    Ok(ClockedRun {
+        trace: c.out,
+        lists: c.n_lists,
+    })
+}
+
+/// The Memory Controller's inputs in every clock of [`run`]'s query on the memory `img`
+/// ([`images`] of `chip`): traffic for its RTL.
+pub fn memory_controller_inputs(
+    chip: &crate::query::Chip,
+    img: &Images,
+    setup: &crate::golden::host::HostSetup,
+    first: bool,
+    p: &crate::chip::params::Params,
+    max_cycles: u64,
+) -> Result<Vec<McIn>, String> {
+    let mut c = Chip::new(chip, img, setup, first, p)?;
+    c.mc_log = Some(vec![]);
+    c.run(max_cycles)?;
+    Ok(c.mc_log.unwrap_or_default())
+}
+
+impl Chip<'_> {
+    /// Clocks until the query is finished, at most `max_cycles`.
+    fn run(&mut self, max_cycles: u64) -> Result<(), String> {
+        for now in 0..max_cycles {
+            if self.finished() {
+                let o = &mut self.out;
+                (o.cycles, o.node_fetches) = (now, self.mc.node_fetches);
+                (o.tri_fetches, o.memory) = (self.mc.tri_fetches, self.mem.counters);
+                return Ok(());
+            }
+            self.step(now);
         }
-        c.step(now);
+        Err(crate::cycle::drive::not_finished(max_cycles))
     }
-    Err(crate::cycle::drive::not_finished(max_cycles))
 }
 
 /// What an overlap of aligned node `n` with the tumbled member `x` (on side `side`) does,

@@ -149,6 +149,11 @@ impl<'a> MemoryController<'a> {
         self.tags.len()
     }
 
+    /// The destination and record of the next response (the oldest request outstanding).
+    pub fn next_response(&self) -> Option<(Dst, u32)> {
+        self.tags.front().copied()
+    }
+
     /// The triangle word a response this clock (`resp`) brings: B's?, its record.
     pub fn fill(&self, resp: bool) -> Option<(bool, u16)> {
         let (d, r) = *self.tags.front().filter(|_| resp)?;
@@ -158,7 +163,7 @@ impl<'a> MemoryController<'a> {
     /// One clock: the outputs, then the edge.
     pub fn step(&mut self, i: &McIn) -> McOut {
         let fill = self.fill(i.resp);
-        let req = self.request(i.need, i.ids, fill);
+        let req = self.request(i.need, i.ids);
         let mut out = (!i.halt)
             .then(|| self.stream(i.busy))
             .flatten()
@@ -202,20 +207,15 @@ impl<'a> MemoryController<'a> {
     }
 
     /// The request this clock: a triangle word the input stage lacks (`need`, records
-    /// `ids`; not one arriving now, `fill`), else the first node record not requested,
-    /// if it has room. With its destination and record number.
-    fn request(
-        &self,
-        need: [bool; 2],
-        ids: [u16; 2],
-        fill: Option<(bool, u16)>,
-    ) -> Option<(Dst, u32, u32)> {
+    /// `ids`; not while one of its side is outstanding, which may arrive now), else the
+    /// first node record not requested, if it has room. With its destination and record
+    /// number.
+    fn request(&self, need: [bool; 2], ids: [u16; 2]) -> Option<(Dst, u32, u32)> {
         if self.tags.len() >= self.max_outstanding {
             return None;
         }
         for (d, dst) in [(0, Dst::TriA), (1, Dst::TriB)] {
-            let arriving = fill.is_some_and(|f| f.0 == (d == 1));
-            if need[d] && !arriving && !self.tags.iter().any(|t| t.0 == dst) {
+            if need[d] && !self.tags.iter().any(|t| t.0 == dst) {
                 let id = ids[d] as u32;
                 return Some((dst, id, self.img.addr(dst, id)));
             }

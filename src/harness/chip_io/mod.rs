@@ -119,7 +119,7 @@ pub fn dop_setup_words(
 /// One memory word as little-endian 64-bit limbs.
 pub type Word = Vec<u64>;
 
-fn put(w: &mut Word, at: usize, bits: usize, v: u64) {
+pub(crate) fn put(w: &mut Word, at: usize, bits: usize, v: u64) {
     for b in 0..bits {
         if v >> b & 1 == 1 {
             w[(at + b) / 64] |= 1 << ((at + b) % 64);

@@ -5,6 +5,7 @@
 //! ([`set_inputs`], [`outputs`]); the Stack Engine's lists driven as its sequencer would
 //! drive them ([`list_traffic`]); the Triangle Unit's input stage ([`tri_unit`]).
 
+pub mod memory_controller;
 pub mod tri_unit;
 
 use crate::chip::config::ChipConfig;
