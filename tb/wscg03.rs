@@ -582,18 +582,14 @@ fn clocked_chip_answers_as_the_golden_list_traversal() {
 
 /// WSCG'03's Memory Controller in RTL (`rtl::b32::MemoryController`) equals its clocked
 /// model on every port every clock, driven with the inputs the clocked chip gave it in two
-/// whole queries (all pairs and first hit) on a memory of 5 clocks' latency and 4 requests
-/// outstanding.
+/// whole queries (all pairs and first hit, a `clear` before each) on a memory of 5 clocks'
+/// latency and 4 requests outstanding. (By hand: an aligned sibling that fetched its record
+/// again failed it at clock 60.)
 #[test]
 fn memory_controller_rtl_lockstep() {
     use collision_chip::harness::wscg03_io::memory_controller::{
         mc_lockstep, memory_controller_traffic,
     };
-    for (img, outstanding, ins) in &memory_controller_traffic().queries {
-        let clocks = mc_lockstep(img, *outstanding, &ins[..ins.len().min(3000)]).unwrap();
-        println!(
-            "MemoryController RTL: {clocks} clocks of {} as the model",
-            ins.len()
-        );
-    }
+    let clocks = mc_lockstep(&memory_controller_traffic()).unwrap();
+    println!("MemoryController RTL: {clocks} clocks as the model");
 }

@@ -205,6 +205,7 @@ pub fn all() -> Vec<Unit> {
     units.push(wscg03::wscg03_dop_unit_unit());
     units.push(wscg03::list_stack_unit());
     units.push(wscg03::tri_input_unit());
+    units.push(wscg03::memory_controller_unit());
     units
 }
 

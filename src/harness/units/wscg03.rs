@@ -213,3 +213,13 @@ pub(super) fn tri_input_unit() -> Unit {
         vectors: Box::new(crate::harness::wscg03_io::tri_unit::tri_input_vectors),
     }
 }
+
+/// `memory_controller_b32`: WSCG'03's Memory Controller (`rtl::b32::MemoryController`).
+pub(super) fn memory_controller_unit() -> Unit {
+    Unit {
+        name: "memory_controller_b32".into(),
+        latency: 0,
+        verilog: Box::new(crate::rtl::b32::verilog_memory_controller),
+        vectors: Box::new(crate::harness::wscg03_io::memory_controller::memory_controller_vectors),
+    }
+}

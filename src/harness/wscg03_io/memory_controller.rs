@@ -55,7 +55,7 @@ pub struct McTraffic {
     pub queries: Vec<(Images, usize, Vec<McIn>)>,
 }
 
-/// The Memory Controller's inputs in two queries of soups (60 against 80 triangles, all
+/// The Memory Controller's inputs in two queries of soups (30 against 40 triangles, all
 /// pairs; 120 against 80, the first hit) on WSCG'03's chip clocked register by register,
 /// on an ideal memory of 5 clocks' latency with 4 requests outstanding.
 pub fn memory_controller_traffic() -> McTraffic {
@@ -72,7 +72,7 @@ pub fn memory_controller_traffic() -> McTraffic {
     };
     let mut queries = vec![];
     for (na, nb, seed, first, pose) in [
-        (60, 80, 7, false, Pose::new(5.0, 10.0, 0.0, 0.3, 0.2, 0.1)),
+        (30, 40, 7, false, Pose::new(5.0, 10.0, 0.0, 0.3, 0.2, 0.1)),
         (
             120,
             80,
@@ -101,8 +101,57 @@ pub fn memory_controller_traffic() -> McTraffic {
     McTraffic { queries }
 }
 
+/// One clock of the traffic: its query, `clear` (a clock between queries, nothing else
+/// driven), the inputs and the response's word, the model's outputs and its ask list's
+/// room after the last edge.
+pub struct McClock {
+    pub query: usize,
+    pub clear: bool,
+    pub i: McIn,
+    pub resp: Word,
+    pub o: McOut,
+    pub room: usize,
+    pub pending: bool,
+}
+
+/// The traffic's clocks with the clocked model's outputs: each query on a model of its
+/// own, a `clear` clock before each.
+pub fn mc_clocks(tr: &McTraffic) -> Vec<McClock> {
+    let mut out = vec![];
+    for (q, (img, outstanding, ins)) in tr.queries.iter().enumerate() {
+        let mut model = MemoryController::new(img, *outstanding);
+        out.push(McClock {
+            query: q,
+            clear: true,
+            i: McIn::default(),
+            resp: vec![0; RECORD_BITS / 64],
+            o: McOut::default(),
+            room: model.room(),
+            pending: false,
+        });
+        for i in ins {
+            let resp = match model.next_response().filter(|_| i.resp) {
+                Some(tag) => response(img, tag),
+                None => vec![0; RECORD_BITS / 64],
+            };
+            let (room, pending) = (model.room(), model.outstanding() > 0);
+            let o = model.step(i);
+            out.push(McClock {
+                query: q,
+                clear: false,
+                i: *i,
+                resp,
+                o,
+                room,
+                pending,
+            });
+        }
+    }
+    out
+}
+
 /// Drives one clock's inputs: `i`, the memory `img` (its bases; `resp`, the response's
-/// word), at most `outstanding` requests.
+/// word), at most `outstanding` requests; `clear` low.
 pub fn set_mc_inputs(uut: &mut Rtl, img: &Images, outstanding: usize, i: &McIn, resp: &Word) {
     let (load, set, pair, id) = match i.push {
         Some(Ask::Load { set, id, n }) => (true, set, n == 2, id),
@@ -189,30 +238,143 @@ pub fn mc_outputs_match(uut: &Rtl, o: &McOut, room: usize, resp: &Word) -> bool 
         && (uut.ld_f10.val().index(), uut.ld_f11.val().index()) == (m1.2, m1.3)
 }
 
-/// Runs `ins` through the model and the RTL, clock by clock: the first clock whose outputs
-/// differ, with the model's, if any.
-pub fn mc_lockstep(img: &Images, outstanding: usize, ins: &[McIn]) -> Result<usize, String> {
-    let mut model = MemoryController::new(img, outstanding);
+/// Runs the traffic's clocks through the RTL: the clocks it ran as the model, or the first
+/// clock whose outputs differ, with the model's.
+pub fn mc_lockstep(tr: &McTraffic) -> Result<usize, String> {
     let mut uut = crate::rtl::b32::memory_controller_top();
-    for (c, i) in ins.iter().enumerate() {
-        let resp = match model.next_response().filter(|_| i.resp) {
-            Some(tag) => response(img, tag),
-            None => vec![0; RECORD_BITS / 64],
-        };
-        let room = model.room();
-        let o = model.step(i);
-        set_mc_inputs(&mut uut, img, outstanding, i, &resp);
+    let clocks = mc_clocks(tr);
+    for (n, c) in clocks.iter().enumerate() {
+        let (img, outstanding, _) = &tr.queries[c.query];
+        set_mc_inputs(&mut uut, img, *outstanding, &c.i, &c.resp);
+        uut.clear.next = c.clear;
         uut.clock.next = Clock { clk: false };
         if !simulate(&mut uut, 1000) {
-            return Err(format!("clock {c}: logic did not settle"));
+            return Err(format!("clock {n}: logic did not settle"));
         }
-        if !mc_outputs_match(&uut, &o, room, &resp) {
-            return Err(format!("clock {c}: {i:?} -> {o:?}"));
+        if !mc_outputs_match(&uut, &c.o, c.room, &c.resp) || uut.pending.val() != c.pending {
+            return Err(format!("clock {n}: {:?} -> {:?}", c.i, c.o));
         }
         uut.clock.next = Clock { clk: true };
         if !simulate(&mut uut, 1000) {
-            return Err(format!("clock {c}: logic did not settle"));
+            return Err(format!("clock {n}: logic did not settle"));
         }
     }
-    Ok(ins.len())
+    Ok(clocks.len())
+}
+
+/// A word of `n` bits as hex, most significant digit first.
+fn hex(w: &[u64], n: usize) -> String {
+    let full: String = w.iter().rev().map(|l| format!("{l:016x}")).collect();
+    full[full.len() - n.div_ceil(4)..].to_string()
+}
+
+/// A node word's fields as vector fields: id, leaf, f0, f1.
+fn fields_hex(f: Option<Fields>) -> String {
+    let (id, leaf, f0, f1) = fields(f);
+    format!("{id:04x} {} {f0:08x} {f1:08x}", leaf as u8)
+}
+
+/// A bundle of eight distances as hex (zeros if none).
+fn bus_hex(d: Option<&[f64; 8]>) -> String {
+    (0..8)
+        .rev()
+        .map(|t| format!("{:08x}", d.map_or(0, |d| FORMAT.to_bits(d[t]))))
+        .collect()
+}
+
+/// One clock's inputs as vector fields.
+fn inputs_hex(c: &McClock, img: &Images, outstanding: usize) -> String {
+    let i = &c.i;
+    let (load, set, pair, id) = match i.push {
+        Some(Ask::Load { set, id, n }) => (1, set, (n == 2) as u8, id),
+        Some(Ask::Aligned { set, id }) => (0, set, 0, id),
+        None => (0, 0, 0, 0),
+    };
+    let b = img.bases;
+    format!(
+        "{} {} {} {load} {set} {pair} {id:04x} {} {} {:04x} {:04x} {:06x} {:06x} {:06x} {:06x} {:x} {} {} {} {}",
+        c.clear as u8,
+        i.halt as u8,
+        i.push.is_some() as u8,
+        i.need[0] as u8,
+        i.need[1] as u8,
+        i.ids[0],
+        i.ids[1],
+        b[0],
+        b[1],
+        b[2],
+        b[3],
+        outstanding - 1,
+        i.mem_ready as u8,
+        i.resp as u8,
+        hex(&c.resp, RECORD_BITS),
+        i.busy[0] as u8 | (i.busy[1] as u8) << 1,
+    )
+}
+
+/// One clock's outputs as vector fields.
+fn outputs_hex(c: &McClock) -> String {
+    let o = &c.o;
+    let (t, a) = (o.dop_in.t.as_ref(), o.dop_in.a.as_ref());
+    let (fa, fb, fid) = o
+        .fill
+        .map_or((0, 0, 0), |(b, id)| ((!b) as u8, b as u8, id));
+    let fw = match o.fill {
+        Some(_) => hex(&c.resp, TRI_WORD_BITS),
+        None => "0".repeat(TRI_WORD_BITS.div_ceil(4)),
+    };
+    let m = o.loaded.as_ref().map_or(&[][..], |l| &l.1[..]);
+    let (m0, m1) = (fields(m.first().copied()), fields(m.get(1).copied()));
+    format!(
+        "{:x} {} {} {:06x} {fa} {fb} {fid:04x} {fw} {} {} {} {} {} {} {} {} {} {} {} {} {} {} {} {} {:04x} {} {} {:08x} {:08x} {:08x} {:08x}",
+        c.room,
+        c.pending as u8,
+        o.req.is_some() as u8,
+        o.req.unwrap_or(0),
+        t.is_some() as u8,
+        t.map_or(0, |t| t.set),
+        t.map_or(0, |t| t.side),
+        t.map_or(0, |t| t.entry),
+        t.is_some_and(|t| t.last) as u8,
+        bus_hex(t.map(|t| &t.data)),
+        a.is_some() as u8,
+        a.is_some_and(|a| a.first) as u8,
+        a.map_or(0, |a| a.set),
+        a.map_or(0, |a| a.entry),
+        bus_hex(a.map(|a| &a.e)),
+        o.aligned.is_some() as u8,
+        fields_hex(o.aligned),
+        o.loaded.is_some() as u8,
+        o.loaded.as_ref().map_or(0, |l| l.0),
+        (m.len() == 2) as u8,
+        m0.0,
+        m0.1 as u8,
+        m1.1 as u8,
+        m0.2,
+        m0.3,
+        m1.2,
+        m1.3,
+    )
+}
+
+/// Vectors of the Memory Controller, a clock per line (latency 0: the outputs in that
+/// clock, before its rising edge): [`memory_controller_traffic`]'s clocks
+/// ([`mc_clocks`]) and the clocked model's outputs.
+pub fn memory_controller_vectors() -> String {
+    use std::fmt::Write;
+    let tr = memory_controller_traffic();
+    let mut out = String::new();
+    let _ = writeln!(out, "// clear halt push push_load push_set push_pair push_id need_a need_b ta_id tb_id base_na base_nb base_ta base_tb port_out mem_req_ready mem_resp_valid mem_resp_data busy room pending mem_req_valid mem_req_addr fill_a fill_b fill_id fill_word t_valid t_set t_side t_entry t_last t_data a_valid a_first a_set a_entry e al_valid al_id al_leaf al_f0 al_f1 ld_valid ld_set ld_pair ld_id ld_leaf0 ld_leaf1 ld_f00 ld_f01 ld_f10 ld_f11");
+    let _ = writeln!(out, "// latency: 0");
+    let _ = writeln!(out, "// memory_controller_b32: WSCG'03's Memory Controller, one line per clock: inputs, then the outputs in that clock (before its rising edge); the inputs the clocked chip gave it in two whole queries; golden: cycle::wscg03::memory_controller::MemoryController");
+    for c in mc_clocks(&tr) {
+        let (img, outstanding, _) = &tr.queries[c.query];
+        let _ = writeln!(
+            out,
+            "{} {}",
+            inputs_hex(&c, img, *outstanding),
+            outputs_hex(&c)
+        );
+    }
+    out
 }
