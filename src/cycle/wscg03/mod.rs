@@ -6,8 +6,8 @@
 //! come from the golden model (the list traversal's overlaps, TRI_UNIT's verdicts): this
 //! model adds only *when*. It is an event model in program order (each unit keeps the
 //! clock it is free; the Memory Controller asks for words in order), not clocked register
-//! by register: of its units only the DOP Unit, the Stack Engine's lists and the Triangle
-//! Unit's input stage are RTL so far, clocked here as
+//! by register: of its units only the DOP Unit, the Stack Engine's lists, the Memory
+//! Controller and the Triangle Unit's input stage are RTL so far, clocked here as
 //! [`ClockedDopUnit`](dop_unit::ClockedDopUnit), [`ListStack`](stack_engine::ListStack) and
 //! [`ClockedTriInput`](tri_unit::ClockedTriInput), which the event model does not use yet;
 //! [`clocked`] runs the chip on them and on the Memory Controller clocked register by
