@@ -16,6 +16,7 @@
 pub mod clocked;
 pub mod dop_unit;
 pub mod memory_controller;
+pub mod sequencer;
 pub mod stack_engine;
 pub mod tri_unit;
 
