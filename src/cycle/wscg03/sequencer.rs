@@ -224,7 +224,10 @@ impl Sequencer {
         let Some(n) = c.expect("flags without an aligned bundle") else {
             return;
         };
-        let g = self.fields(self.cur).expect("flags before the set's load").to_vec();
+        let g = self
+            .fields(self.cur)
+            .expect("flags before the set's load")
+            .to_vec();
         self.dop_tests += g.len() as u64;
         for (side, &x) in g.iter().enumerate() {
             if i.overlap[side] {
@@ -249,5 +252,64 @@ fn actions(n: Fields, x: Fields, side: usize) -> Vec<Action> {
         })],
         (false, _) => n.f.iter().map(|&c| Action::Append(side, c)).collect(),
         (true, false) => vec![Action::Append(side, n.id)],
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The first lists, clock by clock (hand-derived): the root's pointer appended, the
+    /// host's list done, level 1 entered with the root loaded into set 1, its pointer read
+    /// and asked for, then (its fields loaded) its children speculated into set 0.
+    #[test]
+    fn enters_the_root_list_and_speculates_its_children() {
+        let mut sq = Sequencer::new(4);
+        let mut i = SeqIn {
+            room: 8,
+            ..SeqIn::default()
+        };
+        assert_eq!(sq.step(&i).append, Some((0, DopTree::ROOT as u16)));
+        assert!(
+            sq.step(&i).next_list,
+            "the host's list is done once its append is"
+        );
+        i.ls = ListOut {
+            level: 1,
+            remaining: 1,
+            ..ListOut::default()
+        };
+        let root = Ask::Load {
+            set: 1,
+            id: 0,
+            n: 1,
+        };
+        assert_eq!(sq.ask(&i), Some(root));
+        assert!(!sq.step(&i).read, "no read before the list is entered");
+        let fields = Fields {
+            id: 0,
+            leaf: false,
+            f: [2, 3],
+        };
+        i.loaded = Some((1, vec![fields]));
+        assert_eq!(sq.ask(&i), None, "the root's fields come at this edge");
+        assert!(sq.step(&i).read);
+        (i.loaded, i.ls.remaining, i.ls.rd) = (None, 0, Some(0));
+        assert_eq!(sq.ask(&i), Some(Ask::Aligned { set: 1, id: 0 }));
+        sq.step(&i);
+        i.ls.rd = None;
+        assert_eq!(
+            sq.ask(&i),
+            Some(Ask::Load {
+                set: 0,
+                id: 2,
+                n: 2
+            })
+        );
+        assert_eq!(
+            sq.step(&i),
+            ListCmd::default(),
+            "the list waits for its flags"
+        );
     }
 }
