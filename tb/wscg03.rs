@@ -584,7 +584,7 @@ fn clocked_chip_answers_as_the_golden_list_traversal() {
 /// model on every port every clock, driven with the inputs the clocked chip gave it in two
 /// whole queries (all pairs and first hit, a `clear` before each) on a memory of 5 clocks'
 /// latency and 4 requests outstanding. (By hand: an aligned sibling that fetched its record
-/// again failed it at clock 60.)
+/// again failed it.)
 #[test]
 fn memory_controller_rtl_lockstep() {
     use collision_chip::harness::wscg03_io::memory_controller::{

@@ -1,7 +1,7 @@
 //! WSCG'03's CollisionChip clocked register by register: the Stack Engine's sequencer
-//! around its lists ([`ListStack`]), the Memory Controller ([`MemoryController`]: a node pair per
-//! burst), the DOP Unit ([`ClockedDopUnit`]), the Triangle Unit's input stage
-//! ([`ClockedTriInput`]) and TRI_UNIT ([`TriUnit`]), each
+//! ([`Sequencer`]) around its lists ([`ListStack`]), the Memory Controller
+//! ([`MemoryController`]: a node pair per burst), the DOP Unit ([`ClockedDopUnit`]), the
+//! Triangle Unit's input stage ([`ClockedTriInput`]) and TRI_UNIT ([`TriUnit`]), each
 //! clock's decisions read from the state before its edge. It is the design the chip's RTL
 //! is to follow; values come from the golden functions through the clocked units.
 //!
