@@ -28,12 +28,12 @@ impl Architecture {
 /// data bus (§4.1: 256 bits, so an aligned DOP against the tumbled pair takes 4 clocks at
 /// k = 24, binary32), the Memory Controller's buffer (§4.4: a node pair) and the Triangle
 /// Unit's rate (§4.3: a pair every 3 clocks); the RTL's compare bank gives the compare
-/// latency; the rest is our assumption (docs/explanation/architecture.md, "WSCG'03's chip").
+/// latency, its lists and Memory Controller the SRAM latency; the rest is our assumption (docs/explanation/architecture.md, "WSCG'03's chip").
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct StackParams {
     /// Clocks from the Stack Engine's read of a list SRAM to the pointer at the Memory
-    /// Controller (assumed: 2, a synchronous SRAM's read and the address register).
+    /// Controller (the RTL's 2: `ListStack`'s synchronous read, then the ask list's register).
     pub sram_latency: u32,
     /// DOTADD pipeline stages (§5.2: 6); a DOTADD unit writes one transformed d' per clock,
     /// so a tumbled DOP is transformed k + `dotadd_stages` clocks after its word is present.
