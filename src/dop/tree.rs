@@ -420,6 +420,27 @@ impl DopTree {
         (0..self.len() as u32).map(|n| self.node(n))
     }
 
+    /// Every node's children (`None`: a leaf), in pre-order: what the memory layouts place
+    /// records by ([`chip::layout`](crate::chip::layout)).
+    pub fn children(&self) -> Vec<Option<[u32; 2]>> {
+        self.nodes()
+            .map(|n| match n {
+                Node::Inner(c) => Some(c),
+                Node::Leaf(_) => None,
+            })
+            .collect()
+    }
+
+    /// The leaves' triangles, in pre-order.
+    pub fn leaf_tris(&self) -> Vec<u32> {
+        self.nodes()
+            .filter_map(|n| match n {
+                Node::Leaf(t) => Some(t),
+                Node::Inner(_) => None,
+            })
+            .collect()
+    }
+
     /// The triangles, by triangle index.
     pub fn tris(&self) -> &[Tri] {
         &self.tris

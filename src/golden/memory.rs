@@ -5,7 +5,6 @@
 use crate::chip::config::ChipConfig;
 use crate::chip::layout::{node_ids, node_records, tri_records, Layout};
 use crate::dop::tree::{DopTree, Tri};
-use crate::dop::Node;
 use crate::format::{Format, Rounding};
 use crate::golden::certificate::Certificate;
 use crate::golden::host::{Affine, TriSide};
@@ -175,20 +174,7 @@ impl ObjectImage {
             .map(|t| TriWord::new(t, fmt, scale).lambda)
             .fold(0.0, f64::max);
         let tree = DopTree::of(tris, cfg);
-        let children: Vec<_> = tree
-            .nodes()
-            .map(|n| {
-                if let Node::Inner(c) = n {
-                    Some(c)
-                } else {
-                    None
-                }
-            })
-            .collect();
-        let leaves: Vec<u32> = tree
-            .nodes()
-            .filter_map(|n| if let Node::Leaf(t) = n { Some(t) } else { None })
-            .collect();
+        let (children, leaves) = (tree.children(), tree.leaf_tris());
         let levels = Layout::new(cfg).levels;
         let (records, ids, tri_records) = (
             node_records(cfg.layout, levels, &children),

@@ -212,6 +212,11 @@ pub mod b32 {
     crate::rtl::wscg03::tri_unit::tri_input!(738);
     // WSCG'03's Memory Controller: records of two node words of 1 + 24 * 32 + 64 bits
     crate::rtl::wscg03::memory_controller::memory_controller!(2048, 833, 738, 769);
+    const _: () = assert!(
+        crate::chip::layout::record_bits(24, 32, 32) == 2048
+            && crate::chip::layout::node_bits(24, 32) == 833
+            && crate::chip::layout::tri_bits(32) == 738
+    );
     // the decode stage of 4-bit stored DOPs (`date05-treelets`): exponents -149 ..= 124, 9 bits
     crate::rtl::dop_decode::dop_decode!(32, 23, 4, 9);
     crate::rtl::dop_decode::dop_unit_coded!(32, 4, 9);

@@ -63,26 +63,12 @@ struct Chip<'a> {
 /// each node word's fields as the memory image holds them (the ids of
 /// [`node_ids`], the triangle records of [`tri_records`]).
 fn records(o: &ObjectImage) -> Vec<Record> {
-    let t = &o.tree;
-    let children: Vec<Option<[u32; 2]>> = t
-        .nodes()
-        .map(|n| match n {
-            Node::Inner(c) => Some(c),
-            Node::Leaf(_) => None,
-        })
-        .collect();
-    let leaves: Vec<u32> = t
-        .nodes()
-        .filter_map(|n| match n {
-            Node::Leaf(tri) => Some(tri),
-            Node::Inner(_) => None,
-        })
-        .collect();
+    let (t, children) = (&o.tree, o.tree.children());
     let (rec, ids) = (
         node_records(Records, 1, &children),
         node_ids(Records, 1, &children),
     );
-    let tris = tri_records(Records, &leaves);
+    let tris = tri_records(Records, &t.leaf_tris());
     let mut out = vec![Record::default(); *rec.iter().max().unwrap() as usize + 1];
     for n in 0..t.len() as u32 {
         let (leaf, f) = match t.node(n) {

@@ -119,7 +119,7 @@ pub fn dop_setup_words(
 /// One memory word as little-endian 64-bit limbs.
 pub type Word = Vec<u64>;
 
-pub(crate) fn put(w: &mut Word, at: usize, bits: usize, v: u64) {
+fn put(w: &mut Word, at: usize, bits: usize, v: u64) {
     for b in 0..bits {
         if v >> b & 1 == 1 {
             w[(at + b) / 64] |= 1 << ((at + b) % 64);
@@ -143,22 +143,35 @@ fn put_node_word(
         Some(_) => (Layout::new(cfg).node_bits as usize - 65) / k,
         None => f.width() as usize,
     };
-    match codes {
-        Some(q) => (0..k).for_each(|i| put(w, at + 1 + i * plane, plane, q[i] as u64)),
-        None => {
-            for (i, &d) in obj.tree.dop(n).iter().enumerate() {
-                put(w, at + 1 + i * plane, plane, f.to_bits(d));
-            }
-        }
-    }
+    let values: Vec<u64> = match codes {
+        Some(q) => q[..k].iter().map(|&c| c as u64).collect(),
+        None => obj.tree.dop(n).iter().map(|&d| f.to_bits(d)).collect(),
+    };
     let (leaf, f0, f1) = match obj.tree.node(n) {
         Node::Inner([c0, c1]) => (false, obj.ids[c0 as usize], obj.ids[c1 as usize]),
         Node::Leaf(t) if cfg.layout == MemLayout::Records => (true, t, obj.tri_record(t)),
         Node::Leaf(t) => (true, t, 0),
     };
+    put_node(w, at, plane, &values, leaf, [f0, f1]);
+}
+
+/// A node word at bit `at` of `w`: the leaf bit, then `values` of `plane` bits each, then
+/// the two 32-bit fields `f`.
+pub(crate) fn put_node(
+    w: &mut Word,
+    at: usize,
+    plane: usize,
+    values: &[u64],
+    leaf: bool,
+    f: [u32; 2],
+) {
     put(w, at, 1, leaf as u64);
-    put(w, at + 1 + k * plane, 32, f0 as u64);
-    put(w, at + 33 + k * plane, 32, f1 as u64);
+    for (i, &v) in values.iter().enumerate() {
+        put(w, at + 1 + i * plane, plane, v);
+    }
+    let end = at + 1 + values.len() * plane;
+    put(w, end, 32, f[0] as u64);
+    put(w, end + 32, 32, f[1] as u64);
 }
 
 /// A record's shared fields after its node words (stored DOP precision): the treelet
@@ -186,15 +199,7 @@ fn put_shared(w: &mut Word, cfg: &ChipConfig, s: &StoredFields) {
 fn object_words(kind: ChipKind, cfg: &ChipConfig, obj: &ObjectImage) -> [Vec<Word>; 2] {
     let l = Layout::new(cfg);
     let mut nodes = vec![vec![0; kind.word_bits().div_ceil(64)]; obj.node_records() as usize];
-    let children: Vec<_> = obj
-        .tree
-        .nodes()
-        .map(|n| match n {
-            Node::Inner(c) => Some(c),
-            Node::Leaf(_) => None,
-        })
-        .collect();
-    let roots = treelet_records(&children, l.levels).root;
+    let roots = treelet_records(&obj.tree.children(), l.levels).root;
     for n in 0..obj.tree.len() as u32 {
         let slot = match cfg.layout {
             MemLayout::Records => obj.ids[n as usize] & ((1 << slot_bits(l.levels)) - 1),

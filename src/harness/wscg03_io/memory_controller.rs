@@ -10,27 +10,29 @@ use crate::chip::layout::Dst;
 use crate::cycle::wscg03::memory_controller::{
     Ask, Fields, Images, McIn, McOut, MemoryController, Record,
 };
-use crate::harness::chip_io::{bits, put, Word};
+use crate::harness::chip_io::{bits, put_node, Word};
 use crate::rtl::b32::MemoryController as Rtl;
 use rust_hdl::prelude::*;
 
 /// Bits of a record (a memory word: two node words, padded to 256 bytes) and of a node
 /// word (k = 24, binary32).
-pub const RECORD_BITS: usize = 2048;
+pub const RECORD_BITS: usize = crate::chip::layout::record_bits(24, 32, 32);
 const NODE_BITS: usize = crate::chip::layout::node_bits(24, 32);
 
-/// A record as the memory holds it: slot s's node word from bit `s NODE_BITS`: the leaf
-/// bit, the distances, the two fields (`chip_io`'s node word).
+/// A record as the memory holds it: slot s's node word from bit `s NODE_BITS`
+/// ([`put_node`]: the leaf bit, the distances, the two fields).
 pub fn record_word(r: &Record) -> Word {
     let mut w = vec![0; RECORD_BITS / 64];
     for (s, n) in r.iter().enumerate() {
-        let at = s * NODE_BITS;
-        put(&mut w, at, 1, n.fields.leaf as u64);
-        for (i, &d) in n.dop.iter().enumerate() {
-            put(&mut w, at + 1 + 32 * i, 32, FORMAT.to_bits(d));
-        }
-        put(&mut w, at + 769, 32, n.fields.f[0] as u64);
-        put(&mut w, at + 801, 32, n.fields.f[1] as u64);
+        let values: Vec<u64> = n.dop.iter().map(|&d| FORMAT.to_bits(d)).collect();
+        put_node(
+            &mut w,
+            s * NODE_BITS,
+            32,
+            &values,
+            n.fields.leaf,
+            n.fields.f,
+        );
     }
     w
 }
