@@ -583,13 +583,48 @@ fn clocked_chip_answers_as_the_golden_list_traversal() {
 /// WSCG'03's Memory Controller in RTL (`rtl::b32::MemoryController`) equals its clocked
 /// model on every port every clock, driven with the inputs the clocked chip gave it in two
 /// whole queries (all pairs and first hit, a `clear` before each) on a memory of 5 clocks'
-/// latency and 4 requests outstanding. (By hand: an aligned sibling that fetched its record
-/// again failed it.)
+/// latency and 4 requests outstanding; the traffic is checked to reach every path (A's and
+/// B's triangle words, pairs and leaves loaded, siblings sharing a record, busy sets, a
+/// halt). (By hand: an aligned sibling that fetched its record again failed it.)
 #[test]
 fn memory_controller_rtl_lockstep() {
+    use collision_chip::harness::wscg03_io::memory_controller::mc_clocks;
     use collision_chip::harness::wscg03_io::memory_controller::{
         mc_lockstep, memory_controller_traffic,
     };
-    let clocks = mc_lockstep(&memory_controller_traffic()).unwrap();
-    println!("MemoryController RTL: {clocks} clocks as the model");
+    let tr = memory_controller_traffic();
+    // the traffic reaches every path: triangle words, pairs and leaves loaded, aligned
+    // siblings sharing a record, waits for a busy set, a halt
+    let cs = mc_clocks(&tr);
+    let count =
+        |f: &dyn Fn(&collision_chip::harness::wscg03_io::memory_controller::McClock) -> bool| {
+            cs.iter().filter(|c| f(c)).count()
+        };
+    // aligned asks whose record is the aligned ask's before them (no load between)
+    use collision_chip::cycle::wscg03::memory_controller::Ask;
+    let mut last = None;
+    let shared = cs
+        .iter()
+        .filter_map(|c| c.i.push)
+        .filter(|&a| {
+            let same = matches!(a, Ask::Aligned { id, .. } if last == Some(id >> 1));
+            last = match a {
+                Ask::Aligned { id, .. } => Some(id >> 1),
+                Ask::Load { .. } => None,
+            };
+            same
+        })
+        .count();
+    let coverage = [
+        count(&|c| c.o.fill.is_some_and(|f| !f.0)),
+        count(&|c| c.o.fill.is_some_and(|f| f.0)),
+        count(&|c| c.o.loaded.as_ref().is_some_and(|l| l.1.len() == 2)),
+        count(&|c| c.o.loaded.as_ref().is_some_and(|l| l.1.len() == 1)),
+        shared,
+        count(&|c| c.i.busy != [false, false] && c.room < 8 && c.o.dop_in == Default::default()),
+        count(&|c| c.i.halt),
+    ];
+    assert!(coverage.iter().all(|&n| n > 0), "{coverage:?}");
+    let clocks = mc_lockstep(&tr).unwrap();
+    println!("MemoryController RTL: {clocks} clocks as the model; coverage {coverage:?}");
 }
