@@ -20,7 +20,7 @@ pub const RECORD_BITS: usize = crate::chip::layout::record_bits(24, 32, 32);
 const NODE_BITS: usize = crate::chip::layout::node_bits(24, 32);
 
 /// A record as the memory holds it: slot s's node word from bit `s NODE_BITS`
-/// ([`put_node`]: the leaf bit, the distances, the two fields).
+/// (`chip_io::put_node`: the leaf bit, the distances, the two fields).
 pub fn record_word(r: &Record) -> Word {
     let mut w = vec![0; RECORD_BITS / 64];
     for (s, n) in r.iter().enumerate() {
