@@ -351,7 +351,7 @@ def member(r, fmt, rnd, tri_fmt=None, k=None, ii=None):
     if chip(r) or (k and r['unit'].startswith('dop_unit_') and f'_k{k}_' not in r['unit']): return False
     if fold(r['unit']) != ii: return False  # a folded unit (tri_unit_fold16_*) is in its folded chips only
     if '_fpga' in r['unit']: return False  # the units at FPGA depth (fp_add_fpga_*) are in no ASIC configuration
-    if r['unit'].startswith(('fp_cmp', 'compare_bank', 'dotadd', 'dprime', 'wscg03', 'list_stack', 'tri_input', 'memory_controller')): return False  # WSCG'03's units: in no DATE'05 chip
+    if r['unit'].startswith(('fp_cmp', 'compare_bank', 'dotadd', 'dprime', 'wscg03', 'list_stack', 'tri_input', 'memory_controller', 'sequencer')): return False  # WSCG'03's units: in no DATE'05 chip
     if r['format'] == '-': return True
     if r['unit'].startswith(('tcheck', 'tri_unit')): return r['format'] == (tri_fmt or fmt)
     return r['format'] == fmt and r['rounding'] in (rnd, '-')

@@ -588,11 +588,8 @@ fn clocked_chip_answers_as_the_golden_list_traversal() {
 /// halt). (By hand: an aligned sibling that fetched its record again failed it.)
 #[test]
 fn memory_controller_rtl_lockstep() {
-    use collision_chip::harness::wscg03_io::memory_controller::mc_clocks;
-    use collision_chip::harness::wscg03_io::memory_controller::{
-        mc_lockstep, memory_controller_traffic,
-    };
-    let tr = memory_controller_traffic();
+    use collision_chip::harness::wscg03_io::memory_controller::{mc_clocks, mc_lockstep};
+    let tr = collision_chip::harness::wscg03_io::traffic();
     // the traffic reaches every path: triangle words, pairs and leaves loaded, aligned
     // siblings sharing a record, waits for a busy set, a halt
     let cs = mc_clocks(&tr);
@@ -627,4 +624,44 @@ fn memory_controller_rtl_lockstep() {
     assert!(coverage.iter().all(|&n| n > 0), "{coverage:?}");
     let clocks = mc_lockstep(&tr).unwrap();
     println!("MemoryController RTL: {clocks} clocks as the model; coverage {coverage:?}");
+}
+
+/// WSCG'03's Stack Engine's sequencer in RTL (`rtl::wscg03::sequencer::Sequencer`) equals
+/// its clocked model on every port every clock, driven with the inputs the clocked chip
+/// gave it in the Memory Controller's two whole queries; the traffic is checked to reach
+/// every path (lists entered on a held set and on a load, speculative loads, leaf pairs
+/// offered and taken or refused, flags on both members, a halt).
+#[test]
+fn sequencer_rtl_lockstep() {
+    use collision_chip::cycle::wscg03::memory_controller::Ask;
+    use collision_chip::harness::wscg03_io::sequencer::{seq_clocks, seq_lockstep, SeqClock};
+    let tr = collision_chip::harness::wscg03_io::traffic();
+    let cs = seq_clocks(&tr);
+    let count = |f: &dyn Fn(&SeqClock) -> bool| cs.iter().filter(|c| f(c)).count();
+    let entered: Vec<_> = cs.windows(2).map(|w| w[1].lists > w[0].lists).collect();
+    let loads = |c: &SeqClock| matches!(c.ask, Some(Ask::Load { .. }));
+    let coverage = [
+        entered
+            .iter()
+            .zip(&cs)
+            .filter(|(&e, c)| e && !loads(c))
+            .count(),
+        entered
+            .iter()
+            .zip(&cs)
+            .filter(|(&e, c)| e && loads(c))
+            .count(),
+        entered
+            .iter()
+            .zip(&cs)
+            .filter(|(&e, c)| !e && loads(c))
+            .count(),
+        count(&|c| c.offer.is_some() && c.i.leaf_ready),
+        count(&|c| c.offer.is_some() && !c.i.leaf_ready),
+        count(&|c| c.i.flags_valid && c.i.overlap == [true, true]),
+        count(&|c| c.i.halt && !c.clear),
+    ];
+    assert!(coverage.iter().all(|&n| n > 0), "{coverage:?}");
+    let clocks = seq_lockstep(&tr).unwrap();
+    println!("Sequencer RTL: {clocks} clocks as the model; coverage {coverage:?}");
 }

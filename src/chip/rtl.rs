@@ -38,6 +38,14 @@ pub const MC_RECORDS: usize = 2;
 /// WSCG'03's Memory Controller: the asks (tumbled loads, aligned DOPs) its list holds.
 pub const MC_ASKS: usize = 8;
 
+/// WSCG'03's Stack Engine's sequencer: aligned nodes read and not yet flagged (a read waits
+/// while this many are).
+pub const SEQ_READS: usize = 8;
+/// The sequencer's action queue: a read waits while 4 actions do, and a read node's flags
+/// add at most 4 (its two children onto both members' lists), so at most
+/// 3 + 4 [`SEQ_READS`] wait.
+pub const SEQ_ACTIONS: usize = 3 + 4 * SEQ_READS;
+
 /// WSCG'03's DOP Unit: clocks from a tumbled pair's last bundle to the first clock its `k`
 /// pairs of d' are all in the d' memory (its set no longer busy), when the address generator
 /// is free: the generator's counter (1), the MMM's read (1), the DOTADD units, a lane a

@@ -206,6 +206,7 @@ pub fn all() -> Vec<Unit> {
     units.push(wscg03::list_stack_unit());
     units.push(wscg03::tri_input_unit());
     units.push(wscg03::memory_controller_unit());
+    units.push(wscg03::sequencer_unit());
     units
 }
 

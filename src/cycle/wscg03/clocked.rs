@@ -55,8 +55,16 @@ struct Chip<'a> {
     /// First hit: a sure verdict came, nothing more streams or is offered.
     halted: bool,
     out: crate::cycle::drive::ChipTrace,
-    /// The Memory Controller's inputs, each clock, if asked for.
-    mc_log: Option<Vec<McIn>>,
+    /// The Memory Controller's and the sequencer's inputs, each clock, if asked for.
+    log: Option<UnitInputs>,
+}
+
+/// The inputs of the Memory Controller and of the sequencer in every clock of a query:
+/// traffic for their RTL.
+#[derive(Default)]
+pub struct UnitInputs {
+    pub mc: Vec<McIn>,
+    pub seq: Vec<SeqIn>,
 }
 
 /// An object's node records in the `records` layout of one level (a node pair a record),
@@ -140,7 +148,7 @@ impl<'a> Chip<'a> {
                 memory: Default::default(),
             },
             halted: false,
-            mc_log: None,
+            log: None,
         })
     }
 
@@ -203,14 +211,15 @@ impl<'a> Chip<'a> {
             resp,
             busy: self.dout.busy,
         };
-        if let Some(log) = &mut self.mc_log {
-            log.push(i);
-        }
         let o = self.mc.step(&i);
         if let Some(addr) = o.req.filter(|_| mem_ready) {
             self.mem.request(now, addr);
         }
         (si.aligned, si.loaded) = (o.dop_in.a.is_some().then_some(o.aligned), o.loaded);
+        if let Some(log) = &mut self.log {
+            log.mc.push(i);
+            log.seq.push(si.clone());
+        }
         let cmd = self.sq.step(&si);
         self.ls = self.lists.step(&cmd);
         self.dout = self.dop.step(&o.dop_in);
@@ -236,20 +245,20 @@ pub fn run(
     })
 }
 
-/// The Memory Controller's inputs in every clock of [`run`]'s query on the memory `img`
-/// ([`images`] of `chip`): traffic for its RTL.
-pub fn memory_controller_inputs(
+/// The Memory Controller's and the sequencer's inputs in every clock of [`run`]'s query on
+/// the memory `img` ([`images`] of `chip`).
+pub fn unit_inputs(
     chip: &crate::query::Chip,
     img: &Images,
     setup: &crate::golden::host::HostSetup,
     first: bool,
     p: &crate::chip::params::Params,
     max_cycles: u64,
-) -> Result<Vec<McIn>, String> {
+) -> Result<UnitInputs, String> {
     let mut c = Chip::new(chip, img, setup, first, p)?;
-    c.mc_log = Some(vec![]);
+    c.log = Some(UnitInputs::default());
     c.run(max_cycles)?;
-    Ok(c.mc_log.unwrap_or_default())
+    Ok(c.log.unwrap_or_default())
 }
 
 impl Chip<'_> {

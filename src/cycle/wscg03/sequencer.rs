@@ -10,6 +10,7 @@
 use super::memory_controller::{Ask, Fields};
 use super::stack_engine::{ListCmd, ListOut};
 use super::tri_unit::LeafPair;
+use crate::chip::rtl::{SEQ_ACTIONS, SEQ_READS, WSCG03_COMPARE_LATENCY as COMPARED};
 use crate::dop::DopTree;
 use std::collections::VecDeque;
 
@@ -63,11 +64,12 @@ pub struct Sequencer {
     /// group last loaded into it (valid when their ids are `holds`').
     holds: [Vec<u32>; 2],
     loaded: [Vec<Fields>; 2],
-    /// Aligned nodes read and not yet flagged; the aligned bundles compared, in order, each
-    /// with the fields of the node whose last bundle it is.
+    /// Aligned nodes read and not yet flagged (at most [`SEQ_READS`]); the aligned bundles
+    /// compared, in order, each with the fields of the node whose last bundle it is (at most
+    /// the DOP Unit's compare latency).
     inflight: usize,
     compared: VecDeque<Option<Fields>>,
-    /// What the flags made the sequencer do, in order.
+    /// What the flags made the sequencer do, in order (at most [`SEQ_ACTIONS`]).
     actions: VecDeque<Action>,
     /// Lists entered; DOP tests (an aligned node against each member of its group).
     pub lists: u64,
@@ -134,6 +136,7 @@ impl Sequencer {
         if let Some((set, m)) = &i.loaded {
             self.loaded[*set] = m.clone();
         }
+        assert!(self.actions.len() <= SEQ_ACTIONS && self.compared.len() <= COMPARED);
         d.cmd
     }
 
@@ -166,7 +169,7 @@ impl Sequencer {
             self.speculate(&mut d);
         }
         if idle && self.entered {
-            let room = i.room > 2;
+            let room = i.room > 2 && self.inflight < SEQ_READS;
             d.cmd.read = ls.remaining > 0 && room && self.actions.len() < 4 && ls.level > 0;
             let done = ls.remaining == 0 && self.inflight == 0 && self.actions.is_empty();
             d.cmd.next_list = done;
@@ -183,7 +186,7 @@ impl Sequencer {
             1 => vec![DopTree::ROOT],
             _ => match self.groups[level - 1][branch] {
                 m if m.leaf => vec![m.id],
-                m => m.f.to_vec(),
+                m => pair(m.f[0]),
             },
         };
         match (0..2).find(|&s| self.holds[s] == g) {
@@ -205,7 +208,7 @@ impl Sequencer {
         };
         d.spec_done = true;
         let set = 1 - self.cur;
-        if !m0.leaf && self.holds[set] != m0.f {
+        if !m0.leaf && self.holds[set] != pair(m0.f[0]) {
             d.push = Some(Ask::Load {
                 set,
                 id: m0.f[0],
@@ -237,6 +240,11 @@ impl Sequencer {
         self.groups[i.ls.level] = g;
         self.inflight -= 1;
     }
+}
+
+/// A sibling pair's ids from the first's: a record's two slots (the RTL keeps the first).
+fn pair(id: u32) -> Vec<u32> {
+    vec![id, id + 1]
 }
 
 /// What an overlap of aligned node `n` with the tumbled member `x` (on side `side`) does,

@@ -223,3 +223,13 @@ pub(super) fn memory_controller_unit() -> Unit {
         vectors: Box::new(crate::harness::wscg03_io::memory_controller::memory_controller_vectors),
     }
 }
+
+/// `sequencer`: WSCG'03's Stack Engine's sequencer (`rtl::wscg03::sequencer::Sequencer`).
+pub(super) fn sequencer_unit() -> Unit {
+    Unit {
+        name: "sequencer".into(),
+        latency: 0,
+        verilog: Box::new(crate::rtl::wscg03::sequencer::verilog_sequencer),
+        vectors: Box::new(crate::harness::wscg03_io::sequencer::sequencer_vectors),
+    }
+}

@@ -1,11 +1,11 @@
 //! WSCG'03's Memory Controller driven as the clocked chip drives it
-//! ([`memory_controller_traffic`]: the inputs it had in every clock of whole queries, on a
+//! ([`traffic`](super::traffic): the inputs it had in every clock of whole queries, on a
 //! memory of a few clocks' latency with requests overlapped); its records and triangle
 //! words as memory words ([`record_word`], [`response`]); the RTL's ports as the model's
 //! ([`set_mc_inputs`], [`mc_outputs_match`]).
 
 use super::tri_unit::{tri_word, TRI_WORD_BITS};
-use super::{bus, FORMAT};
+use super::{bus, Traffic, FORMAT};
 use crate::chip::layout::Dst;
 use crate::cycle::wscg03::memory_controller::{
     Ask, Fields, Images, McIn, McOut, MemoryController, Record,
@@ -51,58 +51,6 @@ pub fn response(img: &Images, (d, r): (Dst, u32)) -> Word {
     w
 }
 
-/// Whole queries' Memory Controller traffic: each clocked-chip query's memory, requests
-/// outstanding at most, and inputs in every clock.
-pub struct McTraffic {
-    pub queries: Vec<(Images, usize, Vec<McIn>)>,
-}
-
-/// The Memory Controller's inputs in two queries of soups (30 against 40 triangles, all
-/// pairs; 120 against 80, the first hit) on WSCG'03's chip clocked register by register,
-/// on an ideal memory of 5 clocks' latency with 4 requests outstanding.
-pub fn memory_controller_traffic() -> McTraffic {
-    use crate::chip::memory::{MemTiming, Memory};
-    use crate::pose::Pose;
-    let p = crate::chip::params::Params {
-        outstanding: 4,
-        memory: Memory::Ideal(MemTiming {
-            latency: 5,
-            interval: 1,
-            bus_bits: None,
-        }),
-        ..crate::chip::params::Params::RTL
-    };
-    let mut queries = vec![];
-    for (na, nb, seed, first, pose) in [
-        (30, 40, 7, false, Pose::new(5.0, 10.0, 0.0, 0.3, 0.2, 0.1)),
-        (
-            120,
-            80,
-            3,
-            true,
-            Pose::new(-35.0, 80.0, 5.0, 0.2, -0.1, 0.05),
-        ),
-    ] {
-        let soup = |n, s| crate::mesh::soup(n, s).triangles_f64();
-        let cfg = crate::chip::config::ChipConfig::default();
-        let chip = crate::query::Chip::new(&soup(na, seed), &soup(nb, seed + 1), cfg)
-            .expect("a soup is a valid object");
-        let img = crate::cycle::wscg03::clocked::images(&chip);
-        let setup = chip.setup(&pose);
-        let ins = crate::cycle::wscg03::clocked::memory_controller_inputs(
-            &chip,
-            &img,
-            &setup,
-            first,
-            &p,
-            1 << 24,
-        )
-        .expect("the query finishes");
-        queries.push((img, p.outstanding as usize, ins));
-    }
-    McTraffic { queries }
-}
-
 /// One clock of the traffic: its query, `clear` (a clock between queries, nothing else
 /// driven), the inputs and the response's word, the model's outputs and its ask list's
 /// room after the last edge.
@@ -118,7 +66,7 @@ pub struct McClock {
 
 /// The traffic's clocks with the clocked model's outputs: each query on a model of its
 /// own, a `clear` clock before each.
-pub fn mc_clocks(tr: &McTraffic) -> Vec<McClock> {
+pub fn mc_clocks(tr: &Traffic) -> Vec<McClock> {
     let mut out = vec![];
     for (q, (img, outstanding, ins)) in tr.queries.iter().enumerate() {
         let mut model = MemoryController::new(img, *outstanding);
@@ -131,7 +79,7 @@ pub fn mc_clocks(tr: &McTraffic) -> Vec<McClock> {
             room: model.room(),
             pending: false,
         });
-        for i in ins {
+        for i in &ins.mc {
             let resp = match model.next_response().filter(|_| i.resp) {
                 Some(tag) => response(img, tag),
                 None => vec![0; RECORD_BITS / 64],
@@ -242,7 +190,7 @@ pub fn mc_outputs_match(uut: &Rtl, o: &McOut, room: usize, resp: &Word) -> bool 
 
 /// Runs the traffic's clocks through the RTL: the clocks it ran as the model, or the first
 /// clock whose outputs differ, with the model's.
-pub fn mc_lockstep(tr: &McTraffic) -> Result<usize, String> {
+pub fn mc_lockstep(tr: &Traffic) -> Result<usize, String> {
     let mut uut = crate::rtl::b32::memory_controller_top();
     let clocks = mc_clocks(tr);
     for (n, c) in clocks.iter().enumerate() {
@@ -360,11 +308,11 @@ fn outputs_hex(c: &McClock) -> String {
 }
 
 /// Vectors of the Memory Controller, a clock per line (latency 0: the outputs in that
-/// clock, before its rising edge): [`memory_controller_traffic`]'s clocks
+/// clock, before its rising edge): [`traffic`](super::traffic)'s clocks
 /// ([`mc_clocks`]) and the clocked model's outputs.
 pub fn memory_controller_vectors() -> String {
     use std::fmt::Write;
-    let tr = memory_controller_traffic();
+    let tr = super::traffic();
     let mut out = String::new();
     let _ = writeln!(out, "// clear halt push push_load push_set push_pair push_id need_a need_b ta_id tb_id base_na base_nb base_ta base_tb port_out mem_req_ready mem_resp_valid mem_resp_data busy room pending mem_req_valid mem_req_addr fill_a fill_b fill_id fill_word t_valid t_set t_side t_entry t_last t_data a_valid a_first a_set a_entry e al_valid al_id al_leaf al_f0 al_f1 ld_valid ld_set ld_pair ld_id ld_leaf0 ld_leaf1 ld_f00 ld_f01 ld_f10 ld_f11");
     let _ = writeln!(out, "// latency: 0");

@@ -3,15 +3,19 @@
 //! other set's d' meet aligned DOPs, bundle by bundle with idle clocks between, and what the
 //! clocked model ([`ClockedDopUnit`]) answers every clock; the RTL's ports as the model's
 //! ([`set_inputs`], [`outputs`]); the Stack Engine's lists driven as its sequencer would
-//! drive them ([`list_traffic`]); the Triangle Unit's input stage ([`tri_unit`]).
+//! drive them ([`list_traffic`]); the Triangle Unit's input stage ([`tri_unit`]); whole
+//! queries' traffic of the Memory Controller and the sequencer ([`traffic`]).
 
 pub mod memory_controller;
+pub mod sequencer;
 pub mod tri_unit;
 
 use crate::chip::config::ChipConfig;
+use crate::cycle::wscg03::clocked::UnitInputs;
 use crate::cycle::wscg03::dop_unit::{
     AlignedBundle, ClockIn, ClockOut, ClockedDopUnit, TumbledBundle,
 };
+use crate::cycle::wscg03::memory_controller::Images;
 use crate::format::{Format, Rounding};
 use crate::golden::host::{HostSetup, TriSide};
 use crate::golden::klmsel::opposite_lane;
@@ -500,4 +504,50 @@ pub fn list_stack_vectors() -> String {
         );
     }
     out
+}
+
+/// Whole queries' traffic of the Memory Controller and the sequencer: each clocked-chip
+/// query's memory, requests outstanding at most, and the units' inputs in every clock.
+pub struct Traffic {
+    pub queries: Vec<(Images, usize, UnitInputs)>,
+}
+
+/// The Memory Controller's and the sequencer's inputs in two queries of soups (30 against 40 triangles, all
+/// pairs; 120 against 80, the first hit) on WSCG'03's chip clocked register by register,
+/// on an ideal memory of 5 clocks' latency with 4 requests outstanding.
+pub fn traffic() -> Traffic {
+    use crate::chip::memory::{MemTiming, Memory};
+    use crate::pose::Pose;
+    let p = crate::chip::params::Params {
+        outstanding: 4,
+        memory: Memory::Ideal(MemTiming {
+            latency: 5,
+            interval: 1,
+            bus_bits: None,
+        }),
+        ..crate::chip::params::Params::RTL
+    };
+    let mut queries = vec![];
+    for (na, nb, seed, first, pose) in [
+        (30, 40, 7, false, Pose::new(5.0, 10.0, 0.0, 0.3, 0.2, 0.1)),
+        (
+            120,
+            80,
+            3,
+            true,
+            Pose::new(-35.0, 80.0, 5.0, 0.2, -0.1, 0.05),
+        ),
+    ] {
+        let soup = |n, s| crate::mesh::soup(n, s).triangles_f64();
+        let cfg = crate::chip::config::ChipConfig::default();
+        let chip = crate::query::Chip::new(&soup(na, seed), &soup(nb, seed + 1), cfg)
+            .expect("a soup is a valid object");
+        let img = crate::cycle::wscg03::clocked::images(&chip);
+        let setup = chip.setup(&pose);
+        let ins =
+            crate::cycle::wscg03::clocked::unit_inputs(&chip, &img, &setup, first, &p, 1 << 24)
+                .expect("the query finishes");
+        queries.push((img, p.outstanding as usize, ins));
+    }
+    Traffic { queries }
 }
