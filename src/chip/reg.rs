@@ -119,10 +119,24 @@ pub fn control_writes(
     p: &Params,
     cfg: &ChipConfig,
 ) -> Vec<(u32, u32)> {
+    let map = super::layout::RecordMap::new(&Layout::new(cfg), &p.memory);
+    let word = map.spread().then(|| map.word());
+    query_writes(map.bases(image), word, order, mode, p, cfg)
+}
+
+/// [`control_writes`] with the regions at the words `base` (by
+/// [`Dst`](super::layout::Dst)) and the record map `map` written if any (WSCG'03's chip
+/// reads the image in order: none).
+pub fn query_writes(
+    base: [u32; 4],
+    map: Option<u32>,
+    order: Order,
+    mode: Mode,
+    p: &Params,
+    cfg: &ChipConfig,
+) -> Vec<(u32, u32)> {
+    use super::layout::Dst;
     let tri_cache = cfg.tri_cache;
-    use super::layout::{Dst, RecordMap};
-    let map = RecordMap::new(&Layout::new(cfg), &p.memory);
-    let base = map.bases(image);
     let mut w = vec![
         (BASE_NA, base[Dst::NodeA as usize]),
         (BASE_TA, base[Dst::TriA as usize]),
@@ -140,8 +154,8 @@ pub fn control_writes(
             (tri_cache - 1).min(rtl::TRI_CACHE_LINES as u32 - 1),
         ));
     }
-    if map.spread() {
-        w.push((MAP, map.word()));
+    if let Some(m) = map {
+        w.push((MAP, m));
     }
     w.push((MODE, mode_word(order, mode, &Layout::new(cfg))));
     w

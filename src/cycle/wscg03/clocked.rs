@@ -26,21 +26,27 @@ use super::stack_engine::{ListOut, ListStack};
 use super::tri_unit::{ClockedTriInput, TriInputIn, TriInputOut};
 use crate::chip::config::MemLayout::Records;
 use crate::chip::layout::{node_ids, node_records, tri_records};
-use crate::cycle::memory::MemModel;
+use crate::chip::layout::Dst;
+use crate::chip::ports::{ChipIn, ChipOut, Clocked};
+use crate::chip::reg;
+use crate::chip::rtl::{LIST_LEVELS, LIST_SRAM_BITS, MC_ASKS};
+use crate::cycle::drive::ChipTrace;
 use crate::cycle::tri_unit::TriUnit;
 use crate::dop::Node;
 use crate::golden::memory::ObjectImage;
 
 /// The query's run: the trace in DATE'05's format, and the lists processed.
 pub struct ClockedRun {
-    pub trace: crate::cycle::drive::ChipTrace,
+    pub trace: ChipTrace,
     pub lists: u64,
 }
 
 /// The chip's units and the sequencer's registers, with the units' outputs after the last
-/// edge (`ls`, `dout`) and what the query did so far.
-struct Chip<'a> {
-    mem: MemModel,
+/// edge (`ls`, `dout`), the host's registers and what the query did so far. Its ports are
+/// DATE'05's ([`Clocked`]: host registers, `start`, the memory port, the result port).
+pub struct Chip<'a> {
+    img: &'a Images,
+    p: crate::chip::params::Params,
     dop: ClockedDopUnit<'a>,
     lists: ListStack,
     tin: ClockedTriInput,
@@ -49,12 +55,21 @@ struct Chip<'a> {
     sq: Sequencer,
     ls: ListOut,
     dout: ClockOut,
+    /// The host's registers: first hit (`MODE`), the regions' first words (`BASE_*`), a
+    /// record map written (`MAP`: WSCG'03's Memory Controller reads records in order).
     first: bool,
+    bases: [u32; 4],
+    map: u32,
     /// A's triangle cache's lines less one.
     mask: u8,
+    /// A query runs (from `start`); it is done.
+    run: bool,
+    done: bool,
     /// First hit: a sure verdict came, nothing more streams or is offered.
     halted: bool,
-    out: crate::cycle::drive::ChipTrace,
+    now: u64,
+    tri_tests: u64,
+    max_level: u64,
     /// The Memory Controller's and the sequencer's inputs, each clock, if asked for.
     log: Option<UnitInputs>,
 }
@@ -104,19 +119,18 @@ pub fn images(chip: &crate::query::Chip) -> Images {
 }
 
 impl<'a> Chip<'a> {
-    fn new(
+    /// A chip after reset on the memory `img` (its host registers zero: write
+    /// [`control_writes`](crate::chip::reg::control_writes) before `start`), `chip`'s
+    /// TRI_UNIT values and B placed by `setup` (the DOP Unit's and TRI_UNIT's setup words
+    /// are the golden [`HostSetup`](crate::golden::host::HostSetup)), the requests
+    /// outstanding and TRI_UNIT of `p`.
+    pub fn new(
         chip: &'a crate::query::Chip,
         img: &'a Images,
         setup: &'a crate::golden::host::HostSetup,
-        first: bool,
         p: &crate::chip::params::Params,
     ) -> Result<Self, String> {
         let cfg = &chip.cfg;
-        let layout = crate::chip::layout::Layout::new(&crate::chip::config::ChipConfig {
-            layout: Records,
-            dop_bits: crate::chip::config::DopBits::Full,
-            ..*cfg
-        });
         let values = crate::golden::tri_unit::TriUnit::new(
             cfg.format.tri,
             cfg.tri_rounding,
@@ -125,44 +139,73 @@ impl<'a> Chip<'a> {
             chip.b.tri_count(),
         );
         Ok(Chip {
-            mem: MemModel::new(p.memory_clocks()?, layout.word_bits()),
+            img,
+            p: *p,
             dop: ClockedDopUnit::new(cfg.format.dop, cfg.dop_rounding.op(), setup),
-            lists: ListStack::new(crate::chip::rtl::LIST_SRAM_BITS),
+            lists: ListStack::new(LIST_SRAM_BITS),
             tin: ClockedTriInput::default(),
             tri: TriUnit::new(&chip.a, &chip.b, values, p)?,
-            mc: MemoryController::new(img, p.outstanding as usize),
-            sq: Sequencer::new(crate::chip::rtl::LIST_LEVELS),
+            mc: MemoryController::new(img, [0; 4], p.outstanding as usize),
+            sq: Sequencer::new(LIST_LEVELS),
             ls: ListOut::default(),
             dout: ClockOut::default(),
-            first,
+            first: false,
+            bases: [0; 4],
+            map: 0,
             mask: (cfg.tri_cache - 1) as u8,
-            out: crate::cycle::drive::ChipTrace {
-                results: vec![],
-                cycles: 0,
-                overflow: false,
-                max_depth: 0,
-                dop_tests: 0,
-                tri_tests: 0,
-                node_fetches: 0,
-                tri_fetches: 0,
-                memory: Default::default(),
-            },
+            run: false,
+            done: false,
             halted: false,
+            now: 0,
+            tri_tests: 0,
+            max_level: 0,
             log: None,
         })
+    }
+
+    /// Lists entered in the query so far.
+    pub fn lists(&self) -> u64 {
+        self.sq.lists
     }
 
     /// Nothing left to do (after a halt: nothing left in flight).
     fn finished(&self) -> bool {
         let idle = !self.tin.busy() && self.tri.open() == 0 && self.mc.outstanding() == 0;
-        let asks = self.mc.room() < crate::chip::rtl::MC_ASKS;
+        let asks = self.mc.room() < MC_ASKS;
         idle && (self.halted || self.ls.done && self.sq.idle() && !asks)
     }
 
-    /// The Triangle Unit in clock `now`: a response from memory (`resp`: a triangle word
+    /// A host write to one of the chip's registers (`chip::reg`; the DOP Unit's and
+    /// TRI_UNIT's setup words are the golden setup, the port's and the cache's are `p`'s
+    /// and the configuration's).
+    fn host_write(&mut self, addr: u32, data: u32) {
+        match addr {
+            reg::MODE => self.first = reg::mode_fields(data).1 == reg::Mode::First,
+            reg::BASE_NA..=reg::BASE_TB => {
+                self.bases[(addr - reg::BASE_NA) as usize] = data & 0xff_ffff;
+            }
+            reg::MAP => self.map = data,
+            _ => {}
+        }
+    }
+
+    /// A start: the query runs from B's root's pointer, every unit and counter empty.
+    fn start(&mut self) {
+        (self.run, self.done, self.halted) = (true, false, false);
+        self.mc = MemoryController::new(self.img, self.bases, self.p.outstanding as usize);
+        self.sq = Sequencer::new(LIST_LEVELS);
+        self.lists = ListStack::new(LIST_SRAM_BITS);
+        self.tin = ClockedTriInput::default();
+        (self.ls, self.dout) = Default::default();
+        (self.tri_tests, self.max_level) = (0, 0);
+    }
+
+    /// The Triangle Unit in this clock: a response from memory (`resp`: a triangle word
     /// for the input stage), the input stage (offered the sequencer's leaf pair), TRI_UNIT,
-    /// the host reading its verdicts (a sure one halts a first-hit query).
-    fn triangles(&mut self, now: u64, resp: bool) -> TriInputOut {
+    /// its verdict given out (`res_ready`: the host reads a kept one; a sure one halts a
+    /// first-hit query).
+    fn triangles(&mut self, resp: bool, res_ready: bool) -> TriInputOut {
+        let now = self.now;
         let ready = self.tri.in_ready(now);
         let to = self.tin.step(&TriInputIn {
             clear: false,
@@ -174,24 +217,23 @@ impl<'a> Chip<'a> {
         });
         if to.pair_valid && ready {
             self.tri.take(now, to.pair_tag & 0xffff, to.pair_tag >> 16);
-            self.out.tri_tests += 1;
+            self.tri_tests += 1;
         }
-        if let Some(r) = self.tri.out(now) {
-            if r.res.hit || r.res.uncertain {
-                self.out.results.push((now, r.a, r.b, r.res.uncertain));
-            }
+        if let Some(r) = self.tri.out(now).copied() {
             self.halted |= self.first && r.sure_hit();
-            self.tri.give(now);
+            if res_ready || !r.kept() {
+                self.tri.give(now);
+            }
         }
         to
     }
 
-    /// One clock, then its edge: the Triangle Unit, the sequencer's ask, the Memory
-    /// Controller (a request, a response, the bundle into the DOP Unit), the sequencer's
-    /// command to the lists.
-    fn step(&mut self, now: u64) {
-        let resp = self.mem.respond(now).is_some();
-        let to = self.triangles(now, resp);
+    /// One working clock, then its edge: the Triangle Unit, the sequencer's ask, the
+    /// Memory Controller (a request, a response, the bundle into the DOP Unit), the
+    /// sequencer's command to the lists.
+    fn work(&mut self, i: &ChipIn) {
+        let resp = i.mem_resp.is_some();
+        let to = self.triangles(resp, i.res_ready);
         let mut si = SeqIn {
             halt: self.halted,
             ls: self.ls,
@@ -201,29 +243,118 @@ impl<'a> Chip<'a> {
             leaf_ready: to.leaf_ready,
             ..SeqIn::default()
         };
-        let mem_ready = self.mem.ready(now);
-        let i = McIn {
+        let mi = McIn {
             halt: self.halted,
             push: self.sq.ask(&si),
             need: to.need,
             ids: to.ids,
-            mem_ready,
+            mem_ready: i.mem_req_ready,
             resp,
             busy: self.dout.busy,
         };
-        let o = self.mc.step(&i);
-        if let Some(addr) = o.req.filter(|_| mem_ready) {
-            self.mem.request(now, addr);
-        }
+        let o = self.mc.step(&mi);
         (si.aligned, si.loaded) = (o.dop_in.a.is_some().then_some(o.aligned), o.loaded);
         if let Some(log) = &mut self.log {
-            log.mc.push(i);
+            log.mc.push(mi);
             log.seq.push(si.clone());
         }
         let cmd = self.sq.step(&si);
         self.ls = self.lists.step(&cmd);
+        self.max_level = self.max_level.max(self.ls.level as u64);
         self.dout = self.dop.step(&o.dop_in);
     }
+}
+
+impl Clocked for Chip<'_> {
+    fn outputs(&self) -> ChipOut {
+        let (need, ids) = self.tin.need(self.halted, self.mask);
+        let req = self.run.then(|| self.mc.request(need, ids)).flatten();
+        let res = self.tri.out(self.now).filter(|o| self.run && o.kept());
+        ChipOut {
+            busy: self.run,
+            done: self.done,
+            overflow: self.ls.overflow,
+            max_depth: self.max_level,
+            dop_tests: self.sq.dop_tests,
+            tri_tests: self.tri_tests,
+            node_fetches: self.mc.node_fetches,
+            tri_fetches: self.mc.tri_fetches,
+            mem_req_valid: req.is_some(),
+            mem_req_addr: req.map_or(0, |r| r.2),
+            res_valid: res.is_some(),
+            res_tag: res.map_or((0, 0), |o| (o.a, o.b)),
+            res_uncertain: res.is_some_and(|o| o.res.uncertain),
+        }
+    }
+
+    fn step(&mut self, i: &ChipIn, _probe: bool) -> Option<Vec<u64>> {
+        if i.host_we {
+            self.host_write(i.host_addr, i.host_data);
+        }
+        if self.run {
+            self.work(i);
+            if self.finished() {
+                (self.run, self.done) = (false, true);
+            }
+        }
+        if i.start && !self.run {
+            self.start();
+        }
+        self.now += 1;
+        None
+    }
+
+    fn fault(&self) -> Option<String> {
+        (self.map != 0).then(|| {
+            "a record map: WSCG'03's Memory Controller reads records in order (base + record)"
+                .to_string()
+        })
+    }
+}
+
+/// The host's writes of `chip`'s query on the memory `img` (all pairs or the first hit:
+/// `first`; the image in order, no record map) on `p`'s memory.
+pub fn writes(
+    chip: &crate::query::Chip,
+    img: &Images,
+    first: bool,
+    p: &crate::chip::params::Params,
+) -> Vec<(u32, u32)> {
+    let mode = if first { reg::Mode::First } else { reg::Mode::All };
+    let cfg = records_cfg(&chip.cfg);
+    reg::query_writes(img.bases, None, reg::Order::Fifo, mode, p, &cfg)
+}
+
+/// `cfg` with the memory laid out as WSCG'03's chip reads it: a node pair a record.
+fn records_cfg(cfg: &crate::chip::config::ChipConfig) -> crate::chip::config::ChipConfig {
+    crate::chip::config::ChipConfig {
+        layout: Records,
+        dop_bits: crate::chip::config::DopBits::Full,
+        ..*cfg
+    }
+}
+
+/// Drives one query on `c` (the chip on `img` of `chip`): its writes, `start`, then
+/// clocks until `done`, the memory of `p` serving it, the host reading every result at
+/// once, at most `max_cycles` clocks.
+fn drive(
+    c: &mut Chip,
+    chip: &crate::query::Chip,
+    img: &Images,
+    first: bool,
+    p: &crate::chip::params::Params,
+    max_cycles: u64,
+) -> Result<ChipTrace, String> {
+    let layout = crate::chip::layout::Layout::new(&records_cfg(&chip.cfg));
+    let d = crate::cycle::drive::Drive {
+        memory: p.memory_clocks()?,
+        word_bits: layout.word_bits(),
+        reader: Default::default(),
+        words: img.bases[Dst::TriB as usize] + chip.b.tri_count() as u32,
+        max_cycles,
+    };
+    let w = writes(chip, img, first, p);
+    crate::cycle::drive::run_query(c, &w, &d, false, |_, _| Ok(()), false).map_err(|e| e.0)
 }
 
 /// One query on WSCG'03's chip clocked register by register: `chip`'s trees, B placed by
@@ -237,11 +368,11 @@ pub fn run(
     max_cycles: u64,
 ) -> Result<ClockedRun, String> {
     let img = images(chip);
-    let mut c = Chip::new(chip, &img, setup, first, p)?;
-    c.run(max_cycles)?;
+    let mut c = Chip::new(chip, &img, setup, p)?;
+    let trace = drive(&mut c, chip, &img, first, p, max_cycles)?;
     Ok(ClockedRun {
-        trace: c.out,
-        lists: c.sq.lists,
+        trace,
+        lists: c.lists(),
     })
 }
 
@@ -255,25 +386,8 @@ pub fn unit_inputs(
     p: &crate::chip::params::Params,
     max_cycles: u64,
 ) -> Result<UnitInputs, String> {
-    let mut c = Chip::new(chip, img, setup, first, p)?;
+    let mut c = Chip::new(chip, img, setup, p)?;
     c.log = Some(UnitInputs::default());
-    c.run(max_cycles)?;
+    drive(&mut c, chip, img, first, p, max_cycles)?;
     Ok(c.log.unwrap_or_default())
-}
-
-impl Chip<'_> {
-    /// Clocks until the query is finished, at most `max_cycles`.
-    fn run(&mut self, max_cycles: u64) -> Result<(), String> {
-        for now in 0..max_cycles {
-            if self.finished() {
-                let o = &mut self.out;
-                (o.cycles, o.node_fetches) = (now, self.mc.node_fetches);
-                o.dop_tests = self.sq.dop_tests;
-                (o.tri_fetches, o.memory) = (self.mc.tri_fetches, self.mem.counters);
-                return Ok(());
-            }
-            self.step(now);
-        }
-        Err(crate::cycle::drive::not_finished(max_cycles))
-    }
 }

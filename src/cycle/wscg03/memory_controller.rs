@@ -40,12 +40,6 @@ pub struct Images {
     pub k: usize,
 }
 
-impl Images {
-    fn addr(&self, d: Dst, record: u32) -> u32 {
-        self.bases[d as usize] + record
-    }
-}
-
 /// What the Memory Controller is asked for, in order.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Ask {
@@ -108,6 +102,8 @@ pub struct MemoryController<'a> {
     /// The last aligned record asked for (a sibling shares it).
     last_aligned: Option<u32>,
     max_outstanding: usize,
+    /// The regions' first words (the host's `BASE_*` registers), by [`Dst`].
+    bases: [u32; 4],
     pub node_fetches: u64,
     pub tri_fetches: u64,
 }
@@ -122,8 +118,9 @@ fn bundle(d: &[f64], entry: usize) -> [f64; 8] {
 }
 
 impl<'a> MemoryController<'a> {
-    /// On the memory `img`, with at most `max_outstanding` requests outstanding.
-    pub fn new(img: &'a Images, max_outstanding: usize) -> Self {
+    /// On the memory `img`, its regions from the words `bases` (by [`Dst`]), with at most
+    /// `max_outstanding` requests outstanding.
+    pub fn new(img: &'a Images, bases: [u32; 4], max_outstanding: usize) -> Self {
         MemoryController {
             img,
             asks: VecDeque::new(),
@@ -134,6 +131,7 @@ impl<'a> MemoryController<'a> {
             beat: 0,
             last_aligned: None,
             max_outstanding,
+            bases,
             node_fetches: 0,
             tri_fetches: 0,
         }
@@ -190,10 +188,10 @@ impl<'a> MemoryController<'a> {
         let addr = match ask {
             Ask::Load { id, .. } => {
                 self.last_aligned = None;
-                Some(self.img.addr(Dst::NodeB, id >> 1))
+                Some(self.addr(Dst::NodeB, id >> 1))
             }
             Ask::Aligned { id, .. } => {
-                let r = self.img.addr(Dst::NodeA, id >> 1);
+                let r = self.addr(Dst::NodeA, id >> 1);
                 let new = self.last_aligned != Some(r);
                 self.last_aligned = Some(r);
                 new.then_some(r)
@@ -206,18 +204,23 @@ impl<'a> MemoryController<'a> {
         });
     }
 
+    /// The word address of region `d`'s record (or triangle word) `record`.
+    fn addr(&self, d: Dst, record: u32) -> u32 {
+        self.bases[d as usize] + record
+    }
+
     /// The request this clock: a triangle word the input stage lacks (`need`, records
     /// `ids`; not while one of its side is outstanding, which may arrive now), else the
-    /// first node record not requested, if it has room. With its destination and record
-    /// number.
-    fn request(&self, need: [bool; 2], ids: [u16; 2]) -> Option<(Dst, u32, u32)> {
+    /// first node record not requested, if it has room. With its destination, record
+    /// number and word address: a function of the registers, `need` and `ids`.
+    pub fn request(&self, need: [bool; 2], ids: [u16; 2]) -> Option<(Dst, u32, u32)> {
         if self.tags.len() >= self.max_outstanding {
             return None;
         }
         for (d, dst) in [(0, Dst::TriA), (1, Dst::TriB)] {
             if need[d] && !self.tags.iter().any(|t| t.0 == dst) {
                 let id = ids[d] as u32;
-                return Some((dst, id, self.img.addr(dst, id)));
+                return Some((dst, id, self.addr(dst, id)));
             }
         }
         let e = self.asks.iter().find(|e| !e.requested)?;
@@ -350,7 +353,7 @@ mod tests {
     #[test]
     fn siblings_share_a_record_and_triangle_words_go_first() {
         let img = image();
-        let mut mc = MemoryController::new(&img, 4);
+        let mut mc = MemoryController::new(&img, img.bases, 4);
         let aligned = |id| Some(Ask::Aligned { set: 0, id });
         let ready = McIn {
             mem_ready: true,

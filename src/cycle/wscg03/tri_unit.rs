@@ -154,27 +154,45 @@ impl Default for ClockedTriInput {
     }
 }
 
+/// A's cache line of word `id` under `mask`.
+fn line(id: u16, mask: u8) -> usize {
+    (id & mask as u16 & 0x7f) as usize
+}
+
 impl ClockedTriInput {
     /// A leaf pair or a pair held (`busy`).
     pub fn busy(&self) -> bool {
         self.leaf_v || self.pair_v
     }
 
+    /// The leaf pair's triangle words held: A's (in its cache, under `mask`) and B's.
+    fn held(&self, mask: u8) -> [bool; 2] {
+        let [ta, tb] = self.leaf.ids;
+        // the valid bit of ta's line now, the id read from its line at the last edge
+        let hit_a = self.lines[line(ta, mask)].0 && self.lines[line(ta, self.mask_q)].1 == ta;
+        [hit_a, self.b.iter().any(|&(ok, id)| ok && id == tb)]
+    }
+
+    /// The words the leaf pair lacks and their ids (the outputs `need`, `ids`): a function
+    /// of the registers, `halt` and `mask`.
+    pub fn need(&self, halt: bool, mask: u8) -> ([bool; 2], [u16; 2]) {
+        let live = self.leaf_v && !halt;
+        let held = self.held(mask);
+        ([live && !held[0], live && !held[1]], self.leaf.ids)
+    }
+
     /// One clock: the outputs under `i`, then the rising edge.
     pub fn step(&mut self, i: &TriInputIn) -> TriInputOut {
-        let line = |id: u16, mask: u8| (id & mask as u16 & 0x7f) as usize;
         let [ta, tb] = self.leaf.ids;
         let live = self.leaf_v && !i.halt;
-        // the valid bit of ta's line now, the id read from its line at the last edge
-        let hit_a = self.lines[line(ta, i.mask)].0 && self.lines[line(ta, self.mask_q)].1 == ta;
-        let hit_b = self.b.map(|(ok, id)| ok && id == tb);
-        let held = hit_a && (hit_b[0] || hit_b[1]);
+        let held = self.held(i.mask) == [true, true];
         let go = live && held && (!self.pair_v || i.tri_ready);
         let leaf_ready = !i.halt && (!self.leaf_v || go);
+        let (need, ids) = self.need(i.halt, i.mask);
         let out = TriInputOut {
             leaf_ready,
-            need: [live && !hit_a, live && !hit_b[0] && !hit_b[1]],
-            ids: self.leaf.ids,
+            need,
+            ids,
             pair_valid: self.pair_v && !i.halt,
             pair_tag: self.pair_tag,
             words: self.pair_words,

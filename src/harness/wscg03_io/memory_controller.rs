@@ -69,7 +69,7 @@ pub struct McClock {
 pub fn mc_clocks(tr: &Traffic) -> Vec<McClock> {
     let mut out = vec![];
     for (q, (img, outstanding, ins)) in tr.queries.iter().enumerate() {
-        let mut model = MemoryController::new(img, *outstanding);
+        let mut model = MemoryController::new(img, img.bases, *outstanding);
         out.push(McClock {
             query: q,
             clear: true,
