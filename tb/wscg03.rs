@@ -536,6 +536,11 @@ fn clocked_chip_answers_as_the_golden_list_traversal() {
                     "{n}/{m}"
                 );
             }
+            assert_eq!(
+                run.booked.total(),
+                tr.cycles,
+                "{n}/{m}: every clock booked once"
+            );
             println!("{n}/{m} {mode:?}: {} clocks, {} results, {} lists, {} node records, {} triangle words", tr.cycles, tr.results.len(), run.lists, tr.node_fetches, tr.tri_fetches);
             queries += 1;
         }
@@ -573,6 +578,13 @@ fn clocked_chip_answers_as_the_golden_list_traversal() {
                 run.trace.node_fetches,
                 ev.trace.cycles,
                 ev.trace.node_fetches
+            );
+            let (b, s) = (run.booked, ev.stats);
+            assert_eq!(b.total(), run.trace.cycles);
+            println!(
+                "  clocks to compare / load / memory / transform / list / drain: {} / {} / {} / {} / {} / {}; event model's compare / memory / transform / list / drain: {} / {} / {} / {} / {}",
+                b.compare, b.load, b.memory, b.transform, b.list, b.drain,
+                s.compare, s.stall_memory, s.stall_transform, s.stall_list, s.drain
             );
             queries += 1;
         }

@@ -20,13 +20,13 @@
 //! `next_list`.
 
 use super::dop_unit::{ClockOut, ClockedDopUnit};
-use super::memory_controller::{Fields, Images, McIn, MemoryController, NodeWord, Record};
+use super::memory_controller::{Fields, Images, McIn, McOut, MemoryController, NodeWord, Record};
 use super::sequencer::{SeqIn, Sequencer};
 use super::stack_engine::{ListOut, ListStack};
 use super::tri_unit::{ClockedTriInput, TriInputIn, TriInputOut};
 use crate::chip::config::MemLayout::Records;
-use crate::chip::layout::{node_ids, node_records, tri_records};
 use crate::chip::layout::Dst;
+use crate::chip::layout::{node_ids, node_records, tri_records};
 use crate::chip::ports::{ChipIn, ChipOut, Clocked};
 use crate::chip::reg;
 use crate::chip::rtl::{LIST_LEVELS, LIST_SRAM_BITS, MC_ASKS};
@@ -35,10 +35,37 @@ use crate::cycle::tri_unit::TriUnit;
 use crate::dop::Node;
 use crate::golden::memory::ObjectImage;
 
-/// The query's run: the trace in DATE'05's format, and the lists processed.
+/// The query's run: the trace in DATE'05's format, the lists processed and where its
+/// clocks went.
 pub struct ClockedRun {
     pub trace: ChipTrace,
     pub lists: u64,
+    pub booked: Booked,
+}
+
+/// Where a query's clocks went: each clock from `start` to `done` booked to what the DOP
+/// Unit's input did, or what its head ask waited for.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Booked {
+    /// An aligned bundle streams into the compare units.
+    pub compare: u64,
+    /// A tumbled bundle streams into the DOTADD units (a group loaded).
+    pub load: u64,
+    /// The head ask waits for its record from memory.
+    pub memory: u64,
+    /// The head ask waits for its d' set (busy: the DOTADD units transform a group into it).
+    pub transform: u64,
+    /// No ask: the sequencer enters or ends a list, waits for flags or actions, or the
+    /// lists step up.
+    pub list: u64,
+    /// The lists done or the query halted: the Triangle Unit finishes.
+    pub drain: u64,
+}
+
+impl Booked {
+    pub fn total(&self) -> u64 {
+        self.compare + self.load + self.memory + self.transform + self.list + self.drain
+    }
 }
 
 /// The chip's units and the sequencer's registers, with the units' outputs after the last
@@ -70,6 +97,7 @@ pub struct Chip<'a> {
     now: u64,
     tri_tests: u64,
     max_level: u64,
+    booked: Booked,
     /// The Memory Controller's and the sequencer's inputs, each clock, if asked for.
     log: Option<UnitInputs>,
 }
@@ -159,6 +187,7 @@ impl<'a> Chip<'a> {
             now: 0,
             tri_tests: 0,
             max_level: 0,
+            booked: Booked::default(),
             log: None,
         })
     }
@@ -197,7 +226,7 @@ impl<'a> Chip<'a> {
         self.lists = ListStack::new(LIST_SRAM_BITS);
         self.tin = ClockedTriInput::default();
         (self.ls, self.dout) = Default::default();
-        (self.tri_tests, self.max_level) = (0, 0);
+        (self.tri_tests, self.max_level, self.booked) = (0, 0, Booked::default());
     }
 
     /// The Triangle Unit in this clock: a response from memory (`resp`: a triangle word
@@ -252,7 +281,9 @@ impl<'a> Chip<'a> {
             resp,
             busy: self.dout.busy,
         };
+        let head = self.mc.head();
         let o = self.mc.step(&mi);
+        self.book(head, &o);
         (si.aligned, si.loaded) = (o.dop_in.a.is_some().then_some(o.aligned), o.loaded);
         if let Some(log) = &mut self.log {
             log.mc.push(mi);
@@ -262,6 +293,23 @@ impl<'a> Chip<'a> {
         self.ls = self.lists.step(&cmd);
         self.max_level = self.max_level.max(self.ls.level as u64);
         self.dout = self.dop.step(&o.dop_in);
+    }
+}
+
+impl Chip<'_> {
+    /// Books this clock from the Memory Controller's outputs `o` and its head ask before
+    /// the edge (`head`: its set, its record there; a head that has its record and streams
+    /// nothing waits for its set, or the query halted).
+    fn book(&mut self, head: Option<(usize, bool)>, o: &McOut) {
+        let b = &mut self.booked;
+        match head {
+            _ if o.dop_in.a.is_some() => b.compare += 1,
+            _ if o.dop_in.t.is_some() => b.load += 1,
+            _ if self.halted || head.is_none() && self.ls.done => b.drain += 1,
+            Some((_, false)) => b.memory += 1,
+            Some((_, true)) => b.transform += 1,
+            None => b.list += 1,
+        }
     }
 }
 
@@ -320,7 +368,11 @@ pub fn writes(
     first: bool,
     p: &crate::chip::params::Params,
 ) -> Vec<(u32, u32)> {
-    let mode = if first { reg::Mode::First } else { reg::Mode::All };
+    let mode = if first {
+        reg::Mode::First
+    } else {
+        reg::Mode::All
+    };
     let cfg = records_cfg(&chip.cfg);
     reg::query_writes(img.bases, None, reg::Order::Fifo, mode, p, &cfg)
 }
@@ -373,6 +425,7 @@ pub fn run(
     Ok(ClockedRun {
         trace,
         lists: c.lists(),
+        booked: c.booked,
     })
 }
 

@@ -209,6 +209,15 @@ impl<'a> MemoryController<'a> {
         self.bases[d as usize] + record
     }
 
+    /// The head ask's d' set and whether its record is there to stream (`None`: no ask).
+    pub fn head(&self) -> Option<(usize, bool)> {
+        let e = self.asks.front()?;
+        let set = match e.ask {
+            Ask::Load { set, .. } | Ask::Aligned { set, .. } => set,
+        };
+        Some((set, self.record().is_some()))
+    }
+
     /// The request this clock: a triangle word the input stage lacks (`need`, records
     /// `ids`; not while one of its side is outstanding, which may arrive now), else the
     /// first node record not requested, if it has room. With its destination, record
