@@ -1,6 +1,6 @@
 
 
-module top(clock,clear,halt,push,push_load,push_set,push_pair,push_id,need_a,need_b,ta_id,tb_id,base_na,base_nb,base_ta,base_tb,port_out,mem_req_ready,mem_resp_valid,mem_resp_data,busy,room,pending,mem_req_valid,mem_req_addr,fill_a,fill_b,fill_id,fill_word,t_valid,t_set,t_side,t_entry,t_last,t_data,a_valid,a_first,a_set,a_entry,e,al_valid,al_id,al_leaf,al_f0,al_f1,ld_valid,ld_set,ld_pair,ld_id,ld_leaf0,ld_leaf1,ld_f00,ld_f01,ld_f10,ld_f11);
+module top(clock,clear,halt,push,push_load,push_set,push_pair,push_id,need_a,need_b,ta_id,tb_id,base_na,base_nb,base_ta,base_tb,port_out,mem_req_ready,mem_resp_valid,mem_resp_data,busy,room,pending,mem_req_valid,mem_req_addr,req_tri,fill_a,fill_b,fill_id,fill_word,t_valid,t_set,t_side,t_entry,t_last,t_data,a_valid,a_first,a_set,a_entry,e,al_valid,al_id,al_leaf,al_f0,al_f1,ld_valid,ld_set,ld_pair,ld_id,ld_leaf0,ld_leaf1,ld_f00,ld_f01,ld_f10,ld_f11);
     
     // Module arguments
     input wire  clock;
@@ -28,6 +28,7 @@ module top(clock,clear,halt,push,push_load,push_set,push_pair,push_id,need_a,nee
     output reg  pending;
     output reg  mem_req_valid;
     output reg  [23:0] mem_req_addr;
+    output reg  req_tri;
     output reg  fill_a;
     output reg  fill_b;
     output reg  [15:0] fill_id;
@@ -718,6 +719,7 @@ module top(clock,clear,halt,push,push_load,push_set,push_pair,push_id,need_a,nee
         c_req_tb = c_tag_ok & need_b & ~tb_out$q & ~c_req_ta;
         c_req_node = c_tag_ok & ~c_req_ta & ~c_req_tb & c_rq_found & (((held_n$q) & 3'h7) + ((node_inf$q) & 3'h7) < 32'h2);
         mem_req_valid = c_req_ta | c_req_tb | c_req_node;
+        req_tri = c_req_ta | c_req_tb;
         c_accept = mem_req_valid & mem_req_ready;
         if (c_req_ta) begin
             mem_req_addr = base_ta + ((ta_id) & 24'hffffff);

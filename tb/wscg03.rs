@@ -677,3 +677,21 @@ fn sequencer_rtl_lockstep() {
     let clocks = seq_lockstep(&tr).unwrap();
     println!("Sequencer RTL: {clocks} clocks as the model; coverage {coverage:?}");
 }
+
+/// WSCG'03's chip core in RTL (`rtl::wscg03::chip::ChipCore`: the Stack Engine, the Memory
+/// Controller, the DOP Unit and the Triangle Unit's input stage joined, with the host
+/// registers, `start` and the counters) equals the clocked chip on every port every clock
+/// of the Memory Controller's two whole queries, from the DOP Unit's setup words on, with
+/// TRI_UNIT's side (`in_ready`, a sure verdict, no pair open) as the model's.
+#[test]
+fn chip_core_rtl_lockstep() {
+    use collision_chip::harness::wscg03_io::chip::core_lockstep;
+    let clocks = std::thread::Builder::new()
+        .stack_size(512 << 20)
+        .spawn(|| core_lockstep(&collision_chip::harness::wscg03_io::traffic()))
+        .unwrap()
+        .join()
+        .unwrap()
+        .unwrap();
+    println!("ChipCore RTL: {clocks} clocks as the clocked chip");
+}

@@ -92,7 +92,8 @@ pub struct Chip<'a> {
     /// A query runs (from `start`); it is done.
     run: bool,
     done: bool,
-    /// First hit: a sure verdict came, nothing more streams or is offered.
+    /// First hit: a sure verdict came, nothing more streams or is offered (from the clock
+    /// it is at TRI_UNIT's output: [`halt`](Self::halt)).
     halted: bool,
     now: u64,
     tri_tests: u64,
@@ -102,12 +103,27 @@ pub struct Chip<'a> {
     log: Option<UnitInputs>,
 }
 
-/// The inputs of the Memory Controller and of the sequencer in every clock of a query:
-/// traffic for their RTL.
+/// The inputs of the Memory Controller and of the sequencer in every working clock of a
+/// query, and every clock of the chip as its RTL core sees it: traffic for their RTL.
 #[derive(Default)]
 pub struct UnitInputs {
     pub mc: Vec<McIn>,
     pub seq: Vec<SeqIn>,
+    pub core: Vec<CoreClock>,
+}
+
+/// One clock of the chip as its RTL core (`rtl::wscg03::chip::ChipCore`) sees it, TRI_UNIT
+/// and the result port outside it: the chip's inputs; TRI_UNIT's `in_ready`, a sure
+/// verdict at its output, no pair in it; the chip's outputs; the pair register (its tag and
+/// its words' ids, if valid).
+#[derive(Clone, Copy, Debug, Default)]
+pub struct CoreClock {
+    pub i: ChipIn,
+    pub tri_ready: bool,
+    pub tri_sure: bool,
+    pub tri_idle: bool,
+    pub o: ChipOut,
+    pub pair: Option<(u32, [u16; 2])>,
 }
 
 /// An object's node records in the `records` layout of one level (a node pair a record),
@@ -235,6 +251,7 @@ impl<'a> Chip<'a> {
     /// first-hit query).
     fn triangles(&mut self, resp: bool, res_ready: bool) -> TriInputOut {
         let now = self.now;
+        self.halted = self.halt();
         let ready = self.tri.in_ready(now);
         let to = self.tin.step(&TriInputIn {
             clear: false,
@@ -248,19 +265,22 @@ impl<'a> Chip<'a> {
             self.tri.take(now, to.pair_tag & 0xffff, to.pair_tag >> 16);
             self.tri_tests += 1;
         }
-        if let Some(r) = self.tri.out(now).copied() {
-            self.halted |= self.first && r.sure_hit();
-            if res_ready || !r.kept() {
-                self.tri.give(now);
-            }
+        if self.tri.out(now).is_some_and(|r| res_ready || !r.kept()) {
+            self.tri.give(now);
         }
         to
+    }
+
+    /// First hit, this clock: halted, or a sure verdict at TRI_UNIT's output.
+    fn halt(&self) -> bool {
+        let sure = self.tri.out(self.now).is_some_and(|r| r.sure_hit());
+        self.halted || self.first && sure
     }
 
     /// One working clock, then its edge: the Triangle Unit, the sequencer's ask, the
     /// Memory Controller (a request, a response, the bundle into the DOP Unit), the
     /// sequencer's command to the lists.
-    fn work(&mut self, i: &ChipIn) {
+    fn work(&mut self, i: &ChipIn) -> TriInputOut {
         let resp = i.mem_resp.is_some();
         let to = self.triangles(resp, i.res_ready);
         let mut si = SeqIn {
@@ -293,6 +313,7 @@ impl<'a> Chip<'a> {
         self.ls = self.lists.step(&cmd);
         self.max_level = self.max_level.max(self.ls.level as u64);
         self.dout = self.dop.step(&o.dop_in);
+        to
     }
 }
 
@@ -315,7 +336,7 @@ impl Chip<'_> {
 
 impl Clocked for Chip<'_> {
     fn outputs(&self) -> ChipOut {
-        let (need, ids) = self.tin.need(self.halted, self.mask);
+        let (need, ids) = self.tin.need(self.halt(), self.mask);
         let req = self.run.then(|| self.mc.request(need, ids)).flatten();
         let res = self.tri.out(self.now).filter(|o| self.run && o.kept());
         ChipOut {
@@ -336,14 +357,29 @@ impl Clocked for Chip<'_> {
     }
 
     fn step(&mut self, i: &ChipIn, _probe: bool) -> Option<Vec<u64>> {
+        let mut core = self.log.is_some().then(|| CoreClock {
+            i: *i,
+            tri_ready: self.tri.in_ready(self.now),
+            tri_sure: self.tri.out(self.now).is_some_and(|r| r.sure_hit()),
+            tri_idle: self.tri.open() == 0,
+            o: self.outputs(),
+            pair: None,
+        });
         if i.host_we {
             self.host_write(i.host_addr, i.host_data);
         }
         if self.run {
-            self.work(i);
+            let to = self.work(i);
+            if let Some(c) = &mut core {
+                let ids = to.words.map(|w| w.unwrap_or(0));
+                c.pair = to.pair_valid.then_some((to.pair_tag, ids));
+            }
             if self.finished() {
                 (self.run, self.done) = (false, true);
             }
+        }
+        if let (Some(log), Some(c)) = (&mut self.log, core) {
+            log.core.push(c);
         }
         if i.start && !self.run {
             self.start();
@@ -386,14 +422,15 @@ fn records_cfg(cfg: &crate::chip::config::ChipConfig) -> crate::chip::config::Ch
     }
 }
 
-/// Drives one query on `c` (the chip on `img` of `chip`): its writes, `start`, then
-/// clocks until `done`, the memory of `p` serving it, the host reading every result at
-/// once, at most `max_cycles` clocks.
+/// Drives one query on `c` (the chip on `img` of `chip`): the units' setup words `setup`
+/// (which the model takes from the golden setup, the RTL from its host port), its writes,
+/// `start`, then clocks until `done`, the memory of `p` serving it, the host reading every
+/// result at once, at most `max_cycles` clocks.
 fn drive(
     c: &mut Chip,
     chip: &crate::query::Chip,
     img: &Images,
-    first: bool,
+    (setup, first): (&[(u32, u32)], bool),
     p: &crate::chip::params::Params,
     max_cycles: u64,
 ) -> Result<ChipTrace, String> {
@@ -405,7 +442,7 @@ fn drive(
         words: img.bases[Dst::TriB as usize] + chip.b.tri_count() as u32,
         max_cycles,
     };
-    let w = writes(chip, img, first, p);
+    let w = [setup, &writes(chip, img, first, p)].concat();
     crate::cycle::drive::run_query(c, &w, &d, false, |_, _| Ok(()), false).map_err(|e| e.0)
 }
 
@@ -421,7 +458,7 @@ pub fn run(
 ) -> Result<ClockedRun, String> {
     let img = images(chip);
     let mut c = Chip::new(chip, &img, setup, p)?;
-    let trace = drive(&mut c, chip, &img, first, p, max_cycles)?;
+    let trace = drive(&mut c, chip, &img, (&[], first), p, max_cycles)?;
     Ok(ClockedRun {
         trace,
         lists: c.lists(),
@@ -429,18 +466,27 @@ pub fn run(
     })
 }
 
-/// The Memory Controller's and the sequencer's inputs in every clock of [`run`]'s query on
-/// the memory `img` ([`images`] of `chip`).
+/// The units' inputs in every clock of [`run`]'s query on the memory `img` ([`images`] of
+/// `chip`), the setup words `words` written first.
 pub fn unit_inputs(
     chip: &crate::query::Chip,
     img: &Images,
-    setup: &crate::golden::host::HostSetup,
+    (setup, words): (&crate::golden::host::HostSetup, &[(u32, u32)]),
     first: bool,
     p: &crate::chip::params::Params,
     max_cycles: u64,
 ) -> Result<UnitInputs, String> {
     let mut c = Chip::new(chip, img, setup, p)?;
     c.log = Some(UnitInputs::default());
-    drive(&mut c, chip, img, first, p, max_cycles)?;
-    Ok(c.log.unwrap_or_default())
+    drive(&mut c, chip, img, (words, first), p, max_cycles)?;
+    // the clock `done` shows in, which the driver reads and does not clock
+    let last = CoreClock {
+        tri_ready: c.tri.in_ready(c.now),
+        tri_idle: c.tri.open() == 0,
+        o: c.outputs(),
+        ..CoreClock::default()
+    };
+    let mut log = c.log.take().unwrap_or_default();
+    log.core.push(last);
+    Ok(log)
 }

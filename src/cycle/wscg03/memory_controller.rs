@@ -74,12 +74,13 @@ pub struct McIn {
     pub busy: [bool; 2],
 }
 
-/// One clock's outputs: the request (its word address), a triangle word for the input
+/// One clock's outputs: the request (its word address; a triangle word's?), a triangle word for the input
 /// stage (B's?, its record), the head ask's bundle for the DOP Unit with an aligned node's
 /// fields on its last bundle and a load's set and members' fields on its first.
 #[derive(Clone, Debug, Default)]
 pub struct McOut {
     pub req: Option<u32>,
+    pub req_tri: bool,
     pub fill: Option<(bool, u16)>,
     pub dop_in: ClockIn,
     pub aligned: Option<Fields>,
@@ -167,6 +168,7 @@ impl<'a> MemoryController<'a> {
             .flatten()
             .unwrap_or_default();
         (out.req, out.fill) = (req.map(|r| r.2), fill);
+        out.req_tri = req.is_some_and(|r| r.0.is_tri());
         // the edge
         if out.dop_in.t.is_some() || out.dop_in.a.is_some() {
             self.streamed();

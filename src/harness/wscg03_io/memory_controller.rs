@@ -159,6 +159,7 @@ pub fn mc_outputs_match(uut: &Rtl, o: &McOut, room: usize, resp: &Word) -> bool 
     uut.room.val().index() == room
         && uut.mem_req_valid.val() == o.req.is_some()
         && uut.mem_req_addr.val().index() == o.req.unwrap_or(0) as usize
+        && uut.req_tri.val() == o.req_tri
         && (
             uut.fill_a.val(),
             uut.fill_b.val(),
@@ -276,11 +277,12 @@ fn outputs_hex(c: &McClock) -> String {
     let m = o.loaded.as_ref().map_or(&[][..], |l| &l.1[..]);
     let (m0, m1) = (fields(m.first().copied()), fields(m.get(1).copied()));
     format!(
-        "{:x} {} {} {:06x} {fa} {fb} {fid:04x} {fw} {} {} {} {} {} {} {} {} {} {} {} {} {} {} {} {} {:04x} {} {} {:08x} {:08x} {:08x} {:08x}",
+        "{:x} {} {} {:06x} {} {fa} {fb} {fid:04x} {fw} {} {} {} {} {} {} {} {} {} {} {} {} {} {} {} {} {:04x} {} {} {:08x} {:08x} {:08x} {:08x}",
         c.room,
         c.pending as u8,
         o.req.is_some() as u8,
         o.req.unwrap_or(0),
+        o.req_tri as u8,
         t.is_some() as u8,
         t.map_or(0, |t| t.set),
         t.map_or(0, |t| t.side),
@@ -314,7 +316,7 @@ pub fn memory_controller_vectors() -> String {
     use std::fmt::Write;
     let tr = super::traffic();
     let mut out = String::new();
-    let _ = writeln!(out, "// clear halt push push_load push_set push_pair push_id need_a need_b ta_id tb_id base_na base_nb base_ta base_tb port_out mem_req_ready mem_resp_valid mem_resp_data busy room pending mem_req_valid mem_req_addr fill_a fill_b fill_id fill_word t_valid t_set t_side t_entry t_last t_data a_valid a_first a_set a_entry e al_valid al_id al_leaf al_f0 al_f1 ld_valid ld_set ld_pair ld_id ld_leaf0 ld_leaf1 ld_f00 ld_f01 ld_f10 ld_f11");
+    let _ = writeln!(out, "// clear halt push push_load push_set push_pair push_id need_a need_b ta_id tb_id base_na base_nb base_ta base_tb port_out mem_req_ready mem_resp_valid mem_resp_data busy room pending mem_req_valid mem_req_addr req_tri fill_a fill_b fill_id fill_word t_valid t_set t_side t_entry t_last t_data a_valid a_first a_set a_entry e al_valid al_id al_leaf al_f0 al_f1 ld_valid ld_set ld_pair ld_id ld_leaf0 ld_leaf1 ld_f00 ld_f01 ld_f10 ld_f11");
     let _ = writeln!(out, "// latency: 0");
     let _ = writeln!(out, "// memory_controller_b32: WSCG'03's Memory Controller, one line per clock: inputs, then the outputs in that clock (before its rising edge); the inputs the clocked chip gave it in two whole queries; golden: cycle::wscg03::memory_controller::MemoryController");
     for c in mc_clocks(&tr) {

@@ -6,6 +6,7 @@
 //! drive them ([`list_traffic`]); the Triangle Unit's input stage ([`tri_unit`]); whole
 //! queries' traffic of the Memory Controller and the sequencer ([`traffic`]).
 
+pub mod chip;
 pub mod memory_controller;
 pub mod sequencer;
 pub mod tri_unit;
@@ -512,7 +513,7 @@ pub struct Traffic {
     pub queries: Vec<(Images, usize, UnitInputs)>,
 }
 
-/// The Memory Controller's and the sequencer's inputs in two queries of soups (30 against 40 triangles, all
+/// The units' inputs (the DOP Unit's setup words written first) in two queries of soups (30 against 40 triangles, all
 /// pairs; 120 against 80, the first hit) on WSCG'03's chip clocked register by register,
 /// on an ideal memory of 5 clocks' latency with 4 requests outstanding.
 pub fn traffic() -> Traffic {
@@ -544,9 +545,21 @@ pub fn traffic() -> Traffic {
             .expect("a soup is a valid object");
         let img = crate::cycle::wscg03::clocked::images(&chip);
         let setup = chip.setup(&pose);
-        let ins =
-            crate::cycle::wscg03::clocked::unit_inputs(&chip, &img, &setup, first, &p, 1 << 24)
-                .expect("the query finishes");
+        let rounding = cfg.dop_rounding.op();
+        let words: Vec<(u32, u32)> =
+            crate::harness::chip_io::dop_unit_setup_words(FORMAT, rounding, &setup)
+                .into_iter()
+                .map(|(a, d)| (a as u32, d as u32))
+                .collect();
+        let ins = crate::cycle::wscg03::clocked::unit_inputs(
+            &chip,
+            &img,
+            (&setup, &words),
+            first,
+            &p,
+            1 << 24,
+        )
+        .expect("the query finishes");
         queries.push((img, p.outstanding as usize, ins));
     }
     Traffic { queries }

@@ -22,7 +22,8 @@ macro_rules! memory_controller {
         ///   outstanding: A's triangle word (`need_a`, record `ta_id`) unless one is
         ///   outstanding, B's (`need_b`, `tb_id`), else the first ask not requested, while
         ///   the records held and in flight are fewer than
-        ///   [`MC_RECORDS`](crate::chip::rtl::MC_RECORDS). Taken with `mem_req_ready`; the
+        ///   [`MC_RECORDS`](crate::chip::rtl::MC_RECORDS) (`req_tri`: a triangle word's).
+        ///   Taken with `mem_req_ready`; the
         ///   destination and record join the tag ring (`tag_d`, `tag_r`).
         /// * A response (`mem_resp_valid`) belongs to the oldest tag: a triangle word goes to
         ///   the Triangle Unit's input stage (`fill_a`/`fill_b`, `fill_id`, `fill_word`), a
@@ -64,6 +65,7 @@ macro_rules! memory_controller {
             pub pending: Signal<Out, Bit>,
             pub mem_req_valid: Signal<Out, Bit>,
             pub mem_req_addr: Signal<Out, Bits<24>>,
+            pub req_tri: Signal<Out, Bit>,
             pub fill_a: Signal<Out, Bit>,
             pub fill_b: Signal<Out, Bit>,
             pub fill_id: Signal<Out, Bits<16>>,
@@ -232,6 +234,7 @@ macro_rules! memory_controller {
                     & self.c_rq_found.val()
                     & (bit_cast::<3, 2>(self.held_n.q.val()) + bit_cast::<3, 2>(self.node_inf.q.val()) < 2);
                 self.mem_req_valid.next = self.c_req_ta.val() | self.c_req_tb.val() | self.c_req_node.val();
+                self.req_tri.next = self.c_req_ta.val() | self.c_req_tb.val();
                 self.c_accept.next = self.mem_req_valid.val() & self.mem_req_ready.val();
                 if self.c_req_ta.val() {
                     self.mem_req_addr.next = self.base_ta.val() + bit_cast::<24, 16>(self.ta_id.val());
@@ -477,6 +480,7 @@ macro_rules! memory_controller {
                     pending: Default::default(),
                     mem_req_valid: Default::default(),
                     mem_req_addr: Default::default(),
+                    req_tri: Default::default(),
                     fill_a: Default::default(),
                     fill_b: Default::default(),
                     fill_id: Default::default(),
