@@ -695,3 +695,25 @@ fn chip_core_rtl_lockstep() {
         .unwrap();
     println!("ChipCore RTL: {clocks} clocks as the clocked chip");
 }
+
+/// The clocked chip reads its records in order (base + record): a host write of a record
+/// map (DATE'05's `MAP`, for records spread over DDR banks) is its fault, not a silent
+/// wrong address.
+#[test]
+fn clocked_chip_refuses_a_record_map() {
+    use collision_chip::chip::ports::{ChipIn, Clocked};
+    use collision_chip::cycle::wscg03::clocked;
+    let pose = Pose::new(5.0, 10.0, 0.0, 0.3, 0.2, 0.1);
+    let (chip, setup) = soup_query(10, 10, 1, pose);
+    let img = clocked::images(&chip);
+    let mut c = clocked::Chip::new(&chip, &img, &setup, &Params::RTL).unwrap();
+    let map = ChipIn {
+        host_we: true,
+        host_addr: collision_chip::chip::reg::MAP,
+        host_data: 0x21,
+        ..ChipIn::default()
+    };
+    assert_eq!(c.fault(), None);
+    c.step(&map, false);
+    assert!(c.fault().is_some_and(|f| f.contains("record map")));
+}
