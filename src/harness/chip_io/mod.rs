@@ -157,14 +157,7 @@ fn put_node_word(
 
 /// A node word at bit `at` of `w`: the leaf bit, then `values` of `plane` bits each, then
 /// the two 32-bit fields `f`.
-pub(crate) fn put_node(
-    w: &mut Word,
-    at: usize,
-    plane: usize,
-    values: &[u64],
-    leaf: bool,
-    f: [u32; 2],
-) {
+fn put_node(w: &mut Word, at: usize, plane: usize, values: &[u64], leaf: bool, f: [u32; 2]) {
     put(w, at, 1, leaf as u64);
     for (i, &v) in values.iter().enumerate() {
         put(w, at + 1 + i * plane, plane, v);

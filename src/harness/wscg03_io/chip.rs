@@ -5,27 +5,26 @@
 
 use super::memory_controller::{response, RECORD_BITS};
 use super::tri_unit::{tri_word, TRI_WORD_BITS};
-use super::Traffic;
+use super::{Traffic, TrafficQuery};
 use crate::chip::layout::Dst;
 use crate::cycle::wscg03::clocked::CoreClock;
-use crate::cycle::wscg03::memory_controller::Images;
 use crate::harness::chip_io::{bits, Word};
 use crate::rtl::wscg03::chip::ChipCore;
 use rust_hdl::prelude::*;
 
-/// The memory word at `addr` of `img`: a node record of A or B, or a triangle word of A or
-/// B (the test's word named by its record; the regions in memory order NA, TA, NB, TB).
-pub fn word_at(img: &Images, addr: u32) -> Word {
-    let b = img.bases;
+/// The memory word at `addr` of the query `t`: a node record of A or B, or a triangle word
+/// of A or B ([`response`]; the regions in memory order NA, TA, NB, TB).
+pub fn word_at(t: &TrafficQuery, addr: u32) -> Word {
+    let b = t.img.bases;
     let d = [Dst::TriB, Dst::NodeB, Dst::TriA, Dst::NodeA]
         .into_iter()
         .find(|&d| addr >= b[d as usize])
         .unwrap_or(Dst::NodeA);
-    response(img, (d, addr - b[d as usize]))
+    response(t, (d, addr - b[d as usize]))
 }
 
-/// Drives one clock's inputs (the response's word looked up in `img`).
-fn set_core_inputs(uut: &mut ChipCore, img: &Images, c: &CoreClock) {
+/// Drives one clock's inputs (the response's word looked up in `t`).
+fn set_core_inputs(uut: &mut ChipCore, t: &TrafficQuery, c: &CoreClock) {
     let i = &c.i;
     uut.host_we.next = i.host_we;
     uut.host_addr.next = (i.host_addr as u64 & 0x3ff).into();
@@ -35,7 +34,7 @@ fn set_core_inputs(uut: &mut ChipCore, img: &Images, c: &CoreClock) {
     uut.mem_resp_valid.next = i.mem_resp.is_some();
     let w = i
         .mem_resp
-        .map_or(vec![0; RECORD_BITS / 64], |a| word_at(img, a));
+        .map_or(vec![0; RECORD_BITS / 64], |a| word_at(t, a));
     uut.mem_resp_data.next = bits(&w);
     uut.tri_ready.next = c.tri_ready;
     uut.tri_sure.next = c.tri_sure;
@@ -92,10 +91,10 @@ fn core_differs(uut: &ChipCore, c: &CoreClock) -> Option<String> {
 /// ran as the model, or the first that differs.
 pub fn core_lockstep(tr: &Traffic) -> Result<usize, String> {
     let mut n = 0;
-    for (q, (img, _, ins)) in tr.queries.iter().enumerate() {
+    for (q, tq) in tr.queries.iter().enumerate() {
         let mut uut = crate::rtl::wscg03::chip::chip_core_top();
-        for (t, c) in ins.core.iter().enumerate() {
-            set_core_inputs(&mut uut, img, c);
+        for (t, c) in tq.ins.core.iter().enumerate() {
+            set_core_inputs(&mut uut, tq, c);
             uut.clock.next = Clock { clk: false };
             if !simulate(&mut uut, 1000) {
                 return Err(format!("query {q}, clock {t}: logic did not settle"));

@@ -1,54 +1,33 @@
 //! WSCG'03's Memory Controller driven as the clocked chip drives it
 //! ([`traffic`](super::traffic): the inputs it had in every clock of whole queries, on a
-//! memory of a few clocks' latency with requests overlapped); its records and triangle
-//! words as memory words ([`record_word`], [`response`]); the RTL's ports as the model's
+//! memory of a few clocks' latency with requests overlapped); the memory's words
+//! ([`response`]); the RTL's ports as the model's
 //! ([`set_mc_inputs`], [`mc_outputs_match`]).
 
 use super::tri_unit::{tri_word, TRI_WORD_BITS};
-use super::{bus, Traffic, FORMAT};
+use super::{bus, Traffic, TrafficQuery, FORMAT};
 use crate::chip::layout::Dst;
-use crate::cycle::wscg03::memory_controller::{
-    Ask, Fields, Images, McIn, McOut, MemoryController, Record,
-};
-use crate::harness::chip_io::{bits, put_node, Word};
+use crate::cycle::wscg03::memory_controller::{Ask, Fields, Images, McIn, McOut, MemoryController};
+use crate::harness::chip_io::{bits, Word};
 use crate::rtl::b32::MemoryController as Rtl;
 use rust_hdl::prelude::*;
 
-/// Bits of a record (a memory word: two node words, padded to 256 bytes) and of a node
-/// word (k = 24, binary32).
+/// Bits of a record (a memory word: two node words, padded to 256 bytes; k = 24, binary32).
 pub const RECORD_BITS: usize = crate::chip::layout::record_bits(24, 32, 32);
-const NODE_BITS: usize = crate::chip::layout::node_bits(24, 32);
 
-/// A record as the memory holds it: slot s's node word from bit `s NODE_BITS`
-/// (`chip_io::put_node`: the leaf bit, the distances, the two fields).
-pub fn record_word(r: &Record) -> Word {
-    let mut w = vec![0; RECORD_BITS / 64];
-    for (s, n) in r.iter().enumerate() {
-        let values: Vec<u64> = n.dop.iter().map(|&d| FORMAT.to_bits(d)).collect();
-        put_node(
-            &mut w,
-            s * NODE_BITS,
-            32,
-            &values,
-            n.fields.leaf,
-            n.fields.f,
-        );
-    }
-    w
-}
-
-/// The memory's word for a response to a request of destination `d` and record `r`: a node
-/// record of `img`, or the test's triangle word named by its record.
-pub fn response(img: &Images, (d, r): (Dst, u32)) -> Word {
-    let mut w = vec![0; RECORD_BITS / 64];
+/// The memory's word for a response to a request of destination `d` and record `r` in the
+/// query `t`: a node record as DATE'05's image builds it (`t.words`, at the model's
+/// address), or the test's triangle word named by its record.
+pub fn response(t: &TrafficQuery, (d, r): (Dst, u32)) -> Word {
     match d {
-        Dst::NodeA | Dst::NodeB => return record_word(&img.records[d as usize][r as usize]),
+        Dst::NodeA | Dst::NodeB => t.words[(t.img.bases[d as usize] + r) as usize].clone(),
         Dst::TriA | Dst::TriB => {
-            let t = tri_word(d == Dst::TriB, r as u16);
-            w[..t.len()].copy_from_slice(&t);
+            let mut w = vec![0; RECORD_BITS / 64];
+            let tw = tri_word(d == Dst::TriB, r as u16);
+            w[..tw.len()].copy_from_slice(&tw);
+            w
         }
     }
-    w
 }
 
 /// One clock of the traffic: its query, `clear` (a clock between queries, nothing else
@@ -68,8 +47,8 @@ pub struct McClock {
 /// own, a `clear` clock before each.
 pub fn mc_clocks(tr: &Traffic) -> Vec<McClock> {
     let mut out = vec![];
-    for (q, (img, outstanding, ins)) in tr.queries.iter().enumerate() {
-        let mut model = MemoryController::new(img, img.bases, *outstanding);
+    for (q, t) in tr.queries.iter().enumerate() {
+        let mut model = MemoryController::new(&t.img, t.img.bases, t.outstanding);
         out.push(McClock {
             query: q,
             clear: true,
@@ -79,9 +58,9 @@ pub fn mc_clocks(tr: &Traffic) -> Vec<McClock> {
             room: model.room(),
             pending: false,
         });
-        for i in &ins.mc {
+        for i in &t.ins.mc {
             let resp = match model.next_response().filter(|_| i.resp) {
-                Some(tag) => response(img, tag),
+                Some(tag) => response(t, tag),
                 None => vec![0; RECORD_BITS / 64],
             };
             let (room, pending) = (model.room(), model.outstanding() > 0);
@@ -195,8 +174,8 @@ pub fn mc_lockstep(tr: &Traffic) -> Result<usize, String> {
     let mut uut = crate::rtl::b32::memory_controller_top();
     let clocks = mc_clocks(tr);
     for (n, c) in clocks.iter().enumerate() {
-        let (img, outstanding, _) = &tr.queries[c.query];
-        set_mc_inputs(&mut uut, img, *outstanding, &c.i, &c.resp);
+        let t = &tr.queries[c.query];
+        set_mc_inputs(&mut uut, &t.img, t.outstanding, &c.i, &c.resp);
         uut.clear.next = c.clear;
         uut.clock.next = Clock { clk: false };
         if !simulate(&mut uut, 1000) {
@@ -320,11 +299,11 @@ pub fn memory_controller_vectors() -> String {
     let _ = writeln!(out, "// latency: 0");
     let _ = writeln!(out, "// memory_controller_b32: WSCG'03's Memory Controller, one line per clock: inputs, then the outputs in that clock (before its rising edge); the inputs the clocked chip gave it in two whole queries; golden: cycle::wscg03::memory_controller::MemoryController");
     for c in mc_clocks(&tr) {
-        let (img, outstanding, _) = &tr.queries[c.query];
+        let t = &tr.queries[c.query];
         let _ = writeln!(
             out,
             "{} {}",
-            inputs_hex(&c, img, *outstanding),
+            inputs_hex(&c, &t.img, t.outstanding),
             outputs_hex(&c)
         );
     }

@@ -16,7 +16,6 @@ use crate::cycle::wscg03::clocked::UnitInputs;
 use crate::cycle::wscg03::dop_unit::{
     AlignedBundle, ClockIn, ClockOut, ClockedDopUnit, TumbledBundle,
 };
-use crate::cycle::wscg03::memory_controller::Images;
 use crate::format::{Format, Rounding};
 use crate::golden::host::{HostSetup, TriSide};
 use crate::golden::klmsel::opposite_lane;
@@ -507,10 +506,20 @@ pub fn list_stack_vectors() -> String {
     out
 }
 
-/// Whole queries' traffic of the Memory Controller and the sequencer: each clocked-chip
-/// query's memory, requests outstanding at most, and the units' inputs in every clock.
+/// Whole queries' traffic of WSCG'03's units, a [`TrafficQuery`] each.
 pub struct Traffic {
-    pub queries: Vec<(Images, usize, UnitInputs)>,
+    pub queries: Vec<TrafficQuery>,
+}
+
+/// One query of the traffic: the clocked chip's memory (`img`: its records, as the models
+/// read them), the same memory's words as DATE'05's image builds them
+/// ([`QueryImage`](crate::harness::chip_io::QueryImage) in the `records` layout of one
+/// level), the requests outstanding at most, the units' inputs in every clock.
+pub struct TrafficQuery {
+    pub img: crate::cycle::wscg03::memory_controller::Images,
+    pub words: Vec<crate::harness::chip_io::Word>,
+    pub outstanding: usize,
+    pub ins: UnitInputs,
 }
 
 /// The units' inputs (the DOP Unit's setup words written first) in two queries of soups (30 against 40 triangles, all
@@ -540,27 +549,50 @@ pub fn traffic() -> Traffic {
         ),
     ] {
         let soup = |n, s| crate::mesh::soup(n, s).triangles_f64();
-        let cfg = crate::chip::config::ChipConfig::default();
+        let cfg = crate::chip::config::ChipConfig {
+            layout: crate::chip::config::MemLayout::Records,
+            ..Default::default()
+        };
         let chip = crate::query::Chip::new(&soup(na, seed), &soup(nb, seed + 1), cfg)
             .expect("a soup is a valid object");
         let img = crate::cycle::wscg03::clocked::images(&chip);
         let setup = chip.setup(&pose);
-        let rounding = cfg.dop_rounding.op();
-        let words: Vec<(u32, u32)> =
-            crate::harness::chip_io::dop_unit_setup_words(FORMAT, rounding, &setup)
-                .into_iter()
-                .map(|(a, d)| (a as u32, d as u32))
-                .collect();
+        let kind = crate::chip::rtl::ChipKind::of(&cfg, p.dop_interval, p.tri_interval, p.depth)
+            .expect("binary32, k = 24, in records: an RTL chip's configuration");
+        let mode = crate::chip::reg::Mode::All;
+        let image = crate::harness::chip_io::QueryImage::new(
+            kind,
+            &chip.a,
+            &chip.b,
+            &setup,
+            crate::chip::reg::Order::Fifo,
+            mode,
+            &p,
+            &cfg,
+        )
+        .expect("a soup fits the chip");
+        // the DOP Unit's setup words, as DATE'05's chip is written them
+        let dop_words: Vec<(u32, u32)> = image
+            .writes
+            .iter()
+            .copied()
+            .filter(|w| w.0 < 0x100)
+            .collect();
         let ins = crate::cycle::wscg03::clocked::unit_inputs(
             &chip,
             &img,
-            (&setup, &words),
+            (&setup, &dop_words),
             first,
             &p,
             1 << 24,
         )
         .expect("the query finishes");
-        queries.push((img, p.outstanding as usize, ins));
+        queries.push(TrafficQuery {
+            img,
+            words: image.memory,
+            outstanding: p.outstanding as usize,
+            ins,
+        });
     }
     Traffic { queries }
 }

@@ -31,7 +31,7 @@ pub struct SeqClock {
 pub fn seq_clocks(tr: &Traffic) -> Vec<SeqClock> {
     let mut out = vec![];
     let mut last = (true, 0, 0);
-    for (_, _, ins) in &tr.queries {
+    for ins in tr.queries.iter().map(|t| &t.ins) {
         let i = SeqIn {
             halt: true,
             ..SeqIn::default()
