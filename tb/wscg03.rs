@@ -717,3 +717,49 @@ fn clocked_chip_refuses_a_record_map() {
     c.step(&map, false);
     assert!(c.fault().is_some_and(|f| f.contains("record map")));
 }
+
+/// WSCG'03's whole chip in RTL (`rtl::wscg03::chip::CollisionChip`: the core, TRI_UNIT
+/// and the result port, behind DATE'05's ports) equals the clocked chip on every output
+/// every clock of three queries, driven by DATE'05's driver from the memory image (real
+/// triangle words) and with the setup words on the host port: a bunny patch against
+/// itself (every pair tested uncertain, results back-pressuring TRI_UNIT), intersecting
+/// pairs of all pairs, and a first hit that halts the query.
+#[test]
+fn chip_rtl_lockstep() {
+    use collision_chip::chip::memory::{MemTiming, Memory};
+    use collision_chip::harness::chip_io::query_mesh;
+    use collision_chip::harness::wscg03_io::chip::cross_check;
+    let p = Params {
+        outstanding: 4,
+        memory: Memory::Ideal(MemTiming {
+            latency: 5,
+            interval: 1,
+            bus_bits: None,
+        }),
+        ..Params::RTL
+    };
+    let cfg = ChipConfig {
+        layout: collision_chip::chip::config::MemLayout::Records,
+        ..ChipConfig::default()
+    };
+    let moved = Pose::new(0.0, 0.0, 0.0, 0.5, 0.2, 0.1);
+    for (mesh, pose, first) in [
+        ("bunny-patch:12", Pose::default(), false),
+        ("bunny-patch:24", moved, false),
+        ("bunny-patch:24", moved, true),
+    ] {
+        let t0 = std::time::Instant::now();
+        let tris = query_mesh(mesh).unwrap();
+        let chip = Chip::new(&tris, &tris, cfg).unwrap();
+        let trace = cross_check(&chip, &chip.setup(&pose), first, &p, 100_000).unwrap();
+        let uncertain = trace.results.iter().filter(|r| r.3).count();
+        println!(
+            "WSCG'03 chip RTL, {mesh}, first hit {first}: {} clocks, {} pairs tested, {} results ({uncertain} uncertain) as the clocked chip ({:.0?})",
+            trace.cycles,
+            trace.tri_tests,
+            trace.results.len(),
+            t0.elapsed()
+        );
+        assert!(!trace.results.is_empty());
+    }
+}

@@ -314,7 +314,8 @@ fn fault<C: Clocked>(chip: &C, cyc: u64) -> Result<(), ChipError> {
 }
 
 /// Two levels clocked with the same inputs, compared after every clock: every output,
-/// and every [`PROBES`] signal whose value is specified ([`probe_valid`]). The first
+/// and, where both levels are probed, every [`PROBES`] signal whose value is specified
+/// ([`probe_valid`]). The first
 /// difference is the [`fault`](Clocked::fault), naming the signal and both values.
 pub struct Lockstep<A, B> {
     pub a: A,
@@ -347,9 +348,8 @@ impl<A: Clocked, B: Clocked> Clocked for Lockstep<A, B> {
                 self.names.0, self.names.1
             ));
         }
-        let pa = self.a.step(i, true).expect("probed");
-        let pb = self.b.step(i, true).expect("probed");
-        if self.diff.is_none() {
+        let (pa, pb) = (self.a.step(i, true), self.b.step(i, true));
+        if let (None, Some(pa), Some(pb)) = (&self.diff, &pa, &pb) {
             let specified = |k: usize| probe_valid(k).is_none_or(|v| pa[v] == 1);
             if let Some(k) = (0..PROBES.len()).find(|&k| specified(k) && pa[k] != pb[k]) {
                 let (scope, name, _) = PROBES[k];
@@ -359,7 +359,7 @@ impl<A: Clocked, B: Clocked> Clocked for Lockstep<A, B> {
                 ));
             }
         }
-        Some(pa)
+        pa
     }
 
     fn fault(&self) -> Option<String> {

@@ -438,7 +438,7 @@ macro_rules! chip {
             }
         }
 
-        $crate::rtl::kernel::kernel!([const N: usize, const NP1: usize, const NM1: usize] CollisionChip<N, NP1, NM1>: Host, Fetch, Datapath, Results);
+        $crate::rtl::kernel::kernel!([const N: usize, const NP1: usize, const NM1: usize] CollisionChip<N, NP1, NM1>: Host, Fetch, Datapath, TriOperands, Results);
 
         $crate::chip::reg::register_map!([$crate::rtl::chip::host_kernel] { $WD, $WT; });
 
@@ -531,8 +531,8 @@ macro_rules! chip {
             }
         }
 
-        /// The DOP unit fed from the node words, and the leaf pairs through their FIFO and the
-        /// triangle words into TRI_UNIT.
+        /// The DOP unit fed from the node words, and the leaf pairs through their FIFO to the
+        /// triangle words held for TRI_UNIT ([`tri_operands!`](crate::rtl::tri_unit::tri_operands)).
         struct Datapath;
 
         impl<const N: usize, const NP1: usize, const NM1: usize> $crate::rtl::kernel::Kernel<Datapath> for CollisionChip<N, NP1, NM1> {
@@ -596,35 +596,14 @@ macro_rules! chip {
                 if self.leaf_out.val() & !self.halt.val() {
                     self.tri_cache.next_id.next = self.next_tri_ids.val().get_bits::<16>(0);
                 }
-                // TRI_UNIT's ports from the held triangle words (crate::golden::memory::TriWord order)
-                for k in 0..3 {
-                    self.tri_unit.a_v_x[k].next = self.tri_cache.word.val().get_bits::<$WT>(3 * k * $WT);
-                    self.tri_unit.a_v_y[k].next = self.tri_cache.word.val().get_bits::<$WT>((3 * k + 1) * $WT);
-                    self.tri_unit.a_v_z[k].next = self.tri_cache.word.val().get_bits::<$WT>((3 * k + 2) * $WT);
-                    self.tri_unit.b_v_x[k].next = self.tb_word.q.val().get_bits::<$WT>(3 * k * $WT);
-                    self.tri_unit.b_v_y[k].next = self.tb_word.q.val().get_bits::<$WT>((3 * k + 1) * $WT);
-                    self.tri_unit.b_v_z[k].next = self.tb_word.q.val().get_bits::<$WT>((3 * k + 2) * $WT);
-                }
-                for c in 0..4 {
-                    self.tri_unit.a_m_0[c].next = self.tri_cache.word.val().get_bits::<$WT>((9 + c) * $WT);
-                    self.tri_unit.a_m_1[c].next = self.tri_cache.word.val().get_bits::<$WT>((13 + c) * $WT);
-                    self.tri_unit.a_m_2[c].next = self.tri_cache.word.val().get_bits::<$WT>((17 + c) * $WT);
-                    self.tri_unit.b_m_0[c].next = self.tb_word.q.val().get_bits::<$WT>((9 + c) * $WT);
-                    self.tri_unit.b_m_1[c].next = self.tb_word.q.val().get_bits::<$WT>((13 + c) * $WT);
-                    self.tri_unit.b_m_2[c].next = self.tb_word.q.val().get_bits::<$WT>((17 + c) * $WT);
-                }
-                self.tri_unit.a_alpha_m.next = self.tri_cache.word.val().get_bits::<$WT>(21 * $WT);
-                self.tri_unit.a_alpha_f.next = self.tri_cache.word.val().get_bits::<$WT>(22 * $WT);
-                self.tri_unit.a_v_exact.next = self.tri_cache.word.val().get_bit(23 * $WT);
-                self.tri_unit.a_degenerate.next = self.tri_cache.word.val().get_bit(23 * $WT + 1);
-                self.tri_unit.b_alpha_m.next = self.tb_word.q.val().get_bits::<$WT>(21 * $WT);
-                self.tri_unit.b_alpha_f.next = self.tb_word.q.val().get_bits::<$WT>(22 * $WT);
-                self.tri_unit.b_v_exact.next = self.tb_word.q.val().get_bit(23 * $WT);
-                self.tri_unit.b_degenerate.next = self.tb_word.q.val().get_bit(23 * $WT + 1);
-                self.tri_unit.tag.next = self.leaf_tag.q.val().get_bits::<32>(0);
-                self.tri_unit.in_valid.next = self.tri_in.val();
             }
         }
+
+        $crate::rtl::tri_unit::tri_operands!(
+            [const N: usize, const NP1: usize, const NM1: usize] CollisionChip<N, NP1, NM1>,
+            TriOperands, tri_unit, $WT, [tri_cache.word.val()], [tb_word.q.val()],
+            [leaf_tag.q.val().get_bits::<32>(0)], [tri_in.val()]
+        );
 
         /// The result port, the end of a query, and the counters' ports.
         struct Results;

@@ -397,6 +397,51 @@ macro_rules! tri_unit_top_level {
 }
 pub(crate) use tri_unit_top_level;
 
+/// A kernel part `Part` of a chip `Block` (its generics `[..]`) that drives TRI_UNIT
+/// `self.$tri` from A's and B's held triangle words (`[a]`, `[b]`: expressions on `self`
+/// without it, of `WT`-bit fields in [`TriWord`](crate::golden::memory::TriWord) order),
+/// the pair's `[tag]` and `[valid]` (macro hygiene keeps `self` to the macro). One wiring for every chip with a TRI_UNIT.
+macro_rules! tri_operands {
+    ([$($g:tt)*] $block:ty, $part:ident, $tri:ident, $WT:tt, [$($a:tt)*], [$($b:tt)*], [$($tag:tt)*], [$($valid:tt)*]) => {
+        /// TRI_UNIT's ports from the held triangle words.
+        struct $part;
+
+        impl<$($g)*> $crate::rtl::kernel::Kernel<$part> for $block {
+            #[hdl_gen]
+            fn update(&mut self) {
+                // TRI_UNIT's ports from the held triangle words (crate::golden::memory::TriWord order)
+                for k in 0..3 {
+                    self.$tri.a_v_x[k].next = self.$($a)*.get_bits::<$WT>(3 * k * $WT);
+                    self.$tri.a_v_y[k].next = self.$($a)*.get_bits::<$WT>((3 * k + 1) * $WT);
+                    self.$tri.a_v_z[k].next = self.$($a)*.get_bits::<$WT>((3 * k + 2) * $WT);
+                    self.$tri.b_v_x[k].next = self.$($b)*.get_bits::<$WT>(3 * k * $WT);
+                    self.$tri.b_v_y[k].next = self.$($b)*.get_bits::<$WT>((3 * k + 1) * $WT);
+                    self.$tri.b_v_z[k].next = self.$($b)*.get_bits::<$WT>((3 * k + 2) * $WT);
+                }
+                for c in 0..4 {
+                    self.$tri.a_m_0[c].next = self.$($a)*.get_bits::<$WT>((9 + c) * $WT);
+                    self.$tri.a_m_1[c].next = self.$($a)*.get_bits::<$WT>((13 + c) * $WT);
+                    self.$tri.a_m_2[c].next = self.$($a)*.get_bits::<$WT>((17 + c) * $WT);
+                    self.$tri.b_m_0[c].next = self.$($b)*.get_bits::<$WT>((9 + c) * $WT);
+                    self.$tri.b_m_1[c].next = self.$($b)*.get_bits::<$WT>((13 + c) * $WT);
+                    self.$tri.b_m_2[c].next = self.$($b)*.get_bits::<$WT>((17 + c) * $WT);
+                }
+                self.$tri.a_alpha_m.next = self.$($a)*.get_bits::<$WT>(21 * $WT);
+                self.$tri.a_alpha_f.next = self.$($a)*.get_bits::<$WT>(22 * $WT);
+                self.$tri.a_v_exact.next = self.$($a)*.get_bit(23 * $WT);
+                self.$tri.a_degenerate.next = self.$($a)*.get_bit(23 * $WT + 1);
+                self.$tri.b_alpha_m.next = self.$($b)*.get_bits::<$WT>(21 * $WT);
+                self.$tri.b_alpha_f.next = self.$($b)*.get_bits::<$WT>(22 * $WT);
+                self.$tri.b_v_exact.next = self.$($b)*.get_bit(23 * $WT);
+                self.$tri.b_degenerate.next = self.$($b)*.get_bit(23 * $WT + 1);
+                self.$tri.tag.next = self.$($tag)*;
+                self.$tri.in_valid.next = self.$($valid)*;
+            }
+        }
+    };
+}
+pub(crate) use tri_operands;
+
 use rust_hdl::prelude::*;
 
 /// The result port (the host's read side of TRI_UNIT's result FIFO, DATE'05 Fig. 4's

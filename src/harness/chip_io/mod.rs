@@ -370,25 +370,34 @@ pub trait RtlPorts: Block {
     /// The inputs of one clock; the memory response's data if one is valid.
     fn set_inputs(&mut self, i: &ChipIn, resp: Option<&Self::Word>);
     fn set_clock(&mut self, high: bool);
-    /// [`crate::chip::probes::PROBES`] as the logic shows them now.
-    fn probes(&self) -> Vec<u64>;
+    /// [`crate::chip::probes::PROBES`] as the logic shows them now (`None`: a chip not
+    /// probed).
+    fn probes(&self) -> Option<Vec<u64>>;
 }
 
+/// `RtlPorts` for DATE'05's chip of format module `fmt` (its probes [`PROBES`](crate::chip::probes::PROBES)), or for
+/// a block `ty` (generics `[..]`) with the same ports, memory words of `W` bits, read from
+/// images of chip `kind`, probed by `probe` (a function of the block).
 macro_rules! rtl_ports {
     ($fmt:ident, $kind:expr) => {
-        impl<const N: usize, const NP1: usize, const NM1: usize> RtlPorts
-            for crate::rtl::$fmt::CollisionChip<N, NP1, NM1>
-        {
-            type Word = Bits<{ crate::rtl::$fmt::CHIP_WORD_BITS }>;
-            const KIND: ChipKind = $kind;
+        $crate::harness::chip_io::rtl_ports!(
+            [const N: usize, const NP1: usize, const NM1: usize]
+            crate::rtl::$fmt::CollisionChip<N, NP1, NM1>,
+            { crate::rtl::$fmt::CHIP_WORD_BITS }, $kind, |c: &Self| Some(c.probe())
+        );
+    };
+    ([$($g:tt)*] $ty:ty, $W:tt, $kind:expr, $probe:expr) => {
+        impl<$($g)*> $crate::harness::chip_io::RtlPorts for $ty {
+            type Word = rust_hdl::prelude::Bits<$W>;
+            const KIND: $crate::chip::rtl::ChipKind = $kind;
 
-            fn word(w: &Word) -> Self::Word {
-                bits(w)
+            fn word(w: &$crate::harness::chip_io::Word) -> Self::Word {
+                $crate::harness::chip_io::bits(w)
             }
 
-            fn outputs(&self) -> ChipOut {
+            fn outputs(&self) -> $crate::chip::ports::ChipOut {
                 let tag = self.res_tag.val().to_u64();
-                ChipOut {
+                $crate::chip::ports::ChipOut {
                     busy: self.busy.val(),
                     done: self.done.val(),
                     overflow: self.overflow.val(),
@@ -405,7 +414,7 @@ macro_rules! rtl_ports {
                 }
             }
 
-            fn set_inputs(&mut self, i: &ChipIn, resp: Option<&Self::Word>) {
+            fn set_inputs(&mut self, i: &$crate::chip::ports::ChipIn, resp: Option<&Self::Word>) {
                 self.host_we.next = i.host_we;
                 self.host_addr.next = (i.host_addr as u64).into();
                 self.host_data.next = (i.host_data as u64).into();
@@ -419,15 +428,16 @@ macro_rules! rtl_ports {
             }
 
             fn set_clock(&mut self, high: bool) {
-                self.clock.next = Clock { clk: high };
+                self.clock.next = rust_hdl::prelude::Clock { clk: high };
             }
 
-            fn probes(&self) -> Vec<u64> {
-                self.probe()
+            fn probes(&self) -> Option<Vec<u64>> {
+                ($probe)(self)
             }
         }
     };
 }
+pub(crate) use rtl_ports;
 crate::rtl_chips!(dispatch);
 
 /// The rust-hdl chip as a [`Clocked`] level: the memory image's words answer its memory
@@ -469,7 +479,7 @@ impl<C: RtlPorts> Clocked for RtlChip<'_, C> {
                 self.err = Some("the rust-hdl logic did not settle".into());
             }
             if !high && probe {
-                probed = Some(self.chip.probes());
+                probed = self.chip.probes();
             }
         }
         probed

@@ -1,14 +1,22 @@
 //! WSCG'03's chip core in RTL (`rtl::wscg03::chip::ChipCore`) driven as the clocked chip
 //! was in whole queries ([`traffic`](super::traffic): every clock from the first setup
 //! word on), its memory's words by address, and its ports checked against the clocked
-//! model's every clock ([`core_lockstep`]).
+//! model's every clock ([`core_lockstep`]); the whole chip in RTL (`CollisionChip`) in
+//! lockstep with the clocked chip on a query ([`cross_check`]).
 
 use super::memory_controller::{response, RECORD_BITS};
 use super::tri_unit::{tri_word, TRI_WORD_BITS};
 use super::{Traffic, TrafficQuery};
+use crate::chip::config::MemLayout;
 use crate::chip::layout::Dst;
-use crate::cycle::wscg03::clocked::CoreClock;
-use crate::harness::chip_io::{bits, Word};
+use crate::chip::params::Params;
+use crate::chip::reg::{self, Mode, Order};
+use crate::chip::rtl::{ChipKind, Depth};
+use crate::cycle::drive::{run_query, ChipTrace, Lockstep, Reader};
+use crate::cycle::wscg03::clocked::{self, CoreClock};
+use crate::cycle::wscg03::memory_controller::Images;
+use crate::golden::host::HostSetup;
+use crate::harness::chip_io::{bits, drive, QueryImage, RtlChip, Word};
 use crate::rtl::wscg03::chip::ChipCore;
 use rust_hdl::prelude::*;
 
@@ -110,4 +118,77 @@ pub fn core_lockstep(tr: &Traffic) -> Result<usize, String> {
         }
     }
     Ok(n)
+}
+
+crate::harness::chip_io::rtl_ports!(
+    [] crate::rtl::wscg03::chip::CollisionChip, 2048, ChipKind::K24B32, |_: &Self| None
+);
+
+/// The memory and host writes of `chip`'s query (B placed by `setup`, all pairs or the
+/// first hit: `first`) on WSCG'03's RTL chip, on `p`'s memory: the clocked model's records
+/// ([`images`]) and DATE'05's image of them ([`QueryImage`] in the `records` layout: node
+/// records and triangle words as the chip reads them), the DOP Unit's and TRI_UNIT's setup
+/// words, then the chip's registers ([`clocked::writes`]).
+pub fn query_image(
+    chip: &crate::query::Chip,
+    setup: &HostSetup,
+    first: bool,
+    p: &Params,
+) -> Result<(Images, QueryImage), String> {
+    let cfg = chip.cfg;
+    if cfg.layout != MemLayout::Records
+        || ChipKind::of(&cfg, 1, 1, Depth::Asic) != Some(ChipKind::K24B32)
+    {
+        return Err(format!(
+            "WSCG'03's RTL chip is binary32 with k = 24, T.CHECK to nearest-even and the records layout; this query has k = {}, format {}, layout {:?}: set [chip] preset = \"wscg03\"",
+            cfg.k, cfg.format, cfg.layout
+        ));
+    }
+    let img = clocked::images(chip);
+    let mode = if first { Mode::First } else { Mode::All };
+    let mut image = QueryImage::new(
+        ChipKind::K24B32,
+        &chip.a,
+        &chip.b,
+        setup,
+        Order::Fifo,
+        mode,
+        p,
+        &cfg,
+    )?;
+    let setup_word = |a: u32| a < 0x100 || a >> 5 == reg::TRI_SETUP >> 5;
+    image.writes.retain(|w| setup_word(w.0));
+    image.writes.extend(clocked::writes(chip, &img, first, p));
+    Ok((img, image))
+}
+
+/// Runs one query (as [`query_image`]) on WSCG'03's rust-hdl chip in lockstep with its
+/// clocked model (on a thread with the big stack the RTL needs): every output equal after
+/// every clock. Errors name the cycle and the first difference.
+pub fn cross_check(
+    chip: &crate::query::Chip,
+    setup: &HostSetup,
+    first: bool,
+    p: &Params,
+    max_cycles: u64,
+) -> Result<ChipTrace, String> {
+    let (img, image) = query_image(chip, setup, first, p)?;
+    let d = drive(&image, p.memory_clocks()?, Reader::default(), max_cycles);
+    std::thread::scope(|s| {
+        std::thread::Builder::new()
+            .stack_size(1 << 30)
+            .spawn_scoped(s, || {
+                let model = clocked::Chip::new(chip, &img, setup, p)?;
+                let mut rtl = crate::rtl::wscg03::chip::chip_top();
+                let mut ls = Lockstep::new(
+                    RtlChip::new(&mut rtl, &image),
+                    model,
+                    ("rust-hdl", "clocked model"),
+                );
+                run_query(&mut ls, &image.writes, &d, true, |_, _| Ok(()), false).map_err(|e| e.0)
+            })
+            .map_err(|e| format!("cannot start the RTL simulation thread: {e}"))?
+            .join()
+            .map_err(|_| "the RTL simulation thread panicked".to_string())?
+    })
 }

@@ -1,13 +1,16 @@
-//! WSCG'03's CollisionChip (§4, Fig. 4) in RTL, binary32, k = 24: its core (`ChipCore`),
-//! every unit but TRI_UNIT and the result port joined, with DATE'05's host registers,
-//! `start`, the memory port and the counters. Its clocked model is
+//! WSCG'03's CollisionChip (§4, Fig. 4) in RTL, binary32, k = 24 (`CollisionChip`): its
+//! core (`ChipCore`), every unit but TRI_UNIT and the result port joined, with DATE'05's
+//! host registers, `start`, the memory port and the counters; then TRI_UNIT and the
+//! result port around it. Its clocked model is
 //! [`cycle::wscg03::clocked::Chip`](crate::cycle::wscg03::clocked::Chip).
 
 use super::sequencer::Sequencer;
 use super::stack_engine::ListStack;
 use crate::chip::reg;
 use crate::chip::rtl::LIST_SRAM_BITS;
-use crate::rtl::b32::{MemoryController, TriInput, Wscg03DopUnit};
+use crate::format::Rounding;
+use crate::rtl::b32::{MemoryController, TriInput, TriUnit, Wscg03DopUnit};
+use crate::rtl::tri_unit::ResultPort;
 use rust_hdl::prelude::*;
 
 /// WSCG'03's CollisionChip without TRI_UNIT and its result port: the Stack Engine (its
@@ -349,4 +352,136 @@ impl Default for ChipCore {
 pub fn chip_core_top() -> ChipCore {
     top_level!(ChipCore::default(); clock, host_we, host_addr, host_data, start, mem_req_ready,
         mem_resp_valid, mem_resp_data, tri_ready, tri_sure, tri_idle)
+}
+
+/// WSCG'03's CollisionChip (§4, Fig. 4), binary32, k = 24: [`ChipCore`] joined with
+/// TRI_UNIT (DATE'05's binary32 `TriUnit`, T.CHECK to nearest-even: the Triangle Unit's
+/// tests) and its result port, behind DATE'05's chip's ports
+/// ([`crate::rtl::b32::CollisionChip`]: host registers, `start`, `busy`, `done`, the
+/// counters, the memory port of 2,048-bit words, the result port). TRI_UNIT's setup words
+/// are the host's writes at [`TRI_SETUP`](crate::chip::reg::TRI_SETUP) (address bits 9:5
+/// = 8). `max_depth` is the deepest level of the Stack Engine's lists.
+#[derive(LogicBlock)]
+pub struct CollisionChip {
+    pub clock: Signal<In, Clock>,
+    pub host_we: Signal<In, Bit>,
+    pub host_addr: Signal<In, Bits<10>>,
+    pub host_data: Signal<In, Bits<32>>,
+    pub start: Signal<In, Bit>,
+    pub busy: Signal<Out, Bit>,
+    pub done: Signal<Out, Bit>,
+    pub overflow: Signal<Out, Bit>,
+    pub max_depth: Signal<Out, Bits<5>>,
+    pub dop_tests: Signal<Out, Bits<32>>,
+    pub tri_tests: Signal<Out, Bits<32>>,
+    pub node_fetches: Signal<Out, Bits<32>>,
+    pub tri_fetches: Signal<Out, Bits<32>>,
+    pub mem_req_valid: Signal<Out, Bit>,
+    pub mem_req_addr: Signal<Out, Bits<24>>,
+    pub mem_req_ready: Signal<In, Bit>,
+    pub mem_resp_valid: Signal<In, Bit>,
+    pub mem_resp_data: Signal<In, Bits<2048>>,
+    pub res_valid: Signal<Out, Bit>,
+    pub res_tag: Signal<Out, Bits<32>>,
+    pub res_uncertain: Signal<Out, Bit>,
+    pub res_ready: Signal<In, Bit>,
+    core: ChipCore,
+    tri_unit: TriUnit,
+    result: ResultPort,
+}
+
+/// The core, TRI_UNIT's setup port and the result port.
+struct TopWire;
+
+impl crate::rtl::kernel::Kernel<TopWire> for CollisionChip {
+    #[hdl_gen]
+    fn update(&mut self) {
+        clock!(self, clock, core, tri_unit, result);
+        self.core.host_we.next = self.host_we.val();
+        self.core.host_addr.next = self.host_addr.val();
+        self.core.host_data.next = self.host_data.val();
+        self.core.start.next = self.start.val();
+        self.core.mem_req_ready.next = self.mem_req_ready.val();
+        self.core.mem_resp_valid.next = self.mem_resp_valid.val();
+        self.core.mem_resp_data.next = self.mem_resp_data.val();
+        self.core.tri_ready.next = self.tri_unit.in_ready.val();
+        self.core.tri_sure.next = self.result.sure_hit.val();
+        self.core.tri_idle.next = self.result.open.val() == 0;
+        self.tri_unit.load_en.next =
+            self.host_we.val() & (self.host_addr.val().get_bits::<5>(5) == 8);
+        self.tri_unit.load_addr.next = self.host_addr.val().get_bits::<5>(0);
+        self.tri_unit.load_data.next = self.host_data.val();
+        self.result.take.next = self.core.pair_valid.val() & self.tri_unit.in_ready.val();
+        self.result.out_valid.next = self.tri_unit.out_valid.val();
+        self.result.out_hit.next = self.tri_unit.out_hit.val();
+        self.result.out_uncertain.next = self.tri_unit.out_uncertain.val();
+        self.result.out_tag.next = self.tri_unit.out_tag.val();
+        self.result.res_ready.next = self.res_ready.val();
+        self.tri_unit.out_ready.next = self.result.out_ready.val();
+        self.busy.next = self.core.busy.val();
+        self.done.next = self.core.done.val();
+        self.overflow.next = self.core.overflow.val();
+        self.max_depth.next = self.core.max_depth.val();
+        self.dop_tests.next = self.core.dop_tests.val();
+        self.tri_tests.next = self.core.tri_tests.val();
+        self.node_fetches.next = self.core.node_fetches.val();
+        self.tri_fetches.next = self.core.tri_fetches.val();
+        self.mem_req_valid.next = self.core.mem_req_valid.val();
+        self.mem_req_addr.next = self.core.mem_req_addr.val();
+        self.res_valid.next = self.result.res_valid.val();
+        self.res_tag.next = self.result.res_tag.val();
+        self.res_uncertain.next = self.result.res_uncertain.val();
+    }
+}
+
+crate::rtl::tri_unit::tri_operands!(
+    [] CollisionChip, TriOperands, tri_unit, 32, [core.a_word.val()],
+    [core.b_word.val()], [core.pair_tag.val()], [core.pair_valid.val()]
+);
+
+crate::rtl::kernel::kernel!([] CollisionChip: TopWire, TriOperands);
+
+impl CollisionChip {
+    pub fn new() -> Self {
+        CollisionChip {
+            clock: Default::default(),
+            host_we: Default::default(),
+            host_addr: Default::default(),
+            host_data: Default::default(),
+            start: Default::default(),
+            busy: Default::default(),
+            done: Default::default(),
+            overflow: Default::default(),
+            max_depth: Default::default(),
+            dop_tests: Default::default(),
+            tri_tests: Default::default(),
+            node_fetches: Default::default(),
+            tri_fetches: Default::default(),
+            mem_req_valid: Default::default(),
+            mem_req_addr: Default::default(),
+            mem_req_ready: Default::default(),
+            mem_resp_valid: Default::default(),
+            mem_resp_data: Default::default(),
+            res_valid: Default::default(),
+            res_tag: Default::default(),
+            res_uncertain: Default::default(),
+            res_ready: Default::default(),
+            core: Default::default(),
+            tri_unit: TriUnit::new(Rounding::NearestEven),
+            result: Default::default(),
+        }
+    }
+}
+
+impl Default for CollisionChip {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+/// The chip ready to simulate as a top-level block. Large (TRI_UNIT): build it on a thread
+/// with a big stack.
+pub fn chip_top() -> CollisionChip {
+    top_level!(CollisionChip::new(); clock, host_we, host_addr, host_data, start,
+        mem_req_ready, mem_resp_valid, mem_resp_data, res_ready)
 }
