@@ -763,3 +763,54 @@ fn chip_rtl_lockstep() {
         assert!(!trace.results.is_empty());
     }
 }
+
+/// WSCG'03's queries of the RTL set (`harness::chip_io::queries`, architecture wscg03):
+/// the clocked chip, driven as the Verilog testbench drives `rtl/chip_wscg03_b32_k24.v`,
+/// finds the golden pairs and gives the checked-in trace (vectors/chip/<query>.expect, each
+/// agreed by the exported Verilog under Verilator). Writes each query's memory requests to
+/// target/chip-expect/ for scripts/run-chip.sh, and with `CCHIP_BLESS=1` its trace there
+/// (`scripts/run-chip.sh --bless` copies it only where Verilator agrees).
+#[test]
+fn wscg03_checked_in_traces() {
+    use collision_chip::chip::wscg03::Architecture;
+    use collision_chip::harness::chip_io::queries;
+    use collision_chip::harness::wscg03_io::chip::model_trace;
+    let bless = std::env::var("CCHIP_BLESS").is_ok_and(|v| v == "1");
+    let root = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR"));
+    let out = root.join("target/chip-expect");
+    std::fs::create_dir_all(&out).unwrap();
+    let w3: Vec<_> = queries()
+        .into_iter()
+        .filter(|q| q.architecture == Architecture::Wscg03)
+        .collect();
+    assert!(w3.len() >= 4);
+    for q in w3 {
+        let p = q.prepare().unwrap();
+        let (tr, reqs) = model_trace(&q, &p, 5_000_000).unwrap();
+        tr.check(q.mode, &p.golden_all)
+            .unwrap_or_else(|e| panic!("{}: {e}", q.name));
+        let (hits, unc) = tr.pairs();
+        println!(
+            "{}: {} clocks, {} sure hits, {} uncertain",
+            q.name,
+            tr.cycles,
+            hits.len(),
+            unc.len()
+        );
+        let expect = format!("{}.expect", q.name);
+        if bless {
+            std::fs::write(out.join(&expect), tr.text()).unwrap();
+        } else {
+            let path = root.join("vectors/chip").join(&expect);
+            let want = std::fs::read_to_string(&path)
+                .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+            assert_eq!(
+                tr.text(),
+                want,
+                "{}: the clocked chip's trace differs",
+                q.name
+            );
+        }
+        std::fs::write(out.join(format!("{}.requests", q.name)), reqs).unwrap();
+    }
+}

@@ -282,6 +282,10 @@ pub fn rounding_tag(r: Rounding) -> &'static str {
     }
 }
 
+/// WSCG'03's chip in RTL (`rtl::wscg03::chip::CollisionChip`, binary32, k = 24): its
+/// exported Verilog's name in rtl/, without `.v`.
+pub const WSCG03_CHIP: &str = "chip_wscg03_b32_k24";
+
 /// The RTL chips, one row each: the kind's name, the exported file's name in `rtl/`, the
 /// module of `crate::rtl` that stamps it out, its configuration, whether it also reads the
 /// `records` layout (host register [`MODE`](super::reg::MODE) bit 2; its memory word then a record), the clocks

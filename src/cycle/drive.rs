@@ -367,6 +367,50 @@ impl<A: Clocked, B: Clocked> Clocked for Lockstep<A, B> {
     }
 }
 
+/// A level whose memory requests taken are logged as the Verilog testbench prints them
+/// with `+requests` (scripts/verilog/chip_tb.v): `request <cycle> <word address>` per
+/// line, cycle 0 the one whose edge takes `start`.
+pub struct RequestLog<C> {
+    pub chip: C,
+    pub text: String,
+    cycle: Option<u64>,
+}
+
+impl<C: Clocked> RequestLog<C> {
+    pub fn new(chip: C) -> Self {
+        RequestLog {
+            chip,
+            text: String::new(),
+            cycle: None,
+        }
+    }
+}
+
+impl<C: Clocked> Clocked for RequestLog<C> {
+    fn outputs(&self) -> ChipOut {
+        self.chip.outputs()
+    }
+
+    fn step(&mut self, i: &ChipIn, probe: bool) -> Option<Vec<u64>> {
+        let o = self.chip.outputs();
+        self.cycle = match self.cycle {
+            _ if i.start => Some(0),
+            c => c.map(|t| t + 1),
+        };
+        if let Some(t) = self
+            .cycle
+            .filter(|&t| t > 0 && o.mem_req_valid && i.mem_req_ready)
+        {
+            self.text += &format!("request {t} {}\n", o.mem_req_addr);
+        }
+        self.chip.step(i, probe)
+    }
+
+    fn fault(&self) -> Option<String> {
+        self.chip.fault()
+    }
+}
+
 /// A VCD of the [`PROBES`] signals, one time unit per clock (time t shows every signal in
 /// cycle t, cycle 0 the one whose edge takes `start`), one scope per unit under `chip`:
 /// for GTKWave with scripts/gtkw/chip_e8m15_k6.gtkw. `scopes` picks the units (all if

@@ -750,8 +750,9 @@ fn dop_unit_vectors(name: &str, k: usize, fmt: Format, interval: usize, latency:
     out
 }
 
-/// Writes `<dir>/<unit>.v` for every unit and each chip's `<dir>/chip_<format>_k<k>.v`
-/// ([`ChipKind`]); returns the paths written.
+/// Writes `<dir>/<unit>.v` for every unit, each chip's `<dir>/chip_<format>_k<k>.v`
+/// ([`ChipKind`]) and WSCG'03's chip's ([`WSCG03_CHIP`](crate::chip::rtl::WSCG03_CHIP));
+/// returns the paths written.
 pub fn write_verilog(dir: &Path) -> std::io::Result<Vec<String>> {
     let mut written = write_all(
         dir,
@@ -764,6 +765,9 @@ pub fn write_verilog(dir: &Path) -> std::io::Result<Vec<String>> {
         std::fs::write(&p, super::chip_io::verilog(kind))?;
         written.push(p.display().to_string());
     }
+    let p = dir.join(format!("{}.v", crate::chip::rtl::WSCG03_CHIP));
+    std::fs::write(&p, super::wscg03_io::chip::verilog())?;
+    written.push(p.display().to_string());
     Ok(written)
 }
 

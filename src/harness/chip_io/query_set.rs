@@ -7,7 +7,9 @@ use crate::chip::memory::MemTiming;
 use crate::chip::reg::Mode;
 use crate::chip::reg::Order::{self, Fifo, Lifo};
 use crate::chip::rtl::{self as chips, ChipKind};
+use crate::chip::wscg03::Architecture;
 use crate::cycle::drive::Reader;
+use crate::harness::wscg03_io::chip::query_image as wscg03_image;
 use crate::pose::Pose;
 use crate::traversal::QueryResult;
 use std::fmt::Write as _;
@@ -22,8 +24,10 @@ pub struct ChipQuery {
     pub a: &'static str,
     pub b: &'static str,
     pub pose: crate::pose::Pose,
-    /// The chip that runs it.
+    /// The chip that runs it: DATE'05's chip of this kind or, with `architecture` wscg03,
+    /// WSCG'03's (its memory image that of this kind in the `records` layout).
     pub chip: ChipKind,
+    pub architecture: Architecture,
     pub order: Order,
     pub mode: Mode,
     pub timing: MemTiming,
@@ -91,6 +95,14 @@ impl ChipQuery {
         }
     }
 
+    /// The exported Verilog that runs it (rtl/<name>.v).
+    pub fn chip_name(&self) -> &'static str {
+        match self.architecture {
+            Architecture::Date05 => self.chip.name(),
+            Architecture::Wscg03 => chips::WSCG03_CHIP,
+        }
+    }
+
     pub fn prepare(&self) -> Result<PreparedQuery, String> {
         let cfg = ChipConfig {
             tri_cache: self.tri_cache,
@@ -100,6 +112,16 @@ impl ChipQuery {
         };
         let chip = crate::query::Chip::new(&query_mesh(self.a)?, &query_mesh(self.b)?, cfg)?;
         let golden_all = chip.query(&self.pose, Mode::All, crate::traversal::Traversal::Fifo);
+        if self.architecture == Architecture::Wscg03 {
+            let first = self.mode == Mode::First;
+            let setup = chip.setup(&self.pose);
+            let (_, image) = wscg03_image(&chip, &setup, first, &self.params())?;
+            return Ok(PreparedQuery {
+                chip,
+                golden_all,
+                image,
+            });
+        }
         let image = QueryImage::new(
             self.chip,
             &chip.a,
@@ -155,6 +177,7 @@ pub fn queries() -> Vec<ChipQuery> {
         ),
         fold16(&p),
         dop6tri32(&p),
+        wscg03(&p),
     ]
     .concat()
 }
@@ -209,6 +232,7 @@ fn q(
         tri_cache: 1,
         layout: MemLayout::Words,
         dop_rounding: DopRounding::Outward,
+        architecture: Architecture::Date05,
         large: false,
     }
 }
@@ -949,11 +973,77 @@ pub fn write_vectors(dir: &std::path::Path) -> Result<Vec<String>, String> {
             q.timing.latency,
             q.timing.interval,
             q.reader.period,
-            q.chip.name()
+            q.chip_name()
         );
     }
     let path = dir.join("queries.txt");
     std::fs::write(&path, list).map_err(|e| format!("{}: {e}", path.display()))?;
     written.push(path.display().to_string());
     Ok(written)
+}
+
+/// WSCG'03's chip (`chip_wscg03_b32_k24`, its memory in DATE'05's k = 24 binary32 records):
+/// spheres apart (the root's test only: Icarus), a bunny patch against itself (every
+/// pair tested uncertain) and shifted (sure hits), all pairs and the first hit, on 4 requests
+/// outstanding; large, for Verilator: spheres of 200 triangles, all pairs through A's
+/// 128-line triangle cache, the host reading a result every 3 clocks.
+fn wscg03(p: &Poses) -> Vec<ChipQuery> {
+    let w3 = |q: ChipQuery| ChipQuery {
+        chip: ChipKind::K24B32,
+        architecture: Architecture::Wscg03,
+        layout: MemLayout::Records,
+        outstanding: 4,
+        ..q
+    };
+    vec![
+        w3(q(
+            "w3_apart_first",
+            "sphere:12",
+            Pose::new(10.0, 20.0, 30.0, 3.0, 0.1, 0.0),
+            Fifo,
+            Mode::First,
+            1,
+            1,
+        )),
+        w3(q(
+            "w3_self_all",
+            "bunny-patch:12",
+            Pose::default(),
+            Fifo,
+            Mode::All,
+            5,
+            1,
+        )),
+        w3(q(
+            "w3_patch_all",
+            "bunny-patch:24",
+            p.patch,
+            Fifo,
+            Mode::All,
+            5,
+            1,
+        )),
+        w3(q(
+            "w3_patch_first",
+            "bunny-patch:24",
+            p.patch,
+            Fifo,
+            Mode::First,
+            5,
+            1,
+        )),
+        w3(ChipQuery {
+            tri_cache: 128,
+            ..big(
+                "w3_big_sphere_all_cache",
+                "sphere:200",
+                p.big_spheres,
+                Fifo,
+                Mode::All,
+                8,
+                1,
+                3,
+            )
+        }),
+    ]
 }

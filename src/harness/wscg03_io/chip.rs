@@ -12,11 +12,11 @@ use crate::chip::layout::Dst;
 use crate::chip::params::Params;
 use crate::chip::reg::{self, Mode, Order};
 use crate::chip::rtl::{ChipKind, Depth};
-use crate::cycle::drive::{run_query, ChipTrace, Lockstep, Reader};
+use crate::cycle::drive::{run_query, ChipTrace, Lockstep, Reader, RequestLog};
 use crate::cycle::wscg03::clocked::{self, CoreClock};
 use crate::cycle::wscg03::memory_controller::Images;
 use crate::golden::host::HostSetup;
-use crate::harness::chip_io::{bits, drive, QueryImage, RtlChip, Word};
+use crate::harness::chip_io::{bits, drive, ChipQuery, PreparedQuery, QueryImage, RtlChip, Word};
 use crate::rtl::wscg03::chip::ChipCore;
 use rust_hdl::prelude::*;
 
@@ -190,5 +190,31 @@ pub fn cross_check(
             .map_err(|e| format!("cannot start the RTL simulation thread: {e}"))?
             .join()
             .map_err(|_| "the RTL simulation thread panicked".to_string())?
+    })
+}
+
+/// The clocked chip's run of a WSCG'03 query of the RTL set (`q`, prepared as `prep`),
+/// driven as the Verilog testbench drives the exported chip (its writes, its memory, its
+/// reader): the trace and the memory requests taken ([`RequestLog`]).
+pub fn model_trace(
+    q: &ChipQuery,
+    prep: &PreparedQuery,
+    max_cycles: u64,
+) -> Result<(ChipTrace, String), String> {
+    let p = q.params();
+    let setup = prep.chip.setup(&q.pose);
+    let img = clocked::images(&prep.chip);
+    let mut log = RequestLog::new(clocked::Chip::new(&prep.chip, &img, &setup, &p)?);
+    let d = drive(&prep.image, p.memory_clocks()?, q.reader, max_cycles);
+    let w = &prep.image.writes;
+    let tr = run_query(&mut log, w, &d, false, |_, _| Ok(()), false).map_err(|e| e.0)?;
+    Ok((tr, log.text))
+}
+
+/// The chip's Verilog (top module `top`), identical modules merged.
+pub fn verilog() -> String {
+    crate::harness::chip_io::big_stack(|| {
+        let chip = crate::rtl::wscg03::chip::chip_top();
+        crate::harness::verilog::dedup_modules(&generate_verilog(&chip))
     })
 }
