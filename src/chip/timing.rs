@@ -596,7 +596,7 @@ impl Clock {
         })
     }
 
-    /// This clock for WSCG'03's chip, which has no RTL: a table's period, DATE'05's chip of
+    /// This clock for WSCG'03's chip as scenes run it, its event model: a table's period, DATE'05's chip of
     /// the configuration's, stands in (estimated).
     pub fn for_architecture(mut self, arch: Architecture) -> Clock {
         if arch == Architecture::Wscg03 && self.source != PeriodSource::Assumed {
@@ -604,7 +604,7 @@ impl Clock {
                 .estimate
                 .take()
                 .unwrap_or_else(|| format!("{}, measured", self.slowest.as_deref().unwrap_or("-")));
-            (self.source, self.estimate) = (PeriodSource::Estimated, Some(format!("WSCG'03's chip has no RTL; DATE'05's chip of this configuration stands in ({date05})")));
+            (self.source, self.estimate) = (PeriodSource::Estimated, Some(format!("scenes run WSCG'03's event model, not its RTL chip; DATE'05's chip of this configuration stands in ({date05})")));
         }
         self
     }
@@ -817,7 +817,7 @@ mod tests {
             (w.period_ns, w.source),
             (osu.period_ns, PeriodSource::Estimated)
         );
-        assert!(w.source().contains("WSCG'03's chip has no RTL; DATE'05's chip of this configuration stands in (chip_b32_k24, measured)"), "{}", w.source());
+        assert!(w.source().contains("scenes run WSCG'03's event model, not its RTL chip; DATE'05's chip of this configuration stands in (chip_b32_k24, measured)"), "{}", w.source());
         let paper = Clock::of(
             Technology::Paper,
             &ChipConfig::default(),

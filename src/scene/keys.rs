@@ -125,7 +125,7 @@ fn why_unused(u: &Uses, section: &str, key: &str) -> Option<String> {
 }
 
 /// Refuses what the scene's outputs ask of a configuration that cannot give it, before
-/// anything runs: WSCG'03's chip has no RTL and no probes; D_CNTR runs the fifo and lifo
+/// anything runs: scenes run WSCG'03's chip as an event model, with no probes; D_CNTR runs the fifo and lifo
 /// traversals only; a cross-check needs an RTL chip of the configuration
 /// ([`rtl_order`](crate::harness::chip_io::rtl_order)). Errors name the key's line, or the
 /// command line's flag.
@@ -152,7 +152,7 @@ pub(super) fn runnable(s: &Scene, w: &Written, text: &str) -> Result<(), String>
             (None, None) => None,
         };
         if let Some((at, what)) = wants {
-            return Err(format!("{at}: WSCG'03's chip (architecture wscg03) is an event model with no RTL and no probes, so it gives no {what}: drop it, or run DATE'05's chip ([chip] architecture = \"date05\", or --architecture date05)"));
+            return Err(format!("{at}: scenes run WSCG'03's chip (architecture wscg03) as an event model, with no probes and no RTL level that matches it clock by clock, so it gives no {what}: drop it, or run DATE'05's chip ([chip] architecture = \"date05\", or --architecture date05)"));
         }
         return Ok(());
     }

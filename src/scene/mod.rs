@@ -175,7 +175,7 @@ fn timing(
 const CLOCK_MHZ: std::ops::RangeInclusive<f64> = 1e-3..=1e5;
 
 /// The clock: an assumed `clock_mhz`, else `technology`'s period for the configuration
-/// (default: measured on OSU 0.18 um; estimated for WSCG'03's chip, which has no RTL).
+/// (default: measured on OSU 0.18 um; estimated for WSCG'03's chip, which scenes run as its event model).
 fn clock(
     cfg: &ChipConfig,
     folds: Folds,

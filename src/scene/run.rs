@@ -861,7 +861,7 @@ mod tests {
         );
         assert!(
             e.starts_with("t:11: [outputs] waveforms: WSCG'03's chip")
-                && e.contains("no RTL and no probes"),
+                && e.contains("with no probes and no RTL level"),
             "{e}"
         );
         let e = refused(
