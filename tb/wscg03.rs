@@ -114,7 +114,7 @@ proptest! {
         let (tr, s) = (&run.trace, &run.stats);
         prop_assert!(tr.check(mode, &golden).is_ok(), "{:?}\n{}", tr.check(mode, &golden), tr.text());
         // the chip clocked register by register answers the same
-        let clocked = collision_chip::cycle::wscg03::clocked::run(&chip, &chip.setup(&pose), first, &p, MAX_CYCLES).unwrap();
+        let clocked = collision_chip::cycle::wscg03::clocked::run(&chip, &chip.setup(&pose), first, &p, MAX_CYCLES, |_, _, _| {}).unwrap();
         prop_assert!(clocked.trace.check(mode, &golden).is_ok(), "clocked: {:?}", clocked.trace.check(mode, &golden));
         if !first {
             let g = golden.counters;
@@ -269,10 +269,11 @@ fn long_lists_hide_the_transforms() {
     assert!(checked > 0, "no long list followed by a speculated pair");
 }
 
-/// A scene on WSCG'03's chip (`[chip] preset = "wscg03"`): the chip's pairs are the golden
-/// list traversal's (the run's golden check fails the run otherwise), whose pairs are the
-/// exact oracle's (no misses, no extras), every pose has its stall counts, and the explain
-/// names WSCG'03's units; a VCD of it is refused.
+/// A scene on WSCG'03's chip (`[chip] preset = "wscg03"`, clocked as its RTL): the chip's
+/// pairs are the golden list traversal's (the run's golden check fails the run otherwise),
+/// whose pairs are the exact oracle's (no misses, no extras), every pose has its clocks
+/// booked (summing to its clocks), and the explain names WSCG'03's units; a VCD of it is
+/// refused.
 #[test]
 fn a_scene_on_wscg03s_chip_answers_as_the_exact_oracle() {
     use collision_chip::scene::{graph::Plan, run::Prepared, Scene};
@@ -299,14 +300,15 @@ fn a_scene_on_wscg03s_chip_answers_as_the_exact_oracle() {
         assert!(
             c.stats.is_none()
                 && c.wscg03
-                    .is_some_and(|w| w.cycles == c.cycles && w.lists > 0),
+                    .as_ref()
+                    .is_some_and(|w| w.booked.total() == c.cycles && w.lists > 0),
             "{c:?}"
         );
     }
     // refused as the scene is read, so --explain and --dot refuse it as run does
     let e = Scene::parse(&format!("{text}waveforms = \"w\"\n"), "t").unwrap_err();
     assert!(
-        e.starts_with("t:13: [outputs] waveforms") && e.contains("no RTL and no probes"),
+        e.starts_with("t:13: [outputs] waveforms") && e.contains("has no probes yet"),
         "{e}"
     );
 }
@@ -521,7 +523,8 @@ fn clocked_chip_answers_as_the_golden_list_traversal() {
         let golden = chip.query(&pose, Mode::All, Traversal::List);
         for first in [false, true] {
             let mode = if first { Mode::First } else { Mode::All };
-            let run = clocked::run(&chip, &setup, first, &Params::RTL, MAX_CYCLES).unwrap();
+            let run =
+                clocked::run(&chip, &setup, first, &Params::RTL, MAX_CYCLES, |_, _, _| {}).unwrap();
             let tr = &run.trace;
             assert!(
                 tr.check(mode, &golden).is_ok(),
@@ -561,7 +564,8 @@ fn clocked_chip_answers_as_the_golden_list_traversal() {
         let golden = chip.query(&pose, Mode::All, Traversal::List);
         for first in [false, true] {
             let mode = if first { Mode::First } else { Mode::All };
-            let run = clocked::run(&chip, &setup, first, &Params::RTL, MAX_CYCLES).unwrap();
+            let run =
+                clocked::run(&chip, &setup, first, &Params::RTL, MAX_CYCLES, |_, _, _| {}).unwrap();
             assert!(
                 run.trace.check(mode, &golden).is_ok(),
                 "teapot/teapot {mode:?}: {:?}",
@@ -685,7 +689,7 @@ fn sequencer_rtl_lockstep() {
 /// TRI_UNIT's side (`in_ready`, a sure verdict, no pair open) as the model's.
 #[test]
 fn chip_core_rtl_lockstep() {
-    use collision_chip::harness::wscg03_io::chip::core_lockstep;
+    use collision_chip::harness::wscg03_io::chip_core::core_lockstep;
     let clocks = std::thread::Builder::new()
         .stack_size(512 << 20)
         .spawn(|| core_lockstep(&collision_chip::harness::wscg03_io::traffic()))

@@ -641,9 +641,13 @@ fn run(path: Option<PathBuf>, o: RunOpts) -> Result<(), String> {
                 how.name()
             ),
         };
+        let model = match scene.architecture {
+            Architecture::Wscg03 => "WSCG'03's chip clocked as its RTL".to_string(),
+            Architecture::Date05 => format!("cycle model: {} queue entries", p.queue_entries),
+        };
         println!(
-            "cycles = the chip's clocks from start to done (cycle model: {} queue entries, {memory});\nchip_us = cycles x the clock period, {};\nsetup_us, settle_us = the host's setup for the pose and its settling of the uncertain pairs with the exact oracle, measured on this machine (wall clock, the fastest of {runs} runs, one pose at a time: noisy);\ne2e_us = setup_us + chip_us + settle_us; sw_us = the golden model's query on this machine (the fastest of {runs} runs, one pose at a time); speedup = sw_us / chip_us; e2e_x = sw_us / e2e_us{how}.",
-            p.queue_entries, clock.source(), runs = collision_chip::measure::TIMING_RUNS
+            "cycles = the chip's clocks from start to done ({model}, {memory});\nchip_us = cycles x the clock period, {};\nsetup_us, settle_us = the host's setup for the pose and its settling of the uncertain pairs with the exact oracle, measured on this machine (wall clock, the fastest of {runs} runs, one pose at a time: noisy);\ne2e_us = setup_us + chip_us + settle_us; sw_us = the golden model's query on this machine (the fastest of {runs} runs, one pose at a time); speedup = sw_us / chip_us; e2e_x = sw_us / e2e_us{how}.",
+            clock.source(), runs = collision_chip::measure::TIMING_RUNS
         );
         if records
             .iter()
@@ -652,7 +656,7 @@ fn run(path: Option<PathBuf>, o: RunOpts) -> Result<(), String> {
             println!("ovf = poses whose pair queue overflowed (listed below): the chip halted with an incomplete answer, so the cycle columns leave them out (-: every pose of the row overflowed) and their misses and extras are that answer's.");
         }
         if scene.architecture == Architecture::Wscg03 {
-            println!("\nWSCG'03's chip: where the compare units' clocks went; dop/c, xf/c = DOP tests, transforms per clock; lists = tau, alpha = aligned node pairs per list; clk/list against WSCG'03 Eq. 5's 100 + (alpha - 2) 10; start = clocks from a list's start to its first compare when its pair was not transformed ahead (WSCG'03: 64); spec% = speculative pairs used; interr = interrupts for triangle words; sram = most pointers in the list SRAMs:");
+            println!("\nWSCG'03's chip: where its clocks went, each once: compare = an aligned bundle into the compare units, load = a tumbled bundle into the DOTADD units, memory = the Memory Controller's head ask waits for its record, transform = for its d' set, list = no ask (the Stack Engine between lists, waiting for flags), drain = the Triangle Unit finishes; dop/c, words/c = DOP tests, memory words per clock; lists = tau, alpha = aligned node pairs per list; clk/list against WSCG'03 Eq. 5's 100 + (alpha - 2) 10:");
             print!("{}", stack_table(&records));
         } else {
             println!("\nwhere the clocks went (share of clocks by what the DOP unit's input did; occupancy = mean units in flight):");

@@ -367,41 +367,46 @@ impl<A: Clocked, B: Clocked> Clocked for Lockstep<A, B> {
     }
 }
 
-/// A level whose memory requests taken are logged as the Verilog testbench prints them
-/// with `+requests` (scripts/verilog/chip_tb.v): `request <cycle> <word address>` per
-/// line, cycle 0 the one whose edge takes `start`.
-pub struct RequestLog<C> {
+/// A level watched clock by clock: `see(t, outputs, inputs)` in every cycle `t` from the
+/// one whose edge takes `start` (cycle 0) on, before its edge, for what a testbench prints
+/// of the ports ([`request_line`], `verilator::PortLog`) where a level has
+/// no probes.
+pub struct Watch<C, F> {
     pub chip: C,
-    pub text: String,
+    see: F,
     cycle: Option<u64>,
 }
 
-impl<C: Clocked> RequestLog<C> {
-    pub fn new(chip: C) -> Self {
-        RequestLog {
+impl<C: Clocked, F: FnMut(u64, &ChipOut, &ChipIn)> Watch<C, F> {
+    pub fn new(chip: C, see: F) -> Self {
+        Watch {
             chip,
-            text: String::new(),
+            see,
             cycle: None,
         }
     }
 }
 
-impl<C: Clocked> Clocked for RequestLog<C> {
+/// The memory requests taken in cycle `t` (outputs `o`, inputs `i`) as the Verilog
+/// testbench prints them with `+requests` (scripts/verilog/chip_tb.v): `request <cycle>
+/// <word address>` lines, from cycle 1.
+pub fn request_line(t: u64, o: &ChipOut, i: &ChipIn) -> Option<String> {
+    (t > 0 && o.mem_req_valid && i.mem_req_ready)
+        .then(|| format!("request {t} {}\n", o.mem_req_addr))
+}
+
+impl<C: Clocked, F: FnMut(u64, &ChipOut, &ChipIn)> Clocked for Watch<C, F> {
     fn outputs(&self) -> ChipOut {
         self.chip.outputs()
     }
 
     fn step(&mut self, i: &ChipIn, probe: bool) -> Option<Vec<u64>> {
-        let o = self.chip.outputs();
         self.cycle = match self.cycle {
             _ if i.start => Some(0),
             c => c.map(|t| t + 1),
         };
-        if let Some(t) = self
-            .cycle
-            .filter(|&t| t > 0 && o.mem_req_valid && i.mem_req_ready)
-        {
-            self.text += &format!("request {t} {}\n", o.mem_req_addr);
+        if let Some(t) = self.cycle {
+            (self.see)(t, &self.chip.outputs(), i);
         }
         self.chip.step(i, probe)
     }

@@ -4,10 +4,10 @@
 //! register writes go to files, and scripts/verilog/chip_tb.v's `+ports` lines (every output
 //! port whenever one changes) are compared with the cycle model's, clock by clock.
 
-use super::chip_io::{self, QueryImage};
+use super::chip_io::QueryImage;
 use crate::chip::memory::{MemClocks, Memory};
+use crate::chip::ports::{ChipIn, ChipOut};
 use crate::chip::probes::probe_valid;
-use crate::chip::rtl::ChipKind;
 use crate::cycle::drive::ChipTrace;
 use std::path::{Path, PathBuf};
 
@@ -53,14 +53,40 @@ pub struct PortLog(Vec<(u64, Ports)>);
 impl PortLog {
     /// Records cycle `t` from the cycle model's [`PROBES`](crate::chip::probes::PROBES) values.
     pub fn record(&mut self, t: u64, probes: &[u64]) {
-        if t == 0 {
-            return;
-        }
         let mut p = [0; PORTS.len()];
         for (k, &port) in PORTS.iter().enumerate() {
             p[k] = probes[probe_index(port)];
         }
-        if self.0.last().is_none_or(|l| l.1 != p) {
+        self.push(t, p);
+    }
+
+    /// Records cycle `t` from a level's outputs `o` and inputs `i` (a level without probes:
+    /// [`Watch`](crate::cycle::drive::Watch)).
+    pub fn record_ports(&mut self, t: u64, o: &ChipOut, i: &ChipIn) {
+        let b = |x: bool| x as u64;
+        let p = [
+            b(o.busy),
+            b(o.done),
+            b(o.overflow),
+            o.max_depth,
+            b(o.mem_req_valid),
+            b(i.mem_req_ready),
+            o.mem_req_addr as u64,
+            b(i.mem_resp.is_some()),
+            b(o.res_valid),
+            b(o.res_uncertain),
+            o.res_tag.0 as u64,
+            o.res_tag.1 as u64,
+            o.dop_tests,
+            o.tri_tests,
+            o.node_fetches,
+            o.tri_fetches,
+        ];
+        self.push(t, p);
+    }
+
+    fn push(&mut self, t: u64, p: Ports) {
+        if t > 0 && self.0.last().is_none_or(|l| l.1 != p) {
             self.0.push((t, p));
         }
     }
@@ -154,16 +180,16 @@ pub fn check_size(chip: &crate::query::Chip, memory: &Memory) -> Result<(), Stri
     Ok(())
 }
 
-/// Builds (or finds built) the Verilator binary of the exported chip `kind` from this
-/// build's chip Verilog; errors say what is missing.
-pub fn chip_binary(kind: ChipKind) -> Result<PathBuf, String> {
+/// Builds (or finds built) the Verilator binary of the exported chip `name` (its Verilog
+/// `verilog()`, this build's); errors say what is missing.
+pub fn chip_binary(name: &str, verilog: impl FnOnce() -> String) -> Result<PathBuf, String> {
     let script = root().join("scripts/run-chip.sh");
     if !script.is_file() {
         return Err(format!("the Verilog cross-check needs the collision-chip repository this binary was built from ({} is missing)", script.display()));
     }
     let dir = root().join("target/cchip");
-    let v = dir.join(format!("{}.v", kind.name()));
-    let text = chip_io::verilog(kind);
+    let v = dir.join(format!("{name}.v"));
+    let text = verilog();
     // rewritten only when it changed, so that the build's inputs keep their times
     if std::fs::read_to_string(&v).ok().as_deref() != Some(&text) {
         std::fs::create_dir_all(&dir)

@@ -198,55 +198,65 @@ pub fn stall_table(records: &[PoseRecord]) -> String {
     out
 }
 
-/// WSCG'03's chip (`[chip] architecture = "wscg03"`): where its compare units' clocks went
-/// (comparing, waiting for a node word, for the tumbled pair's transform, between lists,
-/// the Triangle Unit's drain), DOP tests and transforms per clock, its lists (tau), their
-/// mean aligned node pairs (alpha), clocks per list against WSCG'03 Eq. 5's, the start
-/// latency of a list whose pair was not transformed ahead (§4.1: 64), the speculative pairs used, interrupts for triangle words, the most pointers in the SRAMs.
+/// WSCG'03's chip (`[chip] architecture = "wscg03"`, clocked as its RTL): where its clocks
+/// went, each booked once (`cycle::wscg03::clocked::Booked`: an aligned bundle into the
+/// compare units, a tumbled bundle into the DOTADD units, the head ask waiting for its
+/// record or for its d' set, no ask, the drain), DOP tests and words per clock, its lists
+/// (tau), their mean aligned node pairs (alpha), clocks per list against WSCG'03 Eq. 5's.
 pub fn stack_table(records: &[PoseRecord]) -> String {
     let mut out = String::new();
     let _ = writeln!(
         out,
-        "{:<28} {:>8} {:>7} {:>10} {:>6} {:>7} {:>7} {:>7} {:>7} {:>7} {:>6} {:>9} {:>9} {:>6} {:>6} {:>8} {:>7}",
-        "pose", "compare%", "memory%", "transform%", "list%", "drain%", "dop/c", "xf/c", "words/c", "lists", "alpha", "clk/list", "eq5/list", "start", "spec%", "interr", "sram"
+        "{:<28} {:>8} {:>6} {:>7} {:>10} {:>6} {:>7} {:>7} {:>7} {:>7} {:>6} {:>9} {:>9}",
+        "pose",
+        "compare%",
+        "load%",
+        "memory%",
+        "transform%",
+        "list%",
+        "drain%",
+        "dop/c",
+        "words/c",
+        "lists",
+        "alpha",
+        "clk/list",
+        "eq5/list"
     );
     for (key, g) in groups(records) {
         let c: Vec<&CycleRecord> = g.iter().filter_map(|r| r.cycles.as_ref()).collect();
-        let st: Vec<&crate::cycle::wscg03::Stats> =
-            c.iter().filter_map(|r| r.wscg03.as_ref()).collect();
+        let st: Vec<(&CycleRecord, &crate::scene::record::StackRecord)> = c
+            .iter()
+            .filter_map(|r| Some((*r, r.wscg03.as_ref()?)))
+            .collect();
         if st.is_empty() {
             continue;
         }
-        let sum = |f: &dyn Fn(&crate::cycle::wscg03::Stats) -> u64| {
-            st.iter().map(|s| f(s)).sum::<u64>() as f64
+        let sum = |f: &dyn Fn(&CycleRecord, &crate::scene::record::StackRecord) -> u64| {
+            st.iter().map(|(r, s)| f(r, s)).sum::<u64>() as f64
         };
-        let cycles = sum(&|s| s.cycles).max(1.0);
-        let pc = |f: &dyn Fn(&crate::cycle::wscg03::Stats) -> u64| 100.0 * sum(f) / cycles;
-        let lists = sum(&|s| s.lists).max(1.0);
-        let words = c
-            .iter()
-            .map(|r| r.memory.node_words + r.memory.tri_words)
-            .sum::<u64>() as f64;
+        let cycles = sum(&|r, _| r.cycles).max(1.0);
+        let pc = |f: &dyn Fn(&crate::cycle::wscg03::clocked::Booked) -> u64| {
+            100.0 * sum(&|_, s| f(&s.booked)) / cycles
+        };
+        let lists = sum(&|_, s| s.lists).max(1.0);
+        let dop_tests = sum(&|r, _| r.dop_tests);
+        let words = sum(&|r, _| r.memory.node_words + r.memory.tri_words);
         let _ = writeln!(
             out,
-            "{:<28} {:>8.1} {:>7.1} {:>10.1} {:>6.1} {:>7.1} {:>7.3} {:>7.3} {:>7.3} {:>7.1} {:>6.2} {:>9.1} {:>9.1} {:>6.1} {:>6.1} {:>8.1} {:>7}",
+            "{:<28} {:>8.1} {:>6.1} {:>7.1} {:>10.1} {:>6.1} {:>7.1} {:>7.3} {:>7.3} {:>7.1} {:>6.2} {:>9.1} {:>9.1}",
             key,
-            pc(&|s| s.compare),
-            pc(&|s| s.stall_memory),
-            pc(&|s| s.stall_transform),
-            pc(&|s| s.stall_list),
-            pc(&|s| s.drain),
-            sum(&|s| s.dop_tests) / cycles,
-            sum(&|s| s.transforms) / cycles,
+            pc(&|b| b.compare),
+            pc(&|b| b.load),
+            pc(&|b| b.memory),
+            pc(&|b| b.transform),
+            pc(&|b| b.list),
+            pc(&|b| b.drain),
+            dop_tests / cycles,
             words / cycles,
             lists / st.len() as f64,
-            sum(&|s| s.list_node_pairs) / lists,
-            sum(&|s| s.list_clocks) / lists,
-            figures::eq5_cycles(sum(&|s| s.lists) as u64, sum(&|s| s.list_node_pairs) as u64) / lists,
-            sum(&|s| s.cold_start) / sum(&|s| s.cold_lists).max(1.0),
-            100.0 * sum(&|s| s.spec_used) / sum(&|s| s.spec_pairs).max(1.0),
-            sum(&|s| s.interrupts) / st.len() as f64,
-            st.iter().map(|s| s.max_list_words).max().unwrap_or(0),
+            dop_tests / lists,
+            cycles / lists,
+            figures::eq5_cycles(lists as u64, dop_tests as u64) / lists,
         );
     }
     out
@@ -289,7 +299,7 @@ pub fn memory_table(records: &[PoseRecord]) -> String {
                 .sum::<u64>() as f64
         };
         // A's triangle words fetched (the cache's misses), on either chip
-        let wscg = |f: &dyn Fn(&crate::cycle::wscg03::Stats) -> u64| {
+        let wscg = |f: &dyn Fn(&crate::scene::record::StackRecord) -> u64| {
             c.iter()
                 .filter_map(|r| r.wscg03.as_ref())
                 .map(f)
@@ -314,7 +324,7 @@ pub fn memory_table(records: &[PoseRecord]) -> String {
             sum(&|r| r.memory.bytes) / n / 1024.0,
             sum(&|r| r.memory.node_words + r.memory.tri_words) / cycles,
             busy,
-            100.0 * (st(&|s| s.stall_memory) + wscg(&|s| s.stall_memory)) / cycles,
+            100.0 * (st(&|s| s.stall_memory) + wscg(&|s| s.booked.memory)) / cycles,
             sum(&|r| r.memory.page_hits) / n,
             sum(&|r| r.memory.page_misses) / n,
             sum(&|r| r.memory.bank_conflicts) / n,

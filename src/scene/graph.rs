@@ -131,12 +131,13 @@ impl Unit {
 
     /// What WSCG'03's units do in `s` (`None`: the unit is the same as DATE'05's).
     fn does_wscg03(self, s: &Scene) -> Option<String> {
-        let w = &s.stack;
+        use crate::chip::rtl as r;
+        let (k, p) = (s.cfg.k, &s.params);
         Some(match self {
-            Unit::DCntr => format!("WSCG'03's Stack Engine: lists of aligned pointers in two SRAMs (read latency {}), one list per tumbled sibling pair, left list first, step up when both are done; interrupts for triangle words", w.sram_latency),
-            Unit::MemoryPort => format!("WSCG'03's Memory Controller: node and triangle words in order, {} node words ahead of the compare units, A's triangle words through a {}-line cache, B's in a two-entry SRAM", w.word_buffer, s.cfg.tri_cache),
-            Unit::DopUnit => format!("WSCG'03's DOP Unit: two DOTADD units ({} stages) transform each tumbled pair once per list, and the left parent's children speculatively; an aligned DOP against both in ceil(node bits / {}) clocks, flags {} clocks later", w.dotadd_stages, w.data_bus_bits, w.compare_latency),
-            Unit::TriUnit => format!("WSCG'03's Triangle Unit: a pair every {} clocks, verdict {} clocks later (TRI_UNIT's T.CHECKs)", w.tri_interval, w.tri_latency),
+            Unit::DCntr => format!("WSCG'03's Stack Engine, clocked as its RTL: lists of aligned pointers in two SRAMs of {} (read latency 1), its sequencer taking one list per tumbled sibling group, left list first, stepping up when both are done", 1 << r::LIST_SRAM_BITS),
+            Unit::MemoryPort => format!("WSCG'03's Memory Controller: a node pair per record and burst, {} asks, {} records held or in flight, at most {} requests outstanding; triangle words first, A's through a {}-line cache, B's in a two-entry SRAM", r::MC_ASKS, r::MC_RECORDS, p.outstanding, s.cfg.tri_cache),
+            Unit::DopUnit => format!("WSCG'03's DOP Unit: two DOTADD units transform a tumbled group into one of two d' sets in {} clocks, the left member's children speculatively into the other; an aligned DOP against both siblings in {} bundles of 256 bits, flags {} clocks after its last", r::wscg03_transform_clocks(k), k.div_ceil(8), r::WSCG03_COMPARE_LATENCY),
+            Unit::TriUnit => format!("WSCG'03's Triangle Unit: the input stage, then TRI_UNIT's two T.CHECKs (a pair a clock, verdict {} clocks later)", p.tri_latency),
             Unit::ResultPort => "intersecting and uncertain pairs to the host, read at once".into(),
             Unit::GoldenCheck => "the cycle model's pairs against the golden list traversal's (WSCG'03 Algorithm 2)".into(),
             _ => return None,

@@ -89,15 +89,15 @@ fn why_unused(u: &Uses, section: &str, key: &str) -> Option<String> {
             "sets the chip the cycle model runs, and this scene's outputs run only the golden model: add cycles = true (or memory, waveforms, cross_check) to [outputs], or remove it".into()
         }
         ("chip", "layout" | "node_cache" | "dop_bits") if wscg03 => {
-            "is not used by WSCG'03's chip, which asks for each node word of a list (the `words` layout) and holds no node records: remove it, or set [chip] architecture = \"date05\"".into()
+            "is not used by WSCG'03's chip, whose memory holds a node pair per record (the `records` layout of one level, full distances) and which holds its records in its Memory Controller: remove it, or set [chip] architecture = \"date05\"".into()
         }
         ("chip", "tri_cache_b") if wscg03 => {
             "is not used by WSCG'03's chip, whose B side holds its triangle words in a two-entry SRAM: remove it, or set [chip] architecture = \"date05\"".into()
         }
         ("timing", k) if wscg03 && k != "technology" && k != "clock_mhz" => {
-            "is DATE'05's chip's (D_CNTR, its DOP unit, TRI_UNIT, the memory port), not used by WSCG'03's chip, whose timing is [stack_engine]'s: remove it, or set [chip] architecture = \"date05\"".into()
+            "is DATE'05's chip's (D_CNTR, its DOP unit, TRI_UNIT, the memory port), not used by WSCG'03's chip, which runs clocked as its RTL (its units' latencies are the RTL's): remove it, or set [chip] architecture = \"date05\"".into()
         }
-        ("stack_engine", _) if !wscg03 => "is WSCG'03's chip's timing, not used by DATE'05's chip, which this scene runs: remove it, or set [chip] architecture = \"wscg03\"".into(),
+        ("stack_engine", _) => "is WSCG'03's chip's timing as the paper gives it (its event model, Fig. 13 of `cchip figures`), not used by scenes: DATE'05's chip has none, and scenes run WSCG'03's clocked as its RTL, whose latencies are the RTL's (docs/explanation/architecture.md, \"WSCG'03's chip\"): remove it".into(),
         ("timing", "dop_latency") if u.dop_interval > 1 => format!(
             "is the unfolded DOP unit's latency, not used by the folded one (dop_interval {}), whose latency is its schedule's ({} clocks): remove dop_latency, or set dop_interval = 1",
             u.dop_interval,
@@ -125,7 +125,7 @@ fn why_unused(u: &Uses, section: &str, key: &str) -> Option<String> {
 }
 
 /// Refuses what the scene's outputs ask of a configuration that cannot give it, before
-/// anything runs: scenes run WSCG'03's chip as an event model, with no probes; D_CNTR runs the fifo and lifo
+/// anything runs: WSCG'03's chip has no probes yet and streams binary32; D_CNTR runs the fifo and lifo
 /// traversals only; a cross-check needs an RTL chip of the configuration
 /// ([`rtl_order`](crate::harness::chip_io::rtl_order)). Errors name the key's line, or the
 /// command line's flag.
@@ -146,13 +146,11 @@ pub(super) fn runnable(s: &Scene, w: &Written, text: &str) -> Result<(), String>
         )
     };
     if s.architecture == Architecture::Wscg03 {
-        let wants = match (plan.cross_check, &s.outputs.waveforms) {
-            (Some(c), _) => Some((at("outputs", "cross_check", "--rtl"), cross(c))),
-            (None, Some(_)) => Some((at("outputs", "waveforms", "--vcd"), "waveforms".to_string())),
-            (None, None) => None,
-        };
-        if let Some((at, what)) = wants {
-            return Err(format!("{at}: scenes run WSCG'03's chip (architecture wscg03) as an event model, with no probes and no RTL level that matches it clock by clock, so it gives no {what}: drop it, or run DATE'05's chip ([chip] architecture = \"date05\", or --architecture date05)"));
+        if s.outputs.waveforms.is_some() {
+            return Err(format!("{}: WSCG'03's chip (architecture wscg03) has no probes yet, so it gives no waveforms: drop it, or run DATE'05's chip ([chip] architecture = \"date05\", or --architecture date05)", at("outputs", "waveforms", "--vcd")));
+        }
+        if plan.runs(Unit::DCntr) && s.cfg.format.dop != crate::format::Format::BINARY32 {
+            return Err(format!("{}: WSCG'03's chip streams eight binary32 distances a clock on its 256-bit bus (its RTL), so its clocks are binary32's: set format = \"binary32\", or run DATE'05's chip ([chip] architecture = \"date05\") for other formats", at("chip", "format", "[chip] format")));
         }
         return Ok(());
     }

@@ -14,7 +14,7 @@ use crate::chip::params::Params;
 use crate::chip::preset::Preset;
 use crate::chip::reg::Mode;
 use crate::chip::timing::{Clock, Folds, Technology};
-use crate::chip::wscg03::{Architecture, StackParams};
+use crate::chip::wscg03::Architecture;
 use crate::pose::{sweep_poses, Pose, ScenePose, Sweep};
 use crate::traversal::Traversal;
 use serde::Deserialize;
@@ -40,8 +40,10 @@ struct File {
     memory: MemorySection,
     /// [`Params`], `technology` and `clock_mhz`, read in two steps ([`timing`]).
     timing: Option<Keys>,
-    #[serde(default)]
-    stack_engine: StackParams,
+    /// `[stack_engine]`, read only to be refused (`keys::why_unused`): scenes run WSCG'03's
+    /// chip as its RTL.
+    #[serde(rename = "stack_engine")]
+    _stack_engine: Option<Keys>,
 }
 
 /// A section's keys, each with its place in the file.
@@ -118,7 +120,7 @@ fn chip(
     let mut cfg = over(&preset.chip(), keys, text, "[chip]", &[])?;
     if arch == Architecture::Wscg03 {
         (cfg.layout, cfg.node_cache, cfg.dop_bits, cfg.tri_cache_b) =
-            (MemLayout::Words, 1, DopBits::Full, 1);
+            (MemLayout::Records, 1, DopBits::Full, 1);
     }
     Ok((preset, arch, cfg))
 }
@@ -190,7 +192,7 @@ fn clock(
             Err(format!("[timing] clock_mhz must be from {} to {} MHz, not {mhz:?}", CLOCK_MHZ.start(), CLOCK_MHZ.end()))
         }
         (Some(mhz), None) => Ok(Clock::assumed(mhz, format!("the scene's clock_mhz = {mhz}, assumed"))),
-        (None, t) => Ok(Clock::of(t.unwrap_or_default(), cfg, folds, preset)?.for_architecture(arch)),
+        (None, t) => Ok(Clock::of(t.unwrap_or_default(), cfg, folds, preset)?.for_architecture(arch, cfg)),
     }
 }
 
@@ -488,9 +490,8 @@ pub struct Scene {
     pub objects: Objects,
     /// The configuration the scene's keys override.
     pub preset: Preset,
-    /// The chip the cycle model runs, and WSCG'03's timing.
+    /// The chip the cycle model runs.
     pub architecture: Architecture,
-    pub stack: StackParams,
     pub cfg: ChipConfig,
     pub mode: Mode,
     pub traversal: Traversal,
@@ -521,7 +522,7 @@ impl Scene {
     /// (WSCG'03's chip: its own units' timing; without an output that runs the chip, no
     /// clock).
     pub fn configuration(&self) -> String {
-        let (c, p, w) = (&self.cfg, &self.params, &self.stack);
+        let (c, p) = (&self.cfg, &self.params);
         let (timing, memory_side) = match self.architecture {
             Architecture::Date05 => (
                 format!(
@@ -540,13 +541,16 @@ impl Scene {
                     }
                 ),
             ),
-            Architecture::Wscg03 => (
-                format!(
-                    "stack_engine: sram_latency {}, dotadd_stages {}, data_bus_bits {}, compare_latency {}, word_buffer {}, tri_interval {}, tri_latency {}",
-                    w.sram_latency, w.dotadd_stages, w.data_bus_bits, w.compare_latency, w.word_buffer, w.tri_interval, w.tri_latency
-                ),
-                "layout words (a node word per request, no node records held)".to_string(),
-            ),
+            Architecture::Wscg03 => {
+                use crate::chip::rtl as r;
+                (
+                    format!(
+                        "timing (its RTL's): list SRAMs of {} pointers (read 1 clock), an aligned DOP in {} bundles of 256 bits, a transform {} clocks, compare latency {}, {} asks and {} records in the Memory Controller, outstanding {}, {}",
+                        1 << r::LIST_SRAM_BITS, c.k.div_ceil(8), r::wscg03_transform_clocks(c.k), r::WSCG03_COMPARE_LATENCY, r::MC_ASKS, r::MC_RECORDS, p.outstanding, tri_timing(p)
+                    ),
+                    "layout records (a node pair per record, one burst)".to_string(),
+                )
+            }
         };
         let clock = self.clock.as_ref().map_or(
             "none (no output runs the cycle model)".to_string(),
@@ -630,7 +634,6 @@ impl Scene {
         };
         written.unused(text, &uses).map_err(at_line)?;
         params.memory = memory.map_err(err)?;
-        f.stack_engine.check().map_err(err)?;
         cfg.check().map_err(|e| {
             // the key the error is about, where the scene wrote it (else the preset's)
             let line = [
@@ -712,7 +715,6 @@ impl Scene {
             objects: f.objects,
             preset,
             architecture,
-            stack: f.stack_engine,
             cfg,
             mode: f.query.mode.unwrap_or(Mode::All),
             traversal: f.query.traversal.unwrap_or(Traversal::Lifo),

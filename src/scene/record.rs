@@ -62,8 +62,8 @@ pub struct CycleRecord {
     /// TRI_UNIT) the chip ran: in all-pairs queries the golden model's counts.
     pub dop_tests: u64,
     pub tri_tests: u64,
-    /// Most queue entries (two node pairs each) waiting at once; WSCG'03's chip: most
-    /// aligned pointers in its list SRAMs.
+    /// Most queue entries (two node pairs each) waiting at once; WSCG'03's chip: the
+    /// deepest level of its lists.
     pub max_entries: u64,
     pub overflow: bool,
     /// The memory model's traffic.
@@ -74,15 +74,26 @@ pub struct CycleRecord {
     /// Where the clocks went (scenes asking for cycles or memory).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub stats: Option<crate::cycle::chip::Stats>,
-    /// WSCG'03's chip: where its clocks went, its lists and transforms.
+    /// WSCG'03's chip: where its clocks went and its lists.
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub wscg03: Option<crate::cycle::wscg03::Stats>,
+    pub wscg03: Option<StackRecord>,
     /// The traversal VCD written, if any.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub vcd: Option<String>,
     /// The level that ran the pose beside the cycle model and agreed clock by clock.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub cross_checked: Option<String>,
+}
+
+/// WSCG'03's chip clocked as its RTL: each clock booked once
+/// ([`Booked`](crate::cycle::wscg03::clocked::Booked)), the lists it processed (WSCG'03
+/// Eq. 5's tau), and A's triangle words fetched.
+#[derive(Clone, Debug, Serialize)]
+pub struct StackRecord {
+    pub booked: crate::cycle::wscg03::clocked::Booked,
+    pub lists: u64,
+    /// A's triangle words fetched (its triangle cache's misses).
+    pub tri_fetches_a: u64,
 }
 
 impl CycleRecord {

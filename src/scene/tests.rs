@@ -420,7 +420,7 @@ fn tri_interval_key() {
     )
     .unwrap_err();
     assert!(
-        e.contains("[timing] tri_interval is DATE'05's chip's") && e.contains("[stack_engine]"),
+        e.contains("[timing] tri_interval is DATE'05's chip's") && e.contains("clocked as its RTL"),
         "{e}"
     );
     // the command line's architecture over a scene's keys: the same refusal as the preset's
@@ -742,22 +742,30 @@ fn chip_presets_and_their_overrides() {
         ),
         (Architecture::Date05, 128, MemLayout::Records, 16)
     );
-    // WSCG'03's chip reads its own memory side; DATE'05's has no [stack_engine]
-    assert_eq!((w.cfg.layout, w.cfg.node_cache), (MemLayout::Words, 1));
-    let e = parse(
-        "[chip]\npreset = \"wscg03\"\narchitecture = \"date05\"\n[stack_engine]\nword_buffer = 4",
-    )
-    .unwrap_err();
-    assert!(e.starts_with("s:13: [stack_engine] word_buffer is WSCG'03's chip's timing, not used by DATE'05's chip"), "{e}");
+    // WSCG'03's chip reads its own memory side (a node pair per record); no scene uses
+    // [stack_engine], the paper's timing of its event model
+    assert_eq!((w.cfg.layout, w.cfg.node_cache), (MemLayout::Records, 1));
+    for arch in ["date05", "wscg03"] {
+        let e = parse(&format!(
+            "[chip]\npreset = \"wscg03\"\narchitecture = \"{arch}\"\n[stack_engine]\nword_buffer = 4"
+        ))
+        .unwrap_err();
+        assert!(
+            e.starts_with(
+                "s:13: [stack_engine] word_buffer is WSCG'03's chip's timing as the paper gives it"
+            ),
+            "{e}"
+        );
+    }
     let e = parse("[chip]\narchitecture = \"wscg04\"").unwrap_err();
     assert!(
         e.starts_with("s:10:") && e.contains("\"date05\" or \"wscg03\""),
         "{e}"
     );
-    let e =
-        parse("[chip]\narchitecture = \"wscg03\"\n[stack_engine]\ntri_interval = 0").unwrap_err();
+    // WSCG'03's chip streams binary32
+    let e = parse("[chip]\narchitecture = \"wscg03\"\nformat = \"e8m15\"").unwrap_err();
     assert!(
-        e.contains("[stack_engine] tri_interval must be at least 1"),
+        e.starts_with("s:11: [chip] format: WSCG'03's chip streams eight binary32 distances"),
         "{e}"
     );
     // --preset replaces the scene's preset, not its keys

@@ -30,7 +30,7 @@ use crate::chip::layout::{node_ids, node_records, tri_records};
 use crate::chip::ports::{ChipIn, ChipOut, Clocked};
 use crate::chip::reg;
 use crate::chip::rtl::{LIST_LEVELS, LIST_SRAM_BITS, MC_ASKS};
-use crate::cycle::drive::ChipTrace;
+use crate::cycle::drive::{ChipTrace, Watch};
 use crate::cycle::tri_unit::TriUnit;
 use crate::dop::Node;
 use crate::golden::memory::ObjectImage;
@@ -41,11 +41,13 @@ pub struct ClockedRun {
     pub trace: ChipTrace,
     pub lists: u64,
     pub booked: Booked,
+    /// A's triangle words fetched (its triangle cache's misses).
+    pub tri_fetches_a: u64,
 }
 
 /// Where a query's clocks went: each clock from `start` to `done` booked to what the DOP
 /// Unit's input did, or what its head ask waited for.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize)]
 pub struct Booked {
     /// An aligned bundle streams into the compare units.
     pub compare: u64,
@@ -427,7 +429,7 @@ fn records_cfg(cfg: &crate::chip::config::ChipConfig) -> crate::chip::config::Ch
 /// `start`, then clocks until `done`, the memory of `p` serving it, the host reading every
 /// result at once, at most `max_cycles` clocks.
 fn drive(
-    c: &mut Chip,
+    c: &mut impl Clocked,
     chip: &crate::query::Chip,
     img: &Images,
     (setup, first): (&[(u32, u32)], bool),
@@ -448,21 +450,30 @@ fn drive(
 
 /// One query on WSCG'03's chip clocked register by register: `chip`'s trees, B placed by
 /// `setup`, all pairs or the first hit (`first`), the memory and TRI_UNIT of `p`, at most
-/// `max_cycles` clocks.
+/// `max_cycles` clocks; `see` watches its ports every clock ([`Watch`]).
 pub fn run(
     chip: &crate::query::Chip,
     setup: &crate::golden::host::HostSetup,
     first: bool,
     p: &crate::chip::params::Params,
     max_cycles: u64,
+    see: impl FnMut(u64, &ChipOut, &ChipIn),
 ) -> Result<ClockedRun, String> {
     let img = images(chip);
     let mut c = Chip::new(chip, &img, setup, p)?;
-    let trace = drive(&mut c, chip, &img, (&[], first), p, max_cycles)?;
+    let trace = drive(
+        &mut Watch::new(&mut c, see),
+        chip,
+        &img,
+        (&[], first),
+        p,
+        max_cycles,
+    )?;
     Ok(ClockedRun {
         trace,
         lists: c.lists(),
         booked: c.booked,
+        tri_fetches_a: c.mc.tri_fetches_a,
     })
 }
 

@@ -107,6 +107,8 @@ pub struct MemoryController<'a> {
     bases: [u32; 4],
     pub node_fetches: u64,
     pub tri_fetches: u64,
+    /// A's triangle words of them (A's triangle cache's misses).
+    pub tri_fetches_a: u64,
 }
 
 /// Bundles of eight distances a DOP takes on the 256-bit bus.
@@ -135,6 +137,7 @@ impl<'a> MemoryController<'a> {
             bases,
             node_fetches: 0,
             tri_fetches: 0,
+            tri_fetches_a: 0,
         }
     }
 
@@ -247,6 +250,7 @@ impl<'a> MemoryController<'a> {
         self.tags.push_back((dst, record));
         if dst.is_tri() {
             self.tri_fetches += 1;
+            self.tri_fetches_a += (dst == Dst::TriA) as u64;
         } else {
             self.node_inflight += 1;
             self.node_fetches += 1;

@@ -30,8 +30,10 @@ use crate::traversal::Traversal;
 use rust_hdl::prelude::*;
 use std::fmt::Write as _;
 
+mod query_lists;
 mod query_set;
-pub use query_set::{queries, query_mesh, write_vectors, ChipQuery, PreparedQuery};
+pub use query_lists::{queries, write_vectors};
+pub use query_set::{query_mesh, ChipQuery, PreparedQuery};
 #[cfg(test)]
 mod tests;
 

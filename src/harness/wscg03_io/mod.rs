@@ -4,9 +4,11 @@
 //! clocked model ([`ClockedDopUnit`]) answers every clock; the RTL's ports as the model's
 //! ([`set_inputs`], [`outputs`]); the Stack Engine's lists driven as its sequencer would
 //! drive them ([`list_traffic`]); the Triangle Unit's input stage ([`tri_unit`]); whole
-//! queries' traffic of the Memory Controller and the sequencer ([`traffic`]).
+//! queries' traffic of the Memory Controller and the sequencer ([`traffic`]); the chip's
+//! core ([`chip_core`]) and the chip ([`chip`]) in RTL.
 
 pub mod chip;
+pub mod chip_core;
 pub mod memory_controller;
 pub mod sequencer;
 pub mod tri_unit;
