@@ -818,3 +818,42 @@ fn wscg03_checked_in_traces() {
         std::fs::write(out.join(format!("{}.requests", q.name)), reqs).unwrap();
     }
 }
+
+/// WSCG'03's chip as scenes run it (the `wscg03` preset: clocked as its RTL on its DDR
+/// SDRAM) on every vendored mesh, scaled into the unit cube, in contact: its pairs are the
+/// golden list traversal's in all-pairs and first-hit mode (the run's golden check fails
+/// the run otherwise), and in all-pairs mode the exact oracle's.
+#[test]
+fn wscg03s_chip_on_every_vendored_mesh() {
+    use collision_chip::scene::{run::Prepared, Scene};
+    for (a, b, d) in [
+        ("bunny", "bunny", 1.4),
+        ("teapot", "teapot", 1.4),
+        ("dragon-11k", "dragon-11k", 1.4),
+        ("bunny", "dragon-11k", 1.4),
+    ] {
+        for mode in ["all", "first"] {
+            let text = format!("[objects]\na = \"{a}\"\nb = \"{b}\"\nunit_cube = true\n[chip]\npreset = \"wscg03\"\n[query]\nmode = \"{mode}\"\ntraversal = \"list\"\n[sweep]\ndistances = [{d}]\norientations = 1\nseed = 3\n[outputs]\naccuracy = true\ncycles = true\n");
+            let s = Scene::parse(&text, "test").unwrap();
+            let run = Prepared::new(&s, |spec| {
+                let m = collision_chip::mesh::resolve(spec).map_err(|e| e.to_string())?;
+                m.scaled_into_unit_cube().map_err(|e| e.to_string())
+            })
+            .unwrap()
+            .run(|| ())
+            .unwrap_or_else(|e| panic!("{a}/{b} {mode}: {e}"));
+            for r in &run.records {
+                let c = r.cycles.as_ref().unwrap();
+                if mode == "all" {
+                    let acc = r.accuracy.as_ref().unwrap();
+                    assert_eq!((acc.misses, acc.extras), (0, 0), "{a}/{b}");
+                }
+                println!(
+                    "{a}/{b} {mode}: {} clocks, {} pairs",
+                    c.cycles, r.pair_count
+                );
+                assert!(r.pair_count > 0, "{a}/{b} at {d}: in contact");
+            }
+        }
+    }
+}
