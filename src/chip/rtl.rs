@@ -286,6 +286,16 @@ pub fn rounding_tag(r: Rounding) -> &'static str {
 /// exported Verilog's name in rtl/, without `.v`.
 pub const WSCG03_CHIP: &str = "chip_wscg03_b32_k24";
 
+/// rust-hdl's speed on WSCG'03's chip, clocks per second on this project's machine (the
+/// three queries of tb/wscg03.rs `chip_rtl_lockstep`: 3,025 clocks in 64 s): for estimates.
+pub const WSCG03_RTL_CLOCKS_PER_SECOND: f64 = 45.0;
+
+/// Whether WSCG'03's RTL chip is built for `cfg` (binary32, k = 24, T.CHECK to
+/// nearest-even: the configuration of [`ChipKind::K24B32`], whose memory image it reads).
+pub fn wscg03_builds(cfg: &ChipConfig) -> bool {
+    ChipKind::of(cfg, 1, 1, Depth::Asic) == Some(ChipKind::K24B32)
+}
+
 /// The RTL chips, one row each: the kind's name, the exported file's name in `rtl/`, the
 /// module of `crate::rtl` that stamps it out, its configuration, whether it also reads the
 /// `records` layout (host register [`MODE`](super::reg::MODE) bit 2; its memory word then a record), the clocks

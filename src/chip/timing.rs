@@ -623,7 +623,7 @@ impl Clock {
             );
             return self;
         };
-        let built = ChipKind::of(cfg, 1, 1, Depth::Asic) == Some(ChipKind::K24B32);
+        let built = rtl::wscg03_builds(cfg);
         (self.period_ns, self.slowest, self.not_measured) = (ns, Some(name.into()), vec![]);
         (self.source, self.estimate) = match built {
             true => (PeriodSource::Measured, None),

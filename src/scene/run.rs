@@ -394,11 +394,14 @@ impl<'s> Prepared<'s> {
         let cross_checked = match self.plan.cross_check {
             None => None,
             Some(CrossCheck::Rtl) => {
-                let hours = run.trace.cycles as f64 / WSCG03_RTL_CLOCKS_PER_SECOND / 3600.0;
+                let hours = run.trace.cycles as f64
+                    / crate::chip::rtl::WSCG03_RTL_CLOCKS_PER_SECOND
+                    / 3600.0;
                 if hours > 0.5 {
                     return Err(format!(
-                        "pose {i}: the rust-hdl cross-check would take about {hours:.1} hours ({} clocks at ~{WSCG03_RTL_CLOCKS_PER_SECOND} clocks/s); use smaller meshes, cross_check = \"verilog\", or drop cross_check",
-                        run.trace.cycles
+                        "pose {i}: the rust-hdl cross-check would take about {hours:.1} hours ({} clocks at ~{} clocks/s); use smaller meshes, cross_check = \"verilog\", or drop cross_check",
+                        run.trace.cycles,
+                        crate::chip::rtl::WSCG03_RTL_CLOCKS_PER_SECOND
                     ));
                 }
                 let max = 2 * run.trace.cycles + 1000;
@@ -443,10 +446,6 @@ impl<'s> Prepared<'s> {
         Ok(r)
     }
 }
-
-/// rust-hdl's speed on WSCG'03's chip, clocks per second on this project's machine (the
-/// three queries of tb/wscg03.rs `chip_rtl_lockstep`: 3,025 clocks in 64 s): for estimates.
-const WSCG03_RTL_CLOCKS_PER_SECOND: f64 = 45.0;
 
 /// A scene whose outputs run the chip has its clock ([`Scene::clock`]).
 const CLOCKED: &str = "a scene that runs the cycle model has a clock";

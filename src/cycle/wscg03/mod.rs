@@ -132,7 +132,7 @@ impl MemCtl {
 /// WSCG'03's chip reads a node word per request (its Stack Engine asks for each node of a
 /// list, §4.2) from an image of one node or triangle word per record: the `words` layout,
 /// whatever layout `cfg` gives DATE'05's chip.
-pub fn layout(cfg: &crate::chip::config::ChipConfig) -> crate::chip::layout::Layout {
+fn layout(cfg: &crate::chip::config::ChipConfig) -> crate::chip::layout::Layout {
     crate::chip::layout::Layout::new(&crate::chip::config::ChipConfig {
         layout: crate::chip::config::MemLayout::Words,
         ..*cfg

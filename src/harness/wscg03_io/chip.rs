@@ -8,7 +8,7 @@ use crate::chip::config::MemLayout;
 use crate::chip::memory::{MemTiming, Memory};
 use crate::chip::params::Params;
 use crate::chip::reg::{self, Mode, Order};
-use crate::chip::rtl::{ChipKind, Depth};
+use crate::chip::rtl::ChipKind;
 use crate::cycle::drive::{request_line, run_query, ChipTrace, Lockstep, Reader, Watch};
 use crate::cycle::wscg03::clocked;
 use crate::cycle::wscg03::memory_controller::Images;
@@ -32,11 +32,9 @@ pub fn query_image(
     p: &Params,
 ) -> Result<(Images, QueryImage), String> {
     let cfg = chip.cfg;
-    if cfg.layout != MemLayout::Records
-        || ChipKind::of(&cfg, 1, 1, Depth::Asic) != Some(ChipKind::K24B32)
-    {
+    if cfg.layout != MemLayout::Records || !crate::chip::rtl::wscg03_builds(&cfg) {
         return Err(format!(
-            "WSCG'03's RTL chip is binary32 with k = 24, T.CHECK to nearest-even and the records layout; this query has k = {}, format {}, layout {:?}: set [chip] preset = \"wscg03\"",
+            "WSCG'03's RTL chip is binary32 with k = 24, T.CHECK to nearest-even and the records layout; this query has k = {}, format {}, layout {:?}: use the wscg03 preset's k = 24 and format = \"binary32\", or drop cross_check",
             cfg.k, cfg.format, cfg.layout
         ));
     }
