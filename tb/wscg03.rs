@@ -311,6 +311,18 @@ fn a_scene_on_wscg03s_chip_answers_as_the_exact_oracle() {
         e.starts_with("t:13: [outputs] waveforms") && e.contains("has no probes yet"),
         "{e}"
     );
+    // a cross-check of a k its RTL is not built for is refused before anything runs
+    let k14 = text.replace("preset = \"wscg03\"\n", "preset = \"wscg03\"\nk = 14\n");
+    let s = Scene::parse(&format!("{k14}cross_check = \"rtl\"\n"), "t").unwrap();
+    let e = Prepared::new(&s, |spec| {
+        collision_chip::mesh::resolve(spec).map_err(|e| e.to_string())
+    })
+    .err()
+    .expect("refused");
+    assert!(
+        e.contains("WSCG'03's RTL chip is binary32 with k = 24") && e.contains("k = 14"),
+        "{e}"
+    );
 }
 
 /// The lists of the list traversal as WSCG'03's Stack Engine makes them (a tumbled group
