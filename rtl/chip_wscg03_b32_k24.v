@@ -6378,6 +6378,18 @@ module top$core$lists(clock,clear,append,wr_side,wr_ptr,read,next_list,level,bra
     reg  [15:0] pos$d;
     wire  [15:0] pos$q;
     reg  pos$clock;
+    reg  [15:0] rem$d;
+    wire  [15:0] rem$q;
+    reg  rem$clock;
+    reg  cur_b$d;
+    wire  cur_b$q;
+    reg  cur_b$clock;
+    reg  [15:0] wa_l$d;
+    wire  [15:0] wa_l$q;
+    reg  wa_l$clock;
+    reg  [15:0] wa_r$d;
+    wire  [15:0] wa_r$q;
+    reg  wa_r$clock;
     reg  up$d;
     wire  up$q;
     reg  up$clock;
@@ -6875,7 +6887,7 @@ module top$core$lists(clock,clear,append,wr_side,wr_ptr,read,next_list,level,bra
     reg  len_r$31$clock;
     
     // Local signals
-    reg  c_b;
+    reg  c_b_up;
     reg  [15:0] c_cs_l;
     reg  [15:0] c_cs_r;
     reg  [15:0] c_cl_l;
@@ -6886,7 +6898,6 @@ module top$core$lists(clock,clear,append,wr_side,wr_ptr,read,next_list,level,bra
     reg  [15:0] c_nl_r;
     reg  [4:0] c_l1;
     reg  [15:0] c_cur_start;
-    reg  [15:0] c_rem;
     reg  [15:0] c_raddr;
     reg  c_idle;
     reg  c_read;
@@ -6930,6 +6941,26 @@ module top$core$lists(clock,clear,append,wr_side,wr_ptr,read,next_list,level,bra
         .d(pos$d),
         .q(pos$q),
         .clock(pos$clock)
+    );
+    top$core$lists$len_l$0 rem(
+        .d(rem$d),
+        .q(rem$q),
+        .clock(rem$clock)
+    );
+    top$core$done_r cur_b(
+        .d(cur_b$d),
+        .q(cur_b$q),
+        .clock(cur_b$clock)
+    );
+    top$core$lists$len_l$0 wa_l(
+        .d(wa_l$d),
+        .q(wa_l$q),
+        .clock(wa_l$clock)
+    );
+    top$core$lists$len_l$0 wa_r(
+        .d(wa_r$d),
+        .q(wa_r$q),
+        .clock(wa_r$clock)
     );
     top$core$done_r up(
         .d(up$d),
@@ -7766,7 +7797,7 @@ module top$core$lists(clock,clear,append,wr_side,wr_ptr,read,next_list,level,bra
         rd_v$d = rd_v$q;
         rd_side$d = rd_side$q;
         c_l1 = lvl$q + 32'h1;
-        c_b = 1'b0;
+        c_b_up = 1'b0;
         c_cs_l = 32'h0;
         c_cs_r = 32'h0;
         c_cl_l = 32'h0;
@@ -7776,11 +7807,13 @@ module top$core$lists(clock,clear,append,wr_side,wr_ptr,read,next_list,level,bra
         c_nl_l = 32'h0;
         c_nl_r = 32'h0;
         if (lvl$q == idx$0) begin
-            c_b = br$0$q;
             c_cs_l = start_l$0$q;
             c_cs_r = start_r$0$q;
             c_cl_l = len_l$0$q;
             c_cl_r = len_r$0$q;
+        end
+        if (lvl$q == idx$0 + 32'h1) begin
+            c_b_up = br$0$q;
         end
         if ((c_l1 == idx$0) & (lvl$q != 32'h1f)) begin
             c_ns_l = start_l$0$q;
@@ -7789,11 +7822,13 @@ module top$core$lists(clock,clear,append,wr_side,wr_ptr,read,next_list,level,bra
             c_nl_r = len_r$0$q;
         end
         if (lvl$q == idx$1) begin
-            c_b = br$1$q;
             c_cs_l = start_l$1$q;
             c_cs_r = start_r$1$q;
             c_cl_l = len_l$1$q;
             c_cl_r = len_r$1$q;
+        end
+        if (lvl$q == idx$1 + 32'h1) begin
+            c_b_up = br$1$q;
         end
         if ((c_l1 == idx$1) & (lvl$q != 32'h1f)) begin
             c_ns_l = start_l$1$q;
@@ -7802,11 +7837,13 @@ module top$core$lists(clock,clear,append,wr_side,wr_ptr,read,next_list,level,bra
             c_nl_r = len_r$1$q;
         end
         if (lvl$q == idx$2) begin
-            c_b = br$2$q;
             c_cs_l = start_l$2$q;
             c_cs_r = start_r$2$q;
             c_cl_l = len_l$2$q;
             c_cl_r = len_r$2$q;
+        end
+        if (lvl$q == idx$2 + 32'h1) begin
+            c_b_up = br$2$q;
         end
         if ((c_l1 == idx$2) & (lvl$q != 32'h1f)) begin
             c_ns_l = start_l$2$q;
@@ -7815,11 +7852,13 @@ module top$core$lists(clock,clear,append,wr_side,wr_ptr,read,next_list,level,bra
             c_nl_r = len_r$2$q;
         end
         if (lvl$q == idx$3) begin
-            c_b = br$3$q;
             c_cs_l = start_l$3$q;
             c_cs_r = start_r$3$q;
             c_cl_l = len_l$3$q;
             c_cl_r = len_r$3$q;
+        end
+        if (lvl$q == idx$3 + 32'h1) begin
+            c_b_up = br$3$q;
         end
         if ((c_l1 == idx$3) & (lvl$q != 32'h1f)) begin
             c_ns_l = start_l$3$q;
@@ -7828,11 +7867,13 @@ module top$core$lists(clock,clear,append,wr_side,wr_ptr,read,next_list,level,bra
             c_nl_r = len_r$3$q;
         end
         if (lvl$q == idx$4) begin
-            c_b = br$4$q;
             c_cs_l = start_l$4$q;
             c_cs_r = start_r$4$q;
             c_cl_l = len_l$4$q;
             c_cl_r = len_r$4$q;
+        end
+        if (lvl$q == idx$4 + 32'h1) begin
+            c_b_up = br$4$q;
         end
         if ((c_l1 == idx$4) & (lvl$q != 32'h1f)) begin
             c_ns_l = start_l$4$q;
@@ -7841,11 +7882,13 @@ module top$core$lists(clock,clear,append,wr_side,wr_ptr,read,next_list,level,bra
             c_nl_r = len_r$4$q;
         end
         if (lvl$q == idx$5) begin
-            c_b = br$5$q;
             c_cs_l = start_l$5$q;
             c_cs_r = start_r$5$q;
             c_cl_l = len_l$5$q;
             c_cl_r = len_r$5$q;
+        end
+        if (lvl$q == idx$5 + 32'h1) begin
+            c_b_up = br$5$q;
         end
         if ((c_l1 == idx$5) & (lvl$q != 32'h1f)) begin
             c_ns_l = start_l$5$q;
@@ -7854,11 +7897,13 @@ module top$core$lists(clock,clear,append,wr_side,wr_ptr,read,next_list,level,bra
             c_nl_r = len_r$5$q;
         end
         if (lvl$q == idx$6) begin
-            c_b = br$6$q;
             c_cs_l = start_l$6$q;
             c_cs_r = start_r$6$q;
             c_cl_l = len_l$6$q;
             c_cl_r = len_r$6$q;
+        end
+        if (lvl$q == idx$6 + 32'h1) begin
+            c_b_up = br$6$q;
         end
         if ((c_l1 == idx$6) & (lvl$q != 32'h1f)) begin
             c_ns_l = start_l$6$q;
@@ -7867,11 +7912,13 @@ module top$core$lists(clock,clear,append,wr_side,wr_ptr,read,next_list,level,bra
             c_nl_r = len_r$6$q;
         end
         if (lvl$q == idx$7) begin
-            c_b = br$7$q;
             c_cs_l = start_l$7$q;
             c_cs_r = start_r$7$q;
             c_cl_l = len_l$7$q;
             c_cl_r = len_r$7$q;
+        end
+        if (lvl$q == idx$7 + 32'h1) begin
+            c_b_up = br$7$q;
         end
         if ((c_l1 == idx$7) & (lvl$q != 32'h1f)) begin
             c_ns_l = start_l$7$q;
@@ -7880,11 +7927,13 @@ module top$core$lists(clock,clear,append,wr_side,wr_ptr,read,next_list,level,bra
             c_nl_r = len_r$7$q;
         end
         if (lvl$q == idx$8) begin
-            c_b = br$8$q;
             c_cs_l = start_l$8$q;
             c_cs_r = start_r$8$q;
             c_cl_l = len_l$8$q;
             c_cl_r = len_r$8$q;
+        end
+        if (lvl$q == idx$8 + 32'h1) begin
+            c_b_up = br$8$q;
         end
         if ((c_l1 == idx$8) & (lvl$q != 32'h1f)) begin
             c_ns_l = start_l$8$q;
@@ -7893,11 +7942,13 @@ module top$core$lists(clock,clear,append,wr_side,wr_ptr,read,next_list,level,bra
             c_nl_r = len_r$8$q;
         end
         if (lvl$q == idx$9) begin
-            c_b = br$9$q;
             c_cs_l = start_l$9$q;
             c_cs_r = start_r$9$q;
             c_cl_l = len_l$9$q;
             c_cl_r = len_r$9$q;
+        end
+        if (lvl$q == idx$9 + 32'h1) begin
+            c_b_up = br$9$q;
         end
         if ((c_l1 == idx$9) & (lvl$q != 32'h1f)) begin
             c_ns_l = start_l$9$q;
@@ -7906,11 +7957,13 @@ module top$core$lists(clock,clear,append,wr_side,wr_ptr,read,next_list,level,bra
             c_nl_r = len_r$9$q;
         end
         if (lvl$q == idx$10) begin
-            c_b = br$10$q;
             c_cs_l = start_l$10$q;
             c_cs_r = start_r$10$q;
             c_cl_l = len_l$10$q;
             c_cl_r = len_r$10$q;
+        end
+        if (lvl$q == idx$10 + 32'h1) begin
+            c_b_up = br$10$q;
         end
         if ((c_l1 == idx$10) & (lvl$q != 32'h1f)) begin
             c_ns_l = start_l$10$q;
@@ -7919,11 +7972,13 @@ module top$core$lists(clock,clear,append,wr_side,wr_ptr,read,next_list,level,bra
             c_nl_r = len_r$10$q;
         end
         if (lvl$q == idx$11) begin
-            c_b = br$11$q;
             c_cs_l = start_l$11$q;
             c_cs_r = start_r$11$q;
             c_cl_l = len_l$11$q;
             c_cl_r = len_r$11$q;
+        end
+        if (lvl$q == idx$11 + 32'h1) begin
+            c_b_up = br$11$q;
         end
         if ((c_l1 == idx$11) & (lvl$q != 32'h1f)) begin
             c_ns_l = start_l$11$q;
@@ -7932,11 +7987,13 @@ module top$core$lists(clock,clear,append,wr_side,wr_ptr,read,next_list,level,bra
             c_nl_r = len_r$11$q;
         end
         if (lvl$q == idx$12) begin
-            c_b = br$12$q;
             c_cs_l = start_l$12$q;
             c_cs_r = start_r$12$q;
             c_cl_l = len_l$12$q;
             c_cl_r = len_r$12$q;
+        end
+        if (lvl$q == idx$12 + 32'h1) begin
+            c_b_up = br$12$q;
         end
         if ((c_l1 == idx$12) & (lvl$q != 32'h1f)) begin
             c_ns_l = start_l$12$q;
@@ -7945,11 +8002,13 @@ module top$core$lists(clock,clear,append,wr_side,wr_ptr,read,next_list,level,bra
             c_nl_r = len_r$12$q;
         end
         if (lvl$q == idx$13) begin
-            c_b = br$13$q;
             c_cs_l = start_l$13$q;
             c_cs_r = start_r$13$q;
             c_cl_l = len_l$13$q;
             c_cl_r = len_r$13$q;
+        end
+        if (lvl$q == idx$13 + 32'h1) begin
+            c_b_up = br$13$q;
         end
         if ((c_l1 == idx$13) & (lvl$q != 32'h1f)) begin
             c_ns_l = start_l$13$q;
@@ -7958,11 +8017,13 @@ module top$core$lists(clock,clear,append,wr_side,wr_ptr,read,next_list,level,bra
             c_nl_r = len_r$13$q;
         end
         if (lvl$q == idx$14) begin
-            c_b = br$14$q;
             c_cs_l = start_l$14$q;
             c_cs_r = start_r$14$q;
             c_cl_l = len_l$14$q;
             c_cl_r = len_r$14$q;
+        end
+        if (lvl$q == idx$14 + 32'h1) begin
+            c_b_up = br$14$q;
         end
         if ((c_l1 == idx$14) & (lvl$q != 32'h1f)) begin
             c_ns_l = start_l$14$q;
@@ -7971,11 +8032,13 @@ module top$core$lists(clock,clear,append,wr_side,wr_ptr,read,next_list,level,bra
             c_nl_r = len_r$14$q;
         end
         if (lvl$q == idx$15) begin
-            c_b = br$15$q;
             c_cs_l = start_l$15$q;
             c_cs_r = start_r$15$q;
             c_cl_l = len_l$15$q;
             c_cl_r = len_r$15$q;
+        end
+        if (lvl$q == idx$15 + 32'h1) begin
+            c_b_up = br$15$q;
         end
         if ((c_l1 == idx$15) & (lvl$q != 32'h1f)) begin
             c_ns_l = start_l$15$q;
@@ -7984,11 +8047,13 @@ module top$core$lists(clock,clear,append,wr_side,wr_ptr,read,next_list,level,bra
             c_nl_r = len_r$15$q;
         end
         if (lvl$q == idx$16) begin
-            c_b = br$16$q;
             c_cs_l = start_l$16$q;
             c_cs_r = start_r$16$q;
             c_cl_l = len_l$16$q;
             c_cl_r = len_r$16$q;
+        end
+        if (lvl$q == idx$16 + 32'h1) begin
+            c_b_up = br$16$q;
         end
         if ((c_l1 == idx$16) & (lvl$q != 32'h1f)) begin
             c_ns_l = start_l$16$q;
@@ -7997,11 +8062,13 @@ module top$core$lists(clock,clear,append,wr_side,wr_ptr,read,next_list,level,bra
             c_nl_r = len_r$16$q;
         end
         if (lvl$q == idx$17) begin
-            c_b = br$17$q;
             c_cs_l = start_l$17$q;
             c_cs_r = start_r$17$q;
             c_cl_l = len_l$17$q;
             c_cl_r = len_r$17$q;
+        end
+        if (lvl$q == idx$17 + 32'h1) begin
+            c_b_up = br$17$q;
         end
         if ((c_l1 == idx$17) & (lvl$q != 32'h1f)) begin
             c_ns_l = start_l$17$q;
@@ -8010,11 +8077,13 @@ module top$core$lists(clock,clear,append,wr_side,wr_ptr,read,next_list,level,bra
             c_nl_r = len_r$17$q;
         end
         if (lvl$q == idx$18) begin
-            c_b = br$18$q;
             c_cs_l = start_l$18$q;
             c_cs_r = start_r$18$q;
             c_cl_l = len_l$18$q;
             c_cl_r = len_r$18$q;
+        end
+        if (lvl$q == idx$18 + 32'h1) begin
+            c_b_up = br$18$q;
         end
         if ((c_l1 == idx$18) & (lvl$q != 32'h1f)) begin
             c_ns_l = start_l$18$q;
@@ -8023,11 +8092,13 @@ module top$core$lists(clock,clear,append,wr_side,wr_ptr,read,next_list,level,bra
             c_nl_r = len_r$18$q;
         end
         if (lvl$q == idx$19) begin
-            c_b = br$19$q;
             c_cs_l = start_l$19$q;
             c_cs_r = start_r$19$q;
             c_cl_l = len_l$19$q;
             c_cl_r = len_r$19$q;
+        end
+        if (lvl$q == idx$19 + 32'h1) begin
+            c_b_up = br$19$q;
         end
         if ((c_l1 == idx$19) & (lvl$q != 32'h1f)) begin
             c_ns_l = start_l$19$q;
@@ -8036,11 +8107,13 @@ module top$core$lists(clock,clear,append,wr_side,wr_ptr,read,next_list,level,bra
             c_nl_r = len_r$19$q;
         end
         if (lvl$q == idx$20) begin
-            c_b = br$20$q;
             c_cs_l = start_l$20$q;
             c_cs_r = start_r$20$q;
             c_cl_l = len_l$20$q;
             c_cl_r = len_r$20$q;
+        end
+        if (lvl$q == idx$20 + 32'h1) begin
+            c_b_up = br$20$q;
         end
         if ((c_l1 == idx$20) & (lvl$q != 32'h1f)) begin
             c_ns_l = start_l$20$q;
@@ -8049,11 +8122,13 @@ module top$core$lists(clock,clear,append,wr_side,wr_ptr,read,next_list,level,bra
             c_nl_r = len_r$20$q;
         end
         if (lvl$q == idx$21) begin
-            c_b = br$21$q;
             c_cs_l = start_l$21$q;
             c_cs_r = start_r$21$q;
             c_cl_l = len_l$21$q;
             c_cl_r = len_r$21$q;
+        end
+        if (lvl$q == idx$21 + 32'h1) begin
+            c_b_up = br$21$q;
         end
         if ((c_l1 == idx$21) & (lvl$q != 32'h1f)) begin
             c_ns_l = start_l$21$q;
@@ -8062,11 +8137,13 @@ module top$core$lists(clock,clear,append,wr_side,wr_ptr,read,next_list,level,bra
             c_nl_r = len_r$21$q;
         end
         if (lvl$q == idx$22) begin
-            c_b = br$22$q;
             c_cs_l = start_l$22$q;
             c_cs_r = start_r$22$q;
             c_cl_l = len_l$22$q;
             c_cl_r = len_r$22$q;
+        end
+        if (lvl$q == idx$22 + 32'h1) begin
+            c_b_up = br$22$q;
         end
         if ((c_l1 == idx$22) & (lvl$q != 32'h1f)) begin
             c_ns_l = start_l$22$q;
@@ -8075,11 +8152,13 @@ module top$core$lists(clock,clear,append,wr_side,wr_ptr,read,next_list,level,bra
             c_nl_r = len_r$22$q;
         end
         if (lvl$q == idx$23) begin
-            c_b = br$23$q;
             c_cs_l = start_l$23$q;
             c_cs_r = start_r$23$q;
             c_cl_l = len_l$23$q;
             c_cl_r = len_r$23$q;
+        end
+        if (lvl$q == idx$23 + 32'h1) begin
+            c_b_up = br$23$q;
         end
         if ((c_l1 == idx$23) & (lvl$q != 32'h1f)) begin
             c_ns_l = start_l$23$q;
@@ -8088,11 +8167,13 @@ module top$core$lists(clock,clear,append,wr_side,wr_ptr,read,next_list,level,bra
             c_nl_r = len_r$23$q;
         end
         if (lvl$q == idx$24) begin
-            c_b = br$24$q;
             c_cs_l = start_l$24$q;
             c_cs_r = start_r$24$q;
             c_cl_l = len_l$24$q;
             c_cl_r = len_r$24$q;
+        end
+        if (lvl$q == idx$24 + 32'h1) begin
+            c_b_up = br$24$q;
         end
         if ((c_l1 == idx$24) & (lvl$q != 32'h1f)) begin
             c_ns_l = start_l$24$q;
@@ -8101,11 +8182,13 @@ module top$core$lists(clock,clear,append,wr_side,wr_ptr,read,next_list,level,bra
             c_nl_r = len_r$24$q;
         end
         if (lvl$q == idx$25) begin
-            c_b = br$25$q;
             c_cs_l = start_l$25$q;
             c_cs_r = start_r$25$q;
             c_cl_l = len_l$25$q;
             c_cl_r = len_r$25$q;
+        end
+        if (lvl$q == idx$25 + 32'h1) begin
+            c_b_up = br$25$q;
         end
         if ((c_l1 == idx$25) & (lvl$q != 32'h1f)) begin
             c_ns_l = start_l$25$q;
@@ -8114,11 +8197,13 @@ module top$core$lists(clock,clear,append,wr_side,wr_ptr,read,next_list,level,bra
             c_nl_r = len_r$25$q;
         end
         if (lvl$q == idx$26) begin
-            c_b = br$26$q;
             c_cs_l = start_l$26$q;
             c_cs_r = start_r$26$q;
             c_cl_l = len_l$26$q;
             c_cl_r = len_r$26$q;
+        end
+        if (lvl$q == idx$26 + 32'h1) begin
+            c_b_up = br$26$q;
         end
         if ((c_l1 == idx$26) & (lvl$q != 32'h1f)) begin
             c_ns_l = start_l$26$q;
@@ -8127,11 +8212,13 @@ module top$core$lists(clock,clear,append,wr_side,wr_ptr,read,next_list,level,bra
             c_nl_r = len_r$26$q;
         end
         if (lvl$q == idx$27) begin
-            c_b = br$27$q;
             c_cs_l = start_l$27$q;
             c_cs_r = start_r$27$q;
             c_cl_l = len_l$27$q;
             c_cl_r = len_r$27$q;
+        end
+        if (lvl$q == idx$27 + 32'h1) begin
+            c_b_up = br$27$q;
         end
         if ((c_l1 == idx$27) & (lvl$q != 32'h1f)) begin
             c_ns_l = start_l$27$q;
@@ -8140,11 +8227,13 @@ module top$core$lists(clock,clear,append,wr_side,wr_ptr,read,next_list,level,bra
             c_nl_r = len_r$27$q;
         end
         if (lvl$q == idx$28) begin
-            c_b = br$28$q;
             c_cs_l = start_l$28$q;
             c_cs_r = start_r$28$q;
             c_cl_l = len_l$28$q;
             c_cl_r = len_r$28$q;
+        end
+        if (lvl$q == idx$28 + 32'h1) begin
+            c_b_up = br$28$q;
         end
         if ((c_l1 == idx$28) & (lvl$q != 32'h1f)) begin
             c_ns_l = start_l$28$q;
@@ -8153,11 +8242,13 @@ module top$core$lists(clock,clear,append,wr_side,wr_ptr,read,next_list,level,bra
             c_nl_r = len_r$28$q;
         end
         if (lvl$q == idx$29) begin
-            c_b = br$29$q;
             c_cs_l = start_l$29$q;
             c_cs_r = start_r$29$q;
             c_cl_l = len_l$29$q;
             c_cl_r = len_r$29$q;
+        end
+        if (lvl$q == idx$29 + 32'h1) begin
+            c_b_up = br$29$q;
         end
         if ((c_l1 == idx$29) & (lvl$q != 32'h1f)) begin
             c_ns_l = start_l$29$q;
@@ -8166,11 +8257,13 @@ module top$core$lists(clock,clear,append,wr_side,wr_ptr,read,next_list,level,bra
             c_nl_r = len_r$29$q;
         end
         if (lvl$q == idx$30) begin
-            c_b = br$30$q;
             c_cs_l = start_l$30$q;
             c_cs_r = start_r$30$q;
             c_cl_l = len_l$30$q;
             c_cl_r = len_r$30$q;
+        end
+        if (lvl$q == idx$30 + 32'h1) begin
+            c_b_up = br$30$q;
         end
         if ((c_l1 == idx$30) & (lvl$q != 32'h1f)) begin
             c_ns_l = start_l$30$q;
@@ -8179,11 +8272,13 @@ module top$core$lists(clock,clear,append,wr_side,wr_ptr,read,next_list,level,bra
             c_nl_r = len_r$30$q;
         end
         if (lvl$q == idx$31) begin
-            c_b = br$31$q;
             c_cs_l = start_l$31$q;
             c_cs_r = start_r$31$q;
             c_cl_l = len_l$31$q;
             c_cl_r = len_r$31$q;
+        end
+        if (lvl$q == idx$31 + 32'h1) begin
+            c_b_up = br$31$q;
         end
         if ((c_l1 == idx$31) & (lvl$q != 32'h1f)) begin
             c_ns_l = start_l$31$q;
@@ -8193,15 +8288,13 @@ module top$core$lists(clock,clear,append,wr_side,wr_ptr,read,next_list,level,bra
         end
         c_idle = ~up$q & ~done_r$q;
         c_cur_start = c_cs_l;
-        c_rem = c_cl_l - pos$q;
-        if (c_b) begin
+        if (cur_b$q) begin
             c_cur_start = c_cs_r;
-            c_rem = c_cl_r - pos$q;
         end
-        c_read = read & c_idle & (c_rem != 32'h0);
-        c_waddr = c_ns_l + c_nl_l;
+        c_read = read & c_idle & (rem$q != 32'h0);
+        c_waddr = wa_l$q;
         if (wr_side) begin
-            c_waddr = c_ns_r + c_nl_r;
+            c_waddr = wa_r$q;
         end
         c_wok = append & c_idle & (lvl$q != 32'h1f) & (c_waddr < cap);
         ovf$d = ovf$q | (append & c_idle & ~c_wok);
@@ -8219,7 +8312,7 @@ module top$core$lists(clock,clear,append,wr_side,wr_ptr,read,next_list,level,bra
         sram_l$write_enable = c_wok & ~wr_side;
         sram_r$write_enable = c_wok & wr_side;
         rd_v$d = c_read;
-        rd_side$d = c_b;
+        rd_side$d = cur_b$q;
         rd_ptr = 32'h0;
         if (rd_v$q) begin
             rd_ptr = sram_l$read_data;
@@ -8229,16 +8322,24 @@ module top$core$lists(clock,clear,append,wr_side,wr_ptr,read,next_list,level,bra
         end
         lvl$clock = clock;
         pos$clock = clock;
+        rem$clock = clock;
+        cur_b$clock = clock;
+        wa_l$clock = clock;
+        wa_r$clock = clock;
         up$clock = clock;
         done_r$clock = clock;
         lvl$d = lvl$q;
         pos$d = pos$q;
+        rem$d = rem$q;
+        cur_b$d = cur_b$q;
+        wa_l$d = wa_l$q;
+        wa_r$d = wa_r$q;
         up$d = up$q;
         done_r$d = done_r$q;
         c_next = next_list & c_idle & ~append;
         c_desc = c_next & (lvl$q != 32'h1f) & ((c_nl_l != 32'h0) | (c_nl_r != 32'h0));
         c_desc_b = c_nl_l == 32'h0;
-        c_u_right = up$q & ~c_b & (c_cl_r != 32'h0);
+        c_u_right = up$q & ~cur_b$q & (c_cl_r != 32'h0);
         c_u_zero = lvl$q == 32'h0;
         c_open = (c_desc & (lvl$q < 32'h1e)) | (c_u_right & (lvl$q != 32'h1f));
         c_open_lvl = lvl$q + 32'h1;
@@ -8246,20 +8347,45 @@ module top$core$lists(clock,clear,append,wr_side,wr_ptr,read,next_list,level,bra
         c_open_r = c_cs_r + c_cl_r;
         if (c_desc) begin
             c_open_lvl = lvl$q + 32'h2;
-            c_open_l = c_ns_l + c_nl_l;
-            c_open_r = c_ns_r + c_nl_r;
+            c_open_l = wa_l$q;
+            c_open_r = wa_r$q;
+        end
+        if (c_wok & ~wr_side) begin
+            wa_l$d = wa_l$q + 32'h1;
+        end
+        if (c_wok & wr_side) begin
+            wa_r$d = wa_r$q + 32'h1;
+        end
+        if (c_desc | c_u_right | (up$q & ~c_u_zero)) begin
+            wa_l$d = c_open_l;
+            wa_r$d = c_open_r;
         end
         if (c_read) begin
             pos$d = pos$q + 32'h1;
+            rem$d = rem$q - 32'h1;
         end
         if (c_desc | c_u_right) begin
             pos$d = 32'h0;
         end
         if (c_desc) begin
+            rem$d = c_nl_l;
+            if (c_desc_b) begin
+                rem$d = c_nl_r;
+            end
+        end
+        if (c_u_right) begin
+            rem$d = c_cl_r;
+        end
+        if (c_desc) begin
             lvl$d = c_l1;
+            cur_b$d = c_desc_b;
+        end
+        if (c_u_right) begin
+            cur_b$d = 1'b1;
         end
         if (up$q & ~c_u_right & ~c_u_zero) begin
             lvl$d = lvl$q - 32'h1;
+            cur_b$d = c_b_up;
         end
         if (c_next & ~c_desc) begin
             up$d = 1'b1;
@@ -9456,16 +9582,20 @@ module top$core$lists(clock,clear,append,wr_side,wr_ptr,read,next_list,level,bra
         if (clear) begin
             lvl$d = 32'h0;
             pos$d = 32'h0;
+            rem$d = 32'h0;
+            cur_b$d = 1'b0;
+            wa_l$d = 32'h0;
+            wa_r$d = 32'h0;
             up$d = 1'b0;
             done_r$d = 1'b0;
             ovf$d = 1'b0;
             rd_v$d = 1'b0;
         end
         level = lvl$q;
-        branch = c_b;
+        branch = cur_b$q;
         remaining = 32'h0;
         if (c_idle) begin
-            remaining = c_rem;
+            remaining = rem$q;
         end
         busy = up$q;
         done = done_r$q;
@@ -9612,29 +9742,29 @@ module top$core$mc(clock,clear,halt,push,push_load,push_set,push_pair,push_id,ne
     localparam  idx16$15 = 4'hf;
     
     // Stub signals
-    reg  [43:0] ask_e$0$d;
-    wire  [43:0] ask_e$0$q;
+    reg  [19:0] ask_e$0$d;
+    wire  [19:0] ask_e$0$q;
     reg  ask_e$0$clock;
-    reg  [43:0] ask_e$1$d;
-    wire  [43:0] ask_e$1$q;
+    reg  [19:0] ask_e$1$d;
+    wire  [19:0] ask_e$1$q;
     reg  ask_e$1$clock;
-    reg  [43:0] ask_e$2$d;
-    wire  [43:0] ask_e$2$q;
+    reg  [19:0] ask_e$2$d;
+    wire  [19:0] ask_e$2$q;
     reg  ask_e$2$clock;
-    reg  [43:0] ask_e$3$d;
-    wire  [43:0] ask_e$3$q;
+    reg  [19:0] ask_e$3$d;
+    wire  [19:0] ask_e$3$q;
     reg  ask_e$3$clock;
-    reg  [43:0] ask_e$4$d;
-    wire  [43:0] ask_e$4$q;
+    reg  [19:0] ask_e$4$d;
+    wire  [19:0] ask_e$4$q;
     reg  ask_e$4$clock;
-    reg  [43:0] ask_e$5$d;
-    wire  [43:0] ask_e$5$q;
+    reg  [19:0] ask_e$5$d;
+    wire  [19:0] ask_e$5$q;
     reg  ask_e$5$clock;
-    reg  [43:0] ask_e$6$d;
-    wire  [43:0] ask_e$6$q;
+    reg  [19:0] ask_e$6$d;
+    wire  [19:0] ask_e$6$q;
     reg  ask_e$6$clock;
-    reg  [43:0] ask_e$7$d;
-    wire  [43:0] ask_e$7$q;
+    reg  [19:0] ask_e$7$d;
+    wire  [19:0] ask_e$7$q;
     reg  ask_e$7$clock;
     reg  ask_req$0$d;
     wire  ask_req$0$q;
@@ -9663,8 +9793,8 @@ module top$core$mc(clock,clear,halt,push,push_load,push_set,push_pair,push_id,ne
     reg  [3:0] ask_n$d;
     wire  [3:0] ask_n$q;
     reg  ask_n$clock;
-    reg  [23:0] last_al$d;
-    wire  [23:0] last_al$q;
+    reg  [15:0] last_al$d;
+    wire  [15:0] last_al$q;
     reg  last_al$clock;
     reg  last_al_v$d;
     wire  last_al_v$q;
@@ -9797,7 +9927,7 @@ module top$core$mc(clock,clear,halt,push,push_load,push_set,push_pair,push_id,ne
     reg  beat$clock;
     
     // Local signals
-    reg  [43:0] c_e0;
+    reg  [19:0] c_e0;
     reg  c_load;
     reg  c_set;
     reg  c_pair;
@@ -9818,7 +9948,8 @@ module top$core$mc(clock,clear,halt,push,push_load,push_set,push_pair,push_id,ne
     reg  c_take;
     reg  c_rq_found;
     reg  [3:0] c_rq_idx;
-    reg  [43:0] c_rq_e;
+    reg  [19:0] c_rq_e;
+    reg  [23:0] c_rq_base;
     reg  c_tag_ok;
     reg  c_req_ta;
     reg  c_req_tb;
@@ -9829,7 +9960,7 @@ module top$core$mc(clock,clear,halt,push,push_load,push_set,push_pair,push_id,ne
     reg  [1:0] c_hd_d;
     reg  [15:0] c_hd_r;
     reg  c_resp_node;
-    reg  [23:0] c_push_addr;
+    reg  [15:0] c_push_rec;
     reg  c_push_fetch;
     reg  [3:0] c_push_at;
     reg  [3:0] c_tag_at;
@@ -9920,7 +10051,7 @@ module top$core$mc(clock,clear,halt,push,push_load,push_set,push_pair,push_id,ne
         .q(ask_n$q),
         .clock(ask_n$clock)
     );
-    top$core$base_na last_al(
+    top$core$lists$len_l$0 last_al(
         .d(last_al$d),
         .q(last_al$q),
         .clock(last_al$clock)
@@ -10238,6 +10369,10 @@ module top$core$mc(clock,clear,halt,push,push_load,push_set,push_pair,push_id,ne
             c_rq_idx = idx8$0;
             c_rq_e = ask_e$0$q;
         end
+        c_rq_base = base_na;
+        if (c_rq_e[32'h0]) begin
+            c_rq_base = base_nb;
+        end
         c_tag_ok = tag_n$q <= ((port_out) & 5'h1f);
         c_req_ta = c_tag_ok & need_a & ~ta_out$q;
         c_req_tb = c_tag_ok & need_b & ~tb_out$q & ~c_req_ta;
@@ -10256,7 +10391,7 @@ module top$core$mc(clock,clear,halt,push,push_load,push_set,push_pair,push_id,ne
             c_acc_r = tb_id;
         end
         else if (c_req_node) begin
-            mem_req_addr = c_rq_e[(32'h14)+:(24)];
+            mem_req_addr = c_rq_base + ((c_rq_e[(32'h4)+:(16)] >> 32'h1) & 24'hffffff);
             c_acc_d = ((c_rq_e[(32'h0)+:(1)]) & 2'h3);
             c_acc_r = c_rq_e[(32'h4)+:(16)] >> 32'h1;
         end
@@ -10439,16 +10574,11 @@ module top$core$mc(clock,clear,halt,push,push_load,push_set,push_pair,push_id,ne
         end
         held_n$d = held_n$q + ((c_resp_node) & 2'h3) - ((c_take) & 2'h3);
         node_inf$d = node_inf$q + (((c_accept & c_req_node)) & 2'h3) - ((c_resp_node) & 2'h3);
-        if (push_load) begin
-            c_push_addr = base_nb + ((push_id >> 32'h1) & 24'hffffff);
-        end
-        else begin
-            c_push_addr = base_na + ((push_id >> 32'h1) & 24'hffffff);
-        end
-        c_push_fetch = push_load | ~last_al_v$q | (last_al$q != c_push_addr);
+        c_push_rec = push_id >> 32'h1;
+        c_push_fetch = push_load | ~last_al_v$q | (last_al$q != c_push_rec);
         if (push & ~push_load) begin
             last_al_v$d = 1'b1;
-            last_al$d = c_push_addr;
+            last_al$d = c_push_rec;
         end
         if (push & push_load) begin
             last_al_v$d = 1'b0;
@@ -10516,35 +10646,35 @@ module top$core$mc(clock,clear,halt,push,push_load,push_set,push_pair,push_id,ne
             ask_req$6$d = ask_req$7$q | (c_accept & c_req_node & (c_rq_idx == idx8$7));
         end
         if (push & (c_push_at == idx8$0)) begin
-            ask_e$0$d = ((push_load) & 44'hfffffffffff) | (((push_set) & 44'hfffffffffff) << 32'h1) | (((push_pair) & 44'hfffffffffff) << 32'h2) | (((c_push_fetch) & 44'hfffffffffff) << 32'h3) | (((push_id) & 44'hfffffffffff) << 32'h4) | (((c_push_addr) & 44'hfffffffffff) << 32'h14);
+            ask_e$0$d = ((push_load) & 20'hfffff) | (((push_set) & 20'hfffff) << 32'h1) | (((push_pair) & 20'hfffff) << 32'h2) | (((c_push_fetch) & 20'hfffff) << 32'h3) | (((push_id) & 20'hfffff) << 32'h4);
             ask_req$0$d = ~c_push_fetch;
         end
         if (push & (c_push_at == idx8$1)) begin
-            ask_e$1$d = ((push_load) & 44'hfffffffffff) | (((push_set) & 44'hfffffffffff) << 32'h1) | (((push_pair) & 44'hfffffffffff) << 32'h2) | (((c_push_fetch) & 44'hfffffffffff) << 32'h3) | (((push_id) & 44'hfffffffffff) << 32'h4) | (((c_push_addr) & 44'hfffffffffff) << 32'h14);
+            ask_e$1$d = ((push_load) & 20'hfffff) | (((push_set) & 20'hfffff) << 32'h1) | (((push_pair) & 20'hfffff) << 32'h2) | (((c_push_fetch) & 20'hfffff) << 32'h3) | (((push_id) & 20'hfffff) << 32'h4);
             ask_req$1$d = ~c_push_fetch;
         end
         if (push & (c_push_at == idx8$2)) begin
-            ask_e$2$d = ((push_load) & 44'hfffffffffff) | (((push_set) & 44'hfffffffffff) << 32'h1) | (((push_pair) & 44'hfffffffffff) << 32'h2) | (((c_push_fetch) & 44'hfffffffffff) << 32'h3) | (((push_id) & 44'hfffffffffff) << 32'h4) | (((c_push_addr) & 44'hfffffffffff) << 32'h14);
+            ask_e$2$d = ((push_load) & 20'hfffff) | (((push_set) & 20'hfffff) << 32'h1) | (((push_pair) & 20'hfffff) << 32'h2) | (((c_push_fetch) & 20'hfffff) << 32'h3) | (((push_id) & 20'hfffff) << 32'h4);
             ask_req$2$d = ~c_push_fetch;
         end
         if (push & (c_push_at == idx8$3)) begin
-            ask_e$3$d = ((push_load) & 44'hfffffffffff) | (((push_set) & 44'hfffffffffff) << 32'h1) | (((push_pair) & 44'hfffffffffff) << 32'h2) | (((c_push_fetch) & 44'hfffffffffff) << 32'h3) | (((push_id) & 44'hfffffffffff) << 32'h4) | (((c_push_addr) & 44'hfffffffffff) << 32'h14);
+            ask_e$3$d = ((push_load) & 20'hfffff) | (((push_set) & 20'hfffff) << 32'h1) | (((push_pair) & 20'hfffff) << 32'h2) | (((c_push_fetch) & 20'hfffff) << 32'h3) | (((push_id) & 20'hfffff) << 32'h4);
             ask_req$3$d = ~c_push_fetch;
         end
         if (push & (c_push_at == idx8$4)) begin
-            ask_e$4$d = ((push_load) & 44'hfffffffffff) | (((push_set) & 44'hfffffffffff) << 32'h1) | (((push_pair) & 44'hfffffffffff) << 32'h2) | (((c_push_fetch) & 44'hfffffffffff) << 32'h3) | (((push_id) & 44'hfffffffffff) << 32'h4) | (((c_push_addr) & 44'hfffffffffff) << 32'h14);
+            ask_e$4$d = ((push_load) & 20'hfffff) | (((push_set) & 20'hfffff) << 32'h1) | (((push_pair) & 20'hfffff) << 32'h2) | (((c_push_fetch) & 20'hfffff) << 32'h3) | (((push_id) & 20'hfffff) << 32'h4);
             ask_req$4$d = ~c_push_fetch;
         end
         if (push & (c_push_at == idx8$5)) begin
-            ask_e$5$d = ((push_load) & 44'hfffffffffff) | (((push_set) & 44'hfffffffffff) << 32'h1) | (((push_pair) & 44'hfffffffffff) << 32'h2) | (((c_push_fetch) & 44'hfffffffffff) << 32'h3) | (((push_id) & 44'hfffffffffff) << 32'h4) | (((c_push_addr) & 44'hfffffffffff) << 32'h14);
+            ask_e$5$d = ((push_load) & 20'hfffff) | (((push_set) & 20'hfffff) << 32'h1) | (((push_pair) & 20'hfffff) << 32'h2) | (((c_push_fetch) & 20'hfffff) << 32'h3) | (((push_id) & 20'hfffff) << 32'h4);
             ask_req$5$d = ~c_push_fetch;
         end
         if (push & (c_push_at == idx8$6)) begin
-            ask_e$6$d = ((push_load) & 44'hfffffffffff) | (((push_set) & 44'hfffffffffff) << 32'h1) | (((push_pair) & 44'hfffffffffff) << 32'h2) | (((c_push_fetch) & 44'hfffffffffff) << 32'h3) | (((push_id) & 44'hfffffffffff) << 32'h4) | (((c_push_addr) & 44'hfffffffffff) << 32'h14);
+            ask_e$6$d = ((push_load) & 20'hfffff) | (((push_set) & 20'hfffff) << 32'h1) | (((push_pair) & 20'hfffff) << 32'h2) | (((c_push_fetch) & 20'hfffff) << 32'h3) | (((push_id) & 20'hfffff) << 32'h4);
             ask_req$6$d = ~c_push_fetch;
         end
         if (push & (c_push_at == idx8$7)) begin
-            ask_e$7$d = ((push_load) & 44'hfffffffffff) | (((push_set) & 44'hfffffffffff) << 32'h1) | (((push_pair) & 44'hfffffffffff) << 32'h2) | (((c_push_fetch) & 44'hfffffffffff) << 32'h3) | (((push_id) & 44'hfffffffffff) << 32'h4) | (((c_push_addr) & 44'hfffffffffff) << 32'h14);
+            ask_e$7$d = ((push_load) & 20'hfffff) | (((push_set) & 20'hfffff) << 32'h1) | (((push_pair) & 20'hfffff) << 32'h2) | (((c_push_fetch) & 20'hfffff) << 32'h3) | (((push_id) & 20'hfffff) << 32'h4);
             ask_req$7$d = ~c_push_fetch;
         end
         c_tag_at = (tag_head$q + tag_n$q[(32'h0)+:(4)]);
@@ -10706,13 +10836,13 @@ endmodule // top$core$mc
 module top$core$mc$ask_e$0(d,q,clock);
     
     // Module arguments
-    input wire  [43:0] d;
-    output reg  [43:0] q;
+    input wire  [19:0] d;
+    output reg  [19:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 44'h0;
+       q = 20'h0;
     end
     
     always @(posedge clock) begin

@@ -75,6 +75,18 @@ module top(clock,clear,append,wr_side,wr_ptr,read,next_list,level,branch,remaini
     reg  [15:0] pos$d;
     wire  [15:0] pos$q;
     reg  pos$clock;
+    reg  [15:0] rem$d;
+    wire  [15:0] rem$q;
+    reg  rem$clock;
+    reg  cur_b$d;
+    wire  cur_b$q;
+    reg  cur_b$clock;
+    reg  [15:0] wa_l$d;
+    wire  [15:0] wa_l$q;
+    reg  wa_l$clock;
+    reg  [15:0] wa_r$d;
+    wire  [15:0] wa_r$q;
+    reg  wa_r$clock;
     reg  up$d;
     wire  up$q;
     reg  up$clock;
@@ -572,7 +584,7 @@ module top(clock,clear,append,wr_side,wr_ptr,read,next_list,level,branch,remaini
     reg  len_r$31$clock;
     
     // Local signals
-    reg  c_b;
+    reg  c_b_up;
     reg  [15:0] c_cs_l;
     reg  [15:0] c_cs_r;
     reg  [15:0] c_cl_l;
@@ -583,7 +595,6 @@ module top(clock,clear,append,wr_side,wr_ptr,read,next_list,level,branch,remaini
     reg  [15:0] c_nl_r;
     reg  [4:0] c_l1;
     reg  [15:0] c_cur_start;
-    reg  [15:0] c_rem;
     reg  [15:0] c_raddr;
     reg  c_idle;
     reg  c_read;
@@ -627,6 +638,26 @@ module top(clock,clear,append,wr_side,wr_ptr,read,next_list,level,branch,remaini
         .d(pos$d),
         .q(pos$q),
         .clock(pos$clock)
+    );
+    top$len_l$0 rem(
+        .d(rem$d),
+        .q(rem$q),
+        .clock(rem$clock)
+    );
+    top$br$0 cur_b(
+        .d(cur_b$d),
+        .q(cur_b$q),
+        .clock(cur_b$clock)
+    );
+    top$len_l$0 wa_l(
+        .d(wa_l$d),
+        .q(wa_l$q),
+        .clock(wa_l$clock)
+    );
+    top$len_l$0 wa_r(
+        .d(wa_r$d),
+        .q(wa_r$q),
+        .clock(wa_r$clock)
     );
     top$br$0 up(
         .d(up$d),
@@ -1463,7 +1494,7 @@ module top(clock,clear,append,wr_side,wr_ptr,read,next_list,level,branch,remaini
         rd_v$d = rd_v$q;
         rd_side$d = rd_side$q;
         c_l1 = lvl$q + 32'h1;
-        c_b = 1'b0;
+        c_b_up = 1'b0;
         c_cs_l = 32'h0;
         c_cs_r = 32'h0;
         c_cl_l = 32'h0;
@@ -1473,11 +1504,13 @@ module top(clock,clear,append,wr_side,wr_ptr,read,next_list,level,branch,remaini
         c_nl_l = 32'h0;
         c_nl_r = 32'h0;
         if (lvl$q == idx$0) begin
-            c_b = br$0$q;
             c_cs_l = start_l$0$q;
             c_cs_r = start_r$0$q;
             c_cl_l = len_l$0$q;
             c_cl_r = len_r$0$q;
+        end
+        if (lvl$q == idx$0 + 32'h1) begin
+            c_b_up = br$0$q;
         end
         if ((c_l1 == idx$0) & (lvl$q != 32'h1f)) begin
             c_ns_l = start_l$0$q;
@@ -1486,11 +1519,13 @@ module top(clock,clear,append,wr_side,wr_ptr,read,next_list,level,branch,remaini
             c_nl_r = len_r$0$q;
         end
         if (lvl$q == idx$1) begin
-            c_b = br$1$q;
             c_cs_l = start_l$1$q;
             c_cs_r = start_r$1$q;
             c_cl_l = len_l$1$q;
             c_cl_r = len_r$1$q;
+        end
+        if (lvl$q == idx$1 + 32'h1) begin
+            c_b_up = br$1$q;
         end
         if ((c_l1 == idx$1) & (lvl$q != 32'h1f)) begin
             c_ns_l = start_l$1$q;
@@ -1499,11 +1534,13 @@ module top(clock,clear,append,wr_side,wr_ptr,read,next_list,level,branch,remaini
             c_nl_r = len_r$1$q;
         end
         if (lvl$q == idx$2) begin
-            c_b = br$2$q;
             c_cs_l = start_l$2$q;
             c_cs_r = start_r$2$q;
             c_cl_l = len_l$2$q;
             c_cl_r = len_r$2$q;
+        end
+        if (lvl$q == idx$2 + 32'h1) begin
+            c_b_up = br$2$q;
         end
         if ((c_l1 == idx$2) & (lvl$q != 32'h1f)) begin
             c_ns_l = start_l$2$q;
@@ -1512,11 +1549,13 @@ module top(clock,clear,append,wr_side,wr_ptr,read,next_list,level,branch,remaini
             c_nl_r = len_r$2$q;
         end
         if (lvl$q == idx$3) begin
-            c_b = br$3$q;
             c_cs_l = start_l$3$q;
             c_cs_r = start_r$3$q;
             c_cl_l = len_l$3$q;
             c_cl_r = len_r$3$q;
+        end
+        if (lvl$q == idx$3 + 32'h1) begin
+            c_b_up = br$3$q;
         end
         if ((c_l1 == idx$3) & (lvl$q != 32'h1f)) begin
             c_ns_l = start_l$3$q;
@@ -1525,11 +1564,13 @@ module top(clock,clear,append,wr_side,wr_ptr,read,next_list,level,branch,remaini
             c_nl_r = len_r$3$q;
         end
         if (lvl$q == idx$4) begin
-            c_b = br$4$q;
             c_cs_l = start_l$4$q;
             c_cs_r = start_r$4$q;
             c_cl_l = len_l$4$q;
             c_cl_r = len_r$4$q;
+        end
+        if (lvl$q == idx$4 + 32'h1) begin
+            c_b_up = br$4$q;
         end
         if ((c_l1 == idx$4) & (lvl$q != 32'h1f)) begin
             c_ns_l = start_l$4$q;
@@ -1538,11 +1579,13 @@ module top(clock,clear,append,wr_side,wr_ptr,read,next_list,level,branch,remaini
             c_nl_r = len_r$4$q;
         end
         if (lvl$q == idx$5) begin
-            c_b = br$5$q;
             c_cs_l = start_l$5$q;
             c_cs_r = start_r$5$q;
             c_cl_l = len_l$5$q;
             c_cl_r = len_r$5$q;
+        end
+        if (lvl$q == idx$5 + 32'h1) begin
+            c_b_up = br$5$q;
         end
         if ((c_l1 == idx$5) & (lvl$q != 32'h1f)) begin
             c_ns_l = start_l$5$q;
@@ -1551,11 +1594,13 @@ module top(clock,clear,append,wr_side,wr_ptr,read,next_list,level,branch,remaini
             c_nl_r = len_r$5$q;
         end
         if (lvl$q == idx$6) begin
-            c_b = br$6$q;
             c_cs_l = start_l$6$q;
             c_cs_r = start_r$6$q;
             c_cl_l = len_l$6$q;
             c_cl_r = len_r$6$q;
+        end
+        if (lvl$q == idx$6 + 32'h1) begin
+            c_b_up = br$6$q;
         end
         if ((c_l1 == idx$6) & (lvl$q != 32'h1f)) begin
             c_ns_l = start_l$6$q;
@@ -1564,11 +1609,13 @@ module top(clock,clear,append,wr_side,wr_ptr,read,next_list,level,branch,remaini
             c_nl_r = len_r$6$q;
         end
         if (lvl$q == idx$7) begin
-            c_b = br$7$q;
             c_cs_l = start_l$7$q;
             c_cs_r = start_r$7$q;
             c_cl_l = len_l$7$q;
             c_cl_r = len_r$7$q;
+        end
+        if (lvl$q == idx$7 + 32'h1) begin
+            c_b_up = br$7$q;
         end
         if ((c_l1 == idx$7) & (lvl$q != 32'h1f)) begin
             c_ns_l = start_l$7$q;
@@ -1577,11 +1624,13 @@ module top(clock,clear,append,wr_side,wr_ptr,read,next_list,level,branch,remaini
             c_nl_r = len_r$7$q;
         end
         if (lvl$q == idx$8) begin
-            c_b = br$8$q;
             c_cs_l = start_l$8$q;
             c_cs_r = start_r$8$q;
             c_cl_l = len_l$8$q;
             c_cl_r = len_r$8$q;
+        end
+        if (lvl$q == idx$8 + 32'h1) begin
+            c_b_up = br$8$q;
         end
         if ((c_l1 == idx$8) & (lvl$q != 32'h1f)) begin
             c_ns_l = start_l$8$q;
@@ -1590,11 +1639,13 @@ module top(clock,clear,append,wr_side,wr_ptr,read,next_list,level,branch,remaini
             c_nl_r = len_r$8$q;
         end
         if (lvl$q == idx$9) begin
-            c_b = br$9$q;
             c_cs_l = start_l$9$q;
             c_cs_r = start_r$9$q;
             c_cl_l = len_l$9$q;
             c_cl_r = len_r$9$q;
+        end
+        if (lvl$q == idx$9 + 32'h1) begin
+            c_b_up = br$9$q;
         end
         if ((c_l1 == idx$9) & (lvl$q != 32'h1f)) begin
             c_ns_l = start_l$9$q;
@@ -1603,11 +1654,13 @@ module top(clock,clear,append,wr_side,wr_ptr,read,next_list,level,branch,remaini
             c_nl_r = len_r$9$q;
         end
         if (lvl$q == idx$10) begin
-            c_b = br$10$q;
             c_cs_l = start_l$10$q;
             c_cs_r = start_r$10$q;
             c_cl_l = len_l$10$q;
             c_cl_r = len_r$10$q;
+        end
+        if (lvl$q == idx$10 + 32'h1) begin
+            c_b_up = br$10$q;
         end
         if ((c_l1 == idx$10) & (lvl$q != 32'h1f)) begin
             c_ns_l = start_l$10$q;
@@ -1616,11 +1669,13 @@ module top(clock,clear,append,wr_side,wr_ptr,read,next_list,level,branch,remaini
             c_nl_r = len_r$10$q;
         end
         if (lvl$q == idx$11) begin
-            c_b = br$11$q;
             c_cs_l = start_l$11$q;
             c_cs_r = start_r$11$q;
             c_cl_l = len_l$11$q;
             c_cl_r = len_r$11$q;
+        end
+        if (lvl$q == idx$11 + 32'h1) begin
+            c_b_up = br$11$q;
         end
         if ((c_l1 == idx$11) & (lvl$q != 32'h1f)) begin
             c_ns_l = start_l$11$q;
@@ -1629,11 +1684,13 @@ module top(clock,clear,append,wr_side,wr_ptr,read,next_list,level,branch,remaini
             c_nl_r = len_r$11$q;
         end
         if (lvl$q == idx$12) begin
-            c_b = br$12$q;
             c_cs_l = start_l$12$q;
             c_cs_r = start_r$12$q;
             c_cl_l = len_l$12$q;
             c_cl_r = len_r$12$q;
+        end
+        if (lvl$q == idx$12 + 32'h1) begin
+            c_b_up = br$12$q;
         end
         if ((c_l1 == idx$12) & (lvl$q != 32'h1f)) begin
             c_ns_l = start_l$12$q;
@@ -1642,11 +1699,13 @@ module top(clock,clear,append,wr_side,wr_ptr,read,next_list,level,branch,remaini
             c_nl_r = len_r$12$q;
         end
         if (lvl$q == idx$13) begin
-            c_b = br$13$q;
             c_cs_l = start_l$13$q;
             c_cs_r = start_r$13$q;
             c_cl_l = len_l$13$q;
             c_cl_r = len_r$13$q;
+        end
+        if (lvl$q == idx$13 + 32'h1) begin
+            c_b_up = br$13$q;
         end
         if ((c_l1 == idx$13) & (lvl$q != 32'h1f)) begin
             c_ns_l = start_l$13$q;
@@ -1655,11 +1714,13 @@ module top(clock,clear,append,wr_side,wr_ptr,read,next_list,level,branch,remaini
             c_nl_r = len_r$13$q;
         end
         if (lvl$q == idx$14) begin
-            c_b = br$14$q;
             c_cs_l = start_l$14$q;
             c_cs_r = start_r$14$q;
             c_cl_l = len_l$14$q;
             c_cl_r = len_r$14$q;
+        end
+        if (lvl$q == idx$14 + 32'h1) begin
+            c_b_up = br$14$q;
         end
         if ((c_l1 == idx$14) & (lvl$q != 32'h1f)) begin
             c_ns_l = start_l$14$q;
@@ -1668,11 +1729,13 @@ module top(clock,clear,append,wr_side,wr_ptr,read,next_list,level,branch,remaini
             c_nl_r = len_r$14$q;
         end
         if (lvl$q == idx$15) begin
-            c_b = br$15$q;
             c_cs_l = start_l$15$q;
             c_cs_r = start_r$15$q;
             c_cl_l = len_l$15$q;
             c_cl_r = len_r$15$q;
+        end
+        if (lvl$q == idx$15 + 32'h1) begin
+            c_b_up = br$15$q;
         end
         if ((c_l1 == idx$15) & (lvl$q != 32'h1f)) begin
             c_ns_l = start_l$15$q;
@@ -1681,11 +1744,13 @@ module top(clock,clear,append,wr_side,wr_ptr,read,next_list,level,branch,remaini
             c_nl_r = len_r$15$q;
         end
         if (lvl$q == idx$16) begin
-            c_b = br$16$q;
             c_cs_l = start_l$16$q;
             c_cs_r = start_r$16$q;
             c_cl_l = len_l$16$q;
             c_cl_r = len_r$16$q;
+        end
+        if (lvl$q == idx$16 + 32'h1) begin
+            c_b_up = br$16$q;
         end
         if ((c_l1 == idx$16) & (lvl$q != 32'h1f)) begin
             c_ns_l = start_l$16$q;
@@ -1694,11 +1759,13 @@ module top(clock,clear,append,wr_side,wr_ptr,read,next_list,level,branch,remaini
             c_nl_r = len_r$16$q;
         end
         if (lvl$q == idx$17) begin
-            c_b = br$17$q;
             c_cs_l = start_l$17$q;
             c_cs_r = start_r$17$q;
             c_cl_l = len_l$17$q;
             c_cl_r = len_r$17$q;
+        end
+        if (lvl$q == idx$17 + 32'h1) begin
+            c_b_up = br$17$q;
         end
         if ((c_l1 == idx$17) & (lvl$q != 32'h1f)) begin
             c_ns_l = start_l$17$q;
@@ -1707,11 +1774,13 @@ module top(clock,clear,append,wr_side,wr_ptr,read,next_list,level,branch,remaini
             c_nl_r = len_r$17$q;
         end
         if (lvl$q == idx$18) begin
-            c_b = br$18$q;
             c_cs_l = start_l$18$q;
             c_cs_r = start_r$18$q;
             c_cl_l = len_l$18$q;
             c_cl_r = len_r$18$q;
+        end
+        if (lvl$q == idx$18 + 32'h1) begin
+            c_b_up = br$18$q;
         end
         if ((c_l1 == idx$18) & (lvl$q != 32'h1f)) begin
             c_ns_l = start_l$18$q;
@@ -1720,11 +1789,13 @@ module top(clock,clear,append,wr_side,wr_ptr,read,next_list,level,branch,remaini
             c_nl_r = len_r$18$q;
         end
         if (lvl$q == idx$19) begin
-            c_b = br$19$q;
             c_cs_l = start_l$19$q;
             c_cs_r = start_r$19$q;
             c_cl_l = len_l$19$q;
             c_cl_r = len_r$19$q;
+        end
+        if (lvl$q == idx$19 + 32'h1) begin
+            c_b_up = br$19$q;
         end
         if ((c_l1 == idx$19) & (lvl$q != 32'h1f)) begin
             c_ns_l = start_l$19$q;
@@ -1733,11 +1804,13 @@ module top(clock,clear,append,wr_side,wr_ptr,read,next_list,level,branch,remaini
             c_nl_r = len_r$19$q;
         end
         if (lvl$q == idx$20) begin
-            c_b = br$20$q;
             c_cs_l = start_l$20$q;
             c_cs_r = start_r$20$q;
             c_cl_l = len_l$20$q;
             c_cl_r = len_r$20$q;
+        end
+        if (lvl$q == idx$20 + 32'h1) begin
+            c_b_up = br$20$q;
         end
         if ((c_l1 == idx$20) & (lvl$q != 32'h1f)) begin
             c_ns_l = start_l$20$q;
@@ -1746,11 +1819,13 @@ module top(clock,clear,append,wr_side,wr_ptr,read,next_list,level,branch,remaini
             c_nl_r = len_r$20$q;
         end
         if (lvl$q == idx$21) begin
-            c_b = br$21$q;
             c_cs_l = start_l$21$q;
             c_cs_r = start_r$21$q;
             c_cl_l = len_l$21$q;
             c_cl_r = len_r$21$q;
+        end
+        if (lvl$q == idx$21 + 32'h1) begin
+            c_b_up = br$21$q;
         end
         if ((c_l1 == idx$21) & (lvl$q != 32'h1f)) begin
             c_ns_l = start_l$21$q;
@@ -1759,11 +1834,13 @@ module top(clock,clear,append,wr_side,wr_ptr,read,next_list,level,branch,remaini
             c_nl_r = len_r$21$q;
         end
         if (lvl$q == idx$22) begin
-            c_b = br$22$q;
             c_cs_l = start_l$22$q;
             c_cs_r = start_r$22$q;
             c_cl_l = len_l$22$q;
             c_cl_r = len_r$22$q;
+        end
+        if (lvl$q == idx$22 + 32'h1) begin
+            c_b_up = br$22$q;
         end
         if ((c_l1 == idx$22) & (lvl$q != 32'h1f)) begin
             c_ns_l = start_l$22$q;
@@ -1772,11 +1849,13 @@ module top(clock,clear,append,wr_side,wr_ptr,read,next_list,level,branch,remaini
             c_nl_r = len_r$22$q;
         end
         if (lvl$q == idx$23) begin
-            c_b = br$23$q;
             c_cs_l = start_l$23$q;
             c_cs_r = start_r$23$q;
             c_cl_l = len_l$23$q;
             c_cl_r = len_r$23$q;
+        end
+        if (lvl$q == idx$23 + 32'h1) begin
+            c_b_up = br$23$q;
         end
         if ((c_l1 == idx$23) & (lvl$q != 32'h1f)) begin
             c_ns_l = start_l$23$q;
@@ -1785,11 +1864,13 @@ module top(clock,clear,append,wr_side,wr_ptr,read,next_list,level,branch,remaini
             c_nl_r = len_r$23$q;
         end
         if (lvl$q == idx$24) begin
-            c_b = br$24$q;
             c_cs_l = start_l$24$q;
             c_cs_r = start_r$24$q;
             c_cl_l = len_l$24$q;
             c_cl_r = len_r$24$q;
+        end
+        if (lvl$q == idx$24 + 32'h1) begin
+            c_b_up = br$24$q;
         end
         if ((c_l1 == idx$24) & (lvl$q != 32'h1f)) begin
             c_ns_l = start_l$24$q;
@@ -1798,11 +1879,13 @@ module top(clock,clear,append,wr_side,wr_ptr,read,next_list,level,branch,remaini
             c_nl_r = len_r$24$q;
         end
         if (lvl$q == idx$25) begin
-            c_b = br$25$q;
             c_cs_l = start_l$25$q;
             c_cs_r = start_r$25$q;
             c_cl_l = len_l$25$q;
             c_cl_r = len_r$25$q;
+        end
+        if (lvl$q == idx$25 + 32'h1) begin
+            c_b_up = br$25$q;
         end
         if ((c_l1 == idx$25) & (lvl$q != 32'h1f)) begin
             c_ns_l = start_l$25$q;
@@ -1811,11 +1894,13 @@ module top(clock,clear,append,wr_side,wr_ptr,read,next_list,level,branch,remaini
             c_nl_r = len_r$25$q;
         end
         if (lvl$q == idx$26) begin
-            c_b = br$26$q;
             c_cs_l = start_l$26$q;
             c_cs_r = start_r$26$q;
             c_cl_l = len_l$26$q;
             c_cl_r = len_r$26$q;
+        end
+        if (lvl$q == idx$26 + 32'h1) begin
+            c_b_up = br$26$q;
         end
         if ((c_l1 == idx$26) & (lvl$q != 32'h1f)) begin
             c_ns_l = start_l$26$q;
@@ -1824,11 +1909,13 @@ module top(clock,clear,append,wr_side,wr_ptr,read,next_list,level,branch,remaini
             c_nl_r = len_r$26$q;
         end
         if (lvl$q == idx$27) begin
-            c_b = br$27$q;
             c_cs_l = start_l$27$q;
             c_cs_r = start_r$27$q;
             c_cl_l = len_l$27$q;
             c_cl_r = len_r$27$q;
+        end
+        if (lvl$q == idx$27 + 32'h1) begin
+            c_b_up = br$27$q;
         end
         if ((c_l1 == idx$27) & (lvl$q != 32'h1f)) begin
             c_ns_l = start_l$27$q;
@@ -1837,11 +1924,13 @@ module top(clock,clear,append,wr_side,wr_ptr,read,next_list,level,branch,remaini
             c_nl_r = len_r$27$q;
         end
         if (lvl$q == idx$28) begin
-            c_b = br$28$q;
             c_cs_l = start_l$28$q;
             c_cs_r = start_r$28$q;
             c_cl_l = len_l$28$q;
             c_cl_r = len_r$28$q;
+        end
+        if (lvl$q == idx$28 + 32'h1) begin
+            c_b_up = br$28$q;
         end
         if ((c_l1 == idx$28) & (lvl$q != 32'h1f)) begin
             c_ns_l = start_l$28$q;
@@ -1850,11 +1939,13 @@ module top(clock,clear,append,wr_side,wr_ptr,read,next_list,level,branch,remaini
             c_nl_r = len_r$28$q;
         end
         if (lvl$q == idx$29) begin
-            c_b = br$29$q;
             c_cs_l = start_l$29$q;
             c_cs_r = start_r$29$q;
             c_cl_l = len_l$29$q;
             c_cl_r = len_r$29$q;
+        end
+        if (lvl$q == idx$29 + 32'h1) begin
+            c_b_up = br$29$q;
         end
         if ((c_l1 == idx$29) & (lvl$q != 32'h1f)) begin
             c_ns_l = start_l$29$q;
@@ -1863,11 +1954,13 @@ module top(clock,clear,append,wr_side,wr_ptr,read,next_list,level,branch,remaini
             c_nl_r = len_r$29$q;
         end
         if (lvl$q == idx$30) begin
-            c_b = br$30$q;
             c_cs_l = start_l$30$q;
             c_cs_r = start_r$30$q;
             c_cl_l = len_l$30$q;
             c_cl_r = len_r$30$q;
+        end
+        if (lvl$q == idx$30 + 32'h1) begin
+            c_b_up = br$30$q;
         end
         if ((c_l1 == idx$30) & (lvl$q != 32'h1f)) begin
             c_ns_l = start_l$30$q;
@@ -1876,11 +1969,13 @@ module top(clock,clear,append,wr_side,wr_ptr,read,next_list,level,branch,remaini
             c_nl_r = len_r$30$q;
         end
         if (lvl$q == idx$31) begin
-            c_b = br$31$q;
             c_cs_l = start_l$31$q;
             c_cs_r = start_r$31$q;
             c_cl_l = len_l$31$q;
             c_cl_r = len_r$31$q;
+        end
+        if (lvl$q == idx$31 + 32'h1) begin
+            c_b_up = br$31$q;
         end
         if ((c_l1 == idx$31) & (lvl$q != 32'h1f)) begin
             c_ns_l = start_l$31$q;
@@ -1890,15 +1985,13 @@ module top(clock,clear,append,wr_side,wr_ptr,read,next_list,level,branch,remaini
         end
         c_idle = ~up$q & ~done_r$q;
         c_cur_start = c_cs_l;
-        c_rem = c_cl_l - pos$q;
-        if (c_b) begin
+        if (cur_b$q) begin
             c_cur_start = c_cs_r;
-            c_rem = c_cl_r - pos$q;
         end
-        c_read = read & c_idle & (c_rem != 32'h0);
-        c_waddr = c_ns_l + c_nl_l;
+        c_read = read & c_idle & (rem$q != 32'h0);
+        c_waddr = wa_l$q;
         if (wr_side) begin
-            c_waddr = c_ns_r + c_nl_r;
+            c_waddr = wa_r$q;
         end
         c_wok = append & c_idle & (lvl$q != 32'h1f) & (c_waddr < cap);
         ovf$d = ovf$q | (append & c_idle & ~c_wok);
@@ -1916,7 +2009,7 @@ module top(clock,clear,append,wr_side,wr_ptr,read,next_list,level,branch,remaini
         sram_l$write_enable = c_wok & ~wr_side;
         sram_r$write_enable = c_wok & wr_side;
         rd_v$d = c_read;
-        rd_side$d = c_b;
+        rd_side$d = cur_b$q;
         rd_ptr = 32'h0;
         if (rd_v$q) begin
             rd_ptr = sram_l$read_data;
@@ -1926,16 +2019,24 @@ module top(clock,clear,append,wr_side,wr_ptr,read,next_list,level,branch,remaini
         end
         lvl$clock = clock;
         pos$clock = clock;
+        rem$clock = clock;
+        cur_b$clock = clock;
+        wa_l$clock = clock;
+        wa_r$clock = clock;
         up$clock = clock;
         done_r$clock = clock;
         lvl$d = lvl$q;
         pos$d = pos$q;
+        rem$d = rem$q;
+        cur_b$d = cur_b$q;
+        wa_l$d = wa_l$q;
+        wa_r$d = wa_r$q;
         up$d = up$q;
         done_r$d = done_r$q;
         c_next = next_list & c_idle & ~append;
         c_desc = c_next & (lvl$q != 32'h1f) & ((c_nl_l != 32'h0) | (c_nl_r != 32'h0));
         c_desc_b = c_nl_l == 32'h0;
-        c_u_right = up$q & ~c_b & (c_cl_r != 32'h0);
+        c_u_right = up$q & ~cur_b$q & (c_cl_r != 32'h0);
         c_u_zero = lvl$q == 32'h0;
         c_open = (c_desc & (lvl$q < 32'h1e)) | (c_u_right & (lvl$q != 32'h1f));
         c_open_lvl = lvl$q + 32'h1;
@@ -1943,20 +2044,45 @@ module top(clock,clear,append,wr_side,wr_ptr,read,next_list,level,branch,remaini
         c_open_r = c_cs_r + c_cl_r;
         if (c_desc) begin
             c_open_lvl = lvl$q + 32'h2;
-            c_open_l = c_ns_l + c_nl_l;
-            c_open_r = c_ns_r + c_nl_r;
+            c_open_l = wa_l$q;
+            c_open_r = wa_r$q;
+        end
+        if (c_wok & ~wr_side) begin
+            wa_l$d = wa_l$q + 32'h1;
+        end
+        if (c_wok & wr_side) begin
+            wa_r$d = wa_r$q + 32'h1;
+        end
+        if (c_desc | c_u_right | (up$q & ~c_u_zero)) begin
+            wa_l$d = c_open_l;
+            wa_r$d = c_open_r;
         end
         if (c_read) begin
             pos$d = pos$q + 32'h1;
+            rem$d = rem$q - 32'h1;
         end
         if (c_desc | c_u_right) begin
             pos$d = 32'h0;
         end
         if (c_desc) begin
+            rem$d = c_nl_l;
+            if (c_desc_b) begin
+                rem$d = c_nl_r;
+            end
+        end
+        if (c_u_right) begin
+            rem$d = c_cl_r;
+        end
+        if (c_desc) begin
             lvl$d = c_l1;
+            cur_b$d = c_desc_b;
+        end
+        if (c_u_right) begin
+            cur_b$d = 1'b1;
         end
         if (up$q & ~c_u_right & ~c_u_zero) begin
             lvl$d = lvl$q - 32'h1;
+            cur_b$d = c_b_up;
         end
         if (c_next & ~c_desc) begin
             up$d = 1'b1;
@@ -3153,16 +3279,20 @@ module top(clock,clear,append,wr_side,wr_ptr,read,next_list,level,branch,remaini
         if (clear) begin
             lvl$d = 32'h0;
             pos$d = 32'h0;
+            rem$d = 32'h0;
+            cur_b$d = 1'b0;
+            wa_l$d = 32'h0;
+            wa_r$d = 32'h0;
             up$d = 1'b0;
             done_r$d = 1'b0;
             ovf$d = 1'b0;
             rd_v$d = 1'b0;
         end
         level = lvl$q;
-        branch = c_b;
+        branch = cur_b$q;
         remaining = 32'h0;
         if (c_idle) begin
-            remaining = c_rem;
+            remaining = rem$q;
         end
         busy = up$q;
         done = done_r$q;

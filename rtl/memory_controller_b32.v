@@ -88,29 +88,29 @@ module top(clock,clear,halt,push,push_load,push_set,push_pair,push_id,need_a,nee
     localparam  idx16$15 = 4'hf;
     
     // Stub signals
-    reg  [43:0] ask_e$0$d;
-    wire  [43:0] ask_e$0$q;
+    reg  [19:0] ask_e$0$d;
+    wire  [19:0] ask_e$0$q;
     reg  ask_e$0$clock;
-    reg  [43:0] ask_e$1$d;
-    wire  [43:0] ask_e$1$q;
+    reg  [19:0] ask_e$1$d;
+    wire  [19:0] ask_e$1$q;
     reg  ask_e$1$clock;
-    reg  [43:0] ask_e$2$d;
-    wire  [43:0] ask_e$2$q;
+    reg  [19:0] ask_e$2$d;
+    wire  [19:0] ask_e$2$q;
     reg  ask_e$2$clock;
-    reg  [43:0] ask_e$3$d;
-    wire  [43:0] ask_e$3$q;
+    reg  [19:0] ask_e$3$d;
+    wire  [19:0] ask_e$3$q;
     reg  ask_e$3$clock;
-    reg  [43:0] ask_e$4$d;
-    wire  [43:0] ask_e$4$q;
+    reg  [19:0] ask_e$4$d;
+    wire  [19:0] ask_e$4$q;
     reg  ask_e$4$clock;
-    reg  [43:0] ask_e$5$d;
-    wire  [43:0] ask_e$5$q;
+    reg  [19:0] ask_e$5$d;
+    wire  [19:0] ask_e$5$q;
     reg  ask_e$5$clock;
-    reg  [43:0] ask_e$6$d;
-    wire  [43:0] ask_e$6$q;
+    reg  [19:0] ask_e$6$d;
+    wire  [19:0] ask_e$6$q;
     reg  ask_e$6$clock;
-    reg  [43:0] ask_e$7$d;
-    wire  [43:0] ask_e$7$q;
+    reg  [19:0] ask_e$7$d;
+    wire  [19:0] ask_e$7$q;
     reg  ask_e$7$clock;
     reg  ask_req$0$d;
     wire  ask_req$0$q;
@@ -139,8 +139,8 @@ module top(clock,clear,halt,push,push_load,push_set,push_pair,push_id,need_a,nee
     reg  [3:0] ask_n$d;
     wire  [3:0] ask_n$q;
     reg  ask_n$clock;
-    reg  [23:0] last_al$d;
-    wire  [23:0] last_al$q;
+    reg  [15:0] last_al$d;
+    wire  [15:0] last_al$q;
     reg  last_al$clock;
     reg  last_al_v$d;
     wire  last_al_v$q;
@@ -273,7 +273,7 @@ module top(clock,clear,halt,push,push_load,push_set,push_pair,push_id,need_a,nee
     reg  beat$clock;
     
     // Local signals
-    reg  [43:0] c_e0;
+    reg  [19:0] c_e0;
     reg  c_load;
     reg  c_set;
     reg  c_pair;
@@ -294,7 +294,8 @@ module top(clock,clear,halt,push,push_load,push_set,push_pair,push_id,need_a,nee
     reg  c_take;
     reg  c_rq_found;
     reg  [3:0] c_rq_idx;
-    reg  [43:0] c_rq_e;
+    reg  [19:0] c_rq_e;
+    reg  [23:0] c_rq_base;
     reg  c_tag_ok;
     reg  c_req_ta;
     reg  c_req_tb;
@@ -305,7 +306,7 @@ module top(clock,clear,halt,push,push_load,push_set,push_pair,push_id,need_a,nee
     reg  [1:0] c_hd_d;
     reg  [15:0] c_hd_r;
     reg  c_resp_node;
-    reg  [23:0] c_push_addr;
+    reg  [15:0] c_push_rec;
     reg  c_push_fetch;
     reg  [3:0] c_push_at;
     reg  [3:0] c_tag_at;
@@ -486,82 +487,82 @@ module top(clock,clear,halt,push,push_load,push_set,push_pair,push_id,need_a,nee
         .q(tag_d$15$q),
         .clock(tag_d$15$clock)
     );
-    top$tag_r$0 tag_r$0(
+    top$last_al tag_r$0(
         .d(tag_r$0$d),
         .q(tag_r$0$q),
         .clock(tag_r$0$clock)
     );
-    top$tag_r$0 tag_r$1(
+    top$last_al tag_r$1(
         .d(tag_r$1$d),
         .q(tag_r$1$q),
         .clock(tag_r$1$clock)
     );
-    top$tag_r$0 tag_r$2(
+    top$last_al tag_r$2(
         .d(tag_r$2$d),
         .q(tag_r$2$q),
         .clock(tag_r$2$clock)
     );
-    top$tag_r$0 tag_r$3(
+    top$last_al tag_r$3(
         .d(tag_r$3$d),
         .q(tag_r$3$q),
         .clock(tag_r$3$clock)
     );
-    top$tag_r$0 tag_r$4(
+    top$last_al tag_r$4(
         .d(tag_r$4$d),
         .q(tag_r$4$q),
         .clock(tag_r$4$clock)
     );
-    top$tag_r$0 tag_r$5(
+    top$last_al tag_r$5(
         .d(tag_r$5$d),
         .q(tag_r$5$q),
         .clock(tag_r$5$clock)
     );
-    top$tag_r$0 tag_r$6(
+    top$last_al tag_r$6(
         .d(tag_r$6$d),
         .q(tag_r$6$q),
         .clock(tag_r$6$clock)
     );
-    top$tag_r$0 tag_r$7(
+    top$last_al tag_r$7(
         .d(tag_r$7$d),
         .q(tag_r$7$q),
         .clock(tag_r$7$clock)
     );
-    top$tag_r$0 tag_r$8(
+    top$last_al tag_r$8(
         .d(tag_r$8$d),
         .q(tag_r$8$q),
         .clock(tag_r$8$clock)
     );
-    top$tag_r$0 tag_r$9(
+    top$last_al tag_r$9(
         .d(tag_r$9$d),
         .q(tag_r$9$q),
         .clock(tag_r$9$clock)
     );
-    top$tag_r$0 tag_r$10(
+    top$last_al tag_r$10(
         .d(tag_r$10$d),
         .q(tag_r$10$q),
         .clock(tag_r$10$clock)
     );
-    top$tag_r$0 tag_r$11(
+    top$last_al tag_r$11(
         .d(tag_r$11$d),
         .q(tag_r$11$q),
         .clock(tag_r$11$clock)
     );
-    top$tag_r$0 tag_r$12(
+    top$last_al tag_r$12(
         .d(tag_r$12$d),
         .q(tag_r$12$q),
         .clock(tag_r$12$clock)
     );
-    top$tag_r$0 tag_r$13(
+    top$last_al tag_r$13(
         .d(tag_r$13$d),
         .q(tag_r$13$q),
         .clock(tag_r$13$clock)
     );
-    top$tag_r$0 tag_r$14(
+    top$last_al tag_r$14(
         .d(tag_r$14$d),
         .q(tag_r$14$q),
         .clock(tag_r$14$clock)
     );
-    top$tag_r$0 tag_r$15(
+    top$last_al tag_r$15(
         .d(tag_r$15$d),
         .q(tag_r$15$q),
         .clock(tag_r$15$clock)
@@ -714,6 +715,10 @@ module top(clock,clear,halt,push,push_load,push_set,push_pair,push_id,need_a,nee
             c_rq_idx = idx8$0;
             c_rq_e = ask_e$0$q;
         end
+        c_rq_base = base_na;
+        if (c_rq_e[32'h0]) begin
+            c_rq_base = base_nb;
+        end
         c_tag_ok = tag_n$q <= ((port_out) & 5'h1f);
         c_req_ta = c_tag_ok & need_a & ~ta_out$q;
         c_req_tb = c_tag_ok & need_b & ~tb_out$q & ~c_req_ta;
@@ -732,7 +737,7 @@ module top(clock,clear,halt,push,push_load,push_set,push_pair,push_id,need_a,nee
             c_acc_r = tb_id;
         end
         else if (c_req_node) begin
-            mem_req_addr = c_rq_e[(32'h14)+:(24)];
+            mem_req_addr = c_rq_base + ((c_rq_e[(32'h4)+:(16)] >> 32'h1) & 24'hffffff);
             c_acc_d = ((c_rq_e[(32'h0)+:(1)]) & 2'h3);
             c_acc_r = c_rq_e[(32'h4)+:(16)] >> 32'h1;
         end
@@ -915,16 +920,11 @@ module top(clock,clear,halt,push,push_load,push_set,push_pair,push_id,need_a,nee
         end
         held_n$d = held_n$q + ((c_resp_node) & 2'h3) - ((c_take) & 2'h3);
         node_inf$d = node_inf$q + (((c_accept & c_req_node)) & 2'h3) - ((c_resp_node) & 2'h3);
-        if (push_load) begin
-            c_push_addr = base_nb + ((push_id >> 32'h1) & 24'hffffff);
-        end
-        else begin
-            c_push_addr = base_na + ((push_id >> 32'h1) & 24'hffffff);
-        end
-        c_push_fetch = push_load | ~last_al_v$q | (last_al$q != c_push_addr);
+        c_push_rec = push_id >> 32'h1;
+        c_push_fetch = push_load | ~last_al_v$q | (last_al$q != c_push_rec);
         if (push & ~push_load) begin
             last_al_v$d = 1'b1;
-            last_al$d = c_push_addr;
+            last_al$d = c_push_rec;
         end
         if (push & push_load) begin
             last_al_v$d = 1'b0;
@@ -992,35 +992,35 @@ module top(clock,clear,halt,push,push_load,push_set,push_pair,push_id,need_a,nee
             ask_req$6$d = ask_req$7$q | (c_accept & c_req_node & (c_rq_idx == idx8$7));
         end
         if (push & (c_push_at == idx8$0)) begin
-            ask_e$0$d = ((push_load) & 44'hfffffffffff) | (((push_set) & 44'hfffffffffff) << 32'h1) | (((push_pair) & 44'hfffffffffff) << 32'h2) | (((c_push_fetch) & 44'hfffffffffff) << 32'h3) | (((push_id) & 44'hfffffffffff) << 32'h4) | (((c_push_addr) & 44'hfffffffffff) << 32'h14);
+            ask_e$0$d = ((push_load) & 20'hfffff) | (((push_set) & 20'hfffff) << 32'h1) | (((push_pair) & 20'hfffff) << 32'h2) | (((c_push_fetch) & 20'hfffff) << 32'h3) | (((push_id) & 20'hfffff) << 32'h4);
             ask_req$0$d = ~c_push_fetch;
         end
         if (push & (c_push_at == idx8$1)) begin
-            ask_e$1$d = ((push_load) & 44'hfffffffffff) | (((push_set) & 44'hfffffffffff) << 32'h1) | (((push_pair) & 44'hfffffffffff) << 32'h2) | (((c_push_fetch) & 44'hfffffffffff) << 32'h3) | (((push_id) & 44'hfffffffffff) << 32'h4) | (((c_push_addr) & 44'hfffffffffff) << 32'h14);
+            ask_e$1$d = ((push_load) & 20'hfffff) | (((push_set) & 20'hfffff) << 32'h1) | (((push_pair) & 20'hfffff) << 32'h2) | (((c_push_fetch) & 20'hfffff) << 32'h3) | (((push_id) & 20'hfffff) << 32'h4);
             ask_req$1$d = ~c_push_fetch;
         end
         if (push & (c_push_at == idx8$2)) begin
-            ask_e$2$d = ((push_load) & 44'hfffffffffff) | (((push_set) & 44'hfffffffffff) << 32'h1) | (((push_pair) & 44'hfffffffffff) << 32'h2) | (((c_push_fetch) & 44'hfffffffffff) << 32'h3) | (((push_id) & 44'hfffffffffff) << 32'h4) | (((c_push_addr) & 44'hfffffffffff) << 32'h14);
+            ask_e$2$d = ((push_load) & 20'hfffff) | (((push_set) & 20'hfffff) << 32'h1) | (((push_pair) & 20'hfffff) << 32'h2) | (((c_push_fetch) & 20'hfffff) << 32'h3) | (((push_id) & 20'hfffff) << 32'h4);
             ask_req$2$d = ~c_push_fetch;
         end
         if (push & (c_push_at == idx8$3)) begin
-            ask_e$3$d = ((push_load) & 44'hfffffffffff) | (((push_set) & 44'hfffffffffff) << 32'h1) | (((push_pair) & 44'hfffffffffff) << 32'h2) | (((c_push_fetch) & 44'hfffffffffff) << 32'h3) | (((push_id) & 44'hfffffffffff) << 32'h4) | (((c_push_addr) & 44'hfffffffffff) << 32'h14);
+            ask_e$3$d = ((push_load) & 20'hfffff) | (((push_set) & 20'hfffff) << 32'h1) | (((push_pair) & 20'hfffff) << 32'h2) | (((c_push_fetch) & 20'hfffff) << 32'h3) | (((push_id) & 20'hfffff) << 32'h4);
             ask_req$3$d = ~c_push_fetch;
         end
         if (push & (c_push_at == idx8$4)) begin
-            ask_e$4$d = ((push_load) & 44'hfffffffffff) | (((push_set) & 44'hfffffffffff) << 32'h1) | (((push_pair) & 44'hfffffffffff) << 32'h2) | (((c_push_fetch) & 44'hfffffffffff) << 32'h3) | (((push_id) & 44'hfffffffffff) << 32'h4) | (((c_push_addr) & 44'hfffffffffff) << 32'h14);
+            ask_e$4$d = ((push_load) & 20'hfffff) | (((push_set) & 20'hfffff) << 32'h1) | (((push_pair) & 20'hfffff) << 32'h2) | (((c_push_fetch) & 20'hfffff) << 32'h3) | (((push_id) & 20'hfffff) << 32'h4);
             ask_req$4$d = ~c_push_fetch;
         end
         if (push & (c_push_at == idx8$5)) begin
-            ask_e$5$d = ((push_load) & 44'hfffffffffff) | (((push_set) & 44'hfffffffffff) << 32'h1) | (((push_pair) & 44'hfffffffffff) << 32'h2) | (((c_push_fetch) & 44'hfffffffffff) << 32'h3) | (((push_id) & 44'hfffffffffff) << 32'h4) | (((c_push_addr) & 44'hfffffffffff) << 32'h14);
+            ask_e$5$d = ((push_load) & 20'hfffff) | (((push_set) & 20'hfffff) << 32'h1) | (((push_pair) & 20'hfffff) << 32'h2) | (((c_push_fetch) & 20'hfffff) << 32'h3) | (((push_id) & 20'hfffff) << 32'h4);
             ask_req$5$d = ~c_push_fetch;
         end
         if (push & (c_push_at == idx8$6)) begin
-            ask_e$6$d = ((push_load) & 44'hfffffffffff) | (((push_set) & 44'hfffffffffff) << 32'h1) | (((push_pair) & 44'hfffffffffff) << 32'h2) | (((c_push_fetch) & 44'hfffffffffff) << 32'h3) | (((push_id) & 44'hfffffffffff) << 32'h4) | (((c_push_addr) & 44'hfffffffffff) << 32'h14);
+            ask_e$6$d = ((push_load) & 20'hfffff) | (((push_set) & 20'hfffff) << 32'h1) | (((push_pair) & 20'hfffff) << 32'h2) | (((c_push_fetch) & 20'hfffff) << 32'h3) | (((push_id) & 20'hfffff) << 32'h4);
             ask_req$6$d = ~c_push_fetch;
         end
         if (push & (c_push_at == idx8$7)) begin
-            ask_e$7$d = ((push_load) & 44'hfffffffffff) | (((push_set) & 44'hfffffffffff) << 32'h1) | (((push_pair) & 44'hfffffffffff) << 32'h2) | (((c_push_fetch) & 44'hfffffffffff) << 32'h3) | (((push_id) & 44'hfffffffffff) << 32'h4) | (((c_push_addr) & 44'hfffffffffff) << 32'h14);
+            ask_e$7$d = ((push_load) & 20'hfffff) | (((push_set) & 20'hfffff) << 32'h1) | (((push_pair) & 20'hfffff) << 32'h2) | (((c_push_fetch) & 20'hfffff) << 32'h3) | (((push_id) & 20'hfffff) << 32'h4);
             ask_req$7$d = ~c_push_fetch;
         end
         c_tag_at = (tag_head$q + tag_n$q[(32'h0)+:(4)]);
@@ -1182,13 +1182,13 @@ endmodule // top
 module top$ask_e$0(d,q,clock);
     
     // Module arguments
-    input wire  [43:0] d;
-    output reg  [43:0] q;
+    input wire  [19:0] d;
+    output reg  [19:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 44'h0;
+       q = 20'h0;
     end
     
     always @(posedge clock) begin
@@ -1296,13 +1296,13 @@ endmodule // top$held_n
 module top$last_al(d,q,clock);
     
     // Module arguments
-    input wire  [23:0] d;
-    output reg  [23:0] q;
+    input wire  [15:0] d;
+    output reg  [15:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 24'h0;
+       q = 16'h0;
     end
     
     always @(posedge clock) begin
@@ -1329,22 +1329,3 @@ module top$tag_n(d,q,clock);
     end
           
 endmodule // top$tag_n
-
-
-module top$tag_r$0(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$tag_r$0

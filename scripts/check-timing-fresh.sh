@@ -30,17 +30,14 @@ for table in sys.argv[1:]:
         elif r['rtl_sha256'] != rtl[u]:
             bad.append(f'{table}:{line}: {u}: measured on another rtl/{u}.v (sha256 {r["rtl_sha256"][:12]}.., '
                        f'now {rtl[u][:12]}..)')
-        # a chip's clock is its datapath's: the slow stage in its DOP unit or TRI_UNIT, not
-        # in the glue (D_CNTR, the memory port, the counters), whose paths are cut to be shorter.
+        # a chip's clock is its datapath's: the slow stage in its DOP unit or TRI_UNIT (WSCG'03's
+        # chip: in its core, `core.dop`), not in the glue (D_CNTR, the memory port, the counters;
+        # WSCG'03's Stack Engine and Memory Controller), whose paths are cut to be shorter.
         # Not for a chip at FPGA depth (`_fpga`): its units are cut for an FPGA's stages, and
-        # on these cells they are faster than the glue the other chips share. Not yet for
-        # WSCG'03's chip: the path from its Stack Engine's lists (the current list's
-        # `remaining`, a 32-way multiplexer and a 16-bit subtract) into its sequencer sets its
-        # clock, and is not cut yet (docs/explanation/architecture.md, "WSCG'03's chip").
+        # on these cells they are faster than the glue the other chips share.
         stage = r.get('slow_stage', '')
         if table.endswith('/timing.csv') and u.startswith('chip_') and not u.endswith('_fpga') \
-                and u != 'chip_wscg03_b32_k24' \
-                and not stage.startswith(('tri_unit', 'dop')):
+                and not stage.startswith(('tri_unit', 'dop', 'core.dop')):
             bad.append(f'{table}:{line}: {u}: its period is set by {stage}, not by its DOP unit or TRI_UNIT: '
                        f'cut that glue path (docs/explanation/architecture.md, "Clock period")')
     missing = sorted(set(rtl) - seen)

@@ -61,7 +61,7 @@ PROOFS=(
   "tri_cache.cover|tri_cache.sv|rtl/chip_e8m15_k6.v|COVER|cover|8|reachable: a hit through the bypass, a hit from the RAM, a miss after another id took the line, a miss after a clear, the highest line"
   "tri_fifo.count|tri_fifo.sv|rtl/chip_e8m15_k6.v|COUNT|ind|1/12|any writes and reads: held = accepted writes - accepted reads (<= 256; a write accepted below 256, a read while one is readable, one edge after its write), addresses that far apart, empty/almost_empty = none readable, full = 256 held, almost_full = 255+ readable, overflow/underflow sticky and raised exactly by a write into a full FIFO/a read of an empty one; under TRI_UNIT's rules (assumed) never raised"
   "tri_fifo.order|tri_fifo.sv|rtl/chip_e8m15_k6.v|COUNT ORDER|ind|1/8|tracked (any-constant) accepted entry: its RAM row holds it while held, shown on data_out whenever at the head and readable, leaves with exactly one read after exactly the entries accepted before it"
-  "list_stack.chain|list_stack.sv|rtl/list_stack_a8.v|CHAIN|ind|2/4|WSCG'03's Stack Engine's lists: start_s[j+1] = start_s[j] + len_s[j] for every level j <= λ and side (contiguous, the live lists never overlap), start_s[0] = 0, every list within its SRAM for j <= λ + 1, the read position within the current list, remaining = its pointers not read (0 while busy or done), overflow sticky until clear, clear empties"
+  "list_stack.chain|list_stack.sv|rtl/list_stack_a8.v|CHAIN|ind|2/4|WSCG'03's Stack Engine's lists: start_s[j+1] = start_s[j] + len_s[j] for every level j <= λ and side (contiguous, the live lists never overlap), start_s[0] = 0, every list within its SRAM for j <= λ + 1, the read position within the current list, remaining = its pointers not read (0 while busy or done), branch = the current level's branch bit, level λ + 1's write addresses its lists' ends, overflow sticky until clear, clear empties"
   "tri_fifo.cover|tri_fifo.sv|rtl/chip_e8m15_k6.v|COVER|cover|8|reachable: a write and a read at one edge, a read while the one entry held is not yet readable, entries after an ignored read of an empty FIFO, an entry read after two ahead of it, 3 readable"
 )
 
@@ -103,8 +103,11 @@ MUTANTS=(
   "tri_fifo_written_a_row_late|tri_fifo.order|rtl/chip_e8m15_k6.v|/^module top.tri_unit.fifo.write_logic(/,/^endmodule/s/ram_write_address = ((write_address\$q \& fifo_address_mask) \& 8'hff);/ram_write_address = (((write_address\$q + 9'h1) \& fifo_address_mask) \& 8'hff);/"
   "tri_fifo_entry_changed|tri_fifo.order|rtl/chip_e8m15_k6.v|/^module top.tri_unit.fifo.write_logic(/,/^endmodule/s/ram_write_data = data_in;/ram_write_data = data_in ^ 34'h1;/"
   "lifo_pop_no_wr_ptr_dec|pair_queue.order|rtl/pair_queue_n4.v|s/wr_n = wr_ptr\$q - 32'h1;/wr_n = wr_ptr\$q;/"
-  "list_open_without_len|list_stack.chain|rtl/list_stack_a8.v|s/c_open_l = c_ns_l + c_nl_l;/c_open_l = c_ns_l;/"
-  "list_read_past_end|list_stack.chain|rtl/list_stack_a8.v|s/c_read = read \& c_idle \& (c_rem != 32'h0);/c_read = read \& c_idle;/"
+  "list_open_without_len|list_stack.chain|rtl/list_stack_a8.v|s/c_open_l = wa_l\$q;/c_open_l = c_ns_l;/"
+  "list_read_past_end|list_stack.chain|rtl/list_stack_a8.v|s/c_read = read \& c_idle \& (rem\$q != 32'h0);/c_read = read \& c_idle;/"
+  "list_read_keeps_remaining|list_stack.chain|rtl/list_stack_a8.v|s/rem\$d = rem\$q - 32'h1;/rem\$d = rem\$q;/"
+  "list_up_keeps_branch|list_stack.chain|rtl/list_stack_a8.v|s/cur_b\$d = c_b_up;/cur_b\$d = cur_b\$q;/"
+  "list_append_keeps_address|list_stack.chain|rtl/list_stack_a8.v|s/wa_l\$d = wa_l\$q + 32'h1;/wa_l\$d = wa_l\$q;/"
   "control_syntax_error|pair_queue.bounds|rtl/pair_queue_n4.v|0,/^endmodule/s//endmodul/"
 )
 
@@ -144,6 +147,7 @@ LS_PREP='rename top list_stack'
 # wrapper's f_* wires (level j's 16-bit marker in f_x[16 j +: 16])
 ls_hier() {
   local j s="connect -nounset -set f_lvl dut.lvl\$q; connect -nounset -set f_pos dut.pos\$q; "
+  s+="connect -nounset -set f_wa_l dut.wa_l\$q; connect -nounset -set f_wa_r dut.wa_r\$q; "
   s+="connect -nounset -set f_up dut.up\$q; connect -nounset -set f_done dut.done_r\$q; "
   for ((j = 0; j < 32; j++)); do
     s+="connect -nounset -set f_br[$j] dut.br\$$j\$q; "

@@ -74,7 +74,7 @@
 # (also written to docs/figures/timing_config.csv, next to --out).
 # Work files: target/timing/<unit>/ (netlist.v, stat.txt, sta.tcl, sta.txt, yosys.log).
 #
-# Usage: scripts/timing-study.sh [--units PATTERNS | --configs-only] [--hier PATTERNS] [--bbox PATTERNS] [--out FILE] [--timeout SECONDS]
+# Usage: scripts/timing-study.sh [--units PATTERNS | --configs-only] [--hier PATTERNS] [--bbox PATTERNS] [--glue PATTERNS] [--out FILE] [--timeout SECONDS]
 #   --units    space-separated shell globs on the unit name (default: every rtl/*.v); e.g.
 #              --units 'fp_* doptrf_*' for the small ones (seconds to minutes each)
 #   --hier     the units synthesized hierarchically (default 'dop_unit_* tcheck_* tri_unit_* chip_*':
@@ -82,6 +82,10 @@
 #   --bbox     the units timed by the bbox flow (default none), e.g.
 #              --units 'chip_b32_k24 chip_e8m15_b32_k24' --bbox 'chip_*'
 #              (needs the rows of the units it black-boxes in --out)
+#   --glue     units the bbox flow leaves in the glue, not black-boxed (default none): small
+#              control units, so that their paths are timed pin to pin, not by the unit's worst
+#              input and output figures applied to every pin; e.g. WSCG'03's chip:
+#              --units chip_wscg03_b32_k24 --bbox 'chip_*' --glue 'sequencer memory_controller_*'
 #   --rtl      the directory of the units' Verilog (default rtl/; the bbox flow's RAM parts)
 #   --configs-only  measure nothing: rewrite timing_config.csv from the rows of --out
 #   --sta-only re-time the netlists of an earlier run (target/timing/<unit>/netlist_raw.v)
@@ -112,6 +116,7 @@ while [ $# -gt 0 ]; do
     --units) UNITS=$2; shift 2 ;;
     --hier) HIER=$2; shift 2 ;;
     --bbox) BBOX=$2; shift 2 ;;
+    --glue) export BBOX_GLUE=$2; shift 2 ;;
     --rtl) RTL=$(cd "$2" && pwd); shift 2 ;;
     --configs-only) UNITS=; shift ;;
     --sta-only) STA_ONLY=1; shift ;;

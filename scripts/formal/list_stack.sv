@@ -13,7 +13,8 @@
 //     start_s[j] + len_s[j], and start_s[0] = 0, so the live lists never overlap;
 //   * no list past its SRAM: start_s[j] + len_s[j] <= 256 for j <= λ + 1;
 //   * the current list's read position within it; `remaining` its pointers not yet read
-//     (0 while stepping up or done); level, busy, done the registers';
+//     (0 while stepping up or done); `branch` the current level's branch bit; level λ + 1's
+//     write addresses its lists' ends (start + len); level, busy, done the registers';
 //   * overflow sticky until clear; a clear empties everything.
 // COVER: level 3 reached, a right list read after stepping up, done after a descent, a
 //   list of 2 read to its end (an overflow needs 257 appends: tb/wscg03.rs shows it).
@@ -41,6 +42,7 @@ module wrapper (
     (* keep *) wire [4:0] f_lvl;
     (* keep *) wire [15:0] f_pos;
     (* keep *) wire f_up, f_done;
+    (* keep *) wire [15:0] f_wa_l, f_wa_r;
     (* keep *) wire [31:0] f_br;
     (* keep *) wire [511:0] f_start_l, f_start_r, f_len_l, f_len_r;
 
@@ -69,6 +71,11 @@ module wrapper (
             end
         assert (f_pos <= cur_len);                                                // read within the list
         assert (remaining == ((f_up || f_done) ? 16'd0 : cur_len - f_pos));
+        assert (branch == f_br[f_lvl]);
+        if (f_lvl != 31) begin                                                    // append here
+            assert (f_wa_l == at(f_start_l, f_lvl + 1) + at(f_len_l, f_lvl + 1));
+            assert (f_wa_r == at(f_start_r, f_lvl + 1) + at(f_len_r, f_lvl + 1));
+        end
         assert (!(f_up && f_done));
         assert (level == f_lvl && busy == f_up && done == f_done);
         if (f_up || f_done) assert (f_pos == 0);

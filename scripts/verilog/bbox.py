@@ -4,7 +4,9 @@ synthesize whole in the machine's budget is timed as its glue logic around black
 black box carrying timing measured by the same flow on the same Verilog.
 
 Walking the chip's instance tree from `top`, a module becomes a black box when
-  - unit: its design is that of an exported unit with a row in timing.csv: compared by a
+  - unit: its design is that of an exported unit with a row in timing.csv (but for the units
+    matching the shell globs of BBOX_GLUE, which stay in the glue: small control units whose
+    paths are timed pin to pin there, not by a unit's worst pin figure): compared by a
     canonical hash (module text with every module name replaced by the hash of its own
     design, so the chip's deduplicated module names do not matter), or
   - ram: it is a rust-hdl RAM (`reg [W:0] mem[N:0]`, registered read; Yosys maps it to
@@ -43,6 +45,7 @@ The liberty cell of a black box (what is measured, what is assumed):
     period is the largest of the glue's and these.
 """
 import csv
+import fnmatch
 import hashlib
 import io
 import os
@@ -95,6 +98,8 @@ def split(chip, timing, rtl, work, parts):
     for r in csv.DictReader(open(timing)):
         f = os.path.join(rtl, r['unit'] + '.v')
         if r['unit'].startswith('chip_') or not r['min_period_ns'] or not os.path.exists(f):
+            continue
+        if any(fnmatch.fnmatch(r['unit'], g) for g in os.environ.get('BBOX_GLUE', '').split()):
             continue
         by_hash.setdefault(canon(modules(f))['top'], r['unit'])
     boxes, todo, seen = {}, ['top'], set()

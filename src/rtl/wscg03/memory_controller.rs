@@ -14,10 +14,12 @@ macro_rules! memory_controller {
         ///
         /// * The ask list (`ask_e`, [`MC_ASKS`](crate::chip::rtl::MC_ASKS) entries, the head
         ///   in entry 0, shifted down as it goes): `push` writes `{load, set, pair, fetch,
-        ///   id, address}`: a load of B's node `push_id` (and its sibling, `push_pair`) or
-        ///   the aligned node `push_id`, against d' set `push_set`, at the record `id >> 1`
-        ///   of B's or A's node region. An aligned node in the record of the aligned node
-        ///   before it (no load between) does not fetch it again (`fetch` low).
+        ///   id}`: a load of B's node `push_id` (and its sibling, `push_pair`) or the
+        ///   aligned node `push_id`, against d' set `push_set`, at the record `id >> 1` of
+        ///   B's or A's node region (its address added when it is requested, so that no
+        ///   adder follows the sequencer's push). An aligned node in the record of the
+        ///   aligned node before it (`last_al`, no load between) does not fetch it again
+        ///   (`fetch` low).
         /// * Requests (`mem_req_valid`, `mem_req_addr`), while at most `port_out` are
         ///   outstanding: A's triangle word (`need_a`, record `ta_id`) unless one is
         ///   outstanding, B's (`need_b`, `tb_id`), else the first ask not requested, while
@@ -100,10 +102,10 @@ macro_rules! memory_controller {
             asks: Constant<Bits<4>>,
             idx16: [Constant<Bits<4>>; 16],
             // the ask list: bit 0 load, 1 set, 2 pair, 3 fetch, 4.. id, 20.. address
-            ask_e: [DFF<Bits<44>>; 8],
+            ask_e: [DFF<Bits<20>>; 8],
             ask_req: [DFF<Bit>; 8],
             ask_n: DFF<Bits<4>>,
-            last_al: DFF<Bits<24>>,
+            last_al: DFF<Bits<16>>,
             last_al_v: DFF<Bit>,
             // the requests outstanding: destination (0 A's node, 1 B's, 2 A's triangle,
             // 3 B's) and record, oldest at `tag_head`
@@ -120,7 +122,7 @@ macro_rules! memory_controller {
             held_n: DFF<Bits<2>>,
             cur: DFF<Bits<$MW>>,
             beat: DFF<Bits<3>>,
-            c_e0: Signal<Local, Bits<44>>,
+            c_e0: Signal<Local, Bits<20>>,
             c_load: Signal<Local, Bit>,
             c_set: Signal<Local, Bit>,
             c_pair: Signal<Local, Bit>,
@@ -141,7 +143,8 @@ macro_rules! memory_controller {
             c_take: Signal<Local, Bit>,
             c_rq_found: Signal<Local, Bit>,
             c_rq_idx: Signal<Local, Bits<4>>,
-            c_rq_e: Signal<Local, Bits<44>>,
+            c_rq_e: Signal<Local, Bits<20>>,
+            c_rq_base: Signal<Local, Bits<24>>,
             c_tag_ok: Signal<Local, Bit>,
             c_req_ta: Signal<Local, Bit>,
             c_req_tb: Signal<Local, Bit>,
@@ -152,7 +155,7 @@ macro_rules! memory_controller {
             c_hd_d: Signal<Local, Bits<2>>,
             c_hd_r: Signal<Local, Bits<16>>,
             c_resp_node: Signal<Local, Bit>,
-            c_push_addr: Signal<Local, Bits<24>>,
+            c_push_rec: Signal<Local, Bits<16>>,
             c_push_fetch: Signal<Local, Bit>,
             c_push_at: Signal<Local, Bits<4>>,
             c_tag_at: Signal<Local, Bits<4>>,
@@ -226,6 +229,10 @@ macro_rules! memory_controller {
                         self.c_rq_e.next = self.ask_e[7 - j].q.val();
                     }
                 }
+                self.c_rq_base.next = self.base_na.val();
+                if self.c_rq_e.val().get_bit(0) {
+                    self.c_rq_base.next = self.base_nb.val();
+                }
                 self.c_tag_ok.next = self.tag_n.q.val() <= bit_cast::<5, 4>(self.port_out.val());
                 self.c_req_ta.next = self.c_tag_ok.val() & self.need_a.val() & !self.ta_out.q.val();
                 self.c_req_tb.next = self.c_tag_ok.val() & self.need_b.val() & !self.tb_out.q.val()
@@ -245,7 +252,8 @@ macro_rules! memory_controller {
                     self.c_acc_d.next = 3.into();
                     self.c_acc_r.next = self.tb_id.val();
                 } else if self.c_req_node.val() {
-                    self.mem_req_addr.next = self.c_rq_e.val().get_bits::<24>(20);
+                    self.mem_req_addr.next =
+                        self.c_rq_base.val() + bit_cast::<24, 16>(self.c_rq_e.val().get_bits::<16>(4) >> 1);
                     self.c_acc_d.next = bit_cast::<2, 1>(self.c_rq_e.val().get_bits::<1>(0));
                     self.c_acc_r.next = self.c_rq_e.val().get_bits::<16>(4) >> 1;
                 } else {
@@ -369,17 +377,13 @@ macro_rules! memory_controller {
         impl crate::rtl::kernel::Kernel<McLists> for MemoryController {
             #[hdl_gen]
             fn update(&mut self) {
-                // the ask pushed: its address and whether it fetches its record
-                if self.push_load.val() {
-                    self.c_push_addr.next = self.base_nb.val() + bit_cast::<24, 16>(self.push_id.val() >> 1);
-                } else {
-                    self.c_push_addr.next = self.base_na.val() + bit_cast::<24, 16>(self.push_id.val() >> 1);
-                }
+                // the ask pushed: whether it fetches its record
+                self.c_push_rec.next = self.push_id.val() >> 1;
                 self.c_push_fetch.next = self.push_load.val() | !self.last_al_v.q.val()
-                    | (self.last_al.q.val() != self.c_push_addr.val());
+                    | (self.last_al.q.val() != self.c_push_rec.val());
                 if self.push.val() & !self.push_load.val() {
                     self.last_al_v.d.next = true;
-                    self.last_al.d.next = self.c_push_addr.val();
+                    self.last_al.d.next = self.c_push_rec.val();
                 }
                 if self.push.val() & self.push_load.val() {
                     self.last_al_v.d.next = false;
@@ -403,12 +407,11 @@ macro_rules! memory_controller {
                 }
                 for j in 0..8 {
                     if self.push.val() & (self.c_push_at.val() == self.idx8[j].val()) {
-                        self.ask_e[j].d.next = bit_cast::<44, 1>(self.push_load.val().into())
-                            | (bit_cast::<44, 1>(self.push_set.val().into()) << 1)
-                            | (bit_cast::<44, 1>(self.push_pair.val().into()) << 2)
-                            | (bit_cast::<44, 1>(self.c_push_fetch.val().into()) << 3)
-                            | (bit_cast::<44, 16>(self.push_id.val()) << 4)
-                            | (bit_cast::<44, 24>(self.c_push_addr.val()) << 20);
+                        self.ask_e[j].d.next = bit_cast::<20, 1>(self.push_load.val().into())
+                            | (bit_cast::<20, 1>(self.push_set.val().into()) << 1)
+                            | (bit_cast::<20, 1>(self.push_pair.val().into()) << 2)
+                            | (bit_cast::<20, 1>(self.c_push_fetch.val().into()) << 3)
+                            | (bit_cast::<20, 16>(self.push_id.val()) << 4);
                         self.ask_req[j].d.next = !self.c_push_fetch.val();
                     }
                 }
@@ -553,6 +556,7 @@ macro_rules! memory_controller {
                     c_rq_found: Default::default(),
                     c_rq_idx: Default::default(),
                     c_rq_e: Default::default(),
+                    c_rq_base: Default::default(),
                     c_tag_ok: Default::default(),
                     c_req_ta: Default::default(),
                     c_req_tb: Default::default(),
@@ -563,7 +567,7 @@ macro_rules! memory_controller {
                     c_hd_d: Default::default(),
                     c_hd_r: Default::default(),
                     c_resp_node: Default::default(),
-                    c_push_addr: Default::default(),
+                    c_push_rec: Default::default(),
                     c_push_fetch: Default::default(),
                     c_push_at: Default::default(),
                     c_tag_at: Default::default(),

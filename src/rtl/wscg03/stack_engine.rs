@@ -9,7 +9,11 @@ const _: () = assert!(LIST_LEVELS == 32);
 /// WSCG'03's Stack Engine's lists (§4.2): the left and the right list SRAM (`sram_l`,
 /// `sram_r`, 2^A node pointers each; the chip's: `chip::rtl::LIST_SRAM_BITS`), the level register λ (`level`), a branch bit per
 /// level (`br`) and marker registers per level and side, a list's start and length
-/// (`start_l`, `len_l`, `start_r`, `len_r`). Reads refer to λ, appends to λ + 1, whose lists
+/// (`start_l`, `len_l`, `start_r`, `len_r`), and the current list's pointers not yet read
+/// (`rem`: a read takes one, entering a list sets its length), level λ's branch bit
+/// (`cur_b`) and level λ + 1's write address per side (`wa_l`, `wa_r`: its start plus
+/// its length), registers so that neither the sequencer nor an append waits for a
+/// multiplexer of the levels' markers. Reads refer to λ, appends to λ + 1, whose lists
 /// start where level λ's end: lists are written contiguously and the live ones never
 /// overlap. Its clocked model is [`ListStack`](crate::cycle::wscg03::stack_engine::ListStack),
 /// equal on every port every clock (tb/wscg03.rs).
@@ -52,6 +56,10 @@ pub struct ListStack<const A: usize> {
     cap: Constant<Bits<16>>,
     lvl: DFF<Bits<5>>,
     pos: DFF<Bits<16>>,
+    rem: DFF<Bits<16>>,
+    cur_b: DFF<Bit>,
+    wa_l: DFF<Bits<16>>,
+    wa_r: DFF<Bits<16>>,
     up: DFF<Bit>,
     done_r: DFF<Bit>,
     ovf: DFF<Bit>,
@@ -63,7 +71,8 @@ pub struct ListStack<const A: usize> {
     len_l: [DFF<Bits<16>>; 32],
     len_r: [DFF<Bits<16>>; 32],
     // level λ's (current) and λ + 1's markers
-    c_b: Signal<Local, Bit>,
+    // the branch bit of level λ - 1 (the level stepped up to)
+    c_b_up: Signal<Local, Bit>,
     c_cs_l: Signal<Local, Bits<16>>,
     c_cs_r: Signal<Local, Bits<16>>,
     c_cl_l: Signal<Local, Bits<16>>,
@@ -74,7 +83,6 @@ pub struct ListStack<const A: usize> {
     c_nl_r: Signal<Local, Bits<16>>,
     c_l1: Signal<Local, Bits<5>>,
     c_cur_start: Signal<Local, Bits<16>>,
-    c_rem: Signal<Local, Bits<16>>,
     c_raddr: Signal<Local, Bits<16>>,
     c_idle: Signal<Local, Bit>,
     c_read: Signal<Local, Bit>,
@@ -117,6 +125,10 @@ impl<const A: usize> Default for ListStack<A> {
             cap: Constant::new((1u64 << A).into()),
             lvl: Default::default(),
             pos: Default::default(),
+            rem: Default::default(),
+            cur_b: Default::default(),
+            wa_l: Default::default(),
+            wa_r: Default::default(),
             up: Default::default(),
             done_r: Default::default(),
             ovf: Default::default(),
@@ -127,7 +139,7 @@ impl<const A: usize> Default for ListStack<A> {
             start_r: array_init(),
             len_l: array_init(),
             len_r: array_init(),
-            c_b: Default::default(),
+            c_b_up: Default::default(),
             c_cs_l: Default::default(),
             c_cs_r: Default::default(),
             c_cl_l: Default::default(),
@@ -138,7 +150,6 @@ impl<const A: usize> Default for ListStack<A> {
             c_nl_r: Default::default(),
             c_l1: Default::default(),
             c_cur_start: Default::default(),
-            c_rem: Default::default(),
             c_raddr: Default::default(),
             c_idle: Default::default(),
             c_read: Default::default(),
@@ -166,7 +177,7 @@ impl<const A: usize> crate::rtl::kernel::Kernel<ListAccess> for ListStack<A> {
     fn update(&mut self) {
         dff_setup!(self, clock, ovf, rd_v, rd_side);
         self.c_l1.next = self.lvl.q.val() + 1;
-        self.c_b.next = false;
+        self.c_b_up.next = false;
         self.c_cs_l.next = 0.into();
         self.c_cs_r.next = 0.into();
         self.c_cl_l.next = 0.into();
@@ -177,11 +188,13 @@ impl<const A: usize> crate::rtl::kernel::Kernel<ListAccess> for ListStack<A> {
         self.c_nl_r.next = 0.into();
         for j in 0..32 {
             if self.lvl.q.val() == self.idx[j].val() {
-                self.c_b.next = self.br[j].q.val();
                 self.c_cs_l.next = self.start_l[j].q.val();
                 self.c_cs_r.next = self.start_r[j].q.val();
                 self.c_cl_l.next = self.len_l[j].q.val();
                 self.c_cl_r.next = self.len_r[j].q.val();
+            }
+            if self.lvl.q.val() == self.idx[j].val() + 1 {
+                self.c_b_up.next = self.br[j].q.val();
             }
             // level 31 has no level below it: c_l1 wraps to 0 and nothing is appended
             if (self.c_l1.val() == self.idx[j].val()) & (self.lvl.q.val() != 31) {
@@ -193,15 +206,13 @@ impl<const A: usize> crate::rtl::kernel::Kernel<ListAccess> for ListStack<A> {
         }
         self.c_idle.next = !self.up.q.val() & !self.done_r.q.val();
         self.c_cur_start.next = self.c_cs_l.val();
-        self.c_rem.next = self.c_cl_l.val() - self.pos.q.val();
-        if self.c_b.val() {
+        if self.cur_b.q.val() {
             self.c_cur_start.next = self.c_cs_r.val();
-            self.c_rem.next = self.c_cl_r.val() - self.pos.q.val();
         }
-        self.c_read.next = self.read.val() & self.c_idle.val() & (self.c_rem.val() != 0);
-        self.c_waddr.next = self.c_ns_l.val() + self.c_nl_l.val();
+        self.c_read.next = self.read.val() & self.c_idle.val() & (self.rem.q.val() != 0);
+        self.c_waddr.next = self.wa_l.q.val();
         if self.wr_side.val() {
-            self.c_waddr.next = self.c_ns_r.val() + self.c_nl_r.val();
+            self.c_waddr.next = self.wa_r.q.val();
         }
         self.c_wok.next = self.append.val()
             & self.c_idle.val()
@@ -223,7 +234,7 @@ impl<const A: usize> crate::rtl::kernel::Kernel<ListAccess> for ListStack<A> {
         self.sram_l.write_enable.next = self.c_wok.val() & !self.wr_side.val();
         self.sram_r.write_enable.next = self.c_wok.val() & self.wr_side.val();
         self.rd_v.d.next = self.c_read.val();
-        self.rd_side.d.next = self.c_b.val();
+        self.rd_side.d.next = self.cur_b.q.val();
         self.rd_ptr.next = 0.into();
         if self.rd_v.q.val() {
             self.rd_ptr.next = self.sram_l.read_data.val();
@@ -241,14 +252,14 @@ struct ListStep;
 impl<const A: usize> crate::rtl::kernel::Kernel<ListStep> for ListStack<A> {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, lvl, pos, up, done_r);
+        dff_setup!(self, clock, lvl, pos, rem, cur_b, wa_l, wa_r, up, done_r);
         // down into λ + 1's left list, else its right one; else up
         self.c_next.next = self.next_list.val() & self.c_idle.val() & !self.append.val();
         self.c_desc.next = self.c_next.val()
             & (self.lvl.q.val() != 31)
             & ((self.c_nl_l.val() != 0) | (self.c_nl_r.val() != 0));
         self.c_desc_b.next = self.c_nl_l.val() == 0;
-        self.c_u_right.next = self.up.q.val() & !self.c_b.val() & (self.c_cl_r.val() != 0);
+        self.c_u_right.next = self.up.q.val() & !self.cur_b.q.val() & (self.c_cl_r.val() != 0);
         self.c_u_zero.next = self.lvl.q.val() == 0;
         // the level whose lists open: λ + 2 going down (if there is one), λ + 1 going right
         self.c_open.next = (self.c_desc.val() & (self.lvl.q.val() < 30))
@@ -258,20 +269,48 @@ impl<const A: usize> crate::rtl::kernel::Kernel<ListStep> for ListStack<A> {
         self.c_open_r.next = self.c_cs_r.val() + self.c_cl_r.val();
         if self.c_desc.val() {
             self.c_open_lvl.next = self.lvl.q.val() + 2;
-            self.c_open_l.next = self.c_ns_l.val() + self.c_nl_l.val();
-            self.c_open_r.next = self.c_ns_r.val() + self.c_nl_r.val();
+            self.c_open_l.next = self.wa_l.q.val();
+            self.c_open_r.next = self.wa_r.q.val();
+        }
+        // λ + 1's write addresses: one on an append; where the level stepped into opens its
+        // next level's lists (down, right), or the level stepped up to's lists end (up)
+        if self.c_wok.val() & !self.wr_side.val() {
+            self.wa_l.d.next = self.wa_l.q.val() + 1;
+        }
+        if self.c_wok.val() & self.wr_side.val() {
+            self.wa_r.d.next = self.wa_r.q.val() + 1;
+        }
+        if self.c_desc.val() | self.c_u_right.val() | (self.up.q.val() & !self.c_u_zero.val()) {
+            self.wa_l.d.next = self.c_open_l.val();
+            self.wa_r.d.next = self.c_open_r.val();
         }
         if self.c_read.val() {
             self.pos.d.next = self.pos.q.val() + 1;
+            self.rem.d.next = self.rem.q.val() - 1;
         }
         if self.c_desc.val() | self.c_u_right.val() {
             self.pos.d.next = 0.into();
         }
+        // the list entered: λ + 1's left one if not empty, else its right one; λ's right one
+        if self.c_desc.val() {
+            self.rem.d.next = self.c_nl_l.val();
+            if self.c_desc_b.val() {
+                self.rem.d.next = self.c_nl_r.val();
+            }
+        }
+        if self.c_u_right.val() {
+            self.rem.d.next = self.c_cl_r.val();
+        }
         if self.c_desc.val() {
             self.lvl.d.next = self.c_l1.val();
+            self.cur_b.d.next = self.c_desc_b.val();
+        }
+        if self.c_u_right.val() {
+            self.cur_b.d.next = true;
         }
         if self.up.q.val() & !self.c_u_right.val() & !self.c_u_zero.val() {
             self.lvl.d.next = self.lvl.q.val() - 1;
+            self.cur_b.d.next = self.c_b_up.val();
         }
         if self.c_next.val() & !self.c_desc.val() {
             self.up.d.next = true;
@@ -323,16 +362,20 @@ impl<const A: usize> crate::rtl::kernel::Kernel<ListStep> for ListStack<A> {
         if self.clear.val() {
             self.lvl.d.next = 0.into();
             self.pos.d.next = 0.into();
+            self.rem.d.next = 0.into();
+            self.cur_b.d.next = false;
+            self.wa_l.d.next = 0.into();
+            self.wa_r.d.next = 0.into();
             self.up.d.next = false;
             self.done_r.d.next = false;
             self.ovf.d.next = false;
             self.rd_v.d.next = false;
         }
         self.level.next = self.lvl.q.val();
-        self.branch.next = self.c_b.val();
+        self.branch.next = self.cur_b.q.val();
         self.remaining.next = 0.into();
         if self.c_idle.val() {
-            self.remaining.next = self.c_rem.val();
+            self.remaining.next = self.rem.q.val();
         }
         self.busy.next = self.up.q.val();
         self.done.next = self.done_r.q.val();
