@@ -16,7 +16,7 @@ use collision_chip::chip::config::{DopBits, MemLayout};
 use collision_chip::chip::layout::Dst;
 use collision_chip::chip::memory::{Ddr, MemTiming, Memory};
 use collision_chip::chip::params::Params;
-use collision_chip::chip::probes::{probe_index, PROBES};
+use collision_chip::chip::probes::DATE05;
 use collision_chip::chip::reg::{Mode, Order};
 use collision_chip::chip::rtl::{ChipKind, Depth};
 use collision_chip::chip::wscg03::Architecture;
@@ -354,7 +354,7 @@ fn sphere_torus(cfg: ChipConfig) -> (Chip, Pose) {
 
 /// The index of probe `scope`.`name` in a clock's values.
 fn probe(scope: &str, name: &str) -> usize {
-    probe_index(scope, name).expect("a probe")
+    DATE05.index(scope, name).expect("a probe")
 }
 
 /// A LIFO all-pairs query at `p` on the cycle model, clock by clock, `obs` seeing every
@@ -421,7 +421,7 @@ fn run(
         &d,
         true,
         |_, p| {
-            assert_eq!(p.map(|v| v.len()), Some(PROBES.len()));
+            assert_eq!(p.map(|v| v.len()), Some(DATE05.signals.len()));
             Ok(())
         },
         false,

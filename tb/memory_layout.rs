@@ -8,7 +8,7 @@ use collision_chip::chip::config::ChipConfig;
 use collision_chip::chip::config::MemLayout;
 use collision_chip::chip::layout::Dst;
 use collision_chip::chip::preset::Preset;
-use collision_chip::chip::probes::PROBES;
+use collision_chip::chip::probes::DATE05;
 use collision_chip::chip::reg::{Mode, Order};
 use collision_chip::cycle;
 use collision_chip::cycle::drive::Reader;
@@ -115,7 +115,7 @@ fn answers_do_not_depend_on_the_layout() {
 #[test]
 #[ignore]
 fn reuse_distance_of_node_records() {
-    let at = |name: &str| PROBES.iter().position(|p| p.1 == name).unwrap();
+    let at = |name: &str| DATE05.signals.iter().position(|p| p.1 == name).unwrap();
     let (valid, ready, addr, dst) = (
         at("req_valid"),
         at("req_ready"),

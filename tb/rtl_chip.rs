@@ -1,6 +1,6 @@
 //! The RTL collision chip in rust-hdl, clocked in lockstep with the cycle model
 //! (`cycle::drive::Lockstep`): every output and every traversal signal of
-//! `chip::probes::PROBES` equal after every clock, on queries of the checked-in set, one of
+//! `chip::probes::DATE05` equal after every clock, on queries of the checked-in set, one of
 //! them on the papers' chip (k = 24, binary32), one on the k = 6 chip with a folded TRI_UNIT
 //! (the traces the exported Verilog must
 //! reproduce under Verilator, scripts/run-chip.sh), on a
@@ -10,9 +10,11 @@
 //! `CCHIP_BLESS=1 cargo test --release --test rtl_chip` rewrites the expected traces of the
 //! queries it runs, but only from a run in which rust-hdl and the cycle model agreed.
 
+mod common;
 use collision_chip::chip::memory::Ddr;
 use collision_chip::chip::memory::Memory;
 use collision_chip::chip::params::Params;
+use collision_chip::chip::probes::DATE05;
 use collision_chip::chip::reg::Mode;
 use collision_chip::chip::reg::Order;
 use collision_chip::chip::rtl::{ChipKind, Depth};
@@ -26,6 +28,7 @@ use collision_chip::harness::chip_io::{
 use collision_chip::pose::Pose;
 use collision_chip::query::Chip;
 use collision_chip::traversal::{QueryResult, Traversal};
+use common::vcd_file::{assert_shows, vcd_results};
 use std::path::PathBuf;
 
 /// Generous: the longest query takes about 2,000 cycles.
@@ -183,7 +186,7 @@ impl Case {
             let mut w = vcd
                 .as_ref()
                 .filter(|_| run == 0)
-                .map(|p| open_vcd(p, &[], 0..u64::MAX).unwrap());
+                .map(|p| open_vcd(p, &DATE05, &[], 0..u64::MAX).unwrap());
             let tr = run_query(
                 &mut ls,
                 &self.image.writes,
@@ -191,7 +194,7 @@ impl Case {
                 true,
                 |t, p| {
                     if let Some(w) = w.as_mut() {
-                        w.cycle(t, &p.unwrap()).map_err(|e| e.to_string())?;
+                        w.cycle(t, &p.unwrap())?;
                     }
                     Ok(())
                 },
@@ -281,58 +284,7 @@ fn sphere_lifo_first() {
         tr.results,
         "the VCD's results differ from the trace"
     );
-}
-
-/// The results a traversal VCD shows: `(cycle, a, b, uncertain)` for every time step
-/// (= cycle) with `chip.results.res_valid` high.
-fn vcd_results(path: &std::path::Path) -> Vec<(u64, u32, u32, bool)> {
-    use vcd::{Command, Value};
-    let mut p = vcd::Parser::new(std::io::BufReader::new(std::fs::File::open(path).unwrap()));
-    let h = p.parse_header().unwrap();
-    let id = |n: &str| {
-        h.find_var(&["chip", "results", n])
-            .unwrap_or_else(|| panic!("no chip.results.{n}"))
-            .code
-    };
-    let ids = [
-        id("res_valid"),
-        id("res_a"),
-        id("res_b"),
-        id("res_uncertain"),
-    ];
-    let num = |v: &[Value]| {
-        v.iter()
-            .fold(0u64, |a, x| a << 1 | (*x == Value::V1) as u64)
-    };
-    let (mut cur, mut time, mut out) = ([0u64; 4], None, vec![]);
-    let mut flush = |t: Option<u64>, cur: &[u64; 4]| {
-        if let Some(t) = t {
-            if cur[0] == 1 {
-                out.push((t, cur[1] as u32, cur[2] as u32, cur[3] == 1));
-            }
-        }
-    };
-    for c in p {
-        match c.unwrap() {
-            Command::Timestamp(t) => {
-                // values hold until they change: every step from the last time to t
-                if let Some(t0) = time {
-                    for s in t0..t {
-                        flush(Some(s), &cur);
-                    }
-                }
-                time = Some(t);
-            }
-            Command::ChangeVector(i, v) => {
-                if let Some(k) = ids.iter().position(|&x| x == i) {
-                    cur[k] = num(&v);
-                }
-            }
-            _ => {}
-        }
-    }
-    flush(time, &cur);
-    out
+    assert_shows(&path, DATE05.gtkw);
 }
 
 /// The papers' chip (k = 24 DOPTRF lanes, binary32 throughout) on a first-hit query with

@@ -2,9 +2,11 @@
 //! traversal's (WSCG'03 Algorithm 2) on random configurations and memories, every clock is
 //! booked to one cause, and small lists follow timelines derived by hand.
 
+mod common;
 use collision_chip::chip::config::{ChipConfig, DopRounding, Formats};
 use collision_chip::chip::memory::{Ddr, MemTiming, Memory};
 use collision_chip::chip::params::Params;
+use collision_chip::chip::probes::WSCG03;
 use collision_chip::chip::reg::Mode;
 use collision_chip::chip::rtl::ChipKind;
 use collision_chip::chip::wscg03::StackParams;
@@ -114,7 +116,7 @@ proptest! {
         let (tr, s) = (&run.trace, &run.stats);
         prop_assert!(tr.check(mode, &golden).is_ok(), "{:?}\n{}", tr.check(mode, &golden), tr.text());
         // the chip clocked register by register answers the same
-        let clocked = collision_chip::cycle::wscg03::clocked::run(&chip, &chip.setup(&pose), first, &p, MAX_CYCLES, |_, _, _| {}).unwrap();
+        let clocked = collision_chip::cycle::wscg03::clocked::run(&chip, &chip.setup(&pose), (first, &p), MAX_CYCLES, |_, _, _| {}, None).unwrap();
         prop_assert!(clocked.trace.check(mode, &golden).is_ok(), "clocked: {:?}", clocked.trace.check(mode, &golden));
         if !first {
             let g = golden.counters;
@@ -272,8 +274,9 @@ fn long_lists_hide_the_transforms() {
 /// A scene on WSCG'03's chip (`[chip] preset = "wscg03"`, clocked as its RTL): the chip's
 /// pairs are the golden list traversal's (the run's golden check fails the run otherwise),
 /// whose pairs are the exact oracle's (no misses, no extras), every pose has its clocks
-/// booked (summing to its clocks), and the explain names WSCG'03's units; a VCD of it is
-/// refused.
+/// booked (summing to its clocks), and the explain names WSCG'03's units. Its waveforms:
+/// a VCD per pose of the scopes asked for, in the window asked for, with the results; a
+/// scope of DATE'05's chip is refused, naming WSCG'03's.
 #[test]
 fn a_scene_on_wscg03s_chip_answers_as_the_exact_oracle() {
     use collision_chip::scene::{graph::Plan, run::Prepared, Scene};
@@ -305,11 +308,50 @@ fn a_scene_on_wscg03s_chip_answers_as_the_exact_oracle() {
             "{c:?}"
         );
     }
-    // refused as the scene is read, so --explain and --dot refuse it as run does
-    let e = Scene::parse(&format!("{text}waveforms = \"w\"\n"), "t").unwrap_err();
+    let e = Scene::parse(
+        &format!("{text}waveforms = {{ dir = \"w\", scopes = [\"d_cntr\"] }}\n"),
+        "t",
+    )
+    .unwrap_err();
     assert!(
-        e.starts_with("t:13: [outputs] waveforms") && e.contains("has no probes yet"),
+        e.contains("no scope \"d_cntr\"; the scopes are host, stack_engine, memory_controller"),
         "{e}"
+    );
+    let dir =
+        std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("target/test-vcd/wscg03_scene");
+    let _ = std::fs::remove_dir_all(&dir);
+    let waves = format!("{text}waveforms = {{ dir = {dir:?}, scopes = [\"stack_engine\", \"results\"], cycles = [10, 100000] }}\n");
+    let s = Scene::parse(&waves, "t").unwrap();
+    let run = Prepared::new(&s, |spec| {
+        collision_chip::mesh::resolve(spec).map_err(|e| e.to_string())
+    })
+    .unwrap()
+    .run(|| ())
+    .unwrap();
+    assert_eq!(run.activity.vcd_files, 4);
+    let vcd = std::fs::read_to_string(dir.join("pose2.vcd")).unwrap();
+    assert!(
+        vcd.contains("$scope module stack_engine $end")
+            && !vcd.contains("$scope module dop_unit $end"),
+        "{vcd}"
+    );
+    assert!(
+        vcd.contains("#10\n") && !vcd.contains("#9\n"),
+        "the window starts at cycle 10"
+    );
+    let c = run.records[2].cycles.as_ref().unwrap();
+    assert!(c.cycles < 100_000 && c.vcd.is_some());
+    let mut shown: Vec<_> = (common::vcd_file::vcd_results(&dir.join("pose2.vcd")).iter())
+        .map(|r| (r.1, r.2, r.3))
+        .collect();
+    let mut want: Vec<_> = (c.hit_pairs.iter().map(|p| (p.0, p.1, false)))
+        .chain(c.uncertain_pairs.iter().map(|p| (p.0, p.1, true)))
+        .collect();
+    shown.sort();
+    want.sort();
+    assert!(
+        !shown.is_empty() && shown == want,
+        "the VCD's results {shown:?}, the run's {want:?}"
     );
     // a cross-check of a k its RTL is not built for is refused before anything runs
     let k14 = text.replace("preset = \"wscg03\"\n", "preset = \"wscg03\"\nk = 14\n");
@@ -535,8 +577,15 @@ fn clocked_chip_answers_as_the_golden_list_traversal() {
         let golden = chip.query(&pose, Mode::All, Traversal::List);
         for first in [false, true] {
             let mode = if first { Mode::First } else { Mode::All };
-            let run =
-                clocked::run(&chip, &setup, first, &Params::RTL, MAX_CYCLES, |_, _, _| {}).unwrap();
+            let run = clocked::run(
+                &chip,
+                &setup,
+                (first, &Params::RTL),
+                MAX_CYCLES,
+                |_, _, _| {},
+                None,
+            )
+            .unwrap();
             let tr = &run.trace;
             assert!(
                 tr.check(mode, &golden).is_ok(),
@@ -576,8 +625,15 @@ fn clocked_chip_answers_as_the_golden_list_traversal() {
         let golden = chip.query(&pose, Mode::All, Traversal::List);
         for first in [false, true] {
             let mode = if first { Mode::First } else { Mode::All };
-            let run =
-                clocked::run(&chip, &setup, first, &Params::RTL, MAX_CYCLES, |_, _, _| {}).unwrap();
+            let run = clocked::run(
+                &chip,
+                &setup,
+                (first, &Params::RTL),
+                MAX_CYCLES,
+                |_, _, _| {},
+                None,
+            )
+            .unwrap();
             assert!(
                 run.trace.check(mode, &golden).is_ok(),
                 "teapot/teapot {mode:?}: {:?}",
@@ -739,7 +795,9 @@ fn clocked_chip_refuses_a_record_map() {
 /// every clock of three queries, driven by DATE'05's driver from the memory image (real
 /// triangle words) and with the setup words on the host port: a bunny patch against
 /// itself (every pair tested uncertain, results back-pressuring TRI_UNIT), intersecting
-/// pairs of all pairs, and a first hit that halts the query.
+/// pairs of all pairs, and a first hit that halts the query. Every traversal signal too
+/// (`chip::probes::WSCG03`): the first query's VCD, target/rtl-vcd/chip_wscg03_patch_all.vcd
+/// from rust-hdl, shows the trace's results and every signal of its GTKWave save file.
 #[test]
 fn chip_rtl_lockstep() {
     use collision_chip::chip::memory::{MemTiming, Memory};
@@ -759,6 +817,8 @@ fn chip_rtl_lockstep() {
         ..ChipConfig::default()
     };
     let moved = Pose::new(0.0, 0.0, 0.0, 0.5, 0.2, 0.1);
+    let vcd = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("target/rtl-vcd/chip_wscg03_patch_all.vcd");
     for (mesh, pose, first) in [
         ("bunny-patch:12", Pose::default(), false),
         ("bunny-patch:24", moved, false),
@@ -767,7 +827,17 @@ fn chip_rtl_lockstep() {
         let t0 = std::time::Instant::now();
         let tris = query_mesh(mesh).unwrap();
         let chip = Chip::new(&tris, &tris, cfg).unwrap();
-        let trace = cross_check(&chip, &chip.setup(&pose), first, &p, 100_000).unwrap();
+        let path = (mesh == "bunny-patch:12").then_some(vcd.as_path());
+        let trace = cross_check(&chip, &chip.setup(&pose), (first, &p), 100_000, path).unwrap();
+        if path.is_some() {
+            assert_eq!(
+                common::vcd_file::vcd_results(&vcd),
+                trace.results,
+                "the VCD's results"
+            );
+            common::vcd_file::assert_shows(&vcd, WSCG03.gtkw);
+            println!("wrote {}", vcd.display());
+        }
         let uncertain = trace.results.iter().filter(|r| r.3).count();
         println!(
             "WSCG'03 chip RTL, {mesh}, first hit {first}: {} clocks, {} pairs tested, {} results ({uncertain} uncertain) as the clocked chip ({:.0?})",

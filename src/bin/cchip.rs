@@ -139,8 +139,9 @@ struct RunOpts {
     #[arg(long)]
     rtl: bool,
     /// Write a traversal VCD per pose from the cycle model into this directory; open one
-    /// with `gtkwave DIR/pose0.vcd scripts/gtkw/chip_e8m15_k6.gtkw`. (A scene's
-    /// `waveforms` table also picks scopes and a cycle window.)
+    /// with `gtkwave DIR/pose0.vcd scripts/gtkw/chip_e8m15_k6.gtkw` (WSCG'03's chip:
+    /// scripts/gtkw/chip_wscg03_b32_k24.gtkw). (A scene's `waveforms` table also picks
+    /// scopes and a cycle window.)
     #[arg(long, value_name = "DIR")]
     vcd: Option<PathBuf>,
     /// Print the scene's dataflow graph, pruned to what its outputs need, and what each
@@ -670,7 +671,8 @@ fn run(path: Option<PathBuf>, o: RunOpts) -> Result<(), String> {
     for (i, r) in records.iter().enumerate() {
         let Some(c) = &r.cycles else { continue };
         if let Some(v) = &c.vcd {
-            println!("pose {i}: VCD {v}  (gtkwave {v} scripts/gtkw/chip_e8m15_k6.gtkw)");
+            let gtkw = scene.architecture.probes().gtkw;
+            println!("pose {i}: VCD {v}  (gtkwave {v} {gtkw})");
         }
         if c.overflow {
             println!(

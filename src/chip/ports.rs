@@ -55,8 +55,11 @@ pub trait Clocked {
     /// The outputs in the current cycle.
     fn outputs(&self) -> ChipOut;
     /// Applies `i` for the current cycle and clocks one rising edge. With `probe`, returns
-    /// the [`PROBES`](super::probes::PROBES) signals' values in that cycle (inputs applied, before the edge).
+    /// the values of its [`probe_list`](Self::probe_list) in that cycle (inputs applied,
+    /// before the edge).
     fn step(&mut self, i: &ChipIn, probe: bool) -> Option<Vec<u64>>;
+    /// The traversal signals this chip shows.
+    fn probe_list(&self) -> &'static super::probes::Probes;
     /// Why this level cannot go on (a lockstep difference), if so.
     fn fault(&self) -> Option<String> {
         None
@@ -103,6 +106,10 @@ impl<C: Clocked + ?Sized> Clocked for &mut C {
 
     fn step(&mut self, i: &ChipIn, probe: bool) -> Option<Vec<u64>> {
         (**self).step(i, probe)
+    }
+
+    fn probe_list(&self) -> &'static super::probes::Probes {
+        (**self).probe_list()
     }
 
     fn fault(&self) -> Option<String> {

@@ -16,6 +16,14 @@ pub enum Architecture {
 }
 
 impl Architecture {
+    /// The traversal signals its chip shows (VCDs, lockstep checks).
+    pub fn probes(self) -> &'static super::probes::Probes {
+        match self {
+            Architecture::Date05 => &super::probes::DATE05,
+            Architecture::Wscg03 => &super::probes::WSCG03,
+        }
+    }
+
     pub fn name(self) -> &'static str {
         match self {
             Architecture::Date05 => "date05",

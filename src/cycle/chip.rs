@@ -702,6 +702,10 @@ impl Clocked for Chip<'_> {
         }
     }
 
+    fn probe_list(&self) -> &'static crate::chip::probes::Probes {
+        &crate::chip::probes::DATE05
+    }
+
     fn step(&mut self, i: &ChipIn, probe: bool) -> Option<Vec<u64>> {
         let c = self.logic;
         let (accept, give) = (c.accepts(i), c.gives(i));

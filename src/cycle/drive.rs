@@ -6,7 +6,7 @@
 use super::memory::{MemCounters, MemModel};
 use crate::chip::memory::MemClocks;
 use crate::chip::ports::{ChipIn, ChipOut, Clocked, MemorySide};
-use crate::chip::probes::{probe_valid, PROBES};
+use crate::chip::probes::Probes;
 use crate::chip::reg::Mode;
 use crate::traversal::QueryResult;
 use std::fmt::Write as _;
@@ -207,8 +207,8 @@ impl MemorySide for Served {
 
 /// Runs one query: the register `writes` one per clock, `start` (cycle 0), then clocks
 /// until `done`, the memory model serving requests and the host reading results by
-/// `d.reader`. `observe(cycle, probes)` sees every cycle from 0 on with the [`PROBES`]
-/// values if `probe` is set (a VCD, a lockstep check). With `skip` and without `probe`,
+/// `d.reader`. `observe(cycle, probes)` sees every cycle from 0 on with the values of the
+/// chip's [`probe_list`](Clocked::probe_list) if `probe` is set (a VCD, a lockstep check). With `skip` and without `probe`,
 /// the level runs on its own between the driver's reads of results ([`Clocked::wait`],
 /// told the cycle by which the driver has a result to read).
 pub fn run_query<C: Clocked>(
@@ -314,8 +314,8 @@ fn fault<C: Clocked>(chip: &C, cyc: u64) -> Result<(), ChipError> {
 }
 
 /// Two levels clocked with the same inputs, compared after every clock: every output,
-/// and, where both levels are probed, every [`PROBES`] signal whose value is specified
-/// ([`probe_valid`]). The first
+/// and every traversal signal ([`Clocked::probe_list`], the same at both levels) whose value
+/// is specified ([`Probes::specified`]). The first
 /// difference is the [`fault`](Clocked::fault), naming the signal and both values.
 pub struct Lockstep<A, B> {
     pub a: A,
@@ -349,10 +349,11 @@ impl<A: Clocked, B: Clocked> Clocked for Lockstep<A, B> {
             ));
         }
         let (pa, pb) = (self.a.step(i, true), self.b.step(i, true));
+        let list = self.a.probe_list();
         if let (None, Some(pa), Some(pb)) = (&self.diff, &pa, &pb) {
-            let specified = |k: usize| probe_valid(k).is_none_or(|v| pa[v] == 1);
-            if let Some(k) = (0..PROBES.len()).find(|&k| specified(k) && pa[k] != pb[k]) {
-                let (scope, name, _) = PROBES[k];
+            let specified = |k: usize| list.specified(k, pa);
+            if let Some(k) = (0..list.signals.len()).find(|&k| specified(k) && pa[k] != pb[k]) {
+                let (scope, name, _) = list.signals[k];
                 self.diff = Some(format!(
                     "signal chip.{scope}.{name}: {} {}, {} {}",
                     self.names.0, pa[k], self.names.1, pb[k]
@@ -360,6 +361,10 @@ impl<A: Clocked, B: Clocked> Clocked for Lockstep<A, B> {
             }
         }
         pa
+    }
+
+    fn probe_list(&self) -> &'static Probes {
+        self.a.probe_list()
     }
 
     fn fault(&self) -> Option<String> {
@@ -411,17 +416,22 @@ impl<C: Clocked, F: FnMut(u64, &ChipOut, &ChipIn)> Clocked for Watch<C, F> {
         self.chip.step(i, probe)
     }
 
+    fn probe_list(&self) -> &'static Probes {
+        self.chip.probe_list()
+    }
+
     fn fault(&self) -> Option<String> {
         self.chip.fault()
     }
 }
 
-/// A VCD of the [`PROBES`] signals, one time unit per clock (time t shows every signal in
-/// cycle t, cycle 0 the one whose edge takes `start`), one scope per unit under `chip`:
-/// for GTKWave with scripts/gtkw/chip_e8m15_k6.gtkw. `scopes` picks the units (all if
-/// empty), `window` the cycles.
+/// A VCD of a chip's traversal signals (`probes`), one time unit per clock (time t shows
+/// every signal in cycle t, cycle 0 the one whose edge takes `start`), one scope per unit
+/// under `chip`: for GTKWave with its save file ([`Probes::gtkw`]). `scopes` picks the units
+/// (all if empty), `window` the cycles.
 pub struct ProbeVcd<W: std::io::Write> {
     w: vcd::Writer<W>,
+    probes: &'static Probes,
     /// The VCD id of each probe, if its scope is written.
     ids: Vec<Option<vcd::IdCode>>,
     last: Vec<Option<u64>>,
@@ -429,13 +439,18 @@ pub struct ProbeVcd<W: std::io::Write> {
 }
 
 impl<W: std::io::Write> ProbeVcd<W> {
-    pub fn new(out: W, scopes: &[String], window: std::ops::Range<u64>) -> std::io::Result<Self> {
+    pub fn new(
+        out: W,
+        probes: &'static Probes,
+        scopes: &[String],
+        window: std::ops::Range<u64>,
+    ) -> std::io::Result<Self> {
         let mut w = vcd::Writer::new(out);
         w.timescale(1, vcd::TimescaleUnit::NS)?;
         w.add_module("chip")?;
         let mut ids = vec![];
         let mut scope = "";
-        for &(s, name, width) in &PROBES {
+        for &(s, name, width) in probes.signals {
             if !scopes.is_empty() && !scopes.iter().any(|x| x == s) {
                 ids.push(None);
                 continue;
@@ -456,8 +471,9 @@ impl<W: std::io::Write> ProbeVcd<W> {
         w.enddefinitions()?;
         Ok(ProbeVcd {
             w,
+            probes,
             ids,
-            last: vec![None; PROBES.len()],
+            last: vec![None; probes.signals.len()],
             window,
         })
     }
@@ -478,7 +494,7 @@ impl<W: std::io::Write> ProbeVcd<W> {
                 self.w.timestamp(t)?;
                 stamped = true;
             }
-            let width = PROBES[k].2;
+            let width = self.probes.signals[k].2;
             let bits: Vec<vcd::Value> = (0..width)
                 .rev()
                 .map(|b| {
@@ -495,13 +511,27 @@ impl<W: std::io::Write> ProbeVcd<W> {
     }
 }
 
-/// A traversal VCD at `path` (its directory made if missing) of `scopes` (all if empty)
-/// in cycles `window`. Errors name the path.
+/// A traversal VCD written to a file, whose errors name it.
+pub struct VcdFile {
+    vcd: ProbeVcd<std::io::BufWriter<std::fs::File>>,
+    path: std::path::PathBuf,
+}
+
+impl VcdFile {
+    /// The values of cycle `t`.
+    pub fn cycle(&mut self, t: u64, values: &[u64]) -> Result<(), String> {
+        (self.vcd.cycle(t, values)).map_err(|e| format!("{}: {e}", self.path.display()))
+    }
+}
+
+/// A traversal VCD of `probes` at `path` (its directory made if missing) of `scopes` (all
+/// if empty) in cycles `window`. Errors name the path.
 pub fn open_vcd(
     path: &std::path::Path,
+    probes: &'static Probes,
     scopes: &[String],
     window: std::ops::Range<u64>,
-) -> Result<ProbeVcd<std::io::BufWriter<std::fs::File>>, ChipError> {
+) -> Result<VcdFile, ChipError> {
     let io = |e: std::io::Error| ChipError(format!("{}: {e}", path.display()));
     if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
         if dir.is_file() {
@@ -513,7 +543,10 @@ pub fn open_vcd(
         std::fs::create_dir_all(dir).map_err(io)?;
     }
     let file = std::io::BufWriter::new(std::fs::File::create(path).map_err(io)?);
-    ProbeVcd::new(file, scopes, window).map_err(io)
+    Ok(VcdFile {
+        vcd: ProbeVcd::new(file, probes, scopes, window).map_err(io)?,
+        path: path.to_path_buf(),
+    })
 }
 
 #[cfg(test)]

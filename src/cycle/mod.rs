@@ -37,18 +37,35 @@ use crate::chip::reg::{Mode, Order};
 /// latency costs no time; the bound only catches a hung model).
 pub const MAX_CYCLES: u64 = 1 << 50;
 
-/// Called with every cycle's [`PROBES`](crate::chip::probes::PROBES) values; an Err stops the run.
+/// Called with every cycle's traversal signals' values ([`DATE05`](crate::chip::probes::DATE05)); an Err stops the run.
 pub type ProbeObserver<'p> = dyn FnMut(u64, &[u64]) -> Result<(), String> + 'p;
+
+/// A traversal VCD asked for: its path, the scopes written (all if empty), the window of
+/// cycles.
+pub struct VcdOut<'p>(
+    pub &'p std::path::Path,
+    pub &'p [String],
+    pub std::ops::Range<u64>,
+);
+
+impl VcdOut<'_> {
+    /// The VCD file of `probes`, opened.
+    pub fn open(
+        self,
+        probes: &'static crate::chip::probes::Probes,
+    ) -> Result<drive::VcdFile, String> {
+        drive::open_vcd(self.0, probes, self.1, self.2).map_err(|e| e.0)
+    }
+}
 
 /// What a cycle-model run records besides its trace.
 #[derive(Default)]
 pub struct Record<'p> {
     /// Count where the clocks went ([`chip::Stats`]).
     pub counters: bool,
-    /// Write a traversal VCD here: the [`PROBES`](crate::chip::probes::PROBES) of these scopes (all if empty) in this
-    /// window of cycles.
-    pub vcd: Option<(&'p std::path::Path, &'p [String], std::ops::Range<u64>)>,
-    /// Call with every cycle's [`PROBES`](crate::chip::probes::PROBES) values (a cross-check).
+    /// Write a traversal VCD of the [`DATE05`](crate::chip::probes::DATE05) signals.
+    pub vcd: Option<VcdOut<'p>>,
+    /// Call with every cycle's [`DATE05`](crate::chip::probes::DATE05) values (a cross-check).
     pub probes: Option<&'p mut ProbeObserver<'p>>,
 }
 
@@ -85,13 +102,9 @@ pub fn run_query(
     let trace = if vcd.is_none() && observer.is_none() {
         drive::run_query(&mut c, &writes, &d, false, |_, _| Ok(()), true)
     } else {
-        let mut w = match vcd {
-            Some((path, scopes, window)) => Some((
-                drive::open_vcd(path, scopes, window).map_err(|e| e.0)?,
-                path,
-            )),
-            None => None,
-        };
+        let mut w = vcd
+            .map(|v| v.open(&crate::chip::probes::DATE05))
+            .transpose()?;
         drive::run_query(
             &mut c,
             &writes,
@@ -99,9 +112,8 @@ pub fn run_query(
             true,
             |t, v| {
                 let v = v.unwrap_or_default();
-                if let Some((w, path)) = &mut w {
-                    w.cycle(t, &v)
-                        .map_err(|e| format!("{}: {e}", path.display()))?;
+                if let Some(w) = &mut w {
+                    w.cycle(t, &v)?;
                 }
                 match observer.as_deref_mut() {
                     Some(f) => f(t, &v),

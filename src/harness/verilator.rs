@@ -7,7 +7,7 @@
 use super::chip_io::QueryImage;
 use crate::chip::memory::{MemClocks, Memory};
 use crate::chip::ports::{ChipIn, ChipOut};
-use crate::chip::probes::probe_valid;
+use crate::chip::probes::DATE05;
 use crate::cycle::drive::ChipTrace;
 use std::path::{Path, PathBuf};
 
@@ -19,7 +19,7 @@ pub const TB_MEMORY_WORDS: usize = 1 << 16;
 /// for the k = 6 chip, 2,400 for the k = 24 one on the checked-in queries): for estimates.
 pub const VERILATOR_CLOCKS_PER_SECOND: f64 = 2000.0;
 
-/// The ports chip_tb.v prints on a `ports` line, in order, by their [`PROBES`](crate::chip::probes::PROBES) names.
+/// The ports chip_tb.v prints on a `ports` line, in order, by their [`DATE05`] probes' names.
 pub const PORTS: [(&str, &str); 16] = [
     ("host", "busy"),
     ("host", "done"),
@@ -40,7 +40,7 @@ pub const PORTS: [(&str, &str); 16] = [
 ];
 
 fn probe_index(p: (&str, &str)) -> usize {
-    crate::chip::probes::probe_index(p.0, p.1).expect("every port is a probe")
+    DATE05.index(p.0, p.1).expect("every port is a probe")
 }
 
 type Ports = [u64; PORTS.len()];
@@ -51,7 +51,7 @@ type Ports = [u64; PORTS.len()];
 pub struct PortLog(Vec<(u64, Ports)>);
 
 impl PortLog {
-    /// Records cycle `t` from the cycle model's [`PROBES`](crate::chip::probes::PROBES) values.
+    /// Records cycle `t` from the cycle model's [`DATE05`] values.
     pub fn record(&mut self, t: u64, probes: &[u64]) {
         let mut p = [0; PORTS.len()];
         for (k, &port) in PORTS.iter().enumerate() {
@@ -116,7 +116,7 @@ impl PortLog {
         let qualifier: Vec<Option<usize>> = PORTS
             .iter()
             .map(|&p| {
-                probe_valid(probe_index(p)).map(|v| {
+                DATE05.valid(probe_index(p)).map(|v| {
                     PORTS
                         .iter()
                         .position(|&q| probe_index(q) == v)
@@ -304,7 +304,6 @@ pub fn cross_check(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::chip::probes::PROBES;
 
     /// chip_tb.v's memory depth is [`TB_MEMORY_WORDS`], and its `ports` line is [`PORTS`].
     #[test]
@@ -330,7 +329,7 @@ mod tests {
     #[test]
     fn differences_name_the_cycle_and_the_port() {
         let mut a = PortLog::default();
-        let mut probes = vec![0u64; PROBES.len()];
+        let mut probes = vec![0u64; DATE05.signals.len()];
         a.record(0, &probes);
         a.record(1, &probes);
         probes[probe_index(("memory", "req_valid"))] = 1;

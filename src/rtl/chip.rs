@@ -375,7 +375,7 @@ macro_rules! chip {
         }
 
         impl<const N: usize, const NP1: usize, const NM1: usize> CollisionChip<N, NP1, NM1> {
-            /// The values of the traversal signals [`crate::chip::probes::PROBES`] (in that
+            /// The values of the traversal signals [`crate::chip::probes::DATE05`] (in that
             /// order) as the logic shows them now: what the lockstep check compares and
             /// the traversal VCD shows (scripts/gtkw/chip_e8m15_k6.gtkw).
             pub fn probe(&self) -> Vec<u64> {

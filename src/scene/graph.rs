@@ -222,7 +222,7 @@ impl Unit {
                 crate::measure::TIMING_RUNS
             ),
             Unit::OutMemory => "memory words and bytes, words per clock, port busy share".into(),
-            Unit::OutWaveforms => "VCD files for GTKWave (scripts/gtkw/chip_e8m15_k6.gtkw)".into(),
+            Unit::OutWaveforms => format!("VCD files for GTKWave ({})", s.architecture.probes().gtkw),
             Unit::OutAccuracy => "exact pairs, misses, extras per pose".into(),
             Unit::OutCrossCheck => "agreement of the levels, or the pose, cycle and signal of the first difference".into(),
         }

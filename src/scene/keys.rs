@@ -125,7 +125,7 @@ fn why_unused(u: &Uses, section: &str, key: &str) -> Option<String> {
 }
 
 /// Refuses what the scene's outputs ask of a configuration that cannot give it, before
-/// anything runs: WSCG'03's chip has no probes yet and streams binary32; D_CNTR runs the fifo and lifo
+/// anything runs: WSCG'03's chip streams binary32; D_CNTR runs the fifo and lifo
 /// traversals only; a cross-check needs an RTL chip of the configuration
 /// ([`rtl_order`](crate::harness::chip_io::rtl_order)). Errors name the key's line, or the
 /// command line's flag.
@@ -145,21 +145,18 @@ pub(super) fn runnable(s: &Scene, w: &Written, text: &str) -> Result<(), String>
             }
         )
     };
-    if s.architecture == Architecture::Wscg03 {
-        if s.outputs.waveforms.is_some() {
-            return Err(format!("{}: WSCG'03's chip (architecture wscg03) has no probes yet, so it gives no waveforms: drop it, or run DATE'05's chip ([chip] architecture = \"date05\", or --architecture date05)", at("outputs", "waveforms", "--vcd")));
-        }
-        if plan.runs(Unit::DCntr) && s.cfg.format.dop != crate::format::Format::BINARY32 {
-            return Err(format!("{}: WSCG'03's chip streams eight binary32 distances a clock on its 256-bit bus (its RTL), so its clocks are binary32's: set format = \"binary32\", or run DATE'05's chip ([chip] architecture = \"date05\") for other formats", at("chip", "format", "[chip] format")));
-        }
-        return Ok(());
-    }
     if let Some(w) = s.outputs.waveforms.as_ref().filter(|w| w.dir.is_file()) {
         return Err(format!(
             "{}: {} is a file; give a directory for the VCD files",
             at("outputs", "waveforms", "--vcd"),
             w.dir.display()
         ));
+    }
+    if s.architecture == Architecture::Wscg03 {
+        if plan.runs(Unit::DCntr) && s.cfg.format.dop != crate::format::Format::BINARY32 {
+            return Err(format!("{}: WSCG'03's chip streams eight binary32 distances a clock on its 256-bit bus (its RTL), so its clocks are binary32's: set format = \"binary32\", or run DATE'05's chip ([chip] architecture = \"date05\") for other formats", at("chip", "format", "[chip] format")));
+        }
+        return Ok(());
     }
     if plan.runs(Unit::DCntr) && s.traversal.order().is_none() {
         return Err(format!(

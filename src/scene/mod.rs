@@ -301,7 +301,7 @@ impl std::fmt::Display for CrossCheck {
     }
 }
 
-/// Which traversal VCDs a scene writes: one per pose into `dir`, the [`crate::chip::probes::PROBES`]
+/// Which traversal VCDs a scene writes: one per pose into `dir`, the chip's traversal signals
 /// of `scopes` (all if empty) in cycles `window` (the scene's `cycles = [first, last]`).
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Waveforms {
@@ -320,8 +320,9 @@ impl Waveforms {
         }
     }
 
-    /// From the scene's `waveforms`: a directory, or a table `{ dir, scopes, cycles }`.
-    fn of(v: toml::Value) -> Result<Self, String> {
+    /// From the scene's `waveforms`: a directory, or a table `{ dir, scopes, cycles }` of
+    /// the chip's traversal signals `probes`.
+    fn of(v: toml::Value, probes: &crate::chip::probes::Probes) -> Result<Self, String> {
         const FORM: &str = "give a directory (waveforms = \"DIR\") or a table (waveforms = { dir = \"DIR\", scopes = [\"d_cntr\", ...], cycles = [first, last] })";
         let bad = |what: &str| format!("[outputs] waveforms: {what}; {FORM}");
         let (dir, scopes, cycles) = match v {
@@ -362,7 +363,7 @@ impl Waveforms {
             _ => return Err(bad("neither a directory nor a table")),
         };
         let dir = std::path::PathBuf::from(dir);
-        let known = crate::chip::probes::probe_scopes();
+        let known = probes.scopes();
         let scopes = scopes.unwrap_or_default();
         if let Some(s) = scopes.iter().find(|s| !known.contains(&s.as_str())) {
             return Err(format!(
@@ -608,7 +609,7 @@ impl Scene {
                 None => f
                     .outputs
                     .waveforms
-                    .map(Waveforms::of)
+                    .map(|w| Waveforms::of(w, architecture.probes()))
                     .transpose()
                     .map_err(err)?,
             },

@@ -224,12 +224,7 @@ impl<'s> Prepared<'s> {
         let (s, plan, chip) = (self.scene, &self.plan, &self.chip);
         let order = s.traversal.order().expect("checked in Prepared::new");
         let setup = chip.setup(&sp.pose);
-        let wave = s
-            .outputs
-            .waveforms
-            .as_ref()
-            .filter(|_| plan.runs(Unit::WaveformWriter));
-        let vcd = wave.map(|w| w.dir.join(format!("pose{i}.vcd")));
+        let wave = self.waveforms(i);
         // the exported Verilog's ports, recorded from the cycle model's probes
         let mut ports = verilator::PortLog::default();
         let mut observe = |t: u64, v: &[u64]| {
@@ -238,10 +233,7 @@ impl<'s> Prepared<'s> {
         };
         let rec = cycle::Record {
             counters: plan.runs(Unit::Counters),
-            vcd: vcd
-                .as_deref()
-                .zip(wave)
-                .map(|(p, w)| (p, &w.scopes[..], w.window.clone())),
+            vcd: wave.as_ref().map(|w| w.out()),
             probes: self
                 .verilog
                 .as_ref()
@@ -262,7 +254,7 @@ impl<'s> Prepared<'s> {
             a.cycle_runs += 1;
             a.counted_runs += stats.is_some() as u64;
             a.cycle_clocks += trace.cycles;
-            a.vcd_files += vcd.is_some() as u64;
+            a.vcd_files += wave.is_some() as u64;
         });
         if plan.runs(Unit::GoldenCheck) {
             let golden_all = match s.mode {
@@ -351,7 +343,7 @@ impl<'s> Prepared<'s> {
         );
         (r.stats, r.vcd, r.cross_checked) = (
             stats,
-            vcd.map(|p| p.display().to_string()),
+            wave.map(|w| w.0.display().to_string()),
             cross_checked.map(|c| c.to_string()),
         );
         Ok(r)
@@ -373,12 +365,15 @@ impl<'s> Prepared<'s> {
         let max = cycle::MAX_CYCLES;
         let mut ports = verilator::PortLog::default();
         let see = |t, o: &_, i: &_| ports.record_ports(t, o, i);
-        let run = cycle::wscg03::clocked::run(chip, &setup, first, &s.params, max, see)
+        let wave = self.waveforms(i);
+        let vcd = wave.as_ref().map(|w| w.out());
+        let run = cycle::wscg03::clocked::run(chip, &setup, (first, &s.params), max, see, vcd)
             .map_err(|e| format!("pose {i}: {e}"))?;
         counts.add(|a| {
             a.cycle_runs += 1;
             a.counted_runs += 1;
             a.cycle_clocks += run.trace.cycles;
+            a.vcd_files += wave.is_some() as u64;
         });
         if self.plan.runs(Unit::GoldenCheck) {
             let golden = match (s.mode, s.traversal) {
@@ -405,7 +400,7 @@ impl<'s> Prepared<'s> {
                     ));
                 }
                 let max = 2 * run.trace.cycles + 1000;
-                let rtl = wscg03_io::chip::cross_check(chip, &setup, first, &s.params, max)
+                let rtl = wscg03_io::chip::cross_check(chip, &setup, (first, &s.params), max, None)
                     .map_err(|e| format!("pose {i}: rust-hdl and the clocked chip differ: {e}"))?;
                 counts.add(|a| a.rtl_runs += 1);
                 if rtl != run.trace {
@@ -443,7 +438,24 @@ impl<'s> Prepared<'s> {
             tri_fetches_a: run.tri_fetches_a,
         });
         r.cross_checked = cross_checked.map(|c| c.to_string());
+        r.vcd = wave.map(|w| w.0.display().to_string());
         Ok(r)
+    }
+
+    /// Pose `i`'s traversal VCD, if the scene writes waveforms: its path and what it holds.
+    fn waveforms(&self, i: usize) -> Option<PoseVcd<'_>> {
+        let w = (self.scene.outputs.waveforms.as_ref())
+            .filter(|_| self.plan.runs(Unit::WaveformWriter))?;
+        Some(PoseVcd(w.dir.join(format!("pose{i}.vcd")), w))
+    }
+}
+
+/// A pose's traversal VCD: its path, the scene's waveforms.
+struct PoseVcd<'s>(std::path::PathBuf, &'s crate::scene::Waveforms);
+
+impl PoseVcd<'_> {
+    fn out(&self) -> cycle::VcdOut<'_> {
+        cycle::VcdOut(&self.0, &self.1.scopes, self.1.window.clone())
     }
 }
 
@@ -908,30 +920,35 @@ mod tests {
     }
 
     /// What `run` refuses before it builds anything, the scene refuses: `--explain` and
-    /// `--dot` read the same scene, so they refuse it too (a VCD of WSCG'03's chip, the list
-    /// traversal on D_CNTR, a cross-check of a configuration no RTL chip has).
+    /// `--dot` read the same scene, so they refuse it too (a format WSCG'03's chip does not
+    /// stream, a scope it has not, the list traversal on D_CNTR, a cross-check of a
+    /// configuration no RTL chip has).
     #[test]
     fn explain_refuses_what_run_refuses() {
         let refused =
             |text: String, flags: Flags| Scene::parse_with(&text, "t", flags).unwrap_err();
         let wscg03 = chip("architecture = \"wscg03\"");
         let e = refused(
-            format!("{wscg03}[outputs]\nwaveforms = \"w\""),
+            format!("{wscg03}[outputs]\nwaveforms = {{ dir = \"w\", scopes = [\"d_cntr\"] }}"),
             Flags::default(),
         );
         assert!(
-            e.starts_with("t:11: [outputs] waveforms: WSCG'03's chip")
-                && e.contains("has no probes yet"),
+            e.contains(
+                "[outputs] waveforms: no scope \"d_cntr\"; the scopes are host, stack_engine"
+            ),
             "{e}"
         );
         let e = refused(
-            wscg03,
+            wscg03.replace("architecture", "format = \"reduced\"\narchitecture"),
             Flags {
                 waveforms: Some("w".into()),
                 ..Default::default()
             },
         );
-        assert!(e.starts_with("t: --vcd: WSCG'03's chip"), "{e}");
+        assert!(
+            e.starts_with("t:6: [chip] format: WSCG'03's chip streams eight binary32"),
+            "{e}"
+        );
         let e = refused(
             format!("{BASE}[query]\ntraversal = \"list\"\n[outputs]\ncycles = true"),
             Flags::default(),

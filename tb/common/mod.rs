@@ -5,6 +5,7 @@ use collision_chip::format::Format;
 use proptest::prelude::*;
 
 pub mod families;
+pub mod vcd_file;
 
 /// A format's bit-pattern fields: `e` exponent bits, `f` fraction bits.
 #[derive(Clone, Copy, Debug)]

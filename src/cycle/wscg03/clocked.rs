@@ -20,18 +20,21 @@
 //! `next_list`.
 
 use super::dop_unit::{ClockOut, ClockedDopUnit};
-use super::memory_controller::{Fields, Images, McIn, McOut, MemoryController, NodeWord, Record};
+use super::memory_controller::{
+    Ask, Fields, Images, McIn, McOut, MemoryController, NodeWord, Record,
+};
 use super::sequencer::{SeqIn, Sequencer};
-use super::stack_engine::{ListOut, ListStack};
-use super::tri_unit::{ClockedTriInput, TriInputIn, TriInputOut};
+use super::stack_engine::{ListCmd, ListOut, ListStack};
+use super::tri_unit::{ClockedTriInput, LeafPair, TriInputIn, TriInputOut};
 use crate::chip::config::MemLayout::Records;
 use crate::chip::layout::Dst;
 use crate::chip::layout::{node_ids, node_records, tri_records};
 use crate::chip::ports::{ChipIn, ChipOut, Clocked};
 use crate::chip::reg;
 use crate::chip::rtl::{LIST_LEVELS, LIST_SRAM_BITS, MC_ASKS};
-use crate::cycle::drive::{ChipTrace, Watch};
+use crate::cycle::drive::{ChipTrace, VcdFile, Watch};
 use crate::cycle::tri_unit::TriUnit;
+use crate::cycle::VcdOut;
 use crate::dop::Node;
 use crate::golden::memory::ObjectImage;
 
@@ -103,6 +106,32 @@ pub struct Chip<'a> {
     booked: Booked,
     /// The Memory Controller's and the sequencer's inputs, each clock, if asked for.
     log: Option<UnitInputs>,
+}
+
+/// What a working clock decided, for the probes: the Triangle Unit's input stage's
+/// outputs, the leaf pair offered, the ask, the bundles into the DOP Unit (tumbled: `load`,
+/// aligned: `compare`), the lists' command.
+#[derive(Default)]
+struct Worked {
+    to: TriInputOut,
+    offer: Option<LeafPair>,
+    ask: Option<Ask>,
+    load: bool,
+    compare: bool,
+    cmd: ListCmd,
+}
+
+/// What the probes read before a clock's edge.
+struct Before {
+    o: ChipOut,
+    ls: ListOut,
+    dout: ClockOut,
+    halt: bool,
+    run: bool,
+    lists: u64,
+    room: usize,
+    in_ready: bool,
+    out: Option<crate::cycle::tri_unit::TriOut>,
 }
 
 /// The inputs of the Memory Controller and of the sequencer in every working clock of a
@@ -282,7 +311,7 @@ impl<'a> Chip<'a> {
     /// One working clock, then its edge: the Triangle Unit, the sequencer's ask, the
     /// Memory Controller (a request, a response, the bundle into the DOP Unit), the
     /// sequencer's command to the lists.
-    fn work(&mut self, i: &ChipIn) -> TriInputOut {
+    fn work(&mut self, i: &ChipIn) -> Worked {
         let resp = i.mem_resp.is_some();
         let to = self.triangles(resp, i.res_ready);
         let mut si = SeqIn {
@@ -311,11 +340,34 @@ impl<'a> Chip<'a> {
             log.mc.push(mi);
             log.seq.push(si.clone());
         }
+        let offer = self.sq.offer(self.halted);
         let cmd = self.sq.step(&si);
         self.ls = self.lists.step(&cmd);
         self.max_level = self.max_level.max(self.ls.level as u64);
         self.dout = self.dop.step(&o.dop_in);
-        to
+        Worked {
+            to,
+            offer,
+            ask: mi.push,
+            load: o.dop_in.t.is_some(),
+            compare: o.dop_in.a.is_some(),
+            cmd,
+        }
+    }
+
+    /// What the probes read before the edge.
+    fn before(&self) -> Before {
+        Before {
+            o: self.outputs(),
+            ls: self.ls,
+            dout: self.dout,
+            halt: self.halt(),
+            run: self.run,
+            lists: self.sq.lists,
+            room: self.mc.room(),
+            in_ready: self.tri.in_ready(self.now),
+            out: self.tri.out(self.now).copied(),
+        }
     }
 }
 
@@ -358,7 +410,8 @@ impl Clocked for Chip<'_> {
         }
     }
 
-    fn step(&mut self, i: &ChipIn, _probe: bool) -> Option<Vec<u64>> {
+    fn step(&mut self, i: &ChipIn, probe: bool) -> Option<Vec<u64>> {
+        let before = probe.then(|| self.before());
         let mut core = self.log.is_some().then(|| CoreClock {
             i: *i,
             tri_ready: self.tri.in_ready(self.now),
@@ -370,8 +423,10 @@ impl Clocked for Chip<'_> {
         if i.host_we {
             self.host_write(i.host_addr, i.host_data);
         }
+        let mut worked = Worked::default();
         if self.run {
-            let to = self.work(i);
+            worked = self.work(i);
+            let to = &worked.to;
             if let Some(c) = &mut core {
                 let ids = to.words.map(|w| w.unwrap_or(0));
                 c.pair = to.pair_valid.then_some((to.pair_tag, ids));
@@ -387,7 +442,11 @@ impl Clocked for Chip<'_> {
             self.start();
         }
         self.now += 1;
-        None
+        before.map(|b| probes(&b, i, &worked))
+    }
+
+    fn probe_list(&self) -> &'static crate::chip::probes::Probes {
+        &crate::chip::probes::WSCG03
     }
 
     fn fault(&self) -> Option<String> {
@@ -427,7 +486,7 @@ fn records_cfg(cfg: &crate::chip::config::ChipConfig) -> crate::chip::config::Ch
 /// Drives one query on `c` (the chip on `img` of `chip`): the units' setup words `setup`
 /// (which the model takes from the golden setup, the RTL from its host port), its writes,
 /// `start`, then clocks until `done`, the memory of `p` serving it, the host reading every
-/// result at once, at most `max_cycles` clocks.
+/// result at once, at most `max_cycles` clocks; its traversal signals into `vcd`, if any.
 fn drive(
     c: &mut impl Clocked,
     chip: &crate::query::Chip,
@@ -435,6 +494,7 @@ fn drive(
     (setup, first): (&[(u32, u32)], bool),
     p: &crate::chip::params::Params,
     max_cycles: u64,
+    mut vcd: Option<VcdFile>,
 ) -> Result<ChipTrace, String> {
     let layout = crate::chip::layout::Layout::new(&records_cfg(&chip.cfg));
     let d = crate::cycle::drive::Drive {
@@ -445,30 +505,33 @@ fn drive(
         max_cycles,
     };
     let w = [setup, &writes(chip, img, first, p)].concat();
-    crate::cycle::drive::run_query(c, &w, &d, false, |_, _| Ok(()), false).map_err(|e| e.0)
+    let probe = vcd.is_some();
+    let observe = |t, v: Option<Vec<u64>>| match &mut vcd {
+        Some(f) => f.cycle(t, &v.unwrap_or_default()),
+        None => Ok(()),
+    };
+    crate::cycle::drive::run_query(c, &w, &d, probe, observe, false).map_err(|e| e.0)
 }
 
 /// One query on WSCG'03's chip clocked register by register: `chip`'s trees, B placed by
 /// `setup`, all pairs or the first hit (`first`), the memory and TRI_UNIT of `p`, at most
-/// `max_cycles` clocks; `see` watches its ports every clock ([`Watch`]).
+/// `max_cycles` clocks; `see` watches its ports every clock ([`Watch`]); a VCD of its
+/// traversal signals ([`WSCG03`](crate::chip::probes::WSCG03)) written if asked.
 pub fn run(
     chip: &crate::query::Chip,
     setup: &crate::golden::host::HostSetup,
-    first: bool,
-    p: &crate::chip::params::Params,
+    (first, p): (bool, &crate::chip::params::Params),
     max_cycles: u64,
     see: impl FnMut(u64, &ChipOut, &ChipIn),
+    vcd: Option<VcdOut>,
 ) -> Result<ClockedRun, String> {
     let img = images(chip);
     let mut c = Chip::new(chip, &img, setup, p)?;
-    let trace = drive(
-        &mut Watch::new(&mut c, see),
-        chip,
-        &img,
-        (&[], first),
-        p,
-        max_cycles,
-    )?;
+    let vcd = vcd
+        .map(|v| v.open(&crate::chip::probes::WSCG03))
+        .transpose()?;
+    let watched = &mut Watch::new(&mut c, see);
+    let trace = drive(watched, chip, &img, (&[], first), p, max_cycles, vcd)?;
     Ok(ClockedRun {
         trace,
         lists: c.lists(),
@@ -489,7 +552,7 @@ pub fn unit_inputs(
 ) -> Result<UnitInputs, String> {
     let mut c = Chip::new(chip, img, setup, p)?;
     c.log = Some(UnitInputs::default());
-    drive(&mut c, chip, img, (words, first), p, max_cycles)?;
+    drive(&mut c, chip, img, (words, first), p, max_cycles, None)?;
     // the clock `done` shows in, which the driver reads and does not clock
     let last = CoreClock {
         tri_ready: c.tri.in_ready(c.now),
@@ -500,4 +563,74 @@ pub fn unit_inputs(
     let mut log = c.log.take().unwrap_or_default();
     log.core.push(last);
     Ok(log)
+}
+
+/// The values of [`WSCG03`](crate::chip::probes::WSCG03)'s signals in a clock: `b` read
+/// before its edge, the inputs `i`, what the working clock decided `w`.
+fn probes(b: &Before, i: &ChipIn, w: &Worked) -> Vec<u64> {
+    let x = |v: bool| v as u64;
+    let (o, ls, cmd) = (&b.o, &b.ls, &w.cmd);
+    let (side, ptr) = cmd.append.unwrap_or_default();
+    let (load, set, pair, id) = match w.ask {
+        Some(Ask::Load { set, id, n }) => (true, set, n == 2, id),
+        Some(Ask::Aligned { set, id }) => (false, set, false, id),
+        None => (false, 0, false, 0),
+    };
+    let leaf = w.offer.map_or(0, |l| l.tag as u64);
+    let out = b.out;
+    vec![
+        x(i.start),
+        x(o.busy),
+        x(o.done),
+        x(o.overflow),
+        x(b.halt),
+        x(b.run),
+        ls.level as u64,
+        ls.branch as u64,
+        ls.remaining as u64,
+        x(ls.busy),
+        x(ls.done),
+        x(cmd.read),
+        x(cmd.next_list),
+        x(cmd.append.is_some()),
+        side as u64,
+        ptr as u64,
+        x(ls.rd.is_some()),
+        ls.rd.unwrap_or(0) as u64,
+        b.lists & 0xffff_ffff,
+        x(w.ask.is_some()),
+        x(load),
+        set as u64,
+        x(pair),
+        id as u64 & 0xffff,
+        b.room as u64,
+        x(o.mem_req_valid),
+        x(i.mem_req_ready),
+        o.mem_req_addr as u64,
+        x(i.mem_resp.is_some()),
+        x(w.load),
+        x(w.compare),
+        x(b.dout.busy[0]) | x(b.dout.busy[1]) << 1,
+        x(b.dout.flags_valid),
+        x(b.dout.overlap[0]) | x(b.dout.overlap[1]) << 1,
+        x(w.offer.is_some()),
+        x(w.to.leaf_ready),
+        leaf & 0xffff,
+        leaf >> 16 & 0xffff,
+        x(w.to.pair_valid),
+        x(b.in_ready),
+        x(out.is_some()),
+        x(out.is_some_and(|r| r.res.hit)),
+        x(out.is_some_and(|r| r.res.uncertain)),
+        out.map_or(0, |r| r.a as u64),
+        out.map_or(0, |r| r.b as u64),
+        x(o.res_valid),
+        x(o.res_uncertain),
+        o.res_tag.0 as u64,
+        o.res_tag.1 as u64,
+        o.dop_tests & 0xffff_ffff,
+        o.tri_tests & 0xffff_ffff,
+        o.node_fetches & 0xffff_ffff,
+        o.tri_fetches & 0xffff_ffff,
+    ]
 }

@@ -372,26 +372,28 @@ pub trait RtlPorts: Block {
     /// The inputs of one clock; the memory response's data if one is valid.
     fn set_inputs(&mut self, i: &ChipIn, resp: Option<&Self::Word>);
     fn set_clock(&mut self, high: bool);
-    /// [`crate::chip::probes::PROBES`] as the logic shows them now (`None`: a chip not
-    /// probed).
-    fn probes(&self) -> Option<Vec<u64>>;
+    /// Its traversal signals.
+    const PROBES: &'static crate::chip::probes::Probes;
+    /// [`Self::PROBES`] as the logic shows them now.
+    fn probes(&self) -> Vec<u64>;
 }
 
-/// `RtlPorts` for DATE'05's chip of format module `fmt` (its probes [`PROBES`](crate::chip::probes::PROBES)), or for
+/// `RtlPorts` for DATE'05's chip of format module `fmt` (its probes [`DATE05`](crate::chip::probes::DATE05)), or for
 /// a block `ty` (generics `[..]`) with the same ports, memory words of `W` bits, read from
-/// images of chip `kind`, probed by `probe` (a function of the block).
+/// images of chip `kind`, its traversal signals `probes` given by `probe` (a function of the block).
 macro_rules! rtl_ports {
     ($fmt:ident, $kind:expr) => {
         $crate::harness::chip_io::rtl_ports!(
             [const N: usize, const NP1: usize, const NM1: usize]
             crate::rtl::$fmt::CollisionChip<N, NP1, NM1>,
-            { crate::rtl::$fmt::CHIP_WORD_BITS }, $kind, |c: &Self| Some(c.probe())
+            { crate::rtl::$fmt::CHIP_WORD_BITS }, $kind, crate::chip::probes::DATE05, Self::probe
         );
     };
-    ([$($g:tt)*] $ty:ty, $W:tt, $kind:expr, $probe:expr) => {
+    ([$($g:tt)*] $ty:ty, $W:tt, $kind:expr, $probes:path, $probe:expr) => {
         impl<$($g)*> $crate::harness::chip_io::RtlPorts for $ty {
             type Word = rust_hdl::prelude::Bits<$W>;
             const KIND: $crate::chip::rtl::ChipKind = $kind;
+            const PROBES: &'static $crate::chip::probes::Probes = &$probes;
 
             fn word(w: &$crate::harness::chip_io::Word) -> Self::Word {
                 $crate::harness::chip_io::bits(w)
@@ -433,7 +435,7 @@ macro_rules! rtl_ports {
                 self.clock.next = rust_hdl::prelude::Clock { clk: high };
             }
 
-            fn probes(&self) -> Option<Vec<u64>> {
+            fn probes(&self) -> Vec<u64> {
                 ($probe)(self)
             }
         }
@@ -481,10 +483,14 @@ impl<C: RtlPorts> Clocked for RtlChip<'_, C> {
                 self.err = Some("the rust-hdl logic did not settle".into());
             }
             if !high && probe {
-                probed = self.chip.probes();
+                probed = Some(self.chip.probes());
             }
         }
         probed
+    }
+
+    fn probe_list(&self) -> &'static crate::chip::probes::Probes {
+        C::PROBES
     }
 
     fn fault(&self) -> Option<String> {
@@ -522,8 +528,8 @@ pub fn run_query<C: RtlPorts>(
 }
 
 /// [`run_query`] writing a VCD of the traversal to `path` ([`ProbeVcd`](crate::cycle::drive::ProbeVcd): the signals of
-/// [`crate::chip::probes::PROBES`], one scope per unit under `chip`, one time unit per clock). For
-/// GTKWave with scripts/gtkw/chip_e8m15_k6.gtkw. (A VCD of every rust-hdl signal would be
+/// the chip's probes, one scope per unit under `chip`, one time unit per clock). For
+/// GTKWave with its save file ([`Probes::gtkw`](crate::chip::probes::Probes::gtkw)). (A VCD of every rust-hdl signal would be
 /// about 600 kB per clock, mostly T.CHECK's.)
 pub fn run_query_vcd<C: RtlPorts>(
     chip: &mut C,
@@ -531,16 +537,13 @@ pub fn run_query_vcd<C: RtlPorts>(
     d: &Drive,
     path: &std::path::Path,
 ) -> Result<ChipTrace, ChipError> {
-    let mut vcd = open_vcd(path, &[], 0..u64::MAX)?;
+    let mut vcd = open_vcd(path, C::PROBES, &[], 0..u64::MAX)?;
     let trace = crate::cycle::drive::run_query(
         &mut RtlChip::new(chip, image),
         &image.writes,
         d,
         true,
-        |t, p| {
-            vcd.cycle(t, &p.unwrap_or_default())
-                .map_err(|e| format!("{}: {e}", path.display()))
-        },
+        |t, p| vcd.cycle(t, &p.unwrap_or_default()),
         false,
     )?;
     Ok(trace)

@@ -12,12 +12,14 @@ use crate::chip::rtl::ChipKind;
 use crate::cycle::drive::{request_line, run_query, ChipTrace, Lockstep, Reader, Watch};
 use crate::cycle::wscg03::clocked;
 use crate::cycle::wscg03::memory_controller::Images;
+use crate::cycle::VcdOut;
 use crate::golden::host::HostSetup;
 use crate::harness::chip_io::{drive, ChipQuery, PreparedQuery, QueryImage, RtlChip};
 use rust_hdl::prelude::*;
 
 crate::harness::chip_io::rtl_ports!(
-    [] crate::rtl::wscg03::chip::CollisionChip, 2048, ChipKind::K24B32, |_: &Self| None
+    [] crate::rtl::wscg03::chip::CollisionChip, 2048, ChipKind::K24B32,
+    crate::chip::probes::WSCG03, Self::probe
 );
 
 /// The memory and host writes of `chip`'s query (B placed by `setup`, all pairs or the
@@ -63,15 +65,23 @@ pub fn query_image(
 }
 
 /// Runs one query (as [`query_image`]) on WSCG'03's rust-hdl chip in lockstep with its
-/// clocked model (on a thread with the big stack the RTL needs): every output equal after
-/// every clock. Errors name the cycle and the first difference.
+/// clocked model (on a thread with the big stack the RTL needs): every output and every
+/// specified traversal signal ([`WSCG03`](crate::chip::probes::WSCG03)) equal after every
+/// clock; the RTL's signals into `vcd`, if any. Errors name the cycle and the first
+/// difference.
 pub fn cross_check(
     chip: &crate::query::Chip,
     setup: &HostSetup,
-    first: bool,
-    p: &Params,
+    (first, p): (bool, &Params),
     max_cycles: u64,
+    vcd: Option<&std::path::Path>,
 ) -> Result<ChipTrace, String> {
+    let open = |v| VcdOut(v, &[], 0..u64::MAX).open(&crate::chip::probes::WSCG03);
+    let mut w = vcd.map(open).transpose()?;
+    let mut observe = |t, v: Option<Vec<u64>>| match &mut w {
+        Some(f) => f.cycle(t, &v.unwrap_or_default()),
+        None => Ok(()),
+    };
     let (img, image) = query_image(chip, setup, first, p)?;
     let d = drive(&image, p.memory_clocks()?, Reader::default(), max_cycles);
     std::thread::scope(|s| {
@@ -85,7 +95,7 @@ pub fn cross_check(
                     model,
                     ("rust-hdl", "clocked model"),
                 );
-                run_query(&mut ls, &image.writes, &d, true, |_, _| Ok(()), false).map_err(|e| e.0)
+                run_query(&mut ls, &image.writes, &d, true, &mut observe, false).map_err(|e| e.0)
             })
             .map_err(|e| format!("cannot start the RTL simulation thread: {e}"))?
             .join()

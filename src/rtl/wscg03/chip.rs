@@ -473,6 +473,73 @@ impl CollisionChip {
     }
 }
 
+impl CollisionChip {
+    /// The values of its traversal signals [`WSCG03`](crate::chip::probes::WSCG03) (in
+    /// that order) as the logic shows them now: what the lockstep check compares and the
+    /// traversal VCD shows (scripts/gtkw/chip_wscg03_b32_k24.gtkw).
+    pub fn probe(&self) -> Vec<u64> {
+        let x = |v: bool| v as u64;
+        let c = &self.core;
+        let (ls, seq, mc, dop, t) = (&c.lists, &c.seq, &c.mc, &c.dop, &self.tri_unit);
+        let (leaf, out) = (seq.leaf_tag.val().to_u64(), t.out_tag.val().to_u64());
+        vec![
+            x(self.start.val()),
+            x(self.busy.val()),
+            x(self.done.val()),
+            x(self.overflow.val()),
+            x(c.c_halt.val()),
+            x(c.run.q.val()),
+            ls.level.val().to_u64(),
+            x(ls.branch.val()),
+            ls.remaining.val().to_u64(),
+            x(ls.busy.val()),
+            x(ls.done.val()),
+            x(seq.read.val()),
+            x(seq.next_list.val()),
+            x(seq.append.val()),
+            x(seq.wr_side.val()),
+            seq.wr_ptr.val().to_u64(),
+            x(ls.rd_valid.val()),
+            ls.rd_ptr.val().to_u64(),
+            seq.lists.val().to_u64(),
+            x(seq.push.val()),
+            x(seq.push_load.val()),
+            x(seq.push_set.val()),
+            x(seq.push_pair.val()),
+            seq.push_id.val().to_u64(),
+            mc.room.val().to_u64(),
+            x(self.mem_req_valid.val()),
+            x(self.mem_req_ready.val()),
+            self.mem_req_addr.val().to_u64(),
+            x(self.mem_resp_valid.val()),
+            x(mc.t_valid.val()),
+            x(mc.a_valid.val()),
+            dop.busy.val().to_u64(),
+            x(dop.flags_valid.val()),
+            x(dop.overlap_l.val()) | x(dop.overlap_r.val()) << 1,
+            x(seq.leaf_valid.val()),
+            x(c.tin.leaf_ready.val()),
+            leaf & 0xffff,
+            leaf >> 16 & 0xffff,
+            x(c.pair_valid.val()),
+            x(t.in_ready.val()),
+            x(t.out_valid.val()),
+            x(t.out_hit.val()),
+            x(t.out_uncertain.val()),
+            out & 0xffff,
+            out >> 16 & 0xffff,
+            x(self.res_valid.val()),
+            x(self.res_uncertain.val()),
+            self.res_tag.val().to_u64() & 0xffff,
+            self.res_tag.val().to_u64() >> 16,
+            self.dop_tests.val().to_u64(),
+            self.tri_tests.val().to_u64(),
+            self.node_fetches.val().to_u64(),
+            self.tri_fetches.val().to_u64(),
+        ]
+    }
+}
+
 impl Default for CollisionChip {
     fn default() -> Self {
         Self::new()
