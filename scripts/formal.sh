@@ -106,7 +106,7 @@ MUTANTS=(
   "list_open_without_len|list_stack.chain|rtl/list_stack_a8.v|s/c_open_l = wa_l\$q;/c_open_l = c_ns_l;/"
   "list_read_past_end|list_stack.chain|rtl/list_stack_a8.v|s/c_read = read \& c_idle \& (rem\$q != 32'h0);/c_read = read \& c_idle;/"
   "list_read_keeps_remaining|list_stack.chain|rtl/list_stack_a8.v|s/rem\$d = rem\$q - 32'h1;/rem\$d = rem\$q;/"
-  "list_up_keeps_branch|list_stack.chain|rtl/list_stack_a8.v|s/cur_b\$d = c_b_up;/cur_b\$d = cur_b\$q;/"
+  "list_desc_branch_left|list_stack.chain|rtl/list_stack_a8.v|s/cur_b\$d = c_desc_b;/cur_b\$d = 1'b0;/"
   "list_append_keeps_address|list_stack.chain|rtl/list_stack_a8.v|s/wa_l\$d = wa_l\$q + 32'h1;/wa_l\$d = wa_l\$q;/"
   "control_syntax_error|pair_queue.bounds|rtl/pair_queue_n4.v|0,/^endmodule/s//endmodul/"
 )
