@@ -85,7 +85,7 @@
 #   --glue     units the bbox flow leaves in the glue, not black-boxed (default none): small
 #              control units, so that their paths are timed pin to pin, not by the unit's worst
 #              input and output figures applied to every pin; e.g. WSCG'03's chip:
-#              --units chip_wscg03_b32_k24 --bbox 'chip_*' --glue 'sequencer memory_controller_*'
+#              --units chip_wscg03_b32_k24 --bbox 'chip_*' --glue 'sequencer memory_controller_* tri_input_*'
 #   --rtl      the directory of the units' Verilog (default rtl/; the bbox flow's RAM parts)
 #   --configs-only  measure nothing: rewrite timing_config.csv from the rows of --out
 #   --sta-only re-time the netlists of an earlier run (target/timing/<unit>/netlist_raw.v)

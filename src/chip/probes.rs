@@ -142,12 +142,12 @@ const DATE05_SIGNALS: [Probe; 50] = [
 /// asks and port, the DOP Unit's input and flags, the Triangle Unit's leaf pairs and
 /// TRI_UNIT, the result port, the counters (GTKWave save file
 /// scripts/gtkw/chip_wscg03_b32_k24.gtkw). What a working clock decides (the lists'
-/// commands, asks, bundles, leaf pairs) is specified while the query runs (`host.run`).
+/// commands, asks, bundles, leaf pairs) is specified while the query runs (`host.busy`).
 pub const WSCG03: Probes = Probes {
     signals: &WSCG03_SIGNALS,
     qualified: &[
         (
-            ("host", "run"),
+            ("host", "busy"),
             "stack_engine",
             &["read", "next_list", "append"],
         ),
@@ -157,7 +157,7 @@ pub const WSCG03: Probes = Probes {
             &["append_side", "append_ptr"],
         ),
         (("stack_engine", "rd_valid"), "stack_engine", &["rd_ptr"]),
-        (("host", "run"), "memory_controller", &["ask"]),
+        (("host", "busy"), "memory_controller", &["ask"]),
         (
             ("memory_controller", "ask"),
             "memory_controller",
@@ -168,10 +168,10 @@ pub const WSCG03: Probes = Probes {
             "memory_controller",
             &["req_addr"],
         ),
-        (("host", "run"), "dop_unit", &["load", "compare"]),
+        (("host", "busy"), "dop_unit", &["load", "compare"]),
         (("dop_unit", "flags_valid"), "dop_unit", &["overlap"]),
         (
-            ("host", "run"),
+            ("host", "busy"),
             "triangle_unit",
             &["leaf_valid", "leaf_ready", "in_valid"],
         ),
@@ -194,13 +194,12 @@ pub const WSCG03: Probes = Probes {
     gtkw: "scripts/gtkw/chip_wscg03_b32_k24.gtkw",
 };
 
-const WSCG03_SIGNALS: [Probe; 53] = [
+const WSCG03_SIGNALS: [Probe; 52] = [
     ("host", "start", 1),
     ("host", "busy", 1),
     ("host", "done", 1),
     ("host", "overflow", 1),
     ("host", "halt", 1),
-    ("host", "run", 1),
     ("stack_engine", "level", 5),
     ("stack_engine", "branch", 1),
     ("stack_engine", "remaining", 16),

@@ -326,6 +326,11 @@ pub struct Lockstep<A, B> {
 
 impl<A: Clocked, B: Clocked> Lockstep<A, B> {
     pub fn new(a: A, b: B, names: (&'static str, &'static str)) -> Self {
+        assert_eq!(
+            a.probe_list().gtkw,
+            b.probe_list().gtkw,
+            "two levels of different chips in lockstep"
+        );
         Lockstep {
             a,
             b,
@@ -521,6 +526,15 @@ impl VcdFile {
     /// The values of cycle `t`.
     pub fn cycle(&mut self, t: u64, values: &[u64]) -> Result<(), String> {
         (self.vcd.cycle(t, values)).map_err(|e| format!("{}: {e}", self.path.display()))
+    }
+
+    /// [`run_query`]'s observer for an optional VCD: cycle `t`'s probed values `v` into
+    /// `vcd`, if one is open.
+    pub fn observe(vcd: &mut Option<VcdFile>, t: u64, v: Option<Vec<u64>>) -> Result<(), String> {
+        match vcd {
+            Some(f) => f.cycle(t, &v.unwrap_or_default()),
+            None => Ok(()),
+        }
     }
 }
 

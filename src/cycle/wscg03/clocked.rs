@@ -127,7 +127,6 @@ struct Before {
     ls: ListOut,
     dout: ClockOut,
     halt: bool,
-    run: bool,
     lists: u64,
     room: usize,
     in_ready: bool,
@@ -362,7 +361,6 @@ impl<'a> Chip<'a> {
             ls: self.ls,
             dout: self.dout,
             halt: self.halt(),
-            run: self.run,
             lists: self.sq.lists,
             room: self.mc.room(),
             in_ready: self.tri.in_ready(self.now),
@@ -506,10 +504,7 @@ fn drive(
     };
     let w = [setup, &writes(chip, img, first, p)].concat();
     let probe = vcd.is_some();
-    let observe = |t, v: Option<Vec<u64>>| match &mut vcd {
-        Some(f) => f.cycle(t, &v.unwrap_or_default()),
-        None => Ok(()),
-    };
+    let observe = |t, v| VcdFile::observe(&mut vcd, t, v);
     crate::cycle::drive::run_query(c, &w, &d, probe, observe, false).map_err(|e| e.0)
 }
 
@@ -571,11 +566,7 @@ fn probes(b: &Before, i: &ChipIn, w: &Worked) -> Vec<u64> {
     let x = |v: bool| v as u64;
     let (o, ls, cmd) = (&b.o, &b.ls, &w.cmd);
     let (side, ptr) = cmd.append.unwrap_or_default();
-    let (load, set, pair, id) = match w.ask {
-        Some(Ask::Load { set, id, n }) => (true, set, n == 2, id),
-        Some(Ask::Aligned { set, id }) => (false, set, false, id),
-        None => (false, 0, false, 0),
-    };
+    let (load, set, pair, id) = Ask::ports(w.ask);
     let leaf = w.offer.map_or(0, |l| l.tag as u64);
     let out = b.out;
     vec![
@@ -584,7 +575,6 @@ fn probes(b: &Before, i: &ChipIn, w: &Worked) -> Vec<u64> {
         x(o.done),
         x(o.overflow),
         x(b.halt),
-        x(b.run),
         ls.level as u64,
         ls.branch as u64,
         ls.remaining as u64,

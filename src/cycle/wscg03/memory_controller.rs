@@ -50,6 +50,18 @@ pub enum Ask {
     Aligned { set: usize, id: u32 },
 }
 
+impl Ask {
+    /// An ask as the sequencer's push ports carry it: `(load, set, pair, id)`, zeros for
+    /// none.
+    pub fn ports(a: Option<Ask>) -> (bool, usize, bool, u32) {
+        match a {
+            Some(Ask::Load { set, id, n }) => (true, set, n == 2, id),
+            Some(Ask::Aligned { set, id }) => (false, set, false, id),
+            None => (false, 0, false, 0),
+        }
+    }
+}
+
 /// An ask and its record: `Some(address)` fetched, `None` the one streamed before it (a
 /// sibling of the aligned node before); whether it was requested.
 #[derive(Clone, Debug)]

@@ -9,7 +9,7 @@ use crate::chip::memory::{MemTiming, Memory};
 use crate::chip::params::Params;
 use crate::chip::reg::{self, Mode, Order};
 use crate::chip::rtl::ChipKind;
-use crate::cycle::drive::{request_line, run_query, ChipTrace, Lockstep, Reader, Watch};
+use crate::cycle::drive::{request_line, run_query, ChipTrace, Lockstep, Reader, VcdFile, Watch};
 use crate::cycle::wscg03::clocked;
 use crate::cycle::wscg03::memory_controller::Images;
 use crate::cycle::VcdOut;
@@ -78,10 +78,7 @@ pub fn cross_check(
 ) -> Result<ChipTrace, String> {
     let open = |v| VcdOut(v, &[], 0..u64::MAX).open(&crate::chip::probes::WSCG03);
     let mut w = vcd.map(open).transpose()?;
-    let mut observe = |t, v: Option<Vec<u64>>| match &mut w {
-        Some(f) => f.cycle(t, &v.unwrap_or_default()),
-        None => Ok(()),
-    };
+    let mut observe = |t, v| VcdFile::observe(&mut w, t, v);
     let (img, image) = query_image(chip, setup, first, p)?;
     let d = drive(&image, p.memory_clocks()?, Reader::default(), max_cycles);
     std::thread::scope(|s| {

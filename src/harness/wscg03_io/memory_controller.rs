@@ -82,11 +82,7 @@ pub fn mc_clocks(tr: &Traffic) -> Vec<McClock> {
 /// Drives one clock's inputs: `i`, the memory `img` (its bases; `resp`, the response's
 /// word), at most `outstanding` requests; `clear` low.
 pub fn set_mc_inputs(uut: &mut Rtl, img: &Images, outstanding: usize, i: &McIn, resp: &Word) {
-    let (load, set, pair, id) = match i.push {
-        Some(Ask::Load { set, id, n }) => (true, set, n == 2, id),
-        Some(Ask::Aligned { set, id }) => (false, set, false, id),
-        None => (false, 0, false, 0),
-    };
+    let (load, set, pair, id) = Ask::ports(i.push);
     uut.clear.next = false;
     uut.halt.next = i.halt;
     uut.push.next = i.push.is_some();
@@ -215,11 +211,8 @@ fn bus_hex(d: Option<&[f64; 8]>) -> String {
 /// One clock's inputs as vector fields.
 fn inputs_hex(c: &McClock, img: &Images, outstanding: usize) -> String {
     let i = &c.i;
-    let (load, set, pair, id) = match i.push {
-        Some(Ask::Load { set, id, n }) => (1, set, (n == 2) as u8, id),
-        Some(Ask::Aligned { set, id }) => (0, set, 0, id),
-        None => (0, 0, 0, 0),
-    };
+    let (load, set, pair, id) = Ask::ports(i.push);
+    let (load, pair) = (load as u8, pair as u8);
     let b = img.bases;
     format!(
         "{} {} {} {load} {set} {pair} {id:04x} {} {} {:04x} {:04x} {:06x} {:06x} {:06x} {:06x} {:x} {} {} {} {}",

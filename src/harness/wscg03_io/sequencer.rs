@@ -124,11 +124,7 @@ fn inputs(c: &SeqClock) -> [u64; 29] {
 /// `dop_tests` (0 where not valid; the counters modulo 2^32).
 fn outputs(c: &SeqClock) -> [u64; 18] {
     let (ap, (side, ptr)) = (c.cmd.append.is_some(), c.cmd.append.unwrap_or((0, 0)));
-    let (load, set, pair, id) = match c.ask {
-        Some(Ask::Load { set, id, n }) => (true, set, n == 2, id),
-        Some(Ask::Aligned { set, id }) => (false, set, false, id),
-        None => (false, 0, false, 0),
-    };
+    let (load, set, pair, id) = Ask::ports(c.ask);
     let l = c.offer.unwrap_or_default();
     [
         ap as u64,

@@ -488,7 +488,6 @@ impl CollisionChip {
             x(self.done.val()),
             x(self.overflow.val()),
             x(c.c_halt.val()),
-            x(c.run.q.val()),
             ls.level.val().to_u64(),
             x(ls.branch.val()),
             ls.remaining.val().to_u64(),
