@@ -40,15 +40,16 @@ fn num(r: &HashMap<String, String>, c: &str) -> f64 {
         .unwrap_or_else(|_| panic!("{c} = {:?} is not a number", r[c]))
 }
 
-/// The measured clock period of the papers' chip (k = 24, binary32: rtl/chip_b32_k24.v,
-/// which holds every unit of its configuration) in the timing study's table.
-fn chip_b32_k24_period_ns() -> f64 {
+/// The measured clock period of an RTL chip in the timing study's table: `chip_b32_k24`,
+/// DATE'05's chip of the papers' configuration (k = 24, binary32), or `chip_wscg03_b32_k24`,
+/// WSCG'03's.
+fn period_ns(chip: &str) -> f64 {
     let (cols, rows) =
         csv(&std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/figures/timing.csv"));
     assert!(cols.iter().any(|c| c == "min_period_ns"));
     num(
         rows.iter()
-            .find(|r| r["unit"] == "chip_b32_k24")
+            .find(|r| r["unit"] == chip)
             .expect("a row of the chip"),
         "min_period_ns",
     )
@@ -164,7 +165,7 @@ fn figures_data_hold_what_the_papers_compare() {
         ]
     );
     // DATE'05's figures on the date05 preset, at its configuration's measured period
-    let period = chip_b32_k24_period_ns();
+    let period = period_ns("chip_b32_k24");
     let close = |a: f64, b: f64| (a - b).abs() <= 1e-9 * a.abs().max(b.abs()).max(1.0);
     for r in &fig6 {
         assert_eq!(num(r, "period_ns"), period, "{r:?}");
@@ -423,26 +424,35 @@ fn figures_data_hold_what_the_papers_compare() {
             "software_us",
             "parry_us",
             "wscg03_cycles",
+            "event_cycles",
             "eq5_cycles",
             "date05_cycles",
             "lists",
             "alpha",
             "wscg03_clocks_per_list",
+            "event_clocks_per_list",
             "eq5_clocks_per_list",
             "period_ns",
+            "date05_period_ns",
             "setup_us",
             "settle_us",
             "speedup_wscg03",
+            "speedup_event",
             "speedup_eq5",
             "speedup_date05",
             "speedup_parry_wscg03",
+            "speedup_parry_event",
             "speedup_parry_eq5",
             "speedup_parry_date05",
             "e2e_us_wscg03",
+            "e2e_us_event",
             "e2e_us_eq5",
             "e2e_us_date05"
         ]
     );
+    // WSCG'03's chip, its event model and Eq. 5 at its RTL chip's measured period; DATE'05's
+    // at its own
+    let wscg03_period = period_ns("chip_wscg03_b32_k24");
     for r in &fig13 {
         let eq5 = 100.0 * num(r, "lists") + 10.0 * (num(r, "alpha") - 2.0) * num(r, "lists");
         assert!(
@@ -450,13 +460,34 @@ fn figures_data_hold_what_the_papers_compare() {
             "{r:?}"
         );
         assert!(
-            num(r, "wscg03_cycles") > 0.0 && num(r, "date05_cycles") > 0.0,
+            ["wscg03", "event", "date05"].map(|m| num(r, &format!("{m}_cycles")) > 0.0)
+                == [true; 3],
             "{r:?}"
         );
-        // WSCG'03's figure on the wscg03 preset: the same chip, its triangle cache aside
-        assert_eq!(num(r, "period_ns"), period, "{r:?}");
-        for m in ["wscg03", "eq5", "date05"] {
-            let chip_us = num(r, &format!("{m}_cycles")) * num(r, "period_ns") / 1000.0;
+        for m in ["wscg03", "event", "eq5"] {
+            let per_list = num(r, &format!("{m}_cycles")) / num(r, "lists");
+            assert!(
+                close(num(r, &format!("{m}_clocks_per_list")), per_list),
+                "{r:?}"
+            );
+        }
+        // WSCG'03's figure on the wscg03 preset: DATE'05's chip of the same configuration,
+        // its triangle cache aside
+        assert_eq!(
+            [num(r, "period_ns"), num(r, "date05_period_ns")],
+            [wscg03_period, period],
+            "{r:?}"
+        );
+        for m in ["wscg03", "event", "eq5", "date05"] {
+            let p = num(
+                r,
+                if m == "date05" {
+                    "date05_period_ns"
+                } else {
+                    "period_ns"
+                },
+            );
+            let chip_us = num(r, &format!("{m}_cycles")) * p / 1000.0;
             assert!(
                 close(
                     num(r, &format!("speedup_{m}")),
@@ -479,6 +510,8 @@ fn figures_data_hold_what_the_papers_compare() {
         [
             "wscg03_clocks",
             "date05_clocks",
+            "wscg03_us",
+            "date05_us",
             "wscg03_dop_per_clock",
             "date05_dop_per_clock",
             "wscg03_transforms_per_clock",
@@ -489,12 +522,23 @@ fn figures_data_hold_what_the_papers_compare() {
             "date05_queue_entries"
         ]
     );
-    // DATE'05 transforms in every DOP test
+    // DATE'05 transforms in every DOP test; each chip's time at its own period; the same
+    // clocks as Fig. 13's
     assert!(
         side.iter()
             .all(|r| num(r, "date05_transforms_per_clock") == num(r, "date05_dop_per_clock")),
         "{side:?}"
     );
+    for (r, f) in side.iter().zip(&fig13) {
+        assert_eq!(
+            [num(r, "wscg03_clocks"), num(r, "date05_clocks")],
+            [num(f, "wscg03_cycles"), num(f, "date05_cycles")]
+        );
+        for (m, p) in [("wscg03", wscg03_period), ("date05", period)] {
+            let us = num(r, &format!("{m}_clocks")) * p / 1000.0;
+            assert!(close(num(r, &format!("{m}_us")), us), "{m}: {r:?}");
+        }
+    }
     let json: serde_json::Value = serde_json::from_str(
         &std::fs::read_to_string(out.join("wscg03_fig13_speedup.json")).unwrap(),
     )
@@ -503,11 +547,16 @@ fn figures_data_hold_what_the_papers_compare() {
     let setup: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(out.join("plan.json")).unwrap()).unwrap();
     assert_eq!(
-        (
-            &setup["runs"]["date"]["preset"],
-            &setup["runs"]["wscg"]["preset"]
-        ),
-        (&"date05".into(), &"wscg03".into())
+        ["date", "wscg", "stack"].map(|r| (
+            setup["runs"][r]["preset"].clone(),
+            setup["runs"][r]["architecture"].clone()
+        )),
+        [
+            ("date05", "date05"),
+            ("wscg03", "date05"),
+            ("wscg03", "wscg03")
+        ]
+        .map(|(p, a)| (p.into(), a.into()))
     );
     assert!(
         setup["runs"]["date"]["clock_source"]
@@ -538,6 +587,7 @@ fn figures_preset_overrides_both_papers() {
         ("date05_fig6_cycles", "period_ns"),
         ("date05_fig8_speedup", "period_ns"),
         ("wscg03_fig13_speedup", "period_ns"),
+        ("wscg03_fig13_speedup", "date05_period_ns"),
     ] {
         let (_, rows) = csv(&out.join(format!("{stem}.csv")));
         assert!(rows.iter().all(|r| num(r, col) == 1.25), "{stem}: {rows:?}");
@@ -545,11 +595,8 @@ fn figures_preset_overrides_both_papers() {
     let setup: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(out.join("plan.json")).unwrap()).unwrap();
     assert_eq!(
-        (
-            &setup["runs"]["date"]["preset"],
-            &setup["runs"]["wscg"]["preset"]
-        ),
-        (&"rtl".into(), &"rtl".into())
+        ["date", "wscg", "stack"].map(|r| setup["runs"][r]["preset"].clone()),
+        ["rtl"; 3].map(serde_json::Value::from)
     );
     let _ = std::fs::remove_dir_all(&out);
 }

@@ -14,6 +14,7 @@ use collision_chip::cycle::wscg03::{run_query, ListRecord};
 use collision_chip::cycle::MAX_CYCLES;
 use collision_chip::dop::tree::Tri;
 use collision_chip::format::{Format, Rounding};
+use collision_chip::golden::dop_unit::TransformCache;
 use collision_chip::mesh::soup;
 use collision_chip::pose::Pose;
 use collision_chip::query::Chip;
@@ -368,20 +369,27 @@ fn a_scene_on_wscg03s_chip_answers_as_the_exact_oracle() {
 }
 
 /// The lists of the list traversal as WSCG'03's Stack Engine makes them (a tumbled group
-/// against a list; each member's new list one level down, left first), in order.
+/// against a list; each member's new list one level down, left first), in order, and the
+/// most pointers its SRAMs hold: a list's new lists and those of the lists on the way to
+/// it, and the root's pointer (the list SRAMs free a level's lists only when they step up
+/// past it).
 fn recursion_lists(
     a: &collision_chip::dop::DopTree,
     b: &collision_chip::dop::DopTree,
     overlap: &mut dyn FnMut(u32, u32) -> bool,
-) -> Vec<Vec<u32>> {
+) -> (Vec<Vec<u32>>, usize) {
     use collision_chip::dop::Node;
+    struct Out {
+        lists: Vec<Vec<u32>>,
+        most: usize,
+    }
     fn rec(
         a: &collision_chip::dop::DopTree,
         b: &collision_chip::dop::DopTree,
         overlap: &mut dyn FnMut(u32, u32) -> bool,
-        group: Vec<u32>,
-        list: Vec<u32>,
-        out: &mut Vec<Vec<u32>>,
+        // held: the pointers of the lists on the way to this one, the root's included
+        (group, list, held): (Vec<u32>, Vec<u32>, usize),
+        out: &mut Out,
     ) {
         let mut next = vec![vec![]; group.len()];
         for &n in &list {
@@ -395,20 +403,25 @@ fn recursion_lists(
                 }
             }
         }
-        out.push(list);
+        out.lists.push(list);
+        let held = held + next.iter().map(Vec::len).sum::<usize>();
+        out.most = out.most.max(held);
         for (&x, l) in group.iter().zip(next) {
             if !l.is_empty() {
                 let g = match b.node(x) {
                     Node::Inner(ch) => ch.to_vec(),
                     Node::Leaf(_) => vec![x],
                 };
-                rec(a, b, overlap, g, l, out);
+                rec(a, b, overlap, (g, l, held), out);
             }
         }
     }
-    let mut out = vec![];
-    rec(a, b, overlap, vec![0], vec![0], &mut out);
-    out
+    let mut out = Out {
+        lists: vec![],
+        most: 1,
+    };
+    rec(a, b, overlap, (vec![0], vec![0], 1), &mut out);
+    (out.lists, out.most)
 }
 
 /// The query of two soups under a pose: the chip and its DOP verdicts `overlap(n, x)`.
@@ -437,7 +450,6 @@ fn soup_query(
 #[test]
 fn stack_engine_lists_follow_the_recursion() {
     use collision_chip::chip::rtl::LIST_SRAM_BITS;
-    use collision_chip::golden::dop_unit::TransformCache;
     use collision_chip::harness::wscg03_io::list_traffic;
     let (mut lists, mut clocks) = (0, 0);
     for (n, seed, pose) in [
@@ -450,7 +462,7 @@ fn stack_engine_lists_follow_the_recursion() {
         let cfg = &chip.cfg;
         let mut cache = TransformCache::new(cfg.format.dop, cfg.dop_rounding.op(), &setup, a, b);
         let mut overlap = |n: u32, x: u32| cache.overlap(x, n);
-        let want = recursion_lists(a, b, &mut overlap);
+        let (want, _) = recursion_lists(a, b, &mut overlap);
         let tr = list_traffic(LIST_SRAM_BITS, a, b, &mut overlap, 1 << 20);
         let last = tr.outs.last().unwrap();
         assert!(last.done && !last.overflow, "{n} triangles: {last:?}");
@@ -558,7 +570,9 @@ fn triangle_unit_input_stage_rtl_lockstep() {
 /// around the lists, the Memory Controller reading a node pair per burst, the clocked DOP
 /// Unit, Triangle Unit input stage and TRI_UNIT) answers as the golden list traversal in
 /// all-pairs and first-hit mode, with as many DOP tests and lists, on soups of 1 to 300
-/// triangles under poses that overlap and that do not, and on the teapot against itself.
+/// triangles under poses that overlap and that do not, and on the teapot against itself;
+/// all pairs, its list SRAMs hold at most as many pointers as the recursion's lists need
+/// at once, and its count of tumbled DOPs transformed is the load bundles' over three.
 /// (By hand: a list's group taken from the left member one level up, whatever its branch,
 /// failed it on the soups of 20 and 30.)
 #[test]
@@ -599,6 +613,13 @@ fn clocked_chip_answers_as_the_golden_list_traversal() {
                     (g.dop_tests, g.tri_tests, g.lists),
                     "{n}/{m}"
                 );
+                let (a, b, cfg) = (&chip.a.tree, &chip.b.tree, &chip.cfg);
+                let op = cfg.dop_rounding.op();
+                let mut cache = TransformCache::new(cfg.format.dop, op, &setup, a, b);
+                let (_, most) = recursion_lists(a, b, &mut |n, x| cache.overlap(x, n));
+                assert_eq!(run.max_pointers, most as u64, "{n}/{m}: pointers held");
+                // a tumbled DOP streams in three bundles (k = 24, binary32, 256 bits)
+                assert_eq!(run.booked.load, 3 * run.transforms, "{n}/{m}: transforms");
             }
             assert_eq!(
                 run.booked.total(),

@@ -3,6 +3,7 @@
 //! Triangle Unit ([`StackParams`]). Its memory is [`Params::memory`](super::params::Params),
 //! shared with DATE'05's chip; the cycle model is [`cycle::wscg03`](crate::cycle).
 
+use super::config::{ChipConfig, DopBits, MemLayout};
 use serde::{Deserialize, Serialize};
 
 /// The chip a query runs on: DATE'05's (D_CNTR, one DOP test per clock) or WSCG'03's
@@ -28,6 +29,22 @@ impl Architecture {
         match self {
             Architecture::Date05 => "date05",
             Architecture::Wscg03 => "wscg03",
+        }
+    }
+
+    /// `cfg` as this chip runs it: WSCG'03's memory holds a node pair per record (the
+    /// `records` layout of one level, full-precision DOPs) and it has no node cache and one
+    /// B triangle line per leaf; DATE'05's runs `cfg` as it is.
+    pub fn config(self, cfg: &ChipConfig) -> ChipConfig {
+        match self {
+            Architecture::Date05 => *cfg,
+            Architecture::Wscg03 => ChipConfig {
+                layout: MemLayout::Records,
+                node_cache: 1,
+                dop_bits: DopBits::Full,
+                tri_cache_b: 1,
+                ..*cfg
+            },
         }
     }
 }

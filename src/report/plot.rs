@@ -81,6 +81,8 @@ pub struct Series {
 pub enum Style {
     Solid,
     Dashed,
+    /// Short dashes.
+    Dotted,
     /// Markers only.
     Points,
 }
@@ -314,6 +316,7 @@ fn glyph<DB: DrawingBackend>(
     let (a, b, dot) = match s.style {
         Style::Solid => (8, 8, 0),
         Style::Dashed => (8, 13, 0),
+        Style::Dotted => (3, 17, 2),
         Style::Points => (0, 20, 5),
     };
     area.draw(
@@ -434,6 +437,7 @@ where
         match s.style {
             Style::Solid => c.draw_series(LineSeries::new(pts.clone(), style)),
             Style::Dashed => c.draw_series(DashedLineSeries::new(pts.clone(), 6, 4, style)),
+            Style::Dotted => c.draw_series(DashedLineSeries::new(pts.clone(), 2, 4, style)),
             Style::Points => c.draw_series(pts.clone().map(|q| Circle::new(q, 5, color.filled()))),
         }
         .map_err(e)?;

@@ -7,7 +7,7 @@ mod keys;
 pub mod record;
 pub mod run;
 
-use crate::chip::config::{ChipConfig, DopBits, MemLayout};
+use crate::chip::config::{ChipConfig, DopBits};
 use crate::chip::layout::Layout;
 use crate::chip::memory::{Ddr, MemTiming, Memory};
 use crate::chip::params::Params;
@@ -117,12 +117,8 @@ fn chip(
     )?;
     let preset = flags.preset.or(named).unwrap_or(Preset::Rtl);
     let arch = flags.architecture.or(arch).unwrap_or(preset.architecture());
-    let mut cfg = over(&preset.chip(), keys, text, "[chip]", &[])?;
-    if arch == Architecture::Wscg03 {
-        (cfg.layout, cfg.node_cache, cfg.dop_bits, cfg.tri_cache_b) =
-            (MemLayout::Records, 1, DopBits::Full, 1);
-    }
-    Ok((preset, arch, cfg))
+    let cfg = over(&preset.chip(), keys, text, "[chip]", &[])?;
+    Ok((preset, arch, arch.config(&cfg)))
 }
 
 /// `[timing]`: the chip's [`Params`] (each key optional, the preset's by default; the memory

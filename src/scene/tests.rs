@@ -1,4 +1,5 @@
 use super::*;
+use crate::chip::config::MemLayout;
 use crate::chip::rtl::Depth;
 
 #[test]

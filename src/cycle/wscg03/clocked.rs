@@ -46,6 +46,10 @@ pub struct ClockedRun {
     pub booked: Booked,
     /// A's triangle words fetched (its triangle cache's misses).
     pub tri_fetches_a: u64,
+    /// Tumbled DOPs transformed (a group loaded: one or two), and the most pointers the
+    /// list SRAMs held ([`ListStack::held`]).
+    pub transforms: u64,
+    pub max_pointers: u64,
 }
 
 /// Where a query's clocks went: each clock from `start` to `done` booked to what the DOP
@@ -103,6 +107,8 @@ pub struct Chip<'a> {
     now: u64,
     tri_tests: u64,
     max_level: u64,
+    transforms: u64,
+    max_pointers: u64,
     booked: Booked,
     /// The Memory Controller's and the sequencer's inputs, each clock, if asked for.
     log: Option<UnitInputs>,
@@ -233,6 +239,8 @@ impl<'a> Chip<'a> {
             now: 0,
             tri_tests: 0,
             max_level: 0,
+            transforms: 0,
+            max_pointers: 0,
             booked: Booked::default(),
             log: None,
         })
@@ -273,6 +281,7 @@ impl<'a> Chip<'a> {
         self.tin = ClockedTriInput::default();
         (self.ls, self.dout) = Default::default();
         (self.tri_tests, self.max_level, self.booked) = (0, 0, Booked::default());
+        (self.transforms, self.max_pointers) = (0, 0);
     }
 
     /// The Triangle Unit in this clock: a response from memory (`resp`: a triangle word
@@ -334,6 +343,7 @@ impl<'a> Chip<'a> {
         let head = self.mc.head();
         let o = self.mc.step(&mi);
         self.book(head, &o);
+        self.transforms += o.loaded.as_ref().map_or(0, |l| l.1.len() as u64);
         (si.aligned, si.loaded) = (o.dop_in.a.is_some().then_some(o.aligned), o.loaded);
         if let Some(log) = &mut self.log {
             log.mc.push(mi);
@@ -343,6 +353,7 @@ impl<'a> Chip<'a> {
         let cmd = self.sq.step(&si);
         self.ls = self.lists.step(&cmd);
         self.max_level = self.max_level.max(self.ls.level as u64);
+        self.max_pointers = self.max_pointers.max(self.lists.held());
         self.dout = self.dop.step(&o.dop_in);
         Worked {
             to,
@@ -532,6 +543,8 @@ pub fn run(
         lists: c.lists(),
         booked: c.booked,
         tri_fetches_a: c.mc.tri_fetches_a,
+        transforms: c.transforms,
+        max_pointers: c.max_pointers,
     })
 }
 

@@ -450,6 +450,15 @@ impl ListStack {
         }
     }
 
+    /// Pointers the SRAMs hold: each one's lists up to the next level's end (the lists of
+    /// the levels below were freed when the lists stepped up).
+    pub fn held(&self) -> u64 {
+        let l = (self.level + 1).min(LIST_LEVELS - 1);
+        (0..2)
+            .map(|s| (self.start[s][l] + self.len[s][l]) as u64)
+            .sum()
+    }
+
     /// The current list's pointers not yet read (none while stepping up or done).
     fn remaining(&self) -> u16 {
         let b = self.branch[self.level] as usize;

@@ -29,7 +29,7 @@ use crate::chip::params::Params;
 use crate::chip::preset::Preset;
 use crate::chip::reg::{Mode, Order};
 use crate::chip::timing::{Clock, Folds, PeriodSource, Technology};
-use crate::chip::wscg03::StackParams;
+use crate::chip::wscg03::{Architecture, StackParams};
 use crate::cycle::{self, drive::Reader};
 use crate::measure::{interleaved_best, parallel_map};
 use crate::mesh;
@@ -103,11 +103,12 @@ impl Plan {
 /// (the RTL's 1,024 would, and an overflowed query has no complete answer).
 pub const QUEUE_ENTRIES: u32 = 1 << 24;
 
-/// A chip the figures run: a preset's configuration, its timing with [`QUEUE_ENTRIES`],
-/// and its clock.
+/// A chip the figures run: a preset's configuration as the architecture's chip runs it,
+/// its timing with [`QUEUE_ENTRIES`], and its clock ([`Clock::for_architecture`]).
 #[derive(Clone, Debug, Serialize)]
 pub struct ChipRun {
     pub preset: Preset,
+    pub architecture: Architecture,
     pub cfg: ChipConfig,
     pub params: Params,
     pub clock: Clock,
@@ -116,9 +117,14 @@ pub struct ChipRun {
 }
 
 impl ChipRun {
-    pub fn of(preset: Preset, technology: Technology) -> Result<ChipRun, String> {
-        let cfg = preset.chip();
-        let clock = Clock::of(technology, &cfg, Folds::NONE, preset)?;
+    pub fn of(
+        preset: Preset,
+        architecture: Architecture,
+        technology: Technology,
+    ) -> Result<ChipRun, String> {
+        let cfg = architecture.config(&preset.chip());
+        let clock =
+            Clock::of(technology, &cfg, Folds::NONE, preset)?.for_architecture(architecture, &cfg);
         let params = Params {
             queue_entries: QUEUE_ENTRIES,
             clock_ps: clock.ps(),
@@ -126,6 +132,7 @@ impl ChipRun {
         };
         Ok(ChipRun {
             preset,
+            architecture,
             cfg,
             params,
             clock_source: clock.source(),
@@ -208,13 +215,17 @@ struct PoseCounts {
     wscg_cycles: u64,
     wscg_words: u64,
     wscg_entries: u64,
-    /// WSCG'03's chip ([`cycle::wscg03`]) on the same memory, all pairs: clocks, memory
-    /// words, DOP tests, tumbled DOPs transformed, most pointers in its list SRAMs.
+    /// WSCG'03's chip clocked as its RTL ([`cycle::wscg03::clocked`]) on the same memory,
+    /// all pairs: clocks, memory words, DOP tests, tumbled DOPs transformed, most pointers
+    /// its list SRAMs held.
     stack_cycles: u64,
     stack_words: u64,
     stack_dop_tests: u64,
     stack_transforms: u64,
     stack_pointers: u64,
+    /// Its event model with the paper's parameters ([`cycle::wscg03::run_query`],
+    /// [`StackParams::PAPER`]): clocks.
+    event_cycles: u64,
 }
 
 /// Means over the orientations of one mesh at one distance.
@@ -245,18 +256,22 @@ impl Point {
     }
 }
 
-/// The chips of a plan: DATE'05's Figs. 6-8, WSCG'03's Fig. 13.
+/// The chips of a plan: DATE'05's Figs. 6-8; WSCG'03's Fig. 13, its chip (`stack`) and
+/// DATE'05's (`wscg`) on its preset.
 #[derive(Clone, Debug, Serialize)]
 pub struct Runs {
     pub date: ChipRun,
     pub wscg: ChipRun,
+    pub stack: ChipRun,
 }
 
 impl Runs {
     pub fn of(plan: &Plan) -> Result<Runs, String> {
+        let (tech, wscg) = (plan.technology, plan.wscg_preset());
         Ok(Runs {
-            date: ChipRun::of(plan.date_preset(), plan.technology)?,
-            wscg: ChipRun::of(plan.wscg_preset(), plan.technology)?,
+            date: ChipRun::of(plan.date_preset(), Architecture::Date05, tech)?,
+            wscg: ChipRun::of(wscg, Architecture::Date05, tech)?,
+            stack: ChipRun::of(wscg, Architecture::Wscg03, tech)?,
         })
     }
 }
@@ -304,6 +319,7 @@ struct Object {
     software: Chip,
     date: Chip,
     wscg: Chip,
+    stack: Chip,
     #[cfg(feature = "parry")]
     peer: crate::peer::PeerMesh,
 }
@@ -355,6 +371,7 @@ fn measure(plan: &Plan, runs: &Runs, bar: &ProgressBar) -> Result<Vec<Point>, St
             software,
             date: chip(runs.date.cfg)?,
             wscg: chip(runs.wscg.cfg)?,
+            stack: chip(runs.stack.cfg)?,
             #[cfg(feature = "parry")]
             peer: crate::peer::PeerMesh::new(&mesh),
         })
@@ -471,6 +488,13 @@ fn count(o: &Object, runs: &Runs, pose: &Pose) -> Result<PoseCounts, String> {
             }
         }
     }
+    fig13_counts(o, runs, pose, &mut c)?;
+    Ok(c)
+}
+
+/// Fig. 13's counts of one pose, on its preset: DATE'05's chip, WSCG'03's chip clocked as
+/// its RTL and its event model, each one's answer the golden model's.
+fn fig13_counts(o: &Object, runs: &Runs, pose: &Pose, c: &mut PoseCounts) -> Result<(), String> {
     let (chip, params) = (&o.wscg, &runs.wscg.params);
     let (setup, all) = (
         chip.setup(pose),
@@ -497,22 +521,24 @@ fn count(o: &Object, runs: &Runs, pose: &Pose) -> Result<PoseCounts, String> {
         trace.node_fetches + trace.tri_fetches,
         trace.max_depth,
     );
-    let run = cycle::wscg03::run_query(
-        chip,
-        &setup,
-        Mode::All,
-        params,
-        &StackParams::PAPER,
-        cycle::MAX_CYCLES,
-    )?;
+    let (chip, params) = (&o.stack, &runs.stack.params);
+    let setup = chip.setup(pose);
+    let max = cycle::MAX_CYCLES;
+    let run = cycle::wscg03::clocked::run(chip, &setup, (false, params), max, |_, _, _| (), None)?;
     run.trace
         .check(Mode::All, &all)
         .map_err(|e| format!("WSCG'03's chip disagrees with the golden model: {e}"))?;
-    let (t, s) = (&run.trace, &run.stats);
+    let t = &run.trace;
     (c.stack_cycles, c.stack_words, c.stack_dop_tests) =
-        (t.cycles, t.node_fetches + t.tri_fetches, s.dop_tests);
-    (c.stack_transforms, c.stack_pointers) = (s.transforms, s.max_list_words);
-    Ok(c)
+        (t.cycles, t.node_fetches + t.tri_fetches, t.dop_tests);
+    (c.stack_transforms, c.stack_pointers) = (run.transforms, run.max_pointers);
+    let event =
+        cycle::wscg03::run_query(chip, &setup, Mode::All, params, &StackParams::PAPER, max)?;
+    event.trace.check(Mode::All, &all).map_err(|e| {
+        format!("WSCG'03's chip's event model disagrees with the golden model: {e}")
+    })?;
+    c.event_cycles = event.trace.cycles;
+    Ok(())
 }
 
 /// One series per mesh (colour) and variant (its style) over distance.
@@ -587,8 +613,8 @@ fn figures(points: &[Point], runs: &Runs) -> Vec<Figure> {
     let mut figs = date05::queue_figures(points, &runs.date);
     figs.push(date05::fig8(points, &runs.date));
     figs.extend(wscg03::software_figures(points));
-    figs.push(wscg03::fig13(points, &runs.wscg));
-    figs.push(wscg03::side_by_side(points, &runs.wscg));
+    figs.push(wscg03::fig13(points, runs));
+    figs.push(wscg03::side_by_side(points, runs));
     figs
 }
 

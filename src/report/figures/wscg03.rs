@@ -2,7 +2,7 @@
 //! and its chip beside DATE'05's.
 
 use super::{
-    by_distance, eq5_cycles, key, mode_name, name, opt, panel, ChipRun, Point, PoseCounts, Times,
+    by_distance, eq5_cycles, key, mode_name, name, opt, panel, Point, PoseCounts, Runs, Times,
     DIST, KEY, MODES, SOFTWARE,
 };
 use crate::chip::reg::Mode;
@@ -114,16 +114,21 @@ pub(super) fn software_figures(points: &[Point]) -> Vec<Figure> {
     figs
 }
 
-/// WSCG'03 Fig. 13 and Eq. 5: WSCG'03's chip, its Eq. 5, and DATE'05's chip on `run`'s
-/// preset, over the golden model's Alg. 2 and parry3d, of the chips' time and end to end.
-pub(super) fn fig13(points: &[Point], run: &ChipRun) -> Figure {
+/// WSCG'03 Fig. 13 and Eq. 5 on Fig. 13's preset: WSCG'03's chip clocked as its RTL, its
+/// event model with the paper's parameters and Eq. 5, each at WSCG'03's chip's period, and
+/// DATE'05's chip at its own; over the golden model's Alg. 2 and parry3d, of the chips'
+/// time and end to end.
+pub(super) fn fig13(points: &[Point], runs: &Runs) -> Figure {
     let eq5 = |p: &Point| p.mean(|c| eq5_cycles(c.lists, c.list_node_pairs));
     let clocks = |p: &Point, v: usize| match v {
         0 => p.mean(|c| c.stack_cycles as f64),
-        1 => eq5(p),
+        1 => p.mean(|c| c.event_cycles as f64),
+        2 => eq5(p),
         _ => p.mean(|c| c.wscg_cycles as f64),
     };
-    let times = |p: &Point, v: usize| Times::of(p, run, 1, clocks(p, v));
+    let run = |v: usize| if v < 3 { &runs.stack } else { &runs.wscg };
+    let times = |p: &Point, v: usize| Times::of(p, run(v), 1, clocks(p, v));
+    const V: [usize; 4] = [0, 1, 2, 3];
     let mut t13 = Table {
         columns: [
             &KEY[..],
@@ -132,24 +137,30 @@ pub(super) fn fig13(points: &[Point], run: &ChipRun) -> Figure {
                 "software_us",
                 "parry_us",
                 "wscg03_cycles",
+                "event_cycles",
                 "eq5_cycles",
                 "date05_cycles",
                 "lists",
                 "alpha",
                 "wscg03_clocks_per_list",
+                "event_clocks_per_list",
                 "eq5_clocks_per_list",
                 "period_ns",
+                "date05_period_ns",
                 "setup_us",
                 "settle_us",
             ],
             &[
                 "speedup_wscg03",
+                "speedup_event",
                 "speedup_eq5",
                 "speedup_date05",
                 "speedup_parry_wscg03",
+                "speedup_parry_event",
                 "speedup_parry_eq5",
                 "speedup_parry_date05",
                 "e2e_us_wscg03",
+                "e2e_us_event",
                 "e2e_us_eq5",
                 "e2e_us_date05",
             ],
@@ -160,27 +171,27 @@ pub(super) fn fig13(points: &[Point], run: &ChipRun) -> Figure {
     for p in points {
         let lists = p.mean(|c| c.lists as f64).max(1.0);
         let nums = [p.mean(|c| c.sw_pairs[0][0] as f64), p.sw_us[0][0]];
-        let counts = [
-            clocks(p, 0),
-            clocks(p, 1),
-            clocks(p, 2),
-            lists,
-            p.mean(|c| c.list_node_pairs as f64) / lists,
-            clocks(p, 0) / lists,
-            clocks(p, 1) / lists,
-            run.clock.period_ns,
+        let counts = V.map(|v| clocks(p, v));
+        let per_list = [0, 1, 2].map(|v| clocks(p, v) / lists);
+        let rest = [
+            run(0).clock.period_ns,
+            run(3).clock.period_ns,
             p.host[1].setup_us,
             p.host[1].settle_us,
         ];
-        let golden = [0, 1, 2].map(|v| Cell::Num(p.sw_us[0][0] / times(p, v).chip_us));
-        let parry = [0, 1, 2].map(|v| opt(p.parry_us.map(|x| x / times(p, v).chip_us)));
-        let e2e = [0, 1, 2].map(|v| Cell::Num(times(p, v).e2e_us));
+        let golden = V.map(|v| Cell::Num(p.sw_us[0][0] / times(p, v).chip_us));
+        let parry = V.map(|v| opt(p.parry_us.map(|x| x / times(p, v).chip_us)));
+        let e2e = V.map(|v| Cell::Num(times(p, v).e2e_us));
+        let alpha = p.mean(|c| c.list_node_pairs as f64) / lists;
         t13.rows.push(
             [
                 &key(p)[..],
                 &nums.map(Cell::Num)[..],
                 &[opt(p.parry_us)],
                 &counts.map(Cell::Num)[..],
+                &[Cell::Num(lists), Cell::Num(alpha)],
+                &per_list.map(Cell::Num)[..],
+                &rest.map(Cell::Num)[..],
                 &golden[..],
                 &parry[..],
                 &e2e[..],
@@ -189,14 +200,19 @@ pub(super) fn fig13(points: &[Point], run: &ChipRun) -> Figure {
         );
     }
     let models = [
-        ("WSCG'03's chip (cycle model)", Style::Solid),
+        ("WSCG'03's chip (clocked as its RTL)", Style::Solid),
+        (
+            "WSCG'03's chip, the paper's parameters (event model)",
+            Style::Dotted,
+        ),
         ("Eq. 5", Style::Dashed),
         ("DATE'05's chip, LIFO (cycle model)", Style::Points),
     ];
     let mut panels = vec![panel(
         &format!(
-            "speed-up of the chips' time over the golden model's Alg. 2 ({})",
-            run.period()
+            "speed-up of the chips' time over the golden model's Alg. 2 (WSCG'03's at {}; DATE'05's at {})",
+            run(0).period(),
+            run(3).period()
         ),
         DIST,
         "speed-up",
@@ -230,18 +246,18 @@ pub(super) fn fig13(points: &[Point], run: &ChipRun) -> Figure {
         stem: "wscg03_fig13_speedup",
         title: format!(
             "WSCG'03 Fig. 13: the chips over software on this machine, all pairs, {}",
-            run.name()
+            run(0).name()
         ),
         panels,
         table: t13,
     }
 }
 
-/// The two papers' chips on the same sweep and `run`'s preset, all pairs: clocks, DOP
-/// tests and tumbled-DOP transforms per clock (DATE'05's DOPTRF transforms in every test),
-/// memory words, and their traversal memory (D_CNTR's queue entries, two node pairs each;
-/// the Stack Engine's aligned pointers in its list SRAMs).
-pub(super) fn side_by_side(points: &[Point], run: &ChipRun) -> Figure {
+/// The two papers' chips on the same sweep and Fig. 13's preset, all pairs: clocks, time
+/// at each one's period, DOP tests and tumbled-DOP transforms per clock (DATE'05's DOPTRF
+/// transforms in every test), memory words, and their traversal memory (D_CNTR's queue
+/// entries, two node pairs each; the Stack Engine's aligned pointers in its list SRAMs).
+pub(super) fn side_by_side(points: &[Point], runs: &Runs) -> Figure {
     let chips = [
         ("WSCG'03's chip", Style::Solid),
         ("DATE'05's chip, LIFO", Style::Dashed),
@@ -252,6 +268,8 @@ pub(super) fn side_by_side(points: &[Point], run: &ChipRun) -> Figure {
             &[
                 "wscg03_clocks",
                 "date05_clocks",
+                "wscg03_us",
+                "date05_us",
                 "wscg03_dop_per_clock",
                 "date05_dop_per_clock",
                 "wscg03_transforms_per_clock",
@@ -271,9 +289,15 @@ pub(super) fn side_by_side(points: &[Point], run: &ChipRun) -> Figure {
     // all pairs, both chips test the golden traversal's DOP pairs (tb/wscg03.rs,
     // tb/cycle_chip.rs): one count; DATE'05 transforms in every test
     for p in points {
-        let nums = [
+        let clocks = [
             p.mean(|c| c.stack_cycles as f64),
             p.mean(|c| c.wscg_cycles as f64),
+        ];
+        let nums = [
+            clocks[0],
+            clocks[1],
+            runs.stack.us(clocks[0]),
+            runs.wscg.us(clocks[1]),
             per_clock(p, |c| c.stack_dop_tests, |c| c.stack_cycles),
             per_clock(p, |c| c.stack_dop_tests, |c| c.wscg_cycles),
             per_clock(p, |c| c.stack_transforms, |c| c.stack_cycles),
@@ -295,7 +319,7 @@ pub(super) fn side_by_side(points: &[Point], run: &ChipRun) -> Figure {
         stem: "wscg03_vs_date05",
         title: format!(
             "WSCG'03's chip and DATE'05's on the same memory, all pairs ({})",
-            run.name()
+            runs.stack.name()
         ),
         panels: vec![panel(
             "clocks per query",
