@@ -200,6 +200,9 @@ def headline():
     gvp_stamp, gvp = list(runs(bench("golden_vs_parry")).items())[-1]
     touching = [r["parry_us"] / r["golden_us"] for r in gvp if r["pairs"] > 0]
     apart = [r["parry_us"] / r["golden_us"] for r in gvp if r["pairs"] == 0]
+    fig13 = {(r["mesh"], r["distance"]): float(r["pairs"]) for r in rows("wscg03_fig13_speedup.csv")}
+    side = [float(r["wscg03_us"]) / float(r["date05_us"]) for r in rows("wscg03_vs_date05.csv")
+            if fig13[(r["mesh"], r["distance"])] > 0]
     x = lambda v: f"{v:,.0f}x"
     x2 = lambda v: f"{v:.2f}x"
     pct = lambda v: f"{100 * v:.2f}%"
@@ -219,6 +222,12 @@ def headline():
         ["the k = 6 chip with both units folded, its FP units at FPGA depth, placed and routed on an ECP5 LFE5U-85F",
          f"{ecp['fmax_mhz']} MHz, {n(ecp['luts'])} LUT4" if ecp and ecp["status"] == "ok" else "not placed on the current RTL",
          "`scripts/fpga.sh --ecp5 rtl/chip_e8m15_k6_dop6_tri32_fpga.v`", "`timing_ecp5.csv`"],
+        ["clock of WSCG'03's chip (k = 24, binary32), OSU 0.18 um, pre-layout",
+         f"{t['chip_wscg03_b32_k24']['min_period_ns']} ns ({t['chip_wscg03_b32_k24']['fmax_mhz']} MHz)",
+         "`scripts/timing-study.sh`", "`timing.csv`"],
+        ["WSCG'03's chip / DATE'05's, time per query at each one's clock, same memory and layout "
+         "(WSCG'03's DDR, all pairs, objects touching)", ratio_range(side, x2),
+         "`cchip figures --out docs/figures`", "`wscg03_vs_date05.csv`"],
         ["triangle tests left to the host (k = 24, outward DOPs): binary32 / e8m15",
          f"{pct(unc[('rtl', '24', 'binary32', 'outward')])} / {pct(unc[('rtl', '24', 'e8m15', 'outward')])}",
          "`cchip accuracy --k 6,14,18,24,26 --plot docs/figures`", "`accuracy_cycles_uncertain.csv`"],
