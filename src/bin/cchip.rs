@@ -104,7 +104,9 @@ enum Cmd {
     /// preset (cycles and queue memory, LIFO vs FIFO; the chip's speed-up, of its time and
     /// end to end) and WSCG'03 Figs. 9-13 (software time, nodes and DOP transforms of the
     /// list and recursive traversals; on the `wscg03` preset the chips' speed-up beside
-    /// Eq. 5), each as SVG and PNG with its data as CSV and JSON. Software and the host are
+    /// Eq. 5: WSCG'03's chip clocked as its RTL at its own period, its event model with the
+    /// paper's parameters, DATE'05's chip at its period), each as SVG and PNG with its data
+    /// as CSV and JSON. Software and the host are
     /// timed one query at a time, the rest runs on every core. Build with `--features parry`
     /// to add the parry3d peer.
     Figures {
@@ -117,9 +119,9 @@ enum Cmd {
         /// wscg03 (WSCG'03's Fig. 13).
         #[arg(long, value_enum)]
         preset: Option<Preset>,
-        /// The chips' clock period: osu018 (the configuration's slowest RTL unit measured on
-        /// OSU 0.18 um, docs/figures/timing.csv), ecp5 or paper (the preset's 800 / 266 MHz,
-        /// assumed).
+        /// The chips' clock period: osu018 (each chip's RTL, or the configuration's slowest
+        /// RTL unit, measured on OSU 0.18 um, docs/figures/timing.csv), ecp5 or paper (the
+        /// preset's 800 / 266 MHz, assumed).
         #[arg(long, value_enum, default_value = "osu018")]
         technology: Technology,
     },
