@@ -13,7 +13,8 @@
 # a corrupted vector file (a wrong case, a wrong preload value) makes both fail with a non-zero
 # exit, that a unit raising out_valid during the preload phase fails, that malformed preload
 # sections are rejected by prepare.py naming file and line, and synthesizes the units with
-# Yosys. Then the chip flow: the stand-in passes its query with that register initialised,
+# Yosys, and checks that the timing study's black-box check (verilog/comb-paths.sh) passes the
+# adder and finds a path from in_valid to out_valid added to it. Then the chip flow: the stand-in passes its query with that register initialised,
 # and fails it under Icarus (four-state: x) and under Verilator with random uninitialised
 # bits (--x-seeds) while Verilator's zeros hide the flaw; a wrong counter, a wrong memory
 # address and a simulator that exits non-zero after a correct trace each fail too.
@@ -179,6 +180,18 @@ expect_fail_with "overflow 1" chip --chip "$CHIP" --x-seeds "1 2 3"
 
 step "Yosys synth"
 expect_ok "$SCRIPTS/synth.sh" "$UNIT_FILE" "$KUNIT"
+
+step "the bbox flow's check (comb-paths.sh): a registered unit has no input-to-output path"
+expect_ok "$SCRIPTS/verilog/comb-paths.sh" "$UNIT_FILE"
+step "the bbox flow's check: out_valid following in_valid in the same clock (must fail, naming it)"
+mkdir -p "$TMP/comb"
+sed 's/out_valid = s2_v\$q;/out_valid = s2_v$q \& in_valid;/' "$UNIT_FILE" > "$TMP/comb/selftest_add8.v"
+rc=0; "$SCRIPTS/verilog/comb-paths.sh" "$TMP/comb/selftest_add8.v" > "$TMP/comb.log" 2>&1 || rc=$?
+if [ $rc = 1 ] && grep -qF "selftest_add8.v: out_valid" "$TMP/comb.log"; then
+  cat "$TMP/comb.log"; echo "(exit 1, as expected)"
+else
+  cat "$TMP/comb.log"; echo "selftest: comb-paths.sh did not find in_valid -> out_valid (exit $rc)" >&2; fails=$((fails + 1))
+fi
 
 echo
 if [ "$fails" = 0 ]; then

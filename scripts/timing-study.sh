@@ -45,8 +45,11 @@
 #            min_period_ns;
 #            assumed: a unit's worst input's and output's figure holds for every input and
 #            output (pessimistic); an input loads its driver like one BUFX4 input; an output
-#            drives its load like a DFFPOSX1's Q; no combinational input-to-output path
-#            through a black box; ABC does not optimize across a black box's boundary.
+#            drives its load like a DFFPOSX1's Q; ABC does not optimize across a black
+#            box's boundary;
+#            checked: no black box has a path from an input to an output in the same clock
+#            (scripts/verilog/comb-paths.sh; a unit that has one is refused, to be left in the
+#            glue with --glue).
 #          The row: min_period_ns = the largest of the glue's worst register/black-box path
 #          and the black boxes' own periods (its stage named `<module>(<unit>).<stage>` when a
 #          black box's); cells and area add the black boxes' rows per instance; stage_ns lists
@@ -144,6 +147,17 @@ run() { (ulimit -v "$MEM_KB"; exec timeout "$TIMEOUT" "$@"); }
 bbox_parts() {
   local f=$1 w=$2 parts=$ROOT/target/timing/parts todo= r d
   "$PY" "$SCRIPTS/verilog/bbox.py" split "$f" "$OUT" "$RTL" "$w" "$parts" || return 1
+  # a black box's cell has no input-to-output arc: refuse a box that has such a path
+  local boxes
+  boxes=$(awk -F, -v rtl="$RTL" -v parts="$parts" 'NR > 1 { print ($2 == "ram" ? parts : rtl) "/" $4 ".v" }' "$w/parts.csv" | sort -u)
+  local rc=0
+  # shellcheck disable=SC2086
+  "$SCRIPTS/verilog/comb-paths.sh" $boxes > "$w/comb.txt" || rc=$?
+  if [ $rc = 1 ]; then
+    echo "timing-study.sh: $(basename "$f" .v): a black box's output follows its input in the same clock, which its liberty cell does not time; leave the unit in the glue (--glue 'UNIT ...'):" >&2
+    sed 's/^/  /' "$w/comb.txt" >&2
+  fi
+  [ $rc = 0 ] || return 1
   for r in $(awk -F, 'NR > 1 && $2 == "ram" {print $4}' "$w/parts.csv" | sort -u); do
     grep -q "^$r,.*,$(sha256sum "$parts/$r.v" | cut -d' ' -f1)\$" "$PARTS_CSV" 2>/dev/null || todo="$todo $r"
   done

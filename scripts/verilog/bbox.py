@@ -39,8 +39,9 @@ The liberty cell of a black box (what is measured, what is assumed):
     unloaded) plus what the load it drives adds to a DFFPOSX1's clock-to-Q beyond 5 fF
     (assumed: the output is driven like a flip-flop's Q, as a RAM's read data and most units'
     outputs are); the worst output's figure on every output.
-  - inputs and outputs are assumed to have no combinational path between them (the units'
-    rows time none; the RAMs have none: registered read).
+  - inputs and outputs have no path between them in the same clock (the units' rows time
+    none): timing-study.sh checks each black box with scripts/verilog/comb-paths.sh after
+    `split`, and refuses one that has such a path.
   - the black box's own register-to-register period is its row's min_period_ns: the chip's
     period is the largest of the glue's and these.
 """
