@@ -12,7 +12,7 @@
 //! | [`probes`] | the traversal signals every level shows (VCDs, lockstep) |
 //! | [`reg`] | the host register map, the query's mode and D_CNTR's order, the writes that start a query |
 //! | [`layout`] | bit layouts: node and triangle words, the memory image, the port's destinations, D_CNTR's entry |
-//! | [`wscg03`] | which paper's chip runs ([`Architecture`](wscg03::Architecture)), WSCG'03's timing ([`StackParams`](wscg03::StackParams)) |
+//! | [`wscg03`] | which paper's chip runs ([`Architecture`](wscg03::Architecture)) and the configuration it runs it in, WSCG'03's timing ([`StackParams`](wscg03::StackParams)) |
 //! | [`rtl`] | the RTL chips' sizes and latencies, and the table of the exported chips |
 //! | [`timing`] | the clock period of a configuration: the slowest of its RTL units in the timing study's table (OSU 0.18 um, ECP5), or the paper's clock |
 
