@@ -13,12 +13,14 @@
 //! - WSCG'03 Figs. 9-10 (software time of Algorithm 2, the list traversal, vs Algorithm 1,
 //!   the recursive one; first witness, all pairs), Fig. 11 (node words fetched), Fig. 12 (DOP
 //!   transforms): the golden model's traversals on the software's configuration (a node word
-//!   per fetch, no cache). Fig. 13: WSCG'03's chip ([`cycle::wscg03`]) on a preset's memory
-//!   ([`Plan::wscg_preset`], `wscg03`), Eq. 5's estimate from the list traversal's lists, and
-//!   DATE'05's chip on the same preset; beside it the two chips' table (`wscg03_vs_date05`).
+//!   per fetch, no cache). Fig. 13: WSCG'03's chip clocked as its RTL
+//!   ([`cycle::wscg03::clocked`]) on a preset's memory ([`Plan::wscg_preset`], `wscg03`), its
+//!   event model with the paper's parameters and Eq. 5's estimate from the list traversal's
+//!   lists, at its RTL chip's period, and DATE'05's chip on the same preset at its own;
+//!   beside it the two chips' table (`wscg03_vs_date05`).
 //!
-//! A chip's time is its clocks x its configuration's period ([`Clock`]: measured, or the
-//! paper's clock, assumed); end to end adds the host's setup and its settling of the
+//! A chip's time is its clocks x its period ([`Clock`], for its architecture: measured, or
+//! the paper's clock, assumed); end to end adds the host's setup and its settling of the
 //! uncertain pairs (as `cchip run`). Software and the host are timed one query at a time
 //! before anything else runs; the counting work (golden counters, cycle model) then runs on
 //! every core.
